@@ -1,0 +1,6 @@
+//! One module per subcommand: argument parsing and glue only.
+
+pub mod emit;
+pub mod render;
+pub mod report;
+pub mod trilist;

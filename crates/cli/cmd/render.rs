@@ -1,0 +1,4 @@
+//! `edgepaint trilist` (being written).
+#[derive(clap::Args)]
+pub struct Args {}
+pub fn run(_args: Args) -> anyhow::Result<()> { anyhow::bail!("not yet") }

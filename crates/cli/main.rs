@@ -1,0 +1,52 @@
+//! `edgepaint`: a Rust-embedded hardware generator for 3D rasterization hardware.
+//!
+//! This file is only the command-line interface; every algorithm lives in the
+//! library crates under `crates/`. With no arguments it emits the default
+//! design's Verilog into `hdl-out/`.
+
+mod cmd;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// edgepaint describes rasterization hardware from five papers in Rust (rust-hdl),
+/// emits it as Verilog, simulates it against bit-exact models and a float
+/// reference, and reports speed, area and accuracy.
+///
+/// Run without a command to emit the default design into hdl-out/.
+#[derive(Parser)]
+#[command(name = "edgepaint", version, about, long_about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run a scene through the software geometry stage and write its screen-space triangle list (trilist v1).
+    Trilist(cmd::trilist::Args),
+    /// Render a scene or a trilist to a PNG.
+    Render(cmd::render::Args),
+    /// Emit Verilog for one unit (or, with no unit, the default design) into a directory.
+    Emit(cmd::emit::Args),
+    /// Synthesize emitted units and tabulate their area and speed (Markdown and JSON).
+    Report(cmd::report::Args),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        None => cmd::emit::run_default(),
+        Some(Command::Trilist(a)) => cmd::trilist::run(a),
+        Some(Command::Render(a)) => cmd::render::run(a),
+        Some(Command::Emit(a)) => cmd::emit::run(a),
+        Some(Command::Report(a)) => cmd::report::run(a),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("edgepaint: error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}

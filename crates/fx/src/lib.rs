@@ -1,0 +1,1 @@
+//! Explicit fixed-point number formats shared by the models and the RTL.

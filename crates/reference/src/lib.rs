@@ -1,0 +1,201 @@
+//! The f64 reference rasterizer: the image every fixed-point unit is measured against.
+//!
+//! * samples at pixel centres with the top-left fill rule ([`raster`]);
+//! * depth test LESS against a depth buffer cleared to 1.0;
+//! * Gouraud colour, screen-linear by default and perspective-correct when the
+//!   trilist carries w (unless [`Options::ignore_w`]);
+//! * no culling by default, back faces on request;
+//! * clipped to the screen, and per pixel to z in [0, 1]; triangles with a
+//!   vertex behind the eye are clipped in homogeneous space first ([`clip`]).
+//!
+//! It shares no code with the fixed-point models (`model`): the two meet only in
+//! tests and in the accuracy harness, so a mistake in one cannot hide in the other.
+
+pub mod clip;
+pub mod raster;
+
+pub use raster::{Fragment, RasterVertex};
+use scene::{Triangle, Trilist};
+
+/// How colours are interpolated across a triangle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Interpolation {
+    /// Linear in screen space (classic Gouraud).
+    Linear,
+    /// Linear in clip space: attribute/w and 1/w interpolated, then divided.
+    Perspective,
+}
+
+/// Which faces are culled.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Cull {
+    /// Draw both faces.
+    #[default]
+    None,
+    /// Drop triangles that run clockwise on screen (front faces run
+    /// counter-clockwise as the viewer sees them, OpenGL's default).
+    Back,
+}
+
+/// Rendering options.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Options {
+    pub cull: Cull,
+    /// Interpolate colour screen-linearly even when the input carries w.
+    pub ignore_w: bool,
+    /// Colour of pixels no triangle writes.
+    pub background: [f64; 3],
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options { cull: Cull::None, ignore_w: false, background: [0.0; 3] }
+    }
+}
+
+/// What happened to the triangles and samples of one render.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Stats {
+    pub triangles_in: u64,
+    /// Triangles that reached the rasterizer (whether or not they cover a sample).
+    pub drawn: u64,
+    /// Back faces dropped by [`Cull::Back`].
+    pub culled_back: u64,
+    /// Zero-area triangles and triangles with no position in front of the eye.
+    pub degenerate: u64,
+    /// Covered samples on screen (before the z range and depth tests).
+    pub fragments: u64,
+    /// Samples dropped because z was outside [0, 1].
+    pub z_clipped: u64,
+    /// Samples that passed the depth test and were written.
+    pub pixels_written: u64,
+}
+
+impl Stats {
+    /// Triangles that never reached the rasterizer.
+    pub fn culled(&self) -> u64 {
+        self.culled_back + self.degenerate
+    }
+}
+
+/// A rendered frame in full precision.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Frame {
+    pub width: u32,
+    pub height: u32,
+    /// Colour per pixel, row-major from the top-left, in [0, 255].
+    pub color: Vec<[f64; 3]>,
+    /// Depth per pixel, 1.0 where nothing was written.
+    pub depth: Vec<f64>,
+    /// Whether any triangle wrote the pixel.
+    pub written: Vec<bool>,
+}
+
+impl Frame {
+    /// A frame cleared to `background` and depth 1.0.
+    pub fn new(width: u32, height: u32, background: [f64; 3]) -> Self {
+        let n = width as usize * height as usize;
+        Frame { width, height, color: vec![background; n], depth: vec![1.0; n], written: vec![false; n] }
+    }
+
+    /// Depth test LESS, then write. Returns whether the sample was written.
+    pub fn write(&mut self, f: &Fragment) -> bool {
+        let i = f.y as usize * self.width as usize + f.x as usize;
+        if f.z < self.depth[i] {
+            self.depth[i] = f.z;
+            self.color[i] = f.rgb;
+            self.written[i] = true;
+            true
+        } else {
+            false
+        }
+    }
+
+    /// Colour rounded to the nearest 8-bit value.
+    pub fn rgb8(&self) -> Vec<[u8; 3]> {
+        self.color.iter().map(|c| c.map(|v| v.round().clamp(0.0, 255.0) as u8)).collect()
+    }
+
+    /// Depth as 16-bit values: round(depth * 65535).
+    pub fn depth16(&self) -> Vec<u16> {
+        self.depth.iter().map(|d| (d.clamp(0.0, 1.0) * 65535.0).round() as u16).collect()
+    }
+}
+
+/// What the reference does with one input triangle.
+pub enum Prepared {
+    /// Screen-space triangles to rasterize, and the interpolation to use.
+    Draw(Vec<[RasterVertex; 3]>, Interpolation),
+    /// Dropped before rasterization.
+    Culled,
+    /// Nothing drawable (zero area, w = 0, wholly behind the eye).
+    Degenerate,
+}
+
+/// Clip, orient and cull one triangle.
+pub fn prepare(tri: &Triangle, opts: &Options) -> Prepared {
+    let Ok(parts) = clip::to_screen(tri) else {
+        return Prepared::Degenerate;
+    };
+    // All parts of a clipped triangle share its plane and winding.
+    let area2: f64 = parts.iter().map(raster::signed_area2).sum();
+    if area2 == 0.0 || !area2.is_finite() {
+        return Prepared::Degenerate;
+    }
+    if opts.cull == Cull::Back && area2 > 0.0 {
+        return Prepared::Culled;
+    }
+    let has_w = tri.iter().any(|v| v.w.is_some());
+    let interp = if has_w && !opts.ignore_w { Interpolation::Perspective } else { Interpolation::Linear };
+    Prepared::Draw(parts, interp)
+}
+
+/// What became of one triangle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    Drawn,
+    Culled,
+    Degenerate,
+}
+
+/// Every covered on-screen sample of one triangle, before the z range and depth
+/// tests. The frame-independent half of [`render`]: tests count hits per pixel with it.
+pub fn fragments(tri: &Triangle, width: u32, height: u32, opts: &Options, mut emit: impl FnMut(Fragment)) -> Outcome {
+    match prepare(tri, opts) {
+        Prepared::Culled => Outcome::Culled,
+        Prepared::Degenerate => Outcome::Degenerate,
+        Prepared::Draw(parts, interp) => {
+            for part in &parts {
+                raster::rasterize(part, width, height, interp, &mut emit);
+            }
+            Outcome::Drawn
+        }
+    }
+}
+
+/// Renders a whole triangle list. `progress` is called with the number of
+/// triangles done so far, every few hundred triangles and at the end.
+pub fn render(list: &Trilist, opts: &Options, progress: &mut dyn FnMut(usize)) -> (Frame, Stats) {
+    let mut frame = Frame::new(list.width, list.height, opts.background);
+    let mut stats = Stats { triangles_in: list.triangles.len() as u64, ..Stats::default() };
+    for (i, tri) in list.triangles.iter().enumerate() {
+        let outcome = fragments(tri, list.width, list.height, opts, |f| {
+            stats.fragments += 1;
+            if !(0.0..=1.0).contains(&f.z) {
+                stats.z_clipped += 1;
+            } else if frame.write(&f) {
+                stats.pixels_written += 1;
+            }
+        });
+        match outcome {
+            Outcome::Drawn => stats.drawn += 1,
+            Outcome::Culled => stats.culled_back += 1,
+            Outcome::Degenerate => stats.degenerate += 1,
+        }
+        if i % 256 == 255 {
+            progress(i + 1);
+        }
+    }
+    progress(list.triangles.len());
+    (frame, stats)
+}

@@ -1,0 +1,1 @@
+//! edgepaint hardware units in rust-hdl.
