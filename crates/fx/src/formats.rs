@@ -1,0 +1,384 @@
+//! The format of every quantity in edgepaint's fixed-point pipelines.
+//!
+//! `n = clog2(max(width, height))`; `s` = subpixel bits (default 4). Defaults
+//! are [`Formats::for_resolution`]; [`Formats::wide`] adds precision everywhere
+//! (used to show that the pipelines converge on the float reference).
+//!
+//! | field | default | quantity | written by | read by | into it | overflow |
+//! |---|---|---|---|---|---|---|
+//! | `xy` | S(n+1).s half-up | vertex x, y in pixels | input | cull_sort, setup, edge_walk, vector | half-up | input checked (reject) |
+//! | `z` | S1.16 half-up | vertex z; its fraction bits are the depth buffer's width | input | setup, span, vector | half-up | input checked (reject) |
+//! | `color` | U8.0 half-up saturate | vertex R, G, B | input | setup, vector | half-up | input checked (reject) |
+//! | `inv_w` | U1.15 half-up | w_min / w per vertex (1 for the nearest) | input | vector (004 eq. 5-6) | half-up | input checked (reject) |
+//! | `ooa` | U1.24 | mantissa of OneOverArea (001) and of 1/sum in `vector`, in [1/2, 1], with a shift | divider | setup, vector | floor (divider) | cannot |
+//! | `ooa_d` | S17.(n+25) | OneOverArea x edge dx or dy (the first products of 001 eq. 2) | setup | setup | floor | wrap (modular) |
+//! | `dz` | S1.(n+24) | dz/dx, dz/dy and the edge increments of z | setup | edge_walk, span | floor | wrap (modular) |
+//! | `z_acc` | S1.(n+24) | z accumulators (edge and span) | setup, edge_walk | span | floor | wrap (modular) |
+//! | `dc` | S9.(n+12) | dC/dx, dC/dy and the edge increments of R, G, B | setup | edge_walk, span | floor | wrap (modular) |
+//! | `c_acc` | S9.(n+12) | colour accumulators | setup, edge_walk | span | floor | wrap (modular) |
+//! | `bary` | S1.(n+16) | barycentric a, b (004 eq. 3) and their perspective-corrected forms | vector | vector | floor | wrap |
+//!
+//! **Modular arithmetic.** Gradients, increments and accumulators only ever
+//! meet through `+`, `-`, `*` and floor shifts, which commute with reduction
+//! modulo a power of two. Their registers may therefore wrap: the value finally
+//! emitted (a depth or colour at a pixel inside the triangle, always in range)
+//! is right whenever the same computation without wrapping would be right. So
+//! `dc` needs only the integer bits of `c_acc`, however steep a sliver's
+//! gradient is. Values that are *compared* (positions, the z clip, the colour
+//! clamp) are never wrapped. The models' analysis mode checks this claim per
+//! triangle by re-running the computation with every wrapping format widened
+//! and comparing what is emitted.
+//!
+//! Exact quantities (edge deltas, twice the area, edge functions, the edge
+//! walk's quotient and remainder) take their widths from `xy` and are not
+//! configurable: they are derived in [`Derived`].
+
+use crate::fmt::{clog2, Fmt, MAX_BITS};
+use serde::{Deserialize, Serialize};
+
+/// The format of every configurable quantity. JSON: an object whose keys are
+/// the field names and whose values are formats in the house notation
+/// (`"S11.4 half-up"`); keys left out take their defaults for the resolution.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Formats {
+    pub xy: Fmt,
+    pub z: Fmt,
+    pub color: Fmt,
+    pub inv_w: Fmt,
+    pub ooa: Fmt,
+    pub ooa_d: Fmt,
+    pub dz: Fmt,
+    pub z_acc: Fmt,
+    pub dc: Fmt,
+    pub c_acc: Fmt,
+    pub bary: Fmt,
+}
+
+/// Subpixel bits of the default vertex format (1/16 pixel, as is usual).
+pub const SUBPIXEL_BITS: u32 = 4;
+
+/// Widths of the exact (non-configurable) quantities, derived from the formats.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Derived {
+    /// Edge dx, dy (differences of two vertices): signed bits.
+    pub delta_bits: u32,
+    /// Twice the signed area in subpixel units (exact): signed bits.
+    pub area_bits: u32,
+    /// Edge functions at pixel centres, the numerators of 004 eq. 3 (exact): signed bits.
+    pub edge_fn_bits: u32,
+    /// Pixel positions anywhere in the coordinate range: signed bits.
+    pub pixel_bits: u32,
+    /// Divider dividend, divisor and quotient: the widest of its seven uses.
+    pub div_dividend_bits: u32,
+    pub div_divisor_bits: u32,
+    pub div_quotient_bits: u32,
+}
+
+impl Formats {
+    /// Defaults for a `width` x `height` screen.
+    pub fn for_resolution(width: u32, height: u32) -> Formats {
+        let n = clog2(width.max(height).max(8) as u64);
+        let s = SUBPIXEL_BITS;
+        Formats {
+            xy: Fmt::s(n + 1, s).half_up(),
+            z: Fmt::s(1, 16).half_up(),
+            color: Fmt::u(8, 0).half_up().saturating(),
+            inv_w: Fmt::u(1, 15).half_up(),
+            ooa: Fmt::u(1, 24),
+            ooa_d: Fmt::s(17, n + 25),
+            dz: Fmt::s(1, n + 24),
+            z_acc: Fmt::s(1, n + 24),
+            dc: Fmt::s(9, n + 12),
+            c_acc: Fmt::s(9, n + 12),
+            bary: Fmt::s(1, n + 16),
+        }
+    }
+
+    /// Far more precision than any display needs: 16 subpixel bits, 24-bit
+    /// depth, 8 colour fraction bits, and 16 more fraction bits downstream.
+    /// The fixed-point pipelines at these formats must agree with the float
+    /// reference to within documented ties.
+    pub fn wide(width: u32, height: u32) -> Formats {
+        let d = Formats::for_resolution(width, height);
+        let more = |f: Fmt, k: u32| Fmt {
+            frac: f.frac + k,
+            ..f
+        };
+        Formats {
+            xy: more(d.xy, 12),
+            z: more(d.z, 8),
+            color: more(d.color, 8),
+            inv_w: more(d.inv_w, 16),
+            ooa: more(d.ooa, 16),
+            ooa_d: more(d.ooa_d, 24),
+            dz: more(d.dz, 16),
+            z_acc: more(d.z_acc, 16),
+            dc: more(d.dc, 16),
+            c_acc: more(d.c_acc, 16),
+            bary: more(d.bary, 16),
+        }
+    }
+
+    /// Defaults for the resolution with the keys of a JSON object applied on top.
+    pub fn with_overrides(
+        width: u32,
+        height: u32,
+        json: &serde_json::Value,
+    ) -> Result<Formats, String> {
+        let mut v = serde_json::to_value(Formats::for_resolution(width, height))
+            .expect("formats serialise");
+        let obj = json
+            .as_object()
+            .ok_or("a formats file must be a JSON object mapping quantities to formats")?;
+        let target = v.as_object_mut().expect("formats serialise to an object");
+        for (k, val) in obj {
+            if !target.contains_key(k) {
+                let known: Vec<&str> = target.keys().map(String::as_str).collect();
+                return Err(format!(
+                    "unknown quantity \"{k}\" (known: {})",
+                    known.join(", ")
+                ));
+            }
+            target.insert(k.clone(), val.clone());
+        }
+        let f: Formats = serde_json::from_value(v).map_err(|e| e.to_string())?;
+        f.check(width, height)?;
+        Ok(f)
+    }
+
+    /// Every format as (name, format), in declaration order.
+    pub fn named(&self) -> [(&'static str, Fmt); 11] {
+        [
+            ("xy", self.xy),
+            ("z", self.z),
+            ("color", self.color),
+            ("inv_w", self.inv_w),
+            ("ooa", self.ooa),
+            ("ooa_d", self.ooa_d),
+            ("dz", self.dz),
+            ("z_acc", self.z_acc),
+            ("dc", self.dc),
+            ("c_acc", self.c_acc),
+            ("bary", self.bary),
+        ]
+    }
+
+    /// The same formats with every wrapping integer part widened so that
+    /// nothing can wrap: the analysis mode's shadow computation.
+    pub fn unwrapped(&self) -> Formats {
+        let widen = |f: Fmt| {
+            if f.overflow == crate::Overflow::Wrap {
+                f.with_int(MAX_BITS - 1 - f.frac)
+            } else {
+                f
+            }
+        };
+        Formats {
+            ooa_d: widen(self.ooa_d),
+            dz: widen(self.dz),
+            z_acc: widen(self.z_acc),
+            dc: widen(self.dc),
+            c_acc: widen(self.c_acc),
+            bary: widen(self.bary),
+            ..*self
+        }
+    }
+
+    /// Widths of the exact quantities.
+    pub fn derived(&self) -> Derived {
+        let delta_bits = self.xy.bits() + 1;
+        let area_bits = 2 * delta_bits;
+        let edge_fn_bits = area_bits + 1;
+        let pixel_bits = self.xy.int + 2;
+        // The divider serves three kinds of division (see `model::divider`):
+        // the reciprocal mantissa 2^(area_bits + ooa.frac - 2) / |area| normalised,
+        // the edge start (x fraction * dy + dx * t) / (2^s * dy) and the step dx / dy.
+        let recip_dividend = area_bits + self.ooa.frac;
+        let start_dividend = delta_bits + self.xy.frac + 2;
+        Derived {
+            delta_bits,
+            area_bits,
+            edge_fn_bits,
+            pixel_bits,
+            div_dividend_bits: recip_dividend.max(start_dividend),
+            div_divisor_bits: area_bits.max(delta_bits + self.xy.frac),
+            div_quotient_bits: (self.ooa.frac + 2).max(delta_bits + 1),
+        }
+    }
+
+    /// Whether these formats can work at all for a `width` x `height` screen;
+    /// the error says which format is impossible and why.
+    pub fn check(&self, width: u32, height: u32) -> Result<(), String> {
+        let d = width.max(height) as f64;
+        let need = |ok: bool, name: &str, f: Fmt, why: String| {
+            if ok {
+                Ok(())
+            } else {
+                Err(format!("{name} = {f}: {why}"))
+            }
+        };
+        for (name, f) in self.named() {
+            need(
+                f.bits() <= MAX_BITS,
+                name,
+                f,
+                format!("wider than the {MAX_BITS} bits the models compute in"),
+            )?;
+        }
+        let (xy, z) = (self.xy, self.z);
+        need(
+            xy.signed,
+            "xy",
+            xy,
+            "vertex coordinates must be signed (the guard band reaches below 0)".into(),
+        )?;
+        let (lo, hi) = (-d / 2.0, width.max(height) as f64 + d / 2.0);
+        need(
+            xy.from_f64(lo).is_some() && xy.from_f64(hi).is_some(),
+            "xy",
+            xy,
+            format!("must hold the guard band [{lo}, {hi}] of a {width}x{height} screen"),
+        )?;
+        need(
+            xy.frac >= 1,
+            "xy",
+            xy,
+            "needs at least one subpixel bit (pixel centres lie at .5)".into(),
+        )?;
+        need(
+            z.signed && z.int >= 1,
+            "z",
+            z,
+            "must be signed with an integer bit to hold the guard band [-0.5, 1.5]".into(),
+        )?;
+        need(
+            (1..=32).contains(&z.frac),
+            "z",
+            z,
+            "its fraction bits are the depth buffer's width: 1 to 32".into(),
+        )?;
+        need(
+            !self.color.signed && self.color.int >= 8,
+            "color",
+            self.color,
+            "must be unsigned with 8 integer bits (0..255)".into(),
+        )?;
+        need(
+            !self.inv_w.signed && self.inv_w.int >= 1,
+            "inv_w",
+            self.inv_w,
+            "must be unsigned with an integer bit to hold 1.0".into(),
+        )?;
+        need(
+            !self.ooa.signed && self.ooa.int == 1 && self.ooa.frac >= 2,
+            "ooa",
+            self.ooa,
+            "is a reciprocal mantissa in [1/2, 1]: U1.<frac>".into(),
+        )?;
+        need(
+            self.ooa_d.signed,
+            "ooa_d",
+            self.ooa_d,
+            "must be signed".into(),
+        )?;
+        for (name, g, acc) in [("dz", self.dz, self.z_acc), ("dc", self.dc, self.c_acc)] {
+            need(
+                g.signed && acc.signed,
+                name,
+                g,
+                "gradients and accumulators must be signed".into(),
+            )?;
+            need(
+                g.frac == acc.frac,
+                name,
+                g,
+                format!("must have the fraction bits of its accumulator {acc}"),
+            )?;
+        }
+        need(
+            self.z_acc.frac >= z.frac,
+            "z_acc",
+            self.z_acc,
+            format!("needs at least the {} fraction bits of z", z.frac),
+        )?;
+        need(
+            self.c_acc.int >= 8,
+            "c_acc",
+            self.c_acc,
+            "needs 8 integer bits to hold 0..255".into(),
+        )?;
+        need(
+            self.c_acc.frac >= self.color.frac,
+            "c_acc",
+            self.c_acc,
+            "needs at least the fraction bits of color".into(),
+        )?;
+        need(
+            self.ooa_d.frac >= self.dc.frac && self.ooa_d.frac + z.frac >= self.dz.frac,
+            "ooa_d",
+            self.ooa_d,
+            "needs at least the fraction bits of dc (and of dz less those of z)".into(),
+        )?;
+        need(
+            self.bary.signed && self.bary.int >= 1,
+            "bary",
+            self.bary,
+            "must be signed with an integer bit to hold 1.0".into(),
+        )?;
+        let dv = self.derived();
+        need(
+            dv.div_dividend_bits + 8 <= MAX_BITS,
+            "xy",
+            xy,
+            "too wide: the divider's dividend would not fit 128-bit arithmetic".into(),
+        )?;
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn formats_defaults_follow_the_resolution() {
+        let f = Formats::for_resolution(640, 480);
+        assert_eq!(f.xy.to_string(), "S11.4 [16] half-up");
+        assert_eq!(
+            Formats::for_resolution(4096, 4096).xy.to_string(),
+            "S13.4 [18] half-up"
+        );
+        for (w, h) in [(1, 1), (320, 240), (640, 480), (1024, 768), (4096, 4096)] {
+            Formats::for_resolution(w, h).check(w, h).unwrap();
+            Formats::wide(w, h).check(w, h).unwrap();
+        }
+    }
+
+    #[test]
+    fn formats_json_overrides_and_rejects_impossible_formats() {
+        let j = serde_json::json!({"dc": "S9.30", "c_acc": "S9.30"});
+        let f = Formats::with_overrides(640, 480, &j).unwrap();
+        assert_eq!(f.dc, Fmt::s(9, 30));
+        let cases = [
+            (serde_json::json!({"xy": "S8.4"}), "guard band"),
+            (
+                serde_json::json!({"dc": "S9.10"}),
+                "fraction bits of its accumulator",
+            ),
+            (
+                serde_json::json!({"zz": "S1.16"}),
+                "unknown quantity \"zz\"",
+            ),
+            (serde_json::json!({"z": "U1.16"}), "must be signed"),
+            (serde_json::json!({"z": "S1.40"}), "depth buffer"),
+            (serde_json::json!({"color": "U7.0"}), "8 integer bits"),
+            (serde_json::json!({"ooa": "U2.20"}), "mantissa"),
+            (serde_json::json!({"xy": "S11.x"}), "not a whole number"),
+        ];
+        for (j, want) in cases {
+            let e = Formats::with_overrides(640, 480, &j).unwrap_err();
+            assert!(e.contains(want), "{j}: got {e:?}, want {want:?}");
+        }
+    }
+}
