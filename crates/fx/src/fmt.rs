@@ -101,40 +101,22 @@ pub const fn clog2(n: u64) -> u32 {
 impl Fmt {
     /// A signed format `S<int>.<frac>`, truncating, wrapping.
     pub const fn s(int: u32, frac: u32) -> Fmt {
-        Fmt {
-            signed: true,
-            int,
-            frac,
-            rounding: Rounding::Truncate,
-            overflow: Overflow::Wrap,
-        }
+        Fmt { signed: true, int, frac, rounding: Rounding::Truncate, overflow: Overflow::Wrap }
     }
 
     /// An unsigned format `U<int>.<frac>`, truncating, wrapping.
     pub const fn u(int: u32, frac: u32) -> Fmt {
-        Fmt {
-            signed: false,
-            int,
-            frac,
-            rounding: Rounding::Truncate,
-            overflow: Overflow::Wrap,
-        }
+        Fmt { signed: false, int, frac, rounding: Rounding::Truncate, overflow: Overflow::Wrap }
     }
 
     /// The same format rounding half up.
     pub const fn half_up(self) -> Fmt {
-        Fmt {
-            rounding: Rounding::HalfUp,
-            ..self
-        }
+        Fmt { rounding: Rounding::HalfUp, ..self }
     }
 
     /// The same format saturating.
     pub const fn saturating(self) -> Fmt {
-        Fmt {
-            overflow: Overflow::Saturate,
-            ..self
-        }
+        Fmt { overflow: Overflow::Saturate, ..self }
     }
 
     /// Total width in bits.
@@ -209,8 +191,7 @@ impl Fmt {
             Rounding::Truncate => scaled.floor(),
             Rounding::HalfUp => (scaled + 0.5).floor(),
         };
-        (raw.is_finite() && raw >= self.min_raw() as f64 && raw <= self.max_raw() as f64)
-            .then_some(raw as i128)
+        (raw.is_finite() && raw >= self.min_raw() as f64 && raw <= self.max_raw() as f64).then_some(raw as i128)
     }
 
     /// The value a raw number stands for.
@@ -249,24 +230,16 @@ impl FromStr for Fmt {
     type Err = String;
     fn from_str(s: &str) -> Result<Fmt, String> {
         let mut words = s.split_whitespace();
-        let head = words
-            .next()
-            .ok_or("an empty format; write e.g. \"S11.4\" or \"U8.0 half-up saturate\"")?;
+        let head = words.next().ok_or("an empty format; write e.g. \"S11.4\" or \"U8.0 half-up saturate\"")?;
         let signed = match head.chars().next() {
             Some('S' | 's') => true,
             Some('U' | 'u') => false,
-            _ => {
-                return Err(format!(
-                    "\"{s}\": a format starts with S (signed) or U (unsigned), e.g. S11.4"
-                ))
-            }
+            _ => return Err(format!("\"{s}\": a format starts with S (signed) or U (unsigned), e.g. S11.4")),
         };
-        let (i, f) = head[1..]
-            .split_once('.')
-            .ok_or_else(|| format!("\"{s}\": expected <S|U><int>.<frac>, e.g. S11.4"))?;
+        let (i, f) =
+            head[1..].split_once('.').ok_or_else(|| format!("\"{s}\": expected <S|U><int>.<frac>, e.g. S11.4"))?;
         let num = |t: &str, what: &str| {
-            t.parse::<u32>()
-                .map_err(|_| format!("\"{s}\": {what} bits \"{t}\" is not a whole number"))
+            t.parse::<u32>().map_err(|_| format!("\"{s}\": {what} bits \"{t}\" is not a whole number"))
         };
         let mut fmt = Fmt {
             signed,
@@ -276,15 +249,10 @@ impl FromStr for Fmt {
             overflow: Overflow::Wrap,
         };
         if fmt.int + fmt.frac == 0 {
-            return Err(format!(
-                "\"{s}\": a format needs at least one integer or fraction bit"
-            ));
+            return Err(format!("\"{s}\": a format needs at least one integer or fraction bit"));
         }
         if fmt.bits() > MAX_BITS {
-            return Err(format!(
-                "\"{s}\": {} bits is more than the {MAX_BITS} the models support",
-                fmt.bits()
-            ));
+            return Err(format!("\"{s}\": {} bits is more than the {MAX_BITS} the models support", fmt.bits()));
         }
         for w in words {
             match w {
@@ -298,9 +266,9 @@ impl FromStr for Fmt {
                         return Err(format!("\"{s}\": {head} has {} bits, not {n}", fmt.bits()));
                     }
                 }
-                _ => return Err(format!(
-                    "\"{s}\": unknown word \"{w}\" (expected half-up, truncate, wrap or saturate)"
-                )),
+                _ => {
+                    return Err(format!("\"{s}\": unknown word \"{w}\" (expected half-up, truncate, wrap or saturate)"))
+                }
             }
         }
         Ok(fmt)
@@ -315,9 +283,7 @@ impl Serialize for Fmt {
 
 impl<'de> Deserialize<'de> for Fmt {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Fmt, D::Error> {
-        String::deserialize(d)?
-            .parse()
-            .map_err(serde::de::Error::custom)
+        String::deserialize(d)?.parse().map_err(serde::de::Error::custom)
     }
 }
 
@@ -351,16 +317,7 @@ mod tests {
         assert_eq!(f, Fmt::s(11, 4).half_up());
         assert_eq!(f.to_string(), "S11.4 [16] half-up");
         assert_eq!(f.to_string().parse::<Fmt>().unwrap(), f);
-        for bad in [
-            "",
-            "X3.4",
-            "S3",
-            "S3.x",
-            "S3.4 [9]",
-            "S3.4 round",
-            "S100.100",
-            "U0.0",
-        ] {
+        for bad in ["", "X3.4", "S3", "S3.x", "S3.4 [9]", "S3.4 round", "S100.100", "U0.0"] {
             assert!(bad.parse::<Fmt>().is_err(), "{bad:?} should not parse");
         }
     }

@@ -101,10 +101,7 @@ impl Formats {
     /// reference to within documented ties.
     pub fn wide(width: u32, height: u32) -> Formats {
         let d = Formats::for_resolution(width, height);
-        let more = |f: Fmt, k: u32| Fmt {
-            frac: f.frac + k,
-            ..f
-        };
+        let more = |f: Fmt, k: u32| Fmt { frac: f.frac + k, ..f };
         Formats {
             xy: more(d.xy, 12),
             z: more(d.z, 8),
@@ -121,24 +118,14 @@ impl Formats {
     }
 
     /// Defaults for the resolution with the keys of a JSON object applied on top.
-    pub fn with_overrides(
-        width: u32,
-        height: u32,
-        json: &serde_json::Value,
-    ) -> Result<Formats, String> {
-        let mut v = serde_json::to_value(Formats::for_resolution(width, height))
-            .expect("formats serialise");
-        let obj = json
-            .as_object()
-            .ok_or("a formats file must be a JSON object mapping quantities to formats")?;
+    pub fn with_overrides(width: u32, height: u32, json: &serde_json::Value) -> Result<Formats, String> {
+        let mut v = serde_json::to_value(Formats::for_resolution(width, height)).expect("formats serialise");
+        let obj = json.as_object().ok_or("a formats file must be a JSON object mapping quantities to formats")?;
         let target = v.as_object_mut().expect("formats serialise to an object");
         for (k, val) in obj {
             if !target.contains_key(k) {
                 let known: Vec<&str> = target.keys().map(String::as_str).collect();
-                return Err(format!(
-                    "unknown quantity \"{k}\" (known: {})",
-                    known.join(", ")
-                ));
+                return Err(format!("unknown quantity \"{k}\" (known: {})", known.join(", ")));
             }
             target.insert(k.clone(), val.clone());
         }
@@ -219,20 +206,10 @@ impl Formats {
             }
         };
         for (name, f) in self.named() {
-            need(
-                f.bits() <= MAX_BITS,
-                name,
-                f,
-                format!("wider than the {MAX_BITS} bits the models compute in"),
-            )?;
+            need(f.bits() <= MAX_BITS, name, f, format!("wider than the {MAX_BITS} bits the models compute in"))?;
         }
         let (xy, z) = (self.xy, self.z);
-        need(
-            xy.signed,
-            "xy",
-            xy,
-            "vertex coordinates must be signed (the guard band reaches below 0)".into(),
-        )?;
+        need(xy.signed, "xy", xy, "vertex coordinates must be signed (the guard band reaches below 0)".into())?;
         let (lo, hi) = (-d / 2.0, width.max(height) as f64 + d / 2.0);
         need(
             xy.from_f64(lo).is_some() && xy.from_f64(hi).is_some(),
@@ -240,24 +217,14 @@ impl Formats {
             xy,
             format!("must hold the guard band [{lo}, {hi}] of a {width}x{height} screen"),
         )?;
-        need(
-            xy.frac >= 1,
-            "xy",
-            xy,
-            "needs at least one subpixel bit (pixel centres lie at .5)".into(),
-        )?;
+        need(xy.frac >= 1, "xy", xy, "needs at least one subpixel bit (pixel centres lie at .5)".into())?;
         need(
             z.signed && z.int >= 1,
             "z",
             z,
             "must be signed with an integer bit to hold the guard band [-0.5, 1.5]".into(),
         )?;
-        need(
-            (1..=32).contains(&z.frac),
-            "z",
-            z,
-            "its fraction bits are the depth buffer's width: 1 to 32".into(),
-        )?;
+        need((1..=32).contains(&z.frac), "z", z, "its fraction bits are the depth buffer's width: 1 to 32".into())?;
         need(
             !self.color.signed && self.color.int >= 8,
             "color",
@@ -276,25 +243,10 @@ impl Formats {
             self.ooa,
             "is a reciprocal mantissa in [1/2, 1]: U1.<frac>".into(),
         )?;
-        need(
-            self.ooa_d.signed,
-            "ooa_d",
-            self.ooa_d,
-            "must be signed".into(),
-        )?;
+        need(self.ooa_d.signed, "ooa_d", self.ooa_d, "must be signed".into())?;
         for (name, g, acc) in [("dz", self.dz, self.z_acc), ("dc", self.dc, self.c_acc)] {
-            need(
-                g.signed && acc.signed,
-                name,
-                g,
-                "gradients and accumulators must be signed".into(),
-            )?;
-            need(
-                g.frac == acc.frac,
-                name,
-                g,
-                format!("must have the fraction bits of its accumulator {acc}"),
-            )?;
+            need(g.signed && acc.signed, name, g, "gradients and accumulators must be signed".into())?;
+            need(g.frac == acc.frac, name, g, format!("must have the fraction bits of its accumulator {acc}"))?;
         }
         need(
             self.z_acc.frac >= z.frac,
@@ -302,12 +254,7 @@ impl Formats {
             self.z_acc,
             format!("needs at least the {} fraction bits of z", z.frac),
         )?;
-        need(
-            self.c_acc.int >= 8,
-            "c_acc",
-            self.c_acc,
-            "needs 8 integer bits to hold 0..255".into(),
-        )?;
+        need(self.c_acc.int >= 8, "c_acc", self.c_acc, "needs 8 integer bits to hold 0..255".into())?;
         need(
             self.c_acc.frac >= self.color.frac,
             "c_acc",
@@ -345,10 +292,7 @@ mod tests {
     fn formats_defaults_follow_the_resolution() {
         let f = Formats::for_resolution(640, 480);
         assert_eq!(f.xy.to_string(), "S11.4 [16] half-up");
-        assert_eq!(
-            Formats::for_resolution(4096, 4096).xy.to_string(),
-            "S13.4 [18] half-up"
-        );
+        assert_eq!(Formats::for_resolution(4096, 4096).xy.to_string(), "S13.4 [18] half-up");
         for (w, h) in [(1, 1), (320, 240), (640, 480), (1024, 768), (4096, 4096)] {
             Formats::for_resolution(w, h).check(w, h).unwrap();
             Formats::wide(w, h).check(w, h).unwrap();
@@ -362,14 +306,8 @@ mod tests {
         assert_eq!(f.dc, Fmt::s(9, 30));
         let cases = [
             (serde_json::json!({"xy": "S8.4"}), "guard band"),
-            (
-                serde_json::json!({"dc": "S9.10"}),
-                "fraction bits of its accumulator",
-            ),
-            (
-                serde_json::json!({"zz": "S1.16"}),
-                "unknown quantity \"zz\"",
-            ),
+            (serde_json::json!({"dc": "S9.10"}), "fraction bits of its accumulator"),
+            (serde_json::json!({"zz": "S1.16"}), "unknown quantity \"zz\""),
             (serde_json::json!({"z": "U1.16"}), "must be signed"),
             (serde_json::json!({"z": "S1.40"}), "depth buffer"),
             (serde_json::json!({"color": "U7.0"}), "8 integer bits"),

@@ -8,7 +8,7 @@ pub mod fmt;
 pub mod formats;
 
 pub use fmt::{
-    clog2, fits_s, shr_floor, shr_half_up, signed_bits, unsigned_bits, wrap_s, wrap_u, Fmt,
-    Overflow, Rounding, MAX_BITS,
+    clog2, fits_s, shr_floor, shr_half_up, signed_bits, unsigned_bits, wrap_s, wrap_u, Fmt, Overflow, Rounding,
+    MAX_BITS,
 };
 pub use formats::{Derived, Formats, SUBPIXEL_BITS};

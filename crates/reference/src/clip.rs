@@ -33,20 +33,10 @@ pub fn to_screen(tri: &Triangle) -> Result<Vec<[RasterVertex; 3]>, Rejected> {
         return Err(Rejected::WZero);
     }
     if w.iter().all(|&w| w > 0.0) {
-        return Ok(vec![tri.map(|v| RasterVertex {
-            x: v.x,
-            y: v.y,
-            z: v.z,
-            inv_w: 1.0 / v.w_or_one(),
-            rgb: v.rgb(),
-        })]);
+        return Ok(vec![tri.map(|v| RasterVertex { x: v.x, y: v.y, z: v.z, inv_w: 1.0 / v.w_or_one(), rgb: v.rgb() })]);
     }
     // Homogeneous vertices: position * w, w, and the colour (linear in clip space).
-    let hom: Vec<[f64; 7]> = tri
-        .iter()
-        .zip(w)
-        .map(|(v, w)| [v.x * w, v.y * w, v.z * w, w, v.r, v.g, v.b])
-        .collect();
+    let hom: Vec<[f64; 7]> = tri.iter().zip(w).map(|(v, w)| [v.x * w, v.y * w, v.z * w, w, v.r, v.g, v.b]).collect();
     let eps = W_EPSILON * w.iter().fold(0.0f64, |m, w| m.max(w.abs()));
     let mut poly = Vec::with_capacity(4);
     for i in 0..3 {
@@ -73,9 +63,7 @@ pub fn to_screen(tri: &Triangle) -> Result<Vec<[RasterVertex; 3]>, Rejected> {
             rgb: [h[4], h[5], h[6]],
         })
         .collect();
-    Ok((1..screen.len() - 1)
-        .map(|i| [screen[0], screen[i], screen[i + 1]])
-        .collect())
+    Ok((1..screen.len() - 1).map(|i| [screen[0], screen[i], screen[i + 1]]).collect())
 }
 
 #[cfg(test)]
@@ -84,10 +72,7 @@ mod tests {
     use scene::Vertex;
 
     fn v(x: f64, y: f64, w: f64) -> Vertex {
-        Vertex {
-            w: Some(w),
-            ..Vertex::new(x, y, 0.5, [10.0, 20.0, 30.0])
-        }
+        Vertex { w: Some(w), ..Vertex::new(x, y, 0.5, [10.0, 20.0, 30.0]) }
     }
 
     #[test]
@@ -111,13 +96,7 @@ mod tests {
 
     #[test]
     fn clip_rejects_w_zero_and_all_behind() {
-        assert_eq!(
-            to_screen(&[v(1.0, 2.0, 0.0), v(5.0, 2.0, 1.0), v(3.0, 9.0, 1.0)]),
-            Err(Rejected::WZero)
-        );
-        assert_eq!(
-            to_screen(&[v(1.0, 2.0, -1.0), v(5.0, 2.0, -2.0), v(3.0, 9.0, -1.0)]),
-            Err(Rejected::BehindEye)
-        );
+        assert_eq!(to_screen(&[v(1.0, 2.0, 0.0), v(5.0, 2.0, 1.0), v(3.0, 9.0, 1.0)]), Err(Rejected::WZero));
+        assert_eq!(to_screen(&[v(1.0, 2.0, -1.0), v(5.0, 2.0, -2.0), v(3.0, 9.0, -1.0)]), Err(Rejected::BehindEye));
     }
 }

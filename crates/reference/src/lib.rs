@@ -49,11 +49,7 @@ pub struct Options {
 
 impl Default for Options {
     fn default() -> Self {
-        Options {
-            cull: Cull::None,
-            ignore_w: false,
-            background: [0.0; 3],
-        }
+        Options { cull: Cull::None, ignore_w: false, background: [0.0; 3] }
     }
 }
 
@@ -99,13 +95,7 @@ impl Frame {
     /// A frame cleared to `background` and depth 1.0.
     pub fn new(width: u32, height: u32, background: [f64; 3]) -> Self {
         let n = width as usize * height as usize;
-        Frame {
-            width,
-            height,
-            color: vec![background; n],
-            depth: vec![1.0; n],
-            written: vec![false; n],
-        }
+        Frame { width, height, color: vec![background; n], depth: vec![1.0; n], written: vec![false; n] }
     }
 
     /// Depth test LESS, then write. Returns whether the sample was written.
@@ -123,18 +113,12 @@ impl Frame {
 
     /// Colour rounded to the nearest 8-bit value.
     pub fn rgb8(&self) -> Vec<[u8; 3]> {
-        self.color
-            .iter()
-            .map(|c| c.map(|v| v.round().clamp(0.0, 255.0) as u8))
-            .collect()
+        self.color.iter().map(|c| c.map(|v| v.round().clamp(0.0, 255.0) as u8)).collect()
     }
 
     /// Depth as 16-bit values: round(depth * 65535).
     pub fn depth16(&self) -> Vec<u16> {
-        self.depth
-            .iter()
-            .map(|d| (d.clamp(0.0, 1.0) * 65535.0).round() as u16)
-            .collect()
+        self.depth.iter().map(|d| (d.clamp(0.0, 1.0) * 65535.0).round() as u16).collect()
     }
 }
 
@@ -162,11 +146,7 @@ pub fn prepare(tri: &Triangle, opts: &Options) -> Prepared {
         return Prepared::Culled;
     }
     let has_w = tri.iter().any(|v| v.w.is_some());
-    let interp = if has_w && !opts.ignore_w {
-        Interpolation::Perspective
-    } else {
-        Interpolation::Linear
-    };
+    let interp = if has_w && !opts.ignore_w { Interpolation::Perspective } else { Interpolation::Linear };
     Prepared::Draw(parts, interp)
 }
 
@@ -180,13 +160,7 @@ pub enum Outcome {
 
 /// Every covered on-screen sample of one triangle, before the z range and depth
 /// tests. The frame-independent half of [`render`]: tests count hits per pixel with it.
-pub fn fragments(
-    tri: &Triangle,
-    width: u32,
-    height: u32,
-    opts: &Options,
-    mut emit: impl FnMut(Fragment),
-) -> Outcome {
+pub fn fragments(tri: &Triangle, width: u32, height: u32, opts: &Options, mut emit: impl FnMut(Fragment)) -> Outcome {
     match prepare(tri, opts) {
         Prepared::Culled => Outcome::Culled,
         Prepared::Degenerate => Outcome::Degenerate,
@@ -203,10 +177,7 @@ pub fn fragments(
 /// triangles done so far, every few hundred triangles and at the end.
 pub fn render(list: &Trilist, opts: &Options, progress: &mut dyn FnMut(usize)) -> (Frame, Stats) {
     let mut frame = Frame::new(list.width, list.height, opts.background);
-    let mut stats = Stats {
-        triangles_in: list.triangles.len() as u64,
-        ..Stats::default()
-    };
+    let mut stats = Stats { triangles_in: list.triangles.len() as u64, ..Stats::default() };
     for (i, tri) in list.triangles.iter().enumerate() {
         let outcome = fragments(tri, list.width, list.height, opts, |f| {
             stats.fragments += 1;

@@ -69,11 +69,7 @@ pub fn rasterize(
         return 0;
     }
     // Orient clockwise-on-screen (area2 > 0) so that inside means every edge > 0.
-    let v = if area2 > 0.0 {
-        *tri
-    } else {
-        [tri[0], tri[2], tri[1]]
-    };
+    let v = if area2 > 0.0 { *tri } else { [tri[0], tri[2], tri[1]] };
     let area2 = area2.abs();
     let p = v.map(|v| (v.x, v.y));
     // Edge k runs from vertex k+1 to vertex k+2: it is opposite vertex k, so its
@@ -95,8 +91,7 @@ pub fn rasterize(
         let b = (hi - 0.5).floor().min(n as f64 - 1.0);
         (a <= b).then_some((a as u32, b as u32))
     };
-    let (Some((x0, x1)), Some((y0, y1))) = (span(min_x, max_x, width), span(min_y, max_y, height))
-    else {
+    let (Some((x0, x1)), Some((y0, y1))) = (span(min_x, max_x, width), span(min_y, max_y, height)) else {
         return 0;
     };
 
@@ -120,24 +115,17 @@ pub fn rasterize(
             let b = e.map(|ek| ek / area2);
             let z = b[0] * v[0].z + b[1] * v[1].z + b[2] * v[2].z;
             let rgb = match interp {
-                Interpolation::Linear => std::array::from_fn(|c| {
-                    b[0] * v[0].rgb[c] + b[1] * v[1].rgb[c] + b[2] * v[2].rgb[c]
-                }),
+                Interpolation::Linear => {
+                    std::array::from_fn(|c| b[0] * v[0].rgb[c] + b[1] * v[1].rgb[c] + b[2] * v[2].rgb[c])
+                }
                 Interpolation::Perspective => {
                     let q: [f64; 3] = std::array::from_fn(|k| b[k] * v[k].inv_w);
                     let sum = q[0] + q[1] + q[2];
-                    std::array::from_fn(|c| {
-                        (q[0] * v[0].rgb[c] + q[1] * v[1].rgb[c] + q[2] * v[2].rgb[c]) / sum
-                    })
+                    std::array::from_fn(|c| (q[0] * v[0].rgb[c] + q[1] * v[1].rgb[c] + q[2] * v[2].rgb[c]) / sum)
                 }
             };
             covered += 1;
-            emit(Fragment {
-                x: px,
-                y: py,
-                z,
-                rgb,
-            });
+            emit(Fragment { x: px, y: py, z, rgb });
         }
     }
     covered

@@ -15,29 +15,20 @@ fn v(x: f64, y: f64) -> Vertex {
 fn hits(tris: &[Triangle], w: u32, h: u32) -> Vec<u32> {
     let mut count = vec![0u32; (w * h) as usize];
     for t in tris {
-        fragments(t, w, h, &Options::default(), |f| {
-            count[(f.y * w + f.x) as usize] += 1
-        });
+        fragments(t, w, h, &Options::default(), |f| count[(f.y * w + f.x) as usize] += 1);
     }
     count
 }
 
 pub fn seed() -> u64 {
-    std::env::var("EDGEPAINT_SEED")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(1)
+    std::env::var("EDGEPAINT_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(1)
 }
 
 #[test]
 fn reference_shared_edge_through_pixel_centres_paints_union_once() {
     // Squares split along diagonals that run through pixel centres, with
     // outer edges on pixel centres too: every tie the rule has to break.
-    for (a, b) in [
-        ((1.5, 1.5), (9.5, 9.5)),
-        ((0.5, 2.5), (20.5, 12.5)),
-        ((3.5, 1.5), (5.5, 17.5)),
-    ] {
+    for (a, b) in [((1.5, 1.5), (9.5, 9.5)), ((0.5, 2.5), (20.5, 12.5)), ((3.5, 1.5), (5.5, 17.5))] {
         let (x0, y0, x1, y1) = (a.0, a.1, b.0, b.1);
         for flip in [false, true] {
             let mut t1 = [v(x0, y0), v(x1, y1), v(x0, y1)];
@@ -72,26 +63,14 @@ fn reference_fan_of_32_thin_triangles_leaves_no_hole_and_no_double_hit() {
             .map(|k| {
                 let a = std::f64::consts::TAU * k as f64 / n as f64;
                 let snap = |t: f64| (t * 16.0).round() / 16.0;
-                (
-                    snap(centre.0 + 28.0 * a.cos()),
-                    snap(centre.1 + 28.0 * a.sin()),
-                )
+                (snap(centre.0 + 28.0 * a.cos()), snap(centre.1 + 28.0 * a.sin()))
             })
             .collect();
         let tris: Vec<Triangle> = (0..n)
-            .map(|k| {
-                [
-                    v(centre.0, centre.1),
-                    v(ring[k].0, ring[k].1),
-                    v(ring[(k + 1) % n].0, ring[(k + 1) % n].1),
-                ]
-            })
+            .map(|k| [v(centre.0, centre.1), v(ring[k].0, ring[k].1), v(ring[(k + 1) % n].0, ring[(k + 1) % n].1)])
             .collect();
         let count = hits(&tris, 64, 64);
-        assert!(
-            count.iter().all(|&c| c <= 1),
-            "centre {centre:?}: a pixel was hit twice"
-        );
+        assert!(count.iter().all(|&c| c <= 1), "centre {centre:?}: a pixel was hit twice");
         // Independent oracle: a centre strictly inside the convex polygon (by more
         // than rounding) must be hit once; one outside must not be hit.
         for py in 0..64u32 {
@@ -108,10 +87,7 @@ fn reference_fan_of_32_thin_triangles_leaves_no_hole_and_no_double_hit() {
                 if side > 1e-9 {
                     assert_eq!(c, 1, "centre {centre:?}: hole at ({px},{py})");
                 } else if side < -1e-9 {
-                    assert_eq!(
-                        c, 0,
-                        "centre {centre:?}: ({px},{py}) outside the fan was painted"
-                    );
+                    assert_eq!(c, 0, "centre {centre:?}: ({px},{py}) outside the fan was painted");
                 }
             }
         }
@@ -128,16 +104,8 @@ pub fn random_mesh(rng: &mut ChaCha8Rng, w: u32, h: u32) -> Vec<Triangle> {
     for j in 0..=ny {
         for i in 0..=nx {
             let mut jitter = || rng.gen_range(-2i32..=2) as f64 * 0.25;
-            let x = if i == 0 || i == nx {
-                (2 * i) as f64
-            } else {
-                (2 * i) as f64 + jitter()
-            };
-            let y = if j == 0 || j == ny {
-                (2 * j) as f64
-            } else {
-                (2 * j) as f64 + jitter()
-            };
+            let x = if i == 0 || i == nx { (2 * i) as f64 } else { (2 * i) as f64 + jitter() };
+            let y = if j == 0 || j == ny { (2 * j) as f64 } else { (2 * j) as f64 + jitter() };
             p[(j * (nx + 1) + i) as usize] = (x, y);
         }
     }
@@ -146,11 +114,7 @@ pub fn random_mesh(rng: &mut ChaCha8Rng, w: u32, h: u32) -> Vec<Triangle> {
         for i in 0..nx {
             let at = |a: u32, b: u32| p[(b * (nx + 1) + a) as usize];
             let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-            let halves = if rng.gen() {
-                [[a, b, c], [a, c, d]]
-            } else {
-                [[a, b, d], [b, c, d]]
-            };
+            let halves = if rng.gen() { [[a, b, c], [a, c, d]] } else { [[a, b, d], [b, c, d]] };
             for mut t in halves {
                 if rng.gen() {
                     t.swap(1, 2);
@@ -169,14 +133,7 @@ fn reference_random_2x2_mesh_covers_screen_exactly_once() {
         let tris = random_mesh(&mut rng, 48, 32);
         let count = hits(&tris, 48, 32);
         for (i, &c) in count.iter().enumerate() {
-            assert_eq!(
-                c,
-                1,
-                "seed {}: pixel ({}, {}) hit {c} times",
-                seed(),
-                i % 48,
-                i / 48
-            );
+            assert_eq!(c, 1, "seed {}: pixel ({}, {}) hit {c} times", seed(), i % 48, i / 48);
         }
     }
 }

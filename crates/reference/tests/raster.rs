@@ -27,38 +27,20 @@ fn reference_linear_colour_and_depth_follow_the_plane_equation() {
     fragments(&t, 640, 480, &Options::default(), |f| {
         let (x, y) = (f.x as f64 + 0.5, f.y as f64 + 0.5);
         let z = plane(t.map(|v| (v.x, v.y, v.z)), x, y);
-        assert!(
-            (f.z - z).abs() < 1e-9,
-            "z at ({x},{y}): {} vs plane {z}",
-            f.z
-        );
+        assert!((f.z - z).abs() < 1e-9, "z at ({x},{y}): {} vs plane {z}", f.z);
         for c in 0..3 {
             let want = plane(t.map(|v| (v.x, v.y, v.rgb()[c])), x, y);
-            assert!(
-                (f.rgb[c] - want).abs() < 1e-9,
-                "channel {c} at ({x},{y}): {} vs plane {want}",
-                f.rgb[c]
-            );
+            assert!((f.rgb[c] - want).abs() < 1e-9, "channel {c} at ({x},{y}): {} vs plane {want}", f.rgb[c]);
         }
         n += 1;
     });
-    assert!(
-        n > 100_000,
-        "the triangle should cover most of the screen, covered {n}"
-    );
+    assert!(n > 100_000, "the triangle should cover most of the screen, covered {n}");
 }
 
 #[test]
 fn reference_perspective_colour_is_the_ratio_of_two_planes() {
-    let mk = |x, y, z, w, c| Vertex {
-        w: Some(w),
-        ..vz(x, y, z, [c, 0.0, 0.0])
-    };
-    let t = [
-        mk(10.0, 10.0, 0.2, 1.0, 0.0),
-        mk(300.0, 20.0, 0.5, 4.0, 255.0),
-        mk(40.0, 230.0, 0.7, 2.0, 100.0),
-    ];
+    let mk = |x, y, z, w, c| Vertex { w: Some(w), ..vz(x, y, z, [c, 0.0, 0.0]) };
+    let t = [mk(10.0, 10.0, 0.2, 1.0, 0.0), mk(300.0, 20.0, 0.5, 4.0, 255.0), mk(40.0, 230.0, 0.7, 2.0, 100.0)];
     fragments(&t, 320, 240, &Options::default(), |f| {
         let (x, y) = (f.x as f64 + 0.5, f.y as f64 + 0.5);
         let num = plane(t.map(|v| (v.x, v.y, v.r / v.w.unwrap())), x, y);
@@ -66,31 +48,15 @@ fn reference_perspective_colour_is_the_ratio_of_two_planes() {
         assert!((f.rgb[0] - num / den).abs() < 1e-9, "at ({x},{y})");
     });
     // With --linear semantics the same triangle follows the screen plane instead.
-    let opts = Options {
-        ignore_w: true,
-        ..Options::default()
-    };
+    let opts = Options { ignore_w: true, ..Options::default() };
     fragments(&t, 320, 240, &opts, |f| {
-        let want = plane(
-            t.map(|v| (v.x, v.y, v.r)),
-            f.x as f64 + 0.5,
-            f.y as f64 + 0.5,
-        );
+        let want = plane(t.map(|v| (v.x, v.y, v.r)), f.x as f64 + 0.5, f.y as f64 + 0.5);
         assert!((f.rgb[0] - want).abs() < 1e-9);
     });
 }
 
 fn one(tris: Vec<Triangle>, opts: &Options) -> reference::Frame {
-    render(
-        &Trilist {
-            width: 16,
-            height: 16,
-            triangles: tris,
-        },
-        opts,
-        &mut |_| {},
-    )
-    .0
+    render(&Trilist { width: 16, height: 16, triangles: tris }, opts, &mut |_| {}).0
 }
 
 #[test]
@@ -110,30 +76,16 @@ fn reference_depth_test_is_less_and_order_independent() {
     assert_eq!(a, b);
     assert_eq!(a.rgb8()[0], [255, 0, 0]);
     // Equal depth: LESS keeps the first.
-    let same = one(
-        vec![near, near.map(|v| Vertex { g: 255.0, ..v })],
-        &Options::default(),
-    );
+    let same = one(vec![near, near.map(|v| Vertex { g: 255.0, ..v })], &Options::default());
     assert_eq!(same.rgb8()[0], [255, 0, 0]);
 }
 
 #[test]
 fn reference_clips_samples_outside_z_0_1() {
     // z runs from -1 at the left edge to 2 at the right: only samples with z in [0, 1] remain.
-    let t = [
-        vz(0.0, 0.0, -1.0, [9.0; 3]),
-        vz(16.0, 0.0, 2.0, [9.0; 3]),
-        vz(0.0, 16.0, -1.0, [9.0; 3]),
-    ];
-    let (frame, stats) = render(
-        &Trilist {
-            width: 16,
-            height: 16,
-            triangles: vec![t],
-        },
-        &Options::default(),
-        &mut |_| {},
-    );
+    let t = [vz(0.0, 0.0, -1.0, [9.0; 3]), vz(16.0, 0.0, 2.0, [9.0; 3]), vz(0.0, 16.0, -1.0, [9.0; 3])];
+    let (frame, stats) =
+        render(&Trilist { width: 16, height: 16, triangles: vec![t] }, &Options::default(), &mut |_| {});
     for (i, &wrote) in frame.written.iter().enumerate() {
         let x = (i % 16) as f64 + 0.5;
         let z = -1.0 + 3.0 * x / 16.0;
@@ -148,27 +100,14 @@ fn reference_clips_samples_outside_z_0_1() {
 #[test]
 fn reference_back_face_cull_drops_clockwise_triangles_only() {
     // Counter-clockwise as the viewer sees it (y down): left-top, left-bottom, right-bottom.
-    let ccw = [
-        vz(1.0, 1.0, 0.5, [1.0; 3]),
-        vz(1.0, 9.0, 0.5, [1.0; 3]),
-        vz(9.0, 9.0, 0.5, [1.0; 3]),
-    ];
+    let ccw = [vz(1.0, 1.0, 0.5, [1.0; 3]), vz(1.0, 9.0, 0.5, [1.0; 3]), vz(9.0, 9.0, 0.5, [1.0; 3])];
     let cw = [ccw[0], ccw[2], ccw[1]];
-    let back = Options {
-        cull: Cull::Back,
-        ..Options::default()
-    };
+    let back = Options { cull: Cull::Back, ..Options::default() };
     assert_eq!(fragments(&ccw, 16, 16, &back, |_| {}), Outcome::Drawn);
     assert_eq!(fragments(&cw, 16, 16, &back, |_| {}), Outcome::Culled);
-    assert_eq!(
-        fragments(&cw, 16, 16, &Options::default(), |_| {}),
-        Outcome::Drawn
-    );
+    assert_eq!(fragments(&cw, 16, 16, &Options::default(), |_| {}), Outcome::Drawn);
     let flat = [ccw[0], ccw[0], ccw[2]];
-    assert_eq!(
-        fragments(&flat, 16, 16, &Options::default(), |_| {}),
-        Outcome::Degenerate
-    );
+    assert_eq!(fragments(&flat, 16, 16, &Options::default(), |_| {}), Outcome::Degenerate);
 }
 
 /// A triangle in eye space (x, y, z_eye with the eye looking down -z), projected
@@ -179,15 +118,7 @@ fn project(p: [f64; 3], size: f64) -> Vertex {
     let (xn, yn) = (p[0] / w, p[1] / w);
     let (n, f) = (1.0, 100.0);
     let z = f / (f - n) * (1.0 - n / w);
-    Vertex {
-        w: Some(w),
-        ..vz(
-            (xn + 1.0) * size / 2.0,
-            (1.0 - yn) * size / 2.0,
-            z,
-            [200.0, 100.0, 50.0],
-        )
-    }
+    Vertex { w: Some(w), ..vz((xn + 1.0) * size / 2.0, (1.0 - yn) * size / 2.0, z, [200.0, 100.0, 50.0]) }
 }
 
 #[test]
@@ -211,44 +142,18 @@ fn reference_draws_a_triangle_through_the_eye_plane_like_an_eye_space_clip() {
             poly.push(std::array::from_fn(|k| a[k] + t * (b[k] - a[k])));
         }
     }
-    let fan: Vec<Triangle> = (1..poly.len() - 1)
-        .map(|i| [poly[0], poly[i], poly[i + 1]].map(|p| project(p, size)))
-        .collect();
+    let fan: Vec<Triangle> =
+        (1..poly.len() - 1).map(|i| [poly[0], poly[i], poly[i + 1]].map(|p| project(p, size))).collect();
     let want = one_sized(fan, size as u32);
-    let differ = got
-        .written
-        .iter()
-        .zip(&want.written)
-        .filter(|(a, b)| a != b)
-        .count();
-    assert_eq!(
-        differ, 0,
-        "coverage differs from the eye-space clip in {differ} pixels"
-    );
-    assert!(
-        got.written.iter().filter(|&&w| w).count() > 200,
-        "the visible part should be drawn"
-    );
+    let differ = got.written.iter().zip(&want.written).filter(|(a, b)| a != b).count();
+    assert_eq!(differ, 0, "coverage differs from the eye-space clip in {differ} pixels");
+    assert!(got.written.iter().filter(|&&w| w).count() > 200, "the visible part should be drawn");
     // Nothing was painted above the horizon: the floor (y = -1) lies below the eye.
     for (i, &wrote) in got.written.iter().enumerate() {
-        assert!(
-            !(wrote && i / 64 < 32),
-            "pixel ({}, {}) above the horizon was painted",
-            i % 64,
-            i / 64
-        );
+        assert!(!(wrote && i / 64 < 32), "pixel ({}, {}) above the horizon was painted", i % 64, i / 64);
     }
 }
 
 fn one_sized(tris: Vec<Triangle>, size: u32) -> reference::Frame {
-    render(
-        &Trilist {
-            width: size,
-            height: size,
-            triangles: tris,
-        },
-        &Options::default(),
-        &mut |_| {},
-    )
-    .0
+    render(&Trilist { width: size, height: size, triangles: tris }, &Options::default(), &mut |_| {}).0
 }
