@@ -1,28 +1,527 @@
-//! Scene files (placeholder; the scene work replaces this module).
-use crate::{Result, Trilist};
-use std::path::Path;
+//! Scene files: what to draw, from where, under which lights.
+//!
+//! A scene is a JSON object. Unknown keys are errors everywhere, and every
+//! value is checked when the scene is read; the message names the key
+//! (`objects[2].transform.scale: ...`) and the caller adds the file.
+//!
+//! ```json
+//! {
+//!   "width": 320, "height": 240,
+//!   "background": [20, 24, 32],
+//!   "camera": {"eye": [0, 1.5, 4], "target": [0, 0, 0], "up": [0, 1, 0],
+//!              "fov_y_deg": 45, "near": 0.5, "far": 20},
+//!   "lights": {"ambient": [0.15, 0.15, 0.15],
+//!              "directional": [{"direction": [-1, -1, -1], "color": [0.9, 0.9, 0.8]}]},
+//!   "objects": [
+//!     {"model": "torus", "color": [230, 120, 40],
+//!      "transform": {"translate": [0, 0, 0], "rotate_deg": [60, 0, 0], "scale": 1.2}},
+//!     {"obj": "house.obj", "color": [200, 200, 200]}
+//!   ],
+//!   "cull": "none"
+//! }
+//! ```
+//!
+//! | key | type | default | meaning |
+//! |---|---|---|---|
+//! | `width`, `height` | integers | required | resolution in pixels, 1 to [`MAX_RESOLUTION`](crate::MAX_RESOLUTION) |
+//! | `background` | [r, g, b] in 0..255 | [0, 0, 0] | colour of pixels no triangle covers |
+//! | `camera.eye` | [x, y, z] | required | where the camera is (world space) |
+//! | `camera.target` | [x, y, z] | required | the point at the centre of the image; not `eye` |
+//! | `camera.up` | [x, y, z] | [0, 1, 0] | which way is up on screen; not parallel to `target - eye` |
+//! | `camera.fov_y_deg` | number in (0, 180) | required | vertical field of view, degrees |
+//! | `camera.near`, `camera.far` | numbers, 0 < near < far | required | distances along the view direction that map to depth 0 and 1 |
+//! | `lights.ambient` | [r, g, b] in 0..1 | [0, 0, 0] | light reaching every surface |
+//! | `lights.directional` | array | [] | distant lights: |
+//! | &nbsp; `.direction` | [x, y, z], not zero | required | the direction the light *travels* (world space): [0, -1, 0] shines straight down |
+//! | &nbsp; `.color` | [r, g, b] in 0..1 | [1, 1, 1] | its intensity per channel |
+//! | `objects` | array | required | what to draw, each object with: |
+//! | &nbsp; `.model` | name | one of `model`, `obj` | a built-in model: `cube`, `sphere`, `cone`, `torus`, `pawn` (see [`builtin`](crate::builtin)) |
+//! | &nbsp; `.obj` | path | one of `model`, `obj` | a Wavefront OBJ file, relative to the scene file's folder (see [`Mesh::load_obj`]) |
+//! | &nbsp; `.transform.translate` | [x, y, z] | [0, 0, 0] | |
+//! | &nbsp; `.transform.rotate_deg` | [rx, ry, rz] | [0, 0, 0] | degrees about the world x, then y, then z axis (counter-clockwise looking down each axis toward the origin) |
+//! | &nbsp; `.transform.scale` | number or [x, y, z], no zero | 1 | a negative factor mirrors the object (its faces stay front faces) |
+//! | &nbsp; `.color` | [r, g, b] in 0..255 | [255, 255, 255] | the surface's colour |
+//! | `cull` | `"none"` or `"back"` | `"none"` | whether the renderer drops back faces ([`Scene::cull_back`]) |
+//!
+//! An object's vertices go to world space by `translate * Rz * Ry * Rx * scale`
+//! and are lit there (Lambert, per vertex; normals by the inverse transpose):
+//! `color * (ambient + sum over lights of max(0, N.L) * light color)`, clamped
+//! to [0, 255] per channel, with L the unit vector toward the light. What
+//! happens next is the [`geometry`](crate::geometry) stage.
 
-/// A scene: resolution, background, camera, lights and objects.
+use crate::builtin;
+use crate::error::{parse_json, Error, Result};
+use crate::geometry::{emit_clipped, ObjectTransform, Projection};
+use crate::math::{Mat3, Vec3};
+use crate::mesh::Mesh;
+use crate::trilist::{check_resolution, Trilist};
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+/// A scene: resolution, background, camera, lights and objects, checked.
+#[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     pub width: u32,
     pub height: u32,
     /// Background colour in [0, 255].
     pub background: [f64; 3],
-    /// Whether the scene asks for back faces to be culled.
+    /// Whether the scene asks for back faces to be culled (`"cull": "back"`).
     pub cull_back: bool,
+    pub camera: Camera,
+    pub lights: Lights,
+    pub objects: Vec<Object>,
+}
+
+/// The camera: a perspective look-at view.
+#[derive(Clone, Copy, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Camera {
+    pub eye: Vec3,
+    pub target: Vec3,
+    #[serde(default = "y_up")]
+    pub up: Vec3,
+    /// Vertical field of view in degrees, in (0, 180).
+    pub fov_y_deg: f64,
+    /// Distance along the view direction of depth 0; > 0.
+    pub near: f64,
+    /// Distance along the view direction of depth 1; > near.
+    pub far: f64,
+}
+
+/// Ambient and directional lights.
+#[derive(Clone, Debug, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Lights {
+    /// Intensity per channel in [0, 1].
+    #[serde(default)]
+    pub ambient: [f64; 3],
+    #[serde(default)]
+    pub directional: Vec<DirectionalLight>,
+}
+
+/// A light at infinity.
+#[derive(Clone, Copy, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DirectionalLight {
+    /// The direction the light travels, world space; not zero.
+    pub direction: Vec3,
+    /// Intensity per channel in [0, 1].
+    #[serde(default = "white_light")]
+    pub color: [f64; 3],
+}
+
+/// Where an object's mesh came from.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ModelSource {
+    /// A [`builtin`] model, by name.
+    Builtin(String),
+    /// An OBJ file (the path as resolved against the scene's folder).
+    Obj(PathBuf),
+}
+
+/// One object of the scene, its mesh loaded.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Object {
+    pub source: ModelSource,
+    pub mesh: Mesh,
+    pub transform: Transform,
+    /// Surface colour in [0, 255].
+    pub color: [f64; 3],
+}
+
+/// Object to world: scale, then rotate about x, y, z (in that order), then translate.
+#[derive(Clone, Copy, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Transform {
+    #[serde(default)]
+    pub translate: Vec3,
+    /// Degrees about the world x, then y, then z axis.
+    #[serde(default)]
+    pub rotate_deg: Vec3,
+    /// Per-axis factors; none zero. The file may give one number for all three.
+    #[serde(default = "unit_scale", deserialize_with = "scale_from_file")]
+    pub scale: Vec3,
+}
+
+impl Default for Transform {
+    fn default() -> Self {
+        Transform { translate: [0.0; 3], rotate_deg: [0.0; 3], scale: unit_scale() }
+    }
+}
+
+impl Transform {
+    /// The linear part `Rz * Ry * Rx * S` (the translation is added apart).
+    fn linear(&self) -> Mat3 {
+        let [rx, ry, rz] = self.rotate_deg;
+        Mat3::rotation(2, rz).mul(&Mat3::rotation(1, ry)).mul(&Mat3::rotation(0, rx)).mul(&Mat3::diagonal(self.scale))
+    }
+}
+
+fn y_up() -> Vec3 {
+    [0.0, 1.0, 0.0]
+}
+
+fn white_light() -> [f64; 3] {
+    [1.0; 3]
+}
+
+fn white() -> [f64; 3] {
+    [255.0; 3]
+}
+
+fn unit_scale() -> Vec3 {
+    [1.0; 3]
+}
+
+fn scale_from_file<'de, D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Vec3, D::Error> {
+    #[derive(Deserialize)]
+    #[serde(untagged, expecting = "expected a number or [x, y, z]")]
+    enum Scale {
+        Uniform(f64),
+        Axes(Vec3),
+    }
+    Ok(match Scale::deserialize(d)? {
+        Scale::Uniform(s) => [s; 3],
+        Scale::Axes(v) => v,
+    })
+}
+
+/// The file's form of a scene, before meshes are loaded.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneFile {
+    width: u32,
+    height: u32,
+    #[serde(default)]
+    background: [f64; 3],
+    camera: Camera,
+    lights: Lights,
+    objects: Vec<ObjectFile>,
+    #[serde(default)]
+    cull: Cull,
+}
+
+#[derive(Default, Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum Cull {
+    #[default]
+    None,
+    Back,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ObjectFile {
+    model: Option<String>,
+    obj: Option<PathBuf>,
+    #[serde(default)]
+    transform: Transform,
+    #[serde(default = "white")]
+    color: [f64; 3],
+}
+
+impl ObjectFile {
+    /// Loads the mesh; `at` names the object in messages.
+    fn load(self, base_dir: &Path, at: &str) -> Result<Object> {
+        let (source, mesh) = match (self.model, self.obj) {
+            (Some(name), None) => {
+                let mesh = builtin::mesh(&name).ok_or_else(|| {
+                    Error::invalid(format!(
+                        "{at}.model: unknown model \"{name}\" (the built-in models are {})",
+                        builtin::NAMES.join(", ")
+                    ))
+                })?;
+                (ModelSource::Builtin(name), mesh)
+            }
+            (None, Some(obj)) => {
+                let path = base_dir.join(obj);
+                let mesh = Mesh::load_obj(&path).map_err(|e| Error::invalid(format!("{at}.obj: {e}")))?;
+                (ModelSource::Obj(path), mesh)
+            }
+            (Some(_), Some(_)) => {
+                return Err(Error::invalid(format!("{at}: has both \"model\" and \"obj\"; give exactly one")))
+            }
+            (None, None) => {
+                return Err(Error::invalid(format!(
+                    "{at}: has neither \"model\" nor \"obj\"; give exactly one (a built-in model name or an OBJ path)"
+                )))
+            }
+        };
+        Ok(Object { source, mesh, transform: self.transform, color: self.color })
+    }
 }
 
 impl Scene {
     /// Reads and validates a scene file; OBJ paths are relative to its folder.
-    pub fn load(_path: &Path) -> Result<Scene> {
-        todo!()
+    pub fn load(path: &Path) -> Result<Scene> {
+        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+        let raw: serde_json::Value = parse_json(&text).map_err(|e| e.in_file(path))?;
+        Scene::from_value(&raw, path.parent().unwrap_or(Path::new("."))).map_err(|e| e.in_file(path))
     }
-    /// Parses a scene from JSON text; OBJ paths are relative to `base_dir`.
-    pub fn from_value(_raw: &serde_json::Value, _base_dir: &Path) -> Result<Scene> {
-        todo!()
+
+    /// Builds and validates a scene from parsed JSON; OBJ paths are relative to `base_dir`.
+    pub fn from_value(raw: &serde_json::Value, base_dir: &Path) -> Result<Scene> {
+        let file: SceneFile = serde_path_to_error::deserialize(raw).map_err(|e| {
+            let at = e.path().to_string();
+            let inner = e.into_inner();
+            Error::invalid(if at == "." { inner.to_string() } else { format!("{at}: {inner}") })
+        })?;
+        let objects = file
+            .objects
+            .into_iter()
+            .enumerate()
+            .map(|(i, o)| o.load(base_dir, &format!("objects[{i}]")))
+            .collect::<Result<Vec<_>>>()?;
+        let scene = Scene {
+            width: file.width,
+            height: file.height,
+            background: file.background,
+            cull_back: matches!(file.cull, Cull::Back),
+            camera: file.camera,
+            lights: file.lights,
+            objects,
+        };
+        scene.validate()?;
+        Ok(scene)
     }
-    /// Runs the geometry stage: the screen-space triangles, with w.
+
+    /// The same scene drawn at another resolution (the field of view stays vertical).
+    pub fn with_size(self, width: u32, height: u32) -> Result<Scene> {
+        check_resolution(width, height)?;
+        Ok(Scene { width, height, ..self })
+    }
+
+    /// Checks every value (the serde types alone allow out-of-range ones).
+    pub fn validate(&self) -> Result<()> {
+        check_resolution(self.width, self.height)?;
+        check_vec("background", self.background, Some((0.0, 255.0)))?;
+        let cam = &self.camera;
+        for (name, v) in [("camera.eye", cam.eye), ("camera.target", cam.target), ("camera.up", cam.up)] {
+            check_vec(name, v, None)?;
+        }
+        Projection::new(cam, self.width, self.height).map_err(Error::invalid)?;
+        check_vec("lights.ambient", self.lights.ambient, Some((0.0, 1.0)))?;
+        for (i, light) in self.lights.directional.iter().enumerate() {
+            let at = format!("lights.directional[{i}]");
+            check_vec(&format!("{at}.direction"), light.direction, None)?;
+            if light.direction == [0.0; 3] {
+                return Err(Error::invalid(format!("{at}.direction is [0, 0, 0]: a light needs a direction")));
+            }
+            check_vec(&format!("{at}.color"), light.color, Some((0.0, 1.0)))?;
+        }
+        for (i, o) in self.objects.iter().enumerate() {
+            let at = format!("objects[{i}]");
+            let t = &o.transform;
+            check_vec(&format!("{at}.transform.translate"), t.translate, None)?;
+            check_vec(&format!("{at}.transform.rotate_deg"), t.rotate_deg, None)?;
+            check_vec(&format!("{at}.transform.scale"), t.scale, None)?;
+            if t.scale.contains(&0.0) {
+                return Err(Error::invalid(format!(
+                    "{at}.transform.scale = {:?} has a zero factor: the object would be flat",
+                    t.scale
+                )));
+            }
+            check_vec(&format!("{at}.color"), o.color, Some((0.0, 255.0)))?;
+            o.mesh.check().map_err(|msg| Error::invalid(format!("{at}: the mesh {msg}")))?;
+        }
+        Ok(())
+    }
+
+    /// Runs the geometry stage: the screen-space triangles, each vertex with its
+    /// clip-space w. See [`geometry`](crate::geometry).
     pub fn to_trilist(&self) -> Result<Trilist> {
-        todo!()
+        self.validate()?;
+        let projection = Projection::new(&self.camera, self.width, self.height).map_err(Error::invalid)?;
+        let mut list = Trilist::new(self.width, self.height)?;
+        for (i, o) in self.objects.iter().enumerate() {
+            let xf = ObjectTransform::new(&projection, &o.transform.linear(), o.transform.translate)
+                .map_err(|msg| Error::invalid(format!("objects[{i}].transform: {msg}")))?;
+            for tri in &o.mesh.triangles {
+                emit_clipped(xf.vertices(tri, o.color, &self.lights), &projection, &mut list.triangles);
+            }
+        }
+        Ok(list)
+    }
+}
+
+/// Checks that `v` is finite and, when `range` is given, each component inside it.
+fn check_vec(name: &str, v: Vec3, range: Option<(f64, f64)>) -> Result<()> {
+    if v.iter().any(|c| !c.is_finite()) {
+        return Err(Error::invalid(format!("{name} = {v:?} is not finite")));
+    }
+    if let Some((lo, hi)) = range {
+        if v.iter().any(|c| !(lo..=hi).contains(c)) {
+            return Err(Error::invalid(format!("{name} = {v:?} is outside [{lo}, {hi}]")));
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::{json, Value};
+
+    fn valid() -> Value {
+        json!({
+            "width": 64, "height": 48,
+            "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov_y_deg": 45, "near": 1, "far": 10},
+            "lights": {"ambient": [0.2, 0.2, 0.2], "directional": [{"direction": [0, 0, -1]}]},
+            "objects": [{"model": "cube"}]
+        })
+    }
+
+    fn error_of(v: &Value) -> String {
+        Scene::from_value(v, Path::new(".")).map(|_| ()).unwrap_err().to_string()
+    }
+
+    #[test]
+    fn scene_defaults_fill_in_what_the_file_leaves_out() {
+        let s = Scene::from_value(&valid(), Path::new(".")).unwrap();
+        assert_eq!(s.background, [0.0; 3]);
+        assert!(!s.cull_back);
+        assert_eq!(s.camera.up, [0.0, 1.0, 0.0]);
+        assert_eq!(s.lights.directional[0].color, [1.0; 3]);
+        assert_eq!(s.objects[0].transform, Transform::default());
+        assert_eq!(s.objects[0].color, [255.0; 3]);
+        assert_eq!(s.objects[0].source, ModelSource::Builtin("cube".into()));
+        let mut v = valid();
+        v["cull"] = json!("back");
+        v["objects"][0]["transform"] = json!({"scale": [1, 2, 3]});
+        let s = Scene::from_value(&v, Path::new(".")).unwrap();
+        assert!(s.cull_back);
+        assert_eq!(s.objects[0].transform.scale, [1.0, 2.0, 3.0]);
+    }
+
+    #[test]
+    fn scene_with_size_changes_the_resolution_and_checks_it() {
+        let s = Scene::from_value(&valid(), Path::new(".")).unwrap();
+        let big = s.clone().with_size(640, 480).unwrap();
+        assert_eq!((big.width, big.height), (640, 480));
+        assert_eq!(big.to_trilist().unwrap().width, 640);
+        let err = s.with_size(0, 480).unwrap_err().to_string();
+        assert!(err.contains("width 0 is out of range"), "{err}");
+    }
+
+    #[test]
+    fn scene_rejects_bad_values_saying_what_is_wrong() {
+        let cases: &[(&str, Value, &str)] = &[
+            ("/width", json!(0), "width 0 is out of range"),
+            ("/height", json!(100000), "height 100000 is out of range"),
+            ("/width", json!(-3), "width: invalid value: integer `-3`"),
+            ("/background", json!([0, 256, 0]), "background = [0.0, 256.0, 0.0] is outside [0, 255]"),
+            ("/camera/target", json!([0, 0, 5]), "camera.eye and camera.target are the same point"),
+            ("/camera/up", json!([0, 0, 3]), "camera.up = [0.0, 0.0, 3.0] is parallel to the view direction"),
+            ("/camera/fov_y_deg", json!(0), "camera.fov_y_deg = 0 is outside (0, 180)"),
+            ("/camera/fov_y_deg", json!(180), "camera.fov_y_deg = 180 is outside (0, 180)"),
+            ("/camera/near", json!(0), "camera.near = 0 must be greater than 0"),
+            ("/camera/near", json!(-1), "camera.near = -1 must be greater than 0"),
+            ("/camera/far", json!(1), "camera.far = 1 must be greater than camera.near = 1"),
+            ("/camera/eye", json!([0, 0]), "camera.eye: invalid length 2"),
+            ("/lights/ambient", json!([0.2, 1.5, 0]), "lights.ambient = [0.2, 1.5, 0.0] is outside [0, 1]"),
+            ("/lights/directional/0/direction", json!([0, 0, 0]), "lights.directional[0].direction is [0, 0, 0]"),
+            (
+                "/lights/directional/0/color",
+                json!([2, 0, 0]),
+                "lights.directional[0].color = [2.0, 0.0, 0.0] is outside [0, 1]",
+            ),
+            ("/objects/0/color", json!([0, 0, -1]), "objects[0].color = [0.0, 0.0, -1.0] is outside [0, 255]"),
+            (
+                "/objects/0/transform",
+                json!({"scale": 0}),
+                "objects[0].transform.scale = [0.0, 0.0, 0.0] has a zero factor",
+            ),
+            ("/objects/0/transform", json!({"scale": [1, 0, 1]}), "has a zero factor"),
+            (
+                "/objects/0/transform",
+                json!({"scale": "big"}),
+                "objects[0].transform.scale: expected a number or [x, y, z]",
+            ),
+            (
+                "/objects/0/transform",
+                json!({"rotate": [0, 1, 0]}),
+                "objects[0].transform.rotate: unknown field `rotate`",
+            ),
+            (
+                "/objects/0/model",
+                json!("teapot"),
+                "objects[0].model: unknown model \"teapot\" (the built-in models are cube, sphere, cone, torus, pawn)",
+            ),
+            ("/objects/0", json!({"model": "cube", "obj": "a.obj"}), "objects[0]: has both \"model\" and \"obj\""),
+            ("/objects/0", json!({"color": [1, 2, 3]}), "objects[0]: has neither \"model\" nor \"obj\""),
+            ("/objects/0/colour", json!([1, 2, 3]), "objects[0].colour: unknown field `colour`"),
+            ("/cull", json!("front"), "cull: unknown variant `front`, expected `none` or `back`"),
+            ("/fog", json!(true), "fog: unknown field `fog`"),
+        ];
+        for (pointer, value, want) in cases {
+            let mut v = valid();
+            let (parent, key) = pointer.rsplit_once('/').unwrap();
+            let target = v.pointer_mut(parent).unwrap_or_else(|| panic!("{pointer}"));
+            match target {
+                Value::Array(a) => a[key.parse::<usize>().unwrap()] = value.clone(),
+                Value::Object(o) => {
+                    o.insert(key.to_string(), value.clone());
+                }
+                _ => panic!("{pointer}"),
+            }
+            let err = error_of(&v);
+            assert!(err.contains(want), "{pointer} = {value}: got {err:?}, want {want:?}");
+        }
+        let mut v = valid();
+        v.as_object_mut().unwrap().remove("camera");
+        assert!(error_of(&v).contains("missing field `camera`"), "{}", error_of(&v));
+    }
+
+    /// A folder of its own under the system temp dir, removed on drop.
+    struct TempDir(PathBuf);
+
+    impl TempDir {
+        fn new(name: &str) -> TempDir {
+            let dir = std::env::temp_dir().join(format!("edgepaint-scene-{name}-{}", std::process::id()));
+            std::fs::create_dir_all(&dir).unwrap();
+            TempDir(dir)
+        }
+    }
+
+    impl Drop for TempDir {
+        fn drop(&mut self) {
+            let _ = std::fs::remove_dir_all(&self.0);
+        }
+    }
+
+    #[test]
+    fn scene_obj_errors_name_the_obj_and_the_scene_file() {
+        let dir = TempDir::new("obj-errors");
+        let scene_path = dir.0.join("s.json");
+        let write_scene = |obj: &str| {
+            let mut v = valid();
+            v["objects"][0] = json!({ "obj": obj });
+            std::fs::write(&scene_path, v.to_string()).unwrap();
+        };
+        let cases = [
+            ("missing.obj", None, "missing.obj: no such file"),
+            (
+                "nan.obj",
+                Some("v 0 0 0\nv 1 0 0\nv 0 NaN 0\nf 1 2 3\n"),
+                "nan.obj: vertex position [0.0, NaN, 0.0] is not finite",
+            ),
+            ("empty.obj", Some("# nothing\n"), "empty.obj: has no faces"),
+            ("bad.obj", Some("v 0 0 0\nf 1 2 3\n"), "bad.obj: not a valid OBJ file: face vertex index out of bounds"),
+        ];
+        for (name, content, want) in cases {
+            if let Some(text) = content {
+                std::fs::write(dir.0.join(name), text).unwrap();
+            }
+            write_scene(name);
+            let err = Scene::load(&scene_path).unwrap_err().to_string();
+            let scene_named = err.starts_with(&format!("{}: objects[0].obj: ", scene_path.display()));
+            assert!(scene_named && err.contains(want), "{name}: got {err:?}, want the scene file and {want:?}");
+        }
+        // A good OBJ beside the scene loads, relative to the scene's folder.
+        std::fs::write(dir.0.join("tri.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+        write_scene("tri.obj");
+        let s = Scene::load(&scene_path).unwrap();
+        assert_eq!(s.objects[0].source, ModelSource::Obj(dir.0.join("tri.obj")));
+        assert_eq!(s.objects[0].mesh.vertex_count(), 3);
     }
 }
