@@ -4,8 +4,10 @@
 //!
 //! # Spaces
 //! * **world**: the scene file's coordinates.
-//! * **eye**: right-handed about the camera; `d`, the distance along the view
-//!   direction, is positive in front of the eye.
+//! * **eye**: axes right, up and forward from the camera (`camera.up` made
+//!   perpendicular to the view direction); `d`, the forward coordinate, is the
+//!   distance along the view direction, positive in front of the eye (OpenGL's
+//!   eye-space z is `-d`).
 //! * **clip**: `(x_c, y_c, z_c, w_c)` with `w_c = d` and
 //!   `z_c = f (d - n) / (f - n)`, so after the divide `z = f (d - n) / (d (f - n))`:
 //!   0 at the near plane, 1 at the far plane (n, f: the camera's `near`, `far`).

@@ -25,7 +25,7 @@
 //! |---|---|---|---|
 //! | `width`, `height` | integers | required | resolution in pixels, 1 to [`MAX_RESOLUTION`](crate::MAX_RESOLUTION) |
 //! | `background` | [r, g, b] in 0..255 | [0, 0, 0] | colour of pixels no triangle covers |
-//! | `camera.eye` | [x, y, z] | required | where the camera is (world space) |
+//! | `camera.eye` | [x, y, z] | required | where the camera is (world space; units are free, the built-in models fit in [-1, 1]^3) |
 //! | `camera.target` | [x, y, z] | required | the point at the centre of the image; not `eye` |
 //! | `camera.up` | [x, y, z] | [0, 1, 0] | which way is up on screen; not parallel to `target - eye` |
 //! | `camera.fov_y_deg` | number in (0, 180) | required | vertical field of view, degrees |
@@ -35,10 +35,10 @@
 //! | &nbsp; `.direction` | [x, y, z], not zero | required | the direction the light *travels* (world space): [0, -1, 0] shines straight down |
 //! | &nbsp; `.color` | [r, g, b] in 0..1 | [1, 1, 1] | its intensity per channel |
 //! | `objects` | array | required | what to draw, each object with: |
-//! | &nbsp; `.model` | name | one of `model`, `obj` | a built-in model: `cube`, `sphere`, `cone`, `torus`, `pawn` (see [`builtin`](crate::builtin)) |
-//! | &nbsp; `.obj` | path | one of `model`, `obj` | a Wavefront OBJ file, relative to the scene file's folder (see [`Mesh::load_obj`]) |
+//! | &nbsp; `.model` | name | one of `model`, `obj` | a built-in model: `cube`, `sphere`, `cone`, `torus`, `pawn` (see [`builtin`]) |
+//! | &nbsp; `.obj` | path | one of `model`, `obj` | a Wavefront OBJ file, relative to the scene file's folder (see [`Mesh::load_obj`]): polygons are triangulated; its normals (`vn`) are used when every face has them, else each vertex gets the average of the normals of the faces sharing its position |
 //! | &nbsp; `.transform.translate` | [x, y, z] | [0, 0, 0] | |
-//! | &nbsp; `.transform.rotate_deg` | [rx, ry, rz] | [0, 0, 0] | degrees about the world x, then y, then z axis (counter-clockwise looking down each axis toward the origin) |
+//! | &nbsp; `.transform.rotate_deg` | [rx, ry, rz] | [0, 0, 0] | degrees about the world x, then y, then z axis, each counter-clockwise seen from the positive end of the axis (right-hand rule) |
 //! | &nbsp; `.transform.scale` | number or [x, y, z], no zero | 1 | a negative factor mirrors the object (its faces stay front faces) |
 //! | &nbsp; `.color` | [r, g, b] in 0..255 | [255, 255, 255] | the surface's colour |
 //! | `cull` | `"none"` or `"back"` | `"none"` | whether the renderer drops back faces ([`Scene::cull_back`]) |
@@ -188,7 +188,7 @@ fn scale_from_file<'de, D: serde::Deserializer<'de>>(d: D) -> std::result::Resul
 
 /// The file's form of a scene, before meshes are loaded.
 #[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(deny_unknown_fields, expecting = "a scene: an object with width, height, camera, lights and objects")]
 struct SceneFile {
     width: u32,
     height: u32,
@@ -467,6 +467,8 @@ mod tests {
             let err = error_of(&v);
             assert!(err.contains(want), "{pointer} = {value}: got {err:?}, want {want:?}");
         }
+        let err = error_of(&json!([1, 2]));
+        assert!(err.contains("expected a scene: an object with width"), "{err}");
         let mut v = valid();
         v.as_object_mut().unwrap().remove("camera");
         assert!(error_of(&v).contains("missing field `camera`"), "{}", error_of(&v));
