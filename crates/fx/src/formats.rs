@@ -11,10 +11,10 @@
 //! | `color` | U8.0 half-up saturate | vertex R, G, B | input | setup, vector | half-up | input checked (reject) |
 //! | `inv_w` | U1.15 half-up | w_min / w per vertex (1 for the nearest) | input | vector (004 eq. 5-6) | half-up | input checked (reject) |
 //! | `ooa` | U1.24 | mantissa of OneOverArea (001) and of 1/sum in `vector`, in [1/2, 1], with a shift | divider | setup, vector | floor (divider) | cannot |
-//! | `ooa_d` | S17.(n+25) | OneOverArea x edge dx or dy (the first products of 001 eq. 2) | setup | setup | floor | wrap (modular) |
-//! | `dz` | S1.(n+24) | dz/dx, dz/dy and the edge increments of z | setup | edge_walk, span | floor | wrap (modular) |
+//! | `ooa_d` | S21.(n+25) | OneOverArea x edge dx or dy (the first products of 001 eq. 2) | setup | setup | floor | wrap (modular) |
+//! | `dz` | S(1+s).(n+24) | dz/dx, dz/dy and the edge increments of z | setup | edge_walk, span | floor | wrap (modular) |
 //! | `z_acc` | S1.(n+24) | z accumulators (edge and span) | setup, edge_walk | span | floor | wrap (modular) |
-//! | `dc` | S9.(n+12) | dC/dx, dC/dy and the edge increments of R, G, B | setup | edge_walk, span | floor | wrap (modular) |
+//! | `dc` | S(9+s).(n+12) | dC/dx, dC/dy and the edge increments of R, G, B | setup | edge_walk, span | floor | wrap (modular) |
 //! | `c_acc` | S9.(n+12) | colour accumulators | setup, edge_walk | span | floor | wrap (modular) |
 //! | `bary` | S1.(n+16) | barycentric a, b (004 eq. 3) and their perspective-corrected forms | vector | vector | floor | wrap |
 //!
@@ -22,12 +22,18 @@
 //! meet through `+`, `-`, `*` and floor shifts, which commute with reduction
 //! modulo a power of two. Their registers may therefore wrap: the value finally
 //! emitted (a depth or colour at a pixel inside the triangle, always in range)
-//! is right whenever the same computation without wrapping would be right. So
-//! `dc` needs only the integer bits of `c_acc`, however steep a sliver's
-//! gradient is. Values that are *compared* (positions, the z clip, the colour
-//! clamp) are never wrapped. The models' analysis mode checks this claim per
-//! triangle by re-running the computation with every wrapping format widened
-//! and comparing what is emitted.
+//! is right whenever the same computation without wrapping would be right,
+//! with one condition: a product whose other factor has fraction bits carries
+//! the wrap into the fraction. Start values multiply gradients by subpixel
+//! offsets (`s` fraction bits), and gradients are `ooa_d` times attribute
+//! differences (`z.frac` or `color.frac` fraction bits), so
+//! `dz.int >= z_acc.int + s`, `dc.int >= c_acc.int + s` and
+//! `ooa_d.int >= max(dz.int + z.frac, dc.int + color.frac)` ([`Formats::check`]
+//! enforces it). Beyond that, `dc` needs no more integer bits however steep a
+//! sliver's gradient is. Values that are *compared* (positions, the z clip, the colour
+//! clamp) are never wrapped. The models' analysis mode checks this per
+//! triangle: it records which registers wrapped and compares every emitted
+//! depth and colour with the exact value.
 //!
 //! Exact quantities (edge deltas, twice the area, edge functions, the edge
 //! walk's quotient and remainder) take their widths from `xy` and are not
@@ -86,13 +92,21 @@ impl Formats {
             color: Fmt::u(8, 0).half_up().saturating(),
             inv_w: Fmt::u(1, 15).half_up(),
             ooa: Fmt::u(1, 24),
-            ooa_d: Fmt::s(17, n + 25),
-            dz: Fmt::s(1, n + 24),
+            ooa_d: Fmt::s(21, n + 25),
+            dz: Fmt::s(1 + s, n + 24),
             z_acc: Fmt::s(1, n + 24),
-            dc: Fmt::s(9, n + 12),
+            dc: Fmt::s(9 + s, n + 12),
             c_acc: Fmt::s(9, n + 12),
             bary: Fmt::s(1, n + 16),
         }
+    }
+
+    /// The smallest integer bits the modular condition allows for `dz`, `dc`
+    /// and `ooa_d`, given the other formats (see the module doc).
+    pub fn modular_ints(&self) -> (u32, u32, u32) {
+        let s = self.xy.frac;
+        let (dz, dc) = (self.z_acc.int + s, self.c_acc.int + s);
+        (dz, dc, (dz + self.z.frac).max(dc + self.color.frac))
     }
 
     /// Far more precision than any display needs: 16 subpixel bits, 24-bit
@@ -102,19 +116,22 @@ impl Formats {
     pub fn wide(width: u32, height: u32) -> Formats {
         let d = Formats::for_resolution(width, height);
         let more = |f: Fmt, k: u32| Fmt { frac: f.frac + k, ..f };
-        Formats {
+        let mut w = Formats {
             xy: more(d.xy, 12),
             z: more(d.z, 8),
             color: more(d.color, 8),
             inv_w: more(d.inv_w, 16),
             ooa: more(d.ooa, 16),
-            ooa_d: more(d.ooa_d, 24),
+            ooa_d: more(d.ooa_d, 8),
             dz: more(d.dz, 16),
             z_acc: more(d.z_acc, 16),
             dc: more(d.dc, 16),
             c_acc: more(d.c_acc, 16),
             bary: more(d.bary, 16),
-        }
+        };
+        let (dz, dc, ooa_d) = w.modular_ints();
+        (w.dz.int, w.dc.int, w.ooa_d.int) = (dz, dc, ooa_d);
+        w
     }
 
     /// Defaults for the resolution with the keys of a JSON object applied on top.
@@ -149,27 +166,6 @@ impl Formats {
             ("c_acc", self.c_acc),
             ("bary", self.bary),
         ]
-    }
-
-    /// The same formats with every wrapping integer part widened so that
-    /// nothing can wrap: the analysis mode's shadow computation.
-    pub fn unwrapped(&self) -> Formats {
-        let widen = |f: Fmt| {
-            if f.overflow == crate::Overflow::Wrap {
-                f.with_int(MAX_BITS - 1 - f.frac)
-            } else {
-                f
-            }
-        };
-        Formats {
-            ooa_d: widen(self.ooa_d),
-            dz: widen(self.dz),
-            z_acc: widen(self.z_acc),
-            dc: widen(self.dc),
-            c_acc: widen(self.c_acc),
-            bary: widen(self.bary),
-            ..*self
-        }
     }
 
     /// Widths of the exact quantities.
@@ -248,6 +244,17 @@ impl Formats {
             need(g.signed && acc.signed, name, g, "gradients and accumulators must be signed".into())?;
             need(g.frac == acc.frac, name, g, format!("must have the fraction bits of its accumulator {acc}"))?;
         }
+        let (dz, dc, ooa_d) = self.modular_ints();
+        let modular = "wraps modulo its accumulator only with";
+        let why = |n: u32, what: &str| format!("{modular} at least {n} integer bits ({what})");
+        need(self.dz.int >= dz, "dz", self.dz, why(dz, "z_acc's plus the subpixel bits"))?;
+        need(self.dc.int >= dc, "dc", self.dc, why(dc, "c_acc's plus the subpixel bits"))?;
+        need(
+            self.ooa_d.int >= ooa_d,
+            "ooa_d",
+            self.ooa_d,
+            why(ooa_d, "dz's plus z's fraction bits, or dc's plus color's"),
+        )?;
         need(
             self.z_acc.frac >= z.frac,
             "z_acc",
@@ -301,12 +308,13 @@ mod tests {
 
     #[test]
     fn formats_json_overrides_and_rejects_impossible_formats() {
-        let j = serde_json::json!({"dc": "S9.30", "c_acc": "S9.30"});
+        let j = serde_json::json!({"dc": "S13.30", "c_acc": "S9.30"});
         let f = Formats::with_overrides(640, 480, &j).unwrap();
-        assert_eq!(f.dc, Fmt::s(9, 30));
+        assert_eq!(f.dc, Fmt::s(13, 30));
         let cases = [
             (serde_json::json!({"xy": "S8.4"}), "guard band"),
-            (serde_json::json!({"dc": "S9.10"}), "fraction bits of its accumulator"),
+            (serde_json::json!({"dc": "S13.10"}), "fraction bits of its accumulator"),
+            (serde_json::json!({"dc": "S9.22"}), "at least 13 integer bits"),
             (serde_json::json!({"zz": "S1.16"}), "unknown quantity \"zz\""),
             (serde_json::json!({"z": "U1.16"}), "must be signed"),
             (serde_json::json!({"z": "S1.40"}), "depth buffer"),

@@ -1,2 +1,33 @@
-//! Bit-exact fixed-point models of edgepaint's hardware units. Each module
-//! mirrors one RTL unit of the same name in `crates/rtl`.
+//! Bit-exact fixed-point models of edgepaint's hardware units. Each unit module
+//! mirrors the RTL unit of the same name in `crates/rtl` and is what its
+//! simulations are checked against, bit for bit.
+//!
+//! * [`cull_sort`] (003), [`divider`] (001), [`triangle_setup`] (001),
+//!   [`edge_walk`] (001, 003), [`span`] (001, 003), [`pixel_out`]: the scanline pipeline;
+//! * [`vector`] (004): per-pixel barycentric rasterization;
+//! * [`raster`]: whole frames through either, with analysis mode; [`cycles`]: the cycle model;
+//! * [`input`]: float vertices to hardware words; [`ctx`]: formats and overflow records.
+
+pub mod ctx;
+pub mod cull_sort;
+pub mod cycles;
+pub mod divider;
+pub mod edge_walk;
+pub mod input;
+pub mod pixel_out;
+pub mod raster;
+pub mod span;
+pub mod triangle_setup;
+pub mod vector;
+
+/// Seed for randomised tests: `EDGEPAINT_SEED`, default 1.
+#[cfg(test)]
+pub(crate) fn test_seed() -> u64 {
+    std::env::var("EDGEPAINT_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(1)
+}
+
+/// Case count for randomised tests: `EDGEPAINT_N`, default 1000.
+#[cfg(test)]
+pub(crate) fn test_count() -> usize {
+    std::env::var("EDGEPAINT_N").ok().and_then(|s| s.parse().ok()).unwrap_or(1000)
+}

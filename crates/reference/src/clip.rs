@@ -29,7 +29,7 @@ pub enum Rejected {
 /// The screen-space triangles (one, or a fan after clipping) that draw `tri`.
 pub fn to_screen(tri: &Triangle) -> Result<Vec<[RasterVertex; 3]>, Rejected> {
     let w = tri.map(|v| v.w_or_one());
-    if w.iter().any(|&w| w == 0.0) {
+    if w.contains(&0.0) {
         return Err(Rejected::WZero);
     }
     if w.iter().all(|&w| w > 0.0) {

@@ -12,6 +12,7 @@ pub mod input;
 mod math;
 pub mod mesh;
 pub mod scene;
+pub mod stress;
 pub mod trilist;
 
 pub use error::{Error, Result};

@@ -167,7 +167,9 @@ impl Trilist {
 pub fn check_resolution(width: u32, height: u32) -> Result<()> {
     for (name, v) in [("width", width), ("height", height)] {
         if v == 0 || v > MAX_RESOLUTION {
-            return Err(Error::invalid(format!("{name} {v} is out of range: edgepaint renders 1 to {MAX_RESOLUTION} pixels")));
+            return Err(Error::invalid(format!(
+                "{name} {v} is out of range: edgepaint renders 1 to {MAX_RESOLUTION} pixels"
+            )));
         }
     }
     Ok(())
@@ -223,11 +225,17 @@ mod tests {
     fn trilist_rejects_wrong_arity_and_bad_values() {
         let cases = [
             (r#"{"width":4,"height":4,"triangles":[[[0,0,0,0,0,0],[1,0,0,0,0,0]]]}"#, "triangle 0: has 2 vertices"),
-            (r#"{"width":4,"height":4,"triangles":[[[0,0,0,0,0],[1,0,0,0,0,0],[0,1,0,0,0,0]]]}"#, "vertex 0: has 5 values"),
+            (
+                r#"{"width":4,"height":4,"triangles":[[[0,0,0,0,0],[1,0,0,0,0,0],[0,1,0,0,0,0]]]}"#,
+                "vertex 0: has 5 values",
+            ),
             (r#"{"width":0,"height":4,"triangles":[]}"#, "width 0 is out of range"),
             (r#"{"width":100000,"height":4,"triangles":[]}"#, "width 100000 is out of range"),
             (r#"{"width":4,"height":4,"triangles":[[[0,0,0,0,0,300],[1,0,0,0,0,0],[0,1,0,0,0,0]]]}"#, "colour b = 300"),
-            (r#"{"width":4,"height":4,"triangles":[[[0,"a",0,0,0,0],[1,0,0,0,0,0],[0,1,0,0,0,0]]]}"#, "y must be a number"),
+            (
+                r#"{"width":4,"height":4,"triangles":[[[0,"a",0,0,0,0],[1,0,0,0,0,0],[0,1,0,0,0,0]]]}"#,
+                "y must be a number",
+            ),
             (r#"{"width":4,"height":4}"#, "missing \"triangles\""),
             (r#"{"width":4,"height":4,"triangles":[],"tris":1}"#, "unknown key \"tris\""),
         ];

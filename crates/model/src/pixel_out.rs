@@ -1,0 +1,46 @@
+//! `pixel_out`: the depth test (LESS) and the writes to the depth and colour
+//! buffers, behind `span`. The depth buffer is cleared to z_max (the far plane).
+//!
+//! In hardware it reads the old depth through a synchronous memory port (data
+//! the cycle after the address) and writes depth and colour when the new depth
+//! is less: latency 2, one pixel per cycle. Mirrors `rtl::pixel_out`.
+
+use crate::span::Pixel;
+
+/// Cycles from a pixel in to its write (read, compare-and-write).
+pub const LATENCY: u32 = 2;
+/// Cycles per pixel.
+pub const II: u32 = 1;
+
+/// The depth and colour buffers.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Framebuffer {
+    pub width: u32,
+    pub height: u32,
+    /// Depth per pixel (`z.frac` bits), row-major from the top-left.
+    pub depth: Vec<u32>,
+    pub rgb: Vec<[u8; 3]>,
+    /// Whether a pixel was ever written.
+    pub written: Vec<bool>,
+}
+
+impl Framebuffer {
+    /// Buffers cleared to `background` and depth `z_max`.
+    pub fn new(width: u32, height: u32, z_max: u32, background: [u8; 3]) -> Self {
+        let n = (width * height) as usize;
+        Framebuffer { width, height, depth: vec![z_max; n], rgb: vec![background; n], written: vec![false; n] }
+    }
+
+    /// Depth test LESS, then write. Returns whether the pixel was written.
+    pub fn pixel_out(&mut self, p: &Pixel) -> bool {
+        let i = (p.y * self.width + p.x) as usize;
+        if p.z < self.depth[i] {
+            self.depth[i] = p.z;
+            self.rgb[i] = p.rgb;
+            self.written[i] = true;
+            true
+        } else {
+            false
+        }
+    }
+}

@@ -1,0 +1,238 @@
+//! Whole frames through the fixed-point pipelines, as the hardware would draw them.
+//!
+//! * scanline (001 + 003): `cull_sort` -> `triangle_setup` (with the `divider`)
+//!   -> `edge_walk` -> `span` -> `pixel_out`;
+//! * vector (004): `cull_sort` -> `vector` -> `pixel_out`.
+//!
+//! In analysis mode every emitted depth and colour is compared with the exact
+//! value of the triangle's plane at that pixel (f64, from the same fixed-point
+//! vertices). Positions never wrap (their formats hold the whole coordinate
+//! range), so a wrap can only corrupt attributes; a triangle with an attribute
+//! off by more than [`HARM_COLOR`] or a quarter of the depth range overflowed
+//! harmfully, and is reported, with the registers that wrapped, instead of drawn.
+
+use crate::ctx::{Ctx, Q};
+use crate::cull_sort::{cull_sort, z_max, Clip, Cull, Reject};
+use crate::edge_walk::edge_walk;
+use crate::input::{to_fixed, InputError, Vtx};
+use crate::pixel_out::Framebuffer;
+use crate::span::{span, Pixel};
+use crate::triangle_setup::triangle_setup;
+use crate::vector::vector;
+use fx::Formats;
+use scene::{Triangle, Trilist};
+
+/// Which rasterization method, with its parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// Setup, edge walk and span (001, 003).
+    Scanline,
+    /// Per-pixel barycentrics (004): `lanes` pixels per cycle; `perspective`
+    /// corrects colour with w when the input carries it.
+    Vector { lanes: u32, perspective: bool },
+}
+
+/// Rendering options.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Options {
+    pub method: Method,
+    pub cull: Cull,
+    /// Check every triangle for harmful overflow (twice the work).
+    pub analysis: bool,
+    pub background: [u8; 3],
+}
+
+/// The work one triangle made for each unit: what the cycle model needs.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Work {
+    /// Whether it went past `cull_sort`.
+    pub passed_cull: bool,
+    /// Per scanline the edge walk stepped through, the cycles `span` took for
+    /// the command it emitted, if any (scanline method).
+    pub scanlines: Vec<Option<u32>>,
+    /// Cycles the vector unit took (vector method).
+    pub vector_cycles: u32,
+}
+
+/// One triangle's pixels (before the depth test) and work.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Trace {
+    pub pixels: Vec<Pixel>,
+    pub work: Work,
+    pub z_clipped: u32,
+    pub spans: u32,
+}
+
+/// One triangle through the pipeline under `ctx`, from hardware vertices.
+pub fn trace(v: &[Vtx; 3], clip: Clip, opts: &Options, ctx: &mut Ctx) -> Result<Trace, Reject> {
+    let sorted = cull_sort(v, clip, opts.cull, &ctx.f)?;
+    let mut t = Trace { work: Work { passed_cull: true, ..Work::default() }, ..Trace::default() };
+    match opts.method {
+        Method::Scanline => {
+            let setup = triangle_setup(&sorted, ctx);
+            let walk = edge_walk(&setup, clip, ctx);
+            for cmd in &walk.scanlines {
+                let cycles = cmd.as_ref().map(|cmd| {
+                    let o = span(cmd, clip, ctx);
+                    t.spans += 1;
+                    t.z_clipped += o.z_clipped;
+                    t.pixels.extend(o.pixels);
+                    o.cycles
+                });
+                t.work.scanlines.push(cycles);
+            }
+        }
+        Method::Vector { lanes, perspective } => {
+            let o = vector(&sorted, clip, lanes, perspective, ctx);
+            t.work.vector_cycles = o.cycles;
+            t.z_clipped = o.z_clipped;
+            t.pixels = o.pixels;
+        }
+    }
+    Ok(t)
+}
+
+/// Why a triangle drew nothing.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Dropped {
+    /// Its vertices do not fit the input formats.
+    Input(InputError),
+    Rejected(Reject),
+    /// It overflowed harmfully (analysis mode): the quantities that did not fit.
+    Overflow(Vec<Q>),
+}
+
+/// A colour this many LSBs from the exact value can only come from a wrap.
+pub const HARM_COLOR: f64 = 64.0;
+
+/// Depth (in depth-buffer LSBs) and colour of the plane through the hardware
+/// vertices at the centre of pixel (x, y), in f64; colour perspective-correct
+/// when `perspective`.
+pub fn exact_at(v: &[Vtx; 3], f: &Formats, x: u32, y: u32, perspective: bool) -> (f64, [f64; 3]) {
+    let s = 1i128 << f.xy.frac;
+    let (cx, cy) = (x as i128 * s + s / 2, y as i128 * s + s / 2);
+    let e = |a: &Vtx, b: &Vtx| ((b.x - a.x) * (cy - a.y) - (b.y - a.y) * (cx - a.x)) as f64;
+    let area = e(&v[0], &v[1]) + e(&v[1], &v[2]) + e(&v[2], &v[0]);
+    let l = [e(&v[1], &v[2]) / area, e(&v[2], &v[0]) / area, e(&v[0], &v[1]) / area];
+    let z = (0..3).map(|k| l[k] * v[k].z as f64).sum::<f64>();
+    let wgt: [f64; 3] = if perspective {
+        let q: [f64; 3] = std::array::from_fn(|k| l[k] * v[k].iw as f64);
+        let sum = q[0] + q[1] + q[2];
+        q.map(|q| q / sum)
+    } else {
+        l
+    };
+    let cs = (-(f.color.frac as f64)).exp2();
+    (z, std::array::from_fn(|i| (0..3).map(|k| wgt[k] * v[k].c[i] as f64 * cs).sum::<f64>().clamp(0.0, 255.0)))
+}
+
+/// One triangle, with analysis if asked: its pixels, or why there are none, and
+/// (in analysis mode) the registers that wrapped on the way.
+pub fn triangle(tri: &Triangle, clip: Clip, f: &Formats, opts: &Options) -> (Result<Trace, Dropped>, Vec<Q>) {
+    let v = match to_fixed(tri, f) {
+        Ok(v) => v,
+        Err(e) => return (Err(Dropped::Input(e)), Vec::new()),
+    };
+    let mut ctx = Ctx::new(*f);
+    let got = trace(&v, clip, opts, &mut ctx).map_err(Dropped::Rejected);
+    if !opts.analysis {
+        return (got, Vec::new());
+    }
+    let wrapped = ctx.overflowed();
+    let perspective = matches!(opts.method, Method::Vector { perspective: true, .. });
+    let harm_z = (f.z.frac as f64 - 2.0).exp2();
+    let harmful = got.as_ref().is_ok_and(|t| {
+        !wrapped.is_empty()
+            && t.pixels.iter().any(|p| {
+                let (z, c) = exact_at(&v, f, p.x, p.y, perspective);
+                (p.z as f64 - z).abs() > harm_z || (0..3).any(|i| (p.rgb[i] as f64 - c[i]).abs() > HARM_COLOR)
+            })
+    });
+    if harmful {
+        (Err(Dropped::Overflow(wrapped.clone())), wrapped)
+    } else {
+        (got, wrapped)
+    }
+}
+
+/// Triangle and pixel counts of one render.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Stats {
+    pub triangles_in: u64,
+    /// Triangles whose vertices did not fit the input formats.
+    pub input_rejected: u64,
+    pub culled_outside: u64,
+    pub culled_back: u64,
+    pub degenerate: u64,
+    /// Triangles dropped for a harmful overflow (analysis mode).
+    pub overflowed: u64,
+    /// Triangles that wrapped somewhere without harm (analysis mode).
+    pub wrapped_harmlessly: u64,
+    pub drawn: u64,
+    pub spans: u64,
+    pub fragments: u64,
+    pub z_clipped: u64,
+    pub pixels_written: u64,
+}
+
+/// A triangle the render could not draw, and why.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Problem {
+    pub triangle: usize,
+    pub why: Dropped,
+}
+
+/// A rendered frame with its accounting.
+#[derive(Clone, Debug)]
+pub struct Render {
+    pub fb: Framebuffer,
+    pub stats: Stats,
+    /// Triangles dropped for input or overflow problems (not culling).
+    pub problems: Vec<Problem>,
+    /// Per-triangle work, in input order, for the cycle model.
+    pub work: Vec<Work>,
+}
+
+/// Renders a trilist through the fixed-point pipeline chosen in `opts`.
+pub fn render(list: &Trilist, f: &Formats, opts: &Options, progress: &mut dyn FnMut(usize)) -> Render {
+    let clip = Clip { width: list.width, height: list.height };
+    let mut fb = Framebuffer::new(list.width, list.height, z_max(f) as u32, opts.background);
+    let mut stats = Stats { triangles_in: list.triangles.len() as u64, ..Stats::default() };
+    let mut problems = Vec::new();
+    let mut work = Vec::with_capacity(list.triangles.len());
+    for (i, tri) in list.triangles.iter().enumerate() {
+        let (res, over) = triangle(tri, clip, f, opts);
+        match res {
+            Ok(t) => {
+                stats.drawn += 1;
+                stats.wrapped_harmlessly += (!over.is_empty()) as u64;
+                stats.spans += t.spans as u64;
+                stats.fragments += t.pixels.len() as u64;
+                stats.z_clipped += t.z_clipped as u64;
+                for p in &t.pixels {
+                    stats.pixels_written += fb.pixel_out(p) as u64;
+                }
+                work.push(t.work);
+            }
+            Err(why) => {
+                match &why {
+                    Dropped::Input(_) => stats.input_rejected += 1,
+                    Dropped::Rejected(Reject::Outside(_)) => stats.culled_outside += 1,
+                    Dropped::Rejected(Reject::BackFace) => stats.culled_back += 1,
+                    Dropped::Rejected(Reject::ZeroArea) => stats.degenerate += 1,
+                    Dropped::Overflow(_) => stats.overflowed += 1,
+                }
+                let passed_cull = matches!(why, Dropped::Overflow(_));
+                work.push(Work { passed_cull, ..Work::default() });
+                if matches!(why, Dropped::Input(_) | Dropped::Overflow(_)) {
+                    problems.push(Problem { triangle: i, why });
+                }
+            }
+        }
+        if i % 256 == 255 {
+            progress(i + 1);
+        }
+    }
+    progress(list.triangles.len());
+    Render { fb, stats, problems, work }
+}
