@@ -25,8 +25,10 @@ struct Cli {
 enum Command {
     /// Run a scene through the software geometry stage and write its screen-space triangle list (trilist v1).
     Trilist(cmd::trilist::Args),
-    /// Render a scene or a trilist to a PNG.
+    /// Render a scene or a trilist to a PNG, with the float reference or a fixed-point pipeline.
     Render(cmd::render::Args),
+    /// Compare a fixed-point pipeline with the float reference: coverage, colour, depth, cycles.
+    Accuracy(cmd::accuracy::Args),
     /// Emit Verilog for one unit (or, with no unit, the default design) into a directory.
     Emit(cmd::emit::Args),
     /// Synthesize emitted units and tabulate their area and speed (Markdown and JSON).
@@ -39,6 +41,7 @@ fn main() -> ExitCode {
         None => cmd::emit::run_default(),
         Some(Command::Trilist(a)) => cmd::trilist::run(a),
         Some(Command::Render(a)) => cmd::render::run(a),
+        Some(Command::Accuracy(a)) => cmd::accuracy::run(a),
         Some(Command::Emit(a)) => cmd::emit::run(a),
         Some(Command::Report(a)) => cmd::report::run(a),
     };

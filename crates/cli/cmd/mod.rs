@@ -1,6 +1,8 @@
 //! One module per subcommand: argument parsing and glue only.
 
+pub mod accuracy;
 pub mod emit;
+pub mod engine;
 pub mod input;
 pub mod render;
 pub mod report;

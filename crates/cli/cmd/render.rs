@@ -1,5 +1,6 @@
 //! `edgepaint render`: scene or trilist -> PNG, through one of the engines.
 
+use super::engine::{Engine, FixedArgs};
 use super::input::{self, Size};
 use anyhow::{Context, Result};
 use image::{ImageBuffer, Luma, Rgb};
@@ -32,6 +33,15 @@ pub struct Args {
     /// Override a scene's resolution, e.g. 320x240.
     #[arg(long)]
     size: Option<Size>,
+    /// Which rasterizer draws.
+    #[arg(long, value_enum, default_value = "float")]
+    engine: Engine,
+    #[command(flatten)]
+    fixed: FixedArgs,
+    /// Fixed-point engines: check every triangle for harmful overflow and draw
+    /// only those without (reported), instead of drawing as the hardware would.
+    #[arg(long)]
+    analysis: bool,
 }
 
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -66,37 +76,93 @@ pub fn run(args: Args) -> Result<()> {
     let bar = ProgressBar::new(list.triangles.len() as u64);
     bar.set_style(ProgressStyle::with_template("{msg} {bar:40} {pos}/{len} triangles").expect("static template"));
     bar.set_message("render");
+    let mut progress = |done: usize| bar.set_position(done as u64);
     let start = Instant::now();
-    let (frame, stats) = reference::render(list, &opts, &mut |done| bar.set_position(done as u64));
+    let perspective = !args.linear;
+    let (image, summary) = match args.fixed.method(args.engine, perspective)? {
+        None => {
+            let (frame, stats) = reference::render(list, &opts, &mut progress);
+            let image = Image {
+                width: frame.width,
+                height: frame.height,
+                rgb: frame.rgb8(),
+                depth16: frame.depth16(),
+                written: frame.written,
+            };
+            let summary = format!(
+                "float reference: {} triangles in, {} drawn, {} culled ({} back-facing, {} degenerate); {} fragments, {} z-clipped, {} pixels written",
+                stats.triangles_in, stats.drawn, stats.culled(), stats.culled_back, stats.degenerate, stats.fragments, stats.z_clipped, stats.pixels_written
+            );
+            (image, (summary, stats.fragments))
+        }
+        Some(method) => {
+            let f = args.fixed.formats(list.width, list.height)?;
+            let mopts = model::raster::Options {
+                method,
+                cull: if cull_back { model::cull_sort::Cull::Back } else { model::cull_sort::Cull::None },
+                analysis: args.analysis,
+                background: loaded.background.map(|c| c.round().clamp(0.0, 255.0) as u8),
+            };
+            let r = model::raster::render(list, &f, &mopts, &mut progress);
+            for p in r.problems.iter().take(5) {
+                eprintln!("warning: triangle {} not drawn: {}", p.triangle, problem(&p.why));
+            }
+            if r.problems.len() > 5 {
+                eprintln!("warning: ... {} triangles in all not drawn", r.problems.len());
+            }
+            let cycles = match method {
+                model::raster::Method::Scanline => model::cycles::scanline_frame(&r.work, &Default::default()),
+                model::raster::Method::Vector { .. } => model::cycles::vector_frame(&r.work),
+            };
+            let st = &r.stats;
+            let summary = format!(
+                "{} (fixed point): {} triangles in, {} drawn, {} culled ({} outside, {} back-facing, {} degenerate), {} not drawn (input or overflow); {} spans, {} fragments, {} z-clipped, {} pixels written; predicted {} cycles, {:.3} pixels per clock",
+                accuracy::method_name(method), st.triangles_in, st.drawn, st.culled_outside + st.culled_back + st.degenerate, st.culled_outside, st.culled_back, st.degenerate,
+                st.input_rejected + st.overflowed, st.spans, st.fragments, st.z_clipped, st.pixels_written, cycles.total,
+                st.pixels_written as f64 / cycles.total.max(1) as f64
+            );
+            let depth16 = r.fb.depth.iter().map(|&d| depth16(d, f.z.frac)).collect();
+            let image = Image { width: r.fb.width, height: r.fb.height, rgb: r.fb.rgb, depth16, written: r.fb.written };
+            (image, (summary, st.fragments))
+        }
+    };
     let elapsed = start.elapsed();
     bar.finish_and_clear();
 
-    let image = Image {
-        width: frame.width,
-        height: frame.height,
-        rgb: frame.rgb8(),
-        depth16: frame.depth16(),
-        written: frame.written,
-    };
     write_outputs(&image, &args.output, args.depth.as_deref(), args.mask.as_deref())?;
     let secs = elapsed.as_secs_f64();
     println!(
-        "render (float reference): {} triangles in, {} drawn, {} culled ({} back-facing, {} degenerate); {} fragments, {} z-clipped, {} pixels written; {:.2} ms ({:.1} Mfragment/s, {:.1} Mpixel/s of {}x{} screen)",
-        stats.triangles_in,
-        stats.drawn,
-        stats.culled(),
-        stats.culled_back,
-        stats.degenerate,
-        stats.fragments,
-        stats.z_clipped,
-        stats.pixels_written,
+        "render {}; {:.2} ms ({:.1} Mfragment/s, {:.1} Mpixel/s of {}x{} screen)",
+        summary.0,
         secs * 1e3,
-        stats.fragments as f64 / secs / 1e6,
+        summary.1 as f64 / secs / 1e6,
         (list.width as f64 * list.height as f64) / secs / 1e6,
         list.width,
         list.height,
     );
     Ok(())
+}
+
+/// A depth-buffer value with `frac` bits as a 16-bit PNG sample (its top 16
+/// bits, or scaled up when the buffer is narrower).
+fn depth16(d: u32, frac: u32) -> u16 {
+    if frac >= 16 {
+        (d >> (frac - 16)) as u16
+    } else {
+        (d << (16 - frac)) as u16
+    }
+}
+
+/// Why a triangle was not drawn, in words.
+fn problem(why: &model::raster::Dropped) -> String {
+    match why {
+        model::raster::Dropped::Input(e) => e.to_string(),
+        model::raster::Dropped::Overflow(q) => {
+            let names: Vec<&str> = q.iter().map(|q| q.name()).collect();
+            format!("harmful overflow in {}", names.join(", "))
+        }
+        model::raster::Dropped::Rejected(r) => format!("{r:?}"),
+    }
 }
 
 /// Writes the colour PNG and, when asked, the depth and mask PNGs.

@@ -22,22 +22,33 @@ pub struct Framebuffer {
     pub rgb: Vec<[u8; 3]>,
     /// Whether a pixel was ever written.
     pub written: Vec<bool>,
+    /// Which triangle (index in the list) wrote it last; `u32::MAX` if none.
+    /// Analysis only: the hardware has no such buffer.
+    pub writer: Vec<u32>,
 }
 
 impl Framebuffer {
     /// Buffers cleared to `background` and depth `z_max`.
     pub fn new(width: u32, height: u32, z_max: u32, background: [u8; 3]) -> Self {
         let n = (width * height) as usize;
-        Framebuffer { width, height, depth: vec![z_max; n], rgb: vec![background; n], written: vec![false; n] }
+        Framebuffer {
+            width,
+            height,
+            depth: vec![z_max; n],
+            rgb: vec![background; n],
+            written: vec![false; n],
+            writer: vec![u32::MAX; n],
+        }
     }
 
-    /// Depth test LESS, then write. Returns whether the pixel was written.
-    pub fn pixel_out(&mut self, p: &Pixel) -> bool {
+    /// Depth test LESS, then write a pixel of triangle `tri`. Returns whether it was written.
+    pub fn pixel_out(&mut self, p: &Pixel, tri: u32) -> bool {
         let i = (p.y * self.width + p.x) as usize;
         if p.z < self.depth[i] {
             self.depth[i] = p.z;
             self.rgb[i] = p.rgb;
             self.written[i] = true;
+            self.writer[i] = tri;
             true
         } else {
             false

@@ -210,7 +210,7 @@ pub fn render(list: &Trilist, f: &Formats, opts: &Options, progress: &mut dyn Fn
                 stats.fragments += t.pixels.len() as u64;
                 stats.z_clipped += t.z_clipped as u64;
                 for p in &t.pixels {
-                    stats.pixels_written += fb.pixel_out(p) as u64;
+                    stats.pixels_written += fb.pixel_out(p, i as u32) as u64;
                 }
                 work.push(t.work);
             }

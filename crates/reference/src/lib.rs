@@ -89,22 +89,33 @@ pub struct Frame {
     pub depth: Vec<f64>,
     /// Whether any triangle wrote the pixel.
     pub written: Vec<bool>,
+    /// Which triangle (index in the list) wrote it last; `u32::MAX` if none.
+    /// For analysis: the accuracy harness compares pixels drawn by the same triangle.
+    pub writer: Vec<u32>,
 }
 
 impl Frame {
     /// A frame cleared to `background` and depth 1.0.
     pub fn new(width: u32, height: u32, background: [f64; 3]) -> Self {
         let n = width as usize * height as usize;
-        Frame { width, height, color: vec![background; n], depth: vec![1.0; n], written: vec![false; n] }
+        Frame {
+            width,
+            height,
+            color: vec![background; n],
+            depth: vec![1.0; n],
+            written: vec![false; n],
+            writer: vec![u32::MAX; n],
+        }
     }
 
-    /// Depth test LESS, then write. Returns whether the sample was written.
-    pub fn write(&mut self, f: &Fragment) -> bool {
+    /// Depth test LESS, then write a sample of triangle `tri`. Returns whether it was written.
+    pub fn write(&mut self, f: &Fragment, tri: u32) -> bool {
         let i = f.y as usize * self.width as usize + f.x as usize;
         if f.z < self.depth[i] {
             self.depth[i] = f.z;
             self.color[i] = f.rgb;
             self.written[i] = true;
+            self.writer[i] = tri;
             true
         } else {
             false
@@ -183,7 +194,7 @@ pub fn render(list: &Trilist, opts: &Options, progress: &mut dyn FnMut(usize)) -
             stats.fragments += 1;
             if !(0.0..=1.0).contains(&f.z) {
                 stats.z_clipped += 1;
-            } else if frame.write(&f) {
+            } else if frame.write(&f, i as u32) {
                 stats.pixels_written += 1;
             }
         });

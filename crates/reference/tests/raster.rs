@@ -73,8 +73,11 @@ fn reference_depth_test_is_less_and_order_independent() {
     ];
     let a = one(vec![near, far], &Options::default());
     let b = one(vec![far, near], &Options::default());
-    assert_eq!(a, b);
+    assert_eq!((&a.color, &a.depth, &a.written), (&b.color, &b.depth, &b.written));
     assert_eq!(a.rgb8()[0], [255, 0, 0]);
+    // The near triangle wrote every covered pixel, whichever came first.
+    assert!(a.writer.iter().zip(&a.written).all(|(&w, &wr)| !wr || w == 0));
+    assert!(b.writer.iter().zip(&b.written).all(|(&w, &wr)| !wr || w == 1));
     // Equal depth: LESS keeps the first.
     let same = one(vec![near, near.map(|v| Vertex { g: 255.0, ..v })], &Options::default());
     assert_eq!(same.rgb8()[0], [255, 0, 0]);

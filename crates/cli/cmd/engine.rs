@@ -1,0 +1,60 @@
+//! The options shared by every command that runs a fixed-point pipeline:
+//! which method, its lanes, and the number formats.
+
+use anyhow::{Context, Result};
+use fx::Formats;
+use model::raster::Method;
+use std::path::Path;
+
+/// Which rasterizer draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Engine {
+    /// The f64 reference rasterizer.
+    Float,
+    /// The fixed-point scanline pipeline of 001 and 003 (setup, edge walk, span).
+    Scanline,
+    /// The fixed-point per-pixel barycentric method of 004.
+    Vector,
+}
+
+/// Options for the fixed-point pipelines.
+#[derive(clap::Args, Clone, Debug)]
+pub struct FixedArgs {
+    /// Number formats: "default" (derived from the resolution), "wide", or a JSON
+    /// file mapping quantities to formats (e.g. {"dc": "S13.30"}); keys left out keep their defaults.
+    #[arg(long, default_value = "default")]
+    pub formats: String,
+    /// Pixels the vector method evaluates per cycle.
+    #[arg(long, default_value_t = 4)]
+    pub lanes: u32,
+}
+
+impl FixedArgs {
+    /// The formats for a `width` x `height` screen, checked.
+    pub fn formats(&self, width: u32, height: u32) -> Result<Formats> {
+        let f = match self.formats.as_str() {
+            "default" => Formats::for_resolution(width, height),
+            "wide" => Formats::wide(width, height),
+            path => {
+                let p = Path::new(path);
+                let text =
+                    std::fs::read_to_string(p).with_context(|| format!("{path}: cannot read the formats file"))?;
+                let json: serde_json::Value =
+                    serde_json::from_str(&text).with_context(|| format!("{path}: malformed JSON"))?;
+                return Formats::with_overrides(width, height, &json).map_err(|e| anyhow::anyhow!("{path}: {e}"));
+            }
+        };
+        f.check(width, height).map_err(|e| anyhow::anyhow!("formats \"{}\": {e}", self.formats))?;
+        Ok(f)
+    }
+
+    /// The model's method for an engine (None for the float reference).
+    pub fn method(&self, engine: Engine, perspective: bool) -> Result<Option<Method>> {
+        anyhow::ensure!(self.lanes >= 1, "--lanes must be at least 1");
+        Ok(match engine {
+            Engine::Float => None,
+            Engine::Scanline => Some(Method::Scanline),
+            Engine::Vector => Some(Method::Vector { lanes: self.lanes, perspective }),
+        })
+    }
+}
