@@ -58,14 +58,17 @@ pub fn parse_json<T: serde::de::DeserializeOwned>(text: &str) -> Result<T> {
         let near = text.lines().nth(line.saturating_sub(1)).unwrap_or("");
         let start = col.saturating_sub(1).min(near.len());
         let tail = near.get(start..).unwrap_or("");
+        let full = e.to_string();
+        let msg = full.strip_suffix(&format!(" at line {line} column {col}")).unwrap_or(&full);
         let hint = ["NaN", "Infinity", "-Infinity", "inf", "nan"]
             .iter()
             .find(|t| tail.starts_with(**t))
             .map(|t| format!(" ({t} is not a number: coordinates must be finite)"))
+            .or_else(|| msg.contains("number out of range").then(|| " (numbers must be finite)".to_string()))
             .unwrap_or_default();
         let what = match e.classify() {
-            serde_json::error::Category::Data => e.to_string(),
-            _ => format!("malformed JSON at line {line} column {col}: {e}"),
+            serde_json::error::Category::Data => format!("{msg} at line {line} column {col}"),
+            _ => format!("malformed JSON at line {line} column {col}: {msg}"),
         };
         Error::invalid(format!("{what}{hint}"))
     })

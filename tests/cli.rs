@@ -1,0 +1,189 @@
+//! The `edgepaint` command line, run as a process: good input renders, bad input
+//! fails with a non-zero exit and a message naming the file and the problem,
+//! never a panic.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn edgepaint(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_edgepaint")).args(args).output().expect("edgepaint runs")
+}
+
+/// A scratch folder for one test, under the target directory.
+fn scratch(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> String {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p.to_str().unwrap().to_string()
+}
+
+/// Runs `args`, expects failure, and checks stderr mentions every word of `want`.
+fn fails_with(args: &[&str], want: &[&str]) {
+    let out = edgepaint(args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{args:?} should fail; stderr: {err}");
+    assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
+    for w in want {
+        assert!(err.contains(w), "{args:?}: stderr {err:?} should mention {w:?}");
+    }
+}
+
+const SCENE_HEAD: &str = r#""camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov_y_deg": 45, "near": 0.5, "far": 20},
+    "lights": {"ambient": [0.2, 0.2, 0.2], "directional": [{"direction": [0, 0, -1]}]}"#;
+
+#[test]
+fn cli_bad_input_is_a_clear_error_naming_the_file() {
+    let d = scratch("bad");
+    let png = d.join("out.png");
+    let out = png.to_str().unwrap();
+    let tri = |v: &str| format!(r#"{{"width": 8, "height": 8, "triangles": [[{v}]]}}"#);
+    let cases: Vec<(String, Vec<&str>)> = vec![
+        (
+            write(&d, "malformed.json", "{\"width\": 8, \"height\": "),
+            vec!["malformed.json", "malformed JSON", "line 1"],
+        ),
+        (
+            write(&d, "nan.json", &tri("[NaN,0,0,0,0,0],[1,0,0,0,0,0],[0,1,0,0,0,0]")),
+            vec!["nan.json", "NaN is not a number"],
+        ),
+        (
+            write(&d, "inf.json", &tri("[1e999,0,0,0,0,0],[1,0,0,0,0,0],[0,1,0,0,0,0]")),
+            vec!["inf.json", "must be finite"],
+        ),
+        (
+            write(&d, "arity.json", &tri("[0,0,0,0,0,0],[1,0,0,0,0,0]")),
+            vec!["arity.json", "triangle 0", "has 2 vertices"],
+        ),
+        (
+            write(&d, "values.json", &tri("[0,0,0,0,0],[1,0,0,0,0,0],[0,1,0,0,0,0]")),
+            vec!["values.json", "vertex 0", "has 5 values"],
+        ),
+        (
+            write(&d, "zero.json", r#"{"width": 0, "height": 8, "triangles": []}"#),
+            vec!["zero.json", "width 0 is out of range"],
+        ),
+        (
+            write(&d, "huge.json", r#"{"width": 100000, "height": 8, "triangles": []}"#),
+            vec!["huge.json", "width 100000 is out of range"],
+        ),
+        (
+            write(
+                &d,
+                "missing_obj.json",
+                &format!(r#"{{"width": 64, "height": 64, {SCENE_HEAD}, "objects": [{{"obj": "nowhere.obj"}}]}}"#),
+            ),
+            vec!["missing_obj.json", "nowhere.obj", "no such file"],
+        ),
+        (
+            write(
+                &d,
+                "scene_res.json",
+                &format!(r#"{{"width": 100000, "height": 64, {SCENE_HEAD}, "objects": [{{"model": "cube"}}]}}"#),
+            ),
+            vec!["scene_res.json", "100000"],
+        ),
+        (
+            write(
+                &d,
+                "nan_obj.json",
+                &format!(r#"{{"width": 64, "height": 64, {SCENE_HEAD}, "objects": [{{"obj": "nan.obj"}}]}}"#),
+            ),
+            vec!["nan_obj.json", "nan.obj"],
+        ),
+        (write(&d, "neither.json", r#"{"width": 8, "height": 8}"#), vec!["neither.json", "neither a scene"]),
+        (d.join("absent.json").to_str().unwrap().to_string(), vec!["absent.json", "no such file"]),
+    ];
+    write(&d, "nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n");
+    for (input, want) in &cases {
+        fails_with(&["render", input, "-o", out], want);
+        fails_with(&["render", input, "-o", out, "--engine", "scanline"], want);
+    }
+    // A trilist cannot be resized; a size must be sane.
+    let ok = write(&d, "ok.json", &tri("[0,0,0,0,0,0],[8,0,0,0,0,0],[0,8,0,0,0,0]"));
+    fails_with(&["render", &ok, "-o", out, "--size", "64x48"], &["ok.json", "--size applies to scenes"]);
+    fails_with(
+        &["render", concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json"), "-o", out, "--size", "0x48"],
+        &["width 0 is out of range"],
+    );
+    // Impossible formats.
+    let narrow = write(&d, "narrow.json", r#"{"xy": "S3.4"}"#);
+    fails_with(
+        &["render", &ok, "-o", out, "--engine", "scanline", "--formats", &narrow],
+        &["narrow.json", "guard band"],
+    );
+    fails_with(&["render", &ok, "-o", out, "--engine", "vector", "--formats", "nope.json"], &["nope.json"]);
+    // An unwritable output names the output.
+    fails_with(&["render", &ok, "-o", d.join("no/such/dir/x.png").to_str().unwrap()], &["no/such/dir/x.png"]);
+}
+
+#[test]
+fn cli_renders_a_scene_and_its_trilist_to_the_same_image() {
+    let d = scratch("good");
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sphere.json");
+    let tris = d.join("tris.json");
+    let o = edgepaint(&["trilist", scene, "-o", tris.to_str().unwrap(), "--size", "96x72"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for engine in ["float", "scanline", "vector"] {
+        let (a, b) = (d.join(format!("{engine}-scene.png")), d.join(format!("{engine}-tris.png")));
+        let mask = d.join(format!("{engine}-mask.png"));
+        let o = edgepaint(&[
+            "render",
+            scene,
+            "--size",
+            "96x72",
+            "-o",
+            a.to_str().unwrap(),
+            "--engine",
+            engine,
+            "--mask",
+            mask.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let summary = String::from_utf8_lossy(&o.stdout);
+        assert!(summary.contains("168 triangles in") && summary.contains("pixels written"), "{summary}");
+        // The trilist carries no scene background or cull setting; sphere.json uses neither default-changing option.
+        let o = edgepaint(&["render", tris.to_str().unwrap(), "-o", b.to_str().unwrap(), "--engine", engine]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let (ia, ib) = (image::open(&a).unwrap().to_rgb8(), image::open(&b).unwrap().to_rgb8());
+        assert_eq!(ia.dimensions(), (96, 72));
+        let m = image::open(&mask).unwrap().to_luma8();
+        let covered = m.pixels().filter(|p| p.0[0] == 255).count();
+        assert!(covered > 1000, "{engine}: the sphere should cover the middle of the frame, covered {covered}");
+        // Same triangles, same engine: identical where the sphere is drawn.
+        for (p, q) in m.pixels().zip(ia.pixels().zip(ib.pixels())) {
+            if p.0[0] == 255 {
+                assert_eq!(q.0, q.1, "{engine}");
+            }
+        }
+    }
+}
+
+#[test]
+fn cli_accuracy_writes_a_table_and_json() {
+    let d = scratch("accuracy");
+    let json = d.join("acc.json");
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
+    let o = edgepaint(&[
+        "accuracy",
+        scene,
+        "--engine",
+        "scanline,vector",
+        "--size",
+        "80x60",
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let table = String::from_utf8_lossy(&o.stdout);
+    assert!(table.contains("PSNR") && table.contains("vector (4 lanes)"), "{table}");
+    let v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(v.as_array().unwrap().len(), 2);
+    assert_eq!(v[0]["coverage_unexplained"], 0);
+    assert!(v[1]["cycles"].as_u64().unwrap() > 0);
+}
