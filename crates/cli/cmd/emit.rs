@@ -1,10 +1,77 @@
-//! `edgepaint emit` (owned by the hardware-flow work; placeholder until it lands).
+//! `edgepaint emit`: Verilog for one unit, or for the default design, plus `manifest.json`.
+
+use anyhow::{anyhow, bail, Context, Result};
+use rtl::emit::Emitted;
+use rtl::Unit;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `edgepaint emit`.
 #[derive(clap::Args)]
-pub struct Args {}
-
-pub fn run(_args: Args) -> anyhow::Result<()> {
-    anyhow::bail!("`emit` is not built yet")
+pub struct Args {
+    /// The unit to emit (ept); without it, every unit of the default design.
+    #[arg(long, value_name = "NAME")]
+    unit: Option<String>,
+    /// A parameter of the unit, e.g. `--param P=128`; repeatable. Unset ones take their default.
+    #[arg(long = "param", value_name = "NAME=VALUE", value_parser = parse_param)]
+    params: Vec<(String, u64)>,
+    /// Directory to write `<unit>.v` and `manifest.json` into.
+    #[arg(short, long, value_name = "DIR", default_value = "hdl-out")]
+    out: PathBuf,
 }
-pub fn run_default() -> anyhow::Result<()> { anyhow::bail!("emission is not built yet") }
+
+fn parse_param(s: &str) -> std::result::Result<(String, u64), String> {
+    let (k, v) = s.split_once('=').ok_or_else(|| format!("\"{s}\" is not NAME=VALUE, e.g. P=128"))?;
+    let v = v.trim().parse().map_err(|_| format!("\"{v}\" in \"{s}\" is not a whole number"))?;
+    Ok((k.trim().to_owned(), v))
+}
+
+pub fn run(args: Args) -> Result<()> {
+    let Some(name) = args.unit else {
+        if !args.params.is_empty() {
+            bail!("--param needs --unit: the default design's parameters are fixed");
+        }
+        return emit_default(&args.out);
+    };
+    let emitted = emit_one(&name, args.params)?;
+    write(&args.out, &[emitted])
+}
+
+/// `edgepaint` with no arguments: the default design into `hdl-out/`.
+pub fn run_default() -> Result<()> {
+    emit_default(Path::new("hdl-out"))
+}
+
+/// Emits unit `name` with `params` over its defaults.
+pub fn emit_one(name: &str, params: Vec<(String, u64)>) -> Result<Emitted> {
+    let unit = Unit::named(name).ok_or_else(|| anyhow!("no unit named {name} (units: {})", rtl::emit::unit_names()))?;
+    let params = unit.params(params).map_err(|e| anyhow!(e))?;
+    unit.emit(&params).map_err(|e| anyhow!(e))
+}
+
+/// Writes the default design into `dir` and deletes any other `.v` there, so the
+/// directory holds exactly the design.
+fn emit_default(dir: &Path) -> Result<()> {
+    let design = rtl::emit::default_design();
+    write(dir, &design)?;
+    for entry in std::fs::read_dir(dir).with_context(|| format!("listing {}", dir.display()))? {
+        let path = entry?.path();
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or_default().to_owned();
+        if name.ends_with(".v") && !design.iter().any(|e| e.file() == name) {
+            std::fs::remove_file(&path).with_context(|| format!("removing stale {}", path.display()))?;
+            println!("removed {} (not in the default design)", path.display());
+        }
+    }
+    Ok(())
+}
+
+fn write(dir: &Path, units: &[Emitted]) -> Result<()> {
+    let paths = rtl::emit::write(dir, units).with_context(|| format!("writing into {}", dir.display()))?;
+    for (e, path) in units.iter().zip(&paths) {
+        let params: Vec<String> = e.params.iter().map(|(k, v)| format!("{k}={v}")).collect();
+        let ports: Vec<String> =
+            e.ports.iter().map(|p| format!("{} {}[{}]", p.dir.verilog(), p.name, p.width)).collect();
+        println!("wrote {} (module {}, {}; {})", path.display(), e.unit, params.join(" "), ports.join(", "));
+    }
+    println!("wrote {}", paths.last().expect("the manifest is always written").display());
+    Ok(())
+}

@@ -13,6 +13,7 @@ pub mod cull_sort;
 pub mod cycles;
 pub mod divider;
 pub mod edge_walk;
+pub mod ept;
 pub mod input;
 pub mod pixel_out;
 pub mod raster;

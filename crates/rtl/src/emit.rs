@@ -1,0 +1,201 @@
+//! Verilog emission: one file per unit, top module named after the unit, and the
+//! `manifest.json` that lists every emitted unit with its parameters and ports.
+
+use crate::sim::PortDir;
+use crate::{Params, Unit, DEFAULT_DESIGN, UNITS};
+use rust_hdl::prelude::*;
+use serde_json::json;
+use std::path::{Path, PathBuf};
+
+/// One top-level port of an emitted unit, as Verilog sees it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Port {
+    pub name: String,
+    pub dir: PortDir,
+    pub width: usize,
+}
+
+/// One unit, emitted with one set of parameters.
+#[derive(Clone, Debug)]
+pub struct Emitted {
+    pub unit: &'static str,
+    pub params: Params,
+    pub ports: Vec<Port>,
+    pub verilog: String,
+}
+
+impl Emitted {
+    /// The file name under the output directory: `<unit>.v`.
+    pub fn file(&self) -> String {
+        format!("{}.v", self.unit)
+    }
+}
+
+/// Emits `u` with `name` as its top module (rust-hdl's `generate_verilog` would call it
+/// `top`), after rust-hdl's checks for open inputs, loops and writes to inputs.
+pub fn verilog<U: Block>(name: &str, u: &U) -> String {
+    check_all(u).unwrap_or_else(|e| panic!("rust-hdl checks failed for {name}: {e:?}"));
+    let mut defs = ModuleDefines::default();
+    u.accept(name, &mut defs);
+    defs.defines()
+}
+
+/// Builds `U`, connects it and emits it as unit `name` with its ports.
+pub fn emit<U: Block + Default>(name: &'static str, params: Params) -> Emitted {
+    let mut u = U::default();
+    u.connect_all();
+    Emitted { unit: name, params, ports: ports(&u), verilog: verilog(name, &u) }
+}
+
+/// The top-level ports of `u`, in declaration order (a bundle's pins are named
+/// `<bundle>$<pin>`, as rust-hdl flattens them).
+pub fn ports<U: Block>(u: &U) -> Vec<Port> {
+    #[derive(Default)]
+    struct PortProbe {
+        depth: usize,
+        namespace: Vec<String>,
+        ports: Vec<Port>,
+    }
+    impl Probe for PortProbe {
+        fn visit_start_scope(&mut self, _name: &str, _node: &dyn Block) {
+            self.depth += 1;
+        }
+        fn visit_start_namespace(&mut self, name: &str, _node: &dyn Block) {
+            if self.depth == 1 {
+                self.namespace.push(name.to_owned());
+            }
+        }
+        fn visit_atom(&mut self, name: &str, signal: &dyn Atom) {
+            let dir = match signal.kind() {
+                AtomKind::InputParameter => PortDir::In,
+                AtomKind::OutputParameter => PortDir::Out,
+                _ => return,
+            };
+            if self.depth == 1 {
+                let name = self.namespace.iter().map(String::as_str).chain([name]).collect::<Vec<_>>().join("$");
+                self.ports.push(Port { name, dir, width: signal.bits() });
+            }
+        }
+        fn visit_end_namespace(&mut self, _name: &str, _node: &dyn Block) {
+            if self.depth == 1 {
+                self.namespace.pop();
+            }
+        }
+        fn visit_end_scope(&mut self, _name: &str, _node: &dyn Block) {
+            self.depth -= 1;
+        }
+    }
+    let mut probe = PortProbe::default();
+    u.accept("top", &mut probe);
+    probe.ports
+}
+
+/// `manifest.json`: per unit its name, parameters, file and ports.
+pub fn manifest(units: &[Emitted]) -> String {
+    let units: Vec<_> = units
+        .iter()
+        .map(|e| {
+            json!({
+                "unit": e.unit,
+                "parameters": e.params,
+                "file": e.file(),
+                "ports": e.ports.iter().map(|p| json!({"name": p.name, "direction": p.dir.verilog(), "width": p.width})).collect::<Vec<_>>(),
+            })
+        })
+        .collect();
+    let mut text = serde_json::to_string_pretty(&json!({ "units": units })).expect("JSON of plain values");
+    text.push('\n');
+    text
+}
+
+/// Every file of a design: each unit's Verilog, then `manifest.json`.
+pub fn files(units: &[Emitted]) -> Vec<(String, String)> {
+    let mut out: Vec<(String, String)> = units.iter().map(|e| (e.file(), e.verilog.clone())).collect();
+    out.push(("manifest.json".into(), manifest(units)));
+    out
+}
+
+/// The default design (`DEFAULT_DESIGN`), emitted.
+pub fn default_design() -> Vec<Emitted> {
+    DEFAULT_DESIGN
+        .iter()
+        .map(|(name, params)| {
+            let unit = Unit::named(name).expect("DEFAULT_DESIGN names units in UNITS");
+            let params = unit
+                .params(params.iter().map(|(k, v)| (k.to_string(), *v)))
+                .expect("DEFAULT_DESIGN parameters are valid");
+            unit.emit(&params).expect("DEFAULT_DESIGN parameters are supported")
+        })
+        .collect()
+}
+
+/// Writes `files(units)` into `dir` (created if missing); returns the paths written.
+pub fn write(dir: &Path, units: &[Emitted]) -> std::io::Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(dir)?;
+    files(units)
+        .into_iter()
+        .map(|(name, text)| {
+            let path = dir.join(name);
+            std::fs::write(&path, text)?;
+            Ok(path)
+        })
+        .collect()
+}
+
+/// Names of every unit in `UNITS`, for messages.
+pub fn unit_names() -> String {
+    UNITS.iter().map(|u| u.name).collect::<Vec<_>>().join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn repo() -> PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+    }
+
+    /// `hdl-out/` is committed: it must be exactly what `edgepaint` emits now.
+    #[test]
+    fn hdl_out_is_fresh() {
+        let dir = repo().join("hdl-out");
+        let files = files(&default_design());
+        for (name, text) in &files {
+            let committed = std::fs::read_to_string(dir.join(name)).unwrap_or_default();
+            assert!(
+                committed == *text,
+                "hdl-out/{name} is stale or missing: run `cargo run --release` and commit hdl-out/"
+            );
+        }
+        for entry in std::fs::read_dir(&dir).expect("hdl-out/") {
+            let name = entry.expect("hdl-out/ entry").file_name().to_string_lossy().into_owned();
+            assert!(
+                files.iter().any(|(n, _)| *n == name),
+                "hdl-out/{name} is not part of the default design: run `cargo run --release`"
+            );
+        }
+    }
+
+    /// One name per unit: `rtl/src/<name>.rs`, `model/src/<name>.rs` and
+    /// `testbenches/tests/<name>.rs` exist for every unit in `UNITS`.
+    #[test]
+    fn units_have_one_name() {
+        for unit in UNITS {
+            for file in [
+                format!("crates/rtl/src/{}.rs", unit.name),
+                format!("crates/model/src/{}.rs", unit.name),
+                format!("testbenches/tests/{}.rs", unit.name),
+            ] {
+                assert!(repo().join(&file).is_file(), "unit {}: {file} is missing", unit.name);
+            }
+        }
+    }
+
+    #[test]
+    fn ports_are_read_off_the_unit() {
+        let e = Unit::named("ept").expect("ept").emit(&[("P".to_owned(), 16)].into()).expect("P = 16");
+        let names: Vec<_> = e.ports.iter().map(|p| (p.name.as_str(), p.dir, p.width)).collect();
+        assert_eq!(names, [("xl", PortDir::In, 4), ("xr", PortDir::In, 4), ("px", PortDir::Out, 16)]);
+        assert!(e.verilog.contains("\nmodule ept(xl,xr,px);"), "top module named after the unit");
+    }
+}

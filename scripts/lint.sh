@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Verilator lint of every emitted unit in hdl-out/ (or of the .v files given), with -Wall.
+# Exits non-zero if any file has a warning or an error.
+#
+# Waived, and why:
+#   -Wno-WIDTH         rust-hdl writes every literal and index as 32 bits (`xl[32'h5]`,
+#                      `x << 32'h4`), so operand widths never match; the dual-simulation
+#                      tests compare the Verilog with rust-hdl's own simulator instead.
+#   -Wno-DECLFILENAME  rust-hdl writes a unit's sub-modules (`ept$root`, `ept$root$pe`, …)
+#                      into the unit's one file, so only the top module matches the name.
+#   scripts/lint-waivers.vlt  per-signal waivers, each with its reason there.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+if ! command -v verilator >/dev/null; then
+    echo "lint: verilator is not on PATH: run scripts/setup-tools.sh, then 'source scripts/tools-env.sh'" >&2
+    exit 1
+fi
+shopt -s nullglob
+files=("$@")
+[[ ${#files[@]} -gt 0 ]] || files=(hdl-out/*.v)
+if [[ ${#files[@]} -eq 0 ]]; then
+    echo "lint: no Verilog in hdl-out/ (run 'cargo run --release' to emit it)" >&2
+    exit 1
+fi
+
+failed=0
+for f in "${files[@]}"; do
+    top=$(basename "$f" .v)
+    if verilator --lint-only -Wall -Wno-WIDTH -Wno-DECLFILENAME --top-module "$top" scripts/lint-waivers.vlt "$f"; then
+        echo "lint: $f: clean"
+    else
+        echo "lint: $f: FAILED" >&2
+        failed=1
+    fi
+done
+exit $failed
