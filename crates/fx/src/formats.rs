@@ -64,6 +64,13 @@ pub struct Formats {
 /// Subpixel bits of the default vertex format (1/16 pixel, as is usual).
 pub const SUBPIXEL_BITS: u32 = 4;
 
+/// `n = clog2(max(width, height))`, at least 3: the screen size class the
+/// default formats are derived from.
+pub const fn resolution_bits(width: u32, height: u32) -> u32 {
+    let d = if width > height { width } else { height };
+    clog2(if d < 8 { 8 } else { d } as u64)
+}
+
 /// Widths of the exact (non-configurable) quantities, derived from the formats.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Derived {
@@ -84,7 +91,13 @@ pub struct Derived {
 impl Formats {
     /// Defaults for a `width` x `height` screen.
     pub fn for_resolution(width: u32, height: u32) -> Formats {
-        let n = clog2(width.max(height).max(8) as u64);
+        Formats::for_n(resolution_bits(width, height))
+    }
+
+    /// Defaults for screens up to 2^n pixels wide and high. A `const fn`, so
+    /// that RTL port widths can be read off it at compile time:
+    /// `Signed<{ Formats::for_n(10).xy.bits() as usize }>`.
+    pub const fn for_n(n: u32) -> Formats {
         let s = SUBPIXEL_BITS;
         Formats {
             xy: Fmt::s(n + 1, s).half_up(),
@@ -169,7 +182,14 @@ impl Formats {
     }
 
     /// Widths of the exact quantities.
-    pub fn derived(&self) -> Derived {
+    pub const fn derived(&self) -> Derived {
+        const fn max(a: u32, b: u32) -> u32 {
+            if a > b {
+                a
+            } else {
+                b
+            }
+        }
         let delta_bits = self.xy.bits() + 1;
         let area_bits = 2 * delta_bits;
         let edge_fn_bits = area_bits + 1;
@@ -184,9 +204,9 @@ impl Formats {
             area_bits,
             edge_fn_bits,
             pixel_bits,
-            div_dividend_bits: recip_dividend.max(start_dividend),
-            div_divisor_bits: area_bits.max(delta_bits + self.xy.frac),
-            div_quotient_bits: (self.ooa.frac + 2).max(delta_bits + 1),
+            div_dividend_bits: max(recip_dividend, start_dividend),
+            div_divisor_bits: max(area_bits, delta_bits + self.xy.frac),
+            div_quotient_bits: max(self.ooa.frac + 2, delta_bits + 1),
         }
     }
 
