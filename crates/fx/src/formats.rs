@@ -1,6 +1,6 @@
 //! The format of every quantity in edgepaint's fixed-point pipelines.
 //!
-//! `n = clog2(max(width, height))`; `s` = subpixel bits (default 4). Defaults
+//! `n = max(clog2(max(width, height)), 10)` ([`resolution_bits`]); `s` = subpixel bits (default 4). Defaults
 //! are [`Formats::for_resolution`]; [`Formats::wide`] adds precision everywhere
 //! (used to show that the pipelines converge on the float reference).
 //!
@@ -64,12 +64,23 @@ pub struct Formats {
 /// Subpixel bits of the default vertex format (1/16 pixel, as is usual).
 pub const SUBPIXEL_BITS: u32 = 4;
 
-/// `n = clog2(max(width, height))`, at least 3: the screen size class the
-/// default formats are derived from.
+/// The size class the default formats are derived from:
+/// `n = clog2(max(width, height))`, but at least [`RTL_CLASS`], so that every
+/// screen up to 1024 x 1024 shares the formats the RTL is built with.
 pub const fn resolution_bits(width: u32, height: u32) -> u32 {
     let d = if width > height { width } else { height };
-    clog2(if d < 8 { 8 } else { d } as u64)
+    let n = clog2(d as u64);
+    if n < RTL_CLASS {
+        RTL_CLASS
+    } else {
+        n
+    }
 }
+
+/// The size class of the emitted RTL (rust-hdl widths are compile-time
+/// constants): screens up to 2^10 = 1024 pixels wide and high, which covers
+/// 320x240 to 001's 800x600.
+pub const RTL_CLASS: u32 = 10;
 
 /// Widths of the exact (non-configurable) quantities, derived from the formats.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
