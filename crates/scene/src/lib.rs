@@ -10,6 +10,7 @@ pub mod error;
 pub mod geometry;
 pub mod input;
 mod math;
+pub mod measure;
 pub mod mesh;
 pub mod scene;
 pub mod stress;

@@ -5,6 +5,7 @@
 use fx::Formats;
 use model::cull_sort::{Clip, Cull};
 use model::raster::{triangle, Dropped, Method, Options};
+use scene::measure::{edge_distance, plane_z};
 use scene::Triangle;
 use std::collections::HashMap;
 
@@ -18,28 +19,13 @@ pub fn count() -> usize {
 
 pub const METHODS: [Method; 2] = [Method::Scanline, Method::Vector { lanes: 4, perspective: true }];
 
-/// Distance in pixels from (x, y) to the nearest edge of the triangle.
-fn edge_distance(t: &Triangle, x: f64, y: f64) -> f64 {
-    (0..3)
-        .map(|k| {
-            let (a, b) = (t[k], t[(k + 1) % 3]);
-            let (dx, dy) = (b.x - a.x, b.y - a.y);
-            let u = (((x - a.x) * dx + (y - a.y) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
-            ((a.x + u * dx - x).powi(2) + (a.y + u * dy - y).powi(2)).sqrt()
-        })
-        .fold(f64::INFINITY, f64::min)
-}
-
 /// Depth at a pixel centre of the plane through the triangle's vertices after
 /// snapping to the input formats: what the hardware can at best produce (depth
 /// LSBs). Computed here, independently of the models.
 fn snapped_depth(t: &Triangle, f: &Formats, x: u32, y: u32) -> f64 {
     let q = |fm: fx::Fmt, v: f64| fm.to_f64(fm.from_f64(v).unwrap());
-    let [(x0, y0, z0), (x1, y1, z1), (x2, y2, z2)] = t.map(|v| (q(f.xy, v.x), q(f.xy, v.y), q(f.z, v.z)));
-    let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
-    let a = ((z1 - z0) * (y2 - y0) - (z2 - z0) * (y1 - y0)) / det;
-    let b = ((x1 - x0) * (z2 - z0) - (x2 - x0) * (z1 - z0)) / det;
-    (z0 + a * (x as f64 + 0.5 - x0) + b * (y as f64 + 0.5 - y0)) * (f.z.frac as f64).exp2()
+    let snapped = t.map(|v| scene::Vertex { x: q(f.xy, v.x), y: q(f.xy, v.y), z: q(f.z, v.z), ..v });
+    plane_z(&snapped, x as f64 + 0.5, y as f64 + 0.5).expect("non-degenerate") * (f.z.frac as f64).exp2()
 }
 
 /// How far a fixed-point triangle may stray from the reference.
