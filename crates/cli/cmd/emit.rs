@@ -19,7 +19,8 @@ pub struct Args {
     out: PathBuf,
 }
 
-fn parse_param(s: &str) -> std::result::Result<(String, u64), String> {
+/// `NAME=VALUE` of `--param`.
+pub fn parse_param(s: &str) -> std::result::Result<(String, u64), String> {
     let (k, v) = s.split_once('=').ok_or_else(|| format!("\"{s}\" is not NAME=VALUE, e.g. P=128"))?;
     let v = v.trim().parse().map_err(|_| format!("\"{v}\" in \"{s}\" is not a whole number"))?;
     Ok((k.trim().to_owned(), v))

@@ -1,9 +1,297 @@
-//! `edgepaint report` (owned by the hardware-flow work; placeholder until it lands).
+//! `edgepaint report`: synthesize units with Yosys, place and route them with nextpnr, and
+//! tabulate area and speed as Markdown and JSON.
+//!
+//! Per unit and parameter set:
+//! * generic: Yosys `synth -flatten`; cells, and 2-input gate equivalents (GE) defined as
+//!   `stat -tech cmos` transistors / 4 (a CMOS NAND2 is 4 transistors);
+//! * iCE40: `synth_ice40` of the unit alone: SB_LUT4, SB_DFF*, SB_CARRY, SB_MAC16;
+//! * ECP5: `synth_ecp5` of the unit alone: LUT4, TRELLIS_FF, CCU2C, MULT18X18D;
+//! * Fmax: the unit inside `rtl::emit::pnr_wrapper` (registered inputs and outputs, four
+//!   pins), `nextpnr-ice40` on an iCE40 HX8K (ct256) and `nextpnr-ecp5` on an LFE5U-25F
+//!   (CABGA381), seed 1; the achieved clock in nextpnr's JSON report.
+
+use super::emit::emit_one;
+use anyhow::{anyhow, bail, Context, Result};
+use rtl::emit::Emitted;
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::Command;
 
 /// Arguments of `edgepaint report`.
 #[derive(clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// The unit to report (ept); without it, every unit of the default design.
+    #[arg(long, value_name = "NAME")]
+    unit: Option<String>,
+    /// A parameter of the unit, e.g. `--param P=1024`; give one name several times for one
+    /// row per value (`--param P=64 --param P=1024`).
+    #[arg(long = "param", value_name = "NAME=VALUE", value_parser = super::emit::parse_param)]
+    params: Vec<(String, u64)>,
+    /// Skip place and route (no Fmax): synthesis only, much faster.
+    #[arg(long)]
+    no_pnr: bool,
+    /// Directory for report.md, report.json and the tools' work files.
+    #[arg(short, long, value_name = "DIR", default_value = "target/report")]
+    out: PathBuf,
+}
 
-pub fn run(_args: Args) -> anyhow::Result<()> {
-    anyhow::bail!("`report` is not built yet")
+/// iCE40 part for place and route: the largest HX part, 7680 LUTs.
+const ICE40: (&str, &[&str]) = ("iCE40HX8K-CT256", &["--hx8k", "--package", "ct256"]);
+/// ECP5 part for place and route: 24k LUTs.
+const ECP5: (&str, &[&str]) = ("LFE5U-25F-CABGA381", &["--25k", "--package", "CABGA381"]);
+/// Target clocks for timing-driven placement, in MHz; the achieved Fmax is reported
+/// whether or not it meets them.
+const ICE40_TARGET_MHZ: &str = "100";
+const ECP5_TARGET_MHZ: &str = "200";
+
+#[derive(Serialize)]
+struct Row {
+    unit: String,
+    parameters: BTreeMap<String, u64>,
+    generic: Generic,
+    ice40: Fpga,
+    ecp5: Fpga,
+}
+
+#[derive(Serialize)]
+struct Generic {
+    /// Yosys generic cells after `synth -flatten`.
+    cells: u64,
+    /// `stat -tech cmos` estimate.
+    transistors: u64,
+    /// transistors / 4.
+    gate_equivalents: f64,
+}
+
+#[derive(Serialize)]
+struct Fpga {
+    device: &'static str,
+    luts: u64,
+    ffs: u64,
+    /// iCE40 SB_CARRY or ECP5 CCU2C (two-bit carry cells).
+    carry: u64,
+    /// iCE40 SB_MAC16 or ECP5 MULT18X18D.
+    dsps: u64,
+    /// Achieved clock of the wrapped unit after place and route; `None` with `--no-pnr`.
+    fmax_mhz: Option<f64>,
+}
+
+pub fn run(args: Args) -> Result<()> {
+    let designs: Vec<Emitted> = match &args.unit {
+        None if !args.params.is_empty() => bail!("--param needs --unit: the default design's parameters are fixed"),
+        None => rtl::emit::default_design(),
+        Some(name) => sweep(&args.params).into_iter().map(|p| emit_one(name, p)).collect::<Result<_>>()?,
+    };
+    let mut tools = vec!["yosys"];
+    if !args.no_pnr {
+        tools.extend(["nextpnr-ice40", "nextpnr-ecp5"]);
+    }
+    for tool in tools {
+        if Command::new(tool).arg("--version").output().is_err() {
+            bail!("{tool} is not on PATH: run scripts/setup-tools.sh, then `source scripts/tools-env.sh`");
+        }
+    }
+    let mut rows = Vec::new();
+    for e in &designs {
+        let tag: String = e.params.iter().map(|(k, v)| format!("-{k}{v}")).collect();
+        let dir = args.out.join(format!("{}{tag}", e.unit));
+        eprintln!("report: {}{tag} in {}", e.unit, dir.display());
+        rows.push(report(e, &dir, !args.no_pnr)?);
+    }
+    let md = markdown(&rows);
+    let json = serde_json::to_string_pretty(&serde_json::json!({ "units": rows }))? + "\n";
+    std::fs::create_dir_all(&args.out)?;
+    let (md_path, json_path) = (args.out.join("report.md"), args.out.join("report.json"));
+    std::fs::write(&md_path, &md).with_context(|| format!("writing {}", md_path.display()))?;
+    std::fs::write(&json_path, &json).with_context(|| format!("writing {}", json_path.display()))?;
+    print!("{md}");
+    println!("\nwrote {} and {}", md_path.display(), json_path.display());
+    Ok(())
+}
+
+/// One parameter set per value of a repeated name (a cartesian product over names).
+fn sweep(params: &[(String, u64)]) -> Vec<Vec<(String, u64)>> {
+    let mut by_name: BTreeMap<&str, Vec<u64>> = BTreeMap::new();
+    for (k, v) in params {
+        by_name.entry(k).or_default().push(*v);
+    }
+    by_name.into_iter().fold(vec![vec![]], |sets, (k, values)| {
+        sets.iter()
+            .flat_map(|set| values.iter().map(move |v| set.iter().cloned().chain([(k.to_owned(), *v)]).collect()))
+            .collect()
+    })
+}
+
+fn report(e: &Emitted, dir: &Path, pnr: bool) -> Result<Row> {
+    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    let unit_v = dir.join(e.file());
+    let wrap_v = dir.join(format!("{}_pnr.v", e.unit));
+    std::fs::write(&unit_v, &e.verilog)?;
+    std::fs::write(&wrap_v, rtl::emit::pnr_wrapper(e))?;
+    let top = e.unit;
+    let read = format!("read_verilog {}", unit_v.display());
+
+    let generic = yosys_stat(dir, "generic", &format!("{read}; synth -flatten -top {top}"), "-tech cmos")?;
+    let transistors: u64 = generic["estimated_num_transistors"]
+        .as_str()
+        .and_then(|s| s.parse().ok())
+        .ok_or_else(|| anyhow!("no transistor estimate in Yosys' stat"))?;
+    let ice40 = cells(&yosys_stat(dir, "ice40", &format!("{read}; synth_ice40 -top {top}"), "")?);
+    let ecp5 = cells(&yosys_stat(dir, "ecp5", &format!("{read}; synth_ecp5 -top {top}"), "")?);
+
+    let (mut ice40_fmax, mut ecp5_fmax) = (None, None);
+    if pnr {
+        let read_both = format!("{read}; read_verilog {}", wrap_v.display());
+        let wrapped = format!("{top}_pnr");
+        let json = |name: &str| dir.join(name).display().to_string();
+        yosys(dir, "ice40_pnr", &format!("{read_both}; synth_ice40 -top {wrapped} -json {}", json("ice40_pnr.json")))?;
+        ice40_fmax = Some(nextpnr(
+            dir,
+            "nextpnr-ice40",
+            ICE40.1,
+            "ice40_pnr.json",
+            ICE40_TARGET_MHZ,
+            "--pcf-allow-unconstrained",
+        )?);
+        yosys(dir, "ecp5_pnr", &format!("{read_both}; synth_ecp5 -top {wrapped} -json {}", json("ecp5_pnr.json")))?;
+        ecp5_fmax =
+            Some(nextpnr(dir, "nextpnr-ecp5", ECP5.1, "ecp5_pnr.json", ECP5_TARGET_MHZ, "--lpf-allow-unconstrained")?);
+    }
+    let count = |cells: &BTreeMap<String, u64>, f: &dyn Fn(&str) -> bool| {
+        cells.iter().filter(|(k, _)| f(k)).map(|(_, n)| n).sum()
+    };
+    Ok(Row {
+        unit: e.unit.to_owned(),
+        parameters: e.params.clone(),
+        generic: Generic {
+            cells: generic["num_cells"].as_u64().ok_or_else(|| anyhow!("no cell count in Yosys' stat"))?,
+            transistors,
+            gate_equivalents: transistors as f64 / 4.0,
+        },
+        ice40: Fpga {
+            device: ICE40.0,
+            luts: count(&ice40, &|k| k == "SB_LUT4"),
+            ffs: count(&ice40, &|k| k.starts_with("SB_DFF")),
+            carry: count(&ice40, &|k| k == "SB_CARRY"),
+            dsps: count(&ice40, &|k| k == "SB_MAC16"),
+            fmax_mhz: ice40_fmax,
+        },
+        ecp5: Fpga {
+            device: ECP5.0,
+            luts: count(&ecp5, &|k| k == "LUT4"),
+            ffs: count(&ecp5, &|k| k == "TRELLIS_FF"),
+            carry: count(&ecp5, &|k| k == "CCU2C"),
+            dsps: count(&ecp5, &|k| k == "MULT18X18D"),
+            fmax_mhz: ecp5_fmax,
+        },
+    })
+}
+
+/// Runs Yosys script `script` (log: `dir/<step>.log`).
+fn yosys(dir: &Path, step: &str, script: &str) -> Result<()> {
+    let log = dir.join(format!("{step}.log"));
+    let out =
+        Command::new("yosys").arg("-q").arg("-l").arg(&log).arg("-p").arg(script).output().context("running yosys")?;
+    if !out.status.success() {
+        bail!("yosys ({step}) failed; log: {}\n{}", log.display(), String::from_utf8_lossy(&out.stderr));
+    }
+    Ok(())
+}
+
+/// Runs `script` then `stat -json <stat_args>`; returns the whole design's statistics.
+fn yosys_stat(dir: &Path, step: &str, script: &str, stat_args: &str) -> Result<serde_json::Value> {
+    let stat = dir.join(format!("{step}.stat.json"));
+    yosys(dir, step, &format!("{script}; tee -q -o {} stat -json {stat_args}", stat.display()))?;
+    let text = std::fs::read_to_string(&stat).with_context(|| format!("reading {}", stat.display()))?;
+    let json: serde_json::Value = serde_json::from_str(&text).with_context(|| format!("parsing {}", stat.display()))?;
+    let design =
+        json.get("design").cloned().or_else(|| json["modules"].as_object().and_then(|m| m.values().next().cloned()));
+    design.ok_or_else(|| anyhow!("{}: no design statistics", stat.display()))
+}
+
+/// Cell counts by type from a `stat -json` design entry.
+fn cells(design: &serde_json::Value) -> BTreeMap<String, u64> {
+    design["num_cells_by_type"]
+        .as_object()
+        .map(|m| m.iter().map(|(k, v)| (k.clone(), v.as_u64().unwrap_or(0))).collect())
+        .unwrap_or_default()
+}
+
+/// Places and routes netlist `dir/net`; returns the achieved Fmax in MHz of its one clock.
+/// Runs in `dir` with relative paths: the YoWASP build of nextpnr-ecp5 sees only the
+/// current directory.
+fn nextpnr(dir: &Path, tool: &str, part: &[&str], net: &str, target_mhz: &str, unconstrained: &str) -> Result<f64> {
+    let (report, log) = (format!("{tool}.report.json"), format!("{tool}.log"));
+    let out = Command::new(tool)
+        .current_dir(dir)
+        .args(part)
+        .args(["--json", net, unconstrained, "--timing-allow-fail", "--seed", "1", "--freq", target_mhz])
+        .args(["--report", &report, "--log", &log])
+        .output()
+        .with_context(|| format!("running {tool}"))?;
+    if !out.status.success() {
+        bail!("{tool} failed; log: {}\n{}", dir.join(log).display(), String::from_utf8_lossy(&out.stderr));
+    }
+    let report = dir.join(report);
+    let text = std::fs::read_to_string(&report).with_context(|| format!("reading {}", report.display()))?;
+    let json: serde_json::Value =
+        serde_json::from_str(&text).with_context(|| format!("parsing {}", report.display()))?;
+    let clocks = json["fmax"].as_object().ok_or_else(|| anyhow!("{}: no fmax", report.display()))?;
+    clocks
+        .values()
+        .filter_map(|c| c["achieved"].as_f64())
+        .reduce(f64::min)
+        .ok_or_else(|| anyhow!("{}: no achieved clock", report.display()))
+}
+
+fn markdown(rows: &[Row]) -> String {
+    let mhz = |f: Option<f64>| f.map_or("–".to_owned(), |f| format!("{f:.1}"));
+    let mut md = String::from(
+        "| unit | parameters | generic cells | GE (2-input) | iCE40 LUT | iCE40 FF | iCE40 carry | iCE40 DSP | iCE40 Fmax MHz | ECP5 LUT | ECP5 FF | ECP5 carry | ECP5 DSP | ECP5 Fmax MHz |\n\
+         |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+    );
+    for r in rows {
+        let params: Vec<String> = r.parameters.iter().map(|(k, v)| format!("{k}={v}")).collect();
+        let (i, e) = (&r.ice40, &r.ecp5);
+        writeln!(
+            md,
+            "| {} | {} | {} | {:.0} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            r.unit,
+            params.join(" "),
+            r.generic.cells,
+            r.generic.gate_equivalents,
+            i.luts,
+            i.ffs,
+            i.carry,
+            i.dsps,
+            mhz(i.fmax_mhz),
+            e.luts,
+            e.ffs,
+            e.carry,
+            e.dsps,
+            mhz(e.fmax_mhz)
+        )
+        .expect("writing to a String");
+    }
+    md.push_str(&format!(
+        "\nGE: Yosys `stat -tech cmos` transistors / 4. LUT, FF, carry, DSP: the unit alone through `synth_ice40` / \
+         `synth_ecp5`. Fmax: the unit between registers (`rtl::emit::pnr_wrapper`), nextpnr on {} and {}.\n",
+        ICE40.0, ECP5.0
+    ));
+    md
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn report_sweep_gives_one_set_per_value() {
+        let p = |k: &str, v| (k.to_owned(), v);
+        assert_eq!(sweep(&[p("P", 64), p("P", 1024)]), vec![vec![p("P", 64)], vec![p("P", 1024)]]);
+        assert_eq!(sweep(&[]), vec![Vec::<(String, u64)>::new()]);
+        assert_eq!(sweep(&[p("A", 1), p("B", 2), p("A", 3)]).len(), 2);
+    }
 }

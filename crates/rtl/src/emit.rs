@@ -147,6 +147,70 @@ pub fn unit_names() -> String {
     UNITS.iter().map(|u| u.name).collect::<Vec<_>>().join(", ")
 }
 
+/// A timing wrapper for place and route of `e` (not part of the design): module
+/// `<unit>_pnr` with four pins, `clk`, `sin`, `load`, `sout`. The unit's inputs come from
+/// a shift chain fed by `sin` and its outputs go into registers, so every path through the
+/// unit is timed register to register; the output registers load into a second shift
+/// chain that leaves on `sout`, so every output is observable and synthesis keeps all of
+/// the unit. A unit's `clock` port gets `clk`.
+pub fn pnr_wrapper(e: &Emitted) -> String {
+    let (ins, outs): (Vec<&Port>, Vec<&Port>) =
+        e.ports.iter().filter(|p| p.name != "clock").partition(|p| p.dir == PortDir::In);
+    let iw: usize = ins.iter().map(|p| p.width).sum();
+    let ow: usize = outs.iter().map(|p| p.width).sum();
+    assert!(iw > 0 && ow > 0, "{} needs inputs and outputs to be placed and routed", e.unit);
+    let mut conns = Vec::new();
+    let mut at = 0;
+    for p in &ins {
+        conns.push(format!("        .{}(chain_in[{}:{}])", p.name, at + p.width - 1, at));
+        at += p.width;
+    }
+    at = 0;
+    for p in &outs {
+        conns.push(format!("        .{}(out_d[{}:{}])", p.name, at + p.width - 1, at));
+        at += p.width;
+    }
+    if e.ports.iter().any(|p| p.name == "clock") {
+        conns.push("        .clock(clk)".into());
+    }
+    let shift = |reg: &str, w: usize, input: &str| {
+        if w == 1 {
+            input.to_owned()
+        } else {
+            format!("{{{reg}[{}:0], {input}}}", w - 2)
+        }
+    };
+    format!(
+        "// Place-and-route timing wrapper for `{unit}`, written by `edgepaint report`; not part of\n\
+         // the design. Inputs arrive through a shift chain (registers), outputs are registered and\n\
+         // leave through a loadable shift chain, so every path through `{unit}` is timed register\n\
+         // to register and no output can be optimised away.\n\
+         module {unit}_pnr(clk, sin, load, sout);\n\
+         \x20   input wire clk;\n\
+         \x20   input wire sin;\n\
+         \x20   input wire load;\n\
+         \x20   output wire sout;\n\
+         \x20   reg [{im}:0] chain_in;\n\
+         \x20   wire [{om}:0] out_d;\n\
+         \x20   reg [{om}:0] out_q;\n\
+         \x20   reg [{om}:0] chain_out;\n\
+         \x20   {unit} dut(\n{conns}\n    );\n\
+         \x20   always @(posedge clk) begin\n\
+         \x20       chain_in <= {shift_in};\n\
+         \x20       out_q <= out_d;\n\
+         \x20       chain_out <= load ? out_q : {shift_out};\n\
+         \x20   end\n\
+         \x20   assign sout = chain_out[{om}];\n\
+         endmodule\n",
+        unit = e.unit,
+        im = iw - 1,
+        om = ow - 1,
+        conns = conns.join(",\n"),
+        shift_in = shift("chain_in", iw, "sin"),
+        shift_out = shift("chain_out", ow, "1'b0"),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -188,6 +252,23 @@ mod tests {
             ] {
                 assert!(repo().join(&file).is_file(), "unit {}: {file} is missing", unit.name);
             }
+        }
+    }
+
+    #[test]
+    fn pnr_wrapper_registers_every_port() {
+        let e = Unit::named("ept").expect("ept").emit(&[("P".to_owned(), 8)].into()).expect("P = 8");
+        let w = pnr_wrapper(&e);
+        for line in [
+            "module ept_pnr(clk, sin, load, sout);",
+            ".xl(chain_in[2:0])",
+            ".xr(chain_in[5:3])",
+            ".px(out_d[7:0])",
+            "chain_in <= {chain_in[4:0], sin};",
+            "chain_out <= load ? out_q : {chain_out[6:0], 1'b0};",
+            "assign sout = chain_out[7];",
+        ] {
+            assert!(w.contains(line), "{line} missing from\n{w}");
         }
     }
 

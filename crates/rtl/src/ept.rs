@@ -171,8 +171,10 @@ impl Logic for Tree4 {
 /// One subtree type over `$n` pixels and one top over `$n` pixels, whose root it is.
 ///
 /// `$tree` holds a PE and two `$child` subtrees of `$half` pixels; it takes the `$k` low
-/// bits of XL and XR (its PE uses bit `$k - 1`, the children the rest). `$top` is the
-/// unit for P = `$n`, B = `$b` = `$k + 1` bits: the MSBs are the root PE's (LI, RI).
+/// bits of XL and XR (its PE uses bit `$kc` = `$k - 1`, the children bits `$kc - 1 ..= 0`).
+/// `$top` is the unit for P = `$n`, B = `$b` = `$k + 1` bits: the MSBs (bit `$k`) are the
+/// root PE's (LI, RI). Literals, not expressions: rust-hdl copies index expressions into the
+/// Verilog as written, and a const generic's name would be undefined there.
 macro_rules! ept_size {
     ($top:ident, $tree:ident, $child:ident, $n:tt, $half:tt, $b:tt, $k:tt, $kc:tt) => {
         #[doc = concat!("A subtree of the EPT over ", stringify!($n), " pixels (paper 002, Fig. 4): \
