@@ -4,7 +4,7 @@
 use crate::sim::PortDir;
 use crate::{Params, Unit, DEFAULT_DESIGN, UNITS};
 use rust_hdl::prelude::*;
-use serde_json::json;
+use serde::Serialize;
 use std::path::{Path, PathBuf};
 
 /// One top-level port of an emitted unit, as Verilog sees it.
@@ -92,18 +92,37 @@ pub fn ports<U: Block>(u: &U) -> Vec<Port> {
 
 /// `manifest.json`: per unit its name, parameters, file and ports.
 pub fn manifest(units: &[Emitted]) -> String {
-    let units: Vec<_> = units
+    #[derive(Serialize)]
+    struct Manifest<'a> {
+        units: Vec<ManifestUnit<'a>>,
+    }
+    #[derive(Serialize)]
+    struct ManifestUnit<'a> {
+        unit: &'a str,
+        parameters: &'a Params,
+        file: String,
+        ports: Vec<ManifestPort<'a>>,
+    }
+    #[derive(Serialize)]
+    struct ManifestPort<'a> {
+        name: &'a str,
+        direction: &'static str,
+        width: usize,
+    }
+    let units = units
         .iter()
-        .map(|e| {
-            json!({
-                "unit": e.unit,
-                "parameters": e.params,
-                "file": e.file(),
-                "ports": e.ports.iter().map(|p| json!({"name": p.name, "direction": p.dir.verilog(), "width": p.width})).collect::<Vec<_>>(),
-            })
+        .map(|e| ManifestUnit {
+            unit: e.unit,
+            parameters: &e.params,
+            file: e.file(),
+            ports: e
+                .ports
+                .iter()
+                .map(|p| ManifestPort { name: &p.name, direction: p.dir.verilog(), width: p.width })
+                .collect(),
         })
         .collect();
-    let mut text = serde_json::to_string_pretty(&json!({ "units": units })).expect("JSON of plain values");
+    let mut text = serde_json::to_string_pretty(&Manifest { units }).expect("JSON of plain values");
     text.push('\n');
     text
 }
