@@ -10,7 +10,8 @@ use rust_hdl::prelude::*;
 use std::fmt;
 
 /// How many delta cycles a unit may take to settle before we call it a loop.
-/// The deepest unit so far, the EPT at P = 1024, needs about 20.
+/// The deepest unit so far, the EPT at P = 1024, needs up to 39 (one per level down the tree
+/// and one per level back up, as each subtree's mask joins its parent's).
 const SETTLE_LIMIT: usize = 256;
 
 /// Propagates the inputs through the combinational logic.
