@@ -60,7 +60,12 @@ fi
 
 mkdir -p "$TOOLS" "$BIN"
 if [[ ! -x $VENV/bin/pip ]]; then
-    python3 -m venv "$VENV"
+    if ! python3 -m venv "$VENV"; then
+        # Debian's own python3 keeps venv in a separate package.
+        apt-get install -y -q --no-install-recommends python3-venv
+        rm -rf "$VENV"
+        python3 -m venv "$VENV"
+    fi
 fi
 "$VENV/bin/pip" install -q --disable-pip-version-check "${PIP_PINS[@]}"
 
