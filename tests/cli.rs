@@ -129,7 +129,7 @@ fn cli_renders_a_scene_and_its_trilist_to_the_same_image() {
     let tris = d.join("tris.json");
     let o = edgepaint(&["trilist", scene, "-o", tris.to_str().unwrap(), "--size", "96x72"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    for engine in ["float", "scanline", "vector"] {
+    for engine in ["float", "scanline", "vector", "se"] {
         let (a, b) = (d.join(format!("{engine}-scene.png")), d.join(format!("{engine}-tris.png")));
         let mask = d.join(format!("{engine}-mask.png"));
         let o = edgepaint(&[

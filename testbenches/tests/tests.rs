@@ -3,3 +3,4 @@
 
 mod ept;
 mod harness;
+mod se;

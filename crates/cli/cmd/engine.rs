@@ -15,6 +15,8 @@ pub enum Engine {
     Scanline,
     /// The fixed-point per-pixel barycentric method of 004.
     Vector,
+    /// The scanline pipeline's spans drawn by an array of 000's shading engines (render only).
+    Se,
 }
 
 /// Options for the fixed-point pipelines.
@@ -55,6 +57,7 @@ impl FixedArgs {
             Engine::Float => None,
             Engine::Scanline => Some(Method::Scanline),
             Engine::Vector => Some(Method::Vector { lanes: self.lanes, perspective }),
+            Engine::Se => anyhow::bail!("--engine se only renders (its spans are the scanline pipeline's)"),
         })
     }
 }

@@ -5,6 +5,7 @@
 //! * [`cull_sort`] (003), [`divider`] (001), [`triangle_setup`] (001),
 //!   [`edge_walk`] (001, 003), [`span`] (001, 003), [`pixel_out`]: the scanline pipeline;
 //! * [`vector`] (004): per-pixel barycentric rasterization;
+//! * [`se`] (000): the shading engine, cycle-exact, and the engine array drawing the scanline's spans;
 //! * [`raster`]: whole frames through either, with analysis mode; [`cycles`]: the cycle model;
 //! * [`input`]: float vertices to hardware words; [`ctx`]: formats and overflow records.
 
@@ -17,6 +18,7 @@ pub mod ept;
 pub mod input;
 pub mod pixel_out;
 pub mod raster;
+pub mod se;
 pub mod span;
 pub mod triangle_setup;
 pub mod vector;

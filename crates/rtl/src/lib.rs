@@ -7,6 +7,7 @@
 
 pub mod emit;
 pub mod ept;
+pub mod se;
 pub mod sim;
 
 use emit::Emitted;
@@ -35,15 +36,30 @@ pub struct Unit {
 }
 
 /// Every unit, by name.
-pub const UNITS: &[Unit] = &[Unit {
-    name: "ept",
-    doc: "edge painting tree, paper 002 Figs. 2-5: pixel i painted iff XL <= i <= XR",
-    params: &[Param { name: "P", default: 64, doc: "pixels per scanline, a power of two from 8 to 1024" }],
-    build: ept::emit_ept,
-}];
+pub const UNITS: &[Unit] = &[
+    Unit {
+        name: "ept",
+        doc: "edge painting tree, paper 002 Figs. 2-5: pixel i painted iff XL <= i <= XR",
+        params: &[Param { name: "P", default: 64, doc: "pixels per scanline, a power of two from 8 to 1024" }],
+        build: ept::emit_ept,
+    },
+    Unit {
+        name: "se",
+        doc: "shading engine, paper 000 Figs. 6-10: serial multipliers, bit-serial interpolator, EPT mask, z compare, 4 ports",
+        params: &[
+            Param { name: "P", default: 64, doc: "pixels per engine (region width): 8, 16, 32 or 64" },
+            Param { name: "ZW", default: 24, doc: "bits of a z word (000: 24)" },
+            Param { name: "CW", default: 16, doc: "bits of a colour word (000: 16)" },
+            Param { name: "F", default: 16, doc: "fraction bits of the lines' A and B" },
+            Param { name: "I", default: 0, doc: "engine index i: region [P i, P (i + 1)), P (i + 1) < 2048" },
+        ],
+        build: se::emit_se,
+    },
+];
 
 /// The default design: units and parameters that `edgepaint` with no arguments emits.
-pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[("ept", &[("P", 64)])];
+pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] =
+    &[("ept", &[("P", 64)]), ("se", &[("P", 64), ("ZW", 24), ("CW", 16), ("F", 16), ("I", 0)])];
 
 impl Unit {
     /// The unit called `name`.
