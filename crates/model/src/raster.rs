@@ -47,11 +47,19 @@ pub struct Options {
 pub struct Work {
     /// Whether it went past `cull_sort`.
     pub passed_cull: bool,
-    /// Per scanline the edge walk stepped through, the cycles `span` took for
-    /// the command it emitted, if any (scanline method).
-    pub scanlines: Vec<Option<u32>>,
+    /// Per scanline the edge walk stepped through, the span command it emitted, if
+    /// any (scanline method).
+    pub scanlines: Vec<Option<SpanWork>>,
     /// Cycles the vector unit took (vector method).
     pub vector_cycles: u32,
+}
+
+/// What one span command cost `span` (`model::span::SpanOut`): its cycles, and the
+/// cycle of its last pixel sent to `pixel_out`, if any.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SpanWork {
+    pub cycles: u32,
+    pub last_sent: Option<u32>,
 }
 
 /// One triangle's pixels (before the depth test) and work.
@@ -72,14 +80,14 @@ pub fn trace(v: &[Vtx; 3], clip: Clip, opts: &Options, ctx: &mut Ctx) -> Result<
             let setup = triangle_setup(&sorted, ctx);
             let walk = edge_walk(&setup, clip, ctx);
             for cmd in &walk.scanlines {
-                let cycles = cmd.as_ref().map(|cmd| {
+                let work = cmd.as_ref().map(|cmd| {
                     let o = span(cmd, clip, ctx);
                     t.spans += 1;
                     t.z_clipped += o.z_clipped;
                     t.pixels.extend(o.pixels);
-                    o.cycles
+                    SpanWork { cycles: o.cycles, last_sent: o.last_sent }
                 });
-                t.work.scanlines.push(cycles);
+                t.work.scanlines.push(work);
             }
         }
         Method::Vector { lanes, perspective } => {
