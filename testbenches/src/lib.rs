@@ -16,6 +16,11 @@
 //! valid/ready pipelines drive `ready` like any input, cycle by cycle, and expect outputs
 //! only on the cycles the model says are valid.
 
+pub mod flow;
+pub mod frame;
+pub mod memory;
+pub mod stimulus;
+pub mod streams;
 mod verilated;
 
 pub use rtl::emit::Port;
@@ -224,4 +229,13 @@ pub fn count() -> usize {
 /// The committed `hdl-out/` of this checkout.
 pub fn hdl_out() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..").join("hdl-out")
+}
+
+/// The Verilog of unit `name` with its default parameters, ready for Verilator (the
+/// committed `hdl-out/<name>.v` when the default design holds it: see [`Verilated::of`]).
+pub fn verilated(name: &str) -> Verilated {
+    let unit = rtl::Unit::named(name).unwrap_or_else(|| panic!("no unit {name} in UNITS"));
+    let params = unit.params([]).expect("default parameters");
+    let e = unit.emit(&params).unwrap_or_else(|e| panic!("{e}"));
+    Verilated::of(&e).unwrap_or_else(|e| panic!("{e}"))
 }

@@ -15,7 +15,7 @@ const SETUP_HINT: &str =
 
 /// Warnings Verilator would otherwise treat as errors while building a model. WIDTH:
 /// rust-hdl writes every literal and index as 32 bits (`xl[32'h5]`), so widths never match.
-const IGNORED_WARNINGS: &[&str] = &["WIDTH"];
+pub(crate) const IGNORED_WARNINGS: &[&str] = &["WIDTH"];
 
 /// The Cargo target directory this test or example binary was built in (the nearest
 /// ancestor holding `CACHEDIR.TAG`), so artifacts follow `CARGO_TARGET_DIR`.

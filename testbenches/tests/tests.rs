@@ -1,6 +1,13 @@
 //! The one test binary of the testbenches crate (see its Cargo.toml): one module per unit,
 //! plus the harness's own tests.
 
+mod cull_sort;
+mod divider;
+mod edge_walk;
 mod ept;
 mod harness;
+mod pixel_out;
+mod raster_top;
 mod se;
+mod span;
+mod triangle_setup;

@@ -17,6 +17,9 @@ pub enum Engine {
     Vector,
     /// The scanline pipeline's spans drawn by an array of 000's shading engines (render only).
     Se,
+    /// The scanline pipeline's RTL (`raster_top`) simulated in Verilator: the scanline
+    /// model's image bit for bit, with the hardware's cycle counts.
+    Rtl,
 }
 
 /// Options for the fixed-point pipelines.
@@ -55,7 +58,7 @@ impl FixedArgs {
         anyhow::ensure!(self.lanes >= 1, "--lanes must be at least 1");
         Ok(match engine {
             Engine::Float => None,
-            Engine::Scanline => Some(Method::Scanline),
+            Engine::Scanline | Engine::Rtl => Some(Method::Scanline),
             Engine::Vector => Some(Method::Vector { lanes: self.lanes, perspective }),
             Engine::Se => anyhow::bail!("--engine se only renders (its spans are the scanline pipeline's)"),
         })

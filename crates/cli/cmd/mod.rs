@@ -6,4 +6,5 @@ pub mod engine;
 pub mod input;
 pub mod render;
 pub mod report;
+pub mod rtl;
 pub mod trilist;

@@ -84,6 +84,9 @@ pub fn run(args: Args) -> Result<()> {
     let start = Instant::now();
     let perspective = !args.linear;
     let (image, summary) = match args.fixed.method(args.engine, perspective)? {
+        _ if args.engine == Engine::Rtl => {
+            super::rtl::render(list, cull_back, loaded.background, &args.fixed, args.analysis)?
+        }
         None => {
             let (frame, stats) = reference::render(list, &opts, &mut progress);
             let image = Image {
@@ -172,7 +175,7 @@ fn se(args: &Args, list: &scene::Trilist, cull_back: bool, background: [f64; 3])
 
 /// A depth-buffer value with `frac` bits as a 16-bit PNG sample (its top 16
 /// bits, or scaled up when the buffer is narrower).
-fn depth16(d: u32, frac: u32) -> u16 {
+pub fn depth16(d: u32, frac: u32) -> u16 {
     if frac >= 16 {
         (d >> (frac - 16)) as u16
     } else {

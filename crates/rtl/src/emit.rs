@@ -230,6 +230,29 @@ pub fn pnr_wrapper(e: &Emitted) -> String {
     )
 }
 
+/// An ANSI-style wrapper of `e` (not part of the design): module `<unit>_ansi` with the
+/// unit's ports declared in its header, instantiating the unit. rust-hdl writes non-ANSI
+/// headers (`module u(a, b); input a; ...`), and marlin's static Verilator models read the
+/// ports of an ANSI header; the frame simulation of `raster_top` uses one.
+pub fn ansi_wrapper(e: &Emitted) -> String {
+    let decl = |p: &Port| {
+        let range = if p.width == 1 { String::new() } else { format!("[{}:0] ", p.width - 1) };
+        format!("    {} wire {range}{}", p.dir.verilog(), p.name)
+    };
+    let ports: Vec<String> = e.ports.iter().map(decl).collect();
+    let conns: Vec<String> = e.ports.iter().map(|p| format!("        .{0}({0})", p.name)).collect();
+    format!(
+        "// ANSI-style wrapper of `{unit}` for marlin's static Verilator model, written by\n\
+         // rtl::emit::ansi_wrapper; not part of the design.\n\
+         module {unit}_ansi(\n{ports}\n);\n\
+         \x20   {unit} dut(\n{conns}\n    );\n\
+         endmodule\n",
+        unit = e.unit,
+        ports = ports.join(",\n"),
+        conns = conns.join(",\n"),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -5,10 +5,20 @@
 //! tests are `testbenches/tests/<name>.rs`. [`DEFAULT_DESIGN`] is what `edgepaint` with no
 //! arguments writes into `hdl-out/`.
 
+pub mod cull_sort;
+pub mod divider;
+pub mod edge_walk;
 pub mod emit;
 pub mod ept;
+pub mod mul;
+pub mod parts;
+pub mod pixel_out;
+pub mod raster_top;
 pub mod se;
 pub mod sim;
+pub mod span;
+pub mod triangle_setup;
+pub mod widths;
 
 use emit::Emitted;
 use std::collections::BTreeMap;
@@ -44,6 +54,54 @@ pub const UNITS: &[Unit] = &[
         build: ept::emit_ept,
     },
     Unit {
+        name: "cull_sort",
+        doc: "cull & sort, paper 003 Fig. 4, Table 1: outcodes, reject, back-face cull, sort by y; 1 cycle",
+        params: &[],
+        build: cull_sort::emit_cull_sort,
+    },
+    Unit {
+        name: "divider",
+        doc: "the shared pipelined floor divider of paper 001 §II.2: one division per cycle, exact",
+        params: &[Param { name: "L", default: 5, doc: "pipeline stages (latency), 1 to 25; 001 has 5" }],
+        build: divider::emit_divider,
+    },
+    Unit {
+        name: "triangle_setup",
+        doc: "triangle setup, paper 001 §II.2, eq. 2, Table 3: K multipliers reused, the 7 divisions on the shared divider",
+        params: &[
+            Param { name: "K", default: 7, doc: "multipliers, 1 to 7 (latency 66 to 18 with L = 5); 001 has 7" },
+            Param { name: "L", default: 5, doc: "stages of the shared divider, 1 to 25; 001 has 5" },
+        ],
+        build: triangle_setup::emit_triangle_setup,
+    },
+    Unit {
+        name: "edge_walk",
+        doc: "edge walk, papers 001 §II.2 and 003 Fig. 5: one scanline per cycle, exact edges, Y clipping",
+        params: &[],
+        build: edge_walk::emit_edge_walk,
+    },
+    Unit {
+        name: "span",
+        doc: "span unit, papers 001 §II.2 and 003 Fig. 6: one pixel per cycle, X and Z clipping",
+        params: &[],
+        build: span::emit_span,
+    },
+    Unit {
+        name: "pixel_out",
+        doc: "depth test LESS and depth/colour writes through a synchronous memory port, one pixel per cycle",
+        params: &[],
+        build: pixel_out::emit_pixel_out,
+    },
+    Unit {
+        name: "raster_top",
+        doc: "the scanline rasterizer of papers 001 and 003: cull_sort, setup with the divider, edge walk, span, pixel out",
+        params: &[
+            Param { name: "K", default: 7, doc: "triangle_setup's multipliers, 1 to 7; 001 has 7" },
+            Param { name: "L", default: 5, doc: "stages of the shared divider, 1 to 25; 001 has 5" },
+        ],
+        build: raster_top::emit_raster_top,
+    },
+    Unit {
         name: "se",
         doc: "shading engine, paper 000 Figs. 6-10: serial multipliers, bit-serial interpolator, EPT mask, z compare, 4 ports",
         params: &[
@@ -58,8 +116,17 @@ pub const UNITS: &[Unit] = &[
 ];
 
 /// The default design: units and parameters that `edgepaint` with no arguments emits.
-pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] =
-    &[("ept", &[("P", 64)]), ("se", &[("P", 64), ("ZW", 24), ("CW", 16), ("F", 16), ("I", 0)])];
+pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
+    ("ept", &[("P", 64)]),
+    ("cull_sort", &[]),
+    ("divider", &[("L", 5)]),
+    ("triangle_setup", &[("K", 7), ("L", 5)]),
+    ("edge_walk", &[]),
+    ("span", &[]),
+    ("pixel_out", &[]),
+    ("raster_top", &[("K", 7), ("L", 5)]),
+    ("se", &[("P", 64), ("ZW", 24), ("CW", 16), ("F", 16), ("I", 0)]),
+];
 
 impl Unit {
     /// The unit called `name`.

@@ -58,6 +58,57 @@ pub trait Pins {
     }
 }
 
+/// A port's value type, moved to and from a [`Value`]: `Bit` and `Bits<N>`.
+pub trait PinValue: Sized {
+    fn from_value(v: &Value) -> Self;
+    fn to_value(&self) -> Value;
+}
+
+impl PinValue for bool {
+    fn from_value(v: &Value) -> Self {
+        assert_eq!(v.width(), 1, "a {}-bit value for a 1-bit port", v.width());
+        v.bit(0)
+    }
+    fn to_value(&self) -> Value {
+        Value::new(1, *self as u128)
+    }
+}
+
+impl<const N: usize> PinValue for Bits<N> {
+    fn from_value(v: &Value) -> Self {
+        v.to_bits()
+    }
+    fn to_value(&self) -> Value {
+        Value::from_bits(*self)
+    }
+}
+
+/// Implements [`Pins`] for a clocked unit from its port fields: every input but the clock,
+/// then every output, each named as in the Verilog. The dual-simulation harness drives
+/// and reads every port by name, so a port left out of the lists fails the unit's tests.
+#[macro_export]
+macro_rules! pins {
+    ($unit:ty { clock: $clock:ident, inputs: [$($i:ident),* $(,)?], outputs: [$($o:ident),* $(,)?] $(,)? }) => {
+        impl $crate::sim::Pins for $unit {
+            fn set(&mut self, pin: &str, value: &$crate::sim::Value) {
+                match pin {
+                    $(stringify!($i) => self.$i.next = $crate::sim::PinValue::from_value(value),)*
+                    _ => panic!("{} has no input pin {pin}", stringify!($unit)),
+                }
+            }
+            fn get(&self, pin: &str) -> $crate::sim::Value {
+                match pin {
+                    $(stringify!($o) => $crate::sim::PinValue::to_value(&self.$o.val()),)*
+                    _ => panic!("{} has no output pin {pin}", stringify!($unit)),
+                }
+            }
+            fn clock(&mut self) -> Option<&mut rust_hdl::prelude::Signal<rust_hdl::prelude::In, rust_hdl::prelude::Clock>> {
+                Some(&mut self.$clock)
+            }
+        }
+    };
+}
+
 /// A value on a port of any width: bit i is bit i % 64 of word i / 64; bits at and
 /// above `width` are zero.
 #[derive(Clone, PartialEq, Eq, Hash)]

@@ -1,0 +1,78 @@
+//! `render --engine rtl`: a whole frame through the RTL of the scanline pipeline
+//! (`raster_top`) under Verilator, with the depth and colour buffers in Rust
+//! (`testbenches::frame`). The Verilated model is built the first time under
+//! `target/verilator/` (Verilator from `scripts/setup-tools.sh`). The image is checked
+//! against the scanline model's, bit for bit.
+
+use super::engine::FixedArgs;
+use super::render::{depth16, Image};
+use anyhow::{anyhow, ensure, Result};
+use model::cull_sort::Cull;
+use rtl::widths::FORMATS;
+use scene::Trilist;
+use std::time::Instant;
+use testbenches::frame::{self, Frame, MemoryModel, Report};
+use testbenches::memory::ReadDuringWrite;
+
+/// Draws `list` through `raster_top`; returns the image and the summary line with its
+/// fragment count.
+pub fn render(
+    list: &Trilist,
+    cull_back: bool,
+    background: [f64; 3],
+    fixed: &FixedArgs,
+    analysis: bool,
+) -> Result<(Image, (String, u64))> {
+    ensure!(
+        fixed.formats == "default",
+        "--engine rtl: the RTL is built for the default formats (Formats::for_n({})); leave out --formats",
+        fx::RTL_CLASS
+    );
+    ensure!(!analysis, "--analysis checks the models' arithmetic; it does not apply to --engine rtl");
+    let cull = if cull_back { Cull::Back } else { Cull::None };
+    let background = background.map(|c| c.round().clamp(0.0, 255.0) as u8);
+    let prep = model::raster_top::frame(list, cull, background).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    for (i, e) in prep.skipped.iter().take(5) {
+        eprintln!("warning: triangle {i} not drawn: {e}");
+    }
+    ensure!(!prep.triangles.is_empty(), "--engine rtl: no triangle to draw");
+    let runtime = frame::verilator().map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let mut dut = frame::model(&runtime).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let f = Frame { width: list.width, height: list.height, cull, background, triangles: &prep.triangles };
+    let start = Instant::now();
+    let memory = MemoryModel { read_during_write: ReadDuringWrite::Old, ready: &mut |_| true };
+    let out = frame::draw(&mut dut, &f, memory, 2 * prep.cycles() + 100_000).map_err(|e| anyhow!(e))?;
+    let secs = start.elapsed().as_secs_f64();
+    let r = Report::of(&out, &prep);
+    ensure!(
+        out.memory.rgb == prep.render.fb.rgb && out.memory.depth == prep.render.fb.depth,
+        "the RTL's image differs from the scanline model's: a bug in the RTL or the model"
+    );
+    let latency = r.latency.map_or("none".into(), |(lo, mid, hi)| format!("{lo}/{mid}/{hi}"));
+    let summary = format!(
+        "rtl (raster_top in Verilator): {} triangles in, {} drawn, {} culled; {} fragments, {} pixels written; \
+         {} cycles (model::cycles: {}), {:.3} pixels per clock; per triangle: latency to its first pixel \
+         {latency} cycles (min/median/max), {:.1} cycles between triangles (max {}); {:.0} cycles/s simulated; \
+         image equal to the scanline model's",
+        list.triangles.len(),
+        r.drawn,
+        r.triangles - r.drawn,
+        r.fragments,
+        r.written,
+        r.cycles,
+        r.predicted,
+        r.pixels_per_clock(),
+        r.interval.0,
+        r.interval.1,
+        r.cycles as f64 / secs,
+    );
+    let m = out.memory;
+    let image = Image {
+        width: m.width,
+        height: m.height,
+        depth16: m.depth.iter().map(|&d| depth16(d, FORMATS.z.frac)).collect(),
+        rgb: m.rgb,
+        written: m.written,
+    };
+    Ok((image, (summary, r.fragments)))
+}

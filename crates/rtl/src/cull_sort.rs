@@ -1,0 +1,527 @@
+//! `cull_sort`: the cull & sort unit of paper 003 (Lee 2008, §II.1.다.(1), Fig. 4, Table 1:
+//! "clipping 1 cycle").
+//!
+//! One triangle per beat: the three vertices in submission order on `inp_*` (`inp_v<i>_x`
+//! ... `inp_v<i>_iw`), screen size on `width`, `height`, face culling on `cull_back`. In
+//! the one cycle it has, the unit computes
+//! * a Cohen-Sutherland outcode per vertex (bits as `model::cull_sort::outcode`: x < 0,
+//!   x > width, y < 0, y > height, z < 0, z > the largest depth value);
+//! * the reject verdict, in the model's order: all three outside one plane (the AND of the
+//!   outcodes), zero area, a back face (twice the signed area > 0, with `cull_back` high);
+//! * the vertex order by (y, input index): three comparisons give each vertex its rank.
+//!
+//! ```text
+//!   inp_v0..2 --+-- outcodes --- AND: outside? ----------------+
+//!               |            `-- OR: crosses -------------------+--> register --> out_v0..2 (sorted),
+//!               +-- 2 x Mul<17,17>: area2 -- zero? back face? --+                 out_crosses, out_valid
+//!               `-- y0<=y1, y1<=y2, y0<=y2 -> ranks -> mux -----+                 verdict_*
+//! ```
+//!
+//! A triangle taken in cycle t (`inp_valid & inp_ready`) is in the output register in
+//! cycle t + 1 (latency `model::cull_sort::LATENCY` = 1, II 1). A passing triangle stays
+//! there until `out_ready`; a rejected one leaves at once (it goes no further, so it never
+//! waits for setup). `verdict_valid` is high in the cycle a triangle leaves, with its
+//! verdict. No new vertices are made: a triangle that crosses the screen goes on whole
+//! with `out_crosses` (the OR of the outcodes) and is clipped by the edge walk and span.
+//!
+//! Model: `model::cull_sort::cull_sort`. Emitted: `hdl-out/cull_sort.v`.
+
+use crate::emit::{ports, verilog, Emitted};
+use crate::mul::Mul;
+use crate::widths::{DIM, FORMATS};
+use crate::Params;
+use rust_hdl::prelude::*;
+
+/// Vertex x, y (`xy`), z (`z`), R, G, B (`color`) and w_min / w (`inv_w`), as they enter
+/// the rasterizer: the widths of the triangle stream from `cull_sort` to `triangle_setup`.
+pub const XY: usize = FORMATS.xy.bits() as usize;
+pub const Z: usize = FORMATS.z.bits() as usize;
+pub const COLOR: usize = FORMATS.color.bits() as usize;
+pub const INV_W: usize = FORMATS.inv_w.bits() as usize;
+/// Outcode bits, one per clip plane.
+pub const OUTCODE: usize = 6;
+
+/// Each clip plane's bit in an outcode (`model::cull_sort::outcode` has their masks).
+pub mod outcode_bit {
+    /// x < 0
+    pub const LEFT: usize = 0;
+    /// x > width
+    pub const RIGHT: usize = 1;
+    /// y < 0 (the top row)
+    pub const TOP: usize = 2;
+    /// y > height
+    pub const BOTTOM: usize = 3;
+    /// z < 0
+    pub const NEAR: usize = 4;
+    /// z > the largest depth value
+    pub const FAR: usize = 5;
+}
+/// Edge vectors (differences of two vertices) and twice the area, exact.
+const DELTA: usize = XY + 1;
+const AREA: usize = 2 * DELTA;
+
+/// `verdict_code`: why a triangle went no further (`model::cull_sort::Reject`), or 0.
+pub mod verdict {
+    pub const PASSED: u64 = 0;
+    pub const OUTSIDE: u64 = 1;
+    pub const BACK_FACE: u64 = 2;
+    pub const ZERO_AREA: u64 = 3;
+}
+
+/// The cull & sort unit; see the module documentation.
+#[derive(LogicBlock)]
+pub struct CullSort {
+    pub clock: Signal<In, Clock>,
+    /// Screen size in pixels, 1 to 2^RTL_CLASS: the clip volume is [0, width] x [0, height].
+    pub width: Signal<In, Bits<DIM>>,
+    pub height: Signal<In, Bits<DIM>>,
+    /// Drop back faces (clockwise on screen, y down).
+    pub cull_back: Signal<In, Bit>,
+    pub inp_valid: Signal<In, Bit>,
+    /// The output register is free: empty, holding a rejected triangle, or being taken.
+    pub inp_ready: Signal<Out, Bit>,
+    /// Vertex i of the triangle in submission order: `xy`, `z`, `color`, `inv_w` raw values.
+    pub inp_v0_x: Signal<In, Bits<XY>>,
+    pub inp_v0_y: Signal<In, Bits<XY>>,
+    pub inp_v0_z: Signal<In, Bits<Z>>,
+    pub inp_v0_c0: Signal<In, Bits<COLOR>>,
+    pub inp_v0_c1: Signal<In, Bits<COLOR>>,
+    pub inp_v0_c2: Signal<In, Bits<COLOR>>,
+    pub inp_v0_iw: Signal<In, Bits<INV_W>>,
+    pub inp_v1_x: Signal<In, Bits<XY>>,
+    pub inp_v1_y: Signal<In, Bits<XY>>,
+    pub inp_v1_z: Signal<In, Bits<Z>>,
+    pub inp_v1_c0: Signal<In, Bits<COLOR>>,
+    pub inp_v1_c1: Signal<In, Bits<COLOR>>,
+    pub inp_v1_c2: Signal<In, Bits<COLOR>>,
+    pub inp_v1_iw: Signal<In, Bits<INV_W>>,
+    pub inp_v2_x: Signal<In, Bits<XY>>,
+    pub inp_v2_y: Signal<In, Bits<XY>>,
+    pub inp_v2_z: Signal<In, Bits<Z>>,
+    pub inp_v2_c0: Signal<In, Bits<COLOR>>,
+    pub inp_v2_c1: Signal<In, Bits<COLOR>>,
+    pub inp_v2_c2: Signal<In, Bits<COLOR>>,
+    pub inp_v2_iw: Signal<In, Bits<INV_W>>,
+    /// A passing triangle is in the output register.
+    pub out_valid: Signal<Out, Bit>,
+    pub out_ready: Signal<In, Bit>,
+    /// vMin, vMid, vMax (`model::cull_sort::Sorted::v`): sorted by y, ties in input order.
+    pub out_v0_x: Signal<Out, Bits<XY>>,
+    pub out_v0_y: Signal<Out, Bits<XY>>,
+    pub out_v0_z: Signal<Out, Bits<Z>>,
+    pub out_v0_c0: Signal<Out, Bits<COLOR>>,
+    pub out_v0_c1: Signal<Out, Bits<COLOR>>,
+    pub out_v0_c2: Signal<Out, Bits<COLOR>>,
+    pub out_v0_iw: Signal<Out, Bits<INV_W>>,
+    pub out_v1_x: Signal<Out, Bits<XY>>,
+    pub out_v1_y: Signal<Out, Bits<XY>>,
+    pub out_v1_z: Signal<Out, Bits<Z>>,
+    pub out_v1_c0: Signal<Out, Bits<COLOR>>,
+    pub out_v1_c1: Signal<Out, Bits<COLOR>>,
+    pub out_v1_c2: Signal<Out, Bits<COLOR>>,
+    pub out_v1_iw: Signal<Out, Bits<INV_W>>,
+    pub out_v2_x: Signal<Out, Bits<XY>>,
+    pub out_v2_y: Signal<Out, Bits<XY>>,
+    pub out_v2_z: Signal<Out, Bits<Z>>,
+    pub out_v2_c0: Signal<Out, Bits<COLOR>>,
+    pub out_v2_c1: Signal<Out, Bits<COLOR>>,
+    pub out_v2_c2: Signal<Out, Bits<COLOR>>,
+    pub out_v2_iw: Signal<Out, Bits<INV_W>>,
+    /// OR of the three outcodes: the planes the triangle crosses (`Sorted::crosses`).
+    pub out_crosses: Signal<Out, Bits<OUTCODE>>,
+    /// High in the cycle a triangle leaves the unit (taken, or rejected).
+    pub verdict_valid: Signal<Out, Bit>,
+    /// [`verdict`]: 0 passed, 1 outside, 2 back face, 3 zero area.
+    pub verdict_code: Signal<Out, Bits<2>>,
+    /// For `OUTSIDE`: the planes all three vertices lie outside (`Reject::Outside`); else 0.
+    pub verdict_outside: Signal<Out, Bits<OUTCODE>>,
+    /// The inputs as arrays, by vertex (colours: 3 * vertex + channel).
+    vx: [Signal<Local, Bits<XY>>; 3],
+    vy: [Signal<Local, Bits<XY>>; 3],
+    vz: [Signal<Local, Bits<Z>>; 3],
+    vc: [Signal<Local, Bits<COLOR>>; 9],
+    viw: [Signal<Local, Bits<INV_W>>; 3],
+    /// Outcode of each vertex, and its six planes as bits.
+    oc: [Signal<Local, Bits<OUTCODE>>; 3],
+    left: [Signal<Local, Bit>; 3],
+    right_of: [Signal<Local, Bit>; 3],
+    top: [Signal<Local, Bit>; 3],
+    below: [Signal<Local, Bit>; 3],
+    near: [Signal<Local, Bit>; 3],
+    far: [Signal<Local, Bit>; 3],
+    /// The right and bottom planes in subpixels (width and height * 2^s).
+    right: Signal<Local, Bits<XY>>,
+    bottom: Signal<Local, Bits<XY>>,
+    /// Edge vectors from v0 (`DELTA` bits) and twice the signed area (submission order).
+    e1x: Signal<Local, Bits<DELTA>>,
+    e1y: Signal<Local, Bits<DELTA>>,
+    e2x: Signal<Local, Bits<DELTA>>,
+    e2y: Signal<Local, Bits<DELTA>>,
+    area: Signal<Local, Bits<AREA>>,
+    area_mul: [Mul<DELTA, DELTA, AREA>; 2],
+    /// y_i with its sign bit flipped: the signed order as an unsigned one.
+    key: [Signal<Local, Bits<XY>>; 3],
+    /// y0 <= y1, y1 <= y2, y0 <= y2, and their negations.
+    le01: Signal<Local, Bit>,
+    le12: Signal<Local, Bit>,
+    le02: Signal<Local, Bit>,
+    gt01: Signal<Local, Bit>,
+    gt12: Signal<Local, Bit>,
+    gt02: Signal<Local, Bit>,
+    /// Each vertex's place in the sorted order (0: vMin).
+    rank: [Signal<Local, Bits<2>>; 3],
+    code: Signal<Local, Bits<2>>,
+    take: Signal<Local, Bit>,
+    leave: Signal<Local, Bit>,
+    /// The output register: the sorted vertices, crosses, the verdict, and whether it
+    /// holds a triangle.
+    sx: [DFF<Bits<XY>>; 3],
+    sy: [DFF<Bits<XY>>; 3],
+    sz: [DFF<Bits<Z>>; 3],
+    sc: [DFF<Bits<COLOR>>; 9],
+    siw: [DFF<Bits<INV_W>>; 3],
+    crosses: DFF<Bits<OUTCODE>>,
+    code_r: DFF<Bits<2>>,
+    outside_r: DFF<Bits<OUTCODE>>,
+    full: DFF<Bit>,
+    /// The largest depth value, `2^z.frac - 1` (`model::cull_sort::z_max`).
+    z_max: Constant<Bits<Z>>,
+    /// 2^(XY-1): flips a sign bit.
+    half: Constant<Bits<XY>>,
+    /// Bit indices and shifts (a kernel cannot name a Rust constant): the sign bits of
+    /// `xy`, `z` and the area, the sign bit of a `DELTA`-bit edge vector, `xy.frac`.
+    xy_msb: Constant<Bits<8>>,
+    z_msb: Constant<Bits<8>>,
+    area_msb: Constant<Bits<8>>,
+    delta_msb: Constant<Bits<8>>,
+    frac: Constant<Bits<8>>,
+    /// The [`verdict`] codes.
+    passed: Constant<Bits<2>>,
+    outside: Constant<Bits<2>>,
+    back_face: Constant<Bits<2>>,
+    zero_area: Constant<Bits<2>>,
+}
+
+impl Default for CullSort {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            width: Default::default(),
+            height: Default::default(),
+            cull_back: Default::default(),
+            inp_valid: Default::default(),
+            inp_ready: Default::default(),
+            inp_v0_x: Default::default(),
+            inp_v0_y: Default::default(),
+            inp_v0_z: Default::default(),
+            inp_v0_c0: Default::default(),
+            inp_v0_c1: Default::default(),
+            inp_v0_c2: Default::default(),
+            inp_v0_iw: Default::default(),
+            inp_v1_x: Default::default(),
+            inp_v1_y: Default::default(),
+            inp_v1_z: Default::default(),
+            inp_v1_c0: Default::default(),
+            inp_v1_c1: Default::default(),
+            inp_v1_c2: Default::default(),
+            inp_v1_iw: Default::default(),
+            inp_v2_x: Default::default(),
+            inp_v2_y: Default::default(),
+            inp_v2_z: Default::default(),
+            inp_v2_c0: Default::default(),
+            inp_v2_c1: Default::default(),
+            inp_v2_c2: Default::default(),
+            inp_v2_iw: Default::default(),
+            out_valid: Default::default(),
+            out_ready: Default::default(),
+            out_v0_x: Default::default(),
+            out_v0_y: Default::default(),
+            out_v0_z: Default::default(),
+            out_v0_c0: Default::default(),
+            out_v0_c1: Default::default(),
+            out_v0_c2: Default::default(),
+            out_v0_iw: Default::default(),
+            out_v1_x: Default::default(),
+            out_v1_y: Default::default(),
+            out_v1_z: Default::default(),
+            out_v1_c0: Default::default(),
+            out_v1_c1: Default::default(),
+            out_v1_c2: Default::default(),
+            out_v1_iw: Default::default(),
+            out_v2_x: Default::default(),
+            out_v2_y: Default::default(),
+            out_v2_z: Default::default(),
+            out_v2_c0: Default::default(),
+            out_v2_c1: Default::default(),
+            out_v2_c2: Default::default(),
+            out_v2_iw: Default::default(),
+            out_crosses: Default::default(),
+            verdict_valid: Default::default(),
+            verdict_code: Default::default(),
+            verdict_outside: Default::default(),
+            vx: Default::default(),
+            vy: Default::default(),
+            vz: Default::default(),
+            vc: Default::default(),
+            viw: Default::default(),
+            oc: Default::default(),
+            left: Default::default(),
+            right_of: Default::default(),
+            top: Default::default(),
+            below: Default::default(),
+            near: Default::default(),
+            far: Default::default(),
+            right: Default::default(),
+            bottom: Default::default(),
+            e1x: Default::default(),
+            e1y: Default::default(),
+            e2x: Default::default(),
+            e2y: Default::default(),
+            area: Default::default(),
+            area_mul: Default::default(),
+            key: Default::default(),
+            le01: Default::default(),
+            le12: Default::default(),
+            le02: Default::default(),
+            gt01: Default::default(),
+            gt12: Default::default(),
+            gt02: Default::default(),
+            rank: Default::default(),
+            code: Default::default(),
+            take: Default::default(),
+            leave: Default::default(),
+            sx: Default::default(),
+            sy: Default::default(),
+            sz: Default::default(),
+            sc: Default::default(),
+            siw: Default::default(),
+            crosses: Default::default(),
+            code_r: Default::default(),
+            outside_r: Default::default(),
+            full: Default::default(),
+            z_max: Constant::new(((1u64 << FORMATS.z.frac) - 1).to_bits()),
+            half: Constant::new((1u64 << (XY - 1)).to_bits()),
+            xy_msb: Constant::new((XY - 1).to_bits()),
+            z_msb: Constant::new((Z - 1).to_bits()),
+            area_msb: Constant::new((AREA - 1).to_bits()),
+            delta_msb: Constant::new((DELTA - 1).to_bits()),
+            frac: Constant::new((FORMATS.xy.frac as usize).to_bits()),
+            passed: Constant::new(verdict::PASSED.to_bits()),
+            outside: Constant::new(verdict::OUTSIDE.to_bits()),
+            back_face: Constant::new(verdict::BACK_FACE.to_bits()),
+            zero_area: Constant::new(verdict::ZERO_AREA.to_bits()),
+        }
+    }
+}
+
+impl Logic for CullSort {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, crosses, code_r, outside_r, full);
+        for i in 0..3 {
+            self.sx[i].clock.next = self.clock.val();
+            self.sx[i].d.next = self.sx[i].q.val();
+            self.sy[i].clock.next = self.clock.val();
+            self.sy[i].d.next = self.sy[i].q.val();
+            self.sz[i].clock.next = self.clock.val();
+            self.sz[i].d.next = self.sz[i].q.val();
+            self.siw[i].clock.next = self.clock.val();
+            self.siw[i].d.next = self.siw[i].q.val();
+        }
+        for i in 0..9 {
+            self.sc[i].clock.next = self.clock.val();
+            self.sc[i].d.next = self.sc[i].q.val();
+        }
+        self.vx[0].next = self.inp_v0_x.val();
+        self.vy[0].next = self.inp_v0_y.val();
+        self.vz[0].next = self.inp_v0_z.val();
+        self.vc[0].next = self.inp_v0_c0.val();
+        self.vc[1].next = self.inp_v0_c1.val();
+        self.vc[2].next = self.inp_v0_c2.val();
+        self.viw[0].next = self.inp_v0_iw.val();
+        self.vx[1].next = self.inp_v1_x.val();
+        self.vy[1].next = self.inp_v1_y.val();
+        self.vz[1].next = self.inp_v1_z.val();
+        self.vc[3].next = self.inp_v1_c0.val();
+        self.vc[4].next = self.inp_v1_c1.val();
+        self.vc[5].next = self.inp_v1_c2.val();
+        self.viw[1].next = self.inp_v1_iw.val();
+        self.vx[2].next = self.inp_v2_x.val();
+        self.vy[2].next = self.inp_v2_y.val();
+        self.vz[2].next = self.inp_v2_z.val();
+        self.vc[6].next = self.inp_v2_c0.val();
+        self.vc[7].next = self.inp_v2_c1.val();
+        self.vc[8].next = self.inp_v2_c2.val();
+        self.viw[2].next = self.inp_v2_iw.val();
+
+        // Outcodes. x > width * 2^s only for x >= 0, where the unsigned order is the
+        // signed one; likewise y and z.
+        self.right.next = bit_cast::<XY, DIM>(self.width.val()) << self.frac.val();
+        self.bottom.next = bit_cast::<XY, DIM>(self.height.val()) << self.frac.val();
+        for i in 0..3 {
+            self.left[i].next = self.vx[i].val().get_bit(self.xy_msb.val().index());
+            self.right_of[i].next = !self.left[i].val() & (self.vx[i].val() > self.right.val());
+            self.top[i].next = self.vy[i].val().get_bit(self.xy_msb.val().index());
+            self.below[i].next = !self.top[i].val() & (self.vy[i].val() > self.bottom.val());
+            self.near[i].next = self.vz[i].val().get_bit(self.z_msb.val().index());
+            self.far[i].next = !self.near[i].val() & (self.vz[i].val() > self.z_max.val());
+            // Bits as `outcode_bit`.
+            self.oc[i].next = bits::<OUTCODE>(0)
+                .replace_bit(0, self.left[i].val())
+                .replace_bit(1, self.right_of[i].val())
+                .replace_bit(2, self.top[i].val())
+                .replace_bit(3, self.below[i].val())
+                .replace_bit(4, self.near[i].val())
+                .replace_bit(5, self.far[i].val());
+        }
+
+        // Twice the signed area in submission order (`model::cull_sort::area2`), from edge
+        // vectors one bit wider than the coordinates (their sign bit copied up).
+        self.e1x.next = bit_cast::<DELTA, XY>(self.inp_v1_x.val())
+            .replace_bit(self.delta_msb.val().index(), self.inp_v1_x.val().get_bit(self.xy_msb.val().index()))
+            - bit_cast::<DELTA, XY>(self.inp_v0_x.val())
+                .replace_bit(self.delta_msb.val().index(), self.inp_v0_x.val().get_bit(self.xy_msb.val().index()));
+        self.e1y.next = bit_cast::<DELTA, XY>(self.inp_v1_y.val())
+            .replace_bit(self.delta_msb.val().index(), self.inp_v1_y.val().get_bit(self.xy_msb.val().index()))
+            - bit_cast::<DELTA, XY>(self.inp_v0_y.val())
+                .replace_bit(self.delta_msb.val().index(), self.inp_v0_y.val().get_bit(self.xy_msb.val().index()));
+        self.e2x.next = bit_cast::<DELTA, XY>(self.inp_v2_x.val())
+            .replace_bit(self.delta_msb.val().index(), self.inp_v2_x.val().get_bit(self.xy_msb.val().index()))
+            - bit_cast::<DELTA, XY>(self.inp_v0_x.val())
+                .replace_bit(self.delta_msb.val().index(), self.inp_v0_x.val().get_bit(self.xy_msb.val().index()));
+        self.e2y.next = bit_cast::<DELTA, XY>(self.inp_v2_y.val())
+            .replace_bit(self.delta_msb.val().index(), self.inp_v2_y.val().get_bit(self.xy_msb.val().index()))
+            - bit_cast::<DELTA, XY>(self.inp_v0_y.val())
+                .replace_bit(self.delta_msb.val().index(), self.inp_v0_y.val().get_bit(self.xy_msb.val().index()));
+        self.area_mul[0].a.next = self.e1x.val();
+        self.area_mul[0].b.next = self.e2y.val();
+        self.area_mul[1].a.next = self.e2x.val();
+        self.area_mul[1].b.next = self.e1y.val();
+        self.area.next = self.area_mul[0].p.val() - self.area_mul[1].p.val();
+
+        // The verdict, in the model's order: outside one plane, zero area, back face.
+        self.code.next = self.passed.val();
+        if self.cull_back.val() & !self.area.val().get_bit(self.area_msb.val().index()) {
+            self.code.next = self.back_face.val();
+        }
+        if self.area.val() == 0 {
+            self.code.next = self.zero_area.val();
+        }
+        if (self.oc[0].val() & self.oc[1].val() & self.oc[2].val()).any() {
+            self.code.next = self.outside.val();
+        }
+
+        // Sort by (y, input index): vertex i goes before j (i < j) iff y_i <= y_j; a
+        // vertex's rank is the number of vertices before it.
+        for i in 0..3 {
+            self.key[i].next = self.vy[i].val() ^ self.half.val();
+        }
+        self.le01.next = self.key[0].val() <= self.key[1].val();
+        self.le12.next = self.key[1].val() <= self.key[2].val();
+        self.le02.next = self.key[0].val() <= self.key[2].val();
+        self.gt01.next = !self.le01.val();
+        self.gt12.next = !self.le12.val();
+        self.gt02.next = !self.le02.val();
+        self.rank[0].next = bits::<2>(0) + self.gt01.val() + self.gt02.val();
+        self.rank[1].next = bits::<2>(0) + self.le01.val() + self.gt12.val();
+        self.rank[2].next = bits::<2>(0) + self.le02.val() + self.le12.val();
+
+        // The output register.
+        self.leave.next = self.full.q.val() & ((self.code_r.q.val() != self.passed.val()) | self.out_ready.val());
+        self.inp_ready.next = !self.full.q.val() | self.leave.val();
+        self.take.next = self.inp_valid.val() & self.inp_ready.val();
+        if self.leave.val() {
+            self.full.d.next = false;
+        }
+        if self.take.val() {
+            self.full.d.next = true;
+            self.code_r.d.next = self.code.val();
+            self.crosses.d.next = self.oc[0].val() | self.oc[1].val() | self.oc[2].val();
+            self.outside_r.d.next = self.oc[0].val() & self.oc[1].val() & self.oc[2].val();
+            for s in 0..3 {
+                for i in 0..3 {
+                    if self.rank[i].val().index() == s {
+                        self.sx[s].d.next = self.vx[i].val();
+                        self.sy[s].d.next = self.vy[i].val();
+                        self.sz[s].d.next = self.vz[i].val();
+                        self.siw[s].d.next = self.viw[i].val();
+                        self.sc[3 * s].d.next = self.vc[3 * i].val();
+                        self.sc[3 * s + 1].d.next = self.vc[3 * i + 1].val();
+                        self.sc[3 * s + 2].d.next = self.vc[3 * i + 2].val();
+                    }
+                }
+            }
+        }
+        self.out_valid.next = self.full.q.val() & (self.code_r.q.val() == self.passed.val());
+        self.verdict_valid.next = self.leave.val();
+        self.verdict_code.next = self.code_r.q.val();
+        self.verdict_outside.next = self.outside_r.q.val();
+        self.out_crosses.next = self.crosses.q.val();
+        self.out_v0_x.next = self.sx[0].q.val();
+        self.out_v0_y.next = self.sy[0].q.val();
+        self.out_v0_z.next = self.sz[0].q.val();
+        self.out_v0_c0.next = self.sc[0].q.val();
+        self.out_v0_c1.next = self.sc[1].q.val();
+        self.out_v0_c2.next = self.sc[2].q.val();
+        self.out_v0_iw.next = self.siw[0].q.val();
+        self.out_v1_x.next = self.sx[1].q.val();
+        self.out_v1_y.next = self.sy[1].q.val();
+        self.out_v1_z.next = self.sz[1].q.val();
+        self.out_v1_c0.next = self.sc[3].q.val();
+        self.out_v1_c1.next = self.sc[4].q.val();
+        self.out_v1_c2.next = self.sc[5].q.val();
+        self.out_v1_iw.next = self.siw[1].q.val();
+        self.out_v2_x.next = self.sx[2].q.val();
+        self.out_v2_y.next = self.sy[2].q.val();
+        self.out_v2_z.next = self.sz[2].q.val();
+        self.out_v2_c0.next = self.sc[6].q.val();
+        self.out_v2_c1.next = self.sc[7].q.val();
+        self.out_v2_c2.next = self.sc[8].q.val();
+        self.out_v2_iw.next = self.siw[2].q.val();
+    }
+}
+
+crate::pins!(CullSort {
+    clock: clock,
+    inputs: [
+        width, height, cull_back, inp_valid, out_ready, inp_v0_x, inp_v0_y, inp_v0_z, inp_v0_c0, inp_v0_c1, inp_v0_c2,
+        inp_v0_iw, inp_v1_x, inp_v1_y, inp_v1_z, inp_v1_c0, inp_v1_c1, inp_v1_c2, inp_v1_iw, inp_v2_x, inp_v2_y,
+        inp_v2_z, inp_v2_c0, inp_v2_c1, inp_v2_c2, inp_v2_iw,
+    ],
+    outputs: [
+        inp_ready,
+        out_valid,
+        out_crosses,
+        verdict_valid,
+        verdict_code,
+        verdict_outside,
+        out_v0_x,
+        out_v0_y,
+        out_v0_z,
+        out_v0_c0,
+        out_v0_c1,
+        out_v0_c2,
+        out_v0_iw,
+        out_v1_x,
+        out_v1_y,
+        out_v1_z,
+        out_v1_c0,
+        out_v1_c1,
+        out_v1_c2,
+        out_v1_iw,
+        out_v2_x,
+        out_v2_y,
+        out_v2_z,
+        out_v2_c0,
+        out_v2_c1,
+        out_v2_c2,
+        out_v2_iw,
+    ],
+});
+
+/// `UNITS` entry: the cull & sort unit (no parameters; the screen size is an input).
+pub fn emit_cull_sort(params: &Params) -> Result<Emitted, String> {
+    let mut u = CullSort::default();
+    u.connect_all();
+    Ok(Emitted { unit: "cull_sort", params: params.clone(), ports: ports(&u), verilog: verilog("cull_sort", &u) })
+}

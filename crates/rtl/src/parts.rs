@@ -1,0 +1,198 @@
+//! Small combinational blocks the units share: sign tests, a rounding shift and bit
+//! concatenation.
+//!
+//! The units keep signed quantities in plain `Bits<N>` (adds and subtracts wrap the same
+//! either way, and rust-hdl simulates `Bits` fast), so the few places that need a sign use
+//! [`Negative`] and [`SignedLess`]. Width-derived numbers (a sign bit's weight, a shift)
+//! are `Constant`s here, because an `#[hdl_gen]` kernel cannot name a Rust constant.
+
+use rust_hdl::prelude::*;
+
+/// `neg` = `x < 0`, for an `N`-bit two's complement `x`.
+#[derive(LogicBlock)]
+pub struct Negative<const N: usize> {
+    pub x: Signal<In, Bits<N>>,
+    pub neg: Signal<Out, Bit>,
+    /// 2^(N-1), the sign bit's weight.
+    half: Constant<Bits<N>>,
+}
+
+impl<const N: usize> Default for Negative<N> {
+    fn default() -> Self {
+        Negative { x: Default::default(), neg: Default::default(), half: Constant::new(bits(1 << (N - 1))) }
+    }
+}
+
+impl<const N: usize> Logic for Negative<N> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.neg.next = self.x.val() >= self.half.val();
+    }
+}
+
+/// `lt` = `a < b`, for `N`-bit two's complement `a` and `b` (flipping both sign bits
+/// turns the signed order into the unsigned one).
+#[derive(LogicBlock)]
+pub struct SignedLess<const N: usize> {
+    pub a: Signal<In, Bits<N>>,
+    pub b: Signal<In, Bits<N>>,
+    pub lt: Signal<Out, Bit>,
+    /// 2^(N-1), the sign bit's weight.
+    half: Constant<Bits<N>>,
+}
+
+impl<const N: usize> Default for SignedLess<N> {
+    fn default() -> Self {
+        SignedLess {
+            a: Default::default(),
+            b: Default::default(),
+            lt: Default::default(),
+            half: Constant::new(bits(1 << (N - 1))),
+        }
+    }
+}
+
+impl<const N: usize> Logic for SignedLess<N> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.lt.next = (self.a.val() ^ self.half.val()) < (self.b.val() ^ self.half.val());
+    }
+}
+
+/// `x` rounded half up from `S` fraction bits to none, for an `IN`-bit two's complement
+/// `x`: `r = floor((x + 2^(S-1)) / 2^S)`, computed in `EXT = IN + 1` bits so that nothing
+/// wraps (`fx::shr_half_up`). Outputs `neg` (r < 0), `over` (r >= 2^OUT) and the low `OUT`
+/// bits of r, which are r itself when neither is set.
+#[derive(LogicBlock)]
+pub struct RoundShift<const IN: usize, const EXT: usize, const OUT: usize, const S: usize> {
+    pub x: Signal<In, Bits<IN>>,
+    pub neg: Signal<Out, Bit>,
+    pub over: Signal<Out, Bit>,
+    pub low: Signal<Out, Bits<OUT>>,
+    x_neg: Negative<IN>,
+    /// 2^IN: the sign extension bit, and the sign bit's weight in `EXT` bits.
+    top: Constant<Bits<EXT>>,
+    /// 2^(S-1): half of the result's LSB.
+    half: Constant<Bits<EXT>>,
+    shift: Constant<Bits<8>>,
+    /// 2^OUT.
+    limit: Constant<Bits<EXT>>,
+    ext: Signal<Local, Bits<EXT>>,
+    sum: Signal<Local, Bits<EXT>>,
+    shifted: Signal<Local, Bits<EXT>>,
+}
+
+impl<const IN: usize, const EXT: usize, const OUT: usize, const S: usize> Default for RoundShift<IN, EXT, OUT, S> {
+    fn default() -> Self {
+        assert!(EXT == IN + 1 && S >= 1 && S + OUT < EXT && S < 256, "RoundShift<{IN}, {EXT}, {OUT}, {S}>");
+        RoundShift {
+            x: Default::default(),
+            neg: Default::default(),
+            over: Default::default(),
+            low: Default::default(),
+            x_neg: Default::default(),
+            top: Constant::new(bits(1 << IN)),
+            half: Constant::new(bits(1 << (S - 1))),
+            shift: Constant::new(bits(S as u64)),
+            limit: Constant::new(bits(1 << OUT)),
+            ext: Default::default(),
+            sum: Default::default(),
+            shifted: Default::default(),
+        }
+    }
+}
+
+impl<const IN: usize, const EXT: usize, const OUT: usize, const S: usize> Logic for RoundShift<IN, EXT, OUT, S> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.x_neg.x.next = self.x.val();
+        self.ext.next = bit_cast::<EXT, IN>(self.x.val());
+        if self.x_neg.neg.val() {
+            self.ext.next = bit_cast::<EXT, IN>(self.x.val()) | self.top.val();
+        }
+        self.sum.next = self.ext.val() + self.half.val();
+        self.neg.next = self.sum.val() >= self.top.val();
+        self.shifted.next = self.sum.val() >> self.shift.val();
+        self.over.next = !self.neg.val() & (self.shifted.val() >= self.limit.val());
+        self.low.next = bit_cast::<OUT, EXT>(self.shifted.val());
+    }
+}
+
+/// `out` = `{hi, lo}`: `hi` above the `LO` bits of `lo`, `W = HI + LO` bits.
+#[derive(LogicBlock)]
+pub struct Concat<const HI: usize, const LO: usize, const W: usize> {
+    pub hi: Signal<In, Bits<HI>>,
+    pub lo: Signal<In, Bits<LO>>,
+    pub out: Signal<Out, Bits<W>>,
+    shift: Constant<Bits<8>>,
+}
+
+impl<const HI: usize, const LO: usize, const W: usize> Default for Concat<HI, LO, W> {
+    fn default() -> Self {
+        assert!(W == HI + LO && LO < 256, "Concat<{HI}, {LO}, {W}>");
+        Concat {
+            hi: Default::default(),
+            lo: Default::default(),
+            out: Default::default(),
+            shift: Constant::new(bits(LO as u64)),
+        }
+    }
+}
+
+impl<const HI: usize, const LO: usize, const W: usize> Logic for Concat<HI, LO, W> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.out.next = (bit_cast::<W, HI>(self.hi.val()) << self.shift.val()) | bit_cast::<W, LO>(self.lo.val());
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sim::settle;
+
+    #[test]
+    fn parts_signed_exhaustive_n5() {
+        let (mut neg, mut less) = (Negative::<5>::default(), SignedLess::<5>::default());
+        neg.connect_all();
+        less.connect_all();
+        let raw = |v: i64| bits::<5>((v & 31) as u64);
+        for a in -16i64..16 {
+            neg.x.next = raw(a);
+            settle(&mut neg);
+            assert_eq!(neg.neg.val(), a < 0, "a={a}");
+            for b in -16i64..16 {
+                less.a.next = raw(a);
+                less.b.next = raw(b);
+                settle(&mut less);
+                assert_eq!(less.lt.val(), a < b, "a={a} b={b}");
+            }
+        }
+    }
+
+    #[test]
+    fn parts_round_shift_is_shr_half_up_exhaustive_in6() {
+        // 6-bit x, 2 fraction bits, 2-bit result: every value, with both range flags.
+        let mut u = RoundShift::<6, 7, 2, 2>::default();
+        u.connect_all();
+        for x in -32i128..32 {
+            u.x.next = bits::<6>((x & 63) as u64);
+            settle(&mut u);
+            let r = fx::shr_half_up(x, 2);
+            assert_eq!((u.neg.val(), u.over.val()), (r < 0, r >= 4), "x={x}");
+            if (0..4).contains(&r) {
+                assert_eq!(u.low.val(), bits::<2>(r as u64), "x={x}");
+            }
+        }
+    }
+
+    #[test]
+    fn parts_concat_puts_hi_above_lo() {
+        let mut u = Concat::<3, 5, 8>::default();
+        u.connect_all();
+        u.hi.next = bits(0b101);
+        u.lo.next = bits(0b0_0110);
+        settle(&mut u);
+        assert_eq!(u.out.val(), bits::<8>(0b1010_0110));
+    }
+}

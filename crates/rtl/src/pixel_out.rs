@@ -1,0 +1,152 @@
+//! `pixel_out`: the depth test (LESS) and the writes to the depth and colour buffers,
+//! behind `span`, through one synchronous memory port, one pixel per cycle.
+//!
+//! **The memory port** (so the design can sit on FPGA block RAM or external memory): a
+//! word per pixel at address `{y, x}` (a row pitch of 2^SCREEN words), holding a depth
+//! (`DEPTH` bits) and a colour (`RGB` bits). In each cycle with `mem_ready` high the
+//! memory performs, at the rising edge, the read asked for (`rd_en`, `rd_addr`), returning
+//! the depth on `rd_z` from the next cycle until its next read, and the write asked for
+//! (`wr_en`, `wr_addr`, `wr_z`, `wr_rgb`). With `mem_ready` low it does neither and the
+//! unit holds every register: `mem_ready` is the memory's stall. Whether a read and a write
+//! of one address at one edge return the old or the new word does not matter (see below).
+//!
+//! **Pipeline** (`model::pixel_out::{LATENCY, II}` = 2, 1):
+//!
+//! ```text
+//!   cycle t       t + 1                              t + 2
+//!   pixel in  ->  s1: old depth = rd_z, or the     ->  s2: write depth and colour
+//!   read depth    newer one s2 is writing now, or      (when the test passed)
+//!                 the one s3 wrote in cycle t;
+//!                 test z < old
+//! ```
+//!
+//! Read-after-write hazards: the depth read for a pixel happens before the writes of the
+//! two pixels ahead of it (the one in s2 as it is read, the one in s1 next cycle), so a
+//! pixel whose address matches one of them takes that pixel's depth instead of `rd_z`
+//! (the newer first). Model: `model::pixel_out::Framebuffer::pixel_out`. Emitted:
+//! `hdl-out/pixel_out.v`.
+
+use crate::emit::{emit, Emitted};
+use crate::parts::Concat;
+use crate::widths::{ADDR, CHANNEL, DEPTH, RGB, SCREEN};
+use crate::Params;
+use rust_hdl::prelude::*;
+
+/// The pixel output unit: see the module documentation.
+#[derive(LogicBlock, Default)]
+pub struct PixelOut {
+    pub clock: Signal<In, Clock>,
+    pub inp_valid: Signal<In, Bit>,
+    /// `mem_ready`: a pixel is taken whenever the memory is.
+    pub inp_ready: Signal<Out, Bit>,
+    pub inp_x: Signal<In, Bits<SCREEN>>,
+    pub inp_y: Signal<In, Bits<SCREEN>>,
+    /// Depth, `DEPTH` bits.
+    pub inp_z: Signal<In, Bits<DEPTH>>,
+    /// R, G, B.
+    pub inp_rgb0: Signal<In, Bits<CHANNEL>>,
+    pub inp_rgb1: Signal<In, Bits<CHANNEL>>,
+    pub inp_rgb2: Signal<In, Bits<CHANNEL>>,
+    /// The memory performs this cycle's read and write (see the module documentation).
+    pub mem_ready: Signal<In, Bit>,
+    /// Read the depth at `rd_addr`.
+    pub rd_en: Signal<Out, Bit>,
+    pub rd_addr: Signal<Out, Bits<ADDR>>,
+    /// The depth last read.
+    pub rd_z: Signal<In, Bits<DEPTH>>,
+    /// Write `wr_z` and `wr_rgb` at `wr_addr`.
+    pub wr_en: Signal<Out, Bit>,
+    pub wr_addr: Signal<Out, Bits<ADDR>>,
+    pub wr_z: Signal<Out, Bits<DEPTH>>,
+    /// `{R, G, B}`, R in the top byte.
+    pub wr_rgb: Signal<Out, Bits<RGB>>,
+    /// No pixel in the pipeline (for `raster_top`'s frame-done): empty 3 cycles after the
+    /// last pixel came in, whether it was written or not.
+    pub idle: Signal<Out, Bit>,
+    /// s1: the pixel whose depth is being read (`rd_z` holds it this cycle).
+    s1_valid: DFF<Bit>,
+    s1_addr: DFF<Bits<ADDR>>,
+    s1_z: DFF<Bits<DEPTH>>,
+    s1_rgb: DFF<Bits<RGB>>,
+    /// s2: the pixel after its test; written when it passed (`s2_write`).
+    s2_valid: DFF<Bit>,
+    s2_write: DFF<Bit>,
+    s2_addr: DFF<Bits<ADDR>>,
+    s2_z: DFF<Bits<DEPTH>>,
+    s2_rgb: DFF<Bits<RGB>>,
+    /// s3: the write done in the last cycle the memory was ready.
+    s3_valid: DFF<Bit>,
+    s3_addr: DFF<Bits<ADDR>>,
+    s3_z: DFF<Bits<DEPTH>>,
+    /// `{y, x}` and `{R, G, B}` of the pixel coming in.
+    addr: Concat<SCREEN, SCREEN, ADDR>,
+    rg: Concat<CHANNEL, CHANNEL, { 2 * CHANNEL }>,
+    rgb: Concat<{ 2 * CHANNEL }, CHANNEL, RGB>,
+    /// The depth s1's pixel is tested against, and the test.
+    old_z: Signal<Local, Bits<DEPTH>>,
+    pass: Signal<Local, Bit>,
+}
+
+impl Logic for PixelOut {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, s1_valid, s1_addr, s1_z, s1_rgb, s2_valid, s2_write, s2_addr, s2_z, s2_rgb, s3_valid, s3_addr,
+            s3_z
+        );
+        self.addr.hi.next = self.inp_y.val();
+        self.addr.lo.next = self.inp_x.val();
+        self.rg.hi.next = self.inp_rgb0.val();
+        self.rg.lo.next = self.inp_rgb1.val();
+        self.rgb.hi.next = self.rg.out.val();
+        self.rgb.lo.next = self.inp_rgb2.val();
+
+        // Cycle t: the pixel comes in and its depth is read.
+        self.inp_ready.next = self.mem_ready.val();
+        self.rd_en.next = self.inp_valid.val();
+        self.rd_addr.next = self.addr.out.val();
+
+        // Cycle t + 1: depth test against the newest depth of the address.
+        self.old_z.next = self.rd_z.val();
+        if self.s3_valid.q.val() & (self.s3_addr.q.val() == self.s1_addr.q.val()) {
+            self.old_z.next = self.s3_z.q.val();
+        }
+        if self.s2_write.q.val() & (self.s2_addr.q.val() == self.s1_addr.q.val()) {
+            self.old_z.next = self.s2_z.q.val();
+        }
+        self.pass.next = self.s1_valid.q.val() & (self.s1_z.q.val() < self.old_z.val());
+
+        // Cycle t + 2: the write.
+        self.wr_en.next = self.s2_write.q.val();
+        self.wr_addr.next = self.s2_addr.q.val();
+        self.wr_z.next = self.s2_z.q.val();
+        self.wr_rgb.next = self.s2_rgb.q.val();
+        self.idle.next = !self.s1_valid.q.val() & !self.s2_valid.q.val();
+
+        if self.mem_ready.val() {
+            self.s1_valid.d.next = self.inp_valid.val();
+            self.s1_addr.d.next = self.addr.out.val();
+            self.s1_z.d.next = self.inp_z.val();
+            self.s1_rgb.d.next = self.rgb.out.val();
+            self.s2_valid.d.next = self.s1_valid.q.val();
+            self.s2_write.d.next = self.pass.val();
+            self.s2_addr.d.next = self.s1_addr.q.val();
+            self.s2_z.d.next = self.s1_z.q.val();
+            self.s2_rgb.d.next = self.s1_rgb.q.val();
+            self.s3_valid.d.next = self.s2_write.q.val();
+            self.s3_addr.d.next = self.s2_addr.q.val();
+            self.s3_z.d.next = self.s2_z.q.val();
+        }
+    }
+}
+
+crate::pins!(PixelOut {
+    clock: clock,
+    inputs: [inp_valid, inp_x, inp_y, inp_z, inp_rgb0, inp_rgb1, inp_rgb2, mem_ready, rd_z],
+    outputs: [inp_ready, rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb, idle],
+});
+
+/// `UNITS` entry: the pixel output unit (no parameters: widths from `crate::widths`).
+pub fn emit_pixel_out(params: &Params) -> Result<Emitted, String> {
+    Ok(emit::<PixelOut>("pixel_out", params.clone()))
+}

@@ -1,0 +1,268 @@
+//! `span`: span processing of paper 001 (Woo 2004, §II.2) with the X and Z clipping of
+//! paper 003 (Lee 2008, §II.1.다.(3), Fig. 6), one pixel per cycle.
+//!
+//! It takes span commands (`model::edge_walk::SpanCmd`, flattened into `inp_*`) and sends
+//! pixels (`model::span::Pixel`, flattened into `out_*`), both on valid/ready streams:
+//!
+//! * X clipping (003): a span wholly left or right of the screen is dropped; one that
+//!   starts left of the screen is walked right to left from its last pixel and stops at
+//!   column 0; any other left to right from its first pixel, stopping at the last column
+//!   or its end. Pixels right of the screen met walking left take their cycle unsent.
+//! * Z clipping (003): a span whose two ends lie beyond the same z boundary is dropped;
+//!   otherwise each pixel's depth is checked against [0, z_max] and a pixel outside takes
+//!   its cycle unsent.
+//! * Each pixel: depth `z_acc` rounded half up to the depth buffer's bits, colour `c_acc`
+//!   rounded half up to an integer and clamped to [0, 255] (`model::span::{depth_of,
+//!   color_of}`).
+//!
+//! ```text
+//!   xl >= 0:       xl -> -> -> min(xr, W-1)        (stops at the last column)
+//!   xl <  0:  0 <- <- <- xr                        (stops at column 0)
+//!            |<------ screen ------>|
+//! ```
+//!
+//! Timing (`model::span::{LATENCY, II}` = 1, 1): a command taken in cycle t presents its
+//! first pixel in cycle t + 1 and one pixel per cycle after that, each held while
+//! `out_ready` is low; the next command is taken in the cycle of the last pixel, so pixels
+//! follow each other without a gap. A dropped span takes one cycle. Model:
+//! `model::span::span`. Emitted: `hdl-out/span.v`.
+
+use crate::emit::{emit, Emitted};
+use crate::parts::{Negative, RoundShift, SignedLess};
+use crate::widths::{CHANNEL, C_ACC, DC, DEPTH, DIM, DZ, FORMATS, PIXEL, SCREEN, Z_ACC};
+use crate::Params;
+use rust_hdl::prelude::*;
+
+/// Bits the depth loses from the z accumulator: `z_acc.frac - z.frac`.
+const Z_SHIFT: usize = (FORMATS.z_acc.frac - FORMATS.z.frac) as usize;
+/// Bits a colour loses from its accumulator, down to an integer: `c_acc.frac`.
+const C_SHIFT: usize = FORMATS.c_acc.frac as usize;
+
+/// `model::span::depth_of`: a z accumulator rounded half up to the depth buffer's bits;
+/// `neg` and `over` flag depths below 0 and above z_max = 2^DEPTH - 1.
+pub type DepthOf = RoundShift<Z_ACC, { Z_ACC + 1 }, DEPTH, Z_SHIFT>;
+/// `model::span::color_of` before its clamp: a colour accumulator rounded half up to an
+/// integer; `neg` and `over` flag values below 0 and above 255.
+pub type ColorOf = RoundShift<C_ACC, { C_ACC + 1 }, CHANNEL, C_SHIFT>;
+
+/// The span unit: see the module documentation.
+#[derive(LogicBlock, Default)]
+pub struct Span {
+    pub clock: Signal<In, Clock>,
+    /// Screen width in pixels, 1 to 2^SCREEN.
+    pub width: Signal<In, Bits<DIM>>,
+    pub inp_valid: Signal<In, Bit>,
+    /// High when idle or in the last pixel of a span (as it leaves).
+    pub inp_ready: Signal<Out, Bit>,
+    /// The scanline.
+    pub inp_y: Signal<In, Bits<SCREEN>>,
+    /// First and last pixel inside, `PIXEL` bits two's complement (may be off screen).
+    pub inp_xl: Signal<In, Bits<PIXEL>>,
+    pub inp_xr: Signal<In, Bits<PIXEL>>,
+    /// Attributes at pixels xl and xr (`z_acc`, `c_acc`).
+    pub inp_left_z: Signal<In, Bits<Z_ACC>>,
+    pub inp_left_c0: Signal<In, Bits<C_ACC>>,
+    pub inp_left_c1: Signal<In, Bits<C_ACC>>,
+    pub inp_left_c2: Signal<In, Bits<C_ACC>>,
+    pub inp_right_z: Signal<In, Bits<Z_ACC>>,
+    pub inp_right_c0: Signal<In, Bits<C_ACC>>,
+    pub inp_right_c1: Signal<In, Bits<C_ACC>>,
+    pub inp_right_c2: Signal<In, Bits<C_ACC>>,
+    /// Per-pixel steps (`dz`, `dc`).
+    pub inp_ddx_z: Signal<In, Bits<DZ>>,
+    pub inp_ddx_c0: Signal<In, Bits<DC>>,
+    pub inp_ddx_c1: Signal<In, Bits<DC>>,
+    pub inp_ddx_c2: Signal<In, Bits<DC>>,
+    /// A pixel on screen with its depth in [0, z_max].
+    pub out_valid: Signal<Out, Bit>,
+    pub out_ready: Signal<In, Bit>,
+    pub out_x: Signal<Out, Bits<SCREEN>>,
+    pub out_y: Signal<Out, Bits<SCREEN>>,
+    /// Depth, the depth buffer's `DEPTH` bits.
+    pub out_z: Signal<Out, Bits<DEPTH>>,
+    /// R, G, B.
+    pub out_rgb0: Signal<Out, Bits<CHANNEL>>,
+    pub out_rgb1: Signal<Out, Bits<CHANNEL>>,
+    pub out_rgb2: Signal<Out, Bits<CHANNEL>>,
+    /// No span in progress (for `raster_top`'s frame-done).
+    pub idle: Signal<Out, Bit>,
+    /// A span is in progress; `drop` marks the one cycle of a dropped span.
+    busy: DFF<Bit>,
+    drop: DFF<Bit>,
+    /// Walking right to left.
+    left: DFF<Bit>,
+    /// The pixel presented and the last one of the walk.
+    x: DFF<Bits<PIXEL>>,
+    last: DFF<Bits<PIXEL>>,
+    y: DFF<Bits<SCREEN>>,
+    /// Attributes at pixel x.
+    a_z: DFF<Bits<Z_ACC>>,
+    a_c0: DFF<Bits<C_ACC>>,
+    a_c1: DFF<Bits<C_ACC>>,
+    a_c2: DFF<Bits<C_ACC>>,
+    /// Per-pixel steps, cut to the accumulators' widths (only those bits reach them).
+    d_z: DFF<Bits<Z_ACC>>,
+    d_c0: DFF<Bits<C_ACC>>,
+    d_c1: DFF<Bits<C_ACC>>,
+    d_c2: DFF<Bits<C_ACC>>,
+    /// The command's end depths (for the z drop) and the signs of its ends.
+    zl: DepthOf,
+    zr: DepthOf,
+    xl_neg: Negative<PIXEL>,
+    xr_neg: Negative<PIXEL>,
+    /// The pixel's depth and colour.
+    zp: DepthOf,
+    c0: ColorOf,
+    c1: ColorOf,
+    c2: ColorOf,
+    /// xl <= W - 1, i.e. xl < W (signed).
+    xl_on: SignedLess<PIXEL>,
+    width_x: Signal<Local, Bits<PIXEL>>,
+    valid: Signal<Local, Bit>,
+    at_last: Signal<Local, Bit>,
+    advance: Signal<Local, Bit>,
+    ready: Signal<Local, Bit>,
+    accept: Signal<Local, Bit>,
+}
+
+impl Logic for Span {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, busy, drop, left, x, last, y, a_z, a_c0, a_c1, a_c2, d_z, d_c0, d_c1, d_c2);
+
+        // The pixel presented.
+        self.width_x.next = bit_cast::<PIXEL, DIM>(self.width.val());
+        self.zp.x.next = self.a_z.q.val();
+        self.c0.x.next = self.a_c0.q.val();
+        self.c1.x.next = self.a_c1.q.val();
+        self.c2.x.next = self.a_c2.q.val();
+        self.valid.next = self.busy.q.val()
+            & !self.drop.q.val()
+            & (self.x.q.val() < self.width_x.val())
+            & !self.zp.neg.val()
+            & !self.zp.over.val();
+        self.out_valid.next = self.valid.val();
+        self.out_x.next = bit_cast::<SCREEN, PIXEL>(self.x.q.val());
+        self.out_y.next = self.y.q.val();
+        self.out_z.next = self.zp.low.val();
+        self.out_rgb0.next = self.c0.low.val();
+        if self.c0.over.val() {
+            self.out_rgb0.next = 255.into();
+        }
+        if self.c0.neg.val() {
+            self.out_rgb0.next = 0.into();
+        }
+        self.out_rgb1.next = self.c1.low.val();
+        if self.c1.over.val() {
+            self.out_rgb1.next = 255.into();
+        }
+        if self.c1.neg.val() {
+            self.out_rgb1.next = 0.into();
+        }
+        self.out_rgb2.next = self.c2.low.val();
+        if self.c2.over.val() {
+            self.out_rgb2.next = 255.into();
+        }
+        if self.c2.neg.val() {
+            self.out_rgb2.next = 0.into();
+        }
+        self.idle.next = !self.busy.q.val();
+
+        // Handshakes: the walk moves on unless a pixel waits; a command is taken when
+        // idle or as the last pixel leaves.
+        self.at_last.next = self.drop.q.val() | (self.x.q.val() == self.last.q.val());
+        self.advance.next = self.busy.q.val() & (!self.valid.val() | self.out_ready.val());
+        self.ready.next = !self.busy.q.val() | (self.at_last.val() & self.advance.val());
+        self.inp_ready.next = self.ready.val();
+        self.accept.next = self.inp_valid.val() & self.ready.val();
+        if self.advance.val() {
+            if self.at_last.val() {
+                self.busy.d.next = false;
+            } else {
+                if self.left.q.val() {
+                    self.x.d.next = self.x.q.val() - 1;
+                    self.a_z.d.next = self.a_z.q.val() - self.d_z.q.val();
+                    self.a_c0.d.next = self.a_c0.q.val() - self.d_c0.q.val();
+                    self.a_c1.d.next = self.a_c1.q.val() - self.d_c1.q.val();
+                    self.a_c2.d.next = self.a_c2.q.val() - self.d_c2.q.val();
+                } else {
+                    self.x.d.next = self.x.q.val() + 1;
+                    self.a_z.d.next = self.a_z.q.val() + self.d_z.q.val();
+                    self.a_c0.d.next = self.a_c0.q.val() + self.d_c0.q.val();
+                    self.a_c1.d.next = self.a_c1.q.val() + self.d_c1.q.val();
+                    self.a_c2.d.next = self.a_c2.q.val() + self.d_c2.q.val();
+                }
+            }
+        }
+
+        // The command: dropped when wholly off screen in x (xl > W - 1 or xr < 0) or with
+        // both ends beyond the same z boundary; walked from xr leftwards when xl < 0.
+        self.zl.x.next = self.inp_left_z.val();
+        self.zr.x.next = self.inp_right_z.val();
+        self.xl_neg.x.next = self.inp_xl.val();
+        self.xr_neg.x.next = self.inp_xr.val();
+        self.xl_on.a.next = self.inp_xl.val();
+        self.xl_on.b.next = self.width_x.val();
+        if self.accept.val() {
+            self.busy.d.next = true;
+            self.drop.d.next = !self.xl_on.lt.val()
+                | self.xr_neg.neg.val()
+                | (self.zl.neg.val() & self.zr.neg.val())
+                | (self.zl.over.val() & self.zr.over.val());
+            self.y.d.next = self.inp_y.val();
+            self.d_z.d.next = bit_cast::<Z_ACC, DZ>(self.inp_ddx_z.val());
+            self.d_c0.d.next = bit_cast::<C_ACC, DC>(self.inp_ddx_c0.val());
+            self.d_c1.d.next = bit_cast::<C_ACC, DC>(self.inp_ddx_c1.val());
+            self.d_c2.d.next = bit_cast::<C_ACC, DC>(self.inp_ddx_c2.val());
+            self.left.d.next = self.xl_neg.neg.val();
+            if self.xl_neg.neg.val() {
+                self.x.d.next = self.inp_xr.val();
+                self.last.d.next = 0.into();
+                self.a_z.d.next = self.inp_right_z.val();
+                self.a_c0.d.next = self.inp_right_c0.val();
+                self.a_c1.d.next = self.inp_right_c1.val();
+                self.a_c2.d.next = self.inp_right_c2.val();
+            } else {
+                self.x.d.next = self.inp_xl.val();
+                self.last.d.next = self.inp_xr.val();
+                if self.inp_xr.val() >= self.width_x.val() {
+                    self.last.d.next = self.width_x.val() - 1;
+                }
+                self.a_z.d.next = self.inp_left_z.val();
+                self.a_c0.d.next = self.inp_left_c0.val();
+                self.a_c1.d.next = self.inp_left_c1.val();
+                self.a_c2.d.next = self.inp_left_c2.val();
+            }
+        }
+    }
+}
+
+crate::pins!(Span {
+    clock: clock,
+    inputs: [
+        width,
+        inp_valid,
+        inp_y,
+        inp_xl,
+        inp_xr,
+        inp_left_z,
+        inp_left_c0,
+        inp_left_c1,
+        inp_left_c2,
+        inp_right_z,
+        inp_right_c0,
+        inp_right_c1,
+        inp_right_c2,
+        inp_ddx_z,
+        inp_ddx_c0,
+        inp_ddx_c1,
+        inp_ddx_c2,
+        out_ready,
+    ],
+    outputs: [inp_ready, out_valid, out_x, out_y, out_z, out_rgb0, out_rgb1, out_rgb2, idle],
+});
+
+/// `UNITS` entry: the span unit (no parameters: widths from `crate::widths`).
+pub fn emit_span(params: &Params) -> Result<Emitted, String> {
+    Ok(emit::<Span>("span", params.clone()))
+}

@@ -1,0 +1,54 @@
+//! Port and register widths of the scanline pipeline's RTL, read off the number formats it
+//! is built with: the model's defaults for size class [`fx::RTL_CLASS`] (screens up to
+//! 1024 x 1024), so that a change of format in `fx::formats` reaches every port.
+//!
+//! Configurable quantities take their format's width; exact quantities (positions, edge
+//! walker remainders) take the widths `Formats::derived` gives them.
+
+use fx::{Derived, Formats, RTL_CLASS};
+
+/// The formats the RTL is built with: `Formats::for_n(RTL_CLASS)`.
+pub const FORMATS: Formats = Formats::for_n(RTL_CLASS);
+/// Widths of the exact quantities under [`FORMATS`].
+pub const DERIVED: Derived = FORMATS.derived();
+
+/// Screen coordinates of a pixel on screen (x, y < 2^RTL_CLASS): unsigned.
+pub const SCREEN: usize = RTL_CLASS as usize;
+/// Screen width and height (1 to 2^RTL_CLASS): unsigned.
+pub const DIM: usize = SCREEN + 1;
+/// Memory address of a pixel: `{y, x}`, a row pitch of 2^RTL_CLASS words.
+pub const ADDR: usize = 2 * SCREEN;
+/// Pixel positions anywhere in the coordinate range (scanline `j`, edge `x`, span ends,
+/// scanline counts): `pixel_bits`, two's complement.
+pub const PIXEL: usize = DERIVED.pixel_bits as usize;
+/// The exact edge walker's `r`, `rho` and `D = 2^s * dy` (all in [0, D)): the divider's
+/// edge divisor width, `delta_bits + s`.
+pub const EDGE_D: usize = (DERIVED.delta_bits + FORMATS.xy.frac) as usize;
+/// The exact edge walker's step quotient `q = floor(dx / dy)`, |q| <= |dx|: `delta_bits`.
+pub const EDGE_Q: usize = DERIVED.delta_bits as usize;
+/// z accumulators (`z_acc`) and z steps (`dz`).
+pub const Z_ACC: usize = FORMATS.z_acc.bits() as usize;
+pub const DZ: usize = FORMATS.dz.bits() as usize;
+/// Colour accumulators (`c_acc`) and colour steps (`dc`).
+pub const C_ACC: usize = FORMATS.c_acc.bits() as usize;
+pub const DC: usize = FORMATS.dc.bits() as usize;
+// Steps are at least as wide as their accumulators: only their low bits reach them.
+const _: () = assert!(DZ >= Z_ACC && DC >= C_ACC);
+/// A depth-buffer word: `z`'s fraction bits.
+pub const DEPTH: usize = FORMATS.z.frac as usize;
+/// One colour channel of the colour buffer.
+pub const CHANNEL: usize = 8;
+/// A colour-buffer word: R, G, B, R in the top byte.
+pub const RGB: usize = 3 * CHANNEL;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn widths_follow_the_formats_of_size_class_10() {
+        // S11.4 vertices: positions in [-4096, 4096), edge deltas 17 bits, D < 2^20.
+        assert_eq!((SCREEN, DIM, ADDR, PIXEL, EDGE_D, EDGE_Q), (10, 11, 20, 13, 21, 17));
+        assert_eq!((Z_ACC, DZ, C_ACC, DC, DEPTH), (36, 40, 32, 36, 16));
+    }
+}

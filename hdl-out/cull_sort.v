@@ -1,0 +1,1111 @@
+
+
+module cull_sort(clock,width,height,cull_back,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v0_iw,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v1_iw,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_v2_iw,out_valid,out_ready,out_v0_x,out_v0_y,out_v0_z,out_v0_c0,out_v0_c1,out_v0_c2,out_v0_iw,out_v1_x,out_v1_y,out_v1_z,out_v1_c0,out_v1_c1,out_v1_c2,out_v1_iw,out_v2_x,out_v2_y,out_v2_z,out_v2_c0,out_v2_c1,out_v2_c2,out_v2_iw,out_crosses,verdict_valid,verdict_code,verdict_outside);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [10:0] width;
+    input wire  [10:0] height;
+    input wire  cull_back;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  [15:0] inp_v0_x;
+    input wire  [15:0] inp_v0_y;
+    input wire  [17:0] inp_v0_z;
+    input wire  [7:0] inp_v0_c0;
+    input wire  [7:0] inp_v0_c1;
+    input wire  [7:0] inp_v0_c2;
+    input wire  [15:0] inp_v0_iw;
+    input wire  [15:0] inp_v1_x;
+    input wire  [15:0] inp_v1_y;
+    input wire  [17:0] inp_v1_z;
+    input wire  [7:0] inp_v1_c0;
+    input wire  [7:0] inp_v1_c1;
+    input wire  [7:0] inp_v1_c2;
+    input wire  [15:0] inp_v1_iw;
+    input wire  [15:0] inp_v2_x;
+    input wire  [15:0] inp_v2_y;
+    input wire  [17:0] inp_v2_z;
+    input wire  [7:0] inp_v2_c0;
+    input wire  [7:0] inp_v2_c1;
+    input wire  [7:0] inp_v2_c2;
+    input wire  [15:0] inp_v2_iw;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [15:0] out_v0_x;
+    output reg  [15:0] out_v0_y;
+    output reg  [17:0] out_v0_z;
+    output reg  [7:0] out_v0_c0;
+    output reg  [7:0] out_v0_c1;
+    output reg  [7:0] out_v0_c2;
+    output reg  [15:0] out_v0_iw;
+    output reg  [15:0] out_v1_x;
+    output reg  [15:0] out_v1_y;
+    output reg  [17:0] out_v1_z;
+    output reg  [7:0] out_v1_c0;
+    output reg  [7:0] out_v1_c1;
+    output reg  [7:0] out_v1_c2;
+    output reg  [15:0] out_v1_iw;
+    output reg  [15:0] out_v2_x;
+    output reg  [15:0] out_v2_y;
+    output reg  [17:0] out_v2_z;
+    output reg  [7:0] out_v2_c0;
+    output reg  [7:0] out_v2_c1;
+    output reg  [7:0] out_v2_c2;
+    output reg  [15:0] out_v2_iw;
+    output reg  [5:0] out_crosses;
+    output reg  verdict_valid;
+    output reg  [1:0] verdict_code;
+    output reg  [5:0] verdict_outside;
+    
+    // Constant declarations
+    localparam  z_max = 18'b1111111111111111;
+    localparam  half = 16'h8000;
+    localparam  xy_msb = 8'hf;
+    localparam  z_msb = 8'h11;
+    localparam  area_msb = 8'h21;
+    localparam  delta_msb = 8'h10;
+    localparam  frac = 8'h4;
+    localparam  passed = 2'b0;
+    localparam  outside = 2'b1;
+    localparam  back_face = 2'b10;
+    localparam  zero_area = 2'b11;
+    
+    // Stub signals
+    reg  [16:0] area_mul$0$a;
+    reg  [16:0] area_mul$0$b;
+    wire  [33:0] area_mul$0$p;
+    reg  [16:0] area_mul$1$a;
+    reg  [16:0] area_mul$1$b;
+    wire  [33:0] area_mul$1$p;
+    reg  [15:0] sx$0$d;
+    wire  [15:0] sx$0$q;
+    reg  sx$0$clock;
+    reg  [15:0] sx$1$d;
+    wire  [15:0] sx$1$q;
+    reg  sx$1$clock;
+    reg  [15:0] sx$2$d;
+    wire  [15:0] sx$2$q;
+    reg  sx$2$clock;
+    reg  [15:0] sy$0$d;
+    wire  [15:0] sy$0$q;
+    reg  sy$0$clock;
+    reg  [15:0] sy$1$d;
+    wire  [15:0] sy$1$q;
+    reg  sy$1$clock;
+    reg  [15:0] sy$2$d;
+    wire  [15:0] sy$2$q;
+    reg  sy$2$clock;
+    reg  [17:0] sz$0$d;
+    wire  [17:0] sz$0$q;
+    reg  sz$0$clock;
+    reg  [17:0] sz$1$d;
+    wire  [17:0] sz$1$q;
+    reg  sz$1$clock;
+    reg  [17:0] sz$2$d;
+    wire  [17:0] sz$2$q;
+    reg  sz$2$clock;
+    reg  [7:0] sc$0$d;
+    wire  [7:0] sc$0$q;
+    reg  sc$0$clock;
+    reg  [7:0] sc$1$d;
+    wire  [7:0] sc$1$q;
+    reg  sc$1$clock;
+    reg  [7:0] sc$2$d;
+    wire  [7:0] sc$2$q;
+    reg  sc$2$clock;
+    reg  [7:0] sc$3$d;
+    wire  [7:0] sc$3$q;
+    reg  sc$3$clock;
+    reg  [7:0] sc$4$d;
+    wire  [7:0] sc$4$q;
+    reg  sc$4$clock;
+    reg  [7:0] sc$5$d;
+    wire  [7:0] sc$5$q;
+    reg  sc$5$clock;
+    reg  [7:0] sc$6$d;
+    wire  [7:0] sc$6$q;
+    reg  sc$6$clock;
+    reg  [7:0] sc$7$d;
+    wire  [7:0] sc$7$q;
+    reg  sc$7$clock;
+    reg  [7:0] sc$8$d;
+    wire  [7:0] sc$8$q;
+    reg  sc$8$clock;
+    reg  [15:0] siw$0$d;
+    wire  [15:0] siw$0$q;
+    reg  siw$0$clock;
+    reg  [15:0] siw$1$d;
+    wire  [15:0] siw$1$q;
+    reg  siw$1$clock;
+    reg  [15:0] siw$2$d;
+    wire  [15:0] siw$2$q;
+    reg  siw$2$clock;
+    reg  [5:0] crosses$d;
+    wire  [5:0] crosses$q;
+    reg  crosses$clock;
+    reg  [1:0] code_r$d;
+    wire  [1:0] code_r$q;
+    reg  code_r$clock;
+    reg  [5:0] outside_r$d;
+    wire  [5:0] outside_r$q;
+    reg  outside_r$clock;
+    reg  full$d;
+    wire  full$q;
+    reg  full$clock;
+    
+    // Local signals
+    reg  [15:0] vx$0;
+    reg  [15:0] vx$1;
+    reg  [15:0] vx$2;
+    reg  [15:0] vy$0;
+    reg  [15:0] vy$1;
+    reg  [15:0] vy$2;
+    reg  [17:0] vz$0;
+    reg  [17:0] vz$1;
+    reg  [17:0] vz$2;
+    reg  [7:0] vc$0;
+    reg  [7:0] vc$1;
+    reg  [7:0] vc$2;
+    reg  [7:0] vc$3;
+    reg  [7:0] vc$4;
+    reg  [7:0] vc$5;
+    reg  [7:0] vc$6;
+    reg  [7:0] vc$7;
+    reg  [7:0] vc$8;
+    reg  [15:0] viw$0;
+    reg  [15:0] viw$1;
+    reg  [15:0] viw$2;
+    reg  [5:0] oc$0;
+    reg  [5:0] oc$1;
+    reg  [5:0] oc$2;
+    reg  left$0;
+    reg  left$1;
+    reg  left$2;
+    reg  right_of$0;
+    reg  right_of$1;
+    reg  right_of$2;
+    reg  top$0;
+    reg  top$1;
+    reg  top$2;
+    reg  below$0;
+    reg  below$1;
+    reg  below$2;
+    reg  near$0;
+    reg  near$1;
+    reg  near$2;
+    reg  far$0;
+    reg  far$1;
+    reg  far$2;
+    reg  [15:0] right;
+    reg  [15:0] bottom;
+    reg  [16:0] e1x;
+    reg  [16:0] e1y;
+    reg  [16:0] e2x;
+    reg  [16:0] e2y;
+    reg  [33:0] area;
+    reg  [15:0] key$0;
+    reg  [15:0] key$1;
+    reg  [15:0] key$2;
+    reg  le01;
+    reg  le12;
+    reg  le02;
+    reg  gt01;
+    reg  gt12;
+    reg  gt02;
+    reg  [1:0] rank$0;
+    reg  [1:0] rank$1;
+    reg  [1:0] rank$2;
+    reg  [1:0] code;
+    reg  take;
+    reg  leave;
+    
+    // Sub module instances
+    cull_sort$area_mul$0 area_mul$0(
+        .a(area_mul$0$a),
+        .b(area_mul$0$b),
+        .p(area_mul$0$p)
+    );
+    cull_sort$area_mul$1 area_mul$1(
+        .a(area_mul$1$a),
+        .b(area_mul$1$b),
+        .p(area_mul$1$p)
+    );
+    cull_sort$sx$0 sx$0(
+        .d(sx$0$d),
+        .q(sx$0$q),
+        .clock(sx$0$clock)
+    );
+    cull_sort$sx$1 sx$1(
+        .d(sx$1$d),
+        .q(sx$1$q),
+        .clock(sx$1$clock)
+    );
+    cull_sort$sx$2 sx$2(
+        .d(sx$2$d),
+        .q(sx$2$q),
+        .clock(sx$2$clock)
+    );
+    cull_sort$sy$0 sy$0(
+        .d(sy$0$d),
+        .q(sy$0$q),
+        .clock(sy$0$clock)
+    );
+    cull_sort$sy$1 sy$1(
+        .d(sy$1$d),
+        .q(sy$1$q),
+        .clock(sy$1$clock)
+    );
+    cull_sort$sy$2 sy$2(
+        .d(sy$2$d),
+        .q(sy$2$q),
+        .clock(sy$2$clock)
+    );
+    cull_sort$sz$0 sz$0(
+        .d(sz$0$d),
+        .q(sz$0$q),
+        .clock(sz$0$clock)
+    );
+    cull_sort$sz$1 sz$1(
+        .d(sz$1$d),
+        .q(sz$1$q),
+        .clock(sz$1$clock)
+    );
+    cull_sort$sz$2 sz$2(
+        .d(sz$2$d),
+        .q(sz$2$q),
+        .clock(sz$2$clock)
+    );
+    cull_sort$sc$0 sc$0(
+        .d(sc$0$d),
+        .q(sc$0$q),
+        .clock(sc$0$clock)
+    );
+    cull_sort$sc$1 sc$1(
+        .d(sc$1$d),
+        .q(sc$1$q),
+        .clock(sc$1$clock)
+    );
+    cull_sort$sc$2 sc$2(
+        .d(sc$2$d),
+        .q(sc$2$q),
+        .clock(sc$2$clock)
+    );
+    cull_sort$sc$3 sc$3(
+        .d(sc$3$d),
+        .q(sc$3$q),
+        .clock(sc$3$clock)
+    );
+    cull_sort$sc$4 sc$4(
+        .d(sc$4$d),
+        .q(sc$4$q),
+        .clock(sc$4$clock)
+    );
+    cull_sort$sc$5 sc$5(
+        .d(sc$5$d),
+        .q(sc$5$q),
+        .clock(sc$5$clock)
+    );
+    cull_sort$sc$6 sc$6(
+        .d(sc$6$d),
+        .q(sc$6$q),
+        .clock(sc$6$clock)
+    );
+    cull_sort$sc$7 sc$7(
+        .d(sc$7$d),
+        .q(sc$7$q),
+        .clock(sc$7$clock)
+    );
+    cull_sort$sc$8 sc$8(
+        .d(sc$8$d),
+        .q(sc$8$q),
+        .clock(sc$8$clock)
+    );
+    cull_sort$siw$0 siw$0(
+        .d(siw$0$d),
+        .q(siw$0$q),
+        .clock(siw$0$clock)
+    );
+    cull_sort$siw$1 siw$1(
+        .d(siw$1$d),
+        .q(siw$1$q),
+        .clock(siw$1$clock)
+    );
+    cull_sort$siw$2 siw$2(
+        .d(siw$2$d),
+        .q(siw$2$q),
+        .clock(siw$2$clock)
+    );
+    cull_sort$crosses crosses(
+        .d(crosses$d),
+        .q(crosses$q),
+        .clock(crosses$clock)
+    );
+    cull_sort$code_r code_r(
+        .d(code_r$d),
+        .q(code_r$q),
+        .clock(code_r$clock)
+    );
+    cull_sort$outside_r outside_r(
+        .d(outside_r$d),
+        .q(outside_r$q),
+        .clock(outside_r$clock)
+    );
+    cull_sort$full full(
+        .d(full$d),
+        .q(full$q),
+        .clock(full$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        crosses$clock = clock;
+        code_r$clock = clock;
+        outside_r$clock = clock;
+        full$clock = clock;
+        crosses$d = crosses$q;
+        code_r$d = code_r$q;
+        outside_r$d = outside_r$q;
+        full$d = full$q;
+        sx$0$clock = clock;
+        sx$0$d = sx$0$q;
+        sy$0$clock = clock;
+        sy$0$d = sy$0$q;
+        sz$0$clock = clock;
+        sz$0$d = sz$0$q;
+        siw$0$clock = clock;
+        siw$0$d = siw$0$q;
+        sx$1$clock = clock;
+        sx$1$d = sx$1$q;
+        sy$1$clock = clock;
+        sy$1$d = sy$1$q;
+        sz$1$clock = clock;
+        sz$1$d = sz$1$q;
+        siw$1$clock = clock;
+        siw$1$d = siw$1$q;
+        sx$2$clock = clock;
+        sx$2$d = sx$2$q;
+        sy$2$clock = clock;
+        sy$2$d = sy$2$q;
+        sz$2$clock = clock;
+        sz$2$d = sz$2$q;
+        siw$2$clock = clock;
+        siw$2$d = siw$2$q;
+        sc$0$clock = clock;
+        sc$0$d = sc$0$q;
+        sc$1$clock = clock;
+        sc$1$d = sc$1$q;
+        sc$2$clock = clock;
+        sc$2$d = sc$2$q;
+        sc$3$clock = clock;
+        sc$3$d = sc$3$q;
+        sc$4$clock = clock;
+        sc$4$d = sc$4$q;
+        sc$5$clock = clock;
+        sc$5$d = sc$5$q;
+        sc$6$clock = clock;
+        sc$6$d = sc$6$q;
+        sc$7$clock = clock;
+        sc$7$d = sc$7$q;
+        sc$8$clock = clock;
+        sc$8$d = sc$8$q;
+        vx$0 = inp_v0_x;
+        vy$0 = inp_v0_y;
+        vz$0 = inp_v0_z;
+        vc$0 = inp_v0_c0;
+        vc$1 = inp_v0_c1;
+        vc$2 = inp_v0_c2;
+        viw$0 = inp_v0_iw;
+        vx$1 = inp_v1_x;
+        vy$1 = inp_v1_y;
+        vz$1 = inp_v1_z;
+        vc$3 = inp_v1_c0;
+        vc$4 = inp_v1_c1;
+        vc$5 = inp_v1_c2;
+        viw$1 = inp_v1_iw;
+        vx$2 = inp_v2_x;
+        vy$2 = inp_v2_y;
+        vz$2 = inp_v2_z;
+        vc$6 = inp_v2_c0;
+        vc$7 = inp_v2_c1;
+        vc$8 = inp_v2_c2;
+        viw$2 = inp_v2_iw;
+        right = ((width) & 16'hffff) << frac;
+        bottom = ((height) & 16'hffff) << frac;
+        left$0 = vx$0[xy_msb];
+        right_of$0 = ~left$0 & (vx$0 > right);
+        top$0 = vy$0[xy_msb];
+        below$0 = ~top$0 & (vy$0 > bottom);
+        near$0 = vz$0[z_msb];
+        far$0 = ~near$0 & (vz$0 > z_max);
+        oc$0 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$0) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$0) << (32'h1))) & ~(1 << (32'h2)) | ((top$0) << (32'h2))) & ~(1 << (32'h3)) | ((below$0) << (32'h3))) & ~(1 << (32'h4)) | ((near$0) << (32'h4))) & ~(1 << (32'h5)) | ((far$0) << (32'h5)));
+        left$1 = vx$1[xy_msb];
+        right_of$1 = ~left$1 & (vx$1 > right);
+        top$1 = vy$1[xy_msb];
+        below$1 = ~top$1 & (vy$1 > bottom);
+        near$1 = vz$1[z_msb];
+        far$1 = ~near$1 & (vz$1 > z_max);
+        oc$1 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$1) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$1) << (32'h1))) & ~(1 << (32'h2)) | ((top$1) << (32'h2))) & ~(1 << (32'h3)) | ((below$1) << (32'h3))) & ~(1 << (32'h4)) | ((near$1) << (32'h4))) & ~(1 << (32'h5)) | ((far$1) << (32'h5)));
+        left$2 = vx$2[xy_msb];
+        right_of$2 = ~left$2 & (vx$2 > right);
+        top$2 = vy$2[xy_msb];
+        below$2 = ~top$2 & (vy$2 > bottom);
+        near$2 = vz$2[z_msb];
+        far$2 = ~near$2 & (vz$2 > z_max);
+        oc$2 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$2) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$2) << (32'h1))) & ~(1 << (32'h2)) | ((top$2) << (32'h2))) & ~(1 << (32'h3)) | ((below$2) << (32'h3))) & ~(1 << (32'h4)) | ((near$2) << (32'h4))) & ~(1 << (32'h5)) | ((far$2) << (32'h5)));
+        e1x = (((inp_v1_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v1_x[xy_msb]) << (delta_msb))) - (((inp_v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_x[xy_msb]) << (delta_msb)));
+        e1y = (((inp_v1_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v1_y[xy_msb]) << (delta_msb))) - (((inp_v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_y[xy_msb]) << (delta_msb)));
+        e2x = (((inp_v2_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v2_x[xy_msb]) << (delta_msb))) - (((inp_v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_x[xy_msb]) << (delta_msb)));
+        e2y = (((inp_v2_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v2_y[xy_msb]) << (delta_msb))) - (((inp_v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_y[xy_msb]) << (delta_msb)));
+        area_mul$0$a = e1x;
+        area_mul$0$b = e2y;
+        area_mul$1$a = e2x;
+        area_mul$1$b = e1y;
+        area = area_mul$0$p - area_mul$1$p;
+        code = passed;
+        if (cull_back & ~area[area_msb]) begin
+            code = back_face;
+        end
+        if (area == 32'h0) begin
+            code = zero_area;
+        end
+        if (|(oc$0 & oc$1 & oc$2)) begin
+            code = outside;
+        end
+        key$0 = vy$0 ^ half;
+        key$1 = vy$1 ^ half;
+        key$2 = vy$2 ^ half;
+        le01 = key$0 <= key$1;
+        le12 = key$1 <= key$2;
+        le02 = key$0 <= key$2;
+        gt01 = ~le01;
+        gt12 = ~le12;
+        gt02 = ~le02;
+        rank$0 = ((32'h0) & 2'h3) + gt01 + gt02;
+        rank$1 = ((32'h0) & 2'h3) + le01 + gt12;
+        rank$2 = ((32'h0) & 2'h3) + le02 + le12;
+        leave = full$q & ((code_r$q != passed) | out_ready);
+        inp_ready = ~full$q | leave;
+        take = inp_valid & inp_ready;
+        if (leave) begin
+            full$d = 1'b0;
+        end
+        if (take) begin
+            full$d = 1'b1;
+            code_r$d = code;
+            crosses$d = oc$0 | oc$1 | oc$2;
+            outside_r$d = oc$0 & oc$1 & oc$2;
+            if (rank$0 == 0) begin
+                sx$0$d = vx$0;
+                sy$0$d = vy$0;
+                sz$0$d = vz$0;
+                siw$0$d = viw$0;
+                sc$0$d = vc$0;
+                sc$1$d = vc$1;
+                sc$2$d = vc$2;
+            end
+            if (rank$1 == 0) begin
+                sx$0$d = vx$1;
+                sy$0$d = vy$1;
+                sz$0$d = vz$1;
+                siw$0$d = viw$1;
+                sc$0$d = vc$3;
+                sc$1$d = vc$4;
+                sc$2$d = vc$5;
+            end
+            if (rank$2 == 0) begin
+                sx$0$d = vx$2;
+                sy$0$d = vy$2;
+                sz$0$d = vz$2;
+                siw$0$d = viw$2;
+                sc$0$d = vc$6;
+                sc$1$d = vc$7;
+                sc$2$d = vc$8;
+            end
+            if (rank$0 == 1) begin
+                sx$1$d = vx$0;
+                sy$1$d = vy$0;
+                sz$1$d = vz$0;
+                siw$1$d = viw$0;
+                sc$3$d = vc$0;
+                sc$4$d = vc$1;
+                sc$5$d = vc$2;
+            end
+            if (rank$1 == 1) begin
+                sx$1$d = vx$1;
+                sy$1$d = vy$1;
+                sz$1$d = vz$1;
+                siw$1$d = viw$1;
+                sc$3$d = vc$3;
+                sc$4$d = vc$4;
+                sc$5$d = vc$5;
+            end
+            if (rank$2 == 1) begin
+                sx$1$d = vx$2;
+                sy$1$d = vy$2;
+                sz$1$d = vz$2;
+                siw$1$d = viw$2;
+                sc$3$d = vc$6;
+                sc$4$d = vc$7;
+                sc$5$d = vc$8;
+            end
+            if (rank$0 == 2) begin
+                sx$2$d = vx$0;
+                sy$2$d = vy$0;
+                sz$2$d = vz$0;
+                siw$2$d = viw$0;
+                sc$6$d = vc$0;
+                sc$7$d = vc$1;
+                sc$8$d = vc$2;
+            end
+            if (rank$1 == 2) begin
+                sx$2$d = vx$1;
+                sy$2$d = vy$1;
+                sz$2$d = vz$1;
+                siw$2$d = viw$1;
+                sc$6$d = vc$3;
+                sc$7$d = vc$4;
+                sc$8$d = vc$5;
+            end
+            if (rank$2 == 2) begin
+                sx$2$d = vx$2;
+                sy$2$d = vy$2;
+                sz$2$d = vz$2;
+                siw$2$d = viw$2;
+                sc$6$d = vc$6;
+                sc$7$d = vc$7;
+                sc$8$d = vc$8;
+            end
+        end
+        out_valid = full$q & (code_r$q == passed);
+        verdict_valid = leave;
+        verdict_code = code_r$q;
+        verdict_outside = outside_r$q;
+        out_crosses = crosses$q;
+        out_v0_x = sx$0$q;
+        out_v0_y = sy$0$q;
+        out_v0_z = sz$0$q;
+        out_v0_c0 = sc$0$q;
+        out_v0_c1 = sc$1$q;
+        out_v0_c2 = sc$2$q;
+        out_v0_iw = siw$0$q;
+        out_v1_x = sx$1$q;
+        out_v1_y = sy$1$q;
+        out_v1_z = sz$1$q;
+        out_v1_c0 = sc$3$q;
+        out_v1_c1 = sc$4$q;
+        out_v1_c2 = sc$5$q;
+        out_v1_iw = siw$1$q;
+        out_v2_x = sx$2$q;
+        out_v2_y = sy$2$q;
+        out_v2_z = sz$2$q;
+        out_v2_c0 = sc$6$q;
+        out_v2_c1 = sc$7$q;
+        out_v2_c2 = sc$8$q;
+        out_v2_iw = siw$2$q;
+    end
+    
+endmodule // cull_sort
+
+
+module cull_sort$area_mul$0(a,b,p);
+    
+    // Module arguments
+    input wire  [16:0] a;
+    input wire  [16:0] b;
+    output reg  [33:0] p;
+    
+    // Update code (custom)
+    // p = low 34 bits of a * b, both signed: a signed 34-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // cull_sort$area_mul$0
+
+
+module cull_sort$area_mul$1(a,b,p);
+    
+    // Module arguments
+    input wire  [16:0] a;
+    input wire  [16:0] b;
+    output reg  [33:0] p;
+    
+    // Update code (custom)
+    // p = low 34 bits of a * b, both signed: a signed 34-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // cull_sort$area_mul$1
+
+
+module cull_sort$code_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$code_r
+
+
+module cull_sort$crosses(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$crosses
+
+
+module cull_sort$full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$full
+
+
+module cull_sort$outside_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$outside_r
+
+
+module cull_sort$sc$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sc$0
+
+
+module cull_sort$sc$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sc$1
+
+
+module cull_sort$sc$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sc$2
+
+
+module cull_sort$sc$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sc$3
+
+
+module cull_sort$sc$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sc$4
+
+
+module cull_sort$sc$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sc$5
+
+
+module cull_sort$sc$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sc$6
+
+
+module cull_sort$sc$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sc$7
+
+
+module cull_sort$sc$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sc$8
+
+
+module cull_sort$siw$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$siw$0
+
+
+module cull_sort$siw$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$siw$1
+
+
+module cull_sort$siw$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$siw$2
+
+
+module cull_sort$sx$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sx$0
+
+
+module cull_sort$sx$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sx$1
+
+
+module cull_sort$sx$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sx$2
+
+
+module cull_sort$sy$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sy$0
+
+
+module cull_sort$sy$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sy$1
+
+
+module cull_sort$sy$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sy$2
+
+
+module cull_sort$sz$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sz$0
+
+
+module cull_sort$sz$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sz$1
+
+
+module cull_sort$sz$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$sz$2

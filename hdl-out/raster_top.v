@@ -1,0 +1,17378 @@
+
+
+module raster_top(clock,width,height,cull_back,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v0_iw,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v1_iw,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_v2_iw,verdict_valid,verdict_code,verdict_outside,mem_ready,rd_en,rd_addr,rd_z,wr_en,wr_addr,wr_z,wr_rgb,done);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [10:0] width;
+    input wire  [10:0] height;
+    input wire  cull_back;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  inp_last;
+    input wire  [15:0] inp_v0_x;
+    input wire  [15:0] inp_v0_y;
+    input wire  [17:0] inp_v0_z;
+    input wire  [7:0] inp_v0_c0;
+    input wire  [7:0] inp_v0_c1;
+    input wire  [7:0] inp_v0_c2;
+    input wire  [15:0] inp_v0_iw;
+    input wire  [15:0] inp_v1_x;
+    input wire  [15:0] inp_v1_y;
+    input wire  [17:0] inp_v1_z;
+    input wire  [7:0] inp_v1_c0;
+    input wire  [7:0] inp_v1_c1;
+    input wire  [7:0] inp_v1_c2;
+    input wire  [15:0] inp_v1_iw;
+    input wire  [15:0] inp_v2_x;
+    input wire  [15:0] inp_v2_y;
+    input wire  [17:0] inp_v2_z;
+    input wire  [7:0] inp_v2_c0;
+    input wire  [7:0] inp_v2_c1;
+    input wire  [7:0] inp_v2_c2;
+    input wire  [15:0] inp_v2_iw;
+    output reg  verdict_valid;
+    output reg  [1:0] verdict_code;
+    output reg  [5:0] verdict_outside;
+    input wire  mem_ready;
+    output reg  rd_en;
+    output reg  [19:0] rd_addr;
+    input wire  [15:0] rd_z;
+    output reg  wr_en;
+    output reg  [19:0] wr_addr;
+    output reg  [15:0] wr_z;
+    output reg  [23:0] wr_rgb;
+    output reg  done;
+    
+    // Stub signals
+    reg  cull_sort$clock;
+    reg  [10:0] cull_sort$width;
+    reg  [10:0] cull_sort$height;
+    reg  cull_sort$cull_back;
+    reg  cull_sort$inp_valid;
+    wire  cull_sort$inp_ready;
+    reg  [15:0] cull_sort$inp_v0_x;
+    reg  [15:0] cull_sort$inp_v0_y;
+    reg  [17:0] cull_sort$inp_v0_z;
+    reg  [7:0] cull_sort$inp_v0_c0;
+    reg  [7:0] cull_sort$inp_v0_c1;
+    reg  [7:0] cull_sort$inp_v0_c2;
+    reg  [15:0] cull_sort$inp_v0_iw;
+    reg  [15:0] cull_sort$inp_v1_x;
+    reg  [15:0] cull_sort$inp_v1_y;
+    reg  [17:0] cull_sort$inp_v1_z;
+    reg  [7:0] cull_sort$inp_v1_c0;
+    reg  [7:0] cull_sort$inp_v1_c1;
+    reg  [7:0] cull_sort$inp_v1_c2;
+    reg  [15:0] cull_sort$inp_v1_iw;
+    reg  [15:0] cull_sort$inp_v2_x;
+    reg  [15:0] cull_sort$inp_v2_y;
+    reg  [17:0] cull_sort$inp_v2_z;
+    reg  [7:0] cull_sort$inp_v2_c0;
+    reg  [7:0] cull_sort$inp_v2_c1;
+    reg  [7:0] cull_sort$inp_v2_c2;
+    reg  [15:0] cull_sort$inp_v2_iw;
+    wire  cull_sort$out_valid;
+    reg  cull_sort$out_ready;
+    wire  [15:0] cull_sort$out_v0_x;
+    wire  [15:0] cull_sort$out_v0_y;
+    wire  [17:0] cull_sort$out_v0_z;
+    wire  [7:0] cull_sort$out_v0_c0;
+    wire  [7:0] cull_sort$out_v0_c1;
+    wire  [7:0] cull_sort$out_v0_c2;
+    wire  [15:0] cull_sort$out_v0_iw;
+    wire  [15:0] cull_sort$out_v1_x;
+    wire  [15:0] cull_sort$out_v1_y;
+    wire  [17:0] cull_sort$out_v1_z;
+    wire  [7:0] cull_sort$out_v1_c0;
+    wire  [7:0] cull_sort$out_v1_c1;
+    wire  [7:0] cull_sort$out_v1_c2;
+    wire  [15:0] cull_sort$out_v1_iw;
+    wire  [15:0] cull_sort$out_v2_x;
+    wire  [15:0] cull_sort$out_v2_y;
+    wire  [17:0] cull_sort$out_v2_z;
+    wire  [7:0] cull_sort$out_v2_c0;
+    wire  [7:0] cull_sort$out_v2_c1;
+    wire  [7:0] cull_sort$out_v2_c2;
+    wire  [15:0] cull_sort$out_v2_iw;
+    wire  [5:0] cull_sort$out_crosses;
+    wire  cull_sort$verdict_valid;
+    wire  [1:0] cull_sort$verdict_code;
+    wire  [5:0] cull_sort$verdict_outside;
+    reg  triangle_setup$clock;
+    reg  triangle_setup$inp_valid;
+    wire  triangle_setup$inp_ready;
+    reg  [15:0] triangle_setup$inp_v0_x;
+    reg  [15:0] triangle_setup$inp_v0_y;
+    reg  [17:0] triangle_setup$inp_v0_z;
+    reg  [7:0] triangle_setup$inp_v0_c0;
+    reg  [7:0] triangle_setup$inp_v0_c1;
+    reg  [7:0] triangle_setup$inp_v0_c2;
+    reg  [15:0] triangle_setup$inp_v1_x;
+    reg  [15:0] triangle_setup$inp_v1_y;
+    reg  [17:0] triangle_setup$inp_v1_z;
+    reg  [7:0] triangle_setup$inp_v1_c0;
+    reg  [7:0] triangle_setup$inp_v1_c1;
+    reg  [7:0] triangle_setup$inp_v1_c2;
+    reg  [15:0] triangle_setup$inp_v2_x;
+    reg  [15:0] triangle_setup$inp_v2_y;
+    reg  [17:0] triangle_setup$inp_v2_z;
+    reg  [7:0] triangle_setup$inp_v2_c0;
+    reg  [7:0] triangle_setup$inp_v2_c1;
+    reg  [7:0] triangle_setup$inp_v2_c2;
+    reg  [5:0] triangle_setup$inp_crosses;
+    wire  triangle_setup$out_valid;
+    reg  triangle_setup$out_ready;
+    wire  triangle_setup$out_walk;
+    wire  triangle_setup$out_maj_left;
+    wire  [12:0] triangle_setup$out_maj_j;
+    wire  [12:0] triangle_setup$out_maj_count;
+    wire  [12:0] triangle_setup$out_maj_x;
+    wire  [20:0] triangle_setup$out_maj_r;
+    wire  [16:0] triangle_setup$out_maj_q;
+    wire  [20:0] triangle_setup$out_maj_rho;
+    wire  [20:0] triangle_setup$out_maj_d;
+    wire  [35:0] triangle_setup$out_maj_at_z;
+    wire  [31:0] triangle_setup$out_maj_at_c0;
+    wire  [31:0] triangle_setup$out_maj_at_c1;
+    wire  [31:0] triangle_setup$out_maj_at_c2;
+    wire  [39:0] triangle_setup$out_maj_inc0_z;
+    wire  [35:0] triangle_setup$out_maj_inc0_c0;
+    wire  [35:0] triangle_setup$out_maj_inc0_c1;
+    wire  [35:0] triangle_setup$out_maj_inc0_c2;
+    wire  [39:0] triangle_setup$out_maj_inc1_z;
+    wire  [35:0] triangle_setup$out_maj_inc1_c0;
+    wire  [35:0] triangle_setup$out_maj_inc1_c1;
+    wire  [35:0] triangle_setup$out_maj_inc1_c2;
+    wire  [12:0] triangle_setup$out_short0_j;
+    wire  [12:0] triangle_setup$out_short0_count;
+    wire  [12:0] triangle_setup$out_short0_x;
+    wire  [20:0] triangle_setup$out_short0_r;
+    wire  [16:0] triangle_setup$out_short0_q;
+    wire  [20:0] triangle_setup$out_short0_rho;
+    wire  [20:0] triangle_setup$out_short0_d;
+    wire  [35:0] triangle_setup$out_short0_at_z;
+    wire  [31:0] triangle_setup$out_short0_at_c0;
+    wire  [31:0] triangle_setup$out_short0_at_c1;
+    wire  [31:0] triangle_setup$out_short0_at_c2;
+    wire  [39:0] triangle_setup$out_short0_inc0_z;
+    wire  [35:0] triangle_setup$out_short0_inc0_c0;
+    wire  [35:0] triangle_setup$out_short0_inc0_c1;
+    wire  [35:0] triangle_setup$out_short0_inc0_c2;
+    wire  [39:0] triangle_setup$out_short0_inc1_z;
+    wire  [35:0] triangle_setup$out_short0_inc1_c0;
+    wire  [35:0] triangle_setup$out_short0_inc1_c1;
+    wire  [35:0] triangle_setup$out_short0_inc1_c2;
+    wire  [12:0] triangle_setup$out_short1_j;
+    wire  [12:0] triangle_setup$out_short1_count;
+    wire  [12:0] triangle_setup$out_short1_x;
+    wire  [20:0] triangle_setup$out_short1_r;
+    wire  [16:0] triangle_setup$out_short1_q;
+    wire  [20:0] triangle_setup$out_short1_rho;
+    wire  [20:0] triangle_setup$out_short1_d;
+    wire  [35:0] triangle_setup$out_short1_at_z;
+    wire  [31:0] triangle_setup$out_short1_at_c0;
+    wire  [31:0] triangle_setup$out_short1_at_c1;
+    wire  [31:0] triangle_setup$out_short1_at_c2;
+    wire  [39:0] triangle_setup$out_short1_inc0_z;
+    wire  [35:0] triangle_setup$out_short1_inc0_c0;
+    wire  [35:0] triangle_setup$out_short1_inc0_c1;
+    wire  [35:0] triangle_setup$out_short1_inc0_c2;
+    wire  [39:0] triangle_setup$out_short1_inc1_z;
+    wire  [35:0] triangle_setup$out_short1_inc1_c0;
+    wire  [35:0] triangle_setup$out_short1_inc1_c1;
+    wire  [35:0] triangle_setup$out_short1_inc1_c2;
+    wire  [39:0] triangle_setup$out_ddx_z;
+    wire  [35:0] triangle_setup$out_ddx_c0;
+    wire  [35:0] triangle_setup$out_ddx_c1;
+    wire  [35:0] triangle_setup$out_ddx_c2;
+    reg  edge_walk$clock;
+    reg  [10:0] edge_walk$height;
+    reg  edge_walk$inp_valid;
+    wire  edge_walk$inp_ready;
+    reg  edge_walk$inp_walk;
+    reg  edge_walk$inp_maj_left;
+    reg  [12:0] edge_walk$inp_maj_j;
+    reg  [12:0] edge_walk$inp_maj_count;
+    reg  [12:0] edge_walk$inp_maj_x;
+    reg  [20:0] edge_walk$inp_maj_r;
+    reg  [16:0] edge_walk$inp_maj_q;
+    reg  [20:0] edge_walk$inp_maj_rho;
+    reg  [20:0] edge_walk$inp_maj_d;
+    reg  [35:0] edge_walk$inp_maj_at_z;
+    reg  [31:0] edge_walk$inp_maj_at_c0;
+    reg  [31:0] edge_walk$inp_maj_at_c1;
+    reg  [31:0] edge_walk$inp_maj_at_c2;
+    reg  [39:0] edge_walk$inp_maj_inc0_z;
+    reg  [35:0] edge_walk$inp_maj_inc0_c0;
+    reg  [35:0] edge_walk$inp_maj_inc0_c1;
+    reg  [35:0] edge_walk$inp_maj_inc0_c2;
+    reg  [39:0] edge_walk$inp_maj_inc1_z;
+    reg  [35:0] edge_walk$inp_maj_inc1_c0;
+    reg  [35:0] edge_walk$inp_maj_inc1_c1;
+    reg  [35:0] edge_walk$inp_maj_inc1_c2;
+    reg  [12:0] edge_walk$inp_short0_j;
+    reg  [12:0] edge_walk$inp_short0_count;
+    reg  [12:0] edge_walk$inp_short0_x;
+    reg  [20:0] edge_walk$inp_short0_r;
+    reg  [16:0] edge_walk$inp_short0_q;
+    reg  [20:0] edge_walk$inp_short0_rho;
+    reg  [20:0] edge_walk$inp_short0_d;
+    reg  [35:0] edge_walk$inp_short0_at_z;
+    reg  [31:0] edge_walk$inp_short0_at_c0;
+    reg  [31:0] edge_walk$inp_short0_at_c1;
+    reg  [31:0] edge_walk$inp_short0_at_c2;
+    reg  [39:0] edge_walk$inp_short0_inc0_z;
+    reg  [35:0] edge_walk$inp_short0_inc0_c0;
+    reg  [35:0] edge_walk$inp_short0_inc0_c1;
+    reg  [35:0] edge_walk$inp_short0_inc0_c2;
+    reg  [39:0] edge_walk$inp_short0_inc1_z;
+    reg  [35:0] edge_walk$inp_short0_inc1_c0;
+    reg  [35:0] edge_walk$inp_short0_inc1_c1;
+    reg  [35:0] edge_walk$inp_short0_inc1_c2;
+    reg  [12:0] edge_walk$inp_short1_j;
+    reg  [12:0] edge_walk$inp_short1_count;
+    reg  [12:0] edge_walk$inp_short1_x;
+    reg  [20:0] edge_walk$inp_short1_r;
+    reg  [16:0] edge_walk$inp_short1_q;
+    reg  [20:0] edge_walk$inp_short1_rho;
+    reg  [20:0] edge_walk$inp_short1_d;
+    reg  [35:0] edge_walk$inp_short1_at_z;
+    reg  [31:0] edge_walk$inp_short1_at_c0;
+    reg  [31:0] edge_walk$inp_short1_at_c1;
+    reg  [31:0] edge_walk$inp_short1_at_c2;
+    reg  [39:0] edge_walk$inp_short1_inc0_z;
+    reg  [35:0] edge_walk$inp_short1_inc0_c0;
+    reg  [35:0] edge_walk$inp_short1_inc0_c1;
+    reg  [35:0] edge_walk$inp_short1_inc0_c2;
+    reg  [39:0] edge_walk$inp_short1_inc1_z;
+    reg  [35:0] edge_walk$inp_short1_inc1_c0;
+    reg  [35:0] edge_walk$inp_short1_inc1_c1;
+    reg  [35:0] edge_walk$inp_short1_inc1_c2;
+    reg  [39:0] edge_walk$inp_ddx_z;
+    reg  [35:0] edge_walk$inp_ddx_c0;
+    reg  [35:0] edge_walk$inp_ddx_c1;
+    reg  [35:0] edge_walk$inp_ddx_c2;
+    wire  edge_walk$out_valid;
+    reg  edge_walk$out_ready;
+    wire  [9:0] edge_walk$out_y;
+    wire  [12:0] edge_walk$out_xl;
+    wire  [12:0] edge_walk$out_xr;
+    wire  [35:0] edge_walk$out_left_z;
+    wire  [31:0] edge_walk$out_left_c0;
+    wire  [31:0] edge_walk$out_left_c1;
+    wire  [31:0] edge_walk$out_left_c2;
+    wire  [35:0] edge_walk$out_right_z;
+    wire  [31:0] edge_walk$out_right_c0;
+    wire  [31:0] edge_walk$out_right_c1;
+    wire  [31:0] edge_walk$out_right_c2;
+    wire  [39:0] edge_walk$out_ddx_z;
+    wire  [35:0] edge_walk$out_ddx_c0;
+    wire  [35:0] edge_walk$out_ddx_c1;
+    wire  [35:0] edge_walk$out_ddx_c2;
+    reg  fifo$clock;
+    reg  fifo$inp_valid;
+    wire  fifo$inp_ready;
+    reg  [9:0] fifo$inp_y;
+    reg  [12:0] fifo$inp_xl;
+    reg  [12:0] fifo$inp_xr;
+    reg  [35:0] fifo$inp_left_z;
+    reg  [31:0] fifo$inp_left_c0;
+    reg  [31:0] fifo$inp_left_c1;
+    reg  [31:0] fifo$inp_left_c2;
+    reg  [35:0] fifo$inp_right_z;
+    reg  [31:0] fifo$inp_right_c0;
+    reg  [31:0] fifo$inp_right_c1;
+    reg  [31:0] fifo$inp_right_c2;
+    reg  [39:0] fifo$inp_ddx_z;
+    reg  [35:0] fifo$inp_ddx_c0;
+    reg  [35:0] fifo$inp_ddx_c1;
+    reg  [35:0] fifo$inp_ddx_c2;
+    wire  fifo$out_valid;
+    reg  fifo$out_ready;
+    wire  [9:0] fifo$out_y;
+    wire  [12:0] fifo$out_xl;
+    wire  [12:0] fifo$out_xr;
+    wire  [35:0] fifo$out_left_z;
+    wire  [31:0] fifo$out_left_c0;
+    wire  [31:0] fifo$out_left_c1;
+    wire  [31:0] fifo$out_left_c2;
+    wire  [35:0] fifo$out_right_z;
+    wire  [31:0] fifo$out_right_c0;
+    wire  [31:0] fifo$out_right_c1;
+    wire  [31:0] fifo$out_right_c2;
+    wire  [39:0] fifo$out_ddx_z;
+    wire  [35:0] fifo$out_ddx_c0;
+    wire  [35:0] fifo$out_ddx_c1;
+    wire  [35:0] fifo$out_ddx_c2;
+    wire  fifo$empty;
+    reg  span$clock;
+    reg  [10:0] span$width;
+    reg  span$inp_valid;
+    wire  span$inp_ready;
+    reg  [9:0] span$inp_y;
+    reg  [12:0] span$inp_xl;
+    reg  [12:0] span$inp_xr;
+    reg  [35:0] span$inp_left_z;
+    reg  [31:0] span$inp_left_c0;
+    reg  [31:0] span$inp_left_c1;
+    reg  [31:0] span$inp_left_c2;
+    reg  [35:0] span$inp_right_z;
+    reg  [31:0] span$inp_right_c0;
+    reg  [31:0] span$inp_right_c1;
+    reg  [31:0] span$inp_right_c2;
+    reg  [39:0] span$inp_ddx_z;
+    reg  [35:0] span$inp_ddx_c0;
+    reg  [35:0] span$inp_ddx_c1;
+    reg  [35:0] span$inp_ddx_c2;
+    wire  span$out_valid;
+    reg  span$out_ready;
+    wire  [9:0] span$out_x;
+    wire  [9:0] span$out_y;
+    wire  [15:0] span$out_z;
+    wire  [7:0] span$out_rgb0;
+    wire  [7:0] span$out_rgb1;
+    wire  [7:0] span$out_rgb2;
+    wire  span$idle;
+    reg  pixel_out$clock;
+    reg  pixel_out$inp_valid;
+    wire  pixel_out$inp_ready;
+    reg  [9:0] pixel_out$inp_x;
+    reg  [9:0] pixel_out$inp_y;
+    reg  [15:0] pixel_out$inp_z;
+    reg  [7:0] pixel_out$inp_rgb0;
+    reg  [7:0] pixel_out$inp_rgb1;
+    reg  [7:0] pixel_out$inp_rgb2;
+    reg  pixel_out$mem_ready;
+    wire  pixel_out$rd_en;
+    wire  [19:0] pixel_out$rd_addr;
+    reg  [15:0] pixel_out$rd_z;
+    wire  pixel_out$wr_en;
+    wire  [19:0] pixel_out$wr_addr;
+    wire  [15:0] pixel_out$wr_z;
+    wire  [23:0] pixel_out$wr_rgb;
+    wire  pixel_out$idle;
+    reg  last_in$d;
+    wire  last_in$q;
+    reg  last_in$clock;
+    reg  in_setup$d;
+    wire  in_setup$q;
+    reg  in_setup$clock;
+    
+    // Sub module instances
+    raster_top$cull_sort cull_sort(
+        .clock(cull_sort$clock),
+        .width(cull_sort$width),
+        .height(cull_sort$height),
+        .cull_back(cull_sort$cull_back),
+        .inp_valid(cull_sort$inp_valid),
+        .inp_ready(cull_sort$inp_ready),
+        .inp_v0_x(cull_sort$inp_v0_x),
+        .inp_v0_y(cull_sort$inp_v0_y),
+        .inp_v0_z(cull_sort$inp_v0_z),
+        .inp_v0_c0(cull_sort$inp_v0_c0),
+        .inp_v0_c1(cull_sort$inp_v0_c1),
+        .inp_v0_c2(cull_sort$inp_v0_c2),
+        .inp_v0_iw(cull_sort$inp_v0_iw),
+        .inp_v1_x(cull_sort$inp_v1_x),
+        .inp_v1_y(cull_sort$inp_v1_y),
+        .inp_v1_z(cull_sort$inp_v1_z),
+        .inp_v1_c0(cull_sort$inp_v1_c0),
+        .inp_v1_c1(cull_sort$inp_v1_c1),
+        .inp_v1_c2(cull_sort$inp_v1_c2),
+        .inp_v1_iw(cull_sort$inp_v1_iw),
+        .inp_v2_x(cull_sort$inp_v2_x),
+        .inp_v2_y(cull_sort$inp_v2_y),
+        .inp_v2_z(cull_sort$inp_v2_z),
+        .inp_v2_c0(cull_sort$inp_v2_c0),
+        .inp_v2_c1(cull_sort$inp_v2_c1),
+        .inp_v2_c2(cull_sort$inp_v2_c2),
+        .inp_v2_iw(cull_sort$inp_v2_iw),
+        .out_valid(cull_sort$out_valid),
+        .out_ready(cull_sort$out_ready),
+        .out_v0_x(cull_sort$out_v0_x),
+        .out_v0_y(cull_sort$out_v0_y),
+        .out_v0_z(cull_sort$out_v0_z),
+        .out_v0_c0(cull_sort$out_v0_c0),
+        .out_v0_c1(cull_sort$out_v0_c1),
+        .out_v0_c2(cull_sort$out_v0_c2),
+        .out_v0_iw(cull_sort$out_v0_iw),
+        .out_v1_x(cull_sort$out_v1_x),
+        .out_v1_y(cull_sort$out_v1_y),
+        .out_v1_z(cull_sort$out_v1_z),
+        .out_v1_c0(cull_sort$out_v1_c0),
+        .out_v1_c1(cull_sort$out_v1_c1),
+        .out_v1_c2(cull_sort$out_v1_c2),
+        .out_v1_iw(cull_sort$out_v1_iw),
+        .out_v2_x(cull_sort$out_v2_x),
+        .out_v2_y(cull_sort$out_v2_y),
+        .out_v2_z(cull_sort$out_v2_z),
+        .out_v2_c0(cull_sort$out_v2_c0),
+        .out_v2_c1(cull_sort$out_v2_c1),
+        .out_v2_c2(cull_sort$out_v2_c2),
+        .out_v2_iw(cull_sort$out_v2_iw),
+        .out_crosses(cull_sort$out_crosses),
+        .verdict_valid(cull_sort$verdict_valid),
+        .verdict_code(cull_sort$verdict_code),
+        .verdict_outside(cull_sort$verdict_outside)
+    );
+    raster_top$triangle_setup triangle_setup(
+        .clock(triangle_setup$clock),
+        .inp_valid(triangle_setup$inp_valid),
+        .inp_ready(triangle_setup$inp_ready),
+        .inp_v0_x(triangle_setup$inp_v0_x),
+        .inp_v0_y(triangle_setup$inp_v0_y),
+        .inp_v0_z(triangle_setup$inp_v0_z),
+        .inp_v0_c0(triangle_setup$inp_v0_c0),
+        .inp_v0_c1(triangle_setup$inp_v0_c1),
+        .inp_v0_c2(triangle_setup$inp_v0_c2),
+        .inp_v1_x(triangle_setup$inp_v1_x),
+        .inp_v1_y(triangle_setup$inp_v1_y),
+        .inp_v1_z(triangle_setup$inp_v1_z),
+        .inp_v1_c0(triangle_setup$inp_v1_c0),
+        .inp_v1_c1(triangle_setup$inp_v1_c1),
+        .inp_v1_c2(triangle_setup$inp_v1_c2),
+        .inp_v2_x(triangle_setup$inp_v2_x),
+        .inp_v2_y(triangle_setup$inp_v2_y),
+        .inp_v2_z(triangle_setup$inp_v2_z),
+        .inp_v2_c0(triangle_setup$inp_v2_c0),
+        .inp_v2_c1(triangle_setup$inp_v2_c1),
+        .inp_v2_c2(triangle_setup$inp_v2_c2),
+        .inp_crosses(triangle_setup$inp_crosses),
+        .out_valid(triangle_setup$out_valid),
+        .out_ready(triangle_setup$out_ready),
+        .out_walk(triangle_setup$out_walk),
+        .out_maj_left(triangle_setup$out_maj_left),
+        .out_maj_j(triangle_setup$out_maj_j),
+        .out_maj_count(triangle_setup$out_maj_count),
+        .out_maj_x(triangle_setup$out_maj_x),
+        .out_maj_r(triangle_setup$out_maj_r),
+        .out_maj_q(triangle_setup$out_maj_q),
+        .out_maj_rho(triangle_setup$out_maj_rho),
+        .out_maj_d(triangle_setup$out_maj_d),
+        .out_maj_at_z(triangle_setup$out_maj_at_z),
+        .out_maj_at_c0(triangle_setup$out_maj_at_c0),
+        .out_maj_at_c1(triangle_setup$out_maj_at_c1),
+        .out_maj_at_c2(triangle_setup$out_maj_at_c2),
+        .out_maj_inc0_z(triangle_setup$out_maj_inc0_z),
+        .out_maj_inc0_c0(triangle_setup$out_maj_inc0_c0),
+        .out_maj_inc0_c1(triangle_setup$out_maj_inc0_c1),
+        .out_maj_inc0_c2(triangle_setup$out_maj_inc0_c2),
+        .out_maj_inc1_z(triangle_setup$out_maj_inc1_z),
+        .out_maj_inc1_c0(triangle_setup$out_maj_inc1_c0),
+        .out_maj_inc1_c1(triangle_setup$out_maj_inc1_c1),
+        .out_maj_inc1_c2(triangle_setup$out_maj_inc1_c2),
+        .out_short0_j(triangle_setup$out_short0_j),
+        .out_short0_count(triangle_setup$out_short0_count),
+        .out_short0_x(triangle_setup$out_short0_x),
+        .out_short0_r(triangle_setup$out_short0_r),
+        .out_short0_q(triangle_setup$out_short0_q),
+        .out_short0_rho(triangle_setup$out_short0_rho),
+        .out_short0_d(triangle_setup$out_short0_d),
+        .out_short0_at_z(triangle_setup$out_short0_at_z),
+        .out_short0_at_c0(triangle_setup$out_short0_at_c0),
+        .out_short0_at_c1(triangle_setup$out_short0_at_c1),
+        .out_short0_at_c2(triangle_setup$out_short0_at_c2),
+        .out_short0_inc0_z(triangle_setup$out_short0_inc0_z),
+        .out_short0_inc0_c0(triangle_setup$out_short0_inc0_c0),
+        .out_short0_inc0_c1(triangle_setup$out_short0_inc0_c1),
+        .out_short0_inc0_c2(triangle_setup$out_short0_inc0_c2),
+        .out_short0_inc1_z(triangle_setup$out_short0_inc1_z),
+        .out_short0_inc1_c0(triangle_setup$out_short0_inc1_c0),
+        .out_short0_inc1_c1(triangle_setup$out_short0_inc1_c1),
+        .out_short0_inc1_c2(triangle_setup$out_short0_inc1_c2),
+        .out_short1_j(triangle_setup$out_short1_j),
+        .out_short1_count(triangle_setup$out_short1_count),
+        .out_short1_x(triangle_setup$out_short1_x),
+        .out_short1_r(triangle_setup$out_short1_r),
+        .out_short1_q(triangle_setup$out_short1_q),
+        .out_short1_rho(triangle_setup$out_short1_rho),
+        .out_short1_d(triangle_setup$out_short1_d),
+        .out_short1_at_z(triangle_setup$out_short1_at_z),
+        .out_short1_at_c0(triangle_setup$out_short1_at_c0),
+        .out_short1_at_c1(triangle_setup$out_short1_at_c1),
+        .out_short1_at_c2(triangle_setup$out_short1_at_c2),
+        .out_short1_inc0_z(triangle_setup$out_short1_inc0_z),
+        .out_short1_inc0_c0(triangle_setup$out_short1_inc0_c0),
+        .out_short1_inc0_c1(triangle_setup$out_short1_inc0_c1),
+        .out_short1_inc0_c2(triangle_setup$out_short1_inc0_c2),
+        .out_short1_inc1_z(triangle_setup$out_short1_inc1_z),
+        .out_short1_inc1_c0(triangle_setup$out_short1_inc1_c0),
+        .out_short1_inc1_c1(triangle_setup$out_short1_inc1_c1),
+        .out_short1_inc1_c2(triangle_setup$out_short1_inc1_c2),
+        .out_ddx_z(triangle_setup$out_ddx_z),
+        .out_ddx_c0(triangle_setup$out_ddx_c0),
+        .out_ddx_c1(triangle_setup$out_ddx_c1),
+        .out_ddx_c2(triangle_setup$out_ddx_c2)
+    );
+    raster_top$edge_walk edge_walk(
+        .clock(edge_walk$clock),
+        .height(edge_walk$height),
+        .inp_valid(edge_walk$inp_valid),
+        .inp_ready(edge_walk$inp_ready),
+        .inp_walk(edge_walk$inp_walk),
+        .inp_maj_left(edge_walk$inp_maj_left),
+        .inp_maj_j(edge_walk$inp_maj_j),
+        .inp_maj_count(edge_walk$inp_maj_count),
+        .inp_maj_x(edge_walk$inp_maj_x),
+        .inp_maj_r(edge_walk$inp_maj_r),
+        .inp_maj_q(edge_walk$inp_maj_q),
+        .inp_maj_rho(edge_walk$inp_maj_rho),
+        .inp_maj_d(edge_walk$inp_maj_d),
+        .inp_maj_at_z(edge_walk$inp_maj_at_z),
+        .inp_maj_at_c0(edge_walk$inp_maj_at_c0),
+        .inp_maj_at_c1(edge_walk$inp_maj_at_c1),
+        .inp_maj_at_c2(edge_walk$inp_maj_at_c2),
+        .inp_maj_inc0_z(edge_walk$inp_maj_inc0_z),
+        .inp_maj_inc0_c0(edge_walk$inp_maj_inc0_c0),
+        .inp_maj_inc0_c1(edge_walk$inp_maj_inc0_c1),
+        .inp_maj_inc0_c2(edge_walk$inp_maj_inc0_c2),
+        .inp_maj_inc1_z(edge_walk$inp_maj_inc1_z),
+        .inp_maj_inc1_c0(edge_walk$inp_maj_inc1_c0),
+        .inp_maj_inc1_c1(edge_walk$inp_maj_inc1_c1),
+        .inp_maj_inc1_c2(edge_walk$inp_maj_inc1_c2),
+        .inp_short0_j(edge_walk$inp_short0_j),
+        .inp_short0_count(edge_walk$inp_short0_count),
+        .inp_short0_x(edge_walk$inp_short0_x),
+        .inp_short0_r(edge_walk$inp_short0_r),
+        .inp_short0_q(edge_walk$inp_short0_q),
+        .inp_short0_rho(edge_walk$inp_short0_rho),
+        .inp_short0_d(edge_walk$inp_short0_d),
+        .inp_short0_at_z(edge_walk$inp_short0_at_z),
+        .inp_short0_at_c0(edge_walk$inp_short0_at_c0),
+        .inp_short0_at_c1(edge_walk$inp_short0_at_c1),
+        .inp_short0_at_c2(edge_walk$inp_short0_at_c2),
+        .inp_short0_inc0_z(edge_walk$inp_short0_inc0_z),
+        .inp_short0_inc0_c0(edge_walk$inp_short0_inc0_c0),
+        .inp_short0_inc0_c1(edge_walk$inp_short0_inc0_c1),
+        .inp_short0_inc0_c2(edge_walk$inp_short0_inc0_c2),
+        .inp_short0_inc1_z(edge_walk$inp_short0_inc1_z),
+        .inp_short0_inc1_c0(edge_walk$inp_short0_inc1_c0),
+        .inp_short0_inc1_c1(edge_walk$inp_short0_inc1_c1),
+        .inp_short0_inc1_c2(edge_walk$inp_short0_inc1_c2),
+        .inp_short1_j(edge_walk$inp_short1_j),
+        .inp_short1_count(edge_walk$inp_short1_count),
+        .inp_short1_x(edge_walk$inp_short1_x),
+        .inp_short1_r(edge_walk$inp_short1_r),
+        .inp_short1_q(edge_walk$inp_short1_q),
+        .inp_short1_rho(edge_walk$inp_short1_rho),
+        .inp_short1_d(edge_walk$inp_short1_d),
+        .inp_short1_at_z(edge_walk$inp_short1_at_z),
+        .inp_short1_at_c0(edge_walk$inp_short1_at_c0),
+        .inp_short1_at_c1(edge_walk$inp_short1_at_c1),
+        .inp_short1_at_c2(edge_walk$inp_short1_at_c2),
+        .inp_short1_inc0_z(edge_walk$inp_short1_inc0_z),
+        .inp_short1_inc0_c0(edge_walk$inp_short1_inc0_c0),
+        .inp_short1_inc0_c1(edge_walk$inp_short1_inc0_c1),
+        .inp_short1_inc0_c2(edge_walk$inp_short1_inc0_c2),
+        .inp_short1_inc1_z(edge_walk$inp_short1_inc1_z),
+        .inp_short1_inc1_c0(edge_walk$inp_short1_inc1_c0),
+        .inp_short1_inc1_c1(edge_walk$inp_short1_inc1_c1),
+        .inp_short1_inc1_c2(edge_walk$inp_short1_inc1_c2),
+        .inp_ddx_z(edge_walk$inp_ddx_z),
+        .inp_ddx_c0(edge_walk$inp_ddx_c0),
+        .inp_ddx_c1(edge_walk$inp_ddx_c1),
+        .inp_ddx_c2(edge_walk$inp_ddx_c2),
+        .out_valid(edge_walk$out_valid),
+        .out_ready(edge_walk$out_ready),
+        .out_y(edge_walk$out_y),
+        .out_xl(edge_walk$out_xl),
+        .out_xr(edge_walk$out_xr),
+        .out_left_z(edge_walk$out_left_z),
+        .out_left_c0(edge_walk$out_left_c0),
+        .out_left_c1(edge_walk$out_left_c1),
+        .out_left_c2(edge_walk$out_left_c2),
+        .out_right_z(edge_walk$out_right_z),
+        .out_right_c0(edge_walk$out_right_c0),
+        .out_right_c1(edge_walk$out_right_c1),
+        .out_right_c2(edge_walk$out_right_c2),
+        .out_ddx_z(edge_walk$out_ddx_z),
+        .out_ddx_c0(edge_walk$out_ddx_c0),
+        .out_ddx_c1(edge_walk$out_ddx_c1),
+        .out_ddx_c2(edge_walk$out_ddx_c2)
+    );
+    raster_top$fifo fifo(
+        .clock(fifo$clock),
+        .inp_valid(fifo$inp_valid),
+        .inp_ready(fifo$inp_ready),
+        .inp_y(fifo$inp_y),
+        .inp_xl(fifo$inp_xl),
+        .inp_xr(fifo$inp_xr),
+        .inp_left_z(fifo$inp_left_z),
+        .inp_left_c0(fifo$inp_left_c0),
+        .inp_left_c1(fifo$inp_left_c1),
+        .inp_left_c2(fifo$inp_left_c2),
+        .inp_right_z(fifo$inp_right_z),
+        .inp_right_c0(fifo$inp_right_c0),
+        .inp_right_c1(fifo$inp_right_c1),
+        .inp_right_c2(fifo$inp_right_c2),
+        .inp_ddx_z(fifo$inp_ddx_z),
+        .inp_ddx_c0(fifo$inp_ddx_c0),
+        .inp_ddx_c1(fifo$inp_ddx_c1),
+        .inp_ddx_c2(fifo$inp_ddx_c2),
+        .out_valid(fifo$out_valid),
+        .out_ready(fifo$out_ready),
+        .out_y(fifo$out_y),
+        .out_xl(fifo$out_xl),
+        .out_xr(fifo$out_xr),
+        .out_left_z(fifo$out_left_z),
+        .out_left_c0(fifo$out_left_c0),
+        .out_left_c1(fifo$out_left_c1),
+        .out_left_c2(fifo$out_left_c2),
+        .out_right_z(fifo$out_right_z),
+        .out_right_c0(fifo$out_right_c0),
+        .out_right_c1(fifo$out_right_c1),
+        .out_right_c2(fifo$out_right_c2),
+        .out_ddx_z(fifo$out_ddx_z),
+        .out_ddx_c0(fifo$out_ddx_c0),
+        .out_ddx_c1(fifo$out_ddx_c1),
+        .out_ddx_c2(fifo$out_ddx_c2),
+        .empty(fifo$empty)
+    );
+    raster_top$span span(
+        .clock(span$clock),
+        .width(span$width),
+        .inp_valid(span$inp_valid),
+        .inp_ready(span$inp_ready),
+        .inp_y(span$inp_y),
+        .inp_xl(span$inp_xl),
+        .inp_xr(span$inp_xr),
+        .inp_left_z(span$inp_left_z),
+        .inp_left_c0(span$inp_left_c0),
+        .inp_left_c1(span$inp_left_c1),
+        .inp_left_c2(span$inp_left_c2),
+        .inp_right_z(span$inp_right_z),
+        .inp_right_c0(span$inp_right_c0),
+        .inp_right_c1(span$inp_right_c1),
+        .inp_right_c2(span$inp_right_c2),
+        .inp_ddx_z(span$inp_ddx_z),
+        .inp_ddx_c0(span$inp_ddx_c0),
+        .inp_ddx_c1(span$inp_ddx_c1),
+        .inp_ddx_c2(span$inp_ddx_c2),
+        .out_valid(span$out_valid),
+        .out_ready(span$out_ready),
+        .out_x(span$out_x),
+        .out_y(span$out_y),
+        .out_z(span$out_z),
+        .out_rgb0(span$out_rgb0),
+        .out_rgb1(span$out_rgb1),
+        .out_rgb2(span$out_rgb2),
+        .idle(span$idle)
+    );
+    raster_top$pixel_out pixel_out(
+        .clock(pixel_out$clock),
+        .inp_valid(pixel_out$inp_valid),
+        .inp_ready(pixel_out$inp_ready),
+        .inp_x(pixel_out$inp_x),
+        .inp_y(pixel_out$inp_y),
+        .inp_z(pixel_out$inp_z),
+        .inp_rgb0(pixel_out$inp_rgb0),
+        .inp_rgb1(pixel_out$inp_rgb1),
+        .inp_rgb2(pixel_out$inp_rgb2),
+        .mem_ready(pixel_out$mem_ready),
+        .rd_en(pixel_out$rd_en),
+        .rd_addr(pixel_out$rd_addr),
+        .rd_z(pixel_out$rd_z),
+        .wr_en(pixel_out$wr_en),
+        .wr_addr(pixel_out$wr_addr),
+        .wr_z(pixel_out$wr_z),
+        .wr_rgb(pixel_out$wr_rgb),
+        .idle(pixel_out$idle)
+    );
+    raster_top$last_in last_in(
+        .d(last_in$d),
+        .q(last_in$q),
+        .clock(last_in$clock)
+    );
+    raster_top$in_setup in_setup(
+        .d(in_setup$d),
+        .q(in_setup$q),
+        .clock(in_setup$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        last_in$clock = clock;
+        in_setup$clock = clock;
+        last_in$d = last_in$q;
+        in_setup$d = in_setup$q;
+        cull_sort$clock = clock;
+        triangle_setup$clock = clock;
+        edge_walk$clock = clock;
+        fifo$clock = clock;
+        span$clock = clock;
+        pixel_out$clock = clock;
+        cull_sort$width = width;
+        cull_sort$height = height;
+        cull_sort$cull_back = cull_back;
+        cull_sort$inp_valid = inp_valid;
+        inp_ready = cull_sort$inp_ready;
+        cull_sort$inp_v0_x = inp_v0_x;
+        cull_sort$inp_v0_y = inp_v0_y;
+        cull_sort$inp_v0_z = inp_v0_z;
+        cull_sort$inp_v0_c0 = inp_v0_c0;
+        cull_sort$inp_v0_c1 = inp_v0_c1;
+        cull_sort$inp_v0_c2 = inp_v0_c2;
+        cull_sort$inp_v0_iw = inp_v0_iw;
+        cull_sort$inp_v1_x = inp_v1_x;
+        cull_sort$inp_v1_y = inp_v1_y;
+        cull_sort$inp_v1_z = inp_v1_z;
+        cull_sort$inp_v1_c0 = inp_v1_c0;
+        cull_sort$inp_v1_c1 = inp_v1_c1;
+        cull_sort$inp_v1_c2 = inp_v1_c2;
+        cull_sort$inp_v1_iw = inp_v1_iw;
+        cull_sort$inp_v2_x = inp_v2_x;
+        cull_sort$inp_v2_y = inp_v2_y;
+        cull_sort$inp_v2_z = inp_v2_z;
+        cull_sort$inp_v2_c0 = inp_v2_c0;
+        cull_sort$inp_v2_c1 = inp_v2_c1;
+        cull_sort$inp_v2_c2 = inp_v2_c2;
+        cull_sort$inp_v2_iw = inp_v2_iw;
+        verdict_valid = cull_sort$verdict_valid;
+        verdict_code = cull_sort$verdict_code;
+        verdict_outside = cull_sort$verdict_outside;
+        triangle_setup$inp_valid = cull_sort$out_valid;
+        cull_sort$out_ready = triangle_setup$inp_ready;
+        triangle_setup$inp_crosses = cull_sort$out_crosses;
+        triangle_setup$inp_v0_x = cull_sort$out_v0_x;
+        triangle_setup$inp_v0_y = cull_sort$out_v0_y;
+        triangle_setup$inp_v0_z = cull_sort$out_v0_z;
+        triangle_setup$inp_v0_c0 = cull_sort$out_v0_c0;
+        triangle_setup$inp_v0_c1 = cull_sort$out_v0_c1;
+        triangle_setup$inp_v0_c2 = cull_sort$out_v0_c2;
+        triangle_setup$inp_v1_x = cull_sort$out_v1_x;
+        triangle_setup$inp_v1_y = cull_sort$out_v1_y;
+        triangle_setup$inp_v1_z = cull_sort$out_v1_z;
+        triangle_setup$inp_v1_c0 = cull_sort$out_v1_c0;
+        triangle_setup$inp_v1_c1 = cull_sort$out_v1_c1;
+        triangle_setup$inp_v1_c2 = cull_sort$out_v1_c2;
+        triangle_setup$inp_v2_x = cull_sort$out_v2_x;
+        triangle_setup$inp_v2_y = cull_sort$out_v2_y;
+        triangle_setup$inp_v2_z = cull_sort$out_v2_z;
+        triangle_setup$inp_v2_c0 = cull_sort$out_v2_c0;
+        triangle_setup$inp_v2_c1 = cull_sort$out_v2_c1;
+        triangle_setup$inp_v2_c2 = cull_sort$out_v2_c2;
+        edge_walk$height = height;
+        edge_walk$inp_valid = triangle_setup$out_valid;
+        triangle_setup$out_ready = edge_walk$inp_ready;
+        edge_walk$inp_walk = triangle_setup$out_walk;
+        edge_walk$inp_maj_left = triangle_setup$out_maj_left;
+        edge_walk$inp_maj_j = triangle_setup$out_maj_j;
+        edge_walk$inp_maj_count = triangle_setup$out_maj_count;
+        edge_walk$inp_maj_x = triangle_setup$out_maj_x;
+        edge_walk$inp_maj_r = triangle_setup$out_maj_r;
+        edge_walk$inp_maj_q = triangle_setup$out_maj_q;
+        edge_walk$inp_maj_rho = triangle_setup$out_maj_rho;
+        edge_walk$inp_maj_d = triangle_setup$out_maj_d;
+        edge_walk$inp_maj_at_z = triangle_setup$out_maj_at_z;
+        edge_walk$inp_maj_at_c0 = triangle_setup$out_maj_at_c0;
+        edge_walk$inp_maj_at_c1 = triangle_setup$out_maj_at_c1;
+        edge_walk$inp_maj_at_c2 = triangle_setup$out_maj_at_c2;
+        edge_walk$inp_maj_inc0_z = triangle_setup$out_maj_inc0_z;
+        edge_walk$inp_maj_inc0_c0 = triangle_setup$out_maj_inc0_c0;
+        edge_walk$inp_maj_inc0_c1 = triangle_setup$out_maj_inc0_c1;
+        edge_walk$inp_maj_inc0_c2 = triangle_setup$out_maj_inc0_c2;
+        edge_walk$inp_maj_inc1_z = triangle_setup$out_maj_inc1_z;
+        edge_walk$inp_maj_inc1_c0 = triangle_setup$out_maj_inc1_c0;
+        edge_walk$inp_maj_inc1_c1 = triangle_setup$out_maj_inc1_c1;
+        edge_walk$inp_maj_inc1_c2 = triangle_setup$out_maj_inc1_c2;
+        edge_walk$inp_short0_j = triangle_setup$out_short0_j;
+        edge_walk$inp_short0_count = triangle_setup$out_short0_count;
+        edge_walk$inp_short0_x = triangle_setup$out_short0_x;
+        edge_walk$inp_short0_r = triangle_setup$out_short0_r;
+        edge_walk$inp_short0_q = triangle_setup$out_short0_q;
+        edge_walk$inp_short0_rho = triangle_setup$out_short0_rho;
+        edge_walk$inp_short0_d = triangle_setup$out_short0_d;
+        edge_walk$inp_short0_at_z = triangle_setup$out_short0_at_z;
+        edge_walk$inp_short0_at_c0 = triangle_setup$out_short0_at_c0;
+        edge_walk$inp_short0_at_c1 = triangle_setup$out_short0_at_c1;
+        edge_walk$inp_short0_at_c2 = triangle_setup$out_short0_at_c2;
+        edge_walk$inp_short0_inc0_z = triangle_setup$out_short0_inc0_z;
+        edge_walk$inp_short0_inc0_c0 = triangle_setup$out_short0_inc0_c0;
+        edge_walk$inp_short0_inc0_c1 = triangle_setup$out_short0_inc0_c1;
+        edge_walk$inp_short0_inc0_c2 = triangle_setup$out_short0_inc0_c2;
+        edge_walk$inp_short0_inc1_z = triangle_setup$out_short0_inc1_z;
+        edge_walk$inp_short0_inc1_c0 = triangle_setup$out_short0_inc1_c0;
+        edge_walk$inp_short0_inc1_c1 = triangle_setup$out_short0_inc1_c1;
+        edge_walk$inp_short0_inc1_c2 = triangle_setup$out_short0_inc1_c2;
+        edge_walk$inp_short1_j = triangle_setup$out_short1_j;
+        edge_walk$inp_short1_count = triangle_setup$out_short1_count;
+        edge_walk$inp_short1_x = triangle_setup$out_short1_x;
+        edge_walk$inp_short1_r = triangle_setup$out_short1_r;
+        edge_walk$inp_short1_q = triangle_setup$out_short1_q;
+        edge_walk$inp_short1_rho = triangle_setup$out_short1_rho;
+        edge_walk$inp_short1_d = triangle_setup$out_short1_d;
+        edge_walk$inp_short1_at_z = triangle_setup$out_short1_at_z;
+        edge_walk$inp_short1_at_c0 = triangle_setup$out_short1_at_c0;
+        edge_walk$inp_short1_at_c1 = triangle_setup$out_short1_at_c1;
+        edge_walk$inp_short1_at_c2 = triangle_setup$out_short1_at_c2;
+        edge_walk$inp_short1_inc0_z = triangle_setup$out_short1_inc0_z;
+        edge_walk$inp_short1_inc0_c0 = triangle_setup$out_short1_inc0_c0;
+        edge_walk$inp_short1_inc0_c1 = triangle_setup$out_short1_inc0_c1;
+        edge_walk$inp_short1_inc0_c2 = triangle_setup$out_short1_inc0_c2;
+        edge_walk$inp_short1_inc1_z = triangle_setup$out_short1_inc1_z;
+        edge_walk$inp_short1_inc1_c0 = triangle_setup$out_short1_inc1_c0;
+        edge_walk$inp_short1_inc1_c1 = triangle_setup$out_short1_inc1_c1;
+        edge_walk$inp_short1_inc1_c2 = triangle_setup$out_short1_inc1_c2;
+        edge_walk$inp_ddx_z = triangle_setup$out_ddx_z;
+        edge_walk$inp_ddx_c0 = triangle_setup$out_ddx_c0;
+        edge_walk$inp_ddx_c1 = triangle_setup$out_ddx_c1;
+        edge_walk$inp_ddx_c2 = triangle_setup$out_ddx_c2;
+        fifo$inp_valid = edge_walk$out_valid;
+        edge_walk$out_ready = fifo$inp_ready;
+        span$width = width;
+        span$inp_valid = fifo$out_valid;
+        fifo$out_ready = span$inp_ready;
+        fifo$inp_y = edge_walk$out_y;
+        fifo$inp_xl = edge_walk$out_xl;
+        fifo$inp_xr = edge_walk$out_xr;
+        fifo$inp_left_z = edge_walk$out_left_z;
+        fifo$inp_left_c0 = edge_walk$out_left_c0;
+        fifo$inp_left_c1 = edge_walk$out_left_c1;
+        fifo$inp_left_c2 = edge_walk$out_left_c2;
+        fifo$inp_right_z = edge_walk$out_right_z;
+        fifo$inp_right_c0 = edge_walk$out_right_c0;
+        fifo$inp_right_c1 = edge_walk$out_right_c1;
+        fifo$inp_right_c2 = edge_walk$out_right_c2;
+        fifo$inp_ddx_z = edge_walk$out_ddx_z;
+        fifo$inp_ddx_c0 = edge_walk$out_ddx_c0;
+        fifo$inp_ddx_c1 = edge_walk$out_ddx_c1;
+        fifo$inp_ddx_c2 = edge_walk$out_ddx_c2;
+        span$inp_y = fifo$out_y;
+        span$inp_xl = fifo$out_xl;
+        span$inp_xr = fifo$out_xr;
+        span$inp_left_z = fifo$out_left_z;
+        span$inp_left_c0 = fifo$out_left_c0;
+        span$inp_left_c1 = fifo$out_left_c1;
+        span$inp_left_c2 = fifo$out_left_c2;
+        span$inp_right_z = fifo$out_right_z;
+        span$inp_right_c0 = fifo$out_right_c0;
+        span$inp_right_c1 = fifo$out_right_c1;
+        span$inp_right_c2 = fifo$out_right_c2;
+        span$inp_ddx_z = fifo$out_ddx_z;
+        span$inp_ddx_c0 = fifo$out_ddx_c0;
+        span$inp_ddx_c1 = fifo$out_ddx_c1;
+        span$inp_ddx_c2 = fifo$out_ddx_c2;
+        pixel_out$inp_valid = span$out_valid;
+        span$out_ready = pixel_out$inp_ready;
+        pixel_out$inp_x = span$out_x;
+        pixel_out$inp_y = span$out_y;
+        pixel_out$inp_z = span$out_z;
+        pixel_out$inp_rgb0 = span$out_rgb0;
+        pixel_out$inp_rgb1 = span$out_rgb1;
+        pixel_out$inp_rgb2 = span$out_rgb2;
+        pixel_out$mem_ready = mem_ready;
+        pixel_out$rd_z = rd_z;
+        rd_en = pixel_out$rd_en;
+        rd_addr = pixel_out$rd_addr;
+        wr_en = pixel_out$wr_en;
+        wr_addr = pixel_out$wr_addr;
+        wr_z = pixel_out$wr_z;
+        wr_rgb = pixel_out$wr_rgb;
+        if (inp_valid & cull_sort$inp_ready) begin
+            last_in$d = inp_last;
+        end
+        if (cull_sort$out_valid & triangle_setup$inp_ready) begin
+            in_setup$d = 1'b1;
+        end
+        else if (triangle_setup$out_valid & edge_walk$inp_ready) begin
+            in_setup$d = 1'b0;
+        end
+        done = last_in$q & ~cull_sort$out_valid & ~in_setup$q & edge_walk$inp_ready & fifo$empty & span$idle & pixel_out$idle;
+    end
+    
+endmodule // raster_top
+
+
+module raster_top$cull_sort(clock,width,height,cull_back,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v0_iw,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v1_iw,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_v2_iw,out_valid,out_ready,out_v0_x,out_v0_y,out_v0_z,out_v0_c0,out_v0_c1,out_v0_c2,out_v0_iw,out_v1_x,out_v1_y,out_v1_z,out_v1_c0,out_v1_c1,out_v1_c2,out_v1_iw,out_v2_x,out_v2_y,out_v2_z,out_v2_c0,out_v2_c1,out_v2_c2,out_v2_iw,out_crosses,verdict_valid,verdict_code,verdict_outside);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [10:0] width;
+    input wire  [10:0] height;
+    input wire  cull_back;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  [15:0] inp_v0_x;
+    input wire  [15:0] inp_v0_y;
+    input wire  [17:0] inp_v0_z;
+    input wire  [7:0] inp_v0_c0;
+    input wire  [7:0] inp_v0_c1;
+    input wire  [7:0] inp_v0_c2;
+    input wire  [15:0] inp_v0_iw;
+    input wire  [15:0] inp_v1_x;
+    input wire  [15:0] inp_v1_y;
+    input wire  [17:0] inp_v1_z;
+    input wire  [7:0] inp_v1_c0;
+    input wire  [7:0] inp_v1_c1;
+    input wire  [7:0] inp_v1_c2;
+    input wire  [15:0] inp_v1_iw;
+    input wire  [15:0] inp_v2_x;
+    input wire  [15:0] inp_v2_y;
+    input wire  [17:0] inp_v2_z;
+    input wire  [7:0] inp_v2_c0;
+    input wire  [7:0] inp_v2_c1;
+    input wire  [7:0] inp_v2_c2;
+    input wire  [15:0] inp_v2_iw;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [15:0] out_v0_x;
+    output reg  [15:0] out_v0_y;
+    output reg  [17:0] out_v0_z;
+    output reg  [7:0] out_v0_c0;
+    output reg  [7:0] out_v0_c1;
+    output reg  [7:0] out_v0_c2;
+    output reg  [15:0] out_v0_iw;
+    output reg  [15:0] out_v1_x;
+    output reg  [15:0] out_v1_y;
+    output reg  [17:0] out_v1_z;
+    output reg  [7:0] out_v1_c0;
+    output reg  [7:0] out_v1_c1;
+    output reg  [7:0] out_v1_c2;
+    output reg  [15:0] out_v1_iw;
+    output reg  [15:0] out_v2_x;
+    output reg  [15:0] out_v2_y;
+    output reg  [17:0] out_v2_z;
+    output reg  [7:0] out_v2_c0;
+    output reg  [7:0] out_v2_c1;
+    output reg  [7:0] out_v2_c2;
+    output reg  [15:0] out_v2_iw;
+    output reg  [5:0] out_crosses;
+    output reg  verdict_valid;
+    output reg  [1:0] verdict_code;
+    output reg  [5:0] verdict_outside;
+    
+    // Constant declarations
+    localparam  z_max = 18'b1111111111111111;
+    localparam  half = 16'h8000;
+    localparam  xy_msb = 8'hf;
+    localparam  z_msb = 8'h11;
+    localparam  area_msb = 8'h21;
+    localparam  delta_msb = 8'h10;
+    localparam  frac = 8'h4;
+    localparam  passed = 2'b0;
+    localparam  outside = 2'b1;
+    localparam  back_face = 2'b10;
+    localparam  zero_area = 2'b11;
+    
+    // Stub signals
+    reg  [16:0] area_mul$0$a;
+    reg  [16:0] area_mul$0$b;
+    wire  [33:0] area_mul$0$p;
+    reg  [16:0] area_mul$1$a;
+    reg  [16:0] area_mul$1$b;
+    wire  [33:0] area_mul$1$p;
+    reg  [15:0] sx$0$d;
+    wire  [15:0] sx$0$q;
+    reg  sx$0$clock;
+    reg  [15:0] sx$1$d;
+    wire  [15:0] sx$1$q;
+    reg  sx$1$clock;
+    reg  [15:0] sx$2$d;
+    wire  [15:0] sx$2$q;
+    reg  sx$2$clock;
+    reg  [15:0] sy$0$d;
+    wire  [15:0] sy$0$q;
+    reg  sy$0$clock;
+    reg  [15:0] sy$1$d;
+    wire  [15:0] sy$1$q;
+    reg  sy$1$clock;
+    reg  [15:0] sy$2$d;
+    wire  [15:0] sy$2$q;
+    reg  sy$2$clock;
+    reg  [17:0] sz$0$d;
+    wire  [17:0] sz$0$q;
+    reg  sz$0$clock;
+    reg  [17:0] sz$1$d;
+    wire  [17:0] sz$1$q;
+    reg  sz$1$clock;
+    reg  [17:0] sz$2$d;
+    wire  [17:0] sz$2$q;
+    reg  sz$2$clock;
+    reg  [7:0] sc$0$d;
+    wire  [7:0] sc$0$q;
+    reg  sc$0$clock;
+    reg  [7:0] sc$1$d;
+    wire  [7:0] sc$1$q;
+    reg  sc$1$clock;
+    reg  [7:0] sc$2$d;
+    wire  [7:0] sc$2$q;
+    reg  sc$2$clock;
+    reg  [7:0] sc$3$d;
+    wire  [7:0] sc$3$q;
+    reg  sc$3$clock;
+    reg  [7:0] sc$4$d;
+    wire  [7:0] sc$4$q;
+    reg  sc$4$clock;
+    reg  [7:0] sc$5$d;
+    wire  [7:0] sc$5$q;
+    reg  sc$5$clock;
+    reg  [7:0] sc$6$d;
+    wire  [7:0] sc$6$q;
+    reg  sc$6$clock;
+    reg  [7:0] sc$7$d;
+    wire  [7:0] sc$7$q;
+    reg  sc$7$clock;
+    reg  [7:0] sc$8$d;
+    wire  [7:0] sc$8$q;
+    reg  sc$8$clock;
+    reg  [15:0] siw$0$d;
+    wire  [15:0] siw$0$q;
+    reg  siw$0$clock;
+    reg  [15:0] siw$1$d;
+    wire  [15:0] siw$1$q;
+    reg  siw$1$clock;
+    reg  [15:0] siw$2$d;
+    wire  [15:0] siw$2$q;
+    reg  siw$2$clock;
+    reg  [5:0] crosses$d;
+    wire  [5:0] crosses$q;
+    reg  crosses$clock;
+    reg  [1:0] code_r$d;
+    wire  [1:0] code_r$q;
+    reg  code_r$clock;
+    reg  [5:0] outside_r$d;
+    wire  [5:0] outside_r$q;
+    reg  outside_r$clock;
+    reg  full$d;
+    wire  full$q;
+    reg  full$clock;
+    
+    // Local signals
+    reg  [15:0] vx$0;
+    reg  [15:0] vx$1;
+    reg  [15:0] vx$2;
+    reg  [15:0] vy$0;
+    reg  [15:0] vy$1;
+    reg  [15:0] vy$2;
+    reg  [17:0] vz$0;
+    reg  [17:0] vz$1;
+    reg  [17:0] vz$2;
+    reg  [7:0] vc$0;
+    reg  [7:0] vc$1;
+    reg  [7:0] vc$2;
+    reg  [7:0] vc$3;
+    reg  [7:0] vc$4;
+    reg  [7:0] vc$5;
+    reg  [7:0] vc$6;
+    reg  [7:0] vc$7;
+    reg  [7:0] vc$8;
+    reg  [15:0] viw$0;
+    reg  [15:0] viw$1;
+    reg  [15:0] viw$2;
+    reg  [5:0] oc$0;
+    reg  [5:0] oc$1;
+    reg  [5:0] oc$2;
+    reg  left$0;
+    reg  left$1;
+    reg  left$2;
+    reg  right_of$0;
+    reg  right_of$1;
+    reg  right_of$2;
+    reg  top$0;
+    reg  top$1;
+    reg  top$2;
+    reg  below$0;
+    reg  below$1;
+    reg  below$2;
+    reg  near$0;
+    reg  near$1;
+    reg  near$2;
+    reg  far$0;
+    reg  far$1;
+    reg  far$2;
+    reg  [15:0] right;
+    reg  [15:0] bottom;
+    reg  [16:0] e1x;
+    reg  [16:0] e1y;
+    reg  [16:0] e2x;
+    reg  [16:0] e2y;
+    reg  [33:0] area;
+    reg  [15:0] key$0;
+    reg  [15:0] key$1;
+    reg  [15:0] key$2;
+    reg  le01;
+    reg  le12;
+    reg  le02;
+    reg  gt01;
+    reg  gt12;
+    reg  gt02;
+    reg  [1:0] rank$0;
+    reg  [1:0] rank$1;
+    reg  [1:0] rank$2;
+    reg  [1:0] code;
+    reg  take;
+    reg  leave;
+    
+    // Sub module instances
+    raster_top$cull_sort$area_mul$0 area_mul$0(
+        .a(area_mul$0$a),
+        .b(area_mul$0$b),
+        .p(area_mul$0$p)
+    );
+    raster_top$cull_sort$area_mul$1 area_mul$1(
+        .a(area_mul$1$a),
+        .b(area_mul$1$b),
+        .p(area_mul$1$p)
+    );
+    raster_top$cull_sort$sx$0 sx$0(
+        .d(sx$0$d),
+        .q(sx$0$q),
+        .clock(sx$0$clock)
+    );
+    raster_top$cull_sort$sx$1 sx$1(
+        .d(sx$1$d),
+        .q(sx$1$q),
+        .clock(sx$1$clock)
+    );
+    raster_top$cull_sort$sx$2 sx$2(
+        .d(sx$2$d),
+        .q(sx$2$q),
+        .clock(sx$2$clock)
+    );
+    raster_top$cull_sort$sy$0 sy$0(
+        .d(sy$0$d),
+        .q(sy$0$q),
+        .clock(sy$0$clock)
+    );
+    raster_top$cull_sort$sy$1 sy$1(
+        .d(sy$1$d),
+        .q(sy$1$q),
+        .clock(sy$1$clock)
+    );
+    raster_top$cull_sort$sy$2 sy$2(
+        .d(sy$2$d),
+        .q(sy$2$q),
+        .clock(sy$2$clock)
+    );
+    raster_top$cull_sort$sz$0 sz$0(
+        .d(sz$0$d),
+        .q(sz$0$q),
+        .clock(sz$0$clock)
+    );
+    raster_top$cull_sort$sz$1 sz$1(
+        .d(sz$1$d),
+        .q(sz$1$q),
+        .clock(sz$1$clock)
+    );
+    raster_top$cull_sort$sz$2 sz$2(
+        .d(sz$2$d),
+        .q(sz$2$q),
+        .clock(sz$2$clock)
+    );
+    raster_top$cull_sort$sc$0 sc$0(
+        .d(sc$0$d),
+        .q(sc$0$q),
+        .clock(sc$0$clock)
+    );
+    raster_top$cull_sort$sc$1 sc$1(
+        .d(sc$1$d),
+        .q(sc$1$q),
+        .clock(sc$1$clock)
+    );
+    raster_top$cull_sort$sc$2 sc$2(
+        .d(sc$2$d),
+        .q(sc$2$q),
+        .clock(sc$2$clock)
+    );
+    raster_top$cull_sort$sc$3 sc$3(
+        .d(sc$3$d),
+        .q(sc$3$q),
+        .clock(sc$3$clock)
+    );
+    raster_top$cull_sort$sc$4 sc$4(
+        .d(sc$4$d),
+        .q(sc$4$q),
+        .clock(sc$4$clock)
+    );
+    raster_top$cull_sort$sc$5 sc$5(
+        .d(sc$5$d),
+        .q(sc$5$q),
+        .clock(sc$5$clock)
+    );
+    raster_top$cull_sort$sc$6 sc$6(
+        .d(sc$6$d),
+        .q(sc$6$q),
+        .clock(sc$6$clock)
+    );
+    raster_top$cull_sort$sc$7 sc$7(
+        .d(sc$7$d),
+        .q(sc$7$q),
+        .clock(sc$7$clock)
+    );
+    raster_top$cull_sort$sc$8 sc$8(
+        .d(sc$8$d),
+        .q(sc$8$q),
+        .clock(sc$8$clock)
+    );
+    raster_top$cull_sort$siw$0 siw$0(
+        .d(siw$0$d),
+        .q(siw$0$q),
+        .clock(siw$0$clock)
+    );
+    raster_top$cull_sort$siw$1 siw$1(
+        .d(siw$1$d),
+        .q(siw$1$q),
+        .clock(siw$1$clock)
+    );
+    raster_top$cull_sort$siw$2 siw$2(
+        .d(siw$2$d),
+        .q(siw$2$q),
+        .clock(siw$2$clock)
+    );
+    raster_top$cull_sort$crosses crosses(
+        .d(crosses$d),
+        .q(crosses$q),
+        .clock(crosses$clock)
+    );
+    raster_top$cull_sort$code_r code_r(
+        .d(code_r$d),
+        .q(code_r$q),
+        .clock(code_r$clock)
+    );
+    raster_top$cull_sort$outside_r outside_r(
+        .d(outside_r$d),
+        .q(outside_r$q),
+        .clock(outside_r$clock)
+    );
+    raster_top$cull_sort$full full(
+        .d(full$d),
+        .q(full$q),
+        .clock(full$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        crosses$clock = clock;
+        code_r$clock = clock;
+        outside_r$clock = clock;
+        full$clock = clock;
+        crosses$d = crosses$q;
+        code_r$d = code_r$q;
+        outside_r$d = outside_r$q;
+        full$d = full$q;
+        sx$0$clock = clock;
+        sx$0$d = sx$0$q;
+        sy$0$clock = clock;
+        sy$0$d = sy$0$q;
+        sz$0$clock = clock;
+        sz$0$d = sz$0$q;
+        siw$0$clock = clock;
+        siw$0$d = siw$0$q;
+        sx$1$clock = clock;
+        sx$1$d = sx$1$q;
+        sy$1$clock = clock;
+        sy$1$d = sy$1$q;
+        sz$1$clock = clock;
+        sz$1$d = sz$1$q;
+        siw$1$clock = clock;
+        siw$1$d = siw$1$q;
+        sx$2$clock = clock;
+        sx$2$d = sx$2$q;
+        sy$2$clock = clock;
+        sy$2$d = sy$2$q;
+        sz$2$clock = clock;
+        sz$2$d = sz$2$q;
+        siw$2$clock = clock;
+        siw$2$d = siw$2$q;
+        sc$0$clock = clock;
+        sc$0$d = sc$0$q;
+        sc$1$clock = clock;
+        sc$1$d = sc$1$q;
+        sc$2$clock = clock;
+        sc$2$d = sc$2$q;
+        sc$3$clock = clock;
+        sc$3$d = sc$3$q;
+        sc$4$clock = clock;
+        sc$4$d = sc$4$q;
+        sc$5$clock = clock;
+        sc$5$d = sc$5$q;
+        sc$6$clock = clock;
+        sc$6$d = sc$6$q;
+        sc$7$clock = clock;
+        sc$7$d = sc$7$q;
+        sc$8$clock = clock;
+        sc$8$d = sc$8$q;
+        vx$0 = inp_v0_x;
+        vy$0 = inp_v0_y;
+        vz$0 = inp_v0_z;
+        vc$0 = inp_v0_c0;
+        vc$1 = inp_v0_c1;
+        vc$2 = inp_v0_c2;
+        viw$0 = inp_v0_iw;
+        vx$1 = inp_v1_x;
+        vy$1 = inp_v1_y;
+        vz$1 = inp_v1_z;
+        vc$3 = inp_v1_c0;
+        vc$4 = inp_v1_c1;
+        vc$5 = inp_v1_c2;
+        viw$1 = inp_v1_iw;
+        vx$2 = inp_v2_x;
+        vy$2 = inp_v2_y;
+        vz$2 = inp_v2_z;
+        vc$6 = inp_v2_c0;
+        vc$7 = inp_v2_c1;
+        vc$8 = inp_v2_c2;
+        viw$2 = inp_v2_iw;
+        right = ((width) & 16'hffff) << frac;
+        bottom = ((height) & 16'hffff) << frac;
+        left$0 = vx$0[xy_msb];
+        right_of$0 = ~left$0 & (vx$0 > right);
+        top$0 = vy$0[xy_msb];
+        below$0 = ~top$0 & (vy$0 > bottom);
+        near$0 = vz$0[z_msb];
+        far$0 = ~near$0 & (vz$0 > z_max);
+        oc$0 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$0) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$0) << (32'h1))) & ~(1 << (32'h2)) | ((top$0) << (32'h2))) & ~(1 << (32'h3)) | ((below$0) << (32'h3))) & ~(1 << (32'h4)) | ((near$0) << (32'h4))) & ~(1 << (32'h5)) | ((far$0) << (32'h5)));
+        left$1 = vx$1[xy_msb];
+        right_of$1 = ~left$1 & (vx$1 > right);
+        top$1 = vy$1[xy_msb];
+        below$1 = ~top$1 & (vy$1 > bottom);
+        near$1 = vz$1[z_msb];
+        far$1 = ~near$1 & (vz$1 > z_max);
+        oc$1 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$1) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$1) << (32'h1))) & ~(1 << (32'h2)) | ((top$1) << (32'h2))) & ~(1 << (32'h3)) | ((below$1) << (32'h3))) & ~(1 << (32'h4)) | ((near$1) << (32'h4))) & ~(1 << (32'h5)) | ((far$1) << (32'h5)));
+        left$2 = vx$2[xy_msb];
+        right_of$2 = ~left$2 & (vx$2 > right);
+        top$2 = vy$2[xy_msb];
+        below$2 = ~top$2 & (vy$2 > bottom);
+        near$2 = vz$2[z_msb];
+        far$2 = ~near$2 & (vz$2 > z_max);
+        oc$2 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$2) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$2) << (32'h1))) & ~(1 << (32'h2)) | ((top$2) << (32'h2))) & ~(1 << (32'h3)) | ((below$2) << (32'h3))) & ~(1 << (32'h4)) | ((near$2) << (32'h4))) & ~(1 << (32'h5)) | ((far$2) << (32'h5)));
+        e1x = (((inp_v1_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v1_x[xy_msb]) << (delta_msb))) - (((inp_v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_x[xy_msb]) << (delta_msb)));
+        e1y = (((inp_v1_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v1_y[xy_msb]) << (delta_msb))) - (((inp_v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_y[xy_msb]) << (delta_msb)));
+        e2x = (((inp_v2_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v2_x[xy_msb]) << (delta_msb))) - (((inp_v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_x[xy_msb]) << (delta_msb)));
+        e2y = (((inp_v2_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v2_y[xy_msb]) << (delta_msb))) - (((inp_v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_y[xy_msb]) << (delta_msb)));
+        area_mul$0$a = e1x;
+        area_mul$0$b = e2y;
+        area_mul$1$a = e2x;
+        area_mul$1$b = e1y;
+        area = area_mul$0$p - area_mul$1$p;
+        code = passed;
+        if (cull_back & ~area[area_msb]) begin
+            code = back_face;
+        end
+        if (area == 32'h0) begin
+            code = zero_area;
+        end
+        if (|(oc$0 & oc$1 & oc$2)) begin
+            code = outside;
+        end
+        key$0 = vy$0 ^ half;
+        key$1 = vy$1 ^ half;
+        key$2 = vy$2 ^ half;
+        le01 = key$0 <= key$1;
+        le12 = key$1 <= key$2;
+        le02 = key$0 <= key$2;
+        gt01 = ~le01;
+        gt12 = ~le12;
+        gt02 = ~le02;
+        rank$0 = ((32'h0) & 2'h3) + gt01 + gt02;
+        rank$1 = ((32'h0) & 2'h3) + le01 + gt12;
+        rank$2 = ((32'h0) & 2'h3) + le02 + le12;
+        leave = full$q & ((code_r$q != passed) | out_ready);
+        inp_ready = ~full$q | leave;
+        take = inp_valid & inp_ready;
+        if (leave) begin
+            full$d = 1'b0;
+        end
+        if (take) begin
+            full$d = 1'b1;
+            code_r$d = code;
+            crosses$d = oc$0 | oc$1 | oc$2;
+            outside_r$d = oc$0 & oc$1 & oc$2;
+            if (rank$0 == 0) begin
+                sx$0$d = vx$0;
+                sy$0$d = vy$0;
+                sz$0$d = vz$0;
+                siw$0$d = viw$0;
+                sc$0$d = vc$0;
+                sc$1$d = vc$1;
+                sc$2$d = vc$2;
+            end
+            if (rank$1 == 0) begin
+                sx$0$d = vx$1;
+                sy$0$d = vy$1;
+                sz$0$d = vz$1;
+                siw$0$d = viw$1;
+                sc$0$d = vc$3;
+                sc$1$d = vc$4;
+                sc$2$d = vc$5;
+            end
+            if (rank$2 == 0) begin
+                sx$0$d = vx$2;
+                sy$0$d = vy$2;
+                sz$0$d = vz$2;
+                siw$0$d = viw$2;
+                sc$0$d = vc$6;
+                sc$1$d = vc$7;
+                sc$2$d = vc$8;
+            end
+            if (rank$0 == 1) begin
+                sx$1$d = vx$0;
+                sy$1$d = vy$0;
+                sz$1$d = vz$0;
+                siw$1$d = viw$0;
+                sc$3$d = vc$0;
+                sc$4$d = vc$1;
+                sc$5$d = vc$2;
+            end
+            if (rank$1 == 1) begin
+                sx$1$d = vx$1;
+                sy$1$d = vy$1;
+                sz$1$d = vz$1;
+                siw$1$d = viw$1;
+                sc$3$d = vc$3;
+                sc$4$d = vc$4;
+                sc$5$d = vc$5;
+            end
+            if (rank$2 == 1) begin
+                sx$1$d = vx$2;
+                sy$1$d = vy$2;
+                sz$1$d = vz$2;
+                siw$1$d = viw$2;
+                sc$3$d = vc$6;
+                sc$4$d = vc$7;
+                sc$5$d = vc$8;
+            end
+            if (rank$0 == 2) begin
+                sx$2$d = vx$0;
+                sy$2$d = vy$0;
+                sz$2$d = vz$0;
+                siw$2$d = viw$0;
+                sc$6$d = vc$0;
+                sc$7$d = vc$1;
+                sc$8$d = vc$2;
+            end
+            if (rank$1 == 2) begin
+                sx$2$d = vx$1;
+                sy$2$d = vy$1;
+                sz$2$d = vz$1;
+                siw$2$d = viw$1;
+                sc$6$d = vc$3;
+                sc$7$d = vc$4;
+                sc$8$d = vc$5;
+            end
+            if (rank$2 == 2) begin
+                sx$2$d = vx$2;
+                sy$2$d = vy$2;
+                sz$2$d = vz$2;
+                siw$2$d = viw$2;
+                sc$6$d = vc$6;
+                sc$7$d = vc$7;
+                sc$8$d = vc$8;
+            end
+        end
+        out_valid = full$q & (code_r$q == passed);
+        verdict_valid = leave;
+        verdict_code = code_r$q;
+        verdict_outside = outside_r$q;
+        out_crosses = crosses$q;
+        out_v0_x = sx$0$q;
+        out_v0_y = sy$0$q;
+        out_v0_z = sz$0$q;
+        out_v0_c0 = sc$0$q;
+        out_v0_c1 = sc$1$q;
+        out_v0_c2 = sc$2$q;
+        out_v0_iw = siw$0$q;
+        out_v1_x = sx$1$q;
+        out_v1_y = sy$1$q;
+        out_v1_z = sz$1$q;
+        out_v1_c0 = sc$3$q;
+        out_v1_c1 = sc$4$q;
+        out_v1_c2 = sc$5$q;
+        out_v1_iw = siw$1$q;
+        out_v2_x = sx$2$q;
+        out_v2_y = sy$2$q;
+        out_v2_z = sz$2$q;
+        out_v2_c0 = sc$6$q;
+        out_v2_c1 = sc$7$q;
+        out_v2_c2 = sc$8$q;
+        out_v2_iw = siw$2$q;
+    end
+    
+endmodule // raster_top$cull_sort
+
+
+module raster_top$cull_sort$area_mul$0(a,b,p);
+    
+    // Module arguments
+    input wire  [16:0] a;
+    input wire  [16:0] b;
+    output reg  [33:0] p;
+    
+    // Update code (custom)
+    // p = low 34 bits of a * b, both signed: a signed 34-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // raster_top$cull_sort$area_mul$0
+
+
+module raster_top$cull_sort$area_mul$1(a,b,p);
+    
+    // Module arguments
+    input wire  [16:0] a;
+    input wire  [16:0] b;
+    output reg  [33:0] p;
+    
+    // Update code (custom)
+    // p = low 34 bits of a * b, both signed: a signed 34-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // raster_top$cull_sort$area_mul$1
+
+
+module raster_top$cull_sort$code_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$code_r
+
+
+module raster_top$cull_sort$crosses(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$crosses
+
+
+module raster_top$cull_sort$full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$full
+
+
+module raster_top$cull_sort$outside_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$outside_r
+
+
+module raster_top$cull_sort$sc$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$0
+
+
+module raster_top$cull_sort$sc$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$1
+
+
+module raster_top$cull_sort$sc$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$2
+
+
+module raster_top$cull_sort$sc$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$3
+
+
+module raster_top$cull_sort$sc$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$4
+
+
+module raster_top$cull_sort$sc$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$5
+
+
+module raster_top$cull_sort$sc$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$6
+
+
+module raster_top$cull_sort$sc$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$7
+
+
+module raster_top$cull_sort$sc$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$8
+
+
+module raster_top$cull_sort$siw$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$siw$0
+
+
+module raster_top$cull_sort$siw$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$siw$1
+
+
+module raster_top$cull_sort$siw$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$siw$2
+
+
+module raster_top$cull_sort$sx$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sx$0
+
+
+module raster_top$cull_sort$sx$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sx$1
+
+
+module raster_top$cull_sort$sx$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sx$2
+
+
+module raster_top$cull_sort$sy$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sy$0
+
+
+module raster_top$cull_sort$sy$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sy$1
+
+
+module raster_top$cull_sort$sy$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sy$2
+
+
+module raster_top$cull_sort$sz$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sz$0
+
+
+module raster_top$cull_sort$sz$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sz$1
+
+
+module raster_top$cull_sort$sz$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sz$2
+
+
+module raster_top$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_left,inp_maj_j,inp_maj_count,inp_maj_x,inp_maj_r,inp_maj_q,inp_maj_rho,inp_maj_d,inp_maj_at_z,inp_maj_at_c0,inp_maj_at_c1,inp_maj_at_c2,inp_maj_inc0_z,inp_maj_inc0_c0,inp_maj_inc0_c1,inp_maj_inc0_c2,inp_maj_inc1_z,inp_maj_inc1_c0,inp_maj_inc1_c1,inp_maj_inc1_c2,inp_short0_j,inp_short0_count,inp_short0_x,inp_short0_r,inp_short0_q,inp_short0_rho,inp_short0_d,inp_short0_at_z,inp_short0_at_c0,inp_short0_at_c1,inp_short0_at_c2,inp_short0_inc0_z,inp_short0_inc0_c0,inp_short0_inc0_c1,inp_short0_inc0_c2,inp_short0_inc1_z,inp_short0_inc1_c0,inp_short0_inc1_c1,inp_short0_inc1_c2,inp_short1_j,inp_short1_count,inp_short1_x,inp_short1_r,inp_short1_q,inp_short1_rho,inp_short1_d,inp_short1_at_z,inp_short1_at_c0,inp_short1_at_c1,inp_short1_at_c2,inp_short1_inc0_z,inp_short1_inc0_c0,inp_short1_inc0_c1,inp_short1_inc0_c2,inp_short1_inc1_z,inp_short1_inc1_c0,inp_short1_inc1_c1,inp_short1_inc1_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_y,out_xl,out_xr,out_left_z,out_left_c0,out_left_c1,out_left_c2,out_right_z,out_right_c0,out_right_c1,out_right_c2,out_ddx_z,out_ddx_c0,out_ddx_c1,out_ddx_c2);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [10:0] height;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  inp_walk;
+    input wire  inp_maj_left;
+    input wire  [12:0] inp_maj_j;
+    input wire  [12:0] inp_maj_count;
+    input wire  [12:0] inp_maj_x;
+    input wire  [20:0] inp_maj_r;
+    input wire  [16:0] inp_maj_q;
+    input wire  [20:0] inp_maj_rho;
+    input wire  [20:0] inp_maj_d;
+    input wire  [35:0] inp_maj_at_z;
+    input wire  [31:0] inp_maj_at_c0;
+    input wire  [31:0] inp_maj_at_c1;
+    input wire  [31:0] inp_maj_at_c2;
+    input wire  [39:0] inp_maj_inc0_z;
+    input wire  [35:0] inp_maj_inc0_c0;
+    input wire  [35:0] inp_maj_inc0_c1;
+    input wire  [35:0] inp_maj_inc0_c2;
+    input wire  [39:0] inp_maj_inc1_z;
+    input wire  [35:0] inp_maj_inc1_c0;
+    input wire  [35:0] inp_maj_inc1_c1;
+    input wire  [35:0] inp_maj_inc1_c2;
+    input wire  [12:0] inp_short0_j;
+    input wire  [12:0] inp_short0_count;
+    input wire  [12:0] inp_short0_x;
+    input wire  [20:0] inp_short0_r;
+    input wire  [16:0] inp_short0_q;
+    input wire  [20:0] inp_short0_rho;
+    input wire  [20:0] inp_short0_d;
+    input wire  [35:0] inp_short0_at_z;
+    input wire  [31:0] inp_short0_at_c0;
+    input wire  [31:0] inp_short0_at_c1;
+    input wire  [31:0] inp_short0_at_c2;
+    input wire  [39:0] inp_short0_inc0_z;
+    input wire  [35:0] inp_short0_inc0_c0;
+    input wire  [35:0] inp_short0_inc0_c1;
+    input wire  [35:0] inp_short0_inc0_c2;
+    input wire  [39:0] inp_short0_inc1_z;
+    input wire  [35:0] inp_short0_inc1_c0;
+    input wire  [35:0] inp_short0_inc1_c1;
+    input wire  [35:0] inp_short0_inc1_c2;
+    input wire  [12:0] inp_short1_j;
+    input wire  [12:0] inp_short1_count;
+    input wire  [12:0] inp_short1_x;
+    input wire  [20:0] inp_short1_r;
+    input wire  [16:0] inp_short1_q;
+    input wire  [20:0] inp_short1_rho;
+    input wire  [20:0] inp_short1_d;
+    input wire  [35:0] inp_short1_at_z;
+    input wire  [31:0] inp_short1_at_c0;
+    input wire  [31:0] inp_short1_at_c1;
+    input wire  [31:0] inp_short1_at_c2;
+    input wire  [39:0] inp_short1_inc0_z;
+    input wire  [35:0] inp_short1_inc0_c0;
+    input wire  [35:0] inp_short1_inc0_c1;
+    input wire  [35:0] inp_short1_inc0_c2;
+    input wire  [39:0] inp_short1_inc1_z;
+    input wire  [35:0] inp_short1_inc1_c0;
+    input wire  [35:0] inp_short1_inc1_c1;
+    input wire  [35:0] inp_short1_inc1_c2;
+    input wire  [39:0] inp_ddx_z;
+    input wire  [35:0] inp_ddx_c0;
+    input wire  [35:0] inp_ddx_c1;
+    input wire  [35:0] inp_ddx_c2;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [9:0] out_y;
+    output reg  [12:0] out_xl;
+    output reg  [12:0] out_xr;
+    output reg  [35:0] out_left_z;
+    output reg  [31:0] out_left_c0;
+    output reg  [31:0] out_left_c1;
+    output reg  [31:0] out_left_c2;
+    output reg  [35:0] out_right_z;
+    output reg  [31:0] out_right_c0;
+    output reg  [31:0] out_right_c1;
+    output reg  [31:0] out_right_c2;
+    output reg  [39:0] out_ddx_z;
+    output reg  [35:0] out_ddx_c0;
+    output reg  [35:0] out_ddx_c1;
+    output reg  [35:0] out_ddx_c2;
+    
+    // Stub signals
+    reg  maj$clock;
+    reg  maj$load;
+    reg  maj$step;
+    reg  maj$up;
+    reg  [12:0] maj$ld_x;
+    reg  [20:0] maj$ld_r;
+    reg  [12:0] maj$ld_q;
+    reg  [20:0] maj$ld_rho;
+    reg  [20:0] maj$ld_d;
+    reg  [35:0] maj$ld_at_z;
+    reg  [31:0] maj$ld_at_c0;
+    reg  [31:0] maj$ld_at_c1;
+    reg  [31:0] maj$ld_at_c2;
+    reg  [35:0] maj$ld_inc0_z;
+    reg  [31:0] maj$ld_inc0_c0;
+    reg  [31:0] maj$ld_inc0_c1;
+    reg  [31:0] maj$ld_inc0_c2;
+    reg  [35:0] maj$ld_inc1_z;
+    reg  [31:0] maj$ld_inc1_c0;
+    reg  [31:0] maj$ld_inc1_c1;
+    reg  [31:0] maj$ld_inc1_c2;
+    wire  [12:0] maj$x;
+    wire  [35:0] maj$at_z;
+    wire  [31:0] maj$at_c0;
+    wire  [31:0] maj$at_c1;
+    wire  [31:0] maj$at_c2;
+    reg  cur$clock;
+    reg  cur$load;
+    reg  cur$step;
+    reg  cur$up;
+    reg  [12:0] cur$ld_x;
+    reg  [20:0] cur$ld_r;
+    reg  [12:0] cur$ld_q;
+    reg  [20:0] cur$ld_rho;
+    reg  [20:0] cur$ld_d;
+    reg  [35:0] cur$ld_at_z;
+    reg  [31:0] cur$ld_at_c0;
+    reg  [31:0] cur$ld_at_c1;
+    reg  [31:0] cur$ld_at_c2;
+    reg  [35:0] cur$ld_inc0_z;
+    reg  [31:0] cur$ld_inc0_c0;
+    reg  [31:0] cur$ld_inc0_c1;
+    reg  [31:0] cur$ld_inc0_c2;
+    reg  [35:0] cur$ld_inc1_z;
+    reg  [31:0] cur$ld_inc1_c0;
+    reg  [31:0] cur$ld_inc1_c1;
+    reg  [31:0] cur$ld_inc1_c2;
+    wire  [12:0] cur$x;
+    wire  [35:0] cur$at_z;
+    wire  [31:0] cur$at_c0;
+    wire  [31:0] cur$at_c1;
+    wire  [31:0] cur$at_c2;
+    reg  busy$d;
+    wire  busy$q;
+    reg  busy$clock;
+    reg  walking$d;
+    wire  walking$q;
+    reg  walking$clock;
+    reg  up$d;
+    wire  up$q;
+    reg  up$clock;
+    reg  maj_left$d;
+    wire  maj_left$q;
+    reg  maj_left$clock;
+    reg  [12:0] j$d;
+    wire  [12:0] j$q;
+    reg  j$clock;
+    reg  [12:0] k$d;
+    wire  [12:0] k$q;
+    reg  k$clock;
+    reg  [12:0] total$d;
+    wire  [12:0] total$q;
+    reg  total$clock;
+    reg  [12:0] c0$d;
+    wire  [12:0] c0$q;
+    reg  c0$clock;
+    reg  [39:0] ddx_z$d;
+    wire  [39:0] ddx_z$q;
+    reg  ddx_z$clock;
+    reg  [35:0] ddx_c0$d;
+    wire  [35:0] ddx_c0$q;
+    reg  ddx_c0$clock;
+    reg  [35:0] ddx_c1$d;
+    wire  [35:0] ddx_c1$q;
+    reg  ddx_c1$clock;
+    reg  [35:0] ddx_c2$d;
+    wire  [35:0] ddx_c2$q;
+    reg  ddx_c2$clock;
+    reg  [12:0] pend_x$d;
+    wire  [12:0] pend_x$q;
+    reg  pend_x$clock;
+    reg  [20:0] pend_r$d;
+    wire  [20:0] pend_r$q;
+    reg  pend_r$clock;
+    reg  [12:0] pend_q$d;
+    wire  [12:0] pend_q$q;
+    reg  pend_q$clock;
+    reg  [20:0] pend_rho$d;
+    wire  [20:0] pend_rho$q;
+    reg  pend_rho$clock;
+    reg  [20:0] pend_d$d;
+    wire  [20:0] pend_d$q;
+    reg  pend_d$clock;
+    reg  [35:0] pend_at_z$d;
+    wire  [35:0] pend_at_z$q;
+    reg  pend_at_z$clock;
+    reg  [31:0] pend_at_c0$d;
+    wire  [31:0] pend_at_c0$q;
+    reg  pend_at_c0$clock;
+    reg  [31:0] pend_at_c1$d;
+    wire  [31:0] pend_at_c1$q;
+    reg  pend_at_c1$clock;
+    reg  [31:0] pend_at_c2$d;
+    wire  [31:0] pend_at_c2$q;
+    reg  pend_at_c2$clock;
+    reg  [35:0] pend_inc0_z$d;
+    wire  [35:0] pend_inc0_z$q;
+    reg  pend_inc0_z$clock;
+    reg  [31:0] pend_inc0_c0$d;
+    wire  [31:0] pend_inc0_c0$q;
+    reg  pend_inc0_c0$clock;
+    reg  [31:0] pend_inc0_c1$d;
+    wire  [31:0] pend_inc0_c1$q;
+    reg  pend_inc0_c1$clock;
+    reg  [31:0] pend_inc0_c2$d;
+    wire  [31:0] pend_inc0_c2$q;
+    reg  pend_inc0_c2$clock;
+    reg  [35:0] pend_inc1_z$d;
+    wire  [35:0] pend_inc1_z$q;
+    reg  pend_inc1_z$clock;
+    reg  [31:0] pend_inc1_c0$d;
+    wire  [31:0] pend_inc1_c0$q;
+    reg  pend_inc1_c0$clock;
+    reg  [31:0] pend_inc1_c1$d;
+    wire  [31:0] pend_inc1_c1$q;
+    reg  pend_inc1_c1$clock;
+    reg  [31:0] pend_inc1_c2$d;
+    wire  [31:0] pend_inc1_c2$q;
+    reg  pend_inc1_c2$clock;
+    reg  [12:0] j_sign$x;
+    wire  j_sign$neg;
+    reg  [12:0] sides$a;
+    reg  [12:0] sides$b;
+    wire  sides$lt;
+    
+    // Local signals
+    reg  accept;
+    reg  no_rows;
+    reg  last;
+    reg  advance;
+    reg  switch;
+    reg  valid;
+    reg  [12:0] j_next;
+    reg  [12:0] k_next;
+    reg  [12:0] height_j;
+    
+    // Sub module instances
+    raster_top$edge_walk$maj maj(
+        .clock(maj$clock),
+        .load(maj$load),
+        .step(maj$step),
+        .up(maj$up),
+        .ld_x(maj$ld_x),
+        .ld_r(maj$ld_r),
+        .ld_q(maj$ld_q),
+        .ld_rho(maj$ld_rho),
+        .ld_d(maj$ld_d),
+        .ld_at_z(maj$ld_at_z),
+        .ld_at_c0(maj$ld_at_c0),
+        .ld_at_c1(maj$ld_at_c1),
+        .ld_at_c2(maj$ld_at_c2),
+        .ld_inc0_z(maj$ld_inc0_z),
+        .ld_inc0_c0(maj$ld_inc0_c0),
+        .ld_inc0_c1(maj$ld_inc0_c1),
+        .ld_inc0_c2(maj$ld_inc0_c2),
+        .ld_inc1_z(maj$ld_inc1_z),
+        .ld_inc1_c0(maj$ld_inc1_c0),
+        .ld_inc1_c1(maj$ld_inc1_c1),
+        .ld_inc1_c2(maj$ld_inc1_c2),
+        .x(maj$x),
+        .at_z(maj$at_z),
+        .at_c0(maj$at_c0),
+        .at_c1(maj$at_c1),
+        .at_c2(maj$at_c2)
+    );
+    raster_top$edge_walk$cur cur(
+        .clock(cur$clock),
+        .load(cur$load),
+        .step(cur$step),
+        .up(cur$up),
+        .ld_x(cur$ld_x),
+        .ld_r(cur$ld_r),
+        .ld_q(cur$ld_q),
+        .ld_rho(cur$ld_rho),
+        .ld_d(cur$ld_d),
+        .ld_at_z(cur$ld_at_z),
+        .ld_at_c0(cur$ld_at_c0),
+        .ld_at_c1(cur$ld_at_c1),
+        .ld_at_c2(cur$ld_at_c2),
+        .ld_inc0_z(cur$ld_inc0_z),
+        .ld_inc0_c0(cur$ld_inc0_c0),
+        .ld_inc0_c1(cur$ld_inc0_c1),
+        .ld_inc0_c2(cur$ld_inc0_c2),
+        .ld_inc1_z(cur$ld_inc1_z),
+        .ld_inc1_c0(cur$ld_inc1_c0),
+        .ld_inc1_c1(cur$ld_inc1_c1),
+        .ld_inc1_c2(cur$ld_inc1_c2),
+        .x(cur$x),
+        .at_z(cur$at_z),
+        .at_c0(cur$at_c0),
+        .at_c1(cur$at_c1),
+        .at_c2(cur$at_c2)
+    );
+    raster_top$edge_walk$busy busy(
+        .d(busy$d),
+        .q(busy$q),
+        .clock(busy$clock)
+    );
+    raster_top$edge_walk$walking walking(
+        .d(walking$d),
+        .q(walking$q),
+        .clock(walking$clock)
+    );
+    raster_top$edge_walk$up up(
+        .d(up$d),
+        .q(up$q),
+        .clock(up$clock)
+    );
+    raster_top$edge_walk$maj_left maj_left(
+        .d(maj_left$d),
+        .q(maj_left$q),
+        .clock(maj_left$clock)
+    );
+    raster_top$edge_walk$j j(
+        .d(j$d),
+        .q(j$q),
+        .clock(j$clock)
+    );
+    raster_top$edge_walk$k k(
+        .d(k$d),
+        .q(k$q),
+        .clock(k$clock)
+    );
+    raster_top$edge_walk$total total(
+        .d(total$d),
+        .q(total$q),
+        .clock(total$clock)
+    );
+    raster_top$edge_walk$c0 c0(
+        .d(c0$d),
+        .q(c0$q),
+        .clock(c0$clock)
+    );
+    raster_top$edge_walk$ddx_z ddx_z(
+        .d(ddx_z$d),
+        .q(ddx_z$q),
+        .clock(ddx_z$clock)
+    );
+    raster_top$edge_walk$ddx_c0 ddx_c0(
+        .d(ddx_c0$d),
+        .q(ddx_c0$q),
+        .clock(ddx_c0$clock)
+    );
+    raster_top$edge_walk$ddx_c1 ddx_c1(
+        .d(ddx_c1$d),
+        .q(ddx_c1$q),
+        .clock(ddx_c1$clock)
+    );
+    raster_top$edge_walk$ddx_c2 ddx_c2(
+        .d(ddx_c2$d),
+        .q(ddx_c2$q),
+        .clock(ddx_c2$clock)
+    );
+    raster_top$edge_walk$pend_x pend_x(
+        .d(pend_x$d),
+        .q(pend_x$q),
+        .clock(pend_x$clock)
+    );
+    raster_top$edge_walk$pend_r pend_r(
+        .d(pend_r$d),
+        .q(pend_r$q),
+        .clock(pend_r$clock)
+    );
+    raster_top$edge_walk$pend_q pend_q(
+        .d(pend_q$d),
+        .q(pend_q$q),
+        .clock(pend_q$clock)
+    );
+    raster_top$edge_walk$pend_rho pend_rho(
+        .d(pend_rho$d),
+        .q(pend_rho$q),
+        .clock(pend_rho$clock)
+    );
+    raster_top$edge_walk$pend_d pend_d(
+        .d(pend_d$d),
+        .q(pend_d$q),
+        .clock(pend_d$clock)
+    );
+    raster_top$edge_walk$pend_at_z pend_at_z(
+        .d(pend_at_z$d),
+        .q(pend_at_z$q),
+        .clock(pend_at_z$clock)
+    );
+    raster_top$edge_walk$pend_at_c0 pend_at_c0(
+        .d(pend_at_c0$d),
+        .q(pend_at_c0$q),
+        .clock(pend_at_c0$clock)
+    );
+    raster_top$edge_walk$pend_at_c1 pend_at_c1(
+        .d(pend_at_c1$d),
+        .q(pend_at_c1$q),
+        .clock(pend_at_c1$clock)
+    );
+    raster_top$edge_walk$pend_at_c2 pend_at_c2(
+        .d(pend_at_c2$d),
+        .q(pend_at_c2$q),
+        .clock(pend_at_c2$clock)
+    );
+    raster_top$edge_walk$pend_inc0_z pend_inc0_z(
+        .d(pend_inc0_z$d),
+        .q(pend_inc0_z$q),
+        .clock(pend_inc0_z$clock)
+    );
+    raster_top$edge_walk$pend_inc0_c0 pend_inc0_c0(
+        .d(pend_inc0_c0$d),
+        .q(pend_inc0_c0$q),
+        .clock(pend_inc0_c0$clock)
+    );
+    raster_top$edge_walk$pend_inc0_c1 pend_inc0_c1(
+        .d(pend_inc0_c1$d),
+        .q(pend_inc0_c1$q),
+        .clock(pend_inc0_c1$clock)
+    );
+    raster_top$edge_walk$pend_inc0_c2 pend_inc0_c2(
+        .d(pend_inc0_c2$d),
+        .q(pend_inc0_c2$q),
+        .clock(pend_inc0_c2$clock)
+    );
+    raster_top$edge_walk$pend_inc1_z pend_inc1_z(
+        .d(pend_inc1_z$d),
+        .q(pend_inc1_z$q),
+        .clock(pend_inc1_z$clock)
+    );
+    raster_top$edge_walk$pend_inc1_c0 pend_inc1_c0(
+        .d(pend_inc1_c0$d),
+        .q(pend_inc1_c0$q),
+        .clock(pend_inc1_c0$clock)
+    );
+    raster_top$edge_walk$pend_inc1_c1 pend_inc1_c1(
+        .d(pend_inc1_c1$d),
+        .q(pend_inc1_c1$q),
+        .clock(pend_inc1_c1$clock)
+    );
+    raster_top$edge_walk$pend_inc1_c2 pend_inc1_c2(
+        .d(pend_inc1_c2$d),
+        .q(pend_inc1_c2$q),
+        .clock(pend_inc1_c2$clock)
+    );
+    raster_top$edge_walk$j_sign j_sign(
+        .x(j_sign$x),
+        .neg(j_sign$neg)
+    );
+    raster_top$edge_walk$sides sides(
+        .a(sides$a),
+        .b(sides$b),
+        .lt(sides$lt)
+    );
+    
+    // Update code
+    always @(*) begin
+        busy$clock = clock;
+        walking$clock = clock;
+        up$clock = clock;
+        maj_left$clock = clock;
+        j$clock = clock;
+        k$clock = clock;
+        total$clock = clock;
+        c0$clock = clock;
+        ddx_z$clock = clock;
+        ddx_c0$clock = clock;
+        ddx_c1$clock = clock;
+        ddx_c2$clock = clock;
+        pend_x$clock = clock;
+        pend_r$clock = clock;
+        pend_q$clock = clock;
+        pend_rho$clock = clock;
+        pend_d$clock = clock;
+        pend_at_z$clock = clock;
+        pend_at_c0$clock = clock;
+        pend_at_c1$clock = clock;
+        pend_at_c2$clock = clock;
+        pend_inc0_z$clock = clock;
+        pend_inc0_c0$clock = clock;
+        pend_inc0_c1$clock = clock;
+        pend_inc0_c2$clock = clock;
+        pend_inc1_z$clock = clock;
+        pend_inc1_c0$clock = clock;
+        pend_inc1_c1$clock = clock;
+        pend_inc1_c2$clock = clock;
+        busy$d = busy$q;
+        walking$d = walking$q;
+        up$d = up$q;
+        maj_left$d = maj_left$q;
+        j$d = j$q;
+        k$d = k$q;
+        total$d = total$q;
+        c0$d = c0$q;
+        ddx_z$d = ddx_z$q;
+        ddx_c0$d = ddx_c0$q;
+        ddx_c1$d = ddx_c1$q;
+        ddx_c2$d = ddx_c2$q;
+        pend_x$d = pend_x$q;
+        pend_r$d = pend_r$q;
+        pend_q$d = pend_q$q;
+        pend_rho$d = pend_rho$q;
+        pend_d$d = pend_d$q;
+        pend_at_z$d = pend_at_z$q;
+        pend_at_c0$d = pend_at_c0$q;
+        pend_at_c1$d = pend_at_c1$q;
+        pend_at_c2$d = pend_at_c2$q;
+        pend_inc0_z$d = pend_inc0_z$q;
+        pend_inc0_c0$d = pend_inc0_c0$q;
+        pend_inc0_c1$d = pend_inc0_c1$q;
+        pend_inc0_c2$d = pend_inc0_c2$q;
+        pend_inc1_z$d = pend_inc1_z$q;
+        pend_inc1_c0$d = pend_inc1_c0$q;
+        pend_inc1_c1$d = pend_inc1_c1$q;
+        pend_inc1_c2$d = pend_inc1_c2$q;
+        maj$clock = clock;
+        cur$clock = clock;
+        inp_ready = ~busy$q;
+        accept = inp_valid & ~busy$q;
+        j_sign$x = j$q;
+        height_j = ((height) & 13'h1fff);
+        k_next = k$q + 32'h1;
+        j_next = j$q + 32'h1;
+        if (up$q) begin
+            j_next = j$q - 32'h1;
+        end
+        last = k_next == total$q;
+        if (up$q) begin
+            if (j$q == 32'h0) begin
+                last = 1'b1;
+            end
+        end
+        else if (j_next == height_j) begin
+            last = 1'b1;
+        end
+        no_rows = total$q == 32'h0;
+        if (up$q) begin
+            if (j_sign$neg) begin
+                no_rows = 1'b1;
+            end
+        end
+        else if (~j_sign$neg & (j$q >= height_j)) begin
+            no_rows = 1'b1;
+        end
+        out_y = ((j$q) & 10'h3ff);
+        out_ddx_z = ddx_z$q;
+        out_ddx_c0 = ddx_c0$q;
+        out_ddx_c1 = ddx_c1$q;
+        out_ddx_c2 = ddx_c2$q;
+        if (maj_left$q) begin
+            sides$a = maj$x;
+            sides$b = cur$x;
+            out_xl = maj$x;
+            out_xr = cur$x - 32'h1;
+            out_left_z = maj$at_z;
+            out_left_c0 = maj$at_c0;
+            out_left_c1 = maj$at_c1;
+            out_left_c2 = maj$at_c2;
+            out_right_z = cur$at_z;
+            out_right_c0 = cur$at_c0;
+            out_right_c1 = cur$at_c1;
+            out_right_c2 = cur$at_c2;
+        end
+        else begin
+            sides$a = cur$x;
+            sides$b = maj$x;
+            out_xl = cur$x;
+            out_xr = maj$x - 32'h1;
+            out_left_z = cur$at_z;
+            out_left_c0 = cur$at_c0;
+            out_left_c1 = cur$at_c1;
+            out_left_c2 = cur$at_c2;
+            out_right_z = maj$at_z;
+            out_right_c0 = maj$at_c0;
+            out_right_c1 = maj$at_c1;
+            out_right_c2 = maj$at_c2;
+        end
+        valid = busy$q & walking$q & ~j_sign$neg & sides$lt;
+        out_valid = valid;
+        advance = busy$q & walking$q & (~valid | out_ready);
+        switch = 1'b0;
+        if (busy$q & ~walking$q & (c0$q == 32'h0)) begin
+            switch = 1'b1;
+        end
+        if (advance & ~last & (k_next == c0$q)) begin
+            switch = 1'b1;
+        end
+        maj$up = up$q;
+        maj$load = accept;
+        maj$step = advance & ~last;
+        cur$up = up$q;
+        cur$load = accept | switch;
+        cur$step = advance & ~last;
+        maj$ld_x = inp_maj_x;
+        maj$ld_r = inp_maj_r;
+        maj$ld_q = ((inp_maj_q) & 13'h1fff);
+        maj$ld_rho = inp_maj_rho;
+        maj$ld_d = inp_maj_d;
+        maj$ld_at_z = inp_maj_at_z;
+        maj$ld_at_c0 = inp_maj_at_c0;
+        maj$ld_at_c1 = inp_maj_at_c1;
+        maj$ld_at_c2 = inp_maj_at_c2;
+        maj$ld_inc0_z = ((inp_maj_inc0_z) & 36'hfffffffff);
+        maj$ld_inc0_c0 = ((inp_maj_inc0_c0) & 32'hffffffff);
+        maj$ld_inc0_c1 = ((inp_maj_inc0_c1) & 32'hffffffff);
+        maj$ld_inc0_c2 = ((inp_maj_inc0_c2) & 32'hffffffff);
+        maj$ld_inc1_z = ((inp_maj_inc1_z) & 36'hfffffffff);
+        maj$ld_inc1_c0 = ((inp_maj_inc1_c0) & 32'hffffffff);
+        maj$ld_inc1_c1 = ((inp_maj_inc1_c1) & 32'hffffffff);
+        maj$ld_inc1_c2 = ((inp_maj_inc1_c2) & 32'hffffffff);
+        if (switch) begin
+            cur$ld_x = pend_x$q;
+            cur$ld_r = pend_r$q;
+            cur$ld_q = pend_q$q;
+            cur$ld_rho = pend_rho$q;
+            cur$ld_d = pend_d$q;
+            cur$ld_at_z = pend_at_z$q;
+            cur$ld_at_c0 = pend_at_c0$q;
+            cur$ld_at_c1 = pend_at_c1$q;
+            cur$ld_at_c2 = pend_at_c2$q;
+            cur$ld_inc0_z = pend_inc0_z$q;
+            cur$ld_inc0_c0 = pend_inc0_c0$q;
+            cur$ld_inc0_c1 = pend_inc0_c1$q;
+            cur$ld_inc0_c2 = pend_inc0_c2$q;
+            cur$ld_inc1_z = pend_inc1_z$q;
+            cur$ld_inc1_c0 = pend_inc1_c0$q;
+            cur$ld_inc1_c1 = pend_inc1_c1$q;
+            cur$ld_inc1_c2 = pend_inc1_c2$q;
+        end
+        else begin
+            cur$ld_x = inp_short0_x;
+            cur$ld_r = inp_short0_r;
+            cur$ld_q = ((inp_short0_q) & 13'h1fff);
+            cur$ld_rho = inp_short0_rho;
+            cur$ld_d = inp_short0_d;
+            cur$ld_at_z = inp_short0_at_z;
+            cur$ld_at_c0 = inp_short0_at_c0;
+            cur$ld_at_c1 = inp_short0_at_c1;
+            cur$ld_at_c2 = inp_short0_at_c2;
+            cur$ld_inc0_z = ((inp_short0_inc0_z) & 36'hfffffffff);
+            cur$ld_inc0_c0 = ((inp_short0_inc0_c0) & 32'hffffffff);
+            cur$ld_inc0_c1 = ((inp_short0_inc0_c1) & 32'hffffffff);
+            cur$ld_inc0_c2 = ((inp_short0_inc0_c2) & 32'hffffffff);
+            cur$ld_inc1_z = ((inp_short0_inc1_z) & 36'hfffffffff);
+            cur$ld_inc1_c0 = ((inp_short0_inc1_c0) & 32'hffffffff);
+            cur$ld_inc1_c1 = ((inp_short0_inc1_c1) & 32'hffffffff);
+            cur$ld_inc1_c2 = ((inp_short0_inc1_c2) & 32'hffffffff);
+        end
+        if (accept) begin
+            busy$d = 1'b1;
+            walking$d = 1'b0;
+            up$d = inp_walk;
+            maj_left$d = inp_maj_left;
+            j$d = inp_maj_j;
+            k$d = 32'h0;
+            total$d = inp_maj_count;
+            c0$d = inp_short0_count;
+            ddx_z$d = inp_ddx_z;
+            ddx_c0$d = inp_ddx_c0;
+            ddx_c1$d = inp_ddx_c1;
+            ddx_c2$d = inp_ddx_c2;
+            pend_x$d = inp_short1_x;
+            pend_r$d = inp_short1_r;
+            pend_q$d = ((inp_short1_q) & 13'h1fff);
+            pend_rho$d = inp_short1_rho;
+            pend_d$d = inp_short1_d;
+            pend_at_z$d = inp_short1_at_z;
+            pend_at_c0$d = inp_short1_at_c0;
+            pend_at_c1$d = inp_short1_at_c1;
+            pend_at_c2$d = inp_short1_at_c2;
+            pend_inc0_z$d = ((inp_short1_inc0_z) & 36'hfffffffff);
+            pend_inc0_c0$d = ((inp_short1_inc0_c0) & 32'hffffffff);
+            pend_inc0_c1$d = ((inp_short1_inc0_c1) & 32'hffffffff);
+            pend_inc0_c2$d = ((inp_short1_inc0_c2) & 32'hffffffff);
+            pend_inc1_z$d = ((inp_short1_inc1_z) & 36'hfffffffff);
+            pend_inc1_c0$d = ((inp_short1_inc1_c0) & 32'hffffffff);
+            pend_inc1_c1$d = ((inp_short1_inc1_c1) & 32'hffffffff);
+            pend_inc1_c2$d = ((inp_short1_inc1_c2) & 32'hffffffff);
+        end
+        if (busy$q & ~walking$q) begin
+            walking$d = ~no_rows;
+            busy$d = ~no_rows;
+        end
+        if (advance) begin
+            if (last) begin
+                busy$d = 1'b0;
+                walking$d = 1'b0;
+            end
+            else begin
+                j$d = j_next;
+                k$d = k_next;
+            end
+        end
+    end
+    
+endmodule // raster_top$edge_walk
+
+
+module raster_top$edge_walk$busy(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$busy
+
+
+module raster_top$edge_walk$c0(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$c0
+
+
+module raster_top$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  load;
+    input wire  step;
+    input wire  up;
+    input wire  [12:0] ld_x;
+    input wire  [20:0] ld_r;
+    input wire  [12:0] ld_q;
+    input wire  [20:0] ld_rho;
+    input wire  [20:0] ld_d;
+    input wire  [35:0] ld_at_z;
+    input wire  [31:0] ld_at_c0;
+    input wire  [31:0] ld_at_c1;
+    input wire  [31:0] ld_at_c2;
+    input wire  [35:0] ld_inc0_z;
+    input wire  [31:0] ld_inc0_c0;
+    input wire  [31:0] ld_inc0_c1;
+    input wire  [31:0] ld_inc0_c2;
+    input wire  [35:0] ld_inc1_z;
+    input wire  [31:0] ld_inc1_c0;
+    input wire  [31:0] ld_inc1_c1;
+    input wire  [31:0] ld_inc1_c2;
+    output reg  [12:0] x;
+    output reg  [35:0] at_z;
+    output reg  [31:0] at_c0;
+    output reg  [31:0] at_c1;
+    output reg  [31:0] at_c2;
+    
+    // Stub signals
+    reg  [12:0] x_r$d;
+    wire  [12:0] x_r$q;
+    reg  x_r$clock;
+    reg  [20:0] r_r$d;
+    wire  [20:0] r_r$q;
+    reg  r_r$clock;
+    reg  [12:0] q_r$d;
+    wire  [12:0] q_r$q;
+    reg  q_r$clock;
+    reg  [20:0] rho_r$d;
+    wire  [20:0] rho_r$q;
+    reg  rho_r$clock;
+    reg  [20:0] d_r$d;
+    wire  [20:0] d_r$q;
+    reg  d_r$clock;
+    reg  z$clock;
+    reg  z$load;
+    reg  z$step;
+    reg  z$up;
+    reg  z$one;
+    reg  [35:0] z$ld_at;
+    reg  [35:0] z$ld_inc0;
+    reg  [35:0] z$ld_inc1;
+    wire  [35:0] z$at;
+    reg  c0$clock;
+    reg  c0$load;
+    reg  c0$step;
+    reg  c0$up;
+    reg  c0$one;
+    reg  [31:0] c0$ld_at;
+    reg  [31:0] c0$ld_inc0;
+    reg  [31:0] c0$ld_inc1;
+    wire  [31:0] c0$at;
+    reg  c1$clock;
+    reg  c1$load;
+    reg  c1$step;
+    reg  c1$up;
+    reg  c1$one;
+    reg  [31:0] c1$ld_at;
+    reg  [31:0] c1$ld_inc0;
+    reg  [31:0] c1$ld_inc1;
+    wire  [31:0] c1$at;
+    reg  c2$clock;
+    reg  c2$load;
+    reg  c2$step;
+    reg  c2$up;
+    reg  c2$one;
+    reg  [31:0] c2$ld_at;
+    reg  [31:0] c2$ld_inc0;
+    reg  [31:0] c2$ld_inc1;
+    wire  [31:0] c2$at;
+    
+    // Local signals
+    reg  one;
+    reg  [20:0] r_plus;
+    reg  [20:0] r_minus;
+    reg  [12:0] x_step;
+    
+    // Sub module instances
+    raster_top$edge_walk$cur$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    raster_top$edge_walk$cur$r_r r_r(
+        .d(r_r$d),
+        .q(r_r$q),
+        .clock(r_r$clock)
+    );
+    raster_top$edge_walk$cur$q_r q_r(
+        .d(q_r$d),
+        .q(q_r$q),
+        .clock(q_r$clock)
+    );
+    raster_top$edge_walk$cur$rho_r rho_r(
+        .d(rho_r$d),
+        .q(rho_r$q),
+        .clock(rho_r$clock)
+    );
+    raster_top$edge_walk$cur$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    raster_top$edge_walk$cur$z z(
+        .clock(z$clock),
+        .load(z$load),
+        .step(z$step),
+        .up(z$up),
+        .one(z$one),
+        .ld_at(z$ld_at),
+        .ld_inc0(z$ld_inc0),
+        .ld_inc1(z$ld_inc1),
+        .at(z$at)
+    );
+    raster_top$edge_walk$cur$c0 c0(
+        .clock(c0$clock),
+        .load(c0$load),
+        .step(c0$step),
+        .up(c0$up),
+        .one(c0$one),
+        .ld_at(c0$ld_at),
+        .ld_inc0(c0$ld_inc0),
+        .ld_inc1(c0$ld_inc1),
+        .at(c0$at)
+    );
+    raster_top$edge_walk$cur$c1 c1(
+        .clock(c1$clock),
+        .load(c1$load),
+        .step(c1$step),
+        .up(c1$up),
+        .one(c1$one),
+        .ld_at(c1$ld_at),
+        .ld_inc0(c1$ld_inc0),
+        .ld_inc1(c1$ld_inc1),
+        .at(c1$at)
+    );
+    raster_top$edge_walk$cur$c2 c2(
+        .clock(c2$clock),
+        .load(c2$load),
+        .step(c2$step),
+        .up(c2$up),
+        .one(c2$one),
+        .ld_at(c2$ld_at),
+        .ld_inc0(c2$ld_inc0),
+        .ld_inc1(c2$ld_inc1),
+        .at(c2$at)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_r$clock = clock;
+        r_r$clock = clock;
+        q_r$clock = clock;
+        rho_r$clock = clock;
+        d_r$clock = clock;
+        x_r$d = x_r$q;
+        r_r$d = r_r$q;
+        q_r$d = q_r$q;
+        rho_r$d = rho_r$q;
+        d_r$d = d_r$q;
+        z$clock = clock;
+        c0$clock = clock;
+        c1$clock = clock;
+        c2$clock = clock;
+        r_plus = r_r$q + rho_r$q;
+        r_minus = r_r$q - rho_r$q;
+        one = r_r$q < rho_r$q;
+        if (up) begin
+            one = r_plus >= d_r$q;
+        end
+        x_step = q_r$q + one;
+        if (step) begin
+            if (up) begin
+                x_r$d = x_r$q - x_step;
+                r_r$d = r_plus;
+                if (one) begin
+                    r_r$d = r_plus - d_r$q;
+                end
+            end
+            else begin
+                x_r$d = x_r$q + x_step;
+                r_r$d = r_minus;
+                if (one) begin
+                    r_r$d = r_minus + d_r$q;
+                end
+            end
+        end
+        if (load) begin
+            x_r$d = ld_x;
+            r_r$d = ld_r;
+            q_r$d = ld_q;
+            rho_r$d = ld_rho;
+            d_r$d = ld_d;
+        end
+        z$load = load;
+        z$step = step;
+        z$up = up;
+        z$one = one;
+        z$ld_at = ld_at_z;
+        z$ld_inc0 = ld_inc0_z;
+        z$ld_inc1 = ld_inc1_z;
+        c0$load = load;
+        c0$step = step;
+        c0$up = up;
+        c0$one = one;
+        c0$ld_at = ld_at_c0;
+        c0$ld_inc0 = ld_inc0_c0;
+        c0$ld_inc1 = ld_inc1_c0;
+        c1$load = load;
+        c1$step = step;
+        c1$up = up;
+        c1$one = one;
+        c1$ld_at = ld_at_c1;
+        c1$ld_inc0 = ld_inc0_c1;
+        c1$ld_inc1 = ld_inc1_c1;
+        c2$load = load;
+        c2$step = step;
+        c2$up = up;
+        c2$one = one;
+        c2$ld_at = ld_at_c2;
+        c2$ld_inc0 = ld_inc0_c2;
+        c2$ld_inc1 = ld_inc1_c2;
+        x = x_r$q;
+        at_z = z$at;
+        at_c0 = c0$at;
+        at_c1 = c1$at;
+        at_c2 = c2$at;
+    end
+    
+endmodule // raster_top$edge_walk$cur
+
+
+module raster_top$edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  load;
+    input wire  step;
+    input wire  up;
+    input wire  one;
+    input wire  [31:0] ld_at;
+    input wire  [31:0] ld_inc0;
+    input wire  [31:0] ld_inc1;
+    output reg  [31:0] at;
+    
+    // Stub signals
+    reg  [31:0] at_r$d;
+    wire  [31:0] at_r$q;
+    reg  at_r$clock;
+    reg  [31:0] inc0_r$d;
+    wire  [31:0] inc0_r$q;
+    reg  inc0_r$clock;
+    reg  [31:0] inc1_r$d;
+    wire  [31:0] inc1_r$q;
+    reg  inc1_r$clock;
+    
+    // Local signals
+    reg  [31:0] inc;
+    
+    // Sub module instances
+    raster_top$edge_walk$cur$c0$at_r at_r(
+        .d(at_r$d),
+        .q(at_r$q),
+        .clock(at_r$clock)
+    );
+    raster_top$edge_walk$cur$c0$inc0_r inc0_r(
+        .d(inc0_r$d),
+        .q(inc0_r$q),
+        .clock(inc0_r$clock)
+    );
+    raster_top$edge_walk$cur$c0$inc1_r inc1_r(
+        .d(inc1_r$d),
+        .q(inc1_r$q),
+        .clock(inc1_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        at_r$clock = clock;
+        inc0_r$clock = clock;
+        inc1_r$clock = clock;
+        at_r$d = at_r$q;
+        inc0_r$d = inc0_r$q;
+        inc1_r$d = inc1_r$q;
+        inc = inc0_r$q;
+        if (one) begin
+            inc = inc1_r$q;
+        end
+        if (step) begin
+            if (up) begin
+                at_r$d = at_r$q - inc;
+            end
+            else begin
+                at_r$d = at_r$q + inc;
+            end
+        end
+        if (load) begin
+            at_r$d = ld_at;
+            inc0_r$d = ld_inc0;
+            inc1_r$d = ld_inc1;
+        end
+        at = at_r$q;
+    end
+    
+endmodule // raster_top$edge_walk$cur$c0
+
+
+module raster_top$edge_walk$cur$c0$at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$c0$at_r
+
+
+module raster_top$edge_walk$cur$c0$inc0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$c0$inc0_r
+
+
+module raster_top$edge_walk$cur$c0$inc1_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$c0$inc1_r
+
+
+module raster_top$edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  load;
+    input wire  step;
+    input wire  up;
+    input wire  one;
+    input wire  [31:0] ld_at;
+    input wire  [31:0] ld_inc0;
+    input wire  [31:0] ld_inc1;
+    output reg  [31:0] at;
+    
+    // Stub signals
+    reg  [31:0] at_r$d;
+    wire  [31:0] at_r$q;
+    reg  at_r$clock;
+    reg  [31:0] inc0_r$d;
+    wire  [31:0] inc0_r$q;
+    reg  inc0_r$clock;
+    reg  [31:0] inc1_r$d;
+    wire  [31:0] inc1_r$q;
+    reg  inc1_r$clock;
+    
+    // Local signals
+    reg  [31:0] inc;
+    
+    // Sub module instances
+    raster_top$edge_walk$cur$c1$at_r at_r(
+        .d(at_r$d),
+        .q(at_r$q),
+        .clock(at_r$clock)
+    );
+    raster_top$edge_walk$cur$c1$inc0_r inc0_r(
+        .d(inc0_r$d),
+        .q(inc0_r$q),
+        .clock(inc0_r$clock)
+    );
+    raster_top$edge_walk$cur$c1$inc1_r inc1_r(
+        .d(inc1_r$d),
+        .q(inc1_r$q),
+        .clock(inc1_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        at_r$clock = clock;
+        inc0_r$clock = clock;
+        inc1_r$clock = clock;
+        at_r$d = at_r$q;
+        inc0_r$d = inc0_r$q;
+        inc1_r$d = inc1_r$q;
+        inc = inc0_r$q;
+        if (one) begin
+            inc = inc1_r$q;
+        end
+        if (step) begin
+            if (up) begin
+                at_r$d = at_r$q - inc;
+            end
+            else begin
+                at_r$d = at_r$q + inc;
+            end
+        end
+        if (load) begin
+            at_r$d = ld_at;
+            inc0_r$d = ld_inc0;
+            inc1_r$d = ld_inc1;
+        end
+        at = at_r$q;
+    end
+    
+endmodule // raster_top$edge_walk$cur$c1
+
+
+module raster_top$edge_walk$cur$c1$at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$c1$at_r
+
+
+module raster_top$edge_walk$cur$c1$inc0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$c1$inc0_r
+
+
+module raster_top$edge_walk$cur$c1$inc1_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$c1$inc1_r
+
+
+module raster_top$edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  load;
+    input wire  step;
+    input wire  up;
+    input wire  one;
+    input wire  [31:0] ld_at;
+    input wire  [31:0] ld_inc0;
+    input wire  [31:0] ld_inc1;
+    output reg  [31:0] at;
+    
+    // Stub signals
+    reg  [31:0] at_r$d;
+    wire  [31:0] at_r$q;
+    reg  at_r$clock;
+    reg  [31:0] inc0_r$d;
+    wire  [31:0] inc0_r$q;
+    reg  inc0_r$clock;
+    reg  [31:0] inc1_r$d;
+    wire  [31:0] inc1_r$q;
+    reg  inc1_r$clock;
+    
+    // Local signals
+    reg  [31:0] inc;
+    
+    // Sub module instances
+    raster_top$edge_walk$cur$c2$at_r at_r(
+        .d(at_r$d),
+        .q(at_r$q),
+        .clock(at_r$clock)
+    );
+    raster_top$edge_walk$cur$c2$inc0_r inc0_r(
+        .d(inc0_r$d),
+        .q(inc0_r$q),
+        .clock(inc0_r$clock)
+    );
+    raster_top$edge_walk$cur$c2$inc1_r inc1_r(
+        .d(inc1_r$d),
+        .q(inc1_r$q),
+        .clock(inc1_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        at_r$clock = clock;
+        inc0_r$clock = clock;
+        inc1_r$clock = clock;
+        at_r$d = at_r$q;
+        inc0_r$d = inc0_r$q;
+        inc1_r$d = inc1_r$q;
+        inc = inc0_r$q;
+        if (one) begin
+            inc = inc1_r$q;
+        end
+        if (step) begin
+            if (up) begin
+                at_r$d = at_r$q - inc;
+            end
+            else begin
+                at_r$d = at_r$q + inc;
+            end
+        end
+        if (load) begin
+            at_r$d = ld_at;
+            inc0_r$d = ld_inc0;
+            inc1_r$d = ld_inc1;
+        end
+        at = at_r$q;
+    end
+    
+endmodule // raster_top$edge_walk$cur$c2
+
+
+module raster_top$edge_walk$cur$c2$at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$c2$at_r
+
+
+module raster_top$edge_walk$cur$c2$inc0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$c2$inc0_r
+
+
+module raster_top$edge_walk$cur$c2$inc1_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$c2$inc1_r
+
+
+module raster_top$edge_walk$cur$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$d_r
+
+
+module raster_top$edge_walk$cur$q_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$q_r
+
+
+module raster_top$edge_walk$cur$r_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$r_r
+
+
+module raster_top$edge_walk$cur$rho_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$rho_r
+
+
+module raster_top$edge_walk$cur$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$x_r
+
+
+module raster_top$edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  load;
+    input wire  step;
+    input wire  up;
+    input wire  one;
+    input wire  [35:0] ld_at;
+    input wire  [35:0] ld_inc0;
+    input wire  [35:0] ld_inc1;
+    output reg  [35:0] at;
+    
+    // Stub signals
+    reg  [35:0] at_r$d;
+    wire  [35:0] at_r$q;
+    reg  at_r$clock;
+    reg  [35:0] inc0_r$d;
+    wire  [35:0] inc0_r$q;
+    reg  inc0_r$clock;
+    reg  [35:0] inc1_r$d;
+    wire  [35:0] inc1_r$q;
+    reg  inc1_r$clock;
+    
+    // Local signals
+    reg  [35:0] inc;
+    
+    // Sub module instances
+    raster_top$edge_walk$cur$z$at_r at_r(
+        .d(at_r$d),
+        .q(at_r$q),
+        .clock(at_r$clock)
+    );
+    raster_top$edge_walk$cur$z$inc0_r inc0_r(
+        .d(inc0_r$d),
+        .q(inc0_r$q),
+        .clock(inc0_r$clock)
+    );
+    raster_top$edge_walk$cur$z$inc1_r inc1_r(
+        .d(inc1_r$d),
+        .q(inc1_r$q),
+        .clock(inc1_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        at_r$clock = clock;
+        inc0_r$clock = clock;
+        inc1_r$clock = clock;
+        at_r$d = at_r$q;
+        inc0_r$d = inc0_r$q;
+        inc1_r$d = inc1_r$q;
+        inc = inc0_r$q;
+        if (one) begin
+            inc = inc1_r$q;
+        end
+        if (step) begin
+            if (up) begin
+                at_r$d = at_r$q - inc;
+            end
+            else begin
+                at_r$d = at_r$q + inc;
+            end
+        end
+        if (load) begin
+            at_r$d = ld_at;
+            inc0_r$d = ld_inc0;
+            inc1_r$d = ld_inc1;
+        end
+        at = at_r$q;
+    end
+    
+endmodule // raster_top$edge_walk$cur$z
+
+
+module raster_top$edge_walk$cur$z$at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$z$at_r
+
+
+module raster_top$edge_walk$cur$z$inc0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$z$inc0_r
+
+
+module raster_top$edge_walk$cur$z$inc1_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$cur$z$inc1_r
+
+
+module raster_top$edge_walk$ddx_c0(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$ddx_c0
+
+
+module raster_top$edge_walk$ddx_c1(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$ddx_c1
+
+
+module raster_top$edge_walk$ddx_c2(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$ddx_c2
+
+
+module raster_top$edge_walk$ddx_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$ddx_z
+
+
+module raster_top$edge_walk$j(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$j
+
+
+module raster_top$edge_walk$j_sign(x,neg);
+    
+    // Module arguments
+    input wire  [12:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 13'b1000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // raster_top$edge_walk$j_sign
+
+
+module raster_top$edge_walk$k(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$k
+
+
+module raster_top$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  load;
+    input wire  step;
+    input wire  up;
+    input wire  [12:0] ld_x;
+    input wire  [20:0] ld_r;
+    input wire  [12:0] ld_q;
+    input wire  [20:0] ld_rho;
+    input wire  [20:0] ld_d;
+    input wire  [35:0] ld_at_z;
+    input wire  [31:0] ld_at_c0;
+    input wire  [31:0] ld_at_c1;
+    input wire  [31:0] ld_at_c2;
+    input wire  [35:0] ld_inc0_z;
+    input wire  [31:0] ld_inc0_c0;
+    input wire  [31:0] ld_inc0_c1;
+    input wire  [31:0] ld_inc0_c2;
+    input wire  [35:0] ld_inc1_z;
+    input wire  [31:0] ld_inc1_c0;
+    input wire  [31:0] ld_inc1_c1;
+    input wire  [31:0] ld_inc1_c2;
+    output reg  [12:0] x;
+    output reg  [35:0] at_z;
+    output reg  [31:0] at_c0;
+    output reg  [31:0] at_c1;
+    output reg  [31:0] at_c2;
+    
+    // Stub signals
+    reg  [12:0] x_r$d;
+    wire  [12:0] x_r$q;
+    reg  x_r$clock;
+    reg  [20:0] r_r$d;
+    wire  [20:0] r_r$q;
+    reg  r_r$clock;
+    reg  [12:0] q_r$d;
+    wire  [12:0] q_r$q;
+    reg  q_r$clock;
+    reg  [20:0] rho_r$d;
+    wire  [20:0] rho_r$q;
+    reg  rho_r$clock;
+    reg  [20:0] d_r$d;
+    wire  [20:0] d_r$q;
+    reg  d_r$clock;
+    reg  z$clock;
+    reg  z$load;
+    reg  z$step;
+    reg  z$up;
+    reg  z$one;
+    reg  [35:0] z$ld_at;
+    reg  [35:0] z$ld_inc0;
+    reg  [35:0] z$ld_inc1;
+    wire  [35:0] z$at;
+    reg  c0$clock;
+    reg  c0$load;
+    reg  c0$step;
+    reg  c0$up;
+    reg  c0$one;
+    reg  [31:0] c0$ld_at;
+    reg  [31:0] c0$ld_inc0;
+    reg  [31:0] c0$ld_inc1;
+    wire  [31:0] c0$at;
+    reg  c1$clock;
+    reg  c1$load;
+    reg  c1$step;
+    reg  c1$up;
+    reg  c1$one;
+    reg  [31:0] c1$ld_at;
+    reg  [31:0] c1$ld_inc0;
+    reg  [31:0] c1$ld_inc1;
+    wire  [31:0] c1$at;
+    reg  c2$clock;
+    reg  c2$load;
+    reg  c2$step;
+    reg  c2$up;
+    reg  c2$one;
+    reg  [31:0] c2$ld_at;
+    reg  [31:0] c2$ld_inc0;
+    reg  [31:0] c2$ld_inc1;
+    wire  [31:0] c2$at;
+    
+    // Local signals
+    reg  one;
+    reg  [20:0] r_plus;
+    reg  [20:0] r_minus;
+    reg  [12:0] x_step;
+    
+    // Sub module instances
+    raster_top$edge_walk$maj$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    raster_top$edge_walk$maj$r_r r_r(
+        .d(r_r$d),
+        .q(r_r$q),
+        .clock(r_r$clock)
+    );
+    raster_top$edge_walk$maj$q_r q_r(
+        .d(q_r$d),
+        .q(q_r$q),
+        .clock(q_r$clock)
+    );
+    raster_top$edge_walk$maj$rho_r rho_r(
+        .d(rho_r$d),
+        .q(rho_r$q),
+        .clock(rho_r$clock)
+    );
+    raster_top$edge_walk$maj$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    raster_top$edge_walk$maj$z z(
+        .clock(z$clock),
+        .load(z$load),
+        .step(z$step),
+        .up(z$up),
+        .one(z$one),
+        .ld_at(z$ld_at),
+        .ld_inc0(z$ld_inc0),
+        .ld_inc1(z$ld_inc1),
+        .at(z$at)
+    );
+    raster_top$edge_walk$maj$c0 c0(
+        .clock(c0$clock),
+        .load(c0$load),
+        .step(c0$step),
+        .up(c0$up),
+        .one(c0$one),
+        .ld_at(c0$ld_at),
+        .ld_inc0(c0$ld_inc0),
+        .ld_inc1(c0$ld_inc1),
+        .at(c0$at)
+    );
+    raster_top$edge_walk$maj$c1 c1(
+        .clock(c1$clock),
+        .load(c1$load),
+        .step(c1$step),
+        .up(c1$up),
+        .one(c1$one),
+        .ld_at(c1$ld_at),
+        .ld_inc0(c1$ld_inc0),
+        .ld_inc1(c1$ld_inc1),
+        .at(c1$at)
+    );
+    raster_top$edge_walk$maj$c2 c2(
+        .clock(c2$clock),
+        .load(c2$load),
+        .step(c2$step),
+        .up(c2$up),
+        .one(c2$one),
+        .ld_at(c2$ld_at),
+        .ld_inc0(c2$ld_inc0),
+        .ld_inc1(c2$ld_inc1),
+        .at(c2$at)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_r$clock = clock;
+        r_r$clock = clock;
+        q_r$clock = clock;
+        rho_r$clock = clock;
+        d_r$clock = clock;
+        x_r$d = x_r$q;
+        r_r$d = r_r$q;
+        q_r$d = q_r$q;
+        rho_r$d = rho_r$q;
+        d_r$d = d_r$q;
+        z$clock = clock;
+        c0$clock = clock;
+        c1$clock = clock;
+        c2$clock = clock;
+        r_plus = r_r$q + rho_r$q;
+        r_minus = r_r$q - rho_r$q;
+        one = r_r$q < rho_r$q;
+        if (up) begin
+            one = r_plus >= d_r$q;
+        end
+        x_step = q_r$q + one;
+        if (step) begin
+            if (up) begin
+                x_r$d = x_r$q - x_step;
+                r_r$d = r_plus;
+                if (one) begin
+                    r_r$d = r_plus - d_r$q;
+                end
+            end
+            else begin
+                x_r$d = x_r$q + x_step;
+                r_r$d = r_minus;
+                if (one) begin
+                    r_r$d = r_minus + d_r$q;
+                end
+            end
+        end
+        if (load) begin
+            x_r$d = ld_x;
+            r_r$d = ld_r;
+            q_r$d = ld_q;
+            rho_r$d = ld_rho;
+            d_r$d = ld_d;
+        end
+        z$load = load;
+        z$step = step;
+        z$up = up;
+        z$one = one;
+        z$ld_at = ld_at_z;
+        z$ld_inc0 = ld_inc0_z;
+        z$ld_inc1 = ld_inc1_z;
+        c0$load = load;
+        c0$step = step;
+        c0$up = up;
+        c0$one = one;
+        c0$ld_at = ld_at_c0;
+        c0$ld_inc0 = ld_inc0_c0;
+        c0$ld_inc1 = ld_inc1_c0;
+        c1$load = load;
+        c1$step = step;
+        c1$up = up;
+        c1$one = one;
+        c1$ld_at = ld_at_c1;
+        c1$ld_inc0 = ld_inc0_c1;
+        c1$ld_inc1 = ld_inc1_c1;
+        c2$load = load;
+        c2$step = step;
+        c2$up = up;
+        c2$one = one;
+        c2$ld_at = ld_at_c2;
+        c2$ld_inc0 = ld_inc0_c2;
+        c2$ld_inc1 = ld_inc1_c2;
+        x = x_r$q;
+        at_z = z$at;
+        at_c0 = c0$at;
+        at_c1 = c1$at;
+        at_c2 = c2$at;
+    end
+    
+endmodule // raster_top$edge_walk$maj
+
+
+module raster_top$edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  load;
+    input wire  step;
+    input wire  up;
+    input wire  one;
+    input wire  [31:0] ld_at;
+    input wire  [31:0] ld_inc0;
+    input wire  [31:0] ld_inc1;
+    output reg  [31:0] at;
+    
+    // Stub signals
+    reg  [31:0] at_r$d;
+    wire  [31:0] at_r$q;
+    reg  at_r$clock;
+    reg  [31:0] inc0_r$d;
+    wire  [31:0] inc0_r$q;
+    reg  inc0_r$clock;
+    reg  [31:0] inc1_r$d;
+    wire  [31:0] inc1_r$q;
+    reg  inc1_r$clock;
+    
+    // Local signals
+    reg  [31:0] inc;
+    
+    // Sub module instances
+    raster_top$edge_walk$maj$c0$at_r at_r(
+        .d(at_r$d),
+        .q(at_r$q),
+        .clock(at_r$clock)
+    );
+    raster_top$edge_walk$maj$c0$inc0_r inc0_r(
+        .d(inc0_r$d),
+        .q(inc0_r$q),
+        .clock(inc0_r$clock)
+    );
+    raster_top$edge_walk$maj$c0$inc1_r inc1_r(
+        .d(inc1_r$d),
+        .q(inc1_r$q),
+        .clock(inc1_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        at_r$clock = clock;
+        inc0_r$clock = clock;
+        inc1_r$clock = clock;
+        at_r$d = at_r$q;
+        inc0_r$d = inc0_r$q;
+        inc1_r$d = inc1_r$q;
+        inc = inc0_r$q;
+        if (one) begin
+            inc = inc1_r$q;
+        end
+        if (step) begin
+            if (up) begin
+                at_r$d = at_r$q - inc;
+            end
+            else begin
+                at_r$d = at_r$q + inc;
+            end
+        end
+        if (load) begin
+            at_r$d = ld_at;
+            inc0_r$d = ld_inc0;
+            inc1_r$d = ld_inc1;
+        end
+        at = at_r$q;
+    end
+    
+endmodule // raster_top$edge_walk$maj$c0
+
+
+module raster_top$edge_walk$maj$c0$at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$c0$at_r
+
+
+module raster_top$edge_walk$maj$c0$inc0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$c0$inc0_r
+
+
+module raster_top$edge_walk$maj$c0$inc1_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$c0$inc1_r
+
+
+module raster_top$edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  load;
+    input wire  step;
+    input wire  up;
+    input wire  one;
+    input wire  [31:0] ld_at;
+    input wire  [31:0] ld_inc0;
+    input wire  [31:0] ld_inc1;
+    output reg  [31:0] at;
+    
+    // Stub signals
+    reg  [31:0] at_r$d;
+    wire  [31:0] at_r$q;
+    reg  at_r$clock;
+    reg  [31:0] inc0_r$d;
+    wire  [31:0] inc0_r$q;
+    reg  inc0_r$clock;
+    reg  [31:0] inc1_r$d;
+    wire  [31:0] inc1_r$q;
+    reg  inc1_r$clock;
+    
+    // Local signals
+    reg  [31:0] inc;
+    
+    // Sub module instances
+    raster_top$edge_walk$maj$c1$at_r at_r(
+        .d(at_r$d),
+        .q(at_r$q),
+        .clock(at_r$clock)
+    );
+    raster_top$edge_walk$maj$c1$inc0_r inc0_r(
+        .d(inc0_r$d),
+        .q(inc0_r$q),
+        .clock(inc0_r$clock)
+    );
+    raster_top$edge_walk$maj$c1$inc1_r inc1_r(
+        .d(inc1_r$d),
+        .q(inc1_r$q),
+        .clock(inc1_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        at_r$clock = clock;
+        inc0_r$clock = clock;
+        inc1_r$clock = clock;
+        at_r$d = at_r$q;
+        inc0_r$d = inc0_r$q;
+        inc1_r$d = inc1_r$q;
+        inc = inc0_r$q;
+        if (one) begin
+            inc = inc1_r$q;
+        end
+        if (step) begin
+            if (up) begin
+                at_r$d = at_r$q - inc;
+            end
+            else begin
+                at_r$d = at_r$q + inc;
+            end
+        end
+        if (load) begin
+            at_r$d = ld_at;
+            inc0_r$d = ld_inc0;
+            inc1_r$d = ld_inc1;
+        end
+        at = at_r$q;
+    end
+    
+endmodule // raster_top$edge_walk$maj$c1
+
+
+module raster_top$edge_walk$maj$c1$at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$c1$at_r
+
+
+module raster_top$edge_walk$maj$c1$inc0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$c1$inc0_r
+
+
+module raster_top$edge_walk$maj$c1$inc1_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$c1$inc1_r
+
+
+module raster_top$edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  load;
+    input wire  step;
+    input wire  up;
+    input wire  one;
+    input wire  [31:0] ld_at;
+    input wire  [31:0] ld_inc0;
+    input wire  [31:0] ld_inc1;
+    output reg  [31:0] at;
+    
+    // Stub signals
+    reg  [31:0] at_r$d;
+    wire  [31:0] at_r$q;
+    reg  at_r$clock;
+    reg  [31:0] inc0_r$d;
+    wire  [31:0] inc0_r$q;
+    reg  inc0_r$clock;
+    reg  [31:0] inc1_r$d;
+    wire  [31:0] inc1_r$q;
+    reg  inc1_r$clock;
+    
+    // Local signals
+    reg  [31:0] inc;
+    
+    // Sub module instances
+    raster_top$edge_walk$maj$c2$at_r at_r(
+        .d(at_r$d),
+        .q(at_r$q),
+        .clock(at_r$clock)
+    );
+    raster_top$edge_walk$maj$c2$inc0_r inc0_r(
+        .d(inc0_r$d),
+        .q(inc0_r$q),
+        .clock(inc0_r$clock)
+    );
+    raster_top$edge_walk$maj$c2$inc1_r inc1_r(
+        .d(inc1_r$d),
+        .q(inc1_r$q),
+        .clock(inc1_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        at_r$clock = clock;
+        inc0_r$clock = clock;
+        inc1_r$clock = clock;
+        at_r$d = at_r$q;
+        inc0_r$d = inc0_r$q;
+        inc1_r$d = inc1_r$q;
+        inc = inc0_r$q;
+        if (one) begin
+            inc = inc1_r$q;
+        end
+        if (step) begin
+            if (up) begin
+                at_r$d = at_r$q - inc;
+            end
+            else begin
+                at_r$d = at_r$q + inc;
+            end
+        end
+        if (load) begin
+            at_r$d = ld_at;
+            inc0_r$d = ld_inc0;
+            inc1_r$d = ld_inc1;
+        end
+        at = at_r$q;
+    end
+    
+endmodule // raster_top$edge_walk$maj$c2
+
+
+module raster_top$edge_walk$maj$c2$at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$c2$at_r
+
+
+module raster_top$edge_walk$maj$c2$inc0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$c2$inc0_r
+
+
+module raster_top$edge_walk$maj$c2$inc1_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$c2$inc1_r
+
+
+module raster_top$edge_walk$maj$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$d_r
+
+
+module raster_top$edge_walk$maj$q_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$q_r
+
+
+module raster_top$edge_walk$maj$r_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$r_r
+
+
+module raster_top$edge_walk$maj$rho_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$rho_r
+
+
+module raster_top$edge_walk$maj$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$x_r
+
+
+module raster_top$edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  load;
+    input wire  step;
+    input wire  up;
+    input wire  one;
+    input wire  [35:0] ld_at;
+    input wire  [35:0] ld_inc0;
+    input wire  [35:0] ld_inc1;
+    output reg  [35:0] at;
+    
+    // Stub signals
+    reg  [35:0] at_r$d;
+    wire  [35:0] at_r$q;
+    reg  at_r$clock;
+    reg  [35:0] inc0_r$d;
+    wire  [35:0] inc0_r$q;
+    reg  inc0_r$clock;
+    reg  [35:0] inc1_r$d;
+    wire  [35:0] inc1_r$q;
+    reg  inc1_r$clock;
+    
+    // Local signals
+    reg  [35:0] inc;
+    
+    // Sub module instances
+    raster_top$edge_walk$maj$z$at_r at_r(
+        .d(at_r$d),
+        .q(at_r$q),
+        .clock(at_r$clock)
+    );
+    raster_top$edge_walk$maj$z$inc0_r inc0_r(
+        .d(inc0_r$d),
+        .q(inc0_r$q),
+        .clock(inc0_r$clock)
+    );
+    raster_top$edge_walk$maj$z$inc1_r inc1_r(
+        .d(inc1_r$d),
+        .q(inc1_r$q),
+        .clock(inc1_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        at_r$clock = clock;
+        inc0_r$clock = clock;
+        inc1_r$clock = clock;
+        at_r$d = at_r$q;
+        inc0_r$d = inc0_r$q;
+        inc1_r$d = inc1_r$q;
+        inc = inc0_r$q;
+        if (one) begin
+            inc = inc1_r$q;
+        end
+        if (step) begin
+            if (up) begin
+                at_r$d = at_r$q - inc;
+            end
+            else begin
+                at_r$d = at_r$q + inc;
+            end
+        end
+        if (load) begin
+            at_r$d = ld_at;
+            inc0_r$d = ld_inc0;
+            inc1_r$d = ld_inc1;
+        end
+        at = at_r$q;
+    end
+    
+endmodule // raster_top$edge_walk$maj$z
+
+
+module raster_top$edge_walk$maj$z$at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$z$at_r
+
+
+module raster_top$edge_walk$maj$z$inc0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$z$inc0_r
+
+
+module raster_top$edge_walk$maj$z$inc1_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj$z$inc1_r
+
+
+module raster_top$edge_walk$maj_left(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$maj_left
+
+
+module raster_top$edge_walk$pend_at_c0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_at_c0
+
+
+module raster_top$edge_walk$pend_at_c1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_at_c1
+
+
+module raster_top$edge_walk$pend_at_c2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_at_c2
+
+
+module raster_top$edge_walk$pend_at_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_at_z
+
+
+module raster_top$edge_walk$pend_d(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_d
+
+
+module raster_top$edge_walk$pend_inc0_c0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_inc0_c0
+
+
+module raster_top$edge_walk$pend_inc0_c1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_inc0_c1
+
+
+module raster_top$edge_walk$pend_inc0_c2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_inc0_c2
+
+
+module raster_top$edge_walk$pend_inc0_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_inc0_z
+
+
+module raster_top$edge_walk$pend_inc1_c0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_inc1_c0
+
+
+module raster_top$edge_walk$pend_inc1_c1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_inc1_c1
+
+
+module raster_top$edge_walk$pend_inc1_c2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_inc1_c2
+
+
+module raster_top$edge_walk$pend_inc1_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_inc1_z
+
+
+module raster_top$edge_walk$pend_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_q
+
+
+module raster_top$edge_walk$pend_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_r
+
+
+module raster_top$edge_walk$pend_rho(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_rho
+
+
+module raster_top$edge_walk$pend_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$pend_x
+
+
+module raster_top$edge_walk$sides(a,b,lt);
+    
+    // Module arguments
+    input wire  [12:0] a;
+    input wire  [12:0] b;
+    output reg  lt;
+    
+    // Constant declarations
+    localparam  half = 13'b1000000000000;
+    
+    // Update code
+    always @(*) begin
+        lt = (a ^ half) < (b ^ half);
+    end
+    
+endmodule // raster_top$edge_walk$sides
+
+
+module raster_top$edge_walk$total(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$total
+
+
+module raster_top$edge_walk$up(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$up
+
+
+module raster_top$edge_walk$walking(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$edge_walk$walking
+
+
+module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_y,out_xl,out_xr,out_left_z,out_left_c0,out_left_c1,out_left_c2,out_right_z,out_right_c0,out_right_c1,out_right_c2,out_ddx_z,out_ddx_c0,out_ddx_c1,out_ddx_c2,empty);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  [9:0] inp_y;
+    input wire  [12:0] inp_xl;
+    input wire  [12:0] inp_xr;
+    input wire  [35:0] inp_left_z;
+    input wire  [31:0] inp_left_c0;
+    input wire  [31:0] inp_left_c1;
+    input wire  [31:0] inp_left_c2;
+    input wire  [35:0] inp_right_z;
+    input wire  [31:0] inp_right_c0;
+    input wire  [31:0] inp_right_c1;
+    input wire  [31:0] inp_right_c2;
+    input wire  [39:0] inp_ddx_z;
+    input wire  [35:0] inp_ddx_c0;
+    input wire  [35:0] inp_ddx_c1;
+    input wire  [35:0] inp_ddx_c2;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [9:0] out_y;
+    output reg  [12:0] out_xl;
+    output reg  [12:0] out_xr;
+    output reg  [35:0] out_left_z;
+    output reg  [31:0] out_left_c0;
+    output reg  [31:0] out_left_c1;
+    output reg  [31:0] out_left_c2;
+    output reg  [35:0] out_right_z;
+    output reg  [31:0] out_right_c0;
+    output reg  [31:0] out_right_c1;
+    output reg  [31:0] out_right_c2;
+    output reg  [39:0] out_ddx_z;
+    output reg  [35:0] out_ddx_c0;
+    output reg  [35:0] out_ddx_c1;
+    output reg  [35:0] out_ddx_c2;
+    output reg  empty;
+    
+    // Stub signals
+    reg  [2:0] count$d;
+    wire  [2:0] count$q;
+    reg  count$clock;
+    reg  [2:0] level$count;
+    wire  level$full;
+    wire  level$empty;
+    reg  y$clock;
+    reg  y$push;
+    reg  y$pop;
+    reg  [2:0] y$wr;
+    reg  [9:0] y$din;
+    wire  [9:0] y$head;
+    reg  xl$clock;
+    reg  xl$push;
+    reg  xl$pop;
+    reg  [2:0] xl$wr;
+    reg  [12:0] xl$din;
+    wire  [12:0] xl$head;
+    reg  xr$clock;
+    reg  xr$push;
+    reg  xr$pop;
+    reg  [2:0] xr$wr;
+    reg  [12:0] xr$din;
+    wire  [12:0] xr$head;
+    reg  left_z$clock;
+    reg  left_z$push;
+    reg  left_z$pop;
+    reg  [2:0] left_z$wr;
+    reg  [35:0] left_z$din;
+    wire  [35:0] left_z$head;
+    reg  left_c0$clock;
+    reg  left_c0$push;
+    reg  left_c0$pop;
+    reg  [2:0] left_c0$wr;
+    reg  [31:0] left_c0$din;
+    wire  [31:0] left_c0$head;
+    reg  left_c1$clock;
+    reg  left_c1$push;
+    reg  left_c1$pop;
+    reg  [2:0] left_c1$wr;
+    reg  [31:0] left_c1$din;
+    wire  [31:0] left_c1$head;
+    reg  left_c2$clock;
+    reg  left_c2$push;
+    reg  left_c2$pop;
+    reg  [2:0] left_c2$wr;
+    reg  [31:0] left_c2$din;
+    wire  [31:0] left_c2$head;
+    reg  right_z$clock;
+    reg  right_z$push;
+    reg  right_z$pop;
+    reg  [2:0] right_z$wr;
+    reg  [35:0] right_z$din;
+    wire  [35:0] right_z$head;
+    reg  right_c0$clock;
+    reg  right_c0$push;
+    reg  right_c0$pop;
+    reg  [2:0] right_c0$wr;
+    reg  [31:0] right_c0$din;
+    wire  [31:0] right_c0$head;
+    reg  right_c1$clock;
+    reg  right_c1$push;
+    reg  right_c1$pop;
+    reg  [2:0] right_c1$wr;
+    reg  [31:0] right_c1$din;
+    wire  [31:0] right_c1$head;
+    reg  right_c2$clock;
+    reg  right_c2$push;
+    reg  right_c2$pop;
+    reg  [2:0] right_c2$wr;
+    reg  [31:0] right_c2$din;
+    wire  [31:0] right_c2$head;
+    reg  ddx_z$clock;
+    reg  ddx_z$push;
+    reg  ddx_z$pop;
+    reg  [2:0] ddx_z$wr;
+    reg  [39:0] ddx_z$din;
+    wire  [39:0] ddx_z$head;
+    reg  ddx_c0$clock;
+    reg  ddx_c0$push;
+    reg  ddx_c0$pop;
+    reg  [2:0] ddx_c0$wr;
+    reg  [35:0] ddx_c0$din;
+    wire  [35:0] ddx_c0$head;
+    reg  ddx_c1$clock;
+    reg  ddx_c1$push;
+    reg  ddx_c1$pop;
+    reg  [2:0] ddx_c1$wr;
+    reg  [35:0] ddx_c1$din;
+    wire  [35:0] ddx_c1$head;
+    reg  ddx_c2$clock;
+    reg  ddx_c2$push;
+    reg  ddx_c2$pop;
+    reg  [2:0] ddx_c2$wr;
+    reg  [35:0] ddx_c2$din;
+    wire  [35:0] ddx_c2$head;
+    
+    // Local signals
+    reg  [2:0] wr;
+    reg  push;
+    reg  pop;
+    
+    // Sub module instances
+    raster_top$fifo$count count(
+        .d(count$d),
+        .q(count$q),
+        .clock(count$clock)
+    );
+    raster_top$fifo$level level(
+        .count(level$count),
+        .full(level$full),
+        .empty(level$empty)
+    );
+    raster_top$fifo$y y(
+        .clock(y$clock),
+        .push(y$push),
+        .pop(y$pop),
+        .wr(y$wr),
+        .din(y$din),
+        .head(y$head)
+    );
+    raster_top$fifo$xl xl(
+        .clock(xl$clock),
+        .push(xl$push),
+        .pop(xl$pop),
+        .wr(xl$wr),
+        .din(xl$din),
+        .head(xl$head)
+    );
+    raster_top$fifo$xr xr(
+        .clock(xr$clock),
+        .push(xr$push),
+        .pop(xr$pop),
+        .wr(xr$wr),
+        .din(xr$din),
+        .head(xr$head)
+    );
+    raster_top$fifo$left_z left_z(
+        .clock(left_z$clock),
+        .push(left_z$push),
+        .pop(left_z$pop),
+        .wr(left_z$wr),
+        .din(left_z$din),
+        .head(left_z$head)
+    );
+    raster_top$fifo$left_c0 left_c0(
+        .clock(left_c0$clock),
+        .push(left_c0$push),
+        .pop(left_c0$pop),
+        .wr(left_c0$wr),
+        .din(left_c0$din),
+        .head(left_c0$head)
+    );
+    raster_top$fifo$left_c1 left_c1(
+        .clock(left_c1$clock),
+        .push(left_c1$push),
+        .pop(left_c1$pop),
+        .wr(left_c1$wr),
+        .din(left_c1$din),
+        .head(left_c1$head)
+    );
+    raster_top$fifo$left_c2 left_c2(
+        .clock(left_c2$clock),
+        .push(left_c2$push),
+        .pop(left_c2$pop),
+        .wr(left_c2$wr),
+        .din(left_c2$din),
+        .head(left_c2$head)
+    );
+    raster_top$fifo$right_z right_z(
+        .clock(right_z$clock),
+        .push(right_z$push),
+        .pop(right_z$pop),
+        .wr(right_z$wr),
+        .din(right_z$din),
+        .head(right_z$head)
+    );
+    raster_top$fifo$right_c0 right_c0(
+        .clock(right_c0$clock),
+        .push(right_c0$push),
+        .pop(right_c0$pop),
+        .wr(right_c0$wr),
+        .din(right_c0$din),
+        .head(right_c0$head)
+    );
+    raster_top$fifo$right_c1 right_c1(
+        .clock(right_c1$clock),
+        .push(right_c1$push),
+        .pop(right_c1$pop),
+        .wr(right_c1$wr),
+        .din(right_c1$din),
+        .head(right_c1$head)
+    );
+    raster_top$fifo$right_c2 right_c2(
+        .clock(right_c2$clock),
+        .push(right_c2$push),
+        .pop(right_c2$pop),
+        .wr(right_c2$wr),
+        .din(right_c2$din),
+        .head(right_c2$head)
+    );
+    raster_top$fifo$ddx_z ddx_z(
+        .clock(ddx_z$clock),
+        .push(ddx_z$push),
+        .pop(ddx_z$pop),
+        .wr(ddx_z$wr),
+        .din(ddx_z$din),
+        .head(ddx_z$head)
+    );
+    raster_top$fifo$ddx_c0 ddx_c0(
+        .clock(ddx_c0$clock),
+        .push(ddx_c0$push),
+        .pop(ddx_c0$pop),
+        .wr(ddx_c0$wr),
+        .din(ddx_c0$din),
+        .head(ddx_c0$head)
+    );
+    raster_top$fifo$ddx_c1 ddx_c1(
+        .clock(ddx_c1$clock),
+        .push(ddx_c1$push),
+        .pop(ddx_c1$pop),
+        .wr(ddx_c1$wr),
+        .din(ddx_c1$din),
+        .head(ddx_c1$head)
+    );
+    raster_top$fifo$ddx_c2 ddx_c2(
+        .clock(ddx_c2$clock),
+        .push(ddx_c2$push),
+        .pop(ddx_c2$pop),
+        .wr(ddx_c2$wr),
+        .din(ddx_c2$din),
+        .head(ddx_c2$head)
+    );
+    
+    // Update code
+    always @(*) begin
+        count$clock = clock;
+        count$d = count$q;
+        level$count = count$q;
+        inp_ready = ~level$full;
+        out_valid = ~level$empty | inp_valid;
+        empty = level$empty;
+        push = inp_valid & ~level$full & ~(level$empty & out_ready);
+        pop = ~level$empty & out_ready;
+        wr = count$q;
+        if (pop) begin
+            wr = count$q - 32'h1;
+        end
+        if (push & ~pop) begin
+            count$d = count$q + 32'h1;
+        end
+        if (pop & ~push) begin
+            count$d = count$q - 32'h1;
+        end
+        y$clock = clock;
+        y$push = push;
+        y$pop = pop;
+        y$wr = wr;
+        y$din = inp_y;
+        out_y = y$head;
+        if (level$empty) begin
+            out_y = inp_y;
+        end
+        xl$clock = clock;
+        xl$push = push;
+        xl$pop = pop;
+        xl$wr = wr;
+        xl$din = inp_xl;
+        out_xl = xl$head;
+        if (level$empty) begin
+            out_xl = inp_xl;
+        end
+        xr$clock = clock;
+        xr$push = push;
+        xr$pop = pop;
+        xr$wr = wr;
+        xr$din = inp_xr;
+        out_xr = xr$head;
+        if (level$empty) begin
+            out_xr = inp_xr;
+        end
+        left_z$clock = clock;
+        left_z$push = push;
+        left_z$pop = pop;
+        left_z$wr = wr;
+        left_z$din = inp_left_z;
+        out_left_z = left_z$head;
+        if (level$empty) begin
+            out_left_z = inp_left_z;
+        end
+        left_c0$clock = clock;
+        left_c0$push = push;
+        left_c0$pop = pop;
+        left_c0$wr = wr;
+        left_c0$din = inp_left_c0;
+        out_left_c0 = left_c0$head;
+        if (level$empty) begin
+            out_left_c0 = inp_left_c0;
+        end
+        left_c1$clock = clock;
+        left_c1$push = push;
+        left_c1$pop = pop;
+        left_c1$wr = wr;
+        left_c1$din = inp_left_c1;
+        out_left_c1 = left_c1$head;
+        if (level$empty) begin
+            out_left_c1 = inp_left_c1;
+        end
+        left_c2$clock = clock;
+        left_c2$push = push;
+        left_c2$pop = pop;
+        left_c2$wr = wr;
+        left_c2$din = inp_left_c2;
+        out_left_c2 = left_c2$head;
+        if (level$empty) begin
+            out_left_c2 = inp_left_c2;
+        end
+        right_z$clock = clock;
+        right_z$push = push;
+        right_z$pop = pop;
+        right_z$wr = wr;
+        right_z$din = inp_right_z;
+        out_right_z = right_z$head;
+        if (level$empty) begin
+            out_right_z = inp_right_z;
+        end
+        right_c0$clock = clock;
+        right_c0$push = push;
+        right_c0$pop = pop;
+        right_c0$wr = wr;
+        right_c0$din = inp_right_c0;
+        out_right_c0 = right_c0$head;
+        if (level$empty) begin
+            out_right_c0 = inp_right_c0;
+        end
+        right_c1$clock = clock;
+        right_c1$push = push;
+        right_c1$pop = pop;
+        right_c1$wr = wr;
+        right_c1$din = inp_right_c1;
+        out_right_c1 = right_c1$head;
+        if (level$empty) begin
+            out_right_c1 = inp_right_c1;
+        end
+        right_c2$clock = clock;
+        right_c2$push = push;
+        right_c2$pop = pop;
+        right_c2$wr = wr;
+        right_c2$din = inp_right_c2;
+        out_right_c2 = right_c2$head;
+        if (level$empty) begin
+            out_right_c2 = inp_right_c2;
+        end
+        ddx_z$clock = clock;
+        ddx_z$push = push;
+        ddx_z$pop = pop;
+        ddx_z$wr = wr;
+        ddx_z$din = inp_ddx_z;
+        out_ddx_z = ddx_z$head;
+        if (level$empty) begin
+            out_ddx_z = inp_ddx_z;
+        end
+        ddx_c0$clock = clock;
+        ddx_c0$push = push;
+        ddx_c0$pop = pop;
+        ddx_c0$wr = wr;
+        ddx_c0$din = inp_ddx_c0;
+        out_ddx_c0 = ddx_c0$head;
+        if (level$empty) begin
+            out_ddx_c0 = inp_ddx_c0;
+        end
+        ddx_c1$clock = clock;
+        ddx_c1$push = push;
+        ddx_c1$pop = pop;
+        ddx_c1$wr = wr;
+        ddx_c1$din = inp_ddx_c1;
+        out_ddx_c1 = ddx_c1$head;
+        if (level$empty) begin
+            out_ddx_c1 = inp_ddx_c1;
+        end
+        ddx_c2$clock = clock;
+        ddx_c2$push = push;
+        ddx_c2$pop = pop;
+        ddx_c2$wr = wr;
+        ddx_c2$din = inp_ddx_c2;
+        out_ddx_c2 = ddx_c2$head;
+        if (level$empty) begin
+            out_ddx_c2 = inp_ddx_c2;
+        end
+    end
+    
+endmodule // raster_top$fifo
+
+
+module raster_top$fifo$count(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$count
+
+
+module raster_top$fifo$ddx_c0(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [35:0] din;
+    output reg  [35:0] head;
+    
+    // Stub signals
+    reg  [35:0] e$0$d;
+    wire  [35:0] e$0$q;
+    reg  e$0$clock;
+    reg  [35:0] e$1$d;
+    wire  [35:0] e$1$q;
+    reg  e$1$clock;
+    reg  [35:0] e$2$d;
+    wire  [35:0] e$2$q;
+    reg  e$2$clock;
+    reg  [35:0] e$3$d;
+    wire  [35:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$ddx_c0$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$ddx_c0$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$ddx_c0$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$ddx_c0$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$ddx_c0
+
+
+module raster_top$fifo$ddx_c0$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_c0$e$0
+
+
+module raster_top$fifo$ddx_c0$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_c0$e$1
+
+
+module raster_top$fifo$ddx_c0$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_c0$e$2
+
+
+module raster_top$fifo$ddx_c0$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_c0$e$3
+
+
+module raster_top$fifo$ddx_c1(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [35:0] din;
+    output reg  [35:0] head;
+    
+    // Stub signals
+    reg  [35:0] e$0$d;
+    wire  [35:0] e$0$q;
+    reg  e$0$clock;
+    reg  [35:0] e$1$d;
+    wire  [35:0] e$1$q;
+    reg  e$1$clock;
+    reg  [35:0] e$2$d;
+    wire  [35:0] e$2$q;
+    reg  e$2$clock;
+    reg  [35:0] e$3$d;
+    wire  [35:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$ddx_c1$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$ddx_c1$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$ddx_c1$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$ddx_c1$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$ddx_c1
+
+
+module raster_top$fifo$ddx_c1$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_c1$e$0
+
+
+module raster_top$fifo$ddx_c1$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_c1$e$1
+
+
+module raster_top$fifo$ddx_c1$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_c1$e$2
+
+
+module raster_top$fifo$ddx_c1$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_c1$e$3
+
+
+module raster_top$fifo$ddx_c2(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [35:0] din;
+    output reg  [35:0] head;
+    
+    // Stub signals
+    reg  [35:0] e$0$d;
+    wire  [35:0] e$0$q;
+    reg  e$0$clock;
+    reg  [35:0] e$1$d;
+    wire  [35:0] e$1$q;
+    reg  e$1$clock;
+    reg  [35:0] e$2$d;
+    wire  [35:0] e$2$q;
+    reg  e$2$clock;
+    reg  [35:0] e$3$d;
+    wire  [35:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$ddx_c2$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$ddx_c2$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$ddx_c2$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$ddx_c2$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$ddx_c2
+
+
+module raster_top$fifo$ddx_c2$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_c2$e$0
+
+
+module raster_top$fifo$ddx_c2$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_c2$e$1
+
+
+module raster_top$fifo$ddx_c2$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_c2$e$2
+
+
+module raster_top$fifo$ddx_c2$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_c2$e$3
+
+
+module raster_top$fifo$ddx_z(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [39:0] din;
+    output reg  [39:0] head;
+    
+    // Stub signals
+    reg  [39:0] e$0$d;
+    wire  [39:0] e$0$q;
+    reg  e$0$clock;
+    reg  [39:0] e$1$d;
+    wire  [39:0] e$1$q;
+    reg  e$1$clock;
+    reg  [39:0] e$2$d;
+    wire  [39:0] e$2$q;
+    reg  e$2$clock;
+    reg  [39:0] e$3$d;
+    wire  [39:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$ddx_z$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$ddx_z$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$ddx_z$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$ddx_z$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$ddx_z
+
+
+module raster_top$fifo$ddx_z$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_z$e$0
+
+
+module raster_top$fifo$ddx_z$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_z$e$1
+
+
+module raster_top$fifo$ddx_z$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_z$e$2
+
+
+module raster_top$fifo$ddx_z$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$ddx_z$e$3
+
+
+module raster_top$fifo$left_c0(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [31:0] din;
+    output reg  [31:0] head;
+    
+    // Stub signals
+    reg  [31:0] e$0$d;
+    wire  [31:0] e$0$q;
+    reg  e$0$clock;
+    reg  [31:0] e$1$d;
+    wire  [31:0] e$1$q;
+    reg  e$1$clock;
+    reg  [31:0] e$2$d;
+    wire  [31:0] e$2$q;
+    reg  e$2$clock;
+    reg  [31:0] e$3$d;
+    wire  [31:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$left_c0$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$left_c0$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$left_c0$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$left_c0$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$left_c0
+
+
+module raster_top$fifo$left_c0$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_c0$e$0
+
+
+module raster_top$fifo$left_c0$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_c0$e$1
+
+
+module raster_top$fifo$left_c0$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_c0$e$2
+
+
+module raster_top$fifo$left_c0$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_c0$e$3
+
+
+module raster_top$fifo$left_c1(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [31:0] din;
+    output reg  [31:0] head;
+    
+    // Stub signals
+    reg  [31:0] e$0$d;
+    wire  [31:0] e$0$q;
+    reg  e$0$clock;
+    reg  [31:0] e$1$d;
+    wire  [31:0] e$1$q;
+    reg  e$1$clock;
+    reg  [31:0] e$2$d;
+    wire  [31:0] e$2$q;
+    reg  e$2$clock;
+    reg  [31:0] e$3$d;
+    wire  [31:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$left_c1$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$left_c1$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$left_c1$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$left_c1$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$left_c1
+
+
+module raster_top$fifo$left_c1$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_c1$e$0
+
+
+module raster_top$fifo$left_c1$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_c1$e$1
+
+
+module raster_top$fifo$left_c1$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_c1$e$2
+
+
+module raster_top$fifo$left_c1$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_c1$e$3
+
+
+module raster_top$fifo$left_c2(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [31:0] din;
+    output reg  [31:0] head;
+    
+    // Stub signals
+    reg  [31:0] e$0$d;
+    wire  [31:0] e$0$q;
+    reg  e$0$clock;
+    reg  [31:0] e$1$d;
+    wire  [31:0] e$1$q;
+    reg  e$1$clock;
+    reg  [31:0] e$2$d;
+    wire  [31:0] e$2$q;
+    reg  e$2$clock;
+    reg  [31:0] e$3$d;
+    wire  [31:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$left_c2$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$left_c2$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$left_c2$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$left_c2$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$left_c2
+
+
+module raster_top$fifo$left_c2$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_c2$e$0
+
+
+module raster_top$fifo$left_c2$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_c2$e$1
+
+
+module raster_top$fifo$left_c2$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_c2$e$2
+
+
+module raster_top$fifo$left_c2$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_c2$e$3
+
+
+module raster_top$fifo$left_z(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [35:0] din;
+    output reg  [35:0] head;
+    
+    // Stub signals
+    reg  [35:0] e$0$d;
+    wire  [35:0] e$0$q;
+    reg  e$0$clock;
+    reg  [35:0] e$1$d;
+    wire  [35:0] e$1$q;
+    reg  e$1$clock;
+    reg  [35:0] e$2$d;
+    wire  [35:0] e$2$q;
+    reg  e$2$clock;
+    reg  [35:0] e$3$d;
+    wire  [35:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$left_z$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$left_z$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$left_z$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$left_z$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$left_z
+
+
+module raster_top$fifo$left_z$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_z$e$0
+
+
+module raster_top$fifo$left_z$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_z$e$1
+
+
+module raster_top$fifo$left_z$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_z$e$2
+
+
+module raster_top$fifo$left_z$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$left_z$e$3
+
+
+module raster_top$fifo$level(count,full,empty);
+    
+    // Module arguments
+    input wire  [2:0] count;
+    output reg  full;
+    output reg  empty;
+    
+    // Constant declarations
+    localparam  depth = 3'b100;
+    
+    // Update code
+    always @(*) begin
+        full = count == depth;
+        empty = count == 32'h0;
+    end
+    
+endmodule // raster_top$fifo$level
+
+
+module raster_top$fifo$right_c0(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [31:0] din;
+    output reg  [31:0] head;
+    
+    // Stub signals
+    reg  [31:0] e$0$d;
+    wire  [31:0] e$0$q;
+    reg  e$0$clock;
+    reg  [31:0] e$1$d;
+    wire  [31:0] e$1$q;
+    reg  e$1$clock;
+    reg  [31:0] e$2$d;
+    wire  [31:0] e$2$q;
+    reg  e$2$clock;
+    reg  [31:0] e$3$d;
+    wire  [31:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$right_c0$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$right_c0$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$right_c0$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$right_c0$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$right_c0
+
+
+module raster_top$fifo$right_c0$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_c0$e$0
+
+
+module raster_top$fifo$right_c0$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_c0$e$1
+
+
+module raster_top$fifo$right_c0$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_c0$e$2
+
+
+module raster_top$fifo$right_c0$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_c0$e$3
+
+
+module raster_top$fifo$right_c1(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [31:0] din;
+    output reg  [31:0] head;
+    
+    // Stub signals
+    reg  [31:0] e$0$d;
+    wire  [31:0] e$0$q;
+    reg  e$0$clock;
+    reg  [31:0] e$1$d;
+    wire  [31:0] e$1$q;
+    reg  e$1$clock;
+    reg  [31:0] e$2$d;
+    wire  [31:0] e$2$q;
+    reg  e$2$clock;
+    reg  [31:0] e$3$d;
+    wire  [31:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$right_c1$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$right_c1$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$right_c1$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$right_c1$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$right_c1
+
+
+module raster_top$fifo$right_c1$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_c1$e$0
+
+
+module raster_top$fifo$right_c1$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_c1$e$1
+
+
+module raster_top$fifo$right_c1$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_c1$e$2
+
+
+module raster_top$fifo$right_c1$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_c1$e$3
+
+
+module raster_top$fifo$right_c2(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [31:0] din;
+    output reg  [31:0] head;
+    
+    // Stub signals
+    reg  [31:0] e$0$d;
+    wire  [31:0] e$0$q;
+    reg  e$0$clock;
+    reg  [31:0] e$1$d;
+    wire  [31:0] e$1$q;
+    reg  e$1$clock;
+    reg  [31:0] e$2$d;
+    wire  [31:0] e$2$q;
+    reg  e$2$clock;
+    reg  [31:0] e$3$d;
+    wire  [31:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$right_c2$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$right_c2$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$right_c2$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$right_c2$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$right_c2
+
+
+module raster_top$fifo$right_c2$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_c2$e$0
+
+
+module raster_top$fifo$right_c2$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_c2$e$1
+
+
+module raster_top$fifo$right_c2$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_c2$e$2
+
+
+module raster_top$fifo$right_c2$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_c2$e$3
+
+
+module raster_top$fifo$right_z(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [35:0] din;
+    output reg  [35:0] head;
+    
+    // Stub signals
+    reg  [35:0] e$0$d;
+    wire  [35:0] e$0$q;
+    reg  e$0$clock;
+    reg  [35:0] e$1$d;
+    wire  [35:0] e$1$q;
+    reg  e$1$clock;
+    reg  [35:0] e$2$d;
+    wire  [35:0] e$2$q;
+    reg  e$2$clock;
+    reg  [35:0] e$3$d;
+    wire  [35:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$right_z$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$right_z$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$right_z$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$right_z$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$right_z
+
+
+module raster_top$fifo$right_z$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_z$e$0
+
+
+module raster_top$fifo$right_z$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_z$e$1
+
+
+module raster_top$fifo$right_z$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_z$e$2
+
+
+module raster_top$fifo$right_z$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$right_z$e$3
+
+
+module raster_top$fifo$xl(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [12:0] din;
+    output reg  [12:0] head;
+    
+    // Stub signals
+    reg  [12:0] e$0$d;
+    wire  [12:0] e$0$q;
+    reg  e$0$clock;
+    reg  [12:0] e$1$d;
+    wire  [12:0] e$1$q;
+    reg  e$1$clock;
+    reg  [12:0] e$2$d;
+    wire  [12:0] e$2$q;
+    reg  e$2$clock;
+    reg  [12:0] e$3$d;
+    wire  [12:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$xl$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$xl$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$xl$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$xl$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$xl
+
+
+module raster_top$fifo$xl$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$xl$e$0
+
+
+module raster_top$fifo$xl$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$xl$e$1
+
+
+module raster_top$fifo$xl$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$xl$e$2
+
+
+module raster_top$fifo$xl$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$xl$e$3
+
+
+module raster_top$fifo$xr(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [12:0] din;
+    output reg  [12:0] head;
+    
+    // Stub signals
+    reg  [12:0] e$0$d;
+    wire  [12:0] e$0$q;
+    reg  e$0$clock;
+    reg  [12:0] e$1$d;
+    wire  [12:0] e$1$q;
+    reg  e$1$clock;
+    reg  [12:0] e$2$d;
+    wire  [12:0] e$2$q;
+    reg  e$2$clock;
+    reg  [12:0] e$3$d;
+    wire  [12:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$xr$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$xr$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$xr$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$xr$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$xr
+
+
+module raster_top$fifo$xr$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$xr$e$0
+
+
+module raster_top$fifo$xr$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$xr$e$1
+
+
+module raster_top$fifo$xr$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$xr$e$2
+
+
+module raster_top$fifo$xr$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$xr$e$3
+
+
+module raster_top$fifo$y(clock,push,pop,wr,din,head);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    input wire  [2:0] wr;
+    input wire  [9:0] din;
+    output reg  [9:0] head;
+    
+    // Stub signals
+    reg  [9:0] e$0$d;
+    wire  [9:0] e$0$q;
+    reg  e$0$clock;
+    reg  [9:0] e$1$d;
+    wire  [9:0] e$1$q;
+    reg  e$1$clock;
+    reg  [9:0] e$2$d;
+    wire  [9:0] e$2$q;
+    reg  e$2$clock;
+    reg  [9:0] e$3$d;
+    wire  [9:0] e$3$q;
+    reg  e$3$clock;
+    
+    // Sub module instances
+    raster_top$fifo$y$e$0 e$0(
+        .d(e$0$d),
+        .q(e$0$q),
+        .clock(e$0$clock)
+    );
+    raster_top$fifo$y$e$1 e$1(
+        .d(e$1$d),
+        .q(e$1$q),
+        .clock(e$1$clock)
+    );
+    raster_top$fifo$y$e$2 e$2(
+        .d(e$2$d),
+        .q(e$2$q),
+        .clock(e$2$clock)
+    );
+    raster_top$fifo$y$e$3 e$3(
+        .d(e$3$d),
+        .q(e$3$q),
+        .clock(e$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        e$0$clock = clock;
+        e$0$d = e$0$q;
+        e$1$clock = clock;
+        e$1$d = e$1$q;
+        e$2$clock = clock;
+        e$2$d = e$2$q;
+        e$3$clock = clock;
+        e$3$d = e$3$q;
+        if (pop) begin
+            e$0$d = e$1$q;
+            e$1$d = e$2$q;
+            e$2$d = e$3$q;
+        end
+        if (push) begin
+            if (wr == 0) begin
+                e$0$d = din;
+            end
+            if (wr == 1) begin
+                e$1$d = din;
+            end
+            if (wr == 2) begin
+                e$2$d = din;
+            end
+            if (wr == 3) begin
+                e$3$d = din;
+            end
+        end
+        head = e$0$q;
+    end
+    
+endmodule // raster_top$fifo$y
+
+
+module raster_top$fifo$y$e$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$y$e$0
+
+
+module raster_top$fifo$y$e$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$y$e$1
+
+
+module raster_top$fifo$y$e$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$y$e$2
+
+
+module raster_top$fifo$y$e$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fifo$y$e$3
+
+
+module raster_top$in_setup(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$in_setup
+
+
+module raster_top$last_in(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$last_in
+
+
+module raster_top$pixel_out(clock,inp_valid,inp_ready,inp_x,inp_y,inp_z,inp_rgb0,inp_rgb1,inp_rgb2,mem_ready,rd_en,rd_addr,rd_z,wr_en,wr_addr,wr_z,wr_rgb,idle);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  [9:0] inp_x;
+    input wire  [9:0] inp_y;
+    input wire  [15:0] inp_z;
+    input wire  [7:0] inp_rgb0;
+    input wire  [7:0] inp_rgb1;
+    input wire  [7:0] inp_rgb2;
+    input wire  mem_ready;
+    output reg  rd_en;
+    output reg  [19:0] rd_addr;
+    input wire  [15:0] rd_z;
+    output reg  wr_en;
+    output reg  [19:0] wr_addr;
+    output reg  [15:0] wr_z;
+    output reg  [23:0] wr_rgb;
+    output reg  idle;
+    
+    // Stub signals
+    reg  s1_valid$d;
+    wire  s1_valid$q;
+    reg  s1_valid$clock;
+    reg  [19:0] s1_addr$d;
+    wire  [19:0] s1_addr$q;
+    reg  s1_addr$clock;
+    reg  [15:0] s1_z$d;
+    wire  [15:0] s1_z$q;
+    reg  s1_z$clock;
+    reg  [23:0] s1_rgb$d;
+    wire  [23:0] s1_rgb$q;
+    reg  s1_rgb$clock;
+    reg  s2_valid$d;
+    wire  s2_valid$q;
+    reg  s2_valid$clock;
+    reg  s2_write$d;
+    wire  s2_write$q;
+    reg  s2_write$clock;
+    reg  [19:0] s2_addr$d;
+    wire  [19:0] s2_addr$q;
+    reg  s2_addr$clock;
+    reg  [15:0] s2_z$d;
+    wire  [15:0] s2_z$q;
+    reg  s2_z$clock;
+    reg  [23:0] s2_rgb$d;
+    wire  [23:0] s2_rgb$q;
+    reg  s2_rgb$clock;
+    reg  s3_valid$d;
+    wire  s3_valid$q;
+    reg  s3_valid$clock;
+    reg  [19:0] s3_addr$d;
+    wire  [19:0] s3_addr$q;
+    reg  s3_addr$clock;
+    reg  [15:0] s3_z$d;
+    wire  [15:0] s3_z$q;
+    reg  s3_z$clock;
+    reg  [9:0] addr$hi;
+    reg  [9:0] addr$lo;
+    wire  [19:0] addr$out;
+    reg  [7:0] rg$hi;
+    reg  [7:0] rg$lo;
+    wire  [15:0] rg$out;
+    reg  [15:0] rgb$hi;
+    reg  [7:0] rgb$lo;
+    wire  [23:0] rgb$out;
+    
+    // Local signals
+    reg  [15:0] old_z;
+    reg  pass;
+    
+    // Sub module instances
+    raster_top$pixel_out$s1_valid s1_valid(
+        .d(s1_valid$d),
+        .q(s1_valid$q),
+        .clock(s1_valid$clock)
+    );
+    raster_top$pixel_out$s1_addr s1_addr(
+        .d(s1_addr$d),
+        .q(s1_addr$q),
+        .clock(s1_addr$clock)
+    );
+    raster_top$pixel_out$s1_z s1_z(
+        .d(s1_z$d),
+        .q(s1_z$q),
+        .clock(s1_z$clock)
+    );
+    raster_top$pixel_out$s1_rgb s1_rgb(
+        .d(s1_rgb$d),
+        .q(s1_rgb$q),
+        .clock(s1_rgb$clock)
+    );
+    raster_top$pixel_out$s2_valid s2_valid(
+        .d(s2_valid$d),
+        .q(s2_valid$q),
+        .clock(s2_valid$clock)
+    );
+    raster_top$pixel_out$s2_write s2_write(
+        .d(s2_write$d),
+        .q(s2_write$q),
+        .clock(s2_write$clock)
+    );
+    raster_top$pixel_out$s2_addr s2_addr(
+        .d(s2_addr$d),
+        .q(s2_addr$q),
+        .clock(s2_addr$clock)
+    );
+    raster_top$pixel_out$s2_z s2_z(
+        .d(s2_z$d),
+        .q(s2_z$q),
+        .clock(s2_z$clock)
+    );
+    raster_top$pixel_out$s2_rgb s2_rgb(
+        .d(s2_rgb$d),
+        .q(s2_rgb$q),
+        .clock(s2_rgb$clock)
+    );
+    raster_top$pixel_out$s3_valid s3_valid(
+        .d(s3_valid$d),
+        .q(s3_valid$q),
+        .clock(s3_valid$clock)
+    );
+    raster_top$pixel_out$s3_addr s3_addr(
+        .d(s3_addr$d),
+        .q(s3_addr$q),
+        .clock(s3_addr$clock)
+    );
+    raster_top$pixel_out$s3_z s3_z(
+        .d(s3_z$d),
+        .q(s3_z$q),
+        .clock(s3_z$clock)
+    );
+    raster_top$pixel_out$addr addr(
+        .hi(addr$hi),
+        .lo(addr$lo),
+        .out(addr$out)
+    );
+    raster_top$pixel_out$rg rg(
+        .hi(rg$hi),
+        .lo(rg$lo),
+        .out(rg$out)
+    );
+    raster_top$pixel_out$rgb rgb(
+        .hi(rgb$hi),
+        .lo(rgb$lo),
+        .out(rgb$out)
+    );
+    
+    // Update code
+    always @(*) begin
+        s1_valid$clock = clock;
+        s1_addr$clock = clock;
+        s1_z$clock = clock;
+        s1_rgb$clock = clock;
+        s2_valid$clock = clock;
+        s2_write$clock = clock;
+        s2_addr$clock = clock;
+        s2_z$clock = clock;
+        s2_rgb$clock = clock;
+        s3_valid$clock = clock;
+        s3_addr$clock = clock;
+        s3_z$clock = clock;
+        s1_valid$d = s1_valid$q;
+        s1_addr$d = s1_addr$q;
+        s1_z$d = s1_z$q;
+        s1_rgb$d = s1_rgb$q;
+        s2_valid$d = s2_valid$q;
+        s2_write$d = s2_write$q;
+        s2_addr$d = s2_addr$q;
+        s2_z$d = s2_z$q;
+        s2_rgb$d = s2_rgb$q;
+        s3_valid$d = s3_valid$q;
+        s3_addr$d = s3_addr$q;
+        s3_z$d = s3_z$q;
+        addr$hi = inp_y;
+        addr$lo = inp_x;
+        rg$hi = inp_rgb0;
+        rg$lo = inp_rgb1;
+        rgb$hi = rg$out;
+        rgb$lo = inp_rgb2;
+        inp_ready = mem_ready;
+        rd_en = inp_valid;
+        rd_addr = addr$out;
+        old_z = rd_z;
+        if (s3_valid$q & (s3_addr$q == s1_addr$q)) begin
+            old_z = s3_z$q;
+        end
+        if (s2_write$q & (s2_addr$q == s1_addr$q)) begin
+            old_z = s2_z$q;
+        end
+        pass = s1_valid$q & (s1_z$q < old_z);
+        wr_en = s2_write$q;
+        wr_addr = s2_addr$q;
+        wr_z = s2_z$q;
+        wr_rgb = s2_rgb$q;
+        idle = ~s1_valid$q & ~s2_valid$q;
+        if (mem_ready) begin
+            s1_valid$d = inp_valid;
+            s1_addr$d = addr$out;
+            s1_z$d = inp_z;
+            s1_rgb$d = rgb$out;
+            s2_valid$d = s1_valid$q;
+            s2_write$d = pass;
+            s2_addr$d = s1_addr$q;
+            s2_z$d = s1_z$q;
+            s2_rgb$d = s1_rgb$q;
+            s3_valid$d = s2_write$q;
+            s3_addr$d = s2_addr$q;
+            s3_z$d = s2_z$q;
+        end
+    end
+    
+endmodule // raster_top$pixel_out
+
+
+module raster_top$pixel_out$addr(hi,lo,out);
+    
+    // Module arguments
+    input wire  [9:0] hi;
+    input wire  [9:0] lo;
+    output reg  [19:0] out;
+    
+    // Constant declarations
+    localparam  shift = 8'ha;
+    
+    // Update code
+    always @(*) begin
+        out = (((hi) & 20'hfffff) << shift) | ((lo) & 20'hfffff);
+    end
+    
+endmodule // raster_top$pixel_out$addr
+
+
+module raster_top$pixel_out$rg(hi,lo,out);
+    
+    // Module arguments
+    input wire  [7:0] hi;
+    input wire  [7:0] lo;
+    output reg  [15:0] out;
+    
+    // Constant declarations
+    localparam  shift = 8'h8;
+    
+    // Update code
+    always @(*) begin
+        out = (((hi) & 16'hffff) << shift) | ((lo) & 16'hffff);
+    end
+    
+endmodule // raster_top$pixel_out$rg
+
+
+module raster_top$pixel_out$rgb(hi,lo,out);
+    
+    // Module arguments
+    input wire  [15:0] hi;
+    input wire  [7:0] lo;
+    output reg  [23:0] out;
+    
+    // Constant declarations
+    localparam  shift = 8'h8;
+    
+    // Update code
+    always @(*) begin
+        out = (((hi) & 24'hffffff) << shift) | ((lo) & 24'hffffff);
+    end
+    
+endmodule // raster_top$pixel_out$rgb
+
+
+module raster_top$pixel_out$s1_addr(d,q,clock);
+    
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s1_addr
+
+
+module raster_top$pixel_out$s1_rgb(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s1_rgb
+
+
+module raster_top$pixel_out$s1_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s1_valid
+
+
+module raster_top$pixel_out$s1_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s1_z
+
+
+module raster_top$pixel_out$s2_addr(d,q,clock);
+    
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s2_addr
+
+
+module raster_top$pixel_out$s2_rgb(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s2_rgb
+
+
+module raster_top$pixel_out$s2_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s2_valid
+
+
+module raster_top$pixel_out$s2_write(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s2_write
+
+
+module raster_top$pixel_out$s2_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s2_z
+
+
+module raster_top$pixel_out$s3_addr(d,q,clock);
+    
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s3_addr
+
+
+module raster_top$pixel_out$s3_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s3_valid
+
+
+module raster_top$pixel_out$s3_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s3_z
+
+
+module raster_top$span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_x,out_y,out_z,out_rgb0,out_rgb1,out_rgb2,idle);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [10:0] width;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  [9:0] inp_y;
+    input wire  [12:0] inp_xl;
+    input wire  [12:0] inp_xr;
+    input wire  [35:0] inp_left_z;
+    input wire  [31:0] inp_left_c0;
+    input wire  [31:0] inp_left_c1;
+    input wire  [31:0] inp_left_c2;
+    input wire  [35:0] inp_right_z;
+    input wire  [31:0] inp_right_c0;
+    input wire  [31:0] inp_right_c1;
+    input wire  [31:0] inp_right_c2;
+    input wire  [39:0] inp_ddx_z;
+    input wire  [35:0] inp_ddx_c0;
+    input wire  [35:0] inp_ddx_c1;
+    input wire  [35:0] inp_ddx_c2;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [9:0] out_x;
+    output reg  [9:0] out_y;
+    output reg  [15:0] out_z;
+    output reg  [7:0] out_rgb0;
+    output reg  [7:0] out_rgb1;
+    output reg  [7:0] out_rgb2;
+    output reg  idle;
+    
+    // Stub signals
+    reg  busy$d;
+    wire  busy$q;
+    reg  busy$clock;
+    reg  drop$d;
+    wire  drop$q;
+    reg  drop$clock;
+    reg  left$d;
+    wire  left$q;
+    reg  left$clock;
+    reg  [12:0] x$d;
+    wire  [12:0] x$q;
+    reg  x$clock;
+    reg  [12:0] last$d;
+    wire  [12:0] last$q;
+    reg  last$clock;
+    reg  [9:0] y$d;
+    wire  [9:0] y$q;
+    reg  y$clock;
+    reg  [35:0] a_z$d;
+    wire  [35:0] a_z$q;
+    reg  a_z$clock;
+    reg  [31:0] a_c0$d;
+    wire  [31:0] a_c0$q;
+    reg  a_c0$clock;
+    reg  [31:0] a_c1$d;
+    wire  [31:0] a_c1$q;
+    reg  a_c1$clock;
+    reg  [31:0] a_c2$d;
+    wire  [31:0] a_c2$q;
+    reg  a_c2$clock;
+    reg  [35:0] d_z$d;
+    wire  [35:0] d_z$q;
+    reg  d_z$clock;
+    reg  [31:0] d_c0$d;
+    wire  [31:0] d_c0$q;
+    reg  d_c0$clock;
+    reg  [31:0] d_c1$d;
+    wire  [31:0] d_c1$q;
+    reg  d_c1$clock;
+    reg  [31:0] d_c2$d;
+    wire  [31:0] d_c2$q;
+    reg  d_c2$clock;
+    reg  [35:0] zl$x;
+    wire  zl$neg;
+    wire  zl$over;
+    wire  [15:0] zl$low;
+    reg  [35:0] zr$x;
+    wire  zr$neg;
+    wire  zr$over;
+    wire  [15:0] zr$low;
+    reg  [12:0] xl_neg$x;
+    wire  xl_neg$neg;
+    reg  [12:0] xr_neg$x;
+    wire  xr_neg$neg;
+    reg  [35:0] zp$x;
+    wire  zp$neg;
+    wire  zp$over;
+    wire  [15:0] zp$low;
+    reg  [31:0] c0$x;
+    wire  c0$neg;
+    wire  c0$over;
+    wire  [7:0] c0$low;
+    reg  [31:0] c1$x;
+    wire  c1$neg;
+    wire  c1$over;
+    wire  [7:0] c1$low;
+    reg  [31:0] c2$x;
+    wire  c2$neg;
+    wire  c2$over;
+    wire  [7:0] c2$low;
+    reg  [12:0] xl_on$a;
+    reg  [12:0] xl_on$b;
+    wire  xl_on$lt;
+    
+    // Local signals
+    reg  [12:0] width_x;
+    reg  valid;
+    reg  at_last;
+    reg  advance;
+    reg  ready;
+    reg  accept;
+    
+    // Sub module instances
+    raster_top$span$busy busy(
+        .d(busy$d),
+        .q(busy$q),
+        .clock(busy$clock)
+    );
+    raster_top$span$drop drop(
+        .d(drop$d),
+        .q(drop$q),
+        .clock(drop$clock)
+    );
+    raster_top$span$left left(
+        .d(left$d),
+        .q(left$q),
+        .clock(left$clock)
+    );
+    raster_top$span$x x(
+        .d(x$d),
+        .q(x$q),
+        .clock(x$clock)
+    );
+    raster_top$span$last last(
+        .d(last$d),
+        .q(last$q),
+        .clock(last$clock)
+    );
+    raster_top$span$y y(
+        .d(y$d),
+        .q(y$q),
+        .clock(y$clock)
+    );
+    raster_top$span$a_z a_z(
+        .d(a_z$d),
+        .q(a_z$q),
+        .clock(a_z$clock)
+    );
+    raster_top$span$a_c0 a_c0(
+        .d(a_c0$d),
+        .q(a_c0$q),
+        .clock(a_c0$clock)
+    );
+    raster_top$span$a_c1 a_c1(
+        .d(a_c1$d),
+        .q(a_c1$q),
+        .clock(a_c1$clock)
+    );
+    raster_top$span$a_c2 a_c2(
+        .d(a_c2$d),
+        .q(a_c2$q),
+        .clock(a_c2$clock)
+    );
+    raster_top$span$d_z d_z(
+        .d(d_z$d),
+        .q(d_z$q),
+        .clock(d_z$clock)
+    );
+    raster_top$span$d_c0 d_c0(
+        .d(d_c0$d),
+        .q(d_c0$q),
+        .clock(d_c0$clock)
+    );
+    raster_top$span$d_c1 d_c1(
+        .d(d_c1$d),
+        .q(d_c1$q),
+        .clock(d_c1$clock)
+    );
+    raster_top$span$d_c2 d_c2(
+        .d(d_c2$d),
+        .q(d_c2$q),
+        .clock(d_c2$clock)
+    );
+    raster_top$span$zl zl(
+        .x(zl$x),
+        .neg(zl$neg),
+        .over(zl$over),
+        .low(zl$low)
+    );
+    raster_top$span$zr zr(
+        .x(zr$x),
+        .neg(zr$neg),
+        .over(zr$over),
+        .low(zr$low)
+    );
+    raster_top$span$xl_neg xl_neg(
+        .x(xl_neg$x),
+        .neg(xl_neg$neg)
+    );
+    raster_top$span$xr_neg xr_neg(
+        .x(xr_neg$x),
+        .neg(xr_neg$neg)
+    );
+    raster_top$span$zp zp(
+        .x(zp$x),
+        .neg(zp$neg),
+        .over(zp$over),
+        .low(zp$low)
+    );
+    raster_top$span$c0 c0(
+        .x(c0$x),
+        .neg(c0$neg),
+        .over(c0$over),
+        .low(c0$low)
+    );
+    raster_top$span$c1 c1(
+        .x(c1$x),
+        .neg(c1$neg),
+        .over(c1$over),
+        .low(c1$low)
+    );
+    raster_top$span$c2 c2(
+        .x(c2$x),
+        .neg(c2$neg),
+        .over(c2$over),
+        .low(c2$low)
+    );
+    raster_top$span$xl_on xl_on(
+        .a(xl_on$a),
+        .b(xl_on$b),
+        .lt(xl_on$lt)
+    );
+    
+    // Update code
+    always @(*) begin
+        busy$clock = clock;
+        drop$clock = clock;
+        left$clock = clock;
+        x$clock = clock;
+        last$clock = clock;
+        y$clock = clock;
+        a_z$clock = clock;
+        a_c0$clock = clock;
+        a_c1$clock = clock;
+        a_c2$clock = clock;
+        d_z$clock = clock;
+        d_c0$clock = clock;
+        d_c1$clock = clock;
+        d_c2$clock = clock;
+        busy$d = busy$q;
+        drop$d = drop$q;
+        left$d = left$q;
+        x$d = x$q;
+        last$d = last$q;
+        y$d = y$q;
+        a_z$d = a_z$q;
+        a_c0$d = a_c0$q;
+        a_c1$d = a_c1$q;
+        a_c2$d = a_c2$q;
+        d_z$d = d_z$q;
+        d_c0$d = d_c0$q;
+        d_c1$d = d_c1$q;
+        d_c2$d = d_c2$q;
+        width_x = ((width) & 13'h1fff);
+        zp$x = a_z$q;
+        c0$x = a_c0$q;
+        c1$x = a_c1$q;
+        c2$x = a_c2$q;
+        valid = busy$q & ~drop$q & (x$q < width_x) & ~zp$neg & ~zp$over;
+        out_valid = valid;
+        out_x = ((x$q) & 10'h3ff);
+        out_y = y$q;
+        out_z = zp$low;
+        out_rgb0 = c0$low;
+        if (c0$over) begin
+            out_rgb0 = 32'hff;
+        end
+        if (c0$neg) begin
+            out_rgb0 = 32'h0;
+        end
+        out_rgb1 = c1$low;
+        if (c1$over) begin
+            out_rgb1 = 32'hff;
+        end
+        if (c1$neg) begin
+            out_rgb1 = 32'h0;
+        end
+        out_rgb2 = c2$low;
+        if (c2$over) begin
+            out_rgb2 = 32'hff;
+        end
+        if (c2$neg) begin
+            out_rgb2 = 32'h0;
+        end
+        idle = ~busy$q;
+        at_last = drop$q | (x$q == last$q);
+        advance = busy$q & (~valid | out_ready);
+        ready = ~busy$q | (at_last & advance);
+        inp_ready = ready;
+        accept = inp_valid & ready;
+        if (advance) begin
+            if (at_last) begin
+                busy$d = 1'b0;
+            end
+            else begin
+                if (left$q) begin
+                    x$d = x$q - 32'h1;
+                    a_z$d = a_z$q - d_z$q;
+                    a_c0$d = a_c0$q - d_c0$q;
+                    a_c1$d = a_c1$q - d_c1$q;
+                    a_c2$d = a_c2$q - d_c2$q;
+                end
+                else begin
+                    x$d = x$q + 32'h1;
+                    a_z$d = a_z$q + d_z$q;
+                    a_c0$d = a_c0$q + d_c0$q;
+                    a_c1$d = a_c1$q + d_c1$q;
+                    a_c2$d = a_c2$q + d_c2$q;
+                end
+            end
+        end
+        zl$x = inp_left_z;
+        zr$x = inp_right_z;
+        xl_neg$x = inp_xl;
+        xr_neg$x = inp_xr;
+        xl_on$a = inp_xl;
+        xl_on$b = width_x;
+        if (accept) begin
+            busy$d = 1'b1;
+            drop$d = ~xl_on$lt | xr_neg$neg | (zl$neg & zr$neg) | (zl$over & zr$over);
+            y$d = inp_y;
+            d_z$d = ((inp_ddx_z) & 36'hfffffffff);
+            d_c0$d = ((inp_ddx_c0) & 32'hffffffff);
+            d_c1$d = ((inp_ddx_c1) & 32'hffffffff);
+            d_c2$d = ((inp_ddx_c2) & 32'hffffffff);
+            left$d = xl_neg$neg;
+            if (xl_neg$neg) begin
+                x$d = inp_xr;
+                last$d = 32'h0;
+                a_z$d = inp_right_z;
+                a_c0$d = inp_right_c0;
+                a_c1$d = inp_right_c1;
+                a_c2$d = inp_right_c2;
+            end
+            else begin
+                x$d = inp_xl;
+                last$d = inp_xr;
+                if (inp_xr >= width_x) begin
+                    last$d = width_x - 32'h1;
+                end
+                a_z$d = inp_left_z;
+                a_c0$d = inp_left_c0;
+                a_c1$d = inp_left_c1;
+                a_c2$d = inp_left_c2;
+            end
+        end
+    end
+    
+endmodule // raster_top$span
+
+
+module raster_top$span$a_c0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$a_c0
+
+
+module raster_top$span$a_c1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$a_c1
+
+
+module raster_top$span$a_c2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$a_c2
+
+
+module raster_top$span$a_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$a_z
+
+
+module raster_top$span$busy(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$busy
+
+
+module raster_top$span$c0(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [7:0] low;
+    
+    // Constant declarations
+    localparam  top = 33'h100000000;
+    localparam  half = 33'h200000;
+    localparam  shift = 8'h16;
+    localparam  limit = 33'h100;
+    
+    // Stub signals
+    reg  [31:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [32:0] ext;
+    reg  [32:0] sum;
+    reg  [32:0] shifted;
+    
+    // Sub module instances
+    raster_top$span$c0$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 33'h1ffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 33'h1ffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 8'hff);
+    end
+    
+endmodule // raster_top$span$c0
+
+
+module raster_top$span$c0$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 32'h80000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // raster_top$span$c0$x_neg
+
+
+module raster_top$span$c1(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [7:0] low;
+    
+    // Constant declarations
+    localparam  top = 33'h100000000;
+    localparam  half = 33'h200000;
+    localparam  shift = 8'h16;
+    localparam  limit = 33'h100;
+    
+    // Stub signals
+    reg  [31:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [32:0] ext;
+    reg  [32:0] sum;
+    reg  [32:0] shifted;
+    
+    // Sub module instances
+    raster_top$span$c1$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 33'h1ffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 33'h1ffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 8'hff);
+    end
+    
+endmodule // raster_top$span$c1
+
+
+module raster_top$span$c1$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 32'h80000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // raster_top$span$c1$x_neg
+
+
+module raster_top$span$c2(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [7:0] low;
+    
+    // Constant declarations
+    localparam  top = 33'h100000000;
+    localparam  half = 33'h200000;
+    localparam  shift = 8'h16;
+    localparam  limit = 33'h100;
+    
+    // Stub signals
+    reg  [31:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [32:0] ext;
+    reg  [32:0] sum;
+    reg  [32:0] shifted;
+    
+    // Sub module instances
+    raster_top$span$c2$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 33'h1ffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 33'h1ffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 8'hff);
+    end
+    
+endmodule // raster_top$span$c2
+
+
+module raster_top$span$c2$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 32'h80000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // raster_top$span$c2$x_neg
+
+
+module raster_top$span$d_c0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$d_c0
+
+
+module raster_top$span$d_c1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$d_c1
+
+
+module raster_top$span$d_c2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$d_c2
+
+
+module raster_top$span$d_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$d_z
+
+
+module raster_top$span$drop(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$drop
+
+
+module raster_top$span$last(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$last
+
+
+module raster_top$span$left(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$left
+
+
+module raster_top$span$x(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$x
+
+
+module raster_top$span$xl_neg(x,neg);
+    
+    // Module arguments
+    input wire  [12:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 13'b1000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // raster_top$span$xl_neg
+
+
+module raster_top$span$xl_on(a,b,lt);
+    
+    // Module arguments
+    input wire  [12:0] a;
+    input wire  [12:0] b;
+    output reg  lt;
+    
+    // Constant declarations
+    localparam  half = 13'b1000000000000;
+    
+    // Update code
+    always @(*) begin
+        lt = (a ^ half) < (b ^ half);
+    end
+    
+endmodule // raster_top$span$xl_on
+
+
+module raster_top$span$xr_neg(x,neg);
+    
+    // Module arguments
+    input wire  [12:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 13'b1000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // raster_top$span$xr_neg
+
+
+module raster_top$span$y(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$span$y
+
+
+module raster_top$span$zl(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [15:0] low;
+    
+    // Constant declarations
+    localparam  top = 37'h1000000000;
+    localparam  half = 37'h20000;
+    localparam  shift = 8'h12;
+    localparam  limit = 37'h10000;
+    
+    // Stub signals
+    reg  [35:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [36:0] ext;
+    reg  [36:0] sum;
+    reg  [36:0] shifted;
+    
+    // Sub module instances
+    raster_top$span$zl$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 37'h1fffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 37'h1fffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 16'hffff);
+    end
+    
+endmodule // raster_top$span$zl
+
+
+module raster_top$span$zl$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 36'h800000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // raster_top$span$zl$x_neg
+
+
+module raster_top$span$zp(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [15:0] low;
+    
+    // Constant declarations
+    localparam  top = 37'h1000000000;
+    localparam  half = 37'h20000;
+    localparam  shift = 8'h12;
+    localparam  limit = 37'h10000;
+    
+    // Stub signals
+    reg  [35:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [36:0] ext;
+    reg  [36:0] sum;
+    reg  [36:0] shifted;
+    
+    // Sub module instances
+    raster_top$span$zp$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 37'h1fffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 37'h1fffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 16'hffff);
+    end
+    
+endmodule // raster_top$span$zp
+
+
+module raster_top$span$zp$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 36'h800000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // raster_top$span$zp$x_neg
+
+
+module raster_top$span$zr(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [15:0] low;
+    
+    // Constant declarations
+    localparam  top = 37'h1000000000;
+    localparam  half = 37'h20000;
+    localparam  shift = 8'h12;
+    localparam  limit = 37'h10000;
+    
+    // Stub signals
+    reg  [35:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [36:0] ext;
+    reg  [36:0] sum;
+    reg  [36:0] shifted;
+    
+    // Sub module instances
+    raster_top$span$zr$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 37'h1fffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 37'h1fffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 16'hffff);
+    end
+    
+endmodule // raster_top$span$zr
+
+
+module raster_top$span$zr$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 36'h800000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // raster_top$span$zr$x_neg
+
+
+module raster_top$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_crosses,out_valid,out_ready,out_walk,out_maj_left,out_maj_j,out_maj_count,out_maj_x,out_maj_r,out_maj_q,out_maj_rho,out_maj_d,out_maj_at_z,out_maj_at_c0,out_maj_at_c1,out_maj_at_c2,out_maj_inc0_z,out_maj_inc0_c0,out_maj_inc0_c1,out_maj_inc0_c2,out_maj_inc1_z,out_maj_inc1_c0,out_maj_inc1_c1,out_maj_inc1_c2,out_short0_j,out_short0_count,out_short0_x,out_short0_r,out_short0_q,out_short0_rho,out_short0_d,out_short0_at_z,out_short0_at_c0,out_short0_at_c1,out_short0_at_c2,out_short0_inc0_z,out_short0_inc0_c0,out_short0_inc0_c1,out_short0_inc0_c2,out_short0_inc1_z,out_short0_inc1_c0,out_short0_inc1_c1,out_short0_inc1_c2,out_short1_j,out_short1_count,out_short1_x,out_short1_r,out_short1_q,out_short1_rho,out_short1_d,out_short1_at_z,out_short1_at_c0,out_short1_at_c1,out_short1_at_c2,out_short1_inc0_z,out_short1_inc0_c0,out_short1_inc0_c1,out_short1_inc0_c2,out_short1_inc1_z,out_short1_inc1_c0,out_short1_inc1_c1,out_short1_inc1_c2,out_ddx_z,out_ddx_c0,out_ddx_c1,out_ddx_c2);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  [15:0] inp_v0_x;
+    input wire  [15:0] inp_v0_y;
+    input wire  [17:0] inp_v0_z;
+    input wire  [7:0] inp_v0_c0;
+    input wire  [7:0] inp_v0_c1;
+    input wire  [7:0] inp_v0_c2;
+    input wire  [15:0] inp_v1_x;
+    input wire  [15:0] inp_v1_y;
+    input wire  [17:0] inp_v1_z;
+    input wire  [7:0] inp_v1_c0;
+    input wire  [7:0] inp_v1_c1;
+    input wire  [7:0] inp_v1_c2;
+    input wire  [15:0] inp_v2_x;
+    input wire  [15:0] inp_v2_y;
+    input wire  [17:0] inp_v2_z;
+    input wire  [7:0] inp_v2_c0;
+    input wire  [7:0] inp_v2_c1;
+    input wire  [7:0] inp_v2_c2;
+    input wire  [5:0] inp_crosses;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  out_walk;
+    output reg  out_maj_left;
+    output reg  [12:0] out_maj_j;
+    output reg  [12:0] out_maj_count;
+    output reg  [12:0] out_maj_x;
+    output reg  [20:0] out_maj_r;
+    output reg  [16:0] out_maj_q;
+    output reg  [20:0] out_maj_rho;
+    output reg  [20:0] out_maj_d;
+    output reg  [35:0] out_maj_at_z;
+    output reg  [31:0] out_maj_at_c0;
+    output reg  [31:0] out_maj_at_c1;
+    output reg  [31:0] out_maj_at_c2;
+    output reg  [39:0] out_maj_inc0_z;
+    output reg  [35:0] out_maj_inc0_c0;
+    output reg  [35:0] out_maj_inc0_c1;
+    output reg  [35:0] out_maj_inc0_c2;
+    output reg  [39:0] out_maj_inc1_z;
+    output reg  [35:0] out_maj_inc1_c0;
+    output reg  [35:0] out_maj_inc1_c1;
+    output reg  [35:0] out_maj_inc1_c2;
+    output reg  [12:0] out_short0_j;
+    output reg  [12:0] out_short0_count;
+    output reg  [12:0] out_short0_x;
+    output reg  [20:0] out_short0_r;
+    output reg  [16:0] out_short0_q;
+    output reg  [20:0] out_short0_rho;
+    output reg  [20:0] out_short0_d;
+    output reg  [35:0] out_short0_at_z;
+    output reg  [31:0] out_short0_at_c0;
+    output reg  [31:0] out_short0_at_c1;
+    output reg  [31:0] out_short0_at_c2;
+    output reg  [39:0] out_short0_inc0_z;
+    output reg  [35:0] out_short0_inc0_c0;
+    output reg  [35:0] out_short0_inc0_c1;
+    output reg  [35:0] out_short0_inc0_c2;
+    output reg  [39:0] out_short0_inc1_z;
+    output reg  [35:0] out_short0_inc1_c0;
+    output reg  [35:0] out_short0_inc1_c1;
+    output reg  [35:0] out_short0_inc1_c2;
+    output reg  [12:0] out_short1_j;
+    output reg  [12:0] out_short1_count;
+    output reg  [12:0] out_short1_x;
+    output reg  [20:0] out_short1_r;
+    output reg  [16:0] out_short1_q;
+    output reg  [20:0] out_short1_rho;
+    output reg  [20:0] out_short1_d;
+    output reg  [35:0] out_short1_at_z;
+    output reg  [31:0] out_short1_at_c0;
+    output reg  [31:0] out_short1_at_c1;
+    output reg  [31:0] out_short1_at_c2;
+    output reg  [39:0] out_short1_inc0_z;
+    output reg  [35:0] out_short1_inc0_c0;
+    output reg  [35:0] out_short1_inc0_c1;
+    output reg  [35:0] out_short1_inc0_c2;
+    output reg  [39:0] out_short1_inc1_z;
+    output reg  [35:0] out_short1_inc1_c0;
+    output reg  [35:0] out_short1_inc1_c1;
+    output reg  [35:0] out_short1_inc1_c2;
+    output reg  [39:0] out_ddx_z;
+    output reg  [35:0] out_ddx_c0;
+    output reg  [35:0] out_ddx_c1;
+    output reg  [35:0] out_ddx_c2;
+    
+    // Constant declarations
+    localparam  lane$0 = 8'h0;
+    localparam  lane$1 = 8'h1;
+    localparam  lane$2 = 8'h0;
+    localparam  lane$3 = 8'h1;
+    localparam  lane$4 = 8'h2;
+    localparam  lane$5 = 8'h3;
+    localparam  lane$6 = 8'h4;
+    localparam  lane$7 = 8'h5;
+    localparam  lane$8 = 8'h0;
+    localparam  lane$9 = 8'h1;
+    localparam  lane$10 = 8'h2;
+    localparam  lane$11 = 8'h3;
+    localparam  lane$12 = 8'h0;
+    localparam  lane$13 = 8'h1;
+    localparam  lane$14 = 8'h2;
+    localparam  lane$15 = 8'h3;
+    localparam  lane$16 = 8'h4;
+    localparam  lane$17 = 8'h5;
+    localparam  lane$18 = 8'h6;
+    localparam  lane$19 = 8'h0;
+    localparam  lane$20 = 8'h1;
+    localparam  lane$21 = 8'h2;
+    localparam  lane$22 = 8'h3;
+    localparam  lane$23 = 8'h4;
+    localparam  lane$24 = 8'h5;
+    localparam  lane$25 = 8'h6;
+    localparam  lane$26 = 8'h0;
+    localparam  lane$27 = 8'h1;
+    localparam  lane$28 = 8'h0;
+    localparam  lane$29 = 8'h1;
+    localparam  lane$30 = 8'h2;
+    localparam  lane$31 = 8'h3;
+    localparam  lane$32 = 8'h4;
+    localparam  lane$33 = 8'h5;
+    localparam  lane$34 = 8'h6;
+    localparam  lane$35 = 8'h0;
+    localparam  lane$36 = 8'h1;
+    localparam  lane$37 = 8'h2;
+    localparam  lane$38 = 8'h3;
+    localparam  lane$39 = 8'h4;
+    localparam  lane$40 = 8'h5;
+    localparam  lane$41 = 8'h6;
+    localparam  lane$42 = 8'h0;
+    localparam  lane$43 = 8'h1;
+    localparam  lane$44 = 8'h2;
+    localparam  lane$45 = 8'h3;
+    localparam  lane$46 = 8'h4;
+    localparam  lane$47 = 8'h5;
+    localparam  lane$48 = 8'h6;
+    localparam  lane$49 = 8'h0;
+    localparam  lane$50 = 8'h1;
+    localparam  lane$51 = 8'h2;
+    localparam  lane$52 = 8'h3;
+    localparam  lane$53 = 8'h4;
+    localparam  lane$54 = 8'h5;
+    localparam  lane$55 = 8'h6;
+    localparam  lane$56 = 8'h0;
+    localparam  lane$57 = 8'h1;
+    localparam  lane$58 = 8'h2;
+    localparam  lane$59 = 8'h3;
+    localparam  lane$60 = 8'h4;
+    localparam  lane$61 = 8'h5;
+    localparam  lane$62 = 8'h6;
+    localparam  lane$63 = 8'h0;
+    localparam  cyc$0 = 8'h1;
+    localparam  cyc$1 = 8'h1;
+    localparam  cyc$2 = 8'h2;
+    localparam  cyc$3 = 8'h2;
+    localparam  cyc$4 = 8'h2;
+    localparam  cyc$5 = 8'h2;
+    localparam  cyc$6 = 8'h2;
+    localparam  cyc$7 = 8'h2;
+    localparam  cyc$8 = 8'h7;
+    localparam  cyc$9 = 8'h7;
+    localparam  cyc$10 = 8'h7;
+    localparam  cyc$11 = 8'h7;
+    localparam  cyc$12 = 8'h8;
+    localparam  cyc$13 = 8'h8;
+    localparam  cyc$14 = 8'h8;
+    localparam  cyc$15 = 8'h8;
+    localparam  cyc$16 = 8'h8;
+    localparam  cyc$17 = 8'h8;
+    localparam  cyc$18 = 8'h8;
+    localparam  cyc$19 = 8'h9;
+    localparam  cyc$20 = 8'h9;
+    localparam  cyc$21 = 8'h9;
+    localparam  cyc$22 = 8'h9;
+    localparam  cyc$23 = 8'h9;
+    localparam  cyc$24 = 8'h9;
+    localparam  cyc$25 = 8'h9;
+    localparam  cyc$26 = 8'ha;
+    localparam  cyc$27 = 8'ha;
+    localparam  cyc$28 = 8'hb;
+    localparam  cyc$29 = 8'hb;
+    localparam  cyc$30 = 8'hb;
+    localparam  cyc$31 = 8'hb;
+    localparam  cyc$32 = 8'hb;
+    localparam  cyc$33 = 8'hb;
+    localparam  cyc$34 = 8'hb;
+    localparam  cyc$35 = 8'hc;
+    localparam  cyc$36 = 8'hc;
+    localparam  cyc$37 = 8'hc;
+    localparam  cyc$38 = 8'hc;
+    localparam  cyc$39 = 8'hc;
+    localparam  cyc$40 = 8'hc;
+    localparam  cyc$41 = 8'hc;
+    localparam  cyc$42 = 8'hd;
+    localparam  cyc$43 = 8'hd;
+    localparam  cyc$44 = 8'hd;
+    localparam  cyc$45 = 8'hd;
+    localparam  cyc$46 = 8'hd;
+    localparam  cyc$47 = 8'hd;
+    localparam  cyc$48 = 8'hd;
+    localparam  cyc$49 = 8'he;
+    localparam  cyc$50 = 8'he;
+    localparam  cyc$51 = 8'he;
+    localparam  cyc$52 = 8'he;
+    localparam  cyc$53 = 8'he;
+    localparam  cyc$54 = 8'he;
+    localparam  cyc$55 = 8'he;
+    localparam  cyc$56 = 8'hf;
+    localparam  cyc$57 = 8'hf;
+    localparam  cyc$58 = 8'hf;
+    localparam  cyc$59 = 8'hf;
+    localparam  cyc$60 = 8'hf;
+    localparam  cyc$61 = 8'hf;
+    localparam  cyc$62 = 8'hf;
+    localparam  cyc$63 = 8'h10;
+    localparam  iss$0 = 8'h2;
+    localparam  iss$1 = 8'h3;
+    localparam  iss$2 = 8'h4;
+    localparam  iss$3 = 8'h5;
+    localparam  iss$4 = 8'h6;
+    localparam  iss$5 = 8'h7;
+    localparam  iss$6 = 8'h8;
+    localparam  res$0 = 8'h7;
+    localparam  res$1 = 8'h8;
+    localparam  res$2 = 8'h9;
+    localparam  res$3 = 8'ha;
+    localparam  res$4 = 8'hb;
+    localparam  res$5 = 8'hc;
+    localparam  res$6 = 8'hd;
+    localparam  handover = 8'h11;
+    localparam  last = 8'h12;
+    localparam  recip_n = 58'h100000000000000;
+    localparam  recip_top = 6'b100000;
+    localparam  eq_shift = 6'b1111;
+    localparam  gsh$0 = 8'h11;
+    localparam  gsh$1 = 8'hd;
+    localparam  gsh$2 = 8'hd;
+    localparam  gsh$3 = 8'hd;
+    localparam  bsh$0 = 8'h12;
+    localparam  bsh$1 = 8'h16;
+    localparam  bsh$2 = 8'h16;
+    localparam  bsh$3 = 8'h16;
+    localparam  frac = 8'h4;
+    localparam  half_m1 = 19'b111;
+    localparam  half = 19'b1000;
+    localparam  int_mask = 19'b1111111111111110000;
+    localparam  frac_mask = 19'b1111;
+    localparam  xy_msb = 8'hf;
+    localparam  z_msb = 8'h11;
+    localparam  area_msb = 8'h21;
+    localparam  nb_msb = 8'h12;
+    localparam  p_msb = 8'h38;
+    localparam  xy_ext = 58'h3ffffffffff0000;
+    localparam  y_ext = 57'h1ffffffffff0000;
+    localparam  z_ext = 19'b1000000000000000000;
+    localparam  shr_ext = 19'b1111000000000000000;
+    localparam  ones = 57'h1ffffffffffffff;
+    localparam  top_bit = 8'h2;
+    localparam  bottom_bit = 8'h3;
+    
+    // Stub signals
+    reg  [56:0] mul$0$a;
+    reg  [18:0] mul$0$b;
+    wire  [57:0] mul$0$p;
+    reg  [56:0] mul$1$a;
+    reg  [18:0] mul$1$b;
+    wire  [57:0] mul$1$p;
+    reg  [56:0] mul$2$a;
+    reg  [18:0] mul$2$b;
+    wire  [57:0] mul$2$p;
+    reg  [56:0] mul$3$a;
+    reg  [18:0] mul$3$b;
+    wire  [57:0] mul$3$p;
+    reg  [56:0] mul$4$a;
+    reg  [18:0] mul$4$b;
+    wire  [57:0] mul$4$p;
+    reg  [56:0] mul$5$a;
+    reg  [18:0] mul$5$b;
+    wire  [57:0] mul$5$p;
+    reg  [56:0] mul$6$a;
+    reg  [18:0] mul$6$b;
+    wire  [57:0] mul$6$p;
+    reg  div$clock;
+    reg  div$inp_valid;
+    wire  div$inp_ready;
+    reg  [57:0] div$inp_n;
+    reg  [33:0] div$inp_d;
+    wire  div$out_valid;
+    reg  div$out_ready;
+    wire  [25:0] div$out_q;
+    wire  [33:0] div$out_r;
+    reg  [7:0] t$d;
+    wire  [7:0] t$q;
+    reg  t$clock;
+    reg  [15:0] vx$0$d;
+    wire  [15:0] vx$0$q;
+    reg  vx$0$clock;
+    reg  [15:0] vx$1$d;
+    wire  [15:0] vx$1$q;
+    reg  vx$1$clock;
+    reg  [15:0] vx$2$d;
+    wire  [15:0] vx$2$q;
+    reg  vx$2$clock;
+    reg  [15:0] vy$0$d;
+    wire  [15:0] vy$0$q;
+    reg  vy$0$clock;
+    reg  [15:0] vy$1$d;
+    wire  [15:0] vy$1$q;
+    reg  vy$1$clock;
+    reg  [15:0] vy$2$d;
+    wire  [15:0] vy$2$q;
+    reg  vy$2$clock;
+    reg  [17:0] vz$0$d;
+    wire  [17:0] vz$0$q;
+    reg  vz$0$clock;
+    reg  [17:0] vz$1$d;
+    wire  [17:0] vz$1$q;
+    reg  vz$1$clock;
+    reg  [17:0] vz$2$d;
+    wire  [17:0] vz$2$q;
+    reg  vz$2$clock;
+    reg  [7:0] vc$0$d;
+    wire  [7:0] vc$0$q;
+    reg  vc$0$clock;
+    reg  [7:0] vc$1$d;
+    wire  [7:0] vc$1$q;
+    reg  vc$1$clock;
+    reg  [7:0] vc$2$d;
+    wire  [7:0] vc$2$q;
+    reg  vc$2$clock;
+    reg  [7:0] vc$3$d;
+    wire  [7:0] vc$3$q;
+    reg  vc$3$clock;
+    reg  [7:0] vc$4$d;
+    wire  [7:0] vc$4$q;
+    reg  vc$4$clock;
+    reg  [7:0] vc$5$d;
+    wire  [7:0] vc$5$q;
+    reg  vc$5$clock;
+    reg  [7:0] vc$6$d;
+    wire  [7:0] vc$6$q;
+    reg  vc$6$clock;
+    reg  [7:0] vc$7$d;
+    wire  [7:0] vc$7$q;
+    reg  vc$7$clock;
+    reg  [7:0] vc$8$d;
+    wire  [7:0] vc$8$q;
+    reg  vc$8$clock;
+    reg  [5:0] crosses$d;
+    wire  [5:0] crosses$q;
+    reg  crosses$clock;
+    reg  [33:0] area$d;
+    wire  [33:0] area$q;
+    reg  area$clock;
+    reg  [5:0] exp$d;
+    wire  [5:0] exp$q;
+    reg  exp$clock;
+    reg  [24:0] mant$d;
+    wire  [24:0] mant$q;
+    reg  mant$clock;
+    reg  [18:0] x$0$d;
+    wire  [18:0] x$0$q;
+    reg  x$0$clock;
+    reg  [18:0] x$1$d;
+    wire  [18:0] x$1$q;
+    reg  x$1$clock;
+    reg  [18:0] x$2$d;
+    wire  [18:0] x$2$q;
+    reg  x$2$clock;
+    reg  [20:0] r$0$d;
+    wire  [20:0] r$0$q;
+    reg  r$0$clock;
+    reg  [20:0] r$1$d;
+    wire  [20:0] r$1$q;
+    reg  r$1$clock;
+    reg  [20:0] r$2$d;
+    wire  [20:0] r$2$q;
+    reg  r$2$clock;
+    reg  [18:0] q$0$d;
+    wire  [18:0] q$0$q;
+    reg  q$0$clock;
+    reg  [18:0] q$1$d;
+    wire  [18:0] q$1$q;
+    reg  q$1$clock;
+    reg  [18:0] q$2$d;
+    wire  [18:0] q$2$q;
+    reg  q$2$clock;
+    reg  [20:0] rho$0$d;
+    wire  [20:0] rho$0$q;
+    reg  rho$0$clock;
+    reg  [20:0] rho$1$d;
+    wire  [20:0] rho$1$q;
+    reg  rho$1$clock;
+    reg  [20:0] rho$2$d;
+    wire  [20:0] rho$2$q;
+    reg  rho$2$clock;
+    reg  [57:0] num$0$d;
+    wire  [57:0] num$0$q;
+    reg  num$0$clock;
+    reg  [57:0] num$1$d;
+    wire  [57:0] num$1$q;
+    reg  num$1$clock;
+    reg  [57:0] num$2$d;
+    wire  [57:0] num$2$q;
+    reg  num$2$clock;
+    reg  [56:0] p$0$d;
+    wire  [56:0] p$0$q;
+    reg  p$0$clock;
+    reg  [56:0] p$1$d;
+    wire  [56:0] p$1$q;
+    reg  p$1$clock;
+    reg  [56:0] p$2$d;
+    wire  [56:0] p$2$q;
+    reg  p$2$clock;
+    reg  [56:0] p$3$d;
+    wire  [56:0] p$3$q;
+    reg  p$3$clock;
+    reg  [56:0] gx$0$d;
+    wire  [56:0] gx$0$q;
+    reg  gx$0$clock;
+    reg  [56:0] gx$1$d;
+    wire  [56:0] gx$1$q;
+    reg  gx$1$clock;
+    reg  [56:0] gx$2$d;
+    wire  [56:0] gx$2$q;
+    reg  gx$2$clock;
+    reg  [56:0] gx$3$d;
+    wire  [56:0] gx$3$q;
+    reg  gx$3$clock;
+    reg  [56:0] gy$0$d;
+    wire  [56:0] gy$0$q;
+    reg  gy$0$clock;
+    reg  [56:0] gy$1$d;
+    wire  [56:0] gy$1$q;
+    reg  gy$1$clock;
+    reg  [56:0] gy$2$d;
+    wire  [56:0] gy$2$q;
+    reg  gy$2$clock;
+    reg  [56:0] gy$3$d;
+    wire  [56:0] gy$3$q;
+    reg  gy$3$clock;
+    reg  [39:0] plane$0$d;
+    wire  [39:0] plane$0$q;
+    reg  plane$0$clock;
+    reg  [39:0] plane$1$d;
+    wire  [39:0] plane$1$q;
+    reg  plane$1$clock;
+    reg  [39:0] plane$2$d;
+    wire  [39:0] plane$2$q;
+    reg  plane$2$clock;
+    reg  [39:0] plane$3$d;
+    wire  [39:0] plane$3$q;
+    reg  plane$3$clock;
+    reg  [39:0] plane$4$d;
+    wire  [39:0] plane$4$q;
+    reg  plane$4$clock;
+    reg  [39:0] plane$5$d;
+    wire  [39:0] plane$5$q;
+    reg  plane$5$clock;
+    reg  [39:0] plane$6$d;
+    wire  [39:0] plane$6$q;
+    reg  plane$6$clock;
+    reg  [39:0] plane$7$d;
+    wire  [39:0] plane$7$q;
+    reg  plane$7$clock;
+    reg  [39:0] plane$8$d;
+    wire  [39:0] plane$8$q;
+    reg  plane$8$clock;
+    reg  [39:0] plane$9$d;
+    wire  [39:0] plane$9$q;
+    reg  plane$9$clock;
+    reg  [39:0] plane$10$d;
+    wire  [39:0] plane$10$q;
+    reg  plane$10$clock;
+    reg  [39:0] plane$11$d;
+    wire  [39:0] plane$11$q;
+    reg  plane$11$clock;
+    reg  [39:0] inc0$0$d;
+    wire  [39:0] inc0$0$q;
+    reg  inc0$0$clock;
+    reg  [39:0] inc0$1$d;
+    wire  [39:0] inc0$1$q;
+    reg  inc0$1$clock;
+    reg  [39:0] inc0$2$d;
+    wire  [39:0] inc0$2$q;
+    reg  inc0$2$clock;
+    reg  [39:0] inc0$3$d;
+    wire  [39:0] inc0$3$q;
+    reg  inc0$3$clock;
+    reg  [39:0] inc0$4$d;
+    wire  [39:0] inc0$4$q;
+    reg  inc0$4$clock;
+    reg  [39:0] inc0$5$d;
+    wire  [39:0] inc0$5$q;
+    reg  inc0$5$clock;
+    reg  [39:0] inc0$6$d;
+    wire  [39:0] inc0$6$q;
+    reg  inc0$6$clock;
+    reg  [39:0] inc0$7$d;
+    wire  [39:0] inc0$7$q;
+    reg  inc0$7$clock;
+    reg  [39:0] inc0$8$d;
+    wire  [39:0] inc0$8$q;
+    reg  inc0$8$clock;
+    reg  [39:0] inc0$9$d;
+    wire  [39:0] inc0$9$q;
+    reg  inc0$9$clock;
+    reg  [39:0] inc0$10$d;
+    wire  [39:0] inc0$10$q;
+    reg  inc0$10$clock;
+    reg  [39:0] inc0$11$d;
+    wire  [39:0] inc0$11$q;
+    reg  inc0$11$clock;
+    reg  [39:0] inc1$0$d;
+    wire  [39:0] inc1$0$q;
+    reg  inc1$0$clock;
+    reg  [39:0] inc1$1$d;
+    wire  [39:0] inc1$1$q;
+    reg  inc1$1$clock;
+    reg  [39:0] inc1$2$d;
+    wire  [39:0] inc1$2$q;
+    reg  inc1$2$clock;
+    reg  [39:0] inc1$3$d;
+    wire  [39:0] inc1$3$q;
+    reg  inc1$3$clock;
+    reg  [39:0] inc1$4$d;
+    wire  [39:0] inc1$4$q;
+    reg  inc1$4$clock;
+    reg  [39:0] inc1$5$d;
+    wire  [39:0] inc1$5$q;
+    reg  inc1$5$clock;
+    reg  [39:0] inc1$6$d;
+    wire  [39:0] inc1$6$q;
+    reg  inc1$6$clock;
+    reg  [39:0] inc1$7$d;
+    wire  [39:0] inc1$7$q;
+    reg  inc1$7$clock;
+    reg  [39:0] inc1$8$d;
+    wire  [39:0] inc1$8$q;
+    reg  inc1$8$clock;
+    reg  [39:0] inc1$9$d;
+    wire  [39:0] inc1$9$q;
+    reg  inc1$9$clock;
+    reg  [39:0] inc1$10$d;
+    wire  [39:0] inc1$10$q;
+    reg  inc1$10$clock;
+    reg  [39:0] inc1$11$d;
+    wire  [39:0] inc1$11$q;
+    reg  inc1$11$clock;
+    
+    // Local signals
+    reg  take;
+    reg  act$0;
+    reg  act$1;
+    reg  act$2;
+    reg  act$3;
+    reg  act$4;
+    reg  act$5;
+    reg  act$6;
+    reg  act$7;
+    reg  act$8;
+    reg  act$9;
+    reg  act$10;
+    reg  act$11;
+    reg  act$12;
+    reg  act$13;
+    reg  act$14;
+    reg  act$15;
+    reg  act$16;
+    reg  act$17;
+    reg  act$18;
+    reg  act$19;
+    reg  act$20;
+    reg  act$21;
+    reg  act$22;
+    reg  act$23;
+    reg  act$24;
+    reg  act$25;
+    reg  act$26;
+    reg  act$27;
+    reg  act$28;
+    reg  act$29;
+    reg  act$30;
+    reg  act$31;
+    reg  act$32;
+    reg  act$33;
+    reg  act$34;
+    reg  act$35;
+    reg  act$36;
+    reg  act$37;
+    reg  act$38;
+    reg  act$39;
+    reg  act$40;
+    reg  act$41;
+    reg  act$42;
+    reg  act$43;
+    reg  act$44;
+    reg  act$45;
+    reg  act$46;
+    reg  act$47;
+    reg  act$48;
+    reg  act$49;
+    reg  act$50;
+    reg  act$51;
+    reg  act$52;
+    reg  act$53;
+    reg  act$54;
+    reg  act$55;
+    reg  act$56;
+    reg  act$57;
+    reg  act$58;
+    reg  act$59;
+    reg  act$60;
+    reg  act$61;
+    reg  act$62;
+    reg  act$63;
+    reg  [57:0] xw$0;
+    reg  [57:0] xw$1;
+    reg  [57:0] xw$2;
+    reg  [56:0] yw$0;
+    reg  [56:0] yw$1;
+    reg  [56:0] yw$2;
+    reg  [18:0] zn$0;
+    reg  [18:0] zn$1;
+    reg  [18:0] zn$2;
+    reg  [18:0] cn$0;
+    reg  [18:0] cn$1;
+    reg  [18:0] cn$2;
+    reg  [18:0] cn$3;
+    reg  [18:0] cn$4;
+    reg  [18:0] cn$5;
+    reg  [18:0] cn$6;
+    reg  [18:0] cn$7;
+    reg  [18:0] cn$8;
+    reg  [18:0] xn$0;
+    reg  [18:0] xn$1;
+    reg  [18:0] xn$2;
+    reg  [18:0] yn$0;
+    reg  [18:0] yn$1;
+    reg  [18:0] yn$2;
+    reg  [57:0] kdx$0;
+    reg  [57:0] kdx$1;
+    reg  [57:0] kdx$2;
+    reg  [56:0] kdy$0;
+    reg  [56:0] kdy$1;
+    reg  [56:0] kdy$2;
+    reg  [18:0] cv$0;
+    reg  [18:0] cv$1;
+    reg  [18:0] cv$2;
+    reg  [12:0] span_fe;
+    reg  [12:0] span_fm;
+    reg  [12:0] span_me;
+    reg  [18:0] diff_fe;
+    reg  [18:0] diff_fm;
+    reg  [18:0] diff_me;
+    reg  up;
+    reg  maj_left;
+    reg  [57:0] edx$0;
+    reg  [57:0] edx$1;
+    reg  [57:0] edx$2;
+    reg  [56:0] edy$0;
+    reg  [56:0] edy$1;
+    reg  [56:0] edy$2;
+    reg  [33:0] ed16$0;
+    reg  [33:0] ed16$1;
+    reg  [33:0] ed16$2;
+    reg  [18:0] bx$0;
+    reg  [18:0] bx$1;
+    reg  [18:0] bx$2;
+    reg  [18:0] by$0;
+    reg  [18:0] by$1;
+    reg  [18:0] by$2;
+    reg  [18:0] cy$0;
+    reg  [18:0] cy$1;
+    reg  [18:0] cy$2;
+    reg  [12:0] count$0;
+    reg  [12:0] count$1;
+    reg  [12:0] count$2;
+    reg  [18:0] toff$0;
+    reg  [18:0] toff$1;
+    reg  [18:0] toff$2;
+    reg  [18:0] xb$0;
+    reg  [18:0] xb$1;
+    reg  [18:0] xb$2;
+    reg  [18:0] xi$0;
+    reg  [18:0] xi$1;
+    reg  [18:0] xi$2;
+    reg  [18:0] xf$0;
+    reg  [18:0] xf$1;
+    reg  [18:0] xf$2;
+    reg  [18:0] tracked$0;
+    reg  [18:0] tracked$1;
+    reg  [18:0] tracked$2;
+    reg  [18:0] off_x$0;
+    reg  [18:0] off_x$1;
+    reg  [18:0] off_x$2;
+    reg  [18:0] off_y$0;
+    reg  [18:0] off_y$1;
+    reg  [18:0] off_y$2;
+    reg  [18:0] dmaj$0;
+    reg  [18:0] dmaj$1;
+    reg  [18:0] dmaj$2;
+    reg  [18:0] dmaj$3;
+    reg  [18:0] dbot$0;
+    reg  [18:0] dbot$1;
+    reg  [18:0] dbot$2;
+    reg  [18:0] dbot$3;
+    reg  [39:0] attr0$0;
+    reg  [39:0] attr0$1;
+    reg  [39:0] attr0$2;
+    reg  [39:0] attr0$3;
+    reg  [33:0] area_abs;
+    reg  [5:0] exp_c;
+    reg  [33:0] norm_d;
+    reg  [24:0] mant_now;
+    reg  [56:0] mant_a;
+    reg  [18:0] q_n;
+    reg  r_pos;
+    reg  [33:0] pa$0;
+    reg  [33:0] pa$1;
+    reg  [57:0] pn$0;
+    reg  [57:0] pn$1;
+    reg  [57:0] pn$2;
+    reg  [57:0] pn$3;
+    reg  [57:0] pn$4;
+    reg  [57:0] pn$5;
+    reg  [56:0] pe$0;
+    reg  [56:0] pe$1;
+    reg  [56:0] pe$2;
+    reg  [56:0] pe$3;
+    reg  [56:0] pg$0;
+    reg  [56:0] pg$1;
+    reg  [56:0] pg$2;
+    reg  [56:0] pg$3;
+    reg  [56:0] pg$4;
+    reg  [56:0] pg$5;
+    reg  [56:0] pg$6;
+    reg  [56:0] pg$7;
+    reg  [56:0] pg$8;
+    reg  [56:0] pg$9;
+    reg  [56:0] pg$10;
+    reg  [56:0] pg$11;
+    reg  [56:0] pg$12;
+    reg  [56:0] pg$13;
+    reg  [56:0] pg$14;
+    reg  [56:0] pg$15;
+    reg  [39:0] ps$0;
+    reg  [39:0] ps$1;
+    reg  [39:0] ps$2;
+    reg  [39:0] ps$3;
+    reg  [39:0] ps$4;
+    reg  [39:0] ps$5;
+    reg  [39:0] ps$6;
+    reg  [39:0] ps$7;
+    reg  [39:0] ps$8;
+    reg  [39:0] ps$9;
+    reg  [39:0] ps$10;
+    reg  [39:0] ps$11;
+    reg  [39:0] ps$12;
+    reg  [39:0] ps$13;
+    reg  [39:0] ps$14;
+    reg  [39:0] ps$15;
+    reg  [39:0] ps$16;
+    reg  [39:0] ps$17;
+    reg  [39:0] ps$18;
+    reg  [39:0] ps$19;
+    reg  [39:0] ps$20;
+    reg  [39:0] ps$21;
+    reg  [39:0] ps$22;
+    reg  [39:0] ps$23;
+    reg  [39:0] ps$24;
+    reg  [39:0] ps$25;
+    reg  [39:0] ps$26;
+    reg  [39:0] ps$27;
+    reg  [39:0] ps$28;
+    reg  [39:0] ps$29;
+    reg  [39:0] ps$30;
+    reg  [39:0] ps$31;
+    reg  [39:0] ps$32;
+    reg  [39:0] ps$33;
+    reg  [39:0] ps$34;
+    reg  [39:0] ps$35;
+    reg  [18:0] delta$0;
+    reg  [18:0] delta$1;
+    reg  [18:0] delta$2;
+    reg  [18:0] delta$3;
+    reg  [18:0] eq_b$0;
+    reg  [18:0] eq_b$1;
+    reg  [18:0] eq_b$2;
+    reg  [18:0] eq_b$3;
+    reg  [56:0] shr$0;
+    reg  [56:0] shr$1;
+    reg  [56:0] shr$2;
+    reg  [56:0] shr$3;
+    reg  [5:0] lsh;
+    reg  [5:0] rsh;
+    reg  [33:0] area_base;
+    reg  [57:0] num_base$0;
+    reg  [57:0] num_base$1;
+    reg  [57:0] num_base$2;
+    reg  [56:0] gx_base$0;
+    reg  [56:0] gx_base$1;
+    reg  [56:0] gx_base$2;
+    reg  [56:0] gx_base$3;
+    reg  [56:0] gy_base$0;
+    reg  [56:0] gy_base$1;
+    reg  [56:0] gy_base$2;
+    reg  [56:0] gy_base$3;
+    reg  [39:0] plane_base$0;
+    reg  [39:0] plane_base$1;
+    reg  [39:0] plane_base$2;
+    reg  [39:0] plane_base$3;
+    reg  [39:0] plane_base$4;
+    reg  [39:0] plane_base$5;
+    reg  [39:0] plane_base$6;
+    reg  [39:0] plane_base$7;
+    reg  [39:0] plane_base$8;
+    reg  [39:0] plane_base$9;
+    reg  [39:0] plane_base$10;
+    reg  [39:0] plane_base$11;
+    reg  [56:0] ddx$0;
+    reg  [56:0] ddx$1;
+    reg  [56:0] ddx$2;
+    reg  [56:0] ddx$3;
+    reg  [56:0] ddy$0;
+    reg  [56:0] ddy$1;
+    reg  [56:0] ddy$2;
+    reg  [56:0] ddy$3;
+    
+    // Sub module instances
+    raster_top$triangle_setup$mul$0 mul$0(
+        .a(mul$0$a),
+        .b(mul$0$b),
+        .p(mul$0$p)
+    );
+    raster_top$triangle_setup$mul$1 mul$1(
+        .a(mul$1$a),
+        .b(mul$1$b),
+        .p(mul$1$p)
+    );
+    raster_top$triangle_setup$mul$2 mul$2(
+        .a(mul$2$a),
+        .b(mul$2$b),
+        .p(mul$2$p)
+    );
+    raster_top$triangle_setup$mul$3 mul$3(
+        .a(mul$3$a),
+        .b(mul$3$b),
+        .p(mul$3$p)
+    );
+    raster_top$triangle_setup$mul$4 mul$4(
+        .a(mul$4$a),
+        .b(mul$4$b),
+        .p(mul$4$p)
+    );
+    raster_top$triangle_setup$mul$5 mul$5(
+        .a(mul$5$a),
+        .b(mul$5$b),
+        .p(mul$5$p)
+    );
+    raster_top$triangle_setup$mul$6 mul$6(
+        .a(mul$6$a),
+        .b(mul$6$b),
+        .p(mul$6$p)
+    );
+    raster_top$triangle_setup$div div(
+        .clock(div$clock),
+        .inp_valid(div$inp_valid),
+        .inp_ready(div$inp_ready),
+        .inp_n(div$inp_n),
+        .inp_d(div$inp_d),
+        .out_valid(div$out_valid),
+        .out_ready(div$out_ready),
+        .out_q(div$out_q),
+        .out_r(div$out_r)
+    );
+    raster_top$triangle_setup$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
+    raster_top$triangle_setup$vx$0 vx$0(
+        .d(vx$0$d),
+        .q(vx$0$q),
+        .clock(vx$0$clock)
+    );
+    raster_top$triangle_setup$vx$1 vx$1(
+        .d(vx$1$d),
+        .q(vx$1$q),
+        .clock(vx$1$clock)
+    );
+    raster_top$triangle_setup$vx$2 vx$2(
+        .d(vx$2$d),
+        .q(vx$2$q),
+        .clock(vx$2$clock)
+    );
+    raster_top$triangle_setup$vy$0 vy$0(
+        .d(vy$0$d),
+        .q(vy$0$q),
+        .clock(vy$0$clock)
+    );
+    raster_top$triangle_setup$vy$1 vy$1(
+        .d(vy$1$d),
+        .q(vy$1$q),
+        .clock(vy$1$clock)
+    );
+    raster_top$triangle_setup$vy$2 vy$2(
+        .d(vy$2$d),
+        .q(vy$2$q),
+        .clock(vy$2$clock)
+    );
+    raster_top$triangle_setup$vz$0 vz$0(
+        .d(vz$0$d),
+        .q(vz$0$q),
+        .clock(vz$0$clock)
+    );
+    raster_top$triangle_setup$vz$1 vz$1(
+        .d(vz$1$d),
+        .q(vz$1$q),
+        .clock(vz$1$clock)
+    );
+    raster_top$triangle_setup$vz$2 vz$2(
+        .d(vz$2$d),
+        .q(vz$2$q),
+        .clock(vz$2$clock)
+    );
+    raster_top$triangle_setup$vc$0 vc$0(
+        .d(vc$0$d),
+        .q(vc$0$q),
+        .clock(vc$0$clock)
+    );
+    raster_top$triangle_setup$vc$1 vc$1(
+        .d(vc$1$d),
+        .q(vc$1$q),
+        .clock(vc$1$clock)
+    );
+    raster_top$triangle_setup$vc$2 vc$2(
+        .d(vc$2$d),
+        .q(vc$2$q),
+        .clock(vc$2$clock)
+    );
+    raster_top$triangle_setup$vc$3 vc$3(
+        .d(vc$3$d),
+        .q(vc$3$q),
+        .clock(vc$3$clock)
+    );
+    raster_top$triangle_setup$vc$4 vc$4(
+        .d(vc$4$d),
+        .q(vc$4$q),
+        .clock(vc$4$clock)
+    );
+    raster_top$triangle_setup$vc$5 vc$5(
+        .d(vc$5$d),
+        .q(vc$5$q),
+        .clock(vc$5$clock)
+    );
+    raster_top$triangle_setup$vc$6 vc$6(
+        .d(vc$6$d),
+        .q(vc$6$q),
+        .clock(vc$6$clock)
+    );
+    raster_top$triangle_setup$vc$7 vc$7(
+        .d(vc$7$d),
+        .q(vc$7$q),
+        .clock(vc$7$clock)
+    );
+    raster_top$triangle_setup$vc$8 vc$8(
+        .d(vc$8$d),
+        .q(vc$8$q),
+        .clock(vc$8$clock)
+    );
+    raster_top$triangle_setup$crosses crosses(
+        .d(crosses$d),
+        .q(crosses$q),
+        .clock(crosses$clock)
+    );
+    raster_top$triangle_setup$area area(
+        .d(area$d),
+        .q(area$q),
+        .clock(area$clock)
+    );
+    raster_top$triangle_setup$exp exp(
+        .d(exp$d),
+        .q(exp$q),
+        .clock(exp$clock)
+    );
+    raster_top$triangle_setup$mant mant(
+        .d(mant$d),
+        .q(mant$q),
+        .clock(mant$clock)
+    );
+    raster_top$triangle_setup$x$0 x$0(
+        .d(x$0$d),
+        .q(x$0$q),
+        .clock(x$0$clock)
+    );
+    raster_top$triangle_setup$x$1 x$1(
+        .d(x$1$d),
+        .q(x$1$q),
+        .clock(x$1$clock)
+    );
+    raster_top$triangle_setup$x$2 x$2(
+        .d(x$2$d),
+        .q(x$2$q),
+        .clock(x$2$clock)
+    );
+    raster_top$triangle_setup$r$0 r$0(
+        .d(r$0$d),
+        .q(r$0$q),
+        .clock(r$0$clock)
+    );
+    raster_top$triangle_setup$r$1 r$1(
+        .d(r$1$d),
+        .q(r$1$q),
+        .clock(r$1$clock)
+    );
+    raster_top$triangle_setup$r$2 r$2(
+        .d(r$2$d),
+        .q(r$2$q),
+        .clock(r$2$clock)
+    );
+    raster_top$triangle_setup$q$0 q$0(
+        .d(q$0$d),
+        .q(q$0$q),
+        .clock(q$0$clock)
+    );
+    raster_top$triangle_setup$q$1 q$1(
+        .d(q$1$d),
+        .q(q$1$q),
+        .clock(q$1$clock)
+    );
+    raster_top$triangle_setup$q$2 q$2(
+        .d(q$2$d),
+        .q(q$2$q),
+        .clock(q$2$clock)
+    );
+    raster_top$triangle_setup$rho$0 rho$0(
+        .d(rho$0$d),
+        .q(rho$0$q),
+        .clock(rho$0$clock)
+    );
+    raster_top$triangle_setup$rho$1 rho$1(
+        .d(rho$1$d),
+        .q(rho$1$q),
+        .clock(rho$1$clock)
+    );
+    raster_top$triangle_setup$rho$2 rho$2(
+        .d(rho$2$d),
+        .q(rho$2$q),
+        .clock(rho$2$clock)
+    );
+    raster_top$triangle_setup$num$0 num$0(
+        .d(num$0$d),
+        .q(num$0$q),
+        .clock(num$0$clock)
+    );
+    raster_top$triangle_setup$num$1 num$1(
+        .d(num$1$d),
+        .q(num$1$q),
+        .clock(num$1$clock)
+    );
+    raster_top$triangle_setup$num$2 num$2(
+        .d(num$2$d),
+        .q(num$2$q),
+        .clock(num$2$clock)
+    );
+    raster_top$triangle_setup$p$0 p$0(
+        .d(p$0$d),
+        .q(p$0$q),
+        .clock(p$0$clock)
+    );
+    raster_top$triangle_setup$p$1 p$1(
+        .d(p$1$d),
+        .q(p$1$q),
+        .clock(p$1$clock)
+    );
+    raster_top$triangle_setup$p$2 p$2(
+        .d(p$2$d),
+        .q(p$2$q),
+        .clock(p$2$clock)
+    );
+    raster_top$triangle_setup$p$3 p$3(
+        .d(p$3$d),
+        .q(p$3$q),
+        .clock(p$3$clock)
+    );
+    raster_top$triangle_setup$gx$0 gx$0(
+        .d(gx$0$d),
+        .q(gx$0$q),
+        .clock(gx$0$clock)
+    );
+    raster_top$triangle_setup$gx$1 gx$1(
+        .d(gx$1$d),
+        .q(gx$1$q),
+        .clock(gx$1$clock)
+    );
+    raster_top$triangle_setup$gx$2 gx$2(
+        .d(gx$2$d),
+        .q(gx$2$q),
+        .clock(gx$2$clock)
+    );
+    raster_top$triangle_setup$gx$3 gx$3(
+        .d(gx$3$d),
+        .q(gx$3$q),
+        .clock(gx$3$clock)
+    );
+    raster_top$triangle_setup$gy$0 gy$0(
+        .d(gy$0$d),
+        .q(gy$0$q),
+        .clock(gy$0$clock)
+    );
+    raster_top$triangle_setup$gy$1 gy$1(
+        .d(gy$1$d),
+        .q(gy$1$q),
+        .clock(gy$1$clock)
+    );
+    raster_top$triangle_setup$gy$2 gy$2(
+        .d(gy$2$d),
+        .q(gy$2$q),
+        .clock(gy$2$clock)
+    );
+    raster_top$triangle_setup$gy$3 gy$3(
+        .d(gy$3$d),
+        .q(gy$3$q),
+        .clock(gy$3$clock)
+    );
+    raster_top$triangle_setup$plane$0 plane$0(
+        .d(plane$0$d),
+        .q(plane$0$q),
+        .clock(plane$0$clock)
+    );
+    raster_top$triangle_setup$plane$1 plane$1(
+        .d(plane$1$d),
+        .q(plane$1$q),
+        .clock(plane$1$clock)
+    );
+    raster_top$triangle_setup$plane$2 plane$2(
+        .d(plane$2$d),
+        .q(plane$2$q),
+        .clock(plane$2$clock)
+    );
+    raster_top$triangle_setup$plane$3 plane$3(
+        .d(plane$3$d),
+        .q(plane$3$q),
+        .clock(plane$3$clock)
+    );
+    raster_top$triangle_setup$plane$4 plane$4(
+        .d(plane$4$d),
+        .q(plane$4$q),
+        .clock(plane$4$clock)
+    );
+    raster_top$triangle_setup$plane$5 plane$5(
+        .d(plane$5$d),
+        .q(plane$5$q),
+        .clock(plane$5$clock)
+    );
+    raster_top$triangle_setup$plane$6 plane$6(
+        .d(plane$6$d),
+        .q(plane$6$q),
+        .clock(plane$6$clock)
+    );
+    raster_top$triangle_setup$plane$7 plane$7(
+        .d(plane$7$d),
+        .q(plane$7$q),
+        .clock(plane$7$clock)
+    );
+    raster_top$triangle_setup$plane$8 plane$8(
+        .d(plane$8$d),
+        .q(plane$8$q),
+        .clock(plane$8$clock)
+    );
+    raster_top$triangle_setup$plane$9 plane$9(
+        .d(plane$9$d),
+        .q(plane$9$q),
+        .clock(plane$9$clock)
+    );
+    raster_top$triangle_setup$plane$10 plane$10(
+        .d(plane$10$d),
+        .q(plane$10$q),
+        .clock(plane$10$clock)
+    );
+    raster_top$triangle_setup$plane$11 plane$11(
+        .d(plane$11$d),
+        .q(plane$11$q),
+        .clock(plane$11$clock)
+    );
+    raster_top$triangle_setup$inc0$0 inc0$0(
+        .d(inc0$0$d),
+        .q(inc0$0$q),
+        .clock(inc0$0$clock)
+    );
+    raster_top$triangle_setup$inc0$1 inc0$1(
+        .d(inc0$1$d),
+        .q(inc0$1$q),
+        .clock(inc0$1$clock)
+    );
+    raster_top$triangle_setup$inc0$2 inc0$2(
+        .d(inc0$2$d),
+        .q(inc0$2$q),
+        .clock(inc0$2$clock)
+    );
+    raster_top$triangle_setup$inc0$3 inc0$3(
+        .d(inc0$3$d),
+        .q(inc0$3$q),
+        .clock(inc0$3$clock)
+    );
+    raster_top$triangle_setup$inc0$4 inc0$4(
+        .d(inc0$4$d),
+        .q(inc0$4$q),
+        .clock(inc0$4$clock)
+    );
+    raster_top$triangle_setup$inc0$5 inc0$5(
+        .d(inc0$5$d),
+        .q(inc0$5$q),
+        .clock(inc0$5$clock)
+    );
+    raster_top$triangle_setup$inc0$6 inc0$6(
+        .d(inc0$6$d),
+        .q(inc0$6$q),
+        .clock(inc0$6$clock)
+    );
+    raster_top$triangle_setup$inc0$7 inc0$7(
+        .d(inc0$7$d),
+        .q(inc0$7$q),
+        .clock(inc0$7$clock)
+    );
+    raster_top$triangle_setup$inc0$8 inc0$8(
+        .d(inc0$8$d),
+        .q(inc0$8$q),
+        .clock(inc0$8$clock)
+    );
+    raster_top$triangle_setup$inc0$9 inc0$9(
+        .d(inc0$9$d),
+        .q(inc0$9$q),
+        .clock(inc0$9$clock)
+    );
+    raster_top$triangle_setup$inc0$10 inc0$10(
+        .d(inc0$10$d),
+        .q(inc0$10$q),
+        .clock(inc0$10$clock)
+    );
+    raster_top$triangle_setup$inc0$11 inc0$11(
+        .d(inc0$11$d),
+        .q(inc0$11$q),
+        .clock(inc0$11$clock)
+    );
+    raster_top$triangle_setup$inc1$0 inc1$0(
+        .d(inc1$0$d),
+        .q(inc1$0$q),
+        .clock(inc1$0$clock)
+    );
+    raster_top$triangle_setup$inc1$1 inc1$1(
+        .d(inc1$1$d),
+        .q(inc1$1$q),
+        .clock(inc1$1$clock)
+    );
+    raster_top$triangle_setup$inc1$2 inc1$2(
+        .d(inc1$2$d),
+        .q(inc1$2$q),
+        .clock(inc1$2$clock)
+    );
+    raster_top$triangle_setup$inc1$3 inc1$3(
+        .d(inc1$3$d),
+        .q(inc1$3$q),
+        .clock(inc1$3$clock)
+    );
+    raster_top$triangle_setup$inc1$4 inc1$4(
+        .d(inc1$4$d),
+        .q(inc1$4$q),
+        .clock(inc1$4$clock)
+    );
+    raster_top$triangle_setup$inc1$5 inc1$5(
+        .d(inc1$5$d),
+        .q(inc1$5$q),
+        .clock(inc1$5$clock)
+    );
+    raster_top$triangle_setup$inc1$6 inc1$6(
+        .d(inc1$6$d),
+        .q(inc1$6$q),
+        .clock(inc1$6$clock)
+    );
+    raster_top$triangle_setup$inc1$7 inc1$7(
+        .d(inc1$7$d),
+        .q(inc1$7$q),
+        .clock(inc1$7$clock)
+    );
+    raster_top$triangle_setup$inc1$8 inc1$8(
+        .d(inc1$8$d),
+        .q(inc1$8$q),
+        .clock(inc1$8$clock)
+    );
+    raster_top$triangle_setup$inc1$9 inc1$9(
+        .d(inc1$9$d),
+        .q(inc1$9$q),
+        .clock(inc1$9$clock)
+    );
+    raster_top$triangle_setup$inc1$10 inc1$10(
+        .d(inc1$10$d),
+        .q(inc1$10$q),
+        .clock(inc1$10$clock)
+    );
+    raster_top$triangle_setup$inc1$11 inc1$11(
+        .d(inc1$11$d),
+        .q(inc1$11$q),
+        .clock(inc1$11$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        t$clock = clock;
+        crosses$clock = clock;
+        area$clock = clock;
+        exp$clock = clock;
+        mant$clock = clock;
+        t$d = t$q;
+        crosses$d = crosses$q;
+        area$d = area$q;
+        exp$d = exp$q;
+        mant$d = mant$q;
+        div$clock = clock;
+        vx$0$clock = clock;
+        vx$0$d = vx$0$q;
+        vy$0$clock = clock;
+        vy$0$d = vy$0$q;
+        vz$0$clock = clock;
+        vz$0$d = vz$0$q;
+        x$0$clock = clock;
+        x$0$d = x$0$q;
+        r$0$clock = clock;
+        r$0$d = r$0$q;
+        q$0$clock = clock;
+        q$0$d = q$0$q;
+        rho$0$clock = clock;
+        rho$0$d = rho$0$q;
+        num$0$clock = clock;
+        vx$1$clock = clock;
+        vx$1$d = vx$1$q;
+        vy$1$clock = clock;
+        vy$1$d = vy$1$q;
+        vz$1$clock = clock;
+        vz$1$d = vz$1$q;
+        x$1$clock = clock;
+        x$1$d = x$1$q;
+        r$1$clock = clock;
+        r$1$d = r$1$q;
+        q$1$clock = clock;
+        q$1$d = q$1$q;
+        rho$1$clock = clock;
+        rho$1$d = rho$1$q;
+        num$1$clock = clock;
+        vx$2$clock = clock;
+        vx$2$d = vx$2$q;
+        vy$2$clock = clock;
+        vy$2$d = vy$2$q;
+        vz$2$clock = clock;
+        vz$2$d = vz$2$q;
+        x$2$clock = clock;
+        x$2$d = x$2$q;
+        r$2$clock = clock;
+        r$2$d = r$2$q;
+        q$2$clock = clock;
+        q$2$d = q$2$q;
+        rho$2$clock = clock;
+        rho$2$d = rho$2$q;
+        num$2$clock = clock;
+        vc$0$clock = clock;
+        vc$0$d = vc$0$q;
+        vc$1$clock = clock;
+        vc$1$d = vc$1$q;
+        vc$2$clock = clock;
+        vc$2$d = vc$2$q;
+        vc$3$clock = clock;
+        vc$3$d = vc$3$q;
+        vc$4$clock = clock;
+        vc$4$d = vc$4$q;
+        vc$5$clock = clock;
+        vc$5$d = vc$5$q;
+        vc$6$clock = clock;
+        vc$6$d = vc$6$q;
+        vc$7$clock = clock;
+        vc$7$d = vc$7$q;
+        vc$8$clock = clock;
+        vc$8$d = vc$8$q;
+        p$0$clock = clock;
+        p$0$d = p$0$q;
+        gx$0$clock = clock;
+        gy$0$clock = clock;
+        p$1$clock = clock;
+        p$1$d = p$1$q;
+        gx$1$clock = clock;
+        gy$1$clock = clock;
+        p$2$clock = clock;
+        p$2$d = p$2$q;
+        gx$2$clock = clock;
+        gy$2$clock = clock;
+        p$3$clock = clock;
+        p$3$d = p$3$q;
+        gx$3$clock = clock;
+        gy$3$clock = clock;
+        plane$0$clock = clock;
+        inc0$0$clock = clock;
+        inc0$0$d = inc0$0$q;
+        inc1$0$clock = clock;
+        inc1$0$d = inc1$0$q;
+        plane$1$clock = clock;
+        inc0$1$clock = clock;
+        inc0$1$d = inc0$1$q;
+        inc1$1$clock = clock;
+        inc1$1$d = inc1$1$q;
+        plane$2$clock = clock;
+        inc0$2$clock = clock;
+        inc0$2$d = inc0$2$q;
+        inc1$2$clock = clock;
+        inc1$2$d = inc1$2$q;
+        plane$3$clock = clock;
+        inc0$3$clock = clock;
+        inc0$3$d = inc0$3$q;
+        inc1$3$clock = clock;
+        inc1$3$d = inc1$3$q;
+        plane$4$clock = clock;
+        inc0$4$clock = clock;
+        inc0$4$d = inc0$4$q;
+        inc1$4$clock = clock;
+        inc1$4$d = inc1$4$q;
+        plane$5$clock = clock;
+        inc0$5$clock = clock;
+        inc0$5$d = inc0$5$q;
+        inc1$5$clock = clock;
+        inc1$5$d = inc1$5$q;
+        plane$6$clock = clock;
+        inc0$6$clock = clock;
+        inc0$6$d = inc0$6$q;
+        inc1$6$clock = clock;
+        inc1$6$d = inc1$6$q;
+        plane$7$clock = clock;
+        inc0$7$clock = clock;
+        inc0$7$d = inc0$7$q;
+        inc1$7$clock = clock;
+        inc1$7$d = inc1$7$q;
+        plane$8$clock = clock;
+        inc0$8$clock = clock;
+        inc0$8$d = inc0$8$q;
+        inc1$8$clock = clock;
+        inc1$8$d = inc1$8$q;
+        plane$9$clock = clock;
+        inc0$9$clock = clock;
+        inc0$9$d = inc0$9$q;
+        inc1$9$clock = clock;
+        inc1$9$d = inc1$9$q;
+        plane$10$clock = clock;
+        inc0$10$clock = clock;
+        inc0$10$d = inc0$10$q;
+        inc1$10$clock = clock;
+        inc1$10$d = inc1$10$q;
+        plane$11$clock = clock;
+        inc0$11$clock = clock;
+        inc0$11$d = inc0$11$q;
+        inc1$11$clock = clock;
+        inc1$11$d = inc1$11$q;
+        inp_ready = (t$q == 32'h0) | ((t$q == last) & out_ready);
+        take = inp_valid & inp_ready;
+        out_valid = t$q == last;
+        if ((t$q != 32'h0) & (t$q != last)) begin
+            t$d = t$q + 32'h1;
+        end
+        if ((t$q == last) & out_ready) begin
+            t$d = 32'h0;
+        end
+        if (take) begin
+            t$d = 32'h1;
+            vx$0$d = inp_v0_x;
+            vy$0$d = inp_v0_y;
+            vz$0$d = inp_v0_z;
+            vc$0$d = inp_v0_c0;
+            vc$1$d = inp_v0_c1;
+            vc$2$d = inp_v0_c2;
+            vx$1$d = inp_v1_x;
+            vy$1$d = inp_v1_y;
+            vz$1$d = inp_v1_z;
+            vc$3$d = inp_v1_c0;
+            vc$4$d = inp_v1_c1;
+            vc$5$d = inp_v1_c2;
+            vx$2$d = inp_v2_x;
+            vy$2$d = inp_v2_y;
+            vz$2$d = inp_v2_z;
+            vc$6$d = inp_v2_c0;
+            vc$7$d = inp_v2_c1;
+            vc$8$d = inp_v2_c2;
+            crosses$d = inp_crosses;
+        end
+        act$0 = t$q == cyc$0;
+        act$1 = t$q == cyc$1;
+        act$2 = t$q == cyc$2;
+        act$3 = t$q == cyc$3;
+        act$4 = t$q == cyc$4;
+        act$5 = t$q == cyc$5;
+        act$6 = t$q == cyc$6;
+        act$7 = t$q == cyc$7;
+        act$8 = t$q == cyc$8;
+        act$9 = t$q == cyc$9;
+        act$10 = t$q == cyc$10;
+        act$11 = t$q == cyc$11;
+        act$12 = t$q == cyc$12;
+        act$13 = t$q == cyc$13;
+        act$14 = t$q == cyc$14;
+        act$15 = t$q == cyc$15;
+        act$16 = t$q == cyc$16;
+        act$17 = t$q == cyc$17;
+        act$18 = t$q == cyc$18;
+        act$19 = t$q == cyc$19;
+        act$20 = t$q == cyc$20;
+        act$21 = t$q == cyc$21;
+        act$22 = t$q == cyc$22;
+        act$23 = t$q == cyc$23;
+        act$24 = t$q == cyc$24;
+        act$25 = t$q == cyc$25;
+        act$26 = t$q == cyc$26;
+        act$27 = t$q == cyc$27;
+        act$28 = t$q == cyc$28;
+        act$29 = t$q == cyc$29;
+        act$30 = t$q == cyc$30;
+        act$31 = t$q == cyc$31;
+        act$32 = t$q == cyc$32;
+        act$33 = t$q == cyc$33;
+        act$34 = t$q == cyc$34;
+        act$35 = t$q == cyc$35;
+        act$36 = t$q == cyc$36;
+        act$37 = t$q == cyc$37;
+        act$38 = t$q == cyc$38;
+        act$39 = t$q == cyc$39;
+        act$40 = t$q == cyc$40;
+        act$41 = t$q == cyc$41;
+        act$42 = t$q == cyc$42;
+        act$43 = t$q == cyc$43;
+        act$44 = t$q == cyc$44;
+        act$45 = t$q == cyc$45;
+        act$46 = t$q == cyc$46;
+        act$47 = t$q == cyc$47;
+        act$48 = t$q == cyc$48;
+        act$49 = t$q == cyc$49;
+        act$50 = t$q == cyc$50;
+        act$51 = t$q == cyc$51;
+        act$52 = t$q == cyc$52;
+        act$53 = t$q == cyc$53;
+        act$54 = t$q == cyc$54;
+        act$55 = t$q == cyc$55;
+        act$56 = t$q == cyc$56;
+        act$57 = t$q == cyc$57;
+        act$58 = t$q == cyc$58;
+        act$59 = t$q == cyc$59;
+        act$60 = t$q == cyc$60;
+        act$61 = t$q == cyc$61;
+        act$62 = t$q == cyc$62;
+        act$63 = t$q == cyc$63;
+        xw$0 = ((vx$0$q) & 58'h3ffffffffffffff);
+        if (vx$0$q[xy_msb]) begin
+            xw$0 = ((vx$0$q) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$1 = ((vx$1$q) & 58'h3ffffffffffffff);
+        if (vx$1$q[xy_msb]) begin
+            xw$1 = ((vx$1$q) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$2 = ((vx$2$q) & 58'h3ffffffffffffff);
+        if (vx$2$q[xy_msb]) begin
+            xw$2 = ((vx$2$q) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        yw$0 = ((vy$0$q) & 57'h1ffffffffffffff);
+        if (vy$0$q[xy_msb]) begin
+            yw$0 = ((vy$0$q) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$1 = ((vy$1$q) & 57'h1ffffffffffffff);
+        if (vy$1$q[xy_msb]) begin
+            yw$1 = ((vy$1$q) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$2 = ((vy$2$q) & 57'h1ffffffffffffff);
+        if (vy$2$q[xy_msb]) begin
+            yw$2 = ((vy$2$q) & 57'h1ffffffffffffff) | y_ext;
+        end
+        zn$0 = ((vz$0$q) & 19'h7ffff);
+        if (vz$0$q[z_msb]) begin
+            zn$0 = ((vz$0$q) & 19'h7ffff) | z_ext;
+        end
+        zn$1 = ((vz$1$q) & 19'h7ffff);
+        if (vz$1$q[z_msb]) begin
+            zn$1 = ((vz$1$q) & 19'h7ffff) | z_ext;
+        end
+        zn$2 = ((vz$2$q) & 19'h7ffff);
+        if (vz$2$q[z_msb]) begin
+            zn$2 = ((vz$2$q) & 19'h7ffff) | z_ext;
+        end
+        cn$0 = ((vc$0$q) & 19'h7ffff);
+        cn$1 = ((vc$1$q) & 19'h7ffff);
+        cn$2 = ((vc$2$q) & 19'h7ffff);
+        cn$3 = ((vc$3$q) & 19'h7ffff);
+        cn$4 = ((vc$4$q) & 19'h7ffff);
+        cn$5 = ((vc$5$q) & 19'h7ffff);
+        cn$6 = ((vc$6$q) & 19'h7ffff);
+        cn$7 = ((vc$7$q) & 19'h7ffff);
+        cn$8 = ((vc$8$q) & 19'h7ffff);
+        xn$0 = xw$0[(32'h0)+:(19)];
+        yn$0 = yw$0[(32'h0)+:(19)];
+        cv$0 = ((yn$0 + half_m1) & int_mask) | half;
+        xn$1 = xw$1[(32'h0)+:(19)];
+        yn$1 = yw$1[(32'h0)+:(19)];
+        cv$1 = ((yn$1 + half_m1) & int_mask) | half;
+        xn$2 = xw$2[(32'h0)+:(19)];
+        yn$2 = yw$2[(32'h0)+:(19)];
+        cv$2 = ((yn$2 + half_m1) & int_mask) | half;
+        kdx$0 = xw$2 - xw$0;
+        kdy$0 = yw$2 - yw$0;
+        kdx$1 = xw$1 - xw$0;
+        kdy$1 = yw$1 - yw$0;
+        kdx$2 = xw$2 - xw$1;
+        kdy$2 = yw$2 - yw$1;
+        diff_fe = cv$2 - cv$0;
+        diff_fm = cv$1 - cv$0;
+        diff_me = cv$2 - cv$1;
+        span_fe = diff_fe[(frac)+:(13)];
+        if (diff_fe[nb_msb]) begin
+            span_fe = 32'h0;
+        end
+        span_fm = diff_fm[(frac)+:(13)];
+        if (diff_fm[nb_msb]) begin
+            span_fm = 32'h0;
+        end
+        span_me = diff_me[(frac)+:(13)];
+        if (diff_me[nb_msb]) begin
+            span_me = 32'h0;
+        end
+        up = crosses$q[top_bit] & ~crosses$q[bottom_bit];
+        maj_left = area$q[area_msb];
+        edx$0 = kdx$0;
+        edy$0 = kdy$0;
+        count$0 = span_fe;
+        edx$1 = kdx$1;
+        edy$1 = kdy$1;
+        count$1 = span_fm;
+        edx$2 = kdx$2;
+        edy$2 = kdy$2;
+        count$2 = span_me;
+        bx$0 = xn$0;
+        by$0 = yn$0;
+        cy$0 = cv$0;
+        bx$1 = xn$0;
+        by$1 = yn$0;
+        cy$1 = cv$0;
+        bx$2 = xn$1;
+        by$2 = yn$1;
+        cy$2 = cv$1;
+        if (up) begin
+            edx$1 = kdx$2;
+            edy$1 = kdy$2;
+            count$1 = span_me;
+            edx$2 = kdx$1;
+            edy$2 = kdy$1;
+            count$2 = span_fm;
+            bx$0 = xn$2;
+            by$0 = yn$2;
+            cy$0 = cv$2 - (frac_mask + 32'h1);
+            bx$1 = xn$2;
+            by$1 = yn$2;
+            cy$1 = cv$2 - (frac_mask + 32'h1);
+            cy$2 = cv$1 - (frac_mask + 32'h1);
+        end
+        tracked$0 = x$0$q - 32'h1;
+        if (maj_left) begin
+            tracked$0 = x$0$q;
+        end
+        tracked$1 = x$1$q;
+        tracked$2 = x$2$q;
+        if (maj_left) begin
+            tracked$1 = x$1$q - 32'h1;
+            tracked$2 = x$2$q - 32'h1;
+        end
+        ed16$0 = edy$0[(32'h0)+:(34)] << frac;
+        toff$0 = cy$0 - by$0;
+        xb$0 = bx$0 - half;
+        xf$0 = xb$0 & frac_mask;
+        xi$0 = xb$0 >> frac;
+        if (xb$0[nb_msb]) begin
+            xi$0 = (xb$0 >> frac) | shr_ext;
+        end
+        off_y$0 = cy$0 - yn$0;
+        off_x$0 = (tracked$0 << frac) + half - xn$0;
+        ed16$1 = edy$1[(32'h0)+:(34)] << frac;
+        toff$1 = cy$1 - by$1;
+        xb$1 = bx$1 - half;
+        xf$1 = xb$1 & frac_mask;
+        xi$1 = xb$1 >> frac;
+        if (xb$1[nb_msb]) begin
+            xi$1 = (xb$1 >> frac) | shr_ext;
+        end
+        off_y$1 = cy$1 - yn$0;
+        off_x$1 = (tracked$1 << frac) + half - xn$0;
+        ed16$2 = edy$2[(32'h0)+:(34)] << frac;
+        toff$2 = cy$2 - by$2;
+        xb$2 = bx$2 - half;
+        xf$2 = xb$2 & frac_mask;
+        xi$2 = xb$2 >> frac;
+        if (xb$2[nb_msb]) begin
+            xi$2 = (xb$2 >> frac) | shr_ext;
+        end
+        off_y$2 = cy$2 - yn$0;
+        off_x$2 = (tracked$2 << frac) + half - xn$0;
+        dmaj$0 = zn$2 - zn$0;
+        dbot$0 = zn$1 - zn$0;
+        attr0$0 = ((zn$0) & 40'hffffffffff);
+        dmaj$1 = cn$6 - cn$0;
+        dbot$1 = cn$3 - cn$0;
+        dmaj$2 = cn$7 - cn$1;
+        dbot$2 = cn$4 - cn$1;
+        dmaj$3 = cn$8 - cn$2;
+        dbot$3 = cn$5 - cn$2;
+        attr0$1 = ((vc$0$q) & 40'hffffffffff);
+        attr0$2 = ((vc$1$q) & 40'hffffffffff);
+        attr0$3 = ((vc$2$q) & 40'hffffffffff);
+        area_abs = area$q;
+        if (area$q[area_msb]) begin
+            area_abs = ((32'h0) & 34'h3ffffffff) - area$q;
+        end
+        exp_c = 32'h0;
+        if (area_abs[0]) begin
+            exp_c = 0;
+        end
+        if (area_abs[1]) begin
+            exp_c = 1;
+        end
+        if (area_abs[2]) begin
+            exp_c = 2;
+        end
+        if (area_abs[3]) begin
+            exp_c = 3;
+        end
+        if (area_abs[4]) begin
+            exp_c = 4;
+        end
+        if (area_abs[5]) begin
+            exp_c = 5;
+        end
+        if (area_abs[6]) begin
+            exp_c = 6;
+        end
+        if (area_abs[7]) begin
+            exp_c = 7;
+        end
+        if (area_abs[8]) begin
+            exp_c = 8;
+        end
+        if (area_abs[9]) begin
+            exp_c = 9;
+        end
+        if (area_abs[10]) begin
+            exp_c = 10;
+        end
+        if (area_abs[11]) begin
+            exp_c = 11;
+        end
+        if (area_abs[12]) begin
+            exp_c = 12;
+        end
+        if (area_abs[13]) begin
+            exp_c = 13;
+        end
+        if (area_abs[14]) begin
+            exp_c = 14;
+        end
+        if (area_abs[15]) begin
+            exp_c = 15;
+        end
+        if (area_abs[16]) begin
+            exp_c = 16;
+        end
+        if (area_abs[17]) begin
+            exp_c = 17;
+        end
+        if (area_abs[18]) begin
+            exp_c = 18;
+        end
+        if (area_abs[19]) begin
+            exp_c = 19;
+        end
+        if (area_abs[20]) begin
+            exp_c = 20;
+        end
+        if (area_abs[21]) begin
+            exp_c = 21;
+        end
+        if (area_abs[22]) begin
+            exp_c = 22;
+        end
+        if (area_abs[23]) begin
+            exp_c = 23;
+        end
+        if (area_abs[24]) begin
+            exp_c = 24;
+        end
+        if (area_abs[25]) begin
+            exp_c = 25;
+        end
+        if (area_abs[26]) begin
+            exp_c = 26;
+        end
+        if (area_abs[27]) begin
+            exp_c = 27;
+        end
+        if (area_abs[28]) begin
+            exp_c = 28;
+        end
+        if (area_abs[29]) begin
+            exp_c = 29;
+        end
+        if (area_abs[30]) begin
+            exp_c = 30;
+        end
+        if (area_abs[31]) begin
+            exp_c = 31;
+        end
+        if (area_abs[32]) begin
+            exp_c = 32;
+        end
+        if (area_abs[33]) begin
+            exp_c = 33;
+        end
+        norm_d = area_abs << (recip_top - exp_c);
+        if (t$q == iss$0) begin
+            exp$d = exp_c;
+        end
+        div$out_ready = 1'b1;
+        div$inp_valid = 1'b0;
+        div$inp_n = 32'h0;
+        div$inp_d = 32'h1;
+        if (t$q == iss$0) begin
+            div$inp_valid = 1'b1;
+            div$inp_n = recip_n;
+            div$inp_d = norm_d;
+        end
+        if (t$q == iss$1) begin
+            div$inp_valid = 1'b1;
+            if (count$0 != 32'h0) begin
+                div$inp_n = num$0$q;
+                div$inp_d = ed16$0;
+            end
+        end
+        if (t$q == iss$2) begin
+            div$inp_valid = 1'b1;
+            if (count$0 > 32'h1) begin
+                div$inp_n = edx$0;
+                div$inp_d = edy$0[(32'h0)+:(34)];
+            end
+        end
+        if (t$q == iss$3) begin
+            div$inp_valid = 1'b1;
+            if (count$1 != 32'h0) begin
+                div$inp_n = num$1$q;
+                div$inp_d = ed16$1;
+            end
+        end
+        if (t$q == iss$4) begin
+            div$inp_valid = 1'b1;
+            if (count$1 > 32'h1) begin
+                div$inp_n = edx$1;
+                div$inp_d = edy$1[(32'h0)+:(34)];
+            end
+        end
+        if (t$q == iss$5) begin
+            div$inp_valid = 1'b1;
+            if (count$2 != 32'h0) begin
+                div$inp_n = num$2$q;
+                div$inp_d = ed16$2;
+            end
+        end
+        if (t$q == iss$6) begin
+            div$inp_valid = 1'b1;
+            if (count$2 > 32'h1) begin
+                div$inp_n = edx$2;
+                div$inp_d = edy$2[(32'h0)+:(34)];
+            end
+        end
+        q_n = div$out_q[(32'h0)+:(19)];
+        r_pos = div$out_r != 32'h0;
+        mant_now = mant$q;
+        if (t$q == res$0) begin
+            mant_now = div$out_q[(32'h0)+:(25)];
+            mant$d = div$out_q[(32'h0)+:(25)];
+        end
+        lsh = eq_shift - exp$q;
+        rsh = exp$q - eq_shift;
+        mant_a = ((mant_now) & 57'h1ffffffffffffff);
+        if (exp$q <= eq_shift) begin
+            mant_a = ((mant_now) & 57'h1ffffffffffffff) << lsh;
+        end
+        if (t$q == res$1) begin
+            x$0$d = xi$0 + q_n + r_pos;
+            r$0$d = 32'h0;
+            if (r_pos) begin
+                r$0$d = ed16$0[(32'h0)+:(21)] - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (t$q == res$2) begin
+            q$0$d = q_n;
+            rho$0$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (t$q == res$3) begin
+            x$1$d = xi$1 + q_n + r_pos;
+            r$1$d = 32'h0;
+            if (r_pos) begin
+                r$1$d = ed16$1[(32'h0)+:(21)] - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (t$q == res$4) begin
+            q$1$d = q_n;
+            rho$1$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (t$q == res$5) begin
+            x$2$d = xi$2 + q_n + r_pos;
+            r$2$d = 32'h0;
+            if (r_pos) begin
+                r$2$d = ed16$2[(32'h0)+:(21)] - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (t$q == res$6) begin
+            q$2$d = q_n;
+            rho$2$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        mul$0$a = 32'h0;
+        mul$0$b = 32'h0;
+        mul$1$a = 32'h0;
+        mul$1$b = 32'h0;
+        mul$2$a = 32'h0;
+        mul$2$b = 32'h0;
+        mul$3$a = 32'h0;
+        mul$3$b = 32'h0;
+        mul$4$a = 32'h0;
+        mul$4$b = 32'h0;
+        mul$5$a = 32'h0;
+        mul$5$b = 32'h0;
+        mul$6$a = 32'h0;
+        mul$6$b = 32'h0;
+        pa$0 = 32'h0;
+        pa$1 = 32'h0;
+        pn$0 = 32'h0;
+        pn$1 = 32'h0;
+        pn$2 = 32'h0;
+        pn$3 = 32'h0;
+        pn$4 = 32'h0;
+        pn$5 = 32'h0;
+        pe$0 = 32'h0;
+        pe$1 = 32'h0;
+        pe$2 = 32'h0;
+        pe$3 = 32'h0;
+        pg$0 = 32'h0;
+        pg$1 = 32'h0;
+        pg$2 = 32'h0;
+        pg$3 = 32'h0;
+        pg$4 = 32'h0;
+        pg$5 = 32'h0;
+        pg$6 = 32'h0;
+        pg$7 = 32'h0;
+        pg$8 = 32'h0;
+        pg$9 = 32'h0;
+        pg$10 = 32'h0;
+        pg$11 = 32'h0;
+        pg$12 = 32'h0;
+        pg$13 = 32'h0;
+        pg$14 = 32'h0;
+        pg$15 = 32'h0;
+        ps$0 = 32'h0;
+        ps$1 = 32'h0;
+        ps$2 = 32'h0;
+        ps$3 = 32'h0;
+        ps$4 = 32'h0;
+        ps$5 = 32'h0;
+        ps$6 = 32'h0;
+        ps$7 = 32'h0;
+        ps$8 = 32'h0;
+        ps$9 = 32'h0;
+        ps$10 = 32'h0;
+        ps$11 = 32'h0;
+        ps$12 = 32'h0;
+        ps$13 = 32'h0;
+        ps$14 = 32'h0;
+        ps$15 = 32'h0;
+        ps$16 = 32'h0;
+        ps$17 = 32'h0;
+        ps$18 = 32'h0;
+        ps$19 = 32'h0;
+        ps$20 = 32'h0;
+        ps$21 = 32'h0;
+        ps$22 = 32'h0;
+        ps$23 = 32'h0;
+        ps$24 = 32'h0;
+        ps$25 = 32'h0;
+        ps$26 = 32'h0;
+        ps$27 = 32'h0;
+        ps$28 = 32'h0;
+        ps$29 = 32'h0;
+        ps$30 = 32'h0;
+        ps$31 = 32'h0;
+        ps$32 = 32'h0;
+        ps$33 = 32'h0;
+        ps$34 = 32'h0;
+        ps$35 = 32'h0;
+        delta$0 = kdx$0[(32'h0)+:(19)];
+        delta$1 = kdx$1[(32'h0)+:(19)];
+        delta$2 = kdy$0[(32'h0)+:(19)];
+        delta$3 = kdy$1[(32'h0)+:(19)];
+        eq_b$0 = delta$0;
+        if (maj_left) begin
+            eq_b$0 = ((32'h0) & 19'h7ffff) - delta$0;
+        end
+        eq_b$1 = delta$1;
+        if (maj_left) begin
+            eq_b$1 = ((32'h0) & 19'h7ffff) - delta$1;
+        end
+        eq_b$2 = delta$2;
+        if (maj_left) begin
+            eq_b$2 = ((32'h0) & 19'h7ffff) - delta$2;
+        end
+        eq_b$3 = delta$3;
+        if (maj_left) begin
+            eq_b$3 = ((32'h0) & 19'h7ffff) - delta$3;
+        end
+        ddx$0 = gx$0$q >> gsh$0;
+        ddy$0 = gy$0$q >> gsh$0;
+        ddx$1 = gx$1$q >> gsh$1;
+        ddy$1 = gy$1$q >> gsh$1;
+        ddx$2 = gx$2$q >> gsh$2;
+        ddy$2 = gy$2$q >> gsh$2;
+        ddx$3 = gx$3$q >> gsh$3;
+        ddy$3 = gy$3$q >> gsh$3;
+        if ((lane$0 == 0) & act$0) begin
+            mul$0$a = kdx$0[(32'h0)+:(57)];
+            mul$0$b = kdy$1[(32'h0)+:(19)];
+            pa$0 = mul$0$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 0) & act$1) begin
+            mul$0$a = kdx$1[(32'h0)+:(57)];
+            mul$0$b = kdy$0[(32'h0)+:(19)];
+            pa$1 = mul$0$p[(32'h0)+:(34)];
+        end
+        if ((lane$2 == 0) & act$2) begin
+            mul$0$a = edy$0;
+            mul$0$b = xf$0;
+            pn$0 = mul$0$p;
+        end
+        if ((lane$3 == 0) & act$3) begin
+            mul$0$a = edx$0[(32'h0)+:(57)];
+            mul$0$b = toff$0;
+            pn$1 = mul$0$p;
+        end
+        if ((lane$4 == 0) & act$4) begin
+            mul$0$a = edy$1;
+            mul$0$b = xf$1;
+            pn$2 = mul$0$p;
+        end
+        if ((lane$5 == 0) & act$5) begin
+            mul$0$a = edx$1[(32'h0)+:(57)];
+            mul$0$b = toff$1;
+            pn$3 = mul$0$p;
+        end
+        if ((lane$6 == 0) & act$6) begin
+            mul$0$a = edy$2;
+            mul$0$b = xf$2;
+            pn$4 = mul$0$p;
+        end
+        if ((lane$7 == 0) & act$7) begin
+            mul$0$a = edx$2[(32'h0)+:(57)];
+            mul$0$b = toff$2;
+            pn$5 = mul$0$p;
+        end
+        if ((lane$8 == 0) & act$8) begin
+            mul$0$a = mant_a;
+            mul$0$b = eq_b$0;
+            pe$0 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$9 == 0) & act$9) begin
+            mul$0$a = mant_a;
+            mul$0$b = eq_b$1;
+            pe$1 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$10 == 0) & act$10) begin
+            mul$0$a = mant_a;
+            mul$0$b = eq_b$2;
+            pe$2 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$11 == 0) & act$11) begin
+            mul$0$a = mant_a;
+            mul$0$b = eq_b$3;
+            pe$3 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$12 == 0) & act$12) begin
+            mul$0$a = p$3$q;
+            mul$0$b = dmaj$0;
+            pg$0 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 0) & act$13) begin
+            mul$0$a = p$2$q;
+            mul$0$b = dbot$0;
+            pg$1 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 0) & act$14) begin
+            mul$0$a = p$0$q;
+            mul$0$b = dbot$0;
+            pg$2 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 0) & act$15) begin
+            mul$0$a = p$1$q;
+            mul$0$b = dmaj$0;
+            pg$3 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 0) & act$16) begin
+            mul$0$a = p$3$q;
+            mul$0$b = dmaj$1;
+            pg$4 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 0) & act$17) begin
+            mul$0$a = p$2$q;
+            mul$0$b = dbot$1;
+            pg$5 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 0) & act$18) begin
+            mul$0$a = p$0$q;
+            mul$0$b = dbot$1;
+            pg$6 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 0) & act$19) begin
+            mul$0$a = p$1$q;
+            mul$0$b = dmaj$1;
+            pg$7 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 0) & act$20) begin
+            mul$0$a = p$3$q;
+            mul$0$b = dmaj$2;
+            pg$8 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 0) & act$21) begin
+            mul$0$a = p$2$q;
+            mul$0$b = dbot$2;
+            pg$9 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 0) & act$22) begin
+            mul$0$a = p$0$q;
+            mul$0$b = dbot$2;
+            pg$10 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 0) & act$23) begin
+            mul$0$a = p$1$q;
+            mul$0$b = dmaj$2;
+            pg$11 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 0) & act$24) begin
+            mul$0$a = p$3$q;
+            mul$0$b = dmaj$3;
+            pg$12 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 0) & act$25) begin
+            mul$0$a = p$2$q;
+            mul$0$b = dbot$3;
+            pg$13 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 0) & act$26) begin
+            mul$0$a = p$0$q;
+            mul$0$b = dbot$3;
+            pg$14 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 0) & act$27) begin
+            mul$0$a = p$1$q;
+            mul$0$b = dmaj$3;
+            pg$15 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$28 == 0) & act$28) begin
+            mul$0$a = ddx$0;
+            mul$0$b = off_x$0;
+            ps$0 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 0) & act$29) begin
+            mul$0$a = ddy$0;
+            mul$0$b = off_y$0;
+            ps$1 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 0) & act$30) begin
+            mul$0$a = ddx$0;
+            mul$0$b = q$0$q;
+            ps$2 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 0) & act$31) begin
+            mul$0$a = ddx$1;
+            mul$0$b = off_x$0;
+            ps$3 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 0) & act$32) begin
+            mul$0$a = ddy$1;
+            mul$0$b = off_y$0;
+            ps$4 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 0) & act$33) begin
+            mul$0$a = ddx$1;
+            mul$0$b = q$0$q;
+            ps$5 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 0) & act$34) begin
+            mul$0$a = ddx$2;
+            mul$0$b = off_x$0;
+            ps$6 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 0) & act$35) begin
+            mul$0$a = ddy$2;
+            mul$0$b = off_y$0;
+            ps$7 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 0) & act$36) begin
+            mul$0$a = ddx$2;
+            mul$0$b = q$0$q;
+            ps$8 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 0) & act$37) begin
+            mul$0$a = ddx$3;
+            mul$0$b = off_x$0;
+            ps$9 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 0) & act$38) begin
+            mul$0$a = ddy$3;
+            mul$0$b = off_y$0;
+            ps$10 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 0) & act$39) begin
+            mul$0$a = ddx$3;
+            mul$0$b = q$0$q;
+            ps$11 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 0) & act$40) begin
+            mul$0$a = ddx$0;
+            mul$0$b = off_x$1;
+            ps$12 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 0) & act$41) begin
+            mul$0$a = ddy$0;
+            mul$0$b = off_y$1;
+            ps$13 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 0) & act$42) begin
+            mul$0$a = ddx$0;
+            mul$0$b = q$1$q;
+            ps$14 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 0) & act$43) begin
+            mul$0$a = ddx$1;
+            mul$0$b = off_x$1;
+            ps$15 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 0) & act$44) begin
+            mul$0$a = ddy$1;
+            mul$0$b = off_y$1;
+            ps$16 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 0) & act$45) begin
+            mul$0$a = ddx$1;
+            mul$0$b = q$1$q;
+            ps$17 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 0) & act$46) begin
+            mul$0$a = ddx$2;
+            mul$0$b = off_x$1;
+            ps$18 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 0) & act$47) begin
+            mul$0$a = ddy$2;
+            mul$0$b = off_y$1;
+            ps$19 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 0) & act$48) begin
+            mul$0$a = ddx$2;
+            mul$0$b = q$1$q;
+            ps$20 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 0) & act$49) begin
+            mul$0$a = ddx$3;
+            mul$0$b = off_x$1;
+            ps$21 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 0) & act$50) begin
+            mul$0$a = ddy$3;
+            mul$0$b = off_y$1;
+            ps$22 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 0) & act$51) begin
+            mul$0$a = ddx$3;
+            mul$0$b = q$1$q;
+            ps$23 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 0) & act$52) begin
+            mul$0$a = ddx$0;
+            mul$0$b = off_x$2;
+            ps$24 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 0) & act$53) begin
+            mul$0$a = ddy$0;
+            mul$0$b = off_y$2;
+            ps$25 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 0) & act$54) begin
+            mul$0$a = ddx$0;
+            mul$0$b = q$2$q;
+            ps$26 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 0) & act$55) begin
+            mul$0$a = ddx$1;
+            mul$0$b = off_x$2;
+            ps$27 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 0) & act$56) begin
+            mul$0$a = ddy$1;
+            mul$0$b = off_y$2;
+            ps$28 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 0) & act$57) begin
+            mul$0$a = ddx$1;
+            mul$0$b = q$2$q;
+            ps$29 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 0) & act$58) begin
+            mul$0$a = ddx$2;
+            mul$0$b = off_x$2;
+            ps$30 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 0) & act$59) begin
+            mul$0$a = ddy$2;
+            mul$0$b = off_y$2;
+            ps$31 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 0) & act$60) begin
+            mul$0$a = ddx$2;
+            mul$0$b = q$2$q;
+            ps$32 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 0) & act$61) begin
+            mul$0$a = ddx$3;
+            mul$0$b = off_x$2;
+            ps$33 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 0) & act$62) begin
+            mul$0$a = ddy$3;
+            mul$0$b = off_y$2;
+            ps$34 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$63 == 0) & act$63) begin
+            mul$0$a = ddx$3;
+            mul$0$b = q$2$q;
+            ps$35 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$0 == 1) & act$0) begin
+            mul$1$a = kdx$0[(32'h0)+:(57)];
+            mul$1$b = kdy$1[(32'h0)+:(19)];
+            pa$0 = mul$1$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 1) & act$1) begin
+            mul$1$a = kdx$1[(32'h0)+:(57)];
+            mul$1$b = kdy$0[(32'h0)+:(19)];
+            pa$1 = mul$1$p[(32'h0)+:(34)];
+        end
+        if ((lane$2 == 1) & act$2) begin
+            mul$1$a = edy$0;
+            mul$1$b = xf$0;
+            pn$0 = mul$1$p;
+        end
+        if ((lane$3 == 1) & act$3) begin
+            mul$1$a = edx$0[(32'h0)+:(57)];
+            mul$1$b = toff$0;
+            pn$1 = mul$1$p;
+        end
+        if ((lane$4 == 1) & act$4) begin
+            mul$1$a = edy$1;
+            mul$1$b = xf$1;
+            pn$2 = mul$1$p;
+        end
+        if ((lane$5 == 1) & act$5) begin
+            mul$1$a = edx$1[(32'h0)+:(57)];
+            mul$1$b = toff$1;
+            pn$3 = mul$1$p;
+        end
+        if ((lane$6 == 1) & act$6) begin
+            mul$1$a = edy$2;
+            mul$1$b = xf$2;
+            pn$4 = mul$1$p;
+        end
+        if ((lane$7 == 1) & act$7) begin
+            mul$1$a = edx$2[(32'h0)+:(57)];
+            mul$1$b = toff$2;
+            pn$5 = mul$1$p;
+        end
+        if ((lane$8 == 1) & act$8) begin
+            mul$1$a = mant_a;
+            mul$1$b = eq_b$0;
+            pe$0 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$9 == 1) & act$9) begin
+            mul$1$a = mant_a;
+            mul$1$b = eq_b$1;
+            pe$1 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$10 == 1) & act$10) begin
+            mul$1$a = mant_a;
+            mul$1$b = eq_b$2;
+            pe$2 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$11 == 1) & act$11) begin
+            mul$1$a = mant_a;
+            mul$1$b = eq_b$3;
+            pe$3 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$12 == 1) & act$12) begin
+            mul$1$a = p$3$q;
+            mul$1$b = dmaj$0;
+            pg$0 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 1) & act$13) begin
+            mul$1$a = p$2$q;
+            mul$1$b = dbot$0;
+            pg$1 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 1) & act$14) begin
+            mul$1$a = p$0$q;
+            mul$1$b = dbot$0;
+            pg$2 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 1) & act$15) begin
+            mul$1$a = p$1$q;
+            mul$1$b = dmaj$0;
+            pg$3 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 1) & act$16) begin
+            mul$1$a = p$3$q;
+            mul$1$b = dmaj$1;
+            pg$4 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 1) & act$17) begin
+            mul$1$a = p$2$q;
+            mul$1$b = dbot$1;
+            pg$5 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 1) & act$18) begin
+            mul$1$a = p$0$q;
+            mul$1$b = dbot$1;
+            pg$6 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 1) & act$19) begin
+            mul$1$a = p$1$q;
+            mul$1$b = dmaj$1;
+            pg$7 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 1) & act$20) begin
+            mul$1$a = p$3$q;
+            mul$1$b = dmaj$2;
+            pg$8 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 1) & act$21) begin
+            mul$1$a = p$2$q;
+            mul$1$b = dbot$2;
+            pg$9 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 1) & act$22) begin
+            mul$1$a = p$0$q;
+            mul$1$b = dbot$2;
+            pg$10 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 1) & act$23) begin
+            mul$1$a = p$1$q;
+            mul$1$b = dmaj$2;
+            pg$11 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 1) & act$24) begin
+            mul$1$a = p$3$q;
+            mul$1$b = dmaj$3;
+            pg$12 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 1) & act$25) begin
+            mul$1$a = p$2$q;
+            mul$1$b = dbot$3;
+            pg$13 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 1) & act$26) begin
+            mul$1$a = p$0$q;
+            mul$1$b = dbot$3;
+            pg$14 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 1) & act$27) begin
+            mul$1$a = p$1$q;
+            mul$1$b = dmaj$3;
+            pg$15 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$28 == 1) & act$28) begin
+            mul$1$a = ddx$0;
+            mul$1$b = off_x$0;
+            ps$0 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 1) & act$29) begin
+            mul$1$a = ddy$0;
+            mul$1$b = off_y$0;
+            ps$1 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 1) & act$30) begin
+            mul$1$a = ddx$0;
+            mul$1$b = q$0$q;
+            ps$2 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 1) & act$31) begin
+            mul$1$a = ddx$1;
+            mul$1$b = off_x$0;
+            ps$3 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 1) & act$32) begin
+            mul$1$a = ddy$1;
+            mul$1$b = off_y$0;
+            ps$4 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 1) & act$33) begin
+            mul$1$a = ddx$1;
+            mul$1$b = q$0$q;
+            ps$5 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 1) & act$34) begin
+            mul$1$a = ddx$2;
+            mul$1$b = off_x$0;
+            ps$6 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 1) & act$35) begin
+            mul$1$a = ddy$2;
+            mul$1$b = off_y$0;
+            ps$7 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 1) & act$36) begin
+            mul$1$a = ddx$2;
+            mul$1$b = q$0$q;
+            ps$8 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 1) & act$37) begin
+            mul$1$a = ddx$3;
+            mul$1$b = off_x$0;
+            ps$9 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 1) & act$38) begin
+            mul$1$a = ddy$3;
+            mul$1$b = off_y$0;
+            ps$10 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 1) & act$39) begin
+            mul$1$a = ddx$3;
+            mul$1$b = q$0$q;
+            ps$11 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 1) & act$40) begin
+            mul$1$a = ddx$0;
+            mul$1$b = off_x$1;
+            ps$12 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 1) & act$41) begin
+            mul$1$a = ddy$0;
+            mul$1$b = off_y$1;
+            ps$13 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 1) & act$42) begin
+            mul$1$a = ddx$0;
+            mul$1$b = q$1$q;
+            ps$14 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 1) & act$43) begin
+            mul$1$a = ddx$1;
+            mul$1$b = off_x$1;
+            ps$15 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 1) & act$44) begin
+            mul$1$a = ddy$1;
+            mul$1$b = off_y$1;
+            ps$16 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 1) & act$45) begin
+            mul$1$a = ddx$1;
+            mul$1$b = q$1$q;
+            ps$17 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 1) & act$46) begin
+            mul$1$a = ddx$2;
+            mul$1$b = off_x$1;
+            ps$18 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 1) & act$47) begin
+            mul$1$a = ddy$2;
+            mul$1$b = off_y$1;
+            ps$19 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 1) & act$48) begin
+            mul$1$a = ddx$2;
+            mul$1$b = q$1$q;
+            ps$20 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 1) & act$49) begin
+            mul$1$a = ddx$3;
+            mul$1$b = off_x$1;
+            ps$21 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 1) & act$50) begin
+            mul$1$a = ddy$3;
+            mul$1$b = off_y$1;
+            ps$22 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 1) & act$51) begin
+            mul$1$a = ddx$3;
+            mul$1$b = q$1$q;
+            ps$23 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 1) & act$52) begin
+            mul$1$a = ddx$0;
+            mul$1$b = off_x$2;
+            ps$24 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 1) & act$53) begin
+            mul$1$a = ddy$0;
+            mul$1$b = off_y$2;
+            ps$25 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 1) & act$54) begin
+            mul$1$a = ddx$0;
+            mul$1$b = q$2$q;
+            ps$26 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 1) & act$55) begin
+            mul$1$a = ddx$1;
+            mul$1$b = off_x$2;
+            ps$27 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 1) & act$56) begin
+            mul$1$a = ddy$1;
+            mul$1$b = off_y$2;
+            ps$28 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 1) & act$57) begin
+            mul$1$a = ddx$1;
+            mul$1$b = q$2$q;
+            ps$29 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 1) & act$58) begin
+            mul$1$a = ddx$2;
+            mul$1$b = off_x$2;
+            ps$30 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 1) & act$59) begin
+            mul$1$a = ddy$2;
+            mul$1$b = off_y$2;
+            ps$31 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 1) & act$60) begin
+            mul$1$a = ddx$2;
+            mul$1$b = q$2$q;
+            ps$32 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 1) & act$61) begin
+            mul$1$a = ddx$3;
+            mul$1$b = off_x$2;
+            ps$33 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 1) & act$62) begin
+            mul$1$a = ddy$3;
+            mul$1$b = off_y$2;
+            ps$34 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$63 == 1) & act$63) begin
+            mul$1$a = ddx$3;
+            mul$1$b = q$2$q;
+            ps$35 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$0 == 2) & act$0) begin
+            mul$2$a = kdx$0[(32'h0)+:(57)];
+            mul$2$b = kdy$1[(32'h0)+:(19)];
+            pa$0 = mul$2$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 2) & act$1) begin
+            mul$2$a = kdx$1[(32'h0)+:(57)];
+            mul$2$b = kdy$0[(32'h0)+:(19)];
+            pa$1 = mul$2$p[(32'h0)+:(34)];
+        end
+        if ((lane$2 == 2) & act$2) begin
+            mul$2$a = edy$0;
+            mul$2$b = xf$0;
+            pn$0 = mul$2$p;
+        end
+        if ((lane$3 == 2) & act$3) begin
+            mul$2$a = edx$0[(32'h0)+:(57)];
+            mul$2$b = toff$0;
+            pn$1 = mul$2$p;
+        end
+        if ((lane$4 == 2) & act$4) begin
+            mul$2$a = edy$1;
+            mul$2$b = xf$1;
+            pn$2 = mul$2$p;
+        end
+        if ((lane$5 == 2) & act$5) begin
+            mul$2$a = edx$1[(32'h0)+:(57)];
+            mul$2$b = toff$1;
+            pn$3 = mul$2$p;
+        end
+        if ((lane$6 == 2) & act$6) begin
+            mul$2$a = edy$2;
+            mul$2$b = xf$2;
+            pn$4 = mul$2$p;
+        end
+        if ((lane$7 == 2) & act$7) begin
+            mul$2$a = edx$2[(32'h0)+:(57)];
+            mul$2$b = toff$2;
+            pn$5 = mul$2$p;
+        end
+        if ((lane$8 == 2) & act$8) begin
+            mul$2$a = mant_a;
+            mul$2$b = eq_b$0;
+            pe$0 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$9 == 2) & act$9) begin
+            mul$2$a = mant_a;
+            mul$2$b = eq_b$1;
+            pe$1 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$10 == 2) & act$10) begin
+            mul$2$a = mant_a;
+            mul$2$b = eq_b$2;
+            pe$2 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$11 == 2) & act$11) begin
+            mul$2$a = mant_a;
+            mul$2$b = eq_b$3;
+            pe$3 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$12 == 2) & act$12) begin
+            mul$2$a = p$3$q;
+            mul$2$b = dmaj$0;
+            pg$0 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 2) & act$13) begin
+            mul$2$a = p$2$q;
+            mul$2$b = dbot$0;
+            pg$1 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 2) & act$14) begin
+            mul$2$a = p$0$q;
+            mul$2$b = dbot$0;
+            pg$2 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 2) & act$15) begin
+            mul$2$a = p$1$q;
+            mul$2$b = dmaj$0;
+            pg$3 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 2) & act$16) begin
+            mul$2$a = p$3$q;
+            mul$2$b = dmaj$1;
+            pg$4 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 2) & act$17) begin
+            mul$2$a = p$2$q;
+            mul$2$b = dbot$1;
+            pg$5 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 2) & act$18) begin
+            mul$2$a = p$0$q;
+            mul$2$b = dbot$1;
+            pg$6 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 2) & act$19) begin
+            mul$2$a = p$1$q;
+            mul$2$b = dmaj$1;
+            pg$7 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 2) & act$20) begin
+            mul$2$a = p$3$q;
+            mul$2$b = dmaj$2;
+            pg$8 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 2) & act$21) begin
+            mul$2$a = p$2$q;
+            mul$2$b = dbot$2;
+            pg$9 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 2) & act$22) begin
+            mul$2$a = p$0$q;
+            mul$2$b = dbot$2;
+            pg$10 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 2) & act$23) begin
+            mul$2$a = p$1$q;
+            mul$2$b = dmaj$2;
+            pg$11 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 2) & act$24) begin
+            mul$2$a = p$3$q;
+            mul$2$b = dmaj$3;
+            pg$12 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 2) & act$25) begin
+            mul$2$a = p$2$q;
+            mul$2$b = dbot$3;
+            pg$13 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 2) & act$26) begin
+            mul$2$a = p$0$q;
+            mul$2$b = dbot$3;
+            pg$14 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 2) & act$27) begin
+            mul$2$a = p$1$q;
+            mul$2$b = dmaj$3;
+            pg$15 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$28 == 2) & act$28) begin
+            mul$2$a = ddx$0;
+            mul$2$b = off_x$0;
+            ps$0 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 2) & act$29) begin
+            mul$2$a = ddy$0;
+            mul$2$b = off_y$0;
+            ps$1 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 2) & act$30) begin
+            mul$2$a = ddx$0;
+            mul$2$b = q$0$q;
+            ps$2 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 2) & act$31) begin
+            mul$2$a = ddx$1;
+            mul$2$b = off_x$0;
+            ps$3 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 2) & act$32) begin
+            mul$2$a = ddy$1;
+            mul$2$b = off_y$0;
+            ps$4 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 2) & act$33) begin
+            mul$2$a = ddx$1;
+            mul$2$b = q$0$q;
+            ps$5 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 2) & act$34) begin
+            mul$2$a = ddx$2;
+            mul$2$b = off_x$0;
+            ps$6 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 2) & act$35) begin
+            mul$2$a = ddy$2;
+            mul$2$b = off_y$0;
+            ps$7 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 2) & act$36) begin
+            mul$2$a = ddx$2;
+            mul$2$b = q$0$q;
+            ps$8 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 2) & act$37) begin
+            mul$2$a = ddx$3;
+            mul$2$b = off_x$0;
+            ps$9 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 2) & act$38) begin
+            mul$2$a = ddy$3;
+            mul$2$b = off_y$0;
+            ps$10 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 2) & act$39) begin
+            mul$2$a = ddx$3;
+            mul$2$b = q$0$q;
+            ps$11 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 2) & act$40) begin
+            mul$2$a = ddx$0;
+            mul$2$b = off_x$1;
+            ps$12 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 2) & act$41) begin
+            mul$2$a = ddy$0;
+            mul$2$b = off_y$1;
+            ps$13 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 2) & act$42) begin
+            mul$2$a = ddx$0;
+            mul$2$b = q$1$q;
+            ps$14 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 2) & act$43) begin
+            mul$2$a = ddx$1;
+            mul$2$b = off_x$1;
+            ps$15 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 2) & act$44) begin
+            mul$2$a = ddy$1;
+            mul$2$b = off_y$1;
+            ps$16 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 2) & act$45) begin
+            mul$2$a = ddx$1;
+            mul$2$b = q$1$q;
+            ps$17 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 2) & act$46) begin
+            mul$2$a = ddx$2;
+            mul$2$b = off_x$1;
+            ps$18 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 2) & act$47) begin
+            mul$2$a = ddy$2;
+            mul$2$b = off_y$1;
+            ps$19 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 2) & act$48) begin
+            mul$2$a = ddx$2;
+            mul$2$b = q$1$q;
+            ps$20 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 2) & act$49) begin
+            mul$2$a = ddx$3;
+            mul$2$b = off_x$1;
+            ps$21 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 2) & act$50) begin
+            mul$2$a = ddy$3;
+            mul$2$b = off_y$1;
+            ps$22 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 2) & act$51) begin
+            mul$2$a = ddx$3;
+            mul$2$b = q$1$q;
+            ps$23 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 2) & act$52) begin
+            mul$2$a = ddx$0;
+            mul$2$b = off_x$2;
+            ps$24 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 2) & act$53) begin
+            mul$2$a = ddy$0;
+            mul$2$b = off_y$2;
+            ps$25 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 2) & act$54) begin
+            mul$2$a = ddx$0;
+            mul$2$b = q$2$q;
+            ps$26 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 2) & act$55) begin
+            mul$2$a = ddx$1;
+            mul$2$b = off_x$2;
+            ps$27 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 2) & act$56) begin
+            mul$2$a = ddy$1;
+            mul$2$b = off_y$2;
+            ps$28 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 2) & act$57) begin
+            mul$2$a = ddx$1;
+            mul$2$b = q$2$q;
+            ps$29 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 2) & act$58) begin
+            mul$2$a = ddx$2;
+            mul$2$b = off_x$2;
+            ps$30 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 2) & act$59) begin
+            mul$2$a = ddy$2;
+            mul$2$b = off_y$2;
+            ps$31 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 2) & act$60) begin
+            mul$2$a = ddx$2;
+            mul$2$b = q$2$q;
+            ps$32 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 2) & act$61) begin
+            mul$2$a = ddx$3;
+            mul$2$b = off_x$2;
+            ps$33 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 2) & act$62) begin
+            mul$2$a = ddy$3;
+            mul$2$b = off_y$2;
+            ps$34 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$63 == 2) & act$63) begin
+            mul$2$a = ddx$3;
+            mul$2$b = q$2$q;
+            ps$35 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$0 == 3) & act$0) begin
+            mul$3$a = kdx$0[(32'h0)+:(57)];
+            mul$3$b = kdy$1[(32'h0)+:(19)];
+            pa$0 = mul$3$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 3) & act$1) begin
+            mul$3$a = kdx$1[(32'h0)+:(57)];
+            mul$3$b = kdy$0[(32'h0)+:(19)];
+            pa$1 = mul$3$p[(32'h0)+:(34)];
+        end
+        if ((lane$2 == 3) & act$2) begin
+            mul$3$a = edy$0;
+            mul$3$b = xf$0;
+            pn$0 = mul$3$p;
+        end
+        if ((lane$3 == 3) & act$3) begin
+            mul$3$a = edx$0[(32'h0)+:(57)];
+            mul$3$b = toff$0;
+            pn$1 = mul$3$p;
+        end
+        if ((lane$4 == 3) & act$4) begin
+            mul$3$a = edy$1;
+            mul$3$b = xf$1;
+            pn$2 = mul$3$p;
+        end
+        if ((lane$5 == 3) & act$5) begin
+            mul$3$a = edx$1[(32'h0)+:(57)];
+            mul$3$b = toff$1;
+            pn$3 = mul$3$p;
+        end
+        if ((lane$6 == 3) & act$6) begin
+            mul$3$a = edy$2;
+            mul$3$b = xf$2;
+            pn$4 = mul$3$p;
+        end
+        if ((lane$7 == 3) & act$7) begin
+            mul$3$a = edx$2[(32'h0)+:(57)];
+            mul$3$b = toff$2;
+            pn$5 = mul$3$p;
+        end
+        if ((lane$8 == 3) & act$8) begin
+            mul$3$a = mant_a;
+            mul$3$b = eq_b$0;
+            pe$0 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$9 == 3) & act$9) begin
+            mul$3$a = mant_a;
+            mul$3$b = eq_b$1;
+            pe$1 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$10 == 3) & act$10) begin
+            mul$3$a = mant_a;
+            mul$3$b = eq_b$2;
+            pe$2 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$11 == 3) & act$11) begin
+            mul$3$a = mant_a;
+            mul$3$b = eq_b$3;
+            pe$3 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$12 == 3) & act$12) begin
+            mul$3$a = p$3$q;
+            mul$3$b = dmaj$0;
+            pg$0 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 3) & act$13) begin
+            mul$3$a = p$2$q;
+            mul$3$b = dbot$0;
+            pg$1 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 3) & act$14) begin
+            mul$3$a = p$0$q;
+            mul$3$b = dbot$0;
+            pg$2 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 3) & act$15) begin
+            mul$3$a = p$1$q;
+            mul$3$b = dmaj$0;
+            pg$3 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 3) & act$16) begin
+            mul$3$a = p$3$q;
+            mul$3$b = dmaj$1;
+            pg$4 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 3) & act$17) begin
+            mul$3$a = p$2$q;
+            mul$3$b = dbot$1;
+            pg$5 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 3) & act$18) begin
+            mul$3$a = p$0$q;
+            mul$3$b = dbot$1;
+            pg$6 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 3) & act$19) begin
+            mul$3$a = p$1$q;
+            mul$3$b = dmaj$1;
+            pg$7 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 3) & act$20) begin
+            mul$3$a = p$3$q;
+            mul$3$b = dmaj$2;
+            pg$8 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 3) & act$21) begin
+            mul$3$a = p$2$q;
+            mul$3$b = dbot$2;
+            pg$9 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 3) & act$22) begin
+            mul$3$a = p$0$q;
+            mul$3$b = dbot$2;
+            pg$10 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 3) & act$23) begin
+            mul$3$a = p$1$q;
+            mul$3$b = dmaj$2;
+            pg$11 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 3) & act$24) begin
+            mul$3$a = p$3$q;
+            mul$3$b = dmaj$3;
+            pg$12 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 3) & act$25) begin
+            mul$3$a = p$2$q;
+            mul$3$b = dbot$3;
+            pg$13 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 3) & act$26) begin
+            mul$3$a = p$0$q;
+            mul$3$b = dbot$3;
+            pg$14 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 3) & act$27) begin
+            mul$3$a = p$1$q;
+            mul$3$b = dmaj$3;
+            pg$15 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$28 == 3) & act$28) begin
+            mul$3$a = ddx$0;
+            mul$3$b = off_x$0;
+            ps$0 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 3) & act$29) begin
+            mul$3$a = ddy$0;
+            mul$3$b = off_y$0;
+            ps$1 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 3) & act$30) begin
+            mul$3$a = ddx$0;
+            mul$3$b = q$0$q;
+            ps$2 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 3) & act$31) begin
+            mul$3$a = ddx$1;
+            mul$3$b = off_x$0;
+            ps$3 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 3) & act$32) begin
+            mul$3$a = ddy$1;
+            mul$3$b = off_y$0;
+            ps$4 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 3) & act$33) begin
+            mul$3$a = ddx$1;
+            mul$3$b = q$0$q;
+            ps$5 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 3) & act$34) begin
+            mul$3$a = ddx$2;
+            mul$3$b = off_x$0;
+            ps$6 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 3) & act$35) begin
+            mul$3$a = ddy$2;
+            mul$3$b = off_y$0;
+            ps$7 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 3) & act$36) begin
+            mul$3$a = ddx$2;
+            mul$3$b = q$0$q;
+            ps$8 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 3) & act$37) begin
+            mul$3$a = ddx$3;
+            mul$3$b = off_x$0;
+            ps$9 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 3) & act$38) begin
+            mul$3$a = ddy$3;
+            mul$3$b = off_y$0;
+            ps$10 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 3) & act$39) begin
+            mul$3$a = ddx$3;
+            mul$3$b = q$0$q;
+            ps$11 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 3) & act$40) begin
+            mul$3$a = ddx$0;
+            mul$3$b = off_x$1;
+            ps$12 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 3) & act$41) begin
+            mul$3$a = ddy$0;
+            mul$3$b = off_y$1;
+            ps$13 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 3) & act$42) begin
+            mul$3$a = ddx$0;
+            mul$3$b = q$1$q;
+            ps$14 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 3) & act$43) begin
+            mul$3$a = ddx$1;
+            mul$3$b = off_x$1;
+            ps$15 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 3) & act$44) begin
+            mul$3$a = ddy$1;
+            mul$3$b = off_y$1;
+            ps$16 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 3) & act$45) begin
+            mul$3$a = ddx$1;
+            mul$3$b = q$1$q;
+            ps$17 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 3) & act$46) begin
+            mul$3$a = ddx$2;
+            mul$3$b = off_x$1;
+            ps$18 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 3) & act$47) begin
+            mul$3$a = ddy$2;
+            mul$3$b = off_y$1;
+            ps$19 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 3) & act$48) begin
+            mul$3$a = ddx$2;
+            mul$3$b = q$1$q;
+            ps$20 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 3) & act$49) begin
+            mul$3$a = ddx$3;
+            mul$3$b = off_x$1;
+            ps$21 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 3) & act$50) begin
+            mul$3$a = ddy$3;
+            mul$3$b = off_y$1;
+            ps$22 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 3) & act$51) begin
+            mul$3$a = ddx$3;
+            mul$3$b = q$1$q;
+            ps$23 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 3) & act$52) begin
+            mul$3$a = ddx$0;
+            mul$3$b = off_x$2;
+            ps$24 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 3) & act$53) begin
+            mul$3$a = ddy$0;
+            mul$3$b = off_y$2;
+            ps$25 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 3) & act$54) begin
+            mul$3$a = ddx$0;
+            mul$3$b = q$2$q;
+            ps$26 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 3) & act$55) begin
+            mul$3$a = ddx$1;
+            mul$3$b = off_x$2;
+            ps$27 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 3) & act$56) begin
+            mul$3$a = ddy$1;
+            mul$3$b = off_y$2;
+            ps$28 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 3) & act$57) begin
+            mul$3$a = ddx$1;
+            mul$3$b = q$2$q;
+            ps$29 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 3) & act$58) begin
+            mul$3$a = ddx$2;
+            mul$3$b = off_x$2;
+            ps$30 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 3) & act$59) begin
+            mul$3$a = ddy$2;
+            mul$3$b = off_y$2;
+            ps$31 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 3) & act$60) begin
+            mul$3$a = ddx$2;
+            mul$3$b = q$2$q;
+            ps$32 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 3) & act$61) begin
+            mul$3$a = ddx$3;
+            mul$3$b = off_x$2;
+            ps$33 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 3) & act$62) begin
+            mul$3$a = ddy$3;
+            mul$3$b = off_y$2;
+            ps$34 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$63 == 3) & act$63) begin
+            mul$3$a = ddx$3;
+            mul$3$b = q$2$q;
+            ps$35 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$0 == 4) & act$0) begin
+            mul$4$a = kdx$0[(32'h0)+:(57)];
+            mul$4$b = kdy$1[(32'h0)+:(19)];
+            pa$0 = mul$4$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 4) & act$1) begin
+            mul$4$a = kdx$1[(32'h0)+:(57)];
+            mul$4$b = kdy$0[(32'h0)+:(19)];
+            pa$1 = mul$4$p[(32'h0)+:(34)];
+        end
+        if ((lane$2 == 4) & act$2) begin
+            mul$4$a = edy$0;
+            mul$4$b = xf$0;
+            pn$0 = mul$4$p;
+        end
+        if ((lane$3 == 4) & act$3) begin
+            mul$4$a = edx$0[(32'h0)+:(57)];
+            mul$4$b = toff$0;
+            pn$1 = mul$4$p;
+        end
+        if ((lane$4 == 4) & act$4) begin
+            mul$4$a = edy$1;
+            mul$4$b = xf$1;
+            pn$2 = mul$4$p;
+        end
+        if ((lane$5 == 4) & act$5) begin
+            mul$4$a = edx$1[(32'h0)+:(57)];
+            mul$4$b = toff$1;
+            pn$3 = mul$4$p;
+        end
+        if ((lane$6 == 4) & act$6) begin
+            mul$4$a = edy$2;
+            mul$4$b = xf$2;
+            pn$4 = mul$4$p;
+        end
+        if ((lane$7 == 4) & act$7) begin
+            mul$4$a = edx$2[(32'h0)+:(57)];
+            mul$4$b = toff$2;
+            pn$5 = mul$4$p;
+        end
+        if ((lane$8 == 4) & act$8) begin
+            mul$4$a = mant_a;
+            mul$4$b = eq_b$0;
+            pe$0 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$9 == 4) & act$9) begin
+            mul$4$a = mant_a;
+            mul$4$b = eq_b$1;
+            pe$1 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$10 == 4) & act$10) begin
+            mul$4$a = mant_a;
+            mul$4$b = eq_b$2;
+            pe$2 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$11 == 4) & act$11) begin
+            mul$4$a = mant_a;
+            mul$4$b = eq_b$3;
+            pe$3 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$12 == 4) & act$12) begin
+            mul$4$a = p$3$q;
+            mul$4$b = dmaj$0;
+            pg$0 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 4) & act$13) begin
+            mul$4$a = p$2$q;
+            mul$4$b = dbot$0;
+            pg$1 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 4) & act$14) begin
+            mul$4$a = p$0$q;
+            mul$4$b = dbot$0;
+            pg$2 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 4) & act$15) begin
+            mul$4$a = p$1$q;
+            mul$4$b = dmaj$0;
+            pg$3 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 4) & act$16) begin
+            mul$4$a = p$3$q;
+            mul$4$b = dmaj$1;
+            pg$4 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 4) & act$17) begin
+            mul$4$a = p$2$q;
+            mul$4$b = dbot$1;
+            pg$5 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 4) & act$18) begin
+            mul$4$a = p$0$q;
+            mul$4$b = dbot$1;
+            pg$6 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 4) & act$19) begin
+            mul$4$a = p$1$q;
+            mul$4$b = dmaj$1;
+            pg$7 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 4) & act$20) begin
+            mul$4$a = p$3$q;
+            mul$4$b = dmaj$2;
+            pg$8 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 4) & act$21) begin
+            mul$4$a = p$2$q;
+            mul$4$b = dbot$2;
+            pg$9 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 4) & act$22) begin
+            mul$4$a = p$0$q;
+            mul$4$b = dbot$2;
+            pg$10 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 4) & act$23) begin
+            mul$4$a = p$1$q;
+            mul$4$b = dmaj$2;
+            pg$11 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 4) & act$24) begin
+            mul$4$a = p$3$q;
+            mul$4$b = dmaj$3;
+            pg$12 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 4) & act$25) begin
+            mul$4$a = p$2$q;
+            mul$4$b = dbot$3;
+            pg$13 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 4) & act$26) begin
+            mul$4$a = p$0$q;
+            mul$4$b = dbot$3;
+            pg$14 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 4) & act$27) begin
+            mul$4$a = p$1$q;
+            mul$4$b = dmaj$3;
+            pg$15 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$28 == 4) & act$28) begin
+            mul$4$a = ddx$0;
+            mul$4$b = off_x$0;
+            ps$0 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 4) & act$29) begin
+            mul$4$a = ddy$0;
+            mul$4$b = off_y$0;
+            ps$1 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 4) & act$30) begin
+            mul$4$a = ddx$0;
+            mul$4$b = q$0$q;
+            ps$2 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 4) & act$31) begin
+            mul$4$a = ddx$1;
+            mul$4$b = off_x$0;
+            ps$3 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 4) & act$32) begin
+            mul$4$a = ddy$1;
+            mul$4$b = off_y$0;
+            ps$4 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 4) & act$33) begin
+            mul$4$a = ddx$1;
+            mul$4$b = q$0$q;
+            ps$5 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 4) & act$34) begin
+            mul$4$a = ddx$2;
+            mul$4$b = off_x$0;
+            ps$6 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 4) & act$35) begin
+            mul$4$a = ddy$2;
+            mul$4$b = off_y$0;
+            ps$7 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 4) & act$36) begin
+            mul$4$a = ddx$2;
+            mul$4$b = q$0$q;
+            ps$8 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 4) & act$37) begin
+            mul$4$a = ddx$3;
+            mul$4$b = off_x$0;
+            ps$9 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 4) & act$38) begin
+            mul$4$a = ddy$3;
+            mul$4$b = off_y$0;
+            ps$10 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 4) & act$39) begin
+            mul$4$a = ddx$3;
+            mul$4$b = q$0$q;
+            ps$11 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 4) & act$40) begin
+            mul$4$a = ddx$0;
+            mul$4$b = off_x$1;
+            ps$12 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 4) & act$41) begin
+            mul$4$a = ddy$0;
+            mul$4$b = off_y$1;
+            ps$13 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 4) & act$42) begin
+            mul$4$a = ddx$0;
+            mul$4$b = q$1$q;
+            ps$14 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 4) & act$43) begin
+            mul$4$a = ddx$1;
+            mul$4$b = off_x$1;
+            ps$15 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 4) & act$44) begin
+            mul$4$a = ddy$1;
+            mul$4$b = off_y$1;
+            ps$16 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 4) & act$45) begin
+            mul$4$a = ddx$1;
+            mul$4$b = q$1$q;
+            ps$17 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 4) & act$46) begin
+            mul$4$a = ddx$2;
+            mul$4$b = off_x$1;
+            ps$18 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 4) & act$47) begin
+            mul$4$a = ddy$2;
+            mul$4$b = off_y$1;
+            ps$19 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 4) & act$48) begin
+            mul$4$a = ddx$2;
+            mul$4$b = q$1$q;
+            ps$20 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 4) & act$49) begin
+            mul$4$a = ddx$3;
+            mul$4$b = off_x$1;
+            ps$21 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 4) & act$50) begin
+            mul$4$a = ddy$3;
+            mul$4$b = off_y$1;
+            ps$22 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 4) & act$51) begin
+            mul$4$a = ddx$3;
+            mul$4$b = q$1$q;
+            ps$23 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 4) & act$52) begin
+            mul$4$a = ddx$0;
+            mul$4$b = off_x$2;
+            ps$24 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 4) & act$53) begin
+            mul$4$a = ddy$0;
+            mul$4$b = off_y$2;
+            ps$25 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 4) & act$54) begin
+            mul$4$a = ddx$0;
+            mul$4$b = q$2$q;
+            ps$26 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 4) & act$55) begin
+            mul$4$a = ddx$1;
+            mul$4$b = off_x$2;
+            ps$27 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 4) & act$56) begin
+            mul$4$a = ddy$1;
+            mul$4$b = off_y$2;
+            ps$28 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 4) & act$57) begin
+            mul$4$a = ddx$1;
+            mul$4$b = q$2$q;
+            ps$29 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 4) & act$58) begin
+            mul$4$a = ddx$2;
+            mul$4$b = off_x$2;
+            ps$30 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 4) & act$59) begin
+            mul$4$a = ddy$2;
+            mul$4$b = off_y$2;
+            ps$31 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 4) & act$60) begin
+            mul$4$a = ddx$2;
+            mul$4$b = q$2$q;
+            ps$32 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 4) & act$61) begin
+            mul$4$a = ddx$3;
+            mul$4$b = off_x$2;
+            ps$33 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 4) & act$62) begin
+            mul$4$a = ddy$3;
+            mul$4$b = off_y$2;
+            ps$34 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$63 == 4) & act$63) begin
+            mul$4$a = ddx$3;
+            mul$4$b = q$2$q;
+            ps$35 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$0 == 5) & act$0) begin
+            mul$5$a = kdx$0[(32'h0)+:(57)];
+            mul$5$b = kdy$1[(32'h0)+:(19)];
+            pa$0 = mul$5$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 5) & act$1) begin
+            mul$5$a = kdx$1[(32'h0)+:(57)];
+            mul$5$b = kdy$0[(32'h0)+:(19)];
+            pa$1 = mul$5$p[(32'h0)+:(34)];
+        end
+        if ((lane$2 == 5) & act$2) begin
+            mul$5$a = edy$0;
+            mul$5$b = xf$0;
+            pn$0 = mul$5$p;
+        end
+        if ((lane$3 == 5) & act$3) begin
+            mul$5$a = edx$0[(32'h0)+:(57)];
+            mul$5$b = toff$0;
+            pn$1 = mul$5$p;
+        end
+        if ((lane$4 == 5) & act$4) begin
+            mul$5$a = edy$1;
+            mul$5$b = xf$1;
+            pn$2 = mul$5$p;
+        end
+        if ((lane$5 == 5) & act$5) begin
+            mul$5$a = edx$1[(32'h0)+:(57)];
+            mul$5$b = toff$1;
+            pn$3 = mul$5$p;
+        end
+        if ((lane$6 == 5) & act$6) begin
+            mul$5$a = edy$2;
+            mul$5$b = xf$2;
+            pn$4 = mul$5$p;
+        end
+        if ((lane$7 == 5) & act$7) begin
+            mul$5$a = edx$2[(32'h0)+:(57)];
+            mul$5$b = toff$2;
+            pn$5 = mul$5$p;
+        end
+        if ((lane$8 == 5) & act$8) begin
+            mul$5$a = mant_a;
+            mul$5$b = eq_b$0;
+            pe$0 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$9 == 5) & act$9) begin
+            mul$5$a = mant_a;
+            mul$5$b = eq_b$1;
+            pe$1 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$10 == 5) & act$10) begin
+            mul$5$a = mant_a;
+            mul$5$b = eq_b$2;
+            pe$2 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$11 == 5) & act$11) begin
+            mul$5$a = mant_a;
+            mul$5$b = eq_b$3;
+            pe$3 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$12 == 5) & act$12) begin
+            mul$5$a = p$3$q;
+            mul$5$b = dmaj$0;
+            pg$0 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 5) & act$13) begin
+            mul$5$a = p$2$q;
+            mul$5$b = dbot$0;
+            pg$1 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 5) & act$14) begin
+            mul$5$a = p$0$q;
+            mul$5$b = dbot$0;
+            pg$2 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 5) & act$15) begin
+            mul$5$a = p$1$q;
+            mul$5$b = dmaj$0;
+            pg$3 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 5) & act$16) begin
+            mul$5$a = p$3$q;
+            mul$5$b = dmaj$1;
+            pg$4 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 5) & act$17) begin
+            mul$5$a = p$2$q;
+            mul$5$b = dbot$1;
+            pg$5 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 5) & act$18) begin
+            mul$5$a = p$0$q;
+            mul$5$b = dbot$1;
+            pg$6 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 5) & act$19) begin
+            mul$5$a = p$1$q;
+            mul$5$b = dmaj$1;
+            pg$7 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 5) & act$20) begin
+            mul$5$a = p$3$q;
+            mul$5$b = dmaj$2;
+            pg$8 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 5) & act$21) begin
+            mul$5$a = p$2$q;
+            mul$5$b = dbot$2;
+            pg$9 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 5) & act$22) begin
+            mul$5$a = p$0$q;
+            mul$5$b = dbot$2;
+            pg$10 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 5) & act$23) begin
+            mul$5$a = p$1$q;
+            mul$5$b = dmaj$2;
+            pg$11 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 5) & act$24) begin
+            mul$5$a = p$3$q;
+            mul$5$b = dmaj$3;
+            pg$12 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 5) & act$25) begin
+            mul$5$a = p$2$q;
+            mul$5$b = dbot$3;
+            pg$13 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 5) & act$26) begin
+            mul$5$a = p$0$q;
+            mul$5$b = dbot$3;
+            pg$14 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 5) & act$27) begin
+            mul$5$a = p$1$q;
+            mul$5$b = dmaj$3;
+            pg$15 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$28 == 5) & act$28) begin
+            mul$5$a = ddx$0;
+            mul$5$b = off_x$0;
+            ps$0 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 5) & act$29) begin
+            mul$5$a = ddy$0;
+            mul$5$b = off_y$0;
+            ps$1 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 5) & act$30) begin
+            mul$5$a = ddx$0;
+            mul$5$b = q$0$q;
+            ps$2 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 5) & act$31) begin
+            mul$5$a = ddx$1;
+            mul$5$b = off_x$0;
+            ps$3 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 5) & act$32) begin
+            mul$5$a = ddy$1;
+            mul$5$b = off_y$0;
+            ps$4 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 5) & act$33) begin
+            mul$5$a = ddx$1;
+            mul$5$b = q$0$q;
+            ps$5 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 5) & act$34) begin
+            mul$5$a = ddx$2;
+            mul$5$b = off_x$0;
+            ps$6 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 5) & act$35) begin
+            mul$5$a = ddy$2;
+            mul$5$b = off_y$0;
+            ps$7 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 5) & act$36) begin
+            mul$5$a = ddx$2;
+            mul$5$b = q$0$q;
+            ps$8 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 5) & act$37) begin
+            mul$5$a = ddx$3;
+            mul$5$b = off_x$0;
+            ps$9 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 5) & act$38) begin
+            mul$5$a = ddy$3;
+            mul$5$b = off_y$0;
+            ps$10 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 5) & act$39) begin
+            mul$5$a = ddx$3;
+            mul$5$b = q$0$q;
+            ps$11 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 5) & act$40) begin
+            mul$5$a = ddx$0;
+            mul$5$b = off_x$1;
+            ps$12 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 5) & act$41) begin
+            mul$5$a = ddy$0;
+            mul$5$b = off_y$1;
+            ps$13 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 5) & act$42) begin
+            mul$5$a = ddx$0;
+            mul$5$b = q$1$q;
+            ps$14 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 5) & act$43) begin
+            mul$5$a = ddx$1;
+            mul$5$b = off_x$1;
+            ps$15 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 5) & act$44) begin
+            mul$5$a = ddy$1;
+            mul$5$b = off_y$1;
+            ps$16 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 5) & act$45) begin
+            mul$5$a = ddx$1;
+            mul$5$b = q$1$q;
+            ps$17 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 5) & act$46) begin
+            mul$5$a = ddx$2;
+            mul$5$b = off_x$1;
+            ps$18 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 5) & act$47) begin
+            mul$5$a = ddy$2;
+            mul$5$b = off_y$1;
+            ps$19 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 5) & act$48) begin
+            mul$5$a = ddx$2;
+            mul$5$b = q$1$q;
+            ps$20 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 5) & act$49) begin
+            mul$5$a = ddx$3;
+            mul$5$b = off_x$1;
+            ps$21 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 5) & act$50) begin
+            mul$5$a = ddy$3;
+            mul$5$b = off_y$1;
+            ps$22 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 5) & act$51) begin
+            mul$5$a = ddx$3;
+            mul$5$b = q$1$q;
+            ps$23 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 5) & act$52) begin
+            mul$5$a = ddx$0;
+            mul$5$b = off_x$2;
+            ps$24 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 5) & act$53) begin
+            mul$5$a = ddy$0;
+            mul$5$b = off_y$2;
+            ps$25 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 5) & act$54) begin
+            mul$5$a = ddx$0;
+            mul$5$b = q$2$q;
+            ps$26 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 5) & act$55) begin
+            mul$5$a = ddx$1;
+            mul$5$b = off_x$2;
+            ps$27 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 5) & act$56) begin
+            mul$5$a = ddy$1;
+            mul$5$b = off_y$2;
+            ps$28 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 5) & act$57) begin
+            mul$5$a = ddx$1;
+            mul$5$b = q$2$q;
+            ps$29 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 5) & act$58) begin
+            mul$5$a = ddx$2;
+            mul$5$b = off_x$2;
+            ps$30 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 5) & act$59) begin
+            mul$5$a = ddy$2;
+            mul$5$b = off_y$2;
+            ps$31 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 5) & act$60) begin
+            mul$5$a = ddx$2;
+            mul$5$b = q$2$q;
+            ps$32 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 5) & act$61) begin
+            mul$5$a = ddx$3;
+            mul$5$b = off_x$2;
+            ps$33 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 5) & act$62) begin
+            mul$5$a = ddy$3;
+            mul$5$b = off_y$2;
+            ps$34 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$63 == 5) & act$63) begin
+            mul$5$a = ddx$3;
+            mul$5$b = q$2$q;
+            ps$35 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$0 == 6) & act$0) begin
+            mul$6$a = kdx$0[(32'h0)+:(57)];
+            mul$6$b = kdy$1[(32'h0)+:(19)];
+            pa$0 = mul$6$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 6) & act$1) begin
+            mul$6$a = kdx$1[(32'h0)+:(57)];
+            mul$6$b = kdy$0[(32'h0)+:(19)];
+            pa$1 = mul$6$p[(32'h0)+:(34)];
+        end
+        if ((lane$2 == 6) & act$2) begin
+            mul$6$a = edy$0;
+            mul$6$b = xf$0;
+            pn$0 = mul$6$p;
+        end
+        if ((lane$3 == 6) & act$3) begin
+            mul$6$a = edx$0[(32'h0)+:(57)];
+            mul$6$b = toff$0;
+            pn$1 = mul$6$p;
+        end
+        if ((lane$4 == 6) & act$4) begin
+            mul$6$a = edy$1;
+            mul$6$b = xf$1;
+            pn$2 = mul$6$p;
+        end
+        if ((lane$5 == 6) & act$5) begin
+            mul$6$a = edx$1[(32'h0)+:(57)];
+            mul$6$b = toff$1;
+            pn$3 = mul$6$p;
+        end
+        if ((lane$6 == 6) & act$6) begin
+            mul$6$a = edy$2;
+            mul$6$b = xf$2;
+            pn$4 = mul$6$p;
+        end
+        if ((lane$7 == 6) & act$7) begin
+            mul$6$a = edx$2[(32'h0)+:(57)];
+            mul$6$b = toff$2;
+            pn$5 = mul$6$p;
+        end
+        if ((lane$8 == 6) & act$8) begin
+            mul$6$a = mant_a;
+            mul$6$b = eq_b$0;
+            pe$0 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$9 == 6) & act$9) begin
+            mul$6$a = mant_a;
+            mul$6$b = eq_b$1;
+            pe$1 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$10 == 6) & act$10) begin
+            mul$6$a = mant_a;
+            mul$6$b = eq_b$2;
+            pe$2 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$11 == 6) & act$11) begin
+            mul$6$a = mant_a;
+            mul$6$b = eq_b$3;
+            pe$3 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$12 == 6) & act$12) begin
+            mul$6$a = p$3$q;
+            mul$6$b = dmaj$0;
+            pg$0 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 6) & act$13) begin
+            mul$6$a = p$2$q;
+            mul$6$b = dbot$0;
+            pg$1 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 6) & act$14) begin
+            mul$6$a = p$0$q;
+            mul$6$b = dbot$0;
+            pg$2 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 6) & act$15) begin
+            mul$6$a = p$1$q;
+            mul$6$b = dmaj$0;
+            pg$3 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 6) & act$16) begin
+            mul$6$a = p$3$q;
+            mul$6$b = dmaj$1;
+            pg$4 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 6) & act$17) begin
+            mul$6$a = p$2$q;
+            mul$6$b = dbot$1;
+            pg$5 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 6) & act$18) begin
+            mul$6$a = p$0$q;
+            mul$6$b = dbot$1;
+            pg$6 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 6) & act$19) begin
+            mul$6$a = p$1$q;
+            mul$6$b = dmaj$1;
+            pg$7 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 6) & act$20) begin
+            mul$6$a = p$3$q;
+            mul$6$b = dmaj$2;
+            pg$8 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 6) & act$21) begin
+            mul$6$a = p$2$q;
+            mul$6$b = dbot$2;
+            pg$9 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 6) & act$22) begin
+            mul$6$a = p$0$q;
+            mul$6$b = dbot$2;
+            pg$10 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 6) & act$23) begin
+            mul$6$a = p$1$q;
+            mul$6$b = dmaj$2;
+            pg$11 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 6) & act$24) begin
+            mul$6$a = p$3$q;
+            mul$6$b = dmaj$3;
+            pg$12 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 6) & act$25) begin
+            mul$6$a = p$2$q;
+            mul$6$b = dbot$3;
+            pg$13 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 6) & act$26) begin
+            mul$6$a = p$0$q;
+            mul$6$b = dbot$3;
+            pg$14 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 6) & act$27) begin
+            mul$6$a = p$1$q;
+            mul$6$b = dmaj$3;
+            pg$15 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$28 == 6) & act$28) begin
+            mul$6$a = ddx$0;
+            mul$6$b = off_x$0;
+            ps$0 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 6) & act$29) begin
+            mul$6$a = ddy$0;
+            mul$6$b = off_y$0;
+            ps$1 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 6) & act$30) begin
+            mul$6$a = ddx$0;
+            mul$6$b = q$0$q;
+            ps$2 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 6) & act$31) begin
+            mul$6$a = ddx$1;
+            mul$6$b = off_x$0;
+            ps$3 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 6) & act$32) begin
+            mul$6$a = ddy$1;
+            mul$6$b = off_y$0;
+            ps$4 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 6) & act$33) begin
+            mul$6$a = ddx$1;
+            mul$6$b = q$0$q;
+            ps$5 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 6) & act$34) begin
+            mul$6$a = ddx$2;
+            mul$6$b = off_x$0;
+            ps$6 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 6) & act$35) begin
+            mul$6$a = ddy$2;
+            mul$6$b = off_y$0;
+            ps$7 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 6) & act$36) begin
+            mul$6$a = ddx$2;
+            mul$6$b = q$0$q;
+            ps$8 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 6) & act$37) begin
+            mul$6$a = ddx$3;
+            mul$6$b = off_x$0;
+            ps$9 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 6) & act$38) begin
+            mul$6$a = ddy$3;
+            mul$6$b = off_y$0;
+            ps$10 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 6) & act$39) begin
+            mul$6$a = ddx$3;
+            mul$6$b = q$0$q;
+            ps$11 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 6) & act$40) begin
+            mul$6$a = ddx$0;
+            mul$6$b = off_x$1;
+            ps$12 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 6) & act$41) begin
+            mul$6$a = ddy$0;
+            mul$6$b = off_y$1;
+            ps$13 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 6) & act$42) begin
+            mul$6$a = ddx$0;
+            mul$6$b = q$1$q;
+            ps$14 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 6) & act$43) begin
+            mul$6$a = ddx$1;
+            mul$6$b = off_x$1;
+            ps$15 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 6) & act$44) begin
+            mul$6$a = ddy$1;
+            mul$6$b = off_y$1;
+            ps$16 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 6) & act$45) begin
+            mul$6$a = ddx$1;
+            mul$6$b = q$1$q;
+            ps$17 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 6) & act$46) begin
+            mul$6$a = ddx$2;
+            mul$6$b = off_x$1;
+            ps$18 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 6) & act$47) begin
+            mul$6$a = ddy$2;
+            mul$6$b = off_y$1;
+            ps$19 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 6) & act$48) begin
+            mul$6$a = ddx$2;
+            mul$6$b = q$1$q;
+            ps$20 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 6) & act$49) begin
+            mul$6$a = ddx$3;
+            mul$6$b = off_x$1;
+            ps$21 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 6) & act$50) begin
+            mul$6$a = ddy$3;
+            mul$6$b = off_y$1;
+            ps$22 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 6) & act$51) begin
+            mul$6$a = ddx$3;
+            mul$6$b = q$1$q;
+            ps$23 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 6) & act$52) begin
+            mul$6$a = ddx$0;
+            mul$6$b = off_x$2;
+            ps$24 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 6) & act$53) begin
+            mul$6$a = ddy$0;
+            mul$6$b = off_y$2;
+            ps$25 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 6) & act$54) begin
+            mul$6$a = ddx$0;
+            mul$6$b = q$2$q;
+            ps$26 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 6) & act$55) begin
+            mul$6$a = ddx$1;
+            mul$6$b = off_x$2;
+            ps$27 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 6) & act$56) begin
+            mul$6$a = ddy$1;
+            mul$6$b = off_y$2;
+            ps$28 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 6) & act$57) begin
+            mul$6$a = ddx$1;
+            mul$6$b = q$2$q;
+            ps$29 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 6) & act$58) begin
+            mul$6$a = ddx$2;
+            mul$6$b = off_x$2;
+            ps$30 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 6) & act$59) begin
+            mul$6$a = ddy$2;
+            mul$6$b = off_y$2;
+            ps$31 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 6) & act$60) begin
+            mul$6$a = ddx$2;
+            mul$6$b = q$2$q;
+            ps$32 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 6) & act$61) begin
+            mul$6$a = ddx$3;
+            mul$6$b = off_x$2;
+            ps$33 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 6) & act$62) begin
+            mul$6$a = ddy$3;
+            mul$6$b = off_y$2;
+            ps$34 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$63 == 6) & act$63) begin
+            mul$6$a = ddx$3;
+            mul$6$b = q$2$q;
+            ps$35 = mul$6$p[(32'h0)+:(40)];
+        end
+        area_base = area$q;
+        if (act$0) begin
+            area_base = 32'h0;
+        end
+        area$d = area_base + pa$0 - pa$1;
+        num_base$0 = num$0$q;
+        if (act$2) begin
+            num_base$0 = 32'h0;
+        end
+        num$0$d = num_base$0 + pn$0 + pn$1;
+        num_base$1 = num$1$q;
+        if (act$4) begin
+            num_base$1 = 32'h0;
+        end
+        num$1$d = num_base$1 + pn$2 + pn$3;
+        num_base$2 = num$2$q;
+        if (act$6) begin
+            num_base$2 = 32'h0;
+        end
+        num$2$d = num_base$2 + pn$4 + pn$5;
+        shr$0 = pe$0 >> rsh;
+        if (pe$0[p_msb]) begin
+            shr$0 = (pe$0 >> rsh) | ~(ones >> rsh);
+        end
+        if (act$8) begin
+            p$0$d = shr$0;
+            if (exp$q <= eq_shift) begin
+                p$0$d = pe$0;
+            end
+        end
+        shr$1 = pe$1 >> rsh;
+        if (pe$1[p_msb]) begin
+            shr$1 = (pe$1 >> rsh) | ~(ones >> rsh);
+        end
+        if (act$9) begin
+            p$1$d = shr$1;
+            if (exp$q <= eq_shift) begin
+                p$1$d = pe$1;
+            end
+        end
+        shr$2 = pe$2 >> rsh;
+        if (pe$2[p_msb]) begin
+            shr$2 = (pe$2 >> rsh) | ~(ones >> rsh);
+        end
+        if (act$10) begin
+            p$2$d = shr$2;
+            if (exp$q <= eq_shift) begin
+                p$2$d = pe$2;
+            end
+        end
+        shr$3 = pe$3 >> rsh;
+        if (pe$3[p_msb]) begin
+            shr$3 = (pe$3 >> rsh) | ~(ones >> rsh);
+        end
+        if (act$11) begin
+            p$3$d = shr$3;
+            if (exp$q <= eq_shift) begin
+                p$3$d = pe$3;
+            end
+        end
+        gx_base$0 = gx$0$q;
+        if (act$12) begin
+            gx_base$0 = 32'h0;
+        end
+        gx$0$d = gx_base$0 + pg$0 - pg$1;
+        gy_base$0 = gy$0$q;
+        if (act$14) begin
+            gy_base$0 = 32'h0;
+        end
+        gy$0$d = gy_base$0 + pg$2 - pg$3;
+        gx_base$1 = gx$1$q;
+        if (act$16) begin
+            gx_base$1 = 32'h0;
+        end
+        gx$1$d = gx_base$1 + pg$4 - pg$5;
+        gy_base$1 = gy$1$q;
+        if (act$18) begin
+            gy_base$1 = 32'h0;
+        end
+        gy$1$d = gy_base$1 + pg$6 - pg$7;
+        gx_base$2 = gx$2$q;
+        if (act$20) begin
+            gx_base$2 = 32'h0;
+        end
+        gx$2$d = gx_base$2 + pg$8 - pg$9;
+        gy_base$2 = gy$2$q;
+        if (act$22) begin
+            gy_base$2 = 32'h0;
+        end
+        gy$2$d = gy_base$2 + pg$10 - pg$11;
+        gx_base$3 = gx$3$q;
+        if (act$24) begin
+            gx_base$3 = 32'h0;
+        end
+        gx$3$d = gx_base$3 + pg$12 - pg$13;
+        gy_base$3 = gy$3$q;
+        if (act$26) begin
+            gy_base$3 = 32'h0;
+        end
+        gy$3$d = gy_base$3 + pg$14 - pg$15;
+        plane_base$0 = plane$0$q;
+        if (act$28) begin
+            plane_base$0 = 32'h0;
+        end
+        plane$0$d = plane_base$0 + ps$0 + ps$1;
+        if (act$30) begin
+            inc0$0$d = ddy$0[(32'h0)+:(40)] + ps$2;
+        end
+        if (t$q == handover) begin
+            plane$0$d = (plane$0$q >> frac) + (attr0$0 << bsh$0);
+            inc1$0$d = inc0$0$q + ddx$0[(32'h0)+:(40)];
+        end
+        plane_base$1 = plane$1$q;
+        if (act$31) begin
+            plane_base$1 = 32'h0;
+        end
+        plane$1$d = plane_base$1 + ps$3 + ps$4;
+        if (act$33) begin
+            inc0$1$d = ddy$1[(32'h0)+:(40)] + ps$5;
+        end
+        if (t$q == handover) begin
+            plane$1$d = (plane$1$q >> frac) + (attr0$1 << bsh$1);
+            inc1$1$d = inc0$1$q + ddx$1[(32'h0)+:(40)];
+        end
+        plane_base$2 = plane$2$q;
+        if (act$34) begin
+            plane_base$2 = 32'h0;
+        end
+        plane$2$d = plane_base$2 + ps$6 + ps$7;
+        if (act$36) begin
+            inc0$2$d = ddy$2[(32'h0)+:(40)] + ps$8;
+        end
+        if (t$q == handover) begin
+            plane$2$d = (plane$2$q >> frac) + (attr0$2 << bsh$2);
+            inc1$2$d = inc0$2$q + ddx$2[(32'h0)+:(40)];
+        end
+        plane_base$3 = plane$3$q;
+        if (act$37) begin
+            plane_base$3 = 32'h0;
+        end
+        plane$3$d = plane_base$3 + ps$9 + ps$10;
+        if (act$39) begin
+            inc0$3$d = ddy$3[(32'h0)+:(40)] + ps$11;
+        end
+        if (t$q == handover) begin
+            plane$3$d = (plane$3$q >> frac) + (attr0$3 << bsh$3);
+            inc1$3$d = inc0$3$q + ddx$3[(32'h0)+:(40)];
+        end
+        plane_base$4 = plane$4$q;
+        if (act$40) begin
+            plane_base$4 = 32'h0;
+        end
+        plane$4$d = plane_base$4 + ps$12 + ps$13;
+        if (act$42) begin
+            inc0$4$d = ddy$0[(32'h0)+:(40)] + ps$14;
+        end
+        if (t$q == handover) begin
+            plane$4$d = (plane$4$q >> frac) + (attr0$0 << bsh$0);
+            inc1$4$d = inc0$4$q + ddx$0[(32'h0)+:(40)];
+        end
+        plane_base$5 = plane$5$q;
+        if (act$43) begin
+            plane_base$5 = 32'h0;
+        end
+        plane$5$d = plane_base$5 + ps$15 + ps$16;
+        if (act$45) begin
+            inc0$5$d = ddy$1[(32'h0)+:(40)] + ps$17;
+        end
+        if (t$q == handover) begin
+            plane$5$d = (plane$5$q >> frac) + (attr0$1 << bsh$1);
+            inc1$5$d = inc0$5$q + ddx$1[(32'h0)+:(40)];
+        end
+        plane_base$6 = plane$6$q;
+        if (act$46) begin
+            plane_base$6 = 32'h0;
+        end
+        plane$6$d = plane_base$6 + ps$18 + ps$19;
+        if (act$48) begin
+            inc0$6$d = ddy$2[(32'h0)+:(40)] + ps$20;
+        end
+        if (t$q == handover) begin
+            plane$6$d = (plane$6$q >> frac) + (attr0$2 << bsh$2);
+            inc1$6$d = inc0$6$q + ddx$2[(32'h0)+:(40)];
+        end
+        plane_base$7 = plane$7$q;
+        if (act$49) begin
+            plane_base$7 = 32'h0;
+        end
+        plane$7$d = plane_base$7 + ps$21 + ps$22;
+        if (act$51) begin
+            inc0$7$d = ddy$3[(32'h0)+:(40)] + ps$23;
+        end
+        if (t$q == handover) begin
+            plane$7$d = (plane$7$q >> frac) + (attr0$3 << bsh$3);
+            inc1$7$d = inc0$7$q + ddx$3[(32'h0)+:(40)];
+        end
+        plane_base$8 = plane$8$q;
+        if (act$52) begin
+            plane_base$8 = 32'h0;
+        end
+        plane$8$d = plane_base$8 + ps$24 + ps$25;
+        if (act$54) begin
+            inc0$8$d = ddy$0[(32'h0)+:(40)] + ps$26;
+        end
+        if (t$q == handover) begin
+            plane$8$d = (plane$8$q >> frac) + (attr0$0 << bsh$0);
+            inc1$8$d = inc0$8$q + ddx$0[(32'h0)+:(40)];
+        end
+        plane_base$9 = plane$9$q;
+        if (act$55) begin
+            plane_base$9 = 32'h0;
+        end
+        plane$9$d = plane_base$9 + ps$27 + ps$28;
+        if (act$57) begin
+            inc0$9$d = ddy$1[(32'h0)+:(40)] + ps$29;
+        end
+        if (t$q == handover) begin
+            plane$9$d = (plane$9$q >> frac) + (attr0$1 << bsh$1);
+            inc1$9$d = inc0$9$q + ddx$1[(32'h0)+:(40)];
+        end
+        plane_base$10 = plane$10$q;
+        if (act$58) begin
+            plane_base$10 = 32'h0;
+        end
+        plane$10$d = plane_base$10 + ps$30 + ps$31;
+        if (act$60) begin
+            inc0$10$d = ddy$2[(32'h0)+:(40)] + ps$32;
+        end
+        if (t$q == handover) begin
+            plane$10$d = (plane$10$q >> frac) + (attr0$2 << bsh$2);
+            inc1$10$d = inc0$10$q + ddx$2[(32'h0)+:(40)];
+        end
+        plane_base$11 = plane$11$q;
+        if (act$61) begin
+            plane_base$11 = 32'h0;
+        end
+        plane$11$d = plane_base$11 + ps$33 + ps$34;
+        if (act$63) begin
+            inc0$11$d = ddy$3[(32'h0)+:(40)] + ps$35;
+        end
+        if (t$q == handover) begin
+            plane$11$d = (plane$11$q >> frac) + (attr0$3 << bsh$3);
+            inc1$11$d = inc0$11$q + ddx$3[(32'h0)+:(40)];
+        end
+        out_walk = up;
+        out_maj_left = maj_left;
+        out_maj_j = cy$0[(frac)+:(13)];
+        out_maj_count = count$0;
+        out_maj_x = x$0$q[(32'h0)+:(13)];
+        out_maj_r = r$0$q;
+        out_maj_q = q$0$q[(32'h0)+:(17)];
+        out_maj_rho = rho$0$q;
+        out_maj_d = ed16$0[(32'h0)+:(21)];
+        out_maj_at_z = plane$0$q[(32'h0)+:(36)];
+        out_maj_at_c0 = plane$1$q[(32'h0)+:(32)];
+        out_maj_at_c1 = plane$2$q[(32'h0)+:(32)];
+        out_maj_at_c2 = plane$3$q[(32'h0)+:(32)];
+        out_maj_inc0_z = inc0$0$q[(32'h0)+:(40)];
+        out_maj_inc0_c0 = inc0$1$q[(32'h0)+:(36)];
+        out_maj_inc0_c1 = inc0$2$q[(32'h0)+:(36)];
+        out_maj_inc0_c2 = inc0$3$q[(32'h0)+:(36)];
+        out_maj_inc1_z = inc1$0$q[(32'h0)+:(40)];
+        out_maj_inc1_c0 = inc1$1$q[(32'h0)+:(36)];
+        out_maj_inc1_c1 = inc1$2$q[(32'h0)+:(36)];
+        out_maj_inc1_c2 = inc1$3$q[(32'h0)+:(36)];
+        out_short0_j = cy$1[(frac)+:(13)];
+        out_short0_count = count$1;
+        out_short0_x = x$1$q[(32'h0)+:(13)];
+        out_short0_r = r$1$q;
+        out_short0_q = q$1$q[(32'h0)+:(17)];
+        out_short0_rho = rho$1$q;
+        out_short0_d = ed16$1[(32'h0)+:(21)];
+        out_short0_at_z = plane$4$q[(32'h0)+:(36)];
+        out_short0_at_c0 = plane$5$q[(32'h0)+:(32)];
+        out_short0_at_c1 = plane$6$q[(32'h0)+:(32)];
+        out_short0_at_c2 = plane$7$q[(32'h0)+:(32)];
+        out_short0_inc0_z = inc0$4$q[(32'h0)+:(40)];
+        out_short0_inc0_c0 = inc0$5$q[(32'h0)+:(36)];
+        out_short0_inc0_c1 = inc0$6$q[(32'h0)+:(36)];
+        out_short0_inc0_c2 = inc0$7$q[(32'h0)+:(36)];
+        out_short0_inc1_z = inc1$4$q[(32'h0)+:(40)];
+        out_short0_inc1_c0 = inc1$5$q[(32'h0)+:(36)];
+        out_short0_inc1_c1 = inc1$6$q[(32'h0)+:(36)];
+        out_short0_inc1_c2 = inc1$7$q[(32'h0)+:(36)];
+        out_short1_j = cy$2[(frac)+:(13)];
+        out_short1_count = count$2;
+        out_short1_x = x$2$q[(32'h0)+:(13)];
+        out_short1_r = r$2$q;
+        out_short1_q = q$2$q[(32'h0)+:(17)];
+        out_short1_rho = rho$2$q;
+        out_short1_d = ed16$2[(32'h0)+:(21)];
+        out_short1_at_z = plane$8$q[(32'h0)+:(36)];
+        out_short1_at_c0 = plane$9$q[(32'h0)+:(32)];
+        out_short1_at_c1 = plane$10$q[(32'h0)+:(32)];
+        out_short1_at_c2 = plane$11$q[(32'h0)+:(32)];
+        out_short1_inc0_z = inc0$8$q[(32'h0)+:(40)];
+        out_short1_inc0_c0 = inc0$9$q[(32'h0)+:(36)];
+        out_short1_inc0_c1 = inc0$10$q[(32'h0)+:(36)];
+        out_short1_inc0_c2 = inc0$11$q[(32'h0)+:(36)];
+        out_short1_inc1_z = inc1$8$q[(32'h0)+:(40)];
+        out_short1_inc1_c0 = inc1$9$q[(32'h0)+:(36)];
+        out_short1_inc1_c1 = inc1$10$q[(32'h0)+:(36)];
+        out_short1_inc1_c2 = inc1$11$q[(32'h0)+:(36)];
+        out_ddx_z = ddx$0[(32'h0)+:(40)];
+        out_ddx_c0 = ddx$1[(32'h0)+:(36)];
+        out_ddx_c1 = ddx$2[(32'h0)+:(36)];
+        out_ddx_c2 = ddx$3[(32'h0)+:(36)];
+    end
+    
+endmodule // raster_top$triangle_setup
+
+
+module raster_top$triangle_setup$area(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$area
+
+
+module raster_top$triangle_setup$crosses(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$crosses
+
+
+module raster_top$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  [57:0] inp_n;
+    input wire  [33:0] inp_d;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [25:0] out_q;
+    output reg  [33:0] out_r;
+    
+    // Constant declarations
+    localparam  n_msb = 8'h39;
+    localparam  qm = 8'h19;
+    
+    // Stub signals
+    reg  stages$0$clock;
+    reg  stages$0$enable;
+    reg  stages$0$valid_in;
+    reg  [33:0] stages$0$p_in;
+    reg  [24:0] stages$0$x_in;
+    reg  [33:0] stages$0$d_in;
+    reg  stages$0$neg_in;
+    wire  stages$0$valid;
+    wire  [33:0] stages$0$p;
+    wire  [24:0] stages$0$x;
+    wire  [33:0] stages$0$d;
+    wire  stages$0$neg;
+    reg  stages$1$clock;
+    reg  stages$1$enable;
+    reg  stages$1$valid_in;
+    reg  [33:0] stages$1$p_in;
+    reg  [24:0] stages$1$x_in;
+    reg  [33:0] stages$1$d_in;
+    reg  stages$1$neg_in;
+    wire  stages$1$valid;
+    wire  [33:0] stages$1$p;
+    wire  [24:0] stages$1$x;
+    wire  [33:0] stages$1$d;
+    wire  stages$1$neg;
+    reg  stages$2$clock;
+    reg  stages$2$enable;
+    reg  stages$2$valid_in;
+    reg  [33:0] stages$2$p_in;
+    reg  [24:0] stages$2$x_in;
+    reg  [33:0] stages$2$d_in;
+    reg  stages$2$neg_in;
+    wire  stages$2$valid;
+    wire  [33:0] stages$2$p;
+    wire  [24:0] stages$2$x;
+    wire  [33:0] stages$2$d;
+    wire  stages$2$neg;
+    reg  stages$3$clock;
+    reg  stages$3$enable;
+    reg  stages$3$valid_in;
+    reg  [33:0] stages$3$p_in;
+    reg  [24:0] stages$3$x_in;
+    reg  [33:0] stages$3$d_in;
+    reg  stages$3$neg_in;
+    wire  stages$3$valid;
+    wire  [33:0] stages$3$p;
+    wire  [24:0] stages$3$x;
+    wire  [33:0] stages$3$d;
+    wire  stages$3$neg;
+    reg  stages$4$clock;
+    reg  stages$4$enable;
+    reg  stages$4$valid_in;
+    reg  [33:0] stages$4$p_in;
+    reg  [24:0] stages$4$x_in;
+    reg  [33:0] stages$4$d_in;
+    reg  stages$4$neg_in;
+    wire  stages$4$valid;
+    wire  [33:0] stages$4$p;
+    wire  [24:0] stages$4$x;
+    wire  [33:0] stages$4$d;
+    wire  stages$4$neg;
+    
+    // Local signals
+    reg  advance;
+    reg  [57:0] m;
+    reg  [24:0] last_x;
+    
+    // Sub module instances
+    raster_top$triangle_setup$div$stages$0 stages$0(
+        .clock(stages$0$clock),
+        .enable(stages$0$enable),
+        .valid_in(stages$0$valid_in),
+        .p_in(stages$0$p_in),
+        .x_in(stages$0$x_in),
+        .d_in(stages$0$d_in),
+        .neg_in(stages$0$neg_in),
+        .valid(stages$0$valid),
+        .p(stages$0$p),
+        .x(stages$0$x),
+        .d(stages$0$d),
+        .neg(stages$0$neg)
+    );
+    raster_top$triangle_setup$div$stages$1 stages$1(
+        .clock(stages$1$clock),
+        .enable(stages$1$enable),
+        .valid_in(stages$1$valid_in),
+        .p_in(stages$1$p_in),
+        .x_in(stages$1$x_in),
+        .d_in(stages$1$d_in),
+        .neg_in(stages$1$neg_in),
+        .valid(stages$1$valid),
+        .p(stages$1$p),
+        .x(stages$1$x),
+        .d(stages$1$d),
+        .neg(stages$1$neg)
+    );
+    raster_top$triangle_setup$div$stages$2 stages$2(
+        .clock(stages$2$clock),
+        .enable(stages$2$enable),
+        .valid_in(stages$2$valid_in),
+        .p_in(stages$2$p_in),
+        .x_in(stages$2$x_in),
+        .d_in(stages$2$d_in),
+        .neg_in(stages$2$neg_in),
+        .valid(stages$2$valid),
+        .p(stages$2$p),
+        .x(stages$2$x),
+        .d(stages$2$d),
+        .neg(stages$2$neg)
+    );
+    raster_top$triangle_setup$div$stages$3 stages$3(
+        .clock(stages$3$clock),
+        .enable(stages$3$enable),
+        .valid_in(stages$3$valid_in),
+        .p_in(stages$3$p_in),
+        .x_in(stages$3$x_in),
+        .d_in(stages$3$d_in),
+        .neg_in(stages$3$neg_in),
+        .valid(stages$3$valid),
+        .p(stages$3$p),
+        .x(stages$3$x),
+        .d(stages$3$d),
+        .neg(stages$3$neg)
+    );
+    raster_top$triangle_setup$div$stages$4 stages$4(
+        .clock(stages$4$clock),
+        .enable(stages$4$enable),
+        .valid_in(stages$4$valid_in),
+        .p_in(stages$4$p_in),
+        .x_in(stages$4$x_in),
+        .d_in(stages$4$d_in),
+        .neg_in(stages$4$neg_in),
+        .valid(stages$4$valid),
+        .p(stages$4$p),
+        .x(stages$4$x),
+        .d(stages$4$d),
+        .neg(stages$4$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        advance = ~stages$4$valid | out_ready;
+        out_valid = stages$4$valid;
+        last_x = stages$4$x;
+        out_r = stages$4$p;
+        if (stages$4$neg) begin
+            out_r = stages$4$d - stages$4$p - 32'h1;
+        end
+        out_q = ((last_x) & 26'h3ffffff);
+        if (stages$4$neg) begin
+            out_q = ~((last_x) & 26'h3ffffff);
+        end
+        stages$0$clock = clock;
+        stages$0$enable = advance;
+        stages$1$clock = clock;
+        stages$1$enable = advance;
+        stages$2$clock = clock;
+        stages$2$enable = advance;
+        stages$3$clock = clock;
+        stages$3$enable = advance;
+        stages$4$clock = clock;
+        stages$4$enable = advance;
+        inp_ready = advance;
+        m = inp_n;
+        if (inp_n[n_msb]) begin
+            m = ~inp_n;
+        end
+        stages$0$valid_in = inp_valid;
+        stages$0$p_in = ((m >> qm) & 34'h3ffffffff);
+        stages$0$x_in = m[(32'h0)+:(25)];
+        stages$0$d_in = inp_d;
+        stages$0$neg_in = inp_n[n_msb];
+        stages$1$valid_in = stages$0$valid;
+        stages$1$p_in = stages$0$p;
+        stages$1$x_in = stages$0$x;
+        stages$1$d_in = stages$0$d;
+        stages$1$neg_in = stages$0$neg;
+        stages$2$valid_in = stages$1$valid;
+        stages$2$p_in = stages$1$p;
+        stages$2$x_in = stages$1$x;
+        stages$2$d_in = stages$1$d;
+        stages$2$neg_in = stages$1$neg;
+        stages$3$valid_in = stages$2$valid;
+        stages$3$p_in = stages$2$p;
+        stages$3$x_in = stages$2$x;
+        stages$3$d_in = stages$2$d;
+        stages$3$neg_in = stages$2$neg;
+        stages$4$valid_in = stages$3$valid;
+        stages$4$p_in = stages$3$p;
+        stages$4$x_in = stages$3$x;
+        stages$4$d_in = stages$3$d;
+        stages$4$neg_in = stages$3$neg;
+    end
+    
+endmodule // raster_top$triangle_setup$div
+
+
+module raster_top$triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
+    reg  [34:0] tp$3;
+    reg  [34:0] tp$4;
+    reg  [34:0] tp$5;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
+    reg  [24:0] tx$3;
+    reg  [24:0] tx$4;
+    reg  [24:0] tx$5;
+    reg  [34:0] t$0;
+    reg  [34:0] t$1;
+    reg  [34:0] t$2;
+    reg  [34:0] t$3;
+    reg  [34:0] t$4;
+    reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
+    reg  [34:0] diff$2;
+    reg  [34:0] diff$3;
+    reg  [34:0] diff$4;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    raster_top$triangle_setup$div$stages$0$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$0$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$0$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$0$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$0$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
+        t$2 = tp$2 << 32'h1;
+        if (tx$2[x_msb]) begin
+            t$2 = (tp$2 << 32'h1) | 32'h1;
+        end
+        diff$2 = t$2 - d1;
+        if (diff$2[borrow]) begin
+            tp$3 = t$2;
+            tx$3 = tx$2 << 32'h1;
+        end
+        else begin
+            tp$3 = diff$2;
+            tx$3 = (tx$2 << 32'h1) | 32'h1;
+        end
+        t$3 = tp$3 << 32'h1;
+        if (tx$3[x_msb]) begin
+            t$3 = (tp$3 << 32'h1) | 32'h1;
+        end
+        diff$3 = t$3 - d1;
+        if (diff$3[borrow]) begin
+            tp$4 = t$3;
+            tx$4 = tx$3 << 32'h1;
+        end
+        else begin
+            tp$4 = diff$3;
+            tx$4 = (tx$3 << 32'h1) | 32'h1;
+        end
+        t$4 = tp$4 << 32'h1;
+        if (tx$4[x_msb]) begin
+            t$4 = (tp$4 << 32'h1) | 32'h1;
+        end
+        diff$4 = t$4 - d1;
+        if (diff$4[borrow]) begin
+            tp$5 = t$4;
+            tx$5 = tx$4 << 32'h1;
+        end
+        else begin
+            tp$5 = diff$4;
+            tx$5 = (tx$4 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$5[(32'h0)+:(34)];
+            x_r$d = tx$5;
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // raster_top$triangle_setup$div$stages$0
+
+
+module raster_top$triangle_setup$div$stages$0$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$0$d_r
+
+
+module raster_top$triangle_setup$div$stages$0$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$0$neg_r
+
+
+module raster_top$triangle_setup$div$stages$0$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$0$p_r
+
+
+module raster_top$triangle_setup$div$stages$0$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$0$valid_r
+
+
+module raster_top$triangle_setup$div$stages$0$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$0$x_r
+
+
+module raster_top$triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
+    reg  [34:0] tp$3;
+    reg  [34:0] tp$4;
+    reg  [34:0] tp$5;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
+    reg  [24:0] tx$3;
+    reg  [24:0] tx$4;
+    reg  [24:0] tx$5;
+    reg  [34:0] t$0;
+    reg  [34:0] t$1;
+    reg  [34:0] t$2;
+    reg  [34:0] t$3;
+    reg  [34:0] t$4;
+    reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
+    reg  [34:0] diff$2;
+    reg  [34:0] diff$3;
+    reg  [34:0] diff$4;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    raster_top$triangle_setup$div$stages$1$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$1$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$1$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$1$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$1$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
+        t$2 = tp$2 << 32'h1;
+        if (tx$2[x_msb]) begin
+            t$2 = (tp$2 << 32'h1) | 32'h1;
+        end
+        diff$2 = t$2 - d1;
+        if (diff$2[borrow]) begin
+            tp$3 = t$2;
+            tx$3 = tx$2 << 32'h1;
+        end
+        else begin
+            tp$3 = diff$2;
+            tx$3 = (tx$2 << 32'h1) | 32'h1;
+        end
+        t$3 = tp$3 << 32'h1;
+        if (tx$3[x_msb]) begin
+            t$3 = (tp$3 << 32'h1) | 32'h1;
+        end
+        diff$3 = t$3 - d1;
+        if (diff$3[borrow]) begin
+            tp$4 = t$3;
+            tx$4 = tx$3 << 32'h1;
+        end
+        else begin
+            tp$4 = diff$3;
+            tx$4 = (tx$3 << 32'h1) | 32'h1;
+        end
+        t$4 = tp$4 << 32'h1;
+        if (tx$4[x_msb]) begin
+            t$4 = (tp$4 << 32'h1) | 32'h1;
+        end
+        diff$4 = t$4 - d1;
+        if (diff$4[borrow]) begin
+            tp$5 = t$4;
+            tx$5 = tx$4 << 32'h1;
+        end
+        else begin
+            tp$5 = diff$4;
+            tx$5 = (tx$4 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$5[(32'h0)+:(34)];
+            x_r$d = tx$5;
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // raster_top$triangle_setup$div$stages$1
+
+
+module raster_top$triangle_setup$div$stages$1$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$1$d_r
+
+
+module raster_top$triangle_setup$div$stages$1$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$1$neg_r
+
+
+module raster_top$triangle_setup$div$stages$1$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$1$p_r
+
+
+module raster_top$triangle_setup$div$stages$1$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$1$valid_r
+
+
+module raster_top$triangle_setup$div$stages$1$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$1$x_r
+
+
+module raster_top$triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
+    reg  [34:0] tp$3;
+    reg  [34:0] tp$4;
+    reg  [34:0] tp$5;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
+    reg  [24:0] tx$3;
+    reg  [24:0] tx$4;
+    reg  [24:0] tx$5;
+    reg  [34:0] t$0;
+    reg  [34:0] t$1;
+    reg  [34:0] t$2;
+    reg  [34:0] t$3;
+    reg  [34:0] t$4;
+    reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
+    reg  [34:0] diff$2;
+    reg  [34:0] diff$3;
+    reg  [34:0] diff$4;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    raster_top$triangle_setup$div$stages$2$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$2$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$2$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$2$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$2$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
+        t$2 = tp$2 << 32'h1;
+        if (tx$2[x_msb]) begin
+            t$2 = (tp$2 << 32'h1) | 32'h1;
+        end
+        diff$2 = t$2 - d1;
+        if (diff$2[borrow]) begin
+            tp$3 = t$2;
+            tx$3 = tx$2 << 32'h1;
+        end
+        else begin
+            tp$3 = diff$2;
+            tx$3 = (tx$2 << 32'h1) | 32'h1;
+        end
+        t$3 = tp$3 << 32'h1;
+        if (tx$3[x_msb]) begin
+            t$3 = (tp$3 << 32'h1) | 32'h1;
+        end
+        diff$3 = t$3 - d1;
+        if (diff$3[borrow]) begin
+            tp$4 = t$3;
+            tx$4 = tx$3 << 32'h1;
+        end
+        else begin
+            tp$4 = diff$3;
+            tx$4 = (tx$3 << 32'h1) | 32'h1;
+        end
+        t$4 = tp$4 << 32'h1;
+        if (tx$4[x_msb]) begin
+            t$4 = (tp$4 << 32'h1) | 32'h1;
+        end
+        diff$4 = t$4 - d1;
+        if (diff$4[borrow]) begin
+            tp$5 = t$4;
+            tx$5 = tx$4 << 32'h1;
+        end
+        else begin
+            tp$5 = diff$4;
+            tx$5 = (tx$4 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$5[(32'h0)+:(34)];
+            x_r$d = tx$5;
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // raster_top$triangle_setup$div$stages$2
+
+
+module raster_top$triangle_setup$div$stages$2$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$2$d_r
+
+
+module raster_top$triangle_setup$div$stages$2$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$2$neg_r
+
+
+module raster_top$triangle_setup$div$stages$2$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$2$p_r
+
+
+module raster_top$triangle_setup$div$stages$2$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$2$valid_r
+
+
+module raster_top$triangle_setup$div$stages$2$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$2$x_r
+
+
+module raster_top$triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
+    reg  [34:0] tp$3;
+    reg  [34:0] tp$4;
+    reg  [34:0] tp$5;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
+    reg  [24:0] tx$3;
+    reg  [24:0] tx$4;
+    reg  [24:0] tx$5;
+    reg  [34:0] t$0;
+    reg  [34:0] t$1;
+    reg  [34:0] t$2;
+    reg  [34:0] t$3;
+    reg  [34:0] t$4;
+    reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
+    reg  [34:0] diff$2;
+    reg  [34:0] diff$3;
+    reg  [34:0] diff$4;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    raster_top$triangle_setup$div$stages$3$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$3$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$3$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$3$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$3$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
+        t$2 = tp$2 << 32'h1;
+        if (tx$2[x_msb]) begin
+            t$2 = (tp$2 << 32'h1) | 32'h1;
+        end
+        diff$2 = t$2 - d1;
+        if (diff$2[borrow]) begin
+            tp$3 = t$2;
+            tx$3 = tx$2 << 32'h1;
+        end
+        else begin
+            tp$3 = diff$2;
+            tx$3 = (tx$2 << 32'h1) | 32'h1;
+        end
+        t$3 = tp$3 << 32'h1;
+        if (tx$3[x_msb]) begin
+            t$3 = (tp$3 << 32'h1) | 32'h1;
+        end
+        diff$3 = t$3 - d1;
+        if (diff$3[borrow]) begin
+            tp$4 = t$3;
+            tx$4 = tx$3 << 32'h1;
+        end
+        else begin
+            tp$4 = diff$3;
+            tx$4 = (tx$3 << 32'h1) | 32'h1;
+        end
+        t$4 = tp$4 << 32'h1;
+        if (tx$4[x_msb]) begin
+            t$4 = (tp$4 << 32'h1) | 32'h1;
+        end
+        diff$4 = t$4 - d1;
+        if (diff$4[borrow]) begin
+            tp$5 = t$4;
+            tx$5 = tx$4 << 32'h1;
+        end
+        else begin
+            tp$5 = diff$4;
+            tx$5 = (tx$4 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$5[(32'h0)+:(34)];
+            x_r$d = tx$5;
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // raster_top$triangle_setup$div$stages$3
+
+
+module raster_top$triangle_setup$div$stages$3$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$3$d_r
+
+
+module raster_top$triangle_setup$div$stages$3$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$3$neg_r
+
+
+module raster_top$triangle_setup$div$stages$3$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$3$p_r
+
+
+module raster_top$triangle_setup$div$stages$3$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$3$valid_r
+
+
+module raster_top$triangle_setup$div$stages$3$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$3$x_r
+
+
+module raster_top$triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
+    reg  [34:0] tp$3;
+    reg  [34:0] tp$4;
+    reg  [34:0] tp$5;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
+    reg  [24:0] tx$3;
+    reg  [24:0] tx$4;
+    reg  [24:0] tx$5;
+    reg  [34:0] t$0;
+    reg  [34:0] t$1;
+    reg  [34:0] t$2;
+    reg  [34:0] t$3;
+    reg  [34:0] t$4;
+    reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
+    reg  [34:0] diff$2;
+    reg  [34:0] diff$3;
+    reg  [34:0] diff$4;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    raster_top$triangle_setup$div$stages$4$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$4$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$4$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$4$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    raster_top$triangle_setup$div$stages$4$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
+        t$2 = tp$2 << 32'h1;
+        if (tx$2[x_msb]) begin
+            t$2 = (tp$2 << 32'h1) | 32'h1;
+        end
+        diff$2 = t$2 - d1;
+        if (diff$2[borrow]) begin
+            tp$3 = t$2;
+            tx$3 = tx$2 << 32'h1;
+        end
+        else begin
+            tp$3 = diff$2;
+            tx$3 = (tx$2 << 32'h1) | 32'h1;
+        end
+        t$3 = tp$3 << 32'h1;
+        if (tx$3[x_msb]) begin
+            t$3 = (tp$3 << 32'h1) | 32'h1;
+        end
+        diff$3 = t$3 - d1;
+        if (diff$3[borrow]) begin
+            tp$4 = t$3;
+            tx$4 = tx$3 << 32'h1;
+        end
+        else begin
+            tp$4 = diff$3;
+            tx$4 = (tx$3 << 32'h1) | 32'h1;
+        end
+        t$4 = tp$4 << 32'h1;
+        if (tx$4[x_msb]) begin
+            t$4 = (tp$4 << 32'h1) | 32'h1;
+        end
+        diff$4 = t$4 - d1;
+        if (diff$4[borrow]) begin
+            tp$5 = t$4;
+            tx$5 = tx$4 << 32'h1;
+        end
+        else begin
+            tp$5 = diff$4;
+            tx$5 = (tx$4 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$5[(32'h0)+:(34)];
+            x_r$d = tx$5;
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // raster_top$triangle_setup$div$stages$4
+
+
+module raster_top$triangle_setup$div$stages$4$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$4$d_r
+
+
+module raster_top$triangle_setup$div$stages$4$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$4$neg_r
+
+
+module raster_top$triangle_setup$div$stages$4$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$4$p_r
+
+
+module raster_top$triangle_setup$div$stages$4$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$4$valid_r
+
+
+module raster_top$triangle_setup$div$stages$4$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$div$stages$4$x_r
+
+
+module raster_top$triangle_setup$exp(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$exp
+
+
+module raster_top$triangle_setup$gx$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$gx$0
+
+
+module raster_top$triangle_setup$gx$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$gx$1
+
+
+module raster_top$triangle_setup$gx$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$gx$2
+
+
+module raster_top$triangle_setup$gx$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$gx$3
+
+
+module raster_top$triangle_setup$gy$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$gy$0
+
+
+module raster_top$triangle_setup$gy$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$gy$1
+
+
+module raster_top$triangle_setup$gy$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$gy$2
+
+
+module raster_top$triangle_setup$gy$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$gy$3
+
+
+module raster_top$triangle_setup$inc0$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc0$0
+
+
+module raster_top$triangle_setup$inc0$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc0$1
+
+
+module raster_top$triangle_setup$inc0$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc0$10
+
+
+module raster_top$triangle_setup$inc0$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc0$11
+
+
+module raster_top$triangle_setup$inc0$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc0$2
+
+
+module raster_top$triangle_setup$inc0$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc0$3
+
+
+module raster_top$triangle_setup$inc0$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc0$4
+
+
+module raster_top$triangle_setup$inc0$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc0$5
+
+
+module raster_top$triangle_setup$inc0$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc0$6
+
+
+module raster_top$triangle_setup$inc0$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc0$7
+
+
+module raster_top$triangle_setup$inc0$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc0$8
+
+
+module raster_top$triangle_setup$inc0$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc0$9
+
+
+module raster_top$triangle_setup$inc1$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc1$0
+
+
+module raster_top$triangle_setup$inc1$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc1$1
+
+
+module raster_top$triangle_setup$inc1$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc1$10
+
+
+module raster_top$triangle_setup$inc1$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc1$11
+
+
+module raster_top$triangle_setup$inc1$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc1$2
+
+
+module raster_top$triangle_setup$inc1$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc1$3
+
+
+module raster_top$triangle_setup$inc1$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc1$4
+
+
+module raster_top$triangle_setup$inc1$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc1$5
+
+
+module raster_top$triangle_setup$inc1$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc1$6
+
+
+module raster_top$triangle_setup$inc1$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc1$7
+
+
+module raster_top$triangle_setup$inc1$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc1$8
+
+
+module raster_top$triangle_setup$inc1$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$inc1$9
+
+
+module raster_top$triangle_setup$mant(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$mant
+
+
+module raster_top$triangle_setup$mul$0(a,b,p);
+    
+    // Module arguments
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // raster_top$triangle_setup$mul$0
+
+
+module raster_top$triangle_setup$mul$1(a,b,p);
+    
+    // Module arguments
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // raster_top$triangle_setup$mul$1
+
+
+module raster_top$triangle_setup$mul$2(a,b,p);
+    
+    // Module arguments
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // raster_top$triangle_setup$mul$2
+
+
+module raster_top$triangle_setup$mul$3(a,b,p);
+    
+    // Module arguments
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // raster_top$triangle_setup$mul$3
+
+
+module raster_top$triangle_setup$mul$4(a,b,p);
+    
+    // Module arguments
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // raster_top$triangle_setup$mul$4
+
+
+module raster_top$triangle_setup$mul$5(a,b,p);
+    
+    // Module arguments
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // raster_top$triangle_setup$mul$5
+
+
+module raster_top$triangle_setup$mul$6(a,b,p);
+    
+    // Module arguments
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // raster_top$triangle_setup$mul$6
+
+
+module raster_top$triangle_setup$num$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$num$0
+
+
+module raster_top$triangle_setup$num$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$num$1
+
+
+module raster_top$triangle_setup$num$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$num$2
+
+
+module raster_top$triangle_setup$p$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$p$0
+
+
+module raster_top$triangle_setup$p$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$p$1
+
+
+module raster_top$triangle_setup$p$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$p$2
+
+
+module raster_top$triangle_setup$p$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$p$3
+
+
+module raster_top$triangle_setup$plane$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$plane$0
+
+
+module raster_top$triangle_setup$plane$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$plane$1
+
+
+module raster_top$triangle_setup$plane$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$plane$10
+
+
+module raster_top$triangle_setup$plane$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$plane$11
+
+
+module raster_top$triangle_setup$plane$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$plane$2
+
+
+module raster_top$triangle_setup$plane$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$plane$3
+
+
+module raster_top$triangle_setup$plane$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$plane$4
+
+
+module raster_top$triangle_setup$plane$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$plane$5
+
+
+module raster_top$triangle_setup$plane$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$plane$6
+
+
+module raster_top$triangle_setup$plane$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$plane$7
+
+
+module raster_top$triangle_setup$plane$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$plane$8
+
+
+module raster_top$triangle_setup$plane$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$plane$9
+
+
+module raster_top$triangle_setup$q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$q$0
+
+
+module raster_top$triangle_setup$q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$q$1
+
+
+module raster_top$triangle_setup$q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$q$2
+
+
+module raster_top$triangle_setup$r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$r$0
+
+
+module raster_top$triangle_setup$r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$r$1
+
+
+module raster_top$triangle_setup$r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$r$2
+
+
+module raster_top$triangle_setup$rho$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$rho$0
+
+
+module raster_top$triangle_setup$rho$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$rho$1
+
+
+module raster_top$triangle_setup$rho$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$rho$2
+
+
+module raster_top$triangle_setup$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$t
+
+
+module raster_top$triangle_setup$vc$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vc$0
+
+
+module raster_top$triangle_setup$vc$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vc$1
+
+
+module raster_top$triangle_setup$vc$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vc$2
+
+
+module raster_top$triangle_setup$vc$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vc$3
+
+
+module raster_top$triangle_setup$vc$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vc$4
+
+
+module raster_top$triangle_setup$vc$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vc$5
+
+
+module raster_top$triangle_setup$vc$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vc$6
+
+
+module raster_top$triangle_setup$vc$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vc$7
+
+
+module raster_top$triangle_setup$vc$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vc$8
+
+
+module raster_top$triangle_setup$vx$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vx$0
+
+
+module raster_top$triangle_setup$vx$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vx$1
+
+
+module raster_top$triangle_setup$vx$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vx$2
+
+
+module raster_top$triangle_setup$vy$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vy$0
+
+
+module raster_top$triangle_setup$vy$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vy$1
+
+
+module raster_top$triangle_setup$vy$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vy$2
+
+
+module raster_top$triangle_setup$vz$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vz$0
+
+
+module raster_top$triangle_setup$vz$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vz$1
+
+
+module raster_top$triangle_setup$vz$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$vz$2
+
+
+module raster_top$triangle_setup$x$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$x$0
+
+
+module raster_top$triangle_setup$x$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$x$1
+
+
+module raster_top$triangle_setup$x$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$triangle_setup$x$2

@@ -1,0 +1,1060 @@
+
+
+module span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_x,out_y,out_z,out_rgb0,out_rgb1,out_rgb2,idle);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [10:0] width;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  [9:0] inp_y;
+    input wire  [12:0] inp_xl;
+    input wire  [12:0] inp_xr;
+    input wire  [35:0] inp_left_z;
+    input wire  [31:0] inp_left_c0;
+    input wire  [31:0] inp_left_c1;
+    input wire  [31:0] inp_left_c2;
+    input wire  [35:0] inp_right_z;
+    input wire  [31:0] inp_right_c0;
+    input wire  [31:0] inp_right_c1;
+    input wire  [31:0] inp_right_c2;
+    input wire  [39:0] inp_ddx_z;
+    input wire  [35:0] inp_ddx_c0;
+    input wire  [35:0] inp_ddx_c1;
+    input wire  [35:0] inp_ddx_c2;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [9:0] out_x;
+    output reg  [9:0] out_y;
+    output reg  [15:0] out_z;
+    output reg  [7:0] out_rgb0;
+    output reg  [7:0] out_rgb1;
+    output reg  [7:0] out_rgb2;
+    output reg  idle;
+    
+    // Stub signals
+    reg  busy$d;
+    wire  busy$q;
+    reg  busy$clock;
+    reg  drop$d;
+    wire  drop$q;
+    reg  drop$clock;
+    reg  left$d;
+    wire  left$q;
+    reg  left$clock;
+    reg  [12:0] x$d;
+    wire  [12:0] x$q;
+    reg  x$clock;
+    reg  [12:0] last$d;
+    wire  [12:0] last$q;
+    reg  last$clock;
+    reg  [9:0] y$d;
+    wire  [9:0] y$q;
+    reg  y$clock;
+    reg  [35:0] a_z$d;
+    wire  [35:0] a_z$q;
+    reg  a_z$clock;
+    reg  [31:0] a_c0$d;
+    wire  [31:0] a_c0$q;
+    reg  a_c0$clock;
+    reg  [31:0] a_c1$d;
+    wire  [31:0] a_c1$q;
+    reg  a_c1$clock;
+    reg  [31:0] a_c2$d;
+    wire  [31:0] a_c2$q;
+    reg  a_c2$clock;
+    reg  [35:0] d_z$d;
+    wire  [35:0] d_z$q;
+    reg  d_z$clock;
+    reg  [31:0] d_c0$d;
+    wire  [31:0] d_c0$q;
+    reg  d_c0$clock;
+    reg  [31:0] d_c1$d;
+    wire  [31:0] d_c1$q;
+    reg  d_c1$clock;
+    reg  [31:0] d_c2$d;
+    wire  [31:0] d_c2$q;
+    reg  d_c2$clock;
+    reg  [35:0] zl$x;
+    wire  zl$neg;
+    wire  zl$over;
+    wire  [15:0] zl$low;
+    reg  [35:0] zr$x;
+    wire  zr$neg;
+    wire  zr$over;
+    wire  [15:0] zr$low;
+    reg  [12:0] xl_neg$x;
+    wire  xl_neg$neg;
+    reg  [12:0] xr_neg$x;
+    wire  xr_neg$neg;
+    reg  [35:0] zp$x;
+    wire  zp$neg;
+    wire  zp$over;
+    wire  [15:0] zp$low;
+    reg  [31:0] c0$x;
+    wire  c0$neg;
+    wire  c0$over;
+    wire  [7:0] c0$low;
+    reg  [31:0] c1$x;
+    wire  c1$neg;
+    wire  c1$over;
+    wire  [7:0] c1$low;
+    reg  [31:0] c2$x;
+    wire  c2$neg;
+    wire  c2$over;
+    wire  [7:0] c2$low;
+    reg  [12:0] xl_on$a;
+    reg  [12:0] xl_on$b;
+    wire  xl_on$lt;
+    
+    // Local signals
+    reg  [12:0] width_x;
+    reg  valid;
+    reg  at_last;
+    reg  advance;
+    reg  ready;
+    reg  accept;
+    
+    // Sub module instances
+    span$busy busy(
+        .d(busy$d),
+        .q(busy$q),
+        .clock(busy$clock)
+    );
+    span$drop drop(
+        .d(drop$d),
+        .q(drop$q),
+        .clock(drop$clock)
+    );
+    span$left left(
+        .d(left$d),
+        .q(left$q),
+        .clock(left$clock)
+    );
+    span$x x(
+        .d(x$d),
+        .q(x$q),
+        .clock(x$clock)
+    );
+    span$last last(
+        .d(last$d),
+        .q(last$q),
+        .clock(last$clock)
+    );
+    span$y y(
+        .d(y$d),
+        .q(y$q),
+        .clock(y$clock)
+    );
+    span$a_z a_z(
+        .d(a_z$d),
+        .q(a_z$q),
+        .clock(a_z$clock)
+    );
+    span$a_c0 a_c0(
+        .d(a_c0$d),
+        .q(a_c0$q),
+        .clock(a_c0$clock)
+    );
+    span$a_c1 a_c1(
+        .d(a_c1$d),
+        .q(a_c1$q),
+        .clock(a_c1$clock)
+    );
+    span$a_c2 a_c2(
+        .d(a_c2$d),
+        .q(a_c2$q),
+        .clock(a_c2$clock)
+    );
+    span$d_z d_z(
+        .d(d_z$d),
+        .q(d_z$q),
+        .clock(d_z$clock)
+    );
+    span$d_c0 d_c0(
+        .d(d_c0$d),
+        .q(d_c0$q),
+        .clock(d_c0$clock)
+    );
+    span$d_c1 d_c1(
+        .d(d_c1$d),
+        .q(d_c1$q),
+        .clock(d_c1$clock)
+    );
+    span$d_c2 d_c2(
+        .d(d_c2$d),
+        .q(d_c2$q),
+        .clock(d_c2$clock)
+    );
+    span$zl zl(
+        .x(zl$x),
+        .neg(zl$neg),
+        .over(zl$over),
+        .low(zl$low)
+    );
+    span$zr zr(
+        .x(zr$x),
+        .neg(zr$neg),
+        .over(zr$over),
+        .low(zr$low)
+    );
+    span$xl_neg xl_neg(
+        .x(xl_neg$x),
+        .neg(xl_neg$neg)
+    );
+    span$xr_neg xr_neg(
+        .x(xr_neg$x),
+        .neg(xr_neg$neg)
+    );
+    span$zp zp(
+        .x(zp$x),
+        .neg(zp$neg),
+        .over(zp$over),
+        .low(zp$low)
+    );
+    span$c0 c0(
+        .x(c0$x),
+        .neg(c0$neg),
+        .over(c0$over),
+        .low(c0$low)
+    );
+    span$c1 c1(
+        .x(c1$x),
+        .neg(c1$neg),
+        .over(c1$over),
+        .low(c1$low)
+    );
+    span$c2 c2(
+        .x(c2$x),
+        .neg(c2$neg),
+        .over(c2$over),
+        .low(c2$low)
+    );
+    span$xl_on xl_on(
+        .a(xl_on$a),
+        .b(xl_on$b),
+        .lt(xl_on$lt)
+    );
+    
+    // Update code
+    always @(*) begin
+        busy$clock = clock;
+        drop$clock = clock;
+        left$clock = clock;
+        x$clock = clock;
+        last$clock = clock;
+        y$clock = clock;
+        a_z$clock = clock;
+        a_c0$clock = clock;
+        a_c1$clock = clock;
+        a_c2$clock = clock;
+        d_z$clock = clock;
+        d_c0$clock = clock;
+        d_c1$clock = clock;
+        d_c2$clock = clock;
+        busy$d = busy$q;
+        drop$d = drop$q;
+        left$d = left$q;
+        x$d = x$q;
+        last$d = last$q;
+        y$d = y$q;
+        a_z$d = a_z$q;
+        a_c0$d = a_c0$q;
+        a_c1$d = a_c1$q;
+        a_c2$d = a_c2$q;
+        d_z$d = d_z$q;
+        d_c0$d = d_c0$q;
+        d_c1$d = d_c1$q;
+        d_c2$d = d_c2$q;
+        width_x = ((width) & 13'h1fff);
+        zp$x = a_z$q;
+        c0$x = a_c0$q;
+        c1$x = a_c1$q;
+        c2$x = a_c2$q;
+        valid = busy$q & ~drop$q & (x$q < width_x) & ~zp$neg & ~zp$over;
+        out_valid = valid;
+        out_x = ((x$q) & 10'h3ff);
+        out_y = y$q;
+        out_z = zp$low;
+        out_rgb0 = c0$low;
+        if (c0$over) begin
+            out_rgb0 = 32'hff;
+        end
+        if (c0$neg) begin
+            out_rgb0 = 32'h0;
+        end
+        out_rgb1 = c1$low;
+        if (c1$over) begin
+            out_rgb1 = 32'hff;
+        end
+        if (c1$neg) begin
+            out_rgb1 = 32'h0;
+        end
+        out_rgb2 = c2$low;
+        if (c2$over) begin
+            out_rgb2 = 32'hff;
+        end
+        if (c2$neg) begin
+            out_rgb2 = 32'h0;
+        end
+        idle = ~busy$q;
+        at_last = drop$q | (x$q == last$q);
+        advance = busy$q & (~valid | out_ready);
+        ready = ~busy$q | (at_last & advance);
+        inp_ready = ready;
+        accept = inp_valid & ready;
+        if (advance) begin
+            if (at_last) begin
+                busy$d = 1'b0;
+            end
+            else begin
+                if (left$q) begin
+                    x$d = x$q - 32'h1;
+                    a_z$d = a_z$q - d_z$q;
+                    a_c0$d = a_c0$q - d_c0$q;
+                    a_c1$d = a_c1$q - d_c1$q;
+                    a_c2$d = a_c2$q - d_c2$q;
+                end
+                else begin
+                    x$d = x$q + 32'h1;
+                    a_z$d = a_z$q + d_z$q;
+                    a_c0$d = a_c0$q + d_c0$q;
+                    a_c1$d = a_c1$q + d_c1$q;
+                    a_c2$d = a_c2$q + d_c2$q;
+                end
+            end
+        end
+        zl$x = inp_left_z;
+        zr$x = inp_right_z;
+        xl_neg$x = inp_xl;
+        xr_neg$x = inp_xr;
+        xl_on$a = inp_xl;
+        xl_on$b = width_x;
+        if (accept) begin
+            busy$d = 1'b1;
+            drop$d = ~xl_on$lt | xr_neg$neg | (zl$neg & zr$neg) | (zl$over & zr$over);
+            y$d = inp_y;
+            d_z$d = ((inp_ddx_z) & 36'hfffffffff);
+            d_c0$d = ((inp_ddx_c0) & 32'hffffffff);
+            d_c1$d = ((inp_ddx_c1) & 32'hffffffff);
+            d_c2$d = ((inp_ddx_c2) & 32'hffffffff);
+            left$d = xl_neg$neg;
+            if (xl_neg$neg) begin
+                x$d = inp_xr;
+                last$d = 32'h0;
+                a_z$d = inp_right_z;
+                a_c0$d = inp_right_c0;
+                a_c1$d = inp_right_c1;
+                a_c2$d = inp_right_c2;
+            end
+            else begin
+                x$d = inp_xl;
+                last$d = inp_xr;
+                if (inp_xr >= width_x) begin
+                    last$d = width_x - 32'h1;
+                end
+                a_z$d = inp_left_z;
+                a_c0$d = inp_left_c0;
+                a_c1$d = inp_left_c1;
+                a_c2$d = inp_left_c2;
+            end
+        end
+    end
+    
+endmodule // span
+
+
+module span$a_c0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$a_c0
+
+
+module span$a_c1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$a_c1
+
+
+module span$a_c2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$a_c2
+
+
+module span$a_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$a_z
+
+
+module span$busy(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$busy
+
+
+module span$c0(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [7:0] low;
+    
+    // Constant declarations
+    localparam  top = 33'h100000000;
+    localparam  half = 33'h200000;
+    localparam  shift = 8'h16;
+    localparam  limit = 33'h100;
+    
+    // Stub signals
+    reg  [31:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [32:0] ext;
+    reg  [32:0] sum;
+    reg  [32:0] shifted;
+    
+    // Sub module instances
+    span$c0$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 33'h1ffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 33'h1ffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 8'hff);
+    end
+    
+endmodule // span$c0
+
+
+module span$c0$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 32'h80000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // span$c0$x_neg
+
+
+module span$c1(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [7:0] low;
+    
+    // Constant declarations
+    localparam  top = 33'h100000000;
+    localparam  half = 33'h200000;
+    localparam  shift = 8'h16;
+    localparam  limit = 33'h100;
+    
+    // Stub signals
+    reg  [31:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [32:0] ext;
+    reg  [32:0] sum;
+    reg  [32:0] shifted;
+    
+    // Sub module instances
+    span$c1$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 33'h1ffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 33'h1ffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 8'hff);
+    end
+    
+endmodule // span$c1
+
+
+module span$c1$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 32'h80000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // span$c1$x_neg
+
+
+module span$c2(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [7:0] low;
+    
+    // Constant declarations
+    localparam  top = 33'h100000000;
+    localparam  half = 33'h200000;
+    localparam  shift = 8'h16;
+    localparam  limit = 33'h100;
+    
+    // Stub signals
+    reg  [31:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [32:0] ext;
+    reg  [32:0] sum;
+    reg  [32:0] shifted;
+    
+    // Sub module instances
+    span$c2$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 33'h1ffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 33'h1ffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 8'hff);
+    end
+    
+endmodule // span$c2
+
+
+module span$c2$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 32'h80000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // span$c2$x_neg
+
+
+module span$d_c0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$d_c0
+
+
+module span$d_c1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$d_c1
+
+
+module span$d_c2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$d_c2
+
+
+module span$d_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$d_z
+
+
+module span$drop(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$drop
+
+
+module span$last(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$last
+
+
+module span$left(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$left
+
+
+module span$x(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$x
+
+
+module span$xl_neg(x,neg);
+    
+    // Module arguments
+    input wire  [12:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 13'b1000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // span$xl_neg
+
+
+module span$xl_on(a,b,lt);
+    
+    // Module arguments
+    input wire  [12:0] a;
+    input wire  [12:0] b;
+    output reg  lt;
+    
+    // Constant declarations
+    localparam  half = 13'b1000000000000;
+    
+    // Update code
+    always @(*) begin
+        lt = (a ^ half) < (b ^ half);
+    end
+    
+endmodule // span$xl_on
+
+
+module span$xr_neg(x,neg);
+    
+    // Module arguments
+    input wire  [12:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 13'b1000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // span$xr_neg
+
+
+module span$y(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$y
+
+
+module span$zl(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [15:0] low;
+    
+    // Constant declarations
+    localparam  top = 37'h1000000000;
+    localparam  half = 37'h20000;
+    localparam  shift = 8'h12;
+    localparam  limit = 37'h10000;
+    
+    // Stub signals
+    reg  [35:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [36:0] ext;
+    reg  [36:0] sum;
+    reg  [36:0] shifted;
+    
+    // Sub module instances
+    span$zl$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 37'h1fffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 37'h1fffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 16'hffff);
+    end
+    
+endmodule // span$zl
+
+
+module span$zl$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 36'h800000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // span$zl$x_neg
+
+
+module span$zp(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [15:0] low;
+    
+    // Constant declarations
+    localparam  top = 37'h1000000000;
+    localparam  half = 37'h20000;
+    localparam  shift = 8'h12;
+    localparam  limit = 37'h10000;
+    
+    // Stub signals
+    reg  [35:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [36:0] ext;
+    reg  [36:0] sum;
+    reg  [36:0] shifted;
+    
+    // Sub module instances
+    span$zp$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 37'h1fffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 37'h1fffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 16'hffff);
+    end
+    
+endmodule // span$zp
+
+
+module span$zp$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 36'h800000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // span$zp$x_neg
+
+
+module span$zr(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [15:0] low;
+    
+    // Constant declarations
+    localparam  top = 37'h1000000000;
+    localparam  half = 37'h20000;
+    localparam  shift = 8'h12;
+    localparam  limit = 37'h10000;
+    
+    // Stub signals
+    reg  [35:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [36:0] ext;
+    reg  [36:0] sum;
+    reg  [36:0] shifted;
+    
+    // Sub module instances
+    span$zr$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 37'h1fffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 37'h1fffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 16'hffff);
+    end
+    
+endmodule // span$zr
+
+
+module span$zr$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 36'h800000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // span$zr$x_neg

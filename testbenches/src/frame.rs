@@ -1,0 +1,345 @@
+//! Whole frames through `raster_top`: triangles in (the model's `Vtx` words, as
+//! `model::input::to_fixed` makes them), the depth and colour buffers in Rust
+//! ([`Memory`]), the image and the cycle counts out. The frame simulation of `edgepaint
+//! render --engine rtl` and of the `raster_top` tests.
+//!
+//! Cycle 0 is the first cycle the first triangle is offered; a triangle is offered as soon
+//! as the one before it is taken (back to back, as `model::cycles` assumes). The frame
+//! takes [`FrameOut::cycles`] cycles: `done` is first high in that cycle.
+
+use crate::memory::{Memory, ReadDuringWrite, Request};
+use crate::streams::{as_pins, raw, unsigned};
+use crate::verilated::IGNORED_WARNINGS;
+use crate::{check_verilator, target_dir, write_if_changed, Dual, Pins, Value};
+use marlin::verilator::{VerilatorRuntime, VerilatorRuntimeOptions};
+use marlin::verilog::prelude::*;
+use model::cull_sort::{z_max, Cull};
+use model::input::Vtx;
+use model::span::Pixel;
+use rtl::cull_sort::{COLOR, INV_W, XY, Z};
+use rtl::raster_top::RasterTop;
+use rtl::widths::{CHANNEL, DEPTH, DIM, FORMATS, SCREEN};
+use rust_hdl::prelude::Block;
+use std::path::{Path, PathBuf};
+
+/// `raster_top`'s inputs in one cycle.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Drive {
+    pub width: u32,
+    pub height: u32,
+    pub cull_back: bool,
+    pub inp_valid: bool,
+    pub inp_last: bool,
+    /// The triangle offered (`inp_v<k>_*`).
+    pub tri: [Vtx; 3],
+    pub mem_ready: bool,
+    pub rd_z: u32,
+}
+
+/// `raster_top`'s outputs in one cycle, sampled before the clock edge.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Sense {
+    pub inp_ready: bool,
+    pub verdict_valid: bool,
+    pub verdict_code: u8,
+    pub req: Request,
+    pub done: bool,
+}
+
+/// One clock of `raster_top`, in any simulator: drive the inputs, settle, sample the
+/// outputs, clock.
+pub trait Cycle {
+    fn cycle(&mut self, d: &Drive) -> Result<Sense, String>;
+}
+
+/// `v` in the low `width` bits (two's complement).
+fn low(width: usize, v: i128) -> u64 {
+    (v as u64) & (u64::MAX >> (64 - width))
+}
+
+/// The named port values of `d`, for the simulators driven by name.
+fn named(d: &Drive) -> Vec<(String, Value)> {
+    let mut out = vec![
+        ("width".to_owned(), Value::new(DIM, d.width as u128)),
+        ("height".into(), Value::new(DIM, d.height as u128)),
+        ("cull_back".into(), Value::new(1, d.cull_back as u128)),
+        ("inp_valid".into(), Value::new(1, d.inp_valid as u128)),
+        ("inp_last".into(), Value::new(1, d.inp_last as u128)),
+        ("mem_ready".into(), Value::new(1, d.mem_ready as u128)),
+        ("rd_z".into(), Value::new(DEPTH, d.rd_z as u128)),
+    ];
+    for (k, v) in d.tri.iter().enumerate() {
+        let p = |f: &str| format!("inp_v{k}_{f}");
+        out.push((p("x"), raw(XY, v.x)));
+        out.push((p("y"), raw(XY, v.y)));
+        out.push((p("z"), raw(Z, v.z)));
+        for (i, c) in v.c.iter().enumerate() {
+            out.push((p(&format!("c{i}")), raw(COLOR, *c)));
+        }
+        out.push((p("iw"), raw(INV_W, v.iw)));
+    }
+    out
+}
+
+/// rust-hdl and Verilator in lockstep: every output compared every cycle.
+impl<U: Block + Pins> Cycle for Dual<'_, U> {
+    fn cycle(&mut self, d: &Drive) -> Result<Sense, String> {
+        let pins = named(d);
+        let o = Dual::cycle(self, &as_pins(&pins)).map_err(|m| m.to_string())?;
+        let high = |pin: &str| unsigned(o.get(pin)) == 1;
+        Ok(Sense {
+            inp_ready: high("inp_ready"),
+            verdict_valid: high("verdict_valid"),
+            verdict_code: unsigned(o.get("verdict_code")) as u8,
+            req: Request::of(&o),
+            done: high("done"),
+        })
+    }
+}
+
+/// `raster_top` under Verilator through marlin's static model: the ANSI wrapper
+/// `verilog/raster_top_ansi.sv` (`rtl::emit::ansi_wrapper`, kept fresh by the test
+/// `raster_top_ansi_wrapper_is_fresh`) around `raster_top`.
+#[verilog(src = "verilog/raster_top_ansi.sv", name = "raster_top_ansi")]
+pub struct RasterTopVl;
+
+impl Cycle for RasterTopVl<'_> {
+    fn cycle(&mut self, d: &Drive) -> Result<Sense, String> {
+        self.width = d.width as _;
+        self.height = d.height as _;
+        self.cull_back = d.cull_back as _;
+        self.inp_valid = d.inp_valid as _;
+        self.inp_last = d.inp_last as _;
+        self.mem_ready = d.mem_ready as _;
+        self.rd_z = d.rd_z as _;
+        let [v0, v1, v2] = d.tri;
+        (self.inp_v0_x, self.inp_v0_y, self.inp_v0_z) = (low(XY, v0.x) as _, low(XY, v0.y) as _, low(Z, v0.z) as _);
+        (self.inp_v0_c0, self.inp_v0_c1, self.inp_v0_c2) = (v0.c[0] as _, v0.c[1] as _, v0.c[2] as _);
+        self.inp_v0_iw = low(INV_W, v0.iw) as _;
+        (self.inp_v1_x, self.inp_v1_y, self.inp_v1_z) = (low(XY, v1.x) as _, low(XY, v1.y) as _, low(Z, v1.z) as _);
+        (self.inp_v1_c0, self.inp_v1_c1, self.inp_v1_c2) = (v1.c[0] as _, v1.c[1] as _, v1.c[2] as _);
+        self.inp_v1_iw = low(INV_W, v1.iw) as _;
+        (self.inp_v2_x, self.inp_v2_y, self.inp_v2_z) = (low(XY, v2.x) as _, low(XY, v2.y) as _, low(Z, v2.z) as _);
+        (self.inp_v2_c0, self.inp_v2_c1, self.inp_v2_c2) = (v2.c[0] as _, v2.c[1] as _, v2.c[2] as _);
+        self.inp_v2_iw = low(INV_W, v2.iw) as _;
+        self.eval();
+        let s = Sense {
+            inp_ready: self.inp_ready == 1,
+            verdict_valid: self.verdict_valid == 1,
+            verdict_code: self.verdict_code,
+            req: Request {
+                rd_en: self.rd_en == 1,
+                rd_addr: self.rd_addr,
+                wr_en: self.wr_en == 1,
+                wr_addr: self.wr_addr,
+                wr_z: self.wr_z as u32,
+                wr_rgb: self.wr_rgb,
+            },
+            done: self.done == 1,
+        };
+        for level in [1, 0] {
+            self.clock = level;
+            self.eval();
+        }
+        Ok(s)
+    }
+}
+
+/// The Verilog of `raster_top` with the default parameters of `UNITS`: the committed
+/// `hdl-out/raster_top.v` when the default design holds it so, else emitted under the
+/// target directory.
+pub fn raster_top_file() -> Result<PathBuf, String> {
+    let unit = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
+    let params = unit.params([])?;
+    let committed = rtl::DEFAULT_DESIGN.iter().any(|(n, p)| {
+        *n == "raster_top" && p.iter().map(|(k, v)| (k.to_string(), *v)).collect::<rtl::Params>() == params
+    });
+    if committed {
+        return Ok(crate::hdl_out().join("raster_top.v"));
+    }
+    let e = unit.emit(&params)?;
+    write_if_changed(&target_dir().join("hdl").join("raster_top"), &e.file(), &e.verilog)
+}
+
+/// A Verilator runtime holding `raster_top` and its ANSI wrapper; it builds the model
+/// under `<target>/verilator/` the first time (about 15 s), then reuses it.
+pub fn verilator() -> Result<VerilatorRuntime, String> {
+    check_verilator("verilator")?;
+    let artifacts = target_dir().join("verilator");
+    std::fs::create_dir_all(&artifacts).map_err(|e| format!("creating {}: {e}", artifacts.display()))?;
+    let files = [PathBuf::from(RasterTopVl::source_path()), raster_top_file()?];
+    VerilatorRuntime::new2(&artifacts, &files, &[] as &[&Path], [], VerilatorRuntimeOptions::default())
+        .map_err(|e| format!("Verilator runtime for raster_top: {e:?}"))
+}
+
+/// A fresh `raster_top` model from `runtime`.
+pub fn model(runtime: &VerilatorRuntime) -> Result<RasterTopVl<'_>, String> {
+    let config = VerilatedModelConfig {
+        ignored_warnings: IGNORED_WARNINGS.iter().map(|w| w.to_string()).collect(),
+        ..Default::default()
+    };
+    runtime.create_model(&config).map_err(|e| format!("Verilating raster_top: {e:?}"))
+}
+
+/// What one frame is: the screen, the triangles (hardware words) and how to draw them.
+pub struct Frame<'a> {
+    pub width: u32,
+    pub height: u32,
+    pub cull: Cull,
+    pub background: [u8; 3],
+    pub triangles: &'a [[Vtx; 3]],
+}
+
+/// How the memory behaves.
+pub struct MemoryModel<'a> {
+    pub read_during_write: ReadDuringWrite,
+    /// Whether the memory is ready in cycle `c` (`mem_ready`).
+    pub ready: &'a mut dyn FnMut(u64) -> bool,
+}
+
+/// A frame drawn, with what happened when.
+pub struct FrameOut {
+    pub memory: Memory,
+    /// Cycles until `done`: the cycle `done` was first high.
+    pub cycles: u64,
+    /// Per triangle, the cycle `raster_top` took it.
+    pub taken: Vec<u64>,
+    /// Per triangle, in order, `cull_sort`'s verdict code (`rtl::cull_sort::verdict`).
+    pub verdicts: Vec<u8>,
+    /// The cycle of each depth read (one per pixel reaching `pixel_out`), in order.
+    pub reads: Vec<u64>,
+    /// Cycles the memory was not ready.
+    pub stalls: u64,
+}
+
+/// Draws `frame` on `dut` (a fresh `raster_top`, or one whose last frame is done), giving
+/// up after `max_cycles`.
+pub fn draw(dut: &mut dyn Cycle, frame: &Frame, mem: MemoryModel, max_cycles: u64) -> Result<FrameOut, String> {
+    assert!(!frame.triangles.is_empty(), "a frame needs a triangle to carry inp_last");
+    let zmax = z_max(&FORMATS) as u32;
+    let mut memory = Memory::new(frame.width, frame.height, zmax, frame.background, mem.read_during_write);
+    let n = frame.triangles.len();
+    let (mut taken, mut verdicts, mut reads, mut stalls) = (Vec::new(), Vec::new(), Vec::new(), 0);
+    let mut d =
+        Drive { width: frame.width, height: frame.height, cull_back: frame.cull == Cull::Back, ..Drive::default() };
+    for cycle in 0..max_cycles {
+        let next = taken.len();
+        d.inp_valid = next < n;
+        if d.inp_valid {
+            d.tri = frame.triangles[next];
+            d.inp_last = next + 1 == n;
+        }
+        d.mem_ready = (mem.ready)(cycle);
+        d.rd_z = memory.rd_z();
+        let o = dut.cycle(&d)?;
+        if o.done && !d.inp_valid {
+            return Ok(FrameOut { memory, cycles: cycle, taken, verdicts, reads, stalls });
+        }
+        if d.inp_valid && o.inp_ready {
+            taken.push(cycle);
+        }
+        if o.verdict_valid {
+            verdicts.push(o.verdict_code);
+        }
+        if d.mem_ready && o.req.rd_en {
+            reads.push(cycle);
+        }
+        stalls += !d.mem_ready as u64;
+        memory.edge(d.mem_ready, &o.req);
+    }
+    Err(format!("raster_top: no done after {max_cycles} cycles ({} of {n} triangles taken)", taken.len()))
+}
+
+/// `raster_top` in rust-hdl with the default parameters of `UNITS` (K, L).
+pub fn unit() -> RasterTop {
+    let u = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
+    let p = u.params([]).expect("default parameters");
+    RasterTop::new(p["K"] as usize, p["L"] as usize).expect("the default parameters are supported")
+}
+
+/// Writes `frame` and the memory writes `writes` as the vector file of the Icarus Verilog
+/// bench `testbenches/iverilog/raster_top_tb.v` (its header gives the format).
+pub fn write_vectors(path: &Path, frame: &Frame, writes: &[Pixel]) -> std::io::Result<()> {
+    use std::fmt::Write as _;
+    let mut text = format!(
+        "{:x} {:x} {:x} {:x}\n",
+        frame.width,
+        frame.height,
+        (frame.cull == Cull::Back) as u8,
+        frame.triangles.len()
+    );
+    for t in frame.triangles {
+        let words: Vec<String> = t
+            .iter()
+            .flat_map(|v| {
+                let c = v.c.map(|c| low(COLOR, c));
+                [low(XY, v.x), low(XY, v.y), low(Z, v.z), c[0], c[1], c[2], low(INV_W, v.iw)]
+            })
+            .map(|w| format!("{w:x}"))
+            .collect();
+        writeln!(text, "{}", words.join(" ")).expect("writing to a String");
+    }
+    writeln!(text, "{:x}", writes.len()).expect("writing to a String");
+    for w in writes {
+        let rgb = (w.rgb[0] as u32) << (2 * CHANNEL) | (w.rgb[1] as u32) << CHANNEL | w.rgb[2] as u32;
+        writeln!(text, "{:x} {:x} {rgb:x}", (w.y << SCREEN) | w.x, w.z).expect("writing to a String");
+    }
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir)?;
+    }
+    std::fs::write(path, text)
+}
+
+/// Cycle counts of a frame, measured on the RTL.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Report {
+    /// Cycles until `done`, and what `model::cycles::scanline_frame` predicts.
+    pub cycles: u64,
+    pub predicted: u64,
+    pub triangles: usize,
+    /// Triangles that passed `cull_sort`.
+    pub drawn: usize,
+    /// Pixels that reached `pixel_out`, and those written (passed the depth test).
+    pub fragments: u64,
+    pub written: u64,
+    /// Per drawn triangle with a pixel: cycles from taking it to its first pixel's depth
+    /// read in `pixel_out` (min, median, max).
+    pub latency: Option<(u64, u64, u64)>,
+    /// Cycles between taking one triangle and the next (mean, max).
+    pub interval: (f64, u64),
+}
+
+impl Report {
+    /// `out` of `prep`'s frame.
+    pub fn of(out: &FrameOut, prep: &model::raster_top::Frame) -> Report {
+        let mut latency = Vec::new();
+        let mut first = 0;
+        for (i, &n) in prep.fragments.iter().enumerate() {
+            if n > 0 && first < out.reads.len() {
+                latency.push(out.reads[first] - out.taken[i]);
+            }
+            first += n;
+        }
+        latency.sort_unstable();
+        let gaps: Vec<u64> = out.taken.windows(2).map(|w| w[1] - w[0]).collect();
+        Report {
+            cycles: out.cycles,
+            predicted: prep.cycles(),
+            triangles: out.taken.len(),
+            drawn: out.verdicts.iter().filter(|&&v| v as u64 == rtl::cull_sort::verdict::PASSED).count(),
+            fragments: out.reads.len() as u64,
+            written: out.memory.writes,
+            latency: (!latency.is_empty())
+                .then(|| (latency[0], latency[latency.len() / 2], latency[latency.len() - 1])),
+            interval: (
+                gaps.iter().sum::<u64>() as f64 / gaps.len().max(1) as f64,
+                gaps.iter().copied().max().unwrap_or(0),
+            ),
+        }
+    }
+
+    /// Pixels written per clock.
+    pub fn pixels_per_clock(&self) -> f64 {
+        self.written as f64 / self.cycles.max(1) as f64
+    }
+}

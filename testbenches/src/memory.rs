@@ -1,0 +1,130 @@
+//! The depth and colour buffers behind `pixel_out`'s memory port, in Rust (see
+//! `rtl::pixel_out` for the port's contract): one word per pixel at address `{y, x}`,
+//! reads returning data the cycle after, `mem_ready` stalling both.
+
+use crate::streams::unsigned;
+use crate::Outputs;
+use rtl::widths::{CHANNEL, SCREEN};
+
+/// What a read of an address written at the same edge returns: `pixel_out` must work
+/// with either.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ReadDuringWrite {
+    /// The word as it was before the write (block RAM in read-first mode).
+    Old,
+    /// The word just written (write-first).
+    New,
+}
+
+/// One write the memory performed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Write {
+    pub x: u32,
+    pub y: u32,
+    pub z: u32,
+    pub rgb: [u8; 3],
+}
+
+/// The memory's request in one cycle, as `pixel_out` (or `raster_top`) drives it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Request {
+    pub rd_en: bool,
+    pub rd_addr: u32,
+    pub wr_en: bool,
+    pub wr_addr: u32,
+    pub wr_z: u32,
+    pub wr_rgb: u32,
+}
+
+impl Request {
+    /// Read off a unit's outputs (`rd_en`, `rd_addr`, `wr_en`, `wr_addr`, `wr_z`, `wr_rgb`).
+    pub fn of(o: &Outputs) -> Request {
+        let get = |p: &str| unsigned(o.get(p)) as u32;
+        Request {
+            rd_en: get("rd_en") == 1,
+            rd_addr: get("rd_addr"),
+            wr_en: get("wr_en") == 1,
+            wr_addr: get("wr_addr"),
+            wr_z: get("wr_z"),
+            wr_rgb: get("wr_rgb"),
+        }
+    }
+}
+
+/// Depth and colour buffers of a `width` x `height` screen.
+#[derive(Clone, Debug)]
+pub struct Memory {
+    pub width: u32,
+    pub height: u32,
+    /// Depth per pixel, row-major from the top-left.
+    pub depth: Vec<u32>,
+    pub rgb: Vec<[u8; 3]>,
+    /// Whether a pixel was ever written.
+    pub written: Vec<bool>,
+    /// Writes performed so far.
+    pub writes: u64,
+    /// Reads performed so far.
+    pub reads: u64,
+    read_during_write: ReadDuringWrite,
+    rd_z: u32,
+}
+
+impl Memory {
+    /// Buffers cleared to depth `z_max` and colour `background`.
+    pub fn new(width: u32, height: u32, z_max: u32, background: [u8; 3], rdw: ReadDuringWrite) -> Self {
+        let n = (width * height) as usize;
+        Memory {
+            width,
+            height,
+            depth: vec![z_max; n],
+            rgb: vec![background; n],
+            written: vec![false; n],
+            writes: 0,
+            reads: 0,
+            read_during_write: rdw,
+            rd_z: 0,
+        }
+    }
+
+    /// `rd_z`: the depth last read.
+    pub fn rd_z(&self) -> u32 {
+        self.rd_z
+    }
+
+    fn index(&self, addr: u32, what: &str) -> usize {
+        let (x, y) = (addr & ((1 << SCREEN) - 1), addr >> SCREEN);
+        assert!(
+            x < self.width && y < self.height,
+            "{what} of ({x}, {y}), off the {}x{} screen",
+            self.width,
+            self.height
+        );
+        (y * self.width + x) as usize
+    }
+
+    /// One rising edge with `req` asked for: with `mem_ready` the memory performs the
+    /// read and the write. Returns the write, if one was performed.
+    pub fn edge(&mut self, mem_ready: bool, req: &Request) -> Option<Write> {
+        if !mem_ready {
+            return None;
+        }
+        let read = req.rd_en.then(|| self.index(req.rd_addr, "read"));
+        if let (Some(i), ReadDuringWrite::Old) = (read, self.read_during_write) {
+            self.rd_z = self.depth[i];
+        }
+        let write = req.wr_en.then(|| {
+            let i = self.index(req.wr_addr, "write");
+            let rgb = [req.wr_rgb >> (2 * CHANNEL), req.wr_rgb >> CHANNEL, req.wr_rgb].map(|c| c as u8);
+            self.depth[i] = req.wr_z;
+            self.rgb[i] = rgb;
+            self.written[i] = true;
+            self.writes += 1;
+            Write { x: req.wr_addr & ((1 << SCREEN) - 1), y: req.wr_addr >> SCREEN, z: req.wr_z, rgb }
+        });
+        if let (Some(i), ReadDuringWrite::New) = (read, self.read_during_write) {
+            self.rd_z = self.depth[i];
+        }
+        self.reads += read.is_some() as u64;
+        write
+    }
+}

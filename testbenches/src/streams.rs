@@ -1,0 +1,120 @@
+//! The model's transactions as port values, and back: a set-up triangle
+//! (`model::triangle_setup::SetupOut`), a span command (`model::edge_walk::SpanCmd`) and a
+//! pixel (`model::span::Pixel`), each flattened into ports `<prefix>_<field>` with nested
+//! fields joined by `_`, as the RTL names them (`inp_maj_at_c0`, `out_left_z`, `out_rgb2`).
+//! Widths come from `rtl::widths`, so a value that does not fit its port fails here.
+
+use crate::{Outputs, Value};
+use model::edge_walk::SpanCmd;
+use model::span::Pixel;
+use model::triangle_setup::{Attrs, Edge, SetupOut, Walk};
+use rtl::widths::{CHANNEL, C_ACC, DC, DEPTH, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
+
+/// Named port values, ready for `Dual::cycle` (through [`as_pins`]).
+pub type PinValues = Vec<(String, Value)>;
+
+/// `v` as a `width`-bit port value: two's complement when negative. Panics unless `v` fits
+/// `width` bits as a signed or an unsigned number.
+pub fn raw(width: usize, v: i128) -> Value {
+    assert!(v >= -(1i128 << (width - 1)) && v < (1i128 << width), "{v} does not fit a {width}-bit port");
+    Value::new(width, (v as u128) & (u128::MAX >> (128 - width)))
+}
+
+/// A port value read as a two's complement number.
+pub fn signed(v: &Value) -> i128 {
+    let w = v.width();
+    fx::wrap_s(v.to_u128() as i128, w as u32)
+}
+
+/// A port value read as an unsigned number.
+pub fn unsigned(v: &Value) -> u128 {
+    v.to_u128()
+}
+
+/// Borrows named values as `Dual::cycle` takes them.
+pub fn as_pins(values: &[(String, Value)]) -> Vec<(&str, Value)> {
+    values.iter().map(|(n, v)| (n.as_str(), v.clone())).collect()
+}
+
+fn attrs(out: &mut PinValues, name: &str, a: &Attrs, zw: usize, cw: usize) {
+    out.push((format!("{name}_z"), raw(zw, a.z)));
+    for (i, c) in a.c.iter().enumerate() {
+        out.push((format!("{name}_c{i}"), raw(cw, *c)));
+    }
+}
+
+/// A set-up triangle on ports `<prefix>_*` (`edge_walk`'s `inp_*`).
+pub fn setup_out(prefix: &str, s: &SetupOut) -> PinValues {
+    let mut out = vec![
+        (format!("{prefix}_walk"), Value::new(1, (s.walk == Walk::Up) as u128)),
+        (format!("{prefix}_maj_left"), Value::new(1, s.maj_left as u128)),
+    ];
+    let edges: [(&str, &Edge); 3] = [("maj", &s.maj), ("short0", &s.short[0]), ("short1", &s.short[1])];
+    for (name, e) in edges {
+        let p = format!("{prefix}_{name}");
+        out.push((format!("{p}_j"), raw(PIXEL, e.j as i128)));
+        out.push((format!("{p}_count"), raw(PIXEL, e.count as i128)));
+        out.push((format!("{p}_x"), raw(PIXEL, e.x)));
+        out.push((format!("{p}_r"), raw(EDGE_D, e.r)));
+        out.push((format!("{p}_q"), raw(EDGE_Q, e.q)));
+        out.push((format!("{p}_rho"), raw(EDGE_D, e.rho)));
+        out.push((format!("{p}_d"), raw(EDGE_D, e.d)));
+        attrs(&mut out, &format!("{p}_at"), &e.at, Z_ACC, C_ACC);
+        attrs(&mut out, &format!("{p}_inc0"), &e.inc0, DZ, DC);
+        attrs(&mut out, &format!("{p}_inc1"), &e.inc1, DZ, DC);
+    }
+    attrs(&mut out, &format!("{prefix}_ddx"), &s.ddx, DZ, DC);
+    out
+}
+
+/// A span command on ports `<prefix>_*` (`span`'s `inp_*`).
+pub fn span_cmd(prefix: &str, c: &SpanCmd) -> PinValues {
+    let mut out = vec![
+        (format!("{prefix}_y"), raw(SCREEN, c.y as i128)),
+        (format!("{prefix}_xl"), raw(PIXEL, c.xl)),
+        (format!("{prefix}_xr"), raw(PIXEL, c.xr)),
+    ];
+    attrs(&mut out, &format!("{prefix}_left"), &c.left, Z_ACC, C_ACC);
+    attrs(&mut out, &format!("{prefix}_right"), &c.right, Z_ACC, C_ACC);
+    attrs(&mut out, &format!("{prefix}_ddx"), &c.ddx, DZ, DC);
+    out
+}
+
+fn attrs_of(o: &Outputs, name: &str) -> Attrs {
+    Attrs { z: signed(o.get(&format!("{name}_z"))), c: std::array::from_fn(|i| signed(o.get(&format!("{name}_c{i}")))) }
+}
+
+/// The span command on output ports `<prefix>_*` (`edge_walk`'s `out_*`).
+pub fn span_cmd_of(o: &Outputs, prefix: &str) -> SpanCmd {
+    SpanCmd {
+        y: unsigned(o.get(&format!("{prefix}_y"))) as i32,
+        xl: signed(o.get(&format!("{prefix}_xl"))),
+        xr: signed(o.get(&format!("{prefix}_xr"))),
+        left: attrs_of(o, &format!("{prefix}_left")),
+        right: attrs_of(o, &format!("{prefix}_right")),
+        ddx: attrs_of(o, &format!("{prefix}_ddx")),
+    }
+}
+
+/// A pixel on ports `<prefix>_*` (`pixel_out`'s `inp_*`).
+pub fn pixel(prefix: &str, p: &Pixel) -> PinValues {
+    let mut out = vec![
+        (format!("{prefix}_x"), raw(SCREEN, p.x as i128)),
+        (format!("{prefix}_y"), raw(SCREEN, p.y as i128)),
+        (format!("{prefix}_z"), raw(DEPTH, p.z as i128)),
+    ];
+    for (i, c) in p.rgb.iter().enumerate() {
+        out.push((format!("{prefix}_rgb{i}"), raw(CHANNEL, *c as i128)));
+    }
+    out
+}
+
+/// The pixel on output ports `<prefix>_*` (`span`'s `out_*`).
+pub fn pixel_of(o: &Outputs, prefix: &str) -> Pixel {
+    Pixel {
+        x: unsigned(o.get(&format!("{prefix}_x"))) as u32,
+        y: unsigned(o.get(&format!("{prefix}_y"))) as u32,
+        z: unsigned(o.get(&format!("{prefix}_z"))) as u32,
+        rgb: std::array::from_fn(|i| unsigned(o.get(&format!("{prefix}_rgb{i}"))) as u8),
+    }
+}

@@ -1,0 +1,190 @@
+//! The pixel output unit: rust-hdl and Verilator in lockstep, every cycle, with the depth
+//! and colour buffers in Rust (`testbenches::memory`), against
+//! `model::pixel_out::Framebuffer`: the same writes in the same order, each `LATENCY`
+//! cycles of a ready memory after its pixel came in, and the same buffers at the end.
+
+use model::cull_sort::z_max;
+use model::pixel_out::{Framebuffer, II, LATENCY};
+use model::span::Pixel;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rtl::pixel_out::PixelOut;
+use rtl::widths::DEPTH;
+use std::collections::VecDeque;
+use testbenches::memory::{Memory, ReadDuringWrite, Request, Write};
+use testbenches::streams::{as_pins, pixel};
+use testbenches::{count, seed, verilated, Dual, Value};
+
+/// Random pixels on a `w` x `h` screen, skewed toward read-after-write hazards: a pixel
+/// often repeats the address of one 1, 2 or 3 pixels before it, with a nearer, farther or
+/// equal depth.
+fn pixels(rng: &mut ChaCha8Rng, w: u32, h: u32, n: usize, zmax: u32) -> Vec<Pixel> {
+    let mut out: Vec<Pixel> = Vec::with_capacity(n);
+    for i in 0..n {
+        let back = rng.gen_range(1..=4);
+        let (x, y) = if i >= back && rng.gen_bool(0.5) {
+            (out[i - back].x, out[i - back].y)
+        } else {
+            (rng.gen_range(0..w), rng.gen_range(0..h))
+        };
+        let z = match rng.gen_range(0..4) {
+            0 if i >= back => out[i - back].z,
+            1 => [0, zmax, zmax - 1][rng.gen_range(0..3)],
+            _ => rng.gen_range(0..=zmax),
+        };
+        out.push(Pixel { x, y, z, rgb: rng.gen() });
+    }
+    out
+}
+
+/// Sends `pixels` (`inp_valid` low 20% of the time) with the memory ready when `ready`
+/// says; checks every write the memory performs against the model's, in order, each
+/// `LATENCY` ready cycles after its pixel came in; returns the memory and the cycles.
+fn run(
+    dual: &mut Dual<PixelOut>,
+    pixels: &[Pixel],
+    (w, h): (u32, u32),
+    rdw: ReadDuringWrite,
+    mut ready: impl FnMut(&mut ChaCha8Rng) -> bool,
+) -> Result<(Memory, u64), String> {
+    assert_eq!(II, 1);
+    let zmax = z_max(&rtl::widths::FORMATS) as u32;
+    let mut model = Framebuffer::new(w, h, zmax, [7, 8, 9]);
+    let mut mem = Memory::new(w, h, zmax, [7, 8, 9], rdw);
+    let mut rng = ChaCha8Rng::seed_from_u64(seed());
+    // Pixels taken and not yet due: the ready cycle their write is due in, and the
+    // model's write (None when the depth test fails).
+    let mut due: VecDeque<(u64, Option<Write>)> = VecDeque::new();
+    let (mut next, mut ready_cycle) = (0, 0u64);
+    while next < pixels.len() || !due.is_empty() {
+        let mem_ready = ready(&mut rng);
+        let valid = next < pixels.len() && rng.gen_bool(0.8);
+        let mut pins = vec![
+            ("inp_valid", Value::new(1, valid as u128)),
+            ("mem_ready", Value::new(1, mem_ready as u128)),
+            ("rd_z", Value::new(DEPTH, mem.rd_z() as u128)),
+        ];
+        let p = pixel("inp", &pixels[next.min(pixels.len() - 1)]);
+        pins.extend(as_pins(&p));
+        let out = dual.cycle(&pins).map_err(|m| m.to_string())?;
+        let cycle = dual.cycles() - 1;
+        if (out.get("inp_ready") == &Value::new(1, 1)) != mem_ready {
+            return Err(format!("cycle {cycle}: inp_ready differs from mem_ready"));
+        }
+        let req = Request::of(&out);
+        if req.rd_en != valid {
+            return Err(format!("cycle {cycle}: rd_en {} for inp_valid {valid}", req.rd_en));
+        }
+        let write = mem.edge(mem_ready, &req);
+        if !mem_ready {
+            if write.is_some() {
+                return Err(format!("cycle {cycle}: a write without mem_ready"));
+            }
+            continue;
+        }
+        let want = match due.front() {
+            Some(&(at, w)) if at == ready_cycle => {
+                due.pop_front();
+                w
+            }
+            _ => None,
+        };
+        if write != want {
+            return Err(format!("cycle {cycle} (ready cycle {ready_cycle}): wrote {write:?}, model {want:?}"));
+        }
+        if valid {
+            let p = &pixels[next];
+            let w = model.pixel_out(p, 0).then_some(Write { x: p.x, y: p.y, z: p.z, rgb: p.rgb });
+            due.push_back((ready_cycle + LATENCY as u64, w));
+            next += 1;
+        }
+        ready_cycle += 1;
+    }
+    if (mem.depth.clone(), mem.rgb.clone()) != (model.depth, model.rgb) {
+        return Err("the buffers differ from the model's".into());
+    }
+    Ok((mem, dual.cycles()))
+}
+
+fn dual(vl: &testbenches::Verilated) -> Dual<'_, PixelOut> {
+    Dual::new(PixelOut::default(), vl.model().unwrap_or_else(|e| panic!("{e}")))
+}
+
+/// Random pixels with many hazards, the memory always ready, either read-during-write
+/// behaviour: every write LATENCY cycles after its pixel, the buffers equal to the model's.
+#[test]
+fn pixel_out_random_vs_model() {
+    let seed = seed();
+    let zmax = z_max(&rtl::widths::FORMATS) as u32;
+    let vl = verilated("pixel_out");
+    for (i, (size, rdw)) in
+        [((7, 5), ReadDuringWrite::Old), ((7, 5), ReadDuringWrite::New), ((64, 48), ReadDuringWrite::Old)]
+            .into_iter()
+            .enumerate()
+    {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed.wrapping_add(i as u64));
+        let px = pixels(&mut rng, size.0, size.1, count() * 4, zmax);
+        let (mem, _) =
+            run(&mut dual(&vl), &px, size, rdw, |_| true).unwrap_or_else(|e| panic!("seed {seed}, {rdw:?}: {e}"));
+        assert!(mem.writes > 0 && mem.writes < px.len() as u64, "some pixels pass, some fail");
+    }
+}
+
+/// The memory port stalled (`mem_ready` low 30% of the time and in bursts): the unit
+/// holds everything, nothing is lost or written twice.
+#[test]
+fn pixel_out_memory_stalled_vs_model() {
+    let seed = seed();
+    let zmax = z_max(&rtl::widths::FORMATS) as u32;
+    let vl = verilated("pixel_out");
+    let mut rng = ChaCha8Rng::seed_from_u64(seed.wrapping_add(7));
+    let px = pixels(&mut rng, 7, 5, count() * 4, zmax);
+    let mut burst = 0;
+    let mut ready = |r: &mut ChaCha8Rng| {
+        if burst > 0 {
+            burst -= 1;
+            return false;
+        }
+        if r.gen_bool(0.05) {
+            burst = r.gen_range(1..6);
+        }
+        r.gen_bool(0.75)
+    };
+    for rdw in [ReadDuringWrite::Old, ReadDuringWrite::New] {
+        run(&mut dual(&vl), &px, (7, 5), rdw, &mut ready).unwrap_or_else(|e| panic!("seed {seed}, {rdw:?}: {e}"));
+    }
+}
+
+/// Latency 2 (`model::pixel_out::LATENCY`): a pixel taken in cycle 0 is read in cycle 0
+/// (`rd_en`, its address `{y, x}`) and written in cycle 2.
+#[test]
+fn pixel_out_latency_is_2() {
+    assert_eq!(LATENCY, 2);
+    let vl = verilated("pixel_out");
+    let mut d = dual(&vl);
+    let mut mem = Memory::new(8, 8, 65535, [0; 3], ReadDuringWrite::Old);
+    let p = Pixel { x: 3, y: 5, z: 100, rgb: [1, 2, 3] };
+    let mut pins = vec![
+        ("inp_valid", Value::new(1, 1)),
+        ("mem_ready", Value::new(1, 1)),
+        ("rd_z", Value::new(DEPTH, mem.rd_z() as u128)),
+    ];
+    let p = pixel("inp", &p);
+    pins.extend(as_pins(&p));
+    let mut seen = Vec::new();
+    for t in 0..4 {
+        if t == 1 {
+            pins[0].1 = Value::new(1, 0);
+        }
+        pins[2].1 = Value::new(DEPTH, mem.rd_z() as u128);
+        let out = d.cycle(&pins).unwrap_or_else(|m| panic!("{m}"));
+        let req = Request::of(&out);
+        seen.push((req.rd_en, req.wr_en));
+        if t == 0 {
+            assert_eq!(req.rd_addr, (5 << rtl::widths::SCREEN) | 3, "address {{y, x}}");
+        }
+        mem.edge(true, &req);
+    }
+    assert_eq!(seen, [(true, false), (false, false), (false, true), (false, false)]);
+    assert_eq!((mem.depth[5 * 8 + 3], mem.rgb[5 * 8 + 3]), (100, [1, 2, 3]));
+}

@@ -1,0 +1,303 @@
+//! The whole rasterizer (`raster_top`): frames drawn in Verilator (one Verilated model for
+//! every test of this module) and, for a small frame, in rust-hdl and Verilator in
+//! lockstep; every image bit for bit the model's (`model::raster::render`, scanline, at
+//! the RTL's formats), every frame's cycle count the cycle model's.
+
+use marlin::verilator::VerilatorRuntime;
+use model::cull_sort::Cull;
+use model::raster_top::{self as top, frame as prepare};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use scene::stress::{fan, random_mesh, split_rectangle};
+use scene::{Triangle, Trilist, Vertex};
+use std::path::Path;
+use std::process::Command;
+use testbenches::frame::{self, draw, Cycle, Frame, FrameOut, MemoryModel, Report};
+use testbenches::memory::ReadDuringWrite;
+use testbenches::{seed, Dual};
+
+/// A Verilator runtime for `raster_top`: the model is built once (its C++ build is the
+/// slow part; marlin keeps it under the target directory and serialises concurrent
+/// builds) and loaded per test.
+fn verilator() -> VerilatorRuntime {
+    frame::verilator().unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn model(rt: &VerilatorRuntime) -> frame::RasterTopVl<'_> {
+    frame::model(rt).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// `list` through the model and through `dut`; the image, depth and cycles compared.
+fn check(what: &str, dut: &mut dyn Cycle, list: &Trilist, cull: Cull, mem: MemoryModel) -> (top::Frame, FrameOut) {
+    let prep = prepare(list, cull, [20, 24, 32]).unwrap_or_else(|e| panic!("{what}: {e}"));
+    assert!(prep.skipped.is_empty(), "{what}: triangles that do not fit the input formats");
+    let f =
+        Frame { width: list.width, height: list.height, cull, background: [20, 24, 32], triangles: &prep.triangles };
+    let out = draw(dut, &f, mem, 50_000_000).unwrap_or_else(|e| panic!("{what}: {e}"));
+    let fb = &prep.render.fb;
+    for (i, (got, want)) in out.memory.rgb.iter().zip(&fb.rgb).enumerate() {
+        let (x, y) = (i as u32 % list.width, i as u32 / list.width);
+        assert_eq!(got, want, "{what}: colour of pixel ({x}, {y})");
+    }
+    assert!(out.memory.depth == fb.depth, "{what}: the depth buffers differ");
+    assert_eq!(out.memory.writes, prep.render.stats.pixels_written, "{what}: pixels written");
+    assert_eq!(out.reads.len() as u64, prep.render.stats.fragments, "{what}: fragments");
+    (prep, out)
+}
+
+/// Always-ready memory, reads returning the old word.
+fn ready_memory(always: &mut dyn FnMut(u64) -> bool) -> MemoryModel<'_> {
+    MemoryModel { read_during_write: ReadDuringWrite::Old, ready: always }
+}
+
+fn scene(name: &str, size: Option<(u32, u32)>) -> (Trilist, Cull) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes").join(format!("{name}.json"));
+    let mut s = scene::Scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+    if let Some((w, h)) = size {
+        s = s.with_size(w, h).unwrap_or_else(|e| panic!("{e}"));
+    }
+    (s.to_trilist().unwrap_or_else(|e| panic!("{e}")), if s.cull_back { Cull::Back } else { Cull::None })
+}
+
+/// Every shipped scene at 64 x 48: the image and the cycle count equal the model's.
+#[test]
+fn raster_top_scenes_small_vs_model() {
+    let rt = verilator();
+    for name in ["cube", "sphere", "cone", "torus", "pawn", "house", "all", "clip"] {
+        let (list, cull) = scene(name, Some((64, 48)));
+        let mut dut = model(&rt);
+        let (prep, out) = check(name, &mut dut, &list, cull, ready_memory(&mut |_| true));
+        let r = Report::of(&out, &prep);
+        assert_eq!(r.cycles, r.predicted, "{name}: cycles, RTL against model::cycles");
+    }
+}
+
+/// Two scenes at 320 x 240 (003's screen), image and cycles as the model's.
+#[test]
+fn raster_top_scenes_320x240_vs_model() {
+    let rt = verilator();
+    for name in ["torus", "clip"] {
+        let (list, cull) = scene(name, Some((320, 240)));
+        let mut dut = model(&rt);
+        let (prep, out) = check(name, &mut dut, &list, cull, ready_memory(&mut |_| true));
+        let r = Report::of(&out, &prep);
+        assert_eq!(r.cycles, r.predicted, "{name}: cycles, RTL against model::cycles");
+        assert!(r.written > 1000, "{name}: {r:?}");
+    }
+}
+
+fn list(width: u32, height: u32, triangles: Vec<Triangle>) -> Trilist {
+    Trilist { width, height, triangles }
+}
+
+/// The model's fill-rule cases (`scene::stress`, as `crates/model/tests/watertight.rs`):
+/// split rectangles, fans of thin triangles, random meshes; and its clipping cases
+/// (`crates/model/tests/clipping.rs`): triangles across each boundary, pairs of them, and
+/// the z range.
+#[test]
+fn raster_top_fill_rule_and_clipping_vs_model() {
+    let rt = verilator();
+    let mut tris = Vec::new();
+    for (a, b) in [((1.5, 1.5), (9.5, 9.5)), ((0.5, 2.5), (20.5, 12.5)), ((3.5, 1.5), (5.5, 17.5))] {
+        for flip in [false, true] {
+            tris.extend(split_rectangle(a, b, flip));
+        }
+    }
+    let mut cases = vec![("split rectangles", list(32, 32, tris))];
+    for centre in [(32.5, 32.5), (31.3, 33.7)] {
+        cases.push(("fan", list(64, 64, fan(centre, 28.0, 32).0)));
+    }
+    cases.push(("random mesh", list(48, 40, random_mesh(seed(), 48, 40))));
+    let c = [[250.0, 10.0, 40.0], [20.0, 240.0, 90.0], [60.0, 70.0, 230.0]];
+    let tri = |p: [(f64, f64, f64); 3]| -> Triangle { [0, 1, 2].map(|k| Vertex::new(p[k].0, p[k].1, p[k].2, c[k])) };
+    let crossing = vec![
+        tri([(-20.3, 10.2, 0.3), (30.7, 5.1, 0.5), (10.1, 50.6, 0.7)]),
+        tri([(60.3, 10.2, 0.3), (101.7, 25.1, 0.5), (50.1, 50.6, 0.7)]),
+        tri([(20.3, -25.2, 0.3), (60.7, 15.1, 0.5), (10.1, 40.6, 0.7)]),
+        tri([(20.3, 25.2, 0.3), (70.7, 45.1, 0.5), (10.1, 83.6, 0.7)]),
+        tri([(-30.3, 20.2, 0.3), (111.7, 25.1, 0.5), (40.1, 50.6, 0.7)]),
+        tri([(20.3, -30.2, 0.3), (60.7, 25.1, 0.5), (30.1, 90.6, 0.7)]),
+        tri([(-40.3, -30.2, 0.3), (130.7, -10.1, 0.5), (30.1, 120.6, 0.7)]),
+        tri([(5.3, 5.2, -0.4), (75.7, 15.1, 0.5), (20.1, 55.6, 0.6)]),
+        tri([(5.3, 5.2, 0.4), (75.7, 15.1, 1.4), (20.1, 55.6, 0.6)]),
+        tri([(5.3, 5.2, -0.45), (75.7, 15.1, 1.45), (20.1, 55.6, 0.6)]),
+        // Wholly outside one plane: culled.
+        tri([(-20.3, 10.2, 0.3), (-30.7, 5.1, 0.5), (-10.1, 50.6, 0.7)]),
+    ];
+    cases.push(("clipping", list(80, 60, crossing)));
+    for (what, l) in &cases {
+        for cull in [Cull::None, Cull::Back] {
+            let mut dut = model(&rt);
+            let (prep, out) = check(what, &mut dut, l, cull, ready_memory(&mut |_| true));
+            let r = Report::of(&out, &prep);
+            assert_eq!(r.cycles, r.predicted, "{what}, {cull:?}: cycles");
+        }
+    }
+}
+
+/// Triangles back to back: 300 one-pixel triangles, then 300 that draw nothing (a pixel
+/// wide, between centres), then large overlapping ones. Setup takes one every
+/// `setup_latency` cycles; the image and the cycles are the model's.
+#[test]
+fn raster_top_back_to_back_vs_model() {
+    let rt = verilator();
+    let mut rng = ChaCha8Rng::seed_from_u64(seed());
+    let mut tris = Vec::new();
+    let col = |rng: &mut ChaCha8Rng| [rng.gen_range(0.0..255.0), rng.gen_range(0.0..255.0), rng.gen_range(0.0..255.0)];
+    for i in 0..300 {
+        let (x, y, z) = ((i % 30) as f64 * 2.0 + 1.0, (i / 30) as f64 * 3.0 + 1.0, rng.gen_range(0.1..0.9));
+        let c = col(&mut rng);
+        tris.push([Vertex::new(x, y, z, c), Vertex::new(x + 1.0, y + 0.2, z, c), Vertex::new(x + 0.1, y + 1.0, z, c)]);
+    }
+    for i in 0..300 {
+        let (x, y) = ((i % 30) as f64 * 2.0 + 0.6, (i / 30) as f64 * 3.0 + 0.6);
+        let c = col(&mut rng);
+        tris.push([Vertex::new(x, y, 0.5, c), Vertex::new(x + 0.3, y, 0.5, c), Vertex::new(x, y + 0.3, 0.5, c)]);
+    }
+    for _ in 0..20 {
+        let p = |rng: &mut ChaCha8Rng| {
+            Vertex::new(rng.gen_range(-10.0..70.0), rng.gen_range(-10.0..40.0), rng.gen_range(0.0..1.0), col(rng))
+        };
+        tris.push([p(&mut rng), p(&mut rng), p(&mut rng)]);
+    }
+    let l = list(64, 32, tris);
+    let mut dut = model(&rt);
+    let (prep, out) = check("back to back", &mut dut, &l, Cull::None, ready_memory(&mut |_| true));
+    let r = Report::of(&out, &prep);
+    assert_eq!(r.cycles, r.predicted, "cycles");
+    let setup = model::cycles::setup_latency(&Default::default()) as u64;
+    let gaps: Vec<u64> = out.taken[..300].windows(2).map(|w| w[1] - w[0]).collect();
+    assert!(gaps[1..].iter().all(|&g| g == setup), "one-pixel triangles taken every {setup} cycles: {gaps:?}");
+}
+
+/// The memory port stalled (`mem_ready` low 30% of the time, in bursts), reads returning
+/// the old or the new word: the same image, nothing lost or written twice.
+#[test]
+fn raster_top_memory_stalled_vs_model() {
+    let rt = verilator();
+    let (l, cull) = scene("all", Some((96, 64)));
+    for rdw in [ReadDuringWrite::Old, ReadDuringWrite::New] {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed());
+        let mut burst = 0;
+        let mut ready = |_| {
+            if burst > 0 {
+                burst -= 1;
+                return false;
+            }
+            if rng.gen_bool(0.02) {
+                burst = rng.gen_range(1..20);
+            }
+            rng.gen_bool(0.8)
+        };
+        let mut dut = model(&rt);
+        let (_, out) =
+            check("all, stalled", &mut dut, &l, cull, MemoryModel { read_during_write: rdw, ready: &mut ready });
+        assert!(out.stalls > out.cycles / 5, "{} stalled cycles of {}", out.stalls, out.cycles);
+    }
+}
+
+/// A small frame in rust-hdl and Verilator in lockstep, every output of `raster_top`
+/// compared every cycle (rust-hdl steps the whole design directly), the image the model's.
+#[test]
+fn raster_top_hdl_vs_verilator_lockstep() {
+    let (l, cull) = scene("cube", Some((24, 16)));
+    let vl = testbenches::verilated("raster_top");
+    let mut dual = Dual::new(frame::unit(), vl.model().unwrap_or_else(|e| panic!("{e}")));
+    let mut stall = 0u64;
+    let mut ready = |_| {
+        stall += 1;
+        !stall.is_multiple_of(7)
+    };
+    check("cube, lockstep", &mut dual, &l, cull, ready_memory(&mut ready));
+}
+
+/// One triangle alone: the latency from taking it to its first pixel's read, and to its
+/// write, against 003 Table 1 (31 cycles in all) and 001 (68 extra cycles per triangle).
+#[test]
+fn raster_top_latency_of_one_triangle() {
+    let rt = verilator();
+    let t = [
+        Vertex::new(2.0, 2.0, 0.5, [255.0; 3]),
+        Vertex::new(9.0, 2.0, 0.5, [255.0; 3]),
+        Vertex::new(2.0, 9.0, 0.5, [255.0; 3]),
+    ];
+    let l = list(16, 16, vec![t]);
+    let mut dut = model(&rt);
+    let (prep, out) = check("one triangle", &mut dut, &l, Cull::None, ready_memory(&mut |_| true));
+    let r = Report::of(&out, &prep);
+    // cull_sort 1 + setup + edge walk 2 + span 1: the first pixel enters pixel_out.
+    let setup = model::cycles::setup_latency(&Default::default()) as u64;
+    let first =
+        model::cull_sort::LATENCY as u64 + setup + model::edge_walk::LATENCY as u64 + model::span::LATENCY as u64;
+    assert_eq!(r.latency, Some((first, first, first)), "{r:?}");
+    assert_eq!(r.cycles, r.predicted);
+}
+
+/// Icarus Verilog, a simulator outside Rust, replays two frames from vector files the
+/// model writes (under the target directory): the bench `testbenches/iverilog/
+/// raster_top_tb.v` sends the triangles to `raster_top` (the emitted Verilog) and checks
+/// every memory write against the model's, in order; the second frame with the memory
+/// stalling one cycle in seven. A vector file with one expected write changed must fail.
+///
+/// Icarus runs the emitted file after Yosys's `proc` pass (processes rewritten as muxes
+/// and flip-flops, nothing optimised; Yosys reads the file as synthesis does): on the file
+/// as rust-hdl writes it, one large `always @(*)` per module re-run on every change of a
+/// submodule's output, Icarus manages under 10 cycles/s; after `proc`, about 1,500.
+#[test]
+fn raster_top_iverilog_replay() {
+    let dir = testbenches::target_dir().join("replay");
+    std::fs::create_dir_all(&dir).expect("the replay directory");
+    let top = frame::raster_top_file().unwrap_or_else(|e| panic!("{e}"));
+    let processed = dir.join("raster_top_proc.v");
+    let script = format!(
+        "read_verilog {}; hierarchy -check -top raster_top; proc; opt_clean; write_verilog -noattr {}",
+        top.display(),
+        processed.display()
+    );
+    let out = Command::new("yosys")
+        .args(["-q", "-p", &script])
+        .output()
+        .unwrap_or_else(|e| panic!("yosys is not installed ({e}): run scripts/setup-tools.sh"));
+    assert!(out.status.success(), "yosys: {}", String::from_utf8_lossy(&out.stderr));
+    let bench = dir.join("raster_top_tb.vvp");
+    let tb = Path::new(env!("CARGO_MANIFEST_DIR")).join("iverilog/raster_top_tb.v");
+    let hint = "run scripts/setup-tools.sh (Icarus Verilog comes from Debian)";
+    let out = Command::new("iverilog")
+        .args(["-g2012", "-o"])
+        .args([&bench, &tb, &processed])
+        .output()
+        .unwrap_or_else(|e| panic!("iverilog is not installed ({e}): {hint}"));
+    assert!(out.status.success(), "iverilog: {}", String::from_utf8_lossy(&out.stderr));
+    let replay = |vectors: &Path, stall: bool| {
+        let mut vvp = Command::new("vvp");
+        vvp.arg("-n").arg(&bench).arg(format!("+vectors={}", vectors.display()));
+        if stall {
+            vvp.arg("+stall");
+        }
+        let out = vvp.output().unwrap_or_else(|e| panic!("vvp is not installed ({e}): {hint}"));
+        (
+            out.status.success(),
+            format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr)),
+        )
+    };
+    for (name, size, stall) in [("cube", (48, 32), false), ("clip", (64, 48), true)] {
+        let (l, cull) = scene(name, Some(size));
+        let prep = prepare(&l, cull, [0; 3]).unwrap_or_else(|e| panic!("{e}"));
+        assert!(prep.writes.len() > 100, "{name}: {} writes", prep.writes.len());
+        let f = Frame { width: l.width, height: l.height, cull, background: [0; 3], triangles: &prep.triangles };
+        let vectors = dir.join(format!("{name}.vec"));
+        frame::write_vectors(&vectors, &f, &prep.writes).expect("the vector file");
+        let (ok, log) = replay(&vectors, stall);
+        assert!(ok && log.contains(&format!("PASS {} writes", prep.writes.len())), "{name}: {log}");
+        if !stall {
+            // One expected colour off by one in the middle of the frame: the bench must say so.
+            let mut wrong = prep.writes.clone();
+            let k = wrong.len() / 2;
+            wrong[k].rgb[1] ^= 1;
+            let bad = dir.join(format!("{name}-wrong.vec"));
+            frame::write_vectors(&bad, &f, &wrong).expect("the vector file");
+            let (ok, log) = replay(&bad, false);
+            assert!(!ok && log.contains("FAIL: cycle") && log.contains(&format!("write {k} is")), "{name}: {log}");
+        }
+    }
+}

@@ -1,0 +1,236 @@
+//! Triangle setup (paper 001): rust-hdl and Verilator in lockstep, every output compared on
+//! every cycle, and each result (`out_*`, `SetupOut` flattened) checked against
+//! `model::triangle_setup`; latency and initiation interval against
+//! `model::cycles::setup_latency`. Its inputs are the triangles `model::cull_sort` passes.
+
+use model::ctx::Ctx;
+use model::cull_sort::{cull_sort, Cull, Sorted};
+use model::cycles::{setup_latency, Timing, SETUP_MULTIPLIERS_MAX};
+use model::input::Vtx;
+use model::triangle_setup::{triangle_setup, SetupOut};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use rtl::cull_sort::{COLOR, OUTCODE, XY, Z};
+use rtl::divider::DIV_QM;
+use rtl::triangle_setup::{Schedule, TriangleSetup, MULTIPLIERS_MAX};
+use rtl::widths::FORMATS;
+use scene::Vertex;
+use std::collections::VecDeque;
+use testbenches::flow::{hdl_cycle, outputs, Cycle, Flow};
+use testbenches::stimulus::{extremes, random_case, scene, Case};
+use testbenches::streams::{as_pins, raw, setup_out, PinValues};
+use testbenches::{count, seed, verilated, Dual, HdlSim, Value};
+
+/// 001's configuration, the default design's: 7 multipliers, a 5-stage divider.
+const K: usize = 7;
+const L: usize = 5;
+
+/// The triangles of `cases` that `cull_sort` passes.
+fn sorted(cases: &[Case]) -> Vec<Sorted> {
+    cases.iter().filter_map(|c| cull_sort(&c.v, c.clip, c.cull, &FORMATS).ok()).collect()
+}
+
+fn vertex_pins(out: &mut PinValues, prefix: &str, v: &Vtx) {
+    out.push((format!("{prefix}_x"), raw(XY, v.x)));
+    out.push((format!("{prefix}_y"), raw(XY, v.y)));
+    out.push((format!("{prefix}_z"), raw(Z, v.z)));
+    for (i, c) in v.c.iter().enumerate() {
+        out.push((format!("{prefix}_c{i}"), raw(COLOR, *c)));
+    }
+}
+
+/// A sorted triangle on the input ports (`cull_sort`'s `out_*` but `iw`).
+fn sorted_pins(s: &Sorted) -> PinValues {
+    let mut out = vec![("inp_crosses".to_owned(), raw(OUTCODE, s.crosses as i128))];
+    for (i, v) in s.v.iter().enumerate() {
+        vertex_pins(&mut out, &format!("inp_v{i}"), v);
+    }
+    out
+}
+
+/// The model's result.
+fn model(s: &Sorted) -> SetupOut {
+    triangle_setup(s, &mut Ctx::new(FORMATS))
+}
+
+/// The cycle each triangle was taken and its result first valid.
+#[derive(Clone, Copy, Debug, Default)]
+struct Taken {
+    taken: u64,
+    valid: u64,
+}
+
+/// Drives `tris` through `cycle` (one clock of one or both simulators) and checks each
+/// result against the model.
+fn run(cycle: &mut Cycle, tris: &[Sorted], flow: Flow, rng: &mut ChaCha8Rng) -> Result<Vec<Taken>, String> {
+    let mut timing = vec![Taken::default(); tris.len()];
+    let (mut next, mut presenting, mut ready, mut done, mut now) = (0, false, true, 0, 0u64);
+    let mut in_flight: VecDeque<usize> = VecDeque::new();
+    let mut was_valid = false;
+    while done < tris.len() {
+        if now > 200 * tris.len() as u64 + 200 {
+            return Err(format!("{done} of {} triangles out after {now} cycles", tris.len()));
+        }
+        if next < tris.len() {
+            presenting = flow.offer(presenting, rng);
+        }
+        let mut pins = sorted_pins(&tris[next.min(tris.len() - 1)]);
+        pins.push(("inp_valid".into(), Value::new(1, presenting as u128)));
+        pins.push(("out_ready".into(), Value::new(1, ready as u128)));
+        let out = cycle(&as_pins(&pins))?;
+        let valid = out.get("out_valid").bit(0);
+        if valid {
+            let &i = in_flight.front().ok_or(format!("cycle {now}: out_valid with no triangle taken"))?;
+            if !was_valid {
+                timing[i].valid = now;
+            }
+            for (pin, want) in setup_out("out", &model(&tris[i])) {
+                if out.get(&pin) != &want {
+                    return Err(format!(
+                        "cycle {now}: {pin} = {} but the model says {want} for triangle {i}:\n{:?}",
+                        out.get(&pin),
+                        tris[i]
+                    ));
+                }
+            }
+        }
+        was_valid = valid && !ready;
+        if valid && ready {
+            in_flight.pop_front();
+            done += 1;
+        }
+        if presenting && out.get("inp_ready").bit(0) {
+            timing[next].taken = now;
+            in_flight.push_back(next);
+            next += 1;
+            presenting = false;
+        }
+        ready = flow.next_ready(ready, rng);
+        now += 1;
+    }
+    Ok(timing)
+}
+
+/// `tris` through rust-hdl and Verilator (the default K and L) in lockstep.
+fn dual(tris: &[Sorted], flow: Flow) -> Vec<Taken> {
+    let seed = seed();
+    let vl = verilated("triangle_setup");
+    let mut dual = Dual::new(TriangleSetup::new(K, L).expect("K, L"), vl.model().unwrap_or_else(|e| panic!("{e}")));
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    run(&mut |p| dual.cycle(p).map_err(|m| m.to_string()), tris, flow, &mut rng)
+        .unwrap_or_else(|e| panic!("{e}\nseed {seed}"))
+}
+
+/// `tris` through rust-hdl's simulator alone, with `k` multipliers and an `l`-stage divider.
+fn hdl_only(k: usize, l: usize, tris: &[Sorted], flow: Flow) -> Vec<Taken> {
+    let mut sim = HdlSim::new(TriangleSetup::new(k, l).expect("K, L"));
+    let outs = outputs(&sim.unit);
+    let mut rng = ChaCha8Rng::seed_from_u64(seed());
+    let mut cycle = |pins: &[(&str, Value)]| Ok(hdl_cycle(&mut sim, &outs, pins));
+    run(&mut cycle, tris, flow, &mut rng).unwrap_or_else(|e| panic!("{e}\nseed {} (K = {k}, L = {l})", seed()))
+}
+
+/// `n` random triangles that pass `cull_sort` (skewed toward the degenerate ones).
+fn random(rng: &mut ChaCha8Rng, n: usize) -> Vec<Sorted> {
+    let mut tris = Vec::with_capacity(n);
+    while tris.len() < n {
+        tris.extend(sorted(&[random_case(rng)]));
+    }
+    tris
+}
+
+#[test]
+fn triangle_setup_random_vs_model() {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed());
+    dual(&random(&mut rng, count()), Flow::STALLING);
+}
+
+/// The synthetic extremes that pass `cull_sort` (the largest and the unit area, slivers
+/// with the steepest edges, flat tops and bottoms, vertices on the clip planes, z and
+/// colours at their limits), back to back and with stalls.
+#[test]
+fn triangle_setup_extremes_vs_model() {
+    let tris = sorted(&extremes().into_iter().map(|(_, c)| c).collect::<Vec<_>>());
+    assert!(tris.len() >= 15, "only {} extreme triangles pass cull_sort", tris.len());
+    dual(&tris, Flow::BACK_TO_BACK);
+    dual(&tris, Flow::STALLING);
+}
+
+/// The shipped scenes through the geometry stage, `to_fixed` and `cull_sort`: realistic
+/// triangles (all five models at 640x480, and the scene across the screen edges and the
+/// near plane at 320x240).
+#[test]
+fn triangle_setup_scenes_vs_model() {
+    let mut cases = scene("all", Cull::Back);
+    cases.extend(scene("clip", Cull::None));
+    dual(&sorted(&cases), Flow::STALLING);
+}
+
+/// 001 eq. (2) on its own worst case: an 800-pixel base and a colour step of 255 at
+/// 800x600, where eq. (1)'s first product overflows a gradient register (see the model's
+/// `triangle_setup_paper_001_eq2_fits_where_eq1_overflows`); the RTL computes the
+/// model's values, and no register of the model wrapped.
+#[test]
+fn triangle_setup_paper_001_eq2_worst_case() {
+    let t = [
+        Vertex::new(0.0, 0.0, 0.5, [0.0; 3]),
+        Vertex::new(0.0, 599.0, 0.5, [255.0; 3]),
+        Vertex::new(800.0, 600.0, 0.5, [0.0; 3]),
+    ];
+    let clip = model::cull_sort::Clip { width: 800, height: 600 };
+    let v = model::input::to_fixed(&t, &FORMATS).expect("fits");
+    let tris = sorted(&[Case { v, clip, cull: Cull::None }]);
+    let mut ctx = Ctx::new(FORMATS);
+    triangle_setup(&tris[0], &mut ctx);
+    assert_eq!(ctx.overflowed(), vec![], "no register of setup wraps");
+    dual(&tris, Flow::BACK_TO_BACK);
+}
+
+/// 001 Table 3 gives setup 34 cycles (7 multipliers, one 5-stage divider); this setup's
+/// schedule takes `model::cycles::setup_latency` = 18. Back to back with the output always
+/// taken, each triangle's result is valid that many cycles after it is taken, and the
+/// next triangle is taken in the cycle the result is handed over (II = latency).
+#[test]
+fn triangle_setup_latency_and_ii_paper_001_table3() {
+    let t = Timing { setup_multipliers: K as u32, divider_latency: L as u32, ..Timing::default() };
+    let latency = setup_latency(&t) as u64;
+    assert_eq!(latency, 18);
+    assert_eq!(Schedule::new(K, L).expect("K, L").latency as u64, latency);
+    let mut rng = ChaCha8Rng::seed_from_u64(seed());
+    let timing = dual(&random(&mut rng, 40), Flow::BACK_TO_BACK);
+    for (i, t) in timing.iter().enumerate() {
+        assert_eq!(t.valid - t.taken, latency, "triangle {i}: {t:?}");
+    }
+    for (i, w) in timing.windows(2).enumerate() {
+        assert_eq!(w[1].taken - w[0].taken, latency, "triangles {i} and {}: II", i + 1);
+    }
+}
+
+/// The schedule the RTL runs is the model's, for every supported K and L.
+#[test]
+fn triangle_setup_schedule_is_the_models_for_every_k_and_l() {
+    for k in 1..=SETUP_MULTIPLIERS_MAX as usize {
+        for l in 1..=DIV_QM {
+            let t = Timing { setup_multipliers: k as u32, divider_latency: l as u32, ..Timing::default() };
+            assert_eq!(Schedule::new(k, l).expect("supported").latency, setup_latency(&t) as usize, "K = {k}, L = {l}");
+        }
+    }
+    assert_eq!(MULTIPLIERS_MAX, SETUP_MULTIPLIERS_MAX as usize);
+    assert!(Schedule::new(8, 5).is_err() && Schedule::new(0, 5).is_err() && Schedule::new(7, 0).is_err());
+}
+
+/// Other multiplier counts and divider depths, in rust-hdl's simulator (each would be a
+/// Verilator build of its own): bit-exact, with the model's latency.
+#[test]
+fn triangle_setup_other_k_and_l_rust_hdl() {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed());
+    let tris = random(&mut rng, 60);
+    for (k, l) in [(1, 5), (3, 2), (4, 9), (7, 1)] {
+        let t = Timing { setup_multipliers: k as u32, divider_latency: l as u32, ..Timing::default() };
+        let timing = hdl_only(k, l, &tris, Flow::STALLING);
+        let back_to_back = hdl_only(k, l, &tris[..5], Flow::BACK_TO_BACK);
+        for t2 in back_to_back.iter().chain(&timing[..1]) {
+            assert_eq!(t2.valid - t2.taken, setup_latency(&t) as u64, "K = {k}, L = {l}: {t2:?}");
+        }
+    }
+}
