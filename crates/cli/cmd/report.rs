@@ -7,8 +7,9 @@
 //! * iCE40: `synth_ice40` of the unit alone: SB_LUT4, SB_DFF*, SB_CARRY, SB_MAC16;
 //! * ECP5: `synth_ecp5` of the unit alone: LUT4, TRELLIS_FF, CCU2C, MULT18X18D;
 //! * Fmax: the unit inside `rtl::emit::pnr_wrapper` (registered inputs and outputs, four
-//!   pins), `nextpnr-ice40` on an iCE40 HX8K (ct256) and `nextpnr-ecp5` on an LFE5U-25F
-//!   (CABGA381), seed 1; the achieved clock in nextpnr's JSON report.
+//!   pins), `nextpnr-ice40` on an iCE40 HX8K (ct256) and `nextpnr-ecp5` on the smallest
+//!   LFE5U (25F, 45F, 85F; CABGA381) the synthesized unit fits in, seed 1; the achieved
+//!   clock in nextpnr's JSON report. A unit too large for every part has no Fmax.
 
 use super::emit::emit_one;
 use anyhow::{anyhow, bail, Context, Result};
@@ -37,10 +38,32 @@ pub struct Args {
     out: PathBuf,
 }
 
-/// iCE40 part for place and route: the largest HX part, 7680 LUTs.
-const ICE40: (&str, &[&str]) = ("iCE40HX8K-CT256", &["--hx8k", "--package", "ct256"]);
-/// ECP5 part for place and route: 24k LUTs.
-const ECP5: (&str, &[&str]) = ("LFE5U-25F-CABGA381", &["--25k", "--package", "CABGA381"]);
+/// An FPGA part for place and route: its name, nextpnr's flags for it, its LUT4s and
+/// multiplier blocks.
+struct Part {
+    name: &'static str,
+    flags: &'static [&'static str],
+    luts: u64,
+    dsps: u64,
+}
+
+/// iCE40 part for place and route: the largest HX part (no DSP blocks; `synth_ice40`
+/// infers none).
+const ICE40: &[Part] =
+    &[Part { name: "iCE40HX8K-CT256", flags: &["--hx8k", "--package", "ct256"], luts: 7_680, dsps: 0 }];
+/// ECP5 parts, smallest first.
+const ECP5: &[Part] = &[
+    Part { name: "LFE5U-25F-CABGA381", flags: &["--25k", "--package", "CABGA381"], luts: 24_288, dsps: 28 },
+    Part { name: "LFE5U-45F-CABGA381", flags: &["--45k", "--package", "CABGA381"], luts: 43_848, dsps: 72 },
+    Part { name: "LFE5U-85F-CABGA381", flags: &["--85k", "--package", "CABGA381"], luts: 83_640, dsps: 156 },
+];
+
+/// The smallest of `parts` with room for `luts` (with 10% left for the wrapper and
+/// packing) and `dsps`.
+fn part_for(parts: &'static [Part], luts: u64, dsps: u64) -> Option<&'static Part> {
+    parts.iter().find(|p| luts * 10 <= p.luts * 9 && dsps <= p.dsps)
+}
+
 /// Target clocks for timing-driven placement, in MHz; the achieved Fmax is reported
 /// whether or not it meets them.
 const ICE40_TARGET_MHZ: &str = "100";
@@ -67,14 +90,16 @@ struct Generic {
 
 #[derive(Serialize)]
 struct Fpga {
-    device: &'static str,
+    /// The part placed and routed on; `None` when the unit fits none (no Fmax then).
+    device: Option<&'static str>,
     luts: u64,
     ffs: u64,
     /// iCE40 SB_CARRY or ECP5 CCU2C (two-bit carry cells).
     carry: u64,
     /// iCE40 SB_MAC16 or ECP5 MULT18X18D.
     dsps: u64,
-    /// Achieved clock of the wrapped unit after place and route; `None` with `--no-pnr`.
+    /// Achieved clock of the wrapped unit after place and route; `None` with `--no-pnr` or
+    /// when it fits no part.
     fmax_mhz: Option<f64>,
 }
 
@@ -140,28 +165,46 @@ fn report(e: &Emitted, dir: &Path, pnr: bool) -> Result<Row> {
         .ok_or_else(|| anyhow!("no transistor estimate in Yosys' stat"))?;
     let ice40 = cells(&yosys_stat(dir, "ice40", &format!("{read}; synth_ice40 -top {top}"), "")?);
     let ecp5 = cells(&yosys_stat(dir, "ecp5", &format!("{read}; synth_ecp5 -top {top}"), "")?);
-
-    let (mut ice40_fmax, mut ecp5_fmax) = (None, None);
+    let count = |cells: &BTreeMap<String, u64>, f: &dyn Fn(&str) -> bool| {
+        cells.iter().filter(|(k, _)| f(k)).map(|(_, n)| n).sum()
+    };
+    let mut ice40 = Fpga {
+        device: None,
+        luts: count(&ice40, &|k| k == "SB_LUT4"),
+        ffs: count(&ice40, &|k| k.starts_with("SB_DFF")),
+        carry: count(&ice40, &|k| k == "SB_CARRY"),
+        dsps: count(&ice40, &|k| k == "SB_MAC16"),
+        fmax_mhz: None,
+    };
+    let mut ecp5 = Fpga {
+        device: None,
+        luts: count(&ecp5, &|k| k == "LUT4"),
+        ffs: count(&ecp5, &|k| k == "TRELLIS_FF"),
+        carry: count(&ecp5, &|k| k == "CCU2C"),
+        dsps: count(&ecp5, &|k| k == "MULT18X18D"),
+        fmax_mhz: None,
+    };
+    ice40.device = part_for(ICE40, ice40.luts, ice40.dsps).map(|p| p.name);
+    ecp5.device = part_for(ECP5, ecp5.luts, ecp5.dsps).map(|p| p.name);
     if pnr {
         let read_both = format!("{read}; read_verilog {}", wrap_v.display());
         let wrapped = format!("{top}_pnr");
         let json = |name: &str| dir.join(name).display().to_string();
-        yosys(dir, "ice40_pnr", &format!("{read_both}; synth_ice40 -top {wrapped} -json {}", json("ice40_pnr.json")))?;
-        ice40_fmax = Some(nextpnr(
-            dir,
-            "nextpnr-ice40",
-            ICE40.1,
-            "ice40_pnr.json",
-            ICE40_TARGET_MHZ,
-            "--pcf-allow-unconstrained",
-        )?);
-        yosys(dir, "ecp5_pnr", &format!("{read_both}; synth_ecp5 -top {wrapped} -json {}", json("ecp5_pnr.json")))?;
-        ecp5_fmax =
-            Some(nextpnr(dir, "nextpnr-ecp5", ECP5.1, "ecp5_pnr.json", ECP5_TARGET_MHZ, "--lpf-allow-unconstrained")?);
+        if let Some(part) = part_for(ICE40, ice40.luts, ice40.dsps) {
+            yosys(
+                dir,
+                "ice40_pnr",
+                &format!("{read_both}; synth_ice40 -top {wrapped} -json {}", json("ice40_pnr.json")),
+            )?;
+            let args = (part.flags, "ice40_pnr.json", ICE40_TARGET_MHZ, "--pcf-allow-unconstrained");
+            ice40.fmax_mhz = Some(nextpnr(dir, "nextpnr-ice40", args)?);
+        }
+        if let Some(part) = part_for(ECP5, ecp5.luts, ecp5.dsps) {
+            yosys(dir, "ecp5_pnr", &format!("{read_both}; synth_ecp5 -top {wrapped} -json {}", json("ecp5_pnr.json")))?;
+            let args = (part.flags, "ecp5_pnr.json", ECP5_TARGET_MHZ, "--lpf-allow-unconstrained");
+            ecp5.fmax_mhz = Some(nextpnr(dir, "nextpnr-ecp5", args)?);
+        }
     }
-    let count = |cells: &BTreeMap<String, u64>, f: &dyn Fn(&str) -> bool| {
-        cells.iter().filter(|(k, _)| f(k)).map(|(_, n)| n).sum()
-    };
     Ok(Row {
         unit: e.unit.to_owned(),
         parameters: e.params.clone(),
@@ -170,22 +213,8 @@ fn report(e: &Emitted, dir: &Path, pnr: bool) -> Result<Row> {
             transistors,
             gate_equivalents: transistors as f64 / 4.0,
         },
-        ice40: Fpga {
-            device: ICE40.0,
-            luts: count(&ice40, &|k| k == "SB_LUT4"),
-            ffs: count(&ice40, &|k| k.starts_with("SB_DFF")),
-            carry: count(&ice40, &|k| k == "SB_CARRY"),
-            dsps: count(&ice40, &|k| k == "SB_MAC16"),
-            fmax_mhz: ice40_fmax,
-        },
-        ecp5: Fpga {
-            device: ECP5.0,
-            luts: count(&ecp5, &|k| k == "LUT4"),
-            ffs: count(&ecp5, &|k| k == "TRELLIS_FF"),
-            carry: count(&ecp5, &|k| k == "CCU2C"),
-            dsps: count(&ecp5, &|k| k == "MULT18X18D"),
-            fmax_mhz: ecp5_fmax,
-        },
+        ice40,
+        ecp5,
     })
 }
 
@@ -222,7 +251,10 @@ fn cells(design: &serde_json::Value) -> BTreeMap<String, u64> {
 /// Places and routes netlist `dir/net`; returns the achieved Fmax in MHz of its one clock.
 /// Runs in `dir` with relative paths: the YoWASP build of nextpnr-ecp5 sees only the
 /// current directory.
-fn nextpnr(dir: &Path, tool: &str, part: &[&str], net: &str, target_mhz: &str, unconstrained: &str) -> Result<f64> {
+/// `args`: the part's flags, the netlist, the target clock in MHz, the flag allowing
+/// unconstrained pins.
+fn nextpnr(dir: &Path, tool: &str, args: (&[&str], &str, &str, &str)) -> Result<f64> {
+    let (part, net, target_mhz, unconstrained) = args;
     let (report, log) = (format!("{tool}.report.json"), format!("{tool}.log"));
     let out = Command::new(tool)
         .current_dir(dir)
@@ -247,7 +279,11 @@ fn nextpnr(dir: &Path, tool: &str, part: &[&str], net: &str, target_mhz: &str, u
 }
 
 fn markdown(rows: &[Row]) -> String {
-    let mhz = |f: Option<f64>| f.map_or("–".to_owned(), |f| format!("{f:.1}"));
+    let mhz = |f: &Fpga| match (f.fmax_mhz, f.device) {
+        (Some(mhz), Some(part)) => format!("{mhz:.1} ({})", part.split('-').take(2).collect::<Vec<_>>().join("-")),
+        (_, None) => "does not fit".to_owned(),
+        (None, Some(_)) => "–".to_owned(),
+    };
     let mut md = String::from(
         "| unit | parameters | generic cells | GE (2-input) | iCE40 LUT | iCE40 FF | iCE40 carry | iCE40 DSP | iCE40 Fmax MHz | ECP5 LUT | ECP5 FF | ECP5 carry | ECP5 DSP | ECP5 Fmax MHz |\n\
          |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
@@ -266,19 +302,21 @@ fn markdown(rows: &[Row]) -> String {
             i.ffs,
             i.carry,
             i.dsps,
-            mhz(i.fmax_mhz),
+            mhz(i),
             e.luts,
             e.ffs,
             e.carry,
             e.dsps,
-            mhz(e.fmax_mhz)
+            mhz(e)
         )
         .expect("writing to a String");
     }
     md.push_str(&format!(
         "\nGE: Yosys `stat -tech cmos` transistors / 4. LUT, FF, carry, DSP: the unit alone through `synth_ice40` / \
-         `synth_ecp5`. Fmax: the unit between registers (`rtl::emit::pnr_wrapper`), nextpnr on {} and {}.\n",
-        ICE40.0, ECP5.0
+         `synth_ecp5`. Fmax: the unit between registers (`rtl::emit::pnr_wrapper`), nextpnr on {} and the \
+         smallest of {} with room for it (LUTs at most 90% of the part's).\n",
+        ICE40[0].name,
+        ECP5.iter().map(|p| p.name).collect::<Vec<_>>().join(", ")
     ));
     md
 }
@@ -293,5 +331,18 @@ mod tests {
         assert_eq!(sweep(&[p("P", 64), p("P", 1024)]), vec![vec![p("P", 64)], vec![p("P", 1024)]]);
         assert_eq!(sweep(&[]), vec![Vec::<(String, u64)>::new()]);
         assert_eq!(sweep(&[p("A", 1), p("B", 2), p("A", 3)]).len(), 2);
+    }
+
+    #[test]
+    fn report_places_on_the_smallest_part_with_room() {
+        let name = |p: Option<&Part>| p.map(|p| p.name);
+        assert_eq!(name(part_for(ECP5, 1_000, 4)), Some("LFE5U-25F-CABGA381"));
+        // 90% of 24,288 LUTs is 21,859: one more goes to the 45F; so do 29 multipliers.
+        assert_eq!(name(part_for(ECP5, 21_859, 0)), Some("LFE5U-25F-CABGA381"));
+        assert_eq!(name(part_for(ECP5, 21_860, 0)), Some("LFE5U-45F-CABGA381"));
+        assert_eq!(name(part_for(ECP5, 1_000, 29)), Some("LFE5U-45F-CABGA381"));
+        assert_eq!(name(part_for(ECP5, 80_000, 0)), None);
+        assert_eq!(name(part_for(ICE40, 7_000, 0)), None);
+        assert_eq!(name(part_for(ICE40, 6_000, 0)), Some("iCE40HX8K-CT256"));
     }
 }
