@@ -3,7 +3,8 @@
 //!
 //! Per unit and parameter set:
 //! * generic: Yosys `synth -flatten`; cells, and 2-input gate equivalents (GE) defined as
-//!   `stat -tech cmos` transistors / 4 (a CMOS NAND2 is 4 transistors);
+//!   transistors / 4 (a CMOS NAND2 is 4 transistors): `stat -tech cmos` for the gates, which
+//!   leaves flip-flops out, plus [`ff_transistors`] for each flip-flop;
 //! * iCE40: `synth_ice40` of the unit alone: SB_LUT4, SB_DFF*, SB_CARRY, SB_MAC16;
 //! * ECP5: `synth_ecp5` of the unit alone: LUT4, TRELLIS_FF, CCU2C, MULT18X18D;
 //! * Fmax: the unit inside `rtl::emit::pnr_wrapper` (registered inputs and outputs, four
@@ -82,9 +83,12 @@ struct Row {
 struct Generic {
     /// Yosys generic cells after `synth -flatten`.
     cells: u64,
-    /// `stat -tech cmos` estimate.
+    /// `stat -tech cmos` estimate of the gates (flip-flops not counted).
     transistors: u64,
-    /// transistors / 4.
+    /// Flip-flops, and their transistors by [`ff_transistors`].
+    flip_flops: u64,
+    ff_transistors: u64,
+    /// (transistors + ff_transistors) / 4.
     gate_equivalents: f64,
 }
 
@@ -159,10 +163,14 @@ fn report(e: &Emitted, dir: &Path, pnr: bool) -> Result<Row> {
     let read = format!("read_verilog {}", unit_v.display());
 
     let generic = yosys_stat(dir, "generic", &format!("{read}; synth -flatten -top {top}"), "-tech cmos")?;
+    // "N+" when some cells (the flip-flops) have no estimate.
     let transistors: u64 = generic["estimated_num_transistors"]
         .as_str()
-        .and_then(|s| s.parse().ok())
+        .and_then(|s| s.trim_end_matches('+').parse().ok())
         .ok_or_else(|| anyhow!("no transistor estimate in Yosys' stat"))?;
+    let generic_cells = cells(&generic);
+    let flops = generic_cells.iter().filter_map(|(k, n)| ff_transistors(k).map(|t| (*n, n * t)));
+    let (flip_flops, ff_transistors) = flops.fold((0, 0), |(a, b), (n, t)| (a + n, b + t));
     let ice40 = cells(&yosys_stat(dir, "ice40", &format!("{read}; synth_ice40 -top {top}"), "")?);
     let ecp5 = cells(&yosys_stat(dir, "ecp5", &format!("{read}; synth_ecp5 -top {top}"), "")?);
     let count = |cells: &BTreeMap<String, u64>, f: &dyn Fn(&str) -> bool| {
@@ -211,11 +219,32 @@ fn report(e: &Emitted, dir: &Path, pnr: bool) -> Result<Row> {
         generic: Generic {
             cells: generic["num_cells"].as_u64().ok_or_else(|| anyhow!("no cell count in Yosys' stat"))?,
             transistors,
-            gate_equivalents: transistors as f64 / 4.0,
+            flip_flops,
+            ff_transistors,
+            gate_equivalents: (transistors + ff_transistors) as f64 / 4.0,
         },
         ice40,
         ecp5,
     })
+}
+
+/// Transistors of a Yosys generic flip-flop cell (`$_DFF_P_`, `$_DFFE_PP_`,
+/// `$_SDFFCE_PP0P_`, ...), which `stat -tech cmos` does not count; `None` for other cells.
+/// A static master-slave D flip-flop is 24 transistors (two latches of two transmission gates
+/// and two inverters, and the clock inverters); an enable adds a 2:1 mux (12, Yosys' cost of
+/// `$_MUX_`), a synchronous set or reset a gate (4), an asynchronous one 4 more.
+fn ff_transistors(cell: &str) -> Option<u64> {
+    let kind = cell.strip_prefix("$_")?;
+    let (name, _) = kind.split_once('_')?;
+    let base = match name {
+        "DFF" | "DFFE" | "SDFF" | "SDFFE" | "SDFFCE" | "DFFSR" | "DFFSRE" | "ALDFF" | "ALDFFE" => 24,
+        _ => return None,
+    };
+    let enable = if name.ends_with('E') { 12 } else { 0 };
+    let reset = if name.starts_with("SDFF") || name.starts_with("ALDFF") { 4 } else { 0 };
+    let async_reset =
+        if name.starts_with("DFF") && kind.split('_').nth(1).is_some_and(|p| p.len() >= 3) { 4 } else { 0 };
+    Some(base + enable + reset + async_reset)
 }
 
 /// Runs Yosys script `script` (log: `dir/<step>.log`).
@@ -312,7 +341,7 @@ fn markdown(rows: &[Row]) -> String {
         .expect("writing to a String");
     }
     md.push_str(&format!(
-        "\nGE: Yosys `stat -tech cmos` transistors / 4. LUT, FF, carry, DSP: the unit alone through `synth_ice40` / \
+        "\nGE: transistors / 4, Yosys `stat -tech cmos` for the gates plus 24 per flip-flop (36 with an enable). LUT, FF, carry, DSP: the unit alone through `synth_ice40` / \
          `synth_ecp5`. Fmax: the unit between registers (`rtl::emit::pnr_wrapper`), nextpnr on {} and the \
          smallest of {} with room for it (LUTs at most 90% of the part's).\n",
         ICE40[0].name,
@@ -344,5 +373,16 @@ mod tests {
         assert_eq!(name(part_for(ECP5, 80_000, 0)), None);
         assert_eq!(name(part_for(ICE40, 7_000, 0)), None);
         assert_eq!(name(part_for(ICE40, 6_000, 0)), Some("iCE40HX8K-CT256"));
+    }
+
+    #[test]
+    fn report_counts_flip_flop_transistors() {
+        assert_eq!(ff_transistors("$_DFF_P_"), Some(24));
+        assert_eq!(ff_transistors("$_DFFE_PP_"), Some(36));
+        assert_eq!(ff_transistors("$_DFF_PP0_"), Some(28));
+        assert_eq!(ff_transistors("$_SDFFCE_PP0P_"), Some(40));
+        assert_eq!(ff_transistors("$_SDFF_PP1_"), Some(28));
+        assert_eq!(ff_transistors("$_MUX_"), None);
+        assert_eq!(ff_transistors("$_XOR_"), None);
     }
 }
