@@ -1,13 +1,20 @@
-//! In-process simulation speed of the EPT in each simulator, in cycles per second.
+//! In-process simulation speed of the EPT and of whole frames through `raster_top` in each
+//! simulator, in cycles per second.
 //!
-//! `cargo run --release -p testbenches --example sim_speed [SECONDS]` (default 2 s per
-//! measurement; needs Verilator: scripts/setup-tools.sh). One cycle = drive `xl`, `xr`,
-//! settle, read `px`, as in the tests, with random (XL, XR) from a fixed seed.
+//! `cargo run --release -p testbenches --example sim_speed [SECONDS]` (default 2 s per EPT
+//! measurement; needs Verilator: scripts/setup-tools.sh). EPT: one cycle = drive `xl`, `xr`,
+//! settle, read `px`, as in the tests, with random (XL, XR) from a fixed seed. raster_top:
+//! the cube scene at 64 x 48 (rust-hdl) and the whole shipped scene `all` at 320 x 240
+//! (Verilator), drawn by `testbenches::frame::draw` with Rust memories, as
+//! `render --engine rtl` does.
 
+use model::cull_sort::Cull;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::ept::{Ept, EptSize, Pixels};
 use std::time::{Duration, Instant};
+use testbenches::frame::{self, draw, Cycle, Frame, MemoryModel};
+use testbenches::memory::ReadDuringWrite;
 use testbenches::{HdlSim, Sim, Value, Verilated};
 
 /// Runs `sim` for about `budget`; returns cycles per second.
@@ -43,6 +50,22 @@ where
     println!("| ept | P={P} | {hdl:.0} | {ver:.0} |");
 }
 
+/// A frame of scene `name` at `size` drawn on `dut`; returns cycles per second.
+fn frame_speed(dut: &mut dyn Cycle, name: &str, size: (u32, u32)) -> (u64, f64) {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes").join(format!("{name}.json"));
+    let s = scene::Scene::load(&path).and_then(|s| s.with_size(size.0, size.1)).unwrap_or_else(|e| panic!("{e}"));
+    let list = s.to_trilist().unwrap_or_else(|e| panic!("{e}"));
+    let cull = if s.cull_back { Cull::Back } else { Cull::None };
+    let prep = model::raster_top::frame(&list, cull, [0; 3]).unwrap_or_else(|e| panic!("{e}"));
+    let f = Frame { width: list.width, height: list.height, cull, background: [0; 3], triangles: &prep.triangles };
+    let memory = MemoryModel { read_during_write: ReadDuringWrite::Old, ready: &mut |_| true };
+    let start = Instant::now();
+    let out = draw(dut, &f, memory, 100_000_000).unwrap_or_else(|e| panic!("{e}"));
+    let speed = out.cycles as f64 / start.elapsed().as_secs_f64();
+    assert!(out.memory.rgb == prep.render.fb.rgb, "{name}: the RTL's image differs from the model's");
+    (out.cycles, speed)
+}
+
 fn main() {
     let secs: f64 = std::env::args().nth(1).map_or(2.0, |s| s.parse().expect("seconds"));
     let budget = Duration::from_secs_f64(secs);
@@ -50,4 +73,10 @@ fn main() {
     speeds::<8>(budget);
     speeds::<64>(budget);
     speeds::<1024>(budget);
+    let (cycles, hdl) = frame_speed(&mut HdlSim::new(frame::unit()), "cube", (64, 48));
+    println!("| raster_top | K=7 L=5, cube 64x48 ({cycles} cycles) | {hdl:.0} | |");
+    let runtime = frame::verilator().unwrap_or_else(|e| panic!("{e}"));
+    let mut dut = frame::model(&runtime).unwrap_or_else(|e| panic!("{e}"));
+    let (cycles, vl) = frame_speed(&mut dut, "all", (320, 240));
+    println!("| raster_top | K=7 L=5, all 320x240 ({cycles} cycles) | | {vl:.0} |");
 }

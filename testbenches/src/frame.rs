@@ -10,7 +10,7 @@
 use crate::memory::{Memory, ReadDuringWrite, Request};
 use crate::streams::{as_pins, raw, unsigned};
 use crate::verilated::IGNORED_WARNINGS;
-use crate::{check_verilator, target_dir, write_if_changed, Dual, Pins, Value};
+use crate::{check_verilator, target_dir, write_if_changed, Dual, HdlSim, Outputs, Pins, Sim, Value};
 use marlin::verilator::{VerilatorRuntime, VerilatorRuntimeOptions};
 use marlin::verilog::prelude::*;
 use model::cull_sort::{z_max, Cull};
@@ -81,19 +81,37 @@ fn named(d: &Drive) -> Vec<(String, Value)> {
     out
 }
 
+/// `raster_top`'s outputs that a frame reads, as one cycle's [`Sense`].
+fn sense(o: &Outputs) -> Sense {
+    let high = |pin: &str| unsigned(o.get(pin)) == 1;
+    Sense {
+        inp_ready: high("inp_ready"),
+        verdict_valid: high("verdict_valid"),
+        verdict_code: unsigned(o.get("verdict_code")) as u8,
+        req: Request::of(o),
+        done: high("done"),
+    }
+}
+
 /// rust-hdl and Verilator in lockstep: every output compared every cycle.
 impl<U: Block + Pins> Cycle for Dual<'_, U> {
     fn cycle(&mut self, d: &Drive) -> Result<Sense, String> {
         let pins = named(d);
-        let o = Dual::cycle(self, &as_pins(&pins)).map_err(|m| m.to_string())?;
-        let high = |pin: &str| unsigned(o.get(pin)) == 1;
-        Ok(Sense {
-            inp_ready: high("inp_ready"),
-            verdict_valid: high("verdict_valid"),
-            verdict_code: unsigned(o.get("verdict_code")) as u8,
-            req: Request::of(&o),
-            done: high("done"),
-        })
+        Ok(sense(&Dual::cycle(self, &as_pins(&pins)).map_err(|m| m.to_string())?))
+    }
+}
+
+/// rust-hdl's simulator alone (the frame simulation's speed in it: `examples/sim_speed.rs`).
+impl<U: Block + Pins> Cycle for HdlSim<U> {
+    fn cycle(&mut self, d: &Drive) -> Result<Sense, String> {
+        for (pin, v) in named(d) {
+            self.set(&pin, &v);
+        }
+        self.settle();
+        let read = ["inp_ready", "verdict_valid", "verdict_code", "done", "rd_en", "rd_addr", "wr_en", "wr_addr"];
+        let o = Outputs(read.iter().chain(&["wr_z", "wr_rgb"]).map(|p| (p.to_string(), self.get(p))).collect());
+        self.clock();
+        Ok(sense(&o))
     }
 }
 
