@@ -196,22 +196,30 @@ fn report(e: &Emitted, dir: &Path, pnr: bool) -> Result<Row> {
     ice40.device = part_for(ICE40, ice40.luts, ice40.dsps).map(|p| p.name);
     ecp5.device = part_for(ECP5, ecp5.luts, ecp5.dsps).map(|p| p.name);
     if pnr {
+        // The part is chosen for the wrapped unit: the wrapper's shift registers and output
+        // multiplexers add a LUT and a flip-flop per port bit.
         let read_both = format!("{read}; read_verilog {}", wrap_v.display());
         let wrapped = format!("{top}_pnr");
         let json = |name: &str| dir.join(name).display().to_string();
-        if let Some(part) = part_for(ICE40, ice40.luts, ice40.dsps) {
-            yosys(
-                dir,
-                "ice40_pnr",
-                &format!("{read_both}; synth_ice40 -top {wrapped} -json {}", json("ice40_pnr.json")),
-            )?;
-            let args = (part.flags, "ice40_pnr.json", ICE40_TARGET_MHZ, "--pcf-allow-unconstrained");
-            ice40.fmax_mhz = Some(nextpnr(dir, "nextpnr-ice40", args)?);
+        if ice40.device.is_some() {
+            let script = format!("{read_both}; synth_ice40 -top {wrapped} -json {}", json("ice40_pnr.json"));
+            let w = cells(&yosys_stat(dir, "ice40_pnr", &script, "")?);
+            let part = part_for(ICE40, count(&w, &|k| k == "SB_LUT4"), count(&w, &|k| k == "SB_MAC16"));
+            ice40.device = part.map(|p| p.name);
+            if let Some(part) = part {
+                let args = (part.flags, "ice40_pnr.json", ICE40_TARGET_MHZ, "--pcf-allow-unconstrained");
+                ice40.fmax_mhz = Some(nextpnr(dir, "nextpnr-ice40", args)?);
+            }
         }
-        if let Some(part) = part_for(ECP5, ecp5.luts, ecp5.dsps) {
-            yosys(dir, "ecp5_pnr", &format!("{read_both}; synth_ecp5 -top {wrapped} -json {}", json("ecp5_pnr.json")))?;
-            let args = (part.flags, "ecp5_pnr.json", ECP5_TARGET_MHZ, "--lpf-allow-unconstrained");
-            ecp5.fmax_mhz = Some(nextpnr(dir, "nextpnr-ecp5", args)?);
+        if ecp5.device.is_some() {
+            let script = format!("{read_both}; synth_ecp5 -top {wrapped} -json {}", json("ecp5_pnr.json"));
+            let w = cells(&yosys_stat(dir, "ecp5_pnr", &script, "")?);
+            let part = part_for(ECP5, count(&w, &|k| k == "LUT4"), count(&w, &|k| k == "MULT18X18D"));
+            ecp5.device = part.map(|p| p.name);
+            if let Some(part) = part {
+                let args = (part.flags, "ecp5_pnr.json", ECP5_TARGET_MHZ, "--lpf-allow-unconstrained");
+                ecp5.fmax_mhz = Some(nextpnr(dir, "nextpnr-ecp5", args)?);
+            }
         }
     }
     Ok(Row {
