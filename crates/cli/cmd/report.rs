@@ -194,7 +194,7 @@ fn report(e: &Emitted, dir: &Path, pnr: bool) -> Result<Row> {
         fmax_mhz: None,
     };
     ice40.device = part_for(ICE40, ice40.luts, ice40.dsps).map(|p| p.name);
-    ecp5.device = part_for(ECP5, ecp5.luts, ecp5.dsps).map(|p| p.name);
+    ecp5.device = part_for(ECP5, ecp5.luts + 2 * ecp5.carry, ecp5.dsps).map(|p| p.name);
     if pnr {
         // The part is chosen for the wrapped unit: the wrapper's shift registers and output
         // multiplexers add a LUT and a flip-flop per port bit.
@@ -214,7 +214,9 @@ fn report(e: &Emitted, dir: &Path, pnr: bool) -> Result<Row> {
         if ecp5.device.is_some() {
             let script = format!("{read_both}; synth_ecp5 -top {wrapped} -json {}", json("ecp5_pnr.json"));
             let w = cells(&yosys_stat(dir, "ecp5_pnr", &script, "")?);
-            let part = part_for(ECP5, count(&w, &|k| k == "LUT4"), count(&w, &|k| k == "MULT18X18D"));
+            // A CCU2C (two bits of carry) takes the two LUT4s of a slice half.
+            let luts = count(&w, &|k| k == "LUT4") + 2 * count(&w, &|k| k == "CCU2C");
+            let part = part_for(ECP5, luts, count(&w, &|k| k == "MULT18X18D"));
             ecp5.device = part.map(|p| p.name);
             if let Some(part) = part {
                 let args = (part.flags, "ecp5_pnr.json", ECP5_TARGET_MHZ, "--lpf-allow-unconstrained");
