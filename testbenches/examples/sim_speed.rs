@@ -52,7 +52,7 @@ where
 
 /// A frame of scene `name` at `size` drawn on `dut`; returns cycles per second.
 fn frame_speed(dut: &mut dyn Cycle, name: &str, size: (u32, u32)) -> (u64, f64) {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes").join(format!("{name}.json"));
+    let path = scene::shipped::path(name);
     let s = scene::Scene::load(&path).and_then(|s| s.with_size(size.0, size.1)).unwrap_or_else(|e| panic!("{e}"));
     let list = s.to_trilist().unwrap_or_else(|e| panic!("{e}"));
     let cull = if s.cull_back { Cull::Back } else { Cull::None };

@@ -8,7 +8,6 @@ use model::cull_sort::{z_max, Clip, Cull};
 use model::input::{to_fixed, Vtx};
 use rand::Rng;
 use rtl::widths::FORMATS;
-use std::path::Path;
 
 /// One triangle as it enters `cull_sort`, with the screen and the culling it meets there.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -21,7 +20,7 @@ pub struct Case {
 /// The triangles of shipped scene `name` (`scenes/<name>.json`) at its own resolution,
 /// through the software geometry stage and `to_fixed`, each with `cull`.
 pub fn scene(name: &str, cull: Cull) -> Vec<Case> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes").join(format!("{name}.json"));
+    let path = scene::shipped::path(name);
     let tris =
         scene::Scene::load(&path).and_then(|s| s.to_trilist()).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let clip = Clip { width: tris.width, height: tris.height };

@@ -51,7 +51,7 @@ fn ready_memory(always: &mut dyn FnMut(u64) -> bool) -> MemoryModel<'_> {
 }
 
 fn scene(name: &str, size: Option<(u32, u32)>) -> (Trilist, Cull) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes").join(format!("{name}.json"));
+    let path = scene::shipped::path(name);
     let mut s = scene::Scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
     if let Some((w, h)) = size {
         s = s.with_size(w, h).unwrap_or_else(|e| panic!("{e}"));

@@ -347,14 +347,13 @@ fn se_p8_random_spans_vs_model() {
 /// 64 m A: the multipliers see the same line at the same region ends as engine m's).
 #[test]
 fn se_scene_spans_vs_model() {
-    let dir = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes");
     let prm = SeParams { zw: 29, cw: 21, ..SeParams::paper(0) };
     let vl = verilog(&[("ZW", 29), ("CW", 21)]);
     let per_scene = (count() / 30).max(4);
     let mut all = Vec::new();
     let mut rows = 0;
     for name in ["cube", "sphere", "torus", "pawn", "clip", "all"] {
-        let sc = scene::Scene::load(&dir.join(format!("{name}.json"))).unwrap();
+        let sc = scene::Scene::load(&scene::shipped::path(name)).unwrap();
         let list = sc.to_trilist().unwrap();
         let f = fx::Formats::for_resolution(list.width, list.height);
         let cull = if sc.cull_back { model::cull_sort::Cull::Back } else { model::cull_sort::Cull::None };

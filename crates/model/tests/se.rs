@@ -15,14 +15,8 @@ use std::collections::HashMap;
 use std::path::PathBuf;
 
 fn shipped_scenes() -> Vec<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../scenes");
-    let mut v: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "json"))
-        .collect();
-    v.sort();
-    assert!(v.len() >= 7, "expected the shipped scenes in {}", dir.display());
+    let v = scene::shipped::all().expect("the shipped scenes");
+    assert!(v.len() >= 7, "expected the shipped scenes in {}", scene::shipped::dir().display());
     v
 }
 

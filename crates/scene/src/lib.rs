@@ -13,6 +13,7 @@ mod math;
 pub mod measure;
 pub mod mesh;
 pub mod scene;
+pub mod shipped;
 pub mod stress;
 pub mod trilist;
 

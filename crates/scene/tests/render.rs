@@ -159,14 +159,7 @@ fn ground_passing_under_the_camera_renders_without_garbage() {
 }
 
 fn shipped_scenes() -> Vec<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenes");
-    let mut paths: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "json"))
-        .collect();
-    paths.sort();
-    paths
+    scene::shipped::all().unwrap_or_else(|e| panic!("{}: {e}", scene::shipped::dir().display()))
 }
 
 /// Every shipped scene loads, stays in the guard band, and draws something
@@ -195,6 +188,6 @@ fn shipped_scenes_load_and_render() {
         let share = written as f64 / (s.width * s.height) as f64;
         assert!(share > 0.15, "{}: objects cover only {:.0}% of the frame", path.display(), share * 100.0);
     }
-    let all = Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenes/all.json")).unwrap();
+    let all = Scene::load(&scene::shipped::path("all")).unwrap();
     assert_eq!((all.width, all.height), (640, 480));
 }
