@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Verilator lint of every emitted unit in hdl-out/ (or of the .v files given), with -Wall.
+# Verilator lint of every emitted unit in hdl-out/ and of raster_top at size classes 11 and
+# 12 (emitted under target/lint/), or of the .v files given, with -Wall.
 # Exits non-zero if any file has a warning or an error.
 #
 # Waived, and why:
@@ -18,10 +19,17 @@ if ! command -v verilator >/dev/null; then
 fi
 shopt -s nullglob
 files=("$@")
-[[ ${#files[@]} -gt 0 ]] || files=(hdl-out/*.v)
 if [[ ${#files[@]} -eq 0 ]]; then
-    echo "lint: no Verilog in hdl-out/ (run 'cargo run --release' to emit it)" >&2
-    exit 1
+    files=(hdl-out/*.v)
+    if [[ ${#files[@]} -eq 0 ]]; then
+        echo "lint: no Verilog in hdl-out/ (run 'cargo run --release' to emit it)" >&2
+        exit 1
+    fi
+    # raster_top at the larger size classes too (screens up to 2048 and 4096).
+    for n in 11 12; do
+        cargo run --release --quiet -- emit --unit raster_top --param N=$n -o "target/lint/raster_top-N$n" >/dev/null
+        files+=("target/lint/raster_top-N$n/raster_top.v")
+    done
 fi
 
 failed=0

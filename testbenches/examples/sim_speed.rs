@@ -57,7 +57,14 @@ fn frame_speed(dut: &mut dyn Cycle, name: &str, size: (u32, u32)) -> (u64, f64) 
     let list = s.to_trilist().unwrap_or_else(|e| panic!("{e}"));
     let cull = if s.cull_back { Cull::Back } else { Cull::None };
     let prep = model::raster_top::frame(&list, cull, [0; 3]).unwrap_or_else(|e| panic!("{e}"));
-    let f = Frame { width: list.width, height: list.height, cull, background: [0; 3], triangles: &prep.triangles };
+    let f = Frame {
+        class: prep.class,
+        width: list.width,
+        height: list.height,
+        cull,
+        background: [0; 3],
+        triangles: &prep.triangles,
+    };
     let memory = MemoryModel { read_during_write: ReadDuringWrite::Old, ready: &mut |_| true };
     let start = Instant::now();
     let out = draw(dut, &f, memory, 100_000_000).unwrap_or_else(|e| panic!("{e}"));

@@ -10,21 +10,24 @@
 use crate::memory::{Memory, ReadDuringWrite, Request};
 use crate::streams::{as_pins, raw, unsigned};
 use crate::verilated::IGNORED_WARNINGS;
-use crate::{check_verilator, target_dir, write_if_changed, Dual, HdlSim, Outputs, Pins, Sim, Value};
+use crate::{check_verilator, target_dir, write_if_changed, Dual, HdlSim, Outputs, Pins, Sim, Value, VlSim};
 use marlin::verilator::{VerilatorRuntime, VerilatorRuntimeOptions};
 use marlin::verilog::prelude::*;
 use model::cull_sort::{z_max, Cull};
 use model::input::Vtx;
+use model::raster_top::formats;
 use model::span::Pixel;
-use rtl::cull_sort::{COLOR, INV_W, XY, Z};
+use rtl::cull_sort::{INV_W, XY, Z};
 use rtl::raster_top::RasterTop;
-use rtl::widths::{CHANNEL, DEPTH, DIM, FORMATS, SCREEN};
+use rtl::widths::{CHANNEL, CLASS};
 use rust_hdl::prelude::Block;
 use std::path::{Path, PathBuf};
 
 /// `raster_top`'s inputs in one cycle.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Drive {
+    /// The size class of the `raster_top` driven (`rtl::CLASSES`): its port widths.
+    pub class: u32,
     pub width: u32,
     pub height: u32,
     pub cull_back: bool,
@@ -57,26 +60,52 @@ fn low(width: usize, v: i128) -> u64 {
     (v as u64) & (u64::MAX >> (64 - width))
 }
 
+/// Widths of `raster_top`'s inputs at size class `class`.
+struct InputWidths {
+    dim: usize,
+    depth: usize,
+    xy: usize,
+    z: usize,
+    color: usize,
+    inv_w: usize,
+}
+
+impl InputWidths {
+    fn of(class: u32) -> Self {
+        let f = formats(class);
+        let bits = |f: fx::Fmt| f.bits() as usize;
+        InputWidths {
+            dim: class as usize + 1,
+            depth: f.z.frac as usize,
+            xy: bits(f.xy),
+            z: bits(f.z),
+            color: bits(f.color),
+            inv_w: bits(f.inv_w),
+        }
+    }
+}
+
 /// The named port values of `d`, for the simulators driven by name.
 fn named(d: &Drive) -> Vec<(String, Value)> {
+    let w = InputWidths::of(d.class);
     let mut out = vec![
-        ("width".to_owned(), Value::new(DIM, d.width as u128)),
-        ("height".into(), Value::new(DIM, d.height as u128)),
+        ("width".to_owned(), Value::new(w.dim, d.width as u128)),
+        ("height".into(), Value::new(w.dim, d.height as u128)),
         ("cull_back".into(), Value::new(1, d.cull_back as u128)),
         ("inp_valid".into(), Value::new(1, d.inp_valid as u128)),
         ("inp_last".into(), Value::new(1, d.inp_last as u128)),
         ("mem_ready".into(), Value::new(1, d.mem_ready as u128)),
-        ("rd_z".into(), Value::new(DEPTH, d.rd_z as u128)),
+        ("rd_z".into(), Value::new(w.depth, d.rd_z as u128)),
     ];
     for (k, v) in d.tri.iter().enumerate() {
         let p = |f: &str| format!("inp_v{k}_{f}");
-        out.push((p("x"), raw(XY, v.x)));
-        out.push((p("y"), raw(XY, v.y)));
-        out.push((p("z"), raw(Z, v.z)));
+        out.push((p("x"), raw(w.xy, v.x)));
+        out.push((p("y"), raw(w.xy, v.y)));
+        out.push((p("z"), raw(w.z, v.z)));
         for (i, c) in v.c.iter().enumerate() {
-            out.push((p(&format!("c{i}")), raw(COLOR, *c)));
+            out.push((p(&format!("c{i}")), raw(w.color, *c)));
         }
-        out.push((p("iw"), raw(INV_W, v.iw)));
+        out.push((p("iw"), raw(w.inv_w, v.iw)));
     }
     out
 }
@@ -101,17 +130,30 @@ impl<U: Block + Pins> Cycle for Dual<'_, U> {
     }
 }
 
+/// One cycle of a simulator driven by port name.
+fn cycle_by_name(sim: &mut impl Sim, d: &Drive) -> Sense {
+    for (pin, v) in named(d) {
+        sim.set(&pin, &v);
+    }
+    sim.settle();
+    let read = ["inp_ready", "verdict_valid", "verdict_code", "done", "rd_en", "rd_addr", "wr_en", "wr_addr"];
+    let o = Outputs(read.iter().chain(&["wr_z", "wr_rgb"]).map(|p| (p.to_string(), sim.get(p))).collect());
+    sim.clock();
+    sense(&o)
+}
+
 /// rust-hdl's simulator alone (the frame simulation's speed in it: `examples/sim_speed.rs`).
 impl<U: Block + Pins> Cycle for HdlSim<U> {
     fn cycle(&mut self, d: &Drive) -> Result<Sense, String> {
-        for (pin, v) in named(d) {
-            self.set(&pin, &v);
-        }
-        self.settle();
-        let read = ["inp_ready", "verdict_valid", "verdict_code", "done", "rd_en", "rd_addr", "wr_en", "wr_addr"];
-        let o = Outputs(read.iter().chain(&["wr_z", "wr_rgb"]).map(|p| (p.to_string(), self.get(p))).collect());
-        self.clock();
-        Ok(sense(&o))
+        Ok(cycle_by_name(self, d))
+    }
+}
+
+/// Verilator alone through marlin's dynamic model, for any size class (`render --engine
+/// rtl` at classes above 10).
+impl Cycle for VlSim<'_> {
+    fn cycle(&mut self, d: &Drive) -> Result<Sense, String> {
+        Ok(cycle_by_name(self, d))
     }
 }
 
@@ -123,6 +165,9 @@ pub struct RasterTopVl;
 
 impl Cycle for RasterTopVl<'_> {
     fn cycle(&mut self, d: &Drive) -> Result<Sense, String> {
+        if d.class != CLASS {
+            return Err(format!("the static Verilator model is raster_top of size class {CLASS}, not {}", d.class));
+        }
         self.width = d.width as _;
         self.height = d.height as _;
         self.cull_back = d.cull_back as _;
@@ -201,6 +246,8 @@ pub fn model(runtime: &VerilatorRuntime) -> Result<RasterTopVl<'_>, String> {
 
 /// What one frame is: the screen, the triangles (hardware words) and how to draw them.
 pub struct Frame<'a> {
+    /// The size class of the `raster_top` drawing it.
+    pub class: u32,
     pub width: u32,
     pub height: u32,
     pub cull: Cull,
@@ -234,12 +281,13 @@ pub struct FrameOut {
 /// up after `max_cycles`.
 pub fn draw(dut: &mut dyn Cycle, frame: &Frame, mem: MemoryModel, max_cycles: u64) -> Result<FrameOut, String> {
     assert!(!frame.triangles.is_empty(), "a frame needs a triangle to carry inp_last");
-    let zmax = z_max(&FORMATS) as u32;
-    let mut memory = Memory::new(frame.width, frame.height, zmax, frame.background, mem.read_during_write);
+    let zmax = z_max(&formats(frame.class)) as u32;
+    let size = (frame.width, frame.height);
+    let mut memory = Memory::new(frame.class, size, zmax, frame.background, mem.read_during_write);
     let n = frame.triangles.len();
     let (mut taken, mut verdicts, mut reads, mut stalls) = (Vec::new(), Vec::new(), Vec::new(), 0);
-    let mut d =
-        Drive { width: frame.width, height: frame.height, cull_back: frame.cull == Cull::Back, ..Drive::default() };
+    let (class, width, height, cull_back) = (frame.class, frame.width, frame.height, frame.cull == Cull::Back);
+    let mut d = Drive { class, width, height, cull_back, ..Drive::default() };
     for cycle in 0..max_cycles {
         let next = taken.len();
         d.inp_valid = next < n;
@@ -279,6 +327,7 @@ pub fn unit() -> RasterTop {
 /// bench `testbenches/iverilog/raster_top_tb.v` (its header gives the format).
 pub fn write_vectors(path: &Path, frame: &Frame, writes: &[Pixel]) -> std::io::Result<()> {
     use std::fmt::Write as _;
+    let w = InputWidths::of(frame.class);
     let mut text = format!(
         "{:x} {:x} {:x} {:x}\n",
         frame.width,
@@ -290,17 +339,17 @@ pub fn write_vectors(path: &Path, frame: &Frame, writes: &[Pixel]) -> std::io::R
         let words: Vec<String> = t
             .iter()
             .flat_map(|v| {
-                let c = v.c.map(|c| low(COLOR, c));
-                [low(XY, v.x), low(XY, v.y), low(Z, v.z), c[0], c[1], c[2], low(INV_W, v.iw)]
+                let c = v.c.map(|c| low(w.color, c));
+                [low(w.xy, v.x), low(w.xy, v.y), low(w.z, v.z), c[0], c[1], c[2], low(w.inv_w, v.iw)]
             })
             .map(|w| format!("{w:x}"))
             .collect();
         writeln!(text, "{}", words.join(" ")).expect("writing to a String");
     }
     writeln!(text, "{:x}", writes.len()).expect("writing to a String");
-    for w in writes {
-        let rgb = (w.rgb[0] as u32) << (2 * CHANNEL) | (w.rgb[1] as u32) << CHANNEL | w.rgb[2] as u32;
-        writeln!(text, "{:x} {:x} {rgb:x}", (w.y << SCREEN) | w.x, w.z).expect("writing to a String");
+    for p in writes {
+        let rgb = (p.rgb[0] as u32) << (2 * CHANNEL) | (p.rgb[1] as u32) << CHANNEL | p.rgb[2] as u32;
+        writeln!(text, "{:x} {:x} {rgb:x}", (p.y << frame.class) | p.x, p.z).expect("writing to a String");
     }
     if let Some(dir) = path.parent() {
         std::fs::create_dir_all(dir)?;

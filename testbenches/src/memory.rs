@@ -1,10 +1,11 @@
 //! The depth and colour buffers behind `pixel_out`'s memory port, in Rust (see
-//! `rtl::pixel_out` for the port's contract): one word per pixel at address `{y, x}`,
-//! reads returning data the cycle after, `mem_ready` stalling both.
+//! `rtl::pixel_out` for the port's contract): one word per pixel at address `{y, x}` (`x` in
+//! the low `n` bits for size class `n`), reads returning data the cycle after, `mem_ready`
+//! stalling both.
 
 use crate::streams::unsigned;
 use crate::Outputs;
-use rtl::widths::{CHANNEL, SCREEN};
+use rtl::widths::CHANNEL;
 
 /// What a read of an address written at the same edge returns: `pixel_out` must work
 /// with either.
@@ -65,17 +66,21 @@ pub struct Memory {
     pub writes: u64,
     /// Reads performed so far.
     pub reads: u64,
+    /// Address bits of `x`: the size class.
+    x_bits: u32,
     read_during_write: ReadDuringWrite,
     rd_z: u32,
 }
 
 impl Memory {
-    /// Buffers cleared to depth `z_max` and colour `background`.
-    pub fn new(width: u32, height: u32, z_max: u32, background: [u8; 3], rdw: ReadDuringWrite) -> Self {
+    /// Buffers cleared to depth `z_max` and colour `background`, for the `pixel_out` of size
+    /// class `class`.
+    pub fn new(class: u32, (width, height): (u32, u32), z_max: u32, background: [u8; 3], rdw: ReadDuringWrite) -> Self {
         let n = (width * height) as usize;
         Memory {
             width,
             height,
+            x_bits: class,
             depth: vec![z_max; n],
             rgb: vec![background; n],
             written: vec![false; n],
@@ -91,8 +96,13 @@ impl Memory {
         self.rd_z
     }
 
+    /// The pixel `(x, y)` at address `addr`.
+    fn xy(&self, addr: u32) -> (u32, u32) {
+        (addr & ((1 << self.x_bits) - 1), addr >> self.x_bits)
+    }
+
     fn index(&self, addr: u32, what: &str) -> usize {
-        let (x, y) = (addr & ((1 << SCREEN) - 1), addr >> SCREEN);
+        let (x, y) = self.xy(addr);
         assert!(
             x < self.width && y < self.height,
             "{what} of ({x}, {y}), off the {}x{} screen",
@@ -119,7 +129,8 @@ impl Memory {
             self.rgb[i] = rgb;
             self.written[i] = true;
             self.writes += 1;
-            Write { x: req.wr_addr & ((1 << SCREEN) - 1), y: req.wr_addr >> SCREEN, z: req.wr_z, rgb }
+            let (x, y) = self.xy(req.wr_addr);
+            Write { x, y, z: req.wr_z, rgb }
         });
         if let (Some(i), ReadDuringWrite::New) = (read, self.read_during_write) {
             self.rd_z = self.depth[i];

@@ -9,7 +9,7 @@ use model::span::Pixel;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::pixel_out::PixelOut;
-use rtl::widths::DEPTH;
+use rtl::widths::{CLASS, DEPTH};
 use std::collections::VecDeque;
 use testbenches::memory::{Memory, ReadDuringWrite, Request, Write};
 use testbenches::streams::{as_pins, pixel};
@@ -50,7 +50,7 @@ fn run(
     assert_eq!(II, 1);
     let zmax = z_max(&rtl::widths::FORMATS) as u32;
     let mut model = Framebuffer::new(w, h, zmax, [7, 8, 9]);
-    let mut mem = Memory::new(w, h, zmax, [7, 8, 9], rdw);
+    let mut mem = Memory::new(CLASS, (w, h), zmax, [7, 8, 9], rdw);
     let mut rng = ChaCha8Rng::seed_from_u64(seed());
     // Pixels taken and not yet due: the ready cycle their write is due in, and the
     // model's write (None when the depth test fails).
@@ -162,7 +162,7 @@ fn pixel_out_latency_is_2() {
     assert_eq!(LATENCY, 2);
     let vl = verilated("pixel_out");
     let mut d = dual(&vl);
-    let mut mem = Memory::new(8, 8, 65535, [0; 3], ReadDuringWrite::Old);
+    let mut mem = Memory::new(CLASS, (8, 8), 65535, [0; 3], ReadDuringWrite::Old);
     let p = Pixel { x: 3, y: 5, z: 100, rgb: [1, 2, 3] };
     let mut pins = vec![
         ("inp_valid", Value::new(1, 1)),

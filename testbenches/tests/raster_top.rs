@@ -8,13 +8,14 @@ use model::cull_sort::Cull;
 use model::raster_top::{self as top, frame as prepare};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use rust_hdl::prelude::Block;
 use scene::stress::{fan, random_mesh, split_rectangle};
 use scene::{Triangle, Trilist, Vertex};
 use std::path::Path;
 use std::process::Command;
 use testbenches::frame::{self, draw, Cycle, Frame, FrameOut, MemoryModel, Report};
 use testbenches::memory::ReadDuringWrite;
-use testbenches::{seed, Dual};
+use testbenches::{seed, Dual, Pins, Verilated};
 
 /// A Verilator runtime for `raster_top`: the model is built once (its C++ build is the
 /// slow part; marlin keeps it under the target directory and serialises concurrent
@@ -29,10 +30,28 @@ fn model(rt: &VerilatorRuntime) -> frame::RasterTopVl<'_> {
 
 /// `list` through the model and through `dut`; the image, depth and cycles compared.
 fn check(what: &str, dut: &mut dyn Cycle, list: &Trilist, cull: Cull, mem: MemoryModel) -> (top::Frame, FrameOut) {
-    let prep = prepare(list, cull, [20, 24, 32]).unwrap_or_else(|e| panic!("{what}: {e}"));
+    check_at(top::class_for(list.width, list.height), what, dut, list, cull, mem)
+}
+
+/// [`check`] with `dut` the `raster_top` of size class `class`.
+fn check_at(
+    class: u32,
+    what: &str,
+    dut: &mut dyn Cycle,
+    list: &Trilist,
+    cull: Cull,
+    mem: MemoryModel,
+) -> (top::Frame, FrameOut) {
+    let prep = top::frame_at(class, list, cull, [20, 24, 32]).unwrap_or_else(|e| panic!("{what}: {e}"));
     assert!(prep.skipped.is_empty(), "{what}: triangles that do not fit the input formats");
-    let f =
-        Frame { width: list.width, height: list.height, cull, background: [20, 24, 32], triangles: &prep.triangles };
+    let f = Frame {
+        class: prep.class,
+        width: list.width,
+        height: list.height,
+        cull,
+        background: [20, 24, 32],
+        triangles: &prep.triangles,
+    };
     let out = draw(dut, &f, mem, 50_000_000).unwrap_or_else(|e| panic!("{what}: {e}"));
     let fb = &prep.render.fb;
     for (i, (got, want)) in out.memory.rgb.iter().zip(&fb.rgb).enumerate() {
@@ -211,6 +230,49 @@ fn raster_top_hdl_vs_verilator_lockstep() {
     check("cube, lockstep", &mut dual, &l, cull, ready_memory(&mut ready));
 }
 
+/// `raster_top` of size class `class` (`N`), emitted and Verilated.
+fn verilated_at(class: u32) -> Verilated {
+    let unit = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
+    let params = unit.params([("N".to_owned(), class as u64)]).unwrap_or_else(|e| panic!("{e}"));
+    let e = unit.emit(&params).unwrap_or_else(|e| panic!("{e}"));
+    Verilated::of(&e).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The larger size classes in rust-hdl and Verilator in lockstep: a small screen with the
+/// cube and a triangle whose vertices lie beyond class 10's coordinate range (|x| >= 2048,
+/// which class 10 cannot take), every output compared every cycle, the image the model's
+/// at the class's formats (`Formats::for_n(class)`).
+#[test]
+fn raster_top_size_classes_11_and_12_lockstep() {
+    fn lockstep<U: Block + Pins>(class: u32, unit: U) {
+        let (mut l, cull) = scene("cube", Some((24, 16)));
+        let far = [(-3000.0, 3.0, 0.3), (20.0, -2500.0, 0.5), (3500.0, 14.0, 0.9)];
+        l.triangles.push(far.map(|(x, y, z)| Vertex::new(x, y, z, [90.0, 160.0, 230.0])));
+        let class10 = prepare(&l, cull, [0; 3]).expect("a 24 x 16 frame");
+        assert_eq!(class10.skipped.len(), 1, "class 10 cannot take the far triangle");
+        let vl = verilated_at(class);
+        let mut dual = Dual::new(unit, vl.model().unwrap_or_else(|e| panic!("{e}")));
+        let what = format!("class {class}, lockstep");
+        let (prep, _) = check_at(class, &what, &mut dual, &l, cull, ready_memory(&mut |c| c % 5 != 3));
+        assert!(prep.fragments.last().is_some_and(|&n| n > 0), "{what}: the far triangle draws");
+    }
+    let (k, l) = (7, 5);
+    lockstep(11, rtl::n11::raster_top::RasterTop::new(k, l).expect("K = 7, L = 5"));
+    lockstep(12, rtl::n12::raster_top::RasterTop::new(k, l).expect("K = 7, L = 5"));
+}
+
+/// A screen larger than class 10's through the `raster_top` the CLI picks for it (class
+/// 11), in Verilator (marlin's dynamic model): image and cycles the model's.
+#[test]
+fn raster_top_class_11_scene_vs_model() {
+    let (l, cull) = scene("sphere", Some((1280, 960)));
+    assert_eq!(top::class_for(l.width, l.height), 11);
+    let vl = verilated_at(11);
+    let mut dut = vl.model().unwrap_or_else(|e| panic!("{e}"));
+    let (prep, out) = check("sphere at 1280x960", &mut dut, &l, cull, ready_memory(&mut |_| true));
+    assert_eq!(out.cycles, prep.cycles(), "cycles");
+}
+
 /// One triangle alone: the latency from taking it to its first pixel's read, and to its
 /// write, against 003 Table 1 (31 cycles in all) and 001 (68 extra cycles per triangle).
 #[test]
@@ -284,7 +346,14 @@ fn raster_top_iverilog_replay() {
         let (l, cull) = scene(name, Some(size));
         let prep = prepare(&l, cull, [0; 3]).unwrap_or_else(|e| panic!("{e}"));
         assert!(prep.writes.len() > 100, "{name}: {} writes", prep.writes.len());
-        let f = Frame { width: l.width, height: l.height, cull, background: [0; 3], triangles: &prep.triangles };
+        let f = Frame {
+            class: prep.class,
+            width: l.width,
+            height: l.height,
+            cull,
+            background: [0; 3],
+            triangles: &prep.triangles,
+        };
         let vectors = dir.join(format!("{name}.vec"));
         frame::write_vectors(&vectors, &f, &prep.writes).expect("the vector file");
         let (ok, log) = replay(&vectors, stall);

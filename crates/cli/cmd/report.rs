@@ -34,6 +34,10 @@ pub struct Args {
     /// Skip place and route (no Fmax): synthesis only, much faster.
     #[arg(long)]
     no_pnr: bool,
+    /// nextpnr's router: router1 (its default) or router2, which routes large designs
+    /// (triangle_setup, raster_top) in minutes where router1 had not finished in 20.
+    #[arg(long, default_value = "router1", value_parser = ["router1", "router2"])]
+    router: String,
     /// Directory for report.md, report.json and the tools' work files.
     #[arg(short, long, value_name = "DIR", default_value = "target/report")]
     out: PathBuf,
@@ -128,7 +132,7 @@ pub fn run(args: Args) -> Result<()> {
         let tag: String = e.params.iter().map(|(k, v)| format!("-{k}{v}")).collect();
         let dir = args.out.join(format!("{}{tag}", e.unit));
         eprintln!("report: {}{tag} in {}", e.unit, dir.display());
-        rows.push(report(e, &dir, !args.no_pnr)?);
+        rows.push(report(e, &dir, (!args.no_pnr).then_some(args.router.as_str()))?);
     }
     let md = markdown(&rows);
     let json = serde_json::to_string_pretty(&serde_json::json!({ "units": rows }))? + "\n";
@@ -154,7 +158,7 @@ fn sweep(params: &[(String, u64)]) -> Vec<Vec<(String, u64)>> {
     })
 }
 
-fn report(e: &Emitted, dir: &Path, pnr: bool) -> Result<Row> {
+fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
     let unit_v = dir.join(e.file());
     let wrap_v = dir.join(format!("{}_pnr.v", e.unit));
@@ -195,7 +199,7 @@ fn report(e: &Emitted, dir: &Path, pnr: bool) -> Result<Row> {
     };
     ice40.device = part_for(ICE40, ice40.luts, ice40.dsps).map(|p| p.name);
     ecp5.device = part_for(ECP5, ecp5.luts + 2 * ecp5.carry, ecp5.dsps).map(|p| p.name);
-    if pnr {
+    if let Some(router) = router {
         // The part is chosen for the wrapped unit: the wrapper's shift registers and output
         // multiplexers add a LUT and a flip-flop per port bit.
         let read_both = format!("{read}; read_verilog {}", wrap_v.display());
@@ -208,7 +212,7 @@ fn report(e: &Emitted, dir: &Path, pnr: bool) -> Result<Row> {
             ice40.device = part.map(|p| p.name);
             if let Some(part) = part {
                 let args = (part.flags, "ice40_pnr.json", ICE40_TARGET_MHZ, "--pcf-allow-unconstrained");
-                ice40.fmax_mhz = Some(nextpnr(dir, "nextpnr-ice40", args)?);
+                ice40.fmax_mhz = Some(nextpnr(dir, "nextpnr-ice40", args, router)?);
             }
         }
         if ecp5.device.is_some() {
@@ -220,7 +224,7 @@ fn report(e: &Emitted, dir: &Path, pnr: bool) -> Result<Row> {
             ecp5.device = part.map(|p| p.name);
             if let Some(part) = part {
                 let args = (part.flags, "ecp5_pnr.json", ECP5_TARGET_MHZ, "--lpf-allow-unconstrained");
-                ecp5.fmax_mhz = Some(nextpnr(dir, "nextpnr-ecp5", args)?);
+                ecp5.fmax_mhz = Some(nextpnr(dir, "nextpnr-ecp5", args, router)?);
             }
         }
     }
@@ -292,14 +296,15 @@ fn cells(design: &serde_json::Value) -> BTreeMap<String, u64> {
 /// Runs in `dir` with relative paths: the YoWASP build of nextpnr-ecp5 sees only the
 /// current directory.
 /// `args`: the part's flags, the netlist, the target clock in MHz, the flag allowing
-/// unconstrained pins.
-fn nextpnr(dir: &Path, tool: &str, args: (&[&str], &str, &str, &str)) -> Result<f64> {
+/// unconstrained pins; `router`: nextpnr's `--router`.
+fn nextpnr(dir: &Path, tool: &str, args: (&[&str], &str, &str, &str), router: &str) -> Result<f64> {
     let (part, net, target_mhz, unconstrained) = args;
     let (report, log) = (format!("{tool}.report.json"), format!("{tool}.log"));
     let out = Command::new(tool)
         .current_dir(dir)
         .args(part)
         .args(["--json", net, unconstrained, "--timing-allow-fail", "--seed", "1", "--freq", target_mhz])
+        .args(["--router", router])
         .args(["--report", &report, "--log", &log])
         .output()
         .with_context(|| format!("running {tool}"))?;

@@ -1,18 +1,21 @@
 //! `render --engine rtl`: a whole frame through the RTL of the scanline pipeline
 //! (`raster_top`) under Verilator, with the depth and colour buffers in Rust
-//! (`testbenches::frame`). The Verilated model is built the first time under
-//! `target/verilator/` (Verilator from `scripts/setup-tools.sh`). The image is checked
-//! against the scanline model's, bit for bit.
+//! (`testbenches::frame`). The `raster_top` of the screen's size class draws it
+//! (`model::raster_top::class_for`: class 10 up to 1024 x 1024, 11 and 12 above): class 10
+//! through marlin's static model, the others through its dynamic one. The Verilated model
+//! is built the first time under `target/verilator/` (Verilator from
+//! `scripts/setup-tools.sh`). The image is checked against the scanline model's, bit for
+//! bit.
 
 use super::engine::FixedArgs;
 use super::render::{depth16, Image};
 use anyhow::{anyhow, ensure, Result};
 use model::cull_sort::Cull;
-use rtl::widths::FORMATS;
 use scene::Trilist;
 use std::time::Instant;
-use testbenches::frame::{self, Frame, MemoryModel, Report};
+use testbenches::frame::{self, Cycle, Frame, MemoryModel, Report};
 use testbenches::memory::ReadDuringWrite;
+use testbenches::Verilated;
 
 /// Draws `list` through `raster_top`; returns the image and the summary line with its
 /// fragment count.
@@ -25,8 +28,9 @@ pub fn render(
 ) -> Result<(Image, (String, u64))> {
     ensure!(
         fixed.formats == "default",
-        "--engine rtl: the RTL is built for the default formats (Formats::for_n({})); leave out --formats",
-        fx::RTL_CLASS
+        "--engine rtl: the RTL is built for the default formats of the screen's size class (Formats::for_n({})); \
+         leave out --formats",
+        model::raster_top::class_for(list.width, list.height)
     );
     ensure!(!analysis, "--analysis checks the models' arithmetic; it does not apply to --engine rtl");
     let cull = if cull_back { Cull::Back } else { Cull::None };
@@ -36,12 +40,32 @@ pub fn render(
         eprintln!("warning: triangle {i} not drawn: {e}");
     }
     ensure!(!prep.triangles.is_empty(), "--engine rtl: no triangle to draw");
-    let runtime = frame::verilator().map_err(|e| anyhow!("--engine rtl: {e}"))?;
-    let mut dut = frame::model(&runtime).map_err(|e| anyhow!("--engine rtl: {e}"))?;
-    let f = Frame { width: list.width, height: list.height, cull, background, triangles: &prep.triangles };
-    let start = Instant::now();
+    let f = Frame {
+        class: prep.class,
+        width: list.width,
+        height: list.height,
+        cull,
+        background,
+        triangles: &prep.triangles,
+    };
     let memory = MemoryModel { read_during_write: ReadDuringWrite::Old, ready: &mut |_| true };
-    let out = frame::draw(&mut dut, &f, memory, 2 * prep.cycles() + 100_000).map_err(|e| anyhow!(e))?;
+    let max_cycles = 2 * prep.cycles() + 100_000;
+    let start;
+    let out = if prep.class == rtl::widths::CLASS {
+        let runtime = frame::verilator().map_err(|e| anyhow!("--engine rtl: {e}"))?;
+        let mut dut = frame::model(&runtime).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+        start = Instant::now();
+        frame::draw(&mut dut, &f, memory, max_cycles)
+    } else {
+        let unit = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
+        let params = unit.params([("N".to_owned(), prep.class as u64)]).map_err(|e| anyhow!(e))?;
+        let e = unit.emit(&params).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+        let vl = Verilated::of(&e).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+        let mut dut = vl.model().map_err(|e| anyhow!("--engine rtl: {e}"))?;
+        start = Instant::now();
+        frame::draw(&mut dut as &mut dyn Cycle, &f, memory, max_cycles)
+    }
+    .map_err(|e| anyhow!(e))?;
     let secs = start.elapsed().as_secs_f64();
     let r = Report::of(&out, &prep);
     ensure!(
@@ -50,10 +74,11 @@ pub fn render(
     );
     let latency = r.latency.map_or("none".into(), |(lo, mid, hi)| format!("{lo}/{mid}/{hi}"));
     let summary = format!(
-        "rtl (raster_top in Verilator): {} triangles in, {} drawn, {} culled; {} fragments, {} pixels written; \
+        "rtl (raster_top of size class {} in Verilator): {} triangles in, {} drawn, {} culled; {} fragments, {} pixels written; \
          {} cycles (model::cycles: {}), {:.3} pixels per clock; per triangle: latency to its first pixel \
          {latency} cycles (min/median/max), {:.1} cycles between triangles (max {}); {:.0} cycles/s simulated; \
          image equal to the scanline model's",
+        prep.class,
         list.triangles.len(),
         r.drawn,
         r.triangles - r.drawn,
@@ -70,7 +95,7 @@ pub fn render(
     let image = Image {
         width: m.width,
         height: m.height,
-        depth16: m.depth.iter().map(|&d| depth16(d, FORMATS.z.frac)).collect(),
+        depth16: m.depth.iter().map(|&d| depth16(d, model::raster_top::formats(prep.class).z.frac)).collect(),
         rgb: m.rgb,
         written: m.written,
     };

@@ -11,20 +11,28 @@ use crate::input::{to_fixed, InputError, Vtx};
 use crate::pixel_out::Framebuffer;
 use crate::raster::{self, triangle, Method, Options, Render};
 use crate::span::Pixel;
-use fx::{Formats, RTL_CLASS};
+use fx::{resolution_bits, Formats, RTL_CLASS};
 use scene::Trilist;
 
-/// The formats `raster_top` is built with: the defaults of size class [`RTL_CLASS`]
-/// (screens up to 1024 x 1024).
-pub const fn formats() -> Formats {
-    Formats::for_n(RTL_CLASS)
+/// The largest size class `raster_top` is built for (`rtl::CLASSES`: 10 to 12).
+pub const MAX_CLASS: u32 = 12;
+
+/// The formats `raster_top` of size class `class` is built with: the defaults
+/// `Formats::for_n(class)` (screens up to 2^class x 2^class).
+pub const fn formats(class: u32) -> Formats {
+    Formats::for_n(class)
 }
 
-/// Largest screen side `raster_top` draws: its pixel coordinates are `RTL_CLASS` bits.
-pub const MAX_SIDE: u32 = 1 << RTL_CLASS;
+/// The size class that draws a `width` x `height` screen: the one the model's default
+/// formats are for (`fx::resolution_bits`, at least [`RTL_CLASS`]).
+pub const fn class_for(width: u32, height: u32) -> u32 {
+    resolution_bits(width, height)
+}
 
 /// One frame through `raster_top`, as the model draws it.
 pub struct Frame {
+    /// The size class of the `raster_top` drawing it.
+    pub class: u32,
     /// The triangles sent, as input words (`model::input::to_fixed`), in input order.
     pub triangles: Vec<[Vtx; 3]>,
     /// Triangles left out because their vertices do not fit the input formats, by index.
@@ -45,16 +53,34 @@ impl Frame {
     }
 }
 
-/// `list` drawn with `cull` on `background` by `raster_top`; an error for a screen larger
-/// than [`MAX_SIDE`].
+/// `list` drawn with `cull` on `background` by the `raster_top` of the screen's size class
+/// ([`class_for`]); an error for a screen no class draws.
 pub fn frame(list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<Frame, String> {
-    if list.width > MAX_SIDE || list.height > MAX_SIDE {
+    frame_at(class_for(list.width, list.height), list, cull, background)
+}
+
+/// `list` drawn with `cull` on `background` by the `raster_top` of size class `class` (which
+/// may be larger than the screen needs); an error for a class not built or a screen larger
+/// than 2^class.
+pub fn frame_at(class: u32, list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<Frame, String> {
+    if !(RTL_CLASS..=MAX_CLASS).contains(&class) {
+        let side = 1u64 << class.min(63);
         return Err(format!(
-            "raster_top draws screens up to {MAX_SIDE}x{MAX_SIDE}, not {}x{}",
+            "a {}x{} screen needs size class {class} ({side}x{side}); raster_top is built for classes \
+             {RTL_CLASS} to {MAX_CLASS} (screens up to {m}x{m})",
+            list.width,
+            list.height,
+            m = 1u32 << MAX_CLASS
+        ));
+    }
+    let side = 1u32 << class;
+    if list.width > side || list.height > side {
+        return Err(format!(
+            "raster_top of size class {class} draws screens up to {side}x{side}, not {}x{}",
             list.width, list.height
         ));
     }
-    let f = formats();
+    let f = formats(class);
     let opts = Options { method: Method::Scanline, cull, analysis: false, background };
     let clip = Clip { width: list.width, height: list.height };
     let (mut triangles, mut skipped, mut fragments, mut writes) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
@@ -72,7 +98,7 @@ pub fn frame(list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<Frame, S
     }
     let render = raster::render(list, &f, &opts, &mut |_| {});
     debug_assert!(render.fb == fb, "the same pixels, through the same depth test");
-    Ok(Frame { triangles, skipped, render, fragments, writes })
+    Ok(Frame { class, triangles, skipped, render, fragments, writes })
 }
 
 #[cfg(test)]
@@ -98,7 +124,7 @@ mod tests {
         assert_eq!(f.writes.len() as u64, f.render.stats.pixels_written);
         // All of the near triangle's pixels pass the depth test; they come last.
         assert_eq!(f.writes.len(), f.fragments[0] + f.fragments[1]);
-        let mut replay = Framebuffer::new(16, 16, z_max(&formats()) as u32, [0; 3]);
+        let mut replay = Framebuffer::new(16, 16, z_max(&formats(RTL_CLASS)) as u32, [0; 3]);
         for w in &f.writes {
             assert!(replay.pixel_out(w, 0), "each write passes the depth test in order: {w:?}");
         }
@@ -107,10 +133,15 @@ mod tests {
     }
 
     #[test]
-    fn raster_top_frame_rejects_large_screens_and_skips_unrepresentable_triangles() {
-        let list = Trilist { width: MAX_SIDE + 1, height: 16, triangles: vec![] };
-        let err = frame(&list, Cull::None, [0; 3]).err().expect("a 1025-pixel-wide screen is refused");
-        assert!(err.contains("up to 1024x1024"), "{err}");
+    fn raster_top_frame_picks_the_size_class_and_rejects_larger_screens() {
+        let screen = |width, height| Trilist { width, height, triangles: vec![] };
+        assert_eq!([class_for(320, 240), class_for(1025, 16), class_for(16, 4096)], [10, 11, 12]);
+        let err = frame(&screen(4097, 16), Cull::None, [0; 3]).err().expect("a 4097-pixel-wide screen is refused");
+        assert!(err.contains("classes 10 to 12 (screens up to 4096x4096)"), "{err}");
+        let err = frame_at(10, &screen(1025, 16), Cull::None, [0; 3]).err().expect("too wide for class 10");
+        assert!(err.contains("up to 1024x1024, not 1025x16"), "{err}");
+        assert!(frame_at(9, &screen(16, 16), Cull::None, [0; 3]).is_err(), "class 9 is not built");
+        assert!(frame_at(12, &screen(1025, 16), Cull::None, [0; 3]).is_ok());
         // x beyond the S11.4 vertex format's range: skipped, the other one drawn.
         let huge = tri([(5000.0, 1.0, 0.5), (1.0, 1.0, 0.5), (1.0, 9.0, 0.5)]);
         let ok = tri([(1.0, 1.0, 0.5), (9.0, 1.0, 0.5), (1.0, 9.0, 0.5)]);

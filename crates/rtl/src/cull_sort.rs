@@ -28,7 +28,7 @@
 
 use crate::emit::{ports, verilog, Emitted};
 use crate::mul::Mul;
-use crate::widths::{DIM, FORMATS};
+use super::widths::{DIM, FORMATS};
 use crate::Params;
 use rust_hdl::prelude::*;
 
@@ -72,7 +72,7 @@ pub mod verdict {
 #[derive(LogicBlock)]
 pub struct CullSort {
     pub clock: Signal<In, Clock>,
-    /// Screen size in pixels, 1 to 2^RTL_CLASS: the clip volume is [0, width] x [0, height].
+    /// Screen size in pixels, 1 to 2^CLASS (the size class): the clip volume is [0, width] x [0, height].
     pub width: Signal<In, Bits<DIM>>,
     pub height: Signal<In, Bits<DIM>>,
     /// Drop back faces (clockwise on screen, y down).

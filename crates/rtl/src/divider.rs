@@ -33,7 +33,7 @@
 
 use crate::emit::{ports, verilog, Emitted};
 use crate::sim::{PinValue, Pins, Value};
-use crate::widths::DERIVED;
+use super::widths::DERIVED;
 use crate::Params;
 use rust_hdl::prelude::*;
 

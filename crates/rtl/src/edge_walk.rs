@@ -33,7 +33,7 @@
 
 use crate::emit::{emit, Emitted};
 use crate::parts::{Negative, SignedLess};
-use crate::widths::{C_ACC, DC, DIM, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
+use super::widths::{C_ACC, DC, DIM, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
 use crate::Params;
 use rust_hdl::prelude::*;
 

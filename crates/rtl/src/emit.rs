@@ -321,4 +321,20 @@ mod tests {
         assert_eq!(names, [("xl", PortDir::In, 4), ("xr", PortDir::In, 4), ("px", PortDir::Out, 16)]);
         assert!(e.verilog.contains("\nmodule ept(xl,xr,px);"), "top module named after the unit");
     }
+
+    /// The frame simulation's static Verilator model (`testbenches::frame`) takes
+    /// raster_top's ports from a committed ANSI wrapper, read when the testbenches crate
+    /// compiles; it must be what `ansi_wrapper` writes now. A stale one is rewritten here
+    /// (commit it, then rebuild).
+    #[test]
+    fn raster_top_ansi_wrapper_is_fresh() {
+        let path = repo().join("testbenches/verilog/raster_top_ansi.sv");
+        let unit = Unit::named("raster_top").expect("raster_top is in UNITS");
+        let e = unit.emit(&unit.params([]).expect("defaults")).expect("the default parameters");
+        let want = ansi_wrapper(&e);
+        if std::fs::read_to_string(&path).ok().as_deref() != Some(want.as_str()) {
+            std::fs::write(&path, &want).expect("writing the wrapper");
+            panic!("{} was stale and has been rewritten: commit it, and rebuild the testbenches", path.display());
+        }
+    }
 }

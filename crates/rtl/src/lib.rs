@@ -5,20 +5,79 @@
 //! tests are `testbenches/tests/<name>.rs`. [`DEFAULT_DESIGN`] is what `edgepaint` with no
 //! arguments writes into `hdl-out/`.
 
-pub mod cull_sort;
-pub mod divider;
-pub mod edge_walk;
 pub mod emit;
 pub mod ept;
 pub mod mul;
 pub mod parts;
-pub mod pixel_out;
-pub mod raster_top;
 pub mod se;
 pub mod sim;
-pub mod span;
-pub mod triangle_setup;
-pub mod widths;
+
+/// The scanline pipeline's units, as modules of a size-class module (`n10.rs`, ...): rust-hdl's
+/// widths are compile-time constants, so each size class `n` (screens up to 2^n x 2^n,
+/// number formats `fx::Formats::for_n(n)`) compiles its own copy of the same sources
+/// (`cull_sort.rs`, ..., `raster_top.rs`), which read their widths from their class's
+/// `widths` module. (Loading one file as several modules is the point here, hence the
+/// `clippy::duplicate_mod` allowance.)
+macro_rules! scanline_units {
+    () => {
+        #[path = "cull_sort.rs"]
+        pub mod cull_sort;
+        #[path = "divider.rs"]
+        pub mod divider;
+        #[path = "edge_walk.rs"]
+        pub mod edge_walk;
+        #[path = "pixel_out.rs"]
+        pub mod pixel_out;
+        #[path = "raster_top.rs"]
+        pub mod raster_top;
+        #[path = "span.rs"]
+        pub mod span;
+        #[path = "triangle_setup.rs"]
+        pub mod triangle_setup;
+        #[path = "widths.rs"]
+        pub mod widths;
+    };
+}
+#[allow(clippy::duplicate_mod)]
+pub mod n10;
+#[allow(clippy::duplicate_mod)]
+pub mod n11;
+#[allow(clippy::duplicate_mod)]
+pub mod n12;
+
+/// The size classes the scanline units are built for (`n10`, `n11`, `n12`).
+pub const CLASSES: [u32; 3] = [n10::CLASS, n11::CLASS, n12::CLASS];
+
+/// A scanline unit's `build`: `$emit` of module `$unit` in the size class its parameter
+/// `N` names.
+macro_rules! by_class {
+    ($unit:ident :: $emit:ident) => {
+        |params: &Params| {
+            emit_at_class(params, stringify!($unit), [n10::$unit::$emit, n11::$unit::$emit, n12::$unit::$emit])
+        }
+    };
+}
+
+/// `emit[i]` for class `CLASSES[i]` = `params["N"]`; an error for another class.
+fn emit_at_class(params: &Params, unit: &str, emit: [Build; CLASSES.len()]) -> Result<Emitted, String> {
+    let n = params["N"];
+    match CLASSES.iter().position(|&c| c as u64 == n) {
+        Some(i) => emit[i](params),
+        None => Err(format!("{unit}: N = {n} is not supported: size classes {CLASSES:?} (screens up to 2^N x 2^N)")),
+    }
+}
+
+/// The default size class, [`fx::RTL_CLASS`] (screens up to 1024 x 1024): its units are
+/// also at the crate's root (`rtl::raster_top`, ...).
+pub use n10::{cull_sort, divider, edge_walk, pixel_out, raster_top, span, triangle_setup, widths};
+const _: () = assert!(n10::CLASS == fx::RTL_CLASS);
+
+/// The size-class parameter every scanline unit has.
+const N: Param = Param {
+    name: "N",
+    default: fx::RTL_CLASS as u64,
+    doc: "size class: screens up to 2^N x 2^N, formats Formats::for_n(N); 10, 11 or 12",
+};
 
 use emit::Emitted;
 use std::collections::BTreeMap;
@@ -42,8 +101,11 @@ pub struct Unit {
     pub doc: &'static str,
     pub params: &'static [Param],
     /// Emits the unit for complete, named parameters; `Err` for unsupported values.
-    build: fn(&Params) -> Result<Emitted, String>,
+    build: Build,
 }
+
+/// How a unit is emitted for complete, named parameters.
+type Build = fn(&Params) -> Result<Emitted, String>;
 
 /// Every unit, by name.
 pub const UNITS: &[Unit] = &[
@@ -56,50 +118,52 @@ pub const UNITS: &[Unit] = &[
     Unit {
         name: "cull_sort",
         doc: "cull & sort, paper 003 Fig. 4, Table 1: outcodes, reject, back-face cull, sort by y; 1 cycle",
-        params: &[],
-        build: cull_sort::emit_cull_sort,
+        params: &[N],
+        build: by_class!(cull_sort::emit_cull_sort),
     },
     Unit {
         name: "divider",
         doc: "the shared pipelined floor divider of paper 001 §II.2: one division per cycle, exact",
-        params: &[Param { name: "L", default: 5, doc: "pipeline stages (latency), 1 to 25; 001 has 5" }],
-        build: divider::emit_divider,
+        params: &[N, Param { name: "L", default: 5, doc: "pipeline stages (latency), 1 to 25; 001 has 5" }],
+        build: by_class!(divider::emit_divider),
     },
     Unit {
         name: "triangle_setup",
         doc: "triangle setup, paper 001 §II.2, eq. 2, Table 3: K multipliers reused, the 7 divisions on the shared divider",
         params: &[
+            N,
             Param { name: "K", default: 7, doc: "multipliers, 1 to 7 (latency 66 to 18 with L = 5); 001 has 7" },
             Param { name: "L", default: 5, doc: "stages of the shared divider, 1 to 25; 001 has 5" },
         ],
-        build: triangle_setup::emit_triangle_setup,
+        build: by_class!(triangle_setup::emit_triangle_setup),
     },
     Unit {
         name: "edge_walk",
         doc: "edge walk, papers 001 §II.2 and 003 Fig. 5: one scanline per cycle, exact edges, Y clipping",
-        params: &[],
-        build: edge_walk::emit_edge_walk,
+        params: &[N],
+        build: by_class!(edge_walk::emit_edge_walk),
     },
     Unit {
         name: "span",
         doc: "span unit, papers 001 §II.2 and 003 Fig. 6: one pixel per cycle, X and Z clipping",
-        params: &[],
-        build: span::emit_span,
+        params: &[N],
+        build: by_class!(span::emit_span),
     },
     Unit {
         name: "pixel_out",
         doc: "depth test LESS and depth/colour writes through a synchronous memory port, one pixel per cycle",
-        params: &[],
-        build: pixel_out::emit_pixel_out,
+        params: &[N],
+        build: by_class!(pixel_out::emit_pixel_out),
     },
     Unit {
         name: "raster_top",
         doc: "the scanline rasterizer of papers 001 and 003: cull_sort, setup with the divider, edge walk, span, pixel out",
         params: &[
+            N,
             Param { name: "K", default: 7, doc: "triangle_setup's multipliers, 1 to 7; 001 has 7" },
             Param { name: "L", default: 5, doc: "stages of the shared divider, 1 to 25; 001 has 5" },
         ],
-        build: raster_top::emit_raster_top,
+        build: by_class!(raster_top::emit_raster_top),
     },
     Unit {
         name: "se",
@@ -118,13 +182,13 @@ pub const UNITS: &[Unit] = &[
 /// The default design: units and parameters that `edgepaint` with no arguments emits.
 pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("ept", &[("P", 64)]),
-    ("cull_sort", &[]),
-    ("divider", &[("L", 5)]),
-    ("triangle_setup", &[("K", 7), ("L", 5)]),
-    ("edge_walk", &[]),
-    ("span", &[]),
-    ("pixel_out", &[]),
-    ("raster_top", &[("K", 7), ("L", 5)]),
+    ("cull_sort", &[("N", 10)]),
+    ("divider", &[("N", 10), ("L", 5)]),
+    ("triangle_setup", &[("N", 10), ("K", 7), ("L", 5)]),
+    ("edge_walk", &[("N", 10)]),
+    ("span", &[("N", 10)]),
+    ("pixel_out", &[("N", 10)]),
+    ("raster_top", &[("N", 10), ("K", 7), ("L", 5)]),
     ("se", &[("P", 64), ("ZW", 24), ("CW", 16), ("F", 16), ("I", 0)]),
 ];
 

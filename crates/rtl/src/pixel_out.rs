@@ -28,7 +28,7 @@
 
 use crate::emit::{emit, Emitted};
 use crate::parts::Concat;
-use crate::widths::{ADDR, CHANNEL, DEPTH, RGB, SCREEN};
+use super::widths::{ADDR, CHANNEL, DEPTH, RGB, SCREEN};
 use crate::Params;
 use rust_hdl::prelude::*;
 

@@ -13,16 +13,18 @@
 //! model's transactions field for field: `Sorted`, `SetupOut`, `SpanCmd`, `Pixel`.
 //!
 //! **A frame.** Clear the buffers (depth to z_max, colour to the background), set `width`,
-//! `height` (1 to 2^RTL_CLASS) and `cull_back`, send the triangles (the model's `Vtx`
+//! `height` (1 to 2^N) and `cull_back`, send the triangles (the model's `Vtx`
 //! words, `model::input::to_fixed`) with `inp_last` on the final one; `done` rises once
 //! that triangle has gone through and every unit is empty, and stays high until the next
 //! triangle is taken. `verdict_*` report each triangle `cull_sort` lets go (see
 //! `rtl::cull_sort`).
 //!
-//! **Parameters.** Resolution: the `width` and `height` ports, any screen up to 1024 x
-//! 1024. Formats: `Formats::for_n(RTL_CLASS)` (`crate::widths`). Units: all of the
-//! scanline pipeline; `K` and `L` choose setup's multipliers and the divider's stages
-//! (`rtl::triangle_setup`). The span FIFO holds [`SPAN_FIFO`] commands, as
+//! **Parameters.** `N`, the size class (10, 11 or 12; `crate::CLASSES`): screens up to
+//! 2^N x 2^N and the number formats `Formats::for_n(N)` (`widths`), every port and
+//! register as wide as that class needs; `model::raster_top::class_for` picks the class of
+//! a screen as the model's default formats do. Resolution within the class: the `width`
+//! and `height` ports. Units: all of the scanline pipeline; `K` and `L` choose setup's
+//! multipliers and the divider's stages (`triangle_setup`). The span FIFO holds [`SPAN_FIFO`] commands, as
 //! `model::cycles::Timing::span_fifo`.
 //!
 //! **Timing** (`model::cycles::scanline_frame` predicts it cycle for cycle when the memory
@@ -32,13 +34,13 @@
 //! takes a command, then a pixel per cycle; the write 2 cycles after the pixel.
 //! Model: `model::raster::render` with `Method::Scanline`. Emitted: `hdl-out/raster_top.v`.
 
-use crate::cull_sort::{CullSort, COLOR, INV_W, OUTCODE, XY, Z};
-use crate::edge_walk::EdgeWalk;
+use super::cull_sort::{CullSort, COLOR, INV_W, OUTCODE, XY, Z};
+use super::edge_walk::EdgeWalk;
 use crate::emit::{ports, verilog, Emitted};
-use crate::pixel_out::PixelOut;
-use crate::span::Span;
-use crate::triangle_setup::TriangleSetup;
-use crate::widths::{ADDR, C_ACC, DC, DEPTH, DIM, DZ, PIXEL, RGB, SCREEN, Z_ACC};
+use super::pixel_out::PixelOut;
+use super::span::Span;
+use super::triangle_setup::TriangleSetup;
+use super::widths::{ADDR, C_ACC, DC, DEPTH, DIM, DZ, PIXEL, RGB, SCREEN, Z_ACC};
 use crate::Params;
 use rust_hdl::prelude::*;
 
@@ -259,7 +261,7 @@ span_fifo_logic!(
 #[derive(LogicBlock)]
 pub struct RasterTop {
     pub clock: Signal<In, Clock>,
-    /// Screen size in pixels, 1 to 2^RTL_CLASS each; constant during a frame.
+    /// Screen size in pixels, 1 to 2^CLASS each (the size class); constant during a frame.
     pub width: Signal<In, Bits<DIM>>,
     pub height: Signal<In, Bits<DIM>>,
     /// Drop back faces (`model::cull_sort::Cull::Back`).
@@ -602,27 +604,4 @@ pub fn emit_raster_top(params: &Params) -> Result<Emitted, String> {
     let mut u = RasterTop::new(params["K"] as usize, params["L"] as usize)?;
     u.connect_all();
     Ok(Emitted { unit: "raster_top", params: params.clone(), ports: ports(&u), verilog: verilog("raster_top", &u) })
-}
-
-#[cfg(test)]
-mod tests {
-    use crate::emit::ansi_wrapper;
-    use crate::Unit;
-    use std::path::Path;
-
-    /// The frame simulation's static Verilator model (`testbenches::frame`) takes
-    /// raster_top's ports from a committed ANSI wrapper, read when the testbenches crate
-    /// compiles; it must be what `ansi_wrapper` writes now. A stale one is rewritten here
-    /// (commit it, then rebuild).
-    #[test]
-    fn raster_top_ansi_wrapper_is_fresh() {
-        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../testbenches/verilog/raster_top_ansi.sv");
-        let unit = Unit::named("raster_top").expect("raster_top is in UNITS");
-        let e = unit.emit(&unit.params([]).expect("defaults")).expect("the default parameters");
-        let want = ansi_wrapper(&e);
-        if std::fs::read_to_string(&path).ok().as_deref() != Some(want.as_str()) {
-            std::fs::write(&path, &want).expect("writing the wrapper");
-            panic!("{} was stale and has been rewritten: commit it, and rebuild the testbenches", path.display());
-        }
-    }
 }

@@ -29,7 +29,7 @@
 
 use crate::emit::{emit, Emitted};
 use crate::parts::{Negative, RoundShift, SignedLess};
-use crate::widths::{CHANNEL, C_ACC, DC, DEPTH, DIM, DZ, FORMATS, PIXEL, SCREEN, Z_ACC};
+use super::widths::{CHANNEL, C_ACC, DC, DEPTH, DIM, DZ, FORMATS, PIXEL, SCREEN, Z_ACC};
 use crate::Params;
 use rust_hdl::prelude::*;
 

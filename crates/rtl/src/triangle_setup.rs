@@ -55,20 +55,21 @@
 //!
 //! Model: `model::triangle_setup::triangle_setup`. Emitted: `hdl-out/triangle_setup.v`.
 
-use crate::cull_sort::{outcode_bit, COLOR, OUTCODE, XY, Z};
-use crate::divider::{DividerRtl, DIV_D, DIV_N, DIV_QM};
+use super::cull_sort::{outcode_bit, COLOR, OUTCODE, XY, Z};
+use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_QM};
 use crate::emit::{ports, verilog, Emitted};
 use crate::mul::Mul;
-use crate::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, Z_ACC};
+use super::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, Z_ACC};
 use crate::Params;
 use rust_hdl::prelude::*;
 
 /// Multiplier operand A: the widest factor, `ooa_d` (OneOverArea x delta, the gradients'
 /// first factor).
 pub const MUL_A: usize = FORMATS.ooa_d.bits() as usize;
-/// Multiplier operand B: the widest second factor, a z difference (`z` + 1 bits); every
-/// other (edge deltas, offsets from v0, step quotients, colour differences) is narrower.
-pub const MUL_B: usize = FORMATS.z.bits() as usize + 1;
+/// Multiplier operand B: the widest second factor: a z difference (`z` + 1 bits), an edge
+/// delta or offset from v0 (`xy` + 3 bits, with room to sign-extend) or a step quotient
+/// (`EDGE_Q` + 2); at class 10 all three are 19 bits. Colour differences are narrower.
+pub const MUL_B: usize = max(FORMATS.z.bits() as usize + 1, max(XY + 3, EDGE_Q + 2));
 /// Product bits kept: the divider's dividend width, so that an edge start numerator goes
 /// into the divider as it is.
 pub const MUL_P: usize = DIV_N;
@@ -88,6 +89,14 @@ const MANT: usize = FORMATS.ooa.bits() as usize;
 pub const PRODUCTS: usize = 64;
 
 const S: u32 = FORMATS.xy.frac;
+
+const fn max(a: usize, b: usize) -> usize {
+    if a > b {
+        a
+    } else {
+        b
+    }
+}
 const _: () = {
     // The shifts below are floor shifts (right): true of the default formats.
     assert!(FORMATS.ooa_d.frac + FORMATS.z.frac >= FORMATS.dz.frac);
@@ -95,7 +104,7 @@ const _: () = {
     assert!(FORMATS.dz.frac == FORMATS.z_acc.frac && FORMATS.dc.frac == FORMATS.c_acc.frac);
     assert!(FORMATS.z_acc.frac.checked_sub(FORMATS.z.frac).is_some());
     assert!(FORMATS.c_acc.frac.checked_sub(FORMATS.color.frac).is_some());
-    assert!(DZ >= DC && DZ >= Z_ACC && DC >= C_ACC && ATTR <= MUL_P && G + 1 == MUL_P);
+    assert!(DZ >= DC && DZ >= Z_ACC && DC >= C_ACC && ATTR <= MUL_P && G < MUL_P);
     assert!(MUL_B > XY + 2 && MUL_B > COLOR && EDGE_Q + 2 <= MUL_B);
 };
 

@@ -1,22 +1,24 @@
 //! Port and register widths of the scanline pipeline's RTL, read off the number formats it
-//! is built with: the model's defaults for size class [`fx::RTL_CLASS`] (screens up to
-//! 1024 x 1024), so that a change of format in `fx::formats` reaches every port.
+//! is built with: the model's defaults for its size class [`CLASS`] (screens up to 2^CLASS
+//! x 2^CLASS; `crate::n10`, `crate::n11`, ...), so that a change of format in `fx::formats`
+//! reaches every port.
 //!
 //! Configurable quantities take their format's width; exact quantities (positions, edge
 //! walker remainders) take the widths `Formats::derived` gives them.
 
-use fx::{Derived, Formats, RTL_CLASS};
+pub use super::CLASS;
+use fx::{Derived, Formats};
 
-/// The formats the RTL is built with: `Formats::for_n(RTL_CLASS)`.
-pub const FORMATS: Formats = Formats::for_n(RTL_CLASS);
+/// The formats the RTL is built with: `Formats::for_n(CLASS)`.
+pub const FORMATS: Formats = Formats::for_n(CLASS);
 /// Widths of the exact quantities under [`FORMATS`].
 pub const DERIVED: Derived = FORMATS.derived();
 
-/// Screen coordinates of a pixel on screen (x, y < 2^RTL_CLASS): unsigned.
-pub const SCREEN: usize = RTL_CLASS as usize;
-/// Screen width and height (1 to 2^RTL_CLASS): unsigned.
+/// Screen coordinates of a pixel on screen (x, y < 2^CLASS): unsigned.
+pub const SCREEN: usize = CLASS as usize;
+/// Screen width and height (1 to 2^CLASS): unsigned.
 pub const DIM: usize = SCREEN + 1;
-/// Memory address of a pixel: `{y, x}`, a row pitch of 2^RTL_CLASS words.
+/// Memory address of a pixel: `{y, x}`, a row pitch of 2^CLASS words.
 pub const ADDR: usize = 2 * SCREEN;
 /// Pixel positions anywhere in the coordinate range (scanline `j`, edge `x`, span ends,
 /// scanline counts): `pixel_bits`, two's complement.
@@ -46,9 +48,11 @@ mod tests {
     use super::*;
 
     #[test]
-    fn widths_follow_the_formats_of_size_class_10() {
-        // S11.4 vertices: positions in [-4096, 4096), edge deltas 17 bits, D < 2^20.
-        assert_eq!((SCREEN, DIM, ADDR, PIXEL, EDGE_D, EDGE_Q), (10, 11, 20, 13, 21, 17));
-        assert_eq!((Z_ACC, DZ, C_ACC, DC, DEPTH), (36, 40, 32, 36, 16));
+    fn widths_follow_the_formats_of_the_size_class() {
+        // Class 10: S11.4 vertices, positions in [-4096, 4096), edge deltas 17 bits,
+        // D < 2^20; every width but the depth word's grows by a bit per class.
+        let n = CLASS as usize - 10;
+        assert_eq!((SCREEN, DIM, ADDR, PIXEL, EDGE_D, EDGE_Q), (10 + n, 11 + n, 20 + 2 * n, 13 + n, 21 + n, 17 + n));
+        assert_eq!((Z_ACC, DZ, C_ACC, DC, DEPTH), (36 + n, 40 + n, 32 + n, 36 + n, 16));
     }
 }

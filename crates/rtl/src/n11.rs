@@ -1,0 +1,6 @@
+//! The scanline pipeline's units for size class 11: screens up to 2048 x 2048, number
+//! formats `fx::Formats::for_n(11)`.
+
+/// The size class of these units.
+pub const CLASS: u32 = 11;
+scanline_units!();

@@ -1,0 +1,6 @@
+//! The scanline pipeline's units for size class 12: screens up to 4096 x 4096, number
+//! formats `fx::Formats::for_n(12)`.
+
+/// The size class of these units.
+pub const CLASS: u32 = 12;
+scanline_units!();
