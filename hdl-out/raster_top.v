@@ -1,12 +1,11 @@
 
 
-module raster_top(clock,width,height,cull_back,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v0_iw,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v1_iw,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_v2_iw,verdict_valid,verdict_code,verdict_outside,mem_ready,rd_en,rd_addr,rd_z,wr_en,wr_addr,wr_z,wr_rgb,done);
+module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,cull_back,inp_v0_iw,inp_v1_iw,inp_v2_iw,verdict_valid,verdict_code,verdict_outside,mem_ready,rd_en,rd_addr,rd_z,wr_en,wr_addr,wr_z,wr_rgb,done);
     
     // Module arguments
     input wire  clock;
     input wire  [10:0] width;
     input wire  [10:0] height;
-    input wire  cull_back;
     input wire  inp_valid;
     output reg  inp_ready;
     input wire  inp_last;
@@ -16,20 +15,21 @@ module raster_top(clock,width,height,cull_back,inp_valid,inp_ready,inp_last,inp_
     input wire  [7:0] inp_v0_c0;
     input wire  [7:0] inp_v0_c1;
     input wire  [7:0] inp_v0_c2;
-    input wire  [15:0] inp_v0_iw;
     input wire  [15:0] inp_v1_x;
     input wire  [15:0] inp_v1_y;
     input wire  [17:0] inp_v1_z;
     input wire  [7:0] inp_v1_c0;
     input wire  [7:0] inp_v1_c1;
     input wire  [7:0] inp_v1_c2;
-    input wire  [15:0] inp_v1_iw;
     input wire  [15:0] inp_v2_x;
     input wire  [15:0] inp_v2_y;
     input wire  [17:0] inp_v2_z;
     input wire  [7:0] inp_v2_c0;
     input wire  [7:0] inp_v2_c1;
     input wire  [7:0] inp_v2_c2;
+    input wire  cull_back;
+    input wire  [15:0] inp_v0_iw;
+    input wire  [15:0] inp_v1_iw;
     input wire  [15:0] inp_v2_iw;
     output reg  verdict_valid;
     output reg  [1:0] verdict_code;
@@ -99,6 +99,307 @@ module raster_top(clock,width,height,cull_back,inp_valid,inp_ready,inp_last,inp_
     wire  cull_sort$verdict_valid;
     wire  [1:0] cull_sort$verdict_code;
     wire  [5:0] cull_sort$verdict_outside;
+    reg  pixel_out$clock;
+    reg  pixel_out$inp_valid;
+    wire  pixel_out$inp_ready;
+    reg  [9:0] pixel_out$inp_x;
+    reg  [9:0] pixel_out$inp_y;
+    reg  [15:0] pixel_out$inp_z;
+    reg  [7:0] pixel_out$inp_rgb0;
+    reg  [7:0] pixel_out$inp_rgb1;
+    reg  [7:0] pixel_out$inp_rgb2;
+    reg  pixel_out$mem_ready;
+    wire  pixel_out$rd_en;
+    wire  [19:0] pixel_out$rd_addr;
+    reg  [15:0] pixel_out$rd_z;
+    wire  pixel_out$wr_en;
+    wire  [19:0] pixel_out$wr_addr;
+    wire  [15:0] pixel_out$wr_z;
+    wire  [23:0] pixel_out$wr_rgb;
+    wire  pixel_out$idle;
+    reg  core$clock;
+    reg  [10:0] core$width;
+    reg  [10:0] core$height;
+    reg  core$inp_valid;
+    wire  core$inp_ready;
+    reg  [5:0] core$inp_crosses;
+    reg  [15:0] core$inp_v0_x;
+    reg  [15:0] core$inp_v0_y;
+    reg  [17:0] core$inp_v0_z;
+    reg  [7:0] core$inp_v0_c0;
+    reg  [7:0] core$inp_v0_c1;
+    reg  [7:0] core$inp_v0_c2;
+    reg  [15:0] core$inp_v1_x;
+    reg  [15:0] core$inp_v1_y;
+    reg  [17:0] core$inp_v1_z;
+    reg  [7:0] core$inp_v1_c0;
+    reg  [7:0] core$inp_v1_c1;
+    reg  [7:0] core$inp_v1_c2;
+    reg  [15:0] core$inp_v2_x;
+    reg  [15:0] core$inp_v2_y;
+    reg  [17:0] core$inp_v2_z;
+    reg  [7:0] core$inp_v2_c0;
+    reg  [7:0] core$inp_v2_c1;
+    reg  [7:0] core$inp_v2_c2;
+    wire  core$out_valid;
+    reg  core$out_ready;
+    wire  [9:0] core$out_x;
+    wire  [9:0] core$out_y;
+    wire  [15:0] core$out_z;
+    wire  [7:0] core$out_rgb0;
+    wire  [7:0] core$out_rgb1;
+    wire  [7:0] core$out_rgb2;
+    wire  core$idle;
+    reg  last_in$d;
+    wire  last_in$q;
+    reg  last_in$clock;
+    
+    // Sub module instances
+    raster_top$cull_sort cull_sort(
+        .clock(cull_sort$clock),
+        .width(cull_sort$width),
+        .height(cull_sort$height),
+        .cull_back(cull_sort$cull_back),
+        .inp_valid(cull_sort$inp_valid),
+        .inp_ready(cull_sort$inp_ready),
+        .inp_v0_x(cull_sort$inp_v0_x),
+        .inp_v0_y(cull_sort$inp_v0_y),
+        .inp_v0_z(cull_sort$inp_v0_z),
+        .inp_v0_c0(cull_sort$inp_v0_c0),
+        .inp_v0_c1(cull_sort$inp_v0_c1),
+        .inp_v0_c2(cull_sort$inp_v0_c2),
+        .inp_v0_iw(cull_sort$inp_v0_iw),
+        .inp_v1_x(cull_sort$inp_v1_x),
+        .inp_v1_y(cull_sort$inp_v1_y),
+        .inp_v1_z(cull_sort$inp_v1_z),
+        .inp_v1_c0(cull_sort$inp_v1_c0),
+        .inp_v1_c1(cull_sort$inp_v1_c1),
+        .inp_v1_c2(cull_sort$inp_v1_c2),
+        .inp_v1_iw(cull_sort$inp_v1_iw),
+        .inp_v2_x(cull_sort$inp_v2_x),
+        .inp_v2_y(cull_sort$inp_v2_y),
+        .inp_v2_z(cull_sort$inp_v2_z),
+        .inp_v2_c0(cull_sort$inp_v2_c0),
+        .inp_v2_c1(cull_sort$inp_v2_c1),
+        .inp_v2_c2(cull_sort$inp_v2_c2),
+        .inp_v2_iw(cull_sort$inp_v2_iw),
+        .out_valid(cull_sort$out_valid),
+        .out_ready(cull_sort$out_ready),
+        .out_v0_x(cull_sort$out_v0_x),
+        .out_v0_y(cull_sort$out_v0_y),
+        .out_v0_z(cull_sort$out_v0_z),
+        .out_v0_c0(cull_sort$out_v0_c0),
+        .out_v0_c1(cull_sort$out_v0_c1),
+        .out_v0_c2(cull_sort$out_v0_c2),
+        .out_v0_iw(cull_sort$out_v0_iw),
+        .out_v1_x(cull_sort$out_v1_x),
+        .out_v1_y(cull_sort$out_v1_y),
+        .out_v1_z(cull_sort$out_v1_z),
+        .out_v1_c0(cull_sort$out_v1_c0),
+        .out_v1_c1(cull_sort$out_v1_c1),
+        .out_v1_c2(cull_sort$out_v1_c2),
+        .out_v1_iw(cull_sort$out_v1_iw),
+        .out_v2_x(cull_sort$out_v2_x),
+        .out_v2_y(cull_sort$out_v2_y),
+        .out_v2_z(cull_sort$out_v2_z),
+        .out_v2_c0(cull_sort$out_v2_c0),
+        .out_v2_c1(cull_sort$out_v2_c1),
+        .out_v2_c2(cull_sort$out_v2_c2),
+        .out_v2_iw(cull_sort$out_v2_iw),
+        .out_crosses(cull_sort$out_crosses),
+        .verdict_valid(cull_sort$verdict_valid),
+        .verdict_code(cull_sort$verdict_code),
+        .verdict_outside(cull_sort$verdict_outside)
+    );
+    raster_top$pixel_out pixel_out(
+        .clock(pixel_out$clock),
+        .inp_valid(pixel_out$inp_valid),
+        .inp_ready(pixel_out$inp_ready),
+        .inp_x(pixel_out$inp_x),
+        .inp_y(pixel_out$inp_y),
+        .inp_z(pixel_out$inp_z),
+        .inp_rgb0(pixel_out$inp_rgb0),
+        .inp_rgb1(pixel_out$inp_rgb1),
+        .inp_rgb2(pixel_out$inp_rgb2),
+        .mem_ready(pixel_out$mem_ready),
+        .rd_en(pixel_out$rd_en),
+        .rd_addr(pixel_out$rd_addr),
+        .rd_z(pixel_out$rd_z),
+        .wr_en(pixel_out$wr_en),
+        .wr_addr(pixel_out$wr_addr),
+        .wr_z(pixel_out$wr_z),
+        .wr_rgb(pixel_out$wr_rgb),
+        .idle(pixel_out$idle)
+    );
+    raster_top$core core(
+        .clock(core$clock),
+        .width(core$width),
+        .height(core$height),
+        .inp_valid(core$inp_valid),
+        .inp_ready(core$inp_ready),
+        .inp_crosses(core$inp_crosses),
+        .inp_v0_x(core$inp_v0_x),
+        .inp_v0_y(core$inp_v0_y),
+        .inp_v0_z(core$inp_v0_z),
+        .inp_v0_c0(core$inp_v0_c0),
+        .inp_v0_c1(core$inp_v0_c1),
+        .inp_v0_c2(core$inp_v0_c2),
+        .inp_v1_x(core$inp_v1_x),
+        .inp_v1_y(core$inp_v1_y),
+        .inp_v1_z(core$inp_v1_z),
+        .inp_v1_c0(core$inp_v1_c0),
+        .inp_v1_c1(core$inp_v1_c1),
+        .inp_v1_c2(core$inp_v1_c2),
+        .inp_v2_x(core$inp_v2_x),
+        .inp_v2_y(core$inp_v2_y),
+        .inp_v2_z(core$inp_v2_z),
+        .inp_v2_c0(core$inp_v2_c0),
+        .inp_v2_c1(core$inp_v2_c1),
+        .inp_v2_c2(core$inp_v2_c2),
+        .out_valid(core$out_valid),
+        .out_ready(core$out_ready),
+        .out_x(core$out_x),
+        .out_y(core$out_y),
+        .out_z(core$out_z),
+        .out_rgb0(core$out_rgb0),
+        .out_rgb1(core$out_rgb1),
+        .out_rgb2(core$out_rgb2),
+        .idle(core$idle)
+    );
+    raster_top$last_in last_in(
+        .d(last_in$d),
+        .q(last_in$q),
+        .clock(last_in$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        last_in$clock = clock;
+        last_in$d = last_in$q;
+        core$clock = clock;
+        core$width = width;
+        core$height = height;
+        done = last_in$q & core$idle;
+        cull_sort$clock = clock;
+        cull_sort$width = width;
+        cull_sort$height = height;
+        cull_sort$cull_back = cull_back;
+        cull_sort$inp_valid = inp_valid;
+        inp_ready = cull_sort$inp_ready;
+        cull_sort$inp_v0_x = inp_v0_x;
+        cull_sort$inp_v0_y = inp_v0_y;
+        cull_sort$inp_v0_z = inp_v0_z;
+        cull_sort$inp_v0_c0 = inp_v0_c0;
+        cull_sort$inp_v0_c1 = inp_v0_c1;
+        cull_sort$inp_v0_c2 = inp_v0_c2;
+        cull_sort$inp_v0_iw = inp_v0_iw;
+        cull_sort$inp_v1_x = inp_v1_x;
+        cull_sort$inp_v1_y = inp_v1_y;
+        cull_sort$inp_v1_z = inp_v1_z;
+        cull_sort$inp_v1_c0 = inp_v1_c0;
+        cull_sort$inp_v1_c1 = inp_v1_c1;
+        cull_sort$inp_v1_c2 = inp_v1_c2;
+        cull_sort$inp_v1_iw = inp_v1_iw;
+        cull_sort$inp_v2_x = inp_v2_x;
+        cull_sort$inp_v2_y = inp_v2_y;
+        cull_sort$inp_v2_z = inp_v2_z;
+        cull_sort$inp_v2_c0 = inp_v2_c0;
+        cull_sort$inp_v2_c1 = inp_v2_c1;
+        cull_sort$inp_v2_c2 = inp_v2_c2;
+        cull_sort$inp_v2_iw = inp_v2_iw;
+        verdict_valid = cull_sort$verdict_valid;
+        verdict_code = cull_sort$verdict_code;
+        verdict_outside = cull_sort$verdict_outside;
+        if (inp_valid & cull_sort$inp_ready) begin
+            last_in$d = inp_last;
+        end
+        core$inp_valid = cull_sort$out_valid;
+        cull_sort$out_ready = core$inp_ready;
+        core$inp_crosses = cull_sort$out_crosses;
+        core$inp_v0_x = cull_sort$out_v0_x;
+        core$inp_v0_y = cull_sort$out_v0_y;
+        core$inp_v0_z = cull_sort$out_v0_z;
+        core$inp_v0_c0 = cull_sort$out_v0_c0;
+        core$inp_v0_c1 = cull_sort$out_v0_c1;
+        core$inp_v0_c2 = cull_sort$out_v0_c2;
+        core$inp_v1_x = cull_sort$out_v1_x;
+        core$inp_v1_y = cull_sort$out_v1_y;
+        core$inp_v1_z = cull_sort$out_v1_z;
+        core$inp_v1_c0 = cull_sort$out_v1_c0;
+        core$inp_v1_c1 = cull_sort$out_v1_c1;
+        core$inp_v1_c2 = cull_sort$out_v1_c2;
+        core$inp_v2_x = cull_sort$out_v2_x;
+        core$inp_v2_y = cull_sort$out_v2_y;
+        core$inp_v2_z = cull_sort$out_v2_z;
+        core$inp_v2_c0 = cull_sort$out_v2_c0;
+        core$inp_v2_c1 = cull_sort$out_v2_c1;
+        core$inp_v2_c2 = cull_sort$out_v2_c2;
+        if (cull_sort$out_valid) begin
+            done = 1'b0;
+        end
+        pixel_out$clock = clock;
+        pixel_out$inp_valid = core$out_valid;
+        core$out_ready = pixel_out$inp_ready;
+        pixel_out$inp_x = core$out_x;
+        pixel_out$inp_y = core$out_y;
+        pixel_out$inp_z = core$out_z;
+        pixel_out$inp_rgb0 = core$out_rgb0;
+        pixel_out$inp_rgb1 = core$out_rgb1;
+        pixel_out$inp_rgb2 = core$out_rgb2;
+        pixel_out$mem_ready = mem_ready;
+        pixel_out$rd_z = rd_z;
+        rd_en = pixel_out$rd_en;
+        rd_addr = pixel_out$rd_addr;
+        wr_en = pixel_out$wr_en;
+        wr_addr = pixel_out$wr_addr;
+        wr_z = pixel_out$wr_z;
+        wr_rgb = pixel_out$wr_rgb;
+        if (~pixel_out$idle) begin
+            done = 1'b0;
+        end
+    end
+    
+endmodule // raster_top
+
+
+module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,out_valid,out_ready,out_x,out_y,out_z,out_rgb0,out_rgb1,out_rgb2,idle);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [10:0] width;
+    input wire  [10:0] height;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  [5:0] inp_crosses;
+    input wire  [15:0] inp_v0_x;
+    input wire  [15:0] inp_v0_y;
+    input wire  [17:0] inp_v0_z;
+    input wire  [7:0] inp_v0_c0;
+    input wire  [7:0] inp_v0_c1;
+    input wire  [7:0] inp_v0_c2;
+    input wire  [15:0] inp_v1_x;
+    input wire  [15:0] inp_v1_y;
+    input wire  [17:0] inp_v1_z;
+    input wire  [7:0] inp_v1_c0;
+    input wire  [7:0] inp_v1_c1;
+    input wire  [7:0] inp_v1_c2;
+    input wire  [15:0] inp_v2_x;
+    input wire  [15:0] inp_v2_y;
+    input wire  [17:0] inp_v2_z;
+    input wire  [7:0] inp_v2_c0;
+    input wire  [7:0] inp_v2_c1;
+    input wire  [7:0] inp_v2_c2;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [9:0] out_x;
+    output reg  [9:0] out_y;
+    output reg  [15:0] out_z;
+    output reg  [7:0] out_rgb0;
+    output reg  [7:0] out_rgb1;
+    output reg  [7:0] out_rgb2;
+    output reg  idle;
+    
+    // Stub signals
     reg  triangle_setup$clock;
     reg  triangle_setup$inp_valid;
     wire  triangle_setup$inp_ready;
@@ -334,89 +635,12 @@ module raster_top(clock,width,height,cull_back,inp_valid,inp_ready,inp_last,inp_
     wire  [7:0] span$out_rgb1;
     wire  [7:0] span$out_rgb2;
     wire  span$idle;
-    reg  pixel_out$clock;
-    reg  pixel_out$inp_valid;
-    wire  pixel_out$inp_ready;
-    reg  [9:0] pixel_out$inp_x;
-    reg  [9:0] pixel_out$inp_y;
-    reg  [15:0] pixel_out$inp_z;
-    reg  [7:0] pixel_out$inp_rgb0;
-    reg  [7:0] pixel_out$inp_rgb1;
-    reg  [7:0] pixel_out$inp_rgb2;
-    reg  pixel_out$mem_ready;
-    wire  pixel_out$rd_en;
-    wire  [19:0] pixel_out$rd_addr;
-    reg  [15:0] pixel_out$rd_z;
-    wire  pixel_out$wr_en;
-    wire  [19:0] pixel_out$wr_addr;
-    wire  [15:0] pixel_out$wr_z;
-    wire  [23:0] pixel_out$wr_rgb;
-    wire  pixel_out$idle;
-    reg  last_in$d;
-    wire  last_in$q;
-    reg  last_in$clock;
     reg  in_setup$d;
     wire  in_setup$q;
     reg  in_setup$clock;
     
     // Sub module instances
-    raster_top$cull_sort cull_sort(
-        .clock(cull_sort$clock),
-        .width(cull_sort$width),
-        .height(cull_sort$height),
-        .cull_back(cull_sort$cull_back),
-        .inp_valid(cull_sort$inp_valid),
-        .inp_ready(cull_sort$inp_ready),
-        .inp_v0_x(cull_sort$inp_v0_x),
-        .inp_v0_y(cull_sort$inp_v0_y),
-        .inp_v0_z(cull_sort$inp_v0_z),
-        .inp_v0_c0(cull_sort$inp_v0_c0),
-        .inp_v0_c1(cull_sort$inp_v0_c1),
-        .inp_v0_c2(cull_sort$inp_v0_c2),
-        .inp_v0_iw(cull_sort$inp_v0_iw),
-        .inp_v1_x(cull_sort$inp_v1_x),
-        .inp_v1_y(cull_sort$inp_v1_y),
-        .inp_v1_z(cull_sort$inp_v1_z),
-        .inp_v1_c0(cull_sort$inp_v1_c0),
-        .inp_v1_c1(cull_sort$inp_v1_c1),
-        .inp_v1_c2(cull_sort$inp_v1_c2),
-        .inp_v1_iw(cull_sort$inp_v1_iw),
-        .inp_v2_x(cull_sort$inp_v2_x),
-        .inp_v2_y(cull_sort$inp_v2_y),
-        .inp_v2_z(cull_sort$inp_v2_z),
-        .inp_v2_c0(cull_sort$inp_v2_c0),
-        .inp_v2_c1(cull_sort$inp_v2_c1),
-        .inp_v2_c2(cull_sort$inp_v2_c2),
-        .inp_v2_iw(cull_sort$inp_v2_iw),
-        .out_valid(cull_sort$out_valid),
-        .out_ready(cull_sort$out_ready),
-        .out_v0_x(cull_sort$out_v0_x),
-        .out_v0_y(cull_sort$out_v0_y),
-        .out_v0_z(cull_sort$out_v0_z),
-        .out_v0_c0(cull_sort$out_v0_c0),
-        .out_v0_c1(cull_sort$out_v0_c1),
-        .out_v0_c2(cull_sort$out_v0_c2),
-        .out_v0_iw(cull_sort$out_v0_iw),
-        .out_v1_x(cull_sort$out_v1_x),
-        .out_v1_y(cull_sort$out_v1_y),
-        .out_v1_z(cull_sort$out_v1_z),
-        .out_v1_c0(cull_sort$out_v1_c0),
-        .out_v1_c1(cull_sort$out_v1_c1),
-        .out_v1_c2(cull_sort$out_v1_c2),
-        .out_v1_iw(cull_sort$out_v1_iw),
-        .out_v2_x(cull_sort$out_v2_x),
-        .out_v2_y(cull_sort$out_v2_y),
-        .out_v2_z(cull_sort$out_v2_z),
-        .out_v2_c0(cull_sort$out_v2_c0),
-        .out_v2_c1(cull_sort$out_v2_c1),
-        .out_v2_c2(cull_sort$out_v2_c2),
-        .out_v2_iw(cull_sort$out_v2_iw),
-        .out_crosses(cull_sort$out_crosses),
-        .verdict_valid(cull_sort$verdict_valid),
-        .verdict_code(cull_sort$verdict_code),
-        .verdict_outside(cull_sort$verdict_outside)
-    );
-    raster_top$triangle_setup triangle_setup(
+    raster_top$core$triangle_setup triangle_setup(
         .clock(triangle_setup$clock),
         .inp_valid(triangle_setup$inp_valid),
         .inp_ready(triangle_setup$inp_ready),
@@ -505,7 +729,7 @@ module raster_top(clock,width,height,cull_back,inp_valid,inp_ready,inp_last,inp_
         .out_ddx_c1(triangle_setup$out_ddx_c1),
         .out_ddx_c2(triangle_setup$out_ddx_c2)
     );
-    raster_top$edge_walk edge_walk(
+    raster_top$core$edge_walk edge_walk(
         .clock(edge_walk$clock),
         .height(edge_walk$height),
         .inp_valid(edge_walk$inp_valid),
@@ -591,7 +815,7 @@ module raster_top(clock,width,height,cull_back,inp_valid,inp_ready,inp_last,inp_
         .out_ddx_c1(edge_walk$out_ddx_c1),
         .out_ddx_c2(edge_walk$out_ddx_c2)
     );
-    raster_top$fifo fifo(
+    raster_top$core$fifo fifo(
         .clock(fifo$clock),
         .inp_valid(fifo$inp_valid),
         .inp_ready(fifo$inp_ready),
@@ -629,7 +853,7 @@ module raster_top(clock,width,height,cull_back,inp_valid,inp_ready,inp_last,inp_
         .out_ddx_c2(fifo$out_ddx_c2),
         .empty(fifo$empty)
     );
-    raster_top$span span(
+    raster_top$core$span span(
         .clock(span$clock),
         .width(span$width),
         .inp_valid(span$inp_valid),
@@ -659,32 +883,7 @@ module raster_top(clock,width,height,cull_back,inp_valid,inp_ready,inp_last,inp_
         .out_rgb2(span$out_rgb2),
         .idle(span$idle)
     );
-    raster_top$pixel_out pixel_out(
-        .clock(pixel_out$clock),
-        .inp_valid(pixel_out$inp_valid),
-        .inp_ready(pixel_out$inp_ready),
-        .inp_x(pixel_out$inp_x),
-        .inp_y(pixel_out$inp_y),
-        .inp_z(pixel_out$inp_z),
-        .inp_rgb0(pixel_out$inp_rgb0),
-        .inp_rgb1(pixel_out$inp_rgb1),
-        .inp_rgb2(pixel_out$inp_rgb2),
-        .mem_ready(pixel_out$mem_ready),
-        .rd_en(pixel_out$rd_en),
-        .rd_addr(pixel_out$rd_addr),
-        .rd_z(pixel_out$rd_z),
-        .wr_en(pixel_out$wr_en),
-        .wr_addr(pixel_out$wr_addr),
-        .wr_z(pixel_out$wr_z),
-        .wr_rgb(pixel_out$wr_rgb),
-        .idle(pixel_out$idle)
-    );
-    raster_top$last_in last_in(
-        .d(last_in$d),
-        .q(last_in$q),
-        .clock(last_in$clock)
-    );
-    raster_top$in_setup in_setup(
+    raster_top$core$in_setup in_setup(
         .d(in_setup$d),
         .q(in_setup$q),
         .clock(in_setup$clock)
@@ -692,66 +891,33 @@ module raster_top(clock,width,height,cull_back,inp_valid,inp_ready,inp_last,inp_
     
     // Update code
     always @(*) begin
-        last_in$clock = clock;
         in_setup$clock = clock;
-        last_in$d = last_in$q;
         in_setup$d = in_setup$q;
-        cull_sort$clock = clock;
         triangle_setup$clock = clock;
         edge_walk$clock = clock;
         fifo$clock = clock;
         span$clock = clock;
-        pixel_out$clock = clock;
-        cull_sort$width = width;
-        cull_sort$height = height;
-        cull_sort$cull_back = cull_back;
-        cull_sort$inp_valid = inp_valid;
-        inp_ready = cull_sort$inp_ready;
-        cull_sort$inp_v0_x = inp_v0_x;
-        cull_sort$inp_v0_y = inp_v0_y;
-        cull_sort$inp_v0_z = inp_v0_z;
-        cull_sort$inp_v0_c0 = inp_v0_c0;
-        cull_sort$inp_v0_c1 = inp_v0_c1;
-        cull_sort$inp_v0_c2 = inp_v0_c2;
-        cull_sort$inp_v0_iw = inp_v0_iw;
-        cull_sort$inp_v1_x = inp_v1_x;
-        cull_sort$inp_v1_y = inp_v1_y;
-        cull_sort$inp_v1_z = inp_v1_z;
-        cull_sort$inp_v1_c0 = inp_v1_c0;
-        cull_sort$inp_v1_c1 = inp_v1_c1;
-        cull_sort$inp_v1_c2 = inp_v1_c2;
-        cull_sort$inp_v1_iw = inp_v1_iw;
-        cull_sort$inp_v2_x = inp_v2_x;
-        cull_sort$inp_v2_y = inp_v2_y;
-        cull_sort$inp_v2_z = inp_v2_z;
-        cull_sort$inp_v2_c0 = inp_v2_c0;
-        cull_sort$inp_v2_c1 = inp_v2_c1;
-        cull_sort$inp_v2_c2 = inp_v2_c2;
-        cull_sort$inp_v2_iw = inp_v2_iw;
-        verdict_valid = cull_sort$verdict_valid;
-        verdict_code = cull_sort$verdict_code;
-        verdict_outside = cull_sort$verdict_outside;
-        triangle_setup$inp_valid = cull_sort$out_valid;
-        cull_sort$out_ready = triangle_setup$inp_ready;
-        triangle_setup$inp_crosses = cull_sort$out_crosses;
-        triangle_setup$inp_v0_x = cull_sort$out_v0_x;
-        triangle_setup$inp_v0_y = cull_sort$out_v0_y;
-        triangle_setup$inp_v0_z = cull_sort$out_v0_z;
-        triangle_setup$inp_v0_c0 = cull_sort$out_v0_c0;
-        triangle_setup$inp_v0_c1 = cull_sort$out_v0_c1;
-        triangle_setup$inp_v0_c2 = cull_sort$out_v0_c2;
-        triangle_setup$inp_v1_x = cull_sort$out_v1_x;
-        triangle_setup$inp_v1_y = cull_sort$out_v1_y;
-        triangle_setup$inp_v1_z = cull_sort$out_v1_z;
-        triangle_setup$inp_v1_c0 = cull_sort$out_v1_c0;
-        triangle_setup$inp_v1_c1 = cull_sort$out_v1_c1;
-        triangle_setup$inp_v1_c2 = cull_sort$out_v1_c2;
-        triangle_setup$inp_v2_x = cull_sort$out_v2_x;
-        triangle_setup$inp_v2_y = cull_sort$out_v2_y;
-        triangle_setup$inp_v2_z = cull_sort$out_v2_z;
-        triangle_setup$inp_v2_c0 = cull_sort$out_v2_c0;
-        triangle_setup$inp_v2_c1 = cull_sort$out_v2_c1;
-        triangle_setup$inp_v2_c2 = cull_sort$out_v2_c2;
+        triangle_setup$inp_valid = inp_valid;
+        inp_ready = triangle_setup$inp_ready;
+        triangle_setup$inp_crosses = inp_crosses;
+        triangle_setup$inp_v0_x = inp_v0_x;
+        triangle_setup$inp_v0_y = inp_v0_y;
+        triangle_setup$inp_v0_z = inp_v0_z;
+        triangle_setup$inp_v0_c0 = inp_v0_c0;
+        triangle_setup$inp_v0_c1 = inp_v0_c1;
+        triangle_setup$inp_v0_c2 = inp_v0_c2;
+        triangle_setup$inp_v1_x = inp_v1_x;
+        triangle_setup$inp_v1_y = inp_v1_y;
+        triangle_setup$inp_v1_z = inp_v1_z;
+        triangle_setup$inp_v1_c0 = inp_v1_c0;
+        triangle_setup$inp_v1_c1 = inp_v1_c1;
+        triangle_setup$inp_v1_c2 = inp_v1_c2;
+        triangle_setup$inp_v2_x = inp_v2_x;
+        triangle_setup$inp_v2_y = inp_v2_y;
+        triangle_setup$inp_v2_z = inp_v2_z;
+        triangle_setup$inp_v2_c0 = inp_v2_c0;
+        triangle_setup$inp_v2_c1 = inp_v2_c1;
+        triangle_setup$inp_v2_c2 = inp_v2_c2;
         edge_walk$height = height;
         edge_walk$inp_valid = triangle_setup$out_valid;
         triangle_setup$out_ready = edge_walk$inp_ready;
@@ -853,1149 +1019,27 @@ module raster_top(clock,width,height,cull_back,inp_valid,inp_ready,inp_last,inp_
         span$inp_ddx_c0 = fifo$out_ddx_c0;
         span$inp_ddx_c1 = fifo$out_ddx_c1;
         span$inp_ddx_c2 = fifo$out_ddx_c2;
-        pixel_out$inp_valid = span$out_valid;
-        span$out_ready = pixel_out$inp_ready;
-        pixel_out$inp_x = span$out_x;
-        pixel_out$inp_y = span$out_y;
-        pixel_out$inp_z = span$out_z;
-        pixel_out$inp_rgb0 = span$out_rgb0;
-        pixel_out$inp_rgb1 = span$out_rgb1;
-        pixel_out$inp_rgb2 = span$out_rgb2;
-        pixel_out$mem_ready = mem_ready;
-        pixel_out$rd_z = rd_z;
-        rd_en = pixel_out$rd_en;
-        rd_addr = pixel_out$rd_addr;
-        wr_en = pixel_out$wr_en;
-        wr_addr = pixel_out$wr_addr;
-        wr_z = pixel_out$wr_z;
-        wr_rgb = pixel_out$wr_rgb;
-        if (inp_valid & cull_sort$inp_ready) begin
-            last_in$d = inp_last;
-        end
-        if (cull_sort$out_valid & triangle_setup$inp_ready) begin
+        out_valid = span$out_valid;
+        span$out_ready = out_ready;
+        out_x = span$out_x;
+        out_y = span$out_y;
+        out_z = span$out_z;
+        out_rgb0 = span$out_rgb0;
+        out_rgb1 = span$out_rgb1;
+        out_rgb2 = span$out_rgb2;
+        if (inp_valid & triangle_setup$inp_ready) begin
             in_setup$d = 1'b1;
         end
         else if (triangle_setup$out_valid & edge_walk$inp_ready) begin
             in_setup$d = 1'b0;
         end
-        done = last_in$q & ~cull_sort$out_valid & ~in_setup$q & edge_walk$inp_ready & fifo$empty & span$idle & pixel_out$idle;
+        idle = ~in_setup$q & edge_walk$inp_ready & fifo$empty & span$idle;
     end
     
-endmodule // raster_top
+endmodule // raster_top$core
 
 
-module raster_top$cull_sort(clock,width,height,cull_back,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v0_iw,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v1_iw,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_v2_iw,out_valid,out_ready,out_v0_x,out_v0_y,out_v0_z,out_v0_c0,out_v0_c1,out_v0_c2,out_v0_iw,out_v1_x,out_v1_y,out_v1_z,out_v1_c0,out_v1_c1,out_v1_c2,out_v1_iw,out_v2_x,out_v2_y,out_v2_z,out_v2_c0,out_v2_c1,out_v2_c2,out_v2_iw,out_crosses,verdict_valid,verdict_code,verdict_outside);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [10:0] width;
-    input wire  [10:0] height;
-    input wire  cull_back;
-    input wire  inp_valid;
-    output reg  inp_ready;
-    input wire  [15:0] inp_v0_x;
-    input wire  [15:0] inp_v0_y;
-    input wire  [17:0] inp_v0_z;
-    input wire  [7:0] inp_v0_c0;
-    input wire  [7:0] inp_v0_c1;
-    input wire  [7:0] inp_v0_c2;
-    input wire  [15:0] inp_v0_iw;
-    input wire  [15:0] inp_v1_x;
-    input wire  [15:0] inp_v1_y;
-    input wire  [17:0] inp_v1_z;
-    input wire  [7:0] inp_v1_c0;
-    input wire  [7:0] inp_v1_c1;
-    input wire  [7:0] inp_v1_c2;
-    input wire  [15:0] inp_v1_iw;
-    input wire  [15:0] inp_v2_x;
-    input wire  [15:0] inp_v2_y;
-    input wire  [17:0] inp_v2_z;
-    input wire  [7:0] inp_v2_c0;
-    input wire  [7:0] inp_v2_c1;
-    input wire  [7:0] inp_v2_c2;
-    input wire  [15:0] inp_v2_iw;
-    output reg  out_valid;
-    input wire  out_ready;
-    output reg  [15:0] out_v0_x;
-    output reg  [15:0] out_v0_y;
-    output reg  [17:0] out_v0_z;
-    output reg  [7:0] out_v0_c0;
-    output reg  [7:0] out_v0_c1;
-    output reg  [7:0] out_v0_c2;
-    output reg  [15:0] out_v0_iw;
-    output reg  [15:0] out_v1_x;
-    output reg  [15:0] out_v1_y;
-    output reg  [17:0] out_v1_z;
-    output reg  [7:0] out_v1_c0;
-    output reg  [7:0] out_v1_c1;
-    output reg  [7:0] out_v1_c2;
-    output reg  [15:0] out_v1_iw;
-    output reg  [15:0] out_v2_x;
-    output reg  [15:0] out_v2_y;
-    output reg  [17:0] out_v2_z;
-    output reg  [7:0] out_v2_c0;
-    output reg  [7:0] out_v2_c1;
-    output reg  [7:0] out_v2_c2;
-    output reg  [15:0] out_v2_iw;
-    output reg  [5:0] out_crosses;
-    output reg  verdict_valid;
-    output reg  [1:0] verdict_code;
-    output reg  [5:0] verdict_outside;
-    
-    // Constant declarations
-    localparam  z_max = 18'b1111111111111111;
-    localparam  half = 16'h8000;
-    localparam  xy_msb = 8'hf;
-    localparam  z_msb = 8'h11;
-    localparam  area_msb = 8'h21;
-    localparam  delta_msb = 8'h10;
-    localparam  frac = 8'h4;
-    localparam  passed = 2'b0;
-    localparam  outside = 2'b1;
-    localparam  back_face = 2'b10;
-    localparam  zero_area = 2'b11;
-    
-    // Stub signals
-    reg  [16:0] area_mul$0$a;
-    reg  [16:0] area_mul$0$b;
-    wire  [33:0] area_mul$0$p;
-    reg  [16:0] area_mul$1$a;
-    reg  [16:0] area_mul$1$b;
-    wire  [33:0] area_mul$1$p;
-    reg  [15:0] sx$0$d;
-    wire  [15:0] sx$0$q;
-    reg  sx$0$clock;
-    reg  [15:0] sx$1$d;
-    wire  [15:0] sx$1$q;
-    reg  sx$1$clock;
-    reg  [15:0] sx$2$d;
-    wire  [15:0] sx$2$q;
-    reg  sx$2$clock;
-    reg  [15:0] sy$0$d;
-    wire  [15:0] sy$0$q;
-    reg  sy$0$clock;
-    reg  [15:0] sy$1$d;
-    wire  [15:0] sy$1$q;
-    reg  sy$1$clock;
-    reg  [15:0] sy$2$d;
-    wire  [15:0] sy$2$q;
-    reg  sy$2$clock;
-    reg  [17:0] sz$0$d;
-    wire  [17:0] sz$0$q;
-    reg  sz$0$clock;
-    reg  [17:0] sz$1$d;
-    wire  [17:0] sz$1$q;
-    reg  sz$1$clock;
-    reg  [17:0] sz$2$d;
-    wire  [17:0] sz$2$q;
-    reg  sz$2$clock;
-    reg  [7:0] sc$0$d;
-    wire  [7:0] sc$0$q;
-    reg  sc$0$clock;
-    reg  [7:0] sc$1$d;
-    wire  [7:0] sc$1$q;
-    reg  sc$1$clock;
-    reg  [7:0] sc$2$d;
-    wire  [7:0] sc$2$q;
-    reg  sc$2$clock;
-    reg  [7:0] sc$3$d;
-    wire  [7:0] sc$3$q;
-    reg  sc$3$clock;
-    reg  [7:0] sc$4$d;
-    wire  [7:0] sc$4$q;
-    reg  sc$4$clock;
-    reg  [7:0] sc$5$d;
-    wire  [7:0] sc$5$q;
-    reg  sc$5$clock;
-    reg  [7:0] sc$6$d;
-    wire  [7:0] sc$6$q;
-    reg  sc$6$clock;
-    reg  [7:0] sc$7$d;
-    wire  [7:0] sc$7$q;
-    reg  sc$7$clock;
-    reg  [7:0] sc$8$d;
-    wire  [7:0] sc$8$q;
-    reg  sc$8$clock;
-    reg  [15:0] siw$0$d;
-    wire  [15:0] siw$0$q;
-    reg  siw$0$clock;
-    reg  [15:0] siw$1$d;
-    wire  [15:0] siw$1$q;
-    reg  siw$1$clock;
-    reg  [15:0] siw$2$d;
-    wire  [15:0] siw$2$q;
-    reg  siw$2$clock;
-    reg  [5:0] crosses$d;
-    wire  [5:0] crosses$q;
-    reg  crosses$clock;
-    reg  [1:0] code_r$d;
-    wire  [1:0] code_r$q;
-    reg  code_r$clock;
-    reg  [5:0] outside_r$d;
-    wire  [5:0] outside_r$q;
-    reg  outside_r$clock;
-    reg  full$d;
-    wire  full$q;
-    reg  full$clock;
-    
-    // Local signals
-    reg  [15:0] vx$0;
-    reg  [15:0] vx$1;
-    reg  [15:0] vx$2;
-    reg  [15:0] vy$0;
-    reg  [15:0] vy$1;
-    reg  [15:0] vy$2;
-    reg  [17:0] vz$0;
-    reg  [17:0] vz$1;
-    reg  [17:0] vz$2;
-    reg  [7:0] vc$0;
-    reg  [7:0] vc$1;
-    reg  [7:0] vc$2;
-    reg  [7:0] vc$3;
-    reg  [7:0] vc$4;
-    reg  [7:0] vc$5;
-    reg  [7:0] vc$6;
-    reg  [7:0] vc$7;
-    reg  [7:0] vc$8;
-    reg  [15:0] viw$0;
-    reg  [15:0] viw$1;
-    reg  [15:0] viw$2;
-    reg  [5:0] oc$0;
-    reg  [5:0] oc$1;
-    reg  [5:0] oc$2;
-    reg  left$0;
-    reg  left$1;
-    reg  left$2;
-    reg  right_of$0;
-    reg  right_of$1;
-    reg  right_of$2;
-    reg  top$0;
-    reg  top$1;
-    reg  top$2;
-    reg  below$0;
-    reg  below$1;
-    reg  below$2;
-    reg  near$0;
-    reg  near$1;
-    reg  near$2;
-    reg  far$0;
-    reg  far$1;
-    reg  far$2;
-    reg  [15:0] right;
-    reg  [15:0] bottom;
-    reg  [16:0] e1x;
-    reg  [16:0] e1y;
-    reg  [16:0] e2x;
-    reg  [16:0] e2y;
-    reg  [33:0] area;
-    reg  [15:0] key$0;
-    reg  [15:0] key$1;
-    reg  [15:0] key$2;
-    reg  le01;
-    reg  le12;
-    reg  le02;
-    reg  gt01;
-    reg  gt12;
-    reg  gt02;
-    reg  [1:0] rank$0;
-    reg  [1:0] rank$1;
-    reg  [1:0] rank$2;
-    reg  [1:0] code;
-    reg  take;
-    reg  leave;
-    
-    // Sub module instances
-    raster_top$cull_sort$area_mul$0 area_mul$0(
-        .a(area_mul$0$a),
-        .b(area_mul$0$b),
-        .p(area_mul$0$p)
-    );
-    raster_top$cull_sort$area_mul$1 area_mul$1(
-        .a(area_mul$1$a),
-        .b(area_mul$1$b),
-        .p(area_mul$1$p)
-    );
-    raster_top$cull_sort$sx$0 sx$0(
-        .d(sx$0$d),
-        .q(sx$0$q),
-        .clock(sx$0$clock)
-    );
-    raster_top$cull_sort$sx$1 sx$1(
-        .d(sx$1$d),
-        .q(sx$1$q),
-        .clock(sx$1$clock)
-    );
-    raster_top$cull_sort$sx$2 sx$2(
-        .d(sx$2$d),
-        .q(sx$2$q),
-        .clock(sx$2$clock)
-    );
-    raster_top$cull_sort$sy$0 sy$0(
-        .d(sy$0$d),
-        .q(sy$0$q),
-        .clock(sy$0$clock)
-    );
-    raster_top$cull_sort$sy$1 sy$1(
-        .d(sy$1$d),
-        .q(sy$1$q),
-        .clock(sy$1$clock)
-    );
-    raster_top$cull_sort$sy$2 sy$2(
-        .d(sy$2$d),
-        .q(sy$2$q),
-        .clock(sy$2$clock)
-    );
-    raster_top$cull_sort$sz$0 sz$0(
-        .d(sz$0$d),
-        .q(sz$0$q),
-        .clock(sz$0$clock)
-    );
-    raster_top$cull_sort$sz$1 sz$1(
-        .d(sz$1$d),
-        .q(sz$1$q),
-        .clock(sz$1$clock)
-    );
-    raster_top$cull_sort$sz$2 sz$2(
-        .d(sz$2$d),
-        .q(sz$2$q),
-        .clock(sz$2$clock)
-    );
-    raster_top$cull_sort$sc$0 sc$0(
-        .d(sc$0$d),
-        .q(sc$0$q),
-        .clock(sc$0$clock)
-    );
-    raster_top$cull_sort$sc$1 sc$1(
-        .d(sc$1$d),
-        .q(sc$1$q),
-        .clock(sc$1$clock)
-    );
-    raster_top$cull_sort$sc$2 sc$2(
-        .d(sc$2$d),
-        .q(sc$2$q),
-        .clock(sc$2$clock)
-    );
-    raster_top$cull_sort$sc$3 sc$3(
-        .d(sc$3$d),
-        .q(sc$3$q),
-        .clock(sc$3$clock)
-    );
-    raster_top$cull_sort$sc$4 sc$4(
-        .d(sc$4$d),
-        .q(sc$4$q),
-        .clock(sc$4$clock)
-    );
-    raster_top$cull_sort$sc$5 sc$5(
-        .d(sc$5$d),
-        .q(sc$5$q),
-        .clock(sc$5$clock)
-    );
-    raster_top$cull_sort$sc$6 sc$6(
-        .d(sc$6$d),
-        .q(sc$6$q),
-        .clock(sc$6$clock)
-    );
-    raster_top$cull_sort$sc$7 sc$7(
-        .d(sc$7$d),
-        .q(sc$7$q),
-        .clock(sc$7$clock)
-    );
-    raster_top$cull_sort$sc$8 sc$8(
-        .d(sc$8$d),
-        .q(sc$8$q),
-        .clock(sc$8$clock)
-    );
-    raster_top$cull_sort$siw$0 siw$0(
-        .d(siw$0$d),
-        .q(siw$0$q),
-        .clock(siw$0$clock)
-    );
-    raster_top$cull_sort$siw$1 siw$1(
-        .d(siw$1$d),
-        .q(siw$1$q),
-        .clock(siw$1$clock)
-    );
-    raster_top$cull_sort$siw$2 siw$2(
-        .d(siw$2$d),
-        .q(siw$2$q),
-        .clock(siw$2$clock)
-    );
-    raster_top$cull_sort$crosses crosses(
-        .d(crosses$d),
-        .q(crosses$q),
-        .clock(crosses$clock)
-    );
-    raster_top$cull_sort$code_r code_r(
-        .d(code_r$d),
-        .q(code_r$q),
-        .clock(code_r$clock)
-    );
-    raster_top$cull_sort$outside_r outside_r(
-        .d(outside_r$d),
-        .q(outside_r$q),
-        .clock(outside_r$clock)
-    );
-    raster_top$cull_sort$full full(
-        .d(full$d),
-        .q(full$q),
-        .clock(full$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        crosses$clock = clock;
-        code_r$clock = clock;
-        outside_r$clock = clock;
-        full$clock = clock;
-        crosses$d = crosses$q;
-        code_r$d = code_r$q;
-        outside_r$d = outside_r$q;
-        full$d = full$q;
-        sx$0$clock = clock;
-        sx$0$d = sx$0$q;
-        sy$0$clock = clock;
-        sy$0$d = sy$0$q;
-        sz$0$clock = clock;
-        sz$0$d = sz$0$q;
-        siw$0$clock = clock;
-        siw$0$d = siw$0$q;
-        sx$1$clock = clock;
-        sx$1$d = sx$1$q;
-        sy$1$clock = clock;
-        sy$1$d = sy$1$q;
-        sz$1$clock = clock;
-        sz$1$d = sz$1$q;
-        siw$1$clock = clock;
-        siw$1$d = siw$1$q;
-        sx$2$clock = clock;
-        sx$2$d = sx$2$q;
-        sy$2$clock = clock;
-        sy$2$d = sy$2$q;
-        sz$2$clock = clock;
-        sz$2$d = sz$2$q;
-        siw$2$clock = clock;
-        siw$2$d = siw$2$q;
-        sc$0$clock = clock;
-        sc$0$d = sc$0$q;
-        sc$1$clock = clock;
-        sc$1$d = sc$1$q;
-        sc$2$clock = clock;
-        sc$2$d = sc$2$q;
-        sc$3$clock = clock;
-        sc$3$d = sc$3$q;
-        sc$4$clock = clock;
-        sc$4$d = sc$4$q;
-        sc$5$clock = clock;
-        sc$5$d = sc$5$q;
-        sc$6$clock = clock;
-        sc$6$d = sc$6$q;
-        sc$7$clock = clock;
-        sc$7$d = sc$7$q;
-        sc$8$clock = clock;
-        sc$8$d = sc$8$q;
-        vx$0 = inp_v0_x;
-        vy$0 = inp_v0_y;
-        vz$0 = inp_v0_z;
-        vc$0 = inp_v0_c0;
-        vc$1 = inp_v0_c1;
-        vc$2 = inp_v0_c2;
-        viw$0 = inp_v0_iw;
-        vx$1 = inp_v1_x;
-        vy$1 = inp_v1_y;
-        vz$1 = inp_v1_z;
-        vc$3 = inp_v1_c0;
-        vc$4 = inp_v1_c1;
-        vc$5 = inp_v1_c2;
-        viw$1 = inp_v1_iw;
-        vx$2 = inp_v2_x;
-        vy$2 = inp_v2_y;
-        vz$2 = inp_v2_z;
-        vc$6 = inp_v2_c0;
-        vc$7 = inp_v2_c1;
-        vc$8 = inp_v2_c2;
-        viw$2 = inp_v2_iw;
-        right = ((width) & 16'hffff) << frac;
-        bottom = ((height) & 16'hffff) << frac;
-        left$0 = vx$0[xy_msb];
-        right_of$0 = ~left$0 & (vx$0 > right);
-        top$0 = vy$0[xy_msb];
-        below$0 = ~top$0 & (vy$0 > bottom);
-        near$0 = vz$0[z_msb];
-        far$0 = ~near$0 & (vz$0 > z_max);
-        oc$0 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$0) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$0) << (32'h1))) & ~(1 << (32'h2)) | ((top$0) << (32'h2))) & ~(1 << (32'h3)) | ((below$0) << (32'h3))) & ~(1 << (32'h4)) | ((near$0) << (32'h4))) & ~(1 << (32'h5)) | ((far$0) << (32'h5)));
-        left$1 = vx$1[xy_msb];
-        right_of$1 = ~left$1 & (vx$1 > right);
-        top$1 = vy$1[xy_msb];
-        below$1 = ~top$1 & (vy$1 > bottom);
-        near$1 = vz$1[z_msb];
-        far$1 = ~near$1 & (vz$1 > z_max);
-        oc$1 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$1) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$1) << (32'h1))) & ~(1 << (32'h2)) | ((top$1) << (32'h2))) & ~(1 << (32'h3)) | ((below$1) << (32'h3))) & ~(1 << (32'h4)) | ((near$1) << (32'h4))) & ~(1 << (32'h5)) | ((far$1) << (32'h5)));
-        left$2 = vx$2[xy_msb];
-        right_of$2 = ~left$2 & (vx$2 > right);
-        top$2 = vy$2[xy_msb];
-        below$2 = ~top$2 & (vy$2 > bottom);
-        near$2 = vz$2[z_msb];
-        far$2 = ~near$2 & (vz$2 > z_max);
-        oc$2 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$2) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$2) << (32'h1))) & ~(1 << (32'h2)) | ((top$2) << (32'h2))) & ~(1 << (32'h3)) | ((below$2) << (32'h3))) & ~(1 << (32'h4)) | ((near$2) << (32'h4))) & ~(1 << (32'h5)) | ((far$2) << (32'h5)));
-        e1x = (((inp_v1_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v1_x[xy_msb]) << (delta_msb))) - (((inp_v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_x[xy_msb]) << (delta_msb)));
-        e1y = (((inp_v1_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v1_y[xy_msb]) << (delta_msb))) - (((inp_v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_y[xy_msb]) << (delta_msb)));
-        e2x = (((inp_v2_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v2_x[xy_msb]) << (delta_msb))) - (((inp_v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_x[xy_msb]) << (delta_msb)));
-        e2y = (((inp_v2_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v2_y[xy_msb]) << (delta_msb))) - (((inp_v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_y[xy_msb]) << (delta_msb)));
-        area_mul$0$a = e1x;
-        area_mul$0$b = e2y;
-        area_mul$1$a = e2x;
-        area_mul$1$b = e1y;
-        area = area_mul$0$p - area_mul$1$p;
-        code = passed;
-        if (cull_back & ~area[area_msb]) begin
-            code = back_face;
-        end
-        if (area == 32'h0) begin
-            code = zero_area;
-        end
-        if (|(oc$0 & oc$1 & oc$2)) begin
-            code = outside;
-        end
-        key$0 = vy$0 ^ half;
-        key$1 = vy$1 ^ half;
-        key$2 = vy$2 ^ half;
-        le01 = key$0 <= key$1;
-        le12 = key$1 <= key$2;
-        le02 = key$0 <= key$2;
-        gt01 = ~le01;
-        gt12 = ~le12;
-        gt02 = ~le02;
-        rank$0 = ((32'h0) & 2'h3) + gt01 + gt02;
-        rank$1 = ((32'h0) & 2'h3) + le01 + gt12;
-        rank$2 = ((32'h0) & 2'h3) + le02 + le12;
-        leave = full$q & ((code_r$q != passed) | out_ready);
-        inp_ready = ~full$q | leave;
-        take = inp_valid & inp_ready;
-        if (leave) begin
-            full$d = 1'b0;
-        end
-        if (take) begin
-            full$d = 1'b1;
-            code_r$d = code;
-            crosses$d = oc$0 | oc$1 | oc$2;
-            outside_r$d = oc$0 & oc$1 & oc$2;
-            if (rank$0 == 0) begin
-                sx$0$d = vx$0;
-                sy$0$d = vy$0;
-                sz$0$d = vz$0;
-                siw$0$d = viw$0;
-                sc$0$d = vc$0;
-                sc$1$d = vc$1;
-                sc$2$d = vc$2;
-            end
-            if (rank$1 == 0) begin
-                sx$0$d = vx$1;
-                sy$0$d = vy$1;
-                sz$0$d = vz$1;
-                siw$0$d = viw$1;
-                sc$0$d = vc$3;
-                sc$1$d = vc$4;
-                sc$2$d = vc$5;
-            end
-            if (rank$2 == 0) begin
-                sx$0$d = vx$2;
-                sy$0$d = vy$2;
-                sz$0$d = vz$2;
-                siw$0$d = viw$2;
-                sc$0$d = vc$6;
-                sc$1$d = vc$7;
-                sc$2$d = vc$8;
-            end
-            if (rank$0 == 1) begin
-                sx$1$d = vx$0;
-                sy$1$d = vy$0;
-                sz$1$d = vz$0;
-                siw$1$d = viw$0;
-                sc$3$d = vc$0;
-                sc$4$d = vc$1;
-                sc$5$d = vc$2;
-            end
-            if (rank$1 == 1) begin
-                sx$1$d = vx$1;
-                sy$1$d = vy$1;
-                sz$1$d = vz$1;
-                siw$1$d = viw$1;
-                sc$3$d = vc$3;
-                sc$4$d = vc$4;
-                sc$5$d = vc$5;
-            end
-            if (rank$2 == 1) begin
-                sx$1$d = vx$2;
-                sy$1$d = vy$2;
-                sz$1$d = vz$2;
-                siw$1$d = viw$2;
-                sc$3$d = vc$6;
-                sc$4$d = vc$7;
-                sc$5$d = vc$8;
-            end
-            if (rank$0 == 2) begin
-                sx$2$d = vx$0;
-                sy$2$d = vy$0;
-                sz$2$d = vz$0;
-                siw$2$d = viw$0;
-                sc$6$d = vc$0;
-                sc$7$d = vc$1;
-                sc$8$d = vc$2;
-            end
-            if (rank$1 == 2) begin
-                sx$2$d = vx$1;
-                sy$2$d = vy$1;
-                sz$2$d = vz$1;
-                siw$2$d = viw$1;
-                sc$6$d = vc$3;
-                sc$7$d = vc$4;
-                sc$8$d = vc$5;
-            end
-            if (rank$2 == 2) begin
-                sx$2$d = vx$2;
-                sy$2$d = vy$2;
-                sz$2$d = vz$2;
-                siw$2$d = viw$2;
-                sc$6$d = vc$6;
-                sc$7$d = vc$7;
-                sc$8$d = vc$8;
-            end
-        end
-        out_valid = full$q & (code_r$q == passed);
-        verdict_valid = leave;
-        verdict_code = code_r$q;
-        verdict_outside = outside_r$q;
-        out_crosses = crosses$q;
-        out_v0_x = sx$0$q;
-        out_v0_y = sy$0$q;
-        out_v0_z = sz$0$q;
-        out_v0_c0 = sc$0$q;
-        out_v0_c1 = sc$1$q;
-        out_v0_c2 = sc$2$q;
-        out_v0_iw = siw$0$q;
-        out_v1_x = sx$1$q;
-        out_v1_y = sy$1$q;
-        out_v1_z = sz$1$q;
-        out_v1_c0 = sc$3$q;
-        out_v1_c1 = sc$4$q;
-        out_v1_c2 = sc$5$q;
-        out_v1_iw = siw$1$q;
-        out_v2_x = sx$2$q;
-        out_v2_y = sy$2$q;
-        out_v2_z = sz$2$q;
-        out_v2_c0 = sc$6$q;
-        out_v2_c1 = sc$7$q;
-        out_v2_c2 = sc$8$q;
-        out_v2_iw = siw$2$q;
-    end
-    
-endmodule // raster_top$cull_sort
-
-
-module raster_top$cull_sort$area_mul$0(a,b,p);
-    
-    // Module arguments
-    input wire  [16:0] a;
-    input wire  [16:0] b;
-    output reg  [33:0] p;
-    
-    // Update code (custom)
-    // p = low 34 bits of a * b, both signed: a signed 34-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$cull_sort$area_mul$0
-
-
-module raster_top$cull_sort$area_mul$1(a,b,p);
-    
-    // Module arguments
-    input wire  [16:0] a;
-    input wire  [16:0] b;
-    output reg  [33:0] p;
-    
-    // Update code (custom)
-    // p = low 34 bits of a * b, both signed: a signed 34-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$cull_sort$area_mul$1
-
-
-module raster_top$cull_sort$code_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$code_r
-
-
-module raster_top$cull_sort$crosses(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$crosses
-
-
-module raster_top$cull_sort$full(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$full
-
-
-module raster_top$cull_sort$outside_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$outside_r
-
-
-module raster_top$cull_sort$sc$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sc$0
-
-
-module raster_top$cull_sort$sc$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sc$1
-
-
-module raster_top$cull_sort$sc$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sc$2
-
-
-module raster_top$cull_sort$sc$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sc$3
-
-
-module raster_top$cull_sort$sc$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sc$4
-
-
-module raster_top$cull_sort$sc$5(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sc$5
-
-
-module raster_top$cull_sort$sc$6(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sc$6
-
-
-module raster_top$cull_sort$sc$7(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sc$7
-
-
-module raster_top$cull_sort$sc$8(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sc$8
-
-
-module raster_top$cull_sort$siw$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$siw$0
-
-
-module raster_top$cull_sort$siw$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$siw$1
-
-
-module raster_top$cull_sort$siw$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$siw$2
-
-
-module raster_top$cull_sort$sx$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sx$0
-
-
-module raster_top$cull_sort$sx$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sx$1
-
-
-module raster_top$cull_sort$sx$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sx$2
-
-
-module raster_top$cull_sort$sy$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sy$0
-
-
-module raster_top$cull_sort$sy$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sy$1
-
-
-module raster_top$cull_sort$sy$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sy$2
-
-
-module raster_top$cull_sort$sz$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sz$0
-
-
-module raster_top$cull_sort$sz$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sz$1
-
-
-module raster_top$cull_sort$sz$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$cull_sort$sz$2
-
-
-module raster_top$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_left,inp_maj_j,inp_maj_count,inp_maj_x,inp_maj_r,inp_maj_q,inp_maj_rho,inp_maj_d,inp_maj_at_z,inp_maj_at_c0,inp_maj_at_c1,inp_maj_at_c2,inp_maj_inc0_z,inp_maj_inc0_c0,inp_maj_inc0_c1,inp_maj_inc0_c2,inp_maj_inc1_z,inp_maj_inc1_c0,inp_maj_inc1_c1,inp_maj_inc1_c2,inp_short0_j,inp_short0_count,inp_short0_x,inp_short0_r,inp_short0_q,inp_short0_rho,inp_short0_d,inp_short0_at_z,inp_short0_at_c0,inp_short0_at_c1,inp_short0_at_c2,inp_short0_inc0_z,inp_short0_inc0_c0,inp_short0_inc0_c1,inp_short0_inc0_c2,inp_short0_inc1_z,inp_short0_inc1_c0,inp_short0_inc1_c1,inp_short0_inc1_c2,inp_short1_j,inp_short1_count,inp_short1_x,inp_short1_r,inp_short1_q,inp_short1_rho,inp_short1_d,inp_short1_at_z,inp_short1_at_c0,inp_short1_at_c1,inp_short1_at_c2,inp_short1_inc0_z,inp_short1_inc0_c0,inp_short1_inc0_c1,inp_short1_inc0_c2,inp_short1_inc1_z,inp_short1_inc1_c0,inp_short1_inc1_c1,inp_short1_inc1_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_y,out_xl,out_xr,out_left_z,out_left_c0,out_left_c1,out_left_c2,out_right_z,out_right_c0,out_right_c1,out_right_c2,out_ddx_z,out_ddx_c0,out_ddx_c1,out_ddx_c2);
+module raster_top$core$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_left,inp_maj_j,inp_maj_count,inp_maj_x,inp_maj_r,inp_maj_q,inp_maj_rho,inp_maj_d,inp_maj_at_z,inp_maj_at_c0,inp_maj_at_c1,inp_maj_at_c2,inp_maj_inc0_z,inp_maj_inc0_c0,inp_maj_inc0_c1,inp_maj_inc0_c2,inp_maj_inc1_z,inp_maj_inc1_c0,inp_maj_inc1_c1,inp_maj_inc1_c2,inp_short0_j,inp_short0_count,inp_short0_x,inp_short0_r,inp_short0_q,inp_short0_rho,inp_short0_d,inp_short0_at_z,inp_short0_at_c0,inp_short0_at_c1,inp_short0_at_c2,inp_short0_inc0_z,inp_short0_inc0_c0,inp_short0_inc0_c1,inp_short0_inc0_c2,inp_short0_inc1_z,inp_short0_inc1_c0,inp_short0_inc1_c1,inp_short0_inc1_c2,inp_short1_j,inp_short1_count,inp_short1_x,inp_short1_r,inp_short1_q,inp_short1_rho,inp_short1_d,inp_short1_at_z,inp_short1_at_c0,inp_short1_at_c1,inp_short1_at_c2,inp_short1_inc0_z,inp_short1_inc0_c0,inp_short1_inc0_c1,inp_short1_inc0_c2,inp_short1_inc1_z,inp_short1_inc1_c0,inp_short1_inc1_c1,inp_short1_inc1_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_y,out_xl,out_xr,out_left_z,out_left_c0,out_left_c1,out_left_c2,out_right_z,out_right_c0,out_right_c1,out_right_c2,out_ddx_z,out_ddx_c0,out_ddx_c1,out_ddx_c2);
     
     // Module arguments
     input wire  clock;
@@ -2241,7 +1285,7 @@ module raster_top$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_le
     reg  [12:0] height_j;
     
     // Sub module instances
-    raster_top$edge_walk$maj maj(
+    raster_top$core$edge_walk$maj maj(
         .clock(maj$clock),
         .load(maj$load),
         .step(maj$step),
@@ -2269,7 +1313,7 @@ module raster_top$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_le
         .at_c1(maj$at_c1),
         .at_c2(maj$at_c2)
     );
-    raster_top$edge_walk$cur cur(
+    raster_top$core$edge_walk$cur cur(
         .clock(cur$clock),
         .load(cur$load),
         .step(cur$step),
@@ -2297,156 +1341,156 @@ module raster_top$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_le
         .at_c1(cur$at_c1),
         .at_c2(cur$at_c2)
     );
-    raster_top$edge_walk$busy busy(
+    raster_top$core$edge_walk$busy busy(
         .d(busy$d),
         .q(busy$q),
         .clock(busy$clock)
     );
-    raster_top$edge_walk$walking walking(
+    raster_top$core$edge_walk$walking walking(
         .d(walking$d),
         .q(walking$q),
         .clock(walking$clock)
     );
-    raster_top$edge_walk$up up(
+    raster_top$core$edge_walk$up up(
         .d(up$d),
         .q(up$q),
         .clock(up$clock)
     );
-    raster_top$edge_walk$maj_left maj_left(
+    raster_top$core$edge_walk$maj_left maj_left(
         .d(maj_left$d),
         .q(maj_left$q),
         .clock(maj_left$clock)
     );
-    raster_top$edge_walk$j j(
+    raster_top$core$edge_walk$j j(
         .d(j$d),
         .q(j$q),
         .clock(j$clock)
     );
-    raster_top$edge_walk$k k(
+    raster_top$core$edge_walk$k k(
         .d(k$d),
         .q(k$q),
         .clock(k$clock)
     );
-    raster_top$edge_walk$total total(
+    raster_top$core$edge_walk$total total(
         .d(total$d),
         .q(total$q),
         .clock(total$clock)
     );
-    raster_top$edge_walk$c0 c0(
+    raster_top$core$edge_walk$c0 c0(
         .d(c0$d),
         .q(c0$q),
         .clock(c0$clock)
     );
-    raster_top$edge_walk$ddx_z ddx_z(
+    raster_top$core$edge_walk$ddx_z ddx_z(
         .d(ddx_z$d),
         .q(ddx_z$q),
         .clock(ddx_z$clock)
     );
-    raster_top$edge_walk$ddx_c0 ddx_c0(
+    raster_top$core$edge_walk$ddx_c0 ddx_c0(
         .d(ddx_c0$d),
         .q(ddx_c0$q),
         .clock(ddx_c0$clock)
     );
-    raster_top$edge_walk$ddx_c1 ddx_c1(
+    raster_top$core$edge_walk$ddx_c1 ddx_c1(
         .d(ddx_c1$d),
         .q(ddx_c1$q),
         .clock(ddx_c1$clock)
     );
-    raster_top$edge_walk$ddx_c2 ddx_c2(
+    raster_top$core$edge_walk$ddx_c2 ddx_c2(
         .d(ddx_c2$d),
         .q(ddx_c2$q),
         .clock(ddx_c2$clock)
     );
-    raster_top$edge_walk$pend_x pend_x(
+    raster_top$core$edge_walk$pend_x pend_x(
         .d(pend_x$d),
         .q(pend_x$q),
         .clock(pend_x$clock)
     );
-    raster_top$edge_walk$pend_r pend_r(
+    raster_top$core$edge_walk$pend_r pend_r(
         .d(pend_r$d),
         .q(pend_r$q),
         .clock(pend_r$clock)
     );
-    raster_top$edge_walk$pend_q pend_q(
+    raster_top$core$edge_walk$pend_q pend_q(
         .d(pend_q$d),
         .q(pend_q$q),
         .clock(pend_q$clock)
     );
-    raster_top$edge_walk$pend_rho pend_rho(
+    raster_top$core$edge_walk$pend_rho pend_rho(
         .d(pend_rho$d),
         .q(pend_rho$q),
         .clock(pend_rho$clock)
     );
-    raster_top$edge_walk$pend_d pend_d(
+    raster_top$core$edge_walk$pend_d pend_d(
         .d(pend_d$d),
         .q(pend_d$q),
         .clock(pend_d$clock)
     );
-    raster_top$edge_walk$pend_at_z pend_at_z(
+    raster_top$core$edge_walk$pend_at_z pend_at_z(
         .d(pend_at_z$d),
         .q(pend_at_z$q),
         .clock(pend_at_z$clock)
     );
-    raster_top$edge_walk$pend_at_c0 pend_at_c0(
+    raster_top$core$edge_walk$pend_at_c0 pend_at_c0(
         .d(pend_at_c0$d),
         .q(pend_at_c0$q),
         .clock(pend_at_c0$clock)
     );
-    raster_top$edge_walk$pend_at_c1 pend_at_c1(
+    raster_top$core$edge_walk$pend_at_c1 pend_at_c1(
         .d(pend_at_c1$d),
         .q(pend_at_c1$q),
         .clock(pend_at_c1$clock)
     );
-    raster_top$edge_walk$pend_at_c2 pend_at_c2(
+    raster_top$core$edge_walk$pend_at_c2 pend_at_c2(
         .d(pend_at_c2$d),
         .q(pend_at_c2$q),
         .clock(pend_at_c2$clock)
     );
-    raster_top$edge_walk$pend_inc0_z pend_inc0_z(
+    raster_top$core$edge_walk$pend_inc0_z pend_inc0_z(
         .d(pend_inc0_z$d),
         .q(pend_inc0_z$q),
         .clock(pend_inc0_z$clock)
     );
-    raster_top$edge_walk$pend_inc0_c0 pend_inc0_c0(
+    raster_top$core$edge_walk$pend_inc0_c0 pend_inc0_c0(
         .d(pend_inc0_c0$d),
         .q(pend_inc0_c0$q),
         .clock(pend_inc0_c0$clock)
     );
-    raster_top$edge_walk$pend_inc0_c1 pend_inc0_c1(
+    raster_top$core$edge_walk$pend_inc0_c1 pend_inc0_c1(
         .d(pend_inc0_c1$d),
         .q(pend_inc0_c1$q),
         .clock(pend_inc0_c1$clock)
     );
-    raster_top$edge_walk$pend_inc0_c2 pend_inc0_c2(
+    raster_top$core$edge_walk$pend_inc0_c2 pend_inc0_c2(
         .d(pend_inc0_c2$d),
         .q(pend_inc0_c2$q),
         .clock(pend_inc0_c2$clock)
     );
-    raster_top$edge_walk$pend_inc1_z pend_inc1_z(
+    raster_top$core$edge_walk$pend_inc1_z pend_inc1_z(
         .d(pend_inc1_z$d),
         .q(pend_inc1_z$q),
         .clock(pend_inc1_z$clock)
     );
-    raster_top$edge_walk$pend_inc1_c0 pend_inc1_c0(
+    raster_top$core$edge_walk$pend_inc1_c0 pend_inc1_c0(
         .d(pend_inc1_c0$d),
         .q(pend_inc1_c0$q),
         .clock(pend_inc1_c0$clock)
     );
-    raster_top$edge_walk$pend_inc1_c1 pend_inc1_c1(
+    raster_top$core$edge_walk$pend_inc1_c1 pend_inc1_c1(
         .d(pend_inc1_c1$d),
         .q(pend_inc1_c1$q),
         .clock(pend_inc1_c1$clock)
     );
-    raster_top$edge_walk$pend_inc1_c2 pend_inc1_c2(
+    raster_top$core$edge_walk$pend_inc1_c2 pend_inc1_c2(
         .d(pend_inc1_c2$d),
         .q(pend_inc1_c2$q),
         .clock(pend_inc1_c2$clock)
     );
-    raster_top$edge_walk$j_sign j_sign(
+    raster_top$core$edge_walk$j_sign j_sign(
         .x(j_sign$x),
         .neg(j_sign$neg)
     );
-    raster_top$edge_walk$sides sides(
+    raster_top$core$edge_walk$sides sides(
         .a(sides$a),
         .b(sides$b),
         .lt(sides$lt)
@@ -2692,10 +1736,10 @@ module raster_top$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_le
         end
     end
     
-endmodule // raster_top$edge_walk
+endmodule // raster_top$core$edge_walk
 
 
-module raster_top$edge_walk$busy(d,q,clock);
+module raster_top$core$edge_walk$busy(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -2711,10 +1755,10 @@ module raster_top$edge_walk$busy(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$busy
+endmodule // raster_top$core$edge_walk$busy
 
 
-module raster_top$edge_walk$c0(d,q,clock);
+module raster_top$core$edge_walk$c0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -2730,10 +1774,10 @@ module raster_top$edge_walk$c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$c0
+endmodule // raster_top$core$edge_walk$c0
 
 
-module raster_top$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
+module raster_top$core$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
     
     // Module arguments
     input wire  clock;
@@ -2823,32 +1867,32 @@ module raster_top$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld
     reg  [12:0] x_step;
     
     // Sub module instances
-    raster_top$edge_walk$cur$x_r x_r(
+    raster_top$core$edge_walk$cur$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$edge_walk$cur$r_r r_r(
+    raster_top$core$edge_walk$cur$r_r r_r(
         .d(r_r$d),
         .q(r_r$q),
         .clock(r_r$clock)
     );
-    raster_top$edge_walk$cur$q_r q_r(
+    raster_top$core$edge_walk$cur$q_r q_r(
         .d(q_r$d),
         .q(q_r$q),
         .clock(q_r$clock)
     );
-    raster_top$edge_walk$cur$rho_r rho_r(
+    raster_top$core$edge_walk$cur$rho_r rho_r(
         .d(rho_r$d),
         .q(rho_r$q),
         .clock(rho_r$clock)
     );
-    raster_top$edge_walk$cur$d_r d_r(
+    raster_top$core$edge_walk$cur$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$edge_walk$cur$z z(
+    raster_top$core$edge_walk$cur$z z(
         .clock(z$clock),
         .load(z$load),
         .step(z$step),
@@ -2859,7 +1903,7 @@ module raster_top$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld
         .ld_inc1(z$ld_inc1),
         .at(z$at)
     );
-    raster_top$edge_walk$cur$c0 c0(
+    raster_top$core$edge_walk$cur$c0 c0(
         .clock(c0$clock),
         .load(c0$load),
         .step(c0$step),
@@ -2870,7 +1914,7 @@ module raster_top$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld
         .ld_inc1(c0$ld_inc1),
         .at(c0$at)
     );
-    raster_top$edge_walk$cur$c1 c1(
+    raster_top$core$edge_walk$cur$c1 c1(
         .clock(c1$clock),
         .load(c1$load),
         .step(c1$step),
@@ -2881,7 +1925,7 @@ module raster_top$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld
         .ld_inc1(c1$ld_inc1),
         .at(c1$at)
     );
-    raster_top$edge_walk$cur$c2 c2(
+    raster_top$core$edge_walk$cur$c2 c2(
         .clock(c2$clock),
         .load(c2$load),
         .step(c2$step),
@@ -2974,10 +2018,10 @@ module raster_top$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld
         at_c2 = c2$at;
     end
     
-endmodule // raster_top$edge_walk$cur
+endmodule // raster_top$core$edge_walk$cur
 
 
-module raster_top$edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -3005,17 +2049,17 @@ module raster_top$edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,
     reg  [31:0] inc;
     
     // Sub module instances
-    raster_top$edge_walk$cur$c0$at_r at_r(
+    raster_top$core$edge_walk$cur$c0$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$edge_walk$cur$c0$inc0_r inc0_r(
+    raster_top$core$edge_walk$cur$c0$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$edge_walk$cur$c0$inc1_r inc1_r(
+    raster_top$core$edge_walk$cur$c0$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -3049,10 +2093,10 @@ module raster_top$edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,
         at = at_r$q;
     end
     
-endmodule // raster_top$edge_walk$cur$c0
+endmodule // raster_top$core$edge_walk$cur$c0
 
 
-module raster_top$edge_walk$cur$c0$at_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c0$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3068,10 +2112,10 @@ module raster_top$edge_walk$cur$c0$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$c0$at_r
+endmodule // raster_top$core$edge_walk$cur$c0$at_r
 
 
-module raster_top$edge_walk$cur$c0$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c0$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3087,10 +2131,10 @@ module raster_top$edge_walk$cur$c0$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$c0$inc0_r
+endmodule // raster_top$core$edge_walk$cur$c0$inc0_r
 
 
-module raster_top$edge_walk$cur$c0$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c0$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3106,10 +2150,10 @@ module raster_top$edge_walk$cur$c0$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$c0$inc1_r
+endmodule // raster_top$core$edge_walk$cur$c0$inc1_r
 
 
-module raster_top$edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -3137,17 +2181,17 @@ module raster_top$edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,
     reg  [31:0] inc;
     
     // Sub module instances
-    raster_top$edge_walk$cur$c1$at_r at_r(
+    raster_top$core$edge_walk$cur$c1$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$edge_walk$cur$c1$inc0_r inc0_r(
+    raster_top$core$edge_walk$cur$c1$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$edge_walk$cur$c1$inc1_r inc1_r(
+    raster_top$core$edge_walk$cur$c1$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -3181,10 +2225,10 @@ module raster_top$edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,
         at = at_r$q;
     end
     
-endmodule // raster_top$edge_walk$cur$c1
+endmodule // raster_top$core$edge_walk$cur$c1
 
 
-module raster_top$edge_walk$cur$c1$at_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c1$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3200,10 +2244,10 @@ module raster_top$edge_walk$cur$c1$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$c1$at_r
+endmodule // raster_top$core$edge_walk$cur$c1$at_r
 
 
-module raster_top$edge_walk$cur$c1$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c1$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3219,10 +2263,10 @@ module raster_top$edge_walk$cur$c1$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$c1$inc0_r
+endmodule // raster_top$core$edge_walk$cur$c1$inc0_r
 
 
-module raster_top$edge_walk$cur$c1$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c1$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3238,10 +2282,10 @@ module raster_top$edge_walk$cur$c1$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$c1$inc1_r
+endmodule // raster_top$core$edge_walk$cur$c1$inc1_r
 
 
-module raster_top$edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -3269,17 +2313,17 @@ module raster_top$edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,
     reg  [31:0] inc;
     
     // Sub module instances
-    raster_top$edge_walk$cur$c2$at_r at_r(
+    raster_top$core$edge_walk$cur$c2$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$edge_walk$cur$c2$inc0_r inc0_r(
+    raster_top$core$edge_walk$cur$c2$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$edge_walk$cur$c2$inc1_r inc1_r(
+    raster_top$core$edge_walk$cur$c2$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -3313,10 +2357,10 @@ module raster_top$edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,
         at = at_r$q;
     end
     
-endmodule // raster_top$edge_walk$cur$c2
+endmodule // raster_top$core$edge_walk$cur$c2
 
 
-module raster_top$edge_walk$cur$c2$at_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c2$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3332,10 +2376,10 @@ module raster_top$edge_walk$cur$c2$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$c2$at_r
+endmodule // raster_top$core$edge_walk$cur$c2$at_r
 
 
-module raster_top$edge_walk$cur$c2$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c2$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3351,10 +2395,10 @@ module raster_top$edge_walk$cur$c2$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$c2$inc0_r
+endmodule // raster_top$core$edge_walk$cur$c2$inc0_r
 
 
-module raster_top$edge_walk$cur$c2$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c2$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3370,10 +2414,10 @@ module raster_top$edge_walk$cur$c2$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$c2$inc1_r
+endmodule // raster_top$core$edge_walk$cur$c2$inc1_r
 
 
-module raster_top$edge_walk$cur$d_r(d,q,clock);
+module raster_top$core$edge_walk$cur$d_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -3389,10 +2433,10 @@ module raster_top$edge_walk$cur$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$d_r
+endmodule // raster_top$core$edge_walk$cur$d_r
 
 
-module raster_top$edge_walk$cur$q_r(d,q,clock);
+module raster_top$core$edge_walk$cur$q_r(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -3408,10 +2452,10 @@ module raster_top$edge_walk$cur$q_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$q_r
+endmodule // raster_top$core$edge_walk$cur$q_r
 
 
-module raster_top$edge_walk$cur$r_r(d,q,clock);
+module raster_top$core$edge_walk$cur$r_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -3427,10 +2471,10 @@ module raster_top$edge_walk$cur$r_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$r_r
+endmodule // raster_top$core$edge_walk$cur$r_r
 
 
-module raster_top$edge_walk$cur$rho_r(d,q,clock);
+module raster_top$core$edge_walk$cur$rho_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -3446,10 +2490,10 @@ module raster_top$edge_walk$cur$rho_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$rho_r
+endmodule // raster_top$core$edge_walk$cur$rho_r
 
 
-module raster_top$edge_walk$cur$x_r(d,q,clock);
+module raster_top$core$edge_walk$cur$x_r(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -3465,10 +2509,10 @@ module raster_top$edge_walk$cur$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$x_r
+endmodule // raster_top$core$edge_walk$cur$x_r
 
 
-module raster_top$edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -3496,17 +2540,17 @@ module raster_top$edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,a
     reg  [35:0] inc;
     
     // Sub module instances
-    raster_top$edge_walk$cur$z$at_r at_r(
+    raster_top$core$edge_walk$cur$z$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$edge_walk$cur$z$inc0_r inc0_r(
+    raster_top$core$edge_walk$cur$z$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$edge_walk$cur$z$inc1_r inc1_r(
+    raster_top$core$edge_walk$cur$z$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -3540,10 +2584,10 @@ module raster_top$edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,a
         at = at_r$q;
     end
     
-endmodule // raster_top$edge_walk$cur$z
+endmodule // raster_top$core$edge_walk$cur$z
 
 
-module raster_top$edge_walk$cur$z$at_r(d,q,clock);
+module raster_top$core$edge_walk$cur$z$at_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3559,10 +2603,10 @@ module raster_top$edge_walk$cur$z$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$z$at_r
+endmodule // raster_top$core$edge_walk$cur$z$at_r
 
 
-module raster_top$edge_walk$cur$z$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$cur$z$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3578,10 +2622,10 @@ module raster_top$edge_walk$cur$z$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$z$inc0_r
+endmodule // raster_top$core$edge_walk$cur$z$inc0_r
 
 
-module raster_top$edge_walk$cur$z$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$cur$z$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3597,10 +2641,10 @@ module raster_top$edge_walk$cur$z$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$cur$z$inc1_r
+endmodule // raster_top$core$edge_walk$cur$z$inc1_r
 
 
-module raster_top$edge_walk$ddx_c0(d,q,clock);
+module raster_top$core$edge_walk$ddx_c0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3616,10 +2660,10 @@ module raster_top$edge_walk$ddx_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$ddx_c0
+endmodule // raster_top$core$edge_walk$ddx_c0
 
 
-module raster_top$edge_walk$ddx_c1(d,q,clock);
+module raster_top$core$edge_walk$ddx_c1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3635,10 +2679,10 @@ module raster_top$edge_walk$ddx_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$ddx_c1
+endmodule // raster_top$core$edge_walk$ddx_c1
 
 
-module raster_top$edge_walk$ddx_c2(d,q,clock);
+module raster_top$core$edge_walk$ddx_c2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3654,10 +2698,10 @@ module raster_top$edge_walk$ddx_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$ddx_c2
+endmodule // raster_top$core$edge_walk$ddx_c2
 
 
-module raster_top$edge_walk$ddx_z(d,q,clock);
+module raster_top$core$edge_walk$ddx_z(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -3673,10 +2717,10 @@ module raster_top$edge_walk$ddx_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$ddx_z
+endmodule // raster_top$core$edge_walk$ddx_z
 
 
-module raster_top$edge_walk$j(d,q,clock);
+module raster_top$core$edge_walk$j(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -3692,10 +2736,10 @@ module raster_top$edge_walk$j(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$j
+endmodule // raster_top$core$edge_walk$j
 
 
-module raster_top$edge_walk$j_sign(x,neg);
+module raster_top$core$edge_walk$j_sign(x,neg);
     
     // Module arguments
     input wire  [12:0] x;
@@ -3709,10 +2753,10 @@ module raster_top$edge_walk$j_sign(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$edge_walk$j_sign
+endmodule // raster_top$core$edge_walk$j_sign
 
 
-module raster_top$edge_walk$k(d,q,clock);
+module raster_top$core$edge_walk$k(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -3728,10 +2772,10 @@ module raster_top$edge_walk$k(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$k
+endmodule // raster_top$core$edge_walk$k
 
 
-module raster_top$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
+module raster_top$core$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
     
     // Module arguments
     input wire  clock;
@@ -3821,32 +2865,32 @@ module raster_top$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld
     reg  [12:0] x_step;
     
     // Sub module instances
-    raster_top$edge_walk$maj$x_r x_r(
+    raster_top$core$edge_walk$maj$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$edge_walk$maj$r_r r_r(
+    raster_top$core$edge_walk$maj$r_r r_r(
         .d(r_r$d),
         .q(r_r$q),
         .clock(r_r$clock)
     );
-    raster_top$edge_walk$maj$q_r q_r(
+    raster_top$core$edge_walk$maj$q_r q_r(
         .d(q_r$d),
         .q(q_r$q),
         .clock(q_r$clock)
     );
-    raster_top$edge_walk$maj$rho_r rho_r(
+    raster_top$core$edge_walk$maj$rho_r rho_r(
         .d(rho_r$d),
         .q(rho_r$q),
         .clock(rho_r$clock)
     );
-    raster_top$edge_walk$maj$d_r d_r(
+    raster_top$core$edge_walk$maj$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$edge_walk$maj$z z(
+    raster_top$core$edge_walk$maj$z z(
         .clock(z$clock),
         .load(z$load),
         .step(z$step),
@@ -3857,7 +2901,7 @@ module raster_top$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld
         .ld_inc1(z$ld_inc1),
         .at(z$at)
     );
-    raster_top$edge_walk$maj$c0 c0(
+    raster_top$core$edge_walk$maj$c0 c0(
         .clock(c0$clock),
         .load(c0$load),
         .step(c0$step),
@@ -3868,7 +2912,7 @@ module raster_top$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld
         .ld_inc1(c0$ld_inc1),
         .at(c0$at)
     );
-    raster_top$edge_walk$maj$c1 c1(
+    raster_top$core$edge_walk$maj$c1 c1(
         .clock(c1$clock),
         .load(c1$load),
         .step(c1$step),
@@ -3879,7 +2923,7 @@ module raster_top$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld
         .ld_inc1(c1$ld_inc1),
         .at(c1$at)
     );
-    raster_top$edge_walk$maj$c2 c2(
+    raster_top$core$edge_walk$maj$c2 c2(
         .clock(c2$clock),
         .load(c2$load),
         .step(c2$step),
@@ -3972,10 +3016,10 @@ module raster_top$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld
         at_c2 = c2$at;
     end
     
-endmodule // raster_top$edge_walk$maj
+endmodule // raster_top$core$edge_walk$maj
 
 
-module raster_top$edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -4003,17 +3047,17 @@ module raster_top$edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,
     reg  [31:0] inc;
     
     // Sub module instances
-    raster_top$edge_walk$maj$c0$at_r at_r(
+    raster_top$core$edge_walk$maj$c0$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$edge_walk$maj$c0$inc0_r inc0_r(
+    raster_top$core$edge_walk$maj$c0$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$edge_walk$maj$c0$inc1_r inc1_r(
+    raster_top$core$edge_walk$maj$c0$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -4047,10 +3091,10 @@ module raster_top$edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,
         at = at_r$q;
     end
     
-endmodule // raster_top$edge_walk$maj$c0
+endmodule // raster_top$core$edge_walk$maj$c0
 
 
-module raster_top$edge_walk$maj$c0$at_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c0$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4066,10 +3110,10 @@ module raster_top$edge_walk$maj$c0$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$c0$at_r
+endmodule // raster_top$core$edge_walk$maj$c0$at_r
 
 
-module raster_top$edge_walk$maj$c0$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c0$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4085,10 +3129,10 @@ module raster_top$edge_walk$maj$c0$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$c0$inc0_r
+endmodule // raster_top$core$edge_walk$maj$c0$inc0_r
 
 
-module raster_top$edge_walk$maj$c0$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c0$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4104,10 +3148,10 @@ module raster_top$edge_walk$maj$c0$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$c0$inc1_r
+endmodule // raster_top$core$edge_walk$maj$c0$inc1_r
 
 
-module raster_top$edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -4135,17 +3179,17 @@ module raster_top$edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,
     reg  [31:0] inc;
     
     // Sub module instances
-    raster_top$edge_walk$maj$c1$at_r at_r(
+    raster_top$core$edge_walk$maj$c1$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$edge_walk$maj$c1$inc0_r inc0_r(
+    raster_top$core$edge_walk$maj$c1$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$edge_walk$maj$c1$inc1_r inc1_r(
+    raster_top$core$edge_walk$maj$c1$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -4179,10 +3223,10 @@ module raster_top$edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,
         at = at_r$q;
     end
     
-endmodule // raster_top$edge_walk$maj$c1
+endmodule // raster_top$core$edge_walk$maj$c1
 
 
-module raster_top$edge_walk$maj$c1$at_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c1$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4198,10 +3242,10 @@ module raster_top$edge_walk$maj$c1$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$c1$at_r
+endmodule // raster_top$core$edge_walk$maj$c1$at_r
 
 
-module raster_top$edge_walk$maj$c1$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c1$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4217,10 +3261,10 @@ module raster_top$edge_walk$maj$c1$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$c1$inc0_r
+endmodule // raster_top$core$edge_walk$maj$c1$inc0_r
 
 
-module raster_top$edge_walk$maj$c1$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c1$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4236,10 +3280,10 @@ module raster_top$edge_walk$maj$c1$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$c1$inc1_r
+endmodule // raster_top$core$edge_walk$maj$c1$inc1_r
 
 
-module raster_top$edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -4267,17 +3311,17 @@ module raster_top$edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,
     reg  [31:0] inc;
     
     // Sub module instances
-    raster_top$edge_walk$maj$c2$at_r at_r(
+    raster_top$core$edge_walk$maj$c2$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$edge_walk$maj$c2$inc0_r inc0_r(
+    raster_top$core$edge_walk$maj$c2$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$edge_walk$maj$c2$inc1_r inc1_r(
+    raster_top$core$edge_walk$maj$c2$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -4311,10 +3355,10 @@ module raster_top$edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,
         at = at_r$q;
     end
     
-endmodule // raster_top$edge_walk$maj$c2
+endmodule // raster_top$core$edge_walk$maj$c2
 
 
-module raster_top$edge_walk$maj$c2$at_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c2$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4330,10 +3374,10 @@ module raster_top$edge_walk$maj$c2$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$c2$at_r
+endmodule // raster_top$core$edge_walk$maj$c2$at_r
 
 
-module raster_top$edge_walk$maj$c2$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c2$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4349,10 +3393,10 @@ module raster_top$edge_walk$maj$c2$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$c2$inc0_r
+endmodule // raster_top$core$edge_walk$maj$c2$inc0_r
 
 
-module raster_top$edge_walk$maj$c2$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c2$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4368,10 +3412,10 @@ module raster_top$edge_walk$maj$c2$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$c2$inc1_r
+endmodule // raster_top$core$edge_walk$maj$c2$inc1_r
 
 
-module raster_top$edge_walk$maj$d_r(d,q,clock);
+module raster_top$core$edge_walk$maj$d_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -4387,10 +3431,10 @@ module raster_top$edge_walk$maj$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$d_r
+endmodule // raster_top$core$edge_walk$maj$d_r
 
 
-module raster_top$edge_walk$maj$q_r(d,q,clock);
+module raster_top$core$edge_walk$maj$q_r(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -4406,10 +3450,10 @@ module raster_top$edge_walk$maj$q_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$q_r
+endmodule // raster_top$core$edge_walk$maj$q_r
 
 
-module raster_top$edge_walk$maj$r_r(d,q,clock);
+module raster_top$core$edge_walk$maj$r_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -4425,10 +3469,10 @@ module raster_top$edge_walk$maj$r_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$r_r
+endmodule // raster_top$core$edge_walk$maj$r_r
 
 
-module raster_top$edge_walk$maj$rho_r(d,q,clock);
+module raster_top$core$edge_walk$maj$rho_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -4444,10 +3488,10 @@ module raster_top$edge_walk$maj$rho_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$rho_r
+endmodule // raster_top$core$edge_walk$maj$rho_r
 
 
-module raster_top$edge_walk$maj$x_r(d,q,clock);
+module raster_top$core$edge_walk$maj$x_r(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -4463,10 +3507,10 @@ module raster_top$edge_walk$maj$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$x_r
+endmodule // raster_top$core$edge_walk$maj$x_r
 
 
-module raster_top$edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -4494,17 +3538,17 @@ module raster_top$edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,a
     reg  [35:0] inc;
     
     // Sub module instances
-    raster_top$edge_walk$maj$z$at_r at_r(
+    raster_top$core$edge_walk$maj$z$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$edge_walk$maj$z$inc0_r inc0_r(
+    raster_top$core$edge_walk$maj$z$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$edge_walk$maj$z$inc1_r inc1_r(
+    raster_top$core$edge_walk$maj$z$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -4538,10 +3582,10 @@ module raster_top$edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,a
         at = at_r$q;
     end
     
-endmodule // raster_top$edge_walk$maj$z
+endmodule // raster_top$core$edge_walk$maj$z
 
 
-module raster_top$edge_walk$maj$z$at_r(d,q,clock);
+module raster_top$core$edge_walk$maj$z$at_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4557,10 +3601,10 @@ module raster_top$edge_walk$maj$z$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$z$at_r
+endmodule // raster_top$core$edge_walk$maj$z$at_r
 
 
-module raster_top$edge_walk$maj$z$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$maj$z$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4576,10 +3620,10 @@ module raster_top$edge_walk$maj$z$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$z$inc0_r
+endmodule // raster_top$core$edge_walk$maj$z$inc0_r
 
 
-module raster_top$edge_walk$maj$z$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$maj$z$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4595,10 +3639,10 @@ module raster_top$edge_walk$maj$z$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj$z$inc1_r
+endmodule // raster_top$core$edge_walk$maj$z$inc1_r
 
 
-module raster_top$edge_walk$maj_left(d,q,clock);
+module raster_top$core$edge_walk$maj_left(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4614,10 +3658,10 @@ module raster_top$edge_walk$maj_left(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$maj_left
+endmodule // raster_top$core$edge_walk$maj_left
 
 
-module raster_top$edge_walk$pend_at_c0(d,q,clock);
+module raster_top$core$edge_walk$pend_at_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4633,10 +3677,10 @@ module raster_top$edge_walk$pend_at_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_at_c0
+endmodule // raster_top$core$edge_walk$pend_at_c0
 
 
-module raster_top$edge_walk$pend_at_c1(d,q,clock);
+module raster_top$core$edge_walk$pend_at_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4652,10 +3696,10 @@ module raster_top$edge_walk$pend_at_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_at_c1
+endmodule // raster_top$core$edge_walk$pend_at_c1
 
 
-module raster_top$edge_walk$pend_at_c2(d,q,clock);
+module raster_top$core$edge_walk$pend_at_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4671,10 +3715,10 @@ module raster_top$edge_walk$pend_at_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_at_c2
+endmodule // raster_top$core$edge_walk$pend_at_c2
 
 
-module raster_top$edge_walk$pend_at_z(d,q,clock);
+module raster_top$core$edge_walk$pend_at_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4690,10 +3734,10 @@ module raster_top$edge_walk$pend_at_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_at_z
+endmodule // raster_top$core$edge_walk$pend_at_z
 
 
-module raster_top$edge_walk$pend_d(d,q,clock);
+module raster_top$core$edge_walk$pend_d(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -4709,10 +3753,10 @@ module raster_top$edge_walk$pend_d(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_d
+endmodule // raster_top$core$edge_walk$pend_d
 
 
-module raster_top$edge_walk$pend_inc0_c0(d,q,clock);
+module raster_top$core$edge_walk$pend_inc0_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4728,10 +3772,10 @@ module raster_top$edge_walk$pend_inc0_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_inc0_c0
+endmodule // raster_top$core$edge_walk$pend_inc0_c0
 
 
-module raster_top$edge_walk$pend_inc0_c1(d,q,clock);
+module raster_top$core$edge_walk$pend_inc0_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4747,10 +3791,10 @@ module raster_top$edge_walk$pend_inc0_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_inc0_c1
+endmodule // raster_top$core$edge_walk$pend_inc0_c1
 
 
-module raster_top$edge_walk$pend_inc0_c2(d,q,clock);
+module raster_top$core$edge_walk$pend_inc0_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4766,10 +3810,10 @@ module raster_top$edge_walk$pend_inc0_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_inc0_c2
+endmodule // raster_top$core$edge_walk$pend_inc0_c2
 
 
-module raster_top$edge_walk$pend_inc0_z(d,q,clock);
+module raster_top$core$edge_walk$pend_inc0_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4785,10 +3829,10 @@ module raster_top$edge_walk$pend_inc0_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_inc0_z
+endmodule // raster_top$core$edge_walk$pend_inc0_z
 
 
-module raster_top$edge_walk$pend_inc1_c0(d,q,clock);
+module raster_top$core$edge_walk$pend_inc1_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4804,10 +3848,10 @@ module raster_top$edge_walk$pend_inc1_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_inc1_c0
+endmodule // raster_top$core$edge_walk$pend_inc1_c0
 
 
-module raster_top$edge_walk$pend_inc1_c1(d,q,clock);
+module raster_top$core$edge_walk$pend_inc1_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4823,10 +3867,10 @@ module raster_top$edge_walk$pend_inc1_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_inc1_c1
+endmodule // raster_top$core$edge_walk$pend_inc1_c1
 
 
-module raster_top$edge_walk$pend_inc1_c2(d,q,clock);
+module raster_top$core$edge_walk$pend_inc1_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4842,10 +3886,10 @@ module raster_top$edge_walk$pend_inc1_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_inc1_c2
+endmodule // raster_top$core$edge_walk$pend_inc1_c2
 
 
-module raster_top$edge_walk$pend_inc1_z(d,q,clock);
+module raster_top$core$edge_walk$pend_inc1_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4861,10 +3905,10 @@ module raster_top$edge_walk$pend_inc1_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_inc1_z
+endmodule // raster_top$core$edge_walk$pend_inc1_z
 
 
-module raster_top$edge_walk$pend_q(d,q,clock);
+module raster_top$core$edge_walk$pend_q(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -4880,10 +3924,10 @@ module raster_top$edge_walk$pend_q(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_q
+endmodule // raster_top$core$edge_walk$pend_q
 
 
-module raster_top$edge_walk$pend_r(d,q,clock);
+module raster_top$core$edge_walk$pend_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -4899,10 +3943,10 @@ module raster_top$edge_walk$pend_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_r
+endmodule // raster_top$core$edge_walk$pend_r
 
 
-module raster_top$edge_walk$pend_rho(d,q,clock);
+module raster_top$core$edge_walk$pend_rho(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -4918,10 +3962,10 @@ module raster_top$edge_walk$pend_rho(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_rho
+endmodule // raster_top$core$edge_walk$pend_rho
 
 
-module raster_top$edge_walk$pend_x(d,q,clock);
+module raster_top$core$edge_walk$pend_x(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -4937,10 +3981,10 @@ module raster_top$edge_walk$pend_x(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$pend_x
+endmodule // raster_top$core$edge_walk$pend_x
 
 
-module raster_top$edge_walk$sides(a,b,lt);
+module raster_top$core$edge_walk$sides(a,b,lt);
     
     // Module arguments
     input wire  [12:0] a;
@@ -4955,10 +3999,10 @@ module raster_top$edge_walk$sides(a,b,lt);
         lt = (a ^ half) < (b ^ half);
     end
     
-endmodule // raster_top$edge_walk$sides
+endmodule // raster_top$core$edge_walk$sides
 
 
-module raster_top$edge_walk$total(d,q,clock);
+module raster_top$core$edge_walk$total(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -4974,10 +4018,10 @@ module raster_top$edge_walk$total(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$total
+endmodule // raster_top$core$edge_walk$total
 
 
-module raster_top$edge_walk$up(d,q,clock);
+module raster_top$core$edge_walk$up(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4993,10 +4037,10 @@ module raster_top$edge_walk$up(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$up
+endmodule // raster_top$core$edge_walk$up
 
 
-module raster_top$edge_walk$walking(d,q,clock);
+module raster_top$core$edge_walk$walking(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5012,10 +4056,10 @@ module raster_top$edge_walk$walking(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$edge_walk$walking
+endmodule // raster_top$core$edge_walk$walking
 
 
-module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_y,out_xl,out_xr,out_left_z,out_left_c0,out_left_c1,out_left_c2,out_right_z,out_right_c0,out_right_c1,out_right_c2,out_ddx_z,out_ddx_c0,out_ddx_c1,out_ddx_c2,empty);
+module raster_top$core$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_y,out_xl,out_xr,out_left_z,out_left_c0,out_left_c1,out_left_c2,out_right_z,out_right_c0,out_right_c1,out_right_c2,out_ddx_z,out_ddx_c0,out_ddx_c1,out_ddx_c2,empty);
     
     // Module arguments
     input wire  clock;
@@ -5159,17 +4203,17 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
     reg  pop;
     
     // Sub module instances
-    raster_top$fifo$count count(
+    raster_top$core$fifo$count count(
         .d(count$d),
         .q(count$q),
         .clock(count$clock)
     );
-    raster_top$fifo$level level(
+    raster_top$core$fifo$level level(
         .count(level$count),
         .full(level$full),
         .empty(level$empty)
     );
-    raster_top$fifo$y y(
+    raster_top$core$fifo$y y(
         .clock(y$clock),
         .push(y$push),
         .pop(y$pop),
@@ -5177,7 +4221,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(y$din),
         .head(y$head)
     );
-    raster_top$fifo$xl xl(
+    raster_top$core$fifo$xl xl(
         .clock(xl$clock),
         .push(xl$push),
         .pop(xl$pop),
@@ -5185,7 +4229,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(xl$din),
         .head(xl$head)
     );
-    raster_top$fifo$xr xr(
+    raster_top$core$fifo$xr xr(
         .clock(xr$clock),
         .push(xr$push),
         .pop(xr$pop),
@@ -5193,7 +4237,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(xr$din),
         .head(xr$head)
     );
-    raster_top$fifo$left_z left_z(
+    raster_top$core$fifo$left_z left_z(
         .clock(left_z$clock),
         .push(left_z$push),
         .pop(left_z$pop),
@@ -5201,7 +4245,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(left_z$din),
         .head(left_z$head)
     );
-    raster_top$fifo$left_c0 left_c0(
+    raster_top$core$fifo$left_c0 left_c0(
         .clock(left_c0$clock),
         .push(left_c0$push),
         .pop(left_c0$pop),
@@ -5209,7 +4253,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(left_c0$din),
         .head(left_c0$head)
     );
-    raster_top$fifo$left_c1 left_c1(
+    raster_top$core$fifo$left_c1 left_c1(
         .clock(left_c1$clock),
         .push(left_c1$push),
         .pop(left_c1$pop),
@@ -5217,7 +4261,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(left_c1$din),
         .head(left_c1$head)
     );
-    raster_top$fifo$left_c2 left_c2(
+    raster_top$core$fifo$left_c2 left_c2(
         .clock(left_c2$clock),
         .push(left_c2$push),
         .pop(left_c2$pop),
@@ -5225,7 +4269,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(left_c2$din),
         .head(left_c2$head)
     );
-    raster_top$fifo$right_z right_z(
+    raster_top$core$fifo$right_z right_z(
         .clock(right_z$clock),
         .push(right_z$push),
         .pop(right_z$pop),
@@ -5233,7 +4277,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(right_z$din),
         .head(right_z$head)
     );
-    raster_top$fifo$right_c0 right_c0(
+    raster_top$core$fifo$right_c0 right_c0(
         .clock(right_c0$clock),
         .push(right_c0$push),
         .pop(right_c0$pop),
@@ -5241,7 +4285,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(right_c0$din),
         .head(right_c0$head)
     );
-    raster_top$fifo$right_c1 right_c1(
+    raster_top$core$fifo$right_c1 right_c1(
         .clock(right_c1$clock),
         .push(right_c1$push),
         .pop(right_c1$pop),
@@ -5249,7 +4293,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(right_c1$din),
         .head(right_c1$head)
     );
-    raster_top$fifo$right_c2 right_c2(
+    raster_top$core$fifo$right_c2 right_c2(
         .clock(right_c2$clock),
         .push(right_c2$push),
         .pop(right_c2$pop),
@@ -5257,7 +4301,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(right_c2$din),
         .head(right_c2$head)
     );
-    raster_top$fifo$ddx_z ddx_z(
+    raster_top$core$fifo$ddx_z ddx_z(
         .clock(ddx_z$clock),
         .push(ddx_z$push),
         .pop(ddx_z$pop),
@@ -5265,7 +4309,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(ddx_z$din),
         .head(ddx_z$head)
     );
-    raster_top$fifo$ddx_c0 ddx_c0(
+    raster_top$core$fifo$ddx_c0 ddx_c0(
         .clock(ddx_c0$clock),
         .push(ddx_c0$push),
         .pop(ddx_c0$pop),
@@ -5273,7 +4317,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(ddx_c0$din),
         .head(ddx_c0$head)
     );
-    raster_top$fifo$ddx_c1 ddx_c1(
+    raster_top$core$fifo$ddx_c1 ddx_c1(
         .clock(ddx_c1$clock),
         .push(ddx_c1$push),
         .pop(ddx_c1$pop),
@@ -5281,7 +4325,7 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         .din(ddx_c1$din),
         .head(ddx_c1$head)
     );
-    raster_top$fifo$ddx_c2 ddx_c2(
+    raster_top$core$fifo$ddx_c2 ddx_c2(
         .clock(ddx_c2$clock),
         .push(ddx_c2$push),
         .pop(ddx_c2$pop),
@@ -5447,10 +4491,10 @@ module raster_top$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,
         end
     end
     
-endmodule // raster_top$fifo
+endmodule // raster_top$core$fifo
 
 
-module raster_top$fifo$count(d,q,clock);
+module raster_top$core$fifo$count(d,q,clock);
     
     // Module arguments
     input wire  [2:0] d;
@@ -5466,10 +4510,10 @@ module raster_top$fifo$count(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$count
+endmodule // raster_top$core$fifo$count
 
 
-module raster_top$fifo$ddx_c0(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$ddx_c0(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5494,22 +4538,22 @@ module raster_top$fifo$ddx_c0(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$ddx_c0$e$0 e$0(
+    raster_top$core$fifo$ddx_c0$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$ddx_c0$e$1 e$1(
+    raster_top$core$fifo$ddx_c0$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$ddx_c0$e$2 e$2(
+    raster_top$core$fifo$ddx_c0$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$ddx_c0$e$3 e$3(
+    raster_top$core$fifo$ddx_c0$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5547,10 +4591,10 @@ module raster_top$fifo$ddx_c0(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$ddx_c0
+endmodule // raster_top$core$fifo$ddx_c0
 
 
-module raster_top$fifo$ddx_c0$e$0(d,q,clock);
+module raster_top$core$fifo$ddx_c0$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5566,10 +4610,10 @@ module raster_top$fifo$ddx_c0$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_c0$e$0
+endmodule // raster_top$core$fifo$ddx_c0$e$0
 
 
-module raster_top$fifo$ddx_c0$e$1(d,q,clock);
+module raster_top$core$fifo$ddx_c0$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5585,10 +4629,10 @@ module raster_top$fifo$ddx_c0$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_c0$e$1
+endmodule // raster_top$core$fifo$ddx_c0$e$1
 
 
-module raster_top$fifo$ddx_c0$e$2(d,q,clock);
+module raster_top$core$fifo$ddx_c0$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5604,10 +4648,10 @@ module raster_top$fifo$ddx_c0$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_c0$e$2
+endmodule // raster_top$core$fifo$ddx_c0$e$2
 
 
-module raster_top$fifo$ddx_c0$e$3(d,q,clock);
+module raster_top$core$fifo$ddx_c0$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5623,10 +4667,10 @@ module raster_top$fifo$ddx_c0$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_c0$e$3
+endmodule // raster_top$core$fifo$ddx_c0$e$3
 
 
-module raster_top$fifo$ddx_c1(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$ddx_c1(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5651,22 +4695,22 @@ module raster_top$fifo$ddx_c1(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$ddx_c1$e$0 e$0(
+    raster_top$core$fifo$ddx_c1$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$ddx_c1$e$1 e$1(
+    raster_top$core$fifo$ddx_c1$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$ddx_c1$e$2 e$2(
+    raster_top$core$fifo$ddx_c1$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$ddx_c1$e$3 e$3(
+    raster_top$core$fifo$ddx_c1$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5704,10 +4748,10 @@ module raster_top$fifo$ddx_c1(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$ddx_c1
+endmodule // raster_top$core$fifo$ddx_c1
 
 
-module raster_top$fifo$ddx_c1$e$0(d,q,clock);
+module raster_top$core$fifo$ddx_c1$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5723,10 +4767,10 @@ module raster_top$fifo$ddx_c1$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_c1$e$0
+endmodule // raster_top$core$fifo$ddx_c1$e$0
 
 
-module raster_top$fifo$ddx_c1$e$1(d,q,clock);
+module raster_top$core$fifo$ddx_c1$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5742,10 +4786,10 @@ module raster_top$fifo$ddx_c1$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_c1$e$1
+endmodule // raster_top$core$fifo$ddx_c1$e$1
 
 
-module raster_top$fifo$ddx_c1$e$2(d,q,clock);
+module raster_top$core$fifo$ddx_c1$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5761,10 +4805,10 @@ module raster_top$fifo$ddx_c1$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_c1$e$2
+endmodule // raster_top$core$fifo$ddx_c1$e$2
 
 
-module raster_top$fifo$ddx_c1$e$3(d,q,clock);
+module raster_top$core$fifo$ddx_c1$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5780,10 +4824,10 @@ module raster_top$fifo$ddx_c1$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_c1$e$3
+endmodule // raster_top$core$fifo$ddx_c1$e$3
 
 
-module raster_top$fifo$ddx_c2(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$ddx_c2(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5808,22 +4852,22 @@ module raster_top$fifo$ddx_c2(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$ddx_c2$e$0 e$0(
+    raster_top$core$fifo$ddx_c2$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$ddx_c2$e$1 e$1(
+    raster_top$core$fifo$ddx_c2$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$ddx_c2$e$2 e$2(
+    raster_top$core$fifo$ddx_c2$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$ddx_c2$e$3 e$3(
+    raster_top$core$fifo$ddx_c2$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5861,10 +4905,10 @@ module raster_top$fifo$ddx_c2(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$ddx_c2
+endmodule // raster_top$core$fifo$ddx_c2
 
 
-module raster_top$fifo$ddx_c2$e$0(d,q,clock);
+module raster_top$core$fifo$ddx_c2$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5880,10 +4924,10 @@ module raster_top$fifo$ddx_c2$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_c2$e$0
+endmodule // raster_top$core$fifo$ddx_c2$e$0
 
 
-module raster_top$fifo$ddx_c2$e$1(d,q,clock);
+module raster_top$core$fifo$ddx_c2$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5899,10 +4943,10 @@ module raster_top$fifo$ddx_c2$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_c2$e$1
+endmodule // raster_top$core$fifo$ddx_c2$e$1
 
 
-module raster_top$fifo$ddx_c2$e$2(d,q,clock);
+module raster_top$core$fifo$ddx_c2$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5918,10 +4962,10 @@ module raster_top$fifo$ddx_c2$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_c2$e$2
+endmodule // raster_top$core$fifo$ddx_c2$e$2
 
 
-module raster_top$fifo$ddx_c2$e$3(d,q,clock);
+module raster_top$core$fifo$ddx_c2$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5937,10 +4981,10 @@ module raster_top$fifo$ddx_c2$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_c2$e$3
+endmodule // raster_top$core$fifo$ddx_c2$e$3
 
 
-module raster_top$fifo$ddx_z(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$ddx_z(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5965,22 +5009,22 @@ module raster_top$fifo$ddx_z(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$ddx_z$e$0 e$0(
+    raster_top$core$fifo$ddx_z$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$ddx_z$e$1 e$1(
+    raster_top$core$fifo$ddx_z$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$ddx_z$e$2 e$2(
+    raster_top$core$fifo$ddx_z$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$ddx_z$e$3 e$3(
+    raster_top$core$fifo$ddx_z$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6018,10 +5062,10 @@ module raster_top$fifo$ddx_z(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$ddx_z
+endmodule // raster_top$core$fifo$ddx_z
 
 
-module raster_top$fifo$ddx_z$e$0(d,q,clock);
+module raster_top$core$fifo$ddx_z$e$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -6037,10 +5081,10 @@ module raster_top$fifo$ddx_z$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_z$e$0
+endmodule // raster_top$core$fifo$ddx_z$e$0
 
 
-module raster_top$fifo$ddx_z$e$1(d,q,clock);
+module raster_top$core$fifo$ddx_z$e$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -6056,10 +5100,10 @@ module raster_top$fifo$ddx_z$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_z$e$1
+endmodule // raster_top$core$fifo$ddx_z$e$1
 
 
-module raster_top$fifo$ddx_z$e$2(d,q,clock);
+module raster_top$core$fifo$ddx_z$e$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -6075,10 +5119,10 @@ module raster_top$fifo$ddx_z$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_z$e$2
+endmodule // raster_top$core$fifo$ddx_z$e$2
 
 
-module raster_top$fifo$ddx_z$e$3(d,q,clock);
+module raster_top$core$fifo$ddx_z$e$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -6094,10 +5138,10 @@ module raster_top$fifo$ddx_z$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$ddx_z$e$3
+endmodule // raster_top$core$fifo$ddx_z$e$3
 
 
-module raster_top$fifo$left_c0(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$left_c0(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6122,22 +5166,22 @@ module raster_top$fifo$left_c0(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$left_c0$e$0 e$0(
+    raster_top$core$fifo$left_c0$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$left_c0$e$1 e$1(
+    raster_top$core$fifo$left_c0$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$left_c0$e$2 e$2(
+    raster_top$core$fifo$left_c0$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$left_c0$e$3 e$3(
+    raster_top$core$fifo$left_c0$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6175,10 +5219,10 @@ module raster_top$fifo$left_c0(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$left_c0
+endmodule // raster_top$core$fifo$left_c0
 
 
-module raster_top$fifo$left_c0$e$0(d,q,clock);
+module raster_top$core$fifo$left_c0$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6194,10 +5238,10 @@ module raster_top$fifo$left_c0$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_c0$e$0
+endmodule // raster_top$core$fifo$left_c0$e$0
 
 
-module raster_top$fifo$left_c0$e$1(d,q,clock);
+module raster_top$core$fifo$left_c0$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6213,10 +5257,10 @@ module raster_top$fifo$left_c0$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_c0$e$1
+endmodule // raster_top$core$fifo$left_c0$e$1
 
 
-module raster_top$fifo$left_c0$e$2(d,q,clock);
+module raster_top$core$fifo$left_c0$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6232,10 +5276,10 @@ module raster_top$fifo$left_c0$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_c0$e$2
+endmodule // raster_top$core$fifo$left_c0$e$2
 
 
-module raster_top$fifo$left_c0$e$3(d,q,clock);
+module raster_top$core$fifo$left_c0$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6251,10 +5295,10 @@ module raster_top$fifo$left_c0$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_c0$e$3
+endmodule // raster_top$core$fifo$left_c0$e$3
 
 
-module raster_top$fifo$left_c1(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$left_c1(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6279,22 +5323,22 @@ module raster_top$fifo$left_c1(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$left_c1$e$0 e$0(
+    raster_top$core$fifo$left_c1$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$left_c1$e$1 e$1(
+    raster_top$core$fifo$left_c1$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$left_c1$e$2 e$2(
+    raster_top$core$fifo$left_c1$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$left_c1$e$3 e$3(
+    raster_top$core$fifo$left_c1$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6332,10 +5376,10 @@ module raster_top$fifo$left_c1(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$left_c1
+endmodule // raster_top$core$fifo$left_c1
 
 
-module raster_top$fifo$left_c1$e$0(d,q,clock);
+module raster_top$core$fifo$left_c1$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6351,10 +5395,10 @@ module raster_top$fifo$left_c1$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_c1$e$0
+endmodule // raster_top$core$fifo$left_c1$e$0
 
 
-module raster_top$fifo$left_c1$e$1(d,q,clock);
+module raster_top$core$fifo$left_c1$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6370,10 +5414,10 @@ module raster_top$fifo$left_c1$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_c1$e$1
+endmodule // raster_top$core$fifo$left_c1$e$1
 
 
-module raster_top$fifo$left_c1$e$2(d,q,clock);
+module raster_top$core$fifo$left_c1$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6389,10 +5433,10 @@ module raster_top$fifo$left_c1$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_c1$e$2
+endmodule // raster_top$core$fifo$left_c1$e$2
 
 
-module raster_top$fifo$left_c1$e$3(d,q,clock);
+module raster_top$core$fifo$left_c1$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6408,10 +5452,10 @@ module raster_top$fifo$left_c1$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_c1$e$3
+endmodule // raster_top$core$fifo$left_c1$e$3
 
 
-module raster_top$fifo$left_c2(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$left_c2(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6436,22 +5480,22 @@ module raster_top$fifo$left_c2(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$left_c2$e$0 e$0(
+    raster_top$core$fifo$left_c2$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$left_c2$e$1 e$1(
+    raster_top$core$fifo$left_c2$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$left_c2$e$2 e$2(
+    raster_top$core$fifo$left_c2$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$left_c2$e$3 e$3(
+    raster_top$core$fifo$left_c2$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6489,10 +5533,10 @@ module raster_top$fifo$left_c2(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$left_c2
+endmodule // raster_top$core$fifo$left_c2
 
 
-module raster_top$fifo$left_c2$e$0(d,q,clock);
+module raster_top$core$fifo$left_c2$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6508,10 +5552,10 @@ module raster_top$fifo$left_c2$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_c2$e$0
+endmodule // raster_top$core$fifo$left_c2$e$0
 
 
-module raster_top$fifo$left_c2$e$1(d,q,clock);
+module raster_top$core$fifo$left_c2$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6527,10 +5571,10 @@ module raster_top$fifo$left_c2$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_c2$e$1
+endmodule // raster_top$core$fifo$left_c2$e$1
 
 
-module raster_top$fifo$left_c2$e$2(d,q,clock);
+module raster_top$core$fifo$left_c2$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6546,10 +5590,10 @@ module raster_top$fifo$left_c2$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_c2$e$2
+endmodule // raster_top$core$fifo$left_c2$e$2
 
 
-module raster_top$fifo$left_c2$e$3(d,q,clock);
+module raster_top$core$fifo$left_c2$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6565,10 +5609,10 @@ module raster_top$fifo$left_c2$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_c2$e$3
+endmodule // raster_top$core$fifo$left_c2$e$3
 
 
-module raster_top$fifo$left_z(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$left_z(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6593,22 +5637,22 @@ module raster_top$fifo$left_z(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$left_z$e$0 e$0(
+    raster_top$core$fifo$left_z$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$left_z$e$1 e$1(
+    raster_top$core$fifo$left_z$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$left_z$e$2 e$2(
+    raster_top$core$fifo$left_z$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$left_z$e$3 e$3(
+    raster_top$core$fifo$left_z$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6646,10 +5690,10 @@ module raster_top$fifo$left_z(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$left_z
+endmodule // raster_top$core$fifo$left_z
 
 
-module raster_top$fifo$left_z$e$0(d,q,clock);
+module raster_top$core$fifo$left_z$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -6665,10 +5709,10 @@ module raster_top$fifo$left_z$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_z$e$0
+endmodule // raster_top$core$fifo$left_z$e$0
 
 
-module raster_top$fifo$left_z$e$1(d,q,clock);
+module raster_top$core$fifo$left_z$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -6684,10 +5728,10 @@ module raster_top$fifo$left_z$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_z$e$1
+endmodule // raster_top$core$fifo$left_z$e$1
 
 
-module raster_top$fifo$left_z$e$2(d,q,clock);
+module raster_top$core$fifo$left_z$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -6703,10 +5747,10 @@ module raster_top$fifo$left_z$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_z$e$2
+endmodule // raster_top$core$fifo$left_z$e$2
 
 
-module raster_top$fifo$left_z$e$3(d,q,clock);
+module raster_top$core$fifo$left_z$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -6722,10 +5766,10 @@ module raster_top$fifo$left_z$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$left_z$e$3
+endmodule // raster_top$core$fifo$left_z$e$3
 
 
-module raster_top$fifo$level(count,full,empty);
+module raster_top$core$fifo$level(count,full,empty);
     
     // Module arguments
     input wire  [2:0] count;
@@ -6741,10 +5785,10 @@ module raster_top$fifo$level(count,full,empty);
         empty = count == 32'h0;
     end
     
-endmodule // raster_top$fifo$level
+endmodule // raster_top$core$fifo$level
 
 
-module raster_top$fifo$right_c0(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$right_c0(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6769,22 +5813,22 @@ module raster_top$fifo$right_c0(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$right_c0$e$0 e$0(
+    raster_top$core$fifo$right_c0$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$right_c0$e$1 e$1(
+    raster_top$core$fifo$right_c0$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$right_c0$e$2 e$2(
+    raster_top$core$fifo$right_c0$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$right_c0$e$3 e$3(
+    raster_top$core$fifo$right_c0$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6822,10 +5866,10 @@ module raster_top$fifo$right_c0(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$right_c0
+endmodule // raster_top$core$fifo$right_c0
 
 
-module raster_top$fifo$right_c0$e$0(d,q,clock);
+module raster_top$core$fifo$right_c0$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6841,10 +5885,10 @@ module raster_top$fifo$right_c0$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_c0$e$0
+endmodule // raster_top$core$fifo$right_c0$e$0
 
 
-module raster_top$fifo$right_c0$e$1(d,q,clock);
+module raster_top$core$fifo$right_c0$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6860,10 +5904,10 @@ module raster_top$fifo$right_c0$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_c0$e$1
+endmodule // raster_top$core$fifo$right_c0$e$1
 
 
-module raster_top$fifo$right_c0$e$2(d,q,clock);
+module raster_top$core$fifo$right_c0$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6879,10 +5923,10 @@ module raster_top$fifo$right_c0$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_c0$e$2
+endmodule // raster_top$core$fifo$right_c0$e$2
 
 
-module raster_top$fifo$right_c0$e$3(d,q,clock);
+module raster_top$core$fifo$right_c0$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6898,10 +5942,10 @@ module raster_top$fifo$right_c0$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_c0$e$3
+endmodule // raster_top$core$fifo$right_c0$e$3
 
 
-module raster_top$fifo$right_c1(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$right_c1(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6926,22 +5970,22 @@ module raster_top$fifo$right_c1(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$right_c1$e$0 e$0(
+    raster_top$core$fifo$right_c1$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$right_c1$e$1 e$1(
+    raster_top$core$fifo$right_c1$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$right_c1$e$2 e$2(
+    raster_top$core$fifo$right_c1$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$right_c1$e$3 e$3(
+    raster_top$core$fifo$right_c1$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6979,10 +6023,10 @@ module raster_top$fifo$right_c1(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$right_c1
+endmodule // raster_top$core$fifo$right_c1
 
 
-module raster_top$fifo$right_c1$e$0(d,q,clock);
+module raster_top$core$fifo$right_c1$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6998,10 +6042,10 @@ module raster_top$fifo$right_c1$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_c1$e$0
+endmodule // raster_top$core$fifo$right_c1$e$0
 
 
-module raster_top$fifo$right_c1$e$1(d,q,clock);
+module raster_top$core$fifo$right_c1$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7017,10 +6061,10 @@ module raster_top$fifo$right_c1$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_c1$e$1
+endmodule // raster_top$core$fifo$right_c1$e$1
 
 
-module raster_top$fifo$right_c1$e$2(d,q,clock);
+module raster_top$core$fifo$right_c1$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7036,10 +6080,10 @@ module raster_top$fifo$right_c1$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_c1$e$2
+endmodule // raster_top$core$fifo$right_c1$e$2
 
 
-module raster_top$fifo$right_c1$e$3(d,q,clock);
+module raster_top$core$fifo$right_c1$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7055,10 +6099,10 @@ module raster_top$fifo$right_c1$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_c1$e$3
+endmodule // raster_top$core$fifo$right_c1$e$3
 
 
-module raster_top$fifo$right_c2(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$right_c2(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -7083,22 +6127,22 @@ module raster_top$fifo$right_c2(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$right_c2$e$0 e$0(
+    raster_top$core$fifo$right_c2$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$right_c2$e$1 e$1(
+    raster_top$core$fifo$right_c2$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$right_c2$e$2 e$2(
+    raster_top$core$fifo$right_c2$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$right_c2$e$3 e$3(
+    raster_top$core$fifo$right_c2$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -7136,10 +6180,10 @@ module raster_top$fifo$right_c2(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$right_c2
+endmodule // raster_top$core$fifo$right_c2
 
 
-module raster_top$fifo$right_c2$e$0(d,q,clock);
+module raster_top$core$fifo$right_c2$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7155,10 +6199,10 @@ module raster_top$fifo$right_c2$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_c2$e$0
+endmodule // raster_top$core$fifo$right_c2$e$0
 
 
-module raster_top$fifo$right_c2$e$1(d,q,clock);
+module raster_top$core$fifo$right_c2$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7174,10 +6218,10 @@ module raster_top$fifo$right_c2$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_c2$e$1
+endmodule // raster_top$core$fifo$right_c2$e$1
 
 
-module raster_top$fifo$right_c2$e$2(d,q,clock);
+module raster_top$core$fifo$right_c2$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7193,10 +6237,10 @@ module raster_top$fifo$right_c2$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_c2$e$2
+endmodule // raster_top$core$fifo$right_c2$e$2
 
 
-module raster_top$fifo$right_c2$e$3(d,q,clock);
+module raster_top$core$fifo$right_c2$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7212,10 +6256,10 @@ module raster_top$fifo$right_c2$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_c2$e$3
+endmodule // raster_top$core$fifo$right_c2$e$3
 
 
-module raster_top$fifo$right_z(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$right_z(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -7240,22 +6284,22 @@ module raster_top$fifo$right_z(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$right_z$e$0 e$0(
+    raster_top$core$fifo$right_z$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$right_z$e$1 e$1(
+    raster_top$core$fifo$right_z$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$right_z$e$2 e$2(
+    raster_top$core$fifo$right_z$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$right_z$e$3 e$3(
+    raster_top$core$fifo$right_z$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -7293,10 +6337,10 @@ module raster_top$fifo$right_z(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$right_z
+endmodule // raster_top$core$fifo$right_z
 
 
-module raster_top$fifo$right_z$e$0(d,q,clock);
+module raster_top$core$fifo$right_z$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -7312,10 +6356,10 @@ module raster_top$fifo$right_z$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_z$e$0
+endmodule // raster_top$core$fifo$right_z$e$0
 
 
-module raster_top$fifo$right_z$e$1(d,q,clock);
+module raster_top$core$fifo$right_z$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -7331,10 +6375,10 @@ module raster_top$fifo$right_z$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_z$e$1
+endmodule // raster_top$core$fifo$right_z$e$1
 
 
-module raster_top$fifo$right_z$e$2(d,q,clock);
+module raster_top$core$fifo$right_z$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -7350,10 +6394,10 @@ module raster_top$fifo$right_z$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_z$e$2
+endmodule // raster_top$core$fifo$right_z$e$2
 
 
-module raster_top$fifo$right_z$e$3(d,q,clock);
+module raster_top$core$fifo$right_z$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -7369,10 +6413,10 @@ module raster_top$fifo$right_z$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$right_z$e$3
+endmodule // raster_top$core$fifo$right_z$e$3
 
 
-module raster_top$fifo$xl(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$xl(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -7397,22 +6441,22 @@ module raster_top$fifo$xl(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$xl$e$0 e$0(
+    raster_top$core$fifo$xl$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$xl$e$1 e$1(
+    raster_top$core$fifo$xl$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$xl$e$2 e$2(
+    raster_top$core$fifo$xl$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$xl$e$3 e$3(
+    raster_top$core$fifo$xl$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -7450,10 +6494,10 @@ module raster_top$fifo$xl(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$xl
+endmodule // raster_top$core$fifo$xl
 
 
-module raster_top$fifo$xl$e$0(d,q,clock);
+module raster_top$core$fifo$xl$e$0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7469,10 +6513,10 @@ module raster_top$fifo$xl$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$xl$e$0
+endmodule // raster_top$core$fifo$xl$e$0
 
 
-module raster_top$fifo$xl$e$1(d,q,clock);
+module raster_top$core$fifo$xl$e$1(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7488,10 +6532,10 @@ module raster_top$fifo$xl$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$xl$e$1
+endmodule // raster_top$core$fifo$xl$e$1
 
 
-module raster_top$fifo$xl$e$2(d,q,clock);
+module raster_top$core$fifo$xl$e$2(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7507,10 +6551,10 @@ module raster_top$fifo$xl$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$xl$e$2
+endmodule // raster_top$core$fifo$xl$e$2
 
 
-module raster_top$fifo$xl$e$3(d,q,clock);
+module raster_top$core$fifo$xl$e$3(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7526,10 +6570,10 @@ module raster_top$fifo$xl$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$xl$e$3
+endmodule // raster_top$core$fifo$xl$e$3
 
 
-module raster_top$fifo$xr(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$xr(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -7554,22 +6598,22 @@ module raster_top$fifo$xr(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$xr$e$0 e$0(
+    raster_top$core$fifo$xr$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$xr$e$1 e$1(
+    raster_top$core$fifo$xr$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$xr$e$2 e$2(
+    raster_top$core$fifo$xr$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$xr$e$3 e$3(
+    raster_top$core$fifo$xr$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -7607,10 +6651,10 @@ module raster_top$fifo$xr(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$xr
+endmodule // raster_top$core$fifo$xr
 
 
-module raster_top$fifo$xr$e$0(d,q,clock);
+module raster_top$core$fifo$xr$e$0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7626,10 +6670,10 @@ module raster_top$fifo$xr$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$xr$e$0
+endmodule // raster_top$core$fifo$xr$e$0
 
 
-module raster_top$fifo$xr$e$1(d,q,clock);
+module raster_top$core$fifo$xr$e$1(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7645,10 +6689,10 @@ module raster_top$fifo$xr$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$xr$e$1
+endmodule // raster_top$core$fifo$xr$e$1
 
 
-module raster_top$fifo$xr$e$2(d,q,clock);
+module raster_top$core$fifo$xr$e$2(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7664,10 +6708,10 @@ module raster_top$fifo$xr$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$xr$e$2
+endmodule // raster_top$core$fifo$xr$e$2
 
 
-module raster_top$fifo$xr$e$3(d,q,clock);
+module raster_top$core$fifo$xr$e$3(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7683,10 +6727,10 @@ module raster_top$fifo$xr$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$xr$e$3
+endmodule // raster_top$core$fifo$xr$e$3
 
 
-module raster_top$fifo$y(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$y(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -7711,22 +6755,22 @@ module raster_top$fifo$y(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$fifo$y$e$0 e$0(
+    raster_top$core$fifo$y$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$fifo$y$e$1 e$1(
+    raster_top$core$fifo$y$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$fifo$y$e$2 e$2(
+    raster_top$core$fifo$y$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$fifo$y$e$3 e$3(
+    raster_top$core$fifo$y$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -7764,10 +6808,10 @@ module raster_top$fifo$y(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$fifo$y
+endmodule // raster_top$core$fifo$y
 
 
-module raster_top$fifo$y$e$0(d,q,clock);
+module raster_top$core$fifo$y$e$0(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -7783,10 +6827,10 @@ module raster_top$fifo$y$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$y$e$0
+endmodule // raster_top$core$fifo$y$e$0
 
 
-module raster_top$fifo$y$e$1(d,q,clock);
+module raster_top$core$fifo$y$e$1(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -7802,10 +6846,10 @@ module raster_top$fifo$y$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$y$e$1
+endmodule // raster_top$core$fifo$y$e$1
 
 
-module raster_top$fifo$y$e$2(d,q,clock);
+module raster_top$core$fifo$y$e$2(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -7821,10 +6865,10 @@ module raster_top$fifo$y$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$y$e$2
+endmodule // raster_top$core$fifo$y$e$2
 
 
-module raster_top$fifo$y$e$3(d,q,clock);
+module raster_top$core$fifo$y$e$3(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -7840,10 +6884,10 @@ module raster_top$fifo$y$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$fifo$y$e$3
+endmodule // raster_top$core$fifo$y$e$3
 
 
-module raster_top$in_setup(d,q,clock);
+module raster_top$core$in_setup(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -7859,528 +6903,10 @@ module raster_top$in_setup(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$in_setup
+endmodule // raster_top$core$in_setup
 
 
-module raster_top$last_in(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$last_in
-
-
-module raster_top$pixel_out(clock,inp_valid,inp_ready,inp_x,inp_y,inp_z,inp_rgb0,inp_rgb1,inp_rgb2,mem_ready,rd_en,rd_addr,rd_z,wr_en,wr_addr,wr_z,wr_rgb,idle);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  inp_valid;
-    output reg  inp_ready;
-    input wire  [9:0] inp_x;
-    input wire  [9:0] inp_y;
-    input wire  [15:0] inp_z;
-    input wire  [7:0] inp_rgb0;
-    input wire  [7:0] inp_rgb1;
-    input wire  [7:0] inp_rgb2;
-    input wire  mem_ready;
-    output reg  rd_en;
-    output reg  [19:0] rd_addr;
-    input wire  [15:0] rd_z;
-    output reg  wr_en;
-    output reg  [19:0] wr_addr;
-    output reg  [15:0] wr_z;
-    output reg  [23:0] wr_rgb;
-    output reg  idle;
-    
-    // Stub signals
-    reg  s1_valid$d;
-    wire  s1_valid$q;
-    reg  s1_valid$clock;
-    reg  [19:0] s1_addr$d;
-    wire  [19:0] s1_addr$q;
-    reg  s1_addr$clock;
-    reg  [15:0] s1_z$d;
-    wire  [15:0] s1_z$q;
-    reg  s1_z$clock;
-    reg  [23:0] s1_rgb$d;
-    wire  [23:0] s1_rgb$q;
-    reg  s1_rgb$clock;
-    reg  s2_valid$d;
-    wire  s2_valid$q;
-    reg  s2_valid$clock;
-    reg  s2_write$d;
-    wire  s2_write$q;
-    reg  s2_write$clock;
-    reg  [19:0] s2_addr$d;
-    wire  [19:0] s2_addr$q;
-    reg  s2_addr$clock;
-    reg  [15:0] s2_z$d;
-    wire  [15:0] s2_z$q;
-    reg  s2_z$clock;
-    reg  [23:0] s2_rgb$d;
-    wire  [23:0] s2_rgb$q;
-    reg  s2_rgb$clock;
-    reg  s3_valid$d;
-    wire  s3_valid$q;
-    reg  s3_valid$clock;
-    reg  [19:0] s3_addr$d;
-    wire  [19:0] s3_addr$q;
-    reg  s3_addr$clock;
-    reg  [15:0] s3_z$d;
-    wire  [15:0] s3_z$q;
-    reg  s3_z$clock;
-    reg  [9:0] addr$hi;
-    reg  [9:0] addr$lo;
-    wire  [19:0] addr$out;
-    reg  [7:0] rg$hi;
-    reg  [7:0] rg$lo;
-    wire  [15:0] rg$out;
-    reg  [15:0] rgb$hi;
-    reg  [7:0] rgb$lo;
-    wire  [23:0] rgb$out;
-    
-    // Local signals
-    reg  [15:0] old_z;
-    reg  pass;
-    
-    // Sub module instances
-    raster_top$pixel_out$s1_valid s1_valid(
-        .d(s1_valid$d),
-        .q(s1_valid$q),
-        .clock(s1_valid$clock)
-    );
-    raster_top$pixel_out$s1_addr s1_addr(
-        .d(s1_addr$d),
-        .q(s1_addr$q),
-        .clock(s1_addr$clock)
-    );
-    raster_top$pixel_out$s1_z s1_z(
-        .d(s1_z$d),
-        .q(s1_z$q),
-        .clock(s1_z$clock)
-    );
-    raster_top$pixel_out$s1_rgb s1_rgb(
-        .d(s1_rgb$d),
-        .q(s1_rgb$q),
-        .clock(s1_rgb$clock)
-    );
-    raster_top$pixel_out$s2_valid s2_valid(
-        .d(s2_valid$d),
-        .q(s2_valid$q),
-        .clock(s2_valid$clock)
-    );
-    raster_top$pixel_out$s2_write s2_write(
-        .d(s2_write$d),
-        .q(s2_write$q),
-        .clock(s2_write$clock)
-    );
-    raster_top$pixel_out$s2_addr s2_addr(
-        .d(s2_addr$d),
-        .q(s2_addr$q),
-        .clock(s2_addr$clock)
-    );
-    raster_top$pixel_out$s2_z s2_z(
-        .d(s2_z$d),
-        .q(s2_z$q),
-        .clock(s2_z$clock)
-    );
-    raster_top$pixel_out$s2_rgb s2_rgb(
-        .d(s2_rgb$d),
-        .q(s2_rgb$q),
-        .clock(s2_rgb$clock)
-    );
-    raster_top$pixel_out$s3_valid s3_valid(
-        .d(s3_valid$d),
-        .q(s3_valid$q),
-        .clock(s3_valid$clock)
-    );
-    raster_top$pixel_out$s3_addr s3_addr(
-        .d(s3_addr$d),
-        .q(s3_addr$q),
-        .clock(s3_addr$clock)
-    );
-    raster_top$pixel_out$s3_z s3_z(
-        .d(s3_z$d),
-        .q(s3_z$q),
-        .clock(s3_z$clock)
-    );
-    raster_top$pixel_out$addr addr(
-        .hi(addr$hi),
-        .lo(addr$lo),
-        .out(addr$out)
-    );
-    raster_top$pixel_out$rg rg(
-        .hi(rg$hi),
-        .lo(rg$lo),
-        .out(rg$out)
-    );
-    raster_top$pixel_out$rgb rgb(
-        .hi(rgb$hi),
-        .lo(rgb$lo),
-        .out(rgb$out)
-    );
-    
-    // Update code
-    always @(*) begin
-        s1_valid$clock = clock;
-        s1_addr$clock = clock;
-        s1_z$clock = clock;
-        s1_rgb$clock = clock;
-        s2_valid$clock = clock;
-        s2_write$clock = clock;
-        s2_addr$clock = clock;
-        s2_z$clock = clock;
-        s2_rgb$clock = clock;
-        s3_valid$clock = clock;
-        s3_addr$clock = clock;
-        s3_z$clock = clock;
-        s1_valid$d = s1_valid$q;
-        s1_addr$d = s1_addr$q;
-        s1_z$d = s1_z$q;
-        s1_rgb$d = s1_rgb$q;
-        s2_valid$d = s2_valid$q;
-        s2_write$d = s2_write$q;
-        s2_addr$d = s2_addr$q;
-        s2_z$d = s2_z$q;
-        s2_rgb$d = s2_rgb$q;
-        s3_valid$d = s3_valid$q;
-        s3_addr$d = s3_addr$q;
-        s3_z$d = s3_z$q;
-        addr$hi = inp_y;
-        addr$lo = inp_x;
-        rg$hi = inp_rgb0;
-        rg$lo = inp_rgb1;
-        rgb$hi = rg$out;
-        rgb$lo = inp_rgb2;
-        inp_ready = mem_ready;
-        rd_en = inp_valid;
-        rd_addr = addr$out;
-        old_z = rd_z;
-        if (s3_valid$q & (s3_addr$q == s1_addr$q)) begin
-            old_z = s3_z$q;
-        end
-        if (s2_write$q & (s2_addr$q == s1_addr$q)) begin
-            old_z = s2_z$q;
-        end
-        pass = s1_valid$q & (s1_z$q < old_z);
-        wr_en = s2_write$q;
-        wr_addr = s2_addr$q;
-        wr_z = s2_z$q;
-        wr_rgb = s2_rgb$q;
-        idle = ~s1_valid$q & ~s2_valid$q;
-        if (mem_ready) begin
-            s1_valid$d = inp_valid;
-            s1_addr$d = addr$out;
-            s1_z$d = inp_z;
-            s1_rgb$d = rgb$out;
-            s2_valid$d = s1_valid$q;
-            s2_write$d = pass;
-            s2_addr$d = s1_addr$q;
-            s2_z$d = s1_z$q;
-            s2_rgb$d = s1_rgb$q;
-            s3_valid$d = s2_write$q;
-            s3_addr$d = s2_addr$q;
-            s3_z$d = s2_z$q;
-        end
-    end
-    
-endmodule // raster_top$pixel_out
-
-
-module raster_top$pixel_out$addr(hi,lo,out);
-    
-    // Module arguments
-    input wire  [9:0] hi;
-    input wire  [9:0] lo;
-    output reg  [19:0] out;
-    
-    // Constant declarations
-    localparam  shift = 8'ha;
-    
-    // Update code
-    always @(*) begin
-        out = (((hi) & 20'hfffff) << shift) | ((lo) & 20'hfffff);
-    end
-    
-endmodule // raster_top$pixel_out$addr
-
-
-module raster_top$pixel_out$rg(hi,lo,out);
-    
-    // Module arguments
-    input wire  [7:0] hi;
-    input wire  [7:0] lo;
-    output reg  [15:0] out;
-    
-    // Constant declarations
-    localparam  shift = 8'h8;
-    
-    // Update code
-    always @(*) begin
-        out = (((hi) & 16'hffff) << shift) | ((lo) & 16'hffff);
-    end
-    
-endmodule // raster_top$pixel_out$rg
-
-
-module raster_top$pixel_out$rgb(hi,lo,out);
-    
-    // Module arguments
-    input wire  [15:0] hi;
-    input wire  [7:0] lo;
-    output reg  [23:0] out;
-    
-    // Constant declarations
-    localparam  shift = 8'h8;
-    
-    // Update code
-    always @(*) begin
-        out = (((hi) & 24'hffffff) << shift) | ((lo) & 24'hffffff);
-    end
-    
-endmodule // raster_top$pixel_out$rgb
-
-
-module raster_top$pixel_out$s1_addr(d,q,clock);
-    
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$pixel_out$s1_addr
-
-
-module raster_top$pixel_out$s1_rgb(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$pixel_out$s1_rgb
-
-
-module raster_top$pixel_out$s1_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$pixel_out$s1_valid
-
-
-module raster_top$pixel_out$s1_z(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$pixel_out$s1_z
-
-
-module raster_top$pixel_out$s2_addr(d,q,clock);
-    
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$pixel_out$s2_addr
-
-
-module raster_top$pixel_out$s2_rgb(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$pixel_out$s2_rgb
-
-
-module raster_top$pixel_out$s2_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$pixel_out$s2_valid
-
-
-module raster_top$pixel_out$s2_write(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$pixel_out$s2_write
-
-
-module raster_top$pixel_out$s2_z(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$pixel_out$s2_z
-
-
-module raster_top$pixel_out$s3_addr(d,q,clock);
-    
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$pixel_out$s3_addr
-
-
-module raster_top$pixel_out$s3_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$pixel_out$s3_valid
-
-
-module raster_top$pixel_out$s3_z(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$pixel_out$s3_z
-
-
-module raster_top$span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_x,out_y,out_z,out_rgb0,out_rgb1,out_rgb2,idle);
+module raster_top$core$span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_x,out_y,out_z,out_rgb0,out_rgb1,out_rgb2,idle);
     
     // Module arguments
     input wire  clock;
@@ -8496,121 +7022,121 @@ module raster_top$span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_l
     reg  accept;
     
     // Sub module instances
-    raster_top$span$busy busy(
+    raster_top$core$span$busy busy(
         .d(busy$d),
         .q(busy$q),
         .clock(busy$clock)
     );
-    raster_top$span$drop drop(
+    raster_top$core$span$drop drop(
         .d(drop$d),
         .q(drop$q),
         .clock(drop$clock)
     );
-    raster_top$span$left left(
+    raster_top$core$span$left left(
         .d(left$d),
         .q(left$q),
         .clock(left$clock)
     );
-    raster_top$span$x x(
+    raster_top$core$span$x x(
         .d(x$d),
         .q(x$q),
         .clock(x$clock)
     );
-    raster_top$span$last last(
+    raster_top$core$span$last last(
         .d(last$d),
         .q(last$q),
         .clock(last$clock)
     );
-    raster_top$span$y y(
+    raster_top$core$span$y y(
         .d(y$d),
         .q(y$q),
         .clock(y$clock)
     );
-    raster_top$span$a_z a_z(
+    raster_top$core$span$a_z a_z(
         .d(a_z$d),
         .q(a_z$q),
         .clock(a_z$clock)
     );
-    raster_top$span$a_c0 a_c0(
+    raster_top$core$span$a_c0 a_c0(
         .d(a_c0$d),
         .q(a_c0$q),
         .clock(a_c0$clock)
     );
-    raster_top$span$a_c1 a_c1(
+    raster_top$core$span$a_c1 a_c1(
         .d(a_c1$d),
         .q(a_c1$q),
         .clock(a_c1$clock)
     );
-    raster_top$span$a_c2 a_c2(
+    raster_top$core$span$a_c2 a_c2(
         .d(a_c2$d),
         .q(a_c2$q),
         .clock(a_c2$clock)
     );
-    raster_top$span$d_z d_z(
+    raster_top$core$span$d_z d_z(
         .d(d_z$d),
         .q(d_z$q),
         .clock(d_z$clock)
     );
-    raster_top$span$d_c0 d_c0(
+    raster_top$core$span$d_c0 d_c0(
         .d(d_c0$d),
         .q(d_c0$q),
         .clock(d_c0$clock)
     );
-    raster_top$span$d_c1 d_c1(
+    raster_top$core$span$d_c1 d_c1(
         .d(d_c1$d),
         .q(d_c1$q),
         .clock(d_c1$clock)
     );
-    raster_top$span$d_c2 d_c2(
+    raster_top$core$span$d_c2 d_c2(
         .d(d_c2$d),
         .q(d_c2$q),
         .clock(d_c2$clock)
     );
-    raster_top$span$zl zl(
+    raster_top$core$span$zl zl(
         .x(zl$x),
         .neg(zl$neg),
         .over(zl$over),
         .low(zl$low)
     );
-    raster_top$span$zr zr(
+    raster_top$core$span$zr zr(
         .x(zr$x),
         .neg(zr$neg),
         .over(zr$over),
         .low(zr$low)
     );
-    raster_top$span$xl_neg xl_neg(
+    raster_top$core$span$xl_neg xl_neg(
         .x(xl_neg$x),
         .neg(xl_neg$neg)
     );
-    raster_top$span$xr_neg xr_neg(
+    raster_top$core$span$xr_neg xr_neg(
         .x(xr_neg$x),
         .neg(xr_neg$neg)
     );
-    raster_top$span$zp zp(
+    raster_top$core$span$zp zp(
         .x(zp$x),
         .neg(zp$neg),
         .over(zp$over),
         .low(zp$low)
     );
-    raster_top$span$c0 c0(
+    raster_top$core$span$c0 c0(
         .x(c0$x),
         .neg(c0$neg),
         .over(c0$over),
         .low(c0$low)
     );
-    raster_top$span$c1 c1(
+    raster_top$core$span$c1 c1(
         .x(c1$x),
         .neg(c1$neg),
         .over(c1$over),
         .low(c1$low)
     );
-    raster_top$span$c2 c2(
+    raster_top$core$span$c2 c2(
         .x(c2$x),
         .neg(c2$neg),
         .over(c2$over),
         .low(c2$low)
     );
-    raster_top$span$xl_on xl_on(
+    raster_top$core$span$xl_on xl_on(
         .a(xl_on$a),
         .b(xl_on$b),
         .lt(xl_on$lt)
@@ -8741,10 +7267,10 @@ module raster_top$span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_l
         end
     end
     
-endmodule // raster_top$span
+endmodule // raster_top$core$span
 
 
-module raster_top$span$a_c0(d,q,clock);
+module raster_top$core$span$a_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -8760,10 +7286,10 @@ module raster_top$span$a_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$a_c0
+endmodule // raster_top$core$span$a_c0
 
 
-module raster_top$span$a_c1(d,q,clock);
+module raster_top$core$span$a_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -8779,10 +7305,10 @@ module raster_top$span$a_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$a_c1
+endmodule // raster_top$core$span$a_c1
 
 
-module raster_top$span$a_c2(d,q,clock);
+module raster_top$core$span$a_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -8798,10 +7324,10 @@ module raster_top$span$a_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$a_c2
+endmodule // raster_top$core$span$a_c2
 
 
-module raster_top$span$a_z(d,q,clock);
+module raster_top$core$span$a_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -8817,10 +7343,10 @@ module raster_top$span$a_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$a_z
+endmodule // raster_top$core$span$a_z
 
 
-module raster_top$span$busy(d,q,clock);
+module raster_top$core$span$busy(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -8836,10 +7362,10 @@ module raster_top$span$busy(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$busy
+endmodule // raster_top$core$span$busy
 
 
-module raster_top$span$c0(x,neg,over,low);
+module raster_top$core$span$c0(x,neg,over,low);
     
     // Module arguments
     input wire  [31:0] x;
@@ -8863,7 +7389,7 @@ module raster_top$span$c0(x,neg,over,low);
     reg  [32:0] shifted;
     
     // Sub module instances
-    raster_top$span$c0$x_neg x_neg(
+    raster_top$core$span$c0$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -8882,10 +7408,10 @@ module raster_top$span$c0(x,neg,over,low);
         low = ((shifted) & 8'hff);
     end
     
-endmodule // raster_top$span$c0
+endmodule // raster_top$core$span$c0
 
 
-module raster_top$span$c0$x_neg(x,neg);
+module raster_top$core$span$c0$x_neg(x,neg);
     
     // Module arguments
     input wire  [31:0] x;
@@ -8899,10 +7425,10 @@ module raster_top$span$c0$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$span$c0$x_neg
+endmodule // raster_top$core$span$c0$x_neg
 
 
-module raster_top$span$c1(x,neg,over,low);
+module raster_top$core$span$c1(x,neg,over,low);
     
     // Module arguments
     input wire  [31:0] x;
@@ -8926,7 +7452,7 @@ module raster_top$span$c1(x,neg,over,low);
     reg  [32:0] shifted;
     
     // Sub module instances
-    raster_top$span$c1$x_neg x_neg(
+    raster_top$core$span$c1$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -8945,10 +7471,10 @@ module raster_top$span$c1(x,neg,over,low);
         low = ((shifted) & 8'hff);
     end
     
-endmodule // raster_top$span$c1
+endmodule // raster_top$core$span$c1
 
 
-module raster_top$span$c1$x_neg(x,neg);
+module raster_top$core$span$c1$x_neg(x,neg);
     
     // Module arguments
     input wire  [31:0] x;
@@ -8962,10 +7488,10 @@ module raster_top$span$c1$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$span$c1$x_neg
+endmodule // raster_top$core$span$c1$x_neg
 
 
-module raster_top$span$c2(x,neg,over,low);
+module raster_top$core$span$c2(x,neg,over,low);
     
     // Module arguments
     input wire  [31:0] x;
@@ -8989,7 +7515,7 @@ module raster_top$span$c2(x,neg,over,low);
     reg  [32:0] shifted;
     
     // Sub module instances
-    raster_top$span$c2$x_neg x_neg(
+    raster_top$core$span$c2$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -9008,10 +7534,10 @@ module raster_top$span$c2(x,neg,over,low);
         low = ((shifted) & 8'hff);
     end
     
-endmodule // raster_top$span$c2
+endmodule // raster_top$core$span$c2
 
 
-module raster_top$span$c2$x_neg(x,neg);
+module raster_top$core$span$c2$x_neg(x,neg);
     
     // Module arguments
     input wire  [31:0] x;
@@ -9025,10 +7551,10 @@ module raster_top$span$c2$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$span$c2$x_neg
+endmodule // raster_top$core$span$c2$x_neg
 
 
-module raster_top$span$d_c0(d,q,clock);
+module raster_top$core$span$d_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -9044,10 +7570,10 @@ module raster_top$span$d_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$d_c0
+endmodule // raster_top$core$span$d_c0
 
 
-module raster_top$span$d_c1(d,q,clock);
+module raster_top$core$span$d_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -9063,10 +7589,10 @@ module raster_top$span$d_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$d_c1
+endmodule // raster_top$core$span$d_c1
 
 
-module raster_top$span$d_c2(d,q,clock);
+module raster_top$core$span$d_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -9082,10 +7608,10 @@ module raster_top$span$d_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$d_c2
+endmodule // raster_top$core$span$d_c2
 
 
-module raster_top$span$d_z(d,q,clock);
+module raster_top$core$span$d_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -9101,10 +7627,10 @@ module raster_top$span$d_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$d_z
+endmodule // raster_top$core$span$d_z
 
 
-module raster_top$span$drop(d,q,clock);
+module raster_top$core$span$drop(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -9120,10 +7646,10 @@ module raster_top$span$drop(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$drop
+endmodule // raster_top$core$span$drop
 
 
-module raster_top$span$last(d,q,clock);
+module raster_top$core$span$last(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -9139,10 +7665,10 @@ module raster_top$span$last(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$last
+endmodule // raster_top$core$span$last
 
 
-module raster_top$span$left(d,q,clock);
+module raster_top$core$span$left(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -9158,10 +7684,10 @@ module raster_top$span$left(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$left
+endmodule // raster_top$core$span$left
 
 
-module raster_top$span$x(d,q,clock);
+module raster_top$core$span$x(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -9177,10 +7703,10 @@ module raster_top$span$x(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$x
+endmodule // raster_top$core$span$x
 
 
-module raster_top$span$xl_neg(x,neg);
+module raster_top$core$span$xl_neg(x,neg);
     
     // Module arguments
     input wire  [12:0] x;
@@ -9194,10 +7720,10 @@ module raster_top$span$xl_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$span$xl_neg
+endmodule // raster_top$core$span$xl_neg
 
 
-module raster_top$span$xl_on(a,b,lt);
+module raster_top$core$span$xl_on(a,b,lt);
     
     // Module arguments
     input wire  [12:0] a;
@@ -9212,10 +7738,10 @@ module raster_top$span$xl_on(a,b,lt);
         lt = (a ^ half) < (b ^ half);
     end
     
-endmodule // raster_top$span$xl_on
+endmodule // raster_top$core$span$xl_on
 
 
-module raster_top$span$xr_neg(x,neg);
+module raster_top$core$span$xr_neg(x,neg);
     
     // Module arguments
     input wire  [12:0] x;
@@ -9229,10 +7755,10 @@ module raster_top$span$xr_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$span$xr_neg
+endmodule // raster_top$core$span$xr_neg
 
 
-module raster_top$span$y(d,q,clock);
+module raster_top$core$span$y(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -9248,10 +7774,10 @@ module raster_top$span$y(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$span$y
+endmodule // raster_top$core$span$y
 
 
-module raster_top$span$zl(x,neg,over,low);
+module raster_top$core$span$zl(x,neg,over,low);
     
     // Module arguments
     input wire  [35:0] x;
@@ -9275,7 +7801,7 @@ module raster_top$span$zl(x,neg,over,low);
     reg  [36:0] shifted;
     
     // Sub module instances
-    raster_top$span$zl$x_neg x_neg(
+    raster_top$core$span$zl$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -9294,10 +7820,10 @@ module raster_top$span$zl(x,neg,over,low);
         low = ((shifted) & 16'hffff);
     end
     
-endmodule // raster_top$span$zl
+endmodule // raster_top$core$span$zl
 
 
-module raster_top$span$zl$x_neg(x,neg);
+module raster_top$core$span$zl$x_neg(x,neg);
     
     // Module arguments
     input wire  [35:0] x;
@@ -9311,10 +7837,10 @@ module raster_top$span$zl$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$span$zl$x_neg
+endmodule // raster_top$core$span$zl$x_neg
 
 
-module raster_top$span$zp(x,neg,over,low);
+module raster_top$core$span$zp(x,neg,over,low);
     
     // Module arguments
     input wire  [35:0] x;
@@ -9338,7 +7864,7 @@ module raster_top$span$zp(x,neg,over,low);
     reg  [36:0] shifted;
     
     // Sub module instances
-    raster_top$span$zp$x_neg x_neg(
+    raster_top$core$span$zp$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -9357,10 +7883,10 @@ module raster_top$span$zp(x,neg,over,low);
         low = ((shifted) & 16'hffff);
     end
     
-endmodule // raster_top$span$zp
+endmodule // raster_top$core$span$zp
 
 
-module raster_top$span$zp$x_neg(x,neg);
+module raster_top$core$span$zp$x_neg(x,neg);
     
     // Module arguments
     input wire  [35:0] x;
@@ -9374,10 +7900,10 @@ module raster_top$span$zp$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$span$zp$x_neg
+endmodule // raster_top$core$span$zp$x_neg
 
 
-module raster_top$span$zr(x,neg,over,low);
+module raster_top$core$span$zr(x,neg,over,low);
     
     // Module arguments
     input wire  [35:0] x;
@@ -9401,7 +7927,7 @@ module raster_top$span$zr(x,neg,over,low);
     reg  [36:0] shifted;
     
     // Sub module instances
-    raster_top$span$zr$x_neg x_neg(
+    raster_top$core$span$zr$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -9420,10 +7946,10 @@ module raster_top$span$zr(x,neg,over,low);
         low = ((shifted) & 16'hffff);
     end
     
-endmodule // raster_top$span$zr
+endmodule // raster_top$core$span$zr
 
 
-module raster_top$span$zr$x_neg(x,neg);
+module raster_top$core$span$zr$x_neg(x,neg);
     
     // Module arguments
     input wire  [35:0] x;
@@ -9437,10 +7963,10 @@ module raster_top$span$zr$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$span$zr$x_neg
+endmodule // raster_top$core$span$zr$x_neg
 
 
-module raster_top$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_crosses,out_valid,out_ready,out_walk,out_maj_left,out_maj_j,out_maj_count,out_maj_x,out_maj_r,out_maj_q,out_maj_rho,out_maj_d,out_maj_at_z,out_maj_at_c0,out_maj_at_c1,out_maj_at_c2,out_maj_inc0_z,out_maj_inc0_c0,out_maj_inc0_c1,out_maj_inc0_c2,out_maj_inc1_z,out_maj_inc1_c0,out_maj_inc1_c1,out_maj_inc1_c2,out_short0_j,out_short0_count,out_short0_x,out_short0_r,out_short0_q,out_short0_rho,out_short0_d,out_short0_at_z,out_short0_at_c0,out_short0_at_c1,out_short0_at_c2,out_short0_inc0_z,out_short0_inc0_c0,out_short0_inc0_c1,out_short0_inc0_c2,out_short0_inc1_z,out_short0_inc1_c0,out_short0_inc1_c1,out_short0_inc1_c2,out_short1_j,out_short1_count,out_short1_x,out_short1_r,out_short1_q,out_short1_rho,out_short1_d,out_short1_at_z,out_short1_at_c0,out_short1_at_c1,out_short1_at_c2,out_short1_inc0_z,out_short1_inc0_c0,out_short1_inc0_c1,out_short1_inc0_c2,out_short1_inc1_z,out_short1_inc1_c0,out_short1_inc1_c1,out_short1_inc1_c2,out_ddx_z,out_ddx_c0,out_ddx_c1,out_ddx_c2);
+module raster_top$core$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_crosses,out_valid,out_ready,out_walk,out_maj_left,out_maj_j,out_maj_count,out_maj_x,out_maj_r,out_maj_q,out_maj_rho,out_maj_d,out_maj_at_z,out_maj_at_c0,out_maj_at_c1,out_maj_at_c2,out_maj_inc0_z,out_maj_inc0_c0,out_maj_inc0_c1,out_maj_inc0_c2,out_maj_inc1_z,out_maj_inc1_c0,out_maj_inc1_c1,out_maj_inc1_c2,out_short0_j,out_short0_count,out_short0_x,out_short0_r,out_short0_q,out_short0_rho,out_short0_d,out_short0_at_z,out_short0_at_c0,out_short0_at_c1,out_short0_at_c2,out_short0_inc0_z,out_short0_inc0_c0,out_short0_inc0_c1,out_short0_inc0_c2,out_short0_inc1_z,out_short0_inc1_c0,out_short0_inc1_c1,out_short0_inc1_c2,out_short1_j,out_short1_count,out_short1_x,out_short1_r,out_short1_q,out_short1_rho,out_short1_d,out_short1_at_z,out_short1_at_c0,out_short1_at_c1,out_short1_at_c2,out_short1_inc0_z,out_short1_inc0_c0,out_short1_inc0_c1,out_short1_inc0_c2,out_short1_inc1_z,out_short1_inc1_c0,out_short1_inc1_c1,out_short1_inc1_c2,out_ddx_z,out_ddx_c0,out_ddx_c1,out_ddx_c2);
     
     // Module arguments
     input wire  clock;
@@ -10275,42 +8801,42 @@ module raster_top$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp
     reg  [56:0] ddy$3;
     
     // Sub module instances
-    raster_top$triangle_setup$mul$0 mul$0(
+    raster_top$core$triangle_setup$mul$0 mul$0(
         .a(mul$0$a),
         .b(mul$0$b),
         .p(mul$0$p)
     );
-    raster_top$triangle_setup$mul$1 mul$1(
+    raster_top$core$triangle_setup$mul$1 mul$1(
         .a(mul$1$a),
         .b(mul$1$b),
         .p(mul$1$p)
     );
-    raster_top$triangle_setup$mul$2 mul$2(
+    raster_top$core$triangle_setup$mul$2 mul$2(
         .a(mul$2$a),
         .b(mul$2$b),
         .p(mul$2$p)
     );
-    raster_top$triangle_setup$mul$3 mul$3(
+    raster_top$core$triangle_setup$mul$3 mul$3(
         .a(mul$3$a),
         .b(mul$3$b),
         .p(mul$3$p)
     );
-    raster_top$triangle_setup$mul$4 mul$4(
+    raster_top$core$triangle_setup$mul$4 mul$4(
         .a(mul$4$a),
         .b(mul$4$b),
         .p(mul$4$p)
     );
-    raster_top$triangle_setup$mul$5 mul$5(
+    raster_top$core$triangle_setup$mul$5 mul$5(
         .a(mul$5$a),
         .b(mul$5$b),
         .p(mul$5$p)
     );
-    raster_top$triangle_setup$mul$6 mul$6(
+    raster_top$core$triangle_setup$mul$6 mul$6(
         .a(mul$6$a),
         .b(mul$6$b),
         .p(mul$6$p)
     );
-    raster_top$triangle_setup$div div(
+    raster_top$core$triangle_setup$div div(
         .clock(div$clock),
         .inp_valid(div$inp_valid),
         .inp_ready(div$inp_ready),
@@ -10321,432 +8847,432 @@ module raster_top$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp
         .out_q(div$out_q),
         .out_r(div$out_r)
     );
-    raster_top$triangle_setup$t t(
+    raster_top$core$triangle_setup$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
-    raster_top$triangle_setup$vx$0 vx$0(
+    raster_top$core$triangle_setup$vx$0 vx$0(
         .d(vx$0$d),
         .q(vx$0$q),
         .clock(vx$0$clock)
     );
-    raster_top$triangle_setup$vx$1 vx$1(
+    raster_top$core$triangle_setup$vx$1 vx$1(
         .d(vx$1$d),
         .q(vx$1$q),
         .clock(vx$1$clock)
     );
-    raster_top$triangle_setup$vx$2 vx$2(
+    raster_top$core$triangle_setup$vx$2 vx$2(
         .d(vx$2$d),
         .q(vx$2$q),
         .clock(vx$2$clock)
     );
-    raster_top$triangle_setup$vy$0 vy$0(
+    raster_top$core$triangle_setup$vy$0 vy$0(
         .d(vy$0$d),
         .q(vy$0$q),
         .clock(vy$0$clock)
     );
-    raster_top$triangle_setup$vy$1 vy$1(
+    raster_top$core$triangle_setup$vy$1 vy$1(
         .d(vy$1$d),
         .q(vy$1$q),
         .clock(vy$1$clock)
     );
-    raster_top$triangle_setup$vy$2 vy$2(
+    raster_top$core$triangle_setup$vy$2 vy$2(
         .d(vy$2$d),
         .q(vy$2$q),
         .clock(vy$2$clock)
     );
-    raster_top$triangle_setup$vz$0 vz$0(
+    raster_top$core$triangle_setup$vz$0 vz$0(
         .d(vz$0$d),
         .q(vz$0$q),
         .clock(vz$0$clock)
     );
-    raster_top$triangle_setup$vz$1 vz$1(
+    raster_top$core$triangle_setup$vz$1 vz$1(
         .d(vz$1$d),
         .q(vz$1$q),
         .clock(vz$1$clock)
     );
-    raster_top$triangle_setup$vz$2 vz$2(
+    raster_top$core$triangle_setup$vz$2 vz$2(
         .d(vz$2$d),
         .q(vz$2$q),
         .clock(vz$2$clock)
     );
-    raster_top$triangle_setup$vc$0 vc$0(
+    raster_top$core$triangle_setup$vc$0 vc$0(
         .d(vc$0$d),
         .q(vc$0$q),
         .clock(vc$0$clock)
     );
-    raster_top$triangle_setup$vc$1 vc$1(
+    raster_top$core$triangle_setup$vc$1 vc$1(
         .d(vc$1$d),
         .q(vc$1$q),
         .clock(vc$1$clock)
     );
-    raster_top$triangle_setup$vc$2 vc$2(
+    raster_top$core$triangle_setup$vc$2 vc$2(
         .d(vc$2$d),
         .q(vc$2$q),
         .clock(vc$2$clock)
     );
-    raster_top$triangle_setup$vc$3 vc$3(
+    raster_top$core$triangle_setup$vc$3 vc$3(
         .d(vc$3$d),
         .q(vc$3$q),
         .clock(vc$3$clock)
     );
-    raster_top$triangle_setup$vc$4 vc$4(
+    raster_top$core$triangle_setup$vc$4 vc$4(
         .d(vc$4$d),
         .q(vc$4$q),
         .clock(vc$4$clock)
     );
-    raster_top$triangle_setup$vc$5 vc$5(
+    raster_top$core$triangle_setup$vc$5 vc$5(
         .d(vc$5$d),
         .q(vc$5$q),
         .clock(vc$5$clock)
     );
-    raster_top$triangle_setup$vc$6 vc$6(
+    raster_top$core$triangle_setup$vc$6 vc$6(
         .d(vc$6$d),
         .q(vc$6$q),
         .clock(vc$6$clock)
     );
-    raster_top$triangle_setup$vc$7 vc$7(
+    raster_top$core$triangle_setup$vc$7 vc$7(
         .d(vc$7$d),
         .q(vc$7$q),
         .clock(vc$7$clock)
     );
-    raster_top$triangle_setup$vc$8 vc$8(
+    raster_top$core$triangle_setup$vc$8 vc$8(
         .d(vc$8$d),
         .q(vc$8$q),
         .clock(vc$8$clock)
     );
-    raster_top$triangle_setup$crosses crosses(
+    raster_top$core$triangle_setup$crosses crosses(
         .d(crosses$d),
         .q(crosses$q),
         .clock(crosses$clock)
     );
-    raster_top$triangle_setup$area area(
+    raster_top$core$triangle_setup$area area(
         .d(area$d),
         .q(area$q),
         .clock(area$clock)
     );
-    raster_top$triangle_setup$exp exp(
+    raster_top$core$triangle_setup$exp exp(
         .d(exp$d),
         .q(exp$q),
         .clock(exp$clock)
     );
-    raster_top$triangle_setup$mant mant(
+    raster_top$core$triangle_setup$mant mant(
         .d(mant$d),
         .q(mant$q),
         .clock(mant$clock)
     );
-    raster_top$triangle_setup$x$0 x$0(
+    raster_top$core$triangle_setup$x$0 x$0(
         .d(x$0$d),
         .q(x$0$q),
         .clock(x$0$clock)
     );
-    raster_top$triangle_setup$x$1 x$1(
+    raster_top$core$triangle_setup$x$1 x$1(
         .d(x$1$d),
         .q(x$1$q),
         .clock(x$1$clock)
     );
-    raster_top$triangle_setup$x$2 x$2(
+    raster_top$core$triangle_setup$x$2 x$2(
         .d(x$2$d),
         .q(x$2$q),
         .clock(x$2$clock)
     );
-    raster_top$triangle_setup$r$0 r$0(
+    raster_top$core$triangle_setup$r$0 r$0(
         .d(r$0$d),
         .q(r$0$q),
         .clock(r$0$clock)
     );
-    raster_top$triangle_setup$r$1 r$1(
+    raster_top$core$triangle_setup$r$1 r$1(
         .d(r$1$d),
         .q(r$1$q),
         .clock(r$1$clock)
     );
-    raster_top$triangle_setup$r$2 r$2(
+    raster_top$core$triangle_setup$r$2 r$2(
         .d(r$2$d),
         .q(r$2$q),
         .clock(r$2$clock)
     );
-    raster_top$triangle_setup$q$0 q$0(
+    raster_top$core$triangle_setup$q$0 q$0(
         .d(q$0$d),
         .q(q$0$q),
         .clock(q$0$clock)
     );
-    raster_top$triangle_setup$q$1 q$1(
+    raster_top$core$triangle_setup$q$1 q$1(
         .d(q$1$d),
         .q(q$1$q),
         .clock(q$1$clock)
     );
-    raster_top$triangle_setup$q$2 q$2(
+    raster_top$core$triangle_setup$q$2 q$2(
         .d(q$2$d),
         .q(q$2$q),
         .clock(q$2$clock)
     );
-    raster_top$triangle_setup$rho$0 rho$0(
+    raster_top$core$triangle_setup$rho$0 rho$0(
         .d(rho$0$d),
         .q(rho$0$q),
         .clock(rho$0$clock)
     );
-    raster_top$triangle_setup$rho$1 rho$1(
+    raster_top$core$triangle_setup$rho$1 rho$1(
         .d(rho$1$d),
         .q(rho$1$q),
         .clock(rho$1$clock)
     );
-    raster_top$triangle_setup$rho$2 rho$2(
+    raster_top$core$triangle_setup$rho$2 rho$2(
         .d(rho$2$d),
         .q(rho$2$q),
         .clock(rho$2$clock)
     );
-    raster_top$triangle_setup$num$0 num$0(
+    raster_top$core$triangle_setup$num$0 num$0(
         .d(num$0$d),
         .q(num$0$q),
         .clock(num$0$clock)
     );
-    raster_top$triangle_setup$num$1 num$1(
+    raster_top$core$triangle_setup$num$1 num$1(
         .d(num$1$d),
         .q(num$1$q),
         .clock(num$1$clock)
     );
-    raster_top$triangle_setup$num$2 num$2(
+    raster_top$core$triangle_setup$num$2 num$2(
         .d(num$2$d),
         .q(num$2$q),
         .clock(num$2$clock)
     );
-    raster_top$triangle_setup$p$0 p$0(
+    raster_top$core$triangle_setup$p$0 p$0(
         .d(p$0$d),
         .q(p$0$q),
         .clock(p$0$clock)
     );
-    raster_top$triangle_setup$p$1 p$1(
+    raster_top$core$triangle_setup$p$1 p$1(
         .d(p$1$d),
         .q(p$1$q),
         .clock(p$1$clock)
     );
-    raster_top$triangle_setup$p$2 p$2(
+    raster_top$core$triangle_setup$p$2 p$2(
         .d(p$2$d),
         .q(p$2$q),
         .clock(p$2$clock)
     );
-    raster_top$triangle_setup$p$3 p$3(
+    raster_top$core$triangle_setup$p$3 p$3(
         .d(p$3$d),
         .q(p$3$q),
         .clock(p$3$clock)
     );
-    raster_top$triangle_setup$gx$0 gx$0(
+    raster_top$core$triangle_setup$gx$0 gx$0(
         .d(gx$0$d),
         .q(gx$0$q),
         .clock(gx$0$clock)
     );
-    raster_top$triangle_setup$gx$1 gx$1(
+    raster_top$core$triangle_setup$gx$1 gx$1(
         .d(gx$1$d),
         .q(gx$1$q),
         .clock(gx$1$clock)
     );
-    raster_top$triangle_setup$gx$2 gx$2(
+    raster_top$core$triangle_setup$gx$2 gx$2(
         .d(gx$2$d),
         .q(gx$2$q),
         .clock(gx$2$clock)
     );
-    raster_top$triangle_setup$gx$3 gx$3(
+    raster_top$core$triangle_setup$gx$3 gx$3(
         .d(gx$3$d),
         .q(gx$3$q),
         .clock(gx$3$clock)
     );
-    raster_top$triangle_setup$gy$0 gy$0(
+    raster_top$core$triangle_setup$gy$0 gy$0(
         .d(gy$0$d),
         .q(gy$0$q),
         .clock(gy$0$clock)
     );
-    raster_top$triangle_setup$gy$1 gy$1(
+    raster_top$core$triangle_setup$gy$1 gy$1(
         .d(gy$1$d),
         .q(gy$1$q),
         .clock(gy$1$clock)
     );
-    raster_top$triangle_setup$gy$2 gy$2(
+    raster_top$core$triangle_setup$gy$2 gy$2(
         .d(gy$2$d),
         .q(gy$2$q),
         .clock(gy$2$clock)
     );
-    raster_top$triangle_setup$gy$3 gy$3(
+    raster_top$core$triangle_setup$gy$3 gy$3(
         .d(gy$3$d),
         .q(gy$3$q),
         .clock(gy$3$clock)
     );
-    raster_top$triangle_setup$plane$0 plane$0(
+    raster_top$core$triangle_setup$plane$0 plane$0(
         .d(plane$0$d),
         .q(plane$0$q),
         .clock(plane$0$clock)
     );
-    raster_top$triangle_setup$plane$1 plane$1(
+    raster_top$core$triangle_setup$plane$1 plane$1(
         .d(plane$1$d),
         .q(plane$1$q),
         .clock(plane$1$clock)
     );
-    raster_top$triangle_setup$plane$2 plane$2(
+    raster_top$core$triangle_setup$plane$2 plane$2(
         .d(plane$2$d),
         .q(plane$2$q),
         .clock(plane$2$clock)
     );
-    raster_top$triangle_setup$plane$3 plane$3(
+    raster_top$core$triangle_setup$plane$3 plane$3(
         .d(plane$3$d),
         .q(plane$3$q),
         .clock(plane$3$clock)
     );
-    raster_top$triangle_setup$plane$4 plane$4(
+    raster_top$core$triangle_setup$plane$4 plane$4(
         .d(plane$4$d),
         .q(plane$4$q),
         .clock(plane$4$clock)
     );
-    raster_top$triangle_setup$plane$5 plane$5(
+    raster_top$core$triangle_setup$plane$5 plane$5(
         .d(plane$5$d),
         .q(plane$5$q),
         .clock(plane$5$clock)
     );
-    raster_top$triangle_setup$plane$6 plane$6(
+    raster_top$core$triangle_setup$plane$6 plane$6(
         .d(plane$6$d),
         .q(plane$6$q),
         .clock(plane$6$clock)
     );
-    raster_top$triangle_setup$plane$7 plane$7(
+    raster_top$core$triangle_setup$plane$7 plane$7(
         .d(plane$7$d),
         .q(plane$7$q),
         .clock(plane$7$clock)
     );
-    raster_top$triangle_setup$plane$8 plane$8(
+    raster_top$core$triangle_setup$plane$8 plane$8(
         .d(plane$8$d),
         .q(plane$8$q),
         .clock(plane$8$clock)
     );
-    raster_top$triangle_setup$plane$9 plane$9(
+    raster_top$core$triangle_setup$plane$9 plane$9(
         .d(plane$9$d),
         .q(plane$9$q),
         .clock(plane$9$clock)
     );
-    raster_top$triangle_setup$plane$10 plane$10(
+    raster_top$core$triangle_setup$plane$10 plane$10(
         .d(plane$10$d),
         .q(plane$10$q),
         .clock(plane$10$clock)
     );
-    raster_top$triangle_setup$plane$11 plane$11(
+    raster_top$core$triangle_setup$plane$11 plane$11(
         .d(plane$11$d),
         .q(plane$11$q),
         .clock(plane$11$clock)
     );
-    raster_top$triangle_setup$inc0$0 inc0$0(
+    raster_top$core$triangle_setup$inc0$0 inc0$0(
         .d(inc0$0$d),
         .q(inc0$0$q),
         .clock(inc0$0$clock)
     );
-    raster_top$triangle_setup$inc0$1 inc0$1(
+    raster_top$core$triangle_setup$inc0$1 inc0$1(
         .d(inc0$1$d),
         .q(inc0$1$q),
         .clock(inc0$1$clock)
     );
-    raster_top$triangle_setup$inc0$2 inc0$2(
+    raster_top$core$triangle_setup$inc0$2 inc0$2(
         .d(inc0$2$d),
         .q(inc0$2$q),
         .clock(inc0$2$clock)
     );
-    raster_top$triangle_setup$inc0$3 inc0$3(
+    raster_top$core$triangle_setup$inc0$3 inc0$3(
         .d(inc0$3$d),
         .q(inc0$3$q),
         .clock(inc0$3$clock)
     );
-    raster_top$triangle_setup$inc0$4 inc0$4(
+    raster_top$core$triangle_setup$inc0$4 inc0$4(
         .d(inc0$4$d),
         .q(inc0$4$q),
         .clock(inc0$4$clock)
     );
-    raster_top$triangle_setup$inc0$5 inc0$5(
+    raster_top$core$triangle_setup$inc0$5 inc0$5(
         .d(inc0$5$d),
         .q(inc0$5$q),
         .clock(inc0$5$clock)
     );
-    raster_top$triangle_setup$inc0$6 inc0$6(
+    raster_top$core$triangle_setup$inc0$6 inc0$6(
         .d(inc0$6$d),
         .q(inc0$6$q),
         .clock(inc0$6$clock)
     );
-    raster_top$triangle_setup$inc0$7 inc0$7(
+    raster_top$core$triangle_setup$inc0$7 inc0$7(
         .d(inc0$7$d),
         .q(inc0$7$q),
         .clock(inc0$7$clock)
     );
-    raster_top$triangle_setup$inc0$8 inc0$8(
+    raster_top$core$triangle_setup$inc0$8 inc0$8(
         .d(inc0$8$d),
         .q(inc0$8$q),
         .clock(inc0$8$clock)
     );
-    raster_top$triangle_setup$inc0$9 inc0$9(
+    raster_top$core$triangle_setup$inc0$9 inc0$9(
         .d(inc0$9$d),
         .q(inc0$9$q),
         .clock(inc0$9$clock)
     );
-    raster_top$triangle_setup$inc0$10 inc0$10(
+    raster_top$core$triangle_setup$inc0$10 inc0$10(
         .d(inc0$10$d),
         .q(inc0$10$q),
         .clock(inc0$10$clock)
     );
-    raster_top$triangle_setup$inc0$11 inc0$11(
+    raster_top$core$triangle_setup$inc0$11 inc0$11(
         .d(inc0$11$d),
         .q(inc0$11$q),
         .clock(inc0$11$clock)
     );
-    raster_top$triangle_setup$inc1$0 inc1$0(
+    raster_top$core$triangle_setup$inc1$0 inc1$0(
         .d(inc1$0$d),
         .q(inc1$0$q),
         .clock(inc1$0$clock)
     );
-    raster_top$triangle_setup$inc1$1 inc1$1(
+    raster_top$core$triangle_setup$inc1$1 inc1$1(
         .d(inc1$1$d),
         .q(inc1$1$q),
         .clock(inc1$1$clock)
     );
-    raster_top$triangle_setup$inc1$2 inc1$2(
+    raster_top$core$triangle_setup$inc1$2 inc1$2(
         .d(inc1$2$d),
         .q(inc1$2$q),
         .clock(inc1$2$clock)
     );
-    raster_top$triangle_setup$inc1$3 inc1$3(
+    raster_top$core$triangle_setup$inc1$3 inc1$3(
         .d(inc1$3$d),
         .q(inc1$3$q),
         .clock(inc1$3$clock)
     );
-    raster_top$triangle_setup$inc1$4 inc1$4(
+    raster_top$core$triangle_setup$inc1$4 inc1$4(
         .d(inc1$4$d),
         .q(inc1$4$q),
         .clock(inc1$4$clock)
     );
-    raster_top$triangle_setup$inc1$5 inc1$5(
+    raster_top$core$triangle_setup$inc1$5 inc1$5(
         .d(inc1$5$d),
         .q(inc1$5$q),
         .clock(inc1$5$clock)
     );
-    raster_top$triangle_setup$inc1$6 inc1$6(
+    raster_top$core$triangle_setup$inc1$6 inc1$6(
         .d(inc1$6$d),
         .q(inc1$6$q),
         .clock(inc1$6$clock)
     );
-    raster_top$triangle_setup$inc1$7 inc1$7(
+    raster_top$core$triangle_setup$inc1$7 inc1$7(
         .d(inc1$7$d),
         .q(inc1$7$q),
         .clock(inc1$7$clock)
     );
-    raster_top$triangle_setup$inc1$8 inc1$8(
+    raster_top$core$triangle_setup$inc1$8 inc1$8(
         .d(inc1$8$d),
         .q(inc1$8$q),
         .clock(inc1$8$clock)
     );
-    raster_top$triangle_setup$inc1$9 inc1$9(
+    raster_top$core$triangle_setup$inc1$9 inc1$9(
         .d(inc1$9$d),
         .q(inc1$9$q),
         .clock(inc1$9$clock)
     );
-    raster_top$triangle_setup$inc1$10 inc1$10(
+    raster_top$core$triangle_setup$inc1$10 inc1$10(
         .d(inc1$10$d),
         .q(inc1$10$q),
         .clock(inc1$10$clock)
     );
-    raster_top$triangle_setup$inc1$11 inc1$11(
+    raster_top$core$triangle_setup$inc1$11 inc1$11(
         .d(inc1$11$d),
         .q(inc1$11$q),
         .clock(inc1$11$clock)
@@ -14024,10 +12550,10 @@ module raster_top$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp
         out_ddx_c2 = ddx$3[(32'h0)+:(36)];
     end
     
-endmodule // raster_top$triangle_setup
+endmodule // raster_top$core$triangle_setup
 
 
-module raster_top$triangle_setup$area(d,q,clock);
+module raster_top$core$triangle_setup$area(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -14043,10 +12569,10 @@ module raster_top$triangle_setup$area(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$area
+endmodule // raster_top$core$triangle_setup$area
 
 
-module raster_top$triangle_setup$crosses(d,q,clock);
+module raster_top$core$triangle_setup$crosses(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -14062,10 +12588,10 @@ module raster_top$triangle_setup$crosses(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$crosses
+endmodule // raster_top$core$triangle_setup$crosses
 
 
-module raster_top$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
+module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
     
     // Module arguments
     input wire  clock;
@@ -14150,7 +12676,7 @@ module raster_top$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,inp_d,out_v
     reg  [24:0] last_x;
     
     // Sub module instances
-    raster_top$triangle_setup$div$stages$0 stages$0(
+    raster_top$core$triangle_setup$div$stages$0 stages$0(
         .clock(stages$0$clock),
         .enable(stages$0$enable),
         .valid_in(stages$0$valid_in),
@@ -14164,7 +12690,7 @@ module raster_top$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,inp_d,out_v
         .d(stages$0$d),
         .neg(stages$0$neg)
     );
-    raster_top$triangle_setup$div$stages$1 stages$1(
+    raster_top$core$triangle_setup$div$stages$1 stages$1(
         .clock(stages$1$clock),
         .enable(stages$1$enable),
         .valid_in(stages$1$valid_in),
@@ -14178,7 +12704,7 @@ module raster_top$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,inp_d,out_v
         .d(stages$1$d),
         .neg(stages$1$neg)
     );
-    raster_top$triangle_setup$div$stages$2 stages$2(
+    raster_top$core$triangle_setup$div$stages$2 stages$2(
         .clock(stages$2$clock),
         .enable(stages$2$enable),
         .valid_in(stages$2$valid_in),
@@ -14192,7 +12718,7 @@ module raster_top$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,inp_d,out_v
         .d(stages$2$d),
         .neg(stages$2$neg)
     );
-    raster_top$triangle_setup$div$stages$3 stages$3(
+    raster_top$core$triangle_setup$div$stages$3 stages$3(
         .clock(stages$3$clock),
         .enable(stages$3$enable),
         .valid_in(stages$3$valid_in),
@@ -14206,7 +12732,7 @@ module raster_top$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,inp_d,out_v
         .d(stages$3$d),
         .neg(stages$3$neg)
     );
-    raster_top$triangle_setup$div$stages$4 stages$4(
+    raster_top$core$triangle_setup$div$stages$4 stages$4(
         .clock(stages$4$clock),
         .enable(stages$4$enable),
         .valid_in(stages$4$valid_in),
@@ -14276,10 +12802,10 @@ module raster_top$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,inp_d,out_v
         stages$4$neg_in = stages$3$neg;
     end
     
-endmodule // raster_top$triangle_setup$div
+endmodule // raster_top$core$triangle_setup$div
 
 
-module raster_top$triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$core$triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -14342,27 +12868,27 @@ module raster_top$triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_in,d_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$triangle_setup$div$stages$0$valid_r valid_r(
+    raster_top$core$triangle_setup$div$stages$0$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$triangle_setup$div$stages$0$p_r p_r(
+    raster_top$core$triangle_setup$div$stages$0$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$triangle_setup$div$stages$0$x_r x_r(
+    raster_top$core$triangle_setup$div$stages$0$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$triangle_setup$div$stages$0$d_r d_r(
+    raster_top$core$triangle_setup$div$stages$0$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$triangle_setup$div$stages$0$neg_r neg_r(
+    raster_top$core$triangle_setup$div$stages$0$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -14462,10 +12988,10 @@ module raster_top$triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_in,d_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$triangle_setup$div$stages$0
+endmodule // raster_top$core$triangle_setup$div$stages$0
 
 
-module raster_top$triangle_setup$div$stages$0$d_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$0$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -14481,10 +13007,10 @@ module raster_top$triangle_setup$div$stages$0$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$0$d_r
+endmodule // raster_top$core$triangle_setup$div$stages$0$d_r
 
 
-module raster_top$triangle_setup$div$stages$0$neg_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$0$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -14500,10 +13026,10 @@ module raster_top$triangle_setup$div$stages$0$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$0$neg_r
+endmodule // raster_top$core$triangle_setup$div$stages$0$neg_r
 
 
-module raster_top$triangle_setup$div$stages$0$p_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$0$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -14519,10 +13045,10 @@ module raster_top$triangle_setup$div$stages$0$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$0$p_r
+endmodule // raster_top$core$triangle_setup$div$stages$0$p_r
 
 
-module raster_top$triangle_setup$div$stages$0$valid_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$0$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -14538,10 +13064,10 @@ module raster_top$triangle_setup$div$stages$0$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$0$valid_r
+endmodule // raster_top$core$triangle_setup$div$stages$0$valid_r
 
 
-module raster_top$triangle_setup$div$stages$0$x_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$0$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -14557,10 +13083,10 @@ module raster_top$triangle_setup$div$stages$0$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$0$x_r
+endmodule // raster_top$core$triangle_setup$div$stages$0$x_r
 
 
-module raster_top$triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$core$triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -14623,27 +13149,27 @@ module raster_top$triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_in,d_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$triangle_setup$div$stages$1$valid_r valid_r(
+    raster_top$core$triangle_setup$div$stages$1$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$triangle_setup$div$stages$1$p_r p_r(
+    raster_top$core$triangle_setup$div$stages$1$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$triangle_setup$div$stages$1$x_r x_r(
+    raster_top$core$triangle_setup$div$stages$1$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$triangle_setup$div$stages$1$d_r d_r(
+    raster_top$core$triangle_setup$div$stages$1$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$triangle_setup$div$stages$1$neg_r neg_r(
+    raster_top$core$triangle_setup$div$stages$1$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -14743,10 +13269,10 @@ module raster_top$triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_in,d_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$triangle_setup$div$stages$1
+endmodule // raster_top$core$triangle_setup$div$stages$1
 
 
-module raster_top$triangle_setup$div$stages$1$d_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$1$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -14762,10 +13288,10 @@ module raster_top$triangle_setup$div$stages$1$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$1$d_r
+endmodule // raster_top$core$triangle_setup$div$stages$1$d_r
 
 
-module raster_top$triangle_setup$div$stages$1$neg_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$1$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -14781,10 +13307,10 @@ module raster_top$triangle_setup$div$stages$1$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$1$neg_r
+endmodule // raster_top$core$triangle_setup$div$stages$1$neg_r
 
 
-module raster_top$triangle_setup$div$stages$1$p_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$1$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -14800,10 +13326,10 @@ module raster_top$triangle_setup$div$stages$1$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$1$p_r
+endmodule // raster_top$core$triangle_setup$div$stages$1$p_r
 
 
-module raster_top$triangle_setup$div$stages$1$valid_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$1$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -14819,10 +13345,10 @@ module raster_top$triangle_setup$div$stages$1$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$1$valid_r
+endmodule // raster_top$core$triangle_setup$div$stages$1$valid_r
 
 
-module raster_top$triangle_setup$div$stages$1$x_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$1$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -14838,10 +13364,10 @@ module raster_top$triangle_setup$div$stages$1$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$1$x_r
+endmodule // raster_top$core$triangle_setup$div$stages$1$x_r
 
 
-module raster_top$triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$core$triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -14904,27 +13430,27 @@ module raster_top$triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$triangle_setup$div$stages$2$valid_r valid_r(
+    raster_top$core$triangle_setup$div$stages$2$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$triangle_setup$div$stages$2$p_r p_r(
+    raster_top$core$triangle_setup$div$stages$2$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$triangle_setup$div$stages$2$x_r x_r(
+    raster_top$core$triangle_setup$div$stages$2$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$triangle_setup$div$stages$2$d_r d_r(
+    raster_top$core$triangle_setup$div$stages$2$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$triangle_setup$div$stages$2$neg_r neg_r(
+    raster_top$core$triangle_setup$div$stages$2$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -15024,10 +13550,10 @@ module raster_top$triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$triangle_setup$div$stages$2
+endmodule // raster_top$core$triangle_setup$div$stages$2
 
 
-module raster_top$triangle_setup$div$stages$2$d_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$2$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -15043,10 +13569,10 @@ module raster_top$triangle_setup$div$stages$2$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$2$d_r
+endmodule // raster_top$core$triangle_setup$div$stages$2$d_r
 
 
-module raster_top$triangle_setup$div$stages$2$neg_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$2$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15062,10 +13588,10 @@ module raster_top$triangle_setup$div$stages$2$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$2$neg_r
+endmodule // raster_top$core$triangle_setup$div$stages$2$neg_r
 
 
-module raster_top$triangle_setup$div$stages$2$p_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$2$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -15081,10 +13607,10 @@ module raster_top$triangle_setup$div$stages$2$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$2$p_r
+endmodule // raster_top$core$triangle_setup$div$stages$2$p_r
 
 
-module raster_top$triangle_setup$div$stages$2$valid_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$2$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15100,10 +13626,10 @@ module raster_top$triangle_setup$div$stages$2$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$2$valid_r
+endmodule // raster_top$core$triangle_setup$div$stages$2$valid_r
 
 
-module raster_top$triangle_setup$div$stages$2$x_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$2$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -15119,10 +13645,10 @@ module raster_top$triangle_setup$div$stages$2$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$2$x_r
+endmodule // raster_top$core$triangle_setup$div$stages$2$x_r
 
 
-module raster_top$triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$core$triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -15185,27 +13711,27 @@ module raster_top$triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$triangle_setup$div$stages$3$valid_r valid_r(
+    raster_top$core$triangle_setup$div$stages$3$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$triangle_setup$div$stages$3$p_r p_r(
+    raster_top$core$triangle_setup$div$stages$3$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$triangle_setup$div$stages$3$x_r x_r(
+    raster_top$core$triangle_setup$div$stages$3$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$triangle_setup$div$stages$3$d_r d_r(
+    raster_top$core$triangle_setup$div$stages$3$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$triangle_setup$div$stages$3$neg_r neg_r(
+    raster_top$core$triangle_setup$div$stages$3$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -15305,10 +13831,10 @@ module raster_top$triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$triangle_setup$div$stages$3
+endmodule // raster_top$core$triangle_setup$div$stages$3
 
 
-module raster_top$triangle_setup$div$stages$3$d_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$3$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -15324,10 +13850,10 @@ module raster_top$triangle_setup$div$stages$3$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$3$d_r
+endmodule // raster_top$core$triangle_setup$div$stages$3$d_r
 
 
-module raster_top$triangle_setup$div$stages$3$neg_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$3$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15343,10 +13869,10 @@ module raster_top$triangle_setup$div$stages$3$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$3$neg_r
+endmodule // raster_top$core$triangle_setup$div$stages$3$neg_r
 
 
-module raster_top$triangle_setup$div$stages$3$p_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$3$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -15362,10 +13888,10 @@ module raster_top$triangle_setup$div$stages$3$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$3$p_r
+endmodule // raster_top$core$triangle_setup$div$stages$3$p_r
 
 
-module raster_top$triangle_setup$div$stages$3$valid_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$3$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15381,10 +13907,10 @@ module raster_top$triangle_setup$div$stages$3$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$3$valid_r
+endmodule // raster_top$core$triangle_setup$div$stages$3$valid_r
 
 
-module raster_top$triangle_setup$div$stages$3$x_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$3$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -15400,10 +13926,10 @@ module raster_top$triangle_setup$div$stages$3$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$3$x_r
+endmodule // raster_top$core$triangle_setup$div$stages$3$x_r
 
 
-module raster_top$triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$core$triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -15466,27 +13992,27 @@ module raster_top$triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_in,d_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$triangle_setup$div$stages$4$valid_r valid_r(
+    raster_top$core$triangle_setup$div$stages$4$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$triangle_setup$div$stages$4$p_r p_r(
+    raster_top$core$triangle_setup$div$stages$4$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$triangle_setup$div$stages$4$x_r x_r(
+    raster_top$core$triangle_setup$div$stages$4$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$triangle_setup$div$stages$4$d_r d_r(
+    raster_top$core$triangle_setup$div$stages$4$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$triangle_setup$div$stages$4$neg_r neg_r(
+    raster_top$core$triangle_setup$div$stages$4$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -15586,10 +14112,10 @@ module raster_top$triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_in,d_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$triangle_setup$div$stages$4
+endmodule // raster_top$core$triangle_setup$div$stages$4
 
 
-module raster_top$triangle_setup$div$stages$4$d_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$4$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -15605,10 +14131,10 @@ module raster_top$triangle_setup$div$stages$4$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$4$d_r
+endmodule // raster_top$core$triangle_setup$div$stages$4$d_r
 
 
-module raster_top$triangle_setup$div$stages$4$neg_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$4$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15624,10 +14150,10 @@ module raster_top$triangle_setup$div$stages$4$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$4$neg_r
+endmodule // raster_top$core$triangle_setup$div$stages$4$neg_r
 
 
-module raster_top$triangle_setup$div$stages$4$p_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$4$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -15643,10 +14169,10 @@ module raster_top$triangle_setup$div$stages$4$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$4$p_r
+endmodule // raster_top$core$triangle_setup$div$stages$4$p_r
 
 
-module raster_top$triangle_setup$div$stages$4$valid_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$4$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15662,10 +14188,10 @@ module raster_top$triangle_setup$div$stages$4$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$4$valid_r
+endmodule // raster_top$core$triangle_setup$div$stages$4$valid_r
 
 
-module raster_top$triangle_setup$div$stages$4$x_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$4$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -15681,10 +14207,10 @@ module raster_top$triangle_setup$div$stages$4$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$div$stages$4$x_r
+endmodule // raster_top$core$triangle_setup$div$stages$4$x_r
 
 
-module raster_top$triangle_setup$exp(d,q,clock);
+module raster_top$core$triangle_setup$exp(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -15700,10 +14226,10 @@ module raster_top$triangle_setup$exp(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$exp
+endmodule // raster_top$core$triangle_setup$exp
 
 
-module raster_top$triangle_setup$gx$0(d,q,clock);
+module raster_top$core$triangle_setup$gx$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -15719,10 +14245,10 @@ module raster_top$triangle_setup$gx$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$gx$0
+endmodule // raster_top$core$triangle_setup$gx$0
 
 
-module raster_top$triangle_setup$gx$1(d,q,clock);
+module raster_top$core$triangle_setup$gx$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -15738,10 +14264,10 @@ module raster_top$triangle_setup$gx$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$gx$1
+endmodule // raster_top$core$triangle_setup$gx$1
 
 
-module raster_top$triangle_setup$gx$2(d,q,clock);
+module raster_top$core$triangle_setup$gx$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -15757,10 +14283,10 @@ module raster_top$triangle_setup$gx$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$gx$2
+endmodule // raster_top$core$triangle_setup$gx$2
 
 
-module raster_top$triangle_setup$gx$3(d,q,clock);
+module raster_top$core$triangle_setup$gx$3(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -15776,10 +14302,10 @@ module raster_top$triangle_setup$gx$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$gx$3
+endmodule // raster_top$core$triangle_setup$gx$3
 
 
-module raster_top$triangle_setup$gy$0(d,q,clock);
+module raster_top$core$triangle_setup$gy$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -15795,10 +14321,10 @@ module raster_top$triangle_setup$gy$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$gy$0
+endmodule // raster_top$core$triangle_setup$gy$0
 
 
-module raster_top$triangle_setup$gy$1(d,q,clock);
+module raster_top$core$triangle_setup$gy$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -15814,10 +14340,10 @@ module raster_top$triangle_setup$gy$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$gy$1
+endmodule // raster_top$core$triangle_setup$gy$1
 
 
-module raster_top$triangle_setup$gy$2(d,q,clock);
+module raster_top$core$triangle_setup$gy$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -15833,10 +14359,10 @@ module raster_top$triangle_setup$gy$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$gy$2
+endmodule // raster_top$core$triangle_setup$gy$2
 
 
-module raster_top$triangle_setup$gy$3(d,q,clock);
+module raster_top$core$triangle_setup$gy$3(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -15852,10 +14378,10 @@ module raster_top$triangle_setup$gy$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$gy$3
+endmodule // raster_top$core$triangle_setup$gy$3
 
 
-module raster_top$triangle_setup$inc0$0(d,q,clock);
+module raster_top$core$triangle_setup$inc0$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15871,10 +14397,10 @@ module raster_top$triangle_setup$inc0$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc0$0
+endmodule // raster_top$core$triangle_setup$inc0$0
 
 
-module raster_top$triangle_setup$inc0$1(d,q,clock);
+module raster_top$core$triangle_setup$inc0$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15890,10 +14416,10 @@ module raster_top$triangle_setup$inc0$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc0$1
+endmodule // raster_top$core$triangle_setup$inc0$1
 
 
-module raster_top$triangle_setup$inc0$10(d,q,clock);
+module raster_top$core$triangle_setup$inc0$10(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15909,10 +14435,10 @@ module raster_top$triangle_setup$inc0$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc0$10
+endmodule // raster_top$core$triangle_setup$inc0$10
 
 
-module raster_top$triangle_setup$inc0$11(d,q,clock);
+module raster_top$core$triangle_setup$inc0$11(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15928,10 +14454,10 @@ module raster_top$triangle_setup$inc0$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc0$11
+endmodule // raster_top$core$triangle_setup$inc0$11
 
 
-module raster_top$triangle_setup$inc0$2(d,q,clock);
+module raster_top$core$triangle_setup$inc0$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15947,10 +14473,10 @@ module raster_top$triangle_setup$inc0$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc0$2
+endmodule // raster_top$core$triangle_setup$inc0$2
 
 
-module raster_top$triangle_setup$inc0$3(d,q,clock);
+module raster_top$core$triangle_setup$inc0$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15966,10 +14492,10 @@ module raster_top$triangle_setup$inc0$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc0$3
+endmodule // raster_top$core$triangle_setup$inc0$3
 
 
-module raster_top$triangle_setup$inc0$4(d,q,clock);
+module raster_top$core$triangle_setup$inc0$4(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15985,10 +14511,10 @@ module raster_top$triangle_setup$inc0$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc0$4
+endmodule // raster_top$core$triangle_setup$inc0$4
 
 
-module raster_top$triangle_setup$inc0$5(d,q,clock);
+module raster_top$core$triangle_setup$inc0$5(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16004,10 +14530,10 @@ module raster_top$triangle_setup$inc0$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc0$5
+endmodule // raster_top$core$triangle_setup$inc0$5
 
 
-module raster_top$triangle_setup$inc0$6(d,q,clock);
+module raster_top$core$triangle_setup$inc0$6(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16023,10 +14549,10 @@ module raster_top$triangle_setup$inc0$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc0$6
+endmodule // raster_top$core$triangle_setup$inc0$6
 
 
-module raster_top$triangle_setup$inc0$7(d,q,clock);
+module raster_top$core$triangle_setup$inc0$7(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16042,10 +14568,10 @@ module raster_top$triangle_setup$inc0$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc0$7
+endmodule // raster_top$core$triangle_setup$inc0$7
 
 
-module raster_top$triangle_setup$inc0$8(d,q,clock);
+module raster_top$core$triangle_setup$inc0$8(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16061,10 +14587,10 @@ module raster_top$triangle_setup$inc0$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc0$8
+endmodule // raster_top$core$triangle_setup$inc0$8
 
 
-module raster_top$triangle_setup$inc0$9(d,q,clock);
+module raster_top$core$triangle_setup$inc0$9(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16080,10 +14606,10 @@ module raster_top$triangle_setup$inc0$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc0$9
+endmodule // raster_top$core$triangle_setup$inc0$9
 
 
-module raster_top$triangle_setup$inc1$0(d,q,clock);
+module raster_top$core$triangle_setup$inc1$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16099,10 +14625,10 @@ module raster_top$triangle_setup$inc1$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc1$0
+endmodule // raster_top$core$triangle_setup$inc1$0
 
 
-module raster_top$triangle_setup$inc1$1(d,q,clock);
+module raster_top$core$triangle_setup$inc1$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16118,10 +14644,10 @@ module raster_top$triangle_setup$inc1$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc1$1
+endmodule // raster_top$core$triangle_setup$inc1$1
 
 
-module raster_top$triangle_setup$inc1$10(d,q,clock);
+module raster_top$core$triangle_setup$inc1$10(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16137,10 +14663,10 @@ module raster_top$triangle_setup$inc1$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc1$10
+endmodule // raster_top$core$triangle_setup$inc1$10
 
 
-module raster_top$triangle_setup$inc1$11(d,q,clock);
+module raster_top$core$triangle_setup$inc1$11(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16156,10 +14682,10 @@ module raster_top$triangle_setup$inc1$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc1$11
+endmodule // raster_top$core$triangle_setup$inc1$11
 
 
-module raster_top$triangle_setup$inc1$2(d,q,clock);
+module raster_top$core$triangle_setup$inc1$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16175,10 +14701,10 @@ module raster_top$triangle_setup$inc1$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc1$2
+endmodule // raster_top$core$triangle_setup$inc1$2
 
 
-module raster_top$triangle_setup$inc1$3(d,q,clock);
+module raster_top$core$triangle_setup$inc1$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16194,10 +14720,10 @@ module raster_top$triangle_setup$inc1$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc1$3
+endmodule // raster_top$core$triangle_setup$inc1$3
 
 
-module raster_top$triangle_setup$inc1$4(d,q,clock);
+module raster_top$core$triangle_setup$inc1$4(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16213,10 +14739,10 @@ module raster_top$triangle_setup$inc1$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc1$4
+endmodule // raster_top$core$triangle_setup$inc1$4
 
 
-module raster_top$triangle_setup$inc1$5(d,q,clock);
+module raster_top$core$triangle_setup$inc1$5(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16232,10 +14758,10 @@ module raster_top$triangle_setup$inc1$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc1$5
+endmodule // raster_top$core$triangle_setup$inc1$5
 
 
-module raster_top$triangle_setup$inc1$6(d,q,clock);
+module raster_top$core$triangle_setup$inc1$6(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16251,10 +14777,10 @@ module raster_top$triangle_setup$inc1$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc1$6
+endmodule // raster_top$core$triangle_setup$inc1$6
 
 
-module raster_top$triangle_setup$inc1$7(d,q,clock);
+module raster_top$core$triangle_setup$inc1$7(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16270,10 +14796,10 @@ module raster_top$triangle_setup$inc1$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc1$7
+endmodule // raster_top$core$triangle_setup$inc1$7
 
 
-module raster_top$triangle_setup$inc1$8(d,q,clock);
+module raster_top$core$triangle_setup$inc1$8(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16289,10 +14815,10 @@ module raster_top$triangle_setup$inc1$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc1$8
+endmodule // raster_top$core$triangle_setup$inc1$8
 
 
-module raster_top$triangle_setup$inc1$9(d,q,clock);
+module raster_top$core$triangle_setup$inc1$9(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16308,10 +14834,10 @@ module raster_top$triangle_setup$inc1$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$inc1$9
+endmodule // raster_top$core$triangle_setup$inc1$9
 
 
-module raster_top$triangle_setup$mant(d,q,clock);
+module raster_top$core$triangle_setup$mant(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -16327,10 +14853,10 @@ module raster_top$triangle_setup$mant(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$mant
+endmodule // raster_top$core$triangle_setup$mant
 
 
-module raster_top$triangle_setup$mul$0(a,b,p);
+module raster_top$core$triangle_setup$mul$0(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -16341,10 +14867,10 @@ module raster_top$triangle_setup$mul$0(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$triangle_setup$mul$0
+endmodule // raster_top$core$triangle_setup$mul$0
 
 
-module raster_top$triangle_setup$mul$1(a,b,p);
+module raster_top$core$triangle_setup$mul$1(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -16355,10 +14881,10 @@ module raster_top$triangle_setup$mul$1(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$triangle_setup$mul$1
+endmodule // raster_top$core$triangle_setup$mul$1
 
 
-module raster_top$triangle_setup$mul$2(a,b,p);
+module raster_top$core$triangle_setup$mul$2(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -16369,10 +14895,10 @@ module raster_top$triangle_setup$mul$2(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$triangle_setup$mul$2
+endmodule // raster_top$core$triangle_setup$mul$2
 
 
-module raster_top$triangle_setup$mul$3(a,b,p);
+module raster_top$core$triangle_setup$mul$3(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -16383,10 +14909,10 @@ module raster_top$triangle_setup$mul$3(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$triangle_setup$mul$3
+endmodule // raster_top$core$triangle_setup$mul$3
 
 
-module raster_top$triangle_setup$mul$4(a,b,p);
+module raster_top$core$triangle_setup$mul$4(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -16397,10 +14923,10 @@ module raster_top$triangle_setup$mul$4(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$triangle_setup$mul$4
+endmodule // raster_top$core$triangle_setup$mul$4
 
 
-module raster_top$triangle_setup$mul$5(a,b,p);
+module raster_top$core$triangle_setup$mul$5(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -16411,10 +14937,10 @@ module raster_top$triangle_setup$mul$5(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$triangle_setup$mul$5
+endmodule // raster_top$core$triangle_setup$mul$5
 
 
-module raster_top$triangle_setup$mul$6(a,b,p);
+module raster_top$core$triangle_setup$mul$6(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -16425,10 +14951,10 @@ module raster_top$triangle_setup$mul$6(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$triangle_setup$mul$6
+endmodule // raster_top$core$triangle_setup$mul$6
 
 
-module raster_top$triangle_setup$num$0(d,q,clock);
+module raster_top$core$triangle_setup$num$0(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -16444,10 +14970,10 @@ module raster_top$triangle_setup$num$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$num$0
+endmodule // raster_top$core$triangle_setup$num$0
 
 
-module raster_top$triangle_setup$num$1(d,q,clock);
+module raster_top$core$triangle_setup$num$1(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -16463,10 +14989,10 @@ module raster_top$triangle_setup$num$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$num$1
+endmodule // raster_top$core$triangle_setup$num$1
 
 
-module raster_top$triangle_setup$num$2(d,q,clock);
+module raster_top$core$triangle_setup$num$2(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -16482,10 +15008,10 @@ module raster_top$triangle_setup$num$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$num$2
+endmodule // raster_top$core$triangle_setup$num$2
 
 
-module raster_top$triangle_setup$p$0(d,q,clock);
+module raster_top$core$triangle_setup$p$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -16501,10 +15027,10 @@ module raster_top$triangle_setup$p$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$p$0
+endmodule // raster_top$core$triangle_setup$p$0
 
 
-module raster_top$triangle_setup$p$1(d,q,clock);
+module raster_top$core$triangle_setup$p$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -16520,10 +15046,10 @@ module raster_top$triangle_setup$p$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$p$1
+endmodule // raster_top$core$triangle_setup$p$1
 
 
-module raster_top$triangle_setup$p$2(d,q,clock);
+module raster_top$core$triangle_setup$p$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -16539,10 +15065,10 @@ module raster_top$triangle_setup$p$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$p$2
+endmodule // raster_top$core$triangle_setup$p$2
 
 
-module raster_top$triangle_setup$p$3(d,q,clock);
+module raster_top$core$triangle_setup$p$3(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -16558,10 +15084,10 @@ module raster_top$triangle_setup$p$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$p$3
+endmodule // raster_top$core$triangle_setup$p$3
 
 
-module raster_top$triangle_setup$plane$0(d,q,clock);
+module raster_top$core$triangle_setup$plane$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16577,10 +15103,10 @@ module raster_top$triangle_setup$plane$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$plane$0
+endmodule // raster_top$core$triangle_setup$plane$0
 
 
-module raster_top$triangle_setup$plane$1(d,q,clock);
+module raster_top$core$triangle_setup$plane$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16596,10 +15122,10 @@ module raster_top$triangle_setup$plane$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$plane$1
+endmodule // raster_top$core$triangle_setup$plane$1
 
 
-module raster_top$triangle_setup$plane$10(d,q,clock);
+module raster_top$core$triangle_setup$plane$10(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16615,10 +15141,10 @@ module raster_top$triangle_setup$plane$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$plane$10
+endmodule // raster_top$core$triangle_setup$plane$10
 
 
-module raster_top$triangle_setup$plane$11(d,q,clock);
+module raster_top$core$triangle_setup$plane$11(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16634,10 +15160,10 @@ module raster_top$triangle_setup$plane$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$plane$11
+endmodule // raster_top$core$triangle_setup$plane$11
 
 
-module raster_top$triangle_setup$plane$2(d,q,clock);
+module raster_top$core$triangle_setup$plane$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16653,10 +15179,10 @@ module raster_top$triangle_setup$plane$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$plane$2
+endmodule // raster_top$core$triangle_setup$plane$2
 
 
-module raster_top$triangle_setup$plane$3(d,q,clock);
+module raster_top$core$triangle_setup$plane$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16672,10 +15198,10 @@ module raster_top$triangle_setup$plane$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$plane$3
+endmodule // raster_top$core$triangle_setup$plane$3
 
 
-module raster_top$triangle_setup$plane$4(d,q,clock);
+module raster_top$core$triangle_setup$plane$4(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16691,10 +15217,10 @@ module raster_top$triangle_setup$plane$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$plane$4
+endmodule // raster_top$core$triangle_setup$plane$4
 
 
-module raster_top$triangle_setup$plane$5(d,q,clock);
+module raster_top$core$triangle_setup$plane$5(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16710,10 +15236,10 @@ module raster_top$triangle_setup$plane$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$plane$5
+endmodule // raster_top$core$triangle_setup$plane$5
 
 
-module raster_top$triangle_setup$plane$6(d,q,clock);
+module raster_top$core$triangle_setup$plane$6(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16729,10 +15255,10 @@ module raster_top$triangle_setup$plane$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$plane$6
+endmodule // raster_top$core$triangle_setup$plane$6
 
 
-module raster_top$triangle_setup$plane$7(d,q,clock);
+module raster_top$core$triangle_setup$plane$7(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16748,10 +15274,10 @@ module raster_top$triangle_setup$plane$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$plane$7
+endmodule // raster_top$core$triangle_setup$plane$7
 
 
-module raster_top$triangle_setup$plane$8(d,q,clock);
+module raster_top$core$triangle_setup$plane$8(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16767,10 +15293,10 @@ module raster_top$triangle_setup$plane$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$plane$8
+endmodule // raster_top$core$triangle_setup$plane$8
 
 
-module raster_top$triangle_setup$plane$9(d,q,clock);
+module raster_top$core$triangle_setup$plane$9(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -16786,10 +15312,10 @@ module raster_top$triangle_setup$plane$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$plane$9
+endmodule // raster_top$core$triangle_setup$plane$9
 
 
-module raster_top$triangle_setup$q$0(d,q,clock);
+module raster_top$core$triangle_setup$q$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -16805,10 +15331,10 @@ module raster_top$triangle_setup$q$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$q$0
+endmodule // raster_top$core$triangle_setup$q$0
 
 
-module raster_top$triangle_setup$q$1(d,q,clock);
+module raster_top$core$triangle_setup$q$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -16824,10 +15350,10 @@ module raster_top$triangle_setup$q$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$q$1
+endmodule // raster_top$core$triangle_setup$q$1
 
 
-module raster_top$triangle_setup$q$2(d,q,clock);
+module raster_top$core$triangle_setup$q$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -16843,10 +15369,10 @@ module raster_top$triangle_setup$q$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$q$2
+endmodule // raster_top$core$triangle_setup$q$2
 
 
-module raster_top$triangle_setup$r$0(d,q,clock);
+module raster_top$core$triangle_setup$r$0(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -16862,10 +15388,10 @@ module raster_top$triangle_setup$r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$r$0
+endmodule // raster_top$core$triangle_setup$r$0
 
 
-module raster_top$triangle_setup$r$1(d,q,clock);
+module raster_top$core$triangle_setup$r$1(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -16881,10 +15407,10 @@ module raster_top$triangle_setup$r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$r$1
+endmodule // raster_top$core$triangle_setup$r$1
 
 
-module raster_top$triangle_setup$r$2(d,q,clock);
+module raster_top$core$triangle_setup$r$2(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -16900,10 +15426,10 @@ module raster_top$triangle_setup$r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$r$2
+endmodule // raster_top$core$triangle_setup$r$2
 
 
-module raster_top$triangle_setup$rho$0(d,q,clock);
+module raster_top$core$triangle_setup$rho$0(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -16919,10 +15445,10 @@ module raster_top$triangle_setup$rho$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$rho$0
+endmodule // raster_top$core$triangle_setup$rho$0
 
 
-module raster_top$triangle_setup$rho$1(d,q,clock);
+module raster_top$core$triangle_setup$rho$1(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -16938,10 +15464,10 @@ module raster_top$triangle_setup$rho$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$rho$1
+endmodule // raster_top$core$triangle_setup$rho$1
 
 
-module raster_top$triangle_setup$rho$2(d,q,clock);
+module raster_top$core$triangle_setup$rho$2(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -16957,10 +15483,10 @@ module raster_top$triangle_setup$rho$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$rho$2
+endmodule // raster_top$core$triangle_setup$rho$2
 
 
-module raster_top$triangle_setup$t(d,q,clock);
+module raster_top$core$triangle_setup$t(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16976,10 +15502,10 @@ module raster_top$triangle_setup$t(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$t
+endmodule // raster_top$core$triangle_setup$t
 
 
-module raster_top$triangle_setup$vc$0(d,q,clock);
+module raster_top$core$triangle_setup$vc$0(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16995,10 +15521,10 @@ module raster_top$triangle_setup$vc$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vc$0
+endmodule // raster_top$core$triangle_setup$vc$0
 
 
-module raster_top$triangle_setup$vc$1(d,q,clock);
+module raster_top$core$triangle_setup$vc$1(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -17014,10 +15540,10 @@ module raster_top$triangle_setup$vc$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vc$1
+endmodule // raster_top$core$triangle_setup$vc$1
 
 
-module raster_top$triangle_setup$vc$2(d,q,clock);
+module raster_top$core$triangle_setup$vc$2(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -17033,10 +15559,10 @@ module raster_top$triangle_setup$vc$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vc$2
+endmodule // raster_top$core$triangle_setup$vc$2
 
 
-module raster_top$triangle_setup$vc$3(d,q,clock);
+module raster_top$core$triangle_setup$vc$3(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -17052,10 +15578,10 @@ module raster_top$triangle_setup$vc$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vc$3
+endmodule // raster_top$core$triangle_setup$vc$3
 
 
-module raster_top$triangle_setup$vc$4(d,q,clock);
+module raster_top$core$triangle_setup$vc$4(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -17071,10 +15597,10 @@ module raster_top$triangle_setup$vc$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vc$4
+endmodule // raster_top$core$triangle_setup$vc$4
 
 
-module raster_top$triangle_setup$vc$5(d,q,clock);
+module raster_top$core$triangle_setup$vc$5(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -17090,10 +15616,10 @@ module raster_top$triangle_setup$vc$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vc$5
+endmodule // raster_top$core$triangle_setup$vc$5
 
 
-module raster_top$triangle_setup$vc$6(d,q,clock);
+module raster_top$core$triangle_setup$vc$6(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -17109,10 +15635,10 @@ module raster_top$triangle_setup$vc$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vc$6
+endmodule // raster_top$core$triangle_setup$vc$6
 
 
-module raster_top$triangle_setup$vc$7(d,q,clock);
+module raster_top$core$triangle_setup$vc$7(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -17128,10 +15654,10 @@ module raster_top$triangle_setup$vc$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vc$7
+endmodule // raster_top$core$triangle_setup$vc$7
 
 
-module raster_top$triangle_setup$vc$8(d,q,clock);
+module raster_top$core$triangle_setup$vc$8(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -17147,10 +15673,10 @@ module raster_top$triangle_setup$vc$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vc$8
+endmodule // raster_top$core$triangle_setup$vc$8
 
 
-module raster_top$triangle_setup$vx$0(d,q,clock);
+module raster_top$core$triangle_setup$vx$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17166,10 +15692,10 @@ module raster_top$triangle_setup$vx$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vx$0
+endmodule // raster_top$core$triangle_setup$vx$0
 
 
-module raster_top$triangle_setup$vx$1(d,q,clock);
+module raster_top$core$triangle_setup$vx$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17185,10 +15711,10 @@ module raster_top$triangle_setup$vx$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vx$1
+endmodule // raster_top$core$triangle_setup$vx$1
 
 
-module raster_top$triangle_setup$vx$2(d,q,clock);
+module raster_top$core$triangle_setup$vx$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17204,10 +15730,10 @@ module raster_top$triangle_setup$vx$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vx$2
+endmodule // raster_top$core$triangle_setup$vx$2
 
 
-module raster_top$triangle_setup$vy$0(d,q,clock);
+module raster_top$core$triangle_setup$vy$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17223,10 +15749,10 @@ module raster_top$triangle_setup$vy$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vy$0
+endmodule // raster_top$core$triangle_setup$vy$0
 
 
-module raster_top$triangle_setup$vy$1(d,q,clock);
+module raster_top$core$triangle_setup$vy$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17242,10 +15768,10 @@ module raster_top$triangle_setup$vy$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vy$1
+endmodule // raster_top$core$triangle_setup$vy$1
 
 
-module raster_top$triangle_setup$vy$2(d,q,clock);
+module raster_top$core$triangle_setup$vy$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17261,10 +15787,10 @@ module raster_top$triangle_setup$vy$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vy$2
+endmodule // raster_top$core$triangle_setup$vy$2
 
 
-module raster_top$triangle_setup$vz$0(d,q,clock);
+module raster_top$core$triangle_setup$vz$0(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -17280,10 +15806,10 @@ module raster_top$triangle_setup$vz$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vz$0
+endmodule // raster_top$core$triangle_setup$vz$0
 
 
-module raster_top$triangle_setup$vz$1(d,q,clock);
+module raster_top$core$triangle_setup$vz$1(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -17299,10 +15825,10 @@ module raster_top$triangle_setup$vz$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vz$1
+endmodule // raster_top$core$triangle_setup$vz$1
 
 
-module raster_top$triangle_setup$vz$2(d,q,clock);
+module raster_top$core$triangle_setup$vz$2(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -17318,10 +15844,10 @@ module raster_top$triangle_setup$vz$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$vz$2
+endmodule // raster_top$core$triangle_setup$vz$2
 
 
-module raster_top$triangle_setup$x$0(d,q,clock);
+module raster_top$core$triangle_setup$x$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -17337,10 +15863,10 @@ module raster_top$triangle_setup$x$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$x$0
+endmodule // raster_top$core$triangle_setup$x$0
 
 
-module raster_top$triangle_setup$x$1(d,q,clock);
+module raster_top$core$triangle_setup$x$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -17356,10 +15882,10 @@ module raster_top$triangle_setup$x$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$x$1
+endmodule // raster_top$core$triangle_setup$x$1
 
 
-module raster_top$triangle_setup$x$2(d,q,clock);
+module raster_top$core$triangle_setup$x$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -17375,4 +15901,1633 @@ module raster_top$triangle_setup$x$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$triangle_setup$x$2
+endmodule // raster_top$core$triangle_setup$x$2
+
+
+module raster_top$cull_sort(clock,width,height,cull_back,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v0_iw,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v1_iw,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_v2_iw,out_valid,out_ready,out_v0_x,out_v0_y,out_v0_z,out_v0_c0,out_v0_c1,out_v0_c2,out_v0_iw,out_v1_x,out_v1_y,out_v1_z,out_v1_c0,out_v1_c1,out_v1_c2,out_v1_iw,out_v2_x,out_v2_y,out_v2_z,out_v2_c0,out_v2_c1,out_v2_c2,out_v2_iw,out_crosses,verdict_valid,verdict_code,verdict_outside);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [10:0] width;
+    input wire  [10:0] height;
+    input wire  cull_back;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  [15:0] inp_v0_x;
+    input wire  [15:0] inp_v0_y;
+    input wire  [17:0] inp_v0_z;
+    input wire  [7:0] inp_v0_c0;
+    input wire  [7:0] inp_v0_c1;
+    input wire  [7:0] inp_v0_c2;
+    input wire  [15:0] inp_v0_iw;
+    input wire  [15:0] inp_v1_x;
+    input wire  [15:0] inp_v1_y;
+    input wire  [17:0] inp_v1_z;
+    input wire  [7:0] inp_v1_c0;
+    input wire  [7:0] inp_v1_c1;
+    input wire  [7:0] inp_v1_c2;
+    input wire  [15:0] inp_v1_iw;
+    input wire  [15:0] inp_v2_x;
+    input wire  [15:0] inp_v2_y;
+    input wire  [17:0] inp_v2_z;
+    input wire  [7:0] inp_v2_c0;
+    input wire  [7:0] inp_v2_c1;
+    input wire  [7:0] inp_v2_c2;
+    input wire  [15:0] inp_v2_iw;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [15:0] out_v0_x;
+    output reg  [15:0] out_v0_y;
+    output reg  [17:0] out_v0_z;
+    output reg  [7:0] out_v0_c0;
+    output reg  [7:0] out_v0_c1;
+    output reg  [7:0] out_v0_c2;
+    output reg  [15:0] out_v0_iw;
+    output reg  [15:0] out_v1_x;
+    output reg  [15:0] out_v1_y;
+    output reg  [17:0] out_v1_z;
+    output reg  [7:0] out_v1_c0;
+    output reg  [7:0] out_v1_c1;
+    output reg  [7:0] out_v1_c2;
+    output reg  [15:0] out_v1_iw;
+    output reg  [15:0] out_v2_x;
+    output reg  [15:0] out_v2_y;
+    output reg  [17:0] out_v2_z;
+    output reg  [7:0] out_v2_c0;
+    output reg  [7:0] out_v2_c1;
+    output reg  [7:0] out_v2_c2;
+    output reg  [15:0] out_v2_iw;
+    output reg  [5:0] out_crosses;
+    output reg  verdict_valid;
+    output reg  [1:0] verdict_code;
+    output reg  [5:0] verdict_outside;
+    
+    // Constant declarations
+    localparam  z_max = 18'b1111111111111111;
+    localparam  half = 16'h8000;
+    localparam  xy_msb = 8'hf;
+    localparam  z_msb = 8'h11;
+    localparam  area_msb = 8'h21;
+    localparam  delta_msb = 8'h10;
+    localparam  frac = 8'h4;
+    localparam  passed = 2'b0;
+    localparam  outside = 2'b1;
+    localparam  back_face = 2'b10;
+    localparam  zero_area = 2'b11;
+    
+    // Stub signals
+    reg  [16:0] area_mul$0$a;
+    reg  [16:0] area_mul$0$b;
+    wire  [33:0] area_mul$0$p;
+    reg  [16:0] area_mul$1$a;
+    reg  [16:0] area_mul$1$b;
+    wire  [33:0] area_mul$1$p;
+    reg  [15:0] sx$0$d;
+    wire  [15:0] sx$0$q;
+    reg  sx$0$clock;
+    reg  [15:0] sx$1$d;
+    wire  [15:0] sx$1$q;
+    reg  sx$1$clock;
+    reg  [15:0] sx$2$d;
+    wire  [15:0] sx$2$q;
+    reg  sx$2$clock;
+    reg  [15:0] sy$0$d;
+    wire  [15:0] sy$0$q;
+    reg  sy$0$clock;
+    reg  [15:0] sy$1$d;
+    wire  [15:0] sy$1$q;
+    reg  sy$1$clock;
+    reg  [15:0] sy$2$d;
+    wire  [15:0] sy$2$q;
+    reg  sy$2$clock;
+    reg  [17:0] sz$0$d;
+    wire  [17:0] sz$0$q;
+    reg  sz$0$clock;
+    reg  [17:0] sz$1$d;
+    wire  [17:0] sz$1$q;
+    reg  sz$1$clock;
+    reg  [17:0] sz$2$d;
+    wire  [17:0] sz$2$q;
+    reg  sz$2$clock;
+    reg  [7:0] sc$0$d;
+    wire  [7:0] sc$0$q;
+    reg  sc$0$clock;
+    reg  [7:0] sc$1$d;
+    wire  [7:0] sc$1$q;
+    reg  sc$1$clock;
+    reg  [7:0] sc$2$d;
+    wire  [7:0] sc$2$q;
+    reg  sc$2$clock;
+    reg  [7:0] sc$3$d;
+    wire  [7:0] sc$3$q;
+    reg  sc$3$clock;
+    reg  [7:0] sc$4$d;
+    wire  [7:0] sc$4$q;
+    reg  sc$4$clock;
+    reg  [7:0] sc$5$d;
+    wire  [7:0] sc$5$q;
+    reg  sc$5$clock;
+    reg  [7:0] sc$6$d;
+    wire  [7:0] sc$6$q;
+    reg  sc$6$clock;
+    reg  [7:0] sc$7$d;
+    wire  [7:0] sc$7$q;
+    reg  sc$7$clock;
+    reg  [7:0] sc$8$d;
+    wire  [7:0] sc$8$q;
+    reg  sc$8$clock;
+    reg  [15:0] siw$0$d;
+    wire  [15:0] siw$0$q;
+    reg  siw$0$clock;
+    reg  [15:0] siw$1$d;
+    wire  [15:0] siw$1$q;
+    reg  siw$1$clock;
+    reg  [15:0] siw$2$d;
+    wire  [15:0] siw$2$q;
+    reg  siw$2$clock;
+    reg  [5:0] crosses$d;
+    wire  [5:0] crosses$q;
+    reg  crosses$clock;
+    reg  [1:0] code_r$d;
+    wire  [1:0] code_r$q;
+    reg  code_r$clock;
+    reg  [5:0] outside_r$d;
+    wire  [5:0] outside_r$q;
+    reg  outside_r$clock;
+    reg  full$d;
+    wire  full$q;
+    reg  full$clock;
+    
+    // Local signals
+    reg  [15:0] vx$0;
+    reg  [15:0] vx$1;
+    reg  [15:0] vx$2;
+    reg  [15:0] vy$0;
+    reg  [15:0] vy$1;
+    reg  [15:0] vy$2;
+    reg  [17:0] vz$0;
+    reg  [17:0] vz$1;
+    reg  [17:0] vz$2;
+    reg  [7:0] vc$0;
+    reg  [7:0] vc$1;
+    reg  [7:0] vc$2;
+    reg  [7:0] vc$3;
+    reg  [7:0] vc$4;
+    reg  [7:0] vc$5;
+    reg  [7:0] vc$6;
+    reg  [7:0] vc$7;
+    reg  [7:0] vc$8;
+    reg  [15:0] viw$0;
+    reg  [15:0] viw$1;
+    reg  [15:0] viw$2;
+    reg  [5:0] oc$0;
+    reg  [5:0] oc$1;
+    reg  [5:0] oc$2;
+    reg  left$0;
+    reg  left$1;
+    reg  left$2;
+    reg  right_of$0;
+    reg  right_of$1;
+    reg  right_of$2;
+    reg  top$0;
+    reg  top$1;
+    reg  top$2;
+    reg  below$0;
+    reg  below$1;
+    reg  below$2;
+    reg  near$0;
+    reg  near$1;
+    reg  near$2;
+    reg  far$0;
+    reg  far$1;
+    reg  far$2;
+    reg  [15:0] right;
+    reg  [15:0] bottom;
+    reg  [16:0] e1x;
+    reg  [16:0] e1y;
+    reg  [16:0] e2x;
+    reg  [16:0] e2y;
+    reg  [33:0] area;
+    reg  [15:0] key$0;
+    reg  [15:0] key$1;
+    reg  [15:0] key$2;
+    reg  le01;
+    reg  le12;
+    reg  le02;
+    reg  gt01;
+    reg  gt12;
+    reg  gt02;
+    reg  [1:0] rank$0;
+    reg  [1:0] rank$1;
+    reg  [1:0] rank$2;
+    reg  [1:0] code;
+    reg  take;
+    reg  leave;
+    
+    // Sub module instances
+    raster_top$cull_sort$area_mul$0 area_mul$0(
+        .a(area_mul$0$a),
+        .b(area_mul$0$b),
+        .p(area_mul$0$p)
+    );
+    raster_top$cull_sort$area_mul$1 area_mul$1(
+        .a(area_mul$1$a),
+        .b(area_mul$1$b),
+        .p(area_mul$1$p)
+    );
+    raster_top$cull_sort$sx$0 sx$0(
+        .d(sx$0$d),
+        .q(sx$0$q),
+        .clock(sx$0$clock)
+    );
+    raster_top$cull_sort$sx$1 sx$1(
+        .d(sx$1$d),
+        .q(sx$1$q),
+        .clock(sx$1$clock)
+    );
+    raster_top$cull_sort$sx$2 sx$2(
+        .d(sx$2$d),
+        .q(sx$2$q),
+        .clock(sx$2$clock)
+    );
+    raster_top$cull_sort$sy$0 sy$0(
+        .d(sy$0$d),
+        .q(sy$0$q),
+        .clock(sy$0$clock)
+    );
+    raster_top$cull_sort$sy$1 sy$1(
+        .d(sy$1$d),
+        .q(sy$1$q),
+        .clock(sy$1$clock)
+    );
+    raster_top$cull_sort$sy$2 sy$2(
+        .d(sy$2$d),
+        .q(sy$2$q),
+        .clock(sy$2$clock)
+    );
+    raster_top$cull_sort$sz$0 sz$0(
+        .d(sz$0$d),
+        .q(sz$0$q),
+        .clock(sz$0$clock)
+    );
+    raster_top$cull_sort$sz$1 sz$1(
+        .d(sz$1$d),
+        .q(sz$1$q),
+        .clock(sz$1$clock)
+    );
+    raster_top$cull_sort$sz$2 sz$2(
+        .d(sz$2$d),
+        .q(sz$2$q),
+        .clock(sz$2$clock)
+    );
+    raster_top$cull_sort$sc$0 sc$0(
+        .d(sc$0$d),
+        .q(sc$0$q),
+        .clock(sc$0$clock)
+    );
+    raster_top$cull_sort$sc$1 sc$1(
+        .d(sc$1$d),
+        .q(sc$1$q),
+        .clock(sc$1$clock)
+    );
+    raster_top$cull_sort$sc$2 sc$2(
+        .d(sc$2$d),
+        .q(sc$2$q),
+        .clock(sc$2$clock)
+    );
+    raster_top$cull_sort$sc$3 sc$3(
+        .d(sc$3$d),
+        .q(sc$3$q),
+        .clock(sc$3$clock)
+    );
+    raster_top$cull_sort$sc$4 sc$4(
+        .d(sc$4$d),
+        .q(sc$4$q),
+        .clock(sc$4$clock)
+    );
+    raster_top$cull_sort$sc$5 sc$5(
+        .d(sc$5$d),
+        .q(sc$5$q),
+        .clock(sc$5$clock)
+    );
+    raster_top$cull_sort$sc$6 sc$6(
+        .d(sc$6$d),
+        .q(sc$6$q),
+        .clock(sc$6$clock)
+    );
+    raster_top$cull_sort$sc$7 sc$7(
+        .d(sc$7$d),
+        .q(sc$7$q),
+        .clock(sc$7$clock)
+    );
+    raster_top$cull_sort$sc$8 sc$8(
+        .d(sc$8$d),
+        .q(sc$8$q),
+        .clock(sc$8$clock)
+    );
+    raster_top$cull_sort$siw$0 siw$0(
+        .d(siw$0$d),
+        .q(siw$0$q),
+        .clock(siw$0$clock)
+    );
+    raster_top$cull_sort$siw$1 siw$1(
+        .d(siw$1$d),
+        .q(siw$1$q),
+        .clock(siw$1$clock)
+    );
+    raster_top$cull_sort$siw$2 siw$2(
+        .d(siw$2$d),
+        .q(siw$2$q),
+        .clock(siw$2$clock)
+    );
+    raster_top$cull_sort$crosses crosses(
+        .d(crosses$d),
+        .q(crosses$q),
+        .clock(crosses$clock)
+    );
+    raster_top$cull_sort$code_r code_r(
+        .d(code_r$d),
+        .q(code_r$q),
+        .clock(code_r$clock)
+    );
+    raster_top$cull_sort$outside_r outside_r(
+        .d(outside_r$d),
+        .q(outside_r$q),
+        .clock(outside_r$clock)
+    );
+    raster_top$cull_sort$full full(
+        .d(full$d),
+        .q(full$q),
+        .clock(full$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        crosses$clock = clock;
+        code_r$clock = clock;
+        outside_r$clock = clock;
+        full$clock = clock;
+        crosses$d = crosses$q;
+        code_r$d = code_r$q;
+        outside_r$d = outside_r$q;
+        full$d = full$q;
+        sx$0$clock = clock;
+        sx$0$d = sx$0$q;
+        sy$0$clock = clock;
+        sy$0$d = sy$0$q;
+        sz$0$clock = clock;
+        sz$0$d = sz$0$q;
+        siw$0$clock = clock;
+        siw$0$d = siw$0$q;
+        sx$1$clock = clock;
+        sx$1$d = sx$1$q;
+        sy$1$clock = clock;
+        sy$1$d = sy$1$q;
+        sz$1$clock = clock;
+        sz$1$d = sz$1$q;
+        siw$1$clock = clock;
+        siw$1$d = siw$1$q;
+        sx$2$clock = clock;
+        sx$2$d = sx$2$q;
+        sy$2$clock = clock;
+        sy$2$d = sy$2$q;
+        sz$2$clock = clock;
+        sz$2$d = sz$2$q;
+        siw$2$clock = clock;
+        siw$2$d = siw$2$q;
+        sc$0$clock = clock;
+        sc$0$d = sc$0$q;
+        sc$1$clock = clock;
+        sc$1$d = sc$1$q;
+        sc$2$clock = clock;
+        sc$2$d = sc$2$q;
+        sc$3$clock = clock;
+        sc$3$d = sc$3$q;
+        sc$4$clock = clock;
+        sc$4$d = sc$4$q;
+        sc$5$clock = clock;
+        sc$5$d = sc$5$q;
+        sc$6$clock = clock;
+        sc$6$d = sc$6$q;
+        sc$7$clock = clock;
+        sc$7$d = sc$7$q;
+        sc$8$clock = clock;
+        sc$8$d = sc$8$q;
+        vx$0 = inp_v0_x;
+        vy$0 = inp_v0_y;
+        vz$0 = inp_v0_z;
+        vc$0 = inp_v0_c0;
+        vc$1 = inp_v0_c1;
+        vc$2 = inp_v0_c2;
+        viw$0 = inp_v0_iw;
+        vx$1 = inp_v1_x;
+        vy$1 = inp_v1_y;
+        vz$1 = inp_v1_z;
+        vc$3 = inp_v1_c0;
+        vc$4 = inp_v1_c1;
+        vc$5 = inp_v1_c2;
+        viw$1 = inp_v1_iw;
+        vx$2 = inp_v2_x;
+        vy$2 = inp_v2_y;
+        vz$2 = inp_v2_z;
+        vc$6 = inp_v2_c0;
+        vc$7 = inp_v2_c1;
+        vc$8 = inp_v2_c2;
+        viw$2 = inp_v2_iw;
+        right = ((width) & 16'hffff) << frac;
+        bottom = ((height) & 16'hffff) << frac;
+        left$0 = vx$0[xy_msb];
+        right_of$0 = ~left$0 & (vx$0 > right);
+        top$0 = vy$0[xy_msb];
+        below$0 = ~top$0 & (vy$0 > bottom);
+        near$0 = vz$0[z_msb];
+        far$0 = ~near$0 & (vz$0 > z_max);
+        oc$0 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$0) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$0) << (32'h1))) & ~(1 << (32'h2)) | ((top$0) << (32'h2))) & ~(1 << (32'h3)) | ((below$0) << (32'h3))) & ~(1 << (32'h4)) | ((near$0) << (32'h4))) & ~(1 << (32'h5)) | ((far$0) << (32'h5)));
+        left$1 = vx$1[xy_msb];
+        right_of$1 = ~left$1 & (vx$1 > right);
+        top$1 = vy$1[xy_msb];
+        below$1 = ~top$1 & (vy$1 > bottom);
+        near$1 = vz$1[z_msb];
+        far$1 = ~near$1 & (vz$1 > z_max);
+        oc$1 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$1) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$1) << (32'h1))) & ~(1 << (32'h2)) | ((top$1) << (32'h2))) & ~(1 << (32'h3)) | ((below$1) << (32'h3))) & ~(1 << (32'h4)) | ((near$1) << (32'h4))) & ~(1 << (32'h5)) | ((far$1) << (32'h5)));
+        left$2 = vx$2[xy_msb];
+        right_of$2 = ~left$2 & (vx$2 > right);
+        top$2 = vy$2[xy_msb];
+        below$2 = ~top$2 & (vy$2 > bottom);
+        near$2 = vz$2[z_msb];
+        far$2 = ~near$2 & (vz$2 > z_max);
+        oc$2 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$2) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$2) << (32'h1))) & ~(1 << (32'h2)) | ((top$2) << (32'h2))) & ~(1 << (32'h3)) | ((below$2) << (32'h3))) & ~(1 << (32'h4)) | ((near$2) << (32'h4))) & ~(1 << (32'h5)) | ((far$2) << (32'h5)));
+        e1x = (((inp_v1_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v1_x[xy_msb]) << (delta_msb))) - (((inp_v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_x[xy_msb]) << (delta_msb)));
+        e1y = (((inp_v1_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v1_y[xy_msb]) << (delta_msb))) - (((inp_v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_y[xy_msb]) << (delta_msb)));
+        e2x = (((inp_v2_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v2_x[xy_msb]) << (delta_msb))) - (((inp_v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_x[xy_msb]) << (delta_msb)));
+        e2y = (((inp_v2_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v2_y[xy_msb]) << (delta_msb))) - (((inp_v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_y[xy_msb]) << (delta_msb)));
+        area_mul$0$a = e1x;
+        area_mul$0$b = e2y;
+        area_mul$1$a = e2x;
+        area_mul$1$b = e1y;
+        area = area_mul$0$p - area_mul$1$p;
+        code = passed;
+        if (cull_back & ~area[area_msb]) begin
+            code = back_face;
+        end
+        if (area == 32'h0) begin
+            code = zero_area;
+        end
+        if (|(oc$0 & oc$1 & oc$2)) begin
+            code = outside;
+        end
+        key$0 = vy$0 ^ half;
+        key$1 = vy$1 ^ half;
+        key$2 = vy$2 ^ half;
+        le01 = key$0 <= key$1;
+        le12 = key$1 <= key$2;
+        le02 = key$0 <= key$2;
+        gt01 = ~le01;
+        gt12 = ~le12;
+        gt02 = ~le02;
+        rank$0 = ((32'h0) & 2'h3) + gt01 + gt02;
+        rank$1 = ((32'h0) & 2'h3) + le01 + gt12;
+        rank$2 = ((32'h0) & 2'h3) + le02 + le12;
+        leave = full$q & ((code_r$q != passed) | out_ready);
+        inp_ready = ~full$q | leave;
+        take = inp_valid & inp_ready;
+        if (leave) begin
+            full$d = 1'b0;
+        end
+        if (take) begin
+            full$d = 1'b1;
+            code_r$d = code;
+            crosses$d = oc$0 | oc$1 | oc$2;
+            outside_r$d = oc$0 & oc$1 & oc$2;
+            if (rank$0 == 0) begin
+                sx$0$d = vx$0;
+                sy$0$d = vy$0;
+                sz$0$d = vz$0;
+                siw$0$d = viw$0;
+                sc$0$d = vc$0;
+                sc$1$d = vc$1;
+                sc$2$d = vc$2;
+            end
+            if (rank$1 == 0) begin
+                sx$0$d = vx$1;
+                sy$0$d = vy$1;
+                sz$0$d = vz$1;
+                siw$0$d = viw$1;
+                sc$0$d = vc$3;
+                sc$1$d = vc$4;
+                sc$2$d = vc$5;
+            end
+            if (rank$2 == 0) begin
+                sx$0$d = vx$2;
+                sy$0$d = vy$2;
+                sz$0$d = vz$2;
+                siw$0$d = viw$2;
+                sc$0$d = vc$6;
+                sc$1$d = vc$7;
+                sc$2$d = vc$8;
+            end
+            if (rank$0 == 1) begin
+                sx$1$d = vx$0;
+                sy$1$d = vy$0;
+                sz$1$d = vz$0;
+                siw$1$d = viw$0;
+                sc$3$d = vc$0;
+                sc$4$d = vc$1;
+                sc$5$d = vc$2;
+            end
+            if (rank$1 == 1) begin
+                sx$1$d = vx$1;
+                sy$1$d = vy$1;
+                sz$1$d = vz$1;
+                siw$1$d = viw$1;
+                sc$3$d = vc$3;
+                sc$4$d = vc$4;
+                sc$5$d = vc$5;
+            end
+            if (rank$2 == 1) begin
+                sx$1$d = vx$2;
+                sy$1$d = vy$2;
+                sz$1$d = vz$2;
+                siw$1$d = viw$2;
+                sc$3$d = vc$6;
+                sc$4$d = vc$7;
+                sc$5$d = vc$8;
+            end
+            if (rank$0 == 2) begin
+                sx$2$d = vx$0;
+                sy$2$d = vy$0;
+                sz$2$d = vz$0;
+                siw$2$d = viw$0;
+                sc$6$d = vc$0;
+                sc$7$d = vc$1;
+                sc$8$d = vc$2;
+            end
+            if (rank$1 == 2) begin
+                sx$2$d = vx$1;
+                sy$2$d = vy$1;
+                sz$2$d = vz$1;
+                siw$2$d = viw$1;
+                sc$6$d = vc$3;
+                sc$7$d = vc$4;
+                sc$8$d = vc$5;
+            end
+            if (rank$2 == 2) begin
+                sx$2$d = vx$2;
+                sy$2$d = vy$2;
+                sz$2$d = vz$2;
+                siw$2$d = viw$2;
+                sc$6$d = vc$6;
+                sc$7$d = vc$7;
+                sc$8$d = vc$8;
+            end
+        end
+        out_valid = full$q & (code_r$q == passed);
+        verdict_valid = leave;
+        verdict_code = code_r$q;
+        verdict_outside = outside_r$q;
+        out_crosses = crosses$q;
+        out_v0_x = sx$0$q;
+        out_v0_y = sy$0$q;
+        out_v0_z = sz$0$q;
+        out_v0_c0 = sc$0$q;
+        out_v0_c1 = sc$1$q;
+        out_v0_c2 = sc$2$q;
+        out_v0_iw = siw$0$q;
+        out_v1_x = sx$1$q;
+        out_v1_y = sy$1$q;
+        out_v1_z = sz$1$q;
+        out_v1_c0 = sc$3$q;
+        out_v1_c1 = sc$4$q;
+        out_v1_c2 = sc$5$q;
+        out_v1_iw = siw$1$q;
+        out_v2_x = sx$2$q;
+        out_v2_y = sy$2$q;
+        out_v2_z = sz$2$q;
+        out_v2_c0 = sc$6$q;
+        out_v2_c1 = sc$7$q;
+        out_v2_c2 = sc$8$q;
+        out_v2_iw = siw$2$q;
+    end
+    
+endmodule // raster_top$cull_sort
+
+
+module raster_top$cull_sort$area_mul$0(a,b,p);
+    
+    // Module arguments
+    input wire  [16:0] a;
+    input wire  [16:0] b;
+    output reg  [33:0] p;
+    
+    // Update code (custom)
+    // p = low 34 bits of a * b, both signed: a signed 34-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // raster_top$cull_sort$area_mul$0
+
+
+module raster_top$cull_sort$area_mul$1(a,b,p);
+    
+    // Module arguments
+    input wire  [16:0] a;
+    input wire  [16:0] b;
+    output reg  [33:0] p;
+    
+    // Update code (custom)
+    // p = low 34 bits of a * b, both signed: a signed 34-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // raster_top$cull_sort$area_mul$1
+
+
+module raster_top$cull_sort$code_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$code_r
+
+
+module raster_top$cull_sort$crosses(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$crosses
+
+
+module raster_top$cull_sort$full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$full
+
+
+module raster_top$cull_sort$outside_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$outside_r
+
+
+module raster_top$cull_sort$sc$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$0
+
+
+module raster_top$cull_sort$sc$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$1
+
+
+module raster_top$cull_sort$sc$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$2
+
+
+module raster_top$cull_sort$sc$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$3
+
+
+module raster_top$cull_sort$sc$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$4
+
+
+module raster_top$cull_sort$sc$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$5
+
+
+module raster_top$cull_sort$sc$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$6
+
+
+module raster_top$cull_sort$sc$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$7
+
+
+module raster_top$cull_sort$sc$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sc$8
+
+
+module raster_top$cull_sort$siw$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$siw$0
+
+
+module raster_top$cull_sort$siw$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$siw$1
+
+
+module raster_top$cull_sort$siw$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$siw$2
+
+
+module raster_top$cull_sort$sx$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sx$0
+
+
+module raster_top$cull_sort$sx$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sx$1
+
+
+module raster_top$cull_sort$sx$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sx$2
+
+
+module raster_top$cull_sort$sy$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sy$0
+
+
+module raster_top$cull_sort$sy$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sy$1
+
+
+module raster_top$cull_sort$sy$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sy$2
+
+
+module raster_top$cull_sort$sz$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sz$0
+
+
+module raster_top$cull_sort$sz$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sz$1
+
+
+module raster_top$cull_sort$sz$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$cull_sort$sz$2
+
+
+module raster_top$last_in(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$last_in
+
+
+module raster_top$pixel_out(clock,inp_valid,inp_ready,inp_x,inp_y,inp_z,inp_rgb0,inp_rgb1,inp_rgb2,mem_ready,rd_en,rd_addr,rd_z,wr_en,wr_addr,wr_z,wr_rgb,idle);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  [9:0] inp_x;
+    input wire  [9:0] inp_y;
+    input wire  [15:0] inp_z;
+    input wire  [7:0] inp_rgb0;
+    input wire  [7:0] inp_rgb1;
+    input wire  [7:0] inp_rgb2;
+    input wire  mem_ready;
+    output reg  rd_en;
+    output reg  [19:0] rd_addr;
+    input wire  [15:0] rd_z;
+    output reg  wr_en;
+    output reg  [19:0] wr_addr;
+    output reg  [15:0] wr_z;
+    output reg  [23:0] wr_rgb;
+    output reg  idle;
+    
+    // Stub signals
+    reg  s1_valid$d;
+    wire  s1_valid$q;
+    reg  s1_valid$clock;
+    reg  [19:0] s1_addr$d;
+    wire  [19:0] s1_addr$q;
+    reg  s1_addr$clock;
+    reg  [15:0] s1_z$d;
+    wire  [15:0] s1_z$q;
+    reg  s1_z$clock;
+    reg  [23:0] s1_rgb$d;
+    wire  [23:0] s1_rgb$q;
+    reg  s1_rgb$clock;
+    reg  s2_valid$d;
+    wire  s2_valid$q;
+    reg  s2_valid$clock;
+    reg  s2_write$d;
+    wire  s2_write$q;
+    reg  s2_write$clock;
+    reg  [19:0] s2_addr$d;
+    wire  [19:0] s2_addr$q;
+    reg  s2_addr$clock;
+    reg  [15:0] s2_z$d;
+    wire  [15:0] s2_z$q;
+    reg  s2_z$clock;
+    reg  [23:0] s2_rgb$d;
+    wire  [23:0] s2_rgb$q;
+    reg  s2_rgb$clock;
+    reg  s3_valid$d;
+    wire  s3_valid$q;
+    reg  s3_valid$clock;
+    reg  [19:0] s3_addr$d;
+    wire  [19:0] s3_addr$q;
+    reg  s3_addr$clock;
+    reg  [15:0] s3_z$d;
+    wire  [15:0] s3_z$q;
+    reg  s3_z$clock;
+    reg  [9:0] addr$hi;
+    reg  [9:0] addr$lo;
+    wire  [19:0] addr$out;
+    reg  [7:0] rg$hi;
+    reg  [7:0] rg$lo;
+    wire  [15:0] rg$out;
+    reg  [15:0] rgb$hi;
+    reg  [7:0] rgb$lo;
+    wire  [23:0] rgb$out;
+    
+    // Local signals
+    reg  [15:0] old_z;
+    reg  pass;
+    
+    // Sub module instances
+    raster_top$pixel_out$s1_valid s1_valid(
+        .d(s1_valid$d),
+        .q(s1_valid$q),
+        .clock(s1_valid$clock)
+    );
+    raster_top$pixel_out$s1_addr s1_addr(
+        .d(s1_addr$d),
+        .q(s1_addr$q),
+        .clock(s1_addr$clock)
+    );
+    raster_top$pixel_out$s1_z s1_z(
+        .d(s1_z$d),
+        .q(s1_z$q),
+        .clock(s1_z$clock)
+    );
+    raster_top$pixel_out$s1_rgb s1_rgb(
+        .d(s1_rgb$d),
+        .q(s1_rgb$q),
+        .clock(s1_rgb$clock)
+    );
+    raster_top$pixel_out$s2_valid s2_valid(
+        .d(s2_valid$d),
+        .q(s2_valid$q),
+        .clock(s2_valid$clock)
+    );
+    raster_top$pixel_out$s2_write s2_write(
+        .d(s2_write$d),
+        .q(s2_write$q),
+        .clock(s2_write$clock)
+    );
+    raster_top$pixel_out$s2_addr s2_addr(
+        .d(s2_addr$d),
+        .q(s2_addr$q),
+        .clock(s2_addr$clock)
+    );
+    raster_top$pixel_out$s2_z s2_z(
+        .d(s2_z$d),
+        .q(s2_z$q),
+        .clock(s2_z$clock)
+    );
+    raster_top$pixel_out$s2_rgb s2_rgb(
+        .d(s2_rgb$d),
+        .q(s2_rgb$q),
+        .clock(s2_rgb$clock)
+    );
+    raster_top$pixel_out$s3_valid s3_valid(
+        .d(s3_valid$d),
+        .q(s3_valid$q),
+        .clock(s3_valid$clock)
+    );
+    raster_top$pixel_out$s3_addr s3_addr(
+        .d(s3_addr$d),
+        .q(s3_addr$q),
+        .clock(s3_addr$clock)
+    );
+    raster_top$pixel_out$s3_z s3_z(
+        .d(s3_z$d),
+        .q(s3_z$q),
+        .clock(s3_z$clock)
+    );
+    raster_top$pixel_out$addr addr(
+        .hi(addr$hi),
+        .lo(addr$lo),
+        .out(addr$out)
+    );
+    raster_top$pixel_out$rg rg(
+        .hi(rg$hi),
+        .lo(rg$lo),
+        .out(rg$out)
+    );
+    raster_top$pixel_out$rgb rgb(
+        .hi(rgb$hi),
+        .lo(rgb$lo),
+        .out(rgb$out)
+    );
+    
+    // Update code
+    always @(*) begin
+        s1_valid$clock = clock;
+        s1_addr$clock = clock;
+        s1_z$clock = clock;
+        s1_rgb$clock = clock;
+        s2_valid$clock = clock;
+        s2_write$clock = clock;
+        s2_addr$clock = clock;
+        s2_z$clock = clock;
+        s2_rgb$clock = clock;
+        s3_valid$clock = clock;
+        s3_addr$clock = clock;
+        s3_z$clock = clock;
+        s1_valid$d = s1_valid$q;
+        s1_addr$d = s1_addr$q;
+        s1_z$d = s1_z$q;
+        s1_rgb$d = s1_rgb$q;
+        s2_valid$d = s2_valid$q;
+        s2_write$d = s2_write$q;
+        s2_addr$d = s2_addr$q;
+        s2_z$d = s2_z$q;
+        s2_rgb$d = s2_rgb$q;
+        s3_valid$d = s3_valid$q;
+        s3_addr$d = s3_addr$q;
+        s3_z$d = s3_z$q;
+        addr$hi = inp_y;
+        addr$lo = inp_x;
+        rg$hi = inp_rgb0;
+        rg$lo = inp_rgb1;
+        rgb$hi = rg$out;
+        rgb$lo = inp_rgb2;
+        inp_ready = mem_ready;
+        rd_en = inp_valid;
+        rd_addr = addr$out;
+        old_z = rd_z;
+        if (s3_valid$q & (s3_addr$q == s1_addr$q)) begin
+            old_z = s3_z$q;
+        end
+        if (s2_write$q & (s2_addr$q == s1_addr$q)) begin
+            old_z = s2_z$q;
+        end
+        pass = s1_valid$q & (s1_z$q < old_z);
+        wr_en = s2_write$q;
+        wr_addr = s2_addr$q;
+        wr_z = s2_z$q;
+        wr_rgb = s2_rgb$q;
+        idle = ~s1_valid$q & ~s2_valid$q;
+        if (mem_ready) begin
+            s1_valid$d = inp_valid;
+            s1_addr$d = addr$out;
+            s1_z$d = inp_z;
+            s1_rgb$d = rgb$out;
+            s2_valid$d = s1_valid$q;
+            s2_write$d = pass;
+            s2_addr$d = s1_addr$q;
+            s2_z$d = s1_z$q;
+            s2_rgb$d = s1_rgb$q;
+            s3_valid$d = s2_write$q;
+            s3_addr$d = s2_addr$q;
+            s3_z$d = s2_z$q;
+        end
+    end
+    
+endmodule // raster_top$pixel_out
+
+
+module raster_top$pixel_out$addr(hi,lo,out);
+    
+    // Module arguments
+    input wire  [9:0] hi;
+    input wire  [9:0] lo;
+    output reg  [19:0] out;
+    
+    // Constant declarations
+    localparam  shift = 8'ha;
+    
+    // Update code
+    always @(*) begin
+        out = (((hi) & 20'hfffff) << shift) | ((lo) & 20'hfffff);
+    end
+    
+endmodule // raster_top$pixel_out$addr
+
+
+module raster_top$pixel_out$rg(hi,lo,out);
+    
+    // Module arguments
+    input wire  [7:0] hi;
+    input wire  [7:0] lo;
+    output reg  [15:0] out;
+    
+    // Constant declarations
+    localparam  shift = 8'h8;
+    
+    // Update code
+    always @(*) begin
+        out = (((hi) & 16'hffff) << shift) | ((lo) & 16'hffff);
+    end
+    
+endmodule // raster_top$pixel_out$rg
+
+
+module raster_top$pixel_out$rgb(hi,lo,out);
+    
+    // Module arguments
+    input wire  [15:0] hi;
+    input wire  [7:0] lo;
+    output reg  [23:0] out;
+    
+    // Constant declarations
+    localparam  shift = 8'h8;
+    
+    // Update code
+    always @(*) begin
+        out = (((hi) & 24'hffffff) << shift) | ((lo) & 24'hffffff);
+    end
+    
+endmodule // raster_top$pixel_out$rgb
+
+
+module raster_top$pixel_out$s1_addr(d,q,clock);
+    
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s1_addr
+
+
+module raster_top$pixel_out$s1_rgb(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s1_rgb
+
+
+module raster_top$pixel_out$s1_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s1_valid
+
+
+module raster_top$pixel_out$s1_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s1_z
+
+
+module raster_top$pixel_out$s2_addr(d,q,clock);
+    
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s2_addr
+
+
+module raster_top$pixel_out$s2_rgb(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s2_rgb
+
+
+module raster_top$pixel_out$s2_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s2_valid
+
+
+module raster_top$pixel_out$s2_write(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s2_write
+
+
+module raster_top$pixel_out$s2_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s2_z
+
+
+module raster_top$pixel_out$s3_addr(d,q,clock);
+    
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s3_addr
+
+
+module raster_top$pixel_out$s3_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s3_valid
+
+
+module raster_top$pixel_out$s3_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$pixel_out$s3_z

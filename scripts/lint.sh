@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Verilator lint of every emitted unit in hdl-out/ and of raster_top at size classes 11 and
-# 12 (emitted under target/lint/), or of the .v files given, with -Wall.
+# Verilator lint of every emitted unit in hdl-out/, of raster_top at size classes 11 and
+# 12 and with units left out (CULL_SORT=0, PIXEL_OUT=0, both; emitted under target/lint/),
+# or of the .v files given, with -Wall.
 # Exits non-zero if any file has a warning or an error.
 #
 # Waived, and why:
@@ -29,6 +30,13 @@ if [[ ${#files[@]} -eq 0 ]]; then
     for n in 11 12; do
         cargo run --release --quiet -- emit --unit raster_top --param N=$n -o "target/lint/raster_top-N$n" >/dev/null
         files+=("target/lint/raster_top-N$n/raster_top.v")
+    done
+    # raster_top with units left out.
+    for units in "CULL_SORT=0" "PIXEL_OUT=0" "CULL_SORT=0 PIXEL_OUT=0"; do
+        dir="target/lint/raster_top-${units// /-}"
+        # shellcheck disable=SC2046 # one --param per word of $units
+        cargo run --release --quiet -- emit --unit raster_top $(printf -- '--param %s ' $units) -o "$dir" >/dev/null
+        files+=("$dir/raster_top.v")
     done
 fi
 

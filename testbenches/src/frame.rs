@@ -97,7 +97,16 @@ fn named(d: &Drive) -> Vec<(String, Value)> {
         ("mem_ready".into(), Value::new(1, d.mem_ready as u128)),
         ("rd_z".into(), Value::new(w.depth, d.rd_z as u128)),
     ];
-    for (k, v) in d.tri.iter().enumerate() {
+    out.extend(triangle_pins(d.class, &d.tri, true));
+    out
+}
+
+/// The named input port values (`inp_v<k>_*`) of triangle `tri` at size class `class`,
+/// with `inp_v<k>_iw` when `inv_w` (a `raster_top` with `cull_sort` takes it).
+pub fn triangle_pins(class: u32, tri: &[Vtx; 3], inv_w: bool) -> Vec<(String, Value)> {
+    let w = InputWidths::of(class);
+    let mut out = Vec::new();
+    for (k, v) in tri.iter().enumerate() {
         let p = |f: &str| format!("inp_v{k}_{f}");
         out.push((p("x"), raw(w.xy, v.x)));
         out.push((p("y"), raw(w.xy, v.y)));
@@ -105,7 +114,9 @@ fn named(d: &Drive) -> Vec<(String, Value)> {
         for (i, c) in v.c.iter().enumerate() {
             out.push((p(&format!("c{i}")), raw(w.color, *c)));
         }
-        out.push((p("iw"), raw(w.inv_w, v.iw)));
+        if inv_w {
+            out.push((p("iw"), raw(w.inv_w, v.iw)));
+        }
     }
     out
 }

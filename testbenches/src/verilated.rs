@@ -27,6 +27,9 @@ pub fn target_dir() -> PathBuf {
         .to_path_buf()
 }
 
+/// Serialises model builds (see [`Verilated::model`]).
+static BUILD: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
 /// One Verilog file ready to be Verilated: the runtime that builds and owns its models.
 pub struct Verilated {
     runtime: VerilatorRuntime,
@@ -90,6 +93,9 @@ impl Verilated {
             ..Default::default()
         };
         let file = self.file.to_str().ok_or_else(|| format!("{} is not UTF-8", self.file.display()))?;
+        // One build at a time in this process: two tests building the same new model at
+        // once have left marlin's build directory without its library.
+        let _one_build = BUILD.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
         let model = self
             .runtime
             .create_dyn_model(&self.unit, file, &widths, config)

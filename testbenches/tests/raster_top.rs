@@ -5,6 +5,8 @@
 
 use marlin::verilator::VerilatorRuntime;
 use model::cull_sort::Cull;
+use model::cycles::Timing;
+use model::input::Vtx;
 use model::raster_top::{self as top, frame as prepare};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -14,8 +16,9 @@ use scene::{Triangle, Trilist, Vertex};
 use std::path::Path;
 use std::process::Command;
 use testbenches::frame::{self, draw, Cycle, Frame, FrameOut, MemoryModel, Report};
-use testbenches::memory::ReadDuringWrite;
-use testbenches::{seed, Dual, Pins, Verilated};
+use testbenches::memory::{Memory, ReadDuringWrite, Request};
+use testbenches::streams::{as_pins, pixel_of, unsigned};
+use testbenches::{seed, Dual, Pins, Value, Verilated};
 
 /// A Verilator runtime for `raster_top`: the model is built once (its C++ build is the
 /// slow part; marlin keeps it under the target directory and serialises concurrent
@@ -369,4 +372,124 @@ fn raster_top_iverilog_replay() {
             assert!(!ok && log.contains("FAIL: cycle") && log.contains(&format!("write {k} is")), "{name}: {log}");
         }
     }
+}
+
+/// One frame through a `raster_top` with some units left out (`CULL_SORT`, `PIXEL_OUT`),
+/// in rust-hdl and Verilator in lockstep (every output compared every cycle): without
+/// `cull_sort` the host's triangles are the model's sorted ones (`Frame::sorted`), without
+/// `pixel_out` the fragment stream must be the model's (`Frame::pixels`), taken with
+/// `out_ready` low when `stall` says; with it, the memory must hold the model's image. When
+/// nothing stalls, the cycles are `model::cycles`' for these units.
+fn units_frame<U: Block + Pins>(
+    dual: &mut Dual<U>,
+    units: Timing,
+    what: &str,
+    list: &Trilist,
+    cull: Cull,
+    stall: &mut dyn FnMut(u64) -> bool,
+) {
+    let prep = prepare(list, cull, [20, 24, 32]).unwrap_or_else(|e| panic!("{what}: {e}"));
+    // The triangles as the host sends them, with their crossings when it culls.
+    let sent: Vec<([Vtx; 3], u8)> = if units.cull_sort {
+        prep.triangles.iter().map(|t| (*t, 0)).collect()
+    } else {
+        prep.sorted.iter().map(|s| (s.v, s.crosses)).collect()
+    };
+    assert!(!sent.is_empty(), "{what}: a triangle to carry inp_last");
+    let class = prep.class;
+    let zmax = model::cull_sort::z_max(&top::formats(class)) as u32;
+    let mut memory = Memory::new(class, (list.width, list.height), zmax, [20, 24, 32], ReadDuringWrite::Old);
+    let (mut taken, mut fragments, mut stalled) = (0, Vec::new(), false);
+    let dim = |v: u32| Value::new(class as usize + 1, v as u128);
+    for cycle in 0..5_000_000u64 {
+        let ready = !stall(cycle);
+        stalled |= !ready;
+        let mut pins = vec![("width".to_owned(), dim(list.width)), ("height".to_owned(), dim(list.height))];
+        let offer = sent.get(taken);
+        pins.push(("inp_valid".into(), Value::new(1, offer.is_some() as u128)));
+        pins.push(("inp_last".into(), Value::new(1, (taken + 1 == sent.len()) as u128)));
+        let (tri, crosses) = offer.copied().unwrap_or(sent[0]);
+        pins.extend(frame::triangle_pins(class, &tri, units.cull_sort));
+        if units.cull_sort {
+            pins.push(("cull_back".into(), Value::new(1, (cull == Cull::Back) as u128)));
+        } else {
+            pins.push(("inp_crosses".into(), Value::new(rtl::cull_sort::OUTCODE, crosses as u128)));
+        }
+        if units.pixel_out {
+            pins.push(("mem_ready".into(), Value::new(1, ready as u128)));
+            pins.push(("rd_z".into(), Value::new(rtl::widths::DEPTH, memory.rd_z() as u128)));
+        } else {
+            pins.push(("out_ready".into(), Value::new(1, ready as u128)));
+        }
+        let o = dual.cycle(&as_pins(&pins)).unwrap_or_else(|m| panic!("{what}: {m}"));
+        let high = |p: &str| unsigned(o.get(p)) == 1;
+        if high("done") && offer.is_none() {
+            if units.pixel_out {
+                assert!(memory.rgb == prep.render.fb.rgb, "{what}: the colour buffers differ");
+                assert!(memory.depth == prep.render.fb.depth, "{what}: the depth buffers differ");
+                assert_eq!(memory.writes, prep.writes.len() as u64, "{what}: pixels written");
+            } else {
+                assert_eq!(fragments.len(), prep.pixels.len(), "{what}: fragments");
+                if let Some(i) = fragments.iter().zip(&prep.pixels).position(|(a, b)| a != b) {
+                    panic!("{what}: fragment {i} is {:?}, the model's {:?}", fragments[i], prep.pixels[i]);
+                }
+            }
+            if !stalled {
+                assert_eq!(cycle, prep.cycles_with(&units), "{what}: cycles, RTL against model::cycles");
+            }
+            return;
+        }
+        taken += (offer.is_some() && high("inp_ready")) as usize;
+        if units.pixel_out {
+            memory.edge(ready, &Request::of(&o));
+        } else if ready && high("out_valid") {
+            fragments.push(pixel_of(&o, "out"));
+        }
+    }
+    panic!("{what}: no done ({taken} of {} triangles taken)", sent.len());
+}
+
+/// Units present: `raster_top` without `pixel_out` (fragments out), without `cull_sort`
+/// (sorted triangles in), and without both, each emitted, Verilated and run beside its
+/// rust-hdl self on the cube and on triangles across every clip plane, once with nothing
+/// stalling (cycles = `model::cycles`) and once with the output stalled at random.
+#[test]
+fn raster_top_units_present_lockstep() {
+    fn run<U: Block + Pins>(unit: impl Fn() -> U, cull_sort: bool, pixel_out: bool) {
+        let units = Timing { cull_sort, pixel_out, ..Timing::default() };
+        let raster_top = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
+        let params = [("CULL_SORT".to_owned(), cull_sort as u64), ("PIXEL_OUT".to_owned(), pixel_out as u64)];
+        let e =
+            raster_top.emit(&raster_top.params(params).expect("known parameters")).unwrap_or_else(|e| panic!("{e}"));
+        let vl = Verilated::of(&e).unwrap_or_else(|e| panic!("{e}"));
+        let (cube, cube_cull) = scene("cube", Some((24, 16)));
+        let c = [[250.0, 10.0, 40.0], [20.0, 240.0, 90.0], [60.0, 70.0, 230.0]];
+        let tri =
+            |p: [(f64, f64, f64); 3]| -> Triangle { [0, 1, 2].map(|k| Vertex::new(p[k].0, p[k].1, p[k].2, c[k])) };
+        let crossing = list(
+            40,
+            30,
+            vec![
+                tri([(-10.3, 5.2, 0.3), (15.7, 2.1, 0.5), (5.1, 25.6, 0.7)]),
+                tri([(30.3, 5.2, 0.3), (51.7, 12.1, 0.5), (25.1, 25.6, 0.7)]),
+                tri([(10.3, -12.2, 0.3), (30.7, 7.1, 0.5), (5.1, 20.6, 0.7)]),
+                tri([(-20.3, -15.2, 0.3), (65.7, -5.1, 0.5), (15.1, 60.6, 0.7)]),
+                tri([(2.3, 2.2, -0.4), (37.7, 7.1, 1.5), (10.1, 27.6, 0.6)]),
+                tri([(-10.3, 5.2, 0.3), (-15.7, 2.1, 0.5), (-5.1, 25.6, 0.7)]),
+                tri([(3.3, 3.2, 0.2), (5.1, 27.6, 0.2), (36.7, 4.1, 0.2)]),
+            ],
+        );
+        let name = format!("CULL_SORT={} PIXEL_OUT={}", cull_sort as u8, pixel_out as u8);
+        for (what, l, cull) in [("cube", &cube, cube_cull), ("clipping", &crossing, Cull::Back)] {
+            let mut dual = Dual::new(unit(), vl.model().unwrap_or_else(|e| panic!("{e}")));
+            units_frame(&mut dual, units, &format!("{name}, {what}"), l, cull, &mut |_| false);
+            let mut rng = ChaCha8Rng::seed_from_u64(seed());
+            let mut dual = Dual::new(unit(), vl.model().unwrap_or_else(|e| panic!("{e}")));
+            units_frame(&mut dual, units, &format!("{name}, {what}, stalled"), l, cull, &mut |_| rng.gen_bool(0.3));
+        }
+    }
+    let (k, l) = (7, 5);
+    run(|| rtl::raster_top::RasterTopFragments::new(k, l).expect("K = 7, L = 5"), true, false);
+    run(|| rtl::raster_top::RasterTopSorted::new(k, l).expect("K = 7, L = 5"), false, true);
+    run(|| rtl::raster_top::RasterTopCore::new(k, l).expect("K = 7, L = 5"), false, false);
 }

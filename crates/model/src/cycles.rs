@@ -17,6 +17,8 @@
 //!   a triangle, then one scanline per cycle; it stalls while the span FIFO is full;
 //! * `span`: one cycle per pixel walked, one for a dropped span; latency 1;
 //! * `pixel_out`: one pixel per cycle, latency 2;
+//! * without `cull_sort` ([`Timing::cull_sort`]) the host sends only the triangles that
+//!   pass, straight to setup; without `pixel_out` the fragments leave `span` at once;
 //! * `vector`: the per-triangle cycles of `vector::vector` (lanes per cycle),
 //!   fed by `cull_sort`; triangles do not overlap in the vector unit.
 
@@ -32,11 +34,23 @@ pub struct Timing {
     pub divider_latency: u32,
     /// Span commands buffered between edge walk and span.
     pub span_fifo: u32,
+    /// Whether `cull_sort` is present (`raster_top`'s `CULL_SORT`); without it the host
+    /// sends only the triangles that pass, sorted, straight to setup.
+    pub cull_sort: bool,
+    /// Whether `pixel_out` is present (`PIXEL_OUT`); without it the frame ends when the
+    /// last fragment leaves `span` (taken at once).
+    pub pixel_out: bool,
 }
 
 impl Default for Timing {
     fn default() -> Self {
-        Timing { setup_multipliers: 7, divider_latency: crate::divider::LATENCY, span_fifo: 4 }
+        Timing {
+            setup_multipliers: 7,
+            divider_latency: crate::divider::LATENCY,
+            span_fifo: 4,
+            cull_sort: true,
+            pixel_out: true,
+        }
     }
 }
 
@@ -91,8 +105,10 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
     let mut cull_free = 0u64;
     let mut span_starts: Vec<u64> = Vec::new();
     let mut out = FrameCycles::default();
-    for w in work {
-        let culled = cull_free + cull_sort::LATENCY as u64;
+    let cull_latency = if t.cull_sort { cull_sort::LATENCY as u64 } else { 0 };
+    let write_latency = if t.pixel_out { 1 + pixel_out::LATENCY as u64 } else { 1 };
+    for w in work.iter().filter(|w| t.cull_sort || w.passed_cull) {
+        let culled = cull_free + cull_latency;
         last = last.max(culled);
         if !w.passed_cull {
             cull_free = culled;
@@ -117,7 +133,7 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
                 out.span_busy += span.cycles as u64;
                 // pixel_out is empty LATENCY cycles after the one after its last pixel.
                 if let Some(k) = span.last_sent {
-                    last = last.max(start + k as u64 + 1 + pixel_out::LATENCY as u64);
+                    last = last.max(start + k as u64 + write_latency);
                 }
             }
             now += 1;
@@ -203,6 +219,23 @@ mod tests {
         tail.scanlines[2] = Some(SpanWork { cycles: 1, last_sent: None });
         // Dropped: span done at 33, the pixel of cycle 31 written in 33.
         assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 34);
+    }
+
+    #[test]
+    fn cycles_without_cull_sort_or_pixel_out() {
+        // Without cull_sort the triangle reaches setup in cycle 0 and culled ones are not
+        // sent: 1 cycle less, and nothing for the 30 culled ones.
+        let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], vector_cycles: 0 };
+        let mut frame = vec![Work::default(), w.clone()];
+        frame.extend(std::iter::repeat_n(Work::default(), 30));
+        let no_cull = Timing { cull_sort: false, ..Timing::default() };
+        assert_eq!(scanline_frame(&frame, &no_cull).total, 38);
+        // Without pixel_out the frame ends the cycle after span's last fragment (36):
+        // 2 cycles less than with the depth test and write behind it.
+        let no_out = Timing { pixel_out: false, ..Timing::default() };
+        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 37);
+        let neither = Timing { cull_sort: false, pixel_out: false, ..Timing::default() };
+        assert_eq!(scanline_frame(&frame, &neither).total, 36);
     }
 
     #[test]

@@ -5,7 +5,7 @@
 //! in order, its image ([`raster::render`], `Method::Scanline`) and its cycle count
 //! ([`cycles::scanline_frame`]).
 
-use crate::cull_sort::{z_max, Clip, Cull};
+use crate::cull_sort::{cull_sort, z_max, Clip, Cull, Sorted};
 use crate::cycles::{self, Timing};
 use crate::input::{to_fixed, InputError, Vtx};
 use crate::pixel_out::Framebuffer;
@@ -39,8 +39,14 @@ pub struct Frame {
     pub skipped: Vec<(usize, InputError)>,
     /// The render: image, depth buffer, statistics, per-triangle work.
     pub render: Render,
+    /// The triangles `cull_sort` passes, in order: what a host that culls and sorts sends
+    /// to a `raster_top` without `cull_sort` (`CULL_SORT = 0`).
+    pub sorted: Vec<Sorted>,
     /// Per triangle sent, the pixels it sends to `pixel_out` (depth reads).
     pub fragments: Vec<usize>,
+    /// Every fragment `span` sends, in order: the output of a `raster_top` without
+    /// `pixel_out` (`PIXEL_OUT = 0`).
+    pub pixels: Vec<Pixel>,
     /// The memory writes, in the order `pixel_out` makes them.
     pub writes: Vec<Pixel>,
 }
@@ -49,7 +55,12 @@ impl Frame {
     /// The frame's cycles, from the first triangle offered to `done`
     /// ([`cycles::scanline_frame`], triangles back to back, memory always ready).
     pub fn cycles(&self) -> u64 {
-        cycles::scanline_frame(&self.render.work, &Timing::default()).total
+        self.cycles_with(&Timing::default())
+    }
+
+    /// The frame's cycles with the units and parameters of `timing`.
+    pub fn cycles_with(&self, timing: &Timing) -> u64 {
+        cycles::scanline_frame(&self.render.work, timing).total
     }
 }
 
@@ -83,22 +94,25 @@ pub fn frame_at(class: u32, list: &Trilist, cull: Cull, background: [u8; 3]) -> 
     let f = formats(class);
     let opts = Options { method: Method::Scanline, cull, analysis: false, background };
     let clip = Clip { width: list.width, height: list.height };
-    let (mut triangles, mut skipped, mut fragments, mut writes) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut triangles, mut skipped, mut sorted) = (Vec::new(), Vec::new(), Vec::new());
+    let (mut fragments, mut pixels, mut writes) = (Vec::new(), Vec::new(), Vec::new());
     let mut fb = Framebuffer::new(list.width, list.height, z_max(&f) as u32, background);
     for (i, t) in list.triangles.iter().enumerate() {
         match to_fixed(t, &f) {
             Ok(v) => {
+                sorted.extend(cull_sort(&v, clip, cull, &f));
                 triangles.push(v);
-                let pixels = triangle(t, clip, &f, &opts).0.map_or(Vec::new(), |t| t.pixels);
-                fragments.push(pixels.len());
-                writes.extend(pixels.into_iter().filter(|p| fb.pixel_out(p, i as u32)));
+                let drawn = triangle(t, clip, &f, &opts).0.map_or(Vec::new(), |t| t.pixels);
+                fragments.push(drawn.len());
+                writes.extend(drawn.iter().filter(|p| fb.pixel_out(p, i as u32)));
+                pixels.extend(drawn);
             }
             Err(e) => skipped.push((i, e)),
         }
     }
     let render = raster::render(list, &f, &opts, &mut |_| {});
     debug_assert!(render.fb == fb, "the same pixels, through the same depth test");
-    Ok(Frame { class, triangles, skipped, render, fragments, writes })
+    Ok(Frame { class, triangles, skipped, sorted, render, fragments, pixels, writes })
 }
 
 #[cfg(test)]
@@ -130,6 +144,10 @@ mod tests {
         }
         assert_eq!(replay.rgb, f.render.fb.rgb);
         assert!(f.cycles() > f.writes.len() as u64);
+        // Both pass cull_sort; every fragment is sent, the writes are those that pass.
+        assert_eq!(f.sorted.len(), 2);
+        assert_eq!(f.pixels.len(), f.fragments[0] + f.fragments[1]);
+        assert_eq!(f.pixels, f.writes);
     }
 
     #[test]

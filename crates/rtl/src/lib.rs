@@ -15,7 +15,7 @@ pub mod sim;
 /// The scanline pipeline's units, as modules of a size-class module (`n10.rs`, ...): rust-hdl's
 /// widths are compile-time constants, so each size class `n` (screens up to 2^n x 2^n,
 /// number formats `fx::Formats::for_n(n)`) compiles its own copy of the same sources
-/// (`cull_sort.rs`, ..., `raster_top.rs`), which read their widths from their class's
+/// (`cull_sort.rs`, ..., `raster_top.rs`, and `span_fifo.rs`, a part of `raster_top`), which read their widths from their class's
 /// `widths` module. (Loading one file as several modules is the point here, hence the
 /// `clippy::duplicate_mod` allowance.)
 macro_rules! scanline_units {
@@ -32,6 +32,8 @@ macro_rules! scanline_units {
         pub mod raster_top;
         #[path = "span.rs"]
         pub mod span;
+        #[path = "span_fifo.rs"]
+        pub mod span_fifo;
         #[path = "triangle_setup.rs"]
         pub mod triangle_setup;
         #[path = "widths.rs"]
@@ -162,6 +164,16 @@ pub const UNITS: &[Unit] = &[
             N,
             Param { name: "K", default: 7, doc: "triangle_setup's multipliers, 1 to 7; 001 has 7" },
             Param { name: "L", default: 5, doc: "stages of the shared divider, 1 to 25; 001 has 5" },
+            Param {
+                name: "CULL_SORT",
+                default: 1,
+                doc: "1: cull_sort present; 0: absent, sorted triangles with their clip crossings in (inp_crosses)",
+            },
+            Param {
+                name: "PIXEL_OUT",
+                default: 1,
+                doc: "1: pixel_out and its memory port present; 0: absent, the fragment stream out (out_*)",
+            },
         ],
         build: by_class!(raster_top::emit_raster_top),
     },
@@ -188,7 +200,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("edge_walk", &[("N", 10)]),
     ("span", &[("N", 10)]),
     ("pixel_out", &[("N", 10)]),
-    ("raster_top", &[("N", 10), ("K", 7), ("L", 5)]),
+    ("raster_top", &[("N", 10), ("K", 7), ("L", 5), ("CULL_SORT", 1), ("PIXEL_OUT", 1)]),
     ("se", &[("P", 64), ("ZW", 24), ("CW", 16), ("F", 16), ("I", 0)]),
 ];
 

@@ -1,0 +1,217 @@
+//! The span command FIFO between `edge_walk` and `span` in `raster_top` (papers 001 and
+//! 003): [`SPAN_FIFO`] `SpanCmd`s, as `model::cycles::Timing::span_fifo`, passed straight
+//! through when empty. Part of `raster_top` (its model is the cycle model's FIFO).
+
+use super::widths::{C_ACC, DC, DZ, PIXEL, SCREEN, Z_ACC};
+use rust_hdl::prelude::*;
+
+/// Span commands the FIFO between the edge walk and span holds.
+pub const SPAN_FIFO: usize = 4;
+
+/// Whether a `D`-deep FIFO holding `count` entries is `full` or `empty`. (Alone in its
+/// module, so that these outputs depend on the registered count only: Verilator orders a
+/// module's logic as one block, and with the pushes and pops beside them the handshake
+/// with the edge walk would look like a combinational loop.)
+#[derive(LogicBlock)]
+pub struct FifoLevel<const D: usize> {
+    pub count: Signal<In, Bits<3>>,
+    pub full: Signal<Out, Bit>,
+    pub empty: Signal<Out, Bit>,
+    depth: Constant<Bits<3>>,
+}
+
+impl<const D: usize> Default for FifoLevel<D> {
+    fn default() -> Self {
+        assert!((1..8).contains(&D), "FifoLevel<{D}>: 1 to 7 entries");
+        FifoLevel {
+            count: Default::default(),
+            full: Default::default(),
+            empty: Default::default(),
+            depth: Constant::new(bits(D as u64)),
+        }
+    }
+}
+
+impl<const D: usize> Logic for FifoLevel<D> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.full.next = self.count.val() == self.depth.val();
+        self.empty.next = self.count.val() == 0;
+    }
+}
+
+/// One field of a `D`-deep FIFO: entries shift towards `head` on a pop; a push writes
+/// entry `wr`.
+#[derive(LogicBlock)]
+pub struct FifoLane<const W: usize, const D: usize> {
+    pub clock: Signal<In, Clock>,
+    pub push: Signal<In, Bit>,
+    pub pop: Signal<In, Bit>,
+    pub wr: Signal<In, Bits<3>>,
+    pub din: Signal<In, Bits<W>>,
+    pub head: Signal<Out, Bits<W>>,
+    e: [DFF<Bits<W>>; D],
+}
+
+impl<const W: usize, const D: usize> Default for FifoLane<W, D> {
+    fn default() -> Self {
+        FifoLane {
+            clock: Default::default(),
+            push: Default::default(),
+            pop: Default::default(),
+            wr: Default::default(),
+            din: Default::default(),
+            head: Default::default(),
+            e: std::array::from_fn(|_| Default::default()),
+        }
+    }
+}
+
+impl<const W: usize, const D: usize> Logic for FifoLane<W, D> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        for i in 0..D {
+            self.e[i].clock.next = self.clock.val();
+            self.e[i].d.next = self.e[i].q.val();
+        }
+        if self.pop.val() {
+            for i in 0..(D - 1) {
+                self.e[i].d.next = self.e[i + 1].q.val();
+            }
+        }
+        if self.push.val() {
+            for i in 0..D {
+                if self.wr.val().index() == i {
+                    self.e[i].d.next = self.din.val();
+                }
+            }
+        }
+        self.head.next = self.e[0].q.val();
+    }
+}
+
+/// The span command FIFO between the edge walk and span (`model::cycles`: "a 4-deep FIFO
+/// before it"): `SpanCmd` on `inp_*` and `out_*`. Empty, it passes a command straight
+/// through in the same cycle; `inp_ready` is low only when full.
+#[derive(LogicBlock, Default)]
+pub struct SpanFifo {
+    pub clock: Signal<In, Clock>,
+    pub inp_valid: Signal<In, Bit>,
+    pub inp_ready: Signal<Out, Bit>,
+    pub inp_y: Signal<In, Bits<SCREEN>>,
+    pub inp_xl: Signal<In, Bits<PIXEL>>,
+    pub inp_xr: Signal<In, Bits<PIXEL>>,
+    pub inp_left_z: Signal<In, Bits<Z_ACC>>,
+    pub inp_left_c0: Signal<In, Bits<C_ACC>>,
+    pub inp_left_c1: Signal<In, Bits<C_ACC>>,
+    pub inp_left_c2: Signal<In, Bits<C_ACC>>,
+    pub inp_right_z: Signal<In, Bits<Z_ACC>>,
+    pub inp_right_c0: Signal<In, Bits<C_ACC>>,
+    pub inp_right_c1: Signal<In, Bits<C_ACC>>,
+    pub inp_right_c2: Signal<In, Bits<C_ACC>>,
+    pub inp_ddx_z: Signal<In, Bits<DZ>>,
+    pub inp_ddx_c0: Signal<In, Bits<DC>>,
+    pub inp_ddx_c1: Signal<In, Bits<DC>>,
+    pub inp_ddx_c2: Signal<In, Bits<DC>>,
+    pub out_valid: Signal<Out, Bit>,
+    pub out_ready: Signal<In, Bit>,
+    pub out_y: Signal<Out, Bits<SCREEN>>,
+    pub out_xl: Signal<Out, Bits<PIXEL>>,
+    pub out_xr: Signal<Out, Bits<PIXEL>>,
+    pub out_left_z: Signal<Out, Bits<Z_ACC>>,
+    pub out_left_c0: Signal<Out, Bits<C_ACC>>,
+    pub out_left_c1: Signal<Out, Bits<C_ACC>>,
+    pub out_left_c2: Signal<Out, Bits<C_ACC>>,
+    pub out_right_z: Signal<Out, Bits<Z_ACC>>,
+    pub out_right_c0: Signal<Out, Bits<C_ACC>>,
+    pub out_right_c1: Signal<Out, Bits<C_ACC>>,
+    pub out_right_c2: Signal<Out, Bits<C_ACC>>,
+    pub out_ddx_z: Signal<Out, Bits<DZ>>,
+    pub out_ddx_c0: Signal<Out, Bits<DC>>,
+    pub out_ddx_c1: Signal<Out, Bits<DC>>,
+    pub out_ddx_c2: Signal<Out, Bits<DC>>,
+    /// No command held.
+    pub empty: Signal<Out, Bit>,
+    /// Entries held, and whether that is all or none.
+    count: DFF<Bits<3>>,
+    level: FifoLevel<SPAN_FIFO>,
+    /// The entry a push writes, counted after this cycle's pop.
+    wr: Signal<Local, Bits<3>>,
+    y: FifoLane<SCREEN, SPAN_FIFO>,
+    xl: FifoLane<PIXEL, SPAN_FIFO>,
+    xr: FifoLane<PIXEL, SPAN_FIFO>,
+    left_z: FifoLane<Z_ACC, SPAN_FIFO>,
+    left_c0: FifoLane<C_ACC, SPAN_FIFO>,
+    left_c1: FifoLane<C_ACC, SPAN_FIFO>,
+    left_c2: FifoLane<C_ACC, SPAN_FIFO>,
+    right_z: FifoLane<Z_ACC, SPAN_FIFO>,
+    right_c0: FifoLane<C_ACC, SPAN_FIFO>,
+    right_c1: FifoLane<C_ACC, SPAN_FIFO>,
+    right_c2: FifoLane<C_ACC, SPAN_FIFO>,
+    ddx_z: FifoLane<DZ, SPAN_FIFO>,
+    ddx_c0: FifoLane<DC, SPAN_FIFO>,
+    ddx_c1: FifoLane<DC, SPAN_FIFO>,
+    ddx_c2: FifoLane<DC, SPAN_FIFO>,
+    push: Signal<Local, Bit>,
+    pop: Signal<Local, Bit>,
+}
+
+/// `SpanFifo`'s kernel, with each lane `$f` wired from `$inp` to `$out`: its head, or the
+/// input itself when the FIFO is empty. (A macro writes the fifteen lanes out before
+/// `#[hdl_gen]` reads the kernel.)
+macro_rules! span_fifo_logic {
+    ($($f:ident: $inp:ident -> $out:ident),* $(,)?) => {
+        impl Logic for SpanFifo {
+            #[hdl_gen]
+            fn update(&mut self) {
+                dff_setup!(self, clock, count);
+                self.level.count.next = self.count.q.val();
+                self.inp_ready.next = !self.level.full.val();
+                self.out_valid.next = !self.level.empty.val() | self.inp_valid.val();
+                self.empty.next = self.level.empty.val();
+                // Empty and taken at once: the command passes straight through.
+                self.push.next = self.inp_valid.val() & !self.level.full.val() & !(self.level.empty.val() & self.out_ready.val());
+                self.pop.next = !self.level.empty.val() & self.out_ready.val();
+                self.wr.next = self.count.q.val();
+                if self.pop.val() {
+                    self.wr.next = self.count.q.val() - 1;
+                }
+                if self.push.val() & !self.pop.val() {
+                    self.count.d.next = self.count.q.val() + 1;
+                }
+                if self.pop.val() & !self.push.val() {
+                    self.count.d.next = self.count.q.val() - 1;
+                }
+                $(
+                    self.$f.clock.next = self.clock.val();
+                    self.$f.push.next = self.push.val();
+                    self.$f.pop.next = self.pop.val();
+                    self.$f.wr.next = self.wr.val();
+                    self.$f.din.next = self.$inp.val();
+                    self.$out.next = self.$f.head.val();
+                    if self.level.empty.val() {
+                        self.$out.next = self.$inp.val();
+                    }
+                )*
+            }
+        }
+    };
+}
+
+span_fifo_logic!(
+    y: inp_y -> out_y,
+    xl: inp_xl -> out_xl,
+    xr: inp_xr -> out_xr,
+    left_z: inp_left_z -> out_left_z,
+    left_c0: inp_left_c0 -> out_left_c0,
+    left_c1: inp_left_c1 -> out_left_c1,
+    left_c2: inp_left_c2 -> out_left_c2,
+    right_z: inp_right_z -> out_right_z,
+    right_c0: inp_right_c0 -> out_right_c0,
+    right_c1: inp_right_c1 -> out_right_c1,
+    right_c2: inp_right_c2 -> out_right_c2,
+    ddx_z: inp_ddx_z -> out_ddx_z,
+    ddx_c0: inp_ddx_c0 -> out_ddx_c0,
+    ddx_c1: inp_ddx_c1 -> out_ddx_c1,
+    ddx_c2: inp_ddx_c2 -> out_ddx_c2,
+);
