@@ -8058,6 +8058,8 @@ module raster_top$core$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_
     output reg  [35:0] out_ddx_c2;
     
     // Constant declarations
+    localparam  q_msb = 8'h12;
+    localparam  q_ext = 19'b0;
     localparam  lane$0 = 8'h0;
     localparam  lane$1 = 8'h1;
     localparam  lane$2 = 8'h0;
@@ -9810,46 +9812,49 @@ module raster_top$core$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_
         if (t$q == iss$1) begin
             div$inp_valid = 1'b1;
             if (count$0 != 32'h0) begin
-                div$inp_n = num$0$q;
+                div$inp_n = num$0$q[(32'h0)+:(58)];
                 div$inp_d = ed16$0;
             end
         end
         if (t$q == iss$2) begin
             div$inp_valid = 1'b1;
             if (count$0 > 32'h1) begin
-                div$inp_n = edx$0;
+                div$inp_n = edx$0[(32'h0)+:(58)];
                 div$inp_d = edy$0[(32'h0)+:(34)];
             end
         end
         if (t$q == iss$3) begin
             div$inp_valid = 1'b1;
             if (count$1 != 32'h0) begin
-                div$inp_n = num$1$q;
+                div$inp_n = num$1$q[(32'h0)+:(58)];
                 div$inp_d = ed16$1;
             end
         end
         if (t$q == iss$4) begin
             div$inp_valid = 1'b1;
             if (count$1 > 32'h1) begin
-                div$inp_n = edx$1;
+                div$inp_n = edx$1[(32'h0)+:(58)];
                 div$inp_d = edy$1[(32'h0)+:(34)];
             end
         end
         if (t$q == iss$5) begin
             div$inp_valid = 1'b1;
             if (count$2 != 32'h0) begin
-                div$inp_n = num$2$q;
+                div$inp_n = num$2$q[(32'h0)+:(58)];
                 div$inp_d = ed16$2;
             end
         end
         if (t$q == iss$6) begin
             div$inp_valid = 1'b1;
             if (count$2 > 32'h1) begin
-                div$inp_n = edx$2;
+                div$inp_n = edx$2[(32'h0)+:(58)];
                 div$inp_d = edy$2[(32'h0)+:(34)];
             end
         end
-        q_n = div$out_q[(32'h0)+:(19)];
+        q_n = ((div$out_q[(32'h0)+:(19)]) & 19'h7ffff);
+        if (div$out_q[q_msb]) begin
+            q_n = ((div$out_q[(32'h0)+:(19)]) & 19'h7ffff) | q_ext;
+        end
         r_pos = div$out_r != 32'h0;
         mant_now = mant$q;
         if (t$q == res$0) begin

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Verilator lint of every emitted unit in hdl-out/, of raster_top at size classes 11 and
-# 12 and with units left out (CULL_SORT=0, PIXEL_OUT=0, both; emitted under target/lint/),
-# or of the .v files given, with -Wall.
+# 12, with units left out (CULL_SORT=0, PIXEL_OUT=0, both) and at the formats of
+# rtl::custom (crates/rtl/custom-formats.json; all emitted under target/lint/), or of the
+# .v files given, with -Wall.
 # Exits non-zero if any file has a warning or an error.
 #
 # Waived, and why:
@@ -38,6 +39,10 @@ if [[ ${#files[@]} -eq 0 ]]; then
         cargo run --release --quiet -- emit --unit raster_top $(printf -- '--param %s ' $units) -o "$dir" >/dev/null
         files+=("$dir/raster_top.v")
     done
+    # raster_top at formats other than its class's defaults (24-bit depth, ...).
+    cargo run --release --quiet -- emit --unit raster_top --formats crates/rtl/custom-formats.json \
+        -o target/lint/raster_top-custom >/dev/null
+    files+=("target/lint/raster_top-custom/raster_top.v")
 fi
 
 failed=0

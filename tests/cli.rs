@@ -187,3 +187,61 @@ fn cli_accuracy_writes_a_table_and_json() {
     assert_eq!(v[0]["coverage_unexplained"], 0);
     assert!(v[1]["cycles"].as_u64().unwrap() > 0);
 }
+
+/// Formats other than a size class's defaults: `emit --formats` writes the scanline units
+/// at them (the manifest records them, the ports follow them), `render --engine rtl
+/// --formats` draws through them, equal to the scanline model at those formats; formats the
+/// RTL cannot take, and units without formats, are clear errors. (`crates/rtl/
+/// custom-formats.json` is `rtl::custom`'s build, so nothing is recompiled here.)
+#[test]
+fn cli_emits_and_renders_at_other_formats() {
+    let d = scratch("formats");
+    let custom = concat!(env!("CARGO_MANIFEST_DIR"), "/crates/rtl/custom-formats.json");
+    let dir = d.join("hdl");
+    let out = edgepaint(&["emit", "--unit", "raster_top", "--formats", custom, "-o", dir.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let manifest: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("manifest.json")).unwrap()).unwrap();
+    let unit = &manifest["units"][0];
+    assert_eq!(unit["formats"]["z"], "S1.24 [26] half-up", "{unit}");
+    assert_eq!(unit["formats"]["xy"], "S11.3 [15] half-up", "{unit}");
+    let width = |port: &str| {
+        unit["ports"].as_array().unwrap().iter().find(|p| p["name"] == port).map(|p| p["width"].clone()).unwrap()
+    };
+    assert_eq!((width("wr_z"), width("inp_v0_x"), width("inp_v0_c0")), (24.into(), 15.into(), 10.into()));
+
+    let png = d.join("rtl.png");
+    let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
+    let args = ["render", cube, "--size", "32x24", "--engine", "rtl", "--formats", custom, "-o"];
+    let out = edgepaint(&[&args[..], &[png.to_str().unwrap()]].concat());
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        stdout.contains("formats of --formats") && stdout.contains("image equal to the scanline model's"),
+        "{stdout}"
+    );
+    let scan = d.join("scanline.png");
+    let args = ["render", cube, "--size", "32x24", "--engine", "scanline", "--formats", custom, "-o"];
+    assert!(edgepaint(&[&args[..], &[scan.to_str().unwrap()]].concat()).status.success());
+    assert_eq!(std::fs::read(&png).unwrap(), std::fs::read(&scan).unwrap(), "the RTL's PNG is the model's");
+
+    let o = dir.to_str().unwrap();
+    let saturating = write(&d, "saturating.json", r#"{"dz": "S5.34 saturate"}"#);
+    fails_with(
+        &["emit", "--unit", "raster_top", "--formats", &saturating, "-o", o],
+        &["saturating.json", "truncate and wrap"],
+    );
+    let narrow = write(&d, "narrow.json", r#"{"xy": "S3.4"}"#);
+    fails_with(&["emit", "--unit", "span", "--formats", &narrow, "-o", o], &["narrow.json", "guard band"]);
+    fails_with(&["emit", "--unit", "ept", "--formats", custom, "-o", o], &["ept has no number formats"]);
+    fails_with(&["emit", "--formats", custom, "-o", o], &["need --unit"]);
+    // Formats no build holds, when the rebuilt edgepaint still lacks them: no loop.
+    let z24 = write(&d, "z24.json", r#"{"z": "S1.24 half-up", "ooa_d": "S29.35"}"#);
+    let out = Command::new(env!("CARGO_BIN_EXE_edgepaint"))
+        .args(["emit", "--unit", "raster_top", "--formats", &z24, "-o", o])
+        .env("EDGEPAINT_REBUILT", "1")
+        .output()
+        .expect("edgepaint runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success() && err.contains("does not hold that build"), "{err}");
+}

@@ -58,7 +58,7 @@ fn frame_speed(dut: &mut dyn Cycle, name: &str, size: (u32, u32)) -> (u64, f64) 
     let cull = if s.cull_back { Cull::Back } else { Cull::None };
     let prep = model::raster_top::frame(&list, cull, [0; 3]).unwrap_or_else(|e| panic!("{e}"));
     let f = Frame {
-        class: prep.class,
+        build: frame::build_of(&prep),
         width: list.width,
         height: list.height,
         cull,

@@ -15,19 +15,19 @@ use marlin::verilator::{VerilatorRuntime, VerilatorRuntimeOptions};
 use marlin::verilog::prelude::*;
 use model::cull_sort::{z_max, Cull};
 use model::input::Vtx;
-use model::raster_top::formats;
 use model::span::Pixel;
+use rtl::config::Build;
 use rtl::cull_sort::{INV_W, XY, Z};
 use rtl::raster_top::RasterTop;
-use rtl::widths::{CHANNEL, CLASS};
+use rtl::widths::CHANNEL;
 use rust_hdl::prelude::Block;
 use std::path::{Path, PathBuf};
 
 /// `raster_top`'s inputs in one cycle.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Drive {
-    /// The size class of the `raster_top` driven (`rtl::CLASSES`): its port widths.
-    pub class: u32,
+    /// The build of the `raster_top` driven (`rtl::BUILDS`): its port widths.
+    pub build: Build,
     pub width: u32,
     pub height: u32,
     pub cull_back: bool,
@@ -60,7 +60,7 @@ fn low(width: usize, v: i128) -> u64 {
     (v as u64) & (u64::MAX >> (64 - width))
 }
 
-/// Widths of `raster_top`'s inputs at size class `class`.
+/// Widths of `raster_top`'s inputs in build `build`.
 struct InputWidths {
     dim: usize,
     depth: usize,
@@ -71,11 +71,11 @@ struct InputWidths {
 }
 
 impl InputWidths {
-    fn of(class: u32) -> Self {
-        let f = formats(class);
+    fn of(build: &Build) -> Self {
+        let f = build.formats;
         let bits = |f: fx::Fmt| f.bits() as usize;
         InputWidths {
-            dim: class as usize + 1,
+            dim: build.class as usize + 1,
             depth: f.z.frac as usize,
             xy: bits(f.xy),
             z: bits(f.z),
@@ -87,7 +87,7 @@ impl InputWidths {
 
 /// The named port values of `d`, for the simulators driven by name.
 fn named(d: &Drive) -> Vec<(String, Value)> {
-    let w = InputWidths::of(d.class);
+    let w = InputWidths::of(&d.build);
     let mut out = vec![
         ("width".to_owned(), Value::new(w.dim, d.width as u128)),
         ("height".into(), Value::new(w.dim, d.height as u128)),
@@ -97,14 +97,14 @@ fn named(d: &Drive) -> Vec<(String, Value)> {
         ("mem_ready".into(), Value::new(1, d.mem_ready as u128)),
         ("rd_z".into(), Value::new(w.depth, d.rd_z as u128)),
     ];
-    out.extend(triangle_pins(d.class, &d.tri, true));
+    out.extend(triangle_pins(&d.build, &d.tri, true));
     out
 }
 
-/// The named input port values (`inp_v<k>_*`) of triangle `tri` at size class `class`,
-/// with `inp_v<k>_iw` when `inv_w` (a `raster_top` with `cull_sort` takes it).
-pub fn triangle_pins(class: u32, tri: &[Vtx; 3], inv_w: bool) -> Vec<(String, Value)> {
-    let w = InputWidths::of(class);
+/// The named input port values (`inp_v<k>_*`) of triangle `tri` in build `build`, with
+/// `inp_v<k>_iw` when `inv_w` (a `raster_top` with `cull_sort` takes it).
+pub fn triangle_pins(build: &Build, tri: &[Vtx; 3], inv_w: bool) -> Vec<(String, Value)> {
+    let w = InputWidths::of(build);
     let mut out = Vec::new();
     for (k, v) in tri.iter().enumerate() {
         let p = |f: &str| format!("inp_v{k}_{f}");
@@ -176,8 +176,8 @@ pub struct RasterTopVl;
 
 impl Cycle for RasterTopVl<'_> {
     fn cycle(&mut self, d: &Drive) -> Result<Sense, String> {
-        if d.class != CLASS {
-            return Err(format!("the static Verilator model is raster_top of size class {CLASS}, not {}", d.class));
+        if d.build != Build::default() {
+            return Err(format!("the static Verilator model is raster_top of the default build, not {:?}", d.build));
         }
         self.width = d.width as _;
         self.height = d.height as _;
@@ -257,8 +257,8 @@ pub fn model(runtime: &VerilatorRuntime) -> Result<RasterTopVl<'_>, String> {
 
 /// What one frame is: the screen, the triangles (hardware words) and how to draw them.
 pub struct Frame<'a> {
-    /// The size class of the `raster_top` drawing it.
-    pub class: u32,
+    /// The build of the `raster_top` drawing it.
+    pub build: Build,
     pub width: u32,
     pub height: u32,
     pub cull: Cull,
@@ -292,13 +292,13 @@ pub struct FrameOut {
 /// up after `max_cycles`.
 pub fn draw(dut: &mut dyn Cycle, frame: &Frame, mem: MemoryModel, max_cycles: u64) -> Result<FrameOut, String> {
     assert!(!frame.triangles.is_empty(), "a frame needs a triangle to carry inp_last");
-    let zmax = z_max(&formats(frame.class)) as u32;
+    let zmax = z_max(&frame.build.formats) as u32;
     let size = (frame.width, frame.height);
-    let mut memory = Memory::new(frame.class, size, zmax, frame.background, mem.read_during_write);
+    let mut memory = Memory::new(frame.build.class, size, zmax, frame.background, mem.read_during_write);
     let n = frame.triangles.len();
     let (mut taken, mut verdicts, mut reads, mut stalls) = (Vec::new(), Vec::new(), Vec::new(), 0);
-    let (class, width, height, cull_back) = (frame.class, frame.width, frame.height, frame.cull == Cull::Back);
-    let mut d = Drive { class, width, height, cull_back, ..Drive::default() };
+    let (build, width, height, cull_back) = (frame.build, frame.width, frame.height, frame.cull == Cull::Back);
+    let mut d = Drive { build, width, height, cull_back, ..Drive::default() };
     for cycle in 0..max_cycles {
         let next = taken.len();
         d.inp_valid = next < n;
@@ -338,7 +338,7 @@ pub fn unit() -> RasterTop {
 /// bench `testbenches/iverilog/raster_top_tb.v` (its header gives the format).
 pub fn write_vectors(path: &Path, frame: &Frame, writes: &[Pixel]) -> std::io::Result<()> {
     use std::fmt::Write as _;
-    let w = InputWidths::of(frame.class);
+    let w = InputWidths::of(&frame.build);
     let mut text = format!(
         "{:x} {:x} {:x} {:x}\n",
         frame.width,
@@ -360,12 +360,17 @@ pub fn write_vectors(path: &Path, frame: &Frame, writes: &[Pixel]) -> std::io::R
     writeln!(text, "{:x}", writes.len()).expect("writing to a String");
     for p in writes {
         let rgb = (p.rgb[0] as u32) << (2 * CHANNEL) | (p.rgb[1] as u32) << CHANNEL | p.rgb[2] as u32;
-        writeln!(text, "{:x} {:x} {rgb:x}", (p.y << frame.class) | p.x, p.z).expect("writing to a String");
+        writeln!(text, "{:x} {:x} {rgb:x}", (p.y << frame.build.class) | p.x, p.z).expect("writing to a String");
     }
     if let Some(dir) = path.parent() {
         std::fs::create_dir_all(dir)?;
     }
     std::fs::write(path, text)
+}
+
+/// The build that draws the model's frame `prep`.
+pub fn build_of(prep: &model::raster_top::Frame) -> Build {
+    Build { class: prep.class, formats: prep.formats }
 }
 
 /// Cycle counts of a frame, measured on the RTL.

@@ -51,10 +51,18 @@ impl Verilated {
         Ok(Verilated { runtime, unit: unit.to_owned(), file: file.to_owned(), ports: ports.to_vec() })
     }
 
-    /// Writes `e`'s Verilog to `<target>/hdl/<unit>-<params>/<unit>.v` (only when it
-    /// changed, so the model is not rebuilt) and prepares it.
+    /// Writes `e`'s Verilog to `<target>/hdl/<unit>-<params>[-F<formats>]/<unit>.v` (only
+    /// when it changed, so the model is not rebuilt; `<formats>` a hash of formats other
+    /// than the size class's defaults) and prepares it.
     pub fn emitted(e: &Emitted) -> Result<Self, String> {
-        let tag: String = e.params.iter().map(|(k, v)| format!("-{k}{v}")).collect();
+        let mut tag: String = e.params.iter().map(|(k, v)| format!("-{k}{v}")).collect();
+        let class = e.params.get("N").map(|&n| fx::Formats::for_n(n as u32));
+        if let Some(f) = e.formats.filter(|f| Some(*f) != class) {
+            // FNV-1a of the formats as written: stable across runs and builds.
+            let text: String = f.named().iter().map(|(k, f)| format!("{k}={f};")).collect();
+            let hash = text.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| (h ^ b as u64).wrapping_mul(0x100_0000_01b3));
+            tag.push_str(&format!("-F{hash:016x}"));
+        }
         let file = write_if_changed(&target_dir().join("hdl").join(format!("{}{tag}", e.unit)), &e.file(), &e.verilog)?;
         Self::new(e.unit, &file, &e.ports)
     }
@@ -63,7 +71,8 @@ impl Verilated {
     /// when the default design holds this unit with these parameters (so the committed
     /// file is what is simulated), otherwise `e` written under the target directory.
     pub fn of(e: &Emitted) -> Result<Self, String> {
-        match rtl::emit::default_design().into_iter().find(|d| d.unit == e.unit && d.params == e.params) {
+        let committed = |d: &Emitted| d.unit == e.unit && d.params == e.params && d.formats == e.formats;
+        match rtl::emit::default_design().into_iter().find(committed) {
             Some(d) => Self::new(d.unit, &crate::hdl_out().join(d.file()), &d.ports),
             None => Self::emitted(e),
         }

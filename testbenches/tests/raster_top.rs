@@ -10,6 +10,7 @@ use model::input::Vtx;
 use model::raster_top::{self as top, frame as prepare};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use rtl::config::Build;
 use rust_hdl::prelude::Block;
 use scene::stress::{fan, random_mesh, split_rectangle};
 use scene::{Triangle, Trilist, Vertex};
@@ -33,22 +34,23 @@ fn model(rt: &VerilatorRuntime) -> frame::RasterTopVl<'_> {
 
 /// `list` through the model and through `dut`; the image, depth and cycles compared.
 fn check(what: &str, dut: &mut dyn Cycle, list: &Trilist, cull: Cull, mem: MemoryModel) -> (top::Frame, FrameOut) {
-    check_at(top::class_for(list.width, list.height), what, dut, list, cull, mem)
+    check_at(Build::of_class(top::class_for(list.width, list.height)), what, dut, list, cull, mem)
 }
 
-/// [`check`] with `dut` the `raster_top` of size class `class`.
+/// [`check`] with `dut` the `raster_top` of build `build`.
 fn check_at(
-    class: u32,
+    build: Build,
     what: &str,
     dut: &mut dyn Cycle,
     list: &Trilist,
     cull: Cull,
     mem: MemoryModel,
 ) -> (top::Frame, FrameOut) {
-    let prep = top::frame_at(class, list, cull, [20, 24, 32]).unwrap_or_else(|e| panic!("{what}: {e}"));
+    let prep = top::frame_with(build.class, &build.formats, list, cull, [20, 24, 32])
+        .unwrap_or_else(|e| panic!("{what}: {e}"));
     assert!(prep.skipped.is_empty(), "{what}: triangles that do not fit the input formats");
     let f = Frame {
-        class: prep.class,
+        build: frame::build_of(&prep),
         width: list.width,
         height: list.height,
         cull,
@@ -256,7 +258,7 @@ fn raster_top_size_classes_11_and_12_lockstep() {
         let vl = verilated_at(class);
         let mut dual = Dual::new(unit, vl.model().unwrap_or_else(|e| panic!("{e}")));
         let what = format!("class {class}, lockstep");
-        let (prep, _) = check_at(class, &what, &mut dual, &l, cull, ready_memory(&mut |c| c % 5 != 3));
+        let (prep, _) = check_at(Build::of_class(class), &what, &mut dual, &l, cull, ready_memory(&mut |c| c % 5 != 3));
         assert!(prep.fragments.last().is_some_and(|&n| n > 0), "{what}: the far triangle draws");
     }
     let (k, l) = (7, 5);
@@ -350,7 +352,7 @@ fn raster_top_iverilog_replay() {
         let prep = prepare(&l, cull, [0; 3]).unwrap_or_else(|e| panic!("{e}"));
         assert!(prep.writes.len() > 100, "{name}: {} writes", prep.writes.len());
         let f = Frame {
-            class: prep.class,
+            build: frame::build_of(&prep),
             width: l.width,
             height: l.height,
             cull,
@@ -396,8 +398,9 @@ fn units_frame<U: Block + Pins>(
         prep.sorted.iter().map(|s| (s.v, s.crosses)).collect()
     };
     assert!(!sent.is_empty(), "{what}: a triangle to carry inp_last");
-    let class = prep.class;
-    let zmax = model::cull_sort::z_max(&top::formats(class)) as u32;
+    let build = frame::build_of(&prep);
+    let class = build.class;
+    let zmax = model::cull_sort::z_max(&build.formats) as u32;
     let mut memory = Memory::new(class, (list.width, list.height), zmax, [20, 24, 32], ReadDuringWrite::Old);
     let (mut taken, mut fragments, mut stalled) = (0, Vec::new(), false);
     let dim = |v: u32| Value::new(class as usize + 1, v as u128);
@@ -409,7 +412,7 @@ fn units_frame<U: Block + Pins>(
         pins.push(("inp_valid".into(), Value::new(1, offer.is_some() as u128)));
         pins.push(("inp_last".into(), Value::new(1, (taken + 1 == sent.len()) as u128)));
         let (tri, crosses) = offer.copied().unwrap_or(sent[0]);
-        pins.extend(frame::triangle_pins(class, &tri, units.cull_sort));
+        pins.extend(frame::triangle_pins(&build, &tri, units.cull_sort));
         if units.cull_sort {
             pins.push(("cull_back".into(), Value::new(1, (cull == Cull::Back) as u128)));
         } else {
@@ -449,6 +452,26 @@ fn units_frame<U: Block + Pins>(
     panic!("{what}: no done ({taken} of {} triangles taken)", sent.len());
 }
 
+/// Triangles across every clip plane and the near and far planes on a 40 x 30 screen, one
+/// wholly outside the left edge and one back-facing.
+fn crossing_40x30() -> Trilist {
+    let c = [[250.0, 10.0, 40.0], [20.0, 240.0, 90.0], [60.0, 70.0, 230.0]];
+    let tri = |p: [(f64, f64, f64); 3]| -> Triangle { [0, 1, 2].map(|k| Vertex::new(p[k].0, p[k].1, p[k].2, c[k])) };
+    list(
+        40,
+        30,
+        vec![
+            tri([(-10.3, 5.2, 0.3), (15.7, 2.1, 0.5), (5.1, 25.6, 0.7)]),
+            tri([(30.3, 5.2, 0.3), (51.7, 12.1, 0.5), (25.1, 25.6, 0.7)]),
+            tri([(10.3, -12.2, 0.3), (30.7, 7.1, 0.5), (5.1, 20.6, 0.7)]),
+            tri([(-20.3, -15.2, 0.3), (65.7, -5.1, 0.5), (15.1, 60.6, 0.7)]),
+            tri([(2.3, 2.2, -0.4), (37.7, 7.1, 1.5), (10.1, 27.6, 0.6)]),
+            tri([(-10.3, 5.2, 0.3), (-15.7, 2.1, 0.5), (-5.1, 25.6, 0.7)]),
+            tri([(3.3, 3.2, 0.2), (5.1, 27.6, 0.2), (36.7, 4.1, 0.2)]),
+        ],
+    )
+}
+
 /// Units present: `raster_top` without `pixel_out` (fragments out), without `cull_sort`
 /// (sorted triangles in), and without both, each emitted, Verilated and run beside its
 /// rust-hdl self on the cube and on triangles across every clip plane, once with nothing
@@ -463,22 +486,7 @@ fn raster_top_units_present_lockstep() {
             raster_top.emit(&raster_top.params(params).expect("known parameters")).unwrap_or_else(|e| panic!("{e}"));
         let vl = Verilated::of(&e).unwrap_or_else(|e| panic!("{e}"));
         let (cube, cube_cull) = scene("cube", Some((24, 16)));
-        let c = [[250.0, 10.0, 40.0], [20.0, 240.0, 90.0], [60.0, 70.0, 230.0]];
-        let tri =
-            |p: [(f64, f64, f64); 3]| -> Triangle { [0, 1, 2].map(|k| Vertex::new(p[k].0, p[k].1, p[k].2, c[k])) };
-        let crossing = list(
-            40,
-            30,
-            vec![
-                tri([(-10.3, 5.2, 0.3), (15.7, 2.1, 0.5), (5.1, 25.6, 0.7)]),
-                tri([(30.3, 5.2, 0.3), (51.7, 12.1, 0.5), (25.1, 25.6, 0.7)]),
-                tri([(10.3, -12.2, 0.3), (30.7, 7.1, 0.5), (5.1, 20.6, 0.7)]),
-                tri([(-20.3, -15.2, 0.3), (65.7, -5.1, 0.5), (15.1, 60.6, 0.7)]),
-                tri([(2.3, 2.2, -0.4), (37.7, 7.1, 1.5), (10.1, 27.6, 0.6)]),
-                tri([(-10.3, 5.2, 0.3), (-15.7, 2.1, 0.5), (-5.1, 25.6, 0.7)]),
-                tri([(3.3, 3.2, 0.2), (5.1, 27.6, 0.2), (36.7, 4.1, 0.2)]),
-            ],
-        );
+        let crossing = crossing_40x30();
         let name = format!("CULL_SORT={} PIXEL_OUT={}", cull_sort as u8, pixel_out as u8);
         for (what, l, cull) in [("cube", &cube, cube_cull), ("clipping", &crossing, Cull::Back)] {
             let mut dual = Dual::new(unit(), vl.model().unwrap_or_else(|e| panic!("{e}")));
@@ -492,4 +500,43 @@ fn raster_top_units_present_lockstep() {
     run(|| rtl::raster_top::RasterTopFragments::new(k, l).expect("K = 7, L = 5"), true, false);
     run(|| rtl::raster_top::RasterTopSorted::new(k, l).expect("K = 7, L = 5"), false, true);
     run(|| rtl::raster_top::RasterTopCore::new(k, l).expect("K = 7, L = 5"), false, false);
+}
+
+/// `raster_top` built at formats other than its class's defaults (`rtl::custom`; by default
+/// `crates/rtl/custom-formats.json`: a 24-bit depth buffer, 3 subpixel bits, colours with 2
+/// fraction bits, narrower reciprocal, wider gradients), emitted at those formats and
+/// Verilated, beside its rust-hdl self in lockstep (every output every cycle): the cube
+/// with nothing stalling (cycles = `model::cycles`) and the clipping cases with the memory
+/// stalling, image and depth buffer the model's at those formats, which differ from the
+/// model's at the class's defaults.
+#[test]
+fn raster_top_custom_formats_lockstep() {
+    let build = Build { class: rtl::custom::CLASS, formats: rtl::custom::FORMATS };
+    assert_ne!(
+        build,
+        Build::of_class(build.class),
+        "rtl::custom is built at its class's defaults: nothing new to test"
+    );
+    let raster_top = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
+    let params = raster_top.params([("N".to_owned(), build.class as u64)]).expect("known parameters");
+    let e = raster_top.emit_at(&params, &build.formats).unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        e.ports.iter().any(|p| p.name == "wr_z" && p.width == build.formats.z.frac as usize),
+        "wr_z is z.frac wide"
+    );
+    let vl = Verilated::of(&e).unwrap_or_else(|e| panic!("{e}"));
+    let (cube, cube_cull) = scene("cube", Some((24, 16)));
+    let crossing = crossing_40x30();
+    // The clipping cases with the memory not ready one cycle in five.
+    for (what, l, cull, stalling) in [("cube", &cube, cube_cull, false), ("clipping", &crossing, Cull::Back, true)] {
+        let unit = rtl::custom::raster_top::RasterTop::new(7, 5).expect("K = 7, L = 5");
+        let mut dual = Dual::new(unit, vl.model().unwrap_or_else(|e| panic!("{e}")));
+        let what = format!("{} formats, {what}", rtl::custom::SOURCE);
+        let (prep, out) = check_at(build, &what, &mut dual, l, cull, ready_memory(&mut |c| !stalling || c % 5 != 3));
+        if out.stalls == 0 {
+            assert_eq!(out.cycles, prep.cycles(), "{what}: cycles, RTL against model::cycles");
+        }
+        let defaults = top::frame_at(build.class, l, cull, [20, 24, 32]).expect("the class's default formats");
+        assert!(defaults.render.fb.depth != prep.render.fb.depth, "{what}: the formats change the depth buffer");
+    }
 }

@@ -14,6 +14,11 @@ pub struct Args {
     /// A parameter of the unit, e.g. `--param P=128`; repeatable. Unset ones take their default.
     #[arg(long = "param", value_name = "NAME=VALUE", value_parser = parse_param)]
     params: Vec<(String, u64)>,
+    /// Number formats of a scanline unit: a JSON file of formats by quantity over the
+    /// defaults of its size class N (e.g. {"z": "S1.24 half-up"} for a 24-bit depth
+    /// buffer). Formats edgepaint is not built at are compiled first (cargo, target/formats).
+    #[arg(long, value_name = "FILE")]
+    formats: Option<PathBuf>,
     /// Directory to write `<unit>.v` and `manifest.json` into.
     #[arg(short, long, value_name = "DIR", default_value = "hdl-out")]
     out: PathBuf,
@@ -28,13 +33,39 @@ pub fn parse_param(s: &str) -> std::result::Result<(String, u64), String> {
 
 pub fn run(args: Args) -> Result<()> {
     let Some(name) = args.unit else {
-        if !args.params.is_empty() {
-            bail!("--param needs --unit: the default design's parameters are fixed");
+        if !args.params.is_empty() || args.formats.is_some() {
+            bail!("--param and --formats need --unit: the default design's parameters are fixed");
         }
         return emit_default(&args.out);
     };
-    let emitted = emit_one(&name, args.params)?;
-    write(&args.out, &[emitted])
+    match emit_with(&name, args.params, args.formats.as_deref())? {
+        Some(emitted) => write(&args.out, &[emitted]),
+        None => Ok(()), // an edgepaint compiled at those formats emitted it
+    }
+}
+
+/// Emits unit `name` with `params` over its defaults, at the formats file `formats` over
+/// its size class's defaults when given (a scanline unit). `None` when this edgepaint does
+/// not hold those formats and one compiled at them ran the command instead
+/// (`super::rebuild`).
+pub fn emit_with(name: &str, params: Vec<(String, u64)>, formats: Option<&Path>) -> Result<Option<Emitted>> {
+    let Some(path) = formats else {
+        return emit_one(name, params).map(Some);
+    };
+    let unit = unit_named(name)?;
+    let params = unit.params(params).map_err(|e| anyhow!(e))?;
+    let Some(&class) = params.get("N") else {
+        bail!("{name} has no number formats to set (--formats is for the scanline units)");
+    };
+    let build = super::rebuild::build_from_file(path, u32::try_from(class).unwrap_or(u32::MAX))?;
+    if super::rebuild::ensure(&build, &format!("the formats of {}", path.display()))? {
+        return Ok(None);
+    }
+    unit.emit_at(&params, &build.formats).map(Some).map_err(|e| anyhow!(e))
+}
+
+fn unit_named(name: &str) -> Result<&'static Unit> {
+    Unit::named(name).ok_or_else(|| anyhow!("no unit named {name} (units: {})", rtl::emit::unit_names()))
 }
 
 /// `edgepaint` with no arguments: the default design into `hdl-out/`.
@@ -44,7 +75,7 @@ pub fn run_default() -> Result<()> {
 
 /// Emits unit `name` with `params` over its defaults.
 pub fn emit_one(name: &str, params: Vec<(String, u64)>) -> Result<Emitted> {
-    let unit = Unit::named(name).ok_or_else(|| anyhow!("no unit named {name} (units: {})", rtl::emit::unit_names()))?;
+    let unit = unit_named(name)?;
     let params = unit.params(params).map_err(|e| anyhow!(e))?;
     unit.emit(&params).map_err(|e| anyhow!(e))
 }

@@ -40,14 +40,7 @@ impl FixedArgs {
         let f = match self.formats.as_str() {
             "default" => Formats::for_resolution(width, height),
             "wide" => Formats::wide(width, height),
-            path => {
-                let p = Path::new(path);
-                let text =
-                    std::fs::read_to_string(p).with_context(|| format!("{path}: cannot read the formats file"))?;
-                let json: serde_json::Value =
-                    serde_json::from_str(&text).with_context(|| format!("{path}: malformed JSON"))?;
-                return Formats::with_overrides(width, height, &json).map_err(|e| anyhow::anyhow!("{path}: {e}"));
-            }
+            path => return formats_file(Path::new(path), width, height),
         };
         f.check(width, height).map_err(|e| anyhow::anyhow!("formats \"{}\": {e}", self.formats))?;
         Ok(f)
@@ -63,4 +56,13 @@ impl FixedArgs {
             Engine::Se => anyhow::bail!("--engine se only renders (its spans are the scanline pipeline's)"),
         })
     }
+}
+
+/// The formats file `path` (a JSON object of formats by quantity) over the defaults for a
+/// `width` x `height` screen, checked.
+pub fn formats_file(path: &Path, width: u32, height: u32) -> Result<Formats> {
+    let name = path.display();
+    let text = std::fs::read_to_string(path).with_context(|| format!("{name}: cannot read the formats file"))?;
+    let json: serde_json::Value = serde_json::from_str(&text).with_context(|| format!("{name}: malformed JSON"))?;
+    Formats::with_overrides(width, height, &json).map_err(|e| anyhow::anyhow!("{name}: {e}"))
 }

@@ -4,6 +4,7 @@ pub mod accuracy;
 pub mod emit;
 pub mod engine;
 pub mod input;
+pub mod rebuild;
 pub mod render;
 pub mod report;
 pub mod rtl;

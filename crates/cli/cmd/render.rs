@@ -85,7 +85,10 @@ pub fn run(args: Args) -> Result<()> {
     let perspective = !args.linear;
     let (image, summary) = match args.fixed.method(args.engine, perspective)? {
         _ if args.engine == Engine::Rtl => {
-            super::rtl::render(list, cull_back, loaded.background, &args.fixed, args.analysis)?
+            match super::rtl::render(list, cull_back, loaded.background, &args.fixed, args.analysis)? {
+                Some(drawn) => drawn,
+                None => return Ok(()), // drawn by an edgepaint compiled at --formats
+            }
         }
         None => {
             let (frame, stats) = reference::render(list, &opts, &mut progress);

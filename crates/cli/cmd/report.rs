@@ -12,7 +12,7 @@
 //!   LFE5U (25F, 45F, 85F; CABGA381) the synthesized unit fits in, seed 1; the achieved
 //!   clock in nextpnr's JSON report. A unit too large for every part has no Fmax.
 
-use super::emit::emit_one;
+use super::emit::emit_with;
 use anyhow::{anyhow, bail, Context, Result};
 use rtl::emit::Emitted;
 use serde::Serialize;
@@ -31,6 +31,10 @@ pub struct Args {
     /// row per value (`--param P=64 --param P=1024`).
     #[arg(long = "param", value_name = "NAME=VALUE", value_parser = super::emit::parse_param)]
     params: Vec<(String, u64)>,
+    /// Number formats of a scanline unit (`emit --formats`): a JSON file over the defaults
+    /// of its size class N.
+    #[arg(long, value_name = "FILE")]
+    formats: Option<PathBuf>,
     /// Skip place and route (no Fmax): synthesis only, much faster.
     #[arg(long)]
     no_pnr: bool,
@@ -79,6 +83,9 @@ const ECP5_TARGET_MHZ: &str = "200";
 struct Row {
     unit: String,
     parameters: BTreeMap<String, u64>,
+    /// The formats file the unit was built at (`--formats`), if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    formats: Option<String>,
     generic: Generic,
     ice40: Fpga,
     ecp5: Fpga,
@@ -114,9 +121,20 @@ struct Fpga {
 
 pub fn run(args: Args) -> Result<()> {
     let designs: Vec<Emitted> = match &args.unit {
-        None if !args.params.is_empty() => bail!("--param needs --unit: the default design's parameters are fixed"),
+        None if !args.params.is_empty() || args.formats.is_some() => {
+            bail!("--param and --formats need --unit: the default design's parameters are fixed")
+        }
         None => rtl::emit::default_design(),
-        Some(name) => sweep(&args.params).into_iter().map(|p| emit_one(name, p)).collect::<Result<_>>()?,
+        Some(name) => {
+            let mut designs = Vec::new();
+            for p in sweep(&args.params) {
+                match emit_with(name, p, args.formats.as_deref())? {
+                    Some(e) => designs.push(e),
+                    None => return Ok(()), // an edgepaint compiled at those formats reported
+                }
+            }
+            designs
+        }
     };
     let mut tools = vec!["yosys"];
     if !args.no_pnr {
@@ -129,10 +147,15 @@ pub fn run(args: Args) -> Result<()> {
     }
     let mut rows = Vec::new();
     for e in &designs {
-        let tag: String = e.params.iter().map(|(k, v)| format!("-{k}{v}")).collect();
+        let mut tag: String = e.params.iter().map(|(k, v)| format!("-{k}{v}")).collect();
+        if let Some(stem) = args.formats.as_deref().and_then(Path::file_stem) {
+            tag.push_str(&format!("-{}", stem.to_string_lossy()));
+        }
         let dir = args.out.join(format!("{}{tag}", e.unit));
         eprintln!("report: {}{tag} in {}", e.unit, dir.display());
-        rows.push(report(e, &dir, (!args.no_pnr).then_some(args.router.as_str()))?);
+        let mut row = report(e, &dir, (!args.no_pnr).then_some(args.router.as_str()))?;
+        row.formats = args.formats.as_ref().map(|f| f.display().to_string());
+        rows.push(row);
     }
     let md = markdown(&rows);
     let json = serde_json::to_string_pretty(&serde_json::json!({ "units": rows }))? + "\n";
@@ -231,6 +254,7 @@ fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
     Ok(Row {
         unit: e.unit.to_owned(),
         parameters: e.params.clone(),
+        formats: None,
         generic: Generic {
             cells: generic["num_cells"].as_u64().ok_or_else(|| anyhow!("no cell count in Yosys' stat"))?,
             transistors,
@@ -334,7 +358,8 @@ fn markdown(rows: &[Row]) -> String {
          |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
     );
     for r in rows {
-        let params: Vec<String> = r.parameters.iter().map(|(k, v)| format!("{k}={v}")).collect();
+        let mut params: Vec<String> = r.parameters.iter().map(|(k, v)| format!("{k}={v}")).collect();
+        params.extend(r.formats.iter().map(|f| format!("formats={f}")));
         let (i, e) = (&r.ice40, &r.ecp5);
         writeln!(
             md,

@@ -1,8 +1,10 @@
 //! `render --engine rtl`: a whole frame through the RTL of the scanline pipeline
 //! (`raster_top`) under Verilator, with the depth and colour buffers in Rust
 //! (`testbenches::frame`). The `raster_top` of the screen's size class draws it
-//! (`model::raster_top::class_for`: class 10 up to 1024 x 1024, 11 and 12 above): class 10
-//! through marlin's static model, the others through its dynamic one. The Verilated model
+//! (`model::raster_top::class_for`: class 10 up to 1024 x 1024, 11 and 12 above) at the
+//! formats asked for (`--formats`; formats edgepaint is not built at are compiled first,
+//! `super::rebuild`): class 10 at its defaults through marlin's static model, the others
+//! through its dynamic one. The Verilated model
 //! is built the first time under `target/verilator/` (Verilator from
 //! `scripts/setup-tools.sh`). The image is checked against the scanline model's, bit for
 //! bit.
@@ -11,6 +13,7 @@ use super::engine::FixedArgs;
 use super::render::{depth16, Image};
 use anyhow::{anyhow, ensure, Result};
 use model::cull_sort::Cull;
+use rtl::config::Build;
 use scene::Trilist;
 use std::time::Instant;
 use testbenches::frame::{self, Cycle, Frame, MemoryModel, Report};
@@ -18,48 +21,45 @@ use testbenches::memory::ReadDuringWrite;
 use testbenches::Verilated;
 
 /// Draws `list` through `raster_top`; returns the image and the summary line with its
-/// fragment count.
+/// fragment count, or `None` when an edgepaint compiled at the formats asked for drew it.
 pub fn render(
     list: &Trilist,
     cull_back: bool,
     background: [f64; 3],
     fixed: &FixedArgs,
     analysis: bool,
-) -> Result<(Image, (String, u64))> {
-    ensure!(
-        fixed.formats == "default",
-        "--engine rtl: the RTL is built for the default formats of the screen's size class (Formats::for_n({})); \
-         leave out --formats",
-        model::raster_top::class_for(list.width, list.height)
-    );
+) -> Result<Option<(Image, (String, u64))>> {
     ensure!(!analysis, "--analysis checks the models' arithmetic; it does not apply to --engine rtl");
+    let class = model::raster_top::class_for(list.width, list.height);
+    let formats = fixed.formats(list.width, list.height)?;
+    let build = Build { class, formats };
+    if build != Build::of_class(class) {
+        rtl::config::check(class, &formats).map_err(|e| anyhow!("--engine rtl, formats \"{}\": {e}", fixed.formats))?;
+        if super::rebuild::ensure(&build, &format!("the formats of {}", fixed.formats))? {
+            return Ok(None);
+        }
+    }
     let cull = if cull_back { Cull::Back } else { Cull::None };
     let background = background.map(|c| c.round().clamp(0.0, 255.0) as u8);
-    let prep = model::raster_top::frame(list, cull, background).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let prep = model::raster_top::frame_with(class, &formats, list, cull, background)
+        .map_err(|e| anyhow!("--engine rtl: {e}"))?;
     for (i, e) in prep.skipped.iter().take(5) {
         eprintln!("warning: triangle {i} not drawn: {e}");
     }
     ensure!(!prep.triangles.is_empty(), "--engine rtl: no triangle to draw");
-    let f = Frame {
-        class: prep.class,
-        width: list.width,
-        height: list.height,
-        cull,
-        background,
-        triangles: &prep.triangles,
-    };
+    let f = Frame { build, width: list.width, height: list.height, cull, background, triangles: &prep.triangles };
     let memory = MemoryModel { read_during_write: ReadDuringWrite::Old, ready: &mut |_| true };
     let max_cycles = 2 * prep.cycles() + 100_000;
     let start;
-    let out = if prep.class == rtl::widths::CLASS {
+    let out = if build == Build::default() {
         let runtime = frame::verilator().map_err(|e| anyhow!("--engine rtl: {e}"))?;
         let mut dut = frame::model(&runtime).map_err(|e| anyhow!("--engine rtl: {e}"))?;
         start = Instant::now();
         frame::draw(&mut dut, &f, memory, max_cycles)
     } else {
         let unit = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
-        let params = unit.params([("N".to_owned(), prep.class as u64)]).map_err(|e| anyhow!(e))?;
-        let e = unit.emit(&params).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+        let params = unit.params([("N".to_owned(), class as u64)]).map_err(|e| anyhow!(e))?;
+        let e = unit.emit_at(&params, &formats).map_err(|e| anyhow!("--engine rtl: {e}"))?;
         let vl = Verilated::of(&e).map_err(|e| anyhow!("--engine rtl: {e}"))?;
         let mut dut = vl.model().map_err(|e| anyhow!("--engine rtl: {e}"))?;
         start = Instant::now();
@@ -74,11 +74,12 @@ pub fn render(
     );
     let latency = r.latency.map_or("none".into(), |(lo, mid, hi)| format!("{lo}/{mid}/{hi}"));
     let summary = format!(
-        "rtl (raster_top of size class {} in Verilator): {} triangles in, {} drawn, {} culled; {} fragments, {} pixels written; \
+        "rtl (raster_top of size class {}{} in Verilator): {} triangles in, {} drawn, {} culled; {} fragments, {} pixels written; \
          {} cycles (model::cycles: {}), {:.3} pixels per clock; per triangle: latency to its first pixel \
          {latency} cycles (min/median/max), {:.1} cycles between triangles (max {}); {:.0} cycles/s simulated; \
          image equal to the scanline model's",
         prep.class,
+        if build == Build::of_class(class) { "" } else { ", formats of --formats" },
         list.triangles.len(),
         r.drawn,
         r.triangles - r.drawn,
@@ -95,9 +96,9 @@ pub fn render(
     let image = Image {
         width: m.width,
         height: m.height,
-        depth16: m.depth.iter().map(|&d| depth16(d, model::raster_top::formats(prep.class).z.frac)).collect(),
+        depth16: m.depth.iter().map(|&d| depth16(d, formats.z.frac)).collect(),
         rgb: m.rgb,
         written: m.written,
     };
-    Ok((image, (summary, r.fragments)))
+    Ok(Some((image, (summary, r.fragments))))
 }

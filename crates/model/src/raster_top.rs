@@ -31,8 +31,9 @@ pub const fn class_for(width: u32, height: u32) -> u32 {
 
 /// One frame through `raster_top`, as the model draws it.
 pub struct Frame {
-    /// The size class of the `raster_top` drawing it.
+    /// The size class of the `raster_top` drawing it, and the formats it is built at.
     pub class: u32,
+    pub formats: Formats,
     /// The triangles sent, as input words (`model::input::to_fixed`), in input order.
     pub triangles: Vec<[Vtx; 3]>,
     /// Triangles left out because their vertices do not fit the input formats, by index.
@@ -74,6 +75,13 @@ pub fn frame(list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<Frame, S
 /// may be larger than the screen needs); an error for a class not built or a screen larger
 /// than 2^class.
 pub fn frame_at(class: u32, list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<Frame, String> {
+    frame_with(class, &formats(class), list, cull, background)
+}
+
+/// `list` drawn with `cull` on `background` by the `raster_top` of size class `class` built
+/// at formats `f` (`rtl::custom`); an error as [`frame_at`]'s, or for formats that do not
+/// work on a 2^class screen.
+pub fn frame_with(class: u32, f: &Formats, list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<Frame, String> {
     if !(RTL_CLASS..=MAX_CLASS).contains(&class) {
         let side = 1u64 << class.min(63);
         return Err(format!(
@@ -91,7 +99,8 @@ pub fn frame_at(class: u32, list: &Trilist, cull: Cull, background: [u8; 3]) -> 
             list.width, list.height
         ));
     }
-    let f = formats(class);
+    f.check(side, side)?;
+    let f = *f;
     let opts = Options { method: Method::Scanline, cull, analysis: false, background };
     let clip = Clip { width: list.width, height: list.height };
     let (mut triangles, mut skipped, mut sorted) = (Vec::new(), Vec::new(), Vec::new());
@@ -112,7 +121,7 @@ pub fn frame_at(class: u32, list: &Trilist, cull: Cull, background: [u8; 3]) -> 
     }
     let render = raster::render(list, &f, &opts, &mut |_| {});
     debug_assert!(render.fb == fb, "the same pixels, through the same depth test");
-    Ok(Frame { class, triangles, skipped, sorted, render, fragments, pixels, writes })
+    Ok(Frame { class, formats: f, triangles, skipped, sorted, render, fragments, pixels, writes })
 }
 
 #[cfg(test)]

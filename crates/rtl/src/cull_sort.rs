@@ -523,5 +523,5 @@ crate::pins!(CullSort {
 pub fn emit_cull_sort(params: &Params) -> Result<Emitted, String> {
     let mut u = CullSort::default();
     u.connect_all();
-    Ok(Emitted { unit: "cull_sort", params: params.clone(), ports: ports(&u), verilog: verilog("cull_sort", &u) })
+    Ok(Emitted { unit: "cull_sort", params: params.clone(), formats: None, ports: ports(&u), verilog: verilog("cull_sort", &u) })
 }

@@ -5,6 +5,7 @@ use crate::sim::PortDir;
 use crate::{Params, Unit, DEFAULT_DESIGN, UNITS};
 use rust_hdl::prelude::*;
 use serde::Serialize;
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// One top-level port of an emitted unit, as Verilog sees it.
@@ -20,6 +21,8 @@ pub struct Port {
 pub struct Emitted {
     pub unit: &'static str,
     pub params: Params,
+    /// The number formats it is built at (scanline units), recorded in the manifest.
+    pub formats: Option<fx::Formats>,
     pub ports: Vec<Port>,
     pub verilog: String,
 }
@@ -44,7 +47,7 @@ pub fn verilog<U: Block>(name: &str, u: &U) -> String {
 pub fn emit<U: Block + Default>(name: &'static str, params: Params) -> Emitted {
     let mut u = U::default();
     u.connect_all();
-    Emitted { unit: name, params, ports: ports(&u), verilog: verilog(name, &u) }
+    Emitted { unit: name, params, formats: None, ports: ports(&u), verilog: verilog(name, &u) }
 }
 
 /// The top-level ports of `u`, in declaration order (a bundle's pins are named
@@ -100,6 +103,8 @@ pub fn manifest(units: &[Emitted]) -> String {
     struct ManifestUnit<'a> {
         unit: &'a str,
         parameters: &'a Params,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        formats: Option<BTreeMap<&'static str, String>>,
         file: String,
         ports: Vec<ManifestPort<'a>>,
     }
@@ -114,6 +119,7 @@ pub fn manifest(units: &[Emitted]) -> String {
         .map(|e| ManifestUnit {
             unit: e.unit,
             parameters: &e.params,
+            formats: e.formats.map(|f| f.named().iter().map(|(k, f)| (*k, f.to_string())).collect()),
             file: e.file(),
             ports: e
                 .ports

@@ -5,6 +5,7 @@
 //! tests are `testbenches/tests/<name>.rs`. [`DEFAULT_DESIGN`] is what `edgepaint` with no
 //! arguments writes into `hdl-out/`.
 
+pub mod config;
 pub mod emit;
 pub mod ept;
 pub mod mul;
@@ -12,10 +13,11 @@ pub mod parts;
 pub mod se;
 pub mod sim;
 
-/// The scanline pipeline's units, as modules of a size-class module (`n10.rs`, ...): rust-hdl's
-/// widths are compile-time constants, so each size class `n` (screens up to 2^n x 2^n,
-/// number formats `fx::Formats::for_n(n)`) compiles its own copy of the same sources
-/// (`cull_sort.rs`, ..., `raster_top.rs`, and `span_fifo.rs`, a part of `raster_top`), which read their widths from their class's
+/// The scanline pipeline's units, as modules of a build module (`n10.rs`, ..., `custom.rs`):
+/// rust-hdl's widths are compile-time constants, so each build (`config`: a size class `n`,
+/// screens up to 2^n x 2^n, and number formats, `CLASS` and `FORMATS` in the build module)
+/// compiles its own copy of the same sources (`cull_sort.rs`, ..., `raster_top.rs`, and
+/// `span_fifo.rs`, a part of `raster_top`), which read their widths from their build's
 /// `widths` module. (Loading one file as several modules is the point here, hence the
 /// `clippy::duplicate_mod` allowance.)
 macro_rules! scanline_units {
@@ -41,32 +43,84 @@ macro_rules! scanline_units {
     };
 }
 #[allow(clippy::duplicate_mod)]
+pub mod custom;
+#[allow(clippy::duplicate_mod)]
 pub mod n10;
 #[allow(clippy::duplicate_mod)]
 pub mod n11;
 #[allow(clippy::duplicate_mod)]
 pub mod n12;
 
-/// The size classes the scanline units are built for (`n10`, `n11`, `n12`).
+/// The size classes the scanline units are built for at their default formats (`n10`,
+/// `n11`, `n12`).
 pub const CLASSES: [u32; 3] = [n10::CLASS, n11::CLASS, n12::CLASS];
 
-/// A scanline unit's `build`: `$emit` of module `$unit` in the size class its parameter
-/// `N` names.
-macro_rules! by_class {
+/// Every build of the scanline units: the size classes at their default formats, then
+/// `custom`.
+pub const BUILDS: [config::Build; 4] = [
+    config::Build { class: n10::CLASS, formats: n10::FORMATS },
+    config::Build { class: n11::CLASS, formats: n11::FORMATS },
+    config::Build { class: n12::CLASS, formats: n12::FORMATS },
+    config::Build { class: custom::CLASS, formats: custom::FORMATS },
+];
+
+/// Whether edgepaint holds a copy of the scanline units built at `build`.
+pub fn built(build: &config::Build) -> bool {
+    BUILDS.contains(build)
+}
+
+/// A scanline unit's emitter: `$emit` of module `$unit` in the build of size class
+/// `params["N"]` and the formats given (default: the class's).
+macro_rules! by_build {
     ($unit:ident :: $emit:ident) => {
-        |params: &Params| {
-            emit_at_class(params, stringify!($unit), [n10::$unit::$emit, n11::$unit::$emit, n12::$unit::$emit])
+        |params: &Params, formats: Option<&Formats>| {
+            emit_at_build(
+                params,
+                formats,
+                stringify!($unit),
+                [n10::$unit::$emit, n11::$unit::$emit, n12::$unit::$emit, custom::$unit::$emit],
+            )
         }
     };
 }
 
-/// `emit[i]` for class `CLASSES[i]` = `params["N"]`; an error for another class.
-fn emit_at_class(params: &Params, unit: &str, emit: [Build; CLASSES.len()]) -> Result<Emitted, String> {
+/// How a scanline unit of one build is emitted (its module's `emit_<unit>`).
+type BuildEmitter = fn(&Params) -> Result<Emitted, String>;
+
+/// `emit[i]` for `BUILDS[i]` = (`params["N"]`, `formats`); an error for a build
+/// edgepaint does not hold.
+fn emit_at_build(
+    params: &Params,
+    formats: Option<&Formats>,
+    unit: &str,
+    emit: [BuildEmitter; BUILDS.len()],
+) -> Result<Emitted, String> {
     let n = params["N"];
-    match CLASSES.iter().position(|&c| c as u64 == n) {
-        Some(i) => emit[i](params),
-        None => Err(format!("{unit}: N = {n} is not supported: size classes {CLASSES:?} (screens up to 2^N x 2^N)")),
-    }
+    let Some(class) = u32::try_from(n).ok().filter(|c| CLASSES.contains(c) || *c == custom::CLASS) else {
+        return Err(format!("{unit}: N = {n} is not supported: size classes {CLASSES:?} (screens up to 2^N x 2^N)"));
+    };
+    let build = config::Build { class, formats: formats.copied().unwrap_or(Formats::for_n(class)) };
+    let i = BUILDS.iter().position(|b| *b == build).ok_or_else(|| {
+        format!(
+            "{unit}: edgepaint is not built at these formats for size class {class} (its builds: the defaults of \
+             classes {CLASSES:?}, and {} at class {}); `edgepaint emit --formats FILE` rebuilds it",
+            custom::SOURCE,
+            custom::CLASS
+        )
+    })?;
+    let mut e = emit[i](params)?;
+    e.formats = Some(build.formats);
+    Ok(e)
+}
+
+/// The emitter of a unit without number formats (`ept`, `se`).
+macro_rules! no_formats {
+    ($unit:ident :: $emit:ident) => {
+        |params: &Params, formats: Option<&Formats>| match formats {
+            Some(_) => Err(format!("{} has no number formats to set", stringify!($unit))),
+            None => $unit::$emit(params),
+        }
+    };
 }
 
 /// The default size class, [`fx::RTL_CLASS`] (screens up to 1024 x 1024): its units are
@@ -82,6 +136,7 @@ const N: Param = Param {
 };
 
 use emit::Emitted;
+use fx::Formats;
 use std::collections::BTreeMap;
 
 /// Parameter values of one unit by name, e.g. `{"P": 64}`.
@@ -102,12 +157,13 @@ pub struct Unit {
     /// One line: what the unit is and which paper and figure it follows.
     pub doc: &'static str,
     pub params: &'static [Param],
-    /// Emits the unit for complete, named parameters; `Err` for unsupported values.
-    build: Build,
+    /// Emits the unit for complete, named parameters and the formats given (`None`: the
+    /// defaults); `Err` for unsupported values.
+    build: Emitter,
 }
 
-/// How a unit is emitted for complete, named parameters.
-type Build = fn(&Params) -> Result<Emitted, String>;
+/// How a unit is emitted for complete, named parameters and formats.
+type Emitter = fn(&Params, Option<&Formats>) -> Result<Emitted, String>;
 
 /// Every unit, by name.
 pub const UNITS: &[Unit] = &[
@@ -115,19 +171,19 @@ pub const UNITS: &[Unit] = &[
         name: "ept",
         doc: "edge painting tree, paper 002 Figs. 2-5: pixel i painted iff XL <= i <= XR",
         params: &[Param { name: "P", default: 64, doc: "pixels per scanline, a power of two from 8 to 1024" }],
-        build: ept::emit_ept,
+        build: no_formats!(ept::emit_ept),
     },
     Unit {
         name: "cull_sort",
         doc: "cull & sort, paper 003 Fig. 4, Table 1: outcodes, reject, back-face cull, sort by y; 1 cycle",
         params: &[N],
-        build: by_class!(cull_sort::emit_cull_sort),
+        build: by_build!(cull_sort::emit_cull_sort),
     },
     Unit {
         name: "divider",
         doc: "the shared pipelined floor divider of paper 001 §II.2: one division per cycle, exact",
         params: &[N, Param { name: "L", default: 5, doc: "pipeline stages (latency), 1 to 25; 001 has 5" }],
-        build: by_class!(divider::emit_divider),
+        build: by_build!(divider::emit_divider),
     },
     Unit {
         name: "triangle_setup",
@@ -137,25 +193,25 @@ pub const UNITS: &[Unit] = &[
             Param { name: "K", default: 7, doc: "multipliers, 1 to 7 (latency 66 to 18 with L = 5); 001 has 7" },
             Param { name: "L", default: 5, doc: "stages of the shared divider, 1 to 25; 001 has 5" },
         ],
-        build: by_class!(triangle_setup::emit_triangle_setup),
+        build: by_build!(triangle_setup::emit_triangle_setup),
     },
     Unit {
         name: "edge_walk",
         doc: "edge walk, papers 001 §II.2 and 003 Fig. 5: one scanline per cycle, exact edges, Y clipping",
         params: &[N],
-        build: by_class!(edge_walk::emit_edge_walk),
+        build: by_build!(edge_walk::emit_edge_walk),
     },
     Unit {
         name: "span",
         doc: "span unit, papers 001 §II.2 and 003 Fig. 6: one pixel per cycle, X and Z clipping",
         params: &[N],
-        build: by_class!(span::emit_span),
+        build: by_build!(span::emit_span),
     },
     Unit {
         name: "pixel_out",
         doc: "depth test LESS and depth/colour writes through a synchronous memory port, one pixel per cycle",
         params: &[N],
-        build: by_class!(pixel_out::emit_pixel_out),
+        build: by_build!(pixel_out::emit_pixel_out),
     },
     Unit {
         name: "raster_top",
@@ -175,7 +231,7 @@ pub const UNITS: &[Unit] = &[
                 doc: "1: pixel_out and its memory port present; 0: absent, the fragment stream out (out_*)",
             },
         ],
-        build: by_class!(raster_top::emit_raster_top),
+        build: by_build!(raster_top::emit_raster_top),
     },
     Unit {
         name: "se",
@@ -187,7 +243,7 @@ pub const UNITS: &[Unit] = &[
             Param { name: "F", default: 16, doc: "fraction bits of the lines' A and B" },
             Param { name: "I", default: 0, doc: "engine index i: region [P i, P (i + 1)), P (i + 1) < 2048" },
         ],
-        build: se::emit_se,
+        build: no_formats!(se::emit_se),
     },
 ];
 
@@ -223,8 +279,14 @@ impl Unit {
         Ok(out)
     }
 
-    /// Emits the unit with `params` (complete: see [`Unit::params`]).
+    /// Emits the unit with `params` (complete: see [`Unit::params`]) at its default formats.
     pub fn emit(&self, params: &Params) -> Result<Emitted, String> {
-        (self.build)(params)
+        (self.build)(params, None)
+    }
+
+    /// Emits the unit with `params` at `formats` (a scanline unit: one of [`BUILDS`] at
+    /// size class `params["N"]`).
+    pub fn emit_at(&self, params: &Params, formats: &Formats) -> Result<Emitted, String> {
+        (self.build)(params, Some(formats))
     }
 }

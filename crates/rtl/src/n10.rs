@@ -3,4 +3,6 @@
 
 /// The size class of these units.
 pub const CLASS: u32 = 10;
+/// The formats of these units: the model's defaults for the class.
+pub const FORMATS: fx::Formats = fx::Formats::for_n(CLASS);
 scanline_units!();

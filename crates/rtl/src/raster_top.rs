@@ -624,7 +624,7 @@ raster_top_variant!(
 /// `unit`, connected and emitted as `raster_top` with `params`.
 fn emitted<U: Block>(mut unit: U, params: &Params) -> Emitted {
     unit.connect_all();
-    Emitted { unit: "raster_top", params: params.clone(), ports: ports(&unit), verilog: verilog("raster_top", &unit) }
+    Emitted { unit: "raster_top", params: params.clone(), formats: None, ports: ports(&unit), verilog: verilog("raster_top", &unit) }
 }
 
 /// `UNITS` entry: the rasterizer with `params["K"]` setup multipliers, a

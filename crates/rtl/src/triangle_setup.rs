@@ -56,31 +56,34 @@
 //! Model: `model::triangle_setup::triangle_setup`. Emitted: `hdl-out/triangle_setup.v`.
 
 use super::cull_sort::{outcode_bit, COLOR, OUTCODE, XY, Z};
-use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_QM};
+use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_Q, DIV_QM};
 use crate::emit::{ports, verilog, Emitted};
 use crate::mul::Mul;
 use super::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, Z_ACC};
+use crate::config::{mul_a, mul_b};
 use crate::Params;
 use rust_hdl::prelude::*;
 
-/// Multiplier operand A: the widest factor, `ooa_d` (OneOverArea x delta, the gradients'
-/// first factor).
-pub const MUL_A: usize = FORMATS.ooa_d.bits() as usize;
-/// Multiplier operand B: the widest second factor: a z difference (`z` + 1 bits), an edge
-/// delta or offset from v0 (`xy` + 3 bits, with room to sign-extend) or a step quotient
-/// (`EDGE_Q` + 2); at class 10 all three are 19 bits. Colour differences are narrower.
-pub const MUL_B: usize = max(FORMATS.z.bits() as usize + 1, max(XY + 3, EDGE_Q + 2));
-/// Product bits kept: the divider's dividend width, so that an edge start numerator goes
-/// into the divider as it is.
-pub const MUL_P: usize = DIV_N;
+/// Multiplier operand A: the widest factor, `ooa_d` (`config::mul_a`).
+pub const MUL_A: usize = mul_a(&FORMATS);
+/// Multiplier operand B: the widest second factor (`config::mul_b`); at class 10's
+/// defaults a z difference, an edge delta and a step quotient are all 19 bits.
+pub const MUL_B: usize = mul_b(&FORMATS);
+/// The wide domain: vertex x sign-extended to hold both the divider's dividend and an
+/// A operand (the dividend is the wider at every size class's defaults).
+const W: usize = max(DIV_N, MUL_A);
+/// Product bits kept: the wide domain, so that an edge start numerator goes into the
+/// divider as it is (its low `DIV_N` bits).
+pub const MUL_P: usize = W;
 /// Twice the area, exact.
 const AREA: usize = DERIVED.area_bits as usize;
-/// The wide domain: vertex coordinates sign-extended to the divider's dividend width.
-const W: usize = DIV_N;
 /// The narrow signed domain of the B operands and the edge geometry.
 const NB: usize = MUL_B;
 /// Gradients and OneOverArea x delta (`ooa_d`).
 const G: usize = MUL_A;
+/// The quotient bits taken into the narrow domain: all of `q_n` unless the quotient is
+/// narrower (a wide z makes the narrow domain wider than the divider's quotient).
+const QL: usize = if DIV_Q < NB { DIV_Q } else { NB };
 /// An attribute lane: z's gradient width; colours use its low bits.
 const ATTR: usize = DZ;
 /// OneOverArea's mantissa (`ooa`).
@@ -97,16 +100,11 @@ const fn max(a: usize, b: usize) -> usize {
         b
     }
 }
-const _: () = {
-    // The shifts below are floor shifts (right): true of the default formats.
-    assert!(FORMATS.ooa_d.frac + FORMATS.z.frac >= FORMATS.dz.frac);
-    assert!(FORMATS.ooa_d.frac + FORMATS.color.frac >= FORMATS.dc.frac);
-    assert!(FORMATS.dz.frac == FORMATS.z_acc.frac && FORMATS.dc.frac == FORMATS.c_acc.frac);
-    assert!(FORMATS.z_acc.frac.checked_sub(FORMATS.z.frac).is_some());
-    assert!(FORMATS.c_acc.frac.checked_sub(FORMATS.color.frac).is_some());
-    assert!(DZ >= DC && DZ >= Z_ACC && DC >= C_ACC && ATTR <= MUL_P && G < MUL_P);
-    assert!(MUL_B > XY + 2 && MUL_B > COLOR && EDGE_Q + 2 <= MUL_B);
-};
+// The shifts below are floor shifts (right), the lanes hold what they are given, and the
+// products fit: `config::violation`, asserted of every build in `widths.rs`; these follow
+// from it.
+const _: () = assert!(DZ >= DC && DZ >= Z_ACC && DC >= C_ACC && ATTR <= MUL_P && G <= MUL_P);
+const _: () = assert!(MUL_B > XY + 2 && MUL_B > COLOR && EDGE_Q + 2 <= MUL_B);
 
 /// When each step of setup happens, in cycles after the cycle that takes the triangle.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -353,6 +351,10 @@ pub struct TriangleSetup {
     mant_now: Signal<Local, Bits<MANT>>,
     mant_a: Signal<Local, Bits<MUL_A>>,
     q_n: Signal<Local, Bits<NB>>,
+    /// The quotient's sign bit and its extension into `q_n` (none when the quotient is
+    /// as wide as `q_n`).
+    q_msb: Constant<Bits<8>>,
+    q_ext: Constant<Bits<NB>>,
     r_pos: Signal<Local, Bit>,
     x: [DFF<Bits<NB>>; 3],
     r: [DFF<Bits<EDGE_D>>; 3],
@@ -599,6 +601,8 @@ impl TriangleSetup {
             mant_now: Default::default(),
             mant_a: Default::default(),
             q_n: Default::default(),
+            q_msb: Constant::new((QL - 1).to_bits()),
+            q_ext: ones_from(QL, NB),
             r_pos: Default::default(),
             x: dffs(),
             r: dffs(),
@@ -921,19 +925,23 @@ impl Logic for TriangleSetup {
             if self.t.q.val() == self.iss[1 + 2 * e].val() {
                 self.div.inp_valid.next = true;
                 if self.count[e].val() != 0 {
-                    self.div.inp_n.next = self.num[e].q.val();
+                    self.div.inp_n.next = self.num[e].q.val().get_bits::<DIV_N>(0);
                     self.div.inp_d.next = self.ed16[e].val();
                 }
             }
             if self.t.q.val() == self.iss[2 + 2 * e].val() {
                 self.div.inp_valid.next = true;
                 if self.count[e].val() > 1 {
-                    self.div.inp_n.next = self.edx[e].val();
+                    self.div.inp_n.next = self.edx[e].val().get_bits::<DIV_N>(0);
                     self.div.inp_d.next = self.edy[e].val().get_bits::<DIV_D>(0);
                 }
             }
         }
-        self.q_n.next = self.div.out_q.val().get_bits::<NB>(0);
+        // The step quotient (|q| <= |dx| fits both), sign-extended when narrower.
+        self.q_n.next = bit_cast::<NB, QL>(self.div.out_q.val().get_bits::<QL>(0));
+        if self.div.out_q.val().get_bit(self.q_msb.val().index()) {
+            self.q_n.next = bit_cast::<NB, QL>(self.div.out_q.val().get_bits::<QL>(0)) | self.q_ext.val();
+        }
         self.r_pos.next = self.div.out_r.val() != 0;
         self.mant_now.next = self.mant.q.val();
         if self.t.q.val() == self.res[0].val() {
@@ -1307,6 +1315,7 @@ pub fn emit_triangle_setup(params: &Params) -> Result<Emitted, String> {
     Ok(Emitted {
         unit: "triangle_setup",
         params: params.clone(),
+        formats: None,
         ports: ports(&u),
         verilog: verilog("triangle_setup", &u),
     })

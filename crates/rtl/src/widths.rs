@@ -1,16 +1,18 @@
-//! Port and register widths of the scanline pipeline's RTL, read off the number formats it
-//! is built with: the model's defaults for its size class [`CLASS`] (screens up to 2^CLASS
-//! x 2^CLASS; `crate::n10`, `crate::n11`, ...), so that a change of format in `fx::formats`
-//! reaches every port.
+//! Port and register widths of the scanline pipeline's RTL, read off the build it is
+//! compiled at (`crate::config`): its size class [`CLASS`] (screens up to 2^CLASS x
+//! 2^CLASS) and its number formats [`FORMATS`] (`crate::n10`, ..., `crate::custom`), so that
+//! a change of format reaches every port.
 //!
 //! Configurable quantities take their format's width; exact quantities (positions, edge
 //! walker remainders) take the widths `Formats::derived` gives them.
 
-pub use super::CLASS;
-use fx::{Derived, Formats};
+pub use super::{CLASS, FORMATS};
+use fx::Derived;
 
-/// The formats the RTL is built with: `Formats::for_n(CLASS)`.
-pub const FORMATS: Formats = Formats::for_n(CLASS);
+// Every build of the units is one the RTL supports.
+const _: () = if let Some(why) = crate::config::violation(CLASS, &FORMATS) {
+    panic!("{}", why)
+};
 /// Widths of the exact quantities under [`FORMATS`].
 pub const DERIVED: Derived = FORMATS.derived();
 
@@ -49,6 +51,9 @@ mod tests {
 
     #[test]
     fn widths_follow_the_formats_of_the_size_class() {
+        if FORMATS != fx::Formats::for_n(CLASS) {
+            return; // `crate::custom`: its widths are its formats', whatever they are.
+        }
         // Class 10: S11.4 vertices, positions in [-4096, 4096), edge deltas 17 bits,
         // D < 2^20; every width but the depth word's grows by a bit per class.
         let n = CLASS as usize - 10;

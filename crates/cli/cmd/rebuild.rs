@@ -1,0 +1,78 @@
+//! Formats other than a size class's defaults for the RTL: which build of the scanline
+//! units a command needs (`rtl::config::Build`), and, when this edgepaint does not hold it,
+//! the same command run again in an edgepaint compiled at it.
+//!
+//! rust-hdl's widths are compile-time constants: edgepaint holds the units at the
+//! defaults of size classes 10, 11 and 12 and at one more build, `rtl::custom`, set when it
+//! is compiled (`EDGEPAINT_CLASS`, `EDGEPAINT_FORMATS`; `crates/rtl/build.rs`). For any
+//! other build, [`ensure`] runs `cargo run --release` on edgepaint's sources with those
+//! variables set, in a target directory of its own (`target/formats`, so the usual build
+//! is not disturbed): a full build the first time, the `rtl` crate and what uses it after.
+
+use anyhow::{bail, Context, Result};
+use rtl::config::Build;
+use std::path::Path;
+use std::process::Command;
+
+/// Set in the rebuilt edgepaint's environment: it must not rebuild again.
+const REBUILT: &str = "EDGEPAINT_REBUILT";
+
+/// The build at size class `class` with the formats file `path` over its defaults,
+/// checked for the RTL.
+pub fn build_from_file(path: &Path, class: u32) -> Result<Build> {
+    let side = 1u32.checked_shl(class).filter(|_| class <= 16).context(format!("size class {class} is not built"))?;
+    let formats = super::engine::formats_file(path, side, side)?;
+    let build = Build { class, formats };
+    rtl::config::check(class, &formats).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+    Ok(build)
+}
+
+/// `Ok(false)` when this edgepaint holds `build`: go on. Otherwise runs this command again
+/// in an edgepaint compiled at `build` (`why` names the formats for the messages) and
+/// returns `Ok(true)` when it succeeded; an error when it failed or cannot be built here.
+pub fn ensure(build: &Build, why: &str) -> Result<bool> {
+    if rtl::built(build) {
+        return Ok(false);
+    }
+    if std::env::var_os(REBUILT).is_some() {
+        bail!("edgepaint was rebuilt for {why} but does not hold that build: EDGEPAINT_FORMATS did not reach crates/rtl/build.rs");
+    }
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let manifest = root.join("Cargo.toml");
+    let formats = serde_json::to_string(&build.formats).expect("formats serialise");
+    if !manifest.is_file() {
+        bail!(
+            "{why}: this edgepaint holds the scanline units at the size classes' default formats and at {} \
+             (class {}); other formats need them compiled: build edgepaint from its sources with \
+             EDGEPAINT_CLASS={} EDGEPAINT_FORMATS='{formats}' (its sources are not at {})",
+            rtl::custom::SOURCE,
+            rtl::custom::CLASS,
+            build.class,
+            root.display()
+        );
+    }
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let target = root.join("target").join("formats");
+    eprintln!(
+        "edgepaint: the scanline units are not built at {why} (class {}); compiling edgepaint at them in {} \
+         (several minutes the first time, about two after), then running this command there",
+        build.class,
+        target.display()
+    );
+    let status = Command::new(&cargo)
+        .args(["run", "--release", "--manifest-path"])
+        .arg(&manifest)
+        .arg("--target-dir")
+        .arg(&target)
+        .arg("--")
+        .args(std::env::args_os().skip(1))
+        .env("EDGEPAINT_CLASS", build.class.to_string())
+        .env("EDGEPAINT_FORMATS", &formats)
+        .env(REBUILT, "1")
+        .status()
+        .with_context(|| format!("running {}", Path::new(&cargo).display()))?;
+    if !status.success() {
+        bail!("edgepaint compiled at {why} failed ({status})");
+    }
+    Ok(true)
+}

@@ -1,0 +1,125 @@
+//! What a copy of the scanline units is built at, and which builds the RTL supports.
+//!
+//! rust-hdl's widths are compile-time constants, so the scanline units (`cull_sort` to
+//! `raster_top`) are compiled once per *build*: a size class `n` (screens up to 2^n x 2^n)
+//! and the number formats of every quantity (`fx::Formats`). `crate::n10`, `n11` and `n12`
+//! are the model's defaults for their class, `Formats::for_n(n)`; `crate::custom` is the
+//! build given when edgepaint is compiled (`EDGEPAINT_CLASS`, `EDGEPAINT_FORMATS`, see
+//! `build.rs`).
+//!
+//! The units compute what the models compute for any build [`check`] accepts: its
+//! [`violation`] is asserted where each copy's widths are set (`widths.rs`), and `build.rs`
+//! and `edgepaint` run [`check`] first, so that a format the RTL cannot take is refused
+//! with a message, not a compile error. (`build.rs` loads this file too: it uses `fx` only.)
+
+use fx::{Fmt, Formats, Overflow, Rounding};
+
+/// A build of the scanline units: a size class and the formats of every quantity.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Build {
+    pub class: u32,
+    pub formats: Formats,
+}
+
+impl Build {
+    /// Size class `class` at the model's default formats for it.
+    pub const fn of_class(class: u32) -> Build {
+        Build { class, formats: Formats::for_n(class) }
+    }
+}
+
+/// The default build: size class `fx::RTL_CLASS` at its default formats (`crate::n10`).
+impl Default for Build {
+    fn default() -> Build {
+        Build::of_class(fx::RTL_CLASS)
+    }
+}
+
+/// The size classes a build may have (the models' `model::raster_top` classes).
+pub const CLASS_MIN: u32 = 10;
+pub const CLASS_MAX: u32 = 12;
+
+/// `triangle_setup`'s multiplier operand A: the widest first factor, `ooa_d` (OneOverArea
+/// x delta, the gradients' first factor).
+pub const fn mul_a(f: &Formats) -> usize {
+    f.ooa_d.bits() as usize
+}
+
+/// `triangle_setup`'s multiplier operand B: the widest second factor: a z difference
+/// (`z.bits() + 1`), an edge delta or offset from v0 (`xy.bits() + 3`, with room to
+/// sign-extend) or a step quotient (`delta_bits + 2`). Colour differences are narrower
+/// (checked).
+pub const fn mul_b(f: &Formats) -> usize {
+    let (z, xy, q) = (f.z.bits() + 1, f.xy.bits() + 3, f.derived().delta_bits + 2);
+    let m = if z > xy { z } else { xy };
+    (if m > q { m } else { q }) as usize
+}
+
+/// The first requirement of the RTL that the build (`class`, `f`) breaks, beyond
+/// `Formats::check`; `None` if it has none. A `const fn`, so that every copy of the units
+/// asserts it of its own build when it compiles.
+pub const fn violation(class: u32, f: &Formats) -> Option<&'static str> {
+    let dv = f.derived();
+    let (mul_a, mul_b) = (mul_a(f), mul_b(f));
+    // Products are kept in the wide domain: the divider's dividend or an A operand.
+    let dividend = dv.div_dividend_bits as usize;
+    let product = if dividend > mul_a { dividend } else { mul_a };
+    if class < CLASS_MIN || class > CLASS_MAX {
+        return Some("the size class must be 10, 11 or 12 (screens up to 1024, 2048 or 4096 pixels)");
+    }
+    if f.xy.int < class + 1 {
+        return Some("xy needs class + 1 integer bits: the screen's positions and its guard band");
+    }
+    let internal = [f.ooa, f.ooa_d, f.dz, f.z_acc, f.dc, f.c_acc];
+    let mut i = 0;
+    while i < internal.len() {
+        if !plain(internal[i]) {
+            return Some("ooa, ooa_d, dz, z_acc, dc and c_acc are registers of the RTL: truncate and wrap only");
+        }
+        i += 1;
+    }
+    if f.ooa_d.frac + f.z.frac < f.dz.frac || f.ooa_d.frac + f.color.frac < f.dc.frac {
+        return Some("the gradients' slices of ooa_d x difference are floor shifts: ooa_d.frac + z.frac >= dz.frac and ooa_d.frac + color.frac >= dc.frac");
+    }
+    if f.dz.frac != f.z_acc.frac || f.dc.frac != f.c_acc.frac {
+        return Some("gradients have the fraction bits of their accumulators");
+    }
+    if f.z_acc.frac < f.z.frac || f.c_acc.frac < f.color.frac {
+        return Some("accumulators have at least the fraction bits of their vertex values");
+    }
+    if f.dz.bits() < f.dc.bits() || f.dz.bits() < f.z_acc.bits() || f.dc.bits() < f.c_acc.bits() {
+        return Some("an attribute lane is z's gradient wide: dz at least as wide as dc and z_acc, dc as c_acc");
+    }
+    if f.dz.bits() as usize > product {
+        return Some("dz must fit the products (the divider's dividend or ooa_d, the wider)");
+    }
+    if mul_b <= f.color.bits() as usize {
+        return Some("colour differences must fit triangle_setup's multiplier operand B");
+    }
+    if mul_a + mul_b > 127 || product > 128 {
+        return Some("triangle_setup's products must fit 128 bits (at most 127 bits of operands)");
+    }
+    if f.ooa_d.frac + f.xy.frac < f.ooa.frac {
+        return Some("eq. (2)'s shift ooa_d.frac + xy.frac - ooa.frac must not be negative");
+    }
+    if f.z.bits() > 64 || f.xy.bits() > 64 || f.inv_w.bits() > 64 || f.color.int != 8 {
+        return Some("vertex words are at most 64 bits, colours U8 (the colour buffer is RGB888)");
+    }
+    None
+}
+
+/// Truncating and wrapping: what a register of the RTL does.
+const fn plain(f: Fmt) -> bool {
+    matches!(f.rounding, Rounding::Truncate) && matches!(f.overflow, Overflow::Wrap)
+}
+
+/// Whether the scanline units can be built at size class `class` and formats `f`: the
+/// formats work for a 2^class x 2^class screen (`Formats::check`) and the RTL takes them
+/// ([`violation`]); the error says why not.
+pub fn check(class: u32, f: &Formats) -> Result<(), String> {
+    if let Some(why) = violation(class, f) {
+        return Err(format!("the RTL cannot be built at size class {class} with these formats: {why}"));
+    }
+    let side = 1u32 << class;
+    f.check(side, side).map_err(|e| format!("formats for size class {class} ({side}x{side}): {e}"))
+}
