@@ -19,6 +19,9 @@ if ! command -v verilator >/dev/null; then
     echo "lint: verilator is not on PATH: run scripts/setup-tools.sh, then 'source scripts/tools-env.sh'" >&2
     exit 1
 fi
+# edgepaint as the test profile builds it (optimised, and the build `cargo test` already
+# made): no second build for the variants emitted below.
+edgepaint() { cargo run --profile test --quiet -- "$@"; }
 shopt -s nullglob
 files=("$@")
 if [[ ${#files[@]} -eq 0 ]]; then
@@ -29,18 +32,18 @@ if [[ ${#files[@]} -eq 0 ]]; then
     fi
     # raster_top at the larger size classes too (screens up to 2048 and 4096).
     for n in 11 12; do
-        cargo run --release --quiet -- emit --unit raster_top --param N=$n -o "target/lint/raster_top-N$n" >/dev/null
+        edgepaint emit --unit raster_top --param N=$n -o "target/lint/raster_top-N$n" >/dev/null
         files+=("target/lint/raster_top-N$n/raster_top.v")
     done
     # raster_top with units left out.
     for units in "CULL_SORT=0" "PIXEL_OUT=0" "CULL_SORT=0 PIXEL_OUT=0"; do
         dir="target/lint/raster_top-${units// /-}"
         # shellcheck disable=SC2046 # one --param per word of $units
-        cargo run --release --quiet -- emit --unit raster_top $(printf -- '--param %s ' $units) -o "$dir" >/dev/null
+        edgepaint emit --unit raster_top $(printf -- '--param %s ' $units) -o "$dir" >/dev/null
         files+=("$dir/raster_top.v")
     done
     # raster_top at formats other than its class's defaults (24-bit depth, ...).
-    cargo run --release --quiet -- emit --unit raster_top --formats crates/rtl/custom-formats.json \
+    edgepaint emit --unit raster_top --formats crates/rtl/custom-formats.json \
         -o target/lint/raster_top-custom >/dev/null
     files+=("target/lint/raster_top-custom/raster_top.v")
 fi

@@ -1,8 +1,16 @@
 #!/usr/bin/env bash
-# Yosys synthesis of every emitted unit in hdl-out/ (or of the .v files given): generic
-# `synth -flatten`, `synth_ice40` and `synth_ecp5`, each followed by `check -assert`
-# (undriven or multiply driven nets, logic loops). Exits non-zero on any error.
-# Logs and netlists go to $CARGO_TARGET_DIR/synth/ (default target/synth/).
+# Yosys synthesis of the emitted units in hdl-out/ (or of the .v files given), each flow
+# followed by `check -assert` (undriven or multiply driven nets, logic loops). Exits
+# non-zero on any error. Logs and netlists go to $CARGO_TARGET_DIR/synth/ (default
+# target/synth/).
+#
+#   scripts/synth.sh          each distinct module once: raster_top.v (which holds
+#                             cull_sort, divider, triangle_setup, edge_walk, span and
+#                             pixel_out as its submodules), se.v, ept.v, and any unit not
+#                             listed in SUBMODULES; generic `synth -flatten` and
+#                             `synth_ecp5` (the test command, about 1.5 minutes)
+#   scripts/synth.sh --all    every file, also `synth_ice40` (scripts/soak.sh, about 4.5
+#                             minutes: raster_top's iCE40 mapping alone takes 2.5)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -10,9 +18,25 @@ if ! command -v yosys >/dev/null; then
     echo "synth: yosys is not on PATH: run scripts/setup-tools.sh" >&2
     exit 1
 fi
+# Units whose Verilog raster_top.v holds as submodules, synthesized there.
+SUBMODULES=(cull_sort divider triangle_setup edge_walk span pixel_out)
+flows=(generic ecp5)
+all=0
+if [[ ${1:-} == --all ]]; then
+    all=1
+    flows=(generic ice40 ecp5)
+    shift
+fi
 shopt -s nullglob
 files=("$@")
-[[ ${#files[@]} -gt 0 ]] || files=(hdl-out/*.v)
+if [[ ${#files[@]} -eq 0 ]]; then
+    for f in hdl-out/*.v; do
+        unit=$(basename "$f" .v)
+        if [[ $all == 1 || ! " ${SUBMODULES[*]} " =~ " $unit " ]]; then
+            files+=("$f")
+        fi
+    done
+fi
 if [[ ${#files[@]} -eq 0 ]]; then
     echo "synth: no Verilog in hdl-out/ (run 'cargo run --release' to emit it)" >&2
     exit 1
@@ -44,7 +68,7 @@ export -f synth_one
 # The largest files first, so the long jobs start early.
 mapfile -t files < <(ls -S "${files[@]}")
 for f in "${files[@]}"; do
-    for flow in generic ice40 ecp5; do
+    for flow in "${flows[@]}"; do
         printf '%s\0%s\0%s\0' "$f" "$flow" "$out"
     done
 done | xargs -0 -n 3 -P "${SYNTH_JOBS:-$(nproc)}" bash -c 'synth_one "$@"' synth

@@ -15,7 +15,7 @@ use rtl::ept::{Ept, EptSize, Pixels};
 use std::time::{Duration, Instant};
 use testbenches::frame::{self, draw, Cycle, Frame, MemoryModel};
 use testbenches::memory::ReadDuringWrite;
-use testbenches::{HdlSim, Sim, Value, Verilated};
+use testbenches::{HdlSim, Sim, Value};
 
 /// Runs `sim` for about `budget`; returns cycles per second.
 fn measure(sim: &mut dyn Sim, p: usize, budget: Duration) -> f64 {
@@ -40,9 +40,7 @@ fn speeds<const P: usize>(budget: Duration)
 where
     Pixels<P>: EptSize,
 {
-    let unit = rtl::Unit::named("ept").expect("ept");
-    let e = unit.emit(&unit.params([("P".to_owned(), P as u64)]).expect("P")).expect("supported P");
-    let vl = Verilated::emitted(&e).unwrap_or_else(|e| panic!("{e}"));
+    let vl = testbenches::verilate(&testbenches::emitted("ept", [("P", P as u64)])).unwrap_or_else(|e| panic!("{e}"));
     let mut vl_sim = vl.model().unwrap_or_else(|e| panic!("{e}"));
     let mut hdl_sim = HdlSim::new(Ept::<P>::default());
     let hdl = measure(&mut hdl_sim, P, budget);
@@ -82,8 +80,7 @@ fn main() {
     speeds::<1024>(budget);
     let (cycles, hdl) = frame_speed(&mut HdlSim::new(frame::unit()), "cube", (64, 48));
     println!("| raster_top | K=7 L=5, cube 64x48 ({cycles} cycles) | {hdl:.0} | |");
-    let runtime = frame::verilator().unwrap_or_else(|e| panic!("{e}"));
-    let mut dut = frame::model(&runtime).unwrap_or_else(|e| panic!("{e}"));
+    let mut dut = frame::verilator(&Default::default()).unwrap_or_else(|e| panic!("{e}"));
     let (cycles, vl) = frame_speed(&mut dut, "all", (320, 240));
     println!("| raster_top | K=7 L=5, all 320x240 ({cycles} cycles) | | {vl:.0} |");
 }

@@ -1,9 +1,8 @@
 //! The dual-simulation harness: one unit, the same per-cycle stimulus, two simulators.
 //!
-//! * [`HdlSim`] steps the rust-hdl unit directly (`simulate`, as `rtl::sim::tick` does;
-//!   not rust-hdl's threaded `Simulation`).
-//! * [`VlSim`] runs the unit's emitted Verilog under Verilator, in-process through marlin's
-//!   dynamic models; [`Verilated`] builds it under `<target>/verilator/`.
+//! * [`HdlSim`] steps the rust-hdl unit directly (`sim::HdlSim`).
+//! * [`VlSim`] runs the unit's emitted Verilog under Verilator, in-process
+//!   (`sim::verilator`); [`Verilated`] builds it, cached under `<target>/verilator/`.
 //!
 //! [`Dual::cycle`] drives both with the same inputs, compares every output of the two after
 //! the inputs settle, then clocks both (clocked units); [`Dual::expect`] compares an output
@@ -17,79 +16,13 @@
 //! only on the cycles the model says are valid.
 
 pub mod flow;
-pub mod frame;
-pub mod memory;
 pub mod stimulus;
-pub mod streams;
-mod verilated;
 
-pub use rtl::emit::Port;
-pub use rtl::sim::{Pins, PortDir, Value};
-pub use verilated::{check_verilator, target_dir, write_if_changed, Verilated, VlSim};
+pub use sim::{check_verilator, verilate, Pins, Port, PortDir, Value, Verilated, VlSim};
+pub use sim::{frame, hdl_out, memory, streams, target_dir, write_if_changed, HdlSim, Outputs, Sim};
 
 use rust_hdl::prelude::*;
 use std::fmt;
-use std::path::PathBuf;
-
-/// One simulator of one unit.
-pub trait Sim {
-    /// Which simulator, for messages.
-    fn name(&self) -> &'static str;
-    /// Drives input `pin`.
-    fn set(&mut self, pin: &str, value: &Value);
-    /// Propagates the inputs through the combinational logic.
-    fn settle(&mut self);
-    /// A rising and a falling clock edge, each settled.
-    fn clock(&mut self);
-    /// Reads output `pin`.
-    fn get(&mut self, pin: &str) -> Value;
-}
-
-/// A rust-hdl unit, stepped directly.
-pub struct HdlSim<U> {
-    pub unit: U,
-}
-
-impl<U: Block + Pins> HdlSim<U> {
-    /// Connects `unit` and runs rust-hdl's checks (open inputs, loops, writes to inputs).
-    pub fn new(mut unit: U) -> Self {
-        unit.connect_all();
-        check_all(&unit).unwrap_or_else(|e| panic!("rust-hdl checks: {e:?}"));
-        HdlSim { unit }
-    }
-}
-
-impl<U: Block + Pins> Sim for HdlSim<U> {
-    fn name(&self) -> &'static str {
-        "rust-hdl"
-    }
-    fn set(&mut self, pin: &str, value: &Value) {
-        self.unit.set(pin, value);
-    }
-    fn settle(&mut self) {
-        rtl::sim::settle(&mut self.unit);
-    }
-    fn clock(&mut self) {
-        for level in [true, false] {
-            self.unit.clock().expect("a clocked unit's Pins::clock").next = level.into();
-            self.settle();
-        }
-    }
-    fn get(&mut self, pin: &str) -> Value {
-        self.unit.get(pin)
-    }
-}
-
-/// Outputs of one cycle, by pin name, as both simulators agreed on them.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Outputs(pub Vec<(String, Value)>);
-
-impl Outputs {
-    /// The value of output `pin`; panics on an unknown name.
-    pub fn get(&self, pin: &str) -> &Value {
-        self.0.iter().find(|(n, _)| n == pin).map(|(_, v)| v).unwrap_or_else(|| panic!("no output {pin}"))
-    }
-}
 
 /// Two simulators disagreeing, or a simulator disagreeing with the model.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -123,23 +56,28 @@ impl fmt::Display for Mismatch {
 impl std::error::Error for Mismatch {}
 
 /// One unit under rust-hdl and Verilator in lockstep.
-pub struct Dual<'rt, U> {
+pub struct Dual<U> {
     unit: String,
     hdl: HdlSim<U>,
-    vl: VlSim<'rt>,
+    vl: VlSim,
     ports: Vec<Port>,
     clocked: bool,
     cycle: u64,
     inputs: Vec<(String, Value)>,
 }
 
-impl<'rt, U: Block + Pins> Dual<'rt, U> {
+impl<U: Block + Pins> Dual<U> {
     /// `unit` (not yet connected) beside `vl`, the Verilog emitted from the same unit.
     /// Panics if their port lists differ.
-    pub fn new(unit: U, vl: VlSim<'rt>) -> Self {
+    pub fn new(unit: U, vl: VlSim) -> Self {
         let hdl = HdlSim::new(unit);
         let ports = rtl::emit::ports(&hdl.unit);
-        assert_eq!(ports, vl.ports(), "the rust-hdl unit and the Verilog of {} have different ports", vl.unit());
+        assert_eq!(
+            ports,
+            vl.ports().to_vec(),
+            "the rust-hdl unit and the Verilog of {} have different ports",
+            vl.unit()
+        );
         let clocked = ports.iter().any(|p| p.name == "clock");
         let inputs = ports
             .iter()
@@ -221,21 +159,29 @@ pub fn seed() -> u64 {
     std::env::var("EDGEPAINT_SEED").map_or(1, |s| s.parse().expect("EDGEPAINT_SEED must be a u64"))
 }
 
-/// Cases of a random test: `EDGEPAINT_N`, default 1000 (`scripts/soak.sh` sets 100 000).
+/// Cases of a random test: `EDGEPAINT_N`, default 1000 (`scripts/soak.sh` sets 10 000).
 pub fn count() -> usize {
     std::env::var("EDGEPAINT_N").map_or(1000, |s| s.parse().expect("EDGEPAINT_N must be a count"))
 }
 
-/// The committed `hdl-out/` of this checkout.
-pub fn hdl_out() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..").join("hdl-out")
+/// Unit `name` emitted with `params` over its defaults (at the formats of its size class).
+pub fn emitted<const K: usize>(name: &str, params: [(&str, u64); K]) -> rtl::emit::Emitted {
+    let unit = rtl::Unit::named(name).unwrap_or_else(|| panic!("no unit {name} in UNITS"));
+    let params = unit.params(params.map(|(k, v)| (k.to_owned(), v))).unwrap_or_else(|e| panic!("{e}"));
+    unit.emit(&params).unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// The Verilog of unit `name` with its default parameters, ready for Verilator (the
-/// committed `hdl-out/<name>.v` when the default design holds it: see [`Verilated::of`]).
+/// Unit `name` with its default parameters, Verilated (the committed `hdl-out/<name>.v`:
+/// see `sim::verilog_file`).
 pub fn verilated(name: &str) -> Verilated {
-    let unit = rtl::Unit::named(name).unwrap_or_else(|| panic!("no unit {name} in UNITS"));
-    let params = unit.params([]).expect("default parameters");
-    let e = unit.emit(&params).unwrap_or_else(|e| panic!("{e}"));
-    Verilated::of(&e).unwrap_or_else(|e| panic!("{e}"))
+    sim::verilate(&emitted(name, [])).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// rust-hdl and Verilator in lockstep through a whole frame: every output of `raster_top`
+/// compared every cycle.
+impl<U: Block + Pins> frame::Cycle for Dual<U> {
+    fn cycle(&mut self, d: &frame::Drive) -> Result<frame::Sense, String> {
+        let pins = frame::named(d);
+        Ok(frame::sense(&Dual::cycle(self, &streams::as_pins(&pins)).map_err(|m| m.to_string())?))
+    }
 }

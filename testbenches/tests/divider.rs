@@ -120,7 +120,7 @@ fn all_narrow() -> Vec<DivIn> {
 /// The narrow divider with `latency` stages, emitted under the target directory.
 fn narrow_verilog(latency: usize) -> Verilated {
     let params = [("L".to_owned(), latency as u64), ("N".to_owned(), 8)].into();
-    Verilated::emitted(&emit::<8, 7, 8, 9, 8>(latency, &params)).unwrap_or_else(|e| panic!("{e}"))
+    testbenches::verilate(&emit::<8, 7, 8, 9, 8>(latency, &params)).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// Exhaustive at the narrow width, in both simulators, with three stages (an uneven

@@ -151,7 +151,7 @@ fn run(dual: &mut Dual<EdgeWalk>, jobs: &[Job], mut ready: impl FnMut(&mut ChaCh
     Ok(r)
 }
 
-fn dual(vl: &testbenches::Verilated) -> Dual<'_, EdgeWalk> {
+fn dual(vl: &testbenches::Verilated) -> Dual<EdgeWalk> {
     Dual::new(EdgeWalk::default(), vl.model().unwrap_or_else(|e| panic!("{e}")))
 }
 

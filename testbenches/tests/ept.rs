@@ -14,7 +14,7 @@ const FIG5: (u32, u32, u128) = (0b000, 0b101, 0b0011_1111);
 fn verilog(p: u64) -> Verilated {
     let unit = rtl::Unit::named("ept").expect("ept is in UNITS");
     let e = unit.emit(&unit.params([("P".to_owned(), p)]).expect("P is ept's parameter")).expect("supported P");
-    Verilated::of(&e).unwrap_or_else(|e| panic!("{e}"))
+    testbenches::verilate(&e).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// Runs each (XL, XR) for one cycle in both simulators and checks `px` against the model.
@@ -66,6 +66,13 @@ fn ept_exhaustive_p16() {
 #[test]
 fn ept_exhaustive_p64() {
     exhaustive::<64>();
+}
+
+/// Every (XL, XR) at 002's largest tree, 1,048,576 cycles (`scripts/soak.sh`).
+#[test]
+#[ignore = "long: scripts/soak.sh runs it"]
+fn ept_exhaustive_p1024() {
+    exhaustive::<1024>();
 }
 
 /// Random (XL, XR) at P = 1024, a quarter of them with XL > XR (nothing painted) and a

@@ -106,7 +106,7 @@ fn run(
     Ok((mem, dual.cycles()))
 }
 
-fn dual(vl: &testbenches::Verilated) -> Dual<'_, PixelOut> {
+fn dual(vl: &testbenches::Verilated) -> Dual<PixelOut> {
     Dual::new(PixelOut::default(), vl.model().unwrap_or_else(|e| panic!("{e}")))
 }
 

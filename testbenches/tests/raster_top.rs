@@ -3,7 +3,6 @@
 //! lockstep; every image bit for bit the model's (`model::raster::render`, scanline, at
 //! the RTL's formats), every frame's cycle count the cycle model's.
 
-use marlin::verilator::VerilatorRuntime;
 use model::cull_sort::Cull;
 use model::cycles::Timing;
 use model::input::Vtx;
@@ -21,15 +20,10 @@ use testbenches::memory::{Memory, ReadDuringWrite, Request};
 use testbenches::streams::{as_pins, pixel_of, unsigned};
 use testbenches::{seed, Dual, Pins, Value, Verilated};
 
-/// A Verilator runtime for `raster_top`: the model is built once (its C++ build is the
-/// slow part; marlin keeps it under the target directory and serialises concurrent
-/// builds) and loaded per test.
-fn verilator() -> VerilatorRuntime {
-    frame::verilator().unwrap_or_else(|e| panic!("{e}"))
-}
-
-fn model(rt: &VerilatorRuntime) -> frame::RasterTopVl<'_> {
-    frame::model(rt).unwrap_or_else(|e| panic!("{e}"))
+/// The default `raster_top` under Verilator (the committed `hdl-out/raster_top.v`; the
+/// model is built once, cached under the target directory).
+fn model() -> frame::RasterTopVl {
+    frame::verilator(&Build::default()).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// `list` through the model and through `dut`; the image, depth and cycles compared.
@@ -86,10 +80,9 @@ fn scene(name: &str, size: Option<(u32, u32)>) -> (Trilist, Cull) {
 /// Every shipped scene at 64 x 48: the image and the cycle count equal the model's.
 #[test]
 fn raster_top_scenes_small_vs_model() {
-    let rt = verilator();
     for name in ["cube", "sphere", "cone", "torus", "pawn", "house", "all", "clip"] {
         let (list, cull) = scene(name, Some((64, 48)));
-        let mut dut = model(&rt);
+        let mut dut = model();
         let (prep, out) = check(name, &mut dut, &list, cull, ready_memory(&mut |_| true));
         let r = Report::of(&out, &prep);
         assert_eq!(r.cycles, r.predicted, "{name}: cycles, RTL against model::cycles");
@@ -99,10 +92,9 @@ fn raster_top_scenes_small_vs_model() {
 /// Two scenes at 320 x 240 (003's screen), image and cycles as the model's.
 #[test]
 fn raster_top_scenes_320x240_vs_model() {
-    let rt = verilator();
     for name in ["torus", "clip"] {
         let (list, cull) = scene(name, Some((320, 240)));
-        let mut dut = model(&rt);
+        let mut dut = model();
         let (prep, out) = check(name, &mut dut, &list, cull, ready_memory(&mut |_| true));
         let r = Report::of(&out, &prep);
         assert_eq!(r.cycles, r.predicted, "{name}: cycles, RTL against model::cycles");
@@ -120,7 +112,6 @@ fn list(width: u32, height: u32, triangles: Vec<Triangle>) -> Trilist {
 /// the z range.
 #[test]
 fn raster_top_fill_rule_and_clipping_vs_model() {
-    let rt = verilator();
     let mut tris = Vec::new();
     for (a, b) in [((1.5, 1.5), (9.5, 9.5)), ((0.5, 2.5), (20.5, 12.5)), ((3.5, 1.5), (5.5, 17.5))] {
         for flip in [false, true] {
@@ -151,7 +142,7 @@ fn raster_top_fill_rule_and_clipping_vs_model() {
     cases.push(("clipping", list(80, 60, crossing)));
     for (what, l) in &cases {
         for cull in [Cull::None, Cull::Back] {
-            let mut dut = model(&rt);
+            let mut dut = model();
             let (prep, out) = check(what, &mut dut, l, cull, ready_memory(&mut |_| true));
             let r = Report::of(&out, &prep);
             assert_eq!(r.cycles, r.predicted, "{what}, {cull:?}: cycles");
@@ -164,7 +155,6 @@ fn raster_top_fill_rule_and_clipping_vs_model() {
 /// `setup_latency` cycles; the image and the cycles are the model's.
 #[test]
 fn raster_top_back_to_back_vs_model() {
-    let rt = verilator();
     let mut rng = ChaCha8Rng::seed_from_u64(seed());
     let mut tris = Vec::new();
     let col = |rng: &mut ChaCha8Rng| [rng.gen_range(0.0..255.0), rng.gen_range(0.0..255.0), rng.gen_range(0.0..255.0)];
@@ -185,7 +175,7 @@ fn raster_top_back_to_back_vs_model() {
         tris.push([p(&mut rng), p(&mut rng), p(&mut rng)]);
     }
     let l = list(64, 32, tris);
-    let mut dut = model(&rt);
+    let mut dut = model();
     let (prep, out) = check("back to back", &mut dut, &l, Cull::None, ready_memory(&mut |_| true));
     let r = Report::of(&out, &prep);
     assert_eq!(r.cycles, r.predicted, "cycles");
@@ -198,7 +188,6 @@ fn raster_top_back_to_back_vs_model() {
 /// the old or the new word: the same image, nothing lost or written twice.
 #[test]
 fn raster_top_memory_stalled_vs_model() {
-    let rt = verilator();
     let (l, cull) = scene("all", Some((96, 64)));
     for rdw in [ReadDuringWrite::Old, ReadDuringWrite::New] {
         let mut rng = ChaCha8Rng::seed_from_u64(seed());
@@ -213,7 +202,7 @@ fn raster_top_memory_stalled_vs_model() {
             }
             rng.gen_bool(0.8)
         };
-        let mut dut = model(&rt);
+        let mut dut = model();
         let (_, out) =
             check("all, stalled", &mut dut, &l, cull, MemoryModel { read_during_write: rdw, ready: &mut ready });
         assert!(out.stalls > out.cycles / 5, "{} stalled cycles of {}", out.stalls, out.cycles);
@@ -235,12 +224,23 @@ fn raster_top_hdl_vs_verilator_lockstep() {
     check("cube, lockstep", &mut dual, &l, cull, ready_memory(&mut ready));
 }
 
+/// Every shipped scene at 128 x 96 in rust-hdl and Verilator in lockstep, every output of
+/// `raster_top` compared every cycle, the memory stalling one cycle in five
+/// (`scripts/soak.sh`: rust-hdl steps `raster_top` at about 1,700 cycles/s).
+#[test]
+#[ignore = "long: scripts/soak.sh runs it"]
+fn raster_top_hdl_vs_verilator_lockstep_long() {
+    let vl = testbenches::verilated("raster_top");
+    for name in ["cube", "sphere", "cone", "torus", "pawn", "house", "all", "clip"] {
+        let (l, cull) = scene(name, Some((128, 96)));
+        let mut dual = Dual::new(frame::unit(), vl.model().unwrap_or_else(|e| panic!("{e}")));
+        check(&format!("{name}, lockstep"), &mut dual, &l, cull, ready_memory(&mut |c| c % 5 != 2));
+    }
+}
+
 /// `raster_top` of size class `class` (`N`), emitted and Verilated.
 fn verilated_at(class: u32) -> Verilated {
-    let unit = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
-    let params = unit.params([("N".to_owned(), class as u64)]).unwrap_or_else(|e| panic!("{e}"));
-    let e = unit.emit(&params).unwrap_or_else(|e| panic!("{e}"));
-    Verilated::of(&e).unwrap_or_else(|e| panic!("{e}"))
+    testbenches::verilate(&testbenches::emitted("raster_top", [("N", class as u64)])).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// The larger size classes in rust-hdl and Verilator in lockstep: a small screen with the
@@ -267,13 +267,12 @@ fn raster_top_size_classes_11_and_12_lockstep() {
 }
 
 /// A screen larger than class 10's through the `raster_top` the CLI picks for it (class
-/// 11), in Verilator (marlin's dynamic model): image and cycles the model's.
+/// 11), in Verilator: image and cycles the model's.
 #[test]
 fn raster_top_class_11_scene_vs_model() {
     let (l, cull) = scene("sphere", Some((1280, 960)));
     assert_eq!(top::class_for(l.width, l.height), 11);
-    let vl = verilated_at(11);
-    let mut dut = vl.model().unwrap_or_else(|e| panic!("{e}"));
+    let mut dut = frame::verilator(&Build::of_class(11)).unwrap_or_else(|e| panic!("{e}"));
     let (prep, out) = check("sphere at 1280x960", &mut dut, &l, cull, ready_memory(&mut |_| true));
     assert_eq!(out.cycles, prep.cycles(), "cycles");
 }
@@ -282,14 +281,13 @@ fn raster_top_class_11_scene_vs_model() {
 /// write, against 003 Table 1 (31 cycles in all) and 001 (68 extra cycles per triangle).
 #[test]
 fn raster_top_latency_of_one_triangle() {
-    let rt = verilator();
     let t = [
         Vertex::new(2.0, 2.0, 0.5, [255.0; 3]),
         Vertex::new(9.0, 2.0, 0.5, [255.0; 3]),
         Vertex::new(2.0, 9.0, 0.5, [255.0; 3]),
     ];
     let l = list(16, 16, vec![t]);
-    let mut dut = model(&rt);
+    let mut dut = model();
     let (prep, out) = check("one triangle", &mut dut, &l, Cull::None, ready_memory(&mut |_| true));
     let r = Report::of(&out, &prep);
     // cull_sort 1 + setup + edge walk 2 + span 1: the first pixel enters pixel_out.
@@ -312,9 +310,25 @@ fn raster_top_latency_of_one_triangle() {
 /// submodule's output, Icarus manages under 10 cycles/s; after `proc`, about 1,500.
 #[test]
 fn raster_top_iverilog_replay() {
-    let dir = testbenches::target_dir().join("replay");
+    iverilog_replay("replay", &[("cube", (48, 32), false), ("clip", (64, 48), true)]);
+}
+
+/// [`raster_top_iverilog_replay`] on long frames (`scripts/soak.sh`): every shipped scene
+/// at 160 x 120, half of them with the memory stalling.
+#[test]
+#[ignore = "long: scripts/soak.sh runs it"]
+fn raster_top_iverilog_replay_long() {
+    let scenes = ["cube", "sphere", "cone", "torus", "pawn", "house", "all", "clip"];
+    let frames: Vec<_> = scenes.iter().enumerate().map(|(i, name)| (*name, (160, 120), i % 2 == 1)).collect();
+    iverilog_replay("replay-long", &frames);
+}
+
+/// Replays each (scene, size, stall) in Icarus (see [`raster_top_iverilog_replay`]), in
+/// `<target>/<dir>/`.
+fn iverilog_replay(dir: &str, frames: &[(&str, (u32, u32), bool)]) {
+    let dir = testbenches::target_dir().join(dir);
     std::fs::create_dir_all(&dir).expect("the replay directory");
-    let top = frame::raster_top_file().unwrap_or_else(|e| panic!("{e}"));
+    let top = sim::verilog_file(&testbenches::emitted("raster_top", [])).unwrap_or_else(|e| panic!("{e}"));
     let processed = dir.join("raster_top_proc.v");
     let script = format!(
         "read_verilog {}; hierarchy -check -top raster_top; proc; opt_clean; write_verilog -noattr {}",
@@ -347,7 +361,7 @@ fn raster_top_iverilog_replay() {
             format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr)),
         )
     };
-    for (name, size, stall) in [("cube", (48, 32), false), ("clip", (64, 48), true)] {
+    for &(name, size, stall) in frames {
         let (l, cull) = scene(name, Some(size));
         let prep = prepare(&l, cull, [0; 3]).unwrap_or_else(|e| panic!("{e}"));
         assert!(prep.writes.len() > 100, "{name}: {} writes", prep.writes.len());
@@ -480,11 +494,8 @@ fn crossing_40x30() -> Trilist {
 fn raster_top_units_present_lockstep() {
     fn run<U: Block + Pins>(unit: impl Fn() -> U, cull_sort: bool, pixel_out: bool) {
         let units = Timing { cull_sort, pixel_out, ..Timing::default() };
-        let raster_top = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
-        let params = [("CULL_SORT".to_owned(), cull_sort as u64), ("PIXEL_OUT".to_owned(), pixel_out as u64)];
-        let e =
-            raster_top.emit(&raster_top.params(params).expect("known parameters")).unwrap_or_else(|e| panic!("{e}"));
-        let vl = Verilated::of(&e).unwrap_or_else(|e| panic!("{e}"));
+        let e = testbenches::emitted("raster_top", [("CULL_SORT", cull_sort as u64), ("PIXEL_OUT", pixel_out as u64)]);
+        let vl = testbenches::verilate(&e).unwrap_or_else(|e| panic!("{e}"));
         let (cube, cube_cull) = scene("cube", Some((24, 16)));
         let crossing = crossing_40x30();
         let name = format!("CULL_SORT={} PIXEL_OUT={}", cull_sort as u8, pixel_out as u8);
@@ -524,7 +535,7 @@ fn raster_top_custom_formats_lockstep() {
         e.ports.iter().any(|p| p.name == "wr_z" && p.width == build.formats.z.frac as usize),
         "wr_z is z.frac wide"
     );
-    let vl = Verilated::of(&e).unwrap_or_else(|e| panic!("{e}"));
+    let vl = testbenches::verilate(&e).unwrap_or_else(|e| panic!("{e}"));
     let (cube, cube_cull) = scene("cube", Some((24, 16)));
     let crossing = crossing_40x30();
     // The clipping cases with the memory not ready one cycle in five.

@@ -26,7 +26,7 @@ fn verilog(params: &[(&str, u64)]) -> Verilated {
     let unit = rtl::Unit::named("se").expect("se is in UNITS");
     let given = params.iter().map(|(k, v)| (k.to_string(), *v));
     let e = unit.emit(&unit.params(given).expect("se's parameters")).expect("supported parameters");
-    Verilated::of(&e).unwrap_or_else(|e| panic!("{e}"))
+    testbenches::verilate(&e).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// A two's complement value as a `width`-bit port value.
@@ -81,8 +81,8 @@ struct Write {
 
 /// The engine in both simulators and the model, against a z-buffer of `rows` rows of the
 /// engine's P pixels.
-struct Bench<'rt, U> {
-    dual: Dual<'rt, U>,
+struct Bench<U> {
+    dual: Dual<U>,
     model: Se,
     prm: SeParams,
     zbuf: Vec<Vec<u64>>,
@@ -91,9 +91,9 @@ struct Bench<'rt, U> {
     writes: Vec<Write>,
 }
 
-impl<'rt, U: Block + Pins> Bench<'rt, U> {
+impl<U: Block + Pins> Bench<U> {
     /// `unit`, the rust-hdl engine with parameters `prm`, beside `vl`, its Verilog.
-    fn new(unit: U, prm: SeParams, vl: &'rt Verilated, rows: usize, z0: u64) -> Self {
+    fn new(unit: U, prm: SeParams, vl: &Verilated, rows: usize, z0: u64) -> Self {
         let dual = Dual::new(unit, vl.model().unwrap_or_else(|e| panic!("{e}")));
         Bench {
             dual,

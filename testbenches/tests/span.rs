@@ -158,7 +158,7 @@ fn run(
     Ok((dual.cycles(), stalls))
 }
 
-fn dual(vl: &testbenches::Verilated) -> Dual<'_, Span> {
+fn dual(vl: &testbenches::Verilated) -> Dual<Span> {
     Dual::new(Span::default(), vl.model().unwrap_or_else(|e| panic!("{e}")))
 }
 

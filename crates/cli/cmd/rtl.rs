@@ -1,12 +1,10 @@
 //! `render --engine rtl`: a whole frame through the RTL of the scanline pipeline
 //! (`raster_top`) under Verilator, with the depth and colour buffers in Rust
-//! (`testbenches::frame`). The `raster_top` of the screen's size class draws it
+//! (`sim::frame`). The `raster_top` of the screen's size class draws it
 //! (`model::raster_top::class_for`: class 10 up to 1024 x 1024, 11 and 12 above) at the
 //! formats asked for (`--formats`; formats edgepaint is not built at are compiled first,
-//! `super::rebuild`): class 10 at its defaults through marlin's static model, the others
-//! through its dynamic one. The Verilated model
-//! is built the first time under `target/verilator/` (Verilator from
-//! `scripts/setup-tools.sh`). The image is checked against the scanline model's, bit for
+//! `super::rebuild`). The Verilated model is built the first time, cached under
+//! `target/verilator/` (Verilator from `scripts/setup-tools.sh`). The image is checked against the scanline model's, bit for
 //! bit.
 
 use super::engine::FixedArgs;
@@ -15,10 +13,9 @@ use anyhow::{anyhow, ensure, Result};
 use model::cull_sort::Cull;
 use rtl::config::Build;
 use scene::Trilist;
+use sim::frame::{self, Frame, MemoryModel, Report};
+use sim::memory::ReadDuringWrite;
 use std::time::Instant;
-use testbenches::frame::{self, Cycle, Frame, MemoryModel, Report};
-use testbenches::memory::ReadDuringWrite;
-use testbenches::Verilated;
 
 /// Draws `list` through `raster_top`; returns the image and the summary line with its
 /// fragment count, or `None` when an edgepaint compiled at the formats asked for drew it.
@@ -50,22 +47,9 @@ pub fn render(
     let f = Frame { build, width: list.width, height: list.height, cull, background, triangles: &prep.triangles };
     let memory = MemoryModel { read_during_write: ReadDuringWrite::Old, ready: &mut |_| true };
     let max_cycles = 2 * prep.cycles() + 100_000;
-    let start;
-    let out = if build == Build::default() {
-        let runtime = frame::verilator().map_err(|e| anyhow!("--engine rtl: {e}"))?;
-        let mut dut = frame::model(&runtime).map_err(|e| anyhow!("--engine rtl: {e}"))?;
-        start = Instant::now();
-        frame::draw(&mut dut, &f, memory, max_cycles)
-    } else {
-        let unit = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
-        let params = unit.params([("N".to_owned(), class as u64)]).map_err(|e| anyhow!(e))?;
-        let e = unit.emit_at(&params, &formats).map_err(|e| anyhow!("--engine rtl: {e}"))?;
-        let vl = Verilated::of(&e).map_err(|e| anyhow!("--engine rtl: {e}"))?;
-        let mut dut = vl.model().map_err(|e| anyhow!("--engine rtl: {e}"))?;
-        start = Instant::now();
-        frame::draw(&mut dut as &mut dyn Cycle, &f, memory, max_cycles)
-    }
-    .map_err(|e| anyhow!(e))?;
+    let mut dut = frame::verilator(&build).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let start = Instant::now();
+    let out = frame::draw(&mut dut, &f, memory, max_cycles).map_err(|e| anyhow!(e))?;
     let secs = start.elapsed().as_secs_f64();
     let r = Report::of(&out, &prep);
     ensure!(

@@ -232,25 +232,3 @@ impl fmt::Debug for Value {
         fmt::Display::fmt(self, f)
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn value_round_trips_through_wide_bits() {
-        let words = [0x0123_4567_89ab_cdef, 0xfedc_ba98_7654_3210, 0x5];
-        let v = Value::from_words(130, &words);
-        let b: Bits<130> = v.to_bits();
-        assert!(b.get_bit(0) && b.get_bit(128) && !b.get_bit(129));
-        assert_eq!(Value::from_bits(b), v);
-        assert_eq!(Value::from_bits::<6>(v.to_bits::<130>().get_bits::<6>(0)), Value::new(6, 0x2f));
-    }
-
-    #[test]
-    fn value_prints_like_verilog() {
-        assert_eq!(Value::new(6, 0x2a).to_string(), "6'h2a");
-        assert_eq!(Value::new(1, 1).to_string(), "1'h1");
-        assert_eq!(Value::from_words(72, &[u64::MAX, 0x3]).to_string(), "72'h03_ffff_ffff_ffff_ffff");
-    }
-}

@@ -44,20 +44,3 @@ pub const DEPTH: usize = FORMATS.z.frac as usize;
 pub const CHANNEL: usize = 8;
 /// A colour-buffer word: R, G, B, R in the top byte.
 pub const RGB: usize = 3 * CHANNEL;
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn widths_follow_the_formats_of_the_size_class() {
-        if FORMATS != fx::Formats::for_n(CLASS) {
-            return; // `crate::custom`: its widths are its formats', whatever they are.
-        }
-        // Class 10: S11.4 vertices, positions in [-4096, 4096), edge deltas 17 bits,
-        // D < 2^20; every width but the depth word's grows by a bit per class.
-        let n = CLASS as usize - 10;
-        assert_eq!((SCREEN, DIM, ADDR, PIXEL, EDGE_D, EDGE_Q), (10 + n, 11 + n, 20 + 2 * n, 13 + n, 21 + n, 17 + n));
-        assert_eq!((Z_ACC, DZ, C_ACC, DC, DEPTH), (36 + n, 40 + n, 32 + n, 36 + n, 16));
-    }
-}

@@ -8,20 +8,16 @@
 //! takes [`FrameOut::cycles`] cycles: `done` is first high in that cycle.
 
 use crate::memory::{Memory, ReadDuringWrite, Request};
-use crate::streams::{as_pins, raw, unsigned};
-use crate::verilated::IGNORED_WARNINGS;
-use crate::{check_verilator, target_dir, write_if_changed, Dual, HdlSim, Outputs, Pins, Sim, Value, VlSim};
-use marlin::verilator::{VerilatorRuntime, VerilatorRuntimeOptions};
-use marlin::verilog::prelude::*;
+use crate::streams::{raw, unsigned};
+use crate::{HdlSim, Outputs, Pins, PortId, Sim, Value, VlSim};
 use model::cull_sort::{z_max, Cull};
 use model::input::Vtx;
 use model::span::Pixel;
 use rtl::config::Build;
-use rtl::cull_sort::{INV_W, XY, Z};
 use rtl::raster_top::RasterTop;
 use rtl::widths::CHANNEL;
 use rust_hdl::prelude::Block;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// `raster_top`'s inputs in one cycle.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -86,7 +82,7 @@ impl InputWidths {
 }
 
 /// The named port values of `d`, for the simulators driven by name.
-fn named(d: &Drive) -> Vec<(String, Value)> {
+pub fn named(d: &Drive) -> Vec<(String, Value)> {
     let w = InputWidths::of(&d.build);
     let mut out = vec![
         ("width".to_owned(), Value::new(w.dim, d.width as u128)),
@@ -122,7 +118,7 @@ pub fn triangle_pins(build: &Build, tri: &[Vtx; 3], inv_w: bool) -> Vec<(String,
 }
 
 /// `raster_top`'s outputs that a frame reads, as one cycle's [`Sense`].
-fn sense(o: &Outputs) -> Sense {
+pub fn sense(o: &Outputs) -> Sense {
     let high = |pin: &str| unsigned(o.get(pin)) == 1;
     Sense {
         inp_ready: high("inp_ready"),
@@ -130,14 +126,6 @@ fn sense(o: &Outputs) -> Sense {
         verdict_code: unsigned(o.get("verdict_code")) as u8,
         req: Request::of(o),
         done: high("done"),
-    }
-}
-
-/// rust-hdl and Verilator in lockstep: every output compared every cycle.
-impl<U: Block + Pins> Cycle for Dual<'_, U> {
-    fn cycle(&mut self, d: &Drive) -> Result<Sense, String> {
-        let pins = named(d);
-        Ok(sense(&Dual::cycle(self, &as_pins(&pins)).map_err(|m| m.to_string())?))
     }
 }
 
@@ -160,99 +148,106 @@ impl<U: Block + Pins> Cycle for HdlSim<U> {
     }
 }
 
-/// Verilator alone through marlin's dynamic model, for any size class (`render --engine
-/// rtl` at classes above 10).
-impl Cycle for VlSim<'_> {
-    fn cycle(&mut self, d: &Drive) -> Result<Sense, String> {
-        Ok(cycle_by_name(self, d))
+/// `raster_top` of one build under Verilator, its ports looked up once and driven with
+/// plain integers: the frame simulation of `render --engine rtl` (a million cycles per
+/// second and more).
+pub struct RasterTopVl {
+    vl: VlSim,
+    build: Build,
+    clock: PortId,
+    /// width, height, cull_back, inp_valid, inp_last, mem_ready, rd_z.
+    inputs: [PortId; 7],
+    /// Per vertex: x, y, z, c0, c1, c2, iw.
+    vertices: [[PortId; 7]; 3],
+    /// inp_ready, verdict_valid, verdict_code, done, rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb.
+    outputs: [PortId; 10],
+}
+
+impl RasterTopVl {
+    /// `vl`, an instance of the whole `raster_top` (`CULL_SORT = 1`, `PIXEL_OUT = 1`) of
+    /// build `build`.
+    pub fn new(vl: VlSim, build: Build) -> Self {
+        let ids = |names: &[&str]| names.iter().map(|n| vl.port(n)).collect::<Vec<_>>();
+        let inputs = ids(&["width", "height", "cull_back", "inp_valid", "inp_last", "mem_ready", "rd_z"]);
+        let vertices = [0, 1, 2].map(|k| {
+            let names = ["x", "y", "z", "c0", "c1", "c2", "iw"].map(|f| format!("inp_v{k}_{f}"));
+            names.map(|n| vl.port(&n))
+        });
+        let outputs = ids(&[
+            "inp_ready",
+            "verdict_valid",
+            "verdict_code",
+            "done",
+            "rd_en",
+            "rd_addr",
+            "wr_en",
+            "wr_addr",
+            "wr_z",
+            "wr_rgb",
+        ]);
+        RasterTopVl {
+            clock: vl.port("clock"),
+            inputs: inputs.try_into().expect("seven inputs"),
+            vertices,
+            outputs: outputs.try_into().expect("ten outputs"),
+            vl,
+            build,
+        }
     }
 }
 
-/// `raster_top` under Verilator through marlin's static model: the ANSI wrapper
-/// `verilog/raster_top_ansi.sv` (`rtl::emit::ansi_wrapper`, kept fresh by the test
-/// `raster_top_ansi_wrapper_is_fresh`) around `raster_top`.
-#[verilog(src = "verilog/raster_top_ansi.sv", name = "raster_top_ansi")]
-pub struct RasterTopVl;
-
-impl Cycle for RasterTopVl<'_> {
+impl Cycle for RasterTopVl {
     fn cycle(&mut self, d: &Drive) -> Result<Sense, String> {
-        if d.build != Build::default() {
-            return Err(format!("the static Verilator model is raster_top of the default build, not {:?}", d.build));
+        if d.build != self.build {
+            return Err(format!("this raster_top is of build {:?}, not {:?}", self.build, d.build));
         }
-        self.width = d.width as _;
-        self.height = d.height as _;
-        self.cull_back = d.cull_back as _;
-        self.inp_valid = d.inp_valid as _;
-        self.inp_last = d.inp_last as _;
-        self.mem_ready = d.mem_ready as _;
-        self.rd_z = d.rd_z as _;
-        let [v0, v1, v2] = d.tri;
-        (self.inp_v0_x, self.inp_v0_y, self.inp_v0_z) = (low(XY, v0.x) as _, low(XY, v0.y) as _, low(Z, v0.z) as _);
-        (self.inp_v0_c0, self.inp_v0_c1, self.inp_v0_c2) = (v0.c[0] as _, v0.c[1] as _, v0.c[2] as _);
-        self.inp_v0_iw = low(INV_W, v0.iw) as _;
-        (self.inp_v1_x, self.inp_v1_y, self.inp_v1_z) = (low(XY, v1.x) as _, low(XY, v1.y) as _, low(Z, v1.z) as _);
-        (self.inp_v1_c0, self.inp_v1_c1, self.inp_v1_c2) = (v1.c[0] as _, v1.c[1] as _, v1.c[2] as _);
-        self.inp_v1_iw = low(INV_W, v1.iw) as _;
-        (self.inp_v2_x, self.inp_v2_y, self.inp_v2_z) = (low(XY, v2.x) as _, low(XY, v2.y) as _, low(Z, v2.z) as _);
-        (self.inp_v2_c0, self.inp_v2_c1, self.inp_v2_c2) = (v2.c[0] as _, v2.c[1] as _, v2.c[2] as _);
-        self.inp_v2_iw = low(INV_W, v2.iw) as _;
-        self.eval();
+        let vl = &mut self.vl;
+        let [width, height, cull_back, inp_valid, inp_last, mem_ready, rd_z] = self.inputs;
+        vl.set_u64(width, d.width as u64);
+        vl.set_u64(height, d.height as u64);
+        vl.set_u64(cull_back, d.cull_back as u64);
+        vl.set_u64(inp_valid, d.inp_valid as u64);
+        vl.set_u64(inp_last, d.inp_last as u64);
+        vl.set_u64(mem_ready, d.mem_ready as u64);
+        vl.set_u64(rd_z, d.rd_z as u64);
+        for (v, ids) in d.tri.iter().zip(&self.vertices) {
+            // Two's complement, cut to the port's width by `set_u64`.
+            for (id, x) in ids.iter().zip([v.x, v.y, v.z, v.c[0], v.c[1], v.c[2], v.iw]) {
+                vl.set_u64(*id, x as u64);
+            }
+        }
+        vl.eval();
+        let [inp_ready, verdict_valid, verdict_code, done, rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb] =
+            self.outputs.map(|id| vl.get_u64(id));
         let s = Sense {
-            inp_ready: self.inp_ready == 1,
-            verdict_valid: self.verdict_valid == 1,
-            verdict_code: self.verdict_code,
+            inp_ready: inp_ready == 1,
+            verdict_valid: verdict_valid == 1,
+            verdict_code: verdict_code as u8,
             req: Request {
-                rd_en: self.rd_en == 1,
-                rd_addr: self.rd_addr,
-                wr_en: self.wr_en == 1,
-                wr_addr: self.wr_addr,
-                wr_z: self.wr_z as u32,
-                wr_rgb: self.wr_rgb,
+                rd_en: rd_en == 1,
+                rd_addr: rd_addr as u32,
+                wr_en: wr_en == 1,
+                wr_addr: wr_addr as u32,
+                wr_z: wr_z as u32,
+                wr_rgb: wr_rgb as u32,
             },
-            done: self.done == 1,
+            done: done == 1,
         };
         for level in [1, 0] {
-            self.clock = level;
-            self.eval();
+            vl.set_u64(self.clock, level);
+            vl.eval();
         }
         Ok(s)
     }
 }
 
-/// The Verilog of `raster_top` with the default parameters of `UNITS`: the committed
-/// `hdl-out/raster_top.v` when the default design holds it so, else emitted under the
-/// target directory.
-pub fn raster_top_file() -> Result<PathBuf, String> {
+/// `raster_top` of `build` with `K` and `L` as in `UNITS`' defaults, emitted, Verilated
+/// (the model is built the first time, under `<target>/verilator/`) and instantiated.
+pub fn verilator(build: &Build) -> Result<RasterTopVl, String> {
     let unit = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
-    let params = unit.params([])?;
-    let committed = rtl::DEFAULT_DESIGN.iter().any(|(n, p)| {
-        *n == "raster_top" && p.iter().map(|(k, v)| (k.to_string(), *v)).collect::<rtl::Params>() == params
-    });
-    if committed {
-        return Ok(crate::hdl_out().join("raster_top.v"));
-    }
-    let e = unit.emit(&params)?;
-    write_if_changed(&target_dir().join("hdl").join("raster_top"), &e.file(), &e.verilog)
-}
-
-/// A Verilator runtime holding `raster_top` and its ANSI wrapper; it builds the model
-/// under `<target>/verilator/` the first time (about 15 s), then reuses it.
-pub fn verilator() -> Result<VerilatorRuntime, String> {
-    check_verilator("verilator")?;
-    let artifacts = target_dir().join("verilator");
-    std::fs::create_dir_all(&artifacts).map_err(|e| format!("creating {}: {e}", artifacts.display()))?;
-    let files = [PathBuf::from(RasterTopVl::source_path()), raster_top_file()?];
-    VerilatorRuntime::new2(&artifacts, &files, &[] as &[&Path], [], VerilatorRuntimeOptions::default())
-        .map_err(|e| format!("Verilator runtime for raster_top: {e:?}"))
-}
-
-/// A fresh `raster_top` model from `runtime`.
-pub fn model(runtime: &VerilatorRuntime) -> Result<RasterTopVl<'_>, String> {
-    let config = VerilatedModelConfig {
-        ignored_warnings: IGNORED_WARNINGS.iter().map(|w| w.to_string()).collect(),
-        ..Default::default()
-    };
-    runtime.create_model(&config).map_err(|e| format!("Verilating raster_top: {e:?}"))
+    let params = unit.params([("N".to_owned(), build.class as u64)])?;
+    let e = unit.emit_at(&params, &build.formats)?;
+    Ok(RasterTopVl::new(crate::verilate(&e)?.model()?, *build))
 }
 
 /// What one frame is: the screen, the triangles (hardware words) and how to draw them.

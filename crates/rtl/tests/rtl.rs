@@ -1,0 +1,196 @@
+//! The rtl crate's own tests (one binary: each test binary links rust-hdl and every build
+//! of the units): its parts, the emission, `hdl-out/`'s freshness and the widths of each
+//! size class. The units themselves are tested against their models in `testbenches/`.
+
+mod parts {
+    use rtl::parts::*;
+    use rtl::sim::settle;
+    use rust_hdl::prelude::*;
+
+    #[test]
+    fn parts_signed_exhaustive_n5() {
+        let (mut neg, mut less) = (Negative::<5>::default(), SignedLess::<5>::default());
+        neg.connect_all();
+        less.connect_all();
+        let raw = |v: i64| bits::<5>((v & 31) as u64);
+        for a in -16i64..16 {
+            neg.x.next = raw(a);
+            settle(&mut neg);
+            assert_eq!(neg.neg.val(), a < 0, "a={a}");
+            for b in -16i64..16 {
+                less.a.next = raw(a);
+                less.b.next = raw(b);
+                settle(&mut less);
+                assert_eq!(less.lt.val(), a < b, "a={a} b={b}");
+            }
+        }
+    }
+
+    #[test]
+    fn parts_round_shift_is_shr_half_up_exhaustive_in6() {
+        // 6-bit x, 2 fraction bits, 2-bit result: every value, with both range flags.
+        let mut u = RoundShift::<6, 7, 2, 2>::default();
+        u.connect_all();
+        for x in -32i128..32 {
+            u.x.next = bits::<6>((x & 63) as u64);
+            settle(&mut u);
+            let r = fx::shr_half_up(x, 2);
+            assert_eq!((u.neg.val(), u.over.val()), (r < 0, r >= 4), "x={x}");
+            if (0..4).contains(&r) {
+                assert_eq!(u.low.val(), bits::<2>(r as u64), "x={x}");
+            }
+        }
+    }
+
+    #[test]
+    fn parts_concat_puts_hi_above_lo() {
+        let mut u = Concat::<3, 5, 8>::default();
+        u.connect_all();
+        u.hi.next = bits(0b101);
+        u.lo.next = bits(0b0_0110);
+        settle(&mut u);
+        assert_eq!(u.out.val(), bits::<8>(0b1010_0110));
+    }
+}
+
+mod mul {
+    use rtl::mul::*;
+    use rtl::sim::settle;
+    use rust_hdl::prelude::*;
+
+    #[test]
+    fn mul_exhaustive_4x3_into_5_bits_wraps_like_verilog() {
+        let mut m = Mul::<4, 3, 5>::default();
+        m.connect_all();
+        for a in -8i64..8 {
+            for b in -4i64..4 {
+                m.a.next = bits((a & 15) as u64);
+                m.b.next = bits((b & 7) as u64);
+                settle(&mut m);
+                assert_eq!(m.p.val().to_u64(), ((a * b) & 31) as u64, "a={a} b={b}");
+            }
+        }
+    }
+}
+
+mod sim {
+    use rtl::sim::*;
+    use rust_hdl::prelude::*;
+
+    #[test]
+    fn value_round_trips_through_wide_bits() {
+        let words = [0x0123_4567_89ab_cdef, 0xfedc_ba98_7654_3210, 0x5];
+        let v = Value::from_words(130, &words);
+        let b: Bits<130> = v.to_bits();
+        assert!(b.get_bit(0) && b.get_bit(128) && !b.get_bit(129));
+        assert_eq!(Value::from_bits(b), v);
+        assert_eq!(Value::from_bits::<6>(v.to_bits::<130>().get_bits::<6>(0)), Value::new(6, 0x2f));
+    }
+
+    #[test]
+    fn value_prints_like_verilog() {
+        assert_eq!(Value::new(6, 0x2a).to_string(), "6'h2a");
+        assert_eq!(Value::new(1, 1).to_string(), "1'h1");
+        assert_eq!(Value::from_words(72, &[u64::MAX, 0x3]).to_string(), "72'h03_ffff_ffff_ffff_ffff");
+    }
+}
+
+mod emit {
+    use rtl::emit::*;
+    use rtl::sim::PortDir;
+    use rtl::{Unit, UNITS};
+    use std::path::{Path, PathBuf};
+
+    fn repo() -> PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+    }
+
+    /// `hdl-out/` is committed: it must be exactly what `edgepaint` emits now.
+    #[test]
+    fn hdl_out_is_fresh() {
+        let dir = repo().join("hdl-out");
+        let files = files(&default_design());
+        for (name, text) in &files {
+            let committed = std::fs::read_to_string(dir.join(name)).unwrap_or_default();
+            assert!(
+                committed == *text,
+                "hdl-out/{name} is stale or missing: run `cargo run --release` and commit hdl-out/"
+            );
+        }
+        for entry in std::fs::read_dir(&dir).expect("hdl-out/") {
+            let name = entry.expect("hdl-out/ entry").file_name().to_string_lossy().into_owned();
+            assert!(
+                files.iter().any(|(n, _)| *n == name),
+                "hdl-out/{name} is not part of the default design: run `cargo run --release`"
+            );
+        }
+    }
+
+    /// One name per unit: `rtl/src/<name>.rs`, `model/src/<name>.rs` and
+    /// `testbenches/tests/<name>.rs` exist for every unit in `UNITS`.
+    #[test]
+    fn units_have_one_name() {
+        for unit in UNITS {
+            for file in [
+                format!("crates/rtl/src/{}.rs", unit.name),
+                format!("crates/model/src/{}.rs", unit.name),
+                format!("testbenches/tests/{}.rs", unit.name),
+            ] {
+                assert!(repo().join(&file).is_file(), "unit {}: {file} is missing", unit.name);
+            }
+        }
+    }
+
+    #[test]
+    fn pnr_wrapper_registers_every_port() {
+        let e = Unit::named("ept").expect("ept").emit(&[("P".to_owned(), 8)].into()).expect("P = 8");
+        let w = pnr_wrapper(&e);
+        for line in [
+            "module ept_pnr(clk, sin, load, sout);",
+            ".xl(chain_in[2:0])",
+            ".xr(chain_in[5:3])",
+            ".px(out_d[7:0])",
+            "chain_in <= {chain_in[4:0], sin};",
+            "chain_out <= load ? out_q : {chain_out[6:0], 1'b0};",
+            "assign sout = chain_out[7];",
+        ] {
+            assert!(w.contains(line), "{line} missing from\n{w}");
+        }
+    }
+
+    #[test]
+    fn ports_are_read_off_the_unit() {
+        let e = Unit::named("ept").expect("ept").emit(&[("P".to_owned(), 16)].into()).expect("P = 16");
+        let names: Vec<_> = e.ports.iter().map(|p| (p.name.as_str(), p.dir, p.width)).collect();
+        assert_eq!(names, [("xl", PortDir::In, 4), ("xr", PortDir::In, 4), ("px", PortDir::Out, 16)]);
+        assert!(e.verilog.contains("\nmodule ept(xl,xr,px);"), "top module named after the unit");
+    }
+}
+
+/// The widths of each size class's build (`rtl::n10`, `n11`, `n12`) against the formats
+/// of 001/003 as the README gives them. (`rtl::custom`'s widths are whatever its formats
+/// make them: its units are checked through raster_top's lockstep test.)
+mod widths {
+    macro_rules! check {
+        ($build:ident) => {{
+            use rtl::$build::widths::*;
+            // Class 10: S11.4 vertices, positions in [-4096, 4096), edge deltas 17 bits,
+            // D < 2^20; every width but the depth word's grows by a bit per class.
+            let n = CLASS as usize - 10;
+            assert_eq!(FORMATS, fx::Formats::for_n(CLASS), "{} is at its class's defaults", stringify!($build));
+            assert_eq!(
+                (SCREEN, DIM, ADDR, PIXEL, EDGE_D, EDGE_Q),
+                (10 + n, 11 + n, 20 + 2 * n, 13 + n, 21 + n, 17 + n)
+            );
+            assert_eq!((Z_ACC, DZ, C_ACC, DC, DEPTH, CHANNEL, RGB), (36 + n, 40 + n, 32 + n, 36 + n, 16, 8, 24));
+        }};
+    }
+
+    #[test]
+    fn widths_follow_the_formats_of_each_size_class() {
+        check!(n10);
+        check!(n11);
+        check!(n12);
+        assert_eq!(rtl::CLASSES, [10, 11, 12]);
+    }
+}

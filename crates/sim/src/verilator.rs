@@ -1,0 +1,354 @@
+//! Emitted Verilog under Verilator, in-process.
+//!
+//! [`Verilated::new`] builds a shared library of the Verilated model with a small C++
+//! shim (`extern "C"`: new, eval, delete, and one setter and one getter that take a port
+//! by its index) and [`Verilated::model`] loads it. The library is cached under
+//! `<target>/verilator/<top>-<hash>/`, the hash taken over the Verilog text, the top
+//! module, the ports, the shim and Verilator's version: a model is rebuilt only when one
+//! of those changes (a fresh clone or a touched file rebuilds nothing that is cached),
+//! and two processes or threads building the same model at once each build in a
+//! directory of their own and rename the result into place.
+//!
+//! [`VlSim`] moves port values as [`Value`]s by name (the dual-simulation tests) or by
+//! [`PortId`] with plain integers (frame simulation, a million cycles per second and
+//! more), resolving the shim's symbols once when the model is loaded.
+
+use crate::{Port, PortDir, Sim, Value};
+use libloading::Library;
+use std::collections::HashMap;
+use std::ffi::c_void;
+use std::hash::{Hash, Hasher};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Arc;
+
+/// What to do when Verilator is missing or unusable.
+const SETUP_HINT: &str =
+    "run scripts/setup-tools.sh, then `source scripts/tools-env.sh` (it puts the pinned Verilator's wrapper on PATH)";
+
+/// Verilator warnings waived while building a model. WIDTH: rust-hdl writes every literal
+/// and index as 32 bits (`xl[32'h5]`), so widths never match.
+pub const IGNORED_WARNINGS: &[&str] = &["WIDTH"];
+
+/// Bumped whenever the shim or the build commands change, so cached models are rebuilt.
+const SHIM_VERSION: u32 = 1;
+
+/// The Cargo target directory this binary was built in (the nearest ancestor holding
+/// `CACHEDIR.TAG`), so artifacts follow `CARGO_TARGET_DIR`.
+pub fn target_dir() -> PathBuf {
+    let exe = std::env::current_exe().expect("path of the running binary");
+    exe.ancestors()
+        .find(|d| d.join("CACHEDIR.TAG").is_file())
+        .unwrap_or_else(|| panic!("{} is not inside a Cargo target directory", exe.display()))
+        .to_path_buf()
+}
+
+/// Checks that `exe` runs and is Verilator 5; returns its version line. The error says
+/// how to install it.
+pub fn check_verilator(exe: &str) -> Result<String, String> {
+    match Command::new(exe).arg("--version").output() {
+        Ok(o) if String::from_utf8_lossy(&o.stdout).starts_with("Verilator 5.") => {
+            Ok(String::from_utf8_lossy(&o.stdout).trim().to_owned())
+        }
+        Ok(o) => Err(format!(
+            "`{exe} --version` printed {:?}, not \"Verilator 5.x\": {SETUP_HINT}",
+            String::from_utf8_lossy(&o.stdout).trim()
+        )),
+        Err(e) => Err(format!("Verilator ({exe}) is not installed ({e}): {SETUP_HINT}")),
+    }
+}
+
+/// Writes `text` to `dir/name` unless it already holds exactly that; returns the path.
+/// The file is replaced by a rename, so a reader in another thread never sees it half
+/// written.
+pub fn write_if_changed(dir: &Path, name: &str, text: &str) -> Result<PathBuf, String> {
+    let path = dir.join(name);
+    if std::fs::read_to_string(&path).ok().as_deref() != Some(text) {
+        std::fs::create_dir_all(dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
+        static WRITES: AtomicU64 = AtomicU64::new(0);
+        let n = WRITES.fetch_add(1, Ordering::Relaxed);
+        let tmp = dir.join(format!(".{name}.{}.{n}", std::process::id()));
+        std::fs::write(&tmp, text).map_err(|e| format!("writing {}: {e}", tmp.display()))?;
+        std::fs::rename(&tmp, &path).map_err(|e| format!("renaming {} to {}: {e}", tmp.display(), path.display()))?;
+    }
+    Ok(path)
+}
+
+/// A port's name as a member of Verilator's model class: `$` (rust-hdl's bundle
+/// separator) escaped as Verilator escapes it.
+fn member(port: &str) -> String {
+    port.replace('$', "__024")
+}
+
+/// The C++ shim of model `V<top>` with `ports`: ports are numbered in the order given.
+fn shim(top: &str, ports: &[Port]) -> String {
+    let mut set = String::new();
+    let mut get = String::new();
+    for (i, p) in ports.iter().enumerate() {
+        let m = member(&p.name);
+        if p.width <= 64 {
+            if p.dir == PortDir::In {
+                set.push_str(&format!("    case {i}: t->{m} = w[0]; break;\n"));
+            }
+            get.push_str(&format!("    case {i}: w[0] = t->{m}; break;\n"));
+        } else {
+            let n = p.width.div_ceil(32);
+            if p.dir == PortDir::In {
+                set.push_str(&format!(
+                    "    case {i}: for (int k = 0; k < {n}; ++k) t->{m}[k] = (uint32_t)(w[k / 2] >> (32 * (k % 2))); break;\n"
+                ));
+            }
+            get.push_str(&format!(
+                "    case {i}: for (int k = 0; k < {n}; ++k) w[k / 2] |= (uint64_t)t->{m}[k] << (32 * (k % 2)); break;\n"
+            ));
+        }
+    }
+    format!(
+        "// The C ABI of V{top} for edgepaint's sim crate (sim::verilator), written with the model.\n\
+         #include <cstdint>\n\
+         #include \"verilated.h\"\n\
+         #include \"V{top}.h\"\n\
+         extern \"C\" {{\n\
+         void* ep_new() {{ return new V{top}; }}\n\
+         void ep_delete(void* m) {{ delete static_cast<V{top}*>(m); }}\n\
+         void ep_eval(void* m) {{ static_cast<V{top}*>(m)->eval(); }}\n\
+         void ep_set(void* m, uint32_t port, const uint64_t* w) {{\n\
+         \x20   V{top}* t = static_cast<V{top}*>(m);\n\
+         \x20   switch (port) {{\n{set}    }}\n\
+         }}\n\
+         void ep_get(void* m, uint32_t port, uint64_t* w) {{\n\
+         \x20   V{top}* t = static_cast<V{top}*>(m);\n\
+         \x20   switch (port) {{\n{get}    }}\n\
+         }}\n\
+         }}\n"
+    )
+}
+
+/// A Verilated model, built (or found in the cache) and loaded, ready to instantiate.
+pub struct Verilated {
+    unit: String,
+    file: PathBuf,
+    ports: Vec<Port>,
+    library: Arc<Library>,
+}
+
+impl Verilated {
+    /// Builds the model of `file` (top module `unit`, with the given ports), or reuses the
+    /// cached build of the same Verilog. Fails, saying how to install it, when Verilator
+    /// is not on PATH, and with Verilator's or the compiler's messages when they fail.
+    pub fn new(unit: &str, file: &Path, ports: &[Port]) -> Result<Self, String> {
+        let version = check_verilator("verilator")?;
+        let verilog = std::fs::read_to_string(file).map_err(|e| format!("reading {}: {e}", file.display()))?;
+        let shim = shim(unit, ports);
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        (SHIM_VERSION, &version, unit, &verilog, &shim).hash(&mut h);
+        let dir = target_dir().join("verilator").join(format!("{unit}-{:016x}", h.finish()));
+        let lib = dir.join(format!("libV{unit}.so"));
+        if !lib.is_file() {
+            build(unit, file, &shim, &dir, &lib)?;
+        }
+        // SAFETY: the library is the model just built from our own shim; loading it runs
+        // only Verilator's static initialisers.
+        let library = unsafe { Library::new(&lib) }.map_err(|e| format!("loading {}: {e}", lib.display()))?;
+        Ok(Verilated {
+            unit: unit.to_owned(),
+            file: file.to_owned(),
+            ports: ports.to_vec(),
+            library: Arc::new(library),
+        })
+    }
+
+    /// The Verilog file.
+    pub fn file(&self) -> &Path {
+        &self.file
+    }
+
+    /// A fresh instance of the model, every input zero.
+    pub fn model(&self) -> Result<VlSim, String> {
+        let sym = |name: &str| format!("{}: symbol {name} of the model's library", self.unit);
+        // SAFETY: the signatures are those of the shim written by `shim` above.
+        unsafe {
+            let new =
+                *self.library.get::<extern "C" fn() -> *mut c_void>(b"ep_new").map_err(|e| sym(&e.to_string()))?;
+            let api = Api {
+                delete: *self.library.get(b"ep_delete").map_err(|e| sym(&e.to_string()))?,
+                eval: *self.library.get(b"ep_eval").map_err(|e| sym(&e.to_string()))?,
+                set: *self.library.get(b"ep_set").map_err(|e| sym(&e.to_string()))?,
+                get: *self.library.get(b"ep_get").map_err(|e| sym(&e.to_string()))?,
+            };
+            let handle = new();
+            if handle.is_null() {
+                return Err(format!("{}: the model could not be created", self.unit));
+            }
+            let index = self.ports.iter().enumerate().map(|(i, p)| (p.name.clone(), PortId(i as u32))).collect();
+            Ok(VlSim {
+                _library: self.library.clone(),
+                api,
+                handle,
+                unit: self.unit.clone(),
+                ports: self.ports.clone(),
+                index,
+                words: Vec::new(),
+            })
+        }
+    }
+}
+
+/// Runs `cmd`; its output in the error when it fails.
+fn run(cmd: &mut Command, what: &str) -> Result<(), String> {
+    let out = cmd.output().map_err(|e| format!("{what}: cannot run {:?}: {e}; {SETUP_HINT}", cmd.get_program()))?;
+    if out.status.success() {
+        return Ok(());
+    }
+    Err(format!(
+        "{what} failed ({}):\n{}{}",
+        out.status,
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    ))
+}
+
+/// Verilates `file` with `shim` in a directory of this thread's own, links the shared
+/// library and renames it to `lib` (in `dir`).
+fn build(unit: &str, file: &Path, shim: &str, dir: &Path, lib: &Path) -> Result<(), String> {
+    let what = format!("Verilating {}", file.display());
+    static BUILDS: AtomicU64 = AtomicU64::new(0);
+    let n = BUILDS.fetch_add(1, Ordering::Relaxed);
+    let work = dir.with_extension(format!("build-{}-{n}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&work);
+    std::fs::create_dir_all(&work).map_err(|e| format!("creating {}: {e}", work.display()))?;
+    let shim_file = work.join("shim.cpp");
+    std::fs::write(&shim_file, shim).map_err(|e| format!("writing {}: {e}", shim_file.display()))?;
+    let jobs = std::thread::available_parallelism().map_or(2, |n| n.get());
+    let mut verilator = Command::new("verilator");
+    verilator
+        .args(["--cc", "-sv", "--build", "-j", &jobs.to_string(), "-CFLAGS", "-fPIC"])
+        .args(IGNORED_WARNINGS.iter().map(|w| format!("-Wno-{w}")))
+        .arg("--Mdir")
+        .arg(&work)
+        .args(["--top-module", unit])
+        .arg(file)
+        .arg(&shim_file);
+    run(&mut verilator, &what)?;
+    let linked = work.join(format!("libV{unit}.so"));
+    let mut link = Command::new("c++");
+    link.args(["-shared", "-fPIC", "-o"])
+        .arg(&linked)
+        .arg("-Wl,--whole-archive")
+        .arg(work.join(format!("libV{unit}.a")))
+        .arg(work.join("libverilated.a"))
+        .args(["-Wl,--no-whole-archive", "-pthread"]);
+    run(&mut link, &format!("linking the model of {}", file.display()))?;
+    std::fs::create_dir_all(dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
+    std::fs::rename(&linked, lib).map_err(|e| format!("moving the model to {}: {e}", lib.display()))?;
+    let _ = std::fs::remove_dir_all(&work);
+    Ok(())
+}
+
+/// The shim's functions.
+struct Api {
+    delete: extern "C" fn(*mut c_void),
+    eval: extern "C" fn(*mut c_void),
+    set: extern "C" fn(*mut c_void, u32, *const u64),
+    get: extern "C" fn(*mut c_void, u32, *mut u64),
+}
+
+/// A port of a [`VlSim`], looked up once by name ([`VlSim::port`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PortId(u32);
+
+/// One instance of a Verilated unit.
+pub struct VlSim {
+    /// Keeps the library loaded while the instance lives.
+    _library: Arc<Library>,
+    api: Api,
+    handle: *mut c_void,
+    unit: String,
+    ports: Vec<Port>,
+    index: HashMap<String, PortId>,
+    words: Vec<u64>,
+}
+
+impl Drop for VlSim {
+    fn drop(&mut self) {
+        (self.api.delete)(self.handle);
+    }
+}
+
+impl VlSim {
+    /// The top module's name.
+    pub fn unit(&self) -> &str {
+        &self.unit
+    }
+
+    /// The ports it was built with.
+    pub fn ports(&self) -> &[Port] {
+        &self.ports
+    }
+
+    /// Port `name`; panics if the unit has none.
+    pub fn port(&self, name: &str) -> PortId {
+        *self.index.get(name).unwrap_or_else(|| panic!("{} has no port {name}", self.unit))
+    }
+
+    /// Drives input `id` (at most 64 bits wide) with the low bits of `v`.
+    pub fn set_u64(&mut self, id: PortId, v: u64) {
+        let p = &self.ports[id.0 as usize];
+        debug_assert!(p.dir == PortDir::In && p.width <= 64, "{}: {} is not a narrow input", self.unit, p.name);
+        let masked = if p.width == 64 { v } else { v & ((1 << p.width) - 1) };
+        (self.api.set)(self.handle, id.0, &masked);
+    }
+
+    /// Reads port `id` (at most 64 bits wide).
+    pub fn get_u64(&mut self, id: PortId) -> u64 {
+        debug_assert!(self.ports[id.0 as usize].width <= 64);
+        let mut w = 0;
+        (self.api.get)(self.handle, id.0, &mut w);
+        w
+    }
+
+    /// Propagates the inputs.
+    pub fn eval(&mut self) {
+        (self.api.eval)(self.handle);
+    }
+
+    fn checked(&self, pin: &str, dir: PortDir) -> (PortId, usize) {
+        let id = self.port(pin);
+        let p = &self.ports[id.0 as usize];
+        assert!(dir == PortDir::Out || p.dir == PortDir::In, "{}: {pin} is an output", self.unit);
+        (id, p.width)
+    }
+}
+
+impl Sim for VlSim {
+    fn name(&self) -> &'static str {
+        "verilator"
+    }
+
+    fn set(&mut self, pin: &str, value: &Value) {
+        let (id, width) = self.checked(pin, PortDir::In);
+        assert_eq!(value.width(), width, "{}: {pin} is {width} bits wide", self.unit);
+        (self.api.set)(self.handle, id.0, value.words().as_ptr());
+    }
+
+    fn settle(&mut self) {
+        self.eval();
+    }
+
+    fn clock(&mut self) {
+        let clock = self.port("clock");
+        for level in [1, 0] {
+            self.set_u64(clock, level);
+            self.eval();
+        }
+    }
+
+    fn get(&mut self, pin: &str) -> Value {
+        let (id, width) = self.checked(pin, PortDir::Out);
+        self.words.clear();
+        self.words.resize(width.div_ceil(64).max(1), 0);
+        (self.api.get)(self.handle, id.0, self.words.as_mut_ptr());
+        Value::from_words(width, &self.words)
+    }
+}

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# edgepaint's long checks, beyond the test command (scripts/test.sh): run before resolving
+# any issue that touches RTL (README, "Soak"). About an hour on 2 cores; each step prints
+# its time, and everything it writes goes under target/soak/.
+#
+#   1. tests        the whole suite, plus the tests marked #[ignore] for being long:
+#                   the EPT at P = 1024 exhaustively (all 1,048,576 (XL, XR) pairs) in
+#                   rust-hdl and Verilator, and whole shipped scenes through raster_top in
+#                   rust-hdl and Verilator in lockstep (every output every cycle)
+#   2. random soak  every random test with 10x the cases (EDGEPAINT_N = 10000) and another
+#                   seed (EDGEPAINT_SEED, default 2: the test command runs seed 1)
+#   3. synthesis    every file in hdl-out/, each unit alone too, in all three flows (the
+#                   test command synthesizes each distinct module once, without iCE40)
+#   4. P&R          place and route of every unit of the default design on iCE40 and ECP5
+#                   (`edgepaint report`, nextpnr router2): area and Fmax in
+#                   target/soak/report/report.md
+#
+# `scripts/soak.sh STEP...` runs only the steps named (tests, random, synth, pnr).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+steps=("$@")
+[[ ${#steps[@]} -gt 0 ]] || steps=(tests random synth pnr)
+want() { [[ " ${steps[*]} " =~ " $1 " ]]; }
+step() {
+    local name=$1
+    shift
+    printf '\n== soak: %s\n' "$name"
+    local start=$SECONDS
+    "$@"
+    printf '== soak: %s passed in %d s\n' "$name" $((SECONDS - start))
+}
+
+scripts/setup-tools.sh
+# shellcheck source=scripts/tools-env.sh
+source scripts/tools-env.sh
+mkdir -p target/soak
+
+want tests && step "tests, with the long ones (#[ignore])" cargo test --workspace --locked -- --include-ignored
+want random && step "random tests, EDGEPAINT_N=10000, seed ${EDGEPAINT_SEED:-2}" \
+    env EDGEPAINT_N=10000 EDGEPAINT_SEED="${EDGEPAINT_SEED:-2}" cargo test --workspace --locked
+want synth && step "synthesis of every file in all flows" scripts/synth.sh --all
+# The test profile's build of edgepaint: the one the tests made.
+want pnr && step "place and route of the default design" \
+    cargo run --profile test --locked --quiet -- report --router router2 -o target/soak/report
+printf '\n== soak: all steps passed (%s)\n' "${steps[*]}"
