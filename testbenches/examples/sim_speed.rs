@@ -54,9 +54,10 @@ fn frame_speed(dut: &mut dyn Cycle, name: &str, size: (u32, u32)) -> (u64, f64) 
     let s = scene::Scene::load(&path).and_then(|s| s.with_size(size.0, size.1)).unwrap_or_else(|e| panic!("{e}"));
     let list = s.to_trilist().unwrap_or_else(|e| panic!("{e}"));
     let cull = if s.cull_back { Cull::Back } else { Cull::None };
-    let prep = model::raster_top::frame(&list, cull, [0; 3]).unwrap_or_else(|e| panic!("{e}"));
+    let prep = model::raster_top::raster_top(&fx::Build::for_screen(list.width, list.height), &list, cull, [0; 3])
+        .unwrap_or_else(|e| panic!("{e}"));
     let f = Frame {
-        build: frame::build_of(&prep),
+        build: prep.build,
         width: list.width,
         height: list.height,
         cull,

@@ -1,11 +1,11 @@
 //! The shared divider (paper 001): rust-hdl and Verilator in lockstep against
-//! `model::divider::divide`, exhaustively at a narrow width and at random at the full one,
+//! `model::divider::divider`, exhaustively at a narrow width and at random at the full one,
 //! with the error bound measured; latency and initiation interval against the model's.
 //!
 //! The narrow divider is the same generic `Divider` with 8-bit dividends and 7-bit
 //! divisors: the same steps, stage split and sign fix, few enough inputs to try them all.
 
-use model::divider::{divide, recip_operands, DivIn, DivOut, II, LATENCY};
+use model::divider::{divider, recip_operands, DividerIn, DividerOut, II, LATENCY};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::divider::{emit, Divider, DIV_D, DIV_N, DIV_Q, DIV_QM};
@@ -28,7 +28,7 @@ struct Run {
 fn run(
     cycle: &mut Cycle,
     widths: (usize, usize, usize),
-    divs: &[DivIn],
+    divs: &[DividerIn],
     flow: Flow,
     rng: &mut ChaCha8Rng,
 ) -> Result<Run, String> {
@@ -53,9 +53,9 @@ fn run(
         let out = cycle(&pins)?;
         if out.get("out_valid").bit(0) && ready {
             let k: usize = in_flight.pop_front().ok_or(format!("cycle {now}: a result with no division in flight"))?;
-            let DivIn { n, d } = divs[k];
-            let got = DivOut { q: signed(out.get("out_q")), r: out.get("out_r").to_u128() as i128 };
-            let model = divide(divs[k], &FORMATS);
+            let DividerIn { n, d } = divs[k];
+            let got = DividerOut { q: signed(out.get("out_q")), r: out.get("out_r").to_u128() as i128 };
+            let model = divider(divs[k], &FORMATS);
             if got != model {
                 return Err(format!("cycle {now}: {n} / {d}: RTL {got:?}, model {model:?} (inputs {pins:?})"));
             }
@@ -83,7 +83,7 @@ fn run(
 fn dual<const N: usize, const D: usize, const D1: usize, const Q: usize, const QM: usize>(
     vl: &Verilated,
     latency: usize,
-    divs: &[DivIn],
+    divs: &[DividerIn],
     flow: Flow,
 ) -> Run
 where
@@ -99,7 +99,7 @@ where
 /// `divs` through rust-hdl's simulator alone (no Verilator build per latency).
 fn hdl_only<const N: usize, const D: usize, const D1: usize, const Q: usize, const QM: usize>(
     latency: usize,
-    divs: &[DivIn],
+    divs: &[DividerIn],
     flow: Flow,
 ) -> Run
 where
@@ -113,8 +113,8 @@ where
 }
 
 /// Every 8-bit dividend by every 7-bit divisor.
-fn all_narrow() -> Vec<DivIn> {
-    (-128..128).flat_map(|n| (1..128).map(move |d| DivIn { n, d })).collect()
+fn all_narrow() -> Vec<DividerIn> {
+    (-128..128).flat_map(|n| (1..128).map(move |d| DividerIn { n, d })).collect()
 }
 
 /// The narrow divider with `latency` stages, emitted under the target directory.
@@ -148,7 +148,7 @@ fn divider_exhaustive_w8_other_latencies_rust_hdl() {
 /// The divisions setup issues (model::divider): reciprocals of twice the area (any size),
 /// edge starts `(x fraction * dy + dx * t) / (2^s dy)` and steps `dx / dy`, and divisions
 /// filling the contract (any divisor, any quotient that fits).
-fn random_full_width(rng: &mut ChaCha8Rng, n: usize) -> Vec<DivIn> {
+fn random_full_width(rng: &mut ChaCha8Rng, n: usize) -> Vec<DividerIn> {
     let dv = DERIVED;
     let (s, delta) = (FORMATS.xy.frac, 1i128 << (dv.delta_bits - 1));
     let mut out = Vec::with_capacity(n);
@@ -164,14 +164,14 @@ fn random_full_width(rng: &mut ChaCha8Rng, n: usize) -> Vec<DivIn> {
             1 => {
                 let (dx, dy) = (rng.gen_range(-delta + 1..delta), rng.gen_range(1..delta));
                 let (xf, t) = (rng.gen_range(0..1i128 << s), rng.gen_range(-(1i128 << s)..1i128 << s));
-                DivIn { n: xf * dy + dx * t, d: dy << s }
+                DividerIn { n: xf * dy + dx * t, d: dy << s }
             }
-            2 => DivIn { n: rng.gen_range(-delta + 1..delta), d: rng.gen_range(1..delta) >> rng.gen_range(0..16) },
+            2 => DividerIn { n: rng.gen_range(-delta + 1..delta), d: rng.gen_range(1..delta) >> rng.gen_range(0..16) },
             _ => {
                 let d =
                     (rng.gen_range(1..1i128 << dv.div_divisor_bits) >> rng.gen_range(0..dv.div_divisor_bits)).max(1);
                 let q = rng.gen_range(-(1i128 << (dv.div_quotient_bits - 1))..1i128 << (dv.div_quotient_bits - 1));
-                DivIn { n: q * d + rng.gen_range(0..d), d }
+                DividerIn { n: q * d + rng.gen_range(0..d), d }
             }
         };
         let fits = |v: i128, bits: u32| -(1i128 << (bits - 1)) <= v && v < 1i128 << (bits - 1);
@@ -191,12 +191,12 @@ fn divider_random_full_width_is_floor_division() {
     // The extremes: the largest dividend and quotient magnitudes, divisor 1 and the largest.
     let (nlim, dmax, qlim) = (1i128 << (DIV_N - 1), (1i128 << DIV_D) - 1, 1i128 << DIV_QM);
     divs.extend([
-        DivIn { n: -qlim, d: 1 },
-        DivIn { n: qlim - 1, d: 1 },
-        DivIn { n: nlim - 1, d: dmax },
-        DivIn { n: -nlim, d: dmax },
-        DivIn { n: 0, d: 1 },
-        DivIn { n: -1, d: dmax },
+        DividerIn { n: -qlim, d: 1 },
+        DividerIn { n: qlim - 1, d: 1 },
+        DividerIn { n: nlim - 1, d: dmax },
+        DividerIn { n: -nlim, d: dmax },
+        DividerIn { n: 0, d: 1 },
+        DividerIn { n: -1, d: dmax },
     ]);
     let vl = verilated("divider");
     let r = dual::<DIV_N, DIV_D, { DIV_D + 1 }, DIV_Q, DIV_QM>(&vl, LATENCY as usize, &divs, Flow::STALLING);

@@ -6,18 +6,18 @@ use model::ctx::Ctx;
 use model::cull_sort::{cull_sort, Clip, Cull};
 use model::edge_walk::{edge_walk, SpanCmd, II, LATENCY};
 use model::input::Vtx;
-use model::triangle_setup::{triangle_setup, SetupOut, Walk};
+use model::triangle_setup::{triangle_setup, TriangleSetupOut, Walk};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::edge_walk::EdgeWalk;
 use rtl::widths::{DIM, FORMATS};
 use testbenches::stimulus::{extremes, random_triangle};
-use testbenches::streams::{as_pins, setup_out, span_cmd_of, PinValues};
+use testbenches::streams::{as_pins, span_cmd_of, triangle_setup_out, PinValues};
 use testbenches::{count, seed, verilated, Dual, Value};
 
 /// One triangle for the walk: its setup, screen height and the model's scanlines.
 struct Job {
-    setup: SetupOut,
+    setup: TriangleSetupOut,
     height: u32,
     scanlines: Vec<Option<SpanCmd>>,
     pins: PinValues,
@@ -30,7 +30,7 @@ fn job(v: &[Vtx; 3], clip: Clip) -> Option<Job> {
     let mut ctx = Ctx::new(FORMATS);
     let setup = triangle_setup(&sorted, &mut ctx);
     let scanlines = edge_walk(&setup, clip, &mut ctx).scanlines;
-    Some(Job { pins: setup_out("inp", &setup), setup, height: clip.height, scanlines })
+    Some(Job { pins: triangle_setup_out("inp", &setup), setup, height: clip.height, scanlines })
 }
 
 /// Small screens, where random triangles cross every boundary often and walks are short.

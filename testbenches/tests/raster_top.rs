@@ -1,15 +1,15 @@
 //! The whole rasterizer (`raster_top`): frames drawn in Verilator (one Verilated model for
 //! every test of this module) and, for a small frame, in rust-hdl and Verilator in
-//! lockstep; every image bit for bit the model's (`model::raster::render`, scanline, at
+//! lockstep; every image bit for bit the model's (`model::render::render`, scanline, at
 //! the RTL's formats), every frame's cycle count the cycle model's.
 
+use fx::Build;
 use model::cull_sort::Cull;
 use model::cycles::Timing;
 use model::input::Vtx;
-use model::raster_top::{self as top, frame as prepare};
+use model::raster_top::{self as top, raster_top};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use rtl::config::Build;
 use rust_hdl::prelude::Block;
 use scene::stress::{fan, random_mesh, split_rectangle};
 use scene::{Triangle, Trilist, Vertex};
@@ -27,8 +27,14 @@ fn model() -> frame::RasterTopVl {
 }
 
 /// `list` through the model and through `dut`; the image, depth and cycles compared.
-fn check(what: &str, dut: &mut dyn Cycle, list: &Trilist, cull: Cull, mem: MemoryModel) -> (top::Frame, FrameOut) {
-    check_at(Build::of_class(top::class_for(list.width, list.height)), what, dut, list, cull, mem)
+fn check(
+    what: &str,
+    dut: &mut dyn Cycle,
+    list: &Trilist,
+    cull: Cull,
+    mem: MemoryModel,
+) -> (top::RasterTopOut, FrameOut) {
+    check_at(Build::for_screen(list.width, list.height), what, dut, list, cull, mem)
 }
 
 /// [`check`] with `dut` the `raster_top` of build `build`.
@@ -39,12 +45,11 @@ fn check_at(
     list: &Trilist,
     cull: Cull,
     mem: MemoryModel,
-) -> (top::Frame, FrameOut) {
-    let prep = top::frame_with(build.class, &build.formats, list, cull, [20, 24, 32])
-        .unwrap_or_else(|e| panic!("{what}: {e}"));
+) -> (top::RasterTopOut, FrameOut) {
+    let prep = raster_top(&build, list, cull, [20, 24, 32]).unwrap_or_else(|e| panic!("{what}: {e}"));
     assert!(prep.skipped.is_empty(), "{what}: triangles that do not fit the input formats");
     let f = Frame {
-        build: frame::build_of(&prep),
+        build: prep.build,
         width: list.width,
         height: list.height,
         cull,
@@ -253,7 +258,7 @@ fn raster_top_size_classes_11_and_12_lockstep() {
         let (mut l, cull) = scene("cube", Some((24, 16)));
         let far = [(-3000.0, 3.0, 0.3), (20.0, -2500.0, 0.5), (3500.0, 14.0, 0.9)];
         l.triangles.push(far.map(|(x, y, z)| Vertex::new(x, y, z, [90.0, 160.0, 230.0])));
-        let class10 = prepare(&l, cull, [0; 3]).expect("a 24 x 16 frame");
+        let class10 = raster_top(&Build::for_screen(l.width, l.height), &l, cull, [0; 3]).expect("a 24 x 16 frame");
         assert_eq!(class10.skipped.len(), 1, "class 10 cannot take the far triangle");
         let vl = verilated_at(class);
         let mut dual = Dual::new(unit, vl.model().unwrap_or_else(|e| panic!("{e}")));
@@ -271,7 +276,7 @@ fn raster_top_size_classes_11_and_12_lockstep() {
 #[test]
 fn raster_top_class_11_scene_vs_model() {
     let (l, cull) = scene("sphere", Some((1280, 960)));
-    assert_eq!(top::class_for(l.width, l.height), 11);
+    assert_eq!(Build::for_screen(l.width, l.height).class, 11);
     let mut dut = frame::verilator(&Build::of_class(11)).unwrap_or_else(|e| panic!("{e}"));
     let (prep, out) = check("sphere at 1280x960", &mut dut, &l, cull, ready_memory(&mut |_| true));
     assert_eq!(out.cycles, prep.cycles(), "cycles");
@@ -363,10 +368,11 @@ fn iverilog_replay(dir: &str, frames: &[(&str, (u32, u32), bool)]) {
     };
     for &(name, size, stall) in frames {
         let (l, cull) = scene(name, Some(size));
-        let prep = prepare(&l, cull, [0; 3]).unwrap_or_else(|e| panic!("{e}"));
+        let prep =
+            raster_top(&Build::for_screen(l.width, l.height), &l, cull, [0; 3]).unwrap_or_else(|e| panic!("{e}"));
         assert!(prep.writes.len() > 100, "{name}: {} writes", prep.writes.len());
         let f = Frame {
-            build: frame::build_of(&prep),
+            build: prep.build,
             width: l.width,
             height: l.height,
             cull,
@@ -404,7 +410,8 @@ fn units_frame<U: Block + Pins>(
     cull: Cull,
     stall: &mut dyn FnMut(u64) -> bool,
 ) {
-    let prep = prepare(list, cull, [20, 24, 32]).unwrap_or_else(|e| panic!("{what}: {e}"));
+    let prep = raster_top(&Build::for_screen(list.width, list.height), list, cull, [20, 24, 32])
+        .unwrap_or_else(|e| panic!("{what}: {e}"));
     // The triangles as the host sends them, with their crossings when it culls.
     let sent: Vec<([Vtx; 3], u8)> = if units.cull_sort {
         prep.triangles.iter().map(|t| (*t, 0)).collect()
@@ -412,7 +419,7 @@ fn units_frame<U: Block + Pins>(
         prep.sorted.iter().map(|s| (s.v, s.crosses)).collect()
     };
     assert!(!sent.is_empty(), "{what}: a triangle to carry inp_last");
-    let build = frame::build_of(&prep);
+    let build = prep.build;
     let class = build.class;
     let zmax = model::cull_sort::z_max(&build.formats) as u32;
     let mut memory = Memory::new(class, (list.width, list.height), zmax, [20, 24, 32], ReadDuringWrite::Old);
@@ -528,9 +535,9 @@ fn raster_top_custom_formats_lockstep() {
         Build::of_class(build.class),
         "rtl::custom is built at its class's defaults: nothing new to test"
     );
-    let raster_top = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
-    let params = raster_top.params([("N".to_owned(), build.class as u64)]).expect("known parameters");
-    let e = raster_top.emit_at(&params, &build.formats).unwrap_or_else(|e| panic!("{e}"));
+    let unit = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
+    let params = unit.params([("N".to_owned(), build.class as u64)]).expect("known parameters");
+    let e = unit.emit_at(&params, &build.formats).unwrap_or_else(|e| panic!("{e}"));
     assert!(
         e.ports.iter().any(|p| p.name == "wr_z" && p.width == build.formats.z.frac as usize),
         "wr_z is z.frac wide"
@@ -547,7 +554,8 @@ fn raster_top_custom_formats_lockstep() {
         if out.stalls == 0 {
             assert_eq!(out.cycles, prep.cycles(), "{what}: cycles, RTL against model::cycles");
         }
-        let defaults = top::frame_at(build.class, l, cull, [20, 24, 32]).expect("the class's default formats");
+        let defaults =
+            raster_top(&Build::of_class(build.class), l, cull, [20, 24, 32]).expect("the class's default formats");
         assert!(defaults.render.fb.depth != prep.render.fb.depth, "{what}: the formats change the depth buffer");
     }
 }

@@ -1,5 +1,5 @@
 //! Triangle setup (paper 001): rust-hdl and Verilator in lockstep, every output compared on
-//! every cycle, and each result (`out_*`, `SetupOut` flattened) checked against
+//! every cycle, and each result (`out_*`, `TriangleSetupOut` flattened) checked against
 //! `model::triangle_setup`; latency and initiation interval against
 //! `model::cycles::setup_latency`. Its inputs are the triangles `model::cull_sort` passes.
 
@@ -7,7 +7,7 @@ use model::ctx::Ctx;
 use model::cull_sort::{cull_sort, Cull, Sorted};
 use model::cycles::{setup_latency, Timing, SETUP_MULTIPLIERS_MAX};
 use model::input::Vtx;
-use model::triangle_setup::{triangle_setup, SetupOut};
+use model::triangle_setup::{triangle_setup, TriangleSetupOut};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rtl::cull_sort::{COLOR, OUTCODE, XY, Z};
@@ -18,7 +18,7 @@ use scene::Vertex;
 use std::collections::VecDeque;
 use testbenches::flow::{hdl_cycle, outputs, Cycle, Flow};
 use testbenches::stimulus::{extremes, random_case, scene, Case};
-use testbenches::streams::{as_pins, raw, setup_out, PinValues};
+use testbenches::streams::{as_pins, raw, triangle_setup_out, PinValues};
 use testbenches::{count, seed, verilated, Dual, HdlSim, Value};
 
 /// 001's configuration, the default design's: 7 multipliers, a 5-stage divider.
@@ -49,7 +49,7 @@ fn sorted_pins(s: &Sorted) -> PinValues {
 }
 
 /// The model's result.
-fn model(s: &Sorted) -> SetupOut {
+fn model(s: &Sorted) -> TriangleSetupOut {
     triangle_setup(s, &mut Ctx::new(FORMATS))
 }
 
@@ -84,7 +84,7 @@ fn run(cycle: &mut Cycle, tris: &[Sorted], flow: Flow, rng: &mut ChaCha8Rng) -> 
             if !was_valid {
                 timing[i].valid = now;
             }
-            for (pin, want) in setup_out("out", &model(&tris[i])) {
+            for (pin, want) in triangle_setup_out("out", &model(&tris[i])) {
                 if out.get(&pin) != &want {
                     return Err(format!(
                         "cycle {now}: {pin} = {} but the model says {want} for triangle {i}:\n{:?}",

@@ -26,7 +26,7 @@
 use fx::Formats;
 use model::cycles::{scanline_frame, vector_frame, FrameCycles, Timing};
 use model::pixel_out::Framebuffer;
-use model::raster::{render as model_render, Method, Options as ModelOptions};
+use model::render::{render as model_render, Method, Options as ModelOptions};
 use reference::{Cull, Frame, Options as RefOptions};
 use scene::measure::{edge_distance, inside, plane_z};
 use scene::{Triangle, Trilist};

@@ -3,7 +3,7 @@
 use accuracy::{compare, Report, Setup};
 use fx::Formats;
 use model::cycles::Timing;
-use model::raster::Method;
+use model::render::Method;
 use std::path::{Path, PathBuf};
 
 fn shipped_scenes() -> Vec<PathBuf> {

@@ -3,7 +3,7 @@
 
 use anyhow::{Context, Result};
 use fx::Formats;
-use model::raster::Method;
+use model::render::Method;
 use std::path::Path;
 
 /// Which rasterizer draws.

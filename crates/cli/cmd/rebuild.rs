@@ -1,5 +1,5 @@
 //! Formats other than a size class's defaults for the RTL: which build of the scanline
-//! units a command needs (`rtl::config::Build`), and, when this edgepaint does not hold it,
+//! units a command needs (`fx::Build`), and, when this edgepaint does not hold it,
 //! the same command run again in an edgepaint compiled at it.
 //!
 //! rust-hdl's widths are compile-time constants: edgepaint holds the units at the
@@ -10,7 +10,7 @@
 //! is not disturbed): a full build the first time, the `rtl` crate and what uses it after.
 
 use anyhow::{bail, Context, Result};
-use rtl::config::Build;
+use fx::Build;
 use std::path::Path;
 use std::process::Command;
 

@@ -107,13 +107,13 @@ pub fn run(args: Args) -> Result<()> {
         }
         Some(method) => {
             let f = args.fixed.formats(list.width, list.height)?;
-            let mopts = model::raster::Options {
+            let mopts = model::render::Options {
                 method,
                 cull: if cull_back { model::cull_sort::Cull::Back } else { model::cull_sort::Cull::None },
                 analysis: args.analysis,
                 background: loaded.background.map(|c| c.round().clamp(0.0, 255.0) as u8),
             };
-            let r = model::raster::render(list, &f, &mopts, &mut progress);
+            let r = model::render::render(list, &f, &mopts, &mut progress);
             for p in r.problems.iter().take(5) {
                 eprintln!("warning: triangle {} not drawn: {}", p.triangle, problem(&p.why));
             }
@@ -121,8 +121,8 @@ pub fn run(args: Args) -> Result<()> {
                 eprintln!("warning: ... {} triangles in all not drawn", r.problems.len());
             }
             let cycles = match method {
-                model::raster::Method::Scanline => model::cycles::scanline_frame(&r.work, &Default::default()),
-                model::raster::Method::Vector { .. } => model::cycles::vector_frame(&r.work),
+                model::render::Method::Scanline => model::cycles::scanline_frame(&r.work, &Default::default()),
+                model::render::Method::Vector { .. } => model::cycles::vector_frame(&r.work),
             };
             let st = &r.stats;
             let summary = format!(
@@ -187,14 +187,14 @@ pub fn depth16(d: u32, frac: u32) -> u16 {
 }
 
 /// Why a triangle was not drawn, in words.
-fn problem(why: &model::raster::Dropped) -> String {
+fn problem(why: &model::render::Dropped) -> String {
     match why {
-        model::raster::Dropped::Input(e) => e.to_string(),
-        model::raster::Dropped::Overflow(q) => {
+        model::render::Dropped::Input(e) => e.to_string(),
+        model::render::Dropped::Overflow(q) => {
             let names: Vec<&str> = q.iter().map(|q| q.name()).collect();
             format!("harmful overflow in {}", names.join(", "))
         }
-        model::raster::Dropped::Rejected(r) => format!("{r:?}"),
+        model::render::Dropped::Rejected(r) => format!("{r:?}"),
     }
 }
 

@@ -1,7 +1,7 @@
 //! `render --engine rtl`: a whole frame through the RTL of the scanline pipeline
 //! (`raster_top`) under Verilator, with the depth and colour buffers in Rust
 //! (`sim::frame`). The `raster_top` of the screen's size class draws it
-//! (`model::raster_top::class_for`: class 10 up to 1024 x 1024, 11 and 12 above) at the
+//! (`fx::Build::for_screen`: class 10 up to 1024 x 1024, 11 and 12 above) at the
 //! formats asked for (`--formats`; formats edgepaint is not built at are compiled first,
 //! `super::rebuild`). The Verilated model is built the first time, cached under
 //! `target/verilator/` (Verilator from `scripts/setup-tools.sh`). The image is checked against the scanline model's, bit for
@@ -10,8 +10,8 @@
 use super::engine::FixedArgs;
 use super::render::{depth16, Image};
 use anyhow::{anyhow, ensure, Result};
+use fx::Build;
 use model::cull_sort::Cull;
-use rtl::config::Build;
 use scene::Trilist;
 use sim::frame::{self, Frame, MemoryModel, Report};
 use sim::memory::ReadDuringWrite;
@@ -27,7 +27,7 @@ pub fn render(
     analysis: bool,
 ) -> Result<Option<(Image, (String, u64))>> {
     ensure!(!analysis, "--analysis checks the models' arithmetic; it does not apply to --engine rtl");
-    let class = model::raster_top::class_for(list.width, list.height);
+    let class = Build::for_screen(list.width, list.height).class;
     let formats = fixed.formats(list.width, list.height)?;
     let build = Build { class, formats };
     if build != Build::of_class(class) {
@@ -38,8 +38,8 @@ pub fn render(
     }
     let cull = if cull_back { Cull::Back } else { Cull::None };
     let background = background.map(|c| c.round().clamp(0.0, 255.0) as u8);
-    let prep = model::raster_top::frame_with(class, &formats, list, cull, background)
-        .map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let prep =
+        model::raster_top::raster_top(&build, list, cull, background).map_err(|e| anyhow!("--engine rtl: {e}"))?;
     for (i, e) in prep.skipped.iter().take(5) {
         eprintln!("warning: triangle {i} not drawn: {e}");
     }
@@ -62,7 +62,7 @@ pub fn render(
          {} cycles (model::cycles: {}), {:.3} pixels per clock; per triangle: latency to its first pixel \
          {latency} cycles (min/median/max), {:.1} cycles between triangles (max {}); {:.0} cycles/s simulated; \
          image equal to the scanline model's",
-        prep.class,
+        build.class,
         if build == Build::of_class(class) { "" } else { ", formats of --formats" },
         list.triangles.len(),
         r.drawn,

@@ -322,6 +322,34 @@ impl Formats {
     }
 }
 
+/// What a copy of the scanline RTL is built at, and what `model::raster_top` draws at: a
+/// size class (screens up to 2^class x 2^class) and the formats of every quantity.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Build {
+    pub class: u32,
+    pub formats: Formats,
+}
+
+impl Build {
+    /// Size class `class` at the default formats for it.
+    pub const fn of_class(class: u32) -> Build {
+        Build { class, formats: Formats::for_n(class) }
+    }
+
+    /// The smallest class that draws a `width` x `height` screen ([`resolution_bits`], at
+    /// least [`RTL_CLASS`]) at its default formats.
+    pub const fn for_screen(width: u32, height: u32) -> Build {
+        Build::of_class(resolution_bits(width, height))
+    }
+}
+
+/// The default build: size class [`RTL_CLASS`] at its default formats.
+impl Default for Build {
+    fn default() -> Build {
+        Build::of_class(RTL_CLASS)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -22,7 +22,7 @@
 //! * `vector`: the per-triangle cycles of `vector::vector` (lanes per cycle),
 //!   fed by `cull_sort`; triangles do not overlap in the vector unit.
 
-use crate::raster::Work;
+use crate::render::Work;
 use crate::{cull_sort, edge_walk, pixel_out, span};
 
 /// Hardware parameters the cycle model depends on.
@@ -166,7 +166,7 @@ pub fn vector_frame(work: &[Work]) -> FrameCycles {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::raster::SpanWork;
+    use crate::render::SpanWork;
 
     #[test]
     fn cycles_setup_latency_counts_its_schedule() {

@@ -27,20 +27,20 @@ pub const LATENCY: u32 = 5;
 
 /// One division: signed dividend, positive divisor.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct DivIn {
+pub struct DividerIn {
     pub n: i128,
     pub d: i128,
 }
 
 /// Its result: floor quotient and the remainder in [0, d).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct DivOut {
+pub struct DividerOut {
     pub q: i128,
     pub r: i128,
 }
 
 /// Floor division with remainder, as the hardware computes it.
-pub fn divide(i: DivIn, f: &Formats) -> DivOut {
+pub fn divider(i: DividerIn, f: &Formats) -> DividerOut {
     assert!(i.d > 0, "divider: divisor {} must be positive (setup issues 0/1 for unused divisions)", i.d);
     let q = i.n.div_euclid(i.d);
     let dv = f.derived();
@@ -54,7 +54,7 @@ pub fn divide(i: DivIn, f: &Formats) -> DivOut {
         dv.div_divisor_bits
     );
     debug_assert!(fx::fits_s(q, dv.div_quotient_bits), "quotient {q} exceeds {} bits", dv.div_quotient_bits);
-    DivOut { q, r: i.n.rem_euclid(i.d) }
+    DividerOut { q, r: i.n.rem_euclid(i.d) }
 }
 
 /// A reciprocal `1/a ~= mant * 2^-(ooa.frac + exp)` with `mant` in
@@ -68,17 +68,17 @@ pub struct Recip {
 
 /// The divider's operands for `1/a` (a >= 1): `a` normalised so its top bit
 /// sits at bit `area_bits - 2`, divided into `2^(area_bits - 2 + ooa.frac)`.
-pub fn recip_operands(a: i128, f: &Formats) -> (DivIn, u32) {
+pub fn recip_operands(a: i128, f: &Formats) -> (DividerIn, u32) {
     assert!(a >= 1, "reciprocal of {a}");
     let top = f.derived().area_bits - 2;
     let exp = 127 - a.leading_zeros();
-    (DivIn { n: 1i128 << (top + f.ooa.frac), d: a << (top - exp) }, exp)
+    (DividerIn { n: 1i128 << (top + f.ooa.frac), d: a << (top - exp) }, exp)
 }
 
 /// `1/a` through the divider.
 pub fn reciprocal(a: i128, f: &Formats) -> Recip {
     let (op, exp) = recip_operands(a, f);
-    Recip { mant: divide(op, f).q, exp }
+    Recip { mant: divider(op, f).q, exp }
 }
 
 #[cfg(test)]
@@ -93,7 +93,7 @@ mod tests {
         let f = Formats::for_resolution(64, 64);
         for n in -128i128..128 {
             for d in 1i128..128 {
-                let o = divide(DivIn { n, d }, &f);
+                let o = divider(DividerIn { n, d }, &f);
                 // Independent oracle: q*d <= n < (q+1)*d.
                 assert!(o.q * d <= n && n < (o.q + 1) * d, "{n}/{d} gave q {}", o.q);
                 assert_eq!(o.r, n - o.q * d);
@@ -113,7 +113,7 @@ mod tests {
             if !fx::fits_s(n, dv.div_dividend_bits) {
                 continue;
             }
-            let o = divide(DivIn { n, d }, &f);
+            let o = divider(DividerIn { n, d }, &f);
             assert_eq!((o.q, o.r), (q, n - q * d), "{n}/{d}");
         }
     }

@@ -19,7 +19,7 @@
 
 use crate::ctx::Ctx;
 use crate::cull_sort::Clip;
-use crate::triangle_setup::{Attrs, Edge, SetupOut, Walk};
+use crate::triangle_setup::{Attrs, Edge, TriangleSetupOut, Walk};
 
 /// Cycles from a setup result to its first span command (003 Table 1).
 pub const LATENCY: u32 = 2;
@@ -91,7 +91,7 @@ impl Stepper {
 }
 
 /// Walks one set-up triangle.
-pub fn edge_walk(s: &SetupOut, clip: Clip, ctx: &mut Ctx) -> EdgeWalkOut {
+pub fn edge_walk(s: &TriangleSetupOut, clip: Clip, ctx: &mut Ctx) -> EdgeWalkOut {
     let h = clip.height as i32;
     let mut long = Stepper(s.maj);
     let mut short = Stepper(s.short[0]);

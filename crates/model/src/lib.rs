@@ -6,7 +6,7 @@
 //!   [`edge_walk`] (001, 003), [`span`] (001, 003), [`pixel_out`]: the scanline pipeline;
 //! * [`vector`] (004): per-pixel barycentric rasterization;
 //! * [`se`] (000): the shading engine, cycle-exact, and the engine array drawing the scanline's spans;
-//! * [`raster`]: whole frames through either, with analysis mode; [`cycles`]: the cycle model;
+//! * [`render`]: whole frames through either, with analysis mode; [`cycles`]: the cycle model;
 //! * [`raster_top`]: a frame as the scanline pipeline's RTL takes and writes it;
 //! * [`input`]: float vertices to hardware words; [`ctx`]: formats and overflow records.
 
@@ -18,8 +18,8 @@ pub mod edge_walk;
 pub mod ept;
 pub mod input;
 pub mod pixel_out;
-pub mod raster;
 pub mod raster_top;
+pub mod render;
 pub mod se;
 pub mod span;
 pub mod triangle_setup;

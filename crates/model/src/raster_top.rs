@@ -1,39 +1,26 @@
 //! The model of `rtl::raster_top`, the whole scanline rasterizer of papers 001 and 003
 //! (`cull_sort` -> `triangle_setup` with the `divider` -> `edge_walk` -> `span` ->
-//! `pixel_out`) at the formats its RTL is built with, [`formats`]: a frame as the hardware
-//! sees it. Its triangles as the input words the hardware takes, the memory writes it makes
-//! in order, its image ([`raster::render`], `Method::Scanline`) and its cycle count
+//! `pixel_out`) at a build of its RTL (`fx::Build`: size class and formats): a frame as the
+//! hardware sees it. Its triangles as the input words the hardware takes, the memory writes it makes
+//! in order, its image ([`render::render`], `Method::Scanline`) and its cycle count
 //! ([`cycles::scanline_frame`]).
 
 use crate::cull_sort::{cull_sort, z_max, Clip, Cull, Sorted};
 use crate::cycles::{self, Timing};
 use crate::input::{to_fixed, InputError, Vtx};
 use crate::pixel_out::Framebuffer;
-use crate::raster::{self, triangle, Method, Options, Render};
+use crate::render::{self, triangle, Method, Options, Render};
 use crate::span::Pixel;
-use fx::{resolution_bits, Formats, RTL_CLASS};
+use fx::{Build, RTL_CLASS};
 use scene::Trilist;
 
 /// The largest size class `raster_top` is built for (`rtl::CLASSES`: 10 to 12).
 pub const MAX_CLASS: u32 = 12;
 
-/// The formats `raster_top` of size class `class` is built with: the defaults
-/// `Formats::for_n(class)` (screens up to 2^class x 2^class).
-pub const fn formats(class: u32) -> Formats {
-    Formats::for_n(class)
-}
-
-/// The size class that draws a `width` x `height` screen: the one the model's default
-/// formats are for (`fx::resolution_bits`, at least [`RTL_CLASS`]).
-pub const fn class_for(width: u32, height: u32) -> u32 {
-    resolution_bits(width, height)
-}
-
 /// One frame through `raster_top`, as the model draws it.
-pub struct Frame {
-    /// The size class of the `raster_top` drawing it, and the formats it is built at.
-    pub class: u32,
-    pub formats: Formats,
+pub struct RasterTopOut {
+    /// The size class of the `raster_top` drawing it and the formats it is built at.
+    pub build: Build,
     /// The triangles sent, as input words (`model::input::to_fixed`), in input order.
     pub triangles: Vec<[Vtx; 3]>,
     /// Triangles left out because their vertices do not fit the input formats, by index.
@@ -52,7 +39,7 @@ pub struct Frame {
     pub writes: Vec<Pixel>,
 }
 
-impl Frame {
+impl RasterTopOut {
     /// The frame's cycles, from the first triangle offered to `done`
     /// ([`cycles::scanline_frame`], triangles back to back, memory always ready).
     pub fn cycles(&self) -> u64 {
@@ -65,23 +52,13 @@ impl Frame {
     }
 }
 
-/// `list` drawn with `cull` on `background` by the `raster_top` of the screen's size class
-/// ([`class_for`]); an error for a screen no class draws.
-pub fn frame(list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<Frame, String> {
-    frame_at(class_for(list.width, list.height), list, cull, background)
-}
-
-/// `list` drawn with `cull` on `background` by the `raster_top` of size class `class` (which
-/// may be larger than the screen needs); an error for a class not built or a screen larger
-/// than 2^class.
-pub fn frame_at(class: u32, list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<Frame, String> {
-    frame_with(class, &formats(class), list, cull, background)
-}
-
-/// `list` drawn with `cull` on `background` by the `raster_top` of size class `class` built
-/// at formats `f` (`rtl::custom`); an error as [`frame_at`]'s, or for formats that do not
-/// work on a 2^class screen.
-pub fn frame_with(class: u32, f: &Formats, list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<Frame, String> {
+/// `list` drawn with `cull` on `background` by the `raster_top` of `build`: a size class
+/// (which may be larger than the screen needs; `Build::for_screen` gives the smallest) and
+/// the formats it is built at (the class's defaults, or those of `rtl::custom`); an error
+/// for a class not built, a screen larger than 2^class, or formats that do not work on a
+/// 2^class screen.
+pub fn raster_top(build: &Build, list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<RasterTopOut, String> {
+    let Build { class, formats: f } = *build;
     if !(RTL_CLASS..=MAX_CLASS).contains(&class) {
         let side = 1u64 << class.min(63);
         return Err(format!(
@@ -100,7 +77,6 @@ pub fn frame_with(class: u32, f: &Formats, list: &Trilist, cull: Cull, backgroun
         ));
     }
     f.check(side, side)?;
-    let f = *f;
     let opts = Options { method: Method::Scanline, cull, analysis: false, background };
     let clip = Clip { width: list.width, height: list.height };
     let (mut triangles, mut skipped, mut sorted) = (Vec::new(), Vec::new(), Vec::new());
@@ -119,9 +95,9 @@ pub fn frame_with(class: u32, f: &Formats, list: &Trilist, cull: Cull, backgroun
             Err(e) => skipped.push((i, e)),
         }
     }
-    let render = raster::render(list, &f, &opts, &mut |_| {});
+    let render = render::render(list, &f, &opts, &mut |_| {});
     debug_assert!(render.fb == fb, "the same pixels, through the same depth test");
-    Ok(Frame { class, formats: f, triangles, skipped, sorted, render, fragments, pixels, writes })
+    Ok(RasterTopOut { build: *build, triangles, skipped, sorted, render, fragments, pixels, writes })
 }
 
 #[cfg(test)]
@@ -134,20 +110,20 @@ mod tests {
     }
 
     #[test]
-    fn raster_top_frame_writes_in_order_and_counts_fragments() {
+    fn raster_top_writes_in_order_and_counts_fragments() {
         // Two overlapping triangles, the second nearer: every pixel of the overlap is
         // written twice, the first triangle's pixels first.
         let far = tri([(1.0, 1.0, 0.6), (15.0, 1.0, 0.6), (1.0, 15.0, 0.6)]);
         let near = tri([(2.0, 2.0, 0.2), (14.0, 2.0, 0.2), (2.0, 14.0, 0.2)]);
         let list = Trilist { width: 16, height: 16, triangles: vec![far, near] };
-        let f = frame(&list, Cull::None, [0; 3]).expect("a 16 x 16 frame");
+        let f = raster_top(&Build::for_screen(16, 16), &list, Cull::None, [0; 3]).expect("a 16 x 16 frame");
         assert_eq!(f.triangles.len(), 2);
         assert!(f.skipped.is_empty());
         assert_eq!(f.fragments.iter().sum::<usize>() as u64, f.render.stats.fragments);
         assert_eq!(f.writes.len() as u64, f.render.stats.pixels_written);
         // All of the near triangle's pixels pass the depth test; they come last.
         assert_eq!(f.writes.len(), f.fragments[0] + f.fragments[1]);
-        let mut replay = Framebuffer::new(16, 16, z_max(&formats(RTL_CLASS)) as u32, [0; 3]);
+        let mut replay = Framebuffer::new(16, 16, z_max(&fx::Formats::for_n(RTL_CLASS)) as u32, [0; 3]);
         for w in &f.writes {
             assert!(replay.pixel_out(w, 0), "each write passes the depth test in order: {w:?}");
         }
@@ -160,20 +136,24 @@ mod tests {
     }
 
     #[test]
-    fn raster_top_frame_picks_the_size_class_and_rejects_larger_screens() {
+    fn raster_top_picks_the_size_class_and_rejects_larger_screens() {
         let screen = |width, height| Trilist { width, height, triangles: vec![] };
-        assert_eq!([class_for(320, 240), class_for(1025, 16), class_for(16, 4096)], [10, 11, 12]);
-        let err = frame(&screen(4097, 16), Cull::None, [0; 3]).err().expect("a 4097-pixel-wide screen is refused");
+        assert_eq!([(320, 240), (1025, 16), (16, 4096)].map(|(w, h)| Build::for_screen(w, h).class), [10, 11, 12]);
+        let err = raster_top(&Build::for_screen(4097, 16), &screen(4097, 16), Cull::None, [0; 3])
+            .err()
+            .expect("a 4097-pixel-wide screen is refused");
         assert!(err.contains("classes 10 to 12 (screens up to 4096x4096)"), "{err}");
-        let err = frame_at(10, &screen(1025, 16), Cull::None, [0; 3]).err().expect("too wide for class 10");
+        let err = raster_top(&Build::of_class(10), &screen(1025, 16), Cull::None, [0; 3])
+            .err()
+            .expect("too wide for class 10");
         assert!(err.contains("up to 1024x1024, not 1025x16"), "{err}");
-        assert!(frame_at(9, &screen(16, 16), Cull::None, [0; 3]).is_err(), "class 9 is not built");
-        assert!(frame_at(12, &screen(1025, 16), Cull::None, [0; 3]).is_ok());
+        assert!(raster_top(&Build::of_class(9), &screen(16, 16), Cull::None, [0; 3]).is_err(), "class 9 is not built");
+        assert!(raster_top(&Build::of_class(12), &screen(1025, 16), Cull::None, [0; 3]).is_ok());
         // x beyond the S11.4 vertex format's range: skipped, the other one drawn.
         let huge = tri([(5000.0, 1.0, 0.5), (1.0, 1.0, 0.5), (1.0, 9.0, 0.5)]);
         let ok = tri([(1.0, 1.0, 0.5), (9.0, 1.0, 0.5), (1.0, 9.0, 0.5)]);
-        let f = frame(&Trilist { width: 16, height: 16, triangles: vec![huge, ok] }, Cull::None, [0; 3])
-            .expect("a 16 x 16 frame");
+        let list = Trilist { width: 16, height: 16, triangles: vec![huge, ok] };
+        let f = raster_top(&Build::for_screen(16, 16), &list, Cull::None, [0; 3]).expect("a 16 x 16 frame");
         assert_eq!((f.triangles.len(), f.skipped.len(), f.skipped[0].0), (1, 1, 0));
         assert!(!f.writes.is_empty());
     }

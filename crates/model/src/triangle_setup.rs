@@ -30,7 +30,7 @@
 
 use crate::ctx::{Ctx, Q};
 use crate::cull_sort::Sorted;
-use crate::divider::{divide, recip_operands, DivIn, Recip};
+use crate::divider::{divider, recip_operands, DividerIn, Recip};
 use crate::input::Vtx;
 
 /// z and R, G, B, as raw values in the formats the context names.
@@ -84,7 +84,7 @@ pub struct Edge {
 
 /// What setup hands the edge walker.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct SetupOut {
+pub struct TriangleSetupOut {
     pub walk: Walk,
     /// Whether e_maj is the left side.
     pub maj_left: bool,
@@ -94,7 +94,7 @@ pub struct SetupOut {
     /// d/dx of z (`dz`) and R, G, B (`dc`): the span's per-pixel steps.
     pub ddx: Attrs,
     /// The seven divisions issued to the divider, in issue order.
-    pub divisions: [DivIn; 7],
+    pub divisions: [DividerIn; 7],
 }
 
 /// `ceil((v - half)/px)` for a subpixel coordinate: the first scanline (or
@@ -119,7 +119,7 @@ fn ooa_times(delta: i128, sign: i128, r: Recip, ctx: &mut Ctx) -> i128 {
 
 /// Runs setup on a sorted triangle. `height` is the screen height, which the
 /// walk direction depends on.
-pub fn triangle_setup(t: &Sorted, ctx: &mut Ctx) -> SetupOut {
+pub fn triangle_setup(t: &Sorted, ctx: &mut Ctx) -> TriangleSetupOut {
     let f = ctx.f;
     let s = f.xy.frac;
     let px = 1i128 << s;
@@ -131,7 +131,7 @@ pub fn triangle_setup(t: &Sorted, ctx: &mut Ctx) -> SetupOut {
     let area2 = maj.0 * bot.1 - bot.0 * maj.1;
     debug_assert!(area2 != 0, "cull_sort rejects zero-area triangles");
     let (recip_in, exp) = recip_operands(area2.abs(), &f);
-    let ooa = Recip { mant: divide(recip_in, &f).q, exp };
+    let ooa = Recip { mant: divider(recip_in, &f).q, exp };
     let sign = area2.signum();
     // The four products of eq. (2) that every attribute shares.
     let p_maj_dx = ooa_times(maj.0, sign, ooa, ctx);
@@ -180,7 +180,7 @@ pub fn triangle_setup(t: &Sorted, ctx: &mut Ctx) -> SetupOut {
     for (k, &(a, b, j, count, left)) in edges.iter().enumerate() {
         let (dx, dy) = (b.x - a.x, b.y - a.y);
         // Unused divisions are issued as 0/1 (see `divider`).
-        let step_in = if count >= 2 { DivIn { n: dx, d: dy } } else { DivIn { n: 0, d: 1 } };
+        let step_in = if count >= 2 { DividerIn { n: dx, d: dy } } else { DividerIn { n: 0, d: 1 } };
         // Start from the end the walk begins at: a walking down, b walking up,
         // so that |t| < 2^s and the quotient stays small.
         let base = if walk == Walk::Down { a } else { b };
@@ -188,11 +188,12 @@ pub fn triangle_setup(t: &Sorted, ctx: &mut Ctx) -> SetupOut {
         let t_off = centre_y - base.y;
         let xb = base.x - px / 2;
         let (xi, xf) = (xb >> s, xb & (px - 1));
-        let start_in = if count >= 1 { DivIn { n: xf * dy + dx * t_off, d: px * dy } } else { DivIn { n: 0, d: 1 } };
+        let start_in =
+            if count >= 1 { DividerIn { n: xf * dy + dx * t_off, d: px * dy } } else { DividerIn { n: 0, d: 1 } };
         divisions[1 + 2 * k] = start_in;
         divisions[2 + 2 * k] = step_in;
-        let st = divide(start_in, &f);
-        let sp = divide(step_in, &f);
+        let st = divider(start_in, &f);
+        let sp = divider(step_in, &f);
         let d = px * dy;
         let x = xi + st.q + (st.r > 0) as i128;
         let r = if st.r > 0 { d - st.r } else { 0 };
@@ -221,7 +222,7 @@ pub fn triangle_setup(t: &Sorted, ctx: &mut Ctx) -> SetupOut {
         };
         out[k] = Edge { j, count, x, r, q: sp.q, rho: px * sp.r, d, at, inc0, inc1 };
     }
-    SetupOut { walk, maj_left, maj: out[0], short: [out[1], out[2]], ddx, divisions }
+    TriangleSetupOut { walk, maj_left, maj: out[0], short: [out[1], out[2]], ddx, divisions }
 }
 
 #[cfg(test)]
@@ -275,8 +276,8 @@ mod tests {
         let o = triangle_setup(&sorted, &mut Ctx::new(f));
         assert_eq!(o.divisions.len(), 7);
         assert_eq!(o.short[0].count, 0);
-        assert_eq!(o.divisions[3], DivIn { n: 0, d: 1 });
-        assert_eq!(o.divisions[4], DivIn { n: 0, d: 1 });
+        assert_eq!(o.divisions[3], DividerIn { n: 0, d: 1 });
+        assert_eq!(o.divisions[4], DividerIn { n: 0, d: 1 });
         assert!(o.divisions.iter().all(|d| d.d > 0));
     }
 }

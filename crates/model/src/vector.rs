@@ -20,7 +20,7 @@
 
 use crate::ctx::{Ctx, Q};
 use crate::cull_sort::{z_max, Clip, Sorted};
-use crate::divider::{divide, recip_operands};
+use crate::divider::{divider, recip_operands};
 use crate::input::Vtx;
 use crate::span::{color_of, depth_of, Pixel};
 
@@ -43,7 +43,7 @@ fn owns_ties(a: &Vtx, b: &Vtx) -> bool {
 /// `num / den` for two raw values of one format, to `bary` (via `1/den` from the divider).
 fn ratio(num: i128, den: i128, ctx: &mut Ctx) -> i128 {
     let (op, exp) = recip_operands(den, &ctx.f);
-    let mant = divide(op, &ctx.f).q;
+    let mant = divider(op, &ctx.f).q;
     let shift = ctx.f.bary.frac as i64 - (ctx.f.ooa.frac + exp) as i64;
     if shift >= 0 {
         ctx.put(Q::Bary, (num * mant) << shift)

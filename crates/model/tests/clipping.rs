@@ -12,7 +12,7 @@ use model::ctx::Ctx;
 use model::cull_sort::{outcode, Clip, Cull, Reject};
 use model::edge_walk::{edge_walk, SpanCmd};
 use model::input::to_fixed;
-use model::raster::{render, triangle, Dropped, Method, Options};
+use model::render::{render, triangle, Dropped, Method, Options};
 use model::span::span;
 use model::triangle_setup::{triangle_setup, Attrs, Walk};
 use scene::{Triangle, Trilist, Vertex};

@@ -4,7 +4,7 @@
 use fx::{Fmt, Formats};
 use model::ctx::Q;
 use model::cull_sort::{Clip, Cull};
-use model::raster::{render, triangle, Dropped, Method, Options};
+use model::render::{render, triangle, Dropped, Method, Options};
 use scene::{Triangle, Trilist, Vertex, MAX_RESOLUTION};
 
 const METHODS: [Method; 2] = [Method::Scanline, Method::Vector { lanes: 16, perspective: true }];

@@ -6,7 +6,7 @@ use model::ctx::Ctx;
 use model::cull_sort::{cull_sort, z_max, Clip, Cull};
 use model::edge_walk::edge_walk;
 use model::input::to_fixed;
-use model::raster::{render, Method, Options};
+use model::render::{render, Method, Options};
 use model::se::array::{self, command};
 use model::se::{interp::interp, mul::endpoint, SeParams};
 use model::span::span;

@@ -3,7 +3,7 @@
 
 use fx::Formats;
 use model::cull_sort::{Clip, Cull};
-use model::raster::{triangle, Method, Options};
+use model::render::{triangle, Method, Options};
 use scene::stress::{fan, random_mesh, split_rectangle};
 use scene::Triangle;
 

@@ -14,27 +14,6 @@
 
 use fx::{Fmt, Formats, Overflow, Rounding};
 
-/// A build of the scanline units: a size class and the formats of every quantity.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Build {
-    pub class: u32,
-    pub formats: Formats,
-}
-
-impl Build {
-    /// Size class `class` at the model's default formats for it.
-    pub const fn of_class(class: u32) -> Build {
-        Build { class, formats: Formats::for_n(class) }
-    }
-}
-
-/// The default build: size class `fx::RTL_CLASS` at its default formats (`crate::n10`).
-impl Default for Build {
-    fn default() -> Build {
-        Build::of_class(fx::RTL_CLASS)
-    }
-}
-
 /// The size classes a build may have (the models' `model::raster_top` classes).
 pub const CLASS_MIN: u32 = 10;
 pub const CLASS_MAX: u32 = 12;

@@ -5,7 +5,7 @@
 //! It is a radix-2 restoring divider: `QM` quotient bits, one per step, the steps spread
 //! over `latency` pipeline stages (stage `s` does steps `s*QM/L .. (s+1)*QM/L`, rounded
 //! down). Where 001's Taylor-series divider is off by up to 1 LSB, this one is exact, as
-//! `model::divider::divide` is: `q = floor(n / d)`, `r = n - q*d` in `[0, d)`.
+//! `model::divider::divider` is: `q = floor(n / d)`, `r = n - q*d` in `[0, d)`.
 //!
 //! ```text
 //!  n (signed), d > 0
@@ -20,7 +20,7 @@
 //!  q = neg ? !x : x (Q = QM + 1 bits),  r = neg ? d - 1 - p : p
 //! ```
 //!
-//! Contract (`model::divider::divide` asserts it): `d` in `[1, 2^D)`, `n` an `N`-bit
+//! Contract (`model::divider::divider` asserts it): `d` in `[1, 2^D)`, `n` an `N`-bit
 //! two's complement number, and the quotient fits `Q` bits (`m < d * 2^QM`).
 //!
 //! Stream: `inp_valid`/`inp_ready` in, `out_valid`/`out_ready` out; a division taken in

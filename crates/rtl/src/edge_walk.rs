@@ -1,7 +1,7 @@
 //! `edge_walk`: the edge walk of paper 001 (Woo 2004, §II.2.라) with the Y clipping of
 //! paper 003 (Lee 2008, §II.1.다.(2), Fig. 5), one scanline per cycle.
 //!
-//! It takes one set-up triangle (`model::triangle_setup::SetupOut` without `divisions`,
+//! It takes one set-up triangle (`model::triangle_setup::TriangleSetupOut` without `divisions`,
 //! flattened into the `inp_*` ports, nested fields joined by `_`) and walks it with two
 //! exact edge steppers ([`Stepper`]): `maj` on the long edge and `cur` on the short edge
 //! being walked, while the other short edge waits in the `pend_*` registers until the walk
@@ -219,7 +219,7 @@ impl Logic for Stepper {
 }
 
 /// The edge walk unit: see the module documentation. Ports `inp_<field>` carry
-/// `model::triangle_setup::SetupOut` (`inp_walk` high for `Walk::Up`; `Edge` fields `j`,
+/// `model::triangle_setup::TriangleSetupOut` (`inp_walk` high for `Walk::Up`; `Edge` fields `j`,
 /// `count`, `x`: `PIXEL` bits two's complement; `r`, `rho`, `d`: `EDGE_D` bits; `q`:
 /// `EDGE_Q` bits; `at`: `z_acc`/`c_acc`; `inc0`, `inc1`, `ddx`: `dz`/`dc`), ports `out_<field>`
 /// carry `model::edge_walk::SpanCmd` (`y` on screen: `SCREEN` bits).

@@ -57,15 +57,15 @@ pub const CLASSES: [u32; 3] = [n10::CLASS, n11::CLASS, n12::CLASS];
 
 /// Every build of the scanline units: the size classes at their default formats, then
 /// `custom`.
-pub const BUILDS: [config::Build; 4] = [
-    config::Build { class: n10::CLASS, formats: n10::FORMATS },
-    config::Build { class: n11::CLASS, formats: n11::FORMATS },
-    config::Build { class: n12::CLASS, formats: n12::FORMATS },
-    config::Build { class: custom::CLASS, formats: custom::FORMATS },
+pub const BUILDS: [fx::Build; 4] = [
+    fx::Build { class: n10::CLASS, formats: n10::FORMATS },
+    fx::Build { class: n11::CLASS, formats: n11::FORMATS },
+    fx::Build { class: n12::CLASS, formats: n12::FORMATS },
+    fx::Build { class: custom::CLASS, formats: custom::FORMATS },
 ];
 
 /// Whether edgepaint holds a copy of the scanline units built at `build`.
-pub fn built(build: &config::Build) -> bool {
+pub fn built(build: &fx::Build) -> bool {
     BUILDS.contains(build)
 }
 
@@ -99,7 +99,7 @@ fn emit_at_build(
     let Some(class) = u32::try_from(n).ok().filter(|c| CLASSES.contains(c) || *c == custom::CLASS) else {
         return Err(format!("{unit}: N = {n} is not supported: size classes {CLASSES:?} (screens up to 2^N x 2^N)"));
     };
-    let build = config::Build { class, formats: formats.copied().unwrap_or(Formats::for_n(class)) };
+    let build = fx::Build { class, formats: formats.copied().unwrap_or(Formats::for_n(class)) };
     let i = BUILDS.iter().position(|b| *b == build).ok_or_else(|| {
         format!(
             "{unit}: edgepaint is not built at these formats for size class {class} (its builds: the defaults of \

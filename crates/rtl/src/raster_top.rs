@@ -10,7 +10,7 @@
 //! Every link is a valid/ready stream (a transfer on a rising edge with valid and ready
 //! high) and each unit holds its work while the next one is not ready, so a stalled memory
 //! (`mem_ready` low) stops the whole pipeline without losing anything. The links carry the
-//! model's transactions field for field: `Sorted`, `SetupOut`, `SpanCmd`, `Pixel`.
+//! model's transactions field for field: `Sorted`, `TriangleSetupOut`, `SpanCmd`, `Pixel`.
 //!
 //! **A frame.** Clear the buffers (depth to z_max, colour to the background), set `width`,
 //! `height` (1 to 2^N) and `cull_back`, send the triangles (the model's `Vtx`
@@ -21,7 +21,7 @@
 //!
 //! **Parameters.** `N`, the size class (10, 11 or 12; `crate::CLASSES`): screens up to
 //! 2^N x 2^N and the number formats `Formats::for_n(N)` (`widths`), every port and
-//! register as wide as that class needs; `model::raster_top::class_for` picks the class of
+//! register as wide as that class needs; `fx::Build::for_screen` picks the class of
 //! a screen as the model's default formats do. Resolution within the class: the `width`
 //! and `height` ports. `K` and `L` choose setup's multipliers and the divider's stages
 //! (`triangle_setup`). The span FIFO holds `span_fifo::SPAN_FIFO` commands, as
@@ -39,7 +39,7 @@
 //! first command 2 cycles after it takes a triangle, then a scanline per cycle; the span
 //! FIFO passes a command straight through when empty; span's first pixel 1 cycle after it
 //! takes a command, then a pixel per cycle; the write 2 cycles after the pixel.
-//! Model: `model::raster::render` with `Method::Scanline`. Emitted: `hdl-out/raster_top.v`.
+//! Model: `model::render::render` with `Method::Scanline`. Emitted: `hdl-out/raster_top.v`.
 
 use super::cull_sort::{CullSort, COLOR, INV_W, OUTCODE, XY, Z};
 use super::edge_walk::EdgeWalk;
@@ -175,7 +175,7 @@ impl Logic for RasterCore {
         self.triangle_setup.inp_v2_c2.next = self.inp_v2_c2.val();
 
 
-        // triangle_setup -> edge_walk: `SetupOut`, one to one.
+        // triangle_setup -> edge_walk: `TriangleSetupOut`, one to one.
         self.edge_walk.height.next = self.height.val();
         self.edge_walk.inp_valid.next = self.triangle_setup.out_valid.val();
         self.triangle_setup.out_ready.next = self.edge_walk.inp_ready.val();

@@ -2,7 +2,7 @@
 //! §II.2.나-라, eq. 2, Table 3), bit-exact to `model::triangle_setup`.
 //!
 //! It takes one sorted triangle from `cull_sort` (`inp_v<i>_*`, `inp_crosses`) and hands
-//! the edge walk `model::triangle_setup::SetupOut` without `divisions`, flattened into
+//! the edge walk `model::triangle_setup::TriangleSetupOut` without `divisions`, flattened into
 //! ports `out_<field>`, nested fields joined by `_` (`out_walk` high for `Walk::Up`,
 //! `out_maj_left`, `out_maj_x`, `out_short0_inc1_c2`, `out_ddx_z`, ...), each field the
 //! low bits of the model's value at the widths of `crate::widths` (`j`, `count`, `x`:
@@ -12,7 +12,7 @@
 //!
 //! **Datapath.** `K` multipliers ([`Mul`], `MUL_A` x `MUL_B` bits) reused over 64
 //! products, and the shared divider ([`crate::divider::Divider`]), into which setup
-//! issues its seven divisions one per cycle in the model's order (`SetupOut::divisions`:
+//! issues its seven divisions one per cycle in the model's order (`TriangleSetupOut::divisions`:
 //! 1/area, then per edge the start and the step of the exact edge walker). Each product
 //! is added into its destination register in the cycle it comes out; the model's wraps
 //! (`ctx.put`) are the registers' widths, its floor shifts bit slices:
@@ -207,7 +207,7 @@ pub struct TriangleSetup {
     /// The result is valid (held until `out_ready`).
     pub out_valid: Signal<Out, Bit>,
     pub out_ready: Signal<In, Bit>,
-    /// `SetupOut::walk`: high for `Walk::Up`.
+    /// `TriangleSetupOut::walk`: high for `Walk::Up`.
     pub out_walk: Signal<Out, Bit>,
     pub out_maj_left: Signal<Out, Bit>,
     pub out_maj_j: Signal<Out, Bits<PIXEL>>,
@@ -315,7 +315,7 @@ pub struct TriangleSetup {
     up: Signal<Local, Bit>,
     /// e_maj is the left side (twice the area < 0).
     maj_left: Signal<Local, Bit>,
-    /// Per edge in walk order (e_maj, then the short edges as `SetupOut::short`):
+    /// Per edge in walk order (e_maj, then the short edges as `TriangleSetupOut::short`):
     /// dx, dy, 2^s dy, the walk's base vertex, scanline centre, count, the start
     /// division's offsets (t, x fraction, x integer) and the tracked side's offsets.
     edx: [Signal<Local, Bits<W>>; 3],

@@ -10,10 +10,10 @@
 use crate::memory::{Memory, ReadDuringWrite, Request};
 use crate::streams::{raw, unsigned};
 use crate::{HdlSim, Outputs, Pins, PortId, Sim, Value, VlSim};
+use fx::Build;
 use model::cull_sort::{z_max, Cull};
 use model::input::Vtx;
 use model::span::Pixel;
-use rtl::config::Build;
 use rtl::raster_top::RasterTop;
 use rtl::widths::CHANNEL;
 use rust_hdl::prelude::Block;
@@ -363,11 +363,6 @@ pub fn write_vectors(path: &Path, frame: &Frame, writes: &[Pixel]) -> std::io::R
     std::fs::write(path, text)
 }
 
-/// The build that draws the model's frame `prep`.
-pub fn build_of(prep: &model::raster_top::Frame) -> Build {
-    Build { class: prep.class, formats: prep.formats }
-}
-
 /// Cycle counts of a frame, measured on the RTL.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Report {
@@ -389,7 +384,7 @@ pub struct Report {
 
 impl Report {
     /// `out` of `prep`'s frame.
-    pub fn of(out: &FrameOut, prep: &model::raster_top::Frame) -> Report {
+    pub fn of(out: &FrameOut, prep: &model::raster_top::RasterTopOut) -> Report {
         let mut latency = Vec::new();
         let mut first = 0;
         for (i, &n) in prep.fragments.iter().enumerate() {

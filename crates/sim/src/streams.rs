@@ -1,5 +1,5 @@
 //! The model's transactions as port values, and back: a set-up triangle
-//! (`model::triangle_setup::SetupOut`), a span command (`model::edge_walk::SpanCmd`) and a
+//! (`model::triangle_setup::TriangleSetupOut`), a span command (`model::edge_walk::SpanCmd`) and a
 //! pixel (`model::span::Pixel`), each flattened into ports `<prefix>_<field>` with nested
 //! fields joined by `_`, as the RTL names them (`inp_maj_at_c0`, `out_left_z`, `out_rgb2`).
 //! Widths come from `rtl::widths`, so a value that does not fit its port fails here.
@@ -7,7 +7,7 @@
 use crate::{Outputs, Value};
 use model::edge_walk::SpanCmd;
 use model::span::Pixel;
-use model::triangle_setup::{Attrs, Edge, SetupOut, Walk};
+use model::triangle_setup::{Attrs, Edge, TriangleSetupOut, Walk};
 use rtl::widths::{CHANNEL, C_ACC, DC, DEPTH, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
 
 /// Named port values, ready for `Dual::cycle` (through [`as_pins`]).
@@ -44,7 +44,7 @@ fn attrs(out: &mut PinValues, name: &str, a: &Attrs, zw: usize, cw: usize) {
 }
 
 /// A set-up triangle on ports `<prefix>_*` (`edge_walk`'s `inp_*`).
-pub fn setup_out(prefix: &str, s: &SetupOut) -> PinValues {
+pub fn triangle_setup_out(prefix: &str, s: &TriangleSetupOut) -> PinValues {
     let mut out = vec![
         (format!("{prefix}_walk"), Value::new(1, (s.walk == Walk::Up) as u128)),
         (format!("{prefix}_maj_left"), Value::new(1, s.maj_left as u128)),

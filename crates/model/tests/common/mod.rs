@@ -4,7 +4,7 @@
 
 use fx::Formats;
 use model::cull_sort::{Clip, Cull};
-use model::raster::{triangle, Dropped, Method, Options};
+use model::render::{triangle, Dropped, Method, Options};
 use scene::measure::{edge_distance, plane_z};
 use scene::Triangle;
 use std::collections::HashMap;
