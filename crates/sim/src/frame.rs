@@ -233,10 +233,11 @@ impl Cycle for RasterTopVl {
             },
             done: done == 1,
         };
-        for level in [1, 0] {
-            vl.set_u64(self.clock, level);
-            vl.eval();
-        }
+        // The rising edge. The clock falls with the next cycle's inputs, in that cycle's
+        // one settle: nothing in the design acts on a falling edge.
+        vl.set_u64(self.clock, 1);
+        vl.eval();
+        vl.set_u64(self.clock, 0);
         Ok(s)
     }
 }
