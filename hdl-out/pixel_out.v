@@ -1,17 +1,17 @@
 
 
-module pixel_out(clock,inp_valid,inp_ready,inp_x,inp_y,inp_z,inp_rgb0,inp_rgb1,inp_rgb2,mem_ready,rd_en,rd_addr,rd_z,wr_en,wr_addr,wr_z,wr_rgb,idle);
+module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,mem_ready,rd_en,rd_addr,rd_z,wr_en,wr_addr,wr_z,wr_rgb,idle);
     
     // Module arguments
     input wire  clock;
-    input wire  inp_valid;
-    output reg  inp_ready;
-    input wire  [9:0] inp_x;
-    input wire  [9:0] inp_y;
-    input wire  [15:0] inp_z;
-    input wire  [7:0] inp_rgb0;
-    input wire  [7:0] inp_rgb1;
-    input wire  [7:0] inp_rgb2;
+    input wire  inp$valid;
+    output reg  inp$ready;
+    input wire  [9:0] inp$x;
+    input wire  [9:0] inp$y;
+    input wire  [15:0] inp$z;
+    input wire  [7:0] inp$rgb0;
+    input wire  [7:0] inp$rgb1;
+    input wire  [7:0] inp$rgb2;
     input wire  mem_ready;
     output reg  rd_en;
     output reg  [19:0] rd_addr;
@@ -176,14 +176,14 @@ module pixel_out(clock,inp_valid,inp_ready,inp_x,inp_y,inp_z,inp_rgb0,inp_rgb1,i
         s3_valid$d = s3_valid$q;
         s3_addr$d = s3_addr$q;
         s3_z$d = s3_z$q;
-        addr$hi = inp_y;
-        addr$lo = inp_x;
-        rg$hi = inp_rgb0;
-        rg$lo = inp_rgb1;
+        addr$hi = inp$y;
+        addr$lo = inp$x;
+        rg$hi = inp$rgb0;
+        rg$lo = inp$rgb1;
         rgb$hi = rg$out;
-        rgb$lo = inp_rgb2;
-        inp_ready = mem_ready;
-        rd_en = inp_valid;
+        rgb$lo = inp$rgb2;
+        inp$ready = mem_ready;
+        rd_en = inp$valid;
         rd_addr = addr$out;
         old_z = rd_z;
         if (s3_valid$q & (s3_addr$q == s1_addr$q)) begin
@@ -199,9 +199,9 @@ module pixel_out(clock,inp_valid,inp_ready,inp_x,inp_y,inp_z,inp_rgb0,inp_rgb1,i
         wr_rgb = s2_rgb$q;
         idle = ~s1_valid$q & ~s2_valid$q;
         if (mem_ready) begin
-            s1_valid$d = inp_valid;
+            s1_valid$d = inp$valid;
             s1_addr$d = addr$out;
-            s1_z$d = inp_z;
+            s1_z$d = inp$z;
             s1_rgb$d = rgb$out;
             s2_valid$d = s1_valid$q;
             s2_write$d = pass;

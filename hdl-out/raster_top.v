@@ -100,14 +100,14 @@ module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v
     wire  [1:0] cull_sort$verdict_code;
     wire  [5:0] cull_sort$verdict_outside;
     reg  pixel_out$clock;
-    reg  pixel_out$inp_valid;
-    wire  pixel_out$inp_ready;
-    reg  [9:0] pixel_out$inp_x;
-    reg  [9:0] pixel_out$inp_y;
-    reg  [15:0] pixel_out$inp_z;
-    reg  [7:0] pixel_out$inp_rgb0;
-    reg  [7:0] pixel_out$inp_rgb1;
-    reg  [7:0] pixel_out$inp_rgb2;
+    reg  pixel_out$inp$valid;
+    wire  pixel_out$inp$ready;
+    reg  [9:0] pixel_out$inp$x;
+    reg  [9:0] pixel_out$inp$y;
+    reg  [15:0] pixel_out$inp$z;
+    reg  [7:0] pixel_out$inp$rgb0;
+    reg  [7:0] pixel_out$inp$rgb1;
+    reg  [7:0] pixel_out$inp$rgb2;
     reg  pixel_out$mem_ready;
     wire  pixel_out$rd_en;
     wire  [19:0] pixel_out$rd_addr;
@@ -141,14 +141,14 @@ module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v
     reg  [7:0] core$inp_v2_c0;
     reg  [7:0] core$inp_v2_c1;
     reg  [7:0] core$inp_v2_c2;
-    wire  core$out_valid;
-    reg  core$out_ready;
-    wire  [9:0] core$out_x;
-    wire  [9:0] core$out_y;
-    wire  [15:0] core$out_z;
-    wire  [7:0] core$out_rgb0;
-    wire  [7:0] core$out_rgb1;
-    wire  [7:0] core$out_rgb2;
+    wire  core$out$valid;
+    reg  core$out$ready;
+    wire  [9:0] core$out$x;
+    wire  [9:0] core$out$y;
+    wire  [15:0] core$out$z;
+    wire  [7:0] core$out$rgb0;
+    wire  [7:0] core$out$rgb1;
+    wire  [7:0] core$out$rgb2;
     wire  core$idle;
     reg  last_in$d;
     wire  last_in$q;
@@ -213,14 +213,14 @@ module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v
     );
     raster_top$pixel_out pixel_out(
         .clock(pixel_out$clock),
-        .inp_valid(pixel_out$inp_valid),
-        .inp_ready(pixel_out$inp_ready),
-        .inp_x(pixel_out$inp_x),
-        .inp_y(pixel_out$inp_y),
-        .inp_z(pixel_out$inp_z),
-        .inp_rgb0(pixel_out$inp_rgb0),
-        .inp_rgb1(pixel_out$inp_rgb1),
-        .inp_rgb2(pixel_out$inp_rgb2),
+        .inp$valid(pixel_out$inp$valid),
+        .inp$ready(pixel_out$inp$ready),
+        .inp$x(pixel_out$inp$x),
+        .inp$y(pixel_out$inp$y),
+        .inp$z(pixel_out$inp$z),
+        .inp$rgb0(pixel_out$inp$rgb0),
+        .inp$rgb1(pixel_out$inp$rgb1),
+        .inp$rgb2(pixel_out$inp$rgb2),
         .mem_ready(pixel_out$mem_ready),
         .rd_en(pixel_out$rd_en),
         .rd_addr(pixel_out$rd_addr),
@@ -256,14 +256,14 @@ module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v
         .inp_v2_c0(core$inp_v2_c0),
         .inp_v2_c1(core$inp_v2_c1),
         .inp_v2_c2(core$inp_v2_c2),
-        .out_valid(core$out_valid),
-        .out_ready(core$out_ready),
-        .out_x(core$out_x),
-        .out_y(core$out_y),
-        .out_z(core$out_z),
-        .out_rgb0(core$out_rgb0),
-        .out_rgb1(core$out_rgb1),
-        .out_rgb2(core$out_rgb2),
+        .out$valid(core$out$valid),
+        .out$ready(core$out$ready),
+        .out$x(core$out$x),
+        .out$y(core$out$y),
+        .out$z(core$out$z),
+        .out$rgb0(core$out$rgb0),
+        .out$rgb1(core$out$rgb1),
+        .out$rgb2(core$out$rgb2),
         .idle(core$idle)
     );
     raster_top$last_in last_in(
@@ -338,14 +338,6 @@ module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v
             done = 1'b0;
         end
         pixel_out$clock = clock;
-        pixel_out$inp_valid = core$out_valid;
-        core$out_ready = pixel_out$inp_ready;
-        pixel_out$inp_x = core$out_x;
-        pixel_out$inp_y = core$out_y;
-        pixel_out$inp_z = core$out_z;
-        pixel_out$inp_rgb0 = core$out_rgb0;
-        pixel_out$inp_rgb1 = core$out_rgb1;
-        pixel_out$inp_rgb2 = core$out_rgb2;
         pixel_out$mem_ready = mem_ready;
         pixel_out$rd_z = rd_z;
         rd_en = pixel_out$rd_en;
@@ -359,10 +351,18 @@ module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v
         end
     end
     
+    always @(*) pixel_out$inp$valid = core$out$valid;
+    always @(*) core$out$ready = pixel_out$inp$ready;
+    always @(*) pixel_out$inp$x = core$out$x;
+    always @(*) pixel_out$inp$y = core$out$y;
+    always @(*) pixel_out$inp$z = core$out$z;
+    always @(*) pixel_out$inp$rgb0 = core$out$rgb0;
+    always @(*) pixel_out$inp$rgb1 = core$out$rgb1;
+    always @(*) pixel_out$inp$rgb2 = core$out$rgb2;
 endmodule // raster_top
 
 
-module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,out_valid,out_ready,out_x,out_y,out_z,out_rgb0,out_rgb1,out_rgb2,idle);
+module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
     
     // Module arguments
     input wire  clock;
@@ -389,14 +389,14 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
     input wire  [7:0] inp_v2_c0;
     input wire  [7:0] inp_v2_c1;
     input wire  [7:0] inp_v2_c2;
-    output reg  out_valid;
-    input wire  out_ready;
-    output reg  [9:0] out_x;
-    output reg  [9:0] out_y;
-    output reg  [15:0] out_z;
-    output reg  [7:0] out_rgb0;
-    output reg  [7:0] out_rgb1;
-    output reg  [7:0] out_rgb2;
+    output wire  out$valid;
+    input wire  out$ready;
+    output wire  [9:0] out$x;
+    output wire  [9:0] out$y;
+    output wire  [15:0] out$z;
+    output wire  [7:0] out$rgb0;
+    output wire  [7:0] out$rgb1;
+    output wire  [7:0] out$rgb2;
     output reg  idle;
     
     // Stub signals
@@ -626,14 +626,6 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
     reg  [35:0] span$inp_ddx_c0;
     reg  [35:0] span$inp_ddx_c1;
     reg  [35:0] span$inp_ddx_c2;
-    wire  span$out_valid;
-    reg  span$out_ready;
-    wire  [9:0] span$out_x;
-    wire  [9:0] span$out_y;
-    wire  [15:0] span$out_z;
-    wire  [7:0] span$out_rgb0;
-    wire  [7:0] span$out_rgb1;
-    wire  [7:0] span$out_rgb2;
     wire  span$idle;
     reg  in_setup$d;
     wire  in_setup$q;
@@ -873,14 +865,14 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
         .inp_ddx_c0(span$inp_ddx_c0),
         .inp_ddx_c1(span$inp_ddx_c1),
         .inp_ddx_c2(span$inp_ddx_c2),
-        .out_valid(span$out_valid),
-        .out_ready(span$out_ready),
-        .out_x(span$out_x),
-        .out_y(span$out_y),
-        .out_z(span$out_z),
-        .out_rgb0(span$out_rgb0),
-        .out_rgb1(span$out_rgb1),
-        .out_rgb2(span$out_rgb2),
+        .out$valid(out$valid),
+        .out$ready(out$ready),
+        .out$x(out$x),
+        .out$y(out$y),
+        .out$z(out$z),
+        .out$rgb0(out$rgb0),
+        .out$rgb1(out$rgb1),
+        .out$rgb2(out$rgb2),
         .idle(span$idle)
     );
     raster_top$core$in_setup in_setup(
@@ -1019,14 +1011,6 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
         span$inp_ddx_c0 = fifo$out_ddx_c0;
         span$inp_ddx_c1 = fifo$out_ddx_c1;
         span$inp_ddx_c2 = fifo$out_ddx_c2;
-        out_valid = span$out_valid;
-        span$out_ready = out_ready;
-        out_x = span$out_x;
-        out_y = span$out_y;
-        out_z = span$out_z;
-        out_rgb0 = span$out_rgb0;
-        out_rgb1 = span$out_rgb1;
-        out_rgb2 = span$out_rgb2;
         if (inp_valid & triangle_setup$inp_ready) begin
             in_setup$d = 1'b1;
         end
@@ -6906,7 +6890,7 @@ module raster_top$core$in_setup(d,q,clock);
 endmodule // raster_top$core$in_setup
 
 
-module raster_top$core$span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_x,out_y,out_z,out_rgb0,out_rgb1,out_rgb2,idle);
+module raster_top$core$span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
     
     // Module arguments
     input wire  clock;
@@ -6928,14 +6912,14 @@ module raster_top$core$span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,
     input wire  [35:0] inp_ddx_c0;
     input wire  [35:0] inp_ddx_c1;
     input wire  [35:0] inp_ddx_c2;
-    output reg  out_valid;
-    input wire  out_ready;
-    output reg  [9:0] out_x;
-    output reg  [9:0] out_y;
-    output reg  [15:0] out_z;
-    output reg  [7:0] out_rgb0;
-    output reg  [7:0] out_rgb1;
-    output reg  [7:0] out_rgb2;
+    output reg  out$valid;
+    input wire  out$ready;
+    output reg  [9:0] out$x;
+    output reg  [9:0] out$y;
+    output reg  [15:0] out$z;
+    output reg  [7:0] out$rgb0;
+    output reg  [7:0] out$rgb1;
+    output reg  [7:0] out$rgb2;
     output reg  idle;
     
     // Stub signals
@@ -7178,34 +7162,34 @@ module raster_top$core$span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,
         c1$x = a_c1$q;
         c2$x = a_c2$q;
         valid = busy$q & ~drop$q & (x$q < width_x) & ~zp$neg & ~zp$over;
-        out_valid = valid;
-        out_x = ((x$q) & 10'h3ff);
-        out_y = y$q;
-        out_z = zp$low;
-        out_rgb0 = c0$low;
+        out$valid = valid;
+        out$x = ((x$q) & 10'h3ff);
+        out$y = y$q;
+        out$z = zp$low;
+        out$rgb0 = c0$low;
         if (c0$over) begin
-            out_rgb0 = 32'hff;
+            out$rgb0 = 32'hff;
         end
         if (c0$neg) begin
-            out_rgb0 = 32'h0;
+            out$rgb0 = 32'h0;
         end
-        out_rgb1 = c1$low;
+        out$rgb1 = c1$low;
         if (c1$over) begin
-            out_rgb1 = 32'hff;
+            out$rgb1 = 32'hff;
         end
         if (c1$neg) begin
-            out_rgb1 = 32'h0;
+            out$rgb1 = 32'h0;
         end
-        out_rgb2 = c2$low;
+        out$rgb2 = c2$low;
         if (c2$over) begin
-            out_rgb2 = 32'hff;
+            out$rgb2 = 32'hff;
         end
         if (c2$neg) begin
-            out_rgb2 = 32'h0;
+            out$rgb2 = 32'h0;
         end
         idle = ~busy$q;
         at_last = drop$q | (x$q == last$q);
-        advance = busy$q & (~valid | out_ready);
+        advance = busy$q & (~valid | out$ready);
         ready = ~busy$q | (at_last & advance);
         inp_ready = ready;
         accept = inp_valid & ready;
@@ -17039,18 +17023,18 @@ module raster_top$last_in(d,q,clock);
 endmodule // raster_top$last_in
 
 
-module raster_top$pixel_out(clock,inp_valid,inp_ready,inp_x,inp_y,inp_z,inp_rgb0,inp_rgb1,inp_rgb2,mem_ready,rd_en,rd_addr,rd_z,wr_en,wr_addr,wr_z,wr_rgb,idle);
+module raster_top$pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,mem_ready,rd_en,rd_addr,rd_z,wr_en,wr_addr,wr_z,wr_rgb,idle);
     
     // Module arguments
     input wire  clock;
-    input wire  inp_valid;
-    output reg  inp_ready;
-    input wire  [9:0] inp_x;
-    input wire  [9:0] inp_y;
-    input wire  [15:0] inp_z;
-    input wire  [7:0] inp_rgb0;
-    input wire  [7:0] inp_rgb1;
-    input wire  [7:0] inp_rgb2;
+    input wire  inp$valid;
+    output reg  inp$ready;
+    input wire  [9:0] inp$x;
+    input wire  [9:0] inp$y;
+    input wire  [15:0] inp$z;
+    input wire  [7:0] inp$rgb0;
+    input wire  [7:0] inp$rgb1;
+    input wire  [7:0] inp$rgb2;
     input wire  mem_ready;
     output reg  rd_en;
     output reg  [19:0] rd_addr;
@@ -17215,14 +17199,14 @@ module raster_top$pixel_out(clock,inp_valid,inp_ready,inp_x,inp_y,inp_z,inp_rgb0
         s3_valid$d = s3_valid$q;
         s3_addr$d = s3_addr$q;
         s3_z$d = s3_z$q;
-        addr$hi = inp_y;
-        addr$lo = inp_x;
-        rg$hi = inp_rgb0;
-        rg$lo = inp_rgb1;
+        addr$hi = inp$y;
+        addr$lo = inp$x;
+        rg$hi = inp$rgb0;
+        rg$lo = inp$rgb1;
         rgb$hi = rg$out;
-        rgb$lo = inp_rgb2;
-        inp_ready = mem_ready;
-        rd_en = inp_valid;
+        rgb$lo = inp$rgb2;
+        inp$ready = mem_ready;
+        rd_en = inp$valid;
         rd_addr = addr$out;
         old_z = rd_z;
         if (s3_valid$q & (s3_addr$q == s1_addr$q)) begin
@@ -17238,9 +17222,9 @@ module raster_top$pixel_out(clock,inp_valid,inp_ready,inp_x,inp_y,inp_z,inp_rgb0
         wr_rgb = s2_rgb$q;
         idle = ~s1_valid$q & ~s2_valid$q;
         if (mem_ready) begin
-            s1_valid$d = inp_valid;
+            s1_valid$d = inp$valid;
             s1_addr$d = addr$out;
-            s1_z$d = inp_z;
+            s1_z$d = inp$z;
             s1_rgb$d = rgb$out;
             s2_valid$d = s1_valid$q;
             s2_write$d = pass;

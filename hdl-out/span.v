@@ -1,6 +1,6 @@
 
 
-module span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_x,out_y,out_z,out_rgb0,out_rgb1,out_rgb2,idle);
+module span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
     
     // Module arguments
     input wire  clock;
@@ -22,14 +22,14 @@ module span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_l
     input wire  [35:0] inp_ddx_c0;
     input wire  [35:0] inp_ddx_c1;
     input wire  [35:0] inp_ddx_c2;
-    output reg  out_valid;
-    input wire  out_ready;
-    output reg  [9:0] out_x;
-    output reg  [9:0] out_y;
-    output reg  [15:0] out_z;
-    output reg  [7:0] out_rgb0;
-    output reg  [7:0] out_rgb1;
-    output reg  [7:0] out_rgb2;
+    output reg  out$valid;
+    input wire  out$ready;
+    output reg  [9:0] out$x;
+    output reg  [9:0] out$y;
+    output reg  [15:0] out$z;
+    output reg  [7:0] out$rgb0;
+    output reg  [7:0] out$rgb1;
+    output reg  [7:0] out$rgb2;
     output reg  idle;
     
     // Stub signals
@@ -272,34 +272,34 @@ module span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_l
         c1$x = a_c1$q;
         c2$x = a_c2$q;
         valid = busy$q & ~drop$q & (x$q < width_x) & ~zp$neg & ~zp$over;
-        out_valid = valid;
-        out_x = ((x$q) & 10'h3ff);
-        out_y = y$q;
-        out_z = zp$low;
-        out_rgb0 = c0$low;
+        out$valid = valid;
+        out$x = ((x$q) & 10'h3ff);
+        out$y = y$q;
+        out$z = zp$low;
+        out$rgb0 = c0$low;
         if (c0$over) begin
-            out_rgb0 = 32'hff;
+            out$rgb0 = 32'hff;
         end
         if (c0$neg) begin
-            out_rgb0 = 32'h0;
+            out$rgb0 = 32'h0;
         end
-        out_rgb1 = c1$low;
+        out$rgb1 = c1$low;
         if (c1$over) begin
-            out_rgb1 = 32'hff;
+            out$rgb1 = 32'hff;
         end
         if (c1$neg) begin
-            out_rgb1 = 32'h0;
+            out$rgb1 = 32'h0;
         end
-        out_rgb2 = c2$low;
+        out$rgb2 = c2$low;
         if (c2$over) begin
-            out_rgb2 = 32'hff;
+            out$rgb2 = 32'hff;
         end
         if (c2$neg) begin
-            out_rgb2 = 32'h0;
+            out$rgb2 = 32'h0;
         end
         idle = ~busy$q;
         at_last = drop$q | (x$q == last$q);
-        advance = busy$q & (~valid | out_ready);
+        advance = busy$q & (~valid | out$ready);
         ready = ~busy$q | (at_last & advance);
         inp_ready = ready;
         accept = inp_valid & ready;

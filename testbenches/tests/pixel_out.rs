@@ -37,7 +37,7 @@ fn pixels(rng: &mut ChaCha8Rng, w: u32, h: u32, n: usize, zmax: u32) -> Vec<Pixe
     out
 }
 
-/// Sends `pixels` (`inp_valid` low 20% of the time) with the memory ready when `ready`
+/// Sends `pixels` (`inp$valid` low 20% of the time) with the memory ready when `ready`
 /// says; checks every write the memory performs against the model's, in order, each
 /// `LATENCY` ready cycles after its pixel came in; returns the memory and the cycles.
 fn run(
@@ -60,7 +60,7 @@ fn run(
         let mem_ready = ready(&mut rng);
         let valid = next < pixels.len() && rng.gen_bool(0.8);
         let mut pins = vec![
-            ("inp_valid", Value::new(1, valid as u128)),
+            ("inp$valid", Value::new(1, valid as u128)),
             ("mem_ready", Value::new(1, mem_ready as u128)),
             ("rd_z", Value::new(DEPTH, mem.rd_z() as u128)),
         ];
@@ -68,12 +68,12 @@ fn run(
         pins.extend(as_pins(&p));
         let out = dual.cycle(&pins).map_err(|m| m.to_string())?;
         let cycle = dual.cycles() - 1;
-        if (out.get("inp_ready") == &Value::new(1, 1)) != mem_ready {
-            return Err(format!("cycle {cycle}: inp_ready differs from mem_ready"));
+        if (out.get("inp$ready") == &Value::new(1, 1)) != mem_ready {
+            return Err(format!("cycle {cycle}: inp$ready differs from mem_ready"));
         }
         let req = Request::of(&out);
         if req.rd_en != valid {
-            return Err(format!("cycle {cycle}: rd_en {} for inp_valid {valid}", req.rd_en));
+            return Err(format!("cycle {cycle}: rd_en {} for inp$valid {valid}", req.rd_en));
         }
         let write = mem.edge(mem_ready, &req);
         if !mem_ready {
@@ -165,7 +165,7 @@ fn pixel_out_latency_is_2() {
     let mut mem = Memory::new(CLASS, (8, 8), 65535, [0; 3], ReadDuringWrite::Old);
     let p = Pixel { x: 3, y: 5, z: 100, rgb: [1, 2, 3] };
     let mut pins = vec![
-        ("inp_valid", Value::new(1, 1)),
+        ("inp$valid", Value::new(1, 1)),
         ("mem_ready", Value::new(1, 1)),
         ("rd_z", Value::new(DEPTH, mem.rd_z() as u128)),
     ];

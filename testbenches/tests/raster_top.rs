@@ -443,7 +443,7 @@ fn units_frame<U: Block + Pins>(
             pins.push(("mem_ready".into(), Value::new(1, ready as u128)));
             pins.push(("rd_z".into(), Value::new(rtl::widths::DEPTH, memory.rd_z() as u128)));
         } else {
-            pins.push(("out_ready".into(), Value::new(1, ready as u128)));
+            pins.push(("out$ready".into(), Value::new(1, ready as u128)));
         }
         let o = dual.cycle(&as_pins(&pins)).unwrap_or_else(|m| panic!("{what}: {m}"));
         let high = |p: &str| unsigned(o.get(p)) == 1;
@@ -466,7 +466,7 @@ fn units_frame<U: Block + Pins>(
         taken += (offer.is_some() && high("inp_ready")) as usize;
         if units.pixel_out {
             memory.edge(ready, &Request::of(&o));
-        } else if ready && high("out_valid") {
+        } else if ready && high("out$valid") {
             fragments.push(pixel_of(&o, "out"));
         }
     }

@@ -1,7 +1,7 @@
 //! The span unit (001 §II.2, 003 Fig. 6): rust-hdl and Verilator in lockstep, every cycle,
 //! against `model::span`: each pixel, and when it comes (the model's `LATENCY`, one
 //! pixel or skipped pixel per cycle, a dropped span in one cycle, pixels held while
-//! `out_ready` is low).
+//! `out$ready` is low).
 
 use model::ctx::Ctx;
 use model::cull_sort::{cull_sort, z_max, Clip, Cull};
@@ -94,7 +94,7 @@ enum State {
 }
 
 /// Runs `jobs` back to back (one on another screen waits until the unit is idle) with
-/// `out_ready` from `ready`; checks every cycle `inp_ready`, `out_valid` and the pixel
+/// `out$ready` from `ready`; checks every cycle `inp_ready`, `out$valid` and the pixel
 /// against the model's slot due. Returns (cycles, stalls).
 fn run(
     dual: &mut Dual<Span>,
@@ -121,7 +121,7 @@ fn run(
         let mut pins = vec![
             ("width", Value::new(DIM, width as u128)),
             ("inp_valid", Value::new(1, offer as u128)),
-            ("out_ready", Value::new(1, out_ready as u128)),
+            ("out$ready", Value::new(1, out_ready as u128)),
         ];
         if offer {
             pins.extend(as_pins(&jobs[next].pins));
@@ -132,7 +132,7 @@ fn run(
         if (out.get("inp_ready") == &Value::new(1, 1)) != leaving {
             return Err(format!("cycle {cycle}: inp_ready should be {leaving} in {state:?}"));
         }
-        let valid = out.get("out_valid") == &Value::new(1, 1);
+        let valid = out.get("out$valid") == &Value::new(1, 1);
         match (due, state) {
             (Some(p), State::Walk { i, .. }) => {
                 let got = pixel_of(&out, "out");
@@ -214,12 +214,12 @@ fn span_latency_003_table1() {
     let vl = verilated("span");
     let mut d = dual(&vl);
     let mut pins =
-        vec![("width", Value::new(DIM, 64)), ("inp_valid", Value::new(1, 1)), ("out_ready", Value::new(1, 1))];
+        vec![("width", Value::new(DIM, 64)), ("inp_valid", Value::new(1, 1)), ("out$ready", Value::new(1, 1))];
     pins.extend(as_pins(&j.pins));
     let (mut valid, mut ready) = (Vec::new(), Vec::new());
     for _ in 0..5 {
         let out = d.cycle(&pins).unwrap_or_else(|m| panic!("{m}"));
-        valid.push(out.get("out_valid") == &Value::new(1, 1));
+        valid.push(out.get("out$valid") == &Value::new(1, 1));
         ready.push(out.get("inp_ready") == &Value::new(1, 1));
     }
     assert_eq!(valid, [false, true, true, true, true], "out_valid in cycles 0 to 4");

@@ -8,6 +8,7 @@
 pub mod config;
 pub mod emit;
 pub mod ept;
+pub mod link;
 pub mod mul;
 pub mod parts;
 pub mod se;
@@ -28,6 +29,8 @@ macro_rules! scanline_units {
         pub mod divider;
         #[path = "edge_walk.rs"]
         pub mod edge_walk;
+        #[path = "links.rs"]
+        pub mod links;
         #[path = "pixel_out.rs"]
         pub mod pixel_out;
         #[path = "raster_top.rs"]
@@ -125,7 +128,7 @@ macro_rules! no_formats {
 
 /// The default size class, [`fx::RTL_CLASS`] (screens up to 1024 x 1024): its units are
 /// also at the crate's root (`rtl::raster_top`, ...).
-pub use n10::{cull_sort, divider, edge_walk, pixel_out, raster_top, span, triangle_setup, widths};
+pub use n10::{cull_sort, divider, edge_walk, links, pixel_out, raster_top, span, triangle_setup, widths};
 const _: () = assert!(n10::CLASS == fx::RTL_CLASS);
 
 /// The size-class parameter every scanline unit has.

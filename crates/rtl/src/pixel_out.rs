@@ -28,6 +28,7 @@
 
 use crate::emit::{emit, Emitted};
 use crate::parts::Concat;
+use super::links::PixelSink;
 use super::widths::{ADDR, CHANNEL, DEPTH, RGB, SCREEN};
 use crate::Params;
 use rust_hdl::prelude::*;
@@ -36,17 +37,8 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock, Default)]
 pub struct PixelOut {
     pub clock: Signal<In, Clock>,
-    pub inp_valid: Signal<In, Bit>,
-    /// `mem_ready`: a pixel is taken whenever the memory is.
-    pub inp_ready: Signal<Out, Bit>,
-    pub inp_x: Signal<In, Bits<SCREEN>>,
-    pub inp_y: Signal<In, Bits<SCREEN>>,
-    /// Depth, `DEPTH` bits.
-    pub inp_z: Signal<In, Bits<DEPTH>>,
-    /// R, G, B.
-    pub inp_rgb0: Signal<In, Bits<CHANNEL>>,
-    pub inp_rgb1: Signal<In, Bits<CHANNEL>>,
-    pub inp_rgb2: Signal<In, Bits<CHANNEL>>,
+    /// The pixels; `inp.ready` is `mem_ready`: a pixel is taken whenever the memory is.
+    pub inp: PixelSink,
     /// The memory performs this cycle's read and write (see the module documentation).
     pub mem_ready: Signal<In, Bit>,
     /// Read the depth at `rd_addr`.
@@ -94,16 +86,16 @@ impl Logic for PixelOut {
             self, clock, s1_valid, s1_addr, s1_z, s1_rgb, s2_valid, s2_write, s2_addr, s2_z, s2_rgb, s3_valid, s3_addr,
             s3_z
         );
-        self.addr.hi.next = self.inp_y.val();
-        self.addr.lo.next = self.inp_x.val();
-        self.rg.hi.next = self.inp_rgb0.val();
-        self.rg.lo.next = self.inp_rgb1.val();
+        self.addr.hi.next = self.inp.y.val();
+        self.addr.lo.next = self.inp.x.val();
+        self.rg.hi.next = self.inp.rgb0.val();
+        self.rg.lo.next = self.inp.rgb1.val();
         self.rgb.hi.next = self.rg.out.val();
-        self.rgb.lo.next = self.inp_rgb2.val();
+        self.rgb.lo.next = self.inp.rgb2.val();
 
         // Cycle t: the pixel comes in and its depth is read.
-        self.inp_ready.next = self.mem_ready.val();
-        self.rd_en.next = self.inp_valid.val();
+        self.inp.ready.next = self.mem_ready.val();
+        self.rd_en.next = self.inp.valid.val();
         self.rd_addr.next = self.addr.out.val();
 
         // Cycle t + 1: depth test against the newest depth of the address.
@@ -124,9 +116,9 @@ impl Logic for PixelOut {
         self.idle.next = !self.s1_valid.q.val() & !self.s2_valid.q.val();
 
         if self.mem_ready.val() {
-            self.s1_valid.d.next = self.inp_valid.val();
+            self.s1_valid.d.next = self.inp.valid.val();
             self.s1_addr.d.next = self.addr.out.val();
-            self.s1_z.d.next = self.inp_z.val();
+            self.s1_z.d.next = self.inp.z.val();
             self.s1_rgb.d.next = self.rgb.out.val();
             self.s2_valid.d.next = self.s1_valid.q.val();
             self.s2_write.d.next = self.pass.val();
@@ -142,8 +134,9 @@ impl Logic for PixelOut {
 
 crate::pins!(PixelOut {
     clock: clock,
-    inputs: [inp_valid, inp_x, inp_y, inp_z, inp_rgb0, inp_rgb1, inp_rgb2, mem_ready, rd_z],
-    outputs: [inp_ready, rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb, idle],
+    inputs: [mem_ready, rd_z],
+    outputs: [rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb, idle],
+    links: [inp],
 });
 
 /// `UNITS` entry: the pixel output unit (no parameters: widths from `crate::widths`).

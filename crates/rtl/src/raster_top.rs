@@ -30,7 +30,7 @@
 //! **Units present.** [`RasterCore`] (setup with the divider, edge walk, span FIFO, span)
 //! always; `CULL_SORT = 0` leaves out `cull_sort` (the host culls and sorts: sorted
 //! triangles with their clip crossings in, [`RasterTopSorted`]), `PIXEL_OUT = 0` leaves
-//! out `pixel_out` (the fragment stream leaves on `out_*` for the host's own depth test and
+//! out `pixel_out` (the fragment stream leaves on `out$*` for the host's own depth test and
 //! memory, [`RasterTopFragments`]), both give [`RasterTopCore`]. Every variant is emitted
 //! as module `raster_top`; `model::cycles::Timing` has the same two switches.
 //!
@@ -43,11 +43,12 @@
 
 use super::cull_sort::{CullSort, COLOR, INV_W, OUTCODE, XY, Z};
 use super::edge_walk::EdgeWalk;
+use super::links::PixelSource;
 use super::pixel_out::PixelOut;
 use super::span::Span;
 use super::span_fifo::SpanFifo;
 use super::triangle_setup::TriangleSetup;
-use super::widths::{ADDR, CHANNEL, DEPTH, DIM, RGB, SCREEN};
+use super::widths::{ADDR, DEPTH, DIM, RGB};
 use crate::emit::{ports, verilog, Emitted};
 use crate::Params;
 use rust_hdl::prelude::*;
@@ -55,7 +56,7 @@ use rust_hdl::prelude::*;
 /// The part of `raster_top` that is always present: `triangle_setup` (with the divider)
 /// -> `edge_walk` -> the span FIFO -> `span`. Sorted triangles in (`model::cull_sort::Sorted`
 /// on `triangle_setup`'s `inp_*` ports), fragments out (`model::span::Pixel` on `span`'s
-/// `out_*` ports); `idle` when it holds no work.
+/// `out$*` ports); `idle` when it holds no work.
 #[derive(LogicBlock)]
 pub struct RasterCore {
     pub clock: Signal<In, Clock>,
@@ -82,14 +83,8 @@ pub struct RasterCore {
     pub inp_v2_c0: Signal<In, Bits<COLOR>>,
     pub inp_v2_c1: Signal<In, Bits<COLOR>>,
     pub inp_v2_c2: Signal<In, Bits<COLOR>>,
-    pub out_valid: Signal<Out, Bit>,
-    pub out_ready: Signal<In, Bit>,
-    pub out_x: Signal<Out, Bits<SCREEN>>,
-    pub out_y: Signal<Out, Bits<SCREEN>>,
-    pub out_z: Signal<Out, Bits<DEPTH>>,
-    pub out_rgb0: Signal<Out, Bits<CHANNEL>>,
-    pub out_rgb1: Signal<Out, Bits<CHANNEL>>,
-    pub out_rgb2: Signal<Out, Bits<CHANNEL>>,
+    /// The fragments.
+    pub out: PixelSource,
     /// No triangle, span command or pixel held.
     pub idle: Signal<Out, Bit>,
     triangle_setup: TriangleSetup,
@@ -128,14 +123,7 @@ impl RasterCore {
             inp_v2_c0: Default::default(),
             inp_v2_c1: Default::default(),
             inp_v2_c2: Default::default(),
-            out_valid: Default::default(),
-            out_ready: Default::default(),
-            out_x: Default::default(),
-            out_y: Default::default(),
-            out_z: Default::default(),
-            out_rgb0: Default::default(),
-            out_rgb1: Default::default(),
-            out_rgb2: Default::default(),
+            out: Default::default(),
             idle: Default::default(),
             triangle_setup: TriangleSetup::new(k, l)?,
             edge_walk: Default::default(),
@@ -281,14 +269,7 @@ impl Logic for RasterCore {
         self.span.inp_ddx_c2.next = self.fifo.out_ddx_c2.val();
 
         // Fragments out.
-        self.out_valid.next = self.span.out_valid.val();
-        self.span.out_ready.next = self.out_ready.val();
-        self.out_x.next = self.span.out_x.val();
-        self.out_y.next = self.span.out_y.val();
-        self.out_z.next = self.span.out_z.val();
-        self.out_rgb0.next = self.span.out_rgb0.val();
-        self.out_rgb1.next = self.span.out_rgb1.val();
-        self.out_rgb2.next = self.span.out_rgb2.val();
+        PixelSource::link(&mut self.out, &mut self.span.out);
 
         if self.inp_valid.val() & self.triangle_setup.inp_ready.val() {
             self.in_setup.d.next = true;
@@ -305,9 +286,9 @@ impl Logic for RasterCore {
 /// Declares one `raster_top` of the units the parameters choose: the [`RasterCore`] with
 /// `cull_sort` in front of it (`cull_sort: <its field>`) or not (`sorted: <the clip
 /// crossings port>`: the host sends sorted triangles with their clip crossings), and
-/// `pixel_out` behind it (`pixel_out: <its field>`) or not (`fragments: <the valid port>`:
-/// the fragments leave on `out_*`); `inputs` and `outputs` name the ports these add, for
-/// the simulators' pins. Each choice is an optional group of fields, constructor and
+/// `pixel_out` behind it (`pixel_out: <its field>`) or not (`fragments: <the link's
+/// field>`: the fragments leave on `out$*`); `inputs`, `outputs` and `links` name the ports
+/// and link ends these add, for the simulators' pins. Each choice is an optional group of fields, constructor and
 /// kernel statements, driven by the name given. (A macro, as rust-hdl's `LogicBlock` takes
 /// its ports from the struct's fields; one arm, so that every `self` is the kernel's.)
 macro_rules! raster_top_variant {
@@ -317,7 +298,8 @@ macro_rules! raster_top_variant {
         $(pixel_out: $po:ident,)?
         $(fragments: $ov:ident,)?
         inputs: [$($i:ident),* $(,)?],
-        outputs: [$($o:ident),* $(,)?] $(,)?
+        outputs: [$($o:ident),* $(,)?]
+        $(, links: [$($l:ident),* $(,)?])? $(,)?
     }) => {
         $(#[$m])*
         #[derive(LogicBlock)]
@@ -378,14 +360,7 @@ macro_rules! raster_top_variant {
             )?
             $(
                 /// The fragments (`model::span::Pixel`), before any depth test, as a stream.
-                pub $ov: Signal<Out, Bit>,
-                pub out_ready: Signal<In, Bit>,
-                pub out_x: Signal<Out, Bits<SCREEN>>,
-                pub out_y: Signal<Out, Bits<SCREEN>>,
-                pub out_z: Signal<Out, Bits<DEPTH>>,
-                pub out_rgb0: Signal<Out, Bits<CHANNEL>>,
-                pub out_rgb1: Signal<Out, Bits<CHANNEL>>,
-                pub out_rgb2: Signal<Out, Bits<CHANNEL>>,
+                pub $ov: PixelSource,
             )?
             /// The frame is drawn: the `inp_last` triangle has been taken and every unit is empty.
             pub done: Signal<Out, Bit>,
@@ -425,7 +400,7 @@ macro_rules! raster_top_variant {
                     $( cull_back: Default::default(), inp_v0_iw: Default::default(), inp_v1_iw: Default::default(), inp_v2_iw: Default::default(), verdict_valid: Default::default(), verdict_code: Default::default(), verdict_outside: Default::default(), $cs: Default::default(), )?
                     $( $ic: Default::default(), )?
                     $( mem_ready: Default::default(), rd_en: Default::default(), rd_addr: Default::default(), rd_z: Default::default(), wr_en: Default::default(), wr_addr: Default::default(), wr_z: Default::default(), wr_rgb: Default::default(), $po: Default::default(), )?
-                    $( $ov: Default::default(), out_ready: Default::default(), out_x: Default::default(), out_y: Default::default(), out_z: Default::default(), out_rgb0: Default::default(), out_rgb1: Default::default(), out_rgb2: Default::default(), )?
+                    $( $ov: Default::default(), )?
                     done: Default::default(),
                     core: RasterCore::new(k, l)?,
                     last_in: Default::default(),
@@ -533,14 +508,7 @@ macro_rules! raster_top_variant {
                 $(
                     // The core -> pixel_out: `Pixel`; pixel_out <-> memory.
                     self.$po.clock.next = self.clock.val();
-                    self.$po.inp_valid.next = self.core.out_valid.val();
-                    self.core.out_ready.next = self.$po.inp_ready.val();
-                    self.$po.inp_x.next = self.core.out_x.val();
-                    self.$po.inp_y.next = self.core.out_y.val();
-                    self.$po.inp_z.next = self.core.out_z.val();
-                    self.$po.inp_rgb0.next = self.core.out_rgb0.val();
-                    self.$po.inp_rgb1.next = self.core.out_rgb1.val();
-                    self.$po.inp_rgb2.next = self.core.out_rgb2.val();
+                    PixelSource::join(&mut self.core.out, &mut self.$po.inp);
                     self.$po.mem_ready.next = self.mem_ready.val();
                     self.$po.rd_z.next = self.rd_z.val();
                     self.rd_en.next = self.$po.rd_en.val();
@@ -555,14 +523,7 @@ macro_rules! raster_top_variant {
                 )?
                 $(
                     // Fragments out.
-                    self.$ov.next = self.core.out_valid.val();
-                    self.core.out_ready.next = self.out_ready.val();
-                    self.out_x.next = self.core.out_x.val();
-                    self.out_y.next = self.core.out_y.val();
-                    self.out_z.next = self.core.out_z.val();
-                    self.out_rgb0.next = self.core.out_rgb0.val();
-                    self.out_rgb1.next = self.core.out_rgb1.val();
-                    self.out_rgb2.next = self.core.out_rgb2.val();
+                    PixelSource::link(&mut self.$ov, &mut self.core.out);
                 )?
             }
         }
@@ -575,6 +536,7 @@ macro_rules! raster_top_variant {
                 inp_v2_c0, inp_v2_c1, inp_v2_c2, $($i,)*
             ],
             outputs: [inp_ready, done, $($o,)*],
+            links: [$($($l,)*)?],
         });
     };
 }
@@ -592,12 +554,13 @@ raster_top_variant!(
 );
 raster_top_variant!(
     /// `raster_top` without `pixel_out` (`PIXEL_OUT = 0`): triangles in, the fragment
-    /// stream out (`out_*`) for a depth test and memory of the host's own.
+    /// stream out (`out$*`) for a depth test and memory of the host's own.
     RasterTopFragments {
         cull_sort: cull_sort,
-        fragments: out_valid,
-        inputs: [cull_back, inp_v0_iw, inp_v1_iw, inp_v2_iw, out_ready],
-        outputs: [verdict_valid, verdict_code, verdict_outside, out_valid, out_x, out_y, out_z, out_rgb0, out_rgb1, out_rgb2],
+        fragments: out,
+        inputs: [cull_back, inp_v0_iw, inp_v1_iw, inp_v2_iw],
+        outputs: [verdict_valid, verdict_code, verdict_outside],
+        links: [out],
     }
 );
 raster_top_variant!(
@@ -615,9 +578,10 @@ raster_top_variant!(
     /// fragments out.
     RasterTopCore {
         sorted: inp_crosses,
-        fragments: out_valid,
-        inputs: [inp_crosses, out_ready],
-        outputs: [out_valid, out_x, out_y, out_z, out_rgb0, out_rgb1, out_rgb2],
+        fragments: out,
+        inputs: [inp_crosses],
+        outputs: [],
+        links: [out],
     }
 );
 

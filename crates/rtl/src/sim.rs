@@ -84,22 +84,43 @@ impl<const N: usize> PinValue for Bits<N> {
 }
 
 /// Implements [`Pins`] for a clocked unit from its port fields: every input but the clock,
-/// then every output, each named as in the Verilog. The dual-simulation harness drives
-/// and reads every port by name, so a port left out of the lists fails the unit's tests.
+/// then every output, each named as in the Verilog, and the ends of links it holds
+/// (`links: [inp, out]`: pins `<end>$<field>`, through `crate::link::LinkPins`). The
+/// dual-simulation harness drives and reads every port by name, so a port left out of the
+/// lists fails the unit's tests.
 #[macro_export]
 macro_rules! pins {
-    ($unit:ty { clock: $clock:ident, inputs: [$($i:ident),* $(,)?], outputs: [$($o:ident),* $(,)?] $(,)? }) => {
+    ($unit:ty {
+        clock: $clock:ident,
+        inputs: [$($i:ident),* $(,)?],
+        outputs: [$($o:ident),* $(,)?]
+        $(, links: [$($l:ident),* $(,)?])? $(,)?
+    }) => {
         impl $crate::sim::Pins for $unit {
             fn set(&mut self, pin: &str, value: &$crate::sim::Value) {
                 match pin {
                     $(stringify!($i) => self.$i.next = $crate::sim::PinValue::from_value(value),)*
-                    _ => panic!("{} has no input pin {pin}", stringify!($unit)),
+                    _ => {
+                        $($(if let Some(field) = pin.strip_prefix(concat!(stringify!($l), "$")) {
+                            if $crate::link::LinkPins::set(&mut self.$l, field, value) {
+                                return;
+                            }
+                        })*)?
+                        panic!("{} has no input pin {pin}", stringify!($unit));
+                    }
                 }
             }
             fn get(&self, pin: &str) -> $crate::sim::Value {
                 match pin {
                     $(stringify!($o) => $crate::sim::PinValue::to_value(&self.$o.val()),)*
-                    _ => panic!("{} has no output pin {pin}", stringify!($unit)),
+                    _ => {
+                        $($(if let Some(field) = pin.strip_prefix(concat!(stringify!($l), "$")) {
+                            if let Some(v) = $crate::link::LinkPins::get(&self.$l, field) {
+                                return v;
+                            }
+                        })*)?
+                        panic!("{} has no output pin {pin}", stringify!($unit));
+                    }
                 }
             }
             fn clock(&mut self) -> Option<&mut rust_hdl::prelude::Signal<rust_hdl::prelude::In, rust_hdl::prelude::Clock>> {

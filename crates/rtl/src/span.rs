@@ -2,7 +2,8 @@
 //! paper 003 (Lee 2008, §II.1.다.(3), Fig. 6), one pixel per cycle.
 //!
 //! It takes span commands (`model::edge_walk::SpanCmd`, flattened into `inp_*`) and sends
-//! pixels (`model::span::Pixel`, flattened into `out_*`), both on valid/ready streams:
+//! pixels (`model::span::Pixel`, on the link `out`: `links::PixelSource`, ports `out$*`), both
+//! on valid/ready streams:
 //!
 //! * X clipping (003): a span wholly left or right of the screen is dropped; one that
 //!   starts left of the screen is walked right to left from its last pixel and stops at
@@ -29,6 +30,7 @@
 
 use crate::emit::{emit, Emitted};
 use crate::parts::{Negative, RoundShift, SignedLess};
+use super::links::PixelSource;
 use super::widths::{CHANNEL, C_ACC, DC, DEPTH, DIM, DZ, FORMATS, PIXEL, SCREEN, Z_ACC};
 use crate::Params;
 use rust_hdl::prelude::*;
@@ -74,16 +76,7 @@ pub struct Span {
     pub inp_ddx_c1: Signal<In, Bits<DC>>,
     pub inp_ddx_c2: Signal<In, Bits<DC>>,
     /// A pixel on screen with its depth in [0, z_max].
-    pub out_valid: Signal<Out, Bit>,
-    pub out_ready: Signal<In, Bit>,
-    pub out_x: Signal<Out, Bits<SCREEN>>,
-    pub out_y: Signal<Out, Bits<SCREEN>>,
-    /// Depth, the depth buffer's `DEPTH` bits.
-    pub out_z: Signal<Out, Bits<DEPTH>>,
-    /// R, G, B.
-    pub out_rgb0: Signal<Out, Bits<CHANNEL>>,
-    pub out_rgb1: Signal<Out, Bits<CHANNEL>>,
-    pub out_rgb2: Signal<Out, Bits<CHANNEL>>,
+    pub out: PixelSource,
     /// No span in progress (for `raster_top`'s frame-done).
     pub idle: Signal<Out, Bit>,
     /// A span is in progress; `drop` marks the one cycle of a dropped span.
@@ -141,37 +134,37 @@ impl Logic for Span {
             & (self.x.q.val() < self.width_x.val())
             & !self.zp.neg.val()
             & !self.zp.over.val();
-        self.out_valid.next = self.valid.val();
-        self.out_x.next = bit_cast::<SCREEN, PIXEL>(self.x.q.val());
-        self.out_y.next = self.y.q.val();
-        self.out_z.next = self.zp.low.val();
-        self.out_rgb0.next = self.c0.low.val();
+        self.out.valid.next = self.valid.val();
+        self.out.x.next = bit_cast::<SCREEN, PIXEL>(self.x.q.val());
+        self.out.y.next = self.y.q.val();
+        self.out.z.next = self.zp.low.val();
+        self.out.rgb0.next = self.c0.low.val();
         if self.c0.over.val() {
-            self.out_rgb0.next = 255.into();
+            self.out.rgb0.next = 255.into();
         }
         if self.c0.neg.val() {
-            self.out_rgb0.next = 0.into();
+            self.out.rgb0.next = 0.into();
         }
-        self.out_rgb1.next = self.c1.low.val();
+        self.out.rgb1.next = self.c1.low.val();
         if self.c1.over.val() {
-            self.out_rgb1.next = 255.into();
+            self.out.rgb1.next = 255.into();
         }
         if self.c1.neg.val() {
-            self.out_rgb1.next = 0.into();
+            self.out.rgb1.next = 0.into();
         }
-        self.out_rgb2.next = self.c2.low.val();
+        self.out.rgb2.next = self.c2.low.val();
         if self.c2.over.val() {
-            self.out_rgb2.next = 255.into();
+            self.out.rgb2.next = 255.into();
         }
         if self.c2.neg.val() {
-            self.out_rgb2.next = 0.into();
+            self.out.rgb2.next = 0.into();
         }
         self.idle.next = !self.busy.q.val();
 
         // Handshakes: the walk moves on unless a pixel waits; a command is taken when
         // idle or as the last pixel leaves.
         self.at_last.next = self.drop.q.val() | (self.x.q.val() == self.last.q.val());
-        self.advance.next = self.busy.q.val() & (!self.valid.val() | self.out_ready.val());
+        self.advance.next = self.busy.q.val() & (!self.valid.val() | self.out.ready.val());
         self.ready.next = !self.busy.q.val() | (self.at_last.val() & self.advance.val());
         self.inp_ready.next = self.ready.val();
         self.accept.next = self.inp_valid.val() & self.ready.val();
@@ -257,9 +250,9 @@ crate::pins!(Span {
         inp_ddx_c0,
         inp_ddx_c1,
         inp_ddx_c2,
-        out_ready,
     ],
-    outputs: [inp_ready, out_valid, out_x, out_y, out_z, out_rgb0, out_rgb1, out_rgb2, idle],
+    outputs: [inp_ready, idle],
+    links: [out],
 });
 
 /// `UNITS` entry: the span unit (no parameters: widths from `crate::widths`).

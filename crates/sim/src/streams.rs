@@ -1,14 +1,18 @@
 //! The model's transactions as port values, and back: a set-up triangle
 //! (`model::triangle_setup::TriangleSetupOut`), a span command (`model::edge_walk::SpanCmd`) and a
 //! pixel (`model::span::Pixel`), each flattened into ports `<prefix>_<field>` with nested
-//! fields joined by `_`, as the RTL names them (`inp_maj_at_c0`, `out_left_z`, `out_rgb2`).
+//! fields joined by `_`, as the RTL names them (`inp_maj_at_c0`, `out_left_z`); the links
+//! declared in `rtl::links` as `<end>$<field>` (`out$rgb2`), their fields and widths read off
+//! the declaration.
 //! Widths come from `rtl::widths`, so a value that does not fit its port fails here.
 
 use crate::{Outputs, Value};
 use model::edge_walk::SpanCmd;
 use model::span::Pixel;
 use model::triangle_setup::{Attrs, Edge, TriangleSetupOut, Walk};
-use rtl::widths::{CHANNEL, C_ACC, DC, DEPTH, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
+use rtl::link::Link;
+use rtl::links::PixelSink;
+use rtl::widths::{C_ACC, DC, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
 
 /// Named port values, ready for `Dual::cycle` (through [`as_pins`]).
 pub type PinValues = Vec<(String, Value)>;
@@ -96,25 +100,32 @@ pub fn span_cmd_of(o: &Outputs, prefix: &str) -> SpanCmd {
     }
 }
 
-/// A pixel on ports `<prefix>_*` (`pixel_out`'s `inp_*`).
-pub fn pixel(prefix: &str, p: &Pixel) -> PinValues {
-    let mut out = vec![
-        (format!("{prefix}_x"), raw(SCREEN, p.x as i128)),
-        (format!("{prefix}_y"), raw(SCREEN, p.y as i128)),
-        (format!("{prefix}_z"), raw(DEPTH, p.z as i128)),
-    ];
-    for (i, c) in p.rgb.iter().enumerate() {
-        out.push((format!("{prefix}_rgb{i}"), raw(CHANNEL, *c as i128)));
-    }
-    out
+/// The values of a link's fields on end `end` of a unit (pins `<end>$<field>`, each at the
+/// link's width), `value` giving each field's value by name.
+fn link_pins<L: Link>(end: &str, value: impl Fn(&str) -> i128) -> PinValues {
+    L::FIELDS.iter().zip(L::WIDTHS).map(|(f, w)| (format!("{end}${f}"), raw(*w, value(f)))).collect()
 }
 
-/// The pixel on output ports `<prefix>_*` (`span`'s `out_*`).
-pub fn pixel_of(o: &Outputs, prefix: &str) -> Pixel {
+/// A pixel on the pins of link end `end` (`pixel_out`'s `inp`: `links::PixelSink`).
+pub fn pixel(end: &str, p: &Pixel) -> PinValues {
+    link_pins::<PixelSink>(end, |field| match field {
+        "x" => p.x as i128,
+        "y" => p.y as i128,
+        "z" => p.z as i128,
+        "rgb0" => p.rgb[0] as i128,
+        "rgb1" => p.rgb[1] as i128,
+        "rgb2" => p.rgb[2] as i128,
+        _ => panic!("model::span::Pixel has no field {field}"),
+    })
+}
+
+/// The pixel on the pins of link end `end` (`span`'s `out`: `links::PixelSource`).
+pub fn pixel_of(o: &Outputs, end: &str) -> Pixel {
+    let get = |field: &str| unsigned(o.get(&format!("{end}${field}")));
     Pixel {
-        x: unsigned(o.get(&format!("{prefix}_x"))) as u32,
-        y: unsigned(o.get(&format!("{prefix}_y"))) as u32,
-        z: unsigned(o.get(&format!("{prefix}_z"))) as u32,
-        rgb: std::array::from_fn(|i| unsigned(o.get(&format!("{prefix}_rgb{i}"))) as u8),
+        x: get("x") as u32,
+        y: get("y") as u32,
+        z: get("z") as u32,
+        rgb: std::array::from_fn(|i| get(&format!("rgb{i}")) as u8),
     }
 }

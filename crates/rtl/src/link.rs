@@ -1,0 +1,118 @@
+//! The links between units, each declared once ([`link!`](crate::link)): a valid/ready
+//! stream carrying one of the models' transactions, field for field.
+//!
+//! A declaration gives the link's two ends as rust-hdl interfaces: the sending unit's
+//! (`valid` and every field out, `ready` in) and the receiving unit's (the opposite). A unit
+//! holds an end as one field (`pub out: PixelSource`), its kernel reads and drives
+//! `self.out.x`, a design connects two units with `PixelSource::join(&mut self.span.out,
+//! &mut self.pixel_out.inp)` and passes its own port to a unit's with `PixelSink::link(&mut
+//! self.inp, &mut self.pixel_out.inp)`. In the Verilog the ports are `<end>$<field>`
+//! (`out$x`, `inp$valid`), as rust-hdl names an interface's signals; the testbenches reach
+//! them by those names through [`LinkPins`], and convert the model's transactions through
+//! [`Link::FIELDS`].
+
+use crate::sim::Value;
+
+/// One end of a link, by field name: what the simulators' pins need.
+pub trait LinkPins {
+    /// Drives input field `field`; `false` when this end has no such input.
+    fn set(&mut self, field: &str, value: &Value) -> bool;
+    /// Reads field `field` (an input or an output); `None` when there is none.
+    fn get(&self, field: &str) -> Option<Value>;
+}
+
+/// What both ends of a link share: its fields, in declaration order.
+pub trait Link {
+    /// The fields (without `valid` and `ready`), in declaration order.
+    const FIELDS: &'static [&'static str];
+    /// Their widths in bits, in the same order.
+    const WIDTHS: &'static [usize];
+}
+
+/// Declares a link: its two ends, `$source` and `$sink`, with the fields given (each a
+/// `Bit` or `Bits<N>`), plus `valid` and `ready`. See the module's documentation.
+#[macro_export]
+macro_rules! link {
+    (
+        $(#[$meta:meta])*
+        $source:ident => $sink:ident {
+            $( $(#[$fmeta:meta])* $field:ident : $ty:ty ),* $(,)?
+        }
+    ) => {
+        $(#[$meta])*
+        ///
+        /// The sending end: `valid` and the fields out, `ready` in.
+        #[derive(LogicInterface, Default)]
+        pub struct $source {
+            pub valid: Signal<Out, Bit>,
+            pub ready: Signal<In, Bit>,
+            $( $(#[$fmeta])* pub $field: Signal<Out, $ty>, )*
+        }
+
+        $(#[$meta])*
+        ///
+        /// The receiving end: `valid` and the fields in, `ready` out.
+        #[derive(LogicInterface, Default)]
+        pub struct $sink {
+            pub valid: Signal<In, Bit>,
+            pub ready: Signal<Out, Bit>,
+            $( $(#[$fmeta])* pub $field: Signal<In, $ty>, )*
+        }
+
+        impl $source {
+            /// Connects this end to `sink` (in a kernel: `Source::join(&mut a, &mut b)`).
+            pub fn join(&mut self, sink: &mut $sink) {
+                self.valid.join(&mut sink.valid);
+                self.ready.join(&mut sink.ready);
+                $( self.$field.join(&mut sink.$field); )*
+            }
+        }
+
+        impl $crate::link::Link for $source {
+            const FIELDS: &'static [&'static str] = &[$(stringify!($field)),*];
+            const WIDTHS: &'static [usize] = &[$(<$ty as Synth>::BITS),*];
+        }
+
+        impl $crate::link::Link for $sink {
+            const FIELDS: &'static [&'static str] = <$source as $crate::link::Link>::FIELDS;
+            const WIDTHS: &'static [usize] = <$source as $crate::link::Link>::WIDTHS;
+        }
+
+        impl $crate::link::LinkPins for $source {
+            fn set(&mut self, field: &str, value: &$crate::sim::Value) -> bool {
+                if field != "ready" {
+                    return false;
+                }
+                self.ready.next = $crate::sim::PinValue::from_value(value);
+                true
+            }
+            fn get(&self, field: &str) -> Option<$crate::sim::Value> {
+                match field {
+                    "valid" => Some($crate::sim::PinValue::to_value(&self.valid.val())),
+                    "ready" => Some($crate::sim::PinValue::to_value(&self.ready.val())),
+                    $( stringify!($field) => Some($crate::sim::PinValue::to_value(&self.$field.val())), )*
+                    _ => None,
+                }
+            }
+        }
+
+        impl $crate::link::LinkPins for $sink {
+            fn set(&mut self, field: &str, value: &$crate::sim::Value) -> bool {
+                match field {
+                    "valid" => self.valid.next = $crate::sim::PinValue::from_value(value),
+                    $( stringify!($field) => self.$field.next = $crate::sim::PinValue::from_value(value), )*
+                    _ => return false,
+                }
+                true
+            }
+            fn get(&self, field: &str) -> Option<$crate::sim::Value> {
+                match field {
+                    "valid" => Some($crate::sim::PinValue::to_value(&self.valid.val())),
+                    "ready" => Some($crate::sim::PinValue::to_value(&self.ready.val())),
+                    $( stringify!($field) => Some($crate::sim::PinValue::to_value(&self.$field.val())), )*
+                    _ => None,
+                }
+            }
+        }
+    };
+}
