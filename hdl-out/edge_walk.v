@@ -1,6 +1,6 @@
 
 
-module edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_left,inp_maj_j,inp_maj_count,inp_maj_x,inp_maj_r,inp_maj_q,inp_maj_rho,inp_maj_d,inp_maj_at_z,inp_maj_at_c0,inp_maj_at_c1,inp_maj_at_c2,inp_maj_inc0_z,inp_maj_inc0_c0,inp_maj_inc0_c1,inp_maj_inc0_c2,inp_maj_inc1_z,inp_maj_inc1_c0,inp_maj_inc1_c1,inp_maj_inc1_c2,inp_short0_j,inp_short0_count,inp_short0_x,inp_short0_r,inp_short0_q,inp_short0_rho,inp_short0_d,inp_short0_at_z,inp_short0_at_c0,inp_short0_at_c1,inp_short0_at_c2,inp_short0_inc0_z,inp_short0_inc0_c0,inp_short0_inc0_c1,inp_short0_inc0_c2,inp_short0_inc1_z,inp_short0_inc1_c0,inp_short0_inc1_c1,inp_short0_inc1_c2,inp_short1_j,inp_short1_count,inp_short1_x,inp_short1_r,inp_short1_q,inp_short1_rho,inp_short1_d,inp_short1_at_z,inp_short1_at_c0,inp_short1_at_c1,inp_short1_at_c2,inp_short1_inc0_z,inp_short1_inc0_c0,inp_short1_inc0_c1,inp_short1_inc0_c2,inp_short1_inc1_z,inp_short1_inc1_c0,inp_short1_inc1_c1,inp_short1_inc1_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_y,out_xl,out_xr,out_left_z,out_left_c0,out_left_c1,out_left_c2,out_right_z,out_right_c0,out_right_c1,out_right_c2,out_ddx_z,out_ddx_c0,out_ddx_c1,out_ddx_c2);
+module edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_left,inp_maj_j,inp_maj_count,inp_maj_x,inp_maj_r,inp_maj_q,inp_maj_rho,inp_maj_d,inp_maj_at_z,inp_maj_at_c0,inp_maj_at_c1,inp_maj_at_c2,inp_maj_inc0_z,inp_maj_inc0_c0,inp_maj_inc0_c1,inp_maj_inc0_c2,inp_maj_inc1_z,inp_maj_inc1_c0,inp_maj_inc1_c1,inp_maj_inc1_c2,inp_short0_j,inp_short0_count,inp_short0_x,inp_short0_r,inp_short0_q,inp_short0_rho,inp_short0_d,inp_short0_at_z,inp_short0_at_c0,inp_short0_at_c1,inp_short0_at_c2,inp_short0_inc0_z,inp_short0_inc0_c0,inp_short0_inc0_c1,inp_short0_inc0_c2,inp_short0_inc1_z,inp_short0_inc1_c0,inp_short0_inc1_c1,inp_short0_inc1_c2,inp_short1_j,inp_short1_count,inp_short1_x,inp_short1_r,inp_short1_q,inp_short1_rho,inp_short1_d,inp_short1_at_z,inp_short1_at_c0,inp_short1_at_c1,inp_short1_at_c2,inp_short1_inc0_z,inp_short1_inc0_c0,inp_short1_inc0_c1,inp_short1_inc0_c2,inp_short1_inc1_z,inp_short1_inc1_c0,inp_short1_inc1_c1,inp_short1_inc1_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
     
     // Module arguments
     input wire  clock;
@@ -70,23 +70,23 @@ module edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_left,inp_maj_
     input wire  [35:0] inp_ddx_c0;
     input wire  [35:0] inp_ddx_c1;
     input wire  [35:0] inp_ddx_c2;
-    output reg  out_valid;
-    input wire  out_ready;
-    output reg  [9:0] out_y;
-    output reg  [12:0] out_xl;
-    output reg  [12:0] out_xr;
-    output reg  [35:0] out_left_z;
-    output reg  [31:0] out_left_c0;
-    output reg  [31:0] out_left_c1;
-    output reg  [31:0] out_left_c2;
-    output reg  [35:0] out_right_z;
-    output reg  [31:0] out_right_c0;
-    output reg  [31:0] out_right_c1;
-    output reg  [31:0] out_right_c2;
-    output reg  [39:0] out_ddx_z;
-    output reg  [35:0] out_ddx_c0;
-    output reg  [35:0] out_ddx_c1;
-    output reg  [35:0] out_ddx_c2;
+    output reg  out$valid;
+    input wire  out$ready;
+    output reg  [9:0] out$y;
+    output reg  [12:0] out$xl;
+    output reg  [12:0] out$xr;
+    output reg  [35:0] out$left_z;
+    output reg  [31:0] out$left_c0;
+    output reg  [31:0] out$left_c1;
+    output reg  [31:0] out$left_c2;
+    output reg  [35:0] out$right_z;
+    output reg  [31:0] out$right_c0;
+    output reg  [31:0] out$right_c1;
+    output reg  [31:0] out$right_c2;
+    output reg  [39:0] out$ddx_z;
+    output reg  [35:0] out$ddx_c0;
+    output reg  [35:0] out$ddx_c1;
+    output reg  [35:0] out$ddx_c2;
     
     // Stub signals
     reg  maj$clock;
@@ -546,42 +546,42 @@ module edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_left,inp_maj_
         else if (~j_sign$neg & (j$q >= height_j)) begin
             no_rows = 1'b1;
         end
-        out_y = ((j$q) & 10'h3ff);
-        out_ddx_z = ddx_z$q;
-        out_ddx_c0 = ddx_c0$q;
-        out_ddx_c1 = ddx_c1$q;
-        out_ddx_c2 = ddx_c2$q;
+        out$y = ((j$q) & 10'h3ff);
+        out$ddx_z = ddx_z$q;
+        out$ddx_c0 = ddx_c0$q;
+        out$ddx_c1 = ddx_c1$q;
+        out$ddx_c2 = ddx_c2$q;
         if (maj_left$q) begin
             sides$a = maj$x;
             sides$b = cur$x;
-            out_xl = maj$x;
-            out_xr = cur$x - 32'h1;
-            out_left_z = maj$at_z;
-            out_left_c0 = maj$at_c0;
-            out_left_c1 = maj$at_c1;
-            out_left_c2 = maj$at_c2;
-            out_right_z = cur$at_z;
-            out_right_c0 = cur$at_c0;
-            out_right_c1 = cur$at_c1;
-            out_right_c2 = cur$at_c2;
+            out$xl = maj$x;
+            out$xr = cur$x - 32'h1;
+            out$left_z = maj$at_z;
+            out$left_c0 = maj$at_c0;
+            out$left_c1 = maj$at_c1;
+            out$left_c2 = maj$at_c2;
+            out$right_z = cur$at_z;
+            out$right_c0 = cur$at_c0;
+            out$right_c1 = cur$at_c1;
+            out$right_c2 = cur$at_c2;
         end
         else begin
             sides$a = cur$x;
             sides$b = maj$x;
-            out_xl = cur$x;
-            out_xr = maj$x - 32'h1;
-            out_left_z = cur$at_z;
-            out_left_c0 = cur$at_c0;
-            out_left_c1 = cur$at_c1;
-            out_left_c2 = cur$at_c2;
-            out_right_z = maj$at_z;
-            out_right_c0 = maj$at_c0;
-            out_right_c1 = maj$at_c1;
-            out_right_c2 = maj$at_c2;
+            out$xl = cur$x;
+            out$xr = maj$x - 32'h1;
+            out$left_z = cur$at_z;
+            out$left_c0 = cur$at_c0;
+            out$left_c1 = cur$at_c1;
+            out$left_c2 = cur$at_c2;
+            out$right_z = maj$at_z;
+            out$right_c0 = maj$at_c0;
+            out$right_c1 = maj$at_c1;
+            out$right_c2 = maj$at_c2;
         end
         valid = busy$q & walking$q & ~j_sign$neg & sides$lt;
-        out_valid = valid;
-        advance = busy$q & walking$q & (~valid | out_ready);
+        out$valid = valid;
+        advance = busy$q & walking$q & (~valid | out$ready);
         switch = 1'b0;
         if (busy$q & ~walking$q & (c0$q == 32'h0)) begin
             switch = 1'b1;

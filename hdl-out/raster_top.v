@@ -554,78 +554,78 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
     reg  [35:0] edge_walk$inp_ddx_c0;
     reg  [35:0] edge_walk$inp_ddx_c1;
     reg  [35:0] edge_walk$inp_ddx_c2;
-    wire  edge_walk$out_valid;
-    reg  edge_walk$out_ready;
-    wire  [9:0] edge_walk$out_y;
-    wire  [12:0] edge_walk$out_xl;
-    wire  [12:0] edge_walk$out_xr;
-    wire  [35:0] edge_walk$out_left_z;
-    wire  [31:0] edge_walk$out_left_c0;
-    wire  [31:0] edge_walk$out_left_c1;
-    wire  [31:0] edge_walk$out_left_c2;
-    wire  [35:0] edge_walk$out_right_z;
-    wire  [31:0] edge_walk$out_right_c0;
-    wire  [31:0] edge_walk$out_right_c1;
-    wire  [31:0] edge_walk$out_right_c2;
-    wire  [39:0] edge_walk$out_ddx_z;
-    wire  [35:0] edge_walk$out_ddx_c0;
-    wire  [35:0] edge_walk$out_ddx_c1;
-    wire  [35:0] edge_walk$out_ddx_c2;
+    wire  edge_walk$out$valid;
+    reg  edge_walk$out$ready;
+    wire  [9:0] edge_walk$out$y;
+    wire  [12:0] edge_walk$out$xl;
+    wire  [12:0] edge_walk$out$xr;
+    wire  [35:0] edge_walk$out$left_z;
+    wire  [31:0] edge_walk$out$left_c0;
+    wire  [31:0] edge_walk$out$left_c1;
+    wire  [31:0] edge_walk$out$left_c2;
+    wire  [35:0] edge_walk$out$right_z;
+    wire  [31:0] edge_walk$out$right_c0;
+    wire  [31:0] edge_walk$out$right_c1;
+    wire  [31:0] edge_walk$out$right_c2;
+    wire  [39:0] edge_walk$out$ddx_z;
+    wire  [35:0] edge_walk$out$ddx_c0;
+    wire  [35:0] edge_walk$out$ddx_c1;
+    wire  [35:0] edge_walk$out$ddx_c2;
     reg  fifo$clock;
-    reg  fifo$inp_valid;
-    wire  fifo$inp_ready;
-    reg  [9:0] fifo$inp_y;
-    reg  [12:0] fifo$inp_xl;
-    reg  [12:0] fifo$inp_xr;
-    reg  [35:0] fifo$inp_left_z;
-    reg  [31:0] fifo$inp_left_c0;
-    reg  [31:0] fifo$inp_left_c1;
-    reg  [31:0] fifo$inp_left_c2;
-    reg  [35:0] fifo$inp_right_z;
-    reg  [31:0] fifo$inp_right_c0;
-    reg  [31:0] fifo$inp_right_c1;
-    reg  [31:0] fifo$inp_right_c2;
-    reg  [39:0] fifo$inp_ddx_z;
-    reg  [35:0] fifo$inp_ddx_c0;
-    reg  [35:0] fifo$inp_ddx_c1;
-    reg  [35:0] fifo$inp_ddx_c2;
-    wire  fifo$out_valid;
-    reg  fifo$out_ready;
-    wire  [9:0] fifo$out_y;
-    wire  [12:0] fifo$out_xl;
-    wire  [12:0] fifo$out_xr;
-    wire  [35:0] fifo$out_left_z;
-    wire  [31:0] fifo$out_left_c0;
-    wire  [31:0] fifo$out_left_c1;
-    wire  [31:0] fifo$out_left_c2;
-    wire  [35:0] fifo$out_right_z;
-    wire  [31:0] fifo$out_right_c0;
-    wire  [31:0] fifo$out_right_c1;
-    wire  [31:0] fifo$out_right_c2;
-    wire  [39:0] fifo$out_ddx_z;
-    wire  [35:0] fifo$out_ddx_c0;
-    wire  [35:0] fifo$out_ddx_c1;
-    wire  [35:0] fifo$out_ddx_c2;
+    reg  fifo$inp$valid;
+    wire  fifo$inp$ready;
+    reg  [9:0] fifo$inp$y;
+    reg  [12:0] fifo$inp$xl;
+    reg  [12:0] fifo$inp$xr;
+    reg  [35:0] fifo$inp$left_z;
+    reg  [31:0] fifo$inp$left_c0;
+    reg  [31:0] fifo$inp$left_c1;
+    reg  [31:0] fifo$inp$left_c2;
+    reg  [35:0] fifo$inp$right_z;
+    reg  [31:0] fifo$inp$right_c0;
+    reg  [31:0] fifo$inp$right_c1;
+    reg  [31:0] fifo$inp$right_c2;
+    reg  [39:0] fifo$inp$ddx_z;
+    reg  [35:0] fifo$inp$ddx_c0;
+    reg  [35:0] fifo$inp$ddx_c1;
+    reg  [35:0] fifo$inp$ddx_c2;
+    wire  fifo$out$valid;
+    reg  fifo$out$ready;
+    wire  [9:0] fifo$out$y;
+    wire  [12:0] fifo$out$xl;
+    wire  [12:0] fifo$out$xr;
+    wire  [35:0] fifo$out$left_z;
+    wire  [31:0] fifo$out$left_c0;
+    wire  [31:0] fifo$out$left_c1;
+    wire  [31:0] fifo$out$left_c2;
+    wire  [35:0] fifo$out$right_z;
+    wire  [31:0] fifo$out$right_c0;
+    wire  [31:0] fifo$out$right_c1;
+    wire  [31:0] fifo$out$right_c2;
+    wire  [39:0] fifo$out$ddx_z;
+    wire  [35:0] fifo$out$ddx_c0;
+    wire  [35:0] fifo$out$ddx_c1;
+    wire  [35:0] fifo$out$ddx_c2;
     wire  fifo$empty;
     reg  span$clock;
     reg  [10:0] span$width;
-    reg  span$inp_valid;
-    wire  span$inp_ready;
-    reg  [9:0] span$inp_y;
-    reg  [12:0] span$inp_xl;
-    reg  [12:0] span$inp_xr;
-    reg  [35:0] span$inp_left_z;
-    reg  [31:0] span$inp_left_c0;
-    reg  [31:0] span$inp_left_c1;
-    reg  [31:0] span$inp_left_c2;
-    reg  [35:0] span$inp_right_z;
-    reg  [31:0] span$inp_right_c0;
-    reg  [31:0] span$inp_right_c1;
-    reg  [31:0] span$inp_right_c2;
-    reg  [39:0] span$inp_ddx_z;
-    reg  [35:0] span$inp_ddx_c0;
-    reg  [35:0] span$inp_ddx_c1;
-    reg  [35:0] span$inp_ddx_c2;
+    reg  span$inp$valid;
+    wire  span$inp$ready;
+    reg  [9:0] span$inp$y;
+    reg  [12:0] span$inp$xl;
+    reg  [12:0] span$inp$xr;
+    reg  [35:0] span$inp$left_z;
+    reg  [31:0] span$inp$left_c0;
+    reg  [31:0] span$inp$left_c1;
+    reg  [31:0] span$inp$left_c2;
+    reg  [35:0] span$inp$right_z;
+    reg  [31:0] span$inp$right_c0;
+    reg  [31:0] span$inp$right_c1;
+    reg  [31:0] span$inp$right_c2;
+    reg  [39:0] span$inp$ddx_z;
+    reg  [35:0] span$inp$ddx_c0;
+    reg  [35:0] span$inp$ddx_c1;
+    reg  [35:0] span$inp$ddx_c2;
     wire  span$idle;
     reg  in_setup$d;
     wire  in_setup$q;
@@ -789,82 +789,82 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
         .inp_ddx_c0(edge_walk$inp_ddx_c0),
         .inp_ddx_c1(edge_walk$inp_ddx_c1),
         .inp_ddx_c2(edge_walk$inp_ddx_c2),
-        .out_valid(edge_walk$out_valid),
-        .out_ready(edge_walk$out_ready),
-        .out_y(edge_walk$out_y),
-        .out_xl(edge_walk$out_xl),
-        .out_xr(edge_walk$out_xr),
-        .out_left_z(edge_walk$out_left_z),
-        .out_left_c0(edge_walk$out_left_c0),
-        .out_left_c1(edge_walk$out_left_c1),
-        .out_left_c2(edge_walk$out_left_c2),
-        .out_right_z(edge_walk$out_right_z),
-        .out_right_c0(edge_walk$out_right_c0),
-        .out_right_c1(edge_walk$out_right_c1),
-        .out_right_c2(edge_walk$out_right_c2),
-        .out_ddx_z(edge_walk$out_ddx_z),
-        .out_ddx_c0(edge_walk$out_ddx_c0),
-        .out_ddx_c1(edge_walk$out_ddx_c1),
-        .out_ddx_c2(edge_walk$out_ddx_c2)
+        .out$valid(edge_walk$out$valid),
+        .out$ready(edge_walk$out$ready),
+        .out$y(edge_walk$out$y),
+        .out$xl(edge_walk$out$xl),
+        .out$xr(edge_walk$out$xr),
+        .out$left_z(edge_walk$out$left_z),
+        .out$left_c0(edge_walk$out$left_c0),
+        .out$left_c1(edge_walk$out$left_c1),
+        .out$left_c2(edge_walk$out$left_c2),
+        .out$right_z(edge_walk$out$right_z),
+        .out$right_c0(edge_walk$out$right_c0),
+        .out$right_c1(edge_walk$out$right_c1),
+        .out$right_c2(edge_walk$out$right_c2),
+        .out$ddx_z(edge_walk$out$ddx_z),
+        .out$ddx_c0(edge_walk$out$ddx_c0),
+        .out$ddx_c1(edge_walk$out$ddx_c1),
+        .out$ddx_c2(edge_walk$out$ddx_c2)
     );
     raster_top$core$fifo fifo(
         .clock(fifo$clock),
-        .inp_valid(fifo$inp_valid),
-        .inp_ready(fifo$inp_ready),
-        .inp_y(fifo$inp_y),
-        .inp_xl(fifo$inp_xl),
-        .inp_xr(fifo$inp_xr),
-        .inp_left_z(fifo$inp_left_z),
-        .inp_left_c0(fifo$inp_left_c0),
-        .inp_left_c1(fifo$inp_left_c1),
-        .inp_left_c2(fifo$inp_left_c2),
-        .inp_right_z(fifo$inp_right_z),
-        .inp_right_c0(fifo$inp_right_c0),
-        .inp_right_c1(fifo$inp_right_c1),
-        .inp_right_c2(fifo$inp_right_c2),
-        .inp_ddx_z(fifo$inp_ddx_z),
-        .inp_ddx_c0(fifo$inp_ddx_c0),
-        .inp_ddx_c1(fifo$inp_ddx_c1),
-        .inp_ddx_c2(fifo$inp_ddx_c2),
-        .out_valid(fifo$out_valid),
-        .out_ready(fifo$out_ready),
-        .out_y(fifo$out_y),
-        .out_xl(fifo$out_xl),
-        .out_xr(fifo$out_xr),
-        .out_left_z(fifo$out_left_z),
-        .out_left_c0(fifo$out_left_c0),
-        .out_left_c1(fifo$out_left_c1),
-        .out_left_c2(fifo$out_left_c2),
-        .out_right_z(fifo$out_right_z),
-        .out_right_c0(fifo$out_right_c0),
-        .out_right_c1(fifo$out_right_c1),
-        .out_right_c2(fifo$out_right_c2),
-        .out_ddx_z(fifo$out_ddx_z),
-        .out_ddx_c0(fifo$out_ddx_c0),
-        .out_ddx_c1(fifo$out_ddx_c1),
-        .out_ddx_c2(fifo$out_ddx_c2),
+        .inp$valid(fifo$inp$valid),
+        .inp$ready(fifo$inp$ready),
+        .inp$y(fifo$inp$y),
+        .inp$xl(fifo$inp$xl),
+        .inp$xr(fifo$inp$xr),
+        .inp$left_z(fifo$inp$left_z),
+        .inp$left_c0(fifo$inp$left_c0),
+        .inp$left_c1(fifo$inp$left_c1),
+        .inp$left_c2(fifo$inp$left_c2),
+        .inp$right_z(fifo$inp$right_z),
+        .inp$right_c0(fifo$inp$right_c0),
+        .inp$right_c1(fifo$inp$right_c1),
+        .inp$right_c2(fifo$inp$right_c2),
+        .inp$ddx_z(fifo$inp$ddx_z),
+        .inp$ddx_c0(fifo$inp$ddx_c0),
+        .inp$ddx_c1(fifo$inp$ddx_c1),
+        .inp$ddx_c2(fifo$inp$ddx_c2),
+        .out$valid(fifo$out$valid),
+        .out$ready(fifo$out$ready),
+        .out$y(fifo$out$y),
+        .out$xl(fifo$out$xl),
+        .out$xr(fifo$out$xr),
+        .out$left_z(fifo$out$left_z),
+        .out$left_c0(fifo$out$left_c0),
+        .out$left_c1(fifo$out$left_c1),
+        .out$left_c2(fifo$out$left_c2),
+        .out$right_z(fifo$out$right_z),
+        .out$right_c0(fifo$out$right_c0),
+        .out$right_c1(fifo$out$right_c1),
+        .out$right_c2(fifo$out$right_c2),
+        .out$ddx_z(fifo$out$ddx_z),
+        .out$ddx_c0(fifo$out$ddx_c0),
+        .out$ddx_c1(fifo$out$ddx_c1),
+        .out$ddx_c2(fifo$out$ddx_c2),
         .empty(fifo$empty)
     );
     raster_top$core$span span(
         .clock(span$clock),
         .width(span$width),
-        .inp_valid(span$inp_valid),
-        .inp_ready(span$inp_ready),
-        .inp_y(span$inp_y),
-        .inp_xl(span$inp_xl),
-        .inp_xr(span$inp_xr),
-        .inp_left_z(span$inp_left_z),
-        .inp_left_c0(span$inp_left_c0),
-        .inp_left_c1(span$inp_left_c1),
-        .inp_left_c2(span$inp_left_c2),
-        .inp_right_z(span$inp_right_z),
-        .inp_right_c0(span$inp_right_c0),
-        .inp_right_c1(span$inp_right_c1),
-        .inp_right_c2(span$inp_right_c2),
-        .inp_ddx_z(span$inp_ddx_z),
-        .inp_ddx_c0(span$inp_ddx_c0),
-        .inp_ddx_c1(span$inp_ddx_c1),
-        .inp_ddx_c2(span$inp_ddx_c2),
+        .inp$valid(span$inp$valid),
+        .inp$ready(span$inp$ready),
+        .inp$y(span$inp$y),
+        .inp$xl(span$inp$xl),
+        .inp$xr(span$inp$xr),
+        .inp$left_z(span$inp$left_z),
+        .inp$left_c0(span$inp$left_c0),
+        .inp$left_c1(span$inp$left_c1),
+        .inp$left_c2(span$inp$left_c2),
+        .inp$right_z(span$inp$right_z),
+        .inp$right_c0(span$inp$right_c0),
+        .inp$right_c1(span$inp$right_c1),
+        .inp$right_c2(span$inp$right_c2),
+        .inp$ddx_z(span$inp$ddx_z),
+        .inp$ddx_c0(span$inp$ddx_c0),
+        .inp$ddx_c1(span$inp$ddx_c1),
+        .inp$ddx_c2(span$inp$ddx_c2),
         .out$valid(out$valid),
         .out$ready(out$ready),
         .out$x(out$x),
@@ -976,41 +976,7 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
         edge_walk$inp_ddx_c0 = triangle_setup$out_ddx_c0;
         edge_walk$inp_ddx_c1 = triangle_setup$out_ddx_c1;
         edge_walk$inp_ddx_c2 = triangle_setup$out_ddx_c2;
-        fifo$inp_valid = edge_walk$out_valid;
-        edge_walk$out_ready = fifo$inp_ready;
         span$width = width;
-        span$inp_valid = fifo$out_valid;
-        fifo$out_ready = span$inp_ready;
-        fifo$inp_y = edge_walk$out_y;
-        fifo$inp_xl = edge_walk$out_xl;
-        fifo$inp_xr = edge_walk$out_xr;
-        fifo$inp_left_z = edge_walk$out_left_z;
-        fifo$inp_left_c0 = edge_walk$out_left_c0;
-        fifo$inp_left_c1 = edge_walk$out_left_c1;
-        fifo$inp_left_c2 = edge_walk$out_left_c2;
-        fifo$inp_right_z = edge_walk$out_right_z;
-        fifo$inp_right_c0 = edge_walk$out_right_c0;
-        fifo$inp_right_c1 = edge_walk$out_right_c1;
-        fifo$inp_right_c2 = edge_walk$out_right_c2;
-        fifo$inp_ddx_z = edge_walk$out_ddx_z;
-        fifo$inp_ddx_c0 = edge_walk$out_ddx_c0;
-        fifo$inp_ddx_c1 = edge_walk$out_ddx_c1;
-        fifo$inp_ddx_c2 = edge_walk$out_ddx_c2;
-        span$inp_y = fifo$out_y;
-        span$inp_xl = fifo$out_xl;
-        span$inp_xr = fifo$out_xr;
-        span$inp_left_z = fifo$out_left_z;
-        span$inp_left_c0 = fifo$out_left_c0;
-        span$inp_left_c1 = fifo$out_left_c1;
-        span$inp_left_c2 = fifo$out_left_c2;
-        span$inp_right_z = fifo$out_right_z;
-        span$inp_right_c0 = fifo$out_right_c0;
-        span$inp_right_c1 = fifo$out_right_c1;
-        span$inp_right_c2 = fifo$out_right_c2;
-        span$inp_ddx_z = fifo$out_ddx_z;
-        span$inp_ddx_c0 = fifo$out_ddx_c0;
-        span$inp_ddx_c1 = fifo$out_ddx_c1;
-        span$inp_ddx_c2 = fifo$out_ddx_c2;
         if (inp_valid & triangle_setup$inp_ready) begin
             in_setup$d = 1'b1;
         end
@@ -1020,10 +986,44 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
         idle = ~in_setup$q & edge_walk$inp_ready & fifo$empty & span$idle;
     end
     
+    always @(*) fifo$inp$valid = edge_walk$out$valid;
+    always @(*) edge_walk$out$ready = fifo$inp$ready;
+    always @(*) fifo$inp$y = edge_walk$out$y;
+    always @(*) fifo$inp$xl = edge_walk$out$xl;
+    always @(*) fifo$inp$xr = edge_walk$out$xr;
+    always @(*) fifo$inp$left_z = edge_walk$out$left_z;
+    always @(*) fifo$inp$left_c0 = edge_walk$out$left_c0;
+    always @(*) fifo$inp$left_c1 = edge_walk$out$left_c1;
+    always @(*) fifo$inp$left_c2 = edge_walk$out$left_c2;
+    always @(*) fifo$inp$right_z = edge_walk$out$right_z;
+    always @(*) fifo$inp$right_c0 = edge_walk$out$right_c0;
+    always @(*) fifo$inp$right_c1 = edge_walk$out$right_c1;
+    always @(*) fifo$inp$right_c2 = edge_walk$out$right_c2;
+    always @(*) fifo$inp$ddx_z = edge_walk$out$ddx_z;
+    always @(*) fifo$inp$ddx_c0 = edge_walk$out$ddx_c0;
+    always @(*) fifo$inp$ddx_c1 = edge_walk$out$ddx_c1;
+    always @(*) fifo$inp$ddx_c2 = edge_walk$out$ddx_c2;
+    always @(*) span$inp$valid = fifo$out$valid;
+    always @(*) fifo$out$ready = span$inp$ready;
+    always @(*) span$inp$y = fifo$out$y;
+    always @(*) span$inp$xl = fifo$out$xl;
+    always @(*) span$inp$xr = fifo$out$xr;
+    always @(*) span$inp$left_z = fifo$out$left_z;
+    always @(*) span$inp$left_c0 = fifo$out$left_c0;
+    always @(*) span$inp$left_c1 = fifo$out$left_c1;
+    always @(*) span$inp$left_c2 = fifo$out$left_c2;
+    always @(*) span$inp$right_z = fifo$out$right_z;
+    always @(*) span$inp$right_c0 = fifo$out$right_c0;
+    always @(*) span$inp$right_c1 = fifo$out$right_c1;
+    always @(*) span$inp$right_c2 = fifo$out$right_c2;
+    always @(*) span$inp$ddx_z = fifo$out$ddx_z;
+    always @(*) span$inp$ddx_c0 = fifo$out$ddx_c0;
+    always @(*) span$inp$ddx_c1 = fifo$out$ddx_c1;
+    always @(*) span$inp$ddx_c2 = fifo$out$ddx_c2;
 endmodule // raster_top$core
 
 
-module raster_top$core$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_left,inp_maj_j,inp_maj_count,inp_maj_x,inp_maj_r,inp_maj_q,inp_maj_rho,inp_maj_d,inp_maj_at_z,inp_maj_at_c0,inp_maj_at_c1,inp_maj_at_c2,inp_maj_inc0_z,inp_maj_inc0_c0,inp_maj_inc0_c1,inp_maj_inc0_c2,inp_maj_inc1_z,inp_maj_inc1_c0,inp_maj_inc1_c1,inp_maj_inc1_c2,inp_short0_j,inp_short0_count,inp_short0_x,inp_short0_r,inp_short0_q,inp_short0_rho,inp_short0_d,inp_short0_at_z,inp_short0_at_c0,inp_short0_at_c1,inp_short0_at_c2,inp_short0_inc0_z,inp_short0_inc0_c0,inp_short0_inc0_c1,inp_short0_inc0_c2,inp_short0_inc1_z,inp_short0_inc1_c0,inp_short0_inc1_c1,inp_short0_inc1_c2,inp_short1_j,inp_short1_count,inp_short1_x,inp_short1_r,inp_short1_q,inp_short1_rho,inp_short1_d,inp_short1_at_z,inp_short1_at_c0,inp_short1_at_c1,inp_short1_at_c2,inp_short1_inc0_z,inp_short1_inc0_c0,inp_short1_inc0_c1,inp_short1_inc0_c2,inp_short1_inc1_z,inp_short1_inc1_c0,inp_short1_inc1_c1,inp_short1_inc1_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_y,out_xl,out_xr,out_left_z,out_left_c0,out_left_c1,out_left_c2,out_right_z,out_right_c0,out_right_c1,out_right_c2,out_ddx_z,out_ddx_c0,out_ddx_c1,out_ddx_c2);
+module raster_top$core$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_left,inp_maj_j,inp_maj_count,inp_maj_x,inp_maj_r,inp_maj_q,inp_maj_rho,inp_maj_d,inp_maj_at_z,inp_maj_at_c0,inp_maj_at_c1,inp_maj_at_c2,inp_maj_inc0_z,inp_maj_inc0_c0,inp_maj_inc0_c1,inp_maj_inc0_c2,inp_maj_inc1_z,inp_maj_inc1_c0,inp_maj_inc1_c1,inp_maj_inc1_c2,inp_short0_j,inp_short0_count,inp_short0_x,inp_short0_r,inp_short0_q,inp_short0_rho,inp_short0_d,inp_short0_at_z,inp_short0_at_c0,inp_short0_at_c1,inp_short0_at_c2,inp_short0_inc0_z,inp_short0_inc0_c0,inp_short0_inc0_c1,inp_short0_inc0_c2,inp_short0_inc1_z,inp_short0_inc1_c0,inp_short0_inc1_c1,inp_short0_inc1_c2,inp_short1_j,inp_short1_count,inp_short1_x,inp_short1_r,inp_short1_q,inp_short1_rho,inp_short1_d,inp_short1_at_z,inp_short1_at_c0,inp_short1_at_c1,inp_short1_at_c2,inp_short1_inc0_z,inp_short1_inc0_c0,inp_short1_inc0_c1,inp_short1_inc0_c2,inp_short1_inc1_z,inp_short1_inc1_c0,inp_short1_inc1_c1,inp_short1_inc1_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
     
     // Module arguments
     input wire  clock;
@@ -1093,23 +1093,23 @@ module raster_top$core$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_m
     input wire  [35:0] inp_ddx_c0;
     input wire  [35:0] inp_ddx_c1;
     input wire  [35:0] inp_ddx_c2;
-    output reg  out_valid;
-    input wire  out_ready;
-    output reg  [9:0] out_y;
-    output reg  [12:0] out_xl;
-    output reg  [12:0] out_xr;
-    output reg  [35:0] out_left_z;
-    output reg  [31:0] out_left_c0;
-    output reg  [31:0] out_left_c1;
-    output reg  [31:0] out_left_c2;
-    output reg  [35:0] out_right_z;
-    output reg  [31:0] out_right_c0;
-    output reg  [31:0] out_right_c1;
-    output reg  [31:0] out_right_c2;
-    output reg  [39:0] out_ddx_z;
-    output reg  [35:0] out_ddx_c0;
-    output reg  [35:0] out_ddx_c1;
-    output reg  [35:0] out_ddx_c2;
+    output reg  out$valid;
+    input wire  out$ready;
+    output reg  [9:0] out$y;
+    output reg  [12:0] out$xl;
+    output reg  [12:0] out$xr;
+    output reg  [35:0] out$left_z;
+    output reg  [31:0] out$left_c0;
+    output reg  [31:0] out$left_c1;
+    output reg  [31:0] out$left_c2;
+    output reg  [35:0] out$right_z;
+    output reg  [31:0] out$right_c0;
+    output reg  [31:0] out$right_c1;
+    output reg  [31:0] out$right_c2;
+    output reg  [39:0] out$ddx_z;
+    output reg  [35:0] out$ddx_c0;
+    output reg  [35:0] out$ddx_c1;
+    output reg  [35:0] out$ddx_c2;
     
     // Stub signals
     reg  maj$clock;
@@ -1569,42 +1569,42 @@ module raster_top$core$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_m
         else if (~j_sign$neg & (j$q >= height_j)) begin
             no_rows = 1'b1;
         end
-        out_y = ((j$q) & 10'h3ff);
-        out_ddx_z = ddx_z$q;
-        out_ddx_c0 = ddx_c0$q;
-        out_ddx_c1 = ddx_c1$q;
-        out_ddx_c2 = ddx_c2$q;
+        out$y = ((j$q) & 10'h3ff);
+        out$ddx_z = ddx_z$q;
+        out$ddx_c0 = ddx_c0$q;
+        out$ddx_c1 = ddx_c1$q;
+        out$ddx_c2 = ddx_c2$q;
         if (maj_left$q) begin
             sides$a = maj$x;
             sides$b = cur$x;
-            out_xl = maj$x;
-            out_xr = cur$x - 32'h1;
-            out_left_z = maj$at_z;
-            out_left_c0 = maj$at_c0;
-            out_left_c1 = maj$at_c1;
-            out_left_c2 = maj$at_c2;
-            out_right_z = cur$at_z;
-            out_right_c0 = cur$at_c0;
-            out_right_c1 = cur$at_c1;
-            out_right_c2 = cur$at_c2;
+            out$xl = maj$x;
+            out$xr = cur$x - 32'h1;
+            out$left_z = maj$at_z;
+            out$left_c0 = maj$at_c0;
+            out$left_c1 = maj$at_c1;
+            out$left_c2 = maj$at_c2;
+            out$right_z = cur$at_z;
+            out$right_c0 = cur$at_c0;
+            out$right_c1 = cur$at_c1;
+            out$right_c2 = cur$at_c2;
         end
         else begin
             sides$a = cur$x;
             sides$b = maj$x;
-            out_xl = cur$x;
-            out_xr = maj$x - 32'h1;
-            out_left_z = cur$at_z;
-            out_left_c0 = cur$at_c0;
-            out_left_c1 = cur$at_c1;
-            out_left_c2 = cur$at_c2;
-            out_right_z = maj$at_z;
-            out_right_c0 = maj$at_c0;
-            out_right_c1 = maj$at_c1;
-            out_right_c2 = maj$at_c2;
+            out$xl = cur$x;
+            out$xr = maj$x - 32'h1;
+            out$left_z = cur$at_z;
+            out$left_c0 = cur$at_c0;
+            out$left_c1 = cur$at_c1;
+            out$left_c2 = cur$at_c2;
+            out$right_z = maj$at_z;
+            out$right_c0 = maj$at_c0;
+            out$right_c1 = maj$at_c1;
+            out$right_c2 = maj$at_c2;
         end
         valid = busy$q & walking$q & ~j_sign$neg & sides$lt;
-        out_valid = valid;
-        advance = busy$q & walking$q & (~valid | out_ready);
+        out$valid = valid;
+        advance = busy$q & walking$q & (~valid | out$ready);
         switch = 1'b0;
         if (busy$q & ~walking$q & (c0$q == 32'h0)) begin
             switch = 1'b1;
@@ -4043,44 +4043,44 @@ module raster_top$core$edge_walk$walking(d,q,clock);
 endmodule // raster_top$core$edge_walk$walking
 
 
-module raster_top$core$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out_valid,out_ready,out_y,out_xl,out_xr,out_left_z,out_left_c0,out_left_c1,out_left_c2,out_right_z,out_right_c0,out_right_c1,out_right_c2,out_ddx_z,out_ddx_c0,out_ddx_c1,out_ddx_c2,empty);
+module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$left_c0,inp$left_c1,inp$left_c2,inp$right_z,inp$right_c0,inp$right_c1,inp$right_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,empty);
     
     // Module arguments
     input wire  clock;
-    input wire  inp_valid;
-    output reg  inp_ready;
-    input wire  [9:0] inp_y;
-    input wire  [12:0] inp_xl;
-    input wire  [12:0] inp_xr;
-    input wire  [35:0] inp_left_z;
-    input wire  [31:0] inp_left_c0;
-    input wire  [31:0] inp_left_c1;
-    input wire  [31:0] inp_left_c2;
-    input wire  [35:0] inp_right_z;
-    input wire  [31:0] inp_right_c0;
-    input wire  [31:0] inp_right_c1;
-    input wire  [31:0] inp_right_c2;
-    input wire  [39:0] inp_ddx_z;
-    input wire  [35:0] inp_ddx_c0;
-    input wire  [35:0] inp_ddx_c1;
-    input wire  [35:0] inp_ddx_c2;
-    output reg  out_valid;
-    input wire  out_ready;
-    output reg  [9:0] out_y;
-    output reg  [12:0] out_xl;
-    output reg  [12:0] out_xr;
-    output reg  [35:0] out_left_z;
-    output reg  [31:0] out_left_c0;
-    output reg  [31:0] out_left_c1;
-    output reg  [31:0] out_left_c2;
-    output reg  [35:0] out_right_z;
-    output reg  [31:0] out_right_c0;
-    output reg  [31:0] out_right_c1;
-    output reg  [31:0] out_right_c2;
-    output reg  [39:0] out_ddx_z;
-    output reg  [35:0] out_ddx_c0;
-    output reg  [35:0] out_ddx_c1;
-    output reg  [35:0] out_ddx_c2;
+    input wire  inp$valid;
+    output reg  inp$ready;
+    input wire  [9:0] inp$y;
+    input wire  [12:0] inp$xl;
+    input wire  [12:0] inp$xr;
+    input wire  [35:0] inp$left_z;
+    input wire  [31:0] inp$left_c0;
+    input wire  [31:0] inp$left_c1;
+    input wire  [31:0] inp$left_c2;
+    input wire  [35:0] inp$right_z;
+    input wire  [31:0] inp$right_c0;
+    input wire  [31:0] inp$right_c1;
+    input wire  [31:0] inp$right_c2;
+    input wire  [39:0] inp$ddx_z;
+    input wire  [35:0] inp$ddx_c0;
+    input wire  [35:0] inp$ddx_c1;
+    input wire  [35:0] inp$ddx_c2;
+    output reg  out$valid;
+    input wire  out$ready;
+    output reg  [9:0] out$y;
+    output reg  [12:0] out$xl;
+    output reg  [12:0] out$xr;
+    output reg  [35:0] out$left_z;
+    output reg  [31:0] out$left_c0;
+    output reg  [31:0] out$left_c1;
+    output reg  [31:0] out$left_c2;
+    output reg  [35:0] out$right_z;
+    output reg  [31:0] out$right_c0;
+    output reg  [31:0] out$right_c1;
+    output reg  [31:0] out$right_c2;
+    output reg  [39:0] out$ddx_z;
+    output reg  [35:0] out$ddx_c0;
+    output reg  [35:0] out$ddx_c1;
+    output reg  [35:0] out$ddx_c2;
     output reg  empty;
     
     // Stub signals
@@ -4323,11 +4323,11 @@ module raster_top$core$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_le
         count$clock = clock;
         count$d = count$q;
         level$count = count$q;
-        inp_ready = ~level$full;
-        out_valid = ~level$empty | inp_valid;
+        inp$ready = ~level$full;
+        out$valid = ~level$empty | inp$valid;
         empty = level$empty;
-        push = inp_valid & ~level$full & ~(level$empty & out_ready);
-        pop = ~level$empty & out_ready;
+        push = inp$valid & ~level$full & ~(level$empty & out$ready);
+        pop = ~level$empty & out$ready;
         wr = count$q;
         if (pop) begin
             wr = count$q - 32'h1;
@@ -4342,136 +4342,136 @@ module raster_top$core$fifo(clock,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_le
         y$push = push;
         y$pop = pop;
         y$wr = wr;
-        y$din = inp_y;
-        out_y = y$head;
+        y$din = inp$y;
+        out$y = y$head;
         if (level$empty) begin
-            out_y = inp_y;
+            out$y = inp$y;
         end
         xl$clock = clock;
         xl$push = push;
         xl$pop = pop;
         xl$wr = wr;
-        xl$din = inp_xl;
-        out_xl = xl$head;
+        xl$din = inp$xl;
+        out$xl = xl$head;
         if (level$empty) begin
-            out_xl = inp_xl;
+            out$xl = inp$xl;
         end
         xr$clock = clock;
         xr$push = push;
         xr$pop = pop;
         xr$wr = wr;
-        xr$din = inp_xr;
-        out_xr = xr$head;
+        xr$din = inp$xr;
+        out$xr = xr$head;
         if (level$empty) begin
-            out_xr = inp_xr;
+            out$xr = inp$xr;
         end
         left_z$clock = clock;
         left_z$push = push;
         left_z$pop = pop;
         left_z$wr = wr;
-        left_z$din = inp_left_z;
-        out_left_z = left_z$head;
+        left_z$din = inp$left_z;
+        out$left_z = left_z$head;
         if (level$empty) begin
-            out_left_z = inp_left_z;
+            out$left_z = inp$left_z;
         end
         left_c0$clock = clock;
         left_c0$push = push;
         left_c0$pop = pop;
         left_c0$wr = wr;
-        left_c0$din = inp_left_c0;
-        out_left_c0 = left_c0$head;
+        left_c0$din = inp$left_c0;
+        out$left_c0 = left_c0$head;
         if (level$empty) begin
-            out_left_c0 = inp_left_c0;
+            out$left_c0 = inp$left_c0;
         end
         left_c1$clock = clock;
         left_c1$push = push;
         left_c1$pop = pop;
         left_c1$wr = wr;
-        left_c1$din = inp_left_c1;
-        out_left_c1 = left_c1$head;
+        left_c1$din = inp$left_c1;
+        out$left_c1 = left_c1$head;
         if (level$empty) begin
-            out_left_c1 = inp_left_c1;
+            out$left_c1 = inp$left_c1;
         end
         left_c2$clock = clock;
         left_c2$push = push;
         left_c2$pop = pop;
         left_c2$wr = wr;
-        left_c2$din = inp_left_c2;
-        out_left_c2 = left_c2$head;
+        left_c2$din = inp$left_c2;
+        out$left_c2 = left_c2$head;
         if (level$empty) begin
-            out_left_c2 = inp_left_c2;
+            out$left_c2 = inp$left_c2;
         end
         right_z$clock = clock;
         right_z$push = push;
         right_z$pop = pop;
         right_z$wr = wr;
-        right_z$din = inp_right_z;
-        out_right_z = right_z$head;
+        right_z$din = inp$right_z;
+        out$right_z = right_z$head;
         if (level$empty) begin
-            out_right_z = inp_right_z;
+            out$right_z = inp$right_z;
         end
         right_c0$clock = clock;
         right_c0$push = push;
         right_c0$pop = pop;
         right_c0$wr = wr;
-        right_c0$din = inp_right_c0;
-        out_right_c0 = right_c0$head;
+        right_c0$din = inp$right_c0;
+        out$right_c0 = right_c0$head;
         if (level$empty) begin
-            out_right_c0 = inp_right_c0;
+            out$right_c0 = inp$right_c0;
         end
         right_c1$clock = clock;
         right_c1$push = push;
         right_c1$pop = pop;
         right_c1$wr = wr;
-        right_c1$din = inp_right_c1;
-        out_right_c1 = right_c1$head;
+        right_c1$din = inp$right_c1;
+        out$right_c1 = right_c1$head;
         if (level$empty) begin
-            out_right_c1 = inp_right_c1;
+            out$right_c1 = inp$right_c1;
         end
         right_c2$clock = clock;
         right_c2$push = push;
         right_c2$pop = pop;
         right_c2$wr = wr;
-        right_c2$din = inp_right_c2;
-        out_right_c2 = right_c2$head;
+        right_c2$din = inp$right_c2;
+        out$right_c2 = right_c2$head;
         if (level$empty) begin
-            out_right_c2 = inp_right_c2;
+            out$right_c2 = inp$right_c2;
         end
         ddx_z$clock = clock;
         ddx_z$push = push;
         ddx_z$pop = pop;
         ddx_z$wr = wr;
-        ddx_z$din = inp_ddx_z;
-        out_ddx_z = ddx_z$head;
+        ddx_z$din = inp$ddx_z;
+        out$ddx_z = ddx_z$head;
         if (level$empty) begin
-            out_ddx_z = inp_ddx_z;
+            out$ddx_z = inp$ddx_z;
         end
         ddx_c0$clock = clock;
         ddx_c0$push = push;
         ddx_c0$pop = pop;
         ddx_c0$wr = wr;
-        ddx_c0$din = inp_ddx_c0;
-        out_ddx_c0 = ddx_c0$head;
+        ddx_c0$din = inp$ddx_c0;
+        out$ddx_c0 = ddx_c0$head;
         if (level$empty) begin
-            out_ddx_c0 = inp_ddx_c0;
+            out$ddx_c0 = inp$ddx_c0;
         end
         ddx_c1$clock = clock;
         ddx_c1$push = push;
         ddx_c1$pop = pop;
         ddx_c1$wr = wr;
-        ddx_c1$din = inp_ddx_c1;
-        out_ddx_c1 = ddx_c1$head;
+        ddx_c1$din = inp$ddx_c1;
+        out$ddx_c1 = ddx_c1$head;
         if (level$empty) begin
-            out_ddx_c1 = inp_ddx_c1;
+            out$ddx_c1 = inp$ddx_c1;
         end
         ddx_c2$clock = clock;
         ddx_c2$push = push;
         ddx_c2$pop = pop;
         ddx_c2$wr = wr;
-        ddx_c2$din = inp_ddx_c2;
-        out_ddx_c2 = ddx_c2$head;
+        ddx_c2$din = inp$ddx_c2;
+        out$ddx_c2 = ddx_c2$head;
         if (level$empty) begin
-            out_ddx_c2 = inp_ddx_c2;
+            out$ddx_c2 = inp$ddx_c2;
         end
     end
     
@@ -6890,28 +6890,28 @@ module raster_top$core$in_setup(d,q,clock);
 endmodule // raster_top$core$in_setup
 
 
-module raster_top$core$span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
+module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$left_c0,inp$left_c1,inp$left_c2,inp$right_z,inp$right_c0,inp$right_c1,inp$right_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
     
     // Module arguments
     input wire  clock;
     input wire  [10:0] width;
-    input wire  inp_valid;
-    output reg  inp_ready;
-    input wire  [9:0] inp_y;
-    input wire  [12:0] inp_xl;
-    input wire  [12:0] inp_xr;
-    input wire  [35:0] inp_left_z;
-    input wire  [31:0] inp_left_c0;
-    input wire  [31:0] inp_left_c1;
-    input wire  [31:0] inp_left_c2;
-    input wire  [35:0] inp_right_z;
-    input wire  [31:0] inp_right_c0;
-    input wire  [31:0] inp_right_c1;
-    input wire  [31:0] inp_right_c2;
-    input wire  [39:0] inp_ddx_z;
-    input wire  [35:0] inp_ddx_c0;
-    input wire  [35:0] inp_ddx_c1;
-    input wire  [35:0] inp_ddx_c2;
+    input wire  inp$valid;
+    output reg  inp$ready;
+    input wire  [9:0] inp$y;
+    input wire  [12:0] inp$xl;
+    input wire  [12:0] inp$xr;
+    input wire  [35:0] inp$left_z;
+    input wire  [31:0] inp$left_c0;
+    input wire  [31:0] inp$left_c1;
+    input wire  [31:0] inp$left_c2;
+    input wire  [35:0] inp$right_z;
+    input wire  [31:0] inp$right_c0;
+    input wire  [31:0] inp$right_c1;
+    input wire  [31:0] inp$right_c2;
+    input wire  [39:0] inp$ddx_z;
+    input wire  [35:0] inp$ddx_c0;
+    input wire  [35:0] inp$ddx_c1;
+    input wire  [35:0] inp$ddx_c2;
     output reg  out$valid;
     input wire  out$ready;
     output reg  [9:0] out$x;
@@ -7191,8 +7191,8 @@ module raster_top$core$span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,
         at_last = drop$q | (x$q == last$q);
         advance = busy$q & (~valid | out$ready);
         ready = ~busy$q | (at_last & advance);
-        inp_ready = ready;
-        accept = inp_valid & ready;
+        inp$ready = ready;
+        accept = inp$valid & ready;
         if (advance) begin
             if (at_last) begin
                 busy$d = 1'b0;
@@ -7214,39 +7214,39 @@ module raster_top$core$span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,
                 end
             end
         end
-        zl$x = inp_left_z;
-        zr$x = inp_right_z;
-        xl_neg$x = inp_xl;
-        xr_neg$x = inp_xr;
-        xl_on$a = inp_xl;
+        zl$x = inp$left_z;
+        zr$x = inp$right_z;
+        xl_neg$x = inp$xl;
+        xr_neg$x = inp$xr;
+        xl_on$a = inp$xl;
         xl_on$b = width_x;
         if (accept) begin
             busy$d = 1'b1;
             drop$d = ~xl_on$lt | xr_neg$neg | (zl$neg & zr$neg) | (zl$over & zr$over);
-            y$d = inp_y;
-            d_z$d = ((inp_ddx_z) & 36'hfffffffff);
-            d_c0$d = ((inp_ddx_c0) & 32'hffffffff);
-            d_c1$d = ((inp_ddx_c1) & 32'hffffffff);
-            d_c2$d = ((inp_ddx_c2) & 32'hffffffff);
+            y$d = inp$y;
+            d_z$d = ((inp$ddx_z) & 36'hfffffffff);
+            d_c0$d = ((inp$ddx_c0) & 32'hffffffff);
+            d_c1$d = ((inp$ddx_c1) & 32'hffffffff);
+            d_c2$d = ((inp$ddx_c2) & 32'hffffffff);
             left$d = xl_neg$neg;
             if (xl_neg$neg) begin
-                x$d = inp_xr;
+                x$d = inp$xr;
                 last$d = 32'h0;
-                a_z$d = inp_right_z;
-                a_c0$d = inp_right_c0;
-                a_c1$d = inp_right_c1;
-                a_c2$d = inp_right_c2;
+                a_z$d = inp$right_z;
+                a_c0$d = inp$right_c0;
+                a_c1$d = inp$right_c1;
+                a_c2$d = inp$right_c2;
             end
             else begin
-                x$d = inp_xl;
-                last$d = inp_xr;
-                if (inp_xr >= width_x) begin
+                x$d = inp$xl;
+                last$d = inp$xr;
+                if (inp$xr >= width_x) begin
                     last$d = width_x - 32'h1;
                 end
-                a_z$d = inp_left_z;
-                a_c0$d = inp_left_c0;
-                a_c1$d = inp_left_c1;
-                a_c2$d = inp_left_c2;
+                a_z$d = inp$left_z;
+                a_c0$d = inp$left_c0;
+                a_c1$d = inp$left_c1;
+                a_c2$d = inp$left_c2;
             end
         end
     end

@@ -1,27 +1,27 @@
 
 
-module span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_left_c0,inp_left_c1,inp_left_c2,inp_right_z,inp_right_c0,inp_right_c1,inp_right_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
+module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$left_c0,inp$left_c1,inp$left_c2,inp$right_z,inp$right_c0,inp$right_c1,inp$right_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
     
     // Module arguments
     input wire  clock;
     input wire  [10:0] width;
-    input wire  inp_valid;
-    output reg  inp_ready;
-    input wire  [9:0] inp_y;
-    input wire  [12:0] inp_xl;
-    input wire  [12:0] inp_xr;
-    input wire  [35:0] inp_left_z;
-    input wire  [31:0] inp_left_c0;
-    input wire  [31:0] inp_left_c1;
-    input wire  [31:0] inp_left_c2;
-    input wire  [35:0] inp_right_z;
-    input wire  [31:0] inp_right_c0;
-    input wire  [31:0] inp_right_c1;
-    input wire  [31:0] inp_right_c2;
-    input wire  [39:0] inp_ddx_z;
-    input wire  [35:0] inp_ddx_c0;
-    input wire  [35:0] inp_ddx_c1;
-    input wire  [35:0] inp_ddx_c2;
+    input wire  inp$valid;
+    output reg  inp$ready;
+    input wire  [9:0] inp$y;
+    input wire  [12:0] inp$xl;
+    input wire  [12:0] inp$xr;
+    input wire  [35:0] inp$left_z;
+    input wire  [31:0] inp$left_c0;
+    input wire  [31:0] inp$left_c1;
+    input wire  [31:0] inp$left_c2;
+    input wire  [35:0] inp$right_z;
+    input wire  [31:0] inp$right_c0;
+    input wire  [31:0] inp$right_c1;
+    input wire  [31:0] inp$right_c2;
+    input wire  [39:0] inp$ddx_z;
+    input wire  [35:0] inp$ddx_c0;
+    input wire  [35:0] inp$ddx_c1;
+    input wire  [35:0] inp$ddx_c2;
     output reg  out$valid;
     input wire  out$ready;
     output reg  [9:0] out$x;
@@ -301,8 +301,8 @@ module span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_l
         at_last = drop$q | (x$q == last$q);
         advance = busy$q & (~valid | out$ready);
         ready = ~busy$q | (at_last & advance);
-        inp_ready = ready;
-        accept = inp_valid & ready;
+        inp$ready = ready;
+        accept = inp$valid & ready;
         if (advance) begin
             if (at_last) begin
                 busy$d = 1'b0;
@@ -324,39 +324,39 @@ module span(clock,width,inp_valid,inp_ready,inp_y,inp_xl,inp_xr,inp_left_z,inp_l
                 end
             end
         end
-        zl$x = inp_left_z;
-        zr$x = inp_right_z;
-        xl_neg$x = inp_xl;
-        xr_neg$x = inp_xr;
-        xl_on$a = inp_xl;
+        zl$x = inp$left_z;
+        zr$x = inp$right_z;
+        xl_neg$x = inp$xl;
+        xr_neg$x = inp$xr;
+        xl_on$a = inp$xl;
         xl_on$b = width_x;
         if (accept) begin
             busy$d = 1'b1;
             drop$d = ~xl_on$lt | xr_neg$neg | (zl$neg & zr$neg) | (zl$over & zr$over);
-            y$d = inp_y;
-            d_z$d = ((inp_ddx_z) & 36'hfffffffff);
-            d_c0$d = ((inp_ddx_c0) & 32'hffffffff);
-            d_c1$d = ((inp_ddx_c1) & 32'hffffffff);
-            d_c2$d = ((inp_ddx_c2) & 32'hffffffff);
+            y$d = inp$y;
+            d_z$d = ((inp$ddx_z) & 36'hfffffffff);
+            d_c0$d = ((inp$ddx_c0) & 32'hffffffff);
+            d_c1$d = ((inp$ddx_c1) & 32'hffffffff);
+            d_c2$d = ((inp$ddx_c2) & 32'hffffffff);
             left$d = xl_neg$neg;
             if (xl_neg$neg) begin
-                x$d = inp_xr;
+                x$d = inp$xr;
                 last$d = 32'h0;
-                a_z$d = inp_right_z;
-                a_c0$d = inp_right_c0;
-                a_c1$d = inp_right_c1;
-                a_c2$d = inp_right_c2;
+                a_z$d = inp$right_z;
+                a_c0$d = inp$right_c0;
+                a_c1$d = inp$right_c1;
+                a_c2$d = inp$right_c2;
             end
             else begin
-                x$d = inp_xl;
-                last$d = inp_xr;
-                if (inp_xr >= width_x) begin
+                x$d = inp$xl;
+                last$d = inp$xr;
+                if (inp$xr >= width_x) begin
                     last$d = width_x - 32'h1;
                 end
-                a_z$d = inp_left_z;
-                a_c0$d = inp_left_c0;
-                a_c1$d = inp_left_c1;
-                a_c2$d = inp_left_c2;
+                a_z$d = inp$left_z;
+                a_c0$d = inp$left_c0;
+                a_c1$d = inp$left_c1;
+                a_c2$d = inp$left_c2;
             end
         end
     end

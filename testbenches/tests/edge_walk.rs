@@ -1,6 +1,6 @@
 //! The edge walk (001 §II.2, 003 Fig. 5): rust-hdl and Verilator in lockstep, every cycle,
 //! against `model::edge_walk`: each scanline's span command, and when it comes (the
-//! model's `LATENCY` and `II`, and a walk that holds while `out_ready` is low).
+//! model's `LATENCY` and `II`, and a walk that holds while `out$ready` is low).
 
 use model::ctx::Ctx;
 use model::cull_sort::{cull_sort, Clip, Cull};
@@ -76,8 +76,8 @@ struct Run {
 }
 
 /// Runs `jobs` back to back (a job on another screen waits for the walk to finish) with
-/// `out_ready` from `ready`; checks every cycle: `inp_ready` high exactly when the
-/// contract says the walk is idle, and `out_valid` and the command exactly as the model's
+/// `out$ready` from `ready`; checks every cycle: `inp_ready` high exactly when the
+/// contract says the walk is idle, and `out$valid` and the command exactly as the model's
 /// scanline due that cycle. Returns the counts, or the first difference.
 fn run(dual: &mut Dual<EdgeWalk>, jobs: &[Job], mut ready: impl FnMut(&mut ChaCha8Rng) -> bool) -> Result<Run, String> {
     assert_eq!(II, 1, "this bench steps one scanline per cycle");
@@ -95,7 +95,7 @@ fn run(dual: &mut Dual<EdgeWalk>, jobs: &[Job], mut ready: impl FnMut(&mut ChaCh
         let mut pins = vec![
             ("height", Value::new(DIM, height as u128)),
             ("inp_valid", Value::new(1, offer as u128)),
-            ("out_ready", Value::new(1, out_ready as u128)),
+            ("out$ready", Value::new(1, out_ready as u128)),
         ];
         if offer {
             pins.extend(as_pins(&jobs[next].pins));
@@ -110,7 +110,7 @@ fn run(dual: &mut Dual<EdgeWalk>, jobs: &[Job], mut ready: impl FnMut(&mut ChaCh
             State::Walk { i, k } => jobs[i].scanlines[k].map(|c| (i, c)),
             _ => None,
         };
-        let valid = out.get("out_valid") == &Value::new(1, 1);
+        let valid = out.get("out$valid") == &Value::new(1, 1);
         match due {
             Some((i, cmd)) => {
                 let got = span_cmd_of(&out, "out");
@@ -121,7 +121,7 @@ fn run(dual: &mut Dual<EdgeWalk>, jobs: &[Job], mut ready: impl FnMut(&mut ChaCh
                     ));
                 }
             }
-            None if valid => return Err(format!("cycle {cycle}: out_valid high in {state:?}")),
+            None if valid => return Err(format!("cycle {cycle}: out$valid high in {state:?}")),
             None => {}
         }
         state = match state {
@@ -155,7 +155,7 @@ fn dual(vl: &testbenches::Verilated) -> Dual<EdgeWalk> {
     Dual::new(EdgeWalk::default(), vl.model().unwrap_or_else(|e| panic!("{e}")))
 }
 
-/// Random triangles on small screens, `out_ready` always high: every command at the
+/// Random triangles on small screens, `out$ready` always high: every command at the
 /// model's cycle (first `LATENCY` cycles after the triangle is taken, then one scanline per
 /// cycle, the next triangle taken the cycle after the last scanline).
 #[test]
@@ -171,7 +171,7 @@ fn edge_walk_random_vs_model() {
     assert!(r.commands > 0 && r.stalls == 0);
 }
 
-/// The same with `out_ready` low 40% of the time: the walk holds a command until it is
+/// The same with `out$ready` low 40% of the time: the walk holds a command until it is
 /// taken and loses no cycle otherwise.
 #[test]
 fn edge_walk_back_pressure_vs_model() {
@@ -233,7 +233,7 @@ fn edge_walk_edge_cases_vs_model() {
     run(&mut d, &jobs, |rng| rng.gen_bool(0.5)).unwrap_or_else(|e| panic!("with back-pressure: {e}"));
 }
 
-/// 003 Table 1: the edge walk's latency is 2 cycles. One triangle, `out_ready` high: taken
+/// 003 Table 1: the edge walk's latency is 2 cycles. One triangle, `out$ready` high: taken
 /// in cycle 0, its first scanline in cycle 2, the next one in cycle 3.
 #[test]
 fn edge_walk_latency_003_table1() {
@@ -245,7 +245,7 @@ fn edge_walk_latency_003_table1() {
     let vl = verilated("edge_walk");
     let mut d = dual(&vl);
     let mut pins =
-        vec![("height", Value::new(DIM, 48)), ("inp_valid", Value::new(1, 1)), ("out_ready", Value::new(1, 1))];
+        vec![("height", Value::new(DIM, 48)), ("inp_valid", Value::new(1, 1)), ("out$ready", Value::new(1, 1))];
     pins.extend(as_pins(&j.pins));
     let mut valid = Vec::new();
     for t in 0..4 {
@@ -254,7 +254,7 @@ fn edge_walk_latency_003_table1() {
         if t == 0 {
             assert_eq!(out.get("inp_ready"), &Value::new(1, 1), "taken in cycle 0");
         }
-        valid.push(out.get("out_valid") == &Value::new(1, 1));
+        valid.push(out.get("out$valid") == &Value::new(1, 1));
     }
-    assert_eq!(valid, [false, false, true, true], "out_valid in cycles 0 to 3");
+    assert_eq!(valid, [false, false, true, true], "out$valid in cycles 0 to 3");
 }

@@ -94,7 +94,7 @@ enum State {
 }
 
 /// Runs `jobs` back to back (one on another screen waits until the unit is idle) with
-/// `out$ready` from `ready`; checks every cycle `inp_ready`, `out$valid` and the pixel
+/// `out$ready` from `ready`; checks every cycle `inp$ready`, `out$valid` and the pixel
 /// against the model's slot due. Returns (cycles, stalls).
 fn run(
     dual: &mut Dual<Span>,
@@ -120,7 +120,7 @@ fn run(
         }
         let mut pins = vec![
             ("width", Value::new(DIM, width as u128)),
-            ("inp_valid", Value::new(1, offer as u128)),
+            ("inp$valid", Value::new(1, offer as u128)),
             ("out$ready", Value::new(1, out_ready as u128)),
         ];
         if offer {
@@ -129,8 +129,8 @@ fn run(
         let out = dual.cycle(&pins).map_err(|m| m.to_string())?;
         let cycle = dual.cycles() - 1;
         let at = |i: usize| format!("{:?} of command {i}: {:?}", state, jobs[i].cmd);
-        if (out.get("inp_ready") == &Value::new(1, 1)) != leaving {
-            return Err(format!("cycle {cycle}: inp_ready should be {leaving} in {state:?}"));
+        if (out.get("inp$ready") == &Value::new(1, 1)) != leaving {
+            return Err(format!("cycle {cycle}: inp$ready should be {leaving} in {state:?}"));
         }
         let valid = out.get("out$valid") == &Value::new(1, 1);
         match (due, state) {
@@ -140,7 +140,7 @@ fn run(
                     return Err(format!("cycle {cycle}: got valid {valid} {got:?}, model {p:?}; {}", at(i)));
                 }
             }
-            (None, State::Walk { i, .. }) if valid => return Err(format!("cycle {cycle}: out_valid high; {}", at(i))),
+            (None, State::Walk { i, .. }) if valid => return Err(format!("cycle {cycle}: out$valid high; {}", at(i))),
             _ => {}
         }
         let stalled = due.is_some() && !out_ready;
@@ -214,14 +214,14 @@ fn span_latency_003_table1() {
     let vl = verilated("span");
     let mut d = dual(&vl);
     let mut pins =
-        vec![("width", Value::new(DIM, 64)), ("inp_valid", Value::new(1, 1)), ("out$ready", Value::new(1, 1))];
+        vec![("width", Value::new(DIM, 64)), ("inp$valid", Value::new(1, 1)), ("out$ready", Value::new(1, 1))];
     pins.extend(as_pins(&j.pins));
     let (mut valid, mut ready) = (Vec::new(), Vec::new());
     for _ in 0..5 {
         let out = d.cycle(&pins).unwrap_or_else(|m| panic!("{m}"));
         valid.push(out.get("out$valid") == &Value::new(1, 1));
-        ready.push(out.get("inp_ready") == &Value::new(1, 1));
+        ready.push(out.get("inp$ready") == &Value::new(1, 1));
     }
-    assert_eq!(valid, [false, true, true, true, true], "out_valid in cycles 0 to 4");
-    assert_eq!(ready, [true, false, false, true, false], "inp_ready in cycles 0 to 4");
+    assert_eq!(valid, [false, true, true, true, true], "out$valid in cycles 0 to 4");
+    assert_eq!(ready, [true, false, false, true, false], "inp$ready in cycles 0 to 4");
 }

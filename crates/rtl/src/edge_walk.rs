@@ -33,6 +33,7 @@
 
 use crate::emit::{emit, Emitted};
 use crate::parts::{Negative, SignedLess};
+use super::links::SpanCmdSource;
 use super::widths::{C_ACC, DC, DIM, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
 use crate::Params;
 use rust_hdl::prelude::*;
@@ -303,28 +304,8 @@ pub struct EdgeWalk {
     pub inp_ddx_c0: Signal<In, Bits<DC>>,
     pub inp_ddx_c1: Signal<In, Bits<DC>>,
     pub inp_ddx_c2: Signal<In, Bits<DC>>,
-    /// A span command is presented (a scanline with pixels, on screen).
-    pub out_valid: Signal<Out, Bit>,
-    pub out_ready: Signal<In, Bit>,
-    /// Its scanline.
-    pub out_y: Signal<Out, Bits<SCREEN>>,
-    /// First and last pixel inside (xl <= xr), possibly off screen: `span` clips x.
-    pub out_xl: Signal<Out, Bits<PIXEL>>,
-    pub out_xr: Signal<Out, Bits<PIXEL>>,
-    /// Attributes at pixels xl and xr (`z_acc`, `c_acc`).
-    pub out_left_z: Signal<Out, Bits<Z_ACC>>,
-    pub out_left_c0: Signal<Out, Bits<C_ACC>>,
-    pub out_left_c1: Signal<Out, Bits<C_ACC>>,
-    pub out_left_c2: Signal<Out, Bits<C_ACC>>,
-    pub out_right_z: Signal<Out, Bits<Z_ACC>>,
-    pub out_right_c0: Signal<Out, Bits<C_ACC>>,
-    pub out_right_c1: Signal<Out, Bits<C_ACC>>,
-    pub out_right_c2: Signal<Out, Bits<C_ACC>>,
-    /// Per-pixel steps (`dz`, `dc`).
-    pub out_ddx_z: Signal<Out, Bits<DZ>>,
-    pub out_ddx_c0: Signal<Out, Bits<DC>>,
-    pub out_ddx_c1: Signal<Out, Bits<DC>>,
-    pub out_ddx_c2: Signal<Out, Bits<DC>>,
+    /// A span command (a scanline with pixels, on screen).
+    pub out: SpanCmdSource,
     /// The long edge and the short edge being walked.
     maj: Stepper,
     cur: Stepper,
@@ -452,42 +433,42 @@ impl Logic for EdgeWalk {
 
         // The span command: left side from x, right side up to x - 1; pixels when
         // left x < right x, and on screen when j >= 0.
-        self.out_y.next = bit_cast::<SCREEN, PIXEL>(self.j.q.val());
-        self.out_ddx_z.next = self.ddx_z.q.val();
-        self.out_ddx_c0.next = self.ddx_c0.q.val();
-        self.out_ddx_c1.next = self.ddx_c1.q.val();
-        self.out_ddx_c2.next = self.ddx_c2.q.val();
+        self.out.y.next = bit_cast::<SCREEN, PIXEL>(self.j.q.val());
+        self.out.ddx_z.next = self.ddx_z.q.val();
+        self.out.ddx_c0.next = self.ddx_c0.q.val();
+        self.out.ddx_c1.next = self.ddx_c1.q.val();
+        self.out.ddx_c2.next = self.ddx_c2.q.val();
         if self.maj_left.q.val() {
             self.sides.a.next = self.maj.x.val();
             self.sides.b.next = self.cur.x.val();
-            self.out_xl.next = self.maj.x.val();
-            self.out_xr.next = self.cur.x.val() - 1;
-            self.out_left_z.next = self.maj.at_z.val();
-            self.out_left_c0.next = self.maj.at_c0.val();
-            self.out_left_c1.next = self.maj.at_c1.val();
-            self.out_left_c2.next = self.maj.at_c2.val();
-            self.out_right_z.next = self.cur.at_z.val();
-            self.out_right_c0.next = self.cur.at_c0.val();
-            self.out_right_c1.next = self.cur.at_c1.val();
-            self.out_right_c2.next = self.cur.at_c2.val();
+            self.out.xl.next = self.maj.x.val();
+            self.out.xr.next = self.cur.x.val() - 1;
+            self.out.left_z.next = self.maj.at_z.val();
+            self.out.left_c0.next = self.maj.at_c0.val();
+            self.out.left_c1.next = self.maj.at_c1.val();
+            self.out.left_c2.next = self.maj.at_c2.val();
+            self.out.right_z.next = self.cur.at_z.val();
+            self.out.right_c0.next = self.cur.at_c0.val();
+            self.out.right_c1.next = self.cur.at_c1.val();
+            self.out.right_c2.next = self.cur.at_c2.val();
         } else {
             self.sides.a.next = self.cur.x.val();
             self.sides.b.next = self.maj.x.val();
-            self.out_xl.next = self.cur.x.val();
-            self.out_xr.next = self.maj.x.val() - 1;
-            self.out_left_z.next = self.cur.at_z.val();
-            self.out_left_c0.next = self.cur.at_c0.val();
-            self.out_left_c1.next = self.cur.at_c1.val();
-            self.out_left_c2.next = self.cur.at_c2.val();
-            self.out_right_z.next = self.maj.at_z.val();
-            self.out_right_c0.next = self.maj.at_c0.val();
-            self.out_right_c1.next = self.maj.at_c1.val();
-            self.out_right_c2.next = self.maj.at_c2.val();
+            self.out.xl.next = self.cur.x.val();
+            self.out.xr.next = self.maj.x.val() - 1;
+            self.out.left_z.next = self.cur.at_z.val();
+            self.out.left_c0.next = self.cur.at_c0.val();
+            self.out.left_c1.next = self.cur.at_c1.val();
+            self.out.left_c2.next = self.cur.at_c2.val();
+            self.out.right_z.next = self.maj.at_z.val();
+            self.out.right_c0.next = self.maj.at_c0.val();
+            self.out.right_c1.next = self.maj.at_c1.val();
+            self.out.right_c2.next = self.maj.at_c2.val();
         }
         self.valid.next = self.busy.q.val() & self.walking.q.val() & !self.j_sign.neg.val() & self.sides.lt.val();
-        self.out_valid.next = self.valid.val();
+        self.out.valid.next = self.valid.val();
         // WALK: move on unless the command presented waits for `out_ready`.
-        self.advance.next = self.busy.q.val() & self.walking.q.val() & (!self.valid.val() | self.out_ready.val());
+        self.advance.next = self.busy.q.val() & self.walking.q.val() & (!self.valid.val() | self.out.ready.val());
 
         // The steppers: both load at the triangle's hand-over; `cur` loads the second
         // short edge when the walk reaches it (at k == c0, which in SETUP means c0 == 0).
@@ -675,27 +656,11 @@ crate::pins!(EdgeWalk {
         inp_ddx_c0,
         inp_ddx_c1,
         inp_ddx_c2,
-        out_ready,
     ],
     outputs: [
         inp_ready,
-        out_valid,
-        out_y,
-        out_xl,
-        out_xr,
-        out_left_z,
-        out_left_c0,
-        out_left_c1,
-        out_left_c2,
-        out_right_z,
-        out_right_c0,
-        out_right_c1,
-        out_right_c2,
-        out_ddx_z,
-        out_ddx_c0,
-        out_ddx_c1,
-        out_ddx_c2,
     ],
+    links: [out],
 });
 
 /// `UNITS` entry: the edge walk (no parameters: widths from `crate::widths`).

@@ -43,7 +43,7 @@
 
 use super::cull_sort::{CullSort, COLOR, INV_W, OUTCODE, XY, Z};
 use super::edge_walk::EdgeWalk;
-use super::links::PixelSource;
+use super::links::{PixelSource, SpanCmdSource};
 use super::pixel_out::PixelOut;
 use super::span::Span;
 use super::span_fifo::SpanFifo;
@@ -232,41 +232,9 @@ impl Logic for RasterCore {
         self.edge_walk.inp_ddx_c2.next = self.triangle_setup.out_ddx_c2.val();
 
         // edge_walk -> span FIFO -> span: `SpanCmd`.
-        self.fifo.inp_valid.next = self.edge_walk.out_valid.val();
-        self.edge_walk.out_ready.next = self.fifo.inp_ready.val();
         self.span.width.next = self.width.val();
-        self.span.inp_valid.next = self.fifo.out_valid.val();
-        self.fifo.out_ready.next = self.span.inp_ready.val();
-        self.fifo.inp_y.next = self.edge_walk.out_y.val();
-        self.fifo.inp_xl.next = self.edge_walk.out_xl.val();
-        self.fifo.inp_xr.next = self.edge_walk.out_xr.val();
-        self.fifo.inp_left_z.next = self.edge_walk.out_left_z.val();
-        self.fifo.inp_left_c0.next = self.edge_walk.out_left_c0.val();
-        self.fifo.inp_left_c1.next = self.edge_walk.out_left_c1.val();
-        self.fifo.inp_left_c2.next = self.edge_walk.out_left_c2.val();
-        self.fifo.inp_right_z.next = self.edge_walk.out_right_z.val();
-        self.fifo.inp_right_c0.next = self.edge_walk.out_right_c0.val();
-        self.fifo.inp_right_c1.next = self.edge_walk.out_right_c1.val();
-        self.fifo.inp_right_c2.next = self.edge_walk.out_right_c2.val();
-        self.fifo.inp_ddx_z.next = self.edge_walk.out_ddx_z.val();
-        self.fifo.inp_ddx_c0.next = self.edge_walk.out_ddx_c0.val();
-        self.fifo.inp_ddx_c1.next = self.edge_walk.out_ddx_c1.val();
-        self.fifo.inp_ddx_c2.next = self.edge_walk.out_ddx_c2.val();
-        self.span.inp_y.next = self.fifo.out_y.val();
-        self.span.inp_xl.next = self.fifo.out_xl.val();
-        self.span.inp_xr.next = self.fifo.out_xr.val();
-        self.span.inp_left_z.next = self.fifo.out_left_z.val();
-        self.span.inp_left_c0.next = self.fifo.out_left_c0.val();
-        self.span.inp_left_c1.next = self.fifo.out_left_c1.val();
-        self.span.inp_left_c2.next = self.fifo.out_left_c2.val();
-        self.span.inp_right_z.next = self.fifo.out_right_z.val();
-        self.span.inp_right_c0.next = self.fifo.out_right_c0.val();
-        self.span.inp_right_c1.next = self.fifo.out_right_c1.val();
-        self.span.inp_right_c2.next = self.fifo.out_right_c2.val();
-        self.span.inp_ddx_z.next = self.fifo.out_ddx_z.val();
-        self.span.inp_ddx_c0.next = self.fifo.out_ddx_c0.val();
-        self.span.inp_ddx_c1.next = self.fifo.out_ddx_c1.val();
-        self.span.inp_ddx_c2.next = self.fifo.out_ddx_c2.val();
+        SpanCmdSource::join(&mut self.edge_walk.out, &mut self.fifo.inp);
+        SpanCmdSource::join(&mut self.fifo.out, &mut self.span.inp);
 
         // Fragments out.
         PixelSource::link(&mut self.out, &mut self.span.out);

@@ -30,7 +30,7 @@
 
 use crate::emit::{emit, Emitted};
 use crate::parts::{Negative, RoundShift, SignedLess};
-use super::links::PixelSource;
+use super::links::{PixelSource, SpanCmdSink};
 use super::widths::{CHANNEL, C_ACC, DC, DEPTH, DIM, DZ, FORMATS, PIXEL, SCREEN, Z_ACC};
 use crate::Params;
 use rust_hdl::prelude::*;
@@ -53,28 +53,8 @@ pub struct Span {
     pub clock: Signal<In, Clock>,
     /// Screen width in pixels, 1 to 2^SCREEN.
     pub width: Signal<In, Bits<DIM>>,
-    pub inp_valid: Signal<In, Bit>,
-    /// High when idle or in the last pixel of a span (as it leaves).
-    pub inp_ready: Signal<Out, Bit>,
-    /// The scanline.
-    pub inp_y: Signal<In, Bits<SCREEN>>,
-    /// First and last pixel inside, `PIXEL` bits two's complement (may be off screen).
-    pub inp_xl: Signal<In, Bits<PIXEL>>,
-    pub inp_xr: Signal<In, Bits<PIXEL>>,
-    /// Attributes at pixels xl and xr (`z_acc`, `c_acc`).
-    pub inp_left_z: Signal<In, Bits<Z_ACC>>,
-    pub inp_left_c0: Signal<In, Bits<C_ACC>>,
-    pub inp_left_c1: Signal<In, Bits<C_ACC>>,
-    pub inp_left_c2: Signal<In, Bits<C_ACC>>,
-    pub inp_right_z: Signal<In, Bits<Z_ACC>>,
-    pub inp_right_c0: Signal<In, Bits<C_ACC>>,
-    pub inp_right_c1: Signal<In, Bits<C_ACC>>,
-    pub inp_right_c2: Signal<In, Bits<C_ACC>>,
-    /// Per-pixel steps (`dz`, `dc`).
-    pub inp_ddx_z: Signal<In, Bits<DZ>>,
-    pub inp_ddx_c0: Signal<In, Bits<DC>>,
-    pub inp_ddx_c1: Signal<In, Bits<DC>>,
-    pub inp_ddx_c2: Signal<In, Bits<DC>>,
+    /// Span commands; `inp.ready` high when idle or in the last pixel of a span (as it leaves).
+    pub inp: SpanCmdSink,
     /// A pixel on screen with its depth in [0, z_max].
     pub out: PixelSource,
     /// No span in progress (for `raster_top`'s frame-done).
@@ -166,8 +146,8 @@ impl Logic for Span {
         self.at_last.next = self.drop.q.val() | (self.x.q.val() == self.last.q.val());
         self.advance.next = self.busy.q.val() & (!self.valid.val() | self.out.ready.val());
         self.ready.next = !self.busy.q.val() | (self.at_last.val() & self.advance.val());
-        self.inp_ready.next = self.ready.val();
-        self.accept.next = self.inp_valid.val() & self.ready.val();
+        self.inp.ready.next = self.ready.val();
+        self.accept.next = self.inp.valid.val() & self.ready.val();
         if self.advance.val() {
             if self.at_last.val() {
                 self.busy.d.next = false;
@@ -190,11 +170,11 @@ impl Logic for Span {
 
         // The command: dropped when wholly off screen in x (xl > W - 1 or xr < 0) or with
         // both ends beyond the same z boundary; walked from xr leftwards when xl < 0.
-        self.zl.x.next = self.inp_left_z.val();
-        self.zr.x.next = self.inp_right_z.val();
-        self.xl_neg.x.next = self.inp_xl.val();
-        self.xr_neg.x.next = self.inp_xr.val();
-        self.xl_on.a.next = self.inp_xl.val();
+        self.zl.x.next = self.inp.left_z.val();
+        self.zr.x.next = self.inp.right_z.val();
+        self.xl_neg.x.next = self.inp.xl.val();
+        self.xr_neg.x.next = self.inp.xr.val();
+        self.xl_on.a.next = self.inp.xl.val();
         self.xl_on.b.next = self.width_x.val();
         if self.accept.val() {
             self.busy.d.next = true;
@@ -202,29 +182,29 @@ impl Logic for Span {
                 | self.xr_neg.neg.val()
                 | (self.zl.neg.val() & self.zr.neg.val())
                 | (self.zl.over.val() & self.zr.over.val());
-            self.y.d.next = self.inp_y.val();
-            self.d_z.d.next = bit_cast::<Z_ACC, DZ>(self.inp_ddx_z.val());
-            self.d_c0.d.next = bit_cast::<C_ACC, DC>(self.inp_ddx_c0.val());
-            self.d_c1.d.next = bit_cast::<C_ACC, DC>(self.inp_ddx_c1.val());
-            self.d_c2.d.next = bit_cast::<C_ACC, DC>(self.inp_ddx_c2.val());
+            self.y.d.next = self.inp.y.val();
+            self.d_z.d.next = bit_cast::<Z_ACC, DZ>(self.inp.ddx_z.val());
+            self.d_c0.d.next = bit_cast::<C_ACC, DC>(self.inp.ddx_c0.val());
+            self.d_c1.d.next = bit_cast::<C_ACC, DC>(self.inp.ddx_c1.val());
+            self.d_c2.d.next = bit_cast::<C_ACC, DC>(self.inp.ddx_c2.val());
             self.left.d.next = self.xl_neg.neg.val();
             if self.xl_neg.neg.val() {
-                self.x.d.next = self.inp_xr.val();
+                self.x.d.next = self.inp.xr.val();
                 self.last.d.next = 0.into();
-                self.a_z.d.next = self.inp_right_z.val();
-                self.a_c0.d.next = self.inp_right_c0.val();
-                self.a_c1.d.next = self.inp_right_c1.val();
-                self.a_c2.d.next = self.inp_right_c2.val();
+                self.a_z.d.next = self.inp.right_z.val();
+                self.a_c0.d.next = self.inp.right_c0.val();
+                self.a_c1.d.next = self.inp.right_c1.val();
+                self.a_c2.d.next = self.inp.right_c2.val();
             } else {
-                self.x.d.next = self.inp_xl.val();
-                self.last.d.next = self.inp_xr.val();
-                if self.inp_xr.val() >= self.width_x.val() {
+                self.x.d.next = self.inp.xl.val();
+                self.last.d.next = self.inp.xr.val();
+                if self.inp.xr.val() >= self.width_x.val() {
                     self.last.d.next = self.width_x.val() - 1;
                 }
-                self.a_z.d.next = self.inp_left_z.val();
-                self.a_c0.d.next = self.inp_left_c0.val();
-                self.a_c1.d.next = self.inp_left_c1.val();
-                self.a_c2.d.next = self.inp_left_c2.val();
+                self.a_z.d.next = self.inp.left_z.val();
+                self.a_c0.d.next = self.inp.left_c0.val();
+                self.a_c1.d.next = self.inp.left_c1.val();
+                self.a_c2.d.next = self.inp.left_c2.val();
             }
         }
     }
@@ -234,25 +214,9 @@ crate::pins!(Span {
     clock: clock,
     inputs: [
         width,
-        inp_valid,
-        inp_y,
-        inp_xl,
-        inp_xr,
-        inp_left_z,
-        inp_left_c0,
-        inp_left_c1,
-        inp_left_c2,
-        inp_right_z,
-        inp_right_c0,
-        inp_right_c1,
-        inp_right_c2,
-        inp_ddx_z,
-        inp_ddx_c0,
-        inp_ddx_c1,
-        inp_ddx_c2,
     ],
-    outputs: [inp_ready, idle],
-    links: [out],
+    outputs: [ idle],
+    links: [inp, out],
 });
 
 /// `UNITS` entry: the span unit (no parameters: widths from `crate::widths`).

@@ -2,6 +2,7 @@
 //! 003): [`SPAN_FIFO`] `SpanCmd`s, as `model::cycles::Timing::span_fifo`, passed straight
 //! through when empty. Part of `raster_top` (its model is the cycle model's FIFO).
 
+use super::links::{SpanCmdSink, SpanCmdSource};
 use super::widths::{C_ACC, DC, DZ, PIXEL, SCREEN, Z_ACC};
 use rust_hdl::prelude::*;
 
@@ -91,45 +92,15 @@ impl<const W: usize, const D: usize> Logic for FifoLane<W, D> {
 }
 
 /// The span command FIFO between the edge walk and span (`model::cycles`: "a 4-deep FIFO
-/// before it"): `SpanCmd` on `inp_*` and `out_*`. Empty, it passes a command straight
-/// through in the same cycle; `inp_ready` is low only when full.
+/// before it"): `SpanCmd` on the links `inp` and `out`. Empty, it passes a command straight
+/// through in the same cycle; `inp.ready` is low only when full.
 #[derive(LogicBlock, Default)]
 pub struct SpanFifo {
     pub clock: Signal<In, Clock>,
-    pub inp_valid: Signal<In, Bit>,
-    pub inp_ready: Signal<Out, Bit>,
-    pub inp_y: Signal<In, Bits<SCREEN>>,
-    pub inp_xl: Signal<In, Bits<PIXEL>>,
-    pub inp_xr: Signal<In, Bits<PIXEL>>,
-    pub inp_left_z: Signal<In, Bits<Z_ACC>>,
-    pub inp_left_c0: Signal<In, Bits<C_ACC>>,
-    pub inp_left_c1: Signal<In, Bits<C_ACC>>,
-    pub inp_left_c2: Signal<In, Bits<C_ACC>>,
-    pub inp_right_z: Signal<In, Bits<Z_ACC>>,
-    pub inp_right_c0: Signal<In, Bits<C_ACC>>,
-    pub inp_right_c1: Signal<In, Bits<C_ACC>>,
-    pub inp_right_c2: Signal<In, Bits<C_ACC>>,
-    pub inp_ddx_z: Signal<In, Bits<DZ>>,
-    pub inp_ddx_c0: Signal<In, Bits<DC>>,
-    pub inp_ddx_c1: Signal<In, Bits<DC>>,
-    pub inp_ddx_c2: Signal<In, Bits<DC>>,
-    pub out_valid: Signal<Out, Bit>,
-    pub out_ready: Signal<In, Bit>,
-    pub out_y: Signal<Out, Bits<SCREEN>>,
-    pub out_xl: Signal<Out, Bits<PIXEL>>,
-    pub out_xr: Signal<Out, Bits<PIXEL>>,
-    pub out_left_z: Signal<Out, Bits<Z_ACC>>,
-    pub out_left_c0: Signal<Out, Bits<C_ACC>>,
-    pub out_left_c1: Signal<Out, Bits<C_ACC>>,
-    pub out_left_c2: Signal<Out, Bits<C_ACC>>,
-    pub out_right_z: Signal<Out, Bits<Z_ACC>>,
-    pub out_right_c0: Signal<Out, Bits<C_ACC>>,
-    pub out_right_c1: Signal<Out, Bits<C_ACC>>,
-    pub out_right_c2: Signal<Out, Bits<C_ACC>>,
-    pub out_ddx_z: Signal<Out, Bits<DZ>>,
-    pub out_ddx_c0: Signal<Out, Bits<DC>>,
-    pub out_ddx_c1: Signal<Out, Bits<DC>>,
-    pub out_ddx_c2: Signal<Out, Bits<DC>>,
+    /// The commands in; `inp.ready` low only when full.
+    pub inp: SpanCmdSink,
+    /// The commands out: the head, or the input itself when empty.
+    pub out: SpanCmdSource,
     /// No command held.
     pub empty: Signal<Out, Bit>,
     /// Entries held, and whether that is all or none.
@@ -156,22 +127,22 @@ pub struct SpanFifo {
     pop: Signal<Local, Bit>,
 }
 
-/// `SpanFifo`'s kernel, with each lane `$f` wired from `$inp` to `$out`: its head, or the
-/// input itself when the FIFO is empty. (A macro writes the fifteen lanes out before
+/// `SpanFifo`'s kernel, with lane `$f` holding field `$f` of the span command (each field
+/// of `links::SpanCmdSink`): out goes its head, or the input itself when the FIFO is empty. (A macro writes the fifteen lanes out before
 /// `#[hdl_gen]` reads the kernel.)
 macro_rules! span_fifo_logic {
-    ($($f:ident: $inp:ident -> $out:ident),* $(,)?) => {
+    ($($f:ident),* $(,)?) => {
         impl Logic for SpanFifo {
             #[hdl_gen]
             fn update(&mut self) {
                 dff_setup!(self, clock, count);
                 self.level.count.next = self.count.q.val();
-                self.inp_ready.next = !self.level.full.val();
-                self.out_valid.next = !self.level.empty.val() | self.inp_valid.val();
+                self.inp.ready.next = !self.level.full.val();
+                self.out.valid.next = !self.level.empty.val() | self.inp.valid.val();
                 self.empty.next = self.level.empty.val();
                 // Empty and taken at once: the command passes straight through.
-                self.push.next = self.inp_valid.val() & !self.level.full.val() & !(self.level.empty.val() & self.out_ready.val());
-                self.pop.next = !self.level.empty.val() & self.out_ready.val();
+                self.push.next = self.inp.valid.val() & !self.level.full.val() & !(self.level.empty.val() & self.out.ready.val());
+                self.pop.next = !self.level.empty.val() & self.out.ready.val();
                 self.wr.next = self.count.q.val();
                 if self.pop.val() {
                     self.wr.next = self.count.q.val() - 1;
@@ -187,10 +158,10 @@ macro_rules! span_fifo_logic {
                     self.$f.push.next = self.push.val();
                     self.$f.pop.next = self.pop.val();
                     self.$f.wr.next = self.wr.val();
-                    self.$f.din.next = self.$inp.val();
-                    self.$out.next = self.$f.head.val();
+                    self.$f.din.next = self.inp.$f.val();
+                    self.out.$f.next = self.$f.head.val();
                     if self.level.empty.val() {
-                        self.$out.next = self.$inp.val();
+                        self.out.$f.next = self.inp.$f.val();
                     }
                 )*
             }
@@ -199,19 +170,19 @@ macro_rules! span_fifo_logic {
 }
 
 span_fifo_logic!(
-    y: inp_y -> out_y,
-    xl: inp_xl -> out_xl,
-    xr: inp_xr -> out_xr,
-    left_z: inp_left_z -> out_left_z,
-    left_c0: inp_left_c0 -> out_left_c0,
-    left_c1: inp_left_c1 -> out_left_c1,
-    left_c2: inp_left_c2 -> out_left_c2,
-    right_z: inp_right_z -> out_right_z,
-    right_c0: inp_right_c0 -> out_right_c0,
-    right_c1: inp_right_c1 -> out_right_c1,
-    right_c2: inp_right_c2 -> out_right_c2,
-    ddx_z: inp_ddx_z -> out_ddx_z,
-    ddx_c0: inp_ddx_c0 -> out_ddx_c0,
-    ddx_c1: inp_ddx_c1 -> out_ddx_c1,
-    ddx_c2: inp_ddx_c2 -> out_ddx_c2,
+    y,
+    xl,
+    xr,
+    left_z,
+    left_c0,
+    left_c1,
+    left_c2,
+    right_z,
+    right_c0,
+    right_c1,
+    right_c2,
+    ddx_z,
+    ddx_c0,
+    ddx_c1,
+    ddx_c2,
 );

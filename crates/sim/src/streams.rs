@@ -11,8 +11,8 @@ use model::edge_walk::SpanCmd;
 use model::span::Pixel;
 use model::triangle_setup::{Attrs, Edge, TriangleSetupOut, Walk};
 use rtl::link::Link;
-use rtl::links::PixelSink;
-use rtl::widths::{C_ACC, DC, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
+use rtl::links::{PixelSink, SpanCmdSink};
+use rtl::widths::{C_ACC, DC, DZ, EDGE_D, EDGE_Q, PIXEL, Z_ACC};
 
 /// Named port values, ready for `Dual::cycle` (through [`as_pins`]).
 pub type PinValues = Vec<(String, Value)>;
@@ -71,32 +71,43 @@ pub fn triangle_setup_out(prefix: &str, s: &TriangleSetupOut) -> PinValues {
     out
 }
 
-/// A span command on ports `<prefix>_*` (`span`'s `inp_*`).
-pub fn span_cmd(prefix: &str, c: &SpanCmd) -> PinValues {
-    let mut out = vec![
-        (format!("{prefix}_y"), raw(SCREEN, c.y as i128)),
-        (format!("{prefix}_xl"), raw(PIXEL, c.xl)),
-        (format!("{prefix}_xr"), raw(PIXEL, c.xr)),
-    ];
-    attrs(&mut out, &format!("{prefix}_left"), &c.left, Z_ACC, C_ACC);
-    attrs(&mut out, &format!("{prefix}_right"), &c.right, Z_ACC, C_ACC);
-    attrs(&mut out, &format!("{prefix}_ddx"), &c.ddx, DZ, DC);
-    out
+/// Field `field` of attributes `a`: `z`, `c0`, `c1` or `c2`.
+fn attr(a: &Attrs, field: &str) -> i128 {
+    match field {
+        "z" => a.z,
+        "c0" => a.c[0],
+        "c1" => a.c[1],
+        "c2" => a.c[2],
+        _ => panic!("model::triangle_setup::Attrs has no field {field}"),
+    }
+}
+
+/// A span command on the pins of link end `end` (`span`'s `inp`: `links::SpanCmdSink`).
+pub fn span_cmd(end: &str, c: &SpanCmd) -> PinValues {
+    link_pins::<SpanCmdSink>(end, |field| match field.split_once('_') {
+        None if field == "y" => c.y as i128,
+        None if field == "xl" => c.xl,
+        None if field == "xr" => c.xr,
+        Some(("left", f)) => attr(&c.left, f),
+        Some(("right", f)) => attr(&c.right, f),
+        Some(("ddx", f)) => attr(&c.ddx, f),
+        _ => panic!("model::edge_walk::SpanCmd has no field {field}"),
+    })
 }
 
 fn attrs_of(o: &Outputs, name: &str) -> Attrs {
     Attrs { z: signed(o.get(&format!("{name}_z"))), c: std::array::from_fn(|i| signed(o.get(&format!("{name}_c{i}")))) }
 }
 
-/// The span command on output ports `<prefix>_*` (`edge_walk`'s `out_*`).
-pub fn span_cmd_of(o: &Outputs, prefix: &str) -> SpanCmd {
+/// The span command on the pins of link end `end` (`edge_walk`'s `out`: `links::SpanCmdSource`).
+pub fn span_cmd_of(o: &Outputs, end: &str) -> SpanCmd {
     SpanCmd {
-        y: unsigned(o.get(&format!("{prefix}_y"))) as i32,
-        xl: signed(o.get(&format!("{prefix}_xl"))),
-        xr: signed(o.get(&format!("{prefix}_xr"))),
-        left: attrs_of(o, &format!("{prefix}_left")),
-        right: attrs_of(o, &format!("{prefix}_right")),
-        ddx: attrs_of(o, &format!("{prefix}_ddx")),
+        y: unsigned(o.get(&format!("{end}$y"))) as i32,
+        xl: signed(o.get(&format!("{end}$xl"))),
+        xr: signed(o.get(&format!("{end}$xr"))),
+        left: attrs_of(o, &format!("{end}$left")),
+        right: attrs_of(o, &format!("{end}$right")),
+        ddx: attrs_of(o, &format!("{end}$ddx")),
     }
 }
 
