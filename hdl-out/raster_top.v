@@ -422,138 +422,138 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
     reg  [7:0] triangle_setup$inp_v2_c1;
     reg  [7:0] triangle_setup$inp_v2_c2;
     reg  [5:0] triangle_setup$inp_crosses;
-    wire  triangle_setup$out_valid;
-    reg  triangle_setup$out_ready;
-    wire  triangle_setup$out_walk;
-    wire  triangle_setup$out_maj_left;
-    wire  [12:0] triangle_setup$out_maj_j;
-    wire  [12:0] triangle_setup$out_maj_count;
-    wire  [12:0] triangle_setup$out_maj_x;
-    wire  [20:0] triangle_setup$out_maj_r;
-    wire  [16:0] triangle_setup$out_maj_q;
-    wire  [20:0] triangle_setup$out_maj_rho;
-    wire  [20:0] triangle_setup$out_maj_d;
-    wire  [35:0] triangle_setup$out_maj_at_z;
-    wire  [31:0] triangle_setup$out_maj_at_c0;
-    wire  [31:0] triangle_setup$out_maj_at_c1;
-    wire  [31:0] triangle_setup$out_maj_at_c2;
-    wire  [39:0] triangle_setup$out_maj_inc0_z;
-    wire  [35:0] triangle_setup$out_maj_inc0_c0;
-    wire  [35:0] triangle_setup$out_maj_inc0_c1;
-    wire  [35:0] triangle_setup$out_maj_inc0_c2;
-    wire  [39:0] triangle_setup$out_maj_inc1_z;
-    wire  [35:0] triangle_setup$out_maj_inc1_c0;
-    wire  [35:0] triangle_setup$out_maj_inc1_c1;
-    wire  [35:0] triangle_setup$out_maj_inc1_c2;
-    wire  [12:0] triangle_setup$out_short0_j;
-    wire  [12:0] triangle_setup$out_short0_count;
-    wire  [12:0] triangle_setup$out_short0_x;
-    wire  [20:0] triangle_setup$out_short0_r;
-    wire  [16:0] triangle_setup$out_short0_q;
-    wire  [20:0] triangle_setup$out_short0_rho;
-    wire  [20:0] triangle_setup$out_short0_d;
-    wire  [35:0] triangle_setup$out_short0_at_z;
-    wire  [31:0] triangle_setup$out_short0_at_c0;
-    wire  [31:0] triangle_setup$out_short0_at_c1;
-    wire  [31:0] triangle_setup$out_short0_at_c2;
-    wire  [39:0] triangle_setup$out_short0_inc0_z;
-    wire  [35:0] triangle_setup$out_short0_inc0_c0;
-    wire  [35:0] triangle_setup$out_short0_inc0_c1;
-    wire  [35:0] triangle_setup$out_short0_inc0_c2;
-    wire  [39:0] triangle_setup$out_short0_inc1_z;
-    wire  [35:0] triangle_setup$out_short0_inc1_c0;
-    wire  [35:0] triangle_setup$out_short0_inc1_c1;
-    wire  [35:0] triangle_setup$out_short0_inc1_c2;
-    wire  [12:0] triangle_setup$out_short1_j;
-    wire  [12:0] triangle_setup$out_short1_count;
-    wire  [12:0] triangle_setup$out_short1_x;
-    wire  [20:0] triangle_setup$out_short1_r;
-    wire  [16:0] triangle_setup$out_short1_q;
-    wire  [20:0] triangle_setup$out_short1_rho;
-    wire  [20:0] triangle_setup$out_short1_d;
-    wire  [35:0] triangle_setup$out_short1_at_z;
-    wire  [31:0] triangle_setup$out_short1_at_c0;
-    wire  [31:0] triangle_setup$out_short1_at_c1;
-    wire  [31:0] triangle_setup$out_short1_at_c2;
-    wire  [39:0] triangle_setup$out_short1_inc0_z;
-    wire  [35:0] triangle_setup$out_short1_inc0_c0;
-    wire  [35:0] triangle_setup$out_short1_inc0_c1;
-    wire  [35:0] triangle_setup$out_short1_inc0_c2;
-    wire  [39:0] triangle_setup$out_short1_inc1_z;
-    wire  [35:0] triangle_setup$out_short1_inc1_c0;
-    wire  [35:0] triangle_setup$out_short1_inc1_c1;
-    wire  [35:0] triangle_setup$out_short1_inc1_c2;
-    wire  [39:0] triangle_setup$out_ddx_z;
-    wire  [35:0] triangle_setup$out_ddx_c0;
-    wire  [35:0] triangle_setup$out_ddx_c1;
-    wire  [35:0] triangle_setup$out_ddx_c2;
+    wire  triangle_setup$out$valid;
+    reg  triangle_setup$out$ready;
+    wire  triangle_setup$out$walk;
+    wire  triangle_setup$out$maj_left;
+    wire  [12:0] triangle_setup$out$maj_j;
+    wire  [12:0] triangle_setup$out$maj_count;
+    wire  [12:0] triangle_setup$out$maj_x;
+    wire  [20:0] triangle_setup$out$maj_r;
+    wire  [16:0] triangle_setup$out$maj_q;
+    wire  [20:0] triangle_setup$out$maj_rho;
+    wire  [20:0] triangle_setup$out$maj_d;
+    wire  [35:0] triangle_setup$out$maj_at_z;
+    wire  [31:0] triangle_setup$out$maj_at_c0;
+    wire  [31:0] triangle_setup$out$maj_at_c1;
+    wire  [31:0] triangle_setup$out$maj_at_c2;
+    wire  [39:0] triangle_setup$out$maj_inc0_z;
+    wire  [35:0] triangle_setup$out$maj_inc0_c0;
+    wire  [35:0] triangle_setup$out$maj_inc0_c1;
+    wire  [35:0] triangle_setup$out$maj_inc0_c2;
+    wire  [39:0] triangle_setup$out$maj_inc1_z;
+    wire  [35:0] triangle_setup$out$maj_inc1_c0;
+    wire  [35:0] triangle_setup$out$maj_inc1_c1;
+    wire  [35:0] triangle_setup$out$maj_inc1_c2;
+    wire  [12:0] triangle_setup$out$short0_j;
+    wire  [12:0] triangle_setup$out$short0_count;
+    wire  [12:0] triangle_setup$out$short0_x;
+    wire  [20:0] triangle_setup$out$short0_r;
+    wire  [16:0] triangle_setup$out$short0_q;
+    wire  [20:0] triangle_setup$out$short0_rho;
+    wire  [20:0] triangle_setup$out$short0_d;
+    wire  [35:0] triangle_setup$out$short0_at_z;
+    wire  [31:0] triangle_setup$out$short0_at_c0;
+    wire  [31:0] triangle_setup$out$short0_at_c1;
+    wire  [31:0] triangle_setup$out$short0_at_c2;
+    wire  [39:0] triangle_setup$out$short0_inc0_z;
+    wire  [35:0] triangle_setup$out$short0_inc0_c0;
+    wire  [35:0] triangle_setup$out$short0_inc0_c1;
+    wire  [35:0] triangle_setup$out$short0_inc0_c2;
+    wire  [39:0] triangle_setup$out$short0_inc1_z;
+    wire  [35:0] triangle_setup$out$short0_inc1_c0;
+    wire  [35:0] triangle_setup$out$short0_inc1_c1;
+    wire  [35:0] triangle_setup$out$short0_inc1_c2;
+    wire  [12:0] triangle_setup$out$short1_j;
+    wire  [12:0] triangle_setup$out$short1_count;
+    wire  [12:0] triangle_setup$out$short1_x;
+    wire  [20:0] triangle_setup$out$short1_r;
+    wire  [16:0] triangle_setup$out$short1_q;
+    wire  [20:0] triangle_setup$out$short1_rho;
+    wire  [20:0] triangle_setup$out$short1_d;
+    wire  [35:0] triangle_setup$out$short1_at_z;
+    wire  [31:0] triangle_setup$out$short1_at_c0;
+    wire  [31:0] triangle_setup$out$short1_at_c1;
+    wire  [31:0] triangle_setup$out$short1_at_c2;
+    wire  [39:0] triangle_setup$out$short1_inc0_z;
+    wire  [35:0] triangle_setup$out$short1_inc0_c0;
+    wire  [35:0] triangle_setup$out$short1_inc0_c1;
+    wire  [35:0] triangle_setup$out$short1_inc0_c2;
+    wire  [39:0] triangle_setup$out$short1_inc1_z;
+    wire  [35:0] triangle_setup$out$short1_inc1_c0;
+    wire  [35:0] triangle_setup$out$short1_inc1_c1;
+    wire  [35:0] triangle_setup$out$short1_inc1_c2;
+    wire  [39:0] triangle_setup$out$ddx_z;
+    wire  [35:0] triangle_setup$out$ddx_c0;
+    wire  [35:0] triangle_setup$out$ddx_c1;
+    wire  [35:0] triangle_setup$out$ddx_c2;
     reg  edge_walk$clock;
     reg  [10:0] edge_walk$height;
-    reg  edge_walk$inp_valid;
-    wire  edge_walk$inp_ready;
-    reg  edge_walk$inp_walk;
-    reg  edge_walk$inp_maj_left;
-    reg  [12:0] edge_walk$inp_maj_j;
-    reg  [12:0] edge_walk$inp_maj_count;
-    reg  [12:0] edge_walk$inp_maj_x;
-    reg  [20:0] edge_walk$inp_maj_r;
-    reg  [16:0] edge_walk$inp_maj_q;
-    reg  [20:0] edge_walk$inp_maj_rho;
-    reg  [20:0] edge_walk$inp_maj_d;
-    reg  [35:0] edge_walk$inp_maj_at_z;
-    reg  [31:0] edge_walk$inp_maj_at_c0;
-    reg  [31:0] edge_walk$inp_maj_at_c1;
-    reg  [31:0] edge_walk$inp_maj_at_c2;
-    reg  [39:0] edge_walk$inp_maj_inc0_z;
-    reg  [35:0] edge_walk$inp_maj_inc0_c0;
-    reg  [35:0] edge_walk$inp_maj_inc0_c1;
-    reg  [35:0] edge_walk$inp_maj_inc0_c2;
-    reg  [39:0] edge_walk$inp_maj_inc1_z;
-    reg  [35:0] edge_walk$inp_maj_inc1_c0;
-    reg  [35:0] edge_walk$inp_maj_inc1_c1;
-    reg  [35:0] edge_walk$inp_maj_inc1_c2;
-    reg  [12:0] edge_walk$inp_short0_j;
-    reg  [12:0] edge_walk$inp_short0_count;
-    reg  [12:0] edge_walk$inp_short0_x;
-    reg  [20:0] edge_walk$inp_short0_r;
-    reg  [16:0] edge_walk$inp_short0_q;
-    reg  [20:0] edge_walk$inp_short0_rho;
-    reg  [20:0] edge_walk$inp_short0_d;
-    reg  [35:0] edge_walk$inp_short0_at_z;
-    reg  [31:0] edge_walk$inp_short0_at_c0;
-    reg  [31:0] edge_walk$inp_short0_at_c1;
-    reg  [31:0] edge_walk$inp_short0_at_c2;
-    reg  [39:0] edge_walk$inp_short0_inc0_z;
-    reg  [35:0] edge_walk$inp_short0_inc0_c0;
-    reg  [35:0] edge_walk$inp_short0_inc0_c1;
-    reg  [35:0] edge_walk$inp_short0_inc0_c2;
-    reg  [39:0] edge_walk$inp_short0_inc1_z;
-    reg  [35:0] edge_walk$inp_short0_inc1_c0;
-    reg  [35:0] edge_walk$inp_short0_inc1_c1;
-    reg  [35:0] edge_walk$inp_short0_inc1_c2;
-    reg  [12:0] edge_walk$inp_short1_j;
-    reg  [12:0] edge_walk$inp_short1_count;
-    reg  [12:0] edge_walk$inp_short1_x;
-    reg  [20:0] edge_walk$inp_short1_r;
-    reg  [16:0] edge_walk$inp_short1_q;
-    reg  [20:0] edge_walk$inp_short1_rho;
-    reg  [20:0] edge_walk$inp_short1_d;
-    reg  [35:0] edge_walk$inp_short1_at_z;
-    reg  [31:0] edge_walk$inp_short1_at_c0;
-    reg  [31:0] edge_walk$inp_short1_at_c1;
-    reg  [31:0] edge_walk$inp_short1_at_c2;
-    reg  [39:0] edge_walk$inp_short1_inc0_z;
-    reg  [35:0] edge_walk$inp_short1_inc0_c0;
-    reg  [35:0] edge_walk$inp_short1_inc0_c1;
-    reg  [35:0] edge_walk$inp_short1_inc0_c2;
-    reg  [39:0] edge_walk$inp_short1_inc1_z;
-    reg  [35:0] edge_walk$inp_short1_inc1_c0;
-    reg  [35:0] edge_walk$inp_short1_inc1_c1;
-    reg  [35:0] edge_walk$inp_short1_inc1_c2;
-    reg  [39:0] edge_walk$inp_ddx_z;
-    reg  [35:0] edge_walk$inp_ddx_c0;
-    reg  [35:0] edge_walk$inp_ddx_c1;
-    reg  [35:0] edge_walk$inp_ddx_c2;
+    reg  edge_walk$inp$valid;
+    wire  edge_walk$inp$ready;
+    reg  edge_walk$inp$walk;
+    reg  edge_walk$inp$maj_left;
+    reg  [12:0] edge_walk$inp$maj_j;
+    reg  [12:0] edge_walk$inp$maj_count;
+    reg  [12:0] edge_walk$inp$maj_x;
+    reg  [20:0] edge_walk$inp$maj_r;
+    reg  [16:0] edge_walk$inp$maj_q;
+    reg  [20:0] edge_walk$inp$maj_rho;
+    reg  [20:0] edge_walk$inp$maj_d;
+    reg  [35:0] edge_walk$inp$maj_at_z;
+    reg  [31:0] edge_walk$inp$maj_at_c0;
+    reg  [31:0] edge_walk$inp$maj_at_c1;
+    reg  [31:0] edge_walk$inp$maj_at_c2;
+    reg  [39:0] edge_walk$inp$maj_inc0_z;
+    reg  [35:0] edge_walk$inp$maj_inc0_c0;
+    reg  [35:0] edge_walk$inp$maj_inc0_c1;
+    reg  [35:0] edge_walk$inp$maj_inc0_c2;
+    reg  [39:0] edge_walk$inp$maj_inc1_z;
+    reg  [35:0] edge_walk$inp$maj_inc1_c0;
+    reg  [35:0] edge_walk$inp$maj_inc1_c1;
+    reg  [35:0] edge_walk$inp$maj_inc1_c2;
+    reg  [12:0] edge_walk$inp$short0_j;
+    reg  [12:0] edge_walk$inp$short0_count;
+    reg  [12:0] edge_walk$inp$short0_x;
+    reg  [20:0] edge_walk$inp$short0_r;
+    reg  [16:0] edge_walk$inp$short0_q;
+    reg  [20:0] edge_walk$inp$short0_rho;
+    reg  [20:0] edge_walk$inp$short0_d;
+    reg  [35:0] edge_walk$inp$short0_at_z;
+    reg  [31:0] edge_walk$inp$short0_at_c0;
+    reg  [31:0] edge_walk$inp$short0_at_c1;
+    reg  [31:0] edge_walk$inp$short0_at_c2;
+    reg  [39:0] edge_walk$inp$short0_inc0_z;
+    reg  [35:0] edge_walk$inp$short0_inc0_c0;
+    reg  [35:0] edge_walk$inp$short0_inc0_c1;
+    reg  [35:0] edge_walk$inp$short0_inc0_c2;
+    reg  [39:0] edge_walk$inp$short0_inc1_z;
+    reg  [35:0] edge_walk$inp$short0_inc1_c0;
+    reg  [35:0] edge_walk$inp$short0_inc1_c1;
+    reg  [35:0] edge_walk$inp$short0_inc1_c2;
+    reg  [12:0] edge_walk$inp$short1_j;
+    reg  [12:0] edge_walk$inp$short1_count;
+    reg  [12:0] edge_walk$inp$short1_x;
+    reg  [20:0] edge_walk$inp$short1_r;
+    reg  [16:0] edge_walk$inp$short1_q;
+    reg  [20:0] edge_walk$inp$short1_rho;
+    reg  [20:0] edge_walk$inp$short1_d;
+    reg  [35:0] edge_walk$inp$short1_at_z;
+    reg  [31:0] edge_walk$inp$short1_at_c0;
+    reg  [31:0] edge_walk$inp$short1_at_c1;
+    reg  [31:0] edge_walk$inp$short1_at_c2;
+    reg  [39:0] edge_walk$inp$short1_inc0_z;
+    reg  [35:0] edge_walk$inp$short1_inc0_c0;
+    reg  [35:0] edge_walk$inp$short1_inc0_c1;
+    reg  [35:0] edge_walk$inp$short1_inc0_c2;
+    reg  [39:0] edge_walk$inp$short1_inc1_z;
+    reg  [35:0] edge_walk$inp$short1_inc1_c0;
+    reg  [35:0] edge_walk$inp$short1_inc1_c1;
+    reg  [35:0] edge_walk$inp$short1_inc1_c2;
+    reg  [39:0] edge_walk$inp$ddx_z;
+    reg  [35:0] edge_walk$inp$ddx_c0;
+    reg  [35:0] edge_walk$inp$ddx_c1;
+    reg  [35:0] edge_walk$inp$ddx_c2;
     wire  edge_walk$out$valid;
     reg  edge_walk$out$ready;
     wire  [9:0] edge_walk$out$y;
@@ -655,140 +655,140 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
         .inp_v2_c1(triangle_setup$inp_v2_c1),
         .inp_v2_c2(triangle_setup$inp_v2_c2),
         .inp_crosses(triangle_setup$inp_crosses),
-        .out_valid(triangle_setup$out_valid),
-        .out_ready(triangle_setup$out_ready),
-        .out_walk(triangle_setup$out_walk),
-        .out_maj_left(triangle_setup$out_maj_left),
-        .out_maj_j(triangle_setup$out_maj_j),
-        .out_maj_count(triangle_setup$out_maj_count),
-        .out_maj_x(triangle_setup$out_maj_x),
-        .out_maj_r(triangle_setup$out_maj_r),
-        .out_maj_q(triangle_setup$out_maj_q),
-        .out_maj_rho(triangle_setup$out_maj_rho),
-        .out_maj_d(triangle_setup$out_maj_d),
-        .out_maj_at_z(triangle_setup$out_maj_at_z),
-        .out_maj_at_c0(triangle_setup$out_maj_at_c0),
-        .out_maj_at_c1(triangle_setup$out_maj_at_c1),
-        .out_maj_at_c2(triangle_setup$out_maj_at_c2),
-        .out_maj_inc0_z(triangle_setup$out_maj_inc0_z),
-        .out_maj_inc0_c0(triangle_setup$out_maj_inc0_c0),
-        .out_maj_inc0_c1(triangle_setup$out_maj_inc0_c1),
-        .out_maj_inc0_c2(triangle_setup$out_maj_inc0_c2),
-        .out_maj_inc1_z(triangle_setup$out_maj_inc1_z),
-        .out_maj_inc1_c0(triangle_setup$out_maj_inc1_c0),
-        .out_maj_inc1_c1(triangle_setup$out_maj_inc1_c1),
-        .out_maj_inc1_c2(triangle_setup$out_maj_inc1_c2),
-        .out_short0_j(triangle_setup$out_short0_j),
-        .out_short0_count(triangle_setup$out_short0_count),
-        .out_short0_x(triangle_setup$out_short0_x),
-        .out_short0_r(triangle_setup$out_short0_r),
-        .out_short0_q(triangle_setup$out_short0_q),
-        .out_short0_rho(triangle_setup$out_short0_rho),
-        .out_short0_d(triangle_setup$out_short0_d),
-        .out_short0_at_z(triangle_setup$out_short0_at_z),
-        .out_short0_at_c0(triangle_setup$out_short0_at_c0),
-        .out_short0_at_c1(triangle_setup$out_short0_at_c1),
-        .out_short0_at_c2(triangle_setup$out_short0_at_c2),
-        .out_short0_inc0_z(triangle_setup$out_short0_inc0_z),
-        .out_short0_inc0_c0(triangle_setup$out_short0_inc0_c0),
-        .out_short0_inc0_c1(triangle_setup$out_short0_inc0_c1),
-        .out_short0_inc0_c2(triangle_setup$out_short0_inc0_c2),
-        .out_short0_inc1_z(triangle_setup$out_short0_inc1_z),
-        .out_short0_inc1_c0(triangle_setup$out_short0_inc1_c0),
-        .out_short0_inc1_c1(triangle_setup$out_short0_inc1_c1),
-        .out_short0_inc1_c2(triangle_setup$out_short0_inc1_c2),
-        .out_short1_j(triangle_setup$out_short1_j),
-        .out_short1_count(triangle_setup$out_short1_count),
-        .out_short1_x(triangle_setup$out_short1_x),
-        .out_short1_r(triangle_setup$out_short1_r),
-        .out_short1_q(triangle_setup$out_short1_q),
-        .out_short1_rho(triangle_setup$out_short1_rho),
-        .out_short1_d(triangle_setup$out_short1_d),
-        .out_short1_at_z(triangle_setup$out_short1_at_z),
-        .out_short1_at_c0(triangle_setup$out_short1_at_c0),
-        .out_short1_at_c1(triangle_setup$out_short1_at_c1),
-        .out_short1_at_c2(triangle_setup$out_short1_at_c2),
-        .out_short1_inc0_z(triangle_setup$out_short1_inc0_z),
-        .out_short1_inc0_c0(triangle_setup$out_short1_inc0_c0),
-        .out_short1_inc0_c1(triangle_setup$out_short1_inc0_c1),
-        .out_short1_inc0_c2(triangle_setup$out_short1_inc0_c2),
-        .out_short1_inc1_z(triangle_setup$out_short1_inc1_z),
-        .out_short1_inc1_c0(triangle_setup$out_short1_inc1_c0),
-        .out_short1_inc1_c1(triangle_setup$out_short1_inc1_c1),
-        .out_short1_inc1_c2(triangle_setup$out_short1_inc1_c2),
-        .out_ddx_z(triangle_setup$out_ddx_z),
-        .out_ddx_c0(triangle_setup$out_ddx_c0),
-        .out_ddx_c1(triangle_setup$out_ddx_c1),
-        .out_ddx_c2(triangle_setup$out_ddx_c2)
+        .out$valid(triangle_setup$out$valid),
+        .out$ready(triangle_setup$out$ready),
+        .out$walk(triangle_setup$out$walk),
+        .out$maj_left(triangle_setup$out$maj_left),
+        .out$maj_j(triangle_setup$out$maj_j),
+        .out$maj_count(triangle_setup$out$maj_count),
+        .out$maj_x(triangle_setup$out$maj_x),
+        .out$maj_r(triangle_setup$out$maj_r),
+        .out$maj_q(triangle_setup$out$maj_q),
+        .out$maj_rho(triangle_setup$out$maj_rho),
+        .out$maj_d(triangle_setup$out$maj_d),
+        .out$maj_at_z(triangle_setup$out$maj_at_z),
+        .out$maj_at_c0(triangle_setup$out$maj_at_c0),
+        .out$maj_at_c1(triangle_setup$out$maj_at_c1),
+        .out$maj_at_c2(triangle_setup$out$maj_at_c2),
+        .out$maj_inc0_z(triangle_setup$out$maj_inc0_z),
+        .out$maj_inc0_c0(triangle_setup$out$maj_inc0_c0),
+        .out$maj_inc0_c1(triangle_setup$out$maj_inc0_c1),
+        .out$maj_inc0_c2(triangle_setup$out$maj_inc0_c2),
+        .out$maj_inc1_z(triangle_setup$out$maj_inc1_z),
+        .out$maj_inc1_c0(triangle_setup$out$maj_inc1_c0),
+        .out$maj_inc1_c1(triangle_setup$out$maj_inc1_c1),
+        .out$maj_inc1_c2(triangle_setup$out$maj_inc1_c2),
+        .out$short0_j(triangle_setup$out$short0_j),
+        .out$short0_count(triangle_setup$out$short0_count),
+        .out$short0_x(triangle_setup$out$short0_x),
+        .out$short0_r(triangle_setup$out$short0_r),
+        .out$short0_q(triangle_setup$out$short0_q),
+        .out$short0_rho(triangle_setup$out$short0_rho),
+        .out$short0_d(triangle_setup$out$short0_d),
+        .out$short0_at_z(triangle_setup$out$short0_at_z),
+        .out$short0_at_c0(triangle_setup$out$short0_at_c0),
+        .out$short0_at_c1(triangle_setup$out$short0_at_c1),
+        .out$short0_at_c2(triangle_setup$out$short0_at_c2),
+        .out$short0_inc0_z(triangle_setup$out$short0_inc0_z),
+        .out$short0_inc0_c0(triangle_setup$out$short0_inc0_c0),
+        .out$short0_inc0_c1(triangle_setup$out$short0_inc0_c1),
+        .out$short0_inc0_c2(triangle_setup$out$short0_inc0_c2),
+        .out$short0_inc1_z(triangle_setup$out$short0_inc1_z),
+        .out$short0_inc1_c0(triangle_setup$out$short0_inc1_c0),
+        .out$short0_inc1_c1(triangle_setup$out$short0_inc1_c1),
+        .out$short0_inc1_c2(triangle_setup$out$short0_inc1_c2),
+        .out$short1_j(triangle_setup$out$short1_j),
+        .out$short1_count(triangle_setup$out$short1_count),
+        .out$short1_x(triangle_setup$out$short1_x),
+        .out$short1_r(triangle_setup$out$short1_r),
+        .out$short1_q(triangle_setup$out$short1_q),
+        .out$short1_rho(triangle_setup$out$short1_rho),
+        .out$short1_d(triangle_setup$out$short1_d),
+        .out$short1_at_z(triangle_setup$out$short1_at_z),
+        .out$short1_at_c0(triangle_setup$out$short1_at_c0),
+        .out$short1_at_c1(triangle_setup$out$short1_at_c1),
+        .out$short1_at_c2(triangle_setup$out$short1_at_c2),
+        .out$short1_inc0_z(triangle_setup$out$short1_inc0_z),
+        .out$short1_inc0_c0(triangle_setup$out$short1_inc0_c0),
+        .out$short1_inc0_c1(triangle_setup$out$short1_inc0_c1),
+        .out$short1_inc0_c2(triangle_setup$out$short1_inc0_c2),
+        .out$short1_inc1_z(triangle_setup$out$short1_inc1_z),
+        .out$short1_inc1_c0(triangle_setup$out$short1_inc1_c0),
+        .out$short1_inc1_c1(triangle_setup$out$short1_inc1_c1),
+        .out$short1_inc1_c2(triangle_setup$out$short1_inc1_c2),
+        .out$ddx_z(triangle_setup$out$ddx_z),
+        .out$ddx_c0(triangle_setup$out$ddx_c0),
+        .out$ddx_c1(triangle_setup$out$ddx_c1),
+        .out$ddx_c2(triangle_setup$out$ddx_c2)
     );
     raster_top$core$edge_walk edge_walk(
         .clock(edge_walk$clock),
         .height(edge_walk$height),
-        .inp_valid(edge_walk$inp_valid),
-        .inp_ready(edge_walk$inp_ready),
-        .inp_walk(edge_walk$inp_walk),
-        .inp_maj_left(edge_walk$inp_maj_left),
-        .inp_maj_j(edge_walk$inp_maj_j),
-        .inp_maj_count(edge_walk$inp_maj_count),
-        .inp_maj_x(edge_walk$inp_maj_x),
-        .inp_maj_r(edge_walk$inp_maj_r),
-        .inp_maj_q(edge_walk$inp_maj_q),
-        .inp_maj_rho(edge_walk$inp_maj_rho),
-        .inp_maj_d(edge_walk$inp_maj_d),
-        .inp_maj_at_z(edge_walk$inp_maj_at_z),
-        .inp_maj_at_c0(edge_walk$inp_maj_at_c0),
-        .inp_maj_at_c1(edge_walk$inp_maj_at_c1),
-        .inp_maj_at_c2(edge_walk$inp_maj_at_c2),
-        .inp_maj_inc0_z(edge_walk$inp_maj_inc0_z),
-        .inp_maj_inc0_c0(edge_walk$inp_maj_inc0_c0),
-        .inp_maj_inc0_c1(edge_walk$inp_maj_inc0_c1),
-        .inp_maj_inc0_c2(edge_walk$inp_maj_inc0_c2),
-        .inp_maj_inc1_z(edge_walk$inp_maj_inc1_z),
-        .inp_maj_inc1_c0(edge_walk$inp_maj_inc1_c0),
-        .inp_maj_inc1_c1(edge_walk$inp_maj_inc1_c1),
-        .inp_maj_inc1_c2(edge_walk$inp_maj_inc1_c2),
-        .inp_short0_j(edge_walk$inp_short0_j),
-        .inp_short0_count(edge_walk$inp_short0_count),
-        .inp_short0_x(edge_walk$inp_short0_x),
-        .inp_short0_r(edge_walk$inp_short0_r),
-        .inp_short0_q(edge_walk$inp_short0_q),
-        .inp_short0_rho(edge_walk$inp_short0_rho),
-        .inp_short0_d(edge_walk$inp_short0_d),
-        .inp_short0_at_z(edge_walk$inp_short0_at_z),
-        .inp_short0_at_c0(edge_walk$inp_short0_at_c0),
-        .inp_short0_at_c1(edge_walk$inp_short0_at_c1),
-        .inp_short0_at_c2(edge_walk$inp_short0_at_c2),
-        .inp_short0_inc0_z(edge_walk$inp_short0_inc0_z),
-        .inp_short0_inc0_c0(edge_walk$inp_short0_inc0_c0),
-        .inp_short0_inc0_c1(edge_walk$inp_short0_inc0_c1),
-        .inp_short0_inc0_c2(edge_walk$inp_short0_inc0_c2),
-        .inp_short0_inc1_z(edge_walk$inp_short0_inc1_z),
-        .inp_short0_inc1_c0(edge_walk$inp_short0_inc1_c0),
-        .inp_short0_inc1_c1(edge_walk$inp_short0_inc1_c1),
-        .inp_short0_inc1_c2(edge_walk$inp_short0_inc1_c2),
-        .inp_short1_j(edge_walk$inp_short1_j),
-        .inp_short1_count(edge_walk$inp_short1_count),
-        .inp_short1_x(edge_walk$inp_short1_x),
-        .inp_short1_r(edge_walk$inp_short1_r),
-        .inp_short1_q(edge_walk$inp_short1_q),
-        .inp_short1_rho(edge_walk$inp_short1_rho),
-        .inp_short1_d(edge_walk$inp_short1_d),
-        .inp_short1_at_z(edge_walk$inp_short1_at_z),
-        .inp_short1_at_c0(edge_walk$inp_short1_at_c0),
-        .inp_short1_at_c1(edge_walk$inp_short1_at_c1),
-        .inp_short1_at_c2(edge_walk$inp_short1_at_c2),
-        .inp_short1_inc0_z(edge_walk$inp_short1_inc0_z),
-        .inp_short1_inc0_c0(edge_walk$inp_short1_inc0_c0),
-        .inp_short1_inc0_c1(edge_walk$inp_short1_inc0_c1),
-        .inp_short1_inc0_c2(edge_walk$inp_short1_inc0_c2),
-        .inp_short1_inc1_z(edge_walk$inp_short1_inc1_z),
-        .inp_short1_inc1_c0(edge_walk$inp_short1_inc1_c0),
-        .inp_short1_inc1_c1(edge_walk$inp_short1_inc1_c1),
-        .inp_short1_inc1_c2(edge_walk$inp_short1_inc1_c2),
-        .inp_ddx_z(edge_walk$inp_ddx_z),
-        .inp_ddx_c0(edge_walk$inp_ddx_c0),
-        .inp_ddx_c1(edge_walk$inp_ddx_c1),
-        .inp_ddx_c2(edge_walk$inp_ddx_c2),
+        .inp$valid(edge_walk$inp$valid),
+        .inp$ready(edge_walk$inp$ready),
+        .inp$walk(edge_walk$inp$walk),
+        .inp$maj_left(edge_walk$inp$maj_left),
+        .inp$maj_j(edge_walk$inp$maj_j),
+        .inp$maj_count(edge_walk$inp$maj_count),
+        .inp$maj_x(edge_walk$inp$maj_x),
+        .inp$maj_r(edge_walk$inp$maj_r),
+        .inp$maj_q(edge_walk$inp$maj_q),
+        .inp$maj_rho(edge_walk$inp$maj_rho),
+        .inp$maj_d(edge_walk$inp$maj_d),
+        .inp$maj_at_z(edge_walk$inp$maj_at_z),
+        .inp$maj_at_c0(edge_walk$inp$maj_at_c0),
+        .inp$maj_at_c1(edge_walk$inp$maj_at_c1),
+        .inp$maj_at_c2(edge_walk$inp$maj_at_c2),
+        .inp$maj_inc0_z(edge_walk$inp$maj_inc0_z),
+        .inp$maj_inc0_c0(edge_walk$inp$maj_inc0_c0),
+        .inp$maj_inc0_c1(edge_walk$inp$maj_inc0_c1),
+        .inp$maj_inc0_c2(edge_walk$inp$maj_inc0_c2),
+        .inp$maj_inc1_z(edge_walk$inp$maj_inc1_z),
+        .inp$maj_inc1_c0(edge_walk$inp$maj_inc1_c0),
+        .inp$maj_inc1_c1(edge_walk$inp$maj_inc1_c1),
+        .inp$maj_inc1_c2(edge_walk$inp$maj_inc1_c2),
+        .inp$short0_j(edge_walk$inp$short0_j),
+        .inp$short0_count(edge_walk$inp$short0_count),
+        .inp$short0_x(edge_walk$inp$short0_x),
+        .inp$short0_r(edge_walk$inp$short0_r),
+        .inp$short0_q(edge_walk$inp$short0_q),
+        .inp$short0_rho(edge_walk$inp$short0_rho),
+        .inp$short0_d(edge_walk$inp$short0_d),
+        .inp$short0_at_z(edge_walk$inp$short0_at_z),
+        .inp$short0_at_c0(edge_walk$inp$short0_at_c0),
+        .inp$short0_at_c1(edge_walk$inp$short0_at_c1),
+        .inp$short0_at_c2(edge_walk$inp$short0_at_c2),
+        .inp$short0_inc0_z(edge_walk$inp$short0_inc0_z),
+        .inp$short0_inc0_c0(edge_walk$inp$short0_inc0_c0),
+        .inp$short0_inc0_c1(edge_walk$inp$short0_inc0_c1),
+        .inp$short0_inc0_c2(edge_walk$inp$short0_inc0_c2),
+        .inp$short0_inc1_z(edge_walk$inp$short0_inc1_z),
+        .inp$short0_inc1_c0(edge_walk$inp$short0_inc1_c0),
+        .inp$short0_inc1_c1(edge_walk$inp$short0_inc1_c1),
+        .inp$short0_inc1_c2(edge_walk$inp$short0_inc1_c2),
+        .inp$short1_j(edge_walk$inp$short1_j),
+        .inp$short1_count(edge_walk$inp$short1_count),
+        .inp$short1_x(edge_walk$inp$short1_x),
+        .inp$short1_r(edge_walk$inp$short1_r),
+        .inp$short1_q(edge_walk$inp$short1_q),
+        .inp$short1_rho(edge_walk$inp$short1_rho),
+        .inp$short1_d(edge_walk$inp$short1_d),
+        .inp$short1_at_z(edge_walk$inp$short1_at_z),
+        .inp$short1_at_c0(edge_walk$inp$short1_at_c0),
+        .inp$short1_at_c1(edge_walk$inp$short1_at_c1),
+        .inp$short1_at_c2(edge_walk$inp$short1_at_c2),
+        .inp$short1_inc0_z(edge_walk$inp$short1_inc0_z),
+        .inp$short1_inc0_c0(edge_walk$inp$short1_inc0_c0),
+        .inp$short1_inc0_c1(edge_walk$inp$short1_inc0_c1),
+        .inp$short1_inc0_c2(edge_walk$inp$short1_inc0_c2),
+        .inp$short1_inc1_z(edge_walk$inp$short1_inc1_z),
+        .inp$short1_inc1_c0(edge_walk$inp$short1_inc1_c0),
+        .inp$short1_inc1_c1(edge_walk$inp$short1_inc1_c1),
+        .inp$short1_inc1_c2(edge_walk$inp$short1_inc1_c2),
+        .inp$ddx_z(edge_walk$inp$ddx_z),
+        .inp$ddx_c0(edge_walk$inp$ddx_c0),
+        .inp$ddx_c1(edge_walk$inp$ddx_c1),
+        .inp$ddx_c2(edge_walk$inp$ddx_c2),
         .out$valid(edge_walk$out$valid),
         .out$ready(edge_walk$out$ready),
         .out$y(edge_walk$out$y),
@@ -911,81 +911,81 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
         triangle_setup$inp_v2_c1 = inp_v2_c1;
         triangle_setup$inp_v2_c2 = inp_v2_c2;
         edge_walk$height = height;
-        edge_walk$inp_valid = triangle_setup$out_valid;
-        triangle_setup$out_ready = edge_walk$inp_ready;
-        edge_walk$inp_walk = triangle_setup$out_walk;
-        edge_walk$inp_maj_left = triangle_setup$out_maj_left;
-        edge_walk$inp_maj_j = triangle_setup$out_maj_j;
-        edge_walk$inp_maj_count = triangle_setup$out_maj_count;
-        edge_walk$inp_maj_x = triangle_setup$out_maj_x;
-        edge_walk$inp_maj_r = triangle_setup$out_maj_r;
-        edge_walk$inp_maj_q = triangle_setup$out_maj_q;
-        edge_walk$inp_maj_rho = triangle_setup$out_maj_rho;
-        edge_walk$inp_maj_d = triangle_setup$out_maj_d;
-        edge_walk$inp_maj_at_z = triangle_setup$out_maj_at_z;
-        edge_walk$inp_maj_at_c0 = triangle_setup$out_maj_at_c0;
-        edge_walk$inp_maj_at_c1 = triangle_setup$out_maj_at_c1;
-        edge_walk$inp_maj_at_c2 = triangle_setup$out_maj_at_c2;
-        edge_walk$inp_maj_inc0_z = triangle_setup$out_maj_inc0_z;
-        edge_walk$inp_maj_inc0_c0 = triangle_setup$out_maj_inc0_c0;
-        edge_walk$inp_maj_inc0_c1 = triangle_setup$out_maj_inc0_c1;
-        edge_walk$inp_maj_inc0_c2 = triangle_setup$out_maj_inc0_c2;
-        edge_walk$inp_maj_inc1_z = triangle_setup$out_maj_inc1_z;
-        edge_walk$inp_maj_inc1_c0 = triangle_setup$out_maj_inc1_c0;
-        edge_walk$inp_maj_inc1_c1 = triangle_setup$out_maj_inc1_c1;
-        edge_walk$inp_maj_inc1_c2 = triangle_setup$out_maj_inc1_c2;
-        edge_walk$inp_short0_j = triangle_setup$out_short0_j;
-        edge_walk$inp_short0_count = triangle_setup$out_short0_count;
-        edge_walk$inp_short0_x = triangle_setup$out_short0_x;
-        edge_walk$inp_short0_r = triangle_setup$out_short0_r;
-        edge_walk$inp_short0_q = triangle_setup$out_short0_q;
-        edge_walk$inp_short0_rho = triangle_setup$out_short0_rho;
-        edge_walk$inp_short0_d = triangle_setup$out_short0_d;
-        edge_walk$inp_short0_at_z = triangle_setup$out_short0_at_z;
-        edge_walk$inp_short0_at_c0 = triangle_setup$out_short0_at_c0;
-        edge_walk$inp_short0_at_c1 = triangle_setup$out_short0_at_c1;
-        edge_walk$inp_short0_at_c2 = triangle_setup$out_short0_at_c2;
-        edge_walk$inp_short0_inc0_z = triangle_setup$out_short0_inc0_z;
-        edge_walk$inp_short0_inc0_c0 = triangle_setup$out_short0_inc0_c0;
-        edge_walk$inp_short0_inc0_c1 = triangle_setup$out_short0_inc0_c1;
-        edge_walk$inp_short0_inc0_c2 = triangle_setup$out_short0_inc0_c2;
-        edge_walk$inp_short0_inc1_z = triangle_setup$out_short0_inc1_z;
-        edge_walk$inp_short0_inc1_c0 = triangle_setup$out_short0_inc1_c0;
-        edge_walk$inp_short0_inc1_c1 = triangle_setup$out_short0_inc1_c1;
-        edge_walk$inp_short0_inc1_c2 = triangle_setup$out_short0_inc1_c2;
-        edge_walk$inp_short1_j = triangle_setup$out_short1_j;
-        edge_walk$inp_short1_count = triangle_setup$out_short1_count;
-        edge_walk$inp_short1_x = triangle_setup$out_short1_x;
-        edge_walk$inp_short1_r = triangle_setup$out_short1_r;
-        edge_walk$inp_short1_q = triangle_setup$out_short1_q;
-        edge_walk$inp_short1_rho = triangle_setup$out_short1_rho;
-        edge_walk$inp_short1_d = triangle_setup$out_short1_d;
-        edge_walk$inp_short1_at_z = triangle_setup$out_short1_at_z;
-        edge_walk$inp_short1_at_c0 = triangle_setup$out_short1_at_c0;
-        edge_walk$inp_short1_at_c1 = triangle_setup$out_short1_at_c1;
-        edge_walk$inp_short1_at_c2 = triangle_setup$out_short1_at_c2;
-        edge_walk$inp_short1_inc0_z = triangle_setup$out_short1_inc0_z;
-        edge_walk$inp_short1_inc0_c0 = triangle_setup$out_short1_inc0_c0;
-        edge_walk$inp_short1_inc0_c1 = triangle_setup$out_short1_inc0_c1;
-        edge_walk$inp_short1_inc0_c2 = triangle_setup$out_short1_inc0_c2;
-        edge_walk$inp_short1_inc1_z = triangle_setup$out_short1_inc1_z;
-        edge_walk$inp_short1_inc1_c0 = triangle_setup$out_short1_inc1_c0;
-        edge_walk$inp_short1_inc1_c1 = triangle_setup$out_short1_inc1_c1;
-        edge_walk$inp_short1_inc1_c2 = triangle_setup$out_short1_inc1_c2;
-        edge_walk$inp_ddx_z = triangle_setup$out_ddx_z;
-        edge_walk$inp_ddx_c0 = triangle_setup$out_ddx_c0;
-        edge_walk$inp_ddx_c1 = triangle_setup$out_ddx_c1;
-        edge_walk$inp_ddx_c2 = triangle_setup$out_ddx_c2;
         span$width = width;
         if (inp_valid & triangle_setup$inp_ready) begin
             in_setup$d = 1'b1;
         end
-        else if (triangle_setup$out_valid & edge_walk$inp_ready) begin
+        else if (triangle_setup$out$valid & edge_walk$inp$ready) begin
             in_setup$d = 1'b0;
         end
-        idle = ~in_setup$q & edge_walk$inp_ready & fifo$empty & span$idle;
+        idle = ~in_setup$q & edge_walk$inp$ready & fifo$empty & span$idle;
     end
     
+    always @(*) edge_walk$inp$valid = triangle_setup$out$valid;
+    always @(*) triangle_setup$out$ready = edge_walk$inp$ready;
+    always @(*) edge_walk$inp$walk = triangle_setup$out$walk;
+    always @(*) edge_walk$inp$maj_left = triangle_setup$out$maj_left;
+    always @(*) edge_walk$inp$maj_j = triangle_setup$out$maj_j;
+    always @(*) edge_walk$inp$maj_count = triangle_setup$out$maj_count;
+    always @(*) edge_walk$inp$maj_x = triangle_setup$out$maj_x;
+    always @(*) edge_walk$inp$maj_r = triangle_setup$out$maj_r;
+    always @(*) edge_walk$inp$maj_q = triangle_setup$out$maj_q;
+    always @(*) edge_walk$inp$maj_rho = triangle_setup$out$maj_rho;
+    always @(*) edge_walk$inp$maj_d = triangle_setup$out$maj_d;
+    always @(*) edge_walk$inp$maj_at_z = triangle_setup$out$maj_at_z;
+    always @(*) edge_walk$inp$maj_at_c0 = triangle_setup$out$maj_at_c0;
+    always @(*) edge_walk$inp$maj_at_c1 = triangle_setup$out$maj_at_c1;
+    always @(*) edge_walk$inp$maj_at_c2 = triangle_setup$out$maj_at_c2;
+    always @(*) edge_walk$inp$maj_inc0_z = triangle_setup$out$maj_inc0_z;
+    always @(*) edge_walk$inp$maj_inc0_c0 = triangle_setup$out$maj_inc0_c0;
+    always @(*) edge_walk$inp$maj_inc0_c1 = triangle_setup$out$maj_inc0_c1;
+    always @(*) edge_walk$inp$maj_inc0_c2 = triangle_setup$out$maj_inc0_c2;
+    always @(*) edge_walk$inp$maj_inc1_z = triangle_setup$out$maj_inc1_z;
+    always @(*) edge_walk$inp$maj_inc1_c0 = triangle_setup$out$maj_inc1_c0;
+    always @(*) edge_walk$inp$maj_inc1_c1 = triangle_setup$out$maj_inc1_c1;
+    always @(*) edge_walk$inp$maj_inc1_c2 = triangle_setup$out$maj_inc1_c2;
+    always @(*) edge_walk$inp$short0_j = triangle_setup$out$short0_j;
+    always @(*) edge_walk$inp$short0_count = triangle_setup$out$short0_count;
+    always @(*) edge_walk$inp$short0_x = triangle_setup$out$short0_x;
+    always @(*) edge_walk$inp$short0_r = triangle_setup$out$short0_r;
+    always @(*) edge_walk$inp$short0_q = triangle_setup$out$short0_q;
+    always @(*) edge_walk$inp$short0_rho = triangle_setup$out$short0_rho;
+    always @(*) edge_walk$inp$short0_d = triangle_setup$out$short0_d;
+    always @(*) edge_walk$inp$short0_at_z = triangle_setup$out$short0_at_z;
+    always @(*) edge_walk$inp$short0_at_c0 = triangle_setup$out$short0_at_c0;
+    always @(*) edge_walk$inp$short0_at_c1 = triangle_setup$out$short0_at_c1;
+    always @(*) edge_walk$inp$short0_at_c2 = triangle_setup$out$short0_at_c2;
+    always @(*) edge_walk$inp$short0_inc0_z = triangle_setup$out$short0_inc0_z;
+    always @(*) edge_walk$inp$short0_inc0_c0 = triangle_setup$out$short0_inc0_c0;
+    always @(*) edge_walk$inp$short0_inc0_c1 = triangle_setup$out$short0_inc0_c1;
+    always @(*) edge_walk$inp$short0_inc0_c2 = triangle_setup$out$short0_inc0_c2;
+    always @(*) edge_walk$inp$short0_inc1_z = triangle_setup$out$short0_inc1_z;
+    always @(*) edge_walk$inp$short0_inc1_c0 = triangle_setup$out$short0_inc1_c0;
+    always @(*) edge_walk$inp$short0_inc1_c1 = triangle_setup$out$short0_inc1_c1;
+    always @(*) edge_walk$inp$short0_inc1_c2 = triangle_setup$out$short0_inc1_c2;
+    always @(*) edge_walk$inp$short1_j = triangle_setup$out$short1_j;
+    always @(*) edge_walk$inp$short1_count = triangle_setup$out$short1_count;
+    always @(*) edge_walk$inp$short1_x = triangle_setup$out$short1_x;
+    always @(*) edge_walk$inp$short1_r = triangle_setup$out$short1_r;
+    always @(*) edge_walk$inp$short1_q = triangle_setup$out$short1_q;
+    always @(*) edge_walk$inp$short1_rho = triangle_setup$out$short1_rho;
+    always @(*) edge_walk$inp$short1_d = triangle_setup$out$short1_d;
+    always @(*) edge_walk$inp$short1_at_z = triangle_setup$out$short1_at_z;
+    always @(*) edge_walk$inp$short1_at_c0 = triangle_setup$out$short1_at_c0;
+    always @(*) edge_walk$inp$short1_at_c1 = triangle_setup$out$short1_at_c1;
+    always @(*) edge_walk$inp$short1_at_c2 = triangle_setup$out$short1_at_c2;
+    always @(*) edge_walk$inp$short1_inc0_z = triangle_setup$out$short1_inc0_z;
+    always @(*) edge_walk$inp$short1_inc0_c0 = triangle_setup$out$short1_inc0_c0;
+    always @(*) edge_walk$inp$short1_inc0_c1 = triangle_setup$out$short1_inc0_c1;
+    always @(*) edge_walk$inp$short1_inc0_c2 = triangle_setup$out$short1_inc0_c2;
+    always @(*) edge_walk$inp$short1_inc1_z = triangle_setup$out$short1_inc1_z;
+    always @(*) edge_walk$inp$short1_inc1_c0 = triangle_setup$out$short1_inc1_c0;
+    always @(*) edge_walk$inp$short1_inc1_c1 = triangle_setup$out$short1_inc1_c1;
+    always @(*) edge_walk$inp$short1_inc1_c2 = triangle_setup$out$short1_inc1_c2;
+    always @(*) edge_walk$inp$ddx_z = triangle_setup$out$ddx_z;
+    always @(*) edge_walk$inp$ddx_c0 = triangle_setup$out$ddx_c0;
+    always @(*) edge_walk$inp$ddx_c1 = triangle_setup$out$ddx_c1;
+    always @(*) edge_walk$inp$ddx_c2 = triangle_setup$out$ddx_c2;
     always @(*) fifo$inp$valid = edge_walk$out$valid;
     always @(*) edge_walk$out$ready = fifo$inp$ready;
     always @(*) fifo$inp$y = edge_walk$out$y;
@@ -1023,76 +1023,76 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
 endmodule // raster_top$core
 
 
-module raster_top$core$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_maj_left,inp_maj_j,inp_maj_count,inp_maj_x,inp_maj_r,inp_maj_q,inp_maj_rho,inp_maj_d,inp_maj_at_z,inp_maj_at_c0,inp_maj_at_c1,inp_maj_at_c2,inp_maj_inc0_z,inp_maj_inc0_c0,inp_maj_inc0_c1,inp_maj_inc0_c2,inp_maj_inc1_z,inp_maj_inc1_c0,inp_maj_inc1_c1,inp_maj_inc1_c2,inp_short0_j,inp_short0_count,inp_short0_x,inp_short0_r,inp_short0_q,inp_short0_rho,inp_short0_d,inp_short0_at_z,inp_short0_at_c0,inp_short0_at_c1,inp_short0_at_c2,inp_short0_inc0_z,inp_short0_inc0_c0,inp_short0_inc0_c1,inp_short0_inc0_c2,inp_short0_inc1_z,inp_short0_inc1_c0,inp_short0_inc1_c1,inp_short0_inc1_c2,inp_short1_j,inp_short1_count,inp_short1_x,inp_short1_r,inp_short1_q,inp_short1_rho,inp_short1_d,inp_short1_at_z,inp_short1_at_c0,inp_short1_at_c1,inp_short1_at_c2,inp_short1_inc0_z,inp_short1_inc0_c0,inp_short1_inc0_c1,inp_short1_inc0_c2,inp_short1_inc1_z,inp_short1_inc1_c0,inp_short1_inc1_c1,inp_short1_inc1_c2,inp_ddx_z,inp_ddx_c0,inp_ddx_c1,inp_ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
+module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_j,inp$maj_count,inp$maj_x,inp$maj_r,inp$maj_q,inp$maj_rho,inp$maj_d,inp$maj_at_z,inp$maj_at_c0,inp$maj_at_c1,inp$maj_at_c2,inp$maj_inc0_z,inp$maj_inc0_c0,inp$maj_inc0_c1,inp$maj_inc0_c2,inp$maj_inc1_z,inp$maj_inc1_c0,inp$maj_inc1_c1,inp$maj_inc1_c2,inp$short0_j,inp$short0_count,inp$short0_x,inp$short0_r,inp$short0_q,inp$short0_rho,inp$short0_d,inp$short0_at_z,inp$short0_at_c0,inp$short0_at_c1,inp$short0_at_c2,inp$short0_inc0_z,inp$short0_inc0_c0,inp$short0_inc0_c1,inp$short0_inc0_c2,inp$short0_inc1_z,inp$short0_inc1_c0,inp$short0_inc1_c1,inp$short0_inc1_c2,inp$short1_j,inp$short1_count,inp$short1_x,inp$short1_r,inp$short1_q,inp$short1_rho,inp$short1_d,inp$short1_at_z,inp$short1_at_c0,inp$short1_at_c1,inp$short1_at_c2,inp$short1_inc0_z,inp$short1_inc0_c0,inp$short1_inc0_c1,inp$short1_inc0_c2,inp$short1_inc1_z,inp$short1_inc1_c0,inp$short1_inc1_c1,inp$short1_inc1_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
     
     // Module arguments
     input wire  clock;
     input wire  [10:0] height;
-    input wire  inp_valid;
-    output reg  inp_ready;
-    input wire  inp_walk;
-    input wire  inp_maj_left;
-    input wire  [12:0] inp_maj_j;
-    input wire  [12:0] inp_maj_count;
-    input wire  [12:0] inp_maj_x;
-    input wire  [20:0] inp_maj_r;
-    input wire  [16:0] inp_maj_q;
-    input wire  [20:0] inp_maj_rho;
-    input wire  [20:0] inp_maj_d;
-    input wire  [35:0] inp_maj_at_z;
-    input wire  [31:0] inp_maj_at_c0;
-    input wire  [31:0] inp_maj_at_c1;
-    input wire  [31:0] inp_maj_at_c2;
-    input wire  [39:0] inp_maj_inc0_z;
-    input wire  [35:0] inp_maj_inc0_c0;
-    input wire  [35:0] inp_maj_inc0_c1;
-    input wire  [35:0] inp_maj_inc0_c2;
-    input wire  [39:0] inp_maj_inc1_z;
-    input wire  [35:0] inp_maj_inc1_c0;
-    input wire  [35:0] inp_maj_inc1_c1;
-    input wire  [35:0] inp_maj_inc1_c2;
-    input wire  [12:0] inp_short0_j;
-    input wire  [12:0] inp_short0_count;
-    input wire  [12:0] inp_short0_x;
-    input wire  [20:0] inp_short0_r;
-    input wire  [16:0] inp_short0_q;
-    input wire  [20:0] inp_short0_rho;
-    input wire  [20:0] inp_short0_d;
-    input wire  [35:0] inp_short0_at_z;
-    input wire  [31:0] inp_short0_at_c0;
-    input wire  [31:0] inp_short0_at_c1;
-    input wire  [31:0] inp_short0_at_c2;
-    input wire  [39:0] inp_short0_inc0_z;
-    input wire  [35:0] inp_short0_inc0_c0;
-    input wire  [35:0] inp_short0_inc0_c1;
-    input wire  [35:0] inp_short0_inc0_c2;
-    input wire  [39:0] inp_short0_inc1_z;
-    input wire  [35:0] inp_short0_inc1_c0;
-    input wire  [35:0] inp_short0_inc1_c1;
-    input wire  [35:0] inp_short0_inc1_c2;
-    input wire  [12:0] inp_short1_j;
-    input wire  [12:0] inp_short1_count;
-    input wire  [12:0] inp_short1_x;
-    input wire  [20:0] inp_short1_r;
-    input wire  [16:0] inp_short1_q;
-    input wire  [20:0] inp_short1_rho;
-    input wire  [20:0] inp_short1_d;
-    input wire  [35:0] inp_short1_at_z;
-    input wire  [31:0] inp_short1_at_c0;
-    input wire  [31:0] inp_short1_at_c1;
-    input wire  [31:0] inp_short1_at_c2;
-    input wire  [39:0] inp_short1_inc0_z;
-    input wire  [35:0] inp_short1_inc0_c0;
-    input wire  [35:0] inp_short1_inc0_c1;
-    input wire  [35:0] inp_short1_inc0_c2;
-    input wire  [39:0] inp_short1_inc1_z;
-    input wire  [35:0] inp_short1_inc1_c0;
-    input wire  [35:0] inp_short1_inc1_c1;
-    input wire  [35:0] inp_short1_inc1_c2;
-    input wire  [39:0] inp_ddx_z;
-    input wire  [35:0] inp_ddx_c0;
-    input wire  [35:0] inp_ddx_c1;
-    input wire  [35:0] inp_ddx_c2;
+    input wire  inp$valid;
+    output reg  inp$ready;
+    input wire  inp$walk;
+    input wire  inp$maj_left;
+    input wire  [12:0] inp$maj_j;
+    input wire  [12:0] inp$maj_count;
+    input wire  [12:0] inp$maj_x;
+    input wire  [20:0] inp$maj_r;
+    input wire  [16:0] inp$maj_q;
+    input wire  [20:0] inp$maj_rho;
+    input wire  [20:0] inp$maj_d;
+    input wire  [35:0] inp$maj_at_z;
+    input wire  [31:0] inp$maj_at_c0;
+    input wire  [31:0] inp$maj_at_c1;
+    input wire  [31:0] inp$maj_at_c2;
+    input wire  [39:0] inp$maj_inc0_z;
+    input wire  [35:0] inp$maj_inc0_c0;
+    input wire  [35:0] inp$maj_inc0_c1;
+    input wire  [35:0] inp$maj_inc0_c2;
+    input wire  [39:0] inp$maj_inc1_z;
+    input wire  [35:0] inp$maj_inc1_c0;
+    input wire  [35:0] inp$maj_inc1_c1;
+    input wire  [35:0] inp$maj_inc1_c2;
+    input wire  [12:0] inp$short0_j;
+    input wire  [12:0] inp$short0_count;
+    input wire  [12:0] inp$short0_x;
+    input wire  [20:0] inp$short0_r;
+    input wire  [16:0] inp$short0_q;
+    input wire  [20:0] inp$short0_rho;
+    input wire  [20:0] inp$short0_d;
+    input wire  [35:0] inp$short0_at_z;
+    input wire  [31:0] inp$short0_at_c0;
+    input wire  [31:0] inp$short0_at_c1;
+    input wire  [31:0] inp$short0_at_c2;
+    input wire  [39:0] inp$short0_inc0_z;
+    input wire  [35:0] inp$short0_inc0_c0;
+    input wire  [35:0] inp$short0_inc0_c1;
+    input wire  [35:0] inp$short0_inc0_c2;
+    input wire  [39:0] inp$short0_inc1_z;
+    input wire  [35:0] inp$short0_inc1_c0;
+    input wire  [35:0] inp$short0_inc1_c1;
+    input wire  [35:0] inp$short0_inc1_c2;
+    input wire  [12:0] inp$short1_j;
+    input wire  [12:0] inp$short1_count;
+    input wire  [12:0] inp$short1_x;
+    input wire  [20:0] inp$short1_r;
+    input wire  [16:0] inp$short1_q;
+    input wire  [20:0] inp$short1_rho;
+    input wire  [20:0] inp$short1_d;
+    input wire  [35:0] inp$short1_at_z;
+    input wire  [31:0] inp$short1_at_c0;
+    input wire  [31:0] inp$short1_at_c1;
+    input wire  [31:0] inp$short1_at_c2;
+    input wire  [39:0] inp$short1_inc0_z;
+    input wire  [35:0] inp$short1_inc0_c0;
+    input wire  [35:0] inp$short1_inc0_c1;
+    input wire  [35:0] inp$short1_inc0_c2;
+    input wire  [39:0] inp$short1_inc1_z;
+    input wire  [35:0] inp$short1_inc1_c0;
+    input wire  [35:0] inp$short1_inc1_c1;
+    input wire  [35:0] inp$short1_inc1_c2;
+    input wire  [39:0] inp$ddx_z;
+    input wire  [35:0] inp$ddx_c0;
+    input wire  [35:0] inp$ddx_c1;
+    input wire  [35:0] inp$ddx_c2;
     output reg  out$valid;
     input wire  out$ready;
     output reg  [9:0] out$y;
@@ -1542,8 +1542,8 @@ module raster_top$core$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_m
         pend_inc1_c2$d = pend_inc1_c2$q;
         maj$clock = clock;
         cur$clock = clock;
-        inp_ready = ~busy$q;
-        accept = inp_valid & ~busy$q;
+        inp$ready = ~busy$q;
+        accept = inp$valid & ~busy$q;
         j_sign$x = j$q;
         height_j = ((height) & 13'h1fff);
         k_next = k$q + 32'h1;
@@ -1618,23 +1618,23 @@ module raster_top$core$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_m
         cur$up = up$q;
         cur$load = accept | switch;
         cur$step = advance & ~last;
-        maj$ld_x = inp_maj_x;
-        maj$ld_r = inp_maj_r;
-        maj$ld_q = ((inp_maj_q) & 13'h1fff);
-        maj$ld_rho = inp_maj_rho;
-        maj$ld_d = inp_maj_d;
-        maj$ld_at_z = inp_maj_at_z;
-        maj$ld_at_c0 = inp_maj_at_c0;
-        maj$ld_at_c1 = inp_maj_at_c1;
-        maj$ld_at_c2 = inp_maj_at_c2;
-        maj$ld_inc0_z = ((inp_maj_inc0_z) & 36'hfffffffff);
-        maj$ld_inc0_c0 = ((inp_maj_inc0_c0) & 32'hffffffff);
-        maj$ld_inc0_c1 = ((inp_maj_inc0_c1) & 32'hffffffff);
-        maj$ld_inc0_c2 = ((inp_maj_inc0_c2) & 32'hffffffff);
-        maj$ld_inc1_z = ((inp_maj_inc1_z) & 36'hfffffffff);
-        maj$ld_inc1_c0 = ((inp_maj_inc1_c0) & 32'hffffffff);
-        maj$ld_inc1_c1 = ((inp_maj_inc1_c1) & 32'hffffffff);
-        maj$ld_inc1_c2 = ((inp_maj_inc1_c2) & 32'hffffffff);
+        maj$ld_x = inp$maj_x;
+        maj$ld_r = inp$maj_r;
+        maj$ld_q = ((inp$maj_q) & 13'h1fff);
+        maj$ld_rho = inp$maj_rho;
+        maj$ld_d = inp$maj_d;
+        maj$ld_at_z = inp$maj_at_z;
+        maj$ld_at_c0 = inp$maj_at_c0;
+        maj$ld_at_c1 = inp$maj_at_c1;
+        maj$ld_at_c2 = inp$maj_at_c2;
+        maj$ld_inc0_z = ((inp$maj_inc0_z) & 36'hfffffffff);
+        maj$ld_inc0_c0 = ((inp$maj_inc0_c0) & 32'hffffffff);
+        maj$ld_inc0_c1 = ((inp$maj_inc0_c1) & 32'hffffffff);
+        maj$ld_inc0_c2 = ((inp$maj_inc0_c2) & 32'hffffffff);
+        maj$ld_inc1_z = ((inp$maj_inc1_z) & 36'hfffffffff);
+        maj$ld_inc1_c0 = ((inp$maj_inc1_c0) & 32'hffffffff);
+        maj$ld_inc1_c1 = ((inp$maj_inc1_c1) & 32'hffffffff);
+        maj$ld_inc1_c2 = ((inp$maj_inc1_c2) & 32'hffffffff);
         if (switch) begin
             cur$ld_x = pend_x$q;
             cur$ld_r = pend_r$q;
@@ -1655,54 +1655,54 @@ module raster_top$core$edge_walk(clock,height,inp_valid,inp_ready,inp_walk,inp_m
             cur$ld_inc1_c2 = pend_inc1_c2$q;
         end
         else begin
-            cur$ld_x = inp_short0_x;
-            cur$ld_r = inp_short0_r;
-            cur$ld_q = ((inp_short0_q) & 13'h1fff);
-            cur$ld_rho = inp_short0_rho;
-            cur$ld_d = inp_short0_d;
-            cur$ld_at_z = inp_short0_at_z;
-            cur$ld_at_c0 = inp_short0_at_c0;
-            cur$ld_at_c1 = inp_short0_at_c1;
-            cur$ld_at_c2 = inp_short0_at_c2;
-            cur$ld_inc0_z = ((inp_short0_inc0_z) & 36'hfffffffff);
-            cur$ld_inc0_c0 = ((inp_short0_inc0_c0) & 32'hffffffff);
-            cur$ld_inc0_c1 = ((inp_short0_inc0_c1) & 32'hffffffff);
-            cur$ld_inc0_c2 = ((inp_short0_inc0_c2) & 32'hffffffff);
-            cur$ld_inc1_z = ((inp_short0_inc1_z) & 36'hfffffffff);
-            cur$ld_inc1_c0 = ((inp_short0_inc1_c0) & 32'hffffffff);
-            cur$ld_inc1_c1 = ((inp_short0_inc1_c1) & 32'hffffffff);
-            cur$ld_inc1_c2 = ((inp_short0_inc1_c2) & 32'hffffffff);
+            cur$ld_x = inp$short0_x;
+            cur$ld_r = inp$short0_r;
+            cur$ld_q = ((inp$short0_q) & 13'h1fff);
+            cur$ld_rho = inp$short0_rho;
+            cur$ld_d = inp$short0_d;
+            cur$ld_at_z = inp$short0_at_z;
+            cur$ld_at_c0 = inp$short0_at_c0;
+            cur$ld_at_c1 = inp$short0_at_c1;
+            cur$ld_at_c2 = inp$short0_at_c2;
+            cur$ld_inc0_z = ((inp$short0_inc0_z) & 36'hfffffffff);
+            cur$ld_inc0_c0 = ((inp$short0_inc0_c0) & 32'hffffffff);
+            cur$ld_inc0_c1 = ((inp$short0_inc0_c1) & 32'hffffffff);
+            cur$ld_inc0_c2 = ((inp$short0_inc0_c2) & 32'hffffffff);
+            cur$ld_inc1_z = ((inp$short0_inc1_z) & 36'hfffffffff);
+            cur$ld_inc1_c0 = ((inp$short0_inc1_c0) & 32'hffffffff);
+            cur$ld_inc1_c1 = ((inp$short0_inc1_c1) & 32'hffffffff);
+            cur$ld_inc1_c2 = ((inp$short0_inc1_c2) & 32'hffffffff);
         end
         if (accept) begin
             busy$d = 1'b1;
             walking$d = 1'b0;
-            up$d = inp_walk;
-            maj_left$d = inp_maj_left;
-            j$d = inp_maj_j;
+            up$d = inp$walk;
+            maj_left$d = inp$maj_left;
+            j$d = inp$maj_j;
             k$d = 32'h0;
-            total$d = inp_maj_count;
-            c0$d = inp_short0_count;
-            ddx_z$d = inp_ddx_z;
-            ddx_c0$d = inp_ddx_c0;
-            ddx_c1$d = inp_ddx_c1;
-            ddx_c2$d = inp_ddx_c2;
-            pend_x$d = inp_short1_x;
-            pend_r$d = inp_short1_r;
-            pend_q$d = ((inp_short1_q) & 13'h1fff);
-            pend_rho$d = inp_short1_rho;
-            pend_d$d = inp_short1_d;
-            pend_at_z$d = inp_short1_at_z;
-            pend_at_c0$d = inp_short1_at_c0;
-            pend_at_c1$d = inp_short1_at_c1;
-            pend_at_c2$d = inp_short1_at_c2;
-            pend_inc0_z$d = ((inp_short1_inc0_z) & 36'hfffffffff);
-            pend_inc0_c0$d = ((inp_short1_inc0_c0) & 32'hffffffff);
-            pend_inc0_c1$d = ((inp_short1_inc0_c1) & 32'hffffffff);
-            pend_inc0_c2$d = ((inp_short1_inc0_c2) & 32'hffffffff);
-            pend_inc1_z$d = ((inp_short1_inc1_z) & 36'hfffffffff);
-            pend_inc1_c0$d = ((inp_short1_inc1_c0) & 32'hffffffff);
-            pend_inc1_c1$d = ((inp_short1_inc1_c1) & 32'hffffffff);
-            pend_inc1_c2$d = ((inp_short1_inc1_c2) & 32'hffffffff);
+            total$d = inp$maj_count;
+            c0$d = inp$short0_count;
+            ddx_z$d = inp$ddx_z;
+            ddx_c0$d = inp$ddx_c0;
+            ddx_c1$d = inp$ddx_c1;
+            ddx_c2$d = inp$ddx_c2;
+            pend_x$d = inp$short1_x;
+            pend_r$d = inp$short1_r;
+            pend_q$d = ((inp$short1_q) & 13'h1fff);
+            pend_rho$d = inp$short1_rho;
+            pend_d$d = inp$short1_d;
+            pend_at_z$d = inp$short1_at_z;
+            pend_at_c0$d = inp$short1_at_c0;
+            pend_at_c1$d = inp$short1_at_c1;
+            pend_at_c2$d = inp$short1_at_c2;
+            pend_inc0_z$d = ((inp$short1_inc0_z) & 36'hfffffffff);
+            pend_inc0_c0$d = ((inp$short1_inc0_c0) & 32'hffffffff);
+            pend_inc0_c1$d = ((inp$short1_inc0_c1) & 32'hffffffff);
+            pend_inc0_c2$d = ((inp$short1_inc0_c2) & 32'hffffffff);
+            pend_inc1_z$d = ((inp$short1_inc1_z) & 36'hfffffffff);
+            pend_inc1_c0$d = ((inp$short1_inc1_c0) & 32'hffffffff);
+            pend_inc1_c1$d = ((inp$short1_inc1_c1) & 32'hffffffff);
+            pend_inc1_c2$d = ((inp$short1_inc1_c2) & 32'hffffffff);
         end
         if (busy$q & ~walking$q) begin
             walking$d = ~no_rows;
@@ -7950,7 +7950,7 @@ module raster_top$core$span$zr$x_neg(x,neg);
 endmodule // raster_top$core$span$zr$x_neg
 
 
-module raster_top$core$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_crosses,out_valid,out_ready,out_walk,out_maj_left,out_maj_j,out_maj_count,out_maj_x,out_maj_r,out_maj_q,out_maj_rho,out_maj_d,out_maj_at_z,out_maj_at_c0,out_maj_at_c1,out_maj_at_c2,out_maj_inc0_z,out_maj_inc0_c0,out_maj_inc0_c1,out_maj_inc0_c2,out_maj_inc1_z,out_maj_inc1_c0,out_maj_inc1_c1,out_maj_inc1_c2,out_short0_j,out_short0_count,out_short0_x,out_short0_r,out_short0_q,out_short0_rho,out_short0_d,out_short0_at_z,out_short0_at_c0,out_short0_at_c1,out_short0_at_c2,out_short0_inc0_z,out_short0_inc0_c0,out_short0_inc0_c1,out_short0_inc0_c2,out_short0_inc1_z,out_short0_inc1_c0,out_short0_inc1_c1,out_short0_inc1_c2,out_short1_j,out_short1_count,out_short1_x,out_short1_r,out_short1_q,out_short1_rho,out_short1_d,out_short1_at_z,out_short1_at_c0,out_short1_at_c1,out_short1_at_c2,out_short1_inc0_z,out_short1_inc0_c0,out_short1_inc0_c1,out_short1_inc0_c2,out_short1_inc1_z,out_short1_inc1_c0,out_short1_inc1_c1,out_short1_inc1_c2,out_ddx_z,out_ddx_c0,out_ddx_c1,out_ddx_c2);
+module raster_top$core$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
     
     // Module arguments
     input wire  clock;
@@ -7975,71 +7975,71 @@ module raster_top$core$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_
     input wire  [7:0] inp_v2_c1;
     input wire  [7:0] inp_v2_c2;
     input wire  [5:0] inp_crosses;
-    output reg  out_valid;
-    input wire  out_ready;
-    output reg  out_walk;
-    output reg  out_maj_left;
-    output reg  [12:0] out_maj_j;
-    output reg  [12:0] out_maj_count;
-    output reg  [12:0] out_maj_x;
-    output reg  [20:0] out_maj_r;
-    output reg  [16:0] out_maj_q;
-    output reg  [20:0] out_maj_rho;
-    output reg  [20:0] out_maj_d;
-    output reg  [35:0] out_maj_at_z;
-    output reg  [31:0] out_maj_at_c0;
-    output reg  [31:0] out_maj_at_c1;
-    output reg  [31:0] out_maj_at_c2;
-    output reg  [39:0] out_maj_inc0_z;
-    output reg  [35:0] out_maj_inc0_c0;
-    output reg  [35:0] out_maj_inc0_c1;
-    output reg  [35:0] out_maj_inc0_c2;
-    output reg  [39:0] out_maj_inc1_z;
-    output reg  [35:0] out_maj_inc1_c0;
-    output reg  [35:0] out_maj_inc1_c1;
-    output reg  [35:0] out_maj_inc1_c2;
-    output reg  [12:0] out_short0_j;
-    output reg  [12:0] out_short0_count;
-    output reg  [12:0] out_short0_x;
-    output reg  [20:0] out_short0_r;
-    output reg  [16:0] out_short0_q;
-    output reg  [20:0] out_short0_rho;
-    output reg  [20:0] out_short0_d;
-    output reg  [35:0] out_short0_at_z;
-    output reg  [31:0] out_short0_at_c0;
-    output reg  [31:0] out_short0_at_c1;
-    output reg  [31:0] out_short0_at_c2;
-    output reg  [39:0] out_short0_inc0_z;
-    output reg  [35:0] out_short0_inc0_c0;
-    output reg  [35:0] out_short0_inc0_c1;
-    output reg  [35:0] out_short0_inc0_c2;
-    output reg  [39:0] out_short0_inc1_z;
-    output reg  [35:0] out_short0_inc1_c0;
-    output reg  [35:0] out_short0_inc1_c1;
-    output reg  [35:0] out_short0_inc1_c2;
-    output reg  [12:0] out_short1_j;
-    output reg  [12:0] out_short1_count;
-    output reg  [12:0] out_short1_x;
-    output reg  [20:0] out_short1_r;
-    output reg  [16:0] out_short1_q;
-    output reg  [20:0] out_short1_rho;
-    output reg  [20:0] out_short1_d;
-    output reg  [35:0] out_short1_at_z;
-    output reg  [31:0] out_short1_at_c0;
-    output reg  [31:0] out_short1_at_c1;
-    output reg  [31:0] out_short1_at_c2;
-    output reg  [39:0] out_short1_inc0_z;
-    output reg  [35:0] out_short1_inc0_c0;
-    output reg  [35:0] out_short1_inc0_c1;
-    output reg  [35:0] out_short1_inc0_c2;
-    output reg  [39:0] out_short1_inc1_z;
-    output reg  [35:0] out_short1_inc1_c0;
-    output reg  [35:0] out_short1_inc1_c1;
-    output reg  [35:0] out_short1_inc1_c2;
-    output reg  [39:0] out_ddx_z;
-    output reg  [35:0] out_ddx_c0;
-    output reg  [35:0] out_ddx_c1;
-    output reg  [35:0] out_ddx_c2;
+    output reg  out$valid;
+    input wire  out$ready;
+    output reg  out$walk;
+    output reg  out$maj_left;
+    output reg  [12:0] out$maj_j;
+    output reg  [12:0] out$maj_count;
+    output reg  [12:0] out$maj_x;
+    output reg  [20:0] out$maj_r;
+    output reg  [16:0] out$maj_q;
+    output reg  [20:0] out$maj_rho;
+    output reg  [20:0] out$maj_d;
+    output reg  [35:0] out$maj_at_z;
+    output reg  [31:0] out$maj_at_c0;
+    output reg  [31:0] out$maj_at_c1;
+    output reg  [31:0] out$maj_at_c2;
+    output reg  [39:0] out$maj_inc0_z;
+    output reg  [35:0] out$maj_inc0_c0;
+    output reg  [35:0] out$maj_inc0_c1;
+    output reg  [35:0] out$maj_inc0_c2;
+    output reg  [39:0] out$maj_inc1_z;
+    output reg  [35:0] out$maj_inc1_c0;
+    output reg  [35:0] out$maj_inc1_c1;
+    output reg  [35:0] out$maj_inc1_c2;
+    output reg  [12:0] out$short0_j;
+    output reg  [12:0] out$short0_count;
+    output reg  [12:0] out$short0_x;
+    output reg  [20:0] out$short0_r;
+    output reg  [16:0] out$short0_q;
+    output reg  [20:0] out$short0_rho;
+    output reg  [20:0] out$short0_d;
+    output reg  [35:0] out$short0_at_z;
+    output reg  [31:0] out$short0_at_c0;
+    output reg  [31:0] out$short0_at_c1;
+    output reg  [31:0] out$short0_at_c2;
+    output reg  [39:0] out$short0_inc0_z;
+    output reg  [35:0] out$short0_inc0_c0;
+    output reg  [35:0] out$short0_inc0_c1;
+    output reg  [35:0] out$short0_inc0_c2;
+    output reg  [39:0] out$short0_inc1_z;
+    output reg  [35:0] out$short0_inc1_c0;
+    output reg  [35:0] out$short0_inc1_c1;
+    output reg  [35:0] out$short0_inc1_c2;
+    output reg  [12:0] out$short1_j;
+    output reg  [12:0] out$short1_count;
+    output reg  [12:0] out$short1_x;
+    output reg  [20:0] out$short1_r;
+    output reg  [16:0] out$short1_q;
+    output reg  [20:0] out$short1_rho;
+    output reg  [20:0] out$short1_d;
+    output reg  [35:0] out$short1_at_z;
+    output reg  [31:0] out$short1_at_c0;
+    output reg  [31:0] out$short1_at_c1;
+    output reg  [31:0] out$short1_at_c2;
+    output reg  [39:0] out$short1_inc0_z;
+    output reg  [35:0] out$short1_inc0_c0;
+    output reg  [35:0] out$short1_inc0_c1;
+    output reg  [35:0] out$short1_inc0_c2;
+    output reg  [39:0] out$short1_inc1_z;
+    output reg  [35:0] out$short1_inc1_c0;
+    output reg  [35:0] out$short1_inc1_c1;
+    output reg  [35:0] out$short1_inc1_c2;
+    output reg  [39:0] out$ddx_z;
+    output reg  [35:0] out$ddx_c0;
+    output reg  [35:0] out$ddx_c1;
+    output reg  [35:0] out$ddx_c2;
     
     // Constant declarations
     localparam  q_msb = 8'h12;
@@ -9416,13 +9416,13 @@ module raster_top$core$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_
         inc0$11$d = inc0$11$q;
         inc1$11$clock = clock;
         inc1$11$d = inc1$11$q;
-        inp_ready = (t$q == 32'h0) | ((t$q == last) & out_ready);
+        inp_ready = (t$q == 32'h0) | ((t$q == last) & out$ready);
         take = inp_valid & inp_ready;
-        out_valid = t$q == last;
+        out$valid = t$q == last;
         if ((t$q != 32'h0) & (t$q != last)) begin
             t$d = t$q + 32'h1;
         end
-        if ((t$q == last) & out_ready) begin
+        if ((t$q == last) & out$ready) begin
             t$d = 32'h0;
         end
         if (take) begin
@@ -12474,69 +12474,69 @@ module raster_top$core$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_
             plane$11$d = (plane$11$q >> frac) + (attr0$3 << bsh$3);
             inc1$11$d = inc0$11$q + ddx$3[(32'h0)+:(40)];
         end
-        out_walk = up;
-        out_maj_left = maj_left;
-        out_maj_j = cy$0[(frac)+:(13)];
-        out_maj_count = count$0;
-        out_maj_x = x$0$q[(32'h0)+:(13)];
-        out_maj_r = r$0$q;
-        out_maj_q = q$0$q[(32'h0)+:(17)];
-        out_maj_rho = rho$0$q;
-        out_maj_d = ed16$0[(32'h0)+:(21)];
-        out_maj_at_z = plane$0$q[(32'h0)+:(36)];
-        out_maj_at_c0 = plane$1$q[(32'h0)+:(32)];
-        out_maj_at_c1 = plane$2$q[(32'h0)+:(32)];
-        out_maj_at_c2 = plane$3$q[(32'h0)+:(32)];
-        out_maj_inc0_z = inc0$0$q[(32'h0)+:(40)];
-        out_maj_inc0_c0 = inc0$1$q[(32'h0)+:(36)];
-        out_maj_inc0_c1 = inc0$2$q[(32'h0)+:(36)];
-        out_maj_inc0_c2 = inc0$3$q[(32'h0)+:(36)];
-        out_maj_inc1_z = inc1$0$q[(32'h0)+:(40)];
-        out_maj_inc1_c0 = inc1$1$q[(32'h0)+:(36)];
-        out_maj_inc1_c1 = inc1$2$q[(32'h0)+:(36)];
-        out_maj_inc1_c2 = inc1$3$q[(32'h0)+:(36)];
-        out_short0_j = cy$1[(frac)+:(13)];
-        out_short0_count = count$1;
-        out_short0_x = x$1$q[(32'h0)+:(13)];
-        out_short0_r = r$1$q;
-        out_short0_q = q$1$q[(32'h0)+:(17)];
-        out_short0_rho = rho$1$q;
-        out_short0_d = ed16$1[(32'h0)+:(21)];
-        out_short0_at_z = plane$4$q[(32'h0)+:(36)];
-        out_short0_at_c0 = plane$5$q[(32'h0)+:(32)];
-        out_short0_at_c1 = plane$6$q[(32'h0)+:(32)];
-        out_short0_at_c2 = plane$7$q[(32'h0)+:(32)];
-        out_short0_inc0_z = inc0$4$q[(32'h0)+:(40)];
-        out_short0_inc0_c0 = inc0$5$q[(32'h0)+:(36)];
-        out_short0_inc0_c1 = inc0$6$q[(32'h0)+:(36)];
-        out_short0_inc0_c2 = inc0$7$q[(32'h0)+:(36)];
-        out_short0_inc1_z = inc1$4$q[(32'h0)+:(40)];
-        out_short0_inc1_c0 = inc1$5$q[(32'h0)+:(36)];
-        out_short0_inc1_c1 = inc1$6$q[(32'h0)+:(36)];
-        out_short0_inc1_c2 = inc1$7$q[(32'h0)+:(36)];
-        out_short1_j = cy$2[(frac)+:(13)];
-        out_short1_count = count$2;
-        out_short1_x = x$2$q[(32'h0)+:(13)];
-        out_short1_r = r$2$q;
-        out_short1_q = q$2$q[(32'h0)+:(17)];
-        out_short1_rho = rho$2$q;
-        out_short1_d = ed16$2[(32'h0)+:(21)];
-        out_short1_at_z = plane$8$q[(32'h0)+:(36)];
-        out_short1_at_c0 = plane$9$q[(32'h0)+:(32)];
-        out_short1_at_c1 = plane$10$q[(32'h0)+:(32)];
-        out_short1_at_c2 = plane$11$q[(32'h0)+:(32)];
-        out_short1_inc0_z = inc0$8$q[(32'h0)+:(40)];
-        out_short1_inc0_c0 = inc0$9$q[(32'h0)+:(36)];
-        out_short1_inc0_c1 = inc0$10$q[(32'h0)+:(36)];
-        out_short1_inc0_c2 = inc0$11$q[(32'h0)+:(36)];
-        out_short1_inc1_z = inc1$8$q[(32'h0)+:(40)];
-        out_short1_inc1_c0 = inc1$9$q[(32'h0)+:(36)];
-        out_short1_inc1_c1 = inc1$10$q[(32'h0)+:(36)];
-        out_short1_inc1_c2 = inc1$11$q[(32'h0)+:(36)];
-        out_ddx_z = ddx$0[(32'h0)+:(40)];
-        out_ddx_c0 = ddx$1[(32'h0)+:(36)];
-        out_ddx_c1 = ddx$2[(32'h0)+:(36)];
-        out_ddx_c2 = ddx$3[(32'h0)+:(36)];
+        out$walk = up;
+        out$maj_left = maj_left;
+        out$maj_j = cy$0[(frac)+:(13)];
+        out$maj_count = count$0;
+        out$maj_x = x$0$q[(32'h0)+:(13)];
+        out$maj_r = r$0$q;
+        out$maj_q = q$0$q[(32'h0)+:(17)];
+        out$maj_rho = rho$0$q;
+        out$maj_d = ed16$0[(32'h0)+:(21)];
+        out$maj_at_z = plane$0$q[(32'h0)+:(36)];
+        out$maj_at_c0 = plane$1$q[(32'h0)+:(32)];
+        out$maj_at_c1 = plane$2$q[(32'h0)+:(32)];
+        out$maj_at_c2 = plane$3$q[(32'h0)+:(32)];
+        out$maj_inc0_z = inc0$0$q[(32'h0)+:(40)];
+        out$maj_inc0_c0 = inc0$1$q[(32'h0)+:(36)];
+        out$maj_inc0_c1 = inc0$2$q[(32'h0)+:(36)];
+        out$maj_inc0_c2 = inc0$3$q[(32'h0)+:(36)];
+        out$maj_inc1_z = inc1$0$q[(32'h0)+:(40)];
+        out$maj_inc1_c0 = inc1$1$q[(32'h0)+:(36)];
+        out$maj_inc1_c1 = inc1$2$q[(32'h0)+:(36)];
+        out$maj_inc1_c2 = inc1$3$q[(32'h0)+:(36)];
+        out$short0_j = cy$1[(frac)+:(13)];
+        out$short0_count = count$1;
+        out$short0_x = x$1$q[(32'h0)+:(13)];
+        out$short0_r = r$1$q;
+        out$short0_q = q$1$q[(32'h0)+:(17)];
+        out$short0_rho = rho$1$q;
+        out$short0_d = ed16$1[(32'h0)+:(21)];
+        out$short0_at_z = plane$4$q[(32'h0)+:(36)];
+        out$short0_at_c0 = plane$5$q[(32'h0)+:(32)];
+        out$short0_at_c1 = plane$6$q[(32'h0)+:(32)];
+        out$short0_at_c2 = plane$7$q[(32'h0)+:(32)];
+        out$short0_inc0_z = inc0$4$q[(32'h0)+:(40)];
+        out$short0_inc0_c0 = inc0$5$q[(32'h0)+:(36)];
+        out$short0_inc0_c1 = inc0$6$q[(32'h0)+:(36)];
+        out$short0_inc0_c2 = inc0$7$q[(32'h0)+:(36)];
+        out$short0_inc1_z = inc1$4$q[(32'h0)+:(40)];
+        out$short0_inc1_c0 = inc1$5$q[(32'h0)+:(36)];
+        out$short0_inc1_c1 = inc1$6$q[(32'h0)+:(36)];
+        out$short0_inc1_c2 = inc1$7$q[(32'h0)+:(36)];
+        out$short1_j = cy$2[(frac)+:(13)];
+        out$short1_count = count$2;
+        out$short1_x = x$2$q[(32'h0)+:(13)];
+        out$short1_r = r$2$q;
+        out$short1_q = q$2$q[(32'h0)+:(17)];
+        out$short1_rho = rho$2$q;
+        out$short1_d = ed16$2[(32'h0)+:(21)];
+        out$short1_at_z = plane$8$q[(32'h0)+:(36)];
+        out$short1_at_c0 = plane$9$q[(32'h0)+:(32)];
+        out$short1_at_c1 = plane$10$q[(32'h0)+:(32)];
+        out$short1_at_c2 = plane$11$q[(32'h0)+:(32)];
+        out$short1_inc0_z = inc0$8$q[(32'h0)+:(40)];
+        out$short1_inc0_c0 = inc0$9$q[(32'h0)+:(36)];
+        out$short1_inc0_c1 = inc0$10$q[(32'h0)+:(36)];
+        out$short1_inc0_c2 = inc0$11$q[(32'h0)+:(36)];
+        out$short1_inc1_z = inc1$8$q[(32'h0)+:(40)];
+        out$short1_inc1_c0 = inc1$9$q[(32'h0)+:(36)];
+        out$short1_inc1_c1 = inc1$10$q[(32'h0)+:(36)];
+        out$short1_inc1_c2 = inc1$11$q[(32'h0)+:(36)];
+        out$ddx_z = ddx$0[(32'h0)+:(40)];
+        out$ddx_c0 = ddx$1[(32'h0)+:(36)];
+        out$ddx_c1 = ddx$2[(32'h0)+:(36)];
+        out$ddx_c2 = ddx$3[(32'h0)+:(36)];
     end
     
 endmodule // raster_top$core$triangle_setup

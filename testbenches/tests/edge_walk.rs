@@ -76,7 +76,7 @@ struct Run {
 }
 
 /// Runs `jobs` back to back (a job on another screen waits for the walk to finish) with
-/// `out$ready` from `ready`; checks every cycle: `inp_ready` high exactly when the
+/// `out$ready` from `ready`; checks every cycle: `inp$ready` high exactly when the
 /// contract says the walk is idle, and `out$valid` and the command exactly as the model's
 /// scanline due that cycle. Returns the counts, or the first difference.
 fn run(dual: &mut Dual<EdgeWalk>, jobs: &[Job], mut ready: impl FnMut(&mut ChaCha8Rng) -> bool) -> Result<Run, String> {
@@ -94,7 +94,7 @@ fn run(dual: &mut Dual<EdgeWalk>, jobs: &[Job], mut ready: impl FnMut(&mut ChaCh
         let out_ready = ready(&mut rng);
         let mut pins = vec![
             ("height", Value::new(DIM, height as u128)),
-            ("inp_valid", Value::new(1, offer as u128)),
+            ("inp$valid", Value::new(1, offer as u128)),
             ("out$ready", Value::new(1, out_ready as u128)),
         ];
         if offer {
@@ -102,9 +102,9 @@ fn run(dual: &mut Dual<EdgeWalk>, jobs: &[Job], mut ready: impl FnMut(&mut ChaCh
         }
         let out = dual.cycle(&pins).map_err(|m| m.to_string())?;
         let cycle = dual.cycles() - 1;
-        let got_ready = out.get("inp_ready") == &Value::new(1, 1);
+        let got_ready = out.get("inp$ready") == &Value::new(1, 1);
         if got_ready != idle {
-            return Err(format!("cycle {cycle}: inp_ready {got_ready}, expected {idle} in {state:?}"));
+            return Err(format!("cycle {cycle}: inp$ready {got_ready}, expected {idle} in {state:?}"));
         }
         let due = match state {
             State::Walk { i, k } => jobs[i].scanlines[k].map(|c| (i, c)),
@@ -245,14 +245,14 @@ fn edge_walk_latency_003_table1() {
     let vl = verilated("edge_walk");
     let mut d = dual(&vl);
     let mut pins =
-        vec![("height", Value::new(DIM, 48)), ("inp_valid", Value::new(1, 1)), ("out$ready", Value::new(1, 1))];
+        vec![("height", Value::new(DIM, 48)), ("inp$valid", Value::new(1, 1)), ("out$ready", Value::new(1, 1))];
     pins.extend(as_pins(&j.pins));
     let mut valid = Vec::new();
     for t in 0..4 {
-        let idle = [("inp_valid", Value::new(1, 0))];
+        let idle = [("inp$valid", Value::new(1, 0))];
         let out = d.cycle(if t == 0 { &pins } else { &idle }).unwrap_or_else(|m| panic!("{m}"));
         if t == 0 {
-            assert_eq!(out.get("inp_ready"), &Value::new(1, 1), "taken in cycle 0");
+            assert_eq!(out.get("inp$ready"), &Value::new(1, 1), "taken in cycle 0");
         }
         valid.push(out.get("out$valid") == &Value::new(1, 1));
     }

@@ -76,11 +76,11 @@ fn run(cycle: &mut Cycle, tris: &[Sorted], flow: Flow, rng: &mut ChaCha8Rng) -> 
         }
         let mut pins = sorted_pins(&tris[next.min(tris.len() - 1)]);
         pins.push(("inp_valid".into(), Value::new(1, presenting as u128)));
-        pins.push(("out_ready".into(), Value::new(1, ready as u128)));
+        pins.push(("out$ready".into(), Value::new(1, ready as u128)));
         let out = cycle(&as_pins(&pins))?;
-        let valid = out.get("out_valid").bit(0);
+        let valid = out.get("out$valid").bit(0);
         if valid {
-            let &i = in_flight.front().ok_or(format!("cycle {now}: out_valid with no triangle taken"))?;
+            let &i = in_flight.front().ok_or(format!("cycle {now}: out$valid with no triangle taken"))?;
             if !was_valid {
                 timing[i].valid = now;
             }

@@ -1,8 +1,8 @@
 //! `edge_walk`: the edge walk of paper 001 (Woo 2004, §II.2.라) with the Y clipping of
 //! paper 003 (Lee 2008, §II.1.다.(2), Fig. 5), one scanline per cycle.
 //!
-//! It takes one set-up triangle (`model::triangle_setup::TriangleSetupOut` without `divisions`,
-//! flattened into the `inp_*` ports, nested fields joined by `_`) and walks it with two
+//! It takes one set-up triangle (`model::triangle_setup::TriangleSetupOut` without
+//! `divisions`, on the link `inp`: `links::TriangleSetupSink`) and walks it with two
 //! exact edge steppers ([`Stepper`]): `maj` on the long edge and `cur` on the short edge
 //! being walked, while the other short edge waits in the `pend_*` registers until the walk
 //! reaches its first scanline. Each scanline with pixels on screen leaves as a span
@@ -21,7 +21,7 @@
 //!        vMax      or after the last row   vMax
 //! ```
 //!
-//! Y clipping (003): setup chose the walk direction (`inp_walk`); the walk stops after
+//! Y clipping (003): setup chose the walk direction (`inp.walk`); the walk stops after
 //! the last row of the screen walking down and after row 0 walking up, so no cycle is
 //! spent beyond the boundary it walks towards.
 //!
@@ -33,7 +33,7 @@
 
 use crate::emit::{emit, Emitted};
 use crate::parts::{Negative, SignedLess};
-use super::links::SpanCmdSource;
+use super::links::{SpanCmdSource, TriangleSetupSink};
 use super::widths::{C_ACC, DC, DIM, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
 use crate::Params;
 use rust_hdl::prelude::*;
@@ -219,13 +219,11 @@ impl Logic for Stepper {
     }
 }
 
-/// The edge walk unit: see the module documentation. Ports `inp_<field>` carry
-/// `model::triangle_setup::TriangleSetupOut` (`inp_walk` high for `Walk::Up`; `Edge` fields `j`,
-/// `count`, `x`: `PIXEL` bits two's complement; `r`, `rho`, `d`: `EDGE_D` bits; `q`:
-/// `EDGE_Q` bits; `at`: `z_acc`/`c_acc`; `inc0`, `inc1`, `ddx`: `dz`/`dc`), ports `out_<field>`
-/// carry `model::edge_walk::SpanCmd` (`y` on screen: `SCREEN` bits).
+/// The edge walk unit: see the module documentation. The link `inp` carries
+/// `model::triangle_setup::TriangleSetupOut` (`links::TriangleSetupSink`), the link `out`
+/// `model::edge_walk::SpanCmd` (`links::SpanCmdSource`, `y` on screen).
 ///
-/// `inp_short0_j`, `inp_short1_j` and `inp_short1_count` are part of the one-to-one link
+/// `inp$short0_j`, `inp$short1_j` and `inp$short1_count` are part of the one-to-one link
 /// with `triangle_setup` but follow from the others (the short edges start where the long
 /// edge does, and at scanline `short0.count`), so the walk does not read them.
 #[derive(LogicBlock, Default)]
@@ -233,77 +231,8 @@ pub struct EdgeWalk {
     pub clock: Signal<In, Clock>,
     /// Screen height in pixels, 1 to 2^SCREEN: the walk down stops after row `height - 1`.
     pub height: Signal<In, Bits<DIM>>,
-    pub inp_valid: Signal<In, Bit>,
-    /// High in IDLE: a triangle is taken when `inp_valid` is high too.
-    pub inp_ready: Signal<Out, Bit>,
-    /// Walk direction: high walks up from vMax (003's Y clipping).
-    pub inp_walk: Signal<In, Bit>,
-    /// The long edge e_maj is the left side.
-    pub inp_maj_left: Signal<In, Bit>,
-    pub inp_maj_j: Signal<In, Bits<PIXEL>>,
-    pub inp_maj_count: Signal<In, Bits<PIXEL>>,
-    pub inp_maj_x: Signal<In, Bits<PIXEL>>,
-    pub inp_maj_r: Signal<In, Bits<EDGE_D>>,
-    pub inp_maj_q: Signal<In, Bits<EDGE_Q>>,
-    pub inp_maj_rho: Signal<In, Bits<EDGE_D>>,
-    pub inp_maj_d: Signal<In, Bits<EDGE_D>>,
-    pub inp_maj_at_z: Signal<In, Bits<Z_ACC>>,
-    pub inp_maj_at_c0: Signal<In, Bits<C_ACC>>,
-    pub inp_maj_at_c1: Signal<In, Bits<C_ACC>>,
-    pub inp_maj_at_c2: Signal<In, Bits<C_ACC>>,
-    pub inp_maj_inc0_z: Signal<In, Bits<DZ>>,
-    pub inp_maj_inc0_c0: Signal<In, Bits<DC>>,
-    pub inp_maj_inc0_c1: Signal<In, Bits<DC>>,
-    pub inp_maj_inc0_c2: Signal<In, Bits<DC>>,
-    pub inp_maj_inc1_z: Signal<In, Bits<DZ>>,
-    pub inp_maj_inc1_c0: Signal<In, Bits<DC>>,
-    pub inp_maj_inc1_c1: Signal<In, Bits<DC>>,
-    pub inp_maj_inc1_c2: Signal<In, Bits<DC>>,
-    /// The short edge walked first (e_bot walking down, e_top walking up).
-    pub inp_short0_j: Signal<In, Bits<PIXEL>>,
-    pub inp_short0_count: Signal<In, Bits<PIXEL>>,
-    pub inp_short0_x: Signal<In, Bits<PIXEL>>,
-    pub inp_short0_r: Signal<In, Bits<EDGE_D>>,
-    pub inp_short0_q: Signal<In, Bits<EDGE_Q>>,
-    pub inp_short0_rho: Signal<In, Bits<EDGE_D>>,
-    pub inp_short0_d: Signal<In, Bits<EDGE_D>>,
-    pub inp_short0_at_z: Signal<In, Bits<Z_ACC>>,
-    pub inp_short0_at_c0: Signal<In, Bits<C_ACC>>,
-    pub inp_short0_at_c1: Signal<In, Bits<C_ACC>>,
-    pub inp_short0_at_c2: Signal<In, Bits<C_ACC>>,
-    pub inp_short0_inc0_z: Signal<In, Bits<DZ>>,
-    pub inp_short0_inc0_c0: Signal<In, Bits<DC>>,
-    pub inp_short0_inc0_c1: Signal<In, Bits<DC>>,
-    pub inp_short0_inc0_c2: Signal<In, Bits<DC>>,
-    pub inp_short0_inc1_z: Signal<In, Bits<DZ>>,
-    pub inp_short0_inc1_c0: Signal<In, Bits<DC>>,
-    pub inp_short0_inc1_c1: Signal<In, Bits<DC>>,
-    pub inp_short0_inc1_c2: Signal<In, Bits<DC>>,
-    /// The short edge walked second.
-    pub inp_short1_j: Signal<In, Bits<PIXEL>>,
-    pub inp_short1_count: Signal<In, Bits<PIXEL>>,
-    pub inp_short1_x: Signal<In, Bits<PIXEL>>,
-    pub inp_short1_r: Signal<In, Bits<EDGE_D>>,
-    pub inp_short1_q: Signal<In, Bits<EDGE_Q>>,
-    pub inp_short1_rho: Signal<In, Bits<EDGE_D>>,
-    pub inp_short1_d: Signal<In, Bits<EDGE_D>>,
-    pub inp_short1_at_z: Signal<In, Bits<Z_ACC>>,
-    pub inp_short1_at_c0: Signal<In, Bits<C_ACC>>,
-    pub inp_short1_at_c1: Signal<In, Bits<C_ACC>>,
-    pub inp_short1_at_c2: Signal<In, Bits<C_ACC>>,
-    pub inp_short1_inc0_z: Signal<In, Bits<DZ>>,
-    pub inp_short1_inc0_c0: Signal<In, Bits<DC>>,
-    pub inp_short1_inc0_c1: Signal<In, Bits<DC>>,
-    pub inp_short1_inc0_c2: Signal<In, Bits<DC>>,
-    pub inp_short1_inc1_z: Signal<In, Bits<DZ>>,
-    pub inp_short1_inc1_c0: Signal<In, Bits<DC>>,
-    pub inp_short1_inc1_c1: Signal<In, Bits<DC>>,
-    pub inp_short1_inc1_c2: Signal<In, Bits<DC>>,
-    /// Per-pixel steps of z (`dz`) and R, G, B (`dc`).
-    pub inp_ddx_z: Signal<In, Bits<DZ>>,
-    pub inp_ddx_c0: Signal<In, Bits<DC>>,
-    pub inp_ddx_c1: Signal<In, Bits<DC>>,
-    pub inp_ddx_c2: Signal<In, Bits<DC>>,
+    /// The set-up triangle; `inp.ready` high in IDLE: a triangle is taken when `inp.valid` is high too.
+    pub inp: TriangleSetupSink,
     /// A span command (a scanline with pixels, on screen).
     pub out: SpanCmdSource,
     /// The long edge and the short edge being walked.
@@ -399,8 +328,8 @@ impl Logic for EdgeWalk {
         clock!(self, clock, maj, cur);
 
         // IDLE: take a triangle.
-        self.inp_ready.next = !self.busy.q.val();
-        self.accept.next = self.inp_valid.val() & !self.busy.q.val();
+        self.inp.ready.next = !self.busy.q.val();
+        self.accept.next = self.inp.valid.val() & !self.busy.q.val();
 
         // Where the walk is: scanline j (k-th of the walk), the next one, and whether the
         // one presented is the last (its edge ends, or the Y clip: the walk reaches the
@@ -485,23 +414,23 @@ impl Logic for EdgeWalk {
         self.cur.up.next = self.up.q.val();
         self.cur.load.next = self.accept.val() | self.switch.val();
         self.cur.step.next = self.advance.val() & !self.last.val();
-        self.maj.ld_x.next = self.inp_maj_x.val();
-        self.maj.ld_r.next = self.inp_maj_r.val();
-        self.maj.ld_q.next = bit_cast::<PIXEL, EDGE_Q>(self.inp_maj_q.val());
-        self.maj.ld_rho.next = self.inp_maj_rho.val();
-        self.maj.ld_d.next = self.inp_maj_d.val();
-        self.maj.ld_at_z.next = self.inp_maj_at_z.val();
-        self.maj.ld_at_c0.next = self.inp_maj_at_c0.val();
-        self.maj.ld_at_c1.next = self.inp_maj_at_c1.val();
-        self.maj.ld_at_c2.next = self.inp_maj_at_c2.val();
-        self.maj.ld_inc0_z.next = bit_cast::<Z_ACC, DZ>(self.inp_maj_inc0_z.val());
-        self.maj.ld_inc0_c0.next = bit_cast::<C_ACC, DC>(self.inp_maj_inc0_c0.val());
-        self.maj.ld_inc0_c1.next = bit_cast::<C_ACC, DC>(self.inp_maj_inc0_c1.val());
-        self.maj.ld_inc0_c2.next = bit_cast::<C_ACC, DC>(self.inp_maj_inc0_c2.val());
-        self.maj.ld_inc1_z.next = bit_cast::<Z_ACC, DZ>(self.inp_maj_inc1_z.val());
-        self.maj.ld_inc1_c0.next = bit_cast::<C_ACC, DC>(self.inp_maj_inc1_c0.val());
-        self.maj.ld_inc1_c1.next = bit_cast::<C_ACC, DC>(self.inp_maj_inc1_c1.val());
-        self.maj.ld_inc1_c2.next = bit_cast::<C_ACC, DC>(self.inp_maj_inc1_c2.val());
+        self.maj.ld_x.next = self.inp.maj_x.val();
+        self.maj.ld_r.next = self.inp.maj_r.val();
+        self.maj.ld_q.next = bit_cast::<PIXEL, EDGE_Q>(self.inp.maj_q.val());
+        self.maj.ld_rho.next = self.inp.maj_rho.val();
+        self.maj.ld_d.next = self.inp.maj_d.val();
+        self.maj.ld_at_z.next = self.inp.maj_at_z.val();
+        self.maj.ld_at_c0.next = self.inp.maj_at_c0.val();
+        self.maj.ld_at_c1.next = self.inp.maj_at_c1.val();
+        self.maj.ld_at_c2.next = self.inp.maj_at_c2.val();
+        self.maj.ld_inc0_z.next = bit_cast::<Z_ACC, DZ>(self.inp.maj_inc0_z.val());
+        self.maj.ld_inc0_c0.next = bit_cast::<C_ACC, DC>(self.inp.maj_inc0_c0.val());
+        self.maj.ld_inc0_c1.next = bit_cast::<C_ACC, DC>(self.inp.maj_inc0_c1.val());
+        self.maj.ld_inc0_c2.next = bit_cast::<C_ACC, DC>(self.inp.maj_inc0_c2.val());
+        self.maj.ld_inc1_z.next = bit_cast::<Z_ACC, DZ>(self.inp.maj_inc1_z.val());
+        self.maj.ld_inc1_c0.next = bit_cast::<C_ACC, DC>(self.inp.maj_inc1_c0.val());
+        self.maj.ld_inc1_c1.next = bit_cast::<C_ACC, DC>(self.inp.maj_inc1_c1.val());
+        self.maj.ld_inc1_c2.next = bit_cast::<C_ACC, DC>(self.inp.maj_inc1_c2.val());
         if self.switch.val() {
             self.cur.ld_x.next = self.pend_x.q.val();
             self.cur.ld_r.next = self.pend_r.q.val();
@@ -521,56 +450,56 @@ impl Logic for EdgeWalk {
             self.cur.ld_inc1_c1.next = self.pend_inc1_c1.q.val();
             self.cur.ld_inc1_c2.next = self.pend_inc1_c2.q.val();
         } else {
-            self.cur.ld_x.next = self.inp_short0_x.val();
-            self.cur.ld_r.next = self.inp_short0_r.val();
-            self.cur.ld_q.next = bit_cast::<PIXEL, EDGE_Q>(self.inp_short0_q.val());
-            self.cur.ld_rho.next = self.inp_short0_rho.val();
-            self.cur.ld_d.next = self.inp_short0_d.val();
-            self.cur.ld_at_z.next = self.inp_short0_at_z.val();
-            self.cur.ld_at_c0.next = self.inp_short0_at_c0.val();
-            self.cur.ld_at_c1.next = self.inp_short0_at_c1.val();
-            self.cur.ld_at_c2.next = self.inp_short0_at_c2.val();
-            self.cur.ld_inc0_z.next = bit_cast::<Z_ACC, DZ>(self.inp_short0_inc0_z.val());
-            self.cur.ld_inc0_c0.next = bit_cast::<C_ACC, DC>(self.inp_short0_inc0_c0.val());
-            self.cur.ld_inc0_c1.next = bit_cast::<C_ACC, DC>(self.inp_short0_inc0_c1.val());
-            self.cur.ld_inc0_c2.next = bit_cast::<C_ACC, DC>(self.inp_short0_inc0_c2.val());
-            self.cur.ld_inc1_z.next = bit_cast::<Z_ACC, DZ>(self.inp_short0_inc1_z.val());
-            self.cur.ld_inc1_c0.next = bit_cast::<C_ACC, DC>(self.inp_short0_inc1_c0.val());
-            self.cur.ld_inc1_c1.next = bit_cast::<C_ACC, DC>(self.inp_short0_inc1_c1.val());
-            self.cur.ld_inc1_c2.next = bit_cast::<C_ACC, DC>(self.inp_short0_inc1_c2.val());
+            self.cur.ld_x.next = self.inp.short0_x.val();
+            self.cur.ld_r.next = self.inp.short0_r.val();
+            self.cur.ld_q.next = bit_cast::<PIXEL, EDGE_Q>(self.inp.short0_q.val());
+            self.cur.ld_rho.next = self.inp.short0_rho.val();
+            self.cur.ld_d.next = self.inp.short0_d.val();
+            self.cur.ld_at_z.next = self.inp.short0_at_z.val();
+            self.cur.ld_at_c0.next = self.inp.short0_at_c0.val();
+            self.cur.ld_at_c1.next = self.inp.short0_at_c1.val();
+            self.cur.ld_at_c2.next = self.inp.short0_at_c2.val();
+            self.cur.ld_inc0_z.next = bit_cast::<Z_ACC, DZ>(self.inp.short0_inc0_z.val());
+            self.cur.ld_inc0_c0.next = bit_cast::<C_ACC, DC>(self.inp.short0_inc0_c0.val());
+            self.cur.ld_inc0_c1.next = bit_cast::<C_ACC, DC>(self.inp.short0_inc0_c1.val());
+            self.cur.ld_inc0_c2.next = bit_cast::<C_ACC, DC>(self.inp.short0_inc0_c2.val());
+            self.cur.ld_inc1_z.next = bit_cast::<Z_ACC, DZ>(self.inp.short0_inc1_z.val());
+            self.cur.ld_inc1_c0.next = bit_cast::<C_ACC, DC>(self.inp.short0_inc1_c0.val());
+            self.cur.ld_inc1_c1.next = bit_cast::<C_ACC, DC>(self.inp.short0_inc1_c1.val());
+            self.cur.ld_inc1_c2.next = bit_cast::<C_ACC, DC>(self.inp.short0_inc1_c2.val());
         }
 
         // State and the triangle's registers.
         if self.accept.val() {
             self.busy.d.next = true;
             self.walking.d.next = false;
-            self.up.d.next = self.inp_walk.val();
-            self.maj_left.d.next = self.inp_maj_left.val();
-            self.j.d.next = self.inp_maj_j.val();
+            self.up.d.next = self.inp.walk.val();
+            self.maj_left.d.next = self.inp.maj_left.val();
+            self.j.d.next = self.inp.maj_j.val();
             self.k.d.next = 0.into();
-            self.total.d.next = self.inp_maj_count.val();
-            self.c0.d.next = self.inp_short0_count.val();
-            self.ddx_z.d.next = self.inp_ddx_z.val();
-            self.ddx_c0.d.next = self.inp_ddx_c0.val();
-            self.ddx_c1.d.next = self.inp_ddx_c1.val();
-            self.ddx_c2.d.next = self.inp_ddx_c2.val();
-            self.pend_x.d.next = self.inp_short1_x.val();
-            self.pend_r.d.next = self.inp_short1_r.val();
-            self.pend_q.d.next = bit_cast::<PIXEL, EDGE_Q>(self.inp_short1_q.val());
-            self.pend_rho.d.next = self.inp_short1_rho.val();
-            self.pend_d.d.next = self.inp_short1_d.val();
-            self.pend_at_z.d.next = self.inp_short1_at_z.val();
-            self.pend_at_c0.d.next = self.inp_short1_at_c0.val();
-            self.pend_at_c1.d.next = self.inp_short1_at_c1.val();
-            self.pend_at_c2.d.next = self.inp_short1_at_c2.val();
-            self.pend_inc0_z.d.next = bit_cast::<Z_ACC, DZ>(self.inp_short1_inc0_z.val());
-            self.pend_inc0_c0.d.next = bit_cast::<C_ACC, DC>(self.inp_short1_inc0_c0.val());
-            self.pend_inc0_c1.d.next = bit_cast::<C_ACC, DC>(self.inp_short1_inc0_c1.val());
-            self.pend_inc0_c2.d.next = bit_cast::<C_ACC, DC>(self.inp_short1_inc0_c2.val());
-            self.pend_inc1_z.d.next = bit_cast::<Z_ACC, DZ>(self.inp_short1_inc1_z.val());
-            self.pend_inc1_c0.d.next = bit_cast::<C_ACC, DC>(self.inp_short1_inc1_c0.val());
-            self.pend_inc1_c1.d.next = bit_cast::<C_ACC, DC>(self.inp_short1_inc1_c1.val());
-            self.pend_inc1_c2.d.next = bit_cast::<C_ACC, DC>(self.inp_short1_inc1_c2.val());
+            self.total.d.next = self.inp.maj_count.val();
+            self.c0.d.next = self.inp.short0_count.val();
+            self.ddx_z.d.next = self.inp.ddx_z.val();
+            self.ddx_c0.d.next = self.inp.ddx_c0.val();
+            self.ddx_c1.d.next = self.inp.ddx_c1.val();
+            self.ddx_c2.d.next = self.inp.ddx_c2.val();
+            self.pend_x.d.next = self.inp.short1_x.val();
+            self.pend_r.d.next = self.inp.short1_r.val();
+            self.pend_q.d.next = bit_cast::<PIXEL, EDGE_Q>(self.inp.short1_q.val());
+            self.pend_rho.d.next = self.inp.short1_rho.val();
+            self.pend_d.d.next = self.inp.short1_d.val();
+            self.pend_at_z.d.next = self.inp.short1_at_z.val();
+            self.pend_at_c0.d.next = self.inp.short1_at_c0.val();
+            self.pend_at_c1.d.next = self.inp.short1_at_c1.val();
+            self.pend_at_c2.d.next = self.inp.short1_at_c2.val();
+            self.pend_inc0_z.d.next = bit_cast::<Z_ACC, DZ>(self.inp.short1_inc0_z.val());
+            self.pend_inc0_c0.d.next = bit_cast::<C_ACC, DC>(self.inp.short1_inc0_c0.val());
+            self.pend_inc0_c1.d.next = bit_cast::<C_ACC, DC>(self.inp.short1_inc0_c1.val());
+            self.pend_inc0_c2.d.next = bit_cast::<C_ACC, DC>(self.inp.short1_inc0_c2.val());
+            self.pend_inc1_z.d.next = bit_cast::<Z_ACC, DZ>(self.inp.short1_inc1_z.val());
+            self.pend_inc1_c0.d.next = bit_cast::<C_ACC, DC>(self.inp.short1_inc1_c0.val());
+            self.pend_inc1_c1.d.next = bit_cast::<C_ACC, DC>(self.inp.short1_inc1_c1.val());
+            self.pend_inc1_c2.d.next = bit_cast::<C_ACC, DC>(self.inp.short1_inc1_c2.val());
         }
         if self.busy.q.val() & !self.walking.q.val() {
             self.walking.d.next = !self.no_rows.val();
@@ -592,75 +521,10 @@ crate::pins!(EdgeWalk {
     clock: clock,
     inputs: [
         height,
-        inp_valid,
-        inp_walk,
-        inp_maj_left,
-        inp_maj_j,
-        inp_maj_count,
-        inp_maj_x,
-        inp_maj_r,
-        inp_maj_q,
-        inp_maj_rho,
-        inp_maj_d,
-        inp_maj_at_z,
-        inp_maj_at_c0,
-        inp_maj_at_c1,
-        inp_maj_at_c2,
-        inp_maj_inc0_z,
-        inp_maj_inc0_c0,
-        inp_maj_inc0_c1,
-        inp_maj_inc0_c2,
-        inp_maj_inc1_z,
-        inp_maj_inc1_c0,
-        inp_maj_inc1_c1,
-        inp_maj_inc1_c2,
-        inp_short0_j,
-        inp_short0_count,
-        inp_short0_x,
-        inp_short0_r,
-        inp_short0_q,
-        inp_short0_rho,
-        inp_short0_d,
-        inp_short0_at_z,
-        inp_short0_at_c0,
-        inp_short0_at_c1,
-        inp_short0_at_c2,
-        inp_short0_inc0_z,
-        inp_short0_inc0_c0,
-        inp_short0_inc0_c1,
-        inp_short0_inc0_c2,
-        inp_short0_inc1_z,
-        inp_short0_inc1_c0,
-        inp_short0_inc1_c1,
-        inp_short0_inc1_c2,
-        inp_short1_j,
-        inp_short1_count,
-        inp_short1_x,
-        inp_short1_r,
-        inp_short1_q,
-        inp_short1_rho,
-        inp_short1_d,
-        inp_short1_at_z,
-        inp_short1_at_c0,
-        inp_short1_at_c1,
-        inp_short1_at_c2,
-        inp_short1_inc0_z,
-        inp_short1_inc0_c0,
-        inp_short1_inc0_c1,
-        inp_short1_inc0_c2,
-        inp_short1_inc1_z,
-        inp_short1_inc1_c0,
-        inp_short1_inc1_c1,
-        inp_short1_inc1_c2,
-        inp_ddx_z,
-        inp_ddx_c0,
-        inp_ddx_c1,
-        inp_ddx_c2,
     ],
     outputs: [
-        inp_ready,
     ],
-    links: [out],
+    links: [inp, out],
 });
 
 /// `UNITS` entry: the edge walk (no parameters: widths from `crate::widths`).

@@ -1,7 +1,7 @@
 //! The links between the scanline units of one build, each declared once (`crate::link!`),
 //! at the build's widths (`super::widths`).
 
-use super::widths::{CHANNEL, C_ACC, DC, DEPTH, DZ, PIXEL, SCREEN, Z_ACC};
+use super::widths::{CHANNEL, C_ACC, DC, DEPTH, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
 use rust_hdl::prelude::*;
 
 crate::link! {
@@ -39,6 +39,84 @@ crate::link! {
         right_c1: Bits<C_ACC>,
         right_c2: Bits<C_ACC>,
         /// Per-pixel steps (`dz`, `dc`).
+        ddx_z: Bits<DZ>,
+        ddx_c0: Bits<DC>,
+        ddx_c1: Bits<DC>,
+        ddx_c2: Bits<DC>,
+    }
+}
+
+crate::link! {
+    /// A set-up triangle (`model::triangle_setup::TriangleSetupOut` without `divisions`):
+    /// `triangle_setup` -> `edge_walk`. Each field is the low bits of the model's value:
+    /// `count` reaches 2^(PIXEL-1) = 4096 (a triangle over the whole `xy` range): read it
+    /// unsigned.
+    TriangleSetupSource => TriangleSetupSink {
+        /// `TriangleSetupOut::walk`: high for `Walk::Up`.
+        walk: Bit,
+        maj_left: Bit,
+        /// The long edge (`maj`): the exact edge walker (`j`, `count`, `x`, `r`, `q`, `rho`, `d`), the
+        /// attributes at its first scanline (`at`) and their steps (`inc0`, `inc1`).
+        maj_j: Bits<PIXEL>,
+        maj_count: Bits<PIXEL>,
+        maj_x: Bits<PIXEL>,
+        maj_r: Bits<EDGE_D>,
+        maj_q: Bits<EDGE_Q>,
+        maj_rho: Bits<EDGE_D>,
+        maj_d: Bits<EDGE_D>,
+        maj_at_z: Bits<Z_ACC>,
+        maj_at_c0: Bits<C_ACC>,
+        maj_at_c1: Bits<C_ACC>,
+        maj_at_c2: Bits<C_ACC>,
+        maj_inc0_z: Bits<DZ>,
+        maj_inc0_c0: Bits<DC>,
+        maj_inc0_c1: Bits<DC>,
+        maj_inc0_c2: Bits<DC>,
+        maj_inc1_z: Bits<DZ>,
+        maj_inc1_c0: Bits<DC>,
+        maj_inc1_c1: Bits<DC>,
+        maj_inc1_c2: Bits<DC>,
+        /// The short edges, in walk order (`short[0]`).
+        short0_j: Bits<PIXEL>,
+        short0_count: Bits<PIXEL>,
+        short0_x: Bits<PIXEL>,
+        short0_r: Bits<EDGE_D>,
+        short0_q: Bits<EDGE_Q>,
+        short0_rho: Bits<EDGE_D>,
+        short0_d: Bits<EDGE_D>,
+        short0_at_z: Bits<Z_ACC>,
+        short0_at_c0: Bits<C_ACC>,
+        short0_at_c1: Bits<C_ACC>,
+        short0_at_c2: Bits<C_ACC>,
+        short0_inc0_z: Bits<DZ>,
+        short0_inc0_c0: Bits<DC>,
+        short0_inc0_c1: Bits<DC>,
+        short0_inc0_c2: Bits<DC>,
+        short0_inc1_z: Bits<DZ>,
+        short0_inc1_c0: Bits<DC>,
+        short0_inc1_c1: Bits<DC>,
+        short0_inc1_c2: Bits<DC>,
+        /// (`short[1]`).
+        short1_j: Bits<PIXEL>,
+        short1_count: Bits<PIXEL>,
+        short1_x: Bits<PIXEL>,
+        short1_r: Bits<EDGE_D>,
+        short1_q: Bits<EDGE_Q>,
+        short1_rho: Bits<EDGE_D>,
+        short1_d: Bits<EDGE_D>,
+        short1_at_z: Bits<Z_ACC>,
+        short1_at_c0: Bits<C_ACC>,
+        short1_at_c1: Bits<C_ACC>,
+        short1_at_c2: Bits<C_ACC>,
+        short1_inc0_z: Bits<DZ>,
+        short1_inc0_c0: Bits<DC>,
+        short1_inc0_c1: Bits<DC>,
+        short1_inc0_c2: Bits<DC>,
+        short1_inc1_z: Bits<DZ>,
+        short1_inc1_c0: Bits<DC>,
+        short1_inc1_c1: Bits<DC>,
+        short1_inc1_c2: Bits<DC>,
+        /// Per-pixel steps of z (`dz`) and R, G, B (`dc`).
         ddx_z: Bits<DZ>,
         ddx_c0: Bits<DC>,
         ddx_c1: Bits<DC>,

@@ -43,7 +43,7 @@
 
 use super::cull_sort::{CullSort, COLOR, INV_W, OUTCODE, XY, Z};
 use super::edge_walk::EdgeWalk;
-use super::links::{PixelSource, SpanCmdSource};
+use super::links::{PixelSource, SpanCmdSource, TriangleSetupSource};
 use super::pixel_out::PixelOut;
 use super::span::Span;
 use super::span_fifo::SpanFifo;
@@ -163,73 +163,9 @@ impl Logic for RasterCore {
         self.triangle_setup.inp_v2_c2.next = self.inp_v2_c2.val();
 
 
-        // triangle_setup -> edge_walk: `TriangleSetupOut`, one to one.
+        // triangle_setup -> edge_walk: `TriangleSetupOut`.
         self.edge_walk.height.next = self.height.val();
-        self.edge_walk.inp_valid.next = self.triangle_setup.out_valid.val();
-        self.triangle_setup.out_ready.next = self.edge_walk.inp_ready.val();
-        self.edge_walk.inp_walk.next = self.triangle_setup.out_walk.val();
-        self.edge_walk.inp_maj_left.next = self.triangle_setup.out_maj_left.val();
-        self.edge_walk.inp_maj_j.next = self.triangle_setup.out_maj_j.val();
-        self.edge_walk.inp_maj_count.next = self.triangle_setup.out_maj_count.val();
-        self.edge_walk.inp_maj_x.next = self.triangle_setup.out_maj_x.val();
-        self.edge_walk.inp_maj_r.next = self.triangle_setup.out_maj_r.val();
-        self.edge_walk.inp_maj_q.next = self.triangle_setup.out_maj_q.val();
-        self.edge_walk.inp_maj_rho.next = self.triangle_setup.out_maj_rho.val();
-        self.edge_walk.inp_maj_d.next = self.triangle_setup.out_maj_d.val();
-        self.edge_walk.inp_maj_at_z.next = self.triangle_setup.out_maj_at_z.val();
-        self.edge_walk.inp_maj_at_c0.next = self.triangle_setup.out_maj_at_c0.val();
-        self.edge_walk.inp_maj_at_c1.next = self.triangle_setup.out_maj_at_c1.val();
-        self.edge_walk.inp_maj_at_c2.next = self.triangle_setup.out_maj_at_c2.val();
-        self.edge_walk.inp_maj_inc0_z.next = self.triangle_setup.out_maj_inc0_z.val();
-        self.edge_walk.inp_maj_inc0_c0.next = self.triangle_setup.out_maj_inc0_c0.val();
-        self.edge_walk.inp_maj_inc0_c1.next = self.triangle_setup.out_maj_inc0_c1.val();
-        self.edge_walk.inp_maj_inc0_c2.next = self.triangle_setup.out_maj_inc0_c2.val();
-        self.edge_walk.inp_maj_inc1_z.next = self.triangle_setup.out_maj_inc1_z.val();
-        self.edge_walk.inp_maj_inc1_c0.next = self.triangle_setup.out_maj_inc1_c0.val();
-        self.edge_walk.inp_maj_inc1_c1.next = self.triangle_setup.out_maj_inc1_c1.val();
-        self.edge_walk.inp_maj_inc1_c2.next = self.triangle_setup.out_maj_inc1_c2.val();
-        self.edge_walk.inp_short0_j.next = self.triangle_setup.out_short0_j.val();
-        self.edge_walk.inp_short0_count.next = self.triangle_setup.out_short0_count.val();
-        self.edge_walk.inp_short0_x.next = self.triangle_setup.out_short0_x.val();
-        self.edge_walk.inp_short0_r.next = self.triangle_setup.out_short0_r.val();
-        self.edge_walk.inp_short0_q.next = self.triangle_setup.out_short0_q.val();
-        self.edge_walk.inp_short0_rho.next = self.triangle_setup.out_short0_rho.val();
-        self.edge_walk.inp_short0_d.next = self.triangle_setup.out_short0_d.val();
-        self.edge_walk.inp_short0_at_z.next = self.triangle_setup.out_short0_at_z.val();
-        self.edge_walk.inp_short0_at_c0.next = self.triangle_setup.out_short0_at_c0.val();
-        self.edge_walk.inp_short0_at_c1.next = self.triangle_setup.out_short0_at_c1.val();
-        self.edge_walk.inp_short0_at_c2.next = self.triangle_setup.out_short0_at_c2.val();
-        self.edge_walk.inp_short0_inc0_z.next = self.triangle_setup.out_short0_inc0_z.val();
-        self.edge_walk.inp_short0_inc0_c0.next = self.triangle_setup.out_short0_inc0_c0.val();
-        self.edge_walk.inp_short0_inc0_c1.next = self.triangle_setup.out_short0_inc0_c1.val();
-        self.edge_walk.inp_short0_inc0_c2.next = self.triangle_setup.out_short0_inc0_c2.val();
-        self.edge_walk.inp_short0_inc1_z.next = self.triangle_setup.out_short0_inc1_z.val();
-        self.edge_walk.inp_short0_inc1_c0.next = self.triangle_setup.out_short0_inc1_c0.val();
-        self.edge_walk.inp_short0_inc1_c1.next = self.triangle_setup.out_short0_inc1_c1.val();
-        self.edge_walk.inp_short0_inc1_c2.next = self.triangle_setup.out_short0_inc1_c2.val();
-        self.edge_walk.inp_short1_j.next = self.triangle_setup.out_short1_j.val();
-        self.edge_walk.inp_short1_count.next = self.triangle_setup.out_short1_count.val();
-        self.edge_walk.inp_short1_x.next = self.triangle_setup.out_short1_x.val();
-        self.edge_walk.inp_short1_r.next = self.triangle_setup.out_short1_r.val();
-        self.edge_walk.inp_short1_q.next = self.triangle_setup.out_short1_q.val();
-        self.edge_walk.inp_short1_rho.next = self.triangle_setup.out_short1_rho.val();
-        self.edge_walk.inp_short1_d.next = self.triangle_setup.out_short1_d.val();
-        self.edge_walk.inp_short1_at_z.next = self.triangle_setup.out_short1_at_z.val();
-        self.edge_walk.inp_short1_at_c0.next = self.triangle_setup.out_short1_at_c0.val();
-        self.edge_walk.inp_short1_at_c1.next = self.triangle_setup.out_short1_at_c1.val();
-        self.edge_walk.inp_short1_at_c2.next = self.triangle_setup.out_short1_at_c2.val();
-        self.edge_walk.inp_short1_inc0_z.next = self.triangle_setup.out_short1_inc0_z.val();
-        self.edge_walk.inp_short1_inc0_c0.next = self.triangle_setup.out_short1_inc0_c0.val();
-        self.edge_walk.inp_short1_inc0_c1.next = self.triangle_setup.out_short1_inc0_c1.val();
-        self.edge_walk.inp_short1_inc0_c2.next = self.triangle_setup.out_short1_inc0_c2.val();
-        self.edge_walk.inp_short1_inc1_z.next = self.triangle_setup.out_short1_inc1_z.val();
-        self.edge_walk.inp_short1_inc1_c0.next = self.triangle_setup.out_short1_inc1_c0.val();
-        self.edge_walk.inp_short1_inc1_c1.next = self.triangle_setup.out_short1_inc1_c1.val();
-        self.edge_walk.inp_short1_inc1_c2.next = self.triangle_setup.out_short1_inc1_c2.val();
-        self.edge_walk.inp_ddx_z.next = self.triangle_setup.out_ddx_z.val();
-        self.edge_walk.inp_ddx_c0.next = self.triangle_setup.out_ddx_c0.val();
-        self.edge_walk.inp_ddx_c1.next = self.triangle_setup.out_ddx_c1.val();
-        self.edge_walk.inp_ddx_c2.next = self.triangle_setup.out_ddx_c2.val();
+        TriangleSetupSource::join(&mut self.triangle_setup.out, &mut self.edge_walk.inp);
 
         // edge_walk -> span FIFO -> span: `SpanCmd`.
         self.span.width.next = self.width.val();
@@ -241,11 +177,11 @@ impl Logic for RasterCore {
 
         if self.inp_valid.val() & self.triangle_setup.inp_ready.val() {
             self.in_setup.d.next = true;
-        } else if self.triangle_setup.out_valid.val() & self.edge_walk.inp_ready.val() {
+        } else if self.triangle_setup.out.valid.val() & self.edge_walk.inp.ready.val() {
             self.in_setup.d.next = false;
         }
         self.idle.next = !self.in_setup.q.val()
-            & self.edge_walk.inp_ready.val()
+            & self.edge_walk.inp.ready.val()
             & self.fifo.empty.val()
             & self.span.idle.val();
     }

@@ -2,12 +2,12 @@
 //! §II.2.나-라, eq. 2, Table 3), bit-exact to `model::triangle_setup`.
 //!
 //! It takes one sorted triangle from `cull_sort` (`inp_v<i>_*`, `inp_crosses`) and hands
-//! the edge walk `model::triangle_setup::TriangleSetupOut` without `divisions`, flattened into
-//! ports `out_<field>`, nested fields joined by `_` (`out_walk` high for `Walk::Up`,
-//! `out_maj_left`, `out_maj_x`, `out_short0_inc1_c2`, `out_ddx_z`, ...), each field the
-//! low bits of the model's value at the widths of `crate::widths` (`j`, `count`, `x`:
-//! `PIXEL`; `r`, `rho`, `d`: `EDGE_D`; `q`: `EDGE_Q`; `at`: `z_acc`/`c_acc`; `inc0`, `inc1`,
-//! `ddx`: `dz`/`dc`), so that `edge_walk`'s `inp_*` ports take them one to one. `count`
+//! the edge walk `model::triangle_setup::TriangleSetupOut` without `divisions` on the link
+//! `out` (`links::TriangleSetupSource`: ports `out$<field>`, nested fields joined by `_`,
+//! `out$walk` high for `Walk::Up`, `out$maj_x`, `out$short0_inc1_c2`, `out$ddx_z`, ...), each
+//! field the low bits of the model's value at the widths of `crate::widths` (`j`, `count`,
+//! `x`: `PIXEL`; `r`, `rho`, `d`: `EDGE_D`; `q`: `EDGE_Q`; `at`: `z_acc`/`c_acc`; `inc0`,
+//! `inc1`, `ddx`: `dz`/`dc`), which `edge_walk` takes on its end of the link. `count`
 //! reaches 2^(PIXEL-1) = 4096 (a triangle over the whole `xy` range): read it unsigned.
 //!
 //! **Datapath.** `K` multipliers ([`Mul`], `MUL_A` x `MUL_B` bits) reused over 64
@@ -59,6 +59,7 @@ use super::cull_sort::{outcode_bit, COLOR, OUTCODE, XY, Z};
 use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_Q, DIV_QM};
 use crate::emit::{ports, verilog, Emitted};
 use crate::mul::Mul;
+use super::links::TriangleSetupSource;
 use super::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, Z_ACC};
 use crate::config::{mul_a, mul_b};
 use crate::Params;
@@ -204,73 +205,8 @@ pub struct TriangleSetup {
     pub inp_v2_c2: Signal<In, Bits<COLOR>>,
     /// The planes the triangle crosses (`Sorted::crosses`): the walk direction's input.
     pub inp_crosses: Signal<In, Bits<OUTCODE>>,
-    /// The result is valid (held until `out_ready`).
-    pub out_valid: Signal<Out, Bit>,
-    pub out_ready: Signal<In, Bit>,
-    /// `TriangleSetupOut::walk`: high for `Walk::Up`.
-    pub out_walk: Signal<Out, Bit>,
-    pub out_maj_left: Signal<Out, Bit>,
-    pub out_maj_j: Signal<Out, Bits<PIXEL>>,
-    pub out_maj_count: Signal<Out, Bits<PIXEL>>,
-    pub out_maj_x: Signal<Out, Bits<PIXEL>>,
-    pub out_maj_r: Signal<Out, Bits<EDGE_D>>,
-    pub out_maj_q: Signal<Out, Bits<EDGE_Q>>,
-    pub out_maj_rho: Signal<Out, Bits<EDGE_D>>,
-    pub out_maj_d: Signal<Out, Bits<EDGE_D>>,
-    pub out_maj_at_z: Signal<Out, Bits<Z_ACC>>,
-    pub out_maj_at_c0: Signal<Out, Bits<C_ACC>>,
-    pub out_maj_at_c1: Signal<Out, Bits<C_ACC>>,
-    pub out_maj_at_c2: Signal<Out, Bits<C_ACC>>,
-    pub out_maj_inc0_z: Signal<Out, Bits<DZ>>,
-    pub out_maj_inc0_c0: Signal<Out, Bits<DC>>,
-    pub out_maj_inc0_c1: Signal<Out, Bits<DC>>,
-    pub out_maj_inc0_c2: Signal<Out, Bits<DC>>,
-    pub out_maj_inc1_z: Signal<Out, Bits<DZ>>,
-    pub out_maj_inc1_c0: Signal<Out, Bits<DC>>,
-    pub out_maj_inc1_c1: Signal<Out, Bits<DC>>,
-    pub out_maj_inc1_c2: Signal<Out, Bits<DC>>,
-    pub out_short0_j: Signal<Out, Bits<PIXEL>>,
-    pub out_short0_count: Signal<Out, Bits<PIXEL>>,
-    pub out_short0_x: Signal<Out, Bits<PIXEL>>,
-    pub out_short0_r: Signal<Out, Bits<EDGE_D>>,
-    pub out_short0_q: Signal<Out, Bits<EDGE_Q>>,
-    pub out_short0_rho: Signal<Out, Bits<EDGE_D>>,
-    pub out_short0_d: Signal<Out, Bits<EDGE_D>>,
-    pub out_short0_at_z: Signal<Out, Bits<Z_ACC>>,
-    pub out_short0_at_c0: Signal<Out, Bits<C_ACC>>,
-    pub out_short0_at_c1: Signal<Out, Bits<C_ACC>>,
-    pub out_short0_at_c2: Signal<Out, Bits<C_ACC>>,
-    pub out_short0_inc0_z: Signal<Out, Bits<DZ>>,
-    pub out_short0_inc0_c0: Signal<Out, Bits<DC>>,
-    pub out_short0_inc0_c1: Signal<Out, Bits<DC>>,
-    pub out_short0_inc0_c2: Signal<Out, Bits<DC>>,
-    pub out_short0_inc1_z: Signal<Out, Bits<DZ>>,
-    pub out_short0_inc1_c0: Signal<Out, Bits<DC>>,
-    pub out_short0_inc1_c1: Signal<Out, Bits<DC>>,
-    pub out_short0_inc1_c2: Signal<Out, Bits<DC>>,
-    pub out_short1_j: Signal<Out, Bits<PIXEL>>,
-    pub out_short1_count: Signal<Out, Bits<PIXEL>>,
-    pub out_short1_x: Signal<Out, Bits<PIXEL>>,
-    pub out_short1_r: Signal<Out, Bits<EDGE_D>>,
-    pub out_short1_q: Signal<Out, Bits<EDGE_Q>>,
-    pub out_short1_rho: Signal<Out, Bits<EDGE_D>>,
-    pub out_short1_d: Signal<Out, Bits<EDGE_D>>,
-    pub out_short1_at_z: Signal<Out, Bits<Z_ACC>>,
-    pub out_short1_at_c0: Signal<Out, Bits<C_ACC>>,
-    pub out_short1_at_c1: Signal<Out, Bits<C_ACC>>,
-    pub out_short1_at_c2: Signal<Out, Bits<C_ACC>>,
-    pub out_short1_inc0_z: Signal<Out, Bits<DZ>>,
-    pub out_short1_inc0_c0: Signal<Out, Bits<DC>>,
-    pub out_short1_inc0_c1: Signal<Out, Bits<DC>>,
-    pub out_short1_inc0_c2: Signal<Out, Bits<DC>>,
-    pub out_short1_inc1_z: Signal<Out, Bits<DZ>>,
-    pub out_short1_inc1_c0: Signal<Out, Bits<DC>>,
-    pub out_short1_inc1_c1: Signal<Out, Bits<DC>>,
-    pub out_short1_inc1_c2: Signal<Out, Bits<DC>>,
-    pub out_ddx_z: Signal<Out, Bits<DZ>>,
-    pub out_ddx_c0: Signal<Out, Bits<DC>>,
-    pub out_ddx_c1: Signal<Out, Bits<DC>>,
-    pub out_ddx_c2: Signal<Out, Bits<DC>>,
+    /// The set-up triangle, held until `out.ready`.
+    pub out: TriangleSetupSource,
 
     // Sub-blocks.
     mul: Vec<Mul<MUL_A, MUL_B, MUL_P>>,
@@ -483,71 +419,7 @@ impl TriangleSetup {
             inp_v2_c1: Default::default(),
             inp_v2_c2: Default::default(),
             inp_crosses: Default::default(),
-            out_valid: Default::default(),
-            out_ready: Default::default(),
-            out_walk: Default::default(),
-            out_maj_left: Default::default(),
-            out_maj_j: Default::default(),
-            out_maj_count: Default::default(),
-            out_maj_x: Default::default(),
-            out_maj_r: Default::default(),
-            out_maj_q: Default::default(),
-            out_maj_rho: Default::default(),
-            out_maj_d: Default::default(),
-            out_maj_at_z: Default::default(),
-            out_maj_at_c0: Default::default(),
-            out_maj_at_c1: Default::default(),
-            out_maj_at_c2: Default::default(),
-            out_maj_inc0_z: Default::default(),
-            out_maj_inc0_c0: Default::default(),
-            out_maj_inc0_c1: Default::default(),
-            out_maj_inc0_c2: Default::default(),
-            out_maj_inc1_z: Default::default(),
-            out_maj_inc1_c0: Default::default(),
-            out_maj_inc1_c1: Default::default(),
-            out_maj_inc1_c2: Default::default(),
-            out_short0_j: Default::default(),
-            out_short0_count: Default::default(),
-            out_short0_x: Default::default(),
-            out_short0_r: Default::default(),
-            out_short0_q: Default::default(),
-            out_short0_rho: Default::default(),
-            out_short0_d: Default::default(),
-            out_short0_at_z: Default::default(),
-            out_short0_at_c0: Default::default(),
-            out_short0_at_c1: Default::default(),
-            out_short0_at_c2: Default::default(),
-            out_short0_inc0_z: Default::default(),
-            out_short0_inc0_c0: Default::default(),
-            out_short0_inc0_c1: Default::default(),
-            out_short0_inc0_c2: Default::default(),
-            out_short0_inc1_z: Default::default(),
-            out_short0_inc1_c0: Default::default(),
-            out_short0_inc1_c1: Default::default(),
-            out_short0_inc1_c2: Default::default(),
-            out_short1_j: Default::default(),
-            out_short1_count: Default::default(),
-            out_short1_x: Default::default(),
-            out_short1_r: Default::default(),
-            out_short1_q: Default::default(),
-            out_short1_rho: Default::default(),
-            out_short1_d: Default::default(),
-            out_short1_at_z: Default::default(),
-            out_short1_at_c0: Default::default(),
-            out_short1_at_c1: Default::default(),
-            out_short1_at_c2: Default::default(),
-            out_short1_inc0_z: Default::default(),
-            out_short1_inc0_c0: Default::default(),
-            out_short1_inc0_c1: Default::default(),
-            out_short1_inc0_c2: Default::default(),
-            out_short1_inc1_z: Default::default(),
-            out_short1_inc1_c0: Default::default(),
-            out_short1_inc1_c1: Default::default(),
-            out_short1_inc1_c2: Default::default(),
-            out_ddx_z: Default::default(),
-            out_ddx_c0: Default::default(),
-            out_ddx_c1: Default::default(),
-            out_ddx_c2: Default::default(),
+            out: Default::default(),
             mul: (0..k).map(|_| Default::default()).collect(),
             div: DividerRtl::new(l),
             t: Default::default(),
@@ -707,13 +579,13 @@ impl Logic for TriangleSetup {
         }
 
         // ---- Control: take a triangle when idle or handing one over.
-        self.inp_ready.next = (self.t.q.val() == 0) | ((self.t.q.val() == self.last.val()) & self.out_ready.val());
+        self.inp_ready.next = (self.t.q.val() == 0) | ((self.t.q.val() == self.last.val()) & self.out.ready.val());
         self.take.next = self.inp_valid.val() & self.inp_ready.val();
-        self.out_valid.next = self.t.q.val() == self.last.val();
+        self.out.valid.next = self.t.q.val() == self.last.val();
         if (self.t.q.val() != 0) & (self.t.q.val() != self.last.val()) {
             self.t.d.next = self.t.q.val() + 1;
         }
-        if (self.t.q.val() == self.last.val()) & self.out_ready.val() {
+        if (self.t.q.val() == self.last.val()) & self.out.ready.val() {
             self.t.d.next = 0.into();
         }
         if self.take.val() {
@@ -1148,69 +1020,69 @@ impl Logic for TriangleSetup {
         }
 
         // ---- The result.
-        self.out_walk.next = self.up.val();
-        self.out_maj_left.next = self.maj_left.val();
-        self.out_maj_j.next = self.cy[0].val().get_bits::<PIXEL>(self.frac.val().index());
-        self.out_maj_count.next = self.count[0].val();
-        self.out_maj_x.next = self.x[0].q.val().get_bits::<PIXEL>(0);
-        self.out_maj_r.next = self.r[0].q.val();
-        self.out_maj_q.next = self.q[0].q.val().get_bits::<EDGE_Q>(0);
-        self.out_maj_rho.next = self.rho[0].q.val();
-        self.out_maj_d.next = self.ed16[0].val().get_bits::<EDGE_D>(0);
-        self.out_maj_at_z.next = self.plane[0].q.val().get_bits::<Z_ACC>(0);
-        self.out_maj_at_c0.next = self.plane[1].q.val().get_bits::<C_ACC>(0);
-        self.out_maj_at_c1.next = self.plane[2].q.val().get_bits::<C_ACC>(0);
-        self.out_maj_at_c2.next = self.plane[3].q.val().get_bits::<C_ACC>(0);
-        self.out_maj_inc0_z.next = self.inc0[0].q.val().get_bits::<DZ>(0);
-        self.out_maj_inc0_c0.next = self.inc0[1].q.val().get_bits::<DC>(0);
-        self.out_maj_inc0_c1.next = self.inc0[2].q.val().get_bits::<DC>(0);
-        self.out_maj_inc0_c2.next = self.inc0[3].q.val().get_bits::<DC>(0);
-        self.out_maj_inc1_z.next = self.inc1[0].q.val().get_bits::<DZ>(0);
-        self.out_maj_inc1_c0.next = self.inc1[1].q.val().get_bits::<DC>(0);
-        self.out_maj_inc1_c1.next = self.inc1[2].q.val().get_bits::<DC>(0);
-        self.out_maj_inc1_c2.next = self.inc1[3].q.val().get_bits::<DC>(0);
-        self.out_short0_j.next = self.cy[1].val().get_bits::<PIXEL>(self.frac.val().index());
-        self.out_short0_count.next = self.count[1].val();
-        self.out_short0_x.next = self.x[1].q.val().get_bits::<PIXEL>(0);
-        self.out_short0_r.next = self.r[1].q.val();
-        self.out_short0_q.next = self.q[1].q.val().get_bits::<EDGE_Q>(0);
-        self.out_short0_rho.next = self.rho[1].q.val();
-        self.out_short0_d.next = self.ed16[1].val().get_bits::<EDGE_D>(0);
-        self.out_short0_at_z.next = self.plane[4].q.val().get_bits::<Z_ACC>(0);
-        self.out_short0_at_c0.next = self.plane[5].q.val().get_bits::<C_ACC>(0);
-        self.out_short0_at_c1.next = self.plane[6].q.val().get_bits::<C_ACC>(0);
-        self.out_short0_at_c2.next = self.plane[7].q.val().get_bits::<C_ACC>(0);
-        self.out_short0_inc0_z.next = self.inc0[4].q.val().get_bits::<DZ>(0);
-        self.out_short0_inc0_c0.next = self.inc0[5].q.val().get_bits::<DC>(0);
-        self.out_short0_inc0_c1.next = self.inc0[6].q.val().get_bits::<DC>(0);
-        self.out_short0_inc0_c2.next = self.inc0[7].q.val().get_bits::<DC>(0);
-        self.out_short0_inc1_z.next = self.inc1[4].q.val().get_bits::<DZ>(0);
-        self.out_short0_inc1_c0.next = self.inc1[5].q.val().get_bits::<DC>(0);
-        self.out_short0_inc1_c1.next = self.inc1[6].q.val().get_bits::<DC>(0);
-        self.out_short0_inc1_c2.next = self.inc1[7].q.val().get_bits::<DC>(0);
-        self.out_short1_j.next = self.cy[2].val().get_bits::<PIXEL>(self.frac.val().index());
-        self.out_short1_count.next = self.count[2].val();
-        self.out_short1_x.next = self.x[2].q.val().get_bits::<PIXEL>(0);
-        self.out_short1_r.next = self.r[2].q.val();
-        self.out_short1_q.next = self.q[2].q.val().get_bits::<EDGE_Q>(0);
-        self.out_short1_rho.next = self.rho[2].q.val();
-        self.out_short1_d.next = self.ed16[2].val().get_bits::<EDGE_D>(0);
-        self.out_short1_at_z.next = self.plane[8].q.val().get_bits::<Z_ACC>(0);
-        self.out_short1_at_c0.next = self.plane[9].q.val().get_bits::<C_ACC>(0);
-        self.out_short1_at_c1.next = self.plane[10].q.val().get_bits::<C_ACC>(0);
-        self.out_short1_at_c2.next = self.plane[11].q.val().get_bits::<C_ACC>(0);
-        self.out_short1_inc0_z.next = self.inc0[8].q.val().get_bits::<DZ>(0);
-        self.out_short1_inc0_c0.next = self.inc0[9].q.val().get_bits::<DC>(0);
-        self.out_short1_inc0_c1.next = self.inc0[10].q.val().get_bits::<DC>(0);
-        self.out_short1_inc0_c2.next = self.inc0[11].q.val().get_bits::<DC>(0);
-        self.out_short1_inc1_z.next = self.inc1[8].q.val().get_bits::<DZ>(0);
-        self.out_short1_inc1_c0.next = self.inc1[9].q.val().get_bits::<DC>(0);
-        self.out_short1_inc1_c1.next = self.inc1[10].q.val().get_bits::<DC>(0);
-        self.out_short1_inc1_c2.next = self.inc1[11].q.val().get_bits::<DC>(0);
-        self.out_ddx_z.next = self.ddx[0].val().get_bits::<DZ>(0);
-        self.out_ddx_c0.next = self.ddx[1].val().get_bits::<DC>(0);
-        self.out_ddx_c1.next = self.ddx[2].val().get_bits::<DC>(0);
-        self.out_ddx_c2.next = self.ddx[3].val().get_bits::<DC>(0);
+        self.out.walk.next = self.up.val();
+        self.out.maj_left.next = self.maj_left.val();
+        self.out.maj_j.next = self.cy[0].val().get_bits::<PIXEL>(self.frac.val().index());
+        self.out.maj_count.next = self.count[0].val();
+        self.out.maj_x.next = self.x[0].q.val().get_bits::<PIXEL>(0);
+        self.out.maj_r.next = self.r[0].q.val();
+        self.out.maj_q.next = self.q[0].q.val().get_bits::<EDGE_Q>(0);
+        self.out.maj_rho.next = self.rho[0].q.val();
+        self.out.maj_d.next = self.ed16[0].val().get_bits::<EDGE_D>(0);
+        self.out.maj_at_z.next = self.plane[0].q.val().get_bits::<Z_ACC>(0);
+        self.out.maj_at_c0.next = self.plane[1].q.val().get_bits::<C_ACC>(0);
+        self.out.maj_at_c1.next = self.plane[2].q.val().get_bits::<C_ACC>(0);
+        self.out.maj_at_c2.next = self.plane[3].q.val().get_bits::<C_ACC>(0);
+        self.out.maj_inc0_z.next = self.inc0[0].q.val().get_bits::<DZ>(0);
+        self.out.maj_inc0_c0.next = self.inc0[1].q.val().get_bits::<DC>(0);
+        self.out.maj_inc0_c1.next = self.inc0[2].q.val().get_bits::<DC>(0);
+        self.out.maj_inc0_c2.next = self.inc0[3].q.val().get_bits::<DC>(0);
+        self.out.maj_inc1_z.next = self.inc1[0].q.val().get_bits::<DZ>(0);
+        self.out.maj_inc1_c0.next = self.inc1[1].q.val().get_bits::<DC>(0);
+        self.out.maj_inc1_c1.next = self.inc1[2].q.val().get_bits::<DC>(0);
+        self.out.maj_inc1_c2.next = self.inc1[3].q.val().get_bits::<DC>(0);
+        self.out.short0_j.next = self.cy[1].val().get_bits::<PIXEL>(self.frac.val().index());
+        self.out.short0_count.next = self.count[1].val();
+        self.out.short0_x.next = self.x[1].q.val().get_bits::<PIXEL>(0);
+        self.out.short0_r.next = self.r[1].q.val();
+        self.out.short0_q.next = self.q[1].q.val().get_bits::<EDGE_Q>(0);
+        self.out.short0_rho.next = self.rho[1].q.val();
+        self.out.short0_d.next = self.ed16[1].val().get_bits::<EDGE_D>(0);
+        self.out.short0_at_z.next = self.plane[4].q.val().get_bits::<Z_ACC>(0);
+        self.out.short0_at_c0.next = self.plane[5].q.val().get_bits::<C_ACC>(0);
+        self.out.short0_at_c1.next = self.plane[6].q.val().get_bits::<C_ACC>(0);
+        self.out.short0_at_c2.next = self.plane[7].q.val().get_bits::<C_ACC>(0);
+        self.out.short0_inc0_z.next = self.inc0[4].q.val().get_bits::<DZ>(0);
+        self.out.short0_inc0_c0.next = self.inc0[5].q.val().get_bits::<DC>(0);
+        self.out.short0_inc0_c1.next = self.inc0[6].q.val().get_bits::<DC>(0);
+        self.out.short0_inc0_c2.next = self.inc0[7].q.val().get_bits::<DC>(0);
+        self.out.short0_inc1_z.next = self.inc1[4].q.val().get_bits::<DZ>(0);
+        self.out.short0_inc1_c0.next = self.inc1[5].q.val().get_bits::<DC>(0);
+        self.out.short0_inc1_c1.next = self.inc1[6].q.val().get_bits::<DC>(0);
+        self.out.short0_inc1_c2.next = self.inc1[7].q.val().get_bits::<DC>(0);
+        self.out.short1_j.next = self.cy[2].val().get_bits::<PIXEL>(self.frac.val().index());
+        self.out.short1_count.next = self.count[2].val();
+        self.out.short1_x.next = self.x[2].q.val().get_bits::<PIXEL>(0);
+        self.out.short1_r.next = self.r[2].q.val();
+        self.out.short1_q.next = self.q[2].q.val().get_bits::<EDGE_Q>(0);
+        self.out.short1_rho.next = self.rho[2].q.val();
+        self.out.short1_d.next = self.ed16[2].val().get_bits::<EDGE_D>(0);
+        self.out.short1_at_z.next = self.plane[8].q.val().get_bits::<Z_ACC>(0);
+        self.out.short1_at_c0.next = self.plane[9].q.val().get_bits::<C_ACC>(0);
+        self.out.short1_at_c1.next = self.plane[10].q.val().get_bits::<C_ACC>(0);
+        self.out.short1_at_c2.next = self.plane[11].q.val().get_bits::<C_ACC>(0);
+        self.out.short1_inc0_z.next = self.inc0[8].q.val().get_bits::<DZ>(0);
+        self.out.short1_inc0_c0.next = self.inc0[9].q.val().get_bits::<DC>(0);
+        self.out.short1_inc0_c1.next = self.inc0[10].q.val().get_bits::<DC>(0);
+        self.out.short1_inc0_c2.next = self.inc0[11].q.val().get_bits::<DC>(0);
+        self.out.short1_inc1_z.next = self.inc1[8].q.val().get_bits::<DZ>(0);
+        self.out.short1_inc1_c0.next = self.inc1[9].q.val().get_bits::<DC>(0);
+        self.out.short1_inc1_c1.next = self.inc1[10].q.val().get_bits::<DC>(0);
+        self.out.short1_inc1_c2.next = self.inc1[11].q.val().get_bits::<DC>(0);
+        self.out.ddx_z.next = self.ddx[0].val().get_bits::<DZ>(0);
+        self.out.ddx_c0.next = self.ddx[1].val().get_bits::<DC>(0);
+        self.out.ddx_c1.next = self.ddx[2].val().get_bits::<DC>(0);
+        self.out.ddx_c2.next = self.ddx[3].val().get_bits::<DC>(0);
     }
 }
 
@@ -1218,7 +1090,6 @@ crate::pins!(TriangleSetup {
     clock: clock,
     inputs: [
         inp_valid,
-        out_ready,
         inp_crosses,
         inp_v0_x,
         inp_v0_y,
@@ -1241,71 +1112,8 @@ crate::pins!(TriangleSetup {
     ],
     outputs: [
         inp_ready,
-        out_valid,
-        out_walk,
-        out_maj_left,
-        out_maj_j,
-        out_maj_count,
-        out_maj_x,
-        out_maj_r,
-        out_maj_q,
-        out_maj_rho,
-        out_maj_d,
-        out_maj_at_z,
-        out_maj_at_c0,
-        out_maj_at_c1,
-        out_maj_at_c2,
-        out_maj_inc0_z,
-        out_maj_inc0_c0,
-        out_maj_inc0_c1,
-        out_maj_inc0_c2,
-        out_maj_inc1_z,
-        out_maj_inc1_c0,
-        out_maj_inc1_c1,
-        out_maj_inc1_c2,
-        out_short0_j,
-        out_short0_count,
-        out_short0_x,
-        out_short0_r,
-        out_short0_q,
-        out_short0_rho,
-        out_short0_d,
-        out_short0_at_z,
-        out_short0_at_c0,
-        out_short0_at_c1,
-        out_short0_at_c2,
-        out_short0_inc0_z,
-        out_short0_inc0_c0,
-        out_short0_inc0_c1,
-        out_short0_inc0_c2,
-        out_short0_inc1_z,
-        out_short0_inc1_c0,
-        out_short0_inc1_c1,
-        out_short0_inc1_c2,
-        out_short1_j,
-        out_short1_count,
-        out_short1_x,
-        out_short1_r,
-        out_short1_q,
-        out_short1_rho,
-        out_short1_d,
-        out_short1_at_z,
-        out_short1_at_c0,
-        out_short1_at_c1,
-        out_short1_at_c2,
-        out_short1_inc0_z,
-        out_short1_inc0_c0,
-        out_short1_inc0_c1,
-        out_short1_inc0_c2,
-        out_short1_inc1_z,
-        out_short1_inc1_c0,
-        out_short1_inc1_c1,
-        out_short1_inc1_c2,
-        out_ddx_z,
-        out_ddx_c0,
-        out_ddx_c1,
-        out_ddx_c2,
     ],
+    links: [out],
 });
 
 /// `UNITS` entry: setup with `params["K"]` multipliers and a `params["L"]`-stage divider.

@@ -1,18 +1,16 @@
 //! The model's transactions as port values, and back: a set-up triangle
-//! (`model::triangle_setup::TriangleSetupOut`), a span command (`model::edge_walk::SpanCmd`) and a
-//! pixel (`model::span::Pixel`), each flattened into ports `<prefix>_<field>` with nested
-//! fields joined by `_`, as the RTL names them (`inp_maj_at_c0`, `out_left_z`); the links
-//! declared in `rtl::links` as `<end>$<field>` (`out$rgb2`), their fields and widths read off
-//! the declaration.
-//! Widths come from `rtl::widths`, so a value that does not fit its port fails here.
+//! (`model::triangle_setup::TriangleSetupOut`), a span command (`model::edge_walk::SpanCmd`)
+//! and a pixel (`model::span::Pixel`) on the pins `<end>$<field>` of a link end, nested
+//! fields joined by `_` (`inp$maj_at_c0`, `out$left_z`, `out$rgb2`). The fields and their
+//! widths are read off the link's declaration (`rtl::links`), so a field the model does not
+//! have, or a value that does not fit its port, fails here.
 
 use crate::{Outputs, Value};
 use model::edge_walk::SpanCmd;
 use model::span::Pixel;
 use model::triangle_setup::{Attrs, Edge, TriangleSetupOut, Walk};
 use rtl::link::Link;
-use rtl::links::{PixelSink, SpanCmdSink};
-use rtl::widths::{C_ACC, DC, DZ, EDGE_D, EDGE_Q, PIXEL, Z_ACC};
+use rtl::links::{PixelSink, SpanCmdSink, TriangleSetupSink};
 
 /// Named port values, ready for `Dual::cycle` (through [`as_pins`]).
 pub type PinValues = Vec<(String, Value)>;
@@ -40,35 +38,36 @@ pub fn as_pins(values: &[(String, Value)]) -> Vec<(&str, Value)> {
     values.iter().map(|(n, v)| (n.as_str(), v.clone())).collect()
 }
 
-fn attrs(out: &mut PinValues, name: &str, a: &Attrs, zw: usize, cw: usize) {
-    out.push((format!("{name}_z"), raw(zw, a.z)));
-    for (i, c) in a.c.iter().enumerate() {
-        out.push((format!("{name}_c{i}"), raw(cw, *c)));
+/// Field `field` of edge `e`: `j`, `count`, `x`, `r`, `q`, `rho`, `d`, or `at_`, `inc0_`,
+/// `inc1_` and an attribute.
+fn edge(e: &Edge, field: &str) -> i128 {
+    match field.split_once('_') {
+        None if field == "j" => e.j as i128,
+        None if field == "count" => e.count as i128,
+        None if field == "x" => e.x,
+        None if field == "r" => e.r,
+        None if field == "q" => e.q,
+        None if field == "rho" => e.rho,
+        None if field == "d" => e.d,
+        Some(("at", f)) => attr(&e.at, f),
+        Some(("inc0", f)) => attr(&e.inc0, f),
+        Some(("inc1", f)) => attr(&e.inc1, f),
+        _ => panic!("model::triangle_setup::Edge has no field {field}"),
     }
 }
 
-/// A set-up triangle on ports `<prefix>_*` (`edge_walk`'s `inp_*`).
-pub fn triangle_setup_out(prefix: &str, s: &TriangleSetupOut) -> PinValues {
-    let mut out = vec![
-        (format!("{prefix}_walk"), Value::new(1, (s.walk == Walk::Up) as u128)),
-        (format!("{prefix}_maj_left"), Value::new(1, s.maj_left as u128)),
-    ];
-    let edges: [(&str, &Edge); 3] = [("maj", &s.maj), ("short0", &s.short[0]), ("short1", &s.short[1])];
-    for (name, e) in edges {
-        let p = format!("{prefix}_{name}");
-        out.push((format!("{p}_j"), raw(PIXEL, e.j as i128)));
-        out.push((format!("{p}_count"), raw(PIXEL, e.count as i128)));
-        out.push((format!("{p}_x"), raw(PIXEL, e.x)));
-        out.push((format!("{p}_r"), raw(EDGE_D, e.r)));
-        out.push((format!("{p}_q"), raw(EDGE_Q, e.q)));
-        out.push((format!("{p}_rho"), raw(EDGE_D, e.rho)));
-        out.push((format!("{p}_d"), raw(EDGE_D, e.d)));
-        attrs(&mut out, &format!("{p}_at"), &e.at, Z_ACC, C_ACC);
-        attrs(&mut out, &format!("{p}_inc0"), &e.inc0, DZ, DC);
-        attrs(&mut out, &format!("{p}_inc1"), &e.inc1, DZ, DC);
-    }
-    attrs(&mut out, &format!("{prefix}_ddx"), &s.ddx, DZ, DC);
-    out
+/// A set-up triangle on the pins of link end `end` (`edge_walk`'s `inp`:
+/// `links::TriangleSetupSink`).
+pub fn triangle_setup_out(end: &str, s: &TriangleSetupOut) -> PinValues {
+    link_pins::<TriangleSetupSink>(end, |field| match field.split_once('_') {
+        None if field == "walk" => (s.walk == Walk::Up) as i128,
+        Some(("maj", "left")) => s.maj_left as i128,
+        Some(("maj", f)) => edge(&s.maj, f),
+        Some(("short0", f)) => edge(&s.short[0], f),
+        Some(("short1", f)) => edge(&s.short[1], f),
+        Some(("ddx", f)) => attr(&s.ddx, f),
+        _ => panic!("model::triangle_setup::TriangleSetupOut has no field {field}"),
+    })
 }
 
 /// Field `field` of attributes `a`: `z`, `c0`, `c1` or `c2`.
