@@ -1,36 +1,36 @@
 
 
-module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,cull_back,inp_v0_iw,inp_v1_iw,inp_v2_iw,verdict_valid,verdict_code,verdict_outside,mem_ready,rd_en,rd_addr,rd_z,wr_en,wr_addr,wr_z,wr_rgb,done);
+module raster_top(clock,width,height,inp_last,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,cull_back,verdict_valid,verdict_code,verdict_outside,mem_ready,rd_en,rd_addr,rd_z,wr_en,wr_addr,wr_z,wr_rgb,done);
     
     // Module arguments
     input wire  clock;
     input wire  [10:0] width;
     input wire  [10:0] height;
-    input wire  inp_valid;
-    output reg  inp_ready;
     input wire  inp_last;
-    input wire  [15:0] inp_v0_x;
-    input wire  [15:0] inp_v0_y;
-    input wire  [17:0] inp_v0_z;
-    input wire  [7:0] inp_v0_c0;
-    input wire  [7:0] inp_v0_c1;
-    input wire  [7:0] inp_v0_c2;
-    input wire  [15:0] inp_v1_x;
-    input wire  [15:0] inp_v1_y;
-    input wire  [17:0] inp_v1_z;
-    input wire  [7:0] inp_v1_c0;
-    input wire  [7:0] inp_v1_c1;
-    input wire  [7:0] inp_v1_c2;
-    input wire  [15:0] inp_v2_x;
-    input wire  [15:0] inp_v2_y;
-    input wire  [17:0] inp_v2_z;
-    input wire  [7:0] inp_v2_c0;
-    input wire  [7:0] inp_v2_c1;
-    input wire  [7:0] inp_v2_c2;
+    input wire  inp$valid;
+    output wire  inp$ready;
+    input wire  [15:0] inp$v0_x;
+    input wire  [15:0] inp$v0_y;
+    input wire  [17:0] inp$v0_z;
+    input wire  [7:0] inp$v0_c0;
+    input wire  [7:0] inp$v0_c1;
+    input wire  [7:0] inp$v0_c2;
+    input wire  [15:0] inp$v0_iw;
+    input wire  [15:0] inp$v1_x;
+    input wire  [15:0] inp$v1_y;
+    input wire  [17:0] inp$v1_z;
+    input wire  [7:0] inp$v1_c0;
+    input wire  [7:0] inp$v1_c1;
+    input wire  [7:0] inp$v1_c2;
+    input wire  [15:0] inp$v1_iw;
+    input wire  [15:0] inp$v2_x;
+    input wire  [15:0] inp$v2_y;
+    input wire  [17:0] inp$v2_z;
+    input wire  [7:0] inp$v2_c0;
+    input wire  [7:0] inp$v2_c1;
+    input wire  [7:0] inp$v2_c2;
+    input wire  [15:0] inp$v2_iw;
     input wire  cull_back;
-    input wire  [15:0] inp_v0_iw;
-    input wire  [15:0] inp_v1_iw;
-    input wire  [15:0] inp_v2_iw;
     output reg  verdict_valid;
     output reg  [1:0] verdict_code;
     output reg  [5:0] verdict_outside;
@@ -49,53 +49,30 @@ module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v
     reg  [10:0] cull_sort$width;
     reg  [10:0] cull_sort$height;
     reg  cull_sort$cull_back;
-    reg  cull_sort$inp_valid;
-    wire  cull_sort$inp_ready;
-    reg  [15:0] cull_sort$inp_v0_x;
-    reg  [15:0] cull_sort$inp_v0_y;
-    reg  [17:0] cull_sort$inp_v0_z;
-    reg  [7:0] cull_sort$inp_v0_c0;
-    reg  [7:0] cull_sort$inp_v0_c1;
-    reg  [7:0] cull_sort$inp_v0_c2;
-    reg  [15:0] cull_sort$inp_v0_iw;
-    reg  [15:0] cull_sort$inp_v1_x;
-    reg  [15:0] cull_sort$inp_v1_y;
-    reg  [17:0] cull_sort$inp_v1_z;
-    reg  [7:0] cull_sort$inp_v1_c0;
-    reg  [7:0] cull_sort$inp_v1_c1;
-    reg  [7:0] cull_sort$inp_v1_c2;
-    reg  [15:0] cull_sort$inp_v1_iw;
-    reg  [15:0] cull_sort$inp_v2_x;
-    reg  [15:0] cull_sort$inp_v2_y;
-    reg  [17:0] cull_sort$inp_v2_z;
-    reg  [7:0] cull_sort$inp_v2_c0;
-    reg  [7:0] cull_sort$inp_v2_c1;
-    reg  [7:0] cull_sort$inp_v2_c2;
-    reg  [15:0] cull_sort$inp_v2_iw;
-    wire  cull_sort$out_valid;
-    reg  cull_sort$out_ready;
-    wire  [15:0] cull_sort$out_v0_x;
-    wire  [15:0] cull_sort$out_v0_y;
-    wire  [17:0] cull_sort$out_v0_z;
-    wire  [7:0] cull_sort$out_v0_c0;
-    wire  [7:0] cull_sort$out_v0_c1;
-    wire  [7:0] cull_sort$out_v0_c2;
-    wire  [15:0] cull_sort$out_v0_iw;
-    wire  [15:0] cull_sort$out_v1_x;
-    wire  [15:0] cull_sort$out_v1_y;
-    wire  [17:0] cull_sort$out_v1_z;
-    wire  [7:0] cull_sort$out_v1_c0;
-    wire  [7:0] cull_sort$out_v1_c1;
-    wire  [7:0] cull_sort$out_v1_c2;
-    wire  [15:0] cull_sort$out_v1_iw;
-    wire  [15:0] cull_sort$out_v2_x;
-    wire  [15:0] cull_sort$out_v2_y;
-    wire  [17:0] cull_sort$out_v2_z;
-    wire  [7:0] cull_sort$out_v2_c0;
-    wire  [7:0] cull_sort$out_v2_c1;
-    wire  [7:0] cull_sort$out_v2_c2;
-    wire  [15:0] cull_sort$out_v2_iw;
-    wire  [5:0] cull_sort$out_crosses;
+    wire  cull_sort$out$valid;
+    reg  cull_sort$out$ready;
+    wire  [15:0] cull_sort$out$v0_x;
+    wire  [15:0] cull_sort$out$v0_y;
+    wire  [17:0] cull_sort$out$v0_z;
+    wire  [7:0] cull_sort$out$v0_c0;
+    wire  [7:0] cull_sort$out$v0_c1;
+    wire  [7:0] cull_sort$out$v0_c2;
+    wire  [15:0] cull_sort$out$v0_iw;
+    wire  [15:0] cull_sort$out$v1_x;
+    wire  [15:0] cull_sort$out$v1_y;
+    wire  [17:0] cull_sort$out$v1_z;
+    wire  [7:0] cull_sort$out$v1_c0;
+    wire  [7:0] cull_sort$out$v1_c1;
+    wire  [7:0] cull_sort$out$v1_c2;
+    wire  [15:0] cull_sort$out$v1_iw;
+    wire  [15:0] cull_sort$out$v2_x;
+    wire  [15:0] cull_sort$out$v2_y;
+    wire  [17:0] cull_sort$out$v2_z;
+    wire  [7:0] cull_sort$out$v2_c0;
+    wire  [7:0] cull_sort$out$v2_c1;
+    wire  [7:0] cull_sort$out$v2_c2;
+    wire  [15:0] cull_sort$out$v2_iw;
+    wire  [5:0] cull_sort$out$crosses;
     wire  cull_sort$verdict_valid;
     wire  [1:0] cull_sort$verdict_code;
     wire  [5:0] cull_sort$verdict_outside;
@@ -120,27 +97,30 @@ module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v
     reg  core$clock;
     reg  [10:0] core$width;
     reg  [10:0] core$height;
-    reg  core$inp_valid;
-    wire  core$inp_ready;
-    reg  [5:0] core$inp_crosses;
-    reg  [15:0] core$inp_v0_x;
-    reg  [15:0] core$inp_v0_y;
-    reg  [17:0] core$inp_v0_z;
-    reg  [7:0] core$inp_v0_c0;
-    reg  [7:0] core$inp_v0_c1;
-    reg  [7:0] core$inp_v0_c2;
-    reg  [15:0] core$inp_v1_x;
-    reg  [15:0] core$inp_v1_y;
-    reg  [17:0] core$inp_v1_z;
-    reg  [7:0] core$inp_v1_c0;
-    reg  [7:0] core$inp_v1_c1;
-    reg  [7:0] core$inp_v1_c2;
-    reg  [15:0] core$inp_v2_x;
-    reg  [15:0] core$inp_v2_y;
-    reg  [17:0] core$inp_v2_z;
-    reg  [7:0] core$inp_v2_c0;
-    reg  [7:0] core$inp_v2_c1;
-    reg  [7:0] core$inp_v2_c2;
+    reg  core$inp$valid;
+    wire  core$inp$ready;
+    reg  [15:0] core$inp$v0_x;
+    reg  [15:0] core$inp$v0_y;
+    reg  [17:0] core$inp$v0_z;
+    reg  [7:0] core$inp$v0_c0;
+    reg  [7:0] core$inp$v0_c1;
+    reg  [7:0] core$inp$v0_c2;
+    reg  [15:0] core$inp$v0_iw;
+    reg  [15:0] core$inp$v1_x;
+    reg  [15:0] core$inp$v1_y;
+    reg  [17:0] core$inp$v1_z;
+    reg  [7:0] core$inp$v1_c0;
+    reg  [7:0] core$inp$v1_c1;
+    reg  [7:0] core$inp$v1_c2;
+    reg  [15:0] core$inp$v1_iw;
+    reg  [15:0] core$inp$v2_x;
+    reg  [15:0] core$inp$v2_y;
+    reg  [17:0] core$inp$v2_z;
+    reg  [7:0] core$inp$v2_c0;
+    reg  [7:0] core$inp$v2_c1;
+    reg  [7:0] core$inp$v2_c2;
+    reg  [15:0] core$inp$v2_iw;
+    reg  [5:0] core$inp$crosses;
     wire  core$out$valid;
     reg  core$out$ready;
     wire  [9:0] core$out$x;
@@ -160,53 +140,53 @@ module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v
         .width(cull_sort$width),
         .height(cull_sort$height),
         .cull_back(cull_sort$cull_back),
-        .inp_valid(cull_sort$inp_valid),
-        .inp_ready(cull_sort$inp_ready),
-        .inp_v0_x(cull_sort$inp_v0_x),
-        .inp_v0_y(cull_sort$inp_v0_y),
-        .inp_v0_z(cull_sort$inp_v0_z),
-        .inp_v0_c0(cull_sort$inp_v0_c0),
-        .inp_v0_c1(cull_sort$inp_v0_c1),
-        .inp_v0_c2(cull_sort$inp_v0_c2),
-        .inp_v0_iw(cull_sort$inp_v0_iw),
-        .inp_v1_x(cull_sort$inp_v1_x),
-        .inp_v1_y(cull_sort$inp_v1_y),
-        .inp_v1_z(cull_sort$inp_v1_z),
-        .inp_v1_c0(cull_sort$inp_v1_c0),
-        .inp_v1_c1(cull_sort$inp_v1_c1),
-        .inp_v1_c2(cull_sort$inp_v1_c2),
-        .inp_v1_iw(cull_sort$inp_v1_iw),
-        .inp_v2_x(cull_sort$inp_v2_x),
-        .inp_v2_y(cull_sort$inp_v2_y),
-        .inp_v2_z(cull_sort$inp_v2_z),
-        .inp_v2_c0(cull_sort$inp_v2_c0),
-        .inp_v2_c1(cull_sort$inp_v2_c1),
-        .inp_v2_c2(cull_sort$inp_v2_c2),
-        .inp_v2_iw(cull_sort$inp_v2_iw),
-        .out_valid(cull_sort$out_valid),
-        .out_ready(cull_sort$out_ready),
-        .out_v0_x(cull_sort$out_v0_x),
-        .out_v0_y(cull_sort$out_v0_y),
-        .out_v0_z(cull_sort$out_v0_z),
-        .out_v0_c0(cull_sort$out_v0_c0),
-        .out_v0_c1(cull_sort$out_v0_c1),
-        .out_v0_c2(cull_sort$out_v0_c2),
-        .out_v0_iw(cull_sort$out_v0_iw),
-        .out_v1_x(cull_sort$out_v1_x),
-        .out_v1_y(cull_sort$out_v1_y),
-        .out_v1_z(cull_sort$out_v1_z),
-        .out_v1_c0(cull_sort$out_v1_c0),
-        .out_v1_c1(cull_sort$out_v1_c1),
-        .out_v1_c2(cull_sort$out_v1_c2),
-        .out_v1_iw(cull_sort$out_v1_iw),
-        .out_v2_x(cull_sort$out_v2_x),
-        .out_v2_y(cull_sort$out_v2_y),
-        .out_v2_z(cull_sort$out_v2_z),
-        .out_v2_c0(cull_sort$out_v2_c0),
-        .out_v2_c1(cull_sort$out_v2_c1),
-        .out_v2_c2(cull_sort$out_v2_c2),
-        .out_v2_iw(cull_sort$out_v2_iw),
-        .out_crosses(cull_sort$out_crosses),
+        .inp$valid(inp$valid),
+        .inp$ready(inp$ready),
+        .inp$v0_x(inp$v0_x),
+        .inp$v0_y(inp$v0_y),
+        .inp$v0_z(inp$v0_z),
+        .inp$v0_c0(inp$v0_c0),
+        .inp$v0_c1(inp$v0_c1),
+        .inp$v0_c2(inp$v0_c2),
+        .inp$v0_iw(inp$v0_iw),
+        .inp$v1_x(inp$v1_x),
+        .inp$v1_y(inp$v1_y),
+        .inp$v1_z(inp$v1_z),
+        .inp$v1_c0(inp$v1_c0),
+        .inp$v1_c1(inp$v1_c1),
+        .inp$v1_c2(inp$v1_c2),
+        .inp$v1_iw(inp$v1_iw),
+        .inp$v2_x(inp$v2_x),
+        .inp$v2_y(inp$v2_y),
+        .inp$v2_z(inp$v2_z),
+        .inp$v2_c0(inp$v2_c0),
+        .inp$v2_c1(inp$v2_c1),
+        .inp$v2_c2(inp$v2_c2),
+        .inp$v2_iw(inp$v2_iw),
+        .out$valid(cull_sort$out$valid),
+        .out$ready(cull_sort$out$ready),
+        .out$v0_x(cull_sort$out$v0_x),
+        .out$v0_y(cull_sort$out$v0_y),
+        .out$v0_z(cull_sort$out$v0_z),
+        .out$v0_c0(cull_sort$out$v0_c0),
+        .out$v0_c1(cull_sort$out$v0_c1),
+        .out$v0_c2(cull_sort$out$v0_c2),
+        .out$v0_iw(cull_sort$out$v0_iw),
+        .out$v1_x(cull_sort$out$v1_x),
+        .out$v1_y(cull_sort$out$v1_y),
+        .out$v1_z(cull_sort$out$v1_z),
+        .out$v1_c0(cull_sort$out$v1_c0),
+        .out$v1_c1(cull_sort$out$v1_c1),
+        .out$v1_c2(cull_sort$out$v1_c2),
+        .out$v1_iw(cull_sort$out$v1_iw),
+        .out$v2_x(cull_sort$out$v2_x),
+        .out$v2_y(cull_sort$out$v2_y),
+        .out$v2_z(cull_sort$out$v2_z),
+        .out$v2_c0(cull_sort$out$v2_c0),
+        .out$v2_c1(cull_sort$out$v2_c1),
+        .out$v2_c2(cull_sort$out$v2_c2),
+        .out$v2_iw(cull_sort$out$v2_iw),
+        .out$crosses(cull_sort$out$crosses),
         .verdict_valid(cull_sort$verdict_valid),
         .verdict_code(cull_sort$verdict_code),
         .verdict_outside(cull_sort$verdict_outside)
@@ -235,27 +215,30 @@ module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v
         .clock(core$clock),
         .width(core$width),
         .height(core$height),
-        .inp_valid(core$inp_valid),
-        .inp_ready(core$inp_ready),
-        .inp_crosses(core$inp_crosses),
-        .inp_v0_x(core$inp_v0_x),
-        .inp_v0_y(core$inp_v0_y),
-        .inp_v0_z(core$inp_v0_z),
-        .inp_v0_c0(core$inp_v0_c0),
-        .inp_v0_c1(core$inp_v0_c1),
-        .inp_v0_c2(core$inp_v0_c2),
-        .inp_v1_x(core$inp_v1_x),
-        .inp_v1_y(core$inp_v1_y),
-        .inp_v1_z(core$inp_v1_z),
-        .inp_v1_c0(core$inp_v1_c0),
-        .inp_v1_c1(core$inp_v1_c1),
-        .inp_v1_c2(core$inp_v1_c2),
-        .inp_v2_x(core$inp_v2_x),
-        .inp_v2_y(core$inp_v2_y),
-        .inp_v2_z(core$inp_v2_z),
-        .inp_v2_c0(core$inp_v2_c0),
-        .inp_v2_c1(core$inp_v2_c1),
-        .inp_v2_c2(core$inp_v2_c2),
+        .inp$valid(core$inp$valid),
+        .inp$ready(core$inp$ready),
+        .inp$v0_x(core$inp$v0_x),
+        .inp$v0_y(core$inp$v0_y),
+        .inp$v0_z(core$inp$v0_z),
+        .inp$v0_c0(core$inp$v0_c0),
+        .inp$v0_c1(core$inp$v0_c1),
+        .inp$v0_c2(core$inp$v0_c2),
+        .inp$v0_iw(core$inp$v0_iw),
+        .inp$v1_x(core$inp$v1_x),
+        .inp$v1_y(core$inp$v1_y),
+        .inp$v1_z(core$inp$v1_z),
+        .inp$v1_c0(core$inp$v1_c0),
+        .inp$v1_c1(core$inp$v1_c1),
+        .inp$v1_c2(core$inp$v1_c2),
+        .inp$v1_iw(core$inp$v1_iw),
+        .inp$v2_x(core$inp$v2_x),
+        .inp$v2_y(core$inp$v2_y),
+        .inp$v2_z(core$inp$v2_z),
+        .inp$v2_c0(core$inp$v2_c0),
+        .inp$v2_c1(core$inp$v2_c1),
+        .inp$v2_c2(core$inp$v2_c2),
+        .inp$v2_iw(core$inp$v2_iw),
+        .inp$crosses(core$inp$crosses),
         .out$valid(core$out$valid),
         .out$ready(core$out$ready),
         .out$x(core$out$x),
@@ -284,57 +267,13 @@ module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v
         cull_sort$width = width;
         cull_sort$height = height;
         cull_sort$cull_back = cull_back;
-        cull_sort$inp_valid = inp_valid;
-        inp_ready = cull_sort$inp_ready;
-        cull_sort$inp_v0_x = inp_v0_x;
-        cull_sort$inp_v0_y = inp_v0_y;
-        cull_sort$inp_v0_z = inp_v0_z;
-        cull_sort$inp_v0_c0 = inp_v0_c0;
-        cull_sort$inp_v0_c1 = inp_v0_c1;
-        cull_sort$inp_v0_c2 = inp_v0_c2;
-        cull_sort$inp_v0_iw = inp_v0_iw;
-        cull_sort$inp_v1_x = inp_v1_x;
-        cull_sort$inp_v1_y = inp_v1_y;
-        cull_sort$inp_v1_z = inp_v1_z;
-        cull_sort$inp_v1_c0 = inp_v1_c0;
-        cull_sort$inp_v1_c1 = inp_v1_c1;
-        cull_sort$inp_v1_c2 = inp_v1_c2;
-        cull_sort$inp_v1_iw = inp_v1_iw;
-        cull_sort$inp_v2_x = inp_v2_x;
-        cull_sort$inp_v2_y = inp_v2_y;
-        cull_sort$inp_v2_z = inp_v2_z;
-        cull_sort$inp_v2_c0 = inp_v2_c0;
-        cull_sort$inp_v2_c1 = inp_v2_c1;
-        cull_sort$inp_v2_c2 = inp_v2_c2;
-        cull_sort$inp_v2_iw = inp_v2_iw;
         verdict_valid = cull_sort$verdict_valid;
         verdict_code = cull_sort$verdict_code;
         verdict_outside = cull_sort$verdict_outside;
-        if (inp_valid & cull_sort$inp_ready) begin
+        if (inp$valid & inp$ready) begin
             last_in$d = inp_last;
         end
-        core$inp_valid = cull_sort$out_valid;
-        cull_sort$out_ready = core$inp_ready;
-        core$inp_crosses = cull_sort$out_crosses;
-        core$inp_v0_x = cull_sort$out_v0_x;
-        core$inp_v0_y = cull_sort$out_v0_y;
-        core$inp_v0_z = cull_sort$out_v0_z;
-        core$inp_v0_c0 = cull_sort$out_v0_c0;
-        core$inp_v0_c1 = cull_sort$out_v0_c1;
-        core$inp_v0_c2 = cull_sort$out_v0_c2;
-        core$inp_v1_x = cull_sort$out_v1_x;
-        core$inp_v1_y = cull_sort$out_v1_y;
-        core$inp_v1_z = cull_sort$out_v1_z;
-        core$inp_v1_c0 = cull_sort$out_v1_c0;
-        core$inp_v1_c1 = cull_sort$out_v1_c1;
-        core$inp_v1_c2 = cull_sort$out_v1_c2;
-        core$inp_v2_x = cull_sort$out_v2_x;
-        core$inp_v2_y = cull_sort$out_v2_y;
-        core$inp_v2_z = cull_sort$out_v2_z;
-        core$inp_v2_c0 = cull_sort$out_v2_c0;
-        core$inp_v2_c1 = cull_sort$out_v2_c1;
-        core$inp_v2_c2 = cull_sort$out_v2_c2;
-        if (cull_sort$out_valid) begin
+        if (cull_sort$out$valid) begin
             done = 1'b0;
         end
         pixel_out$clock = clock;
@@ -351,6 +290,30 @@ module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v
         end
     end
     
+    always @(*) core$inp$valid = cull_sort$out$valid;
+    always @(*) cull_sort$out$ready = core$inp$ready;
+    always @(*) core$inp$v0_x = cull_sort$out$v0_x;
+    always @(*) core$inp$v0_y = cull_sort$out$v0_y;
+    always @(*) core$inp$v0_z = cull_sort$out$v0_z;
+    always @(*) core$inp$v0_c0 = cull_sort$out$v0_c0;
+    always @(*) core$inp$v0_c1 = cull_sort$out$v0_c1;
+    always @(*) core$inp$v0_c2 = cull_sort$out$v0_c2;
+    always @(*) core$inp$v0_iw = cull_sort$out$v0_iw;
+    always @(*) core$inp$v1_x = cull_sort$out$v1_x;
+    always @(*) core$inp$v1_y = cull_sort$out$v1_y;
+    always @(*) core$inp$v1_z = cull_sort$out$v1_z;
+    always @(*) core$inp$v1_c0 = cull_sort$out$v1_c0;
+    always @(*) core$inp$v1_c1 = cull_sort$out$v1_c1;
+    always @(*) core$inp$v1_c2 = cull_sort$out$v1_c2;
+    always @(*) core$inp$v1_iw = cull_sort$out$v1_iw;
+    always @(*) core$inp$v2_x = cull_sort$out$v2_x;
+    always @(*) core$inp$v2_y = cull_sort$out$v2_y;
+    always @(*) core$inp$v2_z = cull_sort$out$v2_z;
+    always @(*) core$inp$v2_c0 = cull_sort$out$v2_c0;
+    always @(*) core$inp$v2_c1 = cull_sort$out$v2_c1;
+    always @(*) core$inp$v2_c2 = cull_sort$out$v2_c2;
+    always @(*) core$inp$v2_iw = cull_sort$out$v2_iw;
+    always @(*) core$inp$crosses = cull_sort$out$crosses;
     always @(*) pixel_out$inp$valid = core$out$valid;
     always @(*) core$out$ready = pixel_out$inp$ready;
     always @(*) pixel_out$inp$x = core$out$x;
@@ -362,33 +325,36 @@ module raster_top(clock,width,height,inp_valid,inp_ready,inp_last,inp_v0_x,inp_v
 endmodule // raster_top
 
 
-module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
+module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
     
     // Module arguments
     input wire  clock;
     input wire  [10:0] width;
     input wire  [10:0] height;
-    input wire  inp_valid;
-    output reg  inp_ready;
-    input wire  [5:0] inp_crosses;
-    input wire  [15:0] inp_v0_x;
-    input wire  [15:0] inp_v0_y;
-    input wire  [17:0] inp_v0_z;
-    input wire  [7:0] inp_v0_c0;
-    input wire  [7:0] inp_v0_c1;
-    input wire  [7:0] inp_v0_c2;
-    input wire  [15:0] inp_v1_x;
-    input wire  [15:0] inp_v1_y;
-    input wire  [17:0] inp_v1_z;
-    input wire  [7:0] inp_v1_c0;
-    input wire  [7:0] inp_v1_c1;
-    input wire  [7:0] inp_v1_c2;
-    input wire  [15:0] inp_v2_x;
-    input wire  [15:0] inp_v2_y;
-    input wire  [17:0] inp_v2_z;
-    input wire  [7:0] inp_v2_c0;
-    input wire  [7:0] inp_v2_c1;
-    input wire  [7:0] inp_v2_c2;
+    input wire  inp$valid;
+    output wire  inp$ready;
+    input wire  [15:0] inp$v0_x;
+    input wire  [15:0] inp$v0_y;
+    input wire  [17:0] inp$v0_z;
+    input wire  [7:0] inp$v0_c0;
+    input wire  [7:0] inp$v0_c1;
+    input wire  [7:0] inp$v0_c2;
+    input wire  [15:0] inp$v0_iw;
+    input wire  [15:0] inp$v1_x;
+    input wire  [15:0] inp$v1_y;
+    input wire  [17:0] inp$v1_z;
+    input wire  [7:0] inp$v1_c0;
+    input wire  [7:0] inp$v1_c1;
+    input wire  [7:0] inp$v1_c2;
+    input wire  [15:0] inp$v1_iw;
+    input wire  [15:0] inp$v2_x;
+    input wire  [15:0] inp$v2_y;
+    input wire  [17:0] inp$v2_z;
+    input wire  [7:0] inp$v2_c0;
+    input wire  [7:0] inp$v2_c1;
+    input wire  [7:0] inp$v2_c2;
+    input wire  [15:0] inp$v2_iw;
+    input wire  [5:0] inp$crosses;
     output wire  out$valid;
     input wire  out$ready;
     output wire  [9:0] out$x;
@@ -401,27 +367,6 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
     
     // Stub signals
     reg  triangle_setup$clock;
-    reg  triangle_setup$inp_valid;
-    wire  triangle_setup$inp_ready;
-    reg  [15:0] triangle_setup$inp_v0_x;
-    reg  [15:0] triangle_setup$inp_v0_y;
-    reg  [17:0] triangle_setup$inp_v0_z;
-    reg  [7:0] triangle_setup$inp_v0_c0;
-    reg  [7:0] triangle_setup$inp_v0_c1;
-    reg  [7:0] triangle_setup$inp_v0_c2;
-    reg  [15:0] triangle_setup$inp_v1_x;
-    reg  [15:0] triangle_setup$inp_v1_y;
-    reg  [17:0] triangle_setup$inp_v1_z;
-    reg  [7:0] triangle_setup$inp_v1_c0;
-    reg  [7:0] triangle_setup$inp_v1_c1;
-    reg  [7:0] triangle_setup$inp_v1_c2;
-    reg  [15:0] triangle_setup$inp_v2_x;
-    reg  [15:0] triangle_setup$inp_v2_y;
-    reg  [17:0] triangle_setup$inp_v2_z;
-    reg  [7:0] triangle_setup$inp_v2_c0;
-    reg  [7:0] triangle_setup$inp_v2_c1;
-    reg  [7:0] triangle_setup$inp_v2_c2;
-    reg  [5:0] triangle_setup$inp_crosses;
     wire  triangle_setup$out$valid;
     reg  triangle_setup$out$ready;
     wire  triangle_setup$out$walk;
@@ -634,27 +579,30 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
     // Sub module instances
     raster_top$core$triangle_setup triangle_setup(
         .clock(triangle_setup$clock),
-        .inp_valid(triangle_setup$inp_valid),
-        .inp_ready(triangle_setup$inp_ready),
-        .inp_v0_x(triangle_setup$inp_v0_x),
-        .inp_v0_y(triangle_setup$inp_v0_y),
-        .inp_v0_z(triangle_setup$inp_v0_z),
-        .inp_v0_c0(triangle_setup$inp_v0_c0),
-        .inp_v0_c1(triangle_setup$inp_v0_c1),
-        .inp_v0_c2(triangle_setup$inp_v0_c2),
-        .inp_v1_x(triangle_setup$inp_v1_x),
-        .inp_v1_y(triangle_setup$inp_v1_y),
-        .inp_v1_z(triangle_setup$inp_v1_z),
-        .inp_v1_c0(triangle_setup$inp_v1_c0),
-        .inp_v1_c1(triangle_setup$inp_v1_c1),
-        .inp_v1_c2(triangle_setup$inp_v1_c2),
-        .inp_v2_x(triangle_setup$inp_v2_x),
-        .inp_v2_y(triangle_setup$inp_v2_y),
-        .inp_v2_z(triangle_setup$inp_v2_z),
-        .inp_v2_c0(triangle_setup$inp_v2_c0),
-        .inp_v2_c1(triangle_setup$inp_v2_c1),
-        .inp_v2_c2(triangle_setup$inp_v2_c2),
-        .inp_crosses(triangle_setup$inp_crosses),
+        .inp$valid(inp$valid),
+        .inp$ready(inp$ready),
+        .inp$v0_x(inp$v0_x),
+        .inp$v0_y(inp$v0_y),
+        .inp$v0_z(inp$v0_z),
+        .inp$v0_c0(inp$v0_c0),
+        .inp$v0_c1(inp$v0_c1),
+        .inp$v0_c2(inp$v0_c2),
+        .inp$v0_iw(inp$v0_iw),
+        .inp$v1_x(inp$v1_x),
+        .inp$v1_y(inp$v1_y),
+        .inp$v1_z(inp$v1_z),
+        .inp$v1_c0(inp$v1_c0),
+        .inp$v1_c1(inp$v1_c1),
+        .inp$v1_c2(inp$v1_c2),
+        .inp$v1_iw(inp$v1_iw),
+        .inp$v2_x(inp$v2_x),
+        .inp$v2_y(inp$v2_y),
+        .inp$v2_z(inp$v2_z),
+        .inp$v2_c0(inp$v2_c0),
+        .inp$v2_c1(inp$v2_c1),
+        .inp$v2_c2(inp$v2_c2),
+        .inp$v2_iw(inp$v2_iw),
+        .inp$crosses(inp$crosses),
         .out$valid(triangle_setup$out$valid),
         .out$ready(triangle_setup$out$ready),
         .out$walk(triangle_setup$out$walk),
@@ -889,30 +837,9 @@ module raster_top$core(clock,width,height,inp_valid,inp_ready,inp_crosses,inp_v0
         edge_walk$clock = clock;
         fifo$clock = clock;
         span$clock = clock;
-        triangle_setup$inp_valid = inp_valid;
-        inp_ready = triangle_setup$inp_ready;
-        triangle_setup$inp_crosses = inp_crosses;
-        triangle_setup$inp_v0_x = inp_v0_x;
-        triangle_setup$inp_v0_y = inp_v0_y;
-        triangle_setup$inp_v0_z = inp_v0_z;
-        triangle_setup$inp_v0_c0 = inp_v0_c0;
-        triangle_setup$inp_v0_c1 = inp_v0_c1;
-        triangle_setup$inp_v0_c2 = inp_v0_c2;
-        triangle_setup$inp_v1_x = inp_v1_x;
-        triangle_setup$inp_v1_y = inp_v1_y;
-        triangle_setup$inp_v1_z = inp_v1_z;
-        triangle_setup$inp_v1_c0 = inp_v1_c0;
-        triangle_setup$inp_v1_c1 = inp_v1_c1;
-        triangle_setup$inp_v1_c2 = inp_v1_c2;
-        triangle_setup$inp_v2_x = inp_v2_x;
-        triangle_setup$inp_v2_y = inp_v2_y;
-        triangle_setup$inp_v2_z = inp_v2_z;
-        triangle_setup$inp_v2_c0 = inp_v2_c0;
-        triangle_setup$inp_v2_c1 = inp_v2_c1;
-        triangle_setup$inp_v2_c2 = inp_v2_c2;
         edge_walk$height = height;
         span$width = width;
-        if (inp_valid & triangle_setup$inp_ready) begin
+        if (inp$valid & inp$ready) begin
             in_setup$d = 1'b1;
         end
         else if (triangle_setup$out$valid & edge_walk$inp$ready) begin
@@ -7950,31 +7877,34 @@ module raster_top$core$span$zr$x_neg(x,neg);
 endmodule // raster_top$core$span$zr$x_neg
 
 
-module raster_top$core$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
+module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
     
     // Module arguments
     input wire  clock;
-    input wire  inp_valid;
-    output reg  inp_ready;
-    input wire  [15:0] inp_v0_x;
-    input wire  [15:0] inp_v0_y;
-    input wire  [17:0] inp_v0_z;
-    input wire  [7:0] inp_v0_c0;
-    input wire  [7:0] inp_v0_c1;
-    input wire  [7:0] inp_v0_c2;
-    input wire  [15:0] inp_v1_x;
-    input wire  [15:0] inp_v1_y;
-    input wire  [17:0] inp_v1_z;
-    input wire  [7:0] inp_v1_c0;
-    input wire  [7:0] inp_v1_c1;
-    input wire  [7:0] inp_v1_c2;
-    input wire  [15:0] inp_v2_x;
-    input wire  [15:0] inp_v2_y;
-    input wire  [17:0] inp_v2_z;
-    input wire  [7:0] inp_v2_c0;
-    input wire  [7:0] inp_v2_c1;
-    input wire  [7:0] inp_v2_c2;
-    input wire  [5:0] inp_crosses;
+    input wire  inp$valid;
+    output reg  inp$ready;
+    input wire  [15:0] inp$v0_x;
+    input wire  [15:0] inp$v0_y;
+    input wire  [17:0] inp$v0_z;
+    input wire  [7:0] inp$v0_c0;
+    input wire  [7:0] inp$v0_c1;
+    input wire  [7:0] inp$v0_c2;
+    input wire  [15:0] inp$v0_iw;
+    input wire  [15:0] inp$v1_x;
+    input wire  [15:0] inp$v1_y;
+    input wire  [17:0] inp$v1_z;
+    input wire  [7:0] inp$v1_c0;
+    input wire  [7:0] inp$v1_c1;
+    input wire  [7:0] inp$v1_c2;
+    input wire  [15:0] inp$v1_iw;
+    input wire  [15:0] inp$v2_x;
+    input wire  [15:0] inp$v2_y;
+    input wire  [17:0] inp$v2_z;
+    input wire  [7:0] inp$v2_c0;
+    input wire  [7:0] inp$v2_c1;
+    input wire  [7:0] inp$v2_c2;
+    input wire  [15:0] inp$v2_iw;
+    input wire  [5:0] inp$crosses;
     output reg  out$valid;
     input wire  out$ready;
     output reg  out$walk;
@@ -9416,8 +9346,8 @@ module raster_top$core$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_
         inc0$11$d = inc0$11$q;
         inc1$11$clock = clock;
         inc1$11$d = inc1$11$q;
-        inp_ready = (t$q == 32'h0) | ((t$q == last) & out$ready);
-        take = inp_valid & inp_ready;
+        inp$ready = (t$q == 32'h0) | ((t$q == last) & out$ready);
+        take = inp$valid & inp$ready;
         out$valid = t$q == last;
         if ((t$q != 32'h0) & (t$q != last)) begin
             t$d = t$q + 32'h1;
@@ -9427,25 +9357,25 @@ module raster_top$core$triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_
         end
         if (take) begin
             t$d = 32'h1;
-            vx$0$d = inp_v0_x;
-            vy$0$d = inp_v0_y;
-            vz$0$d = inp_v0_z;
-            vc$0$d = inp_v0_c0;
-            vc$1$d = inp_v0_c1;
-            vc$2$d = inp_v0_c2;
-            vx$1$d = inp_v1_x;
-            vy$1$d = inp_v1_y;
-            vz$1$d = inp_v1_z;
-            vc$3$d = inp_v1_c0;
-            vc$4$d = inp_v1_c1;
-            vc$5$d = inp_v1_c2;
-            vx$2$d = inp_v2_x;
-            vy$2$d = inp_v2_y;
-            vz$2$d = inp_v2_z;
-            vc$6$d = inp_v2_c0;
-            vc$7$d = inp_v2_c1;
-            vc$8$d = inp_v2_c2;
-            crosses$d = inp_crosses;
+            vx$0$d = inp$v0_x;
+            vy$0$d = inp$v0_y;
+            vz$0$d = inp$v0_z;
+            vc$0$d = inp$v0_c0;
+            vc$1$d = inp$v0_c1;
+            vc$2$d = inp$v0_c2;
+            vx$1$d = inp$v1_x;
+            vy$1$d = inp$v1_y;
+            vz$1$d = inp$v1_z;
+            vc$3$d = inp$v1_c0;
+            vc$4$d = inp$v1_c1;
+            vc$5$d = inp$v1_c2;
+            vx$2$d = inp$v2_x;
+            vy$2$d = inp$v2_y;
+            vz$2$d = inp$v2_z;
+            vc$6$d = inp$v2_c0;
+            vc$7$d = inp$v2_c1;
+            vc$8$d = inp$v2_c2;
+            crosses$d = inp$crosses;
         end
         act$0 = t$q == cyc$0;
         act$1 = t$q == cyc$1;
@@ -15893,60 +15823,60 @@ module raster_top$core$triangle_setup$x$2(d,q,clock);
 endmodule // raster_top$core$triangle_setup$x$2
 
 
-module raster_top$cull_sort(clock,width,height,cull_back,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v0_iw,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v1_iw,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_v2_iw,out_valid,out_ready,out_v0_x,out_v0_y,out_v0_z,out_v0_c0,out_v0_c1,out_v0_c2,out_v0_iw,out_v1_x,out_v1_y,out_v1_z,out_v1_c0,out_v1_c1,out_v1_c2,out_v1_iw,out_v2_x,out_v2_y,out_v2_z,out_v2_c0,out_v2_c1,out_v2_c2,out_v2_iw,out_crosses,verdict_valid,verdict_code,verdict_outside);
+module raster_top$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,out$crosses,verdict_valid,verdict_code,verdict_outside);
     
     // Module arguments
     input wire  clock;
     input wire  [10:0] width;
     input wire  [10:0] height;
     input wire  cull_back;
-    input wire  inp_valid;
-    output reg  inp_ready;
-    input wire  [15:0] inp_v0_x;
-    input wire  [15:0] inp_v0_y;
-    input wire  [17:0] inp_v0_z;
-    input wire  [7:0] inp_v0_c0;
-    input wire  [7:0] inp_v0_c1;
-    input wire  [7:0] inp_v0_c2;
-    input wire  [15:0] inp_v0_iw;
-    input wire  [15:0] inp_v1_x;
-    input wire  [15:0] inp_v1_y;
-    input wire  [17:0] inp_v1_z;
-    input wire  [7:0] inp_v1_c0;
-    input wire  [7:0] inp_v1_c1;
-    input wire  [7:0] inp_v1_c2;
-    input wire  [15:0] inp_v1_iw;
-    input wire  [15:0] inp_v2_x;
-    input wire  [15:0] inp_v2_y;
-    input wire  [17:0] inp_v2_z;
-    input wire  [7:0] inp_v2_c0;
-    input wire  [7:0] inp_v2_c1;
-    input wire  [7:0] inp_v2_c2;
-    input wire  [15:0] inp_v2_iw;
-    output reg  out_valid;
-    input wire  out_ready;
-    output reg  [15:0] out_v0_x;
-    output reg  [15:0] out_v0_y;
-    output reg  [17:0] out_v0_z;
-    output reg  [7:0] out_v0_c0;
-    output reg  [7:0] out_v0_c1;
-    output reg  [7:0] out_v0_c2;
-    output reg  [15:0] out_v0_iw;
-    output reg  [15:0] out_v1_x;
-    output reg  [15:0] out_v1_y;
-    output reg  [17:0] out_v1_z;
-    output reg  [7:0] out_v1_c0;
-    output reg  [7:0] out_v1_c1;
-    output reg  [7:0] out_v1_c2;
-    output reg  [15:0] out_v1_iw;
-    output reg  [15:0] out_v2_x;
-    output reg  [15:0] out_v2_y;
-    output reg  [17:0] out_v2_z;
-    output reg  [7:0] out_v2_c0;
-    output reg  [7:0] out_v2_c1;
-    output reg  [7:0] out_v2_c2;
-    output reg  [15:0] out_v2_iw;
-    output reg  [5:0] out_crosses;
+    input wire  inp$valid;
+    output reg  inp$ready;
+    input wire  [15:0] inp$v0_x;
+    input wire  [15:0] inp$v0_y;
+    input wire  [17:0] inp$v0_z;
+    input wire  [7:0] inp$v0_c0;
+    input wire  [7:0] inp$v0_c1;
+    input wire  [7:0] inp$v0_c2;
+    input wire  [15:0] inp$v0_iw;
+    input wire  [15:0] inp$v1_x;
+    input wire  [15:0] inp$v1_y;
+    input wire  [17:0] inp$v1_z;
+    input wire  [7:0] inp$v1_c0;
+    input wire  [7:0] inp$v1_c1;
+    input wire  [7:0] inp$v1_c2;
+    input wire  [15:0] inp$v1_iw;
+    input wire  [15:0] inp$v2_x;
+    input wire  [15:0] inp$v2_y;
+    input wire  [17:0] inp$v2_z;
+    input wire  [7:0] inp$v2_c0;
+    input wire  [7:0] inp$v2_c1;
+    input wire  [7:0] inp$v2_c2;
+    input wire  [15:0] inp$v2_iw;
+    output reg  out$valid;
+    input wire  out$ready;
+    output reg  [15:0] out$v0_x;
+    output reg  [15:0] out$v0_y;
+    output reg  [17:0] out$v0_z;
+    output reg  [7:0] out$v0_c0;
+    output reg  [7:0] out$v0_c1;
+    output reg  [7:0] out$v0_c2;
+    output reg  [15:0] out$v0_iw;
+    output reg  [15:0] out$v1_x;
+    output reg  [15:0] out$v1_y;
+    output reg  [17:0] out$v1_z;
+    output reg  [7:0] out$v1_c0;
+    output reg  [7:0] out$v1_c1;
+    output reg  [7:0] out$v1_c2;
+    output reg  [15:0] out$v1_iw;
+    output reg  [15:0] out$v2_x;
+    output reg  [15:0] out$v2_y;
+    output reg  [17:0] out$v2_z;
+    output reg  [7:0] out$v2_c0;
+    output reg  [7:0] out$v2_c1;
+    output reg  [7:0] out$v2_c2;
+    output reg  [15:0] out$v2_iw;
+    output reg  [5:0] out$crosses;
     output reg  verdict_valid;
     output reg  [1:0] verdict_code;
     output reg  [5:0] verdict_outside;
@@ -16302,27 +16232,27 @@ module raster_top$cull_sort(clock,width,height,cull_back,inp_valid,inp_ready,inp
         sc$7$d = sc$7$q;
         sc$8$clock = clock;
         sc$8$d = sc$8$q;
-        vx$0 = inp_v0_x;
-        vy$0 = inp_v0_y;
-        vz$0 = inp_v0_z;
-        vc$0 = inp_v0_c0;
-        vc$1 = inp_v0_c1;
-        vc$2 = inp_v0_c2;
-        viw$0 = inp_v0_iw;
-        vx$1 = inp_v1_x;
-        vy$1 = inp_v1_y;
-        vz$1 = inp_v1_z;
-        vc$3 = inp_v1_c0;
-        vc$4 = inp_v1_c1;
-        vc$5 = inp_v1_c2;
-        viw$1 = inp_v1_iw;
-        vx$2 = inp_v2_x;
-        vy$2 = inp_v2_y;
-        vz$2 = inp_v2_z;
-        vc$6 = inp_v2_c0;
-        vc$7 = inp_v2_c1;
-        vc$8 = inp_v2_c2;
-        viw$2 = inp_v2_iw;
+        vx$0 = inp$v0_x;
+        vy$0 = inp$v0_y;
+        vz$0 = inp$v0_z;
+        vc$0 = inp$v0_c0;
+        vc$1 = inp$v0_c1;
+        vc$2 = inp$v0_c2;
+        viw$0 = inp$v0_iw;
+        vx$1 = inp$v1_x;
+        vy$1 = inp$v1_y;
+        vz$1 = inp$v1_z;
+        vc$3 = inp$v1_c0;
+        vc$4 = inp$v1_c1;
+        vc$5 = inp$v1_c2;
+        viw$1 = inp$v1_iw;
+        vx$2 = inp$v2_x;
+        vy$2 = inp$v2_y;
+        vz$2 = inp$v2_z;
+        vc$6 = inp$v2_c0;
+        vc$7 = inp$v2_c1;
+        vc$8 = inp$v2_c2;
+        viw$2 = inp$v2_iw;
         right = ((width) & 16'hffff) << frac;
         bottom = ((height) & 16'hffff) << frac;
         left$0 = vx$0[xy_msb];
@@ -16346,10 +16276,10 @@ module raster_top$cull_sort(clock,width,height,cull_back,inp_valid,inp_ready,inp
         near$2 = vz$2[z_msb];
         far$2 = ~near$2 & (vz$2 > z_max);
         oc$2 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$2) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$2) << (32'h1))) & ~(1 << (32'h2)) | ((top$2) << (32'h2))) & ~(1 << (32'h3)) | ((below$2) << (32'h3))) & ~(1 << (32'h4)) | ((near$2) << (32'h4))) & ~(1 << (32'h5)) | ((far$2) << (32'h5)));
-        e1x = (((inp_v1_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v1_x[xy_msb]) << (delta_msb))) - (((inp_v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_x[xy_msb]) << (delta_msb)));
-        e1y = (((inp_v1_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v1_y[xy_msb]) << (delta_msb))) - (((inp_v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_y[xy_msb]) << (delta_msb)));
-        e2x = (((inp_v2_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v2_x[xy_msb]) << (delta_msb))) - (((inp_v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_x[xy_msb]) << (delta_msb)));
-        e2y = (((inp_v2_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v2_y[xy_msb]) << (delta_msb))) - (((inp_v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp_v0_y[xy_msb]) << (delta_msb)));
+        e1x = (((inp$v1_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v1_x[xy_msb]) << (delta_msb))) - (((inp$v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v0_x[xy_msb]) << (delta_msb)));
+        e1y = (((inp$v1_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v1_y[xy_msb]) << (delta_msb))) - (((inp$v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v0_y[xy_msb]) << (delta_msb)));
+        e2x = (((inp$v2_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v2_x[xy_msb]) << (delta_msb))) - (((inp$v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v0_x[xy_msb]) << (delta_msb)));
+        e2y = (((inp$v2_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v2_y[xy_msb]) << (delta_msb))) - (((inp$v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v0_y[xy_msb]) << (delta_msb)));
         area_mul$0$a = e1x;
         area_mul$0$b = e2y;
         area_mul$1$a = e2x;
@@ -16377,9 +16307,9 @@ module raster_top$cull_sort(clock,width,height,cull_back,inp_valid,inp_ready,inp
         rank$0 = ((32'h0) & 2'h3) + gt01 + gt02;
         rank$1 = ((32'h0) & 2'h3) + le01 + gt12;
         rank$2 = ((32'h0) & 2'h3) + le02 + le12;
-        leave = full$q & ((code_r$q != passed) | out_ready);
-        inp_ready = ~full$q | leave;
-        take = inp_valid & inp_ready;
+        leave = full$q & ((code_r$q != passed) | out$ready);
+        inp$ready = ~full$q | leave;
+        take = inp$valid & inp$ready;
         if (leave) begin
             full$d = 1'b0;
         end
@@ -16470,32 +16400,32 @@ module raster_top$cull_sort(clock,width,height,cull_back,inp_valid,inp_ready,inp
                 sc$8$d = vc$8;
             end
         end
-        out_valid = full$q & (code_r$q == passed);
+        out$valid = full$q & (code_r$q == passed);
         verdict_valid = leave;
         verdict_code = code_r$q;
         verdict_outside = outside_r$q;
-        out_crosses = crosses$q;
-        out_v0_x = sx$0$q;
-        out_v0_y = sy$0$q;
-        out_v0_z = sz$0$q;
-        out_v0_c0 = sc$0$q;
-        out_v0_c1 = sc$1$q;
-        out_v0_c2 = sc$2$q;
-        out_v0_iw = siw$0$q;
-        out_v1_x = sx$1$q;
-        out_v1_y = sy$1$q;
-        out_v1_z = sz$1$q;
-        out_v1_c0 = sc$3$q;
-        out_v1_c1 = sc$4$q;
-        out_v1_c2 = sc$5$q;
-        out_v1_iw = siw$1$q;
-        out_v2_x = sx$2$q;
-        out_v2_y = sy$2$q;
-        out_v2_z = sz$2$q;
-        out_v2_c0 = sc$6$q;
-        out_v2_c1 = sc$7$q;
-        out_v2_c2 = sc$8$q;
-        out_v2_iw = siw$2$q;
+        out$crosses = crosses$q;
+        out$v0_x = sx$0$q;
+        out$v0_y = sy$0$q;
+        out$v0_z = sz$0$q;
+        out$v0_c0 = sc$0$q;
+        out$v0_c1 = sc$1$q;
+        out$v0_c2 = sc$2$q;
+        out$v0_iw = siw$0$q;
+        out$v1_x = sx$1$q;
+        out$v1_y = sy$1$q;
+        out$v1_z = sz$1$q;
+        out$v1_c0 = sc$3$q;
+        out$v1_c1 = sc$4$q;
+        out$v1_c2 = sc$5$q;
+        out$v1_iw = siw$1$q;
+        out$v2_x = sx$2$q;
+        out$v2_y = sy$2$q;
+        out$v2_z = sz$2$q;
+        out$v2_c0 = sc$6$q;
+        out$v2_c1 = sc$7$q;
+        out$v2_c2 = sc$8$q;
+        out$v2_iw = siw$2$q;
     end
     
 endmodule // raster_top$cull_sort

@@ -1,30 +1,33 @@
 
 
-module triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v0_c0,inp_v0_c1,inp_v0_c2,inp_v1_x,inp_v1_y,inp_v1_z,inp_v1_c0,inp_v1_c1,inp_v1_c2,inp_v2_x,inp_v2_y,inp_v2_z,inp_v2_c0,inp_v2_c1,inp_v2_c2,inp_crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
+module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
     
     // Module arguments
     input wire  clock;
-    input wire  inp_valid;
-    output reg  inp_ready;
-    input wire  [15:0] inp_v0_x;
-    input wire  [15:0] inp_v0_y;
-    input wire  [17:0] inp_v0_z;
-    input wire  [7:0] inp_v0_c0;
-    input wire  [7:0] inp_v0_c1;
-    input wire  [7:0] inp_v0_c2;
-    input wire  [15:0] inp_v1_x;
-    input wire  [15:0] inp_v1_y;
-    input wire  [17:0] inp_v1_z;
-    input wire  [7:0] inp_v1_c0;
-    input wire  [7:0] inp_v1_c1;
-    input wire  [7:0] inp_v1_c2;
-    input wire  [15:0] inp_v2_x;
-    input wire  [15:0] inp_v2_y;
-    input wire  [17:0] inp_v2_z;
-    input wire  [7:0] inp_v2_c0;
-    input wire  [7:0] inp_v2_c1;
-    input wire  [7:0] inp_v2_c2;
-    input wire  [5:0] inp_crosses;
+    input wire  inp$valid;
+    output reg  inp$ready;
+    input wire  [15:0] inp$v0_x;
+    input wire  [15:0] inp$v0_y;
+    input wire  [17:0] inp$v0_z;
+    input wire  [7:0] inp$v0_c0;
+    input wire  [7:0] inp$v0_c1;
+    input wire  [7:0] inp$v0_c2;
+    input wire  [15:0] inp$v0_iw;
+    input wire  [15:0] inp$v1_x;
+    input wire  [15:0] inp$v1_y;
+    input wire  [17:0] inp$v1_z;
+    input wire  [7:0] inp$v1_c0;
+    input wire  [7:0] inp$v1_c1;
+    input wire  [7:0] inp$v1_c2;
+    input wire  [15:0] inp$v1_iw;
+    input wire  [15:0] inp$v2_x;
+    input wire  [15:0] inp$v2_y;
+    input wire  [17:0] inp$v2_z;
+    input wire  [7:0] inp$v2_c0;
+    input wire  [7:0] inp$v2_c1;
+    input wire  [7:0] inp$v2_c2;
+    input wire  [15:0] inp$v2_iw;
+    input wire  [5:0] inp$crosses;
     output reg  out$valid;
     input wire  out$ready;
     output reg  out$walk;
@@ -1466,8 +1469,8 @@ module triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v
         inc0$11$d = inc0$11$q;
         inc1$11$clock = clock;
         inc1$11$d = inc1$11$q;
-        inp_ready = (t$q == 32'h0) | ((t$q == last) & out$ready);
-        take = inp_valid & inp_ready;
+        inp$ready = (t$q == 32'h0) | ((t$q == last) & out$ready);
+        take = inp$valid & inp$ready;
         out$valid = t$q == last;
         if ((t$q != 32'h0) & (t$q != last)) begin
             t$d = t$q + 32'h1;
@@ -1477,25 +1480,25 @@ module triangle_setup(clock,inp_valid,inp_ready,inp_v0_x,inp_v0_y,inp_v0_z,inp_v
         end
         if (take) begin
             t$d = 32'h1;
-            vx$0$d = inp_v0_x;
-            vy$0$d = inp_v0_y;
-            vz$0$d = inp_v0_z;
-            vc$0$d = inp_v0_c0;
-            vc$1$d = inp_v0_c1;
-            vc$2$d = inp_v0_c2;
-            vx$1$d = inp_v1_x;
-            vy$1$d = inp_v1_y;
-            vz$1$d = inp_v1_z;
-            vc$3$d = inp_v1_c0;
-            vc$4$d = inp_v1_c1;
-            vc$5$d = inp_v1_c2;
-            vx$2$d = inp_v2_x;
-            vy$2$d = inp_v2_y;
-            vz$2$d = inp_v2_z;
-            vc$6$d = inp_v2_c0;
-            vc$7$d = inp_v2_c1;
-            vc$8$d = inp_v2_c2;
-            crosses$d = inp_crosses;
+            vx$0$d = inp$v0_x;
+            vy$0$d = inp$v0_y;
+            vz$0$d = inp$v0_z;
+            vc$0$d = inp$v0_c0;
+            vc$1$d = inp$v0_c1;
+            vc$2$d = inp$v0_c2;
+            vx$1$d = inp$v1_x;
+            vy$1$d = inp$v1_y;
+            vz$1$d = inp$v1_z;
+            vc$3$d = inp$v1_c0;
+            vc$4$d = inp$v1_c1;
+            vc$5$d = inp$v1_c2;
+            vx$2$d = inp$v2_x;
+            vy$2$d = inp$v2_y;
+            vz$2$d = inp$v2_z;
+            vc$6$d = inp$v2_c0;
+            vc$7$d = inp$v2_c1;
+            vc$8$d = inp$v2_c2;
+            crosses$d = inp$crosses;
         end
         act$0 = t$q == cyc$0;
         act$1 = t$q == cyc$1;

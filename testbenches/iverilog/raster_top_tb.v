@@ -54,10 +54,10 @@ module raster_top_tb;
 
     raster_top dut(
         .clock(clock), .width(width), .height(height), .cull_back(cull_back),
-        .inp_valid(inp_valid), .inp_ready(inp_ready), .inp_last(inp_last),
-        .inp_v0_x(v0_x), .inp_v0_y(v0_y), .inp_v0_z(v0_z), .inp_v0_c0(v0_r), .inp_v0_c1(v0_g), .inp_v0_c2(v0_b), .inp_v0_iw(v0_iw),
-        .inp_v1_x(v1_x), .inp_v1_y(v1_y), .inp_v1_z(v1_z), .inp_v1_c0(v1_r), .inp_v1_c1(v1_g), .inp_v1_c2(v1_b), .inp_v1_iw(v1_iw),
-        .inp_v2_x(v2_x), .inp_v2_y(v2_y), .inp_v2_z(v2_z), .inp_v2_c0(v2_r), .inp_v2_c1(v2_g), .inp_v2_c2(v2_b), .inp_v2_iw(v2_iw),
+        .inp$valid(inp_valid), .inp$ready(inp_ready), .inp_last(inp_last),
+        .inp$v0_x(v0_x), .inp$v0_y(v0_y), .inp$v0_z(v0_z), .inp$v0_c0(v0_r), .inp$v0_c1(v0_g), .inp$v0_c2(v0_b), .inp$v0_iw(v0_iw),
+        .inp$v1_x(v1_x), .inp$v1_y(v1_y), .inp$v1_z(v1_z), .inp$v1_c0(v1_r), .inp$v1_c1(v1_g), .inp$v1_c2(v1_b), .inp$v1_iw(v1_iw),
+        .inp$v2_x(v2_x), .inp$v2_y(v2_y), .inp$v2_z(v2_z), .inp$v2_c0(v2_r), .inp$v2_c1(v2_g), .inp$v2_c2(v2_b), .inp$v2_iw(v2_iw),
         .verdict_valid(verdict_valid), .verdict_code(verdict_code), .verdict_outside(verdict_outside),
         .mem_ready(mem_ready), .rd_en(rd_en), .rd_addr(rd_addr), .rd_z(rd_z),
         .wr_en(wr_en), .wr_addr(wr_addr), .wr_z(wr_z), .wr_rgb(wr_rgb), .done(done)

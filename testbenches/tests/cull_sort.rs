@@ -5,23 +5,13 @@
 use model::cull_sort::{cull_sort, Cull, Reject, Sorted, II, LATENCY};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use rtl::cull_sort::{verdict, CullSort, COLOR, INV_W, OUTCODE, XY, Z};
+use rtl::cull_sort::{verdict, CullSort, OUTCODE};
 use rtl::widths::{DIM, FORMATS};
 use std::collections::VecDeque;
 use testbenches::flow::Flow;
 use testbenches::stimulus::{extremes, random_case, scene, Case};
-use testbenches::streams::{as_pins, raw, PinValues};
+use testbenches::streams::{as_pins, raw, sorted, triangle, PinValues};
 use testbenches::{count, seed, verilated, Dual, Mismatch, Value};
-
-fn vertex_pins(out: &mut PinValues, prefix: &str, v: &model::input::Vtx) {
-    out.push((format!("{prefix}_x"), raw(XY, v.x)));
-    out.push((format!("{prefix}_y"), raw(XY, v.y)));
-    out.push((format!("{prefix}_z"), raw(Z, v.z)));
-    for (i, c) in v.c.iter().enumerate() {
-        out.push((format!("{prefix}_c{i}"), raw(COLOR, *c)));
-    }
-    out.push((format!("{prefix}_iw"), raw(INV_W, v.iw)));
-}
 
 /// A case on the input ports.
 fn case_pins(c: &Case) -> PinValues {
@@ -30,19 +20,13 @@ fn case_pins(c: &Case) -> PinValues {
         ("height".to_owned(), raw(DIM, c.clip.height as i128)),
         ("cull_back".to_owned(), Value::new(1, (c.cull == Cull::Back) as u128)),
     ];
-    for (i, v) in c.v.iter().enumerate() {
-        vertex_pins(&mut out, &format!("inp_v{i}"), v);
-    }
+    out.extend(triangle("inp", &c.v));
     out
 }
 
 /// A passing triangle on the output ports.
 fn sorted_pins(s: &Sorted) -> PinValues {
-    let mut out = vec![("out_crosses".to_owned(), raw(OUTCODE, s.crosses as i128))];
-    for (i, v) in s.v.iter().enumerate() {
-        vertex_pins(&mut out, &format!("out_v{i}"), v);
-    }
-    out
+    sorted("out", s)
 }
 
 /// The verdict ports' values for a model result.
@@ -76,13 +60,13 @@ fn run(dual: &mut Dual<CullSort>, cases: &[Case], flow: Flow, rng: &mut ChaCha8R
             presenting = flow.offer(presenting, rng);
         }
         let mut pins = case_pins(&cases[next.min(cases.len() - 1)]);
-        pins.push(("inp_valid".into(), Value::new(1, presenting as u128)));
-        pins.push(("out_ready".into(), Value::new(1, ready as u128)));
+        pins.push(("inp$valid".into(), Value::new(1, presenting as u128)));
+        pins.push(("out$ready".into(), Value::new(1, ready as u128)));
         let out = dual.cycle(&as_pins(&pins))?;
         let cycle = dual.cycles() - 1;
         let bit = |pin: &str| out.get(pin).bit(0);
         assert_eq!(
-            bit("out_valid") && ready,
+            bit("out$valid") && ready,
             bit("verdict_valid") && out.get("verdict_code") == &Value::new(2, verdict::PASSED as u128),
             "cycle {cycle}: a passing triangle leaves exactly when it is taken downstream"
         );
@@ -99,7 +83,7 @@ fn run(dual: &mut Dual<CullSort>, cases: &[Case], flow: Flow, rng: &mut ChaCha8R
             timing[i].left = cycle;
             done += 1;
         }
-        if presenting && bit("inp_ready") {
+        if presenting && bit("inp$ready") {
             timing[next].taken = cycle;
             in_flight.push_back(next);
             next += 1;
@@ -183,12 +167,12 @@ fn cull_sort_paper_003_fig4_sends_nine_vertices() {
     let mut sent = Vec::new();
     for c in &cases {
         let mut pins = case_pins(c);
-        pins.push(("inp_valid".into(), Value::new(1, 1)));
-        pins.push(("out_ready".into(), Value::new(1, 1)));
+        pins.push(("inp$valid".into(), Value::new(1, 1)));
+        pins.push(("out$ready".into(), Value::new(1, 1)));
         dual.cycle(&as_pins(&pins)).unwrap_or_else(|m| panic!("{m}"));
-        let out = dual.cycle(&[("inp_valid", Value::new(1, 0))]).unwrap_or_else(|m| panic!("{m}"));
-        if out.get("out_valid").bit(0) {
-            sent.extend((0..3).map(|i| out.get(&format!("out_v{i}_x")).clone()));
+        let out = dual.cycle(&[("inp$valid", Value::new(1, 0))]).unwrap_or_else(|m| panic!("{m}"));
+        if out.get("out$valid").bit(0) {
+            sent.extend((0..3).map(|i| out.get(&format!("out$v{i}_x")).clone()));
         }
     }
     assert_eq!(sent.len(), 9, "three crossing triangles, three vertices each, no new vertices");

@@ -430,14 +430,14 @@ fn units_frame<U: Block + Pins>(
         stalled |= !ready;
         let mut pins = vec![("width".to_owned(), dim(list.width)), ("height".to_owned(), dim(list.height))];
         let offer = sent.get(taken);
-        pins.push(("inp_valid".into(), Value::new(1, offer.is_some() as u128)));
+        pins.push(("inp$valid".into(), Value::new(1, offer.is_some() as u128)));
         pins.push(("inp_last".into(), Value::new(1, (taken + 1 == sent.len()) as u128)));
         let (tri, crosses) = offer.copied().unwrap_or(sent[0]);
-        pins.extend(frame::triangle_pins(&build, &tri, units.cull_sort));
+        pins.extend(frame::triangle_pins(&build, &tri));
         if units.cull_sort {
             pins.push(("cull_back".into(), Value::new(1, (cull == Cull::Back) as u128)));
         } else {
-            pins.push(("inp_crosses".into(), Value::new(rtl::cull_sort::OUTCODE, crosses as u128)));
+            pins.push(("inp$crosses".into(), Value::new(rtl::cull_sort::OUTCODE, crosses as u128)));
         }
         if units.pixel_out {
             pins.push(("mem_ready".into(), Value::new(1, ready as u128)));
@@ -463,7 +463,7 @@ fn units_frame<U: Block + Pins>(
             }
             return;
         }
-        taken += (offer.is_some() && high("inp_ready")) as usize;
+        taken += (offer.is_some() && high("inp$ready")) as usize;
         if units.pixel_out {
             memory.edge(ready, &Request::of(&o));
         } else if ready && high("out$valid") {

@@ -6,11 +6,9 @@
 use model::ctx::Ctx;
 use model::cull_sort::{cull_sort, Cull, Sorted};
 use model::cycles::{setup_latency, Timing, SETUP_MULTIPLIERS_MAX};
-use model::input::Vtx;
 use model::triangle_setup::{triangle_setup, TriangleSetupOut};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use rtl::cull_sort::{COLOR, OUTCODE, XY, Z};
 use rtl::divider::DIV_QM;
 use rtl::triangle_setup::{Schedule, TriangleSetup, MULTIPLIERS_MAX};
 use rtl::widths::FORMATS;
@@ -18,7 +16,7 @@ use scene::Vertex;
 use std::collections::VecDeque;
 use testbenches::flow::{hdl_cycle, outputs, Cycle, Flow};
 use testbenches::stimulus::{extremes, random_case, scene, Case};
-use testbenches::streams::{as_pins, raw, triangle_setup_out, PinValues};
+use testbenches::streams::{self, as_pins, triangle_setup_out, PinValues};
 use testbenches::{count, seed, verilated, Dual, HdlSim, Value};
 
 /// 001's configuration, the default design's: 7 multipliers, a 5-stage divider.
@@ -30,22 +28,9 @@ fn sorted(cases: &[Case]) -> Vec<Sorted> {
     cases.iter().filter_map(|c| cull_sort(&c.v, c.clip, c.cull, &FORMATS).ok()).collect()
 }
 
-fn vertex_pins(out: &mut PinValues, prefix: &str, v: &Vtx) {
-    out.push((format!("{prefix}_x"), raw(XY, v.x)));
-    out.push((format!("{prefix}_y"), raw(XY, v.y)));
-    out.push((format!("{prefix}_z"), raw(Z, v.z)));
-    for (i, c) in v.c.iter().enumerate() {
-        out.push((format!("{prefix}_c{i}"), raw(COLOR, *c)));
-    }
-}
-
-/// A sorted triangle on the input ports (`cull_sort`'s `out_*` but `iw`).
+/// A sorted triangle on the input ports.
 fn sorted_pins(s: &Sorted) -> PinValues {
-    let mut out = vec![("inp_crosses".to_owned(), raw(OUTCODE, s.crosses as i128))];
-    for (i, v) in s.v.iter().enumerate() {
-        vertex_pins(&mut out, &format!("inp_v{i}"), v);
-    }
-    out
+    streams::sorted("inp", s)
 }
 
 /// The model's result.
@@ -75,7 +60,7 @@ fn run(cycle: &mut Cycle, tris: &[Sorted], flow: Flow, rng: &mut ChaCha8Rng) -> 
             presenting = flow.offer(presenting, rng);
         }
         let mut pins = sorted_pins(&tris[next.min(tris.len() - 1)]);
-        pins.push(("inp_valid".into(), Value::new(1, presenting as u128)));
+        pins.push(("inp$valid".into(), Value::new(1, presenting as u128)));
         pins.push(("out$ready".into(), Value::new(1, ready as u128)));
         let out = cycle(&as_pins(&pins))?;
         let valid = out.get("out$valid").bit(0);
@@ -99,7 +84,7 @@ fn run(cycle: &mut Cycle, tris: &[Sorted], flow: Flow, rng: &mut ChaCha8Rng) -> 
             in_flight.pop_front();
             done += 1;
         }
-        if presenting && out.get("inp_ready").bit(0) {
+        if presenting && out.get("inp$ready").bit(0) {
             timing[next].taken = now;
             in_flight.push_back(next);
             next += 1;

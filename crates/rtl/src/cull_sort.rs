@@ -1,8 +1,8 @@
 //! `cull_sort`: the cull & sort unit of paper 003 (Lee 2008, §II.1.다.(1), Fig. 4, Table 1:
 //! "clipping 1 cycle").
 //!
-//! One triangle per beat: the three vertices in submission order on `inp_*` (`inp_v<i>_x`
-//! ... `inp_v<i>_iw`), screen size on `width`, `height`, face culling on `cull_back`. In
+//! One triangle per beat: the three vertices in submission order on the link `inp`
+//! (`links::TriangleSink`: `inp$v<i>_x` ... `inp$v<i>_iw`), screen size on `width`, `height`, face culling on `cull_back`. In
 //! the one cycle it has, the unit computes
 //! * a Cohen-Sutherland outcode per vertex (bits as `model::cull_sort::outcode`: x < 0,
 //!   x > width, y < 0, y > height, z < 0, z > the largest depth value);
@@ -13,21 +13,22 @@
 //! ```text
 //!   inp_v0..2 --+-- outcodes --- AND: outside? ----------------+
 //!               |            `-- OR: crosses -------------------+--> register --> out_v0..2 (sorted),
-//!               +-- 2 x Mul<17,17>: area2 -- zero? back face? --+                 out_crosses, out_valid
+//!               +-- 2 x Mul<17,17>: area2 -- zero? back face? --+                 out$crosses, out$valid
 //!               `-- y0<=y1, y1<=y2, y0<=y2 -> ranks -> mux -----+                 verdict_*
 //! ```
 //!
-//! A triangle taken in cycle t (`inp_valid & inp_ready`) is in the output register in
+//! A triangle taken in cycle t (`inp$valid & inp$ready`) is in the output register in
 //! cycle t + 1 (latency `model::cull_sort::LATENCY` = 1, II 1). A passing triangle stays
-//! there until `out_ready`; a rejected one leaves at once (it goes no further, so it never
+//! there until `out$ready`; a rejected one leaves at once (it goes no further, so it never
 //! waits for setup). `verdict_valid` is high in the cycle a triangle leaves, with its
 //! verdict. No new vertices are made: a triangle that crosses the screen goes on whole
-//! with `out_crosses` (the OR of the outcodes) and is clipped by the edge walk and span.
+//! with `out$crosses` (the OR of the outcodes) and is clipped by the edge walk and span.
 //!
 //! Model: `model::cull_sort::cull_sort`. Emitted: `hdl-out/cull_sort.v`.
 
 use crate::emit::{ports, verilog, Emitted};
 use crate::mul::Mul;
+use super::links::{SortedSource, TriangleSink};
 use super::widths::{DIM, FORMATS};
 use crate::Params;
 use rust_hdl::prelude::*;
@@ -77,58 +78,10 @@ pub struct CullSort {
     pub height: Signal<In, Bits<DIM>>,
     /// Drop back faces (clockwise on screen, y down).
     pub cull_back: Signal<In, Bit>,
-    pub inp_valid: Signal<In, Bit>,
-    /// The output register is free: empty, holding a rejected triangle, or being taken.
-    pub inp_ready: Signal<Out, Bit>,
-    /// Vertex i of the triangle in submission order: `xy`, `z`, `color`, `inv_w` raw values.
-    pub inp_v0_x: Signal<In, Bits<XY>>,
-    pub inp_v0_y: Signal<In, Bits<XY>>,
-    pub inp_v0_z: Signal<In, Bits<Z>>,
-    pub inp_v0_c0: Signal<In, Bits<COLOR>>,
-    pub inp_v0_c1: Signal<In, Bits<COLOR>>,
-    pub inp_v0_c2: Signal<In, Bits<COLOR>>,
-    pub inp_v0_iw: Signal<In, Bits<INV_W>>,
-    pub inp_v1_x: Signal<In, Bits<XY>>,
-    pub inp_v1_y: Signal<In, Bits<XY>>,
-    pub inp_v1_z: Signal<In, Bits<Z>>,
-    pub inp_v1_c0: Signal<In, Bits<COLOR>>,
-    pub inp_v1_c1: Signal<In, Bits<COLOR>>,
-    pub inp_v1_c2: Signal<In, Bits<COLOR>>,
-    pub inp_v1_iw: Signal<In, Bits<INV_W>>,
-    pub inp_v2_x: Signal<In, Bits<XY>>,
-    pub inp_v2_y: Signal<In, Bits<XY>>,
-    pub inp_v2_z: Signal<In, Bits<Z>>,
-    pub inp_v2_c0: Signal<In, Bits<COLOR>>,
-    pub inp_v2_c1: Signal<In, Bits<COLOR>>,
-    pub inp_v2_c2: Signal<In, Bits<COLOR>>,
-    pub inp_v2_iw: Signal<In, Bits<INV_W>>,
-    /// A passing triangle is in the output register.
-    pub out_valid: Signal<Out, Bit>,
-    pub out_ready: Signal<In, Bit>,
-    /// vMin, vMid, vMax (`model::cull_sort::Sorted::v`): sorted by y, ties in input order.
-    pub out_v0_x: Signal<Out, Bits<XY>>,
-    pub out_v0_y: Signal<Out, Bits<XY>>,
-    pub out_v0_z: Signal<Out, Bits<Z>>,
-    pub out_v0_c0: Signal<Out, Bits<COLOR>>,
-    pub out_v0_c1: Signal<Out, Bits<COLOR>>,
-    pub out_v0_c2: Signal<Out, Bits<COLOR>>,
-    pub out_v0_iw: Signal<Out, Bits<INV_W>>,
-    pub out_v1_x: Signal<Out, Bits<XY>>,
-    pub out_v1_y: Signal<Out, Bits<XY>>,
-    pub out_v1_z: Signal<Out, Bits<Z>>,
-    pub out_v1_c0: Signal<Out, Bits<COLOR>>,
-    pub out_v1_c1: Signal<Out, Bits<COLOR>>,
-    pub out_v1_c2: Signal<Out, Bits<COLOR>>,
-    pub out_v1_iw: Signal<Out, Bits<INV_W>>,
-    pub out_v2_x: Signal<Out, Bits<XY>>,
-    pub out_v2_y: Signal<Out, Bits<XY>>,
-    pub out_v2_z: Signal<Out, Bits<Z>>,
-    pub out_v2_c0: Signal<Out, Bits<COLOR>>,
-    pub out_v2_c1: Signal<Out, Bits<COLOR>>,
-    pub out_v2_c2: Signal<Out, Bits<COLOR>>,
-    pub out_v2_iw: Signal<Out, Bits<INV_W>>,
-    /// OR of the three outcodes: the planes the triangle crosses (`Sorted::crosses`).
-    pub out_crosses: Signal<Out, Bits<OUTCODE>>,
+    /// The triangle in; `inp.ready`: the output register is free (empty, holding a rejected triangle, or being taken).
+    pub inp: TriangleSink,
+    /// The sorted triangle out, with the planes it crosses.
+    pub out: SortedSource,
     /// High in the cycle a triangle leaves the unit (taken, or rejected).
     pub verdict_valid: Signal<Out, Bit>,
     /// [`verdict`]: 0 passed, 1 outside, 2 back face, 3 zero area.
@@ -209,53 +162,8 @@ impl Default for CullSort {
             width: Default::default(),
             height: Default::default(),
             cull_back: Default::default(),
-            inp_valid: Default::default(),
-            inp_ready: Default::default(),
-            inp_v0_x: Default::default(),
-            inp_v0_y: Default::default(),
-            inp_v0_z: Default::default(),
-            inp_v0_c0: Default::default(),
-            inp_v0_c1: Default::default(),
-            inp_v0_c2: Default::default(),
-            inp_v0_iw: Default::default(),
-            inp_v1_x: Default::default(),
-            inp_v1_y: Default::default(),
-            inp_v1_z: Default::default(),
-            inp_v1_c0: Default::default(),
-            inp_v1_c1: Default::default(),
-            inp_v1_c2: Default::default(),
-            inp_v1_iw: Default::default(),
-            inp_v2_x: Default::default(),
-            inp_v2_y: Default::default(),
-            inp_v2_z: Default::default(),
-            inp_v2_c0: Default::default(),
-            inp_v2_c1: Default::default(),
-            inp_v2_c2: Default::default(),
-            inp_v2_iw: Default::default(),
-            out_valid: Default::default(),
-            out_ready: Default::default(),
-            out_v0_x: Default::default(),
-            out_v0_y: Default::default(),
-            out_v0_z: Default::default(),
-            out_v0_c0: Default::default(),
-            out_v0_c1: Default::default(),
-            out_v0_c2: Default::default(),
-            out_v0_iw: Default::default(),
-            out_v1_x: Default::default(),
-            out_v1_y: Default::default(),
-            out_v1_z: Default::default(),
-            out_v1_c0: Default::default(),
-            out_v1_c1: Default::default(),
-            out_v1_c2: Default::default(),
-            out_v1_iw: Default::default(),
-            out_v2_x: Default::default(),
-            out_v2_y: Default::default(),
-            out_v2_z: Default::default(),
-            out_v2_c0: Default::default(),
-            out_v2_c1: Default::default(),
-            out_v2_c2: Default::default(),
-            out_v2_iw: Default::default(),
-            out_crosses: Default::default(),
+            inp: Default::default(),
+            out: Default::default(),
             verdict_valid: Default::default(),
             verdict_code: Default::default(),
             verdict_outside: Default::default(),
@@ -332,27 +240,27 @@ impl Logic for CullSort {
             self.sc[i].clock.next = self.clock.val();
             self.sc[i].d.next = self.sc[i].q.val();
         }
-        self.vx[0].next = self.inp_v0_x.val();
-        self.vy[0].next = self.inp_v0_y.val();
-        self.vz[0].next = self.inp_v0_z.val();
-        self.vc[0].next = self.inp_v0_c0.val();
-        self.vc[1].next = self.inp_v0_c1.val();
-        self.vc[2].next = self.inp_v0_c2.val();
-        self.viw[0].next = self.inp_v0_iw.val();
-        self.vx[1].next = self.inp_v1_x.val();
-        self.vy[1].next = self.inp_v1_y.val();
-        self.vz[1].next = self.inp_v1_z.val();
-        self.vc[3].next = self.inp_v1_c0.val();
-        self.vc[4].next = self.inp_v1_c1.val();
-        self.vc[5].next = self.inp_v1_c2.val();
-        self.viw[1].next = self.inp_v1_iw.val();
-        self.vx[2].next = self.inp_v2_x.val();
-        self.vy[2].next = self.inp_v2_y.val();
-        self.vz[2].next = self.inp_v2_z.val();
-        self.vc[6].next = self.inp_v2_c0.val();
-        self.vc[7].next = self.inp_v2_c1.val();
-        self.vc[8].next = self.inp_v2_c2.val();
-        self.viw[2].next = self.inp_v2_iw.val();
+        self.vx[0].next = self.inp.v0_x.val();
+        self.vy[0].next = self.inp.v0_y.val();
+        self.vz[0].next = self.inp.v0_z.val();
+        self.vc[0].next = self.inp.v0_c0.val();
+        self.vc[1].next = self.inp.v0_c1.val();
+        self.vc[2].next = self.inp.v0_c2.val();
+        self.viw[0].next = self.inp.v0_iw.val();
+        self.vx[1].next = self.inp.v1_x.val();
+        self.vy[1].next = self.inp.v1_y.val();
+        self.vz[1].next = self.inp.v1_z.val();
+        self.vc[3].next = self.inp.v1_c0.val();
+        self.vc[4].next = self.inp.v1_c1.val();
+        self.vc[5].next = self.inp.v1_c2.val();
+        self.viw[1].next = self.inp.v1_iw.val();
+        self.vx[2].next = self.inp.v2_x.val();
+        self.vy[2].next = self.inp.v2_y.val();
+        self.vz[2].next = self.inp.v2_z.val();
+        self.vc[6].next = self.inp.v2_c0.val();
+        self.vc[7].next = self.inp.v2_c1.val();
+        self.vc[8].next = self.inp.v2_c2.val();
+        self.viw[2].next = self.inp.v2_iw.val();
 
         // Outcodes. x > width * 2^s only for x >= 0, where the unsigned order is the
         // signed one; likewise y and z.
@@ -377,22 +285,22 @@ impl Logic for CullSort {
 
         // Twice the signed area in submission order (`model::cull_sort::area2`), from edge
         // vectors one bit wider than the coordinates (their sign bit copied up).
-        self.e1x.next = bit_cast::<DELTA, XY>(self.inp_v1_x.val())
-            .replace_bit(self.delta_msb.val().index(), self.inp_v1_x.val().get_bit(self.xy_msb.val().index()))
-            - bit_cast::<DELTA, XY>(self.inp_v0_x.val())
-                .replace_bit(self.delta_msb.val().index(), self.inp_v0_x.val().get_bit(self.xy_msb.val().index()));
-        self.e1y.next = bit_cast::<DELTA, XY>(self.inp_v1_y.val())
-            .replace_bit(self.delta_msb.val().index(), self.inp_v1_y.val().get_bit(self.xy_msb.val().index()))
-            - bit_cast::<DELTA, XY>(self.inp_v0_y.val())
-                .replace_bit(self.delta_msb.val().index(), self.inp_v0_y.val().get_bit(self.xy_msb.val().index()));
-        self.e2x.next = bit_cast::<DELTA, XY>(self.inp_v2_x.val())
-            .replace_bit(self.delta_msb.val().index(), self.inp_v2_x.val().get_bit(self.xy_msb.val().index()))
-            - bit_cast::<DELTA, XY>(self.inp_v0_x.val())
-                .replace_bit(self.delta_msb.val().index(), self.inp_v0_x.val().get_bit(self.xy_msb.val().index()));
-        self.e2y.next = bit_cast::<DELTA, XY>(self.inp_v2_y.val())
-            .replace_bit(self.delta_msb.val().index(), self.inp_v2_y.val().get_bit(self.xy_msb.val().index()))
-            - bit_cast::<DELTA, XY>(self.inp_v0_y.val())
-                .replace_bit(self.delta_msb.val().index(), self.inp_v0_y.val().get_bit(self.xy_msb.val().index()));
+        self.e1x.next = bit_cast::<DELTA, XY>(self.inp.v1_x.val())
+            .replace_bit(self.delta_msb.val().index(), self.inp.v1_x.val().get_bit(self.xy_msb.val().index()))
+            - bit_cast::<DELTA, XY>(self.inp.v0_x.val())
+                .replace_bit(self.delta_msb.val().index(), self.inp.v0_x.val().get_bit(self.xy_msb.val().index()));
+        self.e1y.next = bit_cast::<DELTA, XY>(self.inp.v1_y.val())
+            .replace_bit(self.delta_msb.val().index(), self.inp.v1_y.val().get_bit(self.xy_msb.val().index()))
+            - bit_cast::<DELTA, XY>(self.inp.v0_y.val())
+                .replace_bit(self.delta_msb.val().index(), self.inp.v0_y.val().get_bit(self.xy_msb.val().index()));
+        self.e2x.next = bit_cast::<DELTA, XY>(self.inp.v2_x.val())
+            .replace_bit(self.delta_msb.val().index(), self.inp.v2_x.val().get_bit(self.xy_msb.val().index()))
+            - bit_cast::<DELTA, XY>(self.inp.v0_x.val())
+                .replace_bit(self.delta_msb.val().index(), self.inp.v0_x.val().get_bit(self.xy_msb.val().index()));
+        self.e2y.next = bit_cast::<DELTA, XY>(self.inp.v2_y.val())
+            .replace_bit(self.delta_msb.val().index(), self.inp.v2_y.val().get_bit(self.xy_msb.val().index()))
+            - bit_cast::<DELTA, XY>(self.inp.v0_y.val())
+                .replace_bit(self.delta_msb.val().index(), self.inp.v0_y.val().get_bit(self.xy_msb.val().index()));
         self.area_mul[0].a.next = self.e1x.val();
         self.area_mul[0].b.next = self.e2y.val();
         self.area_mul[1].a.next = self.e2x.val();
@@ -427,9 +335,9 @@ impl Logic for CullSort {
         self.rank[2].next = bits::<2>(0) + self.le02.val() + self.le12.val();
 
         // The output register.
-        self.leave.next = self.full.q.val() & ((self.code_r.q.val() != self.passed.val()) | self.out_ready.val());
-        self.inp_ready.next = !self.full.q.val() | self.leave.val();
-        self.take.next = self.inp_valid.val() & self.inp_ready.val();
+        self.leave.next = self.full.q.val() & ((self.code_r.q.val() != self.passed.val()) | self.out.ready.val());
+        self.inp.ready.next = !self.full.q.val() | self.leave.val();
+        self.take.next = self.inp.valid.val() & self.inp.ready.val();
         if self.leave.val() {
             self.full.d.next = false;
         }
@@ -452,71 +360,46 @@ impl Logic for CullSort {
                 }
             }
         }
-        self.out_valid.next = self.full.q.val() & (self.code_r.q.val() == self.passed.val());
+        self.out.valid.next = self.full.q.val() & (self.code_r.q.val() == self.passed.val());
         self.verdict_valid.next = self.leave.val();
         self.verdict_code.next = self.code_r.q.val();
         self.verdict_outside.next = self.outside_r.q.val();
-        self.out_crosses.next = self.crosses.q.val();
-        self.out_v0_x.next = self.sx[0].q.val();
-        self.out_v0_y.next = self.sy[0].q.val();
-        self.out_v0_z.next = self.sz[0].q.val();
-        self.out_v0_c0.next = self.sc[0].q.val();
-        self.out_v0_c1.next = self.sc[1].q.val();
-        self.out_v0_c2.next = self.sc[2].q.val();
-        self.out_v0_iw.next = self.siw[0].q.val();
-        self.out_v1_x.next = self.sx[1].q.val();
-        self.out_v1_y.next = self.sy[1].q.val();
-        self.out_v1_z.next = self.sz[1].q.val();
-        self.out_v1_c0.next = self.sc[3].q.val();
-        self.out_v1_c1.next = self.sc[4].q.val();
-        self.out_v1_c2.next = self.sc[5].q.val();
-        self.out_v1_iw.next = self.siw[1].q.val();
-        self.out_v2_x.next = self.sx[2].q.val();
-        self.out_v2_y.next = self.sy[2].q.val();
-        self.out_v2_z.next = self.sz[2].q.val();
-        self.out_v2_c0.next = self.sc[6].q.val();
-        self.out_v2_c1.next = self.sc[7].q.val();
-        self.out_v2_c2.next = self.sc[8].q.val();
-        self.out_v2_iw.next = self.siw[2].q.val();
+        self.out.crosses.next = self.crosses.q.val();
+        self.out.v0_x.next = self.sx[0].q.val();
+        self.out.v0_y.next = self.sy[0].q.val();
+        self.out.v0_z.next = self.sz[0].q.val();
+        self.out.v0_c0.next = self.sc[0].q.val();
+        self.out.v0_c1.next = self.sc[1].q.val();
+        self.out.v0_c2.next = self.sc[2].q.val();
+        self.out.v0_iw.next = self.siw[0].q.val();
+        self.out.v1_x.next = self.sx[1].q.val();
+        self.out.v1_y.next = self.sy[1].q.val();
+        self.out.v1_z.next = self.sz[1].q.val();
+        self.out.v1_c0.next = self.sc[3].q.val();
+        self.out.v1_c1.next = self.sc[4].q.val();
+        self.out.v1_c2.next = self.sc[5].q.val();
+        self.out.v1_iw.next = self.siw[1].q.val();
+        self.out.v2_x.next = self.sx[2].q.val();
+        self.out.v2_y.next = self.sy[2].q.val();
+        self.out.v2_z.next = self.sz[2].q.val();
+        self.out.v2_c0.next = self.sc[6].q.val();
+        self.out.v2_c1.next = self.sc[7].q.val();
+        self.out.v2_c2.next = self.sc[8].q.val();
+        self.out.v2_iw.next = self.siw[2].q.val();
     }
 }
 
 crate::pins!(CullSort {
     clock: clock,
     inputs: [
-        width, height, cull_back, inp_valid, out_ready, inp_v0_x, inp_v0_y, inp_v0_z, inp_v0_c0, inp_v0_c1, inp_v0_c2,
-        inp_v0_iw, inp_v1_x, inp_v1_y, inp_v1_z, inp_v1_c0, inp_v1_c1, inp_v1_c2, inp_v1_iw, inp_v2_x, inp_v2_y,
-        inp_v2_z, inp_v2_c0, inp_v2_c1, inp_v2_c2, inp_v2_iw,
+        width, height, cull_back,
     ],
     outputs: [
-        inp_ready,
-        out_valid,
-        out_crosses,
         verdict_valid,
         verdict_code,
         verdict_outside,
-        out_v0_x,
-        out_v0_y,
-        out_v0_z,
-        out_v0_c0,
-        out_v0_c1,
-        out_v0_c2,
-        out_v0_iw,
-        out_v1_x,
-        out_v1_y,
-        out_v1_z,
-        out_v1_c0,
-        out_v1_c1,
-        out_v1_c2,
-        out_v1_iw,
-        out_v2_x,
-        out_v2_y,
-        out_v2_z,
-        out_v2_c0,
-        out_v2_c1,
-        out_v2_c2,
-        out_v2_iw,
     ],
+    links: [out, inp],
 });
 
 /// `UNITS` entry: the cull & sort unit (no parameters; the screen size is an input).

@@ -6,8 +6,8 @@
 //! exact edge steppers ([`Stepper`]): `maj` on the long edge and `cur` on the short edge
 //! being walked, while the other short edge waits in the `pend_*` registers until the walk
 //! reaches its first scanline. Each scanline with pixels on screen leaves as a span
-//! command (`model::edge_walk::SpanCmd`, flattened into `out_*`); an empty scanline, or one
-//! above the screen, still takes its cycle with `out_valid` low.
+//! command (`model::edge_walk::SpanCmd`, on the link `out`); an empty scanline, or one
+//! above the screen, still takes its cycle with `out$valid` low.
 //!
 //! ```text
 //!   walk Down (from vMin)            walk Up (from vMax: crosses row 0 only)
@@ -28,7 +28,7 @@
 //! Timing (`model::edge_walk::{LATENCY, II}` = 2, 1): a triangle is taken in cycle t
 //! (state IDLE); in cycle t + 1 (SETUP) the first short edge is chosen and the walk is
 //! skipped when the Y clip leaves no scanline; scanline k is presented in cycle t + 2 + k
-//! (WALK) and held while `out_ready` is low; the next triangle is taken the cycle after the
+//! (WALK) and held while `out$ready` is low; the next triangle is taken the cycle after the
 //! last scanline. Model: `model::edge_walk::edge_walk`. Emitted: `hdl-out/edge_walk.v`.
 
 use crate::emit::{emit, Emitted};
@@ -396,7 +396,7 @@ impl Logic for EdgeWalk {
         }
         self.valid.next = self.busy.q.val() & self.walking.q.val() & !self.j_sign.neg.val() & self.sides.lt.val();
         self.out.valid.next = self.valid.val();
-        // WALK: move on unless the command presented waits for `out_ready`.
+        // WALK: move on unless the command presented waits for `out.ready`.
         self.advance.next = self.busy.q.val() & self.walking.q.val() & (!self.valid.val() | self.out.ready.val());
 
         // The steppers: both load at the triangle's hand-over; `cur` loads the second

@@ -226,7 +226,7 @@ pub const UNITS: &[Unit] = &[
             Param {
                 name: "CULL_SORT",
                 default: 1,
-                doc: "1: cull_sort present; 0: absent, sorted triangles with their clip crossings in (inp_crosses)",
+                doc: "1: cull_sort present; 0: absent, sorted triangles with their clip crossings in (the link inp, inp$crosses)",
             },
             Param {
                 name: "PIXEL_OUT",

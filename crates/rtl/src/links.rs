@@ -1,6 +1,7 @@
 //! The links between the scanline units of one build, each declared once (`crate::link!`),
 //! at the build's widths (`super::widths`).
 
+use super::cull_sort::{COLOR, INV_W, OUTCODE, XY, Z};
 use super::widths::{CHANNEL, C_ACC, DC, DEPTH, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
 use rust_hdl::prelude::*;
 
@@ -121,5 +122,70 @@ crate::link! {
         ddx_c0: Bits<DC>,
         ddx_c1: Bits<DC>,
         ddx_c2: Bits<DC>,
+    }
+}
+
+crate::link! {
+    /// A triangle as submitted (`[model::input::Vtx; 3]`): into `cull_sort`, and into
+    /// `raster_top` with `cull_sort`.
+    TriangleSource => TriangleSink {
+        /// Vertex 0: `xy`, `z`, `color`, `inv_w` raw values (`model::input::Vtx`).
+        v0_x: Bits<XY>,
+        v0_y: Bits<XY>,
+        v0_z: Bits<Z>,
+        v0_c0: Bits<COLOR>,
+        v0_c1: Bits<COLOR>,
+        v0_c2: Bits<COLOR>,
+        v0_iw: Bits<INV_W>,
+        /// Vertex 1.
+        v1_x: Bits<XY>,
+        v1_y: Bits<XY>,
+        v1_z: Bits<Z>,
+        v1_c0: Bits<COLOR>,
+        v1_c1: Bits<COLOR>,
+        v1_c2: Bits<COLOR>,
+        v1_iw: Bits<INV_W>,
+        /// Vertex 2.
+        v2_x: Bits<XY>,
+        v2_y: Bits<XY>,
+        v2_z: Bits<Z>,
+        v2_c0: Bits<COLOR>,
+        v2_c1: Bits<COLOR>,
+        v2_c2: Bits<COLOR>,
+        v2_iw: Bits<INV_W>,
+    }
+}
+
+crate::link! {
+    /// A triangle sorted by y with the clip planes it crosses (`model::cull_sort::Sorted`):
+    /// `cull_sort` -> `triangle_setup`, and into `raster_top` without `cull_sort`. (Setup
+    /// does not read `inv_w`: it is the vector method's.)
+    SortedSource => SortedSink {
+        /// Vertex 0: `xy`, `z`, `color`, `inv_w` raw values (`model::input::Vtx`).
+        v0_x: Bits<XY>,
+        v0_y: Bits<XY>,
+        v0_z: Bits<Z>,
+        v0_c0: Bits<COLOR>,
+        v0_c1: Bits<COLOR>,
+        v0_c2: Bits<COLOR>,
+        v0_iw: Bits<INV_W>,
+        /// Vertex 1.
+        v1_x: Bits<XY>,
+        v1_y: Bits<XY>,
+        v1_z: Bits<Z>,
+        v1_c0: Bits<COLOR>,
+        v1_c1: Bits<COLOR>,
+        v1_c2: Bits<COLOR>,
+        v1_iw: Bits<INV_W>,
+        /// Vertex 2.
+        v2_x: Bits<XY>,
+        v2_y: Bits<XY>,
+        v2_z: Bits<Z>,
+        v2_c0: Bits<COLOR>,
+        v2_c1: Bits<COLOR>,
+        v2_c2: Bits<COLOR>,
+        v2_iw: Bits<INV_W>,
+        /// OR of the three outcodes: the planes the triangle crosses (`Sorted::crosses`).
+        crosses: Bits<OUTCODE>,
     }
 }

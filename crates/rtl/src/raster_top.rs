@@ -3,7 +3,7 @@
 //!
 //! ```text
 //!  triangles --> cull_sort --> triangle_setup --> edge_walk --> span FIFO --> span --> pixel_out <--> memory
-//!  (inp_*,        003 Fig. 4   001 eq. 2, with     001/003       4 commands    003     depth test,   (rd_*, wr_*,
+//!  (inp$*,        003 Fig. 4   001 eq. 2, with     001/003       4 commands    003     depth test,   (rd_*, wr_*,
 //!   inp_last)     1 cycle      the divider         Fig. 5        (bypass)      Fig. 6  2 cycles       mem_ready)
 //! ```
 //!
@@ -41,9 +41,9 @@
 //! takes a command, then a pixel per cycle; the write 2 cycles after the pixel.
 //! Model: `model::render::render` with `Method::Scanline`. Emitted: `hdl-out/raster_top.v`.
 
-use super::cull_sort::{CullSort, COLOR, INV_W, OUTCODE, XY, Z};
+use super::cull_sort::{CullSort, OUTCODE};
 use super::edge_walk::EdgeWalk;
-use super::links::{PixelSource, SpanCmdSource, TriangleSetupSource};
+use super::links::{PixelSource, SortedSink, SortedSource, SpanCmdSource, TriangleSetupSource, TriangleSink};
 use super::pixel_out::PixelOut;
 use super::span::Span;
 use super::span_fifo::SpanFifo;
@@ -55,34 +55,15 @@ use rust_hdl::prelude::*;
 
 /// The part of `raster_top` that is always present: `triangle_setup` (with the divider)
 /// -> `edge_walk` -> the span FIFO -> `span`. Sorted triangles in (`model::cull_sort::Sorted`
-/// on `triangle_setup`'s `inp_*` ports), fragments out (`model::span::Pixel` on `span`'s
+/// on the link `inp`), fragments out (`model::span::Pixel` on `span`'s
 /// `out$*` ports); `idle` when it holds no work.
 #[derive(LogicBlock)]
 pub struct RasterCore {
     pub clock: Signal<In, Clock>,
     pub width: Signal<In, Bits<DIM>>,
     pub height: Signal<In, Bits<DIM>>,
-    pub inp_valid: Signal<In, Bit>,
-    pub inp_ready: Signal<Out, Bit>,
-    pub inp_crosses: Signal<In, Bits<OUTCODE>>,
-    pub inp_v0_x: Signal<In, Bits<XY>>,
-    pub inp_v0_y: Signal<In, Bits<XY>>,
-    pub inp_v0_z: Signal<In, Bits<Z>>,
-    pub inp_v0_c0: Signal<In, Bits<COLOR>>,
-    pub inp_v0_c1: Signal<In, Bits<COLOR>>,
-    pub inp_v0_c2: Signal<In, Bits<COLOR>>,
-    pub inp_v1_x: Signal<In, Bits<XY>>,
-    pub inp_v1_y: Signal<In, Bits<XY>>,
-    pub inp_v1_z: Signal<In, Bits<Z>>,
-    pub inp_v1_c0: Signal<In, Bits<COLOR>>,
-    pub inp_v1_c1: Signal<In, Bits<COLOR>>,
-    pub inp_v1_c2: Signal<In, Bits<COLOR>>,
-    pub inp_v2_x: Signal<In, Bits<XY>>,
-    pub inp_v2_y: Signal<In, Bits<XY>>,
-    pub inp_v2_z: Signal<In, Bits<Z>>,
-    pub inp_v2_c0: Signal<In, Bits<COLOR>>,
-    pub inp_v2_c1: Signal<In, Bits<COLOR>>,
-    pub inp_v2_c2: Signal<In, Bits<COLOR>>,
+    /// The sorted triangles in.
+    pub inp: SortedSink,
     /// The fragments.
     pub out: PixelSource,
     /// No triangle, span command or pixel held.
@@ -102,27 +83,7 @@ impl RasterCore {
             clock: Default::default(),
             width: Default::default(),
             height: Default::default(),
-            inp_valid: Default::default(),
-            inp_ready: Default::default(),
-            inp_crosses: Default::default(),
-            inp_v0_x: Default::default(),
-            inp_v0_y: Default::default(),
-            inp_v0_z: Default::default(),
-            inp_v0_c0: Default::default(),
-            inp_v0_c1: Default::default(),
-            inp_v0_c2: Default::default(),
-            inp_v1_x: Default::default(),
-            inp_v1_y: Default::default(),
-            inp_v1_z: Default::default(),
-            inp_v1_c0: Default::default(),
-            inp_v1_c1: Default::default(),
-            inp_v1_c2: Default::default(),
-            inp_v2_x: Default::default(),
-            inp_v2_y: Default::default(),
-            inp_v2_z: Default::default(),
-            inp_v2_c0: Default::default(),
-            inp_v2_c1: Default::default(),
-            inp_v2_c2: Default::default(),
+            inp: Default::default(),
             out: Default::default(),
             idle: Default::default(),
             triangle_setup: TriangleSetup::new(k, l)?,
@@ -140,28 +101,7 @@ impl Logic for RasterCore {
         dff_setup!(self, clock, in_setup);
         clock!(self, clock, triangle_setup, edge_walk, fifo, span);
         // Sorted triangles in.
-        self.triangle_setup.inp_valid.next = self.inp_valid.val();
-        self.inp_ready.next = self.triangle_setup.inp_ready.val();
-        self.triangle_setup.inp_crosses.next = self.inp_crosses.val();
-        self.triangle_setup.inp_v0_x.next = self.inp_v0_x.val();
-        self.triangle_setup.inp_v0_y.next = self.inp_v0_y.val();
-        self.triangle_setup.inp_v0_z.next = self.inp_v0_z.val();
-        self.triangle_setup.inp_v0_c0.next = self.inp_v0_c0.val();
-        self.triangle_setup.inp_v0_c1.next = self.inp_v0_c1.val();
-        self.triangle_setup.inp_v0_c2.next = self.inp_v0_c2.val();
-        self.triangle_setup.inp_v1_x.next = self.inp_v1_x.val();
-        self.triangle_setup.inp_v1_y.next = self.inp_v1_y.val();
-        self.triangle_setup.inp_v1_z.next = self.inp_v1_z.val();
-        self.triangle_setup.inp_v1_c0.next = self.inp_v1_c0.val();
-        self.triangle_setup.inp_v1_c1.next = self.inp_v1_c1.val();
-        self.triangle_setup.inp_v1_c2.next = self.inp_v1_c2.val();
-        self.triangle_setup.inp_v2_x.next = self.inp_v2_x.val();
-        self.triangle_setup.inp_v2_y.next = self.inp_v2_y.val();
-        self.triangle_setup.inp_v2_z.next = self.inp_v2_z.val();
-        self.triangle_setup.inp_v2_c0.next = self.inp_v2_c0.val();
-        self.triangle_setup.inp_v2_c1.next = self.inp_v2_c1.val();
-        self.triangle_setup.inp_v2_c2.next = self.inp_v2_c2.val();
-
+        SortedSink::link(&mut self.inp, &mut self.triangle_setup.inp);
 
         // triangle_setup -> edge_walk: `TriangleSetupOut`.
         self.edge_walk.height.next = self.height.val();
@@ -175,7 +115,7 @@ impl Logic for RasterCore {
         // Fragments out.
         PixelSource::link(&mut self.out, &mut self.span.out);
 
-        if self.inp_valid.val() & self.triangle_setup.inp_ready.val() {
+        if self.inp.valid.val() & self.inp.ready.val() {
             self.in_setup.d.next = true;
         } else if self.triangle_setup.out.valid.val() & self.edge_walk.inp.ready.val() {
             self.in_setup.d.next = false;
@@ -188,13 +128,14 @@ impl Logic for RasterCore {
 }
 
 /// Declares one `raster_top` of the units the parameters choose: the [`RasterCore`] with
-/// `cull_sort` in front of it (`cull_sort: <its field>`) or not (`sorted: <the clip
-/// crossings port>`: the host sends sorted triangles with their clip crossings), and
-/// `pixel_out` behind it (`pixel_out: <its field>`) or not (`fragments: <the link's
-/// field>`: the fragments leave on `out$*`); `inputs`, `outputs` and `links` name the ports
-/// and link ends these add, for the simulators' pins. Each choice is an optional group of fields, constructor and
-/// kernel statements, driven by the name given. (A macro, as rust-hdl's `LogicBlock` takes
-/// its ports from the struct's fields; one arm, so that every `self` is the kernel's.)
+/// `cull_sort` in front of it (`cull_sort: <its field>`: triangles in on the link `inp`) or
+/// not (`sorted: <the link's field>`: the host sends sorted triangles with their clip
+/// crossings), and `pixel_out` behind it (`pixel_out: <its field>`) or not (`fragments:
+/// <the link's field>`: the fragments leave on `out$*`); `inputs` and `outputs` name the
+/// ports these add, for the simulators' pins. Each choice is an optional group of fields,
+/// constructor and kernel statements, driven by the name given. (A macro, as rust-hdl's
+/// `LogicBlock` takes its ports from the struct's fields; one arm, so that every `self` is
+/// the kernel's.)
 macro_rules! raster_top_variant {
     ($(#[$m:meta])* $name:ident {
         $(cull_sort: $cs:ident,)?
@@ -202,8 +143,7 @@ macro_rules! raster_top_variant {
         $(pixel_out: $po:ident,)?
         $(fragments: $ov:ident,)?
         inputs: [$($i:ident),* $(,)?],
-        outputs: [$($o:ident),* $(,)?]
-        $(, links: [$($l:ident),* $(,)?])? $(,)?
+        outputs: [$($o:ident),* $(,)?] $(,)?
     }) => {
         $(#[$m])*
         #[derive(LogicBlock)]
@@ -212,34 +152,13 @@ macro_rules! raster_top_variant {
             /// Screen size in pixels, 1 to 2^CLASS each (the size class); constant during a frame.
             pub width: Signal<In, Bits<DIM>>,
             pub height: Signal<In, Bits<DIM>>,
-            pub inp_valid: Signal<In, Bit>,
-            pub inp_ready: Signal<Out, Bit>,
-            /// The frame's last triangle.
+            /// The frame's last triangle (with `inp.valid`).
             pub inp_last: Signal<In, Bit>,
-            pub inp_v0_x: Signal<In, Bits<XY>>,
-            pub inp_v0_y: Signal<In, Bits<XY>>,
-            pub inp_v0_z: Signal<In, Bits<Z>>,
-            pub inp_v0_c0: Signal<In, Bits<COLOR>>,
-            pub inp_v0_c1: Signal<In, Bits<COLOR>>,
-            pub inp_v0_c2: Signal<In, Bits<COLOR>>,
-            pub inp_v1_x: Signal<In, Bits<XY>>,
-            pub inp_v1_y: Signal<In, Bits<XY>>,
-            pub inp_v1_z: Signal<In, Bits<Z>>,
-            pub inp_v1_c0: Signal<In, Bits<COLOR>>,
-            pub inp_v1_c1: Signal<In, Bits<COLOR>>,
-            pub inp_v1_c2: Signal<In, Bits<COLOR>>,
-            pub inp_v2_x: Signal<In, Bits<XY>>,
-            pub inp_v2_y: Signal<In, Bits<XY>>,
-            pub inp_v2_z: Signal<In, Bits<Z>>,
-            pub inp_v2_c0: Signal<In, Bits<COLOR>>,
-            pub inp_v2_c1: Signal<In, Bits<COLOR>>,
-            pub inp_v2_c2: Signal<In, Bits<COLOR>>,
             $(
+                /// The triangles, as submitted (`model::input::Vtx` per vertex).
+                pub inp: TriangleSink,
                 /// Drop back faces (`model::cull_sort::Cull::Back`).
                 pub cull_back: Signal<In, Bit>,
-                pub inp_v0_iw: Signal<In, Bits<INV_W>>,
-                pub inp_v1_iw: Signal<In, Bits<INV_W>>,
-                pub inp_v2_iw: Signal<In, Bits<INV_W>>,
                 /// A triangle leaves `cull_sort` (passed or rejected), with why (`rtl::cull_sort`).
                 pub verdict_valid: Signal<Out, Bit>,
                 pub verdict_code: Signal<Out, Bits<2>>,
@@ -247,8 +166,8 @@ macro_rules! raster_top_variant {
                 $cs: CullSort,
             )?
             $(
-                /// The clip planes the triangle crosses (`model::cull_sort::Sorted::crosses`).
-                pub $ic: Signal<In, Bits<OUTCODE>>,
+                /// The sorted triangles with the clip planes they cross (`model::cull_sort::Sorted`).
+                pub $ic: SortedSink,
             )?
             $(
                 /// The memory port of `pixel_out` (see `rtl::pixel_out`).
@@ -280,30 +199,27 @@ macro_rules! raster_top_variant {
                     clock: Default::default(),
                     width: Default::default(),
                     height: Default::default(),
-                    inp_valid: Default::default(),
-                    inp_ready: Default::default(),
                     inp_last: Default::default(),
-                    inp_v0_x: Default::default(),
-                    inp_v0_y: Default::default(),
-                    inp_v0_z: Default::default(),
-                    inp_v0_c0: Default::default(),
-                    inp_v0_c1: Default::default(),
-                    inp_v0_c2: Default::default(),
-                    inp_v1_x: Default::default(),
-                    inp_v1_y: Default::default(),
-                    inp_v1_z: Default::default(),
-                    inp_v1_c0: Default::default(),
-                    inp_v1_c1: Default::default(),
-                    inp_v1_c2: Default::default(),
-                    inp_v2_x: Default::default(),
-                    inp_v2_y: Default::default(),
-                    inp_v2_z: Default::default(),
-                    inp_v2_c0: Default::default(),
-                    inp_v2_c1: Default::default(),
-                    inp_v2_c2: Default::default(),
-                    $( cull_back: Default::default(), inp_v0_iw: Default::default(), inp_v1_iw: Default::default(), inp_v2_iw: Default::default(), verdict_valid: Default::default(), verdict_code: Default::default(), verdict_outside: Default::default(), $cs: Default::default(), )?
+                    $(
+                        inp: Default::default(),
+                        cull_back: Default::default(),
+                        verdict_valid: Default::default(),
+                        verdict_code: Default::default(),
+                        verdict_outside: Default::default(),
+                        $cs: Default::default(),
+                    )?
                     $( $ic: Default::default(), )?
-                    $( mem_ready: Default::default(), rd_en: Default::default(), rd_addr: Default::default(), rd_z: Default::default(), wr_en: Default::default(), wr_addr: Default::default(), wr_z: Default::default(), wr_rgb: Default::default(), $po: Default::default(), )?
+                    $(
+                        mem_ready: Default::default(),
+                        rd_en: Default::default(),
+                        rd_addr: Default::default(),
+                        rd_z: Default::default(),
+                        wr_en: Default::default(),
+                        wr_addr: Default::default(),
+                        wr_z: Default::default(),
+                        wr_rgb: Default::default(),
+                        $po: Default::default(),
+                    )?
                     $( $ov: Default::default(), )?
                     done: Default::default(),
                     core: RasterCore::new(k, l)?,
@@ -322,90 +238,27 @@ macro_rules! raster_top_variant {
                 // Frame done: after the last triangle, every unit empty.
                 self.done.next = self.last_in.q.val() & self.core.idle.val();
                 $(
-                    // Triangles in: cull_sort.
+                    // Triangles in: cull_sort, then the sorted triangle to the core.
                     self.$cs.clock.next = self.clock.val();
                     self.$cs.width.next = self.width.val();
                     self.$cs.height.next = self.height.val();
                     self.$cs.cull_back.next = self.cull_back.val();
-                    self.$cs.inp_valid.next = self.inp_valid.val();
-                    self.inp_ready.next = self.$cs.inp_ready.val();
-                    self.$cs.inp_v0_x.next = self.inp_v0_x.val();
-                    self.$cs.inp_v0_y.next = self.inp_v0_y.val();
-                    self.$cs.inp_v0_z.next = self.inp_v0_z.val();
-                    self.$cs.inp_v0_c0.next = self.inp_v0_c0.val();
-                    self.$cs.inp_v0_c1.next = self.inp_v0_c1.val();
-                    self.$cs.inp_v0_c2.next = self.inp_v0_c2.val();
-                    self.$cs.inp_v0_iw.next = self.inp_v0_iw.val();
-                    self.$cs.inp_v1_x.next = self.inp_v1_x.val();
-                    self.$cs.inp_v1_y.next = self.inp_v1_y.val();
-                    self.$cs.inp_v1_z.next = self.inp_v1_z.val();
-                    self.$cs.inp_v1_c0.next = self.inp_v1_c0.val();
-                    self.$cs.inp_v1_c1.next = self.inp_v1_c1.val();
-                    self.$cs.inp_v1_c2.next = self.inp_v1_c2.val();
-                    self.$cs.inp_v1_iw.next = self.inp_v1_iw.val();
-                    self.$cs.inp_v2_x.next = self.inp_v2_x.val();
-                    self.$cs.inp_v2_y.next = self.inp_v2_y.val();
-                    self.$cs.inp_v2_z.next = self.inp_v2_z.val();
-                    self.$cs.inp_v2_c0.next = self.inp_v2_c0.val();
-                    self.$cs.inp_v2_c1.next = self.inp_v2_c1.val();
-                    self.$cs.inp_v2_c2.next = self.inp_v2_c2.val();
-                    self.$cs.inp_v2_iw.next = self.inp_v2_iw.val();
+                    TriangleSink::link(&mut self.inp, &mut self.$cs.inp);
                     self.verdict_valid.next = self.$cs.verdict_valid.val();
                     self.verdict_code.next = self.$cs.verdict_code.val();
                     self.verdict_outside.next = self.$cs.verdict_outside.val();
-                    if self.inp_valid.val() & self.$cs.inp_ready.val() {
+                    if self.inp.valid.val() & self.inp.ready.val() {
                         self.last_in.d.next = self.inp_last.val();
                     }
-                    // cull_sort -> the core: the sorted triangle (`inv_w` is the vector method's).
-                    self.core.inp_valid.next = self.$cs.out_valid.val();
-                    self.$cs.out_ready.next = self.core.inp_ready.val();
-                    self.core.inp_crosses.next = self.$cs.out_crosses.val();
-                    self.core.inp_v0_x.next = self.$cs.out_v0_x.val();
-                    self.core.inp_v0_y.next = self.$cs.out_v0_y.val();
-                    self.core.inp_v0_z.next = self.$cs.out_v0_z.val();
-                    self.core.inp_v0_c0.next = self.$cs.out_v0_c0.val();
-                    self.core.inp_v0_c1.next = self.$cs.out_v0_c1.val();
-                    self.core.inp_v0_c2.next = self.$cs.out_v0_c2.val();
-                    self.core.inp_v1_x.next = self.$cs.out_v1_x.val();
-                    self.core.inp_v1_y.next = self.$cs.out_v1_y.val();
-                    self.core.inp_v1_z.next = self.$cs.out_v1_z.val();
-                    self.core.inp_v1_c0.next = self.$cs.out_v1_c0.val();
-                    self.core.inp_v1_c1.next = self.$cs.out_v1_c1.val();
-                    self.core.inp_v1_c2.next = self.$cs.out_v1_c2.val();
-                    self.core.inp_v2_x.next = self.$cs.out_v2_x.val();
-                    self.core.inp_v2_y.next = self.$cs.out_v2_y.val();
-                    self.core.inp_v2_z.next = self.$cs.out_v2_z.val();
-                    self.core.inp_v2_c0.next = self.$cs.out_v2_c0.val();
-                    self.core.inp_v2_c1.next = self.$cs.out_v2_c1.val();
-                    self.core.inp_v2_c2.next = self.$cs.out_v2_c2.val();
-                    if self.$cs.out_valid.val() {
+                    SortedSource::join(&mut self.$cs.out, &mut self.core.inp);
+                    if self.$cs.out.valid.val() {
                         self.done.next = false;
                     }
                 )?
                 $(
                     // Sorted triangles in, straight to the core.
-                    self.core.inp_valid.next = self.inp_valid.val();
-                    self.inp_ready.next = self.core.inp_ready.val();
-                    self.core.inp_crosses.next = self.$ic.val();
-                    self.core.inp_v0_x.next = self.inp_v0_x.val();
-                    self.core.inp_v0_y.next = self.inp_v0_y.val();
-                    self.core.inp_v0_z.next = self.inp_v0_z.val();
-                    self.core.inp_v0_c0.next = self.inp_v0_c0.val();
-                    self.core.inp_v0_c1.next = self.inp_v0_c1.val();
-                    self.core.inp_v0_c2.next = self.inp_v0_c2.val();
-                    self.core.inp_v1_x.next = self.inp_v1_x.val();
-                    self.core.inp_v1_y.next = self.inp_v1_y.val();
-                    self.core.inp_v1_z.next = self.inp_v1_z.val();
-                    self.core.inp_v1_c0.next = self.inp_v1_c0.val();
-                    self.core.inp_v1_c1.next = self.inp_v1_c1.val();
-                    self.core.inp_v1_c2.next = self.inp_v1_c2.val();
-                    self.core.inp_v2_x.next = self.inp_v2_x.val();
-                    self.core.inp_v2_y.next = self.inp_v2_y.val();
-                    self.core.inp_v2_z.next = self.inp_v2_z.val();
-                    self.core.inp_v2_c0.next = self.inp_v2_c0.val();
-                    self.core.inp_v2_c1.next = self.inp_v2_c1.val();
-                    self.core.inp_v2_c2.next = self.inp_v2_c2.val();
-                    if self.inp_valid.val() & self.core.inp_ready.val() {
+                    SortedSink::link(&mut self.$ic, &mut self.core.inp);
+                    if self.$ic.valid.val() & self.$ic.ready.val() {
                         self.last_in.d.next = self.inp_last.val();
                     }
                 )?
@@ -434,13 +287,9 @@ macro_rules! raster_top_variant {
 
         crate::pins!($name {
             clock: clock,
-            inputs: [
-                width, height, inp_valid, inp_last, inp_v0_x, inp_v0_y, inp_v0_z, inp_v0_c0, inp_v0_c1, inp_v0_c2,
-                inp_v1_x, inp_v1_y, inp_v1_z, inp_v1_c0, inp_v1_c1, inp_v1_c2, inp_v2_x, inp_v2_y, inp_v2_z,
-                inp_v2_c0, inp_v2_c1, inp_v2_c2, $($i,)*
-            ],
-            outputs: [inp_ready, done, $($o,)*],
-            links: [$($($l,)*)?],
+            inputs: [width, height, inp_last, $($i,)*],
+            outputs: [done, $($o,)*],
+            links: [inp, $($ov)?],
         });
     };
 }
@@ -452,7 +301,7 @@ raster_top_variant!(
     RasterTop {
         cull_sort: cull_sort,
         pixel_out: pixel_out,
-        inputs: [cull_back, inp_v0_iw, inp_v1_iw, inp_v2_iw, mem_ready, rd_z],
+        inputs: [cull_back, mem_ready, rd_z],
         outputs: [verdict_valid, verdict_code, verdict_outside, rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb],
     }
 );
@@ -462,18 +311,17 @@ raster_top_variant!(
     RasterTopFragments {
         cull_sort: cull_sort,
         fragments: out,
-        inputs: [cull_back, inp_v0_iw, inp_v1_iw, inp_v2_iw],
+        inputs: [cull_back],
         outputs: [verdict_valid, verdict_code, verdict_outside],
-        links: [out],
     }
 );
 raster_top_variant!(
     /// `raster_top` without `cull_sort` (`CULL_SORT = 0`): the host culls and sorts, and
     /// sends the sorted triangles (`model::cull_sort::Sorted`) with their clip crossings.
     RasterTopSorted {
-        sorted: inp_crosses,
+        sorted: inp,
         pixel_out: pixel_out,
-        inputs: [inp_crosses, mem_ready, rd_z],
+        inputs: [mem_ready, rd_z],
         outputs: [rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb],
     }
 );
@@ -481,11 +329,10 @@ raster_top_variant!(
     /// `raster_top` with neither (`CULL_SORT = 0`, `PIXEL_OUT = 0`): sorted triangles in,
     /// fragments out.
     RasterTopCore {
-        sorted: inp_crosses,
+        sorted: inp,
         fragments: out,
-        inputs: [inp_crosses],
+        inputs: [],
         outputs: [],
-        links: [out],
     }
 );
 

@@ -1,7 +1,7 @@
 //! `span`: span processing of paper 001 (Woo 2004, §II.2) with the X and Z clipping of
 //! paper 003 (Lee 2008, §II.1.다.(3), Fig. 6), one pixel per cycle.
 //!
-//! It takes span commands (`model::edge_walk::SpanCmd`, flattened into `inp_*`) and sends
+//! It takes span commands (`model::edge_walk::SpanCmd`, on the link `inp`) and sends
 //! pixels (`model::span::Pixel`, on the link `out`: `links::PixelSource`, ports `out$*`), both
 //! on valid/ready streams:
 //!
@@ -24,7 +24,7 @@
 //!
 //! Timing (`model::span::{LATENCY, II}` = 1, 1): a command taken in cycle t presents its
 //! first pixel in cycle t + 1 and one pixel per cycle after that, each held while
-//! `out_ready` is low; the next command is taken in the cycle of the last pixel, so pixels
+//! `out$ready` is low; the next command is taken in the cycle of the last pixel, so pixels
 //! follow each other without a gap. A dropped span takes one cycle. Model:
 //! `model::span::span`. Emitted: `hdl-out/span.v`.
 

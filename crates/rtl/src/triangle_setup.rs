@@ -1,7 +1,7 @@
 //! `triangle_setup`: the iterative fixed-point triangle setup of paper 001 (Woo 2004,
 //! §II.2.나-라, eq. 2, Table 3), bit-exact to `model::triangle_setup`.
 //!
-//! It takes one sorted triangle from `cull_sort` (`inp_v<i>_*`, `inp_crosses`) and hands
+//! It takes one sorted triangle from `cull_sort` (the link `inp`: `links::SortedSink`) and hands
 //! the edge walk `model::triangle_setup::TriangleSetupOut` without `divisions` on the link
 //! `out` (`links::TriangleSetupSource`: ports `out$<field>`, nested fields joined by `_`,
 //! `out$walk` high for `Walk::Up`, `out$maj_x`, `out$short0_inc1_c2`, `out$ddx_z`, ...), each
@@ -59,7 +59,7 @@ use super::cull_sort::{outcode_bit, COLOR, OUTCODE, XY, Z};
 use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_Q, DIV_QM};
 use crate::emit::{ports, verilog, Emitted};
 use crate::mul::Mul;
-use super::links::TriangleSetupSource;
+use super::links::{SortedSink, TriangleSetupSource};
 use super::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, Z_ACC};
 use crate::config::{mul_a, mul_b};
 use crate::Params;
@@ -181,30 +181,8 @@ impl Schedule {
 #[derive(LogicBlock)]
 pub struct TriangleSetup {
     pub clock: Signal<In, Clock>,
-    pub inp_valid: Signal<In, Bit>,
-    /// Idle, or handing a result over this cycle.
-    pub inp_ready: Signal<Out, Bit>,
-    /// vMin, vMid, vMax from `cull_sort` (`xy`, `z`, `color` raw values).
-    pub inp_v0_x: Signal<In, Bits<XY>>,
-    pub inp_v0_y: Signal<In, Bits<XY>>,
-    pub inp_v0_z: Signal<In, Bits<Z>>,
-    pub inp_v0_c0: Signal<In, Bits<COLOR>>,
-    pub inp_v0_c1: Signal<In, Bits<COLOR>>,
-    pub inp_v0_c2: Signal<In, Bits<COLOR>>,
-    pub inp_v1_x: Signal<In, Bits<XY>>,
-    pub inp_v1_y: Signal<In, Bits<XY>>,
-    pub inp_v1_z: Signal<In, Bits<Z>>,
-    pub inp_v1_c0: Signal<In, Bits<COLOR>>,
-    pub inp_v1_c1: Signal<In, Bits<COLOR>>,
-    pub inp_v1_c2: Signal<In, Bits<COLOR>>,
-    pub inp_v2_x: Signal<In, Bits<XY>>,
-    pub inp_v2_y: Signal<In, Bits<XY>>,
-    pub inp_v2_z: Signal<In, Bits<Z>>,
-    pub inp_v2_c0: Signal<In, Bits<COLOR>>,
-    pub inp_v2_c1: Signal<In, Bits<COLOR>>,
-    pub inp_v2_c2: Signal<In, Bits<COLOR>>,
-    /// The planes the triangle crosses (`Sorted::crosses`): the walk direction's input.
-    pub inp_crosses: Signal<In, Bits<OUTCODE>>,
+    /// The sorted triangle in (`inp.v<k>_iw` is not read: the vector method's).
+    pub inp: SortedSink,
     /// The set-up triangle, held until `out.ready`.
     pub out: TriangleSetupSource,
 
@@ -398,27 +376,7 @@ impl TriangleSetup {
         let px = 1usize << S;
         Ok(TriangleSetup {
             clock: Default::default(),
-            inp_valid: Default::default(),
-            inp_ready: Default::default(),
-            inp_v0_x: Default::default(),
-            inp_v0_y: Default::default(),
-            inp_v0_z: Default::default(),
-            inp_v0_c0: Default::default(),
-            inp_v0_c1: Default::default(),
-            inp_v0_c2: Default::default(),
-            inp_v1_x: Default::default(),
-            inp_v1_y: Default::default(),
-            inp_v1_z: Default::default(),
-            inp_v1_c0: Default::default(),
-            inp_v1_c1: Default::default(),
-            inp_v1_c2: Default::default(),
-            inp_v2_x: Default::default(),
-            inp_v2_y: Default::default(),
-            inp_v2_z: Default::default(),
-            inp_v2_c0: Default::default(),
-            inp_v2_c1: Default::default(),
-            inp_v2_c2: Default::default(),
-            inp_crosses: Default::default(),
+            inp: Default::default(),
             out: Default::default(),
             mul: (0..k).map(|_| Default::default()).collect(),
             div: DividerRtl::new(l),
@@ -579,8 +537,8 @@ impl Logic for TriangleSetup {
         }
 
         // ---- Control: take a triangle when idle or handing one over.
-        self.inp_ready.next = (self.t.q.val() == 0) | ((self.t.q.val() == self.last.val()) & self.out.ready.val());
-        self.take.next = self.inp_valid.val() & self.inp_ready.val();
+        self.inp.ready.next = (self.t.q.val() == 0) | ((self.t.q.val() == self.last.val()) & self.out.ready.val());
+        self.take.next = self.inp.valid.val() & self.inp.ready.val();
         self.out.valid.next = self.t.q.val() == self.last.val();
         if (self.t.q.val() != 0) & (self.t.q.val() != self.last.val()) {
             self.t.d.next = self.t.q.val() + 1;
@@ -590,25 +548,25 @@ impl Logic for TriangleSetup {
         }
         if self.take.val() {
             self.t.d.next = 1.into();
-            self.vx[0].d.next = self.inp_v0_x.val();
-            self.vy[0].d.next = self.inp_v0_y.val();
-            self.vz[0].d.next = self.inp_v0_z.val();
-            self.vc[0].d.next = self.inp_v0_c0.val();
-            self.vc[1].d.next = self.inp_v0_c1.val();
-            self.vc[2].d.next = self.inp_v0_c2.val();
-            self.vx[1].d.next = self.inp_v1_x.val();
-            self.vy[1].d.next = self.inp_v1_y.val();
-            self.vz[1].d.next = self.inp_v1_z.val();
-            self.vc[3].d.next = self.inp_v1_c0.val();
-            self.vc[4].d.next = self.inp_v1_c1.val();
-            self.vc[5].d.next = self.inp_v1_c2.val();
-            self.vx[2].d.next = self.inp_v2_x.val();
-            self.vy[2].d.next = self.inp_v2_y.val();
-            self.vz[2].d.next = self.inp_v2_z.val();
-            self.vc[6].d.next = self.inp_v2_c0.val();
-            self.vc[7].d.next = self.inp_v2_c1.val();
-            self.vc[8].d.next = self.inp_v2_c2.val();
-            self.crosses.d.next = self.inp_crosses.val();
+            self.vx[0].d.next = self.inp.v0_x.val();
+            self.vy[0].d.next = self.inp.v0_y.val();
+            self.vz[0].d.next = self.inp.v0_z.val();
+            self.vc[0].d.next = self.inp.v0_c0.val();
+            self.vc[1].d.next = self.inp.v0_c1.val();
+            self.vc[2].d.next = self.inp.v0_c2.val();
+            self.vx[1].d.next = self.inp.v1_x.val();
+            self.vy[1].d.next = self.inp.v1_y.val();
+            self.vz[1].d.next = self.inp.v1_z.val();
+            self.vc[3].d.next = self.inp.v1_c0.val();
+            self.vc[4].d.next = self.inp.v1_c1.val();
+            self.vc[5].d.next = self.inp.v1_c2.val();
+            self.vx[2].d.next = self.inp.v2_x.val();
+            self.vy[2].d.next = self.inp.v2_y.val();
+            self.vz[2].d.next = self.inp.v2_z.val();
+            self.vc[6].d.next = self.inp.v2_c0.val();
+            self.vc[7].d.next = self.inp.v2_c1.val();
+            self.vc[8].d.next = self.inp.v2_c2.val();
+            self.crosses.d.next = self.inp.crosses.val();
         }
         for i in 0..PRODUCTS {
             self.act[i].next = self.t.q.val() == self.cyc[i].val();
@@ -1089,31 +1047,10 @@ impl Logic for TriangleSetup {
 crate::pins!(TriangleSetup {
     clock: clock,
     inputs: [
-        inp_valid,
-        inp_crosses,
-        inp_v0_x,
-        inp_v0_y,
-        inp_v0_z,
-        inp_v0_c0,
-        inp_v0_c1,
-        inp_v0_c2,
-        inp_v1_x,
-        inp_v1_y,
-        inp_v1_z,
-        inp_v1_c0,
-        inp_v1_c1,
-        inp_v1_c2,
-        inp_v2_x,
-        inp_v2_y,
-        inp_v2_z,
-        inp_v2_c0,
-        inp_v2_c1,
-        inp_v2_c2,
     ],
     outputs: [
-        inp_ready,
     ],
-    links: [out],
+    links: [inp, out],
 });
 
 /// `UNITS` entry: setup with `params["K"]` multipliers and a `params["L"]`-stage divider.

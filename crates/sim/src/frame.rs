@@ -29,7 +29,7 @@ pub struct Drive {
     pub cull_back: bool,
     pub inp_valid: bool,
     pub inp_last: bool,
-    /// The triangle offered (`inp_v<k>_*`).
+    /// The triangle offered (`inp$v<k>_*`).
     pub tri: [Vtx; 3],
     pub mem_ready: bool,
     pub rd_z: u32,
@@ -88,31 +88,30 @@ pub fn named(d: &Drive) -> Vec<(String, Value)> {
         ("width".to_owned(), Value::new(w.dim, d.width as u128)),
         ("height".into(), Value::new(w.dim, d.height as u128)),
         ("cull_back".into(), Value::new(1, d.cull_back as u128)),
-        ("inp_valid".into(), Value::new(1, d.inp_valid as u128)),
+        ("inp$valid".into(), Value::new(1, d.inp_valid as u128)),
         ("inp_last".into(), Value::new(1, d.inp_last as u128)),
         ("mem_ready".into(), Value::new(1, d.mem_ready as u128)),
         ("rd_z".into(), Value::new(w.depth, d.rd_z as u128)),
     ];
-    out.extend(triangle_pins(&d.build, &d.tri, true));
+    out.extend(triangle_pins(&d.build, &d.tri));
     out
 }
 
-/// The named input port values (`inp_v<k>_*`) of triangle `tri` in build `build`, with
-/// `inp_v<k>_iw` when `inv_w` (a `raster_top` with `cull_sort` takes it).
-pub fn triangle_pins(build: &Build, tri: &[Vtx; 3], inv_w: bool) -> Vec<(String, Value)> {
+/// The named input port values (`inp$v<k>_*`) of triangle `tri` in build `build`: the
+/// link `inp` of `raster_top` (`links::TriangleSink`, or with `inp$crosses` beside them
+/// `links::SortedSink`), at the build's widths.
+pub fn triangle_pins(build: &Build, tri: &[Vtx; 3]) -> Vec<(String, Value)> {
     let w = InputWidths::of(build);
     let mut out = Vec::new();
     for (k, v) in tri.iter().enumerate() {
-        let p = |f: &str| format!("inp_v{k}_{f}");
+        let p = |f: &str| format!("inp$v{k}_{f}");
         out.push((p("x"), raw(w.xy, v.x)));
         out.push((p("y"), raw(w.xy, v.y)));
         out.push((p("z"), raw(w.z, v.z)));
         for (i, c) in v.c.iter().enumerate() {
             out.push((p(&format!("c{i}")), raw(w.color, *c)));
         }
-        if inv_w {
-            out.push((p("iw"), raw(w.inv_w, v.iw)));
-        }
+        out.push((p("iw"), raw(w.inv_w, v.iw)));
     }
     out
 }
@@ -121,7 +120,7 @@ pub fn triangle_pins(build: &Build, tri: &[Vtx; 3], inv_w: bool) -> Vec<(String,
 pub fn sense(o: &Outputs) -> Sense {
     let high = |pin: &str| unsigned(o.get(pin)) == 1;
     Sense {
-        inp_ready: high("inp_ready"),
+        inp_ready: high("inp$ready"),
         verdict_valid: high("verdict_valid"),
         verdict_code: unsigned(o.get("verdict_code")) as u8,
         req: Request::of(o),
@@ -135,7 +134,7 @@ fn cycle_by_name(sim: &mut impl Sim, d: &Drive) -> Sense {
         sim.set(&pin, &v);
     }
     sim.settle();
-    let read = ["inp_ready", "verdict_valid", "verdict_code", "done", "rd_en", "rd_addr", "wr_en", "wr_addr"];
+    let read = ["inp$ready", "verdict_valid", "verdict_code", "done", "rd_en", "rd_addr", "wr_en", "wr_addr"];
     let o = Outputs(read.iter().chain(&["wr_z", "wr_rgb"]).map(|p| (p.to_string(), sim.get(p))).collect());
     sim.clock();
     sense(&o)
@@ -155,11 +154,11 @@ pub struct RasterTopVl {
     vl: VlSim,
     build: Build,
     clock: PortId,
-    /// width, height, cull_back, inp_valid, inp_last, mem_ready, rd_z.
+    /// width, height, cull_back, inp$valid, inp_last, mem_ready, rd_z.
     inputs: [PortId; 7],
     /// Per vertex: x, y, z, c0, c1, c2, iw.
     vertices: [[PortId; 7]; 3],
-    /// inp_ready, verdict_valid, verdict_code, done, rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb.
+    /// inp$ready, verdict_valid, verdict_code, done, rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb.
     outputs: [PortId; 10],
 }
 
@@ -168,13 +167,13 @@ impl RasterTopVl {
     /// build `build`.
     pub fn new(vl: VlSim, build: Build) -> Self {
         let ids = |names: &[&str]| names.iter().map(|n| vl.port(n)).collect::<Vec<_>>();
-        let inputs = ids(&["width", "height", "cull_back", "inp_valid", "inp_last", "mem_ready", "rd_z"]);
+        let inputs = ids(&["width", "height", "cull_back", "inp$valid", "inp_last", "mem_ready", "rd_z"]);
         let vertices = [0, 1, 2].map(|k| {
-            let names = ["x", "y", "z", "c0", "c1", "c2", "iw"].map(|f| format!("inp_v{k}_{f}"));
+            let names = ["x", "y", "z", "c0", "c1", "c2", "iw"].map(|f| format!("inp$v{k}_{f}"));
             names.map(|n| vl.port(&n))
         });
         let outputs = ids(&[
-            "inp_ready",
+            "inp$ready",
             "verdict_valid",
             "verdict_code",
             "done",

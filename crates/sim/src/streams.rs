@@ -1,4 +1,5 @@
-//! The model's transactions as port values, and back: a set-up triangle
+//! The model's transactions as port values, and back: a triangle (`[model::input::Vtx; 3]`),
+//! a sorted triangle (`model::cull_sort::Sorted`), a set-up triangle
 //! (`model::triangle_setup::TriangleSetupOut`), a span command (`model::edge_walk::SpanCmd`)
 //! and a pixel (`model::span::Pixel`) on the pins `<end>$<field>` of a link end, nested
 //! fields joined by `_` (`inp$maj_at_c0`, `out$left_z`, `out$rgb2`). The fields and their
@@ -6,11 +7,13 @@
 //! have, or a value that does not fit its port, fails here.
 
 use crate::{Outputs, Value};
+use model::cull_sort::Sorted;
 use model::edge_walk::SpanCmd;
+use model::input::Vtx;
 use model::span::Pixel;
 use model::triangle_setup::{Attrs, Edge, TriangleSetupOut, Walk};
 use rtl::link::Link;
-use rtl::links::{PixelSink, SpanCmdSink, TriangleSetupSink};
+use rtl::links::{PixelSink, SortedSink, SpanCmdSink, TriangleSetupSink, TriangleSink};
 
 /// Named port values, ready for `Dual::cycle` (through [`as_pins`]).
 pub type PinValues = Vec<(String, Value)>;
@@ -138,4 +141,36 @@ pub fn pixel_of(o: &Outputs, end: &str) -> Pixel {
         z: get("z") as u32,
         rgb: std::array::from_fn(|i| get(&format!("rgb{i}")) as u8),
     }
+}
+
+/// Field `v<k>_<f>` of triangle `v` (`f`: `x`, `y`, `z`, `c0`, `c1`, `c2`, `iw`).
+fn vertex(v: &[Vtx; 3], field: &str) -> Option<i128> {
+    let (k, f) = field.strip_prefix('v')?.split_once('_')?;
+    let v = v.get(k.parse::<usize>().ok()?)?;
+    match f {
+        "x" => Some(v.x),
+        "y" => Some(v.y),
+        "z" => Some(v.z),
+        "c0" => Some(v.c[0]),
+        "c1" => Some(v.c[1]),
+        "c2" => Some(v.c[2]),
+        "iw" => Some(v.iw),
+        _ => None,
+    }
+}
+
+/// A triangle on the pins of link end `end` (`cull_sort`'s `inp`: `links::TriangleSink`).
+pub fn triangle(end: &str, v: &[Vtx; 3]) -> PinValues {
+    link_pins::<TriangleSink>(end, |field| {
+        vertex(v, field).unwrap_or_else(|| panic!("[model::input::Vtx; 3] has no field {field}"))
+    })
+}
+
+/// A sorted triangle on the pins of link end `end` (`triangle_setup`'s `inp`:
+/// `links::SortedSink`).
+pub fn sorted(end: &str, s: &Sorted) -> PinValues {
+    link_pins::<SortedSink>(end, |field| match field {
+        "crosses" => s.crosses as i128,
+        _ => vertex(&s.v, field).unwrap_or_else(|| panic!("model::cull_sort::Sorted has no field {field}")),
+    })
 }
