@@ -125,66 +125,54 @@ crate::link! {
     }
 }
 
-crate::link! {
-    /// A triangle as submitted (`[model::input::Vtx; 3]`): into `cull_sort`, and into
-    /// `raster_top` with `cull_sort`.
-    TriangleSource => TriangleSink {
-        /// Vertex 0: `xy`, `z`, `color`, `inv_w` raw values (`model::input::Vtx`).
-        v0_x: Bits<XY>,
-        v0_y: Bits<XY>,
-        v0_z: Bits<Z>,
-        v0_c0: Bits<COLOR>,
-        v0_c1: Bits<COLOR>,
-        v0_c2: Bits<COLOR>,
-        v0_iw: Bits<INV_W>,
-        /// Vertex 1.
-        v1_x: Bits<XY>,
-        v1_y: Bits<XY>,
-        v1_z: Bits<Z>,
-        v1_c0: Bits<COLOR>,
-        v1_c1: Bits<COLOR>,
-        v1_c2: Bits<COLOR>,
-        v1_iw: Bits<INV_W>,
-        /// Vertex 2.
-        v2_x: Bits<XY>,
-        v2_y: Bits<XY>,
-        v2_z: Bits<Z>,
-        v2_c0: Bits<COLOR>,
-        v2_c1: Bits<COLOR>,
-        v2_c2: Bits<COLOR>,
-        v2_iw: Bits<INV_W>,
-    }
+/// Declares a link whose fields are a triangle's three vertices (`[model::input::Vtx; 3]`:
+/// `v<k>_x`, `v<k>_y`, `v<k>_z`, `v<k>_c0..2`, `v<k>_iw`), then the fields given.
+macro_rules! triangle_link {
+    ($(#[$meta:meta])* $source:ident => $sink:ident { $($more:tt)* }) => {
+        crate::link! {
+            $(#[$meta])*
+            $source => $sink {
+                /// Vertex 0: `xy`, `z`, `color`, `inv_w` raw values (`model::input::Vtx`).
+                v0_x: Bits<XY>,
+                v0_y: Bits<XY>,
+                v0_z: Bits<Z>,
+                v0_c0: Bits<COLOR>,
+                v0_c1: Bits<COLOR>,
+                v0_c2: Bits<COLOR>,
+                v0_iw: Bits<INV_W>,
+                /// Vertex 1.
+                v1_x: Bits<XY>,
+                v1_y: Bits<XY>,
+                v1_z: Bits<Z>,
+                v1_c0: Bits<COLOR>,
+                v1_c1: Bits<COLOR>,
+                v1_c2: Bits<COLOR>,
+                v1_iw: Bits<INV_W>,
+                /// Vertex 2.
+                v2_x: Bits<XY>,
+                v2_y: Bits<XY>,
+                v2_z: Bits<Z>,
+                v2_c0: Bits<COLOR>,
+                v2_c1: Bits<COLOR>,
+                v2_c2: Bits<COLOR>,
+                v2_iw: Bits<INV_W>,
+                $($more)*
+            }
+        }
+    };
 }
 
-crate::link! {
+triangle_link! {
+    /// A triangle as submitted (`[model::input::Vtx; 3]`): into `cull_sort`, and into
+    /// `raster_top` with `cull_sort`.
+    TriangleSource => TriangleSink {}
+}
+
+triangle_link! {
     /// A triangle sorted by y with the clip planes it crosses (`model::cull_sort::Sorted`):
     /// `cull_sort` -> `triangle_setup`, and into `raster_top` without `cull_sort`. (Setup
     /// does not read `inv_w`: it is the vector method's.)
     SortedSource => SortedSink {
-        /// Vertex 0: `xy`, `z`, `color`, `inv_w` raw values (`model::input::Vtx`).
-        v0_x: Bits<XY>,
-        v0_y: Bits<XY>,
-        v0_z: Bits<Z>,
-        v0_c0: Bits<COLOR>,
-        v0_c1: Bits<COLOR>,
-        v0_c2: Bits<COLOR>,
-        v0_iw: Bits<INV_W>,
-        /// Vertex 1.
-        v1_x: Bits<XY>,
-        v1_y: Bits<XY>,
-        v1_z: Bits<Z>,
-        v1_c0: Bits<COLOR>,
-        v1_c1: Bits<COLOR>,
-        v1_c2: Bits<COLOR>,
-        v1_iw: Bits<INV_W>,
-        /// Vertex 2.
-        v2_x: Bits<XY>,
-        v2_y: Bits<XY>,
-        v2_z: Bits<Z>,
-        v2_c0: Bits<COLOR>,
-        v2_c1: Bits<COLOR>,
-        v2_c2: Bits<COLOR>,
-        v2_iw: Bits<INV_W>,
         /// OR of the three outcodes: the planes the triangle crosses (`Sorted::crosses`).
         crosses: Bits<OUTCODE>,
     }
