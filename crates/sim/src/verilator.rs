@@ -29,7 +29,7 @@ const SETUP_HINT: &str =
 
 /// Verilator warnings waived while building a model. WIDTH: rust-hdl writes every literal
 /// and index as 32 bits (`xl[32'h5]`), so widths never match.
-pub const IGNORED_WARNINGS: &[&str] = &["WIDTH"];
+const IGNORED_WARNINGS: &[&str] = &["WIDTH"];
 
 /// Bumped whenever the shim or the build commands change, so cached models are rebuilt.
 const SHIM_VERSION: u32 = 1;
@@ -128,7 +128,6 @@ fn shim(top: &str, ports: &[Port]) -> String {
 /// A Verilated model, built (or found in the cache) and loaded, ready to instantiate.
 pub struct Verilated {
     unit: String,
-    file: PathBuf,
     ports: Vec<Port>,
     library: Arc<Library>,
 }
@@ -151,17 +150,7 @@ impl Verilated {
         // SAFETY: the library is the model just built from our own shim; loading it runs
         // only Verilator's static initialisers.
         let library = unsafe { Library::new(&lib) }.map_err(|e| format!("loading {}: {e}", lib.display()))?;
-        Ok(Verilated {
-            unit: unit.to_owned(),
-            file: file.to_owned(),
-            ports: ports.to_vec(),
-            library: Arc::new(library),
-        })
-    }
-
-    /// The Verilog file.
-    pub fn file(&self) -> &Path {
-        &self.file
+        Ok(Verilated { unit: unit.to_owned(), ports: ports.to_vec(), library: Arc::new(library) })
     }
 
     /// A fresh instance of the model, every input zero.
