@@ -1,6 +1,6 @@
 
 
-module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,out$crosses,verdict_valid,verdict_code,verdict_outside);
+module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,out$crosses,verdict$valid,verdict$code,verdict$outside);
     
     // Module arguments
     input wire  clock;
@@ -54,9 +54,9 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
     output reg  [7:0] out$v2_c2;
     output reg  [15:0] out$v2_iw;
     output reg  [5:0] out$crosses;
-    output reg  verdict_valid;
-    output reg  [1:0] verdict_code;
-    output reg  [5:0] verdict_outside;
+    output reg  verdict$valid;
+    output reg  [1:0] verdict$code;
+    output reg  [5:0] verdict$outside;
     
     // Constant declarations
     localparam  z_max = 18'b1111111111111111;
@@ -578,9 +578,9 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
             end
         end
         out$valid = full$q & (code_r$q == passed);
-        verdict_valid = leave;
-        verdict_code = code_r$q;
-        verdict_outside = outside_r$q;
+        verdict$valid = leave;
+        verdict$code = code_r$q;
+        verdict$outside = outside_r$q;
         out$crosses = crosses$q;
         out$v0_x = sx$0$q;
         out$v0_y = sy$0$q;

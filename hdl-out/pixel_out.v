@@ -1,6 +1,6 @@
 
 
-module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,mem_ready,rd_en,rd_addr,rd_z,wr_en,wr_addr,wr_z,wr_rgb,idle);
+module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,mem$ready,mem$rd_en,mem$rd_addr,mem$rd_z,mem$wr_en,mem$wr_addr,mem$wr_z,mem$wr_rgb,idle);
     
     // Module arguments
     input wire  clock;
@@ -12,14 +12,14 @@ module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,i
     input wire  [7:0] inp$rgb0;
     input wire  [7:0] inp$rgb1;
     input wire  [7:0] inp$rgb2;
-    input wire  mem_ready;
-    output reg  rd_en;
-    output reg  [19:0] rd_addr;
-    input wire  [15:0] rd_z;
-    output reg  wr_en;
-    output reg  [19:0] wr_addr;
-    output reg  [15:0] wr_z;
-    output reg  [23:0] wr_rgb;
+    input wire  mem$ready;
+    output reg  mem$rd_en;
+    output reg  [19:0] mem$rd_addr;
+    input wire  [15:0] mem$rd_z;
+    output reg  mem$wr_en;
+    output reg  [19:0] mem$wr_addr;
+    output reg  [15:0] mem$wr_z;
+    output reg  [23:0] mem$wr_rgb;
     output reg  idle;
     
     // Stub signals
@@ -182,10 +182,10 @@ module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,i
         rg$lo = inp$rgb1;
         rgb$hi = rg$out;
         rgb$lo = inp$rgb2;
-        inp$ready = mem_ready;
-        rd_en = inp$valid;
-        rd_addr = addr$out;
-        old_z = rd_z;
+        inp$ready = mem$ready;
+        mem$rd_en = inp$valid;
+        mem$rd_addr = addr$out;
+        old_z = mem$rd_z;
         if (s3_valid$q & (s3_addr$q == s1_addr$q)) begin
             old_z = s3_z$q;
         end
@@ -193,12 +193,12 @@ module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,i
             old_z = s2_z$q;
         end
         pass = s1_valid$q & (s1_z$q < old_z);
-        wr_en = s2_write$q;
-        wr_addr = s2_addr$q;
-        wr_z = s2_z$q;
-        wr_rgb = s2_rgb$q;
+        mem$wr_en = s2_write$q;
+        mem$wr_addr = s2_addr$q;
+        mem$wr_z = s2_z$q;
+        mem$wr_rgb = s2_rgb$q;
         idle = ~s1_valid$q & ~s2_valid$q;
-        if (mem_ready) begin
+        if (mem$ready) begin
             s1_valid$d = inp$valid;
             s1_addr$d = addr$out;
             s1_z$d = inp$z;

@@ -208,7 +208,7 @@ fn cli_emits_and_renders_at_other_formats() {
     let width = |port: &str| {
         unit["ports"].as_array().unwrap().iter().find(|p| p["name"] == port).map(|p| p["width"].clone()).unwrap()
     };
-    assert_eq!((width("wr_z"), width("inp$v0_x"), width("inp$v0_c0")), (24.into(), 15.into(), 10.into()));
+    assert_eq!((width("mem$wr_z"), width("inp$v0_x"), width("inp$v0_c0")), (24.into(), 15.into(), 10.into()));
 
     let png = d.join("rtl.png");
     let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");

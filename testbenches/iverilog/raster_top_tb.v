@@ -12,7 +12,7 @@
 //   writes lines: address ({y, x}) depth rgb
 //
 // Usage: vvp <compiled bench> +vectors=<file> [+stall]
-//   +stall: the memory is not ready one cycle in seven (mem_ready low).
+//   +stall: the memory is not ready one cycle in seven (mem$ready low).
 // Prints "PASS <writes> writes, <cycles> cycles" and ends with $finish, or "FAIL ..." and
 // ends with $fatal.
 `timescale 1ns / 1ps
@@ -58,9 +58,9 @@ module raster_top_tb;
         .inp$v0_x(v0_x), .inp$v0_y(v0_y), .inp$v0_z(v0_z), .inp$v0_c0(v0_r), .inp$v0_c1(v0_g), .inp$v0_c2(v0_b), .inp$v0_iw(v0_iw),
         .inp$v1_x(v1_x), .inp$v1_y(v1_y), .inp$v1_z(v1_z), .inp$v1_c0(v1_r), .inp$v1_c1(v1_g), .inp$v1_c2(v1_b), .inp$v1_iw(v1_iw),
         .inp$v2_x(v2_x), .inp$v2_y(v2_y), .inp$v2_z(v2_z), .inp$v2_c0(v2_r), .inp$v2_c1(v2_g), .inp$v2_c2(v2_b), .inp$v2_iw(v2_iw),
-        .verdict_valid(verdict_valid), .verdict_code(verdict_code), .verdict_outside(verdict_outside),
-        .mem_ready(mem_ready), .rd_en(rd_en), .rd_addr(rd_addr), .rd_z(rd_z),
-        .wr_en(wr_en), .wr_addr(wr_addr), .wr_z(wr_z), .wr_rgb(wr_rgb), .done(done)
+        .verdict$valid(verdict_valid), .verdict$code(verdict_code), .verdict$outside(verdict_outside),
+        .mem$ready(mem_ready), .mem$rd_en(rd_en), .mem$rd_addr(rd_addr), .mem$rd_z(rd_z),
+        .mem$wr_en(wr_en), .mem$wr_addr(wr_addr), .mem$wr_z(wr_z), .mem$wr_rgb(wr_rgb), .done(done)
     );
 
     // Triangle `t` onto the DUT's inputs (after the edge: non-blocking).

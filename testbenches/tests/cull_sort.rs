@@ -67,14 +67,14 @@ fn run(dual: &mut Dual<CullSort>, cases: &[Case], flow: Flow, rng: &mut ChaCha8R
         let bit = |pin: &str| out.get(pin).bit(0);
         assert_eq!(
             bit("out$valid") && ready,
-            bit("verdict_valid") && out.get("verdict_code") == &Value::new(2, verdict::PASSED as u128),
+            bit("verdict$valid") && out.get("verdict$code") == &Value::new(2, verdict::PASSED as u128),
             "cycle {cycle}: a passing triangle leaves exactly when it is taken downstream"
         );
-        if bit("verdict_valid") {
+        if bit("verdict$valid") {
             let i = in_flight.pop_front().expect("a verdict for a triangle taken");
             let (code, planes) = verdict_of(&expected[i]);
-            dual.expect(&out, "verdict_code", &Value::new(2, code as u128))?;
-            dual.expect(&out, "verdict_outside", &raw(OUTCODE, planes as i128))?;
+            dual.expect(&out, "verdict$code", &Value::new(2, code as u128))?;
+            dual.expect(&out, "verdict$outside", &raw(OUTCODE, planes as i128))?;
             if let Ok(s) = &expected[i] {
                 for (pin, v) in sorted_pins(s) {
                     dual.expect(&out, &pin, &v)?;

@@ -61,15 +61,15 @@ fn run(
         let valid = next < pixels.len() && rng.gen_bool(0.8);
         let mut pins = vec![
             ("inp$valid", Value::new(1, valid as u128)),
-            ("mem_ready", Value::new(1, mem_ready as u128)),
-            ("rd_z", Value::new(DEPTH, mem.rd_z() as u128)),
+            ("mem$ready", Value::new(1, mem_ready as u128)),
+            ("mem$rd_z", Value::new(DEPTH, mem.rd_z() as u128)),
         ];
         let p = pixel("inp", &pixels[next.min(pixels.len() - 1)]);
         pins.extend(as_pins(&p));
         let out = dual.cycle(&pins).map_err(|m| m.to_string())?;
         let cycle = dual.cycles() - 1;
         if (out.get("inp$ready") == &Value::new(1, 1)) != mem_ready {
-            return Err(format!("cycle {cycle}: inp$ready differs from mem_ready"));
+            return Err(format!("cycle {cycle}: inp$ready differs from mem$ready"));
         }
         let req = Request::of(&out);
         if req.rd_en != valid {
@@ -130,7 +130,7 @@ fn pixel_out_random_vs_model() {
     }
 }
 
-/// The memory port stalled (`mem_ready` low 30% of the time and in bursts): the unit
+/// The memory port stalled (`mem$ready` low 30% of the time and in bursts): the unit
 /// holds everything, nothing is lost or written twice.
 #[test]
 fn pixel_out_memory_stalled_vs_model() {
@@ -156,7 +156,7 @@ fn pixel_out_memory_stalled_vs_model() {
 }
 
 /// Latency 2 (`model::pixel_out::LATENCY`): a pixel taken in cycle 0 is read in cycle 0
-/// (`rd_en`, its address `{y, x}`) and written in cycle 2.
+/// (`mem$rd_en`, its address `{y, x}`) and written in cycle 2.
 #[test]
 fn pixel_out_latency_is_2() {
     assert_eq!(LATENCY, 2);
@@ -166,8 +166,8 @@ fn pixel_out_latency_is_2() {
     let p = Pixel { x: 3, y: 5, z: 100, rgb: [1, 2, 3] };
     let mut pins = vec![
         ("inp$valid", Value::new(1, 1)),
-        ("mem_ready", Value::new(1, 1)),
-        ("rd_z", Value::new(DEPTH, mem.rd_z() as u128)),
+        ("mem$ready", Value::new(1, 1)),
+        ("mem$rd_z", Value::new(DEPTH, mem.rd_z() as u128)),
     ];
     let p = pixel("inp", &p);
     pins.extend(as_pins(&p));

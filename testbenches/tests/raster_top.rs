@@ -189,7 +189,7 @@ fn raster_top_back_to_back_vs_model() {
     assert!(gaps[1..].iter().all(|&g| g == setup), "one-pixel triangles taken every {setup} cycles: {gaps:?}");
 }
 
-/// The memory port stalled (`mem_ready` low 30% of the time, in bursts), reads returning
+/// The memory port stalled (`mem$ready` low 30% of the time, in bursts), reads returning
 /// the old or the new word: the same image, nothing lost or written twice.
 #[test]
 fn raster_top_memory_stalled_vs_model() {
@@ -440,8 +440,8 @@ fn units_frame<U: Block + Pins>(
             pins.push(("inp$crosses".into(), Value::new(rtl::cull_sort::OUTCODE, crosses as u128)));
         }
         if units.pixel_out {
-            pins.push(("mem_ready".into(), Value::new(1, ready as u128)));
-            pins.push(("rd_z".into(), Value::new(rtl::widths::DEPTH, memory.rd_z() as u128)));
+            pins.push(("mem$ready".into(), Value::new(1, ready as u128)));
+            pins.push(("mem$rd_z".into(), Value::new(rtl::widths::DEPTH, memory.rd_z() as u128)));
         } else {
             pins.push(("out$ready".into(), Value::new(1, ready as u128)));
         }
@@ -539,8 +539,8 @@ fn raster_top_custom_formats_lockstep() {
     let params = unit.params([("N".to_owned(), build.class as u64)]).expect("known parameters");
     let e = unit.emit_at(&params, &build.formats).unwrap_or_else(|e| panic!("{e}"));
     assert!(
-        e.ports.iter().any(|p| p.name == "wr_z" && p.width == build.formats.z.frac as usize),
-        "wr_z is z.frac wide"
+        e.ports.iter().any(|p| p.name == "mem$wr_z" && p.width == build.formats.z.frac as usize),
+        "mem$wr_z is z.frac wide"
     );
     let vl = testbenches::verilate(&e).unwrap_or_else(|e| panic!("{e}"));
     let (cube, cube_cull) = scene("cube", Some((24, 16)));

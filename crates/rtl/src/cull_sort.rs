@@ -14,13 +14,13 @@
 //!   inp_v0..2 --+-- outcodes --- AND: outside? ----------------+
 //!               |            `-- OR: crosses -------------------+--> register --> out_v0..2 (sorted),
 //!               +-- 2 x Mul<17,17>: area2 -- zero? back face? --+                 out$crosses, out$valid
-//!               `-- y0<=y1, y1<=y2, y0<=y2 -> ranks -> mux -----+                 verdict_*
+//!               `-- y0<=y1, y1<=y2, y0<=y2 -> ranks -> mux -----+                 verdict$*
 //! ```
 //!
 //! A triangle taken in cycle t (`inp$valid & inp$ready`) is in the output register in
 //! cycle t + 1 (latency `model::cull_sort::LATENCY` = 1, II 1). A passing triangle stays
 //! there until `out$ready`; a rejected one leaves at once (it goes no further, so it never
-//! waits for setup). `verdict_valid` is high in the cycle a triangle leaves, with its
+//! waits for setup). `verdict$valid` is high in the cycle a triangle leaves, with its
 //! verdict. No new vertices are made: a triangle that crosses the screen goes on whole
 //! with `out$crosses` (the OR of the outcodes) and is clipped by the edge walk and span.
 //!
@@ -28,7 +28,7 @@
 
 use crate::emit::{ports, verilog, Emitted};
 use crate::mul::Mul;
-use super::links::{SortedSource, TriangleSink};
+use super::links::{SortedSource, TriangleSink, Verdict};
 use super::widths::{DIM, FORMATS};
 use crate::Params;
 use rust_hdl::prelude::*;
@@ -61,7 +61,7 @@ pub mod outcode_bit {
 const DELTA: usize = XY + 1;
 const AREA: usize = 2 * DELTA;
 
-/// `verdict_code`: why a triangle went no further (`model::cull_sort::Reject`), or 0.
+/// `verdict$code`: why a triangle went no further (`model::cull_sort::Reject`), or 0.
 pub mod verdict {
     pub const PASSED: u64 = 0;
     pub const OUTSIDE: u64 = 1;
@@ -82,12 +82,9 @@ pub struct CullSort {
     pub inp: TriangleSink,
     /// The sorted triangle out, with the planes it crosses.
     pub out: SortedSource,
-    /// High in the cycle a triangle leaves the unit (taken, or rejected).
-    pub verdict_valid: Signal<Out, Bit>,
-    /// [`verdict`]: 0 passed, 1 outside, 2 back face, 3 zero area.
-    pub verdict_code: Signal<Out, Bits<2>>,
-    /// For `OUTSIDE`: the planes all three vertices lie outside (`Reject::Outside`); else 0.
-    pub verdict_outside: Signal<Out, Bits<OUTCODE>>,
+    /// Each triangle leaving the unit (taken, or rejected) and why; `outside`: for
+    /// `OUTSIDE` the planes all three vertices lie outside (`Reject::Outside`), else 0.
+    pub verdict: Verdict,
     /// The inputs as arrays, by vertex (colours: 3 * vertex + channel).
     vx: [Signal<Local, Bits<XY>>; 3],
     vy: [Signal<Local, Bits<XY>>; 3],
@@ -164,9 +161,7 @@ impl Default for CullSort {
             cull_back: Default::default(),
             inp: Default::default(),
             out: Default::default(),
-            verdict_valid: Default::default(),
-            verdict_code: Default::default(),
-            verdict_outside: Default::default(),
+            verdict: Default::default(),
             vx: Default::default(),
             vy: Default::default(),
             vz: Default::default(),
@@ -361,9 +356,9 @@ impl Logic for CullSort {
             }
         }
         self.out.valid.next = self.full.q.val() & (self.code_r.q.val() == self.passed.val());
-        self.verdict_valid.next = self.leave.val();
-        self.verdict_code.next = self.code_r.q.val();
-        self.verdict_outside.next = self.outside_r.q.val();
+        self.verdict.valid.next = self.leave.val();
+        self.verdict.code.next = self.code_r.q.val();
+        self.verdict.outside.next = self.outside_r.q.val();
         self.out.crosses.next = self.crosses.q.val();
         self.out.v0_x.next = self.sx[0].q.val();
         self.out.v0_y.next = self.sy[0].q.val();
@@ -394,12 +389,8 @@ crate::pins!(CullSort {
     inputs: [
         width, height, cull_back,
     ],
-    outputs: [
-        verdict_valid,
-        verdict_code,
-        verdict_outside,
-    ],
-    links: [out, inp],
+    outputs: [],
+    links: [out, inp, verdict],
 });
 
 /// `UNITS` entry: the cull & sort unit (no parameters; the screen size is an input).

@@ -131,6 +131,16 @@ macro_rules! no_formats {
 pub use n10::{cull_sort, divider, edge_walk, links, pixel_out, raster_top, span, triangle_setup, widths};
 const _: () = assert!(n10::CLASS == fx::RTL_CLASS);
 
+/// Multipliers in `triangle_setup` (and `raster_top`).
+pub(crate) const K: Param = Param {
+    name: "K",
+    default: 7,
+    doc: "triangle_setup's multipliers, 1 to 7 (latency 66 to 18 with L = 5); 001 has 7",
+};
+/// Stages of the shared divider (alone, in `triangle_setup` and in `raster_top`).
+pub(crate) const L: Param =
+    Param { name: "L", default: 5, doc: "stages of the shared divider (latency), 1 to 25; 001 has 5" };
+
 /// The size-class parameter every scanline unit has.
 const N: Param = Param {
     name: "N",
@@ -185,17 +195,13 @@ pub const UNITS: &[Unit] = &[
     Unit {
         name: "divider",
         doc: "the shared pipelined floor divider of paper 001 §II.2: one division per cycle, exact",
-        params: &[N, Param { name: "L", default: 5, doc: "pipeline stages (latency), 1 to 25; 001 has 5" }],
+        params: &[N, L],
         build: by_build!(divider::emit_divider),
     },
     Unit {
         name: "triangle_setup",
         doc: "triangle setup, paper 001 §II.2, eq. 2, Table 3: K multipliers reused, the 7 divisions on the shared divider",
-        params: &[
-            N,
-            Param { name: "K", default: 7, doc: "multipliers, 1 to 7 (latency 66 to 18 with L = 5); 001 has 7" },
-            Param { name: "L", default: 5, doc: "stages of the shared divider, 1 to 25; 001 has 5" },
-        ],
+        params: &[N, K, L],
         build: by_build!(triangle_setup::emit_triangle_setup),
     },
     Unit {
@@ -221,8 +227,8 @@ pub const UNITS: &[Unit] = &[
         doc: "the scanline rasterizer of papers 001 and 003: cull_sort, setup with the divider, edge walk, span, pixel out",
         params: &[
             N,
-            Param { name: "K", default: 7, doc: "triangle_setup's multipliers, 1 to 7; 001 has 7" },
-            Param { name: "L", default: 5, doc: "stages of the shared divider, 1 to 25; 001 has 5" },
+            K,
+            L,
             Param {
                 name: "CULL_SORT",
                 default: 1,

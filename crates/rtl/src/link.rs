@@ -1,15 +1,17 @@
-//! The links between units, each declared once ([`link!`](crate::link)): a valid/ready
-//! stream carrying one of the models' transactions, field for field.
+//! The links between units, each declared once: a [`bundle!`](crate::bundle) of signals
+//! with their directions (the memory port, `cull_sort`'s verdict), or a
+//! [`link!`](crate::link), a valid/ready stream carrying one of the models' transactions,
+//! field for field.
 //!
-//! A declaration gives the link's two ends as rust-hdl interfaces: the sending unit's
+//! A link declaration gives its two ends as rust-hdl interfaces: the sending unit's
 //! (`valid` and every field out, `ready` in) and the receiving unit's (the opposite). A unit
 //! holds an end as one field (`pub out: PixelSource`), its kernel reads and drives
 //! `self.out.x`, a design connects two units with `PixelSource::join(&mut self.span.out,
 //! &mut self.pixel_out.inp)` and passes its own port to a unit's with `PixelSink::link(&mut
 //! self.inp, &mut self.pixel_out.inp)`. In the Verilog the ports are `<end>$<field>`
-//! (`out$x`, `inp$valid`), as rust-hdl names an interface's signals; the testbenches reach
-//! them by those names through [`LinkPins`], and convert the model's transactions through
-//! [`Link::FIELDS`].
+//! (`out$x`, `inp$valid`, `mem$rd_en`), as rust-hdl names an interface's signals; the
+//! testbenches reach them by those names through [`LinkPins`], and convert the model's
+//! transactions through [`Link::FIELDS`].
 
 use crate::sim::Value;
 
@@ -29,6 +31,48 @@ pub trait Link {
     const WIDTHS: &'static [usize];
 }
 
+/// Whether signals of direction `D` are inputs of the unit holding them.
+pub const fn is_input<D: rust_hdl::prelude::Direction>() -> bool {
+    matches!(D::KIND, rust_hdl::prelude::AtomKind::InputParameter)
+}
+
+/// Declares a bundle: a rust-hdl interface of the signals given, each with its direction
+/// (`In` or `Out`, as seen by the unit holding the bundle) and type (`Bit` or `Bits<N>`),
+/// and its [`LinkPins`].
+#[macro_export]
+macro_rules! bundle {
+    (
+        $(#[$meta:meta])*
+        $name:ident {
+            $( $(#[$fmeta:meta])* $dir:ident $field:ident : $ty:ty ),* $(,)?
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(LogicInterface, Default)]
+        pub struct $name {
+            $( $(#[$fmeta])* pub $field: Signal<$dir, $ty>, )*
+        }
+
+        impl $crate::link::LinkPins for $name {
+            fn set(&mut self, field: &str, value: &$crate::sim::Value) -> bool {
+                match field {
+                    $( stringify!($field) if $crate::link::is_input::<$dir>() => {
+                        self.$field.next = $crate::sim::PinValue::from_value(value)
+                    } )*
+                    _ => return false,
+                }
+                true
+            }
+            fn get(&self, field: &str) -> Option<$crate::sim::Value> {
+                match field {
+                    $( stringify!($field) => Some($crate::sim::PinValue::to_value(&self.$field.val())), )*
+                    _ => None,
+                }
+            }
+        }
+    };
+}
+
 /// Declares a link: its two ends, `$source` and `$sink`, with the fields given (each a
 /// `Bit` or `Bits<N>`), plus `valid` and `ready`. See the module's documentation.
 #[macro_export]
@@ -39,24 +83,26 @@ macro_rules! link {
             $( $(#[$fmeta:meta])* $field:ident : $ty:ty ),* $(,)?
         }
     ) => {
-        $(#[$meta])*
-        ///
-        /// The sending end: `valid` and the fields out, `ready` in.
-        #[derive(LogicInterface, Default)]
-        pub struct $source {
-            pub valid: Signal<Out, Bit>,
-            pub ready: Signal<In, Bit>,
-            $( $(#[$fmeta])* pub $field: Signal<Out, $ty>, )*
+        $crate::bundle! {
+            $(#[$meta])*
+            ///
+            /// The sending end: `valid` and the fields out, `ready` in.
+            $source {
+                Out valid: Bit,
+                In ready: Bit,
+                $( $(#[$fmeta])* Out $field: $ty, )*
+            }
         }
 
-        $(#[$meta])*
-        ///
-        /// The receiving end: `valid` and the fields in, `ready` out.
-        #[derive(LogicInterface, Default)]
-        pub struct $sink {
-            pub valid: Signal<In, Bit>,
-            pub ready: Signal<Out, Bit>,
-            $( $(#[$fmeta])* pub $field: Signal<In, $ty>, )*
+        $crate::bundle! {
+            $(#[$meta])*
+            ///
+            /// The receiving end: `valid` and the fields in, `ready` out.
+            $sink {
+                In valid: Bit,
+                Out ready: Bit,
+                $( $(#[$fmeta])* In $field: $ty, )*
+            }
         }
 
         impl $source {
@@ -76,43 +122,6 @@ macro_rules! link {
         impl $crate::link::Link for $sink {
             const FIELDS: &'static [&'static str] = <$source as $crate::link::Link>::FIELDS;
             const WIDTHS: &'static [usize] = <$source as $crate::link::Link>::WIDTHS;
-        }
-
-        impl $crate::link::LinkPins for $source {
-            fn set(&mut self, field: &str, value: &$crate::sim::Value) -> bool {
-                if field != "ready" {
-                    return false;
-                }
-                self.ready.next = $crate::sim::PinValue::from_value(value);
-                true
-            }
-            fn get(&self, field: &str) -> Option<$crate::sim::Value> {
-                match field {
-                    "valid" => Some($crate::sim::PinValue::to_value(&self.valid.val())),
-                    "ready" => Some($crate::sim::PinValue::to_value(&self.ready.val())),
-                    $( stringify!($field) => Some($crate::sim::PinValue::to_value(&self.$field.val())), )*
-                    _ => None,
-                }
-            }
-        }
-
-        impl $crate::link::LinkPins for $sink {
-            fn set(&mut self, field: &str, value: &$crate::sim::Value) -> bool {
-                match field {
-                    "valid" => self.valid.next = $crate::sim::PinValue::from_value(value),
-                    $( stringify!($field) => self.$field.next = $crate::sim::PinValue::from_value(value), )*
-                    _ => return false,
-                }
-                true
-            }
-            fn get(&self, field: &str) -> Option<$crate::sim::Value> {
-                match field {
-                    "valid" => Some($crate::sim::PinValue::to_value(&self.valid.val())),
-                    "ready" => Some($crate::sim::PinValue::to_value(&self.ready.val())),
-                    $( stringify!($field) => Some($crate::sim::PinValue::to_value(&self.$field.val())), )*
-                    _ => None,
-                }
-            }
         }
     };
 }

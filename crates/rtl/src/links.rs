@@ -1,9 +1,41 @@
-//! The links between the scanline units of one build, each declared once (`crate::link!`),
-//! at the build's widths (`super::widths`).
+//! The links between the scanline units of one build, each declared once (`crate::link!`,
+//! `crate::bundle!`), at the build's widths (`super::widths`).
 
 use super::cull_sort::{COLOR, INV_W, OUTCODE, XY, Z};
-use super::widths::{CHANNEL, C_ACC, DC, DEPTH, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
+use super::widths::{ADDR, CHANNEL, C_ACC, DC, DEPTH, DZ, EDGE_D, EDGE_Q, PIXEL, RGB, SCREEN, Z_ACC};
 use rust_hdl::prelude::*;
+
+crate::bundle! {
+    /// `pixel_out`'s memory port, as `pixel_out` (and `raster_top` with it) holds it: a word
+    /// per pixel at address `{y, x}`, a depth and a colour (see `rtl::pixel_out`).
+    MemoryPort {
+        /// The memory performs this cycle's read and write at the rising edge; low: neither.
+        In ready: Bit,
+        /// Read the depth at `rd_addr`.
+        Out rd_en: Bit,
+        Out rd_addr: Bits<ADDR>,
+        /// The depth last read (from the cycle after the read).
+        In rd_z: Bits<DEPTH>,
+        /// Write `wr_z` and `wr_rgb` at `wr_addr`.
+        Out wr_en: Bit,
+        Out wr_addr: Bits<ADDR>,
+        Out wr_z: Bits<DEPTH>,
+        /// `{R, G, B}`, R in the top byte.
+        Out wr_rgb: Bits<RGB>,
+    }
+}
+
+crate::bundle! {
+    /// A triangle leaves `cull_sort`, passed or rejected, and why (`rtl::cull_sort`).
+    Verdict {
+        /// High in the cycle the triangle leaves.
+        Out valid: Bit,
+        /// `rtl::cull_sort::verdict`: 0 passed, 1 outside, 2 back face, 3 zero area.
+        Out code: Bits<2>,
+        /// For `OUTSIDE`, the planes all three vertices are outside of (`rtl::cull_sort::plane`).
+        Out outside: Bits<OUTCODE>,
+    }
+}
 
 crate::link! {
     /// A pixel on screen (`model::span::Pixel`): `span` -> `pixel_out`, and the fragments

@@ -3,11 +3,12 @@
 //!
 //! **The memory port** (so the design can sit on FPGA block RAM or external memory): a
 //! word per pixel at address `{y, x}` (a row pitch of 2^SCREEN words), holding a depth
-//! (`DEPTH` bits) and a colour (`RGB` bits). In each cycle with `mem_ready` high the
-//! memory performs, at the rising edge, the read asked for (`rd_en`, `rd_addr`), returning
-//! the depth on `rd_z` from the next cycle until its next read, and the write asked for
-//! (`wr_en`, `wr_addr`, `wr_z`, `wr_rgb`). With `mem_ready` low it does neither and the
-//! unit holds every register: `mem_ready` is the memory's stall. Whether a read and a write
+//! (`DEPTH` bits) and a colour (`RGB` bits), on the bundle `mem` (`links::MemoryPort`). In
+//! each cycle with `mem$ready` high the memory performs, at the rising edge, the read asked
+//! for (`mem$rd_en`, `mem$rd_addr`), returning the depth on `mem$rd_z` from the next cycle
+//! until its next read, and the write asked for (`mem$wr_en`, `mem$wr_addr`, `mem$wr_z`,
+//! `mem$wr_rgb`). With `mem$ready` low it does neither and the unit holds every register:
+//! `mem$ready` is the memory's stall. Whether a read and a write
 //! of one address at one edge return the old or the new word does not matter (see below).
 //!
 //! **Pipeline** (`model::pixel_out::{LATENCY, II}` = 2, 1):
@@ -28,7 +29,7 @@
 
 use crate::emit::{emit, Emitted};
 use crate::parts::Concat;
-use super::links::PixelSink;
+use super::links::{MemoryPort, PixelSink};
 use super::widths::{ADDR, CHANNEL, DEPTH, RGB, SCREEN};
 use crate::Params;
 use rust_hdl::prelude::*;
@@ -37,25 +38,14 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock, Default)]
 pub struct PixelOut {
     pub clock: Signal<In, Clock>,
-    /// The pixels; `inp.ready` is `mem_ready`: a pixel is taken whenever the memory is.
+    /// The pixels; `inp.ready` is `mem.ready`: a pixel is taken whenever the memory is.
     pub inp: PixelSink,
-    /// The memory performs this cycle's read and write (see the module documentation).
-    pub mem_ready: Signal<In, Bit>,
-    /// Read the depth at `rd_addr`.
-    pub rd_en: Signal<Out, Bit>,
-    pub rd_addr: Signal<Out, Bits<ADDR>>,
-    /// The depth last read.
-    pub rd_z: Signal<In, Bits<DEPTH>>,
-    /// Write `wr_z` and `wr_rgb` at `wr_addr`.
-    pub wr_en: Signal<Out, Bit>,
-    pub wr_addr: Signal<Out, Bits<ADDR>>,
-    pub wr_z: Signal<Out, Bits<DEPTH>>,
-    /// `{R, G, B}`, R in the top byte.
-    pub wr_rgb: Signal<Out, Bits<RGB>>,
+    /// The memory port (see the module documentation).
+    pub mem: MemoryPort,
     /// No pixel in the pipeline (for `raster_top`'s frame-done): empty 3 cycles after the
     /// last pixel came in, whether it was written or not.
     pub idle: Signal<Out, Bit>,
-    /// s1: the pixel whose depth is being read (`rd_z` holds it this cycle).
+    /// s1: the pixel whose depth is being read (`mem.rd_z` holds it this cycle).
     s1_valid: DFF<Bit>,
     s1_addr: DFF<Bits<ADDR>>,
     s1_z: DFF<Bits<DEPTH>>,
@@ -94,12 +84,12 @@ impl Logic for PixelOut {
         self.rgb.lo.next = self.inp.rgb2.val();
 
         // Cycle t: the pixel comes in and its depth is read.
-        self.inp.ready.next = self.mem_ready.val();
-        self.rd_en.next = self.inp.valid.val();
-        self.rd_addr.next = self.addr.out.val();
+        self.inp.ready.next = self.mem.ready.val();
+        self.mem.rd_en.next = self.inp.valid.val();
+        self.mem.rd_addr.next = self.addr.out.val();
 
         // Cycle t + 1: depth test against the newest depth of the address.
-        self.old_z.next = self.rd_z.val();
+        self.old_z.next = self.mem.rd_z.val();
         if self.s3_valid.q.val() & (self.s3_addr.q.val() == self.s1_addr.q.val()) {
             self.old_z.next = self.s3_z.q.val();
         }
@@ -109,13 +99,13 @@ impl Logic for PixelOut {
         self.pass.next = self.s1_valid.q.val() & (self.s1_z.q.val() < self.old_z.val());
 
         // Cycle t + 2: the write.
-        self.wr_en.next = self.s2_write.q.val();
-        self.wr_addr.next = self.s2_addr.q.val();
-        self.wr_z.next = self.s2_z.q.val();
-        self.wr_rgb.next = self.s2_rgb.q.val();
+        self.mem.wr_en.next = self.s2_write.q.val();
+        self.mem.wr_addr.next = self.s2_addr.q.val();
+        self.mem.wr_z.next = self.s2_z.q.val();
+        self.mem.wr_rgb.next = self.s2_rgb.q.val();
         self.idle.next = !self.s1_valid.q.val() & !self.s2_valid.q.val();
 
-        if self.mem_ready.val() {
+        if self.mem.ready.val() {
             self.s1_valid.d.next = self.inp.valid.val();
             self.s1_addr.d.next = self.addr.out.val();
             self.s1_z.d.next = self.inp.z.val();
@@ -134,9 +124,9 @@ impl Logic for PixelOut {
 
 crate::pins!(PixelOut {
     clock: clock,
-    inputs: [mem_ready, rd_z],
-    outputs: [rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb, idle],
-    links: [inp],
+    inputs: [],
+    outputs: [idle],
+    links: [inp, mem],
 });
 
 /// `UNITS` entry: the pixel output unit (no parameters: widths from `crate::widths`).

@@ -3,20 +3,20 @@
 //!
 //! ```text
 //!  triangles --> cull_sort --> triangle_setup --> edge_walk --> span FIFO --> span --> pixel_out <--> memory
-//!  (inp$*,        003 Fig. 4   001 eq. 2, with     001/003       4 commands    003     depth test,   (rd_*, wr_*,
-//!   inp_last)     1 cycle      the divider         Fig. 5        (bypass)      Fig. 6  2 cycles       mem_ready)
+//!  (inp$*,        003 Fig. 4   001 eq. 2, with     001/003       4 commands    003     depth test,   (mem$*)
+//!   inp_last)     1 cycle      the divider         Fig. 5        (bypass)      Fig. 6  2 cycles
 //! ```
 //!
 //! Every link is a valid/ready stream (a transfer on a rising edge with valid and ready
 //! high) and each unit holds its work while the next one is not ready, so a stalled memory
-//! (`mem_ready` low) stops the whole pipeline without losing anything. The links carry the
+//! (`mem$ready` low) stops the whole pipeline without losing anything. The links carry the
 //! model's transactions field for field: `Sorted`, `TriangleSetupOut`, `SpanCmd`, `Pixel`.
 //!
 //! **A frame.** Clear the buffers (depth to z_max, colour to the background), set `width`,
 //! `height` (1 to 2^N) and `cull_back`, send the triangles (the model's `Vtx`
 //! words, `model::input::to_fixed`) with `inp_last` on the final one; `done` rises once
 //! that triangle has gone through and every unit is empty, and stays high until the next
-//! triangle is taken. `verdict_*` report each triangle `cull_sort` lets go (see
+//! triangle is taken. `verdict$*` report each triangle `cull_sort` lets go (see
 //! `rtl::cull_sort`).
 //!
 //! **Parameters.** `N`, the size class (10, 11 or 12; `crate::CLASSES`): screens up to
@@ -27,12 +27,14 @@
 //! (`triangle_setup`). The span FIFO holds `span_fifo::SPAN_FIFO` commands, as
 //! `model::cycles::Timing::span_fifo`.
 //!
-//! **Units present.** [`RasterCore`] (setup with the divider, edge walk, span FIFO, span)
-//! always; `CULL_SORT = 0` leaves out `cull_sort` (the host culls and sorts: sorted
-//! triangles with their clip crossings in, [`RasterTopSorted`]), `PIXEL_OUT = 0` leaves
-//! out `pixel_out` (the fragment stream leaves on `out$*` for the host's own depth test and
-//! memory, [`RasterTopFragments`]), both give [`RasterTopCore`]. Every variant is emitted
-//! as module `raster_top`; `model::cycles::Timing` has the same two switches.
+//! **Units present.** The core, [`RasterTopCore`] (setup with the divider, edge walk, span
+//! FIFO, span: sorted triangles in, fragments out), always; `CULL_SORT = 1` puts `cull_sort`
+//! in front of it ([`RasterTopFragments`]: the host sends triangles as submitted, rather
+//! than sorted with their clip crossings), `PIXEL_OUT = 1` puts `pixel_out` behind
+//! ([`RasterTopSorted`]: the memory port `mem$*` rather than the fragment stream `out$*`
+//! for a depth test and memory of the host's own), both give [`RasterTop`]. Each variant
+//! is a block holding the smaller one, emitted as module `raster_top`;
+//! `model::cycles::Timing` has the same two switches.
 //!
 //! **Timing** (`model::cycles::scanline_frame` predicts it cycle for cycle when the memory
 //! never stalls): cull_sort 1 cycle; setup `model::cycles::setup_latency`; the edge walk's
@@ -41,67 +43,91 @@
 //! takes a command, then a pixel per cycle; the write 2 cycles after the pixel.
 //! Model: `model::render::render` with `Method::Scanline`. Emitted: `hdl-out/raster_top.v`.
 
-use super::cull_sort::{CullSort, OUTCODE};
+use super::cull_sort::CullSort;
 use super::edge_walk::EdgeWalk;
-use super::links::{PixelSource, SortedSink, SortedSource, SpanCmdSource, TriangleSetupSource, TriangleSink};
+use super::links::{
+    MemoryPort, PixelSource, SortedSink, SortedSource, SpanCmdSource, TriangleSetupSource, TriangleSink,
+    Verdict,
+};
 use super::pixel_out::PixelOut;
 use super::span::Span;
 use super::span_fifo::SpanFifo;
 use super::triangle_setup::TriangleSetup;
-use super::widths::{ADDR, DEPTH, DIM, RGB};
+use super::widths::DIM;
 use crate::emit::{ports, verilog, Emitted};
 use crate::Params;
 use rust_hdl::prelude::*;
 
-/// The part of `raster_top` that is always present: `triangle_setup` (with the divider)
-/// -> `edge_walk` -> the span FIFO -> `span`. Sorted triangles in (`model::cull_sort::Sorted`
-/// on the link `inp`), fragments out (`model::span::Pixel` on `span`'s
-/// `out$*` ports); `idle` when it holds no work.
+/// `raster_top` with neither `cull_sort` nor `pixel_out` (`CULL_SORT = 0`, `PIXEL_OUT = 0`),
+/// the core every variant holds: `triangle_setup` (with the divider) -> `edge_walk` -> the
+/// span FIFO -> `span`. Sorted triangles in (`model::cull_sort::Sorted`, with their clip
+/// crossings, on the link `inp`), fragments out (`model::span::Pixel` on `out`).
 #[derive(LogicBlock)]
-pub struct RasterCore {
+pub struct RasterTopCore {
     pub clock: Signal<In, Clock>,
+    /// Screen size in pixels, 1 to 2^CLASS each (the size class); constant during a frame.
     pub width: Signal<In, Bits<DIM>>,
     pub height: Signal<In, Bits<DIM>>,
     /// The sorted triangles in.
     pub inp: SortedSink,
-    /// The fragments.
+    /// The frame's last triangle (with `inp.valid`).
+    pub inp_last: Signal<In, Bit>,
+    /// The fragments, before any depth test.
     pub out: PixelSource,
     /// No triangle, span command or pixel held.
     pub idle: Signal<Out, Bit>,
+    /// The frame is drawn: the `inp_last` triangle has been taken and every unit is empty.
+    pub done: Signal<Out, Bit>,
     triangle_setup: TriangleSetup,
     edge_walk: EdgeWalk,
     fifo: SpanFifo,
     span: Span,
     /// Setup holds a triangle (taken, not yet handed to the edge walk).
     in_setup: DFF<Bit>,
+    /// The last triangle taken had `inp_last`.
+    last_in: DFF<Bit>,
 }
 
-impl RasterCore {
+impl RasterTopCore {
     /// The core with `k` multipliers in setup and an `l`-stage divider.
-    pub fn new(k: usize, l: usize) -> Result<RasterCore, String> {
-        Ok(RasterCore {
+    pub fn new(k: usize, l: usize) -> Result<RasterTopCore, String> {
+        Ok(RasterTopCore {
             clock: Default::default(),
             width: Default::default(),
             height: Default::default(),
             inp: Default::default(),
+            inp_last: Default::default(),
             out: Default::default(),
             idle: Default::default(),
+            done: Default::default(),
             triangle_setup: TriangleSetup::new(k, l)?,
             edge_walk: Default::default(),
             fifo: Default::default(),
             span: Default::default(),
             in_setup: Default::default(),
+            last_in: Default::default(),
         })
     }
 }
 
-impl Logic for RasterCore {
+/// The core at the units' default parameters (`UNITS`: 001's 7 multipliers and 5 divider
+/// stages).
+impl Default for RasterTopCore {
+    fn default() -> Self {
+        RasterTopCore::new(crate::K.default as usize, crate::L.default as usize).expect("the default K and L are supported")
+    }
+}
+
+impl Logic for RasterTopCore {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, in_setup);
+        dff_setup!(self, clock, in_setup, last_in);
         clock!(self, clock, triangle_setup, edge_walk, fifo, span);
         // Sorted triangles in.
         SortedSink::link(&mut self.inp, &mut self.triangle_setup.inp);
+        if self.inp.valid.val() & self.inp.ready.val() {
+            self.last_in.d.next = self.inp_last.val();
+        }
 
         // triangle_setup -> edge_walk: `TriangleSetupOut`.
         self.edge_walk.height.next = self.height.val();
@@ -124,217 +150,179 @@ impl Logic for RasterCore {
             & self.edge_walk.inp.ready.val()
             & self.fifo.empty.val()
             & self.span.idle.val();
+        self.done.next = self.last_in.q.val() & self.idle.val();
     }
 }
 
-/// Declares one `raster_top` of the units the parameters choose: the [`RasterCore`] with
-/// `cull_sort` in front of it (`cull_sort: <its field>`: triangles in on the link `inp`) or
-/// not (`sorted: <the link's field>`: the host sends sorted triangles with their clip
-/// crossings), and `pixel_out` behind it (`pixel_out: <its field>`) or not (`fragments:
-/// <the link's field>`: the fragments leave on `out$*`); `inputs` and `outputs` name the
-/// ports these add, for the simulators' pins. Each choice is an optional group of fields,
-/// constructor and kernel statements, driven by the name given. (A macro, as rust-hdl's
-/// `LogicBlock` takes its ports from the struct's fields; one arm, so that every `self` is
-/// the kernel's.)
-macro_rules! raster_top_variant {
-    ($(#[$m:meta])* $name:ident {
-        $(cull_sort: $cs:ident,)?
-        $(sorted: $ic:ident,)?
-        $(pixel_out: $po:ident,)?
-        $(fragments: $ov:ident,)?
-        inputs: [$($i:ident),* $(,)?],
-        outputs: [$($o:ident),* $(,)?] $(,)?
-    }) => {
-        $(#[$m])*
-        #[derive(LogicBlock)]
-        pub struct $name {
-            pub clock: Signal<In, Clock>,
-            /// Screen size in pixels, 1 to 2^CLASS each (the size class); constant during a frame.
-            pub width: Signal<In, Bits<DIM>>,
-            pub height: Signal<In, Bits<DIM>>,
-            /// The frame's last triangle (with `inp.valid`).
-            pub inp_last: Signal<In, Bit>,
-            $(
-                /// The triangles, as submitted (`model::input::Vtx` per vertex).
-                pub inp: TriangleSink,
-                /// Drop back faces (`model::cull_sort::Cull::Back`).
-                pub cull_back: Signal<In, Bit>,
-                /// A triangle leaves `cull_sort` (passed or rejected), with why (`rtl::cull_sort`).
-                pub verdict_valid: Signal<Out, Bit>,
-                pub verdict_code: Signal<Out, Bits<2>>,
-                pub verdict_outside: Signal<Out, Bits<OUTCODE>>,
-                $cs: CullSort,
-            )?
-            $(
-                /// The sorted triangles with the clip planes they cross (`model::cull_sort::Sorted`).
-                pub $ic: SortedSink,
-            )?
-            $(
-                /// The memory port of `pixel_out` (see `rtl::pixel_out`).
-                pub mem_ready: Signal<In, Bit>,
-                pub rd_en: Signal<Out, Bit>,
-                pub rd_addr: Signal<Out, Bits<ADDR>>,
-                pub rd_z: Signal<In, Bits<DEPTH>>,
-                pub wr_en: Signal<Out, Bit>,
-                pub wr_addr: Signal<Out, Bits<ADDR>>,
-                pub wr_z: Signal<Out, Bits<DEPTH>>,
-                pub wr_rgb: Signal<Out, Bits<RGB>>,
-                $po: PixelOut,
-            )?
-            $(
-                /// The fragments (`model::span::Pixel`), before any depth test, as a stream.
-                pub $ov: PixelSource,
-            )?
-            /// The frame is drawn: the `inp_last` triangle has been taken and every unit is empty.
-            pub done: Signal<Out, Bit>,
-            core: RasterCore,
-            /// The last triangle taken had `inp_last`.
-            last_in: DFF<Bit>,
-        }
+crate::pins!(RasterTopCore {
+    clock: clock,
+    inputs: [width, height, inp_last],
+    outputs: [idle, done],
+    links: [inp, out],
+});
 
-        impl $name {
-            /// The rasterizer with `k` multipliers in setup and an `l`-stage divider.
-            pub fn new(k: usize, l: usize) -> Result<$name, String> {
-                Ok($name {
-                    clock: Default::default(),
-                    width: Default::default(),
-                    height: Default::default(),
-                    inp_last: Default::default(),
-                    $(
-                        inp: Default::default(),
-                        cull_back: Default::default(),
-                        verdict_valid: Default::default(),
-                        verdict_code: Default::default(),
-                        verdict_outside: Default::default(),
-                        $cs: Default::default(),
-                    )?
-                    $( $ic: Default::default(), )?
-                    $(
-                        mem_ready: Default::default(),
-                        rd_en: Default::default(),
-                        rd_addr: Default::default(),
-                        rd_z: Default::default(),
-                        wr_en: Default::default(),
-                        wr_addr: Default::default(),
-                        wr_z: Default::default(),
-                        wr_rgb: Default::default(),
-                        $po: Default::default(),
-                    )?
-                    $( $ov: Default::default(), )?
-                    done: Default::default(),
-                    core: RasterCore::new(k, l)?,
-                    last_in: Default::default(),
-                })
-            }
-        }
-
-        impl Logic for $name {
-            #[hdl_gen]
-            fn update(&mut self) {
-                dff_setup!(self, clock, last_in);
-                clock!(self, clock, core);
-                self.core.width.next = self.width.val();
-                self.core.height.next = self.height.val();
-                // Frame done: after the last triangle, every unit empty.
-                self.done.next = self.last_in.q.val() & self.core.idle.val();
-                $(
-                    // Triangles in: cull_sort, then the sorted triangle to the core.
-                    self.$cs.clock.next = self.clock.val();
-                    self.$cs.width.next = self.width.val();
-                    self.$cs.height.next = self.height.val();
-                    self.$cs.cull_back.next = self.cull_back.val();
-                    TriangleSink::link(&mut self.inp, &mut self.$cs.inp);
-                    self.verdict_valid.next = self.$cs.verdict_valid.val();
-                    self.verdict_code.next = self.$cs.verdict_code.val();
-                    self.verdict_outside.next = self.$cs.verdict_outside.val();
-                    if self.inp.valid.val() & self.inp.ready.val() {
-                        self.last_in.d.next = self.inp_last.val();
-                    }
-                    SortedSource::join(&mut self.$cs.out, &mut self.core.inp);
-                    if self.$cs.out.valid.val() {
-                        self.done.next = false;
-                    }
-                )?
-                $(
-                    // Sorted triangles in, straight to the core.
-                    SortedSink::link(&mut self.$ic, &mut self.core.inp);
-                    if self.$ic.valid.val() & self.$ic.ready.val() {
-                        self.last_in.d.next = self.inp_last.val();
-                    }
-                )?
-                $(
-                    // The core -> pixel_out: `Pixel`; pixel_out <-> memory.
-                    self.$po.clock.next = self.clock.val();
-                    PixelSource::join(&mut self.core.out, &mut self.$po.inp);
-                    self.$po.mem_ready.next = self.mem_ready.val();
-                    self.$po.rd_z.next = self.rd_z.val();
-                    self.rd_en.next = self.$po.rd_en.val();
-                    self.rd_addr.next = self.$po.rd_addr.val();
-                    self.wr_en.next = self.$po.wr_en.val();
-                    self.wr_addr.next = self.$po.wr_addr.val();
-                    self.wr_z.next = self.$po.wr_z.val();
-                    self.wr_rgb.next = self.$po.wr_rgb.val();
-                    if !self.$po.idle.val() {
-                        self.done.next = false;
-                    }
-                )?
-                $(
-                    // Fragments out.
-                    PixelSource::link(&mut self.$ov, &mut self.core.out);
-                )?
-            }
-        }
-
-        crate::pins!($name {
-            clock: clock,
-            inputs: [width, height, inp_last, $($i,)*],
-            outputs: [done, $($o,)*],
-            links: [inp, $($ov)?],
-        });
-    };
+/// `raster_top` without `pixel_out` (`CULL_SORT = 1`, `PIXEL_OUT = 0`): `cull_sort` in
+/// front of the core. Triangles in as submitted (`model::input::Vtx` per vertex), `cull_sort`'s
+/// verdicts, and the fragment stream out (`out`) for a depth test and memory of the host's
+/// own.
+#[derive(LogicBlock, Default)]
+pub struct RasterTopFragments {
+    pub clock: Signal<In, Clock>,
+    /// As [`RasterTopCore`]'s.
+    pub width: Signal<In, Bits<DIM>>,
+    pub height: Signal<In, Bits<DIM>>,
+    /// The triangles, as submitted.
+    pub inp: TriangleSink,
+    pub inp_last: Signal<In, Bit>,
+    /// Drop back faces (`model::cull_sort::Cull::Back`).
+    pub cull_back: Signal<In, Bit>,
+    /// Each triangle `cull_sort` lets go (passed or rejected), and why.
+    pub verdict: Verdict,
+    pub out: PixelSource,
+    /// `inp_last`'s triangle taken (and perhaps culled), and every unit empty.
+    pub done: Signal<Out, Bit>,
+    cull_sort: CullSort,
+    core: RasterTopCore,
+    last_in: DFF<Bit>,
 }
 
-raster_top_variant!(
-    /// The whole scanline rasterizer (`CULL_SORT = 1`, `PIXEL_OUT = 1`): triangles in
-    /// (`model::input::Vtx` per vertex, `cull_sort`'s inputs), `cull_sort`'s verdicts,
-    /// `pixel_out`'s memory port, and `done`.
-    RasterTop {
-        cull_sort: cull_sort,
-        pixel_out: pixel_out,
-        inputs: [cull_back, mem_ready, rd_z],
-        outputs: [verdict_valid, verdict_code, verdict_outside, rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb],
+impl RasterTopFragments {
+    /// `cull_sort` and the core with `k` multipliers in setup and an `l`-stage divider.
+    pub fn new(k: usize, l: usize) -> Result<RasterTopFragments, String> {
+        Ok(RasterTopFragments { core: RasterTopCore::new(k, l)?, ..Default::default() })
     }
-);
-raster_top_variant!(
-    /// `raster_top` without `pixel_out` (`PIXEL_OUT = 0`): triangles in, the fragment
-    /// stream out (`out$*`) for a depth test and memory of the host's own.
-    RasterTopFragments {
-        cull_sort: cull_sort,
-        fragments: out,
-        inputs: [cull_back],
-        outputs: [verdict_valid, verdict_code, verdict_outside],
+}
+
+impl Logic for RasterTopFragments {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, last_in);
+        clock!(self, clock, cull_sort, core);
+        self.cull_sort.width.next = self.width.val();
+        self.cull_sort.height.next = self.height.val();
+        self.cull_sort.cull_back.next = self.cull_back.val();
+        self.core.width.next = self.width.val();
+        self.core.height.next = self.height.val();
+        // Triangles into cull_sort, the sorted ones on to the core, which does not see
+        // the frame's end: a culled last triangle never reaches it.
+        TriangleSink::link(&mut self.inp, &mut self.cull_sort.inp);
+        Verdict::link(&mut self.verdict, &mut self.cull_sort.verdict);
+        SortedSource::join(&mut self.cull_sort.out, &mut self.core.inp);
+        self.core.inp_last.next = false;
+        PixelSource::link(&mut self.out, &mut self.core.out);
+        if self.inp.valid.val() & self.inp.ready.val() {
+            self.last_in.d.next = self.inp_last.val();
+        }
+        self.done.next = self.last_in.q.val() & !self.cull_sort.out.valid.val() & self.core.idle.val();
     }
-);
-raster_top_variant!(
-    /// `raster_top` without `cull_sort` (`CULL_SORT = 0`): the host culls and sorts, and
-    /// sends the sorted triangles (`model::cull_sort::Sorted`) with their clip crossings.
-    RasterTopSorted {
-        sorted: inp,
-        pixel_out: pixel_out,
-        inputs: [mem_ready, rd_z],
-        outputs: [rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb],
+}
+
+crate::pins!(RasterTopFragments {
+    clock: clock,
+    inputs: [width, height, inp_last, cull_back],
+    outputs: [done],
+    links: [inp, out, verdict],
+});
+
+/// `raster_top` without `cull_sort` (`CULL_SORT = 0`, `PIXEL_OUT = 1`): the core and
+/// `pixel_out` behind it. The host culls and sorts, and sends the sorted triangles
+/// (`model::cull_sort::Sorted`) with their clip crossings; depth and colour go to the
+/// memory port `mem` (`rtl::pixel_out`).
+#[derive(LogicBlock, Default)]
+pub struct RasterTopSorted {
+    pub clock: Signal<In, Clock>,
+    /// As [`RasterTopCore`]'s.
+    pub width: Signal<In, Bits<DIM>>,
+    pub height: Signal<In, Bits<DIM>>,
+    pub inp: SortedSink,
+    pub inp_last: Signal<In, Bit>,
+    /// The memory port of `pixel_out`.
+    pub mem: MemoryPort,
+    /// The core is done and `pixel_out` has written the last pixel.
+    pub done: Signal<Out, Bit>,
+    core: RasterTopCore,
+    pixel_out: PixelOut,
+}
+
+impl RasterTopSorted {
+    /// The core with `k` multipliers in setup and an `l`-stage divider, and `pixel_out`.
+    pub fn new(k: usize, l: usize) -> Result<RasterTopSorted, String> {
+        Ok(RasterTopSorted { core: RasterTopCore::new(k, l)?, ..Default::default() })
     }
-);
-raster_top_variant!(
-    /// `raster_top` with neither (`CULL_SORT = 0`, `PIXEL_OUT = 0`): sorted triangles in,
-    /// fragments out.
-    RasterTopCore {
-        sorted: inp,
-        fragments: out,
-        inputs: [],
-        outputs: [],
+}
+
+impl Logic for RasterTopSorted {
+    #[hdl_gen]
+    fn update(&mut self) {
+        clock!(self, clock, core, pixel_out);
+        self.core.width.next = self.width.val();
+        self.core.height.next = self.height.val();
+        SortedSink::link(&mut self.inp, &mut self.core.inp);
+        self.core.inp_last.next = self.inp_last.val();
+        PixelSource::join(&mut self.core.out, &mut self.pixel_out.inp);
+        MemoryPort::link(&mut self.mem, &mut self.pixel_out.mem);
+        self.done.next = self.core.done.val() & self.pixel_out.idle.val();
     }
-);
+}
+
+crate::pins!(RasterTopSorted {
+    clock: clock,
+    inputs: [width, height, inp_last],
+    outputs: [done],
+    links: [inp, mem],
+});
+
+/// The whole scanline rasterizer (`CULL_SORT = 1`, `PIXEL_OUT = 1`): [`RasterTopFragments`]
+/// (`cull_sort` and the core) and `pixel_out` behind it. Triangles in as submitted,
+/// `cull_sort`'s verdicts, the memory port, and `done`.
+#[derive(LogicBlock, Default)]
+pub struct RasterTop {
+    pub clock: Signal<In, Clock>,
+    /// As [`RasterTopFragments`]'s.
+    pub width: Signal<In, Bits<DIM>>,
+    pub height: Signal<In, Bits<DIM>>,
+    pub inp: TriangleSink,
+    pub inp_last: Signal<In, Bit>,
+    pub cull_back: Signal<In, Bit>,
+    pub verdict: Verdict,
+    /// The memory port of `pixel_out`.
+    pub mem: MemoryPort,
+    /// The front is done and `pixel_out` has written the last pixel.
+    pub done: Signal<Out, Bit>,
+    front: RasterTopFragments,
+    pixel_out: PixelOut,
+}
+
+impl RasterTop {
+    /// `cull_sort`, the core with `k` multipliers in setup and an `l`-stage divider, and
+    /// `pixel_out`.
+    pub fn new(k: usize, l: usize) -> Result<RasterTop, String> {
+        Ok(RasterTop { front: RasterTopFragments::new(k, l)?, ..Default::default() })
+    }
+}
+
+impl Logic for RasterTop {
+    #[hdl_gen]
+    fn update(&mut self) {
+        clock!(self, clock, front, pixel_out);
+        self.front.width.next = self.width.val();
+        self.front.height.next = self.height.val();
+        self.front.cull_back.next = self.cull_back.val();
+        TriangleSink::link(&mut self.inp, &mut self.front.inp);
+        self.front.inp_last.next = self.inp_last.val();
+        Verdict::link(&mut self.verdict, &mut self.front.verdict);
+        PixelSource::join(&mut self.front.out, &mut self.pixel_out.inp);
+        MemoryPort::link(&mut self.mem, &mut self.pixel_out.mem);
+        self.done.next = self.front.done.val() & self.pixel_out.idle.val();
+    }
+}
+
+crate::pins!(RasterTop {
+    clock: clock,
+    inputs: [width, height, inp_last, cull_back],
+    outputs: [done],
+    links: [inp, mem, verdict],
+});
 
 /// `unit`, connected and emitted as `raster_top` with `params`.
 fn emitted<U: Block>(mut unit: U, params: &Params) -> Emitted {

@@ -90,8 +90,8 @@ pub fn named(d: &Drive) -> Vec<(String, Value)> {
         ("cull_back".into(), Value::new(1, d.cull_back as u128)),
         ("inp$valid".into(), Value::new(1, d.inp_valid as u128)),
         ("inp_last".into(), Value::new(1, d.inp_last as u128)),
-        ("mem_ready".into(), Value::new(1, d.mem_ready as u128)),
-        ("rd_z".into(), Value::new(w.depth, d.rd_z as u128)),
+        ("mem$ready".into(), Value::new(1, d.mem_ready as u128)),
+        ("mem$rd_z".into(), Value::new(w.depth, d.rd_z as u128)),
     ];
     out.extend(triangle_pins(&d.build, &d.tri));
     out
@@ -121,8 +121,8 @@ pub fn sense(o: &Outputs) -> Sense {
     let high = |pin: &str| unsigned(o.get(pin)) == 1;
     Sense {
         inp_ready: high("inp$ready"),
-        verdict_valid: high("verdict_valid"),
-        verdict_code: unsigned(o.get("verdict_code")) as u8,
+        verdict_valid: high("verdict$valid"),
+        verdict_code: unsigned(o.get("verdict$code")) as u8,
         req: Request::of(o),
         done: high("done"),
     }
@@ -134,8 +134,9 @@ fn cycle_by_name(sim: &mut impl Sim, d: &Drive) -> Sense {
         sim.set(&pin, &v);
     }
     sim.settle();
-    let read = ["inp$ready", "verdict_valid", "verdict_code", "done", "rd_en", "rd_addr", "wr_en", "wr_addr"];
-    let o = Outputs(read.iter().chain(&["wr_z", "wr_rgb"]).map(|p| (p.to_string(), sim.get(p))).collect());
+    let read =
+        ["inp$ready", "verdict$valid", "verdict$code", "done", "mem$rd_en", "mem$rd_addr", "mem$wr_en", "mem$wr_addr"];
+    let o = Outputs(read.iter().chain(&["mem$wr_z", "mem$wr_rgb"]).map(|p| (p.to_string(), sim.get(p))).collect());
     sim.clock();
     sense(&o)
 }
@@ -154,11 +155,11 @@ pub struct RasterTopVl {
     vl: VlSim,
     build: Build,
     clock: PortId,
-    /// width, height, cull_back, inp$valid, inp_last, mem_ready, rd_z.
+    /// width, height, cull_back, inp$valid, inp_last, mem$ready, mem$rd_z.
     inputs: [PortId; 7],
     /// Per vertex: x, y, z, c0, c1, c2, iw.
     vertices: [[PortId; 7]; 3],
-    /// inp$ready, verdict_valid, verdict_code, done, rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb.
+    /// inp$ready, verdict$valid, verdict$code, done, mem$rd_en, mem$rd_addr, mem$wr_en, mem$wr_addr, mem$wr_z, mem$wr_rgb.
     outputs: [PortId; 10],
 }
 
@@ -167,22 +168,22 @@ impl RasterTopVl {
     /// build `build`.
     pub fn new(vl: VlSim, build: Build) -> Self {
         let ids = |names: &[&str]| names.iter().map(|n| vl.port(n)).collect::<Vec<_>>();
-        let inputs = ids(&["width", "height", "cull_back", "inp$valid", "inp_last", "mem_ready", "rd_z"]);
+        let inputs = ids(&["width", "height", "cull_back", "inp$valid", "inp_last", "mem$ready", "mem$rd_z"]);
         let vertices = [0, 1, 2].map(|k| {
             let names = ["x", "y", "z", "c0", "c1", "c2", "iw"].map(|f| format!("inp$v{k}_{f}"));
             names.map(|n| vl.port(&n))
         });
         let outputs = ids(&[
             "inp$ready",
-            "verdict_valid",
-            "verdict_code",
+            "verdict$valid",
+            "verdict$code",
             "done",
-            "rd_en",
-            "rd_addr",
-            "wr_en",
-            "wr_addr",
-            "wr_z",
-            "wr_rgb",
+            "mem$rd_en",
+            "mem$rd_addr",
+            "mem$wr_en",
+            "mem$wr_addr",
+            "mem$wr_z",
+            "mem$wr_rgb",
         ]);
         RasterTopVl {
             clock: vl.port("clock"),
@@ -264,7 +265,7 @@ pub struct Frame<'a> {
 /// How the memory behaves.
 pub struct MemoryModel<'a> {
     pub read_during_write: ReadDuringWrite,
-    /// Whether the memory is ready in cycle `c` (`mem_ready`).
+    /// Whether the memory is ready in cycle `c` (`mem$ready`).
     pub ready: &'a mut dyn FnMut(u64) -> bool,
 }
 

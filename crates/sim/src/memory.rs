@@ -1,6 +1,6 @@
 //! The depth and colour buffers behind `pixel_out`'s memory port, in Rust (see
 //! `rtl::pixel_out` for the port's contract): one word per pixel at address `{y, x}` (`x` in
-//! the low `n` bits for size class `n`), reads returning data the cycle after, `mem_ready`
+//! the low `n` bits for size class `n`), reads returning data the cycle after, `mem$ready`
 //! stalling both.
 
 use crate::streams::unsigned;
@@ -38,16 +38,16 @@ pub struct Request {
 }
 
 impl Request {
-    /// Read off a unit's outputs (`rd_en`, `rd_addr`, `wr_en`, `wr_addr`, `wr_z`, `wr_rgb`).
+    /// Read off a unit's outputs (`mem$rd_en`, ... `mem$wr_rgb`: `rtl::links::MemoryPort`).
     pub fn of(o: &Outputs) -> Request {
         let get = |p: &str| unsigned(o.get(p)) as u32;
         Request {
-            rd_en: get("rd_en") == 1,
-            rd_addr: get("rd_addr"),
-            wr_en: get("wr_en") == 1,
-            wr_addr: get("wr_addr"),
-            wr_z: get("wr_z"),
-            wr_rgb: get("wr_rgb"),
+            rd_en: get("mem$rd_en") == 1,
+            rd_addr: get("mem$rd_addr"),
+            wr_en: get("mem$wr_en") == 1,
+            wr_addr: get("mem$wr_addr"),
+            wr_z: get("mem$wr_z"),
+            wr_rgb: get("mem$wr_rgb"),
         }
     }
 }
@@ -112,7 +112,7 @@ impl Memory {
         (y * self.width + x) as usize
     }
 
-    /// One rising edge with `req` asked for: with `mem_ready` the memory performs the
+    /// One rising edge with `req` asked for: with `mem$ready` the memory performs the
     /// read and the write. Returns the write, if one was performed.
     pub fn edge(&mut self, mem_ready: bool, req: &Request) -> Option<Write> {
         if !mem_ready {
