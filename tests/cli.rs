@@ -245,3 +245,72 @@ fn cli_emits_and_renders_at_other_formats() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(!out.status.success() && err.contains("does not hold that build"), "{err}");
 }
+
+/// `edgepaint sweep`: each row's accuracy is `edgepaint accuracy`'s at the row's formats;
+/// the charts, the report and both tables are written; shards merge; a grid with an
+/// impossible point fails naming the file and the point.
+#[test]
+fn cli_sweep_rows_equal_accuracy_and_bad_grids_fail() {
+    let d = scratch("sweep");
+    let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
+    let grid = write(
+        &d,
+        "grid.json",
+        r#"{"sensitivity": {"xy.frac": [3], "bary.frac": [12]}, "joint": {"samples": 1, "seed": 1}}"#,
+    );
+    let dir = d.join("out");
+    let out =
+        edgepaint(&["sweep", cube, "--size", "40x30", "--grid", &grid, "--jobs", "2", "-o", dir.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    for f in ["results.jsonl", "results.csv", "report.md", "error_vs_cycles.png", "error_vs_cycles.svg"] {
+        assert!(dir.join(f).is_file(), "{f} written");
+    }
+    let rows: Vec<serde_json::Value> = std::fs::read_to_string(dir.join("results.jsonl"))
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(rows.len(), 7, "default, xy.frac=3 and a joint point per method, and bary.frac=12 for vector");
+    for row in &rows {
+        let formats = write(&d, "formats.json", &row["formats"].to_string());
+        let json = d.join("accuracy.json");
+        let engine = row["method"].as_str().unwrap();
+        let args = ["accuracy", cube, "--size", "40x30", "--engine", engine, "--formats", &formats, "--json"];
+        let out = edgepaint(&[&args[..], &[json.to_str().unwrap()]].concat());
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let acc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+        let acc = &acc[0];
+        assert_eq!(row["psnr_db"], acc["errors"]["psnr_db"], "{}", row["point"]);
+        assert_eq!(row["color_max_lsb"], acc["errors"]["color_max"], "{}", row["point"]);
+        assert_eq!(row["depth_max_lsb"], acc["depth_max_lsb"], "{}", row["point"]);
+        assert_eq!(row["coverage_differs"], acc["coverage_differs"], "{}", row["point"]);
+        assert_eq!(row["cycles"], acc["cycles"], "{}", row["point"]);
+    }
+
+    let shards: Vec<String> = (0..2)
+        .map(|i| {
+            let s = d.join(format!("shard{i}"));
+            let shard = format!("{i}/2");
+            let args =
+                ["sweep", cube, "--size", "40x30", "--grid", &grid, "--shard", &shard, "-o", s.to_str().unwrap()];
+            assert!(edgepaint(&args).status.success());
+            s.to_str().unwrap().to_owned()
+        })
+        .collect();
+    let merged = d.join("merged");
+    let out = edgepaint(&["sweep", "merge", &shards[0], &shards[1], "-o", merged.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let read = |p: &Path| std::fs::read_to_string(p.join("results.jsonl")).unwrap();
+    assert_eq!(read(&merged), read(&dir), "the merged shards are the whole sweep");
+
+    let bad = write(&d, "bad-grid.json", r#"{"methods": ["scanline"], "sensitivity": {"z.frac": [40]}}"#);
+    fails_with(
+        &["sweep", cube, "--grid", &bad, "-o", d.join("bad").to_str().unwrap()],
+        &["cube", "scanline z.frac=40", "depth buffer"],
+    );
+    let unknown = write(&d, "unknown-grid.json", r#"{"sensitivity": {"w.frac": [4]}}"#);
+    fails_with(
+        &["sweep", cube, "--grid", &unknown, "-o", d.join("bad").to_str().unwrap()],
+        &["unknown-grid.json", "w.frac"],
+    );
+}

@@ -33,6 +33,8 @@ enum Command {
     Emit(cmd::emit::Args),
     /// Synthesize emitted units and tabulate their area and speed (Markdown and JSON).
     Report(cmd::report::Args),
+    /// Sweep methods and number formats over scenes: accuracy, speed and cost per design point, charted.
+    Sweep(cmd::sweep::Args),
 }
 
 fn main() -> ExitCode {
@@ -44,6 +46,7 @@ fn main() -> ExitCode {
         Some(Command::Accuracy(a)) => cmd::accuracy::run(a),
         Some(Command::Emit(a)) => cmd::emit::run(a),
         Some(Command::Report(a)) => cmd::report::run(a),
+        Some(Command::Sweep(a)) => cmd::sweep::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

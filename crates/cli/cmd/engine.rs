@@ -26,7 +26,8 @@ pub enum Engine {
 #[derive(clap::Args, Clone, Debug)]
 pub struct FixedArgs {
     /// Number formats: "default" (derived from the resolution), "wide", or a JSON
-    /// file mapping quantities to formats (e.g. {"dc": "S13.30"}); keys left out keep their defaults.
+    /// file mapping quantities to formats (e.g. {"xy": "S11.8 half-up"}); keys left out keep
+    /// their defaults, or follow from the keys given (accumulators, gradients, products).
     #[arg(long, default_value = "default")]
     pub formats: String,
     /// Pixels the vector method evaluates per cycle.

@@ -8,4 +8,5 @@ pub mod rebuild;
 pub mod render;
 pub mod report;
 pub mod rtl;
+pub mod sweep;
 pub mod trilist;

@@ -61,6 +61,22 @@ pub struct Formats {
     pub bary: Fmt,
 }
 
+/// Which of the quantities that follow from others ([`Formats::follow`]) are given as
+/// they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Given {
+    pub z_acc: bool,
+    pub dz: bool,
+    pub c_acc: bool,
+    pub dc: bool,
+    pub ooa_d: bool,
+}
+
+impl Given {
+    /// None given: all derived.
+    pub const NONE: Given = Given { z_acc: false, dz: false, c_acc: false, dc: false, ooa_d: false };
+}
+
 /// Subpixel bits of the default vertex format (1/16 pixel, as is usual).
 pub const SUBPIXEL_BITS: u32 = 4;
 
@@ -107,22 +123,69 @@ impl Formats {
 
     /// Defaults for screens up to 2^n pixels wide and high. A `const fn`, so
     /// that RTL port widths can be read off it at compile time:
-    /// `Signed<{ Formats::for_n(10).xy.bits() as usize }>`.
+    /// `Signed<{ Formats::for_n(10).xy.bits() as usize }>`. The knobs (`xy`, `z`, `color`,
+    /// `inv_w`, `ooa`, `bary`) are set here; the rest follow from them ([`Formats::follow`]).
     pub const fn for_n(n: u32) -> Formats {
         let s = SUBPIXEL_BITS;
+        let unset = Fmt::s(0, 0);
         Formats {
             xy: Fmt::s(n + 1, s).half_up(),
             z: Fmt::s(1, 16).half_up(),
             color: Fmt::u(8, 0).half_up().saturating(),
             inv_w: Fmt::u(1, 15).half_up(),
             ooa: Fmt::u(1, 24),
-            ooa_d: Fmt::s(21, n + 25),
-            dz: Fmt::s(1 + s, n + 24),
-            z_acc: Fmt::s(1, n + 24),
-            dc: Fmt::s(9 + s, n + 12),
-            c_acc: Fmt::s(9, n + 12),
+            ooa_d: unset,
+            dz: unset,
+            z_acc: unset,
+            dc: unset,
+            c_acc: unset,
             bary: Fmt::s(1, n + 16),
         }
+        .follow(n, Given::NONE)
+    }
+
+    /// `self` with every dependent quantity not in `given` derived, by the defaults' rules,
+    /// from the knobs for size class `n` (s = `xy.frac`):
+    ///
+    /// | quantity | rule | class 10 default |
+    /// |---|---|---|
+    /// | `z_acc` | S1.(n + z.frac + 8) | S1.34 |
+    /// | `dz` | S(z_acc.int + s).(z_acc.frac): the modular minimum | S5.34 |
+    /// | `c_acc` | S9.(n + color.frac + 12) | S9.22 |
+    /// | `dc` | S(c_acc.int + s).(c_acc.frac) | S13.22 |
+    /// | `ooa_d` | S(max(dz.int + z.frac, dc.int + color.frac)).(max(n + ooa.frac + 1, dc.frac, dz.frac - z.frac)) | S21.35 |
+    ///
+    /// So a formats file may name only the knobs a user thinks in (`{"xy": "S11.8
+    /// half-up"}` for 8 subpixel bits) and the accumulators, gradients and products widen
+    /// with them; a quantity it names is kept as given (and checked: [`Formats::check`]).
+    pub const fn follow(self, n: u32, given: Given) -> Formats {
+        const fn max(a: u32, b: u32) -> u32 {
+            if a > b {
+                a
+            } else {
+                b
+            }
+        }
+        let mut f = self;
+        let s = f.xy.frac;
+        if !given.z_acc {
+            f.z_acc = Fmt::s(1, n + f.z.frac + 8);
+        }
+        if !given.dz {
+            f.dz = Fmt::s(f.z_acc.int + s, f.z_acc.frac);
+        }
+        if !given.c_acc {
+            f.c_acc = Fmt::s(9, n + f.color.frac + 12);
+        }
+        if !given.dc {
+            f.dc = Fmt::s(f.c_acc.int + s, f.c_acc.frac);
+        }
+        if !given.ooa_d {
+            let int = max(f.dz.int + f.z.frac, f.dc.int + f.color.frac);
+            let frac = max(max(n + f.ooa.frac + 1, f.dc.frac), f.dz.frac.saturating_sub(f.z.frac));
+            f.ooa_d = Fmt::s(int, frac);
+        }
+        f
     }
 
     /// The smallest integer bits the modular condition allows for `dz`, `dc`
@@ -158,7 +221,9 @@ impl Formats {
         w
     }
 
-    /// Defaults for the resolution with the keys of a JSON object applied on top.
+    /// Defaults for the resolution with the keys of a JSON object applied on top, and the
+    /// quantities it does not name that follow from those it does derived again
+    /// ([`Formats::follow`]).
     pub fn with_overrides(width: u32, height: u32, json: &serde_json::Value) -> Result<Formats, String> {
         let mut v = serde_json::to_value(Formats::for_resolution(width, height)).expect("formats serialise");
         let obj = json.as_object().ok_or("a formats file must be a JSON object mapping quantities to formats")?;
@@ -171,6 +236,15 @@ impl Formats {
             target.insert(k.clone(), val.clone());
         }
         let f: Formats = serde_json::from_value(v).map_err(|e| e.to_string())?;
+        let named = |k: &str| obj.contains_key(k);
+        let given = Given {
+            z_acc: named("z_acc"),
+            dz: named("dz"),
+            c_acc: named("c_acc"),
+            dc: named("dc"),
+            ooa_d: named("ooa_d"),
+        };
+        let f = f.follow(resolution_bits(width, height), given);
         f.check(width, height)?;
         Ok(f)
     }
@@ -354,6 +428,22 @@ impl Default for Build {
 mod tests {
     use super::*;
 
+    /// The defaults are their knobs followed by the rules, and the rules give what the
+    /// modular condition asks for and no more.
+    #[test]
+    fn formats_defaults_are_their_knobs_followed() {
+        for n in 10..=16 {
+            let d = Formats::for_n(n);
+            assert_eq!(d.ooa_d, Fmt::s(21, n + 25));
+            assert_eq!(
+                (d.dz, d.z_acc, d.dc, d.c_acc),
+                (Fmt::s(5, n + 24), Fmt::s(1, n + 24), Fmt::s(13, n + 12), Fmt::s(9, n + 12))
+            );
+            let (dz, dc, ooa_d) = d.modular_ints();
+            assert_eq!((d.dz.int, d.dc.int, d.ooa_d.int), (dz, dc, ooa_d));
+        }
+    }
+
     #[test]
     fn formats_defaults_follow_the_resolution() {
         let f = Formats::for_resolution(640, 480);
@@ -370,6 +460,12 @@ mod tests {
         let j = serde_json::json!({"dc": "S13.30", "c_acc": "S9.30"});
         let f = Formats::with_overrides(640, 480, &j).unwrap();
         assert_eq!(f.dc, Fmt::s(13, 30));
+        // Only the knobs: the accumulators, gradients and products follow.
+        let f = Formats::with_overrides(640, 480, &serde_json::json!({"xy": "S11.8 half-up"})).unwrap();
+        assert_eq!((f.dz, f.dc, f.ooa_d), (Fmt::s(9, 34), Fmt::s(17, 22), Fmt::s(25, 35)));
+        let f = Formats::with_overrides(640, 480, &serde_json::json!({"z": "S1.24 half-up", "color": "U8.2"})).unwrap();
+        assert_eq!((f.z_acc, f.dz, f.c_acc, f.dc), (Fmt::s(1, 42), Fmt::s(5, 42), Fmt::s(9, 24), Fmt::s(13, 24)));
+        assert_eq!(f.ooa_d, Fmt::s(29, 35), "dz.int + z.frac = 29 integer bits, n + ooa.frac + 1 fraction bits");
         let cases = [
             (serde_json::json!({"xy": "S8.4"}), "guard band"),
             (serde_json::json!({"dc": "S13.10"}), "fraction bits of its accumulator"),

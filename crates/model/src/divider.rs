@@ -67,12 +67,16 @@ pub struct Recip {
 }
 
 /// The divider's operands for `1/a` (a >= 1): `a` normalised so its top bit
-/// sits at bit `area_bits - 2`, divided into `2^(area_bits - 2 + ooa.frac)`.
+/// sits at bit `area_bits - 2`, divided into `2^(area_bits - 2 + ooa.frac)`. An `a` wider
+/// than that (the vector method's perspective sum at more `bary` fraction bits than
+/// `area_bits - 1`) keeps its top `area_bits - 1` bits, as the divider's divisor port
+/// holds no more: truncated, a relative error below 2^-(area_bits - 2).
 pub fn recip_operands(a: i128, f: &Formats) -> (DividerIn, u32) {
     assert!(a >= 1, "reciprocal of {a}");
     let top = f.derived().area_bits - 2;
     let exp = 127 - a.leading_zeros();
-    (DividerIn { n: 1i128 << (top + f.ooa.frac), d: a << (top - exp) }, exp)
+    let d = if exp <= top { a << (top - exp) } else { a >> (exp - top) };
+    (DividerIn { n: 1i128 << (top + f.ooa.frac), d }, exp)
 }
 
 /// `1/a` through the divider.
@@ -85,6 +89,20 @@ pub fn reciprocal(a: i128, f: &Formats) -> Recip {
 mod tests {
     use super::*;
     use rand::{Rng, SeedableRng};
+
+    /// A reciprocal of a value wider than the divisor port: its top bits, to the
+    /// mantissa's precision.
+    #[test]
+    fn divider_reciprocal_of_a_wide_value_keeps_its_top_bits() {
+        let f = Formats::for_resolution(64, 64);
+        let top = f.derived().area_bits - 2;
+        for a in [(1i128 << (top + 9)) + 12345, (3i128 << (top + 20)) - 1, 1i128 << (top + 1)] {
+            let r = reciprocal(a, &f);
+            let approx = r.mant as f64 * (-((f.ooa.frac + r.exp) as f64)).exp2();
+            let rel = (approx * a as f64 - 1.0).abs();
+            assert!(rel < 2.0 * (-(f.ooa.frac as f64)).exp2(), "1/{a}: {approx} (relative error {rel})");
+        }
+    }
 
     #[test]
     fn divider_exhaustive_w8_is_floor_division() {

@@ -1,0 +1,20 @@
+//! `edgepaint sweep`: speed against accuracy over methods and number formats.
+//!
+//! A sweep runs every (scene, method, design point) of a [`grid::Grid`] through the
+//! bit-exact models and the float reference (`accuracy::compare`) and writes one
+//! [`row::Row`] per point: the design (every quantity's format, the method's parameters),
+//! its accuracy (PSNR, colour and depth error in LSBs, coverage and depth-order
+//! differences, triangles not drawn), its speed (cycles per frame from `model::cycles`,
+//! pixels per clock, frame time where the clock is known). [`run::run`] spreads the points
+//! over every core and caches each result, so that an interrupted sweep resumes and shards
+//! run on other machines merge ([`store::merge`]).
+//! [`chart::charts`] turns the rows into charts (error against cycles and frame time with
+//! the Pareto front, one sensitivity chart per knob), [`chart::draw`] draws them as PNG
+//! and SVG, and [`report::write`] writes a Markdown report that embeds them.
+
+pub mod chart;
+pub mod grid;
+pub mod report;
+pub mod row;
+pub mod run;
+pub mod store;

@@ -1,0 +1,169 @@
+//! Running a sweep: every (input, design point) through the bit-exact model and the float
+//! reference (`accuracy::compare`), in parallel, each result cached.
+
+use crate::grid::{Method, Point};
+use crate::row::{Row, Source};
+use accuracy::{compare, Setup};
+use model::cycles::Timing;
+use model::render::Method as ModelMethod;
+use rayon::prelude::*;
+use scene::Trilist;
+use std::collections::hash_map::DefaultHasher;
+use std::hash::{Hash, Hasher};
+use std::path::PathBuf;
+
+/// `raster_top`'s clock on ECP5 as placed and routed (README, "Units": the soak's P&R of
+/// the default design), in MHz: the scanline method's clock, measured at the default
+/// design and taken for every other point until the area and clock models exist.
+pub const SCANLINE_CLOCK_MHZ: f64 = 18.7;
+
+/// A scene or trilist to sweep.
+pub struct Input {
+    /// Its file stem (the rows' `scene`).
+    pub name: String,
+    /// A hash of its file's contents and size override: part of each result's cache key.
+    pub key: u64,
+    pub trilist: Trilist,
+    pub background: [f64; 3],
+    pub cull_back: bool,
+}
+
+/// How to run.
+#[derive(Default)]
+pub struct Options {
+    /// Threads (0: one per core).
+    pub jobs: usize,
+    /// Run only tasks `i`, `i + n`, `i + 2n`, ... of the `n` shards (`--shard I/N`).
+    pub shard: Option<(usize, usize)>,
+    /// Where results are cached, one file per task (`<dir>/<key>.json`).
+    pub cache: Option<PathBuf>,
+}
+
+/// One task: an input and a point, with the point's formats and parameters for it.
+struct Task<'a> {
+    input: &'a Input,
+    point: &'a Point,
+    formats: fx::Formats,
+    params: std::collections::BTreeMap<String, u32>,
+}
+
+impl Task<'_> {
+    /// The cache key: the input, the point and its resolved design, edgepaint's version.
+    fn key(&self) -> u64 {
+        let mut h = DefaultHasher::new();
+        let design = serde_json::to_string(&(&self.point, &self.formats, &self.params)).expect("a point serialises");
+        (self.input.key, &self.input.name, design, env!("CARGO_PKG_VERSION")).hash(&mut h);
+        h.finish()
+    }
+
+    /// Renders and measures.
+    fn measure(&self) -> Row {
+        let (method, timing) = match self.point.method {
+            Method::Scanline => (
+                ModelMethod::Scanline,
+                Timing { setup_multipliers: self.params["K"], divider_latency: self.params["L"], ..Timing::default() },
+            ),
+            Method::Vector => {
+                (ModelMethod::Vector { lanes: self.params["lanes"], perspective: true }, Timing::default())
+            }
+        };
+        let setup = Setup {
+            method,
+            formats: self.formats,
+            cull_back: self.input.cull_back,
+            background: self.input.background,
+            timing,
+        };
+        let r = compare(&self.input.trilist, &setup);
+        let clock = (self.point.method == Method::Scanline).then_some(SCANLINE_CLOCK_MHZ);
+        let source = clock.map(|_| if self.point.kind == "default" { Source::Measured } else { Source::Modelled });
+        let p = self.point;
+        let to16 = (16.0 - self.formats.z.frac as f64).exp2();
+        Row {
+            scene: self.input.name.clone(),
+            method: p.method.name().into(),
+            point: p.name.clone(),
+            kind: p.kind.clone(),
+            knob: (p.kind == "sensitivity").then(|| p.set.keys().next().cloned()).flatten(),
+            value: (p.kind == "sensitivity").then(|| p.set.values().next().copied()).flatten(),
+            formats: self.formats.named().iter().map(|(k, f)| (k.to_string(), f.to_string())).collect(),
+            params: self.params.clone(),
+            psnr_db: r.errors.psnr_db,
+            color_rms_lsb: 255.0 * 10f64.powf(-r.errors.psnr_db / 20.0),
+            color_max_lsb: r.errors.color_max,
+            color_mean_lsb: r.errors.color_mean,
+            color_over_1: r.errors.color_over_1,
+            depth_max_lsb: r.depth_max_lsb,
+            depth_mean_lsb: r.depth_mean_lsb,
+            depth_max_lsb16: r.depth_max_lsb * to16,
+            depth_mean_lsb16: r.depth_mean_lsb * to16,
+            coverage_differs: r.coverage_differs,
+            coverage_unexplained: r.coverage_unexplained,
+            winner_differs: r.winner_differs,
+            winner_unexplained: r.winner_unexplained,
+            problems: r.problems,
+            cycles: r.cycles,
+            pixels_per_clock: r.pixels_per_clock,
+            clock_mhz: clock,
+            clock_source: source,
+            frame_us: clock.map(|c| r.cycles as f64 / c),
+        }
+    }
+}
+
+/// Runs every point on every input (the shard's tasks only, with `opts.shard`), reusing
+/// cached results; `done` is called once per task finished. The rows come in canonical
+/// order ([`crate::store::sort`]). Errors: a point impossible for an input (named), or a
+/// cache that cannot be written.
+pub fn run(inputs: &[Input], points: &[Point], opts: &Options, done: &(dyn Fn() + Sync)) -> Result<Vec<Row>, String> {
+    let mut tasks = Vec::new();
+    for input in inputs {
+        for point in points {
+            let (formats, params) =
+                point.resolve(input.trilist.width, input.trilist.height).map_err(|e| format!("{}: {e}", input.name))?;
+            tasks.push(Task { input, point, formats, params });
+        }
+    }
+    if let Some((i, n)) = opts.shard {
+        if n == 0 || i >= n {
+            return Err(format!("shard {i}/{n}: I must be below N"));
+        }
+        tasks = tasks.into_iter().enumerate().filter(|(k, _)| k % n == i).map(|(_, t)| t).collect();
+    }
+    if let Some(dir) = &opts.cache {
+        std::fs::create_dir_all(dir).map_err(|e| format!("{}: cannot create the cache: {e}", dir.display()))?;
+    }
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(opts.jobs).build().map_err(|e| e.to_string())?;
+    let rows: Result<Vec<Row>, String> = pool.install(|| {
+        tasks
+            .par_iter()
+            .map(|t| {
+                let row = cached(t, opts)?;
+                done();
+                Ok(row)
+            })
+            .collect()
+    });
+    let mut rows = rows?;
+    crate::store::sort(&mut rows);
+    Ok(rows)
+}
+
+/// `t`'s row from the cache, or measured and cached.
+fn cached(t: &Task, opts: &Options) -> Result<Row, String> {
+    let Some(dir) = &opts.cache else {
+        return Ok(t.measure());
+    };
+    let path = dir.join(format!("{:016x}.json", t.key()));
+    if let Some(row) = std::fs::read_to_string(&path).ok().and_then(|s| serde_json::from_str::<Row>(&s).ok()) {
+        return Ok(row);
+    }
+    let row = t.measure();
+    // Written whole, then renamed: an interrupted sweep leaves no half-written result.
+    let tmp = path.with_extension(format!("tmp{}", std::process::id()));
+    let json = serde_json::to_string(&row).expect("a row serialises");
+    std::fs::write(&tmp, json)
+        .and_then(|_| std::fs::rename(&tmp, &path))
+        .map_err(|e| format!("{}: cannot write the cached result: {e}", path.display()))?;
+    Ok(row)
+}
