@@ -143,7 +143,7 @@ impl Default for Grid {
         Grid {
             methods: all_methods(),
             sensitivity: knobs.iter().map(|(k, v)| (k.to_string(), v.to_vec())).collect(),
-            joint: Some(Joint { samples: 12, seed: 1 }),
+            joint: Some(Joint { samples: 60, seed: 1 }),
         }
     }
 }

@@ -107,10 +107,7 @@ mod tests {
             md.lines().filter(|l| l.starts_with("| scanline") || l.starts_with("| vector")).collect();
         assert_eq!(table.len(), charts[0].front.len());
         assert_eq!(table[0], "| vector | default | 600 | 4.0000 | (as default) | lanes=4 |");
-        assert_eq!(
-            table[3],
-            "| scanline | xy.frac=5 | 4000 | 0.5000 | xy S11.5 [17] half-up; z U24.0 [24] | K=7, L=5 |"
-        );
+        assert_eq!(table[1], "| scanline | default | 2000 | 2.0000 | (as default) | K=7, L=5 |");
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }
