@@ -270,7 +270,8 @@ fn cli_sweep_rows_equal_accuracy_and_bad_grids_fail() {
         .lines()
         .map(|l| serde_json::from_str(l).unwrap())
         .collect();
-    assert_eq!(rows.len(), 7, "default, xy.frac=3 and a joint point per method, and bary.frac=12 for vector");
+    assert_eq!(rows.len(), 10, "default, xy.frac=3 and a joint point per method, and bary.frac=12 for vector");
+    assert_eq!(std::fs::read_to_string(dir.join("skipped.txt")).unwrap(), "", "the shading engines draw every point");
     for row in &rows {
         let formats = write(&d, "formats.json", &row["formats"].to_string());
         let json = d.join("accuracy.json");

@@ -102,24 +102,77 @@ pub struct Report {
     pub pixels_per_clock: f64,
 }
 
+/// A fixed-point frame to compare with the reference: what a pipeline drew.
+struct Fixed {
+    method: String,
+    fb: Framebuffer,
+    /// Triangles (or spans) it could not draw: input out of range, overflow.
+    problems: u64,
+    pixels_written: u64,
+    cycles: u64,
+}
+
 /// Renders `list` both ways and compares.
 pub fn compare(list: &Trilist, s: &Setup) -> Report {
-    let perspective = matches!(s.method, Method::Vector { perspective: true, .. });
-    let cull = if s.cull_back { Cull::Back } else { Cull::None };
-    let ropts = RefOptions { cull, ignore_w: !perspective, background: s.background };
-    let (reference, _) = reference::render(list, &ropts, &mut |_| {});
-    let bg = s.background.map(|c| c.round().clamp(0.0, 255.0) as u8);
     let mopts = ModelOptions {
         method: s.method,
-        cull: if s.cull_back { model::cull_sort::Cull::Back } else { model::cull_sort::Cull::None },
+        cull: model_cull(s.cull_back),
         analysis: true,
-        background: bg,
+        background: background8(s.background),
     };
     let fixed = model_render(list, &s.formats, &mopts, &mut |_| {});
     let FrameCycles { total: cycles, .. } = match s.method {
         Method::Scanline => scanline_frame(&fixed.work, &s.timing),
         Method::Vector { .. } => vector_frame(&fixed.work),
     };
+    let perspective = matches!(s.method, Method::Vector { perspective: true, .. });
+    let frame = Fixed {
+        method: method_name(s.method),
+        problems: fixed.problems.len() as u64,
+        pixels_written: fixed.stats.pixels_written,
+        fb: fixed.fb,
+        cycles,
+    };
+    against_reference(list, s, perspective, frame)
+}
+
+/// Draws `list` with 000's shading engines behind the scanline pipeline's spans
+/// (`model::se::array`, `render --engine se`) and compares with the reference, screen-linear
+/// as the scanline method; `s.method` and `s.timing` are not used (the engines' own cycles
+/// count). Problems: triangles whose vertices do not fit the input formats, and spans whose
+/// line overflowed an engine's words. Errs when no SE array fits the screen or the formats.
+pub fn compare_se(list: &Trilist, s: &Setup) -> Result<Report, String> {
+    let r = model::se::array::render(list, &s.formats, model_cull(s.cull_back), background8(s.background))?;
+    let frame = Fixed {
+        method: format!("se ({} engines)", r.engines),
+        problems: r.stats.input_rejected + r.ends_overflowed,
+        pixels_written: r.pixels_written,
+        fb: r.fb,
+        cycles: r.cycles,
+    };
+    Ok(against_reference(list, s, false, frame))
+}
+
+fn model_cull(back: bool) -> model::cull_sort::Cull {
+    if back {
+        model::cull_sort::Cull::Back
+    } else {
+        model::cull_sort::Cull::None
+    }
+}
+
+/// The background as the 8-bit colour the fixed-point pipelines clear to.
+fn background8(bg: [f64; 3]) -> [u8; 3] {
+    bg.map(|c| c.round().clamp(0.0, 255.0) as u8)
+}
+
+/// `fixed` against the reference render of `list` (perspective-correct when
+/// `perspective`, as the method interpolates).
+fn against_reference(list: &Trilist, s: &Setup, perspective: bool, fixed: Fixed) -> Report {
+    let cull = if s.cull_back { Cull::Back } else { Cull::None };
+    let ropts = RefOptions { cull, ignore_w: !perspective, background: s.background };
+    let (reference, _) = reference::render(list, &ropts, &mut |_| {});
+    let cycles = fixed.cycles;
     let ties = Ties { tris: &list.triangles, f: &s.formats };
     let (errs, worst) = errors(&fixed.fb, &reference);
     let vs_perspective = (!perspective && list.triangles.iter().flatten().any(|v| v.w.is_some())).then(|| {
@@ -128,7 +181,7 @@ pub fn compare(list: &Trilist, s: &Setup) -> Report {
     });
     let zscale = (s.formats.z.frac as f64).exp2();
     let mut r = Report {
-        method: method_name(s.method),
+        method: fixed.method,
         width: list.width,
         height: list.height,
         formats: s.formats,
@@ -143,19 +196,20 @@ pub fn compare(list: &Trilist, s: &Setup) -> Report {
         depth_max_lsb: 0.0,
         depth_mean_lsb: 0.0,
         worst,
-        problems: fixed.problems.len() as u64,
+        problems: fixed.problems,
         cycles,
-        pixels_per_clock: if cycles > 0 { fixed.stats.pixels_written as f64 / cycles as f64 } else { 0.0 },
+        pixels_per_clock: if cycles > 0 { fixed.pixels_written as f64 / cycles as f64 } else { 0.0 },
     };
+    let fixed = fixed.fb;
     let (mut depth_sum, mut same) = (0.0, 0u64);
-    for i in 0..fixed.fb.written.len() {
+    for i in 0..fixed.written.len() {
         let (x, y) = (i as u32 % list.width, i as u32 / list.width);
-        let (a, b) = (fixed.fb.writer[i], reference.writer[i]);
-        r.pixels_fixed += fixed.fb.written[i] as u64;
+        let (a, b) = (fixed.writer[i], reference.writer[i]);
+        r.pixels_fixed += fixed.written[i] as u64;
         r.pixels_reference += reference.written[i] as u64;
-        match (fixed.fb.written[i], reference.written[i]) {
+        match (fixed.written[i], reference.written[i]) {
             (true, true) if a == b => {
-                let e = (fixed.fb.depth[i] as f64 - reference.depth[i] * zscale).abs();
+                let e = (fixed.depth[i] as f64 - reference.depth[i] * zscale).abs();
                 r.depth_max_lsb = r.depth_max_lsb.max(e);
                 depth_sum += e;
                 same += 1;

@@ -2,9 +2,10 @@
 
 use super::engine::{Engine, FixedArgs};
 use super::input::{self, Size};
-use accuracy::{compare, Setup};
+use accuracy::{compare, compare_se, Setup};
 use anyhow::{bail, Result};
 use model::cycles::Timing;
+use model::render::Method;
 use std::path::PathBuf;
 
 /// Arguments of `edgepaint accuracy`.
@@ -31,17 +32,23 @@ pub fn run(args: Args) -> Result<()> {
     let formats = args.fixed.formats(list.width, list.height)?;
     let mut reports = Vec::new();
     for &engine in &args.engine {
-        let Some(method) = args.fixed.method(engine, true)? else {
-            bail!("--engine float is the reference itself; measure scanline or vector against it");
-        };
-        let setup = Setup {
+        let setup = |method| Setup {
             method,
             formats,
             cull_back: loaded.cull_back,
             background: loaded.background,
             timing: Timing::default(),
         };
-        let r = compare(list, &setup);
+        let r = match engine {
+            Engine::Se => compare_se(list, &setup(Method::Scanline))
+                .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?,
+            _ => {
+                let Some(method) = args.fixed.method(engine, true)? else {
+                    bail!("--engine float is the reference itself; measure scanline, vector or se against it");
+                };
+                compare(list, &setup(method))
+            }
+        };
         println!("{} ({} triangles)\n{}", args.input.display(), list.triangles.len(), r.table());
         reports.push(r);
     }

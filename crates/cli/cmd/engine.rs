@@ -15,7 +15,7 @@ pub enum Engine {
     Scanline,
     /// The fixed-point per-pixel barycentric method of 004.
     Vector,
-    /// The scanline pipeline's spans drawn by an array of 000's shading engines (render only).
+    /// The scanline pipeline's spans drawn by an array of 000's shading engines.
     Se,
     /// The scanline pipeline's RTL (`raster_top`) simulated in Verilator: the scanline
     /// model's image bit for bit, with the hardware's cycle counts.
@@ -54,7 +54,7 @@ impl FixedArgs {
             Engine::Float => None,
             Engine::Scanline | Engine::Rtl => Some(Method::Scanline),
             Engine::Vector => Some(Method::Vector { lanes: self.lanes, perspective }),
-            Engine::Se => anyhow::bail!("--engine se only renders (its spans are the scanline pipeline's)"),
+            Engine::Se => anyhow::bail!("--engine se has no model::render method: its spans are the scanline pipeline's, drawn by model::se::array"),
         })
     }
 }

@@ -10,6 +10,9 @@ use std::time::Instant;
 use sweep::grid::{Grid, Method};
 use sweep::run::{Input, Options};
 
+/// The file in a sweep's directory listing the points skipped, one per line.
+const SKIPPED: &str = "skipped.txt";
+
 /// Arguments of `edgepaint sweep`.
 #[derive(clap::Args)]
 #[command(args_conflicts_with_subcommands = true)]
@@ -57,6 +60,7 @@ enum Merge {
 enum MethodArg {
     Scanline,
     Vector,
+    Se,
 }
 
 /// `I/N`.
@@ -99,6 +103,7 @@ pub fn run(args: Args) -> Result<()> {
             .map(|m| match m {
                 MethodArg::Scanline => Method::Scanline,
                 MethodArg::Vector => Method::Vector,
+                MethodArg::Se => Method::Se,
             })
             .collect();
     }
@@ -113,8 +118,19 @@ pub fn run(args: Args) -> Result<()> {
     );
     let opts = Options { jobs: args.jobs, shard, cache: Some(out.join("cache")) };
     let start = Instant::now();
-    let rows = sweep::run::run(&inputs, &points, &opts, &|| bar.inc(1)).map_err(|e| anyhow!(e))?;
+    let swept = sweep::run::run(&inputs, &points, &opts, &|| bar.inc(1)).map_err(|e| anyhow!(e))?;
     bar.finish_and_clear();
+    let rows = swept.rows;
+    if let Some(first) = swept.skipped.first() {
+        println!(
+            "{} points skipped, the method cannot draw them (listed in {}), e.g. {first}",
+            swept.skipped.len(),
+            SKIPPED
+        );
+    }
+    let skipped: String = swept.skipped.iter().map(|s| s.clone() + "\n").collect();
+    std::fs::create_dir_all(&out).with_context(|| format!("{}: cannot create", out.display()))?;
+    input::write(&out.join(SKIPPED), "the skipped points", skipped.as_bytes())?;
     println!(
         "{} points ({} inputs x {} design points{}) in {:.1} s",
         rows.len(),

@@ -77,33 +77,26 @@ macro_rules! bundle {
 /// `Bit` or `Bits<N>`), plus `valid` and `ready`. See the module's documentation.
 #[macro_export]
 macro_rules! link {
+    // One end: a bundle with `valid` and `ready` in the directions given, and the fields
+    // in direction `$d`.
+    (@end $(#[$meta:meta])* $name:ident, $v:ident valid, $r:ident ready, $d:ident {
+        $( $(#[$fmeta:meta])* $field:ident : $ty:ty ),*
+    }) => {
+        $crate::bundle! {
+            $(#[$meta])*
+            $name { $v valid: Bit, $r ready: Bit, $( $(#[$fmeta])* $d $field: $ty, )* }
+        }
+    };
     (
         $(#[$meta:meta])*
         $source:ident => $sink:ident {
             $( $(#[$fmeta:meta])* $field:ident : $ty:ty ),* $(,)?
         }
     ) => {
-        $crate::bundle! {
-            $(#[$meta])*
-            ///
-            /// The sending end: `valid` and the fields out, `ready` in.
-            $source {
-                Out valid: Bit,
-                In ready: Bit,
-                $( $(#[$fmeta])* Out $field: $ty, )*
-            }
-        }
-
-        $crate::bundle! {
-            $(#[$meta])*
-            ///
-            /// The receiving end: `valid` and the fields in, `ready` out.
-            $sink {
-                In valid: Bit,
-                Out ready: Bit,
-                $( $(#[$fmeta])* In $field: $ty, )*
-            }
-        }
+        $crate::link!(@end $(#[$meta])* #[doc = ""] #[doc = "The sending end: `valid` and the fields out, `ready` in."]
+            $source, Out valid, In ready, Out { $( $(#[$fmeta])* $field: $ty ),* });
+        $crate::link!(@end $(#[$meta])* #[doc = ""] #[doc = "The receiving end: `valid` and the fields in, `ready` out."]
+            $sink, In valid, Out ready, In { $( $(#[$fmeta])* $field: $ty ),* });
 
         impl $source {
             /// Connects this end to `sink` (in a kernel: `Source::join(&mut a, &mut b)`).

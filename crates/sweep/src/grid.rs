@@ -10,14 +10,18 @@
 //! }
 //! ```
 //!
-//! * `methods`: `scanline` (001/003: setup, edge walk, span) and `vector` (004).
+//! * `methods`: `scanline` (001/003: setup, edge walk, span), `vector` (004) and `se`
+//!   (the scanline pipeline's spans drawn by 000's shading engines, `model::se::array`:
+//!   the scanline's format knobs, its engines' words sized by the formats).
 //! * `sensitivity`: one knob at a time, each over its values. A knob is a quantity's
 //!   fraction bits, `<quantity>.frac` (the quantities of `fx::Formats`: `xy.frac` is the
 //!   subpixel bits, `z.frac` the depth buffer's width; `z_acc.frac` sets `dz`'s too and
 //!   `c_acc.frac` `dc`'s, as the two must match), or a method's parameter: `K` (setup's
 //!   multipliers) and `L` (the divider's stages) for scanline, `lanes` for vector. A
 //!   format knob is swept with every other quantity wide (`fx::Formats::wide`), so the
-//!   error is the knob's alone; a parameter knob at the default formats. A method runs
+//!   error is the knob's alone (`se` sweeps them around the default formats instead: its
+//!   engines' words hold 32 bits at most, which the wide formats exceed); a parameter knob
+//!   at the default formats. A method runs
 //!   only the knobs it has (vector has no accumulators, scanline no barycentrics).
 //! * `joint`: `samples` points per method with every knob of the method drawn at random
 //!   (seed `seed`) from its values, the other quantities following by the defaults' rules
@@ -41,30 +45,35 @@ use std::collections::BTreeMap;
 pub enum Method {
     Scanline,
     Vector,
+    /// The scanline pipeline's spans drawn by 000's shading engines (`model::se::array`).
+    Se,
 }
 
 impl Method {
-    pub const ALL: [Method; 2] = [Method::Scanline, Method::Vector];
+    pub const ALL: [Method; 3] = [Method::Scanline, Method::Vector, Method::Se];
 
     /// The name the CLI and the rows use.
     pub fn name(self) -> &'static str {
         match self {
             Method::Scanline => "scanline",
             Method::Vector => "vector",
+            Method::Se => "se",
         }
     }
 
     /// Whether knob `knob` is one of this method's.
     pub fn has(self, knob: &str) -> bool {
-        let (scanline, vector) = match knob {
-            "xy.frac" | "z.frac" | "color.frac" | "ooa.frac" => (true, true),
-            "z_acc.frac" | "c_acc.frac" | "ooa_d.frac" | "K" | "L" => (true, false),
-            "bary.frac" | "inv_w.frac" | "lanes" => (false, true),
-            _ => (false, false),
+        let (scanline, vector, se) = match knob {
+            "xy.frac" | "z.frac" | "color.frac" | "ooa.frac" => (true, true, true),
+            "z_acc.frac" | "c_acc.frac" | "ooa_d.frac" => (true, false, true),
+            "K" | "L" => (true, false, false),
+            "bary.frac" | "inv_w.frac" | "lanes" => (false, true, false),
+            _ => (false, false, false),
         };
         match self {
             Method::Scanline => scanline,
             Method::Vector => vector,
+            Method::Se => se,
         }
     }
 
@@ -75,6 +84,7 @@ impl Method {
         match self {
             Method::Scanline => BTreeMap::from([("K".into(), t.setup_multipliers), ("L".into(), t.divider_latency)]),
             Method::Vector => BTreeMap::from([("lanes".into(), 4)]),
+            Method::Se => BTreeMap::new(),
         }
     }
 }
@@ -213,7 +223,8 @@ impl Point {
     /// the point and says why its formats are impossible.
     pub fn resolve(&self, width: u32, height: u32) -> Result<(Formats, BTreeMap<String, u32>), String> {
         let n = fx::resolution_bits(width, height);
-        let wide = self.kind == "sensitivity" && self.set.keys().all(|k| !is_param(k));
+        // The shading engines' words hold 32 bits at most, which the wide formats exceed.
+        let wide = self.kind == "sensitivity" && self.set.keys().all(|k| !is_param(k)) && self.method != Method::Se;
         let mut f = if wide { Formats::wide(width, height) } else { Formats::for_resolution(width, height) };
         let mut params = self.method.default_params();
         let mut given = Given::NONE;

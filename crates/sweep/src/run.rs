@@ -3,7 +3,7 @@
 
 use crate::grid::{Method, Point};
 use crate::row::{Row, Source};
-use accuracy::{compare, Setup};
+use accuracy::{compare, compare_se, Setup};
 use model::cycles::Timing;
 use model::render::Method as ModelMethod;
 use rayon::prelude::*;
@@ -56,8 +56,8 @@ impl Task<'_> {
         h.finish()
     }
 
-    /// Renders and measures.
-    fn measure(&self) -> Row {
+    /// Renders and measures; the error names the point (an SE array the formats do not fit).
+    fn measure(&self) -> Result<Row, String> {
         let (method, timing) = match self.point.method {
             Method::Scanline => (
                 ModelMethod::Scanline,
@@ -66,6 +66,8 @@ impl Task<'_> {
             Method::Vector => {
                 (ModelMethod::Vector { lanes: self.params["lanes"], perspective: true }, Timing::default())
             }
+            // The engines' own cycles count (`accuracy::compare_se`).
+            Method::Se => (ModelMethod::Scanline, Timing::default()),
         };
         let setup = Setup {
             method,
@@ -74,12 +76,16 @@ impl Task<'_> {
             background: self.input.background,
             timing,
         };
-        let r = compare(&self.input.trilist, &setup);
+        let r = match self.point.method {
+            Method::Se => compare_se(&self.input.trilist, &setup)
+                .map_err(|e| format!("{}: point {}: {e}", self.input.name, self.point.label()))?,
+            _ => compare(&self.input.trilist, &setup),
+        };
         let clock = (self.point.method == Method::Scanline).then_some(SCANLINE_CLOCK_MHZ);
         let source = clock.map(|_| if self.point.kind == "default" { Source::Measured } else { Source::Modelled });
         let p = self.point;
         let to16 = (16.0 - self.formats.z.frac as f64).exp2();
-        Row {
+        Ok(Row {
             scene: self.input.name.clone(),
             method: p.method.name().into(),
             point: p.name.clone(),
@@ -107,20 +113,36 @@ impl Task<'_> {
             clock_mhz: clock,
             clock_source: source,
             frame_us: clock.map(|c| r.cycles as f64 / c),
-        }
+        })
     }
 }
 
+/// What a sweep gives: its rows, and the points a method cannot draw.
+#[derive(Debug, PartialEq)]
+pub struct Swept {
+    /// In canonical order ([`crate::store::sort`]).
+    pub rows: Vec<Row>,
+    /// `<input>: point <method> <name>: <why>` for each (input, point) the method cannot
+    /// draw though its formats are possible: the shading engines' words hold 32 bits at
+    /// most (`model::se::array::array_params`).
+    pub skipped: Vec<String>,
+}
+
 /// Runs every point on every input (the shard's tasks only, with `opts.shard`), reusing
-/// cached results; `done` is called once per task finished. The rows come in canonical
-/// order ([`crate::store::sort`]). Errors: a point impossible for an input (named), or a
-/// cache that cannot be written.
-pub fn run(inputs: &[Input], points: &[Point], opts: &Options, done: &(dyn Fn() + Sync)) -> Result<Vec<Row>, String> {
-    let mut tasks = Vec::new();
+/// cached results; `done` is called once per task finished. Errors: a point impossible for
+/// an input (named), or a cache that cannot be written.
+pub fn run(inputs: &[Input], points: &[Point], opts: &Options, done: &(dyn Fn() + Sync)) -> Result<Swept, String> {
+    let (mut tasks, mut skipped) = (Vec::new(), Vec::new());
     for input in inputs {
         for point in points {
             let (formats, params) =
                 point.resolve(input.trilist.width, input.trilist.height).map_err(|e| format!("{}: {e}", input.name))?;
+            if point.method == Method::Se {
+                if let Err(e) = model::se::array::array_params(input.trilist.width, &formats) {
+                    skipped.push(format!("{}: point {}: {e}", input.name, point.label()));
+                    continue;
+                }
+            }
             tasks.push(Task { input, point, formats, params });
         }
     }
@@ -146,19 +168,19 @@ pub fn run(inputs: &[Input], points: &[Point], opts: &Options, done: &(dyn Fn() 
     });
     let mut rows = rows?;
     crate::store::sort(&mut rows);
-    Ok(rows)
+    Ok(Swept { rows, skipped })
 }
 
 /// `t`'s row from the cache, or measured and cached.
 fn cached(t: &Task, opts: &Options) -> Result<Row, String> {
     let Some(dir) = &opts.cache else {
-        return Ok(t.measure());
+        return t.measure();
     };
     let path = dir.join(format!("{:016x}.json", t.key()));
     if let Some(row) = std::fs::read_to_string(&path).ok().and_then(|s| serde_json::from_str::<Row>(&s).ok()) {
         return Ok(row);
     }
-    let row = t.measure();
+    let row = t.measure()?;
     // Written whole, then renamed: an interrupted sweep leaves no half-written result.
     let tmp = path.with_extension(format!("tmp{}", std::process::id()));
     let json = serde_json::to_string(&row).expect("a row serialises");

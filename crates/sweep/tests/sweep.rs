@@ -38,12 +38,13 @@ fn scratch(name: &str) -> PathBuf {
 fn sweep_shards_merge_to_the_unsharded_run() {
     let inputs = [input("cube", 48, 32), input("cone", 40, 30)];
     let points = grid().points();
-    let whole = run(&inputs, &points, &Options::default(), &|| {}).unwrap();
+    let whole = run(&inputs, &points, &Options::default(), &|| {}).unwrap().rows;
     assert_eq!(whole.len(), inputs.len() * points.len());
     let dirs: Vec<PathBuf> = (0..3)
         .map(|i| {
             let d = scratch(&format!("shard{i}"));
-            let rows = run(&inputs, &points, &Options { shard: Some((i, 3)), ..Options::default() }, &|| {}).unwrap();
+            let rows =
+                run(&inputs, &points, &Options { shard: Some((i, 3)), ..Options::default() }, &|| {}).unwrap().rows;
             assert!(rows.len() < whole.len());
             sweep::store::write(&d, &rows).unwrap();
             d
@@ -67,7 +68,7 @@ fn sweep_reads_a_cached_result_back() {
     let points = &grid().points()[..3];
     let cache = scratch("cache");
     let opts = Options { cache: Some(cache.clone()), ..Options::default() };
-    let first = run(&inputs, points, &opts, &|| {}).unwrap();
+    let first = run(&inputs, points, &opts, &|| {}).unwrap().rows;
     // Mark every cached result: a second run returns the marks, so it measured nothing.
     for f in std::fs::read_dir(&cache).unwrap() {
         let path = f.unwrap().path();
@@ -75,8 +76,21 @@ fn sweep_reads_a_cached_result_back() {
         row.psnr_db = -1.0;
         std::fs::write(&path, serde_json::to_string(&row).unwrap()).unwrap();
     }
-    let second = run(&inputs, points, &opts, &|| {}).unwrap();
+    let second = run(&inputs, points, &opts, &|| {}).unwrap().rows;
     assert_eq!(second.len(), first.len());
     assert!(second.iter().all(|r| r.psnr_db == -1.0));
     assert!(first.iter().all(|r| r.psnr_db > 0.0));
+}
+
+#[test]
+fn sweep_skips_what_the_shading_engines_cannot_draw() {
+    let g = Grid::parse(r#"{"methods": ["se"], "sensitivity": {"z.frac": [16, 24]}}"#).unwrap();
+    let swept = run(&[input("cube", 48, 32)], &g.points(), &Options::default(), &|| {}).unwrap();
+    let points: Vec<&str> = swept.rows.iter().map(|r| r.point.as_str()).collect();
+    assert_eq!(points, ["default", "z.frac=16"]);
+    assert_eq!(swept.skipped.len(), 1);
+    let s = &swept.skipped[0];
+    assert!(s.starts_with("cube: point se z.frac=24") && s.contains("2 to 32 bits"), "{s}");
+    // The engines draw what the scanline pipeline draws, to within their rounding.
+    assert!(swept.rows.iter().all(|r| r.problems == 0 && r.psnr_db > 30.0));
 }

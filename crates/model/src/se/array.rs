@@ -199,14 +199,24 @@ pub struct SeRender {
     pub cycles: u64,
 }
 
+/// The engines of [`engine_params`] for a screen `width` columns wide (index 0); errs when
+/// they cannot draw it: the screen wider than the engines' X reaches, or the formats need
+/// words wider than 32 bits.
+pub fn array_params(width: u32, f: &Formats) -> Result<SeParams, String> {
+    let prm = engine_params(f);
+    let engines = width.div_ceil(prm.p);
+    let why =
+        |e| format!("no SE array for {width} columns with {}- and {}-bit z and colour words: {e}", prm.zw, prm.cw);
+    SeParams { index: engines - 1, ..prm }.check().map_err(why)?;
+    Ok(prm)
+}
+
 /// Draws `list` with the engines of [`engine_params`], one per P columns. Errs when the
 /// screen is wider than the engines' X reaches or the formats need words wider than 32 bits.
 pub fn render(list: &Trilist, f: &Formats, cull: Cull, background: [u8; 3]) -> Result<SeRender, String> {
-    let prm = engine_params(f);
+    let prm = array_params(list.width, f)?;
     let (w, h) = (list.width, list.height);
     let engines = w.div_ceil(prm.p);
-    let why = |e| format!("no SE array for {w} columns with {}- and {}-bit z and colour words: {e}", prm.zw, prm.cw);
-    SeParams { index: engines - 1, ..prm }.check().map_err(why)?;
     let (spans, stats) = spans(list, f, cull, prm.frac);
     let issue = issue_cycles(&spans, &prm);
     let mut r = SeRender {
