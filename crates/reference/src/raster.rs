@@ -46,6 +46,15 @@ fn edge(a: (f64, f64), b: (f64, f64), s: (f64, f64)) -> f64 {
     }
 }
 
+/// The attribute with values `a` at the three vertices, at the point whose weights of
+/// vertices 1 and 2 are `b1`, `b2`: `a0 + b1 (a1 - a0) + b2 (a2 - a0)`. Written from the
+/// differences, not as `b0 a0 + b1 a1 + b2 a2`, so that an attribute equal at the three
+/// vertices comes out exactly (the three weights need not sum to exactly 1 in floating
+/// point): a triangle at z = 1 never passes LESS against the 1.0 clear.
+fn lerp(a: [f64; 3], b1: f64, b2: f64) -> f64 {
+    a[0] + b1 * (a[1] - a[0]) + b2 * (a[2] - a[0])
+}
+
 /// Twice the signed area in screen coordinates (y down). Positive means the
 /// triangle runs clockwise as seen on screen; negative, counter-clockwise.
 pub fn signed_area2(v: &[RasterVertex; 3]) -> f64 {
@@ -113,15 +122,13 @@ pub fn rasterize(
                 continue;
             }
             let b = e.map(|ek| ek / area2);
-            let z = b[0] * v[0].z + b[1] * v[1].z + b[2] * v[2].z;
+            let z = lerp(v.map(|v| v.z), b[1], b[2]);
             let rgb = match interp {
-                Interpolation::Linear => {
-                    std::array::from_fn(|c| b[0] * v[0].rgb[c] + b[1] * v[1].rgb[c] + b[2] * v[2].rgb[c])
-                }
+                Interpolation::Linear => std::array::from_fn(|c| lerp(v.map(|v| v.rgb[c]), b[1], b[2])),
                 Interpolation::Perspective => {
                     let q: [f64; 3] = std::array::from_fn(|k| b[k] * v[k].inv_w);
                     let sum = q[0] + q[1] + q[2];
-                    std::array::from_fn(|c| (q[0] * v[0].rgb[c] + q[1] * v[1].rgb[c] + q[2] * v[2].rgb[c]) / sum)
+                    std::array::from_fn(|c| lerp(v.map(|v| v.rgb[c]), q[1] / sum, q[2] / sum))
                 }
             };
             covered += 1;

@@ -160,3 +160,39 @@ fn reference_draws_a_triangle_through_the_eye_plane_like_an_eye_space_clip() {
 fn one_sized(tris: Vec<Triangle>, size: u32) -> reference::Frame {
     render(&Trilist { width: size, height: size, triangles: tris }, &Options::default(), &mut |_| {}).0
 }
+
+/// A golden reference reproduces a constant attribute exactly: a triangle at z = 1 never
+/// passes LESS against the 1.0 clear, one at z = 0 writes depth 0 exactly, and of two
+/// overlapping triangles at one z the first keeps every pixel; a constant colour comes out
+/// exactly, screen-linear or perspective-correct.
+#[test]
+fn reference_constant_attributes_are_exact() {
+    let odd = [(3.3, 1.7), (637.9, 13.1), (91.1, 478.3)];
+    let at = |z: f64, rgb: [f64; 3]| -> Triangle { odd.map(|(x, y)| vz(x, y, z, rgb)) };
+    let draw = |tris: Vec<Triangle>| {
+        let list = Trilist { width: 640, height: 480, triangles: tris };
+        render(&list, &Options::default(), &mut |_| {})
+    };
+    let (frame, stats) = draw(vec![at(1.0, [1.0; 3])]);
+    assert!(stats.fragments > 100_000);
+    assert_eq!(stats.pixels_written, 0, "z = 1 is never less than the 1.0 clear");
+    assert!(frame.depth.iter().all(|&d| d == 1.0));
+
+    let grey = [100.3, 7.7, 255.0];
+    let (frame, stats) = draw(vec![at(0.0, grey), at(0.0, [0.0; 3])]);
+    assert_eq!(stats.pixels_written, stats.fragments / 2, "the second triangle at the same z loses everywhere");
+    for i in (0..frame.depth.len()).filter(|&i| frame.written[i]) {
+        assert_eq!(frame.depth[i], 0.0);
+        assert_eq!(frame.color[i], grey);
+        assert_eq!(frame.writer[i], 0);
+    }
+
+    // Perspective-correct: w differs per vertex, colour and z constant.
+    let mut t = at(0.5, grey);
+    for (v, w) in t.iter_mut().zip([1.0, 7.0, 300.0]) {
+        v.w = Some(w);
+    }
+    fragments(&t, 640, 480, &Options::default(), |f| {
+        assert_eq!((f.z, f.rgb), (0.5, grey), "at ({}, {})", f.x, f.y);
+    });
+}
