@@ -8,7 +8,8 @@
 //! * [`se`] (000): the shading engine, cycle-exact, and the engine array drawing the scanline's spans;
 //! * [`render`]: whole frames through either, with analysis mode; [`cycles`]: the cycle model;
 //! * [`raster_top`]: a frame as the scanline pipeline's RTL takes and writes it;
-//! * [`input`]: float vertices to hardware words; [`ctx`]: formats and overflow records.
+//! * [`guard_band`]: the host's clipping front end; [`input`]: float vertices to hardware words;
+//!   [`ctx`]: formats and overflow records.
 
 pub mod ctx;
 pub mod cull_sort;
@@ -16,6 +17,7 @@ pub mod cycles;
 pub mod divider;
 pub mod edge_walk;
 pub mod ept;
+pub mod guard_band;
 pub mod input;
 pub mod pixel_out;
 pub mod raster_top;

@@ -7,6 +7,7 @@
 
 use crate::cull_sort::{cull_sort, z_max, Clip, Cull, Sorted};
 use crate::cycles::{self, Timing};
+use crate::guard_band;
 use crate::input::{to_fixed, InputError, Vtx};
 use crate::pixel_out::Framebuffer;
 use crate::render::{self, triangle, Method, Options, Render};
@@ -21,7 +22,8 @@ pub const MAX_CLASS: u32 = 12;
 pub struct RasterTopOut {
     /// The size class of the `raster_top` drawing it and the formats it is built at.
     pub build: Build,
-    /// The triangles sent, as input words (`model::input::to_fixed`), in input order.
+    /// The triangles sent, as input words (`model::input::to_fixed`), in input order: the
+    /// front end's pieces (`model::guard_band`).
     pub triangles: Vec<[Vtx; 3]>,
     /// Triangles left out because their vertices do not fit the input formats, by index.
     pub skipped: Vec<(usize, InputError)>,
@@ -82,7 +84,8 @@ pub fn raster_top(build: &Build, list: &Trilist, cull: Cull, background: [u8; 3]
     let (mut triangles, mut skipped, mut sorted) = (Vec::new(), Vec::new(), Vec::new());
     let (mut fragments, mut pixels, mut writes) = (Vec::new(), Vec::new(), Vec::new());
     let mut fb = Framebuffer::new(list.width, list.height, z_max(&f) as u32, background);
-    for (i, t) in list.triangles.iter().enumerate() {
+    let pieces = guard_band::pieces(list, &f, false);
+    for (t, &i) in pieces.triangles.iter().zip(&pieces.source) {
         match to_fixed(t, &f) {
             Ok(v) => {
                 sorted.extend(cull_sort(&v, clip, cull, &f));
@@ -149,12 +152,15 @@ mod tests {
         assert!(err.contains("up to 1024x1024, not 1025x16"), "{err}");
         assert!(raster_top(&Build::of_class(9), &screen(16, 16), Cull::None, [0; 3]).is_err(), "class 9 is not built");
         assert!(raster_top(&Build::of_class(12), &screen(1025, 16), Cull::None, [0; 3]).is_ok());
-        // x beyond the S11.4 vertex format's range: skipped, the other one drawn.
+        // x beyond the S11.4 vertex format's range: clipped to it (`guard_band`), sent as
+        // its pieces. A colour beyond U8.0 cannot be represented: skipped, the rest drawn.
         let huge = tri([(5000.0, 1.0, 0.5), (1.0, 1.0, 0.5), (1.0, 9.0, 0.5)]);
-        let ok = tri([(1.0, 1.0, 0.5), (9.0, 1.0, 0.5), (1.0, 9.0, 0.5)]);
-        let list = Trilist { width: 16, height: 16, triangles: vec![huge, ok] };
+        let mut bright = tri([(1.0, 1.0, 0.4), (9.0, 1.0, 0.4), (1.0, 9.0, 0.4)]);
+        bright[0].r = 300.0;
+        let list = Trilist { width: 16, height: 16, triangles: vec![huge, bright] };
         let f = raster_top(&Build::for_screen(16, 16), &list, Cull::None, [0; 3]).expect("a 16 x 16 frame");
-        assert_eq!((f.triangles.len(), f.skipped.len(), f.skipped[0].0), (1, 1, 0));
-        assert!(!f.writes.is_empty());
+        assert_eq!((f.triangles.len(), f.skipped.len(), f.skipped[0].0), (2, 1, 1));
+        assert_eq!((f.skipped[0].1.vertex, f.skipped[0].1.quantity), (0, "r"));
+        assert!(f.writes.len() > 100, "the huge triangle's pieces cover most of the screen");
     }
 }

@@ -14,6 +14,7 @@
 use crate::ctx::{Ctx, Q};
 use crate::cull_sort::{cull_sort, z_max, Clip, Cull, Reject};
 use crate::edge_walk::edge_walk;
+use crate::guard_band;
 use crate::input::{to_fixed, InputError, Vtx};
 use crate::pixel_out::Framebuffer;
 use crate::span::{span, Pixel};
@@ -167,6 +168,9 @@ pub fn triangle(tri: &Triangle, clip: Clip, f: &Formats, opts: &Options) -> (Res
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Stats {
     pub triangles_in: u64,
+    /// Input triangles the front end clipped (`guard_band`): beyond the `xy` range, or
+    /// behind the eye. Every other count is of the triangles drawn: the pieces.
+    pub clipped: u64,
     /// Triangles whose vertices did not fit the input formats.
     pub input_rejected: u64,
     pub culled_outside: u64,
@@ -197,7 +201,7 @@ pub struct Render {
     pub stats: Stats,
     /// Triangles dropped for input or overflow problems (not culling).
     pub problems: Vec<Problem>,
-    /// Per-triangle work, in input order, for the cycle model.
+    /// Per-triangle work, in drawing order (the front end's pieces), for the cycle model.
     pub work: Vec<Work>,
 }
 
@@ -207,8 +211,12 @@ pub fn render(list: &Trilist, f: &Formats, opts: &Options, progress: &mut dyn Fn
     let mut fb = Framebuffer::new(list.width, list.height, z_max(f) as u32, opts.background);
     let mut stats = Stats { triangles_in: list.triangles.len() as u64, ..Stats::default() };
     let mut problems = Vec::new();
-    let mut work = Vec::with_capacity(list.triangles.len());
-    for (i, tri) in list.triangles.iter().enumerate() {
+    let perspective = matches!(opts.method, Method::Vector { perspective: true, .. });
+    let pieces = guard_band::pieces(list, f, perspective);
+    stats.clipped = pieces.clipped;
+    let mut work = Vec::with_capacity(pieces.triangles.len());
+    for (k, tri) in pieces.triangles.iter().enumerate() {
+        let i = pieces.source[k];
         let (res, over) = triangle(tri, clip, f, opts);
         match res {
             Ok(t) => {
@@ -237,7 +245,7 @@ pub fn render(list: &Trilist, f: &Formats, opts: &Options, progress: &mut dyn Fn
                 }
             }
         }
-        if i % 256 == 255 {
+        if k % 256 == 255 {
             progress(i + 1);
         }
     }

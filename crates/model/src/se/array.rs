@@ -51,6 +51,7 @@ use super::{Se, SeCmd, SeIn, SeParams, PORTS};
 use crate::ctx::Ctx;
 use crate::cull_sort::{cull_sort, z_max, Clip, Cull, Reject};
 use crate::edge_walk::{edge_walk, SpanCmd};
+use crate::guard_band;
 use crate::input::to_fixed;
 use crate::pixel_out::Framebuffer;
 use crate::triangle_setup::{triangle_setup, Attrs};
@@ -133,7 +134,8 @@ pub fn spans(list: &Trilist, f: &Formats, cull: Cull, frac: u32) -> (Vec<SeSpan>
     let clip = Clip { width: list.width, height: list.height };
     let mut st = SpanStats { triangles_in: list.triangles.len() as u64, ..SpanStats::default() };
     let mut out = Vec::new();
-    for (i, tri) in list.triangles.iter().enumerate() {
+    let pieces = guard_band::pieces(list, f, false);
+    for (tri, &i) in pieces.triangles.iter().zip(&pieces.source) {
         let Ok(v) = to_fixed(tri, f) else {
             st.input_rejected += 1;
             continue;
