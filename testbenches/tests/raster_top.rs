@@ -145,6 +145,14 @@ fn raster_top_fill_rule_and_clipping_vs_model() {
         tri([(-20.3, 10.2, 0.3), (-30.7, 5.1, 0.5), (-10.1, 50.6, 0.7)]),
     ];
     cases.push(("clipping", list(80, 60, crossing)));
+    // Beyond the vertex format (vertices 10,000 px away) and behind the eye (w = -1): the
+    // host sends the front end's pieces (`model::guard_band`).
+    let mut behind = tri([(8.0, 6.0, 0.4), (58.0, 12.0, 0.6), (20.0, 70.0, 0.5)]);
+    for (v, w) in behind.iter_mut().zip([1.0, 2.0, -1.0]) {
+        v.w = Some(w);
+    }
+    let far = tri([(-10000.0, 10000.0, 0.7), (10000.0, 10000.0, 0.7), (40.0, -10000.0, 0.7)]);
+    cases.push(("beyond the vertex format", list(80, 60, vec![far, behind])));
     for (what, l) in &cases {
         for cull in [Cull::None, Cull::Back] {
             let mut dut = model();
