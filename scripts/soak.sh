@@ -5,8 +5,9 @@
 #
 #   1. tests        the whole suite, plus the tests marked #[ignore] for being long:
 #                   the EPT at P = 1024 exhaustively (all 1,048,576 (XL, XR) pairs) in
-#                   rust-hdl and Verilator, and whole shipped scenes through raster_top in
-#                   rust-hdl and Verilator in lockstep (every output every cycle)
+#                   rust-hdl and Verilator, whole shipped scenes through raster_top in
+#                   rust-hdl and Verilator in lockstep (every output every cycle), and
+#                   100,000 random triangles through raster_top in Verilator against the model
 #   2. random soak  every random test with 10x the cases (EDGEPAINT_N = 10000) and another
 #                   seed (EDGEPAINT_SEED, default 2: the test command runs seed 1)
 #   3. synthesis    every file in hdl-out/, each unit alone too, in all three flows (the
