@@ -69,37 +69,37 @@ pub struct Row {
     pub frame_us: Option<f64>,
 }
 
+/// The CSV's columns after the design's, each with how a row prints it.
+const MEASURES: &[(&str, fn(&Row) -> String)] = &[
+    ("psnr_db", |r| r.psnr_db.to_string()),
+    ("color_rms_lsb", |r| r.color_rms_lsb.to_string()),
+    ("color_max_lsb", |r| r.color_max_lsb.to_string()),
+    ("color_mean_lsb", |r| r.color_mean_lsb.to_string()),
+    ("color_over_1", |r| r.color_over_1.to_string()),
+    ("depth_max_lsb", |r| r.depth_max_lsb.to_string()),
+    ("depth_mean_lsb", |r| r.depth_mean_lsb.to_string()),
+    ("depth_max_lsb16", |r| r.depth_max_lsb16.to_string()),
+    ("depth_mean_lsb16", |r| r.depth_mean_lsb16.to_string()),
+    ("coverage_differs", |r| r.coverage_differs.to_string()),
+    ("coverage_unexplained", |r| r.coverage_unexplained.to_string()),
+    ("winner_differs", |r| r.winner_differs.to_string()),
+    ("winner_unexplained", |r| r.winner_unexplained.to_string()),
+    ("problems", |r| r.problems.to_string()),
+    ("cycles", |r| r.cycles.to_string()),
+    ("pixels_per_clock", |r| r.pixels_per_clock.to_string()),
+    ("clock_mhz", |r| r.clock_mhz.map_or(String::new(), |c| c.to_string())),
+    ("clock_source", |r| r.clock_source.map_or(String::new(), |s| format!("{s:?}").to_lowercase())),
+    ("frame_us", |r| r.frame_us.map_or(String::new(), |t| t.to_string())),
+];
+
 impl Row {
-    /// The columns of the CSV, in order (every field; formats and params as
-    /// `format.<quantity>` and `param.<name>`).
+    /// The columns of the CSV, in order: the point, its formats and parameters (as
+    /// `format.<quantity>` and `param.<name>`), then every measure.
     pub fn csv_header(formats: &[String], params: &[String]) -> String {
         let mut cols: Vec<String> = ["scene", "method", "point", "kind", "knob", "value"].map(String::from).to_vec();
         cols.extend(formats.iter().map(|f| format!("format.{f}")));
         cols.extend(params.iter().map(|p| format!("param.{p}")));
-        cols.extend(
-            [
-                "psnr_db",
-                "color_rms_lsb",
-                "color_max_lsb",
-                "color_mean_lsb",
-                "color_over_1",
-                "depth_max_lsb",
-                "depth_mean_lsb",
-                "depth_max_lsb16",
-                "depth_mean_lsb16",
-                "coverage_differs",
-                "coverage_unexplained",
-                "winner_differs",
-                "winner_unexplained",
-                "problems",
-                "cycles",
-                "pixels_per_clock",
-                "clock_mhz",
-                "clock_source",
-                "frame_us",
-            ]
-            .map(String::from),
-        );
+        cols.extend(MEASURES.iter().map(|(name, _)| name.to_string()));
         cols.join(",")
     }
 
@@ -116,27 +116,7 @@ impl Row {
         ];
         cells.extend(formats.iter().map(|f| opt(self.formats.get(f).cloned())));
         cells.extend(params.iter().map(|p| opt(self.params.get(p).map(|v| v.to_string()))));
-        cells.extend([
-            self.psnr_db.to_string(),
-            self.color_rms_lsb.to_string(),
-            self.color_max_lsb.to_string(),
-            self.color_mean_lsb.to_string(),
-            self.color_over_1.to_string(),
-            self.depth_max_lsb.to_string(),
-            self.depth_mean_lsb.to_string(),
-            self.depth_max_lsb16.to_string(),
-            self.depth_mean_lsb16.to_string(),
-            self.coverage_differs.to_string(),
-            self.coverage_unexplained.to_string(),
-            self.winner_differs.to_string(),
-            self.winner_unexplained.to_string(),
-            self.problems.to_string(),
-            self.cycles.to_string(),
-            self.pixels_per_clock.to_string(),
-            opt(self.clock_mhz.map(|c| c.to_string())),
-            opt(self.clock_source.map(|s| format!("{s:?}").to_lowercase())),
-            opt(self.frame_us.map(|t| t.to_string())),
-        ]);
+        cells.extend(MEASURES.iter().map(|(_, cell)| cell(self)));
         cells.iter().map(|c| csv_cell(c)).collect::<Vec<_>>().join(",")
     }
 }
@@ -164,5 +144,55 @@ mod infinite_as_null {
 
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
         Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::INFINITY))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every line has the header's columns, a cell with a comma or space quoted, and each
+    /// measure lands under its own name.
+    #[test]
+    fn csv_lines_match_the_header() {
+        let row = Row {
+            scene: "a, b".into(),
+            method: "scanline".into(),
+            point: "default".into(),
+            kind: "default".into(),
+            knob: None,
+            value: None,
+            formats: [("xy".to_string(), "S11.4 [16] half-up".to_string())].into(),
+            params: [("K".to_string(), 7)].into(),
+            psnr_db: 40.5,
+            color_rms_lsb: 0.9,
+            color_max_lsb: 2.0,
+            color_mean_lsb: 0.3,
+            color_over_1: 4,
+            depth_max_lsb: 5.0,
+            depth_mean_lsb: 1.5,
+            depth_max_lsb16: 5.0,
+            depth_mean_lsb16: 1.5,
+            coverage_differs: 6,
+            coverage_unexplained: 0,
+            winner_differs: 7,
+            winner_unexplained: 1,
+            problems: 0,
+            cycles: 1234,
+            pixels_per_clock: 0.5,
+            clock_mhz: Some(18.7),
+            clock_source: Some(Source::Measured),
+            frame_us: Some(66.0),
+        };
+        let (formats, params) = (vec!["xy".to_string()], vec!["K".to_string()]);
+        let header: Vec<String> = Row::csv_header(&formats, &params).split(',').map(String::from).collect();
+        let line = row.csv_line(&formats, &params);
+        assert!(line.starts_with("\"a, b\",scanline,default,default,,,\"S11.4 [16] half-up\",7,40.5,0.9,"), "{line}");
+        // Unquoted, the line has the header's cells.
+        let cells: Vec<&str> =
+            line.replace("\"a, b\"", "ab").replace("\"S11.4 [16] half-up\"", "xy").leak().split(',').collect();
+        assert_eq!(cells.len(), header.len());
+        let at = |name: &str| cells[header.iter().position(|h| h == name).unwrap()];
+        assert_eq!((at("cycles"), at("clock_source"), at("winner_unexplained")), ("1234", "measured", "1"));
     }
 }
