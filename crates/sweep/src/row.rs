@@ -69,8 +69,11 @@ pub struct Row {
     pub frame_us: Option<f64>,
 }
 
-/// The CSV's columns after the design's, each with how a row prints it.
-const MEASURES: &[(&str, fn(&Row) -> String)] = &[
+/// A CSV column: its name and how a row prints it.
+type Column = (&'static str, fn(&Row) -> String);
+
+/// The CSV's columns after the design's.
+const MEASURES: &[Column] = &[
     ("psnr_db", |r| r.psnr_db.to_string()),
     ("color_rms_lsb", |r| r.color_rms_lsb.to_string()),
     ("color_max_lsb", |r| r.color_max_lsb.to_string()),
@@ -189,8 +192,8 @@ mod tests {
         let line = row.csv_line(&formats, &params);
         assert!(line.starts_with("\"a, b\",scanline,default,default,,,\"S11.4 [16] half-up\",7,40.5,0.9,"), "{line}");
         // Unquoted, the line has the header's cells.
-        let cells: Vec<&str> =
-            line.replace("\"a, b\"", "ab").replace("\"S11.4 [16] half-up\"", "xy").leak().split(',').collect();
+        let unquoted = line.replace("\"a, b\"", "ab").replace("\"S11.4 [16] half-up\"", "xy");
+        let cells: Vec<&str> = unquoted.split(',').collect();
         assert_eq!(cells.len(), header.len());
         let at = |name: &str| cells[header.iter().position(|h| h == name).unwrap()];
         assert_eq!((at("cycles"), at("clock_source"), at("winner_unexplained")), ("1234", "measured", "1"));
