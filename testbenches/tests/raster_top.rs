@@ -602,7 +602,7 @@ fn model_frame(
 /// model, in frames of 500 on the 64 x 48 and 320 x 240 screens with both cullings: every
 /// pixel's colour and depth, the writes, the fragments and the frame's cycles equal.
 #[test]
-#[ignore = "soak: 100,000 triangles, about 5 minutes; scripts/soak.sh"]
+#[ignore = "soak: 100,000 triangles, about 6 minutes; scripts/soak.sh"]
 fn raster_top_100k_random_triangles_vs_model() {
     let n: usize = std::env::var("EDGEPAINT_TRIANGLES").ok().and_then(|s| s.parse().ok()).unwrap_or(100_000);
     let mut rng = ChaCha8Rng::seed_from_u64(seed());
