@@ -234,7 +234,7 @@ fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
             let part = part_for(ICE40, count(&w, &|k| k == "SB_LUT4"), count(&w, &|k| k == "SB_MAC16"));
             ice40.device = part.map(|p| p.name);
             if let Some(part) = part {
-                let args = (part.flags, "ice40_pnr.json", ICE40_TARGET_MHZ, "--pcf-allow-unconstrained");
+                let args = (part.flags, "ice40_pnr.json", ICE40_TARGET_MHZ, &["--pcf-allow-unconstrained"][..]);
                 ice40.fmax_mhz = Some(nextpnr(dir, "nextpnr-ice40", args, router)?);
             }
         }
@@ -246,7 +246,10 @@ fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
             let part = part_for(ECP5, luts, count(&w, &|k| k == "MULT18X18D"));
             ecp5.device = part.map(|p| p.name);
             if let Some(part) = part {
-                let args = (part.flags, "ecp5_pnr.json", ECP5_TARGET_MHZ, "--lpf-allow-unconstrained");
+                std::fs::write(dir.join(ECP5_LPF.0), ECP5_LPF.1)
+                    .with_context(|| format!("writing {}", dir.join(ECP5_LPF.0).display()))?;
+                let pins = ["--lpf", ECP5_LPF.0, "--lpf-allow-unconstrained"];
+                let args = (part.flags, "ecp5_pnr.json", ECP5_TARGET_MHZ, &pins[..]);
                 ecp5.fmax_mhz = Some(nextpnr(dir, "nextpnr-ecp5", args, router)?);
             }
         }
@@ -316,18 +319,26 @@ fn cells(design: &serde_json::Value) -> BTreeMap<String, u64> {
         .unwrap_or_default()
 }
 
+/// The ECP5 pin constraints (file name, text): the wrapper's clock on pin G2 of the
+/// CABGA381 package, a primary clock input (PCLKT6_0, the ULX3S board's 25 MHz clock).
+/// Left to nextpnr, the clock may land on a plain I/O that cannot reach the global clock
+/// network: router2 failed on triangle_setup so ("Failed to route arc 0.0 of net
+/// 'clk$TRELLIS_IO_IN' ... to G_CLKI_TDCC0").
+const ECP5_LPF: (&str, &str) = ("ecp5.lpf", "LOCATE COMP \"clk\" SITE \"G2\";\nIOBUF PORT \"clk\" IO_TYPE=LVCMOS33;\n");
+
 /// Places and routes netlist `dir/net`; returns the achieved Fmax in MHz of its one clock.
 /// Runs in `dir` with relative paths: the YoWASP build of nextpnr-ecp5 sees only the
 /// current directory.
-/// `args`: the part's flags, the netlist, the target clock in MHz, the flag allowing
-/// unconstrained pins; `router`: nextpnr's `--router`.
-fn nextpnr(dir: &Path, tool: &str, args: (&[&str], &str, &str, &str), router: &str) -> Result<f64> {
-    let (part, net, target_mhz, unconstrained) = args;
+/// `args`: the part's flags, the netlist, the target clock in MHz, the pin constraints'
+/// flags; `router`: nextpnr's `--router`.
+fn nextpnr(dir: &Path, tool: &str, args: (&[&str], &str, &str, &[&str]), router: &str) -> Result<f64> {
+    let (part, net, target_mhz, pins) = args;
     let (report, log) = (format!("{tool}.report.json"), format!("{tool}.log"));
     let out = Command::new(tool)
         .current_dir(dir)
         .args(part)
-        .args(["--json", net, unconstrained, "--timing-allow-fail", "--seed", "1", "--freq", target_mhz])
+        .args(["--json", net, "--timing-allow-fail", "--seed", "1", "--freq", target_mhz])
+        .args(pins)
         .args(["--router", router])
         .args(["--report", &report, "--log", &log])
         .output()
