@@ -278,15 +278,12 @@ mod tests {
     /// 200 x 100 screen, near 1, far 9. The visible half-height at distance d
     /// is d * tan(45 deg) = d, the half-width 2d.
     fn axis_camera() -> Projection {
-        let cam = Camera {
-            eye: [0.0, 0.0, 5.0],
-            target: [0.0; 3],
-            up: [0.0, 1.0, 0.0],
-            fov_y_deg: 90.0,
-            near: 1.0,
-            far: 9.0,
-        };
-        Projection::new(&cam, 200, 100).unwrap()
+        Projection::new(&axis_cam(), 200, 100).unwrap()
+    }
+
+    /// The camera of [`axis_camera`].
+    fn axis_cam() -> Camera {
+        Camera { eye: [0.0, 0.0, 5.0], target: [0.0; 3], up: [0.0, 1.0, 0.0], fov_y_deg: 90.0, near: 1.0, far: 9.0 }
     }
 
     fn screen(p: &Projection, world: Vec3) -> (f64, f64, f64, f64) {
@@ -343,14 +340,7 @@ mod tests {
 
     #[test]
     fn projection_rejects_bad_cameras() {
-        let good = Camera {
-            eye: [0.0, 0.0, 5.0],
-            target: [0.0; 3],
-            up: [0.0, 1.0, 0.0],
-            fov_y_deg: 60.0,
-            near: 1.0,
-            far: 9.0,
-        };
+        let good = Camera { fov_y_deg: 60.0, ..axis_cam() };
         let cases = [
             (Camera { target: good.eye, ..good }, "are the same point"),
             (Camera { up: [0.0, 0.0, -2.0], ..good }, "parallel to the view direction"),
