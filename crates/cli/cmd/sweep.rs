@@ -148,7 +148,7 @@ fn finish(out: &Path, rows: &[sweep::row::Row], charts: bool) -> Result<()> {
     if charts {
         let charts = sweep::chart::charts(rows);
         for c in &charts {
-            sweep::chart::draw(c, out).map_err(|e| anyhow!("chart {}: {e}", c.stem))?;
+            sweep::chart::draw(c, out).map_err(|e| anyhow!(e))?;
         }
         sweep::report::write(out, rows, &charts).map_err(|e| anyhow!(e))?;
     }

@@ -174,6 +174,9 @@ impl Grid {
     /// Reads a grid file's text; the error names the unknown key or knob.
     pub fn parse(text: &str) -> Result<Grid, String> {
         let g: Grid = serde_json::from_str(text).map_err(|e| e.to_string())?;
+        if g.methods.is_empty() {
+            return Err("\"methods\" is empty: name at least one of scanline, vector, se".into());
+        }
         for (knob, values) in &g.sensitivity {
             if !KNOBS.contains(&knob.as_str()) {
                 return Err(format!("unknown knob \"{knob}\" (knobs: {})", KNOBS.join(", ")));
@@ -314,5 +317,6 @@ mod tests {
         let e = Grid::parse(r#"{"sensitivity": {"w.frac": [4]}}"#).unwrap_err();
         assert!(e.contains("unknown knob \"w.frac\""), "{e}");
         assert!(Grid::parse(r#"{"method": ["scanline"]}"#).unwrap_err().contains("unknown field"));
+        assert!(Grid::parse(r#"{"methods": []}"#).unwrap_err().contains("\"methods\" is empty"));
     }
 }
