@@ -15,7 +15,7 @@ use std::path::PathBuf;
 /// `raster_top`'s clock on ECP5 as placed and routed (README, "Units": the soak's P&R of
 /// the default design), in MHz: the scanline method's clock, measured at the default
 /// design and taken for every other point until the area and clock models exist.
-pub const SCANLINE_CLOCK_MHZ: f64 = 18.7;
+pub const SCANLINE_CLOCK_MHZ: f64 = 19.7;
 
 /// A scene or trilist to sweep.
 pub struct Input {
