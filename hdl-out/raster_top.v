@@ -45,162 +45,6 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
     output reg  done;
     
     // Stub signals
-    reg  front$clock;
-    reg  [10:0] front$width;
-    reg  [10:0] front$height;
-    reg  front$inp_last;
-    reg  front$cull_back;
-    wire  front$out$valid;
-    reg  front$out$ready;
-    wire  [9:0] front$out$x;
-    wire  [9:0] front$out$y;
-    wire  [15:0] front$out$z;
-    wire  [7:0] front$out$rgb0;
-    wire  [7:0] front$out$rgb1;
-    wire  [7:0] front$out$rgb2;
-    wire  front$done;
-    reg  pixel_out$clock;
-    reg  pixel_out$inp$valid;
-    wire  pixel_out$inp$ready;
-    reg  [9:0] pixel_out$inp$x;
-    reg  [9:0] pixel_out$inp$y;
-    reg  [15:0] pixel_out$inp$z;
-    reg  [7:0] pixel_out$inp$rgb0;
-    reg  [7:0] pixel_out$inp$rgb1;
-    reg  [7:0] pixel_out$inp$rgb2;
-    wire  pixel_out$idle;
-    
-    // Sub module instances
-    raster_top$front front(
-        .clock(front$clock),
-        .width(front$width),
-        .height(front$height),
-        .inp$valid(inp$valid),
-        .inp$ready(inp$ready),
-        .inp$v0_x(inp$v0_x),
-        .inp$v0_y(inp$v0_y),
-        .inp$v0_z(inp$v0_z),
-        .inp$v0_c0(inp$v0_c0),
-        .inp$v0_c1(inp$v0_c1),
-        .inp$v0_c2(inp$v0_c2),
-        .inp$v0_iw(inp$v0_iw),
-        .inp$v1_x(inp$v1_x),
-        .inp$v1_y(inp$v1_y),
-        .inp$v1_z(inp$v1_z),
-        .inp$v1_c0(inp$v1_c0),
-        .inp$v1_c1(inp$v1_c1),
-        .inp$v1_c2(inp$v1_c2),
-        .inp$v1_iw(inp$v1_iw),
-        .inp$v2_x(inp$v2_x),
-        .inp$v2_y(inp$v2_y),
-        .inp$v2_z(inp$v2_z),
-        .inp$v2_c0(inp$v2_c0),
-        .inp$v2_c1(inp$v2_c1),
-        .inp$v2_c2(inp$v2_c2),
-        .inp$v2_iw(inp$v2_iw),
-        .inp_last(front$inp_last),
-        .cull_back(front$cull_back),
-        .verdict$valid(verdict$valid),
-        .verdict$code(verdict$code),
-        .verdict$outside(verdict$outside),
-        .out$valid(front$out$valid),
-        .out$ready(front$out$ready),
-        .out$x(front$out$x),
-        .out$y(front$out$y),
-        .out$z(front$out$z),
-        .out$rgb0(front$out$rgb0),
-        .out$rgb1(front$out$rgb1),
-        .out$rgb2(front$out$rgb2),
-        .done(front$done)
-    );
-    raster_top$pixel_out pixel_out(
-        .clock(pixel_out$clock),
-        .inp$valid(pixel_out$inp$valid),
-        .inp$ready(pixel_out$inp$ready),
-        .inp$x(pixel_out$inp$x),
-        .inp$y(pixel_out$inp$y),
-        .inp$z(pixel_out$inp$z),
-        .inp$rgb0(pixel_out$inp$rgb0),
-        .inp$rgb1(pixel_out$inp$rgb1),
-        .inp$rgb2(pixel_out$inp$rgb2),
-        .mem$ready(mem$ready),
-        .mem$rd_en(mem$rd_en),
-        .mem$rd_addr(mem$rd_addr),
-        .mem$rd_z(mem$rd_z),
-        .mem$wr_en(mem$wr_en),
-        .mem$wr_addr(mem$wr_addr),
-        .mem$wr_z(mem$wr_z),
-        .mem$wr_rgb(mem$wr_rgb),
-        .idle(pixel_out$idle)
-    );
-    
-    // Update code
-    always @(*) begin
-        front$clock = clock;
-        pixel_out$clock = clock;
-        front$width = width;
-        front$height = height;
-        front$cull_back = cull_back;
-        front$inp_last = inp_last;
-        done = front$done & pixel_out$idle;
-    end
-    
-    always @(*) pixel_out$inp$valid = front$out$valid;
-    always @(*) front$out$ready = pixel_out$inp$ready;
-    always @(*) pixel_out$inp$x = front$out$x;
-    always @(*) pixel_out$inp$y = front$out$y;
-    always @(*) pixel_out$inp$z = front$out$z;
-    always @(*) pixel_out$inp$rgb0 = front$out$rgb0;
-    always @(*) pixel_out$inp$rgb1 = front$out$rgb1;
-    always @(*) pixel_out$inp$rgb2 = front$out$rgb2;
-endmodule // raster_top
-
-
-module raster_top$front(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp_last,cull_back,verdict$valid,verdict$code,verdict$outside,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,done);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [10:0] width;
-    input wire  [10:0] height;
-    input wire  inp$valid;
-    output wire  inp$ready;
-    input wire  [15:0] inp$v0_x;
-    input wire  [15:0] inp$v0_y;
-    input wire  [17:0] inp$v0_z;
-    input wire  [7:0] inp$v0_c0;
-    input wire  [7:0] inp$v0_c1;
-    input wire  [7:0] inp$v0_c2;
-    input wire  [15:0] inp$v0_iw;
-    input wire  [15:0] inp$v1_x;
-    input wire  [15:0] inp$v1_y;
-    input wire  [17:0] inp$v1_z;
-    input wire  [7:0] inp$v1_c0;
-    input wire  [7:0] inp$v1_c1;
-    input wire  [7:0] inp$v1_c2;
-    input wire  [15:0] inp$v1_iw;
-    input wire  [15:0] inp$v2_x;
-    input wire  [15:0] inp$v2_y;
-    input wire  [17:0] inp$v2_z;
-    input wire  [7:0] inp$v2_c0;
-    input wire  [7:0] inp$v2_c1;
-    input wire  [7:0] inp$v2_c2;
-    input wire  [15:0] inp$v2_iw;
-    input wire  inp_last;
-    input wire  cull_back;
-    output wire  verdict$valid;
-    output wire  [1:0] verdict$code;
-    output wire  [5:0] verdict$outside;
-    output wire  out$valid;
-    input wire  out$ready;
-    output wire  [9:0] out$x;
-    output wire  [9:0] out$y;
-    output wire  [15:0] out$z;
-    output wire  [7:0] out$rgb0;
-    output wire  [7:0] out$rgb1;
-    output wire  [7:0] out$rgb2;
-    output reg  done;
-    
-    // Stub signals
     reg  cull_sort$clock;
     reg  [10:0] cull_sort$width;
     reg  [10:0] cull_sort$height;
@@ -257,14 +101,32 @@ module raster_top$front(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y
     reg  [15:0] core$inp$v2_iw;
     reg  [5:0] core$inp$crosses;
     reg  core$inp_last;
+    wire  core$out$valid;
+    reg  core$out$ready;
+    wire  [9:0] core$out$x;
+    wire  [9:0] core$out$y;
+    wire  [15:0] core$out$z;
+    wire  [7:0] core$out$rgb0;
+    wire  [7:0] core$out$rgb1;
+    wire  [7:0] core$out$rgb2;
     wire  core$idle;
     wire  core$done;
+    reg  pixel_out$clock;
+    reg  pixel_out$inp$valid;
+    wire  pixel_out$inp$ready;
+    reg  [9:0] pixel_out$inp$x;
+    reg  [9:0] pixel_out$inp$y;
+    reg  [15:0] pixel_out$inp$z;
+    reg  [7:0] pixel_out$inp$rgb0;
+    reg  [7:0] pixel_out$inp$rgb1;
+    reg  [7:0] pixel_out$inp$rgb2;
+    wire  pixel_out$idle;
     reg  last_in$d;
     wire  last_in$q;
     reg  last_in$clock;
     
     // Sub module instances
-    raster_top$front$cull_sort cull_sort(
+    raster_top$cull_sort cull_sort(
         .clock(cull_sort$clock),
         .width(cull_sort$width),
         .height(cull_sort$height),
@@ -320,7 +182,7 @@ module raster_top$front(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y
         .verdict$code(verdict$code),
         .verdict$outside(verdict$outside)
     );
-    raster_top$front$core core(
+    raster_top$core core(
         .clock(core$clock),
         .width(core$width),
         .height(core$height),
@@ -349,18 +211,38 @@ module raster_top$front(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y
         .inp$v2_iw(core$inp$v2_iw),
         .inp$crosses(core$inp$crosses),
         .inp_last(core$inp_last),
-        .out$valid(out$valid),
-        .out$ready(out$ready),
-        .out$x(out$x),
-        .out$y(out$y),
-        .out$z(out$z),
-        .out$rgb0(out$rgb0),
-        .out$rgb1(out$rgb1),
-        .out$rgb2(out$rgb2),
+        .out$valid(core$out$valid),
+        .out$ready(core$out$ready),
+        .out$x(core$out$x),
+        .out$y(core$out$y),
+        .out$z(core$out$z),
+        .out$rgb0(core$out$rgb0),
+        .out$rgb1(core$out$rgb1),
+        .out$rgb2(core$out$rgb2),
         .idle(core$idle),
         .done(core$done)
     );
-    raster_top$front$last_in last_in(
+    raster_top$pixel_out pixel_out(
+        .clock(pixel_out$clock),
+        .inp$valid(pixel_out$inp$valid),
+        .inp$ready(pixel_out$inp$ready),
+        .inp$x(pixel_out$inp$x),
+        .inp$y(pixel_out$inp$y),
+        .inp$z(pixel_out$inp$z),
+        .inp$rgb0(pixel_out$inp$rgb0),
+        .inp$rgb1(pixel_out$inp$rgb1),
+        .inp$rgb2(pixel_out$inp$rgb2),
+        .mem$ready(mem$ready),
+        .mem$rd_en(mem$rd_en),
+        .mem$rd_addr(mem$rd_addr),
+        .mem$rd_z(mem$rd_z),
+        .mem$wr_en(mem$wr_en),
+        .mem$wr_addr(mem$wr_addr),
+        .mem$wr_z(mem$wr_z),
+        .mem$wr_rgb(mem$wr_rgb),
+        .idle(pixel_out$idle)
+    );
+    raster_top$last_in last_in(
         .d(last_in$d),
         .q(last_in$q),
         .clock(last_in$clock)
@@ -372,6 +254,7 @@ module raster_top$front(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y
         last_in$d = last_in$q;
         cull_sort$clock = clock;
         core$clock = clock;
+        pixel_out$clock = clock;
         cull_sort$width = width;
         cull_sort$height = height;
         cull_sort$cull_back = cull_back;
@@ -381,7 +264,7 @@ module raster_top$front(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y
         if (inp$valid & inp$ready) begin
             last_in$d = inp_last;
         end
-        done = last_in$q & ~cull_sort$out$valid & core$idle;
+        done = last_in$q & ~cull_sort$out$valid & core$idle & pixel_out$idle;
     end
     
     always @(*) core$inp$valid = cull_sort$out$valid;
@@ -408,10 +291,18 @@ module raster_top$front(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y
     always @(*) core$inp$v2_c2 = cull_sort$out$v2_c2;
     always @(*) core$inp$v2_iw = cull_sort$out$v2_iw;
     always @(*) core$inp$crosses = cull_sort$out$crosses;
-endmodule // raster_top$front
+    always @(*) pixel_out$inp$valid = core$out$valid;
+    always @(*) core$out$ready = pixel_out$inp$ready;
+    always @(*) pixel_out$inp$x = core$out$x;
+    always @(*) pixel_out$inp$y = core$out$y;
+    always @(*) pixel_out$inp$z = core$out$z;
+    always @(*) pixel_out$inp$rgb0 = core$out$rgb0;
+    always @(*) pixel_out$inp$rgb1 = core$out$rgb1;
+    always @(*) pixel_out$inp$rgb2 = core$out$rgb2;
+endmodule // raster_top
 
 
-module raster_top$front$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,inp_last,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle,done);
+module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,inp_last,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle,done);
     
     // Module arguments
     input wire  clock;
@@ -668,7 +559,7 @@ module raster_top$front$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp
     reg  last_in$clock;
     
     // Sub module instances
-    raster_top$front$core$triangle_setup triangle_setup(
+    raster_top$core$triangle_setup triangle_setup(
         .clock(triangle_setup$clock),
         .inp$valid(inp$valid),
         .inp$ready(inp$ready),
@@ -760,7 +651,7 @@ module raster_top$front$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp
         .out$ddx_c1(triangle_setup$out$ddx_c1),
         .out$ddx_c2(triangle_setup$out$ddx_c2)
     );
-    raster_top$front$core$edge_walk edge_walk(
+    raster_top$core$edge_walk edge_walk(
         .clock(edge_walk$clock),
         .height(edge_walk$height),
         .inp$valid(edge_walk$inp$valid),
@@ -846,7 +737,7 @@ module raster_top$front$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp
         .out$ddx_c1(edge_walk$out$ddx_c1),
         .out$ddx_c2(edge_walk$out$ddx_c2)
     );
-    raster_top$front$core$fifo fifo(
+    raster_top$core$fifo fifo(
         .clock(fifo$clock),
         .inp$valid(fifo$inp$valid),
         .inp$ready(fifo$inp$ready),
@@ -884,7 +775,7 @@ module raster_top$front$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp
         .out$ddx_c2(fifo$out$ddx_c2),
         .empty(fifo$empty)
     );
-    raster_top$front$core$span span(
+    raster_top$core$span span(
         .clock(span$clock),
         .width(span$width),
         .inp$valid(span$inp$valid),
@@ -914,12 +805,12 @@ module raster_top$front$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp
         .out$rgb2(out$rgb2),
         .idle(span$idle)
     );
-    raster_top$front$core$in_setup in_setup(
+    raster_top$core$in_setup in_setup(
         .d(in_setup$d),
         .q(in_setup$q),
         .clock(in_setup$clock)
     );
-    raster_top$front$core$last_in last_in(
+    raster_top$core$last_in last_in(
         .d(last_in$d),
         .q(last_in$q),
         .clock(last_in$clock)
@@ -1049,10 +940,10 @@ module raster_top$front$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp
     always @(*) span$inp$ddx_c0 = fifo$out$ddx_c0;
     always @(*) span$inp$ddx_c1 = fifo$out$ddx_c1;
     always @(*) span$inp$ddx_c2 = fifo$out$ddx_c2;
-endmodule // raster_top$front$core
+endmodule // raster_top$core
 
 
-module raster_top$front$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_j,inp$maj_count,inp$maj_x,inp$maj_r,inp$maj_q,inp$maj_rho,inp$maj_d,inp$maj_at_z,inp$maj_at_c0,inp$maj_at_c1,inp$maj_at_c2,inp$maj_inc0_z,inp$maj_inc0_c0,inp$maj_inc0_c1,inp$maj_inc0_c2,inp$maj_inc1_z,inp$maj_inc1_c0,inp$maj_inc1_c1,inp$maj_inc1_c2,inp$short0_j,inp$short0_count,inp$short0_x,inp$short0_r,inp$short0_q,inp$short0_rho,inp$short0_d,inp$short0_at_z,inp$short0_at_c0,inp$short0_at_c1,inp$short0_at_c2,inp$short0_inc0_z,inp$short0_inc0_c0,inp$short0_inc0_c1,inp$short0_inc0_c2,inp$short0_inc1_z,inp$short0_inc1_c0,inp$short0_inc1_c1,inp$short0_inc1_c2,inp$short1_j,inp$short1_count,inp$short1_x,inp$short1_r,inp$short1_q,inp$short1_rho,inp$short1_d,inp$short1_at_z,inp$short1_at_c0,inp$short1_at_c1,inp$short1_at_c2,inp$short1_inc0_z,inp$short1_inc0_c0,inp$short1_inc0_c1,inp$short1_inc0_c2,inp$short1_inc1_z,inp$short1_inc1_c0,inp$short1_inc1_c1,inp$short1_inc1_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
+module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_j,inp$maj_count,inp$maj_x,inp$maj_r,inp$maj_q,inp$maj_rho,inp$maj_d,inp$maj_at_z,inp$maj_at_c0,inp$maj_at_c1,inp$maj_at_c2,inp$maj_inc0_z,inp$maj_inc0_c0,inp$maj_inc0_c1,inp$maj_inc0_c2,inp$maj_inc1_z,inp$maj_inc1_c0,inp$maj_inc1_c1,inp$maj_inc1_c2,inp$short0_j,inp$short0_count,inp$short0_x,inp$short0_r,inp$short0_q,inp$short0_rho,inp$short0_d,inp$short0_at_z,inp$short0_at_c0,inp$short0_at_c1,inp$short0_at_c2,inp$short0_inc0_z,inp$short0_inc0_c0,inp$short0_inc0_c1,inp$short0_inc0_c2,inp$short0_inc1_z,inp$short0_inc1_c0,inp$short0_inc1_c1,inp$short0_inc1_c2,inp$short1_j,inp$short1_count,inp$short1_x,inp$short1_r,inp$short1_q,inp$short1_rho,inp$short1_d,inp$short1_at_z,inp$short1_at_c0,inp$short1_at_c1,inp$short1_at_c2,inp$short1_inc0_z,inp$short1_inc0_c0,inp$short1_inc0_c1,inp$short1_inc0_c2,inp$short1_inc1_z,inp$short1_inc1_c0,inp$short1_inc1_c1,inp$short1_inc1_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
     
     // Module arguments
     input wire  clock;
@@ -1298,7 +1189,7 @@ module raster_top$front$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk
     reg  [12:0] height_j;
     
     // Sub module instances
-    raster_top$front$core$edge_walk$maj maj(
+    raster_top$core$edge_walk$maj maj(
         .clock(maj$clock),
         .load(maj$load),
         .step(maj$step),
@@ -1326,7 +1217,7 @@ module raster_top$front$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk
         .at_c1(maj$at_c1),
         .at_c2(maj$at_c2)
     );
-    raster_top$front$core$edge_walk$cur cur(
+    raster_top$core$edge_walk$cur cur(
         .clock(cur$clock),
         .load(cur$load),
         .step(cur$step),
@@ -1354,156 +1245,156 @@ module raster_top$front$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk
         .at_c1(cur$at_c1),
         .at_c2(cur$at_c2)
     );
-    raster_top$front$core$edge_walk$busy busy(
+    raster_top$core$edge_walk$busy busy(
         .d(busy$d),
         .q(busy$q),
         .clock(busy$clock)
     );
-    raster_top$front$core$edge_walk$walking walking(
+    raster_top$core$edge_walk$walking walking(
         .d(walking$d),
         .q(walking$q),
         .clock(walking$clock)
     );
-    raster_top$front$core$edge_walk$up up(
+    raster_top$core$edge_walk$up up(
         .d(up$d),
         .q(up$q),
         .clock(up$clock)
     );
-    raster_top$front$core$edge_walk$maj_left maj_left(
+    raster_top$core$edge_walk$maj_left maj_left(
         .d(maj_left$d),
         .q(maj_left$q),
         .clock(maj_left$clock)
     );
-    raster_top$front$core$edge_walk$j j(
+    raster_top$core$edge_walk$j j(
         .d(j$d),
         .q(j$q),
         .clock(j$clock)
     );
-    raster_top$front$core$edge_walk$k k(
+    raster_top$core$edge_walk$k k(
         .d(k$d),
         .q(k$q),
         .clock(k$clock)
     );
-    raster_top$front$core$edge_walk$total total(
+    raster_top$core$edge_walk$total total(
         .d(total$d),
         .q(total$q),
         .clock(total$clock)
     );
-    raster_top$front$core$edge_walk$c0 c0(
+    raster_top$core$edge_walk$c0 c0(
         .d(c0$d),
         .q(c0$q),
         .clock(c0$clock)
     );
-    raster_top$front$core$edge_walk$ddx_z ddx_z(
+    raster_top$core$edge_walk$ddx_z ddx_z(
         .d(ddx_z$d),
         .q(ddx_z$q),
         .clock(ddx_z$clock)
     );
-    raster_top$front$core$edge_walk$ddx_c0 ddx_c0(
+    raster_top$core$edge_walk$ddx_c0 ddx_c0(
         .d(ddx_c0$d),
         .q(ddx_c0$q),
         .clock(ddx_c0$clock)
     );
-    raster_top$front$core$edge_walk$ddx_c1 ddx_c1(
+    raster_top$core$edge_walk$ddx_c1 ddx_c1(
         .d(ddx_c1$d),
         .q(ddx_c1$q),
         .clock(ddx_c1$clock)
     );
-    raster_top$front$core$edge_walk$ddx_c2 ddx_c2(
+    raster_top$core$edge_walk$ddx_c2 ddx_c2(
         .d(ddx_c2$d),
         .q(ddx_c2$q),
         .clock(ddx_c2$clock)
     );
-    raster_top$front$core$edge_walk$pend_x pend_x(
+    raster_top$core$edge_walk$pend_x pend_x(
         .d(pend_x$d),
         .q(pend_x$q),
         .clock(pend_x$clock)
     );
-    raster_top$front$core$edge_walk$pend_r pend_r(
+    raster_top$core$edge_walk$pend_r pend_r(
         .d(pend_r$d),
         .q(pend_r$q),
         .clock(pend_r$clock)
     );
-    raster_top$front$core$edge_walk$pend_q pend_q(
+    raster_top$core$edge_walk$pend_q pend_q(
         .d(pend_q$d),
         .q(pend_q$q),
         .clock(pend_q$clock)
     );
-    raster_top$front$core$edge_walk$pend_rho pend_rho(
+    raster_top$core$edge_walk$pend_rho pend_rho(
         .d(pend_rho$d),
         .q(pend_rho$q),
         .clock(pend_rho$clock)
     );
-    raster_top$front$core$edge_walk$pend_d pend_d(
+    raster_top$core$edge_walk$pend_d pend_d(
         .d(pend_d$d),
         .q(pend_d$q),
         .clock(pend_d$clock)
     );
-    raster_top$front$core$edge_walk$pend_at_z pend_at_z(
+    raster_top$core$edge_walk$pend_at_z pend_at_z(
         .d(pend_at_z$d),
         .q(pend_at_z$q),
         .clock(pend_at_z$clock)
     );
-    raster_top$front$core$edge_walk$pend_at_c0 pend_at_c0(
+    raster_top$core$edge_walk$pend_at_c0 pend_at_c0(
         .d(pend_at_c0$d),
         .q(pend_at_c0$q),
         .clock(pend_at_c0$clock)
     );
-    raster_top$front$core$edge_walk$pend_at_c1 pend_at_c1(
+    raster_top$core$edge_walk$pend_at_c1 pend_at_c1(
         .d(pend_at_c1$d),
         .q(pend_at_c1$q),
         .clock(pend_at_c1$clock)
     );
-    raster_top$front$core$edge_walk$pend_at_c2 pend_at_c2(
+    raster_top$core$edge_walk$pend_at_c2 pend_at_c2(
         .d(pend_at_c2$d),
         .q(pend_at_c2$q),
         .clock(pend_at_c2$clock)
     );
-    raster_top$front$core$edge_walk$pend_inc0_z pend_inc0_z(
+    raster_top$core$edge_walk$pend_inc0_z pend_inc0_z(
         .d(pend_inc0_z$d),
         .q(pend_inc0_z$q),
         .clock(pend_inc0_z$clock)
     );
-    raster_top$front$core$edge_walk$pend_inc0_c0 pend_inc0_c0(
+    raster_top$core$edge_walk$pend_inc0_c0 pend_inc0_c0(
         .d(pend_inc0_c0$d),
         .q(pend_inc0_c0$q),
         .clock(pend_inc0_c0$clock)
     );
-    raster_top$front$core$edge_walk$pend_inc0_c1 pend_inc0_c1(
+    raster_top$core$edge_walk$pend_inc0_c1 pend_inc0_c1(
         .d(pend_inc0_c1$d),
         .q(pend_inc0_c1$q),
         .clock(pend_inc0_c1$clock)
     );
-    raster_top$front$core$edge_walk$pend_inc0_c2 pend_inc0_c2(
+    raster_top$core$edge_walk$pend_inc0_c2 pend_inc0_c2(
         .d(pend_inc0_c2$d),
         .q(pend_inc0_c2$q),
         .clock(pend_inc0_c2$clock)
     );
-    raster_top$front$core$edge_walk$pend_inc1_z pend_inc1_z(
+    raster_top$core$edge_walk$pend_inc1_z pend_inc1_z(
         .d(pend_inc1_z$d),
         .q(pend_inc1_z$q),
         .clock(pend_inc1_z$clock)
     );
-    raster_top$front$core$edge_walk$pend_inc1_c0 pend_inc1_c0(
+    raster_top$core$edge_walk$pend_inc1_c0 pend_inc1_c0(
         .d(pend_inc1_c0$d),
         .q(pend_inc1_c0$q),
         .clock(pend_inc1_c0$clock)
     );
-    raster_top$front$core$edge_walk$pend_inc1_c1 pend_inc1_c1(
+    raster_top$core$edge_walk$pend_inc1_c1 pend_inc1_c1(
         .d(pend_inc1_c1$d),
         .q(pend_inc1_c1$q),
         .clock(pend_inc1_c1$clock)
     );
-    raster_top$front$core$edge_walk$pend_inc1_c2 pend_inc1_c2(
+    raster_top$core$edge_walk$pend_inc1_c2 pend_inc1_c2(
         .d(pend_inc1_c2$d),
         .q(pend_inc1_c2$q),
         .clock(pend_inc1_c2$clock)
     );
-    raster_top$front$core$edge_walk$j_sign j_sign(
+    raster_top$core$edge_walk$j_sign j_sign(
         .x(j_sign$x),
         .neg(j_sign$neg)
     );
-    raster_top$front$core$edge_walk$sides sides(
+    raster_top$core$edge_walk$sides sides(
         .a(sides$a),
         .b(sides$b),
         .lt(sides$lt)
@@ -1749,10 +1640,10 @@ module raster_top$front$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk
         end
     end
     
-endmodule // raster_top$front$core$edge_walk
+endmodule // raster_top$core$edge_walk
 
 
-module raster_top$front$core$edge_walk$busy(d,q,clock);
+module raster_top$core$edge_walk$busy(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -1768,10 +1659,10 @@ module raster_top$front$core$edge_walk$busy(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$busy
+endmodule // raster_top$core$edge_walk$busy
 
 
-module raster_top$front$core$edge_walk$c0(d,q,clock);
+module raster_top$core$edge_walk$c0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -1787,10 +1678,10 @@ module raster_top$front$core$edge_walk$c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$c0
+endmodule // raster_top$core$edge_walk$c0
 
 
-module raster_top$front$core$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
+module raster_top$core$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
     
     // Module arguments
     input wire  clock;
@@ -1880,32 +1771,32 @@ module raster_top$front$core$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_
     reg  [12:0] x_step;
     
     // Sub module instances
-    raster_top$front$core$edge_walk$cur$x_r x_r(
+    raster_top$core$edge_walk$cur$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$front$core$edge_walk$cur$r_r r_r(
+    raster_top$core$edge_walk$cur$r_r r_r(
         .d(r_r$d),
         .q(r_r$q),
         .clock(r_r$clock)
     );
-    raster_top$front$core$edge_walk$cur$q_r q_r(
+    raster_top$core$edge_walk$cur$q_r q_r(
         .d(q_r$d),
         .q(q_r$q),
         .clock(q_r$clock)
     );
-    raster_top$front$core$edge_walk$cur$rho_r rho_r(
+    raster_top$core$edge_walk$cur$rho_r rho_r(
         .d(rho_r$d),
         .q(rho_r$q),
         .clock(rho_r$clock)
     );
-    raster_top$front$core$edge_walk$cur$d_r d_r(
+    raster_top$core$edge_walk$cur$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$front$core$edge_walk$cur$z z(
+    raster_top$core$edge_walk$cur$z z(
         .clock(z$clock),
         .load(z$load),
         .step(z$step),
@@ -1916,7 +1807,7 @@ module raster_top$front$core$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_
         .ld_inc1(z$ld_inc1),
         .at(z$at)
     );
-    raster_top$front$core$edge_walk$cur$c0 c0(
+    raster_top$core$edge_walk$cur$c0 c0(
         .clock(c0$clock),
         .load(c0$load),
         .step(c0$step),
@@ -1927,7 +1818,7 @@ module raster_top$front$core$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_
         .ld_inc1(c0$ld_inc1),
         .at(c0$at)
     );
-    raster_top$front$core$edge_walk$cur$c1 c1(
+    raster_top$core$edge_walk$cur$c1 c1(
         .clock(c1$clock),
         .load(c1$load),
         .step(c1$step),
@@ -1938,7 +1829,7 @@ module raster_top$front$core$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_
         .ld_inc1(c1$ld_inc1),
         .at(c1$at)
     );
-    raster_top$front$core$edge_walk$cur$c2 c2(
+    raster_top$core$edge_walk$cur$c2 c2(
         .clock(c2$clock),
         .load(c2$load),
         .step(c2$step),
@@ -2031,10 +1922,10 @@ module raster_top$front$core$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_
         at_c2 = c2$at;
     end
     
-endmodule // raster_top$front$core$edge_walk$cur
+endmodule // raster_top$core$edge_walk$cur
 
 
-module raster_top$front$core$edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -2062,17 +1953,17 @@ module raster_top$front$core$edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_in
     reg  [31:0] inc;
     
     // Sub module instances
-    raster_top$front$core$edge_walk$cur$c0$at_r at_r(
+    raster_top$core$edge_walk$cur$c0$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$front$core$edge_walk$cur$c0$inc0_r inc0_r(
+    raster_top$core$edge_walk$cur$c0$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$front$core$edge_walk$cur$c0$inc1_r inc1_r(
+    raster_top$core$edge_walk$cur$c0$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -2106,10 +1997,10 @@ module raster_top$front$core$edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_in
         at = at_r$q;
     end
     
-endmodule // raster_top$front$core$edge_walk$cur$c0
+endmodule // raster_top$core$edge_walk$cur$c0
 
 
-module raster_top$front$core$edge_walk$cur$c0$at_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c0$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2125,10 +2016,10 @@ module raster_top$front$core$edge_walk$cur$c0$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$c0$at_r
+endmodule // raster_top$core$edge_walk$cur$c0$at_r
 
 
-module raster_top$front$core$edge_walk$cur$c0$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c0$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2144,10 +2035,10 @@ module raster_top$front$core$edge_walk$cur$c0$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$c0$inc0_r
+endmodule // raster_top$core$edge_walk$cur$c0$inc0_r
 
 
-module raster_top$front$core$edge_walk$cur$c0$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c0$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2163,10 +2054,10 @@ module raster_top$front$core$edge_walk$cur$c0$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$c0$inc1_r
+endmodule // raster_top$core$edge_walk$cur$c0$inc1_r
 
 
-module raster_top$front$core$edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -2194,17 +2085,17 @@ module raster_top$front$core$edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_in
     reg  [31:0] inc;
     
     // Sub module instances
-    raster_top$front$core$edge_walk$cur$c1$at_r at_r(
+    raster_top$core$edge_walk$cur$c1$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$front$core$edge_walk$cur$c1$inc0_r inc0_r(
+    raster_top$core$edge_walk$cur$c1$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$front$core$edge_walk$cur$c1$inc1_r inc1_r(
+    raster_top$core$edge_walk$cur$c1$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -2238,10 +2129,10 @@ module raster_top$front$core$edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_in
         at = at_r$q;
     end
     
-endmodule // raster_top$front$core$edge_walk$cur$c1
+endmodule // raster_top$core$edge_walk$cur$c1
 
 
-module raster_top$front$core$edge_walk$cur$c1$at_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c1$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2257,10 +2148,10 @@ module raster_top$front$core$edge_walk$cur$c1$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$c1$at_r
+endmodule // raster_top$core$edge_walk$cur$c1$at_r
 
 
-module raster_top$front$core$edge_walk$cur$c1$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c1$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2276,10 +2167,10 @@ module raster_top$front$core$edge_walk$cur$c1$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$c1$inc0_r
+endmodule // raster_top$core$edge_walk$cur$c1$inc0_r
 
 
-module raster_top$front$core$edge_walk$cur$c1$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c1$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2295,10 +2186,10 @@ module raster_top$front$core$edge_walk$cur$c1$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$c1$inc1_r
+endmodule // raster_top$core$edge_walk$cur$c1$inc1_r
 
 
-module raster_top$front$core$edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -2326,17 +2217,17 @@ module raster_top$front$core$edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_in
     reg  [31:0] inc;
     
     // Sub module instances
-    raster_top$front$core$edge_walk$cur$c2$at_r at_r(
+    raster_top$core$edge_walk$cur$c2$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$front$core$edge_walk$cur$c2$inc0_r inc0_r(
+    raster_top$core$edge_walk$cur$c2$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$front$core$edge_walk$cur$c2$inc1_r inc1_r(
+    raster_top$core$edge_walk$cur$c2$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -2370,10 +2261,10 @@ module raster_top$front$core$edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_in
         at = at_r$q;
     end
     
-endmodule // raster_top$front$core$edge_walk$cur$c2
+endmodule // raster_top$core$edge_walk$cur$c2
 
 
-module raster_top$front$core$edge_walk$cur$c2$at_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c2$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2389,10 +2280,10 @@ module raster_top$front$core$edge_walk$cur$c2$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$c2$at_r
+endmodule // raster_top$core$edge_walk$cur$c2$at_r
 
 
-module raster_top$front$core$edge_walk$cur$c2$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c2$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2408,10 +2299,10 @@ module raster_top$front$core$edge_walk$cur$c2$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$c2$inc0_r
+endmodule // raster_top$core$edge_walk$cur$c2$inc0_r
 
 
-module raster_top$front$core$edge_walk$cur$c2$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$cur$c2$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2427,10 +2318,10 @@ module raster_top$front$core$edge_walk$cur$c2$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$c2$inc1_r
+endmodule // raster_top$core$edge_walk$cur$c2$inc1_r
 
 
-module raster_top$front$core$edge_walk$cur$d_r(d,q,clock);
+module raster_top$core$edge_walk$cur$d_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -2446,10 +2337,10 @@ module raster_top$front$core$edge_walk$cur$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$d_r
+endmodule // raster_top$core$edge_walk$cur$d_r
 
 
-module raster_top$front$core$edge_walk$cur$q_r(d,q,clock);
+module raster_top$core$edge_walk$cur$q_r(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -2465,10 +2356,10 @@ module raster_top$front$core$edge_walk$cur$q_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$q_r
+endmodule // raster_top$core$edge_walk$cur$q_r
 
 
-module raster_top$front$core$edge_walk$cur$r_r(d,q,clock);
+module raster_top$core$edge_walk$cur$r_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -2484,10 +2375,10 @@ module raster_top$front$core$edge_walk$cur$r_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$r_r
+endmodule // raster_top$core$edge_walk$cur$r_r
 
 
-module raster_top$front$core$edge_walk$cur$rho_r(d,q,clock);
+module raster_top$core$edge_walk$cur$rho_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -2503,10 +2394,10 @@ module raster_top$front$core$edge_walk$cur$rho_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$rho_r
+endmodule // raster_top$core$edge_walk$cur$rho_r
 
 
-module raster_top$front$core$edge_walk$cur$x_r(d,q,clock);
+module raster_top$core$edge_walk$cur$x_r(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -2522,10 +2413,10 @@ module raster_top$front$core$edge_walk$cur$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$x_r
+endmodule // raster_top$core$edge_walk$cur$x_r
 
 
-module raster_top$front$core$edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -2553,17 +2444,17 @@ module raster_top$front$core$edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc
     reg  [35:0] inc;
     
     // Sub module instances
-    raster_top$front$core$edge_walk$cur$z$at_r at_r(
+    raster_top$core$edge_walk$cur$z$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$front$core$edge_walk$cur$z$inc0_r inc0_r(
+    raster_top$core$edge_walk$cur$z$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$front$core$edge_walk$cur$z$inc1_r inc1_r(
+    raster_top$core$edge_walk$cur$z$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -2597,10 +2488,10 @@ module raster_top$front$core$edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc
         at = at_r$q;
     end
     
-endmodule // raster_top$front$core$edge_walk$cur$z
+endmodule // raster_top$core$edge_walk$cur$z
 
 
-module raster_top$front$core$edge_walk$cur$z$at_r(d,q,clock);
+module raster_top$core$edge_walk$cur$z$at_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -2616,10 +2507,10 @@ module raster_top$front$core$edge_walk$cur$z$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$z$at_r
+endmodule // raster_top$core$edge_walk$cur$z$at_r
 
 
-module raster_top$front$core$edge_walk$cur$z$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$cur$z$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -2635,10 +2526,10 @@ module raster_top$front$core$edge_walk$cur$z$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$z$inc0_r
+endmodule // raster_top$core$edge_walk$cur$z$inc0_r
 
 
-module raster_top$front$core$edge_walk$cur$z$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$cur$z$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -2654,10 +2545,10 @@ module raster_top$front$core$edge_walk$cur$z$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$cur$z$inc1_r
+endmodule // raster_top$core$edge_walk$cur$z$inc1_r
 
 
-module raster_top$front$core$edge_walk$ddx_c0(d,q,clock);
+module raster_top$core$edge_walk$ddx_c0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -2673,10 +2564,10 @@ module raster_top$front$core$edge_walk$ddx_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$ddx_c0
+endmodule // raster_top$core$edge_walk$ddx_c0
 
 
-module raster_top$front$core$edge_walk$ddx_c1(d,q,clock);
+module raster_top$core$edge_walk$ddx_c1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -2692,10 +2583,10 @@ module raster_top$front$core$edge_walk$ddx_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$ddx_c1
+endmodule // raster_top$core$edge_walk$ddx_c1
 
 
-module raster_top$front$core$edge_walk$ddx_c2(d,q,clock);
+module raster_top$core$edge_walk$ddx_c2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -2711,10 +2602,10 @@ module raster_top$front$core$edge_walk$ddx_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$ddx_c2
+endmodule // raster_top$core$edge_walk$ddx_c2
 
 
-module raster_top$front$core$edge_walk$ddx_z(d,q,clock);
+module raster_top$core$edge_walk$ddx_z(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -2730,10 +2621,10 @@ module raster_top$front$core$edge_walk$ddx_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$ddx_z
+endmodule // raster_top$core$edge_walk$ddx_z
 
 
-module raster_top$front$core$edge_walk$j(d,q,clock);
+module raster_top$core$edge_walk$j(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -2749,10 +2640,10 @@ module raster_top$front$core$edge_walk$j(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$j
+endmodule // raster_top$core$edge_walk$j
 
 
-module raster_top$front$core$edge_walk$j_sign(x,neg);
+module raster_top$core$edge_walk$j_sign(x,neg);
     
     // Module arguments
     input wire  [12:0] x;
@@ -2766,10 +2657,10 @@ module raster_top$front$core$edge_walk$j_sign(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$front$core$edge_walk$j_sign
+endmodule // raster_top$core$edge_walk$j_sign
 
 
-module raster_top$front$core$edge_walk$k(d,q,clock);
+module raster_top$core$edge_walk$k(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -2785,10 +2676,10 @@ module raster_top$front$core$edge_walk$k(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$k
+endmodule // raster_top$core$edge_walk$k
 
 
-module raster_top$front$core$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
+module raster_top$core$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
     
     // Module arguments
     input wire  clock;
@@ -2878,32 +2769,32 @@ module raster_top$front$core$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_
     reg  [12:0] x_step;
     
     // Sub module instances
-    raster_top$front$core$edge_walk$maj$x_r x_r(
+    raster_top$core$edge_walk$maj$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$front$core$edge_walk$maj$r_r r_r(
+    raster_top$core$edge_walk$maj$r_r r_r(
         .d(r_r$d),
         .q(r_r$q),
         .clock(r_r$clock)
     );
-    raster_top$front$core$edge_walk$maj$q_r q_r(
+    raster_top$core$edge_walk$maj$q_r q_r(
         .d(q_r$d),
         .q(q_r$q),
         .clock(q_r$clock)
     );
-    raster_top$front$core$edge_walk$maj$rho_r rho_r(
+    raster_top$core$edge_walk$maj$rho_r rho_r(
         .d(rho_r$d),
         .q(rho_r$q),
         .clock(rho_r$clock)
     );
-    raster_top$front$core$edge_walk$maj$d_r d_r(
+    raster_top$core$edge_walk$maj$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$front$core$edge_walk$maj$z z(
+    raster_top$core$edge_walk$maj$z z(
         .clock(z$clock),
         .load(z$load),
         .step(z$step),
@@ -2914,7 +2805,7 @@ module raster_top$front$core$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_
         .ld_inc1(z$ld_inc1),
         .at(z$at)
     );
-    raster_top$front$core$edge_walk$maj$c0 c0(
+    raster_top$core$edge_walk$maj$c0 c0(
         .clock(c0$clock),
         .load(c0$load),
         .step(c0$step),
@@ -2925,7 +2816,7 @@ module raster_top$front$core$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_
         .ld_inc1(c0$ld_inc1),
         .at(c0$at)
     );
-    raster_top$front$core$edge_walk$maj$c1 c1(
+    raster_top$core$edge_walk$maj$c1 c1(
         .clock(c1$clock),
         .load(c1$load),
         .step(c1$step),
@@ -2936,7 +2827,7 @@ module raster_top$front$core$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_
         .ld_inc1(c1$ld_inc1),
         .at(c1$at)
     );
-    raster_top$front$core$edge_walk$maj$c2 c2(
+    raster_top$core$edge_walk$maj$c2 c2(
         .clock(c2$clock),
         .load(c2$load),
         .step(c2$step),
@@ -3029,10 +2920,10 @@ module raster_top$front$core$edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_
         at_c2 = c2$at;
     end
     
-endmodule // raster_top$front$core$edge_walk$maj
+endmodule // raster_top$core$edge_walk$maj
 
 
-module raster_top$front$core$edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -3060,17 +2951,17 @@ module raster_top$front$core$edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_in
     reg  [31:0] inc;
     
     // Sub module instances
-    raster_top$front$core$edge_walk$maj$c0$at_r at_r(
+    raster_top$core$edge_walk$maj$c0$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$front$core$edge_walk$maj$c0$inc0_r inc0_r(
+    raster_top$core$edge_walk$maj$c0$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$front$core$edge_walk$maj$c0$inc1_r inc1_r(
+    raster_top$core$edge_walk$maj$c0$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -3104,10 +2995,10 @@ module raster_top$front$core$edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_in
         at = at_r$q;
     end
     
-endmodule // raster_top$front$core$edge_walk$maj$c0
+endmodule // raster_top$core$edge_walk$maj$c0
 
 
-module raster_top$front$core$edge_walk$maj$c0$at_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c0$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3123,10 +3014,10 @@ module raster_top$front$core$edge_walk$maj$c0$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$c0$at_r
+endmodule // raster_top$core$edge_walk$maj$c0$at_r
 
 
-module raster_top$front$core$edge_walk$maj$c0$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c0$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3142,10 +3033,10 @@ module raster_top$front$core$edge_walk$maj$c0$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$c0$inc0_r
+endmodule // raster_top$core$edge_walk$maj$c0$inc0_r
 
 
-module raster_top$front$core$edge_walk$maj$c0$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c0$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3161,10 +3052,10 @@ module raster_top$front$core$edge_walk$maj$c0$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$c0$inc1_r
+endmodule // raster_top$core$edge_walk$maj$c0$inc1_r
 
 
-module raster_top$front$core$edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -3192,17 +3083,17 @@ module raster_top$front$core$edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_in
     reg  [31:0] inc;
     
     // Sub module instances
-    raster_top$front$core$edge_walk$maj$c1$at_r at_r(
+    raster_top$core$edge_walk$maj$c1$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$front$core$edge_walk$maj$c1$inc0_r inc0_r(
+    raster_top$core$edge_walk$maj$c1$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$front$core$edge_walk$maj$c1$inc1_r inc1_r(
+    raster_top$core$edge_walk$maj$c1$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -3236,10 +3127,10 @@ module raster_top$front$core$edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_in
         at = at_r$q;
     end
     
-endmodule // raster_top$front$core$edge_walk$maj$c1
+endmodule // raster_top$core$edge_walk$maj$c1
 
 
-module raster_top$front$core$edge_walk$maj$c1$at_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c1$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3255,10 +3146,10 @@ module raster_top$front$core$edge_walk$maj$c1$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$c1$at_r
+endmodule // raster_top$core$edge_walk$maj$c1$at_r
 
 
-module raster_top$front$core$edge_walk$maj$c1$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c1$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3274,10 +3165,10 @@ module raster_top$front$core$edge_walk$maj$c1$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$c1$inc0_r
+endmodule // raster_top$core$edge_walk$maj$c1$inc0_r
 
 
-module raster_top$front$core$edge_walk$maj$c1$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c1$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3293,10 +3184,10 @@ module raster_top$front$core$edge_walk$maj$c1$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$c1$inc1_r
+endmodule // raster_top$core$edge_walk$maj$c1$inc1_r
 
 
-module raster_top$front$core$edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -3324,17 +3215,17 @@ module raster_top$front$core$edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_in
     reg  [31:0] inc;
     
     // Sub module instances
-    raster_top$front$core$edge_walk$maj$c2$at_r at_r(
+    raster_top$core$edge_walk$maj$c2$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$front$core$edge_walk$maj$c2$inc0_r inc0_r(
+    raster_top$core$edge_walk$maj$c2$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$front$core$edge_walk$maj$c2$inc1_r inc1_r(
+    raster_top$core$edge_walk$maj$c2$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -3368,10 +3259,10 @@ module raster_top$front$core$edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_in
         at = at_r$q;
     end
     
-endmodule // raster_top$front$core$edge_walk$maj$c2
+endmodule // raster_top$core$edge_walk$maj$c2
 
 
-module raster_top$front$core$edge_walk$maj$c2$at_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c2$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3387,10 +3278,10 @@ module raster_top$front$core$edge_walk$maj$c2$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$c2$at_r
+endmodule // raster_top$core$edge_walk$maj$c2$at_r
 
 
-module raster_top$front$core$edge_walk$maj$c2$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c2$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3406,10 +3297,10 @@ module raster_top$front$core$edge_walk$maj$c2$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$c2$inc0_r
+endmodule // raster_top$core$edge_walk$maj$c2$inc0_r
 
 
-module raster_top$front$core$edge_walk$maj$c2$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$maj$c2$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3425,10 +3316,10 @@ module raster_top$front$core$edge_walk$maj$c2$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$c2$inc1_r
+endmodule // raster_top$core$edge_walk$maj$c2$inc1_r
 
 
-module raster_top$front$core$edge_walk$maj$d_r(d,q,clock);
+module raster_top$core$edge_walk$maj$d_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -3444,10 +3335,10 @@ module raster_top$front$core$edge_walk$maj$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$d_r
+endmodule // raster_top$core$edge_walk$maj$d_r
 
 
-module raster_top$front$core$edge_walk$maj$q_r(d,q,clock);
+module raster_top$core$edge_walk$maj$q_r(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -3463,10 +3354,10 @@ module raster_top$front$core$edge_walk$maj$q_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$q_r
+endmodule // raster_top$core$edge_walk$maj$q_r
 
 
-module raster_top$front$core$edge_walk$maj$r_r(d,q,clock);
+module raster_top$core$edge_walk$maj$r_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -3482,10 +3373,10 @@ module raster_top$front$core$edge_walk$maj$r_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$r_r
+endmodule // raster_top$core$edge_walk$maj$r_r
 
 
-module raster_top$front$core$edge_walk$maj$rho_r(d,q,clock);
+module raster_top$core$edge_walk$maj$rho_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -3501,10 +3392,10 @@ module raster_top$front$core$edge_walk$maj$rho_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$rho_r
+endmodule // raster_top$core$edge_walk$maj$rho_r
 
 
-module raster_top$front$core$edge_walk$maj$x_r(d,q,clock);
+module raster_top$core$edge_walk$maj$x_r(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -3520,10 +3411,10 @@ module raster_top$front$core$edge_walk$maj$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$x_r
+endmodule // raster_top$core$edge_walk$maj$x_r
 
 
-module raster_top$front$core$edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$core$edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -3551,17 +3442,17 @@ module raster_top$front$core$edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc
     reg  [35:0] inc;
     
     // Sub module instances
-    raster_top$front$core$edge_walk$maj$z$at_r at_r(
+    raster_top$core$edge_walk$maj$z$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$front$core$edge_walk$maj$z$inc0_r inc0_r(
+    raster_top$core$edge_walk$maj$z$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$front$core$edge_walk$maj$z$inc1_r inc1_r(
+    raster_top$core$edge_walk$maj$z$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -3595,10 +3486,10 @@ module raster_top$front$core$edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc
         at = at_r$q;
     end
     
-endmodule // raster_top$front$core$edge_walk$maj$z
+endmodule // raster_top$core$edge_walk$maj$z
 
 
-module raster_top$front$core$edge_walk$maj$z$at_r(d,q,clock);
+module raster_top$core$edge_walk$maj$z$at_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3614,10 +3505,10 @@ module raster_top$front$core$edge_walk$maj$z$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$z$at_r
+endmodule // raster_top$core$edge_walk$maj$z$at_r
 
 
-module raster_top$front$core$edge_walk$maj$z$inc0_r(d,q,clock);
+module raster_top$core$edge_walk$maj$z$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3633,10 +3524,10 @@ module raster_top$front$core$edge_walk$maj$z$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$z$inc0_r
+endmodule // raster_top$core$edge_walk$maj$z$inc0_r
 
 
-module raster_top$front$core$edge_walk$maj$z$inc1_r(d,q,clock);
+module raster_top$core$edge_walk$maj$z$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3652,10 +3543,10 @@ module raster_top$front$core$edge_walk$maj$z$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj$z$inc1_r
+endmodule // raster_top$core$edge_walk$maj$z$inc1_r
 
 
-module raster_top$front$core$edge_walk$maj_left(d,q,clock);
+module raster_top$core$edge_walk$maj_left(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3671,10 +3562,10 @@ module raster_top$front$core$edge_walk$maj_left(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$maj_left
+endmodule // raster_top$core$edge_walk$maj_left
 
 
-module raster_top$front$core$edge_walk$pend_at_c0(d,q,clock);
+module raster_top$core$edge_walk$pend_at_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3690,10 +3581,10 @@ module raster_top$front$core$edge_walk$pend_at_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_at_c0
+endmodule // raster_top$core$edge_walk$pend_at_c0
 
 
-module raster_top$front$core$edge_walk$pend_at_c1(d,q,clock);
+module raster_top$core$edge_walk$pend_at_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3709,10 +3600,10 @@ module raster_top$front$core$edge_walk$pend_at_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_at_c1
+endmodule // raster_top$core$edge_walk$pend_at_c1
 
 
-module raster_top$front$core$edge_walk$pend_at_c2(d,q,clock);
+module raster_top$core$edge_walk$pend_at_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3728,10 +3619,10 @@ module raster_top$front$core$edge_walk$pend_at_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_at_c2
+endmodule // raster_top$core$edge_walk$pend_at_c2
 
 
-module raster_top$front$core$edge_walk$pend_at_z(d,q,clock);
+module raster_top$core$edge_walk$pend_at_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3747,10 +3638,10 @@ module raster_top$front$core$edge_walk$pend_at_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_at_z
+endmodule // raster_top$core$edge_walk$pend_at_z
 
 
-module raster_top$front$core$edge_walk$pend_d(d,q,clock);
+module raster_top$core$edge_walk$pend_d(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -3766,10 +3657,10 @@ module raster_top$front$core$edge_walk$pend_d(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_d
+endmodule // raster_top$core$edge_walk$pend_d
 
 
-module raster_top$front$core$edge_walk$pend_inc0_c0(d,q,clock);
+module raster_top$core$edge_walk$pend_inc0_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3785,10 +3676,10 @@ module raster_top$front$core$edge_walk$pend_inc0_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_inc0_c0
+endmodule // raster_top$core$edge_walk$pend_inc0_c0
 
 
-module raster_top$front$core$edge_walk$pend_inc0_c1(d,q,clock);
+module raster_top$core$edge_walk$pend_inc0_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3804,10 +3695,10 @@ module raster_top$front$core$edge_walk$pend_inc0_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_inc0_c1
+endmodule // raster_top$core$edge_walk$pend_inc0_c1
 
 
-module raster_top$front$core$edge_walk$pend_inc0_c2(d,q,clock);
+module raster_top$core$edge_walk$pend_inc0_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3823,10 +3714,10 @@ module raster_top$front$core$edge_walk$pend_inc0_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_inc0_c2
+endmodule // raster_top$core$edge_walk$pend_inc0_c2
 
 
-module raster_top$front$core$edge_walk$pend_inc0_z(d,q,clock);
+module raster_top$core$edge_walk$pend_inc0_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3842,10 +3733,10 @@ module raster_top$front$core$edge_walk$pend_inc0_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_inc0_z
+endmodule // raster_top$core$edge_walk$pend_inc0_z
 
 
-module raster_top$front$core$edge_walk$pend_inc1_c0(d,q,clock);
+module raster_top$core$edge_walk$pend_inc1_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3861,10 +3752,10 @@ module raster_top$front$core$edge_walk$pend_inc1_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_inc1_c0
+endmodule // raster_top$core$edge_walk$pend_inc1_c0
 
 
-module raster_top$front$core$edge_walk$pend_inc1_c1(d,q,clock);
+module raster_top$core$edge_walk$pend_inc1_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3880,10 +3771,10 @@ module raster_top$front$core$edge_walk$pend_inc1_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_inc1_c1
+endmodule // raster_top$core$edge_walk$pend_inc1_c1
 
 
-module raster_top$front$core$edge_walk$pend_inc1_c2(d,q,clock);
+module raster_top$core$edge_walk$pend_inc1_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3899,10 +3790,10 @@ module raster_top$front$core$edge_walk$pend_inc1_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_inc1_c2
+endmodule // raster_top$core$edge_walk$pend_inc1_c2
 
 
-module raster_top$front$core$edge_walk$pend_inc1_z(d,q,clock);
+module raster_top$core$edge_walk$pend_inc1_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3918,10 +3809,10 @@ module raster_top$front$core$edge_walk$pend_inc1_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_inc1_z
+endmodule // raster_top$core$edge_walk$pend_inc1_z
 
 
-module raster_top$front$core$edge_walk$pend_q(d,q,clock);
+module raster_top$core$edge_walk$pend_q(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -3937,10 +3828,10 @@ module raster_top$front$core$edge_walk$pend_q(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_q
+endmodule // raster_top$core$edge_walk$pend_q
 
 
-module raster_top$front$core$edge_walk$pend_r(d,q,clock);
+module raster_top$core$edge_walk$pend_r(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -3956,10 +3847,10 @@ module raster_top$front$core$edge_walk$pend_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_r
+endmodule // raster_top$core$edge_walk$pend_r
 
 
-module raster_top$front$core$edge_walk$pend_rho(d,q,clock);
+module raster_top$core$edge_walk$pend_rho(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -3975,10 +3866,10 @@ module raster_top$front$core$edge_walk$pend_rho(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_rho
+endmodule // raster_top$core$edge_walk$pend_rho
 
 
-module raster_top$front$core$edge_walk$pend_x(d,q,clock);
+module raster_top$core$edge_walk$pend_x(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -3994,10 +3885,10 @@ module raster_top$front$core$edge_walk$pend_x(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$pend_x
+endmodule // raster_top$core$edge_walk$pend_x
 
 
-module raster_top$front$core$edge_walk$sides(a,b,lt);
+module raster_top$core$edge_walk$sides(a,b,lt);
     
     // Module arguments
     input wire  [12:0] a;
@@ -4012,10 +3903,10 @@ module raster_top$front$core$edge_walk$sides(a,b,lt);
         lt = (a ^ half) < (b ^ half);
     end
     
-endmodule // raster_top$front$core$edge_walk$sides
+endmodule // raster_top$core$edge_walk$sides
 
 
-module raster_top$front$core$edge_walk$total(d,q,clock);
+module raster_top$core$edge_walk$total(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -4031,10 +3922,10 @@ module raster_top$front$core$edge_walk$total(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$total
+endmodule // raster_top$core$edge_walk$total
 
 
-module raster_top$front$core$edge_walk$up(d,q,clock);
+module raster_top$core$edge_walk$up(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4050,10 +3941,10 @@ module raster_top$front$core$edge_walk$up(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$up
+endmodule // raster_top$core$edge_walk$up
 
 
-module raster_top$front$core$edge_walk$walking(d,q,clock);
+module raster_top$core$edge_walk$walking(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4069,10 +3960,10 @@ module raster_top$front$core$edge_walk$walking(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$edge_walk$walking
+endmodule // raster_top$core$edge_walk$walking
 
 
-module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$left_c0,inp$left_c1,inp$left_c2,inp$right_z,inp$right_c0,inp$right_c1,inp$right_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,empty);
+module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$left_c0,inp$left_c1,inp$left_c2,inp$right_z,inp$right_c0,inp$right_c1,inp$right_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,empty);
     
     // Module arguments
     input wire  clock;
@@ -4216,17 +4107,17 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
     reg  pop;
     
     // Sub module instances
-    raster_top$front$core$fifo$count count(
+    raster_top$core$fifo$count count(
         .d(count$d),
         .q(count$q),
         .clock(count$clock)
     );
-    raster_top$front$core$fifo$level level(
+    raster_top$core$fifo$level level(
         .count(level$count),
         .full(level$full),
         .empty(level$empty)
     );
-    raster_top$front$core$fifo$y y(
+    raster_top$core$fifo$y y(
         .clock(y$clock),
         .push(y$push),
         .pop(y$pop),
@@ -4234,7 +4125,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(y$din),
         .head(y$head)
     );
-    raster_top$front$core$fifo$xl xl(
+    raster_top$core$fifo$xl xl(
         .clock(xl$clock),
         .push(xl$push),
         .pop(xl$pop),
@@ -4242,7 +4133,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(xl$din),
         .head(xl$head)
     );
-    raster_top$front$core$fifo$xr xr(
+    raster_top$core$fifo$xr xr(
         .clock(xr$clock),
         .push(xr$push),
         .pop(xr$pop),
@@ -4250,7 +4141,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(xr$din),
         .head(xr$head)
     );
-    raster_top$front$core$fifo$left_z left_z(
+    raster_top$core$fifo$left_z left_z(
         .clock(left_z$clock),
         .push(left_z$push),
         .pop(left_z$pop),
@@ -4258,7 +4149,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(left_z$din),
         .head(left_z$head)
     );
-    raster_top$front$core$fifo$left_c0 left_c0(
+    raster_top$core$fifo$left_c0 left_c0(
         .clock(left_c0$clock),
         .push(left_c0$push),
         .pop(left_c0$pop),
@@ -4266,7 +4157,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(left_c0$din),
         .head(left_c0$head)
     );
-    raster_top$front$core$fifo$left_c1 left_c1(
+    raster_top$core$fifo$left_c1 left_c1(
         .clock(left_c1$clock),
         .push(left_c1$push),
         .pop(left_c1$pop),
@@ -4274,7 +4165,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(left_c1$din),
         .head(left_c1$head)
     );
-    raster_top$front$core$fifo$left_c2 left_c2(
+    raster_top$core$fifo$left_c2 left_c2(
         .clock(left_c2$clock),
         .push(left_c2$push),
         .pop(left_c2$pop),
@@ -4282,7 +4173,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(left_c2$din),
         .head(left_c2$head)
     );
-    raster_top$front$core$fifo$right_z right_z(
+    raster_top$core$fifo$right_z right_z(
         .clock(right_z$clock),
         .push(right_z$push),
         .pop(right_z$pop),
@@ -4290,7 +4181,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(right_z$din),
         .head(right_z$head)
     );
-    raster_top$front$core$fifo$right_c0 right_c0(
+    raster_top$core$fifo$right_c0 right_c0(
         .clock(right_c0$clock),
         .push(right_c0$push),
         .pop(right_c0$pop),
@@ -4298,7 +4189,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(right_c0$din),
         .head(right_c0$head)
     );
-    raster_top$front$core$fifo$right_c1 right_c1(
+    raster_top$core$fifo$right_c1 right_c1(
         .clock(right_c1$clock),
         .push(right_c1$push),
         .pop(right_c1$pop),
@@ -4306,7 +4197,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(right_c1$din),
         .head(right_c1$head)
     );
-    raster_top$front$core$fifo$right_c2 right_c2(
+    raster_top$core$fifo$right_c2 right_c2(
         .clock(right_c2$clock),
         .push(right_c2$push),
         .pop(right_c2$pop),
@@ -4314,7 +4205,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(right_c2$din),
         .head(right_c2$head)
     );
-    raster_top$front$core$fifo$ddx_z ddx_z(
+    raster_top$core$fifo$ddx_z ddx_z(
         .clock(ddx_z$clock),
         .push(ddx_z$push),
         .pop(ddx_z$pop),
@@ -4322,7 +4213,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(ddx_z$din),
         .head(ddx_z$head)
     );
-    raster_top$front$core$fifo$ddx_c0 ddx_c0(
+    raster_top$core$fifo$ddx_c0 ddx_c0(
         .clock(ddx_c0$clock),
         .push(ddx_c0$push),
         .pop(ddx_c0$pop),
@@ -4330,7 +4221,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(ddx_c0$din),
         .head(ddx_c0$head)
     );
-    raster_top$front$core$fifo$ddx_c1 ddx_c1(
+    raster_top$core$fifo$ddx_c1 ddx_c1(
         .clock(ddx_c1$clock),
         .push(ddx_c1$push),
         .pop(ddx_c1$pop),
@@ -4338,7 +4229,7 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         .din(ddx_c1$din),
         .head(ddx_c1$head)
     );
-    raster_top$front$core$fifo$ddx_c2 ddx_c2(
+    raster_top$core$fifo$ddx_c2 ddx_c2(
         .clock(ddx_c2$clock),
         .push(ddx_c2$push),
         .pop(ddx_c2$pop),
@@ -4504,10 +4395,10 @@ module raster_top$front$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         end
     end
     
-endmodule // raster_top$front$core$fifo
+endmodule // raster_top$core$fifo
 
 
-module raster_top$front$core$fifo$count(d,q,clock);
+module raster_top$core$fifo$count(d,q,clock);
     
     // Module arguments
     input wire  [2:0] d;
@@ -4523,10 +4414,10 @@ module raster_top$front$core$fifo$count(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$count
+endmodule // raster_top$core$fifo$count
 
 
-module raster_top$front$core$fifo$ddx_c0(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$ddx_c0(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -4551,22 +4442,22 @@ module raster_top$front$core$fifo$ddx_c0(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$ddx_c0$e$0 e$0(
+    raster_top$core$fifo$ddx_c0$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$ddx_c0$e$1 e$1(
+    raster_top$core$fifo$ddx_c0$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$ddx_c0$e$2 e$2(
+    raster_top$core$fifo$ddx_c0$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$ddx_c0$e$3 e$3(
+    raster_top$core$fifo$ddx_c0$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -4604,10 +4495,10 @@ module raster_top$front$core$fifo$ddx_c0(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$ddx_c0
+endmodule // raster_top$core$fifo$ddx_c0
 
 
-module raster_top$front$core$fifo$ddx_c0$e$0(d,q,clock);
+module raster_top$core$fifo$ddx_c0$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4623,10 +4514,10 @@ module raster_top$front$core$fifo$ddx_c0$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_c0$e$0
+endmodule // raster_top$core$fifo$ddx_c0$e$0
 
 
-module raster_top$front$core$fifo$ddx_c0$e$1(d,q,clock);
+module raster_top$core$fifo$ddx_c0$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4642,10 +4533,10 @@ module raster_top$front$core$fifo$ddx_c0$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_c0$e$1
+endmodule // raster_top$core$fifo$ddx_c0$e$1
 
 
-module raster_top$front$core$fifo$ddx_c0$e$2(d,q,clock);
+module raster_top$core$fifo$ddx_c0$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4661,10 +4552,10 @@ module raster_top$front$core$fifo$ddx_c0$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_c0$e$2
+endmodule // raster_top$core$fifo$ddx_c0$e$2
 
 
-module raster_top$front$core$fifo$ddx_c0$e$3(d,q,clock);
+module raster_top$core$fifo$ddx_c0$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4680,10 +4571,10 @@ module raster_top$front$core$fifo$ddx_c0$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_c0$e$3
+endmodule // raster_top$core$fifo$ddx_c0$e$3
 
 
-module raster_top$front$core$fifo$ddx_c1(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$ddx_c1(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -4708,22 +4599,22 @@ module raster_top$front$core$fifo$ddx_c1(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$ddx_c1$e$0 e$0(
+    raster_top$core$fifo$ddx_c1$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$ddx_c1$e$1 e$1(
+    raster_top$core$fifo$ddx_c1$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$ddx_c1$e$2 e$2(
+    raster_top$core$fifo$ddx_c1$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$ddx_c1$e$3 e$3(
+    raster_top$core$fifo$ddx_c1$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -4761,10 +4652,10 @@ module raster_top$front$core$fifo$ddx_c1(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$ddx_c1
+endmodule // raster_top$core$fifo$ddx_c1
 
 
-module raster_top$front$core$fifo$ddx_c1$e$0(d,q,clock);
+module raster_top$core$fifo$ddx_c1$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4780,10 +4671,10 @@ module raster_top$front$core$fifo$ddx_c1$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_c1$e$0
+endmodule // raster_top$core$fifo$ddx_c1$e$0
 
 
-module raster_top$front$core$fifo$ddx_c1$e$1(d,q,clock);
+module raster_top$core$fifo$ddx_c1$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4799,10 +4690,10 @@ module raster_top$front$core$fifo$ddx_c1$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_c1$e$1
+endmodule // raster_top$core$fifo$ddx_c1$e$1
 
 
-module raster_top$front$core$fifo$ddx_c1$e$2(d,q,clock);
+module raster_top$core$fifo$ddx_c1$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4818,10 +4709,10 @@ module raster_top$front$core$fifo$ddx_c1$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_c1$e$2
+endmodule // raster_top$core$fifo$ddx_c1$e$2
 
 
-module raster_top$front$core$fifo$ddx_c1$e$3(d,q,clock);
+module raster_top$core$fifo$ddx_c1$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4837,10 +4728,10 @@ module raster_top$front$core$fifo$ddx_c1$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_c1$e$3
+endmodule // raster_top$core$fifo$ddx_c1$e$3
 
 
-module raster_top$front$core$fifo$ddx_c2(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$ddx_c2(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -4865,22 +4756,22 @@ module raster_top$front$core$fifo$ddx_c2(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$ddx_c2$e$0 e$0(
+    raster_top$core$fifo$ddx_c2$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$ddx_c2$e$1 e$1(
+    raster_top$core$fifo$ddx_c2$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$ddx_c2$e$2 e$2(
+    raster_top$core$fifo$ddx_c2$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$ddx_c2$e$3 e$3(
+    raster_top$core$fifo$ddx_c2$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -4918,10 +4809,10 @@ module raster_top$front$core$fifo$ddx_c2(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$ddx_c2
+endmodule // raster_top$core$fifo$ddx_c2
 
 
-module raster_top$front$core$fifo$ddx_c2$e$0(d,q,clock);
+module raster_top$core$fifo$ddx_c2$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4937,10 +4828,10 @@ module raster_top$front$core$fifo$ddx_c2$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_c2$e$0
+endmodule // raster_top$core$fifo$ddx_c2$e$0
 
 
-module raster_top$front$core$fifo$ddx_c2$e$1(d,q,clock);
+module raster_top$core$fifo$ddx_c2$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4956,10 +4847,10 @@ module raster_top$front$core$fifo$ddx_c2$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_c2$e$1
+endmodule // raster_top$core$fifo$ddx_c2$e$1
 
 
-module raster_top$front$core$fifo$ddx_c2$e$2(d,q,clock);
+module raster_top$core$fifo$ddx_c2$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4975,10 +4866,10 @@ module raster_top$front$core$fifo$ddx_c2$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_c2$e$2
+endmodule // raster_top$core$fifo$ddx_c2$e$2
 
 
-module raster_top$front$core$fifo$ddx_c2$e$3(d,q,clock);
+module raster_top$core$fifo$ddx_c2$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4994,10 +4885,10 @@ module raster_top$front$core$fifo$ddx_c2$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_c2$e$3
+endmodule // raster_top$core$fifo$ddx_c2$e$3
 
 
-module raster_top$front$core$fifo$ddx_z(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$ddx_z(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5022,22 +4913,22 @@ module raster_top$front$core$fifo$ddx_z(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$ddx_z$e$0 e$0(
+    raster_top$core$fifo$ddx_z$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$ddx_z$e$1 e$1(
+    raster_top$core$fifo$ddx_z$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$ddx_z$e$2 e$2(
+    raster_top$core$fifo$ddx_z$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$ddx_z$e$3 e$3(
+    raster_top$core$fifo$ddx_z$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5075,10 +4966,10 @@ module raster_top$front$core$fifo$ddx_z(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$ddx_z
+endmodule // raster_top$core$fifo$ddx_z
 
 
-module raster_top$front$core$fifo$ddx_z$e$0(d,q,clock);
+module raster_top$core$fifo$ddx_z$e$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -5094,10 +4985,10 @@ module raster_top$front$core$fifo$ddx_z$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_z$e$0
+endmodule // raster_top$core$fifo$ddx_z$e$0
 
 
-module raster_top$front$core$fifo$ddx_z$e$1(d,q,clock);
+module raster_top$core$fifo$ddx_z$e$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -5113,10 +5004,10 @@ module raster_top$front$core$fifo$ddx_z$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_z$e$1
+endmodule // raster_top$core$fifo$ddx_z$e$1
 
 
-module raster_top$front$core$fifo$ddx_z$e$2(d,q,clock);
+module raster_top$core$fifo$ddx_z$e$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -5132,10 +5023,10 @@ module raster_top$front$core$fifo$ddx_z$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_z$e$2
+endmodule // raster_top$core$fifo$ddx_z$e$2
 
 
-module raster_top$front$core$fifo$ddx_z$e$3(d,q,clock);
+module raster_top$core$fifo$ddx_z$e$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -5151,10 +5042,10 @@ module raster_top$front$core$fifo$ddx_z$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$ddx_z$e$3
+endmodule // raster_top$core$fifo$ddx_z$e$3
 
 
-module raster_top$front$core$fifo$left_c0(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$left_c0(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5179,22 +5070,22 @@ module raster_top$front$core$fifo$left_c0(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$left_c0$e$0 e$0(
+    raster_top$core$fifo$left_c0$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$left_c0$e$1 e$1(
+    raster_top$core$fifo$left_c0$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$left_c0$e$2 e$2(
+    raster_top$core$fifo$left_c0$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$left_c0$e$3 e$3(
+    raster_top$core$fifo$left_c0$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5232,10 +5123,10 @@ module raster_top$front$core$fifo$left_c0(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$left_c0
+endmodule // raster_top$core$fifo$left_c0
 
 
-module raster_top$front$core$fifo$left_c0$e$0(d,q,clock);
+module raster_top$core$fifo$left_c0$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5251,10 +5142,10 @@ module raster_top$front$core$fifo$left_c0$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_c0$e$0
+endmodule // raster_top$core$fifo$left_c0$e$0
 
 
-module raster_top$front$core$fifo$left_c0$e$1(d,q,clock);
+module raster_top$core$fifo$left_c0$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5270,10 +5161,10 @@ module raster_top$front$core$fifo$left_c0$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_c0$e$1
+endmodule // raster_top$core$fifo$left_c0$e$1
 
 
-module raster_top$front$core$fifo$left_c0$e$2(d,q,clock);
+module raster_top$core$fifo$left_c0$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5289,10 +5180,10 @@ module raster_top$front$core$fifo$left_c0$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_c0$e$2
+endmodule // raster_top$core$fifo$left_c0$e$2
 
 
-module raster_top$front$core$fifo$left_c0$e$3(d,q,clock);
+module raster_top$core$fifo$left_c0$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5308,10 +5199,10 @@ module raster_top$front$core$fifo$left_c0$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_c0$e$3
+endmodule // raster_top$core$fifo$left_c0$e$3
 
 
-module raster_top$front$core$fifo$left_c1(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$left_c1(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5336,22 +5227,22 @@ module raster_top$front$core$fifo$left_c1(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$left_c1$e$0 e$0(
+    raster_top$core$fifo$left_c1$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$left_c1$e$1 e$1(
+    raster_top$core$fifo$left_c1$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$left_c1$e$2 e$2(
+    raster_top$core$fifo$left_c1$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$left_c1$e$3 e$3(
+    raster_top$core$fifo$left_c1$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5389,10 +5280,10 @@ module raster_top$front$core$fifo$left_c1(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$left_c1
+endmodule // raster_top$core$fifo$left_c1
 
 
-module raster_top$front$core$fifo$left_c1$e$0(d,q,clock);
+module raster_top$core$fifo$left_c1$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5408,10 +5299,10 @@ module raster_top$front$core$fifo$left_c1$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_c1$e$0
+endmodule // raster_top$core$fifo$left_c1$e$0
 
 
-module raster_top$front$core$fifo$left_c1$e$1(d,q,clock);
+module raster_top$core$fifo$left_c1$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5427,10 +5318,10 @@ module raster_top$front$core$fifo$left_c1$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_c1$e$1
+endmodule // raster_top$core$fifo$left_c1$e$1
 
 
-module raster_top$front$core$fifo$left_c1$e$2(d,q,clock);
+module raster_top$core$fifo$left_c1$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5446,10 +5337,10 @@ module raster_top$front$core$fifo$left_c1$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_c1$e$2
+endmodule // raster_top$core$fifo$left_c1$e$2
 
 
-module raster_top$front$core$fifo$left_c1$e$3(d,q,clock);
+module raster_top$core$fifo$left_c1$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5465,10 +5356,10 @@ module raster_top$front$core$fifo$left_c1$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_c1$e$3
+endmodule // raster_top$core$fifo$left_c1$e$3
 
 
-module raster_top$front$core$fifo$left_c2(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$left_c2(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5493,22 +5384,22 @@ module raster_top$front$core$fifo$left_c2(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$left_c2$e$0 e$0(
+    raster_top$core$fifo$left_c2$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$left_c2$e$1 e$1(
+    raster_top$core$fifo$left_c2$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$left_c2$e$2 e$2(
+    raster_top$core$fifo$left_c2$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$left_c2$e$3 e$3(
+    raster_top$core$fifo$left_c2$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5546,10 +5437,10 @@ module raster_top$front$core$fifo$left_c2(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$left_c2
+endmodule // raster_top$core$fifo$left_c2
 
 
-module raster_top$front$core$fifo$left_c2$e$0(d,q,clock);
+module raster_top$core$fifo$left_c2$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5565,10 +5456,10 @@ module raster_top$front$core$fifo$left_c2$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_c2$e$0
+endmodule // raster_top$core$fifo$left_c2$e$0
 
 
-module raster_top$front$core$fifo$left_c2$e$1(d,q,clock);
+module raster_top$core$fifo$left_c2$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5584,10 +5475,10 @@ module raster_top$front$core$fifo$left_c2$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_c2$e$1
+endmodule // raster_top$core$fifo$left_c2$e$1
 
 
-module raster_top$front$core$fifo$left_c2$e$2(d,q,clock);
+module raster_top$core$fifo$left_c2$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5603,10 +5494,10 @@ module raster_top$front$core$fifo$left_c2$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_c2$e$2
+endmodule // raster_top$core$fifo$left_c2$e$2
 
 
-module raster_top$front$core$fifo$left_c2$e$3(d,q,clock);
+module raster_top$core$fifo$left_c2$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5622,10 +5513,10 @@ module raster_top$front$core$fifo$left_c2$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_c2$e$3
+endmodule // raster_top$core$fifo$left_c2$e$3
 
 
-module raster_top$front$core$fifo$left_z(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$left_z(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5650,22 +5541,22 @@ module raster_top$front$core$fifo$left_z(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$left_z$e$0 e$0(
+    raster_top$core$fifo$left_z$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$left_z$e$1 e$1(
+    raster_top$core$fifo$left_z$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$left_z$e$2 e$2(
+    raster_top$core$fifo$left_z$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$left_z$e$3 e$3(
+    raster_top$core$fifo$left_z$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5703,10 +5594,10 @@ module raster_top$front$core$fifo$left_z(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$left_z
+endmodule // raster_top$core$fifo$left_z
 
 
-module raster_top$front$core$fifo$left_z$e$0(d,q,clock);
+module raster_top$core$fifo$left_z$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5722,10 +5613,10 @@ module raster_top$front$core$fifo$left_z$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_z$e$0
+endmodule // raster_top$core$fifo$left_z$e$0
 
 
-module raster_top$front$core$fifo$left_z$e$1(d,q,clock);
+module raster_top$core$fifo$left_z$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5741,10 +5632,10 @@ module raster_top$front$core$fifo$left_z$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_z$e$1
+endmodule // raster_top$core$fifo$left_z$e$1
 
 
-module raster_top$front$core$fifo$left_z$e$2(d,q,clock);
+module raster_top$core$fifo$left_z$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5760,10 +5651,10 @@ module raster_top$front$core$fifo$left_z$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_z$e$2
+endmodule // raster_top$core$fifo$left_z$e$2
 
 
-module raster_top$front$core$fifo$left_z$e$3(d,q,clock);
+module raster_top$core$fifo$left_z$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5779,10 +5670,10 @@ module raster_top$front$core$fifo$left_z$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$left_z$e$3
+endmodule // raster_top$core$fifo$left_z$e$3
 
 
-module raster_top$front$core$fifo$level(count,full,empty);
+module raster_top$core$fifo$level(count,full,empty);
     
     // Module arguments
     input wire  [2:0] count;
@@ -5798,10 +5689,10 @@ module raster_top$front$core$fifo$level(count,full,empty);
         empty = count == 32'h0;
     end
     
-endmodule // raster_top$front$core$fifo$level
+endmodule // raster_top$core$fifo$level
 
 
-module raster_top$front$core$fifo$right_c0(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$right_c0(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5826,22 +5717,22 @@ module raster_top$front$core$fifo$right_c0(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$right_c0$e$0 e$0(
+    raster_top$core$fifo$right_c0$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$right_c0$e$1 e$1(
+    raster_top$core$fifo$right_c0$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$right_c0$e$2 e$2(
+    raster_top$core$fifo$right_c0$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$right_c0$e$3 e$3(
+    raster_top$core$fifo$right_c0$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5879,10 +5770,10 @@ module raster_top$front$core$fifo$right_c0(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$right_c0
+endmodule // raster_top$core$fifo$right_c0
 
 
-module raster_top$front$core$fifo$right_c0$e$0(d,q,clock);
+module raster_top$core$fifo$right_c0$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5898,10 +5789,10 @@ module raster_top$front$core$fifo$right_c0$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_c0$e$0
+endmodule // raster_top$core$fifo$right_c0$e$0
 
 
-module raster_top$front$core$fifo$right_c0$e$1(d,q,clock);
+module raster_top$core$fifo$right_c0$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5917,10 +5808,10 @@ module raster_top$front$core$fifo$right_c0$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_c0$e$1
+endmodule // raster_top$core$fifo$right_c0$e$1
 
 
-module raster_top$front$core$fifo$right_c0$e$2(d,q,clock);
+module raster_top$core$fifo$right_c0$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5936,10 +5827,10 @@ module raster_top$front$core$fifo$right_c0$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_c0$e$2
+endmodule // raster_top$core$fifo$right_c0$e$2
 
 
-module raster_top$front$core$fifo$right_c0$e$3(d,q,clock);
+module raster_top$core$fifo$right_c0$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5955,10 +5846,10 @@ module raster_top$front$core$fifo$right_c0$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_c0$e$3
+endmodule // raster_top$core$fifo$right_c0$e$3
 
 
-module raster_top$front$core$fifo$right_c1(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$right_c1(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5983,22 +5874,22 @@ module raster_top$front$core$fifo$right_c1(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$right_c1$e$0 e$0(
+    raster_top$core$fifo$right_c1$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$right_c1$e$1 e$1(
+    raster_top$core$fifo$right_c1$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$right_c1$e$2 e$2(
+    raster_top$core$fifo$right_c1$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$right_c1$e$3 e$3(
+    raster_top$core$fifo$right_c1$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6036,10 +5927,10 @@ module raster_top$front$core$fifo$right_c1(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$right_c1
+endmodule // raster_top$core$fifo$right_c1
 
 
-module raster_top$front$core$fifo$right_c1$e$0(d,q,clock);
+module raster_top$core$fifo$right_c1$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6055,10 +5946,10 @@ module raster_top$front$core$fifo$right_c1$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_c1$e$0
+endmodule // raster_top$core$fifo$right_c1$e$0
 
 
-module raster_top$front$core$fifo$right_c1$e$1(d,q,clock);
+module raster_top$core$fifo$right_c1$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6074,10 +5965,10 @@ module raster_top$front$core$fifo$right_c1$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_c1$e$1
+endmodule // raster_top$core$fifo$right_c1$e$1
 
 
-module raster_top$front$core$fifo$right_c1$e$2(d,q,clock);
+module raster_top$core$fifo$right_c1$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6093,10 +5984,10 @@ module raster_top$front$core$fifo$right_c1$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_c1$e$2
+endmodule // raster_top$core$fifo$right_c1$e$2
 
 
-module raster_top$front$core$fifo$right_c1$e$3(d,q,clock);
+module raster_top$core$fifo$right_c1$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6112,10 +6003,10 @@ module raster_top$front$core$fifo$right_c1$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_c1$e$3
+endmodule // raster_top$core$fifo$right_c1$e$3
 
 
-module raster_top$front$core$fifo$right_c2(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$right_c2(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6140,22 +6031,22 @@ module raster_top$front$core$fifo$right_c2(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$right_c2$e$0 e$0(
+    raster_top$core$fifo$right_c2$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$right_c2$e$1 e$1(
+    raster_top$core$fifo$right_c2$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$right_c2$e$2 e$2(
+    raster_top$core$fifo$right_c2$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$right_c2$e$3 e$3(
+    raster_top$core$fifo$right_c2$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6193,10 +6084,10 @@ module raster_top$front$core$fifo$right_c2(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$right_c2
+endmodule // raster_top$core$fifo$right_c2
 
 
-module raster_top$front$core$fifo$right_c2$e$0(d,q,clock);
+module raster_top$core$fifo$right_c2$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6212,10 +6103,10 @@ module raster_top$front$core$fifo$right_c2$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_c2$e$0
+endmodule // raster_top$core$fifo$right_c2$e$0
 
 
-module raster_top$front$core$fifo$right_c2$e$1(d,q,clock);
+module raster_top$core$fifo$right_c2$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6231,10 +6122,10 @@ module raster_top$front$core$fifo$right_c2$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_c2$e$1
+endmodule // raster_top$core$fifo$right_c2$e$1
 
 
-module raster_top$front$core$fifo$right_c2$e$2(d,q,clock);
+module raster_top$core$fifo$right_c2$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6250,10 +6141,10 @@ module raster_top$front$core$fifo$right_c2$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_c2$e$2
+endmodule // raster_top$core$fifo$right_c2$e$2
 
 
-module raster_top$front$core$fifo$right_c2$e$3(d,q,clock);
+module raster_top$core$fifo$right_c2$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6269,10 +6160,10 @@ module raster_top$front$core$fifo$right_c2$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_c2$e$3
+endmodule // raster_top$core$fifo$right_c2$e$3
 
 
-module raster_top$front$core$fifo$right_z(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$right_z(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6297,22 +6188,22 @@ module raster_top$front$core$fifo$right_z(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$right_z$e$0 e$0(
+    raster_top$core$fifo$right_z$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$right_z$e$1 e$1(
+    raster_top$core$fifo$right_z$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$right_z$e$2 e$2(
+    raster_top$core$fifo$right_z$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$right_z$e$3 e$3(
+    raster_top$core$fifo$right_z$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6350,10 +6241,10 @@ module raster_top$front$core$fifo$right_z(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$right_z
+endmodule // raster_top$core$fifo$right_z
 
 
-module raster_top$front$core$fifo$right_z$e$0(d,q,clock);
+module raster_top$core$fifo$right_z$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -6369,10 +6260,10 @@ module raster_top$front$core$fifo$right_z$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_z$e$0
+endmodule // raster_top$core$fifo$right_z$e$0
 
 
-module raster_top$front$core$fifo$right_z$e$1(d,q,clock);
+module raster_top$core$fifo$right_z$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -6388,10 +6279,10 @@ module raster_top$front$core$fifo$right_z$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_z$e$1
+endmodule // raster_top$core$fifo$right_z$e$1
 
 
-module raster_top$front$core$fifo$right_z$e$2(d,q,clock);
+module raster_top$core$fifo$right_z$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -6407,10 +6298,10 @@ module raster_top$front$core$fifo$right_z$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_z$e$2
+endmodule // raster_top$core$fifo$right_z$e$2
 
 
-module raster_top$front$core$fifo$right_z$e$3(d,q,clock);
+module raster_top$core$fifo$right_z$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -6426,10 +6317,10 @@ module raster_top$front$core$fifo$right_z$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$right_z$e$3
+endmodule // raster_top$core$fifo$right_z$e$3
 
 
-module raster_top$front$core$fifo$xl(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$xl(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6454,22 +6345,22 @@ module raster_top$front$core$fifo$xl(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$xl$e$0 e$0(
+    raster_top$core$fifo$xl$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$xl$e$1 e$1(
+    raster_top$core$fifo$xl$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$xl$e$2 e$2(
+    raster_top$core$fifo$xl$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$xl$e$3 e$3(
+    raster_top$core$fifo$xl$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6507,10 +6398,10 @@ module raster_top$front$core$fifo$xl(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$xl
+endmodule // raster_top$core$fifo$xl
 
 
-module raster_top$front$core$fifo$xl$e$0(d,q,clock);
+module raster_top$core$fifo$xl$e$0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -6526,10 +6417,10 @@ module raster_top$front$core$fifo$xl$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$xl$e$0
+endmodule // raster_top$core$fifo$xl$e$0
 
 
-module raster_top$front$core$fifo$xl$e$1(d,q,clock);
+module raster_top$core$fifo$xl$e$1(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -6545,10 +6436,10 @@ module raster_top$front$core$fifo$xl$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$xl$e$1
+endmodule // raster_top$core$fifo$xl$e$1
 
 
-module raster_top$front$core$fifo$xl$e$2(d,q,clock);
+module raster_top$core$fifo$xl$e$2(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -6564,10 +6455,10 @@ module raster_top$front$core$fifo$xl$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$xl$e$2
+endmodule // raster_top$core$fifo$xl$e$2
 
 
-module raster_top$front$core$fifo$xl$e$3(d,q,clock);
+module raster_top$core$fifo$xl$e$3(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -6583,10 +6474,10 @@ module raster_top$front$core$fifo$xl$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$xl$e$3
+endmodule // raster_top$core$fifo$xl$e$3
 
 
-module raster_top$front$core$fifo$xr(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$xr(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6611,22 +6502,22 @@ module raster_top$front$core$fifo$xr(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$xr$e$0 e$0(
+    raster_top$core$fifo$xr$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$xr$e$1 e$1(
+    raster_top$core$fifo$xr$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$xr$e$2 e$2(
+    raster_top$core$fifo$xr$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$xr$e$3 e$3(
+    raster_top$core$fifo$xr$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6664,10 +6555,10 @@ module raster_top$front$core$fifo$xr(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$xr
+endmodule // raster_top$core$fifo$xr
 
 
-module raster_top$front$core$fifo$xr$e$0(d,q,clock);
+module raster_top$core$fifo$xr$e$0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -6683,10 +6574,10 @@ module raster_top$front$core$fifo$xr$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$xr$e$0
+endmodule // raster_top$core$fifo$xr$e$0
 
 
-module raster_top$front$core$fifo$xr$e$1(d,q,clock);
+module raster_top$core$fifo$xr$e$1(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -6702,10 +6593,10 @@ module raster_top$front$core$fifo$xr$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$xr$e$1
+endmodule // raster_top$core$fifo$xr$e$1
 
 
-module raster_top$front$core$fifo$xr$e$2(d,q,clock);
+module raster_top$core$fifo$xr$e$2(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -6721,10 +6612,10 @@ module raster_top$front$core$fifo$xr$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$xr$e$2
+endmodule // raster_top$core$fifo$xr$e$2
 
 
-module raster_top$front$core$fifo$xr$e$3(d,q,clock);
+module raster_top$core$fifo$xr$e$3(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -6740,10 +6631,10 @@ module raster_top$front$core$fifo$xr$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$xr$e$3
+endmodule // raster_top$core$fifo$xr$e$3
 
 
-module raster_top$front$core$fifo$y(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$y(clock,push,pop,wr,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6768,22 +6659,22 @@ module raster_top$front$core$fifo$y(clock,push,pop,wr,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$front$core$fifo$y$e$0 e$0(
+    raster_top$core$fifo$y$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$front$core$fifo$y$e$1 e$1(
+    raster_top$core$fifo$y$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$front$core$fifo$y$e$2 e$2(
+    raster_top$core$fifo$y$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$front$core$fifo$y$e$3 e$3(
+    raster_top$core$fifo$y$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6821,10 +6712,10 @@ module raster_top$front$core$fifo$y(clock,push,pop,wr,din,head);
         head = e$0$q;
     end
     
-endmodule // raster_top$front$core$fifo$y
+endmodule // raster_top$core$fifo$y
 
 
-module raster_top$front$core$fifo$y$e$0(d,q,clock);
+module raster_top$core$fifo$y$e$0(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -6840,10 +6731,10 @@ module raster_top$front$core$fifo$y$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$y$e$0
+endmodule // raster_top$core$fifo$y$e$0
 
 
-module raster_top$front$core$fifo$y$e$1(d,q,clock);
+module raster_top$core$fifo$y$e$1(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -6859,10 +6750,10 @@ module raster_top$front$core$fifo$y$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$y$e$1
+endmodule // raster_top$core$fifo$y$e$1
 
 
-module raster_top$front$core$fifo$y$e$2(d,q,clock);
+module raster_top$core$fifo$y$e$2(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -6878,10 +6769,10 @@ module raster_top$front$core$fifo$y$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$y$e$2
+endmodule // raster_top$core$fifo$y$e$2
 
 
-module raster_top$front$core$fifo$y$e$3(d,q,clock);
+module raster_top$core$fifo$y$e$3(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -6897,10 +6788,10 @@ module raster_top$front$core$fifo$y$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$fifo$y$e$3
+endmodule // raster_top$core$fifo$y$e$3
 
 
-module raster_top$front$core$in_setup(d,q,clock);
+module raster_top$core$in_setup(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -6916,10 +6807,10 @@ module raster_top$front$core$in_setup(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$in_setup
+endmodule // raster_top$core$in_setup
 
 
-module raster_top$front$core$last_in(d,q,clock);
+module raster_top$core$last_in(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -6935,10 +6826,10 @@ module raster_top$front$core$last_in(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$last_in
+endmodule // raster_top$core$last_in
 
 
-module raster_top$front$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$left_c0,inp$left_c1,inp$left_c2,inp$right_z,inp$right_c0,inp$right_c1,inp$right_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
+module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$left_c0,inp$left_c1,inp$left_c2,inp$right_z,inp$right_c0,inp$right_c1,inp$right_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
     
     // Module arguments
     input wire  clock;
@@ -7054,121 +6945,121 @@ module raster_top$front$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,i
     reg  accept;
     
     // Sub module instances
-    raster_top$front$core$span$busy busy(
+    raster_top$core$span$busy busy(
         .d(busy$d),
         .q(busy$q),
         .clock(busy$clock)
     );
-    raster_top$front$core$span$drop drop(
+    raster_top$core$span$drop drop(
         .d(drop$d),
         .q(drop$q),
         .clock(drop$clock)
     );
-    raster_top$front$core$span$left left(
+    raster_top$core$span$left left(
         .d(left$d),
         .q(left$q),
         .clock(left$clock)
     );
-    raster_top$front$core$span$x x(
+    raster_top$core$span$x x(
         .d(x$d),
         .q(x$q),
         .clock(x$clock)
     );
-    raster_top$front$core$span$last last(
+    raster_top$core$span$last last(
         .d(last$d),
         .q(last$q),
         .clock(last$clock)
     );
-    raster_top$front$core$span$y y(
+    raster_top$core$span$y y(
         .d(y$d),
         .q(y$q),
         .clock(y$clock)
     );
-    raster_top$front$core$span$a_z a_z(
+    raster_top$core$span$a_z a_z(
         .d(a_z$d),
         .q(a_z$q),
         .clock(a_z$clock)
     );
-    raster_top$front$core$span$a_c0 a_c0(
+    raster_top$core$span$a_c0 a_c0(
         .d(a_c0$d),
         .q(a_c0$q),
         .clock(a_c0$clock)
     );
-    raster_top$front$core$span$a_c1 a_c1(
+    raster_top$core$span$a_c1 a_c1(
         .d(a_c1$d),
         .q(a_c1$q),
         .clock(a_c1$clock)
     );
-    raster_top$front$core$span$a_c2 a_c2(
+    raster_top$core$span$a_c2 a_c2(
         .d(a_c2$d),
         .q(a_c2$q),
         .clock(a_c2$clock)
     );
-    raster_top$front$core$span$d_z d_z(
+    raster_top$core$span$d_z d_z(
         .d(d_z$d),
         .q(d_z$q),
         .clock(d_z$clock)
     );
-    raster_top$front$core$span$d_c0 d_c0(
+    raster_top$core$span$d_c0 d_c0(
         .d(d_c0$d),
         .q(d_c0$q),
         .clock(d_c0$clock)
     );
-    raster_top$front$core$span$d_c1 d_c1(
+    raster_top$core$span$d_c1 d_c1(
         .d(d_c1$d),
         .q(d_c1$q),
         .clock(d_c1$clock)
     );
-    raster_top$front$core$span$d_c2 d_c2(
+    raster_top$core$span$d_c2 d_c2(
         .d(d_c2$d),
         .q(d_c2$q),
         .clock(d_c2$clock)
     );
-    raster_top$front$core$span$zl zl(
+    raster_top$core$span$zl zl(
         .x(zl$x),
         .neg(zl$neg),
         .over(zl$over),
         .low(zl$low)
     );
-    raster_top$front$core$span$zr zr(
+    raster_top$core$span$zr zr(
         .x(zr$x),
         .neg(zr$neg),
         .over(zr$over),
         .low(zr$low)
     );
-    raster_top$front$core$span$xl_neg xl_neg(
+    raster_top$core$span$xl_neg xl_neg(
         .x(xl_neg$x),
         .neg(xl_neg$neg)
     );
-    raster_top$front$core$span$xr_neg xr_neg(
+    raster_top$core$span$xr_neg xr_neg(
         .x(xr_neg$x),
         .neg(xr_neg$neg)
     );
-    raster_top$front$core$span$zp zp(
+    raster_top$core$span$zp zp(
         .x(zp$x),
         .neg(zp$neg),
         .over(zp$over),
         .low(zp$low)
     );
-    raster_top$front$core$span$c0 c0(
+    raster_top$core$span$c0 c0(
         .x(c0$x),
         .neg(c0$neg),
         .over(c0$over),
         .low(c0$low)
     );
-    raster_top$front$core$span$c1 c1(
+    raster_top$core$span$c1 c1(
         .x(c1$x),
         .neg(c1$neg),
         .over(c1$over),
         .low(c1$low)
     );
-    raster_top$front$core$span$c2 c2(
+    raster_top$core$span$c2 c2(
         .x(c2$x),
         .neg(c2$neg),
         .over(c2$over),
         .low(c2$low)
     );
-    raster_top$front$core$span$xl_on xl_on(
+    raster_top$core$span$xl_on xl_on(
         .a(xl_on$a),
         .b(xl_on$b),
         .lt(xl_on$lt)
@@ -7299,10 +7190,10 @@ module raster_top$front$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,i
         end
     end
     
-endmodule // raster_top$front$core$span
+endmodule // raster_top$core$span
 
 
-module raster_top$front$core$span$a_c0(d,q,clock);
+module raster_top$core$span$a_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7318,10 +7209,10 @@ module raster_top$front$core$span$a_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$a_c0
+endmodule // raster_top$core$span$a_c0
 
 
-module raster_top$front$core$span$a_c1(d,q,clock);
+module raster_top$core$span$a_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7337,10 +7228,10 @@ module raster_top$front$core$span$a_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$a_c1
+endmodule // raster_top$core$span$a_c1
 
 
-module raster_top$front$core$span$a_c2(d,q,clock);
+module raster_top$core$span$a_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7356,10 +7247,10 @@ module raster_top$front$core$span$a_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$a_c2
+endmodule // raster_top$core$span$a_c2
 
 
-module raster_top$front$core$span$a_z(d,q,clock);
+module raster_top$core$span$a_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -7375,10 +7266,10 @@ module raster_top$front$core$span$a_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$a_z
+endmodule // raster_top$core$span$a_z
 
 
-module raster_top$front$core$span$busy(d,q,clock);
+module raster_top$core$span$busy(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -7394,10 +7285,10 @@ module raster_top$front$core$span$busy(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$busy
+endmodule // raster_top$core$span$busy
 
 
-module raster_top$front$core$span$c0(x,neg,over,low);
+module raster_top$core$span$c0(x,neg,over,low);
     
     // Module arguments
     input wire  [31:0] x;
@@ -7421,7 +7312,7 @@ module raster_top$front$core$span$c0(x,neg,over,low);
     reg  [32:0] shifted;
     
     // Sub module instances
-    raster_top$front$core$span$c0$x_neg x_neg(
+    raster_top$core$span$c0$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -7440,10 +7331,10 @@ module raster_top$front$core$span$c0(x,neg,over,low);
         low = ((shifted) & 8'hff);
     end
     
-endmodule // raster_top$front$core$span$c0
+endmodule // raster_top$core$span$c0
 
 
-module raster_top$front$core$span$c0$x_neg(x,neg);
+module raster_top$core$span$c0$x_neg(x,neg);
     
     // Module arguments
     input wire  [31:0] x;
@@ -7457,10 +7348,10 @@ module raster_top$front$core$span$c0$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$front$core$span$c0$x_neg
+endmodule // raster_top$core$span$c0$x_neg
 
 
-module raster_top$front$core$span$c1(x,neg,over,low);
+module raster_top$core$span$c1(x,neg,over,low);
     
     // Module arguments
     input wire  [31:0] x;
@@ -7484,7 +7375,7 @@ module raster_top$front$core$span$c1(x,neg,over,low);
     reg  [32:0] shifted;
     
     // Sub module instances
-    raster_top$front$core$span$c1$x_neg x_neg(
+    raster_top$core$span$c1$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -7503,10 +7394,10 @@ module raster_top$front$core$span$c1(x,neg,over,low);
         low = ((shifted) & 8'hff);
     end
     
-endmodule // raster_top$front$core$span$c1
+endmodule // raster_top$core$span$c1
 
 
-module raster_top$front$core$span$c1$x_neg(x,neg);
+module raster_top$core$span$c1$x_neg(x,neg);
     
     // Module arguments
     input wire  [31:0] x;
@@ -7520,10 +7411,10 @@ module raster_top$front$core$span$c1$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$front$core$span$c1$x_neg
+endmodule // raster_top$core$span$c1$x_neg
 
 
-module raster_top$front$core$span$c2(x,neg,over,low);
+module raster_top$core$span$c2(x,neg,over,low);
     
     // Module arguments
     input wire  [31:0] x;
@@ -7547,7 +7438,7 @@ module raster_top$front$core$span$c2(x,neg,over,low);
     reg  [32:0] shifted;
     
     // Sub module instances
-    raster_top$front$core$span$c2$x_neg x_neg(
+    raster_top$core$span$c2$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -7566,10 +7457,10 @@ module raster_top$front$core$span$c2(x,neg,over,low);
         low = ((shifted) & 8'hff);
     end
     
-endmodule // raster_top$front$core$span$c2
+endmodule // raster_top$core$span$c2
 
 
-module raster_top$front$core$span$c2$x_neg(x,neg);
+module raster_top$core$span$c2$x_neg(x,neg);
     
     // Module arguments
     input wire  [31:0] x;
@@ -7583,10 +7474,10 @@ module raster_top$front$core$span$c2$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$front$core$span$c2$x_neg
+endmodule // raster_top$core$span$c2$x_neg
 
 
-module raster_top$front$core$span$d_c0(d,q,clock);
+module raster_top$core$span$d_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7602,10 +7493,10 @@ module raster_top$front$core$span$d_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$d_c0
+endmodule // raster_top$core$span$d_c0
 
 
-module raster_top$front$core$span$d_c1(d,q,clock);
+module raster_top$core$span$d_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7621,10 +7512,10 @@ module raster_top$front$core$span$d_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$d_c1
+endmodule // raster_top$core$span$d_c1
 
 
-module raster_top$front$core$span$d_c2(d,q,clock);
+module raster_top$core$span$d_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7640,10 +7531,10 @@ module raster_top$front$core$span$d_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$d_c2
+endmodule // raster_top$core$span$d_c2
 
 
-module raster_top$front$core$span$d_z(d,q,clock);
+module raster_top$core$span$d_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -7659,10 +7550,10 @@ module raster_top$front$core$span$d_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$d_z
+endmodule // raster_top$core$span$d_z
 
 
-module raster_top$front$core$span$drop(d,q,clock);
+module raster_top$core$span$drop(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -7678,10 +7569,10 @@ module raster_top$front$core$span$drop(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$drop
+endmodule // raster_top$core$span$drop
 
 
-module raster_top$front$core$span$last(d,q,clock);
+module raster_top$core$span$last(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7697,10 +7588,10 @@ module raster_top$front$core$span$last(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$last
+endmodule // raster_top$core$span$last
 
 
-module raster_top$front$core$span$left(d,q,clock);
+module raster_top$core$span$left(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -7716,10 +7607,10 @@ module raster_top$front$core$span$left(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$left
+endmodule // raster_top$core$span$left
 
 
-module raster_top$front$core$span$x(d,q,clock);
+module raster_top$core$span$x(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7735,10 +7626,10 @@ module raster_top$front$core$span$x(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$x
+endmodule // raster_top$core$span$x
 
 
-module raster_top$front$core$span$xl_neg(x,neg);
+module raster_top$core$span$xl_neg(x,neg);
     
     // Module arguments
     input wire  [12:0] x;
@@ -7752,10 +7643,10 @@ module raster_top$front$core$span$xl_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$front$core$span$xl_neg
+endmodule // raster_top$core$span$xl_neg
 
 
-module raster_top$front$core$span$xl_on(a,b,lt);
+module raster_top$core$span$xl_on(a,b,lt);
     
     // Module arguments
     input wire  [12:0] a;
@@ -7770,10 +7661,10 @@ module raster_top$front$core$span$xl_on(a,b,lt);
         lt = (a ^ half) < (b ^ half);
     end
     
-endmodule // raster_top$front$core$span$xl_on
+endmodule // raster_top$core$span$xl_on
 
 
-module raster_top$front$core$span$xr_neg(x,neg);
+module raster_top$core$span$xr_neg(x,neg);
     
     // Module arguments
     input wire  [12:0] x;
@@ -7787,10 +7678,10 @@ module raster_top$front$core$span$xr_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$front$core$span$xr_neg
+endmodule // raster_top$core$span$xr_neg
 
 
-module raster_top$front$core$span$y(d,q,clock);
+module raster_top$core$span$y(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -7806,10 +7697,10 @@ module raster_top$front$core$span$y(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$span$y
+endmodule // raster_top$core$span$y
 
 
-module raster_top$front$core$span$zl(x,neg,over,low);
+module raster_top$core$span$zl(x,neg,over,low);
     
     // Module arguments
     input wire  [35:0] x;
@@ -7833,7 +7724,7 @@ module raster_top$front$core$span$zl(x,neg,over,low);
     reg  [36:0] shifted;
     
     // Sub module instances
-    raster_top$front$core$span$zl$x_neg x_neg(
+    raster_top$core$span$zl$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -7852,10 +7743,10 @@ module raster_top$front$core$span$zl(x,neg,over,low);
         low = ((shifted) & 16'hffff);
     end
     
-endmodule // raster_top$front$core$span$zl
+endmodule // raster_top$core$span$zl
 
 
-module raster_top$front$core$span$zl$x_neg(x,neg);
+module raster_top$core$span$zl$x_neg(x,neg);
     
     // Module arguments
     input wire  [35:0] x;
@@ -7869,10 +7760,10 @@ module raster_top$front$core$span$zl$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$front$core$span$zl$x_neg
+endmodule // raster_top$core$span$zl$x_neg
 
 
-module raster_top$front$core$span$zp(x,neg,over,low);
+module raster_top$core$span$zp(x,neg,over,low);
     
     // Module arguments
     input wire  [35:0] x;
@@ -7896,7 +7787,7 @@ module raster_top$front$core$span$zp(x,neg,over,low);
     reg  [36:0] shifted;
     
     // Sub module instances
-    raster_top$front$core$span$zp$x_neg x_neg(
+    raster_top$core$span$zp$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -7915,10 +7806,10 @@ module raster_top$front$core$span$zp(x,neg,over,low);
         low = ((shifted) & 16'hffff);
     end
     
-endmodule // raster_top$front$core$span$zp
+endmodule // raster_top$core$span$zp
 
 
-module raster_top$front$core$span$zp$x_neg(x,neg);
+module raster_top$core$span$zp$x_neg(x,neg);
     
     // Module arguments
     input wire  [35:0] x;
@@ -7932,10 +7823,10 @@ module raster_top$front$core$span$zp$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$front$core$span$zp$x_neg
+endmodule // raster_top$core$span$zp$x_neg
 
 
-module raster_top$front$core$span$zr(x,neg,over,low);
+module raster_top$core$span$zr(x,neg,over,low);
     
     // Module arguments
     input wire  [35:0] x;
@@ -7959,7 +7850,7 @@ module raster_top$front$core$span$zr(x,neg,over,low);
     reg  [36:0] shifted;
     
     // Sub module instances
-    raster_top$front$core$span$zr$x_neg x_neg(
+    raster_top$core$span$zr$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -7978,10 +7869,10 @@ module raster_top$front$core$span$zr(x,neg,over,low);
         low = ((shifted) & 16'hffff);
     end
     
-endmodule // raster_top$front$core$span$zr
+endmodule // raster_top$core$span$zr
 
 
-module raster_top$front$core$span$zr$x_neg(x,neg);
+module raster_top$core$span$zr$x_neg(x,neg);
     
     // Module arguments
     input wire  [35:0] x;
@@ -7995,10 +7886,10 @@ module raster_top$front$core$span$zr$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$front$core$span$zr$x_neg
+endmodule // raster_top$core$span$zr$x_neg
 
 
-module raster_top$front$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
+module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
     
     // Module arguments
     input wire  clock;
@@ -8838,42 +8729,42 @@ module raster_top$front$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,i
     reg  [56:0] ddy$3;
     
     // Sub module instances
-    raster_top$front$core$triangle_setup$mul$0 mul$0(
+    raster_top$core$triangle_setup$mul$0 mul$0(
         .a(mul$0$a),
         .b(mul$0$b),
         .p(mul$0$p)
     );
-    raster_top$front$core$triangle_setup$mul$1 mul$1(
+    raster_top$core$triangle_setup$mul$1 mul$1(
         .a(mul$1$a),
         .b(mul$1$b),
         .p(mul$1$p)
     );
-    raster_top$front$core$triangle_setup$mul$2 mul$2(
+    raster_top$core$triangle_setup$mul$2 mul$2(
         .a(mul$2$a),
         .b(mul$2$b),
         .p(mul$2$p)
     );
-    raster_top$front$core$triangle_setup$mul$3 mul$3(
+    raster_top$core$triangle_setup$mul$3 mul$3(
         .a(mul$3$a),
         .b(mul$3$b),
         .p(mul$3$p)
     );
-    raster_top$front$core$triangle_setup$mul$4 mul$4(
+    raster_top$core$triangle_setup$mul$4 mul$4(
         .a(mul$4$a),
         .b(mul$4$b),
         .p(mul$4$p)
     );
-    raster_top$front$core$triangle_setup$mul$5 mul$5(
+    raster_top$core$triangle_setup$mul$5 mul$5(
         .a(mul$5$a),
         .b(mul$5$b),
         .p(mul$5$p)
     );
-    raster_top$front$core$triangle_setup$mul$6 mul$6(
+    raster_top$core$triangle_setup$mul$6 mul$6(
         .a(mul$6$a),
         .b(mul$6$b),
         .p(mul$6$p)
     );
-    raster_top$front$core$triangle_setup$div div(
+    raster_top$core$triangle_setup$div div(
         .clock(div$clock),
         .inp_valid(div$inp_valid),
         .inp_ready(div$inp_ready),
@@ -8884,432 +8775,432 @@ module raster_top$front$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,i
         .out_q(div$out_q),
         .out_r(div$out_r)
     );
-    raster_top$front$core$triangle_setup$t t(
+    raster_top$core$triangle_setup$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
-    raster_top$front$core$triangle_setup$vx$0 vx$0(
+    raster_top$core$triangle_setup$vx$0 vx$0(
         .d(vx$0$d),
         .q(vx$0$q),
         .clock(vx$0$clock)
     );
-    raster_top$front$core$triangle_setup$vx$1 vx$1(
+    raster_top$core$triangle_setup$vx$1 vx$1(
         .d(vx$1$d),
         .q(vx$1$q),
         .clock(vx$1$clock)
     );
-    raster_top$front$core$triangle_setup$vx$2 vx$2(
+    raster_top$core$triangle_setup$vx$2 vx$2(
         .d(vx$2$d),
         .q(vx$2$q),
         .clock(vx$2$clock)
     );
-    raster_top$front$core$triangle_setup$vy$0 vy$0(
+    raster_top$core$triangle_setup$vy$0 vy$0(
         .d(vy$0$d),
         .q(vy$0$q),
         .clock(vy$0$clock)
     );
-    raster_top$front$core$triangle_setup$vy$1 vy$1(
+    raster_top$core$triangle_setup$vy$1 vy$1(
         .d(vy$1$d),
         .q(vy$1$q),
         .clock(vy$1$clock)
     );
-    raster_top$front$core$triangle_setup$vy$2 vy$2(
+    raster_top$core$triangle_setup$vy$2 vy$2(
         .d(vy$2$d),
         .q(vy$2$q),
         .clock(vy$2$clock)
     );
-    raster_top$front$core$triangle_setup$vz$0 vz$0(
+    raster_top$core$triangle_setup$vz$0 vz$0(
         .d(vz$0$d),
         .q(vz$0$q),
         .clock(vz$0$clock)
     );
-    raster_top$front$core$triangle_setup$vz$1 vz$1(
+    raster_top$core$triangle_setup$vz$1 vz$1(
         .d(vz$1$d),
         .q(vz$1$q),
         .clock(vz$1$clock)
     );
-    raster_top$front$core$triangle_setup$vz$2 vz$2(
+    raster_top$core$triangle_setup$vz$2 vz$2(
         .d(vz$2$d),
         .q(vz$2$q),
         .clock(vz$2$clock)
     );
-    raster_top$front$core$triangle_setup$vc$0 vc$0(
+    raster_top$core$triangle_setup$vc$0 vc$0(
         .d(vc$0$d),
         .q(vc$0$q),
         .clock(vc$0$clock)
     );
-    raster_top$front$core$triangle_setup$vc$1 vc$1(
+    raster_top$core$triangle_setup$vc$1 vc$1(
         .d(vc$1$d),
         .q(vc$1$q),
         .clock(vc$1$clock)
     );
-    raster_top$front$core$triangle_setup$vc$2 vc$2(
+    raster_top$core$triangle_setup$vc$2 vc$2(
         .d(vc$2$d),
         .q(vc$2$q),
         .clock(vc$2$clock)
     );
-    raster_top$front$core$triangle_setup$vc$3 vc$3(
+    raster_top$core$triangle_setup$vc$3 vc$3(
         .d(vc$3$d),
         .q(vc$3$q),
         .clock(vc$3$clock)
     );
-    raster_top$front$core$triangle_setup$vc$4 vc$4(
+    raster_top$core$triangle_setup$vc$4 vc$4(
         .d(vc$4$d),
         .q(vc$4$q),
         .clock(vc$4$clock)
     );
-    raster_top$front$core$triangle_setup$vc$5 vc$5(
+    raster_top$core$triangle_setup$vc$5 vc$5(
         .d(vc$5$d),
         .q(vc$5$q),
         .clock(vc$5$clock)
     );
-    raster_top$front$core$triangle_setup$vc$6 vc$6(
+    raster_top$core$triangle_setup$vc$6 vc$6(
         .d(vc$6$d),
         .q(vc$6$q),
         .clock(vc$6$clock)
     );
-    raster_top$front$core$triangle_setup$vc$7 vc$7(
+    raster_top$core$triangle_setup$vc$7 vc$7(
         .d(vc$7$d),
         .q(vc$7$q),
         .clock(vc$7$clock)
     );
-    raster_top$front$core$triangle_setup$vc$8 vc$8(
+    raster_top$core$triangle_setup$vc$8 vc$8(
         .d(vc$8$d),
         .q(vc$8$q),
         .clock(vc$8$clock)
     );
-    raster_top$front$core$triangle_setup$crosses crosses(
+    raster_top$core$triangle_setup$crosses crosses(
         .d(crosses$d),
         .q(crosses$q),
         .clock(crosses$clock)
     );
-    raster_top$front$core$triangle_setup$area area(
+    raster_top$core$triangle_setup$area area(
         .d(area$d),
         .q(area$q),
         .clock(area$clock)
     );
-    raster_top$front$core$triangle_setup$exp exp(
+    raster_top$core$triangle_setup$exp exp(
         .d(exp$d),
         .q(exp$q),
         .clock(exp$clock)
     );
-    raster_top$front$core$triangle_setup$mant mant(
+    raster_top$core$triangle_setup$mant mant(
         .d(mant$d),
         .q(mant$q),
         .clock(mant$clock)
     );
-    raster_top$front$core$triangle_setup$x$0 x$0(
+    raster_top$core$triangle_setup$x$0 x$0(
         .d(x$0$d),
         .q(x$0$q),
         .clock(x$0$clock)
     );
-    raster_top$front$core$triangle_setup$x$1 x$1(
+    raster_top$core$triangle_setup$x$1 x$1(
         .d(x$1$d),
         .q(x$1$q),
         .clock(x$1$clock)
     );
-    raster_top$front$core$triangle_setup$x$2 x$2(
+    raster_top$core$triangle_setup$x$2 x$2(
         .d(x$2$d),
         .q(x$2$q),
         .clock(x$2$clock)
     );
-    raster_top$front$core$triangle_setup$r$0 r$0(
+    raster_top$core$triangle_setup$r$0 r$0(
         .d(r$0$d),
         .q(r$0$q),
         .clock(r$0$clock)
     );
-    raster_top$front$core$triangle_setup$r$1 r$1(
+    raster_top$core$triangle_setup$r$1 r$1(
         .d(r$1$d),
         .q(r$1$q),
         .clock(r$1$clock)
     );
-    raster_top$front$core$triangle_setup$r$2 r$2(
+    raster_top$core$triangle_setup$r$2 r$2(
         .d(r$2$d),
         .q(r$2$q),
         .clock(r$2$clock)
     );
-    raster_top$front$core$triangle_setup$q$0 q$0(
+    raster_top$core$triangle_setup$q$0 q$0(
         .d(q$0$d),
         .q(q$0$q),
         .clock(q$0$clock)
     );
-    raster_top$front$core$triangle_setup$q$1 q$1(
+    raster_top$core$triangle_setup$q$1 q$1(
         .d(q$1$d),
         .q(q$1$q),
         .clock(q$1$clock)
     );
-    raster_top$front$core$triangle_setup$q$2 q$2(
+    raster_top$core$triangle_setup$q$2 q$2(
         .d(q$2$d),
         .q(q$2$q),
         .clock(q$2$clock)
     );
-    raster_top$front$core$triangle_setup$rho$0 rho$0(
+    raster_top$core$triangle_setup$rho$0 rho$0(
         .d(rho$0$d),
         .q(rho$0$q),
         .clock(rho$0$clock)
     );
-    raster_top$front$core$triangle_setup$rho$1 rho$1(
+    raster_top$core$triangle_setup$rho$1 rho$1(
         .d(rho$1$d),
         .q(rho$1$q),
         .clock(rho$1$clock)
     );
-    raster_top$front$core$triangle_setup$rho$2 rho$2(
+    raster_top$core$triangle_setup$rho$2 rho$2(
         .d(rho$2$d),
         .q(rho$2$q),
         .clock(rho$2$clock)
     );
-    raster_top$front$core$triangle_setup$num$0 num$0(
+    raster_top$core$triangle_setup$num$0 num$0(
         .d(num$0$d),
         .q(num$0$q),
         .clock(num$0$clock)
     );
-    raster_top$front$core$triangle_setup$num$1 num$1(
+    raster_top$core$triangle_setup$num$1 num$1(
         .d(num$1$d),
         .q(num$1$q),
         .clock(num$1$clock)
     );
-    raster_top$front$core$triangle_setup$num$2 num$2(
+    raster_top$core$triangle_setup$num$2 num$2(
         .d(num$2$d),
         .q(num$2$q),
         .clock(num$2$clock)
     );
-    raster_top$front$core$triangle_setup$p$0 p$0(
+    raster_top$core$triangle_setup$p$0 p$0(
         .d(p$0$d),
         .q(p$0$q),
         .clock(p$0$clock)
     );
-    raster_top$front$core$triangle_setup$p$1 p$1(
+    raster_top$core$triangle_setup$p$1 p$1(
         .d(p$1$d),
         .q(p$1$q),
         .clock(p$1$clock)
     );
-    raster_top$front$core$triangle_setup$p$2 p$2(
+    raster_top$core$triangle_setup$p$2 p$2(
         .d(p$2$d),
         .q(p$2$q),
         .clock(p$2$clock)
     );
-    raster_top$front$core$triangle_setup$p$3 p$3(
+    raster_top$core$triangle_setup$p$3 p$3(
         .d(p$3$d),
         .q(p$3$q),
         .clock(p$3$clock)
     );
-    raster_top$front$core$triangle_setup$gx$0 gx$0(
+    raster_top$core$triangle_setup$gx$0 gx$0(
         .d(gx$0$d),
         .q(gx$0$q),
         .clock(gx$0$clock)
     );
-    raster_top$front$core$triangle_setup$gx$1 gx$1(
+    raster_top$core$triangle_setup$gx$1 gx$1(
         .d(gx$1$d),
         .q(gx$1$q),
         .clock(gx$1$clock)
     );
-    raster_top$front$core$triangle_setup$gx$2 gx$2(
+    raster_top$core$triangle_setup$gx$2 gx$2(
         .d(gx$2$d),
         .q(gx$2$q),
         .clock(gx$2$clock)
     );
-    raster_top$front$core$triangle_setup$gx$3 gx$3(
+    raster_top$core$triangle_setup$gx$3 gx$3(
         .d(gx$3$d),
         .q(gx$3$q),
         .clock(gx$3$clock)
     );
-    raster_top$front$core$triangle_setup$gy$0 gy$0(
+    raster_top$core$triangle_setup$gy$0 gy$0(
         .d(gy$0$d),
         .q(gy$0$q),
         .clock(gy$0$clock)
     );
-    raster_top$front$core$triangle_setup$gy$1 gy$1(
+    raster_top$core$triangle_setup$gy$1 gy$1(
         .d(gy$1$d),
         .q(gy$1$q),
         .clock(gy$1$clock)
     );
-    raster_top$front$core$triangle_setup$gy$2 gy$2(
+    raster_top$core$triangle_setup$gy$2 gy$2(
         .d(gy$2$d),
         .q(gy$2$q),
         .clock(gy$2$clock)
     );
-    raster_top$front$core$triangle_setup$gy$3 gy$3(
+    raster_top$core$triangle_setup$gy$3 gy$3(
         .d(gy$3$d),
         .q(gy$3$q),
         .clock(gy$3$clock)
     );
-    raster_top$front$core$triangle_setup$plane$0 plane$0(
+    raster_top$core$triangle_setup$plane$0 plane$0(
         .d(plane$0$d),
         .q(plane$0$q),
         .clock(plane$0$clock)
     );
-    raster_top$front$core$triangle_setup$plane$1 plane$1(
+    raster_top$core$triangle_setup$plane$1 plane$1(
         .d(plane$1$d),
         .q(plane$1$q),
         .clock(plane$1$clock)
     );
-    raster_top$front$core$triangle_setup$plane$2 plane$2(
+    raster_top$core$triangle_setup$plane$2 plane$2(
         .d(plane$2$d),
         .q(plane$2$q),
         .clock(plane$2$clock)
     );
-    raster_top$front$core$triangle_setup$plane$3 plane$3(
+    raster_top$core$triangle_setup$plane$3 plane$3(
         .d(plane$3$d),
         .q(plane$3$q),
         .clock(plane$3$clock)
     );
-    raster_top$front$core$triangle_setup$plane$4 plane$4(
+    raster_top$core$triangle_setup$plane$4 plane$4(
         .d(plane$4$d),
         .q(plane$4$q),
         .clock(plane$4$clock)
     );
-    raster_top$front$core$triangle_setup$plane$5 plane$5(
+    raster_top$core$triangle_setup$plane$5 plane$5(
         .d(plane$5$d),
         .q(plane$5$q),
         .clock(plane$5$clock)
     );
-    raster_top$front$core$triangle_setup$plane$6 plane$6(
+    raster_top$core$triangle_setup$plane$6 plane$6(
         .d(plane$6$d),
         .q(plane$6$q),
         .clock(plane$6$clock)
     );
-    raster_top$front$core$triangle_setup$plane$7 plane$7(
+    raster_top$core$triangle_setup$plane$7 plane$7(
         .d(plane$7$d),
         .q(plane$7$q),
         .clock(plane$7$clock)
     );
-    raster_top$front$core$triangle_setup$plane$8 plane$8(
+    raster_top$core$triangle_setup$plane$8 plane$8(
         .d(plane$8$d),
         .q(plane$8$q),
         .clock(plane$8$clock)
     );
-    raster_top$front$core$triangle_setup$plane$9 plane$9(
+    raster_top$core$triangle_setup$plane$9 plane$9(
         .d(plane$9$d),
         .q(plane$9$q),
         .clock(plane$9$clock)
     );
-    raster_top$front$core$triangle_setup$plane$10 plane$10(
+    raster_top$core$triangle_setup$plane$10 plane$10(
         .d(plane$10$d),
         .q(plane$10$q),
         .clock(plane$10$clock)
     );
-    raster_top$front$core$triangle_setup$plane$11 plane$11(
+    raster_top$core$triangle_setup$plane$11 plane$11(
         .d(plane$11$d),
         .q(plane$11$q),
         .clock(plane$11$clock)
     );
-    raster_top$front$core$triangle_setup$inc0$0 inc0$0(
+    raster_top$core$triangle_setup$inc0$0 inc0$0(
         .d(inc0$0$d),
         .q(inc0$0$q),
         .clock(inc0$0$clock)
     );
-    raster_top$front$core$triangle_setup$inc0$1 inc0$1(
+    raster_top$core$triangle_setup$inc0$1 inc0$1(
         .d(inc0$1$d),
         .q(inc0$1$q),
         .clock(inc0$1$clock)
     );
-    raster_top$front$core$triangle_setup$inc0$2 inc0$2(
+    raster_top$core$triangle_setup$inc0$2 inc0$2(
         .d(inc0$2$d),
         .q(inc0$2$q),
         .clock(inc0$2$clock)
     );
-    raster_top$front$core$triangle_setup$inc0$3 inc0$3(
+    raster_top$core$triangle_setup$inc0$3 inc0$3(
         .d(inc0$3$d),
         .q(inc0$3$q),
         .clock(inc0$3$clock)
     );
-    raster_top$front$core$triangle_setup$inc0$4 inc0$4(
+    raster_top$core$triangle_setup$inc0$4 inc0$4(
         .d(inc0$4$d),
         .q(inc0$4$q),
         .clock(inc0$4$clock)
     );
-    raster_top$front$core$triangle_setup$inc0$5 inc0$5(
+    raster_top$core$triangle_setup$inc0$5 inc0$5(
         .d(inc0$5$d),
         .q(inc0$5$q),
         .clock(inc0$5$clock)
     );
-    raster_top$front$core$triangle_setup$inc0$6 inc0$6(
+    raster_top$core$triangle_setup$inc0$6 inc0$6(
         .d(inc0$6$d),
         .q(inc0$6$q),
         .clock(inc0$6$clock)
     );
-    raster_top$front$core$triangle_setup$inc0$7 inc0$7(
+    raster_top$core$triangle_setup$inc0$7 inc0$7(
         .d(inc0$7$d),
         .q(inc0$7$q),
         .clock(inc0$7$clock)
     );
-    raster_top$front$core$triangle_setup$inc0$8 inc0$8(
+    raster_top$core$triangle_setup$inc0$8 inc0$8(
         .d(inc0$8$d),
         .q(inc0$8$q),
         .clock(inc0$8$clock)
     );
-    raster_top$front$core$triangle_setup$inc0$9 inc0$9(
+    raster_top$core$triangle_setup$inc0$9 inc0$9(
         .d(inc0$9$d),
         .q(inc0$9$q),
         .clock(inc0$9$clock)
     );
-    raster_top$front$core$triangle_setup$inc0$10 inc0$10(
+    raster_top$core$triangle_setup$inc0$10 inc0$10(
         .d(inc0$10$d),
         .q(inc0$10$q),
         .clock(inc0$10$clock)
     );
-    raster_top$front$core$triangle_setup$inc0$11 inc0$11(
+    raster_top$core$triangle_setup$inc0$11 inc0$11(
         .d(inc0$11$d),
         .q(inc0$11$q),
         .clock(inc0$11$clock)
     );
-    raster_top$front$core$triangle_setup$inc1$0 inc1$0(
+    raster_top$core$triangle_setup$inc1$0 inc1$0(
         .d(inc1$0$d),
         .q(inc1$0$q),
         .clock(inc1$0$clock)
     );
-    raster_top$front$core$triangle_setup$inc1$1 inc1$1(
+    raster_top$core$triangle_setup$inc1$1 inc1$1(
         .d(inc1$1$d),
         .q(inc1$1$q),
         .clock(inc1$1$clock)
     );
-    raster_top$front$core$triangle_setup$inc1$2 inc1$2(
+    raster_top$core$triangle_setup$inc1$2 inc1$2(
         .d(inc1$2$d),
         .q(inc1$2$q),
         .clock(inc1$2$clock)
     );
-    raster_top$front$core$triangle_setup$inc1$3 inc1$3(
+    raster_top$core$triangle_setup$inc1$3 inc1$3(
         .d(inc1$3$d),
         .q(inc1$3$q),
         .clock(inc1$3$clock)
     );
-    raster_top$front$core$triangle_setup$inc1$4 inc1$4(
+    raster_top$core$triangle_setup$inc1$4 inc1$4(
         .d(inc1$4$d),
         .q(inc1$4$q),
         .clock(inc1$4$clock)
     );
-    raster_top$front$core$triangle_setup$inc1$5 inc1$5(
+    raster_top$core$triangle_setup$inc1$5 inc1$5(
         .d(inc1$5$d),
         .q(inc1$5$q),
         .clock(inc1$5$clock)
     );
-    raster_top$front$core$triangle_setup$inc1$6 inc1$6(
+    raster_top$core$triangle_setup$inc1$6 inc1$6(
         .d(inc1$6$d),
         .q(inc1$6$q),
         .clock(inc1$6$clock)
     );
-    raster_top$front$core$triangle_setup$inc1$7 inc1$7(
+    raster_top$core$triangle_setup$inc1$7 inc1$7(
         .d(inc1$7$d),
         .q(inc1$7$q),
         .clock(inc1$7$clock)
     );
-    raster_top$front$core$triangle_setup$inc1$8 inc1$8(
+    raster_top$core$triangle_setup$inc1$8 inc1$8(
         .d(inc1$8$d),
         .q(inc1$8$q),
         .clock(inc1$8$clock)
     );
-    raster_top$front$core$triangle_setup$inc1$9 inc1$9(
+    raster_top$core$triangle_setup$inc1$9 inc1$9(
         .d(inc1$9$d),
         .q(inc1$9$q),
         .clock(inc1$9$clock)
     );
-    raster_top$front$core$triangle_setup$inc1$10 inc1$10(
+    raster_top$core$triangle_setup$inc1$10 inc1$10(
         .d(inc1$10$d),
         .q(inc1$10$q),
         .clock(inc1$10$clock)
     );
-    raster_top$front$core$triangle_setup$inc1$11 inc1$11(
+    raster_top$core$triangle_setup$inc1$11 inc1$11(
         .d(inc1$11$d),
         .q(inc1$11$q),
         .clock(inc1$11$clock)
@@ -12590,10 +12481,10 @@ module raster_top$front$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,i
         out$ddx_c2 = ddx$3[(32'h0)+:(36)];
     end
     
-endmodule // raster_top$front$core$triangle_setup
+endmodule // raster_top$core$triangle_setup
 
 
-module raster_top$front$core$triangle_setup$area(d,q,clock);
+module raster_top$core$triangle_setup$area(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -12609,10 +12500,10 @@ module raster_top$front$core$triangle_setup$area(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$area
+endmodule // raster_top$core$triangle_setup$area
 
 
-module raster_top$front$core$triangle_setup$crosses(d,q,clock);
+module raster_top$core$triangle_setup$crosses(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -12628,10 +12519,10 @@ module raster_top$front$core$triangle_setup$crosses(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$crosses
+endmodule // raster_top$core$triangle_setup$crosses
 
 
-module raster_top$front$core$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
+module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
     
     // Module arguments
     input wire  clock;
@@ -12716,7 +12607,7 @@ module raster_top$front$core$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,
     reg  [24:0] last_x;
     
     // Sub module instances
-    raster_top$front$core$triangle_setup$div$stages$0 stages$0(
+    raster_top$core$triangle_setup$div$stages$0 stages$0(
         .clock(stages$0$clock),
         .enable(stages$0$enable),
         .valid_in(stages$0$valid_in),
@@ -12730,7 +12621,7 @@ module raster_top$front$core$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,
         .d(stages$0$d),
         .neg(stages$0$neg)
     );
-    raster_top$front$core$triangle_setup$div$stages$1 stages$1(
+    raster_top$core$triangle_setup$div$stages$1 stages$1(
         .clock(stages$1$clock),
         .enable(stages$1$enable),
         .valid_in(stages$1$valid_in),
@@ -12744,7 +12635,7 @@ module raster_top$front$core$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,
         .d(stages$1$d),
         .neg(stages$1$neg)
     );
-    raster_top$front$core$triangle_setup$div$stages$2 stages$2(
+    raster_top$core$triangle_setup$div$stages$2 stages$2(
         .clock(stages$2$clock),
         .enable(stages$2$enable),
         .valid_in(stages$2$valid_in),
@@ -12758,7 +12649,7 @@ module raster_top$front$core$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,
         .d(stages$2$d),
         .neg(stages$2$neg)
     );
-    raster_top$front$core$triangle_setup$div$stages$3 stages$3(
+    raster_top$core$triangle_setup$div$stages$3 stages$3(
         .clock(stages$3$clock),
         .enable(stages$3$enable),
         .valid_in(stages$3$valid_in),
@@ -12772,7 +12663,7 @@ module raster_top$front$core$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,
         .d(stages$3$d),
         .neg(stages$3$neg)
     );
-    raster_top$front$core$triangle_setup$div$stages$4 stages$4(
+    raster_top$core$triangle_setup$div$stages$4 stages$4(
         .clock(stages$4$clock),
         .enable(stages$4$enable),
         .valid_in(stages$4$valid_in),
@@ -12842,10 +12733,10 @@ module raster_top$front$core$triangle_setup$div(clock,inp_valid,inp_ready,inp_n,
         stages$4$neg_in = stages$3$neg;
     end
     
-endmodule // raster_top$front$core$triangle_setup$div
+endmodule // raster_top$core$triangle_setup$div
 
 
-module raster_top$front$core$triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$core$triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -12908,27 +12799,27 @@ module raster_top$front$core$triangle_setup$div$stages$0(clock,enable,valid_in,p
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$front$core$triangle_setup$div$stages$0$valid_r valid_r(
+    raster_top$core$triangle_setup$div$stages$0$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$0$p_r p_r(
+    raster_top$core$triangle_setup$div$stages$0$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$0$x_r x_r(
+    raster_top$core$triangle_setup$div$stages$0$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$0$d_r d_r(
+    raster_top$core$triangle_setup$div$stages$0$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$0$neg_r neg_r(
+    raster_top$core$triangle_setup$div$stages$0$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -13028,10 +12919,10 @@ module raster_top$front$core$triangle_setup$div$stages$0(clock,enable,valid_in,p
         neg = neg_r$q;
     end
     
-endmodule // raster_top$front$core$triangle_setup$div$stages$0
+endmodule // raster_top$core$triangle_setup$div$stages$0
 
 
-module raster_top$front$core$triangle_setup$div$stages$0$d_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$0$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -13047,10 +12938,10 @@ module raster_top$front$core$triangle_setup$div$stages$0$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$0$d_r
+endmodule // raster_top$core$triangle_setup$div$stages$0$d_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$0$neg_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$0$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13066,10 +12957,10 @@ module raster_top$front$core$triangle_setup$div$stages$0$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$0$neg_r
+endmodule // raster_top$core$triangle_setup$div$stages$0$neg_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$0$p_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$0$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -13085,10 +12976,10 @@ module raster_top$front$core$triangle_setup$div$stages$0$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$0$p_r
+endmodule // raster_top$core$triangle_setup$div$stages$0$p_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$0$valid_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$0$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13104,10 +12995,10 @@ module raster_top$front$core$triangle_setup$div$stages$0$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$0$valid_r
+endmodule // raster_top$core$triangle_setup$div$stages$0$valid_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$0$x_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$0$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -13123,10 +13014,10 @@ module raster_top$front$core$triangle_setup$div$stages$0$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$0$x_r
+endmodule // raster_top$core$triangle_setup$div$stages$0$x_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$core$triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -13189,27 +13080,27 @@ module raster_top$front$core$triangle_setup$div$stages$1(clock,enable,valid_in,p
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$front$core$triangle_setup$div$stages$1$valid_r valid_r(
+    raster_top$core$triangle_setup$div$stages$1$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$1$p_r p_r(
+    raster_top$core$triangle_setup$div$stages$1$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$1$x_r x_r(
+    raster_top$core$triangle_setup$div$stages$1$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$1$d_r d_r(
+    raster_top$core$triangle_setup$div$stages$1$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$1$neg_r neg_r(
+    raster_top$core$triangle_setup$div$stages$1$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -13309,10 +13200,10 @@ module raster_top$front$core$triangle_setup$div$stages$1(clock,enable,valid_in,p
         neg = neg_r$q;
     end
     
-endmodule // raster_top$front$core$triangle_setup$div$stages$1
+endmodule // raster_top$core$triangle_setup$div$stages$1
 
 
-module raster_top$front$core$triangle_setup$div$stages$1$d_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$1$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -13328,10 +13219,10 @@ module raster_top$front$core$triangle_setup$div$stages$1$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$1$d_r
+endmodule // raster_top$core$triangle_setup$div$stages$1$d_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$1$neg_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$1$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13347,10 +13238,10 @@ module raster_top$front$core$triangle_setup$div$stages$1$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$1$neg_r
+endmodule // raster_top$core$triangle_setup$div$stages$1$neg_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$1$p_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$1$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -13366,10 +13257,10 @@ module raster_top$front$core$triangle_setup$div$stages$1$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$1$p_r
+endmodule // raster_top$core$triangle_setup$div$stages$1$p_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$1$valid_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$1$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13385,10 +13276,10 @@ module raster_top$front$core$triangle_setup$div$stages$1$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$1$valid_r
+endmodule // raster_top$core$triangle_setup$div$stages$1$valid_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$1$x_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$1$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -13404,10 +13295,10 @@ module raster_top$front$core$triangle_setup$div$stages$1$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$1$x_r
+endmodule // raster_top$core$triangle_setup$div$stages$1$x_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$core$triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -13470,27 +13361,27 @@ module raster_top$front$core$triangle_setup$div$stages$2(clock,enable,valid_in,p
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$front$core$triangle_setup$div$stages$2$valid_r valid_r(
+    raster_top$core$triangle_setup$div$stages$2$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$2$p_r p_r(
+    raster_top$core$triangle_setup$div$stages$2$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$2$x_r x_r(
+    raster_top$core$triangle_setup$div$stages$2$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$2$d_r d_r(
+    raster_top$core$triangle_setup$div$stages$2$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$2$neg_r neg_r(
+    raster_top$core$triangle_setup$div$stages$2$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -13590,10 +13481,10 @@ module raster_top$front$core$triangle_setup$div$stages$2(clock,enable,valid_in,p
         neg = neg_r$q;
     end
     
-endmodule // raster_top$front$core$triangle_setup$div$stages$2
+endmodule // raster_top$core$triangle_setup$div$stages$2
 
 
-module raster_top$front$core$triangle_setup$div$stages$2$d_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$2$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -13609,10 +13500,10 @@ module raster_top$front$core$triangle_setup$div$stages$2$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$2$d_r
+endmodule // raster_top$core$triangle_setup$div$stages$2$d_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$2$neg_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$2$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13628,10 +13519,10 @@ module raster_top$front$core$triangle_setup$div$stages$2$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$2$neg_r
+endmodule // raster_top$core$triangle_setup$div$stages$2$neg_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$2$p_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$2$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -13647,10 +13538,10 @@ module raster_top$front$core$triangle_setup$div$stages$2$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$2$p_r
+endmodule // raster_top$core$triangle_setup$div$stages$2$p_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$2$valid_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$2$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13666,10 +13557,10 @@ module raster_top$front$core$triangle_setup$div$stages$2$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$2$valid_r
+endmodule // raster_top$core$triangle_setup$div$stages$2$valid_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$2$x_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$2$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -13685,10 +13576,10 @@ module raster_top$front$core$triangle_setup$div$stages$2$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$2$x_r
+endmodule // raster_top$core$triangle_setup$div$stages$2$x_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$core$triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -13751,27 +13642,27 @@ module raster_top$front$core$triangle_setup$div$stages$3(clock,enable,valid_in,p
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$front$core$triangle_setup$div$stages$3$valid_r valid_r(
+    raster_top$core$triangle_setup$div$stages$3$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$3$p_r p_r(
+    raster_top$core$triangle_setup$div$stages$3$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$3$x_r x_r(
+    raster_top$core$triangle_setup$div$stages$3$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$3$d_r d_r(
+    raster_top$core$triangle_setup$div$stages$3$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$3$neg_r neg_r(
+    raster_top$core$triangle_setup$div$stages$3$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -13871,10 +13762,10 @@ module raster_top$front$core$triangle_setup$div$stages$3(clock,enable,valid_in,p
         neg = neg_r$q;
     end
     
-endmodule // raster_top$front$core$triangle_setup$div$stages$3
+endmodule // raster_top$core$triangle_setup$div$stages$3
 
 
-module raster_top$front$core$triangle_setup$div$stages$3$d_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$3$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -13890,10 +13781,10 @@ module raster_top$front$core$triangle_setup$div$stages$3$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$3$d_r
+endmodule // raster_top$core$triangle_setup$div$stages$3$d_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$3$neg_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$3$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13909,10 +13800,10 @@ module raster_top$front$core$triangle_setup$div$stages$3$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$3$neg_r
+endmodule // raster_top$core$triangle_setup$div$stages$3$neg_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$3$p_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$3$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -13928,10 +13819,10 @@ module raster_top$front$core$triangle_setup$div$stages$3$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$3$p_r
+endmodule // raster_top$core$triangle_setup$div$stages$3$p_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$3$valid_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$3$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13947,10 +13838,10 @@ module raster_top$front$core$triangle_setup$div$stages$3$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$3$valid_r
+endmodule // raster_top$core$triangle_setup$div$stages$3$valid_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$3$x_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$3$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -13966,10 +13857,10 @@ module raster_top$front$core$triangle_setup$div$stages$3$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$3$x_r
+endmodule // raster_top$core$triangle_setup$div$stages$3$x_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$core$triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -14032,27 +13923,27 @@ module raster_top$front$core$triangle_setup$div$stages$4(clock,enable,valid_in,p
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$front$core$triangle_setup$div$stages$4$valid_r valid_r(
+    raster_top$core$triangle_setup$div$stages$4$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$4$p_r p_r(
+    raster_top$core$triangle_setup$div$stages$4$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$4$x_r x_r(
+    raster_top$core$triangle_setup$div$stages$4$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$4$d_r d_r(
+    raster_top$core$triangle_setup$div$stages$4$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$front$core$triangle_setup$div$stages$4$neg_r neg_r(
+    raster_top$core$triangle_setup$div$stages$4$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -14152,10 +14043,10 @@ module raster_top$front$core$triangle_setup$div$stages$4(clock,enable,valid_in,p
         neg = neg_r$q;
     end
     
-endmodule // raster_top$front$core$triangle_setup$div$stages$4
+endmodule // raster_top$core$triangle_setup$div$stages$4
 
 
-module raster_top$front$core$triangle_setup$div$stages$4$d_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$4$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -14171,10 +14062,10 @@ module raster_top$front$core$triangle_setup$div$stages$4$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$4$d_r
+endmodule // raster_top$core$triangle_setup$div$stages$4$d_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$4$neg_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$4$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -14190,10 +14081,10 @@ module raster_top$front$core$triangle_setup$div$stages$4$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$4$neg_r
+endmodule // raster_top$core$triangle_setup$div$stages$4$neg_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$4$p_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$4$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -14209,10 +14100,10 @@ module raster_top$front$core$triangle_setup$div$stages$4$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$4$p_r
+endmodule // raster_top$core$triangle_setup$div$stages$4$p_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$4$valid_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$4$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -14228,10 +14119,10 @@ module raster_top$front$core$triangle_setup$div$stages$4$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$4$valid_r
+endmodule // raster_top$core$triangle_setup$div$stages$4$valid_r
 
 
-module raster_top$front$core$triangle_setup$div$stages$4$x_r(d,q,clock);
+module raster_top$core$triangle_setup$div$stages$4$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -14247,10 +14138,10 @@ module raster_top$front$core$triangle_setup$div$stages$4$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$div$stages$4$x_r
+endmodule // raster_top$core$triangle_setup$div$stages$4$x_r
 
 
-module raster_top$front$core$triangle_setup$exp(d,q,clock);
+module raster_top$core$triangle_setup$exp(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -14266,10 +14157,10 @@ module raster_top$front$core$triangle_setup$exp(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$exp
+endmodule // raster_top$core$triangle_setup$exp
 
 
-module raster_top$front$core$triangle_setup$gx$0(d,q,clock);
+module raster_top$core$triangle_setup$gx$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -14285,10 +14176,10 @@ module raster_top$front$core$triangle_setup$gx$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$gx$0
+endmodule // raster_top$core$triangle_setup$gx$0
 
 
-module raster_top$front$core$triangle_setup$gx$1(d,q,clock);
+module raster_top$core$triangle_setup$gx$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -14304,10 +14195,10 @@ module raster_top$front$core$triangle_setup$gx$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$gx$1
+endmodule // raster_top$core$triangle_setup$gx$1
 
 
-module raster_top$front$core$triangle_setup$gx$2(d,q,clock);
+module raster_top$core$triangle_setup$gx$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -14323,10 +14214,10 @@ module raster_top$front$core$triangle_setup$gx$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$gx$2
+endmodule // raster_top$core$triangle_setup$gx$2
 
 
-module raster_top$front$core$triangle_setup$gx$3(d,q,clock);
+module raster_top$core$triangle_setup$gx$3(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -14342,10 +14233,10 @@ module raster_top$front$core$triangle_setup$gx$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$gx$3
+endmodule // raster_top$core$triangle_setup$gx$3
 
 
-module raster_top$front$core$triangle_setup$gy$0(d,q,clock);
+module raster_top$core$triangle_setup$gy$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -14361,10 +14252,10 @@ module raster_top$front$core$triangle_setup$gy$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$gy$0
+endmodule // raster_top$core$triangle_setup$gy$0
 
 
-module raster_top$front$core$triangle_setup$gy$1(d,q,clock);
+module raster_top$core$triangle_setup$gy$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -14380,10 +14271,10 @@ module raster_top$front$core$triangle_setup$gy$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$gy$1
+endmodule // raster_top$core$triangle_setup$gy$1
 
 
-module raster_top$front$core$triangle_setup$gy$2(d,q,clock);
+module raster_top$core$triangle_setup$gy$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -14399,10 +14290,10 @@ module raster_top$front$core$triangle_setup$gy$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$gy$2
+endmodule // raster_top$core$triangle_setup$gy$2
 
 
-module raster_top$front$core$triangle_setup$gy$3(d,q,clock);
+module raster_top$core$triangle_setup$gy$3(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -14418,10 +14309,10 @@ module raster_top$front$core$triangle_setup$gy$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$gy$3
+endmodule // raster_top$core$triangle_setup$gy$3
 
 
-module raster_top$front$core$triangle_setup$inc0$0(d,q,clock);
+module raster_top$core$triangle_setup$inc0$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14437,10 +14328,10 @@ module raster_top$front$core$triangle_setup$inc0$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc0$0
+endmodule // raster_top$core$triangle_setup$inc0$0
 
 
-module raster_top$front$core$triangle_setup$inc0$1(d,q,clock);
+module raster_top$core$triangle_setup$inc0$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14456,10 +14347,10 @@ module raster_top$front$core$triangle_setup$inc0$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc0$1
+endmodule // raster_top$core$triangle_setup$inc0$1
 
 
-module raster_top$front$core$triangle_setup$inc0$10(d,q,clock);
+module raster_top$core$triangle_setup$inc0$10(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14475,10 +14366,10 @@ module raster_top$front$core$triangle_setup$inc0$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc0$10
+endmodule // raster_top$core$triangle_setup$inc0$10
 
 
-module raster_top$front$core$triangle_setup$inc0$11(d,q,clock);
+module raster_top$core$triangle_setup$inc0$11(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14494,10 +14385,10 @@ module raster_top$front$core$triangle_setup$inc0$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc0$11
+endmodule // raster_top$core$triangle_setup$inc0$11
 
 
-module raster_top$front$core$triangle_setup$inc0$2(d,q,clock);
+module raster_top$core$triangle_setup$inc0$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14513,10 +14404,10 @@ module raster_top$front$core$triangle_setup$inc0$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc0$2
+endmodule // raster_top$core$triangle_setup$inc0$2
 
 
-module raster_top$front$core$triangle_setup$inc0$3(d,q,clock);
+module raster_top$core$triangle_setup$inc0$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14532,10 +14423,10 @@ module raster_top$front$core$triangle_setup$inc0$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc0$3
+endmodule // raster_top$core$triangle_setup$inc0$3
 
 
-module raster_top$front$core$triangle_setup$inc0$4(d,q,clock);
+module raster_top$core$triangle_setup$inc0$4(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14551,10 +14442,10 @@ module raster_top$front$core$triangle_setup$inc0$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc0$4
+endmodule // raster_top$core$triangle_setup$inc0$4
 
 
-module raster_top$front$core$triangle_setup$inc0$5(d,q,clock);
+module raster_top$core$triangle_setup$inc0$5(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14570,10 +14461,10 @@ module raster_top$front$core$triangle_setup$inc0$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc0$5
+endmodule // raster_top$core$triangle_setup$inc0$5
 
 
-module raster_top$front$core$triangle_setup$inc0$6(d,q,clock);
+module raster_top$core$triangle_setup$inc0$6(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14589,10 +14480,10 @@ module raster_top$front$core$triangle_setup$inc0$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc0$6
+endmodule // raster_top$core$triangle_setup$inc0$6
 
 
-module raster_top$front$core$triangle_setup$inc0$7(d,q,clock);
+module raster_top$core$triangle_setup$inc0$7(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14608,10 +14499,10 @@ module raster_top$front$core$triangle_setup$inc0$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc0$7
+endmodule // raster_top$core$triangle_setup$inc0$7
 
 
-module raster_top$front$core$triangle_setup$inc0$8(d,q,clock);
+module raster_top$core$triangle_setup$inc0$8(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14627,10 +14518,10 @@ module raster_top$front$core$triangle_setup$inc0$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc0$8
+endmodule // raster_top$core$triangle_setup$inc0$8
 
 
-module raster_top$front$core$triangle_setup$inc0$9(d,q,clock);
+module raster_top$core$triangle_setup$inc0$9(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14646,10 +14537,10 @@ module raster_top$front$core$triangle_setup$inc0$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc0$9
+endmodule // raster_top$core$triangle_setup$inc0$9
 
 
-module raster_top$front$core$triangle_setup$inc1$0(d,q,clock);
+module raster_top$core$triangle_setup$inc1$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14665,10 +14556,10 @@ module raster_top$front$core$triangle_setup$inc1$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc1$0
+endmodule // raster_top$core$triangle_setup$inc1$0
 
 
-module raster_top$front$core$triangle_setup$inc1$1(d,q,clock);
+module raster_top$core$triangle_setup$inc1$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14684,10 +14575,10 @@ module raster_top$front$core$triangle_setup$inc1$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc1$1
+endmodule // raster_top$core$triangle_setup$inc1$1
 
 
-module raster_top$front$core$triangle_setup$inc1$10(d,q,clock);
+module raster_top$core$triangle_setup$inc1$10(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14703,10 +14594,10 @@ module raster_top$front$core$triangle_setup$inc1$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc1$10
+endmodule // raster_top$core$triangle_setup$inc1$10
 
 
-module raster_top$front$core$triangle_setup$inc1$11(d,q,clock);
+module raster_top$core$triangle_setup$inc1$11(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14722,10 +14613,10 @@ module raster_top$front$core$triangle_setup$inc1$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc1$11
+endmodule // raster_top$core$triangle_setup$inc1$11
 
 
-module raster_top$front$core$triangle_setup$inc1$2(d,q,clock);
+module raster_top$core$triangle_setup$inc1$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14741,10 +14632,10 @@ module raster_top$front$core$triangle_setup$inc1$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc1$2
+endmodule // raster_top$core$triangle_setup$inc1$2
 
 
-module raster_top$front$core$triangle_setup$inc1$3(d,q,clock);
+module raster_top$core$triangle_setup$inc1$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14760,10 +14651,10 @@ module raster_top$front$core$triangle_setup$inc1$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc1$3
+endmodule // raster_top$core$triangle_setup$inc1$3
 
 
-module raster_top$front$core$triangle_setup$inc1$4(d,q,clock);
+module raster_top$core$triangle_setup$inc1$4(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14779,10 +14670,10 @@ module raster_top$front$core$triangle_setup$inc1$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc1$4
+endmodule // raster_top$core$triangle_setup$inc1$4
 
 
-module raster_top$front$core$triangle_setup$inc1$5(d,q,clock);
+module raster_top$core$triangle_setup$inc1$5(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14798,10 +14689,10 @@ module raster_top$front$core$triangle_setup$inc1$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc1$5
+endmodule // raster_top$core$triangle_setup$inc1$5
 
 
-module raster_top$front$core$triangle_setup$inc1$6(d,q,clock);
+module raster_top$core$triangle_setup$inc1$6(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14817,10 +14708,10 @@ module raster_top$front$core$triangle_setup$inc1$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc1$6
+endmodule // raster_top$core$triangle_setup$inc1$6
 
 
-module raster_top$front$core$triangle_setup$inc1$7(d,q,clock);
+module raster_top$core$triangle_setup$inc1$7(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14836,10 +14727,10 @@ module raster_top$front$core$triangle_setup$inc1$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc1$7
+endmodule // raster_top$core$triangle_setup$inc1$7
 
 
-module raster_top$front$core$triangle_setup$inc1$8(d,q,clock);
+module raster_top$core$triangle_setup$inc1$8(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14855,10 +14746,10 @@ module raster_top$front$core$triangle_setup$inc1$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc1$8
+endmodule // raster_top$core$triangle_setup$inc1$8
 
 
-module raster_top$front$core$triangle_setup$inc1$9(d,q,clock);
+module raster_top$core$triangle_setup$inc1$9(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -14874,10 +14765,10 @@ module raster_top$front$core$triangle_setup$inc1$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$inc1$9
+endmodule // raster_top$core$triangle_setup$inc1$9
 
 
-module raster_top$front$core$triangle_setup$mant(d,q,clock);
+module raster_top$core$triangle_setup$mant(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -14893,10 +14784,10 @@ module raster_top$front$core$triangle_setup$mant(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$mant
+endmodule // raster_top$core$triangle_setup$mant
 
 
-module raster_top$front$core$triangle_setup$mul$0(a,b,p);
+module raster_top$core$triangle_setup$mul$0(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -14907,10 +14798,10 @@ module raster_top$front$core$triangle_setup$mul$0(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$front$core$triangle_setup$mul$0
+endmodule // raster_top$core$triangle_setup$mul$0
 
 
-module raster_top$front$core$triangle_setup$mul$1(a,b,p);
+module raster_top$core$triangle_setup$mul$1(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -14921,10 +14812,10 @@ module raster_top$front$core$triangle_setup$mul$1(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$front$core$triangle_setup$mul$1
+endmodule // raster_top$core$triangle_setup$mul$1
 
 
-module raster_top$front$core$triangle_setup$mul$2(a,b,p);
+module raster_top$core$triangle_setup$mul$2(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -14935,10 +14826,10 @@ module raster_top$front$core$triangle_setup$mul$2(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$front$core$triangle_setup$mul$2
+endmodule // raster_top$core$triangle_setup$mul$2
 
 
-module raster_top$front$core$triangle_setup$mul$3(a,b,p);
+module raster_top$core$triangle_setup$mul$3(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -14949,10 +14840,10 @@ module raster_top$front$core$triangle_setup$mul$3(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$front$core$triangle_setup$mul$3
+endmodule // raster_top$core$triangle_setup$mul$3
 
 
-module raster_top$front$core$triangle_setup$mul$4(a,b,p);
+module raster_top$core$triangle_setup$mul$4(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -14963,10 +14854,10 @@ module raster_top$front$core$triangle_setup$mul$4(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$front$core$triangle_setup$mul$4
+endmodule // raster_top$core$triangle_setup$mul$4
 
 
-module raster_top$front$core$triangle_setup$mul$5(a,b,p);
+module raster_top$core$triangle_setup$mul$5(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -14977,10 +14868,10 @@ module raster_top$front$core$triangle_setup$mul$5(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$front$core$triangle_setup$mul$5
+endmodule // raster_top$core$triangle_setup$mul$5
 
 
-module raster_top$front$core$triangle_setup$mul$6(a,b,p);
+module raster_top$core$triangle_setup$mul$6(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -14991,10 +14882,10 @@ module raster_top$front$core$triangle_setup$mul$6(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$front$core$triangle_setup$mul$6
+endmodule // raster_top$core$triangle_setup$mul$6
 
 
-module raster_top$front$core$triangle_setup$num$0(d,q,clock);
+module raster_top$core$triangle_setup$num$0(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -15010,10 +14901,10 @@ module raster_top$front$core$triangle_setup$num$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$num$0
+endmodule // raster_top$core$triangle_setup$num$0
 
 
-module raster_top$front$core$triangle_setup$num$1(d,q,clock);
+module raster_top$core$triangle_setup$num$1(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -15029,10 +14920,10 @@ module raster_top$front$core$triangle_setup$num$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$num$1
+endmodule // raster_top$core$triangle_setup$num$1
 
 
-module raster_top$front$core$triangle_setup$num$2(d,q,clock);
+module raster_top$core$triangle_setup$num$2(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -15048,10 +14939,10 @@ module raster_top$front$core$triangle_setup$num$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$num$2
+endmodule // raster_top$core$triangle_setup$num$2
 
 
-module raster_top$front$core$triangle_setup$p$0(d,q,clock);
+module raster_top$core$triangle_setup$p$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -15067,10 +14958,10 @@ module raster_top$front$core$triangle_setup$p$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$p$0
+endmodule // raster_top$core$triangle_setup$p$0
 
 
-module raster_top$front$core$triangle_setup$p$1(d,q,clock);
+module raster_top$core$triangle_setup$p$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -15086,10 +14977,10 @@ module raster_top$front$core$triangle_setup$p$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$p$1
+endmodule // raster_top$core$triangle_setup$p$1
 
 
-module raster_top$front$core$triangle_setup$p$2(d,q,clock);
+module raster_top$core$triangle_setup$p$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -15105,10 +14996,10 @@ module raster_top$front$core$triangle_setup$p$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$p$2
+endmodule // raster_top$core$triangle_setup$p$2
 
 
-module raster_top$front$core$triangle_setup$p$3(d,q,clock);
+module raster_top$core$triangle_setup$p$3(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -15124,10 +15015,10 @@ module raster_top$front$core$triangle_setup$p$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$p$3
+endmodule // raster_top$core$triangle_setup$p$3
 
 
-module raster_top$front$core$triangle_setup$plane$0(d,q,clock);
+module raster_top$core$triangle_setup$plane$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15143,10 +15034,10 @@ module raster_top$front$core$triangle_setup$plane$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$plane$0
+endmodule // raster_top$core$triangle_setup$plane$0
 
 
-module raster_top$front$core$triangle_setup$plane$1(d,q,clock);
+module raster_top$core$triangle_setup$plane$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15162,10 +15053,10 @@ module raster_top$front$core$triangle_setup$plane$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$plane$1
+endmodule // raster_top$core$triangle_setup$plane$1
 
 
-module raster_top$front$core$triangle_setup$plane$10(d,q,clock);
+module raster_top$core$triangle_setup$plane$10(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15181,10 +15072,10 @@ module raster_top$front$core$triangle_setup$plane$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$plane$10
+endmodule // raster_top$core$triangle_setup$plane$10
 
 
-module raster_top$front$core$triangle_setup$plane$11(d,q,clock);
+module raster_top$core$triangle_setup$plane$11(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15200,10 +15091,10 @@ module raster_top$front$core$triangle_setup$plane$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$plane$11
+endmodule // raster_top$core$triangle_setup$plane$11
 
 
-module raster_top$front$core$triangle_setup$plane$2(d,q,clock);
+module raster_top$core$triangle_setup$plane$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15219,10 +15110,10 @@ module raster_top$front$core$triangle_setup$plane$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$plane$2
+endmodule // raster_top$core$triangle_setup$plane$2
 
 
-module raster_top$front$core$triangle_setup$plane$3(d,q,clock);
+module raster_top$core$triangle_setup$plane$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15238,10 +15129,10 @@ module raster_top$front$core$triangle_setup$plane$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$plane$3
+endmodule // raster_top$core$triangle_setup$plane$3
 
 
-module raster_top$front$core$triangle_setup$plane$4(d,q,clock);
+module raster_top$core$triangle_setup$plane$4(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15257,10 +15148,10 @@ module raster_top$front$core$triangle_setup$plane$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$plane$4
+endmodule // raster_top$core$triangle_setup$plane$4
 
 
-module raster_top$front$core$triangle_setup$plane$5(d,q,clock);
+module raster_top$core$triangle_setup$plane$5(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15276,10 +15167,10 @@ module raster_top$front$core$triangle_setup$plane$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$plane$5
+endmodule // raster_top$core$triangle_setup$plane$5
 
 
-module raster_top$front$core$triangle_setup$plane$6(d,q,clock);
+module raster_top$core$triangle_setup$plane$6(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15295,10 +15186,10 @@ module raster_top$front$core$triangle_setup$plane$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$plane$6
+endmodule // raster_top$core$triangle_setup$plane$6
 
 
-module raster_top$front$core$triangle_setup$plane$7(d,q,clock);
+module raster_top$core$triangle_setup$plane$7(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15314,10 +15205,10 @@ module raster_top$front$core$triangle_setup$plane$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$plane$7
+endmodule // raster_top$core$triangle_setup$plane$7
 
 
-module raster_top$front$core$triangle_setup$plane$8(d,q,clock);
+module raster_top$core$triangle_setup$plane$8(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15333,10 +15224,10 @@ module raster_top$front$core$triangle_setup$plane$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$plane$8
+endmodule // raster_top$core$triangle_setup$plane$8
 
 
-module raster_top$front$core$triangle_setup$plane$9(d,q,clock);
+module raster_top$core$triangle_setup$plane$9(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -15352,10 +15243,10 @@ module raster_top$front$core$triangle_setup$plane$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$plane$9
+endmodule // raster_top$core$triangle_setup$plane$9
 
 
-module raster_top$front$core$triangle_setup$q$0(d,q,clock);
+module raster_top$core$triangle_setup$q$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -15371,10 +15262,10 @@ module raster_top$front$core$triangle_setup$q$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$q$0
+endmodule // raster_top$core$triangle_setup$q$0
 
 
-module raster_top$front$core$triangle_setup$q$1(d,q,clock);
+module raster_top$core$triangle_setup$q$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -15390,10 +15281,10 @@ module raster_top$front$core$triangle_setup$q$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$q$1
+endmodule // raster_top$core$triangle_setup$q$1
 
 
-module raster_top$front$core$triangle_setup$q$2(d,q,clock);
+module raster_top$core$triangle_setup$q$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -15409,10 +15300,10 @@ module raster_top$front$core$triangle_setup$q$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$q$2
+endmodule // raster_top$core$triangle_setup$q$2
 
 
-module raster_top$front$core$triangle_setup$r$0(d,q,clock);
+module raster_top$core$triangle_setup$r$0(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -15428,10 +15319,10 @@ module raster_top$front$core$triangle_setup$r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$r$0
+endmodule // raster_top$core$triangle_setup$r$0
 
 
-module raster_top$front$core$triangle_setup$r$1(d,q,clock);
+module raster_top$core$triangle_setup$r$1(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -15447,10 +15338,10 @@ module raster_top$front$core$triangle_setup$r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$r$1
+endmodule // raster_top$core$triangle_setup$r$1
 
 
-module raster_top$front$core$triangle_setup$r$2(d,q,clock);
+module raster_top$core$triangle_setup$r$2(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -15466,10 +15357,10 @@ module raster_top$front$core$triangle_setup$r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$r$2
+endmodule // raster_top$core$triangle_setup$r$2
 
 
-module raster_top$front$core$triangle_setup$rho$0(d,q,clock);
+module raster_top$core$triangle_setup$rho$0(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -15485,10 +15376,10 @@ module raster_top$front$core$triangle_setup$rho$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$rho$0
+endmodule // raster_top$core$triangle_setup$rho$0
 
 
-module raster_top$front$core$triangle_setup$rho$1(d,q,clock);
+module raster_top$core$triangle_setup$rho$1(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -15504,10 +15395,10 @@ module raster_top$front$core$triangle_setup$rho$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$rho$1
+endmodule // raster_top$core$triangle_setup$rho$1
 
 
-module raster_top$front$core$triangle_setup$rho$2(d,q,clock);
+module raster_top$core$triangle_setup$rho$2(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -15523,10 +15414,10 @@ module raster_top$front$core$triangle_setup$rho$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$rho$2
+endmodule // raster_top$core$triangle_setup$rho$2
 
 
-module raster_top$front$core$triangle_setup$t(d,q,clock);
+module raster_top$core$triangle_setup$t(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -15542,10 +15433,10 @@ module raster_top$front$core$triangle_setup$t(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$t
+endmodule // raster_top$core$triangle_setup$t
 
 
-module raster_top$front$core$triangle_setup$vc$0(d,q,clock);
+module raster_top$core$triangle_setup$vc$0(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -15561,10 +15452,10 @@ module raster_top$front$core$triangle_setup$vc$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vc$0
+endmodule // raster_top$core$triangle_setup$vc$0
 
 
-module raster_top$front$core$triangle_setup$vc$1(d,q,clock);
+module raster_top$core$triangle_setup$vc$1(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -15580,10 +15471,10 @@ module raster_top$front$core$triangle_setup$vc$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vc$1
+endmodule // raster_top$core$triangle_setup$vc$1
 
 
-module raster_top$front$core$triangle_setup$vc$2(d,q,clock);
+module raster_top$core$triangle_setup$vc$2(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -15599,10 +15490,10 @@ module raster_top$front$core$triangle_setup$vc$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vc$2
+endmodule // raster_top$core$triangle_setup$vc$2
 
 
-module raster_top$front$core$triangle_setup$vc$3(d,q,clock);
+module raster_top$core$triangle_setup$vc$3(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -15618,10 +15509,10 @@ module raster_top$front$core$triangle_setup$vc$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vc$3
+endmodule // raster_top$core$triangle_setup$vc$3
 
 
-module raster_top$front$core$triangle_setup$vc$4(d,q,clock);
+module raster_top$core$triangle_setup$vc$4(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -15637,10 +15528,10 @@ module raster_top$front$core$triangle_setup$vc$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vc$4
+endmodule // raster_top$core$triangle_setup$vc$4
 
 
-module raster_top$front$core$triangle_setup$vc$5(d,q,clock);
+module raster_top$core$triangle_setup$vc$5(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -15656,10 +15547,10 @@ module raster_top$front$core$triangle_setup$vc$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vc$5
+endmodule // raster_top$core$triangle_setup$vc$5
 
 
-module raster_top$front$core$triangle_setup$vc$6(d,q,clock);
+module raster_top$core$triangle_setup$vc$6(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -15675,10 +15566,10 @@ module raster_top$front$core$triangle_setup$vc$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vc$6
+endmodule // raster_top$core$triangle_setup$vc$6
 
 
-module raster_top$front$core$triangle_setup$vc$7(d,q,clock);
+module raster_top$core$triangle_setup$vc$7(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -15694,10 +15585,10 @@ module raster_top$front$core$triangle_setup$vc$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vc$7
+endmodule // raster_top$core$triangle_setup$vc$7
 
 
-module raster_top$front$core$triangle_setup$vc$8(d,q,clock);
+module raster_top$core$triangle_setup$vc$8(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -15713,10 +15604,10 @@ module raster_top$front$core$triangle_setup$vc$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vc$8
+endmodule // raster_top$core$triangle_setup$vc$8
 
 
-module raster_top$front$core$triangle_setup$vx$0(d,q,clock);
+module raster_top$core$triangle_setup$vx$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -15732,10 +15623,10 @@ module raster_top$front$core$triangle_setup$vx$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vx$0
+endmodule // raster_top$core$triangle_setup$vx$0
 
 
-module raster_top$front$core$triangle_setup$vx$1(d,q,clock);
+module raster_top$core$triangle_setup$vx$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -15751,10 +15642,10 @@ module raster_top$front$core$triangle_setup$vx$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vx$1
+endmodule // raster_top$core$triangle_setup$vx$1
 
 
-module raster_top$front$core$triangle_setup$vx$2(d,q,clock);
+module raster_top$core$triangle_setup$vx$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -15770,10 +15661,10 @@ module raster_top$front$core$triangle_setup$vx$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vx$2
+endmodule // raster_top$core$triangle_setup$vx$2
 
 
-module raster_top$front$core$triangle_setup$vy$0(d,q,clock);
+module raster_top$core$triangle_setup$vy$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -15789,10 +15680,10 @@ module raster_top$front$core$triangle_setup$vy$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vy$0
+endmodule // raster_top$core$triangle_setup$vy$0
 
 
-module raster_top$front$core$triangle_setup$vy$1(d,q,clock);
+module raster_top$core$triangle_setup$vy$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -15808,10 +15699,10 @@ module raster_top$front$core$triangle_setup$vy$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vy$1
+endmodule // raster_top$core$triangle_setup$vy$1
 
 
-module raster_top$front$core$triangle_setup$vy$2(d,q,clock);
+module raster_top$core$triangle_setup$vy$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -15827,10 +15718,10 @@ module raster_top$front$core$triangle_setup$vy$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vy$2
+endmodule // raster_top$core$triangle_setup$vy$2
 
 
-module raster_top$front$core$triangle_setup$vz$0(d,q,clock);
+module raster_top$core$triangle_setup$vz$0(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -15846,10 +15737,10 @@ module raster_top$front$core$triangle_setup$vz$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vz$0
+endmodule // raster_top$core$triangle_setup$vz$0
 
 
-module raster_top$front$core$triangle_setup$vz$1(d,q,clock);
+module raster_top$core$triangle_setup$vz$1(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -15865,10 +15756,10 @@ module raster_top$front$core$triangle_setup$vz$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vz$1
+endmodule // raster_top$core$triangle_setup$vz$1
 
 
-module raster_top$front$core$triangle_setup$vz$2(d,q,clock);
+module raster_top$core$triangle_setup$vz$2(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -15884,10 +15775,10 @@ module raster_top$front$core$triangle_setup$vz$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$vz$2
+endmodule // raster_top$core$triangle_setup$vz$2
 
 
-module raster_top$front$core$triangle_setup$x$0(d,q,clock);
+module raster_top$core$triangle_setup$x$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -15903,10 +15794,10 @@ module raster_top$front$core$triangle_setup$x$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$x$0
+endmodule // raster_top$core$triangle_setup$x$0
 
 
-module raster_top$front$core$triangle_setup$x$1(d,q,clock);
+module raster_top$core$triangle_setup$x$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -15922,10 +15813,10 @@ module raster_top$front$core$triangle_setup$x$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$x$1
+endmodule // raster_top$core$triangle_setup$x$1
 
 
-module raster_top$front$core$triangle_setup$x$2(d,q,clock);
+module raster_top$core$triangle_setup$x$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -15941,10 +15832,10 @@ module raster_top$front$core$triangle_setup$x$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$core$triangle_setup$x$2
+endmodule // raster_top$core$triangle_setup$x$2
 
 
-module raster_top$front$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,out$crosses,verdict$valid,verdict$code,verdict$outside);
+module raster_top$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,out$crosses,verdict$valid,verdict$code,verdict$outside);
     
     // Module arguments
     input wire  clock;
@@ -16165,137 +16056,137 @@ module raster_top$front$cull_sort(clock,width,height,cull_back,inp$valid,inp$rea
     reg  leave;
     
     // Sub module instances
-    raster_top$front$cull_sort$area_mul$0 area_mul$0(
+    raster_top$cull_sort$area_mul$0 area_mul$0(
         .a(area_mul$0$a),
         .b(area_mul$0$b),
         .p(area_mul$0$p)
     );
-    raster_top$front$cull_sort$area_mul$1 area_mul$1(
+    raster_top$cull_sort$area_mul$1 area_mul$1(
         .a(area_mul$1$a),
         .b(area_mul$1$b),
         .p(area_mul$1$p)
     );
-    raster_top$front$cull_sort$sx$0 sx$0(
+    raster_top$cull_sort$sx$0 sx$0(
         .d(sx$0$d),
         .q(sx$0$q),
         .clock(sx$0$clock)
     );
-    raster_top$front$cull_sort$sx$1 sx$1(
+    raster_top$cull_sort$sx$1 sx$1(
         .d(sx$1$d),
         .q(sx$1$q),
         .clock(sx$1$clock)
     );
-    raster_top$front$cull_sort$sx$2 sx$2(
+    raster_top$cull_sort$sx$2 sx$2(
         .d(sx$2$d),
         .q(sx$2$q),
         .clock(sx$2$clock)
     );
-    raster_top$front$cull_sort$sy$0 sy$0(
+    raster_top$cull_sort$sy$0 sy$0(
         .d(sy$0$d),
         .q(sy$0$q),
         .clock(sy$0$clock)
     );
-    raster_top$front$cull_sort$sy$1 sy$1(
+    raster_top$cull_sort$sy$1 sy$1(
         .d(sy$1$d),
         .q(sy$1$q),
         .clock(sy$1$clock)
     );
-    raster_top$front$cull_sort$sy$2 sy$2(
+    raster_top$cull_sort$sy$2 sy$2(
         .d(sy$2$d),
         .q(sy$2$q),
         .clock(sy$2$clock)
     );
-    raster_top$front$cull_sort$sz$0 sz$0(
+    raster_top$cull_sort$sz$0 sz$0(
         .d(sz$0$d),
         .q(sz$0$q),
         .clock(sz$0$clock)
     );
-    raster_top$front$cull_sort$sz$1 sz$1(
+    raster_top$cull_sort$sz$1 sz$1(
         .d(sz$1$d),
         .q(sz$1$q),
         .clock(sz$1$clock)
     );
-    raster_top$front$cull_sort$sz$2 sz$2(
+    raster_top$cull_sort$sz$2 sz$2(
         .d(sz$2$d),
         .q(sz$2$q),
         .clock(sz$2$clock)
     );
-    raster_top$front$cull_sort$sc$0 sc$0(
+    raster_top$cull_sort$sc$0 sc$0(
         .d(sc$0$d),
         .q(sc$0$q),
         .clock(sc$0$clock)
     );
-    raster_top$front$cull_sort$sc$1 sc$1(
+    raster_top$cull_sort$sc$1 sc$1(
         .d(sc$1$d),
         .q(sc$1$q),
         .clock(sc$1$clock)
     );
-    raster_top$front$cull_sort$sc$2 sc$2(
+    raster_top$cull_sort$sc$2 sc$2(
         .d(sc$2$d),
         .q(sc$2$q),
         .clock(sc$2$clock)
     );
-    raster_top$front$cull_sort$sc$3 sc$3(
+    raster_top$cull_sort$sc$3 sc$3(
         .d(sc$3$d),
         .q(sc$3$q),
         .clock(sc$3$clock)
     );
-    raster_top$front$cull_sort$sc$4 sc$4(
+    raster_top$cull_sort$sc$4 sc$4(
         .d(sc$4$d),
         .q(sc$4$q),
         .clock(sc$4$clock)
     );
-    raster_top$front$cull_sort$sc$5 sc$5(
+    raster_top$cull_sort$sc$5 sc$5(
         .d(sc$5$d),
         .q(sc$5$q),
         .clock(sc$5$clock)
     );
-    raster_top$front$cull_sort$sc$6 sc$6(
+    raster_top$cull_sort$sc$6 sc$6(
         .d(sc$6$d),
         .q(sc$6$q),
         .clock(sc$6$clock)
     );
-    raster_top$front$cull_sort$sc$7 sc$7(
+    raster_top$cull_sort$sc$7 sc$7(
         .d(sc$7$d),
         .q(sc$7$q),
         .clock(sc$7$clock)
     );
-    raster_top$front$cull_sort$sc$8 sc$8(
+    raster_top$cull_sort$sc$8 sc$8(
         .d(sc$8$d),
         .q(sc$8$q),
         .clock(sc$8$clock)
     );
-    raster_top$front$cull_sort$siw$0 siw$0(
+    raster_top$cull_sort$siw$0 siw$0(
         .d(siw$0$d),
         .q(siw$0$q),
         .clock(siw$0$clock)
     );
-    raster_top$front$cull_sort$siw$1 siw$1(
+    raster_top$cull_sort$siw$1 siw$1(
         .d(siw$1$d),
         .q(siw$1$q),
         .clock(siw$1$clock)
     );
-    raster_top$front$cull_sort$siw$2 siw$2(
+    raster_top$cull_sort$siw$2 siw$2(
         .d(siw$2$d),
         .q(siw$2$q),
         .clock(siw$2$clock)
     );
-    raster_top$front$cull_sort$crosses crosses(
+    raster_top$cull_sort$crosses crosses(
         .d(crosses$d),
         .q(crosses$q),
         .clock(crosses$clock)
     );
-    raster_top$front$cull_sort$code_r code_r(
+    raster_top$cull_sort$code_r code_r(
         .d(code_r$d),
         .q(code_r$q),
         .clock(code_r$clock)
     );
-    raster_top$front$cull_sort$outside_r outside_r(
+    raster_top$cull_sort$outside_r outside_r(
         .d(outside_r$d),
         .q(outside_r$q),
         .clock(outside_r$clock)
     );
-    raster_top$front$cull_sort$full full(
+    raster_top$cull_sort$full full(
         .d(full$d),
         .q(full$q),
         .clock(full$clock)
@@ -16549,10 +16440,10 @@ module raster_top$front$cull_sort(clock,width,height,cull_back,inp$valid,inp$rea
         out$v2_iw = siw$2$q;
     end
     
-endmodule // raster_top$front$cull_sort
+endmodule // raster_top$cull_sort
 
 
-module raster_top$front$cull_sort$area_mul$0(a,b,p);
+module raster_top$cull_sort$area_mul$0(a,b,p);
     
     // Module arguments
     input wire  [16:0] a;
@@ -16563,10 +16454,10 @@ module raster_top$front$cull_sort$area_mul$0(a,b,p);
     // p = low 34 bits of a * b, both signed: a signed 34-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$front$cull_sort$area_mul$0
+endmodule // raster_top$cull_sort$area_mul$0
 
 
-module raster_top$front$cull_sort$area_mul$1(a,b,p);
+module raster_top$cull_sort$area_mul$1(a,b,p);
     
     // Module arguments
     input wire  [16:0] a;
@@ -16577,10 +16468,10 @@ module raster_top$front$cull_sort$area_mul$1(a,b,p);
     // p = low 34 bits of a * b, both signed: a signed 34-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$front$cull_sort$area_mul$1
+endmodule // raster_top$cull_sort$area_mul$1
 
 
-module raster_top$front$cull_sort$code_r(d,q,clock);
+module raster_top$cull_sort$code_r(d,q,clock);
     
     // Module arguments
     input wire  [1:0] d;
@@ -16596,10 +16487,10 @@ module raster_top$front$cull_sort$code_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$code_r
+endmodule // raster_top$cull_sort$code_r
 
 
-module raster_top$front$cull_sort$crosses(d,q,clock);
+module raster_top$cull_sort$crosses(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -16615,10 +16506,10 @@ module raster_top$front$cull_sort$crosses(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$crosses
+endmodule // raster_top$cull_sort$crosses
 
 
-module raster_top$front$cull_sort$full(d,q,clock);
+module raster_top$cull_sort$full(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -16634,10 +16525,10 @@ module raster_top$front$cull_sort$full(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$full
+endmodule // raster_top$cull_sort$full
 
 
-module raster_top$front$cull_sort$outside_r(d,q,clock);
+module raster_top$cull_sort$outside_r(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -16653,10 +16544,10 @@ module raster_top$front$cull_sort$outside_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$outside_r
+endmodule // raster_top$cull_sort$outside_r
 
 
-module raster_top$front$cull_sort$sc$0(d,q,clock);
+module raster_top$cull_sort$sc$0(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16672,10 +16563,10 @@ module raster_top$front$cull_sort$sc$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sc$0
+endmodule // raster_top$cull_sort$sc$0
 
 
-module raster_top$front$cull_sort$sc$1(d,q,clock);
+module raster_top$cull_sort$sc$1(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16691,10 +16582,10 @@ module raster_top$front$cull_sort$sc$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sc$1
+endmodule // raster_top$cull_sort$sc$1
 
 
-module raster_top$front$cull_sort$sc$2(d,q,clock);
+module raster_top$cull_sort$sc$2(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16710,10 +16601,10 @@ module raster_top$front$cull_sort$sc$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sc$2
+endmodule // raster_top$cull_sort$sc$2
 
 
-module raster_top$front$cull_sort$sc$3(d,q,clock);
+module raster_top$cull_sort$sc$3(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16729,10 +16620,10 @@ module raster_top$front$cull_sort$sc$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sc$3
+endmodule // raster_top$cull_sort$sc$3
 
 
-module raster_top$front$cull_sort$sc$4(d,q,clock);
+module raster_top$cull_sort$sc$4(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16748,10 +16639,10 @@ module raster_top$front$cull_sort$sc$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sc$4
+endmodule // raster_top$cull_sort$sc$4
 
 
-module raster_top$front$cull_sort$sc$5(d,q,clock);
+module raster_top$cull_sort$sc$5(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16767,10 +16658,10 @@ module raster_top$front$cull_sort$sc$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sc$5
+endmodule // raster_top$cull_sort$sc$5
 
 
-module raster_top$front$cull_sort$sc$6(d,q,clock);
+module raster_top$cull_sort$sc$6(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16786,10 +16677,10 @@ module raster_top$front$cull_sort$sc$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sc$6
+endmodule // raster_top$cull_sort$sc$6
 
 
-module raster_top$front$cull_sort$sc$7(d,q,clock);
+module raster_top$cull_sort$sc$7(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16805,10 +16696,10 @@ module raster_top$front$cull_sort$sc$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sc$7
+endmodule // raster_top$cull_sort$sc$7
 
 
-module raster_top$front$cull_sort$sc$8(d,q,clock);
+module raster_top$cull_sort$sc$8(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16824,10 +16715,10 @@ module raster_top$front$cull_sort$sc$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sc$8
+endmodule // raster_top$cull_sort$sc$8
 
 
-module raster_top$front$cull_sort$siw$0(d,q,clock);
+module raster_top$cull_sort$siw$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16843,10 +16734,10 @@ module raster_top$front$cull_sort$siw$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$siw$0
+endmodule // raster_top$cull_sort$siw$0
 
 
-module raster_top$front$cull_sort$siw$1(d,q,clock);
+module raster_top$cull_sort$siw$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16862,10 +16753,10 @@ module raster_top$front$cull_sort$siw$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$siw$1
+endmodule // raster_top$cull_sort$siw$1
 
 
-module raster_top$front$cull_sort$siw$2(d,q,clock);
+module raster_top$cull_sort$siw$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16881,10 +16772,10 @@ module raster_top$front$cull_sort$siw$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$siw$2
+endmodule // raster_top$cull_sort$siw$2
 
 
-module raster_top$front$cull_sort$sx$0(d,q,clock);
+module raster_top$cull_sort$sx$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16900,10 +16791,10 @@ module raster_top$front$cull_sort$sx$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sx$0
+endmodule // raster_top$cull_sort$sx$0
 
 
-module raster_top$front$cull_sort$sx$1(d,q,clock);
+module raster_top$cull_sort$sx$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16919,10 +16810,10 @@ module raster_top$front$cull_sort$sx$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sx$1
+endmodule // raster_top$cull_sort$sx$1
 
 
-module raster_top$front$cull_sort$sx$2(d,q,clock);
+module raster_top$cull_sort$sx$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16938,10 +16829,10 @@ module raster_top$front$cull_sort$sx$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sx$2
+endmodule // raster_top$cull_sort$sx$2
 
 
-module raster_top$front$cull_sort$sy$0(d,q,clock);
+module raster_top$cull_sort$sy$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16957,10 +16848,10 @@ module raster_top$front$cull_sort$sy$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sy$0
+endmodule // raster_top$cull_sort$sy$0
 
 
-module raster_top$front$cull_sort$sy$1(d,q,clock);
+module raster_top$cull_sort$sy$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16976,10 +16867,10 @@ module raster_top$front$cull_sort$sy$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sy$1
+endmodule // raster_top$cull_sort$sy$1
 
 
-module raster_top$front$cull_sort$sy$2(d,q,clock);
+module raster_top$cull_sort$sy$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16995,10 +16886,10 @@ module raster_top$front$cull_sort$sy$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sy$2
+endmodule // raster_top$cull_sort$sy$2
 
 
-module raster_top$front$cull_sort$sz$0(d,q,clock);
+module raster_top$cull_sort$sz$0(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -17014,10 +16905,10 @@ module raster_top$front$cull_sort$sz$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sz$0
+endmodule // raster_top$cull_sort$sz$0
 
 
-module raster_top$front$cull_sort$sz$1(d,q,clock);
+module raster_top$cull_sort$sz$1(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -17033,10 +16924,10 @@ module raster_top$front$cull_sort$sz$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sz$1
+endmodule // raster_top$cull_sort$sz$1
 
 
-module raster_top$front$cull_sort$sz$2(d,q,clock);
+module raster_top$cull_sort$sz$2(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -17052,10 +16943,10 @@ module raster_top$front$cull_sort$sz$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$cull_sort$sz$2
+endmodule // raster_top$cull_sort$sz$2
 
 
-module raster_top$front$last_in(d,q,clock);
+module raster_top$last_in(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -17071,7 +16962,7 @@ module raster_top$front$last_in(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$front$last_in
+endmodule // raster_top$last_in
 
 
 module raster_top$pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,mem$ready,mem$rd_en,mem$rd_addr,mem$rd_z,mem$wr_en,mem$wr_addr,mem$wr_z,mem$wr_rgb,idle);
