@@ -18,6 +18,105 @@ use fx::{Fmt, Formats, Overflow, Rounding};
 pub const CLASS_MIN: u32 = 10;
 pub const CLASS_MAX: u32 = 12;
 
+/// Port and register widths of the scanline units at a build (`class`, formats): the one
+/// table the RTL reads its widths from (each build's `widths` module is
+/// `Widths::of(CLASS, &FORMATS)`) and the sweep's area model counts bits with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Widths {
+    /// Screen coordinates of a pixel on screen (x, y < 2^class): unsigned.
+    pub screen: usize,
+    /// Screen width and height (1 to 2^class): unsigned.
+    pub dim: usize,
+    /// Memory address of a pixel: `{y, x}`, a row pitch of 2^class words.
+    pub addr: usize,
+    /// Pixel positions anywhere in the coordinate range (`Derived::pixel_bits`).
+    pub pixel: usize,
+    /// The exact edge walker's `r`, `rho` and `D` (`delta_bits + xy.frac`).
+    pub edge_d: usize,
+    /// The exact edge walker's step quotient (`delta_bits`).
+    pub edge_q: usize,
+    /// Vertex x and y, z, a colour channel, w_min / w, as they enter the rasterizer.
+    pub xy: usize,
+    pub z: usize,
+    pub color: usize,
+    pub inv_w: usize,
+    /// z and colour accumulators and steps.
+    pub z_acc: usize,
+    pub dz: usize,
+    pub c_acc: usize,
+    pub dc: usize,
+    /// A depth-buffer word: `z`'s fraction bits.
+    pub depth: usize,
+    /// The divider's dividend, divisor and signed quotient (`Derived::div_*_bits`).
+    pub div_n: usize,
+    pub div_d: usize,
+    pub div_q: usize,
+    /// `triangle_setup`'s multiplier operands ([`mul_a`], [`mul_b`]) and the products it
+    /// keeps: the wide domain, the dividend or an A operand, the wider.
+    pub mul_a: usize,
+    pub mul_b: usize,
+    pub mul_p: usize,
+}
+
+/// Outcode bits, one per clip plane.
+pub const OUTCODE: usize = 6;
+/// One colour channel of the colour buffer.
+pub const CHANNEL: usize = 8;
+
+impl Widths {
+    /// The widths of the build (`class`, `f`).
+    pub const fn of(class: u32, f: &Formats) -> Widths {
+        let dv = f.derived();
+        let (div_n, mul_a) = (dv.div_dividend_bits as usize, mul_a(f));
+        let screen = class as usize;
+        Widths {
+            screen,
+            dim: screen + 1,
+            addr: 2 * screen,
+            pixel: dv.pixel_bits as usize,
+            edge_d: (dv.delta_bits + f.xy.frac) as usize,
+            edge_q: dv.delta_bits as usize,
+            xy: f.xy.bits() as usize,
+            z: f.z.bits() as usize,
+            color: f.color.bits() as usize,
+            inv_w: f.inv_w.bits() as usize,
+            z_acc: f.z_acc.bits() as usize,
+            dz: f.dz.bits() as usize,
+            c_acc: f.c_acc.bits() as usize,
+            dc: f.dc.bits() as usize,
+            depth: f.z.frac as usize,
+            div_n,
+            div_d: dv.div_divisor_bits as usize,
+            div_q: dv.div_quotient_bits as usize,
+            mul_a,
+            mul_b: mul_b(f),
+            mul_p: if div_n > mul_a { div_n } else { mul_a },
+        }
+    }
+
+    /// Bits of a triangle's three vertices (`links::TriangleSource`).
+    pub const fn triangle_link(&self) -> usize {
+        3 * (2 * self.xy + self.z + 3 * self.color + self.inv_w)
+    }
+
+    /// Bits of a set-up triangle (`links::TriangleSetupSource`): three edges, each the
+    /// exact walker and its attributes, and the per-pixel steps.
+    pub const fn setup_link(&self) -> usize {
+        let edge = 3 * self.pixel + 3 * self.edge_d + self.edge_q + self.z_acc + 3 * self.c_acc;
+        2 + 3 * (edge + 2 * (self.dz + 3 * self.dc)) + self.dz + 3 * self.dc
+    }
+
+    /// Bits of a span command (`links::SpanCmdSource`).
+    pub const fn span_cmd_link(&self) -> usize {
+        self.screen + 2 * self.pixel + 2 * (self.z_acc + 3 * self.c_acc) + self.dz + 3 * self.dc
+    }
+
+    /// Bits of a pixel (`links::PixelSource`).
+    pub const fn pixel_link(&self) -> usize {
+        2 * self.screen + self.depth + 3 * CHANNEL
+    }
+}
+
 /// `triangle_setup`'s multiplier operand A: the widest first factor, `ooa_d` (OneOverArea
 /// x delta, the gradients' first factor).
 pub const fn mul_a(f: &Formats) -> usize {
@@ -65,6 +164,9 @@ pub const fn violation(class: u32, f: &Formats) -> Option<&'static str> {
     }
     if f.z_acc.frac < f.z.frac || f.c_acc.frac < f.color.frac {
         return Some("accumulators have at least the fraction bits of their vertex values");
+    }
+    if f.z_acc.frac == f.z.frac || f.c_acc.frac == 0 {
+        return Some("span rounds z_acc and c_acc into the buffers by a shift of at least one bit (parts::RoundShift): z_acc.frac > z.frac and c_acc.frac >= 1");
     }
     if f.dz.bits() < f.dc.bits() || f.dz.bits() < f.z_acc.bits() || f.dc.bits() < f.c_acc.bits() {
         return Some("an attribute lane is z's gradient wide: dz at least as wide as dc and z_acc, dc as c_acc");

@@ -29,18 +29,18 @@
 use crate::emit::{ports, verilog, Emitted};
 use crate::mul::Mul;
 use super::links::{SortedSource, TriangleSink, Verdict};
-use super::widths::{DIM, FORMATS};
+use super::widths::{DIM, FORMATS, WIDTHS};
 use crate::Params;
 use rust_hdl::prelude::*;
 
 /// Vertex x, y (`xy`), z (`z`), R, G, B (`color`) and w_min / w (`inv_w`), as they enter
 /// the rasterizer: the widths of the triangle stream from `cull_sort` to `triangle_setup`.
-pub const XY: usize = FORMATS.xy.bits() as usize;
-pub const Z: usize = FORMATS.z.bits() as usize;
-pub const COLOR: usize = FORMATS.color.bits() as usize;
-pub const INV_W: usize = FORMATS.inv_w.bits() as usize;
+pub const XY: usize = WIDTHS.xy;
+pub const Z: usize = WIDTHS.z;
+pub const COLOR: usize = WIDTHS.color;
+pub const INV_W: usize = WIDTHS.inv_w;
 /// Outcode bits, one per clip plane.
-pub const OUTCODE: usize = 6;
+pub use crate::config::OUTCODE;
 
 /// Each clip plane's bit in an outcode (`model::cull_sort::outcode` has their masks).
 pub mod outcode_bit {

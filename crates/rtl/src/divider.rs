@@ -33,16 +33,16 @@
 
 use crate::emit::{ports, verilog, Emitted};
 use crate::sim::{PinValue, Pins, Value};
-use super::widths::DERIVED;
+use super::widths::WIDTHS;
 use crate::Params;
 use rust_hdl::prelude::*;
 
 /// Dividend bits of the emitted divider (`div_dividend_bits`).
-pub const DIV_N: usize = DERIVED.div_dividend_bits as usize;
+pub const DIV_N: usize = WIDTHS.div_n;
 /// Divisor and remainder bits (`div_divisor_bits`).
-pub const DIV_D: usize = DERIVED.div_divisor_bits as usize;
+pub const DIV_D: usize = WIDTHS.div_d;
 /// Quotient bits, signed (`div_quotient_bits`).
-pub const DIV_Q: usize = DERIVED.div_quotient_bits as usize;
+pub const DIV_Q: usize = WIDTHS.div_q;
 /// Quotient magnitude bits: one restoring step each.
 pub const DIV_QM: usize = DIV_Q - 1;
 

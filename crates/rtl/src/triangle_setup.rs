@@ -60,22 +60,21 @@ use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_Q, DIV_QM};
 use crate::emit::{ports, verilog, Emitted};
 use crate::mul::Mul;
 use super::links::{SortedSink, TriangleSetupSource};
-use super::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, Z_ACC};
-use crate::config::{mul_a, mul_b};
+use super::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, WIDTHS, Z_ACC};
 use crate::Params;
 use rust_hdl::prelude::*;
 
 /// Multiplier operand A: the widest factor, `ooa_d` (`config::mul_a`).
-pub const MUL_A: usize = mul_a(&FORMATS);
+pub const MUL_A: usize = WIDTHS.mul_a;
 /// Multiplier operand B: the widest second factor (`config::mul_b`); at class 10's
 /// defaults a z difference, an edge delta and a step quotient are all 19 bits.
-pub const MUL_B: usize = mul_b(&FORMATS);
+pub const MUL_B: usize = WIDTHS.mul_b;
+/// Product bits kept: the wide domain (`Widths::mul_p`), so that an edge start numerator
+/// goes into the divider as it is (its low `DIV_N` bits).
+pub const MUL_P: usize = WIDTHS.mul_p;
 /// The wide domain: vertex x sign-extended to hold both the divider's dividend and an
 /// A operand (the dividend is the wider at every size class's defaults).
-const W: usize = max(DIV_N, MUL_A);
-/// Product bits kept: the wide domain, so that an edge start numerator goes into the
-/// divider as it is (its low `DIV_N` bits).
-pub const MUL_P: usize = W;
+const W: usize = MUL_P;
 /// Twice the area, exact.
 const AREA: usize = DERIVED.area_bits as usize;
 /// The narrow signed domain of the B operands and the edge geometry.
@@ -94,13 +93,6 @@ pub const PRODUCTS: usize = 64;
 
 const S: u32 = FORMATS.xy.frac;
 
-const fn max(a: usize, b: usize) -> usize {
-    if a > b {
-        a
-    } else {
-        b
-    }
-}
 // The shifts below are floor shifts (right), the lanes hold what they are given, and the
 // products fit: `config::violation`, asserted of every build in `widths.rs`; these follow
 // from it.

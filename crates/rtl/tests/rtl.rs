@@ -194,3 +194,30 @@ mod widths {
         assert_eq!(rtl::CLASSES, [10, 11, 12]);
     }
 }
+
+/// `config::Widths`' link totals, which the sweep's area model counts, against the links
+/// as declared (`Link::WIDTHS`), in every build.
+mod link_bits {
+    use rtl::link::Link;
+
+    macro_rules! check {
+        ($build:ident) => {{
+            use rtl::$build::links::*;
+            use rtl::$build::widths::WIDTHS;
+            let bits = |w: &[usize]| w.iter().sum::<usize>();
+            let build = stringify!($build);
+            assert_eq!(WIDTHS.triangle_link(), bits(<TriangleSource as Link>::WIDTHS), "{build}: triangle");
+            assert_eq!(WIDTHS.setup_link(), bits(<TriangleSetupSource as Link>::WIDTHS), "{build}: setup");
+            assert_eq!(WIDTHS.span_cmd_link(), bits(<SpanCmdSource as Link>::WIDTHS), "{build}: span command");
+            assert_eq!(WIDTHS.pixel_link(), bits(<PixelSource as Link>::WIDTHS), "{build}: pixel");
+        }};
+    }
+
+    #[test]
+    fn link_bits_of_the_width_table_equal_the_declared_links() {
+        check!(n10);
+        check!(n11);
+        check!(n12);
+        check!(custom);
+    }
+}
