@@ -217,7 +217,8 @@ fn cli_emits_and_renders_at_other_formats() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(
-        stdout.contains("formats of --formats") && stdout.contains("image equal to the scanline model's"),
+        stdout.contains("formats of --formats")
+            && stdout.contains("image, depth and cycles equal to the scanline model's"),
         "{stdout}"
     );
     let scan = d.join("scanline.png");
@@ -314,4 +315,89 @@ fn cli_sweep_rows_equal_accuracy_and_bad_grids_fail() {
         &["sweep", cube, "--grid", &unknown, "-o", d.join("bad").to_str().unwrap()],
         &["unknown-grid.json", "w.frac"],
     );
+}
+
+#[test]
+fn cli_stability_maps_families_and_bad_arguments_fail() {
+    let d = scratch("stability");
+    let narrow = write(&d, "xy2.json", r#"{"xy": "S11.2 half-up"}"#);
+    let dir = d.join("out");
+    let args =
+        ["stability", "--family", "depth,sliver-h", "--method", "scanline,se", "--formats", &narrow, "--jobs", "2"];
+    let out = edgepaint(&[&args[..], &["-o", dir.to_str().unwrap()]].concat());
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let cells = stability::report::read_cells(&dir.join("cells.json")).unwrap();
+    // depth: 23 separations x 2 rows; sliver-h: 10 thicknesses x 11 lengths; 2 methods, 2 points.
+    assert_eq!(cells.len(), (23 * 2 + 10 * 11) * 2 * 2);
+    let verdict = |family: &str, method: &str, formats: &str, x: f64, y: f64| {
+        let c = cells
+            .iter()
+            .find(|c| {
+                (c.family.name(), c.method.name(), c.formats.as_str(), c.x, c.y)
+                    == (family, method, formats, x, Some(y))
+            })
+            .unwrap_or_else(|| panic!("no cell {family} {method} {formats} {x} {y}"));
+        c.passes()
+    };
+    // A 16-bit depth buffer orders depths a full LSB apart, not a quarter of one; 4 subpixel
+    // bits keep a 1/16-px needle, 2 bits lose it and keep a 1/4-px one.
+    for m in ["scanline", "se"] {
+        assert_eq!(verdict("depth", m, "default", (-16f64).exp2(), 0.0), Some(true));
+        assert_eq!(verdict("depth", m, "default", (-18f64).exp2(), 0.0), Some(false));
+        assert_eq!(verdict("sliver-h", m, "default", 0.0625, 64.0), Some(true));
+        assert_eq!(verdict("sliver-h", m, "xy2", 0.0625, 64.0), Some(false));
+        assert_eq!(verdict("sliver-h", m, "xy2", 0.25, 64.0), Some(true));
+    }
+    let report = std::fs::read_to_string(dir.join("report.md")).unwrap();
+    assert!(
+        report.contains("| scanline | default | every length L (px): passes at 2^-4, fails from 2^-5 |"),
+        "{report}"
+    );
+    for f in ["depth_scanline_default", "sliver-h_se_xy2", "depth_se_xy2"] {
+        assert!(dir.join(format!("{f}.png")).is_file() && dir.join(format!("{f}.svg")).is_file(), "{f}");
+        assert!(report.contains(&format!("({f}.svg)")), "{f} in the report");
+    }
+
+    let o = d.join("bad").to_str().unwrap().to_string();
+    fails_with(
+        &["stability", "--family", "slivers", "-o", &o],
+        &["--family", "unknown family \"slivers\"", "sliver-h"],
+    );
+    fails_with(&["stability", "--method", "raster", "-o", &o], &["--method", "raster", "scanline"]);
+    let no_subpixel = write(&d, "no-subpixel.json", r#"{"xy": "S11.0 half-up"}"#);
+    fails_with(&["stability", "--formats", &no_subpixel, "-o", &o], &["no-subpixel.json", "xy", "subpixel bit"]);
+    let unknown = write(&d, "unknown.json", r#"{"w": "S11.4"}"#);
+    fails_with(&["stability", "--formats", &unknown, "-o", &o], &["unknown.json", "unknown quantity \"w\""]);
+    let malformed = write(&d, "malformed.json", r#"{"xy": "#);
+    fails_with(&["stability", "--formats", &malformed, "-o", &o], &["malformed.json", "malformed JSON"]);
+    fails_with(&["stability", "--formats", "/nonexistent/f.json", "-o", &o], &["f.json", "cannot read"]);
+    assert!(!Path::new(&o).exists(), "nothing written on bad arguments");
+}
+
+/// `edgepaint fit` refuses a bad target, a method without RTL and an unreachable target
+/// clearly; `render --param` is for the RTL engine only. (A whole fit rebuilds edgepaint at
+/// the fitted formats: `crates/fit/tests` runs the search, the soak the command.)
+#[test]
+fn cli_fit_and_render_param_errors_are_clear() {
+    let d = scratch("fit");
+    let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
+    let o = d.join("out");
+    let o = o.to_str().unwrap();
+    fn fit<'a>(cube: &'a str, o: &'a str, target: &'a str, more: &[&'a str]) -> Vec<&'a str> {
+        [&["fit", cube, "--size", "32x24", "--target", target, "-o", o][..], more].concat()
+    }
+    let fit = |target: &'static str, more: &[&'static str]| fit(cube, o, target, more);
+    fails_with(&fit("psnr>=40,,problems=0", &[]), &["empty term"]);
+    fails_with(&fit("psnr<=40", &[]), &["\"psnr<=40\"", "larger is better"]);
+    fails_with(&fit("sharpness>=2", &[]), &["unknown measure \"sharpness\""]);
+    fails_with(&fit("psnr>=40", &["--method", "vector"]), &["--method vector", "no RTL pipeline"]);
+    fails_with(
+        &fit("colour_max_lsb<=0,coverage_differs=0", &["--no-synth", "--no-proof"]),
+        &["not met even with every knob at its ceiling", "cube: "],
+    );
+    let png = d.join("p.png");
+    let args = ["render", cube, "--size", "32x24", "--param", "K=3", "-o", png.to_str().unwrap()];
+    fails_with(&args, &["--param", "needs --engine rtl"]);
+    let args = ["render", cube, "--size", "32x24", "--engine", "rtl", "--param", "P=3", "-o", png.to_str().unwrap()];
+    fails_with(&args, &["--param P", "takes K", "and L"]);
 }

@@ -35,6 +35,10 @@ enum Command {
     Report(cmd::report::Args),
     /// Sweep methods and number formats over scenes: accuracy, speed and cost per design point, charted.
     Sweep(cmd::sweep::Args),
+    /// Fit the narrowest scanline design that meets an accuracy target on a workload, emit it and prove it in Verilator.
+    Fit(cmd::fit::Args),
+    /// Where each method fails: families of generated triangles swept against the float reference, as heatmaps.
+    Stability(cmd::stability::Args),
 }
 
 fn main() -> ExitCode {
@@ -47,6 +51,8 @@ fn main() -> ExitCode {
         Some(Command::Emit(a)) => cmd::emit::run(a),
         Some(Command::Report(a)) => cmd::report::run(a),
         Some(Command::Sweep(a)) => cmd::sweep::run(a),
+        Some(Command::Fit(a)) => cmd::fit::run(a),
+        Some(Command::Stability(a)) => cmd::stability::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

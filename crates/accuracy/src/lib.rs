@@ -79,6 +79,8 @@ pub struct Report {
     /// Pixels written by the fixed-point render / by the reference.
     pub pixels_fixed: u64,
     pub pixels_reference: u64,
+    /// Depth-test passes of the fixed-point render: a pixel written twice counts twice.
+    pub pixels_written: u64,
     /// Pixels written by exactly one of the two.
     pub coverage_differs: u64,
     /// Of those, how many no documented tie explains.
@@ -98,6 +100,9 @@ pub struct Report {
     pub worst: Vec<Worst>,
     /// Triangles the fixed-point render could not draw (input or overflow).
     pub problems: u64,
+    /// Triangles it dropped as of zero area once their vertices snapped to the `xy` format
+    /// (a sliver thinner than the subpixel grid).
+    pub degenerate: u64,
     pub cycles: u64,
     pub pixels_per_clock: f64,
 }
@@ -108,6 +113,8 @@ struct Fixed {
     fb: Framebuffer,
     /// Triangles (or spans) it could not draw: input out of range, overflow.
     problems: u64,
+    /// Triangles of zero area once snapped.
+    degenerate: u64,
     pixels_written: u64,
     cycles: u64,
 }
@@ -129,6 +136,7 @@ pub fn compare(list: &Trilist, s: &Setup) -> Report {
     let frame = Fixed {
         method: method_name(s.method),
         problems: fixed.problems.len() as u64,
+        degenerate: fixed.stats.degenerate,
         pixels_written: fixed.stats.pixels_written,
         fb: fixed.fb,
         cycles,
@@ -146,6 +154,7 @@ pub fn compare_se(list: &Trilist, s: &Setup) -> Result<Report, String> {
     let frame = Fixed {
         method: format!("se ({} engines)", r.engines),
         problems: r.stats.input_rejected + r.ends_overflowed,
+        degenerate: r.stats.degenerate,
         pixels_written: r.pixels_written,
         fb: r.fb,
         cycles: r.cycles,
@@ -187,6 +196,7 @@ fn against_reference(list: &Trilist, s: &Setup, perspective: bool, fixed: Fixed)
         formats: s.formats,
         pixels_fixed: 0,
         pixels_reference: 0,
+        pixels_written: fixed.pixels_written,
         coverage_differs: 0,
         coverage_unexplained: 0,
         winner_differs: 0,
@@ -197,6 +207,7 @@ fn against_reference(list: &Trilist, s: &Setup, perspective: bool, fixed: Fixed)
         depth_mean_lsb: 0.0,
         worst,
         problems: fixed.problems,
+        degenerate: fixed.degenerate,
         cycles,
         pixels_per_clock: if cycles > 0 { fixed.pixels_written as f64 / cycles as f64 } else { 0.0 },
     };

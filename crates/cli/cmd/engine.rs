@@ -62,8 +62,13 @@ impl FixedArgs {
 /// The formats file `path` (a JSON object of formats by quantity) over the defaults for a
 /// `width` x `height` screen, checked.
 pub fn formats_file(path: &Path, width: u32, height: u32) -> Result<Formats> {
+    let json = formats_json(path)?;
+    Formats::with_overrides(width, height, &json).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
+}
+
+/// The JSON of the formats file `path`, not yet applied to a screen.
+pub fn formats_json(path: &Path) -> Result<serde_json::Value> {
     let name = path.display();
     let text = std::fs::read_to_string(path).with_context(|| format!("{name}: cannot read the formats file"))?;
-    let json: serde_json::Value = serde_json::from_str(&text).with_context(|| format!("{name}: malformed JSON"))?;
-    Formats::with_overrides(width, height, &json).map_err(|e| anyhow::anyhow!("{name}: {e}"))
+    serde_json::from_str(&text).with_context(|| format!("{name}: malformed JSON"))
 }

@@ -42,6 +42,10 @@ pub struct Args {
     /// only those without (reported), instead of drawing as the hardware would.
     #[arg(long)]
     analysis: bool,
+    /// `--engine rtl`: a parameter of raster_top, `K=<1..7>` (setup's multipliers) or
+    /// `L=<1..25>` (the divider's stages); repeatable.
+    #[arg(long = "param", value_name = "NAME=VALUE", value_parser = super::emit::parse_param)]
+    params: Vec<(String, u64)>,
 }
 
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -83,9 +87,13 @@ pub fn run(args: Args) -> Result<()> {
     let mut progress = |done: usize| bar.set_position(done as u64);
     let start = Instant::now();
     let perspective = !args.linear;
+    anyhow::ensure!(
+        args.params.is_empty() || args.engine == Engine::Rtl,
+        "--param sets raster_top's parameters: it needs --engine rtl"
+    );
     let (image, summary) = match args.fixed.method(args.engine, perspective)? {
         _ if args.engine == Engine::Rtl => {
-            match super::rtl::render(list, cull_back, loaded.background, &args.fixed, args.analysis)? {
+            match super::rtl::render(list, cull_back, loaded.background, &args.fixed, args.analysis, &args.params)? {
                 Some(drawn) => drawn,
                 None => return Ok(()), // drawn by an edgepaint compiled at --formats
             }

@@ -9,9 +9,10 @@
 
 use super::engine::FixedArgs;
 use super::render::{depth16, Image};
-use anyhow::{anyhow, ensure, Result};
+use anyhow::{anyhow, bail, ensure, Result};
 use fx::Build;
 use model::cull_sort::Cull;
+use model::cycles::Timing;
 use scene::Trilist;
 use sim::frame::{self, Frame, MemoryModel, Report};
 use sim::memory::ReadDuringWrite;
@@ -25,8 +26,19 @@ pub fn render(
     background: [f64; 3],
     fixed: &FixedArgs,
     analysis: bool,
+    params: &[(String, u64)],
 ) -> Result<Option<(Image, (String, u64))>> {
     ensure!(!analysis, "--analysis checks the models' arithmetic; it does not apply to --engine rtl");
+    let mut timing = Timing::default();
+    for (name, v) in params {
+        let v32 = u32::try_from(*v).unwrap_or(u32::MAX);
+        match name.as_str() {
+            "K" => timing.setup_multipliers = v32,
+            "L" => timing.divider_latency = v32,
+            _ => bail!("--param {name}: --engine rtl takes K (setup's multipliers) and L (the divider's stages)"),
+        }
+    }
+    let (k, l) = (timing.setup_multipliers as u64, timing.divider_latency as u64);
     let class = Build::for_screen(list.width, list.height).class;
     let formats = fixed.formats(list.width, list.height)?;
     let build = Build { class, formats };
@@ -47,21 +59,27 @@ pub fn render(
     let f = Frame { build, width: list.width, height: list.height, cull, background, triangles: &prep.triangles };
     let memory = MemoryModel { read_during_write: ReadDuringWrite::Old, ready: &mut |_| true };
     let max_cycles = 2 * prep.cycles() + 100_000;
-    let mut dut = frame::verilator(&build).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let mut dut = frame::verilator_with(&build, &[("K", k), ("L", l)]).map_err(|e| anyhow!("--engine rtl: {e}"))?;
     let start = Instant::now();
     let out = frame::draw(&mut dut, &f, memory, max_cycles).map_err(|e| anyhow!(e))?;
     let secs = start.elapsed().as_secs_f64();
-    let r = Report::of(&out, &prep);
+    let r = Report { predicted: prep.cycles_with(&timing), ..Report::of(&out, &prep) };
     ensure!(
         out.memory.rgb == prep.render.fb.rgb && out.memory.depth == prep.render.fb.depth,
         "the RTL's image differs from the scanline model's: a bug in the RTL or the model"
     );
+    ensure!(
+        r.cycles == r.predicted,
+        "the RTL took {} cycles, model::cycles predicts {}: a bug in the RTL or the cycle model",
+        r.cycles,
+        r.predicted
+    );
     let latency = r.latency.map_or("none".into(), |(lo, mid, hi)| format!("{lo}/{mid}/{hi}"));
     let summary = format!(
-        "rtl (raster_top of size class {}{} in Verilator): {} triangles in, {} drawn, {} culled; {} fragments, {} pixels written; \
+        "rtl (raster_top of size class {}{}, K = {k}, L = {l}, in Verilator): {} triangles in, {} drawn, {} culled; {} fragments, {} pixels written; \
          {} cycles (model::cycles: {}), {:.3} pixels per clock; per triangle: latency to its first pixel \
          {latency} cycles (min/median/max), {:.1} cycles between triangles (max {}); {:.0} cycles/s simulated; \
-         image equal to the scanline model's",
+         image, depth and cycles equal to the scanline model's",
         build.class,
         if build == Build::of_class(class) { "" } else { ", formats of --formats" },
         list.triangles.len(),

@@ -40,6 +40,16 @@ pub struct Args {
     /// the cache of results (cache/) from which an interrupted sweep resumes.
     #[arg(short, long)]
     out: Option<PathBuf>,
+    /// Instead of sweeping: synthesize the area model's calibration builds with Yosys
+    /// (crates/sweep/area/builds.json; minutes each, an interrupted run resumes), fit the
+    /// model and report its error on the builds held out of the fit, into -o DIR
+    /// (yosys.json, area.md).
+    #[arg(long, conflicts_with_all = ["inputs", "method", "grid", "shard", "size", "area"])]
+    calibrate: bool,
+    /// Fit the area model to these calibration samples (a `--calibrate` run's yosys.json)
+    /// instead of those edgepaint was built with.
+    #[arg(long, value_name = "FILE")]
+    area: Option<PathBuf>,
 }
 
 #[derive(clap::Subcommand)]
@@ -86,8 +96,12 @@ pub fn run(args: Args) -> Result<()> {
         let rows = sweep::store::merge(&dirs).map_err(|e| anyhow!(e))?;
         return finish(&out, &rows, true);
     }
-    anyhow::ensure!(!args.inputs.is_empty(), "give at least one scene or trilist to sweep");
     let out = args.out.context("give the output directory with -o DIR")?;
+    if args.calibrate {
+        return super::calibrate::run(&out);
+    }
+    anyhow::ensure!(!args.inputs.is_empty(), "give at least one scene or trilist to sweep");
+    let area = args.area.as_deref().map(area_model).transpose()?;
     let mut grid = match &args.grid {
         Some(path) => {
             let text =
@@ -116,7 +130,7 @@ pub fn run(args: Args) -> Result<()> {
         ProgressStyle::with_template("{bar:40} {pos}/{len} points, {elapsed} elapsed, {eta} to go")
             .expect("a valid template"),
     );
-    let opts = Options { jobs: args.jobs, shard, cache: Some(out.join("cache")) };
+    let opts = Options { jobs: args.jobs, shard, cache: Some(out.join("cache")), area };
     let start = Instant::now();
     let swept = sweep::run::run(&inputs, &points, &opts, &|| bar.inc(1)).map_err(|e| anyhow!(e))?;
     bar.finish_and_clear();
@@ -156,8 +170,16 @@ fn finish(out: &Path, rows: &[sweep::row::Row], charts: bool) -> Result<()> {
     Ok(())
 }
 
+/// The area model fitted to the calibration samples in `path`.
+fn area_model(path: &Path) -> Result<sweep::area::Model> {
+    let text = std::fs::read_to_string(path).with_context(|| format!("{}: cannot read", path.display()))?;
+    let samples: Vec<sweep::area::Sample> =
+        serde_json::from_str(&text).with_context(|| format!("{}: not calibration samples", path.display()))?;
+    sweep::area::fit(&samples).map_err(|e| anyhow!("{}: {e}", path.display()))
+}
+
 /// An input of the sweep, its cache key from its file's bytes and the size asked for.
-fn load(path: &Path, size: Option<Size>) -> Result<Input> {
+pub fn load(path: &Path, size: Option<Size>) -> Result<Input> {
     let loaded = input::load(path, size)?;
     let bytes = std::fs::read(path).with_context(|| format!("{}: cannot read", path.display()))?;
     let mut h = std::collections::hash_map::DefaultHasher::new();

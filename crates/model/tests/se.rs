@@ -130,3 +130,27 @@ fn se_renders_every_shipped_scene_within_1_lsb() {
         );
     }
 }
+
+/// Formats whose `xy` range reaches beyond the engines' 13-bit span ends (S13 on a small
+/// screen) are refused with a reason, never a panic: a triangle reaching far left of such
+/// a screen is clipped by the front end to x = -8192, a span end the engines cannot hold.
+#[test]
+fn se_refuses_xy_ranges_beyond_its_span_ends() {
+    let at = |xy: &str| {
+        let f = Formats { xy: xy.parse().unwrap(), ..Formats::for_resolution(256, 256) }.follow(10, fx::Given::NONE);
+        f.check(256, 256).unwrap();
+        f
+    };
+    let f = at("S13.2 half-up");
+    let tri = [
+        scene::Vertex::new(-65536.0, 100.25, 0.25, [255.0, 0.0, 0.0]),
+        scene::Vertex::new(200.5, 20.75, 0.3, [0.0, 255.0, 0.0]),
+        scene::Vertex::new(210.25, 180.5, 0.35, [0.0, 0.0, 255.0]),
+    ];
+    let list = scene::Trilist { width: 256, height: 256, triangles: vec![tri] };
+    let err = array::render(&list, &f, Cull::None, [0; 3]).unwrap_err();
+    assert!(err.contains("span ends") && err.contains("S13.2"), "{err}");
+    let f = at("S12.2 half-up");
+    let r = array::render(&list, &f, Cull::None, [0; 3]).unwrap();
+    assert!(r.pixels_written > 10_000, "{}", r.pixels_written);
+}

@@ -245,8 +245,14 @@ impl Cycle for RasterTopVl {
 /// `raster_top` of `build` with `K` and `L` as in `UNITS`' defaults, emitted, Verilated
 /// (the model is built the first time, under `<target>/verilator/`) and instantiated.
 pub fn verilator(build: &Build) -> Result<RasterTopVl, String> {
+    verilator_with(build, &[])
+}
+
+/// [`verilator`] with parameters `params` (e.g. `K`, `L`) over `UNITS`' defaults.
+pub fn verilator_with(build: &Build, params: &[(&str, u64)]) -> Result<RasterTopVl, String> {
     let unit = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
-    let params = unit.params([("N".to_owned(), build.class as u64)])?;
+    let given = params.iter().map(|(k, v)| (k.to_string(), *v));
+    let params = unit.params([("N".to_owned(), build.class as u64)].into_iter().chain(given))?;
     let e = unit.emit_at(&params, &build.formats)?;
     Ok(RasterTopVl::new(crate::verilate(&e)?.model()?, *build))
 }

@@ -81,7 +81,8 @@ pub fn pareto(points: &[(f64, f64)]) -> Vec<usize> {
 }
 
 /// Every chart of a sweep's rows: colour error against cycles per frame, against frame
-/// time (where some method has a clock), and one per sensitivity knob.
+/// time and against area (where some method has a clock and a cost: a pipeline in RTL),
+/// and one per sensitivity knob.
 pub fn charts(rows: &[Row]) -> Vec<Chart> {
     let mut out = vec![scatter(
         rows,
@@ -91,7 +92,13 @@ pub fn charts(rows: &[Row]) -> Vec<Chart> {
         |r| Some(r.cycles as f64),
     )];
     if rows.iter().any(|r| r.frame_us.is_some()) {
-        out.push(scatter(rows, "error_vs_frame_time", frame_time_title(rows), "mean frame time (µs)", |r| r.frame_us));
+        let title = format!("Colour error vs frame time{}", missing(rows, |r| r.frame_us.is_some()));
+        out.push(scatter(rows, "error_vs_frame_time", title, "mean frame time (µs), modelled clock", |r| r.frame_us));
+    }
+    if rows.iter().any(|r| r.cost.is_some()) {
+        let title = format!("Colour error vs area{}", missing(rows, |r| r.cost.is_some()));
+        let x_label = "ECP5 LUT4s, area model (measured where synthesized)";
+        out.push(scatter(rows, "error_vs_area", title, x_label, |r| r.cost.map(|c| c.ecp5_lut4)));
     }
     let knobs: BTreeSet<&str> = sensitivity_rows(rows).filter_map(|r| r.knob.as_deref()).collect();
     out.extend(knobs.into_iter().map(|k| sensitivity(rows, k)));
@@ -158,30 +165,31 @@ fn is_design(r: &Row) -> bool {
     r.kind != "sensitivity" || r.knob.as_deref().is_some_and(|k| !k.ends_with(".frac"))
 }
 
-/// A default row's mark: `scanline default (001 K=7 L=5)`, `<method> default` otherwise.
+/// A default row's mark, naming the paper whose design it is: `scanline default (001 K=7
+/// L=5)`, 001's 7 multipliers and 5-stage divider with its 16-bit depth buffer; `se default
+/// (000, 64-pixel engines)` (000's 24-bit z words do not fit the engines' 32-bit words at 4
+/// subpixel bits: `skipped.txt`); `vector default (004, <n> lanes)`.
 fn default_label(r: &Row) -> String {
-    match (r.method.as_str(), r.params.get("K"), r.params.get("L")) {
-        ("scanline", Some(k), Some(l)) => format!("scanline default (001 K={k} L={l})"),
+    match (r.method.as_str(), r.params.get("K"), r.params.get("L"), r.params.get("lanes")) {
+        ("scanline", Some(k), Some(l), _) => format!("scanline default (001 K={k} L={l})"),
+        ("se", ..) => "se default (000, 64-pixel engines)".into(),
+        ("vector", .., Some(n)) => format!("vector default (004, {n} lanes)"),
         (m, ..) => format!("{m} default"),
     }
 }
 
-/// The frame-time chart's title: which methods have a clock and where it comes from.
-fn frame_time_title(rows: &[Row]) -> String {
-    let mut clocked: BTreeMap<&str, Option<f64>> = BTreeMap::new();
+/// A title's note naming the methods without the figure (`has`): ` (vector, se: no RTL
+/// pipeline yet, not shown)`, empty when every method has it.
+fn missing(rows: &[Row], has: fn(&Row) -> bool) -> String {
+    let mut methods: BTreeMap<&str, bool> = BTreeMap::new();
     for r in rows {
-        let c = clocked.entry(r.method.as_str()).or_default();
-        *c = c.or(r.frame_us.and(r.clock_mhz));
+        *methods.entry(r.method.as_str()).or_default() |= has(r);
     }
-    let parts: Vec<String> = clocked
-        .iter()
-        .map(|(m, c)| match c {
-            Some(mhz) if *m == "scanline" => format!("scanline at its measured default-design clock, {mhz} MHz"),
-            Some(mhz) => format!("{m} at {mhz} MHz"),
-            None => format!("{m}: no RTL clock yet, not shown"),
-        })
-        .collect();
-    format!("Colour error vs frame time ({})", parts.join("; "))
+    let without: Vec<&str> = methods.into_iter().filter(|(_, has)| !has).map(|(m, _)| m).collect();
+    match without.is_empty() {
+        true => String::new(),
+        false => format!(" ({}: no RTL pipeline yet, not shown)", without.join(", ")),
+    }
 }
 
 /// The rows of sensitivity points.
@@ -282,8 +290,8 @@ const COLOURS: [RGBColor; 6] = [
 const MARK: RGBColor = RGBColor(255, 127, 14);
 
 /// The embedded font, registered once as plotters' `sans-serif` (no system font is read);
-/// the error if it does not parse.
-fn font() -> Result<(), String> {
+/// the error if it does not parse. Public for the other charts drawn with it (`stability`).
+pub fn font() -> Result<(), String> {
     static REGISTERED: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
     let ok = *REGISTERED.get_or_init(|| {
         let bytes = include_bytes!("../fonts/DejaVuSansMono.ttf");
@@ -484,6 +492,7 @@ pub(crate) mod tests {
             _ => [("lanes".to_string(), 4)].into(),
         };
         let clock = (method == "scanline").then_some(18.7);
+        let cost = (method == "scanline").then_some(crate::area::Cost { ecp5_lut4: 20_000.0, ..Default::default() });
         Row {
             scene: scene.into(),
             method: method.into(),
@@ -512,6 +521,8 @@ pub(crate) mod tests {
             clock_mhz: clock,
             clock_source: None,
             frame_us: clock.map(|c| cycles as f64 / c),
+            cost,
+            cost_source: None,
         }
     }
 
@@ -574,7 +585,7 @@ pub(crate) mod tests {
     fn charts_average_over_scenes_one_series_per_method() {
         let charts = charts(&rows());
         let stems: Vec<&str> = charts.iter().map(|c| c.stem.as_str()).collect();
-        assert_eq!(stems, ["error_vs_cycles", "error_vs_frame_time", "sensitivity_xy_frac"]);
+        assert_eq!(stems, ["error_vs_cycles", "error_vs_frame_time", "error_vs_area", "sensitivity_xy_frac"]);
         let c = find(&charts, "error_vs_cycles");
         assert!(c.x_log && !c.y_log);
         let names: Vec<&str> = c.series.iter().map(|s| s.name.as_str()).collect();
@@ -584,7 +595,10 @@ pub(crate) mod tests {
         assert_eq!(xy(&c.series[0].points), [(2000.0, 2.0), (1500.0, 7.0), (2000.0, 2.25), (4000.0, 0.5)]);
         assert_eq!(xy(&c.series[1].points), [(600.0, 4.0), (600.0, 9.0), (700.0, 3.0), (800.0, 1.0)]);
         let marks: Vec<(&str, f64, f64)> = c.marks.iter().map(|p| (p.label.as_str(), p.x, p.y)).collect();
-        assert_eq!(marks, [("scanline default (001 K=7 L=5)", 2000.0, 2.0), ("vector default", 600.0, 4.0)]);
+        assert_eq!(
+            marks,
+            [("scanline default (001 K=7 L=5)", 2000.0, 2.0), ("vector default (004, 4 lanes)", 600.0, 4.0)]
+        );
     }
 
     #[test]
@@ -607,16 +621,28 @@ pub(crate) mod tests {
     }
 
     #[test]
-    fn frame_time_shows_only_methods_with_a_clock() {
+    fn frame_time_and_area_show_only_methods_with_a_pipeline_in_rtl() {
         let charts = charts(&rows());
-        let c = find(&charts, "error_vs_frame_time");
-        assert_eq!(c.series.len(), 1);
-        assert_eq!(c.series[0].name, "scanline");
-        assert!((c.series[0].points[0].x - 2000.0 / 18.7).abs() < 1e-9);
-        assert!(c.title.contains("measured default-design clock, 18.7 MHz"), "{}", c.title);
-        assert!(c.title.contains("vector: no RTL clock yet"), "{}", c.title);
-        let no_clock: Vec<Row> = rows().into_iter().filter(|r| r.method == "vector").collect();
-        assert!(charts_stems(&no_clock).iter().all(|s| s != "error_vs_frame_time"));
+        for (stem, x) in [("error_vs_frame_time", 2000.0 / 18.7), ("error_vs_area", 20_000.0)] {
+            let c = find(&charts, stem);
+            assert_eq!(c.series.len(), 1, "{stem}");
+            assert_eq!(c.series[0].name, "scanline");
+            assert!((c.series[0].points[0].x - x).abs() < 1e-9, "{stem}");
+            assert!(c.title.ends_with(" (vector: no RTL pipeline yet, not shown)"), "{}", c.title);
+        }
+        let no_rtl: Vec<Row> = rows().into_iter().filter(|r| r.method == "vector").collect();
+        assert!(charts_stems(&no_rtl).iter().all(|s| s != "error_vs_frame_time" && s != "error_vs_area"));
+    }
+
+    #[test]
+    fn the_defaults_are_marked_with_their_papers() {
+        let mut rows = rows();
+        for r in rows.iter_mut().filter(|r| r.method == "vector") {
+            r.method = "se".into();
+        }
+        let marks: Vec<String> =
+            find(&charts(&rows), "error_vs_cycles").marks.iter().map(|p| p.label.clone()).collect();
+        assert_eq!(marks, ["scanline default (001 K=7 L=5)", "se default (000, 64-pixel engines)"]);
     }
 
     fn charts_stems(rows: &[Row]) -> Vec<String> {

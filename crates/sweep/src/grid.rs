@@ -168,6 +168,11 @@ pub struct Point {
     pub kind: String,
     /// The knobs set, with their values.
     pub set: BTreeMap<String, u32>,
+    /// The size class of the design, when not the screen's own (`fx::resolution_bits`):
+    /// a workload of several screen sizes drawn by one design (`edgepaint fit`). Never
+    /// below the screen's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub class: Option<u32>,
 }
 
 impl Grid {
@@ -193,8 +198,13 @@ impl Grid {
     pub fn points(&self) -> Vec<Point> {
         let mut out = Vec::new();
         for &method in &self.methods {
-            let point =
-                |name: String, kind: &str, set: BTreeMap<String, u32>| Point { method, name, kind: kind.into(), set };
+            let point = |name: String, kind: &str, set: BTreeMap<String, u32>| Point {
+                method,
+                name,
+                kind: kind.into(),
+                set,
+                class: None,
+            };
             out.push(point("default".into(), "default", BTreeMap::new()));
             let knobs: Vec<(&String, &Vec<u32>)> = self.sensitivity.iter().filter(|(k, _)| method.has(k)).collect();
             for (knob, values) in &knobs {
@@ -225,10 +235,11 @@ impl Point {
     /// The point's formats and parameters for a `width` x `height` screen; the error names
     /// the point and says why its formats are impossible.
     pub fn resolve(&self, width: u32, height: u32) -> Result<(Formats, BTreeMap<String, u32>), String> {
-        let n = fx::resolution_bits(width, height);
+        let n = self.class(width, height);
+        let side = 1u32 << n.min(16);
         // The shading engines' words hold 32 bits at most, which the wide formats exceed.
         let wide = self.kind == "sensitivity" && self.set.keys().all(|k| !is_param(k)) && self.method != Method::Se;
-        let mut f = if wide { Formats::wide(width, height) } else { Formats::for_resolution(width, height) };
+        let mut f = if wide { Formats::wide(side, side) } else { Formats::for_n(n) };
         let mut params = self.method.default_params();
         let mut given = Given::NONE;
         for (knob, &v) in &self.set {
@@ -265,6 +276,12 @@ impl Point {
         Ok((f, params))
     }
 
+    /// The size class of the point's design on a `width` x `height` screen.
+    pub fn class(&self, width: u32, height: u32) -> u32 {
+        let n = fx::resolution_bits(width, height);
+        self.class.map_or(n, |c| c.max(n))
+    }
+
     /// `<method> <name>`, as errors name a point.
     pub fn label(&self) -> String {
         format!("{} {}", self.method.name(), self.name)
@@ -296,6 +313,7 @@ mod tests {
             name: "xy.frac=8".into(),
             kind: "sensitivity".into(),
             set: [("xy.frac".into(), 8)].into(),
+            class: None,
         };
         let (f, _) = p.resolve(320, 240).unwrap();
         let w = Formats::wide(320, 240);

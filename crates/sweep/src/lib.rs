@@ -5,14 +5,18 @@
 //! [`row::Row`] per point: the design (every quantity's format, the method's parameters),
 //! its accuracy (PSNR, colour and depth error in LSBs, coverage and depth-order
 //! differences, triangles not drawn), its speed (cycles per frame from `model::cycles`,
-//! pixels per clock, frame time where the clock is known). [`run::run`] spreads the points
+//! pixels per clock, frame time at the clock of [`clock`]'s model) and its cost ([`area`]'s
+//! model, fitted to Yosys runs of real builds), where the method's pipeline exists in RTL.
+//! [`run::run`] spreads the points
 //! over every core and caches each result, so that an interrupted sweep resumes and shards
 //! run on other machines merge ([`store::merge`]).
-//! [`chart::charts`] turns the rows into charts (error against cycles and frame time with
-//! the Pareto front, one sensitivity chart per knob), [`chart::draw`] draws them as PNG
+//! [`chart::charts`] turns the rows into charts (error against cycles, frame time and area
+//! with the Pareto front, one sensitivity chart per knob), [`chart::draw`] draws them as PNG
 //! and SVG, and [`report::write`] writes a Markdown report that embeds them.
 
+pub mod area;
 pub mod chart;
+pub mod clock;
 pub mod grid;
 pub mod report;
 pub mod row;

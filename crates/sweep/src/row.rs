@@ -1,6 +1,7 @@
 //! One result of a sweep: a (scene, method, design point) with its accuracy against the
 //! float reference, its speed and its cost. Written one per line (JSON lines) and as CSV.
 
+use crate::area::Cost;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
@@ -8,9 +9,9 @@ use std::collections::BTreeMap;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Source {
-    /// Measured: synthesized, placed and routed (README, "Units").
+    /// Measured: synthesized (area) or placed and routed (clock) at this very design.
     Measured,
-    /// Modelled: not synthesized at this point.
+    /// Modelled: `crate::area` or `crate::clock` at a design not synthesized.
     Modelled,
 }
 
@@ -62,11 +63,16 @@ pub struct Row {
     /// Speed: cycles per frame (`model::cycles`) and pixels written per clock.
     pub cycles: u64,
     pub pixels_per_clock: f64,
-    /// The clock in MHz where one is known for the method (`clock_source` says how), and
-    /// the frame time at it in microseconds.
+    /// The clock in MHz where one is known for the method (`clock_source` says how:
+    /// measured at the default design, `crate::clock`'s model elsewhere), and the frame
+    /// time at it in microseconds.
     pub clock_mhz: Option<f64>,
     pub clock_source: Option<Source>,
     pub frame_us: Option<f64>,
+    /// What the design costs (`crate::area`), for a method whose pipeline exists in RTL;
+    /// `cost_source` says whether Yosys measured it (a calibration build) or the model gave it.
+    pub cost: Option<Cost>,
+    pub cost_source: Option<Source>,
 }
 
 /// A CSV column: its name and how a row prints it.
@@ -93,6 +99,12 @@ const MEASURES: &[Column] = &[
     ("clock_mhz", |r| r.clock_mhz.map_or(String::new(), |c| c.to_string())),
     ("clock_source", |r| r.clock_source.map_or(String::new(), |s| format!("{s:?}").to_lowercase())),
     ("frame_us", |r| r.frame_us.map_or(String::new(), |t| t.to_string())),
+    ("ge", |r| r.cost.map_or(String::new(), |c| format!("{:.0}", c.ge))),
+    ("ecp5_lut4", |r| r.cost.map_or(String::new(), |c| format!("{:.0}", c.ecp5_lut4))),
+    ("ecp5_ff", |r| r.cost.map_or(String::new(), |c| format!("{:.0}", c.ecp5_ff))),
+    ("ecp5_dsp", |r| r.cost.map_or(String::new(), |c| format!("{:.0}", c.ecp5_dsp))),
+    ("ice40_lut4", |r| r.cost.map_or(String::new(), |c| format!("{:.0}", c.ice40_lut4))),
+    ("cost_source", |r| r.cost_source.map_or(String::new(), |s| format!("{s:?}").to_lowercase())),
 ];
 
 impl Row {
@@ -186,6 +198,8 @@ mod tests {
             clock_mhz: Some(18.7),
             clock_source: Some(Source::Measured),
             frame_us: Some(66.0),
+            cost: Some(Cost { ge: 1e5, ecp5_lut4: 2e4, ecp5_ff: 9e3, ecp5_dsp: 14.0, ice40_lut4: 3e4 }),
+            cost_source: Some(Source::Modelled),
         };
         let (formats, params) = (vec!["xy".to_string()], vec!["K".to_string()]);
         let header: Vec<String> = Row::csv_header(&formats, &params).split(',').map(String::from).collect();
@@ -197,5 +211,6 @@ mod tests {
         assert_eq!(cells.len(), header.len());
         let at = |name: &str| cells[header.iter().position(|h| h == name).unwrap()];
         assert_eq!((at("cycles"), at("clock_source"), at("winner_unexplained")), ("1234", "measured", "1"));
+        assert_eq!((at("ecp5_lut4"), at("ecp5_dsp"), at("cost_source")), ("20000", "14", "modelled"));
     }
 }

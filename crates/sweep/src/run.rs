@@ -1,6 +1,8 @@
 //! Running a sweep: every (input, design point) through the bit-exact model and the float
 //! reference (`accuracy::compare`), in parallel, each result cached.
 
+use crate::area::{Design, Model};
+use crate::clock;
 use crate::grid::{Method, Point};
 use crate::row::{Row, Source};
 use accuracy::{compare, compare_se, Setup};
@@ -11,11 +13,6 @@ use scene::Trilist;
 use std::collections::hash_map::DefaultHasher;
 use std::hash::{Hash, Hasher};
 use std::path::PathBuf;
-
-/// `raster_top`'s clock on ECP5 as placed and routed (README, "Units": the soak's P&R of
-/// the default design), in MHz: the scanline method's clock, measured at the default
-/// design and taken for every other point until the area and clock models exist.
-pub const SCANLINE_CLOCK_MHZ: f64 = 19.7;
 
 /// A scene or trilist to sweep.
 pub struct Input {
@@ -28,6 +25,19 @@ pub struct Input {
     pub cull_back: bool,
 }
 
+impl Input {
+    /// The scene file `path` at `width` x `height` (cache key 1); the error names the file.
+    pub fn scene(path: &std::path::Path, width: u32, height: u32) -> Result<Input, String> {
+        let name = path.file_stem().map_or_else(|| path.display().to_string(), |s| s.to_string_lossy().into_owned());
+        let scene::Input::Scene(s) = scene::Input::load(path).map_err(|e| e.to_string())? else {
+            return Err(format!("{}: a trilist, not a scene", path.display()));
+        };
+        let s = s.with_size(width, height).map_err(|e| format!("{}: {e}", path.display()))?;
+        let trilist = s.to_trilist().map_err(|e| format!("{}: {e}", path.display()))?;
+        Ok(Input { name, key: 1, trilist, background: s.background, cull_back: s.cull_back })
+    }
+}
+
 /// How to run.
 #[derive(Default)]
 pub struct Options {
@@ -37,6 +47,8 @@ pub struct Options {
     pub shard: Option<(usize, usize)>,
     /// Where results are cached, one file per task (`<dir>/<key>.json`).
     pub cache: Option<PathBuf>,
+    /// The area model (default: the committed calibration, `Model::calibrated`).
+    pub area: Option<Model>,
 }
 
 /// One task: an input and a point, with the point's formats and parameters for it.
@@ -81,8 +93,6 @@ impl Task<'_> {
                 .map_err(|e| format!("{}: point {}: {e}", self.input.name, self.point.label()))?,
             _ => compare(&self.input.trilist, &setup),
         };
-        let clock = (self.point.method == Method::Scanline).then_some(SCANLINE_CLOCK_MHZ);
-        let source = clock.map(|_| if self.point.kind == "default" { Source::Measured } else { Source::Modelled });
         let p = self.point;
         let to16 = (16.0 - self.formats.z.frac as f64).exp2();
         Ok(Row {
@@ -110,10 +120,34 @@ impl Task<'_> {
             problems: r.problems,
             cycles: r.cycles,
             pixels_per_clock: r.pixels_per_clock,
-            clock_mhz: clock,
-            clock_source: source,
-            frame_us: clock.map(|c| r.cycles as f64 / c),
+            clock_mhz: None,
+            clock_source: None,
+            frame_us: None,
+            cost: None,
+            cost_source: None,
         })
+    }
+
+    /// `row` with the design's clock, frame time and cost, for a method whose pipeline
+    /// exists in RTL (scanline) at formats the RTL can be built at (`rtl::config::check`:
+    /// not the wide formats of a format's sensitivity point): measured where the design was
+    /// synthesized or routed, modelled elsewhere. Not cached: a recalibrated model reaches
+    /// every row.
+    fn priced(&self, mut row: Row, model: &Model) -> Row {
+        let n = self.point.class(self.input.trilist.width, self.input.trilist.height);
+        if self.point.method != Method::Scanline || rtl::config::check(n, &self.formats).is_err() {
+            return row;
+        }
+        let design = Design { class: n, formats: self.formats, k: self.params["K"], l: self.params["L"] };
+        let default = Design { class: fx::RTL_CLASS, formats: fx::Formats::for_n(fx::RTL_CLASS), k: 7, l: 5 };
+        let source = |measured: bool| if measured { Source::Measured } else { Source::Modelled };
+        let mhz = clock::pipeline_mhz(&design, &default);
+        (row.clock_mhz, row.clock_source) = (Some(mhz), Some(source(design == default)));
+        row.frame_us = Some(row.cycles as f64 / mhz);
+        let measured = model.measured(&design);
+        (row.cost, row.cost_source) =
+            (Some(measured.unwrap_or_else(|| model.pipeline(&design))), Some(source(measured.is_some())));
+        row
     }
 }
 
@@ -162,7 +196,7 @@ pub fn run(inputs: &[Input], points: &[Point], opts: &Options, done: &(dyn Fn() 
             .map(|t| {
                 let row = cached(t, opts)?;
                 done();
-                Ok(row)
+                Ok(t.priced(row, opts.area.as_ref().unwrap_or_else(|| Model::calibrated())))
             })
             .collect()
     });

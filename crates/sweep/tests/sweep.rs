@@ -8,17 +8,7 @@ use sweep::run::{run, Input, Options};
 /// `scenes/<name>.json` at `w` x `h`.
 fn input(name: &str, w: u32, h: u32) -> Input {
     let path = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../../scenes")).join(format!("{name}.json"));
-    let scene::Input::Scene(s) = scene::Input::load(&path).expect("a shipped scene loads") else {
-        panic!("{name} is a scene");
-    };
-    let s = s.with_size(w, h).expect("a valid size");
-    Input {
-        name: name.into(),
-        key: 1,
-        trilist: s.to_trilist().expect("the scene's geometry runs"),
-        background: s.background,
-        cull_back: s.cull_back,
-    }
+    Input::scene(&path, w, h).expect("a shipped scene loads")
 }
 
 /// A small grid: both methods, two knobs, a joint sample.
@@ -93,4 +83,34 @@ fn sweep_skips_what_the_shading_engines_cannot_draw() {
     assert!(s.starts_with("cube: point se z.frac=24") && s.contains("2 to 32 bits"), "{s}");
     // The engines draw what the scanline pipeline draws, to within their rounding.
     assert!(swept.rows.iter().all(|r| r.problems == 0 && r.psnr_db > 30.0));
+}
+
+/// Cost and clock: measured at the default design (Yosys' raster_top among the calibration
+/// samples, the routed clock), modelled at a design never built, absent where no RTL
+/// pipeline exists (vector).
+#[test]
+fn sweep_rows_carry_cost_and_clock_measured_or_modelled() {
+    use sweep::area::{Model, PIPELINE};
+    use sweep::row::Source;
+    let swept = run(&[input("cube", 48, 32)], &grid().points(), &Options::default(), &|| {}).unwrap();
+    let row = |method: &str, point: &str| {
+        swept.rows.iter().find(|r| r.method == method && r.point == point).unwrap_or_else(|| panic!("{method} {point}"))
+    };
+    let default = row("scanline", "default");
+    let n10 = Model::calibrated().samples.iter().find(|s| s.build == "n10" && s.unit == PIPELINE).unwrap();
+    assert_eq!((default.cost, default.cost_source), (Some(n10.cost), Some(Source::Measured)));
+    assert_eq!((default.clock_mhz, default.clock_source), (Some(sweep::clock::PIPELINE_MHZ), Some(Source::Measured)));
+    assert_eq!(default.frame_us, Some(default.cycles as f64 / sweep::clock::PIPELINE_MHZ));
+    // One multiplier instead of 7: fewer DSP blocks, modelled; the same widths, the same clock.
+    let k1 = row("scanline", "K=1");
+    let (c1, c7) = (k1.cost.unwrap(), default.cost.unwrap());
+    assert_eq!(k1.cost_source, Some(Source::Modelled));
+    assert!(c1.ecp5_dsp < c7.ecp5_dsp && c1.ge < c7.ge, "{c1:?} {c7:?}");
+    assert_eq!((k1.clock_mhz, k1.clock_source), (Some(sweep::clock::PIPELINE_MHZ), Some(Source::Modelled)));
+    // 6 subpixel bits with every other quantity wide: a larger, slower design.
+    let wide = row("scanline", "xy.frac=6");
+    assert!(wide.cost.unwrap().ge > c7.ge && wide.clock_mhz.unwrap() < sweep::clock::PIPELINE_MHZ);
+    for r in swept.rows.iter().filter(|r| r.method == "vector") {
+        assert_eq!((r.cost, r.clock_mhz, r.frame_us), (None, None, None), "{} {}", r.method, r.point);
+    }
 }

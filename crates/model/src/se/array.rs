@@ -47,7 +47,7 @@
 //! old-z read would otherwise overtake the previous span's writes to that row. Spans
 //! wholly off screen are not issued. Frame cycles: the last issue plus the latency.
 
-use super::{Se, SeCmd, SeIn, SeParams, PORTS};
+use super::{Se, SeCmd, SeIn, SeParams, PORTS, SPAN_X_BITS};
 use crate::ctx::Ctx;
 use crate::cull_sort::{cull_sort, z_max, Clip, Cull, Reject};
 use crate::edge_walk::{edge_walk, SpanCmd};
@@ -202,9 +202,16 @@ pub struct SeRender {
 }
 
 /// The engines of [`engine_params`] for a screen `width` columns wide (index 0); errs when
-/// they cannot draw it: the screen wider than the engines' X reaches, or the formats need
-/// words wider than 32 bits.
+/// they cannot draw it: the screen wider than the engines' X reaches, span ends (anywhere
+/// in the `xy` range the front end clips to) beyond the engines' [`SPAN_X_BITS`]-bit span
+/// ends, or the formats need words wider than 32 bits.
 pub fn array_params(width: u32, f: &Formats) -> Result<SeParams, String> {
+    if f.xy.int + 1 > SPAN_X_BITS {
+        return Err(format!(
+            "no SE array at xy = {}: its span ends reach +-2^{} px, the engines' span ends hold {SPAN_X_BITS} bits",
+            f.xy, f.xy.int
+        ));
+    }
     let prm = engine_params(f);
     let engines = width.div_ceil(prm.p);
     let why =

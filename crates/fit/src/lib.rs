@@ -1,0 +1,7 @@
+//! `edgepaint fit`: model no more than a workload needs. [`target::Target`] is the accuracy
+//! a user asks for (`--target SPEC`); [`search::fit`] finds the narrowest formats of the
+//! scanline pipeline with which every scene of the workload meets it, by the bit-exact
+//! models against the float reference, then setup's parameters for an objective.
+
+pub mod search;
+pub mod target;

@@ -1,0 +1,259 @@
+//! The search: the narrowest formats of the scanline pipeline with which every scene of a
+//! workload meets a [`Target`], then setup's parameters for an [`Objective`].
+//!
+//! A candidate design is a sweep point (`sweep::grid::Point`, kind `joint`: the knobs set,
+//! every other quantity following by the defaults' rules, `fx::Formats::follow`) at the
+//! workload's size class (its largest screen's), run on every scene through the bit-exact
+//! model and the float reference by `sweep::run` (in parallel, cached in the sweep's
+//! cache). It *passes* when the RTL can be built at it (`rtl::config::check`) and every
+//! scene meets every term of the target.
+//!
+//! Fraction bits are fitted one knob at a time by bisection between a floor and the
+//! knob's passing value: first the quantities the vertices carry (`xy`, `z`, `color`,
+//! `ooa`), their accumulators following, then the internal ones (`ooa_d`, `z_acc`, `c_acc`),
+//! which start where the rules put them. Rounds repeat until none moves a knob. Then each
+//! knob one bit narrower is run again: it must fail (the design is minimal knob by knob),
+//! and if one passes after all (the error is not monotonic in the bits) the descent goes
+//! on from there. The default design is the start; when it misses the target the start is
+//! every knob at its ceiling, and a target that misses there is an error.
+//!
+//! Setup's multipliers `K` and the divider's stages `L` change cycles and area, not pixels:
+//! they are chosen last, over K 1 to 7 and L 1 to 8, by the objective (the area model's
+//! gate equivalents, the workload's mean cycles per frame, or their product).
+
+use crate::target::Target;
+use std::collections::BTreeMap;
+use sweep::area::{Cost, Design, Model};
+use sweep::grid::{Method, Point};
+use sweep::row::Row;
+use sweep::run::{run, Input, Options};
+
+/// A design as the search names it: knobs and parameters with their values (a sweep
+/// point's `set`).
+pub type Set = BTreeMap<String, u32>;
+
+/// For each knob above its floor, the trial one bit narrower.
+pub type Narrower = Vec<(String, Trial)>;
+
+/// What K and L are chosen for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Objective {
+    /// Fewest gate equivalents (area model).
+    Area,
+    /// Fewest cycles per frame, mean over the workload.
+    Cycles,
+    /// Least gate equivalents x mean cycles.
+    AreaCycles,
+}
+
+/// The knobs fitted, in the order fitted, with the floor and ceiling of their fraction
+/// bits: the floors are the least a format can hold (the RTL's rules, `rtl::config`, refuse
+/// what it cannot build above them), the ceilings the sweep's widest.
+pub const KNOBS: [(&str, u32, u32); 7] = [
+    ("xy.frac", 0, 8),
+    ("z.frac", 1, 32),
+    ("color.frac", 0, 8),
+    ("ooa.frac", 1, 32),
+    ("ooa_d.frac", 1, 48),
+    ("z_acc.frac", 1, 56),
+    ("c_acc.frac", 0, 40),
+];
+
+/// Knob `knob`'s fraction bits in `f`.
+fn frac(f: &fx::Formats, knob: &str) -> u32 {
+    match knob {
+        "xy.frac" => f.xy.frac,
+        "z.frac" => f.z.frac,
+        "color.frac" => f.color.frac,
+        "ooa.frac" => f.ooa.frac,
+        "ooa_d.frac" => f.ooa_d.frac,
+        "z_acc.frac" => f.z_acc.frac,
+        _ => f.c_acc.frac,
+    }
+}
+
+/// A design tried, and how it did.
+#[derive(Clone, Debug)]
+pub struct Trial {
+    pub set: Set,
+    /// One row per scene (empty when the RTL cannot be built at the formats).
+    pub rows: Vec<Row>,
+    /// Why it fails: the RTL's rule it breaks, or `<scene>: <term missed>`; empty when it
+    /// passes.
+    pub misses: Vec<String>,
+}
+
+impl Trial {
+    pub fn passes(&self) -> bool {
+        self.misses.is_empty()
+    }
+}
+
+/// The fitted design.
+#[derive(Clone, Debug)]
+pub struct Fitted {
+    /// The knobs and K, L (a sweep point's set).
+    pub set: Set,
+    pub design: Design,
+    /// Its rows, one per scene, and the default design's.
+    pub rows: Vec<Row>,
+    pub default_rows: Vec<Row>,
+    /// For each knob above its floor: the trial one bit narrower, which fails.
+    pub narrower: Narrower,
+    /// Designs evaluated (each a run over the workload; cached ones included).
+    pub trials: usize,
+}
+
+/// The search's state: the workload, the target, how to run.
+pub struct Search<'a> {
+    pub inputs: &'a [Input],
+    pub target: &'a Target,
+    pub opts: &'a Options,
+    /// The design's size class: the largest screen's.
+    pub class: u32,
+    pub trials: usize,
+}
+
+impl<'a> Search<'a> {
+    pub fn new(inputs: &'a [Input], target: &'a Target, opts: &'a Options) -> Search<'a> {
+        let class = inputs.iter().map(|i| fx::resolution_bits(i.trilist.width, i.trilist.height)).max().unwrap_or(10);
+        Search { inputs, target, opts, class, trials: 0 }
+    }
+
+    /// The point of `set` at the workload's class.
+    fn point(&self, set: &Set) -> Point {
+        let name: Vec<String> = set.iter().map(|(k, v)| format!("{k}={v}")).collect();
+        Point {
+            method: Method::Scanline,
+            name: format!("fit {}", name.join(" ")),
+            kind: "joint".into(),
+            set: set.clone(),
+            class: Some(self.class),
+        }
+    }
+
+    /// The design of `set`: the formats it resolves to at the workload's class, K and L.
+    pub fn design(&self, set: &Set) -> Result<Design, String> {
+        let side = 1u32 << self.class.min(16);
+        let (formats, params) = self.point(set).resolve(side, side)?;
+        Ok(Design { class: self.class, formats, k: params["K"], l: params["L"] })
+    }
+
+    /// Runs `set` on the workload.
+    pub fn trial(&mut self, set: &Set) -> Result<Trial, String> {
+        self.trials += 1;
+        let design = match self.design(set) {
+            Ok(d) => d,
+            Err(e) => return Ok(Trial { set: set.clone(), rows: Vec::new(), misses: vec![e] }),
+        };
+        if let Err(e) = rtl::config::check(design.class, &design.formats) {
+            return Ok(Trial { set: set.clone(), rows: Vec::new(), misses: vec![e] });
+        }
+        let rows = run(self.inputs, &[self.point(set)], self.opts, &|| {})?.rows;
+        let misses = rows
+            .iter()
+            .flat_map(|r| self.target.misses(r).into_iter().map(move |m| format!("{}: {m}", r.scene)))
+            .collect();
+        Ok(Trial { set: set.clone(), rows, misses })
+    }
+
+    /// The smallest value of `knob` in [lo, hi] with which `set` passes, `hi` passing.
+    fn bisect(&mut self, set: &mut Set, knob: &str, mut lo: u32, mut hi: u32) -> Result<(), String> {
+        while lo < hi {
+            let mid = (lo + hi) / 2;
+            set.insert(knob.into(), mid);
+            if self.trial(set)?.passes() {
+                hi = mid;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        set.insert(knob.into(), hi);
+        Ok(())
+    }
+
+    /// The fitted formats' knobs (K and L at their defaults): see the module documentation.
+    pub fn formats(&mut self) -> Result<(Set, Narrower), String> {
+        let mut set = Set::new();
+        if !self.trial(&set)?.passes() {
+            set = KNOBS.iter().map(|(k, _, hi)| (k.to_string(), *hi)).collect();
+            let wide = self.trial(&set)?;
+            if !wide.passes() {
+                return Err(format!(
+                    "the target is not met even with every knob at its ceiling ({}): {}",
+                    KNOBS.iter().map(|(k, _, hi)| format!("{k}={hi}")).collect::<Vec<_>>().join(", "),
+                    wide.misses.join("; ")
+                ));
+            }
+        }
+        loop {
+            let before = set.clone();
+            for (knob, floor, _) in KNOBS {
+                let current = frac(&self.design(&set)?.formats, knob);
+                set.insert(knob.into(), current);
+                self.bisect(&mut set, knob, floor.min(current), current)?;
+            }
+            let mut narrower = Vec::new();
+            let mut moved = false;
+            for (knob, floor, _) in KNOBS {
+                let v = set[knob];
+                if v <= floor {
+                    continue;
+                }
+                let mut less = set.clone();
+                less.insert(knob.into(), v - 1);
+                let t = self.trial(&less)?;
+                if t.passes() {
+                    set = less;
+                    moved = true;
+                    break;
+                }
+                narrower.push((knob.to_string(), t));
+            }
+            if !moved && set == before {
+                return Ok((set, narrower));
+            }
+        }
+    }
+
+    /// K and L for `objective` at the fitted knobs `set`: the design, its rows.
+    pub fn params(&mut self, set: &Set, objective: Objective, model: &Model) -> Result<(Set, Vec<Row>), String> {
+        let mut best: Option<(f64, Set, Vec<Row>)> = None;
+        for k in 1..=7 {
+            for l in 1..=8 {
+                let mut s = set.clone();
+                s.extend([("K".to_string(), k), ("L".to_string(), l)]);
+                let t = self.trial(&s)?;
+                if !t.passes() {
+                    continue;
+                }
+                let ge = model.pipeline(&self.design(&s)?).ge;
+                let cycles = t.rows.iter().map(|r| r.cycles as f64).sum::<f64>() / t.rows.len().max(1) as f64;
+                let score = match objective {
+                    Objective::Area => ge + cycles * 1e-9,
+                    Objective::Cycles => cycles + ge * 1e-9,
+                    Objective::AreaCycles => ge * cycles,
+                };
+                if best.as_ref().is_none_or(|(b, ..)| score < *b) {
+                    best = Some((score, s, t.rows));
+                }
+            }
+        }
+        best.map(|(_, s, rows)| (s, rows)).ok_or_else(|| "no K and L pass at the fitted formats".to_string())
+    }
+}
+
+/// Fits the workload: formats, then K and L; the default design's rows beside.
+pub fn fit(inputs: &[Input], target: &Target, objective: Objective, opts: &Options) -> Result<Fitted, String> {
+    let model = opts.area.as_ref().unwrap_or_else(|| Model::calibrated());
+    let mut s = Search::new(inputs, target, opts);
+    let (knobs, narrower) = s.formats()?;
+    let (set, rows) = s.params(&knobs, objective, model)?;
+    let default_rows = s.trial(&Set::new())?.rows;
+    Ok(Fitted { design: s.design(&set)?, set, rows, default_rows, narrower, trials: s.trials })
+}
+
+/// The modelled cost of `d` (the calibration's measurement where it has one).
+pub fn cost(d: &Design, model: &Model) -> Cost {
+    model.measured(d).unwrap_or_else(|| model.pipeline(d))
+}

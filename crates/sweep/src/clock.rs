@@ -1,0 +1,78 @@
+//! The clock model: the scanline pipeline's clock at formats and parameters that were not
+//! placed and routed.
+//!
+//! Each unit's Fmax was measured once, at the default design (nextpnr-ecp5, `edgepaint
+//! report`, README "Units"). Elsewhere a unit's critical path is taken to scale with the
+//! width of the carry chain or logic it runs through ([`critical_bits`]): the delay at a
+//! design is the measured delay times the ratio of the widths. The pipeline runs at its
+//! slowest unit's clock, times the ratio of `raster_top`'s measured Fmax to its slowest
+//! unit's at the default (routing the composed design costs or gains that much).
+
+use crate::area::Design;
+use rtl::config::Widths;
+
+/// ECP5 Fmax in MHz of each unit at the default design (class 10, K = 7, L = 5), as
+/// placed and routed by the soak (README, "Units").
+pub const MEASURED_MHZ: [(&str, f64); 6] = [
+    ("cull_sort", 63.3),
+    ("triangle_setup", 18.9),
+    ("divider", 39.6),
+    ("edge_walk", 56.1),
+    ("span", 83.2),
+    ("pixel_out", 93.2),
+];
+/// `raster_top`'s ECP5 Fmax at the default design, MHz.
+pub const PIPELINE_MHZ: f64 = 19.7;
+
+/// The width, in bits, of what a unit's critical path runs through, the delay's measure:
+/// cull_sort's twice-the-area product (2 (xy + 1) bits); setup's normalisation of the area
+/// into the divider's divisor (`div_d`); the divider's stage, ceil((div_q - 1) / L)
+/// restoring steps of a `div_d`-bit subtraction in series; the edge walker's remainder
+/// update (`edge_d`); span's accumulators (`z_acc`, `c_acc`, the wider); pixel_out's depth
+/// compare (`depth`).
+pub fn critical_bits(unit: &str, d: &Design) -> f64 {
+    let w = Widths::of(d.class, &d.formats);
+    let bits = match unit {
+        "cull_sort" => 2 * (w.xy + 1),
+        "triangle_setup" => w.div_d,
+        "divider" => (w.div_q - 1).div_ceil(d.l.max(1) as usize) * w.div_d,
+        "edge_walk" => w.edge_d,
+        "span" => w.z_acc.max(w.c_acc),
+        _ => w.depth,
+    };
+    bits as f64
+}
+
+/// The modelled clock of the scanline pipeline at `d`, MHz; `default` is the design the
+/// Fmax were measured at.
+pub fn pipeline_mhz(d: &Design, default: &Design) -> f64 {
+    let slowest = |d: &Design| {
+        MEASURED_MHZ
+            .iter()
+            .map(|(unit, mhz)| mhz * critical_bits(unit, default) / critical_bits(unit, d))
+            .fold(f64::INFINITY, f64::min)
+    };
+    slowest(d) * PIPELINE_MHZ / slowest(default)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use fx::Formats;
+
+    fn design(class: u32, l: u32) -> Design {
+        Design { class, formats: Formats::for_n(class), k: 7, l }
+    }
+
+    #[test]
+    fn the_default_runs_at_its_measured_clock_and_wider_or_shallower_designs_slower() {
+        let d = design(10, 5);
+        assert!((pipeline_mhz(&d, &d) - PIPELINE_MHZ).abs() < 1e-9);
+        assert!(pipeline_mhz(&design(12, 5), &d) < PIPELINE_MHZ);
+        // One divider stage does all 5 stages' steps in series: it sets the clock.
+        let one = pipeline_mhz(&design(10, 1), &d);
+        let div = MEASURED_MHZ[2].1 * critical_bits("divider", &d) / critical_bits("divider", &design(10, 1));
+        assert!((one - div * PIPELINE_MHZ / MEASURED_MHZ[1].1).abs() < 1e-9, "{one} {div}");
+        assert!(one < PIPELINE_MHZ / 2.0);
+    }
+}
