@@ -165,7 +165,7 @@ fn report(
     let d = &fitted.design;
     let default = sweep::area::Design { class: d.class, formats: fx::Formats::for_n(d.class), k: 7, l: 5 };
     let (cf, cd) = (cost(d, model), cost(&default, model));
-    let mut md = format!("# edgepaint fit\n\nWorkload: {}. Target: `{}` (every scene; `problems=0` unless bounded). Objective: {}. Search: {} designs run in {secs:.1} s.\n\n",
+    let mut md = format!("# edgepaint fit\n\nWorkload: {}. Target: `{}` (every scene; `problems=0` unless bounded). Method: scanline (001/003), the one method with a pipeline in RTL. Objective: {}. Search: {} designs run in {secs:.1} s.\n\n",
         fitted.rows.iter().map(|r| r.scene.as_str()).collect::<Vec<_>>().join(", "), args.target, args.objective, fitted.trials);
     md += "| | default | fitted |\n|---|---|---|\n";
     md += &format!("| size class | {} | {} |\n| K, L | 7, 5 | {}, {} |\n", d.class, d.class, d.k, d.l);
@@ -215,7 +215,9 @@ fn report(
         for r in rows {
             md += &format!("| {} | {label} |", r.scene);
             for t in &target.terms {
-                md += &format!(" {}{} |", t.measure.of(r), if t.met(r) { "" } else { " (missed)" });
+                let v = t.measure.of(r);
+                let shown = if v.fract() == 0.0 || !v.is_finite() { format!("{v}") } else { format!("{v:.3}") };
+                md += &format!(" {shown}{} |", if t.met(r) { "" } else { " (missed)" });
             }
             md += "\n";
         }
