@@ -14,6 +14,8 @@
 
 use fx::Formats;
 use rtl::config::Widths;
+// The span FIFO's depth in span commands, the same in every build.
+use rtl::n10::span_fifo::SPAN_FIFO;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
@@ -21,8 +23,6 @@ use std::collections::BTreeMap;
 pub const UNITS: [&str; 5] = ["cull_sort", "triangle_setup", "edge_walk", "span", "pixel_out"];
 /// The whole pipeline: [`UNITS`] and the span FIFO.
 pub const PIPELINE: &str = "raster_top";
-/// Span commands the FIFO between the edge walk and span holds (`rtl::span_fifo::SPAN_FIFO`).
-const SPAN_FIFO: usize = 4;
 
 /// The costs the model gives, as `edgepaint report` measures them.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
