@@ -64,7 +64,6 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
     localparam  xy_msb = 8'hf;
     localparam  z_msb = 8'h11;
     localparam  area_msb = 8'h21;
-    localparam  delta_msb = 8'h10;
     localparam  frac = 8'h4;
     localparam  passed = 2'b0;
     localparam  outside = 2'b1;
@@ -72,6 +71,18 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
     localparam  zero_area = 2'b11;
     
     // Stub signals
+    reg  [15:0] wx$0$x;
+    wire  [16:0] wx$0$y;
+    reg  [15:0] wx$1$x;
+    wire  [16:0] wx$1$y;
+    reg  [15:0] wx$2$x;
+    wire  [16:0] wx$2$y;
+    reg  [15:0] wy$0$x;
+    wire  [16:0] wy$0$y;
+    reg  [15:0] wy$1$x;
+    wire  [16:0] wy$1$y;
+    reg  [15:0] wy$2$x;
+    wire  [16:0] wy$2$y;
     reg  [16:0] area_mul$0$a;
     reg  [16:0] area_mul$0$b;
     wire  [33:0] area_mul$0$p;
@@ -153,6 +164,7 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
     reg  full$d;
     wire  full$q;
     reg  full$clock;
+    wire  cull$on;
     
     // Local signals
     reg  [15:0] vx$0;
@@ -199,10 +211,6 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
     reg  far$2;
     reg  [15:0] right;
     reg  [15:0] bottom;
-    reg  [16:0] e1x;
-    reg  [16:0] e1y;
-    reg  [16:0] e2x;
-    reg  [16:0] e2y;
     reg  [33:0] area;
     reg  [15:0] key$0;
     reg  [15:0] key$1;
@@ -221,6 +229,30 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
     reg  leave;
     
     // Sub module instances
+    cull_sort$wx$0 wx$0(
+        .x(wx$0$x),
+        .y(wx$0$y)
+    );
+    cull_sort$wx$1 wx$1(
+        .x(wx$1$x),
+        .y(wx$1$y)
+    );
+    cull_sort$wx$2 wx$2(
+        .x(wx$2$x),
+        .y(wx$2$y)
+    );
+    cull_sort$wy$0 wy$0(
+        .x(wy$0$x),
+        .y(wy$0$y)
+    );
+    cull_sort$wy$1 wy$1(
+        .x(wy$1$x),
+        .y(wy$1$y)
+    );
+    cull_sort$wy$2 wy$2(
+        .x(wy$2$x),
+        .y(wy$2$y)
+    );
     cull_sort$area_mul$0 area_mul$0(
         .a(area_mul$0$a),
         .b(area_mul$0$b),
@@ -356,6 +388,9 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
         .q(full$q),
         .clock(full$clock)
     );
+    cull_sort$cull cull(
+        .on(cull$on)
+    );
     
     // Update code
     always @(*) begin
@@ -453,24 +488,28 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
         near$2 = vz$2[z_msb];
         far$2 = ~near$2 & (vz$2 > z_max);
         oc$2 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$2) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$2) << (32'h1))) & ~(1 << (32'h2)) | ((top$2) << (32'h2))) & ~(1 << (32'h3)) | ((below$2) << (32'h3))) & ~(1 << (32'h4)) | ((near$2) << (32'h4))) & ~(1 << (32'h5)) | ((far$2) << (32'h5)));
-        e1x = (((inp$v1_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v1_x[xy_msb]) << (delta_msb))) - (((inp$v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v0_x[xy_msb]) << (delta_msb)));
-        e1y = (((inp$v1_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v1_y[xy_msb]) << (delta_msb))) - (((inp$v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v0_y[xy_msb]) << (delta_msb)));
-        e2x = (((inp$v2_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v2_x[xy_msb]) << (delta_msb))) - (((inp$v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v0_x[xy_msb]) << (delta_msb)));
-        e2y = (((inp$v2_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v2_y[xy_msb]) << (delta_msb))) - (((inp$v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v0_y[xy_msb]) << (delta_msb)));
-        area_mul$0$a = e1x;
-        area_mul$0$b = e2y;
-        area_mul$1$a = e2x;
-        area_mul$1$b = e1y;
+        wx$0$x = vx$0;
+        wy$0$x = vy$0;
+        wx$1$x = vx$1;
+        wy$1$x = vy$1;
+        wx$2$x = vx$2;
+        wy$2$x = vy$2;
+        area_mul$0$a = wx$1$y - wx$0$y;
+        area_mul$0$b = wy$2$y - wy$0$y;
+        area_mul$1$a = wx$2$y - wx$0$y;
+        area_mul$1$b = wy$1$y - wy$0$y;
         area = area_mul$0$p - area_mul$1$p;
         code = passed;
-        if (cull_back & ~area[area_msb]) begin
-            code = back_face;
-        end
-        if (area == 32'h0) begin
-            code = zero_area;
-        end
-        if (|(oc$0 & oc$1 & oc$2)) begin
-            code = outside;
+        if (cull$on) begin
+            if (cull_back & ~area[area_msb]) begin
+                code = back_face;
+            end
+            if (area == 32'h0) begin
+                code = zero_area;
+            end
+            if (|(oc$0 & oc$1 & oc$2)) begin
+                code = outside;
+            end
         end
         key$0 = vy$0 ^ half;
         key$1 = vy$1 ^ half;
@@ -672,6 +711,22 @@ module cull_sort$crosses(d,q,clock);
     end
           
 endmodule // cull_sort$crosses
+
+
+module cull_sort$cull(on);
+    
+    // Module arguments
+    output reg  on;
+    
+    // Constant declarations
+    localparam  value = 1'b1;
+    
+    // Update code
+    always @(*) begin
+        on = value;
+    end
+    
+endmodule // cull_sort$cull
 
 
 module cull_sort$full(d,q,clock);
@@ -1109,3 +1164,129 @@ module cull_sort$sz$2(d,q,clock);
     end
           
 endmodule // cull_sort$sz$2
+
+
+module cull_sort$wx$0(x,y);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [16:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'hf;
+    localparam  ext = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 17'h1ffff);
+        if (x[msb]) begin
+            y = ((x) & 17'h1ffff) | ext;
+        end
+    end
+    
+endmodule // cull_sort$wx$0
+
+
+module cull_sort$wx$1(x,y);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [16:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'hf;
+    localparam  ext = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 17'h1ffff);
+        if (x[msb]) begin
+            y = ((x) & 17'h1ffff) | ext;
+        end
+    end
+    
+endmodule // cull_sort$wx$1
+
+
+module cull_sort$wx$2(x,y);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [16:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'hf;
+    localparam  ext = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 17'h1ffff);
+        if (x[msb]) begin
+            y = ((x) & 17'h1ffff) | ext;
+        end
+    end
+    
+endmodule // cull_sort$wx$2
+
+
+module cull_sort$wy$0(x,y);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [16:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'hf;
+    localparam  ext = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 17'h1ffff);
+        if (x[msb]) begin
+            y = ((x) & 17'h1ffff) | ext;
+        end
+    end
+    
+endmodule // cull_sort$wy$0
+
+
+module cull_sort$wy$1(x,y);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [16:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'hf;
+    localparam  ext = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 17'h1ffff);
+        if (x[msb]) begin
+            y = ((x) & 17'h1ffff) | ext;
+        end
+    end
+    
+endmodule // cull_sort$wy$1
+
+
+module cull_sort$wy$2(x,y);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [16:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'hf;
+    localparam  ext = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 17'h1ffff);
+        if (x[msb]) begin
+            y = ((x) & 17'h1ffff) | ext;
+        end
+    end
+    
+endmodule // cull_sort$wy$2

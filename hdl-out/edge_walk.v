@@ -89,6 +89,7 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
     output reg  [35:0] out$ddx_c2;
     
     // Stub signals
+    wire  clip_y$on;
     reg  maj$clock;
     reg  maj$load;
     reg  maj$step;
@@ -246,6 +247,9 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
     reg  [12:0] height_j;
     
     // Sub module instances
+    edge_walk$clip_y clip_y(
+        .on(clip_y$on)
+    );
     edge_walk$maj maj(
         .clock(maj$clock),
         .load(maj$load),
@@ -529,22 +533,26 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
             j_next = j$q - 32'h1;
         end
         last = k_next == total$q;
-        if (up$q) begin
-            if (j$q == 32'h0) begin
+        if (clip_y$on) begin
+            if (up$q) begin
+                if (j$q == 32'h0) begin
+                    last = 1'b1;
+                end
+            end
+            else if (j_next == height_j) begin
                 last = 1'b1;
             end
         end
-        else if (j_next == height_j) begin
-            last = 1'b1;
-        end
         no_rows = total$q == 32'h0;
-        if (up$q) begin
-            if (j_sign$neg) begin
+        if (clip_y$on) begin
+            if (up$q) begin
+                if (j_sign$neg) begin
+                    no_rows = 1'b1;
+                end
+            end
+            else if (~j_sign$neg & (j$q >= height_j)) begin
                 no_rows = 1'b1;
             end
-        end
-        else if (~j_sign$neg & (j$q >= height_j)) begin
-            no_rows = 1'b1;
         end
         out$y = ((j$q) & 10'h3ff);
         out$ddx_z = ddx_z$q;
@@ -579,7 +587,10 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
             out$right_c1 = maj$at_c1;
             out$right_c2 = maj$at_c2;
         end
-        valid = busy$q & walking$q & ~j_sign$neg & sides$lt;
+        valid = busy$q & walking$q & sides$lt;
+        if (clip_y$on & j_sign$neg) begin
+            valid = 1'b0;
+        end
         out$valid = valid;
         advance = busy$q & walking$q & (~valid | out$ready);
         switch = 1'b0;
@@ -653,7 +664,7 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
         if (accept) begin
             busy$d = 1'b1;
             walking$d = 1'b0;
-            up$d = inp$walk;
+            up$d = inp$walk & clip_y$on;
             maj_left$d = inp$maj_left;
             j$d = inp$maj_j;
             k$d = 32'h0;
@@ -736,6 +747,22 @@ module edge_walk$c0(d,q,clock);
     end
           
 endmodule // edge_walk$c0
+
+
+module edge_walk$clip_y(on);
+    
+    // Module arguments
+    output reg  on;
+    
+    // Constant declarations
+    localparam  value = 1'b1;
+    
+    // Update code
+    always @(*) begin
+        on = value;
+    end
+    
+endmodule // edge_walk$clip_y
 
 
 module edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);

@@ -23,6 +23,7 @@ module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,i
     output reg  idle;
     
     // Stub signals
+    wire  depth_test$on;
     reg  s1_valid$d;
     wire  s1_valid$q;
     reg  s1_valid$clock;
@@ -74,6 +75,9 @@ module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,i
     reg  pass;
     
     // Sub module instances
+    pixel_out$depth_test depth_test(
+        .on(depth_test$on)
+    );
     pixel_out$s1_valid s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
@@ -183,7 +187,7 @@ module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,i
         rgb$hi = rg$out;
         rgb$lo = inp$rgb2;
         inp$ready = mem$ready;
-        mem$rd_en = inp$valid;
+        mem$rd_en = inp$valid & depth_test$on;
         mem$rd_addr = addr$out;
         old_z = mem$rd_z;
         if (s3_valid$q & (s3_addr$q == s1_addr$q)) begin
@@ -192,7 +196,10 @@ module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,i
         if (s2_write$q & (s2_addr$q == s1_addr$q)) begin
             old_z = s2_z$q;
         end
-        pass = s1_valid$q & (s1_z$q < old_z);
+        pass = s1_valid$q;
+        if (depth_test$on & (s1_z$q >= old_z)) begin
+            pass = 1'b0;
+        end
         mem$wr_en = s2_write$q;
         mem$wr_addr = s2_addr$q;
         mem$wr_z = s2_z$q;
@@ -233,6 +240,22 @@ module pixel_out$addr(hi,lo,out);
     end
     
 endmodule // pixel_out$addr
+
+
+module pixel_out$depth_test(on);
+    
+    // Module arguments
+    output reg  on;
+    
+    // Constant declarations
+    localparam  value = 1'b1;
+    
+    // Update code
+    always @(*) begin
+        on = value;
+    end
+    
+endmodule // pixel_out$depth_test
 
 
 module pixel_out$rg(hi,lo,out);

@@ -1032,6 +1032,7 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
     output reg  [35:0] out$ddx_c2;
     
     // Stub signals
+    wire  clip_y$on;
     reg  maj$clock;
     reg  maj$load;
     reg  maj$step;
@@ -1189,6 +1190,9 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
     reg  [12:0] height_j;
     
     // Sub module instances
+    raster_top$core$edge_walk$clip_y clip_y(
+        .on(clip_y$on)
+    );
     raster_top$core$edge_walk$maj maj(
         .clock(maj$clock),
         .load(maj$load),
@@ -1472,22 +1476,26 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
             j_next = j$q - 32'h1;
         end
         last = k_next == total$q;
-        if (up$q) begin
-            if (j$q == 32'h0) begin
+        if (clip_y$on) begin
+            if (up$q) begin
+                if (j$q == 32'h0) begin
+                    last = 1'b1;
+                end
+            end
+            else if (j_next == height_j) begin
                 last = 1'b1;
             end
         end
-        else if (j_next == height_j) begin
-            last = 1'b1;
-        end
         no_rows = total$q == 32'h0;
-        if (up$q) begin
-            if (j_sign$neg) begin
+        if (clip_y$on) begin
+            if (up$q) begin
+                if (j_sign$neg) begin
+                    no_rows = 1'b1;
+                end
+            end
+            else if (~j_sign$neg & (j$q >= height_j)) begin
                 no_rows = 1'b1;
             end
-        end
-        else if (~j_sign$neg & (j$q >= height_j)) begin
-            no_rows = 1'b1;
         end
         out$y = ((j$q) & 10'h3ff);
         out$ddx_z = ddx_z$q;
@@ -1522,7 +1530,10 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
             out$right_c1 = maj$at_c1;
             out$right_c2 = maj$at_c2;
         end
-        valid = busy$q & walking$q & ~j_sign$neg & sides$lt;
+        valid = busy$q & walking$q & sides$lt;
+        if (clip_y$on & j_sign$neg) begin
+            valid = 1'b0;
+        end
         out$valid = valid;
         advance = busy$q & walking$q & (~valid | out$ready);
         switch = 1'b0;
@@ -1596,7 +1607,7 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
         if (accept) begin
             busy$d = 1'b1;
             walking$d = 1'b0;
-            up$d = inp$walk;
+            up$d = inp$walk & clip_y$on;
             maj_left$d = inp$maj_left;
             j$d = inp$maj_j;
             k$d = 32'h0;
@@ -1679,6 +1690,22 @@ module raster_top$core$edge_walk$c0(d,q,clock);
     end
           
 endmodule // raster_top$core$edge_walk$c0
+
+
+module raster_top$core$edge_walk$clip_y(on);
+    
+    // Module arguments
+    output reg  on;
+    
+    // Constant declarations
+    localparam  value = 1'b1;
+    
+    // Update code
+    always @(*) begin
+        on = value;
+    end
+    
+endmodule // raster_top$core$edge_walk$clip_y
 
 
 module raster_top$core$edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
@@ -6862,6 +6889,8 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
     output reg  idle;
     
     // Stub signals
+    wire  clip_x$on;
+    wire  clip_z$on;
     reg  busy$d;
     wire  busy$q;
     reg  busy$clock;
@@ -6945,6 +6974,12 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
     reg  accept;
     
     // Sub module instances
+    raster_top$core$span$clip_x clip_x(
+        .on(clip_x$on)
+    );
+    raster_top$core$span$clip_z clip_z(
+        .on(clip_z$on)
+    );
     raster_top$core$span$busy busy(
         .d(busy$d),
         .q(busy$q),
@@ -7100,7 +7135,13 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         c0$x = a_c0$q;
         c1$x = a_c1$q;
         c2$x = a_c2$q;
-        valid = busy$q & ~drop$q & (x$q < width_x) & ~zp$neg & ~zp$over;
+        valid = busy$q & ~drop$q;
+        if (clip_x$on & (x$q >= width_x)) begin
+            valid = 1'b0;
+        end
+        if (clip_z$on & (zp$neg | zp$over)) begin
+            valid = 1'b0;
+        end
         out$valid = valid;
         out$x = ((x$q) & 10'h3ff);
         out$y = y$q;
@@ -7161,14 +7202,20 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         xl_on$b = width_x;
         if (accept) begin
             busy$d = 1'b1;
-            drop$d = ~xl_on$lt | xr_neg$neg | (zl$neg & zr$neg) | (zl$over & zr$over);
+            drop$d = 1'b0;
+            if (clip_x$on & (~xl_on$lt | xr_neg$neg)) begin
+                drop$d = 1'b1;
+            end
+            if (clip_z$on & ((zl$neg & zr$neg) | (zl$over & zr$over))) begin
+                drop$d = 1'b1;
+            end
             y$d = inp$y;
             d_z$d = ((inp$ddx_z) & 36'hfffffffff);
             d_c0$d = ((inp$ddx_c0) & 32'hffffffff);
             d_c1$d = ((inp$ddx_c1) & 32'hffffffff);
             d_c2$d = ((inp$ddx_c2) & 32'hffffffff);
-            left$d = xl_neg$neg;
-            if (xl_neg$neg) begin
+            left$d = xl_neg$neg & clip_x$on;
+            if (xl_neg$neg & clip_x$on) begin
                 x$d = inp$xr;
                 last$d = 32'h0;
                 a_z$d = inp$right_z;
@@ -7179,7 +7226,7 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
             else begin
                 x$d = inp$xl;
                 last$d = inp$xr;
-                if (inp$xr >= width_x) begin
+                if (clip_x$on & (inp$xr >= width_x)) begin
                     last$d = width_x - 32'h1;
                 end
                 a_z$d = inp$left_z;
@@ -7475,6 +7522,38 @@ module raster_top$core$span$c2$x_neg(x,neg);
     end
     
 endmodule // raster_top$core$span$c2$x_neg
+
+
+module raster_top$core$span$clip_x(on);
+    
+    // Module arguments
+    output reg  on;
+    
+    // Constant declarations
+    localparam  value = 1'b1;
+    
+    // Update code
+    always @(*) begin
+        on = value;
+    end
+    
+endmodule // raster_top$core$span$clip_x
+
+
+module raster_top$core$span$clip_z(on);
+    
+    // Module arguments
+    output reg  on;
+    
+    // Constant declarations
+    localparam  value = 1'b1;
+    
+    // Update code
+    always @(*) begin
+        on = value;
+    end
+    
+endmodule // raster_top$core$span$clip_z
 
 
 module raster_top$core$span$d_c0(d,q,clock);
@@ -8548,12 +8627,12 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [18:0] cv$0;
     reg  [18:0] cv$1;
     reg  [18:0] cv$2;
-    reg  [12:0] span_fe;
-    reg  [12:0] span_fm;
-    reg  [12:0] span_me;
-    reg  [18:0] diff_fe;
-    reg  [18:0] diff_fm;
-    reg  [18:0] diff_me;
+    reg  [12:0] span$0;
+    reg  [12:0] span$1;
+    reg  [12:0] span$2;
+    reg  [18:0] diff$0;
+    reg  [18:0] diff$1;
+    reg  [18:0] diff$2;
     reg  up;
     reg  maj_left;
     reg  [57:0] edx$0;
@@ -9509,36 +9588,36 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         cv$2 = ((yn$2 + half_m1) & int_mask) | half;
         kdx$0 = xw$2 - xw$0;
         kdy$0 = yw$2 - yw$0;
+        diff$0 = cv$2 - cv$0;
         kdx$1 = xw$1 - xw$0;
         kdy$1 = yw$1 - yw$0;
+        diff$1 = cv$1 - cv$0;
         kdx$2 = xw$2 - xw$1;
         kdy$2 = yw$2 - yw$1;
-        diff_fe = cv$2 - cv$0;
-        diff_fm = cv$1 - cv$0;
-        diff_me = cv$2 - cv$1;
-        span_fe = diff_fe[(frac)+:(13)];
-        if (diff_fe[nb_msb]) begin
-            span_fe = 32'h0;
+        diff$2 = cv$2 - cv$1;
+        span$0 = diff$0[(frac)+:(13)];
+        if (diff$0[nb_msb]) begin
+            span$0 = 32'h0;
         end
-        span_fm = diff_fm[(frac)+:(13)];
-        if (diff_fm[nb_msb]) begin
-            span_fm = 32'h0;
+        span$1 = diff$1[(frac)+:(13)];
+        if (diff$1[nb_msb]) begin
+            span$1 = 32'h0;
         end
-        span_me = diff_me[(frac)+:(13)];
-        if (diff_me[nb_msb]) begin
-            span_me = 32'h0;
+        span$2 = diff$2[(frac)+:(13)];
+        if (diff$2[nb_msb]) begin
+            span$2 = 32'h0;
         end
         up = crosses$q[top_bit] & ~crosses$q[bottom_bit];
         maj_left = area$q[area_msb];
         edx$0 = kdx$0;
         edy$0 = kdy$0;
-        count$0 = span_fe;
+        count$0 = span$0;
         edx$1 = kdx$1;
         edy$1 = kdy$1;
-        count$1 = span_fm;
+        count$1 = span$1;
         edx$2 = kdx$2;
         edy$2 = kdy$2;
-        count$2 = span_me;
+        count$2 = span$2;
         bx$0 = xn$0;
         by$0 = yn$0;
         cy$0 = cv$0;
@@ -9551,10 +9630,10 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         if (up) begin
             edx$1 = kdx$2;
             edy$1 = kdy$2;
-            count$1 = span_me;
+            count$1 = span$2;
             edx$2 = kdx$1;
             edy$2 = kdy$1;
-            count$2 = span_fm;
+            count$2 = span$1;
             bx$0 = xn$2;
             by$0 = yn$2;
             cy$0 = cv$2 - (frac_mask + 32'h1);
@@ -9568,9 +9647,11 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             tracked$0 = x$0$q;
         end
         tracked$1 = x$1$q;
-        tracked$2 = x$2$q;
         if (maj_left) begin
             tracked$1 = x$1$q - 32'h1;
+        end
+        tracked$2 = x$2$q;
+        if (maj_left) begin
             tracked$2 = x$2$q - 32'h1;
         end
         ed16$0 = edy$0[(32'h0)+:(34)] << frac;
@@ -9606,15 +9687,15 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         dmaj$0 = zn$2 - zn$0;
         dbot$0 = zn$1 - zn$0;
         attr0$0 = ((zn$0) & 40'hffffffffff);
+        attr0$1 = ((vc$0$q) & 40'hffffffffff);
+        attr0$2 = ((vc$1$q) & 40'hffffffffff);
+        attr0$3 = ((vc$2$q) & 40'hffffffffff);
         dmaj$1 = cn$6 - cn$0;
         dbot$1 = cn$3 - cn$0;
         dmaj$2 = cn$7 - cn$1;
         dbot$2 = cn$4 - cn$1;
         dmaj$3 = cn$8 - cn$2;
         dbot$3 = cn$5 - cn$2;
-        attr0$1 = ((vc$0$q) & 40'hffffffffff);
-        attr0$2 = ((vc$1$q) & 40'hffffffffff);
-        attr0$3 = ((vc$2$q) & 40'hffffffffff);
         area_abs = area$q;
         if (area$q[area_msb]) begin
             area_abs = ((32'h0) & 34'h3ffffffff) - area$q;
@@ -9905,8 +9986,8 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         ps$34 = 32'h0;
         ps$35 = 32'h0;
         delta$0 = kdx$0[(32'h0)+:(19)];
-        delta$1 = kdx$1[(32'h0)+:(19)];
         delta$2 = kdy$0[(32'h0)+:(19)];
+        delta$1 = kdx$1[(32'h0)+:(19)];
         delta$3 = kdy$1[(32'h0)+:(19)];
         eq_b$0 = delta$0;
         if (maj_left) begin
@@ -15899,7 +15980,6 @@ module raster_top$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp
     localparam  xy_msb = 8'hf;
     localparam  z_msb = 8'h11;
     localparam  area_msb = 8'h21;
-    localparam  delta_msb = 8'h10;
     localparam  frac = 8'h4;
     localparam  passed = 2'b0;
     localparam  outside = 2'b1;
@@ -15907,6 +15987,18 @@ module raster_top$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp
     localparam  zero_area = 2'b11;
     
     // Stub signals
+    reg  [15:0] wx$0$x;
+    wire  [16:0] wx$0$y;
+    reg  [15:0] wx$1$x;
+    wire  [16:0] wx$1$y;
+    reg  [15:0] wx$2$x;
+    wire  [16:0] wx$2$y;
+    reg  [15:0] wy$0$x;
+    wire  [16:0] wy$0$y;
+    reg  [15:0] wy$1$x;
+    wire  [16:0] wy$1$y;
+    reg  [15:0] wy$2$x;
+    wire  [16:0] wy$2$y;
     reg  [16:0] area_mul$0$a;
     reg  [16:0] area_mul$0$b;
     wire  [33:0] area_mul$0$p;
@@ -15988,6 +16080,7 @@ module raster_top$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp
     reg  full$d;
     wire  full$q;
     reg  full$clock;
+    wire  cull$on;
     
     // Local signals
     reg  [15:0] vx$0;
@@ -16034,10 +16127,6 @@ module raster_top$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp
     reg  far$2;
     reg  [15:0] right;
     reg  [15:0] bottom;
-    reg  [16:0] e1x;
-    reg  [16:0] e1y;
-    reg  [16:0] e2x;
-    reg  [16:0] e2y;
     reg  [33:0] area;
     reg  [15:0] key$0;
     reg  [15:0] key$1;
@@ -16056,6 +16145,30 @@ module raster_top$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp
     reg  leave;
     
     // Sub module instances
+    raster_top$cull_sort$wx$0 wx$0(
+        .x(wx$0$x),
+        .y(wx$0$y)
+    );
+    raster_top$cull_sort$wx$1 wx$1(
+        .x(wx$1$x),
+        .y(wx$1$y)
+    );
+    raster_top$cull_sort$wx$2 wx$2(
+        .x(wx$2$x),
+        .y(wx$2$y)
+    );
+    raster_top$cull_sort$wy$0 wy$0(
+        .x(wy$0$x),
+        .y(wy$0$y)
+    );
+    raster_top$cull_sort$wy$1 wy$1(
+        .x(wy$1$x),
+        .y(wy$1$y)
+    );
+    raster_top$cull_sort$wy$2 wy$2(
+        .x(wy$2$x),
+        .y(wy$2$y)
+    );
     raster_top$cull_sort$area_mul$0 area_mul$0(
         .a(area_mul$0$a),
         .b(area_mul$0$b),
@@ -16191,6 +16304,9 @@ module raster_top$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp
         .q(full$q),
         .clock(full$clock)
     );
+    raster_top$cull_sort$cull cull(
+        .on(cull$on)
+    );
     
     // Update code
     always @(*) begin
@@ -16288,24 +16404,28 @@ module raster_top$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp
         near$2 = vz$2[z_msb];
         far$2 = ~near$2 & (vz$2 > z_max);
         oc$2 = ((((((((32'h0) & 6'h3f) & ~(1 << (32'h0)) | ((left$2) << (32'h0))) & ~(1 << (32'h1)) | ((right_of$2) << (32'h1))) & ~(1 << (32'h2)) | ((top$2) << (32'h2))) & ~(1 << (32'h3)) | ((below$2) << (32'h3))) & ~(1 << (32'h4)) | ((near$2) << (32'h4))) & ~(1 << (32'h5)) | ((far$2) << (32'h5)));
-        e1x = (((inp$v1_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v1_x[xy_msb]) << (delta_msb))) - (((inp$v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v0_x[xy_msb]) << (delta_msb)));
-        e1y = (((inp$v1_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v1_y[xy_msb]) << (delta_msb))) - (((inp$v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v0_y[xy_msb]) << (delta_msb)));
-        e2x = (((inp$v2_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v2_x[xy_msb]) << (delta_msb))) - (((inp$v0_x) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v0_x[xy_msb]) << (delta_msb)));
-        e2y = (((inp$v2_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v2_y[xy_msb]) << (delta_msb))) - (((inp$v0_y) & 17'h1ffff) & ~(1 << (delta_msb)) | ((inp$v0_y[xy_msb]) << (delta_msb)));
-        area_mul$0$a = e1x;
-        area_mul$0$b = e2y;
-        area_mul$1$a = e2x;
-        area_mul$1$b = e1y;
+        wx$0$x = vx$0;
+        wy$0$x = vy$0;
+        wx$1$x = vx$1;
+        wy$1$x = vy$1;
+        wx$2$x = vx$2;
+        wy$2$x = vy$2;
+        area_mul$0$a = wx$1$y - wx$0$y;
+        area_mul$0$b = wy$2$y - wy$0$y;
+        area_mul$1$a = wx$2$y - wx$0$y;
+        area_mul$1$b = wy$1$y - wy$0$y;
         area = area_mul$0$p - area_mul$1$p;
         code = passed;
-        if (cull_back & ~area[area_msb]) begin
-            code = back_face;
-        end
-        if (area == 32'h0) begin
-            code = zero_area;
-        end
-        if (|(oc$0 & oc$1 & oc$2)) begin
-            code = outside;
+        if (cull$on) begin
+            if (cull_back & ~area[area_msb]) begin
+                code = back_face;
+            end
+            if (area == 32'h0) begin
+                code = zero_area;
+            end
+            if (|(oc$0 & oc$1 & oc$2)) begin
+                code = outside;
+            end
         end
         key$0 = vy$0 ^ half;
         key$1 = vy$1 ^ half;
@@ -16507,6 +16627,22 @@ module raster_top$cull_sort$crosses(d,q,clock);
     end
           
 endmodule // raster_top$cull_sort$crosses
+
+
+module raster_top$cull_sort$cull(on);
+    
+    // Module arguments
+    output reg  on;
+    
+    // Constant declarations
+    localparam  value = 1'b1;
+    
+    // Update code
+    always @(*) begin
+        on = value;
+    end
+    
+endmodule // raster_top$cull_sort$cull
 
 
 module raster_top$cull_sort$full(d,q,clock);
@@ -16946,6 +17082,132 @@ module raster_top$cull_sort$sz$2(d,q,clock);
 endmodule // raster_top$cull_sort$sz$2
 
 
+module raster_top$cull_sort$wx$0(x,y);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [16:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'hf;
+    localparam  ext = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 17'h1ffff);
+        if (x[msb]) begin
+            y = ((x) & 17'h1ffff) | ext;
+        end
+    end
+    
+endmodule // raster_top$cull_sort$wx$0
+
+
+module raster_top$cull_sort$wx$1(x,y);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [16:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'hf;
+    localparam  ext = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 17'h1ffff);
+        if (x[msb]) begin
+            y = ((x) & 17'h1ffff) | ext;
+        end
+    end
+    
+endmodule // raster_top$cull_sort$wx$1
+
+
+module raster_top$cull_sort$wx$2(x,y);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [16:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'hf;
+    localparam  ext = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 17'h1ffff);
+        if (x[msb]) begin
+            y = ((x) & 17'h1ffff) | ext;
+        end
+    end
+    
+endmodule // raster_top$cull_sort$wx$2
+
+
+module raster_top$cull_sort$wy$0(x,y);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [16:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'hf;
+    localparam  ext = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 17'h1ffff);
+        if (x[msb]) begin
+            y = ((x) & 17'h1ffff) | ext;
+        end
+    end
+    
+endmodule // raster_top$cull_sort$wy$0
+
+
+module raster_top$cull_sort$wy$1(x,y);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [16:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'hf;
+    localparam  ext = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 17'h1ffff);
+        if (x[msb]) begin
+            y = ((x) & 17'h1ffff) | ext;
+        end
+    end
+    
+endmodule // raster_top$cull_sort$wy$1
+
+
+module raster_top$cull_sort$wy$2(x,y);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [16:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'hf;
+    localparam  ext = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 17'h1ffff);
+        if (x[msb]) begin
+            y = ((x) & 17'h1ffff) | ext;
+        end
+    end
+    
+endmodule // raster_top$cull_sort$wy$2
+
+
 module raster_top$last_in(d,q,clock);
     
     // Module arguments
@@ -16988,6 +17250,7 @@ module raster_top$pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0
     output reg  idle;
     
     // Stub signals
+    wire  depth_test$on;
     reg  s1_valid$d;
     wire  s1_valid$q;
     reg  s1_valid$clock;
@@ -17039,6 +17302,9 @@ module raster_top$pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0
     reg  pass;
     
     // Sub module instances
+    raster_top$pixel_out$depth_test depth_test(
+        .on(depth_test$on)
+    );
     raster_top$pixel_out$s1_valid s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
@@ -17148,7 +17414,7 @@ module raster_top$pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0
         rgb$hi = rg$out;
         rgb$lo = inp$rgb2;
         inp$ready = mem$ready;
-        mem$rd_en = inp$valid;
+        mem$rd_en = inp$valid & depth_test$on;
         mem$rd_addr = addr$out;
         old_z = mem$rd_z;
         if (s3_valid$q & (s3_addr$q == s1_addr$q)) begin
@@ -17157,7 +17423,10 @@ module raster_top$pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0
         if (s2_write$q & (s2_addr$q == s1_addr$q)) begin
             old_z = s2_z$q;
         end
-        pass = s1_valid$q & (s1_z$q < old_z);
+        pass = s1_valid$q;
+        if (depth_test$on & (s1_z$q >= old_z)) begin
+            pass = 1'b0;
+        end
         mem$wr_en = s2_write$q;
         mem$wr_addr = s2_addr$q;
         mem$wr_z = s2_z$q;
@@ -17198,6 +17467,22 @@ module raster_top$pixel_out$addr(hi,lo,out);
     end
     
 endmodule // raster_top$pixel_out$addr
+
+
+module raster_top$pixel_out$depth_test(on);
+    
+    // Module arguments
+    output reg  on;
+    
+    // Constant declarations
+    localparam  value = 1'b1;
+    
+    // Update code
+    always @(*) begin
+        on = value;
+    end
+    
+endmodule // raster_top$pixel_out$depth_test
 
 
 module raster_top$pixel_out$rg(hi,lo,out);

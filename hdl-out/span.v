@@ -33,6 +33,8 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
     output reg  idle;
     
     // Stub signals
+    wire  clip_x$on;
+    wire  clip_z$on;
     reg  busy$d;
     wire  busy$q;
     reg  busy$clock;
@@ -116,6 +118,12 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
     reg  accept;
     
     // Sub module instances
+    span$clip_x clip_x(
+        .on(clip_x$on)
+    );
+    span$clip_z clip_z(
+        .on(clip_z$on)
+    );
     span$busy busy(
         .d(busy$d),
         .q(busy$q),
@@ -271,7 +279,13 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
         c0$x = a_c0$q;
         c1$x = a_c1$q;
         c2$x = a_c2$q;
-        valid = busy$q & ~drop$q & (x$q < width_x) & ~zp$neg & ~zp$over;
+        valid = busy$q & ~drop$q;
+        if (clip_x$on & (x$q >= width_x)) begin
+            valid = 1'b0;
+        end
+        if (clip_z$on & (zp$neg | zp$over)) begin
+            valid = 1'b0;
+        end
         out$valid = valid;
         out$x = ((x$q) & 10'h3ff);
         out$y = y$q;
@@ -332,14 +346,20 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
         xl_on$b = width_x;
         if (accept) begin
             busy$d = 1'b1;
-            drop$d = ~xl_on$lt | xr_neg$neg | (zl$neg & zr$neg) | (zl$over & zr$over);
+            drop$d = 1'b0;
+            if (clip_x$on & (~xl_on$lt | xr_neg$neg)) begin
+                drop$d = 1'b1;
+            end
+            if (clip_z$on & ((zl$neg & zr$neg) | (zl$over & zr$over))) begin
+                drop$d = 1'b1;
+            end
             y$d = inp$y;
             d_z$d = ((inp$ddx_z) & 36'hfffffffff);
             d_c0$d = ((inp$ddx_c0) & 32'hffffffff);
             d_c1$d = ((inp$ddx_c1) & 32'hffffffff);
             d_c2$d = ((inp$ddx_c2) & 32'hffffffff);
-            left$d = xl_neg$neg;
-            if (xl_neg$neg) begin
+            left$d = xl_neg$neg & clip_x$on;
+            if (xl_neg$neg & clip_x$on) begin
                 x$d = inp$xr;
                 last$d = 32'h0;
                 a_z$d = inp$right_z;
@@ -350,7 +370,7 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
             else begin
                 x$d = inp$xl;
                 last$d = inp$xr;
-                if (inp$xr >= width_x) begin
+                if (clip_x$on & (inp$xr >= width_x)) begin
                     last$d = width_x - 32'h1;
                 end
                 a_z$d = inp$left_z;
@@ -646,6 +666,38 @@ module span$c2$x_neg(x,neg);
     end
     
 endmodule // span$c2$x_neg
+
+
+module span$clip_x(on);
+    
+    // Module arguments
+    output reg  on;
+    
+    // Constant declarations
+    localparam  value = 1'b1;
+    
+    // Update code
+    always @(*) begin
+        on = value;
+    end
+    
+endmodule // span$clip_x
+
+
+module span$clip_z(on);
+    
+    // Module arguments
+    output reg  on;
+    
+    // Constant declarations
+    localparam  value = 1'b1;
+    
+    // Update code
+    always @(*) begin
+        on = value;
+    end
+    
+endmodule // span$clip_z
 
 
 module span$d_c0(d,q,clock);

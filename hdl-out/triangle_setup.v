@@ -659,12 +659,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [18:0] cv$0;
     reg  [18:0] cv$1;
     reg  [18:0] cv$2;
-    reg  [12:0] span_fe;
-    reg  [12:0] span_fm;
-    reg  [12:0] span_me;
-    reg  [18:0] diff_fe;
-    reg  [18:0] diff_fm;
-    reg  [18:0] diff_me;
+    reg  [12:0] span$0;
+    reg  [12:0] span$1;
+    reg  [12:0] span$2;
+    reg  [18:0] diff$0;
+    reg  [18:0] diff$1;
+    reg  [18:0] diff$2;
     reg  up;
     reg  maj_left;
     reg  [57:0] edx$0;
@@ -1620,36 +1620,36 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         cv$2 = ((yn$2 + half_m1) & int_mask) | half;
         kdx$0 = xw$2 - xw$0;
         kdy$0 = yw$2 - yw$0;
+        diff$0 = cv$2 - cv$0;
         kdx$1 = xw$1 - xw$0;
         kdy$1 = yw$1 - yw$0;
+        diff$1 = cv$1 - cv$0;
         kdx$2 = xw$2 - xw$1;
         kdy$2 = yw$2 - yw$1;
-        diff_fe = cv$2 - cv$0;
-        diff_fm = cv$1 - cv$0;
-        diff_me = cv$2 - cv$1;
-        span_fe = diff_fe[(frac)+:(13)];
-        if (diff_fe[nb_msb]) begin
-            span_fe = 32'h0;
+        diff$2 = cv$2 - cv$1;
+        span$0 = diff$0[(frac)+:(13)];
+        if (diff$0[nb_msb]) begin
+            span$0 = 32'h0;
         end
-        span_fm = diff_fm[(frac)+:(13)];
-        if (diff_fm[nb_msb]) begin
-            span_fm = 32'h0;
+        span$1 = diff$1[(frac)+:(13)];
+        if (diff$1[nb_msb]) begin
+            span$1 = 32'h0;
         end
-        span_me = diff_me[(frac)+:(13)];
-        if (diff_me[nb_msb]) begin
-            span_me = 32'h0;
+        span$2 = diff$2[(frac)+:(13)];
+        if (diff$2[nb_msb]) begin
+            span$2 = 32'h0;
         end
         up = crosses$q[top_bit] & ~crosses$q[bottom_bit];
         maj_left = area$q[area_msb];
         edx$0 = kdx$0;
         edy$0 = kdy$0;
-        count$0 = span_fe;
+        count$0 = span$0;
         edx$1 = kdx$1;
         edy$1 = kdy$1;
-        count$1 = span_fm;
+        count$1 = span$1;
         edx$2 = kdx$2;
         edy$2 = kdy$2;
-        count$2 = span_me;
+        count$2 = span$2;
         bx$0 = xn$0;
         by$0 = yn$0;
         cy$0 = cv$0;
@@ -1662,10 +1662,10 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (up) begin
             edx$1 = kdx$2;
             edy$1 = kdy$2;
-            count$1 = span_me;
+            count$1 = span$2;
             edx$2 = kdx$1;
             edy$2 = kdy$1;
-            count$2 = span_fm;
+            count$2 = span$1;
             bx$0 = xn$2;
             by$0 = yn$2;
             cy$0 = cv$2 - (frac_mask + 32'h1);
@@ -1679,9 +1679,11 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             tracked$0 = x$0$q;
         end
         tracked$1 = x$1$q;
-        tracked$2 = x$2$q;
         if (maj_left) begin
             tracked$1 = x$1$q - 32'h1;
+        end
+        tracked$2 = x$2$q;
+        if (maj_left) begin
             tracked$2 = x$2$q - 32'h1;
         end
         ed16$0 = edy$0[(32'h0)+:(34)] << frac;
@@ -1717,15 +1719,15 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         dmaj$0 = zn$2 - zn$0;
         dbot$0 = zn$1 - zn$0;
         attr0$0 = ((zn$0) & 40'hffffffffff);
+        attr0$1 = ((vc$0$q) & 40'hffffffffff);
+        attr0$2 = ((vc$1$q) & 40'hffffffffff);
+        attr0$3 = ((vc$2$q) & 40'hffffffffff);
         dmaj$1 = cn$6 - cn$0;
         dbot$1 = cn$3 - cn$0;
         dmaj$2 = cn$7 - cn$1;
         dbot$2 = cn$4 - cn$1;
         dmaj$3 = cn$8 - cn$2;
         dbot$3 = cn$5 - cn$2;
-        attr0$1 = ((vc$0$q) & 40'hffffffffff);
-        attr0$2 = ((vc$1$q) & 40'hffffffffff);
-        attr0$3 = ((vc$2$q) & 40'hffffffffff);
         area_abs = area$q;
         if (area$q[area_msb]) begin
             area_abs = ((32'h0) & 34'h3ffffffff) - area$q;
@@ -2016,8 +2018,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         ps$34 = 32'h0;
         ps$35 = 32'h0;
         delta$0 = kdx$0[(32'h0)+:(19)];
-        delta$1 = kdx$1[(32'h0)+:(19)];
         delta$2 = kdy$0[(32'h0)+:(19)];
+        delta$1 = kdx$1[(32'h0)+:(19)];
         delta$3 = kdy$1[(32'h0)+:(19)];
         eq_b$0 = delta$0;
         if (maj_left) begin

@@ -399,5 +399,5 @@ fn cli_fit_and_render_param_errors_are_clear() {
     let args = ["render", cube, "--size", "32x24", "--param", "K=3", "-o", png.to_str().unwrap()];
     fails_with(&args, &["--param", "needs --engine rtl"]);
     let args = ["render", cube, "--size", "32x24", "--engine", "rtl", "--param", "P=3", "-o", png.to_str().unwrap()];
-    fails_with(&args, &["--param P", "takes K", "and L"]);
+    fails_with(&args, &["--param P", "takes N", "K (setup's multipliers)", "CLIP_Y"]);
 }

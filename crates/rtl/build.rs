@@ -1,7 +1,7 @@
 //! Writes `$OUT_DIR/custom.rs`: the size class and formats of `rtl::custom`, the copy of
 //! the scanline units built at formats given when edgepaint is compiled.
 //!
-//! - `EDGEPAINT_CLASS`: the size class (10, 11 or 12); default 10.
+//! - `EDGEPAINT_CLASS`: the size class (8 to 12, `config::CLASS_MIN` to `CLASS_MAX`); default 10.
 //! - `EDGEPAINT_FORMATS`: a JSON object of formats over the class's defaults, as
 //!   `--formats FILE` takes them (e.g. `{"z": "S1.24 half-up"}`); default the file
 //!   `custom-formats.json` beside this script (24-bit depth, 3 subpixel bits, colours with
@@ -33,7 +33,9 @@ fn main() {
 
 fn write() -> Result<(), String> {
     let class = match std::env::var("EDGEPAINT_CLASS") {
-        Ok(s) => s.trim().parse().map_err(|_| format!("EDGEPAINT_CLASS = \"{s}\" is not a size class (10, 11, 12)"))?,
+        Ok(s) => s.trim().parse().map_err(|_| {
+            format!("EDGEPAINT_CLASS = \"{s}\" is not a size class ({} to {})", config::CLASS_MIN, config::CLASS_MAX)
+        })?,
         Err(_) => DEFAULT_CLASS,
     };
     let (source, text) = match std::env::var("EDGEPAINT_FORMATS") {
@@ -45,10 +47,13 @@ fn write() -> Result<(), String> {
     };
     let json: serde_json::Value = serde_json::from_str(&text).map_err(|e| format!("{source}: not JSON: {e}"))?;
     if !(config::CLASS_MIN..=config::CLASS_MAX).contains(&class) {
-        return Err(format!("EDGEPAINT_CLASS = {class}: size classes are 10, 11 and 12"));
+        return Err(format!(
+            "EDGEPAINT_CLASS = {class}: size classes are {} to {}",
+            config::CLASS_MIN,
+            config::CLASS_MAX
+        ));
     }
-    let side = 1u32 << class;
-    let f = Formats::with_overrides(side, side, &json).map_err(|e| format!("{source}: {e}"))?;
+    let f = Formats::with_overrides_at(class, &json).map_err(|e| format!("{source}: {e}"))?;
     config::check(class, &f).map_err(|e| format!("{source}: {e}"))?;
     let fields: Vec<String> = f.named().iter().map(|(name, fmt)| format!("    {name}: {},\n", fmt_expr(fmt))).collect();
     let code = format!(

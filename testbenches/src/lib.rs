@@ -174,7 +174,12 @@ pub fn emitted<const K: usize>(name: &str, params: [(&str, u64); K]) -> rtl::emi
 /// Unit `name` with its default parameters, Verilated (the committed `hdl-out/<name>.v`:
 /// see `sim::verilog_file`).
 pub fn verilated(name: &str) -> Verilated {
-    sim::verilate(&emitted(name, [])).unwrap_or_else(|e| panic!("{e}"))
+    verilated_with(name, [])
+}
+
+/// Unit `name` with `params` over its defaults, Verilated.
+pub fn verilated_with<const K: usize>(name: &str, params: [(&str, u64); K]) -> Verilated {
+    sim::verilate(&emitted(name, params)).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// rust-hdl and Verilator in lockstep through a whole frame: every output of `raster_top`

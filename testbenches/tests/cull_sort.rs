@@ -6,12 +6,13 @@ use model::cull_sort::{cull_sort, Cull, Reject, Sorted, II, LATENCY};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rtl::cull_sort::{verdict, CullSort, OUTCODE};
+use rtl::switch::Parts;
 use rtl::widths::{DIM, FORMATS};
 use std::collections::VecDeque;
 use testbenches::flow::Flow;
 use testbenches::stimulus::{extremes, random_case, scene, Case};
 use testbenches::streams::{as_pins, raw, sorted, triangle, PinValues};
-use testbenches::{count, seed, verilated, Dual, Mismatch, Value};
+use testbenches::{count, seed, verilated, verilated_with, Dual, Mismatch, Value};
 
 /// A case on the input ports.
 fn case_pins(c: &Case) -> PinValues {
@@ -178,4 +179,37 @@ fn cull_sort_paper_003_fig4_sends_nine_vertices() {
     assert_eq!(sent.len(), 9, "three crossing triangles, three vertices each, no new vertices");
     let model_sent: usize = cases.iter().filter_map(|c| cull_sort(&c.v, c.clip, c.cull, &FORMATS).ok()).count() * 3;
     assert_eq!(model_sent, 9);
+}
+
+/// Without rejecting and culling (`CULL = 0`, `rtl::switch`): the triangles that pass
+/// the model's cull & sort (random ones, back faces not culled) are sorted as the model
+/// sorts them, in both simulators; a back face with `cull_back` high passes, which the
+/// model culls: the logic is gone.
+#[test]
+fn cull_sort_without_cull_vs_model() {
+    let seed = seed();
+    let mut rng = ChaCha8Rng::seed_from_u64(seed.wrapping_add(3));
+    let cases: Vec<Case> = (0..count())
+        .map(|_| random_case(&mut rng))
+        .filter(|c| cull_sort(&c.v, c.clip, c.cull, &FORMATS).is_ok())
+        .collect();
+    assert!(cases.len() > count() / 4, "enough triangles pass");
+    let vl = verilated_with("cull_sort", [("CULL", 0)]);
+    let unit = || CullSort::new(&Parts { cull: false, ..Parts::ALL });
+    let mut dual = Dual::new(unit(), vl.model().unwrap_or_else(|e| panic!("{e}")));
+    run(&mut dual, &cases, Flow::STALLING, &mut rng).unwrap_or_else(|m| panic!("{m}\nseed {seed}"));
+    let back = random_case_culled(&mut rng);
+    let mut dual = Dual::new(unit(), vl.model().unwrap_or_else(|e| panic!("{e}")));
+    let err = run(&mut dual, &[back], Flow::BACK_TO_BACK, &mut rng).expect_err("the back face passes");
+    assert!(err.to_string().contains("verdict$code"), "{err}");
+}
+
+/// A random case the model culls as a back face.
+fn random_case_culled(rng: &mut ChaCha8Rng) -> Case {
+    loop {
+        let c = Case { cull: Cull::Back, ..random_case(rng) };
+        if cull_sort(&c.v, c.clip, c.cull, &FORMATS) == Err(Reject::BackFace) {
+            return c;
+        }
+    }
 }

@@ -3,17 +3,19 @@
 //! model's `LATENCY` and `II`, and a walk that holds while `out$ready` is low).
 
 use model::ctx::Ctx;
-use model::cull_sort::{cull_sort, Clip, Cull};
+use model::cull_sort::outcode::{BOTTOM, TOP};
+use model::cull_sort::{cull_sort, outcode, Clip, Cull};
 use model::edge_walk::{edge_walk, SpanCmd, II, LATENCY};
 use model::input::Vtx;
 use model::triangle_setup::{triangle_setup, TriangleSetupOut, Walk};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::edge_walk::EdgeWalk;
+use rtl::switch::Parts;
 use rtl::widths::{DIM, FORMATS};
 use testbenches::stimulus::{extremes, random_triangle};
 use testbenches::streams::{as_pins, span_cmd_of, triangle_setup_out, PinValues};
-use testbenches::{count, seed, verilated, Dual, Value};
+use testbenches::{count, seed, verilated, verilated_with, Dual, Value};
 
 /// One triangle for the walk: its setup, screen height and the model's scanlines.
 struct Job {
@@ -257,4 +259,34 @@ fn edge_walk_latency_003_table1() {
         valid.push(out.get("out$valid") == &Value::new(1, 1));
     }
     assert_eq!(valid, [false, false, true, true], "out$valid in cycles 0 to 3");
+}
+
+/// Without Y clipping (`CLIP_Y = 0`, `rtl::switch`): random triangles within the screen's
+/// rows, which need none, walk as the model walks them, in both simulators and with
+/// back-pressure; a triangle crossing row 0 does not: the logic is gone.
+#[test]
+fn edge_walk_without_clip_y_vs_model() {
+    let seed = seed();
+    let mut rng = ChaCha8Rng::seed_from_u64(seed.wrapping_add(5));
+    let mut jobs = Vec::new();
+    while jobs.len() < count() / 2 {
+        let clip = SCREENS[rng.gen_range(0..SCREENS.len())];
+        let v = random_triangle(&mut rng, clip);
+        if v.iter().all(|p| outcode(p, clip, &FORMATS) & (TOP | BOTTOM) == 0) {
+            jobs.extend(job(&v, clip));
+        }
+    }
+    let vl = verilated_with("edge_walk", [("CLIP_Y", 0)]);
+    let dual = || {
+        Dual::new(EdgeWalk::new(&Parts { clip_y: false, ..Parts::ALL }), vl.model().unwrap_or_else(|e| panic!("{e}")))
+    };
+    let r = run(&mut dual(), &jobs, |rng| rng.gen_bool(0.7)).unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+    assert!(r.commands > 0 && r.stalls > 0);
+    let px = 1i128 << FORMATS.xy.frac;
+    let v = |x: i128, y: i128| Vtx { x: x * px, y: y * px, z: 1000, c: [1, 2, 3], iw: 0 };
+    let crossing = job(&[v(3, -20), v(40, 10), v(10, 30)], Clip { width: 64, height: 48 }).expect("on screen");
+    assert!(
+        run(&mut dual(), &[crossing], |_| true).is_err(),
+        "without Y clipping, a triangle across row 0 is walked wrongly"
+    );
 }

@@ -9,11 +9,12 @@ use model::span::Pixel;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::pixel_out::PixelOut;
+use rtl::switch::Parts;
 use rtl::widths::{CLASS, DEPTH};
 use std::collections::VecDeque;
 use testbenches::memory::{Memory, ReadDuringWrite, Request, Write};
 use testbenches::streams::{as_pins, pixel};
-use testbenches::{count, seed, verilated, Dual, Value};
+use testbenches::{count, seed, verilated, verilated_with, Dual, Value};
 
 /// Random pixels on a `w` x `h` screen, skewed toward read-after-write hazards: a pixel
 /// often repeats the address of one 1, 2 or 3 pixels before it, with a nearer, farther or
@@ -39,9 +40,12 @@ fn pixels(rng: &mut ChaCha8Rng, w: u32, h: u32, n: usize, zmax: u32) -> Vec<Pixe
 
 /// Sends `pixels` (`inp$valid` low 20% of the time) with the memory ready when `ready`
 /// says; checks every write the memory performs against the model's, in order, each
-/// `LATENCY` ready cycles after its pixel came in; returns the memory and the cycles.
+/// `LATENCY` ready cycles after its pixel came in, and that a depth is read for each pixel
+/// when `depth_test` (a unit with its depth test) and never otherwise; returns the memory
+/// and the cycles.
 fn run(
     dual: &mut Dual<PixelOut>,
+    depth_test: bool,
     pixels: &[Pixel],
     (w, h): (u32, u32),
     rdw: ReadDuringWrite,
@@ -72,7 +76,7 @@ fn run(
             return Err(format!("cycle {cycle}: inp$ready differs from mem$ready"));
         }
         let req = Request::of(&out);
-        if req.rd_en != valid {
+        if req.rd_en != (valid && depth_test) {
             return Err(format!("cycle {cycle}: rd_en {} for inp$valid {valid}", req.rd_en));
         }
         let write = mem.edge(mem_ready, &req);
@@ -125,7 +129,7 @@ fn pixel_out_random_vs_model() {
         let mut rng = ChaCha8Rng::seed_from_u64(seed.wrapping_add(i as u64));
         let px = pixels(&mut rng, size.0, size.1, count() * 4, zmax);
         let (mem, _) =
-            run(&mut dual(&vl), &px, size, rdw, |_| true).unwrap_or_else(|e| panic!("seed {seed}, {rdw:?}: {e}"));
+            run(&mut dual(&vl), true, &px, size, rdw, |_| true).unwrap_or_else(|e| panic!("seed {seed}, {rdw:?}: {e}"));
         assert!(mem.writes > 0 && mem.writes < px.len() as u64, "some pixels pass, some fail");
     }
 }
@@ -151,7 +155,7 @@ fn pixel_out_memory_stalled_vs_model() {
         r.gen_bool(0.75)
     };
     for rdw in [ReadDuringWrite::Old, ReadDuringWrite::New] {
-        run(&mut dual(&vl), &px, (7, 5), rdw, &mut ready).unwrap_or_else(|e| panic!("seed {seed}, {rdw:?}: {e}"));
+        run(&mut dual(&vl), true, &px, (7, 5), rdw, &mut ready).unwrap_or_else(|e| panic!("seed {seed}, {rdw:?}: {e}"));
     }
 }
 
@@ -187,4 +191,36 @@ fn pixel_out_latency_is_2() {
     }
     assert_eq!(seen, [(true, false), (false, false), (false, true), (false, false)]);
     assert_eq!((mem.depth[5 * 8 + 3], mem.rgb[5 * 8 + 3]), (100, [1, 2, 3]));
+}
+
+/// Without the depth test (`DEPTH_TEST = 0`, `rtl::switch`): pixels on distinct addresses,
+/// which need none, are all written as the model writes them, in both simulators, with
+/// the memory stalling, and no depth is read; a farther pixel on a written address
+/// overwrites it, which the model refuses: the logic is gone.
+#[test]
+fn pixel_out_without_depth_test_vs_model() {
+    let seed = seed();
+    let zmax = z_max(&rtl::widths::FORMATS) as u32;
+    let (w, h) = (64u32, 48u32);
+    let mut rng = ChaCha8Rng::seed_from_u64(seed.wrapping_add(11));
+    let mut seen = std::collections::HashSet::new();
+    let px: Vec<Pixel> = pixels(&mut rng, w, h, count() * 2, zmax)
+        .into_iter()
+        .filter(|p| p.z < zmax && seen.insert((p.x, p.y)))
+        .collect();
+    let vl = verilated_with("pixel_out", [("DEPTH_TEST", 0)]);
+    let dual = || {
+        Dual::new(
+            PixelOut::new(&Parts { depth_test: false, ..Parts::ALL }),
+            vl.model().unwrap_or_else(|e| panic!("{e}")),
+        )
+    };
+    let (mem, _) = run(&mut dual(), false, &px, (w, h), ReadDuringWrite::Old, |r| r.gen_bool(0.8))
+        .unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+    assert_eq!(mem.writes, px.len() as u64, "every pixel written");
+    let p = |z| Pixel { x: 1, y: 1, z, rgb: [9, 9, 9] };
+    assert!(
+        run(&mut dual(), false, &[p(100), p(200)], (w, h), ReadDuringWrite::Old, |_| true).is_err(),
+        "the farther pixel overwrites"
+    );
 }

@@ -10,6 +10,7 @@ use model::input::Vtx;
 use model::raster_top::{self as top, raster_top};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use rtl::switch::Parts;
 use rust_hdl::prelude::Block;
 use scene::stress::{fan, random_mesh, split_rectangle};
 use scene::{Triangle, Trilist, Vertex};
@@ -163,6 +164,64 @@ fn raster_top_fill_rule_and_clipping_vs_model() {
     }
 }
 
+/// Without every optional part (`CULL = CLIP_Y = CLIP_X = CLIP_Z = DEPTH_TEST = 0`,
+/// `rtl::switch`), in Verilator: frames that need none of them (a random mesh covering
+/// the screen edge to edge, a fan within it, split rectangles: nothing culled or crossing
+/// the screen, no pixel drawn twice) come out as the model's, image, depth and cycles, with
+/// no depth read; a triangle reaching beyond the far plane, which needs Z clipping, does
+/// not.
+#[test]
+fn raster_top_without_optional_parts_vs_model() {
+    let none = rtl::switch::Parts { cull: false, clip_y: false, clip_x: false, clip_z: false, depth_test: false };
+    let mut dut = frame::verilator_with(&Build::default(), &none.params()).unwrap_or_else(|e| panic!("{e}"));
+    let mut rects = Vec::new();
+    for (a, b, flip) in
+        [((1.5, 1.5), (9.5, 9.5), false), ((12.5, 2.5), (30.5, 12.5), true), ((3.5, 14.5), (5.5, 30.5), false)]
+    {
+        rects.extend(split_rectangle(a, b, flip));
+    }
+    let frames = [
+        ("random mesh", list(48, 40, random_mesh(seed(), 48, 40))),
+        ("fan", list(64, 64, fan((32.5, 32.5), 28.0, 32).0)),
+        ("split rectangles", list(32, 32, rects)),
+    ];
+    for (what, l) in &frames {
+        let prep = raster_top(&Build::default(), l, Cull::None, [20, 24, 32]).unwrap_or_else(|e| panic!("{what}: {e}"));
+        let st = &prep.render.stats;
+        assert_eq!(
+            (st.culled_outside + st.culled_back + st.degenerate, st.crosses, st.overdraw, st.z_clipped),
+            (0, 0, 0, 0),
+            "{what}"
+        );
+        let f = Frame {
+            build: prep.build,
+            width: l.width,
+            height: l.height,
+            cull: Cull::None,
+            background: [20, 24, 32],
+            triangles: &prep.triangles,
+        };
+        let out = draw(&mut dut, &f, ready_memory(&mut |_| true), 10_000_000).unwrap_or_else(|e| panic!("{what}: {e}"));
+        assert!(
+            out.memory.rgb == prep.render.fb.rgb && out.memory.depth == prep.render.fb.depth,
+            "{what}: the buffers differ"
+        );
+        assert_eq!((out.memory.writes, out.reads.len()), (st.pixels_written, 0), "{what}: writes, and no depth read");
+        assert_eq!(Report::of(&out, &prep).cycles, Report::of(&out, &prep).predicted, "{what}: cycles");
+    }
+    let cull = Cull::None;
+    let beyond_far = [(5.3, 5.2, 0.4), (75.7, 15.1, 1.4), (20.1, 55.6, 0.6)];
+    let clipping = list(80, 60, vec![beyond_far.map(|(x, y, z)| Vertex::new(x, y, z, [200.0, 90.0, 30.0]))]);
+    let prep = raster_top(&Build::default(), &clipping, cull, [20, 24, 32]).unwrap_or_else(|e| panic!("{e}"));
+    let f =
+        Frame { build: prep.build, width: 80, height: 60, cull, background: [20, 24, 32], triangles: &prep.triangles };
+    let out = draw(&mut dut, &f, ready_memory(&mut |_| true), 1_000_000);
+    assert!(
+        out.map_or(true, |o| o.memory.depth != prep.render.fb.depth),
+        "without Z clipping, a triangle beyond the far plane is drawn wrongly"
+    );
+}
+
 /// Triangles back to back: 300 one-pixel triangles, then 300 that draw nothing (a pixel
 /// wide, between centres), then large overlapping ones. Setup takes one every
 /// `setup_latency` cycles; the image and the cycles are the model's.
@@ -278,8 +337,8 @@ fn raster_top_size_classes_11_and_12_lockstep() {
         assert!(prep.fragments.last().is_some_and(|&n| n > 0), "{what}: the far triangle draws");
     }
     let (k, l) = (7, 5);
-    lockstep(11, rtl::n11::raster_top::RasterTop::new(k, l).expect("K = 7, L = 5"));
-    lockstep(12, rtl::n12::raster_top::RasterTop::new(k, l).expect("K = 7, L = 5"));
+    lockstep(11, rtl::n11::raster_top::RasterTop::new(k, l, &Parts::ALL).expect("K = 7, L = 5"));
+    lockstep(12, rtl::n12::raster_top::RasterTop::new(k, l, &Parts::ALL).expect("K = 7, L = 5"));
 }
 
 /// A screen larger than class 10's through the `raster_top` the CLI picks for it (class
@@ -526,9 +585,9 @@ fn raster_top_units_present_lockstep() {
         }
     }
     let (k, l) = (7, 5);
-    run(|| rtl::raster_top::RasterTopFragments::new(k, l).expect("K = 7, L = 5"), true, false);
-    run(|| rtl::raster_top::RasterTopSorted::new(k, l).expect("K = 7, L = 5"), false, true);
-    run(|| rtl::raster_top::RasterTopCore::new(k, l).expect("K = 7, L = 5"), false, false);
+    run(|| rtl::raster_top::RasterTopFragments::new(k, l, &Parts::ALL).expect("K = 7, L = 5"), true, false);
+    run(|| rtl::raster_top::RasterTopSorted::new(k, l, &Parts::ALL).expect("K = 7, L = 5"), false, true);
+    run(|| rtl::raster_top::RasterTopCore::new(k, l, &Parts::ALL).expect("K = 7, L = 5"), false, false);
 }
 
 /// `raster_top` built at formats other than its class's defaults (`rtl::custom`; by default
@@ -558,7 +617,7 @@ fn raster_top_custom_formats_lockstep() {
     let crossing = crossing_40x30();
     // The clipping cases with the memory not ready one cycle in five.
     for (what, l, cull, stalling) in [("cube", &cube, cube_cull, false), ("clipping", &crossing, Cull::Back, true)] {
-        let unit = rtl::custom::raster_top::RasterTop::new(7, 5).expect("K = 7, L = 5");
+        let unit = rtl::custom::raster_top::RasterTop::new(7, 5, &Parts::ALL).expect("K = 7, L = 5");
         let mut dual = Dual::new(unit, vl.model().unwrap_or_else(|e| panic!("{e}")));
         let what = format!("{} formats, {what}", rtl::custom::SOURCE);
         let (prep, out) = check_at(build, &what, &mut dual, l, cull, ready_memory(&mut |c| !stalling || c % 5 != 3));

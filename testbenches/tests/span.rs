@@ -11,10 +11,11 @@ use model::triangle_setup::{triangle_setup, Attrs};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::span::Span;
+use rtl::switch::Parts;
 use rtl::widths::{DIM, FORMATS};
 use testbenches::stimulus::random_triangle;
 use testbenches::streams::{as_pins, pixel_of, span_cmd, PinValues};
-use testbenches::{count, seed, verilated, Dual, Value};
+use testbenches::{count, seed, verilated, verilated_with, Dual, Value};
 
 /// One span command on a screen `width` wide, with the model's pixels laid out in the
 /// cycles the walk spends: `slots[i]` is the pixel sent in the i-th cycle, if any.
@@ -224,4 +225,36 @@ fn span_latency_003_table1() {
     }
     assert_eq!(valid, [false, true, true, true, true], "out$valid in cycles 0 to 4");
     assert_eq!(ready, [true, false, false, true, false], "inp$ready in cycles 0 to 4");
+}
+
+/// Without X and Z clipping (`CLIP_X = CLIP_Z = 0`, `rtl::switch`): the spans of random
+/// triangles that need neither (every pixel from xl to xr on screen and in the depth
+/// range) come out as the model's, in both simulators and with back-pressure; a span
+/// starting left of the screen does not: the logic is gone.
+#[test]
+fn span_without_clipping_vs_model() {
+    let seed = seed();
+    let mut rng = ChaCha8Rng::seed_from_u64(seed.wrapping_add(2));
+    let clip = Clip { width: 64, height: 48 };
+    let mut jobs = Vec::new();
+    while jobs.len() < count() {
+        let inside = |j: &Job| {
+            j.cmd.xl >= 0
+                && j.cmd.xr < clip.width as i128
+                && j.slots.iter().flatten().count() as i128 == j.cmd.xr - j.cmd.xl + 1
+        };
+        jobs.extend(triangle_jobs(&mut rng, clip, 1).into_iter().filter(inside));
+    }
+    let vl = verilated_with("span", [("CLIP_X", 0), ("CLIP_Z", 0)]);
+    let parts = Parts { clip_x: false, clip_z: false, ..Parts::ALL };
+    let dual = || Dual::new(Span::new(&parts), vl.model().unwrap_or_else(|e| panic!("{e}")));
+    let (cycles, stalls) = run(&mut dual(), &jobs, |r| r.gen_bool(0.7)).unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+    let model: usize = jobs.iter().map(|j| j.slots.len()).sum();
+    assert_eq!(cycles, (model + LATENCY as usize) as u64 + stalls, "seed {seed}");
+    let z = Attrs { z: 1 << (FORMATS.z_acc.frac - 1), c: [0; 3] };
+    let left_of_screen = job(SpanCmd { y: 4, xl: -3, xr: 2, left: z, right: z, ddx: Attrs::default() }, clip);
+    assert!(
+        run(&mut dual(), &[left_of_screen], |_| true).is_err(),
+        "without X clipping, a span from x = -3 is drawn wrongly"
+    );
 }

@@ -4,7 +4,7 @@
 //!
 //! rust-hdl's widths are compile-time constants: edgepaint holds the units at the
 //! defaults of size classes 10, 11 and 12 and at one more build, `rtl::custom`, set when it
-//! is compiled (`EDGEPAINT_CLASS`, `EDGEPAINT_FORMATS`; `crates/rtl/build.rs`). For any
+//! is compiled (`EDGEPAINT_CLASS`, 8 to 12, `EDGEPAINT_FORMATS`; `crates/rtl/build.rs`). For any
 //! other build, [`ensure`] runs `cargo run --release` on edgepaint's sources with those
 //! variables set, in a target directory of its own (`target/formats`, so the usual build
 //! is not disturbed): a full build the first time, the `rtl` crate and what uses it after.
@@ -17,11 +17,14 @@ use std::process::Command;
 /// Set in the rebuilt edgepaint's environment: it must not rebuild again.
 const REBUILT: &str = "EDGEPAINT_REBUILT";
 
-/// The build at size class `class` with the formats file `path` over its defaults,
-/// checked for the RTL.
+/// The build at size class `class` with the formats file `path` over its defaults
+/// (`Formats::for_n(class)`, a class below 10 too), checked for the RTL.
 pub fn build_from_file(path: &Path, class: u32) -> Result<Build> {
-    let side = 1u32.checked_shl(class).filter(|_| class <= 16).context(format!("size class {class} is not built"))?;
-    let formats = super::engine::formats_file(path, side, side)?;
+    if class > 16 {
+        bail!("size class {class} is not built");
+    }
+    let formats = fx::Formats::with_overrides_at(class, &super::engine::formats_json(path)?)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
     let build = Build { class, formats };
     rtl::config::check(class, &formats).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
     Ok(build)

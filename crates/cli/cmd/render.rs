@@ -42,8 +42,9 @@ pub struct Args {
     /// only those without (reported), instead of drawing as the hardware would.
     #[arg(long)]
     analysis: bool,
-    /// `--engine rtl`: a parameter of raster_top, `K=<1..7>` (setup's multipliers) or
-    /// `L=<1..25>` (the divider's stages); repeatable.
+    /// `--engine rtl`: a parameter of raster_top, `K=<1..7>` (setup's multipliers),
+    /// `L=<1..25>` (the divider's stages), `N=<class>` (the size class, default the
+    /// screen's) or an optional part's switch (`CLIP_Y=0`, ...: `rtl::switch`, README "Fit"); repeatable.
     #[arg(long = "param", value_name = "NAME=VALUE", value_parser = super::emit::parse_param)]
     params: Vec<(String, u64)>,
 }

@@ -30,16 +30,25 @@ pub fn render(
 ) -> Result<Option<(Image, (String, u64))>> {
     ensure!(!analysis, "--analysis checks the models' arithmetic; it does not apply to --engine rtl");
     let mut timing = Timing::default();
+    let mut class = Build::for_screen(list.width, list.height).class;
+    let mut parts = Vec::new();
     for (name, v) in params {
         let v32 = u32::try_from(*v).unwrap_or(u32::MAX);
         match name.as_str() {
             "K" => timing.setup_multipliers = v32,
             "L" => timing.divider_latency = v32,
-            _ => bail!("--param {name}: --engine rtl takes K (setup's multipliers) and L (the divider's stages)"),
+            "N" => class = v32,
+            _ if rtl::switch::Parts::PARAMS.iter().any(|(p, _)| p == name) => parts.push((name.as_str(), *v)),
+            _ => bail!(
+                "--param {name}: --engine rtl takes N (the size class), K (setup's multipliers), L (the divider's \
+                 stages) and the switches of optional parts ({})",
+                rtl::switch::Parts::PARAMS.map(|(p, _)| p).join(", ")
+            ),
         }
     }
     let (k, l) = (timing.setup_multipliers as u64, timing.divider_latency as u64);
-    let class = Build::for_screen(list.width, list.height).class;
+    let mut unit_params = vec![("K", k), ("L", l)];
+    unit_params.extend(parts.iter().copied());
     let formats = fixed.formats(list.width, list.height)?;
     let build = Build { class, formats };
     if build != Build::of_class(class) {
@@ -59,7 +68,7 @@ pub fn render(
     let f = Frame { build, width: list.width, height: list.height, cull, background, triangles: &prep.triangles };
     let memory = MemoryModel { read_during_write: ReadDuringWrite::Old, ready: &mut |_| true };
     let max_cycles = 2 * prep.cycles() + 100_000;
-    let mut dut = frame::verilator_with(&build, &[("K", k), ("L", l)]).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let mut dut = frame::verilator_with(&build, &unit_params).map_err(|e| anyhow!("--engine rtl: {e}"))?;
     let start = Instant::now();
     let out = frame::draw(&mut dut, &f, memory, max_cycles).map_err(|e| anyhow!(e))?;
     let secs = start.elapsed().as_secs_f64();

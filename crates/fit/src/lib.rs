@@ -1,7 +1,10 @@
 //! `edgepaint fit`: model no more than a workload needs. [`target::Target`] is the accuracy
 //! a user asks for (`--target SPEC`); [`search::fit`] finds the narrowest formats of the
 //! scanline pipeline with which every scene of the workload meets it, by the bit-exact
-//! models against the float reference, then setup's parameters for an objective.
+//! models against the float reference, then setup's parameters for an objective;
+//! [`parts::needed`] leaves out the optional parts (clipping, culling, the depth test) the
+//! workload never uses.
 
+pub mod parts;
 pub mod search;
 pub mod target;

@@ -17,11 +17,44 @@
 //! on from there. The default design is the start; when it misses the target the start is
 //! every knob at its ceiling, and a target that misses there is an error.
 //!
+//! **The size class** is the smallest that holds the workload's largest screen
+//! (`fx::smallest_class`: a 320 x 240 workload gets class 9, 512 x 512 counters and
+//! addresses; 200 x 150 class 8; never below `fx::SMALLEST_CLASS`, 8, the smallest the
+//! RTL's tests prove), not the default formats' class 10.
+//!
+//! **Integer bits from the workload's ranges** ([`Search::ints`]), once the fraction bits
+//! are fitted: every scene is drawn by the model in analysis mode at the fitted formats,
+//! which records the smallest and largest value each register quantity was given
+//! (`model::ctx::Ranges`), and `z_acc`, `c_acc`, `dc`, `dz` and `ooa_d` get the fewest
+//! integer bits that hold them plus `margin` ([`IntFit`]), never more than the defaults'
+//! rules give and never fewer than the RTL's rules allow (`rtl::config::violation`): `dz`
+//! and `dc` keep the modular minimum (`z_acc.int + s`, `c_acc.int + s`: the RTL was seen to
+//! differ from the model below it, so it is not allowed there), `dz` at least as wide as
+//! `dc`, and setup's gradient registers are `ooa_d` wide with the accumulators' start values
+//! their slices (`ooa_d.int` >= `z.frac + z_acc.int + s` and `color.frac + c_acc.int + s`).
+//! So today the ranges move `c_acc` (S9 to S8 when the colours stay in [-256, 256)) and, with
+//! it, `dc` and possibly `ooa_d`; `dz`'s and `dc`'s own ranges (a gently shaded workload
+//! needs S1 and S4 where the defaults carry S5 and S13) become usable once the RTL is
+//! proven below the modular minimum. `z_acc` holds z's guard band [-0.5, 1.5] (S1) and `c_acc` 0..255 (S8 at
+//! least, `fx::Formats::check`). The other quantities are fixed by the API and the RTL: `xy`
+//! holds the class's guard band, `z` is S1 (its fraction bits the depth buffer), `color`
+//! U8, `inv_w` U1, and `ooa` is a reciprocal's mantissa, U1 with a shift (1/area's range
+//! goes into the shift, not the format). Fewer integer bits than the defaults' rules give
+//! are safe for the workload because nothing wraps on it (the ranges), and beyond it
+//! because the models' analysis mode reports every triangle in which a quantity narrower
+//! than those rules wrapped (`fx::Formats::narrowed`, `model::render::Dropped::Overflow`).
+//! `margin` (`--margin BITS`, default 0) widens each range by 2^margin for inputs near the
+//! workload (an animation's other frames); 0 because the fit's guarantee, like its
+//! fraction bits, is for the workload as given, and a scene beyond it is reported, not
+//! drawn wrong. The pixels at the fitted integer bits are those at the defaults' (nothing
+//! that fits is changed), which the search checks by running the design once more.
+//!
 //! Setup's multipliers `K` and the divider's stages `L` change cycles and area, not pixels:
 //! they are chosen last, over K 1 to 7 and L 1 to 8, by the objective (the area model's
 //! gate equivalents, the workload's mean cycles per frame, or their product).
 
 use crate::target::Target;
+use model::ctx::{Ranges, Q};
 use std::collections::BTreeMap;
 use sweep::area::{Cost, Design, Model};
 use sweep::grid::{Method, Point};
@@ -95,14 +128,41 @@ pub struct Fitted {
     /// The knobs and K, L (a sweep point's set).
     pub set: Set,
     pub design: Design,
-    /// Its rows, one per scene, and the default design's.
+    /// Its rows, one per scene.
     pub rows: Vec<Row>,
+    /// The default design edgepaint ships for the workload's screens (size class 10 up to
+    /// 1024 x 1024, its formats, K = 7, L = 5), and its rows.
+    pub default: Design,
     pub default_rows: Vec<Row>,
     /// For each knob above its floor: the trial one bit narrower, which fails.
     pub narrower: Narrower,
     /// Designs evaluated (each a run over the workload; cached ones included).
     pub trials: usize,
+    /// The integer bits fitted to the workload's ranges, and the margin they were given.
+    pub ints: Vec<IntFit>,
+    pub margin: u32,
 }
+
+/// One quantity's integer bits fitted to the workload's ranges ([`Search::ints`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct IntFit {
+    /// The quantity (`fx::Formats` field).
+    pub quantity: &'static str,
+    /// The smallest and largest value its registers were given over the workload, in its
+    /// units (`None`: no triangle reached it).
+    pub range: Option<(f64, f64)>,
+    /// The fewest integer bits that hold the range.
+    pub needed: u32,
+    /// The fewest the rules allow, and what the defaults' rules give.
+    pub floor: u32,
+    pub default: u32,
+    /// `needed + margin`, within [floor, default].
+    pub fitted: u32,
+}
+
+/// The quantities whose integer bits are fitted, in the order fitted (an accumulator
+/// before its gradient, the gradients before `ooa_d`: the floors depend on them).
+pub const INT_QUANTITIES: [Q; 5] = [Q::ZAcc, Q::CAcc, Q::Dc, Q::Dz, Q::OoaD];
 
 /// The search's state: the workload, the target, how to run.
 pub struct Search<'a> {
@@ -116,7 +176,8 @@ pub struct Search<'a> {
 
 impl<'a> Search<'a> {
     pub fn new(inputs: &'a [Input], target: &'a Target, opts: &'a Options) -> Search<'a> {
-        let class = inputs.iter().map(|i| fx::resolution_bits(i.trilist.width, i.trilist.height)).max().unwrap_or(10);
+        let class =
+            inputs.iter().map(|i| fx::smallest_class(i.trilist.width, i.trilist.height)).max().unwrap_or(fx::RTL_CLASS);
         Search { inputs, target, opts, class, trials: 0 }
     }
 
@@ -216,6 +277,73 @@ impl<'a> Search<'a> {
         }
     }
 
+    /// Every scene of the workload drawn by the model at `formats` in analysis mode: the
+    /// values each quantity's registers were given.
+    pub fn ranges(&self, formats: &fx::Formats) -> Ranges {
+        let mut all = Ranges::default();
+        for inp in self.inputs {
+            let opts = model::render::Options {
+                method: model::render::Method::Scanline,
+                cull: if inp.cull_back { model::cull_sort::Cull::Back } else { model::cull_sort::Cull::None },
+                analysis: true,
+                background: inp.background.map(|c| c.round().clamp(0.0, 255.0) as u8),
+            };
+            all.merge(&model::render::render(&inp.trilist, formats, &opts, &mut |_| {}).ranges);
+        }
+        all
+    }
+
+    /// The integer bits of `z_acc`, `c_acc`, `dc`, `dz` and `ooa_d` fitted to the ranges
+    /// the workload gives at `set`'s formats, plus `margin` (module documentation): `set`
+    /// with a `<quantity>.int` knob for each below its default, and the fit of each. An
+    /// error if the RTL cannot be built there or the design no longer meets the target (a
+    /// bug: what fits is unchanged).
+    pub fn ints(&mut self, set: &Set, margin: u32) -> Result<(Set, Vec<IntFit>), String> {
+        let f = self.design(set)?.formats;
+        let ranges = self.ranges(&f);
+        let mut g = f;
+        let s = f.xy.frac;
+        let mut fits = Vec::new();
+        for q in INT_QUANTITIES {
+            let floor = match q {
+                Q::ZAcc => 1,
+                Q::CAcc => 8,
+                Q::Dc => g.c_acc.int + s,
+                Q::Dz => (g.z_acc.int + s).max((g.dc.bits() - 1).saturating_sub(g.dz.frac)),
+                _ => (g.z.frac + g.z_acc.int + s).max(g.color.frac + g.c_acc.int + s),
+            };
+            let default = q.of(&f).int;
+            let needed = ranges.int_bits(q, &f).unwrap_or(0);
+            let fitted = needed.saturating_add(margin).max(floor).min(default);
+            let range = ranges.get(q).map(|(lo, hi)| {
+                let unit = (-(q.of(&f).frac as f64)).exp2();
+                (lo as f64 * unit, hi as f64 * unit)
+            });
+            match q {
+                Q::ZAcc => g.z_acc.int = fitted,
+                Q::CAcc => g.c_acc.int = fitted,
+                Q::Dc => g.dc.int = fitted,
+                Q::Dz => g.dz.int = fitted,
+                _ => g.ooa_d.int = fitted,
+            }
+            fits.push(IntFit { quantity: q.name(), range, needed, floor, default, fitted });
+        }
+        let mut out = set.clone();
+        for fit in &fits {
+            if fit.fitted < fit.default {
+                out.insert(format!("{}.int", fit.quantity), fit.fitted);
+            }
+        }
+        let t = self.trial(&out)?;
+        if !t.passes() {
+            return Err(format!(
+                "the integer bits fitted to the workload's ranges miss the target: {}",
+                t.misses.join("; ")
+            ));
+        }
+        Ok((out, fits))
+    }
+
     /// K and L for `objective` at the fitted knobs `set`: the design, its rows.
     pub fn params(&mut self, set: &Set, objective: Objective, model: &Model) -> Result<(Set, Vec<Row>), String> {
         let mut best: Option<(f64, Set, Vec<Row>)> = None;
@@ -243,14 +371,36 @@ impl<'a> Search<'a> {
     }
 }
 
-/// Fits the workload: formats, then K and L; the default design's rows beside.
-pub fn fit(inputs: &[Input], target: &Target, objective: Objective, opts: &Options) -> Result<Fitted, String> {
+/// Fits the workload: fraction bits, integer bits from its ranges plus `margin`, then K and
+/// L; the default design's rows beside.
+pub fn fit(
+    inputs: &[Input],
+    target: &Target,
+    objective: Objective,
+    margin: u32,
+    opts: &Options,
+) -> Result<Fitted, String> {
     let model = opts.area.as_ref().unwrap_or_else(|| Model::calibrated());
     let mut s = Search::new(inputs, target, opts);
     let (knobs, narrower) = s.formats()?;
+    let (knobs, ints) = s.ints(&knobs, margin)?;
     let (set, rows) = s.params(&knobs, objective, model)?;
-    let default_rows = s.trial(&Set::new())?.rows;
-    Ok(Fitted { design: s.design(&set)?, set, rows, default_rows, narrower, trials: s.trials })
+    // The default design edgepaint ships for these screens (class 10 up to 1024 x 1024).
+    let class = inputs.iter().map(|i| fx::resolution_bits(i.trilist.width, i.trilist.height)).max();
+    let mut shipped = Search { class: class.unwrap_or(fx::RTL_CLASS), ..Search::new(inputs, target, opts) };
+    let default_rows = shipped.trial(&Set::new())?.rows;
+    let default = shipped.design(&Set::new())?;
+    Ok(Fitted {
+        design: s.design(&set)?,
+        set,
+        rows,
+        default,
+        default_rows,
+        narrower,
+        trials: s.trials + shipped.trials,
+        ints,
+        margin,
+    })
 }
 
 /// The modelled cost of `d` (the calibration's measurement where it has one).

@@ -35,7 +35,7 @@ fn fit_meets_the_target_minimally_and_smaller_than_the_default() {
     let inputs = [input("cube", 64, 48), input("cone", 64, 48)];
     let target = Target::parse("psnr>=30,coverage_unexplained<=8,depth_order=exact").unwrap();
     let opts = Options::default();
-    let fitted = fit(&inputs, &target, Objective::Area, &opts).unwrap();
+    let fitted = fit(&inputs, &target, Objective::Area, 0, &opts).unwrap();
     assert_eq!(fitted.rows.len(), 2);
     for r in &fitted.rows {
         assert!(target.misses(r).is_empty(), "{}: {:?}", r.scene, target.misses(r));
@@ -64,6 +64,6 @@ fn fit_meets_the_target_minimally_and_smaller_than_the_default() {
 fn a_target_unreachable_even_wide_is_an_error_naming_the_miss() {
     let inputs = [input("cube", 64, 48)];
     let target = Target::parse("colour_max_lsb<=0,coverage_differs=0").unwrap();
-    let e = fit(&inputs, &target, Objective::Area, &Options::default()).unwrap_err();
+    let e = fit(&inputs, &target, Objective::Area, 0, &Options::default()).unwrap_err();
     assert!(e.contains("not met even with every knob at its ceiling") && e.contains("cube: "), "{e}");
 }

@@ -138,6 +138,22 @@ impl Fmt {
         (1i128 << (self.int + self.frac)) - 1
     }
 
+    /// The fewest integer bits with which this format (its sign and fraction bits kept)
+    /// holds every raw value in `lo..=hi` (0 when the fraction bits alone do); `None` for a
+    /// negative value in an unsigned format.
+    pub fn int_bits_for(self, lo: i128, hi: i128) -> Option<u32> {
+        let need = |v: i128| -> Option<u32> {
+            let bits = match (self.signed, v) {
+                (true, v) => signed_bits(v) - 1,
+                (false, v) if v < 0 => return None,
+                (false, 0) => 0,
+                (false, v) => unsigned_bits(v as u128),
+            };
+            Some(bits.saturating_sub(self.frac))
+        };
+        Some(need(lo)?.max(need(hi)?))
+    }
+
     /// Whether a raw value is representable.
     pub const fn fits(self, raw: i128) -> bool {
         raw >= self.min_raw() && raw <= self.max_raw()

@@ -28,9 +28,12 @@
 //! offsets (`s` fraction bits), and gradients are `ooa_d` times attribute
 //! differences (`z.frac` or `color.frac` fraction bits), so
 //! `dz.int >= z_acc.int + s`, `dc.int >= c_acc.int + s` and
-//! `ooa_d.int >= max(dz.int + z.frac, dc.int + color.frac)` ([`Formats::check`]
-//! enforces it). Beyond that, `dc` needs no more integer bits however steep a
-//! sliver's gradient is. Values that are *compared* (positions, the z clip, the colour
+//! `ooa_d.int >= max(dz.int + z.frac, dc.int + color.frac)`: the modular minimum
+//! ([`Formats::modular_ints`]), which the defaults' rules give. Beyond that, `dc` needs no more integer bits however steep a
+//! sliver's gradient is. A workload whose values all fit fewer integer bits may use them
+//! (`edgepaint fit` takes them from the ranges the models saw, [`Formats::narrowed`]): the
+//! condition then no longer holds, [`Formats::check`] asks only for one integer bit, and
+//! the models' analysis mode reports every triangle in which such a quantity wrapped. Values that are *compared* (positions, the z clip, the colour
 //! clamp) are never wrapped. The models' analysis mode checks this per
 //! triangle: it records which registers wrapped and compares every emitted
 //! depth and colour with the exact value.
@@ -97,6 +100,28 @@ pub const fn resolution_bits(width: u32, height: u32) -> u32 {
 /// constants): screens up to 2^10 = 1024 pixels wide and high, which covers
 /// 320x240 to 001's 800x600.
 pub const RTL_CLASS: u32 = 10;
+
+/// The smallest size class a design may have (`rtl::config::CLASS_MIN`, `edgepaint fit`):
+/// screens up to 256 x 256. Below it the RTL is not proven: its custom-build lockstep test
+/// (`testbenches/tests/raster_top.rs`, frames of 24 x 16 and 40 x 30) has run at classes 9
+/// and 8 (classes down to 6 would hold those frames, but have not been run), and a smaller
+/// screen saves little (the per-triangle units do not shrink with the class).
+pub const SMALLEST_CLASS: u32 = 8;
+
+/// The smallest size class that holds a `width` x `height` screen:
+/// `clog2(max(width, height))`, at least [`SMALLEST_CLASS`]. Unlike [`resolution_bits`] not
+/// raised to [`RTL_CLASS`]: the class `edgepaint fit` gives a workload (a 320 x 240 screen
+/// gets class 9, 512 x 512 counters and addresses). The default formats of every screen
+/// stay [`resolution_bits`]'.
+pub const fn smallest_class(width: u32, height: u32) -> u32 {
+    let d = if width > height { width } else { height };
+    let n = clog2(d as u64);
+    if n < SMALLEST_CLASS {
+        SMALLEST_CLASS
+    } else {
+        n
+    }
+}
 
 /// Widths of the exact (non-configurable) quantities, derived from the formats.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -249,6 +274,58 @@ impl Formats {
         Ok(f)
     }
 
+    /// [`Formats::with_overrides`] for a design of size class `class` (screens up to
+    /// 2^class x 2^class): the keys over `Formats::for_n(class)`, the rest following for
+    /// `class` (a class below [`RTL_CLASS`] too: `rtl`'s `build.rs`, `edgepaint fit`).
+    pub fn with_overrides_at(class: u32, json: &serde_json::Value) -> Result<Formats, String> {
+        if class > 16 {
+            return Err(format!("size class {class}: at most 16 (screens up to 65536 x 65536)"));
+        }
+        let mut v = serde_json::to_value(Formats::for_n(class)).expect("formats serialise");
+        let obj = json.as_object().ok_or("a formats file must be a JSON object mapping quantities to formats")?;
+        let target = v.as_object_mut().expect("formats serialise to an object");
+        for (k, val) in obj {
+            if !target.contains_key(k) {
+                let known: Vec<&str> = target.keys().map(String::as_str).collect();
+                return Err(format!("unknown quantity \"{k}\" (known: {})", known.join(", ")));
+            }
+            target.insert(k.clone(), val.clone());
+        }
+        let f: Formats = serde_json::from_value(v).map_err(|e| e.to_string())?;
+        let named = |k: &str| obj.contains_key(k);
+        let given = Given {
+            z_acc: named("z_acc"),
+            dz: named("dz"),
+            c_acc: named("c_acc"),
+            dc: named("dc"),
+            ooa_d: named("ooa_d"),
+        };
+        let f = f.follow(class, given);
+        let side = 1u32 << class;
+        f.check(side, side)?;
+        Ok(f)
+    }
+
+    /// The quantities narrower than the defaults' rules make them for every workload, in
+    /// which a wrap is therefore not known to be harmless: `dz`, `dc` and `ooa_d` below the
+    /// modular minimum ([`Formats::modular_ints`]), `z_acc` below S1 (z's guard band) and
+    /// `c_acc` below S9. Empty at every class's defaults and at [`Formats::wide`]; a fitted
+    /// design's integer bits from a workload's ranges (`edgepaint fit`) may be here, and the
+    /// models' analysis mode reports every triangle in which one of them wrapped.
+    pub fn narrowed(&self) -> Vec<&'static str> {
+        let (dz, dc, ooa_d) = self.modular_ints();
+        [
+            ("dz", self.dz.int < dz),
+            ("dc", self.dc.int < dc),
+            ("ooa_d", self.ooa_d.int < ooa_d),
+            ("z_acc", self.z_acc.int < 1),
+            ("c_acc", self.c_acc.int < 9),
+        ]
+        .into_iter()
+        .filter_map(|(q, below)| below.then_some(q))
+        .collect()
+    }
+
     /// Every format as (name, format), in declaration order.
     pub fn named(&self) -> [(&'static str, Fmt); 11] {
         [
@@ -349,17 +426,11 @@ impl Formats {
             need(g.signed && acc.signed, name, g, "gradients and accumulators must be signed".into())?;
             need(g.frac == acc.frac, name, g, format!("must have the fraction bits of its accumulator {acc}"))?;
         }
-        let (dz, dc, ooa_d) = self.modular_ints();
-        let modular = "wraps modulo its accumulator only with";
-        let why = |n: u32, what: &str| format!("{modular} at least {n} integer bits ({what})");
-        need(self.dz.int >= dz, "dz", self.dz, why(dz, "z_acc's plus the subpixel bits"))?;
-        need(self.dc.int >= dc, "dc", self.dc, why(dc, "c_acc's plus the subpixel bits"))?;
-        need(
-            self.ooa_d.int >= ooa_d,
-            "ooa_d",
-            self.ooa_d,
-            why(ooa_d, "dz's plus z's fraction bits, or dc's plus color's"),
-        )?;
+        // Below the modular minimum (`modular_ints`) a wrap is no longer harmless, but the
+        // formats still work where nothing wraps: a workload's ranges (`narrowed`).
+        for (name, g) in [("dz", self.dz), ("dc", self.dc), ("ooa_d", self.ooa_d)] {
+            need(g.int >= 1, name, g, "needs at least 1 integer bit".into())?;
+        }
         need(
             self.z_acc.frac >= z.frac,
             "z_acc",
@@ -469,7 +540,7 @@ mod tests {
         let cases = [
             (serde_json::json!({"xy": "S8.4"}), "guard band"),
             (serde_json::json!({"dc": "S13.10"}), "fraction bits of its accumulator"),
-            (serde_json::json!({"dc": "S9.22"}), "at least 13 integer bits"),
+            (serde_json::json!({"dc": "S0.22"}), "at least 1 integer bit"),
             (serde_json::json!({"zz": "S1.16"}), "unknown quantity \"zz\""),
             (serde_json::json!({"z": "U1.16"}), "must be signed"),
             (serde_json::json!({"z": "S1.40"}), "depth buffer"),

@@ -11,4 +11,6 @@ pub use fmt::{
     clog2, fits_s, shr_floor, shr_half_up, signed_bits, unsigned_bits, wrap_s, wrap_u, Fmt, Overflow, Rounding,
     MAX_BITS,
 };
-pub use formats::{resolution_bits, Build, Derived, Formats, Given, RTL_CLASS, SUBPIXEL_BITS};
+pub use formats::{
+    resolution_bits, smallest_class, Build, Derived, Formats, Given, RTL_CLASS, SMALLEST_CLASS, SUBPIXEL_BITS,
+};

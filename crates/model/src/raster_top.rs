@@ -12,10 +12,11 @@ use crate::input::{to_fixed, InputError, Vtx};
 use crate::pixel_out::Framebuffer;
 use crate::render::{self, triangle, Method, Options, Render};
 use crate::span::Pixel;
-use fx::{Build, RTL_CLASS};
+use fx::{Build, SMALLEST_CLASS};
 use scene::Trilist;
 
-/// The largest size class `raster_top` is built for (`rtl::CLASSES`: 10 to 12).
+/// The largest size class `raster_top` is built for (`rtl::CLASSES`: 10 to 12; a custom
+/// build may have a class from `fx::SMALLEST_CLASS`, 8, up).
 pub const MAX_CLASS: u32 = 12;
 
 /// One frame through `raster_top`, as the model draws it.
@@ -61,11 +62,11 @@ impl RasterTopOut {
 /// 2^class screen.
 pub fn raster_top(build: &Build, list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<RasterTopOut, String> {
     let Build { class, formats: f } = *build;
-    if !(RTL_CLASS..=MAX_CLASS).contains(&class) {
+    if !(SMALLEST_CLASS..=MAX_CLASS).contains(&class) {
         let side = 1u64 << class.min(63);
         return Err(format!(
             "a {}x{} screen needs size class {class} ({side}x{side}); raster_top is built for classes \
-             {RTL_CLASS} to {MAX_CLASS} (screens up to {m}x{m})",
+             {SMALLEST_CLASS} to {MAX_CLASS} (screens up to {m}x{m})",
             list.width,
             list.height,
             m = 1u32 << MAX_CLASS
@@ -126,7 +127,7 @@ mod tests {
         assert_eq!(f.writes.len() as u64, f.render.stats.pixels_written);
         // All of the near triangle's pixels pass the depth test; they come last.
         assert_eq!(f.writes.len(), f.fragments[0] + f.fragments[1]);
-        let mut replay = Framebuffer::new(16, 16, z_max(&fx::Formats::for_n(RTL_CLASS)) as u32, [0; 3]);
+        let mut replay = Framebuffer::new(16, 16, z_max(&fx::Formats::for_n(fx::RTL_CLASS)) as u32, [0; 3]);
         for w in &f.writes {
             assert!(replay.pixel_out(w, 0), "each write passes the depth test in order: {w:?}");
         }
@@ -145,12 +146,16 @@ mod tests {
         let err = raster_top(&Build::for_screen(4097, 16), &screen(4097, 16), Cull::None, [0; 3])
             .err()
             .expect("a 4097-pixel-wide screen is refused");
-        assert!(err.contains("classes 10 to 12 (screens up to 4096x4096)"), "{err}");
+        assert!(err.contains("classes 8 to 12 (screens up to 4096x4096)"), "{err}");
         let err = raster_top(&Build::of_class(10), &screen(1025, 16), Cull::None, [0; 3])
             .err()
             .expect("too wide for class 10");
         assert!(err.contains("up to 1024x1024, not 1025x16"), "{err}");
-        assert!(raster_top(&Build::of_class(9), &screen(16, 16), Cull::None, [0; 3]).is_err(), "class 9 is not built");
+        assert!(raster_top(&Build::of_class(7), &screen(16, 16), Cull::None, [0; 3]).is_err(), "class 7 is not built");
+        assert!(
+            raster_top(&Build::of_class(9), &screen(320, 240), Cull::None, [0; 3]).is_ok(),
+            "a custom build's class"
+        );
         assert!(raster_top(&Build::of_class(12), &screen(1025, 16), Cull::None, [0; 3]).is_ok());
         // x beyond the S11.4 vertex format's range: clipped to it (`guard_band`), sent as
         // its pieces. A colour beyond U8.0 cannot be represented: skipped, the rest drawn.

@@ -9,9 +9,16 @@
 //! vertices). Positions never wrap (their formats hold the whole coordinate
 //! range), so a wrap can only corrupt attributes; a triangle with an attribute
 //! off by more than [`HARM_COLOR`] or a quarter of the depth range overflowed
-//! harmfully, and is reported, with the registers that wrapped, instead of drawn.
+//! harmfully, and is reported, with the registers that wrapped, instead of drawn. So is
+//! every triangle in which a quantity narrower than the modular minimum wrapped
+//! (`fx::Formats::narrowed`: integer bits fitted to a workload's ranges), whatever its
+//! pixels: there a wrap is not known to be harmless, and the RTL need not agree with the
+//! model on it.
+//!
+//! [`Render::ranges`] is the smallest and largest value each quantity's registers were
+//! given over the frame (`model::ctx::Ranges`): the integer bits it needs.
 
-use crate::ctx::{Ctx, Q};
+use crate::ctx::{Ctx, Ranges, Q};
 use crate::cull_sort::{cull_sort, z_max, Clip, Cull, Reject};
 use crate::edge_walk::edge_walk;
 use crate::guard_band;
@@ -70,12 +77,15 @@ pub struct Trace {
     pub work: Work,
     pub z_clipped: u32,
     pub spans: u32,
+    /// The clip planes the triangle crosses (`cull_sort`'s OR of outcodes).
+    pub crosses: u8,
 }
 
 /// One triangle through the pipeline under `ctx`, from hardware vertices.
 pub fn trace(v: &[Vtx; 3], clip: Clip, opts: &Options, ctx: &mut Ctx) -> Result<Trace, Reject> {
     let sorted = cull_sort(v, clip, opts.cull, &ctx.f)?;
-    let mut t = Trace { work: Work { passed_cull: true, ..Work::default() }, ..Trace::default() };
+    let mut t =
+        Trace { work: Work { passed_cull: true, ..Work::default() }, crosses: sorted.crosses, ..Trace::default() };
     match opts.method {
         Method::Scanline => {
             let setup = triangle_setup(&sorted, ctx);
@@ -138,29 +148,43 @@ pub fn exact_at(v: &[Vtx; 3], f: &Formats, x: u32, y: u32, perspective: bool) ->
 /// One triangle, with analysis if asked: its pixels, or why there are none, and
 /// (in analysis mode) the registers that wrapped on the way.
 pub fn triangle(tri: &Triangle, clip: Clip, f: &Formats, opts: &Options) -> (Result<Trace, Dropped>, Vec<Q>) {
+    let (got, wrapped, _) = triangle_ranged(tri, clip, f, opts);
+    (got, wrapped)
+}
+
+/// [`triangle`], with the values each quantity was given on the way.
+pub fn triangle_ranged(
+    tri: &Triangle,
+    clip: Clip,
+    f: &Formats,
+    opts: &Options,
+) -> (Result<Trace, Dropped>, Vec<Q>, Ranges) {
     let v = match to_fixed(tri, f) {
         Ok(v) => v,
-        Err(e) => return (Err(Dropped::Input(e)), Vec::new()),
+        Err(e) => return (Err(Dropped::Input(e)), Vec::new(), Ranges::default()),
     };
     let mut ctx = Ctx::new(*f);
     let got = trace(&v, clip, opts, &mut ctx).map_err(Dropped::Rejected);
+    let ranges = *ctx.ranges();
     if !opts.analysis {
-        return (got, Vec::new());
+        return (got, Vec::new(), ranges);
     }
     let wrapped = ctx.overflowed();
+    let narrowed = f.narrowed();
     let perspective = matches!(opts.method, Method::Vector { perspective: true, .. });
     let harm_z = (f.z.frac as f64 - 2.0).exp2();
     let harmful = got.as_ref().is_ok_and(|t| {
-        !wrapped.is_empty()
-            && t.pixels.iter().any(|p| {
-                let (z, c) = exact_at(&v, f, p.x, p.y, perspective);
-                (p.z as f64 - z).abs() > harm_z || (0..3).any(|i| (p.rgb[i] as f64 - c[i]).abs() > HARM_COLOR)
-            })
+        wrapped.iter().any(|q| narrowed.contains(&q.name()))
+            || !wrapped.is_empty()
+                && t.pixels.iter().any(|p| {
+                    let (z, c) = exact_at(&v, f, p.x, p.y, perspective);
+                    (p.z as f64 - z).abs() > harm_z || (0..3).any(|i| (p.rgb[i] as f64 - c[i]).abs() > HARM_COLOR)
+                })
     });
     if harmful {
-        (Err(Dropped::Overflow(wrapped.clone())), wrapped)
+        (Err(Dropped::Overflow(wrapped.clone())), wrapped, ranges)
     } else {
-        (got, wrapped)
+        (got, wrapped, ranges)
     }
 }
 
@@ -185,6 +209,11 @@ pub struct Stats {
     pub fragments: u64,
     pub z_clipped: u64,
     pub pixels_written: u64,
+    /// Fragments on a pixel an earlier fragment wrote (what a depth test decides).
+    pub overdraw: u64,
+    /// The clip planes some triangle drawn crosses (OR of `model::cull_sort::outcode`s):
+    /// which clipping the frame needs.
+    pub crosses: u8,
 }
 
 /// A triangle the render could not draw, and why.
@@ -203,6 +232,9 @@ pub struct Render {
     pub problems: Vec<Problem>,
     /// Per-triangle work, in drawing order (the front end's pieces), for the cycle model.
     pub work: Vec<Work>,
+    /// The smallest and largest value each quantity's registers were given, over every
+    /// triangle that reached `cull_sort` (those dropped for an overflow too).
+    pub ranges: Ranges,
 }
 
 /// Renders a trilist through the fixed-point pipeline chosen in `opts`.
@@ -215,9 +247,11 @@ pub fn render(list: &Trilist, f: &Formats, opts: &Options, progress: &mut dyn Fn
     let pieces = guard_band::pieces(list, f, perspective);
     stats.clipped = pieces.clipped;
     let mut work = Vec::with_capacity(pieces.triangles.len());
+    let mut ranges = Ranges::default();
     for (k, tri) in pieces.triangles.iter().enumerate() {
         let i = pieces.source[k];
-        let (res, over) = triangle(tri, clip, f, opts);
+        let (res, over, seen) = triangle_ranged(tri, clip, f, opts);
+        ranges.merge(&seen);
         match res {
             Ok(t) => {
                 stats.drawn += 1;
@@ -225,7 +259,9 @@ pub fn render(list: &Trilist, f: &Formats, opts: &Options, progress: &mut dyn Fn
                 stats.spans += t.spans as u64;
                 stats.fragments += t.pixels.len() as u64;
                 stats.z_clipped += t.z_clipped as u64;
+                stats.crosses |= t.crosses;
                 for p in &t.pixels {
+                    stats.overdraw += fb.written[(p.y * fb.width + p.x) as usize] as u64;
                     stats.pixels_written += fb.pixel_out(p, i as u32) as u64;
                 }
                 work.push(t.work);
@@ -250,5 +286,5 @@ pub fn render(list: &Trilist, f: &Formats, opts: &Options, progress: &mut dyn Fn
         }
     }
     progress(list.triangles.len());
-    Render { fb, stats, problems, work }
+    Render { fb, stats, problems, work, ranges }
 }

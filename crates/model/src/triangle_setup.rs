@@ -233,6 +233,12 @@ mod tests {
     use fx::Formats;
     use scene::Vertex;
 
+    /// The triangle `t` (screen pixels), sorted for setup on a `w` x `h` screen at `f`.
+    fn sorted(t: &[Vertex; 3], w: u32, h: u32, f: &Formats) -> Sorted {
+        let clip = Clip { width: w, height: h };
+        cull_sort(&to_fixed(t, f).unwrap(), clip, Cull::None, f).unwrap()
+    }
+
     #[test]
     fn triangle_setup_paper_001_eq2_fits_where_eq1_overflows() {
         // 001's worst case: an 800-pixel base (e_maj.dx = 800) and a colour
@@ -243,8 +249,7 @@ mod tests {
             Vertex::new(0.0, 599.0, 0.5, [255.0; 3]),
             Vertex::new(800.0, 600.0, 0.5, [0.0; 3]),
         ];
-        let clip = Clip { width: 800, height: 600 };
-        let sorted = cull_sort(&to_fixed(&t, &f).unwrap(), clip, Cull::None, &f).unwrap();
+        let sorted = sorted(&t, 800, 600, &f);
         // Eq. (1) forms e_maj.dx * e_bot.dC first: 800 * 255 = 204000 needs 18 integer
         // bits, more than a gradient register (dc) has.
         let s = f.xy.frac;
@@ -271,9 +276,7 @@ mod tests {
             Vertex::new(40.0, 2.0, 0.5, [0.0; 3]),
             Vertex::new(20.0, 50.0, 0.5, [0.0; 3]),
         ];
-        let clip = Clip { width: 64, height: 64 };
-        let sorted = cull_sort(&to_fixed(&t, &f).unwrap(), clip, Cull::None, &f).unwrap();
-        let o = triangle_setup(&sorted, &mut Ctx::new(f));
+        let o = triangle_setup(&sorted(&t, 64, 64, &f), &mut Ctx::new(f));
         assert_eq!(o.divisions.len(), 7);
         assert_eq!(o.short[0].count, 0);
         assert_eq!(o.divisions[3], DividerIn { n: 0, d: 1 });

@@ -14,8 +14,12 @@
 
 use fx::{Fmt, Formats, Overflow, Rounding};
 
-/// The size classes a build may have (the models' `model::raster_top` classes).
-pub const CLASS_MIN: u32 = 10;
+/// The size classes a build may have (the models' `model::raster_top` classes): `CLASS_MIN`
+/// is `fx::SMALLEST_CLASS` (screens up to 256 x 256), the smallest the tests of `rtl::custom`
+/// prove (`testbenches/tests/raster_top.rs`, run at `EDGEPAINT_CLASS` = 9 and 8); the units
+/// built into every edgepaint (`crate::CLASSES`) stay 10, 11 and 12, a smaller class is a
+/// `custom` build (`edgepaint fit` of a workload of small screens).
+pub const CLASS_MIN: u32 = fx::SMALLEST_CLASS;
 pub const CLASS_MAX: u32 = 12;
 
 /// Port and register widths of the scanline units at a build (`class`, formats): the one
@@ -143,7 +147,7 @@ pub const fn violation(class: u32, f: &Formats) -> Option<&'static str> {
     let dividend = dv.div_dividend_bits as usize;
     let product = if dividend > mul_a { dividend } else { mul_a };
     if class < CLASS_MIN || class > CLASS_MAX {
-        return Some("the size class must be 10, 11 or 12 (screens up to 1024, 2048 or 4096 pixels)");
+        return Some("the size class must be 8 to 12 (screens up to 256 to 4096 pixels wide and high)");
     }
     if f.xy.int < class + 1 {
         return Some("xy needs class + 1 integer bits: the screen's positions and its guard band");
@@ -158,6 +162,20 @@ pub const fn violation(class: u32, f: &Formats) -> Option<&'static str> {
     }
     if f.ooa_d.frac + f.z.frac < f.dz.frac || f.ooa_d.frac + f.color.frac < f.dc.frac {
         return Some("the gradients' slices of ooa_d x difference are floor shifts: ooa_d.frac + z.frac >= dz.frac and ooa_d.frac + color.frac >= dc.frac");
+    }
+    // setup keeps the gradients' numerators in ooa_d-wide registers (mod 2^ooa_d.bits())
+    // and computes the accumulators' start values from their slices before narrowing them
+    // to dz and dc: a start value (z_acc, c_acc after a floor shift by xy.frac) is right
+    // modulo its accumulator only if the slice holds its bits. The defaults' rules give
+    // this (the modular minimum); dz and dc narrower than it do not change it.
+    if f.ooa_d.int < f.z.frac + f.z_acc.int + f.xy.frac || f.ooa_d.int < f.color.frac + f.c_acc.int + f.xy.frac {
+        return Some("setup's gradient registers are ooa_d wide and the start values their slices: ooa_d.int >= z.frac + z_acc.int + xy.frac and color.frac + c_acc.int + xy.frac");
+    }
+    // Not proven below the modular minimum: at class 8 with custom-formats.json's dz S4.40
+    // and dc S12.20 narrowed to S2.40 and S9.20, raster_top's lockstep test drew a cube
+    // pixel the model drew (8, 3) as background, though nothing wrapped in the model.
+    if f.dz.int < f.z_acc.int + f.xy.frac || f.dc.int < f.c_acc.int + f.xy.frac {
+        return Some("dz and dc need the modular minimum, z_acc.int + xy.frac and c_acc.int + xy.frac integer bits: the RTL is not proven narrower");
     }
     if f.dz.frac != f.z_acc.frac || f.dc.frac != f.c_acc.frac {
         return Some("gradients have the fraction bits of their accumulators");

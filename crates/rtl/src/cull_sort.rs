@@ -26,8 +26,10 @@
 //!
 //! Model: `model::cull_sort::cull_sort`. Emitted: `hdl-out/cull_sort.v`.
 
-use crate::emit::{ports, verilog, Emitted};
+use crate::emit::{emit_unit, Emitted};
 use crate::mul::Mul;
+use crate::parts::SignExtend;
+use crate::switch::{Parts, Switch};
 use super::links::{SortedSource, TriangleSink, Verdict};
 use super::widths::{DIM, FORMATS, WIDTHS};
 use crate::Params;
@@ -102,11 +104,10 @@ pub struct CullSort {
     /// The right and bottom planes in subpixels (width and height * 2^s).
     right: Signal<Local, Bits<XY>>,
     bottom: Signal<Local, Bits<XY>>,
-    /// Edge vectors from v0 (`DELTA` bits) and twice the signed area (submission order).
-    e1x: Signal<Local, Bits<DELTA>>,
-    e1y: Signal<Local, Bits<DELTA>>,
-    e2x: Signal<Local, Bits<DELTA>>,
-    e2y: Signal<Local, Bits<DELTA>>,
+    /// The vertices' x and y sign-extended to `DELTA` bits (edge vectors from v0 are their
+    /// differences), and twice the signed area (submission order).
+    wx: [SignExtend<XY, DELTA>; 3],
+    wy: [SignExtend<XY, DELTA>; 3],
     area: Signal<Local, Bits<AREA>>,
     area_mul: [Mul<DELTA, DELTA, AREA>; 2],
     /// y_i with its sign bit flipped: the signed order as an unsigned one.
@@ -139,17 +140,20 @@ pub struct CullSort {
     /// 2^(XY-1): flips a sign bit.
     half: Constant<Bits<XY>>,
     /// Bit indices and shifts (a kernel cannot name a Rust constant): the sign bits of
-    /// `xy`, `z` and the area, the sign bit of a `DELTA`-bit edge vector, `xy.frac`.
+    /// `xy`, `z` and the area, `xy.frac`.
     xy_msb: Constant<Bits<8>>,
     z_msb: Constant<Bits<8>>,
     area_msb: Constant<Bits<8>>,
-    delta_msb: Constant<Bits<8>>,
     frac: Constant<Bits<8>>,
     /// The [`verdict`] codes.
     passed: Constant<Bits<2>>,
     outside: Constant<Bits<2>>,
     back_face: Constant<Bits<2>>,
     zero_area: Constant<Bits<2>>,
+    /// Rejecting and culling present (`CULL`, `crate::switch`); without it every triangle
+    /// passes and the area is not computed: no triangle of the frame may be rejected or
+    /// culled.
+    cull: Switch,
 }
 
 impl Default for CullSort {
@@ -176,10 +180,8 @@ impl Default for CullSort {
             far: Default::default(),
             right: Default::default(),
             bottom: Default::default(),
-            e1x: Default::default(),
-            e1y: Default::default(),
-            e2x: Default::default(),
-            e2y: Default::default(),
+            wx: Default::default(),
+            wy: Default::default(),
             area: Default::default(),
             area_mul: Default::default(),
             key: Default::default(),
@@ -207,12 +209,12 @@ impl Default for CullSort {
             xy_msb: Constant::new((XY - 1).to_bits()),
             z_msb: Constant::new((Z - 1).to_bits()),
             area_msb: Constant::new((AREA - 1).to_bits()),
-            delta_msb: Constant::new((DELTA - 1).to_bits()),
             frac: Constant::new((FORMATS.xy.frac as usize).to_bits()),
             passed: Constant::new(verdict::PASSED.to_bits()),
             outside: Constant::new(verdict::OUTSIDE.to_bits()),
             back_face: Constant::new(verdict::BACK_FACE.to_bits()),
             zero_area: Constant::new(verdict::ZERO_AREA.to_bits()),
+            cull: Default::default(),
         }
     }
 }
@@ -280,38 +282,29 @@ impl Logic for CullSort {
 
         // Twice the signed area in submission order (`model::cull_sort::area2`), from edge
         // vectors one bit wider than the coordinates (their sign bit copied up).
-        self.e1x.next = bit_cast::<DELTA, XY>(self.inp.v1_x.val())
-            .replace_bit(self.delta_msb.val().index(), self.inp.v1_x.val().get_bit(self.xy_msb.val().index()))
-            - bit_cast::<DELTA, XY>(self.inp.v0_x.val())
-                .replace_bit(self.delta_msb.val().index(), self.inp.v0_x.val().get_bit(self.xy_msb.val().index()));
-        self.e1y.next = bit_cast::<DELTA, XY>(self.inp.v1_y.val())
-            .replace_bit(self.delta_msb.val().index(), self.inp.v1_y.val().get_bit(self.xy_msb.val().index()))
-            - bit_cast::<DELTA, XY>(self.inp.v0_y.val())
-                .replace_bit(self.delta_msb.val().index(), self.inp.v0_y.val().get_bit(self.xy_msb.val().index()));
-        self.e2x.next = bit_cast::<DELTA, XY>(self.inp.v2_x.val())
-            .replace_bit(self.delta_msb.val().index(), self.inp.v2_x.val().get_bit(self.xy_msb.val().index()))
-            - bit_cast::<DELTA, XY>(self.inp.v0_x.val())
-                .replace_bit(self.delta_msb.val().index(), self.inp.v0_x.val().get_bit(self.xy_msb.val().index()));
-        self.e2y.next = bit_cast::<DELTA, XY>(self.inp.v2_y.val())
-            .replace_bit(self.delta_msb.val().index(), self.inp.v2_y.val().get_bit(self.xy_msb.val().index()))
-            - bit_cast::<DELTA, XY>(self.inp.v0_y.val())
-                .replace_bit(self.delta_msb.val().index(), self.inp.v0_y.val().get_bit(self.xy_msb.val().index()));
-        self.area_mul[0].a.next = self.e1x.val();
-        self.area_mul[0].b.next = self.e2y.val();
-        self.area_mul[1].a.next = self.e2x.val();
-        self.area_mul[1].b.next = self.e1y.val();
+        for i in 0..3 {
+            self.wx[i].x.next = self.vx[i].val();
+            self.wy[i].x.next = self.vy[i].val();
+        }
+        // (v1 - v0).x (v2 - v0).y - (v2 - v0).x (v1 - v0).y
+        self.area_mul[0].a.next = self.wx[1].y.val() - self.wx[0].y.val();
+        self.area_mul[0].b.next = self.wy[2].y.val() - self.wy[0].y.val();
+        self.area_mul[1].a.next = self.wx[2].y.val() - self.wx[0].y.val();
+        self.area_mul[1].b.next = self.wy[1].y.val() - self.wy[0].y.val();
         self.area.next = self.area_mul[0].p.val() - self.area_mul[1].p.val();
 
         // The verdict, in the model's order: outside one plane, zero area, back face.
         self.code.next = self.passed.val();
-        if self.cull_back.val() & !self.area.val().get_bit(self.area_msb.val().index()) {
-            self.code.next = self.back_face.val();
-        }
-        if self.area.val() == 0 {
-            self.code.next = self.zero_area.val();
-        }
-        if (self.oc[0].val() & self.oc[1].val() & self.oc[2].val()).any() {
-            self.code.next = self.outside.val();
+        if self.cull.on.val() {
+            if self.cull_back.val() & !self.area.val().get_bit(self.area_msb.val().index()) {
+                self.code.next = self.back_face.val();
+            }
+            if self.area.val() == 0 {
+                self.code.next = self.zero_area.val();
+            }
+            if (self.oc[0].val() & self.oc[1].val() & self.oc[2].val()).any() {
+                self.code.next = self.outside.val();
+            }
         }
 
         // Sort by (y, input index): vertex i goes before j (i < j) iff y_i <= y_j; a
@@ -393,9 +386,15 @@ crate::pins!(CullSort {
     links: [out, inp, verdict],
 });
 
-/// `UNITS` entry: the cull & sort unit (no parameters; the screen size is an input).
+impl CullSort {
+    /// The cull & sort unit with rejecting and culling present or not (`parts.cull`).
+    pub fn new(parts: &Parts) -> CullSort {
+        CullSort { cull: Switch::new(parts.cull), ..Default::default() }
+    }
+}
+
+/// `UNITS` entry: the cull & sort unit, with rejecting and culling as `params["CULL"]`
+/// says (the screen size is an input).
 pub fn emit_cull_sort(params: &Params) -> Result<Emitted, String> {
-    let mut u = CullSort::default();
-    u.connect_all();
-    Ok(Emitted { unit: "cull_sort", params: params.clone(), formats: None, ports: ports(&u), verilog: verilog("cull_sort", &u) })
+    Ok(emit_unit("cull_sort", CullSort::new(&Parts::of(params)?), params))
 }

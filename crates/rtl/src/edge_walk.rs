@@ -31,8 +31,9 @@
 //! (WALK) and held while `out$ready` is low; the next triangle is taken the cycle after the
 //! last scanline. Model: `model::edge_walk::edge_walk`. Emitted: `hdl-out/edge_walk.v`.
 
-use crate::emit::{emit, Emitted};
+use crate::emit::{emit_unit, Emitted};
 use crate::parts::{Negative, SignedLess};
+use crate::switch::{Parts, Switch};
 use super::links::{SpanCmdSource, TriangleSetupSink};
 use super::widths::{C_ACC, DC, DIM, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
 use crate::Params;
@@ -235,6 +236,9 @@ pub struct EdgeWalk {
     pub inp: TriangleSetupSink,
     /// A span command (a scanline with pixels, on screen).
     pub out: SpanCmdSource,
+    /// Y clipping present (`CLIP_Y`, `crate::switch`); without it the walk is always down
+    /// and the screen's rows are not checked: no triangle may cross the top or bottom.
+    clip_y: Switch,
     /// The long edge and the short edge being walked.
     maj: Stepper,
     cur: Stepper,
@@ -342,22 +346,26 @@ impl Logic for EdgeWalk {
             self.j_next.next = self.j.q.val() - 1;
         }
         self.last.next = self.k_next.val() == self.total.q.val();
-        if self.up.q.val() {
-            if self.j.q.val() == 0 {
+        if self.clip_y.on.val() {
+            if self.up.q.val() {
+                if self.j.q.val() == 0 {
+                    self.last.next = true;
+                }
+            } else if self.j_next.val() == self.height_j.val() {
                 self.last.next = true;
             }
-        } else if self.j_next.val() == self.height_j.val() {
-            self.last.next = true;
         }
         // SETUP: nothing to walk when the edge crosses no scanline centre or the walk
         // starts beyond the boundary it walks towards.
         self.no_rows.next = self.total.q.val() == 0;
-        if self.up.q.val() {
-            if self.j_sign.neg.val() {
+        if self.clip_y.on.val() {
+            if self.up.q.val() {
+                if self.j_sign.neg.val() {
+                    self.no_rows.next = true;
+                }
+            } else if !self.j_sign.neg.val() & (self.j.q.val() >= self.height_j.val()) {
                 self.no_rows.next = true;
             }
-        } else if !self.j_sign.neg.val() & (self.j.q.val() >= self.height_j.val()) {
-            self.no_rows.next = true;
         }
 
         // The span command: left side from x, right side up to x - 1; pixels when
@@ -394,7 +402,10 @@ impl Logic for EdgeWalk {
             self.out.right_c1.next = self.maj.at_c1.val();
             self.out.right_c2.next = self.maj.at_c2.val();
         }
-        self.valid.next = self.busy.q.val() & self.walking.q.val() & !self.j_sign.neg.val() & self.sides.lt.val();
+        self.valid.next = self.busy.q.val() & self.walking.q.val() & self.sides.lt.val();
+        if self.clip_y.on.val() & self.j_sign.neg.val() {
+            self.valid.next = false;
+        }
         self.out.valid.next = self.valid.val();
         // WALK: move on unless the command presented waits for `out.ready`.
         self.advance.next = self.busy.q.val() & self.walking.q.val() & (!self.valid.val() | self.out.ready.val());
@@ -473,7 +484,7 @@ impl Logic for EdgeWalk {
         if self.accept.val() {
             self.busy.d.next = true;
             self.walking.d.next = false;
-            self.up.d.next = self.inp.walk.val();
+            self.up.d.next = self.inp.walk.val() & self.clip_y.on.val();
             self.maj_left.d.next = self.inp.maj_left.val();
             self.j.d.next = self.inp.maj_j.val();
             self.k.d.next = 0.into();
@@ -527,7 +538,15 @@ crate::pins!(EdgeWalk {
     links: [inp, out],
 });
 
-/// `UNITS` entry: the edge walk (no parameters: widths from `crate::widths`).
+impl EdgeWalk {
+    /// The edge walk with Y clipping present or not (`parts.clip_y`).
+    pub fn new(parts: &Parts) -> EdgeWalk {
+        EdgeWalk { clip_y: Switch::new(parts.clip_y), ..Default::default() }
+    }
+}
+
+/// `UNITS` entry: the edge walk, with Y clipping as `params["CLIP_Y"]` says (widths from
+/// `crate::widths`).
 pub fn emit_edge_walk(params: &Params) -> Result<Emitted, String> {
-    Ok(emit::<EdgeWalk>("edge_walk", params.clone()))
+    Ok(emit_unit("edge_walk", EdgeWalk::new(&Parts::of(params)?), params))
 }

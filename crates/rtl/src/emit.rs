@@ -45,9 +45,13 @@ pub fn verilog<U: Block>(name: &str, u: &U) -> String {
 
 /// Builds `U`, connects it and emits it as unit `name` with its ports.
 pub fn emit<U: Block + Default>(name: &'static str, params: Params) -> Emitted {
-    let mut u = U::default();
+    emit_unit(name, U::default(), &params)
+}
+
+/// Connects `u` and emits it as unit `name` with `params` and its ports.
+pub fn emit_unit<U: Block>(name: &'static str, mut u: U, params: &Params) -> Emitted {
     u.connect_all();
-    Emitted { unit: name, params, formats: None, ports: ports(&u), verilog: verilog(name, &u) }
+    Emitted { unit: name, params: params.clone(), formats: None, ports: ports(&u), verilog: verilog(name, &u) }
 }
 
 /// The top-level ports of `u`, in declaration order (a bundle's pins are named

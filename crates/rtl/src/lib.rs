@@ -13,6 +13,7 @@ pub mod mul;
 pub mod parts;
 pub mod se;
 pub mod sim;
+pub mod switch;
 
 /// The scanline pipeline's units, as modules of a build module (`n10.rs`, ..., `custom.rs`):
 /// rust-hdl's widths are compile-time constants, so each build (`config`: a size class `n`,
@@ -141,11 +142,23 @@ pub(crate) const K: Param = Param {
 pub(crate) const L: Param =
     Param { name: "L", default: 5, doc: "stages of the shared divider (latency), 1 to 25; 001 has 5" };
 
+/// The switches of the scanline units' optional parts (`switch::Parts`), each 1 (present)
+/// by default.
+const fn part(i: usize) -> Param {
+    Param { name: switch::Parts::PARAMS[i].0, default: 1, doc: switch::Parts::PARAMS[i].1 }
+}
+const CULL: Param = part(0);
+const CLIP_Y: Param = part(1);
+const CLIP_X: Param = part(2);
+const CLIP_Z: Param = part(3);
+const DEPTH_TEST: Param = part(4);
+
 /// The size-class parameter every scanline unit has.
 const N: Param = Param {
     name: "N",
     default: fx::RTL_CLASS as u64,
-    doc: "size class: screens up to 2^N x 2^N, formats Formats::for_n(N); 10, 11 or 12",
+    doc:
+        "size class: screens up to 2^N x 2^N, formats Formats::for_n(N); 10, 11 or 12, or rtl::custom's class (8 to 12)",
 };
 
 use emit::Emitted;
@@ -189,7 +202,7 @@ pub const UNITS: &[Unit] = &[
     Unit {
         name: "cull_sort",
         doc: "cull & sort, paper 003 Fig. 4, Table 1: outcodes, reject, back-face cull, sort by y; 1 cycle",
-        params: &[N],
+        params: &[N, CULL],
         build: by_build!(cull_sort::emit_cull_sort),
     },
     Unit {
@@ -207,19 +220,19 @@ pub const UNITS: &[Unit] = &[
     Unit {
         name: "edge_walk",
         doc: "edge walk, papers 001 §II.2 and 003 Fig. 5: one scanline per cycle, exact edges, Y clipping",
-        params: &[N],
+        params: &[N, CLIP_Y],
         build: by_build!(edge_walk::emit_edge_walk),
     },
     Unit {
         name: "span",
         doc: "span unit, papers 001 §II.2 and 003 Fig. 6: one pixel per cycle, X and Z clipping",
-        params: &[N],
+        params: &[N, CLIP_X, CLIP_Z],
         build: by_build!(span::emit_span),
     },
     Unit {
         name: "pixel_out",
         doc: "depth test LESS and depth/colour writes through a synchronous memory port, one pixel per cycle",
-        params: &[N],
+        params: &[N, DEPTH_TEST],
         build: by_build!(pixel_out::emit_pixel_out),
     },
     Unit {
@@ -239,6 +252,11 @@ pub const UNITS: &[Unit] = &[
                 default: 1,
                 doc: "1: pixel_out and its memory port present; 0: absent, the fragment stream out (out_*)",
             },
+            CULL,
+            CLIP_Y,
+            CLIP_X,
+            CLIP_Z,
+            DEPTH_TEST,
         ],
         build: by_build!(raster_top::emit_raster_top),
     },
@@ -259,13 +277,27 @@ pub const UNITS: &[Unit] = &[
 /// The default design: units and parameters that `edgepaint` with no arguments emits.
 pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("ept", &[("P", 64)]),
-    ("cull_sort", &[("N", 10)]),
+    ("cull_sort", &[("N", 10), ("CULL", 1)]),
     ("divider", &[("N", 10), ("L", 5)]),
     ("triangle_setup", &[("N", 10), ("K", 7), ("L", 5)]),
-    ("edge_walk", &[("N", 10)]),
-    ("span", &[("N", 10)]),
-    ("pixel_out", &[("N", 10)]),
-    ("raster_top", &[("N", 10), ("K", 7), ("L", 5), ("CULL_SORT", 1), ("PIXEL_OUT", 1)]),
+    ("edge_walk", &[("N", 10), ("CLIP_Y", 1)]),
+    ("span", &[("N", 10), ("CLIP_X", 1), ("CLIP_Z", 1)]),
+    ("pixel_out", &[("N", 10), ("DEPTH_TEST", 1)]),
+    (
+        "raster_top",
+        &[
+            ("N", 10),
+            ("K", 7),
+            ("L", 5),
+            ("CULL_SORT", 1),
+            ("PIXEL_OUT", 1),
+            ("CULL", 1),
+            ("CLIP_Y", 1),
+            ("CLIP_X", 1),
+            ("CLIP_Z", 1),
+            ("DEPTH_TEST", 1),
+        ],
+    ),
     ("se", &[("P", 64), ("ZW", 24), ("CW", 16), ("F", 16), ("I", 0)]),
 ];
 

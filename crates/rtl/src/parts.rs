@@ -1,5 +1,6 @@
 //! Small combinational blocks the units share: sign tests, a rounding shift and bit
-//! concatenation.
+//! concatenation; and [`defaults`], the arrays of signals, registers and blocks a unit's
+//! constructor fills.
 //!
 //! The units keep signed quantities in plain `Bits<N>` (adds and subtracts wrap the same
 //! either way, and rust-hdl simulates `Bits` fast), so the few places that need a sign use
@@ -7,6 +8,11 @@
 //! are `Constant`s here, because an `#[hdl_gen]` kernel cannot name a Rust constant.
 
 use rust_hdl::prelude::*;
+
+/// `N` default values: an array of signals, registers or blocks as a unit starts.
+pub fn defaults<T: Default, const N: usize>() -> [T; N] {
+    std::array::from_fn(|_| T::default())
+}
 
 /// `neg` = `x < 0`, for an `N`-bit two's complement `x`.
 #[derive(LogicBlock)]
@@ -143,5 +149,38 @@ impl<const HI: usize, const LO: usize, const W: usize> Logic for Concat<HI, LO, 
     #[hdl_gen]
     fn update(&mut self) {
         self.out.next = (bit_cast::<W, HI>(self.hi.val()) << self.shift.val()) | bit_cast::<W, LO>(self.lo.val());
+    }
+}
+
+/// `y` = `x` sign-extended from `IN` to `OUT` bits (`OUT > IN`): a kernel cannot `bit_cast`
+/// an array element indexed by a loop's variable, so an array of these does it.
+#[derive(LogicBlock)]
+pub struct SignExtend<const IN: usize, const OUT: usize> {
+    pub x: Signal<In, Bits<IN>>,
+    pub y: Signal<Out, Bits<OUT>>,
+    msb: Constant<Bits<8>>,
+    /// Ones above the low `IN` bits.
+    ext: Constant<Bits<OUT>>,
+}
+
+impl<const IN: usize, const OUT: usize> Default for SignExtend<IN, OUT> {
+    fn default() -> Self {
+        assert!(IN < OUT, "SignExtend<{IN}, {OUT}>: widens");
+        SignExtend {
+            x: Default::default(),
+            y: Default::default(),
+            msb: Constant::new((IN - 1).to_bits()),
+            ext: Constant::new(!Bits::<OUT>::default() << (IN as u64)),
+        }
+    }
+}
+
+impl<const IN: usize, const OUT: usize> Logic for SignExtend<IN, OUT> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.y.next = bit_cast::<OUT, IN>(self.x.val());
+        if self.x.val().get_bit(self.msb.val().index()) {
+            self.y.next = bit_cast::<OUT, IN>(self.x.val()) | self.ext.val();
+        }
     }
 }

@@ -27,8 +27,9 @@
 //! (the newer first). Model: `model::pixel_out::Framebuffer::pixel_out`. Emitted:
 //! `hdl-out/pixel_out.v`.
 
-use crate::emit::{emit, Emitted};
+use crate::emit::{emit_unit, Emitted};
 use crate::parts::Concat;
+use crate::switch::{Parts, Switch};
 use super::links::{MemoryPort, PixelSink};
 use super::widths::{ADDR, CHANNEL, DEPTH, RGB, SCREEN};
 use crate::Params;
@@ -45,6 +46,9 @@ pub struct PixelOut {
     /// No pixel in the pipeline (for `raster_top`'s frame-done): empty 3 cycles after the
     /// last pixel came in, whether it was written or not.
     pub idle: Signal<Out, Bit>,
+    /// The depth test present (`DEPTH_TEST`, `crate::switch`); without it no depth is read
+    /// and every pixel is written: no two pixels of a frame may share an address.
+    depth_test: Switch,
     /// s1: the pixel whose depth is being read (`mem.rd_z` holds it this cycle).
     s1_valid: DFF<Bit>,
     s1_addr: DFF<Bits<ADDR>>,
@@ -85,7 +89,7 @@ impl Logic for PixelOut {
 
         // Cycle t: the pixel comes in and its depth is read.
         self.inp.ready.next = self.mem.ready.val();
-        self.mem.rd_en.next = self.inp.valid.val();
+        self.mem.rd_en.next = self.inp.valid.val() & self.depth_test.on.val();
         self.mem.rd_addr.next = self.addr.out.val();
 
         // Cycle t + 1: depth test against the newest depth of the address.
@@ -96,7 +100,10 @@ impl Logic for PixelOut {
         if self.s2_write.q.val() & (self.s2_addr.q.val() == self.s1_addr.q.val()) {
             self.old_z.next = self.s2_z.q.val();
         }
-        self.pass.next = self.s1_valid.q.val() & (self.s1_z.q.val() < self.old_z.val());
+        self.pass.next = self.s1_valid.q.val();
+        if self.depth_test.on.val() & (self.s1_z.q.val() >= self.old_z.val()) {
+            self.pass.next = false;
+        }
 
         // Cycle t + 2: the write.
         self.mem.wr_en.next = self.s2_write.q.val();
@@ -129,7 +136,15 @@ crate::pins!(PixelOut {
     links: [inp, mem],
 });
 
-/// `UNITS` entry: the pixel output unit (no parameters: widths from `crate::widths`).
+impl PixelOut {
+    /// The pixel output unit with the depth test present or not (`parts.depth_test`).
+    pub fn new(parts: &Parts) -> PixelOut {
+        PixelOut { depth_test: Switch::new(parts.depth_test), ..Default::default() }
+    }
+}
+
+/// `UNITS` entry: the pixel output unit, with the depth test as `params["DEPTH_TEST"]`
+/// says (widths from `crate::widths`).
 pub fn emit_pixel_out(params: &Params) -> Result<Emitted, String> {
-    Ok(emit::<PixelOut>("pixel_out", params.clone()))
+    Ok(emit_unit("pixel_out", PixelOut::new(&Parts::of(params)?), params))
 }

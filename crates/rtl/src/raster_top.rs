@@ -54,7 +54,8 @@ use super::span::Span;
 use super::span_fifo::SpanFifo;
 use super::triangle_setup::TriangleSetup;
 use super::widths::DIM;
-use crate::emit::{ports, verilog, Emitted};
+use crate::emit::{emit_unit, Emitted};
+use crate::switch::Parts;
 use crate::Params;
 use rust_hdl::prelude::*;
 
@@ -89,8 +90,9 @@ pub struct RasterTopCore {
 }
 
 impl RasterTopCore {
-    /// The core with `k` multipliers in setup and an `l`-stage divider.
-    pub fn new(k: usize, l: usize) -> Result<RasterTopCore, String> {
+    /// The core with `k` multipliers in setup, an `l`-stage divider, and the clipping
+    /// `parts` says.
+    pub fn new(k: usize, l: usize, parts: &Parts) -> Result<RasterTopCore, String> {
         Ok(RasterTopCore {
             clock: Default::default(),
             width: Default::default(),
@@ -101,9 +103,9 @@ impl RasterTopCore {
             idle: Default::default(),
             done: Default::default(),
             triangle_setup: TriangleSetup::new(k, l)?,
-            edge_walk: Default::default(),
+            edge_walk: EdgeWalk::new(parts),
             fifo: Default::default(),
-            span: Default::default(),
+            span: Span::new(parts),
             in_setup: Default::default(),
             last_in: Default::default(),
         })
@@ -114,7 +116,8 @@ impl RasterTopCore {
 /// stages).
 impl Default for RasterTopCore {
     fn default() -> Self {
-        RasterTopCore::new(crate::K.default as usize, crate::L.default as usize).expect("the default K and L are supported")
+        RasterTopCore::new(crate::K.default as usize, crate::L.default as usize, &Parts::ALL)
+            .expect("the default K and L are supported")
     }
 }
 
@@ -187,9 +190,10 @@ pub struct RasterTopFragments {
 }
 
 impl RasterTopFragments {
-    /// `cull_sort` and the core with `k` multipliers in setup and an `l`-stage divider.
-    pub fn new(k: usize, l: usize) -> Result<RasterTopFragments, String> {
-        Ok(RasterTopFragments { core: RasterTopCore::new(k, l)?, ..Default::default() })
+    /// `cull_sort` and the core with `k` multipliers in setup and an `l`-stage divider,
+    /// with the parts `parts` says.
+    pub fn new(k: usize, l: usize, parts: &Parts) -> Result<RasterTopFragments, String> {
+        Ok(RasterTopFragments { cull_sort: CullSort::new(parts), core: RasterTopCore::new(k, l, parts)?, ..Default::default() })
     }
 }
 
@@ -245,9 +249,10 @@ pub struct RasterTopSorted {
 }
 
 impl RasterTopSorted {
-    /// The core with `k` multipliers in setup and an `l`-stage divider, and `pixel_out`.
-    pub fn new(k: usize, l: usize) -> Result<RasterTopSorted, String> {
-        Ok(RasterTopSorted { core: RasterTopCore::new(k, l)?, ..Default::default() })
+    /// The core with `k` multipliers in setup and an `l`-stage divider, and `pixel_out`,
+    /// with the parts `parts` says.
+    pub fn new(k: usize, l: usize, parts: &Parts) -> Result<RasterTopSorted, String> {
+        Ok(RasterTopSorted { core: RasterTopCore::new(k, l, parts)?, pixel_out: PixelOut::new(parts), ..Default::default() })
     }
 }
 
@@ -299,9 +304,14 @@ pub struct RasterTop {
 
 impl RasterTop {
     /// `cull_sort`, the core with `k` multipliers in setup and an `l`-stage divider, and
-    /// `pixel_out`.
-    pub fn new(k: usize, l: usize) -> Result<RasterTop, String> {
-        Ok(RasterTop { core: RasterTopCore::new(k, l)?, ..Default::default() })
+    /// `pixel_out`, with the parts `parts` says.
+    pub fn new(k: usize, l: usize, parts: &Parts) -> Result<RasterTop, String> {
+        Ok(RasterTop {
+            cull_sort: CullSort::new(parts),
+            core: RasterTopCore::new(k, l, parts)?,
+            pixel_out: PixelOut::new(parts),
+            ..Default::default()
+        })
     }
 }
 
@@ -339,22 +349,25 @@ crate::pins!(RasterTop {
     links: [inp, mem, verdict],
 });
 
-/// `unit`, connected and emitted as `raster_top` with `params`.
-fn emitted<U: Block>(mut unit: U, params: &Params) -> Emitted {
-    unit.connect_all();
-    Emitted { unit: "raster_top", params: params.clone(), formats: None, ports: ports(&unit), verilog: verilog("raster_top", &unit) }
-}
-
 /// `UNITS` entry: the rasterizer with `params["K"]` setup multipliers, a
-/// `params["L"]`-stage divider, and `cull_sort` and `pixel_out` present (1) or not (0) as
-/// `params["CULL_SORT"]` and `params["PIXEL_OUT"]` say.
+/// `params["L"]`-stage divider, `cull_sort` and `pixel_out` present (1) or not (0) as
+/// `params["CULL_SORT"]` and `params["PIXEL_OUT"]` say, and the optional parts of the units
+/// present as `CULL`, `CLIP_Y`, `CLIP_X`, `CLIP_Z` and `DEPTH_TEST` say (`crate::switch`).
 pub fn emit_raster_top(params: &Params) -> Result<Emitted, String> {
     let (k, l) = (params["K"] as usize, params["L"] as usize);
+    let parts = Parts::of(params)?;
+    if params["CULL_SORT"] == 0 && !parts.cull {
+        return Err("raster_top: CULL = 0 removes cull_sort's rejecting and culling, which CULL_SORT = 0 has no unit for".into());
+    }
+    if params["PIXEL_OUT"] == 0 && !parts.depth_test {
+        return Err("raster_top: DEPTH_TEST = 0 removes pixel_out's depth test, which PIXEL_OUT = 0 has no unit for".into());
+    }
+    let p = &parts;
     match (params["CULL_SORT"], params["PIXEL_OUT"]) {
-        (1, 1) => Ok(emitted(RasterTop::new(k, l)?, params)),
-        (1, 0) => Ok(emitted(RasterTopFragments::new(k, l)?, params)),
-        (0, 1) => Ok(emitted(RasterTopSorted::new(k, l)?, params)),
-        (0, 0) => Ok(emitted(RasterTopCore::new(k, l)?, params)),
+        (1, 1) => Ok(emit_unit("raster_top", RasterTop::new(k, l, p)?, params)),
+        (1, 0) => Ok(emit_unit("raster_top", RasterTopFragments::new(k, l, p)?, params)),
+        (0, 1) => Ok(emit_unit("raster_top", RasterTopSorted::new(k, l, p)?, params)),
+        (0, 0) => Ok(emit_unit("raster_top", RasterTopCore::new(k, l, p)?, params)),
         (c, p) => Err(format!("raster_top: CULL_SORT and PIXEL_OUT are 1 (present) or 0 (absent), not {c} and {p}")),
     }
 }

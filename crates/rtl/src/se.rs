@@ -49,6 +49,7 @@ pub mod zcmp;
 
 use crate::emit::{ports, verilog, Emitted};
 use crate::ept::{Ept16, Ept32, Ept64, Ept8};
+use crate::parts::defaults;
 use crate::sim::{Pins, Value};
 use crate::Params;
 use interp::Interp;
@@ -325,13 +326,13 @@ macro_rules! se_size {
                     mul_r: Default::default(),
                     interp: Default::default(),
                     ept: Default::default(),
-                    zc: std::array::from_fn(|_| Default::default()),
-                    ozr: std::array::from_fn(|_| Default::default()),
-                    nzr: std::array::from_fn(|_| Default::default()),
-                    rr: std::array::from_fn(|_| Default::default()),
-                    gr: std::array::from_fn(|_| Default::default()),
-                    br: std::array::from_fn(|_| Default::default()),
-                    wes: std::array::from_fn(|_| Default::default()),
+                    zc: defaults(),
+                    ozr: defaults(),
+                    nzr: defaults(),
+                    rr: defaults(),
+                    gr: defaults(),
+                    br: defaults(),
+                    wes: defaults(),
                     rdy: Default::default(),
                     accept: Default::default(),
                     xlb: Default::default(),

@@ -28,8 +28,9 @@
 //! follow each other without a gap. A dropped span takes one cycle. Model:
 //! `model::span::span`. Emitted: `hdl-out/span.v`.
 
-use crate::emit::{emit, Emitted};
+use crate::emit::{emit_unit, Emitted};
 use crate::parts::{Negative, RoundShift, SignedLess};
+use crate::switch::{Parts, Switch};
 use super::links::{PixelSource, SpanCmdSink};
 use super::widths::{CHANNEL, C_ACC, DC, DEPTH, DIM, DZ, FORMATS, PIXEL, SCREEN, Z_ACC};
 use crate::Params;
@@ -59,6 +60,11 @@ pub struct Span {
     pub out: PixelSource,
     /// No span in progress (for `raster_top`'s frame-done).
     pub idle: Signal<Out, Bit>,
+    /// X and Z clipping present (`CLIP_X`, `CLIP_Z`, `crate::switch`). Without X clipping
+    /// every span is walked left to right from xl to xr and the screen's columns are not
+    /// checked; without Z clipping no depth is checked.
+    clip_x: Switch,
+    clip_z: Switch,
     /// A span is in progress; `drop` marks the one cycle of a dropped span.
     busy: DFF<Bit>,
     drop: DFF<Bit>,
@@ -109,11 +115,13 @@ impl Logic for Span {
         self.c0.x.next = self.a_c0.q.val();
         self.c1.x.next = self.a_c1.q.val();
         self.c2.x.next = self.a_c2.q.val();
-        self.valid.next = self.busy.q.val()
-            & !self.drop.q.val()
-            & (self.x.q.val() < self.width_x.val())
-            & !self.zp.neg.val()
-            & !self.zp.over.val();
+        self.valid.next = self.busy.q.val() & !self.drop.q.val();
+        if self.clip_x.on.val() & (self.x.q.val() >= self.width_x.val()) {
+            self.valid.next = false;
+        }
+        if self.clip_z.on.val() & (self.zp.neg.val() | self.zp.over.val()) {
+            self.valid.next = false;
+        }
         self.out.valid.next = self.valid.val();
         self.out.x.next = bit_cast::<SCREEN, PIXEL>(self.x.q.val());
         self.out.y.next = self.y.q.val();
@@ -178,17 +186,22 @@ impl Logic for Span {
         self.xl_on.b.next = self.width_x.val();
         if self.accept.val() {
             self.busy.d.next = true;
-            self.drop.d.next = !self.xl_on.lt.val()
-                | self.xr_neg.neg.val()
-                | (self.zl.neg.val() & self.zr.neg.val())
-                | (self.zl.over.val() & self.zr.over.val());
+            self.drop.d.next = false;
+            if self.clip_x.on.val() & (!self.xl_on.lt.val() | self.xr_neg.neg.val()) {
+                self.drop.d.next = true;
+            }
+            if self.clip_z.on.val()
+                & ((self.zl.neg.val() & self.zr.neg.val()) | (self.zl.over.val() & self.zr.over.val()))
+            {
+                self.drop.d.next = true;
+            }
             self.y.d.next = self.inp.y.val();
             self.d_z.d.next = bit_cast::<Z_ACC, DZ>(self.inp.ddx_z.val());
             self.d_c0.d.next = bit_cast::<C_ACC, DC>(self.inp.ddx_c0.val());
             self.d_c1.d.next = bit_cast::<C_ACC, DC>(self.inp.ddx_c1.val());
             self.d_c2.d.next = bit_cast::<C_ACC, DC>(self.inp.ddx_c2.val());
-            self.left.d.next = self.xl_neg.neg.val();
-            if self.xl_neg.neg.val() {
+            self.left.d.next = self.xl_neg.neg.val() & self.clip_x.on.val();
+            if self.xl_neg.neg.val() & self.clip_x.on.val() {
                 self.x.d.next = self.inp.xr.val();
                 self.last.d.next = 0.into();
                 self.a_z.d.next = self.inp.right_z.val();
@@ -198,7 +211,7 @@ impl Logic for Span {
             } else {
                 self.x.d.next = self.inp.xl.val();
                 self.last.d.next = self.inp.xr.val();
-                if self.inp.xr.val() >= self.width_x.val() {
+                if self.clip_x.on.val() & (self.inp.xr.val() >= self.width_x.val()) {
                     self.last.d.next = self.width_x.val() - 1;
                 }
                 self.a_z.d.next = self.inp.left_z.val();
@@ -219,7 +232,15 @@ crate::pins!(Span {
     links: [inp, out],
 });
 
-/// `UNITS` entry: the span unit (no parameters: widths from `crate::widths`).
+impl Span {
+    /// The span unit with X and Z clipping present or not (`parts.clip_x`, `parts.clip_z`).
+    pub fn new(parts: &Parts) -> Span {
+        Span { clip_x: Switch::new(parts.clip_x), clip_z: Switch::new(parts.clip_z), ..Default::default() }
+    }
+}
+
+/// `UNITS` entry: the span unit, with X and Z clipping as `params["CLIP_X"]` and
+/// `params["CLIP_Z"]` say (widths from `crate::widths`).
 pub fn emit_span(params: &Params) -> Result<Emitted, String> {
-    Ok(emit::<Span>("span", params.clone()))
+    Ok(emit_unit("span", Span::new(&Parts::of(params)?), params))
 }

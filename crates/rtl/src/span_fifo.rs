@@ -4,6 +4,7 @@
 
 use super::links::{SpanCmdSink, SpanCmdSource};
 use super::widths::{C_ACC, DC, DZ, PIXEL, SCREEN, Z_ACC};
+use crate::parts::defaults;
 use rust_hdl::prelude::*;
 
 /// Span commands the FIFO between the edge walk and span holds.
@@ -63,7 +64,7 @@ impl<const W: usize, const D: usize> Default for FifoLane<W, D> {
             wr: Default::default(),
             din: Default::default(),
             head: Default::default(),
-            e: std::array::from_fn(|_| Default::default()),
+            e: defaults(),
         }
     }
 }

@@ -59,6 +59,7 @@ use super::cull_sort::{outcode_bit, COLOR, OUTCODE, XY, Z};
 use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_Q, DIV_QM};
 use crate::emit::{ports, verilog, Emitted};
 use crate::mul::Mul;
+use crate::parts::defaults;
 use super::links::{SortedSink, TriangleSetupSource};
 use super::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, WIDTHS, Z_ACC};
 use crate::Params;
@@ -210,13 +211,10 @@ pub struct TriangleSetup {
     kdy: [Signal<Local, Bits<G>>; 3],
     /// The first scanline centre at or below each vertex, `(y + 7) & !15 | 8` (subpixels).
     cv: [Signal<Local, Bits<NB>>; 3],
-    /// Scanlines between those centres, 0 when negative: vMin..vMax, vMin..vMid, vMid..vMax.
-    span_fe: Signal<Local, Bits<PIXEL>>,
-    span_fm: Signal<Local, Bits<PIXEL>>,
-    span_me: Signal<Local, Bits<PIXEL>>,
-    diff_fe: Signal<Local, Bits<NB>>,
-    diff_fm: Signal<Local, Bits<NB>>,
-    diff_me: Signal<Local, Bits<NB>>,
+    /// Scanlines between those centres along e_maj, e_bot, e_top (vMin..vMax, vMin..vMid,
+    /// vMid..vMax), 0 when negative, and the centres' differences.
+    span: [Signal<Local, Bits<PIXEL>>; 3],
+    diff: [Signal<Local, Bits<NB>>; 3],
     /// Walk up (003): the triangle crosses the top boundary and not the bottom one.
     up: Signal<Local, Bit>,
     /// e_maj is the left side (twice the area < 0).
@@ -349,14 +347,6 @@ fn ones_from<const B: usize>(from: usize, to: usize) -> Constant<Bits<B>> {
     Constant::new((((1u128 << (to - from)) - 1) << from).to_bits())
 }
 
-fn locals<T: Synth, const N: usize>() -> [Signal<Local, T>; N] {
-    std::array::from_fn(|_| Default::default())
-}
-
-fn dffs<T: Synth, const N: usize>() -> [DFF<T>; N] {
-    std::array::from_fn(|_| Default::default())
-}
-
 impl TriangleSetup {
     /// Setup with `k` multipliers and an `l`-stage divider (see [`Schedule::new`]).
     pub fn new(k: usize, l: usize) -> Result<TriangleSetup, String> {
@@ -374,46 +364,42 @@ impl TriangleSetup {
             div: DividerRtl::new(l),
             t: Default::default(),
             take: Default::default(),
-            act: locals(),
-            vx: dffs(),
-            vy: dffs(),
-            vz: dffs(),
-            vc: dffs(),
+            act: defaults(),
+            vx: defaults(),
+            vy: defaults(),
+            vz: defaults(),
+            vc: defaults(),
             crosses: Default::default(),
-            xw: locals(),
-            yw: locals(),
-            zn: locals(),
-            cn: locals(),
-            xn: locals(),
-            yn: locals(),
-            kdx: locals(),
-            kdy: locals(),
-            cv: locals(),
-            span_fe: Default::default(),
-            span_fm: Default::default(),
-            span_me: Default::default(),
-            diff_fe: Default::default(),
-            diff_fm: Default::default(),
-            diff_me: Default::default(),
+            xw: defaults(),
+            yw: defaults(),
+            zn: defaults(),
+            cn: defaults(),
+            xn: defaults(),
+            yn: defaults(),
+            kdx: defaults(),
+            kdy: defaults(),
+            cv: defaults(),
+            span: defaults(),
+            diff: defaults(),
             up: Default::default(),
             maj_left: Default::default(),
-            edx: locals(),
-            edy: locals(),
-            ed16: locals(),
-            bx: locals(),
-            by: locals(),
-            cy: locals(),
-            count: locals(),
-            toff: locals(),
-            xb: locals(),
-            xi: locals(),
-            xf: locals(),
-            tracked: locals(),
-            off_x: locals(),
-            off_y: locals(),
-            dmaj: locals(),
-            dbot: locals(),
-            attr0: locals(),
+            edx: defaults(),
+            edy: defaults(),
+            ed16: defaults(),
+            bx: defaults(),
+            by: defaults(),
+            cy: defaults(),
+            count: defaults(),
+            toff: defaults(),
+            xb: defaults(),
+            xi: defaults(),
+            xf: defaults(),
+            tracked: defaults(),
+            off_x: defaults(),
+            off_y: defaults(),
+            dmaj: defaults(),
+            dbot: defaults(),
+            attr0: defaults(),
             area: Default::default(),
             area_abs: Default::default(),
             exp_c: Default::default(),
@@ -426,34 +412,34 @@ impl TriangleSetup {
             q_msb: Constant::new((QL - 1).to_bits()),
             q_ext: ones_from(QL, NB),
             r_pos: Default::default(),
-            x: dffs(),
-            r: dffs(),
-            q: dffs(),
-            rho: dffs(),
-            pa: locals(),
-            pn: locals(),
-            pe: locals(),
-            pg: locals(),
-            ps: locals(),
-            delta: locals(),
-            eq_b: locals(),
-            shr: locals(),
+            x: defaults(),
+            r: defaults(),
+            q: defaults(),
+            rho: defaults(),
+            pa: defaults(),
+            pn: defaults(),
+            pe: defaults(),
+            pg: defaults(),
+            ps: defaults(),
+            delta: defaults(),
+            eq_b: defaults(),
+            shr: defaults(),
             lsh: Default::default(),
             rsh: Default::default(),
             area_base: Default::default(),
-            num_base: locals(),
-            gx_base: locals(),
-            gy_base: locals(),
-            plane_base: locals(),
-            num: dffs(),
-            p: dffs(),
-            gx: dffs(),
-            gy: dffs(),
-            ddx: locals(),
-            ddy: locals(),
-            plane: dffs(),
-            inc0: dffs(),
-            inc1: dffs(),
+            num_base: defaults(),
+            gx_base: defaults(),
+            gy_base: defaults(),
+            plane_base: defaults(),
+            num: defaults(),
+            p: defaults(),
+            gx: defaults(),
+            gy: defaults(),
+            ddx: defaults(),
+            ddy: defaults(),
+            plane: defaults(),
+            inc0: defaults(),
+            inc1: defaults(),
             lane: consts(|i| s.slots[i].1),
             cyc: consts(|i| s.slots[i].0),
             iss: consts(|j| s.issue[j]),
@@ -565,7 +551,8 @@ impl Logic for TriangleSetup {
         }
 
         // ---- Geometry of the triangle taken (model: `triangle_setup`, its first lines).
-        // x, y sign-extended into the wide domain, z into the narrow one.
+        // x, y sign-extended into the wide domain, z into the narrow one (`bit_cast` cannot
+        // take a loop's index).
         self.xw[0].next = bit_cast::<W, XY>(self.vx[0].q.val());
         if self.vx[0].q.val().get_bit(self.xy_msb.val().index()) {
             self.xw[0].next = bit_cast::<W, XY>(self.vx[0].q.val()) | self.xy_ext.val();
@@ -616,28 +603,22 @@ impl Logic for TriangleSetup {
             self.yn[v].next = self.yw[v].val().get_bits::<NB>(0);
             self.cv[v].next = ((self.yn[v].val() + self.half_m1.val()) & self.int_mask.val()) | self.half.val();
         }
-        // e_maj, e_bot, e_top.
+        // e_maj, e_bot, e_top, and the scanlines between their ends' first centres
+        // (`span` in the model).
         self.kdx[0].next = self.xw[2].val() - self.xw[0].val();
         self.kdy[0].next = self.yw[2].val() - self.yw[0].val();
+        self.diff[0].next = self.cv[2].val() - self.cv[0].val();
         self.kdx[1].next = self.xw[1].val() - self.xw[0].val();
         self.kdy[1].next = self.yw[1].val() - self.yw[0].val();
+        self.diff[1].next = self.cv[1].val() - self.cv[0].val();
         self.kdx[2].next = self.xw[2].val() - self.xw[1].val();
         self.kdy[2].next = self.yw[2].val() - self.yw[1].val();
-        // Scanlines between the vertices' first centres (`span` in the model).
-        self.diff_fe.next = self.cv[2].val() - self.cv[0].val();
-        self.diff_fm.next = self.cv[1].val() - self.cv[0].val();
-        self.diff_me.next = self.cv[2].val() - self.cv[1].val();
-        self.span_fe.next = self.diff_fe.val().get_bits::<PIXEL>(self.frac.val().index());
-        if self.diff_fe.val().get_bit(self.nb_msb.val().index()) {
-            self.span_fe.next = 0.into();
-        }
-        self.span_fm.next = self.diff_fm.val().get_bits::<PIXEL>(self.frac.val().index());
-        if self.diff_fm.val().get_bit(self.nb_msb.val().index()) {
-            self.span_fm.next = 0.into();
-        }
-        self.span_me.next = self.diff_me.val().get_bits::<PIXEL>(self.frac.val().index());
-        if self.diff_me.val().get_bit(self.nb_msb.val().index()) {
-            self.span_me.next = 0.into();
+        self.diff[2].next = self.cv[2].val() - self.cv[1].val();
+        for k in 0..3 {
+            self.span[k].next = self.diff[k].val().get_bits::<PIXEL>(self.frac.val().index());
+            if self.diff[k].val().get_bit(self.nb_msb.val().index()) {
+                self.span[k].next = 0.into();
+            }
         }
         // The walk direction (003) and the edges in walk order. Walking down: e_maj,
         // e_bot, e_top, each from its upper vertex and first centre. Walking up: e_maj,
@@ -645,15 +626,11 @@ impl Logic for TriangleSetup {
         self.up.next = self.crosses.q.val().get_bit(self.top_bit.val().index())
             & !self.crosses.q.val().get_bit(self.bottom_bit.val().index());
         self.maj_left.next = self.area.q.val().get_bit(self.area_msb.val().index());
-        self.edx[0].next = self.kdx[0].val();
-        self.edy[0].next = self.kdy[0].val();
-        self.count[0].next = self.span_fe.val();
-        self.edx[1].next = self.kdx[1].val();
-        self.edy[1].next = self.kdy[1].val();
-        self.count[1].next = self.span_fm.val();
-        self.edx[2].next = self.kdx[2].val();
-        self.edy[2].next = self.kdy[2].val();
-        self.count[2].next = self.span_me.val();
+        for e in 0..3 {
+            self.edx[e].next = self.kdx[e].val();
+            self.edy[e].next = self.kdy[e].val();
+            self.count[e].next = self.span[e].val();
+        }
         self.bx[0].next = self.xn[0].val();
         self.by[0].next = self.yn[0].val();
         self.cy[0].next = self.cv[0].val();
@@ -666,10 +643,10 @@ impl Logic for TriangleSetup {
         if self.up.val() {
             self.edx[1].next = self.kdx[2].val();
             self.edy[1].next = self.kdy[2].val();
-            self.count[1].next = self.span_me.val();
+            self.count[1].next = self.span[2].val();
             self.edx[2].next = self.kdx[1].val();
             self.edy[2].next = self.kdy[1].val();
-            self.count[2].next = self.span_fm.val();
+            self.count[2].next = self.span[1].val();
             self.bx[0].next = self.xn[2].val();
             self.by[0].next = self.yn[2].val();
             self.cy[0].next = self.cv[2].val() - (self.frac_mask.val() + 1);
@@ -683,11 +660,11 @@ impl Logic for TriangleSetup {
         if self.maj_left.val() {
             self.tracked[0].next = self.x[0].q.val();
         }
-        self.tracked[1].next = self.x[1].q.val();
-        self.tracked[2].next = self.x[2].q.val();
-        if self.maj_left.val() {
-            self.tracked[1].next = self.x[1].q.val() - 1;
-            self.tracked[2].next = self.x[2].q.val() - 1;
+        for e in 1..3 {
+            self.tracked[e].next = self.x[e].q.val();
+            if self.maj_left.val() {
+                self.tracked[e].next = self.x[e].q.val() - 1;
+            }
         }
         for e in 0..3 {
             self.ed16[e].next = self.edy[e].val().get_bits::<DIV_D>(0) << self.frac.val();
@@ -708,13 +685,13 @@ impl Logic for TriangleSetup {
         self.dmaj[0].next = self.zn[2].val() - self.zn[0].val();
         self.dbot[0].next = self.zn[1].val() - self.zn[0].val();
         self.attr0[0].next = bit_cast::<ATTR, NB>(self.zn[0].val());
+        self.attr0[1].next = bit_cast::<ATTR, COLOR>(self.vc[0].q.val());
+        self.attr0[2].next = bit_cast::<ATTR, COLOR>(self.vc[1].q.val());
+        self.attr0[3].next = bit_cast::<ATTR, COLOR>(self.vc[2].q.val());
         for c in 0..3 {
             self.dmaj[c + 1].next = self.cn[6 + c].val() - self.cn[c].val();
             self.dbot[c + 1].next = self.cn[3 + c].val() - self.cn[c].val();
         }
-        self.attr0[1].next = bit_cast::<ATTR, COLOR>(self.vc[0].q.val());
-        self.attr0[2].next = bit_cast::<ATTR, COLOR>(self.vc[1].q.val());
-        self.attr0[3].next = bit_cast::<ATTR, COLOR>(self.vc[2].q.val());
 
         // ---- Normalise twice the area for 1/area (`recip_operands`): |a| << (32 - exp).
         self.area_abs.next = self.area.q.val();
@@ -815,10 +792,10 @@ impl Logic for TriangleSetup {
             self.ps[i].next = 0.into();
         }
         // eq. (2)'s second factors: the edge deltas with the area's sign.
-        self.delta[0].next = self.kdx[0].val().get_bits::<NB>(0);
-        self.delta[1].next = self.kdx[1].val().get_bits::<NB>(0);
-        self.delta[2].next = self.kdy[0].val().get_bits::<NB>(0);
-        self.delta[3].next = self.kdy[1].val().get_bits::<NB>(0);
+        for k in 0..2 {
+            self.delta[k].next = self.kdx[k].val().get_bits::<NB>(0);
+            self.delta[2 + k].next = self.kdy[k].val().get_bits::<NB>(0);
+        }
         for d in 0..4 {
             self.eq_b[d].next = self.delta[d].val();
             if self.maj_left.val() {

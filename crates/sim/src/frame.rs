@@ -333,7 +333,8 @@ pub fn draw(dut: &mut dyn Cycle, frame: &Frame, mem: MemoryModel, max_cycles: u6
 pub fn unit() -> RasterTop {
     let u = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
     let p = u.params([]).expect("default parameters");
-    RasterTop::new(p["K"] as usize, p["L"] as usize).expect("the default parameters are supported")
+    RasterTop::new(p["K"] as usize, p["L"] as usize, &rtl::switch::Parts::ALL)
+        .expect("the default parameters are supported")
 }
 
 /// Writes `frame` and the memory writes `writes` as the vector file of the Icarus Verilog

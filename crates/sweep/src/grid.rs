@@ -23,6 +23,9 @@
 //!   engines' words hold 32 bits at most, which the wide formats exceed); a parameter knob
 //!   at the default formats. A method runs
 //!   only the knobs it has (vector has no accumulators, scanline no barycentrics).
+//!   A scanline point may also set a quantity's integer bits, `<quantity>.int` for `dz`, `dc`,
+//!   `ooa_d`, `z_acc` and `c_acc` (`edgepaint fit` sets them from a workload's ranges):
+//!   applied last, over what the rules give, and not raised to the modular minimum.
 //! * `joint`: `samples` points per method with every knob of the method drawn at random
 //!   (seed `seed`) from its values, the other quantities following by the defaults' rules
 //!   (`fx::Formats::follow`), an accumulator's draw raised to its input's fraction bits
@@ -30,7 +33,8 @@
 //!   cloud the Pareto front is drawn from.
 //!
 //! Each method also runs the default design (`default`). After a format knob is applied,
-//! the integer bits the modular condition needs (`dz`, `dc`, `ooa_d`) are raised to it;
+//! the integer bits the modular condition needs (`dz`, `dc`, `ooa_d`) are raised to it
+//! (unless the point sets them, `<quantity>.int`);
 //! a point whose formats are impossible for a scene (`fx::Formats::check`) is an error
 //! that names the point.
 
@@ -67,6 +71,7 @@ impl Method {
             "xy.frac" | "z.frac" | "color.frac" | "ooa.frac" => (true, true, true),
             "z_acc.frac" | "c_acc.frac" | "ooa_d.frac" => (true, false, true),
             "K" | "L" => (true, false, false),
+            "dz.int" | "dc.int" | "ooa_d.int" | "z_acc.int" | "c_acc.int" => (true, false, false),
             "bary.frac" | "inv_w.frac" | "lanes" => (false, true, false),
             _ => (false, false, false),
         };
@@ -90,7 +95,7 @@ impl Method {
 }
 
 /// Every knob a grid may name.
-pub const KNOBS: [&str; 12] = [
+pub const KNOBS: [&str; 17] = [
     "xy.frac",
     "z.frac",
     "color.frac",
@@ -100,6 +105,11 @@ pub const KNOBS: [&str; 12] = [
     "z_acc.frac",
     "c_acc.frac",
     "bary.frac",
+    "dz.int",
+    "dc.int",
+    "ooa_d.int",
+    "z_acc.int",
+    "c_acc.int",
     "K",
     "L",
     "lanes",
@@ -169,8 +179,9 @@ pub struct Point {
     /// The knobs set, with their values.
     pub set: BTreeMap<String, u32>,
     /// The size class of the design, when not the screen's own (`fx::resolution_bits`):
-    /// a workload of several screen sizes drawn by one design (`edgepaint fit`). Never
-    /// below the screen's.
+    /// a workload of several screen sizes drawn by one design, or a class below 10
+    /// (`edgepaint fit`). Never below the smallest that holds the screen
+    /// (`fx::smallest_class`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub class: Option<u32>,
 }
@@ -242,9 +253,14 @@ impl Point {
         let mut f = if wide { Formats::wide(side, side) } else { Formats::for_n(n) };
         let mut params = self.method.default_params();
         let mut given = Given::NONE;
+        let mut ints = Vec::new();
         for (knob, &v) in &self.set {
             if is_param(knob) {
                 params.insert(knob.clone(), v);
+                continue;
+            }
+            if let Some(q) = knob.strip_suffix(".int") {
+                ints.push((q, v));
                 continue;
             }
             let frac = |fm: Fmt| Fmt { frac: v, ..fm };
@@ -272,14 +288,23 @@ impl Point {
         }
         let (dz, dc, ooa_d) = f.modular_ints();
         (f.dz.int, f.dc.int, f.ooa_d.int) = (f.dz.int.max(dz), f.dc.int.max(dc), f.ooa_d.int.max(ooa_d));
+        for (q, v) in ints {
+            match q {
+                "dz" => f.dz.int = v,
+                "dc" => f.dc.int = v,
+                "ooa_d" => f.ooa_d.int = v,
+                "z_acc" => f.z_acc.int = v,
+                "c_acc" => f.c_acc.int = v,
+                _ => return Err(format!("point {}: unknown knob \"{q}.int\"", self.label())),
+            }
+        }
         f.check(width, height).map_err(|e| format!("point {}: {e}", self.label()))?;
         Ok((f, params))
     }
 
     /// The size class of the point's design on a `width` x `height` screen.
     pub fn class(&self, width: u32, height: u32) -> u32 {
-        let n = fx::resolution_bits(width, height);
-        self.class.map_or(n, |c| c.max(n))
+        self.class.map_or(fx::resolution_bits(width, height), |c| c.max(fx::smallest_class(width, height)))
     }
 
     /// `<method> <name>`, as errors name a point.
@@ -324,6 +349,33 @@ mod tests {
         let (f, params) = joint.resolve(320, 240).unwrap();
         assert_eq!(f, Formats::with_overrides(320, 240, &serde_json::json!({"xy": "S11.8 half-up"})).unwrap());
         assert_eq!(params, Method::Scanline.default_params());
+    }
+
+    /// A point with a class below 10 (`edgepaint fit` of a small screen) is at that class's
+    /// defaults, never below the screen's smallest class; `<q>.int` knobs set integer bits
+    /// below the modular minimum, and nothing else moves.
+    #[test]
+    fn a_class_below_10_and_integer_bits_from_ranges() {
+        let p = Point {
+            method: Method::Scanline,
+            name: "fit".into(),
+            kind: "joint".into(),
+            set: BTreeMap::new(),
+            class: Some(8),
+        };
+        assert_eq!((p.class(320, 240), p.class(200, 150), p.class(20, 10)), (9, 8, 8), "never below class 8");
+        assert_eq!(Point { class: None, ..p.clone() }.class(320, 240), 10, "a sweep's points keep class 10");
+        let (f, _) = p.resolve(320, 240).unwrap();
+        assert_eq!(f, Formats::for_n(9));
+        assert_eq!(f.xy, Fmt::s(10, 4).half_up());
+        let ints = Point { set: [("dz.int".into(), 2), ("dc.int".into(), 9), ("c_acc.int".into(), 8)].into(), ..p };
+        let (g, _) = ints.resolve(200, 150).unwrap();
+        let d = Formats::for_n(8);
+        assert_eq!((g.dz, g.dc, g.c_acc), (Fmt::s(2, d.dz.frac), Fmt::s(9, d.dc.frac), Fmt::s(8, d.c_acc.frac)));
+        assert_eq!((g.ooa_d, g.z_acc, g.xy), (d.ooa_d, d.z_acc, d.xy));
+        assert_eq!(g.narrowed(), ["dz", "dc", "c_acc"]);
+        let bad = Point { set: [("dz.int".into(), 0)].into(), ..ints };
+        assert!(bad.resolve(200, 150).unwrap_err().contains("at least 1 integer bit"));
     }
 
     #[test]

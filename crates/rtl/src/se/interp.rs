@@ -21,6 +21,7 @@
 //! **Fig. 9, sign extension.** From s = n + 1 each end repeats its MSB, for the K clocks
 //! the deepest level still adds.
 
+use crate::parts::defaults;
 use rust_hdl::prelude::*;
 
 /// The adders of one level L of the subdivision tree: the points x = (2k+1) P / 2^L, each
@@ -145,9 +146,9 @@ impl<const P: usize, const K: usize> Default for Interp<P, K> {
             msb1: Default::default(),
             e1d: Default::default(),
             a0: Default::default(),
-            a: std::array::from_fn(|_| Default::default()),
-            d: std::array::from_fn(|_| Default::default()),
-            dm: std::array::from_fn(|_| Default::default()),
+            a: defaults(),
+            d: defaults(),
+            dm: defaults(),
             lv: std::array::from_fn(|l| Level::new(l + 1)),
         }
     }
