@@ -8641,6 +8641,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [56:0] edy$0;
     reg  [56:0] edy$1;
     reg  [56:0] edy$2;
+    reg  [33:0] edy_d$0;
+    reg  [33:0] edy_d$1;
+    reg  [33:0] edy_d$2;
     reg  [33:0] ed16$0;
     reg  [33:0] ed16$1;
     reg  [33:0] ed16$2;
@@ -9642,6 +9645,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             cy$1 = cv$2 - (frac_mask + 32'h1);
             cy$2 = cv$1 - (frac_mask + 32'h1);
         end
+        edy_d$0 = ((edy$0) & 34'h3ffffffff);
+        edy_d$1 = ((edy$1) & 34'h3ffffffff);
+        edy_d$2 = ((edy$2) & 34'h3ffffffff);
         tracked$0 = x$0$q - 32'h1;
         if (maj_left) begin
             tracked$0 = x$0$q;
@@ -9654,7 +9660,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         if (maj_left) begin
             tracked$2 = x$2$q - 32'h1;
         end
-        ed16$0 = edy$0[(32'h0)+:(34)] << frac;
+        ed16$0 = edy_d$0 << frac;
         toff$0 = cy$0 - by$0;
         xb$0 = bx$0 - half;
         xf$0 = xb$0 & frac_mask;
@@ -9664,7 +9670,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         end
         off_y$0 = cy$0 - yn$0;
         off_x$0 = (tracked$0 << frac) + half - xn$0;
-        ed16$1 = edy$1[(32'h0)+:(34)] << frac;
+        ed16$1 = edy_d$1 << frac;
         toff$1 = cy$1 - by$1;
         xb$1 = bx$1 - half;
         xf$1 = xb$1 & frac_mask;
@@ -9674,7 +9680,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         end
         off_y$1 = cy$1 - yn$0;
         off_x$1 = (tracked$1 << frac) + half - xn$0;
-        ed16$2 = edy$2[(32'h0)+:(34)] << frac;
+        ed16$2 = edy_d$2 << frac;
         toff$2 = cy$2 - by$2;
         xb$2 = bx$2 - half;
         xf$2 = xb$2 & frac_mask;
@@ -9827,7 +9833,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             div$inp_valid = 1'b1;
             if (count$0 > 32'h1) begin
                 div$inp_n = edx$0[(32'h0)+:(58)];
-                div$inp_d = edy$0[(32'h0)+:(34)];
+                div$inp_d = edy_d$0;
             end
         end
         if (t$q == iss$3) begin
@@ -9841,7 +9847,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             div$inp_valid = 1'b1;
             if (count$1 > 32'h1) begin
                 div$inp_n = edx$1[(32'h0)+:(58)];
-                div$inp_d = edy$1[(32'h0)+:(34)];
+                div$inp_d = edy_d$1;
             end
         end
         if (t$q == iss$5) begin
@@ -9855,7 +9861,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             div$inp_valid = 1'b1;
             if (count$2 > 32'h1) begin
                 div$inp_n = edx$2[(32'h0)+:(58)];
-                div$inp_d = edy$2[(32'h0)+:(34)];
+                div$inp_d = edy_d$2;
             end
         end
         q_n = ((div$out_q[(32'h0)+:(19)]) & 19'h7ffff);

@@ -183,7 +183,10 @@ fn report(
     md += "| | default | fitted |\n|---|---|---|\n";
     md += &format!("| size class | {} | {} |\n| K, L | 7, 5 | {}, {} |\n", default.class, d.class, d.k, d.l);
     let removed: Vec<&str> = needed.parts.params().iter().filter(|(_, on)| *on == 0).map(|(p, _)| *p).collect();
-    md += &format!("| optional parts removed | none | {} |\n", if removed.is_empty() { "none".into() } else { removed.join(", ") });
+    md += &format!(
+        "| optional parts removed | none | {} |\n",
+        if removed.is_empty() { "none".into() } else { removed.join(", ") }
+    );
     for ((q, fd), (_, ff)) in default.formats.named().iter().zip(d.formats.named()) {
         let mark = if *fd != ff { " **" } else { "" };
         md += &format!("| {q} | {fd} | {ff}{mark} |\n");

@@ -250,26 +250,7 @@ impl Formats {
     /// quantities it does not name that follow from those it does derived again
     /// ([`Formats::follow`]).
     pub fn with_overrides(width: u32, height: u32, json: &serde_json::Value) -> Result<Formats, String> {
-        let mut v = serde_json::to_value(Formats::for_resolution(width, height)).expect("formats serialise");
-        let obj = json.as_object().ok_or("a formats file must be a JSON object mapping quantities to formats")?;
-        let target = v.as_object_mut().expect("formats serialise to an object");
-        for (k, val) in obj {
-            if !target.contains_key(k) {
-                let known: Vec<&str> = target.keys().map(String::as_str).collect();
-                return Err(format!("unknown quantity \"{k}\" (known: {})", known.join(", ")));
-            }
-            target.insert(k.clone(), val.clone());
-        }
-        let f: Formats = serde_json::from_value(v).map_err(|e| e.to_string())?;
-        let named = |k: &str| obj.contains_key(k);
-        let given = Given {
-            z_acc: named("z_acc"),
-            dz: named("dz"),
-            c_acc: named("c_acc"),
-            dc: named("dc"),
-            ooa_d: named("ooa_d"),
-        };
-        let f = f.follow(resolution_bits(width, height), given);
+        let f = Formats::over(resolution_bits(width, height), json)?;
         f.check(width, height)?;
         Ok(f)
     }
@@ -281,6 +262,15 @@ impl Formats {
         if class > 16 {
             return Err(format!("size class {class}: at most 16 (screens up to 65536 x 65536)"));
         }
+        let f = Formats::over(class, json)?;
+        let side = 1u32 << class;
+        f.check(side, side)?;
+        Ok(f)
+    }
+
+    /// `Formats::for_n(class)` with the keys of `json` on top and the rest following
+    /// (unchecked).
+    fn over(class: u32, json: &serde_json::Value) -> Result<Formats, String> {
         let mut v = serde_json::to_value(Formats::for_n(class)).expect("formats serialise");
         let obj = json.as_object().ok_or("a formats file must be a JSON object mapping quantities to formats")?;
         let target = v.as_object_mut().expect("formats serialise to an object");
@@ -300,10 +290,7 @@ impl Formats {
             dc: named("dc"),
             ooa_d: named("ooa_d"),
         };
-        let f = f.follow(class, given);
-        let side = 1u32 << class;
-        f.check(side, side)?;
-        Ok(f)
+        Ok(f.follow(class, given))
     }
 
     /// The quantities narrower than the defaults' rules make them for every workload, in

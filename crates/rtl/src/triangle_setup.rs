@@ -224,6 +224,8 @@ pub struct TriangleSetup {
     /// division's offsets (t, x fraction, x integer) and the tracked side's offsets.
     edx: [Signal<Local, Bits<W>>; 3],
     edy: [Signal<Local, Bits<G>>; 3],
+    /// dy as the divisor (zero-extended when `G` is narrower than the divisor).
+    edy_d: [Signal<Local, Bits<DIV_D>>; 3],
     ed16: [Signal<Local, Bits<DIV_D>>; 3],
     bx: [Signal<Local, Bits<NB>>; 3],
     by: [Signal<Local, Bits<NB>>; 3],
@@ -385,6 +387,7 @@ impl TriangleSetup {
             maj_left: Default::default(),
             edx: defaults(),
             edy: defaults(),
+            edy_d: defaults(),
             ed16: defaults(),
             bx: defaults(),
             by: defaults(),
@@ -655,6 +658,10 @@ impl Logic for TriangleSetup {
             self.cy[1].next = self.cv[2].val() - (self.frac_mask.val() + 1);
             self.cy[2].next = self.cv[1].val() - (self.frac_mask.val() + 1);
         }
+        // dy is positive; `bit_cast` (a loop's index cannot) widens it to the divisor.
+        self.edy_d[0].next = bit_cast::<DIV_D, G>(self.edy[0].val());
+        self.edy_d[1].next = bit_cast::<DIV_D, G>(self.edy[1].val());
+        self.edy_d[2].next = bit_cast::<DIV_D, G>(self.edy[2].val());
         // e_maj is the left side when maj_left; the short edges are then on the right.
         self.tracked[0].next = self.x[0].q.val() - 1;
         if self.maj_left.val() {
@@ -667,7 +674,7 @@ impl Logic for TriangleSetup {
             }
         }
         for e in 0..3 {
-            self.ed16[e].next = self.edy[e].val().get_bits::<DIV_D>(0) << self.frac.val();
+            self.ed16[e].next = self.edy_d[e].val() << self.frac.val();
             // The start division's offsets: t from the base vertex to the centre, and the
             // base's x - 1/2 split into pixel and fraction (floor).
             self.toff[e].next = self.cy[e].val() - self.by[e].val();
@@ -732,7 +739,7 @@ impl Logic for TriangleSetup {
                 self.div.inp_valid.next = true;
                 if self.count[e].val() > 1 {
                     self.div.inp_n.next = self.edx[e].val().get_bits::<DIV_N>(0);
-                    self.div.inp_d.next = self.edy[e].val().get_bits::<DIV_D>(0);
+                    self.div.inp_d.next = self.edy_d[e].val();
                 }
             }
         }
