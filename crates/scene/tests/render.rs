@@ -168,7 +168,7 @@ fn shipped_scenes() -> Vec<PathBuf> {
 fn shipped_scenes_load_and_render() {
     let names: Vec<String> =
         shipped_scenes().iter().map(|p| p.file_stem().unwrap().to_string_lossy().into_owned()).collect();
-    for want in ["all", "clip", "cone", "cube", "house", "pawn", "sphere", "torus"] {
+    for want in ["all", "clip", "cone", "cube", "house", "knot", "pawn", "sphere", "torus"] {
         assert!(names.iter().any(|n| n == want), "scenes/{want}.json missing: {names:?}");
     }
     for path in shipped_scenes() {

@@ -9,6 +9,8 @@
 //! unit's at the default (routing the composed design costs or gains that much).
 
 use crate::area::Design;
+use crate::row::Source;
+use fx::Formats;
 use rtl::config::Widths;
 
 /// ECP5 Fmax in MHz of each unit at the default design (class 10, K = 7, L = 5), as
@@ -23,6 +25,24 @@ pub const MEASURED_MHZ: [(&str, f64); 6] = [
 ];
 /// `raster_top`'s ECP5 Fmax at the default design, MHz.
 pub const PIPELINE_MHZ: f64 = 19.7;
+
+/// The design [`MEASURED_MHZ`] and [`PIPELINE_MHZ`] were measured at: size class
+/// `fx::RTL_CLASS` at its default formats, K = 7, L = 5.
+pub fn measured_design() -> Design {
+    Design { class: fx::RTL_CLASS, formats: Formats::for_n(fx::RTL_CLASS), k: 7, l: 5 }
+}
+
+/// `raster_top`'s clock at `d`, MHz, and where the figure comes from: the routed
+/// [`PIPELINE_MHZ`] at [`measured_design`] ([`Source::Measured`]), [`pipeline_mhz`]
+/// elsewhere ([`Source::Modelled`]).
+pub fn raster_top_mhz(d: &Design) -> (f64, Source) {
+    let default = measured_design();
+    if *d == default {
+        (PIPELINE_MHZ, Source::Measured)
+    } else {
+        (pipeline_mhz(d, &default), Source::Modelled)
+    }
+}
 
 /// The width, in bits, of what a unit's critical path runs through, the delay's measure:
 /// cull_sort's twice-the-area product (2 (xy + 1) bits); setup's normalisation of the area
@@ -59,6 +79,19 @@ pub fn pipeline_mhz(d: &Design, default: &Design) -> f64 {
 mod tests {
     use super::*;
     use fx::Formats;
+
+    #[test]
+    fn raster_top_runs_at_the_routed_clock_at_the_default_and_the_modelled_one_elsewhere() {
+        let d = design(10, 5);
+        assert_eq!(d, measured_design());
+        assert_eq!(raster_top_mhz(&d), (PIPELINE_MHZ, Source::Measured));
+        let wide = design(12, 5);
+        assert_eq!(raster_top_mhz(&wide), (pipeline_mhz(&wide, &d), Source::Modelled));
+        // K moves no critical path in the model: the same clock, but not a routed one.
+        let k1 = Design { k: 1, ..d };
+        let (mhz, source) = raster_top_mhz(&k1);
+        assert!((mhz - PIPELINE_MHZ).abs() < 1e-9 && source == Source::Modelled, "{mhz} {source:?}");
+    }
 
     fn design(class: u32, l: u32) -> Design {
         Design { class, formats: Formats::for_n(class), k: 7, l }
