@@ -87,10 +87,15 @@ pub const SUBPIXEL_BITS: u32 = 4;
 /// `n = clog2(max(width, height))`, but at least [`RTL_CLASS`], so that every
 /// screen up to 1024 x 1024 shares the formats the RTL is built with.
 pub const fn resolution_bits(width: u32, height: u32) -> u32 {
+    class_at_least(width, height, RTL_CLASS)
+}
+
+/// `clog2(max(width, height))`, at least `floor`.
+const fn class_at_least(width: u32, height: u32, floor: u32) -> u32 {
     let d = if width > height { width } else { height };
     let n = clog2(d as u64);
-    if n < RTL_CLASS {
-        RTL_CLASS
+    if n < floor {
+        floor
     } else {
         n
     }
@@ -114,13 +119,7 @@ pub const SMALLEST_CLASS: u32 = 8;
 /// gets class 9, 512 x 512 counters and addresses). The default formats of every screen
 /// stay [`resolution_bits`]'.
 pub const fn smallest_class(width: u32, height: u32) -> u32 {
-    let d = if width > height { width } else { height };
-    let n = clog2(d as u64);
-    if n < SMALLEST_CLASS {
-        SMALLEST_CLASS
-    } else {
-        n
-    }
+    class_at_least(width, height, SMALLEST_CLASS)
 }
 
 /// Widths of the exact (non-configurable) quantities, derived from the formats.
