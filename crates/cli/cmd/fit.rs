@@ -252,8 +252,7 @@ fn report(
         for r in rows {
             md += &format!("| {} | {label} |", r.scene);
             for t in &target.terms {
-                let v = t.measure.of(r);
-                let shown = if v.fract() == 0.0 || !v.is_finite() { format!("{v}") } else { format!("{v:.3}") };
+                let shown = fit::target::shown(t.measure.of(r));
                 md += &format!(" {shown}{} |", if t.met(r) { "" } else { " (missed)" });
             }
             md += "\n";

@@ -28,8 +28,9 @@
 //! (`model::ctx::Ranges`), and `z_acc`, `c_acc`, `dc`, `dz` and `ooa_d` get the fewest
 //! integer bits that hold them plus `margin` ([`IntFit`]), never more than the defaults'
 //! rules give and never fewer than the RTL's rules allow (`rtl::config::violation`): `dz`
-//! and `dc` keep the modular minimum (`z_acc.int + s`, `c_acc.int + s`: the RTL was seen to
-//! differ from the model below it, so it is not allowed there), `dz` at least as wide as
+//! and `dc` keep the modular minimum (`z_acc.int + s`, `c_acc.int + s`: below it setup's
+//! start values, computed in `dz`-wide lanes from the unwrapped gradients, differ from the
+//! model's, `rtl::config::violation` says how), `dz` at least as wide as
 //! `dc`, and setup's gradient registers are `ooa_d` wide with the accumulators' start values
 //! their slices (`ooa_d.int` >= `z.frac + z_acc.int + s` and `color.frac + c_acc.int + s`).
 //! So today the ranges move `c_acc` (S9 to S8 when the colours stay in [-256, 256)) and, with

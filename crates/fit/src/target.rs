@@ -152,8 +152,17 @@ impl Target {
         self.terms
             .iter()
             .filter(|t| !t.met(r))
-            .map(|t| format!("{} is {} (needs {t})", t.measure.name(), t.measure.of(r)))
+            .map(|t| format!("{} is {} (needs {t})", t.measure.name(), shown(t.measure.of(r))))
             .collect()
+    }
+}
+
+/// A measure's value for a person: whole numbers as they are, others to 3 decimals.
+pub fn shown(v: f64) -> String {
+    if v.fract() == 0.0 || !v.is_finite() {
+        format!("{v}")
+    } else {
+        format!("{v:.3}")
     }
 }
 
@@ -225,5 +234,13 @@ mod tests {
         assert!(e("colour_max_lsb>=2").contains("smaller is better"));
         assert!(e("colour_max_lsb<=-1").contains("not a finite, non-negative bound"));
         assert!(e("depth_order=close").contains("depth_order takes only \"=exact\""));
+    }
+
+    #[test]
+    fn values_are_shown_whole_or_to_three_decimals() {
+        assert_eq!(shown(54.534885922130556), "54.535");
+        assert_eq!(shown(0.0), "0");
+        assert_eq!(shown(12.0), "12");
+        assert_eq!(shown(f64::INFINITY), "inf");
     }
 }

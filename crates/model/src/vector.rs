@@ -16,7 +16,8 @@
 //!   in real arithmetic.
 //!
 //! Cycle model: `lanes` pixels of a row per cycle, rows of the clipped bounding
-//! box one after another, plus [`LATENCY`]. Mirrors `rtl::vector`.
+//! box one after another, plus [`LATENCY`]. A model only so far: no RTL unit has this
+//! method yet (the barycentric back end is still to be built).
 
 use crate::ctx::{Ctx, Q};
 use crate::cull_sort::{z_max, Clip, Sorted};

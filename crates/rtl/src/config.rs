@@ -171,11 +171,19 @@ pub const fn violation(class: u32, f: &Formats) -> Option<&'static str> {
     if f.ooa_d.int < f.z.frac + f.z_acc.int + f.xy.frac || f.ooa_d.int < f.color.frac + f.c_acc.int + f.xy.frac {
         return Some("setup's gradient registers are ooa_d wide and the start values their slices: ooa_d.int >= z.frac + z_acc.int + xy.frac and color.frac + c_acc.int + xy.frac");
     }
-    // Not proven below the modular minimum: at class 8 with custom-formats.json's dz S4.40
-    // and dc S12.20 narrowed to S2.40 and S9.20, raster_top's lockstep test drew a cube
-    // pixel the model drew (8, 3) as background, though nothing wrapped in the model.
+    // The start values agree with the model's only from the modular minimum up. The model
+    // computes a start value exactly, `at = v0 + floor((ddx off_x + ddy off_y) / 2^s)`, from
+    // the gradients wrapped into dz and dc; setup computes it from the gradients' unwrapped
+    // slices of the ooa_d registers, the sum (`plane`) in a lane dz bits wide, then shifts it
+    // right by s. The two sums are equal modulo 2^dz.bits() for z and 2^dc.bits() for a
+    // colour, so after the shift modulo 2^(dz.bits() - s) and 2^(dc.bits() - s): a start
+    // value's z_acc or c_acc bits agree iff dz.int >= z_acc.int + s and dc.int >= c_acc.int
+    // + s (equal fraction bits, below). Narrower, they differ where nothing wraps in the
+    // model (class 8 with dz S2.40, dc S9.20: the cube's pixel (8, 3) in raster_top's
+    // lockstep). Going below needs plane lanes of z_acc.bits() + s bits in setup and, for
+    // dc, a model that takes the colour starts from the unwrapped gradients.
     if f.dz.int < f.z_acc.int + f.xy.frac || f.dc.int < f.c_acc.int + f.xy.frac {
-        return Some("dz and dc need the modular minimum, z_acc.int + xy.frac and c_acc.int + xy.frac integer bits: the RTL is not proven narrower");
+        return Some("dz and dc need the modular minimum, z_acc.int + xy.frac and c_acc.int + xy.frac integer bits: setup computes the start values from the unwrapped gradients in dz-wide lanes, the model from the wrapped ones, and below it the two differ");
     }
     if f.dz.frac != f.z_acc.frac || f.dc.frac != f.c_acc.frac {
         return Some("gradients have the fraction bits of their accumulators");

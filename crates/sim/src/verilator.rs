@@ -34,14 +34,25 @@ const IGNORED_WARNINGS: &[&str] = &["WIDTH"];
 /// Bumped whenever the shim or the build commands change, so cached models are rebuilt.
 const SHIM_VERSION: u32 = 1;
 
-/// The Cargo target directory this binary was built in (the nearest ancestor holding
-/// `CACHEDIR.TAG`), so artifacts follow `CARGO_TARGET_DIR`.
+/// Where edgepaint keeps what it builds to simulate (emitted Verilog, Verilated models):
+/// the Cargo target directory this binary was built in, so artifacts follow
+/// `CARGO_TARGET_DIR` (the nearest ancestor holding `CACHEDIR.TAG` or `.rustc_info.json`:
+/// Cargo writes the tag only when it creates the directory itself, so a `target/` made
+/// beforehand has only the second); for a binary outside one (installed),
+/// `$XDG_CACHE_HOME/edgepaint`, else `~/.cache/edgepaint`, else the temporary directory's.
 pub fn target_dir() -> PathBuf {
-    let exe = std::env::current_exe().expect("path of the running binary");
-    exe.ancestors()
-        .find(|d| d.join("CACHEDIR.TAG").is_file())
-        .unwrap_or_else(|| panic!("{} is not inside a Cargo target directory", exe.display()))
-        .to_path_buf()
+    work_dir(std::env::current_exe().ok().as_deref(), |name| std::env::var_os(name))
+}
+
+/// [`target_dir`] for the binary `exe`, with the environment variable `var`.
+fn work_dir(exe: Option<&Path>, var: impl Fn(&str) -> Option<std::ffi::OsString>) -> PathBuf {
+    let cargo = |d: &&Path| d.join("CACHEDIR.TAG").is_file() || d.join(".rustc_info.json").is_file();
+    if let Some(dir) = exe.and_then(|exe| exe.ancestors().find(cargo)) {
+        return dir.to_path_buf();
+    }
+    let var = |name| var(name).filter(|v| !v.is_empty()).map(PathBuf::from);
+    let cache = var("XDG_CACHE_HOME").or_else(|| var("HOME").map(|h| h.join(".cache")));
+    cache.unwrap_or_else(std::env::temp_dir).join("edgepaint")
 }
 
 /// Checks that `exe` runs and is Verilator 5; returns its version line. The error says
@@ -339,5 +350,47 @@ impl Sim for VlSim {
         self.words.resize(width.div_ceil(64).max(1), 0);
         (self.api.get)(self.handle, id.0, self.words.as_mut_ptr());
         Value::from_words(width, &self.words)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::work_dir;
+    use std::ffi::OsString;
+    use std::path::{Path, PathBuf};
+
+    /// A binary under `<root>/target/release/` (made here, with `marker` in `target/`).
+    fn tree(name: &str, marker: Option<&str>) -> (PathBuf, PathBuf) {
+        let root = std::env::temp_dir().join(format!("edgepaint-work-dir-{name}-{}", std::process::id()));
+        let target = root.join("target");
+        std::fs::create_dir_all(target.join("release")).unwrap();
+        if let Some(m) = marker {
+            std::fs::write(target.join(m), "").unwrap();
+        }
+        (target.clone(), target.join("release").join("edgepaint"))
+    }
+
+    fn env<'a>(vars: &'a [(&'a str, &'a str)]) -> impl Fn(&str) -> Option<OsString> + 'a {
+        move |name| vars.iter().find(|(k, _)| *k == name).map(|(_, v)| OsString::from(v))
+    }
+
+    #[test]
+    fn work_dir_is_the_cargo_target_directory_tagged_or_not() {
+        for (name, marker) in [("tag", "CACHEDIR.TAG"), ("rustc", ".rustc_info.json")] {
+            let (target, exe) = tree(name, Some(marker));
+            assert_eq!(work_dir(Some(&exe), env(&[("HOME", "/home/u")])), target, "{marker}");
+            std::fs::remove_dir_all(target.parent().unwrap()).unwrap();
+        }
+    }
+
+    #[test]
+    fn work_dir_outside_a_target_directory_is_the_user_cache() {
+        let (target, exe) = tree("installed", None);
+        let home = [("HOME", "/home/u")];
+        assert_eq!(work_dir(Some(&exe), env(&home)), Path::new("/home/u/.cache/edgepaint"));
+        let xdg = [("HOME", "/home/u"), ("XDG_CACHE_HOME", "/var/cache/u")];
+        assert_eq!(work_dir(Some(&exe), env(&xdg)), Path::new("/var/cache/u/edgepaint"));
+        assert_eq!(work_dir(None, env(&[])), std::env::temp_dir().join("edgepaint"));
+        std::fs::remove_dir_all(target.parent().unwrap()).unwrap();
     }
 }
