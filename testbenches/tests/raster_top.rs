@@ -58,12 +58,7 @@ fn check_at(
         triangles: &prep.triangles,
     };
     let out = draw(dut, &f, mem, 50_000_000).unwrap_or_else(|e| panic!("{what}: {e}"));
-    let fb = &prep.render.fb;
-    for (i, (got, want)) in out.memory.rgb.iter().zip(&fb.rgb).enumerate() {
-        let (x, y) = (i as u32 % list.width, i as u32 / list.width);
-        assert_eq!(got, want, "{what}: colour of pixel ({x}, {y})");
-    }
-    assert!(out.memory.depth == fb.depth, "{what}: the depth buffers differ");
+    assert_eq!(out.memory.differs_from(&prep.render.fb), None, "{what}");
     assert_eq!(out.memory.writes, prep.render.stats.pixels_written, "{what}: pixels written");
     assert_eq!(out.reads.len() as u64, prep.render.stats.fragments, "{what}: fragments");
     (prep, out)
@@ -202,10 +197,7 @@ fn raster_top_without_optional_parts_vs_model() {
             triangles: &prep.triangles,
         };
         let out = draw(&mut dut, &f, ready_memory(&mut |_| true), 10_000_000).unwrap_or_else(|e| panic!("{what}: {e}"));
-        assert!(
-            out.memory.rgb == prep.render.fb.rgb && out.memory.depth == prep.render.fb.depth,
-            "{what}: the buffers differ"
-        );
+        assert_eq!(out.memory.differs_from(&prep.render.fb), None, "{what}");
         assert_eq!((out.memory.writes, out.reads.len()), (st.pixels_written, 0), "{what}: writes, and no depth read");
         assert_eq!(Report::of(&out, &prep).cycles, Report::of(&out, &prep).predicted, "{what}: cycles");
     }
@@ -519,8 +511,7 @@ fn units_frame<U: Block + Pins>(
         let high = |p: &str| unsigned(o.get(p)) == 1;
         if high("done") && offer.is_none() {
             if units.pixel_out {
-                assert!(memory.rgb == prep.render.fb.rgb, "{what}: the colour buffers differ");
-                assert!(memory.depth == prep.render.fb.depth, "{what}: the depth buffers differ");
+                assert_eq!(memory.differs_from(&prep.render.fb), None, "{what}");
                 assert_eq!(memory.writes, prep.writes.len() as u64, "{what}: pixels written");
             } else {
                 assert_eq!(fragments.len(), prep.pixels.len(), "{what}: fragments");
@@ -686,8 +677,7 @@ fn raster_top_100k_random_triangles_vs_model() {
         let out = draw(&mut dut, &f, ready_memory(&mut |_| true), 100_000_000)
             .unwrap_or_else(|e| panic!("frame {frame_no}: {e}"));
         let what = format!("frame {frame_no} ({}x{}, {cull:?})", clip.width, clip.height);
-        assert!(out.memory.rgb == fb.rgb, "{what}: the colour buffers differ");
-        assert!(out.memory.depth == fb.depth, "{what}: the depth buffers differ");
+        assert_eq!(out.memory.differs_from(&fb), None, "{what}");
         assert_eq!((out.memory.writes, out.reads.len() as u64), (writes, fragments), "{what}: writes, fragments");
         assert_eq!(out.cycles, cycles, "{what}: cycles");
         drawn += out.verdicts.iter().filter(|&&v| v as u64 == rtl::cull_sort::verdict::PASSED).count();

@@ -77,10 +77,9 @@ pub fn render(
     let out = frame::draw(&mut dut, &f, memory, max_cycles).map_err(|e| anyhow!(e))?;
     let secs = start.elapsed().as_secs_f64();
     let r = Report { predicted: prep.cycles_with(&timing), ..Report::of(&out, &prep) };
-    ensure!(
-        out.memory.rgb == prep.render.fb.rgb && out.memory.depth == prep.render.fb.depth,
-        "the RTL's image differs from the scanline model's: a bug in the RTL or the model"
-    );
+    if let Some(first) = out.memory.differs_from(&prep.render.fb) {
+        bail!("the RTL's image differs from the scanline model's ({first}): a bug in the RTL or the model");
+    }
     ensure!(
         r.cycles == r.predicted,
         "the RTL took {} cycles, model::cycles predicts {}: a bug in the RTL or the cycle model",

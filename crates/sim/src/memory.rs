@@ -5,6 +5,7 @@
 
 use crate::streams::unsigned;
 use crate::Outputs;
+use model::pixel_out::Framebuffer;
 use rtl::widths::CHANNEL;
 
 /// What a read of an address written at the same edge returns: `pixel_out` must work
@@ -91,6 +92,24 @@ impl Memory {
         }
     }
 
+    /// The first pixel, in raster order, whose colour or depth differs from `fb`'s (the
+    /// model's), named with both values; `None` when the buffers are equal.
+    pub fn differs_from(&self, fb: &Framebuffer) -> Option<String> {
+        if (self.width, self.height) != (fb.width, fb.height) {
+            return Some(format!("a {}x{} memory against a {}x{} frame", self.width, self.height, fb.width, fb.height));
+        }
+        let at = |i: usize| (i as u32 % self.width, i as u32 / self.width);
+        let colour = (0..self.rgb.len()).find(|&i| self.rgb[i] != fb.rgb[i]);
+        let depth = (0..self.depth.len()).find(|&i| self.depth[i] != fb.depth[i]);
+        match (colour, depth) {
+            (Some(i), d) if d.is_none_or(|d| i <= d) => {
+                Some(format!("colour of pixel {:?}: RTL {:?}, model {:?}", at(i), self.rgb[i], fb.rgb[i]))
+            }
+            (_, Some(i)) => Some(format!("depth of pixel {:?}: RTL {}, model {}", at(i), self.depth[i], fb.depth[i])),
+            _ => None,
+        }
+    }
+
     /// `rd_z`: the depth last read.
     pub fn rd_z(&self) -> u32 {
         self.rd_z
@@ -137,5 +156,24 @@ impl Memory {
         }
         self.reads += read.is_some() as u64;
         write
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Memory, ReadDuringWrite};
+    use model::pixel_out::Framebuffer;
+
+    #[test]
+    fn differs_from_names_the_first_pixel_that_differs() {
+        let mut fb = Framebuffer::new(4, 3, 100, [1, 2, 3]);
+        let mut mem = Memory::new(2, (4, 3), 100, [1, 2, 3], ReadDuringWrite::Old);
+        assert_eq!(mem.differs_from(&fb), None);
+        fb.depth[2 * 4 + 1] = 7;
+        assert_eq!(mem.differs_from(&fb).unwrap(), "depth of pixel (1, 2): RTL 100, model 7");
+        mem.rgb[4 + 3] = [9, 9, 9];
+        assert_eq!(mem.differs_from(&fb).unwrap(), "colour of pixel (3, 1): RTL [9, 9, 9], model [1, 2, 3]");
+        let small = Framebuffer::new(2, 2, 100, [1, 2, 3]);
+        assert_eq!(mem.differs_from(&small).unwrap(), "a 4x3 memory against a 2x2 frame");
     }
 }
