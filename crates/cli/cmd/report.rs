@@ -114,6 +114,10 @@ struct Fpga {
     carry: u64,
     /// iCE40 SB_MAC16 or ECP5 MULT18X18D.
     dsps: u64,
+    /// ECP5 TRELLIS_DPR16X4, 16 x 4 distributed (LUT) RAM with one write and one
+    /// asynchronous read port (the shading engine's corner-turning memories); iCE40 has
+    /// none (Yosys builds such memories from flip-flops there).
+    lut_ram: u64,
     /// Achieved clock of the wrapped unit after place and route; `None` with `--no-pnr` or
     /// when it fits no part.
     fmax_mhz: Option<f64>,
@@ -200,7 +204,7 @@ fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
     let flops = generic_cells.iter().filter_map(|(k, n)| ff_transistors(k).map(|t| (*n, n * t)));
     let (flip_flops, ff_transistors) = flops.fold((0, 0), |(a, b), (n, t)| (a + n, b + t));
     let ice40 = cells(&yosys_stat(dir, "ice40", &format!("{read}; synth_ice40 -top {top}"), "")?);
-    let ecp5 = cells(&yosys_stat(dir, "ecp5", &format!("{read}; synth_ecp5 -top {top}"), "")?);
+    let ecp5_cells = cells(&yosys_stat(dir, "ecp5", &format!("{read}; synth_ecp5 -top {top}"), "")?);
     let count = |cells: &BTreeMap<String, u64>, f: &dyn Fn(&str) -> bool| {
         cells.iter().filter(|(k, _)| f(k)).map(|(_, n)| n).sum()
     };
@@ -210,18 +214,20 @@ fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
         ffs: count(&ice40, &|k| k.starts_with("SB_DFF")),
         carry: count(&ice40, &|k| k == "SB_CARRY"),
         dsps: count(&ice40, &|k| k == "SB_MAC16"),
+        lut_ram: 0,
         fmax_mhz: None,
     };
     let mut ecp5 = Fpga {
         device: None,
-        luts: count(&ecp5, &|k| k == "LUT4"),
-        ffs: count(&ecp5, &|k| k == "TRELLIS_FF"),
-        carry: count(&ecp5, &|k| k == "CCU2C"),
-        dsps: count(&ecp5, &|k| k == "MULT18X18D"),
+        luts: count(&ecp5_cells, &|k| k == "LUT4"),
+        ffs: count(&ecp5_cells, &|k| k == "TRELLIS_FF"),
+        carry: count(&ecp5_cells, &|k| k == "CCU2C"),
+        dsps: count(&ecp5_cells, &|k| k == "MULT18X18D"),
+        lut_ram: count(&ecp5_cells, &|k| k == "TRELLIS_DPR16X4"),
         fmax_mhz: None,
     };
     ice40.device = part_for(ICE40, ice40.luts, ice40.dsps).map(|p| p.name);
-    ecp5.device = part_for(ECP5, ecp5.luts + 2 * ecp5.carry, ecp5.dsps).map(|p| p.name);
+    ecp5.device = part_for(ECP5, ecp5_lut_sites(&ecp5_cells), ecp5.dsps).map(|p| p.name);
     if let Some(router) = router {
         // The part is chosen for the wrapped unit: the wrapper's shift registers and output
         // multiplexers add a LUT and a flip-flop per port bit.
@@ -241,9 +247,7 @@ fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
         if ecp5.device.is_some() {
             let script = format!("{read_both}; synth_ecp5 -top {wrapped} -json {}", json("ecp5_pnr.json"));
             let w = cells(&yosys_stat(dir, "ecp5_pnr", &script, "")?);
-            // A CCU2C (two bits of carry) takes the two LUT4s of a slice half.
-            let luts = count(&w, &|k| k == "LUT4") + 2 * count(&w, &|k| k == "CCU2C");
-            let part = part_for(ECP5, luts, count(&w, &|k| k == "MULT18X18D"));
+            let part = part_for(ECP5, ecp5_lut_sites(&w), count(&w, &|k| k == "MULT18X18D"));
             ecp5.device = part.map(|p| p.name);
             if let Some(part) = part {
                 std::fs::write(dir.join(ECP5_LPF.0), ECP5_LPF.1)
@@ -268,6 +272,14 @@ fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
         ice40,
         ecp5,
     })
+}
+
+/// The LUT4 sites an ECP5 netlist (`synth_ecp5` cell counts) occupies: a CCU2C (two bits
+/// of carry) takes the two LUT4s of a slice, a TRELLIS_DPR16X4 three slices (two hold the
+/// 16 x 4 bits, one its write port).
+fn ecp5_lut_sites(cells: &BTreeMap<String, u64>) -> u64 {
+    let n = |name: &str| cells.get(name).copied().unwrap_or(0);
+    n("LUT4") + 2 * n("CCU2C") + 6 * n("TRELLIS_DPR16X4")
 }
 
 /// Transistors of a Yosys generic flip-flop cell (`$_DFF_P_`, `$_DFFE_PP_`,
@@ -365,8 +377,8 @@ fn markdown(rows: &[Row]) -> String {
         (None, Some(_)) => "–".to_owned(),
     };
     let mut md = String::from(
-        "| unit | parameters | generic cells | GE (2-input) | iCE40 LUT | iCE40 FF | iCE40 carry | iCE40 DSP | iCE40 Fmax MHz | ECP5 LUT | ECP5 FF | ECP5 carry | ECP5 DSP | ECP5 Fmax MHz |\n\
-         |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+        "| unit | parameters | generic cells | GE (2-input) | iCE40 LUT | iCE40 FF | iCE40 carry | iCE40 DSP | iCE40 Fmax MHz | ECP5 LUT | ECP5 FF | ECP5 LUT RAM | ECP5 carry | ECP5 DSP | ECP5 Fmax MHz |\n\
+         |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
     );
     for r in rows {
         let mut params: Vec<String> = r.parameters.iter().map(|(k, v)| format!("{k}={v}")).collect();
@@ -374,7 +386,7 @@ fn markdown(rows: &[Row]) -> String {
         let (i, e) = (&r.ice40, &r.ecp5);
         writeln!(
             md,
-            "| {} | {} | {} | {:.0} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {:.0} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
             r.unit,
             params.join(" "),
             r.generic.cells,
@@ -386,6 +398,7 @@ fn markdown(rows: &[Row]) -> String {
             mhz(i),
             e.luts,
             e.ffs,
+            e.lut_ram,
             e.carry,
             e.dsps,
             mhz(e)

@@ -63,22 +63,27 @@
 //!   old z shifts out of the old-z block LSB first beside the new z; flag per pixel
 //! === WE STORAGE ============================================== z's s = K + zw + 1 (48)
 //!   WE := EPT mask AND hit AND flag
-//! === OUTPUT, 4-way interleaved =============================== B's s = K+cw+1 .. +P/4 (144..159)
-//!   wr, wr_addr = j: pixels 4j + k on nz_k, r_k, g_k, b_k, we_k (k = 0..3); shift by 4
+//! === OUTPUT, 4-way interleaved =============================== B's s = K+cw+2 .. +P/4 (145..160)
+//!   wr, wr_addr = j: pixels 4j + k on nz_k, r_k, g_k, b_k, we_k (k = 0..3)
+//!   (wr low: nz_k, r_k, g_k, b_k, we_k are 0). One clock after B's last bit (s = K+cw+1):
+//!   the RTL's new-z and colour blocks take a clock to write a bit plane
 //! ```
 //!
-//! Latency: [`SeParams::latency`] = 160 clocks from the accept to the last write (000: 170
+//! Latency: [`SeParams::latency`] = 161 clocks from the accept to the last write (000: 170
 //! clocks per span, 17 us at 10 MHz). `ready` is high when idle and in the last clock of
 //! the multipliers (cycle HEAD = 136), so spans can follow back to back every
 //! [`SeParams::ii`] = 136 clocks: the next span's multipliers and old-z load overlap this
-//! span's last colour bits and its output, which ends before the next span's new z
-//! arrives. Constraints that make this hold ([`SeParams::check`]): frac >= K + 2 (a
-//! stream ends before the next begins) and P/4 <= frac (the output ends in time).
+//! span's last colour bits and its output, which ends no later than the clock the next
+//! span's first new-z bit goes in (160 here: a bit plane is written at the end of the
+//! clock, after the port group is read). Constraints that make this hold
+//! ([`SeParams::check`]): frac >= K + 2 (a stream ends before the next begins) and
+//! P/4 <= frac (the output ends in time).
 //!
-//! The model keeps the RTL's state at word level: per pixel the old-z, new-z, R, G, B
-//! registers, the z flag and the WE bit, shifted exactly when the RTL shifts them; the
-//! interpolator's words are computed by [`interp::interp`] when its stream starts and fed
-//! in bit by bit.
+//! The model keeps the state at word level: per pixel the old-z word (shifted out as 000's
+//! shift register does), the new-z and R, G, B words (bit b set by bit plane b and read by
+//! port group, as the RTL's corner-turning memories, `rtl::se::turn`, hold them), the z
+//! flag and the WE bit; the interpolator's words are computed by [`interp::interp`] when
+//! its stream starts and fed in bit by bit.
 
 pub mod array;
 pub mod interp;
@@ -193,7 +198,7 @@ impl SeParams {
 
     /// Clocks from accepting a span to its last write, both included.
     pub fn latency(&self) -> u32 {
-        self.stream_start(3) + self.levels() + self.cw + self.p / 4 + 1
+        self.stream_start(3) + self.levels() + self.cw + self.p / 4 + 2
     }
 
     /// Clocks between spans accepted back to back.
@@ -241,7 +246,7 @@ pub struct SeOut {
     /// Writing: pixels XL_i + 4 `wr_addr` + k, k = 0..3, on the ports below.
     pub wr: bool,
     pub wr_addr: u32,
-    /// New z of each port's pixel (zw bits).
+    /// New z of each port's pixel (zw bits); this and `c`, `we` are 0 when `wr` is low.
     pub nz: [u64; PORTS],
     /// R, G, B of each port's pixel (cw bits each).
     pub c: [[u64; PORTS]; 3],
@@ -266,6 +271,8 @@ pub struct Se {
     att: usize,
     /// Output counter: 0 idle, else j + 1 while writing pixels 4j .. 4j + 3.
     dc: u32,
+    /// The output starts next clock (B's last bit went into its block the clock before).
+    dgo: bool,
     /// The pixel words the interpolator's current stream produces.
     words: Vec<u64>,
     ozr: Vec<u64>,
@@ -291,6 +298,7 @@ impl Se {
             sc: 0,
             att: 0,
             dc: 0,
+            dgo: false,
             words: vec![0; p],
             ozr: vec![0; p],
             nzr: vec![0; p],
@@ -303,7 +311,7 @@ impl Se {
     /// Nothing in flight: every counter idle. Clocking an idle engine with `valid` low
     /// changes no register the outputs depend on.
     pub fn idle(&self) -> bool {
-        self.h == 0 && self.sc == 0 && self.dc == 0
+        self.h == 0 && self.sc == 0 && self.dc == 0 && !self.dgo
     }
 
     /// The outputs before this clock's edge (they depend on registers only).
@@ -315,9 +323,18 @@ impl Se {
             oz_addr: self.h.wrapping_sub(1) & (q - 1),
             wr: self.dc != 0,
             wr_addr: self.dc.wrapping_sub(1) & (q - 1),
-            nz: std::array::from_fn(|k| self.nzr[k]),
-            c: std::array::from_fn(|ch| std::array::from_fn(|k| self.cr[ch][k])),
-            we: std::array::from_fn(|k| self.wes[k]),
+            nz: std::array::from_fn(|k| self.port(&self.nzr, k)),
+            c: std::array::from_fn(|ch| std::array::from_fn(|k| self.port(&self.cr[ch], k))),
+            we: std::array::from_fn(|k| self.dc != 0 && self.wes[k]),
+        }
+    }
+
+    /// Port `k`'s word of block `words` while writing (port group dc - 1), else 0.
+    fn port(&self, words: &[u64], k: usize) -> u64 {
+        if self.dc == 0 {
+            0
+        } else {
+            words[PORTS * (self.dc as usize - 1) + k]
         }
     }
 
@@ -332,23 +349,22 @@ impl Se {
         let n = prm.width(self.att);
         let in_window = self.sc != 0 && (k + 1..=k + n).contains(&s);
         let we_latch = self.sc != 0 && self.att == 0 && s == k + prm.zw + 1;
-        let dump_start = self.sc != 0 && self.att == 3 && s == k + prm.cw;
-        debug_assert!(!((in_window || we_latch) && self.dc != 0), "schedule clash: output during a stream");
+        let b_done = self.sc != 0 && self.att == 3 && s == k + prm.cw;
+        debug_assert!(!(we_latch && self.dc != 0), "schedule clash: WE latch during the output");
         debug_assert!(!(in_window && self.att == 0 && out.oz_rd), "schedule clash: old-z load during the z compare");
         if in_window {
             let bit = s - k - 1;
-            let msb = n - 1;
             for x in 0..p {
                 let b = (self.words[x] >> bit) & 1;
                 if self.att == 0 {
-                    // RTL: new-z block shifts in, old-z block shifts out, Zcmp per pixel.
+                    // RTL: bit plane into the new-z block, out of the old-z block, Zcmp per pixel.
                     let oz = self.ozr[x] & 1 == 1;
                     self.flag[x] = zcmp::step(self.flag[x], bit == 0, b == 1, oz);
                     self.ozr[x] >>= 1;
-                    self.nzr[x] = (self.nzr[x] >> 1) | (b << msb);
+                    self.nzr[x] = (self.nzr[x] & !(1 << bit)) | (b << bit);
                 } else {
                     let reg = &mut self.cr[self.att - 1][x];
-                    *reg = (*reg >> 1) | (b << msb);
+                    *reg = (*reg & !(1 << bit)) | (b << bit);
                 }
             }
         }
@@ -359,14 +375,8 @@ impl Se {
             }
         }
 
-        // === OUTPUT: shift every output register down by one port group ===
+        // === OUTPUT: the WE storage shifts down by one port group ===
         if self.dc != 0 {
-            let down = |r: &mut Vec<u64>| {
-                r.rotate_left(PORTS);
-                r[p - PORTS..].fill(0);
-            };
-            down(&mut self.nzr);
-            self.cr.iter_mut().for_each(down);
             self.wes.rotate_left(PORTS);
             self.wes[p - PORTS..].fill(false);
         }
@@ -381,13 +391,14 @@ impl Se {
 
         // === Counters ===
         let start = (0..4).find(|&j| self.h != 0 && self.h + 1 == prm.stream_start(j));
-        self.dc = if dump_start {
+        self.dc = if self.dgo {
             1
         } else if self.dc == 0 || self.dc == q {
             0
         } else {
             self.dc + 1
         };
+        self.dgo = b_done;
         self.sc = if start.is_some() {
             1
         } else if self.sc == 0 || s == prm.stream_end(self.att) {
@@ -458,7 +469,7 @@ mod tests {
         let m: Vec<u32> = (0..4).map(|j| prm.mul_start(j)).collect();
         let t: Vec<u32> = (0..4).map(|j| prm.stream_start(j)).collect();
         assert_eq!((prm.head(), m, t), (136, vec![1, 41, 73, 105], vec![17, 57, 89, 121]));
-        assert_eq!((prm.latency(), prm.ii()), (160, 136));
+        assert_eq!((prm.latency(), prm.ii()), (161, 136));
         assert_eq!(SPAN_X_BITS, 13);
     }
 

@@ -8,10 +8,16 @@
 //! * L and R multipliers ([`mul::SerialMul`], Fig. 7): f(XL_i), f(XR_i), rounded;
 //! * interpolator ([`interp::Interp`], Figs. 8, 9): every pixel's round(f(x)), bit-serial;
 //! * EPT (paper 002, [`crate::ept`], reused): the mask of pixels in [Xl, Xr];
-//! * old-z block: P shift registers loaded through the 4 read ports;
-//! * z compare ([`zcmp::Zcmp`], Fig. 10) per pixel, and the WE storage;
-//! * new-z and RGB blocks: P shift registers each, written out through 4 interleaved
-//!   ports (pixel 4j + k on port k, j = 0 .. P/4 - 1).
+//! * old-z block ([`turn::WordsToPlanes`]): loaded through the 4 read ports a port group a
+//!   clock, read a bit plane (one bit of every pixel) a clock;
+//! * z compare ([`zcmp::Zcmp`], Fig. 10) per pixel, and the WE storage (P flip-flops);
+//! * new-z and RGB blocks ([`turn::PlanesToWords`]): written a bit plane a clock, read
+//!   out through 4 interleaved ports (pixel 4j + k on port k, j = 0 .. P/4 - 1).
+//!
+//! The old-z, new-z and RGB blocks are small RAMs (W memories of P/4 x 4 bits each,
+//! skewed so that a bit plane and a port group each meet every memory once; see
+//! [`turn`]), where 000 and the first version here had P shift registers per block: LUT
+//! RAM on an FPGA, a register file in an ASIC flow.
 //!
 //! Widths are type parameters: ZW and CW bits of z and colour words, ZA = ZW + F and
 //! CA = CW + F bits of their A and B words (F fraction bits); 000: ZW = 24, CW = 16.
@@ -32,12 +38,12 @@
 //!   sc > n + 1 (s > n)          sign extension
 //!   sc = K + 2 .. K + n + 1     pixel bits into new-z (z: with Zcmp, first at K + 2) or R, G, B
 //!   z:  sc = K + ZW + 2         WE := mask & hit & flag; stream ends
-//!   B:  sc = K + CW + 1         last bit; output starts next clock (dc = 1); stream ends
-//! === OUTPUT ============  dc = 1 .. P/4                   wr: ports show pixels 4(dc-1)+k
+//!   B:  sc = K + CW + 1         last bit; stream ends; `dgo` set
+//! === OUTPUT ============  dc = 1 .. P/4 (dc = 1 after dgo) wr: ports show pixels 4(dc-1)+k
 //! ```
 //!
 //! `ready` = idle or h = HEAD (the multipliers' last clock), so spans run back to back
-//! every HEAD clocks. Latency (accept to last write): `model::se::SeParams::latency`, 160
+//! every HEAD clocks. Latency (accept to last write): `model::se::SeParams::latency`, 161
 //! clocks for 000's widths (000: 170 per span); II = HEAD = 136.
 //!
 //! Model: `model::se::Se`, compared on every output every clock. Emitted:
@@ -45,6 +51,7 @@
 
 pub mod interp;
 pub mod mul;
+pub mod turn;
 pub mod zcmp;
 
 use crate::emit::{ports, verilog, Emitted};
@@ -55,6 +62,7 @@ use crate::Params;
 use interp::Interp;
 use mul::{SerialMul, X_BITS};
 use rust_hdl::prelude::*;
+use turn::{PlanesToWords, WordsToPlanes};
 use zcmp::Zcmp;
 
 /// Bits of a span's ends Xl, Xr: a pixel column anywhere in the coordinate range.
@@ -137,6 +145,9 @@ macro_rules! se_size {
             att: DFF<Bits<2>>,
             /// Output group j + 1; 0 idle.
             dc: DFF<Bits<$dcb>>,
+            /// B's last bit went into its block last clock: the output starts next clock
+            /// (a bit plane takes a clock to be written, see `turn`).
+            dgo: DFF<Bit>,
             /// ML_i, MR_i: the span's ends in the region, for the EPT; hit: it meets the region.
             ml: DFF<Bits<$k>>,
             mr: DFF<Bits<$k>>,
@@ -182,9 +193,7 @@ macro_rules! se_size {
             /// XL_i and XR_i for the multipliers.
             k_xl: Constant<Bits<X_BITS>>,
             k_xr: Constant<Bits<X_BITS>>,
-            /// MSB of each word width, for shifting a bit in at the top.
-            k_zmsb: Constant<Bits<ZW>>,
-            k_cmsb: Constant<Bits<CW>>,
+            /// MSB of each A/B width, for shifting a bit in at the top.
             k_zamsb: Constant<Bits<ZA>>,
             k_camsb: Constant<Bits<CA>>,
 
@@ -194,12 +203,13 @@ macro_rules! se_size {
             interp: Interp<$p, $k>,
             ept: $ept,
             zc: [Zcmp; $p],
-            /// Old-z, new-z, R, G, B blocks and WE storage: one register per pixel.
-            ozr: [DFF<Bits<ZW>>; $p],
-            nzr: [DFF<Bits<ZW>>; $p],
-            rr: [DFF<Bits<CW>>; $p],
-            gr: [DFF<Bits<CW>>; $p],
-            br: [DFF<Bits<CW>>; $p],
+            /// Old-z, new-z, R, G and B blocks: corner-turning memories.
+            ozm: WordsToPlanes<ZW, $p>,
+            nzm: PlanesToWords<ZW, $p>,
+            rm: PlanesToWords<CW, $p>,
+            gm: PlanesToWords<CW, $p>,
+            bm: PlanesToWords<CW, $p>,
+            /// WE storage: one flip-flop per pixel.
             wes: [DFF<Bit>; $p],
 
             // --- wires ---
@@ -221,9 +231,13 @@ macro_rules! se_size {
             gwin: Signal<Local, Bit>,
             bwin: Signal<Local, Bit>,
             zfirst: Signal<Local, Bit>,
+            /// Bit of the words in the interpolator's window: sc - K - 2.
+            wbit: Signal<Local, Bits<8>>,
             welatch: Signal<Local, Bit>,
             dstart: Signal<Local, Bit>,
             dump: Signal<Local, Bit>,
+            /// The port group on the output ports: dc - 1.
+            og: Signal<Local, Bits<4>>,
             mask: Signal<Local, Bits<$p>>,
         }
 
@@ -286,6 +300,7 @@ macro_rules! se_size {
                     sc: Default::default(),
                     att: Default::default(),
                     dc: Default::default(),
+                    dgo: Default::default(),
                     ml: Default::default(),
                     mr: Default::default(),
                     hit: Default::default(),
@@ -318,8 +333,6 @@ macro_rules! se_size {
                     k_sign: k(sign),
                     k_xl: k(xl),
                     k_xr: k(xl + p),
-                    k_zmsb: k(1 << (zw - 1)),
-                    k_cmsb: k(1 << (cw - 1)),
                     k_zamsb: k(1 << (za - 1)),
                     k_camsb: k(1 << (ca - 1)),
                     mul_l: Default::default(),
@@ -327,11 +340,11 @@ macro_rules! se_size {
                     interp: Default::default(),
                     ept: Default::default(),
                     zc: defaults(),
-                    ozr: defaults(),
-                    nzr: defaults(),
-                    rr: defaults(),
-                    gr: defaults(),
-                    br: defaults(),
+                    ozm: Default::default(),
+                    nzm: Default::default(),
+                    rm: Default::default(),
+                    gm: Default::default(),
+                    bm: Default::default(),
                     wes: defaults(),
                     rdy: Default::default(),
                     accept: Default::default(),
@@ -351,9 +364,11 @@ macro_rules! se_size {
                     gwin: Default::default(),
                     bwin: Default::default(),
                     zfirst: Default::default(),
+                    wbit: Default::default(),
                     welatch: Default::default(),
                     dstart: Default::default(),
                     dump: Default::default(),
+                    og: Default::default(),
                     mask: Default::default(),
                 }
             }
@@ -363,22 +378,13 @@ macro_rules! se_size {
             #[hdl_gen]
             fn update(&mut self) {
                 dff_setup!(
-                    self, clock, h, sc, att, dc, ml, mr, hit, ach_z, bch_z, ach_r, bch_r, ach_g, bch_g, ach_b, bch_b
+                    self, clock, h, sc, att, dc, dgo, ml, mr, hit, ach_z, bch_z, ach_r, bch_r, ach_g, bch_g, ach_b,
+                    bch_b
                 );
-                clock!(self, clock, mul_l, mul_r, interp);
+                clock!(self, clock, mul_l, mul_r, interp, ozm, nzm, rm, gm, bm);
                 for x in 0..$p {
                     self.zc[x].clock.next = self.clock.val();
-                    self.ozr[x].clock.next = self.clock.val();
-                    self.nzr[x].clock.next = self.clock.val();
-                    self.rr[x].clock.next = self.clock.val();
-                    self.gr[x].clock.next = self.clock.val();
-                    self.br[x].clock.next = self.clock.val();
                     self.wes[x].clock.next = self.clock.val();
-                    self.ozr[x].d.next = self.ozr[x].q.val();
-                    self.nzr[x].d.next = self.nzr[x].q.val();
-                    self.rr[x].d.next = self.rr[x].q.val();
-                    self.gr[x].d.next = self.gr[x].q.val();
-                    self.br[x].d.next = self.br[x].q.val();
                     self.wes[x].d.next = self.wes[x].q.val();
                 }
 
@@ -522,98 +528,106 @@ macro_rules! se_size {
                 if self.hit.q.val() {
                     self.mask.next = self.ept.px.val();
                 }
+                // Bit plane wbit of the words: new z, R, G, B written, old z read.
+                self.wbit.next = self.sc.q.val() - self.k_win.val();
+                // The old-z block shows a plane from the next edge on: it is given the next's.
+                self.ozm.plane.next = self.wbit.val() + 1;
+                self.nzm.plane.next = self.wbit.val();
+                self.rm.plane.next = self.wbit.val();
+                self.gm.plane.next = self.wbit.val();
+                self.bm.plane.next = self.wbit.val();
+                self.nzm.px.next = self.interp.px.val();
+                self.rm.px.next = self.interp.px.val();
+                self.gm.px.next = self.interp.px.val();
+                self.bm.px.next = self.interp.px.val();
+                self.nzm.we.next = self.zwin.val();
+                self.rm.we.next = self.rwin.val();
+                self.gm.we.next = self.gwin.val();
+                self.bm.we.next = self.bwin.val();
                 for x in 0..$p {
                     self.zc[x].first.next = self.zfirst.val();
                     self.zc[x].nz.next = self.interp.px.val().get_bit(x);
-                    self.zc[x].oz.next = self.ozr[x].q.val().get_bit(0);
-                    if self.zwin.val() {
-                        self.ozr[x].d.next = self.ozr[x].q.val() >> 1;
-                        self.nzr[x].d.next = self.nzr[x].q.val() >> 1;
-                        if self.interp.px.val().get_bit(x) {
-                            self.nzr[x].d.next = (self.nzr[x].q.val() >> 1) | self.k_zmsb.val();
-                        }
-                    }
-                    if self.rwin.val() {
-                        self.rr[x].d.next = self.rr[x].q.val() >> 1;
-                        if self.interp.px.val().get_bit(x) {
-                            self.rr[x].d.next = (self.rr[x].q.val() >> 1) | self.k_cmsb.val();
-                        }
-                    }
-                    if self.gwin.val() {
-                        self.gr[x].d.next = self.gr[x].q.val() >> 1;
-                        if self.interp.px.val().get_bit(x) {
-                            self.gr[x].d.next = (self.gr[x].q.val() >> 1) | self.k_cmsb.val();
-                        }
-                    }
-                    if self.bwin.val() {
-                        self.br[x].d.next = self.br[x].q.val() >> 1;
-                        if self.interp.px.val().get_bit(x) {
-                            self.br[x].d.next = (self.br[x].q.val() >> 1) | self.k_cmsb.val();
-                        }
-                    }
+                    self.zc[x].oz.next = self.ozm.px.val().get_bit(x);
                     if self.welatch.val() {
                         self.wes[x].d.next = self.mask.val().get_bit(x) & self.zc[x].closer.val();
                     }
                 }
 
-                // === OLD-Z BLOCK: 4 words in at the top, the rest down a group ===
-                if self.ozload.val() {
-                    for x in 0..($p - 4) {
-                        self.ozr[x].d.next = self.ozr[x + 4].q.val();
-                    }
-                    self.ozr[$p - 4].d.next = self.oz0.val();
-                    self.ozr[$p - 3].d.next = self.oz1.val();
-                    self.ozr[$p - 2].d.next = self.oz2.val();
-                    self.ozr[$p - 1].d.next = self.oz3.val();
-                }
+                // === OLD-Z BLOCK: load port group h - 1 ===
+                self.ozm.we.next = self.ozload.val();
+                self.ozm.group.next = self.h.q.val().get_bits::<4>(0) - 1;
+                self.ozm.d0.next = self.oz0.val();
+                self.ozm.d1.next = self.oz1.val();
+                self.ozm.d2.next = self.oz2.val();
+                self.ozm.d3.next = self.oz3.val();
 
-                // === OUTPUT: 4 interleaved ports, then down a group ===
+                // === OUTPUT: 4 interleaved ports show port group dc - 1, zero when idle ===
                 self.dump.next = self.dc.q.val() != 0;
                 self.dc.d.next = self.dc.q.val() + 1;
                 if (self.dc.q.val() == 0) | (self.dc.q.val() == self.k_dq.val()) {
                     self.dc.d.next = 0.into();
                 }
-                if self.dstart.val() {
+                self.dgo.d.next = self.dstart.val();
+                if self.dgo.q.val() {
                     self.dc.d.next = 1.into();
                 }
+                self.og.next = bit_cast::<4, $dcb>(self.dc.q.val()) - 1;
+                self.nzm.group.next = self.og.val();
+                self.rm.group.next = self.og.val();
+                self.gm.group.next = self.og.val();
+                self.bm.group.next = self.og.val();
                 if self.dump.val() {
                     for x in 0..($p - 4) {
-                        self.nzr[x].d.next = self.nzr[x + 4].q.val();
-                        self.rr[x].d.next = self.rr[x + 4].q.val();
-                        self.gr[x].d.next = self.gr[x + 4].q.val();
-                        self.br[x].d.next = self.br[x + 4].q.val();
                         self.wes[x].d.next = self.wes[x + 4].q.val();
                     }
                     for x in ($p - 4)..$p {
-                        self.nzr[x].d.next = 0.into();
-                        self.rr[x].d.next = 0.into();
-                        self.gr[x].d.next = 0.into();
-                        self.br[x].d.next = 0.into();
                         self.wes[x].d.next = false;
                     }
                 }
                 self.wr.next = self.dump.val();
                 self.wr_addr.next = self.dc.q.val().get_bits::<$qb>(0) - 1;
-                self.nz0.next = self.nzr[0].q.val();
-                self.nz1.next = self.nzr[1].q.val();
-                self.nz2.next = self.nzr[2].q.val();
-                self.nz3.next = self.nzr[3].q.val();
-                self.r0.next = self.rr[0].q.val();
-                self.r1.next = self.rr[1].q.val();
-                self.r2.next = self.rr[2].q.val();
-                self.r3.next = self.rr[3].q.val();
-                self.g0.next = self.gr[0].q.val();
-                self.g1.next = self.gr[1].q.val();
-                self.g2.next = self.gr[2].q.val();
-                self.g3.next = self.gr[3].q.val();
-                self.b0.next = self.br[0].q.val();
-                self.b1.next = self.br[1].q.val();
-                self.b2.next = self.br[2].q.val();
-                self.b3.next = self.br[3].q.val();
-                self.we0.next = self.wes[0].q.val();
-                self.we1.next = self.wes[1].q.val();
-                self.we2.next = self.wes[2].q.val();
-                self.we3.next = self.wes[3].q.val();
+                self.nz0.next = 0.into();
+                self.nz1.next = 0.into();
+                self.nz2.next = 0.into();
+                self.nz3.next = 0.into();
+                self.r0.next = 0.into();
+                self.r1.next = 0.into();
+                self.r2.next = 0.into();
+                self.r3.next = 0.into();
+                self.g0.next = 0.into();
+                self.g1.next = 0.into();
+                self.g2.next = 0.into();
+                self.g3.next = 0.into();
+                self.b0.next = 0.into();
+                self.b1.next = 0.into();
+                self.b2.next = 0.into();
+                self.b3.next = 0.into();
+                self.we0.next = false;
+                self.we1.next = false;
+                self.we2.next = false;
+                self.we3.next = false;
+                if self.dump.val() {
+                    self.nz0.next = self.nzm.w0.val();
+                    self.nz1.next = self.nzm.w1.val();
+                    self.nz2.next = self.nzm.w2.val();
+                    self.nz3.next = self.nzm.w3.val();
+                    self.r0.next = self.rm.w0.val();
+                    self.r1.next = self.rm.w1.val();
+                    self.r2.next = self.rm.w2.val();
+                    self.r3.next = self.rm.w3.val();
+                    self.g0.next = self.gm.w0.val();
+                    self.g1.next = self.gm.w1.val();
+                    self.g2.next = self.gm.w2.val();
+                    self.g3.next = self.gm.w3.val();
+                    self.b0.next = self.bm.w0.val();
+                    self.b1.next = self.bm.w1.val();
+                    self.b2.next = self.bm.w2.val();
+                    self.b3.next = self.bm.w3.val();
+                    self.we0.next = self.wes[0].q.val();
+                    self.we1.next = self.wes[1].q.val();
+                    self.we2.next = self.wes[2].q.val();
+                    self.we3.next = self.wes[3].q.val();
+                }
             }
         }
 

@@ -43,7 +43,7 @@
 //! The engines share one span bus (000 Fig. 5): every span goes to all engines at once,
 //! and the ones it misses write nothing (the model skips them; they would only run their
 //! counters). A span is issued [`SeParams::ii`] clocks after the previous one (136), but
-//! [`SeParams::latency`] (160) after it when both are on the same row: the next span's
+//! [`SeParams::latency`] (161) after it when both are on the same row: the next span's
 //! old-z read would otherwise overtake the previous span's writes to that row. Spans
 //! wholly off screen are not issued. Frame cycles: the last issue plus the latency.
 
