@@ -145,6 +145,19 @@ fn check(w: usize, p: usize) {
 }
 
 impl<const W: usize, const P: usize> PlanesToWords<W, P> {
+    /// Bit plane `b` of pixels `px` into the memories.
+    fn write(&mut self, b: usize, px: u128) {
+        let q = P / 4;
+        // The write rotator turns the plane by `plane`'s low stages(W) bits.
+        let r = reach(b, W);
+        for m in 0..W {
+            let (j, slot) = (skewed(m, b, W), (m + W - r) % W);
+            if j < q {
+                self._mem[m * q + j] = if slot < q { (px >> (4 * slot) & 15) as u8 } else { 0 };
+            }
+        }
+    }
+
     /// The words of port group `group`, from the memories as they stand.
     fn read(&mut self) {
         let q = P / 4;
@@ -160,17 +173,11 @@ impl<const W: usize, const P: usize> PlanesToWords<W, P> {
 
 impl<const W: usize, const P: usize> Logic for PlanesToWords<W, P> {
     fn update(&mut self) {
-        let q = P / 4;
         if self.clock.pos_edge() {
             let offered = self.we.val().then(|| (self.plane.val().index(), self.px.val().to_u128()));
-            let Some((b, px)) = std::mem::replace(&mut self._wr, offered) else { return self.read() };
-            // The write rotator turns the plane by `plane`'s low stages(W) bits.
-            let r = reach(b, W);
-            for m in 0..W {
-                let (j, slot) = (skewed(m, b, W), (m + W - r) % W);
-                if j < q {
-                    self._mem[m * q + j] = if slot < q { (px >> (4 * slot) & 15) as u8 } else { 0 };
-                }
+            // The plane registered at the last edge goes into the memories at this one.
+            if let Some((b, px)) = std::mem::replace(&mut self._wr, offered) {
+                self.write(b, px);
             }
         }
         self.read();
