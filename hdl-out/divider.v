@@ -1,11 +1,12 @@
 
 
-module divider(clock,inp_valid,inp_ready,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
+module divider(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
     
     // Module arguments
     input wire  clock;
     input wire  inp_valid;
     output reg  inp_ready;
+    input wire  hold;
     input wire  [57:0] inp_n;
     input wire  [33:0] inp_d;
     output reg  out_valid;
@@ -158,7 +159,7 @@ module divider(clock,inp_valid,inp_ready,inp_n,inp_d,out_valid,out_ready,out_q,o
     
     // Update code
     always @(*) begin
-        advance = ~stages$4$valid | out_ready;
+        advance = ~hold & (~stages$4$valid | out_ready);
         out_valid = stages$4$valid;
         last_x = stages$4$x;
         out_r = stages$4$p;

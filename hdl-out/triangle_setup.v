@@ -98,149 +98,222 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  q_msb = 8'h12;
     localparam  q_ext = 19'b0;
     localparam  lane$0 = 8'h0;
-    localparam  lane$1 = 8'h1;
+    localparam  lane$1 = 8'h0;
     localparam  lane$2 = 8'h0;
-    localparam  lane$3 = 8'h1;
-    localparam  lane$4 = 8'h2;
-    localparam  lane$5 = 8'h3;
-    localparam  lane$6 = 8'h4;
-    localparam  lane$7 = 8'h5;
-    localparam  lane$8 = 8'h0;
-    localparam  lane$9 = 8'h1;
-    localparam  lane$10 = 8'h2;
-    localparam  lane$11 = 8'h3;
-    localparam  lane$12 = 8'h0;
-    localparam  lane$13 = 8'h1;
-    localparam  lane$14 = 8'h2;
-    localparam  lane$15 = 8'h3;
-    localparam  lane$16 = 8'h4;
-    localparam  lane$17 = 8'h5;
-    localparam  lane$18 = 8'h6;
-    localparam  lane$19 = 8'h0;
-    localparam  lane$20 = 8'h1;
-    localparam  lane$21 = 8'h2;
-    localparam  lane$22 = 8'h3;
-    localparam  lane$23 = 8'h4;
-    localparam  lane$24 = 8'h5;
-    localparam  lane$25 = 8'h6;
-    localparam  lane$26 = 8'h0;
-    localparam  lane$27 = 8'h1;
-    localparam  lane$28 = 8'h0;
-    localparam  lane$29 = 8'h1;
-    localparam  lane$30 = 8'h2;
-    localparam  lane$31 = 8'h3;
-    localparam  lane$32 = 8'h4;
-    localparam  lane$33 = 8'h5;
-    localparam  lane$34 = 8'h6;
-    localparam  lane$35 = 8'h0;
-    localparam  lane$36 = 8'h1;
-    localparam  lane$37 = 8'h2;
-    localparam  lane$38 = 8'h3;
-    localparam  lane$39 = 8'h4;
-    localparam  lane$40 = 8'h5;
-    localparam  lane$41 = 8'h6;
-    localparam  lane$42 = 8'h0;
-    localparam  lane$43 = 8'h1;
-    localparam  lane$44 = 8'h2;
-    localparam  lane$45 = 8'h3;
-    localparam  lane$46 = 8'h4;
-    localparam  lane$47 = 8'h5;
-    localparam  lane$48 = 8'h6;
-    localparam  lane$49 = 8'h0;
-    localparam  lane$50 = 8'h1;
-    localparam  lane$51 = 8'h2;
-    localparam  lane$52 = 8'h3;
-    localparam  lane$53 = 8'h4;
-    localparam  lane$54 = 8'h5;
-    localparam  lane$55 = 8'h6;
-    localparam  lane$56 = 8'h0;
-    localparam  lane$57 = 8'h1;
-    localparam  lane$58 = 8'h2;
-    localparam  lane$59 = 8'h3;
-    localparam  lane$60 = 8'h4;
-    localparam  lane$61 = 8'h5;
-    localparam  lane$62 = 8'h6;
-    localparam  lane$63 = 8'h0;
+    localparam  lane$3 = 8'h0;
+    localparam  lane$4 = 8'h0;
+    localparam  lane$5 = 8'h0;
+    localparam  lane$6 = 8'h0;
+    localparam  lane$7 = 8'h0;
+    localparam  lane$8 = 8'h1;
+    localparam  lane$9 = 8'h2;
+    localparam  lane$10 = 8'h3;
+    localparam  lane$11 = 8'h4;
+    localparam  lane$12 = 8'h1;
+    localparam  lane$13 = 8'h2;
+    localparam  lane$14 = 8'h3;
+    localparam  lane$15 = 8'h4;
+    localparam  lane$16 = 8'h5;
+    localparam  lane$17 = 8'h6;
+    localparam  lane$18 = 8'h1;
+    localparam  lane$19 = 8'h2;
+    localparam  lane$20 = 8'h3;
+    localparam  lane$21 = 8'h4;
+    localparam  lane$22 = 8'h5;
+    localparam  lane$23 = 8'h6;
+    localparam  lane$24 = 8'h1;
+    localparam  lane$25 = 8'h2;
+    localparam  lane$26 = 8'h3;
+    localparam  lane$27 = 8'h4;
+    localparam  lane$28 = 8'h1;
+    localparam  lane$29 = 8'h2;
+    localparam  lane$30 = 8'h3;
+    localparam  lane$31 = 8'h4;
+    localparam  lane$32 = 8'h5;
+    localparam  lane$33 = 8'h6;
+    localparam  lane$34 = 8'h1;
+    localparam  lane$35 = 8'h2;
+    localparam  lane$36 = 8'h3;
+    localparam  lane$37 = 8'h4;
+    localparam  lane$38 = 8'h5;
+    localparam  lane$39 = 8'h6;
+    localparam  lane$40 = 8'h1;
+    localparam  lane$41 = 8'h2;
+    localparam  lane$42 = 8'h3;
+    localparam  lane$43 = 8'h4;
+    localparam  lane$44 = 8'h5;
+    localparam  lane$45 = 8'h6;
+    localparam  lane$46 = 8'h1;
+    localparam  lane$47 = 8'h2;
+    localparam  lane$48 = 8'h3;
+    localparam  lane$49 = 8'h4;
+    localparam  lane$50 = 8'h5;
+    localparam  lane$51 = 8'h6;
+    localparam  lane$52 = 8'h1;
+    localparam  lane$53 = 8'h2;
+    localparam  lane$54 = 8'h3;
+    localparam  lane$55 = 8'h4;
+    localparam  lane$56 = 8'h5;
+    localparam  lane$57 = 8'h6;
+    localparam  lane$58 = 8'h1;
+    localparam  lane$59 = 8'h2;
+    localparam  lane$60 = 8'h3;
+    localparam  lane$61 = 8'h4;
+    localparam  lane$62 = 8'h5;
+    localparam  lane$63 = 8'h6;
+    localparam  late$0 = 1'b0;
+    localparam  late$1 = 1'b0;
+    localparam  late$2 = 1'b0;
+    localparam  late$3 = 1'b0;
+    localparam  late$4 = 1'b0;
+    localparam  late$5 = 1'b0;
+    localparam  late$6 = 1'b0;
+    localparam  late$7 = 1'b0;
+    localparam  late$8 = 1'b0;
+    localparam  late$9 = 1'b0;
+    localparam  late$10 = 1'b0;
+    localparam  late$11 = 1'b0;
+    localparam  late$12 = 1'b0;
+    localparam  late$13 = 1'b0;
+    localparam  late$14 = 1'b0;
+    localparam  late$15 = 1'b0;
+    localparam  late$16 = 1'b0;
+    localparam  late$17 = 1'b0;
+    localparam  late$18 = 1'b0;
+    localparam  late$19 = 1'b0;
+    localparam  late$20 = 1'b0;
+    localparam  late$21 = 1'b0;
+    localparam  late$22 = 1'b0;
+    localparam  late$23 = 1'b0;
+    localparam  late$24 = 1'b1;
+    localparam  late$25 = 1'b1;
+    localparam  late$26 = 1'b1;
+    localparam  late$27 = 1'b1;
+    localparam  late$28 = 1'b1;
+    localparam  late$29 = 1'b1;
+    localparam  late$30 = 1'b1;
+    localparam  late$31 = 1'b1;
+    localparam  late$32 = 1'b1;
+    localparam  late$33 = 1'b1;
+    localparam  late$34 = 1'b1;
+    localparam  late$35 = 1'b1;
+    localparam  late$36 = 1'b1;
+    localparam  late$37 = 1'b1;
+    localparam  late$38 = 1'b1;
+    localparam  late$39 = 1'b1;
+    localparam  late$40 = 1'b1;
+    localparam  late$41 = 1'b1;
+    localparam  late$42 = 1'b1;
+    localparam  late$43 = 1'b1;
+    localparam  late$44 = 1'b1;
+    localparam  late$45 = 1'b1;
+    localparam  late$46 = 1'b1;
+    localparam  late$47 = 1'b1;
+    localparam  late$48 = 1'b1;
+    localparam  late$49 = 1'b1;
+    localparam  late$50 = 1'b1;
+    localparam  late$51 = 1'b1;
+    localparam  late$52 = 1'b1;
+    localparam  late$53 = 1'b1;
+    localparam  late$54 = 1'b1;
+    localparam  late$55 = 1'b1;
+    localparam  late$56 = 1'b1;
+    localparam  late$57 = 1'b1;
+    localparam  late$58 = 1'b1;
+    localparam  late$59 = 1'b1;
+    localparam  late$60 = 1'b1;
+    localparam  late$61 = 1'b1;
+    localparam  late$62 = 1'b1;
+    localparam  late$63 = 1'b1;
+    localparam  late_res$0 = 1'b0;
+    localparam  late_res$1 = 1'b0;
+    localparam  late_res$2 = 1'b1;
+    localparam  late_res$3 = 1'b1;
+    localparam  late_res$4 = 1'b1;
+    localparam  late_res$5 = 1'b1;
+    localparam  late_res$6 = 1'b1;
+    localparam  interval = 8'ha;
+    localparam  after_interval = 8'hb;
     localparam  cyc$0 = 8'h1;
-    localparam  cyc$1 = 8'h1;
-    localparam  cyc$2 = 8'h2;
-    localparam  cyc$3 = 8'h2;
-    localparam  cyc$4 = 8'h2;
-    localparam  cyc$5 = 8'h2;
-    localparam  cyc$6 = 8'h2;
-    localparam  cyc$7 = 8'h2;
-    localparam  cyc$8 = 8'h7;
-    localparam  cyc$9 = 8'h7;
-    localparam  cyc$10 = 8'h7;
-    localparam  cyc$11 = 8'h7;
-    localparam  cyc$12 = 8'h8;
-    localparam  cyc$13 = 8'h8;
-    localparam  cyc$14 = 8'h8;
-    localparam  cyc$15 = 8'h8;
-    localparam  cyc$16 = 8'h8;
-    localparam  cyc$17 = 8'h8;
-    localparam  cyc$18 = 8'h8;
-    localparam  cyc$19 = 8'h9;
-    localparam  cyc$20 = 8'h9;
-    localparam  cyc$21 = 8'h9;
-    localparam  cyc$22 = 8'h9;
-    localparam  cyc$23 = 8'h9;
-    localparam  cyc$24 = 8'h9;
-    localparam  cyc$25 = 8'h9;
-    localparam  cyc$26 = 8'ha;
-    localparam  cyc$27 = 8'ha;
-    localparam  cyc$28 = 8'hb;
-    localparam  cyc$29 = 8'hb;
-    localparam  cyc$30 = 8'hb;
-    localparam  cyc$31 = 8'hb;
-    localparam  cyc$32 = 8'hb;
-    localparam  cyc$33 = 8'hb;
-    localparam  cyc$34 = 8'hb;
-    localparam  cyc$35 = 8'hc;
-    localparam  cyc$36 = 8'hc;
-    localparam  cyc$37 = 8'hc;
-    localparam  cyc$38 = 8'hc;
-    localparam  cyc$39 = 8'hc;
-    localparam  cyc$40 = 8'hc;
-    localparam  cyc$41 = 8'hc;
-    localparam  cyc$42 = 8'hd;
-    localparam  cyc$43 = 8'hd;
-    localparam  cyc$44 = 8'hd;
-    localparam  cyc$45 = 8'hd;
-    localparam  cyc$46 = 8'hd;
-    localparam  cyc$47 = 8'hd;
-    localparam  cyc$48 = 8'hd;
-    localparam  cyc$49 = 8'he;
-    localparam  cyc$50 = 8'he;
-    localparam  cyc$51 = 8'he;
-    localparam  cyc$52 = 8'he;
-    localparam  cyc$53 = 8'he;
-    localparam  cyc$54 = 8'he;
-    localparam  cyc$55 = 8'he;
-    localparam  cyc$56 = 8'hf;
-    localparam  cyc$57 = 8'hf;
-    localparam  cyc$58 = 8'hf;
-    localparam  cyc$59 = 8'hf;
-    localparam  cyc$60 = 8'hf;
-    localparam  cyc$61 = 8'hf;
-    localparam  cyc$62 = 8'hf;
-    localparam  cyc$63 = 8'h10;
-    localparam  iss$0 = 8'h2;
-    localparam  iss$1 = 8'h3;
-    localparam  iss$2 = 8'h4;
-    localparam  iss$3 = 8'h5;
-    localparam  iss$4 = 8'h6;
-    localparam  iss$5 = 8'h7;
-    localparam  iss$6 = 8'h8;
-    localparam  res$0 = 8'h7;
-    localparam  res$1 = 8'h8;
-    localparam  res$2 = 8'h9;
-    localparam  res$3 = 8'ha;
-    localparam  res$4 = 8'hb;
-    localparam  res$5 = 8'hc;
-    localparam  res$6 = 8'hd;
-    localparam  handover = 8'h11;
-    localparam  last = 8'h12;
+    localparam  cyc$1 = 8'h2;
+    localparam  cyc$2 = 8'h3;
+    localparam  cyc$3 = 8'h4;
+    localparam  cyc$4 = 8'h5;
+    localparam  cyc$5 = 8'h6;
+    localparam  cyc$6 = 8'h7;
+    localparam  cyc$7 = 8'h8;
+    localparam  cyc$8 = 8'h8;
+    localparam  cyc$9 = 8'h8;
+    localparam  cyc$10 = 8'h8;
+    localparam  cyc$11 = 8'h8;
+    localparam  cyc$12 = 8'h9;
+    localparam  cyc$13 = 8'h9;
+    localparam  cyc$14 = 8'h9;
+    localparam  cyc$15 = 8'h9;
+    localparam  cyc$16 = 8'h9;
+    localparam  cyc$17 = 8'h9;
+    localparam  cyc$18 = 8'ha;
+    localparam  cyc$19 = 8'ha;
+    localparam  cyc$20 = 8'ha;
+    localparam  cyc$21 = 8'ha;
+    localparam  cyc$22 = 8'ha;
+    localparam  cyc$23 = 8'ha;
+    localparam  cyc$24 = 8'hb;
+    localparam  cyc$25 = 8'hb;
+    localparam  cyc$26 = 8'hb;
+    localparam  cyc$27 = 8'hb;
+    localparam  cyc$28 = 8'hc;
+    localparam  cyc$29 = 8'hc;
+    localparam  cyc$30 = 8'hc;
+    localparam  cyc$31 = 8'hc;
+    localparam  cyc$32 = 8'hc;
+    localparam  cyc$33 = 8'hc;
+    localparam  cyc$34 = 8'hd;
+    localparam  cyc$35 = 8'hd;
+    localparam  cyc$36 = 8'hd;
+    localparam  cyc$37 = 8'hd;
+    localparam  cyc$38 = 8'hd;
+    localparam  cyc$39 = 8'hd;
+    localparam  cyc$40 = 8'he;
+    localparam  cyc$41 = 8'he;
+    localparam  cyc$42 = 8'he;
+    localparam  cyc$43 = 8'he;
+    localparam  cyc$44 = 8'he;
+    localparam  cyc$45 = 8'he;
+    localparam  cyc$46 = 8'hf;
+    localparam  cyc$47 = 8'hf;
+    localparam  cyc$48 = 8'hf;
+    localparam  cyc$49 = 8'hf;
+    localparam  cyc$50 = 8'hf;
+    localparam  cyc$51 = 8'hf;
+    localparam  cyc$52 = 8'h10;
+    localparam  cyc$53 = 8'h10;
+    localparam  cyc$54 = 8'h10;
+    localparam  cyc$55 = 8'h10;
+    localparam  cyc$56 = 8'h10;
+    localparam  cyc$57 = 8'h10;
+    localparam  cyc$58 = 8'h11;
+    localparam  cyc$59 = 8'h11;
+    localparam  cyc$60 = 8'h11;
+    localparam  cyc$61 = 8'h11;
+    localparam  cyc$62 = 8'h11;
+    localparam  cyc$63 = 8'h11;
+    localparam  iss$0 = 8'h3;
+    localparam  iss$1 = 8'h5;
+    localparam  iss$2 = 8'h6;
+    localparam  iss$3 = 8'h7;
+    localparam  iss$4 = 8'h8;
+    localparam  iss$5 = 8'h9;
+    localparam  iss$6 = 8'ha;
+    localparam  res$0 = 8'h8;
+    localparam  res$1 = 8'ha;
+    localparam  res$2 = 8'hb;
+    localparam  res$3 = 8'hc;
+    localparam  res$4 = 8'hd;
+    localparam  res$5 = 8'he;
+    localparam  res$6 = 8'hf;
+    localparam  handover = 8'h12;
+    localparam  last = 8'h13;
     localparam  recip_n = 58'h100000000000000;
     localparam  recip_top = 6'b100000;
     localparam  eq_shift = 6'b1111;
@@ -253,22 +326,9 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  bsh$2 = 8'h16;
     localparam  bsh$3 = 8'h16;
     localparam  frac = 8'h4;
-    localparam  half_m1 = 19'b111;
-    localparam  half = 19'b1000;
-    localparam  int_mask = 19'b1111111111111110000;
-    localparam  frac_mask = 19'b1111;
-    localparam  xy_msb = 8'hf;
-    localparam  z_msb = 8'h11;
     localparam  area_msb = 8'h21;
-    localparam  nb_msb = 8'h12;
     localparam  p_msb = 8'h38;
-    localparam  xy_ext = 58'h3ffffffffff0000;
-    localparam  y_ext = 57'h1ffffffffff0000;
-    localparam  z_ext = 19'b1000000000000000000;
-    localparam  shr_ext = 19'b1111000000000000000;
     localparam  ones = 57'h1ffffffffffffff;
-    localparam  top_bit = 8'h2;
-    localparam  bottom_bit = 8'h3;
     
     // Stub signals
     reg  [56:0] mul$0$a;
@@ -295,15 +355,19 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  div$clock;
     reg  div$inp_valid;
     wire  div$inp_ready;
+    reg  div$hold;
     reg  [57:0] div$inp_n;
     reg  [33:0] div$inp_d;
     wire  div$out_valid;
     reg  div$out_ready;
     wire  [25:0] div$out_q;
     wire  [33:0] div$out_r;
-    reg  [7:0] t$d;
-    wire  [7:0] t$q;
-    reg  t$clock;
+    reg  [7:0] ta$d;
+    wire  [7:0] ta$q;
+    reg  ta$clock;
+    reg  [7:0] tb$d;
+    wire  [7:0] tb$q;
+    reg  tb$clock;
     reg  [15:0] vx$0$d;
     wire  [15:0] vx$0$q;
     reg  vx$0$clock;
@@ -361,6 +425,216 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [5:0] crosses$d;
     wire  [5:0] crosses$q;
     reg  crosses$clock;
+    reg  [15:0] vx_b$0$d;
+    wire  [15:0] vx_b$0$q;
+    reg  vx_b$0$clock;
+    reg  [15:0] vx_b$1$d;
+    wire  [15:0] vx_b$1$q;
+    reg  vx_b$1$clock;
+    reg  [15:0] vx_b$2$d;
+    wire  [15:0] vx_b$2$q;
+    reg  vx_b$2$clock;
+    reg  [15:0] vy_b$0$d;
+    wire  [15:0] vy_b$0$q;
+    reg  vy_b$0$clock;
+    reg  [15:0] vy_b$1$d;
+    wire  [15:0] vy_b$1$q;
+    reg  vy_b$1$clock;
+    reg  [15:0] vy_b$2$d;
+    wire  [15:0] vy_b$2$q;
+    reg  vy_b$2$clock;
+    reg  [17:0] vz_b$0$d;
+    wire  [17:0] vz_b$0$q;
+    reg  vz_b$0$clock;
+    reg  [17:0] vz_b$1$d;
+    wire  [17:0] vz_b$1$q;
+    reg  vz_b$1$clock;
+    reg  [17:0] vz_b$2$d;
+    wire  [17:0] vz_b$2$q;
+    reg  vz_b$2$clock;
+    reg  [7:0] vc_b$0$d;
+    wire  [7:0] vc_b$0$q;
+    reg  vc_b$0$clock;
+    reg  [7:0] vc_b$1$d;
+    wire  [7:0] vc_b$1$q;
+    reg  vc_b$1$clock;
+    reg  [7:0] vc_b$2$d;
+    wire  [7:0] vc_b$2$q;
+    reg  vc_b$2$clock;
+    reg  [7:0] vc_b$3$d;
+    wire  [7:0] vc_b$3$q;
+    reg  vc_b$3$clock;
+    reg  [7:0] vc_b$4$d;
+    wire  [7:0] vc_b$4$q;
+    reg  vc_b$4$clock;
+    reg  [7:0] vc_b$5$d;
+    wire  [7:0] vc_b$5$q;
+    reg  vc_b$5$clock;
+    reg  [7:0] vc_b$6$d;
+    wire  [7:0] vc_b$6$q;
+    reg  vc_b$6$clock;
+    reg  [7:0] vc_b$7$d;
+    wire  [7:0] vc_b$7$q;
+    reg  vc_b$7$clock;
+    reg  [7:0] vc_b$8$d;
+    wire  [7:0] vc_b$8$q;
+    reg  vc_b$8$clock;
+    reg  [5:0] crosses_b$d;
+    wire  [5:0] crosses_b$q;
+    reg  crosses_b$clock;
+    reg  maj_left_b$d;
+    wire  maj_left_b$q;
+    reg  maj_left_b$clock;
+    reg  [15:0] ga$vx$0;
+    reg  [15:0] ga$vx$1;
+    reg  [15:0] ga$vx$2;
+    reg  [15:0] ga$vy$0;
+    reg  [15:0] ga$vy$1;
+    reg  [15:0] ga$vy$2;
+    reg  [17:0] ga$vz$0;
+    reg  [17:0] ga$vz$1;
+    reg  [17:0] ga$vz$2;
+    reg  [7:0] ga$vc$0;
+    reg  [7:0] ga$vc$1;
+    reg  [7:0] ga$vc$2;
+    reg  [7:0] ga$vc$3;
+    reg  [7:0] ga$vc$4;
+    reg  [7:0] ga$vc$5;
+    reg  [7:0] ga$vc$6;
+    reg  [7:0] ga$vc$7;
+    reg  [7:0] ga$vc$8;
+    reg  [5:0] ga$crosses;
+    reg  ga$maj_left;
+    reg  [18:0] ga$start_x$0;
+    reg  [18:0] ga$start_x$1;
+    reg  [18:0] ga$start_x$2;
+    wire  [57:0] ga$kdx$0;
+    wire  [57:0] ga$kdx$1;
+    wire  [57:0] ga$kdx$2;
+    wire  [56:0] ga$kdy$0;
+    wire  [56:0] ga$kdy$1;
+    wire  [56:0] ga$kdy$2;
+    wire  ga$up;
+    wire  [57:0] ga$edx$0;
+    wire  [57:0] ga$edx$1;
+    wire  [57:0] ga$edx$2;
+    wire  [56:0] ga$edy$0;
+    wire  [56:0] ga$edy$1;
+    wire  [56:0] ga$edy$2;
+    wire  [33:0] ga$edy_d$0;
+    wire  [33:0] ga$edy_d$1;
+    wire  [33:0] ga$edy_d$2;
+    wire  [33:0] ga$ed16$0;
+    wire  [33:0] ga$ed16$1;
+    wire  [33:0] ga$ed16$2;
+    wire  [18:0] ga$cy$0;
+    wire  [18:0] ga$cy$1;
+    wire  [18:0] ga$cy$2;
+    wire  [12:0] ga$count$0;
+    wire  [12:0] ga$count$1;
+    wire  [12:0] ga$count$2;
+    wire  [18:0] ga$toff$0;
+    wire  [18:0] ga$toff$1;
+    wire  [18:0] ga$toff$2;
+    wire  [18:0] ga$xf$0;
+    wire  [18:0] ga$xf$1;
+    wire  [18:0] ga$xf$2;
+    wire  [18:0] ga$xi$0;
+    wire  [18:0] ga$xi$1;
+    wire  [18:0] ga$xi$2;
+    wire  [18:0] ga$off_x$0;
+    wire  [18:0] ga$off_x$1;
+    wire  [18:0] ga$off_x$2;
+    wire  [18:0] ga$off_y$0;
+    wire  [18:0] ga$off_y$1;
+    wire  [18:0] ga$off_y$2;
+    wire  [18:0] ga$dmaj$0;
+    wire  [18:0] ga$dmaj$1;
+    wire  [18:0] ga$dmaj$2;
+    wire  [18:0] ga$dmaj$3;
+    wire  [18:0] ga$dbot$0;
+    wire  [18:0] ga$dbot$1;
+    wire  [18:0] ga$dbot$2;
+    wire  [18:0] ga$dbot$3;
+    wire  [39:0] ga$attr0$0;
+    wire  [39:0] ga$attr0$1;
+    wire  [39:0] ga$attr0$2;
+    wire  [39:0] ga$attr0$3;
+    reg  [15:0] gb$vx$0;
+    reg  [15:0] gb$vx$1;
+    reg  [15:0] gb$vx$2;
+    reg  [15:0] gb$vy$0;
+    reg  [15:0] gb$vy$1;
+    reg  [15:0] gb$vy$2;
+    reg  [17:0] gb$vz$0;
+    reg  [17:0] gb$vz$1;
+    reg  [17:0] gb$vz$2;
+    reg  [7:0] gb$vc$0;
+    reg  [7:0] gb$vc$1;
+    reg  [7:0] gb$vc$2;
+    reg  [7:0] gb$vc$3;
+    reg  [7:0] gb$vc$4;
+    reg  [7:0] gb$vc$5;
+    reg  [7:0] gb$vc$6;
+    reg  [7:0] gb$vc$7;
+    reg  [7:0] gb$vc$8;
+    reg  [5:0] gb$crosses;
+    reg  gb$maj_left;
+    reg  [18:0] gb$start_x$0;
+    reg  [18:0] gb$start_x$1;
+    reg  [18:0] gb$start_x$2;
+    wire  [57:0] gb$kdx$0;
+    wire  [57:0] gb$kdx$1;
+    wire  [57:0] gb$kdx$2;
+    wire  [56:0] gb$kdy$0;
+    wire  [56:0] gb$kdy$1;
+    wire  [56:0] gb$kdy$2;
+    wire  gb$up;
+    wire  [57:0] gb$edx$0;
+    wire  [57:0] gb$edx$1;
+    wire  [57:0] gb$edx$2;
+    wire  [56:0] gb$edy$0;
+    wire  [56:0] gb$edy$1;
+    wire  [56:0] gb$edy$2;
+    wire  [33:0] gb$edy_d$0;
+    wire  [33:0] gb$edy_d$1;
+    wire  [33:0] gb$edy_d$2;
+    wire  [33:0] gb$ed16$0;
+    wire  [33:0] gb$ed16$1;
+    wire  [33:0] gb$ed16$2;
+    wire  [18:0] gb$cy$0;
+    wire  [18:0] gb$cy$1;
+    wire  [18:0] gb$cy$2;
+    wire  [12:0] gb$count$0;
+    wire  [12:0] gb$count$1;
+    wire  [12:0] gb$count$2;
+    wire  [18:0] gb$toff$0;
+    wire  [18:0] gb$toff$1;
+    wire  [18:0] gb$toff$2;
+    wire  [18:0] gb$xf$0;
+    wire  [18:0] gb$xf$1;
+    wire  [18:0] gb$xf$2;
+    wire  [18:0] gb$xi$0;
+    wire  [18:0] gb$xi$1;
+    wire  [18:0] gb$xi$2;
+    wire  [18:0] gb$off_x$0;
+    wire  [18:0] gb$off_x$1;
+    wire  [18:0] gb$off_x$2;
+    wire  [18:0] gb$off_y$0;
+    wire  [18:0] gb$off_y$1;
+    wire  [18:0] gb$off_y$2;
+    wire  [18:0] gb$dmaj$0;
+    wire  [18:0] gb$dmaj$1;
+    wire  [18:0] gb$dmaj$2;
+    wire  [18:0] gb$dmaj$3;
+    wire  [18:0] gb$dbot$0;
+    wire  [18:0] gb$dbot$1;
+    wire  [18:0] gb$dbot$2;
+    wire  [18:0] gb$dbot$3;
+    wire  [39:0] gb$attr0$0;
+    wire  [39:0] gb$attr0$1;
+    wire  [39:0] gb$attr0$2;
+    wire  [39:0] gb$attr0$3;
     reg  [33:0] area$d;
     wire  [33:0] area$q;
     reg  area$clock;
@@ -562,6 +836,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     
     // Local signals
     reg  take;
+    reg  run;
     reg  act$0;
     reg  act$1;
     reg  act$2;
@@ -626,104 +901,22 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  act$61;
     reg  act$62;
     reg  act$63;
-    reg  [57:0] xw$0;
-    reg  [57:0] xw$1;
-    reg  [57:0] xw$2;
-    reg  [56:0] yw$0;
-    reg  [56:0] yw$1;
-    reg  [56:0] yw$2;
-    reg  [18:0] zn$0;
-    reg  [18:0] zn$1;
-    reg  [18:0] zn$2;
-    reg  [18:0] cn$0;
-    reg  [18:0] cn$1;
-    reg  [18:0] cn$2;
-    reg  [18:0] cn$3;
-    reg  [18:0] cn$4;
-    reg  [18:0] cn$5;
-    reg  [18:0] cn$6;
-    reg  [18:0] cn$7;
-    reg  [18:0] cn$8;
-    reg  [18:0] xn$0;
-    reg  [18:0] xn$1;
-    reg  [18:0] xn$2;
-    reg  [18:0] yn$0;
-    reg  [18:0] yn$1;
-    reg  [18:0] yn$2;
-    reg  [57:0] kdx$0;
-    reg  [57:0] kdx$1;
-    reg  [57:0] kdx$2;
-    reg  [56:0] kdy$0;
-    reg  [56:0] kdy$1;
-    reg  [56:0] kdy$2;
-    reg  [18:0] cv$0;
-    reg  [18:0] cv$1;
-    reg  [18:0] cv$2;
-    reg  [12:0] span$0;
-    reg  [12:0] span$1;
-    reg  [12:0] span$2;
-    reg  [18:0] diff$0;
-    reg  [18:0] diff$1;
-    reg  [18:0] diff$2;
-    reg  up;
+    reg  at_iss$0;
+    reg  at_iss$1;
+    reg  at_iss$2;
+    reg  at_iss$3;
+    reg  at_iss$4;
+    reg  at_iss$5;
+    reg  at_iss$6;
+    reg  at_res$0;
+    reg  at_res$1;
+    reg  at_res$2;
+    reg  at_res$3;
+    reg  at_res$4;
+    reg  at_res$5;
+    reg  at_res$6;
+    reg  at_handover;
     reg  maj_left;
-    reg  [57:0] edx$0;
-    reg  [57:0] edx$1;
-    reg  [57:0] edx$2;
-    reg  [56:0] edy$0;
-    reg  [56:0] edy$1;
-    reg  [56:0] edy$2;
-    reg  [33:0] edy_d$0;
-    reg  [33:0] edy_d$1;
-    reg  [33:0] edy_d$2;
-    reg  [33:0] ed16$0;
-    reg  [33:0] ed16$1;
-    reg  [33:0] ed16$2;
-    reg  [18:0] bx$0;
-    reg  [18:0] bx$1;
-    reg  [18:0] bx$2;
-    reg  [18:0] by$0;
-    reg  [18:0] by$1;
-    reg  [18:0] by$2;
-    reg  [18:0] cy$0;
-    reg  [18:0] cy$1;
-    reg  [18:0] cy$2;
-    reg  [12:0] count$0;
-    reg  [12:0] count$1;
-    reg  [12:0] count$2;
-    reg  [18:0] toff$0;
-    reg  [18:0] toff$1;
-    reg  [18:0] toff$2;
-    reg  [18:0] xb$0;
-    reg  [18:0] xb$1;
-    reg  [18:0] xb$2;
-    reg  [18:0] xi$0;
-    reg  [18:0] xi$1;
-    reg  [18:0] xi$2;
-    reg  [18:0] xf$0;
-    reg  [18:0] xf$1;
-    reg  [18:0] xf$2;
-    reg  [18:0] tracked$0;
-    reg  [18:0] tracked$1;
-    reg  [18:0] tracked$2;
-    reg  [18:0] off_x$0;
-    reg  [18:0] off_x$1;
-    reg  [18:0] off_x$2;
-    reg  [18:0] off_y$0;
-    reg  [18:0] off_y$1;
-    reg  [18:0] off_y$2;
-    reg  [18:0] dmaj$0;
-    reg  [18:0] dmaj$1;
-    reg  [18:0] dmaj$2;
-    reg  [18:0] dmaj$3;
-    reg  [18:0] dbot$0;
-    reg  [18:0] dbot$1;
-    reg  [18:0] dbot$2;
-    reg  [18:0] dbot$3;
-    reg  [39:0] attr0$0;
-    reg  [39:0] attr0$1;
-    reg  [39:0] attr0$2;
-    reg  [39:0] attr0$3;
     reg  [33:0] area_abs;
     reg  [5:0] exp_c;
     reg  [33:0] norm_d;
@@ -731,6 +924,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [56:0] mant_a;
     reg  [18:0] q_n;
     reg  r_pos;
+    reg  [18:0] xi$0;
+    reg  [18:0] xi$1;
+    reg  [18:0] xi$2;
+    reg  [20:0] ed$0;
+    reg  [20:0] ed$1;
+    reg  [20:0] ed$2;
     reg  [33:0] pa$0;
     reg  [33:0] pa$1;
     reg  [57:0] pn$0;
@@ -799,10 +998,62 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [18:0] delta$1;
     reg  [18:0] delta$2;
     reg  [18:0] delta$3;
+    reg  [18:0] delta$4;
+    reg  [18:0] delta$5;
+    reg  [18:0] delta$6;
+    reg  [18:0] delta$7;
     reg  [18:0] eq_b$0;
     reg  [18:0] eq_b$1;
     reg  [18:0] eq_b$2;
     reg  [18:0] eq_b$3;
+    reg  [18:0] eq_b$4;
+    reg  [18:0] eq_b$5;
+    reg  [18:0] eq_b$6;
+    reg  [18:0] eq_b$7;
+    reg  [18:0] op_e$0;
+    reg  [18:0] op_e$1;
+    reg  [18:0] op_e$2;
+    reg  [18:0] op_e$3;
+    reg  [18:0] op_g$0;
+    reg  [18:0] op_g$1;
+    reg  [18:0] op_g$2;
+    reg  [18:0] op_g$3;
+    reg  [18:0] op_g$4;
+    reg  [18:0] op_g$5;
+    reg  [18:0] op_g$6;
+    reg  [18:0] op_g$7;
+    reg  [18:0] op_g$8;
+    reg  [18:0] op_g$9;
+    reg  [18:0] op_g$10;
+    reg  [18:0] op_g$11;
+    reg  [18:0] op_g$12;
+    reg  [18:0] op_g$13;
+    reg  [18:0] op_g$14;
+    reg  [18:0] op_g$15;
+    reg  [18:0] op_s$0;
+    reg  [18:0] op_s$1;
+    reg  [18:0] op_s$2;
+    reg  [18:0] op_s$3;
+    reg  [18:0] op_s$4;
+    reg  [18:0] op_s$5;
+    reg  [18:0] op_s$6;
+    reg  [18:0] op_s$7;
+    reg  [18:0] op_s$8;
+    reg  [18:0] op_s$9;
+    reg  [18:0] op_s$10;
+    reg  [18:0] op_s$11;
+    reg  [18:0] op_s$12;
+    reg  [18:0] op_s$13;
+    reg  [18:0] op_s$14;
+    reg  [18:0] op_s$15;
+    reg  [18:0] op_s$16;
+    reg  [18:0] op_s$17;
+    reg  [18:0] op_s$18;
+    reg  [18:0] op_s$19;
+    reg  [18:0] op_s$20;
+    reg  [18:0] op_s$21;
+    reg  [18:0] op_s$22;
+    reg  [18:0] op_s$23;
     reg  [56:0] shr$0;
     reg  [56:0] shr$1;
     reg  [56:0] shr$2;
@@ -882,6 +1133,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .clock(div$clock),
         .inp_valid(div$inp_valid),
         .inp_ready(div$inp_ready),
+        .hold(div$hold),
         .inp_n(div$inp_n),
         .inp_d(div$inp_d),
         .out_valid(div$out_valid),
@@ -889,10 +1141,15 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .out_q(div$out_q),
         .out_r(div$out_r)
     );
-    triangle_setup$t t(
-        .d(t$d),
-        .q(t$q),
-        .clock(t$clock)
+    triangle_setup$ta ta(
+        .d(ta$d),
+        .q(ta$q),
+        .clock(ta$clock)
+    );
+    triangle_setup$tb tb(
+        .d(tb$d),
+        .q(tb$q),
+        .clock(tb$clock)
     );
     triangle_setup$vx$0 vx$0(
         .d(vx$0$d),
@@ -988,6 +1245,260 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .d(crosses$d),
         .q(crosses$q),
         .clock(crosses$clock)
+    );
+    triangle_setup$vx_b$0 vx_b$0(
+        .d(vx_b$0$d),
+        .q(vx_b$0$q),
+        .clock(vx_b$0$clock)
+    );
+    triangle_setup$vx_b$1 vx_b$1(
+        .d(vx_b$1$d),
+        .q(vx_b$1$q),
+        .clock(vx_b$1$clock)
+    );
+    triangle_setup$vx_b$2 vx_b$2(
+        .d(vx_b$2$d),
+        .q(vx_b$2$q),
+        .clock(vx_b$2$clock)
+    );
+    triangle_setup$vy_b$0 vy_b$0(
+        .d(vy_b$0$d),
+        .q(vy_b$0$q),
+        .clock(vy_b$0$clock)
+    );
+    triangle_setup$vy_b$1 vy_b$1(
+        .d(vy_b$1$d),
+        .q(vy_b$1$q),
+        .clock(vy_b$1$clock)
+    );
+    triangle_setup$vy_b$2 vy_b$2(
+        .d(vy_b$2$d),
+        .q(vy_b$2$q),
+        .clock(vy_b$2$clock)
+    );
+    triangle_setup$vz_b$0 vz_b$0(
+        .d(vz_b$0$d),
+        .q(vz_b$0$q),
+        .clock(vz_b$0$clock)
+    );
+    triangle_setup$vz_b$1 vz_b$1(
+        .d(vz_b$1$d),
+        .q(vz_b$1$q),
+        .clock(vz_b$1$clock)
+    );
+    triangle_setup$vz_b$2 vz_b$2(
+        .d(vz_b$2$d),
+        .q(vz_b$2$q),
+        .clock(vz_b$2$clock)
+    );
+    triangle_setup$vc_b$0 vc_b$0(
+        .d(vc_b$0$d),
+        .q(vc_b$0$q),
+        .clock(vc_b$0$clock)
+    );
+    triangle_setup$vc_b$1 vc_b$1(
+        .d(vc_b$1$d),
+        .q(vc_b$1$q),
+        .clock(vc_b$1$clock)
+    );
+    triangle_setup$vc_b$2 vc_b$2(
+        .d(vc_b$2$d),
+        .q(vc_b$2$q),
+        .clock(vc_b$2$clock)
+    );
+    triangle_setup$vc_b$3 vc_b$3(
+        .d(vc_b$3$d),
+        .q(vc_b$3$q),
+        .clock(vc_b$3$clock)
+    );
+    triangle_setup$vc_b$4 vc_b$4(
+        .d(vc_b$4$d),
+        .q(vc_b$4$q),
+        .clock(vc_b$4$clock)
+    );
+    triangle_setup$vc_b$5 vc_b$5(
+        .d(vc_b$5$d),
+        .q(vc_b$5$q),
+        .clock(vc_b$5$clock)
+    );
+    triangle_setup$vc_b$6 vc_b$6(
+        .d(vc_b$6$d),
+        .q(vc_b$6$q),
+        .clock(vc_b$6$clock)
+    );
+    triangle_setup$vc_b$7 vc_b$7(
+        .d(vc_b$7$d),
+        .q(vc_b$7$q),
+        .clock(vc_b$7$clock)
+    );
+    triangle_setup$vc_b$8 vc_b$8(
+        .d(vc_b$8$d),
+        .q(vc_b$8$q),
+        .clock(vc_b$8$clock)
+    );
+    triangle_setup$crosses_b crosses_b(
+        .d(crosses_b$d),
+        .q(crosses_b$q),
+        .clock(crosses_b$clock)
+    );
+    triangle_setup$maj_left_b maj_left_b(
+        .d(maj_left_b$d),
+        .q(maj_left_b$q),
+        .clock(maj_left_b$clock)
+    );
+    triangle_setup$ga ga(
+        .vx$0(ga$vx$0),
+        .vx$1(ga$vx$1),
+        .vx$2(ga$vx$2),
+        .vy$0(ga$vy$0),
+        .vy$1(ga$vy$1),
+        .vy$2(ga$vy$2),
+        .vz$0(ga$vz$0),
+        .vz$1(ga$vz$1),
+        .vz$2(ga$vz$2),
+        .vc$0(ga$vc$0),
+        .vc$1(ga$vc$1),
+        .vc$2(ga$vc$2),
+        .vc$3(ga$vc$3),
+        .vc$4(ga$vc$4),
+        .vc$5(ga$vc$5),
+        .vc$6(ga$vc$6),
+        .vc$7(ga$vc$7),
+        .vc$8(ga$vc$8),
+        .crosses(ga$crosses),
+        .maj_left(ga$maj_left),
+        .start_x$0(ga$start_x$0),
+        .start_x$1(ga$start_x$1),
+        .start_x$2(ga$start_x$2),
+        .kdx$0(ga$kdx$0),
+        .kdx$1(ga$kdx$1),
+        .kdx$2(ga$kdx$2),
+        .kdy$0(ga$kdy$0),
+        .kdy$1(ga$kdy$1),
+        .kdy$2(ga$kdy$2),
+        .up(ga$up),
+        .edx$0(ga$edx$0),
+        .edx$1(ga$edx$1),
+        .edx$2(ga$edx$2),
+        .edy$0(ga$edy$0),
+        .edy$1(ga$edy$1),
+        .edy$2(ga$edy$2),
+        .edy_d$0(ga$edy_d$0),
+        .edy_d$1(ga$edy_d$1),
+        .edy_d$2(ga$edy_d$2),
+        .ed16$0(ga$ed16$0),
+        .ed16$1(ga$ed16$1),
+        .ed16$2(ga$ed16$2),
+        .cy$0(ga$cy$0),
+        .cy$1(ga$cy$1),
+        .cy$2(ga$cy$2),
+        .count$0(ga$count$0),
+        .count$1(ga$count$1),
+        .count$2(ga$count$2),
+        .toff$0(ga$toff$0),
+        .toff$1(ga$toff$1),
+        .toff$2(ga$toff$2),
+        .xf$0(ga$xf$0),
+        .xf$1(ga$xf$1),
+        .xf$2(ga$xf$2),
+        .xi$0(ga$xi$0),
+        .xi$1(ga$xi$1),
+        .xi$2(ga$xi$2),
+        .off_x$0(ga$off_x$0),
+        .off_x$1(ga$off_x$1),
+        .off_x$2(ga$off_x$2),
+        .off_y$0(ga$off_y$0),
+        .off_y$1(ga$off_y$1),
+        .off_y$2(ga$off_y$2),
+        .dmaj$0(ga$dmaj$0),
+        .dmaj$1(ga$dmaj$1),
+        .dmaj$2(ga$dmaj$2),
+        .dmaj$3(ga$dmaj$3),
+        .dbot$0(ga$dbot$0),
+        .dbot$1(ga$dbot$1),
+        .dbot$2(ga$dbot$2),
+        .dbot$3(ga$dbot$3),
+        .attr0$0(ga$attr0$0),
+        .attr0$1(ga$attr0$1),
+        .attr0$2(ga$attr0$2),
+        .attr0$3(ga$attr0$3)
+    );
+    triangle_setup$gb gb(
+        .vx$0(gb$vx$0),
+        .vx$1(gb$vx$1),
+        .vx$2(gb$vx$2),
+        .vy$0(gb$vy$0),
+        .vy$1(gb$vy$1),
+        .vy$2(gb$vy$2),
+        .vz$0(gb$vz$0),
+        .vz$1(gb$vz$1),
+        .vz$2(gb$vz$2),
+        .vc$0(gb$vc$0),
+        .vc$1(gb$vc$1),
+        .vc$2(gb$vc$2),
+        .vc$3(gb$vc$3),
+        .vc$4(gb$vc$4),
+        .vc$5(gb$vc$5),
+        .vc$6(gb$vc$6),
+        .vc$7(gb$vc$7),
+        .vc$8(gb$vc$8),
+        .crosses(gb$crosses),
+        .maj_left(gb$maj_left),
+        .start_x$0(gb$start_x$0),
+        .start_x$1(gb$start_x$1),
+        .start_x$2(gb$start_x$2),
+        .kdx$0(gb$kdx$0),
+        .kdx$1(gb$kdx$1),
+        .kdx$2(gb$kdx$2),
+        .kdy$0(gb$kdy$0),
+        .kdy$1(gb$kdy$1),
+        .kdy$2(gb$kdy$2),
+        .up(gb$up),
+        .edx$0(gb$edx$0),
+        .edx$1(gb$edx$1),
+        .edx$2(gb$edx$2),
+        .edy$0(gb$edy$0),
+        .edy$1(gb$edy$1),
+        .edy$2(gb$edy$2),
+        .edy_d$0(gb$edy_d$0),
+        .edy_d$1(gb$edy_d$1),
+        .edy_d$2(gb$edy_d$2),
+        .ed16$0(gb$ed16$0),
+        .ed16$1(gb$ed16$1),
+        .ed16$2(gb$ed16$2),
+        .cy$0(gb$cy$0),
+        .cy$1(gb$cy$1),
+        .cy$2(gb$cy$2),
+        .count$0(gb$count$0),
+        .count$1(gb$count$1),
+        .count$2(gb$count$2),
+        .toff$0(gb$toff$0),
+        .toff$1(gb$toff$1),
+        .toff$2(gb$toff$2),
+        .xf$0(gb$xf$0),
+        .xf$1(gb$xf$1),
+        .xf$2(gb$xf$2),
+        .xi$0(gb$xi$0),
+        .xi$1(gb$xi$1),
+        .xi$2(gb$xi$2),
+        .off_x$0(gb$off_x$0),
+        .off_x$1(gb$off_x$1),
+        .off_x$2(gb$off_x$2),
+        .off_y$0(gb$off_y$0),
+        .off_y$1(gb$off_y$1),
+        .off_y$2(gb$off_y$2),
+        .dmaj$0(gb$dmaj$0),
+        .dmaj$1(gb$dmaj$1),
+        .dmaj$2(gb$dmaj$2),
+        .dmaj$3(gb$dmaj$3),
+        .dbot$0(gb$dbot$0),
+        .dbot$1(gb$dbot$1),
+        .dbot$2(gb$dbot$2),
+        .dbot$3(gb$dbot$3),
+        .attr0$0(gb$attr0$0),
+        .attr0$1(gb$attr0$1),
+        .attr0$2(gb$attr0$2),
+        .attr0$3(gb$attr0$3)
     );
     triangle_setup$area area(
         .d(area$d),
@@ -1322,13 +1833,19 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     
     // Update code
     always @(*) begin
-        t$clock = clock;
+        ta$clock = clock;
+        tb$clock = clock;
         crosses$clock = clock;
+        crosses_b$clock = clock;
+        maj_left_b$clock = clock;
         area$clock = clock;
         exp$clock = clock;
         mant$clock = clock;
-        t$d = t$q;
+        ta$d = ta$q;
+        tb$d = tb$q;
         crosses$d = crosses$q;
+        crosses_b$d = crosses_b$q;
+        maj_left_b$d = maj_left_b$q;
         area$d = area$q;
         exp$d = exp$q;
         mant$d = mant$q;
@@ -1339,6 +1856,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         vy$0$d = vy$0$q;
         vz$0$clock = clock;
         vz$0$d = vz$0$q;
+        vx_b$0$clock = clock;
+        vx_b$0$d = vx_b$0$q;
+        vy_b$0$clock = clock;
+        vy_b$0$d = vy_b$0$q;
+        vz_b$0$clock = clock;
+        vz_b$0$d = vz_b$0$q;
         x$0$clock = clock;
         x$0$d = x$0$q;
         r$0$clock = clock;
@@ -1354,6 +1877,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         vy$1$d = vy$1$q;
         vz$1$clock = clock;
         vz$1$d = vz$1$q;
+        vx_b$1$clock = clock;
+        vx_b$1$d = vx_b$1$q;
+        vy_b$1$clock = clock;
+        vy_b$1$d = vy_b$1$q;
+        vz_b$1$clock = clock;
+        vz_b$1$d = vz_b$1$q;
         x$1$clock = clock;
         x$1$d = x$1$q;
         r$1$clock = clock;
@@ -1369,6 +1898,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         vy$2$d = vy$2$q;
         vz$2$clock = clock;
         vz$2$d = vz$2$q;
+        vx_b$2$clock = clock;
+        vx_b$2$d = vx_b$2$q;
+        vy_b$2$clock = clock;
+        vy_b$2$d = vy_b$2$q;
+        vz_b$2$clock = clock;
+        vz_b$2$d = vz_b$2$q;
         x$2$clock = clock;
         x$2$d = x$2$q;
         r$2$clock = clock;
@@ -1380,22 +1915,40 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         num$2$clock = clock;
         vc$0$clock = clock;
         vc$0$d = vc$0$q;
+        vc_b$0$clock = clock;
+        vc_b$0$d = vc_b$0$q;
         vc$1$clock = clock;
         vc$1$d = vc$1$q;
+        vc_b$1$clock = clock;
+        vc_b$1$d = vc_b$1$q;
         vc$2$clock = clock;
         vc$2$d = vc$2$q;
+        vc_b$2$clock = clock;
+        vc_b$2$d = vc_b$2$q;
         vc$3$clock = clock;
         vc$3$d = vc$3$q;
+        vc_b$3$clock = clock;
+        vc_b$3$d = vc_b$3$q;
         vc$4$clock = clock;
         vc$4$d = vc$4$q;
+        vc_b$4$clock = clock;
+        vc_b$4$d = vc_b$4$q;
         vc$5$clock = clock;
         vc$5$d = vc$5$q;
+        vc_b$5$clock = clock;
+        vc_b$5$d = vc_b$5$q;
         vc$6$clock = clock;
         vc$6$d = vc$6$q;
+        vc_b$6$clock = clock;
+        vc_b$6$d = vc_b$6$q;
         vc$7$clock = clock;
         vc$7$d = vc$7$q;
+        vc_b$7$clock = clock;
+        vc_b$7$d = vc_b$7$q;
         vc$8$clock = clock;
         vc$8$d = vc$8$q;
+        vc_b$8$clock = clock;
+        vc_b$8$d = vc_b$8$q;
         p$0$clock = clock;
         p$0$d = p$0$q;
         gx$0$clock = clock;
@@ -1472,17 +2025,50 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         inc0$11$d = inc0$11$q;
         inc1$11$clock = clock;
         inc1$11$d = inc1$11$q;
-        inp$ready = (t$q == 32'h0) | ((t$q == last) & out$ready);
+        maj_left = area$q[area_msb];
+        run = ~((tb$q == last) & ~out$ready);
+        out$valid = tb$q == last;
+        inp$ready = run & ((ta$q == 32'h0) | (ta$q == interval));
         take = inp$valid & inp$ready;
-        out$valid = t$q == last;
-        if ((t$q != 32'h0) & (t$q != last)) begin
-            t$d = t$q + 32'h1;
-        end
-        if ((t$q == last) & out$ready) begin
-            t$d = 32'h0;
+        if (run) begin
+            if (ta$q != 32'h0) begin
+                ta$d = ta$q + 32'h1;
+            end
+            if (ta$q == interval) begin
+                ta$d = 32'h0;
+            end
+            if (tb$q != 32'h0) begin
+                tb$d = tb$q + 32'h1;
+            end
+            if (tb$q == last) begin
+                tb$d = 32'h0;
+            end
+            if (ta$q == interval) begin
+                tb$d = after_interval;
+                crosses_b$d = crosses$q;
+                maj_left_b$d = maj_left;
+                vx_b$0$d = vx$0$q;
+                vy_b$0$d = vy$0$q;
+                vz_b$0$d = vz$0$q;
+                vx_b$1$d = vx$1$q;
+                vy_b$1$d = vy$1$q;
+                vz_b$1$d = vz$1$q;
+                vx_b$2$d = vx$2$q;
+                vy_b$2$d = vy$2$q;
+                vz_b$2$d = vz$2$q;
+                vc_b$0$d = vc$0$q;
+                vc_b$1$d = vc$1$q;
+                vc_b$2$d = vc$2$q;
+                vc_b$3$d = vc$3$q;
+                vc_b$4$d = vc$4$q;
+                vc_b$5$d = vc$5$q;
+                vc_b$6$d = vc$6$q;
+                vc_b$7$d = vc$7$q;
+                vc_b$8$d = vc$8$q;
+            end
         end
         if (take) begin
-            t$d = 32'h1;
+            ta$d = 32'h1;
             vx$0$d = inp$v0_x;
             vy$0$d = inp$v0_y;
             vz$0$d = inp$v0_z;
@@ -1503,237 +2089,116 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             vc$8$d = inp$v2_c2;
             crosses$d = inp$crosses;
         end
-        act$0 = t$q == cyc$0;
-        act$1 = t$q == cyc$1;
-        act$2 = t$q == cyc$2;
-        act$3 = t$q == cyc$3;
-        act$4 = t$q == cyc$4;
-        act$5 = t$q == cyc$5;
-        act$6 = t$q == cyc$6;
-        act$7 = t$q == cyc$7;
-        act$8 = t$q == cyc$8;
-        act$9 = t$q == cyc$9;
-        act$10 = t$q == cyc$10;
-        act$11 = t$q == cyc$11;
-        act$12 = t$q == cyc$12;
-        act$13 = t$q == cyc$13;
-        act$14 = t$q == cyc$14;
-        act$15 = t$q == cyc$15;
-        act$16 = t$q == cyc$16;
-        act$17 = t$q == cyc$17;
-        act$18 = t$q == cyc$18;
-        act$19 = t$q == cyc$19;
-        act$20 = t$q == cyc$20;
-        act$21 = t$q == cyc$21;
-        act$22 = t$q == cyc$22;
-        act$23 = t$q == cyc$23;
-        act$24 = t$q == cyc$24;
-        act$25 = t$q == cyc$25;
-        act$26 = t$q == cyc$26;
-        act$27 = t$q == cyc$27;
-        act$28 = t$q == cyc$28;
-        act$29 = t$q == cyc$29;
-        act$30 = t$q == cyc$30;
-        act$31 = t$q == cyc$31;
-        act$32 = t$q == cyc$32;
-        act$33 = t$q == cyc$33;
-        act$34 = t$q == cyc$34;
-        act$35 = t$q == cyc$35;
-        act$36 = t$q == cyc$36;
-        act$37 = t$q == cyc$37;
-        act$38 = t$q == cyc$38;
-        act$39 = t$q == cyc$39;
-        act$40 = t$q == cyc$40;
-        act$41 = t$q == cyc$41;
-        act$42 = t$q == cyc$42;
-        act$43 = t$q == cyc$43;
-        act$44 = t$q == cyc$44;
-        act$45 = t$q == cyc$45;
-        act$46 = t$q == cyc$46;
-        act$47 = t$q == cyc$47;
-        act$48 = t$q == cyc$48;
-        act$49 = t$q == cyc$49;
-        act$50 = t$q == cyc$50;
-        act$51 = t$q == cyc$51;
-        act$52 = t$q == cyc$52;
-        act$53 = t$q == cyc$53;
-        act$54 = t$q == cyc$54;
-        act$55 = t$q == cyc$55;
-        act$56 = t$q == cyc$56;
-        act$57 = t$q == cyc$57;
-        act$58 = t$q == cyc$58;
-        act$59 = t$q == cyc$59;
-        act$60 = t$q == cyc$60;
-        act$61 = t$q == cyc$61;
-        act$62 = t$q == cyc$62;
-        act$63 = t$q == cyc$63;
-        xw$0 = ((vx$0$q) & 58'h3ffffffffffffff);
-        if (vx$0$q[xy_msb]) begin
-            xw$0 = ((vx$0$q) & 58'h3ffffffffffffff) | xy_ext;
-        end
-        xw$1 = ((vx$1$q) & 58'h3ffffffffffffff);
-        if (vx$1$q[xy_msb]) begin
-            xw$1 = ((vx$1$q) & 58'h3ffffffffffffff) | xy_ext;
-        end
-        xw$2 = ((vx$2$q) & 58'h3ffffffffffffff);
-        if (vx$2$q[xy_msb]) begin
-            xw$2 = ((vx$2$q) & 58'h3ffffffffffffff) | xy_ext;
-        end
-        yw$0 = ((vy$0$q) & 57'h1ffffffffffffff);
-        if (vy$0$q[xy_msb]) begin
-            yw$0 = ((vy$0$q) & 57'h1ffffffffffffff) | y_ext;
-        end
-        yw$1 = ((vy$1$q) & 57'h1ffffffffffffff);
-        if (vy$1$q[xy_msb]) begin
-            yw$1 = ((vy$1$q) & 57'h1ffffffffffffff) | y_ext;
-        end
-        yw$2 = ((vy$2$q) & 57'h1ffffffffffffff);
-        if (vy$2$q[xy_msb]) begin
-            yw$2 = ((vy$2$q) & 57'h1ffffffffffffff) | y_ext;
-        end
-        zn$0 = ((vz$0$q) & 19'h7ffff);
-        if (vz$0$q[z_msb]) begin
-            zn$0 = ((vz$0$q) & 19'h7ffff) | z_ext;
-        end
-        zn$1 = ((vz$1$q) & 19'h7ffff);
-        if (vz$1$q[z_msb]) begin
-            zn$1 = ((vz$1$q) & 19'h7ffff) | z_ext;
-        end
-        zn$2 = ((vz$2$q) & 19'h7ffff);
-        if (vz$2$q[z_msb]) begin
-            zn$2 = ((vz$2$q) & 19'h7ffff) | z_ext;
-        end
-        cn$0 = ((vc$0$q) & 19'h7ffff);
-        cn$1 = ((vc$1$q) & 19'h7ffff);
-        cn$2 = ((vc$2$q) & 19'h7ffff);
-        cn$3 = ((vc$3$q) & 19'h7ffff);
-        cn$4 = ((vc$4$q) & 19'h7ffff);
-        cn$5 = ((vc$5$q) & 19'h7ffff);
-        cn$6 = ((vc$6$q) & 19'h7ffff);
-        cn$7 = ((vc$7$q) & 19'h7ffff);
-        cn$8 = ((vc$8$q) & 19'h7ffff);
-        xn$0 = xw$0[(32'h0)+:(19)];
-        yn$0 = yw$0[(32'h0)+:(19)];
-        cv$0 = ((yn$0 + half_m1) & int_mask) | half;
-        xn$1 = xw$1[(32'h0)+:(19)];
-        yn$1 = yw$1[(32'h0)+:(19)];
-        cv$1 = ((yn$1 + half_m1) & int_mask) | half;
-        xn$2 = xw$2[(32'h0)+:(19)];
-        yn$2 = yw$2[(32'h0)+:(19)];
-        cv$2 = ((yn$2 + half_m1) & int_mask) | half;
-        kdx$0 = xw$2 - xw$0;
-        kdy$0 = yw$2 - yw$0;
-        diff$0 = cv$2 - cv$0;
-        kdx$1 = xw$1 - xw$0;
-        kdy$1 = yw$1 - yw$0;
-        diff$1 = cv$1 - cv$0;
-        kdx$2 = xw$2 - xw$1;
-        kdy$2 = yw$2 - yw$1;
-        diff$2 = cv$2 - cv$1;
-        span$0 = diff$0[(frac)+:(13)];
-        if (diff$0[nb_msb]) begin
-            span$0 = 32'h0;
-        end
-        span$1 = diff$1[(frac)+:(13)];
-        if (diff$1[nb_msb]) begin
-            span$1 = 32'h0;
-        end
-        span$2 = diff$2[(frac)+:(13)];
-        if (diff$2[nb_msb]) begin
-            span$2 = 32'h0;
-        end
-        up = crosses$q[top_bit] & ~crosses$q[bottom_bit];
-        maj_left = area$q[area_msb];
-        edx$0 = kdx$0;
-        edy$0 = kdy$0;
-        count$0 = span$0;
-        edx$1 = kdx$1;
-        edy$1 = kdy$1;
-        count$1 = span$1;
-        edx$2 = kdx$2;
-        edy$2 = kdy$2;
-        count$2 = span$2;
-        bx$0 = xn$0;
-        by$0 = yn$0;
-        cy$0 = cv$0;
-        bx$1 = xn$0;
-        by$1 = yn$0;
-        cy$1 = cv$0;
-        bx$2 = xn$1;
-        by$2 = yn$1;
-        cy$2 = cv$1;
-        if (up) begin
-            edx$1 = kdx$2;
-            edy$1 = kdy$2;
-            count$1 = span$2;
-            edx$2 = kdx$1;
-            edy$2 = kdy$1;
-            count$2 = span$1;
-            bx$0 = xn$2;
-            by$0 = yn$2;
-            cy$0 = cv$2 - (frac_mask + 32'h1);
-            bx$1 = xn$2;
-            by$1 = yn$2;
-            cy$1 = cv$2 - (frac_mask + 32'h1);
-            cy$2 = cv$1 - (frac_mask + 32'h1);
-        end
-        edy_d$0 = ((edy$0) & 34'h3ffffffff);
-        edy_d$1 = ((edy$1) & 34'h3ffffffff);
-        edy_d$2 = ((edy$2) & 34'h3ffffffff);
-        tracked$0 = x$0$q - 32'h1;
-        if (maj_left) begin
-            tracked$0 = x$0$q;
-        end
-        tracked$1 = x$1$q;
-        if (maj_left) begin
-            tracked$1 = x$1$q - 32'h1;
-        end
-        tracked$2 = x$2$q;
-        if (maj_left) begin
-            tracked$2 = x$2$q - 32'h1;
-        end
-        ed16$0 = edy_d$0 << frac;
-        toff$0 = cy$0 - by$0;
-        xb$0 = bx$0 - half;
-        xf$0 = xb$0 & frac_mask;
-        xi$0 = xb$0 >> frac;
-        if (xb$0[nb_msb]) begin
-            xi$0 = (xb$0 >> frac) | shr_ext;
-        end
-        off_y$0 = cy$0 - yn$0;
-        off_x$0 = (tracked$0 << frac) + half - xn$0;
-        ed16$1 = edy_d$1 << frac;
-        toff$1 = cy$1 - by$1;
-        xb$1 = bx$1 - half;
-        xf$1 = xb$1 & frac_mask;
-        xi$1 = xb$1 >> frac;
-        if (xb$1[nb_msb]) begin
-            xi$1 = (xb$1 >> frac) | shr_ext;
-        end
-        off_y$1 = cy$1 - yn$0;
-        off_x$1 = (tracked$1 << frac) + half - xn$0;
-        ed16$2 = edy_d$2 << frac;
-        toff$2 = cy$2 - by$2;
-        xb$2 = bx$2 - half;
-        xf$2 = xb$2 & frac_mask;
-        xi$2 = xb$2 >> frac;
-        if (xb$2[nb_msb]) begin
-            xi$2 = (xb$2 >> frac) | shr_ext;
-        end
-        off_y$2 = cy$2 - yn$0;
-        off_x$2 = (tracked$2 << frac) + half - xn$0;
-        dmaj$0 = zn$2 - zn$0;
-        dbot$0 = zn$1 - zn$0;
-        attr0$0 = ((zn$0) & 40'hffffffffff);
-        attr0$1 = ((vc$0$q) & 40'hffffffffff);
-        attr0$2 = ((vc$1$q) & 40'hffffffffff);
-        attr0$3 = ((vc$2$q) & 40'hffffffffff);
-        dmaj$1 = cn$6 - cn$0;
-        dbot$1 = cn$3 - cn$0;
-        dmaj$2 = cn$7 - cn$1;
-        dbot$2 = cn$4 - cn$1;
-        dmaj$3 = cn$8 - cn$2;
-        dbot$3 = cn$5 - cn$2;
+        act$0 = run & ((ta$q == cyc$0) | (tb$q == cyc$0));
+        act$1 = run & ((ta$q == cyc$1) | (tb$q == cyc$1));
+        act$2 = run & ((ta$q == cyc$2) | (tb$q == cyc$2));
+        act$3 = run & ((ta$q == cyc$3) | (tb$q == cyc$3));
+        act$4 = run & ((ta$q == cyc$4) | (tb$q == cyc$4));
+        act$5 = run & ((ta$q == cyc$5) | (tb$q == cyc$5));
+        act$6 = run & ((ta$q == cyc$6) | (tb$q == cyc$6));
+        act$7 = run & ((ta$q == cyc$7) | (tb$q == cyc$7));
+        act$8 = run & ((ta$q == cyc$8) | (tb$q == cyc$8));
+        act$9 = run & ((ta$q == cyc$9) | (tb$q == cyc$9));
+        act$10 = run & ((ta$q == cyc$10) | (tb$q == cyc$10));
+        act$11 = run & ((ta$q == cyc$11) | (tb$q == cyc$11));
+        act$12 = run & ((ta$q == cyc$12) | (tb$q == cyc$12));
+        act$13 = run & ((ta$q == cyc$13) | (tb$q == cyc$13));
+        act$14 = run & ((ta$q == cyc$14) | (tb$q == cyc$14));
+        act$15 = run & ((ta$q == cyc$15) | (tb$q == cyc$15));
+        act$16 = run & ((ta$q == cyc$16) | (tb$q == cyc$16));
+        act$17 = run & ((ta$q == cyc$17) | (tb$q == cyc$17));
+        act$18 = run & ((ta$q == cyc$18) | (tb$q == cyc$18));
+        act$19 = run & ((ta$q == cyc$19) | (tb$q == cyc$19));
+        act$20 = run & ((ta$q == cyc$20) | (tb$q == cyc$20));
+        act$21 = run & ((ta$q == cyc$21) | (tb$q == cyc$21));
+        act$22 = run & ((ta$q == cyc$22) | (tb$q == cyc$22));
+        act$23 = run & ((ta$q == cyc$23) | (tb$q == cyc$23));
+        act$24 = run & ((ta$q == cyc$24) | (tb$q == cyc$24));
+        act$25 = run & ((ta$q == cyc$25) | (tb$q == cyc$25));
+        act$26 = run & ((ta$q == cyc$26) | (tb$q == cyc$26));
+        act$27 = run & ((ta$q == cyc$27) | (tb$q == cyc$27));
+        act$28 = run & ((ta$q == cyc$28) | (tb$q == cyc$28));
+        act$29 = run & ((ta$q == cyc$29) | (tb$q == cyc$29));
+        act$30 = run & ((ta$q == cyc$30) | (tb$q == cyc$30));
+        act$31 = run & ((ta$q == cyc$31) | (tb$q == cyc$31));
+        act$32 = run & ((ta$q == cyc$32) | (tb$q == cyc$32));
+        act$33 = run & ((ta$q == cyc$33) | (tb$q == cyc$33));
+        act$34 = run & ((ta$q == cyc$34) | (tb$q == cyc$34));
+        act$35 = run & ((ta$q == cyc$35) | (tb$q == cyc$35));
+        act$36 = run & ((ta$q == cyc$36) | (tb$q == cyc$36));
+        act$37 = run & ((ta$q == cyc$37) | (tb$q == cyc$37));
+        act$38 = run & ((ta$q == cyc$38) | (tb$q == cyc$38));
+        act$39 = run & ((ta$q == cyc$39) | (tb$q == cyc$39));
+        act$40 = run & ((ta$q == cyc$40) | (tb$q == cyc$40));
+        act$41 = run & ((ta$q == cyc$41) | (tb$q == cyc$41));
+        act$42 = run & ((ta$q == cyc$42) | (tb$q == cyc$42));
+        act$43 = run & ((ta$q == cyc$43) | (tb$q == cyc$43));
+        act$44 = run & ((ta$q == cyc$44) | (tb$q == cyc$44));
+        act$45 = run & ((ta$q == cyc$45) | (tb$q == cyc$45));
+        act$46 = run & ((ta$q == cyc$46) | (tb$q == cyc$46));
+        act$47 = run & ((ta$q == cyc$47) | (tb$q == cyc$47));
+        act$48 = run & ((ta$q == cyc$48) | (tb$q == cyc$48));
+        act$49 = run & ((ta$q == cyc$49) | (tb$q == cyc$49));
+        act$50 = run & ((ta$q == cyc$50) | (tb$q == cyc$50));
+        act$51 = run & ((ta$q == cyc$51) | (tb$q == cyc$51));
+        act$52 = run & ((ta$q == cyc$52) | (tb$q == cyc$52));
+        act$53 = run & ((ta$q == cyc$53) | (tb$q == cyc$53));
+        act$54 = run & ((ta$q == cyc$54) | (tb$q == cyc$54));
+        act$55 = run & ((ta$q == cyc$55) | (tb$q == cyc$55));
+        act$56 = run & ((ta$q == cyc$56) | (tb$q == cyc$56));
+        act$57 = run & ((ta$q == cyc$57) | (tb$q == cyc$57));
+        act$58 = run & ((ta$q == cyc$58) | (tb$q == cyc$58));
+        act$59 = run & ((ta$q == cyc$59) | (tb$q == cyc$59));
+        act$60 = run & ((ta$q == cyc$60) | (tb$q == cyc$60));
+        act$61 = run & ((ta$q == cyc$61) | (tb$q == cyc$61));
+        act$62 = run & ((ta$q == cyc$62) | (tb$q == cyc$62));
+        act$63 = run & ((ta$q == cyc$63) | (tb$q == cyc$63));
+        ga$vx$0 = vx$0$q;
+        ga$vy$0 = vy$0$q;
+        ga$vz$0 = vz$0$q;
+        ga$start_x$0 = x$0$q;
+        gb$vx$0 = vx_b$0$q;
+        gb$vy$0 = vy_b$0$q;
+        gb$vz$0 = vz_b$0$q;
+        gb$start_x$0 = x$0$q;
+        ga$vx$1 = vx$1$q;
+        ga$vy$1 = vy$1$q;
+        ga$vz$1 = vz$1$q;
+        ga$start_x$1 = x$1$q;
+        gb$vx$1 = vx_b$1$q;
+        gb$vy$1 = vy_b$1$q;
+        gb$vz$1 = vz_b$1$q;
+        gb$start_x$1 = x$1$q;
+        ga$vx$2 = vx$2$q;
+        ga$vy$2 = vy$2$q;
+        ga$vz$2 = vz$2$q;
+        ga$start_x$2 = x$2$q;
+        gb$vx$2 = vx_b$2$q;
+        gb$vy$2 = vy_b$2$q;
+        gb$vz$2 = vz_b$2$q;
+        gb$start_x$2 = x$2$q;
+        ga$vc$0 = vc$0$q;
+        gb$vc$0 = vc_b$0$q;
+        ga$vc$1 = vc$1$q;
+        gb$vc$1 = vc_b$1$q;
+        ga$vc$2 = vc$2$q;
+        gb$vc$2 = vc_b$2$q;
+        ga$vc$3 = vc$3$q;
+        gb$vc$3 = vc_b$3$q;
+        ga$vc$4 = vc$4$q;
+        gb$vc$4 = vc_b$4$q;
+        ga$vc$5 = vc$5$q;
+        gb$vc$5 = vc_b$5$q;
+        ga$vc$6 = vc$6$q;
+        gb$vc$6 = vc_b$6$q;
+        ga$vc$7 = vc$7$q;
+        gb$vc$7 = vc_b$7$q;
+        ga$vc$8 = vc$8$q;
+        gb$vc$8 = vc_b$8$q;
+        ga$crosses = crosses$q;
+        ga$maj_left = maj_left;
+        gb$crosses = crosses_b$q;
+        gb$maj_left = maj_left_b$q;
         area_abs = area$q;
         if (area$q[area_msb]) begin
             area_abs = ((32'h0) & 34'h3ffffffff) - area$q;
@@ -1842,58 +2307,74 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             exp_c = 33;
         end
         norm_d = area_abs << (recip_top - exp_c);
-        if (t$q == iss$0) begin
+        at_iss$0 = run & (ta$q == iss$0);
+        at_res$0 = run & ((ta$q == res$0) | (tb$q == res$0));
+        at_iss$1 = run & (ta$q == iss$1);
+        at_res$1 = run & ((ta$q == res$1) | (tb$q == res$1));
+        at_iss$2 = run & (ta$q == iss$2);
+        at_res$2 = run & ((ta$q == res$2) | (tb$q == res$2));
+        at_iss$3 = run & (ta$q == iss$3);
+        at_res$3 = run & ((ta$q == res$3) | (tb$q == res$3));
+        at_iss$4 = run & (ta$q == iss$4);
+        at_res$4 = run & ((ta$q == res$4) | (tb$q == res$4));
+        at_iss$5 = run & (ta$q == iss$5);
+        at_res$5 = run & ((ta$q == res$5) | (tb$q == res$5));
+        at_iss$6 = run & (ta$q == iss$6);
+        at_res$6 = run & ((ta$q == res$6) | (tb$q == res$6));
+        at_handover = run & (tb$q == handover);
+        if (at_iss$0) begin
             exp$d = exp_c;
         end
         div$out_ready = 1'b1;
+        div$hold = ~run;
         div$inp_valid = 1'b0;
         div$inp_n = 32'h0;
         div$inp_d = 32'h1;
-        if (t$q == iss$0) begin
+        if (at_iss$0) begin
             div$inp_valid = 1'b1;
             div$inp_n = recip_n;
             div$inp_d = norm_d;
         end
-        if (t$q == iss$1) begin
+        if (at_iss$1) begin
             div$inp_valid = 1'b1;
-            if (count$0 != 32'h0) begin
+            if (ga$count$0 != 32'h0) begin
                 div$inp_n = num$0$q[(32'h0)+:(58)];
-                div$inp_d = ed16$0;
+                div$inp_d = ga$ed16$0;
             end
         end
-        if (t$q == iss$2) begin
+        if (at_iss$2) begin
             div$inp_valid = 1'b1;
-            if (count$0 > 32'h1) begin
-                div$inp_n = edx$0[(32'h0)+:(58)];
-                div$inp_d = edy_d$0;
+            if (ga$count$0 > 32'h1) begin
+                div$inp_n = ga$edx$0[(32'h0)+:(58)];
+                div$inp_d = ga$edy_d$0;
             end
         end
-        if (t$q == iss$3) begin
+        if (at_iss$3) begin
             div$inp_valid = 1'b1;
-            if (count$1 != 32'h0) begin
+            if (ga$count$1 != 32'h0) begin
                 div$inp_n = num$1$q[(32'h0)+:(58)];
-                div$inp_d = ed16$1;
+                div$inp_d = ga$ed16$1;
             end
         end
-        if (t$q == iss$4) begin
+        if (at_iss$4) begin
             div$inp_valid = 1'b1;
-            if (count$1 > 32'h1) begin
-                div$inp_n = edx$1[(32'h0)+:(58)];
-                div$inp_d = edy_d$1;
+            if (ga$count$1 > 32'h1) begin
+                div$inp_n = ga$edx$1[(32'h0)+:(58)];
+                div$inp_d = ga$edy_d$1;
             end
         end
-        if (t$q == iss$5) begin
+        if (at_iss$5) begin
             div$inp_valid = 1'b1;
-            if (count$2 != 32'h0) begin
+            if (ga$count$2 != 32'h0) begin
                 div$inp_n = num$2$q[(32'h0)+:(58)];
-                div$inp_d = ed16$2;
+                div$inp_d = ga$ed16$2;
             end
         end
-        if (t$q == iss$6) begin
+        if (at_iss$6) begin
             div$inp_valid = 1'b1;
-            if (count$2 > 32'h1) begin
-                div$inp_n = edx$2[(32'h0)+:(58)];
-                div$inp_d = edy_d$2;
+            if (ga$count$2 > 32'h1) begin
+                div$inp_n = ga$edx$2[(32'h0)+:(58)];
+                div$inp_d = ga$edy_d$2;
             end
         end
         q_n = ((div$out_q[(32'h0)+:(19)]) & 19'h7ffff);
@@ -1902,7 +2383,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         r_pos = div$out_r != 32'h0;
         mant_now = mant$q;
-        if (t$q == res$0) begin
+        if (at_res$0) begin
             mant_now = div$out_q[(32'h0)+:(25)];
             mant$d = div$out_q[(32'h0)+:(25)];
         end
@@ -1912,36 +2393,54 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (exp$q <= eq_shift) begin
             mant_a = ((mant_now) & 57'h1ffffffffffffff) << lsh;
         end
-        if (t$q == res$1) begin
+        xi$0 = ga$xi$0;
+        ed$0 = ga$ed16$0[(32'h0)+:(21)];
+        if (late_res$1) begin
+            xi$0 = gb$xi$0;
+            ed$0 = gb$ed16$0[(32'h0)+:(21)];
+        end
+        if (at_res$1) begin
             x$0$d = xi$0 + q_n + r_pos;
             r$0$d = 32'h0;
             if (r_pos) begin
-                r$0$d = ed16$0[(32'h0)+:(21)] - div$out_r[(32'h0)+:(21)];
+                r$0$d = ed$0 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (t$q == res$2) begin
+        if (at_res$2) begin
             q$0$d = q_n;
             rho$0$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (t$q == res$3) begin
+        xi$1 = ga$xi$1;
+        ed$1 = ga$ed16$1[(32'h0)+:(21)];
+        if (late_res$3) begin
+            xi$1 = gb$xi$1;
+            ed$1 = gb$ed16$1[(32'h0)+:(21)];
+        end
+        if (at_res$3) begin
             x$1$d = xi$1 + q_n + r_pos;
             r$1$d = 32'h0;
             if (r_pos) begin
-                r$1$d = ed16$1[(32'h0)+:(21)] - div$out_r[(32'h0)+:(21)];
+                r$1$d = ed$1 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (t$q == res$4) begin
+        if (at_res$4) begin
             q$1$d = q_n;
             rho$1$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (t$q == res$5) begin
+        xi$2 = ga$xi$2;
+        ed$2 = ga$ed16$2[(32'h0)+:(21)];
+        if (late_res$5) begin
+            xi$2 = gb$xi$2;
+            ed$2 = gb$ed16$2[(32'h0)+:(21)];
+        end
+        if (at_res$5) begin
             x$2$d = xi$2 + q_n + r_pos;
             r$2$d = 32'h0;
             if (r_pos) begin
-                r$2$d = ed16$2[(32'h0)+:(21)] - div$out_r[(32'h0)+:(21)];
+                r$2$d = ed$2 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (t$q == res$6) begin
+        if (at_res$6) begin
             q$2$d = q_n;
             rho$2$d = div$out_r[(32'h0)+:(21)] << frac;
         end
@@ -2023,25 +2522,221 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         ps$33 = 32'h0;
         ps$34 = 32'h0;
         ps$35 = 32'h0;
-        delta$0 = kdx$0[(32'h0)+:(19)];
-        delta$2 = kdy$0[(32'h0)+:(19)];
-        delta$1 = kdx$1[(32'h0)+:(19)];
-        delta$3 = kdy$1[(32'h0)+:(19)];
+        delta$0 = ga$kdx$0[(32'h0)+:(19)];
+        delta$2 = ga$kdy$0[(32'h0)+:(19)];
+        delta$4 = gb$kdx$0[(32'h0)+:(19)];
+        delta$6 = gb$kdy$0[(32'h0)+:(19)];
+        delta$1 = ga$kdx$1[(32'h0)+:(19)];
+        delta$3 = ga$kdy$1[(32'h0)+:(19)];
+        delta$5 = gb$kdx$1[(32'h0)+:(19)];
+        delta$7 = gb$kdy$1[(32'h0)+:(19)];
         eq_b$0 = delta$0;
         if (maj_left) begin
             eq_b$0 = ((32'h0) & 19'h7ffff) - delta$0;
+        end
+        eq_b$4 = delta$4;
+        if (maj_left_b$q) begin
+            eq_b$4 = ((32'h0) & 19'h7ffff) - delta$4;
         end
         eq_b$1 = delta$1;
         if (maj_left) begin
             eq_b$1 = ((32'h0) & 19'h7ffff) - delta$1;
         end
+        eq_b$5 = delta$5;
+        if (maj_left_b$q) begin
+            eq_b$5 = ((32'h0) & 19'h7ffff) - delta$5;
+        end
         eq_b$2 = delta$2;
         if (maj_left) begin
             eq_b$2 = ((32'h0) & 19'h7ffff) - delta$2;
         end
+        eq_b$6 = delta$6;
+        if (maj_left_b$q) begin
+            eq_b$6 = ((32'h0) & 19'h7ffff) - delta$6;
+        end
         eq_b$3 = delta$3;
         if (maj_left) begin
             eq_b$3 = ((32'h0) & 19'h7ffff) - delta$3;
+        end
+        eq_b$7 = delta$7;
+        if (maj_left_b$q) begin
+            eq_b$7 = ((32'h0) & 19'h7ffff) - delta$7;
+        end
+        op_e$0 = eq_b$0;
+        if (late$8) begin
+            op_e$0 = eq_b$4;
+        end
+        op_e$1 = eq_b$1;
+        if (late$9) begin
+            op_e$1 = eq_b$5;
+        end
+        op_e$2 = eq_b$2;
+        if (late$10) begin
+            op_e$2 = eq_b$6;
+        end
+        op_e$3 = eq_b$3;
+        if (late$11) begin
+            op_e$3 = eq_b$7;
+        end
+        op_g$0 = ga$dmaj$0;
+        if (late$12) begin
+            op_g$0 = gb$dmaj$0;
+        end
+        op_g$1 = ga$dbot$0;
+        if (late$13) begin
+            op_g$1 = gb$dbot$0;
+        end
+        op_g$2 = ga$dbot$0;
+        if (late$14) begin
+            op_g$2 = gb$dbot$0;
+        end
+        op_g$3 = ga$dmaj$0;
+        if (late$15) begin
+            op_g$3 = gb$dmaj$0;
+        end
+        op_g$4 = ga$dmaj$1;
+        if (late$16) begin
+            op_g$4 = gb$dmaj$1;
+        end
+        op_g$5 = ga$dbot$1;
+        if (late$17) begin
+            op_g$5 = gb$dbot$1;
+        end
+        op_g$6 = ga$dbot$1;
+        if (late$18) begin
+            op_g$6 = gb$dbot$1;
+        end
+        op_g$7 = ga$dmaj$1;
+        if (late$19) begin
+            op_g$7 = gb$dmaj$1;
+        end
+        op_g$8 = ga$dmaj$2;
+        if (late$20) begin
+            op_g$8 = gb$dmaj$2;
+        end
+        op_g$9 = ga$dbot$2;
+        if (late$21) begin
+            op_g$9 = gb$dbot$2;
+        end
+        op_g$10 = ga$dbot$2;
+        if (late$22) begin
+            op_g$10 = gb$dbot$2;
+        end
+        op_g$11 = ga$dmaj$2;
+        if (late$23) begin
+            op_g$11 = gb$dmaj$2;
+        end
+        op_g$12 = ga$dmaj$3;
+        if (late$24) begin
+            op_g$12 = gb$dmaj$3;
+        end
+        op_g$13 = ga$dbot$3;
+        if (late$25) begin
+            op_g$13 = gb$dbot$3;
+        end
+        op_g$14 = ga$dbot$3;
+        if (late$26) begin
+            op_g$14 = gb$dbot$3;
+        end
+        op_g$15 = ga$dmaj$3;
+        if (late$27) begin
+            op_g$15 = gb$dmaj$3;
+        end
+        op_s$0 = ga$off_x$0;
+        if (late$28) begin
+            op_s$0 = gb$off_x$0;
+        end
+        op_s$1 = ga$off_y$0;
+        if (late$29) begin
+            op_s$1 = gb$off_y$0;
+        end
+        op_s$2 = ga$off_x$0;
+        if (late$31) begin
+            op_s$2 = gb$off_x$0;
+        end
+        op_s$3 = ga$off_y$0;
+        if (late$32) begin
+            op_s$3 = gb$off_y$0;
+        end
+        op_s$4 = ga$off_x$0;
+        if (late$34) begin
+            op_s$4 = gb$off_x$0;
+        end
+        op_s$5 = ga$off_y$0;
+        if (late$35) begin
+            op_s$5 = gb$off_y$0;
+        end
+        op_s$6 = ga$off_x$0;
+        if (late$37) begin
+            op_s$6 = gb$off_x$0;
+        end
+        op_s$7 = ga$off_y$0;
+        if (late$38) begin
+            op_s$7 = gb$off_y$0;
+        end
+        op_s$8 = ga$off_x$1;
+        if (late$40) begin
+            op_s$8 = gb$off_x$1;
+        end
+        op_s$9 = ga$off_y$1;
+        if (late$41) begin
+            op_s$9 = gb$off_y$1;
+        end
+        op_s$10 = ga$off_x$1;
+        if (late$43) begin
+            op_s$10 = gb$off_x$1;
+        end
+        op_s$11 = ga$off_y$1;
+        if (late$44) begin
+            op_s$11 = gb$off_y$1;
+        end
+        op_s$12 = ga$off_x$1;
+        if (late$46) begin
+            op_s$12 = gb$off_x$1;
+        end
+        op_s$13 = ga$off_y$1;
+        if (late$47) begin
+            op_s$13 = gb$off_y$1;
+        end
+        op_s$14 = ga$off_x$1;
+        if (late$49) begin
+            op_s$14 = gb$off_x$1;
+        end
+        op_s$15 = ga$off_y$1;
+        if (late$50) begin
+            op_s$15 = gb$off_y$1;
+        end
+        op_s$16 = ga$off_x$2;
+        if (late$52) begin
+            op_s$16 = gb$off_x$2;
+        end
+        op_s$17 = ga$off_y$2;
+        if (late$53) begin
+            op_s$17 = gb$off_y$2;
+        end
+        op_s$18 = ga$off_x$2;
+        if (late$55) begin
+            op_s$18 = gb$off_x$2;
+        end
+        op_s$19 = ga$off_y$2;
+        if (late$56) begin
+            op_s$19 = gb$off_y$2;
+        end
+        op_s$20 = ga$off_x$2;
+        if (late$58) begin
+            op_s$20 = gb$off_x$2;
+        end
+        op_s$21 = ga$off_y$2;
+        if (late$59) begin
+            op_s$21 = gb$off_y$2;
+        end
+        op_s$22 = ga$off_x$2;
+        if (late$61) begin
+            op_s$22 = gb$off_x$2;
+        end
+        op_s$23 = ga$off_y$2;
+        if (late$62) begin
+            op_s$23 = gb$off_y$2;
         end
         ddx$0 = gx$0$q >> gsh$0;
         ddy$0 = gy$0$q >> gsh$0;
@@ -2052,153 +2747,153 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         ddx$3 = gx$3$q >> gsh$3;
         ddy$3 = gy$3$q >> gsh$3;
         if ((lane$0 == 0) & act$0) begin
-            mul$0$a = kdx$0[(32'h0)+:(57)];
-            mul$0$b = kdy$1[(32'h0)+:(19)];
+            mul$0$a = ga$kdx$0[(32'h0)+:(57)];
+            mul$0$b = ga$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$0$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 0) & act$1) begin
-            mul$0$a = kdx$1[(32'h0)+:(57)];
-            mul$0$b = kdy$0[(32'h0)+:(19)];
+            mul$0$a = ga$kdx$1[(32'h0)+:(57)];
+            mul$0$b = ga$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$0$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 0) & act$2) begin
-            mul$0$a = edy$0;
-            mul$0$b = xf$0;
+            mul$0$a = ga$edy$0;
+            mul$0$b = ga$xf$0;
             pn$0 = mul$0$p;
         end
         if ((lane$3 == 0) & act$3) begin
-            mul$0$a = edx$0[(32'h0)+:(57)];
-            mul$0$b = toff$0;
+            mul$0$a = ga$edx$0[(32'h0)+:(57)];
+            mul$0$b = ga$toff$0;
             pn$1 = mul$0$p;
         end
         if ((lane$4 == 0) & act$4) begin
-            mul$0$a = edy$1;
-            mul$0$b = xf$1;
+            mul$0$a = ga$edy$1;
+            mul$0$b = ga$xf$1;
             pn$2 = mul$0$p;
         end
         if ((lane$5 == 0) & act$5) begin
-            mul$0$a = edx$1[(32'h0)+:(57)];
-            mul$0$b = toff$1;
+            mul$0$a = ga$edx$1[(32'h0)+:(57)];
+            mul$0$b = ga$toff$1;
             pn$3 = mul$0$p;
         end
         if ((lane$6 == 0) & act$6) begin
-            mul$0$a = edy$2;
-            mul$0$b = xf$2;
+            mul$0$a = ga$edy$2;
+            mul$0$b = ga$xf$2;
             pn$4 = mul$0$p;
         end
         if ((lane$7 == 0) & act$7) begin
-            mul$0$a = edx$2[(32'h0)+:(57)];
-            mul$0$b = toff$2;
+            mul$0$a = ga$edx$2[(32'h0)+:(57)];
+            mul$0$b = ga$toff$2;
             pn$5 = mul$0$p;
         end
         if ((lane$8 == 0) & act$8) begin
             mul$0$a = mant_a;
-            mul$0$b = eq_b$0;
+            mul$0$b = op_e$0;
             pe$0 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$9 == 0) & act$9) begin
             mul$0$a = mant_a;
-            mul$0$b = eq_b$1;
+            mul$0$b = op_e$1;
             pe$1 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$10 == 0) & act$10) begin
             mul$0$a = mant_a;
-            mul$0$b = eq_b$2;
+            mul$0$b = op_e$2;
             pe$2 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$11 == 0) & act$11) begin
             mul$0$a = mant_a;
-            mul$0$b = eq_b$3;
+            mul$0$b = op_e$3;
             pe$3 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$12 == 0) & act$12) begin
             mul$0$a = p$3$q;
-            mul$0$b = dmaj$0;
+            mul$0$b = op_g$0;
             pg$0 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$13 == 0) & act$13) begin
             mul$0$a = p$2$q;
-            mul$0$b = dbot$0;
+            mul$0$b = op_g$1;
             pg$1 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$14 == 0) & act$14) begin
             mul$0$a = p$0$q;
-            mul$0$b = dbot$0;
+            mul$0$b = op_g$2;
             pg$2 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$15 == 0) & act$15) begin
             mul$0$a = p$1$q;
-            mul$0$b = dmaj$0;
+            mul$0$b = op_g$3;
             pg$3 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$16 == 0) & act$16) begin
             mul$0$a = p$3$q;
-            mul$0$b = dmaj$1;
+            mul$0$b = op_g$4;
             pg$4 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$17 == 0) & act$17) begin
             mul$0$a = p$2$q;
-            mul$0$b = dbot$1;
+            mul$0$b = op_g$5;
             pg$5 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$18 == 0) & act$18) begin
             mul$0$a = p$0$q;
-            mul$0$b = dbot$1;
+            mul$0$b = op_g$6;
             pg$6 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$19 == 0) & act$19) begin
             mul$0$a = p$1$q;
-            mul$0$b = dmaj$1;
+            mul$0$b = op_g$7;
             pg$7 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$20 == 0) & act$20) begin
             mul$0$a = p$3$q;
-            mul$0$b = dmaj$2;
+            mul$0$b = op_g$8;
             pg$8 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$21 == 0) & act$21) begin
             mul$0$a = p$2$q;
-            mul$0$b = dbot$2;
+            mul$0$b = op_g$9;
             pg$9 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$22 == 0) & act$22) begin
             mul$0$a = p$0$q;
-            mul$0$b = dbot$2;
+            mul$0$b = op_g$10;
             pg$10 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$23 == 0) & act$23) begin
             mul$0$a = p$1$q;
-            mul$0$b = dmaj$2;
+            mul$0$b = op_g$11;
             pg$11 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$24 == 0) & act$24) begin
             mul$0$a = p$3$q;
-            mul$0$b = dmaj$3;
+            mul$0$b = op_g$12;
             pg$12 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$25 == 0) & act$25) begin
             mul$0$a = p$2$q;
-            mul$0$b = dbot$3;
+            mul$0$b = op_g$13;
             pg$13 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$26 == 0) & act$26) begin
             mul$0$a = p$0$q;
-            mul$0$b = dbot$3;
+            mul$0$b = op_g$14;
             pg$14 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$27 == 0) & act$27) begin
             mul$0$a = p$1$q;
-            mul$0$b = dmaj$3;
+            mul$0$b = op_g$15;
             pg$15 = mul$0$p[(32'h0)+:(57)];
         end
         if ((lane$28 == 0) & act$28) begin
             mul$0$a = ddx$0;
-            mul$0$b = off_x$0;
+            mul$0$b = op_s$0;
             ps$0 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$29 == 0) & act$29) begin
             mul$0$a = ddy$0;
-            mul$0$b = off_y$0;
+            mul$0$b = op_s$1;
             ps$1 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$30 == 0) & act$30) begin
@@ -2208,12 +2903,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$31 == 0) & act$31) begin
             mul$0$a = ddx$1;
-            mul$0$b = off_x$0;
+            mul$0$b = op_s$2;
             ps$3 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$32 == 0) & act$32) begin
             mul$0$a = ddy$1;
-            mul$0$b = off_y$0;
+            mul$0$b = op_s$3;
             ps$4 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$33 == 0) & act$33) begin
@@ -2223,12 +2918,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$34 == 0) & act$34) begin
             mul$0$a = ddx$2;
-            mul$0$b = off_x$0;
+            mul$0$b = op_s$4;
             ps$6 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$35 == 0) & act$35) begin
             mul$0$a = ddy$2;
-            mul$0$b = off_y$0;
+            mul$0$b = op_s$5;
             ps$7 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$36 == 0) & act$36) begin
@@ -2238,12 +2933,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$37 == 0) & act$37) begin
             mul$0$a = ddx$3;
-            mul$0$b = off_x$0;
+            mul$0$b = op_s$6;
             ps$9 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$38 == 0) & act$38) begin
             mul$0$a = ddy$3;
-            mul$0$b = off_y$0;
+            mul$0$b = op_s$7;
             ps$10 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$39 == 0) & act$39) begin
@@ -2253,12 +2948,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$40 == 0) & act$40) begin
             mul$0$a = ddx$0;
-            mul$0$b = off_x$1;
+            mul$0$b = op_s$8;
             ps$12 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$41 == 0) & act$41) begin
             mul$0$a = ddy$0;
-            mul$0$b = off_y$1;
+            mul$0$b = op_s$9;
             ps$13 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$42 == 0) & act$42) begin
@@ -2268,12 +2963,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$43 == 0) & act$43) begin
             mul$0$a = ddx$1;
-            mul$0$b = off_x$1;
+            mul$0$b = op_s$10;
             ps$15 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$44 == 0) & act$44) begin
             mul$0$a = ddy$1;
-            mul$0$b = off_y$1;
+            mul$0$b = op_s$11;
             ps$16 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$45 == 0) & act$45) begin
@@ -2283,12 +2978,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$46 == 0) & act$46) begin
             mul$0$a = ddx$2;
-            mul$0$b = off_x$1;
+            mul$0$b = op_s$12;
             ps$18 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$47 == 0) & act$47) begin
             mul$0$a = ddy$2;
-            mul$0$b = off_y$1;
+            mul$0$b = op_s$13;
             ps$19 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$48 == 0) & act$48) begin
@@ -2298,12 +2993,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$49 == 0) & act$49) begin
             mul$0$a = ddx$3;
-            mul$0$b = off_x$1;
+            mul$0$b = op_s$14;
             ps$21 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$50 == 0) & act$50) begin
             mul$0$a = ddy$3;
-            mul$0$b = off_y$1;
+            mul$0$b = op_s$15;
             ps$22 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$51 == 0) & act$51) begin
@@ -2313,12 +3008,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$52 == 0) & act$52) begin
             mul$0$a = ddx$0;
-            mul$0$b = off_x$2;
+            mul$0$b = op_s$16;
             ps$24 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$53 == 0) & act$53) begin
             mul$0$a = ddy$0;
-            mul$0$b = off_y$2;
+            mul$0$b = op_s$17;
             ps$25 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$54 == 0) & act$54) begin
@@ -2328,12 +3023,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$55 == 0) & act$55) begin
             mul$0$a = ddx$1;
-            mul$0$b = off_x$2;
+            mul$0$b = op_s$18;
             ps$27 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$56 == 0) & act$56) begin
             mul$0$a = ddy$1;
-            mul$0$b = off_y$2;
+            mul$0$b = op_s$19;
             ps$28 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$57 == 0) & act$57) begin
@@ -2343,12 +3038,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$58 == 0) & act$58) begin
             mul$0$a = ddx$2;
-            mul$0$b = off_x$2;
+            mul$0$b = op_s$20;
             ps$30 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$59 == 0) & act$59) begin
             mul$0$a = ddy$2;
-            mul$0$b = off_y$2;
+            mul$0$b = op_s$21;
             ps$31 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$60 == 0) & act$60) begin
@@ -2358,12 +3053,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$61 == 0) & act$61) begin
             mul$0$a = ddx$3;
-            mul$0$b = off_x$2;
+            mul$0$b = op_s$22;
             ps$33 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$62 == 0) & act$62) begin
             mul$0$a = ddy$3;
-            mul$0$b = off_y$2;
+            mul$0$b = op_s$23;
             ps$34 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$63 == 0) & act$63) begin
@@ -2372,153 +3067,153 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             ps$35 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$0 == 1) & act$0) begin
-            mul$1$a = kdx$0[(32'h0)+:(57)];
-            mul$1$b = kdy$1[(32'h0)+:(19)];
+            mul$1$a = ga$kdx$0[(32'h0)+:(57)];
+            mul$1$b = ga$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$1$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 1) & act$1) begin
-            mul$1$a = kdx$1[(32'h0)+:(57)];
-            mul$1$b = kdy$0[(32'h0)+:(19)];
+            mul$1$a = ga$kdx$1[(32'h0)+:(57)];
+            mul$1$b = ga$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$1$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 1) & act$2) begin
-            mul$1$a = edy$0;
-            mul$1$b = xf$0;
+            mul$1$a = ga$edy$0;
+            mul$1$b = ga$xf$0;
             pn$0 = mul$1$p;
         end
         if ((lane$3 == 1) & act$3) begin
-            mul$1$a = edx$0[(32'h0)+:(57)];
-            mul$1$b = toff$0;
+            mul$1$a = ga$edx$0[(32'h0)+:(57)];
+            mul$1$b = ga$toff$0;
             pn$1 = mul$1$p;
         end
         if ((lane$4 == 1) & act$4) begin
-            mul$1$a = edy$1;
-            mul$1$b = xf$1;
+            mul$1$a = ga$edy$1;
+            mul$1$b = ga$xf$1;
             pn$2 = mul$1$p;
         end
         if ((lane$5 == 1) & act$5) begin
-            mul$1$a = edx$1[(32'h0)+:(57)];
-            mul$1$b = toff$1;
+            mul$1$a = ga$edx$1[(32'h0)+:(57)];
+            mul$1$b = ga$toff$1;
             pn$3 = mul$1$p;
         end
         if ((lane$6 == 1) & act$6) begin
-            mul$1$a = edy$2;
-            mul$1$b = xf$2;
+            mul$1$a = ga$edy$2;
+            mul$1$b = ga$xf$2;
             pn$4 = mul$1$p;
         end
         if ((lane$7 == 1) & act$7) begin
-            mul$1$a = edx$2[(32'h0)+:(57)];
-            mul$1$b = toff$2;
+            mul$1$a = ga$edx$2[(32'h0)+:(57)];
+            mul$1$b = ga$toff$2;
             pn$5 = mul$1$p;
         end
         if ((lane$8 == 1) & act$8) begin
             mul$1$a = mant_a;
-            mul$1$b = eq_b$0;
+            mul$1$b = op_e$0;
             pe$0 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$9 == 1) & act$9) begin
             mul$1$a = mant_a;
-            mul$1$b = eq_b$1;
+            mul$1$b = op_e$1;
             pe$1 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$10 == 1) & act$10) begin
             mul$1$a = mant_a;
-            mul$1$b = eq_b$2;
+            mul$1$b = op_e$2;
             pe$2 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$11 == 1) & act$11) begin
             mul$1$a = mant_a;
-            mul$1$b = eq_b$3;
+            mul$1$b = op_e$3;
             pe$3 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$12 == 1) & act$12) begin
             mul$1$a = p$3$q;
-            mul$1$b = dmaj$0;
+            mul$1$b = op_g$0;
             pg$0 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$13 == 1) & act$13) begin
             mul$1$a = p$2$q;
-            mul$1$b = dbot$0;
+            mul$1$b = op_g$1;
             pg$1 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$14 == 1) & act$14) begin
             mul$1$a = p$0$q;
-            mul$1$b = dbot$0;
+            mul$1$b = op_g$2;
             pg$2 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$15 == 1) & act$15) begin
             mul$1$a = p$1$q;
-            mul$1$b = dmaj$0;
+            mul$1$b = op_g$3;
             pg$3 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$16 == 1) & act$16) begin
             mul$1$a = p$3$q;
-            mul$1$b = dmaj$1;
+            mul$1$b = op_g$4;
             pg$4 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$17 == 1) & act$17) begin
             mul$1$a = p$2$q;
-            mul$1$b = dbot$1;
+            mul$1$b = op_g$5;
             pg$5 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$18 == 1) & act$18) begin
             mul$1$a = p$0$q;
-            mul$1$b = dbot$1;
+            mul$1$b = op_g$6;
             pg$6 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$19 == 1) & act$19) begin
             mul$1$a = p$1$q;
-            mul$1$b = dmaj$1;
+            mul$1$b = op_g$7;
             pg$7 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$20 == 1) & act$20) begin
             mul$1$a = p$3$q;
-            mul$1$b = dmaj$2;
+            mul$1$b = op_g$8;
             pg$8 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$21 == 1) & act$21) begin
             mul$1$a = p$2$q;
-            mul$1$b = dbot$2;
+            mul$1$b = op_g$9;
             pg$9 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$22 == 1) & act$22) begin
             mul$1$a = p$0$q;
-            mul$1$b = dbot$2;
+            mul$1$b = op_g$10;
             pg$10 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$23 == 1) & act$23) begin
             mul$1$a = p$1$q;
-            mul$1$b = dmaj$2;
+            mul$1$b = op_g$11;
             pg$11 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$24 == 1) & act$24) begin
             mul$1$a = p$3$q;
-            mul$1$b = dmaj$3;
+            mul$1$b = op_g$12;
             pg$12 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$25 == 1) & act$25) begin
             mul$1$a = p$2$q;
-            mul$1$b = dbot$3;
+            mul$1$b = op_g$13;
             pg$13 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$26 == 1) & act$26) begin
             mul$1$a = p$0$q;
-            mul$1$b = dbot$3;
+            mul$1$b = op_g$14;
             pg$14 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$27 == 1) & act$27) begin
             mul$1$a = p$1$q;
-            mul$1$b = dmaj$3;
+            mul$1$b = op_g$15;
             pg$15 = mul$1$p[(32'h0)+:(57)];
         end
         if ((lane$28 == 1) & act$28) begin
             mul$1$a = ddx$0;
-            mul$1$b = off_x$0;
+            mul$1$b = op_s$0;
             ps$0 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$29 == 1) & act$29) begin
             mul$1$a = ddy$0;
-            mul$1$b = off_y$0;
+            mul$1$b = op_s$1;
             ps$1 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$30 == 1) & act$30) begin
@@ -2528,12 +3223,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$31 == 1) & act$31) begin
             mul$1$a = ddx$1;
-            mul$1$b = off_x$0;
+            mul$1$b = op_s$2;
             ps$3 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$32 == 1) & act$32) begin
             mul$1$a = ddy$1;
-            mul$1$b = off_y$0;
+            mul$1$b = op_s$3;
             ps$4 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$33 == 1) & act$33) begin
@@ -2543,12 +3238,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$34 == 1) & act$34) begin
             mul$1$a = ddx$2;
-            mul$1$b = off_x$0;
+            mul$1$b = op_s$4;
             ps$6 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$35 == 1) & act$35) begin
             mul$1$a = ddy$2;
-            mul$1$b = off_y$0;
+            mul$1$b = op_s$5;
             ps$7 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$36 == 1) & act$36) begin
@@ -2558,12 +3253,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$37 == 1) & act$37) begin
             mul$1$a = ddx$3;
-            mul$1$b = off_x$0;
+            mul$1$b = op_s$6;
             ps$9 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$38 == 1) & act$38) begin
             mul$1$a = ddy$3;
-            mul$1$b = off_y$0;
+            mul$1$b = op_s$7;
             ps$10 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$39 == 1) & act$39) begin
@@ -2573,12 +3268,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$40 == 1) & act$40) begin
             mul$1$a = ddx$0;
-            mul$1$b = off_x$1;
+            mul$1$b = op_s$8;
             ps$12 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$41 == 1) & act$41) begin
             mul$1$a = ddy$0;
-            mul$1$b = off_y$1;
+            mul$1$b = op_s$9;
             ps$13 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$42 == 1) & act$42) begin
@@ -2588,12 +3283,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$43 == 1) & act$43) begin
             mul$1$a = ddx$1;
-            mul$1$b = off_x$1;
+            mul$1$b = op_s$10;
             ps$15 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$44 == 1) & act$44) begin
             mul$1$a = ddy$1;
-            mul$1$b = off_y$1;
+            mul$1$b = op_s$11;
             ps$16 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$45 == 1) & act$45) begin
@@ -2603,12 +3298,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$46 == 1) & act$46) begin
             mul$1$a = ddx$2;
-            mul$1$b = off_x$1;
+            mul$1$b = op_s$12;
             ps$18 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$47 == 1) & act$47) begin
             mul$1$a = ddy$2;
-            mul$1$b = off_y$1;
+            mul$1$b = op_s$13;
             ps$19 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$48 == 1) & act$48) begin
@@ -2618,12 +3313,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$49 == 1) & act$49) begin
             mul$1$a = ddx$3;
-            mul$1$b = off_x$1;
+            mul$1$b = op_s$14;
             ps$21 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$50 == 1) & act$50) begin
             mul$1$a = ddy$3;
-            mul$1$b = off_y$1;
+            mul$1$b = op_s$15;
             ps$22 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$51 == 1) & act$51) begin
@@ -2633,12 +3328,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$52 == 1) & act$52) begin
             mul$1$a = ddx$0;
-            mul$1$b = off_x$2;
+            mul$1$b = op_s$16;
             ps$24 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$53 == 1) & act$53) begin
             mul$1$a = ddy$0;
-            mul$1$b = off_y$2;
+            mul$1$b = op_s$17;
             ps$25 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$54 == 1) & act$54) begin
@@ -2648,12 +3343,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$55 == 1) & act$55) begin
             mul$1$a = ddx$1;
-            mul$1$b = off_x$2;
+            mul$1$b = op_s$18;
             ps$27 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$56 == 1) & act$56) begin
             mul$1$a = ddy$1;
-            mul$1$b = off_y$2;
+            mul$1$b = op_s$19;
             ps$28 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$57 == 1) & act$57) begin
@@ -2663,12 +3358,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$58 == 1) & act$58) begin
             mul$1$a = ddx$2;
-            mul$1$b = off_x$2;
+            mul$1$b = op_s$20;
             ps$30 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$59 == 1) & act$59) begin
             mul$1$a = ddy$2;
-            mul$1$b = off_y$2;
+            mul$1$b = op_s$21;
             ps$31 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$60 == 1) & act$60) begin
@@ -2678,12 +3373,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$61 == 1) & act$61) begin
             mul$1$a = ddx$3;
-            mul$1$b = off_x$2;
+            mul$1$b = op_s$22;
             ps$33 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$62 == 1) & act$62) begin
             mul$1$a = ddy$3;
-            mul$1$b = off_y$2;
+            mul$1$b = op_s$23;
             ps$34 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$63 == 1) & act$63) begin
@@ -2692,153 +3387,153 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             ps$35 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$0 == 2) & act$0) begin
-            mul$2$a = kdx$0[(32'h0)+:(57)];
-            mul$2$b = kdy$1[(32'h0)+:(19)];
+            mul$2$a = ga$kdx$0[(32'h0)+:(57)];
+            mul$2$b = ga$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$2$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 2) & act$1) begin
-            mul$2$a = kdx$1[(32'h0)+:(57)];
-            mul$2$b = kdy$0[(32'h0)+:(19)];
+            mul$2$a = ga$kdx$1[(32'h0)+:(57)];
+            mul$2$b = ga$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$2$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 2) & act$2) begin
-            mul$2$a = edy$0;
-            mul$2$b = xf$0;
+            mul$2$a = ga$edy$0;
+            mul$2$b = ga$xf$0;
             pn$0 = mul$2$p;
         end
         if ((lane$3 == 2) & act$3) begin
-            mul$2$a = edx$0[(32'h0)+:(57)];
-            mul$2$b = toff$0;
+            mul$2$a = ga$edx$0[(32'h0)+:(57)];
+            mul$2$b = ga$toff$0;
             pn$1 = mul$2$p;
         end
         if ((lane$4 == 2) & act$4) begin
-            mul$2$a = edy$1;
-            mul$2$b = xf$1;
+            mul$2$a = ga$edy$1;
+            mul$2$b = ga$xf$1;
             pn$2 = mul$2$p;
         end
         if ((lane$5 == 2) & act$5) begin
-            mul$2$a = edx$1[(32'h0)+:(57)];
-            mul$2$b = toff$1;
+            mul$2$a = ga$edx$1[(32'h0)+:(57)];
+            mul$2$b = ga$toff$1;
             pn$3 = mul$2$p;
         end
         if ((lane$6 == 2) & act$6) begin
-            mul$2$a = edy$2;
-            mul$2$b = xf$2;
+            mul$2$a = ga$edy$2;
+            mul$2$b = ga$xf$2;
             pn$4 = mul$2$p;
         end
         if ((lane$7 == 2) & act$7) begin
-            mul$2$a = edx$2[(32'h0)+:(57)];
-            mul$2$b = toff$2;
+            mul$2$a = ga$edx$2[(32'h0)+:(57)];
+            mul$2$b = ga$toff$2;
             pn$5 = mul$2$p;
         end
         if ((lane$8 == 2) & act$8) begin
             mul$2$a = mant_a;
-            mul$2$b = eq_b$0;
+            mul$2$b = op_e$0;
             pe$0 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$9 == 2) & act$9) begin
             mul$2$a = mant_a;
-            mul$2$b = eq_b$1;
+            mul$2$b = op_e$1;
             pe$1 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$10 == 2) & act$10) begin
             mul$2$a = mant_a;
-            mul$2$b = eq_b$2;
+            mul$2$b = op_e$2;
             pe$2 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$11 == 2) & act$11) begin
             mul$2$a = mant_a;
-            mul$2$b = eq_b$3;
+            mul$2$b = op_e$3;
             pe$3 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$12 == 2) & act$12) begin
             mul$2$a = p$3$q;
-            mul$2$b = dmaj$0;
+            mul$2$b = op_g$0;
             pg$0 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$13 == 2) & act$13) begin
             mul$2$a = p$2$q;
-            mul$2$b = dbot$0;
+            mul$2$b = op_g$1;
             pg$1 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$14 == 2) & act$14) begin
             mul$2$a = p$0$q;
-            mul$2$b = dbot$0;
+            mul$2$b = op_g$2;
             pg$2 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$15 == 2) & act$15) begin
             mul$2$a = p$1$q;
-            mul$2$b = dmaj$0;
+            mul$2$b = op_g$3;
             pg$3 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$16 == 2) & act$16) begin
             mul$2$a = p$3$q;
-            mul$2$b = dmaj$1;
+            mul$2$b = op_g$4;
             pg$4 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$17 == 2) & act$17) begin
             mul$2$a = p$2$q;
-            mul$2$b = dbot$1;
+            mul$2$b = op_g$5;
             pg$5 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$18 == 2) & act$18) begin
             mul$2$a = p$0$q;
-            mul$2$b = dbot$1;
+            mul$2$b = op_g$6;
             pg$6 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$19 == 2) & act$19) begin
             mul$2$a = p$1$q;
-            mul$2$b = dmaj$1;
+            mul$2$b = op_g$7;
             pg$7 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$20 == 2) & act$20) begin
             mul$2$a = p$3$q;
-            mul$2$b = dmaj$2;
+            mul$2$b = op_g$8;
             pg$8 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$21 == 2) & act$21) begin
             mul$2$a = p$2$q;
-            mul$2$b = dbot$2;
+            mul$2$b = op_g$9;
             pg$9 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$22 == 2) & act$22) begin
             mul$2$a = p$0$q;
-            mul$2$b = dbot$2;
+            mul$2$b = op_g$10;
             pg$10 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$23 == 2) & act$23) begin
             mul$2$a = p$1$q;
-            mul$2$b = dmaj$2;
+            mul$2$b = op_g$11;
             pg$11 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$24 == 2) & act$24) begin
             mul$2$a = p$3$q;
-            mul$2$b = dmaj$3;
+            mul$2$b = op_g$12;
             pg$12 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$25 == 2) & act$25) begin
             mul$2$a = p$2$q;
-            mul$2$b = dbot$3;
+            mul$2$b = op_g$13;
             pg$13 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$26 == 2) & act$26) begin
             mul$2$a = p$0$q;
-            mul$2$b = dbot$3;
+            mul$2$b = op_g$14;
             pg$14 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$27 == 2) & act$27) begin
             mul$2$a = p$1$q;
-            mul$2$b = dmaj$3;
+            mul$2$b = op_g$15;
             pg$15 = mul$2$p[(32'h0)+:(57)];
         end
         if ((lane$28 == 2) & act$28) begin
             mul$2$a = ddx$0;
-            mul$2$b = off_x$0;
+            mul$2$b = op_s$0;
             ps$0 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$29 == 2) & act$29) begin
             mul$2$a = ddy$0;
-            mul$2$b = off_y$0;
+            mul$2$b = op_s$1;
             ps$1 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$30 == 2) & act$30) begin
@@ -2848,12 +3543,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$31 == 2) & act$31) begin
             mul$2$a = ddx$1;
-            mul$2$b = off_x$0;
+            mul$2$b = op_s$2;
             ps$3 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$32 == 2) & act$32) begin
             mul$2$a = ddy$1;
-            mul$2$b = off_y$0;
+            mul$2$b = op_s$3;
             ps$4 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$33 == 2) & act$33) begin
@@ -2863,12 +3558,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$34 == 2) & act$34) begin
             mul$2$a = ddx$2;
-            mul$2$b = off_x$0;
+            mul$2$b = op_s$4;
             ps$6 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$35 == 2) & act$35) begin
             mul$2$a = ddy$2;
-            mul$2$b = off_y$0;
+            mul$2$b = op_s$5;
             ps$7 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$36 == 2) & act$36) begin
@@ -2878,12 +3573,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$37 == 2) & act$37) begin
             mul$2$a = ddx$3;
-            mul$2$b = off_x$0;
+            mul$2$b = op_s$6;
             ps$9 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$38 == 2) & act$38) begin
             mul$2$a = ddy$3;
-            mul$2$b = off_y$0;
+            mul$2$b = op_s$7;
             ps$10 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$39 == 2) & act$39) begin
@@ -2893,12 +3588,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$40 == 2) & act$40) begin
             mul$2$a = ddx$0;
-            mul$2$b = off_x$1;
+            mul$2$b = op_s$8;
             ps$12 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$41 == 2) & act$41) begin
             mul$2$a = ddy$0;
-            mul$2$b = off_y$1;
+            mul$2$b = op_s$9;
             ps$13 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$42 == 2) & act$42) begin
@@ -2908,12 +3603,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$43 == 2) & act$43) begin
             mul$2$a = ddx$1;
-            mul$2$b = off_x$1;
+            mul$2$b = op_s$10;
             ps$15 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$44 == 2) & act$44) begin
             mul$2$a = ddy$1;
-            mul$2$b = off_y$1;
+            mul$2$b = op_s$11;
             ps$16 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$45 == 2) & act$45) begin
@@ -2923,12 +3618,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$46 == 2) & act$46) begin
             mul$2$a = ddx$2;
-            mul$2$b = off_x$1;
+            mul$2$b = op_s$12;
             ps$18 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$47 == 2) & act$47) begin
             mul$2$a = ddy$2;
-            mul$2$b = off_y$1;
+            mul$2$b = op_s$13;
             ps$19 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$48 == 2) & act$48) begin
@@ -2938,12 +3633,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$49 == 2) & act$49) begin
             mul$2$a = ddx$3;
-            mul$2$b = off_x$1;
+            mul$2$b = op_s$14;
             ps$21 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$50 == 2) & act$50) begin
             mul$2$a = ddy$3;
-            mul$2$b = off_y$1;
+            mul$2$b = op_s$15;
             ps$22 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$51 == 2) & act$51) begin
@@ -2953,12 +3648,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$52 == 2) & act$52) begin
             mul$2$a = ddx$0;
-            mul$2$b = off_x$2;
+            mul$2$b = op_s$16;
             ps$24 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$53 == 2) & act$53) begin
             mul$2$a = ddy$0;
-            mul$2$b = off_y$2;
+            mul$2$b = op_s$17;
             ps$25 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$54 == 2) & act$54) begin
@@ -2968,12 +3663,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$55 == 2) & act$55) begin
             mul$2$a = ddx$1;
-            mul$2$b = off_x$2;
+            mul$2$b = op_s$18;
             ps$27 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$56 == 2) & act$56) begin
             mul$2$a = ddy$1;
-            mul$2$b = off_y$2;
+            mul$2$b = op_s$19;
             ps$28 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$57 == 2) & act$57) begin
@@ -2983,12 +3678,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$58 == 2) & act$58) begin
             mul$2$a = ddx$2;
-            mul$2$b = off_x$2;
+            mul$2$b = op_s$20;
             ps$30 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$59 == 2) & act$59) begin
             mul$2$a = ddy$2;
-            mul$2$b = off_y$2;
+            mul$2$b = op_s$21;
             ps$31 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$60 == 2) & act$60) begin
@@ -2998,12 +3693,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$61 == 2) & act$61) begin
             mul$2$a = ddx$3;
-            mul$2$b = off_x$2;
+            mul$2$b = op_s$22;
             ps$33 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$62 == 2) & act$62) begin
             mul$2$a = ddy$3;
-            mul$2$b = off_y$2;
+            mul$2$b = op_s$23;
             ps$34 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$63 == 2) & act$63) begin
@@ -3012,153 +3707,153 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             ps$35 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$0 == 3) & act$0) begin
-            mul$3$a = kdx$0[(32'h0)+:(57)];
-            mul$3$b = kdy$1[(32'h0)+:(19)];
+            mul$3$a = ga$kdx$0[(32'h0)+:(57)];
+            mul$3$b = ga$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$3$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 3) & act$1) begin
-            mul$3$a = kdx$1[(32'h0)+:(57)];
-            mul$3$b = kdy$0[(32'h0)+:(19)];
+            mul$3$a = ga$kdx$1[(32'h0)+:(57)];
+            mul$3$b = ga$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$3$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 3) & act$2) begin
-            mul$3$a = edy$0;
-            mul$3$b = xf$0;
+            mul$3$a = ga$edy$0;
+            mul$3$b = ga$xf$0;
             pn$0 = mul$3$p;
         end
         if ((lane$3 == 3) & act$3) begin
-            mul$3$a = edx$0[(32'h0)+:(57)];
-            mul$3$b = toff$0;
+            mul$3$a = ga$edx$0[(32'h0)+:(57)];
+            mul$3$b = ga$toff$0;
             pn$1 = mul$3$p;
         end
         if ((lane$4 == 3) & act$4) begin
-            mul$3$a = edy$1;
-            mul$3$b = xf$1;
+            mul$3$a = ga$edy$1;
+            mul$3$b = ga$xf$1;
             pn$2 = mul$3$p;
         end
         if ((lane$5 == 3) & act$5) begin
-            mul$3$a = edx$1[(32'h0)+:(57)];
-            mul$3$b = toff$1;
+            mul$3$a = ga$edx$1[(32'h0)+:(57)];
+            mul$3$b = ga$toff$1;
             pn$3 = mul$3$p;
         end
         if ((lane$6 == 3) & act$6) begin
-            mul$3$a = edy$2;
-            mul$3$b = xf$2;
+            mul$3$a = ga$edy$2;
+            mul$3$b = ga$xf$2;
             pn$4 = mul$3$p;
         end
         if ((lane$7 == 3) & act$7) begin
-            mul$3$a = edx$2[(32'h0)+:(57)];
-            mul$3$b = toff$2;
+            mul$3$a = ga$edx$2[(32'h0)+:(57)];
+            mul$3$b = ga$toff$2;
             pn$5 = mul$3$p;
         end
         if ((lane$8 == 3) & act$8) begin
             mul$3$a = mant_a;
-            mul$3$b = eq_b$0;
+            mul$3$b = op_e$0;
             pe$0 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$9 == 3) & act$9) begin
             mul$3$a = mant_a;
-            mul$3$b = eq_b$1;
+            mul$3$b = op_e$1;
             pe$1 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$10 == 3) & act$10) begin
             mul$3$a = mant_a;
-            mul$3$b = eq_b$2;
+            mul$3$b = op_e$2;
             pe$2 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$11 == 3) & act$11) begin
             mul$3$a = mant_a;
-            mul$3$b = eq_b$3;
+            mul$3$b = op_e$3;
             pe$3 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$12 == 3) & act$12) begin
             mul$3$a = p$3$q;
-            mul$3$b = dmaj$0;
+            mul$3$b = op_g$0;
             pg$0 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$13 == 3) & act$13) begin
             mul$3$a = p$2$q;
-            mul$3$b = dbot$0;
+            mul$3$b = op_g$1;
             pg$1 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$14 == 3) & act$14) begin
             mul$3$a = p$0$q;
-            mul$3$b = dbot$0;
+            mul$3$b = op_g$2;
             pg$2 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$15 == 3) & act$15) begin
             mul$3$a = p$1$q;
-            mul$3$b = dmaj$0;
+            mul$3$b = op_g$3;
             pg$3 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$16 == 3) & act$16) begin
             mul$3$a = p$3$q;
-            mul$3$b = dmaj$1;
+            mul$3$b = op_g$4;
             pg$4 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$17 == 3) & act$17) begin
             mul$3$a = p$2$q;
-            mul$3$b = dbot$1;
+            mul$3$b = op_g$5;
             pg$5 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$18 == 3) & act$18) begin
             mul$3$a = p$0$q;
-            mul$3$b = dbot$1;
+            mul$3$b = op_g$6;
             pg$6 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$19 == 3) & act$19) begin
             mul$3$a = p$1$q;
-            mul$3$b = dmaj$1;
+            mul$3$b = op_g$7;
             pg$7 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$20 == 3) & act$20) begin
             mul$3$a = p$3$q;
-            mul$3$b = dmaj$2;
+            mul$3$b = op_g$8;
             pg$8 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$21 == 3) & act$21) begin
             mul$3$a = p$2$q;
-            mul$3$b = dbot$2;
+            mul$3$b = op_g$9;
             pg$9 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$22 == 3) & act$22) begin
             mul$3$a = p$0$q;
-            mul$3$b = dbot$2;
+            mul$3$b = op_g$10;
             pg$10 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$23 == 3) & act$23) begin
             mul$3$a = p$1$q;
-            mul$3$b = dmaj$2;
+            mul$3$b = op_g$11;
             pg$11 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$24 == 3) & act$24) begin
             mul$3$a = p$3$q;
-            mul$3$b = dmaj$3;
+            mul$3$b = op_g$12;
             pg$12 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$25 == 3) & act$25) begin
             mul$3$a = p$2$q;
-            mul$3$b = dbot$3;
+            mul$3$b = op_g$13;
             pg$13 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$26 == 3) & act$26) begin
             mul$3$a = p$0$q;
-            mul$3$b = dbot$3;
+            mul$3$b = op_g$14;
             pg$14 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$27 == 3) & act$27) begin
             mul$3$a = p$1$q;
-            mul$3$b = dmaj$3;
+            mul$3$b = op_g$15;
             pg$15 = mul$3$p[(32'h0)+:(57)];
         end
         if ((lane$28 == 3) & act$28) begin
             mul$3$a = ddx$0;
-            mul$3$b = off_x$0;
+            mul$3$b = op_s$0;
             ps$0 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$29 == 3) & act$29) begin
             mul$3$a = ddy$0;
-            mul$3$b = off_y$0;
+            mul$3$b = op_s$1;
             ps$1 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$30 == 3) & act$30) begin
@@ -3168,12 +3863,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$31 == 3) & act$31) begin
             mul$3$a = ddx$1;
-            mul$3$b = off_x$0;
+            mul$3$b = op_s$2;
             ps$3 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$32 == 3) & act$32) begin
             mul$3$a = ddy$1;
-            mul$3$b = off_y$0;
+            mul$3$b = op_s$3;
             ps$4 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$33 == 3) & act$33) begin
@@ -3183,12 +3878,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$34 == 3) & act$34) begin
             mul$3$a = ddx$2;
-            mul$3$b = off_x$0;
+            mul$3$b = op_s$4;
             ps$6 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$35 == 3) & act$35) begin
             mul$3$a = ddy$2;
-            mul$3$b = off_y$0;
+            mul$3$b = op_s$5;
             ps$7 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$36 == 3) & act$36) begin
@@ -3198,12 +3893,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$37 == 3) & act$37) begin
             mul$3$a = ddx$3;
-            mul$3$b = off_x$0;
+            mul$3$b = op_s$6;
             ps$9 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$38 == 3) & act$38) begin
             mul$3$a = ddy$3;
-            mul$3$b = off_y$0;
+            mul$3$b = op_s$7;
             ps$10 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$39 == 3) & act$39) begin
@@ -3213,12 +3908,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$40 == 3) & act$40) begin
             mul$3$a = ddx$0;
-            mul$3$b = off_x$1;
+            mul$3$b = op_s$8;
             ps$12 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$41 == 3) & act$41) begin
             mul$3$a = ddy$0;
-            mul$3$b = off_y$1;
+            mul$3$b = op_s$9;
             ps$13 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$42 == 3) & act$42) begin
@@ -3228,12 +3923,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$43 == 3) & act$43) begin
             mul$3$a = ddx$1;
-            mul$3$b = off_x$1;
+            mul$3$b = op_s$10;
             ps$15 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$44 == 3) & act$44) begin
             mul$3$a = ddy$1;
-            mul$3$b = off_y$1;
+            mul$3$b = op_s$11;
             ps$16 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$45 == 3) & act$45) begin
@@ -3243,12 +3938,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$46 == 3) & act$46) begin
             mul$3$a = ddx$2;
-            mul$3$b = off_x$1;
+            mul$3$b = op_s$12;
             ps$18 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$47 == 3) & act$47) begin
             mul$3$a = ddy$2;
-            mul$3$b = off_y$1;
+            mul$3$b = op_s$13;
             ps$19 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$48 == 3) & act$48) begin
@@ -3258,12 +3953,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$49 == 3) & act$49) begin
             mul$3$a = ddx$3;
-            mul$3$b = off_x$1;
+            mul$3$b = op_s$14;
             ps$21 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$50 == 3) & act$50) begin
             mul$3$a = ddy$3;
-            mul$3$b = off_y$1;
+            mul$3$b = op_s$15;
             ps$22 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$51 == 3) & act$51) begin
@@ -3273,12 +3968,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$52 == 3) & act$52) begin
             mul$3$a = ddx$0;
-            mul$3$b = off_x$2;
+            mul$3$b = op_s$16;
             ps$24 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$53 == 3) & act$53) begin
             mul$3$a = ddy$0;
-            mul$3$b = off_y$2;
+            mul$3$b = op_s$17;
             ps$25 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$54 == 3) & act$54) begin
@@ -3288,12 +3983,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$55 == 3) & act$55) begin
             mul$3$a = ddx$1;
-            mul$3$b = off_x$2;
+            mul$3$b = op_s$18;
             ps$27 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$56 == 3) & act$56) begin
             mul$3$a = ddy$1;
-            mul$3$b = off_y$2;
+            mul$3$b = op_s$19;
             ps$28 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$57 == 3) & act$57) begin
@@ -3303,12 +3998,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$58 == 3) & act$58) begin
             mul$3$a = ddx$2;
-            mul$3$b = off_x$2;
+            mul$3$b = op_s$20;
             ps$30 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$59 == 3) & act$59) begin
             mul$3$a = ddy$2;
-            mul$3$b = off_y$2;
+            mul$3$b = op_s$21;
             ps$31 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$60 == 3) & act$60) begin
@@ -3318,12 +4013,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$61 == 3) & act$61) begin
             mul$3$a = ddx$3;
-            mul$3$b = off_x$2;
+            mul$3$b = op_s$22;
             ps$33 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$62 == 3) & act$62) begin
             mul$3$a = ddy$3;
-            mul$3$b = off_y$2;
+            mul$3$b = op_s$23;
             ps$34 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$63 == 3) & act$63) begin
@@ -3332,153 +4027,153 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             ps$35 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$0 == 4) & act$0) begin
-            mul$4$a = kdx$0[(32'h0)+:(57)];
-            mul$4$b = kdy$1[(32'h0)+:(19)];
+            mul$4$a = ga$kdx$0[(32'h0)+:(57)];
+            mul$4$b = ga$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$4$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 4) & act$1) begin
-            mul$4$a = kdx$1[(32'h0)+:(57)];
-            mul$4$b = kdy$0[(32'h0)+:(19)];
+            mul$4$a = ga$kdx$1[(32'h0)+:(57)];
+            mul$4$b = ga$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$4$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 4) & act$2) begin
-            mul$4$a = edy$0;
-            mul$4$b = xf$0;
+            mul$4$a = ga$edy$0;
+            mul$4$b = ga$xf$0;
             pn$0 = mul$4$p;
         end
         if ((lane$3 == 4) & act$3) begin
-            mul$4$a = edx$0[(32'h0)+:(57)];
-            mul$4$b = toff$0;
+            mul$4$a = ga$edx$0[(32'h0)+:(57)];
+            mul$4$b = ga$toff$0;
             pn$1 = mul$4$p;
         end
         if ((lane$4 == 4) & act$4) begin
-            mul$4$a = edy$1;
-            mul$4$b = xf$1;
+            mul$4$a = ga$edy$1;
+            mul$4$b = ga$xf$1;
             pn$2 = mul$4$p;
         end
         if ((lane$5 == 4) & act$5) begin
-            mul$4$a = edx$1[(32'h0)+:(57)];
-            mul$4$b = toff$1;
+            mul$4$a = ga$edx$1[(32'h0)+:(57)];
+            mul$4$b = ga$toff$1;
             pn$3 = mul$4$p;
         end
         if ((lane$6 == 4) & act$6) begin
-            mul$4$a = edy$2;
-            mul$4$b = xf$2;
+            mul$4$a = ga$edy$2;
+            mul$4$b = ga$xf$2;
             pn$4 = mul$4$p;
         end
         if ((lane$7 == 4) & act$7) begin
-            mul$4$a = edx$2[(32'h0)+:(57)];
-            mul$4$b = toff$2;
+            mul$4$a = ga$edx$2[(32'h0)+:(57)];
+            mul$4$b = ga$toff$2;
             pn$5 = mul$4$p;
         end
         if ((lane$8 == 4) & act$8) begin
             mul$4$a = mant_a;
-            mul$4$b = eq_b$0;
+            mul$4$b = op_e$0;
             pe$0 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$9 == 4) & act$9) begin
             mul$4$a = mant_a;
-            mul$4$b = eq_b$1;
+            mul$4$b = op_e$1;
             pe$1 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$10 == 4) & act$10) begin
             mul$4$a = mant_a;
-            mul$4$b = eq_b$2;
+            mul$4$b = op_e$2;
             pe$2 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$11 == 4) & act$11) begin
             mul$4$a = mant_a;
-            mul$4$b = eq_b$3;
+            mul$4$b = op_e$3;
             pe$3 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$12 == 4) & act$12) begin
             mul$4$a = p$3$q;
-            mul$4$b = dmaj$0;
+            mul$4$b = op_g$0;
             pg$0 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$13 == 4) & act$13) begin
             mul$4$a = p$2$q;
-            mul$4$b = dbot$0;
+            mul$4$b = op_g$1;
             pg$1 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$14 == 4) & act$14) begin
             mul$4$a = p$0$q;
-            mul$4$b = dbot$0;
+            mul$4$b = op_g$2;
             pg$2 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$15 == 4) & act$15) begin
             mul$4$a = p$1$q;
-            mul$4$b = dmaj$0;
+            mul$4$b = op_g$3;
             pg$3 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$16 == 4) & act$16) begin
             mul$4$a = p$3$q;
-            mul$4$b = dmaj$1;
+            mul$4$b = op_g$4;
             pg$4 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$17 == 4) & act$17) begin
             mul$4$a = p$2$q;
-            mul$4$b = dbot$1;
+            mul$4$b = op_g$5;
             pg$5 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$18 == 4) & act$18) begin
             mul$4$a = p$0$q;
-            mul$4$b = dbot$1;
+            mul$4$b = op_g$6;
             pg$6 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$19 == 4) & act$19) begin
             mul$4$a = p$1$q;
-            mul$4$b = dmaj$1;
+            mul$4$b = op_g$7;
             pg$7 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$20 == 4) & act$20) begin
             mul$4$a = p$3$q;
-            mul$4$b = dmaj$2;
+            mul$4$b = op_g$8;
             pg$8 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$21 == 4) & act$21) begin
             mul$4$a = p$2$q;
-            mul$4$b = dbot$2;
+            mul$4$b = op_g$9;
             pg$9 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$22 == 4) & act$22) begin
             mul$4$a = p$0$q;
-            mul$4$b = dbot$2;
+            mul$4$b = op_g$10;
             pg$10 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$23 == 4) & act$23) begin
             mul$4$a = p$1$q;
-            mul$4$b = dmaj$2;
+            mul$4$b = op_g$11;
             pg$11 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$24 == 4) & act$24) begin
             mul$4$a = p$3$q;
-            mul$4$b = dmaj$3;
+            mul$4$b = op_g$12;
             pg$12 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$25 == 4) & act$25) begin
             mul$4$a = p$2$q;
-            mul$4$b = dbot$3;
+            mul$4$b = op_g$13;
             pg$13 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$26 == 4) & act$26) begin
             mul$4$a = p$0$q;
-            mul$4$b = dbot$3;
+            mul$4$b = op_g$14;
             pg$14 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$27 == 4) & act$27) begin
             mul$4$a = p$1$q;
-            mul$4$b = dmaj$3;
+            mul$4$b = op_g$15;
             pg$15 = mul$4$p[(32'h0)+:(57)];
         end
         if ((lane$28 == 4) & act$28) begin
             mul$4$a = ddx$0;
-            mul$4$b = off_x$0;
+            mul$4$b = op_s$0;
             ps$0 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$29 == 4) & act$29) begin
             mul$4$a = ddy$0;
-            mul$4$b = off_y$0;
+            mul$4$b = op_s$1;
             ps$1 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$30 == 4) & act$30) begin
@@ -3488,12 +4183,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$31 == 4) & act$31) begin
             mul$4$a = ddx$1;
-            mul$4$b = off_x$0;
+            mul$4$b = op_s$2;
             ps$3 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$32 == 4) & act$32) begin
             mul$4$a = ddy$1;
-            mul$4$b = off_y$0;
+            mul$4$b = op_s$3;
             ps$4 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$33 == 4) & act$33) begin
@@ -3503,12 +4198,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$34 == 4) & act$34) begin
             mul$4$a = ddx$2;
-            mul$4$b = off_x$0;
+            mul$4$b = op_s$4;
             ps$6 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$35 == 4) & act$35) begin
             mul$4$a = ddy$2;
-            mul$4$b = off_y$0;
+            mul$4$b = op_s$5;
             ps$7 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$36 == 4) & act$36) begin
@@ -3518,12 +4213,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$37 == 4) & act$37) begin
             mul$4$a = ddx$3;
-            mul$4$b = off_x$0;
+            mul$4$b = op_s$6;
             ps$9 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$38 == 4) & act$38) begin
             mul$4$a = ddy$3;
-            mul$4$b = off_y$0;
+            mul$4$b = op_s$7;
             ps$10 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$39 == 4) & act$39) begin
@@ -3533,12 +4228,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$40 == 4) & act$40) begin
             mul$4$a = ddx$0;
-            mul$4$b = off_x$1;
+            mul$4$b = op_s$8;
             ps$12 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$41 == 4) & act$41) begin
             mul$4$a = ddy$0;
-            mul$4$b = off_y$1;
+            mul$4$b = op_s$9;
             ps$13 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$42 == 4) & act$42) begin
@@ -3548,12 +4243,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$43 == 4) & act$43) begin
             mul$4$a = ddx$1;
-            mul$4$b = off_x$1;
+            mul$4$b = op_s$10;
             ps$15 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$44 == 4) & act$44) begin
             mul$4$a = ddy$1;
-            mul$4$b = off_y$1;
+            mul$4$b = op_s$11;
             ps$16 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$45 == 4) & act$45) begin
@@ -3563,12 +4258,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$46 == 4) & act$46) begin
             mul$4$a = ddx$2;
-            mul$4$b = off_x$1;
+            mul$4$b = op_s$12;
             ps$18 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$47 == 4) & act$47) begin
             mul$4$a = ddy$2;
-            mul$4$b = off_y$1;
+            mul$4$b = op_s$13;
             ps$19 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$48 == 4) & act$48) begin
@@ -3578,12 +4273,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$49 == 4) & act$49) begin
             mul$4$a = ddx$3;
-            mul$4$b = off_x$1;
+            mul$4$b = op_s$14;
             ps$21 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$50 == 4) & act$50) begin
             mul$4$a = ddy$3;
-            mul$4$b = off_y$1;
+            mul$4$b = op_s$15;
             ps$22 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$51 == 4) & act$51) begin
@@ -3593,12 +4288,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$52 == 4) & act$52) begin
             mul$4$a = ddx$0;
-            mul$4$b = off_x$2;
+            mul$4$b = op_s$16;
             ps$24 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$53 == 4) & act$53) begin
             mul$4$a = ddy$0;
-            mul$4$b = off_y$2;
+            mul$4$b = op_s$17;
             ps$25 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$54 == 4) & act$54) begin
@@ -3608,12 +4303,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$55 == 4) & act$55) begin
             mul$4$a = ddx$1;
-            mul$4$b = off_x$2;
+            mul$4$b = op_s$18;
             ps$27 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$56 == 4) & act$56) begin
             mul$4$a = ddy$1;
-            mul$4$b = off_y$2;
+            mul$4$b = op_s$19;
             ps$28 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$57 == 4) & act$57) begin
@@ -3623,12 +4318,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$58 == 4) & act$58) begin
             mul$4$a = ddx$2;
-            mul$4$b = off_x$2;
+            mul$4$b = op_s$20;
             ps$30 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$59 == 4) & act$59) begin
             mul$4$a = ddy$2;
-            mul$4$b = off_y$2;
+            mul$4$b = op_s$21;
             ps$31 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$60 == 4) & act$60) begin
@@ -3638,12 +4333,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$61 == 4) & act$61) begin
             mul$4$a = ddx$3;
-            mul$4$b = off_x$2;
+            mul$4$b = op_s$22;
             ps$33 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$62 == 4) & act$62) begin
             mul$4$a = ddy$3;
-            mul$4$b = off_y$2;
+            mul$4$b = op_s$23;
             ps$34 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$63 == 4) & act$63) begin
@@ -3652,153 +4347,153 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             ps$35 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$0 == 5) & act$0) begin
-            mul$5$a = kdx$0[(32'h0)+:(57)];
-            mul$5$b = kdy$1[(32'h0)+:(19)];
+            mul$5$a = ga$kdx$0[(32'h0)+:(57)];
+            mul$5$b = ga$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$5$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 5) & act$1) begin
-            mul$5$a = kdx$1[(32'h0)+:(57)];
-            mul$5$b = kdy$0[(32'h0)+:(19)];
+            mul$5$a = ga$kdx$1[(32'h0)+:(57)];
+            mul$5$b = ga$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$5$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 5) & act$2) begin
-            mul$5$a = edy$0;
-            mul$5$b = xf$0;
+            mul$5$a = ga$edy$0;
+            mul$5$b = ga$xf$0;
             pn$0 = mul$5$p;
         end
         if ((lane$3 == 5) & act$3) begin
-            mul$5$a = edx$0[(32'h0)+:(57)];
-            mul$5$b = toff$0;
+            mul$5$a = ga$edx$0[(32'h0)+:(57)];
+            mul$5$b = ga$toff$0;
             pn$1 = mul$5$p;
         end
         if ((lane$4 == 5) & act$4) begin
-            mul$5$a = edy$1;
-            mul$5$b = xf$1;
+            mul$5$a = ga$edy$1;
+            mul$5$b = ga$xf$1;
             pn$2 = mul$5$p;
         end
         if ((lane$5 == 5) & act$5) begin
-            mul$5$a = edx$1[(32'h0)+:(57)];
-            mul$5$b = toff$1;
+            mul$5$a = ga$edx$1[(32'h0)+:(57)];
+            mul$5$b = ga$toff$1;
             pn$3 = mul$5$p;
         end
         if ((lane$6 == 5) & act$6) begin
-            mul$5$a = edy$2;
-            mul$5$b = xf$2;
+            mul$5$a = ga$edy$2;
+            mul$5$b = ga$xf$2;
             pn$4 = mul$5$p;
         end
         if ((lane$7 == 5) & act$7) begin
-            mul$5$a = edx$2[(32'h0)+:(57)];
-            mul$5$b = toff$2;
+            mul$5$a = ga$edx$2[(32'h0)+:(57)];
+            mul$5$b = ga$toff$2;
             pn$5 = mul$5$p;
         end
         if ((lane$8 == 5) & act$8) begin
             mul$5$a = mant_a;
-            mul$5$b = eq_b$0;
+            mul$5$b = op_e$0;
             pe$0 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$9 == 5) & act$9) begin
             mul$5$a = mant_a;
-            mul$5$b = eq_b$1;
+            mul$5$b = op_e$1;
             pe$1 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$10 == 5) & act$10) begin
             mul$5$a = mant_a;
-            mul$5$b = eq_b$2;
+            mul$5$b = op_e$2;
             pe$2 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$11 == 5) & act$11) begin
             mul$5$a = mant_a;
-            mul$5$b = eq_b$3;
+            mul$5$b = op_e$3;
             pe$3 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$12 == 5) & act$12) begin
             mul$5$a = p$3$q;
-            mul$5$b = dmaj$0;
+            mul$5$b = op_g$0;
             pg$0 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$13 == 5) & act$13) begin
             mul$5$a = p$2$q;
-            mul$5$b = dbot$0;
+            mul$5$b = op_g$1;
             pg$1 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$14 == 5) & act$14) begin
             mul$5$a = p$0$q;
-            mul$5$b = dbot$0;
+            mul$5$b = op_g$2;
             pg$2 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$15 == 5) & act$15) begin
             mul$5$a = p$1$q;
-            mul$5$b = dmaj$0;
+            mul$5$b = op_g$3;
             pg$3 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$16 == 5) & act$16) begin
             mul$5$a = p$3$q;
-            mul$5$b = dmaj$1;
+            mul$5$b = op_g$4;
             pg$4 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$17 == 5) & act$17) begin
             mul$5$a = p$2$q;
-            mul$5$b = dbot$1;
+            mul$5$b = op_g$5;
             pg$5 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$18 == 5) & act$18) begin
             mul$5$a = p$0$q;
-            mul$5$b = dbot$1;
+            mul$5$b = op_g$6;
             pg$6 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$19 == 5) & act$19) begin
             mul$5$a = p$1$q;
-            mul$5$b = dmaj$1;
+            mul$5$b = op_g$7;
             pg$7 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$20 == 5) & act$20) begin
             mul$5$a = p$3$q;
-            mul$5$b = dmaj$2;
+            mul$5$b = op_g$8;
             pg$8 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$21 == 5) & act$21) begin
             mul$5$a = p$2$q;
-            mul$5$b = dbot$2;
+            mul$5$b = op_g$9;
             pg$9 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$22 == 5) & act$22) begin
             mul$5$a = p$0$q;
-            mul$5$b = dbot$2;
+            mul$5$b = op_g$10;
             pg$10 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$23 == 5) & act$23) begin
             mul$5$a = p$1$q;
-            mul$5$b = dmaj$2;
+            mul$5$b = op_g$11;
             pg$11 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$24 == 5) & act$24) begin
             mul$5$a = p$3$q;
-            mul$5$b = dmaj$3;
+            mul$5$b = op_g$12;
             pg$12 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$25 == 5) & act$25) begin
             mul$5$a = p$2$q;
-            mul$5$b = dbot$3;
+            mul$5$b = op_g$13;
             pg$13 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$26 == 5) & act$26) begin
             mul$5$a = p$0$q;
-            mul$5$b = dbot$3;
+            mul$5$b = op_g$14;
             pg$14 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$27 == 5) & act$27) begin
             mul$5$a = p$1$q;
-            mul$5$b = dmaj$3;
+            mul$5$b = op_g$15;
             pg$15 = mul$5$p[(32'h0)+:(57)];
         end
         if ((lane$28 == 5) & act$28) begin
             mul$5$a = ddx$0;
-            mul$5$b = off_x$0;
+            mul$5$b = op_s$0;
             ps$0 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$29 == 5) & act$29) begin
             mul$5$a = ddy$0;
-            mul$5$b = off_y$0;
+            mul$5$b = op_s$1;
             ps$1 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$30 == 5) & act$30) begin
@@ -3808,12 +4503,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$31 == 5) & act$31) begin
             mul$5$a = ddx$1;
-            mul$5$b = off_x$0;
+            mul$5$b = op_s$2;
             ps$3 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$32 == 5) & act$32) begin
             mul$5$a = ddy$1;
-            mul$5$b = off_y$0;
+            mul$5$b = op_s$3;
             ps$4 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$33 == 5) & act$33) begin
@@ -3823,12 +4518,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$34 == 5) & act$34) begin
             mul$5$a = ddx$2;
-            mul$5$b = off_x$0;
+            mul$5$b = op_s$4;
             ps$6 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$35 == 5) & act$35) begin
             mul$5$a = ddy$2;
-            mul$5$b = off_y$0;
+            mul$5$b = op_s$5;
             ps$7 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$36 == 5) & act$36) begin
@@ -3838,12 +4533,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$37 == 5) & act$37) begin
             mul$5$a = ddx$3;
-            mul$5$b = off_x$0;
+            mul$5$b = op_s$6;
             ps$9 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$38 == 5) & act$38) begin
             mul$5$a = ddy$3;
-            mul$5$b = off_y$0;
+            mul$5$b = op_s$7;
             ps$10 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$39 == 5) & act$39) begin
@@ -3853,12 +4548,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$40 == 5) & act$40) begin
             mul$5$a = ddx$0;
-            mul$5$b = off_x$1;
+            mul$5$b = op_s$8;
             ps$12 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$41 == 5) & act$41) begin
             mul$5$a = ddy$0;
-            mul$5$b = off_y$1;
+            mul$5$b = op_s$9;
             ps$13 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$42 == 5) & act$42) begin
@@ -3868,12 +4563,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$43 == 5) & act$43) begin
             mul$5$a = ddx$1;
-            mul$5$b = off_x$1;
+            mul$5$b = op_s$10;
             ps$15 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$44 == 5) & act$44) begin
             mul$5$a = ddy$1;
-            mul$5$b = off_y$1;
+            mul$5$b = op_s$11;
             ps$16 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$45 == 5) & act$45) begin
@@ -3883,12 +4578,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$46 == 5) & act$46) begin
             mul$5$a = ddx$2;
-            mul$5$b = off_x$1;
+            mul$5$b = op_s$12;
             ps$18 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$47 == 5) & act$47) begin
             mul$5$a = ddy$2;
-            mul$5$b = off_y$1;
+            mul$5$b = op_s$13;
             ps$19 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$48 == 5) & act$48) begin
@@ -3898,12 +4593,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$49 == 5) & act$49) begin
             mul$5$a = ddx$3;
-            mul$5$b = off_x$1;
+            mul$5$b = op_s$14;
             ps$21 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$50 == 5) & act$50) begin
             mul$5$a = ddy$3;
-            mul$5$b = off_y$1;
+            mul$5$b = op_s$15;
             ps$22 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$51 == 5) & act$51) begin
@@ -3913,12 +4608,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$52 == 5) & act$52) begin
             mul$5$a = ddx$0;
-            mul$5$b = off_x$2;
+            mul$5$b = op_s$16;
             ps$24 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$53 == 5) & act$53) begin
             mul$5$a = ddy$0;
-            mul$5$b = off_y$2;
+            mul$5$b = op_s$17;
             ps$25 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$54 == 5) & act$54) begin
@@ -3928,12 +4623,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$55 == 5) & act$55) begin
             mul$5$a = ddx$1;
-            mul$5$b = off_x$2;
+            mul$5$b = op_s$18;
             ps$27 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$56 == 5) & act$56) begin
             mul$5$a = ddy$1;
-            mul$5$b = off_y$2;
+            mul$5$b = op_s$19;
             ps$28 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$57 == 5) & act$57) begin
@@ -3943,12 +4638,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$58 == 5) & act$58) begin
             mul$5$a = ddx$2;
-            mul$5$b = off_x$2;
+            mul$5$b = op_s$20;
             ps$30 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$59 == 5) & act$59) begin
             mul$5$a = ddy$2;
-            mul$5$b = off_y$2;
+            mul$5$b = op_s$21;
             ps$31 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$60 == 5) & act$60) begin
@@ -3958,12 +4653,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$61 == 5) & act$61) begin
             mul$5$a = ddx$3;
-            mul$5$b = off_x$2;
+            mul$5$b = op_s$22;
             ps$33 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$62 == 5) & act$62) begin
             mul$5$a = ddy$3;
-            mul$5$b = off_y$2;
+            mul$5$b = op_s$23;
             ps$34 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$63 == 5) & act$63) begin
@@ -3972,153 +4667,153 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             ps$35 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$0 == 6) & act$0) begin
-            mul$6$a = kdx$0[(32'h0)+:(57)];
-            mul$6$b = kdy$1[(32'h0)+:(19)];
+            mul$6$a = ga$kdx$0[(32'h0)+:(57)];
+            mul$6$b = ga$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$6$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 6) & act$1) begin
-            mul$6$a = kdx$1[(32'h0)+:(57)];
-            mul$6$b = kdy$0[(32'h0)+:(19)];
+            mul$6$a = ga$kdx$1[(32'h0)+:(57)];
+            mul$6$b = ga$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$6$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 6) & act$2) begin
-            mul$6$a = edy$0;
-            mul$6$b = xf$0;
+            mul$6$a = ga$edy$0;
+            mul$6$b = ga$xf$0;
             pn$0 = mul$6$p;
         end
         if ((lane$3 == 6) & act$3) begin
-            mul$6$a = edx$0[(32'h0)+:(57)];
-            mul$6$b = toff$0;
+            mul$6$a = ga$edx$0[(32'h0)+:(57)];
+            mul$6$b = ga$toff$0;
             pn$1 = mul$6$p;
         end
         if ((lane$4 == 6) & act$4) begin
-            mul$6$a = edy$1;
-            mul$6$b = xf$1;
+            mul$6$a = ga$edy$1;
+            mul$6$b = ga$xf$1;
             pn$2 = mul$6$p;
         end
         if ((lane$5 == 6) & act$5) begin
-            mul$6$a = edx$1[(32'h0)+:(57)];
-            mul$6$b = toff$1;
+            mul$6$a = ga$edx$1[(32'h0)+:(57)];
+            mul$6$b = ga$toff$1;
             pn$3 = mul$6$p;
         end
         if ((lane$6 == 6) & act$6) begin
-            mul$6$a = edy$2;
-            mul$6$b = xf$2;
+            mul$6$a = ga$edy$2;
+            mul$6$b = ga$xf$2;
             pn$4 = mul$6$p;
         end
         if ((lane$7 == 6) & act$7) begin
-            mul$6$a = edx$2[(32'h0)+:(57)];
-            mul$6$b = toff$2;
+            mul$6$a = ga$edx$2[(32'h0)+:(57)];
+            mul$6$b = ga$toff$2;
             pn$5 = mul$6$p;
         end
         if ((lane$8 == 6) & act$8) begin
             mul$6$a = mant_a;
-            mul$6$b = eq_b$0;
+            mul$6$b = op_e$0;
             pe$0 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$9 == 6) & act$9) begin
             mul$6$a = mant_a;
-            mul$6$b = eq_b$1;
+            mul$6$b = op_e$1;
             pe$1 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$10 == 6) & act$10) begin
             mul$6$a = mant_a;
-            mul$6$b = eq_b$2;
+            mul$6$b = op_e$2;
             pe$2 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$11 == 6) & act$11) begin
             mul$6$a = mant_a;
-            mul$6$b = eq_b$3;
+            mul$6$b = op_e$3;
             pe$3 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$12 == 6) & act$12) begin
             mul$6$a = p$3$q;
-            mul$6$b = dmaj$0;
+            mul$6$b = op_g$0;
             pg$0 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$13 == 6) & act$13) begin
             mul$6$a = p$2$q;
-            mul$6$b = dbot$0;
+            mul$6$b = op_g$1;
             pg$1 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$14 == 6) & act$14) begin
             mul$6$a = p$0$q;
-            mul$6$b = dbot$0;
+            mul$6$b = op_g$2;
             pg$2 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$15 == 6) & act$15) begin
             mul$6$a = p$1$q;
-            mul$6$b = dmaj$0;
+            mul$6$b = op_g$3;
             pg$3 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$16 == 6) & act$16) begin
             mul$6$a = p$3$q;
-            mul$6$b = dmaj$1;
+            mul$6$b = op_g$4;
             pg$4 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$17 == 6) & act$17) begin
             mul$6$a = p$2$q;
-            mul$6$b = dbot$1;
+            mul$6$b = op_g$5;
             pg$5 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$18 == 6) & act$18) begin
             mul$6$a = p$0$q;
-            mul$6$b = dbot$1;
+            mul$6$b = op_g$6;
             pg$6 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$19 == 6) & act$19) begin
             mul$6$a = p$1$q;
-            mul$6$b = dmaj$1;
+            mul$6$b = op_g$7;
             pg$7 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$20 == 6) & act$20) begin
             mul$6$a = p$3$q;
-            mul$6$b = dmaj$2;
+            mul$6$b = op_g$8;
             pg$8 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$21 == 6) & act$21) begin
             mul$6$a = p$2$q;
-            mul$6$b = dbot$2;
+            mul$6$b = op_g$9;
             pg$9 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$22 == 6) & act$22) begin
             mul$6$a = p$0$q;
-            mul$6$b = dbot$2;
+            mul$6$b = op_g$10;
             pg$10 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$23 == 6) & act$23) begin
             mul$6$a = p$1$q;
-            mul$6$b = dmaj$2;
+            mul$6$b = op_g$11;
             pg$11 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$24 == 6) & act$24) begin
             mul$6$a = p$3$q;
-            mul$6$b = dmaj$3;
+            mul$6$b = op_g$12;
             pg$12 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$25 == 6) & act$25) begin
             mul$6$a = p$2$q;
-            mul$6$b = dbot$3;
+            mul$6$b = op_g$13;
             pg$13 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$26 == 6) & act$26) begin
             mul$6$a = p$0$q;
-            mul$6$b = dbot$3;
+            mul$6$b = op_g$14;
             pg$14 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$27 == 6) & act$27) begin
             mul$6$a = p$1$q;
-            mul$6$b = dmaj$3;
+            mul$6$b = op_g$15;
             pg$15 = mul$6$p[(32'h0)+:(57)];
         end
         if ((lane$28 == 6) & act$28) begin
             mul$6$a = ddx$0;
-            mul$6$b = off_x$0;
+            mul$6$b = op_s$0;
             ps$0 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$29 == 6) & act$29) begin
             mul$6$a = ddy$0;
-            mul$6$b = off_y$0;
+            mul$6$b = op_s$1;
             ps$1 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$30 == 6) & act$30) begin
@@ -4128,12 +4823,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$31 == 6) & act$31) begin
             mul$6$a = ddx$1;
-            mul$6$b = off_x$0;
+            mul$6$b = op_s$2;
             ps$3 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$32 == 6) & act$32) begin
             mul$6$a = ddy$1;
-            mul$6$b = off_y$0;
+            mul$6$b = op_s$3;
             ps$4 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$33 == 6) & act$33) begin
@@ -4143,12 +4838,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$34 == 6) & act$34) begin
             mul$6$a = ddx$2;
-            mul$6$b = off_x$0;
+            mul$6$b = op_s$4;
             ps$6 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$35 == 6) & act$35) begin
             mul$6$a = ddy$2;
-            mul$6$b = off_y$0;
+            mul$6$b = op_s$5;
             ps$7 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$36 == 6) & act$36) begin
@@ -4158,12 +4853,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$37 == 6) & act$37) begin
             mul$6$a = ddx$3;
-            mul$6$b = off_x$0;
+            mul$6$b = op_s$6;
             ps$9 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$38 == 6) & act$38) begin
             mul$6$a = ddy$3;
-            mul$6$b = off_y$0;
+            mul$6$b = op_s$7;
             ps$10 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$39 == 6) & act$39) begin
@@ -4173,12 +4868,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$40 == 6) & act$40) begin
             mul$6$a = ddx$0;
-            mul$6$b = off_x$1;
+            mul$6$b = op_s$8;
             ps$12 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$41 == 6) & act$41) begin
             mul$6$a = ddy$0;
-            mul$6$b = off_y$1;
+            mul$6$b = op_s$9;
             ps$13 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$42 == 6) & act$42) begin
@@ -4188,12 +4883,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$43 == 6) & act$43) begin
             mul$6$a = ddx$1;
-            mul$6$b = off_x$1;
+            mul$6$b = op_s$10;
             ps$15 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$44 == 6) & act$44) begin
             mul$6$a = ddy$1;
-            mul$6$b = off_y$1;
+            mul$6$b = op_s$11;
             ps$16 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$45 == 6) & act$45) begin
@@ -4203,12 +4898,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$46 == 6) & act$46) begin
             mul$6$a = ddx$2;
-            mul$6$b = off_x$1;
+            mul$6$b = op_s$12;
             ps$18 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$47 == 6) & act$47) begin
             mul$6$a = ddy$2;
-            mul$6$b = off_y$1;
+            mul$6$b = op_s$13;
             ps$19 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$48 == 6) & act$48) begin
@@ -4218,12 +4913,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$49 == 6) & act$49) begin
             mul$6$a = ddx$3;
-            mul$6$b = off_x$1;
+            mul$6$b = op_s$14;
             ps$21 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$50 == 6) & act$50) begin
             mul$6$a = ddy$3;
-            mul$6$b = off_y$1;
+            mul$6$b = op_s$15;
             ps$22 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$51 == 6) & act$51) begin
@@ -4233,12 +4928,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$52 == 6) & act$52) begin
             mul$6$a = ddx$0;
-            mul$6$b = off_x$2;
+            mul$6$b = op_s$16;
             ps$24 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$53 == 6) & act$53) begin
             mul$6$a = ddy$0;
-            mul$6$b = off_y$2;
+            mul$6$b = op_s$17;
             ps$25 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$54 == 6) & act$54) begin
@@ -4248,12 +4943,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$55 == 6) & act$55) begin
             mul$6$a = ddx$1;
-            mul$6$b = off_x$2;
+            mul$6$b = op_s$18;
             ps$27 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$56 == 6) & act$56) begin
             mul$6$a = ddy$1;
-            mul$6$b = off_y$2;
+            mul$6$b = op_s$19;
             ps$28 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$57 == 6) & act$57) begin
@@ -4263,12 +4958,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$58 == 6) & act$58) begin
             mul$6$a = ddx$2;
-            mul$6$b = off_x$2;
+            mul$6$b = op_s$20;
             ps$30 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$59 == 6) & act$59) begin
             mul$6$a = ddy$2;
-            mul$6$b = off_y$2;
+            mul$6$b = op_s$21;
             ps$31 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$60 == 6) & act$60) begin
@@ -4278,12 +4973,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         if ((lane$61 == 6) & act$61) begin
             mul$6$a = ddx$3;
-            mul$6$b = off_x$2;
+            mul$6$b = op_s$22;
             ps$33 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$62 == 6) & act$62) begin
             mul$6$a = ddy$3;
-            mul$6$b = off_y$2;
+            mul$6$b = op_s$23;
             ps$34 = mul$6$p[(32'h0)+:(40)];
         end
         if ((lane$63 == 6) & act$63) begin
@@ -4399,8 +5094,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (act$30) begin
             inc0$0$d = ddy$0[(32'h0)+:(40)] + ps$2;
         end
-        if (t$q == handover) begin
-            plane$0$d = (plane$0$q >> frac) + (attr0$0 << bsh$0);
+        if (at_handover) begin
+            plane$0$d = (plane$0$q >> frac) + (gb$attr0$0 << bsh$0);
             inc1$0$d = inc0$0$q + ddx$0[(32'h0)+:(40)];
         end
         plane_base$1 = plane$1$q;
@@ -4411,8 +5106,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (act$33) begin
             inc0$1$d = ddy$1[(32'h0)+:(40)] + ps$5;
         end
-        if (t$q == handover) begin
-            plane$1$d = (plane$1$q >> frac) + (attr0$1 << bsh$1);
+        if (at_handover) begin
+            plane$1$d = (plane$1$q >> frac) + (gb$attr0$1 << bsh$1);
             inc1$1$d = inc0$1$q + ddx$1[(32'h0)+:(40)];
         end
         plane_base$2 = plane$2$q;
@@ -4423,8 +5118,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (act$36) begin
             inc0$2$d = ddy$2[(32'h0)+:(40)] + ps$8;
         end
-        if (t$q == handover) begin
-            plane$2$d = (plane$2$q >> frac) + (attr0$2 << bsh$2);
+        if (at_handover) begin
+            plane$2$d = (plane$2$q >> frac) + (gb$attr0$2 << bsh$2);
             inc1$2$d = inc0$2$q + ddx$2[(32'h0)+:(40)];
         end
         plane_base$3 = plane$3$q;
@@ -4435,8 +5130,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (act$39) begin
             inc0$3$d = ddy$3[(32'h0)+:(40)] + ps$11;
         end
-        if (t$q == handover) begin
-            plane$3$d = (plane$3$q >> frac) + (attr0$3 << bsh$3);
+        if (at_handover) begin
+            plane$3$d = (plane$3$q >> frac) + (gb$attr0$3 << bsh$3);
             inc1$3$d = inc0$3$q + ddx$3[(32'h0)+:(40)];
         end
         plane_base$4 = plane$4$q;
@@ -4447,8 +5142,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (act$42) begin
             inc0$4$d = ddy$0[(32'h0)+:(40)] + ps$14;
         end
-        if (t$q == handover) begin
-            plane$4$d = (plane$4$q >> frac) + (attr0$0 << bsh$0);
+        if (at_handover) begin
+            plane$4$d = (plane$4$q >> frac) + (gb$attr0$0 << bsh$0);
             inc1$4$d = inc0$4$q + ddx$0[(32'h0)+:(40)];
         end
         plane_base$5 = plane$5$q;
@@ -4459,8 +5154,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (act$45) begin
             inc0$5$d = ddy$1[(32'h0)+:(40)] + ps$17;
         end
-        if (t$q == handover) begin
-            plane$5$d = (plane$5$q >> frac) + (attr0$1 << bsh$1);
+        if (at_handover) begin
+            plane$5$d = (plane$5$q >> frac) + (gb$attr0$1 << bsh$1);
             inc1$5$d = inc0$5$q + ddx$1[(32'h0)+:(40)];
         end
         plane_base$6 = plane$6$q;
@@ -4471,8 +5166,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (act$48) begin
             inc0$6$d = ddy$2[(32'h0)+:(40)] + ps$20;
         end
-        if (t$q == handover) begin
-            plane$6$d = (plane$6$q >> frac) + (attr0$2 << bsh$2);
+        if (at_handover) begin
+            plane$6$d = (plane$6$q >> frac) + (gb$attr0$2 << bsh$2);
             inc1$6$d = inc0$6$q + ddx$2[(32'h0)+:(40)];
         end
         plane_base$7 = plane$7$q;
@@ -4483,8 +5178,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (act$51) begin
             inc0$7$d = ddy$3[(32'h0)+:(40)] + ps$23;
         end
-        if (t$q == handover) begin
-            plane$7$d = (plane$7$q >> frac) + (attr0$3 << bsh$3);
+        if (at_handover) begin
+            plane$7$d = (plane$7$q >> frac) + (gb$attr0$3 << bsh$3);
             inc1$7$d = inc0$7$q + ddx$3[(32'h0)+:(40)];
         end
         plane_base$8 = plane$8$q;
@@ -4495,8 +5190,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (act$54) begin
             inc0$8$d = ddy$0[(32'h0)+:(40)] + ps$26;
         end
-        if (t$q == handover) begin
-            plane$8$d = (plane$8$q >> frac) + (attr0$0 << bsh$0);
+        if (at_handover) begin
+            plane$8$d = (plane$8$q >> frac) + (gb$attr0$0 << bsh$0);
             inc1$8$d = inc0$8$q + ddx$0[(32'h0)+:(40)];
         end
         plane_base$9 = plane$9$q;
@@ -4507,8 +5202,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (act$57) begin
             inc0$9$d = ddy$1[(32'h0)+:(40)] + ps$29;
         end
-        if (t$q == handover) begin
-            plane$9$d = (plane$9$q >> frac) + (attr0$1 << bsh$1);
+        if (at_handover) begin
+            plane$9$d = (plane$9$q >> frac) + (gb$attr0$1 << bsh$1);
             inc1$9$d = inc0$9$q + ddx$1[(32'h0)+:(40)];
         end
         plane_base$10 = plane$10$q;
@@ -4519,8 +5214,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (act$60) begin
             inc0$10$d = ddy$2[(32'h0)+:(40)] + ps$32;
         end
-        if (t$q == handover) begin
-            plane$10$d = (plane$10$q >> frac) + (attr0$2 << bsh$2);
+        if (at_handover) begin
+            plane$10$d = (plane$10$q >> frac) + (gb$attr0$2 << bsh$2);
             inc1$10$d = inc0$10$q + ddx$2[(32'h0)+:(40)];
         end
         plane_base$11 = plane$11$q;
@@ -4531,19 +5226,19 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (act$63) begin
             inc0$11$d = ddy$3[(32'h0)+:(40)] + ps$35;
         end
-        if (t$q == handover) begin
-            plane$11$d = (plane$11$q >> frac) + (attr0$3 << bsh$3);
+        if (at_handover) begin
+            plane$11$d = (plane$11$q >> frac) + (gb$attr0$3 << bsh$3);
             inc1$11$d = inc0$11$q + ddx$3[(32'h0)+:(40)];
         end
-        out$walk = up;
-        out$maj_left = maj_left;
-        out$maj_j = cy$0[(frac)+:(13)];
-        out$maj_count = count$0;
+        out$walk = gb$up;
+        out$maj_left = maj_left_b$q;
+        out$maj_j = gb$cy$0[(frac)+:(13)];
+        out$maj_count = gb$count$0;
         out$maj_x = x$0$q[(32'h0)+:(13)];
         out$maj_r = r$0$q;
         out$maj_q = q$0$q[(32'h0)+:(17)];
         out$maj_rho = rho$0$q;
-        out$maj_d = ed16$0[(32'h0)+:(21)];
+        out$maj_d = gb$ed16$0[(32'h0)+:(21)];
         out$maj_at_z = plane$0$q[(32'h0)+:(36)];
         out$maj_at_c0 = plane$1$q[(32'h0)+:(32)];
         out$maj_at_c1 = plane$2$q[(32'h0)+:(32)];
@@ -4556,13 +5251,13 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         out$maj_inc1_c0 = inc1$1$q[(32'h0)+:(36)];
         out$maj_inc1_c1 = inc1$2$q[(32'h0)+:(36)];
         out$maj_inc1_c2 = inc1$3$q[(32'h0)+:(36)];
-        out$short0_j = cy$1[(frac)+:(13)];
-        out$short0_count = count$1;
+        out$short0_j = gb$cy$1[(frac)+:(13)];
+        out$short0_count = gb$count$1;
         out$short0_x = x$1$q[(32'h0)+:(13)];
         out$short0_r = r$1$q;
         out$short0_q = q$1$q[(32'h0)+:(17)];
         out$short0_rho = rho$1$q;
-        out$short0_d = ed16$1[(32'h0)+:(21)];
+        out$short0_d = gb$ed16$1[(32'h0)+:(21)];
         out$short0_at_z = plane$4$q[(32'h0)+:(36)];
         out$short0_at_c0 = plane$5$q[(32'h0)+:(32)];
         out$short0_at_c1 = plane$6$q[(32'h0)+:(32)];
@@ -4575,13 +5270,13 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         out$short0_inc1_c0 = inc1$5$q[(32'h0)+:(36)];
         out$short0_inc1_c1 = inc1$6$q[(32'h0)+:(36)];
         out$short0_inc1_c2 = inc1$7$q[(32'h0)+:(36)];
-        out$short1_j = cy$2[(frac)+:(13)];
-        out$short1_count = count$2;
+        out$short1_j = gb$cy$2[(frac)+:(13)];
+        out$short1_count = gb$count$2;
         out$short1_x = x$2$q[(32'h0)+:(13)];
         out$short1_r = r$2$q;
         out$short1_q = q$2$q[(32'h0)+:(17)];
         out$short1_rho = rho$2$q;
-        out$short1_d = ed16$2[(32'h0)+:(21)];
+        out$short1_d = gb$ed16$2[(32'h0)+:(21)];
         out$short1_at_z = plane$8$q[(32'h0)+:(36)];
         out$short1_at_c0 = plane$9$q[(32'h0)+:(32)];
         out$short1_at_c1 = plane$10$q[(32'h0)+:(32)];
@@ -4641,12 +5336,32 @@ module triangle_setup$crosses(d,q,clock);
 endmodule // triangle_setup$crosses
 
 
-module triangle_setup$div(clock,inp_valid,inp_ready,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
+module triangle_setup$crosses_b(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$crosses_b
+
+
+module triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
     
     // Module arguments
     input wire  clock;
     input wire  inp_valid;
     output reg  inp_ready;
+    input wire  hold;
     input wire  [57:0] inp_n;
     input wire  [33:0] inp_d;
     output reg  out_valid;
@@ -4799,7 +5514,7 @@ module triangle_setup$div(clock,inp_valid,inp_ready,inp_n,inp_d,out_valid,out_re
     
     // Update code
     always @(*) begin
-        advance = ~stages$4$valid | out_ready;
+        advance = ~hold & (~stages$4$valid | out_ready);
         out_valid = stages$4$valid;
         last_x = stages$4$x;
         out_r = stages$4$p;
@@ -6279,6 +6994,636 @@ module triangle_setup$exp(d,q,clock);
 endmodule // triangle_setup$exp
 
 
+module triangle_setup$ga(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+    
+    // Module arguments
+    input wire  [15:0] vx$0;
+    input wire  [15:0] vx$1;
+    input wire  [15:0] vx$2;
+    input wire  [15:0] vy$0;
+    input wire  [15:0] vy$1;
+    input wire  [15:0] vy$2;
+    input wire  [17:0] vz$0;
+    input wire  [17:0] vz$1;
+    input wire  [17:0] vz$2;
+    input wire  [7:0] vc$0;
+    input wire  [7:0] vc$1;
+    input wire  [7:0] vc$2;
+    input wire  [7:0] vc$3;
+    input wire  [7:0] vc$4;
+    input wire  [7:0] vc$5;
+    input wire  [7:0] vc$6;
+    input wire  [7:0] vc$7;
+    input wire  [7:0] vc$8;
+    input wire  [5:0] crosses;
+    input wire  maj_left;
+    input wire  [18:0] start_x$0;
+    input wire  [18:0] start_x$1;
+    input wire  [18:0] start_x$2;
+    output reg  [57:0] kdx$0;
+    output reg  [57:0] kdx$1;
+    output reg  [57:0] kdx$2;
+    output reg  [56:0] kdy$0;
+    output reg  [56:0] kdy$1;
+    output reg  [56:0] kdy$2;
+    output reg  up;
+    output reg  [57:0] edx$0;
+    output reg  [57:0] edx$1;
+    output reg  [57:0] edx$2;
+    output reg  [56:0] edy$0;
+    output reg  [56:0] edy$1;
+    output reg  [56:0] edy$2;
+    output reg  [33:0] edy_d$0;
+    output reg  [33:0] edy_d$1;
+    output reg  [33:0] edy_d$2;
+    output reg  [33:0] ed16$0;
+    output reg  [33:0] ed16$1;
+    output reg  [33:0] ed16$2;
+    output reg  [18:0] cy$0;
+    output reg  [18:0] cy$1;
+    output reg  [18:0] cy$2;
+    output reg  [12:0] count$0;
+    output reg  [12:0] count$1;
+    output reg  [12:0] count$2;
+    output reg  [18:0] toff$0;
+    output reg  [18:0] toff$1;
+    output reg  [18:0] toff$2;
+    output reg  [18:0] xf$0;
+    output reg  [18:0] xf$1;
+    output reg  [18:0] xf$2;
+    output reg  [18:0] xi$0;
+    output reg  [18:0] xi$1;
+    output reg  [18:0] xi$2;
+    output reg  [18:0] off_x$0;
+    output reg  [18:0] off_x$1;
+    output reg  [18:0] off_x$2;
+    output reg  [18:0] off_y$0;
+    output reg  [18:0] off_y$1;
+    output reg  [18:0] off_y$2;
+    output reg  [18:0] dmaj$0;
+    output reg  [18:0] dmaj$1;
+    output reg  [18:0] dmaj$2;
+    output reg  [18:0] dmaj$3;
+    output reg  [18:0] dbot$0;
+    output reg  [18:0] dbot$1;
+    output reg  [18:0] dbot$2;
+    output reg  [18:0] dbot$3;
+    output reg  [39:0] attr0$0;
+    output reg  [39:0] attr0$1;
+    output reg  [39:0] attr0$2;
+    output reg  [39:0] attr0$3;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    localparam  half_m1 = 19'b111;
+    localparam  half = 19'b1000;
+    localparam  int_mask = 19'b1111111111111110000;
+    localparam  frac_mask = 19'b1111;
+    localparam  xy_msb = 8'hf;
+    localparam  z_msb = 8'h11;
+    localparam  nb_msb = 8'h12;
+    localparam  xy_ext = 58'h3ffffffffff0000;
+    localparam  y_ext = 57'h1ffffffffff0000;
+    localparam  z_ext = 19'b1000000000000000000;
+    localparam  shr_ext = 19'b1111000000000000000;
+    localparam  top_bit = 8'h2;
+    localparam  bottom_bit = 8'h3;
+    
+    // Local signals
+    reg  [57:0] xw$0;
+    reg  [57:0] xw$1;
+    reg  [57:0] xw$2;
+    reg  [56:0] yw$0;
+    reg  [56:0] yw$1;
+    reg  [56:0] yw$2;
+    reg  [18:0] zn$0;
+    reg  [18:0] zn$1;
+    reg  [18:0] zn$2;
+    reg  [18:0] cn$0;
+    reg  [18:0] cn$1;
+    reg  [18:0] cn$2;
+    reg  [18:0] cn$3;
+    reg  [18:0] cn$4;
+    reg  [18:0] cn$5;
+    reg  [18:0] cn$6;
+    reg  [18:0] cn$7;
+    reg  [18:0] cn$8;
+    reg  [18:0] xn$0;
+    reg  [18:0] xn$1;
+    reg  [18:0] xn$2;
+    reg  [18:0] yn$0;
+    reg  [18:0] yn$1;
+    reg  [18:0] yn$2;
+    reg  [18:0] cv$0;
+    reg  [18:0] cv$1;
+    reg  [18:0] cv$2;
+    reg  [12:0] span$0;
+    reg  [12:0] span$1;
+    reg  [12:0] span$2;
+    reg  [18:0] diff$0;
+    reg  [18:0] diff$1;
+    reg  [18:0] diff$2;
+    reg  [18:0] bx$0;
+    reg  [18:0] bx$1;
+    reg  [18:0] bx$2;
+    reg  [18:0] by$0;
+    reg  [18:0] by$1;
+    reg  [18:0] by$2;
+    reg  [18:0] xb$0;
+    reg  [18:0] xb$1;
+    reg  [18:0] xb$2;
+    reg  [18:0] tracked$0;
+    reg  [18:0] tracked$1;
+    reg  [18:0] tracked$2;
+    
+    // Update code
+    always @(*) begin
+        xw$0 = ((vx$0) & 58'h3ffffffffffffff);
+        if (vx$0[xy_msb]) begin
+            xw$0 = ((vx$0) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$1 = ((vx$1) & 58'h3ffffffffffffff);
+        if (vx$1[xy_msb]) begin
+            xw$1 = ((vx$1) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$2 = ((vx$2) & 58'h3ffffffffffffff);
+        if (vx$2[xy_msb]) begin
+            xw$2 = ((vx$2) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        yw$0 = ((vy$0) & 57'h1ffffffffffffff);
+        if (vy$0[xy_msb]) begin
+            yw$0 = ((vy$0) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$1 = ((vy$1) & 57'h1ffffffffffffff);
+        if (vy$1[xy_msb]) begin
+            yw$1 = ((vy$1) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$2 = ((vy$2) & 57'h1ffffffffffffff);
+        if (vy$2[xy_msb]) begin
+            yw$2 = ((vy$2) & 57'h1ffffffffffffff) | y_ext;
+        end
+        zn$0 = ((vz$0) & 19'h7ffff);
+        if (vz$0[z_msb]) begin
+            zn$0 = ((vz$0) & 19'h7ffff) | z_ext;
+        end
+        zn$1 = ((vz$1) & 19'h7ffff);
+        if (vz$1[z_msb]) begin
+            zn$1 = ((vz$1) & 19'h7ffff) | z_ext;
+        end
+        zn$2 = ((vz$2) & 19'h7ffff);
+        if (vz$2[z_msb]) begin
+            zn$2 = ((vz$2) & 19'h7ffff) | z_ext;
+        end
+        cn$0 = ((vc$0) & 19'h7ffff);
+        cn$1 = ((vc$1) & 19'h7ffff);
+        cn$2 = ((vc$2) & 19'h7ffff);
+        cn$3 = ((vc$3) & 19'h7ffff);
+        cn$4 = ((vc$4) & 19'h7ffff);
+        cn$5 = ((vc$5) & 19'h7ffff);
+        cn$6 = ((vc$6) & 19'h7ffff);
+        cn$7 = ((vc$7) & 19'h7ffff);
+        cn$8 = ((vc$8) & 19'h7ffff);
+        xn$0 = xw$0[(32'h0)+:(19)];
+        yn$0 = yw$0[(32'h0)+:(19)];
+        cv$0 = ((yn$0 + half_m1) & int_mask) | half;
+        xn$1 = xw$1[(32'h0)+:(19)];
+        yn$1 = yw$1[(32'h0)+:(19)];
+        cv$1 = ((yn$1 + half_m1) & int_mask) | half;
+        xn$2 = xw$2[(32'h0)+:(19)];
+        yn$2 = yw$2[(32'h0)+:(19)];
+        cv$2 = ((yn$2 + half_m1) & int_mask) | half;
+        kdx$0 = xw$2 - xw$0;
+        kdy$0 = yw$2 - yw$0;
+        diff$0 = cv$2 - cv$0;
+        kdx$1 = xw$1 - xw$0;
+        kdy$1 = yw$1 - yw$0;
+        diff$1 = cv$1 - cv$0;
+        kdx$2 = xw$2 - xw$1;
+        kdy$2 = yw$2 - yw$1;
+        diff$2 = cv$2 - cv$1;
+        span$0 = diff$0[(frac)+:(13)];
+        if (diff$0[nb_msb]) begin
+            span$0 = 32'h0;
+        end
+        span$1 = diff$1[(frac)+:(13)];
+        if (diff$1[nb_msb]) begin
+            span$1 = 32'h0;
+        end
+        span$2 = diff$2[(frac)+:(13)];
+        if (diff$2[nb_msb]) begin
+            span$2 = 32'h0;
+        end
+        up = crosses[top_bit] & ~crosses[bottom_bit];
+        edx$0 = kdx$0;
+        edy$0 = kdy$0;
+        count$0 = span$0;
+        edx$1 = kdx$1;
+        edy$1 = kdy$1;
+        count$1 = span$1;
+        edx$2 = kdx$2;
+        edy$2 = kdy$2;
+        count$2 = span$2;
+        bx$0 = xn$0;
+        by$0 = yn$0;
+        cy$0 = cv$0;
+        bx$1 = xn$0;
+        by$1 = yn$0;
+        cy$1 = cv$0;
+        bx$2 = xn$1;
+        by$2 = yn$1;
+        cy$2 = cv$1;
+        if (up) begin
+            edx$1 = kdx$2;
+            edy$1 = kdy$2;
+            count$1 = span$2;
+            edx$2 = kdx$1;
+            edy$2 = kdy$1;
+            count$2 = span$1;
+            bx$0 = xn$2;
+            by$0 = yn$2;
+            cy$0 = cv$2 - (frac_mask + 32'h1);
+            bx$1 = xn$2;
+            by$1 = yn$2;
+            cy$1 = cv$2 - (frac_mask + 32'h1);
+            cy$2 = cv$1 - (frac_mask + 32'h1);
+        end
+        edy_d$0 = ((edy$0) & 34'h3ffffffff);
+        edy_d$1 = ((edy$1) & 34'h3ffffffff);
+        edy_d$2 = ((edy$2) & 34'h3ffffffff);
+        tracked$0 = start_x$0 - 32'h1;
+        if (maj_left) begin
+            tracked$0 = start_x$0;
+        end
+        tracked$1 = start_x$1;
+        if (maj_left) begin
+            tracked$1 = start_x$1 - 32'h1;
+        end
+        tracked$2 = start_x$2;
+        if (maj_left) begin
+            tracked$2 = start_x$2 - 32'h1;
+        end
+        ed16$0 = edy_d$0 << frac;
+        toff$0 = cy$0 - by$0;
+        xb$0 = bx$0 - half;
+        xf$0 = xb$0 & frac_mask;
+        xi$0 = xb$0 >> frac;
+        if (xb$0[nb_msb]) begin
+            xi$0 = (xb$0 >> frac) | shr_ext;
+        end
+        off_y$0 = cy$0 - yn$0;
+        off_x$0 = (tracked$0 << frac) + half - xn$0;
+        ed16$1 = edy_d$1 << frac;
+        toff$1 = cy$1 - by$1;
+        xb$1 = bx$1 - half;
+        xf$1 = xb$1 & frac_mask;
+        xi$1 = xb$1 >> frac;
+        if (xb$1[nb_msb]) begin
+            xi$1 = (xb$1 >> frac) | shr_ext;
+        end
+        off_y$1 = cy$1 - yn$0;
+        off_x$1 = (tracked$1 << frac) + half - xn$0;
+        ed16$2 = edy_d$2 << frac;
+        toff$2 = cy$2 - by$2;
+        xb$2 = bx$2 - half;
+        xf$2 = xb$2 & frac_mask;
+        xi$2 = xb$2 >> frac;
+        if (xb$2[nb_msb]) begin
+            xi$2 = (xb$2 >> frac) | shr_ext;
+        end
+        off_y$2 = cy$2 - yn$0;
+        off_x$2 = (tracked$2 << frac) + half - xn$0;
+        dmaj$0 = zn$2 - zn$0;
+        dbot$0 = zn$1 - zn$0;
+        attr0$0 = ((zn$0) & 40'hffffffffff);
+        attr0$1 = ((vc$0) & 40'hffffffffff);
+        attr0$2 = ((vc$1) & 40'hffffffffff);
+        attr0$3 = ((vc$2) & 40'hffffffffff);
+        dmaj$1 = cn$6 - cn$0;
+        dbot$1 = cn$3 - cn$0;
+        dmaj$2 = cn$7 - cn$1;
+        dbot$2 = cn$4 - cn$1;
+        dmaj$3 = cn$8 - cn$2;
+        dbot$3 = cn$5 - cn$2;
+    end
+    
+endmodule // triangle_setup$ga
+
+
+module triangle_setup$gb(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+    
+    // Module arguments
+    input wire  [15:0] vx$0;
+    input wire  [15:0] vx$1;
+    input wire  [15:0] vx$2;
+    input wire  [15:0] vy$0;
+    input wire  [15:0] vy$1;
+    input wire  [15:0] vy$2;
+    input wire  [17:0] vz$0;
+    input wire  [17:0] vz$1;
+    input wire  [17:0] vz$2;
+    input wire  [7:0] vc$0;
+    input wire  [7:0] vc$1;
+    input wire  [7:0] vc$2;
+    input wire  [7:0] vc$3;
+    input wire  [7:0] vc$4;
+    input wire  [7:0] vc$5;
+    input wire  [7:0] vc$6;
+    input wire  [7:0] vc$7;
+    input wire  [7:0] vc$8;
+    input wire  [5:0] crosses;
+    input wire  maj_left;
+    input wire  [18:0] start_x$0;
+    input wire  [18:0] start_x$1;
+    input wire  [18:0] start_x$2;
+    output reg  [57:0] kdx$0;
+    output reg  [57:0] kdx$1;
+    output reg  [57:0] kdx$2;
+    output reg  [56:0] kdy$0;
+    output reg  [56:0] kdy$1;
+    output reg  [56:0] kdy$2;
+    output reg  up;
+    output reg  [57:0] edx$0;
+    output reg  [57:0] edx$1;
+    output reg  [57:0] edx$2;
+    output reg  [56:0] edy$0;
+    output reg  [56:0] edy$1;
+    output reg  [56:0] edy$2;
+    output reg  [33:0] edy_d$0;
+    output reg  [33:0] edy_d$1;
+    output reg  [33:0] edy_d$2;
+    output reg  [33:0] ed16$0;
+    output reg  [33:0] ed16$1;
+    output reg  [33:0] ed16$2;
+    output reg  [18:0] cy$0;
+    output reg  [18:0] cy$1;
+    output reg  [18:0] cy$2;
+    output reg  [12:0] count$0;
+    output reg  [12:0] count$1;
+    output reg  [12:0] count$2;
+    output reg  [18:0] toff$0;
+    output reg  [18:0] toff$1;
+    output reg  [18:0] toff$2;
+    output reg  [18:0] xf$0;
+    output reg  [18:0] xf$1;
+    output reg  [18:0] xf$2;
+    output reg  [18:0] xi$0;
+    output reg  [18:0] xi$1;
+    output reg  [18:0] xi$2;
+    output reg  [18:0] off_x$0;
+    output reg  [18:0] off_x$1;
+    output reg  [18:0] off_x$2;
+    output reg  [18:0] off_y$0;
+    output reg  [18:0] off_y$1;
+    output reg  [18:0] off_y$2;
+    output reg  [18:0] dmaj$0;
+    output reg  [18:0] dmaj$1;
+    output reg  [18:0] dmaj$2;
+    output reg  [18:0] dmaj$3;
+    output reg  [18:0] dbot$0;
+    output reg  [18:0] dbot$1;
+    output reg  [18:0] dbot$2;
+    output reg  [18:0] dbot$3;
+    output reg  [39:0] attr0$0;
+    output reg  [39:0] attr0$1;
+    output reg  [39:0] attr0$2;
+    output reg  [39:0] attr0$3;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    localparam  half_m1 = 19'b111;
+    localparam  half = 19'b1000;
+    localparam  int_mask = 19'b1111111111111110000;
+    localparam  frac_mask = 19'b1111;
+    localparam  xy_msb = 8'hf;
+    localparam  z_msb = 8'h11;
+    localparam  nb_msb = 8'h12;
+    localparam  xy_ext = 58'h3ffffffffff0000;
+    localparam  y_ext = 57'h1ffffffffff0000;
+    localparam  z_ext = 19'b1000000000000000000;
+    localparam  shr_ext = 19'b1111000000000000000;
+    localparam  top_bit = 8'h2;
+    localparam  bottom_bit = 8'h3;
+    
+    // Local signals
+    reg  [57:0] xw$0;
+    reg  [57:0] xw$1;
+    reg  [57:0] xw$2;
+    reg  [56:0] yw$0;
+    reg  [56:0] yw$1;
+    reg  [56:0] yw$2;
+    reg  [18:0] zn$0;
+    reg  [18:0] zn$1;
+    reg  [18:0] zn$2;
+    reg  [18:0] cn$0;
+    reg  [18:0] cn$1;
+    reg  [18:0] cn$2;
+    reg  [18:0] cn$3;
+    reg  [18:0] cn$4;
+    reg  [18:0] cn$5;
+    reg  [18:0] cn$6;
+    reg  [18:0] cn$7;
+    reg  [18:0] cn$8;
+    reg  [18:0] xn$0;
+    reg  [18:0] xn$1;
+    reg  [18:0] xn$2;
+    reg  [18:0] yn$0;
+    reg  [18:0] yn$1;
+    reg  [18:0] yn$2;
+    reg  [18:0] cv$0;
+    reg  [18:0] cv$1;
+    reg  [18:0] cv$2;
+    reg  [12:0] span$0;
+    reg  [12:0] span$1;
+    reg  [12:0] span$2;
+    reg  [18:0] diff$0;
+    reg  [18:0] diff$1;
+    reg  [18:0] diff$2;
+    reg  [18:0] bx$0;
+    reg  [18:0] bx$1;
+    reg  [18:0] bx$2;
+    reg  [18:0] by$0;
+    reg  [18:0] by$1;
+    reg  [18:0] by$2;
+    reg  [18:0] xb$0;
+    reg  [18:0] xb$1;
+    reg  [18:0] xb$2;
+    reg  [18:0] tracked$0;
+    reg  [18:0] tracked$1;
+    reg  [18:0] tracked$2;
+    
+    // Update code
+    always @(*) begin
+        xw$0 = ((vx$0) & 58'h3ffffffffffffff);
+        if (vx$0[xy_msb]) begin
+            xw$0 = ((vx$0) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$1 = ((vx$1) & 58'h3ffffffffffffff);
+        if (vx$1[xy_msb]) begin
+            xw$1 = ((vx$1) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$2 = ((vx$2) & 58'h3ffffffffffffff);
+        if (vx$2[xy_msb]) begin
+            xw$2 = ((vx$2) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        yw$0 = ((vy$0) & 57'h1ffffffffffffff);
+        if (vy$0[xy_msb]) begin
+            yw$0 = ((vy$0) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$1 = ((vy$1) & 57'h1ffffffffffffff);
+        if (vy$1[xy_msb]) begin
+            yw$1 = ((vy$1) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$2 = ((vy$2) & 57'h1ffffffffffffff);
+        if (vy$2[xy_msb]) begin
+            yw$2 = ((vy$2) & 57'h1ffffffffffffff) | y_ext;
+        end
+        zn$0 = ((vz$0) & 19'h7ffff);
+        if (vz$0[z_msb]) begin
+            zn$0 = ((vz$0) & 19'h7ffff) | z_ext;
+        end
+        zn$1 = ((vz$1) & 19'h7ffff);
+        if (vz$1[z_msb]) begin
+            zn$1 = ((vz$1) & 19'h7ffff) | z_ext;
+        end
+        zn$2 = ((vz$2) & 19'h7ffff);
+        if (vz$2[z_msb]) begin
+            zn$2 = ((vz$2) & 19'h7ffff) | z_ext;
+        end
+        cn$0 = ((vc$0) & 19'h7ffff);
+        cn$1 = ((vc$1) & 19'h7ffff);
+        cn$2 = ((vc$2) & 19'h7ffff);
+        cn$3 = ((vc$3) & 19'h7ffff);
+        cn$4 = ((vc$4) & 19'h7ffff);
+        cn$5 = ((vc$5) & 19'h7ffff);
+        cn$6 = ((vc$6) & 19'h7ffff);
+        cn$7 = ((vc$7) & 19'h7ffff);
+        cn$8 = ((vc$8) & 19'h7ffff);
+        xn$0 = xw$0[(32'h0)+:(19)];
+        yn$0 = yw$0[(32'h0)+:(19)];
+        cv$0 = ((yn$0 + half_m1) & int_mask) | half;
+        xn$1 = xw$1[(32'h0)+:(19)];
+        yn$1 = yw$1[(32'h0)+:(19)];
+        cv$1 = ((yn$1 + half_m1) & int_mask) | half;
+        xn$2 = xw$2[(32'h0)+:(19)];
+        yn$2 = yw$2[(32'h0)+:(19)];
+        cv$2 = ((yn$2 + half_m1) & int_mask) | half;
+        kdx$0 = xw$2 - xw$0;
+        kdy$0 = yw$2 - yw$0;
+        diff$0 = cv$2 - cv$0;
+        kdx$1 = xw$1 - xw$0;
+        kdy$1 = yw$1 - yw$0;
+        diff$1 = cv$1 - cv$0;
+        kdx$2 = xw$2 - xw$1;
+        kdy$2 = yw$2 - yw$1;
+        diff$2 = cv$2 - cv$1;
+        span$0 = diff$0[(frac)+:(13)];
+        if (diff$0[nb_msb]) begin
+            span$0 = 32'h0;
+        end
+        span$1 = diff$1[(frac)+:(13)];
+        if (diff$1[nb_msb]) begin
+            span$1 = 32'h0;
+        end
+        span$2 = diff$2[(frac)+:(13)];
+        if (diff$2[nb_msb]) begin
+            span$2 = 32'h0;
+        end
+        up = crosses[top_bit] & ~crosses[bottom_bit];
+        edx$0 = kdx$0;
+        edy$0 = kdy$0;
+        count$0 = span$0;
+        edx$1 = kdx$1;
+        edy$1 = kdy$1;
+        count$1 = span$1;
+        edx$2 = kdx$2;
+        edy$2 = kdy$2;
+        count$2 = span$2;
+        bx$0 = xn$0;
+        by$0 = yn$0;
+        cy$0 = cv$0;
+        bx$1 = xn$0;
+        by$1 = yn$0;
+        cy$1 = cv$0;
+        bx$2 = xn$1;
+        by$2 = yn$1;
+        cy$2 = cv$1;
+        if (up) begin
+            edx$1 = kdx$2;
+            edy$1 = kdy$2;
+            count$1 = span$2;
+            edx$2 = kdx$1;
+            edy$2 = kdy$1;
+            count$2 = span$1;
+            bx$0 = xn$2;
+            by$0 = yn$2;
+            cy$0 = cv$2 - (frac_mask + 32'h1);
+            bx$1 = xn$2;
+            by$1 = yn$2;
+            cy$1 = cv$2 - (frac_mask + 32'h1);
+            cy$2 = cv$1 - (frac_mask + 32'h1);
+        end
+        edy_d$0 = ((edy$0) & 34'h3ffffffff);
+        edy_d$1 = ((edy$1) & 34'h3ffffffff);
+        edy_d$2 = ((edy$2) & 34'h3ffffffff);
+        tracked$0 = start_x$0 - 32'h1;
+        if (maj_left) begin
+            tracked$0 = start_x$0;
+        end
+        tracked$1 = start_x$1;
+        if (maj_left) begin
+            tracked$1 = start_x$1 - 32'h1;
+        end
+        tracked$2 = start_x$2;
+        if (maj_left) begin
+            tracked$2 = start_x$2 - 32'h1;
+        end
+        ed16$0 = edy_d$0 << frac;
+        toff$0 = cy$0 - by$0;
+        xb$0 = bx$0 - half;
+        xf$0 = xb$0 & frac_mask;
+        xi$0 = xb$0 >> frac;
+        if (xb$0[nb_msb]) begin
+            xi$0 = (xb$0 >> frac) | shr_ext;
+        end
+        off_y$0 = cy$0 - yn$0;
+        off_x$0 = (tracked$0 << frac) + half - xn$0;
+        ed16$1 = edy_d$1 << frac;
+        toff$1 = cy$1 - by$1;
+        xb$1 = bx$1 - half;
+        xf$1 = xb$1 & frac_mask;
+        xi$1 = xb$1 >> frac;
+        if (xb$1[nb_msb]) begin
+            xi$1 = (xb$1 >> frac) | shr_ext;
+        end
+        off_y$1 = cy$1 - yn$0;
+        off_x$1 = (tracked$1 << frac) + half - xn$0;
+        ed16$2 = edy_d$2 << frac;
+        toff$2 = cy$2 - by$2;
+        xb$2 = bx$2 - half;
+        xf$2 = xb$2 & frac_mask;
+        xi$2 = xb$2 >> frac;
+        if (xb$2[nb_msb]) begin
+            xi$2 = (xb$2 >> frac) | shr_ext;
+        end
+        off_y$2 = cy$2 - yn$0;
+        off_x$2 = (tracked$2 << frac) + half - xn$0;
+        dmaj$0 = zn$2 - zn$0;
+        dbot$0 = zn$1 - zn$0;
+        attr0$0 = ((zn$0) & 40'hffffffffff);
+        attr0$1 = ((vc$0) & 40'hffffffffff);
+        attr0$2 = ((vc$1) & 40'hffffffffff);
+        attr0$3 = ((vc$2) & 40'hffffffffff);
+        dmaj$1 = cn$6 - cn$0;
+        dbot$1 = cn$3 - cn$0;
+        dmaj$2 = cn$7 - cn$1;
+        dbot$2 = cn$4 - cn$1;
+        dmaj$3 = cn$8 - cn$2;
+        dbot$3 = cn$5 - cn$2;
+    end
+    
+endmodule // triangle_setup$gb
+
+
 module triangle_setup$gx$0(d,q,clock);
     
     // Module arguments
@@ -6885,6 +8230,25 @@ module triangle_setup$inc1$9(d,q,clock);
     end
           
 endmodule // triangle_setup$inc1$9
+
+
+module triangle_setup$maj_left_b(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$maj_left_b
 
 
 module triangle_setup$mant(d,q,clock);
@@ -7536,7 +8900,7 @@ module triangle_setup$rho$2(d,q,clock);
 endmodule // triangle_setup$rho$2
 
 
-module triangle_setup$t(d,q,clock);
+module triangle_setup$ta(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -7552,7 +8916,26 @@ module triangle_setup$t(d,q,clock);
        q <= d;
     end
           
-endmodule // triangle_setup$t
+endmodule // triangle_setup$ta
+
+
+module triangle_setup$tb(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$tb
 
 
 module triangle_setup$vc$0(d,q,clock);
@@ -7726,6 +9109,177 @@ module triangle_setup$vc$8(d,q,clock);
 endmodule // triangle_setup$vc$8
 
 
+module triangle_setup$vc_b$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vc_b$0
+
+
+module triangle_setup$vc_b$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vc_b$1
+
+
+module triangle_setup$vc_b$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vc_b$2
+
+
+module triangle_setup$vc_b$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vc_b$3
+
+
+module triangle_setup$vc_b$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vc_b$4
+
+
+module triangle_setup$vc_b$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vc_b$5
+
+
+module triangle_setup$vc_b$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vc_b$6
+
+
+module triangle_setup$vc_b$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vc_b$7
+
+
+module triangle_setup$vc_b$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vc_b$8
+
+
 module triangle_setup$vx$0(d,q,clock);
     
     // Module arguments
@@ -7781,6 +9335,63 @@ module triangle_setup$vx$2(d,q,clock);
     end
           
 endmodule // triangle_setup$vx$2
+
+
+module triangle_setup$vx_b$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vx_b$0
+
+
+module triangle_setup$vx_b$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vx_b$1
+
+
+module triangle_setup$vx_b$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vx_b$2
 
 
 module triangle_setup$vy$0(d,q,clock);
@@ -7840,6 +9451,63 @@ module triangle_setup$vy$2(d,q,clock);
 endmodule // triangle_setup$vy$2
 
 
+module triangle_setup$vy_b$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vy_b$0
+
+
+module triangle_setup$vy_b$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vy_b$1
+
+
+module triangle_setup$vy_b$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vy_b$2
+
+
 module triangle_setup$vz$0(d,q,clock);
     
     // Module arguments
@@ -7895,6 +9563,63 @@ module triangle_setup$vz$2(d,q,clock);
     end
           
 endmodule // triangle_setup$vz$2
+
+
+module triangle_setup$vz_b$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vz_b$0
+
+
+module triangle_setup$vz_b$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vz_b$1
+
+
+module triangle_setup$vz_b$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$vz_b$2
 
 
 module triangle_setup$x$0(d,q,clock);

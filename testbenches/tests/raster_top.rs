@@ -215,8 +215,8 @@ fn raster_top_without_optional_parts_vs_model() {
 }
 
 /// Triangles back to back: 300 one-pixel triangles, then 300 that draw nothing (a pixel
-/// wide, between centres), then large overlapping ones. Setup takes one every
-/// `setup_latency` cycles; the image and the cycles are the model's.
+/// wide, between centres), then large overlapping ones. Setup takes one every II cycles
+/// (`model::cycles::setup_timing`); the image and the cycles are the model's.
 #[test]
 fn raster_top_back_to_back_vs_model() {
     let mut rng = ChaCha8Rng::seed_from_u64(seed());
@@ -243,9 +243,9 @@ fn raster_top_back_to_back_vs_model() {
     let (prep, out) = check("back to back", &mut dut, &l, Cull::None, ready_memory(&mut |_| true));
     let r = Report::of(&out, &prep);
     assert_eq!(r.cycles, r.predicted, "cycles");
-    let setup = model::cycles::setup_latency(&Default::default()) as u64;
+    let ii = model::cycles::setup_timing(&Default::default()).interval as u64;
     let gaps: Vec<u64> = out.taken[..300].windows(2).map(|w| w[1] - w[0]).collect();
-    assert!(gaps[1..].iter().all(|&g| g == setup), "one-pixel triangles taken every {setup} cycles: {gaps:?}");
+    assert!(gaps[1..].iter().all(|&g| g == ii), "one-pixel triangles taken every {ii} cycles: {gaps:?}");
 }
 
 /// The memory port stalled (`mem$ready` low 30% of the time, in bursts), reads returning

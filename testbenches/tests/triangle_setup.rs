@@ -1,11 +1,11 @@
 //! Triangle setup (paper 001): rust-hdl and Verilator in lockstep, every output compared on
 //! every cycle, and each result (`out_*`, `TriangleSetupOut` flattened) checked against
 //! `model::triangle_setup`; latency and initiation interval against
-//! `model::cycles::setup_latency`. Its inputs are the triangles `model::cull_sort` passes.
+//! `model::cycles::setup_timing`. Its inputs are the triangles `model::cull_sort` passes.
 
 use model::ctx::Ctx;
 use model::cull_sort::{cull_sort, Cull, Sorted};
-use model::cycles::{setup_latency, Timing, SETUP_MULTIPLIERS_MAX};
+use model::cycles::{setup_latency, setup_timing, SetupTiming, Timing, SETUP_MULTIPLIERS_MAX};
 use model::triangle_setup::{triangle_setup, TriangleSetupOut};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -38,11 +38,12 @@ fn model(s: &Sorted) -> TriangleSetupOut {
     triangle_setup(s, &mut Ctx::new(FORMATS))
 }
 
-/// The cycle each triangle was taken and its result first valid.
+/// The cycle each triangle was taken, its result first valid, and the result taken.
 #[derive(Clone, Copy, Debug, Default)]
 struct Taken {
     taken: u64,
     valid: u64,
+    handed: u64,
 }
 
 /// Drives `tris` through `cycle` (one clock of one or both simulators) and checks each
@@ -81,6 +82,7 @@ fn run(cycle: &mut Cycle, tris: &[Sorted], flow: Flow, rng: &mut ChaCha8Rng) -> 
         }
         was_valid = valid && !ready;
         if valid && ready {
+            timing[in_flight[0]].handed = now;
             in_flight.pop_front();
             done += 1;
         }
@@ -172,32 +174,59 @@ fn triangle_setup_paper_001_eq2_worst_case() {
 }
 
 /// 001 Table 3 gives setup 34 cycles (7 multipliers, one 5-stage divider); this setup's
-/// schedule takes `model::cycles::setup_latency` = 18. Back to back with the output always
-/// taken, each triangle's result is valid that many cycles after it is taken, and the
-/// next triangle is taken in the cycle the result is handed over (II = latency).
+/// schedule takes `model::cycles::setup_latency` = 19 and takes a triangle every 10 cycles
+/// (`SetupTiming::interval`), two in flight. Back to back with the output always taken,
+/// each triangle's result is valid that many cycles after it is taken, and the next
+/// triangle is taken 10 cycles after the one before.
 #[test]
 fn triangle_setup_latency_and_ii_paper_001_table3() {
     let t = Timing { setup_multipliers: K as u32, divider_latency: L as u32, ..Timing::default() };
-    let latency = setup_latency(&t) as u64;
-    assert_eq!(latency, 18);
-    assert_eq!(Schedule::new(K, L).expect("K, L").latency as u64, latency);
+    let SetupTiming { latency, interval, .. } = setup_timing(&t);
+    assert_eq!((latency, interval), (19, 10));
+    let s = Schedule::new(K, L).expect("K, L");
+    assert_eq!((s.latency, s.interval), (19, 10));
     let mut rng = ChaCha8Rng::seed_from_u64(seed());
     let timing = dual(&random(&mut rng, 40), Flow::BACK_TO_BACK);
     for (i, t) in timing.iter().enumerate() {
-        assert_eq!(t.valid - t.taken, latency, "triangle {i}: {t:?}");
+        assert_eq!(t.valid - t.taken, latency as u64, "triangle {i}: {t:?}");
     }
     for (i, w) in timing.windows(2).enumerate() {
-        assert_eq!(w[1].taken - w[0].taken, latency, "triangles {i} and {}: II", i + 1);
+        assert_eq!(w[1].taken - w[0].taken, interval as u64, "triangles {i} and {}: II", i + 1);
     }
 }
 
-/// The schedule the RTL runs is the model's, for every supported K and L.
+/// While a result waits for the edge walk, setup holds the triangle behind it too: with
+/// the output taken only every 40th cycle, each result is valid exactly 19 cycles of
+/// running after its triangle was taken, the waits of the one before it added.
+#[test]
+fn triangle_setup_waits_as_one_while_a_result_is_not_taken() {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed());
+    let tris = random(&mut rng, 12);
+    let timing = dual(&tris, Flow { idle: 0.0, stall: 0.5, resume: 0.05 });
+    for (i, w) in timing.windows(2).enumerate() {
+        let (a, b) = (w[0], w[1]);
+        // The second was taken while the first was in flight: it ran until the first's
+        // result was valid, then waited until that was taken.
+        let wait = if b.taken < a.valid { a.handed - a.valid } else { 0 };
+        assert_eq!(b.valid - b.taken, 19 + wait, "triangles {i} and {}: {a:?} {b:?}", i + 1);
+        assert!(b.taken >= a.taken + 10, "triangles {i} and {}: {a:?} {b:?}", i + 1);
+    }
+}
+
+/// The schedule the RTL runs is the model's, for every supported K and L: latency, II and
+/// which of the two it is.
 #[test]
 fn triangle_setup_schedule_is_the_models_for_every_k_and_l() {
     for k in 1..=SETUP_MULTIPLIERS_MAX as usize {
         for l in 1..=DIV_QM {
             let t = Timing { setup_multipliers: k as u32, divider_latency: l as u32, ..Timing::default() };
-            assert_eq!(Schedule::new(k, l).expect("supported").latency, setup_latency(&t) as usize, "K = {k}, L = {l}");
+            let s = Schedule::new(k, l).expect("supported");
+            let want = setup_timing(&t);
+            assert_eq!(
+                (s.latency, s.interval, s.split),
+                (want.latency as usize, want.interval as usize, want.split),
+                "K = {k}, L = {l}"
+            );
         }
     }
     assert_eq!(MULTIPLIERS_MAX, SETUP_MULTIPLIERS_MAX as usize);

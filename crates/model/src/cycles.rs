@@ -9,10 +9,11 @@
 //! * `cull_sort`: latency 1, one triangle per cycle; its output register holds a
 //!   passing triangle until setup takes it, and takes the next triangle in the
 //!   cycle one leaves (a rejected one leaves the cycle after it came in);
-//! * `triangle_setup` is iterative: it holds one triangle from start to
-//!   hand-over (II = latency, plus any wait for the edge walk to take it); its
-//!   latency follows its schedule of 64 products on `multipliers` multipliers
-//!   and the divider's latency ([`setup_latency`], the schedule its RTL runs);
+//! * `triangle_setup` holds up to two triangles: it takes the next one II cycles
+//!   after the last (or when idle), and while a result waits for the edge walk
+//!   all of setup waits (the triangle behind it too); its latency and II follow
+//!   its schedule of 64 products on `multipliers` multipliers and the divider's
+//!   latency ([`setup_timing`], the schedule its RTL runs);
 //! * `edge_walk`: first span command [`edge_walk::LATENCY`] cycles after it takes
 //!   a triangle, then one scanline per cycle; it stalls while the span FIFO is full;
 //! * `span`: one cycle per pixel walked, one for a dropped span; latency 1;
@@ -58,29 +59,77 @@ impl Default for Timing {
 /// just as its products are due (see [`setup_latency`]); more would wait for the divider.
 pub const SETUP_MULTIPLIERS_MAX: u32 = 7;
 
-/// Setup's latency, from the cycle it takes a triangle to the cycle its result is valid:
-/// the schedule `rtl::triangle_setup` runs, 64 products on `multipliers` (1 to
-/// [`SETUP_MULTIPLIERS_MAX`]) multipliers, each phase's products `multipliers` per cycle,
-/// and the divider's `divider_latency` stages. With c(n) = ceil(n / multipliers):
+/// Setup's timing at `t`'s multipliers and divider ([`setup_timing`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SetupTiming {
+    /// Cycles from the cycle setup takes a triangle to the cycle its result is valid.
+    pub latency: u32,
+    /// Cycles between two triangles taken back to back (II): setup takes the next one
+    /// while the last is in its second part, so II < latency.
+    pub interval: u32,
+    /// Whether one multiplier does twice the area and the edge numerators while the other
+    /// `multipliers - 1` do eq. (2), the gradients and the starts (the split schedule), or
+    /// every phase uses all of them in turn (the sequential one).
+    pub split: bool,
+}
+
+/// Setup's latency and interval: the schedule `rtl::triangle_setup` runs, 64 products on
+/// `multipliers` (1 to [`SETUP_MULTIPLIERS_MAX`]) multipliers and the divider's
+/// `divider_latency` stages, with two triangles in flight.
 ///
-/// | step | products | cycles | waits for |
-/// |---|---|---|---|
-/// | twice the area | 2 | c(2) | vertices |
-/// | normalise, issue 1/area | - | 1 | area |
-/// | edge start numerators (from the normalise cycle on); the 6 edge divisions, one per cycle | 6 | - | vertices |
-/// | wait for 1/area and for the multipliers | - | max(L, c(6)) - 1 | the divider's L stages; the numerators' c(6) cycles |
-/// | OneOverArea x edge deltas (eq. 2) | 4 | c(4) | 1/area |
-/// | gradients dC/dx, dC/dy of z, R, G, B | 16 | c(16) | the four products |
-/// | start values and increments of 3 edges | 36 | c(36) | gradients, edge divisions |
-/// | hand-over | - | 1 | |
+/// Setup takes a triangle in the cycle the one before it reaches cycle II of its own
+/// schedule (or when it is idle); the earlier triangle's last II cycles and the later
+/// one's first overlap. Nothing they use may overlap: each multiplier and the divider are
+/// busy for at most II consecutive cycles of a triangle, no register is written by the later
+/// triangle before the earlier one has read it, and the vertex registers the late part of the
+/// schedule reads are a second copy, loaded in cycle II (so latency <= 2 II). While a result
+/// waits for the edge walk, all of setup waits with it (the later triangle too).
 ///
-/// 7 multipliers and 001's 5-stage divider: 1 + 1 + 5 + 1 + 3 + 6 + 1 = 18. With one
-/// multiplier the six numerators outlast the divider (6 > 5): 66.
-pub fn setup_latency(t: &Timing) -> u32 {
+/// Two schedules, the one with the lower II taken (then the lower latency). With
+/// c(n) = ceil(n / multipliers):
+///
+/// * **sequential**: each phase on all the multipliers in turn: twice the area c(2) cycles,
+///   normalise and issue 1/area 1, the edge numerators (from the normalise cycle) and 1/area
+///   max(L, c(6)), eq. (2) c(4), gradients c(16), starts and increments c(36), hand-over 1;
+///   every multiplier is busy from cycle 1 to the last start, so II = latency - 2.
+///   7 multipliers and 001's 5-stage divider: 1 + 1 + 5 + 1 + 3 + 6 + 1 = 18, II 16; one
+///   multiplier, 2 + 1 + 6 + 4 + 16 + 36 + 1 = 66, II 64.
+/// * **split** (2 multipliers or more): with b(n) = ceil(n / (multipliers - 1)), one
+///   multiplier does the area (cycles 1, 2) and the six numerators (3 to 8), the divisions
+///   go in at 3 (1/area) and 5 to 10 (each edge's start once its two numerators are summed,
+///   then its step); the others do eq. (2) from 3 + L (1/area back), b(4) cycles, the
+///   gradients b(16) and the starts b(36), then hand-over 1: latency 4 + L + b(4) + b(16) +
+///   b(36), II = max(8, b(4) + b(16) + b(36), ceil(latency / 2), L + b(4) - 1: the area's
+///   exponent, from cycle 3 to eq. (2)'s last). 7 multipliers and the
+///   5-stage divider: 4 + 5 + 1 + 3 + 6 = 19, II = 10 (the six multipliers' 60 slots hold
+///   the 56 products).
+pub fn setup_timing(t: &Timing) -> SetupTiming {
     let k = t.setup_multipliers;
     assert!((1..=SETUP_MULTIPLIERS_MAX).contains(&k), "setup has 1 to {SETUP_MULTIPLIERS_MAX} multipliers, not {k}");
+    let l = t.divider_latency;
     let c = |n: u32| n.div_ceil(k);
-    c(2) + 1 + t.divider_latency.max(c(6)) + c(4) + c(16) + c(36) + 1
+    let latency = c(2) + 1 + l.max(c(6)) + c(4) + c(16) + c(36) + 1;
+    let sequential = SetupTiming { latency, interval: latency - 2, split: false };
+    if k == 1 {
+        return sequential;
+    }
+    let b = |n: u32| n.div_ceil(k - 1);
+    let late = b(4) + b(16) + b(36);
+    let latency = 4 + l + late;
+    // The area's exponent, from the normalise cycle (3) to eq. (2)'s last cycle, limits II
+    // too when the divider is deep.
+    let exponent = l + b(4) - 1;
+    let split = SetupTiming { latency, interval: 8.max(late).max(latency.div_ceil(2)).max(exponent), split: true };
+    if (split.interval, split.latency) < (sequential.interval, sequential.latency) {
+        split
+    } else {
+        sequential
+    }
+}
+
+/// Setup's latency ([`setup_timing`]).
+pub fn setup_latency(t: &Timing) -> u32 {
+    setup_timing(t).latency
 }
 
 /// The predicted cycles of one frame.
@@ -98,9 +147,14 @@ pub struct FrameCycles {
 
 /// Cycles of a frame through the scanline pipeline.
 pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
-    let setup = setup_latency(t) as u64;
+    let SetupTiming { latency: setup, interval, .. } = setup_timing(t);
+    let (setup, interval) = (setup as u64, interval as u64);
     let fifo = t.span_fifo.max(1) as usize;
-    let (mut setup_free, mut ew_free, mut span_free, mut last) = (0u64, 0u64, 0u64, 0u64);
+    let (mut ew_free, mut span_free, mut last) = (0u64, 0u64, 0u64);
+    // The cycle setup may take the next triangle (the last one reaches cycle II), and the
+    // last one's result: valid from `done`, handed over in `handed` (setup waits between).
+    let mut setup_free = 0u64;
+    let mut prev: Option<(u64, u64)> = None;
     // The cycle cull_sort takes the next triangle.
     let mut cull_free = 0u64;
     let mut span_starts: Vec<u64> = Vec::new();
@@ -115,11 +169,22 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
             continue;
         }
         out.triangles += 1;
-        let setup_start = culled.max(setup_free);
+        let mut setup_start = culled.max(setup_free);
+        // No triangle is taken while setup waits; one taken before waits with it.
+        let mut wait = 0;
+        if let Some((done, handed)) = prev {
+            if (done..handed).contains(&setup_start) {
+                setup_start = handed;
+            }
+            if setup_start < done {
+                wait = handed - done;
+            }
+        }
         cull_free = setup_start;
-        let done = setup_start + setup;
+        let done = setup_start + setup + wait;
         let ew_start = done.max(ew_free);
-        setup_free = ew_start;
+        setup_free = setup_start + interval + wait;
+        prev = Some((done, ew_start));
         let mut now = ew_start + edge_walk::LATENCY as u64;
         for scanline in &w.scanlines {
             if let Some(span) = scanline {
@@ -169,16 +234,45 @@ mod tests {
     use crate::render::SpanWork;
 
     #[test]
-    fn cycles_setup_latency_counts_its_schedule() {
-        // 7 multipliers, 5-stage divider: area 1, issue 1, divider 5, eq. (2) 1,
-        // gradients 3, starts and increments 6, hand-over 1.
-        assert_eq!(setup_latency(&Timing::default()), 18);
+    fn cycles_setup_timing_counts_its_schedule() {
+        let timing = |k, l| setup_timing(&Timing { setup_multipliers: k, divider_latency: l, ..Timing::default() });
+        // 7 multipliers, 5-stage divider, split: area 2, numerators 6 on one multiplier;
+        // eq. (2) from 3 + 5 = 8, 1 cycle, gradients 3, starts 6, hand-over 1: 19. The
+        // six multipliers are busy 10 cycles: II 10.
+        assert_eq!(setup_timing(&Timing::default()), SetupTiming { latency: 19, interval: 10, split: true });
         // One multiplier: the six numerators take 6 cycles, one more than the divider:
-        // 2 + 1 + 6 + 4 + 16 + 36 + 1.
-        assert_eq!(setup_latency(&Timing { setup_multipliers: 1, ..Timing::default() }), 66);
-        // 3 multipliers, a 2-stage divider: the numerators (2 cycles) and 1/area meet:
-        // 1 + 1 + 2 + 2 + 6 + 12 + 1.
-        assert_eq!(setup_latency(&Timing { setup_multipliers: 3, divider_latency: 2, ..Timing::default() }), 25);
+        // 2 + 1 + 6 + 4 + 16 + 36 + 1; the multiplier is busy from cycle 1 to 64.
+        assert_eq!(timing(1, 5), SetupTiming { latency: 66, interval: 64, split: false });
+        // 3 multipliers, a 2-stage divider: sequential, 1 + 1 + 2 + 2 + 6 + 12 + 1 = 25, II
+        // 23; split, the two others would take 2 + 8 + 18 cycles for eq. (2) to the starts.
+        assert_eq!(timing(3, 2), SetupTiming { latency: 25, interval: 23, split: false });
+        // 4 multipliers, a 9-stage divider: split, 4 + 9 + 2 + 6 + 12 = 33, II 20 (the
+        // sequential one: 26, II 24).
+        assert_eq!(timing(4, 9), SetupTiming { latency: 33, interval: 20, split: true });
+        // A 1-stage divider: split, 4 + 1 + 10 = 15, II 10 (sequential: 14, II 12).
+        assert_eq!(timing(7, 1), SetupTiming { latency: 15, interval: 10, split: true });
+        assert_eq!(setup_latency(&Timing::default()), 19);
+    }
+
+    /// Two triangles in flight: the second is taken II cycles after the first; while the
+    /// second waits for the edge walk, the third (taken before) waits with it.
+    #[test]
+    fn cycles_setup_overlaps_triangles_and_waits_as_one() {
+        let walk = |n: usize| Work { passed_cull: true, scanlines: vec![None; n], vector_cycles: 0 };
+        // First: culled out at 1, taken, done at 20, walked 22..72. Second: culled out at 2,
+        // taken at 1 + 10 = 11, done at 30, waits for the walk until 72, walked 74..75.
+        // Third: culled out at 12, taken at 21 (the second in its cycle 10), in flight while
+        // the second waits 42 cycles: done at 21 + 19 + 42 = 82, walked 84..85.
+        assert_eq!(scanline_frame(&[walk(50), walk(1), walk(1)], &Timing::default()).total, 85);
+        // Without the long walk nothing waits: the third is done at 40, walked 42..43.
+        assert_eq!(scanline_frame(&[walk(1), walk(1), walk(1)], &Timing::default()).total, 43);
+        // A triangle offered while setup waits is taken when the result is handed over: as
+        // above, the second waits from 30 to 72; the third, culled out at 52 behind 40
+        // culled ones, goes in at 72; done at 72 + 19 = 91, walked 93..94.
+        let mut frame = vec![walk(50), walk(1)];
+        frame.extend(std::iter::repeat_n(Work::default(), 40));
+        frame.push(walk(1));
+        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 94);
     }
 
     /// A span of `c` cycles whose last cycle sends a pixel.
@@ -188,37 +282,37 @@ mod tests {
 
     #[test]
     fn cycles_one_triangle_through_the_scanline_pipeline() {
-        // Culled out at 1; setup done at 1 + 18 = 19; the walk emits at 21, 22, 23;
-        // span takes each 1 cycle later or when free: 22..27, 27..32, 32..37;
-        // the last pixel is written 2 cycles after, in cycle 38: 39 cycles.
+        // Culled out at 1; setup done at 1 + 19 = 20; the walk emits at 22, 23, 24;
+        // span takes each 1 cycle later or when free: 23..28, 28..33, 33..38;
+        // the last pixel is written 2 cycles after, in cycle 39: 40 cycles.
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], vector_cycles: 0 };
         let c = scanline_frame(std::slice::from_ref(&w), &Timing::default());
-        assert_eq!((c.total, c.span_busy, c.triangles), (39, 15, 1));
+        assert_eq!((c.total, c.span_busy, c.triangles), (40, 15, 1));
         // A culled triangle ahead costs one cycle of cull_sort only.
         let culled = Work::default();
-        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &Timing::default()).total, 40);
+        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &Timing::default()).total, 41);
         // Behind a triangle waiting for setup, culled ones wait too: the first triangle
         // leaves cull_sort for setup in cycle 1, the second (which crosses no scanline)
-        // in 19, when setup hands the first over; then the 30 culled ones go through
-        // cull_sort, one per cycle, the last one's verdict in cycle 49.
+        // in 11, when the first is in its cycle 10 (II); then the 30 culled ones go through
+        // cull_sort, one per cycle, the last one's verdict in cycle 41.
         let mut frame = vec![w.clone(), Work { passed_cull: true, ..Work::default() }];
         frame.extend(std::iter::repeat_n(culled, 30));
-        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 19 + 30);
+        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 11 + 30);
         // With a 4-deep FIFO the walk runs ahead and span never waits: busy from
-        // 22 for 53 cycles, written 2 later.
+        // 23 for 53 cycles, written 2 later.
         let long = Work { scanlines: vec![full(50), full(1), full(1), None, full(1)], ..w.clone() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&long), &Timing::default()).total, 22 + 53 + 2);
+        assert_eq!(scanline_frame(std::slice::from_ref(&long), &Timing::default()).total, 23 + 53 + 2);
         // A one-deep FIFO holds the walk until span takes each command; the last
-        // command is emitted only at 74, reaches span at 75: one idle cycle.
-        assert_eq!(scanline_frame(&[long], &Timing { span_fifo: 1, ..Timing::default() }).total, 22 + 53 + 1 + 2);
+        // command is emitted only at 75, reaches span at 76: one idle cycle.
+        assert_eq!(scanline_frame(&[long], &Timing { span_fifo: 1, ..Timing::default() }).total, 23 + 53 + 1 + 2);
         // Spans that end on pixels sent nowhere (off screen, out of the depth range, or
         // dropped): the frame ends when span is done, or 3 cycles after the last pixel.
         let mut tail = w.clone();
         tail.scanlines[2] = Some(SpanWork { cycles: 5, last_sent: Some(1) });
-        assert_eq!(scanline_frame(&[tail.clone()], &Timing::default()).total, 37);
+        assert_eq!(scanline_frame(&[tail.clone()], &Timing::default()).total, 38);
         tail.scanlines[2] = Some(SpanWork { cycles: 1, last_sent: None });
-        // Dropped: span done at 33, the pixel of cycle 31 written in 33.
-        assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 34);
+        // Dropped: span done at 34, the pixel of cycle 32 written in 34.
+        assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 35);
     }
 
     #[test]
@@ -229,13 +323,13 @@ mod tests {
         let mut frame = vec![Work::default(), w.clone()];
         frame.extend(std::iter::repeat_n(Work::default(), 30));
         let no_cull = Timing { cull_sort: false, ..Timing::default() };
-        assert_eq!(scanline_frame(&frame, &no_cull).total, 38);
-        // Without pixel_out the frame ends the cycle after span's last fragment (36):
+        assert_eq!(scanline_frame(&frame, &no_cull).total, 39);
+        // Without pixel_out the frame ends the cycle after span's last fragment (37):
         // 2 cycles less than with the depth test and write behind it.
         let no_out = Timing { pixel_out: false, ..Timing::default() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 37);
+        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 38);
         let neither = Timing { cull_sort: false, pixel_out: false, ..Timing::default() };
-        assert_eq!(scanline_frame(&frame, &neither).total, 36);
+        assert_eq!(scanline_frame(&frame, &neither).total, 37);
     }
 
     #[test]

@@ -26,7 +26,8 @@
 //! Stream: `inp_valid`/`inp_ready` in, `out_valid`/`out_ready` out; a division taken in
 //! cycle t is at the output in cycle t + L (latency `L` = `model::divider::LATENCY` = 5
 //! by default), one per cycle (II 1). The pipeline advances unless its output is valid and
-//! not taken (`inp_ready = !out_valid | out_ready`); setup always takes the output.
+//! not taken (`inp_ready = !out_valid | out_ready`), or `hold` is high: setup always takes
+//! the output and holds the whole pipeline, bubbles too, while it waits for the edge walk.
 //!
 //! Model: `model::divider`. Emitted: `hdl-out/divider.v` at the widths of
 //! `Formats::derived` (`div_dividend_bits`, `div_divisor_bits`, `div_quotient_bits`).
@@ -167,8 +168,10 @@ impl<const D: usize, const D1: usize, const QM: usize> Logic for DivStage<D, D1,
 pub struct Divider<const N: usize, const D: usize, const D1: usize, const Q: usize, const QM: usize> {
     pub clock: Signal<In, Clock>,
     pub inp_valid: Signal<In, Bit>,
-    /// `!out_valid | out_ready`: the pipeline advances.
+    /// `!hold & (!out_valid | out_ready)`: the pipeline advances.
     pub inp_ready: Signal<Out, Bit>,
+    /// Hold every stage this cycle (nothing is taken).
+    pub hold: Signal<In, Bit>,
     /// Dividend, two's complement.
     pub inp_n: Signal<In, Bits<N>>,
     /// Divisor, unsigned, at least 1.
@@ -207,6 +210,7 @@ impl<const N: usize, const D: usize, const D1: usize, const Q: usize, const QM: 
             clock: Default::default(),
             inp_valid: Default::default(),
             inp_ready: Default::default(),
+            hold: Default::default(),
             inp_n: Default::default(),
             inp_d: Default::default(),
             out_valid: Default::default(),
@@ -237,7 +241,7 @@ impl<const N: usize, const D: usize, const D1: usize, const Q: usize, const QM: 
         // The last stage, selected by a loop of one iteration: rust-hdl evaluates array
         // indices from loop variables and literals only.
         for s in (self._latency - 1)..self._latency {
-            self.advance.next = !self.stages[s].valid.val() | self.out_ready.val();
+            self.advance.next = !self.hold.val() & (!self.stages[s].valid.val() | self.out_ready.val());
             self.out_valid.next = self.stages[s].valid.val();
             self.last_x.next = self.stages[s].x.val();
             self.out_r.next = self.stages[s].p.val();
@@ -284,6 +288,7 @@ impl<const N: usize, const D: usize, const D1: usize, const Q: usize, const QM: 
             "inp_n" => self.inp_n.next = PinValue::from_value(value),
             "inp_d" => self.inp_d.next = PinValue::from_value(value),
             "out_ready" => self.out_ready.next = PinValue::from_value(value),
+            "hold" => self.hold.next = PinValue::from_value(value),
             _ => panic!("divider has no input pin {pin}"),
         }
     }

@@ -37,10 +37,11 @@
 //! `model::cycles::Timing` has the same two switches.
 //!
 //! **Timing** (`model::cycles::scanline_frame` predicts it cycle for cycle when the memory
-//! never stalls): cull_sort 1 cycle; setup `model::cycles::setup_latency`; the edge walk's
-//! first command 2 cycles after it takes a triangle, then a scanline per cycle; the span
-//! FIFO passes a command straight through when empty; span's first pixel 1 cycle after it
-//! takes a command, then a pixel per cycle; the write 2 cycles after the pixel.
+//! never stalls): cull_sort 1 cycle; setup `model::cycles::setup_timing` (latency 19, a
+//! triangle every 10 cycles at K = 7, L = 5); the edge walk's first command 2 cycles after
+//! it takes a triangle, then a scanline per cycle; the span FIFO passes a command straight
+//! through when empty; span's first pixel 1 cycle after it takes a command, then a pixel
+//! per cycle; the write 2 cycles after the pixel.
 //! Model: `model::render::render` with `Method::Scanline`. Emitted: `hdl-out/raster_top.v`.
 
 use super::cull_sort::CullSort;
@@ -83,8 +84,10 @@ pub struct RasterTopCore {
     edge_walk: EdgeWalk,
     fifo: SpanFifo,
     span: Span,
-    /// Setup holds a triangle (taken, not yet handed to the edge walk).
-    in_setup: DFF<Bit>,
+    /// Triangles in setup (taken, not yet handed to the edge walk): up to two.
+    in_setup: DFF<Bits<2>>,
+    taken: Signal<Local, Bit>,
+    handed: Signal<Local, Bit>,
     /// The last triangle taken had `inp_last`.
     last_in: DFF<Bit>,
 }
@@ -107,6 +110,8 @@ impl RasterTopCore {
             fifo: Default::default(),
             span: Span::new(parts),
             in_setup: Default::default(),
+            taken: Default::default(),
+            handed: Default::default(),
             last_in: Default::default(),
         })
     }
@@ -144,12 +149,15 @@ impl Logic for RasterTopCore {
         // Fragments out.
         PixelSource::link(&mut self.out, &mut self.span.out);
 
-        if self.inp.valid.val() & self.inp.ready.val() {
-            self.in_setup.d.next = true;
-        } else if self.triangle_setup.out.valid.val() & self.edge_walk.inp.ready.val() {
-            self.in_setup.d.next = false;
+        self.taken.next = self.inp.valid.val() & self.inp.ready.val();
+        self.handed.next = self.triangle_setup.out.valid.val() & self.edge_walk.inp.ready.val();
+        if self.taken.val() & !self.handed.val() {
+            self.in_setup.d.next = self.in_setup.q.val() + 1;
         }
-        self.idle.next = !self.in_setup.q.val()
+        if !self.taken.val() & self.handed.val() {
+            self.in_setup.d.next = self.in_setup.q.val() - 1;
+        }
+        self.idle.next = (self.in_setup.q.val() == 0)
             & self.edge_walk.inp.ready.val()
             & self.fifo.empty.val()
             & self.span.idle.val();

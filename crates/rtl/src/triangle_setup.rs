@@ -33,29 +33,42 @@
 //! 40-bit lanes (`dz`); a colour keeps its low `dc`/`c_acc` bits, the only ones its
 //! format holds (modular arithmetic, `fx::formats`).
 //!
-//! **Schedule** ([`Schedule`]; `model::cycles::setup_latency` is the same). Cycle 0 takes
-//! the triangle; each phase puts its products `K` per cycle on the multipliers; the
-//! numerators fill them from the normalise cycle on while the divider works. With 001's 7
-//! multipliers and 5-stage divider:
+//! **Schedule** ([`Schedule`]; `model::cycles::setup_timing` is the same). Cycle 0 takes
+//! the triangle. With 001's 7 multipliers and 5-stage divider the schedule is split: one
+//! multiplier does twice the area and the six edge numerators, the other six eq. (2), the
+//! gradients and the starts, so that setup can take the next triangle in the cycle this one
+//! reaches cycle 10 (II) and two are in flight:
 //!
 //! ```text
-//!  cycle    0     1     2       3   4   5   6   7     8   9  10  11 ... 16   17       18
-//!  input    take
-//!  mults          area  numer.                  eq2   gradients  starts, increments
-//!  divider issue        1/area  s0  q0  s1  q1  s2    q2
-//!  divider result                               1/area s0 q0 s1  q1  s2 q2 (12, 13)
-//!  output                                                                   hand-over valid
+//!  cycle            0     1  2    3   4   5   6   7   8      9  10  11   12 ... 17   18       19
+//!  input            take                                         take (the next triangle)
+//!  multiplier 0           area    numerators (edge 0, 1, 2)
+//!  multipliers 1-6                                       eq2    gradients   starts, increments
+//!  divider issue                  1/area  s0  q0  s1  q1     s2  q2
+//!  divider result                                        1/area    s0  q0 s1 q1 s2 q2 (15)
+//!  output                                                                        hand-over valid
 //! ```
 //!
-//! Latency 18 (001 Table 3: 34), II 18 when the edge walk takes each result at once:
-//! setup takes the next triangle in the cycle it hands one over. `K` (1 to 7,
+//! Latency 19 (001 Table 3: 34), II 10: the six multipliers' 60 slots hold the 56 products
+//! of eq. (2) to the starts, and the divider takes the seven divisions in 8 cycles. What
+//! happens up to cycle II reads the vertices as taken ([`Geometry`] `ga`); in cycle II they
+//! are copied, with the sign of the area, and everything later reads the copy (`gb`), since
+//! the next triangle is taken into the first registers in that cycle. Each register is
+//! written by the next triangle only after this one has read it for the last time, which
+//! `Schedule::build` checks and II covers. While a result waits for the edge walk, all of
+//! setup waits (`run` low: counters, registers and the divider hold), the triangle behind
+//! it too. With fewer multipliers the sequential schedule (each phase on all of them in
+//! turn, II = latency - 2) can be the better one: `K` (1 to 7,
 //! `model::cycles::SETUP_MULTIPLIERS_MAX`: with more, the last edge's products would wait
-//! for its divisions) trades latency for area, 66 cycles with one multiplier; the
-//! divider's `L` stages likewise.
+//! for its divisions) trades latency and II for area, 66 cycles and II 64 with one
+//! multiplier; the divider's `L` stages likewise.
 //!
 //! Model: `model::triangle_setup::triangle_setup`. Emitted: `hdl-out/triangle_setup.v`.
 
-use super::cull_sort::{outcode_bit, COLOR, OUTCODE, XY, Z};
+#[path = "triangle_setup/geometry.rs"]
+mod geometry;
+
+use super::cull_sort::{COLOR, OUTCODE, XY, Z};
 use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_Q, DIV_QM};
 use crate::emit::{ports, verilog, Emitted};
 use crate::mul::Mul;
@@ -63,6 +76,7 @@ use crate::parts::defaults;
 use super::links::{SortedSink, TriangleSetupSource};
 use super::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, WIDTHS, Z_ACC};
 use crate::Params;
+use geometry::Geometry;
 use rust_hdl::prelude::*;
 
 /// Multiplier operand A: the widest factor, `ooa_d` (`config::mul_a`).
@@ -112,6 +126,13 @@ pub struct Schedule {
     /// The hand-over cycle; the result is valid from the next one.
     pub handover: usize,
     pub latency: usize,
+    /// II: setup takes the next triangle in the cycle this one reaches `interval`. What
+    /// happens in cycles up to `interval` reads the vertices as taken; what happens later
+    /// reads the copy made in cycle `interval` (the next triangle overwrites the first).
+    pub interval: usize,
+    /// One multiplier for twice the area and the numerators, the others for the rest
+    /// (`model::cycles::SetupTiming::split`).
+    pub split: bool,
 }
 
 /// The products of each phase, in order: area, numerators, eq. (2), gradients, starts.
@@ -125,7 +146,8 @@ const PHASES: [usize; 5] = [2, 6, 4, 16, 36];
 pub const MULTIPLIERS_MAX: usize = 7;
 
 impl Schedule {
-    /// The schedule for `k` multipliers and an `l`-stage divider.
+    /// The schedule for `k` multipliers and an `l`-stage divider: the sequential or the
+    /// split one (`model::cycles::setup_timing`), whichever has the lower II, then latency.
     pub fn new(k: usize, l: usize) -> Result<Schedule, String> {
         if !(1..=MULTIPLIERS_MAX).contains(&k) {
             return Err(format!("triangle_setup: K = {k} multipliers is not supported: 1 to {MULTIPLIERS_MAX}"));
@@ -133,40 +155,89 @@ impl Schedule {
         if !(1..=DIV_QM).contains(&l) {
             return Err(format!("triangle_setup: L = {l} divider stages is not supported: 1 to {DIV_QM}"));
         }
-        let c = |n: usize| n.div_ceil(k);
+        let sequential = Schedule::build(k, l, false);
+        if k == 1 {
+            return Ok(sequential);
+        }
+        let split = Schedule::build(k, l, true);
+        Ok(if (split.interval, split.latency) < (sequential.interval, sequential.latency) { split } else { sequential })
+    }
+
+    /// Area and numerators on the first multiplier (`split`) or on all; the rest on the
+    /// others (`split`) or on all, each phase after the one before.
+    fn build(k: usize, l: usize, split: bool) -> Schedule {
+        let early = if split { 0..1 } else { 0..k };
+        let late = if split { 1..k } else { 0..k };
         let mut slots = Vec::with_capacity(PRODUCTS);
-        let mut place = |start: usize, n: usize| slots.extend((0..n).map(|i| (start + i / k, i % k)));
+        // Places `n` products from cycle `start` on `lanes`, as many per cycle as there are
+        // lanes; returns the next free cycle.
+        let place = |slots: &mut Vec<(usize, usize)>, start: usize, n: usize, lanes: &std::ops::Range<usize>| {
+            let w = lanes.len();
+            slots.extend((0..n).map(|i| (start + i / w, lanes.start + i % w)));
+            start + n.div_ceil(w)
+        };
         // Area from cycle 1; normalise and issue 1/area in the next free cycle; the
         // numerators from then on.
-        place(1, PHASES[0]);
-        let norm = 1 + c(PHASES[0]);
-        place(norm, PHASES[1]);
+        let norm = place(&mut slots, 1, PHASES[0], &early);
+        let numerators_end = place(&mut slots, norm, PHASES[1], &early);
         // Each edge division as soon as it may go: the start once its numerator is summed.
         let mut issue = [norm; 7];
         for j in 1..7 {
-            let ready = if j % 2 == 1 { norm + (j / 2 * 2 + 1) / k + 1 } else { 0 };
+            let ready = if j % 2 == 1 { slots[3 + (j - 1)].0.max(slots[2 + (j - 1)].0) + 1 } else { 0 };
             issue[j] = (issue[j - 1] + 1).max(ready);
         }
-        let eq2 = norm + l.max(c(PHASES[1]));
-        place(eq2, PHASES[2]);
-        let grad = eq2 + c(PHASES[2]);
-        place(grad, PHASES[3]);
-        let start = grad + c(PHASES[3]);
-        place(start, PHASES[4]);
-        let handover = start + c(PHASES[4]);
-        let s = Schedule { multipliers: k, divider_latency: l, slots, issue, handover, latency: handover + 1 };
+        // eq. (2) once 1/area is back and the multipliers are free.
+        let eq2 = (norm + l).max(if split { 1 } else { numerators_end });
+        let grad = place(&mut slots, eq2, PHASES[2], &late);
+        let start = place(&mut slots, grad, PHASES[3], &late);
+        let handover = place(&mut slots, start, PHASES[4], &late);
+        let latency = handover + 1;
+        let result = |j: usize| issue[j] + l;
         // Edge e's 12 start products need both its quotients, registered.
         for e in 0..3 {
-            let back = s.issue[2 + 2 * e] + l + 1;
-            let first = s.slots[PRODUCTS - PHASES[4] + 12 * e].0;
+            let (first, back) = (slots[PRODUCTS - PHASES[4] + 12 * e].0, result(2 + 2 * e) + 1);
             assert!(first >= back, "K = {k}, L = {l}: edge {e}'s products at {first}, its divisions back at {back}");
         }
-        Ok(s)
+        // II: each multiplier and the divider busy at most II cycles of a triangle; the
+        // vertex copy in cycle II holds until the result is handed over (latency <= 2 II);
+        // no register written by the next triangle (II cycles later) before this one has
+        // read it for the last time (read in cycle r, written first in w: II >= r - w).
+        let cycles = |range: std::ops::Range<usize>| slots[range].iter().map(|s| s.0);
+        let busy = |lane: usize| {
+            let c: Vec<usize> = slots.iter().filter(|s| s.1 == lane).map(|s| s.0).collect();
+            c.iter().max().map_or(0, |m| m - c.iter().min().unwrap() + 1)
+        };
+        let (eq2_first, eq2_last) = (cycles(8..12).min().unwrap(), cycles(8..12).max().unwrap());
+        let grad_first = cycles(12..28).min().unwrap();
+        let interval = (0..k)
+            .map(busy)
+            .chain([
+                issue[6] - issue[0] + 1,
+                latency.div_ceil(2),
+                eq2_last - issue[0],                     // the area's exponent
+                eq2_last - result(0),                    // 1/area's mantissa
+                cycles(12..28).max().unwrap() - eq2_first, // eq. (2)'s products
+                latency - grad_first,                    // the gradients (ddx is a result)
+                latency - result(1),                     // the edge divisions' results
+                latency - cycles(28..64).min().unwrap(), // starts and increments
+            ])
+            .chain((0..3).map(|e| issue[1 + 2 * e] - slots[2 + 2 * e].0)) // the numerators
+            .max()
+            .unwrap();
+        // Area, numerators and issues read the vertices as taken; the hand-over and the
+        // result read the copy.
+        assert!(numerators_end - 1 <= interval && issue[6] <= interval && handover > interval, "K = {k}, L = {l}");
+        Schedule { multipliers: k, divider_latency: l, slots, issue, handover, latency, interval, split }
     }
 
     /// The cycle a division's result is at the divider's output.
     pub fn result(&self, division: usize) -> usize {
         self.issue[division] + self.divider_latency
+    }
+
+    /// Whether cycle `c` of a triangle reads the copy of its vertices (after II).
+    pub fn late(&self, c: usize) -> bool {
+        c > self.interval
     }
 }
 
@@ -183,67 +254,37 @@ pub struct TriangleSetup {
     mul: Vec<Mul<MUL_A, MUL_B, MUL_P>>,
     div: DividerRtl,
 
-    // Control: cycles since the triangle was taken (0: idle).
-    t: DFF<Bits<8>>,
+    // Control: the cycle of the triangle in its first II cycles (`ta`, 1 to II) and of the
+    // one after them (`tb`, II + 1 to the latency); 0: none.
+    ta: DFF<Bits<8>>,
+    tb: DFF<Bits<8>>,
     take: Signal<Local, Bit>,
-    /// Product i is due this cycle.
+    /// Setup advances: no result waits for the edge walk.
+    run: Signal<Local, Bit>,
+    /// Product i, division j's issue and result, the hand-over are due this cycle.
     act: [Signal<Local, Bit>; PRODUCTS],
+    at_iss: [Signal<Local, Bit>; 7],
+    at_res: [Signal<Local, Bit>; 7],
+    at_handover: Signal<Local, Bit>,
 
-    // The triangle, as taken: x, y, z, colours (3 * vertex + channel), crosses.
+    // The triangle, as taken: x, y, z, colours (3 * vertex + channel), crosses; and the
+    // copy the schedule reads after cycle II, with the sign of its area.
     vx: [DFF<Bits<XY>>; 3],
     vy: [DFF<Bits<XY>>; 3],
     vz: [DFF<Bits<Z>>; 3],
     vc: [DFF<Bits<COLOR>>; 9],
     crosses: DFF<Bits<OUTCODE>>,
-
-    // Geometry, combinational from the triangle.
-    /// x, y sign-extended to `W` and `G` bits (y only meets the multipliers' A side and
-    /// divisors); z, colours as `NB`-bit numbers.
-    xw: [Signal<Local, Bits<W>>; 3],
-    yw: [Signal<Local, Bits<G>>; 3],
-    zn: [Signal<Local, Bits<NB>>; 3],
-    cn: [Signal<Local, Bits<NB>>; 9],
-    /// x, y as `NB`-bit numbers.
-    xn: [Signal<Local, Bits<NB>>; 3],
-    yn: [Signal<Local, Bits<NB>>; 3],
-    /// Edge vectors e_maj (v0 -> v2), e_bot (v0 -> v1), e_top (v1 -> v2): dx, dy.
-    kdx: [Signal<Local, Bits<W>>; 3],
-    kdy: [Signal<Local, Bits<G>>; 3],
-    /// The first scanline centre at or below each vertex, `(y + 7) & !15 | 8` (subpixels).
-    cv: [Signal<Local, Bits<NB>>; 3],
-    /// Scanlines between those centres along e_maj, e_bot, e_top (vMin..vMax, vMin..vMid,
-    /// vMid..vMax), 0 when negative, and the centres' differences.
-    span: [Signal<Local, Bits<PIXEL>>; 3],
-    diff: [Signal<Local, Bits<NB>>; 3],
-    /// Walk up (003): the triangle crosses the top boundary and not the bottom one.
-    up: Signal<Local, Bit>,
-    /// e_maj is the left side (twice the area < 0).
+    vx_b: [DFF<Bits<XY>>; 3],
+    vy_b: [DFF<Bits<XY>>; 3],
+    vz_b: [DFF<Bits<Z>>; 3],
+    vc_b: [DFF<Bits<COLOR>>; 9],
+    crosses_b: DFF<Bits<OUTCODE>>,
+    maj_left_b: DFF<Bit>,
+    /// The geometry of each: `ga` of the triangle as taken, `gb` of the copy.
+    ga: Geometry,
+    gb: Geometry,
+    /// e_maj is the left side (twice the area < 0), of the triangle as taken.
     maj_left: Signal<Local, Bit>,
-    /// Per edge in walk order (e_maj, then the short edges as `TriangleSetupOut::short`):
-    /// dx, dy, 2^s dy, the walk's base vertex, scanline centre, count, the start
-    /// division's offsets (t, x fraction, x integer) and the tracked side's offsets.
-    edx: [Signal<Local, Bits<W>>; 3],
-    edy: [Signal<Local, Bits<G>>; 3],
-    /// dy as the divisor (zero-extended when `G` is narrower than the divisor).
-    edy_d: [Signal<Local, Bits<DIV_D>>; 3],
-    ed16: [Signal<Local, Bits<DIV_D>>; 3],
-    bx: [Signal<Local, Bits<NB>>; 3],
-    by: [Signal<Local, Bits<NB>>; 3],
-    cy: [Signal<Local, Bits<NB>>; 3],
-    count: [Signal<Local, Bits<PIXEL>>; 3],
-    toff: [Signal<Local, Bits<NB>>; 3],
-    xb: [Signal<Local, Bits<NB>>; 3],
-    xi: [Signal<Local, Bits<NB>>; 3],
-    xf: [Signal<Local, Bits<NB>>; 3],
-    /// The pixel the side tracks: x on the left side, x - 1 on the right.
-    tracked: [Signal<Local, Bits<NB>>; 3],
-    off_x: [Signal<Local, Bits<NB>>; 3],
-    off_y: [Signal<Local, Bits<NB>>; 3],
-    /// Attribute differences from v0 along e_maj and e_bot (z, R, G, B).
-    dmaj: [Signal<Local, Bits<NB>>; 4],
-    dbot: [Signal<Local, Bits<NB>>; 4],
-    /// v0's attributes in a lane.
-    attr0: [Signal<Local, Bits<ATTR>>; 4],
 
     // Normalise.
     area: DFF<Bits<AREA>>,
@@ -262,6 +303,9 @@ pub struct TriangleSetup {
     q_msb: Constant<Bits<8>>,
     q_ext: Constant<Bits<NB>>,
     r_pos: Signal<Local, Bit>,
+    /// The start results' operands from the geometry of their cycle: x - 1/2's pixel, 2^s dy.
+    xi: [Signal<Local, Bits<NB>>; 3],
+    ed: [Signal<Local, Bits<EDGE_D>>; 3],
     x: [DFF<Bits<NB>>; 3],
     r: [DFF<Bits<EDGE_D>>; 3],
     q: [DFF<Bits<NB>>; 3],
@@ -273,9 +317,16 @@ pub struct TriangleSetup {
     pe: [Signal<Local, Bits<G>>; 4],
     pg: [Signal<Local, Bits<G>>; 16],
     ps: [Signal<Local, Bits<ATTR>>; 36],
-    /// eq. (2)'s B operands: +-e_maj.dx, e_bot.dx, e_maj.dy, e_bot.dy (sign of the area).
-    delta: [Signal<Local, Bits<NB>>; 4],
-    eq_b: [Signal<Local, Bits<NB>>; 4],
+    /// eq. (2)'s B operands: +-e_maj.dx, e_bot.dx, e_maj.dy, e_bot.dy (sign of the area),
+    /// of the triangle as taken (0 to 3) and of the copy (4 to 7).
+    delta: [Signal<Local, Bits<NB>>; 8],
+    eq_b: [Signal<Local, Bits<NB>>; 8],
+    /// The B operands from the geometry of their product's cycle: eq. (2)'s, the
+    /// gradients' (the attribute differences), the starts' (x and y offsets, per edge and
+    /// attribute).
+    op_e: [Signal<Local, Bits<NB>>; 4],
+    op_g: [Signal<Local, Bits<NB>>; 16],
+    op_s: [Signal<Local, Bits<NB>>; 24],
     /// eq. (2)'s products shifted right by exp - 15 (floor), for exp > 15; for exp <= 15
     /// the mantissa goes into the multipliers shifted left by 15 - exp instead.
     shr: [Signal<Local, Bits<G>>; 4],
@@ -301,6 +352,11 @@ pub struct TriangleSetup {
 
     // The schedule and the numbers a kernel cannot name.
     lane: [Constant<Bits<8>>; PRODUCTS],
+    /// Product i, division j's result: after cycle II, so on the vertices' copy.
+    late: [Constant<Bit>; PRODUCTS],
+    late_res: [Constant<Bit>; 7],
+    interval: Constant<Bits<8>>,
+    after_interval: Constant<Bits<8>>,
     cyc: [Constant<Bits<8>>; PRODUCTS],
     iss: [Constant<Bits<8>>; 7],
     res: [Constant<Bits<8>>; 7],
@@ -315,28 +371,17 @@ pub struct TriangleSetup {
     /// colours'), and v0's shift into the accumulator (`z_acc.frac - z.frac`, ...).
     gsh: [Constant<Bits<8>>; 4],
     bsh: [Constant<Bits<8>>; 4],
-    /// s; 2^(s-1) - 1, 2^(s-1), !(2^s - 1) and 2^s - 1 in the narrow domain.
+    /// s; the sign bits of the area and of eq. (2)'s products; ones in `G` bits.
     frac: Constant<Bits<8>>,
-    half_m1: Constant<Bits<NB>>,
-    half: Constant<Bits<NB>>,
-    int_mask: Constant<Bits<NB>>,
-    frac_mask: Constant<Bits<NB>>,
-    /// Sign bits: x, y (`XY`), z, the area, the narrow domain, eq. (2)'s products.
-    xy_msb: Constant<Bits<8>>,
-    z_msb: Constant<Bits<8>>,
     area_msb: Constant<Bits<8>>,
-    nb_msb: Constant<Bits<8>>,
     p_msb: Constant<Bits<8>>,
-    /// Ones above a sign bit: x into `W` bits, y into `G` bits, z into `NB` bits, s bits below `NB`.
-    xy_ext: Constant<Bits<W>>,
-    y_ext: Constant<Bits<G>>,
-    z_ext: Constant<Bits<NB>>,
-    shr_ext: Constant<Bits<NB>>,
     ones: Constant<Bits<G>>,
-    /// The outcode bits of the top and bottom planes.
-    top_bit: Constant<Bits<8>>,
-    bottom_bit: Constant<Bits<8>>,
     _k: usize,
+}
+
+/// An array of `N` one-bit constants from `f(i)`.
+fn flags<const N: usize>(f: impl Fn(usize) -> bool) -> [Constant<Bit>; N] {
+    std::array::from_fn(|i| Constant::new(f(i)))
 }
 
 /// An array of `N` constants from `f(i)`.
@@ -345,7 +390,7 @@ fn consts<const B: usize, const N: usize>(f: impl Fn(usize) -> usize) -> [Consta
 }
 
 /// Ones from bit `from` up to bit `to - 1`, as a `to`-bit constant or wider.
-fn ones_from<const B: usize>(from: usize, to: usize) -> Constant<Bits<B>> {
+pub(crate) fn ones_from<const B: usize>(from: usize, to: usize) -> Constant<Bits<B>> {
     Constant::new((((1u128 << (to - from)) - 1) << from).to_bits())
 }
 
@@ -357,52 +402,34 @@ impl TriangleSetup {
         let (gz, gc) =
             ((f.ooa_d.frac + f.z.frac - f.dz.frac) as usize, (f.ooa_d.frac + f.color.frac - f.dc.frac) as usize);
         let (bz, bc) = ((f.z_acc.frac - f.z.frac) as usize, (f.c_acc.frac - f.color.frac) as usize);
-        let px = 1usize << S;
         Ok(TriangleSetup {
             clock: Default::default(),
             inp: Default::default(),
             out: Default::default(),
             mul: (0..k).map(|_| Default::default()).collect(),
             div: DividerRtl::new(l),
-            t: Default::default(),
+            ta: Default::default(),
+            tb: Default::default(),
             take: Default::default(),
+            run: Default::default(),
             act: defaults(),
+            at_iss: defaults(),
+            at_res: defaults(),
+            at_handover: Default::default(),
             vx: defaults(),
             vy: defaults(),
             vz: defaults(),
             vc: defaults(),
             crosses: Default::default(),
-            xw: defaults(),
-            yw: defaults(),
-            zn: defaults(),
-            cn: defaults(),
-            xn: defaults(),
-            yn: defaults(),
-            kdx: defaults(),
-            kdy: defaults(),
-            cv: defaults(),
-            span: defaults(),
-            diff: defaults(),
-            up: Default::default(),
+            vx_b: defaults(),
+            vy_b: defaults(),
+            vz_b: defaults(),
+            vc_b: defaults(),
+            crosses_b: Default::default(),
+            maj_left_b: Default::default(),
+            ga: Default::default(),
+            gb: Default::default(),
             maj_left: Default::default(),
-            edx: defaults(),
-            edy: defaults(),
-            edy_d: defaults(),
-            ed16: defaults(),
-            bx: defaults(),
-            by: defaults(),
-            cy: defaults(),
-            count: defaults(),
-            toff: defaults(),
-            xb: defaults(),
-            xi: defaults(),
-            xf: defaults(),
-            tracked: defaults(),
-            off_x: defaults(),
-            off_y: defaults(),
-            dmaj: defaults(),
-            dbot: defaults(),
-            attr0: defaults(),
             area: Default::default(),
             area_abs: Default::default(),
             exp_c: Default::default(),
@@ -415,6 +442,8 @@ impl TriangleSetup {
             q_msb: Constant::new((QL - 1).to_bits()),
             q_ext: ones_from(QL, NB),
             r_pos: Default::default(),
+            xi: defaults(),
+            ed: defaults(),
             x: defaults(),
             r: defaults(),
             q: defaults(),
@@ -426,6 +455,9 @@ impl TriangleSetup {
             ps: defaults(),
             delta: defaults(),
             eq_b: defaults(),
+            op_e: defaults(),
+            op_g: defaults(),
+            op_s: defaults(),
             shr: defaults(),
             lsh: Default::default(),
             rsh: Default::default(),
@@ -444,6 +476,10 @@ impl TriangleSetup {
             inc0: defaults(),
             inc1: defaults(),
             lane: consts(|i| s.slots[i].1),
+            late: flags(|i| s.late(s.slots[i].0)),
+            late_res: flags(|j| s.late(s.result(j))),
+            interval: Constant::new(s.interval.to_bits()),
+            after_interval: Constant::new((s.interval + 1).to_bits()),
             cyc: consts(|i| s.slots[i].0),
             iss: consts(|j| s.issue[j]),
             res: consts(|j| s.result(j)),
@@ -455,22 +491,9 @@ impl TriangleSetup {
             gsh: consts(|a| if a == 0 { gz } else { gc }),
             bsh: consts(|a| if a == 0 { bz } else { bc }),
             frac: Constant::new((S as usize).to_bits()),
-            half_m1: Constant::new((px / 2 - 1).to_bits()),
-            half: Constant::new((px / 2).to_bits()),
-            int_mask: ones_from(S as usize, NB),
-            frac_mask: Constant::new((px - 1).to_bits()),
-            xy_msb: Constant::new((XY - 1).to_bits()),
-            z_msb: Constant::new((Z - 1).to_bits()),
             area_msb: Constant::new((AREA - 1).to_bits()),
-            nb_msb: Constant::new((NB - 1).to_bits()),
             p_msb: Constant::new((G - 1).to_bits()),
-            xy_ext: ones_from(XY, W),
-            y_ext: ones_from(XY, G),
-            z_ext: ones_from(Z, NB),
-            shr_ext: ones_from(NB - S as usize, NB),
             ones: ones_from(0, G),
-            top_bit: Constant::new(outcode_bit::TOP.to_bits()),
-            bottom_bit: Constant::new(outcode_bit::BOTTOM.to_bits()),
             _k: k,
         })
     }
@@ -480,7 +503,7 @@ impl Logic for TriangleSetup {
     #[hdl_gen]
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written.
-        dff_setup!(self, clock, t, crosses, area, exp, mant);
+        dff_setup!(self, clock, ta, tb, crosses, crosses_b, maj_left_b, area, exp, mant);
         clock!(self, clock, div);
         for i in 0..3 {
             self.vx[i].clock.next = self.clock.val();
@@ -489,6 +512,12 @@ impl Logic for TriangleSetup {
             self.vy[i].d.next = self.vy[i].q.val();
             self.vz[i].clock.next = self.clock.val();
             self.vz[i].d.next = self.vz[i].q.val();
+            self.vx_b[i].clock.next = self.clock.val();
+            self.vx_b[i].d.next = self.vx_b[i].q.val();
+            self.vy_b[i].clock.next = self.clock.val();
+            self.vy_b[i].d.next = self.vy_b[i].q.val();
+            self.vz_b[i].clock.next = self.clock.val();
+            self.vz_b[i].d.next = self.vz_b[i].q.val();
             self.x[i].clock.next = self.clock.val();
             self.x[i].d.next = self.x[i].q.val();
             self.r[i].clock.next = self.clock.val();
@@ -502,6 +531,8 @@ impl Logic for TriangleSetup {
         for i in 0..9 {
             self.vc[i].clock.next = self.clock.val();
             self.vc[i].d.next = self.vc[i].q.val();
+            self.vc_b[i].clock.next = self.clock.val();
+            self.vc_b[i].d.next = self.vc_b[i].q.val();
         }
         for a in 0..4 {
             self.p[a].clock.next = self.clock.val();
@@ -517,18 +548,45 @@ impl Logic for TriangleSetup {
             self.inc1[i].d.next = self.inc1[i].q.val();
         }
 
-        // ---- Control: take a triangle when idle or handing one over.
-        self.inp.ready.next = (self.t.q.val() == 0) | ((self.t.q.val() == self.last.val()) & self.out.ready.val());
+        self.maj_left.next = self.area.q.val().get_bit(self.area_msb.val().index());
+
+        // ---- Control. Everything waits while a result is not taken; otherwise take a
+        // triangle when none is in its first II cycles or the one there reaches cycle II,
+        // which then goes on with the vertices' copy.
+        self.run.next = !((self.tb.q.val() == self.last.val()) & !self.out.ready.val());
+        self.out.valid.next = self.tb.q.val() == self.last.val();
+        self.inp.ready.next =
+            self.run.val() & ((self.ta.q.val() == 0) | (self.ta.q.val() == self.interval.val()));
         self.take.next = self.inp.valid.val() & self.inp.ready.val();
-        self.out.valid.next = self.t.q.val() == self.last.val();
-        if (self.t.q.val() != 0) & (self.t.q.val() != self.last.val()) {
-            self.t.d.next = self.t.q.val() + 1;
-        }
-        if (self.t.q.val() == self.last.val()) & self.out.ready.val() {
-            self.t.d.next = 0.into();
+        if self.run.val() {
+            if self.ta.q.val() != 0 {
+                self.ta.d.next = self.ta.q.val() + 1;
+            }
+            if self.ta.q.val() == self.interval.val() {
+                self.ta.d.next = 0.into();
+            }
+            if self.tb.q.val() != 0 {
+                self.tb.d.next = self.tb.q.val() + 1;
+            }
+            if self.tb.q.val() == self.last.val() {
+                self.tb.d.next = 0.into();
+            }
+            if self.ta.q.val() == self.interval.val() {
+                self.tb.d.next = self.after_interval.val();
+                self.crosses_b.d.next = self.crosses.q.val();
+                self.maj_left_b.d.next = self.maj_left.val();
+                for i in 0..3 {
+                    self.vx_b[i].d.next = self.vx[i].q.val();
+                    self.vy_b[i].d.next = self.vy[i].q.val();
+                    self.vz_b[i].d.next = self.vz[i].q.val();
+                }
+                for i in 0..9 {
+                    self.vc_b[i].d.next = self.vc[i].q.val();
+                }
+            }
         }
         if self.take.val() {
-            self.t.d.next = 1.into();
+            self.ta.d.next = 1.into();
             self.vx[0].d.next = self.inp.v0_x.val();
             self.vy[0].d.next = self.inp.v0_y.val();
             self.vz[0].d.next = self.inp.v0_z.val();
@@ -549,156 +607,31 @@ impl Logic for TriangleSetup {
             self.vc[8].d.next = self.inp.v2_c2.val();
             self.crosses.d.next = self.inp.crosses.val();
         }
+        // A cycle up to II is the first triangle's (`ta`), a later one the other's (`tb`).
         for i in 0..PRODUCTS {
-            self.act[i].next = self.t.q.val() == self.cyc[i].val();
+            self.act[i].next =
+                self.run.val() & ((self.ta.q.val() == self.cyc[i].val()) | (self.tb.q.val() == self.cyc[i].val()));
         }
 
-        // ---- Geometry of the triangle taken (model: `triangle_setup`, its first lines).
-        // x, y sign-extended into the wide domain, z into the narrow one (`bit_cast` cannot
-        // take a loop's index).
-        self.xw[0].next = bit_cast::<W, XY>(self.vx[0].q.val());
-        if self.vx[0].q.val().get_bit(self.xy_msb.val().index()) {
-            self.xw[0].next = bit_cast::<W, XY>(self.vx[0].q.val()) | self.xy_ext.val();
+        // ---- Geometry of the triangle as taken and of its copy.
+        for i in 0..3 {
+            self.ga.vx[i].next = self.vx[i].q.val();
+            self.ga.vy[i].next = self.vy[i].q.val();
+            self.ga.vz[i].next = self.vz[i].q.val();
+            self.ga.start_x[i].next = self.x[i].q.val();
+            self.gb.vx[i].next = self.vx_b[i].q.val();
+            self.gb.vy[i].next = self.vy_b[i].q.val();
+            self.gb.vz[i].next = self.vz_b[i].q.val();
+            self.gb.start_x[i].next = self.x[i].q.val();
         }
-        self.xw[1].next = bit_cast::<W, XY>(self.vx[1].q.val());
-        if self.vx[1].q.val().get_bit(self.xy_msb.val().index()) {
-            self.xw[1].next = bit_cast::<W, XY>(self.vx[1].q.val()) | self.xy_ext.val();
+        for i in 0..9 {
+            self.ga.vc[i].next = self.vc[i].q.val();
+            self.gb.vc[i].next = self.vc_b[i].q.val();
         }
-        self.xw[2].next = bit_cast::<W, XY>(self.vx[2].q.val());
-        if self.vx[2].q.val().get_bit(self.xy_msb.val().index()) {
-            self.xw[2].next = bit_cast::<W, XY>(self.vx[2].q.val()) | self.xy_ext.val();
-        }
-        self.yw[0].next = bit_cast::<G, XY>(self.vy[0].q.val());
-        if self.vy[0].q.val().get_bit(self.xy_msb.val().index()) {
-            self.yw[0].next = bit_cast::<G, XY>(self.vy[0].q.val()) | self.y_ext.val();
-        }
-        self.yw[1].next = bit_cast::<G, XY>(self.vy[1].q.val());
-        if self.vy[1].q.val().get_bit(self.xy_msb.val().index()) {
-            self.yw[1].next = bit_cast::<G, XY>(self.vy[1].q.val()) | self.y_ext.val();
-        }
-        self.yw[2].next = bit_cast::<G, XY>(self.vy[2].q.val());
-        if self.vy[2].q.val().get_bit(self.xy_msb.val().index()) {
-            self.yw[2].next = bit_cast::<G, XY>(self.vy[2].q.val()) | self.y_ext.val();
-        }
-        self.zn[0].next = bit_cast::<NB, Z>(self.vz[0].q.val());
-        if self.vz[0].q.val().get_bit(self.z_msb.val().index()) {
-            self.zn[0].next = bit_cast::<NB, Z>(self.vz[0].q.val()) | self.z_ext.val();
-        }
-        self.zn[1].next = bit_cast::<NB, Z>(self.vz[1].q.val());
-        if self.vz[1].q.val().get_bit(self.z_msb.val().index()) {
-            self.zn[1].next = bit_cast::<NB, Z>(self.vz[1].q.val()) | self.z_ext.val();
-        }
-        self.zn[2].next = bit_cast::<NB, Z>(self.vz[2].q.val());
-        if self.vz[2].q.val().get_bit(self.z_msb.val().index()) {
-            self.zn[2].next = bit_cast::<NB, Z>(self.vz[2].q.val()) | self.z_ext.val();
-        }
-        self.cn[0].next = bit_cast::<NB, COLOR>(self.vc[0].q.val());
-        self.cn[1].next = bit_cast::<NB, COLOR>(self.vc[1].q.val());
-        self.cn[2].next = bit_cast::<NB, COLOR>(self.vc[2].q.val());
-        self.cn[3].next = bit_cast::<NB, COLOR>(self.vc[3].q.val());
-        self.cn[4].next = bit_cast::<NB, COLOR>(self.vc[4].q.val());
-        self.cn[5].next = bit_cast::<NB, COLOR>(self.vc[5].q.val());
-        self.cn[6].next = bit_cast::<NB, COLOR>(self.vc[6].q.val());
-        self.cn[7].next = bit_cast::<NB, COLOR>(self.vc[7].q.val());
-        self.cn[8].next = bit_cast::<NB, COLOR>(self.vc[8].q.val());
-        for v in 0..3 {
-            self.xn[v].next = self.xw[v].val().get_bits::<NB>(0);
-            self.yn[v].next = self.yw[v].val().get_bits::<NB>(0);
-            self.cv[v].next = ((self.yn[v].val() + self.half_m1.val()) & self.int_mask.val()) | self.half.val();
-        }
-        // e_maj, e_bot, e_top, and the scanlines between their ends' first centres
-        // (`span` in the model).
-        self.kdx[0].next = self.xw[2].val() - self.xw[0].val();
-        self.kdy[0].next = self.yw[2].val() - self.yw[0].val();
-        self.diff[0].next = self.cv[2].val() - self.cv[0].val();
-        self.kdx[1].next = self.xw[1].val() - self.xw[0].val();
-        self.kdy[1].next = self.yw[1].val() - self.yw[0].val();
-        self.diff[1].next = self.cv[1].val() - self.cv[0].val();
-        self.kdx[2].next = self.xw[2].val() - self.xw[1].val();
-        self.kdy[2].next = self.yw[2].val() - self.yw[1].val();
-        self.diff[2].next = self.cv[2].val() - self.cv[1].val();
-        for k in 0..3 {
-            self.span[k].next = self.diff[k].val().get_bits::<PIXEL>(self.frac.val().index());
-            if self.diff[k].val().get_bit(self.nb_msb.val().index()) {
-                self.span[k].next = 0.into();
-            }
-        }
-        // The walk direction (003) and the edges in walk order. Walking down: e_maj,
-        // e_bot, e_top, each from its upper vertex and first centre. Walking up: e_maj,
-        // e_top, e_bot, each from its lower vertex and last centre.
-        self.up.next = self.crosses.q.val().get_bit(self.top_bit.val().index())
-            & !self.crosses.q.val().get_bit(self.bottom_bit.val().index());
-        self.maj_left.next = self.area.q.val().get_bit(self.area_msb.val().index());
-        for e in 0..3 {
-            self.edx[e].next = self.kdx[e].val();
-            self.edy[e].next = self.kdy[e].val();
-            self.count[e].next = self.span[e].val();
-        }
-        self.bx[0].next = self.xn[0].val();
-        self.by[0].next = self.yn[0].val();
-        self.cy[0].next = self.cv[0].val();
-        self.bx[1].next = self.xn[0].val();
-        self.by[1].next = self.yn[0].val();
-        self.cy[1].next = self.cv[0].val();
-        self.bx[2].next = self.xn[1].val();
-        self.by[2].next = self.yn[1].val();
-        self.cy[2].next = self.cv[1].val();
-        if self.up.val() {
-            self.edx[1].next = self.kdx[2].val();
-            self.edy[1].next = self.kdy[2].val();
-            self.count[1].next = self.span[2].val();
-            self.edx[2].next = self.kdx[1].val();
-            self.edy[2].next = self.kdy[1].val();
-            self.count[2].next = self.span[1].val();
-            self.bx[0].next = self.xn[2].val();
-            self.by[0].next = self.yn[2].val();
-            self.cy[0].next = self.cv[2].val() - (self.frac_mask.val() + 1);
-            self.bx[1].next = self.xn[2].val();
-            self.by[1].next = self.yn[2].val();
-            self.cy[1].next = self.cv[2].val() - (self.frac_mask.val() + 1);
-            self.cy[2].next = self.cv[1].val() - (self.frac_mask.val() + 1);
-        }
-        // dy is positive; `bit_cast` (a loop's index cannot) widens it to the divisor.
-        self.edy_d[0].next = bit_cast::<DIV_D, G>(self.edy[0].val());
-        self.edy_d[1].next = bit_cast::<DIV_D, G>(self.edy[1].val());
-        self.edy_d[2].next = bit_cast::<DIV_D, G>(self.edy[2].val());
-        // e_maj is the left side when maj_left; the short edges are then on the right.
-        self.tracked[0].next = self.x[0].q.val() - 1;
-        if self.maj_left.val() {
-            self.tracked[0].next = self.x[0].q.val();
-        }
-        for e in 1..3 {
-            self.tracked[e].next = self.x[e].q.val();
-            if self.maj_left.val() {
-                self.tracked[e].next = self.x[e].q.val() - 1;
-            }
-        }
-        for e in 0..3 {
-            self.ed16[e].next = self.edy_d[e].val() << self.frac.val();
-            // The start division's offsets: t from the base vertex to the centre, and the
-            // base's x - 1/2 split into pixel and fraction (floor).
-            self.toff[e].next = self.cy[e].val() - self.by[e].val();
-            self.xb[e].next = self.bx[e].val() - self.half.val();
-            self.xf[e].next = self.xb[e].val() & self.frac_mask.val();
-            self.xi[e].next = self.xb[e].val() >> self.frac.val();
-            if self.xb[e].val().get_bit(self.nb_msb.val().index()) {
-                self.xi[e].next = (self.xb[e].val() >> self.frac.val()) | self.shr_ext.val();
-            }
-            // Offsets from v0 of the pixel centre this side tracks.
-            self.off_y[e].next = self.cy[e].val() - self.yn[0].val();
-            self.off_x[e].next = (self.tracked[e].val() << self.frac.val()) + self.half.val() - self.xn[0].val();
-        }
-        // Attribute differences along e_maj and e_bot; v0's attributes.
-        self.dmaj[0].next = self.zn[2].val() - self.zn[0].val();
-        self.dbot[0].next = self.zn[1].val() - self.zn[0].val();
-        self.attr0[0].next = bit_cast::<ATTR, NB>(self.zn[0].val());
-        self.attr0[1].next = bit_cast::<ATTR, COLOR>(self.vc[0].q.val());
-        self.attr0[2].next = bit_cast::<ATTR, COLOR>(self.vc[1].q.val());
-        self.attr0[3].next = bit_cast::<ATTR, COLOR>(self.vc[2].q.val());
-        for c in 0..3 {
-            self.dmaj[c + 1].next = self.cn[6 + c].val() - self.cn[c].val();
-            self.dbot[c + 1].next = self.cn[3 + c].val() - self.cn[c].val();
-        }
+        self.ga.crosses.next = self.crosses.q.val();
+        self.ga.maj_left.next = self.maj_left.val();
+        self.gb.crosses.next = self.crosses_b.q.val();
+        self.gb.maj_left.next = self.maj_left_b.q.val();
 
         // ---- Normalise twice the area for 1/area (`recip_operands`): |a| << (32 - exp).
         self.area_abs.next = self.area.q.val();
@@ -712,34 +645,43 @@ impl Logic for TriangleSetup {
             }
         }
         self.norm_d.next = self.area_abs.val() << (self.recip_top.val() - self.exp_c.val());
-        if self.t.q.val() == self.iss[0].val() {
+        // The divisions go in by the first II cycles (`Schedule::build`); results come back
+        // in either part.
+        for j in 0..7 {
+            self.at_iss[j].next = self.run.val() & (self.ta.q.val() == self.iss[j].val());
+            self.at_res[j].next = self.run.val()
+                & ((self.ta.q.val() == self.res[j].val()) | (self.tb.q.val() == self.res[j].val()));
+        }
+        self.at_handover.next = self.run.val() & (self.tb.q.val() == self.handover.val());
+        if self.at_iss[0].val() {
             self.exp.d.next = self.exp_c.val();
         }
 
         // ---- The divider: seven divisions issued, results taken.
         self.div.out_ready.next = true;
+        self.div.hold.next = !self.run.val();
         self.div.inp_valid.next = false;
         self.div.inp_n.next = 0.into();
         self.div.inp_d.next = 1.into();
-        if self.t.q.val() == self.iss[0].val() {
+        if self.at_iss[0].val() {
             self.div.inp_valid.next = true;
             self.div.inp_n.next = self.recip_n.val();
             self.div.inp_d.next = self.norm_d.val();
         }
         for e in 0..3 {
             // Unused divisions go in as 0/1 (`model::divider`).
-            if self.t.q.val() == self.iss[1 + 2 * e].val() {
+            if self.at_iss[1 + 2 * e].val() {
                 self.div.inp_valid.next = true;
-                if self.count[e].val() != 0 {
+                if self.ga.count[e].val() != 0 {
                     self.div.inp_n.next = self.num[e].q.val().get_bits::<DIV_N>(0);
-                    self.div.inp_d.next = self.ed16[e].val();
+                    self.div.inp_d.next = self.ga.ed16[e].val();
                 }
             }
-            if self.t.q.val() == self.iss[2 + 2 * e].val() {
+            if self.at_iss[2 + 2 * e].val() {
                 self.div.inp_valid.next = true;
-                if self.count[e].val() > 1 {
-                    self.div.inp_n.next = self.edx[e].val().get_bits::<DIV_N>(0);
-                    self.div.inp_d.next = self.edy_d[e].val();
+                if self.ga.count[e].val() > 1 {
+                    self.div.inp_n.next = self.ga.edx[e].val().get_bits::<DIV_N>(0);
+                    self.div.inp_d.next = self.ga.edy_d[e].val();
                 }
             }
         }
@@ -750,7 +692,7 @@ impl Logic for TriangleSetup {
         }
         self.r_pos.next = self.div.out_r.val() != 0;
         self.mant_now.next = self.mant.q.val();
-        if self.t.q.val() == self.res[0].val() {
+        if self.at_res[0].val() {
             self.mant_now.next = self.div.out_q.val().get_bits::<MANT>(0);
             self.mant.d.next = self.div.out_q.val().get_bits::<MANT>(0);
         }
@@ -763,16 +705,21 @@ impl Logic for TriangleSetup {
         }
         for e in 0..3 {
             // The start: x = first pixel at or right of the edge, r = x*D - num in [0, D).
-            if self.t.q.val() == self.res[1 + 2 * e].val() {
+            self.xi[e].next = self.ga.xi[e].val();
+            self.ed[e].next = self.ga.ed16[e].val().get_bits::<EDGE_D>(0);
+            if self.late_res[1 + 2 * e].val() {
+                self.xi[e].next = self.gb.xi[e].val();
+                self.ed[e].next = self.gb.ed16[e].val().get_bits::<EDGE_D>(0);
+            }
+            if self.at_res[1 + 2 * e].val() {
                 self.x[e].d.next = self.xi[e].val() + self.q_n.val() + self.r_pos.val();
                 self.r[e].d.next = 0.into();
                 if self.r_pos.val() {
-                    self.r[e].d.next =
-                        self.ed16[e].val().get_bits::<EDGE_D>(0) - self.div.out_r.val().get_bits::<EDGE_D>(0);
+                    self.r[e].d.next = self.ed[e].val() - self.div.out_r.val().get_bits::<EDGE_D>(0);
                 }
             }
             // The step: q + rho/D pixels per scanline.
-            if self.t.q.val() == self.res[2 + 2 * e].val() {
+            if self.at_res[2 + 2 * e].val() {
                 self.q[e].d.next = self.q_n.val();
                 self.rho[e].d.next = self.div.out_r.val().get_bits::<EDGE_D>(0) << self.frac.val();
             }
@@ -798,15 +745,60 @@ impl Logic for TriangleSetup {
         for i in 0..36 {
             self.ps[i].next = 0.into();
         }
-        // eq. (2)'s second factors: the edge deltas with the area's sign.
+        // eq. (2)'s second factors: the edge deltas with the area's sign, of the triangle as
+        // taken and of the copy.
         for k in 0..2 {
-            self.delta[k].next = self.kdx[k].val().get_bits::<NB>(0);
-            self.delta[2 + k].next = self.kdy[k].val().get_bits::<NB>(0);
+            self.delta[k].next = self.ga.kdx[k].val().get_bits::<NB>(0);
+            self.delta[2 + k].next = self.ga.kdy[k].val().get_bits::<NB>(0);
+            self.delta[4 + k].next = self.gb.kdx[k].val().get_bits::<NB>(0);
+            self.delta[6 + k].next = self.gb.kdy[k].val().get_bits::<NB>(0);
         }
         for d in 0..4 {
             self.eq_b[d].next = self.delta[d].val();
             if self.maj_left.val() {
                 self.eq_b[d].next = bits::<NB>(0) - self.delta[d].val();
+            }
+            self.eq_b[4 + d].next = self.delta[4 + d].val();
+            if self.maj_left_b.q.val() {
+                self.eq_b[4 + d].next = bits::<NB>(0) - self.delta[4 + d].val();
+            }
+        }
+        // The B operands of eq. (2), the gradients and the starts from the geometry of
+        // their cycle (`Schedule::late`; constants, so no multiplexers are built).
+        for d in 0..4 {
+            self.op_e[d].next = self.eq_b[d].val();
+            if self.late[8 + d].val() {
+                self.op_e[d].next = self.eq_b[4 + d].val();
+            }
+        }
+        for a in 0..4 {
+            self.op_g[4 * a].next = self.ga.dmaj[a].val();
+            if self.late[12 + 4 * a].val() {
+                self.op_g[4 * a].next = self.gb.dmaj[a].val();
+            }
+            self.op_g[4 * a + 1].next = self.ga.dbot[a].val();
+            if self.late[13 + 4 * a].val() {
+                self.op_g[4 * a + 1].next = self.gb.dbot[a].val();
+            }
+            self.op_g[4 * a + 2].next = self.ga.dbot[a].val();
+            if self.late[14 + 4 * a].val() {
+                self.op_g[4 * a + 2].next = self.gb.dbot[a].val();
+            }
+            self.op_g[4 * a + 3].next = self.ga.dmaj[a].val();
+            if self.late[15 + 4 * a].val() {
+                self.op_g[4 * a + 3].next = self.gb.dmaj[a].val();
+            }
+        }
+        for e in 0..3 {
+            for a in 0..4 {
+                self.op_s[8 * e + 2 * a].next = self.ga.off_x[e].val();
+                if self.late[28 + 12 * e + 3 * a].val() {
+                    self.op_s[8 * e + 2 * a].next = self.gb.off_x[e].val();
+                }
+                self.op_s[8 * e + 2 * a + 1].next = self.ga.off_y[e].val();
+                if self.late[29 + 12 * e + 3 * a].val() {
+                    self.op_s[8 * e + 2 * a + 1].next = self.gb.off_y[e].val();
+                }
             }
         }
         // ddx, ddy of each attribute: floor(g / 2^gsh), as lanes.
@@ -817,25 +809,25 @@ impl Logic for TriangleSetup {
         for m in 0..self._k {
             // Area: e_maj.dx * e_bot.dy - e_bot.dx * e_maj.dy.
             if (self.lane[0].val().index() == m) & self.act[0].val() {
-                self.mul[m].a.next = self.kdx[0].val().get_bits::<MUL_A>(0);
-                self.mul[m].b.next = self.kdy[1].val().get_bits::<MUL_B>(0);
+                self.mul[m].a.next = self.ga.kdx[0].val().get_bits::<MUL_A>(0);
+                self.mul[m].b.next = self.ga.kdy[1].val().get_bits::<MUL_B>(0);
                 self.pa[0].next = self.mul[m].p.val().get_bits::<AREA>(0);
             }
             if (self.lane[1].val().index() == m) & self.act[1].val() {
-                self.mul[m].a.next = self.kdx[1].val().get_bits::<MUL_A>(0);
-                self.mul[m].b.next = self.kdy[0].val().get_bits::<MUL_B>(0);
+                self.mul[m].a.next = self.ga.kdx[1].val().get_bits::<MUL_A>(0);
+                self.mul[m].b.next = self.ga.kdy[0].val().get_bits::<MUL_B>(0);
                 self.pa[1].next = self.mul[m].p.val().get_bits::<AREA>(0);
             }
             for e in 0..3 {
                 // Start numerator: x fraction * dy + dx * t.
                 if (self.lane[2 + 2 * e].val().index() == m) & self.act[2 + 2 * e].val() {
-                    self.mul[m].a.next = self.edy[e].val();
-                    self.mul[m].b.next = self.xf[e].val();
+                    self.mul[m].a.next = self.ga.edy[e].val();
+                    self.mul[m].b.next = self.ga.xf[e].val();
                     self.pn[2 * e].next = self.mul[m].p.val();
                 }
                 if (self.lane[3 + 2 * e].val().index() == m) & self.act[3 + 2 * e].val() {
-                    self.mul[m].a.next = self.edx[e].val().get_bits::<MUL_A>(0);
-                    self.mul[m].b.next = self.toff[e].val();
+                    self.mul[m].a.next = self.ga.edx[e].val().get_bits::<MUL_A>(0);
+                    self.mul[m].b.next = self.ga.toff[e].val();
                     self.pn[2 * e + 1].next = self.mul[m].p.val();
                 }
             }
@@ -843,7 +835,7 @@ impl Logic for TriangleSetup {
                 // eq. (2): OneOverArea's mantissa times +-delta.
                 if (self.lane[8 + d].val().index() == m) & self.act[8 + d].val() {
                     self.mul[m].a.next = self.mant_a.val();
-                    self.mul[m].b.next = self.eq_b[d].val();
+                    self.mul[m].b.next = self.op_e[d].val();
                     self.pe[d].next = self.mul[m].p.val().get_bits::<G>(0);
                 }
             }
@@ -851,22 +843,22 @@ impl Logic for TriangleSetup {
                 // dx = p_bot_dy * d_maj - p_maj_dy * d_bot; dy = p_maj_dx * d_bot - p_bot_dx * d_maj.
                 if (self.lane[12 + 4 * a].val().index() == m) & self.act[12 + 4 * a].val() {
                     self.mul[m].a.next = self.p[3].q.val();
-                    self.mul[m].b.next = self.dmaj[a].val();
+                    self.mul[m].b.next = self.op_g[4 * a].val();
                     self.pg[4 * a].next = self.mul[m].p.val().get_bits::<G>(0);
                 }
                 if (self.lane[13 + 4 * a].val().index() == m) & self.act[13 + 4 * a].val() {
                     self.mul[m].a.next = self.p[2].q.val();
-                    self.mul[m].b.next = self.dbot[a].val();
+                    self.mul[m].b.next = self.op_g[4 * a + 1].val();
                     self.pg[4 * a + 1].next = self.mul[m].p.val().get_bits::<G>(0);
                 }
                 if (self.lane[14 + 4 * a].val().index() == m) & self.act[14 + 4 * a].val() {
                     self.mul[m].a.next = self.p[0].q.val();
-                    self.mul[m].b.next = self.dbot[a].val();
+                    self.mul[m].b.next = self.op_g[4 * a + 2].val();
                     self.pg[4 * a + 2].next = self.mul[m].p.val().get_bits::<G>(0);
                 }
                 if (self.lane[15 + 4 * a].val().index() == m) & self.act[15 + 4 * a].val() {
                     self.mul[m].a.next = self.p[1].q.val();
-                    self.mul[m].b.next = self.dmaj[a].val();
+                    self.mul[m].b.next = self.op_g[4 * a + 3].val();
                     self.pg[4 * a + 3].next = self.mul[m].p.val().get_bits::<G>(0);
                 }
             }
@@ -875,12 +867,12 @@ impl Logic for TriangleSetup {
                     // at: ddx * off_x + ddy * off_y; inc0 = ddy + q * ddx.
                     if (self.lane[28 + 12 * e + 3 * a].val().index() == m) & self.act[28 + 12 * e + 3 * a].val() {
                         self.mul[m].a.next = self.ddx[a].val();
-                        self.mul[m].b.next = self.off_x[e].val();
+                        self.mul[m].b.next = self.op_s[8 * e + 2 * a].val();
                         self.ps[12 * e + 3 * a].next = self.mul[m].p.val().get_bits::<ATTR>(0);
                     }
                     if (self.lane[29 + 12 * e + 3 * a].val().index() == m) & self.act[29 + 12 * e + 3 * a].val() {
                         self.mul[m].a.next = self.ddy[a].val();
-                        self.mul[m].b.next = self.off_y[e].val();
+                        self.mul[m].b.next = self.op_s[8 * e + 2 * a + 1].val();
                         self.ps[12 * e + 3 * a + 1].next = self.mul[m].p.val().get_bits::<ATTR>(0);
                     }
                     if (self.lane[30 + 12 * e + 3 * a].val().index() == m) & self.act[30 + 12 * e + 3 * a].val() {
@@ -945,24 +937,24 @@ impl Logic for TriangleSetup {
                         self.ddy[a].val().get_bits::<ATTR>(0) + self.ps[12 * e + 3 * a + 2].val();
                 }
                 // Hand-over: at = v0's attribute + floor(plane / 2^s); inc1 = inc0 + ddx.
-                if self.t.q.val() == self.handover.val() {
+                if self.at_handover.val() {
                     self.plane[4 * e + a].d.next =
-                        (self.plane[4 * e + a].q.val() >> self.frac.val()) + (self.attr0[a].val() << self.bsh[a].val());
+                        (self.plane[4 * e + a].q.val() >> self.frac.val()) + (self.gb.attr0[a].val() << self.bsh[a].val());
                     self.inc1[4 * e + a].d.next = self.inc0[4 * e + a].q.val() + self.ddx[a].val().get_bits::<ATTR>(0);
                 }
             }
         }
 
         // ---- The result.
-        self.out.walk.next = self.up.val();
-        self.out.maj_left.next = self.maj_left.val();
-        self.out.maj_j.next = self.cy[0].val().get_bits::<PIXEL>(self.frac.val().index());
-        self.out.maj_count.next = self.count[0].val();
+        self.out.walk.next = self.gb.up.val();
+        self.out.maj_left.next = self.maj_left_b.q.val();
+        self.out.maj_j.next = self.gb.cy[0].val().get_bits::<PIXEL>(self.frac.val().index());
+        self.out.maj_count.next = self.gb.count[0].val();
         self.out.maj_x.next = self.x[0].q.val().get_bits::<PIXEL>(0);
         self.out.maj_r.next = self.r[0].q.val();
         self.out.maj_q.next = self.q[0].q.val().get_bits::<EDGE_Q>(0);
         self.out.maj_rho.next = self.rho[0].q.val();
-        self.out.maj_d.next = self.ed16[0].val().get_bits::<EDGE_D>(0);
+        self.out.maj_d.next = self.gb.ed16[0].val().get_bits::<EDGE_D>(0);
         self.out.maj_at_z.next = self.plane[0].q.val().get_bits::<Z_ACC>(0);
         self.out.maj_at_c0.next = self.plane[1].q.val().get_bits::<C_ACC>(0);
         self.out.maj_at_c1.next = self.plane[2].q.val().get_bits::<C_ACC>(0);
@@ -975,13 +967,13 @@ impl Logic for TriangleSetup {
         self.out.maj_inc1_c0.next = self.inc1[1].q.val().get_bits::<DC>(0);
         self.out.maj_inc1_c1.next = self.inc1[2].q.val().get_bits::<DC>(0);
         self.out.maj_inc1_c2.next = self.inc1[3].q.val().get_bits::<DC>(0);
-        self.out.short0_j.next = self.cy[1].val().get_bits::<PIXEL>(self.frac.val().index());
-        self.out.short0_count.next = self.count[1].val();
+        self.out.short0_j.next = self.gb.cy[1].val().get_bits::<PIXEL>(self.frac.val().index());
+        self.out.short0_count.next = self.gb.count[1].val();
         self.out.short0_x.next = self.x[1].q.val().get_bits::<PIXEL>(0);
         self.out.short0_r.next = self.r[1].q.val();
         self.out.short0_q.next = self.q[1].q.val().get_bits::<EDGE_Q>(0);
         self.out.short0_rho.next = self.rho[1].q.val();
-        self.out.short0_d.next = self.ed16[1].val().get_bits::<EDGE_D>(0);
+        self.out.short0_d.next = self.gb.ed16[1].val().get_bits::<EDGE_D>(0);
         self.out.short0_at_z.next = self.plane[4].q.val().get_bits::<Z_ACC>(0);
         self.out.short0_at_c0.next = self.plane[5].q.val().get_bits::<C_ACC>(0);
         self.out.short0_at_c1.next = self.plane[6].q.val().get_bits::<C_ACC>(0);
@@ -994,13 +986,13 @@ impl Logic for TriangleSetup {
         self.out.short0_inc1_c0.next = self.inc1[5].q.val().get_bits::<DC>(0);
         self.out.short0_inc1_c1.next = self.inc1[6].q.val().get_bits::<DC>(0);
         self.out.short0_inc1_c2.next = self.inc1[7].q.val().get_bits::<DC>(0);
-        self.out.short1_j.next = self.cy[2].val().get_bits::<PIXEL>(self.frac.val().index());
-        self.out.short1_count.next = self.count[2].val();
+        self.out.short1_j.next = self.gb.cy[2].val().get_bits::<PIXEL>(self.frac.val().index());
+        self.out.short1_count.next = self.gb.count[2].val();
         self.out.short1_x.next = self.x[2].q.val().get_bits::<PIXEL>(0);
         self.out.short1_r.next = self.r[2].q.val();
         self.out.short1_q.next = self.q[2].q.val().get_bits::<EDGE_Q>(0);
         self.out.short1_rho.next = self.rho[2].q.val();
-        self.out.short1_d.next = self.ed16[2].val().get_bits::<EDGE_D>(0);
+        self.out.short1_d.next = self.gb.ed16[2].val().get_bits::<EDGE_D>(0);
         self.out.short1_at_z.next = self.plane[8].q.val().get_bits::<Z_ACC>(0);
         self.out.short1_at_c0.next = self.plane[9].q.val().get_bits::<C_ACC>(0);
         self.out.short1_at_c1.next = self.plane[10].q.val().get_bits::<C_ACC>(0);
