@@ -8135,79 +8135,84 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     localparam  lane$61 = 8'h4;
     localparam  lane$62 = 8'h5;
     localparam  lane$63 = 8'h6;
-    localparam  late$0 = 1'b0;
-    localparam  late$1 = 1'b0;
-    localparam  late$2 = 1'b0;
-    localparam  late$3 = 1'b0;
-    localparam  late$4 = 1'b0;
-    localparam  late$5 = 1'b0;
-    localparam  late$6 = 1'b0;
-    localparam  late$7 = 1'b0;
-    localparam  late$8 = 1'b0;
-    localparam  late$9 = 1'b0;
-    localparam  late$10 = 1'b0;
-    localparam  late$11 = 1'b0;
-    localparam  late$12 = 1'b0;
-    localparam  late$13 = 1'b0;
-    localparam  late$14 = 1'b0;
-    localparam  late$15 = 1'b0;
-    localparam  late$16 = 1'b0;
-    localparam  late$17 = 1'b0;
-    localparam  late$18 = 1'b0;
-    localparam  late$19 = 1'b0;
-    localparam  late$20 = 1'b0;
-    localparam  late$21 = 1'b0;
-    localparam  late$22 = 1'b0;
-    localparam  late$23 = 1'b0;
-    localparam  late$24 = 1'b1;
-    localparam  late$25 = 1'b1;
-    localparam  late$26 = 1'b1;
-    localparam  late$27 = 1'b1;
-    localparam  late$28 = 1'b1;
-    localparam  late$29 = 1'b1;
-    localparam  late$30 = 1'b1;
-    localparam  late$31 = 1'b1;
-    localparam  late$32 = 1'b1;
-    localparam  late$33 = 1'b1;
-    localparam  late$34 = 1'b1;
-    localparam  late$35 = 1'b1;
-    localparam  late$36 = 1'b1;
-    localparam  late$37 = 1'b1;
-    localparam  late$38 = 1'b1;
-    localparam  late$39 = 1'b1;
-    localparam  late$40 = 1'b1;
-    localparam  late$41 = 1'b1;
-    localparam  late$42 = 1'b1;
-    localparam  late$43 = 1'b1;
-    localparam  late$44 = 1'b1;
-    localparam  late$45 = 1'b1;
-    localparam  late$46 = 1'b1;
-    localparam  late$47 = 1'b1;
-    localparam  late$48 = 1'b1;
-    localparam  late$49 = 1'b1;
-    localparam  late$50 = 1'b1;
-    localparam  late$51 = 1'b1;
-    localparam  late$52 = 1'b1;
-    localparam  late$53 = 1'b1;
-    localparam  late$54 = 1'b1;
-    localparam  late$55 = 1'b1;
-    localparam  late$56 = 1'b1;
-    localparam  late$57 = 1'b1;
-    localparam  late$58 = 1'b1;
-    localparam  late$59 = 1'b1;
-    localparam  late$60 = 1'b1;
-    localparam  late$61 = 1'b1;
-    localparam  late$62 = 1'b1;
-    localparam  late$63 = 1'b1;
-    localparam  late_res$0 = 1'b0;
-    localparam  late_res$1 = 1'b0;
-    localparam  late_res$2 = 1'b1;
-    localparam  late_res$3 = 1'b1;
-    localparam  late_res$4 = 1'b1;
-    localparam  late_res$5 = 1'b1;
-    localparam  late_res$6 = 1'b1;
-    localparam  interval = 8'ha;
-    localparam  after_interval = 8'hb;
+    localparam  view$0 = 8'h0;
+    localparam  view$1 = 8'h0;
+    localparam  view$2 = 8'h0;
+    localparam  view$3 = 8'h0;
+    localparam  view$4 = 8'h0;
+    localparam  view$5 = 8'h0;
+    localparam  view$6 = 8'h0;
+    localparam  view$7 = 8'h0;
+    localparam  view$8 = 8'h0;
+    localparam  view$9 = 8'h0;
+    localparam  view$10 = 8'h0;
+    localparam  view$11 = 8'h0;
+    localparam  view$12 = 8'h0;
+    localparam  view$13 = 8'h0;
+    localparam  view$14 = 8'h0;
+    localparam  view$15 = 8'h0;
+    localparam  view$16 = 8'h0;
+    localparam  view$17 = 8'h0;
+    localparam  view$18 = 8'h1;
+    localparam  view$19 = 8'h1;
+    localparam  view$20 = 8'h1;
+    localparam  view$21 = 8'h1;
+    localparam  view$22 = 8'h1;
+    localparam  view$23 = 8'h1;
+    localparam  view$24 = 8'h1;
+    localparam  view$25 = 8'h1;
+    localparam  view$26 = 8'h1;
+    localparam  view$27 = 8'h1;
+    localparam  view$28 = 8'h1;
+    localparam  view$29 = 8'h1;
+    localparam  view$30 = 8'h1;
+    localparam  view$31 = 8'h1;
+    localparam  view$32 = 8'h1;
+    localparam  view$33 = 8'h1;
+    localparam  view$34 = 8'h1;
+    localparam  view$35 = 8'h1;
+    localparam  view$36 = 8'h1;
+    localparam  view$37 = 8'h1;
+    localparam  view$38 = 8'h1;
+    localparam  view$39 = 8'h1;
+    localparam  view$40 = 8'h1;
+    localparam  view$41 = 8'h1;
+    localparam  view$42 = 8'h1;
+    localparam  view$43 = 8'h1;
+    localparam  view$44 = 8'h1;
+    localparam  view$45 = 8'h1;
+    localparam  view$46 = 8'h1;
+    localparam  view$47 = 8'h1;
+    localparam  view$48 = 8'h1;
+    localparam  view$49 = 8'h1;
+    localparam  view$50 = 8'h1;
+    localparam  view$51 = 8'h1;
+    localparam  view$52 = 8'h1;
+    localparam  view$53 = 8'h1;
+    localparam  view$54 = 8'h1;
+    localparam  view$55 = 8'h1;
+    localparam  view$56 = 8'h1;
+    localparam  view$57 = 8'h1;
+    localparam  view$58 = 8'h1;
+    localparam  view$59 = 8'h1;
+    localparam  view$60 = 8'h1;
+    localparam  view$61 = 8'h1;
+    localparam  view$62 = 8'h1;
+    localparam  view$63 = 8'h1;
+    localparam  view_res$0 = 8'h0;
+    localparam  view_res$1 = 8'h0;
+    localparam  view_res$2 = 8'h1;
+    localparam  view_res$3 = 8'h1;
+    localparam  view_res$4 = 8'h1;
+    localparam  view_res$5 = 8'h1;
+    localparam  view_res$6 = 8'h1;
+    localparam  view_handover = 8'h1;
+    localparam  ends$0 = 8'ha;
+    localparam  ends$1 = 8'h14;
+    localparam  ends$2 = 8'hff;
+    localparam  ends$3 = 8'hff;
+    localparam  last_copy = 8'h1;
+    localparam  normalise = 8'h3;
     localparam  cyc$0 = 8'h1;
     localparam  cyc$1 = 8'h2;
     localparam  cyc$2 = 8'h3;
@@ -8216,78 +8221,78 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     localparam  cyc$5 = 8'h6;
     localparam  cyc$6 = 8'h7;
     localparam  cyc$7 = 8'h8;
-    localparam  cyc$8 = 8'h8;
-    localparam  cyc$9 = 8'h8;
-    localparam  cyc$10 = 8'h8;
-    localparam  cyc$11 = 8'h8;
-    localparam  cyc$12 = 8'h9;
-    localparam  cyc$13 = 8'h9;
-    localparam  cyc$14 = 8'h9;
-    localparam  cyc$15 = 8'h9;
-    localparam  cyc$16 = 8'h9;
-    localparam  cyc$17 = 8'h9;
-    localparam  cyc$18 = 8'ha;
-    localparam  cyc$19 = 8'ha;
-    localparam  cyc$20 = 8'ha;
-    localparam  cyc$21 = 8'ha;
-    localparam  cyc$22 = 8'ha;
-    localparam  cyc$23 = 8'ha;
-    localparam  cyc$24 = 8'hb;
-    localparam  cyc$25 = 8'hb;
-    localparam  cyc$26 = 8'hb;
-    localparam  cyc$27 = 8'hb;
-    localparam  cyc$28 = 8'hc;
-    localparam  cyc$29 = 8'hc;
-    localparam  cyc$30 = 8'hc;
-    localparam  cyc$31 = 8'hc;
-    localparam  cyc$32 = 8'hc;
-    localparam  cyc$33 = 8'hc;
-    localparam  cyc$34 = 8'hd;
-    localparam  cyc$35 = 8'hd;
-    localparam  cyc$36 = 8'hd;
-    localparam  cyc$37 = 8'hd;
-    localparam  cyc$38 = 8'hd;
-    localparam  cyc$39 = 8'hd;
-    localparam  cyc$40 = 8'he;
-    localparam  cyc$41 = 8'he;
-    localparam  cyc$42 = 8'he;
-    localparam  cyc$43 = 8'he;
-    localparam  cyc$44 = 8'he;
-    localparam  cyc$45 = 8'he;
-    localparam  cyc$46 = 8'hf;
-    localparam  cyc$47 = 8'hf;
-    localparam  cyc$48 = 8'hf;
-    localparam  cyc$49 = 8'hf;
-    localparam  cyc$50 = 8'hf;
-    localparam  cyc$51 = 8'hf;
-    localparam  cyc$52 = 8'h10;
-    localparam  cyc$53 = 8'h10;
-    localparam  cyc$54 = 8'h10;
-    localparam  cyc$55 = 8'h10;
-    localparam  cyc$56 = 8'h10;
-    localparam  cyc$57 = 8'h10;
-    localparam  cyc$58 = 8'h11;
-    localparam  cyc$59 = 8'h11;
-    localparam  cyc$60 = 8'h11;
-    localparam  cyc$61 = 8'h11;
-    localparam  cyc$62 = 8'h11;
-    localparam  cyc$63 = 8'h11;
-    localparam  iss$0 = 8'h3;
+    localparam  cyc$8 = 8'h9;
+    localparam  cyc$9 = 8'h9;
+    localparam  cyc$10 = 8'h9;
+    localparam  cyc$11 = 8'h9;
+    localparam  cyc$12 = 8'ha;
+    localparam  cyc$13 = 8'ha;
+    localparam  cyc$14 = 8'ha;
+    localparam  cyc$15 = 8'ha;
+    localparam  cyc$16 = 8'ha;
+    localparam  cyc$17 = 8'ha;
+    localparam  cyc$18 = 8'hb;
+    localparam  cyc$19 = 8'hb;
+    localparam  cyc$20 = 8'hb;
+    localparam  cyc$21 = 8'hb;
+    localparam  cyc$22 = 8'hb;
+    localparam  cyc$23 = 8'hb;
+    localparam  cyc$24 = 8'hc;
+    localparam  cyc$25 = 8'hc;
+    localparam  cyc$26 = 8'hc;
+    localparam  cyc$27 = 8'hc;
+    localparam  cyc$28 = 8'hd;
+    localparam  cyc$29 = 8'hd;
+    localparam  cyc$30 = 8'hd;
+    localparam  cyc$31 = 8'hd;
+    localparam  cyc$32 = 8'hd;
+    localparam  cyc$33 = 8'hd;
+    localparam  cyc$34 = 8'he;
+    localparam  cyc$35 = 8'he;
+    localparam  cyc$36 = 8'he;
+    localparam  cyc$37 = 8'he;
+    localparam  cyc$38 = 8'he;
+    localparam  cyc$39 = 8'he;
+    localparam  cyc$40 = 8'hf;
+    localparam  cyc$41 = 8'hf;
+    localparam  cyc$42 = 8'hf;
+    localparam  cyc$43 = 8'hf;
+    localparam  cyc$44 = 8'hf;
+    localparam  cyc$45 = 8'hf;
+    localparam  cyc$46 = 8'h10;
+    localparam  cyc$47 = 8'h10;
+    localparam  cyc$48 = 8'h10;
+    localparam  cyc$49 = 8'h10;
+    localparam  cyc$50 = 8'h10;
+    localparam  cyc$51 = 8'h10;
+    localparam  cyc$52 = 8'h11;
+    localparam  cyc$53 = 8'h11;
+    localparam  cyc$54 = 8'h11;
+    localparam  cyc$55 = 8'h11;
+    localparam  cyc$56 = 8'h11;
+    localparam  cyc$57 = 8'h11;
+    localparam  cyc$58 = 8'h12;
+    localparam  cyc$59 = 8'h12;
+    localparam  cyc$60 = 8'h12;
+    localparam  cyc$61 = 8'h12;
+    localparam  cyc$62 = 8'h12;
+    localparam  cyc$63 = 8'h12;
+    localparam  iss$0 = 8'h4;
     localparam  iss$1 = 8'h5;
     localparam  iss$2 = 8'h6;
     localparam  iss$3 = 8'h7;
     localparam  iss$4 = 8'h8;
     localparam  iss$5 = 8'h9;
     localparam  iss$6 = 8'ha;
-    localparam  res$0 = 8'h8;
+    localparam  res$0 = 8'h9;
     localparam  res$1 = 8'ha;
     localparam  res$2 = 8'hb;
     localparam  res$3 = 8'hc;
     localparam  res$4 = 8'hd;
     localparam  res$5 = 8'he;
     localparam  res$6 = 8'hf;
-    localparam  handover = 8'h12;
-    localparam  last = 8'h13;
+    localparam  handover = 8'h13;
+    localparam  last = 8'h14;
     localparam  recip_n = 58'h100000000000000;
     localparam  recip_top = 6'b100000;
     localparam  eq_shift = 6'b1111;
@@ -8336,12 +8341,18 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  div$out_ready;
     wire  [25:0] div$out_q;
     wire  [33:0] div$out_r;
-    reg  [7:0] ta$d;
-    wire  [7:0] ta$q;
-    reg  ta$clock;
-    reg  [7:0] tb$d;
-    wire  [7:0] tb$q;
-    reg  tb$clock;
+    reg  [7:0] t$0$d;
+    wire  [7:0] t$0$q;
+    reg  t$0$clock;
+    reg  [7:0] t$1$d;
+    wire  [7:0] t$1$q;
+    reg  t$1$clock;
+    reg  [7:0] t$2$d;
+    wire  [7:0] t$2$q;
+    reg  t$2$clock;
+    reg  [7:0] t$3$d;
+    wire  [7:0] t$3$q;
+    reg  t$3$clock;
     reg  [15:0] vx$0$d;
     wire  [15:0] vx$0$q;
     reg  vx$0$clock;
@@ -8351,6 +8362,33 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [15:0] vx$2$d;
     wire  [15:0] vx$2$q;
     reg  vx$2$clock;
+    reg  [15:0] vx$3$d;
+    wire  [15:0] vx$3$q;
+    reg  vx$3$clock;
+    reg  [15:0] vx$4$d;
+    wire  [15:0] vx$4$q;
+    reg  vx$4$clock;
+    reg  [15:0] vx$5$d;
+    wire  [15:0] vx$5$q;
+    reg  vx$5$clock;
+    reg  [15:0] vx$6$d;
+    wire  [15:0] vx$6$q;
+    reg  vx$6$clock;
+    reg  [15:0] vx$7$d;
+    wire  [15:0] vx$7$q;
+    reg  vx$7$clock;
+    reg  [15:0] vx$8$d;
+    wire  [15:0] vx$8$q;
+    reg  vx$8$clock;
+    reg  [15:0] vx$9$d;
+    wire  [15:0] vx$9$q;
+    reg  vx$9$clock;
+    reg  [15:0] vx$10$d;
+    wire  [15:0] vx$10$q;
+    reg  vx$10$clock;
+    reg  [15:0] vx$11$d;
+    wire  [15:0] vx$11$q;
+    reg  vx$11$clock;
     reg  [15:0] vy$0$d;
     wire  [15:0] vy$0$q;
     reg  vy$0$clock;
@@ -8360,6 +8398,33 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [15:0] vy$2$d;
     wire  [15:0] vy$2$q;
     reg  vy$2$clock;
+    reg  [15:0] vy$3$d;
+    wire  [15:0] vy$3$q;
+    reg  vy$3$clock;
+    reg  [15:0] vy$4$d;
+    wire  [15:0] vy$4$q;
+    reg  vy$4$clock;
+    reg  [15:0] vy$5$d;
+    wire  [15:0] vy$5$q;
+    reg  vy$5$clock;
+    reg  [15:0] vy$6$d;
+    wire  [15:0] vy$6$q;
+    reg  vy$6$clock;
+    reg  [15:0] vy$7$d;
+    wire  [15:0] vy$7$q;
+    reg  vy$7$clock;
+    reg  [15:0] vy$8$d;
+    wire  [15:0] vy$8$q;
+    reg  vy$8$clock;
+    reg  [15:0] vy$9$d;
+    wire  [15:0] vy$9$q;
+    reg  vy$9$clock;
+    reg  [15:0] vy$10$d;
+    wire  [15:0] vy$10$q;
+    reg  vy$10$clock;
+    reg  [15:0] vy$11$d;
+    wire  [15:0] vy$11$q;
+    reg  vy$11$clock;
     reg  [17:0] vz$0$d;
     wire  [17:0] vz$0$q;
     reg  vz$0$clock;
@@ -8369,6 +8434,33 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [17:0] vz$2$d;
     wire  [17:0] vz$2$q;
     reg  vz$2$clock;
+    reg  [17:0] vz$3$d;
+    wire  [17:0] vz$3$q;
+    reg  vz$3$clock;
+    reg  [17:0] vz$4$d;
+    wire  [17:0] vz$4$q;
+    reg  vz$4$clock;
+    reg  [17:0] vz$5$d;
+    wire  [17:0] vz$5$q;
+    reg  vz$5$clock;
+    reg  [17:0] vz$6$d;
+    wire  [17:0] vz$6$q;
+    reg  vz$6$clock;
+    reg  [17:0] vz$7$d;
+    wire  [17:0] vz$7$q;
+    reg  vz$7$clock;
+    reg  [17:0] vz$8$d;
+    wire  [17:0] vz$8$q;
+    reg  vz$8$clock;
+    reg  [17:0] vz$9$d;
+    wire  [17:0] vz$9$q;
+    reg  vz$9$clock;
+    reg  [17:0] vz$10$d;
+    wire  [17:0] vz$10$q;
+    reg  vz$10$clock;
+    reg  [17:0] vz$11$d;
+    wire  [17:0] vz$11$q;
+    reg  vz$11$clock;
     reg  [7:0] vc$0$d;
     wire  [7:0] vc$0$q;
     reg  vc$0$clock;
@@ -8396,228 +8488,435 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [7:0] vc$8$d;
     wire  [7:0] vc$8$q;
     reg  vc$8$clock;
-    reg  [5:0] crosses$d;
-    wire  [5:0] crosses$q;
-    reg  crosses$clock;
-    reg  [15:0] vx_b$0$d;
-    wire  [15:0] vx_b$0$q;
-    reg  vx_b$0$clock;
-    reg  [15:0] vx_b$1$d;
-    wire  [15:0] vx_b$1$q;
-    reg  vx_b$1$clock;
-    reg  [15:0] vx_b$2$d;
-    wire  [15:0] vx_b$2$q;
-    reg  vx_b$2$clock;
-    reg  [15:0] vy_b$0$d;
-    wire  [15:0] vy_b$0$q;
-    reg  vy_b$0$clock;
-    reg  [15:0] vy_b$1$d;
-    wire  [15:0] vy_b$1$q;
-    reg  vy_b$1$clock;
-    reg  [15:0] vy_b$2$d;
-    wire  [15:0] vy_b$2$q;
-    reg  vy_b$2$clock;
-    reg  [17:0] vz_b$0$d;
-    wire  [17:0] vz_b$0$q;
-    reg  vz_b$0$clock;
-    reg  [17:0] vz_b$1$d;
-    wire  [17:0] vz_b$1$q;
-    reg  vz_b$1$clock;
-    reg  [17:0] vz_b$2$d;
-    wire  [17:0] vz_b$2$q;
-    reg  vz_b$2$clock;
-    reg  [7:0] vc_b$0$d;
-    wire  [7:0] vc_b$0$q;
-    reg  vc_b$0$clock;
-    reg  [7:0] vc_b$1$d;
-    wire  [7:0] vc_b$1$q;
-    reg  vc_b$1$clock;
-    reg  [7:0] vc_b$2$d;
-    wire  [7:0] vc_b$2$q;
-    reg  vc_b$2$clock;
-    reg  [7:0] vc_b$3$d;
-    wire  [7:0] vc_b$3$q;
-    reg  vc_b$3$clock;
-    reg  [7:0] vc_b$4$d;
-    wire  [7:0] vc_b$4$q;
-    reg  vc_b$4$clock;
-    reg  [7:0] vc_b$5$d;
-    wire  [7:0] vc_b$5$q;
-    reg  vc_b$5$clock;
-    reg  [7:0] vc_b$6$d;
-    wire  [7:0] vc_b$6$q;
-    reg  vc_b$6$clock;
-    reg  [7:0] vc_b$7$d;
-    wire  [7:0] vc_b$7$q;
-    reg  vc_b$7$clock;
-    reg  [7:0] vc_b$8$d;
-    wire  [7:0] vc_b$8$q;
-    reg  vc_b$8$clock;
-    reg  [5:0] crosses_b$d;
-    wire  [5:0] crosses_b$q;
-    reg  crosses_b$clock;
-    reg  maj_left_b$d;
-    wire  maj_left_b$q;
-    reg  maj_left_b$clock;
-    reg  [15:0] ga$vx$0;
-    reg  [15:0] ga$vx$1;
-    reg  [15:0] ga$vx$2;
-    reg  [15:0] ga$vy$0;
-    reg  [15:0] ga$vy$1;
-    reg  [15:0] ga$vy$2;
-    reg  [17:0] ga$vz$0;
-    reg  [17:0] ga$vz$1;
-    reg  [17:0] ga$vz$2;
-    reg  [7:0] ga$vc$0;
-    reg  [7:0] ga$vc$1;
-    reg  [7:0] ga$vc$2;
-    reg  [7:0] ga$vc$3;
-    reg  [7:0] ga$vc$4;
-    reg  [7:0] ga$vc$5;
-    reg  [7:0] ga$vc$6;
-    reg  [7:0] ga$vc$7;
-    reg  [7:0] ga$vc$8;
-    reg  [5:0] ga$crosses;
-    reg  ga$maj_left;
-    reg  [18:0] ga$start_x$0;
-    reg  [18:0] ga$start_x$1;
-    reg  [18:0] ga$start_x$2;
-    wire  [57:0] ga$kdx$0;
-    wire  [57:0] ga$kdx$1;
-    wire  [57:0] ga$kdx$2;
-    wire  [56:0] ga$kdy$0;
-    wire  [56:0] ga$kdy$1;
-    wire  [56:0] ga$kdy$2;
-    wire  ga$up;
-    wire  [57:0] ga$edx$0;
-    wire  [57:0] ga$edx$1;
-    wire  [57:0] ga$edx$2;
-    wire  [56:0] ga$edy$0;
-    wire  [56:0] ga$edy$1;
-    wire  [56:0] ga$edy$2;
-    wire  [33:0] ga$edy_d$0;
-    wire  [33:0] ga$edy_d$1;
-    wire  [33:0] ga$edy_d$2;
-    wire  [33:0] ga$ed16$0;
-    wire  [33:0] ga$ed16$1;
-    wire  [33:0] ga$ed16$2;
-    wire  [18:0] ga$cy$0;
-    wire  [18:0] ga$cy$1;
-    wire  [18:0] ga$cy$2;
-    wire  [12:0] ga$count$0;
-    wire  [12:0] ga$count$1;
-    wire  [12:0] ga$count$2;
-    wire  [18:0] ga$toff$0;
-    wire  [18:0] ga$toff$1;
-    wire  [18:0] ga$toff$2;
-    wire  [18:0] ga$xf$0;
-    wire  [18:0] ga$xf$1;
-    wire  [18:0] ga$xf$2;
-    wire  [18:0] ga$xi$0;
-    wire  [18:0] ga$xi$1;
-    wire  [18:0] ga$xi$2;
-    wire  [18:0] ga$off_x$0;
-    wire  [18:0] ga$off_x$1;
-    wire  [18:0] ga$off_x$2;
-    wire  [18:0] ga$off_y$0;
-    wire  [18:0] ga$off_y$1;
-    wire  [18:0] ga$off_y$2;
-    wire  [18:0] ga$dmaj$0;
-    wire  [18:0] ga$dmaj$1;
-    wire  [18:0] ga$dmaj$2;
-    wire  [18:0] ga$dmaj$3;
-    wire  [18:0] ga$dbot$0;
-    wire  [18:0] ga$dbot$1;
-    wire  [18:0] ga$dbot$2;
-    wire  [18:0] ga$dbot$3;
-    wire  [39:0] ga$attr0$0;
-    wire  [39:0] ga$attr0$1;
-    wire  [39:0] ga$attr0$2;
-    wire  [39:0] ga$attr0$3;
-    reg  [15:0] gb$vx$0;
-    reg  [15:0] gb$vx$1;
-    reg  [15:0] gb$vx$2;
-    reg  [15:0] gb$vy$0;
-    reg  [15:0] gb$vy$1;
-    reg  [15:0] gb$vy$2;
-    reg  [17:0] gb$vz$0;
-    reg  [17:0] gb$vz$1;
-    reg  [17:0] gb$vz$2;
-    reg  [7:0] gb$vc$0;
-    reg  [7:0] gb$vc$1;
-    reg  [7:0] gb$vc$2;
-    reg  [7:0] gb$vc$3;
-    reg  [7:0] gb$vc$4;
-    reg  [7:0] gb$vc$5;
-    reg  [7:0] gb$vc$6;
-    reg  [7:0] gb$vc$7;
-    reg  [7:0] gb$vc$8;
-    reg  [5:0] gb$crosses;
-    reg  gb$maj_left;
-    reg  [18:0] gb$start_x$0;
-    reg  [18:0] gb$start_x$1;
-    reg  [18:0] gb$start_x$2;
-    wire  [57:0] gb$kdx$0;
-    wire  [57:0] gb$kdx$1;
-    wire  [57:0] gb$kdx$2;
-    wire  [56:0] gb$kdy$0;
-    wire  [56:0] gb$kdy$1;
-    wire  [56:0] gb$kdy$2;
-    wire  gb$up;
-    wire  [57:0] gb$edx$0;
-    wire  [57:0] gb$edx$1;
-    wire  [57:0] gb$edx$2;
-    wire  [56:0] gb$edy$0;
-    wire  [56:0] gb$edy$1;
-    wire  [56:0] gb$edy$2;
-    wire  [33:0] gb$edy_d$0;
-    wire  [33:0] gb$edy_d$1;
-    wire  [33:0] gb$edy_d$2;
-    wire  [33:0] gb$ed16$0;
-    wire  [33:0] gb$ed16$1;
-    wire  [33:0] gb$ed16$2;
-    wire  [18:0] gb$cy$0;
-    wire  [18:0] gb$cy$1;
-    wire  [18:0] gb$cy$2;
-    wire  [12:0] gb$count$0;
-    wire  [12:0] gb$count$1;
-    wire  [12:0] gb$count$2;
-    wire  [18:0] gb$toff$0;
-    wire  [18:0] gb$toff$1;
-    wire  [18:0] gb$toff$2;
-    wire  [18:0] gb$xf$0;
-    wire  [18:0] gb$xf$1;
-    wire  [18:0] gb$xf$2;
-    wire  [18:0] gb$xi$0;
-    wire  [18:0] gb$xi$1;
-    wire  [18:0] gb$xi$2;
-    wire  [18:0] gb$off_x$0;
-    wire  [18:0] gb$off_x$1;
-    wire  [18:0] gb$off_x$2;
-    wire  [18:0] gb$off_y$0;
-    wire  [18:0] gb$off_y$1;
-    wire  [18:0] gb$off_y$2;
-    wire  [18:0] gb$dmaj$0;
-    wire  [18:0] gb$dmaj$1;
-    wire  [18:0] gb$dmaj$2;
-    wire  [18:0] gb$dmaj$3;
-    wire  [18:0] gb$dbot$0;
-    wire  [18:0] gb$dbot$1;
-    wire  [18:0] gb$dbot$2;
-    wire  [18:0] gb$dbot$3;
-    wire  [39:0] gb$attr0$0;
-    wire  [39:0] gb$attr0$1;
-    wire  [39:0] gb$attr0$2;
-    wire  [39:0] gb$attr0$3;
+    reg  [7:0] vc$9$d;
+    wire  [7:0] vc$9$q;
+    reg  vc$9$clock;
+    reg  [7:0] vc$10$d;
+    wire  [7:0] vc$10$q;
+    reg  vc$10$clock;
+    reg  [7:0] vc$11$d;
+    wire  [7:0] vc$11$q;
+    reg  vc$11$clock;
+    reg  [7:0] vc$12$d;
+    wire  [7:0] vc$12$q;
+    reg  vc$12$clock;
+    reg  [7:0] vc$13$d;
+    wire  [7:0] vc$13$q;
+    reg  vc$13$clock;
+    reg  [7:0] vc$14$d;
+    wire  [7:0] vc$14$q;
+    reg  vc$14$clock;
+    reg  [7:0] vc$15$d;
+    wire  [7:0] vc$15$q;
+    reg  vc$15$clock;
+    reg  [7:0] vc$16$d;
+    wire  [7:0] vc$16$q;
+    reg  vc$16$clock;
+    reg  [7:0] vc$17$d;
+    wire  [7:0] vc$17$q;
+    reg  vc$17$clock;
+    reg  [7:0] vc$18$d;
+    wire  [7:0] vc$18$q;
+    reg  vc$18$clock;
+    reg  [7:0] vc$19$d;
+    wire  [7:0] vc$19$q;
+    reg  vc$19$clock;
+    reg  [7:0] vc$20$d;
+    wire  [7:0] vc$20$q;
+    reg  vc$20$clock;
+    reg  [7:0] vc$21$d;
+    wire  [7:0] vc$21$q;
+    reg  vc$21$clock;
+    reg  [7:0] vc$22$d;
+    wire  [7:0] vc$22$q;
+    reg  vc$22$clock;
+    reg  [7:0] vc$23$d;
+    wire  [7:0] vc$23$q;
+    reg  vc$23$clock;
+    reg  [7:0] vc$24$d;
+    wire  [7:0] vc$24$q;
+    reg  vc$24$clock;
+    reg  [7:0] vc$25$d;
+    wire  [7:0] vc$25$q;
+    reg  vc$25$clock;
+    reg  [7:0] vc$26$d;
+    wire  [7:0] vc$26$q;
+    reg  vc$26$clock;
+    reg  [7:0] vc$27$d;
+    wire  [7:0] vc$27$q;
+    reg  vc$27$clock;
+    reg  [7:0] vc$28$d;
+    wire  [7:0] vc$28$q;
+    reg  vc$28$clock;
+    reg  [7:0] vc$29$d;
+    wire  [7:0] vc$29$q;
+    reg  vc$29$clock;
+    reg  [7:0] vc$30$d;
+    wire  [7:0] vc$30$q;
+    reg  vc$30$clock;
+    reg  [7:0] vc$31$d;
+    wire  [7:0] vc$31$q;
+    reg  vc$31$clock;
+    reg  [7:0] vc$32$d;
+    wire  [7:0] vc$32$q;
+    reg  vc$32$clock;
+    reg  [7:0] vc$33$d;
+    wire  [7:0] vc$33$q;
+    reg  vc$33$clock;
+    reg  [7:0] vc$34$d;
+    wire  [7:0] vc$34$q;
+    reg  vc$34$clock;
+    reg  [7:0] vc$35$d;
+    wire  [7:0] vc$35$q;
+    reg  vc$35$clock;
+    reg  [5:0] crosses$0$d;
+    wire  [5:0] crosses$0$q;
+    reg  crosses$0$clock;
+    reg  [5:0] crosses$1$d;
+    wire  [5:0] crosses$1$q;
+    reg  crosses$1$clock;
+    reg  [5:0] crosses$2$d;
+    wire  [5:0] crosses$2$q;
+    reg  crosses$2$clock;
+    reg  [5:0] crosses$3$d;
+    wire  [5:0] crosses$3$q;
+    reg  crosses$3$clock;
+    reg  sign$0$d;
+    wire  sign$0$q;
+    reg  sign$0$clock;
+    reg  sign$1$d;
+    wire  sign$1$q;
+    reg  sign$1$clock;
+    reg  sign$2$d;
+    wire  sign$2$q;
+    reg  sign$2$clock;
+    reg  sign$3$d;
+    wire  sign$3$q;
+    reg  sign$3$clock;
+    reg  [5:0] exp$0$d;
+    wire  [5:0] exp$0$q;
+    reg  exp$0$clock;
+    reg  [5:0] exp$1$d;
+    wire  [5:0] exp$1$q;
+    reg  exp$1$clock;
+    reg  [5:0] exp$2$d;
+    wire  [5:0] exp$2$q;
+    reg  exp$2$clock;
+    reg  [5:0] exp$3$d;
+    wire  [5:0] exp$3$q;
+    reg  exp$3$clock;
+    reg  [15:0] g0$vx$0;
+    reg  [15:0] g0$vx$1;
+    reg  [15:0] g0$vx$2;
+    reg  [15:0] g0$vy$0;
+    reg  [15:0] g0$vy$1;
+    reg  [15:0] g0$vy$2;
+    reg  [17:0] g0$vz$0;
+    reg  [17:0] g0$vz$1;
+    reg  [17:0] g0$vz$2;
+    reg  [7:0] g0$vc$0;
+    reg  [7:0] g0$vc$1;
+    reg  [7:0] g0$vc$2;
+    reg  [7:0] g0$vc$3;
+    reg  [7:0] g0$vc$4;
+    reg  [7:0] g0$vc$5;
+    reg  [7:0] g0$vc$6;
+    reg  [7:0] g0$vc$7;
+    reg  [7:0] g0$vc$8;
+    reg  [5:0] g0$crosses;
+    reg  g0$maj_left;
+    reg  [18:0] g0$start_x$0;
+    reg  [18:0] g0$start_x$1;
+    reg  [18:0] g0$start_x$2;
+    wire  [57:0] g0$kdx$0;
+    wire  [57:0] g0$kdx$1;
+    wire  [57:0] g0$kdx$2;
+    wire  [56:0] g0$kdy$0;
+    wire  [56:0] g0$kdy$1;
+    wire  [56:0] g0$kdy$2;
+    wire  g0$up;
+    wire  [57:0] g0$edx$0;
+    wire  [57:0] g0$edx$1;
+    wire  [57:0] g0$edx$2;
+    wire  [56:0] g0$edy$0;
+    wire  [56:0] g0$edy$1;
+    wire  [56:0] g0$edy$2;
+    wire  [33:0] g0$edy_d$0;
+    wire  [33:0] g0$edy_d$1;
+    wire  [33:0] g0$edy_d$2;
+    wire  [33:0] g0$ed16$0;
+    wire  [33:0] g0$ed16$1;
+    wire  [33:0] g0$ed16$2;
+    wire  [18:0] g0$cy$0;
+    wire  [18:0] g0$cy$1;
+    wire  [18:0] g0$cy$2;
+    wire  [12:0] g0$count$0;
+    wire  [12:0] g0$count$1;
+    wire  [12:0] g0$count$2;
+    wire  [18:0] g0$toff$0;
+    wire  [18:0] g0$toff$1;
+    wire  [18:0] g0$toff$2;
+    wire  [18:0] g0$xf$0;
+    wire  [18:0] g0$xf$1;
+    wire  [18:0] g0$xf$2;
+    wire  [18:0] g0$xi$0;
+    wire  [18:0] g0$xi$1;
+    wire  [18:0] g0$xi$2;
+    wire  [18:0] g0$off_x$0;
+    wire  [18:0] g0$off_x$1;
+    wire  [18:0] g0$off_x$2;
+    wire  [18:0] g0$off_y$0;
+    wire  [18:0] g0$off_y$1;
+    wire  [18:0] g0$off_y$2;
+    wire  [18:0] g0$dmaj$0;
+    wire  [18:0] g0$dmaj$1;
+    wire  [18:0] g0$dmaj$2;
+    wire  [18:0] g0$dmaj$3;
+    wire  [18:0] g0$dbot$0;
+    wire  [18:0] g0$dbot$1;
+    wire  [18:0] g0$dbot$2;
+    wire  [18:0] g0$dbot$3;
+    wire  [39:0] g0$attr0$0;
+    wire  [39:0] g0$attr0$1;
+    wire  [39:0] g0$attr0$2;
+    wire  [39:0] g0$attr0$3;
+    reg  [15:0] g1$vx$0;
+    reg  [15:0] g1$vx$1;
+    reg  [15:0] g1$vx$2;
+    reg  [15:0] g1$vy$0;
+    reg  [15:0] g1$vy$1;
+    reg  [15:0] g1$vy$2;
+    reg  [17:0] g1$vz$0;
+    reg  [17:0] g1$vz$1;
+    reg  [17:0] g1$vz$2;
+    reg  [7:0] g1$vc$0;
+    reg  [7:0] g1$vc$1;
+    reg  [7:0] g1$vc$2;
+    reg  [7:0] g1$vc$3;
+    reg  [7:0] g1$vc$4;
+    reg  [7:0] g1$vc$5;
+    reg  [7:0] g1$vc$6;
+    reg  [7:0] g1$vc$7;
+    reg  [7:0] g1$vc$8;
+    reg  [5:0] g1$crosses;
+    reg  g1$maj_left;
+    reg  [18:0] g1$start_x$0;
+    reg  [18:0] g1$start_x$1;
+    reg  [18:0] g1$start_x$2;
+    wire  [57:0] g1$kdx$0;
+    wire  [57:0] g1$kdx$1;
+    wire  [57:0] g1$kdx$2;
+    wire  [56:0] g1$kdy$0;
+    wire  [56:0] g1$kdy$1;
+    wire  [56:0] g1$kdy$2;
+    wire  g1$up;
+    wire  [57:0] g1$edx$0;
+    wire  [57:0] g1$edx$1;
+    wire  [57:0] g1$edx$2;
+    wire  [56:0] g1$edy$0;
+    wire  [56:0] g1$edy$1;
+    wire  [56:0] g1$edy$2;
+    wire  [33:0] g1$edy_d$0;
+    wire  [33:0] g1$edy_d$1;
+    wire  [33:0] g1$edy_d$2;
+    wire  [33:0] g1$ed16$0;
+    wire  [33:0] g1$ed16$1;
+    wire  [33:0] g1$ed16$2;
+    wire  [18:0] g1$cy$0;
+    wire  [18:0] g1$cy$1;
+    wire  [18:0] g1$cy$2;
+    wire  [12:0] g1$count$0;
+    wire  [12:0] g1$count$1;
+    wire  [12:0] g1$count$2;
+    wire  [18:0] g1$toff$0;
+    wire  [18:0] g1$toff$1;
+    wire  [18:0] g1$toff$2;
+    wire  [18:0] g1$xf$0;
+    wire  [18:0] g1$xf$1;
+    wire  [18:0] g1$xf$2;
+    wire  [18:0] g1$xi$0;
+    wire  [18:0] g1$xi$1;
+    wire  [18:0] g1$xi$2;
+    wire  [18:0] g1$off_x$0;
+    wire  [18:0] g1$off_x$1;
+    wire  [18:0] g1$off_x$2;
+    wire  [18:0] g1$off_y$0;
+    wire  [18:0] g1$off_y$1;
+    wire  [18:0] g1$off_y$2;
+    wire  [18:0] g1$dmaj$0;
+    wire  [18:0] g1$dmaj$1;
+    wire  [18:0] g1$dmaj$2;
+    wire  [18:0] g1$dmaj$3;
+    wire  [18:0] g1$dbot$0;
+    wire  [18:0] g1$dbot$1;
+    wire  [18:0] g1$dbot$2;
+    wire  [18:0] g1$dbot$3;
+    wire  [39:0] g1$attr0$0;
+    wire  [39:0] g1$attr0$1;
+    wire  [39:0] g1$attr0$2;
+    wire  [39:0] g1$attr0$3;
+    reg  [15:0] g2$vx$0;
+    reg  [15:0] g2$vx$1;
+    reg  [15:0] g2$vx$2;
+    reg  [15:0] g2$vy$0;
+    reg  [15:0] g2$vy$1;
+    reg  [15:0] g2$vy$2;
+    reg  [17:0] g2$vz$0;
+    reg  [17:0] g2$vz$1;
+    reg  [17:0] g2$vz$2;
+    reg  [7:0] g2$vc$0;
+    reg  [7:0] g2$vc$1;
+    reg  [7:0] g2$vc$2;
+    reg  [7:0] g2$vc$3;
+    reg  [7:0] g2$vc$4;
+    reg  [7:0] g2$vc$5;
+    reg  [7:0] g2$vc$6;
+    reg  [7:0] g2$vc$7;
+    reg  [7:0] g2$vc$8;
+    reg  [5:0] g2$crosses;
+    reg  g2$maj_left;
+    reg  [18:0] g2$start_x$0;
+    reg  [18:0] g2$start_x$1;
+    reg  [18:0] g2$start_x$2;
+    wire  [57:0] g2$kdx$0;
+    wire  [57:0] g2$kdx$1;
+    wire  [57:0] g2$kdx$2;
+    wire  [56:0] g2$kdy$0;
+    wire  [56:0] g2$kdy$1;
+    wire  [56:0] g2$kdy$2;
+    wire  g2$up;
+    wire  [57:0] g2$edx$0;
+    wire  [57:0] g2$edx$1;
+    wire  [57:0] g2$edx$2;
+    wire  [56:0] g2$edy$0;
+    wire  [56:0] g2$edy$1;
+    wire  [56:0] g2$edy$2;
+    wire  [33:0] g2$edy_d$0;
+    wire  [33:0] g2$edy_d$1;
+    wire  [33:0] g2$edy_d$2;
+    wire  [33:0] g2$ed16$0;
+    wire  [33:0] g2$ed16$1;
+    wire  [33:0] g2$ed16$2;
+    wire  [18:0] g2$cy$0;
+    wire  [18:0] g2$cy$1;
+    wire  [18:0] g2$cy$2;
+    wire  [12:0] g2$count$0;
+    wire  [12:0] g2$count$1;
+    wire  [12:0] g2$count$2;
+    wire  [18:0] g2$toff$0;
+    wire  [18:0] g2$toff$1;
+    wire  [18:0] g2$toff$2;
+    wire  [18:0] g2$xf$0;
+    wire  [18:0] g2$xf$1;
+    wire  [18:0] g2$xf$2;
+    wire  [18:0] g2$xi$0;
+    wire  [18:0] g2$xi$1;
+    wire  [18:0] g2$xi$2;
+    wire  [18:0] g2$off_x$0;
+    wire  [18:0] g2$off_x$1;
+    wire  [18:0] g2$off_x$2;
+    wire  [18:0] g2$off_y$0;
+    wire  [18:0] g2$off_y$1;
+    wire  [18:0] g2$off_y$2;
+    wire  [18:0] g2$dmaj$0;
+    wire  [18:0] g2$dmaj$1;
+    wire  [18:0] g2$dmaj$2;
+    wire  [18:0] g2$dmaj$3;
+    wire  [18:0] g2$dbot$0;
+    wire  [18:0] g2$dbot$1;
+    wire  [18:0] g2$dbot$2;
+    wire  [18:0] g2$dbot$3;
+    wire  [39:0] g2$attr0$0;
+    wire  [39:0] g2$attr0$1;
+    wire  [39:0] g2$attr0$2;
+    wire  [39:0] g2$attr0$3;
+    reg  [15:0] g3$vx$0;
+    reg  [15:0] g3$vx$1;
+    reg  [15:0] g3$vx$2;
+    reg  [15:0] g3$vy$0;
+    reg  [15:0] g3$vy$1;
+    reg  [15:0] g3$vy$2;
+    reg  [17:0] g3$vz$0;
+    reg  [17:0] g3$vz$1;
+    reg  [17:0] g3$vz$2;
+    reg  [7:0] g3$vc$0;
+    reg  [7:0] g3$vc$1;
+    reg  [7:0] g3$vc$2;
+    reg  [7:0] g3$vc$3;
+    reg  [7:0] g3$vc$4;
+    reg  [7:0] g3$vc$5;
+    reg  [7:0] g3$vc$6;
+    reg  [7:0] g3$vc$7;
+    reg  [7:0] g3$vc$8;
+    reg  [5:0] g3$crosses;
+    reg  g3$maj_left;
+    reg  [18:0] g3$start_x$0;
+    reg  [18:0] g3$start_x$1;
+    reg  [18:0] g3$start_x$2;
+    wire  [57:0] g3$kdx$0;
+    wire  [57:0] g3$kdx$1;
+    wire  [57:0] g3$kdx$2;
+    wire  [56:0] g3$kdy$0;
+    wire  [56:0] g3$kdy$1;
+    wire  [56:0] g3$kdy$2;
+    wire  g3$up;
+    wire  [57:0] g3$edx$0;
+    wire  [57:0] g3$edx$1;
+    wire  [57:0] g3$edx$2;
+    wire  [56:0] g3$edy$0;
+    wire  [56:0] g3$edy$1;
+    wire  [56:0] g3$edy$2;
+    wire  [33:0] g3$edy_d$0;
+    wire  [33:0] g3$edy_d$1;
+    wire  [33:0] g3$edy_d$2;
+    wire  [33:0] g3$ed16$0;
+    wire  [33:0] g3$ed16$1;
+    wire  [33:0] g3$ed16$2;
+    wire  [18:0] g3$cy$0;
+    wire  [18:0] g3$cy$1;
+    wire  [18:0] g3$cy$2;
+    wire  [12:0] g3$count$0;
+    wire  [12:0] g3$count$1;
+    wire  [12:0] g3$count$2;
+    wire  [18:0] g3$toff$0;
+    wire  [18:0] g3$toff$1;
+    wire  [18:0] g3$toff$2;
+    wire  [18:0] g3$xf$0;
+    wire  [18:0] g3$xf$1;
+    wire  [18:0] g3$xf$2;
+    wire  [18:0] g3$xi$0;
+    wire  [18:0] g3$xi$1;
+    wire  [18:0] g3$xi$2;
+    wire  [18:0] g3$off_x$0;
+    wire  [18:0] g3$off_x$1;
+    wire  [18:0] g3$off_x$2;
+    wire  [18:0] g3$off_y$0;
+    wire  [18:0] g3$off_y$1;
+    wire  [18:0] g3$off_y$2;
+    wire  [18:0] g3$dmaj$0;
+    wire  [18:0] g3$dmaj$1;
+    wire  [18:0] g3$dmaj$2;
+    wire  [18:0] g3$dmaj$3;
+    wire  [18:0] g3$dbot$0;
+    wire  [18:0] g3$dbot$1;
+    wire  [18:0] g3$dbot$2;
+    wire  [18:0] g3$dbot$3;
+    wire  [39:0] g3$attr0$0;
+    wire  [39:0] g3$attr0$1;
+    wire  [39:0] g3$attr0$2;
+    wire  [39:0] g3$attr0$3;
     reg  [33:0] area$d;
     wire  [33:0] area$q;
     reg  area$clock;
-    reg  [5:0] exp$d;
-    wire  [5:0] exp$q;
-    reg  exp$clock;
+    reg  [33:0] norm$d;
+    wire  [33:0] norm$q;
+    reg  norm$clock;
     reg  [24:0] mant$d;
     wire  [24:0] mant$q;
     reg  mant$clock;
+    reg  [5:0] exp_e$d;
+    wire  [5:0] exp_e$q;
+    reg  exp_e$clock;
     reg  [18:0] x$0$d;
     wire  [18:0] x$0$q;
     reg  x$0$clock;
@@ -8875,6 +9174,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  act$61;
     reg  act$62;
     reg  act$63;
+    reg  at_norm;
     reg  at_iss$0;
     reg  at_iss$1;
     reg  at_iss$2;
@@ -8890,11 +9190,15 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  at_res$5;
     reg  at_res$6;
     reg  at_handover;
-    reg  maj_left;
+    reg  maj_left$0;
+    reg  maj_left$1;
+    reg  maj_left$2;
+    reg  maj_left$3;
     reg  [33:0] area_abs;
     reg  [5:0] exp_c;
     reg  [33:0] norm_d;
     reg  [24:0] mant_now;
+    reg  [5:0] exp_now;
     reg  [56:0] mant_a;
     reg  [18:0] q_n;
     reg  r_pos;
@@ -8976,6 +9280,14 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [18:0] delta$5;
     reg  [18:0] delta$6;
     reg  [18:0] delta$7;
+    reg  [18:0] delta$8;
+    reg  [18:0] delta$9;
+    reg  [18:0] delta$10;
+    reg  [18:0] delta$11;
+    reg  [18:0] delta$12;
+    reg  [18:0] delta$13;
+    reg  [18:0] delta$14;
+    reg  [18:0] delta$15;
     reg  [18:0] eq_b$0;
     reg  [18:0] eq_b$1;
     reg  [18:0] eq_b$2;
@@ -8984,6 +9296,14 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [18:0] eq_b$5;
     reg  [18:0] eq_b$6;
     reg  [18:0] eq_b$7;
+    reg  [18:0] eq_b$8;
+    reg  [18:0] eq_b$9;
+    reg  [18:0] eq_b$10;
+    reg  [18:0] eq_b$11;
+    reg  [18:0] eq_b$12;
+    reg  [18:0] eq_b$13;
+    reg  [18:0] eq_b$14;
+    reg  [18:0] eq_b$15;
     reg  [18:0] op_e$0;
     reg  [18:0] op_e$1;
     reg  [18:0] op_e$2;
@@ -9028,6 +9348,10 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [18:0] op_s$21;
     reg  [18:0] op_s$22;
     reg  [18:0] op_s$23;
+    reg  [39:0] attr0$0;
+    reg  [39:0] attr0$1;
+    reg  [39:0] attr0$2;
+    reg  [39:0] attr0$3;
     reg  [56:0] shr$0;
     reg  [56:0] shr$1;
     reg  [56:0] shr$2;
@@ -9115,15 +9439,25 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .out_q(div$out_q),
         .out_r(div$out_r)
     );
-    raster_top$core$triangle_setup$ta ta(
-        .d(ta$d),
-        .q(ta$q),
-        .clock(ta$clock)
+    raster_top$core$triangle_setup$t$0 t$0(
+        .d(t$0$d),
+        .q(t$0$q),
+        .clock(t$0$clock)
     );
-    raster_top$core$triangle_setup$tb tb(
-        .d(tb$d),
-        .q(tb$q),
-        .clock(tb$clock)
+    raster_top$core$triangle_setup$t$1 t$1(
+        .d(t$1$d),
+        .q(t$1$q),
+        .clock(t$1$clock)
+    );
+    raster_top$core$triangle_setup$t$2 t$2(
+        .d(t$2$d),
+        .q(t$2$q),
+        .clock(t$2$clock)
+    );
+    raster_top$core$triangle_setup$t$3 t$3(
+        .d(t$3$d),
+        .q(t$3$q),
+        .clock(t$3$clock)
     );
     raster_top$core$triangle_setup$vx$0 vx$0(
         .d(vx$0$d),
@@ -9140,6 +9474,51 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .q(vx$2$q),
         .clock(vx$2$clock)
     );
+    raster_top$core$triangle_setup$vx$3 vx$3(
+        .d(vx$3$d),
+        .q(vx$3$q),
+        .clock(vx$3$clock)
+    );
+    raster_top$core$triangle_setup$vx$4 vx$4(
+        .d(vx$4$d),
+        .q(vx$4$q),
+        .clock(vx$4$clock)
+    );
+    raster_top$core$triangle_setup$vx$5 vx$5(
+        .d(vx$5$d),
+        .q(vx$5$q),
+        .clock(vx$5$clock)
+    );
+    raster_top$core$triangle_setup$vx$6 vx$6(
+        .d(vx$6$d),
+        .q(vx$6$q),
+        .clock(vx$6$clock)
+    );
+    raster_top$core$triangle_setup$vx$7 vx$7(
+        .d(vx$7$d),
+        .q(vx$7$q),
+        .clock(vx$7$clock)
+    );
+    raster_top$core$triangle_setup$vx$8 vx$8(
+        .d(vx$8$d),
+        .q(vx$8$q),
+        .clock(vx$8$clock)
+    );
+    raster_top$core$triangle_setup$vx$9 vx$9(
+        .d(vx$9$d),
+        .q(vx$9$q),
+        .clock(vx$9$clock)
+    );
+    raster_top$core$triangle_setup$vx$10 vx$10(
+        .d(vx$10$d),
+        .q(vx$10$q),
+        .clock(vx$10$clock)
+    );
+    raster_top$core$triangle_setup$vx$11 vx$11(
+        .d(vx$11$d),
+        .q(vx$11$q),
+        .clock(vx$11$clock)
+    );
     raster_top$core$triangle_setup$vy$0 vy$0(
         .d(vy$0$d),
         .q(vy$0$q),
@@ -9155,6 +9534,51 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .q(vy$2$q),
         .clock(vy$2$clock)
     );
+    raster_top$core$triangle_setup$vy$3 vy$3(
+        .d(vy$3$d),
+        .q(vy$3$q),
+        .clock(vy$3$clock)
+    );
+    raster_top$core$triangle_setup$vy$4 vy$4(
+        .d(vy$4$d),
+        .q(vy$4$q),
+        .clock(vy$4$clock)
+    );
+    raster_top$core$triangle_setup$vy$5 vy$5(
+        .d(vy$5$d),
+        .q(vy$5$q),
+        .clock(vy$5$clock)
+    );
+    raster_top$core$triangle_setup$vy$6 vy$6(
+        .d(vy$6$d),
+        .q(vy$6$q),
+        .clock(vy$6$clock)
+    );
+    raster_top$core$triangle_setup$vy$7 vy$7(
+        .d(vy$7$d),
+        .q(vy$7$q),
+        .clock(vy$7$clock)
+    );
+    raster_top$core$triangle_setup$vy$8 vy$8(
+        .d(vy$8$d),
+        .q(vy$8$q),
+        .clock(vy$8$clock)
+    );
+    raster_top$core$triangle_setup$vy$9 vy$9(
+        .d(vy$9$d),
+        .q(vy$9$q),
+        .clock(vy$9$clock)
+    );
+    raster_top$core$triangle_setup$vy$10 vy$10(
+        .d(vy$10$d),
+        .q(vy$10$q),
+        .clock(vy$10$clock)
+    );
+    raster_top$core$triangle_setup$vy$11 vy$11(
+        .d(vy$11$d),
+        .q(vy$11$q),
+        .clock(vy$11$clock)
+    );
     raster_top$core$triangle_setup$vz$0 vz$0(
         .d(vz$0$d),
         .q(vz$0$q),
@@ -9169,6 +9593,51 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .d(vz$2$d),
         .q(vz$2$q),
         .clock(vz$2$clock)
+    );
+    raster_top$core$triangle_setup$vz$3 vz$3(
+        .d(vz$3$d),
+        .q(vz$3$q),
+        .clock(vz$3$clock)
+    );
+    raster_top$core$triangle_setup$vz$4 vz$4(
+        .d(vz$4$d),
+        .q(vz$4$q),
+        .clock(vz$4$clock)
+    );
+    raster_top$core$triangle_setup$vz$5 vz$5(
+        .d(vz$5$d),
+        .q(vz$5$q),
+        .clock(vz$5$clock)
+    );
+    raster_top$core$triangle_setup$vz$6 vz$6(
+        .d(vz$6$d),
+        .q(vz$6$q),
+        .clock(vz$6$clock)
+    );
+    raster_top$core$triangle_setup$vz$7 vz$7(
+        .d(vz$7$d),
+        .q(vz$7$q),
+        .clock(vz$7$clock)
+    );
+    raster_top$core$triangle_setup$vz$8 vz$8(
+        .d(vz$8$d),
+        .q(vz$8$q),
+        .clock(vz$8$clock)
+    );
+    raster_top$core$triangle_setup$vz$9 vz$9(
+        .d(vz$9$d),
+        .q(vz$9$q),
+        .clock(vz$9$clock)
+    );
+    raster_top$core$triangle_setup$vz$10 vz$10(
+        .d(vz$10$d),
+        .q(vz$10$q),
+        .clock(vz$10$clock)
+    );
+    raster_top$core$triangle_setup$vz$11 vz$11(
+        .d(vz$11$d),
+        .q(vz$11$q),
+        .clock(vz$11$clock)
     );
     raster_top$core$triangle_setup$vc$0 vc$0(
         .d(vc$0$d),
@@ -9215,279 +9684,528 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .q(vc$8$q),
         .clock(vc$8$clock)
     );
-    raster_top$core$triangle_setup$crosses crosses(
-        .d(crosses$d),
-        .q(crosses$q),
-        .clock(crosses$clock)
+    raster_top$core$triangle_setup$vc$9 vc$9(
+        .d(vc$9$d),
+        .q(vc$9$q),
+        .clock(vc$9$clock)
     );
-    raster_top$core$triangle_setup$vx_b$0 vx_b$0(
-        .d(vx_b$0$d),
-        .q(vx_b$0$q),
-        .clock(vx_b$0$clock)
+    raster_top$core$triangle_setup$vc$10 vc$10(
+        .d(vc$10$d),
+        .q(vc$10$q),
+        .clock(vc$10$clock)
     );
-    raster_top$core$triangle_setup$vx_b$1 vx_b$1(
-        .d(vx_b$1$d),
-        .q(vx_b$1$q),
-        .clock(vx_b$1$clock)
+    raster_top$core$triangle_setup$vc$11 vc$11(
+        .d(vc$11$d),
+        .q(vc$11$q),
+        .clock(vc$11$clock)
     );
-    raster_top$core$triangle_setup$vx_b$2 vx_b$2(
-        .d(vx_b$2$d),
-        .q(vx_b$2$q),
-        .clock(vx_b$2$clock)
+    raster_top$core$triangle_setup$vc$12 vc$12(
+        .d(vc$12$d),
+        .q(vc$12$q),
+        .clock(vc$12$clock)
     );
-    raster_top$core$triangle_setup$vy_b$0 vy_b$0(
-        .d(vy_b$0$d),
-        .q(vy_b$0$q),
-        .clock(vy_b$0$clock)
+    raster_top$core$triangle_setup$vc$13 vc$13(
+        .d(vc$13$d),
+        .q(vc$13$q),
+        .clock(vc$13$clock)
     );
-    raster_top$core$triangle_setup$vy_b$1 vy_b$1(
-        .d(vy_b$1$d),
-        .q(vy_b$1$q),
-        .clock(vy_b$1$clock)
+    raster_top$core$triangle_setup$vc$14 vc$14(
+        .d(vc$14$d),
+        .q(vc$14$q),
+        .clock(vc$14$clock)
     );
-    raster_top$core$triangle_setup$vy_b$2 vy_b$2(
-        .d(vy_b$2$d),
-        .q(vy_b$2$q),
-        .clock(vy_b$2$clock)
+    raster_top$core$triangle_setup$vc$15 vc$15(
+        .d(vc$15$d),
+        .q(vc$15$q),
+        .clock(vc$15$clock)
     );
-    raster_top$core$triangle_setup$vz_b$0 vz_b$0(
-        .d(vz_b$0$d),
-        .q(vz_b$0$q),
-        .clock(vz_b$0$clock)
+    raster_top$core$triangle_setup$vc$16 vc$16(
+        .d(vc$16$d),
+        .q(vc$16$q),
+        .clock(vc$16$clock)
     );
-    raster_top$core$triangle_setup$vz_b$1 vz_b$1(
-        .d(vz_b$1$d),
-        .q(vz_b$1$q),
-        .clock(vz_b$1$clock)
+    raster_top$core$triangle_setup$vc$17 vc$17(
+        .d(vc$17$d),
+        .q(vc$17$q),
+        .clock(vc$17$clock)
     );
-    raster_top$core$triangle_setup$vz_b$2 vz_b$2(
-        .d(vz_b$2$d),
-        .q(vz_b$2$q),
-        .clock(vz_b$2$clock)
+    raster_top$core$triangle_setup$vc$18 vc$18(
+        .d(vc$18$d),
+        .q(vc$18$q),
+        .clock(vc$18$clock)
     );
-    raster_top$core$triangle_setup$vc_b$0 vc_b$0(
-        .d(vc_b$0$d),
-        .q(vc_b$0$q),
-        .clock(vc_b$0$clock)
+    raster_top$core$triangle_setup$vc$19 vc$19(
+        .d(vc$19$d),
+        .q(vc$19$q),
+        .clock(vc$19$clock)
     );
-    raster_top$core$triangle_setup$vc_b$1 vc_b$1(
-        .d(vc_b$1$d),
-        .q(vc_b$1$q),
-        .clock(vc_b$1$clock)
+    raster_top$core$triangle_setup$vc$20 vc$20(
+        .d(vc$20$d),
+        .q(vc$20$q),
+        .clock(vc$20$clock)
     );
-    raster_top$core$triangle_setup$vc_b$2 vc_b$2(
-        .d(vc_b$2$d),
-        .q(vc_b$2$q),
-        .clock(vc_b$2$clock)
+    raster_top$core$triangle_setup$vc$21 vc$21(
+        .d(vc$21$d),
+        .q(vc$21$q),
+        .clock(vc$21$clock)
     );
-    raster_top$core$triangle_setup$vc_b$3 vc_b$3(
-        .d(vc_b$3$d),
-        .q(vc_b$3$q),
-        .clock(vc_b$3$clock)
+    raster_top$core$triangle_setup$vc$22 vc$22(
+        .d(vc$22$d),
+        .q(vc$22$q),
+        .clock(vc$22$clock)
     );
-    raster_top$core$triangle_setup$vc_b$4 vc_b$4(
-        .d(vc_b$4$d),
-        .q(vc_b$4$q),
-        .clock(vc_b$4$clock)
+    raster_top$core$triangle_setup$vc$23 vc$23(
+        .d(vc$23$d),
+        .q(vc$23$q),
+        .clock(vc$23$clock)
     );
-    raster_top$core$triangle_setup$vc_b$5 vc_b$5(
-        .d(vc_b$5$d),
-        .q(vc_b$5$q),
-        .clock(vc_b$5$clock)
+    raster_top$core$triangle_setup$vc$24 vc$24(
+        .d(vc$24$d),
+        .q(vc$24$q),
+        .clock(vc$24$clock)
     );
-    raster_top$core$triangle_setup$vc_b$6 vc_b$6(
-        .d(vc_b$6$d),
-        .q(vc_b$6$q),
-        .clock(vc_b$6$clock)
+    raster_top$core$triangle_setup$vc$25 vc$25(
+        .d(vc$25$d),
+        .q(vc$25$q),
+        .clock(vc$25$clock)
     );
-    raster_top$core$triangle_setup$vc_b$7 vc_b$7(
-        .d(vc_b$7$d),
-        .q(vc_b$7$q),
-        .clock(vc_b$7$clock)
+    raster_top$core$triangle_setup$vc$26 vc$26(
+        .d(vc$26$d),
+        .q(vc$26$q),
+        .clock(vc$26$clock)
     );
-    raster_top$core$triangle_setup$vc_b$8 vc_b$8(
-        .d(vc_b$8$d),
-        .q(vc_b$8$q),
-        .clock(vc_b$8$clock)
+    raster_top$core$triangle_setup$vc$27 vc$27(
+        .d(vc$27$d),
+        .q(vc$27$q),
+        .clock(vc$27$clock)
     );
-    raster_top$core$triangle_setup$crosses_b crosses_b(
-        .d(crosses_b$d),
-        .q(crosses_b$q),
-        .clock(crosses_b$clock)
+    raster_top$core$triangle_setup$vc$28 vc$28(
+        .d(vc$28$d),
+        .q(vc$28$q),
+        .clock(vc$28$clock)
     );
-    raster_top$core$triangle_setup$maj_left_b maj_left_b(
-        .d(maj_left_b$d),
-        .q(maj_left_b$q),
-        .clock(maj_left_b$clock)
+    raster_top$core$triangle_setup$vc$29 vc$29(
+        .d(vc$29$d),
+        .q(vc$29$q),
+        .clock(vc$29$clock)
     );
-    raster_top$core$triangle_setup$ga ga(
-        .vx$0(ga$vx$0),
-        .vx$1(ga$vx$1),
-        .vx$2(ga$vx$2),
-        .vy$0(ga$vy$0),
-        .vy$1(ga$vy$1),
-        .vy$2(ga$vy$2),
-        .vz$0(ga$vz$0),
-        .vz$1(ga$vz$1),
-        .vz$2(ga$vz$2),
-        .vc$0(ga$vc$0),
-        .vc$1(ga$vc$1),
-        .vc$2(ga$vc$2),
-        .vc$3(ga$vc$3),
-        .vc$4(ga$vc$4),
-        .vc$5(ga$vc$5),
-        .vc$6(ga$vc$6),
-        .vc$7(ga$vc$7),
-        .vc$8(ga$vc$8),
-        .crosses(ga$crosses),
-        .maj_left(ga$maj_left),
-        .start_x$0(ga$start_x$0),
-        .start_x$1(ga$start_x$1),
-        .start_x$2(ga$start_x$2),
-        .kdx$0(ga$kdx$0),
-        .kdx$1(ga$kdx$1),
-        .kdx$2(ga$kdx$2),
-        .kdy$0(ga$kdy$0),
-        .kdy$1(ga$kdy$1),
-        .kdy$2(ga$kdy$2),
-        .up(ga$up),
-        .edx$0(ga$edx$0),
-        .edx$1(ga$edx$1),
-        .edx$2(ga$edx$2),
-        .edy$0(ga$edy$0),
-        .edy$1(ga$edy$1),
-        .edy$2(ga$edy$2),
-        .edy_d$0(ga$edy_d$0),
-        .edy_d$1(ga$edy_d$1),
-        .edy_d$2(ga$edy_d$2),
-        .ed16$0(ga$ed16$0),
-        .ed16$1(ga$ed16$1),
-        .ed16$2(ga$ed16$2),
-        .cy$0(ga$cy$0),
-        .cy$1(ga$cy$1),
-        .cy$2(ga$cy$2),
-        .count$0(ga$count$0),
-        .count$1(ga$count$1),
-        .count$2(ga$count$2),
-        .toff$0(ga$toff$0),
-        .toff$1(ga$toff$1),
-        .toff$2(ga$toff$2),
-        .xf$0(ga$xf$0),
-        .xf$1(ga$xf$1),
-        .xf$2(ga$xf$2),
-        .xi$0(ga$xi$0),
-        .xi$1(ga$xi$1),
-        .xi$2(ga$xi$2),
-        .off_x$0(ga$off_x$0),
-        .off_x$1(ga$off_x$1),
-        .off_x$2(ga$off_x$2),
-        .off_y$0(ga$off_y$0),
-        .off_y$1(ga$off_y$1),
-        .off_y$2(ga$off_y$2),
-        .dmaj$0(ga$dmaj$0),
-        .dmaj$1(ga$dmaj$1),
-        .dmaj$2(ga$dmaj$2),
-        .dmaj$3(ga$dmaj$3),
-        .dbot$0(ga$dbot$0),
-        .dbot$1(ga$dbot$1),
-        .dbot$2(ga$dbot$2),
-        .dbot$3(ga$dbot$3),
-        .attr0$0(ga$attr0$0),
-        .attr0$1(ga$attr0$1),
-        .attr0$2(ga$attr0$2),
-        .attr0$3(ga$attr0$3)
+    raster_top$core$triangle_setup$vc$30 vc$30(
+        .d(vc$30$d),
+        .q(vc$30$q),
+        .clock(vc$30$clock)
     );
-    raster_top$core$triangle_setup$gb gb(
-        .vx$0(gb$vx$0),
-        .vx$1(gb$vx$1),
-        .vx$2(gb$vx$2),
-        .vy$0(gb$vy$0),
-        .vy$1(gb$vy$1),
-        .vy$2(gb$vy$2),
-        .vz$0(gb$vz$0),
-        .vz$1(gb$vz$1),
-        .vz$2(gb$vz$2),
-        .vc$0(gb$vc$0),
-        .vc$1(gb$vc$1),
-        .vc$2(gb$vc$2),
-        .vc$3(gb$vc$3),
-        .vc$4(gb$vc$4),
-        .vc$5(gb$vc$5),
-        .vc$6(gb$vc$6),
-        .vc$7(gb$vc$7),
-        .vc$8(gb$vc$8),
-        .crosses(gb$crosses),
-        .maj_left(gb$maj_left),
-        .start_x$0(gb$start_x$0),
-        .start_x$1(gb$start_x$1),
-        .start_x$2(gb$start_x$2),
-        .kdx$0(gb$kdx$0),
-        .kdx$1(gb$kdx$1),
-        .kdx$2(gb$kdx$2),
-        .kdy$0(gb$kdy$0),
-        .kdy$1(gb$kdy$1),
-        .kdy$2(gb$kdy$2),
-        .up(gb$up),
-        .edx$0(gb$edx$0),
-        .edx$1(gb$edx$1),
-        .edx$2(gb$edx$2),
-        .edy$0(gb$edy$0),
-        .edy$1(gb$edy$1),
-        .edy$2(gb$edy$2),
-        .edy_d$0(gb$edy_d$0),
-        .edy_d$1(gb$edy_d$1),
-        .edy_d$2(gb$edy_d$2),
-        .ed16$0(gb$ed16$0),
-        .ed16$1(gb$ed16$1),
-        .ed16$2(gb$ed16$2),
-        .cy$0(gb$cy$0),
-        .cy$1(gb$cy$1),
-        .cy$2(gb$cy$2),
-        .count$0(gb$count$0),
-        .count$1(gb$count$1),
-        .count$2(gb$count$2),
-        .toff$0(gb$toff$0),
-        .toff$1(gb$toff$1),
-        .toff$2(gb$toff$2),
-        .xf$0(gb$xf$0),
-        .xf$1(gb$xf$1),
-        .xf$2(gb$xf$2),
-        .xi$0(gb$xi$0),
-        .xi$1(gb$xi$1),
-        .xi$2(gb$xi$2),
-        .off_x$0(gb$off_x$0),
-        .off_x$1(gb$off_x$1),
-        .off_x$2(gb$off_x$2),
-        .off_y$0(gb$off_y$0),
-        .off_y$1(gb$off_y$1),
-        .off_y$2(gb$off_y$2),
-        .dmaj$0(gb$dmaj$0),
-        .dmaj$1(gb$dmaj$1),
-        .dmaj$2(gb$dmaj$2),
-        .dmaj$3(gb$dmaj$3),
-        .dbot$0(gb$dbot$0),
-        .dbot$1(gb$dbot$1),
-        .dbot$2(gb$dbot$2),
-        .dbot$3(gb$dbot$3),
-        .attr0$0(gb$attr0$0),
-        .attr0$1(gb$attr0$1),
-        .attr0$2(gb$attr0$2),
-        .attr0$3(gb$attr0$3)
+    raster_top$core$triangle_setup$vc$31 vc$31(
+        .d(vc$31$d),
+        .q(vc$31$q),
+        .clock(vc$31$clock)
+    );
+    raster_top$core$triangle_setup$vc$32 vc$32(
+        .d(vc$32$d),
+        .q(vc$32$q),
+        .clock(vc$32$clock)
+    );
+    raster_top$core$triangle_setup$vc$33 vc$33(
+        .d(vc$33$d),
+        .q(vc$33$q),
+        .clock(vc$33$clock)
+    );
+    raster_top$core$triangle_setup$vc$34 vc$34(
+        .d(vc$34$d),
+        .q(vc$34$q),
+        .clock(vc$34$clock)
+    );
+    raster_top$core$triangle_setup$vc$35 vc$35(
+        .d(vc$35$d),
+        .q(vc$35$q),
+        .clock(vc$35$clock)
+    );
+    raster_top$core$triangle_setup$crosses$0 crosses$0(
+        .d(crosses$0$d),
+        .q(crosses$0$q),
+        .clock(crosses$0$clock)
+    );
+    raster_top$core$triangle_setup$crosses$1 crosses$1(
+        .d(crosses$1$d),
+        .q(crosses$1$q),
+        .clock(crosses$1$clock)
+    );
+    raster_top$core$triangle_setup$crosses$2 crosses$2(
+        .d(crosses$2$d),
+        .q(crosses$2$q),
+        .clock(crosses$2$clock)
+    );
+    raster_top$core$triangle_setup$crosses$3 crosses$3(
+        .d(crosses$3$d),
+        .q(crosses$3$q),
+        .clock(crosses$3$clock)
+    );
+    raster_top$core$triangle_setup$sign$0 sign$0(
+        .d(sign$0$d),
+        .q(sign$0$q),
+        .clock(sign$0$clock)
+    );
+    raster_top$core$triangle_setup$sign$1 sign$1(
+        .d(sign$1$d),
+        .q(sign$1$q),
+        .clock(sign$1$clock)
+    );
+    raster_top$core$triangle_setup$sign$2 sign$2(
+        .d(sign$2$d),
+        .q(sign$2$q),
+        .clock(sign$2$clock)
+    );
+    raster_top$core$triangle_setup$sign$3 sign$3(
+        .d(sign$3$d),
+        .q(sign$3$q),
+        .clock(sign$3$clock)
+    );
+    raster_top$core$triangle_setup$exp$0 exp$0(
+        .d(exp$0$d),
+        .q(exp$0$q),
+        .clock(exp$0$clock)
+    );
+    raster_top$core$triangle_setup$exp$1 exp$1(
+        .d(exp$1$d),
+        .q(exp$1$q),
+        .clock(exp$1$clock)
+    );
+    raster_top$core$triangle_setup$exp$2 exp$2(
+        .d(exp$2$d),
+        .q(exp$2$q),
+        .clock(exp$2$clock)
+    );
+    raster_top$core$triangle_setup$exp$3 exp$3(
+        .d(exp$3$d),
+        .q(exp$3$q),
+        .clock(exp$3$clock)
+    );
+    raster_top$core$triangle_setup$g0 g0(
+        .vx$0(g0$vx$0),
+        .vx$1(g0$vx$1),
+        .vx$2(g0$vx$2),
+        .vy$0(g0$vy$0),
+        .vy$1(g0$vy$1),
+        .vy$2(g0$vy$2),
+        .vz$0(g0$vz$0),
+        .vz$1(g0$vz$1),
+        .vz$2(g0$vz$2),
+        .vc$0(g0$vc$0),
+        .vc$1(g0$vc$1),
+        .vc$2(g0$vc$2),
+        .vc$3(g0$vc$3),
+        .vc$4(g0$vc$4),
+        .vc$5(g0$vc$5),
+        .vc$6(g0$vc$6),
+        .vc$7(g0$vc$7),
+        .vc$8(g0$vc$8),
+        .crosses(g0$crosses),
+        .maj_left(g0$maj_left),
+        .start_x$0(g0$start_x$0),
+        .start_x$1(g0$start_x$1),
+        .start_x$2(g0$start_x$2),
+        .kdx$0(g0$kdx$0),
+        .kdx$1(g0$kdx$1),
+        .kdx$2(g0$kdx$2),
+        .kdy$0(g0$kdy$0),
+        .kdy$1(g0$kdy$1),
+        .kdy$2(g0$kdy$2),
+        .up(g0$up),
+        .edx$0(g0$edx$0),
+        .edx$1(g0$edx$1),
+        .edx$2(g0$edx$2),
+        .edy$0(g0$edy$0),
+        .edy$1(g0$edy$1),
+        .edy$2(g0$edy$2),
+        .edy_d$0(g0$edy_d$0),
+        .edy_d$1(g0$edy_d$1),
+        .edy_d$2(g0$edy_d$2),
+        .ed16$0(g0$ed16$0),
+        .ed16$1(g0$ed16$1),
+        .ed16$2(g0$ed16$2),
+        .cy$0(g0$cy$0),
+        .cy$1(g0$cy$1),
+        .cy$2(g0$cy$2),
+        .count$0(g0$count$0),
+        .count$1(g0$count$1),
+        .count$2(g0$count$2),
+        .toff$0(g0$toff$0),
+        .toff$1(g0$toff$1),
+        .toff$2(g0$toff$2),
+        .xf$0(g0$xf$0),
+        .xf$1(g0$xf$1),
+        .xf$2(g0$xf$2),
+        .xi$0(g0$xi$0),
+        .xi$1(g0$xi$1),
+        .xi$2(g0$xi$2),
+        .off_x$0(g0$off_x$0),
+        .off_x$1(g0$off_x$1),
+        .off_x$2(g0$off_x$2),
+        .off_y$0(g0$off_y$0),
+        .off_y$1(g0$off_y$1),
+        .off_y$2(g0$off_y$2),
+        .dmaj$0(g0$dmaj$0),
+        .dmaj$1(g0$dmaj$1),
+        .dmaj$2(g0$dmaj$2),
+        .dmaj$3(g0$dmaj$3),
+        .dbot$0(g0$dbot$0),
+        .dbot$1(g0$dbot$1),
+        .dbot$2(g0$dbot$2),
+        .dbot$3(g0$dbot$3),
+        .attr0$0(g0$attr0$0),
+        .attr0$1(g0$attr0$1),
+        .attr0$2(g0$attr0$2),
+        .attr0$3(g0$attr0$3)
+    );
+    raster_top$core$triangle_setup$g1 g1(
+        .vx$0(g1$vx$0),
+        .vx$1(g1$vx$1),
+        .vx$2(g1$vx$2),
+        .vy$0(g1$vy$0),
+        .vy$1(g1$vy$1),
+        .vy$2(g1$vy$2),
+        .vz$0(g1$vz$0),
+        .vz$1(g1$vz$1),
+        .vz$2(g1$vz$2),
+        .vc$0(g1$vc$0),
+        .vc$1(g1$vc$1),
+        .vc$2(g1$vc$2),
+        .vc$3(g1$vc$3),
+        .vc$4(g1$vc$4),
+        .vc$5(g1$vc$5),
+        .vc$6(g1$vc$6),
+        .vc$7(g1$vc$7),
+        .vc$8(g1$vc$8),
+        .crosses(g1$crosses),
+        .maj_left(g1$maj_left),
+        .start_x$0(g1$start_x$0),
+        .start_x$1(g1$start_x$1),
+        .start_x$2(g1$start_x$2),
+        .kdx$0(g1$kdx$0),
+        .kdx$1(g1$kdx$1),
+        .kdx$2(g1$kdx$2),
+        .kdy$0(g1$kdy$0),
+        .kdy$1(g1$kdy$1),
+        .kdy$2(g1$kdy$2),
+        .up(g1$up),
+        .edx$0(g1$edx$0),
+        .edx$1(g1$edx$1),
+        .edx$2(g1$edx$2),
+        .edy$0(g1$edy$0),
+        .edy$1(g1$edy$1),
+        .edy$2(g1$edy$2),
+        .edy_d$0(g1$edy_d$0),
+        .edy_d$1(g1$edy_d$1),
+        .edy_d$2(g1$edy_d$2),
+        .ed16$0(g1$ed16$0),
+        .ed16$1(g1$ed16$1),
+        .ed16$2(g1$ed16$2),
+        .cy$0(g1$cy$0),
+        .cy$1(g1$cy$1),
+        .cy$2(g1$cy$2),
+        .count$0(g1$count$0),
+        .count$1(g1$count$1),
+        .count$2(g1$count$2),
+        .toff$0(g1$toff$0),
+        .toff$1(g1$toff$1),
+        .toff$2(g1$toff$2),
+        .xf$0(g1$xf$0),
+        .xf$1(g1$xf$1),
+        .xf$2(g1$xf$2),
+        .xi$0(g1$xi$0),
+        .xi$1(g1$xi$1),
+        .xi$2(g1$xi$2),
+        .off_x$0(g1$off_x$0),
+        .off_x$1(g1$off_x$1),
+        .off_x$2(g1$off_x$2),
+        .off_y$0(g1$off_y$0),
+        .off_y$1(g1$off_y$1),
+        .off_y$2(g1$off_y$2),
+        .dmaj$0(g1$dmaj$0),
+        .dmaj$1(g1$dmaj$1),
+        .dmaj$2(g1$dmaj$2),
+        .dmaj$3(g1$dmaj$3),
+        .dbot$0(g1$dbot$0),
+        .dbot$1(g1$dbot$1),
+        .dbot$2(g1$dbot$2),
+        .dbot$3(g1$dbot$3),
+        .attr0$0(g1$attr0$0),
+        .attr0$1(g1$attr0$1),
+        .attr0$2(g1$attr0$2),
+        .attr0$3(g1$attr0$3)
+    );
+    raster_top$core$triangle_setup$g2 g2(
+        .vx$0(g2$vx$0),
+        .vx$1(g2$vx$1),
+        .vx$2(g2$vx$2),
+        .vy$0(g2$vy$0),
+        .vy$1(g2$vy$1),
+        .vy$2(g2$vy$2),
+        .vz$0(g2$vz$0),
+        .vz$1(g2$vz$1),
+        .vz$2(g2$vz$2),
+        .vc$0(g2$vc$0),
+        .vc$1(g2$vc$1),
+        .vc$2(g2$vc$2),
+        .vc$3(g2$vc$3),
+        .vc$4(g2$vc$4),
+        .vc$5(g2$vc$5),
+        .vc$6(g2$vc$6),
+        .vc$7(g2$vc$7),
+        .vc$8(g2$vc$8),
+        .crosses(g2$crosses),
+        .maj_left(g2$maj_left),
+        .start_x$0(g2$start_x$0),
+        .start_x$1(g2$start_x$1),
+        .start_x$2(g2$start_x$2),
+        .kdx$0(g2$kdx$0),
+        .kdx$1(g2$kdx$1),
+        .kdx$2(g2$kdx$2),
+        .kdy$0(g2$kdy$0),
+        .kdy$1(g2$kdy$1),
+        .kdy$2(g2$kdy$2),
+        .up(g2$up),
+        .edx$0(g2$edx$0),
+        .edx$1(g2$edx$1),
+        .edx$2(g2$edx$2),
+        .edy$0(g2$edy$0),
+        .edy$1(g2$edy$1),
+        .edy$2(g2$edy$2),
+        .edy_d$0(g2$edy_d$0),
+        .edy_d$1(g2$edy_d$1),
+        .edy_d$2(g2$edy_d$2),
+        .ed16$0(g2$ed16$0),
+        .ed16$1(g2$ed16$1),
+        .ed16$2(g2$ed16$2),
+        .cy$0(g2$cy$0),
+        .cy$1(g2$cy$1),
+        .cy$2(g2$cy$2),
+        .count$0(g2$count$0),
+        .count$1(g2$count$1),
+        .count$2(g2$count$2),
+        .toff$0(g2$toff$0),
+        .toff$1(g2$toff$1),
+        .toff$2(g2$toff$2),
+        .xf$0(g2$xf$0),
+        .xf$1(g2$xf$1),
+        .xf$2(g2$xf$2),
+        .xi$0(g2$xi$0),
+        .xi$1(g2$xi$1),
+        .xi$2(g2$xi$2),
+        .off_x$0(g2$off_x$0),
+        .off_x$1(g2$off_x$1),
+        .off_x$2(g2$off_x$2),
+        .off_y$0(g2$off_y$0),
+        .off_y$1(g2$off_y$1),
+        .off_y$2(g2$off_y$2),
+        .dmaj$0(g2$dmaj$0),
+        .dmaj$1(g2$dmaj$1),
+        .dmaj$2(g2$dmaj$2),
+        .dmaj$3(g2$dmaj$3),
+        .dbot$0(g2$dbot$0),
+        .dbot$1(g2$dbot$1),
+        .dbot$2(g2$dbot$2),
+        .dbot$3(g2$dbot$3),
+        .attr0$0(g2$attr0$0),
+        .attr0$1(g2$attr0$1),
+        .attr0$2(g2$attr0$2),
+        .attr0$3(g2$attr0$3)
+    );
+    raster_top$core$triangle_setup$g3 g3(
+        .vx$0(g3$vx$0),
+        .vx$1(g3$vx$1),
+        .vx$2(g3$vx$2),
+        .vy$0(g3$vy$0),
+        .vy$1(g3$vy$1),
+        .vy$2(g3$vy$2),
+        .vz$0(g3$vz$0),
+        .vz$1(g3$vz$1),
+        .vz$2(g3$vz$2),
+        .vc$0(g3$vc$0),
+        .vc$1(g3$vc$1),
+        .vc$2(g3$vc$2),
+        .vc$3(g3$vc$3),
+        .vc$4(g3$vc$4),
+        .vc$5(g3$vc$5),
+        .vc$6(g3$vc$6),
+        .vc$7(g3$vc$7),
+        .vc$8(g3$vc$8),
+        .crosses(g3$crosses),
+        .maj_left(g3$maj_left),
+        .start_x$0(g3$start_x$0),
+        .start_x$1(g3$start_x$1),
+        .start_x$2(g3$start_x$2),
+        .kdx$0(g3$kdx$0),
+        .kdx$1(g3$kdx$1),
+        .kdx$2(g3$kdx$2),
+        .kdy$0(g3$kdy$0),
+        .kdy$1(g3$kdy$1),
+        .kdy$2(g3$kdy$2),
+        .up(g3$up),
+        .edx$0(g3$edx$0),
+        .edx$1(g3$edx$1),
+        .edx$2(g3$edx$2),
+        .edy$0(g3$edy$0),
+        .edy$1(g3$edy$1),
+        .edy$2(g3$edy$2),
+        .edy_d$0(g3$edy_d$0),
+        .edy_d$1(g3$edy_d$1),
+        .edy_d$2(g3$edy_d$2),
+        .ed16$0(g3$ed16$0),
+        .ed16$1(g3$ed16$1),
+        .ed16$2(g3$ed16$2),
+        .cy$0(g3$cy$0),
+        .cy$1(g3$cy$1),
+        .cy$2(g3$cy$2),
+        .count$0(g3$count$0),
+        .count$1(g3$count$1),
+        .count$2(g3$count$2),
+        .toff$0(g3$toff$0),
+        .toff$1(g3$toff$1),
+        .toff$2(g3$toff$2),
+        .xf$0(g3$xf$0),
+        .xf$1(g3$xf$1),
+        .xf$2(g3$xf$2),
+        .xi$0(g3$xi$0),
+        .xi$1(g3$xi$1),
+        .xi$2(g3$xi$2),
+        .off_x$0(g3$off_x$0),
+        .off_x$1(g3$off_x$1),
+        .off_x$2(g3$off_x$2),
+        .off_y$0(g3$off_y$0),
+        .off_y$1(g3$off_y$1),
+        .off_y$2(g3$off_y$2),
+        .dmaj$0(g3$dmaj$0),
+        .dmaj$1(g3$dmaj$1),
+        .dmaj$2(g3$dmaj$2),
+        .dmaj$3(g3$dmaj$3),
+        .dbot$0(g3$dbot$0),
+        .dbot$1(g3$dbot$1),
+        .dbot$2(g3$dbot$2),
+        .dbot$3(g3$dbot$3),
+        .attr0$0(g3$attr0$0),
+        .attr0$1(g3$attr0$1),
+        .attr0$2(g3$attr0$2),
+        .attr0$3(g3$attr0$3)
     );
     raster_top$core$triangle_setup$area area(
         .d(area$d),
         .q(area$q),
         .clock(area$clock)
     );
-    raster_top$core$triangle_setup$exp exp(
-        .d(exp$d),
-        .q(exp$q),
-        .clock(exp$clock)
+    raster_top$core$triangle_setup$norm norm(
+        .d(norm$d),
+        .q(norm$q),
+        .clock(norm$clock)
     );
     raster_top$core$triangle_setup$mant mant(
         .d(mant$d),
         .q(mant$q),
         .clock(mant$clock)
+    );
+    raster_top$core$triangle_setup$exp_e exp_e(
+        .d(exp_e$d),
+        .q(exp_e$q),
+        .clock(exp_e$clock)
     );
     raster_top$core$triangle_setup$x$0 x$0(
         .d(x$0$d),
@@ -9807,35 +10525,191 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     
     // Update code
     always @(*) begin
-        ta$clock = clock;
-        tb$clock = clock;
-        crosses$clock = clock;
-        crosses_b$clock = clock;
-        maj_left_b$clock = clock;
         area$clock = clock;
-        exp$clock = clock;
+        norm$clock = clock;
         mant$clock = clock;
-        ta$d = ta$q;
-        tb$d = tb$q;
-        crosses$d = crosses$q;
-        crosses_b$d = crosses_b$q;
-        maj_left_b$d = maj_left_b$q;
+        exp_e$clock = clock;
         area$d = area$q;
-        exp$d = exp$q;
+        norm$d = norm$q;
         mant$d = mant$q;
+        exp_e$d = exp_e$q;
         div$clock = clock;
+        t$0$clock = clock;
+        t$0$d = t$0$q;
+        crosses$0$clock = clock;
+        crosses$0$d = crosses$0$q;
+        sign$0$clock = clock;
+        sign$0$d = sign$0$q;
+        exp$0$clock = clock;
+        exp$0$d = exp$0$q;
         vx$0$clock = clock;
         vx$0$d = vx$0$q;
         vy$0$clock = clock;
         vy$0$d = vy$0$q;
         vz$0$clock = clock;
         vz$0$d = vz$0$q;
-        vx_b$0$clock = clock;
-        vx_b$0$d = vx_b$0$q;
-        vy_b$0$clock = clock;
-        vy_b$0$d = vy_b$0$q;
-        vz_b$0$clock = clock;
-        vz_b$0$d = vz_b$0$q;
+        vx$1$clock = clock;
+        vx$1$d = vx$1$q;
+        vy$1$clock = clock;
+        vy$1$d = vy$1$q;
+        vz$1$clock = clock;
+        vz$1$d = vz$1$q;
+        vx$2$clock = clock;
+        vx$2$d = vx$2$q;
+        vy$2$clock = clock;
+        vy$2$d = vy$2$q;
+        vz$2$clock = clock;
+        vz$2$d = vz$2$q;
+        vc$0$clock = clock;
+        vc$0$d = vc$0$q;
+        vc$1$clock = clock;
+        vc$1$d = vc$1$q;
+        vc$2$clock = clock;
+        vc$2$d = vc$2$q;
+        vc$3$clock = clock;
+        vc$3$d = vc$3$q;
+        vc$4$clock = clock;
+        vc$4$d = vc$4$q;
+        vc$5$clock = clock;
+        vc$5$d = vc$5$q;
+        vc$6$clock = clock;
+        vc$6$d = vc$6$q;
+        vc$7$clock = clock;
+        vc$7$d = vc$7$q;
+        vc$8$clock = clock;
+        vc$8$d = vc$8$q;
+        t$1$clock = clock;
+        t$1$d = t$1$q;
+        crosses$1$clock = clock;
+        crosses$1$d = crosses$1$q;
+        sign$1$clock = clock;
+        sign$1$d = sign$1$q;
+        exp$1$clock = clock;
+        exp$1$d = exp$1$q;
+        vx$3$clock = clock;
+        vx$3$d = vx$3$q;
+        vy$3$clock = clock;
+        vy$3$d = vy$3$q;
+        vz$3$clock = clock;
+        vz$3$d = vz$3$q;
+        vx$4$clock = clock;
+        vx$4$d = vx$4$q;
+        vy$4$clock = clock;
+        vy$4$d = vy$4$q;
+        vz$4$clock = clock;
+        vz$4$d = vz$4$q;
+        vx$5$clock = clock;
+        vx$5$d = vx$5$q;
+        vy$5$clock = clock;
+        vy$5$d = vy$5$q;
+        vz$5$clock = clock;
+        vz$5$d = vz$5$q;
+        vc$9$clock = clock;
+        vc$9$d = vc$9$q;
+        vc$10$clock = clock;
+        vc$10$d = vc$10$q;
+        vc$11$clock = clock;
+        vc$11$d = vc$11$q;
+        vc$12$clock = clock;
+        vc$12$d = vc$12$q;
+        vc$13$clock = clock;
+        vc$13$d = vc$13$q;
+        vc$14$clock = clock;
+        vc$14$d = vc$14$q;
+        vc$15$clock = clock;
+        vc$15$d = vc$15$q;
+        vc$16$clock = clock;
+        vc$16$d = vc$16$q;
+        vc$17$clock = clock;
+        vc$17$d = vc$17$q;
+        t$2$clock = clock;
+        t$2$d = t$2$q;
+        crosses$2$clock = clock;
+        crosses$2$d = crosses$2$q;
+        sign$2$clock = clock;
+        sign$2$d = sign$2$q;
+        exp$2$clock = clock;
+        exp$2$d = exp$2$q;
+        vx$6$clock = clock;
+        vx$6$d = vx$6$q;
+        vy$6$clock = clock;
+        vy$6$d = vy$6$q;
+        vz$6$clock = clock;
+        vz$6$d = vz$6$q;
+        vx$7$clock = clock;
+        vx$7$d = vx$7$q;
+        vy$7$clock = clock;
+        vy$7$d = vy$7$q;
+        vz$7$clock = clock;
+        vz$7$d = vz$7$q;
+        vx$8$clock = clock;
+        vx$8$d = vx$8$q;
+        vy$8$clock = clock;
+        vy$8$d = vy$8$q;
+        vz$8$clock = clock;
+        vz$8$d = vz$8$q;
+        vc$18$clock = clock;
+        vc$18$d = vc$18$q;
+        vc$19$clock = clock;
+        vc$19$d = vc$19$q;
+        vc$20$clock = clock;
+        vc$20$d = vc$20$q;
+        vc$21$clock = clock;
+        vc$21$d = vc$21$q;
+        vc$22$clock = clock;
+        vc$22$d = vc$22$q;
+        vc$23$clock = clock;
+        vc$23$d = vc$23$q;
+        vc$24$clock = clock;
+        vc$24$d = vc$24$q;
+        vc$25$clock = clock;
+        vc$25$d = vc$25$q;
+        vc$26$clock = clock;
+        vc$26$d = vc$26$q;
+        t$3$clock = clock;
+        t$3$d = t$3$q;
+        crosses$3$clock = clock;
+        crosses$3$d = crosses$3$q;
+        sign$3$clock = clock;
+        sign$3$d = sign$3$q;
+        exp$3$clock = clock;
+        exp$3$d = exp$3$q;
+        vx$9$clock = clock;
+        vx$9$d = vx$9$q;
+        vy$9$clock = clock;
+        vy$9$d = vy$9$q;
+        vz$9$clock = clock;
+        vz$9$d = vz$9$q;
+        vx$10$clock = clock;
+        vx$10$d = vx$10$q;
+        vy$10$clock = clock;
+        vy$10$d = vy$10$q;
+        vz$10$clock = clock;
+        vz$10$d = vz$10$q;
+        vx$11$clock = clock;
+        vx$11$d = vx$11$q;
+        vy$11$clock = clock;
+        vy$11$d = vy$11$q;
+        vz$11$clock = clock;
+        vz$11$d = vz$11$q;
+        vc$27$clock = clock;
+        vc$27$d = vc$27$q;
+        vc$28$clock = clock;
+        vc$28$d = vc$28$q;
+        vc$29$clock = clock;
+        vc$29$d = vc$29$q;
+        vc$30$clock = clock;
+        vc$30$d = vc$30$q;
+        vc$31$clock = clock;
+        vc$31$d = vc$31$q;
+        vc$32$clock = clock;
+        vc$32$d = vc$32$q;
+        vc$33$clock = clock;
+        vc$33$d = vc$33$q;
+        vc$34$clock = clock;
+        vc$34$d = vc$34$q;
+        vc$35$clock = clock;
+        vc$35$d = vc$35$q;
         x$0$clock = clock;
         x$0$d = x$0$q;
         r$0$clock = clock;
@@ -9845,18 +10719,6 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         rho$0$clock = clock;
         rho$0$d = rho$0$q;
         num$0$clock = clock;
-        vx$1$clock = clock;
-        vx$1$d = vx$1$q;
-        vy$1$clock = clock;
-        vy$1$d = vy$1$q;
-        vz$1$clock = clock;
-        vz$1$d = vz$1$q;
-        vx_b$1$clock = clock;
-        vx_b$1$d = vx_b$1$q;
-        vy_b$1$clock = clock;
-        vy_b$1$d = vy_b$1$q;
-        vz_b$1$clock = clock;
-        vz_b$1$d = vz_b$1$q;
         x$1$clock = clock;
         x$1$d = x$1$q;
         r$1$clock = clock;
@@ -9866,18 +10728,6 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         rho$1$clock = clock;
         rho$1$d = rho$1$q;
         num$1$clock = clock;
-        vx$2$clock = clock;
-        vx$2$d = vx$2$q;
-        vy$2$clock = clock;
-        vy$2$d = vy$2$q;
-        vz$2$clock = clock;
-        vz$2$d = vz$2$q;
-        vx_b$2$clock = clock;
-        vx_b$2$d = vx_b$2$q;
-        vy_b$2$clock = clock;
-        vy_b$2$d = vy_b$2$q;
-        vz_b$2$clock = clock;
-        vz_b$2$d = vz_b$2$q;
         x$2$clock = clock;
         x$2$d = x$2$q;
         r$2$clock = clock;
@@ -9887,42 +10737,6 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         rho$2$clock = clock;
         rho$2$d = rho$2$q;
         num$2$clock = clock;
-        vc$0$clock = clock;
-        vc$0$d = vc$0$q;
-        vc_b$0$clock = clock;
-        vc_b$0$d = vc_b$0$q;
-        vc$1$clock = clock;
-        vc$1$d = vc$1$q;
-        vc_b$1$clock = clock;
-        vc_b$1$d = vc_b$1$q;
-        vc$2$clock = clock;
-        vc$2$d = vc$2$q;
-        vc_b$2$clock = clock;
-        vc_b$2$d = vc_b$2$q;
-        vc$3$clock = clock;
-        vc$3$d = vc$3$q;
-        vc_b$3$clock = clock;
-        vc_b$3$d = vc_b$3$q;
-        vc$4$clock = clock;
-        vc$4$d = vc$4$q;
-        vc_b$4$clock = clock;
-        vc_b$4$d = vc_b$4$q;
-        vc$5$clock = clock;
-        vc$5$d = vc$5$q;
-        vc_b$5$clock = clock;
-        vc_b$5$d = vc_b$5$q;
-        vc$6$clock = clock;
-        vc$6$d = vc$6$q;
-        vc_b$6$clock = clock;
-        vc_b$6$d = vc_b$6$q;
-        vc$7$clock = clock;
-        vc$7$d = vc$7$q;
-        vc_b$7$clock = clock;
-        vc_b$7$d = vc_b$7$q;
-        vc$8$clock = clock;
-        vc$8$d = vc$8$q;
-        vc_b$8$clock = clock;
-        vc_b$8$d = vc_b$8$q;
         p$0$clock = clock;
         p$0$d = p$0$q;
         gx$0$clock = clock;
@@ -9999,50 +10813,54 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         inc0$11$d = inc0$11$q;
         inc1$11$clock = clock;
         inc1$11$d = inc1$11$q;
-        maj_left = area$q[area_msb];
-        run = ~((tb$q == last) & ~out$ready);
-        out$valid = tb$q == last;
-        inp$ready = run & ((ta$q == 32'h0) | (ta$q == interval));
+        maj_left$0 = area$q[area_msb];
+        maj_left$1 = sign$1$q;
+        maj_left$2 = sign$2$q;
+        maj_left$3 = sign$3$q;
+        run = ~((t$1$q == last) & ~out$ready);
+        out$valid = t$1$q == last;
+        inp$ready = run & ((t$0$q == 32'h0) | (t$0$q == ends$0));
         take = inp$valid & inp$ready;
         if (run) begin
-            if (ta$q != 32'h0) begin
-                ta$d = ta$q + 32'h1;
+            if (t$0$q != 32'h0) begin
+                t$0$d = t$0$q + 32'h1;
             end
-            if (ta$q == interval) begin
-                ta$d = 32'h0;
+            if (t$0$q == ends$0) begin
+                t$0$d = 32'h0;
             end
-            if (tb$q != 32'h0) begin
-                tb$d = tb$q + 32'h1;
+            if (t$1$q != 32'h0) begin
+                t$1$d = t$1$q + 32'h1;
             end
-            if (tb$q == last) begin
-                tb$d = 32'h0;
+            if (t$1$q == ends$1) begin
+                t$1$d = 32'h0;
             end
-            if (ta$q == interval) begin
-                tb$d = after_interval;
-                crosses_b$d = crosses$q;
-                maj_left_b$d = maj_left;
-                vx_b$0$d = vx$0$q;
-                vy_b$0$d = vy$0$q;
-                vz_b$0$d = vz$0$q;
-                vx_b$1$d = vx$1$q;
-                vy_b$1$d = vy$1$q;
-                vz_b$1$d = vz$1$q;
-                vx_b$2$d = vx$2$q;
-                vy_b$2$d = vy$2$q;
-                vz_b$2$d = vz$2$q;
-                vc_b$0$d = vc$0$q;
-                vc_b$1$d = vc$1$q;
-                vc_b$2$d = vc$2$q;
-                vc_b$3$d = vc$3$q;
-                vc_b$4$d = vc$4$q;
-                vc_b$5$d = vc$5$q;
-                vc_b$6$d = vc$6$q;
-                vc_b$7$d = vc$7$q;
-                vc_b$8$d = vc$8$q;
+            if (t$0$q == ends$0) begin
+                t$1$d = ends$0 + 32'h1;
+                crosses$1$d = crosses$0$q;
+                sign$1$d = maj_left$0;
+                exp$1$d = exp$0$q;
+                vx$3$d = vx$0$q;
+                vy$3$d = vy$0$q;
+                vz$3$d = vz$0$q;
+                vx$4$d = vx$1$q;
+                vy$4$d = vy$1$q;
+                vz$4$d = vz$1$q;
+                vx$5$d = vx$2$q;
+                vy$5$d = vy$2$q;
+                vz$5$d = vz$2$q;
+                vc$9$d = vc$0$q;
+                vc$10$d = vc$1$q;
+                vc$11$d = vc$2$q;
+                vc$12$d = vc$3$q;
+                vc$13$d = vc$4$q;
+                vc$14$d = vc$5$q;
+                vc$15$d = vc$6$q;
+                vc$16$d = vc$7$q;
+                vc$17$d = vc$8$q;
             end
         end
         if (take) begin
-            ta$d = 32'h1;
+            t$0$d = 32'h1;
             vx$0$d = inp$v0_x;
             vy$0$d = inp$v0_y;
             vz$0$d = inp$v0_z;
@@ -10061,118 +10879,612 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             vc$6$d = inp$v2_c0;
             vc$7$d = inp$v2_c1;
             vc$8$d = inp$v2_c2;
-            crosses$d = inp$crosses;
+            crosses$0$d = inp$crosses;
         end
-        act$0 = run & ((ta$q == cyc$0) | (tb$q == cyc$0));
-        act$1 = run & ((ta$q == cyc$1) | (tb$q == cyc$1));
-        act$2 = run & ((ta$q == cyc$2) | (tb$q == cyc$2));
-        act$3 = run & ((ta$q == cyc$3) | (tb$q == cyc$3));
-        act$4 = run & ((ta$q == cyc$4) | (tb$q == cyc$4));
-        act$5 = run & ((ta$q == cyc$5) | (tb$q == cyc$5));
-        act$6 = run & ((ta$q == cyc$6) | (tb$q == cyc$6));
-        act$7 = run & ((ta$q == cyc$7) | (tb$q == cyc$7));
-        act$8 = run & ((ta$q == cyc$8) | (tb$q == cyc$8));
-        act$9 = run & ((ta$q == cyc$9) | (tb$q == cyc$9));
-        act$10 = run & ((ta$q == cyc$10) | (tb$q == cyc$10));
-        act$11 = run & ((ta$q == cyc$11) | (tb$q == cyc$11));
-        act$12 = run & ((ta$q == cyc$12) | (tb$q == cyc$12));
-        act$13 = run & ((ta$q == cyc$13) | (tb$q == cyc$13));
-        act$14 = run & ((ta$q == cyc$14) | (tb$q == cyc$14));
-        act$15 = run & ((ta$q == cyc$15) | (tb$q == cyc$15));
-        act$16 = run & ((ta$q == cyc$16) | (tb$q == cyc$16));
-        act$17 = run & ((ta$q == cyc$17) | (tb$q == cyc$17));
-        act$18 = run & ((ta$q == cyc$18) | (tb$q == cyc$18));
-        act$19 = run & ((ta$q == cyc$19) | (tb$q == cyc$19));
-        act$20 = run & ((ta$q == cyc$20) | (tb$q == cyc$20));
-        act$21 = run & ((ta$q == cyc$21) | (tb$q == cyc$21));
-        act$22 = run & ((ta$q == cyc$22) | (tb$q == cyc$22));
-        act$23 = run & ((ta$q == cyc$23) | (tb$q == cyc$23));
-        act$24 = run & ((ta$q == cyc$24) | (tb$q == cyc$24));
-        act$25 = run & ((ta$q == cyc$25) | (tb$q == cyc$25));
-        act$26 = run & ((ta$q == cyc$26) | (tb$q == cyc$26));
-        act$27 = run & ((ta$q == cyc$27) | (tb$q == cyc$27));
-        act$28 = run & ((ta$q == cyc$28) | (tb$q == cyc$28));
-        act$29 = run & ((ta$q == cyc$29) | (tb$q == cyc$29));
-        act$30 = run & ((ta$q == cyc$30) | (tb$q == cyc$30));
-        act$31 = run & ((ta$q == cyc$31) | (tb$q == cyc$31));
-        act$32 = run & ((ta$q == cyc$32) | (tb$q == cyc$32));
-        act$33 = run & ((ta$q == cyc$33) | (tb$q == cyc$33));
-        act$34 = run & ((ta$q == cyc$34) | (tb$q == cyc$34));
-        act$35 = run & ((ta$q == cyc$35) | (tb$q == cyc$35));
-        act$36 = run & ((ta$q == cyc$36) | (tb$q == cyc$36));
-        act$37 = run & ((ta$q == cyc$37) | (tb$q == cyc$37));
-        act$38 = run & ((ta$q == cyc$38) | (tb$q == cyc$38));
-        act$39 = run & ((ta$q == cyc$39) | (tb$q == cyc$39));
-        act$40 = run & ((ta$q == cyc$40) | (tb$q == cyc$40));
-        act$41 = run & ((ta$q == cyc$41) | (tb$q == cyc$41));
-        act$42 = run & ((ta$q == cyc$42) | (tb$q == cyc$42));
-        act$43 = run & ((ta$q == cyc$43) | (tb$q == cyc$43));
-        act$44 = run & ((ta$q == cyc$44) | (tb$q == cyc$44));
-        act$45 = run & ((ta$q == cyc$45) | (tb$q == cyc$45));
-        act$46 = run & ((ta$q == cyc$46) | (tb$q == cyc$46));
-        act$47 = run & ((ta$q == cyc$47) | (tb$q == cyc$47));
-        act$48 = run & ((ta$q == cyc$48) | (tb$q == cyc$48));
-        act$49 = run & ((ta$q == cyc$49) | (tb$q == cyc$49));
-        act$50 = run & ((ta$q == cyc$50) | (tb$q == cyc$50));
-        act$51 = run & ((ta$q == cyc$51) | (tb$q == cyc$51));
-        act$52 = run & ((ta$q == cyc$52) | (tb$q == cyc$52));
-        act$53 = run & ((ta$q == cyc$53) | (tb$q == cyc$53));
-        act$54 = run & ((ta$q == cyc$54) | (tb$q == cyc$54));
-        act$55 = run & ((ta$q == cyc$55) | (tb$q == cyc$55));
-        act$56 = run & ((ta$q == cyc$56) | (tb$q == cyc$56));
-        act$57 = run & ((ta$q == cyc$57) | (tb$q == cyc$57));
-        act$58 = run & ((ta$q == cyc$58) | (tb$q == cyc$58));
-        act$59 = run & ((ta$q == cyc$59) | (tb$q == cyc$59));
-        act$60 = run & ((ta$q == cyc$60) | (tb$q == cyc$60));
-        act$61 = run & ((ta$q == cyc$61) | (tb$q == cyc$61));
-        act$62 = run & ((ta$q == cyc$62) | (tb$q == cyc$62));
-        act$63 = run & ((ta$q == cyc$63) | (tb$q == cyc$63));
-        ga$vx$0 = vx$0$q;
-        ga$vy$0 = vy$0$q;
-        ga$vz$0 = vz$0$q;
-        ga$start_x$0 = x$0$q;
-        gb$vx$0 = vx_b$0$q;
-        gb$vy$0 = vy_b$0$q;
-        gb$vz$0 = vz_b$0$q;
-        gb$start_x$0 = x$0$q;
-        ga$vx$1 = vx$1$q;
-        ga$vy$1 = vy$1$q;
-        ga$vz$1 = vz$1$q;
-        ga$start_x$1 = x$1$q;
-        gb$vx$1 = vx_b$1$q;
-        gb$vy$1 = vy_b$1$q;
-        gb$vz$1 = vz_b$1$q;
-        gb$start_x$1 = x$1$q;
-        ga$vx$2 = vx$2$q;
-        ga$vy$2 = vy$2$q;
-        ga$vz$2 = vz$2$q;
-        ga$start_x$2 = x$2$q;
-        gb$vx$2 = vx_b$2$q;
-        gb$vy$2 = vy_b$2$q;
-        gb$vz$2 = vz_b$2$q;
-        gb$start_x$2 = x$2$q;
-        ga$vc$0 = vc$0$q;
-        gb$vc$0 = vc_b$0$q;
-        ga$vc$1 = vc$1$q;
-        gb$vc$1 = vc_b$1$q;
-        ga$vc$2 = vc$2$q;
-        gb$vc$2 = vc_b$2$q;
-        ga$vc$3 = vc$3$q;
-        gb$vc$3 = vc_b$3$q;
-        ga$vc$4 = vc$4$q;
-        gb$vc$4 = vc_b$4$q;
-        ga$vc$5 = vc$5$q;
-        gb$vc$5 = vc_b$5$q;
-        ga$vc$6 = vc$6$q;
-        gb$vc$6 = vc_b$6$q;
-        ga$vc$7 = vc$7$q;
-        gb$vc$7 = vc_b$7$q;
-        ga$vc$8 = vc$8$q;
-        gb$vc$8 = vc_b$8$q;
-        ga$crosses = crosses$q;
-        ga$maj_left = maj_left;
-        gb$crosses = crosses_b$q;
-        gb$maj_left = maj_left_b$q;
+        act$0 = 1'b0;
+        if ((view$0 == 0) & (t$0$q == cyc$0)) begin
+            act$0 = run;
+        end
+        if ((view$0 == 1) & (t$1$q == cyc$0)) begin
+            act$0 = run;
+        end
+        act$1 = 1'b0;
+        if ((view$1 == 0) & (t$0$q == cyc$1)) begin
+            act$1 = run;
+        end
+        if ((view$1 == 1) & (t$1$q == cyc$1)) begin
+            act$1 = run;
+        end
+        act$2 = 1'b0;
+        if ((view$2 == 0) & (t$0$q == cyc$2)) begin
+            act$2 = run;
+        end
+        if ((view$2 == 1) & (t$1$q == cyc$2)) begin
+            act$2 = run;
+        end
+        act$3 = 1'b0;
+        if ((view$3 == 0) & (t$0$q == cyc$3)) begin
+            act$3 = run;
+        end
+        if ((view$3 == 1) & (t$1$q == cyc$3)) begin
+            act$3 = run;
+        end
+        act$4 = 1'b0;
+        if ((view$4 == 0) & (t$0$q == cyc$4)) begin
+            act$4 = run;
+        end
+        if ((view$4 == 1) & (t$1$q == cyc$4)) begin
+            act$4 = run;
+        end
+        act$5 = 1'b0;
+        if ((view$5 == 0) & (t$0$q == cyc$5)) begin
+            act$5 = run;
+        end
+        if ((view$5 == 1) & (t$1$q == cyc$5)) begin
+            act$5 = run;
+        end
+        act$6 = 1'b0;
+        if ((view$6 == 0) & (t$0$q == cyc$6)) begin
+            act$6 = run;
+        end
+        if ((view$6 == 1) & (t$1$q == cyc$6)) begin
+            act$6 = run;
+        end
+        act$7 = 1'b0;
+        if ((view$7 == 0) & (t$0$q == cyc$7)) begin
+            act$7 = run;
+        end
+        if ((view$7 == 1) & (t$1$q == cyc$7)) begin
+            act$7 = run;
+        end
+        act$8 = 1'b0;
+        if ((view$8 == 0) & (t$0$q == cyc$8)) begin
+            act$8 = run;
+        end
+        if ((view$8 == 1) & (t$1$q == cyc$8)) begin
+            act$8 = run;
+        end
+        act$9 = 1'b0;
+        if ((view$9 == 0) & (t$0$q == cyc$9)) begin
+            act$9 = run;
+        end
+        if ((view$9 == 1) & (t$1$q == cyc$9)) begin
+            act$9 = run;
+        end
+        act$10 = 1'b0;
+        if ((view$10 == 0) & (t$0$q == cyc$10)) begin
+            act$10 = run;
+        end
+        if ((view$10 == 1) & (t$1$q == cyc$10)) begin
+            act$10 = run;
+        end
+        act$11 = 1'b0;
+        if ((view$11 == 0) & (t$0$q == cyc$11)) begin
+            act$11 = run;
+        end
+        if ((view$11 == 1) & (t$1$q == cyc$11)) begin
+            act$11 = run;
+        end
+        act$12 = 1'b0;
+        if ((view$12 == 0) & (t$0$q == cyc$12)) begin
+            act$12 = run;
+        end
+        if ((view$12 == 1) & (t$1$q == cyc$12)) begin
+            act$12 = run;
+        end
+        act$13 = 1'b0;
+        if ((view$13 == 0) & (t$0$q == cyc$13)) begin
+            act$13 = run;
+        end
+        if ((view$13 == 1) & (t$1$q == cyc$13)) begin
+            act$13 = run;
+        end
+        act$14 = 1'b0;
+        if ((view$14 == 0) & (t$0$q == cyc$14)) begin
+            act$14 = run;
+        end
+        if ((view$14 == 1) & (t$1$q == cyc$14)) begin
+            act$14 = run;
+        end
+        act$15 = 1'b0;
+        if ((view$15 == 0) & (t$0$q == cyc$15)) begin
+            act$15 = run;
+        end
+        if ((view$15 == 1) & (t$1$q == cyc$15)) begin
+            act$15 = run;
+        end
+        act$16 = 1'b0;
+        if ((view$16 == 0) & (t$0$q == cyc$16)) begin
+            act$16 = run;
+        end
+        if ((view$16 == 1) & (t$1$q == cyc$16)) begin
+            act$16 = run;
+        end
+        act$17 = 1'b0;
+        if ((view$17 == 0) & (t$0$q == cyc$17)) begin
+            act$17 = run;
+        end
+        if ((view$17 == 1) & (t$1$q == cyc$17)) begin
+            act$17 = run;
+        end
+        act$18 = 1'b0;
+        if ((view$18 == 0) & (t$0$q == cyc$18)) begin
+            act$18 = run;
+        end
+        if ((view$18 == 1) & (t$1$q == cyc$18)) begin
+            act$18 = run;
+        end
+        act$19 = 1'b0;
+        if ((view$19 == 0) & (t$0$q == cyc$19)) begin
+            act$19 = run;
+        end
+        if ((view$19 == 1) & (t$1$q == cyc$19)) begin
+            act$19 = run;
+        end
+        act$20 = 1'b0;
+        if ((view$20 == 0) & (t$0$q == cyc$20)) begin
+            act$20 = run;
+        end
+        if ((view$20 == 1) & (t$1$q == cyc$20)) begin
+            act$20 = run;
+        end
+        act$21 = 1'b0;
+        if ((view$21 == 0) & (t$0$q == cyc$21)) begin
+            act$21 = run;
+        end
+        if ((view$21 == 1) & (t$1$q == cyc$21)) begin
+            act$21 = run;
+        end
+        act$22 = 1'b0;
+        if ((view$22 == 0) & (t$0$q == cyc$22)) begin
+            act$22 = run;
+        end
+        if ((view$22 == 1) & (t$1$q == cyc$22)) begin
+            act$22 = run;
+        end
+        act$23 = 1'b0;
+        if ((view$23 == 0) & (t$0$q == cyc$23)) begin
+            act$23 = run;
+        end
+        if ((view$23 == 1) & (t$1$q == cyc$23)) begin
+            act$23 = run;
+        end
+        act$24 = 1'b0;
+        if ((view$24 == 0) & (t$0$q == cyc$24)) begin
+            act$24 = run;
+        end
+        if ((view$24 == 1) & (t$1$q == cyc$24)) begin
+            act$24 = run;
+        end
+        act$25 = 1'b0;
+        if ((view$25 == 0) & (t$0$q == cyc$25)) begin
+            act$25 = run;
+        end
+        if ((view$25 == 1) & (t$1$q == cyc$25)) begin
+            act$25 = run;
+        end
+        act$26 = 1'b0;
+        if ((view$26 == 0) & (t$0$q == cyc$26)) begin
+            act$26 = run;
+        end
+        if ((view$26 == 1) & (t$1$q == cyc$26)) begin
+            act$26 = run;
+        end
+        act$27 = 1'b0;
+        if ((view$27 == 0) & (t$0$q == cyc$27)) begin
+            act$27 = run;
+        end
+        if ((view$27 == 1) & (t$1$q == cyc$27)) begin
+            act$27 = run;
+        end
+        act$28 = 1'b0;
+        if ((view$28 == 0) & (t$0$q == cyc$28)) begin
+            act$28 = run;
+        end
+        if ((view$28 == 1) & (t$1$q == cyc$28)) begin
+            act$28 = run;
+        end
+        act$29 = 1'b0;
+        if ((view$29 == 0) & (t$0$q == cyc$29)) begin
+            act$29 = run;
+        end
+        if ((view$29 == 1) & (t$1$q == cyc$29)) begin
+            act$29 = run;
+        end
+        act$30 = 1'b0;
+        if ((view$30 == 0) & (t$0$q == cyc$30)) begin
+            act$30 = run;
+        end
+        if ((view$30 == 1) & (t$1$q == cyc$30)) begin
+            act$30 = run;
+        end
+        act$31 = 1'b0;
+        if ((view$31 == 0) & (t$0$q == cyc$31)) begin
+            act$31 = run;
+        end
+        if ((view$31 == 1) & (t$1$q == cyc$31)) begin
+            act$31 = run;
+        end
+        act$32 = 1'b0;
+        if ((view$32 == 0) & (t$0$q == cyc$32)) begin
+            act$32 = run;
+        end
+        if ((view$32 == 1) & (t$1$q == cyc$32)) begin
+            act$32 = run;
+        end
+        act$33 = 1'b0;
+        if ((view$33 == 0) & (t$0$q == cyc$33)) begin
+            act$33 = run;
+        end
+        if ((view$33 == 1) & (t$1$q == cyc$33)) begin
+            act$33 = run;
+        end
+        act$34 = 1'b0;
+        if ((view$34 == 0) & (t$0$q == cyc$34)) begin
+            act$34 = run;
+        end
+        if ((view$34 == 1) & (t$1$q == cyc$34)) begin
+            act$34 = run;
+        end
+        act$35 = 1'b0;
+        if ((view$35 == 0) & (t$0$q == cyc$35)) begin
+            act$35 = run;
+        end
+        if ((view$35 == 1) & (t$1$q == cyc$35)) begin
+            act$35 = run;
+        end
+        act$36 = 1'b0;
+        if ((view$36 == 0) & (t$0$q == cyc$36)) begin
+            act$36 = run;
+        end
+        if ((view$36 == 1) & (t$1$q == cyc$36)) begin
+            act$36 = run;
+        end
+        act$37 = 1'b0;
+        if ((view$37 == 0) & (t$0$q == cyc$37)) begin
+            act$37 = run;
+        end
+        if ((view$37 == 1) & (t$1$q == cyc$37)) begin
+            act$37 = run;
+        end
+        act$38 = 1'b0;
+        if ((view$38 == 0) & (t$0$q == cyc$38)) begin
+            act$38 = run;
+        end
+        if ((view$38 == 1) & (t$1$q == cyc$38)) begin
+            act$38 = run;
+        end
+        act$39 = 1'b0;
+        if ((view$39 == 0) & (t$0$q == cyc$39)) begin
+            act$39 = run;
+        end
+        if ((view$39 == 1) & (t$1$q == cyc$39)) begin
+            act$39 = run;
+        end
+        act$40 = 1'b0;
+        if ((view$40 == 0) & (t$0$q == cyc$40)) begin
+            act$40 = run;
+        end
+        if ((view$40 == 1) & (t$1$q == cyc$40)) begin
+            act$40 = run;
+        end
+        act$41 = 1'b0;
+        if ((view$41 == 0) & (t$0$q == cyc$41)) begin
+            act$41 = run;
+        end
+        if ((view$41 == 1) & (t$1$q == cyc$41)) begin
+            act$41 = run;
+        end
+        act$42 = 1'b0;
+        if ((view$42 == 0) & (t$0$q == cyc$42)) begin
+            act$42 = run;
+        end
+        if ((view$42 == 1) & (t$1$q == cyc$42)) begin
+            act$42 = run;
+        end
+        act$43 = 1'b0;
+        if ((view$43 == 0) & (t$0$q == cyc$43)) begin
+            act$43 = run;
+        end
+        if ((view$43 == 1) & (t$1$q == cyc$43)) begin
+            act$43 = run;
+        end
+        act$44 = 1'b0;
+        if ((view$44 == 0) & (t$0$q == cyc$44)) begin
+            act$44 = run;
+        end
+        if ((view$44 == 1) & (t$1$q == cyc$44)) begin
+            act$44 = run;
+        end
+        act$45 = 1'b0;
+        if ((view$45 == 0) & (t$0$q == cyc$45)) begin
+            act$45 = run;
+        end
+        if ((view$45 == 1) & (t$1$q == cyc$45)) begin
+            act$45 = run;
+        end
+        act$46 = 1'b0;
+        if ((view$46 == 0) & (t$0$q == cyc$46)) begin
+            act$46 = run;
+        end
+        if ((view$46 == 1) & (t$1$q == cyc$46)) begin
+            act$46 = run;
+        end
+        act$47 = 1'b0;
+        if ((view$47 == 0) & (t$0$q == cyc$47)) begin
+            act$47 = run;
+        end
+        if ((view$47 == 1) & (t$1$q == cyc$47)) begin
+            act$47 = run;
+        end
+        act$48 = 1'b0;
+        if ((view$48 == 0) & (t$0$q == cyc$48)) begin
+            act$48 = run;
+        end
+        if ((view$48 == 1) & (t$1$q == cyc$48)) begin
+            act$48 = run;
+        end
+        act$49 = 1'b0;
+        if ((view$49 == 0) & (t$0$q == cyc$49)) begin
+            act$49 = run;
+        end
+        if ((view$49 == 1) & (t$1$q == cyc$49)) begin
+            act$49 = run;
+        end
+        act$50 = 1'b0;
+        if ((view$50 == 0) & (t$0$q == cyc$50)) begin
+            act$50 = run;
+        end
+        if ((view$50 == 1) & (t$1$q == cyc$50)) begin
+            act$50 = run;
+        end
+        act$51 = 1'b0;
+        if ((view$51 == 0) & (t$0$q == cyc$51)) begin
+            act$51 = run;
+        end
+        if ((view$51 == 1) & (t$1$q == cyc$51)) begin
+            act$51 = run;
+        end
+        act$52 = 1'b0;
+        if ((view$52 == 0) & (t$0$q == cyc$52)) begin
+            act$52 = run;
+        end
+        if ((view$52 == 1) & (t$1$q == cyc$52)) begin
+            act$52 = run;
+        end
+        act$53 = 1'b0;
+        if ((view$53 == 0) & (t$0$q == cyc$53)) begin
+            act$53 = run;
+        end
+        if ((view$53 == 1) & (t$1$q == cyc$53)) begin
+            act$53 = run;
+        end
+        act$54 = 1'b0;
+        if ((view$54 == 0) & (t$0$q == cyc$54)) begin
+            act$54 = run;
+        end
+        if ((view$54 == 1) & (t$1$q == cyc$54)) begin
+            act$54 = run;
+        end
+        act$55 = 1'b0;
+        if ((view$55 == 0) & (t$0$q == cyc$55)) begin
+            act$55 = run;
+        end
+        if ((view$55 == 1) & (t$1$q == cyc$55)) begin
+            act$55 = run;
+        end
+        act$56 = 1'b0;
+        if ((view$56 == 0) & (t$0$q == cyc$56)) begin
+            act$56 = run;
+        end
+        if ((view$56 == 1) & (t$1$q == cyc$56)) begin
+            act$56 = run;
+        end
+        act$57 = 1'b0;
+        if ((view$57 == 0) & (t$0$q == cyc$57)) begin
+            act$57 = run;
+        end
+        if ((view$57 == 1) & (t$1$q == cyc$57)) begin
+            act$57 = run;
+        end
+        act$58 = 1'b0;
+        if ((view$58 == 0) & (t$0$q == cyc$58)) begin
+            act$58 = run;
+        end
+        if ((view$58 == 1) & (t$1$q == cyc$58)) begin
+            act$58 = run;
+        end
+        act$59 = 1'b0;
+        if ((view$59 == 0) & (t$0$q == cyc$59)) begin
+            act$59 = run;
+        end
+        if ((view$59 == 1) & (t$1$q == cyc$59)) begin
+            act$59 = run;
+        end
+        act$60 = 1'b0;
+        if ((view$60 == 0) & (t$0$q == cyc$60)) begin
+            act$60 = run;
+        end
+        if ((view$60 == 1) & (t$1$q == cyc$60)) begin
+            act$60 = run;
+        end
+        act$61 = 1'b0;
+        if ((view$61 == 0) & (t$0$q == cyc$61)) begin
+            act$61 = run;
+        end
+        if ((view$61 == 1) & (t$1$q == cyc$61)) begin
+            act$61 = run;
+        end
+        act$62 = 1'b0;
+        if ((view$62 == 0) & (t$0$q == cyc$62)) begin
+            act$62 = run;
+        end
+        if ((view$62 == 1) & (t$1$q == cyc$62)) begin
+            act$62 = run;
+        end
+        act$63 = 1'b0;
+        if ((view$63 == 0) & (t$0$q == cyc$63)) begin
+            act$63 = run;
+        end
+        if ((view$63 == 1) & (t$1$q == cyc$63)) begin
+            act$63 = run;
+        end
+        at_norm = run & (t$0$q == normalise);
+        at_iss$0 = run & (t$0$q == iss$0);
+        at_res$0 = 1'b0;
+        if ((view_res$0 == 0) & (t$0$q == res$0)) begin
+            at_res$0 = run;
+        end
+        if ((view_res$0 == 1) & (t$1$q == res$0)) begin
+            at_res$0 = run;
+        end
+        at_iss$1 = run & (t$0$q == iss$1);
+        at_res$1 = 1'b0;
+        if ((view_res$1 == 0) & (t$0$q == res$1)) begin
+            at_res$1 = run;
+        end
+        if ((view_res$1 == 1) & (t$1$q == res$1)) begin
+            at_res$1 = run;
+        end
+        at_iss$2 = run & (t$0$q == iss$2);
+        at_res$2 = 1'b0;
+        if ((view_res$2 == 0) & (t$0$q == res$2)) begin
+            at_res$2 = run;
+        end
+        if ((view_res$2 == 1) & (t$1$q == res$2)) begin
+            at_res$2 = run;
+        end
+        at_iss$3 = run & (t$0$q == iss$3);
+        at_res$3 = 1'b0;
+        if ((view_res$3 == 0) & (t$0$q == res$3)) begin
+            at_res$3 = run;
+        end
+        if ((view_res$3 == 1) & (t$1$q == res$3)) begin
+            at_res$3 = run;
+        end
+        at_iss$4 = run & (t$0$q == iss$4);
+        at_res$4 = 1'b0;
+        if ((view_res$4 == 0) & (t$0$q == res$4)) begin
+            at_res$4 = run;
+        end
+        if ((view_res$4 == 1) & (t$1$q == res$4)) begin
+            at_res$4 = run;
+        end
+        at_iss$5 = run & (t$0$q == iss$5);
+        at_res$5 = 1'b0;
+        if ((view_res$5 == 0) & (t$0$q == res$5)) begin
+            at_res$5 = run;
+        end
+        if ((view_res$5 == 1) & (t$1$q == res$5)) begin
+            at_res$5 = run;
+        end
+        at_iss$6 = run & (t$0$q == iss$6);
+        at_res$6 = 1'b0;
+        if ((view_res$6 == 0) & (t$0$q == res$6)) begin
+            at_res$6 = run;
+        end
+        if ((view_res$6 == 1) & (t$1$q == res$6)) begin
+            at_res$6 = run;
+        end
+        at_handover = 1'b0;
+        if ((view_handover == 0) & (t$0$q == handover)) begin
+            at_handover = run;
+        end
+        if ((view_handover == 1) & (t$1$q == handover)) begin
+            at_handover = run;
+        end
+        g0$vx$0 = vx$0$q;
+        g0$vy$0 = vy$0$q;
+        g0$vz$0 = vz$0$q;
+        g0$start_x$0 = x$0$q;
+        g0$vx$1 = vx$1$q;
+        g0$vy$1 = vy$1$q;
+        g0$vz$1 = vz$1$q;
+        g0$start_x$1 = x$1$q;
+        g0$vx$2 = vx$2$q;
+        g0$vy$2 = vy$2$q;
+        g0$vz$2 = vz$2$q;
+        g0$start_x$2 = x$2$q;
+        g0$vc$0 = vc$0$q;
+        g0$vc$1 = vc$1$q;
+        g0$vc$2 = vc$2$q;
+        g0$vc$3 = vc$3$q;
+        g0$vc$4 = vc$4$q;
+        g0$vc$5 = vc$5$q;
+        g0$vc$6 = vc$6$q;
+        g0$vc$7 = vc$7$q;
+        g0$vc$8 = vc$8$q;
+        g0$crosses = crosses$0$q;
+        g0$maj_left = maj_left$0;
+        g1$vx$0 = vx$3$q;
+        g1$vy$0 = vy$3$q;
+        g1$vz$0 = vz$3$q;
+        g1$start_x$0 = x$0$q;
+        g1$vx$1 = vx$4$q;
+        g1$vy$1 = vy$4$q;
+        g1$vz$1 = vz$4$q;
+        g1$start_x$1 = x$1$q;
+        g1$vx$2 = vx$5$q;
+        g1$vy$2 = vy$5$q;
+        g1$vz$2 = vz$5$q;
+        g1$start_x$2 = x$2$q;
+        g1$vc$0 = vc$9$q;
+        g1$vc$1 = vc$10$q;
+        g1$vc$2 = vc$11$q;
+        g1$vc$3 = vc$12$q;
+        g1$vc$4 = vc$13$q;
+        g1$vc$5 = vc$14$q;
+        g1$vc$6 = vc$15$q;
+        g1$vc$7 = vc$16$q;
+        g1$vc$8 = vc$17$q;
+        g1$crosses = crosses$1$q;
+        g1$maj_left = maj_left$1;
+        g2$vx$0 = vx$6$q;
+        g2$vy$0 = vy$6$q;
+        g2$vz$0 = vz$6$q;
+        g2$start_x$0 = x$0$q;
+        g2$vx$1 = vx$7$q;
+        g2$vy$1 = vy$7$q;
+        g2$vz$1 = vz$7$q;
+        g2$start_x$1 = x$1$q;
+        g2$vx$2 = vx$8$q;
+        g2$vy$2 = vy$8$q;
+        g2$vz$2 = vz$8$q;
+        g2$start_x$2 = x$2$q;
+        g2$vc$0 = vc$18$q;
+        g2$vc$1 = vc$19$q;
+        g2$vc$2 = vc$20$q;
+        g2$vc$3 = vc$21$q;
+        g2$vc$4 = vc$22$q;
+        g2$vc$5 = vc$23$q;
+        g2$vc$6 = vc$24$q;
+        g2$vc$7 = vc$25$q;
+        g2$vc$8 = vc$26$q;
+        g2$crosses = crosses$2$q;
+        g2$maj_left = maj_left$2;
+        g3$vx$0 = vx$9$q;
+        g3$vy$0 = vy$9$q;
+        g3$vz$0 = vz$9$q;
+        g3$start_x$0 = x$0$q;
+        g3$vx$1 = vx$10$q;
+        g3$vy$1 = vy$10$q;
+        g3$vz$1 = vz$10$q;
+        g3$start_x$1 = x$1$q;
+        g3$vx$2 = vx$11$q;
+        g3$vy$2 = vy$11$q;
+        g3$vz$2 = vz$11$q;
+        g3$start_x$2 = x$2$q;
+        g3$vc$0 = vc$27$q;
+        g3$vc$1 = vc$28$q;
+        g3$vc$2 = vc$29$q;
+        g3$vc$3 = vc$30$q;
+        g3$vc$4 = vc$31$q;
+        g3$vc$5 = vc$32$q;
+        g3$vc$6 = vc$33$q;
+        g3$vc$7 = vc$34$q;
+        g3$vc$8 = vc$35$q;
+        g3$crosses = crosses$3$q;
+        g3$maj_left = maj_left$3;
         area_abs = area$q;
         if (area$q[area_msb]) begin
             area_abs = ((32'h0) & 34'h3ffffffff) - area$q;
@@ -10281,23 +11593,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             exp_c = 33;
         end
         norm_d = area_abs << (recip_top - exp_c);
-        at_iss$0 = run & (ta$q == iss$0);
-        at_res$0 = run & ((ta$q == res$0) | (tb$q == res$0));
-        at_iss$1 = run & (ta$q == iss$1);
-        at_res$1 = run & ((ta$q == res$1) | (tb$q == res$1));
-        at_iss$2 = run & (ta$q == iss$2);
-        at_res$2 = run & ((ta$q == res$2) | (tb$q == res$2));
-        at_iss$3 = run & (ta$q == iss$3);
-        at_res$3 = run & ((ta$q == res$3) | (tb$q == res$3));
-        at_iss$4 = run & (ta$q == iss$4);
-        at_res$4 = run & ((ta$q == res$4) | (tb$q == res$4));
-        at_iss$5 = run & (ta$q == iss$5);
-        at_res$5 = run & ((ta$q == res$5) | (tb$q == res$5));
-        at_iss$6 = run & (ta$q == iss$6);
-        at_res$6 = run & ((ta$q == res$6) | (tb$q == res$6));
-        at_handover = run & (tb$q == handover);
-        if (at_iss$0) begin
-            exp$d = exp_c;
+        if (at_norm) begin
+            norm$d = norm_d;
+            exp$0$d = exp_c;
         end
         div$out_ready = 1'b1;
         div$hold = ~run;
@@ -10307,48 +11605,48 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         if (at_iss$0) begin
             div$inp_valid = 1'b1;
             div$inp_n = recip_n;
-            div$inp_d = norm_d;
+            div$inp_d = norm$q;
         end
         if (at_iss$1) begin
             div$inp_valid = 1'b1;
-            if (ga$count$0 != 32'h0) begin
+            if (g0$count$0 != 32'h0) begin
                 div$inp_n = num$0$q[(32'h0)+:(58)];
-                div$inp_d = ga$ed16$0;
+                div$inp_d = g0$ed16$0;
             end
         end
         if (at_iss$2) begin
             div$inp_valid = 1'b1;
-            if (ga$count$0 > 32'h1) begin
-                div$inp_n = ga$edx$0[(32'h0)+:(58)];
-                div$inp_d = ga$edy_d$0;
+            if (g0$count$0 > 32'h1) begin
+                div$inp_n = g0$edx$0[(32'h0)+:(58)];
+                div$inp_d = g0$edy_d$0;
             end
         end
         if (at_iss$3) begin
             div$inp_valid = 1'b1;
-            if (ga$count$1 != 32'h0) begin
+            if (g0$count$1 != 32'h0) begin
                 div$inp_n = num$1$q[(32'h0)+:(58)];
-                div$inp_d = ga$ed16$1;
+                div$inp_d = g0$ed16$1;
             end
         end
         if (at_iss$4) begin
             div$inp_valid = 1'b1;
-            if (ga$count$1 > 32'h1) begin
-                div$inp_n = ga$edx$1[(32'h0)+:(58)];
-                div$inp_d = ga$edy_d$1;
+            if (g0$count$1 > 32'h1) begin
+                div$inp_n = g0$edx$1[(32'h0)+:(58)];
+                div$inp_d = g0$edy_d$1;
             end
         end
         if (at_iss$5) begin
             div$inp_valid = 1'b1;
-            if (ga$count$2 != 32'h0) begin
+            if (g0$count$2 != 32'h0) begin
                 div$inp_n = num$2$q[(32'h0)+:(58)];
-                div$inp_d = ga$ed16$2;
+                div$inp_d = g0$ed16$2;
             end
         end
         if (at_iss$6) begin
             div$inp_valid = 1'b1;
-            if (ga$count$2 > 32'h1) begin
-                div$inp_n = ga$edx$2[(32'h0)+:(58)];
-                div$inp_d = ga$edy_d$2;
+            if (g0$count$2 > 32'h1) begin
+                div$inp_n = g0$edx$2[(32'h0)+:(58)];
+                div$inp_d = g0$edy_d$2;
             end
         end
         q_n = ((div$out_q[(32'h0)+:(19)]) & 19'h7ffff);
@@ -10357,21 +11655,38 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         end
         r_pos = div$out_r != 32'h0;
         mant_now = mant$q;
+        exp_now = exp_e$q;
         if (at_res$0) begin
             mant_now = div$out_q[(32'h0)+:(25)];
             mant$d = div$out_q[(32'h0)+:(25)];
+            if (view_res$0 == 0) begin
+                exp_now = exp$0$q;
+                exp_e$d = exp$0$q;
+            end
+            if (view_res$0 == 1) begin
+                exp_now = exp$1$q;
+                exp_e$d = exp$1$q;
+            end
         end
-        lsh = eq_shift - exp$q;
-        rsh = exp$q - eq_shift;
+        lsh = eq_shift - exp_now;
+        rsh = exp_now - eq_shift;
         mant_a = ((mant_now) & 57'h1ffffffffffffff);
-        if (exp$q <= eq_shift) begin
+        if (exp_now <= eq_shift) begin
             mant_a = ((mant_now) & 57'h1ffffffffffffff) << lsh;
         end
-        xi$0 = ga$xi$0;
-        ed$0 = ga$ed16$0[(32'h0)+:(21)];
-        if (late_res$1) begin
-            xi$0 = gb$xi$0;
-            ed$0 = gb$ed16$0[(32'h0)+:(21)];
+        xi$0 = g0$xi$0;
+        ed$0 = g0$ed16$0[(32'h0)+:(21)];
+        if (view_res$1 == 32'h1) begin
+            xi$0 = g1$xi$0;
+            ed$0 = g1$ed16$0[(32'h0)+:(21)];
+        end
+        if (view_res$1 == 32'h2) begin
+            xi$0 = g2$xi$0;
+            ed$0 = g2$ed16$0[(32'h0)+:(21)];
+        end
+        if (view_res$1 == 32'h3) begin
+            xi$0 = g3$xi$0;
+            ed$0 = g3$ed16$0[(32'h0)+:(21)];
         end
         if (at_res$1) begin
             x$0$d = xi$0 + q_n + r_pos;
@@ -10384,11 +11699,19 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             q$0$d = q_n;
             rho$0$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        xi$1 = ga$xi$1;
-        ed$1 = ga$ed16$1[(32'h0)+:(21)];
-        if (late_res$3) begin
-            xi$1 = gb$xi$1;
-            ed$1 = gb$ed16$1[(32'h0)+:(21)];
+        xi$1 = g0$xi$1;
+        ed$1 = g0$ed16$1[(32'h0)+:(21)];
+        if (view_res$3 == 32'h1) begin
+            xi$1 = g1$xi$1;
+            ed$1 = g1$ed16$1[(32'h0)+:(21)];
+        end
+        if (view_res$3 == 32'h2) begin
+            xi$1 = g2$xi$1;
+            ed$1 = g2$ed16$1[(32'h0)+:(21)];
+        end
+        if (view_res$3 == 32'h3) begin
+            xi$1 = g3$xi$1;
+            ed$1 = g3$ed16$1[(32'h0)+:(21)];
         end
         if (at_res$3) begin
             x$1$d = xi$1 + q_n + r_pos;
@@ -10401,11 +11724,19 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             q$1$d = q_n;
             rho$1$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        xi$2 = ga$xi$2;
-        ed$2 = ga$ed16$2[(32'h0)+:(21)];
-        if (late_res$5) begin
-            xi$2 = gb$xi$2;
-            ed$2 = gb$ed16$2[(32'h0)+:(21)];
+        xi$2 = g0$xi$2;
+        ed$2 = g0$ed16$2[(32'h0)+:(21)];
+        if (view_res$5 == 32'h1) begin
+            xi$2 = g1$xi$2;
+            ed$2 = g1$ed16$2[(32'h0)+:(21)];
+        end
+        if (view_res$5 == 32'h2) begin
+            xi$2 = g2$xi$2;
+            ed$2 = g2$ed16$2[(32'h0)+:(21)];
+        end
+        if (view_res$5 == 32'h3) begin
+            xi$2 = g3$xi$2;
+            ed$2 = g3$ed16$2[(32'h0)+:(21)];
         end
         if (at_res$5) begin
             x$2$d = xi$2 + q_n + r_pos;
@@ -10496,221 +11827,525 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         ps$33 = 32'h0;
         ps$34 = 32'h0;
         ps$35 = 32'h0;
-        delta$0 = ga$kdx$0[(32'h0)+:(19)];
-        delta$2 = ga$kdy$0[(32'h0)+:(19)];
-        delta$4 = gb$kdx$0[(32'h0)+:(19)];
-        delta$6 = gb$kdy$0[(32'h0)+:(19)];
-        delta$1 = ga$kdx$1[(32'h0)+:(19)];
-        delta$3 = ga$kdy$1[(32'h0)+:(19)];
-        delta$5 = gb$kdx$1[(32'h0)+:(19)];
-        delta$7 = gb$kdy$1[(32'h0)+:(19)];
+        delta$0 = g0$kdx$0[(32'h0)+:(19)];
+        delta$2 = g0$kdy$0[(32'h0)+:(19)];
+        delta$4 = g1$kdx$0[(32'h0)+:(19)];
+        delta$6 = g1$kdy$0[(32'h0)+:(19)];
+        delta$8 = g2$kdx$0[(32'h0)+:(19)];
+        delta$10 = g2$kdy$0[(32'h0)+:(19)];
+        delta$12 = g3$kdx$0[(32'h0)+:(19)];
+        delta$14 = g3$kdy$0[(32'h0)+:(19)];
+        delta$1 = g0$kdx$1[(32'h0)+:(19)];
+        delta$3 = g0$kdy$1[(32'h0)+:(19)];
+        delta$5 = g1$kdx$1[(32'h0)+:(19)];
+        delta$7 = g1$kdy$1[(32'h0)+:(19)];
+        delta$9 = g2$kdx$1[(32'h0)+:(19)];
+        delta$11 = g2$kdy$1[(32'h0)+:(19)];
+        delta$13 = g3$kdx$1[(32'h0)+:(19)];
+        delta$15 = g3$kdy$1[(32'h0)+:(19)];
         eq_b$0 = delta$0;
-        if (maj_left) begin
+        if (maj_left$0) begin
             eq_b$0 = ((32'h0) & 19'h7ffff) - delta$0;
         end
-        eq_b$4 = delta$4;
-        if (maj_left_b$q) begin
-            eq_b$4 = ((32'h0) & 19'h7ffff) - delta$4;
-        end
         eq_b$1 = delta$1;
-        if (maj_left) begin
+        if (maj_left$0) begin
             eq_b$1 = ((32'h0) & 19'h7ffff) - delta$1;
         end
-        eq_b$5 = delta$5;
-        if (maj_left_b$q) begin
-            eq_b$5 = ((32'h0) & 19'h7ffff) - delta$5;
-        end
         eq_b$2 = delta$2;
-        if (maj_left) begin
+        if (maj_left$0) begin
             eq_b$2 = ((32'h0) & 19'h7ffff) - delta$2;
         end
-        eq_b$6 = delta$6;
-        if (maj_left_b$q) begin
-            eq_b$6 = ((32'h0) & 19'h7ffff) - delta$6;
-        end
         eq_b$3 = delta$3;
-        if (maj_left) begin
+        if (maj_left$0) begin
             eq_b$3 = ((32'h0) & 19'h7ffff) - delta$3;
         end
+        eq_b$4 = delta$4;
+        if (maj_left$1) begin
+            eq_b$4 = ((32'h0) & 19'h7ffff) - delta$4;
+        end
+        eq_b$5 = delta$5;
+        if (maj_left$1) begin
+            eq_b$5 = ((32'h0) & 19'h7ffff) - delta$5;
+        end
+        eq_b$6 = delta$6;
+        if (maj_left$1) begin
+            eq_b$6 = ((32'h0) & 19'h7ffff) - delta$6;
+        end
         eq_b$7 = delta$7;
-        if (maj_left_b$q) begin
+        if (maj_left$1) begin
             eq_b$7 = ((32'h0) & 19'h7ffff) - delta$7;
         end
+        eq_b$8 = delta$8;
+        if (maj_left$2) begin
+            eq_b$8 = ((32'h0) & 19'h7ffff) - delta$8;
+        end
+        eq_b$9 = delta$9;
+        if (maj_left$2) begin
+            eq_b$9 = ((32'h0) & 19'h7ffff) - delta$9;
+        end
+        eq_b$10 = delta$10;
+        if (maj_left$2) begin
+            eq_b$10 = ((32'h0) & 19'h7ffff) - delta$10;
+        end
+        eq_b$11 = delta$11;
+        if (maj_left$2) begin
+            eq_b$11 = ((32'h0) & 19'h7ffff) - delta$11;
+        end
+        eq_b$12 = delta$12;
+        if (maj_left$3) begin
+            eq_b$12 = ((32'h0) & 19'h7ffff) - delta$12;
+        end
+        eq_b$13 = delta$13;
+        if (maj_left$3) begin
+            eq_b$13 = ((32'h0) & 19'h7ffff) - delta$13;
+        end
+        eq_b$14 = delta$14;
+        if (maj_left$3) begin
+            eq_b$14 = ((32'h0) & 19'h7ffff) - delta$14;
+        end
+        eq_b$15 = delta$15;
+        if (maj_left$3) begin
+            eq_b$15 = ((32'h0) & 19'h7ffff) - delta$15;
+        end
         op_e$0 = eq_b$0;
-        if (late$8) begin
+        op_e$1 = eq_b$1;
+        op_e$2 = eq_b$2;
+        op_e$3 = eq_b$3;
+        op_g$0 = g0$dmaj$0;
+        op_g$1 = g0$dbot$0;
+        op_g$2 = g0$dbot$0;
+        op_g$3 = g0$dmaj$0;
+        op_g$4 = g0$dmaj$1;
+        op_g$5 = g0$dbot$1;
+        op_g$6 = g0$dbot$1;
+        op_g$7 = g0$dmaj$1;
+        op_g$8 = g0$dmaj$2;
+        op_g$9 = g0$dbot$2;
+        op_g$10 = g0$dbot$2;
+        op_g$11 = g0$dmaj$2;
+        op_g$12 = g0$dmaj$3;
+        op_g$13 = g0$dbot$3;
+        op_g$14 = g0$dbot$3;
+        op_g$15 = g0$dmaj$3;
+        op_s$0 = g0$off_x$0;
+        op_s$1 = g0$off_y$0;
+        op_s$2 = g0$off_x$0;
+        op_s$3 = g0$off_y$0;
+        op_s$4 = g0$off_x$0;
+        op_s$5 = g0$off_y$0;
+        op_s$6 = g0$off_x$0;
+        op_s$7 = g0$off_y$0;
+        op_s$8 = g0$off_x$1;
+        op_s$9 = g0$off_y$1;
+        op_s$10 = g0$off_x$1;
+        op_s$11 = g0$off_y$1;
+        op_s$12 = g0$off_x$1;
+        op_s$13 = g0$off_y$1;
+        op_s$14 = g0$off_x$1;
+        op_s$15 = g0$off_y$1;
+        op_s$16 = g0$off_x$2;
+        op_s$17 = g0$off_y$2;
+        op_s$18 = g0$off_x$2;
+        op_s$19 = g0$off_y$2;
+        op_s$20 = g0$off_x$2;
+        op_s$21 = g0$off_y$2;
+        op_s$22 = g0$off_x$2;
+        op_s$23 = g0$off_y$2;
+        if (view$8 == 32'h1) begin
             op_e$0 = eq_b$4;
         end
-        op_e$1 = eq_b$1;
-        if (late$9) begin
+        if (view$9 == 32'h1) begin
             op_e$1 = eq_b$5;
         end
-        op_e$2 = eq_b$2;
-        if (late$10) begin
+        if (view$10 == 32'h1) begin
             op_e$2 = eq_b$6;
         end
-        op_e$3 = eq_b$3;
-        if (late$11) begin
+        if (view$11 == 32'h1) begin
             op_e$3 = eq_b$7;
         end
-        op_g$0 = ga$dmaj$0;
-        if (late$12) begin
-            op_g$0 = gb$dmaj$0;
+        if (view$12 == 32'h1) begin
+            op_g$0 = g1$dmaj$0;
         end
-        op_g$1 = ga$dbot$0;
-        if (late$13) begin
-            op_g$1 = gb$dbot$0;
+        if (view$13 == 32'h1) begin
+            op_g$1 = g1$dbot$0;
         end
-        op_g$2 = ga$dbot$0;
-        if (late$14) begin
-            op_g$2 = gb$dbot$0;
+        if (view$14 == 32'h1) begin
+            op_g$2 = g1$dbot$0;
         end
-        op_g$3 = ga$dmaj$0;
-        if (late$15) begin
-            op_g$3 = gb$dmaj$0;
+        if (view$15 == 32'h1) begin
+            op_g$3 = g1$dmaj$0;
         end
-        op_g$4 = ga$dmaj$1;
-        if (late$16) begin
-            op_g$4 = gb$dmaj$1;
+        if (view$16 == 32'h1) begin
+            op_g$4 = g1$dmaj$1;
         end
-        op_g$5 = ga$dbot$1;
-        if (late$17) begin
-            op_g$5 = gb$dbot$1;
+        if (view$17 == 32'h1) begin
+            op_g$5 = g1$dbot$1;
         end
-        op_g$6 = ga$dbot$1;
-        if (late$18) begin
-            op_g$6 = gb$dbot$1;
+        if (view$18 == 32'h1) begin
+            op_g$6 = g1$dbot$1;
         end
-        op_g$7 = ga$dmaj$1;
-        if (late$19) begin
-            op_g$7 = gb$dmaj$1;
+        if (view$19 == 32'h1) begin
+            op_g$7 = g1$dmaj$1;
         end
-        op_g$8 = ga$dmaj$2;
-        if (late$20) begin
-            op_g$8 = gb$dmaj$2;
+        if (view$20 == 32'h1) begin
+            op_g$8 = g1$dmaj$2;
         end
-        op_g$9 = ga$dbot$2;
-        if (late$21) begin
-            op_g$9 = gb$dbot$2;
+        if (view$21 == 32'h1) begin
+            op_g$9 = g1$dbot$2;
         end
-        op_g$10 = ga$dbot$2;
-        if (late$22) begin
-            op_g$10 = gb$dbot$2;
+        if (view$22 == 32'h1) begin
+            op_g$10 = g1$dbot$2;
         end
-        op_g$11 = ga$dmaj$2;
-        if (late$23) begin
-            op_g$11 = gb$dmaj$2;
+        if (view$23 == 32'h1) begin
+            op_g$11 = g1$dmaj$2;
         end
-        op_g$12 = ga$dmaj$3;
-        if (late$24) begin
-            op_g$12 = gb$dmaj$3;
+        if (view$24 == 32'h1) begin
+            op_g$12 = g1$dmaj$3;
         end
-        op_g$13 = ga$dbot$3;
-        if (late$25) begin
-            op_g$13 = gb$dbot$3;
+        if (view$25 == 32'h1) begin
+            op_g$13 = g1$dbot$3;
         end
-        op_g$14 = ga$dbot$3;
-        if (late$26) begin
-            op_g$14 = gb$dbot$3;
+        if (view$26 == 32'h1) begin
+            op_g$14 = g1$dbot$3;
         end
-        op_g$15 = ga$dmaj$3;
-        if (late$27) begin
-            op_g$15 = gb$dmaj$3;
+        if (view$27 == 32'h1) begin
+            op_g$15 = g1$dmaj$3;
         end
-        op_s$0 = ga$off_x$0;
-        if (late$28) begin
-            op_s$0 = gb$off_x$0;
+        if (view$28 == 32'h1) begin
+            op_s$0 = g1$off_x$0;
         end
-        op_s$1 = ga$off_y$0;
-        if (late$29) begin
-            op_s$1 = gb$off_y$0;
+        if (view$29 == 32'h1) begin
+            op_s$1 = g1$off_y$0;
         end
-        op_s$2 = ga$off_x$0;
-        if (late$31) begin
-            op_s$2 = gb$off_x$0;
+        if (view$31 == 32'h1) begin
+            op_s$2 = g1$off_x$0;
         end
-        op_s$3 = ga$off_y$0;
-        if (late$32) begin
-            op_s$3 = gb$off_y$0;
+        if (view$32 == 32'h1) begin
+            op_s$3 = g1$off_y$0;
         end
-        op_s$4 = ga$off_x$0;
-        if (late$34) begin
-            op_s$4 = gb$off_x$0;
+        if (view$34 == 32'h1) begin
+            op_s$4 = g1$off_x$0;
         end
-        op_s$5 = ga$off_y$0;
-        if (late$35) begin
-            op_s$5 = gb$off_y$0;
+        if (view$35 == 32'h1) begin
+            op_s$5 = g1$off_y$0;
         end
-        op_s$6 = ga$off_x$0;
-        if (late$37) begin
-            op_s$6 = gb$off_x$0;
+        if (view$37 == 32'h1) begin
+            op_s$6 = g1$off_x$0;
         end
-        op_s$7 = ga$off_y$0;
-        if (late$38) begin
-            op_s$7 = gb$off_y$0;
+        if (view$38 == 32'h1) begin
+            op_s$7 = g1$off_y$0;
         end
-        op_s$8 = ga$off_x$1;
-        if (late$40) begin
-            op_s$8 = gb$off_x$1;
+        if (view$40 == 32'h1) begin
+            op_s$8 = g1$off_x$1;
         end
-        op_s$9 = ga$off_y$1;
-        if (late$41) begin
-            op_s$9 = gb$off_y$1;
+        if (view$41 == 32'h1) begin
+            op_s$9 = g1$off_y$1;
         end
-        op_s$10 = ga$off_x$1;
-        if (late$43) begin
-            op_s$10 = gb$off_x$1;
+        if (view$43 == 32'h1) begin
+            op_s$10 = g1$off_x$1;
         end
-        op_s$11 = ga$off_y$1;
-        if (late$44) begin
-            op_s$11 = gb$off_y$1;
+        if (view$44 == 32'h1) begin
+            op_s$11 = g1$off_y$1;
         end
-        op_s$12 = ga$off_x$1;
-        if (late$46) begin
-            op_s$12 = gb$off_x$1;
+        if (view$46 == 32'h1) begin
+            op_s$12 = g1$off_x$1;
         end
-        op_s$13 = ga$off_y$1;
-        if (late$47) begin
-            op_s$13 = gb$off_y$1;
+        if (view$47 == 32'h1) begin
+            op_s$13 = g1$off_y$1;
         end
-        op_s$14 = ga$off_x$1;
-        if (late$49) begin
-            op_s$14 = gb$off_x$1;
+        if (view$49 == 32'h1) begin
+            op_s$14 = g1$off_x$1;
         end
-        op_s$15 = ga$off_y$1;
-        if (late$50) begin
-            op_s$15 = gb$off_y$1;
+        if (view$50 == 32'h1) begin
+            op_s$15 = g1$off_y$1;
         end
-        op_s$16 = ga$off_x$2;
-        if (late$52) begin
-            op_s$16 = gb$off_x$2;
+        if (view$52 == 32'h1) begin
+            op_s$16 = g1$off_x$2;
         end
-        op_s$17 = ga$off_y$2;
-        if (late$53) begin
-            op_s$17 = gb$off_y$2;
+        if (view$53 == 32'h1) begin
+            op_s$17 = g1$off_y$2;
         end
-        op_s$18 = ga$off_x$2;
-        if (late$55) begin
-            op_s$18 = gb$off_x$2;
+        if (view$55 == 32'h1) begin
+            op_s$18 = g1$off_x$2;
         end
-        op_s$19 = ga$off_y$2;
-        if (late$56) begin
-            op_s$19 = gb$off_y$2;
+        if (view$56 == 32'h1) begin
+            op_s$19 = g1$off_y$2;
         end
-        op_s$20 = ga$off_x$2;
-        if (late$58) begin
-            op_s$20 = gb$off_x$2;
+        if (view$58 == 32'h1) begin
+            op_s$20 = g1$off_x$2;
         end
-        op_s$21 = ga$off_y$2;
-        if (late$59) begin
-            op_s$21 = gb$off_y$2;
+        if (view$59 == 32'h1) begin
+            op_s$21 = g1$off_y$2;
         end
-        op_s$22 = ga$off_x$2;
-        if (late$61) begin
-            op_s$22 = gb$off_x$2;
+        if (view$61 == 32'h1) begin
+            op_s$22 = g1$off_x$2;
         end
-        op_s$23 = ga$off_y$2;
-        if (late$62) begin
-            op_s$23 = gb$off_y$2;
+        if (view$62 == 32'h1) begin
+            op_s$23 = g1$off_y$2;
+        end
+        if (view$8 == 32'h2) begin
+            op_e$0 = eq_b$8;
+        end
+        if (view$9 == 32'h2) begin
+            op_e$1 = eq_b$9;
+        end
+        if (view$10 == 32'h2) begin
+            op_e$2 = eq_b$10;
+        end
+        if (view$11 == 32'h2) begin
+            op_e$3 = eq_b$11;
+        end
+        if (view$12 == 32'h2) begin
+            op_g$0 = g2$dmaj$0;
+        end
+        if (view$13 == 32'h2) begin
+            op_g$1 = g2$dbot$0;
+        end
+        if (view$14 == 32'h2) begin
+            op_g$2 = g2$dbot$0;
+        end
+        if (view$15 == 32'h2) begin
+            op_g$3 = g2$dmaj$0;
+        end
+        if (view$16 == 32'h2) begin
+            op_g$4 = g2$dmaj$1;
+        end
+        if (view$17 == 32'h2) begin
+            op_g$5 = g2$dbot$1;
+        end
+        if (view$18 == 32'h2) begin
+            op_g$6 = g2$dbot$1;
+        end
+        if (view$19 == 32'h2) begin
+            op_g$7 = g2$dmaj$1;
+        end
+        if (view$20 == 32'h2) begin
+            op_g$8 = g2$dmaj$2;
+        end
+        if (view$21 == 32'h2) begin
+            op_g$9 = g2$dbot$2;
+        end
+        if (view$22 == 32'h2) begin
+            op_g$10 = g2$dbot$2;
+        end
+        if (view$23 == 32'h2) begin
+            op_g$11 = g2$dmaj$2;
+        end
+        if (view$24 == 32'h2) begin
+            op_g$12 = g2$dmaj$3;
+        end
+        if (view$25 == 32'h2) begin
+            op_g$13 = g2$dbot$3;
+        end
+        if (view$26 == 32'h2) begin
+            op_g$14 = g2$dbot$3;
+        end
+        if (view$27 == 32'h2) begin
+            op_g$15 = g2$dmaj$3;
+        end
+        if (view$28 == 32'h2) begin
+            op_s$0 = g2$off_x$0;
+        end
+        if (view$29 == 32'h2) begin
+            op_s$1 = g2$off_y$0;
+        end
+        if (view$31 == 32'h2) begin
+            op_s$2 = g2$off_x$0;
+        end
+        if (view$32 == 32'h2) begin
+            op_s$3 = g2$off_y$0;
+        end
+        if (view$34 == 32'h2) begin
+            op_s$4 = g2$off_x$0;
+        end
+        if (view$35 == 32'h2) begin
+            op_s$5 = g2$off_y$0;
+        end
+        if (view$37 == 32'h2) begin
+            op_s$6 = g2$off_x$0;
+        end
+        if (view$38 == 32'h2) begin
+            op_s$7 = g2$off_y$0;
+        end
+        if (view$40 == 32'h2) begin
+            op_s$8 = g2$off_x$1;
+        end
+        if (view$41 == 32'h2) begin
+            op_s$9 = g2$off_y$1;
+        end
+        if (view$43 == 32'h2) begin
+            op_s$10 = g2$off_x$1;
+        end
+        if (view$44 == 32'h2) begin
+            op_s$11 = g2$off_y$1;
+        end
+        if (view$46 == 32'h2) begin
+            op_s$12 = g2$off_x$1;
+        end
+        if (view$47 == 32'h2) begin
+            op_s$13 = g2$off_y$1;
+        end
+        if (view$49 == 32'h2) begin
+            op_s$14 = g2$off_x$1;
+        end
+        if (view$50 == 32'h2) begin
+            op_s$15 = g2$off_y$1;
+        end
+        if (view$52 == 32'h2) begin
+            op_s$16 = g2$off_x$2;
+        end
+        if (view$53 == 32'h2) begin
+            op_s$17 = g2$off_y$2;
+        end
+        if (view$55 == 32'h2) begin
+            op_s$18 = g2$off_x$2;
+        end
+        if (view$56 == 32'h2) begin
+            op_s$19 = g2$off_y$2;
+        end
+        if (view$58 == 32'h2) begin
+            op_s$20 = g2$off_x$2;
+        end
+        if (view$59 == 32'h2) begin
+            op_s$21 = g2$off_y$2;
+        end
+        if (view$61 == 32'h2) begin
+            op_s$22 = g2$off_x$2;
+        end
+        if (view$62 == 32'h2) begin
+            op_s$23 = g2$off_y$2;
+        end
+        if (view$8 == 32'h3) begin
+            op_e$0 = eq_b$12;
+        end
+        if (view$9 == 32'h3) begin
+            op_e$1 = eq_b$13;
+        end
+        if (view$10 == 32'h3) begin
+            op_e$2 = eq_b$14;
+        end
+        if (view$11 == 32'h3) begin
+            op_e$3 = eq_b$15;
+        end
+        if (view$12 == 32'h3) begin
+            op_g$0 = g3$dmaj$0;
+        end
+        if (view$13 == 32'h3) begin
+            op_g$1 = g3$dbot$0;
+        end
+        if (view$14 == 32'h3) begin
+            op_g$2 = g3$dbot$0;
+        end
+        if (view$15 == 32'h3) begin
+            op_g$3 = g3$dmaj$0;
+        end
+        if (view$16 == 32'h3) begin
+            op_g$4 = g3$dmaj$1;
+        end
+        if (view$17 == 32'h3) begin
+            op_g$5 = g3$dbot$1;
+        end
+        if (view$18 == 32'h3) begin
+            op_g$6 = g3$dbot$1;
+        end
+        if (view$19 == 32'h3) begin
+            op_g$7 = g3$dmaj$1;
+        end
+        if (view$20 == 32'h3) begin
+            op_g$8 = g3$dmaj$2;
+        end
+        if (view$21 == 32'h3) begin
+            op_g$9 = g3$dbot$2;
+        end
+        if (view$22 == 32'h3) begin
+            op_g$10 = g3$dbot$2;
+        end
+        if (view$23 == 32'h3) begin
+            op_g$11 = g3$dmaj$2;
+        end
+        if (view$24 == 32'h3) begin
+            op_g$12 = g3$dmaj$3;
+        end
+        if (view$25 == 32'h3) begin
+            op_g$13 = g3$dbot$3;
+        end
+        if (view$26 == 32'h3) begin
+            op_g$14 = g3$dbot$3;
+        end
+        if (view$27 == 32'h3) begin
+            op_g$15 = g3$dmaj$3;
+        end
+        if (view$28 == 32'h3) begin
+            op_s$0 = g3$off_x$0;
+        end
+        if (view$29 == 32'h3) begin
+            op_s$1 = g3$off_y$0;
+        end
+        if (view$31 == 32'h3) begin
+            op_s$2 = g3$off_x$0;
+        end
+        if (view$32 == 32'h3) begin
+            op_s$3 = g3$off_y$0;
+        end
+        if (view$34 == 32'h3) begin
+            op_s$4 = g3$off_x$0;
+        end
+        if (view$35 == 32'h3) begin
+            op_s$5 = g3$off_y$0;
+        end
+        if (view$37 == 32'h3) begin
+            op_s$6 = g3$off_x$0;
+        end
+        if (view$38 == 32'h3) begin
+            op_s$7 = g3$off_y$0;
+        end
+        if (view$40 == 32'h3) begin
+            op_s$8 = g3$off_x$1;
+        end
+        if (view$41 == 32'h3) begin
+            op_s$9 = g3$off_y$1;
+        end
+        if (view$43 == 32'h3) begin
+            op_s$10 = g3$off_x$1;
+        end
+        if (view$44 == 32'h3) begin
+            op_s$11 = g3$off_y$1;
+        end
+        if (view$46 == 32'h3) begin
+            op_s$12 = g3$off_x$1;
+        end
+        if (view$47 == 32'h3) begin
+            op_s$13 = g3$off_y$1;
+        end
+        if (view$49 == 32'h3) begin
+            op_s$14 = g3$off_x$1;
+        end
+        if (view$50 == 32'h3) begin
+            op_s$15 = g3$off_y$1;
+        end
+        if (view$52 == 32'h3) begin
+            op_s$16 = g3$off_x$2;
+        end
+        if (view$53 == 32'h3) begin
+            op_s$17 = g3$off_y$2;
+        end
+        if (view$55 == 32'h3) begin
+            op_s$18 = g3$off_x$2;
+        end
+        if (view$56 == 32'h3) begin
+            op_s$19 = g3$off_y$2;
+        end
+        if (view$58 == 32'h3) begin
+            op_s$20 = g3$off_x$2;
+        end
+        if (view$59 == 32'h3) begin
+            op_s$21 = g3$off_y$2;
+        end
+        if (view$61 == 32'h3) begin
+            op_s$22 = g3$off_x$2;
+        end
+        if (view$62 == 32'h3) begin
+            op_s$23 = g3$off_y$2;
         end
         ddx$0 = gx$0$q >> gsh$0;
         ddy$0 = gy$0$q >> gsh$0;
@@ -10720,44 +12355,84 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         ddy$2 = gy$2$q >> gsh$2;
         ddx$3 = gx$3$q >> gsh$3;
         ddy$3 = gy$3$q >> gsh$3;
+        attr0$0 = g0$attr0$0;
+        if (view_handover == 32'h1) begin
+            attr0$0 = g1$attr0$0;
+        end
+        if (view_handover == 32'h2) begin
+            attr0$0 = g2$attr0$0;
+        end
+        if (view_handover == 32'h3) begin
+            attr0$0 = g3$attr0$0;
+        end
+        attr0$1 = g0$attr0$1;
+        if (view_handover == 32'h1) begin
+            attr0$1 = g1$attr0$1;
+        end
+        if (view_handover == 32'h2) begin
+            attr0$1 = g2$attr0$1;
+        end
+        if (view_handover == 32'h3) begin
+            attr0$1 = g3$attr0$1;
+        end
+        attr0$2 = g0$attr0$2;
+        if (view_handover == 32'h1) begin
+            attr0$2 = g1$attr0$2;
+        end
+        if (view_handover == 32'h2) begin
+            attr0$2 = g2$attr0$2;
+        end
+        if (view_handover == 32'h3) begin
+            attr0$2 = g3$attr0$2;
+        end
+        attr0$3 = g0$attr0$3;
+        if (view_handover == 32'h1) begin
+            attr0$3 = g1$attr0$3;
+        end
+        if (view_handover == 32'h2) begin
+            attr0$3 = g2$attr0$3;
+        end
+        if (view_handover == 32'h3) begin
+            attr0$3 = g3$attr0$3;
+        end
         if ((lane$0 == 0) & act$0) begin
-            mul$0$a = ga$kdx$0[(32'h0)+:(57)];
-            mul$0$b = ga$kdy$1[(32'h0)+:(19)];
+            mul$0$a = g0$kdx$0[(32'h0)+:(57)];
+            mul$0$b = g0$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$0$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 0) & act$1) begin
-            mul$0$a = ga$kdx$1[(32'h0)+:(57)];
-            mul$0$b = ga$kdy$0[(32'h0)+:(19)];
+            mul$0$a = g0$kdx$1[(32'h0)+:(57)];
+            mul$0$b = g0$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$0$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 0) & act$2) begin
-            mul$0$a = ga$edy$0;
-            mul$0$b = ga$xf$0;
+            mul$0$a = g0$edy$0;
+            mul$0$b = g0$xf$0;
             pn$0 = mul$0$p;
         end
         if ((lane$3 == 0) & act$3) begin
-            mul$0$a = ga$edx$0[(32'h0)+:(57)];
-            mul$0$b = ga$toff$0;
+            mul$0$a = g0$edx$0[(32'h0)+:(57)];
+            mul$0$b = g0$toff$0;
             pn$1 = mul$0$p;
         end
         if ((lane$4 == 0) & act$4) begin
-            mul$0$a = ga$edy$1;
-            mul$0$b = ga$xf$1;
+            mul$0$a = g0$edy$1;
+            mul$0$b = g0$xf$1;
             pn$2 = mul$0$p;
         end
         if ((lane$5 == 0) & act$5) begin
-            mul$0$a = ga$edx$1[(32'h0)+:(57)];
-            mul$0$b = ga$toff$1;
+            mul$0$a = g0$edx$1[(32'h0)+:(57)];
+            mul$0$b = g0$toff$1;
             pn$3 = mul$0$p;
         end
         if ((lane$6 == 0) & act$6) begin
-            mul$0$a = ga$edy$2;
-            mul$0$b = ga$xf$2;
+            mul$0$a = g0$edy$2;
+            mul$0$b = g0$xf$2;
             pn$4 = mul$0$p;
         end
         if ((lane$7 == 0) & act$7) begin
-            mul$0$a = ga$edx$2[(32'h0)+:(57)];
-            mul$0$b = ga$toff$2;
+            mul$0$a = g0$edx$2[(32'h0)+:(57)];
+            mul$0$b = g0$toff$2;
             pn$5 = mul$0$p;
         end
         if ((lane$8 == 0) & act$8) begin
@@ -11041,43 +12716,43 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             ps$35 = mul$0$p[(32'h0)+:(40)];
         end
         if ((lane$0 == 1) & act$0) begin
-            mul$1$a = ga$kdx$0[(32'h0)+:(57)];
-            mul$1$b = ga$kdy$1[(32'h0)+:(19)];
+            mul$1$a = g0$kdx$0[(32'h0)+:(57)];
+            mul$1$b = g0$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$1$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 1) & act$1) begin
-            mul$1$a = ga$kdx$1[(32'h0)+:(57)];
-            mul$1$b = ga$kdy$0[(32'h0)+:(19)];
+            mul$1$a = g0$kdx$1[(32'h0)+:(57)];
+            mul$1$b = g0$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$1$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 1) & act$2) begin
-            mul$1$a = ga$edy$0;
-            mul$1$b = ga$xf$0;
+            mul$1$a = g0$edy$0;
+            mul$1$b = g0$xf$0;
             pn$0 = mul$1$p;
         end
         if ((lane$3 == 1) & act$3) begin
-            mul$1$a = ga$edx$0[(32'h0)+:(57)];
-            mul$1$b = ga$toff$0;
+            mul$1$a = g0$edx$0[(32'h0)+:(57)];
+            mul$1$b = g0$toff$0;
             pn$1 = mul$1$p;
         end
         if ((lane$4 == 1) & act$4) begin
-            mul$1$a = ga$edy$1;
-            mul$1$b = ga$xf$1;
+            mul$1$a = g0$edy$1;
+            mul$1$b = g0$xf$1;
             pn$2 = mul$1$p;
         end
         if ((lane$5 == 1) & act$5) begin
-            mul$1$a = ga$edx$1[(32'h0)+:(57)];
-            mul$1$b = ga$toff$1;
+            mul$1$a = g0$edx$1[(32'h0)+:(57)];
+            mul$1$b = g0$toff$1;
             pn$3 = mul$1$p;
         end
         if ((lane$6 == 1) & act$6) begin
-            mul$1$a = ga$edy$2;
-            mul$1$b = ga$xf$2;
+            mul$1$a = g0$edy$2;
+            mul$1$b = g0$xf$2;
             pn$4 = mul$1$p;
         end
         if ((lane$7 == 1) & act$7) begin
-            mul$1$a = ga$edx$2[(32'h0)+:(57)];
-            mul$1$b = ga$toff$2;
+            mul$1$a = g0$edx$2[(32'h0)+:(57)];
+            mul$1$b = g0$toff$2;
             pn$5 = mul$1$p;
         end
         if ((lane$8 == 1) & act$8) begin
@@ -11361,43 +13036,43 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             ps$35 = mul$1$p[(32'h0)+:(40)];
         end
         if ((lane$0 == 2) & act$0) begin
-            mul$2$a = ga$kdx$0[(32'h0)+:(57)];
-            mul$2$b = ga$kdy$1[(32'h0)+:(19)];
+            mul$2$a = g0$kdx$0[(32'h0)+:(57)];
+            mul$2$b = g0$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$2$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 2) & act$1) begin
-            mul$2$a = ga$kdx$1[(32'h0)+:(57)];
-            mul$2$b = ga$kdy$0[(32'h0)+:(19)];
+            mul$2$a = g0$kdx$1[(32'h0)+:(57)];
+            mul$2$b = g0$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$2$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 2) & act$2) begin
-            mul$2$a = ga$edy$0;
-            mul$2$b = ga$xf$0;
+            mul$2$a = g0$edy$0;
+            mul$2$b = g0$xf$0;
             pn$0 = mul$2$p;
         end
         if ((lane$3 == 2) & act$3) begin
-            mul$2$a = ga$edx$0[(32'h0)+:(57)];
-            mul$2$b = ga$toff$0;
+            mul$2$a = g0$edx$0[(32'h0)+:(57)];
+            mul$2$b = g0$toff$0;
             pn$1 = mul$2$p;
         end
         if ((lane$4 == 2) & act$4) begin
-            mul$2$a = ga$edy$1;
-            mul$2$b = ga$xf$1;
+            mul$2$a = g0$edy$1;
+            mul$2$b = g0$xf$1;
             pn$2 = mul$2$p;
         end
         if ((lane$5 == 2) & act$5) begin
-            mul$2$a = ga$edx$1[(32'h0)+:(57)];
-            mul$2$b = ga$toff$1;
+            mul$2$a = g0$edx$1[(32'h0)+:(57)];
+            mul$2$b = g0$toff$1;
             pn$3 = mul$2$p;
         end
         if ((lane$6 == 2) & act$6) begin
-            mul$2$a = ga$edy$2;
-            mul$2$b = ga$xf$2;
+            mul$2$a = g0$edy$2;
+            mul$2$b = g0$xf$2;
             pn$4 = mul$2$p;
         end
         if ((lane$7 == 2) & act$7) begin
-            mul$2$a = ga$edx$2[(32'h0)+:(57)];
-            mul$2$b = ga$toff$2;
+            mul$2$a = g0$edx$2[(32'h0)+:(57)];
+            mul$2$b = g0$toff$2;
             pn$5 = mul$2$p;
         end
         if ((lane$8 == 2) & act$8) begin
@@ -11681,43 +13356,43 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             ps$35 = mul$2$p[(32'h0)+:(40)];
         end
         if ((lane$0 == 3) & act$0) begin
-            mul$3$a = ga$kdx$0[(32'h0)+:(57)];
-            mul$3$b = ga$kdy$1[(32'h0)+:(19)];
+            mul$3$a = g0$kdx$0[(32'h0)+:(57)];
+            mul$3$b = g0$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$3$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 3) & act$1) begin
-            mul$3$a = ga$kdx$1[(32'h0)+:(57)];
-            mul$3$b = ga$kdy$0[(32'h0)+:(19)];
+            mul$3$a = g0$kdx$1[(32'h0)+:(57)];
+            mul$3$b = g0$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$3$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 3) & act$2) begin
-            mul$3$a = ga$edy$0;
-            mul$3$b = ga$xf$0;
+            mul$3$a = g0$edy$0;
+            mul$3$b = g0$xf$0;
             pn$0 = mul$3$p;
         end
         if ((lane$3 == 3) & act$3) begin
-            mul$3$a = ga$edx$0[(32'h0)+:(57)];
-            mul$3$b = ga$toff$0;
+            mul$3$a = g0$edx$0[(32'h0)+:(57)];
+            mul$3$b = g0$toff$0;
             pn$1 = mul$3$p;
         end
         if ((lane$4 == 3) & act$4) begin
-            mul$3$a = ga$edy$1;
-            mul$3$b = ga$xf$1;
+            mul$3$a = g0$edy$1;
+            mul$3$b = g0$xf$1;
             pn$2 = mul$3$p;
         end
         if ((lane$5 == 3) & act$5) begin
-            mul$3$a = ga$edx$1[(32'h0)+:(57)];
-            mul$3$b = ga$toff$1;
+            mul$3$a = g0$edx$1[(32'h0)+:(57)];
+            mul$3$b = g0$toff$1;
             pn$3 = mul$3$p;
         end
         if ((lane$6 == 3) & act$6) begin
-            mul$3$a = ga$edy$2;
-            mul$3$b = ga$xf$2;
+            mul$3$a = g0$edy$2;
+            mul$3$b = g0$xf$2;
             pn$4 = mul$3$p;
         end
         if ((lane$7 == 3) & act$7) begin
-            mul$3$a = ga$edx$2[(32'h0)+:(57)];
-            mul$3$b = ga$toff$2;
+            mul$3$a = g0$edx$2[(32'h0)+:(57)];
+            mul$3$b = g0$toff$2;
             pn$5 = mul$3$p;
         end
         if ((lane$8 == 3) & act$8) begin
@@ -12001,43 +13676,43 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             ps$35 = mul$3$p[(32'h0)+:(40)];
         end
         if ((lane$0 == 4) & act$0) begin
-            mul$4$a = ga$kdx$0[(32'h0)+:(57)];
-            mul$4$b = ga$kdy$1[(32'h0)+:(19)];
+            mul$4$a = g0$kdx$0[(32'h0)+:(57)];
+            mul$4$b = g0$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$4$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 4) & act$1) begin
-            mul$4$a = ga$kdx$1[(32'h0)+:(57)];
-            mul$4$b = ga$kdy$0[(32'h0)+:(19)];
+            mul$4$a = g0$kdx$1[(32'h0)+:(57)];
+            mul$4$b = g0$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$4$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 4) & act$2) begin
-            mul$4$a = ga$edy$0;
-            mul$4$b = ga$xf$0;
+            mul$4$a = g0$edy$0;
+            mul$4$b = g0$xf$0;
             pn$0 = mul$4$p;
         end
         if ((lane$3 == 4) & act$3) begin
-            mul$4$a = ga$edx$0[(32'h0)+:(57)];
-            mul$4$b = ga$toff$0;
+            mul$4$a = g0$edx$0[(32'h0)+:(57)];
+            mul$4$b = g0$toff$0;
             pn$1 = mul$4$p;
         end
         if ((lane$4 == 4) & act$4) begin
-            mul$4$a = ga$edy$1;
-            mul$4$b = ga$xf$1;
+            mul$4$a = g0$edy$1;
+            mul$4$b = g0$xf$1;
             pn$2 = mul$4$p;
         end
         if ((lane$5 == 4) & act$5) begin
-            mul$4$a = ga$edx$1[(32'h0)+:(57)];
-            mul$4$b = ga$toff$1;
+            mul$4$a = g0$edx$1[(32'h0)+:(57)];
+            mul$4$b = g0$toff$1;
             pn$3 = mul$4$p;
         end
         if ((lane$6 == 4) & act$6) begin
-            mul$4$a = ga$edy$2;
-            mul$4$b = ga$xf$2;
+            mul$4$a = g0$edy$2;
+            mul$4$b = g0$xf$2;
             pn$4 = mul$4$p;
         end
         if ((lane$7 == 4) & act$7) begin
-            mul$4$a = ga$edx$2[(32'h0)+:(57)];
-            mul$4$b = ga$toff$2;
+            mul$4$a = g0$edx$2[(32'h0)+:(57)];
+            mul$4$b = g0$toff$2;
             pn$5 = mul$4$p;
         end
         if ((lane$8 == 4) & act$8) begin
@@ -12321,43 +13996,43 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             ps$35 = mul$4$p[(32'h0)+:(40)];
         end
         if ((lane$0 == 5) & act$0) begin
-            mul$5$a = ga$kdx$0[(32'h0)+:(57)];
-            mul$5$b = ga$kdy$1[(32'h0)+:(19)];
+            mul$5$a = g0$kdx$0[(32'h0)+:(57)];
+            mul$5$b = g0$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$5$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 5) & act$1) begin
-            mul$5$a = ga$kdx$1[(32'h0)+:(57)];
-            mul$5$b = ga$kdy$0[(32'h0)+:(19)];
+            mul$5$a = g0$kdx$1[(32'h0)+:(57)];
+            mul$5$b = g0$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$5$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 5) & act$2) begin
-            mul$5$a = ga$edy$0;
-            mul$5$b = ga$xf$0;
+            mul$5$a = g0$edy$0;
+            mul$5$b = g0$xf$0;
             pn$0 = mul$5$p;
         end
         if ((lane$3 == 5) & act$3) begin
-            mul$5$a = ga$edx$0[(32'h0)+:(57)];
-            mul$5$b = ga$toff$0;
+            mul$5$a = g0$edx$0[(32'h0)+:(57)];
+            mul$5$b = g0$toff$0;
             pn$1 = mul$5$p;
         end
         if ((lane$4 == 5) & act$4) begin
-            mul$5$a = ga$edy$1;
-            mul$5$b = ga$xf$1;
+            mul$5$a = g0$edy$1;
+            mul$5$b = g0$xf$1;
             pn$2 = mul$5$p;
         end
         if ((lane$5 == 5) & act$5) begin
-            mul$5$a = ga$edx$1[(32'h0)+:(57)];
-            mul$5$b = ga$toff$1;
+            mul$5$a = g0$edx$1[(32'h0)+:(57)];
+            mul$5$b = g0$toff$1;
             pn$3 = mul$5$p;
         end
         if ((lane$6 == 5) & act$6) begin
-            mul$5$a = ga$edy$2;
-            mul$5$b = ga$xf$2;
+            mul$5$a = g0$edy$2;
+            mul$5$b = g0$xf$2;
             pn$4 = mul$5$p;
         end
         if ((lane$7 == 5) & act$7) begin
-            mul$5$a = ga$edx$2[(32'h0)+:(57)];
-            mul$5$b = ga$toff$2;
+            mul$5$a = g0$edx$2[(32'h0)+:(57)];
+            mul$5$b = g0$toff$2;
             pn$5 = mul$5$p;
         end
         if ((lane$8 == 5) & act$8) begin
@@ -12641,43 +14316,43 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             ps$35 = mul$5$p[(32'h0)+:(40)];
         end
         if ((lane$0 == 6) & act$0) begin
-            mul$6$a = ga$kdx$0[(32'h0)+:(57)];
-            mul$6$b = ga$kdy$1[(32'h0)+:(19)];
+            mul$6$a = g0$kdx$0[(32'h0)+:(57)];
+            mul$6$b = g0$kdy$1[(32'h0)+:(19)];
             pa$0 = mul$6$p[(32'h0)+:(34)];
         end
         if ((lane$1 == 6) & act$1) begin
-            mul$6$a = ga$kdx$1[(32'h0)+:(57)];
-            mul$6$b = ga$kdy$0[(32'h0)+:(19)];
+            mul$6$a = g0$kdx$1[(32'h0)+:(57)];
+            mul$6$b = g0$kdy$0[(32'h0)+:(19)];
             pa$1 = mul$6$p[(32'h0)+:(34)];
         end
         if ((lane$2 == 6) & act$2) begin
-            mul$6$a = ga$edy$0;
-            mul$6$b = ga$xf$0;
+            mul$6$a = g0$edy$0;
+            mul$6$b = g0$xf$0;
             pn$0 = mul$6$p;
         end
         if ((lane$3 == 6) & act$3) begin
-            mul$6$a = ga$edx$0[(32'h0)+:(57)];
-            mul$6$b = ga$toff$0;
+            mul$6$a = g0$edx$0[(32'h0)+:(57)];
+            mul$6$b = g0$toff$0;
             pn$1 = mul$6$p;
         end
         if ((lane$4 == 6) & act$4) begin
-            mul$6$a = ga$edy$1;
-            mul$6$b = ga$xf$1;
+            mul$6$a = g0$edy$1;
+            mul$6$b = g0$xf$1;
             pn$2 = mul$6$p;
         end
         if ((lane$5 == 6) & act$5) begin
-            mul$6$a = ga$edx$1[(32'h0)+:(57)];
-            mul$6$b = ga$toff$1;
+            mul$6$a = g0$edx$1[(32'h0)+:(57)];
+            mul$6$b = g0$toff$1;
             pn$3 = mul$6$p;
         end
         if ((lane$6 == 6) & act$6) begin
-            mul$6$a = ga$edy$2;
-            mul$6$b = ga$xf$2;
+            mul$6$a = g0$edy$2;
+            mul$6$b = g0$xf$2;
             pn$4 = mul$6$p;
         end
         if ((lane$7 == 6) & act$7) begin
-            mul$6$a = ga$edx$2[(32'h0)+:(57)];
-            mul$6$b = ga$toff$2;
+            mul$6$a = g0$edx$2[(32'h0)+:(57)];
+            mul$6$b = g0$toff$2;
             pn$5 = mul$6$p;
         end
         if ((lane$8 == 6) & act$8) begin
@@ -12986,7 +14661,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         end
         if (act$8) begin
             p$0$d = shr$0;
-            if (exp$q <= eq_shift) begin
+            if (exp_now <= eq_shift) begin
                 p$0$d = pe$0;
             end
         end
@@ -12996,7 +14671,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         end
         if (act$9) begin
             p$1$d = shr$1;
-            if (exp$q <= eq_shift) begin
+            if (exp_now <= eq_shift) begin
                 p$1$d = pe$1;
             end
         end
@@ -13006,7 +14681,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         end
         if (act$10) begin
             p$2$d = shr$2;
-            if (exp$q <= eq_shift) begin
+            if (exp_now <= eq_shift) begin
                 p$2$d = pe$2;
             end
         end
@@ -13016,7 +14691,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         end
         if (act$11) begin
             p$3$d = shr$3;
-            if (exp$q <= eq_shift) begin
+            if (exp_now <= eq_shift) begin
                 p$3$d = pe$3;
             end
         end
@@ -13069,7 +14744,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             inc0$0$d = ddy$0[(32'h0)+:(40)] + ps$2;
         end
         if (at_handover) begin
-            plane$0$d = (plane$0$q >> frac) + (gb$attr0$0 << bsh$0);
+            plane$0$d = (plane$0$q >> frac) + (attr0$0 << bsh$0);
             inc1$0$d = inc0$0$q + ddx$0[(32'h0)+:(40)];
         end
         plane_base$1 = plane$1$q;
@@ -13081,7 +14756,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             inc0$1$d = ddy$1[(32'h0)+:(40)] + ps$5;
         end
         if (at_handover) begin
-            plane$1$d = (plane$1$q >> frac) + (gb$attr0$1 << bsh$1);
+            plane$1$d = (plane$1$q >> frac) + (attr0$1 << bsh$1);
             inc1$1$d = inc0$1$q + ddx$1[(32'h0)+:(40)];
         end
         plane_base$2 = plane$2$q;
@@ -13093,7 +14768,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             inc0$2$d = ddy$2[(32'h0)+:(40)] + ps$8;
         end
         if (at_handover) begin
-            plane$2$d = (plane$2$q >> frac) + (gb$attr0$2 << bsh$2);
+            plane$2$d = (plane$2$q >> frac) + (attr0$2 << bsh$2);
             inc1$2$d = inc0$2$q + ddx$2[(32'h0)+:(40)];
         end
         plane_base$3 = plane$3$q;
@@ -13105,7 +14780,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             inc0$3$d = ddy$3[(32'h0)+:(40)] + ps$11;
         end
         if (at_handover) begin
-            plane$3$d = (plane$3$q >> frac) + (gb$attr0$3 << bsh$3);
+            plane$3$d = (plane$3$q >> frac) + (attr0$3 << bsh$3);
             inc1$3$d = inc0$3$q + ddx$3[(32'h0)+:(40)];
         end
         plane_base$4 = plane$4$q;
@@ -13117,7 +14792,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             inc0$4$d = ddy$0[(32'h0)+:(40)] + ps$14;
         end
         if (at_handover) begin
-            plane$4$d = (plane$4$q >> frac) + (gb$attr0$0 << bsh$0);
+            plane$4$d = (plane$4$q >> frac) + (attr0$0 << bsh$0);
             inc1$4$d = inc0$4$q + ddx$0[(32'h0)+:(40)];
         end
         plane_base$5 = plane$5$q;
@@ -13129,7 +14804,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             inc0$5$d = ddy$1[(32'h0)+:(40)] + ps$17;
         end
         if (at_handover) begin
-            plane$5$d = (plane$5$q >> frac) + (gb$attr0$1 << bsh$1);
+            plane$5$d = (plane$5$q >> frac) + (attr0$1 << bsh$1);
             inc1$5$d = inc0$5$q + ddx$1[(32'h0)+:(40)];
         end
         plane_base$6 = plane$6$q;
@@ -13141,7 +14816,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             inc0$6$d = ddy$2[(32'h0)+:(40)] + ps$20;
         end
         if (at_handover) begin
-            plane$6$d = (plane$6$q >> frac) + (gb$attr0$2 << bsh$2);
+            plane$6$d = (plane$6$q >> frac) + (attr0$2 << bsh$2);
             inc1$6$d = inc0$6$q + ddx$2[(32'h0)+:(40)];
         end
         plane_base$7 = plane$7$q;
@@ -13153,7 +14828,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             inc0$7$d = ddy$3[(32'h0)+:(40)] + ps$23;
         end
         if (at_handover) begin
-            plane$7$d = (plane$7$q >> frac) + (gb$attr0$3 << bsh$3);
+            plane$7$d = (plane$7$q >> frac) + (attr0$3 << bsh$3);
             inc1$7$d = inc0$7$q + ddx$3[(32'h0)+:(40)];
         end
         plane_base$8 = plane$8$q;
@@ -13165,7 +14840,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             inc0$8$d = ddy$0[(32'h0)+:(40)] + ps$26;
         end
         if (at_handover) begin
-            plane$8$d = (plane$8$q >> frac) + (gb$attr0$0 << bsh$0);
+            plane$8$d = (plane$8$q >> frac) + (attr0$0 << bsh$0);
             inc1$8$d = inc0$8$q + ddx$0[(32'h0)+:(40)];
         end
         plane_base$9 = plane$9$q;
@@ -13177,7 +14852,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             inc0$9$d = ddy$1[(32'h0)+:(40)] + ps$29;
         end
         if (at_handover) begin
-            plane$9$d = (plane$9$q >> frac) + (gb$attr0$1 << bsh$1);
+            plane$9$d = (plane$9$q >> frac) + (attr0$1 << bsh$1);
             inc1$9$d = inc0$9$q + ddx$1[(32'h0)+:(40)];
         end
         plane_base$10 = plane$10$q;
@@ -13189,7 +14864,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             inc0$10$d = ddy$2[(32'h0)+:(40)] + ps$32;
         end
         if (at_handover) begin
-            plane$10$d = (plane$10$q >> frac) + (gb$attr0$2 << bsh$2);
+            plane$10$d = (plane$10$q >> frac) + (attr0$2 << bsh$2);
             inc1$10$d = inc0$10$q + ddx$2[(32'h0)+:(40)];
         end
         plane_base$11 = plane$11$q;
@@ -13201,18 +14876,65 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             inc0$11$d = ddy$3[(32'h0)+:(40)] + ps$35;
         end
         if (at_handover) begin
-            plane$11$d = (plane$11$q >> frac) + (gb$attr0$3 << bsh$3);
+            plane$11$d = (plane$11$q >> frac) + (attr0$3 << bsh$3);
             inc1$11$d = inc0$11$q + ddx$3[(32'h0)+:(40)];
         end
-        out$walk = gb$up;
-        out$maj_left = maj_left_b$q;
-        out$maj_j = gb$cy$0[(frac)+:(13)];
-        out$maj_count = gb$count$0;
+        if (last_copy == 32'h0) begin
+            out$walk = g0$up;
+            out$maj_left = maj_left$0;
+            out$maj_j = g0$cy$0[(frac)+:(13)];
+            out$maj_count = g0$count$0;
+            out$maj_d = g0$ed16$0[(32'h0)+:(21)];
+            out$short0_j = g0$cy$1[(frac)+:(13)];
+            out$short0_count = g0$count$1;
+            out$short0_d = g0$ed16$1[(32'h0)+:(21)];
+            out$short1_j = g0$cy$2[(frac)+:(13)];
+            out$short1_count = g0$count$2;
+            out$short1_d = g0$ed16$2[(32'h0)+:(21)];
+        end
+        if (last_copy == 32'h1) begin
+            out$walk = g1$up;
+            out$maj_left = maj_left$1;
+            out$maj_j = g1$cy$0[(frac)+:(13)];
+            out$maj_count = g1$count$0;
+            out$maj_d = g1$ed16$0[(32'h0)+:(21)];
+            out$short0_j = g1$cy$1[(frac)+:(13)];
+            out$short0_count = g1$count$1;
+            out$short0_d = g1$ed16$1[(32'h0)+:(21)];
+            out$short1_j = g1$cy$2[(frac)+:(13)];
+            out$short1_count = g1$count$2;
+            out$short1_d = g1$ed16$2[(32'h0)+:(21)];
+        end
+        if (last_copy == 32'h2) begin
+            out$walk = g2$up;
+            out$maj_left = maj_left$2;
+            out$maj_j = g2$cy$0[(frac)+:(13)];
+            out$maj_count = g2$count$0;
+            out$maj_d = g2$ed16$0[(32'h0)+:(21)];
+            out$short0_j = g2$cy$1[(frac)+:(13)];
+            out$short0_count = g2$count$1;
+            out$short0_d = g2$ed16$1[(32'h0)+:(21)];
+            out$short1_j = g2$cy$2[(frac)+:(13)];
+            out$short1_count = g2$count$2;
+            out$short1_d = g2$ed16$2[(32'h0)+:(21)];
+        end
+        if (last_copy == 32'h3) begin
+            out$walk = g3$up;
+            out$maj_left = maj_left$3;
+            out$maj_j = g3$cy$0[(frac)+:(13)];
+            out$maj_count = g3$count$0;
+            out$maj_d = g3$ed16$0[(32'h0)+:(21)];
+            out$short0_j = g3$cy$1[(frac)+:(13)];
+            out$short0_count = g3$count$1;
+            out$short0_d = g3$ed16$1[(32'h0)+:(21)];
+            out$short1_j = g3$cy$2[(frac)+:(13)];
+            out$short1_count = g3$count$2;
+            out$short1_d = g3$ed16$2[(32'h0)+:(21)];
+        end
         out$maj_x = x$0$q[(32'h0)+:(13)];
         out$maj_r = r$0$q;
         out$maj_q = q$0$q[(32'h0)+:(17)];
         out$maj_rho = rho$0$q;
-        out$maj_d = gb$ed16$0[(32'h0)+:(21)];
         out$maj_at_z = plane$0$q[(32'h0)+:(36)];
         out$maj_at_c0 = plane$1$q[(32'h0)+:(32)];
         out$maj_at_c1 = plane$2$q[(32'h0)+:(32)];
@@ -13225,13 +14947,10 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         out$maj_inc1_c0 = inc1$1$q[(32'h0)+:(36)];
         out$maj_inc1_c1 = inc1$2$q[(32'h0)+:(36)];
         out$maj_inc1_c2 = inc1$3$q[(32'h0)+:(36)];
-        out$short0_j = gb$cy$1[(frac)+:(13)];
-        out$short0_count = gb$count$1;
         out$short0_x = x$1$q[(32'h0)+:(13)];
         out$short0_r = r$1$q;
         out$short0_q = q$1$q[(32'h0)+:(17)];
         out$short0_rho = rho$1$q;
-        out$short0_d = gb$ed16$1[(32'h0)+:(21)];
         out$short0_at_z = plane$4$q[(32'h0)+:(36)];
         out$short0_at_c0 = plane$5$q[(32'h0)+:(32)];
         out$short0_at_c1 = plane$6$q[(32'h0)+:(32)];
@@ -13244,13 +14963,10 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         out$short0_inc1_c0 = inc1$5$q[(32'h0)+:(36)];
         out$short0_inc1_c1 = inc1$6$q[(32'h0)+:(36)];
         out$short0_inc1_c2 = inc1$7$q[(32'h0)+:(36)];
-        out$short1_j = gb$cy$2[(frac)+:(13)];
-        out$short1_count = gb$count$2;
         out$short1_x = x$2$q[(32'h0)+:(13)];
         out$short1_r = r$2$q;
         out$short1_q = q$2$q[(32'h0)+:(17)];
         out$short1_rho = rho$2$q;
-        out$short1_d = gb$ed16$2[(32'h0)+:(21)];
         out$short1_at_z = plane$8$q[(32'h0)+:(36)];
         out$short1_at_c0 = plane$9$q[(32'h0)+:(32)];
         out$short1_at_c1 = plane$10$q[(32'h0)+:(32)];
@@ -13291,7 +15007,7 @@ module raster_top$core$triangle_setup$area(d,q,clock);
 endmodule // raster_top$core$triangle_setup$area
 
 
-module raster_top$core$triangle_setup$crosses(d,q,clock);
+module raster_top$core$triangle_setup$crosses$0(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -13307,10 +15023,10 @@ module raster_top$core$triangle_setup$crosses(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$crosses
+endmodule // raster_top$core$triangle_setup$crosses$0
 
 
-module raster_top$core$triangle_setup$crosses_b(d,q,clock);
+module raster_top$core$triangle_setup$crosses$1(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -13326,7 +15042,45 @@ module raster_top$core$triangle_setup$crosses_b(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$crosses_b
+endmodule // raster_top$core$triangle_setup$crosses$1
+
+
+module raster_top$core$triangle_setup$crosses$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$crosses$2
+
+
+module raster_top$core$triangle_setup$crosses$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$crosses$3
 
 
 module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
@@ -14949,7 +16703,7 @@ module raster_top$core$triangle_setup$div$stages$4$x_r(d,q,clock);
 endmodule // raster_top$core$triangle_setup$div$stages$4$x_r
 
 
-module raster_top$core$triangle_setup$exp(d,q,clock);
+module raster_top$core$triangle_setup$exp$0(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -14965,10 +16719,86 @@ module raster_top$core$triangle_setup$exp(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$exp
+endmodule // raster_top$core$triangle_setup$exp$0
 
 
-module raster_top$core$triangle_setup$ga(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$core$triangle_setup$exp$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$exp$1
+
+
+module raster_top$core$triangle_setup$exp$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$exp$2
+
+
+module raster_top$core$triangle_setup$exp$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$exp$3
+
+
+module raster_top$core$triangle_setup$exp_e(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$exp_e
+
+
+module raster_top$core$triangle_setup$g0(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
     input wire  [15:0] vx$0;
@@ -15280,10 +17110,10 @@ module raster_top$core$triangle_setup$ga(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1
         dbot$3 = cn$5 - cn$2;
     end
     
-endmodule // raster_top$core$triangle_setup$ga
+endmodule // raster_top$core$triangle_setup$g0
 
 
-module raster_top$core$triangle_setup$gb(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$core$triangle_setup$g1(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
     input wire  [15:0] vx$0;
@@ -15595,7 +17425,637 @@ module raster_top$core$triangle_setup$gb(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1
         dbot$3 = cn$5 - cn$2;
     end
     
-endmodule // raster_top$core$triangle_setup$gb
+endmodule // raster_top$core$triangle_setup$g1
+
+
+module raster_top$core$triangle_setup$g2(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+    
+    // Module arguments
+    input wire  [15:0] vx$0;
+    input wire  [15:0] vx$1;
+    input wire  [15:0] vx$2;
+    input wire  [15:0] vy$0;
+    input wire  [15:0] vy$1;
+    input wire  [15:0] vy$2;
+    input wire  [17:0] vz$0;
+    input wire  [17:0] vz$1;
+    input wire  [17:0] vz$2;
+    input wire  [7:0] vc$0;
+    input wire  [7:0] vc$1;
+    input wire  [7:0] vc$2;
+    input wire  [7:0] vc$3;
+    input wire  [7:0] vc$4;
+    input wire  [7:0] vc$5;
+    input wire  [7:0] vc$6;
+    input wire  [7:0] vc$7;
+    input wire  [7:0] vc$8;
+    input wire  [5:0] crosses;
+    input wire  maj_left;
+    input wire  [18:0] start_x$0;
+    input wire  [18:0] start_x$1;
+    input wire  [18:0] start_x$2;
+    output reg  [57:0] kdx$0;
+    output reg  [57:0] kdx$1;
+    output reg  [57:0] kdx$2;
+    output reg  [56:0] kdy$0;
+    output reg  [56:0] kdy$1;
+    output reg  [56:0] kdy$2;
+    output reg  up;
+    output reg  [57:0] edx$0;
+    output reg  [57:0] edx$1;
+    output reg  [57:0] edx$2;
+    output reg  [56:0] edy$0;
+    output reg  [56:0] edy$1;
+    output reg  [56:0] edy$2;
+    output reg  [33:0] edy_d$0;
+    output reg  [33:0] edy_d$1;
+    output reg  [33:0] edy_d$2;
+    output reg  [33:0] ed16$0;
+    output reg  [33:0] ed16$1;
+    output reg  [33:0] ed16$2;
+    output reg  [18:0] cy$0;
+    output reg  [18:0] cy$1;
+    output reg  [18:0] cy$2;
+    output reg  [12:0] count$0;
+    output reg  [12:0] count$1;
+    output reg  [12:0] count$2;
+    output reg  [18:0] toff$0;
+    output reg  [18:0] toff$1;
+    output reg  [18:0] toff$2;
+    output reg  [18:0] xf$0;
+    output reg  [18:0] xf$1;
+    output reg  [18:0] xf$2;
+    output reg  [18:0] xi$0;
+    output reg  [18:0] xi$1;
+    output reg  [18:0] xi$2;
+    output reg  [18:0] off_x$0;
+    output reg  [18:0] off_x$1;
+    output reg  [18:0] off_x$2;
+    output reg  [18:0] off_y$0;
+    output reg  [18:0] off_y$1;
+    output reg  [18:0] off_y$2;
+    output reg  [18:0] dmaj$0;
+    output reg  [18:0] dmaj$1;
+    output reg  [18:0] dmaj$2;
+    output reg  [18:0] dmaj$3;
+    output reg  [18:0] dbot$0;
+    output reg  [18:0] dbot$1;
+    output reg  [18:0] dbot$2;
+    output reg  [18:0] dbot$3;
+    output reg  [39:0] attr0$0;
+    output reg  [39:0] attr0$1;
+    output reg  [39:0] attr0$2;
+    output reg  [39:0] attr0$3;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    localparam  half_m1 = 19'b111;
+    localparam  half = 19'b1000;
+    localparam  int_mask = 19'b1111111111111110000;
+    localparam  frac_mask = 19'b1111;
+    localparam  xy_msb = 8'hf;
+    localparam  z_msb = 8'h11;
+    localparam  nb_msb = 8'h12;
+    localparam  xy_ext = 58'h3ffffffffff0000;
+    localparam  y_ext = 57'h1ffffffffff0000;
+    localparam  z_ext = 19'b1000000000000000000;
+    localparam  shr_ext = 19'b1111000000000000000;
+    localparam  top_bit = 8'h2;
+    localparam  bottom_bit = 8'h3;
+    
+    // Local signals
+    reg  [57:0] xw$0;
+    reg  [57:0] xw$1;
+    reg  [57:0] xw$2;
+    reg  [56:0] yw$0;
+    reg  [56:0] yw$1;
+    reg  [56:0] yw$2;
+    reg  [18:0] zn$0;
+    reg  [18:0] zn$1;
+    reg  [18:0] zn$2;
+    reg  [18:0] cn$0;
+    reg  [18:0] cn$1;
+    reg  [18:0] cn$2;
+    reg  [18:0] cn$3;
+    reg  [18:0] cn$4;
+    reg  [18:0] cn$5;
+    reg  [18:0] cn$6;
+    reg  [18:0] cn$7;
+    reg  [18:0] cn$8;
+    reg  [18:0] xn$0;
+    reg  [18:0] xn$1;
+    reg  [18:0] xn$2;
+    reg  [18:0] yn$0;
+    reg  [18:0] yn$1;
+    reg  [18:0] yn$2;
+    reg  [18:0] cv$0;
+    reg  [18:0] cv$1;
+    reg  [18:0] cv$2;
+    reg  [12:0] span$0;
+    reg  [12:0] span$1;
+    reg  [12:0] span$2;
+    reg  [18:0] diff$0;
+    reg  [18:0] diff$1;
+    reg  [18:0] diff$2;
+    reg  [18:0] bx$0;
+    reg  [18:0] bx$1;
+    reg  [18:0] bx$2;
+    reg  [18:0] by$0;
+    reg  [18:0] by$1;
+    reg  [18:0] by$2;
+    reg  [18:0] xb$0;
+    reg  [18:0] xb$1;
+    reg  [18:0] xb$2;
+    reg  [18:0] tracked$0;
+    reg  [18:0] tracked$1;
+    reg  [18:0] tracked$2;
+    
+    // Update code
+    always @(*) begin
+        xw$0 = ((vx$0) & 58'h3ffffffffffffff);
+        if (vx$0[xy_msb]) begin
+            xw$0 = ((vx$0) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$1 = ((vx$1) & 58'h3ffffffffffffff);
+        if (vx$1[xy_msb]) begin
+            xw$1 = ((vx$1) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$2 = ((vx$2) & 58'h3ffffffffffffff);
+        if (vx$2[xy_msb]) begin
+            xw$2 = ((vx$2) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        yw$0 = ((vy$0) & 57'h1ffffffffffffff);
+        if (vy$0[xy_msb]) begin
+            yw$0 = ((vy$0) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$1 = ((vy$1) & 57'h1ffffffffffffff);
+        if (vy$1[xy_msb]) begin
+            yw$1 = ((vy$1) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$2 = ((vy$2) & 57'h1ffffffffffffff);
+        if (vy$2[xy_msb]) begin
+            yw$2 = ((vy$2) & 57'h1ffffffffffffff) | y_ext;
+        end
+        zn$0 = ((vz$0) & 19'h7ffff);
+        if (vz$0[z_msb]) begin
+            zn$0 = ((vz$0) & 19'h7ffff) | z_ext;
+        end
+        zn$1 = ((vz$1) & 19'h7ffff);
+        if (vz$1[z_msb]) begin
+            zn$1 = ((vz$1) & 19'h7ffff) | z_ext;
+        end
+        zn$2 = ((vz$2) & 19'h7ffff);
+        if (vz$2[z_msb]) begin
+            zn$2 = ((vz$2) & 19'h7ffff) | z_ext;
+        end
+        cn$0 = ((vc$0) & 19'h7ffff);
+        cn$1 = ((vc$1) & 19'h7ffff);
+        cn$2 = ((vc$2) & 19'h7ffff);
+        cn$3 = ((vc$3) & 19'h7ffff);
+        cn$4 = ((vc$4) & 19'h7ffff);
+        cn$5 = ((vc$5) & 19'h7ffff);
+        cn$6 = ((vc$6) & 19'h7ffff);
+        cn$7 = ((vc$7) & 19'h7ffff);
+        cn$8 = ((vc$8) & 19'h7ffff);
+        xn$0 = xw$0[(32'h0)+:(19)];
+        yn$0 = yw$0[(32'h0)+:(19)];
+        cv$0 = ((yn$0 + half_m1) & int_mask) | half;
+        xn$1 = xw$1[(32'h0)+:(19)];
+        yn$1 = yw$1[(32'h0)+:(19)];
+        cv$1 = ((yn$1 + half_m1) & int_mask) | half;
+        xn$2 = xw$2[(32'h0)+:(19)];
+        yn$2 = yw$2[(32'h0)+:(19)];
+        cv$2 = ((yn$2 + half_m1) & int_mask) | half;
+        kdx$0 = xw$2 - xw$0;
+        kdy$0 = yw$2 - yw$0;
+        diff$0 = cv$2 - cv$0;
+        kdx$1 = xw$1 - xw$0;
+        kdy$1 = yw$1 - yw$0;
+        diff$1 = cv$1 - cv$0;
+        kdx$2 = xw$2 - xw$1;
+        kdy$2 = yw$2 - yw$1;
+        diff$2 = cv$2 - cv$1;
+        span$0 = diff$0[(frac)+:(13)];
+        if (diff$0[nb_msb]) begin
+            span$0 = 32'h0;
+        end
+        span$1 = diff$1[(frac)+:(13)];
+        if (diff$1[nb_msb]) begin
+            span$1 = 32'h0;
+        end
+        span$2 = diff$2[(frac)+:(13)];
+        if (diff$2[nb_msb]) begin
+            span$2 = 32'h0;
+        end
+        up = crosses[top_bit] & ~crosses[bottom_bit];
+        edx$0 = kdx$0;
+        edy$0 = kdy$0;
+        count$0 = span$0;
+        edx$1 = kdx$1;
+        edy$1 = kdy$1;
+        count$1 = span$1;
+        edx$2 = kdx$2;
+        edy$2 = kdy$2;
+        count$2 = span$2;
+        bx$0 = xn$0;
+        by$0 = yn$0;
+        cy$0 = cv$0;
+        bx$1 = xn$0;
+        by$1 = yn$0;
+        cy$1 = cv$0;
+        bx$2 = xn$1;
+        by$2 = yn$1;
+        cy$2 = cv$1;
+        if (up) begin
+            edx$1 = kdx$2;
+            edy$1 = kdy$2;
+            count$1 = span$2;
+            edx$2 = kdx$1;
+            edy$2 = kdy$1;
+            count$2 = span$1;
+            bx$0 = xn$2;
+            by$0 = yn$2;
+            cy$0 = cv$2 - (frac_mask + 32'h1);
+            bx$1 = xn$2;
+            by$1 = yn$2;
+            cy$1 = cv$2 - (frac_mask + 32'h1);
+            cy$2 = cv$1 - (frac_mask + 32'h1);
+        end
+        edy_d$0 = ((edy$0) & 34'h3ffffffff);
+        edy_d$1 = ((edy$1) & 34'h3ffffffff);
+        edy_d$2 = ((edy$2) & 34'h3ffffffff);
+        tracked$0 = start_x$0 - 32'h1;
+        if (maj_left) begin
+            tracked$0 = start_x$0;
+        end
+        tracked$1 = start_x$1;
+        if (maj_left) begin
+            tracked$1 = start_x$1 - 32'h1;
+        end
+        tracked$2 = start_x$2;
+        if (maj_left) begin
+            tracked$2 = start_x$2 - 32'h1;
+        end
+        ed16$0 = edy_d$0 << frac;
+        toff$0 = cy$0 - by$0;
+        xb$0 = bx$0 - half;
+        xf$0 = xb$0 & frac_mask;
+        xi$0 = xb$0 >> frac;
+        if (xb$0[nb_msb]) begin
+            xi$0 = (xb$0 >> frac) | shr_ext;
+        end
+        off_y$0 = cy$0 - yn$0;
+        off_x$0 = (tracked$0 << frac) + half - xn$0;
+        ed16$1 = edy_d$1 << frac;
+        toff$1 = cy$1 - by$1;
+        xb$1 = bx$1 - half;
+        xf$1 = xb$1 & frac_mask;
+        xi$1 = xb$1 >> frac;
+        if (xb$1[nb_msb]) begin
+            xi$1 = (xb$1 >> frac) | shr_ext;
+        end
+        off_y$1 = cy$1 - yn$0;
+        off_x$1 = (tracked$1 << frac) + half - xn$0;
+        ed16$2 = edy_d$2 << frac;
+        toff$2 = cy$2 - by$2;
+        xb$2 = bx$2 - half;
+        xf$2 = xb$2 & frac_mask;
+        xi$2 = xb$2 >> frac;
+        if (xb$2[nb_msb]) begin
+            xi$2 = (xb$2 >> frac) | shr_ext;
+        end
+        off_y$2 = cy$2 - yn$0;
+        off_x$2 = (tracked$2 << frac) + half - xn$0;
+        dmaj$0 = zn$2 - zn$0;
+        dbot$0 = zn$1 - zn$0;
+        attr0$0 = ((zn$0) & 40'hffffffffff);
+        attr0$1 = ((vc$0) & 40'hffffffffff);
+        attr0$2 = ((vc$1) & 40'hffffffffff);
+        attr0$3 = ((vc$2) & 40'hffffffffff);
+        dmaj$1 = cn$6 - cn$0;
+        dbot$1 = cn$3 - cn$0;
+        dmaj$2 = cn$7 - cn$1;
+        dbot$2 = cn$4 - cn$1;
+        dmaj$3 = cn$8 - cn$2;
+        dbot$3 = cn$5 - cn$2;
+    end
+    
+endmodule // raster_top$core$triangle_setup$g2
+
+
+module raster_top$core$triangle_setup$g3(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+    
+    // Module arguments
+    input wire  [15:0] vx$0;
+    input wire  [15:0] vx$1;
+    input wire  [15:0] vx$2;
+    input wire  [15:0] vy$0;
+    input wire  [15:0] vy$1;
+    input wire  [15:0] vy$2;
+    input wire  [17:0] vz$0;
+    input wire  [17:0] vz$1;
+    input wire  [17:0] vz$2;
+    input wire  [7:0] vc$0;
+    input wire  [7:0] vc$1;
+    input wire  [7:0] vc$2;
+    input wire  [7:0] vc$3;
+    input wire  [7:0] vc$4;
+    input wire  [7:0] vc$5;
+    input wire  [7:0] vc$6;
+    input wire  [7:0] vc$7;
+    input wire  [7:0] vc$8;
+    input wire  [5:0] crosses;
+    input wire  maj_left;
+    input wire  [18:0] start_x$0;
+    input wire  [18:0] start_x$1;
+    input wire  [18:0] start_x$2;
+    output reg  [57:0] kdx$0;
+    output reg  [57:0] kdx$1;
+    output reg  [57:0] kdx$2;
+    output reg  [56:0] kdy$0;
+    output reg  [56:0] kdy$1;
+    output reg  [56:0] kdy$2;
+    output reg  up;
+    output reg  [57:0] edx$0;
+    output reg  [57:0] edx$1;
+    output reg  [57:0] edx$2;
+    output reg  [56:0] edy$0;
+    output reg  [56:0] edy$1;
+    output reg  [56:0] edy$2;
+    output reg  [33:0] edy_d$0;
+    output reg  [33:0] edy_d$1;
+    output reg  [33:0] edy_d$2;
+    output reg  [33:0] ed16$0;
+    output reg  [33:0] ed16$1;
+    output reg  [33:0] ed16$2;
+    output reg  [18:0] cy$0;
+    output reg  [18:0] cy$1;
+    output reg  [18:0] cy$2;
+    output reg  [12:0] count$0;
+    output reg  [12:0] count$1;
+    output reg  [12:0] count$2;
+    output reg  [18:0] toff$0;
+    output reg  [18:0] toff$1;
+    output reg  [18:0] toff$2;
+    output reg  [18:0] xf$0;
+    output reg  [18:0] xf$1;
+    output reg  [18:0] xf$2;
+    output reg  [18:0] xi$0;
+    output reg  [18:0] xi$1;
+    output reg  [18:0] xi$2;
+    output reg  [18:0] off_x$0;
+    output reg  [18:0] off_x$1;
+    output reg  [18:0] off_x$2;
+    output reg  [18:0] off_y$0;
+    output reg  [18:0] off_y$1;
+    output reg  [18:0] off_y$2;
+    output reg  [18:0] dmaj$0;
+    output reg  [18:0] dmaj$1;
+    output reg  [18:0] dmaj$2;
+    output reg  [18:0] dmaj$3;
+    output reg  [18:0] dbot$0;
+    output reg  [18:0] dbot$1;
+    output reg  [18:0] dbot$2;
+    output reg  [18:0] dbot$3;
+    output reg  [39:0] attr0$0;
+    output reg  [39:0] attr0$1;
+    output reg  [39:0] attr0$2;
+    output reg  [39:0] attr0$3;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    localparam  half_m1 = 19'b111;
+    localparam  half = 19'b1000;
+    localparam  int_mask = 19'b1111111111111110000;
+    localparam  frac_mask = 19'b1111;
+    localparam  xy_msb = 8'hf;
+    localparam  z_msb = 8'h11;
+    localparam  nb_msb = 8'h12;
+    localparam  xy_ext = 58'h3ffffffffff0000;
+    localparam  y_ext = 57'h1ffffffffff0000;
+    localparam  z_ext = 19'b1000000000000000000;
+    localparam  shr_ext = 19'b1111000000000000000;
+    localparam  top_bit = 8'h2;
+    localparam  bottom_bit = 8'h3;
+    
+    // Local signals
+    reg  [57:0] xw$0;
+    reg  [57:0] xw$1;
+    reg  [57:0] xw$2;
+    reg  [56:0] yw$0;
+    reg  [56:0] yw$1;
+    reg  [56:0] yw$2;
+    reg  [18:0] zn$0;
+    reg  [18:0] zn$1;
+    reg  [18:0] zn$2;
+    reg  [18:0] cn$0;
+    reg  [18:0] cn$1;
+    reg  [18:0] cn$2;
+    reg  [18:0] cn$3;
+    reg  [18:0] cn$4;
+    reg  [18:0] cn$5;
+    reg  [18:0] cn$6;
+    reg  [18:0] cn$7;
+    reg  [18:0] cn$8;
+    reg  [18:0] xn$0;
+    reg  [18:0] xn$1;
+    reg  [18:0] xn$2;
+    reg  [18:0] yn$0;
+    reg  [18:0] yn$1;
+    reg  [18:0] yn$2;
+    reg  [18:0] cv$0;
+    reg  [18:0] cv$1;
+    reg  [18:0] cv$2;
+    reg  [12:0] span$0;
+    reg  [12:0] span$1;
+    reg  [12:0] span$2;
+    reg  [18:0] diff$0;
+    reg  [18:0] diff$1;
+    reg  [18:0] diff$2;
+    reg  [18:0] bx$0;
+    reg  [18:0] bx$1;
+    reg  [18:0] bx$2;
+    reg  [18:0] by$0;
+    reg  [18:0] by$1;
+    reg  [18:0] by$2;
+    reg  [18:0] xb$0;
+    reg  [18:0] xb$1;
+    reg  [18:0] xb$2;
+    reg  [18:0] tracked$0;
+    reg  [18:0] tracked$1;
+    reg  [18:0] tracked$2;
+    
+    // Update code
+    always @(*) begin
+        xw$0 = ((vx$0) & 58'h3ffffffffffffff);
+        if (vx$0[xy_msb]) begin
+            xw$0 = ((vx$0) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$1 = ((vx$1) & 58'h3ffffffffffffff);
+        if (vx$1[xy_msb]) begin
+            xw$1 = ((vx$1) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$2 = ((vx$2) & 58'h3ffffffffffffff);
+        if (vx$2[xy_msb]) begin
+            xw$2 = ((vx$2) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        yw$0 = ((vy$0) & 57'h1ffffffffffffff);
+        if (vy$0[xy_msb]) begin
+            yw$0 = ((vy$0) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$1 = ((vy$1) & 57'h1ffffffffffffff);
+        if (vy$1[xy_msb]) begin
+            yw$1 = ((vy$1) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$2 = ((vy$2) & 57'h1ffffffffffffff);
+        if (vy$2[xy_msb]) begin
+            yw$2 = ((vy$2) & 57'h1ffffffffffffff) | y_ext;
+        end
+        zn$0 = ((vz$0) & 19'h7ffff);
+        if (vz$0[z_msb]) begin
+            zn$0 = ((vz$0) & 19'h7ffff) | z_ext;
+        end
+        zn$1 = ((vz$1) & 19'h7ffff);
+        if (vz$1[z_msb]) begin
+            zn$1 = ((vz$1) & 19'h7ffff) | z_ext;
+        end
+        zn$2 = ((vz$2) & 19'h7ffff);
+        if (vz$2[z_msb]) begin
+            zn$2 = ((vz$2) & 19'h7ffff) | z_ext;
+        end
+        cn$0 = ((vc$0) & 19'h7ffff);
+        cn$1 = ((vc$1) & 19'h7ffff);
+        cn$2 = ((vc$2) & 19'h7ffff);
+        cn$3 = ((vc$3) & 19'h7ffff);
+        cn$4 = ((vc$4) & 19'h7ffff);
+        cn$5 = ((vc$5) & 19'h7ffff);
+        cn$6 = ((vc$6) & 19'h7ffff);
+        cn$7 = ((vc$7) & 19'h7ffff);
+        cn$8 = ((vc$8) & 19'h7ffff);
+        xn$0 = xw$0[(32'h0)+:(19)];
+        yn$0 = yw$0[(32'h0)+:(19)];
+        cv$0 = ((yn$0 + half_m1) & int_mask) | half;
+        xn$1 = xw$1[(32'h0)+:(19)];
+        yn$1 = yw$1[(32'h0)+:(19)];
+        cv$1 = ((yn$1 + half_m1) & int_mask) | half;
+        xn$2 = xw$2[(32'h0)+:(19)];
+        yn$2 = yw$2[(32'h0)+:(19)];
+        cv$2 = ((yn$2 + half_m1) & int_mask) | half;
+        kdx$0 = xw$2 - xw$0;
+        kdy$0 = yw$2 - yw$0;
+        diff$0 = cv$2 - cv$0;
+        kdx$1 = xw$1 - xw$0;
+        kdy$1 = yw$1 - yw$0;
+        diff$1 = cv$1 - cv$0;
+        kdx$2 = xw$2 - xw$1;
+        kdy$2 = yw$2 - yw$1;
+        diff$2 = cv$2 - cv$1;
+        span$0 = diff$0[(frac)+:(13)];
+        if (diff$0[nb_msb]) begin
+            span$0 = 32'h0;
+        end
+        span$1 = diff$1[(frac)+:(13)];
+        if (diff$1[nb_msb]) begin
+            span$1 = 32'h0;
+        end
+        span$2 = diff$2[(frac)+:(13)];
+        if (diff$2[nb_msb]) begin
+            span$2 = 32'h0;
+        end
+        up = crosses[top_bit] & ~crosses[bottom_bit];
+        edx$0 = kdx$0;
+        edy$0 = kdy$0;
+        count$0 = span$0;
+        edx$1 = kdx$1;
+        edy$1 = kdy$1;
+        count$1 = span$1;
+        edx$2 = kdx$2;
+        edy$2 = kdy$2;
+        count$2 = span$2;
+        bx$0 = xn$0;
+        by$0 = yn$0;
+        cy$0 = cv$0;
+        bx$1 = xn$0;
+        by$1 = yn$0;
+        cy$1 = cv$0;
+        bx$2 = xn$1;
+        by$2 = yn$1;
+        cy$2 = cv$1;
+        if (up) begin
+            edx$1 = kdx$2;
+            edy$1 = kdy$2;
+            count$1 = span$2;
+            edx$2 = kdx$1;
+            edy$2 = kdy$1;
+            count$2 = span$1;
+            bx$0 = xn$2;
+            by$0 = yn$2;
+            cy$0 = cv$2 - (frac_mask + 32'h1);
+            bx$1 = xn$2;
+            by$1 = yn$2;
+            cy$1 = cv$2 - (frac_mask + 32'h1);
+            cy$2 = cv$1 - (frac_mask + 32'h1);
+        end
+        edy_d$0 = ((edy$0) & 34'h3ffffffff);
+        edy_d$1 = ((edy$1) & 34'h3ffffffff);
+        edy_d$2 = ((edy$2) & 34'h3ffffffff);
+        tracked$0 = start_x$0 - 32'h1;
+        if (maj_left) begin
+            tracked$0 = start_x$0;
+        end
+        tracked$1 = start_x$1;
+        if (maj_left) begin
+            tracked$1 = start_x$1 - 32'h1;
+        end
+        tracked$2 = start_x$2;
+        if (maj_left) begin
+            tracked$2 = start_x$2 - 32'h1;
+        end
+        ed16$0 = edy_d$0 << frac;
+        toff$0 = cy$0 - by$0;
+        xb$0 = bx$0 - half;
+        xf$0 = xb$0 & frac_mask;
+        xi$0 = xb$0 >> frac;
+        if (xb$0[nb_msb]) begin
+            xi$0 = (xb$0 >> frac) | shr_ext;
+        end
+        off_y$0 = cy$0 - yn$0;
+        off_x$0 = (tracked$0 << frac) + half - xn$0;
+        ed16$1 = edy_d$1 << frac;
+        toff$1 = cy$1 - by$1;
+        xb$1 = bx$1 - half;
+        xf$1 = xb$1 & frac_mask;
+        xi$1 = xb$1 >> frac;
+        if (xb$1[nb_msb]) begin
+            xi$1 = (xb$1 >> frac) | shr_ext;
+        end
+        off_y$1 = cy$1 - yn$0;
+        off_x$1 = (tracked$1 << frac) + half - xn$0;
+        ed16$2 = edy_d$2 << frac;
+        toff$2 = cy$2 - by$2;
+        xb$2 = bx$2 - half;
+        xf$2 = xb$2 & frac_mask;
+        xi$2 = xb$2 >> frac;
+        if (xb$2[nb_msb]) begin
+            xi$2 = (xb$2 >> frac) | shr_ext;
+        end
+        off_y$2 = cy$2 - yn$0;
+        off_x$2 = (tracked$2 << frac) + half - xn$0;
+        dmaj$0 = zn$2 - zn$0;
+        dbot$0 = zn$1 - zn$0;
+        attr0$0 = ((zn$0) & 40'hffffffffff);
+        attr0$1 = ((vc$0) & 40'hffffffffff);
+        attr0$2 = ((vc$1) & 40'hffffffffff);
+        attr0$3 = ((vc$2) & 40'hffffffffff);
+        dmaj$1 = cn$6 - cn$0;
+        dbot$1 = cn$3 - cn$0;
+        dmaj$2 = cn$7 - cn$1;
+        dbot$2 = cn$4 - cn$1;
+        dmaj$3 = cn$8 - cn$2;
+        dbot$3 = cn$5 - cn$2;
+    end
+    
+endmodule // raster_top$core$triangle_setup$g3
 
 
 module raster_top$core$triangle_setup$gx$0(d,q,clock);
@@ -16206,25 +18666,6 @@ module raster_top$core$triangle_setup$inc1$9(d,q,clock);
 endmodule // raster_top$core$triangle_setup$inc1$9
 
 
-module raster_top$core$triangle_setup$maj_left_b(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$core$triangle_setup$maj_left_b
-
-
 module raster_top$core$triangle_setup$mant(d,q,clock);
     
     // Module arguments
@@ -16340,6 +18781,25 @@ module raster_top$core$triangle_setup$mul$6(a,b,p);
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
 endmodule // raster_top$core$triangle_setup$mul$6
+
+
+module raster_top$core$triangle_setup$norm(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$norm
 
 
 module raster_top$core$triangle_setup$num$0(d,q,clock);
@@ -16874,7 +19334,83 @@ module raster_top$core$triangle_setup$rho$2(d,q,clock);
 endmodule // raster_top$core$triangle_setup$rho$2
 
 
-module raster_top$core$triangle_setup$ta(d,q,clock);
+module raster_top$core$triangle_setup$sign$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$sign$0
+
+
+module raster_top$core$triangle_setup$sign$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$sign$1
+
+
+module raster_top$core$triangle_setup$sign$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$sign$2
+
+
+module raster_top$core$triangle_setup$sign$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$sign$3
+
+
+module raster_top$core$triangle_setup$t$0(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16890,10 +19426,10 @@ module raster_top$core$triangle_setup$ta(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$ta
+endmodule // raster_top$core$triangle_setup$t$0
 
 
-module raster_top$core$triangle_setup$tb(d,q,clock);
+module raster_top$core$triangle_setup$t$1(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16909,7 +19445,45 @@ module raster_top$core$triangle_setup$tb(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$tb
+endmodule // raster_top$core$triangle_setup$t$1
+
+
+module raster_top$core$triangle_setup$t$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$t$2
+
+
+module raster_top$core$triangle_setup$t$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$t$3
 
 
 module raster_top$core$triangle_setup$vc$0(d,q,clock);
@@ -16950,6 +19524,196 @@ module raster_top$core$triangle_setup$vc$1(d,q,clock);
 endmodule // raster_top$core$triangle_setup$vc$1
 
 
+module raster_top$core$triangle_setup$vc$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$10
+
+
+module raster_top$core$triangle_setup$vc$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$11
+
+
+module raster_top$core$triangle_setup$vc$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$12
+
+
+module raster_top$core$triangle_setup$vc$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$13
+
+
+module raster_top$core$triangle_setup$vc$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$14
+
+
+module raster_top$core$triangle_setup$vc$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$15
+
+
+module raster_top$core$triangle_setup$vc$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$16
+
+
+module raster_top$core$triangle_setup$vc$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$17
+
+
+module raster_top$core$triangle_setup$vc$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$18
+
+
+module raster_top$core$triangle_setup$vc$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$19
+
+
 module raster_top$core$triangle_setup$vc$2(d,q,clock);
     
     // Module arguments
@@ -16969,6 +19733,196 @@ module raster_top$core$triangle_setup$vc$2(d,q,clock);
 endmodule // raster_top$core$triangle_setup$vc$2
 
 
+module raster_top$core$triangle_setup$vc$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$20
+
+
+module raster_top$core$triangle_setup$vc$21(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$21
+
+
+module raster_top$core$triangle_setup$vc$22(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$22
+
+
+module raster_top$core$triangle_setup$vc$23(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$23
+
+
+module raster_top$core$triangle_setup$vc$24(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$24
+
+
+module raster_top$core$triangle_setup$vc$25(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$25
+
+
+module raster_top$core$triangle_setup$vc$26(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$26
+
+
+module raster_top$core$triangle_setup$vc$27(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$27
+
+
+module raster_top$core$triangle_setup$vc$28(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$28
+
+
+module raster_top$core$triangle_setup$vc$29(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$29
+
+
 module raster_top$core$triangle_setup$vc$3(d,q,clock);
     
     // Module arguments
@@ -16986,6 +19940,120 @@ module raster_top$core$triangle_setup$vc$3(d,q,clock);
     end
           
 endmodule // raster_top$core$triangle_setup$vc$3
+
+
+module raster_top$core$triangle_setup$vc$30(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$30
+
+
+module raster_top$core$triangle_setup$vc$31(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$31
+
+
+module raster_top$core$triangle_setup$vc$32(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$32
+
+
+module raster_top$core$triangle_setup$vc$33(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$33
+
+
+module raster_top$core$triangle_setup$vc$34(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$34
+
+
+module raster_top$core$triangle_setup$vc$35(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$35
 
 
 module raster_top$core$triangle_setup$vc$4(d,q,clock);
@@ -17083,7 +20151,7 @@ module raster_top$core$triangle_setup$vc$8(d,q,clock);
 endmodule // raster_top$core$triangle_setup$vc$8
 
 
-module raster_top$core$triangle_setup$vc_b$0(d,q,clock);
+module raster_top$core$triangle_setup$vc$9(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -17099,159 +20167,7 @@ module raster_top$core$triangle_setup$vc_b$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc_b$0
-
-
-module raster_top$core$triangle_setup$vc_b$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$core$triangle_setup$vc_b$1
-
-
-module raster_top$core$triangle_setup$vc_b$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$core$triangle_setup$vc_b$2
-
-
-module raster_top$core$triangle_setup$vc_b$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$core$triangle_setup$vc_b$3
-
-
-module raster_top$core$triangle_setup$vc_b$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$core$triangle_setup$vc_b$4
-
-
-module raster_top$core$triangle_setup$vc_b$5(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$core$triangle_setup$vc_b$5
-
-
-module raster_top$core$triangle_setup$vc_b$6(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$core$triangle_setup$vc_b$6
-
-
-module raster_top$core$triangle_setup$vc_b$7(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$core$triangle_setup$vc_b$7
-
-
-module raster_top$core$triangle_setup$vc_b$8(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$core$triangle_setup$vc_b$8
+endmodule // raster_top$core$triangle_setup$vc$9
 
 
 module raster_top$core$triangle_setup$vx$0(d,q,clock);
@@ -17292,6 +20208,44 @@ module raster_top$core$triangle_setup$vx$1(d,q,clock);
 endmodule // raster_top$core$triangle_setup$vx$1
 
 
+module raster_top$core$triangle_setup$vx$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vx$10
+
+
+module raster_top$core$triangle_setup$vx$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vx$11
+
+
 module raster_top$core$triangle_setup$vx$2(d,q,clock);
     
     // Module arguments
@@ -17311,7 +20265,7 @@ module raster_top$core$triangle_setup$vx$2(d,q,clock);
 endmodule // raster_top$core$triangle_setup$vx$2
 
 
-module raster_top$core$triangle_setup$vx_b$0(d,q,clock);
+module raster_top$core$triangle_setup$vx$3(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17327,10 +20281,10 @@ module raster_top$core$triangle_setup$vx_b$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx_b$0
+endmodule // raster_top$core$triangle_setup$vx$3
 
 
-module raster_top$core$triangle_setup$vx_b$1(d,q,clock);
+module raster_top$core$triangle_setup$vx$4(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17346,10 +20300,10 @@ module raster_top$core$triangle_setup$vx_b$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx_b$1
+endmodule // raster_top$core$triangle_setup$vx$4
 
 
-module raster_top$core$triangle_setup$vx_b$2(d,q,clock);
+module raster_top$core$triangle_setup$vx$5(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17365,7 +20319,83 @@ module raster_top$core$triangle_setup$vx_b$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx_b$2
+endmodule // raster_top$core$triangle_setup$vx$5
+
+
+module raster_top$core$triangle_setup$vx$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vx$6
+
+
+module raster_top$core$triangle_setup$vx$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vx$7
+
+
+module raster_top$core$triangle_setup$vx$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vx$8
+
+
+module raster_top$core$triangle_setup$vx$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vx$9
 
 
 module raster_top$core$triangle_setup$vy$0(d,q,clock);
@@ -17406,6 +20436,44 @@ module raster_top$core$triangle_setup$vy$1(d,q,clock);
 endmodule // raster_top$core$triangle_setup$vy$1
 
 
+module raster_top$core$triangle_setup$vy$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vy$10
+
+
+module raster_top$core$triangle_setup$vy$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vy$11
+
+
 module raster_top$core$triangle_setup$vy$2(d,q,clock);
     
     // Module arguments
@@ -17425,7 +20493,7 @@ module raster_top$core$triangle_setup$vy$2(d,q,clock);
 endmodule // raster_top$core$triangle_setup$vy$2
 
 
-module raster_top$core$triangle_setup$vy_b$0(d,q,clock);
+module raster_top$core$triangle_setup$vy$3(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17441,10 +20509,10 @@ module raster_top$core$triangle_setup$vy_b$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy_b$0
+endmodule // raster_top$core$triangle_setup$vy$3
 
 
-module raster_top$core$triangle_setup$vy_b$1(d,q,clock);
+module raster_top$core$triangle_setup$vy$4(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17460,10 +20528,10 @@ module raster_top$core$triangle_setup$vy_b$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy_b$1
+endmodule // raster_top$core$triangle_setup$vy$4
 
 
-module raster_top$core$triangle_setup$vy_b$2(d,q,clock);
+module raster_top$core$triangle_setup$vy$5(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17479,7 +20547,83 @@ module raster_top$core$triangle_setup$vy_b$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy_b$2
+endmodule // raster_top$core$triangle_setup$vy$5
+
+
+module raster_top$core$triangle_setup$vy$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vy$6
+
+
+module raster_top$core$triangle_setup$vy$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vy$7
+
+
+module raster_top$core$triangle_setup$vy$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vy$8
+
+
+module raster_top$core$triangle_setup$vy$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vy$9
 
 
 module raster_top$core$triangle_setup$vz$0(d,q,clock);
@@ -17520,6 +20664,44 @@ module raster_top$core$triangle_setup$vz$1(d,q,clock);
 endmodule // raster_top$core$triangle_setup$vz$1
 
 
+module raster_top$core$triangle_setup$vz$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vz$10
+
+
+module raster_top$core$triangle_setup$vz$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vz$11
+
+
 module raster_top$core$triangle_setup$vz$2(d,q,clock);
     
     // Module arguments
@@ -17539,7 +20721,7 @@ module raster_top$core$triangle_setup$vz$2(d,q,clock);
 endmodule // raster_top$core$triangle_setup$vz$2
 
 
-module raster_top$core$triangle_setup$vz_b$0(d,q,clock);
+module raster_top$core$triangle_setup$vz$3(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -17555,10 +20737,10 @@ module raster_top$core$triangle_setup$vz_b$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz_b$0
+endmodule // raster_top$core$triangle_setup$vz$3
 
 
-module raster_top$core$triangle_setup$vz_b$1(d,q,clock);
+module raster_top$core$triangle_setup$vz$4(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -17574,10 +20756,10 @@ module raster_top$core$triangle_setup$vz_b$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz_b$1
+endmodule // raster_top$core$triangle_setup$vz$4
 
 
-module raster_top$core$triangle_setup$vz_b$2(d,q,clock);
+module raster_top$core$triangle_setup$vz$5(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -17593,7 +20775,83 @@ module raster_top$core$triangle_setup$vz_b$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz_b$2
+endmodule // raster_top$core$triangle_setup$vz$5
+
+
+module raster_top$core$triangle_setup$vz$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vz$6
+
+
+module raster_top$core$triangle_setup$vz$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vz$7
+
+
+module raster_top$core$triangle_setup$vz$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vz$8
+
+
+module raster_top$core$triangle_setup$vz$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vz$9
 
 
 module raster_top$core$triangle_setup$x$0(d,q,clock);

@@ -59,6 +59,10 @@ impl Default for Timing {
 /// just as its products are due (see [`setup_latency`]); more would wait for the divider.
 pub const SETUP_MULTIPLIERS_MAX: u32 = 7;
 
+/// Most copies of a triangle's registers setup holds (see [`setup_timing`]): II is at least
+/// a quarter of the latency.
+pub const SETUP_COPIES_MAX: u32 = 4;
+
 /// Setup's timing at `t`'s multipliers and divider ([`setup_timing`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct SetupTiming {
@@ -75,51 +79,50 @@ pub struct SetupTiming {
 
 /// Setup's latency and interval: the schedule `rtl::triangle_setup` runs, 64 products on
 /// `multipliers` (1 to [`SETUP_MULTIPLIERS_MAX`]) multipliers and the divider's
-/// `divider_latency` stages, with two triangles in flight.
+/// `divider_latency` stages, with several triangles in flight.
 ///
 /// Setup takes a triangle in the cycle the one before it reaches cycle II of its own
-/// schedule (or when it is idle); the earlier triangle's last II cycles and the later
-/// one's first overlap. Nothing they use may overlap: each multiplier and the divider are
-/// busy for at most II consecutive cycles of a triangle, no register is written by the later
-/// triangle before the earlier one has read it, and the vertex registers the late part of the
-/// schedule reads are a second copy, loaded in cycle II (so latency <= 2 II). While a result
-/// waits for the edge walk, all of setup waits with it (the later triangle too).
+/// schedule (or when it is idle), so triangles II cycles apart overlap. Nothing they use may
+/// overlap: each multiplier and the divider are busy for at most II consecutive cycles of a
+/// triangle, and no register is written by the later triangle before the earlier one has
+/// read it. The triangle's own registers (vertices, crossings, the area's sign and exponent)
+/// are copied every II cycles, ceil(latency / II) copies, each part of the schedule reading
+/// the copy of its cycle. While a result waits for the edge walk, all of setup waits with it
+/// (the triangles behind it too).
 ///
-/// Two schedules, the one with the lower II taken (then the lower latency). With
-/// c(n) = ceil(n / multipliers):
+/// Two schedules, the one with the lower II taken (then the lower latency). Twice the area
+/// is normalised into a register in the cycle after its last product and 1/area goes into
+/// the divider the cycle after that. With c(n) = ceil(n / multipliers):
 ///
 /// * **sequential**: each phase on all the multipliers in turn: twice the area c(2) cycles,
-///   normalise and issue 1/area 1, the edge numerators (from the normalise cycle) and 1/area
-///   max(L, c(6)), eq. (2) c(4), gradients c(16), starts and increments c(36), hand-over 1;
-///   every multiplier is busy from cycle 1 to the last start, so II = latency - 2.
-///   7 multipliers and 001's 5-stage divider: 1 + 1 + 5 + 1 + 3 + 6 + 1 = 18, II 16; one
+///   normalise 1, the edge numerators (from the normalise cycle) and 1/area
+///   max(L + 1, c(6)), eq. (2) c(4), gradients c(16), starts and increments c(36), hand-over
+///   1; every multiplier is busy from cycle 1 to the last start, so II = latency - 2.
+///   7 multipliers and 001's 5-stage divider: 1 + 1 + 6 + 1 + 3 + 6 + 1 = 19, II 17; one
 ///   multiplier, 2 + 1 + 6 + 4 + 16 + 36 + 1 = 66, II 64.
 /// * **split** (2 multipliers or more): with b(n) = ceil(n / (multipliers - 1)), one
 ///   multiplier does the area (cycles 1, 2) and the six numerators (3 to 8), the divisions
-///   go in at 3 (1/area) and 5 to 10 (each edge's start once its two numerators are summed,
-///   then its step); the others do eq. (2) from 3 + L (1/area back), b(4) cycles, the
-///   gradients b(16) and the starts b(36), then hand-over 1: latency 4 + L + b(4) + b(16) +
-///   b(36), II = max(8, b(4) + b(16) + b(36), ceil(latency / 2), L + b(4) - 1: the area's
-///   exponent, from cycle 3 to eq. (2)'s last). 7 multipliers and the
-///   5-stage divider: 4 + 5 + 1 + 3 + 6 = 19, II = 10 (the six multipliers' 60 slots hold
-///   the 56 products).
+///   go in at 4 (1/area) and 5 to 10 (each edge's start once its two numerators are summed,
+///   then its step); the others do eq. (2) from 4 + L (1/area back), b(4) cycles, the
+///   gradients b(16) and the starts b(36), then hand-over 1: latency 5 + L + b(4) + b(16) +
+///   b(36), II = max(8, b(4) + b(16) + b(36), ceil(latency / [`SETUP_COPIES_MAX`])). 7
+///   multipliers and the 5-stage divider: 5 + 5 + 1 + 3 + 6 = 20, II = 10 (the six
+///   multipliers' 60 slots hold the 56 products), at any divider depth (25 stages: latency
+///   40).
 pub fn setup_timing(t: &Timing) -> SetupTiming {
     let k = t.setup_multipliers;
     assert!((1..=SETUP_MULTIPLIERS_MAX).contains(&k), "setup has 1 to {SETUP_MULTIPLIERS_MAX} multipliers, not {k}");
     let l = t.divider_latency;
     let c = |n: u32| n.div_ceil(k);
-    let latency = c(2) + 1 + l.max(c(6)) + c(4) + c(16) + c(36) + 1;
+    let latency = c(2) + 1 + (l + 1).max(c(6)) + c(4) + c(16) + c(36) + 1;
     let sequential = SetupTiming { latency, interval: latency - 2, split: false };
     if k == 1 {
         return sequential;
     }
     let b = |n: u32| n.div_ceil(k - 1);
     let late = b(4) + b(16) + b(36);
-    let latency = 4 + l + late;
-    // The area's exponent, from the normalise cycle (3) to eq. (2)'s last cycle, limits II
-    // too when the divider is deep.
-    let exponent = l + b(4) - 1;
-    let split = SetupTiming { latency, interval: 8.max(late).max(latency.div_ceil(2)).max(exponent), split: true };
+    let latency = 5 + l + late;
+    let split = SetupTiming { latency, interval: 8.max(late).max(latency.div_ceil(SETUP_COPIES_MAX)), split: true };
     if (split.interval, split.latency) < (sequential.interval, sequential.latency) {
         split
     } else {
@@ -236,22 +239,24 @@ mod tests {
     #[test]
     fn cycles_setup_timing_counts_its_schedule() {
         let timing = |k, l| setup_timing(&Timing { setup_multipliers: k, divider_latency: l, ..Timing::default() });
-        // 7 multipliers, 5-stage divider, split: area 2, numerators 6 on one multiplier;
-        // eq. (2) from 3 + 5 = 8, 1 cycle, gradients 3, starts 6, hand-over 1: 19. The
-        // six multipliers are busy 10 cycles: II 10.
-        assert_eq!(setup_timing(&Timing::default()), SetupTiming { latency: 19, interval: 10, split: true });
-        // One multiplier: the six numerators take 6 cycles, one more than the divider:
-        // 2 + 1 + 6 + 4 + 16 + 36 + 1; the multiplier is busy from cycle 1 to 64.
+        // 7 multipliers, 5-stage divider, split: area 2 on one multiplier, normalised in
+        // 3, 1/area in at 4 and back at 9; eq. (2) 1 cycle, gradients 3, starts 6, hand-over
+        // 1: 20. The six multipliers are busy 10 cycles: II 10.
+        assert_eq!(setup_timing(&Timing::default()), SetupTiming { latency: 20, interval: 10, split: true });
+        // One multiplier: the six numerators take 6 cycles, as many as normalising and the
+        // divider: 2 + 1 + 6 + 4 + 16 + 36 + 1; the multiplier is busy from cycle 1 to 64.
         assert_eq!(timing(1, 5), SetupTiming { latency: 66, interval: 64, split: false });
-        // 3 multipliers, a 2-stage divider: sequential, 1 + 1 + 2 + 2 + 6 + 12 + 1 = 25, II
-        // 23; split, the two others would take 2 + 8 + 18 cycles for eq. (2) to the starts.
-        assert_eq!(timing(3, 2), SetupTiming { latency: 25, interval: 23, split: false });
-        // 4 multipliers, a 9-stage divider: split, 4 + 9 + 2 + 6 + 12 = 33, II 20 (the
-        // sequential one: 26, II 24).
-        assert_eq!(timing(4, 9), SetupTiming { latency: 33, interval: 20, split: true });
-        // A 1-stage divider: split, 4 + 1 + 10 = 15, II 10 (sequential: 14, II 12).
-        assert_eq!(timing(7, 1), SetupTiming { latency: 15, interval: 10, split: true });
-        assert_eq!(setup_latency(&Timing::default()), 19);
+        // 3 multipliers, a 2-stage divider: sequential, 1 + 1 + 3 + 2 + 6 + 12 + 1 = 26, II
+        // 24; split, the two others would take 2 + 8 + 18 cycles for eq. (2) to the starts.
+        assert_eq!(timing(3, 2), SetupTiming { latency: 26, interval: 24, split: false });
+        // 4 multipliers, a 9-stage divider: split, 5 + 9 + 2 + 6 + 12 = 34, II 20 (the
+        // sequential one: 27, II 25).
+        assert_eq!(timing(4, 9), SetupTiming { latency: 34, interval: 20, split: true });
+        // The deepest divider keeps II 10 (four copies of the triangle's registers).
+        assert_eq!(timing(7, 25), SetupTiming { latency: 40, interval: 10, split: true });
+        // A 1-stage divider: split, 5 + 1 + 10 = 16, II 10 (sequential: 15, II 13).
+        assert_eq!(timing(7, 1), SetupTiming { latency: 16, interval: 10, split: true });
+        assert_eq!(setup_latency(&Timing::default()), 20);
     }
 
     /// Two triangles in flight: the second is taken II cycles after the first; while the
@@ -259,20 +264,20 @@ mod tests {
     #[test]
     fn cycles_setup_overlaps_triangles_and_waits_as_one() {
         let walk = |n: usize| Work { passed_cull: true, scanlines: vec![None; n], vector_cycles: 0 };
-        // First: culled out at 1, taken, done at 20, walked 22..72. Second: culled out at 2,
-        // taken at 1 + 10 = 11, done at 30, waits for the walk until 72, walked 74..75.
+        // First: culled out at 1, taken, done at 21, walked 23..73. Second: culled out at 2,
+        // taken at 1 + 10 = 11, done at 31, waits for the walk until 73, walked 75..76.
         // Third: culled out at 12, taken at 21 (the second in its cycle 10), in flight while
-        // the second waits 42 cycles: done at 21 + 19 + 42 = 82, walked 84..85.
-        assert_eq!(scanline_frame(&[walk(50), walk(1), walk(1)], &Timing::default()).total, 85);
-        // Without the long walk nothing waits: the third is done at 40, walked 42..43.
-        assert_eq!(scanline_frame(&[walk(1), walk(1), walk(1)], &Timing::default()).total, 43);
+        // the second waits 42 cycles: done at 21 + 20 + 42 = 83, walked 85..86.
+        assert_eq!(scanline_frame(&[walk(50), walk(1), walk(1)], &Timing::default()).total, 86);
+        // Without the long walk nothing waits: the third is done at 41, walked 43..44.
+        assert_eq!(scanline_frame(&[walk(1), walk(1), walk(1)], &Timing::default()).total, 44);
         // A triangle offered while setup waits is taken when the result is handed over: as
-        // above, the second waits from 30 to 72; the third, culled out at 52 behind 40
-        // culled ones, goes in at 72; done at 72 + 19 = 91, walked 93..94.
+        // above, the second waits from 31 to 73; the third, culled out at 52 behind 40
+        // culled ones, goes in at 73; done at 73 + 20 = 93, walked 95..96.
         let mut frame = vec![walk(50), walk(1)];
         frame.extend(std::iter::repeat_n(Work::default(), 40));
         frame.push(walk(1));
-        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 94);
+        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 96);
     }
 
     /// A span of `c` cycles whose last cycle sends a pixel.
@@ -282,15 +287,15 @@ mod tests {
 
     #[test]
     fn cycles_one_triangle_through_the_scanline_pipeline() {
-        // Culled out at 1; setup done at 1 + 19 = 20; the walk emits at 22, 23, 24;
-        // span takes each 1 cycle later or when free: 23..28, 28..33, 33..38;
-        // the last pixel is written 2 cycles after, in cycle 39: 40 cycles.
+        // Culled out at 1; setup done at 1 + 20 = 21; the walk emits at 23, 24, 25;
+        // span takes each 1 cycle later or when free: 24..29, 29..34, 34..39;
+        // the last pixel is written 2 cycles after, in cycle 40: 41 cycles.
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], vector_cycles: 0 };
         let c = scanline_frame(std::slice::from_ref(&w), &Timing::default());
-        assert_eq!((c.total, c.span_busy, c.triangles), (40, 15, 1));
+        assert_eq!((c.total, c.span_busy, c.triangles), (41, 15, 1));
         // A culled triangle ahead costs one cycle of cull_sort only.
         let culled = Work::default();
-        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &Timing::default()).total, 41);
+        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &Timing::default()).total, 42);
         // Behind a triangle waiting for setup, culled ones wait too: the first triangle
         // leaves cull_sort for setup in cycle 1, the second (which crosses no scanline)
         // in 11, when the first is in its cycle 10 (II); then the 30 culled ones go through
@@ -299,20 +304,20 @@ mod tests {
         frame.extend(std::iter::repeat_n(culled, 30));
         assert_eq!(scanline_frame(&frame, &Timing::default()).total, 11 + 30);
         // With a 4-deep FIFO the walk runs ahead and span never waits: busy from
-        // 23 for 53 cycles, written 2 later.
+        // 24 for 53 cycles, written 2 later.
         let long = Work { scanlines: vec![full(50), full(1), full(1), None, full(1)], ..w.clone() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&long), &Timing::default()).total, 23 + 53 + 2);
+        assert_eq!(scanline_frame(std::slice::from_ref(&long), &Timing::default()).total, 24 + 53 + 2);
         // A one-deep FIFO holds the walk until span takes each command; the last
-        // command is emitted only at 75, reaches span at 76: one idle cycle.
-        assert_eq!(scanline_frame(&[long], &Timing { span_fifo: 1, ..Timing::default() }).total, 23 + 53 + 1 + 2);
+        // command is emitted only at 76, reaches span at 77: one idle cycle.
+        assert_eq!(scanline_frame(&[long], &Timing { span_fifo: 1, ..Timing::default() }).total, 24 + 53 + 1 + 2);
         // Spans that end on pixels sent nowhere (off screen, out of the depth range, or
         // dropped): the frame ends when span is done, or 3 cycles after the last pixel.
         let mut tail = w.clone();
         tail.scanlines[2] = Some(SpanWork { cycles: 5, last_sent: Some(1) });
-        assert_eq!(scanline_frame(&[tail.clone()], &Timing::default()).total, 38);
+        assert_eq!(scanline_frame(&[tail.clone()], &Timing::default()).total, 39);
         tail.scanlines[2] = Some(SpanWork { cycles: 1, last_sent: None });
-        // Dropped: span done at 34, the pixel of cycle 32 written in 34.
-        assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 35);
+        // Dropped: span done at 35, the pixel of cycle 33 written in 35.
+        assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 36);
     }
 
     #[test]
@@ -323,13 +328,13 @@ mod tests {
         let mut frame = vec![Work::default(), w.clone()];
         frame.extend(std::iter::repeat_n(Work::default(), 30));
         let no_cull = Timing { cull_sort: false, ..Timing::default() };
-        assert_eq!(scanline_frame(&frame, &no_cull).total, 39);
-        // Without pixel_out the frame ends the cycle after span's last fragment (37):
+        assert_eq!(scanline_frame(&frame, &no_cull).total, 40);
+        // Without pixel_out the frame ends the cycle after span's last fragment (38):
         // 2 cycles less than with the depth test and write behind it.
         let no_out = Timing { pixel_out: false, ..Timing::default() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 38);
+        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 39);
         let neither = Timing { cull_sort: false, pixel_out: false, ..Timing::default() };
-        assert_eq!(scanline_frame(&frame, &neither).total, 37);
+        assert_eq!(scanline_frame(&frame, &neither).total, 38);
     }
 
     #[test]

@@ -37,31 +37,34 @@
 //! the triangle. With 001's 7 multipliers and 5-stage divider the schedule is split: one
 //! multiplier does twice the area and the six edge numerators, the other six eq. (2), the
 //! gradients and the starts, so that setup can take the next triangle in the cycle this one
-//! reaches cycle 10 (II) and two are in flight:
+//! reaches cycle 10 (II) and two are in flight. Twice the area is normalised into a register
+//! (cycle 3), off the path into the divider's first stage:
 //!
 //! ```text
-//!  cycle            0     1  2    3   4   5   6   7   8      9  10  11   12 ... 17   18       19
-//!  input            take                                         take (the next triangle)
-//!  multiplier 0           area    numerators (edge 0, 1, 2)
-//!  multipliers 1-6                                       eq2    gradients   starts, increments
-//!  divider issue                  1/area  s0  q0  s1  q1     s2  q2
-//!  divider result                                        1/area    s0  q0 s1 q1 s2 q2 (15)
-//!  output                                                                        hand-over valid
+//!  cycle       0    1  2   3     4   5  6  7  8  9   10  11  12  13 ... 18   19        20
+//!  input       take                                  take (the next triangle)
+//!  mult. 0          area   numerators: edge 0, 1, 2
+//!  normalise               norm
+//!  mult. 1-6                                     eq2 gradients   starts, increments
+//!  div. issue                    1/a s0 q0 s1 q1 s2  q2
+//!  div. result                                   1/a     s0  q0  s1 ... q2 (15)
+//!  output                                                                 hand-over valid
 //! ```
 //!
-//! Latency 19 (001 Table 3: 34), II 10: the six multipliers' 60 slots hold the 56 products
-//! of eq. (2) to the starts, and the divider takes the seven divisions in 8 cycles. What
-//! happens up to cycle II reads the vertices as taken ([`Geometry`] `ga`); in cycle II they
-//! are copied, with the sign of the area, and everything later reads the copy (`gb`), since
-//! the next triangle is taken into the first registers in that cycle. Each register is
-//! written by the next triangle only after this one has read it for the last time, which
-//! `Schedule::build` checks and II covers. While a result waits for the edge walk, all of
-//! setup waits (`run` low: counters, registers and the divider hold), the triangle behind
-//! it too. With fewer multipliers the sequential schedule (each phase on all of them in
-//! turn, II = latency - 2) can be the better one: `K` (1 to 7,
-//! `model::cycles::SETUP_MULTIPLIERS_MAX`: with more, the last edge's products would wait
-//! for its divisions) trades latency and II for area, 66 cycles and II 64 with one
-//! multiplier; the divider's `L` stages likewise.
+//! Latency 20 (001 Table 3: 34), II 10: the six multipliers' 60 slots hold the 56 products
+//! of eq. (2) to the starts, and the divider takes the seven divisions in 7 cycles. The
+//! triangle's registers (vertices, crossings, the area's sign and exponent) are copied every
+//! II cycles, `Schedule::copies` of them: cycle c reads copy (c - 1) / II through that
+//! copy's [`Geometry`] (`g0` to `g3`), since by then the next triangle is in the copy before.
+//! Each other register is written by the next triangle only after this one has read it for
+//! the last time, which `Schedule::build` checks and II covers. So a deeper divider (for a
+//! faster clock) keeps II at 10: latency 5 + L + 10, four copies at L = 25. While a result
+//! waits for the edge walk, all of setup waits (`run` low: counters, registers and the
+//! divider hold), the triangles behind it too. With fewer multipliers the sequential
+//! schedule (each phase on all of them in turn, II = latency - 2) can be the better one: `K`
+//! (1 to 7, `model::cycles::SETUP_MULTIPLIERS_MAX`: with more, the last edge's products
+//! would wait for its divisions) trades latency and II for area, 66 cycles and II 64 with
+//! one multiplier; the divider's `L` stages likewise.
 //!
 //! Model: `model::triangle_setup::triangle_setup`. Emitted: `hdl-out/triangle_setup.v`.
 
@@ -126,10 +129,14 @@ pub struct Schedule {
     /// The hand-over cycle; the result is valid from the next one.
     pub handover: usize,
     pub latency: usize,
-    /// II: setup takes the next triangle in the cycle this one reaches `interval`. What
-    /// happens in cycles up to `interval` reads the vertices as taken; what happens later
-    /// reads the copy made in cycle `interval` (the next triangle overwrites the first).
+    /// II: setup takes the next triangle in the cycle this one reaches `interval`.
     pub interval: usize,
+    /// Copies of a triangle's registers, ceil(latency / II): copy 0 is loaded when setup
+    /// takes the triangle, copy v + 1 from copy v in cycle (v + 1) II; cycle c reads copy
+    /// (c - 1) / II ([`Schedule::view`]), as the next triangle is in copy v by then.
+    pub copies: usize,
+    /// The cycle twice the area is normalised into a register (1/area goes in the next).
+    pub normalise: usize,
     /// One multiplier for twice the area and the numerators, the others for the rest
     /// (`model::cycles::SetupTiming::split`).
     pub split: bool,
@@ -144,6 +151,10 @@ const PHASES: [usize; 5] = [2, 6, 4, 16, 36];
 /// Most multipliers setup can use (`model::cycles::SETUP_MULTIPLIERS_MAX`): with more, the
 /// last edge's products would wait for its divisions, which go one per cycle.
 pub const MULTIPLIERS_MAX: usize = 7;
+
+/// Most copies of a triangle's registers (`model::cycles::SETUP_COPIES_MAX`): II is at
+/// least a quarter of the latency.
+pub const COPIES_MAX: usize = 4;
 
 impl Schedule {
     /// The schedule for `k` multipliers and an `l`-stage divider: the sequential or the
@@ -176,18 +187,18 @@ impl Schedule {
             slots.extend((0..n).map(|i| (start + i / w, lanes.start + i % w)));
             start + n.div_ceil(w)
         };
-        // Area from cycle 1; normalise and issue 1/area in the next free cycle; the
-        // numerators from then on.
+        // Area from cycle 1; normalise in the next free cycle and issue 1/area in the one
+        // after; the numerators from the normalise cycle on.
         let norm = place(&mut slots, 1, PHASES[0], &early);
         let numerators_end = place(&mut slots, norm, PHASES[1], &early);
         // Each edge division as soon as it may go: the start once its numerator is summed.
-        let mut issue = [norm; 7];
+        let mut issue = [norm + 1; 7];
         for j in 1..7 {
             let ready = if j % 2 == 1 { slots[3 + (j - 1)].0.max(slots[2 + (j - 1)].0) + 1 } else { 0 };
             issue[j] = (issue[j - 1] + 1).max(ready);
         }
         // eq. (2) once 1/area is back and the multipliers are free.
-        let eq2 = (norm + l).max(if split { 1 } else { numerators_end });
+        let eq2 = (issue[0] + l).max(if split { 1 } else { numerators_end });
         let grad = place(&mut slots, eq2, PHASES[2], &late);
         let start = place(&mut slots, grad, PHASES[3], &late);
         let handover = place(&mut slots, start, PHASES[4], &late);
@@ -198,10 +209,10 @@ impl Schedule {
             let (first, back) = (slots[PRODUCTS - PHASES[4] + 12 * e].0, result(2 + 2 * e) + 1);
             assert!(first >= back, "K = {k}, L = {l}: edge {e}'s products at {first}, its divisions back at {back}");
         }
-        // II: each multiplier and the divider busy at most II cycles of a triangle; the
-        // vertex copy in cycle II holds until the result is handed over (latency <= 2 II);
-        // no register written by the next triangle (II cycles later) before this one has
-        // read it for the last time (read in cycle r, written first in w: II >= r - w).
+        // II: each multiplier and the divider busy at most II cycles of a triangle; no
+        // register outside the copies written by the next triangle (II cycles later) before
+        // this one has read it for the last time (read in cycle r, written first in w:
+        // II >= r - w).
         let cycles = |range: std::ops::Range<usize>| slots[range].iter().map(|s| s.0);
         let busy = |lane: usize| {
             let c: Vec<usize> = slots.iter().filter(|s| s.1 == lane).map(|s| s.0).collect();
@@ -213,21 +224,21 @@ impl Schedule {
             .map(busy)
             .chain([
                 issue[6] - issue[0] + 1,
-                latency.div_ceil(2),
-                eq2_last - issue[0],                     // the area's exponent
-                eq2_last - result(0),                    // 1/area's mantissa
+                eq2_last - result(0),                    // 1/area's mantissa and exponent
                 cycles(12..28).max().unwrap() - eq2_first, // eq. (2)'s products
                 latency - grad_first,                    // the gradients (ddx is a result)
                 latency - result(1),                     // the edge divisions' results
                 latency - cycles(28..64).min().unwrap(), // starts and increments
             ])
             .chain((0..3).map(|e| issue[1 + 2 * e] - slots[2 + 2 * e].0)) // the numerators
+            .chain([latency.div_ceil(COPIES_MAX)])
             .max()
             .unwrap();
         // Area, numerators and issues read the vertices as taken; the hand-over and the
         // result read the copy.
-        assert!(numerators_end - 1 <= interval && issue[6] <= interval && handover > interval, "K = {k}, L = {l}");
-        Schedule { multipliers: k, divider_latency: l, slots, issue, handover, latency, interval, split }
+        assert!(numerators_end - 1 <= interval && issue[6] <= interval, "K = {k}, L = {l}");
+        let copies = latency.div_ceil(interval);
+        Schedule { multipliers: k, divider_latency: l, slots, issue, handover, latency, interval, copies, normalise: norm, split }
     }
 
     /// The cycle a division's result is at the divider's output.
@@ -235,9 +246,9 @@ impl Schedule {
         self.issue[division] + self.divider_latency
     }
 
-    /// Whether cycle `c` of a triangle reads the copy of its vertices (after II).
-    pub fn late(&self, c: usize) -> bool {
-        c > self.interval
+    /// The copy of the triangle's registers cycle `c` (1 to the latency) reads.
+    pub fn view(&self, c: usize) -> usize {
+        (c - 1) / self.interval
     }
 }
 
@@ -254,48 +265,52 @@ pub struct TriangleSetup {
     mul: Vec<Mul<MUL_A, MUL_B, MUL_P>>,
     div: DividerRtl,
 
-    // Control: the cycle of the triangle in its first II cycles (`ta`, 1 to II) and of the
-    // one after them (`tb`, II + 1 to the latency); 0: none.
-    ta: DFF<Bits<8>>,
-    tb: DFF<Bits<8>>,
+    // Control: per copy, the cycle of the triangle in it (copy v: v II + 1 to (v + 1) II, the
+    // last to the latency); 0: none.
+    t: [DFF<Bits<8>>; COPIES_MAX],
     take: Signal<Local, Bit>,
     /// Setup advances: no result waits for the edge walk.
     run: Signal<Local, Bit>,
-    /// Product i, division j's issue and result, the hand-over are due this cycle.
+    /// Product i, the normalise, division j's issue and result, the hand-over are due this cycle.
     act: [Signal<Local, Bit>; PRODUCTS],
+    at_norm: Signal<Local, Bit>,
     at_iss: [Signal<Local, Bit>; 7],
     at_res: [Signal<Local, Bit>; 7],
     at_handover: Signal<Local, Bit>,
 
-    // The triangle, as taken: x, y, z, colours (3 * vertex + channel), crosses; and the
-    // copy the schedule reads after cycle II, with the sign of its area.
-    vx: [DFF<Bits<XY>>; 3],
-    vy: [DFF<Bits<XY>>; 3],
-    vz: [DFF<Bits<Z>>; 3],
-    vc: [DFF<Bits<COLOR>>; 9],
-    crosses: DFF<Bits<OUTCODE>>,
-    vx_b: [DFF<Bits<XY>>; 3],
-    vy_b: [DFF<Bits<XY>>; 3],
-    vz_b: [DFF<Bits<Z>>; 3],
-    vc_b: [DFF<Bits<COLOR>>; 9],
-    crosses_b: DFF<Bits<OUTCODE>>,
-    maj_left_b: DFF<Bit>,
-    /// The geometry of each: `ga` of the triangle as taken, `gb` of the copy.
-    ga: Geometry,
-    gb: Geometry,
-    /// e_maj is the left side (twice the area < 0), of the triangle as taken.
-    maj_left: Signal<Local, Bit>,
+    // The triangle's registers, one copy per II cycles of its schedule (copy v at index
+    // v, or 3v + vertex, or 9v + 3 * vertex + channel): x, y, z, colours, crossings, the
+    // sign of the area (from copy 1; copy 0's is the area register's) and its exponent.
+    vx: [DFF<Bits<XY>>; 3 * COPIES_MAX],
+    vy: [DFF<Bits<XY>>; 3 * COPIES_MAX],
+    vz: [DFF<Bits<Z>>; 3 * COPIES_MAX],
+    vc: [DFF<Bits<COLOR>>; 9 * COPIES_MAX],
+    crosses: [DFF<Bits<OUTCODE>>; COPIES_MAX],
+    sign: [DFF<Bit>; COPIES_MAX],
+    exp: [DFF<Bits<6>>; COPIES_MAX],
+    /// e_maj is the left side (twice the area < 0), per copy.
+    maj_left: [Signal<Local, Bit>; COPIES_MAX],
+    /// The geometry of each copy, by name: rust-hdl writes `g[v].count[e]`, a path with
+    /// two indices, wrongly. Copies past `Schedule::copies` are never loaded, and
+    /// synthesis removes them.
+    g0: Geometry,
+    g1: Geometry,
+    g2: Geometry,
+    g3: Geometry,
 
-    // Normalise.
+    // Normalise, into a register.
     area: DFF<Bits<AREA>>,
     area_abs: Signal<Local, Bits<AREA>>,
     exp_c: Signal<Local, Bits<6>>,
     norm_d: Signal<Local, Bits<DIV_D>>,
-    exp: DFF<Bits<6>>,
+    norm: DFF<Bits<DIV_D>>,
 
     // Divider results.
+    /// 1/area's mantissa and the area's exponent, held from 1/area's return for eq. (2).
     mant: DFF<Bits<MANT>>,
     mant_now: Signal<Local, Bits<MANT>>,
+    exp_e: DFF<Bits<6>>,
+    exp_now: Signal<Local, Bits<6>>,
     mant_a: Signal<Local, Bits<MUL_A>>,
     q_n: Signal<Local, Bits<NB>>,
     /// The quotient's sign bit and its extension into `q_n` (none when the quotient is
@@ -318,15 +333,17 @@ pub struct TriangleSetup {
     pg: [Signal<Local, Bits<G>>; 16],
     ps: [Signal<Local, Bits<ATTR>>; 36],
     /// eq. (2)'s B operands: +-e_maj.dx, e_bot.dx, e_maj.dy, e_bot.dy (sign of the area),
-    /// of the triangle as taken (0 to 3) and of the copy (4 to 7).
-    delta: [Signal<Local, Bits<NB>>; 8],
-    eq_b: [Signal<Local, Bits<NB>>; 8],
+    /// per copy (4v + d).
+    delta: [Signal<Local, Bits<NB>>; 4 * COPIES_MAX],
+    eq_b: [Signal<Local, Bits<NB>>; 4 * COPIES_MAX],
     /// The B operands from the geometry of their product's cycle: eq. (2)'s, the
     /// gradients' (the attribute differences), the starts' (x and y offsets, per edge and
     /// attribute).
     op_e: [Signal<Local, Bits<NB>>; 4],
     op_g: [Signal<Local, Bits<NB>>; 16],
     op_s: [Signal<Local, Bits<NB>>; 24],
+    /// v0's attributes, from the copy the hand-over reads.
+    attr0: [Signal<Local, Bits<ATTR>>; 4],
     /// eq. (2)'s products shifted right by exp - 15 (floor), for exp > 15; for exp <= 15
     /// the mantissa goes into the multipliers shifted left by 15 - exp instead.
     shr: [Signal<Local, Bits<G>>; 4],
@@ -352,11 +369,15 @@ pub struct TriangleSetup {
 
     // The schedule and the numbers a kernel cannot name.
     lane: [Constant<Bits<8>>; PRODUCTS],
-    /// Product i, division j's result: after cycle II, so on the vertices' copy.
-    late: [Constant<Bit>; PRODUCTS],
-    late_res: [Constant<Bit>; 7],
-    interval: Constant<Bits<8>>,
-    after_interval: Constant<Bits<8>>,
+    /// The copy product i, division j's result, the hand-over read (`Schedule::view`).
+    view: [Constant<Bits<8>>; PRODUCTS],
+    view_res: [Constant<Bits<8>>; 7],
+    view_handover: Constant<Bits<8>>,
+    /// Per copy, the last cycle of its part of the schedule (255 for copies not used); the
+    /// copy the result is read from.
+    ends: [Constant<Bits<8>>; COPIES_MAX],
+    last_copy: Constant<Bits<8>>,
+    normalise: Constant<Bits<8>>,
     cyc: [Constant<Bits<8>>; PRODUCTS],
     iss: [Constant<Bits<8>>; 7],
     res: [Constant<Bits<8>>; 7],
@@ -377,11 +398,7 @@ pub struct TriangleSetup {
     p_msb: Constant<Bits<8>>,
     ones: Constant<Bits<G>>,
     _k: usize,
-}
-
-/// An array of `N` one-bit constants from `f(i)`.
-fn flags<const N: usize>(f: impl Fn(usize) -> bool) -> [Constant<Bit>; N] {
-    std::array::from_fn(|i| Constant::new(f(i)))
+    _copies: usize,
 }
 
 /// An array of `N` constants from `f(i)`.
@@ -408,11 +425,11 @@ impl TriangleSetup {
             out: Default::default(),
             mul: (0..k).map(|_| Default::default()).collect(),
             div: DividerRtl::new(l),
-            ta: Default::default(),
-            tb: Default::default(),
+            t: defaults(),
             take: Default::default(),
             run: Default::default(),
             act: defaults(),
+            at_norm: Default::default(),
             at_iss: defaults(),
             at_res: defaults(),
             at_handover: Default::default(),
@@ -420,23 +437,23 @@ impl TriangleSetup {
             vy: defaults(),
             vz: defaults(),
             vc: defaults(),
-            crosses: Default::default(),
-            vx_b: defaults(),
-            vy_b: defaults(),
-            vz_b: defaults(),
-            vc_b: defaults(),
-            crosses_b: Default::default(),
-            maj_left_b: Default::default(),
-            ga: Default::default(),
-            gb: Default::default(),
-            maj_left: Default::default(),
+            crosses: defaults(),
+            sign: defaults(),
+            exp: defaults(),
+            maj_left: defaults(),
+            g0: Default::default(),
+            g1: Default::default(),
+            g2: Default::default(),
+            g3: Default::default(),
             area: Default::default(),
             area_abs: Default::default(),
             exp_c: Default::default(),
             norm_d: Default::default(),
-            exp: Default::default(),
+            norm: Default::default(),
             mant: Default::default(),
             mant_now: Default::default(),
+            exp_e: Default::default(),
+            exp_now: Default::default(),
             mant_a: Default::default(),
             q_n: Default::default(),
             q_msb: Constant::new((QL - 1).to_bits()),
@@ -458,6 +475,7 @@ impl TriangleSetup {
             op_e: defaults(),
             op_g: defaults(),
             op_s: defaults(),
+            attr0: defaults(),
             shr: defaults(),
             lsh: Default::default(),
             rsh: Default::default(),
@@ -476,10 +494,12 @@ impl TriangleSetup {
             inc0: defaults(),
             inc1: defaults(),
             lane: consts(|i| s.slots[i].1),
-            late: flags(|i| s.late(s.slots[i].0)),
-            late_res: flags(|j| s.late(s.result(j))),
-            interval: Constant::new(s.interval.to_bits()),
-            after_interval: Constant::new((s.interval + 1).to_bits()),
+            view: consts(|i| s.view(s.slots[i].0)),
+            view_res: consts(|j| s.view(s.result(j))),
+            view_handover: Constant::new(s.view(s.handover).to_bits()),
+            ends: consts(|v| if v < s.copies { ((v + 1) * s.interval).min(s.latency) } else { 255 }),
+            last_copy: Constant::new((s.copies - 1).to_bits()),
+            normalise: Constant::new(s.normalise.to_bits()),
             cyc: consts(|i| s.slots[i].0),
             iss: consts(|j| s.issue[j]),
             res: consts(|j| s.result(j)),
@@ -495,6 +515,7 @@ impl TriangleSetup {
             p_msb: Constant::new((G - 1).to_bits()),
             ones: ones_from(0, G),
             _k: k,
+            _copies: s.copies,
         })
     }
 }
@@ -503,21 +524,31 @@ impl Logic for TriangleSetup {
     #[hdl_gen]
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written.
-        dff_setup!(self, clock, ta, tb, crosses, crosses_b, maj_left_b, area, exp, mant);
+        dff_setup!(self, clock, area, norm, mant, exp_e);
         clock!(self, clock, div);
+        for v in 0..COPIES_MAX {
+            self.t[v].clock.next = self.clock.val();
+            self.t[v].d.next = self.t[v].q.val();
+            self.crosses[v].clock.next = self.clock.val();
+            self.crosses[v].d.next = self.crosses[v].q.val();
+            self.sign[v].clock.next = self.clock.val();
+            self.sign[v].d.next = self.sign[v].q.val();
+            self.exp[v].clock.next = self.clock.val();
+            self.exp[v].d.next = self.exp[v].q.val();
+            for i in 0..3 {
+                self.vx[3 * v + i].clock.next = self.clock.val();
+                self.vx[3 * v + i].d.next = self.vx[3 * v + i].q.val();
+                self.vy[3 * v + i].clock.next = self.clock.val();
+                self.vy[3 * v + i].d.next = self.vy[3 * v + i].q.val();
+                self.vz[3 * v + i].clock.next = self.clock.val();
+                self.vz[3 * v + i].d.next = self.vz[3 * v + i].q.val();
+            }
+            for i in 0..9 {
+                self.vc[9 * v + i].clock.next = self.clock.val();
+                self.vc[9 * v + i].d.next = self.vc[9 * v + i].q.val();
+            }
+        }
         for i in 0..3 {
-            self.vx[i].clock.next = self.clock.val();
-            self.vx[i].d.next = self.vx[i].q.val();
-            self.vy[i].clock.next = self.clock.val();
-            self.vy[i].d.next = self.vy[i].q.val();
-            self.vz[i].clock.next = self.clock.val();
-            self.vz[i].d.next = self.vz[i].q.val();
-            self.vx_b[i].clock.next = self.clock.val();
-            self.vx_b[i].d.next = self.vx_b[i].q.val();
-            self.vy_b[i].clock.next = self.clock.val();
-            self.vy_b[i].d.next = self.vy_b[i].q.val();
-            self.vz_b[i].clock.next = self.clock.val();
-            self.vz_b[i].d.next = self.vz_b[i].q.val();
             self.x[i].clock.next = self.clock.val();
             self.x[i].d.next = self.x[i].q.val();
             self.r[i].clock.next = self.clock.val();
@@ -527,12 +558,6 @@ impl Logic for TriangleSetup {
             self.rho[i].clock.next = self.clock.val();
             self.rho[i].d.next = self.rho[i].q.val();
             self.num[i].clock.next = self.clock.val();
-        }
-        for i in 0..9 {
-            self.vc[i].clock.next = self.clock.val();
-            self.vc[i].d.next = self.vc[i].q.val();
-            self.vc_b[i].clock.next = self.clock.val();
-            self.vc_b[i].d.next = self.vc_b[i].q.val();
         }
         for a in 0..4 {
             self.p[a].clock.next = self.clock.val();
@@ -547,46 +572,50 @@ impl Logic for TriangleSetup {
             self.inc1[i].clock.next = self.clock.val();
             self.inc1[i].d.next = self.inc1[i].q.val();
         }
+        // The area's sign: copy 0's from the area register, the others' as copied.
+        self.maj_left[0].next = self.area.q.val().get_bit(self.area_msb.val().index());
+        for v in 1..COPIES_MAX {
+            self.maj_left[v].next = self.sign[v].q.val();
+        }
 
-        self.maj_left.next = self.area.q.val().get_bit(self.area_msb.val().index());
-
-        // ---- Control. Everything waits while a result is not taken; otherwise take a
-        // triangle when none is in its first II cycles or the one there reaches cycle II,
-        // which then goes on with the vertices' copy.
-        self.run.next = !((self.tb.q.val() == self.last.val()) & !self.out.ready.val());
-        self.out.valid.next = self.tb.q.val() == self.last.val();
+        // ---- Control. Everything waits while a result is not taken. Otherwise each copy's
+        // triangle moves on, into the next copy at the end of its part; setup takes a triangle
+        // into copy 0 when none is there or the one there reaches cycle II.
+        for v in (self._copies - 1)..self._copies {
+            self.run.next = !((self.t[v].q.val() == self.last.val()) & !self.out.ready.val());
+            self.out.valid.next = self.t[v].q.val() == self.last.val();
+        }
         self.inp.ready.next =
-            self.run.val() & ((self.ta.q.val() == 0) | (self.ta.q.val() == self.interval.val()));
+            self.run.val() & ((self.t[0].q.val() == 0) | (self.t[0].q.val() == self.ends[0].val()));
         self.take.next = self.inp.valid.val() & self.inp.ready.val();
         if self.run.val() {
-            if self.ta.q.val() != 0 {
-                self.ta.d.next = self.ta.q.val() + 1;
-            }
-            if self.ta.q.val() == self.interval.val() {
-                self.ta.d.next = 0.into();
-            }
-            if self.tb.q.val() != 0 {
-                self.tb.d.next = self.tb.q.val() + 1;
-            }
-            if self.tb.q.val() == self.last.val() {
-                self.tb.d.next = 0.into();
-            }
-            if self.ta.q.val() == self.interval.val() {
-                self.tb.d.next = self.after_interval.val();
-                self.crosses_b.d.next = self.crosses.q.val();
-                self.maj_left_b.d.next = self.maj_left.val();
-                for i in 0..3 {
-                    self.vx_b[i].d.next = self.vx[i].q.val();
-                    self.vy_b[i].d.next = self.vy[i].q.val();
-                    self.vz_b[i].d.next = self.vz[i].q.val();
+            for v in 0..self._copies {
+                if self.t[v].q.val() != 0 {
+                    self.t[v].d.next = self.t[v].q.val() + 1;
                 }
-                for i in 0..9 {
-                    self.vc_b[i].d.next = self.vc[i].q.val();
+                if self.t[v].q.val() == self.ends[v].val() {
+                    self.t[v].d.next = 0.into();
+                }
+            }
+            for v in 0..(self._copies - 1) {
+                if self.t[v].q.val() == self.ends[v].val() {
+                    self.t[v + 1].d.next = self.ends[v].val() + 1;
+                    self.crosses[v + 1].d.next = self.crosses[v].q.val();
+                    self.sign[v + 1].d.next = self.maj_left[v].val();
+                    self.exp[v + 1].d.next = self.exp[v].q.val();
+                    for i in 0..3 {
+                        self.vx[3 * v + 3 + i].d.next = self.vx[3 * v + i].q.val();
+                        self.vy[3 * v + 3 + i].d.next = self.vy[3 * v + i].q.val();
+                        self.vz[3 * v + 3 + i].d.next = self.vz[3 * v + i].q.val();
+                    }
+                    for i in 0..9 {
+                        self.vc[9 * v + 9 + i].d.next = self.vc[9 * v + i].q.val();
+                    }
                 }
             }
         }
         if self.take.val() {
-            self.ta.d.next = 1.into();
+            self.t[0].d.next = 1.into();
             self.vx[0].d.next = self.inp.v0_x.val();
             self.vy[0].d.next = self.inp.v0_y.val();
             self.vz[0].d.next = self.inp.v0_z.val();
@@ -605,35 +634,83 @@ impl Logic for TriangleSetup {
             self.vc[6].d.next = self.inp.v2_c0.val();
             self.vc[7].d.next = self.inp.v2_c1.val();
             self.vc[8].d.next = self.inp.v2_c2.val();
-            self.crosses.d.next = self.inp.crosses.val();
+            self.crosses[0].d.next = self.inp.crosses.val();
         }
-        // A cycle up to II is the first triangle's (`ta`), a later one the other's (`tb`).
+        // What is due this cycle: a cycle of the schedule is its copy's counter (the views
+        // are constants, so each is one comparison).
         for i in 0..PRODUCTS {
-            self.act[i].next =
-                self.run.val() & ((self.ta.q.val() == self.cyc[i].val()) | (self.tb.q.val() == self.cyc[i].val()));
+            self.act[i].next = false;
+            for v in 0..self._copies {
+                if (self.view[i].val().index() == v) & (self.t[v].q.val() == self.cyc[i].val()) {
+                    self.act[i].next = self.run.val();
+                }
+            }
+        }
+        self.at_norm.next = self.run.val() & (self.t[0].q.val() == self.normalise.val());
+        for j in 0..7 {
+            self.at_iss[j].next = self.run.val() & (self.t[0].q.val() == self.iss[j].val());
+            self.at_res[j].next = false;
+            for v in 0..self._copies {
+                if (self.view_res[j].val().index() == v) & (self.t[v].q.val() == self.res[j].val()) {
+                    self.at_res[j].next = self.run.val();
+                }
+            }
+        }
+        self.at_handover.next = false;
+        for v in 0..self._copies {
+            if (self.view_handover.val().index() == v) & (self.t[v].q.val() == self.handover.val()) {
+                self.at_handover.next = self.run.val();
+            }
         }
 
-        // ---- Geometry of the triangle as taken and of its copy.
+        // ---- Geometry of each copy.
         for i in 0..3 {
-            self.ga.vx[i].next = self.vx[i].q.val();
-            self.ga.vy[i].next = self.vy[i].q.val();
-            self.ga.vz[i].next = self.vz[i].q.val();
-            self.ga.start_x[i].next = self.x[i].q.val();
-            self.gb.vx[i].next = self.vx_b[i].q.val();
-            self.gb.vy[i].next = self.vy_b[i].q.val();
-            self.gb.vz[i].next = self.vz_b[i].q.val();
-            self.gb.start_x[i].next = self.x[i].q.val();
+            self.g0.vx[i].next = self.vx[i].q.val();
+            self.g0.vy[i].next = self.vy[i].q.val();
+            self.g0.vz[i].next = self.vz[i].q.val();
+            self.g0.start_x[i].next = self.x[i].q.val();
         }
         for i in 0..9 {
-            self.ga.vc[i].next = self.vc[i].q.val();
-            self.gb.vc[i].next = self.vc_b[i].q.val();
+            self.g0.vc[i].next = self.vc[i].q.val();
         }
-        self.ga.crosses.next = self.crosses.q.val();
-        self.ga.maj_left.next = self.maj_left.val();
-        self.gb.crosses.next = self.crosses_b.q.val();
-        self.gb.maj_left.next = self.maj_left_b.q.val();
+        self.g0.crosses.next = self.crosses[0].q.val();
+        self.g0.maj_left.next = self.maj_left[0].val();
+        for i in 0..3 {
+            self.g1.vx[i].next = self.vx[3 + i].q.val();
+            self.g1.vy[i].next = self.vy[3 + i].q.val();
+            self.g1.vz[i].next = self.vz[3 + i].q.val();
+            self.g1.start_x[i].next = self.x[i].q.val();
+        }
+        for i in 0..9 {
+            self.g1.vc[i].next = self.vc[9 + i].q.val();
+        }
+        self.g1.crosses.next = self.crosses[1].q.val();
+        self.g1.maj_left.next = self.maj_left[1].val();
+        for i in 0..3 {
+            self.g2.vx[i].next = self.vx[6 + i].q.val();
+            self.g2.vy[i].next = self.vy[6 + i].q.val();
+            self.g2.vz[i].next = self.vz[6 + i].q.val();
+            self.g2.start_x[i].next = self.x[i].q.val();
+        }
+        for i in 0..9 {
+            self.g2.vc[i].next = self.vc[18 + i].q.val();
+        }
+        self.g2.crosses.next = self.crosses[2].q.val();
+        self.g2.maj_left.next = self.maj_left[2].val();
+        for i in 0..3 {
+            self.g3.vx[i].next = self.vx[9 + i].q.val();
+            self.g3.vy[i].next = self.vy[9 + i].q.val();
+            self.g3.vz[i].next = self.vz[9 + i].q.val();
+            self.g3.start_x[i].next = self.x[i].q.val();
+        }
+        for i in 0..9 {
+            self.g3.vc[i].next = self.vc[27 + i].q.val();
+        }
+        self.g3.crosses.next = self.crosses[3].q.val();
+        self.g3.maj_left.next = self.maj_left[3].val();
 
-        // ---- Normalise twice the area for 1/area (`recip_operands`): |a| << (32 - exp).
+        // ---- Normalise twice the area for 1/area (`recip_operands`): |a| << (32 - exp),
+        // into a register.
         self.area_abs.next = self.area.q.val();
         if self.area.q.val().get_bit(self.area_msb.val().index()) {
             self.area_abs.next = bits::<AREA>(0) - self.area.q.val();
@@ -645,19 +722,13 @@ impl Logic for TriangleSetup {
             }
         }
         self.norm_d.next = self.area_abs.val() << (self.recip_top.val() - self.exp_c.val());
-        // The divisions go in by the first II cycles (`Schedule::build`); results come back
-        // in either part.
-        for j in 0..7 {
-            self.at_iss[j].next = self.run.val() & (self.ta.q.val() == self.iss[j].val());
-            self.at_res[j].next = self.run.val()
-                & ((self.ta.q.val() == self.res[j].val()) | (self.tb.q.val() == self.res[j].val()));
-        }
-        self.at_handover.next = self.run.val() & (self.tb.q.val() == self.handover.val());
-        if self.at_iss[0].val() {
-            self.exp.d.next = self.exp_c.val();
+        if self.at_norm.val() {
+            self.norm.d.next = self.norm_d.val();
+            self.exp[0].d.next = self.exp_c.val();
         }
 
-        // ---- The divider: seven divisions issued, results taken.
+        // ---- The divider: seven divisions issued in the first II cycles (copy 0,
+        // `Schedule::build`), results taken in any.
         self.div.out_ready.next = true;
         self.div.hold.next = !self.run.val();
         self.div.inp_valid.next = false;
@@ -666,22 +737,22 @@ impl Logic for TriangleSetup {
         if self.at_iss[0].val() {
             self.div.inp_valid.next = true;
             self.div.inp_n.next = self.recip_n.val();
-            self.div.inp_d.next = self.norm_d.val();
+            self.div.inp_d.next = self.norm.q.val();
         }
         for e in 0..3 {
             // Unused divisions go in as 0/1 (`model::divider`).
             if self.at_iss[1 + 2 * e].val() {
                 self.div.inp_valid.next = true;
-                if self.ga.count[e].val() != 0 {
+                if self.g0.count[e].val() != 0 {
                     self.div.inp_n.next = self.num[e].q.val().get_bits::<DIV_N>(0);
-                    self.div.inp_d.next = self.ga.ed16[e].val();
+                    self.div.inp_d.next = self.g0.ed16[e].val();
                 }
             }
             if self.at_iss[2 + 2 * e].val() {
                 self.div.inp_valid.next = true;
-                if self.ga.count[e].val() > 1 {
-                    self.div.inp_n.next = self.ga.edx[e].val().get_bits::<DIV_N>(0);
-                    self.div.inp_d.next = self.ga.edy_d[e].val();
+                if self.g0.count[e].val() > 1 {
+                    self.div.inp_n.next = self.g0.edx[e].val().get_bits::<DIV_N>(0);
+                    self.div.inp_d.next = self.g0.edy_d[e].val();
                 }
             }
         }
@@ -691,25 +762,41 @@ impl Logic for TriangleSetup {
             self.q_n.next = bit_cast::<NB, QL>(self.div.out_q.val().get_bits::<QL>(0)) | self.q_ext.val();
         }
         self.r_pos.next = self.div.out_r.val() != 0;
+        // 1/area and the area's exponent, as they come back and then held for eq. (2).
         self.mant_now.next = self.mant.q.val();
+        self.exp_now.next = self.exp_e.q.val();
         if self.at_res[0].val() {
             self.mant_now.next = self.div.out_q.val().get_bits::<MANT>(0);
             self.mant.d.next = self.div.out_q.val().get_bits::<MANT>(0);
+            for v in 0..self._copies {
+                if self.view_res[0].val().index() == v {
+                    self.exp_now.next = self.exp[v].q.val();
+                    self.exp_e.d.next = self.exp[v].q.val();
+                }
+            }
         }
         // eq. (2)'s shift, 15 - exp, goes onto the mantissa when it is a left shift.
-        self.lsh.next = self.eq_shift.val() - self.exp.q.val();
-        self.rsh.next = self.exp.q.val() - self.eq_shift.val();
+        self.lsh.next = self.eq_shift.val() - self.exp_now.val();
+        self.rsh.next = self.exp_now.val() - self.eq_shift.val();
         self.mant_a.next = bit_cast::<MUL_A, MANT>(self.mant_now.val());
-        if self.exp.q.val() <= self.eq_shift.val() {
+        if self.exp_now.val() <= self.eq_shift.val() {
             self.mant_a.next = bit_cast::<MUL_A, MANT>(self.mant_now.val()) << self.lsh.val();
         }
         for e in 0..3 {
             // The start: x = first pixel at or right of the edge, r = x*D - num in [0, D).
-            self.xi[e].next = self.ga.xi[e].val();
-            self.ed[e].next = self.ga.ed16[e].val().get_bits::<EDGE_D>(0);
-            if self.late_res[1 + 2 * e].val() {
-                self.xi[e].next = self.gb.xi[e].val();
-                self.ed[e].next = self.gb.ed16[e].val().get_bits::<EDGE_D>(0);
+            self.xi[e].next = self.g0.xi[e].val();
+            self.ed[e].next = self.g0.ed16[e].val().get_bits::<EDGE_D>(0);
+            if self.view_res[1 + 2 * e].val().index() == 1 {
+                self.xi[e].next = self.g1.xi[e].val();
+                self.ed[e].next = self.g1.ed16[e].val().get_bits::<EDGE_D>(0);
+            }
+            if self.view_res[1 + 2 * e].val().index() == 2 {
+                self.xi[e].next = self.g2.xi[e].val();
+                self.ed[e].next = self.g2.ed16[e].val().get_bits::<EDGE_D>(0);
+            }
+            if self.view_res[1 + 2 * e].val().index() == 3 {
+                self.xi[e].next = self.g3.xi[e].val();
+                self.ed[e].next = self.g3.ed16[e].val().get_bits::<EDGE_D>(0);
             }
             if self.at_res[1 + 2 * e].val() {
                 self.x[e].d.next = self.xi[e].val() + self.q_n.val() + self.r_pos.val();
@@ -745,59 +832,126 @@ impl Logic for TriangleSetup {
         for i in 0..36 {
             self.ps[i].next = 0.into();
         }
-        // eq. (2)'s second factors: the edge deltas with the area's sign, of the triangle as
-        // taken and of the copy.
+        // eq. (2)'s second factors: the edge deltas with the area's sign, of each copy.
         for k in 0..2 {
-            self.delta[k].next = self.ga.kdx[k].val().get_bits::<NB>(0);
-            self.delta[2 + k].next = self.ga.kdy[k].val().get_bits::<NB>(0);
-            self.delta[4 + k].next = self.gb.kdx[k].val().get_bits::<NB>(0);
-            self.delta[6 + k].next = self.gb.kdy[k].val().get_bits::<NB>(0);
+            self.delta[k].next = self.g0.kdx[k].val().get_bits::<NB>(0);
+            self.delta[2 + k].next = self.g0.kdy[k].val().get_bits::<NB>(0);
+            self.delta[4 + k].next = self.g1.kdx[k].val().get_bits::<NB>(0);
+            self.delta[6 + k].next = self.g1.kdy[k].val().get_bits::<NB>(0);
+            self.delta[8 + k].next = self.g2.kdx[k].val().get_bits::<NB>(0);
+            self.delta[10 + k].next = self.g2.kdy[k].val().get_bits::<NB>(0);
+            self.delta[12 + k].next = self.g3.kdx[k].val().get_bits::<NB>(0);
+            self.delta[14 + k].next = self.g3.kdy[k].val().get_bits::<NB>(0);
         }
-        for d in 0..4 {
-            self.eq_b[d].next = self.delta[d].val();
-            if self.maj_left.val() {
-                self.eq_b[d].next = bits::<NB>(0) - self.delta[d].val();
-            }
-            self.eq_b[4 + d].next = self.delta[4 + d].val();
-            if self.maj_left_b.q.val() {
-                self.eq_b[4 + d].next = bits::<NB>(0) - self.delta[4 + d].val();
+        for v in 0..COPIES_MAX {
+            for d in 0..4 {
+                self.eq_b[4 * v + d].next = self.delta[4 * v + d].val();
+                if self.maj_left[v].val() {
+                    self.eq_b[4 * v + d].next = bits::<NB>(0) - self.delta[4 * v + d].val();
+                }
             }
         }
-        // The B operands of eq. (2), the gradients and the starts from the geometry of
-        // their cycle (`Schedule::late`; constants, so no multiplexers are built).
+        // The B operands of eq. (2), the gradients and the starts from the copy of their
+        // cycle (`Schedule::view`; constants, so no multiplexers are built).
         for d in 0..4 {
             self.op_e[d].next = self.eq_b[d].val();
-            if self.late[8 + d].val() {
+        }
+        for a in 0..4 {
+            self.op_g[4 * a].next = self.g0.dmaj[a].val();
+            self.op_g[4 * a + 1].next = self.g0.dbot[a].val();
+            self.op_g[4 * a + 2].next = self.g0.dbot[a].val();
+            self.op_g[4 * a + 3].next = self.g0.dmaj[a].val();
+        }
+        for e in 0..3 {
+            for a in 0..4 {
+                self.op_s[8 * e + 2 * a].next = self.g0.off_x[e].val();
+                self.op_s[8 * e + 2 * a + 1].next = self.g0.off_y[e].val();
+            }
+        }
+        for d in 0..4 {
+            if self.view[8 + d].val().index() == 1 {
                 self.op_e[d].next = self.eq_b[4 + d].val();
             }
         }
         for a in 0..4 {
-            self.op_g[4 * a].next = self.ga.dmaj[a].val();
-            if self.late[12 + 4 * a].val() {
-                self.op_g[4 * a].next = self.gb.dmaj[a].val();
+            if self.view[12 + 4 * a].val().index() == 1 {
+                self.op_g[4 * a].next = self.g1.dmaj[a].val();
             }
-            self.op_g[4 * a + 1].next = self.ga.dbot[a].val();
-            if self.late[13 + 4 * a].val() {
-                self.op_g[4 * a + 1].next = self.gb.dbot[a].val();
+            if self.view[13 + 4 * a].val().index() == 1 {
+                self.op_g[4 * a + 1].next = self.g1.dbot[a].val();
             }
-            self.op_g[4 * a + 2].next = self.ga.dbot[a].val();
-            if self.late[14 + 4 * a].val() {
-                self.op_g[4 * a + 2].next = self.gb.dbot[a].val();
+            if self.view[14 + 4 * a].val().index() == 1 {
+                self.op_g[4 * a + 2].next = self.g1.dbot[a].val();
             }
-            self.op_g[4 * a + 3].next = self.ga.dmaj[a].val();
-            if self.late[15 + 4 * a].val() {
-                self.op_g[4 * a + 3].next = self.gb.dmaj[a].val();
+            if self.view[15 + 4 * a].val().index() == 1 {
+                self.op_g[4 * a + 3].next = self.g1.dmaj[a].val();
             }
         }
         for e in 0..3 {
             for a in 0..4 {
-                self.op_s[8 * e + 2 * a].next = self.ga.off_x[e].val();
-                if self.late[28 + 12 * e + 3 * a].val() {
-                    self.op_s[8 * e + 2 * a].next = self.gb.off_x[e].val();
+                if self.view[28 + 12 * e + 3 * a].val().index() == 1 {
+                    self.op_s[8 * e + 2 * a].next = self.g1.off_x[e].val();
                 }
-                self.op_s[8 * e + 2 * a + 1].next = self.ga.off_y[e].val();
-                if self.late[29 + 12 * e + 3 * a].val() {
-                    self.op_s[8 * e + 2 * a + 1].next = self.gb.off_y[e].val();
+                if self.view[29 + 12 * e + 3 * a].val().index() == 1 {
+                    self.op_s[8 * e + 2 * a + 1].next = self.g1.off_y[e].val();
+                }
+            }
+        }
+        for d in 0..4 {
+            if self.view[8 + d].val().index() == 2 {
+                self.op_e[d].next = self.eq_b[8 + d].val();
+            }
+        }
+        for a in 0..4 {
+            if self.view[12 + 4 * a].val().index() == 2 {
+                self.op_g[4 * a].next = self.g2.dmaj[a].val();
+            }
+            if self.view[13 + 4 * a].val().index() == 2 {
+                self.op_g[4 * a + 1].next = self.g2.dbot[a].val();
+            }
+            if self.view[14 + 4 * a].val().index() == 2 {
+                self.op_g[4 * a + 2].next = self.g2.dbot[a].val();
+            }
+            if self.view[15 + 4 * a].val().index() == 2 {
+                self.op_g[4 * a + 3].next = self.g2.dmaj[a].val();
+            }
+        }
+        for e in 0..3 {
+            for a in 0..4 {
+                if self.view[28 + 12 * e + 3 * a].val().index() == 2 {
+                    self.op_s[8 * e + 2 * a].next = self.g2.off_x[e].val();
+                }
+                if self.view[29 + 12 * e + 3 * a].val().index() == 2 {
+                    self.op_s[8 * e + 2 * a + 1].next = self.g2.off_y[e].val();
+                }
+            }
+        }
+        for d in 0..4 {
+            if self.view[8 + d].val().index() == 3 {
+                self.op_e[d].next = self.eq_b[12 + d].val();
+            }
+        }
+        for a in 0..4 {
+            if self.view[12 + 4 * a].val().index() == 3 {
+                self.op_g[4 * a].next = self.g3.dmaj[a].val();
+            }
+            if self.view[13 + 4 * a].val().index() == 3 {
+                self.op_g[4 * a + 1].next = self.g3.dbot[a].val();
+            }
+            if self.view[14 + 4 * a].val().index() == 3 {
+                self.op_g[4 * a + 2].next = self.g3.dbot[a].val();
+            }
+            if self.view[15 + 4 * a].val().index() == 3 {
+                self.op_g[4 * a + 3].next = self.g3.dmaj[a].val();
+            }
+        }
+        for e in 0..3 {
+            for a in 0..4 {
+                if self.view[28 + 12 * e + 3 * a].val().index() == 3 {
+                    self.op_s[8 * e + 2 * a].next = self.g3.off_x[e].val();
+                }
+                if self.view[29 + 12 * e + 3 * a].val().index() == 3 {
+                    self.op_s[8 * e + 2 * a + 1].next = self.g3.off_y[e].val();
                 }
             }
         }
@@ -806,28 +960,41 @@ impl Logic for TriangleSetup {
             self.ddx[a].next = self.gx[a].q.val() >> self.gsh[a].val();
             self.ddy[a].next = self.gy[a].q.val() >> self.gsh[a].val();
         }
+        // v0's attributes at the hand-over, from its copy.
+        for a in 0..4 {
+            self.attr0[a].next = self.g0.attr0[a].val();
+            if self.view_handover.val().index() == 1 {
+                self.attr0[a].next = self.g1.attr0[a].val();
+            }
+            if self.view_handover.val().index() == 2 {
+                self.attr0[a].next = self.g2.attr0[a].val();
+            }
+            if self.view_handover.val().index() == 3 {
+                self.attr0[a].next = self.g3.attr0[a].val();
+            }
+        }
         for m in 0..self._k {
             // Area: e_maj.dx * e_bot.dy - e_bot.dx * e_maj.dy.
             if (self.lane[0].val().index() == m) & self.act[0].val() {
-                self.mul[m].a.next = self.ga.kdx[0].val().get_bits::<MUL_A>(0);
-                self.mul[m].b.next = self.ga.kdy[1].val().get_bits::<MUL_B>(0);
+                self.mul[m].a.next = self.g0.kdx[0].val().get_bits::<MUL_A>(0);
+                self.mul[m].b.next = self.g0.kdy[1].val().get_bits::<MUL_B>(0);
                 self.pa[0].next = self.mul[m].p.val().get_bits::<AREA>(0);
             }
             if (self.lane[1].val().index() == m) & self.act[1].val() {
-                self.mul[m].a.next = self.ga.kdx[1].val().get_bits::<MUL_A>(0);
-                self.mul[m].b.next = self.ga.kdy[0].val().get_bits::<MUL_B>(0);
+                self.mul[m].a.next = self.g0.kdx[1].val().get_bits::<MUL_A>(0);
+                self.mul[m].b.next = self.g0.kdy[0].val().get_bits::<MUL_B>(0);
                 self.pa[1].next = self.mul[m].p.val().get_bits::<AREA>(0);
             }
             for e in 0..3 {
                 // Start numerator: x fraction * dy + dx * t.
                 if (self.lane[2 + 2 * e].val().index() == m) & self.act[2 + 2 * e].val() {
-                    self.mul[m].a.next = self.ga.edy[e].val();
-                    self.mul[m].b.next = self.ga.xf[e].val();
+                    self.mul[m].a.next = self.g0.edy[e].val();
+                    self.mul[m].b.next = self.g0.xf[e].val();
                     self.pn[2 * e].next = self.mul[m].p.val();
                 }
                 if (self.lane[3 + 2 * e].val().index() == m) & self.act[3 + 2 * e].val() {
-                    self.mul[m].a.next = self.ga.edx[e].val().get_bits::<MUL_A>(0);
-                    self.mul[m].b.next = self.ga.toff[e].val();
+                    self.mul[m].a.next = self.g0.edx[e].val().get_bits::<MUL_A>(0);
+                    self.mul[m].b.next = self.g0.toff[e].val();
                     self.pn[2 * e + 1].next = self.mul[m].p.val();
                 }
             }
@@ -906,7 +1073,7 @@ impl Logic for TriangleSetup {
             }
             if self.act[8 + d].val() {
                 self.p[d].d.next = self.shr[d].val();
-                if self.exp.q.val() <= self.eq_shift.val() {
+                if self.exp_now.val() <= self.eq_shift.val() {
                     self.p[d].d.next = self.pe[d].val();
                 }
             }
@@ -939,22 +1106,69 @@ impl Logic for TriangleSetup {
                 // Hand-over: at = v0's attribute + floor(plane / 2^s); inc1 = inc0 + ddx.
                 if self.at_handover.val() {
                     self.plane[4 * e + a].d.next =
-                        (self.plane[4 * e + a].q.val() >> self.frac.val()) + (self.gb.attr0[a].val() << self.bsh[a].val());
+                        (self.plane[4 * e + a].q.val() >> self.frac.val()) + (self.attr0[a].val() << self.bsh[a].val());
                     self.inc1[4 * e + a].d.next = self.inc0[4 * e + a].q.val() + self.ddx[a].val().get_bits::<ATTR>(0);
                 }
             }
         }
 
-        // ---- The result.
-        self.out.walk.next = self.gb.up.val();
-        self.out.maj_left.next = self.maj_left_b.q.val();
-        self.out.maj_j.next = self.gb.cy[0].val().get_bits::<PIXEL>(self.frac.val().index());
-        self.out.maj_count.next = self.gb.count[0].val();
+        // ---- The result: the geometry's part from the last copy.
+        if self.last_copy.val().index() == 0 {
+            self.out.walk.next = self.g0.up.val();
+            self.out.maj_left.next = self.maj_left[0].val();
+            self.out.maj_j.next = self.g0.cy[0].val().get_bits::<PIXEL>(self.frac.val().index());
+            self.out.maj_count.next = self.g0.count[0].val();
+            self.out.maj_d.next = self.g0.ed16[0].val().get_bits::<EDGE_D>(0);
+            self.out.short0_j.next = self.g0.cy[1].val().get_bits::<PIXEL>(self.frac.val().index());
+            self.out.short0_count.next = self.g0.count[1].val();
+            self.out.short0_d.next = self.g0.ed16[1].val().get_bits::<EDGE_D>(0);
+            self.out.short1_j.next = self.g0.cy[2].val().get_bits::<PIXEL>(self.frac.val().index());
+            self.out.short1_count.next = self.g0.count[2].val();
+            self.out.short1_d.next = self.g0.ed16[2].val().get_bits::<EDGE_D>(0);
+        }
+        if self.last_copy.val().index() == 1 {
+            self.out.walk.next = self.g1.up.val();
+            self.out.maj_left.next = self.maj_left[1].val();
+            self.out.maj_j.next = self.g1.cy[0].val().get_bits::<PIXEL>(self.frac.val().index());
+            self.out.maj_count.next = self.g1.count[0].val();
+            self.out.maj_d.next = self.g1.ed16[0].val().get_bits::<EDGE_D>(0);
+            self.out.short0_j.next = self.g1.cy[1].val().get_bits::<PIXEL>(self.frac.val().index());
+            self.out.short0_count.next = self.g1.count[1].val();
+            self.out.short0_d.next = self.g1.ed16[1].val().get_bits::<EDGE_D>(0);
+            self.out.short1_j.next = self.g1.cy[2].val().get_bits::<PIXEL>(self.frac.val().index());
+            self.out.short1_count.next = self.g1.count[2].val();
+            self.out.short1_d.next = self.g1.ed16[2].val().get_bits::<EDGE_D>(0);
+        }
+        if self.last_copy.val().index() == 2 {
+            self.out.walk.next = self.g2.up.val();
+            self.out.maj_left.next = self.maj_left[2].val();
+            self.out.maj_j.next = self.g2.cy[0].val().get_bits::<PIXEL>(self.frac.val().index());
+            self.out.maj_count.next = self.g2.count[0].val();
+            self.out.maj_d.next = self.g2.ed16[0].val().get_bits::<EDGE_D>(0);
+            self.out.short0_j.next = self.g2.cy[1].val().get_bits::<PIXEL>(self.frac.val().index());
+            self.out.short0_count.next = self.g2.count[1].val();
+            self.out.short0_d.next = self.g2.ed16[1].val().get_bits::<EDGE_D>(0);
+            self.out.short1_j.next = self.g2.cy[2].val().get_bits::<PIXEL>(self.frac.val().index());
+            self.out.short1_count.next = self.g2.count[2].val();
+            self.out.short1_d.next = self.g2.ed16[2].val().get_bits::<EDGE_D>(0);
+        }
+        if self.last_copy.val().index() == 3 {
+            self.out.walk.next = self.g3.up.val();
+            self.out.maj_left.next = self.maj_left[3].val();
+            self.out.maj_j.next = self.g3.cy[0].val().get_bits::<PIXEL>(self.frac.val().index());
+            self.out.maj_count.next = self.g3.count[0].val();
+            self.out.maj_d.next = self.g3.ed16[0].val().get_bits::<EDGE_D>(0);
+            self.out.short0_j.next = self.g3.cy[1].val().get_bits::<PIXEL>(self.frac.val().index());
+            self.out.short0_count.next = self.g3.count[1].val();
+            self.out.short0_d.next = self.g3.ed16[1].val().get_bits::<EDGE_D>(0);
+            self.out.short1_j.next = self.g3.cy[2].val().get_bits::<PIXEL>(self.frac.val().index());
+            self.out.short1_count.next = self.g3.count[2].val();
+            self.out.short1_d.next = self.g3.ed16[2].val().get_bits::<EDGE_D>(0);
+        }
         self.out.maj_x.next = self.x[0].q.val().get_bits::<PIXEL>(0);
         self.out.maj_r.next = self.r[0].q.val();
         self.out.maj_q.next = self.q[0].q.val().get_bits::<EDGE_Q>(0);
         self.out.maj_rho.next = self.rho[0].q.val();
-        self.out.maj_d.next = self.gb.ed16[0].val().get_bits::<EDGE_D>(0);
         self.out.maj_at_z.next = self.plane[0].q.val().get_bits::<Z_ACC>(0);
         self.out.maj_at_c0.next = self.plane[1].q.val().get_bits::<C_ACC>(0);
         self.out.maj_at_c1.next = self.plane[2].q.val().get_bits::<C_ACC>(0);
@@ -967,13 +1181,10 @@ impl Logic for TriangleSetup {
         self.out.maj_inc1_c0.next = self.inc1[1].q.val().get_bits::<DC>(0);
         self.out.maj_inc1_c1.next = self.inc1[2].q.val().get_bits::<DC>(0);
         self.out.maj_inc1_c2.next = self.inc1[3].q.val().get_bits::<DC>(0);
-        self.out.short0_j.next = self.gb.cy[1].val().get_bits::<PIXEL>(self.frac.val().index());
-        self.out.short0_count.next = self.gb.count[1].val();
         self.out.short0_x.next = self.x[1].q.val().get_bits::<PIXEL>(0);
         self.out.short0_r.next = self.r[1].q.val();
         self.out.short0_q.next = self.q[1].q.val().get_bits::<EDGE_Q>(0);
         self.out.short0_rho.next = self.rho[1].q.val();
-        self.out.short0_d.next = self.gb.ed16[1].val().get_bits::<EDGE_D>(0);
         self.out.short0_at_z.next = self.plane[4].q.val().get_bits::<Z_ACC>(0);
         self.out.short0_at_c0.next = self.plane[5].q.val().get_bits::<C_ACC>(0);
         self.out.short0_at_c1.next = self.plane[6].q.val().get_bits::<C_ACC>(0);
@@ -986,13 +1197,10 @@ impl Logic for TriangleSetup {
         self.out.short0_inc1_c0.next = self.inc1[5].q.val().get_bits::<DC>(0);
         self.out.short0_inc1_c1.next = self.inc1[6].q.val().get_bits::<DC>(0);
         self.out.short0_inc1_c2.next = self.inc1[7].q.val().get_bits::<DC>(0);
-        self.out.short1_j.next = self.gb.cy[2].val().get_bits::<PIXEL>(self.frac.val().index());
-        self.out.short1_count.next = self.gb.count[2].val();
         self.out.short1_x.next = self.x[2].q.val().get_bits::<PIXEL>(0);
         self.out.short1_r.next = self.r[2].q.val();
         self.out.short1_q.next = self.q[2].q.val().get_bits::<EDGE_Q>(0);
         self.out.short1_rho.next = self.rho[2].q.val();
-        self.out.short1_d.next = self.gb.ed16[2].val().get_bits::<EDGE_D>(0);
         self.out.short1_at_z.next = self.plane[8].q.val().get_bits::<Z_ACC>(0);
         self.out.short1_at_c0.next = self.plane[9].q.val().get_bits::<C_ACC>(0);
         self.out.short1_at_c1.next = self.plane[10].q.val().get_bits::<C_ACC>(0);

@@ -4,9 +4,9 @@
 //! counts, the operands of the edge divisions, the offsets of the pixel centres each edge
 //! tracks, and the attribute differences.
 //!
-//! Setup has two triangles in flight (see `Schedule`), so it has two of these: one on the
-//! vertices it took last (the first II cycles of a triangle's schedule), one on the copy
-//! of them the rest of the schedule and the result read.
+//! Setup has several triangles in flight (see `Schedule`) and a copy of a triangle's
+//! registers for each II cycles of its schedule, so it has one of these per copy: the part
+//! of the schedule that reads a copy reads its geometry.
 
 use super::super::cull_sort::{outcode_bit, COLOR, OUTCODE, XY, Z};
 use super::super::divider::DIV_D;
