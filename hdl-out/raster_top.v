@@ -551,8 +551,8 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
     reg  [35:0] span$inp$ddx_c1;
     reg  [35:0] span$inp$ddx_c2;
     wire  span$idle;
-    reg  [1:0] in_setup$d;
-    wire  [1:0] in_setup$q;
+    reg  [2:0] in_setup$d;
+    wire  [2:0] in_setup$q;
     reg  in_setup$clock;
     reg  last_in$d;
     wire  last_in$q;
@@ -6827,13 +6827,13 @@ endmodule // raster_top$core$fifo$y$e$3
 module raster_top$core$in_setup(d,q,clock);
     
     // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
+    input wire  [2:0] d;
+    output reg  [2:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 2'h0;
+       q = 3'h0;
     end
     
     always @(posedge clock) begin

@@ -9,7 +9,7 @@
 //! * `cull_sort`: latency 1, one triangle per cycle; its output register holds a
 //!   passing triangle until setup takes it, and takes the next triangle in the
 //!   cycle one leaves (a rejected one leaves the cycle after it came in);
-//! * `triangle_setup` holds up to two triangles: it takes the next one II cycles
+//! * `triangle_setup` holds several triangles: it takes the next one II cycles
 //!   after the last (or when idle), and while a result waits for the edge walk
 //!   all of setup waits (the triangle behind it too); its latency and II follow
 //!   its schedule of 64 products on `multipliers` multipliers and the divider's

@@ -84,8 +84,9 @@ pub struct RasterTopCore {
     edge_walk: EdgeWalk,
     fifo: SpanFifo,
     span: Span,
-    /// Triangles in setup (taken, not yet handed to the edge walk): up to two.
-    in_setup: DFF<Bits<2>>,
+    /// Triangles in setup (taken, not yet handed to the edge walk): up to one per copy of
+    /// its registers (`triangle_setup::COPIES_MAX`, 4).
+    in_setup: DFF<Bits<3>>,
     taken: Signal<Local, Bit>,
     handed: Signal<Local, Bit>,
     /// The last triangle taken had `inp_last`.
