@@ -173,12 +173,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  view$9 = 8'h0;
     localparam  view$10 = 8'h0;
     localparam  view$11 = 8'h0;
-    localparam  view$12 = 8'h0;
-    localparam  view$13 = 8'h0;
-    localparam  view$14 = 8'h0;
-    localparam  view$15 = 8'h0;
-    localparam  view$16 = 8'h0;
-    localparam  view$17 = 8'h0;
+    localparam  view$12 = 8'h1;
+    localparam  view$13 = 8'h1;
+    localparam  view$14 = 8'h1;
+    localparam  view$15 = 8'h1;
+    localparam  view$16 = 8'h1;
+    localparam  view$17 = 8'h1;
     localparam  view$18 = 8'h1;
     localparam  view$19 = 8'h1;
     localparam  view$20 = 8'h1;
@@ -226,7 +226,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  view$62 = 8'h1;
     localparam  view$63 = 8'h1;
     localparam  view_res$0 = 8'h0;
-    localparam  view_res$1 = 8'h0;
+    localparam  view_res$1 = 8'h1;
     localparam  view_res$2 = 8'h1;
     localparam  view_res$3 = 8'h1;
     localparam  view_res$4 = 8'h1;
@@ -235,9 +235,9 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  view_handover = 8'h1;
     localparam  ends$0 = 8'ha;
     localparam  ends$1 = 8'h14;
-    localparam  ends$2 = 8'hff;
+    localparam  ends$2 = 8'h15;
     localparam  ends$3 = 8'hff;
-    localparam  last_copy = 8'h1;
+    localparam  last_copy = 8'h2;
     localparam  normalise = 8'h3;
     localparam  cyc$0 = 8'h1;
     localparam  cyc$1 = 8'h2;
@@ -247,62 +247,62 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  cyc$5 = 8'h6;
     localparam  cyc$6 = 8'h7;
     localparam  cyc$7 = 8'h8;
-    localparam  cyc$8 = 8'h9;
-    localparam  cyc$9 = 8'h9;
-    localparam  cyc$10 = 8'h9;
-    localparam  cyc$11 = 8'h9;
-    localparam  cyc$12 = 8'ha;
-    localparam  cyc$13 = 8'ha;
-    localparam  cyc$14 = 8'ha;
-    localparam  cyc$15 = 8'ha;
-    localparam  cyc$16 = 8'ha;
-    localparam  cyc$17 = 8'ha;
-    localparam  cyc$18 = 8'hb;
-    localparam  cyc$19 = 8'hb;
-    localparam  cyc$20 = 8'hb;
-    localparam  cyc$21 = 8'hb;
-    localparam  cyc$22 = 8'hb;
-    localparam  cyc$23 = 8'hb;
-    localparam  cyc$24 = 8'hc;
-    localparam  cyc$25 = 8'hc;
-    localparam  cyc$26 = 8'hc;
-    localparam  cyc$27 = 8'hc;
-    localparam  cyc$28 = 8'hd;
-    localparam  cyc$29 = 8'hd;
-    localparam  cyc$30 = 8'hd;
-    localparam  cyc$31 = 8'hd;
-    localparam  cyc$32 = 8'hd;
-    localparam  cyc$33 = 8'hd;
-    localparam  cyc$34 = 8'he;
-    localparam  cyc$35 = 8'he;
-    localparam  cyc$36 = 8'he;
-    localparam  cyc$37 = 8'he;
-    localparam  cyc$38 = 8'he;
-    localparam  cyc$39 = 8'he;
-    localparam  cyc$40 = 8'hf;
-    localparam  cyc$41 = 8'hf;
-    localparam  cyc$42 = 8'hf;
-    localparam  cyc$43 = 8'hf;
-    localparam  cyc$44 = 8'hf;
-    localparam  cyc$45 = 8'hf;
-    localparam  cyc$46 = 8'h10;
-    localparam  cyc$47 = 8'h10;
-    localparam  cyc$48 = 8'h10;
-    localparam  cyc$49 = 8'h10;
-    localparam  cyc$50 = 8'h10;
-    localparam  cyc$51 = 8'h10;
-    localparam  cyc$52 = 8'h11;
-    localparam  cyc$53 = 8'h11;
-    localparam  cyc$54 = 8'h11;
-    localparam  cyc$55 = 8'h11;
-    localparam  cyc$56 = 8'h11;
-    localparam  cyc$57 = 8'h11;
-    localparam  cyc$58 = 8'h12;
-    localparam  cyc$59 = 8'h12;
-    localparam  cyc$60 = 8'h12;
-    localparam  cyc$61 = 8'h12;
-    localparam  cyc$62 = 8'h12;
-    localparam  cyc$63 = 8'h12;
+    localparam  cyc$8 = 8'ha;
+    localparam  cyc$9 = 8'ha;
+    localparam  cyc$10 = 8'ha;
+    localparam  cyc$11 = 8'ha;
+    localparam  cyc$12 = 8'hb;
+    localparam  cyc$13 = 8'hb;
+    localparam  cyc$14 = 8'hb;
+    localparam  cyc$15 = 8'hb;
+    localparam  cyc$16 = 8'hb;
+    localparam  cyc$17 = 8'hb;
+    localparam  cyc$18 = 8'hc;
+    localparam  cyc$19 = 8'hc;
+    localparam  cyc$20 = 8'hc;
+    localparam  cyc$21 = 8'hc;
+    localparam  cyc$22 = 8'hc;
+    localparam  cyc$23 = 8'hc;
+    localparam  cyc$24 = 8'hd;
+    localparam  cyc$25 = 8'hd;
+    localparam  cyc$26 = 8'hd;
+    localparam  cyc$27 = 8'hd;
+    localparam  cyc$28 = 8'he;
+    localparam  cyc$29 = 8'he;
+    localparam  cyc$30 = 8'he;
+    localparam  cyc$31 = 8'he;
+    localparam  cyc$32 = 8'he;
+    localparam  cyc$33 = 8'he;
+    localparam  cyc$34 = 8'hf;
+    localparam  cyc$35 = 8'hf;
+    localparam  cyc$36 = 8'hf;
+    localparam  cyc$37 = 8'hf;
+    localparam  cyc$38 = 8'hf;
+    localparam  cyc$39 = 8'hf;
+    localparam  cyc$40 = 8'h10;
+    localparam  cyc$41 = 8'h10;
+    localparam  cyc$42 = 8'h10;
+    localparam  cyc$43 = 8'h10;
+    localparam  cyc$44 = 8'h10;
+    localparam  cyc$45 = 8'h10;
+    localparam  cyc$46 = 8'h11;
+    localparam  cyc$47 = 8'h11;
+    localparam  cyc$48 = 8'h11;
+    localparam  cyc$49 = 8'h11;
+    localparam  cyc$50 = 8'h11;
+    localparam  cyc$51 = 8'h11;
+    localparam  cyc$52 = 8'h12;
+    localparam  cyc$53 = 8'h12;
+    localparam  cyc$54 = 8'h12;
+    localparam  cyc$55 = 8'h12;
+    localparam  cyc$56 = 8'h12;
+    localparam  cyc$57 = 8'h12;
+    localparam  cyc$58 = 8'h13;
+    localparam  cyc$59 = 8'h13;
+    localparam  cyc$60 = 8'h13;
+    localparam  cyc$61 = 8'h13;
+    localparam  cyc$62 = 8'h13;
+    localparam  cyc$63 = 8'h13;
     localparam  iss$0 = 8'h4;
     localparam  iss$1 = 8'h5;
     localparam  iss$2 = 8'h6;
@@ -310,15 +310,15 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  iss$4 = 8'h8;
     localparam  iss$5 = 8'h9;
     localparam  iss$6 = 8'ha;
-    localparam  res$0 = 8'h9;
-    localparam  res$1 = 8'ha;
-    localparam  res$2 = 8'hb;
-    localparam  res$3 = 8'hc;
-    localparam  res$4 = 8'hd;
-    localparam  res$5 = 8'he;
-    localparam  res$6 = 8'hf;
-    localparam  handover = 8'h13;
-    localparam  last = 8'h14;
+    localparam  res$0 = 8'ha;
+    localparam  res$1 = 8'hb;
+    localparam  res$2 = 8'hc;
+    localparam  res$3 = 8'hd;
+    localparam  res$4 = 8'he;
+    localparam  res$5 = 8'hf;
+    localparam  res$6 = 8'h10;
+    localparam  handover = 8'h14;
+    localparam  last = 8'h15;
     localparam  recip_n = 58'h100000000000000;
     localparam  recip_top = 6'b100000;
     localparam  eq_shift = 6'b1111;
@@ -937,6 +937,15 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [33:0] norm$d;
     wire  [33:0] norm$q;
     reg  norm$clock;
+    reg  div_v$d;
+    wire  div_v$q;
+    reg  div_v$clock;
+    reg  [57:0] div_n$d;
+    wire  [57:0] div_n$q;
+    reg  div_n$clock;
+    reg  [33:0] div_d$d;
+    wire  [33:0] div_d$q;
+    reg  div_d$clock;
     reg  [24:0] mant$d;
     wire  [24:0] mant$q;
     reg  mant$clock;
@@ -2223,6 +2232,21 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .q(norm$q),
         .clock(norm$clock)
     );
+    triangle_setup$div_v div_v(
+        .d(div_v$d),
+        .q(div_v$q),
+        .clock(div_v$clock)
+    );
+    triangle_setup$div_n div_n(
+        .d(div_n$d),
+        .q(div_n$q),
+        .clock(div_n$clock)
+    );
+    triangle_setup$div_d div_d(
+        .d(div_d$d),
+        .q(div_d$q),
+        .clock(div_d$clock)
+    );
     triangle_setup$mant mant(
         .d(mant$d),
         .q(mant$q),
@@ -2553,10 +2577,16 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     always @(*) begin
         area$clock = clock;
         norm$clock = clock;
+        div_v$clock = clock;
+        div_n$clock = clock;
+        div_d$clock = clock;
         mant$clock = clock;
         exp_e$clock = clock;
         area$d = area$q;
         norm$d = norm$q;
+        div_v$d = div_v$q;
+        div_n$d = div_n$q;
+        div_d$d = div_d$q;
         mant$d = mant$q;
         exp_e$d = exp_e$q;
         div$clock = clock;
@@ -2843,8 +2873,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         maj_left$1 = sign$1$q;
         maj_left$2 = sign$2$q;
         maj_left$3 = sign$3$q;
-        run = ~((t$1$q == last) & ~out$ready);
-        out$valid = t$1$q == last;
+        run = ~((t$2$q == last) & ~out$ready);
+        out$valid = t$2$q == last;
         inp$ready = run & ((t$0$q == 32'h0) | (t$0$q == ends$0));
         take = inp$valid & inp$ready;
         if (run) begin
@@ -2859,6 +2889,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             end
             if (t$1$q == ends$1) begin
                 t$1$d = 32'h0;
+            end
+            if (t$2$q != 32'h0) begin
+                t$2$d = t$2$q + 32'h1;
+            end
+            if (t$2$q == ends$2) begin
+                t$2$d = 32'h0;
             end
             if (t$0$q == ends$0) begin
                 t$1$d = ends$0 + 32'h1;
@@ -2883,6 +2919,30 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
                 vc$15$d = vc$6$q;
                 vc$16$d = vc$7$q;
                 vc$17$d = vc$8$q;
+            end
+            if (t$1$q == ends$1) begin
+                t$2$d = ends$1 + 32'h1;
+                crosses$2$d = crosses$1$q;
+                sign$2$d = maj_left$1;
+                exp$2$d = exp$1$q;
+                vx$6$d = vx$3$q;
+                vy$6$d = vy$3$q;
+                vz$6$d = vz$3$q;
+                vx$7$d = vx$4$q;
+                vy$7$d = vy$4$q;
+                vz$7$d = vz$4$q;
+                vx$8$d = vx$5$q;
+                vy$8$d = vy$5$q;
+                vz$8$d = vz$5$q;
+                vc$18$d = vc$9$q;
+                vc$19$d = vc$10$q;
+                vc$20$d = vc$11$q;
+                vc$21$d = vc$12$q;
+                vc$22$d = vc$13$q;
+                vc$23$d = vc$14$q;
+                vc$24$d = vc$15$q;
+                vc$25$d = vc$16$q;
+                vc$26$d = vc$17$q;
             end
         end
         if (take) begin
@@ -2914,11 +2974,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$0 == 1) & (t$1$q == cyc$0)) begin
             act$0 = run;
         end
+        if ((view$0 == 2) & (t$2$q == cyc$0)) begin
+            act$0 = run;
+        end
         act$1 = 1'b0;
         if ((view$1 == 0) & (t$0$q == cyc$1)) begin
             act$1 = run;
         end
         if ((view$1 == 1) & (t$1$q == cyc$1)) begin
+            act$1 = run;
+        end
+        if ((view$1 == 2) & (t$2$q == cyc$1)) begin
             act$1 = run;
         end
         act$2 = 1'b0;
@@ -2928,11 +2994,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$2 == 1) & (t$1$q == cyc$2)) begin
             act$2 = run;
         end
+        if ((view$2 == 2) & (t$2$q == cyc$2)) begin
+            act$2 = run;
+        end
         act$3 = 1'b0;
         if ((view$3 == 0) & (t$0$q == cyc$3)) begin
             act$3 = run;
         end
         if ((view$3 == 1) & (t$1$q == cyc$3)) begin
+            act$3 = run;
+        end
+        if ((view$3 == 2) & (t$2$q == cyc$3)) begin
             act$3 = run;
         end
         act$4 = 1'b0;
@@ -2942,11 +3014,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$4 == 1) & (t$1$q == cyc$4)) begin
             act$4 = run;
         end
+        if ((view$4 == 2) & (t$2$q == cyc$4)) begin
+            act$4 = run;
+        end
         act$5 = 1'b0;
         if ((view$5 == 0) & (t$0$q == cyc$5)) begin
             act$5 = run;
         end
         if ((view$5 == 1) & (t$1$q == cyc$5)) begin
+            act$5 = run;
+        end
+        if ((view$5 == 2) & (t$2$q == cyc$5)) begin
             act$5 = run;
         end
         act$6 = 1'b0;
@@ -2956,11 +3034,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$6 == 1) & (t$1$q == cyc$6)) begin
             act$6 = run;
         end
+        if ((view$6 == 2) & (t$2$q == cyc$6)) begin
+            act$6 = run;
+        end
         act$7 = 1'b0;
         if ((view$7 == 0) & (t$0$q == cyc$7)) begin
             act$7 = run;
         end
         if ((view$7 == 1) & (t$1$q == cyc$7)) begin
+            act$7 = run;
+        end
+        if ((view$7 == 2) & (t$2$q == cyc$7)) begin
             act$7 = run;
         end
         act$8 = 1'b0;
@@ -2970,11 +3054,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$8 == 1) & (t$1$q == cyc$8)) begin
             act$8 = run;
         end
+        if ((view$8 == 2) & (t$2$q == cyc$8)) begin
+            act$8 = run;
+        end
         act$9 = 1'b0;
         if ((view$9 == 0) & (t$0$q == cyc$9)) begin
             act$9 = run;
         end
         if ((view$9 == 1) & (t$1$q == cyc$9)) begin
+            act$9 = run;
+        end
+        if ((view$9 == 2) & (t$2$q == cyc$9)) begin
             act$9 = run;
         end
         act$10 = 1'b0;
@@ -2984,11 +3074,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$10 == 1) & (t$1$q == cyc$10)) begin
             act$10 = run;
         end
+        if ((view$10 == 2) & (t$2$q == cyc$10)) begin
+            act$10 = run;
+        end
         act$11 = 1'b0;
         if ((view$11 == 0) & (t$0$q == cyc$11)) begin
             act$11 = run;
         end
         if ((view$11 == 1) & (t$1$q == cyc$11)) begin
+            act$11 = run;
+        end
+        if ((view$11 == 2) & (t$2$q == cyc$11)) begin
             act$11 = run;
         end
         act$12 = 1'b0;
@@ -2998,11 +3094,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$12 == 1) & (t$1$q == cyc$12)) begin
             act$12 = run;
         end
+        if ((view$12 == 2) & (t$2$q == cyc$12)) begin
+            act$12 = run;
+        end
         act$13 = 1'b0;
         if ((view$13 == 0) & (t$0$q == cyc$13)) begin
             act$13 = run;
         end
         if ((view$13 == 1) & (t$1$q == cyc$13)) begin
+            act$13 = run;
+        end
+        if ((view$13 == 2) & (t$2$q == cyc$13)) begin
             act$13 = run;
         end
         act$14 = 1'b0;
@@ -3012,11 +3114,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$14 == 1) & (t$1$q == cyc$14)) begin
             act$14 = run;
         end
+        if ((view$14 == 2) & (t$2$q == cyc$14)) begin
+            act$14 = run;
+        end
         act$15 = 1'b0;
         if ((view$15 == 0) & (t$0$q == cyc$15)) begin
             act$15 = run;
         end
         if ((view$15 == 1) & (t$1$q == cyc$15)) begin
+            act$15 = run;
+        end
+        if ((view$15 == 2) & (t$2$q == cyc$15)) begin
             act$15 = run;
         end
         act$16 = 1'b0;
@@ -3026,11 +3134,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$16 == 1) & (t$1$q == cyc$16)) begin
             act$16 = run;
         end
+        if ((view$16 == 2) & (t$2$q == cyc$16)) begin
+            act$16 = run;
+        end
         act$17 = 1'b0;
         if ((view$17 == 0) & (t$0$q == cyc$17)) begin
             act$17 = run;
         end
         if ((view$17 == 1) & (t$1$q == cyc$17)) begin
+            act$17 = run;
+        end
+        if ((view$17 == 2) & (t$2$q == cyc$17)) begin
             act$17 = run;
         end
         act$18 = 1'b0;
@@ -3040,11 +3154,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$18 == 1) & (t$1$q == cyc$18)) begin
             act$18 = run;
         end
+        if ((view$18 == 2) & (t$2$q == cyc$18)) begin
+            act$18 = run;
+        end
         act$19 = 1'b0;
         if ((view$19 == 0) & (t$0$q == cyc$19)) begin
             act$19 = run;
         end
         if ((view$19 == 1) & (t$1$q == cyc$19)) begin
+            act$19 = run;
+        end
+        if ((view$19 == 2) & (t$2$q == cyc$19)) begin
             act$19 = run;
         end
         act$20 = 1'b0;
@@ -3054,11 +3174,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$20 == 1) & (t$1$q == cyc$20)) begin
             act$20 = run;
         end
+        if ((view$20 == 2) & (t$2$q == cyc$20)) begin
+            act$20 = run;
+        end
         act$21 = 1'b0;
         if ((view$21 == 0) & (t$0$q == cyc$21)) begin
             act$21 = run;
         end
         if ((view$21 == 1) & (t$1$q == cyc$21)) begin
+            act$21 = run;
+        end
+        if ((view$21 == 2) & (t$2$q == cyc$21)) begin
             act$21 = run;
         end
         act$22 = 1'b0;
@@ -3068,11 +3194,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$22 == 1) & (t$1$q == cyc$22)) begin
             act$22 = run;
         end
+        if ((view$22 == 2) & (t$2$q == cyc$22)) begin
+            act$22 = run;
+        end
         act$23 = 1'b0;
         if ((view$23 == 0) & (t$0$q == cyc$23)) begin
             act$23 = run;
         end
         if ((view$23 == 1) & (t$1$q == cyc$23)) begin
+            act$23 = run;
+        end
+        if ((view$23 == 2) & (t$2$q == cyc$23)) begin
             act$23 = run;
         end
         act$24 = 1'b0;
@@ -3082,11 +3214,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$24 == 1) & (t$1$q == cyc$24)) begin
             act$24 = run;
         end
+        if ((view$24 == 2) & (t$2$q == cyc$24)) begin
+            act$24 = run;
+        end
         act$25 = 1'b0;
         if ((view$25 == 0) & (t$0$q == cyc$25)) begin
             act$25 = run;
         end
         if ((view$25 == 1) & (t$1$q == cyc$25)) begin
+            act$25 = run;
+        end
+        if ((view$25 == 2) & (t$2$q == cyc$25)) begin
             act$25 = run;
         end
         act$26 = 1'b0;
@@ -3096,11 +3234,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$26 == 1) & (t$1$q == cyc$26)) begin
             act$26 = run;
         end
+        if ((view$26 == 2) & (t$2$q == cyc$26)) begin
+            act$26 = run;
+        end
         act$27 = 1'b0;
         if ((view$27 == 0) & (t$0$q == cyc$27)) begin
             act$27 = run;
         end
         if ((view$27 == 1) & (t$1$q == cyc$27)) begin
+            act$27 = run;
+        end
+        if ((view$27 == 2) & (t$2$q == cyc$27)) begin
             act$27 = run;
         end
         act$28 = 1'b0;
@@ -3110,11 +3254,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$28 == 1) & (t$1$q == cyc$28)) begin
             act$28 = run;
         end
+        if ((view$28 == 2) & (t$2$q == cyc$28)) begin
+            act$28 = run;
+        end
         act$29 = 1'b0;
         if ((view$29 == 0) & (t$0$q == cyc$29)) begin
             act$29 = run;
         end
         if ((view$29 == 1) & (t$1$q == cyc$29)) begin
+            act$29 = run;
+        end
+        if ((view$29 == 2) & (t$2$q == cyc$29)) begin
             act$29 = run;
         end
         act$30 = 1'b0;
@@ -3124,11 +3274,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$30 == 1) & (t$1$q == cyc$30)) begin
             act$30 = run;
         end
+        if ((view$30 == 2) & (t$2$q == cyc$30)) begin
+            act$30 = run;
+        end
         act$31 = 1'b0;
         if ((view$31 == 0) & (t$0$q == cyc$31)) begin
             act$31 = run;
         end
         if ((view$31 == 1) & (t$1$q == cyc$31)) begin
+            act$31 = run;
+        end
+        if ((view$31 == 2) & (t$2$q == cyc$31)) begin
             act$31 = run;
         end
         act$32 = 1'b0;
@@ -3138,11 +3294,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$32 == 1) & (t$1$q == cyc$32)) begin
             act$32 = run;
         end
+        if ((view$32 == 2) & (t$2$q == cyc$32)) begin
+            act$32 = run;
+        end
         act$33 = 1'b0;
         if ((view$33 == 0) & (t$0$q == cyc$33)) begin
             act$33 = run;
         end
         if ((view$33 == 1) & (t$1$q == cyc$33)) begin
+            act$33 = run;
+        end
+        if ((view$33 == 2) & (t$2$q == cyc$33)) begin
             act$33 = run;
         end
         act$34 = 1'b0;
@@ -3152,11 +3314,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$34 == 1) & (t$1$q == cyc$34)) begin
             act$34 = run;
         end
+        if ((view$34 == 2) & (t$2$q == cyc$34)) begin
+            act$34 = run;
+        end
         act$35 = 1'b0;
         if ((view$35 == 0) & (t$0$q == cyc$35)) begin
             act$35 = run;
         end
         if ((view$35 == 1) & (t$1$q == cyc$35)) begin
+            act$35 = run;
+        end
+        if ((view$35 == 2) & (t$2$q == cyc$35)) begin
             act$35 = run;
         end
         act$36 = 1'b0;
@@ -3166,11 +3334,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$36 == 1) & (t$1$q == cyc$36)) begin
             act$36 = run;
         end
+        if ((view$36 == 2) & (t$2$q == cyc$36)) begin
+            act$36 = run;
+        end
         act$37 = 1'b0;
         if ((view$37 == 0) & (t$0$q == cyc$37)) begin
             act$37 = run;
         end
         if ((view$37 == 1) & (t$1$q == cyc$37)) begin
+            act$37 = run;
+        end
+        if ((view$37 == 2) & (t$2$q == cyc$37)) begin
             act$37 = run;
         end
         act$38 = 1'b0;
@@ -3180,11 +3354,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$38 == 1) & (t$1$q == cyc$38)) begin
             act$38 = run;
         end
+        if ((view$38 == 2) & (t$2$q == cyc$38)) begin
+            act$38 = run;
+        end
         act$39 = 1'b0;
         if ((view$39 == 0) & (t$0$q == cyc$39)) begin
             act$39 = run;
         end
         if ((view$39 == 1) & (t$1$q == cyc$39)) begin
+            act$39 = run;
+        end
+        if ((view$39 == 2) & (t$2$q == cyc$39)) begin
             act$39 = run;
         end
         act$40 = 1'b0;
@@ -3194,11 +3374,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$40 == 1) & (t$1$q == cyc$40)) begin
             act$40 = run;
         end
+        if ((view$40 == 2) & (t$2$q == cyc$40)) begin
+            act$40 = run;
+        end
         act$41 = 1'b0;
         if ((view$41 == 0) & (t$0$q == cyc$41)) begin
             act$41 = run;
         end
         if ((view$41 == 1) & (t$1$q == cyc$41)) begin
+            act$41 = run;
+        end
+        if ((view$41 == 2) & (t$2$q == cyc$41)) begin
             act$41 = run;
         end
         act$42 = 1'b0;
@@ -3208,11 +3394,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$42 == 1) & (t$1$q == cyc$42)) begin
             act$42 = run;
         end
+        if ((view$42 == 2) & (t$2$q == cyc$42)) begin
+            act$42 = run;
+        end
         act$43 = 1'b0;
         if ((view$43 == 0) & (t$0$q == cyc$43)) begin
             act$43 = run;
         end
         if ((view$43 == 1) & (t$1$q == cyc$43)) begin
+            act$43 = run;
+        end
+        if ((view$43 == 2) & (t$2$q == cyc$43)) begin
             act$43 = run;
         end
         act$44 = 1'b0;
@@ -3222,11 +3414,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$44 == 1) & (t$1$q == cyc$44)) begin
             act$44 = run;
         end
+        if ((view$44 == 2) & (t$2$q == cyc$44)) begin
+            act$44 = run;
+        end
         act$45 = 1'b0;
         if ((view$45 == 0) & (t$0$q == cyc$45)) begin
             act$45 = run;
         end
         if ((view$45 == 1) & (t$1$q == cyc$45)) begin
+            act$45 = run;
+        end
+        if ((view$45 == 2) & (t$2$q == cyc$45)) begin
             act$45 = run;
         end
         act$46 = 1'b0;
@@ -3236,11 +3434,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$46 == 1) & (t$1$q == cyc$46)) begin
             act$46 = run;
         end
+        if ((view$46 == 2) & (t$2$q == cyc$46)) begin
+            act$46 = run;
+        end
         act$47 = 1'b0;
         if ((view$47 == 0) & (t$0$q == cyc$47)) begin
             act$47 = run;
         end
         if ((view$47 == 1) & (t$1$q == cyc$47)) begin
+            act$47 = run;
+        end
+        if ((view$47 == 2) & (t$2$q == cyc$47)) begin
             act$47 = run;
         end
         act$48 = 1'b0;
@@ -3250,11 +3454,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$48 == 1) & (t$1$q == cyc$48)) begin
             act$48 = run;
         end
+        if ((view$48 == 2) & (t$2$q == cyc$48)) begin
+            act$48 = run;
+        end
         act$49 = 1'b0;
         if ((view$49 == 0) & (t$0$q == cyc$49)) begin
             act$49 = run;
         end
         if ((view$49 == 1) & (t$1$q == cyc$49)) begin
+            act$49 = run;
+        end
+        if ((view$49 == 2) & (t$2$q == cyc$49)) begin
             act$49 = run;
         end
         act$50 = 1'b0;
@@ -3264,11 +3474,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$50 == 1) & (t$1$q == cyc$50)) begin
             act$50 = run;
         end
+        if ((view$50 == 2) & (t$2$q == cyc$50)) begin
+            act$50 = run;
+        end
         act$51 = 1'b0;
         if ((view$51 == 0) & (t$0$q == cyc$51)) begin
             act$51 = run;
         end
         if ((view$51 == 1) & (t$1$q == cyc$51)) begin
+            act$51 = run;
+        end
+        if ((view$51 == 2) & (t$2$q == cyc$51)) begin
             act$51 = run;
         end
         act$52 = 1'b0;
@@ -3278,11 +3494,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$52 == 1) & (t$1$q == cyc$52)) begin
             act$52 = run;
         end
+        if ((view$52 == 2) & (t$2$q == cyc$52)) begin
+            act$52 = run;
+        end
         act$53 = 1'b0;
         if ((view$53 == 0) & (t$0$q == cyc$53)) begin
             act$53 = run;
         end
         if ((view$53 == 1) & (t$1$q == cyc$53)) begin
+            act$53 = run;
+        end
+        if ((view$53 == 2) & (t$2$q == cyc$53)) begin
             act$53 = run;
         end
         act$54 = 1'b0;
@@ -3292,11 +3514,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$54 == 1) & (t$1$q == cyc$54)) begin
             act$54 = run;
         end
+        if ((view$54 == 2) & (t$2$q == cyc$54)) begin
+            act$54 = run;
+        end
         act$55 = 1'b0;
         if ((view$55 == 0) & (t$0$q == cyc$55)) begin
             act$55 = run;
         end
         if ((view$55 == 1) & (t$1$q == cyc$55)) begin
+            act$55 = run;
+        end
+        if ((view$55 == 2) & (t$2$q == cyc$55)) begin
             act$55 = run;
         end
         act$56 = 1'b0;
@@ -3306,11 +3534,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$56 == 1) & (t$1$q == cyc$56)) begin
             act$56 = run;
         end
+        if ((view$56 == 2) & (t$2$q == cyc$56)) begin
+            act$56 = run;
+        end
         act$57 = 1'b0;
         if ((view$57 == 0) & (t$0$q == cyc$57)) begin
             act$57 = run;
         end
         if ((view$57 == 1) & (t$1$q == cyc$57)) begin
+            act$57 = run;
+        end
+        if ((view$57 == 2) & (t$2$q == cyc$57)) begin
             act$57 = run;
         end
         act$58 = 1'b0;
@@ -3320,11 +3554,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$58 == 1) & (t$1$q == cyc$58)) begin
             act$58 = run;
         end
+        if ((view$58 == 2) & (t$2$q == cyc$58)) begin
+            act$58 = run;
+        end
         act$59 = 1'b0;
         if ((view$59 == 0) & (t$0$q == cyc$59)) begin
             act$59 = run;
         end
         if ((view$59 == 1) & (t$1$q == cyc$59)) begin
+            act$59 = run;
+        end
+        if ((view$59 == 2) & (t$2$q == cyc$59)) begin
             act$59 = run;
         end
         act$60 = 1'b0;
@@ -3334,11 +3574,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$60 == 1) & (t$1$q == cyc$60)) begin
             act$60 = run;
         end
+        if ((view$60 == 2) & (t$2$q == cyc$60)) begin
+            act$60 = run;
+        end
         act$61 = 1'b0;
         if ((view$61 == 0) & (t$0$q == cyc$61)) begin
             act$61 = run;
         end
         if ((view$61 == 1) & (t$1$q == cyc$61)) begin
+            act$61 = run;
+        end
+        if ((view$61 == 2) & (t$2$q == cyc$61)) begin
             act$61 = run;
         end
         act$62 = 1'b0;
@@ -3348,11 +3594,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view$62 == 1) & (t$1$q == cyc$62)) begin
             act$62 = run;
         end
+        if ((view$62 == 2) & (t$2$q == cyc$62)) begin
+            act$62 = run;
+        end
         act$63 = 1'b0;
         if ((view$63 == 0) & (t$0$q == cyc$63)) begin
             act$63 = run;
         end
         if ((view$63 == 1) & (t$1$q == cyc$63)) begin
+            act$63 = run;
+        end
+        if ((view$63 == 2) & (t$2$q == cyc$63)) begin
             act$63 = run;
         end
         at_norm = run & (t$0$q == normalise);
@@ -3364,12 +3616,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_res$0 == 1) & (t$1$q == res$0)) begin
             at_res$0 = run;
         end
+        if ((view_res$0 == 2) & (t$2$q == res$0)) begin
+            at_res$0 = run;
+        end
         at_iss$1 = run & (t$0$q == iss$1);
         at_res$1 = 1'b0;
         if ((view_res$1 == 0) & (t$0$q == res$1)) begin
             at_res$1 = run;
         end
         if ((view_res$1 == 1) & (t$1$q == res$1)) begin
+            at_res$1 = run;
+        end
+        if ((view_res$1 == 2) & (t$2$q == res$1)) begin
             at_res$1 = run;
         end
         at_iss$2 = run & (t$0$q == iss$2);
@@ -3380,12 +3638,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_res$2 == 1) & (t$1$q == res$2)) begin
             at_res$2 = run;
         end
+        if ((view_res$2 == 2) & (t$2$q == res$2)) begin
+            at_res$2 = run;
+        end
         at_iss$3 = run & (t$0$q == iss$3);
         at_res$3 = 1'b0;
         if ((view_res$3 == 0) & (t$0$q == res$3)) begin
             at_res$3 = run;
         end
         if ((view_res$3 == 1) & (t$1$q == res$3)) begin
+            at_res$3 = run;
+        end
+        if ((view_res$3 == 2) & (t$2$q == res$3)) begin
             at_res$3 = run;
         end
         at_iss$4 = run & (t$0$q == iss$4);
@@ -3396,12 +3660,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_res$4 == 1) & (t$1$q == res$4)) begin
             at_res$4 = run;
         end
+        if ((view_res$4 == 2) & (t$2$q == res$4)) begin
+            at_res$4 = run;
+        end
         at_iss$5 = run & (t$0$q == iss$5);
         at_res$5 = 1'b0;
         if ((view_res$5 == 0) & (t$0$q == res$5)) begin
             at_res$5 = run;
         end
         if ((view_res$5 == 1) & (t$1$q == res$5)) begin
+            at_res$5 = run;
+        end
+        if ((view_res$5 == 2) & (t$2$q == res$5)) begin
             at_res$5 = run;
         end
         at_iss$6 = run & (t$0$q == iss$6);
@@ -3412,11 +3682,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_res$6 == 1) & (t$1$q == res$6)) begin
             at_res$6 = run;
         end
+        if ((view_res$6 == 2) & (t$2$q == res$6)) begin
+            at_res$6 = run;
+        end
         at_handover = 1'b0;
         if ((view_handover == 0) & (t$0$q == handover)) begin
             at_handover = run;
         end
         if ((view_handover == 1) & (t$1$q == handover)) begin
+            at_handover = run;
+        end
+        if ((view_handover == 2) & (t$2$q == handover)) begin
             at_handover = run;
         end
         g0$vx$0 = vx$0$q;
@@ -3625,54 +3901,62 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         div$out_ready = 1'b1;
         div$hold = ~run;
-        div$inp_valid = 1'b0;
-        div$inp_n = 32'h0;
-        div$inp_d = 32'h1;
+        div$inp_valid = div_v$q;
+        div$inp_n = div_n$q;
+        div$inp_d = div_d$q;
+        div_v$d = div_v$q;
+        div_n$d = div_n$q;
+        div_d$d = div_d$q;
+        if (run) begin
+            div_v$d = 1'b0;
+            div_n$d = 32'h0;
+            div_d$d = 32'h1;
+        end
         if (at_iss$0) begin
-            div$inp_valid = 1'b1;
-            div$inp_n = recip_n;
-            div$inp_d = norm$q;
+            div_v$d = 1'b1;
+            div_n$d = recip_n;
+            div_d$d = norm$q;
         end
         if (at_iss$1) begin
-            div$inp_valid = 1'b1;
+            div_v$d = 1'b1;
             if (g0$count$0 != 32'h0) begin
-                div$inp_n = num$0$q[(32'h0)+:(58)];
-                div$inp_d = g0$ed16$0;
+                div_n$d = num$0$q[(32'h0)+:(58)];
+                div_d$d = g0$ed16$0;
             end
         end
         if (at_iss$2) begin
-            div$inp_valid = 1'b1;
+            div_v$d = 1'b1;
             if (g0$count$0 > 32'h1) begin
-                div$inp_n = g0$edx$0[(32'h0)+:(58)];
-                div$inp_d = g0$edy_d$0;
+                div_n$d = g0$edx$0[(32'h0)+:(58)];
+                div_d$d = g0$edy_d$0;
             end
         end
         if (at_iss$3) begin
-            div$inp_valid = 1'b1;
+            div_v$d = 1'b1;
             if (g0$count$1 != 32'h0) begin
-                div$inp_n = num$1$q[(32'h0)+:(58)];
-                div$inp_d = g0$ed16$1;
+                div_n$d = num$1$q[(32'h0)+:(58)];
+                div_d$d = g0$ed16$1;
             end
         end
         if (at_iss$4) begin
-            div$inp_valid = 1'b1;
+            div_v$d = 1'b1;
             if (g0$count$1 > 32'h1) begin
-                div$inp_n = g0$edx$1[(32'h0)+:(58)];
-                div$inp_d = g0$edy_d$1;
+                div_n$d = g0$edx$1[(32'h0)+:(58)];
+                div_d$d = g0$edy_d$1;
             end
         end
         if (at_iss$5) begin
-            div$inp_valid = 1'b1;
+            div_v$d = 1'b1;
             if (g0$count$2 != 32'h0) begin
-                div$inp_n = num$2$q[(32'h0)+:(58)];
-                div$inp_d = g0$ed16$2;
+                div_n$d = num$2$q[(32'h0)+:(58)];
+                div_d$d = g0$ed16$2;
             end
         end
         if (at_iss$6) begin
-            div$inp_valid = 1'b1;
+            div_v$d = 1'b1;
             if (g0$count$2 > 32'h1) begin
-                div$inp_n = g0$edx$2[(32'h0)+:(58)];
-                div$inp_d = g0$edy_d$2;
+                div_n$d = g0$edx$2[(32'h0)+:(58)];
+                div_d$d = g0$edy_d$2;
             end
         end
         q_n = ((div$out_q[(32'h0)+:(19)]) & 19'h7ffff);
@@ -3692,6 +3976,10 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             if (view_res$0 == 1) begin
                 exp_now = exp$1$q;
                 exp_e$d = exp$1$q;
+            end
+            if (view_res$0 == 2) begin
+                exp_now = exp$2$q;
+                exp_e$d = exp$2$q;
             end
         end
         lsh = eq_shift - exp_now;
@@ -8727,6 +9015,63 @@ module triangle_setup$div$stages$4$x_r(d,q,clock);
     end
           
 endmodule // triangle_setup$div$stages$4$x_r
+
+
+module triangle_setup$div_d(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div_d
+
+
+module triangle_setup$div_n(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div_n
+
+
+module triangle_setup$div_v(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div_v
 
 
 module triangle_setup$exp$0(d,q,clock);

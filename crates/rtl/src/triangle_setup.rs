@@ -38,33 +38,34 @@
 //! multiplier does twice the area and the six edge numerators, the other six eq. (2), the
 //! gradients and the starts, so that setup can take the next triangle in the cycle this one
 //! reaches cycle 10 (II) and two are in flight. Twice the area is normalised into a register
-//! (cycle 3), off the path into the divider's first stage:
+//! (cycle 3), and each division's operands into the divider's operand register
+//! ([`DIVIDER_OPERANDS`]), so that no path runs from the vertices into the divider:
 //!
 //! ```text
-//!  cycle       0    1  2   3     4   5  6  7  8  9   10  11  12  13 ... 18   19        20
-//!  input       take                                  take (the next triangle)
+//!  cycle       0    1  2   3     4   5  6  7  8  9  10   11 12 13  14 ... 19  20        21
+//!  input       take                                   take (the next triangle)
 //!  mult. 0          area   numerators: edge 0, 1, 2
 //!  normalise               norm
-//!  mult. 1-6                                     eq2 gradients   starts, increments
-//!  div. issue                    1/a s0 q0 s1 q1 s2  q2
-//!  div. result                                   1/a     s0  q0  s1 ... q2 (15)
-//!  output                                                                 hand-over valid
+//!  div. issue                    1/a s0 q0 s1 q1 s2 q2
+//!  div. result                                        1/a  s0 q0 s1 ...  q2 (16)
+//!  mult. 1-6                                          eq2  gradients starts, increments
+//!  output                                                                   hand-over valid
 //! ```
 //!
-//! Latency 20 (001 Table 3: 34), II 10: the six multipliers' 60 slots hold the 56 products
+//! Latency 21 (001 Table 3: 34), II 10: the six multipliers' 60 slots hold the 56 products
 //! of eq. (2) to the starts, and the divider takes the seven divisions in 7 cycles. The
 //! triangle's registers (vertices, crossings, the area's sign and exponent) are copied every
 //! II cycles, `Schedule::copies` of them: cycle c reads copy (c - 1) / II through that
 //! copy's [`Geometry`] (`g0` to `g3`), since by then the next triangle is in the copy before.
 //! Each other register is written by the next triangle only after this one has read it for
 //! the last time, which `Schedule::build` checks and II covers. So a deeper divider (for a
-//! faster clock) keeps II at 10: latency 5 + L + 10, four copies at L = 25. While a result
-//! waits for the edge walk, all of setup waits (`run` low: counters, registers and the
-//! divider hold), the triangles behind it too. With fewer multipliers the sequential
-//! schedule (each phase on all of them in turn, II = latency - 2) can be the better one: `K`
-//! (1 to 7, `model::cycles::SETUP_MULTIPLIERS_MAX`: with more, the last edge's products
-//! would wait for its divisions) trades latency and II for area, 66 cycles and II 64 with
-//! one multiplier; the divider's `L` stages likewise.
+//! faster clock) keeps II at 10: latency 6 + L + 10, four copies up to L = 24 (at 25, II
+//! 11). While a result waits for the edge walk, all of setup waits (`run` low: counters,
+//! registers, the divider and its operand register hold), the triangles behind it too.
+//! With fewer multipliers the sequential schedule (each phase on all of them in turn, II =
+//! latency - 2) can be the better one: `K` (1 to 7, `model::cycles::SETUP_MULTIPLIERS_MAX`:
+//! with more, the last edge's products would wait for its divisions) trades latency and II
+//! for area, 67 cycles and II 65 with one multiplier; the divider's `L` stages likewise.
 //!
 //! Model: `model::triangle_setup::triangle_setup`. Emitted: `hdl-out/triangle_setup.v`.
 
@@ -152,6 +153,10 @@ const PHASES: [usize; 5] = [2, 6, 4, 16, 36];
 /// last edge's products would wait for its divisions, which go one per cycle.
 pub const MULTIPLIERS_MAX: usize = 7;
 
+/// Cycles from a division's issue into the divider: its operands are registered, so that
+/// no path runs from the geometry into the divider's first stage.
+pub const DIVIDER_OPERANDS: usize = 1;
+
 /// Most copies of a triangle's registers (`model::cycles::SETUP_COPIES_MAX`): II is at
 /// least a quarter of the latency.
 pub const COPIES_MAX: usize = 4;
@@ -198,12 +203,12 @@ impl Schedule {
             issue[j] = (issue[j - 1] + 1).max(ready);
         }
         // eq. (2) once 1/area is back and the multipliers are free.
-        let eq2 = (issue[0] + l).max(if split { 1 } else { numerators_end });
+        let result = |j: usize| issue[j] + DIVIDER_OPERANDS + l;
+        let eq2 = result(0).max(if split { 1 } else { numerators_end });
         let grad = place(&mut slots, eq2, PHASES[2], &late);
         let start = place(&mut slots, grad, PHASES[3], &late);
         let handover = place(&mut slots, start, PHASES[4], &late);
         let latency = handover + 1;
-        let result = |j: usize| issue[j] + l;
         // Edge e's 12 start products need both its quotients, registered.
         for e in 0..3 {
             let (first, back) = (slots[PRODUCTS - PHASES[4] + 12 * e].0, result(2 + 2 * e) + 1);
@@ -243,7 +248,7 @@ impl Schedule {
 
     /// The cycle a division's result is at the divider's output.
     pub fn result(&self, division: usize) -> usize {
-        self.issue[division] + self.divider_latency
+        self.issue[division] + DIVIDER_OPERANDS + self.divider_latency
     }
 
     /// The copy of the triangle's registers cycle `c` (1 to the latency) reads.
@@ -304,6 +309,11 @@ pub struct TriangleSetup {
     exp_c: Signal<Local, Bits<6>>,
     norm_d: Signal<Local, Bits<DIV_D>>,
     norm: DFF<Bits<DIV_D>>,
+
+    /// The divider's operands, registered ([`DIVIDER_OPERANDS`]).
+    div_v: DFF<Bit>,
+    div_n: DFF<Bits<DIV_N>>,
+    div_d: DFF<Bits<DIV_D>>,
 
     // Divider results.
     /// 1/area's mantissa and the area's exponent, held from 1/area's return for eq. (2).
@@ -450,6 +460,9 @@ impl TriangleSetup {
             exp_c: Default::default(),
             norm_d: Default::default(),
             norm: Default::default(),
+            div_v: Default::default(),
+            div_n: Default::default(),
+            div_d: Default::default(),
             mant: Default::default(),
             mant_now: Default::default(),
             exp_e: Default::default(),
@@ -524,7 +537,7 @@ impl Logic for TriangleSetup {
     #[hdl_gen]
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written.
-        dff_setup!(self, clock, area, norm, mant, exp_e);
+        dff_setup!(self, clock, area, norm, div_v, div_n, div_d, mant, exp_e);
         clock!(self, clock, div);
         for v in 0..COPIES_MAX {
             self.t[v].clock.next = self.clock.val();
@@ -728,31 +741,40 @@ impl Logic for TriangleSetup {
         }
 
         // ---- The divider: seven divisions issued in the first II cycles (copy 0,
-        // `Schedule::build`), results taken in any.
+        // `Schedule::build`) into its operand register (held, as the divider is, while
+        // setup waits), results taken in any.
         self.div.out_ready.next = true;
         self.div.hold.next = !self.run.val();
-        self.div.inp_valid.next = false;
-        self.div.inp_n.next = 0.into();
-        self.div.inp_d.next = 1.into();
+        self.div.inp_valid.next = self.div_v.q.val();
+        self.div.inp_n.next = self.div_n.q.val();
+        self.div.inp_d.next = self.div_d.q.val();
+        self.div_v.d.next = self.div_v.q.val();
+        self.div_n.d.next = self.div_n.q.val();
+        self.div_d.d.next = self.div_d.q.val();
+        if self.run.val() {
+            self.div_v.d.next = false;
+            self.div_n.d.next = 0.into();
+            self.div_d.d.next = 1.into();
+        }
         if self.at_iss[0].val() {
-            self.div.inp_valid.next = true;
-            self.div.inp_n.next = self.recip_n.val();
-            self.div.inp_d.next = self.norm.q.val();
+            self.div_v.d.next = true;
+            self.div_n.d.next = self.recip_n.val();
+            self.div_d.d.next = self.norm.q.val();
         }
         for e in 0..3 {
             // Unused divisions go in as 0/1 (`model::divider`).
             if self.at_iss[1 + 2 * e].val() {
-                self.div.inp_valid.next = true;
+                self.div_v.d.next = true;
                 if self.g0.count[e].val() != 0 {
-                    self.div.inp_n.next = self.num[e].q.val().get_bits::<DIV_N>(0);
-                    self.div.inp_d.next = self.g0.ed16[e].val();
+                    self.div_n.d.next = self.num[e].q.val().get_bits::<DIV_N>(0);
+                    self.div_d.d.next = self.g0.ed16[e].val();
                 }
             }
             if self.at_iss[2 + 2 * e].val() {
-                self.div.inp_valid.next = true;
+                self.div_v.d.next = true;
                 if self.g0.count[e].val() > 1 {
-                    self.div.inp_n.next = self.g0.edx[e].val().get_bits::<DIV_N>(0);
-                    self.div.inp_d.next = self.g0.edy_d[e].val();
+                    self.div_n.d.next = self.g0.edx[e].val().get_bits::<DIV_N>(0);
+                    self.div_d.d.next = self.g0.edy_d[e].val();
                 }
             }
         }
