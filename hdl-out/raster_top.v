@@ -8353,6 +8353,252 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [7:0] t$3$d;
     wire  [7:0] t$3$q;
     reg  t$3$clock;
+    reg  act_r$0$d;
+    wire  act_r$0$q;
+    reg  act_r$0$clock;
+    reg  act_r$1$d;
+    wire  act_r$1$q;
+    reg  act_r$1$clock;
+    reg  act_r$2$d;
+    wire  act_r$2$q;
+    reg  act_r$2$clock;
+    reg  act_r$3$d;
+    wire  act_r$3$q;
+    reg  act_r$3$clock;
+    reg  act_r$4$d;
+    wire  act_r$4$q;
+    reg  act_r$4$clock;
+    reg  act_r$5$d;
+    wire  act_r$5$q;
+    reg  act_r$5$clock;
+    reg  act_r$6$d;
+    wire  act_r$6$q;
+    reg  act_r$6$clock;
+    reg  act_r$7$d;
+    wire  act_r$7$q;
+    reg  act_r$7$clock;
+    reg  act_r$8$d;
+    wire  act_r$8$q;
+    reg  act_r$8$clock;
+    reg  act_r$9$d;
+    wire  act_r$9$q;
+    reg  act_r$9$clock;
+    reg  act_r$10$d;
+    wire  act_r$10$q;
+    reg  act_r$10$clock;
+    reg  act_r$11$d;
+    wire  act_r$11$q;
+    reg  act_r$11$clock;
+    reg  act_r$12$d;
+    wire  act_r$12$q;
+    reg  act_r$12$clock;
+    reg  act_r$13$d;
+    wire  act_r$13$q;
+    reg  act_r$13$clock;
+    reg  act_r$14$d;
+    wire  act_r$14$q;
+    reg  act_r$14$clock;
+    reg  act_r$15$d;
+    wire  act_r$15$q;
+    reg  act_r$15$clock;
+    reg  act_r$16$d;
+    wire  act_r$16$q;
+    reg  act_r$16$clock;
+    reg  act_r$17$d;
+    wire  act_r$17$q;
+    reg  act_r$17$clock;
+    reg  act_r$18$d;
+    wire  act_r$18$q;
+    reg  act_r$18$clock;
+    reg  act_r$19$d;
+    wire  act_r$19$q;
+    reg  act_r$19$clock;
+    reg  act_r$20$d;
+    wire  act_r$20$q;
+    reg  act_r$20$clock;
+    reg  act_r$21$d;
+    wire  act_r$21$q;
+    reg  act_r$21$clock;
+    reg  act_r$22$d;
+    wire  act_r$22$q;
+    reg  act_r$22$clock;
+    reg  act_r$23$d;
+    wire  act_r$23$q;
+    reg  act_r$23$clock;
+    reg  act_r$24$d;
+    wire  act_r$24$q;
+    reg  act_r$24$clock;
+    reg  act_r$25$d;
+    wire  act_r$25$q;
+    reg  act_r$25$clock;
+    reg  act_r$26$d;
+    wire  act_r$26$q;
+    reg  act_r$26$clock;
+    reg  act_r$27$d;
+    wire  act_r$27$q;
+    reg  act_r$27$clock;
+    reg  act_r$28$d;
+    wire  act_r$28$q;
+    reg  act_r$28$clock;
+    reg  act_r$29$d;
+    wire  act_r$29$q;
+    reg  act_r$29$clock;
+    reg  act_r$30$d;
+    wire  act_r$30$q;
+    reg  act_r$30$clock;
+    reg  act_r$31$d;
+    wire  act_r$31$q;
+    reg  act_r$31$clock;
+    reg  act_r$32$d;
+    wire  act_r$32$q;
+    reg  act_r$32$clock;
+    reg  act_r$33$d;
+    wire  act_r$33$q;
+    reg  act_r$33$clock;
+    reg  act_r$34$d;
+    wire  act_r$34$q;
+    reg  act_r$34$clock;
+    reg  act_r$35$d;
+    wire  act_r$35$q;
+    reg  act_r$35$clock;
+    reg  act_r$36$d;
+    wire  act_r$36$q;
+    reg  act_r$36$clock;
+    reg  act_r$37$d;
+    wire  act_r$37$q;
+    reg  act_r$37$clock;
+    reg  act_r$38$d;
+    wire  act_r$38$q;
+    reg  act_r$38$clock;
+    reg  act_r$39$d;
+    wire  act_r$39$q;
+    reg  act_r$39$clock;
+    reg  act_r$40$d;
+    wire  act_r$40$q;
+    reg  act_r$40$clock;
+    reg  act_r$41$d;
+    wire  act_r$41$q;
+    reg  act_r$41$clock;
+    reg  act_r$42$d;
+    wire  act_r$42$q;
+    reg  act_r$42$clock;
+    reg  act_r$43$d;
+    wire  act_r$43$q;
+    reg  act_r$43$clock;
+    reg  act_r$44$d;
+    wire  act_r$44$q;
+    reg  act_r$44$clock;
+    reg  act_r$45$d;
+    wire  act_r$45$q;
+    reg  act_r$45$clock;
+    reg  act_r$46$d;
+    wire  act_r$46$q;
+    reg  act_r$46$clock;
+    reg  act_r$47$d;
+    wire  act_r$47$q;
+    reg  act_r$47$clock;
+    reg  act_r$48$d;
+    wire  act_r$48$q;
+    reg  act_r$48$clock;
+    reg  act_r$49$d;
+    wire  act_r$49$q;
+    reg  act_r$49$clock;
+    reg  act_r$50$d;
+    wire  act_r$50$q;
+    reg  act_r$50$clock;
+    reg  act_r$51$d;
+    wire  act_r$51$q;
+    reg  act_r$51$clock;
+    reg  act_r$52$d;
+    wire  act_r$52$q;
+    reg  act_r$52$clock;
+    reg  act_r$53$d;
+    wire  act_r$53$q;
+    reg  act_r$53$clock;
+    reg  act_r$54$d;
+    wire  act_r$54$q;
+    reg  act_r$54$clock;
+    reg  act_r$55$d;
+    wire  act_r$55$q;
+    reg  act_r$55$clock;
+    reg  act_r$56$d;
+    wire  act_r$56$q;
+    reg  act_r$56$clock;
+    reg  act_r$57$d;
+    wire  act_r$57$q;
+    reg  act_r$57$clock;
+    reg  act_r$58$d;
+    wire  act_r$58$q;
+    reg  act_r$58$clock;
+    reg  act_r$59$d;
+    wire  act_r$59$q;
+    reg  act_r$59$clock;
+    reg  act_r$60$d;
+    wire  act_r$60$q;
+    reg  act_r$60$clock;
+    reg  act_r$61$d;
+    wire  act_r$61$q;
+    reg  act_r$61$clock;
+    reg  act_r$62$d;
+    wire  act_r$62$q;
+    reg  act_r$62$clock;
+    reg  act_r$63$d;
+    wire  act_r$63$q;
+    reg  act_r$63$clock;
+    reg  norm_r$d;
+    wire  norm_r$q;
+    reg  norm_r$clock;
+    reg  iss_r$0$d;
+    wire  iss_r$0$q;
+    reg  iss_r$0$clock;
+    reg  iss_r$1$d;
+    wire  iss_r$1$q;
+    reg  iss_r$1$clock;
+    reg  iss_r$2$d;
+    wire  iss_r$2$q;
+    reg  iss_r$2$clock;
+    reg  iss_r$3$d;
+    wire  iss_r$3$q;
+    reg  iss_r$3$clock;
+    reg  iss_r$4$d;
+    wire  iss_r$4$q;
+    reg  iss_r$4$clock;
+    reg  iss_r$5$d;
+    wire  iss_r$5$q;
+    reg  iss_r$5$clock;
+    reg  iss_r$6$d;
+    wire  iss_r$6$q;
+    reg  iss_r$6$clock;
+    reg  res_r$0$d;
+    wire  res_r$0$q;
+    reg  res_r$0$clock;
+    reg  res_r$1$d;
+    wire  res_r$1$q;
+    reg  res_r$1$clock;
+    reg  res_r$2$d;
+    wire  res_r$2$q;
+    reg  res_r$2$clock;
+    reg  res_r$3$d;
+    wire  res_r$3$q;
+    reg  res_r$3$clock;
+    reg  res_r$4$d;
+    wire  res_r$4$q;
+    reg  res_r$4$clock;
+    reg  res_r$5$d;
+    wire  res_r$5$q;
+    reg  res_r$5$clock;
+    reg  res_r$6$d;
+    wire  res_r$6$q;
+    reg  res_r$6$clock;
+    reg  handover_r$d;
+    wire  handover_r$q;
+    reg  handover_r$clock;
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  free_r$d;
+    wire  free_r$q;
+    reg  free_r$clock;
     reg  [15:0] vx$0$d;
     wire  [15:0] vx$0$q;
     reg  vx$0$clock;
@@ -9468,6 +9714,416 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .q(t$3$q),
         .clock(t$3$clock)
     );
+    raster_top$core$triangle_setup$act_r$0 act_r$0(
+        .d(act_r$0$d),
+        .q(act_r$0$q),
+        .clock(act_r$0$clock)
+    );
+    raster_top$core$triangle_setup$act_r$1 act_r$1(
+        .d(act_r$1$d),
+        .q(act_r$1$q),
+        .clock(act_r$1$clock)
+    );
+    raster_top$core$triangle_setup$act_r$2 act_r$2(
+        .d(act_r$2$d),
+        .q(act_r$2$q),
+        .clock(act_r$2$clock)
+    );
+    raster_top$core$triangle_setup$act_r$3 act_r$3(
+        .d(act_r$3$d),
+        .q(act_r$3$q),
+        .clock(act_r$3$clock)
+    );
+    raster_top$core$triangle_setup$act_r$4 act_r$4(
+        .d(act_r$4$d),
+        .q(act_r$4$q),
+        .clock(act_r$4$clock)
+    );
+    raster_top$core$triangle_setup$act_r$5 act_r$5(
+        .d(act_r$5$d),
+        .q(act_r$5$q),
+        .clock(act_r$5$clock)
+    );
+    raster_top$core$triangle_setup$act_r$6 act_r$6(
+        .d(act_r$6$d),
+        .q(act_r$6$q),
+        .clock(act_r$6$clock)
+    );
+    raster_top$core$triangle_setup$act_r$7 act_r$7(
+        .d(act_r$7$d),
+        .q(act_r$7$q),
+        .clock(act_r$7$clock)
+    );
+    raster_top$core$triangle_setup$act_r$8 act_r$8(
+        .d(act_r$8$d),
+        .q(act_r$8$q),
+        .clock(act_r$8$clock)
+    );
+    raster_top$core$triangle_setup$act_r$9 act_r$9(
+        .d(act_r$9$d),
+        .q(act_r$9$q),
+        .clock(act_r$9$clock)
+    );
+    raster_top$core$triangle_setup$act_r$10 act_r$10(
+        .d(act_r$10$d),
+        .q(act_r$10$q),
+        .clock(act_r$10$clock)
+    );
+    raster_top$core$triangle_setup$act_r$11 act_r$11(
+        .d(act_r$11$d),
+        .q(act_r$11$q),
+        .clock(act_r$11$clock)
+    );
+    raster_top$core$triangle_setup$act_r$12 act_r$12(
+        .d(act_r$12$d),
+        .q(act_r$12$q),
+        .clock(act_r$12$clock)
+    );
+    raster_top$core$triangle_setup$act_r$13 act_r$13(
+        .d(act_r$13$d),
+        .q(act_r$13$q),
+        .clock(act_r$13$clock)
+    );
+    raster_top$core$triangle_setup$act_r$14 act_r$14(
+        .d(act_r$14$d),
+        .q(act_r$14$q),
+        .clock(act_r$14$clock)
+    );
+    raster_top$core$triangle_setup$act_r$15 act_r$15(
+        .d(act_r$15$d),
+        .q(act_r$15$q),
+        .clock(act_r$15$clock)
+    );
+    raster_top$core$triangle_setup$act_r$16 act_r$16(
+        .d(act_r$16$d),
+        .q(act_r$16$q),
+        .clock(act_r$16$clock)
+    );
+    raster_top$core$triangle_setup$act_r$17 act_r$17(
+        .d(act_r$17$d),
+        .q(act_r$17$q),
+        .clock(act_r$17$clock)
+    );
+    raster_top$core$triangle_setup$act_r$18 act_r$18(
+        .d(act_r$18$d),
+        .q(act_r$18$q),
+        .clock(act_r$18$clock)
+    );
+    raster_top$core$triangle_setup$act_r$19 act_r$19(
+        .d(act_r$19$d),
+        .q(act_r$19$q),
+        .clock(act_r$19$clock)
+    );
+    raster_top$core$triangle_setup$act_r$20 act_r$20(
+        .d(act_r$20$d),
+        .q(act_r$20$q),
+        .clock(act_r$20$clock)
+    );
+    raster_top$core$triangle_setup$act_r$21 act_r$21(
+        .d(act_r$21$d),
+        .q(act_r$21$q),
+        .clock(act_r$21$clock)
+    );
+    raster_top$core$triangle_setup$act_r$22 act_r$22(
+        .d(act_r$22$d),
+        .q(act_r$22$q),
+        .clock(act_r$22$clock)
+    );
+    raster_top$core$triangle_setup$act_r$23 act_r$23(
+        .d(act_r$23$d),
+        .q(act_r$23$q),
+        .clock(act_r$23$clock)
+    );
+    raster_top$core$triangle_setup$act_r$24 act_r$24(
+        .d(act_r$24$d),
+        .q(act_r$24$q),
+        .clock(act_r$24$clock)
+    );
+    raster_top$core$triangle_setup$act_r$25 act_r$25(
+        .d(act_r$25$d),
+        .q(act_r$25$q),
+        .clock(act_r$25$clock)
+    );
+    raster_top$core$triangle_setup$act_r$26 act_r$26(
+        .d(act_r$26$d),
+        .q(act_r$26$q),
+        .clock(act_r$26$clock)
+    );
+    raster_top$core$triangle_setup$act_r$27 act_r$27(
+        .d(act_r$27$d),
+        .q(act_r$27$q),
+        .clock(act_r$27$clock)
+    );
+    raster_top$core$triangle_setup$act_r$28 act_r$28(
+        .d(act_r$28$d),
+        .q(act_r$28$q),
+        .clock(act_r$28$clock)
+    );
+    raster_top$core$triangle_setup$act_r$29 act_r$29(
+        .d(act_r$29$d),
+        .q(act_r$29$q),
+        .clock(act_r$29$clock)
+    );
+    raster_top$core$triangle_setup$act_r$30 act_r$30(
+        .d(act_r$30$d),
+        .q(act_r$30$q),
+        .clock(act_r$30$clock)
+    );
+    raster_top$core$triangle_setup$act_r$31 act_r$31(
+        .d(act_r$31$d),
+        .q(act_r$31$q),
+        .clock(act_r$31$clock)
+    );
+    raster_top$core$triangle_setup$act_r$32 act_r$32(
+        .d(act_r$32$d),
+        .q(act_r$32$q),
+        .clock(act_r$32$clock)
+    );
+    raster_top$core$triangle_setup$act_r$33 act_r$33(
+        .d(act_r$33$d),
+        .q(act_r$33$q),
+        .clock(act_r$33$clock)
+    );
+    raster_top$core$triangle_setup$act_r$34 act_r$34(
+        .d(act_r$34$d),
+        .q(act_r$34$q),
+        .clock(act_r$34$clock)
+    );
+    raster_top$core$triangle_setup$act_r$35 act_r$35(
+        .d(act_r$35$d),
+        .q(act_r$35$q),
+        .clock(act_r$35$clock)
+    );
+    raster_top$core$triangle_setup$act_r$36 act_r$36(
+        .d(act_r$36$d),
+        .q(act_r$36$q),
+        .clock(act_r$36$clock)
+    );
+    raster_top$core$triangle_setup$act_r$37 act_r$37(
+        .d(act_r$37$d),
+        .q(act_r$37$q),
+        .clock(act_r$37$clock)
+    );
+    raster_top$core$triangle_setup$act_r$38 act_r$38(
+        .d(act_r$38$d),
+        .q(act_r$38$q),
+        .clock(act_r$38$clock)
+    );
+    raster_top$core$triangle_setup$act_r$39 act_r$39(
+        .d(act_r$39$d),
+        .q(act_r$39$q),
+        .clock(act_r$39$clock)
+    );
+    raster_top$core$triangle_setup$act_r$40 act_r$40(
+        .d(act_r$40$d),
+        .q(act_r$40$q),
+        .clock(act_r$40$clock)
+    );
+    raster_top$core$triangle_setup$act_r$41 act_r$41(
+        .d(act_r$41$d),
+        .q(act_r$41$q),
+        .clock(act_r$41$clock)
+    );
+    raster_top$core$triangle_setup$act_r$42 act_r$42(
+        .d(act_r$42$d),
+        .q(act_r$42$q),
+        .clock(act_r$42$clock)
+    );
+    raster_top$core$triangle_setup$act_r$43 act_r$43(
+        .d(act_r$43$d),
+        .q(act_r$43$q),
+        .clock(act_r$43$clock)
+    );
+    raster_top$core$triangle_setup$act_r$44 act_r$44(
+        .d(act_r$44$d),
+        .q(act_r$44$q),
+        .clock(act_r$44$clock)
+    );
+    raster_top$core$triangle_setup$act_r$45 act_r$45(
+        .d(act_r$45$d),
+        .q(act_r$45$q),
+        .clock(act_r$45$clock)
+    );
+    raster_top$core$triangle_setup$act_r$46 act_r$46(
+        .d(act_r$46$d),
+        .q(act_r$46$q),
+        .clock(act_r$46$clock)
+    );
+    raster_top$core$triangle_setup$act_r$47 act_r$47(
+        .d(act_r$47$d),
+        .q(act_r$47$q),
+        .clock(act_r$47$clock)
+    );
+    raster_top$core$triangle_setup$act_r$48 act_r$48(
+        .d(act_r$48$d),
+        .q(act_r$48$q),
+        .clock(act_r$48$clock)
+    );
+    raster_top$core$triangle_setup$act_r$49 act_r$49(
+        .d(act_r$49$d),
+        .q(act_r$49$q),
+        .clock(act_r$49$clock)
+    );
+    raster_top$core$triangle_setup$act_r$50 act_r$50(
+        .d(act_r$50$d),
+        .q(act_r$50$q),
+        .clock(act_r$50$clock)
+    );
+    raster_top$core$triangle_setup$act_r$51 act_r$51(
+        .d(act_r$51$d),
+        .q(act_r$51$q),
+        .clock(act_r$51$clock)
+    );
+    raster_top$core$triangle_setup$act_r$52 act_r$52(
+        .d(act_r$52$d),
+        .q(act_r$52$q),
+        .clock(act_r$52$clock)
+    );
+    raster_top$core$triangle_setup$act_r$53 act_r$53(
+        .d(act_r$53$d),
+        .q(act_r$53$q),
+        .clock(act_r$53$clock)
+    );
+    raster_top$core$triangle_setup$act_r$54 act_r$54(
+        .d(act_r$54$d),
+        .q(act_r$54$q),
+        .clock(act_r$54$clock)
+    );
+    raster_top$core$triangle_setup$act_r$55 act_r$55(
+        .d(act_r$55$d),
+        .q(act_r$55$q),
+        .clock(act_r$55$clock)
+    );
+    raster_top$core$triangle_setup$act_r$56 act_r$56(
+        .d(act_r$56$d),
+        .q(act_r$56$q),
+        .clock(act_r$56$clock)
+    );
+    raster_top$core$triangle_setup$act_r$57 act_r$57(
+        .d(act_r$57$d),
+        .q(act_r$57$q),
+        .clock(act_r$57$clock)
+    );
+    raster_top$core$triangle_setup$act_r$58 act_r$58(
+        .d(act_r$58$d),
+        .q(act_r$58$q),
+        .clock(act_r$58$clock)
+    );
+    raster_top$core$triangle_setup$act_r$59 act_r$59(
+        .d(act_r$59$d),
+        .q(act_r$59$q),
+        .clock(act_r$59$clock)
+    );
+    raster_top$core$triangle_setup$act_r$60 act_r$60(
+        .d(act_r$60$d),
+        .q(act_r$60$q),
+        .clock(act_r$60$clock)
+    );
+    raster_top$core$triangle_setup$act_r$61 act_r$61(
+        .d(act_r$61$d),
+        .q(act_r$61$q),
+        .clock(act_r$61$clock)
+    );
+    raster_top$core$triangle_setup$act_r$62 act_r$62(
+        .d(act_r$62$d),
+        .q(act_r$62$q),
+        .clock(act_r$62$clock)
+    );
+    raster_top$core$triangle_setup$act_r$63 act_r$63(
+        .d(act_r$63$d),
+        .q(act_r$63$q),
+        .clock(act_r$63$clock)
+    );
+    raster_top$core$triangle_setup$norm_r norm_r(
+        .d(norm_r$d),
+        .q(norm_r$q),
+        .clock(norm_r$clock)
+    );
+    raster_top$core$triangle_setup$iss_r$0 iss_r$0(
+        .d(iss_r$0$d),
+        .q(iss_r$0$q),
+        .clock(iss_r$0$clock)
+    );
+    raster_top$core$triangle_setup$iss_r$1 iss_r$1(
+        .d(iss_r$1$d),
+        .q(iss_r$1$q),
+        .clock(iss_r$1$clock)
+    );
+    raster_top$core$triangle_setup$iss_r$2 iss_r$2(
+        .d(iss_r$2$d),
+        .q(iss_r$2$q),
+        .clock(iss_r$2$clock)
+    );
+    raster_top$core$triangle_setup$iss_r$3 iss_r$3(
+        .d(iss_r$3$d),
+        .q(iss_r$3$q),
+        .clock(iss_r$3$clock)
+    );
+    raster_top$core$triangle_setup$iss_r$4 iss_r$4(
+        .d(iss_r$4$d),
+        .q(iss_r$4$q),
+        .clock(iss_r$4$clock)
+    );
+    raster_top$core$triangle_setup$iss_r$5 iss_r$5(
+        .d(iss_r$5$d),
+        .q(iss_r$5$q),
+        .clock(iss_r$5$clock)
+    );
+    raster_top$core$triangle_setup$iss_r$6 iss_r$6(
+        .d(iss_r$6$d),
+        .q(iss_r$6$q),
+        .clock(iss_r$6$clock)
+    );
+    raster_top$core$triangle_setup$res_r$0 res_r$0(
+        .d(res_r$0$d),
+        .q(res_r$0$q),
+        .clock(res_r$0$clock)
+    );
+    raster_top$core$triangle_setup$res_r$1 res_r$1(
+        .d(res_r$1$d),
+        .q(res_r$1$q),
+        .clock(res_r$1$clock)
+    );
+    raster_top$core$triangle_setup$res_r$2 res_r$2(
+        .d(res_r$2$d),
+        .q(res_r$2$q),
+        .clock(res_r$2$clock)
+    );
+    raster_top$core$triangle_setup$res_r$3 res_r$3(
+        .d(res_r$3$d),
+        .q(res_r$3$q),
+        .clock(res_r$3$clock)
+    );
+    raster_top$core$triangle_setup$res_r$4 res_r$4(
+        .d(res_r$4$d),
+        .q(res_r$4$q),
+        .clock(res_r$4$clock)
+    );
+    raster_top$core$triangle_setup$res_r$5 res_r$5(
+        .d(res_r$5$d),
+        .q(res_r$5$q),
+        .clock(res_r$5$clock)
+    );
+    raster_top$core$triangle_setup$res_r$6 res_r$6(
+        .d(res_r$6$d),
+        .q(res_r$6$q),
+        .clock(res_r$6$clock)
+    );
+    raster_top$core$triangle_setup$handover_r handover_r(
+        .d(handover_r$d),
+        .q(handover_r$q),
+        .clock(handover_r$clock)
+    );
+    raster_top$core$triangle_setup$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    raster_top$core$triangle_setup$free_r free_r(
+        .d(free_r$d),
+        .q(free_r$q),
+        .clock(free_r$clock)
+    );
     raster_top$core$triangle_setup$vx$0 vx$0(
         .d(vx$0$d),
         .q(vx$0$q),
@@ -10556,6 +11212,10 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         div_d$clock = clock;
         mant$clock = clock;
         exp_e$clock = clock;
+        norm_r$clock = clock;
+        handover_r$clock = clock;
+        valid_r$clock = clock;
+        free_r$clock = clock;
         area$d = area$q;
         norm$d = norm$q;
         div_v$d = div_v$q;
@@ -10563,6 +11223,10 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         div_d$d = div_d$q;
         mant$d = mant$q;
         exp_e$d = exp_e$q;
+        norm_r$d = norm_r$q;
+        handover_r$d = handover_r$q;
+        valid_r$d = valid_r$q;
+        free_r$d = free_r$q;
         div$clock = clock;
         t$0$clock = clock;
         t$0$d = t$0$q;
@@ -10847,9 +11511,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         maj_left$1 = sign$1$q;
         maj_left$2 = sign$2$q;
         maj_left$3 = sign$3$q;
-        run = ~((t$2$q == last) & ~out$ready);
-        out$valid = t$2$q == last;
-        inp$ready = run & ((t$0$q == 32'h0) | (t$0$q == ends$0));
+        run = ~(valid_r$q & ~out$ready);
+        out$valid = valid_r$q;
+        inp$ready = run & free_r$q;
         take = inp$valid & inp$ready;
         if (run) begin
             if (t$0$q != 32'h0) begin
@@ -10941,734 +11605,894 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             vc$8$d = inp$v2_c2;
             crosses$0$d = inp$crosses;
         end
-        act$0 = 1'b0;
-        if ((view$0 == 0) & (t$0$q == cyc$0)) begin
-            act$0 = run;
+        act_r$0$clock = clock;
+        act_r$0$d = 1'b0;
+        if ((view$0 == 0) & (t$0$d == cyc$0)) begin
+            act_r$0$d = 1'b1;
         end
-        if ((view$0 == 1) & (t$1$q == cyc$0)) begin
-            act$0 = run;
+        if ((view$0 == 1) & (t$1$d == cyc$0)) begin
+            act_r$0$d = 1'b1;
         end
-        if ((view$0 == 2) & (t$2$q == cyc$0)) begin
-            act$0 = run;
+        if ((view$0 == 2) & (t$2$d == cyc$0)) begin
+            act_r$0$d = 1'b1;
+        end
+        act$0 = act_r$0$q & run;
+        act_r$1$clock = clock;
+        act_r$1$d = 1'b0;
+        if ((view$1 == 0) & (t$0$d == cyc$1)) begin
+            act_r$1$d = 1'b1;
         end
-        act$1 = 1'b0;
-        if ((view$1 == 0) & (t$0$q == cyc$1)) begin
-            act$1 = run;
+        if ((view$1 == 1) & (t$1$d == cyc$1)) begin
+            act_r$1$d = 1'b1;
         end
-        if ((view$1 == 1) & (t$1$q == cyc$1)) begin
-            act$1 = run;
+        if ((view$1 == 2) & (t$2$d == cyc$1)) begin
+            act_r$1$d = 1'b1;
+        end
+        act$1 = act_r$1$q & run;
+        act_r$2$clock = clock;
+        act_r$2$d = 1'b0;
+        if ((view$2 == 0) & (t$0$d == cyc$2)) begin
+            act_r$2$d = 1'b1;
         end
-        if ((view$1 == 2) & (t$2$q == cyc$1)) begin
-            act$1 = run;
+        if ((view$2 == 1) & (t$1$d == cyc$2)) begin
+            act_r$2$d = 1'b1;
         end
-        act$2 = 1'b0;
-        if ((view$2 == 0) & (t$0$q == cyc$2)) begin
-            act$2 = run;
+        if ((view$2 == 2) & (t$2$d == cyc$2)) begin
+            act_r$2$d = 1'b1;
+        end
+        act$2 = act_r$2$q & run;
+        act_r$3$clock = clock;
+        act_r$3$d = 1'b0;
+        if ((view$3 == 0) & (t$0$d == cyc$3)) begin
+            act_r$3$d = 1'b1;
         end
-        if ((view$2 == 1) & (t$1$q == cyc$2)) begin
-            act$2 = run;
+        if ((view$3 == 1) & (t$1$d == cyc$3)) begin
+            act_r$3$d = 1'b1;
         end
-        if ((view$2 == 2) & (t$2$q == cyc$2)) begin
-            act$2 = run;
+        if ((view$3 == 2) & (t$2$d == cyc$3)) begin
+            act_r$3$d = 1'b1;
+        end
+        act$3 = act_r$3$q & run;
+        act_r$4$clock = clock;
+        act_r$4$d = 1'b0;
+        if ((view$4 == 0) & (t$0$d == cyc$4)) begin
+            act_r$4$d = 1'b1;
         end
-        act$3 = 1'b0;
-        if ((view$3 == 0) & (t$0$q == cyc$3)) begin
-            act$3 = run;
+        if ((view$4 == 1) & (t$1$d == cyc$4)) begin
+            act_r$4$d = 1'b1;
         end
-        if ((view$3 == 1) & (t$1$q == cyc$3)) begin
-            act$3 = run;
+        if ((view$4 == 2) & (t$2$d == cyc$4)) begin
+            act_r$4$d = 1'b1;
+        end
+        act$4 = act_r$4$q & run;
+        act_r$5$clock = clock;
+        act_r$5$d = 1'b0;
+        if ((view$5 == 0) & (t$0$d == cyc$5)) begin
+            act_r$5$d = 1'b1;
         end
-        if ((view$3 == 2) & (t$2$q == cyc$3)) begin
-            act$3 = run;
+        if ((view$5 == 1) & (t$1$d == cyc$5)) begin
+            act_r$5$d = 1'b1;
         end
-        act$4 = 1'b0;
-        if ((view$4 == 0) & (t$0$q == cyc$4)) begin
-            act$4 = run;
+        if ((view$5 == 2) & (t$2$d == cyc$5)) begin
+            act_r$5$d = 1'b1;
+        end
+        act$5 = act_r$5$q & run;
+        act_r$6$clock = clock;
+        act_r$6$d = 1'b0;
+        if ((view$6 == 0) & (t$0$d == cyc$6)) begin
+            act_r$6$d = 1'b1;
         end
-        if ((view$4 == 1) & (t$1$q == cyc$4)) begin
-            act$4 = run;
+        if ((view$6 == 1) & (t$1$d == cyc$6)) begin
+            act_r$6$d = 1'b1;
         end
-        if ((view$4 == 2) & (t$2$q == cyc$4)) begin
-            act$4 = run;
+        if ((view$6 == 2) & (t$2$d == cyc$6)) begin
+            act_r$6$d = 1'b1;
+        end
+        act$6 = act_r$6$q & run;
+        act_r$7$clock = clock;
+        act_r$7$d = 1'b0;
+        if ((view$7 == 0) & (t$0$d == cyc$7)) begin
+            act_r$7$d = 1'b1;
         end
-        act$5 = 1'b0;
-        if ((view$5 == 0) & (t$0$q == cyc$5)) begin
-            act$5 = run;
+        if ((view$7 == 1) & (t$1$d == cyc$7)) begin
+            act_r$7$d = 1'b1;
         end
-        if ((view$5 == 1) & (t$1$q == cyc$5)) begin
-            act$5 = run;
+        if ((view$7 == 2) & (t$2$d == cyc$7)) begin
+            act_r$7$d = 1'b1;
+        end
+        act$7 = act_r$7$q & run;
+        act_r$8$clock = clock;
+        act_r$8$d = 1'b0;
+        if ((view$8 == 0) & (t$0$d == cyc$8)) begin
+            act_r$8$d = 1'b1;
         end
-        if ((view$5 == 2) & (t$2$q == cyc$5)) begin
-            act$5 = run;
+        if ((view$8 == 1) & (t$1$d == cyc$8)) begin
+            act_r$8$d = 1'b1;
         end
-        act$6 = 1'b0;
-        if ((view$6 == 0) & (t$0$q == cyc$6)) begin
-            act$6 = run;
+        if ((view$8 == 2) & (t$2$d == cyc$8)) begin
+            act_r$8$d = 1'b1;
         end
-        if ((view$6 == 1) & (t$1$q == cyc$6)) begin
-            act$6 = run;
+        act$8 = act_r$8$q & run;
+        act_r$9$clock = clock;
+        act_r$9$d = 1'b0;
+        if ((view$9 == 0) & (t$0$d == cyc$9)) begin
+            act_r$9$d = 1'b1;
         end
-        if ((view$6 == 2) & (t$2$q == cyc$6)) begin
-            act$6 = run;
+        if ((view$9 == 1) & (t$1$d == cyc$9)) begin
+            act_r$9$d = 1'b1;
         end
-        act$7 = 1'b0;
-        if ((view$7 == 0) & (t$0$q == cyc$7)) begin
-            act$7 = run;
+        if ((view$9 == 2) & (t$2$d == cyc$9)) begin
+            act_r$9$d = 1'b1;
         end
-        if ((view$7 == 1) & (t$1$q == cyc$7)) begin
-            act$7 = run;
+        act$9 = act_r$9$q & run;
+        act_r$10$clock = clock;
+        act_r$10$d = 1'b0;
+        if ((view$10 == 0) & (t$0$d == cyc$10)) begin
+            act_r$10$d = 1'b1;
         end
-        if ((view$7 == 2) & (t$2$q == cyc$7)) begin
-            act$7 = run;
+        if ((view$10 == 1) & (t$1$d == cyc$10)) begin
+            act_r$10$d = 1'b1;
         end
-        act$8 = 1'b0;
-        if ((view$8 == 0) & (t$0$q == cyc$8)) begin
-            act$8 = run;
+        if ((view$10 == 2) & (t$2$d == cyc$10)) begin
+            act_r$10$d = 1'b1;
         end
-        if ((view$8 == 1) & (t$1$q == cyc$8)) begin
-            act$8 = run;
+        act$10 = act_r$10$q & run;
+        act_r$11$clock = clock;
+        act_r$11$d = 1'b0;
+        if ((view$11 == 0) & (t$0$d == cyc$11)) begin
+            act_r$11$d = 1'b1;
         end
-        if ((view$8 == 2) & (t$2$q == cyc$8)) begin
-            act$8 = run;
+        if ((view$11 == 1) & (t$1$d == cyc$11)) begin
+            act_r$11$d = 1'b1;
         end
-        act$9 = 1'b0;
-        if ((view$9 == 0) & (t$0$q == cyc$9)) begin
-            act$9 = run;
+        if ((view$11 == 2) & (t$2$d == cyc$11)) begin
+            act_r$11$d = 1'b1;
         end
-        if ((view$9 == 1) & (t$1$q == cyc$9)) begin
-            act$9 = run;
+        act$11 = act_r$11$q & run;
+        act_r$12$clock = clock;
+        act_r$12$d = 1'b0;
+        if ((view$12 == 0) & (t$0$d == cyc$12)) begin
+            act_r$12$d = 1'b1;
         end
-        if ((view$9 == 2) & (t$2$q == cyc$9)) begin
-            act$9 = run;
+        if ((view$12 == 1) & (t$1$d == cyc$12)) begin
+            act_r$12$d = 1'b1;
         end
-        act$10 = 1'b0;
-        if ((view$10 == 0) & (t$0$q == cyc$10)) begin
-            act$10 = run;
+        if ((view$12 == 2) & (t$2$d == cyc$12)) begin
+            act_r$12$d = 1'b1;
         end
-        if ((view$10 == 1) & (t$1$q == cyc$10)) begin
-            act$10 = run;
+        act$12 = act_r$12$q & run;
+        act_r$13$clock = clock;
+        act_r$13$d = 1'b0;
+        if ((view$13 == 0) & (t$0$d == cyc$13)) begin
+            act_r$13$d = 1'b1;
         end
-        if ((view$10 == 2) & (t$2$q == cyc$10)) begin
-            act$10 = run;
+        if ((view$13 == 1) & (t$1$d == cyc$13)) begin
+            act_r$13$d = 1'b1;
         end
-        act$11 = 1'b0;
-        if ((view$11 == 0) & (t$0$q == cyc$11)) begin
-            act$11 = run;
+        if ((view$13 == 2) & (t$2$d == cyc$13)) begin
+            act_r$13$d = 1'b1;
         end
-        if ((view$11 == 1) & (t$1$q == cyc$11)) begin
-            act$11 = run;
+        act$13 = act_r$13$q & run;
+        act_r$14$clock = clock;
+        act_r$14$d = 1'b0;
+        if ((view$14 == 0) & (t$0$d == cyc$14)) begin
+            act_r$14$d = 1'b1;
         end
-        if ((view$11 == 2) & (t$2$q == cyc$11)) begin
-            act$11 = run;
+        if ((view$14 == 1) & (t$1$d == cyc$14)) begin
+            act_r$14$d = 1'b1;
         end
-        act$12 = 1'b0;
-        if ((view$12 == 0) & (t$0$q == cyc$12)) begin
-            act$12 = run;
+        if ((view$14 == 2) & (t$2$d == cyc$14)) begin
+            act_r$14$d = 1'b1;
         end
-        if ((view$12 == 1) & (t$1$q == cyc$12)) begin
-            act$12 = run;
+        act$14 = act_r$14$q & run;
+        act_r$15$clock = clock;
+        act_r$15$d = 1'b0;
+        if ((view$15 == 0) & (t$0$d == cyc$15)) begin
+            act_r$15$d = 1'b1;
         end
-        if ((view$12 == 2) & (t$2$q == cyc$12)) begin
-            act$12 = run;
+        if ((view$15 == 1) & (t$1$d == cyc$15)) begin
+            act_r$15$d = 1'b1;
         end
-        act$13 = 1'b0;
-        if ((view$13 == 0) & (t$0$q == cyc$13)) begin
-            act$13 = run;
+        if ((view$15 == 2) & (t$2$d == cyc$15)) begin
+            act_r$15$d = 1'b1;
         end
-        if ((view$13 == 1) & (t$1$q == cyc$13)) begin
-            act$13 = run;
+        act$15 = act_r$15$q & run;
+        act_r$16$clock = clock;
+        act_r$16$d = 1'b0;
+        if ((view$16 == 0) & (t$0$d == cyc$16)) begin
+            act_r$16$d = 1'b1;
         end
-        if ((view$13 == 2) & (t$2$q == cyc$13)) begin
-            act$13 = run;
+        if ((view$16 == 1) & (t$1$d == cyc$16)) begin
+            act_r$16$d = 1'b1;
         end
-        act$14 = 1'b0;
-        if ((view$14 == 0) & (t$0$q == cyc$14)) begin
-            act$14 = run;
+        if ((view$16 == 2) & (t$2$d == cyc$16)) begin
+            act_r$16$d = 1'b1;
         end
-        if ((view$14 == 1) & (t$1$q == cyc$14)) begin
-            act$14 = run;
+        act$16 = act_r$16$q & run;
+        act_r$17$clock = clock;
+        act_r$17$d = 1'b0;
+        if ((view$17 == 0) & (t$0$d == cyc$17)) begin
+            act_r$17$d = 1'b1;
         end
-        if ((view$14 == 2) & (t$2$q == cyc$14)) begin
-            act$14 = run;
+        if ((view$17 == 1) & (t$1$d == cyc$17)) begin
+            act_r$17$d = 1'b1;
         end
-        act$15 = 1'b0;
-        if ((view$15 == 0) & (t$0$q == cyc$15)) begin
-            act$15 = run;
+        if ((view$17 == 2) & (t$2$d == cyc$17)) begin
+            act_r$17$d = 1'b1;
         end
-        if ((view$15 == 1) & (t$1$q == cyc$15)) begin
-            act$15 = run;
+        act$17 = act_r$17$q & run;
+        act_r$18$clock = clock;
+        act_r$18$d = 1'b0;
+        if ((view$18 == 0) & (t$0$d == cyc$18)) begin
+            act_r$18$d = 1'b1;
         end
-        if ((view$15 == 2) & (t$2$q == cyc$15)) begin
-            act$15 = run;
+        if ((view$18 == 1) & (t$1$d == cyc$18)) begin
+            act_r$18$d = 1'b1;
         end
-        act$16 = 1'b0;
-        if ((view$16 == 0) & (t$0$q == cyc$16)) begin
-            act$16 = run;
+        if ((view$18 == 2) & (t$2$d == cyc$18)) begin
+            act_r$18$d = 1'b1;
         end
-        if ((view$16 == 1) & (t$1$q == cyc$16)) begin
-            act$16 = run;
+        act$18 = act_r$18$q & run;
+        act_r$19$clock = clock;
+        act_r$19$d = 1'b0;
+        if ((view$19 == 0) & (t$0$d == cyc$19)) begin
+            act_r$19$d = 1'b1;
         end
-        if ((view$16 == 2) & (t$2$q == cyc$16)) begin
-            act$16 = run;
+        if ((view$19 == 1) & (t$1$d == cyc$19)) begin
+            act_r$19$d = 1'b1;
         end
-        act$17 = 1'b0;
-        if ((view$17 == 0) & (t$0$q == cyc$17)) begin
-            act$17 = run;
+        if ((view$19 == 2) & (t$2$d == cyc$19)) begin
+            act_r$19$d = 1'b1;
         end
-        if ((view$17 == 1) & (t$1$q == cyc$17)) begin
-            act$17 = run;
+        act$19 = act_r$19$q & run;
+        act_r$20$clock = clock;
+        act_r$20$d = 1'b0;
+        if ((view$20 == 0) & (t$0$d == cyc$20)) begin
+            act_r$20$d = 1'b1;
         end
-        if ((view$17 == 2) & (t$2$q == cyc$17)) begin
-            act$17 = run;
+        if ((view$20 == 1) & (t$1$d == cyc$20)) begin
+            act_r$20$d = 1'b1;
         end
-        act$18 = 1'b0;
-        if ((view$18 == 0) & (t$0$q == cyc$18)) begin
-            act$18 = run;
+        if ((view$20 == 2) & (t$2$d == cyc$20)) begin
+            act_r$20$d = 1'b1;
         end
-        if ((view$18 == 1) & (t$1$q == cyc$18)) begin
-            act$18 = run;
+        act$20 = act_r$20$q & run;
+        act_r$21$clock = clock;
+        act_r$21$d = 1'b0;
+        if ((view$21 == 0) & (t$0$d == cyc$21)) begin
+            act_r$21$d = 1'b1;
         end
-        if ((view$18 == 2) & (t$2$q == cyc$18)) begin
-            act$18 = run;
+        if ((view$21 == 1) & (t$1$d == cyc$21)) begin
+            act_r$21$d = 1'b1;
         end
-        act$19 = 1'b0;
-        if ((view$19 == 0) & (t$0$q == cyc$19)) begin
-            act$19 = run;
+        if ((view$21 == 2) & (t$2$d == cyc$21)) begin
+            act_r$21$d = 1'b1;
         end
-        if ((view$19 == 1) & (t$1$q == cyc$19)) begin
-            act$19 = run;
+        act$21 = act_r$21$q & run;
+        act_r$22$clock = clock;
+        act_r$22$d = 1'b0;
+        if ((view$22 == 0) & (t$0$d == cyc$22)) begin
+            act_r$22$d = 1'b1;
         end
-        if ((view$19 == 2) & (t$2$q == cyc$19)) begin
-            act$19 = run;
+        if ((view$22 == 1) & (t$1$d == cyc$22)) begin
+            act_r$22$d = 1'b1;
         end
-        act$20 = 1'b0;
-        if ((view$20 == 0) & (t$0$q == cyc$20)) begin
-            act$20 = run;
+        if ((view$22 == 2) & (t$2$d == cyc$22)) begin
+            act_r$22$d = 1'b1;
         end
-        if ((view$20 == 1) & (t$1$q == cyc$20)) begin
-            act$20 = run;
+        act$22 = act_r$22$q & run;
+        act_r$23$clock = clock;
+        act_r$23$d = 1'b0;
+        if ((view$23 == 0) & (t$0$d == cyc$23)) begin
+            act_r$23$d = 1'b1;
         end
-        if ((view$20 == 2) & (t$2$q == cyc$20)) begin
-            act$20 = run;
+        if ((view$23 == 1) & (t$1$d == cyc$23)) begin
+            act_r$23$d = 1'b1;
         end
-        act$21 = 1'b0;
-        if ((view$21 == 0) & (t$0$q == cyc$21)) begin
-            act$21 = run;
+        if ((view$23 == 2) & (t$2$d == cyc$23)) begin
+            act_r$23$d = 1'b1;
         end
-        if ((view$21 == 1) & (t$1$q == cyc$21)) begin
-            act$21 = run;
+        act$23 = act_r$23$q & run;
+        act_r$24$clock = clock;
+        act_r$24$d = 1'b0;
+        if ((view$24 == 0) & (t$0$d == cyc$24)) begin
+            act_r$24$d = 1'b1;
         end
-        if ((view$21 == 2) & (t$2$q == cyc$21)) begin
-            act$21 = run;
+        if ((view$24 == 1) & (t$1$d == cyc$24)) begin
+            act_r$24$d = 1'b1;
         end
-        act$22 = 1'b0;
-        if ((view$22 == 0) & (t$0$q == cyc$22)) begin
-            act$22 = run;
+        if ((view$24 == 2) & (t$2$d == cyc$24)) begin
+            act_r$24$d = 1'b1;
         end
-        if ((view$22 == 1) & (t$1$q == cyc$22)) begin
-            act$22 = run;
+        act$24 = act_r$24$q & run;
+        act_r$25$clock = clock;
+        act_r$25$d = 1'b0;
+        if ((view$25 == 0) & (t$0$d == cyc$25)) begin
+            act_r$25$d = 1'b1;
         end
-        if ((view$22 == 2) & (t$2$q == cyc$22)) begin
-            act$22 = run;
+        if ((view$25 == 1) & (t$1$d == cyc$25)) begin
+            act_r$25$d = 1'b1;
         end
-        act$23 = 1'b0;
-        if ((view$23 == 0) & (t$0$q == cyc$23)) begin
-            act$23 = run;
+        if ((view$25 == 2) & (t$2$d == cyc$25)) begin
+            act_r$25$d = 1'b1;
         end
-        if ((view$23 == 1) & (t$1$q == cyc$23)) begin
-            act$23 = run;
+        act$25 = act_r$25$q & run;
+        act_r$26$clock = clock;
+        act_r$26$d = 1'b0;
+        if ((view$26 == 0) & (t$0$d == cyc$26)) begin
+            act_r$26$d = 1'b1;
         end
-        if ((view$23 == 2) & (t$2$q == cyc$23)) begin
-            act$23 = run;
+        if ((view$26 == 1) & (t$1$d == cyc$26)) begin
+            act_r$26$d = 1'b1;
         end
-        act$24 = 1'b0;
-        if ((view$24 == 0) & (t$0$q == cyc$24)) begin
-            act$24 = run;
+        if ((view$26 == 2) & (t$2$d == cyc$26)) begin
+            act_r$26$d = 1'b1;
         end
-        if ((view$24 == 1) & (t$1$q == cyc$24)) begin
-            act$24 = run;
+        act$26 = act_r$26$q & run;
+        act_r$27$clock = clock;
+        act_r$27$d = 1'b0;
+        if ((view$27 == 0) & (t$0$d == cyc$27)) begin
+            act_r$27$d = 1'b1;
         end
-        if ((view$24 == 2) & (t$2$q == cyc$24)) begin
-            act$24 = run;
+        if ((view$27 == 1) & (t$1$d == cyc$27)) begin
+            act_r$27$d = 1'b1;
         end
-        act$25 = 1'b0;
-        if ((view$25 == 0) & (t$0$q == cyc$25)) begin
-            act$25 = run;
+        if ((view$27 == 2) & (t$2$d == cyc$27)) begin
+            act_r$27$d = 1'b1;
         end
-        if ((view$25 == 1) & (t$1$q == cyc$25)) begin
-            act$25 = run;
+        act$27 = act_r$27$q & run;
+        act_r$28$clock = clock;
+        act_r$28$d = 1'b0;
+        if ((view$28 == 0) & (t$0$d == cyc$28)) begin
+            act_r$28$d = 1'b1;
         end
-        if ((view$25 == 2) & (t$2$q == cyc$25)) begin
-            act$25 = run;
+        if ((view$28 == 1) & (t$1$d == cyc$28)) begin
+            act_r$28$d = 1'b1;
         end
-        act$26 = 1'b0;
-        if ((view$26 == 0) & (t$0$q == cyc$26)) begin
-            act$26 = run;
+        if ((view$28 == 2) & (t$2$d == cyc$28)) begin
+            act_r$28$d = 1'b1;
         end
-        if ((view$26 == 1) & (t$1$q == cyc$26)) begin
-            act$26 = run;
+        act$28 = act_r$28$q & run;
+        act_r$29$clock = clock;
+        act_r$29$d = 1'b0;
+        if ((view$29 == 0) & (t$0$d == cyc$29)) begin
+            act_r$29$d = 1'b1;
         end
-        if ((view$26 == 2) & (t$2$q == cyc$26)) begin
-            act$26 = run;
+        if ((view$29 == 1) & (t$1$d == cyc$29)) begin
+            act_r$29$d = 1'b1;
         end
-        act$27 = 1'b0;
-        if ((view$27 == 0) & (t$0$q == cyc$27)) begin
-            act$27 = run;
+        if ((view$29 == 2) & (t$2$d == cyc$29)) begin
+            act_r$29$d = 1'b1;
         end
-        if ((view$27 == 1) & (t$1$q == cyc$27)) begin
-            act$27 = run;
+        act$29 = act_r$29$q & run;
+        act_r$30$clock = clock;
+        act_r$30$d = 1'b0;
+        if ((view$30 == 0) & (t$0$d == cyc$30)) begin
+            act_r$30$d = 1'b1;
         end
-        if ((view$27 == 2) & (t$2$q == cyc$27)) begin
-            act$27 = run;
+        if ((view$30 == 1) & (t$1$d == cyc$30)) begin
+            act_r$30$d = 1'b1;
         end
-        act$28 = 1'b0;
-        if ((view$28 == 0) & (t$0$q == cyc$28)) begin
-            act$28 = run;
+        if ((view$30 == 2) & (t$2$d == cyc$30)) begin
+            act_r$30$d = 1'b1;
         end
-        if ((view$28 == 1) & (t$1$q == cyc$28)) begin
-            act$28 = run;
+        act$30 = act_r$30$q & run;
+        act_r$31$clock = clock;
+        act_r$31$d = 1'b0;
+        if ((view$31 == 0) & (t$0$d == cyc$31)) begin
+            act_r$31$d = 1'b1;
         end
-        if ((view$28 == 2) & (t$2$q == cyc$28)) begin
-            act$28 = run;
+        if ((view$31 == 1) & (t$1$d == cyc$31)) begin
+            act_r$31$d = 1'b1;
         end
-        act$29 = 1'b0;
-        if ((view$29 == 0) & (t$0$q == cyc$29)) begin
-            act$29 = run;
+        if ((view$31 == 2) & (t$2$d == cyc$31)) begin
+            act_r$31$d = 1'b1;
         end
-        if ((view$29 == 1) & (t$1$q == cyc$29)) begin
-            act$29 = run;
+        act$31 = act_r$31$q & run;
+        act_r$32$clock = clock;
+        act_r$32$d = 1'b0;
+        if ((view$32 == 0) & (t$0$d == cyc$32)) begin
+            act_r$32$d = 1'b1;
         end
-        if ((view$29 == 2) & (t$2$q == cyc$29)) begin
-            act$29 = run;
+        if ((view$32 == 1) & (t$1$d == cyc$32)) begin
+            act_r$32$d = 1'b1;
         end
-        act$30 = 1'b0;
-        if ((view$30 == 0) & (t$0$q == cyc$30)) begin
-            act$30 = run;
+        if ((view$32 == 2) & (t$2$d == cyc$32)) begin
+            act_r$32$d = 1'b1;
         end
-        if ((view$30 == 1) & (t$1$q == cyc$30)) begin
-            act$30 = run;
+        act$32 = act_r$32$q & run;
+        act_r$33$clock = clock;
+        act_r$33$d = 1'b0;
+        if ((view$33 == 0) & (t$0$d == cyc$33)) begin
+            act_r$33$d = 1'b1;
         end
-        if ((view$30 == 2) & (t$2$q == cyc$30)) begin
-            act$30 = run;
+        if ((view$33 == 1) & (t$1$d == cyc$33)) begin
+            act_r$33$d = 1'b1;
         end
-        act$31 = 1'b0;
-        if ((view$31 == 0) & (t$0$q == cyc$31)) begin
-            act$31 = run;
+        if ((view$33 == 2) & (t$2$d == cyc$33)) begin
+            act_r$33$d = 1'b1;
         end
-        if ((view$31 == 1) & (t$1$q == cyc$31)) begin
-            act$31 = run;
+        act$33 = act_r$33$q & run;
+        act_r$34$clock = clock;
+        act_r$34$d = 1'b0;
+        if ((view$34 == 0) & (t$0$d == cyc$34)) begin
+            act_r$34$d = 1'b1;
         end
-        if ((view$31 == 2) & (t$2$q == cyc$31)) begin
-            act$31 = run;
+        if ((view$34 == 1) & (t$1$d == cyc$34)) begin
+            act_r$34$d = 1'b1;
         end
-        act$32 = 1'b0;
-        if ((view$32 == 0) & (t$0$q == cyc$32)) begin
-            act$32 = run;
+        if ((view$34 == 2) & (t$2$d == cyc$34)) begin
+            act_r$34$d = 1'b1;
         end
-        if ((view$32 == 1) & (t$1$q == cyc$32)) begin
-            act$32 = run;
+        act$34 = act_r$34$q & run;
+        act_r$35$clock = clock;
+        act_r$35$d = 1'b0;
+        if ((view$35 == 0) & (t$0$d == cyc$35)) begin
+            act_r$35$d = 1'b1;
         end
-        if ((view$32 == 2) & (t$2$q == cyc$32)) begin
-            act$32 = run;
+        if ((view$35 == 1) & (t$1$d == cyc$35)) begin
+            act_r$35$d = 1'b1;
         end
-        act$33 = 1'b0;
-        if ((view$33 == 0) & (t$0$q == cyc$33)) begin
-            act$33 = run;
+        if ((view$35 == 2) & (t$2$d == cyc$35)) begin
+            act_r$35$d = 1'b1;
         end
-        if ((view$33 == 1) & (t$1$q == cyc$33)) begin
-            act$33 = run;
+        act$35 = act_r$35$q & run;
+        act_r$36$clock = clock;
+        act_r$36$d = 1'b0;
+        if ((view$36 == 0) & (t$0$d == cyc$36)) begin
+            act_r$36$d = 1'b1;
         end
-        if ((view$33 == 2) & (t$2$q == cyc$33)) begin
-            act$33 = run;
+        if ((view$36 == 1) & (t$1$d == cyc$36)) begin
+            act_r$36$d = 1'b1;
         end
-        act$34 = 1'b0;
-        if ((view$34 == 0) & (t$0$q == cyc$34)) begin
-            act$34 = run;
+        if ((view$36 == 2) & (t$2$d == cyc$36)) begin
+            act_r$36$d = 1'b1;
         end
-        if ((view$34 == 1) & (t$1$q == cyc$34)) begin
-            act$34 = run;
+        act$36 = act_r$36$q & run;
+        act_r$37$clock = clock;
+        act_r$37$d = 1'b0;
+        if ((view$37 == 0) & (t$0$d == cyc$37)) begin
+            act_r$37$d = 1'b1;
         end
-        if ((view$34 == 2) & (t$2$q == cyc$34)) begin
-            act$34 = run;
+        if ((view$37 == 1) & (t$1$d == cyc$37)) begin
+            act_r$37$d = 1'b1;
         end
-        act$35 = 1'b0;
-        if ((view$35 == 0) & (t$0$q == cyc$35)) begin
-            act$35 = run;
+        if ((view$37 == 2) & (t$2$d == cyc$37)) begin
+            act_r$37$d = 1'b1;
         end
-        if ((view$35 == 1) & (t$1$q == cyc$35)) begin
-            act$35 = run;
+        act$37 = act_r$37$q & run;
+        act_r$38$clock = clock;
+        act_r$38$d = 1'b0;
+        if ((view$38 == 0) & (t$0$d == cyc$38)) begin
+            act_r$38$d = 1'b1;
         end
-        if ((view$35 == 2) & (t$2$q == cyc$35)) begin
-            act$35 = run;
+        if ((view$38 == 1) & (t$1$d == cyc$38)) begin
+            act_r$38$d = 1'b1;
         end
-        act$36 = 1'b0;
-        if ((view$36 == 0) & (t$0$q == cyc$36)) begin
-            act$36 = run;
+        if ((view$38 == 2) & (t$2$d == cyc$38)) begin
+            act_r$38$d = 1'b1;
         end
-        if ((view$36 == 1) & (t$1$q == cyc$36)) begin
-            act$36 = run;
+        act$38 = act_r$38$q & run;
+        act_r$39$clock = clock;
+        act_r$39$d = 1'b0;
+        if ((view$39 == 0) & (t$0$d == cyc$39)) begin
+            act_r$39$d = 1'b1;
         end
-        if ((view$36 == 2) & (t$2$q == cyc$36)) begin
-            act$36 = run;
+        if ((view$39 == 1) & (t$1$d == cyc$39)) begin
+            act_r$39$d = 1'b1;
         end
-        act$37 = 1'b0;
-        if ((view$37 == 0) & (t$0$q == cyc$37)) begin
-            act$37 = run;
+        if ((view$39 == 2) & (t$2$d == cyc$39)) begin
+            act_r$39$d = 1'b1;
         end
-        if ((view$37 == 1) & (t$1$q == cyc$37)) begin
-            act$37 = run;
+        act$39 = act_r$39$q & run;
+        act_r$40$clock = clock;
+        act_r$40$d = 1'b0;
+        if ((view$40 == 0) & (t$0$d == cyc$40)) begin
+            act_r$40$d = 1'b1;
         end
-        if ((view$37 == 2) & (t$2$q == cyc$37)) begin
-            act$37 = run;
+        if ((view$40 == 1) & (t$1$d == cyc$40)) begin
+            act_r$40$d = 1'b1;
         end
-        act$38 = 1'b0;
-        if ((view$38 == 0) & (t$0$q == cyc$38)) begin
-            act$38 = run;
+        if ((view$40 == 2) & (t$2$d == cyc$40)) begin
+            act_r$40$d = 1'b1;
         end
-        if ((view$38 == 1) & (t$1$q == cyc$38)) begin
-            act$38 = run;
+        act$40 = act_r$40$q & run;
+        act_r$41$clock = clock;
+        act_r$41$d = 1'b0;
+        if ((view$41 == 0) & (t$0$d == cyc$41)) begin
+            act_r$41$d = 1'b1;
         end
-        if ((view$38 == 2) & (t$2$q == cyc$38)) begin
-            act$38 = run;
+        if ((view$41 == 1) & (t$1$d == cyc$41)) begin
+            act_r$41$d = 1'b1;
         end
-        act$39 = 1'b0;
-        if ((view$39 == 0) & (t$0$q == cyc$39)) begin
-            act$39 = run;
+        if ((view$41 == 2) & (t$2$d == cyc$41)) begin
+            act_r$41$d = 1'b1;
         end
-        if ((view$39 == 1) & (t$1$q == cyc$39)) begin
-            act$39 = run;
+        act$41 = act_r$41$q & run;
+        act_r$42$clock = clock;
+        act_r$42$d = 1'b0;
+        if ((view$42 == 0) & (t$0$d == cyc$42)) begin
+            act_r$42$d = 1'b1;
         end
-        if ((view$39 == 2) & (t$2$q == cyc$39)) begin
-            act$39 = run;
+        if ((view$42 == 1) & (t$1$d == cyc$42)) begin
+            act_r$42$d = 1'b1;
         end
-        act$40 = 1'b0;
-        if ((view$40 == 0) & (t$0$q == cyc$40)) begin
-            act$40 = run;
+        if ((view$42 == 2) & (t$2$d == cyc$42)) begin
+            act_r$42$d = 1'b1;
         end
-        if ((view$40 == 1) & (t$1$q == cyc$40)) begin
-            act$40 = run;
+        act$42 = act_r$42$q & run;
+        act_r$43$clock = clock;
+        act_r$43$d = 1'b0;
+        if ((view$43 == 0) & (t$0$d == cyc$43)) begin
+            act_r$43$d = 1'b1;
         end
-        if ((view$40 == 2) & (t$2$q == cyc$40)) begin
-            act$40 = run;
+        if ((view$43 == 1) & (t$1$d == cyc$43)) begin
+            act_r$43$d = 1'b1;
         end
-        act$41 = 1'b0;
-        if ((view$41 == 0) & (t$0$q == cyc$41)) begin
-            act$41 = run;
+        if ((view$43 == 2) & (t$2$d == cyc$43)) begin
+            act_r$43$d = 1'b1;
         end
-        if ((view$41 == 1) & (t$1$q == cyc$41)) begin
-            act$41 = run;
+        act$43 = act_r$43$q & run;
+        act_r$44$clock = clock;
+        act_r$44$d = 1'b0;
+        if ((view$44 == 0) & (t$0$d == cyc$44)) begin
+            act_r$44$d = 1'b1;
         end
-        if ((view$41 == 2) & (t$2$q == cyc$41)) begin
-            act$41 = run;
+        if ((view$44 == 1) & (t$1$d == cyc$44)) begin
+            act_r$44$d = 1'b1;
         end
-        act$42 = 1'b0;
-        if ((view$42 == 0) & (t$0$q == cyc$42)) begin
-            act$42 = run;
+        if ((view$44 == 2) & (t$2$d == cyc$44)) begin
+            act_r$44$d = 1'b1;
         end
-        if ((view$42 == 1) & (t$1$q == cyc$42)) begin
-            act$42 = run;
+        act$44 = act_r$44$q & run;
+        act_r$45$clock = clock;
+        act_r$45$d = 1'b0;
+        if ((view$45 == 0) & (t$0$d == cyc$45)) begin
+            act_r$45$d = 1'b1;
         end
-        if ((view$42 == 2) & (t$2$q == cyc$42)) begin
-            act$42 = run;
+        if ((view$45 == 1) & (t$1$d == cyc$45)) begin
+            act_r$45$d = 1'b1;
         end
-        act$43 = 1'b0;
-        if ((view$43 == 0) & (t$0$q == cyc$43)) begin
-            act$43 = run;
+        if ((view$45 == 2) & (t$2$d == cyc$45)) begin
+            act_r$45$d = 1'b1;
         end
-        if ((view$43 == 1) & (t$1$q == cyc$43)) begin
-            act$43 = run;
+        act$45 = act_r$45$q & run;
+        act_r$46$clock = clock;
+        act_r$46$d = 1'b0;
+        if ((view$46 == 0) & (t$0$d == cyc$46)) begin
+            act_r$46$d = 1'b1;
         end
-        if ((view$43 == 2) & (t$2$q == cyc$43)) begin
-            act$43 = run;
+        if ((view$46 == 1) & (t$1$d == cyc$46)) begin
+            act_r$46$d = 1'b1;
         end
-        act$44 = 1'b0;
-        if ((view$44 == 0) & (t$0$q == cyc$44)) begin
-            act$44 = run;
+        if ((view$46 == 2) & (t$2$d == cyc$46)) begin
+            act_r$46$d = 1'b1;
         end
-        if ((view$44 == 1) & (t$1$q == cyc$44)) begin
-            act$44 = run;
+        act$46 = act_r$46$q & run;
+        act_r$47$clock = clock;
+        act_r$47$d = 1'b0;
+        if ((view$47 == 0) & (t$0$d == cyc$47)) begin
+            act_r$47$d = 1'b1;
         end
-        if ((view$44 == 2) & (t$2$q == cyc$44)) begin
-            act$44 = run;
+        if ((view$47 == 1) & (t$1$d == cyc$47)) begin
+            act_r$47$d = 1'b1;
         end
-        act$45 = 1'b0;
-        if ((view$45 == 0) & (t$0$q == cyc$45)) begin
-            act$45 = run;
+        if ((view$47 == 2) & (t$2$d == cyc$47)) begin
+            act_r$47$d = 1'b1;
         end
-        if ((view$45 == 1) & (t$1$q == cyc$45)) begin
-            act$45 = run;
+        act$47 = act_r$47$q & run;
+        act_r$48$clock = clock;
+        act_r$48$d = 1'b0;
+        if ((view$48 == 0) & (t$0$d == cyc$48)) begin
+            act_r$48$d = 1'b1;
         end
-        if ((view$45 == 2) & (t$2$q == cyc$45)) begin
-            act$45 = run;
+        if ((view$48 == 1) & (t$1$d == cyc$48)) begin
+            act_r$48$d = 1'b1;
         end
-        act$46 = 1'b0;
-        if ((view$46 == 0) & (t$0$q == cyc$46)) begin
-            act$46 = run;
+        if ((view$48 == 2) & (t$2$d == cyc$48)) begin
+            act_r$48$d = 1'b1;
         end
-        if ((view$46 == 1) & (t$1$q == cyc$46)) begin
-            act$46 = run;
+        act$48 = act_r$48$q & run;
+        act_r$49$clock = clock;
+        act_r$49$d = 1'b0;
+        if ((view$49 == 0) & (t$0$d == cyc$49)) begin
+            act_r$49$d = 1'b1;
         end
-        if ((view$46 == 2) & (t$2$q == cyc$46)) begin
-            act$46 = run;
+        if ((view$49 == 1) & (t$1$d == cyc$49)) begin
+            act_r$49$d = 1'b1;
         end
-        act$47 = 1'b0;
-        if ((view$47 == 0) & (t$0$q == cyc$47)) begin
-            act$47 = run;
+        if ((view$49 == 2) & (t$2$d == cyc$49)) begin
+            act_r$49$d = 1'b1;
         end
-        if ((view$47 == 1) & (t$1$q == cyc$47)) begin
-            act$47 = run;
+        act$49 = act_r$49$q & run;
+        act_r$50$clock = clock;
+        act_r$50$d = 1'b0;
+        if ((view$50 == 0) & (t$0$d == cyc$50)) begin
+            act_r$50$d = 1'b1;
         end
-        if ((view$47 == 2) & (t$2$q == cyc$47)) begin
-            act$47 = run;
+        if ((view$50 == 1) & (t$1$d == cyc$50)) begin
+            act_r$50$d = 1'b1;
         end
-        act$48 = 1'b0;
-        if ((view$48 == 0) & (t$0$q == cyc$48)) begin
-            act$48 = run;
+        if ((view$50 == 2) & (t$2$d == cyc$50)) begin
+            act_r$50$d = 1'b1;
         end
-        if ((view$48 == 1) & (t$1$q == cyc$48)) begin
-            act$48 = run;
+        act$50 = act_r$50$q & run;
+        act_r$51$clock = clock;
+        act_r$51$d = 1'b0;
+        if ((view$51 == 0) & (t$0$d == cyc$51)) begin
+            act_r$51$d = 1'b1;
         end
-        if ((view$48 == 2) & (t$2$q == cyc$48)) begin
-            act$48 = run;
+        if ((view$51 == 1) & (t$1$d == cyc$51)) begin
+            act_r$51$d = 1'b1;
         end
-        act$49 = 1'b0;
-        if ((view$49 == 0) & (t$0$q == cyc$49)) begin
-            act$49 = run;
+        if ((view$51 == 2) & (t$2$d == cyc$51)) begin
+            act_r$51$d = 1'b1;
         end
-        if ((view$49 == 1) & (t$1$q == cyc$49)) begin
-            act$49 = run;
+        act$51 = act_r$51$q & run;
+        act_r$52$clock = clock;
+        act_r$52$d = 1'b0;
+        if ((view$52 == 0) & (t$0$d == cyc$52)) begin
+            act_r$52$d = 1'b1;
         end
-        if ((view$49 == 2) & (t$2$q == cyc$49)) begin
-            act$49 = run;
+        if ((view$52 == 1) & (t$1$d == cyc$52)) begin
+            act_r$52$d = 1'b1;
         end
-        act$50 = 1'b0;
-        if ((view$50 == 0) & (t$0$q == cyc$50)) begin
-            act$50 = run;
+        if ((view$52 == 2) & (t$2$d == cyc$52)) begin
+            act_r$52$d = 1'b1;
         end
-        if ((view$50 == 1) & (t$1$q == cyc$50)) begin
-            act$50 = run;
+        act$52 = act_r$52$q & run;
+        act_r$53$clock = clock;
+        act_r$53$d = 1'b0;
+        if ((view$53 == 0) & (t$0$d == cyc$53)) begin
+            act_r$53$d = 1'b1;
         end
-        if ((view$50 == 2) & (t$2$q == cyc$50)) begin
-            act$50 = run;
+        if ((view$53 == 1) & (t$1$d == cyc$53)) begin
+            act_r$53$d = 1'b1;
         end
-        act$51 = 1'b0;
-        if ((view$51 == 0) & (t$0$q == cyc$51)) begin
-            act$51 = run;
+        if ((view$53 == 2) & (t$2$d == cyc$53)) begin
+            act_r$53$d = 1'b1;
         end
-        if ((view$51 == 1) & (t$1$q == cyc$51)) begin
-            act$51 = run;
+        act$53 = act_r$53$q & run;
+        act_r$54$clock = clock;
+        act_r$54$d = 1'b0;
+        if ((view$54 == 0) & (t$0$d == cyc$54)) begin
+            act_r$54$d = 1'b1;
         end
-        if ((view$51 == 2) & (t$2$q == cyc$51)) begin
-            act$51 = run;
+        if ((view$54 == 1) & (t$1$d == cyc$54)) begin
+            act_r$54$d = 1'b1;
         end
-        act$52 = 1'b0;
-        if ((view$52 == 0) & (t$0$q == cyc$52)) begin
-            act$52 = run;
+        if ((view$54 == 2) & (t$2$d == cyc$54)) begin
+            act_r$54$d = 1'b1;
         end
-        if ((view$52 == 1) & (t$1$q == cyc$52)) begin
-            act$52 = run;
+        act$54 = act_r$54$q & run;
+        act_r$55$clock = clock;
+        act_r$55$d = 1'b0;
+        if ((view$55 == 0) & (t$0$d == cyc$55)) begin
+            act_r$55$d = 1'b1;
         end
-        if ((view$52 == 2) & (t$2$q == cyc$52)) begin
-            act$52 = run;
+        if ((view$55 == 1) & (t$1$d == cyc$55)) begin
+            act_r$55$d = 1'b1;
         end
-        act$53 = 1'b0;
-        if ((view$53 == 0) & (t$0$q == cyc$53)) begin
-            act$53 = run;
+        if ((view$55 == 2) & (t$2$d == cyc$55)) begin
+            act_r$55$d = 1'b1;
         end
-        if ((view$53 == 1) & (t$1$q == cyc$53)) begin
-            act$53 = run;
-        end
-        if ((view$53 == 2) & (t$2$q == cyc$53)) begin
-            act$53 = run;
-        end
-        act$54 = 1'b0;
-        if ((view$54 == 0) & (t$0$q == cyc$54)) begin
-            act$54 = run;
-        end
-        if ((view$54 == 1) & (t$1$q == cyc$54)) begin
-            act$54 = run;
-        end
-        if ((view$54 == 2) & (t$2$q == cyc$54)) begin
-            act$54 = run;
-        end
-        act$55 = 1'b0;
-        if ((view$55 == 0) & (t$0$q == cyc$55)) begin
-            act$55 = run;
-        end
-        if ((view$55 == 1) & (t$1$q == cyc$55)) begin
-            act$55 = run;
-        end
-        if ((view$55 == 2) & (t$2$q == cyc$55)) begin
-            act$55 = run;
-        end
-        act$56 = 1'b0;
-        if ((view$56 == 0) & (t$0$q == cyc$56)) begin
-            act$56 = run;
-        end
-        if ((view$56 == 1) & (t$1$q == cyc$56)) begin
-            act$56 = run;
-        end
-        if ((view$56 == 2) & (t$2$q == cyc$56)) begin
-            act$56 = run;
-        end
-        act$57 = 1'b0;
-        if ((view$57 == 0) & (t$0$q == cyc$57)) begin
-            act$57 = run;
-        end
-        if ((view$57 == 1) & (t$1$q == cyc$57)) begin
-            act$57 = run;
-        end
-        if ((view$57 == 2) & (t$2$q == cyc$57)) begin
-            act$57 = run;
-        end
-        act$58 = 1'b0;
-        if ((view$58 == 0) & (t$0$q == cyc$58)) begin
-            act$58 = run;
-        end
-        if ((view$58 == 1) & (t$1$q == cyc$58)) begin
-            act$58 = run;
-        end
-        if ((view$58 == 2) & (t$2$q == cyc$58)) begin
-            act$58 = run;
-        end
-        act$59 = 1'b0;
-        if ((view$59 == 0) & (t$0$q == cyc$59)) begin
-            act$59 = run;
-        end
-        if ((view$59 == 1) & (t$1$q == cyc$59)) begin
-            act$59 = run;
-        end
-        if ((view$59 == 2) & (t$2$q == cyc$59)) begin
-            act$59 = run;
-        end
-        act$60 = 1'b0;
-        if ((view$60 == 0) & (t$0$q == cyc$60)) begin
-            act$60 = run;
-        end
-        if ((view$60 == 1) & (t$1$q == cyc$60)) begin
-            act$60 = run;
-        end
-        if ((view$60 == 2) & (t$2$q == cyc$60)) begin
-            act$60 = run;
-        end
-        act$61 = 1'b0;
-        if ((view$61 == 0) & (t$0$q == cyc$61)) begin
-            act$61 = run;
-        end
-        if ((view$61 == 1) & (t$1$q == cyc$61)) begin
-            act$61 = run;
-        end
-        if ((view$61 == 2) & (t$2$q == cyc$61)) begin
-            act$61 = run;
-        end
-        act$62 = 1'b0;
-        if ((view$62 == 0) & (t$0$q == cyc$62)) begin
-            act$62 = run;
-        end
-        if ((view$62 == 1) & (t$1$q == cyc$62)) begin
-            act$62 = run;
-        end
-        if ((view$62 == 2) & (t$2$q == cyc$62)) begin
-            act$62 = run;
-        end
-        act$63 = 1'b0;
-        if ((view$63 == 0) & (t$0$q == cyc$63)) begin
-            act$63 = run;
-        end
-        if ((view$63 == 1) & (t$1$q == cyc$63)) begin
-            act$63 = run;
-        end
-        if ((view$63 == 2) & (t$2$q == cyc$63)) begin
-            act$63 = run;
-        end
-        at_norm = run & (t$0$q == normalise);
-        at_iss$0 = run & (t$0$q == iss$0);
-        at_res$0 = 1'b0;
-        if ((view_res$0 == 0) & (t$0$q == res$0)) begin
-            at_res$0 = run;
-        end
-        if ((view_res$0 == 1) & (t$1$q == res$0)) begin
-            at_res$0 = run;
-        end
-        if ((view_res$0 == 2) & (t$2$q == res$0)) begin
-            at_res$0 = run;
-        end
-        at_iss$1 = run & (t$0$q == iss$1);
-        at_res$1 = 1'b0;
-        if ((view_res$1 == 0) & (t$0$q == res$1)) begin
-            at_res$1 = run;
-        end
-        if ((view_res$1 == 1) & (t$1$q == res$1)) begin
-            at_res$1 = run;
-        end
-        if ((view_res$1 == 2) & (t$2$q == res$1)) begin
-            at_res$1 = run;
-        end
-        at_iss$2 = run & (t$0$q == iss$2);
-        at_res$2 = 1'b0;
-        if ((view_res$2 == 0) & (t$0$q == res$2)) begin
-            at_res$2 = run;
-        end
-        if ((view_res$2 == 1) & (t$1$q == res$2)) begin
-            at_res$2 = run;
-        end
-        if ((view_res$2 == 2) & (t$2$q == res$2)) begin
-            at_res$2 = run;
-        end
-        at_iss$3 = run & (t$0$q == iss$3);
-        at_res$3 = 1'b0;
-        if ((view_res$3 == 0) & (t$0$q == res$3)) begin
-            at_res$3 = run;
-        end
-        if ((view_res$3 == 1) & (t$1$q == res$3)) begin
-            at_res$3 = run;
-        end
-        if ((view_res$3 == 2) & (t$2$q == res$3)) begin
-            at_res$3 = run;
-        end
-        at_iss$4 = run & (t$0$q == iss$4);
-        at_res$4 = 1'b0;
-        if ((view_res$4 == 0) & (t$0$q == res$4)) begin
-            at_res$4 = run;
-        end
-        if ((view_res$4 == 1) & (t$1$q == res$4)) begin
-            at_res$4 = run;
-        end
-        if ((view_res$4 == 2) & (t$2$q == res$4)) begin
-            at_res$4 = run;
-        end
-        at_iss$5 = run & (t$0$q == iss$5);
-        at_res$5 = 1'b0;
-        if ((view_res$5 == 0) & (t$0$q == res$5)) begin
-            at_res$5 = run;
-        end
-        if ((view_res$5 == 1) & (t$1$q == res$5)) begin
-            at_res$5 = run;
-        end
-        if ((view_res$5 == 2) & (t$2$q == res$5)) begin
-            at_res$5 = run;
-        end
-        at_iss$6 = run & (t$0$q == iss$6);
-        at_res$6 = 1'b0;
-        if ((view_res$6 == 0) & (t$0$q == res$6)) begin
-            at_res$6 = run;
-        end
-        if ((view_res$6 == 1) & (t$1$q == res$6)) begin
-            at_res$6 = run;
-        end
-        if ((view_res$6 == 2) & (t$2$q == res$6)) begin
-            at_res$6 = run;
-        end
-        at_handover = 1'b0;
-        if ((view_handover == 0) & (t$0$q == handover)) begin
-            at_handover = run;
-        end
-        if ((view_handover == 1) & (t$1$q == handover)) begin
-            at_handover = run;
-        end
-        if ((view_handover == 2) & (t$2$q == handover)) begin
-            at_handover = run;
-        end
+        act$55 = act_r$55$q & run;
+        act_r$56$clock = clock;
+        act_r$56$d = 1'b0;
+        if ((view$56 == 0) & (t$0$d == cyc$56)) begin
+            act_r$56$d = 1'b1;
+        end
+        if ((view$56 == 1) & (t$1$d == cyc$56)) begin
+            act_r$56$d = 1'b1;
+        end
+        if ((view$56 == 2) & (t$2$d == cyc$56)) begin
+            act_r$56$d = 1'b1;
+        end
+        act$56 = act_r$56$q & run;
+        act_r$57$clock = clock;
+        act_r$57$d = 1'b0;
+        if ((view$57 == 0) & (t$0$d == cyc$57)) begin
+            act_r$57$d = 1'b1;
+        end
+        if ((view$57 == 1) & (t$1$d == cyc$57)) begin
+            act_r$57$d = 1'b1;
+        end
+        if ((view$57 == 2) & (t$2$d == cyc$57)) begin
+            act_r$57$d = 1'b1;
+        end
+        act$57 = act_r$57$q & run;
+        act_r$58$clock = clock;
+        act_r$58$d = 1'b0;
+        if ((view$58 == 0) & (t$0$d == cyc$58)) begin
+            act_r$58$d = 1'b1;
+        end
+        if ((view$58 == 1) & (t$1$d == cyc$58)) begin
+            act_r$58$d = 1'b1;
+        end
+        if ((view$58 == 2) & (t$2$d == cyc$58)) begin
+            act_r$58$d = 1'b1;
+        end
+        act$58 = act_r$58$q & run;
+        act_r$59$clock = clock;
+        act_r$59$d = 1'b0;
+        if ((view$59 == 0) & (t$0$d == cyc$59)) begin
+            act_r$59$d = 1'b1;
+        end
+        if ((view$59 == 1) & (t$1$d == cyc$59)) begin
+            act_r$59$d = 1'b1;
+        end
+        if ((view$59 == 2) & (t$2$d == cyc$59)) begin
+            act_r$59$d = 1'b1;
+        end
+        act$59 = act_r$59$q & run;
+        act_r$60$clock = clock;
+        act_r$60$d = 1'b0;
+        if ((view$60 == 0) & (t$0$d == cyc$60)) begin
+            act_r$60$d = 1'b1;
+        end
+        if ((view$60 == 1) & (t$1$d == cyc$60)) begin
+            act_r$60$d = 1'b1;
+        end
+        if ((view$60 == 2) & (t$2$d == cyc$60)) begin
+            act_r$60$d = 1'b1;
+        end
+        act$60 = act_r$60$q & run;
+        act_r$61$clock = clock;
+        act_r$61$d = 1'b0;
+        if ((view$61 == 0) & (t$0$d == cyc$61)) begin
+            act_r$61$d = 1'b1;
+        end
+        if ((view$61 == 1) & (t$1$d == cyc$61)) begin
+            act_r$61$d = 1'b1;
+        end
+        if ((view$61 == 2) & (t$2$d == cyc$61)) begin
+            act_r$61$d = 1'b1;
+        end
+        act$61 = act_r$61$q & run;
+        act_r$62$clock = clock;
+        act_r$62$d = 1'b0;
+        if ((view$62 == 0) & (t$0$d == cyc$62)) begin
+            act_r$62$d = 1'b1;
+        end
+        if ((view$62 == 1) & (t$1$d == cyc$62)) begin
+            act_r$62$d = 1'b1;
+        end
+        if ((view$62 == 2) & (t$2$d == cyc$62)) begin
+            act_r$62$d = 1'b1;
+        end
+        act$62 = act_r$62$q & run;
+        act_r$63$clock = clock;
+        act_r$63$d = 1'b0;
+        if ((view$63 == 0) & (t$0$d == cyc$63)) begin
+            act_r$63$d = 1'b1;
+        end
+        if ((view$63 == 1) & (t$1$d == cyc$63)) begin
+            act_r$63$d = 1'b1;
+        end
+        if ((view$63 == 2) & (t$2$d == cyc$63)) begin
+            act_r$63$d = 1'b1;
+        end
+        act$63 = act_r$63$q & run;
+        norm_r$d = t$0$d == normalise;
+        at_norm = norm_r$q & run;
+        iss_r$0$clock = clock;
+        iss_r$0$d = t$0$d == iss$0;
+        at_iss$0 = iss_r$0$q & run;
+        res_r$0$clock = clock;
+        res_r$0$d = 1'b0;
+        if ((view_res$0 == 0) & (t$0$d == res$0)) begin
+            res_r$0$d = 1'b1;
+        end
+        if ((view_res$0 == 1) & (t$1$d == res$0)) begin
+            res_r$0$d = 1'b1;
+        end
+        if ((view_res$0 == 2) & (t$2$d == res$0)) begin
+            res_r$0$d = 1'b1;
+        end
+        at_res$0 = res_r$0$q & run;
+        iss_r$1$clock = clock;
+        iss_r$1$d = t$0$d == iss$1;
+        at_iss$1 = iss_r$1$q & run;
+        res_r$1$clock = clock;
+        res_r$1$d = 1'b0;
+        if ((view_res$1 == 0) & (t$0$d == res$1)) begin
+            res_r$1$d = 1'b1;
+        end
+        if ((view_res$1 == 1) & (t$1$d == res$1)) begin
+            res_r$1$d = 1'b1;
+        end
+        if ((view_res$1 == 2) & (t$2$d == res$1)) begin
+            res_r$1$d = 1'b1;
+        end
+        at_res$1 = res_r$1$q & run;
+        iss_r$2$clock = clock;
+        iss_r$2$d = t$0$d == iss$2;
+        at_iss$2 = iss_r$2$q & run;
+        res_r$2$clock = clock;
+        res_r$2$d = 1'b0;
+        if ((view_res$2 == 0) & (t$0$d == res$2)) begin
+            res_r$2$d = 1'b1;
+        end
+        if ((view_res$2 == 1) & (t$1$d == res$2)) begin
+            res_r$2$d = 1'b1;
+        end
+        if ((view_res$2 == 2) & (t$2$d == res$2)) begin
+            res_r$2$d = 1'b1;
+        end
+        at_res$2 = res_r$2$q & run;
+        iss_r$3$clock = clock;
+        iss_r$3$d = t$0$d == iss$3;
+        at_iss$3 = iss_r$3$q & run;
+        res_r$3$clock = clock;
+        res_r$3$d = 1'b0;
+        if ((view_res$3 == 0) & (t$0$d == res$3)) begin
+            res_r$3$d = 1'b1;
+        end
+        if ((view_res$3 == 1) & (t$1$d == res$3)) begin
+            res_r$3$d = 1'b1;
+        end
+        if ((view_res$3 == 2) & (t$2$d == res$3)) begin
+            res_r$3$d = 1'b1;
+        end
+        at_res$3 = res_r$3$q & run;
+        iss_r$4$clock = clock;
+        iss_r$4$d = t$0$d == iss$4;
+        at_iss$4 = iss_r$4$q & run;
+        res_r$4$clock = clock;
+        res_r$4$d = 1'b0;
+        if ((view_res$4 == 0) & (t$0$d == res$4)) begin
+            res_r$4$d = 1'b1;
+        end
+        if ((view_res$4 == 1) & (t$1$d == res$4)) begin
+            res_r$4$d = 1'b1;
+        end
+        if ((view_res$4 == 2) & (t$2$d == res$4)) begin
+            res_r$4$d = 1'b1;
+        end
+        at_res$4 = res_r$4$q & run;
+        iss_r$5$clock = clock;
+        iss_r$5$d = t$0$d == iss$5;
+        at_iss$5 = iss_r$5$q & run;
+        res_r$5$clock = clock;
+        res_r$5$d = 1'b0;
+        if ((view_res$5 == 0) & (t$0$d == res$5)) begin
+            res_r$5$d = 1'b1;
+        end
+        if ((view_res$5 == 1) & (t$1$d == res$5)) begin
+            res_r$5$d = 1'b1;
+        end
+        if ((view_res$5 == 2) & (t$2$d == res$5)) begin
+            res_r$5$d = 1'b1;
+        end
+        at_res$5 = res_r$5$q & run;
+        iss_r$6$clock = clock;
+        iss_r$6$d = t$0$d == iss$6;
+        at_iss$6 = iss_r$6$q & run;
+        res_r$6$clock = clock;
+        res_r$6$d = 1'b0;
+        if ((view_res$6 == 0) & (t$0$d == res$6)) begin
+            res_r$6$d = 1'b1;
+        end
+        if ((view_res$6 == 1) & (t$1$d == res$6)) begin
+            res_r$6$d = 1'b1;
+        end
+        if ((view_res$6 == 2) & (t$2$d == res$6)) begin
+            res_r$6$d = 1'b1;
+        end
+        at_res$6 = res_r$6$q & run;
+        handover_r$d = 1'b0;
+        if ((view_handover == 0) & (t$0$d == handover)) begin
+            handover_r$d = 1'b1;
+        end
+        if ((view_handover == 1) & (t$1$d == handover)) begin
+            handover_r$d = 1'b1;
+        end
+        if ((view_handover == 2) & (t$2$d == handover)) begin
+            handover_r$d = 1'b1;
+        end
+        at_handover = handover_r$q & run;
+        valid_r$d = t$2$d == last;
+        free_r$d = (t$0$d == 32'h0) | (t$0$d == ends$0);
         g0$vx$0 = vx$0$q;
         g0$vy$0 = vy$0$q;
         g0$vz$0 = vz$0$q;
@@ -15276,6 +16100,1222 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
 endmodule // raster_top$core$triangle_setup
 
 
+module raster_top$core$triangle_setup$act_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$0
+
+
+module raster_top$core$triangle_setup$act_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$1
+
+
+module raster_top$core$triangle_setup$act_r$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$10
+
+
+module raster_top$core$triangle_setup$act_r$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$11
+
+
+module raster_top$core$triangle_setup$act_r$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$12
+
+
+module raster_top$core$triangle_setup$act_r$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$13
+
+
+module raster_top$core$triangle_setup$act_r$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$14
+
+
+module raster_top$core$triangle_setup$act_r$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$15
+
+
+module raster_top$core$triangle_setup$act_r$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$16
+
+
+module raster_top$core$triangle_setup$act_r$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$17
+
+
+module raster_top$core$triangle_setup$act_r$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$18
+
+
+module raster_top$core$triangle_setup$act_r$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$19
+
+
+module raster_top$core$triangle_setup$act_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$2
+
+
+module raster_top$core$triangle_setup$act_r$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$20
+
+
+module raster_top$core$triangle_setup$act_r$21(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$21
+
+
+module raster_top$core$triangle_setup$act_r$22(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$22
+
+
+module raster_top$core$triangle_setup$act_r$23(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$23
+
+
+module raster_top$core$triangle_setup$act_r$24(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$24
+
+
+module raster_top$core$triangle_setup$act_r$25(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$25
+
+
+module raster_top$core$triangle_setup$act_r$26(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$26
+
+
+module raster_top$core$triangle_setup$act_r$27(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$27
+
+
+module raster_top$core$triangle_setup$act_r$28(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$28
+
+
+module raster_top$core$triangle_setup$act_r$29(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$29
+
+
+module raster_top$core$triangle_setup$act_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$3
+
+
+module raster_top$core$triangle_setup$act_r$30(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$30
+
+
+module raster_top$core$triangle_setup$act_r$31(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$31
+
+
+module raster_top$core$triangle_setup$act_r$32(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$32
+
+
+module raster_top$core$triangle_setup$act_r$33(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$33
+
+
+module raster_top$core$triangle_setup$act_r$34(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$34
+
+
+module raster_top$core$triangle_setup$act_r$35(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$35
+
+
+module raster_top$core$triangle_setup$act_r$36(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$36
+
+
+module raster_top$core$triangle_setup$act_r$37(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$37
+
+
+module raster_top$core$triangle_setup$act_r$38(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$38
+
+
+module raster_top$core$triangle_setup$act_r$39(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$39
+
+
+module raster_top$core$triangle_setup$act_r$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$4
+
+
+module raster_top$core$triangle_setup$act_r$40(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$40
+
+
+module raster_top$core$triangle_setup$act_r$41(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$41
+
+
+module raster_top$core$triangle_setup$act_r$42(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$42
+
+
+module raster_top$core$triangle_setup$act_r$43(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$43
+
+
+module raster_top$core$triangle_setup$act_r$44(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$44
+
+
+module raster_top$core$triangle_setup$act_r$45(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$45
+
+
+module raster_top$core$triangle_setup$act_r$46(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$46
+
+
+module raster_top$core$triangle_setup$act_r$47(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$47
+
+
+module raster_top$core$triangle_setup$act_r$48(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$48
+
+
+module raster_top$core$triangle_setup$act_r$49(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$49
+
+
+module raster_top$core$triangle_setup$act_r$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$5
+
+
+module raster_top$core$triangle_setup$act_r$50(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$50
+
+
+module raster_top$core$triangle_setup$act_r$51(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$51
+
+
+module raster_top$core$triangle_setup$act_r$52(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$52
+
+
+module raster_top$core$triangle_setup$act_r$53(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$53
+
+
+module raster_top$core$triangle_setup$act_r$54(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$54
+
+
+module raster_top$core$triangle_setup$act_r$55(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$55
+
+
+module raster_top$core$triangle_setup$act_r$56(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$56
+
+
+module raster_top$core$triangle_setup$act_r$57(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$57
+
+
+module raster_top$core$triangle_setup$act_r$58(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$58
+
+
+module raster_top$core$triangle_setup$act_r$59(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$59
+
+
+module raster_top$core$triangle_setup$act_r$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$6
+
+
+module raster_top$core$triangle_setup$act_r$60(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$60
+
+
+module raster_top$core$triangle_setup$act_r$61(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$61
+
+
+module raster_top$core$triangle_setup$act_r$62(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$62
+
+
+module raster_top$core$triangle_setup$act_r$63(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$63
+
+
+module raster_top$core$triangle_setup$act_r$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$7
+
+
+module raster_top$core$triangle_setup$act_r$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$8
+
+
+module raster_top$core$triangle_setup$act_r$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$act_r$9
+
+
 module raster_top$core$triangle_setup$area(d,q,clock);
     
     // Module arguments
@@ -17143,6 +19183,25 @@ module raster_top$core$triangle_setup$exp_e(d,q,clock);
 endmodule // raster_top$core$triangle_setup$exp_e
 
 
+module raster_top$core$triangle_setup$free_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$free_r
+
+
 module raster_top$core$triangle_setup$g0(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
@@ -18555,6 +20614,25 @@ module raster_top$core$triangle_setup$gy$3(d,q,clock);
 endmodule // raster_top$core$triangle_setup$gy$3
 
 
+module raster_top$core$triangle_setup$handover_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$handover_r
+
+
 module raster_top$core$triangle_setup$inc0$0(d,q,clock);
     
     // Module arguments
@@ -19011,6 +21089,139 @@ module raster_top$core$triangle_setup$inc1$9(d,q,clock);
 endmodule // raster_top$core$triangle_setup$inc1$9
 
 
+module raster_top$core$triangle_setup$iss_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$iss_r$0
+
+
+module raster_top$core$triangle_setup$iss_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$iss_r$1
+
+
+module raster_top$core$triangle_setup$iss_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$iss_r$2
+
+
+module raster_top$core$triangle_setup$iss_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$iss_r$3
+
+
+module raster_top$core$triangle_setup$iss_r$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$iss_r$4
+
+
+module raster_top$core$triangle_setup$iss_r$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$iss_r$5
+
+
+module raster_top$core$triangle_setup$iss_r$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$iss_r$6
+
+
 module raster_top$core$triangle_setup$mant(d,q,clock);
     
     // Module arguments
@@ -19145,6 +21356,25 @@ module raster_top$core$triangle_setup$norm(d,q,clock);
     end
           
 endmodule // raster_top$core$triangle_setup$norm
+
+
+module raster_top$core$triangle_setup$norm_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$norm_r
 
 
 module raster_top$core$triangle_setup$num$0(d,q,clock);
@@ -19622,6 +21852,139 @@ module raster_top$core$triangle_setup$r$2(d,q,clock);
 endmodule // raster_top$core$triangle_setup$r$2
 
 
+module raster_top$core$triangle_setup$res_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$res_r$0
+
+
+module raster_top$core$triangle_setup$res_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$res_r$1
+
+
+module raster_top$core$triangle_setup$res_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$res_r$2
+
+
+module raster_top$core$triangle_setup$res_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$res_r$3
+
+
+module raster_top$core$triangle_setup$res_r$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$res_r$4
+
+
+module raster_top$core$triangle_setup$res_r$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$res_r$5
+
+
+module raster_top$core$triangle_setup$res_r$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$res_r$6
+
+
 module raster_top$core$triangle_setup$rho$0(d,q,clock);
     
     // Module arguments
@@ -19829,6 +22192,25 @@ module raster_top$core$triangle_setup$t$3(d,q,clock);
     end
           
 endmodule // raster_top$core$triangle_setup$t$3
+
+
+module raster_top$core$triangle_setup$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$valid_r
 
 
 module raster_top$core$triangle_setup$vc$0(d,q,clock);

@@ -282,6 +282,16 @@ pub struct TriangleSetup {
     at_iss: [Signal<Local, Bit>; 7],
     at_res: [Signal<Local, Bit>; 7],
     at_handover: Signal<Local, Bit>,
+    /// The same, and the result valid and copy 0 free for a triangle, decoded a cycle ahead
+    /// from the counters' next values, so that no comparison of a counter lies on a path
+    /// into the multipliers or the divider: each of the above is its register and `run`.
+    act_r: [DFF<Bit>; PRODUCTS],
+    norm_r: DFF<Bit>,
+    iss_r: [DFF<Bit>; 7],
+    res_r: [DFF<Bit>; 7],
+    handover_r: DFF<Bit>,
+    valid_r: DFF<Bit>,
+    free_r: DFF<Bit>,
 
     // The triangle's registers, one copy per II cycles of its schedule (copy v at index
     // v, or 3v + vertex, or 9v + 3 * vertex + channel): x, y, z, colours, crossings, the
@@ -443,6 +453,13 @@ impl TriangleSetup {
             at_iss: defaults(),
             at_res: defaults(),
             at_handover: Default::default(),
+            act_r: defaults(),
+            norm_r: Default::default(),
+            iss_r: defaults(),
+            res_r: defaults(),
+            handover_r: Default::default(),
+            valid_r: Default::default(),
+            free_r: Default::default(),
             vx: defaults(),
             vy: defaults(),
             vz: defaults(),
@@ -537,7 +554,7 @@ impl Logic for TriangleSetup {
     #[hdl_gen]
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written.
-        dff_setup!(self, clock, area, norm, div_v, div_n, div_d, mant, exp_e);
+        dff_setup!(self, clock, area, norm, div_v, div_n, div_d, mant, exp_e, norm_r, handover_r, valid_r, free_r);
         clock!(self, clock, div);
         for v in 0..COPIES_MAX {
             self.t[v].clock.next = self.clock.val();
@@ -594,12 +611,9 @@ impl Logic for TriangleSetup {
         // ---- Control. Everything waits while a result is not taken. Otherwise each copy's
         // triangle moves on, into the next copy at the end of its part; setup takes a triangle
         // into copy 0 when none is there or the one there reaches cycle II.
-        for v in (self._copies - 1)..self._copies {
-            self.run.next = !((self.t[v].q.val() == self.last.val()) & !self.out.ready.val());
-            self.out.valid.next = self.t[v].q.val() == self.last.val();
-        }
-        self.inp.ready.next =
-            self.run.val() & ((self.t[0].q.val() == 0) | (self.t[0].q.val() == self.ends[0].val()));
+        self.run.next = !(self.valid_r.q.val() & !self.out.ready.val());
+        self.out.valid.next = self.valid_r.q.val();
+        self.inp.ready.next = self.run.val() & self.free_r.q.val();
         self.take.next = self.inp.valid.val() & self.inp.ready.val();
         if self.run.val() {
             for v in 0..self._copies {
@@ -649,32 +663,44 @@ impl Logic for TriangleSetup {
             self.vc[8].d.next = self.inp.v2_c2.val();
             self.crosses[0].d.next = self.inp.crosses.val();
         }
-        // What is due this cycle: a cycle of the schedule is its copy's counter (the views
-        // are constants, so each is one comparison).
+        // What is due next cycle: a cycle of the schedule is its copy's counter (the views
+        // are constants, so each is one comparison), decoded from the counters' next values.
         for i in 0..PRODUCTS {
-            self.act[i].next = false;
+            self.act_r[i].clock.next = self.clock.val();
+            self.act_r[i].d.next = false;
             for v in 0..self._copies {
-                if (self.view[i].val().index() == v) & (self.t[v].q.val() == self.cyc[i].val()) {
-                    self.act[i].next = self.run.val();
+                if (self.view[i].val().index() == v) & (self.t[v].d.val() == self.cyc[i].val()) {
+                    self.act_r[i].d.next = true;
                 }
             }
+            self.act[i].next = self.act_r[i].q.val() & self.run.val();
         }
-        self.at_norm.next = self.run.val() & (self.t[0].q.val() == self.normalise.val());
+        self.norm_r.d.next = self.t[0].d.val() == self.normalise.val();
+        self.at_norm.next = self.norm_r.q.val() & self.run.val();
         for j in 0..7 {
-            self.at_iss[j].next = self.run.val() & (self.t[0].q.val() == self.iss[j].val());
-            self.at_res[j].next = false;
+            self.iss_r[j].clock.next = self.clock.val();
+            self.iss_r[j].d.next = self.t[0].d.val() == self.iss[j].val();
+            self.at_iss[j].next = self.iss_r[j].q.val() & self.run.val();
+            self.res_r[j].clock.next = self.clock.val();
+            self.res_r[j].d.next = false;
             for v in 0..self._copies {
-                if (self.view_res[j].val().index() == v) & (self.t[v].q.val() == self.res[j].val()) {
-                    self.at_res[j].next = self.run.val();
+                if (self.view_res[j].val().index() == v) & (self.t[v].d.val() == self.res[j].val()) {
+                    self.res_r[j].d.next = true;
                 }
             }
+            self.at_res[j].next = self.res_r[j].q.val() & self.run.val();
         }
-        self.at_handover.next = false;
+        self.handover_r.d.next = false;
         for v in 0..self._copies {
-            if (self.view_handover.val().index() == v) & (self.t[v].q.val() == self.handover.val()) {
-                self.at_handover.next = self.run.val();
+            if (self.view_handover.val().index() == v) & (self.t[v].d.val() == self.handover.val()) {
+                self.handover_r.d.next = true;
             }
         }
+        self.at_handover.next = self.handover_r.q.val() & self.run.val();
+        for v in (self._copies - 1)..self._copies {
+            self.valid_r.d.next = self.t[v].d.val() == self.last.val();
+        }
+        self.free_r.d.next = (self.t[0].d.val() == 0) | (self.t[0].d.val() == self.ends[0].val());
 
         // ---- Geometry of each copy.
         for i in 0..3 {
