@@ -6,9 +6,10 @@
 //!   taken), and memory never stalls;
 //! * units hand over on valid/ready with no bubble: a unit starts its next
 //!   item the cycle after the previous one is taken;
-//! * `cull_sort`: latency 1, one triangle per cycle; its output register holds a
-//!   passing triangle until setup takes it, and takes the next triangle in the
-//!   cycle one leaves (a rejected one leaves the cycle after it came in);
+//! * `cull_sort`: [`cull_sort::LATENCY`] stages, one triangle per cycle; a triangle
+//!   moves to the next stage in the cycle the one before leaves it (or the cycle after
+//!   it came in, if later), and its output register holds a passing triangle until
+//!   setup takes it (a rejected one leaves the cycle it arrives);
 //! * `triangle_setup` holds several triangles: it takes the next one II cycles
 //!   after the last (or when idle), and while a result waits for the edge walk
 //!   all of setup waits (the triangle behind it too); its latency and II follow
@@ -158,17 +159,33 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
     // last one's result: valid from `done`, handed over in `handed` (setup waits between).
     let mut setup_free = 0u64;
     let mut prev: Option<(u64, u64)> = None;
-    // The cycle cull_sort takes the next triangle.
-    let mut cull_free = 0u64;
+    // cull_sort's stages (none without it): `stage_free[k]` is the cycle the triangle before
+    // left stage k + 1 (the last: the output register), in which the next may move into it;
+    // the next triangle is taken (without cull_sort: offered to setup) in `stage_free[0]`.
+    let stages = if t.cull_sort { cull_sort::LATENCY as usize } else { 0 };
+    let mut stage_free = vec![0u64; stages.max(1)];
+    let mut leaves = vec![0u64; stages.max(1)];
     let mut span_starts: Vec<u64> = Vec::new();
     let mut out = FrameCycles::default();
-    let cull_latency = if t.cull_sort { cull_sort::LATENCY as u64 } else { 0 };
     let write_latency = if t.pixel_out { 1 + pixel_out::LATENCY as u64 } else { 1 };
     for w in work.iter().filter(|w| t.cull_sort || w.passed_cull) {
-        let culled = cull_free + cull_latency;
+        // `leaves[k]`: the cycle the triangle leaves stage k (0: taken); `culled`: its first
+        // cycle in the output register, with its verdict.
+        leaves[0] = stage_free[0];
+        for k in 1..stages {
+            leaves[k] = (leaves[k - 1] + 1).max(stage_free[k]);
+        }
+        let culled = if stages == 0 { leaves[0] } else { leaves[stages - 1] + 1 };
+        // Once the triangle leaves the output register (in `left`), each stage is free for
+        // the next one from the cycle this one left it.
+        fn moved_on(stage_free: &mut [u64], leaves: &[u64], left: u64) {
+            let n = stage_free.len();
+            stage_free[..n - 1].copy_from_slice(&leaves[1..]);
+            stage_free[n - 1] = left;
+        }
         last = last.max(culled);
         if !w.passed_cull {
-            cull_free = culled;
+            moved_on(&mut stage_free, &leaves, culled);
             continue;
         }
         out.triangles += 1;
@@ -183,7 +200,7 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
                 wait = handed - done;
             }
         }
-        cull_free = setup_start;
+        moved_on(&mut stage_free, &leaves, setup_start);
         let done = setup_start + setup + wait;
         let ew_start = done.max(ew_free);
         setup_free = setup_start + interval + wait;
@@ -264,20 +281,22 @@ mod tests {
     #[test]
     fn cycles_setup_overlaps_triangles_and_waits_as_one() {
         let walk = |n: usize| Work { passed_cull: true, scanlines: vec![None; n], vector_cycles: 0 };
-        // First: culled out at 1, taken, done at 21, walked 23..73. Second: culled out at 2,
-        // taken at 1 + 10 = 11, done at 31, waits for the walk until 73, walked 75..76.
-        // Third: culled out at 12, taken at 21 (the second in its cycle 10), in flight while
-        // the second waits 42 cycles: done at 21 + 20 + 42 = 83, walked 85..86.
-        assert_eq!(scanline_frame(&[walk(50), walk(1), walk(1)], &Timing::default()).total, 86);
-        // Without the long walk nothing waits: the third is done at 41, walked 43..44.
-        assert_eq!(scanline_frame(&[walk(1), walk(1), walk(1)], &Timing::default()).total, 44);
+        // First: culled out at 3 (cull_sort's three stages), taken, done at 23, walked
+        // 25..75. Second: culled out at 4, taken at 3 + 10 = 13, done at 33, waits for the
+        // walk until 75, walked 77..78. Third: culled out at 14 (it waited in stage 2 while
+        // the second held the output register), taken at 23 (the second in its cycle 10),
+        // in flight while the second waits 42 cycles: done at 23 + 20 + 42 = 85, walked
+        // 87..88.
+        assert_eq!(scanline_frame(&[walk(50), walk(1), walk(1)], &Timing::default()).total, 88);
+        // Without the long walk nothing waits: the third is done at 43, walked 45..46.
+        assert_eq!(scanline_frame(&[walk(1), walk(1), walk(1)], &Timing::default()).total, 46);
         // A triangle offered while setup waits is taken when the result is handed over: as
-        // above, the second waits from 31 to 73; the third, culled out at 52 behind 40
-        // culled ones, goes in at 73; done at 73 + 20 = 93, walked 95..96.
+        // above, the second waits from 33 to 75; the third, culled out at 54 behind 40
+        // culled ones, goes in at 75; done at 75 + 20 = 95, walked 97..98.
         let mut frame = vec![walk(50), walk(1)];
         frame.extend(std::iter::repeat_n(Work::default(), 40));
         frame.push(walk(1));
-        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 96);
+        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 98);
     }
 
     /// A span of `c` cycles whose last cycle sends a pixel.
@@ -287,52 +306,54 @@ mod tests {
 
     #[test]
     fn cycles_one_triangle_through_the_scanline_pipeline() {
-        // Culled out at 1; setup done at 1 + 20 = 21; the walk emits at 23, 24, 25;
-        // span takes each 1 cycle later or when free: 24..29, 29..34, 34..39;
-        // the last pixel is written 2 cycles after, in cycle 40: 41 cycles.
+        // Taken in cycle 0, culled out at 3; setup done at 3 + 20 = 23; the walk emits at
+        // 25, 26, 27; span takes each 1 cycle later or when free: 26..31, 31..36, 36..41;
+        // the last pixel is written 2 cycles after, in cycle 42: 43 cycles.
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], vector_cycles: 0 };
         let c = scanline_frame(std::slice::from_ref(&w), &Timing::default());
-        assert_eq!((c.total, c.span_busy, c.triangles), (41, 15, 1));
+        assert_eq!((c.total, c.span_busy, c.triangles), (43, 15, 1));
         // A culled triangle ahead costs one cycle of cull_sort only.
         let culled = Work::default();
-        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &Timing::default()).total, 42);
+        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &Timing::default()).total, 44);
         // Behind a triangle waiting for setup, culled ones wait too: the first triangle
-        // leaves cull_sort for setup in cycle 1, the second (which crosses no scanline)
-        // in 11, when the first is in its cycle 10 (II); then the 30 culled ones go through
-        // cull_sort, one per cycle, the last one's verdict in cycle 41.
+        // leaves cull_sort for setup in cycle 3, the second (which crosses no scanline)
+        // arrives in the output register at 4 and leaves in 13, when the first is in its
+        // cycle 10 (II); the first two culled ones, taken at 2 and 3, wait in stages 1 and
+        // 2 (nothing more is taken), then the 40 culled ones go through cull_sort, one per
+        // cycle, the last one's verdict in cycle 13 + 40.
         let mut frame = vec![w.clone(), Work { passed_cull: true, ..Work::default() }];
-        frame.extend(std::iter::repeat_n(culled, 30));
-        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 11 + 30);
+        frame.extend(std::iter::repeat_n(culled, 40));
+        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 13 + 40);
         // With a 4-deep FIFO the walk runs ahead and span never waits: busy from
-        // 24 for 53 cycles, written 2 later.
+        // 26 for 53 cycles, written 2 later.
         let long = Work { scanlines: vec![full(50), full(1), full(1), None, full(1)], ..w.clone() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&long), &Timing::default()).total, 24 + 53 + 2);
+        assert_eq!(scanline_frame(std::slice::from_ref(&long), &Timing::default()).total, 26 + 53 + 2);
         // A one-deep FIFO holds the walk until span takes each command; the last
-        // command is emitted only at 76, reaches span at 77: one idle cycle.
-        assert_eq!(scanline_frame(&[long], &Timing { span_fifo: 1, ..Timing::default() }).total, 24 + 53 + 1 + 2);
+        // command is emitted only at 78, reaches span at 79: one idle cycle.
+        assert_eq!(scanline_frame(&[long], &Timing { span_fifo: 1, ..Timing::default() }).total, 26 + 53 + 1 + 2);
         // Spans that end on pixels sent nowhere (off screen, out of the depth range, or
         // dropped): the frame ends when span is done, or 3 cycles after the last pixel.
         let mut tail = w.clone();
         tail.scanlines[2] = Some(SpanWork { cycles: 5, last_sent: Some(1) });
-        assert_eq!(scanline_frame(&[tail.clone()], &Timing::default()).total, 39);
+        assert_eq!(scanline_frame(&[tail.clone()], &Timing::default()).total, 41);
         tail.scanlines[2] = Some(SpanWork { cycles: 1, last_sent: None });
-        // Dropped: span done at 35, the pixel of cycle 33 written in 35.
-        assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 36);
+        // Dropped: span done at 37, the pixel of cycle 35 written in 37.
+        assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 38);
     }
 
     #[test]
     fn cycles_without_cull_sort_or_pixel_out() {
         // Without cull_sort the triangle reaches setup in cycle 0 and culled ones are not
-        // sent: 1 cycle less, and nothing for the 30 culled ones.
+        // sent: 3 cycles less, and nothing for the 30 culled ones.
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], vector_cycles: 0 };
         let mut frame = vec![Work::default(), w.clone()];
         frame.extend(std::iter::repeat_n(Work::default(), 30));
         let no_cull = Timing { cull_sort: false, ..Timing::default() };
         assert_eq!(scanline_frame(&frame, &no_cull).total, 40);
-        // Without pixel_out the frame ends the cycle after span's last fragment (38):
+        // Without pixel_out the frame ends the cycle after span's last fragment (40):
         // 2 cycles less than with the depth test and write behind it.
         let no_out = Timing { pixel_out: false, ..Timing::default() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 39);
+        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 41);
         let neither = Timing { cull_sort: false, pixel_out: false, ..Timing::default() };
         assert_eq!(scanline_frame(&frame, &neither).total, 38);
     }
@@ -340,7 +361,8 @@ mod tests {
     #[test]
     fn cycles_vector_frame_adds_triangles_in_turn() {
         let w = |c| Work { passed_cull: true, vector_cycles: c, ..Work::default() };
-        assert_eq!(vector_frame(&[w(100)]).total, 1 + 100 + 2);
-        assert_eq!(vector_frame(&[w(100), Work::default(), w(10)]).total, 1 + 100 + 10 + 2);
+        let cull = cull_sort::LATENCY as u64;
+        assert_eq!(vector_frame(&[w(100)]).total, cull + 100 + 2);
+        assert_eq!(vector_frame(&[w(100), Work::default(), w(10)]).total, cull + 100 + 10 + 2);
     }
 }
