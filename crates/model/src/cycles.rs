@@ -17,7 +17,9 @@
 //!   latency ([`setup_timing`], the schedule its RTL runs);
 //! * `edge_walk`: first span command [`edge_walk::LATENCY`] cycles after it takes
 //!   a triangle, then one scanline per cycle; it stalls while the span FIFO is full;
-//! * `span`: one cycle per pixel walked, one for a dropped span; latency 1;
+//! * `span`: one cycle per pixel walked, one for a dropped span, the walk starting the
+//!   cycle after the command is taken; each pixel leaves [`span::LATENCY`] - 1 cycles
+//!   after its walk cycle (latency 2: the pixel register);
 //! * `pixel_out`: one pixel per cycle, latency 2;
 //! * without `cull_sort` ([`Timing::cull_sort`]) the host sends only the triangles that
 //!   pass, straight to setup; without `pixel_out` the fragments leave `span` at once;
@@ -212,13 +214,16 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
                 if span_starts.len() >= fifo {
                     now = now.max(span_starts[span_starts.len() - fifo]);
                 }
-                let start = (now + span::LATENCY as u64).max(span_free);
+                // The walk's first cycle: span takes the command when idle or in the last
+                // cycle of the walk before; walk cycle k's pixel leaves span in
+                // start + k + LATENCY - 1 (its pixel register).
+                let start = (now + 1).max(span_free);
                 span_starts.push(start);
                 span_free = start + span.cycles as u64;
                 out.span_busy += span.cycles as u64;
                 // pixel_out is empty LATENCY cycles after the one after its last pixel.
                 if let Some(k) = span.last_sent {
-                    last = last.max(start + k as u64 + write_latency);
+                    last = last.max(start + k as u64 + (span::LATENCY as u64 - 1) + write_latency);
                 }
             }
             now += 1;
@@ -307,14 +312,15 @@ mod tests {
     #[test]
     fn cycles_one_triangle_through_the_scanline_pipeline() {
         // Taken in cycle 0, culled out at 3; setup done at 3 + 20 = 23; the walk emits at
-        // 25, 26, 27; span takes each 1 cycle later or when free: 26..31, 31..36, 36..41;
-        // the last pixel is written 2 cycles after, in cycle 42: 43 cycles.
+        // 25, 26, 27; span walks each from 1 cycle later or when free: 26..31, 31..36,
+        // 36..41; the last pixel leaves span's pixel register in 41 and is written 2 cycles
+        // after, in cycle 43: 44 cycles.
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], vector_cycles: 0 };
         let c = scanline_frame(std::slice::from_ref(&w), &Timing::default());
-        assert_eq!((c.total, c.span_busy, c.triangles), (43, 15, 1));
+        assert_eq!((c.total, c.span_busy, c.triangles), (44, 15, 1));
         // A culled triangle ahead costs one cycle of cull_sort only.
         let culled = Work::default();
-        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &Timing::default()).total, 44);
+        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &Timing::default()).total, 45);
         // Behind a triangle waiting for setup, culled ones wait too: the first triangle
         // leaves cull_sort for setup in cycle 3, the second (which crosses no scanline)
         // arrives in the output register at 4 and leaves in 13, when the first is in its
@@ -324,21 +330,23 @@ mod tests {
         let mut frame = vec![w.clone(), Work { passed_cull: true, ..Work::default() }];
         frame.extend(std::iter::repeat_n(culled, 40));
         assert_eq!(scanline_frame(&frame, &Timing::default()).total, 13 + 40);
-        // With a 4-deep FIFO the walk runs ahead and span never waits: busy from
-        // 26 for 53 cycles, written 2 later.
+        // With a 4-deep FIFO the walk runs ahead and span never waits: walking from 26
+        // for 53 cycles, the last pixel out of the pixel register 1 later, written 2 later.
         let long = Work { scanlines: vec![full(50), full(1), full(1), None, full(1)], ..w.clone() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&long), &Timing::default()).total, 26 + 53 + 2);
+        assert_eq!(scanline_frame(std::slice::from_ref(&long), &Timing::default()).total, 26 + 53 + 1 + 2);
         // A one-deep FIFO holds the walk until span takes each command; the last
         // command is emitted only at 78, reaches span at 79: one idle cycle.
-        assert_eq!(scanline_frame(&[long], &Timing { span_fifo: 1, ..Timing::default() }).total, 26 + 53 + 1 + 2);
+        let one_deep = Timing { span_fifo: 1, ..Timing::default() };
+        assert_eq!(scanline_frame(&[long], &one_deep).total, 26 + 53 + 1 + 1 + 2);
         // Spans that end on pixels sent nowhere (off screen, out of the depth range, or
-        // dropped): the frame ends when span is done, or 3 cycles after the last pixel.
+        // dropped): the frame ends when span is done, or 4 cycles after the last pixel's
+        // walk cycle (out of the pixel register, into pixel_out, written).
         let mut tail = w.clone();
         tail.scanlines[2] = Some(SpanWork { cycles: 5, last_sent: Some(1) });
         assert_eq!(scanline_frame(&[tail.clone()], &Timing::default()).total, 41);
         tail.scanlines[2] = Some(SpanWork { cycles: 1, last_sent: None });
-        // Dropped: span done at 37, the pixel of cycle 35 written in 37.
-        assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 38);
+        // Dropped: span done at 37, the pixel walked in 35 out of span in 36, written in 38.
+        assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 39);
     }
 
     #[test]
@@ -349,13 +357,13 @@ mod tests {
         let mut frame = vec![Work::default(), w.clone()];
         frame.extend(std::iter::repeat_n(Work::default(), 30));
         let no_cull = Timing { cull_sort: false, ..Timing::default() };
-        assert_eq!(scanline_frame(&frame, &no_cull).total, 40);
-        // Without pixel_out the frame ends the cycle after span's last fragment (40):
+        assert_eq!(scanline_frame(&frame, &no_cull).total, 41);
+        // Without pixel_out the frame ends the cycle after span's last fragment (41):
         // 2 cycles less than with the depth test and write behind it.
         let no_out = Timing { pixel_out: false, ..Timing::default() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 41);
+        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 42);
         let neither = Timing { cull_sort: false, pixel_out: false, ..Timing::default() };
-        assert_eq!(scanline_frame(&frame, &neither).total, 38);
+        assert_eq!(scanline_frame(&frame, &neither).total, 39);
     }
 
     #[test]

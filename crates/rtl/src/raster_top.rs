@@ -40,7 +40,7 @@
 //! never stalls): cull_sort 3 cycles; setup `model::cycles::setup_timing` (latency 19, a
 //! triangle every 10 cycles at K = 7, L = 5); the edge walk's first command 2 cycles after
 //! it takes a triangle, then a scanline per cycle; the span FIFO passes a command straight
-//! through when empty; span's first pixel 1 cycle after it takes a command, then a pixel
+//! through when empty; span's first pixel 2 cycles after it takes a command, then a pixel
 //! per cycle; the write 2 cycles after the pixel.
 //! Model: `model::render::render` with `Method::Scanline`. Emitted: `hdl-out/raster_top.v`.
 
