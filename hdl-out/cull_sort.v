@@ -1,6 +1,6 @@
 
 
-module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,out$crosses,verdict$valid,verdict$code,verdict$outside);
+module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,out$crosses,verdict$valid,verdict$code,verdict$outside,idle);
     
     // Module arguments
     input wire  clock;
@@ -57,6 +57,7 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
     output reg  verdict$valid;
     output reg  [1:0] verdict$code;
     output reg  [5:0] verdict$outside;
+    output reg  idle;
     
     // Constant declarations
     localparam  z_max = 18'b1111111111111111;
@@ -83,12 +84,180 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
     wire  [16:0] wy$1$y;
     reg  [15:0] wy$2$x;
     wire  [16:0] wy$2$y;
+    reg  [15:0] s1x$0$d;
+    wire  [15:0] s1x$0$q;
+    reg  s1x$0$clock;
+    reg  [15:0] s1x$1$d;
+    wire  [15:0] s1x$1$q;
+    reg  s1x$1$clock;
+    reg  [15:0] s1x$2$d;
+    wire  [15:0] s1x$2$q;
+    reg  s1x$2$clock;
+    reg  [15:0] s1y$0$d;
+    wire  [15:0] s1y$0$q;
+    reg  s1y$0$clock;
+    reg  [15:0] s1y$1$d;
+    wire  [15:0] s1y$1$q;
+    reg  s1y$1$clock;
+    reg  [15:0] s1y$2$d;
+    wire  [15:0] s1y$2$q;
+    reg  s1y$2$clock;
+    reg  [17:0] s1z$0$d;
+    wire  [17:0] s1z$0$q;
+    reg  s1z$0$clock;
+    reg  [17:0] s1z$1$d;
+    wire  [17:0] s1z$1$q;
+    reg  s1z$1$clock;
+    reg  [17:0] s1z$2$d;
+    wire  [17:0] s1z$2$q;
+    reg  s1z$2$clock;
+    reg  [7:0] s1c$0$d;
+    wire  [7:0] s1c$0$q;
+    reg  s1c$0$clock;
+    reg  [7:0] s1c$1$d;
+    wire  [7:0] s1c$1$q;
+    reg  s1c$1$clock;
+    reg  [7:0] s1c$2$d;
+    wire  [7:0] s1c$2$q;
+    reg  s1c$2$clock;
+    reg  [7:0] s1c$3$d;
+    wire  [7:0] s1c$3$q;
+    reg  s1c$3$clock;
+    reg  [7:0] s1c$4$d;
+    wire  [7:0] s1c$4$q;
+    reg  s1c$4$clock;
+    reg  [7:0] s1c$5$d;
+    wire  [7:0] s1c$5$q;
+    reg  s1c$5$clock;
+    reg  [7:0] s1c$6$d;
+    wire  [7:0] s1c$6$q;
+    reg  s1c$6$clock;
+    reg  [7:0] s1c$7$d;
+    wire  [7:0] s1c$7$q;
+    reg  s1c$7$clock;
+    reg  [7:0] s1c$8$d;
+    wire  [7:0] s1c$8$q;
+    reg  s1c$8$clock;
+    reg  [15:0] s1iw$0$d;
+    wire  [15:0] s1iw$0$q;
+    reg  s1iw$0$clock;
+    reg  [15:0] s1iw$1$d;
+    wire  [15:0] s1iw$1$q;
+    reg  s1iw$1$clock;
+    reg  [15:0] s1iw$2$d;
+    wire  [15:0] s1iw$2$q;
+    reg  s1iw$2$clock;
+    reg  [16:0] e1x$d;
+    wire  [16:0] e1x$q;
+    reg  e1x$clock;
+    reg  [16:0] e2y$d;
+    wire  [16:0] e2y$q;
+    reg  e2y$clock;
+    reg  [16:0] e2x$d;
+    wire  [16:0] e2x$q;
+    reg  e2x$clock;
+    reg  [16:0] e1y$d;
+    wire  [16:0] e1y$q;
+    reg  e1y$clock;
+    reg  [5:0] outside1$d;
+    wire  [5:0] outside1$q;
+    reg  outside1$clock;
+    reg  [5:0] crosses1$d;
+    wire  [5:0] crosses1$q;
+    reg  crosses1$clock;
+    reg  back1$d;
+    wire  back1$q;
+    reg  back1$clock;
+    reg  full1$d;
+    wire  full1$q;
+    reg  full1$clock;
+    reg  [15:0] s2x$0$d;
+    wire  [15:0] s2x$0$q;
+    reg  s2x$0$clock;
+    reg  [15:0] s2x$1$d;
+    wire  [15:0] s2x$1$q;
+    reg  s2x$1$clock;
+    reg  [15:0] s2x$2$d;
+    wire  [15:0] s2x$2$q;
+    reg  s2x$2$clock;
+    reg  [15:0] s2y$0$d;
+    wire  [15:0] s2y$0$q;
+    reg  s2y$0$clock;
+    reg  [15:0] s2y$1$d;
+    wire  [15:0] s2y$1$q;
+    reg  s2y$1$clock;
+    reg  [15:0] s2y$2$d;
+    wire  [15:0] s2y$2$q;
+    reg  s2y$2$clock;
+    reg  [17:0] s2z$0$d;
+    wire  [17:0] s2z$0$q;
+    reg  s2z$0$clock;
+    reg  [17:0] s2z$1$d;
+    wire  [17:0] s2z$1$q;
+    reg  s2z$1$clock;
+    reg  [17:0] s2z$2$d;
+    wire  [17:0] s2z$2$q;
+    reg  s2z$2$clock;
+    reg  [7:0] s2c$0$d;
+    wire  [7:0] s2c$0$q;
+    reg  s2c$0$clock;
+    reg  [7:0] s2c$1$d;
+    wire  [7:0] s2c$1$q;
+    reg  s2c$1$clock;
+    reg  [7:0] s2c$2$d;
+    wire  [7:0] s2c$2$q;
+    reg  s2c$2$clock;
+    reg  [7:0] s2c$3$d;
+    wire  [7:0] s2c$3$q;
+    reg  s2c$3$clock;
+    reg  [7:0] s2c$4$d;
+    wire  [7:0] s2c$4$q;
+    reg  s2c$4$clock;
+    reg  [7:0] s2c$5$d;
+    wire  [7:0] s2c$5$q;
+    reg  s2c$5$clock;
+    reg  [7:0] s2c$6$d;
+    wire  [7:0] s2c$6$q;
+    reg  s2c$6$clock;
+    reg  [7:0] s2c$7$d;
+    wire  [7:0] s2c$7$q;
+    reg  s2c$7$clock;
+    reg  [7:0] s2c$8$d;
+    wire  [7:0] s2c$8$q;
+    reg  s2c$8$clock;
+    reg  [15:0] s2iw$0$d;
+    wire  [15:0] s2iw$0$q;
+    reg  s2iw$0$clock;
+    reg  [15:0] s2iw$1$d;
+    wire  [15:0] s2iw$1$q;
+    reg  s2iw$1$clock;
+    reg  [15:0] s2iw$2$d;
+    wire  [15:0] s2iw$2$q;
+    reg  s2iw$2$clock;
     reg  [16:0] area_mul$0$a;
     reg  [16:0] area_mul$0$b;
     wire  [33:0] area_mul$0$p;
     reg  [16:0] area_mul$1$a;
     reg  [16:0] area_mul$1$b;
     wire  [33:0] area_mul$1$p;
+    reg  [33:0] prod0$d;
+    wire  [33:0] prod0$q;
+    reg  prod0$clock;
+    reg  [33:0] prod1$d;
+    wire  [33:0] prod1$q;
+    reg  prod1$clock;
+    reg  [5:0] outside2$d;
+    wire  [5:0] outside2$q;
+    reg  outside2$clock;
+    reg  [5:0] crosses2$d;
+    wire  [5:0] crosses2$q;
+    reg  crosses2$clock;
+    reg  back2$d;
+    wire  back2$q;
+    reg  back2$clock;
+    reg  full2$d;
+    wire  full2$q;
+    reg  full2$clock;
     reg  [15:0] sx$0$d;
     wire  [15:0] sx$0$q;
     reg  sx$0$clock;
@@ -211,7 +380,6 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
     reg  far$2;
     reg  [15:0] right;
     reg  [15:0] bottom;
-    reg  [33:0] area;
     reg  [15:0] key$0;
     reg  [15:0] key$1;
     reg  [15:0] key$2;
@@ -224,8 +392,11 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
     reg  [1:0] rank$0;
     reg  [1:0] rank$1;
     reg  [1:0] rank$2;
+    reg  [33:0] area;
     reg  [1:0] code;
     reg  take;
+    reg  move1;
+    reg  move2;
     reg  leave;
     
     // Sub module instances
@@ -253,6 +424,256 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
         .x(wy$2$x),
         .y(wy$2$y)
     );
+    cull_sort$s1x$0 s1x$0(
+        .d(s1x$0$d),
+        .q(s1x$0$q),
+        .clock(s1x$0$clock)
+    );
+    cull_sort$s1x$1 s1x$1(
+        .d(s1x$1$d),
+        .q(s1x$1$q),
+        .clock(s1x$1$clock)
+    );
+    cull_sort$s1x$2 s1x$2(
+        .d(s1x$2$d),
+        .q(s1x$2$q),
+        .clock(s1x$2$clock)
+    );
+    cull_sort$s1y$0 s1y$0(
+        .d(s1y$0$d),
+        .q(s1y$0$q),
+        .clock(s1y$0$clock)
+    );
+    cull_sort$s1y$1 s1y$1(
+        .d(s1y$1$d),
+        .q(s1y$1$q),
+        .clock(s1y$1$clock)
+    );
+    cull_sort$s1y$2 s1y$2(
+        .d(s1y$2$d),
+        .q(s1y$2$q),
+        .clock(s1y$2$clock)
+    );
+    cull_sort$s1z$0 s1z$0(
+        .d(s1z$0$d),
+        .q(s1z$0$q),
+        .clock(s1z$0$clock)
+    );
+    cull_sort$s1z$1 s1z$1(
+        .d(s1z$1$d),
+        .q(s1z$1$q),
+        .clock(s1z$1$clock)
+    );
+    cull_sort$s1z$2 s1z$2(
+        .d(s1z$2$d),
+        .q(s1z$2$q),
+        .clock(s1z$2$clock)
+    );
+    cull_sort$s1c$0 s1c$0(
+        .d(s1c$0$d),
+        .q(s1c$0$q),
+        .clock(s1c$0$clock)
+    );
+    cull_sort$s1c$1 s1c$1(
+        .d(s1c$1$d),
+        .q(s1c$1$q),
+        .clock(s1c$1$clock)
+    );
+    cull_sort$s1c$2 s1c$2(
+        .d(s1c$2$d),
+        .q(s1c$2$q),
+        .clock(s1c$2$clock)
+    );
+    cull_sort$s1c$3 s1c$3(
+        .d(s1c$3$d),
+        .q(s1c$3$q),
+        .clock(s1c$3$clock)
+    );
+    cull_sort$s1c$4 s1c$4(
+        .d(s1c$4$d),
+        .q(s1c$4$q),
+        .clock(s1c$4$clock)
+    );
+    cull_sort$s1c$5 s1c$5(
+        .d(s1c$5$d),
+        .q(s1c$5$q),
+        .clock(s1c$5$clock)
+    );
+    cull_sort$s1c$6 s1c$6(
+        .d(s1c$6$d),
+        .q(s1c$6$q),
+        .clock(s1c$6$clock)
+    );
+    cull_sort$s1c$7 s1c$7(
+        .d(s1c$7$d),
+        .q(s1c$7$q),
+        .clock(s1c$7$clock)
+    );
+    cull_sort$s1c$8 s1c$8(
+        .d(s1c$8$d),
+        .q(s1c$8$q),
+        .clock(s1c$8$clock)
+    );
+    cull_sort$s1iw$0 s1iw$0(
+        .d(s1iw$0$d),
+        .q(s1iw$0$q),
+        .clock(s1iw$0$clock)
+    );
+    cull_sort$s1iw$1 s1iw$1(
+        .d(s1iw$1$d),
+        .q(s1iw$1$q),
+        .clock(s1iw$1$clock)
+    );
+    cull_sort$s1iw$2 s1iw$2(
+        .d(s1iw$2$d),
+        .q(s1iw$2$q),
+        .clock(s1iw$2$clock)
+    );
+    cull_sort$e1x e1x(
+        .d(e1x$d),
+        .q(e1x$q),
+        .clock(e1x$clock)
+    );
+    cull_sort$e2y e2y(
+        .d(e2y$d),
+        .q(e2y$q),
+        .clock(e2y$clock)
+    );
+    cull_sort$e2x e2x(
+        .d(e2x$d),
+        .q(e2x$q),
+        .clock(e2x$clock)
+    );
+    cull_sort$e1y e1y(
+        .d(e1y$d),
+        .q(e1y$q),
+        .clock(e1y$clock)
+    );
+    cull_sort$outside1 outside1(
+        .d(outside1$d),
+        .q(outside1$q),
+        .clock(outside1$clock)
+    );
+    cull_sort$crosses1 crosses1(
+        .d(crosses1$d),
+        .q(crosses1$q),
+        .clock(crosses1$clock)
+    );
+    cull_sort$back1 back1(
+        .d(back1$d),
+        .q(back1$q),
+        .clock(back1$clock)
+    );
+    cull_sort$full1 full1(
+        .d(full1$d),
+        .q(full1$q),
+        .clock(full1$clock)
+    );
+    cull_sort$s2x$0 s2x$0(
+        .d(s2x$0$d),
+        .q(s2x$0$q),
+        .clock(s2x$0$clock)
+    );
+    cull_sort$s2x$1 s2x$1(
+        .d(s2x$1$d),
+        .q(s2x$1$q),
+        .clock(s2x$1$clock)
+    );
+    cull_sort$s2x$2 s2x$2(
+        .d(s2x$2$d),
+        .q(s2x$2$q),
+        .clock(s2x$2$clock)
+    );
+    cull_sort$s2y$0 s2y$0(
+        .d(s2y$0$d),
+        .q(s2y$0$q),
+        .clock(s2y$0$clock)
+    );
+    cull_sort$s2y$1 s2y$1(
+        .d(s2y$1$d),
+        .q(s2y$1$q),
+        .clock(s2y$1$clock)
+    );
+    cull_sort$s2y$2 s2y$2(
+        .d(s2y$2$d),
+        .q(s2y$2$q),
+        .clock(s2y$2$clock)
+    );
+    cull_sort$s2z$0 s2z$0(
+        .d(s2z$0$d),
+        .q(s2z$0$q),
+        .clock(s2z$0$clock)
+    );
+    cull_sort$s2z$1 s2z$1(
+        .d(s2z$1$d),
+        .q(s2z$1$q),
+        .clock(s2z$1$clock)
+    );
+    cull_sort$s2z$2 s2z$2(
+        .d(s2z$2$d),
+        .q(s2z$2$q),
+        .clock(s2z$2$clock)
+    );
+    cull_sort$s2c$0 s2c$0(
+        .d(s2c$0$d),
+        .q(s2c$0$q),
+        .clock(s2c$0$clock)
+    );
+    cull_sort$s2c$1 s2c$1(
+        .d(s2c$1$d),
+        .q(s2c$1$q),
+        .clock(s2c$1$clock)
+    );
+    cull_sort$s2c$2 s2c$2(
+        .d(s2c$2$d),
+        .q(s2c$2$q),
+        .clock(s2c$2$clock)
+    );
+    cull_sort$s2c$3 s2c$3(
+        .d(s2c$3$d),
+        .q(s2c$3$q),
+        .clock(s2c$3$clock)
+    );
+    cull_sort$s2c$4 s2c$4(
+        .d(s2c$4$d),
+        .q(s2c$4$q),
+        .clock(s2c$4$clock)
+    );
+    cull_sort$s2c$5 s2c$5(
+        .d(s2c$5$d),
+        .q(s2c$5$q),
+        .clock(s2c$5$clock)
+    );
+    cull_sort$s2c$6 s2c$6(
+        .d(s2c$6$d),
+        .q(s2c$6$q),
+        .clock(s2c$6$clock)
+    );
+    cull_sort$s2c$7 s2c$7(
+        .d(s2c$7$d),
+        .q(s2c$7$q),
+        .clock(s2c$7$clock)
+    );
+    cull_sort$s2c$8 s2c$8(
+        .d(s2c$8$d),
+        .q(s2c$8$q),
+        .clock(s2c$8$clock)
+    );
+    cull_sort$s2iw$0 s2iw$0(
+        .d(s2iw$0$d),
+        .q(s2iw$0$q),
+        .clock(s2iw$0$clock)
+    );
+    cull_sort$s2iw$1 s2iw$1(
+        .d(s2iw$1$d),
+        .q(s2iw$1$q),
+        .clock(s2iw$1$clock)
+    );
+    cull_sort$s2iw$2 s2iw$2(
+        .d(s2iw$2$d),
+        .q(s2iw$2$q),
+        .clock(s2iw$2$clock)
+    );
     cull_sort$area_mul$0 area_mul$0(
         .a(area_mul$0$a),
         .b(area_mul$0$b),
@@ -262,6 +683,36 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
         .a(area_mul$1$a),
         .b(area_mul$1$b),
         .p(area_mul$1$p)
+    );
+    cull_sort$prod0 prod0(
+        .d(prod0$d),
+        .q(prod0$q),
+        .clock(prod0$clock)
+    );
+    cull_sort$prod1 prod1(
+        .d(prod1$d),
+        .q(prod1$q),
+        .clock(prod1$clock)
+    );
+    cull_sort$outside2 outside2(
+        .d(outside2$d),
+        .q(outside2$q),
+        .clock(outside2$clock)
+    );
+    cull_sort$crosses2 crosses2(
+        .d(crosses2$d),
+        .q(crosses2$q),
+        .clock(crosses2$clock)
+    );
+    cull_sort$back2 back2(
+        .d(back2$d),
+        .q(back2$q),
+        .clock(back2$clock)
+    );
+    cull_sort$full2 full2(
+        .d(full2$d),
+        .q(full2$q),
+        .clock(full2$clock)
     );
     cull_sort$sx$0 sx$0(
         .d(sx$0$d),
@@ -394,14 +845,58 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
     
     // Update code
     always @(*) begin
+        e1x$clock = clock;
+        e2y$clock = clock;
+        e2x$clock = clock;
+        e1y$clock = clock;
+        outside1$clock = clock;
+        crosses1$clock = clock;
+        back1$clock = clock;
+        full1$clock = clock;
+        prod0$clock = clock;
+        prod1$clock = clock;
+        outside2$clock = clock;
+        crosses2$clock = clock;
+        back2$clock = clock;
+        full2$clock = clock;
         crosses$clock = clock;
         code_r$clock = clock;
         outside_r$clock = clock;
         full$clock = clock;
+        e1x$d = e1x$q;
+        e2y$d = e2y$q;
+        e2x$d = e2x$q;
+        e1y$d = e1y$q;
+        outside1$d = outside1$q;
+        crosses1$d = crosses1$q;
+        back1$d = back1$q;
+        full1$d = full1$q;
+        prod0$d = prod0$q;
+        prod1$d = prod1$q;
+        outside2$d = outside2$q;
+        crosses2$d = crosses2$q;
+        back2$d = back2$q;
+        full2$d = full2$q;
         crosses$d = crosses$q;
         code_r$d = code_r$q;
         outside_r$d = outside_r$q;
         full$d = full$q;
+        s1x$0$clock = clock;
+        s1x$0$d = s1x$0$q;
+        s1y$0$clock = clock;
+        s1y$0$d = s1y$0$q;
+        s1z$0$clock = clock;
+        s1z$0$d = s1z$0$q;
+        s1iw$0$clock = clock;
+        s1iw$0$d = s1iw$0$q;
+        s2x$0$clock = clock;
+        s2x$0$d = s2x$0$q;
+        s2y$0$clock = clock;
+        s2y$0$d = s2y$0$q;
+        s2z$0$clock = clock;
+        s2z$0$d = s2z$0$q;
+        s2iw$0$clock = clock;
+        s2iw$0$d = s2iw$0$q;
         sx$0$clock = clock;
         sx$0$d = sx$0$q;
         sy$0$clock = clock;
@@ -410,6 +905,22 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
         sz$0$d = sz$0$q;
         siw$0$clock = clock;
         siw$0$d = siw$0$q;
+        s1x$1$clock = clock;
+        s1x$1$d = s1x$1$q;
+        s1y$1$clock = clock;
+        s1y$1$d = s1y$1$q;
+        s1z$1$clock = clock;
+        s1z$1$d = s1z$1$q;
+        s1iw$1$clock = clock;
+        s1iw$1$d = s1iw$1$q;
+        s2x$1$clock = clock;
+        s2x$1$d = s2x$1$q;
+        s2y$1$clock = clock;
+        s2y$1$d = s2y$1$q;
+        s2z$1$clock = clock;
+        s2z$1$d = s2z$1$q;
+        s2iw$1$clock = clock;
+        s2iw$1$d = s2iw$1$q;
         sx$1$clock = clock;
         sx$1$d = sx$1$q;
         sy$1$clock = clock;
@@ -418,6 +929,22 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
         sz$1$d = sz$1$q;
         siw$1$clock = clock;
         siw$1$d = siw$1$q;
+        s1x$2$clock = clock;
+        s1x$2$d = s1x$2$q;
+        s1y$2$clock = clock;
+        s1y$2$d = s1y$2$q;
+        s1z$2$clock = clock;
+        s1z$2$d = s1z$2$q;
+        s1iw$2$clock = clock;
+        s1iw$2$d = s1iw$2$q;
+        s2x$2$clock = clock;
+        s2x$2$d = s2x$2$q;
+        s2y$2$clock = clock;
+        s2y$2$d = s2y$2$q;
+        s2z$2$clock = clock;
+        s2z$2$d = s2z$2$q;
+        s2iw$2$clock = clock;
+        s2iw$2$d = s2iw$2$q;
         sx$2$clock = clock;
         sx$2$d = sx$2$q;
         sy$2$clock = clock;
@@ -426,22 +953,58 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
         sz$2$d = sz$2$q;
         siw$2$clock = clock;
         siw$2$d = siw$2$q;
+        s1c$0$clock = clock;
+        s1c$0$d = s1c$0$q;
+        s2c$0$clock = clock;
+        s2c$0$d = s2c$0$q;
         sc$0$clock = clock;
         sc$0$d = sc$0$q;
+        s1c$1$clock = clock;
+        s1c$1$d = s1c$1$q;
+        s2c$1$clock = clock;
+        s2c$1$d = s2c$1$q;
         sc$1$clock = clock;
         sc$1$d = sc$1$q;
+        s1c$2$clock = clock;
+        s1c$2$d = s1c$2$q;
+        s2c$2$clock = clock;
+        s2c$2$d = s2c$2$q;
         sc$2$clock = clock;
         sc$2$d = sc$2$q;
+        s1c$3$clock = clock;
+        s1c$3$d = s1c$3$q;
+        s2c$3$clock = clock;
+        s2c$3$d = s2c$3$q;
         sc$3$clock = clock;
         sc$3$d = sc$3$q;
+        s1c$4$clock = clock;
+        s1c$4$d = s1c$4$q;
+        s2c$4$clock = clock;
+        s2c$4$d = s2c$4$q;
         sc$4$clock = clock;
         sc$4$d = sc$4$q;
+        s1c$5$clock = clock;
+        s1c$5$d = s1c$5$q;
+        s2c$5$clock = clock;
+        s2c$5$d = s2c$5$q;
         sc$5$clock = clock;
         sc$5$d = sc$5$q;
+        s1c$6$clock = clock;
+        s1c$6$d = s1c$6$q;
+        s2c$6$clock = clock;
+        s2c$6$d = s2c$6$q;
         sc$6$clock = clock;
         sc$6$d = sc$6$q;
+        s1c$7$clock = clock;
+        s1c$7$d = s1c$7$q;
+        s2c$7$clock = clock;
+        s2c$7$d = s2c$7$q;
         sc$7$clock = clock;
         sc$7$d = sc$7$q;
+        s1c$8$clock = clock;
+        s1c$8$d = s1c$8$q;
+        s2c$8$clock = clock;
+        s2c$8$d = s2c$8$q;
         sc$8$clock = clock;
         sc$8$d = sc$8$q;
         vx$0 = inp$v0_x;
@@ -465,6 +1028,26 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
         vc$7 = inp$v2_c1;
         vc$8 = inp$v2_c2;
         viw$2 = inp$v2_iw;
+        leave = full$q & ((code_r$q != passed) | out$ready);
+        move2 = full2$q & (~full$q | leave);
+        move1 = full1$q & (~full2$q | move2);
+        inp$ready = ~full1$q | move1;
+        take = inp$valid & (~full1$q | move1);
+        if (leave) begin
+            full$d = 1'b0;
+        end
+        if (move2) begin
+            full2$d = 1'b0;
+            full$d = 1'b1;
+        end
+        if (move1) begin
+            full1$d = 1'b0;
+            full2$d = 1'b1;
+        end
+        if (take) begin
+            full1$d = 1'b1;
+        end
+        idle = ~full1$q & ~full2$q & ~(full$q & (code_r$q == passed));
         right = ((width) & 16'hffff) << frac;
         bottom = ((height) & 16'hffff) << frac;
         left$0 = vx$0[xy_msb];
@@ -494,23 +1077,6 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
         wy$1$x = vy$1;
         wx$2$x = vx$2;
         wy$2$x = vy$2;
-        area_mul$0$a = wx$1$y - wx$0$y;
-        area_mul$0$b = wy$2$y - wy$0$y;
-        area_mul$1$a = wx$2$y - wx$0$y;
-        area_mul$1$b = wy$1$y - wy$0$y;
-        area = area_mul$0$p - area_mul$1$p;
-        code = passed;
-        if (cull$on) begin
-            if (cull_back & ~area[area_msb]) begin
-                code = back_face;
-            end
-            if (area == 32'h0) begin
-                code = zero_area;
-            end
-            if (|(oc$0 & oc$1 & oc$2)) begin
-                code = outside;
-            end
-        end
         key$0 = vy$0 ^ half;
         key$1 = vy$1 ^ half;
         key$2 = vy$2 ^ half;
@@ -523,98 +1089,166 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
         rank$0 = ((32'h0) & 2'h3) + gt01 + gt02;
         rank$1 = ((32'h0) & 2'h3) + le01 + gt12;
         rank$2 = ((32'h0) & 2'h3) + le02 + le12;
-        leave = full$q & ((code_r$q != passed) | out$ready);
-        inp$ready = ~full$q | leave;
-        take = inp$valid & inp$ready;
-        if (leave) begin
-            full$d = 1'b0;
-        end
         if (take) begin
-            full$d = 1'b1;
-            code_r$d = code;
-            crosses$d = oc$0 | oc$1 | oc$2;
-            outside_r$d = oc$0 & oc$1 & oc$2;
+            e1x$d = wx$1$y - wx$0$y;
+            e2y$d = wy$2$y - wy$0$y;
+            e2x$d = wx$2$y - wx$0$y;
+            e1y$d = wy$1$y - wy$0$y;
+            outside1$d = oc$0 & oc$1 & oc$2;
+            crosses1$d = oc$0 | oc$1 | oc$2;
+            back1$d = cull_back;
             if (rank$0 == 0) begin
-                sx$0$d = vx$0;
-                sy$0$d = vy$0;
-                sz$0$d = vz$0;
-                siw$0$d = viw$0;
-                sc$0$d = vc$0;
-                sc$1$d = vc$1;
-                sc$2$d = vc$2;
+                s1x$0$d = vx$0;
+                s1y$0$d = vy$0;
+                s1z$0$d = vz$0;
+                s1iw$0$d = viw$0;
+                s1c$0$d = vc$0;
+                s1c$1$d = vc$1;
+                s1c$2$d = vc$2;
             end
             if (rank$1 == 0) begin
-                sx$0$d = vx$1;
-                sy$0$d = vy$1;
-                sz$0$d = vz$1;
-                siw$0$d = viw$1;
-                sc$0$d = vc$3;
-                sc$1$d = vc$4;
-                sc$2$d = vc$5;
+                s1x$0$d = vx$1;
+                s1y$0$d = vy$1;
+                s1z$0$d = vz$1;
+                s1iw$0$d = viw$1;
+                s1c$0$d = vc$3;
+                s1c$1$d = vc$4;
+                s1c$2$d = vc$5;
             end
             if (rank$2 == 0) begin
-                sx$0$d = vx$2;
-                sy$0$d = vy$2;
-                sz$0$d = vz$2;
-                siw$0$d = viw$2;
-                sc$0$d = vc$6;
-                sc$1$d = vc$7;
-                sc$2$d = vc$8;
+                s1x$0$d = vx$2;
+                s1y$0$d = vy$2;
+                s1z$0$d = vz$2;
+                s1iw$0$d = viw$2;
+                s1c$0$d = vc$6;
+                s1c$1$d = vc$7;
+                s1c$2$d = vc$8;
             end
             if (rank$0 == 1) begin
-                sx$1$d = vx$0;
-                sy$1$d = vy$0;
-                sz$1$d = vz$0;
-                siw$1$d = viw$0;
-                sc$3$d = vc$0;
-                sc$4$d = vc$1;
-                sc$5$d = vc$2;
+                s1x$1$d = vx$0;
+                s1y$1$d = vy$0;
+                s1z$1$d = vz$0;
+                s1iw$1$d = viw$0;
+                s1c$3$d = vc$0;
+                s1c$4$d = vc$1;
+                s1c$5$d = vc$2;
             end
             if (rank$1 == 1) begin
-                sx$1$d = vx$1;
-                sy$1$d = vy$1;
-                sz$1$d = vz$1;
-                siw$1$d = viw$1;
-                sc$3$d = vc$3;
-                sc$4$d = vc$4;
-                sc$5$d = vc$5;
+                s1x$1$d = vx$1;
+                s1y$1$d = vy$1;
+                s1z$1$d = vz$1;
+                s1iw$1$d = viw$1;
+                s1c$3$d = vc$3;
+                s1c$4$d = vc$4;
+                s1c$5$d = vc$5;
             end
             if (rank$2 == 1) begin
-                sx$1$d = vx$2;
-                sy$1$d = vy$2;
-                sz$1$d = vz$2;
-                siw$1$d = viw$2;
-                sc$3$d = vc$6;
-                sc$4$d = vc$7;
-                sc$5$d = vc$8;
+                s1x$1$d = vx$2;
+                s1y$1$d = vy$2;
+                s1z$1$d = vz$2;
+                s1iw$1$d = viw$2;
+                s1c$3$d = vc$6;
+                s1c$4$d = vc$7;
+                s1c$5$d = vc$8;
             end
             if (rank$0 == 2) begin
-                sx$2$d = vx$0;
-                sy$2$d = vy$0;
-                sz$2$d = vz$0;
-                siw$2$d = viw$0;
-                sc$6$d = vc$0;
-                sc$7$d = vc$1;
-                sc$8$d = vc$2;
+                s1x$2$d = vx$0;
+                s1y$2$d = vy$0;
+                s1z$2$d = vz$0;
+                s1iw$2$d = viw$0;
+                s1c$6$d = vc$0;
+                s1c$7$d = vc$1;
+                s1c$8$d = vc$2;
             end
             if (rank$1 == 2) begin
-                sx$2$d = vx$1;
-                sy$2$d = vy$1;
-                sz$2$d = vz$1;
-                siw$2$d = viw$1;
-                sc$6$d = vc$3;
-                sc$7$d = vc$4;
-                sc$8$d = vc$5;
+                s1x$2$d = vx$1;
+                s1y$2$d = vy$1;
+                s1z$2$d = vz$1;
+                s1iw$2$d = viw$1;
+                s1c$6$d = vc$3;
+                s1c$7$d = vc$4;
+                s1c$8$d = vc$5;
             end
             if (rank$2 == 2) begin
-                sx$2$d = vx$2;
-                sy$2$d = vy$2;
-                sz$2$d = vz$2;
-                siw$2$d = viw$2;
-                sc$6$d = vc$6;
-                sc$7$d = vc$7;
-                sc$8$d = vc$8;
+                s1x$2$d = vx$2;
+                s1y$2$d = vy$2;
+                s1z$2$d = vz$2;
+                s1iw$2$d = viw$2;
+                s1c$6$d = vc$6;
+                s1c$7$d = vc$7;
+                s1c$8$d = vc$8;
             end
+        end
+        area_mul$0$a = e1x$q;
+        area_mul$0$b = e2y$q;
+        area_mul$1$a = e2x$q;
+        area_mul$1$b = e1y$q;
+        if (move1) begin
+            prod0$d = area_mul$0$p;
+            prod1$d = area_mul$1$p;
+            outside2$d = outside1$q;
+            crosses2$d = crosses1$q;
+            back2$d = back1$q;
+            s2x$0$d = s1x$0$q;
+            s2y$0$d = s1y$0$q;
+            s2z$0$d = s1z$0$q;
+            s2iw$0$d = s1iw$0$q;
+            s2x$1$d = s1x$1$q;
+            s2y$1$d = s1y$1$q;
+            s2z$1$d = s1z$1$q;
+            s2iw$1$d = s1iw$1$q;
+            s2x$2$d = s1x$2$q;
+            s2y$2$d = s1y$2$q;
+            s2z$2$d = s1z$2$q;
+            s2iw$2$d = s1iw$2$q;
+            s2c$0$d = s1c$0$q;
+            s2c$1$d = s1c$1$q;
+            s2c$2$d = s1c$2$q;
+            s2c$3$d = s1c$3$q;
+            s2c$4$d = s1c$4$q;
+            s2c$5$d = s1c$5$q;
+            s2c$6$d = s1c$6$q;
+            s2c$7$d = s1c$7$q;
+            s2c$8$d = s1c$8$q;
+        end
+        area = prod0$q - prod1$q;
+        code = passed;
+        if (cull$on) begin
+            if (back2$q & ~area[area_msb]) begin
+                code = back_face;
+            end
+            if (prod0$q == prod1$q) begin
+                code = zero_area;
+            end
+            if (|outside2$q) begin
+                code = outside;
+            end
+        end
+        if (move2) begin
+            code_r$d = code;
+            crosses$d = crosses2$q;
+            outside_r$d = outside2$q;
+            sx$0$d = s2x$0$q;
+            sy$0$d = s2y$0$q;
+            sz$0$d = s2z$0$q;
+            siw$0$d = s2iw$0$q;
+            sx$1$d = s2x$1$q;
+            sy$1$d = s2y$1$q;
+            sz$1$d = s2z$1$q;
+            siw$1$d = s2iw$1$q;
+            sx$2$d = s2x$2$q;
+            sy$2$d = s2y$2$q;
+            sz$2$d = s2z$2$q;
+            siw$2$d = s2iw$2$q;
+            sc$0$d = s2c$0$q;
+            sc$1$d = s2c$1$q;
+            sc$2$d = s2c$2$q;
+            sc$3$d = s2c$3$q;
+            sc$4$d = s2c$4$q;
+            sc$5$d = s2c$5$q;
+            sc$6$d = s2c$6$q;
+            sc$7$d = s2c$7$q;
+            sc$8$d = s2c$8$q;
         end
         out$valid = full$q & (code_r$q == passed);
         verdict$valid = leave;
@@ -675,6 +1309,44 @@ module cull_sort$area_mul$1(a,b,p);
 endmodule // cull_sort$area_mul$1
 
 
+module cull_sort$back1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$back1
+
+
+module cull_sort$back2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$back2
+
+
 module cull_sort$code_r(d,q,clock);
     
     // Module arguments
@@ -713,6 +1385,44 @@ module cull_sort$crosses(d,q,clock);
 endmodule // cull_sort$crosses
 
 
+module cull_sort$crosses1(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$crosses1
+
+
+module cull_sort$crosses2(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$crosses2
+
+
 module cull_sort$cull(on);
     
     // Module arguments
@@ -727,6 +1437,82 @@ module cull_sort$cull(on);
     end
     
 endmodule // cull_sort$cull
+
+
+module cull_sort$e1x(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$e1x
+
+
+module cull_sort$e1y(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$e1y
+
+
+module cull_sort$e2x(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$e2x
+
+
+module cull_sort$e2y(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$e2y
 
 
 module cull_sort$full(d,q,clock);
@@ -748,6 +1534,82 @@ module cull_sort$full(d,q,clock);
 endmodule // cull_sort$full
 
 
+module cull_sort$full1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$full1
+
+
+module cull_sort$full2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$full2
+
+
+module cull_sort$outside1(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$outside1
+
+
+module cull_sort$outside2(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$outside2
+
+
 module cull_sort$outside_r(d,q,clock);
     
     // Module arguments
@@ -765,6 +1627,842 @@ module cull_sort$outside_r(d,q,clock);
     end
           
 endmodule // cull_sort$outside_r
+
+
+module cull_sort$prod0(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$prod0
+
+
+module cull_sort$prod1(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$prod1
+
+
+module cull_sort$s1c$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1c$0
+
+
+module cull_sort$s1c$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1c$1
+
+
+module cull_sort$s1c$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1c$2
+
+
+module cull_sort$s1c$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1c$3
+
+
+module cull_sort$s1c$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1c$4
+
+
+module cull_sort$s1c$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1c$5
+
+
+module cull_sort$s1c$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1c$6
+
+
+module cull_sort$s1c$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1c$7
+
+
+module cull_sort$s1c$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1c$8
+
+
+module cull_sort$s1iw$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1iw$0
+
+
+module cull_sort$s1iw$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1iw$1
+
+
+module cull_sort$s1iw$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1iw$2
+
+
+module cull_sort$s1x$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1x$0
+
+
+module cull_sort$s1x$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1x$1
+
+
+module cull_sort$s1x$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1x$2
+
+
+module cull_sort$s1y$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1y$0
+
+
+module cull_sort$s1y$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1y$1
+
+
+module cull_sort$s1y$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1y$2
+
+
+module cull_sort$s1z$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1z$0
+
+
+module cull_sort$s1z$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1z$1
+
+
+module cull_sort$s1z$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s1z$2
+
+
+module cull_sort$s2c$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2c$0
+
+
+module cull_sort$s2c$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2c$1
+
+
+module cull_sort$s2c$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2c$2
+
+
+module cull_sort$s2c$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2c$3
+
+
+module cull_sort$s2c$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2c$4
+
+
+module cull_sort$s2c$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2c$5
+
+
+module cull_sort$s2c$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2c$6
+
+
+module cull_sort$s2c$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2c$7
+
+
+module cull_sort$s2c$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2c$8
+
+
+module cull_sort$s2iw$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2iw$0
+
+
+module cull_sort$s2iw$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2iw$1
+
+
+module cull_sort$s2iw$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2iw$2
+
+
+module cull_sort$s2x$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2x$0
+
+
+module cull_sort$s2x$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2x$1
+
+
+module cull_sort$s2x$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2x$2
+
+
+module cull_sort$s2y$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2y$0
+
+
+module cull_sort$s2y$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2y$1
+
+
+module cull_sort$s2y$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2y$2
+
+
+module cull_sort$s2z$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2z$0
+
+
+module cull_sort$s2z$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2z$1
+
+
+module cull_sort$s2z$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // cull_sort$s2z$2
 
 
 module cull_sort$sc$0(d,q,clock);

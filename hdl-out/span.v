@@ -108,10 +108,34 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
     reg  [12:0] xl_on$a;
     reg  [12:0] xl_on$b;
     wire  xl_on$lt;
+    reg  o_valid$d;
+    wire  o_valid$q;
+    reg  o_valid$clock;
+    reg  [9:0] o_x$d;
+    wire  [9:0] o_x$q;
+    reg  o_x$clock;
+    reg  [9:0] o_y$d;
+    wire  [9:0] o_y$q;
+    reg  o_y$clock;
+    reg  [15:0] o_z$d;
+    wire  [15:0] o_z$q;
+    reg  o_z$clock;
+    reg  [7:0] o_rgb0$d;
+    wire  [7:0] o_rgb0$q;
+    reg  o_rgb0$clock;
+    reg  [7:0] o_rgb1$d;
+    wire  [7:0] o_rgb1$q;
+    reg  o_rgb1$clock;
+    reg  [7:0] o_rgb2$d;
+    wire  [7:0] o_rgb2$q;
+    reg  o_rgb2$clock;
     
     // Local signals
     reg  [12:0] width_x;
     reg  valid;
+    reg  [7:0] rgb0;
+    reg  [7:0] rgb1;
+    reg  [7:0] rgb2;
     reg  at_last;
     reg  advance;
     reg  ready;
@@ -243,6 +267,41 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
         .b(xl_on$b),
         .lt(xl_on$lt)
     );
+    span$o_valid o_valid(
+        .d(o_valid$d),
+        .q(o_valid$q),
+        .clock(o_valid$clock)
+    );
+    span$o_x o_x(
+        .d(o_x$d),
+        .q(o_x$q),
+        .clock(o_x$clock)
+    );
+    span$o_y o_y(
+        .d(o_y$d),
+        .q(o_y$q),
+        .clock(o_y$clock)
+    );
+    span$o_z o_z(
+        .d(o_z$d),
+        .q(o_z$q),
+        .clock(o_z$clock)
+    );
+    span$o_rgb0 o_rgb0(
+        .d(o_rgb0$d),
+        .q(o_rgb0$q),
+        .clock(o_rgb0$clock)
+    );
+    span$o_rgb1 o_rgb1(
+        .d(o_rgb1$d),
+        .q(o_rgb1$q),
+        .clock(o_rgb1$clock)
+    );
+    span$o_rgb2 o_rgb2(
+        .d(o_rgb2$d),
+        .q(o_rgb2$q),
+        .clock(o_rgb2$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -260,6 +319,13 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
         d_c0$clock = clock;
         d_c1$clock = clock;
         d_c2$clock = clock;
+        o_valid$clock = clock;
+        o_x$clock = clock;
+        o_y$clock = clock;
+        o_z$clock = clock;
+        o_rgb0$clock = clock;
+        o_rgb1$clock = clock;
+        o_rgb2$clock = clock;
         busy$d = busy$q;
         drop$d = drop$q;
         left$d = left$q;
@@ -274,6 +340,13 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
         d_c0$d = d_c0$q;
         d_c1$d = d_c1$q;
         d_c2$d = d_c2$q;
+        o_valid$d = o_valid$q;
+        o_x$d = o_x$q;
+        o_y$d = o_y$q;
+        o_z$d = o_z$q;
+        o_rgb0$d = o_rgb0$q;
+        o_rgb1$d = o_rgb1$q;
+        o_rgb2$d = o_rgb2$q;
         width_x = ((width) & 13'h1fff);
         zp$x = a_z$q;
         c0$x = a_c0$q;
@@ -286,38 +359,51 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
         if (clip_z$on & (zp$neg | zp$over)) begin
             valid = 1'b0;
         end
-        out$valid = valid;
-        out$x = ((x$q) & 10'h3ff);
-        out$y = y$q;
-        out$z = zp$low;
-        out$rgb0 = c0$low;
+        rgb0 = c0$low;
         if (c0$over) begin
-            out$rgb0 = 32'hff;
+            rgb0 = 32'hff;
         end
         if (c0$neg) begin
-            out$rgb0 = 32'h0;
+            rgb0 = 32'h0;
         end
-        out$rgb1 = c1$low;
+        rgb1 = c1$low;
         if (c1$over) begin
-            out$rgb1 = 32'hff;
+            rgb1 = 32'hff;
         end
         if (c1$neg) begin
-            out$rgb1 = 32'h0;
+            rgb1 = 32'h0;
         end
-        out$rgb2 = c2$low;
+        rgb2 = c2$low;
         if (c2$over) begin
-            out$rgb2 = 32'hff;
+            rgb2 = 32'hff;
         end
         if (c2$neg) begin
-            out$rgb2 = 32'h0;
+            rgb2 = 32'h0;
         end
-        idle = ~busy$q;
+        out$valid = o_valid$q;
+        out$x = o_x$q;
+        out$y = o_y$q;
+        out$z = o_z$q;
+        out$rgb0 = o_rgb0$q;
+        out$rgb1 = o_rgb1$q;
+        out$rgb2 = o_rgb2$q;
+        idle = ~busy$q & ~o_valid$q;
         at_last = drop$q | (x$q == last$q);
-        advance = busy$q & (~valid | out$ready);
+        advance = busy$q & (~o_valid$q | out$ready);
         ready = ~busy$q | (at_last & advance);
         inp$ready = ready;
         accept = inp$valid & ready;
+        if (out$ready) begin
+            o_valid$d = 1'b0;
+        end
         if (advance) begin
+            o_valid$d = valid;
+            o_x$d = ((x$q) & 10'h3ff);
+            o_y$d = y$q;
+            o_z$d = zp$low;
+            o_rgb0$d = rgb0;
+            o_rgb1$d = rgb1;
+            o_rgb2$d = rgb2;
             if (at_last) begin
                 busy$d = 1'b0;
             end
@@ -831,6 +917,139 @@ module span$left(d,q,clock);
     end
           
 endmodule // span$left
+
+
+module span$o_rgb0(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$o_rgb0
+
+
+module span$o_rgb1(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$o_rgb1
+
+
+module span$o_rgb2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$o_rgb2
+
+
+module span$o_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$o_valid
+
+
+module span$o_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$o_x
+
+
+module span$o_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$o_y
+
+
+module span$o_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // span$o_z
 
 
 module span$x(d,q,clock);

@@ -8,14 +8,16 @@
 //! triangle on. It makes no new vertices: a triangle that crosses the volume goes
 //! on whole and is clipped by `edge_walk` (y) and `span` (x, z).
 //!
-//! Latency 1, one triangle per cycle (003 Table 1: clipping 1 cycle).
+//! Latency 3, one triangle per cycle (003 Table 1: clipping 1 cycle; the RTL takes three
+//! pipeline stages for the clock: edge vectors, the area's products, the verdict).
 //! Mirrors `rtl::cull_sort` (`hdl-out/cull_sort.v`).
 
 use crate::input::Vtx;
 use fx::Formats;
 
-/// Cycles from a triangle in to its verdict out (003 Table 1).
-pub const LATENCY: u32 = 1;
+/// Cycles from a triangle in to its verdict out: the stages of `rtl::cull_sort` (003
+/// Table 1 has 1 cycle); a triangle moves from stage to stage when the next is free.
+pub const LATENCY: u32 = 3;
 /// Cycles between triangles.
 pub const II: u32 = 1;
 

@@ -6,9 +6,10 @@
 //!   taken), and memory never stalls;
 //! * units hand over on valid/ready with no bubble: a unit starts its next
 //!   item the cycle after the previous one is taken;
-//! * `cull_sort`: latency 1, one triangle per cycle; its output register holds a
-//!   passing triangle until setup takes it, and takes the next triangle in the
-//!   cycle one leaves (a rejected one leaves the cycle after it came in);
+//! * `cull_sort`: [`cull_sort::LATENCY`] stages, one triangle per cycle; a triangle
+//!   moves to the next stage in the cycle the one before leaves it (or the cycle after
+//!   it came in, if later), and its output register holds a passing triangle until
+//!   setup takes it (a rejected one leaves the cycle it arrives);
 //! * `triangle_setup` holds several triangles: it takes the next one II cycles
 //!   after the last (or when idle), and while a result waits for the edge walk
 //!   all of setup waits (every triangle in flight with it); its latency and II follow
@@ -16,7 +17,9 @@
 //!   latency ([`setup_timing`], the schedule its RTL runs);
 //! * `edge_walk`: first span command [`edge_walk::LATENCY`] cycles after it takes
 //!   a triangle, then one scanline per cycle; it stalls while the span FIFO is full;
-//! * `span`: one cycle per pixel walked, one for a dropped span; latency 1;
+//! * `span`: one cycle per pixel walked, one for a dropped span, the walk starting the
+//!   cycle after the command is taken; each pixel leaves [`span::LATENCY`] - 1 cycles
+//!   after its walk cycle (latency 2: the pixel register);
 //! * `pixel_out`: one pixel per cycle, latency 2;
 //! * without `cull_sort` ([`Timing::cull_sort`]) the host sends only the triangles that
 //!   pass, straight to setup; without `pixel_out` the fragments leave `span` at once;
@@ -167,17 +170,33 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
     let running = |waits: &[(u64, u64)], from: u64, n: u64| {
         waits.iter().filter(|w| w.0 >= from).fold(from + n, |t, &(d, h)| if d < t { t + (h - d) } else { t })
     };
-    // The cycle cull_sort takes the next triangle.
-    let mut cull_free = 0u64;
+    // cull_sort's stages (none without it): `stage_free[k]` is the cycle the triangle before
+    // left stage k + 1 (the last: the output register), in which the next may move into it;
+    // the next triangle is taken (without cull_sort: offered to setup) in `stage_free[0]`.
+    let stages = if t.cull_sort { cull_sort::LATENCY as usize } else { 0 };
+    let mut stage_free = vec![0u64; stages.max(1)];
+    let mut leaves = vec![0u64; stages.max(1)];
     let mut span_starts: Vec<u64> = Vec::new();
     let mut out = FrameCycles::default();
-    let cull_latency = if t.cull_sort { cull_sort::LATENCY as u64 } else { 0 };
     let write_latency = if t.pixel_out { 1 + pixel_out::LATENCY as u64 } else { 1 };
     for w in work.iter().filter(|w| t.cull_sort || w.passed_cull) {
-        let culled = cull_free + cull_latency;
+        // `leaves[k]`: the cycle the triangle leaves stage k (0: taken); `culled`: its first
+        // cycle in the output register, with its verdict.
+        leaves[0] = stage_free[0];
+        for k in 1..stages {
+            leaves[k] = (leaves[k - 1] + 1).max(stage_free[k]);
+        }
+        let culled = if stages == 0 { leaves[0] } else { leaves[stages - 1] + 1 };
+        // Once the triangle leaves the output register (in `left`), each stage is free for
+        // the next one from the cycle this one left it.
+        fn moved_on(stage_free: &mut [u64], leaves: &[u64], left: u64) {
+            let n = stage_free.len();
+            stage_free[..n - 1].copy_from_slice(&leaves[1..]);
+            stage_free[n - 1] = left;
+        }
         last = last.max(culled);
         if !w.passed_cull {
-            cull_free = culled;
+            moved_on(&mut stage_free, &leaves, culled);
             continue;
         }
         out.triangles += 1;
@@ -190,7 +209,7 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
             }
         }
         waits.retain(|w| w.0 >= setup_start);
-        cull_free = setup_start;
+        moved_on(&mut stage_free, &leaves, setup_start);
         let done = running(&waits, setup_start, setup);
         setup_free = running(&waits, setup_start, interval);
         let ew_start = done.max(ew_free);
@@ -204,13 +223,16 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
                 if span_starts.len() >= fifo {
                     now = now.max(span_starts[span_starts.len() - fifo]);
                 }
-                let start = (now + span::LATENCY as u64).max(span_free);
+                // The walk's first cycle: span takes the command when idle or in the last
+                // cycle of the walk before; walk cycle k's pixel leaves span in
+                // start + k + LATENCY - 1 (its pixel register).
+                let start = (now + 1).max(span_free);
                 span_starts.push(start);
                 span_free = start + span.cycles as u64;
                 out.span_busy += span.cycles as u64;
                 // pixel_out is empty LATENCY cycles after the one after its last pixel.
                 if let Some(k) = span.last_sent {
-                    last = last.max(start + k as u64 + write_latency);
+                    last = last.max(start + k as u64 + (span::LATENCY as u64 - 1) + write_latency);
                 }
             }
             now += 1;
@@ -276,26 +298,28 @@ mod tests {
     #[test]
     fn cycles_setup_overlaps_triangles_and_waits_as_one() {
         let walk = |n: usize| Work { passed_cull: true, scanlines: vec![None; n], vector_cycles: 0 };
-        // First: culled out at 1, taken, done at 22, walked 24..74. Second: culled out at 2,
-        // taken at 1 + 10 = 11, done at 32, waits for the walk until 74, walked 76..77.
-        // Third: culled out at 12, taken at 21 (the second in its cycle 10), in flight while
-        // the second waits 42 cycles: done at 21 + 21 + 42 = 84, walked 86..87.
-        assert_eq!(scanline_frame(&[walk(50), walk(1), walk(1)], &Timing::default()).total, 87);
+        // First: culled out at 3 (cull_sort's three stages), taken, done at 24, walked
+        // 26..76. Second: culled out at 4, taken at 3 + 10 = 13, done at 34, waits for the
+        // walk until 76, walked 78..79. Third: culled out at 14 (it waited in stage 2 while
+        // the second held the output register), taken at 23 (the second in its cycle 10),
+        // in flight while the second waits 42 cycles: done at 23 + 21 + 42 = 86, walked
+        // 88..89.
+        assert_eq!(scanline_frame(&[walk(50), walk(1), walk(1)], &Timing::default()).total, 89);
         // Three in flight: a triangle waits for every result ahead of it that waits. With a
-        // second long walk, the second waits from 32 to 74 as above and the third from 84
-        // (21 + 21 + 42) to 126; the fourth, taken at 31 (the third in its cycle 10), runs 1
-        // cycle, stands still 42, runs 10, stands still 42, runs 10: done at 136, walked
-        // 138..139.
-        assert_eq!(scanline_frame(&[walk(50), walk(50), walk(1), walk(1)], &Timing::default()).total, 139);
-        // Without the long walk nothing waits: the third is done at 42, walked 44..45.
-        assert_eq!(scanline_frame(&[walk(1), walk(1), walk(1)], &Timing::default()).total, 45);
+        // second long walk, the second waits from 34 to 76 as above and the third from 86
+        // (23 + 21 + 42) to 128; the fourth, taken at 33 (the third in its cycle 10), runs 1
+        // cycle, stands still 42, runs 10, stands still 42, runs 10: done at 138, walked
+        // 140..141.
+        assert_eq!(scanline_frame(&[walk(50), walk(50), walk(1), walk(1)], &Timing::default()).total, 141);
+        // Without the long walk nothing waits: the third is done at 44, walked 46..47.
+        assert_eq!(scanline_frame(&[walk(1), walk(1), walk(1)], &Timing::default()).total, 47);
         // A triangle offered while setup waits is taken when the result is handed over: as
-        // above, the second waits from 32 to 74; the third, culled out at 52 behind 40
-        // culled ones, goes in at 74; done at 74 + 21 = 95, walked 97..98.
+        // above, the second waits from 34 to 76; the third, culled out at 54 behind 40
+        // culled ones, goes in at 76; done at 76 + 21 = 97, walked 99..100.
         let mut frame = vec![walk(50), walk(1)];
         frame.extend(std::iter::repeat_n(Work::default(), 40));
         frame.push(walk(1));
-        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 98);
+        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 100);
     }
 
     /// A span of `c` cycles whose last cycle sends a pixel.
@@ -305,61 +329,67 @@ mod tests {
 
     #[test]
     fn cycles_one_triangle_through_the_scanline_pipeline() {
-        // Culled out at 1; setup done at 1 + 21 = 22; the walk emits at 24, 25, 26;
-        // span takes each 1 cycle later or when free: 25..30, 30..35, 35..40;
-        // the last pixel is written 2 cycles after, in cycle 41: 42 cycles.
+        // Taken in cycle 0, culled out at 3; setup done at 3 + 21 = 24; the walk emits at
+        // 26, 27, 28; span walks each from 1 cycle later or when free: 27..32, 32..37,
+        // 37..42; the last pixel leaves span's pixel register in 42 and is written 2 cycles
+        // after, in cycle 44: 45 cycles.
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], vector_cycles: 0 };
         let c = scanline_frame(std::slice::from_ref(&w), &Timing::default());
-        assert_eq!((c.total, c.span_busy, c.triangles), (42, 15, 1));
+        assert_eq!((c.total, c.span_busy, c.triangles), (45, 15, 1));
         // A culled triangle ahead costs one cycle of cull_sort only.
         let culled = Work::default();
-        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &Timing::default()).total, 43);
+        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &Timing::default()).total, 46);
         // Behind a triangle waiting for setup, culled ones wait too: the first triangle
-        // leaves cull_sort for setup in cycle 1, the second (which crosses no scanline)
-        // in 11, when the first is in its cycle 10 (II); then the 40 culled ones go through
-        // cull_sort, one per cycle, the last one's verdict in cycle 51 (after the first
-        // triangle's last pixel, 42).
+        // leaves cull_sort for setup in cycle 3, the second (which crosses no scanline)
+        // arrives in the output register at 4 and leaves in 13, when the first is in its
+        // cycle 10 (II); the first two culled ones, taken at 2 and 3, wait in stages 1 and
+        // 2 (nothing more is taken), then the 40 culled ones go through cull_sort, one per
+        // cycle, the last one's verdict in cycle 13 + 40 (after the first triangle's last
+        // pixel, 45).
         let mut frame = vec![w.clone(), Work { passed_cull: true, ..Work::default() }];
         frame.extend(std::iter::repeat_n(culled, 40));
-        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 11 + 40);
-        // With a 4-deep FIFO the walk runs ahead and span never waits: busy from
-        // 25 for 53 cycles, written 2 later.
+        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 13 + 40);
+        // With a 4-deep FIFO the walk runs ahead and span never waits: walking from 27
+        // for 53 cycles, the last pixel out of the pixel register 1 later, written 2 later.
         let long = Work { scanlines: vec![full(50), full(1), full(1), None, full(1)], ..w.clone() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&long), &Timing::default()).total, 25 + 53 + 2);
+        assert_eq!(scanline_frame(std::slice::from_ref(&long), &Timing::default()).total, 27 + 53 + 1 + 2);
         // A one-deep FIFO holds the walk until span takes each command; the last
-        // command is emitted only at 77, reaches span at 78: one idle cycle.
-        assert_eq!(scanline_frame(&[long], &Timing { span_fifo: 1, ..Timing::default() }).total, 25 + 53 + 1 + 2);
+        // command is emitted only at 79, reaches span at 80: one idle cycle.
+        let one_deep = Timing { span_fifo: 1, ..Timing::default() };
+        assert_eq!(scanline_frame(&[long], &one_deep).total, 27 + 53 + 1 + 1 + 2);
         // Spans that end on pixels sent nowhere (off screen, out of the depth range, or
-        // dropped): the frame ends when span is done, or 3 cycles after the last pixel.
+        // dropped): the frame ends when span is done, or 4 cycles after the last pixel's
+        // walk cycle (out of the pixel register, into pixel_out, written).
         let mut tail = w.clone();
         tail.scanlines[2] = Some(SpanWork { cycles: 5, last_sent: Some(1) });
-        assert_eq!(scanline_frame(&[tail.clone()], &Timing::default()).total, 40);
+        assert_eq!(scanline_frame(&[tail.clone()], &Timing::default()).total, 42);
         tail.scanlines[2] = Some(SpanWork { cycles: 1, last_sent: None });
-        // Dropped: span done at 36, the pixel of cycle 34 written in 36.
-        assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 37);
+        // Dropped: span done at 38, the pixel walked in 36 out of span in 37, written in 39.
+        assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 40);
     }
 
     #[test]
     fn cycles_without_cull_sort_or_pixel_out() {
         // Without cull_sort the triangle reaches setup in cycle 0 and culled ones are not
-        // sent: 1 cycle less, and nothing for the 30 culled ones.
+        // sent: 3 cycles less, and nothing for the 30 culled ones.
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], vector_cycles: 0 };
         let mut frame = vec![Work::default(), w.clone()];
         frame.extend(std::iter::repeat_n(Work::default(), 30));
         let no_cull = Timing { cull_sort: false, ..Timing::default() };
-        assert_eq!(scanline_frame(&frame, &no_cull).total, 41);
-        // Without pixel_out the frame ends the cycle after span's last fragment (39):
+        assert_eq!(scanline_frame(&frame, &no_cull).total, 42);
+        // Without pixel_out the frame ends the cycle after span's last fragment (42):
         // 2 cycles less than with the depth test and write behind it.
         let no_out = Timing { pixel_out: false, ..Timing::default() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 40);
+        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 43);
         let neither = Timing { cull_sort: false, pixel_out: false, ..Timing::default() };
-        assert_eq!(scanline_frame(&frame, &neither).total, 39);
+        assert_eq!(scanline_frame(&frame, &neither).total, 40);
     }
 
     #[test]
     fn cycles_vector_frame_adds_triangles_in_turn() {
         let w = |c| Work { passed_cull: true, vector_cycles: c, ..Work::default() };
-        assert_eq!(vector_frame(&[w(100)]).total, 1 + 100 + 2);
-        assert_eq!(vector_frame(&[w(100), Work::default(), w(10)]).total, 1 + 100 + 10 + 2);
+        let cull = cull_sort::LATENCY as u64;
+        assert_eq!(vector_frame(&[w(100)]).total, cull + 100 + 2);
+        assert_eq!(vector_frame(&[w(100), Work::default(), w(10)]).total, cull + 100 + 10 + 2);
     }
 }

@@ -13,7 +13,9 @@
 //!
 //! Output per pixel: depth rounded to the z format's fraction bits (the depth
 //! buffer width) and colour rounded to 8 bits, clamped to [0, 255].
-//! Latency 1 (003 Table 1: span 1 cycle). Mirrors `rtl::span` (`hdl-out/span.v`).
+//! Latency 2 (003 Table 1: span 1 cycle; the RTL walks a pixel in the cycle after it
+//! takes a command and presents it from a pixel register the cycle after that, for the
+//! clock). Mirrors `rtl::span` (`hdl-out/span.v`).
 
 use crate::ctx::Ctx;
 use crate::cull_sort::{z_max, Clip};
@@ -21,8 +23,9 @@ use crate::edge_walk::SpanCmd;
 use crate::triangle_setup::Attrs;
 use fx::Fmt;
 
-/// Cycles from a span command to its first pixel (003 Table 1).
-pub const LATENCY: u32 = 1;
+/// Cycles from a span command taken to its first pixel out: one to the walk's first cycle,
+/// one in the pixel register (003 Table 1 has 1).
+pub const LATENCY: u32 = 2;
 /// Cycles per pixel walked.
 pub const II: u32 = 1;
 

@@ -1,9 +1,9 @@
 //! `cull_sort`: the cull & sort unit of paper 003 (Lee 2008, §II.1.다.(1), Fig. 4, Table 1:
-//! "clipping 1 cycle").
+//! "clipping 1 cycle"), here in three pipeline stages for the clock.
 //!
 //! One triangle per beat: the three vertices in submission order on the link `inp`
-//! (`links::TriangleSink`: `inp$v<i>_x` ... `inp$v<i>_iw`), screen size on `width`, `height`, face culling on `cull_back`. In
-//! the one cycle it has, the unit computes
+//! (`links::TriangleSink`: `inp$v<i>_x` ... `inp$v<i>_iw`), screen size on `width`, `height`, face culling on `cull_back`. It
+//! computes
 //! * a Cohen-Sutherland outcode per vertex (bits as `model::cull_sort::outcode`: x < 0,
 //!   x > width, y < 0, y > height, z < 0, z > the largest depth value);
 //! * the reject verdict, in the model's order: all three outside one plane (the AND of the
@@ -11,20 +11,27 @@
 //! * the vertex order by (y, input index): three comparisons give each vertex its rank.
 //!
 //! ```text
-//!   inp_v0..2 --+-- outcodes --- AND: outside? ----------------+
-//!               |            `-- OR: crosses -------------------+--> register --> out_v0..2 (sorted),
-//!               +-- 2 x Mul<17,17>: area2 -- zero? back face? --+                 out$crosses, out$valid
-//!               `-- y0<=y1, y1<=y2, y0<=y2 -> ranks -> mux -----+                 verdict$*
+//!   stage 1 (taken)                      stage 2                  stage 3 (output register)
+//!   inp_v0..2 -+- outcodes: AND, OR -->  -----------------------> verdict: outside? zero
+//!              +- edge vectors ------->  2 x Mul<17,17>: the -->  area? back face? --> verdict$*,
+//!              |                         products of area2        out$valid, out$crosses
+//!              `- y0<=y1, y1<=y2, y0<=y2 -> ranks -> mux: sorted vertices ---------> out_v0..2
 //! ```
 //!
-//! A triangle taken in cycle t (`inp$valid & inp$ready`) is in the output register in
-//! cycle t + 1 (latency `model::cull_sort::LATENCY` = 1, II 1). A passing triangle stays
-//! there until `out$ready`; a rejected one leaves at once (it goes no further, so it never
-//! waits for setup). `verdict$valid` is high in the cycle a triangle leaves, with its
-//! verdict. No new vertices are made: a triangle that crosses the screen goes on whole
-//! with `out$crosses` (the OR of the outcodes) and is clipped by the edge walk and span.
+//! 003 does it all in one cycle; at 100 MHz on ECP5 the multipliers alone take most of a
+//! cycle (their MULT18X18D about 4 ns unregistered), so the edge vectors, the products and
+//! the verdict each have a cycle: a triangle taken in cycle t (`inp$valid & inp$ready`) is
+//! in the output register in cycle t + 3 (latency `model::cull_sort::LATENCY` = 3, II 1).
+//! Each stage moves its triangle on when the next stage is empty or moving on itself (a
+//! bubble does not stay in the pipeline), so three triangles may be in the unit while the
+//! one in the output register waits. A passing triangle stays there until `out$ready`; a
+//! rejected one leaves at once (it goes no further, so it never waits for setup).
+//! `verdict$valid` is high in the cycle a triangle leaves, with its verdict. No new
+//! vertices are made: a triangle that crosses the screen goes on whole with `out$crosses`
+//! (the OR of the outcodes) and is clipped by the edge walk and span.
 //!
-//! Model: `model::cull_sort::cull_sort`. Emitted: `hdl-out/cull_sort.v`.
+//! Model: `model::cull_sort::cull_sort`; its timing `model::cycles::scanline_frame`.
+//! Emitted: `hdl-out/cull_sort.v`.
 
 use crate::emit::{emit_unit, Emitted};
 use crate::mul::Mul;
@@ -78,15 +85,18 @@ pub struct CullSort {
     /// Screen size in pixels, 1 to 2^CLASS (the size class): the clip volume is [0, width] x [0, height].
     pub width: Signal<In, Bits<DIM>>,
     pub height: Signal<In, Bits<DIM>>,
-    /// Drop back faces (clockwise on screen, y down).
+    /// Drop back faces (clockwise on screen, y down); read with the triangle it comes with.
     pub cull_back: Signal<In, Bit>,
-    /// The triangle in; `inp.ready`: the output register is free (empty, holding a rejected triangle, or being taken).
+    /// The triangle in; `inp.ready`: stage 1 is free (empty, or its triangle moving on).
     pub inp: TriangleSink,
     /// The sorted triangle out, with the planes it crosses.
     pub out: SortedSource,
     /// Each triangle leaving the unit (taken, or rejected) and why; `outside`: for
     /// `OUTSIDE` the planes all three vertices lie outside (`Reject::Outside`), else 0.
     pub verdict: Verdict,
+    /// No triangle in stages 1 and 2 and none waiting in the output register (a rejected
+    /// one may be leaving): for `raster_top`'s frame-done.
+    pub idle: Signal<Out, Bit>,
     /// The inputs as arrays, by vertex (colours: 3 * vertex + channel).
     vx: [Signal<Local, Bits<XY>>; 3],
     vy: [Signal<Local, Bits<XY>>; 3],
@@ -105,11 +115,9 @@ pub struct CullSort {
     right: Signal<Local, Bits<XY>>,
     bottom: Signal<Local, Bits<XY>>,
     /// The vertices' x and y sign-extended to `DELTA` bits (edge vectors from v0 are their
-    /// differences), and twice the signed area (submission order).
+    /// differences).
     wx: [SignExtend<XY, DELTA>; 3],
     wy: [SignExtend<XY, DELTA>; 3],
-    area: Signal<Local, Bits<AREA>>,
-    area_mul: [Mul<DELTA, DELTA, AREA>; 2],
     /// y_i with its sign bit flipped: the signed order as an unsigned one.
     key: [Signal<Local, Bits<XY>>; 3],
     /// y0 <= y1, y1 <= y2, y0 <= y2, and their negations.
@@ -121,11 +129,47 @@ pub struct CullSort {
     gt02: Signal<Local, Bit>,
     /// Each vertex's place in the sorted order (0: vMin).
     rank: [Signal<Local, Bits<2>>; 3],
+    /// Stage 1: the sorted vertices, the edge vectors (v1 - v0).x, (v2 - v0).y,
+    /// (v2 - v0).x, (v1 - v0).y in submission order, the AND and OR of the outcodes,
+    /// `cull_back`, and whether it holds a triangle.
+    s1x: [DFF<Bits<XY>>; 3],
+    s1y: [DFF<Bits<XY>>; 3],
+    s1z: [DFF<Bits<Z>>; 3],
+    s1c: [DFF<Bits<COLOR>>; 9],
+    s1iw: [DFF<Bits<INV_W>>; 3],
+    e1x: DFF<Bits<DELTA>>,
+    e2y: DFF<Bits<DELTA>>,
+    e2x: DFF<Bits<DELTA>>,
+    e1y: DFF<Bits<DELTA>>,
+    outside1: DFF<Bits<OUTCODE>>,
+    crosses1: DFF<Bits<OUTCODE>>,
+    back1: DFF<Bit>,
+    full1: DFF<Bit>,
+    /// Stage 2: as stage 1, with the two products of twice the area in place of the edge
+    /// vectors.
+    s2x: [DFF<Bits<XY>>; 3],
+    s2y: [DFF<Bits<XY>>; 3],
+    s2z: [DFF<Bits<Z>>; 3],
+    s2c: [DFF<Bits<COLOR>>; 9],
+    s2iw: [DFF<Bits<INV_W>>; 3],
+    area_mul: [Mul<DELTA, DELTA, AREA>; 2],
+    prod0: DFF<Bits<AREA>>,
+    prod1: DFF<Bits<AREA>>,
+    outside2: DFF<Bits<OUTCODE>>,
+    crosses2: DFF<Bits<OUTCODE>>,
+    back2: DFF<Bit>,
+    full2: DFF<Bit>,
+    /// Twice the signed area (submission order), from stage 2's products, and the verdict.
+    area: Signal<Local, Bits<AREA>>,
     code: Signal<Local, Bits<2>>,
+    /// The handshakes: a triangle taken into stage 1, moving from 1 to 2 and from 2 to the
+    /// output register, leaving the output register.
     take: Signal<Local, Bit>,
+    move1: Signal<Local, Bit>,
+    move2: Signal<Local, Bit>,
     leave: Signal<Local, Bit>,
-    /// The output register: the sorted vertices, crosses, the verdict, and whether it
-    /// holds a triangle.
+    /// Stage 3, the output register: the sorted vertices, crosses, the verdict, and
+    /// whether it holds a triangle.
     sx: [DFF<Bits<XY>>; 3],
     sy: [DFF<Bits<XY>>; 3],
     sz: [DFF<Bits<Z>>; 3],
@@ -166,6 +210,7 @@ impl Default for CullSort {
             inp: Default::default(),
             out: Default::default(),
             verdict: Default::default(),
+            idle: Default::default(),
             vx: Default::default(),
             vy: Default::default(),
             vz: Default::default(),
@@ -182,8 +227,6 @@ impl Default for CullSort {
             bottom: Default::default(),
             wx: Default::default(),
             wy: Default::default(),
-            area: Default::default(),
-            area_mul: Default::default(),
             key: Default::default(),
             le01: Default::default(),
             le12: Default::default(),
@@ -192,8 +235,36 @@ impl Default for CullSort {
             gt12: Default::default(),
             gt02: Default::default(),
             rank: Default::default(),
+            s1x: Default::default(),
+            s1y: Default::default(),
+            s1z: Default::default(),
+            s1c: Default::default(),
+            s1iw: Default::default(),
+            e1x: Default::default(),
+            e2y: Default::default(),
+            e2x: Default::default(),
+            e1y: Default::default(),
+            outside1: Default::default(),
+            crosses1: Default::default(),
+            back1: Default::default(),
+            full1: Default::default(),
+            s2x: Default::default(),
+            s2y: Default::default(),
+            s2z: Default::default(),
+            s2c: Default::default(),
+            s2iw: Default::default(),
+            area_mul: Default::default(),
+            prod0: Default::default(),
+            prod1: Default::default(),
+            outside2: Default::default(),
+            crosses2: Default::default(),
+            back2: Default::default(),
+            full2: Default::default(),
+            area: Default::default(),
             code: Default::default(),
             take: Default::default(),
+            move1: Default::default(),
+            move2: Default::default(),
             leave: Default::default(),
             sx: Default::default(),
             sy: Default::default(),
@@ -222,8 +293,27 @@ impl Default for CullSort {
 impl Logic for CullSort {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, crosses, code_r, outside_r, full);
+        dff_setup!(
+            self, clock, e1x, e2y, e2x, e1y, outside1, crosses1, back1, full1, prod0, prod1, outside2, crosses2, back2,
+            full2, crosses, code_r, outside_r, full
+        );
         for i in 0..3 {
+            self.s1x[i].clock.next = self.clock.val();
+            self.s1x[i].d.next = self.s1x[i].q.val();
+            self.s1y[i].clock.next = self.clock.val();
+            self.s1y[i].d.next = self.s1y[i].q.val();
+            self.s1z[i].clock.next = self.clock.val();
+            self.s1z[i].d.next = self.s1z[i].q.val();
+            self.s1iw[i].clock.next = self.clock.val();
+            self.s1iw[i].d.next = self.s1iw[i].q.val();
+            self.s2x[i].clock.next = self.clock.val();
+            self.s2x[i].d.next = self.s2x[i].q.val();
+            self.s2y[i].clock.next = self.clock.val();
+            self.s2y[i].d.next = self.s2y[i].q.val();
+            self.s2z[i].clock.next = self.clock.val();
+            self.s2z[i].d.next = self.s2z[i].q.val();
+            self.s2iw[i].clock.next = self.clock.val();
+            self.s2iw[i].d.next = self.s2iw[i].q.val();
             self.sx[i].clock.next = self.clock.val();
             self.sx[i].d.next = self.sx[i].q.val();
             self.sy[i].clock.next = self.clock.val();
@@ -234,6 +324,10 @@ impl Logic for CullSort {
             self.siw[i].d.next = self.siw[i].q.val();
         }
         for i in 0..9 {
+            self.s1c[i].clock.next = self.clock.val();
+            self.s1c[i].d.next = self.s1c[i].q.val();
+            self.s2c[i].clock.next = self.clock.val();
+            self.s2c[i].d.next = self.s2c[i].q.val();
             self.sc[i].clock.next = self.clock.val();
             self.sc[i].d.next = self.sc[i].q.val();
         }
@@ -259,7 +353,34 @@ impl Logic for CullSort {
         self.vc[8].next = self.inp.v2_c2.val();
         self.viw[2].next = self.inp.v2_iw.val();
 
-        // Outcodes. x > width * 2^s only for x >= 0, where the unsigned order is the
+        // The handshakes, from the output register back: a rejected triangle leaves at
+        // once, a passing one when taken; each stage moves on when the next is empty or
+        // moving on itself.
+        self.leave.next = self.full.q.val() & ((self.code_r.q.val() != self.passed.val()) | self.out.ready.val());
+        self.move2.next = self.full2.q.val() & (!self.full.q.val() | self.leave.val());
+        self.move1.next = self.full1.q.val() & (!self.full2.q.val() | self.move2.val());
+        self.inp.ready.next = !self.full1.q.val() | self.move1.val();
+        self.take.next = self.inp.valid.val() & (!self.full1.q.val() | self.move1.val());
+        if self.leave.val() {
+            self.full.d.next = false;
+        }
+        if self.move2.val() {
+            self.full2.d.next = false;
+            self.full.d.next = true;
+        }
+        if self.move1.val() {
+            self.full1.d.next = false;
+            self.full2.d.next = true;
+        }
+        if self.take.val() {
+            self.full1.d.next = true;
+        }
+        self.idle.next = !self.full1.q.val()
+            & !self.full2.q.val()
+            & !(self.full.q.val() & (self.code_r.q.val() == self.passed.val()));
+
+        // Stage 1 (the cycle a triangle is taken): outcodes, edge vectors, the sort.
+        // Outcodes: x > width * 2^s only for x >= 0, where the unsigned order is the
         // signed one; likewise y and z.
         self.right.next = bit_cast::<XY, DIM>(self.width.val()) << self.frac.val();
         self.bottom.next = bit_cast::<XY, DIM>(self.height.val()) << self.frac.val();
@@ -279,34 +400,12 @@ impl Logic for CullSort {
                 .replace_bit(4, self.near[i].val())
                 .replace_bit(5, self.far[i].val());
         }
-
-        // Twice the signed area in submission order (`model::cull_sort::area2`), from edge
-        // vectors one bit wider than the coordinates (their sign bit copied up).
+        // Edge vectors one bit wider than the coordinates (their sign bit copied up), in
+        // submission order (`model::cull_sort::area2`).
         for i in 0..3 {
             self.wx[i].x.next = self.vx[i].val();
             self.wy[i].x.next = self.vy[i].val();
         }
-        // (v1 - v0).x (v2 - v0).y - (v2 - v0).x (v1 - v0).y
-        self.area_mul[0].a.next = self.wx[1].y.val() - self.wx[0].y.val();
-        self.area_mul[0].b.next = self.wy[2].y.val() - self.wy[0].y.val();
-        self.area_mul[1].a.next = self.wx[2].y.val() - self.wx[0].y.val();
-        self.area_mul[1].b.next = self.wy[1].y.val() - self.wy[0].y.val();
-        self.area.next = self.area_mul[0].p.val() - self.area_mul[1].p.val();
-
-        // The verdict, in the model's order: outside one plane, zero area, back face.
-        self.code.next = self.passed.val();
-        if self.cull.on.val() {
-            if self.cull_back.val() & !self.area.val().get_bit(self.area_msb.val().index()) {
-                self.code.next = self.back_face.val();
-            }
-            if self.area.val() == 0 {
-                self.code.next = self.zero_area.val();
-            }
-            if (self.oc[0].val() & self.oc[1].val() & self.oc[2].val()).any() {
-                self.code.next = self.outside.val();
-            }
-        }
-
         // Sort by (y, input index): vertex i goes before j (i < j) iff y_i <= y_j; a
         // vertex's rank is the number of vertices before it.
         for i in 0..3 {
@@ -321,31 +420,79 @@ impl Logic for CullSort {
         self.rank[0].next = bits::<2>(0) + self.gt01.val() + self.gt02.val();
         self.rank[1].next = bits::<2>(0) + self.le01.val() + self.gt12.val();
         self.rank[2].next = bits::<2>(0) + self.le02.val() + self.le12.val();
-
-        // The output register.
-        self.leave.next = self.full.q.val() & ((self.code_r.q.val() != self.passed.val()) | self.out.ready.val());
-        self.inp.ready.next = !self.full.q.val() | self.leave.val();
-        self.take.next = self.inp.valid.val() & self.inp.ready.val();
-        if self.leave.val() {
-            self.full.d.next = false;
-        }
         if self.take.val() {
-            self.full.d.next = true;
-            self.code_r.d.next = self.code.val();
-            self.crosses.d.next = self.oc[0].val() | self.oc[1].val() | self.oc[2].val();
-            self.outside_r.d.next = self.oc[0].val() & self.oc[1].val() & self.oc[2].val();
+            self.e1x.d.next = self.wx[1].y.val() - self.wx[0].y.val();
+            self.e2y.d.next = self.wy[2].y.val() - self.wy[0].y.val();
+            self.e2x.d.next = self.wx[2].y.val() - self.wx[0].y.val();
+            self.e1y.d.next = self.wy[1].y.val() - self.wy[0].y.val();
+            self.outside1.d.next = self.oc[0].val() & self.oc[1].val() & self.oc[2].val();
+            self.crosses1.d.next = self.oc[0].val() | self.oc[1].val() | self.oc[2].val();
+            self.back1.d.next = self.cull_back.val();
             for s in 0..3 {
                 for i in 0..3 {
                     if self.rank[i].val().index() == s {
-                        self.sx[s].d.next = self.vx[i].val();
-                        self.sy[s].d.next = self.vy[i].val();
-                        self.sz[s].d.next = self.vz[i].val();
-                        self.siw[s].d.next = self.viw[i].val();
-                        self.sc[3 * s].d.next = self.vc[3 * i].val();
-                        self.sc[3 * s + 1].d.next = self.vc[3 * i + 1].val();
-                        self.sc[3 * s + 2].d.next = self.vc[3 * i + 2].val();
+                        self.s1x[s].d.next = self.vx[i].val();
+                        self.s1y[s].d.next = self.vy[i].val();
+                        self.s1z[s].d.next = self.vz[i].val();
+                        self.s1iw[s].d.next = self.viw[i].val();
+                        self.s1c[3 * s].d.next = self.vc[3 * i].val();
+                        self.s1c[3 * s + 1].d.next = self.vc[3 * i + 1].val();
+                        self.s1c[3 * s + 2].d.next = self.vc[3 * i + 2].val();
                     }
                 }
+            }
+        }
+
+        // Stage 2: the two products of twice the area,
+        // (v1 - v0).x (v2 - v0).y - (v2 - v0).x (v1 - v0).y, each into a register.
+        self.area_mul[0].a.next = self.e1x.q.val();
+        self.area_mul[0].b.next = self.e2y.q.val();
+        self.area_mul[1].a.next = self.e2x.q.val();
+        self.area_mul[1].b.next = self.e1y.q.val();
+        if self.move1.val() {
+            self.prod0.d.next = self.area_mul[0].p.val();
+            self.prod1.d.next = self.area_mul[1].p.val();
+            self.outside2.d.next = self.outside1.q.val();
+            self.crosses2.d.next = self.crosses1.q.val();
+            self.back2.d.next = self.back1.q.val();
+            for i in 0..3 {
+                self.s2x[i].d.next = self.s1x[i].q.val();
+                self.s2y[i].d.next = self.s1y[i].q.val();
+                self.s2z[i].d.next = self.s1z[i].q.val();
+                self.s2iw[i].d.next = self.s1iw[i].q.val();
+            }
+            for i in 0..9 {
+                self.s2c[i].d.next = self.s1c[i].q.val();
+            }
+        }
+
+        // Stage 3: twice the area and the verdict, in the model's order: outside one
+        // plane, zero area, back face (twice the area > 0).
+        self.area.next = self.prod0.q.val() - self.prod1.q.val();
+        self.code.next = self.passed.val();
+        if self.cull.on.val() {
+            if self.back2.q.val() & !self.area.val().get_bit(self.area_msb.val().index()) {
+                self.code.next = self.back_face.val();
+            }
+            if self.prod0.q.val() == self.prod1.q.val() {
+                self.code.next = self.zero_area.val();
+            }
+            if self.outside2.q.val().any() {
+                self.code.next = self.outside.val();
+            }
+        }
+        if self.move2.val() {
+            self.code_r.d.next = self.code.val();
+            self.crosses.d.next = self.crosses2.q.val();
+            self.outside_r.d.next = self.outside2.q.val();
+            for i in 0..3 {
+                self.sx[i].d.next = self.s2x[i].q.val();
+                self.sy[i].d.next = self.s2y[i].q.val();
+                self.sz[i].d.next = self.s2z[i].q.val();
+                self.siw[i].d.next = self.s2iw[i].q.val();
+            }
+            for i in 0..9 {
+                self.sc[i].d.next = self.s2c[i].q.val();
             }
         }
         self.out.valid.next = self.full.q.val() & (self.code_r.q.val() == self.passed.val());
@@ -382,7 +529,7 @@ crate::pins!(CullSort {
     inputs: [
         width, height, cull_back,
     ],
-    outputs: [],
+    outputs: [idle],
     links: [out, inp, verdict],
 });
 

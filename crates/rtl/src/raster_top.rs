@@ -4,7 +4,7 @@
 //! ```text
 //!  triangles --> cull_sort --> triangle_setup --> edge_walk --> span FIFO --> span --> pixel_out <--> memory
 //!  (inp$*,        003 Fig. 4   001 eq. 2, with     001/003       4 commands    003     depth test,   (mem$*)
-//!   inp_last)     1 cycle      the divider         Fig. 5        (bypass)      Fig. 6  2 cycles
+//!   inp_last)     3 cycles     the divider         Fig. 5        (bypass)      Fig. 6  2 cycles
 //! ```
 //!
 //! Every link is a valid/ready stream (a transfer on a rising edge with valid and ready
@@ -37,10 +37,10 @@
 //! `model::cycles::Timing` has the same two switches.
 //!
 //! **Timing** (`model::cycles::scanline_frame` predicts it cycle for cycle when the memory
-//! never stalls): cull_sort 1 cycle; setup `model::cycles::setup_timing` (latency 19, a
+//! never stalls): cull_sort 3 cycles; setup `model::cycles::setup_timing` (latency 19, a
 //! triangle every 10 cycles at K = 7, L = 5); the edge walk's first command 2 cycles after
 //! it takes a triangle, then a scanline per cycle; the span FIFO passes a command straight
-//! through when empty; span's first pixel 1 cycle after it takes a command, then a pixel
+//! through when empty; span's first pixel 2 cycles after it takes a command, then a pixel
 //! per cycle; the write 2 cycles after the pixel.
 //! Model: `model::render::render` with `Method::Scanline`. Emitted: `hdl-out/raster_top.v`.
 
@@ -226,7 +226,7 @@ impl Logic for RasterTopFragments {
         if self.inp.valid.val() & self.inp.ready.val() {
             self.last_in.d.next = self.inp_last.val();
         }
-        self.done.next = self.last_in.q.val() & !self.cull_sort.out.valid.val() & self.core.idle.val();
+        self.done.next = self.last_in.q.val() & self.cull_sort.idle.val() & self.core.idle.val();
     }
 }
 
@@ -345,7 +345,7 @@ impl Logic for RasterTop {
             self.last_in.d.next = self.inp_last.val();
         }
         self.done.next = self.last_in.q.val()
-            & !self.cull_sort.out.valid.val()
+            & self.cull_sort.idle.val()
             & self.core.idle.val()
             & self.pixel_out.idle.val();
     }

@@ -22,11 +22,23 @@
 //!            |<------ screen ------>|
 //! ```
 //!
-//! Timing (`model::span::{LATENCY, II}` = 1, 1): a command taken in cycle t presents its
-//! first pixel in cycle t + 1 and one pixel per cycle after that, each held while
-//! `out$ready` is low; the next command is taken in the cycle of the last pixel, so pixels
-//! follow each other without a gap. A dropped span takes one cycle. Model:
-//! `model::span::span`. Emitted: `hdl-out/span.v`.
+//! Timing (`model::span::{LATENCY, II}` = 2, 1): a command taken in cycle t starts its
+//! walk in cycle t + 1, a pixel (sent or not) per cycle; each pixel walked goes into the
+//! pixel register, which drives `out$*`, so the first pixel is presented in cycle t + 2
+//! and one pixel per cycle after that (003 Table 1 has span at 1 cycle: the register
+//! keeps the depth's and colours' rounding and the clip tests off the handshake's path,
+//! for the clock). The walk moves on while the pixel register is empty or its pixel is
+//! being taken, so a pixel held while `out$ready` is low holds the walk. The next command
+//! is taken in the walk's last cycle, so pixels follow each other without a gap. A dropped
+//! span takes one cycle.
+//!
+//! ```text
+//!   cycle     t          t + 1             t + 2          ...
+//!   command   taken      walk: x, z, c     walk: x+1 ...
+//!   pixel                                  register: x -> out$*
+//! ```
+//!
+//! Model: `model::span::span`. Emitted: `hdl-out/span.v`.
 
 use crate::emit::{emit_unit, Emitted};
 use crate::parts::{Negative, RoundShift, SignedLess};
@@ -97,7 +109,19 @@ pub struct Span {
     /// xl <= W - 1, i.e. xl < W (signed).
     xl_on: SignedLess<PIXEL>,
     width_x: Signal<Local, Bits<PIXEL>>,
+    /// The walk's pixel is sent (on screen, in the depth range), and its colour clamped.
     valid: Signal<Local, Bit>,
+    rgb0: Signal<Local, Bits<CHANNEL>>,
+    rgb1: Signal<Local, Bits<CHANNEL>>,
+    rgb2: Signal<Local, Bits<CHANNEL>>,
+    /// The pixel register: the walk's last pixel, rounded and clamped, while `out$valid`.
+    o_valid: DFF<Bit>,
+    o_x: DFF<Bits<SCREEN>>,
+    o_y: DFF<Bits<SCREEN>>,
+    o_z: DFF<Bits<DEPTH>>,
+    o_rgb0: DFF<Bits<CHANNEL>>,
+    o_rgb1: DFF<Bits<CHANNEL>>,
+    o_rgb2: DFF<Bits<CHANNEL>>,
     at_last: Signal<Local, Bit>,
     advance: Signal<Local, Bit>,
     ready: Signal<Local, Bit>,
@@ -107,9 +131,12 @@ pub struct Span {
 impl Logic for Span {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, busy, drop, left, x, last, y, a_z, a_c0, a_c1, a_c2, d_z, d_c0, d_c1, d_c2);
+        dff_setup!(
+            self, clock, busy, drop, left, x, last, y, a_z, a_c0, a_c1, a_c2, d_z, d_c0, d_c1, d_c2, o_valid, o_x, o_y,
+            o_z, o_rgb0, o_rgb1, o_rgb2
+        );
 
-        // The pixel presented.
+        // The walk's pixel: sent or not, its depth and colour.
         self.width_x.next = bit_cast::<PIXEL, DIM>(self.width.val());
         self.zp.x.next = self.a_z.q.val();
         self.c0.x.next = self.a_c0.q.val();
@@ -122,41 +149,57 @@ impl Logic for Span {
         if self.clip_z.on.val() & (self.zp.neg.val() | self.zp.over.val()) {
             self.valid.next = false;
         }
-        self.out.valid.next = self.valid.val();
-        self.out.x.next = bit_cast::<SCREEN, PIXEL>(self.x.q.val());
-        self.out.y.next = self.y.q.val();
-        self.out.z.next = self.zp.low.val();
-        self.out.rgb0.next = self.c0.low.val();
+        self.rgb0.next = self.c0.low.val();
         if self.c0.over.val() {
-            self.out.rgb0.next = 255.into();
+            self.rgb0.next = 255.into();
         }
         if self.c0.neg.val() {
-            self.out.rgb0.next = 0.into();
+            self.rgb0.next = 0.into();
         }
-        self.out.rgb1.next = self.c1.low.val();
+        self.rgb1.next = self.c1.low.val();
         if self.c1.over.val() {
-            self.out.rgb1.next = 255.into();
+            self.rgb1.next = 255.into();
         }
         if self.c1.neg.val() {
-            self.out.rgb1.next = 0.into();
+            self.rgb1.next = 0.into();
         }
-        self.out.rgb2.next = self.c2.low.val();
+        self.rgb2.next = self.c2.low.val();
         if self.c2.over.val() {
-            self.out.rgb2.next = 255.into();
+            self.rgb2.next = 255.into();
         }
         if self.c2.neg.val() {
-            self.out.rgb2.next = 0.into();
+            self.rgb2.next = 0.into();
         }
-        self.idle.next = !self.busy.q.val();
 
-        // Handshakes: the walk moves on unless a pixel waits; a command is taken when
-        // idle or as the last pixel leaves.
+        // The pixel register drives the output.
+        self.out.valid.next = self.o_valid.q.val();
+        self.out.x.next = self.o_x.q.val();
+        self.out.y.next = self.o_y.q.val();
+        self.out.z.next = self.o_z.q.val();
+        self.out.rgb0.next = self.o_rgb0.q.val();
+        self.out.rgb1.next = self.o_rgb1.q.val();
+        self.out.rgb2.next = self.o_rgb2.q.val();
+        self.idle.next = !self.busy.q.val() & !self.o_valid.q.val();
+
+        // Handshakes: the walk moves on while the pixel register is empty or its pixel is
+        // being taken (whether the walk's pixel is sent or not: that is not on this path);
+        // a command is taken when idle or in the walk's last cycle.
         self.at_last.next = self.drop.q.val() | (self.x.q.val() == self.last.q.val());
-        self.advance.next = self.busy.q.val() & (!self.valid.val() | self.out.ready.val());
+        self.advance.next = self.busy.q.val() & (!self.o_valid.q.val() | self.out.ready.val());
         self.ready.next = !self.busy.q.val() | (self.at_last.val() & self.advance.val());
         self.inp.ready.next = self.ready.val();
         self.accept.next = self.inp.valid.val() & self.ready.val();
+        if self.out.ready.val() {
+            self.o_valid.d.next = false;
+        }
         if self.advance.val() {
+            self.o_valid.d.next = self.valid.val();
+            self.o_x.d.next = bit_cast::<SCREEN, PIXEL>(self.x.q.val());
+            self.o_y.d.next = self.y.q.val();
+            self.o_z.d.next = self.zp.low.val();
+            self.o_rgb0.d.next = self.rgb0.val();
+            self.o_rgb1.d.next = self.rgb1.val();
+            self.o_rgb2.d.next = self.rgb2.val();
             if self.at_last.val() {
                 self.busy.d.next = false;
             } else {
