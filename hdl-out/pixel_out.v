@@ -54,12 +54,15 @@ module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,i
     reg  s3_valid$d;
     wire  s3_valid$q;
     reg  s3_valid$clock;
-    reg  [19:0] s3_addr$d;
-    wire  [19:0] s3_addr$q;
-    reg  s3_addr$clock;
     reg  [15:0] s3_z$d;
     wire  [15:0] s3_z$q;
     reg  s3_z$clock;
+    reg  hit2$d;
+    wire  hit2$q;
+    reg  hit2$clock;
+    reg  hit3$d;
+    wire  hit3$q;
+    reg  hit3$clock;
     reg  [9:0] addr$hi;
     reg  [9:0] addr$lo;
     wire  [19:0] addr$out;
@@ -128,15 +131,20 @@ module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,i
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    pixel_out$s3_addr s3_addr(
-        .d(s3_addr$d),
-        .q(s3_addr$q),
-        .clock(s3_addr$clock)
-    );
     pixel_out$s3_z s3_z(
         .d(s3_z$d),
         .q(s3_z$q),
         .clock(s3_z$clock)
+    );
+    pixel_out$hit2 hit2(
+        .d(hit2$d),
+        .q(hit2$q),
+        .clock(hit2$clock)
+    );
+    pixel_out$hit3 hit3(
+        .d(hit3$d),
+        .q(hit3$q),
+        .clock(hit3$clock)
     );
     pixel_out$addr addr(
         .hi(addr$hi),
@@ -166,8 +174,9 @@ module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,i
         s2_z$clock = clock;
         s2_rgb$clock = clock;
         s3_valid$clock = clock;
-        s3_addr$clock = clock;
         s3_z$clock = clock;
+        hit2$clock = clock;
+        hit3$clock = clock;
         s1_valid$d = s1_valid$q;
         s1_addr$d = s1_addr$q;
         s1_z$d = s1_z$q;
@@ -178,8 +187,9 @@ module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,i
         s2_z$d = s2_z$q;
         s2_rgb$d = s2_rgb$q;
         s3_valid$d = s3_valid$q;
-        s3_addr$d = s3_addr$q;
         s3_z$d = s3_z$q;
+        hit2$d = hit2$q;
+        hit3$d = hit3$q;
         addr$hi = inp$y;
         addr$lo = inp$x;
         rg$hi = inp$rgb0;
@@ -190,10 +200,10 @@ module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,i
         mem$rd_en = inp$valid & depth_test$on;
         mem$rd_addr = addr$out;
         old_z = mem$rd_z;
-        if (s3_valid$q & (s3_addr$q == s1_addr$q)) begin
+        if (s3_valid$q & hit3$q) begin
             old_z = s3_z$q;
         end
-        if (s2_write$q & (s2_addr$q == s1_addr$q)) begin
+        if (s2_write$q & hit2$q) begin
             old_z = s2_z$q;
         end
         pass = s1_valid$q;
@@ -210,13 +220,14 @@ module pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,i
             s1_addr$d = addr$out;
             s1_z$d = inp$z;
             s1_rgb$d = rgb$out;
+            hit2$d = s1_addr$q == addr$out;
+            hit3$d = s2_addr$q == addr$out;
             s2_valid$d = s1_valid$q;
             s2_write$d = pass;
             s2_addr$d = s1_addr$q;
             s2_z$d = s1_z$q;
             s2_rgb$d = s1_rgb$q;
             s3_valid$d = s2_write$q;
-            s3_addr$d = s2_addr$q;
             s3_z$d = s2_z$q;
         end
     end
@@ -256,6 +267,44 @@ module pixel_out$depth_test(on);
     end
     
 endmodule // pixel_out$depth_test
+
+
+module pixel_out$hit2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // pixel_out$hit2
+
+
+module pixel_out$hit3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // pixel_out$hit3
 
 
 module pixel_out$rg(hi,lo,out);
@@ -463,25 +512,6 @@ module pixel_out$s2_z(d,q,clock);
     end
           
 endmodule // pixel_out$s2_z
-
-
-module pixel_out$s3_addr(d,q,clock);
-    
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // pixel_out$s3_addr
 
 
 module pixel_out$s3_valid(d,q,clock);

@@ -14,18 +14,20 @@
 //! **Pipeline** (`model::pixel_out::{LATENCY, II}` = 2, 1):
 //!
 //! ```text
-//!   cycle t       t + 1                              t + 2
-//!   pixel in  ->  s1: old depth = rd_z, or the     ->  s2: write depth and colour
-//!   read depth    newer one s2 is writing now, or      (when the test passed)
-//!                 the one s3 wrote in cycle t;
-//!                 test z < old
+//!   cycle t          t + 1                              t + 2
+//!   pixel in     ->  s1: old depth = rd_z, or the     ->  s2: write depth and colour
+//!   read depth;      newer one s2 is writing now, or      (when the test passed)
+//!   address vs       the one s3 wrote in cycle t;
+//!   s1's and s2's    test z < old
 //! ```
 //!
 //! Read-after-write hazards: the depth read for a pixel happens before the writes of the
 //! two pixels ahead of it (the one in s2 as it is read, the one in s1 next cycle), so a
 //! pixel whose address matches one of them takes that pixel's depth instead of `rd_z`
-//! (the newer first). Model: `model::pixel_out::Framebuffer::pixel_out`. Emitted:
-//! `hdl-out/pixel_out.v`.
+//! (the newer first). Its address is compared with theirs in cycle t, as it comes in
+//! (`hit2`, `hit3`, registered with it), so that in cycle t + 1 only a choice of three
+//! depths and the test lie between the registers (for the clock). Model:
+//! `model::pixel_out::Framebuffer::pixel_out`. Emitted: `hdl-out/pixel_out.v`.
 
 use crate::emit::{emit_unit, Emitted};
 use crate::parts::Concat;
@@ -60,10 +62,14 @@ pub struct PixelOut {
     s2_addr: DFF<Bits<ADDR>>,
     s2_z: DFF<Bits<DEPTH>>,
     s2_rgb: DFF<Bits<RGB>>,
-    /// s3: the write done in the last cycle the memory was ready.
+    /// s3: the write done in the last cycle the memory was ready (its address is compared
+    /// while it is in s2: `hit3`).
     s3_valid: DFF<Bit>,
-    s3_addr: DFF<Bits<ADDR>>,
     s3_z: DFF<Bits<DEPTH>>,
+    /// s1's address equals s2's (`hit2`) and s3's (`hit3`): compared as s1's pixel came in,
+    /// against the pixels then in s1 and s2, which moved on to s2 and s3 with it.
+    hit2: DFF<Bit>,
+    hit3: DFF<Bit>,
     /// `{y, x}` and `{R, G, B}` of the pixel coming in.
     addr: Concat<SCREEN, SCREEN, ADDR>,
     rg: Concat<CHANNEL, CHANNEL, { 2 * CHANNEL }>,
@@ -77,8 +83,8 @@ impl Logic for PixelOut {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, s1_valid, s1_addr, s1_z, s1_rgb, s2_valid, s2_write, s2_addr, s2_z, s2_rgb, s3_valid, s3_addr,
-            s3_z
+            self, clock, s1_valid, s1_addr, s1_z, s1_rgb, s2_valid, s2_write, s2_addr, s2_z, s2_rgb, s3_valid, s3_z,
+            hit2, hit3
         );
         self.addr.hi.next = self.inp.y.val();
         self.addr.lo.next = self.inp.x.val();
@@ -92,12 +98,13 @@ impl Logic for PixelOut {
         self.mem.rd_en.next = self.inp.valid.val() & self.depth_test.on.val();
         self.mem.rd_addr.next = self.addr.out.val();
 
-        // Cycle t + 1: depth test against the newest depth of the address.
+        // Cycle t + 1: depth test against the newest depth of the address (the address
+        // compares made in cycle t).
         self.old_z.next = self.mem.rd_z.val();
-        if self.s3_valid.q.val() & (self.s3_addr.q.val() == self.s1_addr.q.val()) {
+        if self.s3_valid.q.val() & self.hit3.q.val() {
             self.old_z.next = self.s3_z.q.val();
         }
-        if self.s2_write.q.val() & (self.s2_addr.q.val() == self.s1_addr.q.val()) {
+        if self.s2_write.q.val() & self.hit2.q.val() {
             self.old_z.next = self.s2_z.q.val();
         }
         self.pass.next = self.s1_valid.q.val();
@@ -117,13 +124,14 @@ impl Logic for PixelOut {
             self.s1_addr.d.next = self.addr.out.val();
             self.s1_z.d.next = self.inp.z.val();
             self.s1_rgb.d.next = self.rgb.out.val();
+            self.hit2.d.next = self.s1_addr.q.val() == self.addr.out.val();
+            self.hit3.d.next = self.s2_addr.q.val() == self.addr.out.val();
             self.s2_valid.d.next = self.s1_valid.q.val();
             self.s2_write.d.next = self.pass.val();
             self.s2_addr.d.next = self.s1_addr.q.val();
             self.s2_z.d.next = self.s1_z.q.val();
             self.s2_rgb.d.next = self.s1_rgb.q.val();
             self.s3_valid.d.next = self.s2_write.q.val();
-            self.s3_addr.d.next = self.s2_addr.q.val();
             self.s3_z.d.next = self.s2_z.q.val();
         }
     }
