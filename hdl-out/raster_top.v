@@ -8817,9 +8817,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  valid_r$d;
     wire  valid_r$q;
     reg  valid_r$clock;
-    reg  free_r$d;
-    wire  free_r$q;
-    reg  free_r$clock;
+    reg  busy_r$d;
+    wire  busy_r$q;
+    reg  busy_r$clock;
     reg  [15:0] vx$0$d;
     wire  [15:0] vx$0$q;
     reg  vx$0$clock;
@@ -10340,10 +10340,10 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$free_r free_r(
-        .d(free_r$d),
-        .q(free_r$q),
-        .clock(free_r$clock)
+    raster_top$core$triangle_setup$busy_r busy_r(
+        .d(busy_r$d),
+        .q(busy_r$q),
+        .clock(busy_r$clock)
     );
     raster_top$core$triangle_setup$vx$0 vx$0(
         .d(vx$0$d),
@@ -11436,7 +11436,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         norm_r$clock = clock;
         handover_r$clock = clock;
         valid_r$clock = clock;
-        free_r$clock = clock;
+        busy_r$clock = clock;
         area$d = area$q;
         norm$d = norm$q;
         div_v$d = div_v$q;
@@ -11447,7 +11447,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         norm_r$d = norm_r$q;
         handover_r$d = handover_r$q;
         valid_r$d = valid_r$q;
-        free_r$d = free_r$q;
+        busy_r$d = busy_r$q;
         div$clock = clock;
         t$0$clock = clock;
         t$0$d = t$0$q;
@@ -11734,7 +11734,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         maj_left$3 = sign$3$q;
         run = ~(valid_r$q & ~out$ready);
         out$valid = valid_r$q;
-        inp$ready = run & free_r$q;
+        inp$ready = run & ~busy_r$q;
         take = inp$valid & inp$ready;
         if (run) begin
             if (t$0$q != 32'h0) begin
@@ -12713,7 +12713,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         end
         at_handover = handover_r$q & run;
         valid_r$d = t$2$d == last;
-        free_r$d = (t$0$d == 32'h0) | (t$0$d == ends$0);
+        busy_r$d = (t$0$d != 32'h0) & (t$0$d != ends$0);
         g0$vx$0 = vx$0$q;
         g0$vy$0 = vy$0$q;
         g0$vz$0 = vz$0$q;
@@ -17556,6 +17556,25 @@ module raster_top$core$triangle_setup$area(d,q,clock);
 endmodule // raster_top$core$triangle_setup$area
 
 
+module raster_top$core$triangle_setup$busy_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$busy_r
+
+
 module raster_top$core$triangle_setup$crosses$0(d,q,clock);
     
     // Module arguments
@@ -19402,25 +19421,6 @@ module raster_top$core$triangle_setup$exp_e(d,q,clock);
     end
           
 endmodule // raster_top$core$triangle_setup$exp_e
-
-
-module raster_top$core$triangle_setup$free_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$core$triangle_setup$free_r
 
 
 module raster_top$core$triangle_setup$g0(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);

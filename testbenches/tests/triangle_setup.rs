@@ -187,6 +187,8 @@ fn triangle_setup_latency_and_ii_paper_001_table3() {
     assert_eq!((s.latency, s.interval), (21, 10));
     let mut rng = ChaCha8Rng::seed_from_u64(seed());
     let timing = dual(&random(&mut rng, 40), Flow::BACK_TO_BACK);
+    // Offered from the first cycle after reset, the first triangle is taken in it.
+    assert_eq!(timing[0].taken, 0, "{:?}", timing[0]);
     for (i, t) in timing.iter().enumerate() {
         assert_eq!(t.valid - t.taken, latency as u64, "triangle {i}: {t:?}");
     }

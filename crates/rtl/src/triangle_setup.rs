@@ -282,16 +282,17 @@ pub struct TriangleSetup {
     at_iss: [Signal<Local, Bit>; 7],
     at_res: [Signal<Local, Bit>; 7],
     at_handover: Signal<Local, Bit>,
-    /// The same, and the result valid and copy 0 free for a triangle, decoded a cycle ahead
-    /// from the counters' next values, so that no comparison of a counter lies on a path
-    /// into the multipliers or the divider: each of the above is its register and `run`.
+    /// The same, and the result valid and copy 0 busy (no triangle can be taken), decoded a
+    /// cycle ahead from the counters' next values, so that no comparison of a counter lies
+    /// on a path into the multipliers or the divider: each of the above is its register and
+    /// `run`. (Busy, not free: every register is 0 after reset, when setup is empty.)
     act_r: [DFF<Bit>; PRODUCTS],
     norm_r: DFF<Bit>,
     iss_r: [DFF<Bit>; 7],
     res_r: [DFF<Bit>; 7],
     handover_r: DFF<Bit>,
     valid_r: DFF<Bit>,
-    free_r: DFF<Bit>,
+    busy_r: DFF<Bit>,
 
     // The triangle's registers, one copy per II cycles of its schedule (copy v at index
     // v, or 3v + vertex, or 9v + 3 * vertex + channel): x, y, z, colours, crossings, the
@@ -459,7 +460,7 @@ impl TriangleSetup {
             res_r: defaults(),
             handover_r: Default::default(),
             valid_r: Default::default(),
-            free_r: Default::default(),
+            busy_r: Default::default(),
             vx: defaults(),
             vy: defaults(),
             vz: defaults(),
@@ -554,7 +555,7 @@ impl Logic for TriangleSetup {
     #[hdl_gen]
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written.
-        dff_setup!(self, clock, area, norm, div_v, div_n, div_d, mant, exp_e, norm_r, handover_r, valid_r, free_r);
+        dff_setup!(self, clock, area, norm, div_v, div_n, div_d, mant, exp_e, norm_r, handover_r, valid_r, busy_r);
         clock!(self, clock, div);
         for v in 0..COPIES_MAX {
             self.t[v].clock.next = self.clock.val();
@@ -613,7 +614,7 @@ impl Logic for TriangleSetup {
         // into copy 0 when none is there or the one there reaches cycle II.
         self.run.next = !(self.valid_r.q.val() & !self.out.ready.val());
         self.out.valid.next = self.valid_r.q.val();
-        self.inp.ready.next = self.run.val() & self.free_r.q.val();
+        self.inp.ready.next = self.run.val() & !self.busy_r.q.val();
         self.take.next = self.inp.valid.val() & self.inp.ready.val();
         if self.run.val() {
             for v in 0..self._copies {
@@ -700,7 +701,7 @@ impl Logic for TriangleSetup {
         for v in (self._copies - 1)..self._copies {
             self.valid_r.d.next = self.t[v].d.val() == self.last.val();
         }
-        self.free_r.d.next = (self.t[0].d.val() == 0) | (self.t[0].d.val() == self.ends[0].val());
+        self.busy_r.d.next = (self.t[0].d.val() != 0) & (self.t[0].d.val() != self.ends[0].val());
 
         // ---- Geometry of each copy.
         for i in 0..3 {
