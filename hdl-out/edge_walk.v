@@ -95,10 +95,10 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
     reg  maj$step;
     reg  maj$up;
     reg  [12:0] maj$ld_x;
-    reg  [20:0] maj$ld_r;
     reg  [12:0] maj$ld_q;
-    reg  [20:0] maj$ld_rho;
-    reg  [20:0] maj$ld_d;
+    reg  [21:0] maj$ld_t;
+    reg  [21:0] maj$ld_a;
+    reg  [21:0] maj$ld_b;
     reg  [35:0] maj$ld_at_z;
     reg  [31:0] maj$ld_at_c0;
     reg  [31:0] maj$ld_at_c1;
@@ -121,10 +121,10 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
     reg  cur$step;
     reg  cur$up;
     reg  [12:0] cur$ld_x;
-    reg  [20:0] cur$ld_r;
     reg  [12:0] cur$ld_q;
-    reg  [20:0] cur$ld_rho;
-    reg  [20:0] cur$ld_d;
+    reg  [21:0] cur$ld_t;
+    reg  [21:0] cur$ld_a;
+    reg  [21:0] cur$ld_b;
     reg  [35:0] cur$ld_at_z;
     reg  [31:0] cur$ld_at_c0;
     reg  [31:0] cur$ld_at_c1;
@@ -142,6 +142,27 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
     wire  [31:0] cur$at_c0;
     wire  [31:0] cur$at_c1;
     wire  [31:0] cur$at_c2;
+    reg  start_maj$up;
+    reg  [20:0] start_maj$r;
+    reg  [20:0] start_maj$rho;
+    reg  [20:0] start_maj$d;
+    wire  [21:0] start_maj$t;
+    wire  [21:0] start_maj$a;
+    wire  [21:0] start_maj$b;
+    reg  start_s0$up;
+    reg  [20:0] start_s0$r;
+    reg  [20:0] start_s0$rho;
+    reg  [20:0] start_s0$d;
+    wire  [21:0] start_s0$t;
+    wire  [21:0] start_s0$a;
+    wire  [21:0] start_s0$b;
+    reg  start_s1$up;
+    reg  [20:0] start_s1$r;
+    reg  [20:0] start_s1$rho;
+    reg  [20:0] start_s1$d;
+    wire  [21:0] start_s1$t;
+    wire  [21:0] start_s1$a;
+    wire  [21:0] start_s1$b;
     reg  busy$d;
     wire  busy$q;
     reg  busy$clock;
@@ -157,15 +178,21 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
     reg  [12:0] j$d;
     wire  [12:0] j$q;
     reg  j$clock;
-    reg  [12:0] k$d;
-    wire  [12:0] k$q;
-    reg  k$clock;
-    reg  [12:0] total$d;
-    wire  [12:0] total$q;
-    reg  total$clock;
-    reg  [12:0] c0$d;
-    wire  [12:0] c0$q;
-    reg  c0$clock;
+    reg  [12:0] rem$d;
+    wire  [12:0] rem$q;
+    reg  rem$clock;
+    reg  [12:0] crow$d;
+    wire  [12:0] crow$q;
+    reg  crow$clock;
+    reg  [12:0] crem$d;
+    wire  [12:0] crem$q;
+    reg  crem$clock;
+    reg  last_r$d;
+    wire  last_r$q;
+    reg  last_r$clock;
+    reg  sw_r$d;
+    wire  sw_r$q;
+    reg  sw_r$clock;
     reg  [39:0] ddx_z$d;
     wire  [39:0] ddx_z$q;
     reg  ddx_z$clock;
@@ -181,18 +208,18 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
     reg  [12:0] pend_x$d;
     wire  [12:0] pend_x$q;
     reg  pend_x$clock;
-    reg  [20:0] pend_r$d;
-    wire  [20:0] pend_r$q;
-    reg  pend_r$clock;
     reg  [12:0] pend_q$d;
     wire  [12:0] pend_q$q;
     reg  pend_q$clock;
-    reg  [20:0] pend_rho$d;
-    wire  [20:0] pend_rho$q;
-    reg  pend_rho$clock;
-    reg  [20:0] pend_d$d;
-    wire  [20:0] pend_d$q;
-    reg  pend_d$clock;
+    reg  [21:0] pend_t$d;
+    wire  [21:0] pend_t$q;
+    reg  pend_t$clock;
+    reg  [21:0] pend_a$d;
+    wire  [21:0] pend_a$q;
+    reg  pend_a$clock;
+    reg  [21:0] pend_b$d;
+    wire  [21:0] pend_b$q;
+    reg  pend_b$clock;
     reg  [35:0] pend_at_z$d;
     wire  [35:0] pend_at_z$q;
     reg  pend_at_z$clock;
@@ -229,22 +256,63 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
     reg  [31:0] pend_inc1_c2$d;
     wire  [31:0] pend_inc1_c2$q;
     reg  pend_inc1_c2$clock;
+    reg  o_valid$d;
+    wire  o_valid$q;
+    reg  o_valid$clock;
+    reg  [9:0] o_y$d;
+    wire  [9:0] o_y$q;
+    reg  o_y$clock;
+    reg  [12:0] o_xl$d;
+    wire  [12:0] o_xl$q;
+    reg  o_xl$clock;
+    reg  [12:0] o_xr$d;
+    wire  [12:0] o_xr$q;
+    reg  o_xr$clock;
+    reg  [35:0] o_left_z$d;
+    wire  [35:0] o_left_z$q;
+    reg  o_left_z$clock;
+    reg  [31:0] o_left_c0$d;
+    wire  [31:0] o_left_c0$q;
+    reg  o_left_c0$clock;
+    reg  [31:0] o_left_c1$d;
+    wire  [31:0] o_left_c1$q;
+    reg  o_left_c1$clock;
+    reg  [31:0] o_left_c2$d;
+    wire  [31:0] o_left_c2$q;
+    reg  o_left_c2$clock;
+    reg  [35:0] o_right_z$d;
+    wire  [35:0] o_right_z$q;
+    reg  o_right_z$clock;
+    reg  [31:0] o_right_c0$d;
+    wire  [31:0] o_right_c0$q;
+    reg  o_right_c0$clock;
+    reg  [31:0] o_right_c1$d;
+    wire  [31:0] o_right_c1$q;
+    reg  o_right_c1$clock;
+    reg  [31:0] o_right_c2$d;
+    wire  [31:0] o_right_c2$q;
+    reg  o_right_c2$clock;
     reg  [12:0] j_sign$x;
     wire  j_sign$neg;
     reg  [12:0] sides$a;
     reg  [12:0] sides$b;
     wire  sides$lt;
+    reg  [12:0] in_j_sign$x;
+    wire  in_j_sign$neg;
     
     // Local signals
     reg  accept;
-    reg  no_rows;
-    reg  last;
-    reg  advance;
-    reg  switch;
+    reg  in_up;
+    reg  in_no_rows;
+    reg  [12:0] in_crow;
+    reg  in_last;
+    reg  in_short0_none;
+    reg  [12:0] height_j;
+    reg  free;
+    reg  emit;
+    reg  step;
     reg  valid;
     reg  [12:0] j_next;
-    reg  [12:0] k_next;
-    reg  [12:0] height_j;
     
     // Sub module instances
     edge_walk$clip_y clip_y(
@@ -256,10 +324,10 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
         .step(maj$step),
         .up(maj$up),
         .ld_x(maj$ld_x),
-        .ld_r(maj$ld_r),
         .ld_q(maj$ld_q),
-        .ld_rho(maj$ld_rho),
-        .ld_d(maj$ld_d),
+        .ld_t(maj$ld_t),
+        .ld_a(maj$ld_a),
+        .ld_b(maj$ld_b),
         .ld_at_z(maj$ld_at_z),
         .ld_at_c0(maj$ld_at_c0),
         .ld_at_c1(maj$ld_at_c1),
@@ -284,10 +352,10 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
         .step(cur$step),
         .up(cur$up),
         .ld_x(cur$ld_x),
-        .ld_r(cur$ld_r),
         .ld_q(cur$ld_q),
-        .ld_rho(cur$ld_rho),
-        .ld_d(cur$ld_d),
+        .ld_t(cur$ld_t),
+        .ld_a(cur$ld_a),
+        .ld_b(cur$ld_b),
         .ld_at_z(cur$ld_at_z),
         .ld_at_c0(cur$ld_at_c0),
         .ld_at_c1(cur$ld_at_c1),
@@ -305,6 +373,33 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
         .at_c0(cur$at_c0),
         .at_c1(cur$at_c1),
         .at_c2(cur$at_c2)
+    );
+    edge_walk$start_maj start_maj(
+        .up(start_maj$up),
+        .r(start_maj$r),
+        .rho(start_maj$rho),
+        .d(start_maj$d),
+        .t(start_maj$t),
+        .a(start_maj$a),
+        .b(start_maj$b)
+    );
+    edge_walk$start_s0 start_s0(
+        .up(start_s0$up),
+        .r(start_s0$r),
+        .rho(start_s0$rho),
+        .d(start_s0$d),
+        .t(start_s0$t),
+        .a(start_s0$a),
+        .b(start_s0$b)
+    );
+    edge_walk$start_s1 start_s1(
+        .up(start_s1$up),
+        .r(start_s1$r),
+        .rho(start_s1$rho),
+        .d(start_s1$d),
+        .t(start_s1$t),
+        .a(start_s1$a),
+        .b(start_s1$b)
     );
     edge_walk$busy busy(
         .d(busy$d),
@@ -331,20 +426,30 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
         .q(j$q),
         .clock(j$clock)
     );
-    edge_walk$k k(
-        .d(k$d),
-        .q(k$q),
-        .clock(k$clock)
+    edge_walk$rem rem(
+        .d(rem$d),
+        .q(rem$q),
+        .clock(rem$clock)
     );
-    edge_walk$total total(
-        .d(total$d),
-        .q(total$q),
-        .clock(total$clock)
+    edge_walk$crow crow(
+        .d(crow$d),
+        .q(crow$q),
+        .clock(crow$clock)
     );
-    edge_walk$c0 c0(
-        .d(c0$d),
-        .q(c0$q),
-        .clock(c0$clock)
+    edge_walk$crem crem(
+        .d(crem$d),
+        .q(crem$q),
+        .clock(crem$clock)
+    );
+    edge_walk$last_r last_r(
+        .d(last_r$d),
+        .q(last_r$q),
+        .clock(last_r$clock)
+    );
+    edge_walk$sw_r sw_r(
+        .d(sw_r$d),
+        .q(sw_r$q),
+        .clock(sw_r$clock)
     );
     edge_walk$ddx_z ddx_z(
         .d(ddx_z$d),
@@ -371,25 +476,25 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
         .q(pend_x$q),
         .clock(pend_x$clock)
     );
-    edge_walk$pend_r pend_r(
-        .d(pend_r$d),
-        .q(pend_r$q),
-        .clock(pend_r$clock)
-    );
     edge_walk$pend_q pend_q(
         .d(pend_q$d),
         .q(pend_q$q),
         .clock(pend_q$clock)
     );
-    edge_walk$pend_rho pend_rho(
-        .d(pend_rho$d),
-        .q(pend_rho$q),
-        .clock(pend_rho$clock)
+    edge_walk$pend_t pend_t(
+        .d(pend_t$d),
+        .q(pend_t$q),
+        .clock(pend_t$clock)
     );
-    edge_walk$pend_d pend_d(
-        .d(pend_d$d),
-        .q(pend_d$q),
-        .clock(pend_d$clock)
+    edge_walk$pend_a pend_a(
+        .d(pend_a$d),
+        .q(pend_a$q),
+        .clock(pend_a$clock)
+    );
+    edge_walk$pend_b pend_b(
+        .d(pend_b$d),
+        .q(pend_b$q),
+        .clock(pend_b$clock)
     );
     edge_walk$pend_at_z pend_at_z(
         .d(pend_at_z$d),
@@ -451,6 +556,66 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
         .q(pend_inc1_c2$q),
         .clock(pend_inc1_c2$clock)
     );
+    edge_walk$o_valid o_valid(
+        .d(o_valid$d),
+        .q(o_valid$q),
+        .clock(o_valid$clock)
+    );
+    edge_walk$o_y o_y(
+        .d(o_y$d),
+        .q(o_y$q),
+        .clock(o_y$clock)
+    );
+    edge_walk$o_xl o_xl(
+        .d(o_xl$d),
+        .q(o_xl$q),
+        .clock(o_xl$clock)
+    );
+    edge_walk$o_xr o_xr(
+        .d(o_xr$d),
+        .q(o_xr$q),
+        .clock(o_xr$clock)
+    );
+    edge_walk$o_left_z o_left_z(
+        .d(o_left_z$d),
+        .q(o_left_z$q),
+        .clock(o_left_z$clock)
+    );
+    edge_walk$o_left_c0 o_left_c0(
+        .d(o_left_c0$d),
+        .q(o_left_c0$q),
+        .clock(o_left_c0$clock)
+    );
+    edge_walk$o_left_c1 o_left_c1(
+        .d(o_left_c1$d),
+        .q(o_left_c1$q),
+        .clock(o_left_c1$clock)
+    );
+    edge_walk$o_left_c2 o_left_c2(
+        .d(o_left_c2$d),
+        .q(o_left_c2$q),
+        .clock(o_left_c2$clock)
+    );
+    edge_walk$o_right_z o_right_z(
+        .d(o_right_z$d),
+        .q(o_right_z$q),
+        .clock(o_right_z$clock)
+    );
+    edge_walk$o_right_c0 o_right_c0(
+        .d(o_right_c0$d),
+        .q(o_right_c0$q),
+        .clock(o_right_c0$clock)
+    );
+    edge_walk$o_right_c1 o_right_c1(
+        .d(o_right_c1$d),
+        .q(o_right_c1$q),
+        .clock(o_right_c1$clock)
+    );
+    edge_walk$o_right_c2 o_right_c2(
+        .d(o_right_c2$d),
+        .q(o_right_c2$q),
+        .clock(o_right_c2$clock)
+    );
     edge_walk$j_sign j_sign(
         .x(j_sign$x),
         .neg(j_sign$neg)
@@ -460,6 +625,10 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
         .b(sides$b),
         .lt(sides$lt)
     );
+    edge_walk$in_j_sign in_j_sign(
+        .x(in_j_sign$x),
+        .neg(in_j_sign$neg)
+    );
     
     // Update code
     always @(*) begin
@@ -468,18 +637,20 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
         up$clock = clock;
         maj_left$clock = clock;
         j$clock = clock;
-        k$clock = clock;
-        total$clock = clock;
-        c0$clock = clock;
+        rem$clock = clock;
+        crow$clock = clock;
+        crem$clock = clock;
+        last_r$clock = clock;
+        sw_r$clock = clock;
         ddx_z$clock = clock;
         ddx_c0$clock = clock;
         ddx_c1$clock = clock;
         ddx_c2$clock = clock;
         pend_x$clock = clock;
-        pend_r$clock = clock;
         pend_q$clock = clock;
-        pend_rho$clock = clock;
-        pend_d$clock = clock;
+        pend_t$clock = clock;
+        pend_a$clock = clock;
+        pend_b$clock = clock;
         pend_at_z$clock = clock;
         pend_at_c0$clock = clock;
         pend_at_c1$clock = clock;
@@ -492,23 +663,37 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
         pend_inc1_c0$clock = clock;
         pend_inc1_c1$clock = clock;
         pend_inc1_c2$clock = clock;
+        o_valid$clock = clock;
+        o_y$clock = clock;
+        o_xl$clock = clock;
+        o_xr$clock = clock;
+        o_left_z$clock = clock;
+        o_left_c0$clock = clock;
+        o_left_c1$clock = clock;
+        o_left_c2$clock = clock;
+        o_right_z$clock = clock;
+        o_right_c0$clock = clock;
+        o_right_c1$clock = clock;
+        o_right_c2$clock = clock;
         busy$d = busy$q;
         walking$d = walking$q;
         up$d = up$q;
         maj_left$d = maj_left$q;
         j$d = j$q;
-        k$d = k$q;
-        total$d = total$q;
-        c0$d = c0$q;
+        rem$d = rem$q;
+        crow$d = crow$q;
+        crem$d = crem$q;
+        last_r$d = last_r$q;
+        sw_r$d = sw_r$q;
         ddx_z$d = ddx_z$q;
         ddx_c0$d = ddx_c0$q;
         ddx_c1$d = ddx_c1$q;
         ddx_c2$d = ddx_c2$q;
         pend_x$d = pend_x$q;
-        pend_r$d = pend_r$q;
         pend_q$d = pend_q$q;
-        pend_rho$d = pend_rho$q;
-        pend_d$d = pend_d$q;
+        pend_t$d = pend_t$q;
+        pend_a$d = pend_a$q;
+        pend_b$d = pend_b$q;
         pend_at_z$d = pend_at_z$q;
         pend_at_c0$d = pend_at_c0$q;
         pend_at_c1$d = pend_at_c1$q;
@@ -521,96 +706,133 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
         pend_inc1_c0$d = pend_inc1_c0$q;
         pend_inc1_c1$d = pend_inc1_c1$q;
         pend_inc1_c2$d = pend_inc1_c2$q;
+        o_valid$d = o_valid$q;
+        o_y$d = o_y$q;
+        o_xl$d = o_xl$q;
+        o_xr$d = o_xr$q;
+        o_left_z$d = o_left_z$q;
+        o_left_c0$d = o_left_c0$q;
+        o_left_c1$d = o_left_c1$q;
+        o_left_c2$d = o_left_c2$q;
+        o_right_z$d = o_right_z$q;
+        o_right_c0$d = o_right_c0$q;
+        o_right_c1$d = o_right_c1$q;
+        o_right_c2$d = o_right_c2$q;
         maj$clock = clock;
         cur$clock = clock;
         inp$ready = ~busy$q;
         accept = inp$valid & ~busy$q;
-        j_sign$x = j$q;
+        in_up = inp$walk & clip_y$on;
         height_j = ((height) & 13'h1fff);
-        k_next = k$q + 32'h1;
+        in_j_sign$x = inp$maj_j;
+        in_no_rows = inp$maj_count == 32'h0;
+        if (clip_y$on) begin
+            if (in_up) begin
+                if (in_j_sign$neg) begin
+                    in_no_rows = 1'b1;
+                end
+            end
+            else if (~in_j_sign$neg & (inp$maj_j >= height_j)) begin
+                in_no_rows = 1'b1;
+            end
+        end
+        in_crow = height_j + ~inp$maj_j;
+        if (in_up) begin
+            in_crow = inp$maj_j;
+        end
+        in_last = inp$maj_count == 32'h1;
+        if (clip_y$on & (in_crow == 32'h0)) begin
+            in_last = 1'b1;
+        end
+        in_short0_none = inp$short0_count == 32'h0;
+        start_maj$up = in_up;
+        start_maj$r = inp$maj_r;
+        start_maj$rho = inp$maj_rho;
+        start_maj$d = inp$maj_d;
+        start_s0$up = in_up;
+        start_s0$r = inp$short0_r;
+        start_s0$rho = inp$short0_rho;
+        start_s0$d = inp$short0_d;
+        start_s1$up = in_up;
+        start_s1$r = inp$short1_r;
+        start_s1$rho = inp$short1_rho;
+        start_s1$d = inp$short1_d;
+        j_sign$x = j$q;
         j_next = j$q + 32'h1;
         if (up$q) begin
             j_next = j$q - 32'h1;
         end
-        last = k_next == total$q;
-        if (clip_y$on) begin
-            if (up$q) begin
-                if (j$q == 32'h0) begin
-                    last = 1'b1;
-                end
+        sides$a = cur$x;
+        sides$b = maj$x;
+        if (maj_left$q) begin
+            sides$a = maj$x;
+            sides$b = cur$x;
+        end
+        valid = sides$lt;
+        if (clip_y$on & j_sign$neg) begin
+            valid = 1'b0;
+        end
+        free = ~o_valid$q | out$ready;
+        emit = walking$q & free;
+        step = emit & ~last_r$q;
+        if (free) begin
+            o_valid$d = 1'b0;
+        end
+        if (emit) begin
+            o_valid$d = valid;
+            o_y$d = ((j$q) & 10'h3ff);
+            if (maj_left$q) begin
+                o_xl$d = maj$x;
+                o_xr$d = cur$x - 32'h1;
+                o_left_z$d = maj$at_z;
+                o_left_c0$d = maj$at_c0;
+                o_left_c1$d = maj$at_c1;
+                o_left_c2$d = maj$at_c2;
+                o_right_z$d = cur$at_z;
+                o_right_c0$d = cur$at_c0;
+                o_right_c1$d = cur$at_c1;
+                o_right_c2$d = cur$at_c2;
             end
-            else if (j_next == height_j) begin
-                last = 1'b1;
+            else begin
+                o_xl$d = cur$x;
+                o_xr$d = maj$x - 32'h1;
+                o_left_z$d = cur$at_z;
+                o_left_c0$d = cur$at_c0;
+                o_left_c1$d = cur$at_c1;
+                o_left_c2$d = cur$at_c2;
+                o_right_z$d = maj$at_z;
+                o_right_c0$d = maj$at_c0;
+                o_right_c1$d = maj$at_c1;
+                o_right_c2$d = maj$at_c2;
             end
         end
-        no_rows = total$q == 32'h0;
-        if (clip_y$on) begin
-            if (up$q) begin
-                if (j_sign$neg) begin
-                    no_rows = 1'b1;
-                end
-            end
-            else if (~j_sign$neg & (j$q >= height_j)) begin
-                no_rows = 1'b1;
-            end
-        end
-        out$y = ((j$q) & 10'h3ff);
+        out$valid = o_valid$q;
+        out$y = o_y$q;
+        out$xl = o_xl$q;
+        out$xr = o_xr$q;
+        out$left_z = o_left_z$q;
+        out$left_c0 = o_left_c0$q;
+        out$left_c1 = o_left_c1$q;
+        out$left_c2 = o_left_c2$q;
+        out$right_z = o_right_z$q;
+        out$right_c0 = o_right_c0$q;
+        out$right_c1 = o_right_c1$q;
+        out$right_c2 = o_right_c2$q;
         out$ddx_z = ddx_z$q;
         out$ddx_c0 = ddx_c0$q;
         out$ddx_c1 = ddx_c1$q;
         out$ddx_c2 = ddx_c2$q;
-        if (maj_left$q) begin
-            sides$a = maj$x;
-            sides$b = cur$x;
-            out$xl = maj$x;
-            out$xr = cur$x - 32'h1;
-            out$left_z = maj$at_z;
-            out$left_c0 = maj$at_c0;
-            out$left_c1 = maj$at_c1;
-            out$left_c2 = maj$at_c2;
-            out$right_z = cur$at_z;
-            out$right_c0 = cur$at_c0;
-            out$right_c1 = cur$at_c1;
-            out$right_c2 = cur$at_c2;
-        end
-        else begin
-            sides$a = cur$x;
-            sides$b = maj$x;
-            out$xl = cur$x;
-            out$xr = maj$x - 32'h1;
-            out$left_z = cur$at_z;
-            out$left_c0 = cur$at_c0;
-            out$left_c1 = cur$at_c1;
-            out$left_c2 = cur$at_c2;
-            out$right_z = maj$at_z;
-            out$right_c0 = maj$at_c0;
-            out$right_c1 = maj$at_c1;
-            out$right_c2 = maj$at_c2;
-        end
-        valid = busy$q & walking$q & sides$lt;
-        if (clip_y$on & j_sign$neg) begin
-            valid = 1'b0;
-        end
-        out$valid = valid;
-        advance = busy$q & walking$q & (~valid | out$ready);
-        switch = 1'b0;
-        if (busy$q & ~walking$q & (c0$q == 32'h0)) begin
-            switch = 1'b1;
-        end
-        if (advance & ~last & (k_next == c0$q)) begin
-            switch = 1'b1;
-        end
         maj$up = up$q;
         maj$load = accept;
-        maj$step = advance & ~last;
+        maj$step = step;
         cur$up = up$q;
-        cur$load = accept | switch;
-        cur$step = advance & ~last;
+        cur$load = accept | (step & sw_r$q);
+        cur$step = step;
         maj$ld_x = inp$maj_x;
-        maj$ld_r = inp$maj_r;
         maj$ld_q = ((inp$maj_q) & 13'h1fff);
-        maj$ld_rho = inp$maj_rho;
-        maj$ld_d = inp$maj_d;
+        maj$ld_t = start_maj$t;
+        maj$ld_a = start_maj$a;
+        maj$ld_b = start_maj$b;
         maj$ld_at_z = inp$maj_at_z;
         maj$ld_at_c0 = inp$maj_at_c0;
         maj$ld_at_c1 = inp$maj_at_c1;
@@ -623,12 +845,12 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
         maj$ld_inc1_c0 = ((inp$maj_inc1_c0) & 32'hffffffff);
         maj$ld_inc1_c1 = ((inp$maj_inc1_c1) & 32'hffffffff);
         maj$ld_inc1_c2 = ((inp$maj_inc1_c2) & 32'hffffffff);
-        if (switch) begin
+        if (busy$q) begin
             cur$ld_x = pend_x$q;
-            cur$ld_r = pend_r$q;
             cur$ld_q = pend_q$q;
-            cur$ld_rho = pend_rho$q;
-            cur$ld_d = pend_d$q;
+            cur$ld_t = pend_t$q;
+            cur$ld_a = pend_a$q;
+            cur$ld_b = pend_b$q;
             cur$ld_at_z = pend_at_z$q;
             cur$ld_at_c0 = pend_at_c0$q;
             cur$ld_at_c1 = pend_at_c1$q;
@@ -642,12 +864,31 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
             cur$ld_inc1_c1 = pend_inc1_c1$q;
             cur$ld_inc1_c2 = pend_inc1_c2$q;
         end
+        else if (in_short0_none) begin
+            cur$ld_x = inp$short1_x;
+            cur$ld_q = ((inp$short1_q) & 13'h1fff);
+            cur$ld_t = start_s1$t;
+            cur$ld_a = start_s1$a;
+            cur$ld_b = start_s1$b;
+            cur$ld_at_z = inp$short1_at_z;
+            cur$ld_at_c0 = inp$short1_at_c0;
+            cur$ld_at_c1 = inp$short1_at_c1;
+            cur$ld_at_c2 = inp$short1_at_c2;
+            cur$ld_inc0_z = ((inp$short1_inc0_z) & 36'hfffffffff);
+            cur$ld_inc0_c0 = ((inp$short1_inc0_c0) & 32'hffffffff);
+            cur$ld_inc0_c1 = ((inp$short1_inc0_c1) & 32'hffffffff);
+            cur$ld_inc0_c2 = ((inp$short1_inc0_c2) & 32'hffffffff);
+            cur$ld_inc1_z = ((inp$short1_inc1_z) & 36'hfffffffff);
+            cur$ld_inc1_c0 = ((inp$short1_inc1_c0) & 32'hffffffff);
+            cur$ld_inc1_c1 = ((inp$short1_inc1_c1) & 32'hffffffff);
+            cur$ld_inc1_c2 = ((inp$short1_inc1_c2) & 32'hffffffff);
+        end
         else begin
             cur$ld_x = inp$short0_x;
-            cur$ld_r = inp$short0_r;
             cur$ld_q = ((inp$short0_q) & 13'h1fff);
-            cur$ld_rho = inp$short0_rho;
-            cur$ld_d = inp$short0_d;
+            cur$ld_t = start_s0$t;
+            cur$ld_a = start_s0$a;
+            cur$ld_b = start_s0$b;
             cur$ld_at_z = inp$short0_at_z;
             cur$ld_at_c0 = inp$short0_at_c0;
             cur$ld_at_c1 = inp$short0_at_c1;
@@ -661,24 +902,43 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
             cur$ld_inc1_c1 = ((inp$short0_inc1_c1) & 32'hffffffff);
             cur$ld_inc1_c2 = ((inp$short0_inc1_c2) & 32'hffffffff);
         end
+        if (step) begin
+            j$d = j_next;
+            rem$d = rem$q - 32'h1;
+            crow$d = crow$q - 32'h1;
+            crem$d = crem$q - 32'h1;
+            last_r$d = rem$q == 32'h1;
+            if (clip_y$on & (crow$q == 32'h1)) begin
+                last_r$d = 1'b1;
+            end
+            sw_r$d = crem$q == 32'h1;
+        end
+        if (emit & last_r$q) begin
+            walking$d = 1'b0;
+        end
+        if (busy$q & ~walking$q & free) begin
+            busy$d = 1'b0;
+        end
         if (accept) begin
             busy$d = 1'b1;
-            walking$d = 1'b0;
-            up$d = inp$walk & clip_y$on;
+            walking$d = ~in_no_rows;
+            up$d = in_up;
             maj_left$d = inp$maj_left;
             j$d = inp$maj_j;
-            k$d = 32'h0;
-            total$d = inp$maj_count;
-            c0$d = inp$short0_count;
+            rem$d = inp$maj_count - 32'h1;
+            crow$d = in_crow;
+            crem$d = inp$short0_count - 32'h1;
+            last_r$d = in_last;
+            sw_r$d = inp$short0_count == 32'h1;
             ddx_z$d = inp$ddx_z;
             ddx_c0$d = inp$ddx_c0;
             ddx_c1$d = inp$ddx_c1;
             ddx_c2$d = inp$ddx_c2;
             pend_x$d = inp$short1_x;
-            pend_r$d = inp$short1_r;
             pend_q$d = ((inp$short1_q) & 13'h1fff);
-            pend_rho$d = inp$short1_rho;
-            pend_d$d = inp$short1_d;
+            pend_t$d = start_s1$t;
+            pend_a$d = start_s1$a;
+            pend_b$d = start_s1$b;
             pend_at_z$d = inp$short1_at_z;
             pend_at_c0$d = inp$short1_at_c0;
             pend_at_c1$d = inp$short1_at_c1;
@@ -691,20 +951,6 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
             pend_inc1_c0$d = ((inp$short1_inc1_c0) & 32'hffffffff);
             pend_inc1_c1$d = ((inp$short1_inc1_c1) & 32'hffffffff);
             pend_inc1_c2$d = ((inp$short1_inc1_c2) & 32'hffffffff);
-        end
-        if (busy$q & ~walking$q) begin
-            walking$d = ~no_rows;
-            busy$d = ~no_rows;
-        end
-        if (advance) begin
-            if (last) begin
-                busy$d = 1'b0;
-                walking$d = 1'b0;
-            end
-            else begin
-                j$d = j_next;
-                k$d = k_next;
-            end
         end
     end
     
@@ -730,25 +976,6 @@ module edge_walk$busy(d,q,clock);
 endmodule // edge_walk$busy
 
 
-module edge_walk$c0(d,q,clock);
-    
-    // Module arguments
-    input wire  [12:0] d;
-    output reg  [12:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 13'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // edge_walk$c0
-
-
 module edge_walk$clip_y(on);
     
     // Module arguments
@@ -765,7 +992,45 @@ module edge_walk$clip_y(on);
 endmodule // edge_walk$clip_y
 
 
-module edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
+module edge_walk$crem(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$crem
+
+
+module edge_walk$crow(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$crow
+
+
+module edge_walk$cur(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
     
     // Module arguments
     input wire  clock;
@@ -773,10 +1038,10 @@ module edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at
     input wire  step;
     input wire  up;
     input wire  [12:0] ld_x;
-    input wire  [20:0] ld_r;
     input wire  [12:0] ld_q;
-    input wire  [20:0] ld_rho;
-    input wire  [20:0] ld_d;
+    input wire  [21:0] ld_t;
+    input wire  [21:0] ld_a;
+    input wire  [21:0] ld_b;
     input wire  [35:0] ld_at_z;
     input wire  [31:0] ld_at_c0;
     input wire  [31:0] ld_at_c1;
@@ -799,18 +1064,18 @@ module edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at
     reg  [12:0] x_r$d;
     wire  [12:0] x_r$q;
     reg  x_r$clock;
-    reg  [20:0] r_r$d;
-    wire  [20:0] r_r$q;
-    reg  r_r$clock;
     reg  [12:0] q_r$d;
     wire  [12:0] q_r$q;
     reg  q_r$clock;
-    reg  [20:0] rho_r$d;
-    wire  [20:0] rho_r$q;
-    reg  rho_r$clock;
-    reg  [20:0] d_r$d;
-    wire  [20:0] d_r$q;
-    reg  d_r$clock;
+    reg  [21:0] t_r$d;
+    wire  [21:0] t_r$q;
+    reg  t_r$clock;
+    reg  [21:0] a_r$d;
+    wire  [21:0] a_r$q;
+    reg  a_r$clock;
+    reg  [21:0] b_r$d;
+    wire  [21:0] b_r$q;
+    reg  b_r$clock;
     reg  z$clock;
     reg  z$load;
     reg  z$step;
@@ -847,12 +1112,14 @@ module edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at
     reg  [31:0] c2$ld_inc0;
     reg  [31:0] c2$ld_inc1;
     wire  [31:0] c2$at;
+    reg  [21:0] t_sign$x;
+    wire  t_sign$neg;
     
     // Local signals
     reg  one;
-    reg  [20:0] r_plus;
-    reg  [20:0] r_minus;
-    reg  [12:0] x_step;
+    reg  [21:0] t_inc;
+    reg  [12:0] q_dir;
+    reg  one_dir;
     
     // Sub module instances
     edge_walk$cur$x_r x_r(
@@ -860,25 +1127,25 @@ module edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    edge_walk$cur$r_r r_r(
-        .d(r_r$d),
-        .q(r_r$q),
-        .clock(r_r$clock)
-    );
     edge_walk$cur$q_r q_r(
         .d(q_r$d),
         .q(q_r$q),
         .clock(q_r$clock)
     );
-    edge_walk$cur$rho_r rho_r(
-        .d(rho_r$d),
-        .q(rho_r$q),
-        .clock(rho_r$clock)
+    edge_walk$cur$t_r t_r(
+        .d(t_r$d),
+        .q(t_r$q),
+        .clock(t_r$clock)
     );
-    edge_walk$cur$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
+    edge_walk$cur$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    edge_walk$cur$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
     );
     edge_walk$cur$z z(
         .clock(z$clock),
@@ -924,52 +1191,49 @@ module edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at
         .ld_inc1(c2$ld_inc1),
         .at(c2$at)
     );
+    edge_walk$cur$t_sign t_sign(
+        .x(t_sign$x),
+        .neg(t_sign$neg)
+    );
     
     // Update code
     always @(*) begin
         x_r$clock = clock;
-        r_r$clock = clock;
         q_r$clock = clock;
-        rho_r$clock = clock;
-        d_r$clock = clock;
+        t_r$clock = clock;
+        a_r$clock = clock;
+        b_r$clock = clock;
         x_r$d = x_r$q;
-        r_r$d = r_r$q;
         q_r$d = q_r$q;
-        rho_r$d = rho_r$q;
-        d_r$d = d_r$q;
+        t_r$d = t_r$q;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
         z$clock = clock;
         c0$clock = clock;
         c1$clock = clock;
         c2$clock = clock;
-        r_plus = r_r$q + rho_r$q;
-        r_minus = r_r$q - rho_r$q;
-        one = r_r$q < rho_r$q;
-        if (up) begin
-            one = r_plus >= d_r$q;
+        t_sign$x = t_r$q;
+        one = t_sign$neg;
+        t_inc = b_r$q;
+        if (one) begin
+            t_inc = a_r$q;
         end
-        x_step = q_r$q + one;
+        q_dir = q_r$q;
+        one_dir = one;
+        if (up) begin
+            q_dir = ~q_r$q;
+            one_dir = ~one;
+        end
         if (step) begin
-            if (up) begin
-                x_r$d = x_r$q - x_step;
-                r_r$d = r_plus;
-                if (one) begin
-                    r_r$d = r_plus - d_r$q;
-                end
-            end
-            else begin
-                x_r$d = x_r$q + x_step;
-                r_r$d = r_minus;
-                if (one) begin
-                    r_r$d = r_minus + d_r$q;
-                end
-            end
+            t_r$d = t_r$q + t_inc;
+            x_r$d = x_r$q + q_dir + one_dir;
         end
         if (load) begin
             x_r$d = ld_x;
-            r_r$d = ld_r;
             q_r$d = ld_q;
-            rho_r$d = ld_rho;
-            d_r$d = ld_d;
+            t_r$d = ld_t;
+            a_r$d = ld_a;
+            b_r$d = ld_b;
         end
         z$load = load;
         z$step = step;
@@ -1009,6 +1273,44 @@ module edge_walk$cur(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at
 endmodule // edge_walk$cur
 
 
+module edge_walk$cur$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [21:0] d;
+    output reg  [21:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 22'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$cur$a_r
+
+
+module edge_walk$cur$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [21:0] d;
+    output reg  [21:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 22'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$cur$b_r
+
+
 module edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
@@ -1035,6 +1337,7 @@ module edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Local signals
     reg  [31:0] inc;
+    reg  [31:0] inc_dir;
     
     // Sub module instances
     edge_walk$cur$c0$at_r at_r(
@@ -1065,13 +1368,12 @@ module edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
         if (one) begin
             inc = inc1_r$q;
         end
+        inc_dir = inc;
+        if (up) begin
+            inc_dir = ~inc;
+        end
         if (step) begin
-            if (up) begin
-                at_r$d = at_r$q - inc;
-            end
-            else begin
-                at_r$d = at_r$q + inc;
-            end
+            at_r$d = at_r$q + inc_dir + up;
         end
         if (load) begin
             at_r$d = ld_at;
@@ -1167,6 +1469,7 @@ module edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Local signals
     reg  [31:0] inc;
+    reg  [31:0] inc_dir;
     
     // Sub module instances
     edge_walk$cur$c1$at_r at_r(
@@ -1197,13 +1500,12 @@ module edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
         if (one) begin
             inc = inc1_r$q;
         end
+        inc_dir = inc;
+        if (up) begin
+            inc_dir = ~inc;
+        end
         if (step) begin
-            if (up) begin
-                at_r$d = at_r$q - inc;
-            end
-            else begin
-                at_r$d = at_r$q + inc;
-            end
+            at_r$d = at_r$q + inc_dir + up;
         end
         if (load) begin
             at_r$d = ld_at;
@@ -1299,6 +1601,7 @@ module edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Local signals
     reg  [31:0] inc;
+    reg  [31:0] inc_dir;
     
     // Sub module instances
     edge_walk$cur$c2$at_r at_r(
@@ -1329,13 +1632,12 @@ module edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
         if (one) begin
             inc = inc1_r$q;
         end
+        inc_dir = inc;
+        if (up) begin
+            inc_dir = ~inc;
+        end
         if (step) begin
-            if (up) begin
-                at_r$d = at_r$q - inc;
-            end
-            else begin
-                at_r$d = at_r$q + inc;
-            end
+            at_r$d = at_r$q + inc_dir + up;
         end
         if (load) begin
             at_r$d = ld_at;
@@ -1405,25 +1707,6 @@ module edge_walk$cur$c2$inc1_r(d,q,clock);
 endmodule // edge_walk$cur$c2$inc1_r
 
 
-module edge_walk$cur$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 21'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // edge_walk$cur$d_r
-
-
 module edge_walk$cur$q_r(d,q,clock);
     
     // Module arguments
@@ -1443,42 +1726,40 @@ module edge_walk$cur$q_r(d,q,clock);
 endmodule // edge_walk$cur$q_r
 
 
-module edge_walk$cur$r_r(d,q,clock);
+module edge_walk$cur$t_r(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [21:0] d;
+    output reg  [21:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 22'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // edge_walk$cur$r_r
+endmodule // edge_walk$cur$t_r
 
 
-module edge_walk$cur$rho_r(d,q,clock);
+module edge_walk$cur$t_sign(x,neg);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
-    input wire  clock;
+    input wire  [21:0] x;
+    output reg  neg;
     
-    // Update code (custom)
-    initial begin
-       q = 21'h0;
+    // Constant declarations
+    localparam  half = 22'h200000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
     end
     
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // edge_walk$cur$rho_r
+endmodule // edge_walk$cur$t_sign
 
 
 module edge_walk$cur$x_r(d,q,clock);
@@ -1526,6 +1807,7 @@ module edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Local signals
     reg  [35:0] inc;
+    reg  [35:0] inc_dir;
     
     // Sub module instances
     edge_walk$cur$z$at_r at_r(
@@ -1556,13 +1838,12 @@ module edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
         if (one) begin
             inc = inc1_r$q;
         end
+        inc_dir = inc;
+        if (up) begin
+            inc_dir = ~inc;
+        end
         if (step) begin
-            if (up) begin
-                at_r$d = at_r$q - inc;
-            end
-            else begin
-                at_r$d = at_r$q + inc;
-            end
+            at_r$d = at_r$q + inc_dir + up;
         end
         if (load) begin
             at_r$d = ld_at;
@@ -1708,6 +1989,23 @@ module edge_walk$ddx_z(d,q,clock);
 endmodule // edge_walk$ddx_z
 
 
+module edge_walk$in_j_sign(x,neg);
+    
+    // Module arguments
+    input wire  [12:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 13'b1000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // edge_walk$in_j_sign
+
+
 module edge_walk$j(d,q,clock);
     
     // Module arguments
@@ -1744,26 +2042,26 @@ module edge_walk$j_sign(x,neg);
 endmodule // edge_walk$j_sign
 
 
-module edge_walk$k(d,q,clock);
+module edge_walk$last_r(d,q,clock);
     
     // Module arguments
-    input wire  [12:0] d;
-    output reg  [12:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 13'h0;
+       q = 1'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // edge_walk$k
+endmodule // edge_walk$last_r
 
 
-module edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
+module edge_walk$maj(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
     
     // Module arguments
     input wire  clock;
@@ -1771,10 +2069,10 @@ module edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at
     input wire  step;
     input wire  up;
     input wire  [12:0] ld_x;
-    input wire  [20:0] ld_r;
     input wire  [12:0] ld_q;
-    input wire  [20:0] ld_rho;
-    input wire  [20:0] ld_d;
+    input wire  [21:0] ld_t;
+    input wire  [21:0] ld_a;
+    input wire  [21:0] ld_b;
     input wire  [35:0] ld_at_z;
     input wire  [31:0] ld_at_c0;
     input wire  [31:0] ld_at_c1;
@@ -1797,18 +2095,18 @@ module edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at
     reg  [12:0] x_r$d;
     wire  [12:0] x_r$q;
     reg  x_r$clock;
-    reg  [20:0] r_r$d;
-    wire  [20:0] r_r$q;
-    reg  r_r$clock;
     reg  [12:0] q_r$d;
     wire  [12:0] q_r$q;
     reg  q_r$clock;
-    reg  [20:0] rho_r$d;
-    wire  [20:0] rho_r$q;
-    reg  rho_r$clock;
-    reg  [20:0] d_r$d;
-    wire  [20:0] d_r$q;
-    reg  d_r$clock;
+    reg  [21:0] t_r$d;
+    wire  [21:0] t_r$q;
+    reg  t_r$clock;
+    reg  [21:0] a_r$d;
+    wire  [21:0] a_r$q;
+    reg  a_r$clock;
+    reg  [21:0] b_r$d;
+    wire  [21:0] b_r$q;
+    reg  b_r$clock;
     reg  z$clock;
     reg  z$load;
     reg  z$step;
@@ -1845,12 +2143,14 @@ module edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at
     reg  [31:0] c2$ld_inc0;
     reg  [31:0] c2$ld_inc1;
     wire  [31:0] c2$at;
+    reg  [21:0] t_sign$x;
+    wire  t_sign$neg;
     
     // Local signals
     reg  one;
-    reg  [20:0] r_plus;
-    reg  [20:0] r_minus;
-    reg  [12:0] x_step;
+    reg  [21:0] t_inc;
+    reg  [12:0] q_dir;
+    reg  one_dir;
     
     // Sub module instances
     edge_walk$maj$x_r x_r(
@@ -1858,25 +2158,25 @@ module edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    edge_walk$maj$r_r r_r(
-        .d(r_r$d),
-        .q(r_r$q),
-        .clock(r_r$clock)
-    );
     edge_walk$maj$q_r q_r(
         .d(q_r$d),
         .q(q_r$q),
         .clock(q_r$clock)
     );
-    edge_walk$maj$rho_r rho_r(
-        .d(rho_r$d),
-        .q(rho_r$q),
-        .clock(rho_r$clock)
+    edge_walk$maj$t_r t_r(
+        .d(t_r$d),
+        .q(t_r$q),
+        .clock(t_r$clock)
     );
-    edge_walk$maj$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
+    edge_walk$maj$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    edge_walk$maj$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
     );
     edge_walk$maj$z z(
         .clock(z$clock),
@@ -1922,52 +2222,49 @@ module edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at
         .ld_inc1(c2$ld_inc1),
         .at(c2$at)
     );
+    edge_walk$maj$t_sign t_sign(
+        .x(t_sign$x),
+        .neg(t_sign$neg)
+    );
     
     // Update code
     always @(*) begin
         x_r$clock = clock;
-        r_r$clock = clock;
         q_r$clock = clock;
-        rho_r$clock = clock;
-        d_r$clock = clock;
+        t_r$clock = clock;
+        a_r$clock = clock;
+        b_r$clock = clock;
         x_r$d = x_r$q;
-        r_r$d = r_r$q;
         q_r$d = q_r$q;
-        rho_r$d = rho_r$q;
-        d_r$d = d_r$q;
+        t_r$d = t_r$q;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
         z$clock = clock;
         c0$clock = clock;
         c1$clock = clock;
         c2$clock = clock;
-        r_plus = r_r$q + rho_r$q;
-        r_minus = r_r$q - rho_r$q;
-        one = r_r$q < rho_r$q;
-        if (up) begin
-            one = r_plus >= d_r$q;
+        t_sign$x = t_r$q;
+        one = t_sign$neg;
+        t_inc = b_r$q;
+        if (one) begin
+            t_inc = a_r$q;
         end
-        x_step = q_r$q + one;
+        q_dir = q_r$q;
+        one_dir = one;
+        if (up) begin
+            q_dir = ~q_r$q;
+            one_dir = ~one;
+        end
         if (step) begin
-            if (up) begin
-                x_r$d = x_r$q - x_step;
-                r_r$d = r_plus;
-                if (one) begin
-                    r_r$d = r_plus - d_r$q;
-                end
-            end
-            else begin
-                x_r$d = x_r$q + x_step;
-                r_r$d = r_minus;
-                if (one) begin
-                    r_r$d = r_minus + d_r$q;
-                end
-            end
+            t_r$d = t_r$q + t_inc;
+            x_r$d = x_r$q + q_dir + one_dir;
         end
         if (load) begin
             x_r$d = ld_x;
-            r_r$d = ld_r;
             q_r$d = ld_q;
-            rho_r$d = ld_rho;
-            d_r$d = ld_d;
+            t_r$d = ld_t;
+            a_r$d = ld_a;
+            b_r$d = ld_b;
         end
         z$load = load;
         z$step = step;
@@ -2007,6 +2304,44 @@ module edge_walk$maj(clock,load,step,up,ld_x,ld_r,ld_q,ld_rho,ld_d,ld_at_z,ld_at
 endmodule // edge_walk$maj
 
 
+module edge_walk$maj$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [21:0] d;
+    output reg  [21:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 22'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$maj$a_r
+
+
+module edge_walk$maj$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [21:0] d;
+    output reg  [21:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 22'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$maj$b_r
+
+
 module edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
@@ -2033,6 +2368,7 @@ module edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Local signals
     reg  [31:0] inc;
+    reg  [31:0] inc_dir;
     
     // Sub module instances
     edge_walk$maj$c0$at_r at_r(
@@ -2063,13 +2399,12 @@ module edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
         if (one) begin
             inc = inc1_r$q;
         end
+        inc_dir = inc;
+        if (up) begin
+            inc_dir = ~inc;
+        end
         if (step) begin
-            if (up) begin
-                at_r$d = at_r$q - inc;
-            end
-            else begin
-                at_r$d = at_r$q + inc;
-            end
+            at_r$d = at_r$q + inc_dir + up;
         end
         if (load) begin
             at_r$d = ld_at;
@@ -2165,6 +2500,7 @@ module edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Local signals
     reg  [31:0] inc;
+    reg  [31:0] inc_dir;
     
     // Sub module instances
     edge_walk$maj$c1$at_r at_r(
@@ -2195,13 +2531,12 @@ module edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
         if (one) begin
             inc = inc1_r$q;
         end
+        inc_dir = inc;
+        if (up) begin
+            inc_dir = ~inc;
+        end
         if (step) begin
-            if (up) begin
-                at_r$d = at_r$q - inc;
-            end
-            else begin
-                at_r$d = at_r$q + inc;
-            end
+            at_r$d = at_r$q + inc_dir + up;
         end
         if (load) begin
             at_r$d = ld_at;
@@ -2297,6 +2632,7 @@ module edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Local signals
     reg  [31:0] inc;
+    reg  [31:0] inc_dir;
     
     // Sub module instances
     edge_walk$maj$c2$at_r at_r(
@@ -2327,13 +2663,12 @@ module edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
         if (one) begin
             inc = inc1_r$q;
         end
+        inc_dir = inc;
+        if (up) begin
+            inc_dir = ~inc;
+        end
         if (step) begin
-            if (up) begin
-                at_r$d = at_r$q - inc;
-            end
-            else begin
-                at_r$d = at_r$q + inc;
-            end
+            at_r$d = at_r$q + inc_dir + up;
         end
         if (load) begin
             at_r$d = ld_at;
@@ -2403,25 +2738,6 @@ module edge_walk$maj$c2$inc1_r(d,q,clock);
 endmodule // edge_walk$maj$c2$inc1_r
 
 
-module edge_walk$maj$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 21'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // edge_walk$maj$d_r
-
-
 module edge_walk$maj$q_r(d,q,clock);
     
     // Module arguments
@@ -2441,42 +2757,40 @@ module edge_walk$maj$q_r(d,q,clock);
 endmodule // edge_walk$maj$q_r
 
 
-module edge_walk$maj$r_r(d,q,clock);
+module edge_walk$maj$t_r(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [21:0] d;
+    output reg  [21:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 22'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // edge_walk$maj$r_r
+endmodule // edge_walk$maj$t_r
 
 
-module edge_walk$maj$rho_r(d,q,clock);
+module edge_walk$maj$t_sign(x,neg);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
-    input wire  clock;
+    input wire  [21:0] x;
+    output reg  neg;
     
-    // Update code (custom)
-    initial begin
-       q = 21'h0;
+    // Constant declarations
+    localparam  half = 22'h200000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
     end
     
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // edge_walk$maj$rho_r
+endmodule // edge_walk$maj$t_sign
 
 
 module edge_walk$maj$x_r(d,q,clock);
@@ -2524,6 +2838,7 @@ module edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Local signals
     reg  [35:0] inc;
+    reg  [35:0] inc_dir;
     
     // Sub module instances
     edge_walk$maj$z$at_r at_r(
@@ -2554,13 +2869,12 @@ module edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
         if (one) begin
             inc = inc1_r$q;
         end
+        inc_dir = inc;
+        if (up) begin
+            inc_dir = ~inc;
+        end
         if (step) begin
-            if (up) begin
-                at_r$d = at_r$q - inc;
-            end
-            else begin
-                at_r$d = at_r$q + inc;
-            end
+            at_r$d = at_r$q + inc_dir + up;
         end
         if (load) begin
             at_r$d = ld_at;
@@ -2649,6 +2963,253 @@ module edge_walk$maj_left(d,q,clock);
 endmodule // edge_walk$maj_left
 
 
+module edge_walk$o_left_c0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$o_left_c0
+
+
+module edge_walk$o_left_c1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$o_left_c1
+
+
+module edge_walk$o_left_c2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$o_left_c2
+
+
+module edge_walk$o_left_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$o_left_z
+
+
+module edge_walk$o_right_c0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$o_right_c0
+
+
+module edge_walk$o_right_c1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$o_right_c1
+
+
+module edge_walk$o_right_c2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$o_right_c2
+
+
+module edge_walk$o_right_z(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$o_right_z
+
+
+module edge_walk$o_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$o_valid
+
+
+module edge_walk$o_xl(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$o_xl
+
+
+module edge_walk$o_xr(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$o_xr
+
+
+module edge_walk$o_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$o_y
+
+
+module edge_walk$pend_a(d,q,clock);
+    
+    // Module arguments
+    input wire  [21:0] d;
+    output reg  [21:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 22'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$pend_a
+
+
 module edge_walk$pend_at_c0(d,q,clock);
     
     // Module arguments
@@ -2725,23 +3286,23 @@ module edge_walk$pend_at_z(d,q,clock);
 endmodule // edge_walk$pend_at_z
 
 
-module edge_walk$pend_d(d,q,clock);
+module edge_walk$pend_b(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [21:0] d;
+    output reg  [21:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 22'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // edge_walk$pend_d
+endmodule // edge_walk$pend_b
 
 
 module edge_walk$pend_inc0_c0(d,q,clock);
@@ -2915,42 +3476,23 @@ module edge_walk$pend_q(d,q,clock);
 endmodule // edge_walk$pend_q
 
 
-module edge_walk$pend_r(d,q,clock);
+module edge_walk$pend_t(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [21:0] d;
+    output reg  [21:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 22'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // edge_walk$pend_r
-
-
-module edge_walk$pend_rho(d,q,clock);
-    
-    // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 21'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // edge_walk$pend_rho
+endmodule // edge_walk$pend_t
 
 
 module edge_walk$pend_x(d,q,clock);
@@ -2972,6 +3514,25 @@ module edge_walk$pend_x(d,q,clock);
 endmodule // edge_walk$pend_x
 
 
+module edge_walk$rem(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // edge_walk$rem
+
+
 module edge_walk$sides(a,b,lt);
     
     // Module arguments
@@ -2990,23 +3551,143 @@ module edge_walk$sides(a,b,lt);
 endmodule // edge_walk$sides
 
 
-module edge_walk$total(d,q,clock);
+module edge_walk$start_maj(up,r,rho,d,t,a,b);
     
     // Module arguments
-    input wire  [12:0] d;
-    output reg  [12:0] q;
+    input wire  up;
+    input wire  [20:0] r;
+    input wire  [20:0] rho;
+    input wire  [20:0] d;
+    output reg  [21:0] t;
+    output reg  [21:0] a;
+    output reg  [21:0] b;
+    
+    // Local signals
+    reg  [21:0] r_w;
+    reg  [21:0] rho_w;
+    reg  [21:0] d_w;
+    reg  [21:0] nr;
+    reg  [21:0] nrho;
+    reg  [21:0] sum;
+    reg  [21:0] carry;
+    
+    // Update code
+    always @(*) begin
+        r_w = ((r) & 22'h3fffff);
+        rho_w = ((rho) & 22'h3fffff);
+        d_w = ((d) & 22'h3fffff);
+        a = d_w - rho_w;
+        b = ~rho_w + 32'h1;
+        nr = ~r_w;
+        nrho = ~rho_w;
+        sum = d_w ^ nr ^ nrho;
+        carry = (d_w & nr) | (d_w & nrho) | (nr & nrho);
+        t = r_w - rho_w;
+        if (up) begin
+            t = sum + ((carry << 32'h1) | 32'h1);
+        end
+    end
+    
+endmodule // edge_walk$start_maj
+
+
+module edge_walk$start_s0(up,r,rho,d,t,a,b);
+    
+    // Module arguments
+    input wire  up;
+    input wire  [20:0] r;
+    input wire  [20:0] rho;
+    input wire  [20:0] d;
+    output reg  [21:0] t;
+    output reg  [21:0] a;
+    output reg  [21:0] b;
+    
+    // Local signals
+    reg  [21:0] r_w;
+    reg  [21:0] rho_w;
+    reg  [21:0] d_w;
+    reg  [21:0] nr;
+    reg  [21:0] nrho;
+    reg  [21:0] sum;
+    reg  [21:0] carry;
+    
+    // Update code
+    always @(*) begin
+        r_w = ((r) & 22'h3fffff);
+        rho_w = ((rho) & 22'h3fffff);
+        d_w = ((d) & 22'h3fffff);
+        a = d_w - rho_w;
+        b = ~rho_w + 32'h1;
+        nr = ~r_w;
+        nrho = ~rho_w;
+        sum = d_w ^ nr ^ nrho;
+        carry = (d_w & nr) | (d_w & nrho) | (nr & nrho);
+        t = r_w - rho_w;
+        if (up) begin
+            t = sum + ((carry << 32'h1) | 32'h1);
+        end
+    end
+    
+endmodule // edge_walk$start_s0
+
+
+module edge_walk$start_s1(up,r,rho,d,t,a,b);
+    
+    // Module arguments
+    input wire  up;
+    input wire  [20:0] r;
+    input wire  [20:0] rho;
+    input wire  [20:0] d;
+    output reg  [21:0] t;
+    output reg  [21:0] a;
+    output reg  [21:0] b;
+    
+    // Local signals
+    reg  [21:0] r_w;
+    reg  [21:0] rho_w;
+    reg  [21:0] d_w;
+    reg  [21:0] nr;
+    reg  [21:0] nrho;
+    reg  [21:0] sum;
+    reg  [21:0] carry;
+    
+    // Update code
+    always @(*) begin
+        r_w = ((r) & 22'h3fffff);
+        rho_w = ((rho) & 22'h3fffff);
+        d_w = ((d) & 22'h3fffff);
+        a = d_w - rho_w;
+        b = ~rho_w + 32'h1;
+        nr = ~r_w;
+        nrho = ~rho_w;
+        sum = d_w ^ nr ^ nrho;
+        carry = (d_w & nr) | (d_w & nrho) | (nr & nrho);
+        t = r_w - rho_w;
+        if (up) begin
+            t = sum + ((carry << 32'h1) | 32'h1);
+        end
+    end
+    
+endmodule // edge_walk$start_s1
+
+
+module edge_walk$sw_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 13'h0;
+       q = 1'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // edge_walk$total
+endmodule // edge_walk$sw_r
 
 
 module edge_walk$up(d,q,clock);
