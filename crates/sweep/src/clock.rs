@@ -14,17 +14,18 @@ use fx::Formats;
 use rtl::config::Widths;
 
 /// ECP5 Fmax in MHz of each unit at the default design (class 10, K = 7, L = 5), as
-/// placed and routed by the soak (README, "Units").
+/// placed and routed by the soak (README, "Units"); setup's at L = 13, where its critical
+/// path is its multipliers as at L = 5 (`raster_top` at L = 5: the same path).
 pub const MEASURED_MHZ: [(&str, f64); 6] = [
-    ("cull_sort", 63.3),
-    ("triangle_setup", 18.9),
+    ("cull_sort", 115.9),
+    ("triangle_setup", 24.2),
     ("divider", 39.6),
-    ("edge_walk", 56.1),
-    ("span", 83.2),
-    ("pixel_out", 93.2),
+    ("edge_walk", 111.1),
+    ("span", 113.5),
+    ("pixel_out", 127.4),
 ];
 /// `raster_top`'s ECP5 Fmax at the default design, MHz.
-pub const PIPELINE_MHZ: f64 = 20.3;
+pub const PIPELINE_MHZ: f64 = 23.1;
 
 /// The design [`MEASURED_MHZ`] and [`PIPELINE_MHZ`] were measured at: size class
 /// `fx::RTL_CLASS` at its default formats, K = 7, L = 5.
@@ -45,16 +46,16 @@ pub fn raster_top_mhz(d: &Design) -> (f64, Source) {
 }
 
 /// The width, in bits, of what a unit's critical path runs through, the delay's measure:
-/// cull_sort's twice-the-area product (2 (xy + 1) bits); setup's normalisation of the area
-/// into the divider's divisor (`div_d`); the divider's stage, ceil((div_q - 1) / L)
-/// restoring steps of a `div_d`-bit subtraction in series; the edge walker's remainder
-/// update (`edge_d`); span's accumulators (`z_acc`, `c_acc`, the wider); pixel_out's depth
+/// cull_sort's sort of the vertices by y (xy bits); setup's multipliers and eq. (2)'s shift
+/// (`mul_a`); the divider's stage, ceil((div_q - 1) / L) restoring steps of a `div_d`-bit
+/// subtraction in series; the edge walker's start decision at the hand-over (`edge_d`);
+/// span's depth rounding and range test (`z_acc`, `c_acc`, the wider); pixel_out's depth
 /// compare (`depth`).
 pub fn critical_bits(unit: &str, d: &Design) -> f64 {
     let w = Widths::of(d.class, &d.formats);
     let bits = match unit {
-        "cull_sort" => 2 * (w.xy + 1),
-        "triangle_setup" => w.div_d,
+        "cull_sort" => w.xy,
+        "triangle_setup" => w.mul_a,
         "divider" => (w.div_q - 1).div_ceil(d.l.max(1) as usize) * w.div_d,
         "edge_walk" => w.edge_d,
         "span" => w.z_acc.max(w.c_acc),
