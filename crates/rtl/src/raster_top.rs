@@ -37,7 +37,7 @@
 //! `model::cycles::Timing` has the same two switches.
 //!
 //! **Timing** (`model::cycles::scanline_frame` predicts it cycle for cycle when the memory
-//! never stalls): cull_sort 3 cycles; setup `model::cycles::setup_timing` (latency 19, a
+//! never stalls): cull_sort 3 cycles; setup `model::cycles::setup_timing` (latency 21, a
 //! triangle every 10 cycles at K = 7, L = 5); the edge walk's first command 2 cycles after
 //! it takes a triangle, then a scanline per cycle; the span FIFO passes a command straight
 //! through when empty; span's first pixel 2 cycles after it takes a command, then a pixel
