@@ -98,69 +98,69 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  q_msb = 8'h12;
     localparam  q_ext = 19'b0;
     localparam  lane$0 = 8'h0;
-    localparam  lane$1 = 8'h0;
-    localparam  lane$2 = 8'h0;
-    localparam  lane$3 = 8'h0;
-    localparam  lane$4 = 8'h0;
-    localparam  lane$5 = 8'h0;
-    localparam  lane$6 = 8'h0;
+    localparam  lane$1 = 8'h1;
+    localparam  lane$2 = 8'h2;
+    localparam  lane$3 = 8'h3;
+    localparam  lane$4 = 8'h4;
+    localparam  lane$5 = 8'h5;
+    localparam  lane$6 = 8'h6;
     localparam  lane$7 = 8'h0;
     localparam  lane$8 = 8'h1;
     localparam  lane$9 = 8'h2;
     localparam  lane$10 = 8'h3;
     localparam  lane$11 = 8'h4;
-    localparam  lane$12 = 8'h1;
-    localparam  lane$13 = 8'h2;
-    localparam  lane$14 = 8'h3;
-    localparam  lane$15 = 8'h4;
-    localparam  lane$16 = 8'h5;
-    localparam  lane$17 = 8'h6;
-    localparam  lane$18 = 8'h1;
-    localparam  lane$19 = 8'h2;
-    localparam  lane$20 = 8'h3;
-    localparam  lane$21 = 8'h4;
-    localparam  lane$22 = 8'h5;
-    localparam  lane$23 = 8'h6;
-    localparam  lane$24 = 8'h1;
-    localparam  lane$25 = 8'h2;
-    localparam  lane$26 = 8'h3;
-    localparam  lane$27 = 8'h4;
-    localparam  lane$28 = 8'h1;
-    localparam  lane$29 = 8'h2;
-    localparam  lane$30 = 8'h3;
-    localparam  lane$31 = 8'h4;
-    localparam  lane$32 = 8'h5;
-    localparam  lane$33 = 8'h6;
-    localparam  lane$34 = 8'h1;
-    localparam  lane$35 = 8'h2;
-    localparam  lane$36 = 8'h3;
+    localparam  lane$12 = 8'h0;
+    localparam  lane$13 = 8'h1;
+    localparam  lane$14 = 8'h2;
+    localparam  lane$15 = 8'h3;
+    localparam  lane$16 = 8'h4;
+    localparam  lane$17 = 8'h5;
+    localparam  lane$18 = 8'h6;
+    localparam  lane$19 = 8'h0;
+    localparam  lane$20 = 8'h1;
+    localparam  lane$21 = 8'h2;
+    localparam  lane$22 = 8'h3;
+    localparam  lane$23 = 8'h4;
+    localparam  lane$24 = 8'h5;
+    localparam  lane$25 = 8'h6;
+    localparam  lane$26 = 8'h0;
+    localparam  lane$27 = 8'h1;
+    localparam  lane$28 = 8'h0;
+    localparam  lane$29 = 8'h1;
+    localparam  lane$30 = 8'h2;
+    localparam  lane$31 = 8'h2;
+    localparam  lane$32 = 8'h3;
+    localparam  lane$33 = 8'h4;
+    localparam  lane$34 = 8'h5;
+    localparam  lane$35 = 8'h6;
+    localparam  lane$36 = 8'h0;
     localparam  lane$37 = 8'h4;
     localparam  lane$38 = 8'h5;
     localparam  lane$39 = 8'h6;
-    localparam  lane$40 = 8'h1;
-    localparam  lane$41 = 8'h2;
-    localparam  lane$42 = 8'h3;
-    localparam  lane$43 = 8'h4;
-    localparam  lane$44 = 8'h5;
-    localparam  lane$45 = 8'h6;
-    localparam  lane$46 = 8'h1;
-    localparam  lane$47 = 8'h2;
-    localparam  lane$48 = 8'h3;
-    localparam  lane$49 = 8'h4;
-    localparam  lane$50 = 8'h5;
-    localparam  lane$51 = 8'h6;
-    localparam  lane$52 = 8'h1;
-    localparam  lane$53 = 8'h2;
-    localparam  lane$54 = 8'h3;
-    localparam  lane$55 = 8'h4;
-    localparam  lane$56 = 8'h5;
-    localparam  lane$57 = 8'h6;
+    localparam  lane$40 = 8'h3;
+    localparam  lane$41 = 8'h4;
+    localparam  lane$42 = 8'h5;
+    localparam  lane$43 = 8'h1;
+    localparam  lane$44 = 8'h2;
+    localparam  lane$45 = 8'h3;
+    localparam  lane$46 = 8'h4;
+    localparam  lane$47 = 8'h5;
+    localparam  lane$48 = 8'h6;
+    localparam  lane$49 = 8'h0;
+    localparam  lane$50 = 8'h1;
+    localparam  lane$51 = 8'h2;
+    localparam  lane$52 = 8'h6;
+    localparam  lane$53 = 8'h0;
+    localparam  lane$54 = 8'h1;
+    localparam  lane$55 = 8'h5;
+    localparam  lane$56 = 8'h6;
+    localparam  lane$57 = 8'h0;
     localparam  lane$58 = 8'h1;
     localparam  lane$59 = 8'h2;
     localparam  lane$60 = 8'h3;
-    localparam  lane$61 = 8'h4;
-    localparam  lane$62 = 8'h5;
-    localparam  lane$63 = 8'h6;
+    localparam  lane$61 = 8'h3;
+    localparam  lane$62 = 8'h4;
+    localparam  lane$63 = 8'h5;
     localparam  view$0 = 8'h0;
     localparam  view$1 = 8'h0;
     localparam  view$2 = 8'h0;
@@ -169,10 +169,10 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  view$5 = 8'h0;
     localparam  view$6 = 8'h0;
     localparam  view$7 = 8'h0;
-    localparam  view$8 = 8'h0;
-    localparam  view$9 = 8'h0;
-    localparam  view$10 = 8'h0;
-    localparam  view$11 = 8'h0;
+    localparam  view$8 = 8'h1;
+    localparam  view$9 = 8'h1;
+    localparam  view$10 = 8'h1;
+    localparam  view$11 = 8'h1;
     localparam  view$12 = 8'h1;
     localparam  view$13 = 8'h1;
     localparam  view$14 = 8'h1;
@@ -198,9 +198,9 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  view$34 = 8'h1;
     localparam  view$35 = 8'h1;
     localparam  view$36 = 8'h1;
-    localparam  view$37 = 8'h1;
-    localparam  view$38 = 8'h1;
-    localparam  view$39 = 8'h1;
+    localparam  view$37 = 8'h2;
+    localparam  view$38 = 8'h2;
+    localparam  view$39 = 8'h2;
     localparam  view$40 = 8'h1;
     localparam  view$41 = 8'h1;
     localparam  view$42 = 8'h1;
@@ -210,115 +210,251 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  view$46 = 8'h1;
     localparam  view$47 = 8'h1;
     localparam  view$48 = 8'h1;
-    localparam  view$49 = 8'h1;
-    localparam  view$50 = 8'h1;
-    localparam  view$51 = 8'h1;
+    localparam  view$49 = 8'h2;
+    localparam  view$50 = 8'h2;
+    localparam  view$51 = 8'h2;
     localparam  view$52 = 8'h1;
     localparam  view$53 = 8'h1;
     localparam  view$54 = 8'h1;
-    localparam  view$55 = 8'h1;
-    localparam  view$56 = 8'h1;
-    localparam  view$57 = 8'h1;
-    localparam  view$58 = 8'h1;
-    localparam  view$59 = 8'h1;
-    localparam  view$60 = 8'h1;
-    localparam  view$61 = 8'h1;
-    localparam  view$62 = 8'h1;
-    localparam  view$63 = 8'h1;
-    localparam  view_res$0 = 8'h0;
-    localparam  view_res$1 = 8'h1;
-    localparam  view_res$2 = 8'h1;
+    localparam  view$55 = 8'h2;
+    localparam  view$56 = 8'h2;
+    localparam  view$57 = 8'h2;
+    localparam  view$58 = 8'h2;
+    localparam  view$59 = 8'h2;
+    localparam  view$60 = 8'h2;
+    localparam  view$61 = 8'h2;
+    localparam  view$62 = 8'h2;
+    localparam  view$63 = 8'h2;
+    localparam  view_add$0 = 8'h0;
+    localparam  view_add$1 = 8'h0;
+    localparam  view_add$2 = 8'h0;
+    localparam  view_add$3 = 8'h0;
+    localparam  view_add$4 = 8'h0;
+    localparam  view_add$5 = 8'h0;
+    localparam  view_add$6 = 8'h0;
+    localparam  view_add$7 = 8'h0;
+    localparam  view_add$8 = 8'h1;
+    localparam  view_add$9 = 8'h1;
+    localparam  view_add$10 = 8'h1;
+    localparam  view_add$11 = 8'h1;
+    localparam  view_add$12 = 8'h1;
+    localparam  view_add$13 = 8'h1;
+    localparam  view_add$14 = 8'h1;
+    localparam  view_add$15 = 8'h1;
+    localparam  view_add$16 = 8'h1;
+    localparam  view_add$17 = 8'h1;
+    localparam  view_add$18 = 8'h1;
+    localparam  view_add$19 = 8'h1;
+    localparam  view_add$20 = 8'h1;
+    localparam  view_add$21 = 8'h1;
+    localparam  view_add$22 = 8'h1;
+    localparam  view_add$23 = 8'h1;
+    localparam  view_add$24 = 8'h1;
+    localparam  view_add$25 = 8'h1;
+    localparam  view_add$26 = 8'h1;
+    localparam  view_add$27 = 8'h1;
+    localparam  view_add$28 = 8'h1;
+    localparam  view_add$29 = 8'h1;
+    localparam  view_add$30 = 8'h1;
+    localparam  view_add$31 = 8'h2;
+    localparam  view_add$32 = 8'h2;
+    localparam  view_add$33 = 8'h2;
+    localparam  view_add$34 = 8'h2;
+    localparam  view_add$35 = 8'h2;
+    localparam  view_add$36 = 8'h2;
+    localparam  view_add$37 = 8'h2;
+    localparam  view_add$38 = 8'h2;
+    localparam  view_add$39 = 8'h2;
+    localparam  view_add$40 = 8'h1;
+    localparam  view_add$41 = 8'h1;
+    localparam  view_add$42 = 8'h1;
+    localparam  view_add$43 = 8'h2;
+    localparam  view_add$44 = 8'h2;
+    localparam  view_add$45 = 8'h2;
+    localparam  view_add$46 = 8'h2;
+    localparam  view_add$47 = 8'h2;
+    localparam  view_add$48 = 8'h2;
+    localparam  view_add$49 = 8'h2;
+    localparam  view_add$50 = 8'h2;
+    localparam  view_add$51 = 8'h2;
+    localparam  view_add$52 = 8'h1;
+    localparam  view_add$53 = 8'h2;
+    localparam  view_add$54 = 8'h2;
+    localparam  view_add$55 = 8'h2;
+    localparam  view_add$56 = 8'h2;
+    localparam  view_add$57 = 8'h2;
+    localparam  view_add$58 = 8'h2;
+    localparam  view_add$59 = 8'h2;
+    localparam  view_add$60 = 8'h2;
+    localparam  view_add$61 = 8'h2;
+    localparam  view_add$62 = 8'h2;
+    localparam  view_add$63 = 8'h2;
+    localparam  view_res$0 = 8'h1;
+    localparam  view_res$1 = 8'h0;
+    localparam  view_res$2 = 8'h0;
     localparam  view_res$3 = 8'h1;
-    localparam  view_res$4 = 8'h1;
+    localparam  view_res$4 = 8'h0;
     localparam  view_res$5 = 8'h1;
-    localparam  view_res$6 = 8'h1;
-    localparam  view_handover = 8'h1;
+    localparam  view_res$6 = 8'h0;
+    localparam  view_res_w$0 = 8'h1;
+    localparam  view_res_w$1 = 8'h1;
+    localparam  view_res_w$2 = 8'h0;
+    localparam  view_res_w$3 = 8'h1;
+    localparam  view_res_w$4 = 8'h0;
+    localparam  view_res_w$5 = 8'h1;
+    localparam  view_res_w$6 = 8'h0;
+    localparam  view_handover = 8'h2;
     localparam  ends$0 = 8'ha;
     localparam  ends$1 = 8'h14;
-    localparam  ends$2 = 8'h15;
+    localparam  ends$2 = 8'h1c;
     localparam  ends$3 = 8'hff;
     localparam  last_copy = 8'h2;
-    localparam  normalise = 8'h3;
+    localparam  normalise = 8'h4;
     localparam  cyc$0 = 8'h1;
-    localparam  cyc$1 = 8'h2;
-    localparam  cyc$2 = 8'h3;
-    localparam  cyc$3 = 8'h4;
-    localparam  cyc$4 = 8'h5;
-    localparam  cyc$5 = 8'h6;
-    localparam  cyc$6 = 8'h7;
-    localparam  cyc$7 = 8'h8;
-    localparam  cyc$8 = 8'ha;
-    localparam  cyc$9 = 8'ha;
-    localparam  cyc$10 = 8'ha;
-    localparam  cyc$11 = 8'ha;
-    localparam  cyc$12 = 8'hb;
-    localparam  cyc$13 = 8'hb;
-    localparam  cyc$14 = 8'hb;
-    localparam  cyc$15 = 8'hb;
-    localparam  cyc$16 = 8'hb;
-    localparam  cyc$17 = 8'hb;
-    localparam  cyc$18 = 8'hc;
-    localparam  cyc$19 = 8'hc;
-    localparam  cyc$20 = 8'hc;
-    localparam  cyc$21 = 8'hc;
-    localparam  cyc$22 = 8'hc;
-    localparam  cyc$23 = 8'hc;
-    localparam  cyc$24 = 8'hd;
-    localparam  cyc$25 = 8'hd;
-    localparam  cyc$26 = 8'hd;
-    localparam  cyc$27 = 8'hd;
-    localparam  cyc$28 = 8'he;
-    localparam  cyc$29 = 8'he;
-    localparam  cyc$30 = 8'he;
-    localparam  cyc$31 = 8'he;
-    localparam  cyc$32 = 8'he;
-    localparam  cyc$33 = 8'he;
-    localparam  cyc$34 = 8'hf;
-    localparam  cyc$35 = 8'hf;
-    localparam  cyc$36 = 8'hf;
-    localparam  cyc$37 = 8'hf;
-    localparam  cyc$38 = 8'hf;
-    localparam  cyc$39 = 8'hf;
-    localparam  cyc$40 = 8'h10;
-    localparam  cyc$41 = 8'h10;
-    localparam  cyc$42 = 8'h10;
-    localparam  cyc$43 = 8'h10;
-    localparam  cyc$44 = 8'h10;
-    localparam  cyc$45 = 8'h10;
-    localparam  cyc$46 = 8'h11;
-    localparam  cyc$47 = 8'h11;
-    localparam  cyc$48 = 8'h11;
-    localparam  cyc$49 = 8'h11;
-    localparam  cyc$50 = 8'h11;
-    localparam  cyc$51 = 8'h11;
+    localparam  cyc$1 = 8'h1;
+    localparam  cyc$2 = 8'h1;
+    localparam  cyc$3 = 8'h1;
+    localparam  cyc$4 = 8'h1;
+    localparam  cyc$5 = 8'h1;
+    localparam  cyc$6 = 8'h1;
+    localparam  cyc$7 = 8'h2;
+    localparam  cyc$8 = 8'hc;
+    localparam  cyc$9 = 8'hc;
+    localparam  cyc$10 = 8'hc;
+    localparam  cyc$11 = 8'hc;
+    localparam  cyc$12 = 8'hf;
+    localparam  cyc$13 = 8'hf;
+    localparam  cyc$14 = 8'hf;
+    localparam  cyc$15 = 8'hf;
+    localparam  cyc$16 = 8'hf;
+    localparam  cyc$17 = 8'hf;
+    localparam  cyc$18 = 8'hf;
+    localparam  cyc$19 = 8'h10;
+    localparam  cyc$20 = 8'h10;
+    localparam  cyc$21 = 8'h10;
+    localparam  cyc$22 = 8'h10;
+    localparam  cyc$23 = 8'h10;
+    localparam  cyc$24 = 8'h10;
+    localparam  cyc$25 = 8'h10;
+    localparam  cyc$26 = 8'h11;
+    localparam  cyc$27 = 8'h11;
+    localparam  cyc$28 = 8'h12;
+    localparam  cyc$29 = 8'h12;
+    localparam  cyc$30 = 8'h12;
+    localparam  cyc$31 = 8'h13;
+    localparam  cyc$32 = 8'h13;
+    localparam  cyc$33 = 8'h13;
+    localparam  cyc$34 = 8'h13;
+    localparam  cyc$35 = 8'h13;
+    localparam  cyc$36 = 8'h14;
+    localparam  cyc$37 = 8'h17;
+    localparam  cyc$38 = 8'h17;
+    localparam  cyc$39 = 8'h17;
+    localparam  cyc$40 = 8'h12;
+    localparam  cyc$41 = 8'h12;
+    localparam  cyc$42 = 8'h12;
+    localparam  cyc$43 = 8'h14;
+    localparam  cyc$44 = 8'h14;
+    localparam  cyc$45 = 8'h14;
+    localparam  cyc$46 = 8'h14;
+    localparam  cyc$47 = 8'h14;
+    localparam  cyc$48 = 8'h14;
+    localparam  cyc$49 = 8'h18;
+    localparam  cyc$50 = 8'h18;
+    localparam  cyc$51 = 8'h18;
     localparam  cyc$52 = 8'h12;
-    localparam  cyc$53 = 8'h12;
-    localparam  cyc$54 = 8'h12;
-    localparam  cyc$55 = 8'h12;
-    localparam  cyc$56 = 8'h12;
-    localparam  cyc$57 = 8'h12;
-    localparam  cyc$58 = 8'h13;
-    localparam  cyc$59 = 8'h13;
-    localparam  cyc$60 = 8'h13;
-    localparam  cyc$61 = 8'h13;
-    localparam  cyc$62 = 8'h13;
-    localparam  cyc$63 = 8'h13;
-    localparam  iss$0 = 8'h4;
-    localparam  iss$1 = 8'h5;
-    localparam  iss$2 = 8'h6;
-    localparam  iss$3 = 8'h7;
-    localparam  iss$4 = 8'h8;
-    localparam  iss$5 = 8'h9;
-    localparam  iss$6 = 8'ha;
-    localparam  res$0 = 8'ha;
-    localparam  res$1 = 8'hb;
-    localparam  res$2 = 8'hc;
-    localparam  res$3 = 8'hd;
-    localparam  res$4 = 8'he;
-    localparam  res$5 = 8'hf;
-    localparam  res$6 = 8'h10;
-    localparam  handover = 8'h14;
-    localparam  last = 8'h15;
+    localparam  cyc$53 = 8'h13;
+    localparam  cyc$54 = 8'h13;
+    localparam  cyc$55 = 8'h16;
+    localparam  cyc$56 = 8'h16;
+    localparam  cyc$57 = 8'h17;
+    localparam  cyc$58 = 8'h17;
+    localparam  cyc$59 = 8'h17;
+    localparam  cyc$60 = 8'h17;
+    localparam  cyc$61 = 8'h18;
+    localparam  cyc$62 = 8'h18;
+    localparam  cyc$63 = 8'h18;
+    localparam  cyc_add$0 = 8'h3;
+    localparam  cyc_add$1 = 8'h3;
+    localparam  cyc_add$2 = 8'h3;
+    localparam  cyc_add$3 = 8'h3;
+    localparam  cyc_add$4 = 8'h3;
+    localparam  cyc_add$5 = 8'h3;
+    localparam  cyc_add$6 = 8'h3;
+    localparam  cyc_add$7 = 8'h4;
+    localparam  cyc_add$8 = 8'he;
+    localparam  cyc_add$9 = 8'he;
+    localparam  cyc_add$10 = 8'he;
+    localparam  cyc_add$11 = 8'he;
+    localparam  cyc_add$12 = 8'h11;
+    localparam  cyc_add$13 = 8'h11;
+    localparam  cyc_add$14 = 8'h11;
+    localparam  cyc_add$15 = 8'h11;
+    localparam  cyc_add$16 = 8'h11;
+    localparam  cyc_add$17 = 8'h11;
+    localparam  cyc_add$18 = 8'h11;
+    localparam  cyc_add$19 = 8'h12;
+    localparam  cyc_add$20 = 8'h12;
+    localparam  cyc_add$21 = 8'h12;
+    localparam  cyc_add$22 = 8'h12;
+    localparam  cyc_add$23 = 8'h12;
+    localparam  cyc_add$24 = 8'h12;
+    localparam  cyc_add$25 = 8'h12;
+    localparam  cyc_add$26 = 8'h13;
+    localparam  cyc_add$27 = 8'h13;
+    localparam  cyc_add$28 = 8'h14;
+    localparam  cyc_add$29 = 8'h14;
+    localparam  cyc_add$30 = 8'h14;
+    localparam  cyc_add$31 = 8'h15;
+    localparam  cyc_add$32 = 8'h15;
+    localparam  cyc_add$33 = 8'h15;
+    localparam  cyc_add$34 = 8'h15;
+    localparam  cyc_add$35 = 8'h15;
+    localparam  cyc_add$36 = 8'h16;
+    localparam  cyc_add$37 = 8'h19;
+    localparam  cyc_add$38 = 8'h19;
+    localparam  cyc_add$39 = 8'h19;
+    localparam  cyc_add$40 = 8'h14;
+    localparam  cyc_add$41 = 8'h14;
+    localparam  cyc_add$42 = 8'h14;
+    localparam  cyc_add$43 = 8'h16;
+    localparam  cyc_add$44 = 8'h16;
+    localparam  cyc_add$45 = 8'h16;
+    localparam  cyc_add$46 = 8'h16;
+    localparam  cyc_add$47 = 8'h16;
+    localparam  cyc_add$48 = 8'h16;
+    localparam  cyc_add$49 = 8'h1a;
+    localparam  cyc_add$50 = 8'h1a;
+    localparam  cyc_add$51 = 8'h1a;
+    localparam  cyc_add$52 = 8'h14;
+    localparam  cyc_add$53 = 8'h15;
+    localparam  cyc_add$54 = 8'h15;
+    localparam  cyc_add$55 = 8'h18;
+    localparam  cyc_add$56 = 8'h18;
+    localparam  cyc_add$57 = 8'h19;
+    localparam  cyc_add$58 = 8'h19;
+    localparam  cyc_add$59 = 8'h19;
+    localparam  cyc_add$60 = 8'h19;
+    localparam  cyc_add$61 = 8'h1a;
+    localparam  cyc_add$62 = 8'h1a;
+    localparam  cyc_add$63 = 8'h1a;
+    localparam  iss$0 = 8'h5;
+    localparam  iss$1 = 8'h4;
+    localparam  iss$2 = 8'h1;
+    localparam  iss$3 = 8'h6;
+    localparam  iss$4 = 8'h2;
+    localparam  iss$5 = 8'h7;
+    localparam  iss$6 = 8'h3;
+    localparam  res$0 = 8'hb;
+    localparam  res$1 = 8'ha;
+    localparam  res$2 = 8'h7;
+    localparam  res$3 = 8'hc;
+    localparam  res$4 = 8'h8;
+    localparam  res$5 = 8'hd;
+    localparam  res$6 = 8'h9;
+    localparam  handover = 8'h1b;
+    localparam  last = 8'h1c;
+    localparam  ii_m1 = 8'h9;
     localparam  recip_n = 58'h100000000000000;
     localparam  recip_top = 6'b100000;
     localparam  eq_shift = 6'b1111;
@@ -336,24 +472,38 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  ones = 57'h1ffffffffffffff;
     
     // Stub signals
+    reg  mul$0$clock;
+    reg  mul$0$en;
     reg  [56:0] mul$0$a;
     reg  [18:0] mul$0$b;
     wire  [57:0] mul$0$p;
+    reg  mul$1$clock;
+    reg  mul$1$en;
     reg  [56:0] mul$1$a;
     reg  [18:0] mul$1$b;
     wire  [57:0] mul$1$p;
+    reg  mul$2$clock;
+    reg  mul$2$en;
     reg  [56:0] mul$2$a;
     reg  [18:0] mul$2$b;
     wire  [57:0] mul$2$p;
+    reg  mul$3$clock;
+    reg  mul$3$en;
     reg  [56:0] mul$3$a;
     reg  [18:0] mul$3$b;
     wire  [57:0] mul$3$p;
+    reg  mul$4$clock;
+    reg  mul$4$en;
     reg  [56:0] mul$4$a;
     reg  [18:0] mul$4$b;
     wire  [57:0] mul$4$p;
+    reg  mul$5$clock;
+    reg  mul$5$en;
     reg  [56:0] mul$5$a;
     reg  [18:0] mul$5$b;
     wire  [57:0] mul$5$p;
+    reg  mul$6$clock;
+    reg  mul$6$en;
     reg  [56:0] mul$6$a;
     reg  [18:0] mul$6$b;
     wire  [57:0] mul$6$p;
@@ -571,6 +721,198 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  act_r$63$d;
     wire  act_r$63$q;
     reg  act_r$63$clock;
+    reg  add_r$0$d;
+    wire  add_r$0$q;
+    reg  add_r$0$clock;
+    reg  add_r$1$d;
+    wire  add_r$1$q;
+    reg  add_r$1$clock;
+    reg  add_r$2$d;
+    wire  add_r$2$q;
+    reg  add_r$2$clock;
+    reg  add_r$3$d;
+    wire  add_r$3$q;
+    reg  add_r$3$clock;
+    reg  add_r$4$d;
+    wire  add_r$4$q;
+    reg  add_r$4$clock;
+    reg  add_r$5$d;
+    wire  add_r$5$q;
+    reg  add_r$5$clock;
+    reg  add_r$6$d;
+    wire  add_r$6$q;
+    reg  add_r$6$clock;
+    reg  add_r$7$d;
+    wire  add_r$7$q;
+    reg  add_r$7$clock;
+    reg  add_r$8$d;
+    wire  add_r$8$q;
+    reg  add_r$8$clock;
+    reg  add_r$9$d;
+    wire  add_r$9$q;
+    reg  add_r$9$clock;
+    reg  add_r$10$d;
+    wire  add_r$10$q;
+    reg  add_r$10$clock;
+    reg  add_r$11$d;
+    wire  add_r$11$q;
+    reg  add_r$11$clock;
+    reg  add_r$12$d;
+    wire  add_r$12$q;
+    reg  add_r$12$clock;
+    reg  add_r$13$d;
+    wire  add_r$13$q;
+    reg  add_r$13$clock;
+    reg  add_r$14$d;
+    wire  add_r$14$q;
+    reg  add_r$14$clock;
+    reg  add_r$15$d;
+    wire  add_r$15$q;
+    reg  add_r$15$clock;
+    reg  add_r$16$d;
+    wire  add_r$16$q;
+    reg  add_r$16$clock;
+    reg  add_r$17$d;
+    wire  add_r$17$q;
+    reg  add_r$17$clock;
+    reg  add_r$18$d;
+    wire  add_r$18$q;
+    reg  add_r$18$clock;
+    reg  add_r$19$d;
+    wire  add_r$19$q;
+    reg  add_r$19$clock;
+    reg  add_r$20$d;
+    wire  add_r$20$q;
+    reg  add_r$20$clock;
+    reg  add_r$21$d;
+    wire  add_r$21$q;
+    reg  add_r$21$clock;
+    reg  add_r$22$d;
+    wire  add_r$22$q;
+    reg  add_r$22$clock;
+    reg  add_r$23$d;
+    wire  add_r$23$q;
+    reg  add_r$23$clock;
+    reg  add_r$24$d;
+    wire  add_r$24$q;
+    reg  add_r$24$clock;
+    reg  add_r$25$d;
+    wire  add_r$25$q;
+    reg  add_r$25$clock;
+    reg  add_r$26$d;
+    wire  add_r$26$q;
+    reg  add_r$26$clock;
+    reg  add_r$27$d;
+    wire  add_r$27$q;
+    reg  add_r$27$clock;
+    reg  add_r$28$d;
+    wire  add_r$28$q;
+    reg  add_r$28$clock;
+    reg  add_r$29$d;
+    wire  add_r$29$q;
+    reg  add_r$29$clock;
+    reg  add_r$30$d;
+    wire  add_r$30$q;
+    reg  add_r$30$clock;
+    reg  add_r$31$d;
+    wire  add_r$31$q;
+    reg  add_r$31$clock;
+    reg  add_r$32$d;
+    wire  add_r$32$q;
+    reg  add_r$32$clock;
+    reg  add_r$33$d;
+    wire  add_r$33$q;
+    reg  add_r$33$clock;
+    reg  add_r$34$d;
+    wire  add_r$34$q;
+    reg  add_r$34$clock;
+    reg  add_r$35$d;
+    wire  add_r$35$q;
+    reg  add_r$35$clock;
+    reg  add_r$36$d;
+    wire  add_r$36$q;
+    reg  add_r$36$clock;
+    reg  add_r$37$d;
+    wire  add_r$37$q;
+    reg  add_r$37$clock;
+    reg  add_r$38$d;
+    wire  add_r$38$q;
+    reg  add_r$38$clock;
+    reg  add_r$39$d;
+    wire  add_r$39$q;
+    reg  add_r$39$clock;
+    reg  add_r$40$d;
+    wire  add_r$40$q;
+    reg  add_r$40$clock;
+    reg  add_r$41$d;
+    wire  add_r$41$q;
+    reg  add_r$41$clock;
+    reg  add_r$42$d;
+    wire  add_r$42$q;
+    reg  add_r$42$clock;
+    reg  add_r$43$d;
+    wire  add_r$43$q;
+    reg  add_r$43$clock;
+    reg  add_r$44$d;
+    wire  add_r$44$q;
+    reg  add_r$44$clock;
+    reg  add_r$45$d;
+    wire  add_r$45$q;
+    reg  add_r$45$clock;
+    reg  add_r$46$d;
+    wire  add_r$46$q;
+    reg  add_r$46$clock;
+    reg  add_r$47$d;
+    wire  add_r$47$q;
+    reg  add_r$47$clock;
+    reg  add_r$48$d;
+    wire  add_r$48$q;
+    reg  add_r$48$clock;
+    reg  add_r$49$d;
+    wire  add_r$49$q;
+    reg  add_r$49$clock;
+    reg  add_r$50$d;
+    wire  add_r$50$q;
+    reg  add_r$50$clock;
+    reg  add_r$51$d;
+    wire  add_r$51$q;
+    reg  add_r$51$clock;
+    reg  add_r$52$d;
+    wire  add_r$52$q;
+    reg  add_r$52$clock;
+    reg  add_r$53$d;
+    wire  add_r$53$q;
+    reg  add_r$53$clock;
+    reg  add_r$54$d;
+    wire  add_r$54$q;
+    reg  add_r$54$clock;
+    reg  add_r$55$d;
+    wire  add_r$55$q;
+    reg  add_r$55$clock;
+    reg  add_r$56$d;
+    wire  add_r$56$q;
+    reg  add_r$56$clock;
+    reg  add_r$57$d;
+    wire  add_r$57$q;
+    reg  add_r$57$clock;
+    reg  add_r$58$d;
+    wire  add_r$58$q;
+    reg  add_r$58$clock;
+    reg  add_r$59$d;
+    wire  add_r$59$q;
+    reg  add_r$59$clock;
+    reg  add_r$60$d;
+    wire  add_r$60$q;
+    reg  add_r$60$clock;
+    reg  add_r$61$d;
+    wire  add_r$61$q;
+    reg  add_r$61$clock;
+    reg  add_r$62$d;
+    wire  add_r$62$q;
+    reg  add_r$62$clock;
+    reg  add_r$63$d;
+    wire  add_r$63$q;
+    reg  add_r$63$clock;
     reg  norm_r$d;
     wire  norm_r$q;
     reg  norm_r$clock;
@@ -625,6 +967,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  busy_r$d;
     wire  busy_r$q;
     reg  busy_r$clock;
+    reg  [7:0] phase$d;
+    wire  [7:0] phase$q;
+    reg  phase$clock;
+    reg  off_grid_r$d;
+    wire  off_grid_r$q;
+    reg  off_grid_r$clock;
     reg  [15:0] vx$0$d;
     wire  [15:0] vx$0$q;
     reg  vx$0$clock;
@@ -877,6 +1225,150 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [5:0] exp$3$d;
     wire  [5:0] exp$3$q;
     reg  exp$3$clock;
+    reg  [18:0] x$0$d;
+    wire  [18:0] x$0$q;
+    reg  x$0$clock;
+    reg  [18:0] x$1$d;
+    wire  [18:0] x$1$q;
+    reg  x$1$clock;
+    reg  [18:0] x$2$d;
+    wire  [18:0] x$2$q;
+    reg  x$2$clock;
+    reg  [18:0] x$3$d;
+    wire  [18:0] x$3$q;
+    reg  x$3$clock;
+    reg  [18:0] x$4$d;
+    wire  [18:0] x$4$q;
+    reg  x$4$clock;
+    reg  [18:0] x$5$d;
+    wire  [18:0] x$5$q;
+    reg  x$5$clock;
+    reg  [18:0] x$6$d;
+    wire  [18:0] x$6$q;
+    reg  x$6$clock;
+    reg  [18:0] x$7$d;
+    wire  [18:0] x$7$q;
+    reg  x$7$clock;
+    reg  [18:0] x$8$d;
+    wire  [18:0] x$8$q;
+    reg  x$8$clock;
+    reg  [18:0] x$9$d;
+    wire  [18:0] x$9$q;
+    reg  x$9$clock;
+    reg  [18:0] x$10$d;
+    wire  [18:0] x$10$q;
+    reg  x$10$clock;
+    reg  [18:0] x$11$d;
+    wire  [18:0] x$11$q;
+    reg  x$11$clock;
+    reg  [20:0] r$0$d;
+    wire  [20:0] r$0$q;
+    reg  r$0$clock;
+    reg  [20:0] r$1$d;
+    wire  [20:0] r$1$q;
+    reg  r$1$clock;
+    reg  [20:0] r$2$d;
+    wire  [20:0] r$2$q;
+    reg  r$2$clock;
+    reg  [20:0] r$3$d;
+    wire  [20:0] r$3$q;
+    reg  r$3$clock;
+    reg  [20:0] r$4$d;
+    wire  [20:0] r$4$q;
+    reg  r$4$clock;
+    reg  [20:0] r$5$d;
+    wire  [20:0] r$5$q;
+    reg  r$5$clock;
+    reg  [20:0] r$6$d;
+    wire  [20:0] r$6$q;
+    reg  r$6$clock;
+    reg  [20:0] r$7$d;
+    wire  [20:0] r$7$q;
+    reg  r$7$clock;
+    reg  [20:0] r$8$d;
+    wire  [20:0] r$8$q;
+    reg  r$8$clock;
+    reg  [20:0] r$9$d;
+    wire  [20:0] r$9$q;
+    reg  r$9$clock;
+    reg  [20:0] r$10$d;
+    wire  [20:0] r$10$q;
+    reg  r$10$clock;
+    reg  [20:0] r$11$d;
+    wire  [20:0] r$11$q;
+    reg  r$11$clock;
+    reg  [18:0] q$0$d;
+    wire  [18:0] q$0$q;
+    reg  q$0$clock;
+    reg  [18:0] q$1$d;
+    wire  [18:0] q$1$q;
+    reg  q$1$clock;
+    reg  [18:0] q$2$d;
+    wire  [18:0] q$2$q;
+    reg  q$2$clock;
+    reg  [18:0] q$3$d;
+    wire  [18:0] q$3$q;
+    reg  q$3$clock;
+    reg  [18:0] q$4$d;
+    wire  [18:0] q$4$q;
+    reg  q$4$clock;
+    reg  [18:0] q$5$d;
+    wire  [18:0] q$5$q;
+    reg  q$5$clock;
+    reg  [18:0] q$6$d;
+    wire  [18:0] q$6$q;
+    reg  q$6$clock;
+    reg  [18:0] q$7$d;
+    wire  [18:0] q$7$q;
+    reg  q$7$clock;
+    reg  [18:0] q$8$d;
+    wire  [18:0] q$8$q;
+    reg  q$8$clock;
+    reg  [18:0] q$9$d;
+    wire  [18:0] q$9$q;
+    reg  q$9$clock;
+    reg  [18:0] q$10$d;
+    wire  [18:0] q$10$q;
+    reg  q$10$clock;
+    reg  [18:0] q$11$d;
+    wire  [18:0] q$11$q;
+    reg  q$11$clock;
+    reg  [20:0] rho$0$d;
+    wire  [20:0] rho$0$q;
+    reg  rho$0$clock;
+    reg  [20:0] rho$1$d;
+    wire  [20:0] rho$1$q;
+    reg  rho$1$clock;
+    reg  [20:0] rho$2$d;
+    wire  [20:0] rho$2$q;
+    reg  rho$2$clock;
+    reg  [20:0] rho$3$d;
+    wire  [20:0] rho$3$q;
+    reg  rho$3$clock;
+    reg  [20:0] rho$4$d;
+    wire  [20:0] rho$4$q;
+    reg  rho$4$clock;
+    reg  [20:0] rho$5$d;
+    wire  [20:0] rho$5$q;
+    reg  rho$5$clock;
+    reg  [20:0] rho$6$d;
+    wire  [20:0] rho$6$q;
+    reg  rho$6$clock;
+    reg  [20:0] rho$7$d;
+    wire  [20:0] rho$7$q;
+    reg  rho$7$clock;
+    reg  [20:0] rho$8$d;
+    wire  [20:0] rho$8$q;
+    reg  rho$8$clock;
+    reg  [20:0] rho$9$d;
+    wire  [20:0] rho$9$q;
+    reg  rho$9$clock;
+    reg  [20:0] rho$10$d;
+    wire  [20:0] rho$10$q;
+    reg  rho$10$clock;
+    reg  [20:0] rho$11$d;
+    wire  [20:0] rho$11$q;
+    reg  rho$11$clock;
     reg  [15:0] g0$vx$0;
     reg  [15:0] g0$vx$1;
     reg  [15:0] g0$vx$2;
@@ -1192,48 +1684,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [33:0] div_d$d;
     wire  [33:0] div_d$q;
     reg  div_d$clock;
-    reg  [24:0] mant$d;
-    wire  [24:0] mant$q;
-    reg  mant$clock;
+    reg  [56:0] mant_s$d;
+    wire  [56:0] mant_s$q;
+    reg  mant_s$clock;
     reg  [5:0] exp_e$d;
     wire  [5:0] exp_e$q;
     reg  exp_e$clock;
-    reg  [18:0] x$0$d;
-    wire  [18:0] x$0$q;
-    reg  x$0$clock;
-    reg  [18:0] x$1$d;
-    wire  [18:0] x$1$q;
-    reg  x$1$clock;
-    reg  [18:0] x$2$d;
-    wire  [18:0] x$2$q;
-    reg  x$2$clock;
-    reg  [20:0] r$0$d;
-    wire  [20:0] r$0$q;
-    reg  r$0$clock;
-    reg  [20:0] r$1$d;
-    wire  [20:0] r$1$q;
-    reg  r$1$clock;
-    reg  [20:0] r$2$d;
-    wire  [20:0] r$2$q;
-    reg  r$2$clock;
-    reg  [18:0] q$0$d;
-    wire  [18:0] q$0$q;
-    reg  q$0$clock;
-    reg  [18:0] q$1$d;
-    wire  [18:0] q$1$q;
-    reg  q$1$clock;
-    reg  [18:0] q$2$d;
-    wire  [18:0] q$2$q;
-    reg  q$2$clock;
-    reg  [20:0] rho$0$d;
-    wire  [20:0] rho$0$q;
-    reg  rho$0$clock;
-    reg  [20:0] rho$1$d;
-    wire  [20:0] rho$1$q;
-    reg  rho$1$clock;
-    reg  [20:0] rho$2$d;
-    wire  [20:0] rho$2$q;
-    reg  rho$2$clock;
     reg  [57:0] num$0$d;
     wire  [57:0] num$0$q;
     reg  num$0$clock;
@@ -1387,74 +1843,22 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [39:0] inc1$11$d;
     wire  [39:0] inc1$11$q;
     reg  inc1$11$clock;
+    reg  [39:0] ddx_o$0$d;
+    wire  [39:0] ddx_o$0$q;
+    reg  ddx_o$0$clock;
+    reg  [39:0] ddx_o$1$d;
+    wire  [39:0] ddx_o$1$q;
+    reg  ddx_o$1$clock;
+    reg  [39:0] ddx_o$2$d;
+    wire  [39:0] ddx_o$2$q;
+    reg  ddx_o$2$clock;
+    reg  [39:0] ddx_o$3$d;
+    wire  [39:0] ddx_o$3$q;
+    reg  ddx_o$3$clock;
     
     // Local signals
     reg  take;
     reg  run;
-    reg  act$0;
-    reg  act$1;
-    reg  act$2;
-    reg  act$3;
-    reg  act$4;
-    reg  act$5;
-    reg  act$6;
-    reg  act$7;
-    reg  act$8;
-    reg  act$9;
-    reg  act$10;
-    reg  act$11;
-    reg  act$12;
-    reg  act$13;
-    reg  act$14;
-    reg  act$15;
-    reg  act$16;
-    reg  act$17;
-    reg  act$18;
-    reg  act$19;
-    reg  act$20;
-    reg  act$21;
-    reg  act$22;
-    reg  act$23;
-    reg  act$24;
-    reg  act$25;
-    reg  act$26;
-    reg  act$27;
-    reg  act$28;
-    reg  act$29;
-    reg  act$30;
-    reg  act$31;
-    reg  act$32;
-    reg  act$33;
-    reg  act$34;
-    reg  act$35;
-    reg  act$36;
-    reg  act$37;
-    reg  act$38;
-    reg  act$39;
-    reg  act$40;
-    reg  act$41;
-    reg  act$42;
-    reg  act$43;
-    reg  act$44;
-    reg  act$45;
-    reg  act$46;
-    reg  act$47;
-    reg  act$48;
-    reg  act$49;
-    reg  act$50;
-    reg  act$51;
-    reg  act$52;
-    reg  act$53;
-    reg  act$54;
-    reg  act$55;
-    reg  act$56;
-    reg  act$57;
-    reg  act$58;
-    reg  act$59;
-    reg  act$60;
-    reg  act$61;
-    reg  act$62;
-    reg  act$63;
     reg  at_norm;
     reg  at_iss$0;
     reg  at_iss$1;
@@ -1478,9 +1882,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [33:0] area_abs;
     reg  [5:0] exp_c;
     reg  [33:0] norm_d;
-    reg  [24:0] mant_now;
-    reg  [5:0] exp_now;
-    reg  [56:0] mant_a;
+    reg  [5:0] exp_r;
     reg  [18:0] q_n;
     reg  r_pos;
     reg  [18:0] xi$0;
@@ -1629,6 +2031,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [18:0] op_s$21;
     reg  [18:0] op_s$22;
     reg  [18:0] op_s$23;
+    reg  [18:0] op_q$0;
+    reg  [18:0] op_q$1;
+    reg  [18:0] op_q$2;
+    reg  [18:0] op_q$3;
+    reg  [18:0] op_q$4;
+    reg  [18:0] op_q$5;
+    reg  [18:0] op_q$6;
+    reg  [18:0] op_q$7;
+    reg  [18:0] op_q$8;
+    reg  [18:0] op_q$9;
+    reg  [18:0] op_q$10;
+    reg  [18:0] op_q$11;
     reg  [39:0] attr0$0;
     reg  [39:0] attr0$1;
     reg  [39:0] attr0$2;
@@ -1674,36 +2088,50 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     
     // Sub module instances
     triangle_setup$mul$0 mul$0(
+        .clock(mul$0$clock),
+        .en(mul$0$en),
         .a(mul$0$a),
         .b(mul$0$b),
         .p(mul$0$p)
     );
     triangle_setup$mul$1 mul$1(
+        .clock(mul$1$clock),
+        .en(mul$1$en),
         .a(mul$1$a),
         .b(mul$1$b),
         .p(mul$1$p)
     );
     triangle_setup$mul$2 mul$2(
+        .clock(mul$2$clock),
+        .en(mul$2$en),
         .a(mul$2$a),
         .b(mul$2$b),
         .p(mul$2$p)
     );
     triangle_setup$mul$3 mul$3(
+        .clock(mul$3$clock),
+        .en(mul$3$en),
         .a(mul$3$a),
         .b(mul$3$b),
         .p(mul$3$p)
     );
     triangle_setup$mul$4 mul$4(
+        .clock(mul$4$clock),
+        .en(mul$4$en),
         .a(mul$4$a),
         .b(mul$4$b),
         .p(mul$4$p)
     );
     triangle_setup$mul$5 mul$5(
+        .clock(mul$5$clock),
+        .en(mul$5$en),
         .a(mul$5$a),
         .b(mul$5$b),
         .p(mul$5$p)
     );
     triangle_setup$mul$6 mul$6(
+        .clock(mul$6$clock),
+        .en(mul$6$en),
         .a(mul$6$a),
         .b(mul$6$b),
         .p(mul$6$p)
@@ -2060,6 +2488,326 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .q(act_r$63$q),
         .clock(act_r$63$clock)
     );
+    triangle_setup$add_r$0 add_r$0(
+        .d(add_r$0$d),
+        .q(add_r$0$q),
+        .clock(add_r$0$clock)
+    );
+    triangle_setup$add_r$1 add_r$1(
+        .d(add_r$1$d),
+        .q(add_r$1$q),
+        .clock(add_r$1$clock)
+    );
+    triangle_setup$add_r$2 add_r$2(
+        .d(add_r$2$d),
+        .q(add_r$2$q),
+        .clock(add_r$2$clock)
+    );
+    triangle_setup$add_r$3 add_r$3(
+        .d(add_r$3$d),
+        .q(add_r$3$q),
+        .clock(add_r$3$clock)
+    );
+    triangle_setup$add_r$4 add_r$4(
+        .d(add_r$4$d),
+        .q(add_r$4$q),
+        .clock(add_r$4$clock)
+    );
+    triangle_setup$add_r$5 add_r$5(
+        .d(add_r$5$d),
+        .q(add_r$5$q),
+        .clock(add_r$5$clock)
+    );
+    triangle_setup$add_r$6 add_r$6(
+        .d(add_r$6$d),
+        .q(add_r$6$q),
+        .clock(add_r$6$clock)
+    );
+    triangle_setup$add_r$7 add_r$7(
+        .d(add_r$7$d),
+        .q(add_r$7$q),
+        .clock(add_r$7$clock)
+    );
+    triangle_setup$add_r$8 add_r$8(
+        .d(add_r$8$d),
+        .q(add_r$8$q),
+        .clock(add_r$8$clock)
+    );
+    triangle_setup$add_r$9 add_r$9(
+        .d(add_r$9$d),
+        .q(add_r$9$q),
+        .clock(add_r$9$clock)
+    );
+    triangle_setup$add_r$10 add_r$10(
+        .d(add_r$10$d),
+        .q(add_r$10$q),
+        .clock(add_r$10$clock)
+    );
+    triangle_setup$add_r$11 add_r$11(
+        .d(add_r$11$d),
+        .q(add_r$11$q),
+        .clock(add_r$11$clock)
+    );
+    triangle_setup$add_r$12 add_r$12(
+        .d(add_r$12$d),
+        .q(add_r$12$q),
+        .clock(add_r$12$clock)
+    );
+    triangle_setup$add_r$13 add_r$13(
+        .d(add_r$13$d),
+        .q(add_r$13$q),
+        .clock(add_r$13$clock)
+    );
+    triangle_setup$add_r$14 add_r$14(
+        .d(add_r$14$d),
+        .q(add_r$14$q),
+        .clock(add_r$14$clock)
+    );
+    triangle_setup$add_r$15 add_r$15(
+        .d(add_r$15$d),
+        .q(add_r$15$q),
+        .clock(add_r$15$clock)
+    );
+    triangle_setup$add_r$16 add_r$16(
+        .d(add_r$16$d),
+        .q(add_r$16$q),
+        .clock(add_r$16$clock)
+    );
+    triangle_setup$add_r$17 add_r$17(
+        .d(add_r$17$d),
+        .q(add_r$17$q),
+        .clock(add_r$17$clock)
+    );
+    triangle_setup$add_r$18 add_r$18(
+        .d(add_r$18$d),
+        .q(add_r$18$q),
+        .clock(add_r$18$clock)
+    );
+    triangle_setup$add_r$19 add_r$19(
+        .d(add_r$19$d),
+        .q(add_r$19$q),
+        .clock(add_r$19$clock)
+    );
+    triangle_setup$add_r$20 add_r$20(
+        .d(add_r$20$d),
+        .q(add_r$20$q),
+        .clock(add_r$20$clock)
+    );
+    triangle_setup$add_r$21 add_r$21(
+        .d(add_r$21$d),
+        .q(add_r$21$q),
+        .clock(add_r$21$clock)
+    );
+    triangle_setup$add_r$22 add_r$22(
+        .d(add_r$22$d),
+        .q(add_r$22$q),
+        .clock(add_r$22$clock)
+    );
+    triangle_setup$add_r$23 add_r$23(
+        .d(add_r$23$d),
+        .q(add_r$23$q),
+        .clock(add_r$23$clock)
+    );
+    triangle_setup$add_r$24 add_r$24(
+        .d(add_r$24$d),
+        .q(add_r$24$q),
+        .clock(add_r$24$clock)
+    );
+    triangle_setup$add_r$25 add_r$25(
+        .d(add_r$25$d),
+        .q(add_r$25$q),
+        .clock(add_r$25$clock)
+    );
+    triangle_setup$add_r$26 add_r$26(
+        .d(add_r$26$d),
+        .q(add_r$26$q),
+        .clock(add_r$26$clock)
+    );
+    triangle_setup$add_r$27 add_r$27(
+        .d(add_r$27$d),
+        .q(add_r$27$q),
+        .clock(add_r$27$clock)
+    );
+    triangle_setup$add_r$28 add_r$28(
+        .d(add_r$28$d),
+        .q(add_r$28$q),
+        .clock(add_r$28$clock)
+    );
+    triangle_setup$add_r$29 add_r$29(
+        .d(add_r$29$d),
+        .q(add_r$29$q),
+        .clock(add_r$29$clock)
+    );
+    triangle_setup$add_r$30 add_r$30(
+        .d(add_r$30$d),
+        .q(add_r$30$q),
+        .clock(add_r$30$clock)
+    );
+    triangle_setup$add_r$31 add_r$31(
+        .d(add_r$31$d),
+        .q(add_r$31$q),
+        .clock(add_r$31$clock)
+    );
+    triangle_setup$add_r$32 add_r$32(
+        .d(add_r$32$d),
+        .q(add_r$32$q),
+        .clock(add_r$32$clock)
+    );
+    triangle_setup$add_r$33 add_r$33(
+        .d(add_r$33$d),
+        .q(add_r$33$q),
+        .clock(add_r$33$clock)
+    );
+    triangle_setup$add_r$34 add_r$34(
+        .d(add_r$34$d),
+        .q(add_r$34$q),
+        .clock(add_r$34$clock)
+    );
+    triangle_setup$add_r$35 add_r$35(
+        .d(add_r$35$d),
+        .q(add_r$35$q),
+        .clock(add_r$35$clock)
+    );
+    triangle_setup$add_r$36 add_r$36(
+        .d(add_r$36$d),
+        .q(add_r$36$q),
+        .clock(add_r$36$clock)
+    );
+    triangle_setup$add_r$37 add_r$37(
+        .d(add_r$37$d),
+        .q(add_r$37$q),
+        .clock(add_r$37$clock)
+    );
+    triangle_setup$add_r$38 add_r$38(
+        .d(add_r$38$d),
+        .q(add_r$38$q),
+        .clock(add_r$38$clock)
+    );
+    triangle_setup$add_r$39 add_r$39(
+        .d(add_r$39$d),
+        .q(add_r$39$q),
+        .clock(add_r$39$clock)
+    );
+    triangle_setup$add_r$40 add_r$40(
+        .d(add_r$40$d),
+        .q(add_r$40$q),
+        .clock(add_r$40$clock)
+    );
+    triangle_setup$add_r$41 add_r$41(
+        .d(add_r$41$d),
+        .q(add_r$41$q),
+        .clock(add_r$41$clock)
+    );
+    triangle_setup$add_r$42 add_r$42(
+        .d(add_r$42$d),
+        .q(add_r$42$q),
+        .clock(add_r$42$clock)
+    );
+    triangle_setup$add_r$43 add_r$43(
+        .d(add_r$43$d),
+        .q(add_r$43$q),
+        .clock(add_r$43$clock)
+    );
+    triangle_setup$add_r$44 add_r$44(
+        .d(add_r$44$d),
+        .q(add_r$44$q),
+        .clock(add_r$44$clock)
+    );
+    triangle_setup$add_r$45 add_r$45(
+        .d(add_r$45$d),
+        .q(add_r$45$q),
+        .clock(add_r$45$clock)
+    );
+    triangle_setup$add_r$46 add_r$46(
+        .d(add_r$46$d),
+        .q(add_r$46$q),
+        .clock(add_r$46$clock)
+    );
+    triangle_setup$add_r$47 add_r$47(
+        .d(add_r$47$d),
+        .q(add_r$47$q),
+        .clock(add_r$47$clock)
+    );
+    triangle_setup$add_r$48 add_r$48(
+        .d(add_r$48$d),
+        .q(add_r$48$q),
+        .clock(add_r$48$clock)
+    );
+    triangle_setup$add_r$49 add_r$49(
+        .d(add_r$49$d),
+        .q(add_r$49$q),
+        .clock(add_r$49$clock)
+    );
+    triangle_setup$add_r$50 add_r$50(
+        .d(add_r$50$d),
+        .q(add_r$50$q),
+        .clock(add_r$50$clock)
+    );
+    triangle_setup$add_r$51 add_r$51(
+        .d(add_r$51$d),
+        .q(add_r$51$q),
+        .clock(add_r$51$clock)
+    );
+    triangle_setup$add_r$52 add_r$52(
+        .d(add_r$52$d),
+        .q(add_r$52$q),
+        .clock(add_r$52$clock)
+    );
+    triangle_setup$add_r$53 add_r$53(
+        .d(add_r$53$d),
+        .q(add_r$53$q),
+        .clock(add_r$53$clock)
+    );
+    triangle_setup$add_r$54 add_r$54(
+        .d(add_r$54$d),
+        .q(add_r$54$q),
+        .clock(add_r$54$clock)
+    );
+    triangle_setup$add_r$55 add_r$55(
+        .d(add_r$55$d),
+        .q(add_r$55$q),
+        .clock(add_r$55$clock)
+    );
+    triangle_setup$add_r$56 add_r$56(
+        .d(add_r$56$d),
+        .q(add_r$56$q),
+        .clock(add_r$56$clock)
+    );
+    triangle_setup$add_r$57 add_r$57(
+        .d(add_r$57$d),
+        .q(add_r$57$q),
+        .clock(add_r$57$clock)
+    );
+    triangle_setup$add_r$58 add_r$58(
+        .d(add_r$58$d),
+        .q(add_r$58$q),
+        .clock(add_r$58$clock)
+    );
+    triangle_setup$add_r$59 add_r$59(
+        .d(add_r$59$d),
+        .q(add_r$59$q),
+        .clock(add_r$59$clock)
+    );
+    triangle_setup$add_r$60 add_r$60(
+        .d(add_r$60$d),
+        .q(add_r$60$q),
+        .clock(add_r$60$clock)
+    );
+    triangle_setup$add_r$61 add_r$61(
+        .d(add_r$61$d),
+        .q(add_r$61$q),
+        .clock(add_r$61$clock)
+    );
+    triangle_setup$add_r$62 add_r$62(
+        .d(add_r$62$d),
+        .q(add_r$62$q),
+        .clock(add_r$62$clock)
+    );
+    triangle_setup$add_r$63 add_r$63(
+        .d(add_r$63$d),
+        .q(add_r$63$q),
+        .clock(add_r$63$clock)
+    );
     triangle_setup$norm_r norm_r(
         .d(norm_r$d),
         .q(norm_r$q),
@@ -2149,6 +2897,16 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .d(busy_r$d),
         .q(busy_r$q),
         .clock(busy_r$clock)
+    );
+    triangle_setup$phase phase(
+        .d(phase$d),
+        .q(phase$q),
+        .clock(phase$clock)
+    );
+    triangle_setup$off_grid_r off_grid_r(
+        .d(off_grid_r$d),
+        .q(off_grid_r$q),
+        .clock(off_grid_r$clock)
     );
     triangle_setup$vx$0 vx$0(
         .d(vx$0$d),
@@ -2570,6 +3328,246 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .q(exp$3$q),
         .clock(exp$3$clock)
     );
+    triangle_setup$x$0 x$0(
+        .d(x$0$d),
+        .q(x$0$q),
+        .clock(x$0$clock)
+    );
+    triangle_setup$x$1 x$1(
+        .d(x$1$d),
+        .q(x$1$q),
+        .clock(x$1$clock)
+    );
+    triangle_setup$x$2 x$2(
+        .d(x$2$d),
+        .q(x$2$q),
+        .clock(x$2$clock)
+    );
+    triangle_setup$x$3 x$3(
+        .d(x$3$d),
+        .q(x$3$q),
+        .clock(x$3$clock)
+    );
+    triangle_setup$x$4 x$4(
+        .d(x$4$d),
+        .q(x$4$q),
+        .clock(x$4$clock)
+    );
+    triangle_setup$x$5 x$5(
+        .d(x$5$d),
+        .q(x$5$q),
+        .clock(x$5$clock)
+    );
+    triangle_setup$x$6 x$6(
+        .d(x$6$d),
+        .q(x$6$q),
+        .clock(x$6$clock)
+    );
+    triangle_setup$x$7 x$7(
+        .d(x$7$d),
+        .q(x$7$q),
+        .clock(x$7$clock)
+    );
+    triangle_setup$x$8 x$8(
+        .d(x$8$d),
+        .q(x$8$q),
+        .clock(x$8$clock)
+    );
+    triangle_setup$x$9 x$9(
+        .d(x$9$d),
+        .q(x$9$q),
+        .clock(x$9$clock)
+    );
+    triangle_setup$x$10 x$10(
+        .d(x$10$d),
+        .q(x$10$q),
+        .clock(x$10$clock)
+    );
+    triangle_setup$x$11 x$11(
+        .d(x$11$d),
+        .q(x$11$q),
+        .clock(x$11$clock)
+    );
+    triangle_setup$r$0 r$0(
+        .d(r$0$d),
+        .q(r$0$q),
+        .clock(r$0$clock)
+    );
+    triangle_setup$r$1 r$1(
+        .d(r$1$d),
+        .q(r$1$q),
+        .clock(r$1$clock)
+    );
+    triangle_setup$r$2 r$2(
+        .d(r$2$d),
+        .q(r$2$q),
+        .clock(r$2$clock)
+    );
+    triangle_setup$r$3 r$3(
+        .d(r$3$d),
+        .q(r$3$q),
+        .clock(r$3$clock)
+    );
+    triangle_setup$r$4 r$4(
+        .d(r$4$d),
+        .q(r$4$q),
+        .clock(r$4$clock)
+    );
+    triangle_setup$r$5 r$5(
+        .d(r$5$d),
+        .q(r$5$q),
+        .clock(r$5$clock)
+    );
+    triangle_setup$r$6 r$6(
+        .d(r$6$d),
+        .q(r$6$q),
+        .clock(r$6$clock)
+    );
+    triangle_setup$r$7 r$7(
+        .d(r$7$d),
+        .q(r$7$q),
+        .clock(r$7$clock)
+    );
+    triangle_setup$r$8 r$8(
+        .d(r$8$d),
+        .q(r$8$q),
+        .clock(r$8$clock)
+    );
+    triangle_setup$r$9 r$9(
+        .d(r$9$d),
+        .q(r$9$q),
+        .clock(r$9$clock)
+    );
+    triangle_setup$r$10 r$10(
+        .d(r$10$d),
+        .q(r$10$q),
+        .clock(r$10$clock)
+    );
+    triangle_setup$r$11 r$11(
+        .d(r$11$d),
+        .q(r$11$q),
+        .clock(r$11$clock)
+    );
+    triangle_setup$q$0 q$0(
+        .d(q$0$d),
+        .q(q$0$q),
+        .clock(q$0$clock)
+    );
+    triangle_setup$q$1 q$1(
+        .d(q$1$d),
+        .q(q$1$q),
+        .clock(q$1$clock)
+    );
+    triangle_setup$q$2 q$2(
+        .d(q$2$d),
+        .q(q$2$q),
+        .clock(q$2$clock)
+    );
+    triangle_setup$q$3 q$3(
+        .d(q$3$d),
+        .q(q$3$q),
+        .clock(q$3$clock)
+    );
+    triangle_setup$q$4 q$4(
+        .d(q$4$d),
+        .q(q$4$q),
+        .clock(q$4$clock)
+    );
+    triangle_setup$q$5 q$5(
+        .d(q$5$d),
+        .q(q$5$q),
+        .clock(q$5$clock)
+    );
+    triangle_setup$q$6 q$6(
+        .d(q$6$d),
+        .q(q$6$q),
+        .clock(q$6$clock)
+    );
+    triangle_setup$q$7 q$7(
+        .d(q$7$d),
+        .q(q$7$q),
+        .clock(q$7$clock)
+    );
+    triangle_setup$q$8 q$8(
+        .d(q$8$d),
+        .q(q$8$q),
+        .clock(q$8$clock)
+    );
+    triangle_setup$q$9 q$9(
+        .d(q$9$d),
+        .q(q$9$q),
+        .clock(q$9$clock)
+    );
+    triangle_setup$q$10 q$10(
+        .d(q$10$d),
+        .q(q$10$q),
+        .clock(q$10$clock)
+    );
+    triangle_setup$q$11 q$11(
+        .d(q$11$d),
+        .q(q$11$q),
+        .clock(q$11$clock)
+    );
+    triangle_setup$rho$0 rho$0(
+        .d(rho$0$d),
+        .q(rho$0$q),
+        .clock(rho$0$clock)
+    );
+    triangle_setup$rho$1 rho$1(
+        .d(rho$1$d),
+        .q(rho$1$q),
+        .clock(rho$1$clock)
+    );
+    triangle_setup$rho$2 rho$2(
+        .d(rho$2$d),
+        .q(rho$2$q),
+        .clock(rho$2$clock)
+    );
+    triangle_setup$rho$3 rho$3(
+        .d(rho$3$d),
+        .q(rho$3$q),
+        .clock(rho$3$clock)
+    );
+    triangle_setup$rho$4 rho$4(
+        .d(rho$4$d),
+        .q(rho$4$q),
+        .clock(rho$4$clock)
+    );
+    triangle_setup$rho$5 rho$5(
+        .d(rho$5$d),
+        .q(rho$5$q),
+        .clock(rho$5$clock)
+    );
+    triangle_setup$rho$6 rho$6(
+        .d(rho$6$d),
+        .q(rho$6$q),
+        .clock(rho$6$clock)
+    );
+    triangle_setup$rho$7 rho$7(
+        .d(rho$7$d),
+        .q(rho$7$q),
+        .clock(rho$7$clock)
+    );
+    triangle_setup$rho$8 rho$8(
+        .d(rho$8$d),
+        .q(rho$8$q),
+        .clock(rho$8$clock)
+    );
+    triangle_setup$rho$9 rho$9(
+        .d(rho$9$d),
+        .q(rho$9$q),
+        .clock(rho$9$clock)
+    );
+    triangle_setup$rho$10 rho$10(
+        .d(rho$10$d),
+        .q(rho$10$q),
+        .clock(rho$10$clock)
+    );
+    triangle_setup$rho$11 rho$11(
+        .d(rho$11$d),
+        .q(rho$11$q),
+        .clock(rho$11$clock)
+    );
     triangle_setup$g0 g0(
         .vx$0(g0$vx$0),
         .vx$1(g0$vx$1),
@@ -2903,75 +3901,15 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .q(div_d$q),
         .clock(div_d$clock)
     );
-    triangle_setup$mant mant(
-        .d(mant$d),
-        .q(mant$q),
-        .clock(mant$clock)
+    triangle_setup$mant_s mant_s(
+        .d(mant_s$d),
+        .q(mant_s$q),
+        .clock(mant_s$clock)
     );
     triangle_setup$exp_e exp_e(
         .d(exp_e$d),
         .q(exp_e$q),
         .clock(exp_e$clock)
-    );
-    triangle_setup$x$0 x$0(
-        .d(x$0$d),
-        .q(x$0$q),
-        .clock(x$0$clock)
-    );
-    triangle_setup$x$1 x$1(
-        .d(x$1$d),
-        .q(x$1$q),
-        .clock(x$1$clock)
-    );
-    triangle_setup$x$2 x$2(
-        .d(x$2$d),
-        .q(x$2$q),
-        .clock(x$2$clock)
-    );
-    triangle_setup$r$0 r$0(
-        .d(r$0$d),
-        .q(r$0$q),
-        .clock(r$0$clock)
-    );
-    triangle_setup$r$1 r$1(
-        .d(r$1$d),
-        .q(r$1$q),
-        .clock(r$1$clock)
-    );
-    triangle_setup$r$2 r$2(
-        .d(r$2$d),
-        .q(r$2$q),
-        .clock(r$2$clock)
-    );
-    triangle_setup$q$0 q$0(
-        .d(q$0$d),
-        .q(q$0$q),
-        .clock(q$0$clock)
-    );
-    triangle_setup$q$1 q$1(
-        .d(q$1$d),
-        .q(q$1$q),
-        .clock(q$1$clock)
-    );
-    triangle_setup$q$2 q$2(
-        .d(q$2$d),
-        .q(q$2$q),
-        .clock(q$2$clock)
-    );
-    triangle_setup$rho$0 rho$0(
-        .d(rho$0$d),
-        .q(rho$0$q),
-        .clock(rho$0$clock)
-    );
-    triangle_setup$rho$1 rho$1(
-        .d(rho$1$d),
-        .q(rho$1$q),
-        .clock(rho$1$clock)
-    );
-    triangle_setup$rho$2 rho$2(
-        .d(rho$2$d),
-        .q(rho$2$q),
-        .clock(rho$2$clock)
     );
     triangle_setup$num$0 num$0(
         .d(num$0$d),
@@ -3228,6 +4166,26 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .q(inc1$11$q),
         .clock(inc1$11$clock)
     );
+    triangle_setup$ddx_o$0 ddx_o$0(
+        .d(ddx_o$0$d),
+        .q(ddx_o$0$q),
+        .clock(ddx_o$0$clock)
+    );
+    triangle_setup$ddx_o$1 ddx_o$1(
+        .d(ddx_o$1$d),
+        .q(ddx_o$1$q),
+        .clock(ddx_o$1$clock)
+    );
+    triangle_setup$ddx_o$2 ddx_o$2(
+        .d(ddx_o$2$d),
+        .q(ddx_o$2$q),
+        .clock(ddx_o$2$clock)
+    );
+    triangle_setup$ddx_o$3 ddx_o$3(
+        .d(ddx_o$3$d),
+        .q(ddx_o$3$q),
+        .clock(ddx_o$3$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -3236,23 +4194,27 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         div_v$clock = clock;
         div_n$clock = clock;
         div_d$clock = clock;
-        mant$clock = clock;
+        mant_s$clock = clock;
         exp_e$clock = clock;
         norm_r$clock = clock;
         handover_r$clock = clock;
         valid_r$clock = clock;
         busy_r$clock = clock;
+        phase$clock = clock;
+        off_grid_r$clock = clock;
         area$d = area$q;
         norm$d = norm$q;
         div_v$d = div_v$q;
         div_n$d = div_n$q;
         div_d$d = div_d$q;
-        mant$d = mant$q;
+        mant_s$d = mant_s$q;
         exp_e$d = exp_e$q;
         norm_r$d = norm_r$q;
         handover_r$d = handover_r$q;
         valid_r$d = valid_r$q;
         busy_r$d = busy_r$q;
+        phase$d = phase$q;
+        off_grid_r$d = off_grid_r$q;
         div$clock = clock;
         t$0$clock = clock;
         t$0$d = t$0$q;
@@ -3262,18 +4224,42 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         sign$0$d = sign$0$q;
         exp$0$clock = clock;
         exp$0$d = exp$0$q;
+        x$0$clock = clock;
+        x$0$d = x$0$q;
+        r$0$clock = clock;
+        r$0$d = r$0$q;
+        q$0$clock = clock;
+        q$0$d = q$0$q;
+        rho$0$clock = clock;
+        rho$0$d = rho$0$q;
         vx$0$clock = clock;
         vx$0$d = vx$0$q;
         vy$0$clock = clock;
         vy$0$d = vy$0$q;
         vz$0$clock = clock;
         vz$0$d = vz$0$q;
+        x$1$clock = clock;
+        x$1$d = x$1$q;
+        r$1$clock = clock;
+        r$1$d = r$1$q;
+        q$1$clock = clock;
+        q$1$d = q$1$q;
+        rho$1$clock = clock;
+        rho$1$d = rho$1$q;
         vx$1$clock = clock;
         vx$1$d = vx$1$q;
         vy$1$clock = clock;
         vy$1$d = vy$1$q;
         vz$1$clock = clock;
         vz$1$d = vz$1$q;
+        x$2$clock = clock;
+        x$2$d = x$2$q;
+        r$2$clock = clock;
+        r$2$d = r$2$q;
+        q$2$clock = clock;
+        q$2$d = q$2$q;
+        rho$2$clock = clock;
+        rho$2$d = rho$2$q;
         vx$2$clock = clock;
         vx$2$d = vx$2$q;
         vy$2$clock = clock;
@@ -3306,18 +4292,42 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         sign$1$d = sign$1$q;
         exp$1$clock = clock;
         exp$1$d = exp$1$q;
+        x$3$clock = clock;
+        x$3$d = x$3$q;
+        r$3$clock = clock;
+        r$3$d = r$3$q;
+        q$3$clock = clock;
+        q$3$d = q$3$q;
+        rho$3$clock = clock;
+        rho$3$d = rho$3$q;
         vx$3$clock = clock;
         vx$3$d = vx$3$q;
         vy$3$clock = clock;
         vy$3$d = vy$3$q;
         vz$3$clock = clock;
         vz$3$d = vz$3$q;
+        x$4$clock = clock;
+        x$4$d = x$4$q;
+        r$4$clock = clock;
+        r$4$d = r$4$q;
+        q$4$clock = clock;
+        q$4$d = q$4$q;
+        rho$4$clock = clock;
+        rho$4$d = rho$4$q;
         vx$4$clock = clock;
         vx$4$d = vx$4$q;
         vy$4$clock = clock;
         vy$4$d = vy$4$q;
         vz$4$clock = clock;
         vz$4$d = vz$4$q;
+        x$5$clock = clock;
+        x$5$d = x$5$q;
+        r$5$clock = clock;
+        r$5$d = r$5$q;
+        q$5$clock = clock;
+        q$5$d = q$5$q;
+        rho$5$clock = clock;
+        rho$5$d = rho$5$q;
         vx$5$clock = clock;
         vx$5$d = vx$5$q;
         vy$5$clock = clock;
@@ -3350,18 +4360,42 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         sign$2$d = sign$2$q;
         exp$2$clock = clock;
         exp$2$d = exp$2$q;
+        x$6$clock = clock;
+        x$6$d = x$6$q;
+        r$6$clock = clock;
+        r$6$d = r$6$q;
+        q$6$clock = clock;
+        q$6$d = q$6$q;
+        rho$6$clock = clock;
+        rho$6$d = rho$6$q;
         vx$6$clock = clock;
         vx$6$d = vx$6$q;
         vy$6$clock = clock;
         vy$6$d = vy$6$q;
         vz$6$clock = clock;
         vz$6$d = vz$6$q;
+        x$7$clock = clock;
+        x$7$d = x$7$q;
+        r$7$clock = clock;
+        r$7$d = r$7$q;
+        q$7$clock = clock;
+        q$7$d = q$7$q;
+        rho$7$clock = clock;
+        rho$7$d = rho$7$q;
         vx$7$clock = clock;
         vx$7$d = vx$7$q;
         vy$7$clock = clock;
         vy$7$d = vy$7$q;
         vz$7$clock = clock;
         vz$7$d = vz$7$q;
+        x$8$clock = clock;
+        x$8$d = x$8$q;
+        r$8$clock = clock;
+        r$8$d = r$8$q;
+        q$8$clock = clock;
+        q$8$d = q$8$q;
+        rho$8$clock = clock;
+        rho$8$d = rho$8$q;
         vx$8$clock = clock;
         vx$8$d = vx$8$q;
         vy$8$clock = clock;
@@ -3394,18 +4428,42 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         sign$3$d = sign$3$q;
         exp$3$clock = clock;
         exp$3$d = exp$3$q;
+        x$9$clock = clock;
+        x$9$d = x$9$q;
+        r$9$clock = clock;
+        r$9$d = r$9$q;
+        q$9$clock = clock;
+        q$9$d = q$9$q;
+        rho$9$clock = clock;
+        rho$9$d = rho$9$q;
         vx$9$clock = clock;
         vx$9$d = vx$9$q;
         vy$9$clock = clock;
         vy$9$d = vy$9$q;
         vz$9$clock = clock;
         vz$9$d = vz$9$q;
+        x$10$clock = clock;
+        x$10$d = x$10$q;
+        r$10$clock = clock;
+        r$10$d = r$10$q;
+        q$10$clock = clock;
+        q$10$d = q$10$q;
+        rho$10$clock = clock;
+        rho$10$d = rho$10$q;
         vx$10$clock = clock;
         vx$10$d = vx$10$q;
         vy$10$clock = clock;
         vy$10$d = vy$10$q;
         vz$10$clock = clock;
         vz$10$d = vz$10$q;
+        x$11$clock = clock;
+        x$11$d = x$11$q;
+        r$11$clock = clock;
+        r$11$d = r$11$q;
+        q$11$clock = clock;
+        q$11$d = q$11$q;
+        rho$11$clock = clock;
+        rho$11$d = rho$11$q;
         vx$11$clock = clock;
         vx$11$d = vx$11$q;
         vy$11$clock = clock;
@@ -3430,105 +4488,119 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         vc$34$d = vc$34$q;
         vc$35$clock = clock;
         vc$35$d = vc$35$q;
-        x$0$clock = clock;
-        x$0$d = x$0$q;
-        r$0$clock = clock;
-        r$0$d = r$0$q;
-        q$0$clock = clock;
-        q$0$d = q$0$q;
-        rho$0$clock = clock;
-        rho$0$d = rho$0$q;
         num$0$clock = clock;
-        x$1$clock = clock;
-        x$1$d = x$1$q;
-        r$1$clock = clock;
-        r$1$d = r$1$q;
-        q$1$clock = clock;
-        q$1$d = q$1$q;
-        rho$1$clock = clock;
-        rho$1$d = rho$1$q;
+        num$0$d = num$0$q;
         num$1$clock = clock;
-        x$2$clock = clock;
-        x$2$d = x$2$q;
-        r$2$clock = clock;
-        r$2$d = r$2$q;
-        q$2$clock = clock;
-        q$2$d = q$2$q;
-        rho$2$clock = clock;
-        rho$2$d = rho$2$q;
+        num$1$d = num$1$q;
         num$2$clock = clock;
+        num$2$d = num$2$q;
         p$0$clock = clock;
         p$0$d = p$0$q;
         gx$0$clock = clock;
+        gx$0$d = gx$0$q;
         gy$0$clock = clock;
+        gy$0$d = gy$0$q;
+        ddx_o$0$clock = clock;
+        ddx_o$0$d = ddx_o$0$q;
         p$1$clock = clock;
         p$1$d = p$1$q;
         gx$1$clock = clock;
+        gx$1$d = gx$1$q;
         gy$1$clock = clock;
+        gy$1$d = gy$1$q;
+        ddx_o$1$clock = clock;
+        ddx_o$1$d = ddx_o$1$q;
         p$2$clock = clock;
         p$2$d = p$2$q;
         gx$2$clock = clock;
+        gx$2$d = gx$2$q;
         gy$2$clock = clock;
+        gy$2$d = gy$2$q;
+        ddx_o$2$clock = clock;
+        ddx_o$2$d = ddx_o$2$q;
         p$3$clock = clock;
         p$3$d = p$3$q;
         gx$3$clock = clock;
+        gx$3$d = gx$3$q;
         gy$3$clock = clock;
+        gy$3$d = gy$3$q;
+        ddx_o$3$clock = clock;
+        ddx_o$3$d = ddx_o$3$q;
+        mul$0$clock = clock;
+        mul$1$clock = clock;
+        mul$2$clock = clock;
+        mul$3$clock = clock;
+        mul$4$clock = clock;
+        mul$5$clock = clock;
+        mul$6$clock = clock;
         plane$0$clock = clock;
+        plane$0$d = plane$0$q;
         inc0$0$clock = clock;
         inc0$0$d = inc0$0$q;
         inc1$0$clock = clock;
         inc1$0$d = inc1$0$q;
         plane$1$clock = clock;
+        plane$1$d = plane$1$q;
         inc0$1$clock = clock;
         inc0$1$d = inc0$1$q;
         inc1$1$clock = clock;
         inc1$1$d = inc1$1$q;
         plane$2$clock = clock;
+        plane$2$d = plane$2$q;
         inc0$2$clock = clock;
         inc0$2$d = inc0$2$q;
         inc1$2$clock = clock;
         inc1$2$d = inc1$2$q;
         plane$3$clock = clock;
+        plane$3$d = plane$3$q;
         inc0$3$clock = clock;
         inc0$3$d = inc0$3$q;
         inc1$3$clock = clock;
         inc1$3$d = inc1$3$q;
         plane$4$clock = clock;
+        plane$4$d = plane$4$q;
         inc0$4$clock = clock;
         inc0$4$d = inc0$4$q;
         inc1$4$clock = clock;
         inc1$4$d = inc1$4$q;
         plane$5$clock = clock;
+        plane$5$d = plane$5$q;
         inc0$5$clock = clock;
         inc0$5$d = inc0$5$q;
         inc1$5$clock = clock;
         inc1$5$d = inc1$5$q;
         plane$6$clock = clock;
+        plane$6$d = plane$6$q;
         inc0$6$clock = clock;
         inc0$6$d = inc0$6$q;
         inc1$6$clock = clock;
         inc1$6$d = inc1$6$q;
         plane$7$clock = clock;
+        plane$7$d = plane$7$q;
         inc0$7$clock = clock;
         inc0$7$d = inc0$7$q;
         inc1$7$clock = clock;
         inc1$7$d = inc1$7$q;
         plane$8$clock = clock;
+        plane$8$d = plane$8$q;
         inc0$8$clock = clock;
         inc0$8$d = inc0$8$q;
         inc1$8$clock = clock;
         inc1$8$d = inc1$8$q;
         plane$9$clock = clock;
+        plane$9$d = plane$9$q;
         inc0$9$clock = clock;
         inc0$9$d = inc0$9$q;
         inc1$9$clock = clock;
         inc1$9$d = inc1$9$q;
         plane$10$clock = clock;
+        plane$10$d = plane$10$q;
         inc0$10$clock = clock;
         inc0$10$d = inc0$10$q;
         inc1$10$clock = clock;
         inc1$10$d = inc1$10$q;
         plane$11$clock = clock;
+        plane$11$d = plane$11$q;
         inc0$11$clock = clock;
         inc0$11$d = inc0$11$q;
         inc1$11$clock = clock;
@@ -3539,9 +4611,16 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         maj_left$3 = sign$3$q;
         run = ~(valid_r$q & ~out$ready);
         out$valid = valid_r$q;
-        inp$ready = run & ~busy_r$q;
+        inp$ready = run & ~(busy_r$q & off_grid_r$q);
         take = inp$valid & inp$ready;
         if (run) begin
+            phase$d = phase$q + 32'h1;
+            if (phase$q == ii_m1) begin
+                phase$d = 32'h0;
+            end
+            if (take) begin
+                phase$d = 32'h1;
+            end
             if (t$0$q != 32'h0) begin
                 t$0$d = t$0$q + 32'h1;
             end
@@ -3565,12 +4644,24 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
                 crosses$1$d = crosses$0$q;
                 sign$1$d = maj_left$0;
                 exp$1$d = exp$0$q;
+                x$3$d = x$0$q;
+                r$3$d = r$0$q;
+                q$3$d = q$0$q;
+                rho$3$d = rho$0$q;
                 vx$3$d = vx$0$q;
                 vy$3$d = vy$0$q;
                 vz$3$d = vz$0$q;
+                x$4$d = x$1$q;
+                r$4$d = r$1$q;
+                q$4$d = q$1$q;
+                rho$4$d = rho$1$q;
                 vx$4$d = vx$1$q;
                 vy$4$d = vy$1$q;
                 vz$4$d = vz$1$q;
+                x$5$d = x$2$q;
+                r$5$d = r$2$q;
+                q$5$d = q$2$q;
+                rho$5$d = rho$2$q;
                 vx$5$d = vx$2$q;
                 vy$5$d = vy$2$q;
                 vz$5$d = vz$2$q;
@@ -3589,12 +4680,24 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
                 crosses$2$d = crosses$1$q;
                 sign$2$d = maj_left$1;
                 exp$2$d = exp$1$q;
+                x$6$d = x$3$q;
+                r$6$d = r$3$q;
+                q$6$d = q$3$q;
+                rho$6$d = rho$3$q;
                 vx$6$d = vx$3$q;
                 vy$6$d = vy$3$q;
                 vz$6$d = vz$3$q;
+                x$7$d = x$4$q;
+                r$7$d = r$4$q;
+                q$7$d = q$4$q;
+                rho$7$d = rho$4$q;
                 vx$7$d = vx$4$q;
                 vy$7$d = vy$4$q;
                 vz$7$d = vz$4$q;
+                x$8$d = x$5$q;
+                r$8$d = r$5$q;
+                q$8$d = q$5$q;
+                rho$8$d = rho$5$q;
                 vx$8$d = vx$5$q;
                 vy$8$d = vy$5$q;
                 vz$8$d = vz$5$q;
@@ -3633,772 +4736,1412 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         act_r$0$clock = clock;
         act_r$0$d = 1'b0;
+        add_r$0$clock = clock;
+        add_r$0$d = 1'b0;
         if ((view$0 == 0) & (t$0$d == cyc$0)) begin
             act_r$0$d = 1'b1;
+        end
+        if ((view_add$0 == 0) & (t$0$d == cyc_add$0)) begin
+            add_r$0$d = 1'b1;
         end
         if ((view$0 == 1) & (t$1$d == cyc$0)) begin
             act_r$0$d = 1'b1;
         end
+        if ((view_add$0 == 1) & (t$1$d == cyc_add$0)) begin
+            add_r$0$d = 1'b1;
+        end
         if ((view$0 == 2) & (t$2$d == cyc$0)) begin
             act_r$0$d = 1'b1;
         end
-        act$0 = act_r$0$q & run;
+        if ((view_add$0 == 2) & (t$2$d == cyc_add$0)) begin
+            add_r$0$d = 1'b1;
+        end
         act_r$1$clock = clock;
         act_r$1$d = 1'b0;
+        add_r$1$clock = clock;
+        add_r$1$d = 1'b0;
         if ((view$1 == 0) & (t$0$d == cyc$1)) begin
             act_r$1$d = 1'b1;
+        end
+        if ((view_add$1 == 0) & (t$0$d == cyc_add$1)) begin
+            add_r$1$d = 1'b1;
         end
         if ((view$1 == 1) & (t$1$d == cyc$1)) begin
             act_r$1$d = 1'b1;
         end
+        if ((view_add$1 == 1) & (t$1$d == cyc_add$1)) begin
+            add_r$1$d = 1'b1;
+        end
         if ((view$1 == 2) & (t$2$d == cyc$1)) begin
             act_r$1$d = 1'b1;
         end
-        act$1 = act_r$1$q & run;
+        if ((view_add$1 == 2) & (t$2$d == cyc_add$1)) begin
+            add_r$1$d = 1'b1;
+        end
         act_r$2$clock = clock;
         act_r$2$d = 1'b0;
+        add_r$2$clock = clock;
+        add_r$2$d = 1'b0;
         if ((view$2 == 0) & (t$0$d == cyc$2)) begin
             act_r$2$d = 1'b1;
+        end
+        if ((view_add$2 == 0) & (t$0$d == cyc_add$2)) begin
+            add_r$2$d = 1'b1;
         end
         if ((view$2 == 1) & (t$1$d == cyc$2)) begin
             act_r$2$d = 1'b1;
         end
+        if ((view_add$2 == 1) & (t$1$d == cyc_add$2)) begin
+            add_r$2$d = 1'b1;
+        end
         if ((view$2 == 2) & (t$2$d == cyc$2)) begin
             act_r$2$d = 1'b1;
         end
-        act$2 = act_r$2$q & run;
+        if ((view_add$2 == 2) & (t$2$d == cyc_add$2)) begin
+            add_r$2$d = 1'b1;
+        end
         act_r$3$clock = clock;
         act_r$3$d = 1'b0;
+        add_r$3$clock = clock;
+        add_r$3$d = 1'b0;
         if ((view$3 == 0) & (t$0$d == cyc$3)) begin
             act_r$3$d = 1'b1;
+        end
+        if ((view_add$3 == 0) & (t$0$d == cyc_add$3)) begin
+            add_r$3$d = 1'b1;
         end
         if ((view$3 == 1) & (t$1$d == cyc$3)) begin
             act_r$3$d = 1'b1;
         end
+        if ((view_add$3 == 1) & (t$1$d == cyc_add$3)) begin
+            add_r$3$d = 1'b1;
+        end
         if ((view$3 == 2) & (t$2$d == cyc$3)) begin
             act_r$3$d = 1'b1;
         end
-        act$3 = act_r$3$q & run;
+        if ((view_add$3 == 2) & (t$2$d == cyc_add$3)) begin
+            add_r$3$d = 1'b1;
+        end
         act_r$4$clock = clock;
         act_r$4$d = 1'b0;
+        add_r$4$clock = clock;
+        add_r$4$d = 1'b0;
         if ((view$4 == 0) & (t$0$d == cyc$4)) begin
             act_r$4$d = 1'b1;
+        end
+        if ((view_add$4 == 0) & (t$0$d == cyc_add$4)) begin
+            add_r$4$d = 1'b1;
         end
         if ((view$4 == 1) & (t$1$d == cyc$4)) begin
             act_r$4$d = 1'b1;
         end
+        if ((view_add$4 == 1) & (t$1$d == cyc_add$4)) begin
+            add_r$4$d = 1'b1;
+        end
         if ((view$4 == 2) & (t$2$d == cyc$4)) begin
             act_r$4$d = 1'b1;
         end
-        act$4 = act_r$4$q & run;
+        if ((view_add$4 == 2) & (t$2$d == cyc_add$4)) begin
+            add_r$4$d = 1'b1;
+        end
         act_r$5$clock = clock;
         act_r$5$d = 1'b0;
+        add_r$5$clock = clock;
+        add_r$5$d = 1'b0;
         if ((view$5 == 0) & (t$0$d == cyc$5)) begin
             act_r$5$d = 1'b1;
+        end
+        if ((view_add$5 == 0) & (t$0$d == cyc_add$5)) begin
+            add_r$5$d = 1'b1;
         end
         if ((view$5 == 1) & (t$1$d == cyc$5)) begin
             act_r$5$d = 1'b1;
         end
+        if ((view_add$5 == 1) & (t$1$d == cyc_add$5)) begin
+            add_r$5$d = 1'b1;
+        end
         if ((view$5 == 2) & (t$2$d == cyc$5)) begin
             act_r$5$d = 1'b1;
         end
-        act$5 = act_r$5$q & run;
+        if ((view_add$5 == 2) & (t$2$d == cyc_add$5)) begin
+            add_r$5$d = 1'b1;
+        end
         act_r$6$clock = clock;
         act_r$6$d = 1'b0;
+        add_r$6$clock = clock;
+        add_r$6$d = 1'b0;
         if ((view$6 == 0) & (t$0$d == cyc$6)) begin
             act_r$6$d = 1'b1;
+        end
+        if ((view_add$6 == 0) & (t$0$d == cyc_add$6)) begin
+            add_r$6$d = 1'b1;
         end
         if ((view$6 == 1) & (t$1$d == cyc$6)) begin
             act_r$6$d = 1'b1;
         end
+        if ((view_add$6 == 1) & (t$1$d == cyc_add$6)) begin
+            add_r$6$d = 1'b1;
+        end
         if ((view$6 == 2) & (t$2$d == cyc$6)) begin
             act_r$6$d = 1'b1;
         end
-        act$6 = act_r$6$q & run;
+        if ((view_add$6 == 2) & (t$2$d == cyc_add$6)) begin
+            add_r$6$d = 1'b1;
+        end
         act_r$7$clock = clock;
         act_r$7$d = 1'b0;
+        add_r$7$clock = clock;
+        add_r$7$d = 1'b0;
         if ((view$7 == 0) & (t$0$d == cyc$7)) begin
             act_r$7$d = 1'b1;
+        end
+        if ((view_add$7 == 0) & (t$0$d == cyc_add$7)) begin
+            add_r$7$d = 1'b1;
         end
         if ((view$7 == 1) & (t$1$d == cyc$7)) begin
             act_r$7$d = 1'b1;
         end
+        if ((view_add$7 == 1) & (t$1$d == cyc_add$7)) begin
+            add_r$7$d = 1'b1;
+        end
         if ((view$7 == 2) & (t$2$d == cyc$7)) begin
             act_r$7$d = 1'b1;
         end
-        act$7 = act_r$7$q & run;
+        if ((view_add$7 == 2) & (t$2$d == cyc_add$7)) begin
+            add_r$7$d = 1'b1;
+        end
         act_r$8$clock = clock;
         act_r$8$d = 1'b0;
+        add_r$8$clock = clock;
+        add_r$8$d = 1'b0;
         if ((view$8 == 0) & (t$0$d == cyc$8)) begin
             act_r$8$d = 1'b1;
+        end
+        if ((view_add$8 == 0) & (t$0$d == cyc_add$8)) begin
+            add_r$8$d = 1'b1;
         end
         if ((view$8 == 1) & (t$1$d == cyc$8)) begin
             act_r$8$d = 1'b1;
         end
+        if ((view_add$8 == 1) & (t$1$d == cyc_add$8)) begin
+            add_r$8$d = 1'b1;
+        end
         if ((view$8 == 2) & (t$2$d == cyc$8)) begin
             act_r$8$d = 1'b1;
         end
-        act$8 = act_r$8$q & run;
+        if ((view_add$8 == 2) & (t$2$d == cyc_add$8)) begin
+            add_r$8$d = 1'b1;
+        end
         act_r$9$clock = clock;
         act_r$9$d = 1'b0;
+        add_r$9$clock = clock;
+        add_r$9$d = 1'b0;
         if ((view$9 == 0) & (t$0$d == cyc$9)) begin
             act_r$9$d = 1'b1;
+        end
+        if ((view_add$9 == 0) & (t$0$d == cyc_add$9)) begin
+            add_r$9$d = 1'b1;
         end
         if ((view$9 == 1) & (t$1$d == cyc$9)) begin
             act_r$9$d = 1'b1;
         end
+        if ((view_add$9 == 1) & (t$1$d == cyc_add$9)) begin
+            add_r$9$d = 1'b1;
+        end
         if ((view$9 == 2) & (t$2$d == cyc$9)) begin
             act_r$9$d = 1'b1;
         end
-        act$9 = act_r$9$q & run;
+        if ((view_add$9 == 2) & (t$2$d == cyc_add$9)) begin
+            add_r$9$d = 1'b1;
+        end
         act_r$10$clock = clock;
         act_r$10$d = 1'b0;
+        add_r$10$clock = clock;
+        add_r$10$d = 1'b0;
         if ((view$10 == 0) & (t$0$d == cyc$10)) begin
             act_r$10$d = 1'b1;
+        end
+        if ((view_add$10 == 0) & (t$0$d == cyc_add$10)) begin
+            add_r$10$d = 1'b1;
         end
         if ((view$10 == 1) & (t$1$d == cyc$10)) begin
             act_r$10$d = 1'b1;
         end
+        if ((view_add$10 == 1) & (t$1$d == cyc_add$10)) begin
+            add_r$10$d = 1'b1;
+        end
         if ((view$10 == 2) & (t$2$d == cyc$10)) begin
             act_r$10$d = 1'b1;
         end
-        act$10 = act_r$10$q & run;
+        if ((view_add$10 == 2) & (t$2$d == cyc_add$10)) begin
+            add_r$10$d = 1'b1;
+        end
         act_r$11$clock = clock;
         act_r$11$d = 1'b0;
+        add_r$11$clock = clock;
+        add_r$11$d = 1'b0;
         if ((view$11 == 0) & (t$0$d == cyc$11)) begin
             act_r$11$d = 1'b1;
+        end
+        if ((view_add$11 == 0) & (t$0$d == cyc_add$11)) begin
+            add_r$11$d = 1'b1;
         end
         if ((view$11 == 1) & (t$1$d == cyc$11)) begin
             act_r$11$d = 1'b1;
         end
+        if ((view_add$11 == 1) & (t$1$d == cyc_add$11)) begin
+            add_r$11$d = 1'b1;
+        end
         if ((view$11 == 2) & (t$2$d == cyc$11)) begin
             act_r$11$d = 1'b1;
         end
-        act$11 = act_r$11$q & run;
+        if ((view_add$11 == 2) & (t$2$d == cyc_add$11)) begin
+            add_r$11$d = 1'b1;
+        end
         act_r$12$clock = clock;
         act_r$12$d = 1'b0;
+        add_r$12$clock = clock;
+        add_r$12$d = 1'b0;
         if ((view$12 == 0) & (t$0$d == cyc$12)) begin
             act_r$12$d = 1'b1;
+        end
+        if ((view_add$12 == 0) & (t$0$d == cyc_add$12)) begin
+            add_r$12$d = 1'b1;
         end
         if ((view$12 == 1) & (t$1$d == cyc$12)) begin
             act_r$12$d = 1'b1;
         end
+        if ((view_add$12 == 1) & (t$1$d == cyc_add$12)) begin
+            add_r$12$d = 1'b1;
+        end
         if ((view$12 == 2) & (t$2$d == cyc$12)) begin
             act_r$12$d = 1'b1;
         end
-        act$12 = act_r$12$q & run;
+        if ((view_add$12 == 2) & (t$2$d == cyc_add$12)) begin
+            add_r$12$d = 1'b1;
+        end
         act_r$13$clock = clock;
         act_r$13$d = 1'b0;
+        add_r$13$clock = clock;
+        add_r$13$d = 1'b0;
         if ((view$13 == 0) & (t$0$d == cyc$13)) begin
             act_r$13$d = 1'b1;
+        end
+        if ((view_add$13 == 0) & (t$0$d == cyc_add$13)) begin
+            add_r$13$d = 1'b1;
         end
         if ((view$13 == 1) & (t$1$d == cyc$13)) begin
             act_r$13$d = 1'b1;
         end
+        if ((view_add$13 == 1) & (t$1$d == cyc_add$13)) begin
+            add_r$13$d = 1'b1;
+        end
         if ((view$13 == 2) & (t$2$d == cyc$13)) begin
             act_r$13$d = 1'b1;
         end
-        act$13 = act_r$13$q & run;
+        if ((view_add$13 == 2) & (t$2$d == cyc_add$13)) begin
+            add_r$13$d = 1'b1;
+        end
         act_r$14$clock = clock;
         act_r$14$d = 1'b0;
+        add_r$14$clock = clock;
+        add_r$14$d = 1'b0;
         if ((view$14 == 0) & (t$0$d == cyc$14)) begin
             act_r$14$d = 1'b1;
+        end
+        if ((view_add$14 == 0) & (t$0$d == cyc_add$14)) begin
+            add_r$14$d = 1'b1;
         end
         if ((view$14 == 1) & (t$1$d == cyc$14)) begin
             act_r$14$d = 1'b1;
         end
+        if ((view_add$14 == 1) & (t$1$d == cyc_add$14)) begin
+            add_r$14$d = 1'b1;
+        end
         if ((view$14 == 2) & (t$2$d == cyc$14)) begin
             act_r$14$d = 1'b1;
         end
-        act$14 = act_r$14$q & run;
+        if ((view_add$14 == 2) & (t$2$d == cyc_add$14)) begin
+            add_r$14$d = 1'b1;
+        end
         act_r$15$clock = clock;
         act_r$15$d = 1'b0;
+        add_r$15$clock = clock;
+        add_r$15$d = 1'b0;
         if ((view$15 == 0) & (t$0$d == cyc$15)) begin
             act_r$15$d = 1'b1;
+        end
+        if ((view_add$15 == 0) & (t$0$d == cyc_add$15)) begin
+            add_r$15$d = 1'b1;
         end
         if ((view$15 == 1) & (t$1$d == cyc$15)) begin
             act_r$15$d = 1'b1;
         end
+        if ((view_add$15 == 1) & (t$1$d == cyc_add$15)) begin
+            add_r$15$d = 1'b1;
+        end
         if ((view$15 == 2) & (t$2$d == cyc$15)) begin
             act_r$15$d = 1'b1;
         end
-        act$15 = act_r$15$q & run;
+        if ((view_add$15 == 2) & (t$2$d == cyc_add$15)) begin
+            add_r$15$d = 1'b1;
+        end
         act_r$16$clock = clock;
         act_r$16$d = 1'b0;
+        add_r$16$clock = clock;
+        add_r$16$d = 1'b0;
         if ((view$16 == 0) & (t$0$d == cyc$16)) begin
             act_r$16$d = 1'b1;
+        end
+        if ((view_add$16 == 0) & (t$0$d == cyc_add$16)) begin
+            add_r$16$d = 1'b1;
         end
         if ((view$16 == 1) & (t$1$d == cyc$16)) begin
             act_r$16$d = 1'b1;
         end
+        if ((view_add$16 == 1) & (t$1$d == cyc_add$16)) begin
+            add_r$16$d = 1'b1;
+        end
         if ((view$16 == 2) & (t$2$d == cyc$16)) begin
             act_r$16$d = 1'b1;
         end
-        act$16 = act_r$16$q & run;
+        if ((view_add$16 == 2) & (t$2$d == cyc_add$16)) begin
+            add_r$16$d = 1'b1;
+        end
         act_r$17$clock = clock;
         act_r$17$d = 1'b0;
+        add_r$17$clock = clock;
+        add_r$17$d = 1'b0;
         if ((view$17 == 0) & (t$0$d == cyc$17)) begin
             act_r$17$d = 1'b1;
+        end
+        if ((view_add$17 == 0) & (t$0$d == cyc_add$17)) begin
+            add_r$17$d = 1'b1;
         end
         if ((view$17 == 1) & (t$1$d == cyc$17)) begin
             act_r$17$d = 1'b1;
         end
+        if ((view_add$17 == 1) & (t$1$d == cyc_add$17)) begin
+            add_r$17$d = 1'b1;
+        end
         if ((view$17 == 2) & (t$2$d == cyc$17)) begin
             act_r$17$d = 1'b1;
         end
-        act$17 = act_r$17$q & run;
+        if ((view_add$17 == 2) & (t$2$d == cyc_add$17)) begin
+            add_r$17$d = 1'b1;
+        end
         act_r$18$clock = clock;
         act_r$18$d = 1'b0;
+        add_r$18$clock = clock;
+        add_r$18$d = 1'b0;
         if ((view$18 == 0) & (t$0$d == cyc$18)) begin
             act_r$18$d = 1'b1;
+        end
+        if ((view_add$18 == 0) & (t$0$d == cyc_add$18)) begin
+            add_r$18$d = 1'b1;
         end
         if ((view$18 == 1) & (t$1$d == cyc$18)) begin
             act_r$18$d = 1'b1;
         end
+        if ((view_add$18 == 1) & (t$1$d == cyc_add$18)) begin
+            add_r$18$d = 1'b1;
+        end
         if ((view$18 == 2) & (t$2$d == cyc$18)) begin
             act_r$18$d = 1'b1;
         end
-        act$18 = act_r$18$q & run;
+        if ((view_add$18 == 2) & (t$2$d == cyc_add$18)) begin
+            add_r$18$d = 1'b1;
+        end
         act_r$19$clock = clock;
         act_r$19$d = 1'b0;
+        add_r$19$clock = clock;
+        add_r$19$d = 1'b0;
         if ((view$19 == 0) & (t$0$d == cyc$19)) begin
             act_r$19$d = 1'b1;
+        end
+        if ((view_add$19 == 0) & (t$0$d == cyc_add$19)) begin
+            add_r$19$d = 1'b1;
         end
         if ((view$19 == 1) & (t$1$d == cyc$19)) begin
             act_r$19$d = 1'b1;
         end
+        if ((view_add$19 == 1) & (t$1$d == cyc_add$19)) begin
+            add_r$19$d = 1'b1;
+        end
         if ((view$19 == 2) & (t$2$d == cyc$19)) begin
             act_r$19$d = 1'b1;
         end
-        act$19 = act_r$19$q & run;
+        if ((view_add$19 == 2) & (t$2$d == cyc_add$19)) begin
+            add_r$19$d = 1'b1;
+        end
         act_r$20$clock = clock;
         act_r$20$d = 1'b0;
+        add_r$20$clock = clock;
+        add_r$20$d = 1'b0;
         if ((view$20 == 0) & (t$0$d == cyc$20)) begin
             act_r$20$d = 1'b1;
+        end
+        if ((view_add$20 == 0) & (t$0$d == cyc_add$20)) begin
+            add_r$20$d = 1'b1;
         end
         if ((view$20 == 1) & (t$1$d == cyc$20)) begin
             act_r$20$d = 1'b1;
         end
+        if ((view_add$20 == 1) & (t$1$d == cyc_add$20)) begin
+            add_r$20$d = 1'b1;
+        end
         if ((view$20 == 2) & (t$2$d == cyc$20)) begin
             act_r$20$d = 1'b1;
         end
-        act$20 = act_r$20$q & run;
+        if ((view_add$20 == 2) & (t$2$d == cyc_add$20)) begin
+            add_r$20$d = 1'b1;
+        end
         act_r$21$clock = clock;
         act_r$21$d = 1'b0;
+        add_r$21$clock = clock;
+        add_r$21$d = 1'b0;
         if ((view$21 == 0) & (t$0$d == cyc$21)) begin
             act_r$21$d = 1'b1;
+        end
+        if ((view_add$21 == 0) & (t$0$d == cyc_add$21)) begin
+            add_r$21$d = 1'b1;
         end
         if ((view$21 == 1) & (t$1$d == cyc$21)) begin
             act_r$21$d = 1'b1;
         end
+        if ((view_add$21 == 1) & (t$1$d == cyc_add$21)) begin
+            add_r$21$d = 1'b1;
+        end
         if ((view$21 == 2) & (t$2$d == cyc$21)) begin
             act_r$21$d = 1'b1;
         end
-        act$21 = act_r$21$q & run;
+        if ((view_add$21 == 2) & (t$2$d == cyc_add$21)) begin
+            add_r$21$d = 1'b1;
+        end
         act_r$22$clock = clock;
         act_r$22$d = 1'b0;
+        add_r$22$clock = clock;
+        add_r$22$d = 1'b0;
         if ((view$22 == 0) & (t$0$d == cyc$22)) begin
             act_r$22$d = 1'b1;
+        end
+        if ((view_add$22 == 0) & (t$0$d == cyc_add$22)) begin
+            add_r$22$d = 1'b1;
         end
         if ((view$22 == 1) & (t$1$d == cyc$22)) begin
             act_r$22$d = 1'b1;
         end
+        if ((view_add$22 == 1) & (t$1$d == cyc_add$22)) begin
+            add_r$22$d = 1'b1;
+        end
         if ((view$22 == 2) & (t$2$d == cyc$22)) begin
             act_r$22$d = 1'b1;
         end
-        act$22 = act_r$22$q & run;
+        if ((view_add$22 == 2) & (t$2$d == cyc_add$22)) begin
+            add_r$22$d = 1'b1;
+        end
         act_r$23$clock = clock;
         act_r$23$d = 1'b0;
+        add_r$23$clock = clock;
+        add_r$23$d = 1'b0;
         if ((view$23 == 0) & (t$0$d == cyc$23)) begin
             act_r$23$d = 1'b1;
+        end
+        if ((view_add$23 == 0) & (t$0$d == cyc_add$23)) begin
+            add_r$23$d = 1'b1;
         end
         if ((view$23 == 1) & (t$1$d == cyc$23)) begin
             act_r$23$d = 1'b1;
         end
+        if ((view_add$23 == 1) & (t$1$d == cyc_add$23)) begin
+            add_r$23$d = 1'b1;
+        end
         if ((view$23 == 2) & (t$2$d == cyc$23)) begin
             act_r$23$d = 1'b1;
         end
-        act$23 = act_r$23$q & run;
+        if ((view_add$23 == 2) & (t$2$d == cyc_add$23)) begin
+            add_r$23$d = 1'b1;
+        end
         act_r$24$clock = clock;
         act_r$24$d = 1'b0;
+        add_r$24$clock = clock;
+        add_r$24$d = 1'b0;
         if ((view$24 == 0) & (t$0$d == cyc$24)) begin
             act_r$24$d = 1'b1;
+        end
+        if ((view_add$24 == 0) & (t$0$d == cyc_add$24)) begin
+            add_r$24$d = 1'b1;
         end
         if ((view$24 == 1) & (t$1$d == cyc$24)) begin
             act_r$24$d = 1'b1;
         end
+        if ((view_add$24 == 1) & (t$1$d == cyc_add$24)) begin
+            add_r$24$d = 1'b1;
+        end
         if ((view$24 == 2) & (t$2$d == cyc$24)) begin
             act_r$24$d = 1'b1;
         end
-        act$24 = act_r$24$q & run;
+        if ((view_add$24 == 2) & (t$2$d == cyc_add$24)) begin
+            add_r$24$d = 1'b1;
+        end
         act_r$25$clock = clock;
         act_r$25$d = 1'b0;
+        add_r$25$clock = clock;
+        add_r$25$d = 1'b0;
         if ((view$25 == 0) & (t$0$d == cyc$25)) begin
             act_r$25$d = 1'b1;
+        end
+        if ((view_add$25 == 0) & (t$0$d == cyc_add$25)) begin
+            add_r$25$d = 1'b1;
         end
         if ((view$25 == 1) & (t$1$d == cyc$25)) begin
             act_r$25$d = 1'b1;
         end
+        if ((view_add$25 == 1) & (t$1$d == cyc_add$25)) begin
+            add_r$25$d = 1'b1;
+        end
         if ((view$25 == 2) & (t$2$d == cyc$25)) begin
             act_r$25$d = 1'b1;
         end
-        act$25 = act_r$25$q & run;
+        if ((view_add$25 == 2) & (t$2$d == cyc_add$25)) begin
+            add_r$25$d = 1'b1;
+        end
         act_r$26$clock = clock;
         act_r$26$d = 1'b0;
+        add_r$26$clock = clock;
+        add_r$26$d = 1'b0;
         if ((view$26 == 0) & (t$0$d == cyc$26)) begin
             act_r$26$d = 1'b1;
+        end
+        if ((view_add$26 == 0) & (t$0$d == cyc_add$26)) begin
+            add_r$26$d = 1'b1;
         end
         if ((view$26 == 1) & (t$1$d == cyc$26)) begin
             act_r$26$d = 1'b1;
         end
+        if ((view_add$26 == 1) & (t$1$d == cyc_add$26)) begin
+            add_r$26$d = 1'b1;
+        end
         if ((view$26 == 2) & (t$2$d == cyc$26)) begin
             act_r$26$d = 1'b1;
         end
-        act$26 = act_r$26$q & run;
+        if ((view_add$26 == 2) & (t$2$d == cyc_add$26)) begin
+            add_r$26$d = 1'b1;
+        end
         act_r$27$clock = clock;
         act_r$27$d = 1'b0;
+        add_r$27$clock = clock;
+        add_r$27$d = 1'b0;
         if ((view$27 == 0) & (t$0$d == cyc$27)) begin
             act_r$27$d = 1'b1;
+        end
+        if ((view_add$27 == 0) & (t$0$d == cyc_add$27)) begin
+            add_r$27$d = 1'b1;
         end
         if ((view$27 == 1) & (t$1$d == cyc$27)) begin
             act_r$27$d = 1'b1;
         end
+        if ((view_add$27 == 1) & (t$1$d == cyc_add$27)) begin
+            add_r$27$d = 1'b1;
+        end
         if ((view$27 == 2) & (t$2$d == cyc$27)) begin
             act_r$27$d = 1'b1;
         end
-        act$27 = act_r$27$q & run;
+        if ((view_add$27 == 2) & (t$2$d == cyc_add$27)) begin
+            add_r$27$d = 1'b1;
+        end
         act_r$28$clock = clock;
         act_r$28$d = 1'b0;
+        add_r$28$clock = clock;
+        add_r$28$d = 1'b0;
         if ((view$28 == 0) & (t$0$d == cyc$28)) begin
             act_r$28$d = 1'b1;
+        end
+        if ((view_add$28 == 0) & (t$0$d == cyc_add$28)) begin
+            add_r$28$d = 1'b1;
         end
         if ((view$28 == 1) & (t$1$d == cyc$28)) begin
             act_r$28$d = 1'b1;
         end
+        if ((view_add$28 == 1) & (t$1$d == cyc_add$28)) begin
+            add_r$28$d = 1'b1;
+        end
         if ((view$28 == 2) & (t$2$d == cyc$28)) begin
             act_r$28$d = 1'b1;
         end
-        act$28 = act_r$28$q & run;
+        if ((view_add$28 == 2) & (t$2$d == cyc_add$28)) begin
+            add_r$28$d = 1'b1;
+        end
         act_r$29$clock = clock;
         act_r$29$d = 1'b0;
+        add_r$29$clock = clock;
+        add_r$29$d = 1'b0;
         if ((view$29 == 0) & (t$0$d == cyc$29)) begin
             act_r$29$d = 1'b1;
+        end
+        if ((view_add$29 == 0) & (t$0$d == cyc_add$29)) begin
+            add_r$29$d = 1'b1;
         end
         if ((view$29 == 1) & (t$1$d == cyc$29)) begin
             act_r$29$d = 1'b1;
         end
+        if ((view_add$29 == 1) & (t$1$d == cyc_add$29)) begin
+            add_r$29$d = 1'b1;
+        end
         if ((view$29 == 2) & (t$2$d == cyc$29)) begin
             act_r$29$d = 1'b1;
         end
-        act$29 = act_r$29$q & run;
+        if ((view_add$29 == 2) & (t$2$d == cyc_add$29)) begin
+            add_r$29$d = 1'b1;
+        end
         act_r$30$clock = clock;
         act_r$30$d = 1'b0;
+        add_r$30$clock = clock;
+        add_r$30$d = 1'b0;
         if ((view$30 == 0) & (t$0$d == cyc$30)) begin
             act_r$30$d = 1'b1;
+        end
+        if ((view_add$30 == 0) & (t$0$d == cyc_add$30)) begin
+            add_r$30$d = 1'b1;
         end
         if ((view$30 == 1) & (t$1$d == cyc$30)) begin
             act_r$30$d = 1'b1;
         end
+        if ((view_add$30 == 1) & (t$1$d == cyc_add$30)) begin
+            add_r$30$d = 1'b1;
+        end
         if ((view$30 == 2) & (t$2$d == cyc$30)) begin
             act_r$30$d = 1'b1;
         end
-        act$30 = act_r$30$q & run;
+        if ((view_add$30 == 2) & (t$2$d == cyc_add$30)) begin
+            add_r$30$d = 1'b1;
+        end
         act_r$31$clock = clock;
         act_r$31$d = 1'b0;
+        add_r$31$clock = clock;
+        add_r$31$d = 1'b0;
         if ((view$31 == 0) & (t$0$d == cyc$31)) begin
             act_r$31$d = 1'b1;
+        end
+        if ((view_add$31 == 0) & (t$0$d == cyc_add$31)) begin
+            add_r$31$d = 1'b1;
         end
         if ((view$31 == 1) & (t$1$d == cyc$31)) begin
             act_r$31$d = 1'b1;
         end
+        if ((view_add$31 == 1) & (t$1$d == cyc_add$31)) begin
+            add_r$31$d = 1'b1;
+        end
         if ((view$31 == 2) & (t$2$d == cyc$31)) begin
             act_r$31$d = 1'b1;
         end
-        act$31 = act_r$31$q & run;
+        if ((view_add$31 == 2) & (t$2$d == cyc_add$31)) begin
+            add_r$31$d = 1'b1;
+        end
         act_r$32$clock = clock;
         act_r$32$d = 1'b0;
+        add_r$32$clock = clock;
+        add_r$32$d = 1'b0;
         if ((view$32 == 0) & (t$0$d == cyc$32)) begin
             act_r$32$d = 1'b1;
+        end
+        if ((view_add$32 == 0) & (t$0$d == cyc_add$32)) begin
+            add_r$32$d = 1'b1;
         end
         if ((view$32 == 1) & (t$1$d == cyc$32)) begin
             act_r$32$d = 1'b1;
         end
+        if ((view_add$32 == 1) & (t$1$d == cyc_add$32)) begin
+            add_r$32$d = 1'b1;
+        end
         if ((view$32 == 2) & (t$2$d == cyc$32)) begin
             act_r$32$d = 1'b1;
         end
-        act$32 = act_r$32$q & run;
+        if ((view_add$32 == 2) & (t$2$d == cyc_add$32)) begin
+            add_r$32$d = 1'b1;
+        end
         act_r$33$clock = clock;
         act_r$33$d = 1'b0;
+        add_r$33$clock = clock;
+        add_r$33$d = 1'b0;
         if ((view$33 == 0) & (t$0$d == cyc$33)) begin
             act_r$33$d = 1'b1;
+        end
+        if ((view_add$33 == 0) & (t$0$d == cyc_add$33)) begin
+            add_r$33$d = 1'b1;
         end
         if ((view$33 == 1) & (t$1$d == cyc$33)) begin
             act_r$33$d = 1'b1;
         end
+        if ((view_add$33 == 1) & (t$1$d == cyc_add$33)) begin
+            add_r$33$d = 1'b1;
+        end
         if ((view$33 == 2) & (t$2$d == cyc$33)) begin
             act_r$33$d = 1'b1;
         end
-        act$33 = act_r$33$q & run;
+        if ((view_add$33 == 2) & (t$2$d == cyc_add$33)) begin
+            add_r$33$d = 1'b1;
+        end
         act_r$34$clock = clock;
         act_r$34$d = 1'b0;
+        add_r$34$clock = clock;
+        add_r$34$d = 1'b0;
         if ((view$34 == 0) & (t$0$d == cyc$34)) begin
             act_r$34$d = 1'b1;
+        end
+        if ((view_add$34 == 0) & (t$0$d == cyc_add$34)) begin
+            add_r$34$d = 1'b1;
         end
         if ((view$34 == 1) & (t$1$d == cyc$34)) begin
             act_r$34$d = 1'b1;
         end
+        if ((view_add$34 == 1) & (t$1$d == cyc_add$34)) begin
+            add_r$34$d = 1'b1;
+        end
         if ((view$34 == 2) & (t$2$d == cyc$34)) begin
             act_r$34$d = 1'b1;
         end
-        act$34 = act_r$34$q & run;
+        if ((view_add$34 == 2) & (t$2$d == cyc_add$34)) begin
+            add_r$34$d = 1'b1;
+        end
         act_r$35$clock = clock;
         act_r$35$d = 1'b0;
+        add_r$35$clock = clock;
+        add_r$35$d = 1'b0;
         if ((view$35 == 0) & (t$0$d == cyc$35)) begin
             act_r$35$d = 1'b1;
+        end
+        if ((view_add$35 == 0) & (t$0$d == cyc_add$35)) begin
+            add_r$35$d = 1'b1;
         end
         if ((view$35 == 1) & (t$1$d == cyc$35)) begin
             act_r$35$d = 1'b1;
         end
+        if ((view_add$35 == 1) & (t$1$d == cyc_add$35)) begin
+            add_r$35$d = 1'b1;
+        end
         if ((view$35 == 2) & (t$2$d == cyc$35)) begin
             act_r$35$d = 1'b1;
         end
-        act$35 = act_r$35$q & run;
+        if ((view_add$35 == 2) & (t$2$d == cyc_add$35)) begin
+            add_r$35$d = 1'b1;
+        end
         act_r$36$clock = clock;
         act_r$36$d = 1'b0;
+        add_r$36$clock = clock;
+        add_r$36$d = 1'b0;
         if ((view$36 == 0) & (t$0$d == cyc$36)) begin
             act_r$36$d = 1'b1;
+        end
+        if ((view_add$36 == 0) & (t$0$d == cyc_add$36)) begin
+            add_r$36$d = 1'b1;
         end
         if ((view$36 == 1) & (t$1$d == cyc$36)) begin
             act_r$36$d = 1'b1;
         end
+        if ((view_add$36 == 1) & (t$1$d == cyc_add$36)) begin
+            add_r$36$d = 1'b1;
+        end
         if ((view$36 == 2) & (t$2$d == cyc$36)) begin
             act_r$36$d = 1'b1;
         end
-        act$36 = act_r$36$q & run;
+        if ((view_add$36 == 2) & (t$2$d == cyc_add$36)) begin
+            add_r$36$d = 1'b1;
+        end
         act_r$37$clock = clock;
         act_r$37$d = 1'b0;
+        add_r$37$clock = clock;
+        add_r$37$d = 1'b0;
         if ((view$37 == 0) & (t$0$d == cyc$37)) begin
             act_r$37$d = 1'b1;
+        end
+        if ((view_add$37 == 0) & (t$0$d == cyc_add$37)) begin
+            add_r$37$d = 1'b1;
         end
         if ((view$37 == 1) & (t$1$d == cyc$37)) begin
             act_r$37$d = 1'b1;
         end
+        if ((view_add$37 == 1) & (t$1$d == cyc_add$37)) begin
+            add_r$37$d = 1'b1;
+        end
         if ((view$37 == 2) & (t$2$d == cyc$37)) begin
             act_r$37$d = 1'b1;
         end
-        act$37 = act_r$37$q & run;
+        if ((view_add$37 == 2) & (t$2$d == cyc_add$37)) begin
+            add_r$37$d = 1'b1;
+        end
         act_r$38$clock = clock;
         act_r$38$d = 1'b0;
+        add_r$38$clock = clock;
+        add_r$38$d = 1'b0;
         if ((view$38 == 0) & (t$0$d == cyc$38)) begin
             act_r$38$d = 1'b1;
+        end
+        if ((view_add$38 == 0) & (t$0$d == cyc_add$38)) begin
+            add_r$38$d = 1'b1;
         end
         if ((view$38 == 1) & (t$1$d == cyc$38)) begin
             act_r$38$d = 1'b1;
         end
+        if ((view_add$38 == 1) & (t$1$d == cyc_add$38)) begin
+            add_r$38$d = 1'b1;
+        end
         if ((view$38 == 2) & (t$2$d == cyc$38)) begin
             act_r$38$d = 1'b1;
         end
-        act$38 = act_r$38$q & run;
+        if ((view_add$38 == 2) & (t$2$d == cyc_add$38)) begin
+            add_r$38$d = 1'b1;
+        end
         act_r$39$clock = clock;
         act_r$39$d = 1'b0;
+        add_r$39$clock = clock;
+        add_r$39$d = 1'b0;
         if ((view$39 == 0) & (t$0$d == cyc$39)) begin
             act_r$39$d = 1'b1;
+        end
+        if ((view_add$39 == 0) & (t$0$d == cyc_add$39)) begin
+            add_r$39$d = 1'b1;
         end
         if ((view$39 == 1) & (t$1$d == cyc$39)) begin
             act_r$39$d = 1'b1;
         end
+        if ((view_add$39 == 1) & (t$1$d == cyc_add$39)) begin
+            add_r$39$d = 1'b1;
+        end
         if ((view$39 == 2) & (t$2$d == cyc$39)) begin
             act_r$39$d = 1'b1;
         end
-        act$39 = act_r$39$q & run;
+        if ((view_add$39 == 2) & (t$2$d == cyc_add$39)) begin
+            add_r$39$d = 1'b1;
+        end
         act_r$40$clock = clock;
         act_r$40$d = 1'b0;
+        add_r$40$clock = clock;
+        add_r$40$d = 1'b0;
         if ((view$40 == 0) & (t$0$d == cyc$40)) begin
             act_r$40$d = 1'b1;
+        end
+        if ((view_add$40 == 0) & (t$0$d == cyc_add$40)) begin
+            add_r$40$d = 1'b1;
         end
         if ((view$40 == 1) & (t$1$d == cyc$40)) begin
             act_r$40$d = 1'b1;
         end
+        if ((view_add$40 == 1) & (t$1$d == cyc_add$40)) begin
+            add_r$40$d = 1'b1;
+        end
         if ((view$40 == 2) & (t$2$d == cyc$40)) begin
             act_r$40$d = 1'b1;
         end
-        act$40 = act_r$40$q & run;
+        if ((view_add$40 == 2) & (t$2$d == cyc_add$40)) begin
+            add_r$40$d = 1'b1;
+        end
         act_r$41$clock = clock;
         act_r$41$d = 1'b0;
+        add_r$41$clock = clock;
+        add_r$41$d = 1'b0;
         if ((view$41 == 0) & (t$0$d == cyc$41)) begin
             act_r$41$d = 1'b1;
+        end
+        if ((view_add$41 == 0) & (t$0$d == cyc_add$41)) begin
+            add_r$41$d = 1'b1;
         end
         if ((view$41 == 1) & (t$1$d == cyc$41)) begin
             act_r$41$d = 1'b1;
         end
+        if ((view_add$41 == 1) & (t$1$d == cyc_add$41)) begin
+            add_r$41$d = 1'b1;
+        end
         if ((view$41 == 2) & (t$2$d == cyc$41)) begin
             act_r$41$d = 1'b1;
         end
-        act$41 = act_r$41$q & run;
+        if ((view_add$41 == 2) & (t$2$d == cyc_add$41)) begin
+            add_r$41$d = 1'b1;
+        end
         act_r$42$clock = clock;
         act_r$42$d = 1'b0;
+        add_r$42$clock = clock;
+        add_r$42$d = 1'b0;
         if ((view$42 == 0) & (t$0$d == cyc$42)) begin
             act_r$42$d = 1'b1;
+        end
+        if ((view_add$42 == 0) & (t$0$d == cyc_add$42)) begin
+            add_r$42$d = 1'b1;
         end
         if ((view$42 == 1) & (t$1$d == cyc$42)) begin
             act_r$42$d = 1'b1;
         end
+        if ((view_add$42 == 1) & (t$1$d == cyc_add$42)) begin
+            add_r$42$d = 1'b1;
+        end
         if ((view$42 == 2) & (t$2$d == cyc$42)) begin
             act_r$42$d = 1'b1;
         end
-        act$42 = act_r$42$q & run;
+        if ((view_add$42 == 2) & (t$2$d == cyc_add$42)) begin
+            add_r$42$d = 1'b1;
+        end
         act_r$43$clock = clock;
         act_r$43$d = 1'b0;
+        add_r$43$clock = clock;
+        add_r$43$d = 1'b0;
         if ((view$43 == 0) & (t$0$d == cyc$43)) begin
             act_r$43$d = 1'b1;
+        end
+        if ((view_add$43 == 0) & (t$0$d == cyc_add$43)) begin
+            add_r$43$d = 1'b1;
         end
         if ((view$43 == 1) & (t$1$d == cyc$43)) begin
             act_r$43$d = 1'b1;
         end
+        if ((view_add$43 == 1) & (t$1$d == cyc_add$43)) begin
+            add_r$43$d = 1'b1;
+        end
         if ((view$43 == 2) & (t$2$d == cyc$43)) begin
             act_r$43$d = 1'b1;
         end
-        act$43 = act_r$43$q & run;
+        if ((view_add$43 == 2) & (t$2$d == cyc_add$43)) begin
+            add_r$43$d = 1'b1;
+        end
         act_r$44$clock = clock;
         act_r$44$d = 1'b0;
+        add_r$44$clock = clock;
+        add_r$44$d = 1'b0;
         if ((view$44 == 0) & (t$0$d == cyc$44)) begin
             act_r$44$d = 1'b1;
+        end
+        if ((view_add$44 == 0) & (t$0$d == cyc_add$44)) begin
+            add_r$44$d = 1'b1;
         end
         if ((view$44 == 1) & (t$1$d == cyc$44)) begin
             act_r$44$d = 1'b1;
         end
+        if ((view_add$44 == 1) & (t$1$d == cyc_add$44)) begin
+            add_r$44$d = 1'b1;
+        end
         if ((view$44 == 2) & (t$2$d == cyc$44)) begin
             act_r$44$d = 1'b1;
         end
-        act$44 = act_r$44$q & run;
+        if ((view_add$44 == 2) & (t$2$d == cyc_add$44)) begin
+            add_r$44$d = 1'b1;
+        end
         act_r$45$clock = clock;
         act_r$45$d = 1'b0;
+        add_r$45$clock = clock;
+        add_r$45$d = 1'b0;
         if ((view$45 == 0) & (t$0$d == cyc$45)) begin
             act_r$45$d = 1'b1;
+        end
+        if ((view_add$45 == 0) & (t$0$d == cyc_add$45)) begin
+            add_r$45$d = 1'b1;
         end
         if ((view$45 == 1) & (t$1$d == cyc$45)) begin
             act_r$45$d = 1'b1;
         end
+        if ((view_add$45 == 1) & (t$1$d == cyc_add$45)) begin
+            add_r$45$d = 1'b1;
+        end
         if ((view$45 == 2) & (t$2$d == cyc$45)) begin
             act_r$45$d = 1'b1;
         end
-        act$45 = act_r$45$q & run;
+        if ((view_add$45 == 2) & (t$2$d == cyc_add$45)) begin
+            add_r$45$d = 1'b1;
+        end
         act_r$46$clock = clock;
         act_r$46$d = 1'b0;
+        add_r$46$clock = clock;
+        add_r$46$d = 1'b0;
         if ((view$46 == 0) & (t$0$d == cyc$46)) begin
             act_r$46$d = 1'b1;
+        end
+        if ((view_add$46 == 0) & (t$0$d == cyc_add$46)) begin
+            add_r$46$d = 1'b1;
         end
         if ((view$46 == 1) & (t$1$d == cyc$46)) begin
             act_r$46$d = 1'b1;
         end
+        if ((view_add$46 == 1) & (t$1$d == cyc_add$46)) begin
+            add_r$46$d = 1'b1;
+        end
         if ((view$46 == 2) & (t$2$d == cyc$46)) begin
             act_r$46$d = 1'b1;
         end
-        act$46 = act_r$46$q & run;
+        if ((view_add$46 == 2) & (t$2$d == cyc_add$46)) begin
+            add_r$46$d = 1'b1;
+        end
         act_r$47$clock = clock;
         act_r$47$d = 1'b0;
+        add_r$47$clock = clock;
+        add_r$47$d = 1'b0;
         if ((view$47 == 0) & (t$0$d == cyc$47)) begin
             act_r$47$d = 1'b1;
+        end
+        if ((view_add$47 == 0) & (t$0$d == cyc_add$47)) begin
+            add_r$47$d = 1'b1;
         end
         if ((view$47 == 1) & (t$1$d == cyc$47)) begin
             act_r$47$d = 1'b1;
         end
+        if ((view_add$47 == 1) & (t$1$d == cyc_add$47)) begin
+            add_r$47$d = 1'b1;
+        end
         if ((view$47 == 2) & (t$2$d == cyc$47)) begin
             act_r$47$d = 1'b1;
         end
-        act$47 = act_r$47$q & run;
+        if ((view_add$47 == 2) & (t$2$d == cyc_add$47)) begin
+            add_r$47$d = 1'b1;
+        end
         act_r$48$clock = clock;
         act_r$48$d = 1'b0;
+        add_r$48$clock = clock;
+        add_r$48$d = 1'b0;
         if ((view$48 == 0) & (t$0$d == cyc$48)) begin
             act_r$48$d = 1'b1;
+        end
+        if ((view_add$48 == 0) & (t$0$d == cyc_add$48)) begin
+            add_r$48$d = 1'b1;
         end
         if ((view$48 == 1) & (t$1$d == cyc$48)) begin
             act_r$48$d = 1'b1;
         end
+        if ((view_add$48 == 1) & (t$1$d == cyc_add$48)) begin
+            add_r$48$d = 1'b1;
+        end
         if ((view$48 == 2) & (t$2$d == cyc$48)) begin
             act_r$48$d = 1'b1;
         end
-        act$48 = act_r$48$q & run;
+        if ((view_add$48 == 2) & (t$2$d == cyc_add$48)) begin
+            add_r$48$d = 1'b1;
+        end
         act_r$49$clock = clock;
         act_r$49$d = 1'b0;
+        add_r$49$clock = clock;
+        add_r$49$d = 1'b0;
         if ((view$49 == 0) & (t$0$d == cyc$49)) begin
             act_r$49$d = 1'b1;
+        end
+        if ((view_add$49 == 0) & (t$0$d == cyc_add$49)) begin
+            add_r$49$d = 1'b1;
         end
         if ((view$49 == 1) & (t$1$d == cyc$49)) begin
             act_r$49$d = 1'b1;
         end
+        if ((view_add$49 == 1) & (t$1$d == cyc_add$49)) begin
+            add_r$49$d = 1'b1;
+        end
         if ((view$49 == 2) & (t$2$d == cyc$49)) begin
             act_r$49$d = 1'b1;
         end
-        act$49 = act_r$49$q & run;
+        if ((view_add$49 == 2) & (t$2$d == cyc_add$49)) begin
+            add_r$49$d = 1'b1;
+        end
         act_r$50$clock = clock;
         act_r$50$d = 1'b0;
+        add_r$50$clock = clock;
+        add_r$50$d = 1'b0;
         if ((view$50 == 0) & (t$0$d == cyc$50)) begin
             act_r$50$d = 1'b1;
+        end
+        if ((view_add$50 == 0) & (t$0$d == cyc_add$50)) begin
+            add_r$50$d = 1'b1;
         end
         if ((view$50 == 1) & (t$1$d == cyc$50)) begin
             act_r$50$d = 1'b1;
         end
+        if ((view_add$50 == 1) & (t$1$d == cyc_add$50)) begin
+            add_r$50$d = 1'b1;
+        end
         if ((view$50 == 2) & (t$2$d == cyc$50)) begin
             act_r$50$d = 1'b1;
         end
-        act$50 = act_r$50$q & run;
+        if ((view_add$50 == 2) & (t$2$d == cyc_add$50)) begin
+            add_r$50$d = 1'b1;
+        end
         act_r$51$clock = clock;
         act_r$51$d = 1'b0;
+        add_r$51$clock = clock;
+        add_r$51$d = 1'b0;
         if ((view$51 == 0) & (t$0$d == cyc$51)) begin
             act_r$51$d = 1'b1;
+        end
+        if ((view_add$51 == 0) & (t$0$d == cyc_add$51)) begin
+            add_r$51$d = 1'b1;
         end
         if ((view$51 == 1) & (t$1$d == cyc$51)) begin
             act_r$51$d = 1'b1;
         end
+        if ((view_add$51 == 1) & (t$1$d == cyc_add$51)) begin
+            add_r$51$d = 1'b1;
+        end
         if ((view$51 == 2) & (t$2$d == cyc$51)) begin
             act_r$51$d = 1'b1;
         end
-        act$51 = act_r$51$q & run;
+        if ((view_add$51 == 2) & (t$2$d == cyc_add$51)) begin
+            add_r$51$d = 1'b1;
+        end
         act_r$52$clock = clock;
         act_r$52$d = 1'b0;
+        add_r$52$clock = clock;
+        add_r$52$d = 1'b0;
         if ((view$52 == 0) & (t$0$d == cyc$52)) begin
             act_r$52$d = 1'b1;
+        end
+        if ((view_add$52 == 0) & (t$0$d == cyc_add$52)) begin
+            add_r$52$d = 1'b1;
         end
         if ((view$52 == 1) & (t$1$d == cyc$52)) begin
             act_r$52$d = 1'b1;
         end
+        if ((view_add$52 == 1) & (t$1$d == cyc_add$52)) begin
+            add_r$52$d = 1'b1;
+        end
         if ((view$52 == 2) & (t$2$d == cyc$52)) begin
             act_r$52$d = 1'b1;
         end
-        act$52 = act_r$52$q & run;
+        if ((view_add$52 == 2) & (t$2$d == cyc_add$52)) begin
+            add_r$52$d = 1'b1;
+        end
         act_r$53$clock = clock;
         act_r$53$d = 1'b0;
+        add_r$53$clock = clock;
+        add_r$53$d = 1'b0;
         if ((view$53 == 0) & (t$0$d == cyc$53)) begin
             act_r$53$d = 1'b1;
+        end
+        if ((view_add$53 == 0) & (t$0$d == cyc_add$53)) begin
+            add_r$53$d = 1'b1;
         end
         if ((view$53 == 1) & (t$1$d == cyc$53)) begin
             act_r$53$d = 1'b1;
         end
+        if ((view_add$53 == 1) & (t$1$d == cyc_add$53)) begin
+            add_r$53$d = 1'b1;
+        end
         if ((view$53 == 2) & (t$2$d == cyc$53)) begin
             act_r$53$d = 1'b1;
         end
-        act$53 = act_r$53$q & run;
+        if ((view_add$53 == 2) & (t$2$d == cyc_add$53)) begin
+            add_r$53$d = 1'b1;
+        end
         act_r$54$clock = clock;
         act_r$54$d = 1'b0;
+        add_r$54$clock = clock;
+        add_r$54$d = 1'b0;
         if ((view$54 == 0) & (t$0$d == cyc$54)) begin
             act_r$54$d = 1'b1;
+        end
+        if ((view_add$54 == 0) & (t$0$d == cyc_add$54)) begin
+            add_r$54$d = 1'b1;
         end
         if ((view$54 == 1) & (t$1$d == cyc$54)) begin
             act_r$54$d = 1'b1;
         end
+        if ((view_add$54 == 1) & (t$1$d == cyc_add$54)) begin
+            add_r$54$d = 1'b1;
+        end
         if ((view$54 == 2) & (t$2$d == cyc$54)) begin
             act_r$54$d = 1'b1;
         end
-        act$54 = act_r$54$q & run;
+        if ((view_add$54 == 2) & (t$2$d == cyc_add$54)) begin
+            add_r$54$d = 1'b1;
+        end
         act_r$55$clock = clock;
         act_r$55$d = 1'b0;
+        add_r$55$clock = clock;
+        add_r$55$d = 1'b0;
         if ((view$55 == 0) & (t$0$d == cyc$55)) begin
             act_r$55$d = 1'b1;
+        end
+        if ((view_add$55 == 0) & (t$0$d == cyc_add$55)) begin
+            add_r$55$d = 1'b1;
         end
         if ((view$55 == 1) & (t$1$d == cyc$55)) begin
             act_r$55$d = 1'b1;
         end
+        if ((view_add$55 == 1) & (t$1$d == cyc_add$55)) begin
+            add_r$55$d = 1'b1;
+        end
         if ((view$55 == 2) & (t$2$d == cyc$55)) begin
             act_r$55$d = 1'b1;
         end
-        act$55 = act_r$55$q & run;
+        if ((view_add$55 == 2) & (t$2$d == cyc_add$55)) begin
+            add_r$55$d = 1'b1;
+        end
         act_r$56$clock = clock;
         act_r$56$d = 1'b0;
+        add_r$56$clock = clock;
+        add_r$56$d = 1'b0;
         if ((view$56 == 0) & (t$0$d == cyc$56)) begin
             act_r$56$d = 1'b1;
+        end
+        if ((view_add$56 == 0) & (t$0$d == cyc_add$56)) begin
+            add_r$56$d = 1'b1;
         end
         if ((view$56 == 1) & (t$1$d == cyc$56)) begin
             act_r$56$d = 1'b1;
         end
+        if ((view_add$56 == 1) & (t$1$d == cyc_add$56)) begin
+            add_r$56$d = 1'b1;
+        end
         if ((view$56 == 2) & (t$2$d == cyc$56)) begin
             act_r$56$d = 1'b1;
         end
-        act$56 = act_r$56$q & run;
+        if ((view_add$56 == 2) & (t$2$d == cyc_add$56)) begin
+            add_r$56$d = 1'b1;
+        end
         act_r$57$clock = clock;
         act_r$57$d = 1'b0;
+        add_r$57$clock = clock;
+        add_r$57$d = 1'b0;
         if ((view$57 == 0) & (t$0$d == cyc$57)) begin
             act_r$57$d = 1'b1;
+        end
+        if ((view_add$57 == 0) & (t$0$d == cyc_add$57)) begin
+            add_r$57$d = 1'b1;
         end
         if ((view$57 == 1) & (t$1$d == cyc$57)) begin
             act_r$57$d = 1'b1;
         end
+        if ((view_add$57 == 1) & (t$1$d == cyc_add$57)) begin
+            add_r$57$d = 1'b1;
+        end
         if ((view$57 == 2) & (t$2$d == cyc$57)) begin
             act_r$57$d = 1'b1;
         end
-        act$57 = act_r$57$q & run;
+        if ((view_add$57 == 2) & (t$2$d == cyc_add$57)) begin
+            add_r$57$d = 1'b1;
+        end
         act_r$58$clock = clock;
         act_r$58$d = 1'b0;
+        add_r$58$clock = clock;
+        add_r$58$d = 1'b0;
         if ((view$58 == 0) & (t$0$d == cyc$58)) begin
             act_r$58$d = 1'b1;
+        end
+        if ((view_add$58 == 0) & (t$0$d == cyc_add$58)) begin
+            add_r$58$d = 1'b1;
         end
         if ((view$58 == 1) & (t$1$d == cyc$58)) begin
             act_r$58$d = 1'b1;
         end
+        if ((view_add$58 == 1) & (t$1$d == cyc_add$58)) begin
+            add_r$58$d = 1'b1;
+        end
         if ((view$58 == 2) & (t$2$d == cyc$58)) begin
             act_r$58$d = 1'b1;
         end
-        act$58 = act_r$58$q & run;
+        if ((view_add$58 == 2) & (t$2$d == cyc_add$58)) begin
+            add_r$58$d = 1'b1;
+        end
         act_r$59$clock = clock;
         act_r$59$d = 1'b0;
+        add_r$59$clock = clock;
+        add_r$59$d = 1'b0;
         if ((view$59 == 0) & (t$0$d == cyc$59)) begin
             act_r$59$d = 1'b1;
+        end
+        if ((view_add$59 == 0) & (t$0$d == cyc_add$59)) begin
+            add_r$59$d = 1'b1;
         end
         if ((view$59 == 1) & (t$1$d == cyc$59)) begin
             act_r$59$d = 1'b1;
         end
+        if ((view_add$59 == 1) & (t$1$d == cyc_add$59)) begin
+            add_r$59$d = 1'b1;
+        end
         if ((view$59 == 2) & (t$2$d == cyc$59)) begin
             act_r$59$d = 1'b1;
         end
-        act$59 = act_r$59$q & run;
+        if ((view_add$59 == 2) & (t$2$d == cyc_add$59)) begin
+            add_r$59$d = 1'b1;
+        end
         act_r$60$clock = clock;
         act_r$60$d = 1'b0;
+        add_r$60$clock = clock;
+        add_r$60$d = 1'b0;
         if ((view$60 == 0) & (t$0$d == cyc$60)) begin
             act_r$60$d = 1'b1;
+        end
+        if ((view_add$60 == 0) & (t$0$d == cyc_add$60)) begin
+            add_r$60$d = 1'b1;
         end
         if ((view$60 == 1) & (t$1$d == cyc$60)) begin
             act_r$60$d = 1'b1;
         end
+        if ((view_add$60 == 1) & (t$1$d == cyc_add$60)) begin
+            add_r$60$d = 1'b1;
+        end
         if ((view$60 == 2) & (t$2$d == cyc$60)) begin
             act_r$60$d = 1'b1;
         end
-        act$60 = act_r$60$q & run;
+        if ((view_add$60 == 2) & (t$2$d == cyc_add$60)) begin
+            add_r$60$d = 1'b1;
+        end
         act_r$61$clock = clock;
         act_r$61$d = 1'b0;
+        add_r$61$clock = clock;
+        add_r$61$d = 1'b0;
         if ((view$61 == 0) & (t$0$d == cyc$61)) begin
             act_r$61$d = 1'b1;
+        end
+        if ((view_add$61 == 0) & (t$0$d == cyc_add$61)) begin
+            add_r$61$d = 1'b1;
         end
         if ((view$61 == 1) & (t$1$d == cyc$61)) begin
             act_r$61$d = 1'b1;
         end
+        if ((view_add$61 == 1) & (t$1$d == cyc_add$61)) begin
+            add_r$61$d = 1'b1;
+        end
         if ((view$61 == 2) & (t$2$d == cyc$61)) begin
             act_r$61$d = 1'b1;
         end
-        act$61 = act_r$61$q & run;
+        if ((view_add$61 == 2) & (t$2$d == cyc_add$61)) begin
+            add_r$61$d = 1'b1;
+        end
         act_r$62$clock = clock;
         act_r$62$d = 1'b0;
+        add_r$62$clock = clock;
+        add_r$62$d = 1'b0;
         if ((view$62 == 0) & (t$0$d == cyc$62)) begin
             act_r$62$d = 1'b1;
+        end
+        if ((view_add$62 == 0) & (t$0$d == cyc_add$62)) begin
+            add_r$62$d = 1'b1;
         end
         if ((view$62 == 1) & (t$1$d == cyc$62)) begin
             act_r$62$d = 1'b1;
         end
+        if ((view_add$62 == 1) & (t$1$d == cyc_add$62)) begin
+            add_r$62$d = 1'b1;
+        end
         if ((view$62 == 2) & (t$2$d == cyc$62)) begin
             act_r$62$d = 1'b1;
         end
-        act$62 = act_r$62$q & run;
+        if ((view_add$62 == 2) & (t$2$d == cyc_add$62)) begin
+            add_r$62$d = 1'b1;
+        end
         act_r$63$clock = clock;
         act_r$63$d = 1'b0;
+        add_r$63$clock = clock;
+        add_r$63$d = 1'b0;
         if ((view$63 == 0) & (t$0$d == cyc$63)) begin
             act_r$63$d = 1'b1;
+        end
+        if ((view_add$63 == 0) & (t$0$d == cyc_add$63)) begin
+            add_r$63$d = 1'b1;
         end
         if ((view$63 == 1) & (t$1$d == cyc$63)) begin
             act_r$63$d = 1'b1;
         end
+        if ((view_add$63 == 1) & (t$1$d == cyc_add$63)) begin
+            add_r$63$d = 1'b1;
+        end
         if ((view$63 == 2) & (t$2$d == cyc$63)) begin
             act_r$63$d = 1'b1;
         end
-        act$63 = act_r$63$q & run;
+        if ((view_add$63 == 2) & (t$2$d == cyc_add$63)) begin
+            add_r$63$d = 1'b1;
+        end
         norm_r$d = t$0$d == normalise;
         at_norm = norm_r$q & run;
         iss_r$0$clock = clock;
@@ -4518,7 +6261,17 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         end
         at_handover = handover_r$q & run;
         valid_r$d = t$2$d == last;
-        busy_r$d = (t$0$d != 32'h0) & (t$0$d != ends$0);
+        busy_r$d = 1'b0;
+        if (t$0$d != 32'h0) begin
+            busy_r$d = 1'b1;
+        end
+        if (t$1$d != 32'h0) begin
+            busy_r$d = 1'b1;
+        end
+        if (t$2$d != 32'h0) begin
+            busy_r$d = 1'b1;
+        end
+        off_grid_r$d = phase$d != 32'h0;
         g0$vx$0 = vx$0$q;
         g0$vy$0 = vy$0$q;
         g0$vz$0 = vz$0$q;
@@ -4545,15 +6298,15 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         g1$vx$0 = vx$3$q;
         g1$vy$0 = vy$3$q;
         g1$vz$0 = vz$3$q;
-        g1$start_x$0 = x$0$q;
+        g1$start_x$0 = x$3$q;
         g1$vx$1 = vx$4$q;
         g1$vy$1 = vy$4$q;
         g1$vz$1 = vz$4$q;
-        g1$start_x$1 = x$1$q;
+        g1$start_x$1 = x$4$q;
         g1$vx$2 = vx$5$q;
         g1$vy$2 = vy$5$q;
         g1$vz$2 = vz$5$q;
-        g1$start_x$2 = x$2$q;
+        g1$start_x$2 = x$5$q;
         g1$vc$0 = vc$9$q;
         g1$vc$1 = vc$10$q;
         g1$vc$2 = vc$11$q;
@@ -4568,15 +6321,15 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         g2$vx$0 = vx$6$q;
         g2$vy$0 = vy$6$q;
         g2$vz$0 = vz$6$q;
-        g2$start_x$0 = x$0$q;
+        g2$start_x$0 = x$6$q;
         g2$vx$1 = vx$7$q;
         g2$vy$1 = vy$7$q;
         g2$vz$1 = vz$7$q;
-        g2$start_x$1 = x$1$q;
+        g2$start_x$1 = x$7$q;
         g2$vx$2 = vx$8$q;
         g2$vy$2 = vy$8$q;
         g2$vz$2 = vz$8$q;
-        g2$start_x$2 = x$2$q;
+        g2$start_x$2 = x$8$q;
         g2$vc$0 = vc$18$q;
         g2$vc$1 = vc$19$q;
         g2$vc$2 = vc$20$q;
@@ -4591,15 +6344,15 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         g3$vx$0 = vx$9$q;
         g3$vy$0 = vy$9$q;
         g3$vz$0 = vz$9$q;
-        g3$start_x$0 = x$0$q;
+        g3$start_x$0 = x$9$q;
         g3$vx$1 = vx$10$q;
         g3$vy$1 = vy$10$q;
         g3$vz$1 = vz$10$q;
-        g3$start_x$1 = x$1$q;
+        g3$start_x$1 = x$10$q;
         g3$vx$2 = vx$11$q;
         g3$vy$2 = vy$11$q;
         g3$vz$2 = vz$11$q;
-        g3$start_x$2 = x$2$q;
+        g3$start_x$2 = x$11$q;
         g3$vc$0 = vc$27$q;
         g3$vc$1 = vc$28$q;
         g3$vc$2 = vc$29$q;
@@ -4788,30 +6541,22 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             q_n = ((div$out_q[(32'h0)+:(19)]) & 19'h7ffff) | q_ext;
         end
         r_pos = div$out_r != 32'h0;
-        mant_now = mant$q;
-        exp_now = exp_e$q;
+        exp_r = exp$0$q;
+        if (view_res$0 == 1) begin
+            exp_r = exp$1$q;
+        end
+        if (view_res$0 == 2) begin
+            exp_r = exp$2$q;
+        end
+        lsh = eq_shift - exp_r;
         if (at_res$0) begin
-            mant_now = div$out_q[(32'h0)+:(25)];
-            mant$d = div$out_q[(32'h0)+:(25)];
-            if (view_res$0 == 0) begin
-                exp_now = exp$0$q;
-                exp_e$d = exp$0$q;
-            end
-            if (view_res$0 == 1) begin
-                exp_now = exp$1$q;
-                exp_e$d = exp$1$q;
-            end
-            if (view_res$0 == 2) begin
-                exp_now = exp$2$q;
-                exp_e$d = exp$2$q;
+            exp_e$d = exp_r;
+            mant_s$d = ((div$out_q[(32'h0)+:(25)]) & 57'h1ffffffffffffff);
+            if (exp_r <= eq_shift) begin
+                mant_s$d = ((div$out_q[(32'h0)+:(25)]) & 57'h1ffffffffffffff) << lsh;
             end
         end
-        lsh = eq_shift - exp_now;
-        rsh = exp_now - eq_shift;
-        mant_a = ((mant_now) & 57'h1ffffffffffffff);
-        if (exp_now <= eq_shift) begin
-            mant_a = ((mant_now) & 57'h1ffffffffffffff) << lsh;
-        end
+        rsh = exp_e$q - eq_shift;
         xi$0 = g0$xi$0;
         ed$0 = g0$ed16$0[(32'h0)+:(21)];
         if (view_res$1 == 32'h1) begin
@@ -4826,16 +6571,38 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             xi$0 = g3$xi$0;
             ed$0 = g3$ed16$0[(32'h0)+:(21)];
         end
-        if (at_res$1) begin
+        if (at_res$1 & (view_res_w$1 == 0)) begin
             x$0$d = xi$0 + q_n + r_pos;
             r$0$d = 32'h0;
             if (r_pos) begin
                 r$0$d = ed$0 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$2) begin
+        if (at_res$2 & (view_res_w$2 == 0)) begin
             q$0$d = q_n;
             rho$0$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (at_res$1 & (view_res_w$1 == 1)) begin
+            x$3$d = xi$0 + q_n + r_pos;
+            r$3$d = 32'h0;
+            if (r_pos) begin
+                r$3$d = ed$0 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$2 & (view_res_w$2 == 1)) begin
+            q$3$d = q_n;
+            rho$3$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (at_res$1 & (view_res_w$1 == 2)) begin
+            x$6$d = xi$0 + q_n + r_pos;
+            r$6$d = 32'h0;
+            if (r_pos) begin
+                r$6$d = ed$0 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$2 & (view_res_w$2 == 2)) begin
+            q$6$d = q_n;
+            rho$6$d = div$out_r[(32'h0)+:(21)] << frac;
         end
         xi$1 = g0$xi$1;
         ed$1 = g0$ed16$1[(32'h0)+:(21)];
@@ -4851,16 +6618,38 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             xi$1 = g3$xi$1;
             ed$1 = g3$ed16$1[(32'h0)+:(21)];
         end
-        if (at_res$3) begin
+        if (at_res$3 & (view_res_w$3 == 0)) begin
             x$1$d = xi$1 + q_n + r_pos;
             r$1$d = 32'h0;
             if (r_pos) begin
                 r$1$d = ed$1 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$4) begin
+        if (at_res$4 & (view_res_w$4 == 0)) begin
             q$1$d = q_n;
             rho$1$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (at_res$3 & (view_res_w$3 == 1)) begin
+            x$4$d = xi$1 + q_n + r_pos;
+            r$4$d = 32'h0;
+            if (r_pos) begin
+                r$4$d = ed$1 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$4 & (view_res_w$4 == 1)) begin
+            q$4$d = q_n;
+            rho$4$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (at_res$3 & (view_res_w$3 == 2)) begin
+            x$7$d = xi$1 + q_n + r_pos;
+            r$7$d = 32'h0;
+            if (r_pos) begin
+                r$7$d = ed$1 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$4 & (view_res_w$4 == 2)) begin
+            q$7$d = q_n;
+            rho$7$d = div$out_r[(32'h0)+:(21)] << frac;
         end
         xi$2 = g0$xi$2;
         ed$2 = g0$ed16$2[(32'h0)+:(21)];
@@ -4876,16 +6665,38 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             xi$2 = g3$xi$2;
             ed$2 = g3$ed16$2[(32'h0)+:(21)];
         end
-        if (at_res$5) begin
+        if (at_res$5 & (view_res_w$5 == 0)) begin
             x$2$d = xi$2 + q_n + r_pos;
             r$2$d = 32'h0;
             if (r_pos) begin
                 r$2$d = ed$2 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$6) begin
+        if (at_res$6 & (view_res_w$6 == 0)) begin
             q$2$d = q_n;
             rho$2$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (at_res$5 & (view_res_w$5 == 1)) begin
+            x$5$d = xi$2 + q_n + r_pos;
+            r$5$d = 32'h0;
+            if (r_pos) begin
+                r$5$d = ed$2 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$6 & (view_res_w$6 == 1)) begin
+            q$5$d = q_n;
+            rho$5$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (at_res$5 & (view_res_w$5 == 2)) begin
+            x$8$d = xi$2 + q_n + r_pos;
+            r$8$d = 32'h0;
+            if (r_pos) begin
+                r$8$d = ed$2 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$6 & (view_res_w$6 == 2)) begin
+            q$8$d = q_n;
+            rho$8$d = div$out_r[(32'h0)+:(21)] << frac;
         end
         mul$0$a = 32'h0;
         mul$0$b = 32'h0;
@@ -5533,2489 +7344,3490 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (view_handover == 32'h3) begin
             attr0$3 = g3$attr0$3;
         end
-        if ((lane$0 == 0) & act$0) begin
+        op_q$0 = q$0$q;
+        if (view$30 == 1) begin
+            op_q$0 = q$3$q;
+        end
+        if (view$30 == 2) begin
+            op_q$0 = q$6$q;
+        end
+        op_q$1 = q$0$q;
+        if (view$33 == 1) begin
+            op_q$1 = q$3$q;
+        end
+        if (view$33 == 2) begin
+            op_q$1 = q$6$q;
+        end
+        op_q$2 = q$0$q;
+        if (view$36 == 1) begin
+            op_q$2 = q$3$q;
+        end
+        if (view$36 == 2) begin
+            op_q$2 = q$6$q;
+        end
+        op_q$3 = q$0$q;
+        if (view$39 == 1) begin
+            op_q$3 = q$3$q;
+        end
+        if (view$39 == 2) begin
+            op_q$3 = q$6$q;
+        end
+        op_q$4 = q$1$q;
+        if (view$42 == 1) begin
+            op_q$4 = q$4$q;
+        end
+        if (view$42 == 2) begin
+            op_q$4 = q$7$q;
+        end
+        op_q$5 = q$1$q;
+        if (view$45 == 1) begin
+            op_q$5 = q$4$q;
+        end
+        if (view$45 == 2) begin
+            op_q$5 = q$7$q;
+        end
+        op_q$6 = q$1$q;
+        if (view$48 == 1) begin
+            op_q$6 = q$4$q;
+        end
+        if (view$48 == 2) begin
+            op_q$6 = q$7$q;
+        end
+        op_q$7 = q$1$q;
+        if (view$51 == 1) begin
+            op_q$7 = q$4$q;
+        end
+        if (view$51 == 2) begin
+            op_q$7 = q$7$q;
+        end
+        op_q$8 = q$2$q;
+        if (view$54 == 1) begin
+            op_q$8 = q$5$q;
+        end
+        if (view$54 == 2) begin
+            op_q$8 = q$8$q;
+        end
+        op_q$9 = q$2$q;
+        if (view$57 == 1) begin
+            op_q$9 = q$5$q;
+        end
+        if (view$57 == 2) begin
+            op_q$9 = q$8$q;
+        end
+        op_q$10 = q$2$q;
+        if (view$60 == 1) begin
+            op_q$10 = q$5$q;
+        end
+        if (view$60 == 2) begin
+            op_q$10 = q$8$q;
+        end
+        op_q$11 = q$2$q;
+        if (view$63 == 1) begin
+            op_q$11 = q$5$q;
+        end
+        if (view$63 == 2) begin
+            op_q$11 = q$8$q;
+        end
+        mul$0$en = run;
+        if ((lane$0 == 0) & act_r$0$q) begin
             mul$0$a = g0$kdx$0[(32'h0)+:(57)];
             mul$0$b = g0$kdy$1[(32'h0)+:(19)];
-            pa$0 = mul$0$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 0) & act$1) begin
+        if ((lane$1 == 0) & act_r$1$q) begin
             mul$0$a = g0$kdx$1[(32'h0)+:(57)];
             mul$0$b = g0$kdy$0[(32'h0)+:(19)];
+        end
+        if ((lane$0 == 0) & add_r$0$q) begin
+            pa$0 = mul$0$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 0) & add_r$1$q) begin
             pa$1 = mul$0$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 0) & act$2) begin
+        if ((lane$2 == 0) & act_r$2$q) begin
             mul$0$a = g0$edy$0;
             mul$0$b = g0$xf$0;
-            pn$0 = mul$0$p;
         end
-        if ((lane$3 == 0) & act$3) begin
+        if ((lane$3 == 0) & act_r$3$q) begin
             mul$0$a = g0$edx$0[(32'h0)+:(57)];
             mul$0$b = g0$toff$0;
-            pn$1 = mul$0$p;
         end
-        if ((lane$4 == 0) & act$4) begin
+        if ((lane$4 == 0) & act_r$4$q) begin
             mul$0$a = g0$edy$1;
             mul$0$b = g0$xf$1;
-            pn$2 = mul$0$p;
         end
-        if ((lane$5 == 0) & act$5) begin
+        if ((lane$5 == 0) & act_r$5$q) begin
             mul$0$a = g0$edx$1[(32'h0)+:(57)];
             mul$0$b = g0$toff$1;
-            pn$3 = mul$0$p;
         end
-        if ((lane$6 == 0) & act$6) begin
+        if ((lane$6 == 0) & act_r$6$q) begin
             mul$0$a = g0$edy$2;
             mul$0$b = g0$xf$2;
-            pn$4 = mul$0$p;
         end
-        if ((lane$7 == 0) & act$7) begin
+        if ((lane$7 == 0) & act_r$7$q) begin
             mul$0$a = g0$edx$2[(32'h0)+:(57)];
             mul$0$b = g0$toff$2;
+        end
+        if ((lane$2 == 0) & add_r$2$q) begin
+            pn$0 = mul$0$p;
+        end
+        if ((lane$3 == 0) & add_r$3$q) begin
+            pn$1 = mul$0$p;
+        end
+        if ((lane$4 == 0) & add_r$4$q) begin
+            pn$2 = mul$0$p;
+        end
+        if ((lane$5 == 0) & add_r$5$q) begin
+            pn$3 = mul$0$p;
+        end
+        if ((lane$6 == 0) & add_r$6$q) begin
+            pn$4 = mul$0$p;
+        end
+        if ((lane$7 == 0) & add_r$7$q) begin
             pn$5 = mul$0$p;
         end
-        if ((lane$8 == 0) & act$8) begin
-            mul$0$a = mant_a;
+        if ((lane$8 == 0) & act_r$8$q) begin
+            mul$0$a = mant_s$q;
             mul$0$b = op_e$0;
+        end
+        if ((lane$8 == 0) & add_r$8$q) begin
             pe$0 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 0) & act$9) begin
-            mul$0$a = mant_a;
+        if ((lane$9 == 0) & act_r$9$q) begin
+            mul$0$a = mant_s$q;
             mul$0$b = op_e$1;
+        end
+        if ((lane$9 == 0) & add_r$9$q) begin
             pe$1 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 0) & act$10) begin
-            mul$0$a = mant_a;
+        if ((lane$10 == 0) & act_r$10$q) begin
+            mul$0$a = mant_s$q;
             mul$0$b = op_e$2;
+        end
+        if ((lane$10 == 0) & add_r$10$q) begin
             pe$2 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 0) & act$11) begin
-            mul$0$a = mant_a;
+        if ((lane$11 == 0) & act_r$11$q) begin
+            mul$0$a = mant_s$q;
             mul$0$b = op_e$3;
+        end
+        if ((lane$11 == 0) & add_r$11$q) begin
             pe$3 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 0) & act$12) begin
+        if ((lane$12 == 0) & act_r$12$q) begin
             mul$0$a = p$3$q;
             mul$0$b = op_g$0;
-            pg$0 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 0) & act$13) begin
+        if ((lane$13 == 0) & act_r$13$q) begin
             mul$0$a = p$2$q;
             mul$0$b = op_g$1;
-            pg$1 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 0) & act$14) begin
+        if ((lane$14 == 0) & act_r$14$q) begin
             mul$0$a = p$0$q;
             mul$0$b = op_g$2;
-            pg$2 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 0) & act$15) begin
+        if ((lane$15 == 0) & act_r$15$q) begin
             mul$0$a = p$1$q;
             mul$0$b = op_g$3;
-            pg$3 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 0) & act$16) begin
+        if ((lane$16 == 0) & act_r$16$q) begin
             mul$0$a = p$3$q;
             mul$0$b = op_g$4;
-            pg$4 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 0) & act$17) begin
+        if ((lane$17 == 0) & act_r$17$q) begin
             mul$0$a = p$2$q;
             mul$0$b = op_g$5;
-            pg$5 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 0) & act$18) begin
+        if ((lane$18 == 0) & act_r$18$q) begin
             mul$0$a = p$0$q;
             mul$0$b = op_g$6;
-            pg$6 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 0) & act$19) begin
+        if ((lane$19 == 0) & act_r$19$q) begin
             mul$0$a = p$1$q;
             mul$0$b = op_g$7;
-            pg$7 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 0) & act$20) begin
+        if ((lane$20 == 0) & act_r$20$q) begin
             mul$0$a = p$3$q;
             mul$0$b = op_g$8;
-            pg$8 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 0) & act$21) begin
+        if ((lane$21 == 0) & act_r$21$q) begin
             mul$0$a = p$2$q;
             mul$0$b = op_g$9;
-            pg$9 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 0) & act$22) begin
+        if ((lane$22 == 0) & act_r$22$q) begin
             mul$0$a = p$0$q;
             mul$0$b = op_g$10;
-            pg$10 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 0) & act$23) begin
+        if ((lane$23 == 0) & act_r$23$q) begin
             mul$0$a = p$1$q;
             mul$0$b = op_g$11;
-            pg$11 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 0) & act$24) begin
+        if ((lane$24 == 0) & act_r$24$q) begin
             mul$0$a = p$3$q;
             mul$0$b = op_g$12;
-            pg$12 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 0) & act$25) begin
+        if ((lane$25 == 0) & act_r$25$q) begin
             mul$0$a = p$2$q;
             mul$0$b = op_g$13;
-            pg$13 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 0) & act$26) begin
+        if ((lane$26 == 0) & act_r$26$q) begin
             mul$0$a = p$0$q;
             mul$0$b = op_g$14;
-            pg$14 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 0) & act$27) begin
+        if ((lane$27 == 0) & act_r$27$q) begin
             mul$0$a = p$1$q;
             mul$0$b = op_g$15;
+        end
+        if ((lane$12 == 0) & add_r$12$q) begin
+            pg$0 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 0) & add_r$13$q) begin
+            pg$1 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 0) & add_r$14$q) begin
+            pg$2 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 0) & add_r$15$q) begin
+            pg$3 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 0) & add_r$16$q) begin
+            pg$4 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 0) & add_r$17$q) begin
+            pg$5 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 0) & add_r$18$q) begin
+            pg$6 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 0) & add_r$19$q) begin
+            pg$7 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 0) & add_r$20$q) begin
+            pg$8 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 0) & add_r$21$q) begin
+            pg$9 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 0) & add_r$22$q) begin
+            pg$10 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 0) & add_r$23$q) begin
+            pg$11 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 0) & add_r$24$q) begin
+            pg$12 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 0) & add_r$25$q) begin
+            pg$13 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 0) & add_r$26$q) begin
+            pg$14 = mul$0$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 0) & add_r$27$q) begin
             pg$15 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 0) & act$28) begin
+        if ((lane$28 == 0) & act_r$28$q) begin
             mul$0$a = ddx$0;
             mul$0$b = op_s$0;
-            ps$0 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 0) & act$29) begin
+        if ((lane$29 == 0) & act_r$29$q) begin
             mul$0$a = ddy$0;
             mul$0$b = op_s$1;
-            ps$1 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 0) & act$30) begin
+        if ((lane$30 == 0) & act_r$30$q) begin
             mul$0$a = ddx$0;
-            mul$0$b = q$0$q;
-            ps$2 = mul$0$p[(32'h0)+:(40)];
+            mul$0$b = op_q$0;
         end
-        if ((lane$31 == 0) & act$31) begin
+        if ((lane$31 == 0) & act_r$31$q) begin
             mul$0$a = ddx$1;
             mul$0$b = op_s$2;
-            ps$3 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 0) & act$32) begin
+        if ((lane$32 == 0) & act_r$32$q) begin
             mul$0$a = ddy$1;
             mul$0$b = op_s$3;
-            ps$4 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 0) & act$33) begin
+        if ((lane$33 == 0) & act_r$33$q) begin
             mul$0$a = ddx$1;
-            mul$0$b = q$0$q;
-            ps$5 = mul$0$p[(32'h0)+:(40)];
+            mul$0$b = op_q$1;
         end
-        if ((lane$34 == 0) & act$34) begin
+        if ((lane$34 == 0) & act_r$34$q) begin
             mul$0$a = ddx$2;
             mul$0$b = op_s$4;
-            ps$6 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 0) & act$35) begin
+        if ((lane$35 == 0) & act_r$35$q) begin
             mul$0$a = ddy$2;
             mul$0$b = op_s$5;
-            ps$7 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 0) & act$36) begin
+        if ((lane$36 == 0) & act_r$36$q) begin
             mul$0$a = ddx$2;
-            mul$0$b = q$0$q;
-            ps$8 = mul$0$p[(32'h0)+:(40)];
+            mul$0$b = op_q$2;
         end
-        if ((lane$37 == 0) & act$37) begin
+        if ((lane$37 == 0) & act_r$37$q) begin
             mul$0$a = ddx$3;
             mul$0$b = op_s$6;
-            ps$9 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 0) & act$38) begin
+        if ((lane$38 == 0) & act_r$38$q) begin
             mul$0$a = ddy$3;
             mul$0$b = op_s$7;
-            ps$10 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 0) & act$39) begin
+        if ((lane$39 == 0) & act_r$39$q) begin
             mul$0$a = ddx$3;
-            mul$0$b = q$0$q;
-            ps$11 = mul$0$p[(32'h0)+:(40)];
+            mul$0$b = op_q$3;
         end
-        if ((lane$40 == 0) & act$40) begin
+        if ((lane$40 == 0) & act_r$40$q) begin
             mul$0$a = ddx$0;
             mul$0$b = op_s$8;
-            ps$12 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 0) & act$41) begin
+        if ((lane$41 == 0) & act_r$41$q) begin
             mul$0$a = ddy$0;
             mul$0$b = op_s$9;
-            ps$13 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 0) & act$42) begin
+        if ((lane$42 == 0) & act_r$42$q) begin
             mul$0$a = ddx$0;
-            mul$0$b = q$1$q;
-            ps$14 = mul$0$p[(32'h0)+:(40)];
+            mul$0$b = op_q$4;
         end
-        if ((lane$43 == 0) & act$43) begin
+        if ((lane$43 == 0) & act_r$43$q) begin
             mul$0$a = ddx$1;
             mul$0$b = op_s$10;
-            ps$15 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 0) & act$44) begin
+        if ((lane$44 == 0) & act_r$44$q) begin
             mul$0$a = ddy$1;
             mul$0$b = op_s$11;
-            ps$16 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 0) & act$45) begin
+        if ((lane$45 == 0) & act_r$45$q) begin
             mul$0$a = ddx$1;
-            mul$0$b = q$1$q;
-            ps$17 = mul$0$p[(32'h0)+:(40)];
+            mul$0$b = op_q$5;
         end
-        if ((lane$46 == 0) & act$46) begin
+        if ((lane$46 == 0) & act_r$46$q) begin
             mul$0$a = ddx$2;
             mul$0$b = op_s$12;
-            ps$18 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 0) & act$47) begin
+        if ((lane$47 == 0) & act_r$47$q) begin
             mul$0$a = ddy$2;
             mul$0$b = op_s$13;
-            ps$19 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 0) & act$48) begin
+        if ((lane$48 == 0) & act_r$48$q) begin
             mul$0$a = ddx$2;
-            mul$0$b = q$1$q;
-            ps$20 = mul$0$p[(32'h0)+:(40)];
+            mul$0$b = op_q$6;
         end
-        if ((lane$49 == 0) & act$49) begin
+        if ((lane$49 == 0) & act_r$49$q) begin
             mul$0$a = ddx$3;
             mul$0$b = op_s$14;
-            ps$21 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 0) & act$50) begin
+        if ((lane$50 == 0) & act_r$50$q) begin
             mul$0$a = ddy$3;
             mul$0$b = op_s$15;
-            ps$22 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 0) & act$51) begin
+        if ((lane$51 == 0) & act_r$51$q) begin
             mul$0$a = ddx$3;
-            mul$0$b = q$1$q;
-            ps$23 = mul$0$p[(32'h0)+:(40)];
+            mul$0$b = op_q$7;
         end
-        if ((lane$52 == 0) & act$52) begin
+        if ((lane$52 == 0) & act_r$52$q) begin
             mul$0$a = ddx$0;
             mul$0$b = op_s$16;
-            ps$24 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 0) & act$53) begin
+        if ((lane$53 == 0) & act_r$53$q) begin
             mul$0$a = ddy$0;
             mul$0$b = op_s$17;
-            ps$25 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 0) & act$54) begin
+        if ((lane$54 == 0) & act_r$54$q) begin
             mul$0$a = ddx$0;
-            mul$0$b = q$2$q;
-            ps$26 = mul$0$p[(32'h0)+:(40)];
+            mul$0$b = op_q$8;
         end
-        if ((lane$55 == 0) & act$55) begin
+        if ((lane$55 == 0) & act_r$55$q) begin
             mul$0$a = ddx$1;
             mul$0$b = op_s$18;
-            ps$27 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 0) & act$56) begin
+        if ((lane$56 == 0) & act_r$56$q) begin
             mul$0$a = ddy$1;
             mul$0$b = op_s$19;
-            ps$28 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 0) & act$57) begin
+        if ((lane$57 == 0) & act_r$57$q) begin
             mul$0$a = ddx$1;
-            mul$0$b = q$2$q;
-            ps$29 = mul$0$p[(32'h0)+:(40)];
+            mul$0$b = op_q$9;
         end
-        if ((lane$58 == 0) & act$58) begin
+        if ((lane$58 == 0) & act_r$58$q) begin
             mul$0$a = ddx$2;
             mul$0$b = op_s$20;
-            ps$30 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 0) & act$59) begin
+        if ((lane$59 == 0) & act_r$59$q) begin
             mul$0$a = ddy$2;
             mul$0$b = op_s$21;
-            ps$31 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 0) & act$60) begin
+        if ((lane$60 == 0) & act_r$60$q) begin
             mul$0$a = ddx$2;
-            mul$0$b = q$2$q;
-            ps$32 = mul$0$p[(32'h0)+:(40)];
+            mul$0$b = op_q$10;
         end
-        if ((lane$61 == 0) & act$61) begin
+        if ((lane$61 == 0) & act_r$61$q) begin
             mul$0$a = ddx$3;
             mul$0$b = op_s$22;
-            ps$33 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 0) & act$62) begin
+        if ((lane$62 == 0) & act_r$62$q) begin
             mul$0$a = ddy$3;
             mul$0$b = op_s$23;
+        end
+        if ((lane$63 == 0) & act_r$63$q) begin
+            mul$0$a = ddx$3;
+            mul$0$b = op_q$11;
+        end
+        if ((lane$28 == 0) & add_r$28$q) begin
+            ps$0 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 0) & add_r$29$q) begin
+            ps$1 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 0) & add_r$30$q) begin
+            ps$2 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 0) & add_r$31$q) begin
+            ps$3 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 0) & add_r$32$q) begin
+            ps$4 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 0) & add_r$33$q) begin
+            ps$5 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 0) & add_r$34$q) begin
+            ps$6 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 0) & add_r$35$q) begin
+            ps$7 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 0) & add_r$36$q) begin
+            ps$8 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 0) & add_r$37$q) begin
+            ps$9 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 0) & add_r$38$q) begin
+            ps$10 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 0) & add_r$39$q) begin
+            ps$11 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 0) & add_r$40$q) begin
+            ps$12 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 0) & add_r$41$q) begin
+            ps$13 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 0) & add_r$42$q) begin
+            ps$14 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 0) & add_r$43$q) begin
+            ps$15 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 0) & add_r$44$q) begin
+            ps$16 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 0) & add_r$45$q) begin
+            ps$17 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 0) & add_r$46$q) begin
+            ps$18 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 0) & add_r$47$q) begin
+            ps$19 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 0) & add_r$48$q) begin
+            ps$20 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 0) & add_r$49$q) begin
+            ps$21 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 0) & add_r$50$q) begin
+            ps$22 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 0) & add_r$51$q) begin
+            ps$23 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 0) & add_r$52$q) begin
+            ps$24 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 0) & add_r$53$q) begin
+            ps$25 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 0) & add_r$54$q) begin
+            ps$26 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 0) & add_r$55$q) begin
+            ps$27 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 0) & add_r$56$q) begin
+            ps$28 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 0) & add_r$57$q) begin
+            ps$29 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 0) & add_r$58$q) begin
+            ps$30 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 0) & add_r$59$q) begin
+            ps$31 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 0) & add_r$60$q) begin
+            ps$32 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 0) & add_r$61$q) begin
+            ps$33 = mul$0$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 0) & add_r$62$q) begin
             ps$34 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 0) & act$63) begin
-            mul$0$a = ddx$3;
-            mul$0$b = q$2$q;
+        if ((lane$63 == 0) & add_r$63$q) begin
             ps$35 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$0 == 1) & act$0) begin
+        mul$1$en = run;
+        if ((lane$0 == 1) & act_r$0$q) begin
             mul$1$a = g0$kdx$0[(32'h0)+:(57)];
             mul$1$b = g0$kdy$1[(32'h0)+:(19)];
-            pa$0 = mul$1$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 1) & act$1) begin
+        if ((lane$1 == 1) & act_r$1$q) begin
             mul$1$a = g0$kdx$1[(32'h0)+:(57)];
             mul$1$b = g0$kdy$0[(32'h0)+:(19)];
+        end
+        if ((lane$0 == 1) & add_r$0$q) begin
+            pa$0 = mul$1$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 1) & add_r$1$q) begin
             pa$1 = mul$1$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 1) & act$2) begin
+        if ((lane$2 == 1) & act_r$2$q) begin
             mul$1$a = g0$edy$0;
             mul$1$b = g0$xf$0;
-            pn$0 = mul$1$p;
         end
-        if ((lane$3 == 1) & act$3) begin
+        if ((lane$3 == 1) & act_r$3$q) begin
             mul$1$a = g0$edx$0[(32'h0)+:(57)];
             mul$1$b = g0$toff$0;
-            pn$1 = mul$1$p;
         end
-        if ((lane$4 == 1) & act$4) begin
+        if ((lane$4 == 1) & act_r$4$q) begin
             mul$1$a = g0$edy$1;
             mul$1$b = g0$xf$1;
-            pn$2 = mul$1$p;
         end
-        if ((lane$5 == 1) & act$5) begin
+        if ((lane$5 == 1) & act_r$5$q) begin
             mul$1$a = g0$edx$1[(32'h0)+:(57)];
             mul$1$b = g0$toff$1;
-            pn$3 = mul$1$p;
         end
-        if ((lane$6 == 1) & act$6) begin
+        if ((lane$6 == 1) & act_r$6$q) begin
             mul$1$a = g0$edy$2;
             mul$1$b = g0$xf$2;
-            pn$4 = mul$1$p;
         end
-        if ((lane$7 == 1) & act$7) begin
+        if ((lane$7 == 1) & act_r$7$q) begin
             mul$1$a = g0$edx$2[(32'h0)+:(57)];
             mul$1$b = g0$toff$2;
+        end
+        if ((lane$2 == 1) & add_r$2$q) begin
+            pn$0 = mul$1$p;
+        end
+        if ((lane$3 == 1) & add_r$3$q) begin
+            pn$1 = mul$1$p;
+        end
+        if ((lane$4 == 1) & add_r$4$q) begin
+            pn$2 = mul$1$p;
+        end
+        if ((lane$5 == 1) & add_r$5$q) begin
+            pn$3 = mul$1$p;
+        end
+        if ((lane$6 == 1) & add_r$6$q) begin
+            pn$4 = mul$1$p;
+        end
+        if ((lane$7 == 1) & add_r$7$q) begin
             pn$5 = mul$1$p;
         end
-        if ((lane$8 == 1) & act$8) begin
-            mul$1$a = mant_a;
+        if ((lane$8 == 1) & act_r$8$q) begin
+            mul$1$a = mant_s$q;
             mul$1$b = op_e$0;
+        end
+        if ((lane$8 == 1) & add_r$8$q) begin
             pe$0 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 1) & act$9) begin
-            mul$1$a = mant_a;
+        if ((lane$9 == 1) & act_r$9$q) begin
+            mul$1$a = mant_s$q;
             mul$1$b = op_e$1;
+        end
+        if ((lane$9 == 1) & add_r$9$q) begin
             pe$1 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 1) & act$10) begin
-            mul$1$a = mant_a;
+        if ((lane$10 == 1) & act_r$10$q) begin
+            mul$1$a = mant_s$q;
             mul$1$b = op_e$2;
+        end
+        if ((lane$10 == 1) & add_r$10$q) begin
             pe$2 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 1) & act$11) begin
-            mul$1$a = mant_a;
+        if ((lane$11 == 1) & act_r$11$q) begin
+            mul$1$a = mant_s$q;
             mul$1$b = op_e$3;
+        end
+        if ((lane$11 == 1) & add_r$11$q) begin
             pe$3 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 1) & act$12) begin
+        if ((lane$12 == 1) & act_r$12$q) begin
             mul$1$a = p$3$q;
             mul$1$b = op_g$0;
-            pg$0 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 1) & act$13) begin
+        if ((lane$13 == 1) & act_r$13$q) begin
             mul$1$a = p$2$q;
             mul$1$b = op_g$1;
-            pg$1 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 1) & act$14) begin
+        if ((lane$14 == 1) & act_r$14$q) begin
             mul$1$a = p$0$q;
             mul$1$b = op_g$2;
-            pg$2 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 1) & act$15) begin
+        if ((lane$15 == 1) & act_r$15$q) begin
             mul$1$a = p$1$q;
             mul$1$b = op_g$3;
-            pg$3 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 1) & act$16) begin
+        if ((lane$16 == 1) & act_r$16$q) begin
             mul$1$a = p$3$q;
             mul$1$b = op_g$4;
-            pg$4 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 1) & act$17) begin
+        if ((lane$17 == 1) & act_r$17$q) begin
             mul$1$a = p$2$q;
             mul$1$b = op_g$5;
-            pg$5 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 1) & act$18) begin
+        if ((lane$18 == 1) & act_r$18$q) begin
             mul$1$a = p$0$q;
             mul$1$b = op_g$6;
-            pg$6 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 1) & act$19) begin
+        if ((lane$19 == 1) & act_r$19$q) begin
             mul$1$a = p$1$q;
             mul$1$b = op_g$7;
-            pg$7 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 1) & act$20) begin
+        if ((lane$20 == 1) & act_r$20$q) begin
             mul$1$a = p$3$q;
             mul$1$b = op_g$8;
-            pg$8 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 1) & act$21) begin
+        if ((lane$21 == 1) & act_r$21$q) begin
             mul$1$a = p$2$q;
             mul$1$b = op_g$9;
-            pg$9 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 1) & act$22) begin
+        if ((lane$22 == 1) & act_r$22$q) begin
             mul$1$a = p$0$q;
             mul$1$b = op_g$10;
-            pg$10 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 1) & act$23) begin
+        if ((lane$23 == 1) & act_r$23$q) begin
             mul$1$a = p$1$q;
             mul$1$b = op_g$11;
-            pg$11 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 1) & act$24) begin
+        if ((lane$24 == 1) & act_r$24$q) begin
             mul$1$a = p$3$q;
             mul$1$b = op_g$12;
-            pg$12 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 1) & act$25) begin
+        if ((lane$25 == 1) & act_r$25$q) begin
             mul$1$a = p$2$q;
             mul$1$b = op_g$13;
-            pg$13 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 1) & act$26) begin
+        if ((lane$26 == 1) & act_r$26$q) begin
             mul$1$a = p$0$q;
             mul$1$b = op_g$14;
-            pg$14 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 1) & act$27) begin
+        if ((lane$27 == 1) & act_r$27$q) begin
             mul$1$a = p$1$q;
             mul$1$b = op_g$15;
+        end
+        if ((lane$12 == 1) & add_r$12$q) begin
+            pg$0 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 1) & add_r$13$q) begin
+            pg$1 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 1) & add_r$14$q) begin
+            pg$2 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 1) & add_r$15$q) begin
+            pg$3 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 1) & add_r$16$q) begin
+            pg$4 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 1) & add_r$17$q) begin
+            pg$5 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 1) & add_r$18$q) begin
+            pg$6 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 1) & add_r$19$q) begin
+            pg$7 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 1) & add_r$20$q) begin
+            pg$8 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 1) & add_r$21$q) begin
+            pg$9 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 1) & add_r$22$q) begin
+            pg$10 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 1) & add_r$23$q) begin
+            pg$11 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 1) & add_r$24$q) begin
+            pg$12 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 1) & add_r$25$q) begin
+            pg$13 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 1) & add_r$26$q) begin
+            pg$14 = mul$1$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 1) & add_r$27$q) begin
             pg$15 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 1) & act$28) begin
+        if ((lane$28 == 1) & act_r$28$q) begin
             mul$1$a = ddx$0;
             mul$1$b = op_s$0;
-            ps$0 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 1) & act$29) begin
+        if ((lane$29 == 1) & act_r$29$q) begin
             mul$1$a = ddy$0;
             mul$1$b = op_s$1;
-            ps$1 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 1) & act$30) begin
+        if ((lane$30 == 1) & act_r$30$q) begin
             mul$1$a = ddx$0;
-            mul$1$b = q$0$q;
-            ps$2 = mul$1$p[(32'h0)+:(40)];
+            mul$1$b = op_q$0;
         end
-        if ((lane$31 == 1) & act$31) begin
+        if ((lane$31 == 1) & act_r$31$q) begin
             mul$1$a = ddx$1;
             mul$1$b = op_s$2;
-            ps$3 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 1) & act$32) begin
+        if ((lane$32 == 1) & act_r$32$q) begin
             mul$1$a = ddy$1;
             mul$1$b = op_s$3;
-            ps$4 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 1) & act$33) begin
+        if ((lane$33 == 1) & act_r$33$q) begin
             mul$1$a = ddx$1;
-            mul$1$b = q$0$q;
-            ps$5 = mul$1$p[(32'h0)+:(40)];
+            mul$1$b = op_q$1;
         end
-        if ((lane$34 == 1) & act$34) begin
+        if ((lane$34 == 1) & act_r$34$q) begin
             mul$1$a = ddx$2;
             mul$1$b = op_s$4;
-            ps$6 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 1) & act$35) begin
+        if ((lane$35 == 1) & act_r$35$q) begin
             mul$1$a = ddy$2;
             mul$1$b = op_s$5;
-            ps$7 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 1) & act$36) begin
+        if ((lane$36 == 1) & act_r$36$q) begin
             mul$1$a = ddx$2;
-            mul$1$b = q$0$q;
-            ps$8 = mul$1$p[(32'h0)+:(40)];
+            mul$1$b = op_q$2;
         end
-        if ((lane$37 == 1) & act$37) begin
+        if ((lane$37 == 1) & act_r$37$q) begin
             mul$1$a = ddx$3;
             mul$1$b = op_s$6;
-            ps$9 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 1) & act$38) begin
+        if ((lane$38 == 1) & act_r$38$q) begin
             mul$1$a = ddy$3;
             mul$1$b = op_s$7;
-            ps$10 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 1) & act$39) begin
+        if ((lane$39 == 1) & act_r$39$q) begin
             mul$1$a = ddx$3;
-            mul$1$b = q$0$q;
-            ps$11 = mul$1$p[(32'h0)+:(40)];
+            mul$1$b = op_q$3;
         end
-        if ((lane$40 == 1) & act$40) begin
+        if ((lane$40 == 1) & act_r$40$q) begin
             mul$1$a = ddx$0;
             mul$1$b = op_s$8;
-            ps$12 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 1) & act$41) begin
+        if ((lane$41 == 1) & act_r$41$q) begin
             mul$1$a = ddy$0;
             mul$1$b = op_s$9;
-            ps$13 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 1) & act$42) begin
+        if ((lane$42 == 1) & act_r$42$q) begin
             mul$1$a = ddx$0;
-            mul$1$b = q$1$q;
-            ps$14 = mul$1$p[(32'h0)+:(40)];
+            mul$1$b = op_q$4;
         end
-        if ((lane$43 == 1) & act$43) begin
+        if ((lane$43 == 1) & act_r$43$q) begin
             mul$1$a = ddx$1;
             mul$1$b = op_s$10;
-            ps$15 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 1) & act$44) begin
+        if ((lane$44 == 1) & act_r$44$q) begin
             mul$1$a = ddy$1;
             mul$1$b = op_s$11;
-            ps$16 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 1) & act$45) begin
+        if ((lane$45 == 1) & act_r$45$q) begin
             mul$1$a = ddx$1;
-            mul$1$b = q$1$q;
-            ps$17 = mul$1$p[(32'h0)+:(40)];
+            mul$1$b = op_q$5;
         end
-        if ((lane$46 == 1) & act$46) begin
+        if ((lane$46 == 1) & act_r$46$q) begin
             mul$1$a = ddx$2;
             mul$1$b = op_s$12;
-            ps$18 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 1) & act$47) begin
+        if ((lane$47 == 1) & act_r$47$q) begin
             mul$1$a = ddy$2;
             mul$1$b = op_s$13;
-            ps$19 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 1) & act$48) begin
+        if ((lane$48 == 1) & act_r$48$q) begin
             mul$1$a = ddx$2;
-            mul$1$b = q$1$q;
-            ps$20 = mul$1$p[(32'h0)+:(40)];
+            mul$1$b = op_q$6;
         end
-        if ((lane$49 == 1) & act$49) begin
+        if ((lane$49 == 1) & act_r$49$q) begin
             mul$1$a = ddx$3;
             mul$1$b = op_s$14;
-            ps$21 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 1) & act$50) begin
+        if ((lane$50 == 1) & act_r$50$q) begin
             mul$1$a = ddy$3;
             mul$1$b = op_s$15;
-            ps$22 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 1) & act$51) begin
+        if ((lane$51 == 1) & act_r$51$q) begin
             mul$1$a = ddx$3;
-            mul$1$b = q$1$q;
-            ps$23 = mul$1$p[(32'h0)+:(40)];
+            mul$1$b = op_q$7;
         end
-        if ((lane$52 == 1) & act$52) begin
+        if ((lane$52 == 1) & act_r$52$q) begin
             mul$1$a = ddx$0;
             mul$1$b = op_s$16;
-            ps$24 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 1) & act$53) begin
+        if ((lane$53 == 1) & act_r$53$q) begin
             mul$1$a = ddy$0;
             mul$1$b = op_s$17;
-            ps$25 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 1) & act$54) begin
+        if ((lane$54 == 1) & act_r$54$q) begin
             mul$1$a = ddx$0;
-            mul$1$b = q$2$q;
-            ps$26 = mul$1$p[(32'h0)+:(40)];
+            mul$1$b = op_q$8;
         end
-        if ((lane$55 == 1) & act$55) begin
+        if ((lane$55 == 1) & act_r$55$q) begin
             mul$1$a = ddx$1;
             mul$1$b = op_s$18;
-            ps$27 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 1) & act$56) begin
+        if ((lane$56 == 1) & act_r$56$q) begin
             mul$1$a = ddy$1;
             mul$1$b = op_s$19;
-            ps$28 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 1) & act$57) begin
+        if ((lane$57 == 1) & act_r$57$q) begin
             mul$1$a = ddx$1;
-            mul$1$b = q$2$q;
-            ps$29 = mul$1$p[(32'h0)+:(40)];
+            mul$1$b = op_q$9;
         end
-        if ((lane$58 == 1) & act$58) begin
+        if ((lane$58 == 1) & act_r$58$q) begin
             mul$1$a = ddx$2;
             mul$1$b = op_s$20;
-            ps$30 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 1) & act$59) begin
+        if ((lane$59 == 1) & act_r$59$q) begin
             mul$1$a = ddy$2;
             mul$1$b = op_s$21;
-            ps$31 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 1) & act$60) begin
+        if ((lane$60 == 1) & act_r$60$q) begin
             mul$1$a = ddx$2;
-            mul$1$b = q$2$q;
-            ps$32 = mul$1$p[(32'h0)+:(40)];
+            mul$1$b = op_q$10;
         end
-        if ((lane$61 == 1) & act$61) begin
+        if ((lane$61 == 1) & act_r$61$q) begin
             mul$1$a = ddx$3;
             mul$1$b = op_s$22;
-            ps$33 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 1) & act$62) begin
+        if ((lane$62 == 1) & act_r$62$q) begin
             mul$1$a = ddy$3;
             mul$1$b = op_s$23;
+        end
+        if ((lane$63 == 1) & act_r$63$q) begin
+            mul$1$a = ddx$3;
+            mul$1$b = op_q$11;
+        end
+        if ((lane$28 == 1) & add_r$28$q) begin
+            ps$0 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 1) & add_r$29$q) begin
+            ps$1 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 1) & add_r$30$q) begin
+            ps$2 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 1) & add_r$31$q) begin
+            ps$3 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 1) & add_r$32$q) begin
+            ps$4 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 1) & add_r$33$q) begin
+            ps$5 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 1) & add_r$34$q) begin
+            ps$6 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 1) & add_r$35$q) begin
+            ps$7 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 1) & add_r$36$q) begin
+            ps$8 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 1) & add_r$37$q) begin
+            ps$9 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 1) & add_r$38$q) begin
+            ps$10 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 1) & add_r$39$q) begin
+            ps$11 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 1) & add_r$40$q) begin
+            ps$12 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 1) & add_r$41$q) begin
+            ps$13 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 1) & add_r$42$q) begin
+            ps$14 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 1) & add_r$43$q) begin
+            ps$15 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 1) & add_r$44$q) begin
+            ps$16 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 1) & add_r$45$q) begin
+            ps$17 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 1) & add_r$46$q) begin
+            ps$18 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 1) & add_r$47$q) begin
+            ps$19 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 1) & add_r$48$q) begin
+            ps$20 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 1) & add_r$49$q) begin
+            ps$21 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 1) & add_r$50$q) begin
+            ps$22 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 1) & add_r$51$q) begin
+            ps$23 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 1) & add_r$52$q) begin
+            ps$24 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 1) & add_r$53$q) begin
+            ps$25 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 1) & add_r$54$q) begin
+            ps$26 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 1) & add_r$55$q) begin
+            ps$27 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 1) & add_r$56$q) begin
+            ps$28 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 1) & add_r$57$q) begin
+            ps$29 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 1) & add_r$58$q) begin
+            ps$30 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 1) & add_r$59$q) begin
+            ps$31 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 1) & add_r$60$q) begin
+            ps$32 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 1) & add_r$61$q) begin
+            ps$33 = mul$1$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 1) & add_r$62$q) begin
             ps$34 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 1) & act$63) begin
-            mul$1$a = ddx$3;
-            mul$1$b = q$2$q;
+        if ((lane$63 == 1) & add_r$63$q) begin
             ps$35 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$0 == 2) & act$0) begin
+        mul$2$en = run;
+        if ((lane$0 == 2) & act_r$0$q) begin
             mul$2$a = g0$kdx$0[(32'h0)+:(57)];
             mul$2$b = g0$kdy$1[(32'h0)+:(19)];
-            pa$0 = mul$2$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 2) & act$1) begin
+        if ((lane$1 == 2) & act_r$1$q) begin
             mul$2$a = g0$kdx$1[(32'h0)+:(57)];
             mul$2$b = g0$kdy$0[(32'h0)+:(19)];
+        end
+        if ((lane$0 == 2) & add_r$0$q) begin
+            pa$0 = mul$2$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 2) & add_r$1$q) begin
             pa$1 = mul$2$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 2) & act$2) begin
+        if ((lane$2 == 2) & act_r$2$q) begin
             mul$2$a = g0$edy$0;
             mul$2$b = g0$xf$0;
-            pn$0 = mul$2$p;
         end
-        if ((lane$3 == 2) & act$3) begin
+        if ((lane$3 == 2) & act_r$3$q) begin
             mul$2$a = g0$edx$0[(32'h0)+:(57)];
             mul$2$b = g0$toff$0;
-            pn$1 = mul$2$p;
         end
-        if ((lane$4 == 2) & act$4) begin
+        if ((lane$4 == 2) & act_r$4$q) begin
             mul$2$a = g0$edy$1;
             mul$2$b = g0$xf$1;
-            pn$2 = mul$2$p;
         end
-        if ((lane$5 == 2) & act$5) begin
+        if ((lane$5 == 2) & act_r$5$q) begin
             mul$2$a = g0$edx$1[(32'h0)+:(57)];
             mul$2$b = g0$toff$1;
-            pn$3 = mul$2$p;
         end
-        if ((lane$6 == 2) & act$6) begin
+        if ((lane$6 == 2) & act_r$6$q) begin
             mul$2$a = g0$edy$2;
             mul$2$b = g0$xf$2;
-            pn$4 = mul$2$p;
         end
-        if ((lane$7 == 2) & act$7) begin
+        if ((lane$7 == 2) & act_r$7$q) begin
             mul$2$a = g0$edx$2[(32'h0)+:(57)];
             mul$2$b = g0$toff$2;
+        end
+        if ((lane$2 == 2) & add_r$2$q) begin
+            pn$0 = mul$2$p;
+        end
+        if ((lane$3 == 2) & add_r$3$q) begin
+            pn$1 = mul$2$p;
+        end
+        if ((lane$4 == 2) & add_r$4$q) begin
+            pn$2 = mul$2$p;
+        end
+        if ((lane$5 == 2) & add_r$5$q) begin
+            pn$3 = mul$2$p;
+        end
+        if ((lane$6 == 2) & add_r$6$q) begin
+            pn$4 = mul$2$p;
+        end
+        if ((lane$7 == 2) & add_r$7$q) begin
             pn$5 = mul$2$p;
         end
-        if ((lane$8 == 2) & act$8) begin
-            mul$2$a = mant_a;
+        if ((lane$8 == 2) & act_r$8$q) begin
+            mul$2$a = mant_s$q;
             mul$2$b = op_e$0;
+        end
+        if ((lane$8 == 2) & add_r$8$q) begin
             pe$0 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 2) & act$9) begin
-            mul$2$a = mant_a;
+        if ((lane$9 == 2) & act_r$9$q) begin
+            mul$2$a = mant_s$q;
             mul$2$b = op_e$1;
+        end
+        if ((lane$9 == 2) & add_r$9$q) begin
             pe$1 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 2) & act$10) begin
-            mul$2$a = mant_a;
+        if ((lane$10 == 2) & act_r$10$q) begin
+            mul$2$a = mant_s$q;
             mul$2$b = op_e$2;
+        end
+        if ((lane$10 == 2) & add_r$10$q) begin
             pe$2 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 2) & act$11) begin
-            mul$2$a = mant_a;
+        if ((lane$11 == 2) & act_r$11$q) begin
+            mul$2$a = mant_s$q;
             mul$2$b = op_e$3;
+        end
+        if ((lane$11 == 2) & add_r$11$q) begin
             pe$3 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 2) & act$12) begin
+        if ((lane$12 == 2) & act_r$12$q) begin
             mul$2$a = p$3$q;
             mul$2$b = op_g$0;
-            pg$0 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 2) & act$13) begin
+        if ((lane$13 == 2) & act_r$13$q) begin
             mul$2$a = p$2$q;
             mul$2$b = op_g$1;
-            pg$1 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 2) & act$14) begin
+        if ((lane$14 == 2) & act_r$14$q) begin
             mul$2$a = p$0$q;
             mul$2$b = op_g$2;
-            pg$2 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 2) & act$15) begin
+        if ((lane$15 == 2) & act_r$15$q) begin
             mul$2$a = p$1$q;
             mul$2$b = op_g$3;
-            pg$3 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 2) & act$16) begin
+        if ((lane$16 == 2) & act_r$16$q) begin
             mul$2$a = p$3$q;
             mul$2$b = op_g$4;
-            pg$4 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 2) & act$17) begin
+        if ((lane$17 == 2) & act_r$17$q) begin
             mul$2$a = p$2$q;
             mul$2$b = op_g$5;
-            pg$5 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 2) & act$18) begin
+        if ((lane$18 == 2) & act_r$18$q) begin
             mul$2$a = p$0$q;
             mul$2$b = op_g$6;
-            pg$6 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 2) & act$19) begin
+        if ((lane$19 == 2) & act_r$19$q) begin
             mul$2$a = p$1$q;
             mul$2$b = op_g$7;
-            pg$7 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 2) & act$20) begin
+        if ((lane$20 == 2) & act_r$20$q) begin
             mul$2$a = p$3$q;
             mul$2$b = op_g$8;
-            pg$8 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 2) & act$21) begin
+        if ((lane$21 == 2) & act_r$21$q) begin
             mul$2$a = p$2$q;
             mul$2$b = op_g$9;
-            pg$9 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 2) & act$22) begin
+        if ((lane$22 == 2) & act_r$22$q) begin
             mul$2$a = p$0$q;
             mul$2$b = op_g$10;
-            pg$10 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 2) & act$23) begin
+        if ((lane$23 == 2) & act_r$23$q) begin
             mul$2$a = p$1$q;
             mul$2$b = op_g$11;
-            pg$11 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 2) & act$24) begin
+        if ((lane$24 == 2) & act_r$24$q) begin
             mul$2$a = p$3$q;
             mul$2$b = op_g$12;
-            pg$12 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 2) & act$25) begin
+        if ((lane$25 == 2) & act_r$25$q) begin
             mul$2$a = p$2$q;
             mul$2$b = op_g$13;
-            pg$13 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 2) & act$26) begin
+        if ((lane$26 == 2) & act_r$26$q) begin
             mul$2$a = p$0$q;
             mul$2$b = op_g$14;
-            pg$14 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 2) & act$27) begin
+        if ((lane$27 == 2) & act_r$27$q) begin
             mul$2$a = p$1$q;
             mul$2$b = op_g$15;
+        end
+        if ((lane$12 == 2) & add_r$12$q) begin
+            pg$0 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 2) & add_r$13$q) begin
+            pg$1 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 2) & add_r$14$q) begin
+            pg$2 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 2) & add_r$15$q) begin
+            pg$3 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 2) & add_r$16$q) begin
+            pg$4 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 2) & add_r$17$q) begin
+            pg$5 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 2) & add_r$18$q) begin
+            pg$6 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 2) & add_r$19$q) begin
+            pg$7 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 2) & add_r$20$q) begin
+            pg$8 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 2) & add_r$21$q) begin
+            pg$9 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 2) & add_r$22$q) begin
+            pg$10 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 2) & add_r$23$q) begin
+            pg$11 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 2) & add_r$24$q) begin
+            pg$12 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 2) & add_r$25$q) begin
+            pg$13 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 2) & add_r$26$q) begin
+            pg$14 = mul$2$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 2) & add_r$27$q) begin
             pg$15 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 2) & act$28) begin
+        if ((lane$28 == 2) & act_r$28$q) begin
             mul$2$a = ddx$0;
             mul$2$b = op_s$0;
-            ps$0 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 2) & act$29) begin
+        if ((lane$29 == 2) & act_r$29$q) begin
             mul$2$a = ddy$0;
             mul$2$b = op_s$1;
-            ps$1 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 2) & act$30) begin
+        if ((lane$30 == 2) & act_r$30$q) begin
             mul$2$a = ddx$0;
-            mul$2$b = q$0$q;
-            ps$2 = mul$2$p[(32'h0)+:(40)];
+            mul$2$b = op_q$0;
         end
-        if ((lane$31 == 2) & act$31) begin
+        if ((lane$31 == 2) & act_r$31$q) begin
             mul$2$a = ddx$1;
             mul$2$b = op_s$2;
-            ps$3 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 2) & act$32) begin
+        if ((lane$32 == 2) & act_r$32$q) begin
             mul$2$a = ddy$1;
             mul$2$b = op_s$3;
-            ps$4 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 2) & act$33) begin
+        if ((lane$33 == 2) & act_r$33$q) begin
             mul$2$a = ddx$1;
-            mul$2$b = q$0$q;
-            ps$5 = mul$2$p[(32'h0)+:(40)];
+            mul$2$b = op_q$1;
         end
-        if ((lane$34 == 2) & act$34) begin
+        if ((lane$34 == 2) & act_r$34$q) begin
             mul$2$a = ddx$2;
             mul$2$b = op_s$4;
-            ps$6 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 2) & act$35) begin
+        if ((lane$35 == 2) & act_r$35$q) begin
             mul$2$a = ddy$2;
             mul$2$b = op_s$5;
-            ps$7 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 2) & act$36) begin
+        if ((lane$36 == 2) & act_r$36$q) begin
             mul$2$a = ddx$2;
-            mul$2$b = q$0$q;
-            ps$8 = mul$2$p[(32'h0)+:(40)];
+            mul$2$b = op_q$2;
         end
-        if ((lane$37 == 2) & act$37) begin
+        if ((lane$37 == 2) & act_r$37$q) begin
             mul$2$a = ddx$3;
             mul$2$b = op_s$6;
-            ps$9 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 2) & act$38) begin
+        if ((lane$38 == 2) & act_r$38$q) begin
             mul$2$a = ddy$3;
             mul$2$b = op_s$7;
-            ps$10 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 2) & act$39) begin
+        if ((lane$39 == 2) & act_r$39$q) begin
             mul$2$a = ddx$3;
-            mul$2$b = q$0$q;
-            ps$11 = mul$2$p[(32'h0)+:(40)];
+            mul$2$b = op_q$3;
         end
-        if ((lane$40 == 2) & act$40) begin
+        if ((lane$40 == 2) & act_r$40$q) begin
             mul$2$a = ddx$0;
             mul$2$b = op_s$8;
-            ps$12 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 2) & act$41) begin
+        if ((lane$41 == 2) & act_r$41$q) begin
             mul$2$a = ddy$0;
             mul$2$b = op_s$9;
-            ps$13 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 2) & act$42) begin
+        if ((lane$42 == 2) & act_r$42$q) begin
             mul$2$a = ddx$0;
-            mul$2$b = q$1$q;
-            ps$14 = mul$2$p[(32'h0)+:(40)];
+            mul$2$b = op_q$4;
         end
-        if ((lane$43 == 2) & act$43) begin
+        if ((lane$43 == 2) & act_r$43$q) begin
             mul$2$a = ddx$1;
             mul$2$b = op_s$10;
-            ps$15 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 2) & act$44) begin
+        if ((lane$44 == 2) & act_r$44$q) begin
             mul$2$a = ddy$1;
             mul$2$b = op_s$11;
-            ps$16 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 2) & act$45) begin
+        if ((lane$45 == 2) & act_r$45$q) begin
             mul$2$a = ddx$1;
-            mul$2$b = q$1$q;
-            ps$17 = mul$2$p[(32'h0)+:(40)];
+            mul$2$b = op_q$5;
         end
-        if ((lane$46 == 2) & act$46) begin
+        if ((lane$46 == 2) & act_r$46$q) begin
             mul$2$a = ddx$2;
             mul$2$b = op_s$12;
-            ps$18 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 2) & act$47) begin
+        if ((lane$47 == 2) & act_r$47$q) begin
             mul$2$a = ddy$2;
             mul$2$b = op_s$13;
-            ps$19 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 2) & act$48) begin
+        if ((lane$48 == 2) & act_r$48$q) begin
             mul$2$a = ddx$2;
-            mul$2$b = q$1$q;
-            ps$20 = mul$2$p[(32'h0)+:(40)];
+            mul$2$b = op_q$6;
         end
-        if ((lane$49 == 2) & act$49) begin
+        if ((lane$49 == 2) & act_r$49$q) begin
             mul$2$a = ddx$3;
             mul$2$b = op_s$14;
-            ps$21 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 2) & act$50) begin
+        if ((lane$50 == 2) & act_r$50$q) begin
             mul$2$a = ddy$3;
             mul$2$b = op_s$15;
-            ps$22 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 2) & act$51) begin
+        if ((lane$51 == 2) & act_r$51$q) begin
             mul$2$a = ddx$3;
-            mul$2$b = q$1$q;
-            ps$23 = mul$2$p[(32'h0)+:(40)];
+            mul$2$b = op_q$7;
         end
-        if ((lane$52 == 2) & act$52) begin
+        if ((lane$52 == 2) & act_r$52$q) begin
             mul$2$a = ddx$0;
             mul$2$b = op_s$16;
-            ps$24 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 2) & act$53) begin
+        if ((lane$53 == 2) & act_r$53$q) begin
             mul$2$a = ddy$0;
             mul$2$b = op_s$17;
-            ps$25 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 2) & act$54) begin
+        if ((lane$54 == 2) & act_r$54$q) begin
             mul$2$a = ddx$0;
-            mul$2$b = q$2$q;
-            ps$26 = mul$2$p[(32'h0)+:(40)];
+            mul$2$b = op_q$8;
         end
-        if ((lane$55 == 2) & act$55) begin
+        if ((lane$55 == 2) & act_r$55$q) begin
             mul$2$a = ddx$1;
             mul$2$b = op_s$18;
-            ps$27 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 2) & act$56) begin
+        if ((lane$56 == 2) & act_r$56$q) begin
             mul$2$a = ddy$1;
             mul$2$b = op_s$19;
-            ps$28 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 2) & act$57) begin
+        if ((lane$57 == 2) & act_r$57$q) begin
             mul$2$a = ddx$1;
-            mul$2$b = q$2$q;
-            ps$29 = mul$2$p[(32'h0)+:(40)];
+            mul$2$b = op_q$9;
         end
-        if ((lane$58 == 2) & act$58) begin
+        if ((lane$58 == 2) & act_r$58$q) begin
             mul$2$a = ddx$2;
             mul$2$b = op_s$20;
-            ps$30 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 2) & act$59) begin
+        if ((lane$59 == 2) & act_r$59$q) begin
             mul$2$a = ddy$2;
             mul$2$b = op_s$21;
-            ps$31 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 2) & act$60) begin
+        if ((lane$60 == 2) & act_r$60$q) begin
             mul$2$a = ddx$2;
-            mul$2$b = q$2$q;
-            ps$32 = mul$2$p[(32'h0)+:(40)];
+            mul$2$b = op_q$10;
         end
-        if ((lane$61 == 2) & act$61) begin
+        if ((lane$61 == 2) & act_r$61$q) begin
             mul$2$a = ddx$3;
             mul$2$b = op_s$22;
-            ps$33 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 2) & act$62) begin
+        if ((lane$62 == 2) & act_r$62$q) begin
             mul$2$a = ddy$3;
             mul$2$b = op_s$23;
+        end
+        if ((lane$63 == 2) & act_r$63$q) begin
+            mul$2$a = ddx$3;
+            mul$2$b = op_q$11;
+        end
+        if ((lane$28 == 2) & add_r$28$q) begin
+            ps$0 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 2) & add_r$29$q) begin
+            ps$1 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 2) & add_r$30$q) begin
+            ps$2 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 2) & add_r$31$q) begin
+            ps$3 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 2) & add_r$32$q) begin
+            ps$4 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 2) & add_r$33$q) begin
+            ps$5 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 2) & add_r$34$q) begin
+            ps$6 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 2) & add_r$35$q) begin
+            ps$7 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 2) & add_r$36$q) begin
+            ps$8 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 2) & add_r$37$q) begin
+            ps$9 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 2) & add_r$38$q) begin
+            ps$10 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 2) & add_r$39$q) begin
+            ps$11 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 2) & add_r$40$q) begin
+            ps$12 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 2) & add_r$41$q) begin
+            ps$13 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 2) & add_r$42$q) begin
+            ps$14 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 2) & add_r$43$q) begin
+            ps$15 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 2) & add_r$44$q) begin
+            ps$16 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 2) & add_r$45$q) begin
+            ps$17 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 2) & add_r$46$q) begin
+            ps$18 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 2) & add_r$47$q) begin
+            ps$19 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 2) & add_r$48$q) begin
+            ps$20 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 2) & add_r$49$q) begin
+            ps$21 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 2) & add_r$50$q) begin
+            ps$22 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 2) & add_r$51$q) begin
+            ps$23 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 2) & add_r$52$q) begin
+            ps$24 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 2) & add_r$53$q) begin
+            ps$25 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 2) & add_r$54$q) begin
+            ps$26 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 2) & add_r$55$q) begin
+            ps$27 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 2) & add_r$56$q) begin
+            ps$28 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 2) & add_r$57$q) begin
+            ps$29 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 2) & add_r$58$q) begin
+            ps$30 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 2) & add_r$59$q) begin
+            ps$31 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 2) & add_r$60$q) begin
+            ps$32 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 2) & add_r$61$q) begin
+            ps$33 = mul$2$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 2) & add_r$62$q) begin
             ps$34 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 2) & act$63) begin
-            mul$2$a = ddx$3;
-            mul$2$b = q$2$q;
+        if ((lane$63 == 2) & add_r$63$q) begin
             ps$35 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$0 == 3) & act$0) begin
+        mul$3$en = run;
+        if ((lane$0 == 3) & act_r$0$q) begin
             mul$3$a = g0$kdx$0[(32'h0)+:(57)];
             mul$3$b = g0$kdy$1[(32'h0)+:(19)];
-            pa$0 = mul$3$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 3) & act$1) begin
+        if ((lane$1 == 3) & act_r$1$q) begin
             mul$3$a = g0$kdx$1[(32'h0)+:(57)];
             mul$3$b = g0$kdy$0[(32'h0)+:(19)];
+        end
+        if ((lane$0 == 3) & add_r$0$q) begin
+            pa$0 = mul$3$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 3) & add_r$1$q) begin
             pa$1 = mul$3$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 3) & act$2) begin
+        if ((lane$2 == 3) & act_r$2$q) begin
             mul$3$a = g0$edy$0;
             mul$3$b = g0$xf$0;
-            pn$0 = mul$3$p;
         end
-        if ((lane$3 == 3) & act$3) begin
+        if ((lane$3 == 3) & act_r$3$q) begin
             mul$3$a = g0$edx$0[(32'h0)+:(57)];
             mul$3$b = g0$toff$0;
-            pn$1 = mul$3$p;
         end
-        if ((lane$4 == 3) & act$4) begin
+        if ((lane$4 == 3) & act_r$4$q) begin
             mul$3$a = g0$edy$1;
             mul$3$b = g0$xf$1;
-            pn$2 = mul$3$p;
         end
-        if ((lane$5 == 3) & act$5) begin
+        if ((lane$5 == 3) & act_r$5$q) begin
             mul$3$a = g0$edx$1[(32'h0)+:(57)];
             mul$3$b = g0$toff$1;
-            pn$3 = mul$3$p;
         end
-        if ((lane$6 == 3) & act$6) begin
+        if ((lane$6 == 3) & act_r$6$q) begin
             mul$3$a = g0$edy$2;
             mul$3$b = g0$xf$2;
-            pn$4 = mul$3$p;
         end
-        if ((lane$7 == 3) & act$7) begin
+        if ((lane$7 == 3) & act_r$7$q) begin
             mul$3$a = g0$edx$2[(32'h0)+:(57)];
             mul$3$b = g0$toff$2;
+        end
+        if ((lane$2 == 3) & add_r$2$q) begin
+            pn$0 = mul$3$p;
+        end
+        if ((lane$3 == 3) & add_r$3$q) begin
+            pn$1 = mul$3$p;
+        end
+        if ((lane$4 == 3) & add_r$4$q) begin
+            pn$2 = mul$3$p;
+        end
+        if ((lane$5 == 3) & add_r$5$q) begin
+            pn$3 = mul$3$p;
+        end
+        if ((lane$6 == 3) & add_r$6$q) begin
+            pn$4 = mul$3$p;
+        end
+        if ((lane$7 == 3) & add_r$7$q) begin
             pn$5 = mul$3$p;
         end
-        if ((lane$8 == 3) & act$8) begin
-            mul$3$a = mant_a;
+        if ((lane$8 == 3) & act_r$8$q) begin
+            mul$3$a = mant_s$q;
             mul$3$b = op_e$0;
+        end
+        if ((lane$8 == 3) & add_r$8$q) begin
             pe$0 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 3) & act$9) begin
-            mul$3$a = mant_a;
+        if ((lane$9 == 3) & act_r$9$q) begin
+            mul$3$a = mant_s$q;
             mul$3$b = op_e$1;
+        end
+        if ((lane$9 == 3) & add_r$9$q) begin
             pe$1 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 3) & act$10) begin
-            mul$3$a = mant_a;
+        if ((lane$10 == 3) & act_r$10$q) begin
+            mul$3$a = mant_s$q;
             mul$3$b = op_e$2;
+        end
+        if ((lane$10 == 3) & add_r$10$q) begin
             pe$2 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 3) & act$11) begin
-            mul$3$a = mant_a;
+        if ((lane$11 == 3) & act_r$11$q) begin
+            mul$3$a = mant_s$q;
             mul$3$b = op_e$3;
+        end
+        if ((lane$11 == 3) & add_r$11$q) begin
             pe$3 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 3) & act$12) begin
+        if ((lane$12 == 3) & act_r$12$q) begin
             mul$3$a = p$3$q;
             mul$3$b = op_g$0;
-            pg$0 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 3) & act$13) begin
+        if ((lane$13 == 3) & act_r$13$q) begin
             mul$3$a = p$2$q;
             mul$3$b = op_g$1;
-            pg$1 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 3) & act$14) begin
+        if ((lane$14 == 3) & act_r$14$q) begin
             mul$3$a = p$0$q;
             mul$3$b = op_g$2;
-            pg$2 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 3) & act$15) begin
+        if ((lane$15 == 3) & act_r$15$q) begin
             mul$3$a = p$1$q;
             mul$3$b = op_g$3;
-            pg$3 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 3) & act$16) begin
+        if ((lane$16 == 3) & act_r$16$q) begin
             mul$3$a = p$3$q;
             mul$3$b = op_g$4;
-            pg$4 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 3) & act$17) begin
+        if ((lane$17 == 3) & act_r$17$q) begin
             mul$3$a = p$2$q;
             mul$3$b = op_g$5;
-            pg$5 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 3) & act$18) begin
+        if ((lane$18 == 3) & act_r$18$q) begin
             mul$3$a = p$0$q;
             mul$3$b = op_g$6;
-            pg$6 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 3) & act$19) begin
+        if ((lane$19 == 3) & act_r$19$q) begin
             mul$3$a = p$1$q;
             mul$3$b = op_g$7;
-            pg$7 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 3) & act$20) begin
+        if ((lane$20 == 3) & act_r$20$q) begin
             mul$3$a = p$3$q;
             mul$3$b = op_g$8;
-            pg$8 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 3) & act$21) begin
+        if ((lane$21 == 3) & act_r$21$q) begin
             mul$3$a = p$2$q;
             mul$3$b = op_g$9;
-            pg$9 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 3) & act$22) begin
+        if ((lane$22 == 3) & act_r$22$q) begin
             mul$3$a = p$0$q;
             mul$3$b = op_g$10;
-            pg$10 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 3) & act$23) begin
+        if ((lane$23 == 3) & act_r$23$q) begin
             mul$3$a = p$1$q;
             mul$3$b = op_g$11;
-            pg$11 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 3) & act$24) begin
+        if ((lane$24 == 3) & act_r$24$q) begin
             mul$3$a = p$3$q;
             mul$3$b = op_g$12;
-            pg$12 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 3) & act$25) begin
+        if ((lane$25 == 3) & act_r$25$q) begin
             mul$3$a = p$2$q;
             mul$3$b = op_g$13;
-            pg$13 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 3) & act$26) begin
+        if ((lane$26 == 3) & act_r$26$q) begin
             mul$3$a = p$0$q;
             mul$3$b = op_g$14;
-            pg$14 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 3) & act$27) begin
+        if ((lane$27 == 3) & act_r$27$q) begin
             mul$3$a = p$1$q;
             mul$3$b = op_g$15;
+        end
+        if ((lane$12 == 3) & add_r$12$q) begin
+            pg$0 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 3) & add_r$13$q) begin
+            pg$1 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 3) & add_r$14$q) begin
+            pg$2 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 3) & add_r$15$q) begin
+            pg$3 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 3) & add_r$16$q) begin
+            pg$4 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 3) & add_r$17$q) begin
+            pg$5 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 3) & add_r$18$q) begin
+            pg$6 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 3) & add_r$19$q) begin
+            pg$7 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 3) & add_r$20$q) begin
+            pg$8 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 3) & add_r$21$q) begin
+            pg$9 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 3) & add_r$22$q) begin
+            pg$10 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 3) & add_r$23$q) begin
+            pg$11 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 3) & add_r$24$q) begin
+            pg$12 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 3) & add_r$25$q) begin
+            pg$13 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 3) & add_r$26$q) begin
+            pg$14 = mul$3$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 3) & add_r$27$q) begin
             pg$15 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 3) & act$28) begin
+        if ((lane$28 == 3) & act_r$28$q) begin
             mul$3$a = ddx$0;
             mul$3$b = op_s$0;
-            ps$0 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 3) & act$29) begin
+        if ((lane$29 == 3) & act_r$29$q) begin
             mul$3$a = ddy$0;
             mul$3$b = op_s$1;
-            ps$1 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 3) & act$30) begin
+        if ((lane$30 == 3) & act_r$30$q) begin
             mul$3$a = ddx$0;
-            mul$3$b = q$0$q;
-            ps$2 = mul$3$p[(32'h0)+:(40)];
+            mul$3$b = op_q$0;
         end
-        if ((lane$31 == 3) & act$31) begin
+        if ((lane$31 == 3) & act_r$31$q) begin
             mul$3$a = ddx$1;
             mul$3$b = op_s$2;
-            ps$3 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 3) & act$32) begin
+        if ((lane$32 == 3) & act_r$32$q) begin
             mul$3$a = ddy$1;
             mul$3$b = op_s$3;
-            ps$4 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 3) & act$33) begin
+        if ((lane$33 == 3) & act_r$33$q) begin
             mul$3$a = ddx$1;
-            mul$3$b = q$0$q;
-            ps$5 = mul$3$p[(32'h0)+:(40)];
+            mul$3$b = op_q$1;
         end
-        if ((lane$34 == 3) & act$34) begin
+        if ((lane$34 == 3) & act_r$34$q) begin
             mul$3$a = ddx$2;
             mul$3$b = op_s$4;
-            ps$6 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 3) & act$35) begin
+        if ((lane$35 == 3) & act_r$35$q) begin
             mul$3$a = ddy$2;
             mul$3$b = op_s$5;
-            ps$7 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 3) & act$36) begin
+        if ((lane$36 == 3) & act_r$36$q) begin
             mul$3$a = ddx$2;
-            mul$3$b = q$0$q;
-            ps$8 = mul$3$p[(32'h0)+:(40)];
+            mul$3$b = op_q$2;
         end
-        if ((lane$37 == 3) & act$37) begin
+        if ((lane$37 == 3) & act_r$37$q) begin
             mul$3$a = ddx$3;
             mul$3$b = op_s$6;
-            ps$9 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 3) & act$38) begin
+        if ((lane$38 == 3) & act_r$38$q) begin
             mul$3$a = ddy$3;
             mul$3$b = op_s$7;
-            ps$10 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 3) & act$39) begin
+        if ((lane$39 == 3) & act_r$39$q) begin
             mul$3$a = ddx$3;
-            mul$3$b = q$0$q;
-            ps$11 = mul$3$p[(32'h0)+:(40)];
+            mul$3$b = op_q$3;
         end
-        if ((lane$40 == 3) & act$40) begin
+        if ((lane$40 == 3) & act_r$40$q) begin
             mul$3$a = ddx$0;
             mul$3$b = op_s$8;
-            ps$12 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 3) & act$41) begin
+        if ((lane$41 == 3) & act_r$41$q) begin
             mul$3$a = ddy$0;
             mul$3$b = op_s$9;
-            ps$13 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 3) & act$42) begin
+        if ((lane$42 == 3) & act_r$42$q) begin
             mul$3$a = ddx$0;
-            mul$3$b = q$1$q;
-            ps$14 = mul$3$p[(32'h0)+:(40)];
+            mul$3$b = op_q$4;
         end
-        if ((lane$43 == 3) & act$43) begin
+        if ((lane$43 == 3) & act_r$43$q) begin
             mul$3$a = ddx$1;
             mul$3$b = op_s$10;
-            ps$15 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 3) & act$44) begin
+        if ((lane$44 == 3) & act_r$44$q) begin
             mul$3$a = ddy$1;
             mul$3$b = op_s$11;
-            ps$16 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 3) & act$45) begin
+        if ((lane$45 == 3) & act_r$45$q) begin
             mul$3$a = ddx$1;
-            mul$3$b = q$1$q;
-            ps$17 = mul$3$p[(32'h0)+:(40)];
+            mul$3$b = op_q$5;
         end
-        if ((lane$46 == 3) & act$46) begin
+        if ((lane$46 == 3) & act_r$46$q) begin
             mul$3$a = ddx$2;
             mul$3$b = op_s$12;
-            ps$18 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 3) & act$47) begin
+        if ((lane$47 == 3) & act_r$47$q) begin
             mul$3$a = ddy$2;
             mul$3$b = op_s$13;
-            ps$19 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 3) & act$48) begin
+        if ((lane$48 == 3) & act_r$48$q) begin
             mul$3$a = ddx$2;
-            mul$3$b = q$1$q;
-            ps$20 = mul$3$p[(32'h0)+:(40)];
+            mul$3$b = op_q$6;
         end
-        if ((lane$49 == 3) & act$49) begin
+        if ((lane$49 == 3) & act_r$49$q) begin
             mul$3$a = ddx$3;
             mul$3$b = op_s$14;
-            ps$21 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 3) & act$50) begin
+        if ((lane$50 == 3) & act_r$50$q) begin
             mul$3$a = ddy$3;
             mul$3$b = op_s$15;
-            ps$22 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 3) & act$51) begin
+        if ((lane$51 == 3) & act_r$51$q) begin
             mul$3$a = ddx$3;
-            mul$3$b = q$1$q;
-            ps$23 = mul$3$p[(32'h0)+:(40)];
+            mul$3$b = op_q$7;
         end
-        if ((lane$52 == 3) & act$52) begin
+        if ((lane$52 == 3) & act_r$52$q) begin
             mul$3$a = ddx$0;
             mul$3$b = op_s$16;
-            ps$24 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 3) & act$53) begin
+        if ((lane$53 == 3) & act_r$53$q) begin
             mul$3$a = ddy$0;
             mul$3$b = op_s$17;
-            ps$25 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 3) & act$54) begin
+        if ((lane$54 == 3) & act_r$54$q) begin
             mul$3$a = ddx$0;
-            mul$3$b = q$2$q;
-            ps$26 = mul$3$p[(32'h0)+:(40)];
+            mul$3$b = op_q$8;
         end
-        if ((lane$55 == 3) & act$55) begin
+        if ((lane$55 == 3) & act_r$55$q) begin
             mul$3$a = ddx$1;
             mul$3$b = op_s$18;
-            ps$27 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 3) & act$56) begin
+        if ((lane$56 == 3) & act_r$56$q) begin
             mul$3$a = ddy$1;
             mul$3$b = op_s$19;
-            ps$28 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 3) & act$57) begin
+        if ((lane$57 == 3) & act_r$57$q) begin
             mul$3$a = ddx$1;
-            mul$3$b = q$2$q;
-            ps$29 = mul$3$p[(32'h0)+:(40)];
+            mul$3$b = op_q$9;
         end
-        if ((lane$58 == 3) & act$58) begin
+        if ((lane$58 == 3) & act_r$58$q) begin
             mul$3$a = ddx$2;
             mul$3$b = op_s$20;
-            ps$30 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 3) & act$59) begin
+        if ((lane$59 == 3) & act_r$59$q) begin
             mul$3$a = ddy$2;
             mul$3$b = op_s$21;
-            ps$31 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 3) & act$60) begin
+        if ((lane$60 == 3) & act_r$60$q) begin
             mul$3$a = ddx$2;
-            mul$3$b = q$2$q;
-            ps$32 = mul$3$p[(32'h0)+:(40)];
+            mul$3$b = op_q$10;
         end
-        if ((lane$61 == 3) & act$61) begin
+        if ((lane$61 == 3) & act_r$61$q) begin
             mul$3$a = ddx$3;
             mul$3$b = op_s$22;
-            ps$33 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 3) & act$62) begin
+        if ((lane$62 == 3) & act_r$62$q) begin
             mul$3$a = ddy$3;
             mul$3$b = op_s$23;
+        end
+        if ((lane$63 == 3) & act_r$63$q) begin
+            mul$3$a = ddx$3;
+            mul$3$b = op_q$11;
+        end
+        if ((lane$28 == 3) & add_r$28$q) begin
+            ps$0 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 3) & add_r$29$q) begin
+            ps$1 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 3) & add_r$30$q) begin
+            ps$2 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 3) & add_r$31$q) begin
+            ps$3 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 3) & add_r$32$q) begin
+            ps$4 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 3) & add_r$33$q) begin
+            ps$5 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 3) & add_r$34$q) begin
+            ps$6 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 3) & add_r$35$q) begin
+            ps$7 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 3) & add_r$36$q) begin
+            ps$8 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 3) & add_r$37$q) begin
+            ps$9 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 3) & add_r$38$q) begin
+            ps$10 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 3) & add_r$39$q) begin
+            ps$11 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 3) & add_r$40$q) begin
+            ps$12 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 3) & add_r$41$q) begin
+            ps$13 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 3) & add_r$42$q) begin
+            ps$14 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 3) & add_r$43$q) begin
+            ps$15 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 3) & add_r$44$q) begin
+            ps$16 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 3) & add_r$45$q) begin
+            ps$17 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 3) & add_r$46$q) begin
+            ps$18 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 3) & add_r$47$q) begin
+            ps$19 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 3) & add_r$48$q) begin
+            ps$20 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 3) & add_r$49$q) begin
+            ps$21 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 3) & add_r$50$q) begin
+            ps$22 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 3) & add_r$51$q) begin
+            ps$23 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 3) & add_r$52$q) begin
+            ps$24 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 3) & add_r$53$q) begin
+            ps$25 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 3) & add_r$54$q) begin
+            ps$26 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 3) & add_r$55$q) begin
+            ps$27 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 3) & add_r$56$q) begin
+            ps$28 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 3) & add_r$57$q) begin
+            ps$29 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 3) & add_r$58$q) begin
+            ps$30 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 3) & add_r$59$q) begin
+            ps$31 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 3) & add_r$60$q) begin
+            ps$32 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 3) & add_r$61$q) begin
+            ps$33 = mul$3$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 3) & add_r$62$q) begin
             ps$34 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 3) & act$63) begin
-            mul$3$a = ddx$3;
-            mul$3$b = q$2$q;
+        if ((lane$63 == 3) & add_r$63$q) begin
             ps$35 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$0 == 4) & act$0) begin
+        mul$4$en = run;
+        if ((lane$0 == 4) & act_r$0$q) begin
             mul$4$a = g0$kdx$0[(32'h0)+:(57)];
             mul$4$b = g0$kdy$1[(32'h0)+:(19)];
-            pa$0 = mul$4$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 4) & act$1) begin
+        if ((lane$1 == 4) & act_r$1$q) begin
             mul$4$a = g0$kdx$1[(32'h0)+:(57)];
             mul$4$b = g0$kdy$0[(32'h0)+:(19)];
+        end
+        if ((lane$0 == 4) & add_r$0$q) begin
+            pa$0 = mul$4$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 4) & add_r$1$q) begin
             pa$1 = mul$4$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 4) & act$2) begin
+        if ((lane$2 == 4) & act_r$2$q) begin
             mul$4$a = g0$edy$0;
             mul$4$b = g0$xf$0;
-            pn$0 = mul$4$p;
         end
-        if ((lane$3 == 4) & act$3) begin
+        if ((lane$3 == 4) & act_r$3$q) begin
             mul$4$a = g0$edx$0[(32'h0)+:(57)];
             mul$4$b = g0$toff$0;
-            pn$1 = mul$4$p;
         end
-        if ((lane$4 == 4) & act$4) begin
+        if ((lane$4 == 4) & act_r$4$q) begin
             mul$4$a = g0$edy$1;
             mul$4$b = g0$xf$1;
-            pn$2 = mul$4$p;
         end
-        if ((lane$5 == 4) & act$5) begin
+        if ((lane$5 == 4) & act_r$5$q) begin
             mul$4$a = g0$edx$1[(32'h0)+:(57)];
             mul$4$b = g0$toff$1;
-            pn$3 = mul$4$p;
         end
-        if ((lane$6 == 4) & act$6) begin
+        if ((lane$6 == 4) & act_r$6$q) begin
             mul$4$a = g0$edy$2;
             mul$4$b = g0$xf$2;
-            pn$4 = mul$4$p;
         end
-        if ((lane$7 == 4) & act$7) begin
+        if ((lane$7 == 4) & act_r$7$q) begin
             mul$4$a = g0$edx$2[(32'h0)+:(57)];
             mul$4$b = g0$toff$2;
+        end
+        if ((lane$2 == 4) & add_r$2$q) begin
+            pn$0 = mul$4$p;
+        end
+        if ((lane$3 == 4) & add_r$3$q) begin
+            pn$1 = mul$4$p;
+        end
+        if ((lane$4 == 4) & add_r$4$q) begin
+            pn$2 = mul$4$p;
+        end
+        if ((lane$5 == 4) & add_r$5$q) begin
+            pn$3 = mul$4$p;
+        end
+        if ((lane$6 == 4) & add_r$6$q) begin
+            pn$4 = mul$4$p;
+        end
+        if ((lane$7 == 4) & add_r$7$q) begin
             pn$5 = mul$4$p;
         end
-        if ((lane$8 == 4) & act$8) begin
-            mul$4$a = mant_a;
+        if ((lane$8 == 4) & act_r$8$q) begin
+            mul$4$a = mant_s$q;
             mul$4$b = op_e$0;
+        end
+        if ((lane$8 == 4) & add_r$8$q) begin
             pe$0 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 4) & act$9) begin
-            mul$4$a = mant_a;
+        if ((lane$9 == 4) & act_r$9$q) begin
+            mul$4$a = mant_s$q;
             mul$4$b = op_e$1;
+        end
+        if ((lane$9 == 4) & add_r$9$q) begin
             pe$1 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 4) & act$10) begin
-            mul$4$a = mant_a;
+        if ((lane$10 == 4) & act_r$10$q) begin
+            mul$4$a = mant_s$q;
             mul$4$b = op_e$2;
+        end
+        if ((lane$10 == 4) & add_r$10$q) begin
             pe$2 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 4) & act$11) begin
-            mul$4$a = mant_a;
+        if ((lane$11 == 4) & act_r$11$q) begin
+            mul$4$a = mant_s$q;
             mul$4$b = op_e$3;
+        end
+        if ((lane$11 == 4) & add_r$11$q) begin
             pe$3 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 4) & act$12) begin
+        if ((lane$12 == 4) & act_r$12$q) begin
             mul$4$a = p$3$q;
             mul$4$b = op_g$0;
-            pg$0 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 4) & act$13) begin
+        if ((lane$13 == 4) & act_r$13$q) begin
             mul$4$a = p$2$q;
             mul$4$b = op_g$1;
-            pg$1 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 4) & act$14) begin
+        if ((lane$14 == 4) & act_r$14$q) begin
             mul$4$a = p$0$q;
             mul$4$b = op_g$2;
-            pg$2 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 4) & act$15) begin
+        if ((lane$15 == 4) & act_r$15$q) begin
             mul$4$a = p$1$q;
             mul$4$b = op_g$3;
-            pg$3 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 4) & act$16) begin
+        if ((lane$16 == 4) & act_r$16$q) begin
             mul$4$a = p$3$q;
             mul$4$b = op_g$4;
-            pg$4 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 4) & act$17) begin
+        if ((lane$17 == 4) & act_r$17$q) begin
             mul$4$a = p$2$q;
             mul$4$b = op_g$5;
-            pg$5 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 4) & act$18) begin
+        if ((lane$18 == 4) & act_r$18$q) begin
             mul$4$a = p$0$q;
             mul$4$b = op_g$6;
-            pg$6 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 4) & act$19) begin
+        if ((lane$19 == 4) & act_r$19$q) begin
             mul$4$a = p$1$q;
             mul$4$b = op_g$7;
-            pg$7 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 4) & act$20) begin
+        if ((lane$20 == 4) & act_r$20$q) begin
             mul$4$a = p$3$q;
             mul$4$b = op_g$8;
-            pg$8 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 4) & act$21) begin
+        if ((lane$21 == 4) & act_r$21$q) begin
             mul$4$a = p$2$q;
             mul$4$b = op_g$9;
-            pg$9 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 4) & act$22) begin
+        if ((lane$22 == 4) & act_r$22$q) begin
             mul$4$a = p$0$q;
             mul$4$b = op_g$10;
-            pg$10 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 4) & act$23) begin
+        if ((lane$23 == 4) & act_r$23$q) begin
             mul$4$a = p$1$q;
             mul$4$b = op_g$11;
-            pg$11 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 4) & act$24) begin
+        if ((lane$24 == 4) & act_r$24$q) begin
             mul$4$a = p$3$q;
             mul$4$b = op_g$12;
-            pg$12 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 4) & act$25) begin
+        if ((lane$25 == 4) & act_r$25$q) begin
             mul$4$a = p$2$q;
             mul$4$b = op_g$13;
-            pg$13 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 4) & act$26) begin
+        if ((lane$26 == 4) & act_r$26$q) begin
             mul$4$a = p$0$q;
             mul$4$b = op_g$14;
-            pg$14 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 4) & act$27) begin
+        if ((lane$27 == 4) & act_r$27$q) begin
             mul$4$a = p$1$q;
             mul$4$b = op_g$15;
+        end
+        if ((lane$12 == 4) & add_r$12$q) begin
+            pg$0 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 4) & add_r$13$q) begin
+            pg$1 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 4) & add_r$14$q) begin
+            pg$2 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 4) & add_r$15$q) begin
+            pg$3 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 4) & add_r$16$q) begin
+            pg$4 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 4) & add_r$17$q) begin
+            pg$5 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 4) & add_r$18$q) begin
+            pg$6 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 4) & add_r$19$q) begin
+            pg$7 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 4) & add_r$20$q) begin
+            pg$8 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 4) & add_r$21$q) begin
+            pg$9 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 4) & add_r$22$q) begin
+            pg$10 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 4) & add_r$23$q) begin
+            pg$11 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 4) & add_r$24$q) begin
+            pg$12 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 4) & add_r$25$q) begin
+            pg$13 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 4) & add_r$26$q) begin
+            pg$14 = mul$4$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 4) & add_r$27$q) begin
             pg$15 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 4) & act$28) begin
+        if ((lane$28 == 4) & act_r$28$q) begin
             mul$4$a = ddx$0;
             mul$4$b = op_s$0;
-            ps$0 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 4) & act$29) begin
+        if ((lane$29 == 4) & act_r$29$q) begin
             mul$4$a = ddy$0;
             mul$4$b = op_s$1;
-            ps$1 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 4) & act$30) begin
+        if ((lane$30 == 4) & act_r$30$q) begin
             mul$4$a = ddx$0;
-            mul$4$b = q$0$q;
-            ps$2 = mul$4$p[(32'h0)+:(40)];
+            mul$4$b = op_q$0;
         end
-        if ((lane$31 == 4) & act$31) begin
+        if ((lane$31 == 4) & act_r$31$q) begin
             mul$4$a = ddx$1;
             mul$4$b = op_s$2;
-            ps$3 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 4) & act$32) begin
+        if ((lane$32 == 4) & act_r$32$q) begin
             mul$4$a = ddy$1;
             mul$4$b = op_s$3;
-            ps$4 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 4) & act$33) begin
+        if ((lane$33 == 4) & act_r$33$q) begin
             mul$4$a = ddx$1;
-            mul$4$b = q$0$q;
-            ps$5 = mul$4$p[(32'h0)+:(40)];
+            mul$4$b = op_q$1;
         end
-        if ((lane$34 == 4) & act$34) begin
+        if ((lane$34 == 4) & act_r$34$q) begin
             mul$4$a = ddx$2;
             mul$4$b = op_s$4;
-            ps$6 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 4) & act$35) begin
+        if ((lane$35 == 4) & act_r$35$q) begin
             mul$4$a = ddy$2;
             mul$4$b = op_s$5;
-            ps$7 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 4) & act$36) begin
+        if ((lane$36 == 4) & act_r$36$q) begin
             mul$4$a = ddx$2;
-            mul$4$b = q$0$q;
-            ps$8 = mul$4$p[(32'h0)+:(40)];
+            mul$4$b = op_q$2;
         end
-        if ((lane$37 == 4) & act$37) begin
+        if ((lane$37 == 4) & act_r$37$q) begin
             mul$4$a = ddx$3;
             mul$4$b = op_s$6;
-            ps$9 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 4) & act$38) begin
+        if ((lane$38 == 4) & act_r$38$q) begin
             mul$4$a = ddy$3;
             mul$4$b = op_s$7;
-            ps$10 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 4) & act$39) begin
+        if ((lane$39 == 4) & act_r$39$q) begin
             mul$4$a = ddx$3;
-            mul$4$b = q$0$q;
-            ps$11 = mul$4$p[(32'h0)+:(40)];
+            mul$4$b = op_q$3;
         end
-        if ((lane$40 == 4) & act$40) begin
+        if ((lane$40 == 4) & act_r$40$q) begin
             mul$4$a = ddx$0;
             mul$4$b = op_s$8;
-            ps$12 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 4) & act$41) begin
+        if ((lane$41 == 4) & act_r$41$q) begin
             mul$4$a = ddy$0;
             mul$4$b = op_s$9;
-            ps$13 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 4) & act$42) begin
+        if ((lane$42 == 4) & act_r$42$q) begin
             mul$4$a = ddx$0;
-            mul$4$b = q$1$q;
-            ps$14 = mul$4$p[(32'h0)+:(40)];
+            mul$4$b = op_q$4;
         end
-        if ((lane$43 == 4) & act$43) begin
+        if ((lane$43 == 4) & act_r$43$q) begin
             mul$4$a = ddx$1;
             mul$4$b = op_s$10;
-            ps$15 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 4) & act$44) begin
+        if ((lane$44 == 4) & act_r$44$q) begin
             mul$4$a = ddy$1;
             mul$4$b = op_s$11;
-            ps$16 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 4) & act$45) begin
+        if ((lane$45 == 4) & act_r$45$q) begin
             mul$4$a = ddx$1;
-            mul$4$b = q$1$q;
-            ps$17 = mul$4$p[(32'h0)+:(40)];
+            mul$4$b = op_q$5;
         end
-        if ((lane$46 == 4) & act$46) begin
+        if ((lane$46 == 4) & act_r$46$q) begin
             mul$4$a = ddx$2;
             mul$4$b = op_s$12;
-            ps$18 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 4) & act$47) begin
+        if ((lane$47 == 4) & act_r$47$q) begin
             mul$4$a = ddy$2;
             mul$4$b = op_s$13;
-            ps$19 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 4) & act$48) begin
+        if ((lane$48 == 4) & act_r$48$q) begin
             mul$4$a = ddx$2;
-            mul$4$b = q$1$q;
-            ps$20 = mul$4$p[(32'h0)+:(40)];
+            mul$4$b = op_q$6;
         end
-        if ((lane$49 == 4) & act$49) begin
+        if ((lane$49 == 4) & act_r$49$q) begin
             mul$4$a = ddx$3;
             mul$4$b = op_s$14;
-            ps$21 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 4) & act$50) begin
+        if ((lane$50 == 4) & act_r$50$q) begin
             mul$4$a = ddy$3;
             mul$4$b = op_s$15;
-            ps$22 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 4) & act$51) begin
+        if ((lane$51 == 4) & act_r$51$q) begin
             mul$4$a = ddx$3;
-            mul$4$b = q$1$q;
-            ps$23 = mul$4$p[(32'h0)+:(40)];
+            mul$4$b = op_q$7;
         end
-        if ((lane$52 == 4) & act$52) begin
+        if ((lane$52 == 4) & act_r$52$q) begin
             mul$4$a = ddx$0;
             mul$4$b = op_s$16;
-            ps$24 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 4) & act$53) begin
+        if ((lane$53 == 4) & act_r$53$q) begin
             mul$4$a = ddy$0;
             mul$4$b = op_s$17;
-            ps$25 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 4) & act$54) begin
+        if ((lane$54 == 4) & act_r$54$q) begin
             mul$4$a = ddx$0;
-            mul$4$b = q$2$q;
-            ps$26 = mul$4$p[(32'h0)+:(40)];
+            mul$4$b = op_q$8;
         end
-        if ((lane$55 == 4) & act$55) begin
+        if ((lane$55 == 4) & act_r$55$q) begin
             mul$4$a = ddx$1;
             mul$4$b = op_s$18;
-            ps$27 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 4) & act$56) begin
+        if ((lane$56 == 4) & act_r$56$q) begin
             mul$4$a = ddy$1;
             mul$4$b = op_s$19;
-            ps$28 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 4) & act$57) begin
+        if ((lane$57 == 4) & act_r$57$q) begin
             mul$4$a = ddx$1;
-            mul$4$b = q$2$q;
-            ps$29 = mul$4$p[(32'h0)+:(40)];
+            mul$4$b = op_q$9;
         end
-        if ((lane$58 == 4) & act$58) begin
+        if ((lane$58 == 4) & act_r$58$q) begin
             mul$4$a = ddx$2;
             mul$4$b = op_s$20;
-            ps$30 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 4) & act$59) begin
+        if ((lane$59 == 4) & act_r$59$q) begin
             mul$4$a = ddy$2;
             mul$4$b = op_s$21;
-            ps$31 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 4) & act$60) begin
+        if ((lane$60 == 4) & act_r$60$q) begin
             mul$4$a = ddx$2;
-            mul$4$b = q$2$q;
-            ps$32 = mul$4$p[(32'h0)+:(40)];
+            mul$4$b = op_q$10;
         end
-        if ((lane$61 == 4) & act$61) begin
+        if ((lane$61 == 4) & act_r$61$q) begin
             mul$4$a = ddx$3;
             mul$4$b = op_s$22;
-            ps$33 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 4) & act$62) begin
+        if ((lane$62 == 4) & act_r$62$q) begin
             mul$4$a = ddy$3;
             mul$4$b = op_s$23;
+        end
+        if ((lane$63 == 4) & act_r$63$q) begin
+            mul$4$a = ddx$3;
+            mul$4$b = op_q$11;
+        end
+        if ((lane$28 == 4) & add_r$28$q) begin
+            ps$0 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 4) & add_r$29$q) begin
+            ps$1 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 4) & add_r$30$q) begin
+            ps$2 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 4) & add_r$31$q) begin
+            ps$3 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 4) & add_r$32$q) begin
+            ps$4 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 4) & add_r$33$q) begin
+            ps$5 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 4) & add_r$34$q) begin
+            ps$6 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 4) & add_r$35$q) begin
+            ps$7 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 4) & add_r$36$q) begin
+            ps$8 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 4) & add_r$37$q) begin
+            ps$9 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 4) & add_r$38$q) begin
+            ps$10 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 4) & add_r$39$q) begin
+            ps$11 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 4) & add_r$40$q) begin
+            ps$12 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 4) & add_r$41$q) begin
+            ps$13 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 4) & add_r$42$q) begin
+            ps$14 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 4) & add_r$43$q) begin
+            ps$15 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 4) & add_r$44$q) begin
+            ps$16 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 4) & add_r$45$q) begin
+            ps$17 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 4) & add_r$46$q) begin
+            ps$18 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 4) & add_r$47$q) begin
+            ps$19 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 4) & add_r$48$q) begin
+            ps$20 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 4) & add_r$49$q) begin
+            ps$21 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 4) & add_r$50$q) begin
+            ps$22 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 4) & add_r$51$q) begin
+            ps$23 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 4) & add_r$52$q) begin
+            ps$24 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 4) & add_r$53$q) begin
+            ps$25 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 4) & add_r$54$q) begin
+            ps$26 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 4) & add_r$55$q) begin
+            ps$27 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 4) & add_r$56$q) begin
+            ps$28 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 4) & add_r$57$q) begin
+            ps$29 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 4) & add_r$58$q) begin
+            ps$30 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 4) & add_r$59$q) begin
+            ps$31 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 4) & add_r$60$q) begin
+            ps$32 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 4) & add_r$61$q) begin
+            ps$33 = mul$4$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 4) & add_r$62$q) begin
             ps$34 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 4) & act$63) begin
-            mul$4$a = ddx$3;
-            mul$4$b = q$2$q;
+        if ((lane$63 == 4) & add_r$63$q) begin
             ps$35 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$0 == 5) & act$0) begin
+        mul$5$en = run;
+        if ((lane$0 == 5) & act_r$0$q) begin
             mul$5$a = g0$kdx$0[(32'h0)+:(57)];
             mul$5$b = g0$kdy$1[(32'h0)+:(19)];
-            pa$0 = mul$5$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 5) & act$1) begin
+        if ((lane$1 == 5) & act_r$1$q) begin
             mul$5$a = g0$kdx$1[(32'h0)+:(57)];
             mul$5$b = g0$kdy$0[(32'h0)+:(19)];
+        end
+        if ((lane$0 == 5) & add_r$0$q) begin
+            pa$0 = mul$5$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 5) & add_r$1$q) begin
             pa$1 = mul$5$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 5) & act$2) begin
+        if ((lane$2 == 5) & act_r$2$q) begin
             mul$5$a = g0$edy$0;
             mul$5$b = g0$xf$0;
-            pn$0 = mul$5$p;
         end
-        if ((lane$3 == 5) & act$3) begin
+        if ((lane$3 == 5) & act_r$3$q) begin
             mul$5$a = g0$edx$0[(32'h0)+:(57)];
             mul$5$b = g0$toff$0;
-            pn$1 = mul$5$p;
         end
-        if ((lane$4 == 5) & act$4) begin
+        if ((lane$4 == 5) & act_r$4$q) begin
             mul$5$a = g0$edy$1;
             mul$5$b = g0$xf$1;
-            pn$2 = mul$5$p;
         end
-        if ((lane$5 == 5) & act$5) begin
+        if ((lane$5 == 5) & act_r$5$q) begin
             mul$5$a = g0$edx$1[(32'h0)+:(57)];
             mul$5$b = g0$toff$1;
-            pn$3 = mul$5$p;
         end
-        if ((lane$6 == 5) & act$6) begin
+        if ((lane$6 == 5) & act_r$6$q) begin
             mul$5$a = g0$edy$2;
             mul$5$b = g0$xf$2;
-            pn$4 = mul$5$p;
         end
-        if ((lane$7 == 5) & act$7) begin
+        if ((lane$7 == 5) & act_r$7$q) begin
             mul$5$a = g0$edx$2[(32'h0)+:(57)];
             mul$5$b = g0$toff$2;
+        end
+        if ((lane$2 == 5) & add_r$2$q) begin
+            pn$0 = mul$5$p;
+        end
+        if ((lane$3 == 5) & add_r$3$q) begin
+            pn$1 = mul$5$p;
+        end
+        if ((lane$4 == 5) & add_r$4$q) begin
+            pn$2 = mul$5$p;
+        end
+        if ((lane$5 == 5) & add_r$5$q) begin
+            pn$3 = mul$5$p;
+        end
+        if ((lane$6 == 5) & add_r$6$q) begin
+            pn$4 = mul$5$p;
+        end
+        if ((lane$7 == 5) & add_r$7$q) begin
             pn$5 = mul$5$p;
         end
-        if ((lane$8 == 5) & act$8) begin
-            mul$5$a = mant_a;
+        if ((lane$8 == 5) & act_r$8$q) begin
+            mul$5$a = mant_s$q;
             mul$5$b = op_e$0;
+        end
+        if ((lane$8 == 5) & add_r$8$q) begin
             pe$0 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 5) & act$9) begin
-            mul$5$a = mant_a;
+        if ((lane$9 == 5) & act_r$9$q) begin
+            mul$5$a = mant_s$q;
             mul$5$b = op_e$1;
+        end
+        if ((lane$9 == 5) & add_r$9$q) begin
             pe$1 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 5) & act$10) begin
-            mul$5$a = mant_a;
+        if ((lane$10 == 5) & act_r$10$q) begin
+            mul$5$a = mant_s$q;
             mul$5$b = op_e$2;
+        end
+        if ((lane$10 == 5) & add_r$10$q) begin
             pe$2 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 5) & act$11) begin
-            mul$5$a = mant_a;
+        if ((lane$11 == 5) & act_r$11$q) begin
+            mul$5$a = mant_s$q;
             mul$5$b = op_e$3;
+        end
+        if ((lane$11 == 5) & add_r$11$q) begin
             pe$3 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 5) & act$12) begin
+        if ((lane$12 == 5) & act_r$12$q) begin
             mul$5$a = p$3$q;
             mul$5$b = op_g$0;
-            pg$0 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 5) & act$13) begin
+        if ((lane$13 == 5) & act_r$13$q) begin
             mul$5$a = p$2$q;
             mul$5$b = op_g$1;
-            pg$1 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 5) & act$14) begin
+        if ((lane$14 == 5) & act_r$14$q) begin
             mul$5$a = p$0$q;
             mul$5$b = op_g$2;
-            pg$2 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 5) & act$15) begin
+        if ((lane$15 == 5) & act_r$15$q) begin
             mul$5$a = p$1$q;
             mul$5$b = op_g$3;
-            pg$3 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 5) & act$16) begin
+        if ((lane$16 == 5) & act_r$16$q) begin
             mul$5$a = p$3$q;
             mul$5$b = op_g$4;
-            pg$4 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 5) & act$17) begin
+        if ((lane$17 == 5) & act_r$17$q) begin
             mul$5$a = p$2$q;
             mul$5$b = op_g$5;
-            pg$5 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 5) & act$18) begin
+        if ((lane$18 == 5) & act_r$18$q) begin
             mul$5$a = p$0$q;
             mul$5$b = op_g$6;
-            pg$6 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 5) & act$19) begin
+        if ((lane$19 == 5) & act_r$19$q) begin
             mul$5$a = p$1$q;
             mul$5$b = op_g$7;
-            pg$7 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 5) & act$20) begin
+        if ((lane$20 == 5) & act_r$20$q) begin
             mul$5$a = p$3$q;
             mul$5$b = op_g$8;
-            pg$8 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 5) & act$21) begin
+        if ((lane$21 == 5) & act_r$21$q) begin
             mul$5$a = p$2$q;
             mul$5$b = op_g$9;
-            pg$9 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 5) & act$22) begin
+        if ((lane$22 == 5) & act_r$22$q) begin
             mul$5$a = p$0$q;
             mul$5$b = op_g$10;
-            pg$10 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 5) & act$23) begin
+        if ((lane$23 == 5) & act_r$23$q) begin
             mul$5$a = p$1$q;
             mul$5$b = op_g$11;
-            pg$11 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 5) & act$24) begin
+        if ((lane$24 == 5) & act_r$24$q) begin
             mul$5$a = p$3$q;
             mul$5$b = op_g$12;
-            pg$12 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 5) & act$25) begin
+        if ((lane$25 == 5) & act_r$25$q) begin
             mul$5$a = p$2$q;
             mul$5$b = op_g$13;
-            pg$13 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 5) & act$26) begin
+        if ((lane$26 == 5) & act_r$26$q) begin
             mul$5$a = p$0$q;
             mul$5$b = op_g$14;
-            pg$14 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 5) & act$27) begin
+        if ((lane$27 == 5) & act_r$27$q) begin
             mul$5$a = p$1$q;
             mul$5$b = op_g$15;
+        end
+        if ((lane$12 == 5) & add_r$12$q) begin
+            pg$0 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 5) & add_r$13$q) begin
+            pg$1 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 5) & add_r$14$q) begin
+            pg$2 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 5) & add_r$15$q) begin
+            pg$3 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 5) & add_r$16$q) begin
+            pg$4 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 5) & add_r$17$q) begin
+            pg$5 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 5) & add_r$18$q) begin
+            pg$6 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 5) & add_r$19$q) begin
+            pg$7 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 5) & add_r$20$q) begin
+            pg$8 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 5) & add_r$21$q) begin
+            pg$9 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 5) & add_r$22$q) begin
+            pg$10 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 5) & add_r$23$q) begin
+            pg$11 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 5) & add_r$24$q) begin
+            pg$12 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 5) & add_r$25$q) begin
+            pg$13 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 5) & add_r$26$q) begin
+            pg$14 = mul$5$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 5) & add_r$27$q) begin
             pg$15 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 5) & act$28) begin
+        if ((lane$28 == 5) & act_r$28$q) begin
             mul$5$a = ddx$0;
             mul$5$b = op_s$0;
-            ps$0 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 5) & act$29) begin
+        if ((lane$29 == 5) & act_r$29$q) begin
             mul$5$a = ddy$0;
             mul$5$b = op_s$1;
-            ps$1 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 5) & act$30) begin
+        if ((lane$30 == 5) & act_r$30$q) begin
             mul$5$a = ddx$0;
-            mul$5$b = q$0$q;
-            ps$2 = mul$5$p[(32'h0)+:(40)];
+            mul$5$b = op_q$0;
         end
-        if ((lane$31 == 5) & act$31) begin
+        if ((lane$31 == 5) & act_r$31$q) begin
             mul$5$a = ddx$1;
             mul$5$b = op_s$2;
-            ps$3 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 5) & act$32) begin
+        if ((lane$32 == 5) & act_r$32$q) begin
             mul$5$a = ddy$1;
             mul$5$b = op_s$3;
-            ps$4 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 5) & act$33) begin
+        if ((lane$33 == 5) & act_r$33$q) begin
             mul$5$a = ddx$1;
-            mul$5$b = q$0$q;
-            ps$5 = mul$5$p[(32'h0)+:(40)];
+            mul$5$b = op_q$1;
         end
-        if ((lane$34 == 5) & act$34) begin
+        if ((lane$34 == 5) & act_r$34$q) begin
             mul$5$a = ddx$2;
             mul$5$b = op_s$4;
-            ps$6 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 5) & act$35) begin
+        if ((lane$35 == 5) & act_r$35$q) begin
             mul$5$a = ddy$2;
             mul$5$b = op_s$5;
-            ps$7 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 5) & act$36) begin
+        if ((lane$36 == 5) & act_r$36$q) begin
             mul$5$a = ddx$2;
-            mul$5$b = q$0$q;
-            ps$8 = mul$5$p[(32'h0)+:(40)];
+            mul$5$b = op_q$2;
         end
-        if ((lane$37 == 5) & act$37) begin
+        if ((lane$37 == 5) & act_r$37$q) begin
             mul$5$a = ddx$3;
             mul$5$b = op_s$6;
-            ps$9 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 5) & act$38) begin
+        if ((lane$38 == 5) & act_r$38$q) begin
             mul$5$a = ddy$3;
             mul$5$b = op_s$7;
-            ps$10 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 5) & act$39) begin
+        if ((lane$39 == 5) & act_r$39$q) begin
             mul$5$a = ddx$3;
-            mul$5$b = q$0$q;
-            ps$11 = mul$5$p[(32'h0)+:(40)];
+            mul$5$b = op_q$3;
         end
-        if ((lane$40 == 5) & act$40) begin
+        if ((lane$40 == 5) & act_r$40$q) begin
             mul$5$a = ddx$0;
             mul$5$b = op_s$8;
-            ps$12 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 5) & act$41) begin
+        if ((lane$41 == 5) & act_r$41$q) begin
             mul$5$a = ddy$0;
             mul$5$b = op_s$9;
-            ps$13 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 5) & act$42) begin
+        if ((lane$42 == 5) & act_r$42$q) begin
             mul$5$a = ddx$0;
-            mul$5$b = q$1$q;
-            ps$14 = mul$5$p[(32'h0)+:(40)];
+            mul$5$b = op_q$4;
         end
-        if ((lane$43 == 5) & act$43) begin
+        if ((lane$43 == 5) & act_r$43$q) begin
             mul$5$a = ddx$1;
             mul$5$b = op_s$10;
-            ps$15 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 5) & act$44) begin
+        if ((lane$44 == 5) & act_r$44$q) begin
             mul$5$a = ddy$1;
             mul$5$b = op_s$11;
-            ps$16 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 5) & act$45) begin
+        if ((lane$45 == 5) & act_r$45$q) begin
             mul$5$a = ddx$1;
-            mul$5$b = q$1$q;
-            ps$17 = mul$5$p[(32'h0)+:(40)];
+            mul$5$b = op_q$5;
         end
-        if ((lane$46 == 5) & act$46) begin
+        if ((lane$46 == 5) & act_r$46$q) begin
             mul$5$a = ddx$2;
             mul$5$b = op_s$12;
-            ps$18 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 5) & act$47) begin
+        if ((lane$47 == 5) & act_r$47$q) begin
             mul$5$a = ddy$2;
             mul$5$b = op_s$13;
-            ps$19 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 5) & act$48) begin
+        if ((lane$48 == 5) & act_r$48$q) begin
             mul$5$a = ddx$2;
-            mul$5$b = q$1$q;
-            ps$20 = mul$5$p[(32'h0)+:(40)];
+            mul$5$b = op_q$6;
         end
-        if ((lane$49 == 5) & act$49) begin
+        if ((lane$49 == 5) & act_r$49$q) begin
             mul$5$a = ddx$3;
             mul$5$b = op_s$14;
-            ps$21 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 5) & act$50) begin
+        if ((lane$50 == 5) & act_r$50$q) begin
             mul$5$a = ddy$3;
             mul$5$b = op_s$15;
-            ps$22 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 5) & act$51) begin
+        if ((lane$51 == 5) & act_r$51$q) begin
             mul$5$a = ddx$3;
-            mul$5$b = q$1$q;
-            ps$23 = mul$5$p[(32'h0)+:(40)];
+            mul$5$b = op_q$7;
         end
-        if ((lane$52 == 5) & act$52) begin
+        if ((lane$52 == 5) & act_r$52$q) begin
             mul$5$a = ddx$0;
             mul$5$b = op_s$16;
-            ps$24 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 5) & act$53) begin
+        if ((lane$53 == 5) & act_r$53$q) begin
             mul$5$a = ddy$0;
             mul$5$b = op_s$17;
-            ps$25 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 5) & act$54) begin
+        if ((lane$54 == 5) & act_r$54$q) begin
             mul$5$a = ddx$0;
-            mul$5$b = q$2$q;
-            ps$26 = mul$5$p[(32'h0)+:(40)];
+            mul$5$b = op_q$8;
         end
-        if ((lane$55 == 5) & act$55) begin
+        if ((lane$55 == 5) & act_r$55$q) begin
             mul$5$a = ddx$1;
             mul$5$b = op_s$18;
-            ps$27 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 5) & act$56) begin
+        if ((lane$56 == 5) & act_r$56$q) begin
             mul$5$a = ddy$1;
             mul$5$b = op_s$19;
-            ps$28 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 5) & act$57) begin
+        if ((lane$57 == 5) & act_r$57$q) begin
             mul$5$a = ddx$1;
-            mul$5$b = q$2$q;
-            ps$29 = mul$5$p[(32'h0)+:(40)];
+            mul$5$b = op_q$9;
         end
-        if ((lane$58 == 5) & act$58) begin
+        if ((lane$58 == 5) & act_r$58$q) begin
             mul$5$a = ddx$2;
             mul$5$b = op_s$20;
-            ps$30 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 5) & act$59) begin
+        if ((lane$59 == 5) & act_r$59$q) begin
             mul$5$a = ddy$2;
             mul$5$b = op_s$21;
-            ps$31 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 5) & act$60) begin
+        if ((lane$60 == 5) & act_r$60$q) begin
             mul$5$a = ddx$2;
-            mul$5$b = q$2$q;
-            ps$32 = mul$5$p[(32'h0)+:(40)];
+            mul$5$b = op_q$10;
         end
-        if ((lane$61 == 5) & act$61) begin
+        if ((lane$61 == 5) & act_r$61$q) begin
             mul$5$a = ddx$3;
             mul$5$b = op_s$22;
-            ps$33 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 5) & act$62) begin
+        if ((lane$62 == 5) & act_r$62$q) begin
             mul$5$a = ddy$3;
             mul$5$b = op_s$23;
+        end
+        if ((lane$63 == 5) & act_r$63$q) begin
+            mul$5$a = ddx$3;
+            mul$5$b = op_q$11;
+        end
+        if ((lane$28 == 5) & add_r$28$q) begin
+            ps$0 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 5) & add_r$29$q) begin
+            ps$1 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 5) & add_r$30$q) begin
+            ps$2 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 5) & add_r$31$q) begin
+            ps$3 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 5) & add_r$32$q) begin
+            ps$4 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 5) & add_r$33$q) begin
+            ps$5 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 5) & add_r$34$q) begin
+            ps$6 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 5) & add_r$35$q) begin
+            ps$7 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 5) & add_r$36$q) begin
+            ps$8 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 5) & add_r$37$q) begin
+            ps$9 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 5) & add_r$38$q) begin
+            ps$10 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 5) & add_r$39$q) begin
+            ps$11 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 5) & add_r$40$q) begin
+            ps$12 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 5) & add_r$41$q) begin
+            ps$13 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 5) & add_r$42$q) begin
+            ps$14 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 5) & add_r$43$q) begin
+            ps$15 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 5) & add_r$44$q) begin
+            ps$16 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 5) & add_r$45$q) begin
+            ps$17 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 5) & add_r$46$q) begin
+            ps$18 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 5) & add_r$47$q) begin
+            ps$19 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 5) & add_r$48$q) begin
+            ps$20 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 5) & add_r$49$q) begin
+            ps$21 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 5) & add_r$50$q) begin
+            ps$22 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 5) & add_r$51$q) begin
+            ps$23 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 5) & add_r$52$q) begin
+            ps$24 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 5) & add_r$53$q) begin
+            ps$25 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 5) & add_r$54$q) begin
+            ps$26 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 5) & add_r$55$q) begin
+            ps$27 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 5) & add_r$56$q) begin
+            ps$28 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 5) & add_r$57$q) begin
+            ps$29 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 5) & add_r$58$q) begin
+            ps$30 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 5) & add_r$59$q) begin
+            ps$31 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 5) & add_r$60$q) begin
+            ps$32 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 5) & add_r$61$q) begin
+            ps$33 = mul$5$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 5) & add_r$62$q) begin
             ps$34 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 5) & act$63) begin
-            mul$5$a = ddx$3;
-            mul$5$b = q$2$q;
+        if ((lane$63 == 5) & add_r$63$q) begin
             ps$35 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$0 == 6) & act$0) begin
+        mul$6$en = run;
+        if ((lane$0 == 6) & act_r$0$q) begin
             mul$6$a = g0$kdx$0[(32'h0)+:(57)];
             mul$6$b = g0$kdy$1[(32'h0)+:(19)];
-            pa$0 = mul$6$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 6) & act$1) begin
+        if ((lane$1 == 6) & act_r$1$q) begin
             mul$6$a = g0$kdx$1[(32'h0)+:(57)];
             mul$6$b = g0$kdy$0[(32'h0)+:(19)];
+        end
+        if ((lane$0 == 6) & add_r$0$q) begin
+            pa$0 = mul$6$p[(32'h0)+:(34)];
+        end
+        if ((lane$1 == 6) & add_r$1$q) begin
             pa$1 = mul$6$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 6) & act$2) begin
+        if ((lane$2 == 6) & act_r$2$q) begin
             mul$6$a = g0$edy$0;
             mul$6$b = g0$xf$0;
-            pn$0 = mul$6$p;
         end
-        if ((lane$3 == 6) & act$3) begin
+        if ((lane$3 == 6) & act_r$3$q) begin
             mul$6$a = g0$edx$0[(32'h0)+:(57)];
             mul$6$b = g0$toff$0;
-            pn$1 = mul$6$p;
         end
-        if ((lane$4 == 6) & act$4) begin
+        if ((lane$4 == 6) & act_r$4$q) begin
             mul$6$a = g0$edy$1;
             mul$6$b = g0$xf$1;
-            pn$2 = mul$6$p;
         end
-        if ((lane$5 == 6) & act$5) begin
+        if ((lane$5 == 6) & act_r$5$q) begin
             mul$6$a = g0$edx$1[(32'h0)+:(57)];
             mul$6$b = g0$toff$1;
-            pn$3 = mul$6$p;
         end
-        if ((lane$6 == 6) & act$6) begin
+        if ((lane$6 == 6) & act_r$6$q) begin
             mul$6$a = g0$edy$2;
             mul$6$b = g0$xf$2;
-            pn$4 = mul$6$p;
         end
-        if ((lane$7 == 6) & act$7) begin
+        if ((lane$7 == 6) & act_r$7$q) begin
             mul$6$a = g0$edx$2[(32'h0)+:(57)];
             mul$6$b = g0$toff$2;
+        end
+        if ((lane$2 == 6) & add_r$2$q) begin
+            pn$0 = mul$6$p;
+        end
+        if ((lane$3 == 6) & add_r$3$q) begin
+            pn$1 = mul$6$p;
+        end
+        if ((lane$4 == 6) & add_r$4$q) begin
+            pn$2 = mul$6$p;
+        end
+        if ((lane$5 == 6) & add_r$5$q) begin
+            pn$3 = mul$6$p;
+        end
+        if ((lane$6 == 6) & add_r$6$q) begin
+            pn$4 = mul$6$p;
+        end
+        if ((lane$7 == 6) & add_r$7$q) begin
             pn$5 = mul$6$p;
         end
-        if ((lane$8 == 6) & act$8) begin
-            mul$6$a = mant_a;
+        if ((lane$8 == 6) & act_r$8$q) begin
+            mul$6$a = mant_s$q;
             mul$6$b = op_e$0;
+        end
+        if ((lane$8 == 6) & add_r$8$q) begin
             pe$0 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 6) & act$9) begin
-            mul$6$a = mant_a;
+        if ((lane$9 == 6) & act_r$9$q) begin
+            mul$6$a = mant_s$q;
             mul$6$b = op_e$1;
+        end
+        if ((lane$9 == 6) & add_r$9$q) begin
             pe$1 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 6) & act$10) begin
-            mul$6$a = mant_a;
+        if ((lane$10 == 6) & act_r$10$q) begin
+            mul$6$a = mant_s$q;
             mul$6$b = op_e$2;
+        end
+        if ((lane$10 == 6) & add_r$10$q) begin
             pe$2 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 6) & act$11) begin
-            mul$6$a = mant_a;
+        if ((lane$11 == 6) & act_r$11$q) begin
+            mul$6$a = mant_s$q;
             mul$6$b = op_e$3;
+        end
+        if ((lane$11 == 6) & add_r$11$q) begin
             pe$3 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 6) & act$12) begin
+        if ((lane$12 == 6) & act_r$12$q) begin
             mul$6$a = p$3$q;
             mul$6$b = op_g$0;
-            pg$0 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 6) & act$13) begin
+        if ((lane$13 == 6) & act_r$13$q) begin
             mul$6$a = p$2$q;
             mul$6$b = op_g$1;
-            pg$1 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 6) & act$14) begin
+        if ((lane$14 == 6) & act_r$14$q) begin
             mul$6$a = p$0$q;
             mul$6$b = op_g$2;
-            pg$2 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 6) & act$15) begin
+        if ((lane$15 == 6) & act_r$15$q) begin
             mul$6$a = p$1$q;
             mul$6$b = op_g$3;
-            pg$3 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 6) & act$16) begin
+        if ((lane$16 == 6) & act_r$16$q) begin
             mul$6$a = p$3$q;
             mul$6$b = op_g$4;
-            pg$4 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 6) & act$17) begin
+        if ((lane$17 == 6) & act_r$17$q) begin
             mul$6$a = p$2$q;
             mul$6$b = op_g$5;
-            pg$5 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 6) & act$18) begin
+        if ((lane$18 == 6) & act_r$18$q) begin
             mul$6$a = p$0$q;
             mul$6$b = op_g$6;
-            pg$6 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 6) & act$19) begin
+        if ((lane$19 == 6) & act_r$19$q) begin
             mul$6$a = p$1$q;
             mul$6$b = op_g$7;
-            pg$7 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 6) & act$20) begin
+        if ((lane$20 == 6) & act_r$20$q) begin
             mul$6$a = p$3$q;
             mul$6$b = op_g$8;
-            pg$8 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 6) & act$21) begin
+        if ((lane$21 == 6) & act_r$21$q) begin
             mul$6$a = p$2$q;
             mul$6$b = op_g$9;
-            pg$9 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 6) & act$22) begin
+        if ((lane$22 == 6) & act_r$22$q) begin
             mul$6$a = p$0$q;
             mul$6$b = op_g$10;
-            pg$10 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 6) & act$23) begin
+        if ((lane$23 == 6) & act_r$23$q) begin
             mul$6$a = p$1$q;
             mul$6$b = op_g$11;
-            pg$11 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 6) & act$24) begin
+        if ((lane$24 == 6) & act_r$24$q) begin
             mul$6$a = p$3$q;
             mul$6$b = op_g$12;
-            pg$12 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 6) & act$25) begin
+        if ((lane$25 == 6) & act_r$25$q) begin
             mul$6$a = p$2$q;
             mul$6$b = op_g$13;
-            pg$13 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 6) & act$26) begin
+        if ((lane$26 == 6) & act_r$26$q) begin
             mul$6$a = p$0$q;
             mul$6$b = op_g$14;
-            pg$14 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 6) & act$27) begin
+        if ((lane$27 == 6) & act_r$27$q) begin
             mul$6$a = p$1$q;
             mul$6$b = op_g$15;
+        end
+        if ((lane$12 == 6) & add_r$12$q) begin
+            pg$0 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$13 == 6) & add_r$13$q) begin
+            pg$1 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$14 == 6) & add_r$14$q) begin
+            pg$2 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$15 == 6) & add_r$15$q) begin
+            pg$3 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$16 == 6) & add_r$16$q) begin
+            pg$4 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$17 == 6) & add_r$17$q) begin
+            pg$5 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$18 == 6) & add_r$18$q) begin
+            pg$6 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$19 == 6) & add_r$19$q) begin
+            pg$7 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$20 == 6) & add_r$20$q) begin
+            pg$8 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$21 == 6) & add_r$21$q) begin
+            pg$9 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$22 == 6) & add_r$22$q) begin
+            pg$10 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$23 == 6) & add_r$23$q) begin
+            pg$11 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$24 == 6) & add_r$24$q) begin
+            pg$12 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$25 == 6) & add_r$25$q) begin
+            pg$13 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$26 == 6) & add_r$26$q) begin
+            pg$14 = mul$6$p[(32'h0)+:(57)];
+        end
+        if ((lane$27 == 6) & add_r$27$q) begin
             pg$15 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 6) & act$28) begin
+        if ((lane$28 == 6) & act_r$28$q) begin
             mul$6$a = ddx$0;
             mul$6$b = op_s$0;
-            ps$0 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 6) & act$29) begin
+        if ((lane$29 == 6) & act_r$29$q) begin
             mul$6$a = ddy$0;
             mul$6$b = op_s$1;
-            ps$1 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 6) & act$30) begin
+        if ((lane$30 == 6) & act_r$30$q) begin
             mul$6$a = ddx$0;
-            mul$6$b = q$0$q;
-            ps$2 = mul$6$p[(32'h0)+:(40)];
+            mul$6$b = op_q$0;
         end
-        if ((lane$31 == 6) & act$31) begin
+        if ((lane$31 == 6) & act_r$31$q) begin
             mul$6$a = ddx$1;
             mul$6$b = op_s$2;
-            ps$3 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 6) & act$32) begin
+        if ((lane$32 == 6) & act_r$32$q) begin
             mul$6$a = ddy$1;
             mul$6$b = op_s$3;
-            ps$4 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 6) & act$33) begin
+        if ((lane$33 == 6) & act_r$33$q) begin
             mul$6$a = ddx$1;
-            mul$6$b = q$0$q;
-            ps$5 = mul$6$p[(32'h0)+:(40)];
+            mul$6$b = op_q$1;
         end
-        if ((lane$34 == 6) & act$34) begin
+        if ((lane$34 == 6) & act_r$34$q) begin
             mul$6$a = ddx$2;
             mul$6$b = op_s$4;
-            ps$6 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 6) & act$35) begin
+        if ((lane$35 == 6) & act_r$35$q) begin
             mul$6$a = ddy$2;
             mul$6$b = op_s$5;
-            ps$7 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 6) & act$36) begin
+        if ((lane$36 == 6) & act_r$36$q) begin
             mul$6$a = ddx$2;
-            mul$6$b = q$0$q;
-            ps$8 = mul$6$p[(32'h0)+:(40)];
+            mul$6$b = op_q$2;
         end
-        if ((lane$37 == 6) & act$37) begin
+        if ((lane$37 == 6) & act_r$37$q) begin
             mul$6$a = ddx$3;
             mul$6$b = op_s$6;
-            ps$9 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 6) & act$38) begin
+        if ((lane$38 == 6) & act_r$38$q) begin
             mul$6$a = ddy$3;
             mul$6$b = op_s$7;
-            ps$10 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 6) & act$39) begin
+        if ((lane$39 == 6) & act_r$39$q) begin
             mul$6$a = ddx$3;
-            mul$6$b = q$0$q;
-            ps$11 = mul$6$p[(32'h0)+:(40)];
+            mul$6$b = op_q$3;
         end
-        if ((lane$40 == 6) & act$40) begin
+        if ((lane$40 == 6) & act_r$40$q) begin
             mul$6$a = ddx$0;
             mul$6$b = op_s$8;
-            ps$12 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 6) & act$41) begin
+        if ((lane$41 == 6) & act_r$41$q) begin
             mul$6$a = ddy$0;
             mul$6$b = op_s$9;
-            ps$13 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 6) & act$42) begin
+        if ((lane$42 == 6) & act_r$42$q) begin
             mul$6$a = ddx$0;
-            mul$6$b = q$1$q;
-            ps$14 = mul$6$p[(32'h0)+:(40)];
+            mul$6$b = op_q$4;
         end
-        if ((lane$43 == 6) & act$43) begin
+        if ((lane$43 == 6) & act_r$43$q) begin
             mul$6$a = ddx$1;
             mul$6$b = op_s$10;
-            ps$15 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 6) & act$44) begin
+        if ((lane$44 == 6) & act_r$44$q) begin
             mul$6$a = ddy$1;
             mul$6$b = op_s$11;
-            ps$16 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 6) & act$45) begin
+        if ((lane$45 == 6) & act_r$45$q) begin
             mul$6$a = ddx$1;
-            mul$6$b = q$1$q;
-            ps$17 = mul$6$p[(32'h0)+:(40)];
+            mul$6$b = op_q$5;
         end
-        if ((lane$46 == 6) & act$46) begin
+        if ((lane$46 == 6) & act_r$46$q) begin
             mul$6$a = ddx$2;
             mul$6$b = op_s$12;
-            ps$18 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 6) & act$47) begin
+        if ((lane$47 == 6) & act_r$47$q) begin
             mul$6$a = ddy$2;
             mul$6$b = op_s$13;
-            ps$19 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 6) & act$48) begin
+        if ((lane$48 == 6) & act_r$48$q) begin
             mul$6$a = ddx$2;
-            mul$6$b = q$1$q;
-            ps$20 = mul$6$p[(32'h0)+:(40)];
+            mul$6$b = op_q$6;
         end
-        if ((lane$49 == 6) & act$49) begin
+        if ((lane$49 == 6) & act_r$49$q) begin
             mul$6$a = ddx$3;
             mul$6$b = op_s$14;
-            ps$21 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 6) & act$50) begin
+        if ((lane$50 == 6) & act_r$50$q) begin
             mul$6$a = ddy$3;
             mul$6$b = op_s$15;
-            ps$22 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 6) & act$51) begin
+        if ((lane$51 == 6) & act_r$51$q) begin
             mul$6$a = ddx$3;
-            mul$6$b = q$1$q;
-            ps$23 = mul$6$p[(32'h0)+:(40)];
+            mul$6$b = op_q$7;
         end
-        if ((lane$52 == 6) & act$52) begin
+        if ((lane$52 == 6) & act_r$52$q) begin
             mul$6$a = ddx$0;
             mul$6$b = op_s$16;
-            ps$24 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 6) & act$53) begin
+        if ((lane$53 == 6) & act_r$53$q) begin
             mul$6$a = ddy$0;
             mul$6$b = op_s$17;
-            ps$25 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 6) & act$54) begin
+        if ((lane$54 == 6) & act_r$54$q) begin
             mul$6$a = ddx$0;
-            mul$6$b = q$2$q;
-            ps$26 = mul$6$p[(32'h0)+:(40)];
+            mul$6$b = op_q$8;
         end
-        if ((lane$55 == 6) & act$55) begin
+        if ((lane$55 == 6) & act_r$55$q) begin
             mul$6$a = ddx$1;
             mul$6$b = op_s$18;
-            ps$27 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 6) & act$56) begin
+        if ((lane$56 == 6) & act_r$56$q) begin
             mul$6$a = ddy$1;
             mul$6$b = op_s$19;
-            ps$28 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 6) & act$57) begin
+        if ((lane$57 == 6) & act_r$57$q) begin
             mul$6$a = ddx$1;
-            mul$6$b = q$2$q;
-            ps$29 = mul$6$p[(32'h0)+:(40)];
+            mul$6$b = op_q$9;
         end
-        if ((lane$58 == 6) & act$58) begin
+        if ((lane$58 == 6) & act_r$58$q) begin
             mul$6$a = ddx$2;
             mul$6$b = op_s$20;
-            ps$30 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 6) & act$59) begin
+        if ((lane$59 == 6) & act_r$59$q) begin
             mul$6$a = ddy$2;
             mul$6$b = op_s$21;
-            ps$31 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 6) & act$60) begin
+        if ((lane$60 == 6) & act_r$60$q) begin
             mul$6$a = ddx$2;
-            mul$6$b = q$2$q;
-            ps$32 = mul$6$p[(32'h0)+:(40)];
+            mul$6$b = op_q$10;
         end
-        if ((lane$61 == 6) & act$61) begin
+        if ((lane$61 == 6) & act_r$61$q) begin
             mul$6$a = ddx$3;
             mul$6$b = op_s$22;
-            ps$33 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 6) & act$62) begin
+        if ((lane$62 == 6) & act_r$62$q) begin
             mul$6$a = ddy$3;
             mul$6$b = op_s$23;
+        end
+        if ((lane$63 == 6) & act_r$63$q) begin
+            mul$6$a = ddx$3;
+            mul$6$b = op_q$11;
+        end
+        if ((lane$28 == 6) & add_r$28$q) begin
+            ps$0 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$29 == 6) & add_r$29$q) begin
+            ps$1 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$30 == 6) & add_r$30$q) begin
+            ps$2 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$31 == 6) & add_r$31$q) begin
+            ps$3 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$32 == 6) & add_r$32$q) begin
+            ps$4 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$33 == 6) & add_r$33$q) begin
+            ps$5 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$34 == 6) & add_r$34$q) begin
+            ps$6 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$35 == 6) & add_r$35$q) begin
+            ps$7 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$36 == 6) & add_r$36$q) begin
+            ps$8 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$37 == 6) & add_r$37$q) begin
+            ps$9 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$38 == 6) & add_r$38$q) begin
+            ps$10 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$39 == 6) & add_r$39$q) begin
+            ps$11 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$40 == 6) & add_r$40$q) begin
+            ps$12 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$41 == 6) & add_r$41$q) begin
+            ps$13 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$42 == 6) & add_r$42$q) begin
+            ps$14 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$43 == 6) & add_r$43$q) begin
+            ps$15 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$44 == 6) & add_r$44$q) begin
+            ps$16 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$45 == 6) & add_r$45$q) begin
+            ps$17 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$46 == 6) & add_r$46$q) begin
+            ps$18 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$47 == 6) & add_r$47$q) begin
+            ps$19 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$48 == 6) & add_r$48$q) begin
+            ps$20 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$49 == 6) & add_r$49$q) begin
+            ps$21 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$50 == 6) & add_r$50$q) begin
+            ps$22 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$51 == 6) & add_r$51$q) begin
+            ps$23 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$52 == 6) & add_r$52$q) begin
+            ps$24 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$53 == 6) & add_r$53$q) begin
+            ps$25 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$54 == 6) & add_r$54$q) begin
+            ps$26 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$55 == 6) & add_r$55$q) begin
+            ps$27 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$56 == 6) & add_r$56$q) begin
+            ps$28 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$57 == 6) & add_r$57$q) begin
+            ps$29 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$58 == 6) & add_r$58$q) begin
+            ps$30 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$59 == 6) & add_r$59$q) begin
+            ps$31 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$60 == 6) & add_r$60$q) begin
+            ps$32 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$61 == 6) & add_r$61$q) begin
+            ps$33 = mul$6$p[(32'h0)+:(40)];
+        end
+        if ((lane$62 == 6) & add_r$62$q) begin
             ps$34 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 6) & act$63) begin
-            mul$6$a = ddx$3;
-            mul$6$b = q$2$q;
+        if ((lane$63 == 6) & add_r$63$q) begin
             ps$35 = mul$6$p[(32'h0)+:(40)];
         end
         area_base = area$q;
-        if (act$0) begin
+        if (add_r$0$q) begin
             area_base = 32'h0;
         end
-        area$d = area_base + pa$0 - pa$1;
         num_base$0 = num$0$q;
-        if (act$2) begin
+        if (add_r$2$q) begin
             num_base$0 = 32'h0;
         end
-        num$0$d = num_base$0 + pn$0 + pn$1;
         num_base$1 = num$1$q;
-        if (act$4) begin
+        if (add_r$4$q) begin
             num_base$1 = 32'h0;
         end
-        num$1$d = num_base$1 + pn$2 + pn$3;
         num_base$2 = num$2$q;
-        if (act$6) begin
+        if (add_r$6$q) begin
             num_base$2 = 32'h0;
         end
-        num$2$d = num_base$2 + pn$4 + pn$5;
         shr$0 = pe$0 >> rsh;
         if (pe$0[p_msb]) begin
             shr$0 = (pe$0 >> rsh) | ~(ones >> rsh);
-        end
-        if (act$8) begin
-            p$0$d = shr$0;
-            if (exp_now <= eq_shift) begin
-                p$0$d = pe$0;
-            end
         end
         shr$1 = pe$1 >> rsh;
         if (pe$1[p_msb]) begin
             shr$1 = (pe$1 >> rsh) | ~(ones >> rsh);
         end
-        if (act$9) begin
-            p$1$d = shr$1;
-            if (exp_now <= eq_shift) begin
-                p$1$d = pe$1;
-            end
-        end
         shr$2 = pe$2 >> rsh;
         if (pe$2[p_msb]) begin
             shr$2 = (pe$2 >> rsh) | ~(ones >> rsh);
-        end
-        if (act$10) begin
-            p$2$d = shr$2;
-            if (exp_now <= eq_shift) begin
-                p$2$d = pe$2;
-            end
         end
         shr$3 = pe$3 >> rsh;
         if (pe$3[p_msb]) begin
             shr$3 = (pe$3 >> rsh) | ~(ones >> rsh);
         end
-        if (act$11) begin
-            p$3$d = shr$3;
-            if (exp_now <= eq_shift) begin
-                p$3$d = pe$3;
-            end
-        end
         gx_base$0 = gx$0$q;
-        if (act$12) begin
+        if (add_r$12$q) begin
             gx_base$0 = 32'h0;
         end
-        gx$0$d = gx_base$0 + pg$0 - pg$1;
         gy_base$0 = gy$0$q;
-        if (act$14) begin
+        if (add_r$14$q) begin
             gy_base$0 = 32'h0;
         end
-        gy$0$d = gy_base$0 + pg$2 - pg$3;
         gx_base$1 = gx$1$q;
-        if (act$16) begin
+        if (add_r$16$q) begin
             gx_base$1 = 32'h0;
         end
-        gx$1$d = gx_base$1 + pg$4 - pg$5;
         gy_base$1 = gy$1$q;
-        if (act$18) begin
+        if (add_r$18$q) begin
             gy_base$1 = 32'h0;
         end
-        gy$1$d = gy_base$1 + pg$6 - pg$7;
         gx_base$2 = gx$2$q;
-        if (act$20) begin
+        if (add_r$20$q) begin
             gx_base$2 = 32'h0;
         end
-        gx$2$d = gx_base$2 + pg$8 - pg$9;
         gy_base$2 = gy$2$q;
-        if (act$22) begin
+        if (add_r$22$q) begin
             gy_base$2 = 32'h0;
         end
-        gy$2$d = gy_base$2 + pg$10 - pg$11;
         gx_base$3 = gx$3$q;
-        if (act$24) begin
+        if (add_r$24$q) begin
             gx_base$3 = 32'h0;
         end
-        gx$3$d = gx_base$3 + pg$12 - pg$13;
         gy_base$3 = gy$3$q;
-        if (act$26) begin
+        if (add_r$26$q) begin
             gy_base$3 = 32'h0;
         end
-        gy$3$d = gy_base$3 + pg$14 - pg$15;
         plane_base$0 = plane$0$q;
-        if (act$28) begin
+        if (add_r$28$q) begin
             plane_base$0 = 32'h0;
         end
-        plane$0$d = plane_base$0 + ps$0 + ps$1;
-        if (act$30) begin
-            inc0$0$d = ddy$0[(32'h0)+:(40)] + ps$2;
+        plane_base$1 = plane$1$q;
+        if (add_r$31$q) begin
+            plane_base$1 = 32'h0;
+        end
+        plane_base$2 = plane$2$q;
+        if (add_r$34$q) begin
+            plane_base$2 = 32'h0;
+        end
+        plane_base$3 = plane$3$q;
+        if (add_r$37$q) begin
+            plane_base$3 = 32'h0;
+        end
+        plane_base$4 = plane$4$q;
+        if (add_r$40$q) begin
+            plane_base$4 = 32'h0;
+        end
+        plane_base$5 = plane$5$q;
+        if (add_r$43$q) begin
+            plane_base$5 = 32'h0;
+        end
+        plane_base$6 = plane$6$q;
+        if (add_r$46$q) begin
+            plane_base$6 = 32'h0;
+        end
+        plane_base$7 = plane$7$q;
+        if (add_r$49$q) begin
+            plane_base$7 = 32'h0;
+        end
+        plane_base$8 = plane$8$q;
+        if (add_r$52$q) begin
+            plane_base$8 = 32'h0;
+        end
+        plane_base$9 = plane$9$q;
+        if (add_r$55$q) begin
+            plane_base$9 = 32'h0;
+        end
+        plane_base$10 = plane$10$q;
+        if (add_r$58$q) begin
+            plane_base$10 = 32'h0;
+        end
+        plane_base$11 = plane$11$q;
+        if (add_r$61$q) begin
+            plane_base$11 = 32'h0;
+        end
+        if (run) begin
+            area$d = area_base + pa$0 - pa$1;
+            num$0$d = num_base$0 + pn$0 + pn$1;
+            num$1$d = num_base$1 + pn$2 + pn$3;
+            num$2$d = num_base$2 + pn$4 + pn$5;
+            if (add_r$8$q) begin
+                p$0$d = shr$0;
+                if (exp_e$q <= eq_shift) begin
+                    p$0$d = pe$0;
+                end
+            end
+            if (add_r$9$q) begin
+                p$1$d = shr$1;
+                if (exp_e$q <= eq_shift) begin
+                    p$1$d = pe$1;
+                end
+            end
+            if (add_r$10$q) begin
+                p$2$d = shr$2;
+                if (exp_e$q <= eq_shift) begin
+                    p$2$d = pe$2;
+                end
+            end
+            if (add_r$11$q) begin
+                p$3$d = shr$3;
+                if (exp_e$q <= eq_shift) begin
+                    p$3$d = pe$3;
+                end
+            end
+            gx$0$d = gx_base$0 + pg$0 - pg$1;
+            gy$0$d = gy_base$0 + pg$2 - pg$3;
+            gx$1$d = gx_base$1 + pg$4 - pg$5;
+            gy$1$d = gy_base$1 + pg$6 - pg$7;
+            gx$2$d = gx_base$2 + pg$8 - pg$9;
+            gy$2$d = gy_base$2 + pg$10 - pg$11;
+            gx$3$d = gx_base$3 + pg$12 - pg$13;
+            gy$3$d = gy_base$3 + pg$14 - pg$15;
+            plane$0$d = plane_base$0 + ps$0 + ps$1;
+            if (add_r$30$q) begin
+                inc0$0$d = ddy$0[(32'h0)+:(40)] + ps$2;
+                inc1$0$d = ddy$0[(32'h0)+:(40)] + ps$2 + ddx$0[(32'h0)+:(40)];
+                ddx_o$0$d = ddx$0[(32'h0)+:(40)];
+            end
+            plane$1$d = plane_base$1 + ps$3 + ps$4;
+            if (add_r$33$q) begin
+                inc0$1$d = ddy$1[(32'h0)+:(40)] + ps$5;
+                inc1$1$d = ddy$1[(32'h0)+:(40)] + ps$5 + ddx$1[(32'h0)+:(40)];
+                ddx_o$1$d = ddx$1[(32'h0)+:(40)];
+            end
+            plane$2$d = plane_base$2 + ps$6 + ps$7;
+            if (add_r$36$q) begin
+                inc0$2$d = ddy$2[(32'h0)+:(40)] + ps$8;
+                inc1$2$d = ddy$2[(32'h0)+:(40)] + ps$8 + ddx$2[(32'h0)+:(40)];
+                ddx_o$2$d = ddx$2[(32'h0)+:(40)];
+            end
+            plane$3$d = plane_base$3 + ps$9 + ps$10;
+            if (add_r$39$q) begin
+                inc0$3$d = ddy$3[(32'h0)+:(40)] + ps$11;
+                inc1$3$d = ddy$3[(32'h0)+:(40)] + ps$11 + ddx$3[(32'h0)+:(40)];
+                ddx_o$3$d = ddx$3[(32'h0)+:(40)];
+            end
+            plane$4$d = plane_base$4 + ps$12 + ps$13;
+            if (add_r$42$q) begin
+                inc0$4$d = ddy$0[(32'h0)+:(40)] + ps$14;
+                inc1$4$d = ddy$0[(32'h0)+:(40)] + ps$14 + ddx$0[(32'h0)+:(40)];
+                ddx_o$0$d = ddx$0[(32'h0)+:(40)];
+            end
+            plane$5$d = plane_base$5 + ps$15 + ps$16;
+            if (add_r$45$q) begin
+                inc0$5$d = ddy$1[(32'h0)+:(40)] + ps$17;
+                inc1$5$d = ddy$1[(32'h0)+:(40)] + ps$17 + ddx$1[(32'h0)+:(40)];
+                ddx_o$1$d = ddx$1[(32'h0)+:(40)];
+            end
+            plane$6$d = plane_base$6 + ps$18 + ps$19;
+            if (add_r$48$q) begin
+                inc0$6$d = ddy$2[(32'h0)+:(40)] + ps$20;
+                inc1$6$d = ddy$2[(32'h0)+:(40)] + ps$20 + ddx$2[(32'h0)+:(40)];
+                ddx_o$2$d = ddx$2[(32'h0)+:(40)];
+            end
+            plane$7$d = plane_base$7 + ps$21 + ps$22;
+            if (add_r$51$q) begin
+                inc0$7$d = ddy$3[(32'h0)+:(40)] + ps$23;
+                inc1$7$d = ddy$3[(32'h0)+:(40)] + ps$23 + ddx$3[(32'h0)+:(40)];
+                ddx_o$3$d = ddx$3[(32'h0)+:(40)];
+            end
+            plane$8$d = plane_base$8 + ps$24 + ps$25;
+            if (add_r$54$q) begin
+                inc0$8$d = ddy$0[(32'h0)+:(40)] + ps$26;
+                inc1$8$d = ddy$0[(32'h0)+:(40)] + ps$26 + ddx$0[(32'h0)+:(40)];
+                ddx_o$0$d = ddx$0[(32'h0)+:(40)];
+            end
+            plane$9$d = plane_base$9 + ps$27 + ps$28;
+            if (add_r$57$q) begin
+                inc0$9$d = ddy$1[(32'h0)+:(40)] + ps$29;
+                inc1$9$d = ddy$1[(32'h0)+:(40)] + ps$29 + ddx$1[(32'h0)+:(40)];
+                ddx_o$1$d = ddx$1[(32'h0)+:(40)];
+            end
+            plane$10$d = plane_base$10 + ps$30 + ps$31;
+            if (add_r$60$q) begin
+                inc0$10$d = ddy$2[(32'h0)+:(40)] + ps$32;
+                inc1$10$d = ddy$2[(32'h0)+:(40)] + ps$32 + ddx$2[(32'h0)+:(40)];
+                ddx_o$2$d = ddx$2[(32'h0)+:(40)];
+            end
+            plane$11$d = plane_base$11 + ps$33 + ps$34;
+            if (add_r$63$q) begin
+                inc0$11$d = ddy$3[(32'h0)+:(40)] + ps$35;
+                inc1$11$d = ddy$3[(32'h0)+:(40)] + ps$35 + ddx$3[(32'h0)+:(40)];
+                ddx_o$3$d = ddx$3[(32'h0)+:(40)];
+            end
         end
         if (at_handover) begin
             plane$0$d = (plane$0$q >> frac) + (attr0$0 << bsh$0);
-            inc1$0$d = inc0$0$q + ddx$0[(32'h0)+:(40)];
-        end
-        plane_base$1 = plane$1$q;
-        if (act$31) begin
-            plane_base$1 = 32'h0;
-        end
-        plane$1$d = plane_base$1 + ps$3 + ps$4;
-        if (act$33) begin
-            inc0$1$d = ddy$1[(32'h0)+:(40)] + ps$5;
         end
         if (at_handover) begin
             plane$1$d = (plane$1$q >> frac) + (attr0$1 << bsh$1);
-            inc1$1$d = inc0$1$q + ddx$1[(32'h0)+:(40)];
-        end
-        plane_base$2 = plane$2$q;
-        if (act$34) begin
-            plane_base$2 = 32'h0;
-        end
-        plane$2$d = plane_base$2 + ps$6 + ps$7;
-        if (act$36) begin
-            inc0$2$d = ddy$2[(32'h0)+:(40)] + ps$8;
         end
         if (at_handover) begin
             plane$2$d = (plane$2$q >> frac) + (attr0$2 << bsh$2);
-            inc1$2$d = inc0$2$q + ddx$2[(32'h0)+:(40)];
-        end
-        plane_base$3 = plane$3$q;
-        if (act$37) begin
-            plane_base$3 = 32'h0;
-        end
-        plane$3$d = plane_base$3 + ps$9 + ps$10;
-        if (act$39) begin
-            inc0$3$d = ddy$3[(32'h0)+:(40)] + ps$11;
         end
         if (at_handover) begin
             plane$3$d = (plane$3$q >> frac) + (attr0$3 << bsh$3);
-            inc1$3$d = inc0$3$q + ddx$3[(32'h0)+:(40)];
-        end
-        plane_base$4 = plane$4$q;
-        if (act$40) begin
-            plane_base$4 = 32'h0;
-        end
-        plane$4$d = plane_base$4 + ps$12 + ps$13;
-        if (act$42) begin
-            inc0$4$d = ddy$0[(32'h0)+:(40)] + ps$14;
         end
         if (at_handover) begin
             plane$4$d = (plane$4$q >> frac) + (attr0$0 << bsh$0);
-            inc1$4$d = inc0$4$q + ddx$0[(32'h0)+:(40)];
-        end
-        plane_base$5 = plane$5$q;
-        if (act$43) begin
-            plane_base$5 = 32'h0;
-        end
-        plane$5$d = plane_base$5 + ps$15 + ps$16;
-        if (act$45) begin
-            inc0$5$d = ddy$1[(32'h0)+:(40)] + ps$17;
         end
         if (at_handover) begin
             plane$5$d = (plane$5$q >> frac) + (attr0$1 << bsh$1);
-            inc1$5$d = inc0$5$q + ddx$1[(32'h0)+:(40)];
-        end
-        plane_base$6 = plane$6$q;
-        if (act$46) begin
-            plane_base$6 = 32'h0;
-        end
-        plane$6$d = plane_base$6 + ps$18 + ps$19;
-        if (act$48) begin
-            inc0$6$d = ddy$2[(32'h0)+:(40)] + ps$20;
         end
         if (at_handover) begin
             plane$6$d = (plane$6$q >> frac) + (attr0$2 << bsh$2);
-            inc1$6$d = inc0$6$q + ddx$2[(32'h0)+:(40)];
-        end
-        plane_base$7 = plane$7$q;
-        if (act$49) begin
-            plane_base$7 = 32'h0;
-        end
-        plane$7$d = plane_base$7 + ps$21 + ps$22;
-        if (act$51) begin
-            inc0$7$d = ddy$3[(32'h0)+:(40)] + ps$23;
         end
         if (at_handover) begin
             plane$7$d = (plane$7$q >> frac) + (attr0$3 << bsh$3);
-            inc1$7$d = inc0$7$q + ddx$3[(32'h0)+:(40)];
-        end
-        plane_base$8 = plane$8$q;
-        if (act$52) begin
-            plane_base$8 = 32'h0;
-        end
-        plane$8$d = plane_base$8 + ps$24 + ps$25;
-        if (act$54) begin
-            inc0$8$d = ddy$0[(32'h0)+:(40)] + ps$26;
         end
         if (at_handover) begin
             plane$8$d = (plane$8$q >> frac) + (attr0$0 << bsh$0);
-            inc1$8$d = inc0$8$q + ddx$0[(32'h0)+:(40)];
-        end
-        plane_base$9 = plane$9$q;
-        if (act$55) begin
-            plane_base$9 = 32'h0;
-        end
-        plane$9$d = plane_base$9 + ps$27 + ps$28;
-        if (act$57) begin
-            inc0$9$d = ddy$1[(32'h0)+:(40)] + ps$29;
         end
         if (at_handover) begin
             plane$9$d = (plane$9$q >> frac) + (attr0$1 << bsh$1);
-            inc1$9$d = inc0$9$q + ddx$1[(32'h0)+:(40)];
-        end
-        plane_base$10 = plane$10$q;
-        if (act$58) begin
-            plane_base$10 = 32'h0;
-        end
-        plane$10$d = plane_base$10 + ps$30 + ps$31;
-        if (act$60) begin
-            inc0$10$d = ddy$2[(32'h0)+:(40)] + ps$32;
         end
         if (at_handover) begin
             plane$10$d = (plane$10$q >> frac) + (attr0$2 << bsh$2);
-            inc1$10$d = inc0$10$q + ddx$2[(32'h0)+:(40)];
-        end
-        plane_base$11 = plane$11$q;
-        if (act$61) begin
-            plane_base$11 = 32'h0;
-        end
-        plane$11$d = plane_base$11 + ps$33 + ps$34;
-        if (act$63) begin
-            inc0$11$d = ddy$3[(32'h0)+:(40)] + ps$35;
         end
         if (at_handover) begin
             plane$11$d = (plane$11$q >> frac) + (attr0$3 << bsh$3);
-            inc1$11$d = inc0$11$q + ddx$3[(32'h0)+:(40)];
         end
         if (last_copy == 32'h0) begin
             out$walk = g0$up;
@@ -8069,10 +10881,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             out$short1_count = g3$count$2;
             out$short1_d = g3$ed16$2[(32'h0)+:(21)];
         end
-        out$maj_x = x$0$q[(32'h0)+:(13)];
-        out$maj_r = r$0$q;
-        out$maj_q = q$0$q[(32'h0)+:(17)];
-        out$maj_rho = rho$0$q;
+        out$maj_x = x$6$q[(32'h0)+:(13)];
+        out$maj_r = r$6$q;
+        out$maj_q = q$6$q[(32'h0)+:(17)];
+        out$maj_rho = rho$6$q;
+        out$short0_x = x$7$q[(32'h0)+:(13)];
+        out$short0_r = r$7$q;
+        out$short0_q = q$7$q[(32'h0)+:(17)];
+        out$short0_rho = rho$7$q;
+        out$short1_x = x$8$q[(32'h0)+:(13)];
+        out$short1_r = r$8$q;
+        out$short1_q = q$8$q[(32'h0)+:(17)];
+        out$short1_rho = rho$8$q;
         out$maj_at_z = plane$0$q[(32'h0)+:(36)];
         out$maj_at_c0 = plane$1$q[(32'h0)+:(32)];
         out$maj_at_c1 = plane$2$q[(32'h0)+:(32)];
@@ -8085,10 +10905,6 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         out$maj_inc1_c0 = inc1$1$q[(32'h0)+:(36)];
         out$maj_inc1_c1 = inc1$2$q[(32'h0)+:(36)];
         out$maj_inc1_c2 = inc1$3$q[(32'h0)+:(36)];
-        out$short0_x = x$1$q[(32'h0)+:(13)];
-        out$short0_r = r$1$q;
-        out$short0_q = q$1$q[(32'h0)+:(17)];
-        out$short0_rho = rho$1$q;
         out$short0_at_z = plane$4$q[(32'h0)+:(36)];
         out$short0_at_c0 = plane$5$q[(32'h0)+:(32)];
         out$short0_at_c1 = plane$6$q[(32'h0)+:(32)];
@@ -8101,10 +10917,6 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         out$short0_inc1_c0 = inc1$5$q[(32'h0)+:(36)];
         out$short0_inc1_c1 = inc1$6$q[(32'h0)+:(36)];
         out$short0_inc1_c2 = inc1$7$q[(32'h0)+:(36)];
-        out$short1_x = x$2$q[(32'h0)+:(13)];
-        out$short1_r = r$2$q;
-        out$short1_q = q$2$q[(32'h0)+:(17)];
-        out$short1_rho = rho$2$q;
         out$short1_at_z = plane$8$q[(32'h0)+:(36)];
         out$short1_at_c0 = plane$9$q[(32'h0)+:(32)];
         out$short1_at_c1 = plane$10$q[(32'h0)+:(32)];
@@ -8117,10 +10929,10 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         out$short1_inc1_c0 = inc1$9$q[(32'h0)+:(36)];
         out$short1_inc1_c1 = inc1$10$q[(32'h0)+:(36)];
         out$short1_inc1_c2 = inc1$11$q[(32'h0)+:(36)];
-        out$ddx_z = ddx$0[(32'h0)+:(40)];
-        out$ddx_c0 = ddx$1[(32'h0)+:(36)];
-        out$ddx_c1 = ddx$2[(32'h0)+:(36)];
-        out$ddx_c2 = ddx$3[(32'h0)+:(36)];
+        out$ddx_z = ddx_o$0$q[(32'h0)+:(40)];
+        out$ddx_c0 = ddx_o$1$q[(32'h0)+:(36)];
+        out$ddx_c1 = ddx_o$2$q[(32'h0)+:(36)];
+        out$ddx_c2 = ddx_o$3$q[(32'h0)+:(36)];
     end
     
 endmodule // triangle_setup
@@ -9342,6 +12154,1222 @@ module triangle_setup$act_r$9(d,q,clock);
 endmodule // triangle_setup$act_r$9
 
 
+module triangle_setup$add_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$0
+
+
+module triangle_setup$add_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$1
+
+
+module triangle_setup$add_r$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$10
+
+
+module triangle_setup$add_r$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$11
+
+
+module triangle_setup$add_r$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$12
+
+
+module triangle_setup$add_r$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$13
+
+
+module triangle_setup$add_r$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$14
+
+
+module triangle_setup$add_r$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$15
+
+
+module triangle_setup$add_r$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$16
+
+
+module triangle_setup$add_r$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$17
+
+
+module triangle_setup$add_r$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$18
+
+
+module triangle_setup$add_r$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$19
+
+
+module triangle_setup$add_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$2
+
+
+module triangle_setup$add_r$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$20
+
+
+module triangle_setup$add_r$21(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$21
+
+
+module triangle_setup$add_r$22(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$22
+
+
+module triangle_setup$add_r$23(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$23
+
+
+module triangle_setup$add_r$24(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$24
+
+
+module triangle_setup$add_r$25(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$25
+
+
+module triangle_setup$add_r$26(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$26
+
+
+module triangle_setup$add_r$27(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$27
+
+
+module triangle_setup$add_r$28(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$28
+
+
+module triangle_setup$add_r$29(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$29
+
+
+module triangle_setup$add_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$3
+
+
+module triangle_setup$add_r$30(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$30
+
+
+module triangle_setup$add_r$31(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$31
+
+
+module triangle_setup$add_r$32(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$32
+
+
+module triangle_setup$add_r$33(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$33
+
+
+module triangle_setup$add_r$34(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$34
+
+
+module triangle_setup$add_r$35(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$35
+
+
+module triangle_setup$add_r$36(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$36
+
+
+module triangle_setup$add_r$37(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$37
+
+
+module triangle_setup$add_r$38(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$38
+
+
+module triangle_setup$add_r$39(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$39
+
+
+module triangle_setup$add_r$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$4
+
+
+module triangle_setup$add_r$40(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$40
+
+
+module triangle_setup$add_r$41(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$41
+
+
+module triangle_setup$add_r$42(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$42
+
+
+module triangle_setup$add_r$43(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$43
+
+
+module triangle_setup$add_r$44(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$44
+
+
+module triangle_setup$add_r$45(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$45
+
+
+module triangle_setup$add_r$46(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$46
+
+
+module triangle_setup$add_r$47(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$47
+
+
+module triangle_setup$add_r$48(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$48
+
+
+module triangle_setup$add_r$49(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$49
+
+
+module triangle_setup$add_r$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$5
+
+
+module triangle_setup$add_r$50(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$50
+
+
+module triangle_setup$add_r$51(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$51
+
+
+module triangle_setup$add_r$52(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$52
+
+
+module triangle_setup$add_r$53(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$53
+
+
+module triangle_setup$add_r$54(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$54
+
+
+module triangle_setup$add_r$55(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$55
+
+
+module triangle_setup$add_r$56(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$56
+
+
+module triangle_setup$add_r$57(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$57
+
+
+module triangle_setup$add_r$58(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$58
+
+
+module triangle_setup$add_r$59(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$59
+
+
+module triangle_setup$add_r$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$6
+
+
+module triangle_setup$add_r$60(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$60
+
+
+module triangle_setup$add_r$61(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$61
+
+
+module triangle_setup$add_r$62(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$62
+
+
+module triangle_setup$add_r$63(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$63
+
+
+module triangle_setup$add_r$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$7
+
+
+module triangle_setup$add_r$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$8
+
+
+module triangle_setup$add_r$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$add_r$9
+
+
 module triangle_setup$area(d,q,clock);
     
     // Module arguments
@@ -9454,6 +13482,82 @@ module triangle_setup$crosses$3(d,q,clock);
     end
           
 endmodule // triangle_setup$crosses$3
+
+
+module triangle_setup$ddx_o$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$ddx_o$0
+
+
+module triangle_setup$ddx_o$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$ddx_o$1
+
+
+module triangle_setup$ddx_o$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$ddx_o$2
+
+
+module triangle_setup$ddx_o$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$ddx_o$3
 
 
 module triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
@@ -13248,40 +17352,130 @@ module triangle_setup$iss_r$6(d,q,clock);
 endmodule // triangle_setup$iss_r$6
 
 
-module triangle_setup$mant(d,q,clock);
+module triangle_setup$mant_s(d,q,clock);
     
     // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
+    input wire  [56:0] d;
+    output reg  [56:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 25'h0;
+       q = 57'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // triangle_setup$mant
+endmodule // triangle_setup$mant_s
 
 
-module triangle_setup$mul$0(a,b,p);
+module triangle_setup$mul$0(clock,en,a,b,p);
     
     // Module arguments
+    input wire  clock;
+    input wire  en;
     input wire  [56:0] a;
     input wire  [18:0] b;
     output reg  [57:0] p;
     
-    // Update code (custom)
-    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
+    // Stub signals
+    reg  [56:0] a_r$d;
+    wire  [56:0] a_r$q;
+    reg  a_r$clock;
+    reg  [18:0] b_r$d;
+    wire  [18:0] b_r$q;
+    reg  b_r$clock;
+    reg  [57:0] p_r$d;
+    wire  [57:0] p_r$q;
+    reg  p_r$clock;
+    reg  [56:0] mul$a;
+    reg  [18:0] mul$b;
+    wire  [57:0] mul$p;
+    
+    // Sub module instances
+    triangle_setup$mul$0$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    triangle_setup$mul$0$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    triangle_setup$mul$0$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$mul$0$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
 endmodule // triangle_setup$mul$0
 
 
-module triangle_setup$mul$1(a,b,p);
+module triangle_setup$mul$0$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$0$a_r
+
+
+module triangle_setup$mul$0$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$0$b_r
+
+
+module triangle_setup$mul$0$mul(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -13292,10 +17486,133 @@ module triangle_setup$mul$1(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
+endmodule // triangle_setup$mul$0$mul
+
+
+module triangle_setup$mul$0$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$0$p_r
+
+
+module triangle_setup$mul$1(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Stub signals
+    reg  [56:0] a_r$d;
+    wire  [56:0] a_r$q;
+    reg  a_r$clock;
+    reg  [18:0] b_r$d;
+    wire  [18:0] b_r$q;
+    reg  b_r$clock;
+    reg  [57:0] p_r$d;
+    wire  [57:0] p_r$q;
+    reg  p_r$clock;
+    reg  [56:0] mul$a;
+    reg  [18:0] mul$b;
+    wire  [57:0] mul$p;
+    
+    // Sub module instances
+    triangle_setup$mul$1$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    triangle_setup$mul$1$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    triangle_setup$mul$1$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$mul$1$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
 endmodule // triangle_setup$mul$1
 
 
-module triangle_setup$mul$2(a,b,p);
+module triangle_setup$mul$1$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$1$a_r
+
+
+module triangle_setup$mul$1$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$1$b_r
+
+
+module triangle_setup$mul$1$mul(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -13306,10 +17623,133 @@ module triangle_setup$mul$2(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
+endmodule // triangle_setup$mul$1$mul
+
+
+module triangle_setup$mul$1$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$1$p_r
+
+
+module triangle_setup$mul$2(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Stub signals
+    reg  [56:0] a_r$d;
+    wire  [56:0] a_r$q;
+    reg  a_r$clock;
+    reg  [18:0] b_r$d;
+    wire  [18:0] b_r$q;
+    reg  b_r$clock;
+    reg  [57:0] p_r$d;
+    wire  [57:0] p_r$q;
+    reg  p_r$clock;
+    reg  [56:0] mul$a;
+    reg  [18:0] mul$b;
+    wire  [57:0] mul$p;
+    
+    // Sub module instances
+    triangle_setup$mul$2$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    triangle_setup$mul$2$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    triangle_setup$mul$2$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$mul$2$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
 endmodule // triangle_setup$mul$2
 
 
-module triangle_setup$mul$3(a,b,p);
+module triangle_setup$mul$2$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$2$a_r
+
+
+module triangle_setup$mul$2$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$2$b_r
+
+
+module triangle_setup$mul$2$mul(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -13320,10 +17760,133 @@ module triangle_setup$mul$3(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
+endmodule // triangle_setup$mul$2$mul
+
+
+module triangle_setup$mul$2$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$2$p_r
+
+
+module triangle_setup$mul$3(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Stub signals
+    reg  [56:0] a_r$d;
+    wire  [56:0] a_r$q;
+    reg  a_r$clock;
+    reg  [18:0] b_r$d;
+    wire  [18:0] b_r$q;
+    reg  b_r$clock;
+    reg  [57:0] p_r$d;
+    wire  [57:0] p_r$q;
+    reg  p_r$clock;
+    reg  [56:0] mul$a;
+    reg  [18:0] mul$b;
+    wire  [57:0] mul$p;
+    
+    // Sub module instances
+    triangle_setup$mul$3$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    triangle_setup$mul$3$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    triangle_setup$mul$3$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$mul$3$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
 endmodule // triangle_setup$mul$3
 
 
-module triangle_setup$mul$4(a,b,p);
+module triangle_setup$mul$3$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$3$a_r
+
+
+module triangle_setup$mul$3$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$3$b_r
+
+
+module triangle_setup$mul$3$mul(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -13334,10 +17897,133 @@ module triangle_setup$mul$4(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
+endmodule // triangle_setup$mul$3$mul
+
+
+module triangle_setup$mul$3$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$3$p_r
+
+
+module triangle_setup$mul$4(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Stub signals
+    reg  [56:0] a_r$d;
+    wire  [56:0] a_r$q;
+    reg  a_r$clock;
+    reg  [18:0] b_r$d;
+    wire  [18:0] b_r$q;
+    reg  b_r$clock;
+    reg  [57:0] p_r$d;
+    wire  [57:0] p_r$q;
+    reg  p_r$clock;
+    reg  [56:0] mul$a;
+    reg  [18:0] mul$b;
+    wire  [57:0] mul$p;
+    
+    // Sub module instances
+    triangle_setup$mul$4$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    triangle_setup$mul$4$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    triangle_setup$mul$4$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$mul$4$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
 endmodule // triangle_setup$mul$4
 
 
-module triangle_setup$mul$5(a,b,p);
+module triangle_setup$mul$4$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$4$a_r
+
+
+module triangle_setup$mul$4$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$4$b_r
+
+
+module triangle_setup$mul$4$mul(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -13348,10 +18034,133 @@ module triangle_setup$mul$5(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
+endmodule // triangle_setup$mul$4$mul
+
+
+module triangle_setup$mul$4$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$4$p_r
+
+
+module triangle_setup$mul$5(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Stub signals
+    reg  [56:0] a_r$d;
+    wire  [56:0] a_r$q;
+    reg  a_r$clock;
+    reg  [18:0] b_r$d;
+    wire  [18:0] b_r$q;
+    reg  b_r$clock;
+    reg  [57:0] p_r$d;
+    wire  [57:0] p_r$q;
+    reg  p_r$clock;
+    reg  [56:0] mul$a;
+    reg  [18:0] mul$b;
+    wire  [57:0] mul$p;
+    
+    // Sub module instances
+    triangle_setup$mul$5$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    triangle_setup$mul$5$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    triangle_setup$mul$5$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$mul$5$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
 endmodule // triangle_setup$mul$5
 
 
-module triangle_setup$mul$6(a,b,p);
+module triangle_setup$mul$5$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$5$a_r
+
+
+module triangle_setup$mul$5$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$5$b_r
+
+
+module triangle_setup$mul$5$mul(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -13362,7 +18171,163 @@ module triangle_setup$mul$6(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
+endmodule // triangle_setup$mul$5$mul
+
+
+module triangle_setup$mul$5$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$5$p_r
+
+
+module triangle_setup$mul$6(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Stub signals
+    reg  [56:0] a_r$d;
+    wire  [56:0] a_r$q;
+    reg  a_r$clock;
+    reg  [18:0] b_r$d;
+    wire  [18:0] b_r$q;
+    reg  b_r$clock;
+    reg  [57:0] p_r$d;
+    wire  [57:0] p_r$q;
+    reg  p_r$clock;
+    reg  [56:0] mul$a;
+    reg  [18:0] mul$b;
+    wire  [57:0] mul$p;
+    
+    // Sub module instances
+    triangle_setup$mul$6$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    triangle_setup$mul$6$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    triangle_setup$mul$6$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$mul$6$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
 endmodule // triangle_setup$mul$6
+
+
+module triangle_setup$mul$6$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$6$a_r
+
+
+module triangle_setup$mul$6$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$6$b_r
+
+
+module triangle_setup$mul$6$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [56:0] a;
+    input wire  [18:0] b;
+    output reg  [57:0] p;
+    
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // triangle_setup$mul$6$mul
+
+
+module triangle_setup$mul$6$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$mul$6$p_r
 
 
 module triangle_setup$norm(d,q,clock);
@@ -13460,6 +18425,25 @@ module triangle_setup$num$2(d,q,clock);
 endmodule // triangle_setup$num$2
 
 
+module triangle_setup$off_grid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$off_grid_r
+
+
 module triangle_setup$p$0(d,q,clock);
     
     // Module arguments
@@ -13534,6 +18518,25 @@ module triangle_setup$p$3(d,q,clock);
     end
           
 endmodule // triangle_setup$p$3
+
+
+module triangle_setup$phase(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$phase
 
 
 module triangle_setup$plane$0(d,q,clock);
@@ -13802,6 +18805,44 @@ module triangle_setup$q$1(d,q,clock);
 endmodule // triangle_setup$q$1
 
 
+module triangle_setup$q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$q$10
+
+
+module triangle_setup$q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$q$11
+
+
 module triangle_setup$q$2(d,q,clock);
     
     // Module arguments
@@ -13819,6 +18860,139 @@ module triangle_setup$q$2(d,q,clock);
     end
           
 endmodule // triangle_setup$q$2
+
+
+module triangle_setup$q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$q$3
+
+
+module triangle_setup$q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$q$4
+
+
+module triangle_setup$q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$q$5
+
+
+module triangle_setup$q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$q$6
+
+
+module triangle_setup$q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$q$7
+
+
+module triangle_setup$q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$q$8
+
+
+module triangle_setup$q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$q$9
 
 
 module triangle_setup$r$0(d,q,clock);
@@ -13859,6 +19033,44 @@ module triangle_setup$r$1(d,q,clock);
 endmodule // triangle_setup$r$1
 
 
+module triangle_setup$r$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$r$10
+
+
+module triangle_setup$r$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$r$11
+
+
 module triangle_setup$r$2(d,q,clock);
     
     // Module arguments
@@ -13876,6 +19088,139 @@ module triangle_setup$r$2(d,q,clock);
     end
           
 endmodule // triangle_setup$r$2
+
+
+module triangle_setup$r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$r$3
+
+
+module triangle_setup$r$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$r$4
+
+
+module triangle_setup$r$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$r$5
+
+
+module triangle_setup$r$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$r$6
+
+
+module triangle_setup$r$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$r$7
+
+
+module triangle_setup$r$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$r$8
+
+
+module triangle_setup$r$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$r$9
 
 
 module triangle_setup$res_r$0(d,q,clock);
@@ -14049,6 +19394,44 @@ module triangle_setup$rho$1(d,q,clock);
 endmodule // triangle_setup$rho$1
 
 
+module triangle_setup$rho$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$rho$10
+
+
+module triangle_setup$rho$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$rho$11
+
+
 module triangle_setup$rho$2(d,q,clock);
     
     // Module arguments
@@ -14066,6 +19449,139 @@ module triangle_setup$rho$2(d,q,clock);
     end
           
 endmodule // triangle_setup$rho$2
+
+
+module triangle_setup$rho$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$rho$3
+
+
+module triangle_setup$rho$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$rho$4
+
+
+module triangle_setup$rho$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$rho$5
+
+
+module triangle_setup$rho$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$rho$6
+
+
+module triangle_setup$rho$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$rho$7
+
+
+module triangle_setup$rho$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$rho$8
+
+
+module triangle_setup$rho$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$rho$9
 
 
 module triangle_setup$sign$0(d,q,clock);
@@ -15645,6 +21161,44 @@ module triangle_setup$x$1(d,q,clock);
 endmodule // triangle_setup$x$1
 
 
+module triangle_setup$x$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$x$10
+
+
+module triangle_setup$x$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$x$11
+
+
 module triangle_setup$x$2(d,q,clock);
     
     // Module arguments
@@ -15662,3 +21216,136 @@ module triangle_setup$x$2(d,q,clock);
     end
           
 endmodule // triangle_setup$x$2
+
+
+module triangle_setup$x$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$x$3
+
+
+module triangle_setup$x$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$x$4
+
+
+module triangle_setup$x$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$x$5
+
+
+module triangle_setup$x$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$x$6
+
+
+module triangle_setup$x$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$x$7
+
+
+module triangle_setup$x$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$x$8
+
+
+module triangle_setup$x$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$x$9

@@ -10,8 +10,8 @@
 //!   moves to the next stage in the cycle the one before leaves it (or the cycle after
 //!   it came in, if later), and its output register holds a passing triangle until
 //!   setup takes it (a rejected one leaves the cycle it arrives);
-//! * `triangle_setup` holds several triangles: it takes the next one II cycles
-//!   after the last (or when idle), and while a result waits for the edge walk
+//! * `triangle_setup` holds several triangles: it takes them on a grid of II cycles
+//!   from the last one taken (or at once when empty), and while a result waits for the edge walk
 //!   all of setup waits (every triangle in flight with it); its latency and II follow
 //!   its schedule of 64 products on `multipliers` multipliers and the divider's
 //!   latency ([`setup_timing`], the schedule its RTL runs);
@@ -27,6 +27,7 @@
 //!   fed by `cull_sort`; triangles do not overlap in the vector unit.
 
 use crate::render::Work;
+use crate::triangle_setup::schedule::Schedule;
 use crate::{cull_sort, edge_walk, pixel_out, span};
 
 /// Hardware parameters the cycle model depends on.
@@ -58,83 +59,24 @@ impl Default for Timing {
     }
 }
 
-/// Most multipliers setup can use: with seven, the last edge's divisions are back
-/// just as its products are due (see [`setup_latency`]); more would wait for the divider.
-pub const SETUP_MULTIPLIERS_MAX: u32 = 7;
-
-/// Cycles from a division's issue in setup into the divider: the operands are registered.
-pub const SETUP_DIVIDER_OPERANDS: u32 = 1;
-
-/// Most copies of a triangle's registers setup holds (see [`setup_timing`]): II is at least
-/// a quarter of the latency.
-pub const SETUP_COPIES_MAX: u32 = 4;
-
 /// Setup's timing at `t`'s multipliers and divider ([`setup_timing`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct SetupTiming {
     /// Cycles from the cycle setup takes a triangle to the cycle its result is valid.
     pub latency: u32,
-    /// Cycles between two triangles taken back to back (II): setup takes the next one
-    /// while the last is in its second part, so II < latency.
+    /// Cycles between two triangles taken back to back (II): setup takes triangles on a
+    /// grid of II cycles (or at once when it is empty), several in flight.
     pub interval: u32,
-    /// Whether one multiplier does twice the area and the edge numerators while the other
-    /// `multipliers - 1` do eq. (2), the gradients and the starts (the split schedule), or
-    /// every phase uses all of them in turn (the sequential one).
-    pub split: bool,
 }
 
-/// Setup's latency and interval: the schedule `rtl::triangle_setup` runs, 64 products on
-/// `multipliers` (1 to [`SETUP_MULTIPLIERS_MAX`]) multipliers and the divider's
-/// `divider_latency` stages, with several triangles in flight.
-///
-/// Setup takes a triangle in the cycle the one before it reaches cycle II of its own
-/// schedule (or when it is idle), so triangles II cycles apart overlap. Nothing they use may
-/// overlap: each multiplier and the divider are busy for at most II consecutive cycles of a
-/// triangle, and no register is written by the later triangle before the earlier one has
-/// read it. The triangle's own registers (vertices, crossings, the area's sign and exponent)
-/// are copied every II cycles, ceil(latency / II) copies, each part of the schedule reading
-/// the copy of its cycle. While a result waits for the edge walk, all of setup waits with it
-/// (the triangles behind it too).
-///
-/// Two schedules, the one with the lower II taken (then the lower latency). Twice the area
-/// is normalised into a register in the cycle after its last product and 1/area is issued
-/// the cycle after that. A division's operands are registered ([`SETUP_DIVIDER_OPERANDS`]):
-/// its result is back 1 + L cycles after its issue. With c(n) = ceil(n / multipliers):
-///
-/// * **sequential**: each phase on all the multipliers in turn: twice the area c(2) cycles,
-///   normalise 1, the edge numerators (from the normalise cycle) and 1/area
-///   max(L + 2, c(6)), eq. (2) c(4), gradients c(16), starts and increments c(36), hand-over
-///   1; every multiplier is busy from cycle 1 to the last start, so II = latency - 2.
-///   7 multipliers and 001's 5-stage divider: 1 + 1 + 7 + 1 + 3 + 6 + 1 = 20, II 18; one
-///   multiplier, 2 + 1 + 7 + 4 + 16 + 36 + 1 = 67, II 65.
-/// * **split** (2 multipliers or more): with b(n) = ceil(n / (multipliers - 1)), one
-///   multiplier does the area (cycles 1, 2) and the six numerators (3 to 8), the divisions
-///   are issued at 4 (1/area) and 5 to 10 (each edge's start once its two numerators are
-///   summed, then its step); the others do eq. (2) from 5 + L (1/area back), b(4) cycles, the
-///   gradients b(16) and the starts b(36), then hand-over 1: latency 6 + L + b(4) + b(16) +
-///   b(36), II = max(8, b(4) + b(16) + b(36), ceil(latency / [`SETUP_COPIES_MAX`])). 7
-///   multipliers and the 5-stage divider: 6 + 5 + 1 + 3 + 6 = 21, II = 10 (the six
-///   multipliers' 60 slots hold the 56 products), at any divider depth to 24 stages (latency
-///   40; 25 stages: latency 41, II 11).
+/// Setup's latency and interval: those of the schedule its RTL runs
+/// ([`crate::triangle_setup::schedule::Schedule`]), 64 products on `setup_multipliers`
+/// multipliers (1 to 7) and the divider's `divider_latency` stages, several triangles in
+/// flight. While a result waits for the edge walk, all of setup waits with it (the
+/// triangles behind it too). 7 multipliers and 001's 5-stage divider: latency 28, II 10.
 pub fn setup_timing(t: &Timing) -> SetupTiming {
-    let k = t.setup_multipliers;
-    assert!((1..=SETUP_MULTIPLIERS_MAX).contains(&k), "setup has 1 to {SETUP_MULTIPLIERS_MAX} multipliers, not {k}");
-    let l = t.divider_latency;
-    let c = |n: u32| n.div_ceil(k);
-    let latency = c(2) + 1 + (l + 1 + SETUP_DIVIDER_OPERANDS).max(c(6)) + c(4) + c(16) + c(36) + 1;
-    let sequential = SetupTiming { latency, interval: latency - 2, split: false };
-    if k == 1 {
-        return sequential;
-    }
-    let b = |n: u32| n.div_ceil(k - 1);
-    let late = b(4) + b(16) + b(36);
-    let latency = 5 + SETUP_DIVIDER_OPERANDS + l + late;
-    let split = SetupTiming { latency, interval: 8.max(late).max(latency.div_ceil(SETUP_COPIES_MAX)), split: true };
-    if (split.interval, split.latency) < (sequential.interval, sequential.latency) {
-        split
-    } else {
-        sequential
-    }
+    let s = Schedule::new(t.setup_multipliers as usize, t.divider_latency as usize).unwrap_or_else(|e| panic!("{e}"));
+    SetupTiming { latency: s.latency as u32, interval: s.interval as u32 }
 }
 
 /// Setup's latency ([`setup_timing`]).
@@ -161,10 +103,11 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
     let (setup, interval) = (setup as u64, interval as u64);
     let fifo = t.span_fifo.max(1) as usize;
     let (mut ew_free, mut span_free, mut last) = (0u64, 0u64, 0u64);
-    // The cycle setup may take the next triangle (the last one reaches cycle II of its
-    // schedule), and the spans of cycles in which setup stands still (from the cycle a
-    // result is valid until the one it is taken in), those that can still delay a triangle.
-    let mut setup_free = 0u64;
+    // The last triangle setup took: the cycle it was taken and the cycle its result was
+    // taken (setup is empty from the next one); and the spans of cycles in which setup
+    // stands still (from the cycle a result is valid until the one it is taken in), those
+    // that can still delay a triangle.
+    let mut last_taken: Option<(u64, u64)> = None;
     let mut waits: Vec<(u64, u64)> = Vec::new();
     // The cycle setup reaches `n` cycles of running after `from`, standing still in `waits`.
     let running = |waits: &[(u64, u64)], from: u64, n: u64| {
@@ -200,9 +143,17 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
             continue;
         }
         out.triangles += 1;
-        // No triangle is taken while setup stands still; every triangle in flight stands
-        // still with it, however many results ahead of its own the wait is for.
-        let mut setup_start = culled.max(setup_free);
+        // Setup takes a triangle on the grid of the last one it took (when that one has run
+        // II, 2 II, ... cycles), or at once when empty. No triangle is taken while setup
+        // stands still; every triangle in flight stands still with it, however many results
+        // ahead of its own the wait is for.
+        let mut setup_start = match last_taken {
+            Some((start, handed)) if culled <= handed => {
+                let grid = (1..).map(|n| running(&waits, start, n * interval)).find(|&g| g >= culled).unwrap();
+                grid.min(handed + 1)
+            }
+            _ => culled,
+        };
         for &(d, h) in &waits {
             if (d..h).contains(&setup_start) {
                 setup_start = h;
@@ -211,8 +162,8 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
         waits.retain(|w| w.0 >= setup_start);
         moved_on(&mut stage_free, &leaves, setup_start);
         let done = running(&waits, setup_start, setup);
-        setup_free = running(&waits, setup_start, interval);
         let ew_start = done.max(ew_free);
+        last_taken = Some((setup_start, ew_start));
         if ew_start > done {
             waits.push((done, ew_start));
         }
@@ -268,58 +219,48 @@ mod tests {
     use crate::render::SpanWork;
 
     #[test]
-    fn cycles_setup_timing_counts_its_schedule() {
-        let timing = |k, l| setup_timing(&Timing { setup_multipliers: k, divider_latency: l, ..Timing::default() });
-        // 7 multipliers, 5-stage divider, split: area 2 on one multiplier, normalised in
-        // 3, 1/area issued at 4, into the divider at 5 and back at 10; eq. (2) 1 cycle,
-        // gradients 3, starts 6, hand-over 1: 21. The six multipliers are busy 10 cycles: II 10.
-        assert_eq!(setup_timing(&Timing::default()), SetupTiming { latency: 21, interval: 10, split: true });
-        // One multiplier: 1/area's operand register and the divider take 6 cycles, one more
-        // than the six numerators: 2 + 1 + 7 + 4 + 16 + 36 + 1; the multiplier is busy from
-        // cycle 1 to 65.
-        assert_eq!(timing(1, 5), SetupTiming { latency: 67, interval: 65, split: false });
-        // 3 multipliers, a 2-stage divider: sequential, 1 + 1 + 4 + 2 + 6 + 12 + 1 = 27, II
-        // 25; split, the two others would take 2 + 8 + 18 cycles for eq. (2) to the starts.
-        assert_eq!(timing(3, 2), SetupTiming { latency: 27, interval: 25, split: false });
-        // 4 multipliers, a 9-stage divider: split, 6 + 9 + 2 + 6 + 12 = 35, II 20 (the
-        // sequential one: 28, II 26).
-        assert_eq!(timing(4, 9), SetupTiming { latency: 35, interval: 20, split: true });
-        // Four copies of the triangle's registers keep II 10 up to a 24-stage divider
-        // (latency 40); at 25 stages the latency is 41 and II ceil(41 / 4) = 11.
-        assert_eq!(timing(7, 24), SetupTiming { latency: 40, interval: 10, split: true });
-        assert_eq!(timing(7, 25), SetupTiming { latency: 41, interval: 11, split: true });
-        // A 1-stage divider: split, 6 + 1 + 10 = 17, II 10 (sequential: 16, II 14).
-        assert_eq!(timing(7, 1), SetupTiming { latency: 17, interval: 10, split: true });
-        assert_eq!(setup_latency(&Timing::default()), 21);
+    fn cycles_setup_timing_is_its_schedules() {
+        // 001's 7 multipliers and 5-stage divider: the schedule's latency and II
+        // (`triangle_setup::schedule`, whose tests derive them).
+        let s = Schedule::new(7, crate::divider::LATENCY as usize).unwrap();
+        assert_eq!(setup_timing(&Timing::default()), SetupTiming { latency: s.latency as u32, interval: s.interval as u32 });
+        assert_eq!(setup_latency(&Timing::default()), s.latency as u32);
     }
 
-    /// Two triangles in flight: the second is taken II cycles after the first; while the
-    /// second waits for the edge walk, the third (taken before) waits with it.
+    /// Triangles in flight: each is taken on the II grid of the one before (latency 28, II
+    /// 10); while one waits for the edge walk, those taken after it wait with it.
     #[test]
     fn cycles_setup_overlaps_triangles_and_waits_as_one() {
+        assert_eq!(setup_timing(&Timing::default()), SetupTiming { latency: 28, interval: 10 });
         let walk = |n: usize| Work { passed_cull: true, scanlines: vec![None; n], vector_cycles: 0 };
-        // First: culled out at 3 (cull_sort's three stages), taken, done at 24, walked
-        // 26..76. Second: culled out at 4, taken at 3 + 10 = 13, done at 34, waits for the
-        // walk until 76, walked 78..79. Third: culled out at 14 (it waited in stage 2 while
-        // the second held the output register), taken at 23 (the second in its cycle 10),
-        // in flight while the second waits 42 cycles: done at 23 + 21 + 42 = 86, walked
-        // 88..89.
-        assert_eq!(scanline_frame(&[walk(50), walk(1), walk(1)], &Timing::default()).total, 89);
-        // Three in flight: a triangle waits for every result ahead of it that waits. With a
-        // second long walk, the second waits from 34 to 76 as above and the third from 86
-        // (23 + 21 + 42) to 128; the fourth, taken at 33 (the third in its cycle 10), runs 1
-        // cycle, stands still 42, runs 10, stands still 42, runs 10: done at 138, walked
-        // 140..141.
-        assert_eq!(scanline_frame(&[walk(50), walk(50), walk(1), walk(1)], &Timing::default()).total, 141);
-        // Without the long walk nothing waits: the third is done at 44, walked 46..47.
-        assert_eq!(scanline_frame(&[walk(1), walk(1), walk(1)], &Timing::default()).total, 47);
-        // A triangle offered while setup waits is taken when the result is handed over: as
-        // above, the second waits from 34 to 76; the third, culled out at 54 behind 40
-        // culled ones, goes in at 76; done at 76 + 21 = 97, walked 99..100.
+        // First: culled out at 3 (cull_sort's three stages), taken, done at 31, walked
+        // 33..83. Second: culled out at 4, taken at 3 + 10 = 13 (the grid), done at 41,
+        // waits for the walk until 83, walked 85..86. Third: culled out at 14 (it waited in
+        // stage 2 while the second held the output register), taken at 23 (the second in its
+        // cycle 10), in flight while the second waits 42 cycles: done at 23 + 28 + 42 = 93,
+        // walked 95..96.
+        assert_eq!(scanline_frame(&[walk(50), walk(1), walk(1)], &Timing::default()).total, 96);
+        // A triangle waits for every result ahead of it that waits. With a second long walk,
+        // the second waits from 41 to 83 as above and the third from 93 to 135; the fourth,
+        // taken at 33 (the third in its cycle 10), runs 8 cycles, stands still 42, runs 10,
+        // stands still 42, runs 10: done at 145, walked 147..148.
+        assert_eq!(scanline_frame(&[walk(50), walk(50), walk(1), walk(1)], &Timing::default()).total, 148);
+        // Without the long walk nothing waits: the third is done at 51, walked 53..54.
+        assert_eq!(scanline_frame(&[walk(1), walk(1), walk(1)], &Timing::default()).total, 54);
+        // Off the grid, a triangle is taken once setup is empty: as above, the second waits
+        // from 41 to 83; the third, culled out at 54 behind 40 culled ones, would be on the
+        // grid at 85 (13 + 30 cycles of running) and goes in at 84, the cycle after the
+        // second's result is taken; done at 84 + 28 = 112, walked 114..115.
         let mut frame = vec![walk(50), walk(1)];
         frame.extend(std::iter::repeat_n(Work::default(), 40));
         frame.push(walk(1));
-        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 100);
+        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 115);
+        // On the grid: the third, culled out at 14 + 10 behind 10 culled ones, waits for
+        // the grid at 33 (the second in its cycle 20), not for 41 and the second's result.
+        let mut frame = vec![walk(1), walk(1)];
+        frame.extend(std::iter::repeat_n(Work::default(), 10));
+        frame.push(walk(1));
+        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 33 + 28 + 3);
     }
 
     /// A span of `c` cycles whose last cycle sends a pixel.
@@ -329,43 +270,43 @@ mod tests {
 
     #[test]
     fn cycles_one_triangle_through_the_scanline_pipeline() {
-        // Taken in cycle 0, culled out at 3; setup done at 3 + 21 = 24; the walk emits at
-        // 26, 27, 28; span walks each from 1 cycle later or when free: 27..32, 32..37,
-        // 37..42; the last pixel leaves span's pixel register in 42 and is written 2 cycles
-        // after, in cycle 44: 45 cycles.
+        // Taken in cycle 0, culled out at 3; setup done at 3 + 28 = 31; the walk emits at
+        // 33, 34, 35; span walks each from 1 cycle later or when free: 34..39, 39..44,
+        // 44..49; the last pixel leaves span's pixel register in 49 and is written 2 cycles
+        // after, in cycle 51: 52 cycles.
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], vector_cycles: 0 };
         let c = scanline_frame(std::slice::from_ref(&w), &Timing::default());
-        assert_eq!((c.total, c.span_busy, c.triangles), (45, 15, 1));
+        assert_eq!((c.total, c.span_busy, c.triangles), (52, 15, 1));
         // A culled triangle ahead costs one cycle of cull_sort only.
         let culled = Work::default();
-        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &Timing::default()).total, 46);
+        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &Timing::default()).total, 53);
         // Behind a triangle waiting for setup, culled ones wait too: the first triangle
         // leaves cull_sort for setup in cycle 3, the second (which crosses no scanline)
         // arrives in the output register at 4 and leaves in 13, when the first is in its
         // cycle 10 (II); the first two culled ones, taken at 2 and 3, wait in stages 1 and
         // 2 (nothing more is taken), then the 40 culled ones go through cull_sort, one per
         // cycle, the last one's verdict in cycle 13 + 40 (after the first triangle's last
-        // pixel, 45).
+        // pixel, 52).
         let mut frame = vec![w.clone(), Work { passed_cull: true, ..Work::default() }];
         frame.extend(std::iter::repeat_n(culled, 40));
         assert_eq!(scanline_frame(&frame, &Timing::default()).total, 13 + 40);
-        // With a 4-deep FIFO the walk runs ahead and span never waits: walking from 27
+        // With a 4-deep FIFO the walk runs ahead and span never waits: walking from 34
         // for 53 cycles, the last pixel out of the pixel register 1 later, written 2 later.
         let long = Work { scanlines: vec![full(50), full(1), full(1), None, full(1)], ..w.clone() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&long), &Timing::default()).total, 27 + 53 + 1 + 2);
+        assert_eq!(scanline_frame(std::slice::from_ref(&long), &Timing::default()).total, 34 + 53 + 1 + 2);
         // A one-deep FIFO holds the walk until span takes each command; the last
-        // command is emitted only at 79, reaches span at 80: one idle cycle.
+        // command is emitted only at 86, reaches span at 87: one idle cycle.
         let one_deep = Timing { span_fifo: 1, ..Timing::default() };
-        assert_eq!(scanline_frame(&[long], &one_deep).total, 27 + 53 + 1 + 1 + 2);
+        assert_eq!(scanline_frame(&[long], &one_deep).total, 34 + 53 + 1 + 1 + 2);
         // Spans that end on pixels sent nowhere (off screen, out of the depth range, or
         // dropped): the frame ends when span is done, or 4 cycles after the last pixel's
         // walk cycle (out of the pixel register, into pixel_out, written).
         let mut tail = w.clone();
         tail.scanlines[2] = Some(SpanWork { cycles: 5, last_sent: Some(1) });
-        assert_eq!(scanline_frame(&[tail.clone()], &Timing::default()).total, 42);
+        assert_eq!(scanline_frame(&[tail.clone()], &Timing::default()).total, 49);
         tail.scanlines[2] = Some(SpanWork { cycles: 1, last_sent: None });
-        // Dropped: span done at 38, the pixel walked in 36 out of span in 37, written in 39.
-        assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 40);
+        // Dropped: span done at 45, the pixel walked in 43 out of span in 44, written in 46.
+        assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 47);
     }
 
     #[test]
@@ -376,13 +317,13 @@ mod tests {
         let mut frame = vec![Work::default(), w.clone()];
         frame.extend(std::iter::repeat_n(Work::default(), 30));
         let no_cull = Timing { cull_sort: false, ..Timing::default() };
-        assert_eq!(scanline_frame(&frame, &no_cull).total, 42);
-        // Without pixel_out the frame ends the cycle after span's last fragment (42):
+        assert_eq!(scanline_frame(&frame, &no_cull).total, 49);
+        // Without pixel_out the frame ends the cycle after span's last fragment (49):
         // 2 cycles less than with the depth test and write behind it.
         let no_out = Timing { pixel_out: false, ..Timing::default() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 43);
+        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 50);
         let neither = Timing { cull_sort: false, pixel_out: false, ..Timing::default() };
-        assert_eq!(scanline_frame(&frame, &neither).total, 40);
+        assert_eq!(scanline_frame(&frame, &neither).total, 47);
     }
 
     #[test]

@@ -26,7 +26,9 @@
 //! edge's `x - 1`. A centre on a left or top edge is inside, on a right or bottom
 //! edge outside: the top-left rule, exactly.
 //!
-//! Mirrors `rtl::triangle_setup` (`hdl-out/triangle_setup.v`).
+//! Mirrors `rtl::triangle_setup` (`hdl-out/triangle_setup.v`), which runs [`schedule`].
+
+pub mod schedule;
 
 use crate::ctx::{Ctx, Q};
 use crate::cull_sort::Sorted;

@@ -43,3 +43,36 @@ impl<const A: usize, const B: usize, const P: usize> Logic for Mul<A, B, P> {
         ))
     }
 }
+
+/// [`Mul`] between registers: its operands are registered from `a`, `b` and the product
+/// from them, both while `en` is high, so `p` is the product of the operands of two
+/// enabled cycles before (`model::triangle_setup::schedule::MULTIPLIER_STAGES`). Nothing
+/// but the multiplier lies between its registers: on ECP5 its MULT18X18D blocks and the
+/// adders of their partial products.
+#[derive(LogicBlock, Default)]
+pub struct PipelinedMul<const A: usize, const B: usize, const P: usize> {
+    pub clock: Signal<In, Clock>,
+    pub en: Signal<In, Bit>,
+    pub a: Signal<In, Bits<A>>,
+    pub b: Signal<In, Bits<B>>,
+    pub p: Signal<Out, Bits<P>>,
+    a_r: DFF<Bits<A>>,
+    b_r: DFF<Bits<B>>,
+    p_r: DFF<Bits<P>>,
+    mul: Mul<A, B, P>,
+}
+
+impl<const A: usize, const B: usize, const P: usize> Logic for PipelinedMul<A, B, P> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, a_r, b_r, p_r);
+        self.mul.a.next = self.a_r.q.val();
+        self.mul.b.next = self.b_r.q.val();
+        if self.en.val() {
+            self.a_r.d.next = self.a.val();
+            self.b_r.d.next = self.b.val();
+            self.p_r.d.next = self.mul.p.val();
+        }
+        self.p.next = self.p_r.q.val();
+    }
+}

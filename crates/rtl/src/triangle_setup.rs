@@ -75,12 +75,13 @@ mod geometry;
 use super::cull_sort::{COLOR, OUTCODE, XY, Z};
 use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_Q, DIV_QM};
 use crate::emit::{ports, verilog, Emitted};
-use crate::mul::Mul;
+use crate::mul::PipelinedMul;
 use crate::parts::defaults;
 use super::links::{SortedSink, TriangleSetupSource};
 use super::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, WIDTHS, Z_ACC};
 use crate::Params;
 use geometry::Geometry;
+pub use model::triangle_setup::schedule::{Schedule, COPIES_MAX, DIVIDER_OPERANDS, MULTIPLIERS_MAX, PRODUCTS};
 use rust_hdl::prelude::*;
 
 /// Multiplier operand A: the widest factor, `ooa_d` (`config::mul_a`).
@@ -107,8 +108,6 @@ const QL: usize = if DIV_Q < NB { DIV_Q } else { NB };
 const ATTR: usize = DZ;
 /// OneOverArea's mantissa (`ooa`).
 const MANT: usize = FORMATS.ooa.bits() as usize;
-/// Products in setup's schedule.
-pub const PRODUCTS: usize = 64;
 
 const S: u32 = FORMATS.xy.frac;
 
@@ -117,145 +116,6 @@ const S: u32 = FORMATS.xy.frac;
 // from it.
 const _: () = assert!(DZ >= DC && DZ >= Z_ACC && DC >= C_ACC && ATTR <= MUL_P && G <= MUL_P);
 const _: () = assert!(MUL_B > XY + 2 && MUL_B > COLOR && EDGE_Q + 2 <= MUL_B);
-
-/// When each step of setup happens, in cycles after the cycle that takes the triangle.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Schedule {
-    pub multipliers: usize,
-    pub divider_latency: usize,
-    /// Per product: its cycle and its multiplier.
-    pub slots: Vec<(usize, usize)>,
-    /// The seven divisions' issue cycles, in the model's order.
-    pub issue: [usize; 7],
-    /// The hand-over cycle; the result is valid from the next one.
-    pub handover: usize,
-    pub latency: usize,
-    /// II: setup takes the next triangle in the cycle this one reaches `interval`.
-    pub interval: usize,
-    /// Copies of a triangle's registers, ceil(latency / II): copy 0 is loaded when setup
-    /// takes the triangle, copy v + 1 from copy v in cycle (v + 1) II; cycle c reads copy
-    /// (c - 1) / II ([`Schedule::view`]), as the next triangle is in copy v by then.
-    pub copies: usize,
-    /// The cycle twice the area is normalised into a register (1/area goes in the next).
-    pub normalise: usize,
-    /// One multiplier for twice the area and the numerators, the others for the rest
-    /// (`model::cycles::SetupTiming::split`).
-    pub split: bool,
-}
-
-/// The products of each phase, in order: area, numerators, eq. (2), gradients, starts.
-/// Product i of the kernel: area 0, 1; numerators 2 + 2e (dy * x fraction) and 3 + 2e
-/// (dx * t) for edge e; eq. (2) 8 + d; gradients 12 + 4a + j for attribute a; starts and
-/// increments 28 + 12e + 3a + j.
-const PHASES: [usize; 5] = [2, 6, 4, 16, 36];
-
-/// Most multipliers setup can use (`model::cycles::SETUP_MULTIPLIERS_MAX`): with more, the
-/// last edge's products would wait for its divisions, which go one per cycle.
-pub const MULTIPLIERS_MAX: usize = 7;
-
-/// Cycles from a division's issue into the divider: its operands are registered, so that
-/// no path runs from the geometry into the divider's first stage.
-pub const DIVIDER_OPERANDS: usize = 1;
-
-/// Most copies of a triangle's registers (`model::cycles::SETUP_COPIES_MAX`): II is at
-/// least a quarter of the latency.
-pub const COPIES_MAX: usize = 4;
-
-impl Schedule {
-    /// The schedule for `k` multipliers and an `l`-stage divider: the sequential or the
-    /// split one (`model::cycles::setup_timing`), whichever has the lower II, then latency.
-    pub fn new(k: usize, l: usize) -> Result<Schedule, String> {
-        if !(1..=MULTIPLIERS_MAX).contains(&k) {
-            return Err(format!("triangle_setup: K = {k} multipliers is not supported: 1 to {MULTIPLIERS_MAX}"));
-        }
-        if !(1..=DIV_QM).contains(&l) {
-            return Err(format!("triangle_setup: L = {l} divider stages is not supported: 1 to {DIV_QM}"));
-        }
-        let sequential = Schedule::build(k, l, false);
-        if k == 1 {
-            return Ok(sequential);
-        }
-        let split = Schedule::build(k, l, true);
-        Ok(if (split.interval, split.latency) < (sequential.interval, sequential.latency) { split } else { sequential })
-    }
-
-    /// Area and numerators on the first multiplier (`split`) or on all; the rest on the
-    /// others (`split`) or on all, each phase after the one before.
-    fn build(k: usize, l: usize, split: bool) -> Schedule {
-        let early = if split { 0..1 } else { 0..k };
-        let late = if split { 1..k } else { 0..k };
-        let mut slots = Vec::with_capacity(PRODUCTS);
-        // Places `n` products from cycle `start` on `lanes`, as many per cycle as there are
-        // lanes; returns the next free cycle.
-        let place = |slots: &mut Vec<(usize, usize)>, start: usize, n: usize, lanes: &std::ops::Range<usize>| {
-            let w = lanes.len();
-            slots.extend((0..n).map(|i| (start + i / w, lanes.start + i % w)));
-            start + n.div_ceil(w)
-        };
-        // Area from cycle 1; normalise in the next free cycle and issue 1/area in the one
-        // after; the numerators from the normalise cycle on.
-        let norm = place(&mut slots, 1, PHASES[0], &early);
-        let numerators_end = place(&mut slots, norm, PHASES[1], &early);
-        // Each edge division as soon as it may go: the start once its numerator is summed.
-        let mut issue = [norm + 1; 7];
-        for j in 1..7 {
-            let ready = if j % 2 == 1 { slots[3 + (j - 1)].0.max(slots[2 + (j - 1)].0) + 1 } else { 0 };
-            issue[j] = (issue[j - 1] + 1).max(ready);
-        }
-        // eq. (2) once 1/area is back and the multipliers are free.
-        let result = |j: usize| issue[j] + DIVIDER_OPERANDS + l;
-        let eq2 = result(0).max(if split { 1 } else { numerators_end });
-        let grad = place(&mut slots, eq2, PHASES[2], &late);
-        let start = place(&mut slots, grad, PHASES[3], &late);
-        let handover = place(&mut slots, start, PHASES[4], &late);
-        let latency = handover + 1;
-        // Edge e's 12 start products need both its quotients, registered.
-        for e in 0..3 {
-            let (first, back) = (slots[PRODUCTS - PHASES[4] + 12 * e].0, result(2 + 2 * e) + 1);
-            assert!(first >= back, "K = {k}, L = {l}: edge {e}'s products at {first}, its divisions back at {back}");
-        }
-        // II: each multiplier and the divider busy at most II cycles of a triangle; no
-        // register outside the copies written by the next triangle (II cycles later) before
-        // this one has read it for the last time (read in cycle r, written first in w:
-        // II >= r - w).
-        let cycles = |range: std::ops::Range<usize>| slots[range].iter().map(|s| s.0);
-        let busy = |lane: usize| {
-            let c: Vec<usize> = slots.iter().filter(|s| s.1 == lane).map(|s| s.0).collect();
-            c.iter().max().map_or(0, |m| m - c.iter().min().unwrap() + 1)
-        };
-        let (eq2_first, eq2_last) = (cycles(8..12).min().unwrap(), cycles(8..12).max().unwrap());
-        let grad_first = cycles(12..28).min().unwrap();
-        let interval = (0..k)
-            .map(busy)
-            .chain([
-                issue[6] - issue[0] + 1,
-                eq2_last - result(0),                    // 1/area's mantissa and exponent
-                cycles(12..28).max().unwrap() - eq2_first, // eq. (2)'s products
-                latency - grad_first,                    // the gradients (ddx is a result)
-                latency - result(1),                     // the edge divisions' results
-                latency - cycles(28..64).min().unwrap(), // starts and increments
-            ])
-            .chain((0..3).map(|e| issue[1 + 2 * e] - slots[2 + 2 * e].0)) // the numerators
-            .chain([latency.div_ceil(COPIES_MAX)])
-            .max()
-            .unwrap();
-        // Area, numerators and issues read the vertices as taken; the hand-over and the
-        // result read the copy.
-        assert!(numerators_end - 1 <= interval && issue[6] <= interval, "K = {k}, L = {l}");
-        let copies = latency.div_ceil(interval);
-        Schedule { multipliers: k, divider_latency: l, slots, issue, handover, latency, interval, copies, normalise: norm, split }
-    }
-
-    /// The cycle a division's result is at the divider's output.
-    pub fn result(&self, division: usize) -> usize {
-        self.issue[division] + DIVIDER_OPERANDS + self.divider_latency
-    }
-
-    /// The copy of the triangle's registers cycle `c` (1 to the latency) reads.
-    pub fn view(&self, c: usize) -> usize {
-        (c - 1) / self.interval
-    }
-}
 
 /// The triangle setup unit; see the module documentation.
 #[derive(LogicBlock)]
@@ -267,36 +127,45 @@ pub struct TriangleSetup {
     pub out: TriangleSetupSource,
 
     // Sub-blocks.
-    mul: Vec<Mul<MUL_A, MUL_B, MUL_P>>,
+    mul: Vec<PipelinedMul<MUL_A, MUL_B, MUL_P>>,
     div: DividerRtl,
 
     // Control: per copy, the cycle of the triangle in it (copy v: v II + 1 to (v + 1) II, the
     // last to the latency); 0: none.
     t: [DFF<Bits<8>>; COPIES_MAX],
     take: Signal<Local, Bit>,
-    /// Setup advances: no result waits for the edge walk.
+    /// Setup advances: no result waits for the edge walk. Every register of setup is
+    /// written only while it is high (its enable), and nothing else waits for it.
     run: Signal<Local, Bit>,
-    /// Product i, the normalise, division j's issue and result, the hand-over are due this cycle.
-    act: [Signal<Local, Bit>; PRODUCTS],
+    /// The normalise, division j's issue and result, the hand-over are due this cycle and
+    /// setup runs.
     at_norm: Signal<Local, Bit>,
     at_iss: [Signal<Local, Bit>; 7],
     at_res: [Signal<Local, Bit>; 7],
     at_handover: Signal<Local, Bit>,
-    /// The same, and the result valid and copy 0 busy (no triangle can be taken), decoded a
-    /// cycle ahead from the counters' next values, so that no comparison of a counter lies
-    /// on a path into the multipliers or the divider: each of the above is its register and
-    /// `run`. (Busy, not free: every register is 0 after reset, when setup is empty.)
+    /// Due this cycle, decoded a cycle ahead from the counters' next values, so that no
+    /// comparison of a counter lies on a path into the multipliers or the divider: product
+    /// i's operands (`act_r`) and its addition into its destination (`add_r`), the above,
+    /// the result valid, and a triangle in setup. (Busy, not free: every register is 0
+    /// after reset, when setup is empty.)
     act_r: [DFF<Bit>; PRODUCTS],
+    add_r: [DFF<Bit>; PRODUCTS],
     norm_r: DFF<Bit>,
     iss_r: [DFF<Bit>; 7],
     res_r: [DFF<Bit>; 7],
     handover_r: DFF<Bit>,
     valid_r: DFF<Bit>,
     busy_r: DFF<Bit>,
+    /// Cycles of running since the last triangle was taken, modulo II, and whether that is
+    /// not 0 next cycle: setup takes a triangle on the II grid of the last one (the
+    /// schedule's lanes are reserved modulo II), or when it is empty.
+    phase: DFF<Bits<8>>,
+    off_grid_r: DFF<Bit>,
 
     // The triangle's registers, one copy per II cycles of its schedule (copy v at index
-    // v, or 3v + vertex, or 9v + 3 * vertex + channel): x, y, z, colours, crossings, the
-    // sign of the area (from copy 1; copy 0's is the area register's) and its exponent.
+    // v, or 3v + vertex or edge, or 9v + 3 * vertex + channel): x, y, z, colours,
+    // crossings, the sign of the area (from copy 1; copy 0's is the area register's), its
+    // exponent, and each edge's start x, r and step q, rho (from its divisions).
     vx: [DFF<Bits<XY>>; 3 * COPIES_MAX],
     vy: [DFF<Bits<XY>>; 3 * COPIES_MAX],
     vz: [DFF<Bits<Z>>; 3 * COPIES_MAX],
@@ -304,6 +173,10 @@ pub struct TriangleSetup {
     crosses: [DFF<Bits<OUTCODE>>; COPIES_MAX],
     sign: [DFF<Bit>; COPIES_MAX],
     exp: [DFF<Bits<6>>; COPIES_MAX],
+    x: [DFF<Bits<NB>>; 3 * COPIES_MAX],
+    r: [DFF<Bits<EDGE_D>>; 3 * COPIES_MAX],
+    q: [DFF<Bits<NB>>; 3 * COPIES_MAX],
+    rho: [DFF<Bits<EDGE_D>>; 3 * COPIES_MAX],
     /// e_maj is the left side (twice the area < 0), per copy.
     maj_left: [Signal<Local, Bit>; COPIES_MAX],
     /// The geometry of each copy, by name: rust-hdl writes `g[v].count[e]`, a path with
@@ -327,12 +200,11 @@ pub struct TriangleSetup {
     div_d: DFF<Bits<DIV_D>>,
 
     // Divider results.
-    /// 1/area's mantissa and the area's exponent, held from 1/area's return for eq. (2).
-    mant: DFF<Bits<MANT>>,
-    mant_now: Signal<Local, Bits<MANT>>,
+    /// 1/area's mantissa, shifted left by 15 - exp when exp <= 15, and the area's exponent,
+    /// registered from 1/area's return for eq. (2) (the exponent from the copy of that cycle).
+    mant_s: DFF<Bits<MUL_A>>,
     exp_e: DFF<Bits<6>>,
-    exp_now: Signal<Local, Bits<6>>,
-    mant_a: Signal<Local, Bits<MUL_A>>,
+    exp_r: Signal<Local, Bits<6>>,
     q_n: Signal<Local, Bits<NB>>,
     /// The quotient's sign bit and its extension into `q_n` (none when the quotient is
     /// as wide as `q_n`).
@@ -342,12 +214,8 @@ pub struct TriangleSetup {
     /// The start results' operands from the geometry of their cycle: x - 1/2's pixel, 2^s dy.
     xi: [Signal<Local, Bits<NB>>; 3],
     ed: [Signal<Local, Bits<EDGE_D>>; 3],
-    x: [DFF<Bits<NB>>; 3],
-    r: [DFF<Bits<EDGE_D>>; 3],
-    q: [DFF<Bits<NB>>; 3],
-    rho: [DFF<Bits<EDGE_D>>; 3],
 
-    // Products, as they leave their multiplier (0 when not due).
+    // Products, as they leave their multiplier (0 when not to be added this cycle).
     pa: [Signal<Local, Bits<AREA>>; 2],
     pn: [Signal<Local, Bits<MUL_P>>; 6],
     pe: [Signal<Local, Bits<G>>; 4],
@@ -363,6 +231,8 @@ pub struct TriangleSetup {
     op_e: [Signal<Local, Bits<NB>>; 4],
     op_g: [Signal<Local, Bits<NB>>; 16],
     op_s: [Signal<Local, Bits<NB>>; 24],
+    /// The increments' B operand, q, from the copy of their cycle (4e + a).
+    op_q: [Signal<Local, Bits<NB>>; 12],
     /// v0's attributes, from the copy the hand-over reads.
     attr0: [Signal<Local, Bits<ATTR>>; 4],
     /// eq. (2)'s products shifted right by exp - 15 (floor), for exp > 15; for exp <= 15
@@ -387,12 +257,18 @@ pub struct TriangleSetup {
     plane: [DFF<Bits<ATTR>>; 12],
     inc0: [DFF<Bits<ATTR>>; 12],
     inc1: [DFF<Bits<ATTR>>; 12],
+    /// ddx, registered with each increment for the result.
+    ddx_o: [DFF<Bits<ATTR>>; 4],
 
     // The schedule and the numbers a kernel cannot name.
     lane: [Constant<Bits<8>>; PRODUCTS],
-    /// The copy product i, division j's result, the hand-over read (`Schedule::view`).
+    /// The copy product i's operands, division j's result, the hand-over read
+    /// (`Schedule::view`); the copy division j's result is written into (that of the cycle
+    /// after, as copies move on at the end of a cycle).
     view: [Constant<Bits<8>>; PRODUCTS],
+    view_add: [Constant<Bits<8>>; PRODUCTS],
     view_res: [Constant<Bits<8>>; 7],
+    view_res_w: [Constant<Bits<8>>; 7],
     view_handover: Constant<Bits<8>>,
     /// Per copy, the last cycle of its part of the schedule (255 for copies not used); the
     /// copy the result is read from.
@@ -400,10 +276,13 @@ pub struct TriangleSetup {
     last_copy: Constant<Bits<8>>,
     normalise: Constant<Bits<8>>,
     cyc: [Constant<Bits<8>>; PRODUCTS],
+    cyc_add: [Constant<Bits<8>>; PRODUCTS],
     iss: [Constant<Bits<8>>; 7],
     res: [Constant<Bits<8>>; 7],
     handover: Constant<Bits<8>>,
     last: Constant<Bits<8>>,
+    /// II - 1.
+    ii_m1: Constant<Bits<8>>,
     /// 2^56: 1/area's dividend (`recip_operands`); the exponent of 1/area's top bit (32).
     recip_n: Constant<Bits<DIV_N>>,
     recip_top: Constant<Bits<6>>,
@@ -435,7 +314,12 @@ pub(crate) fn ones_from<const B: usize>(from: usize, to: usize) -> Constant<Bits
 impl TriangleSetup {
     /// Setup with `k` multipliers and an `l`-stage divider (see [`Schedule::new`]).
     pub fn new(k: usize, l: usize) -> Result<TriangleSetup, String> {
+        if !(1..=DIV_QM).contains(&l) {
+            return Err(format!("triangle_setup: L = {l} divider stages is not supported: 1 to {DIV_QM}"));
+        }
         let s = Schedule::new(k, l)?;
+        // The counters and the phase are 8 bits wide.
+        assert!(s.latency < 255, "triangle_setup: K = {k}, L = {l}: latency {} does not fit 8 bits", s.latency);
         let f = FORMATS;
         let (gz, gc) =
             ((f.ooa_d.frac + f.z.frac - f.dz.frac) as usize, (f.ooa_d.frac + f.color.frac - f.dc.frac) as usize);
@@ -449,18 +333,20 @@ impl TriangleSetup {
             t: defaults(),
             take: Default::default(),
             run: Default::default(),
-            act: defaults(),
             at_norm: Default::default(),
             at_iss: defaults(),
             at_res: defaults(),
             at_handover: Default::default(),
             act_r: defaults(),
+            add_r: defaults(),
             norm_r: Default::default(),
             iss_r: defaults(),
             res_r: defaults(),
             handover_r: Default::default(),
             valid_r: Default::default(),
             busy_r: Default::default(),
+            phase: Default::default(),
+            off_grid_r: Default::default(),
             vx: defaults(),
             vy: defaults(),
             vz: defaults(),
@@ -468,6 +354,10 @@ impl TriangleSetup {
             crosses: defaults(),
             sign: defaults(),
             exp: defaults(),
+            x: defaults(),
+            r: defaults(),
+            q: defaults(),
+            rho: defaults(),
             maj_left: defaults(),
             g0: Default::default(),
             g1: Default::default(),
@@ -481,21 +371,15 @@ impl TriangleSetup {
             div_v: Default::default(),
             div_n: Default::default(),
             div_d: Default::default(),
-            mant: Default::default(),
-            mant_now: Default::default(),
+            mant_s: Default::default(),
             exp_e: Default::default(),
-            exp_now: Default::default(),
-            mant_a: Default::default(),
+            exp_r: Default::default(),
             q_n: Default::default(),
             q_msb: Constant::new((QL - 1).to_bits()),
             q_ext: ones_from(QL, NB),
             r_pos: Default::default(),
             xi: defaults(),
             ed: defaults(),
-            x: defaults(),
-            r: defaults(),
-            q: defaults(),
-            rho: defaults(),
             pa: defaults(),
             pn: defaults(),
             pe: defaults(),
@@ -506,6 +390,7 @@ impl TriangleSetup {
             op_e: defaults(),
             op_g: defaults(),
             op_s: defaults(),
+            op_q: defaults(),
             attr0: defaults(),
             shr: defaults(),
             lsh: Default::default(),
@@ -524,18 +409,23 @@ impl TriangleSetup {
             plane: defaults(),
             inc0: defaults(),
             inc1: defaults(),
+            ddx_o: defaults(),
             lane: consts(|i| s.slots[i].1),
             view: consts(|i| s.view(s.slots[i].0)),
+            view_add: consts(|i| s.view(s.add(i))),
             view_res: consts(|j| s.view(s.result(j))),
+            view_res_w: consts(|j| s.view(s.result(j) + 1)),
             view_handover: Constant::new(s.view(s.handover).to_bits()),
             ends: consts(|v| if v < s.copies { ((v + 1) * s.interval).min(s.latency) } else { 255 }),
             last_copy: Constant::new((s.copies - 1).to_bits()),
             normalise: Constant::new(s.normalise.to_bits()),
             cyc: consts(|i| s.slots[i].0),
+            cyc_add: consts(|i| s.add(i)),
             iss: consts(|j| s.issue[j]),
             res: consts(|j| s.result(j)),
             handover: Constant::new(s.handover.to_bits()),
             last: Constant::new(s.latency.to_bits()),
+            ii_m1: Constant::new((s.interval - 1).to_bits()),
             recip_n: Constant::new((1u128 << (DERIVED.area_bits - 2 + f.ooa.frac)).to_bits()),
             recip_top: Constant::new(((DERIVED.area_bits - 2) as usize).to_bits()),
             eq_shift: Constant::new(((f.ooa_d.frac + S - f.ooa.frac) as usize).to_bits()),
@@ -555,7 +445,7 @@ impl Logic for TriangleSetup {
     #[hdl_gen]
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written.
-        dff_setup!(self, clock, area, norm, div_v, div_n, div_d, mant, exp_e, norm_r, handover_r, valid_r, busy_r);
+        dff_setup!(self, clock, area, norm, div_v, div_n, div_d, mant_s, exp_e, norm_r, handover_r, valid_r, busy_r, phase, off_grid_r);
         clock!(self, clock, div);
         for v in 0..COPIES_MAX {
             self.t[v].clock.next = self.clock.val();
@@ -567,6 +457,14 @@ impl Logic for TriangleSetup {
             self.exp[v].clock.next = self.clock.val();
             self.exp[v].d.next = self.exp[v].q.val();
             for i in 0..3 {
+                self.x[3 * v + i].clock.next = self.clock.val();
+                self.x[3 * v + i].d.next = self.x[3 * v + i].q.val();
+                self.r[3 * v + i].clock.next = self.clock.val();
+                self.r[3 * v + i].d.next = self.r[3 * v + i].q.val();
+                self.q[3 * v + i].clock.next = self.clock.val();
+                self.q[3 * v + i].d.next = self.q[3 * v + i].q.val();
+                self.rho[3 * v + i].clock.next = self.clock.val();
+                self.rho[3 * v + i].d.next = self.rho[3 * v + i].q.val();
                 self.vx[3 * v + i].clock.next = self.clock.val();
                 self.vx[3 * v + i].d.next = self.vx[3 * v + i].q.val();
                 self.vy[3 * v + i].clock.next = self.clock.val();
@@ -580,24 +478,25 @@ impl Logic for TriangleSetup {
             }
         }
         for i in 0..3 {
-            self.x[i].clock.next = self.clock.val();
-            self.x[i].d.next = self.x[i].q.val();
-            self.r[i].clock.next = self.clock.val();
-            self.r[i].d.next = self.r[i].q.val();
-            self.q[i].clock.next = self.clock.val();
-            self.q[i].d.next = self.q[i].q.val();
-            self.rho[i].clock.next = self.clock.val();
-            self.rho[i].d.next = self.rho[i].q.val();
             self.num[i].clock.next = self.clock.val();
+            self.num[i].d.next = self.num[i].q.val();
         }
         for a in 0..4 {
             self.p[a].clock.next = self.clock.val();
             self.p[a].d.next = self.p[a].q.val();
             self.gx[a].clock.next = self.clock.val();
+            self.gx[a].d.next = self.gx[a].q.val();
             self.gy[a].clock.next = self.clock.val();
+            self.gy[a].d.next = self.gy[a].q.val();
+            self.ddx_o[a].clock.next = self.clock.val();
+            self.ddx_o[a].d.next = self.ddx_o[a].q.val();
+        }
+        for m in 0..self._k {
+            self.mul[m].clock.next = self.clock.val();
         }
         for i in 0..12 {
             self.plane[i].clock.next = self.clock.val();
+            self.plane[i].d.next = self.plane[i].q.val();
             self.inc0[i].clock.next = self.clock.val();
             self.inc0[i].d.next = self.inc0[i].q.val();
             self.inc1[i].clock.next = self.clock.val();
@@ -611,12 +510,20 @@ impl Logic for TriangleSetup {
 
         // ---- Control. Everything waits while a result is not taken. Otherwise each copy's
         // triangle moves on, into the next copy at the end of its part; setup takes a triangle
-        // into copy 0 when none is there or the one there reaches cycle II.
+        // into copy 0 on the II grid of the last one taken (the copy there reaches cycle II),
+        // or when setup is empty.
         self.run.next = !(self.valid_r.q.val() & !self.out.ready.val());
         self.out.valid.next = self.valid_r.q.val();
-        self.inp.ready.next = self.run.val() & !self.busy_r.q.val();
+        self.inp.ready.next = self.run.val() & !(self.busy_r.q.val() & self.off_grid_r.q.val());
         self.take.next = self.inp.valid.val() & self.inp.ready.val();
         if self.run.val() {
+            self.phase.d.next = self.phase.q.val() + 1;
+            if self.phase.q.val() == self.ii_m1.val() {
+                self.phase.d.next = 0.into();
+            }
+            if self.take.val() {
+                self.phase.d.next = 1.into();
+            }
             for v in 0..self._copies {
                 if self.t[v].q.val() != 0 {
                     self.t[v].d.next = self.t[v].q.val() + 1;
@@ -632,6 +539,10 @@ impl Logic for TriangleSetup {
                     self.sign[v + 1].d.next = self.maj_left[v].val();
                     self.exp[v + 1].d.next = self.exp[v].q.val();
                     for i in 0..3 {
+                        self.x[3 * v + 3 + i].d.next = self.x[3 * v + i].q.val();
+                        self.r[3 * v + 3 + i].d.next = self.r[3 * v + i].q.val();
+                        self.q[3 * v + 3 + i].d.next = self.q[3 * v + i].q.val();
+                        self.rho[3 * v + 3 + i].d.next = self.rho[3 * v + i].q.val();
                         self.vx[3 * v + 3 + i].d.next = self.vx[3 * v + i].q.val();
                         self.vy[3 * v + 3 + i].d.next = self.vy[3 * v + i].q.val();
                         self.vz[3 * v + 3 + i].d.next = self.vz[3 * v + i].q.val();
@@ -669,12 +580,16 @@ impl Logic for TriangleSetup {
         for i in 0..PRODUCTS {
             self.act_r[i].clock.next = self.clock.val();
             self.act_r[i].d.next = false;
+            self.add_r[i].clock.next = self.clock.val();
+            self.add_r[i].d.next = false;
             for v in 0..self._copies {
                 if (self.view[i].val().index() == v) & (self.t[v].d.val() == self.cyc[i].val()) {
                     self.act_r[i].d.next = true;
                 }
+                if (self.view_add[i].val().index() == v) & (self.t[v].d.val() == self.cyc_add[i].val()) {
+                    self.add_r[i].d.next = true;
+                }
             }
-            self.act[i].next = self.act_r[i].q.val() & self.run.val();
         }
         self.norm_r.d.next = self.t[0].d.val() == self.normalise.val();
         self.at_norm.next = self.norm_r.q.val() & self.run.val();
@@ -701,7 +616,13 @@ impl Logic for TriangleSetup {
         for v in (self._copies - 1)..self._copies {
             self.valid_r.d.next = self.t[v].d.val() == self.last.val();
         }
-        self.busy_r.d.next = (self.t[0].d.val() != 0) & (self.t[0].d.val() != self.ends[0].val());
+        self.busy_r.d.next = false;
+        for v in 0..self._copies {
+            if self.t[v].d.val() != 0 {
+                self.busy_r.d.next = true;
+            }
+        }
+        self.off_grid_r.d.next = self.phase.d.val() != 0;
 
         // ---- Geometry of each copy.
         for i in 0..3 {
@@ -719,7 +640,7 @@ impl Logic for TriangleSetup {
             self.g1.vx[i].next = self.vx[3 + i].q.val();
             self.g1.vy[i].next = self.vy[3 + i].q.val();
             self.g1.vz[i].next = self.vz[3 + i].q.val();
-            self.g1.start_x[i].next = self.x[i].q.val();
+            self.g1.start_x[i].next = self.x[3 + i].q.val();
         }
         for i in 0..9 {
             self.g1.vc[i].next = self.vc[9 + i].q.val();
@@ -730,7 +651,7 @@ impl Logic for TriangleSetup {
             self.g2.vx[i].next = self.vx[6 + i].q.val();
             self.g2.vy[i].next = self.vy[6 + i].q.val();
             self.g2.vz[i].next = self.vz[6 + i].q.val();
-            self.g2.start_x[i].next = self.x[i].q.val();
+            self.g2.start_x[i].next = self.x[6 + i].q.val();
         }
         for i in 0..9 {
             self.g2.vc[i].next = self.vc[18 + i].q.val();
@@ -741,7 +662,7 @@ impl Logic for TriangleSetup {
             self.g3.vx[i].next = self.vx[9 + i].q.val();
             self.g3.vy[i].next = self.vy[9 + i].q.val();
             self.g3.vz[i].next = self.vz[9 + i].q.val();
-            self.g3.start_x[i].next = self.x[i].q.val();
+            self.g3.start_x[i].next = self.x[9 + i].q.val();
         }
         for i in 0..9 {
             self.g3.vc[i].next = self.vc[27 + i].q.val();
@@ -811,26 +732,23 @@ impl Logic for TriangleSetup {
             self.q_n.next = bit_cast::<NB, QL>(self.div.out_q.val().get_bits::<QL>(0)) | self.q_ext.val();
         }
         self.r_pos.next = self.div.out_r.val() != 0;
-        // 1/area and the area's exponent, as they come back and then held for eq. (2).
-        self.mant_now.next = self.mant.q.val();
-        self.exp_now.next = self.exp_e.q.val();
-        if self.at_res[0].val() {
-            self.mant_now.next = self.div.out_q.val().get_bits::<MANT>(0);
-            self.mant.d.next = self.div.out_q.val().get_bits::<MANT>(0);
-            for v in 0..self._copies {
-                if self.view_res[0].val().index() == v {
-                    self.exp_now.next = self.exp[v].q.val();
-                    self.exp_e.d.next = self.exp[v].q.val();
-                }
+        // 1/area as it comes back, with eq. (2)'s shift, 15 - exp, on it when that is a
+        // left shift, and the area's exponent, into registers for eq. (2).
+        self.exp_r.next = self.exp[0].q.val();
+        for v in 1..self._copies {
+            if self.view_res[0].val().index() == v {
+                self.exp_r.next = self.exp[v].q.val();
             }
         }
-        // eq. (2)'s shift, 15 - exp, goes onto the mantissa when it is a left shift.
-        self.lsh.next = self.eq_shift.val() - self.exp_now.val();
-        self.rsh.next = self.exp_now.val() - self.eq_shift.val();
-        self.mant_a.next = bit_cast::<MUL_A, MANT>(self.mant_now.val());
-        if self.exp_now.val() <= self.eq_shift.val() {
-            self.mant_a.next = bit_cast::<MUL_A, MANT>(self.mant_now.val()) << self.lsh.val();
+        self.lsh.next = self.eq_shift.val() - self.exp_r.val();
+        if self.at_res[0].val() {
+            self.exp_e.d.next = self.exp_r.val();
+            self.mant_s.d.next = bit_cast::<MUL_A, MANT>(self.div.out_q.val().get_bits::<MANT>(0));
+            if self.exp_r.val() <= self.eq_shift.val() {
+                self.mant_s.d.next = bit_cast::<MUL_A, MANT>(self.div.out_q.val().get_bits::<MANT>(0)) << self.lsh.val();
+            }
         }
+        self.rsh.next = self.exp_e.q.val() - self.eq_shift.val();
         for e in 0..3 {
             // The start: x = first pixel at or right of the edge, r = x*D - num in [0, D).
             self.xi[e].next = self.g0.xi[e].val();
@@ -847,17 +765,20 @@ impl Logic for TriangleSetup {
                 self.xi[e].next = self.g3.xi[e].val();
                 self.ed[e].next = self.g3.ed16[e].val().get_bits::<EDGE_D>(0);
             }
-            if self.at_res[1 + 2 * e].val() {
-                self.x[e].d.next = self.xi[e].val() + self.q_n.val() + self.r_pos.val();
-                self.r[e].d.next = 0.into();
-                if self.r_pos.val() {
-                    self.r[e].d.next = self.ed[e].val() - self.div.out_r.val().get_bits::<EDGE_D>(0);
+            // Into the copy the triangle is in next cycle.
+            for v in 0..self._copies {
+                if self.at_res[1 + 2 * e].val() & (self.view_res_w[1 + 2 * e].val().index() == v) {
+                    self.x[3 * v + e].d.next = self.xi[e].val() + self.q_n.val() + self.r_pos.val();
+                    self.r[3 * v + e].d.next = 0.into();
+                    if self.r_pos.val() {
+                        self.r[3 * v + e].d.next = self.ed[e].val() - self.div.out_r.val().get_bits::<EDGE_D>(0);
+                    }
                 }
-            }
-            // The step: q + rho/D pixels per scanline.
-            if self.at_res[2 + 2 * e].val() {
-                self.q[e].d.next = self.q_n.val();
-                self.rho[e].d.next = self.div.out_r.val().get_bits::<EDGE_D>(0) << self.frac.val();
+                // The step: q + rho/D pixels per scanline.
+                if self.at_res[2 + 2 * e].val() & (self.view_res_w[2 + 2 * e].val().index() == v) {
+                    self.q[3 * v + e].d.next = self.q_n.val();
+                    self.rho[3 * v + e].d.next = self.div.out_r.val().get_bits::<EDGE_D>(0) << self.frac.val();
+                }
             }
         }
 
@@ -1022,97 +943,120 @@ impl Logic for TriangleSetup {
                 self.attr0[a].next = self.g3.attr0[a].val();
             }
         }
+        // The increments' q, from the copy of their cycle.
+        for e in 0..3 {
+            for a in 0..4 {
+                self.op_q[4 * e + a].next = self.q[e].q.val();
+                for v in 1..self._copies {
+                    if self.view[30 + 12 * e + 3 * a].val().index() == v {
+                        self.op_q[4 * e + a].next = self.q[3 * v + e].q.val();
+                    }
+                }
+            }
+        }
+        // Each product's operands into its multiplier in its cycle (`act_r`), its product
+        // out M cycles later (`add_r`); the multipliers' registers move while setup runs.
         for m in 0..self._k {
+            self.mul[m].en.next = self.run.val();
             // Area: e_maj.dx * e_bot.dy - e_bot.dx * e_maj.dy.
-            if (self.lane[0].val().index() == m) & self.act[0].val() {
+            if (self.lane[0].val().index() == m) & self.act_r[0].q.val() {
                 self.mul[m].a.next = self.g0.kdx[0].val().get_bits::<MUL_A>(0);
                 self.mul[m].b.next = self.g0.kdy[1].val().get_bits::<MUL_B>(0);
-                self.pa[0].next = self.mul[m].p.val().get_bits::<AREA>(0);
             }
-            if (self.lane[1].val().index() == m) & self.act[1].val() {
+            if (self.lane[1].val().index() == m) & self.act_r[1].q.val() {
                 self.mul[m].a.next = self.g0.kdx[1].val().get_bits::<MUL_A>(0);
                 self.mul[m].b.next = self.g0.kdy[0].val().get_bits::<MUL_B>(0);
-                self.pa[1].next = self.mul[m].p.val().get_bits::<AREA>(0);
+            }
+            for i in 0..2 {
+                if (self.lane[i].val().index() == m) & self.add_r[i].q.val() {
+                    self.pa[i].next = self.mul[m].p.val().get_bits::<AREA>(0);
+                }
             }
             for e in 0..3 {
                 // Start numerator: x fraction * dy + dx * t.
-                if (self.lane[2 + 2 * e].val().index() == m) & self.act[2 + 2 * e].val() {
+                if (self.lane[2 + 2 * e].val().index() == m) & self.act_r[2 + 2 * e].q.val() {
                     self.mul[m].a.next = self.g0.edy[e].val();
                     self.mul[m].b.next = self.g0.xf[e].val();
-                    self.pn[2 * e].next = self.mul[m].p.val();
                 }
-                if (self.lane[3 + 2 * e].val().index() == m) & self.act[3 + 2 * e].val() {
+                if (self.lane[3 + 2 * e].val().index() == m) & self.act_r[3 + 2 * e].q.val() {
                     self.mul[m].a.next = self.g0.edx[e].val().get_bits::<MUL_A>(0);
                     self.mul[m].b.next = self.g0.toff[e].val();
-                    self.pn[2 * e + 1].next = self.mul[m].p.val();
+                }
+            }
+            for i in 0..6 {
+                if (self.lane[2 + i].val().index() == m) & self.add_r[2 + i].q.val() {
+                    self.pn[i].next = self.mul[m].p.val();
                 }
             }
             for d in 0..4 {
                 // eq. (2): OneOverArea's mantissa times +-delta.
-                if (self.lane[8 + d].val().index() == m) & self.act[8 + d].val() {
-                    self.mul[m].a.next = self.mant_a.val();
+                if (self.lane[8 + d].val().index() == m) & self.act_r[8 + d].q.val() {
+                    self.mul[m].a.next = self.mant_s.q.val();
                     self.mul[m].b.next = self.op_e[d].val();
+                }
+                if (self.lane[8 + d].val().index() == m) & self.add_r[8 + d].q.val() {
                     self.pe[d].next = self.mul[m].p.val().get_bits::<G>(0);
                 }
             }
             for a in 0..4 {
                 // dx = p_bot_dy * d_maj - p_maj_dy * d_bot; dy = p_maj_dx * d_bot - p_bot_dx * d_maj.
-                if (self.lane[12 + 4 * a].val().index() == m) & self.act[12 + 4 * a].val() {
+                if (self.lane[12 + 4 * a].val().index() == m) & self.act_r[12 + 4 * a].q.val() {
                     self.mul[m].a.next = self.p[3].q.val();
                     self.mul[m].b.next = self.op_g[4 * a].val();
-                    self.pg[4 * a].next = self.mul[m].p.val().get_bits::<G>(0);
                 }
-                if (self.lane[13 + 4 * a].val().index() == m) & self.act[13 + 4 * a].val() {
+                if (self.lane[13 + 4 * a].val().index() == m) & self.act_r[13 + 4 * a].q.val() {
                     self.mul[m].a.next = self.p[2].q.val();
                     self.mul[m].b.next = self.op_g[4 * a + 1].val();
-                    self.pg[4 * a + 1].next = self.mul[m].p.val().get_bits::<G>(0);
                 }
-                if (self.lane[14 + 4 * a].val().index() == m) & self.act[14 + 4 * a].val() {
+                if (self.lane[14 + 4 * a].val().index() == m) & self.act_r[14 + 4 * a].q.val() {
                     self.mul[m].a.next = self.p[0].q.val();
                     self.mul[m].b.next = self.op_g[4 * a + 2].val();
-                    self.pg[4 * a + 2].next = self.mul[m].p.val().get_bits::<G>(0);
                 }
-                if (self.lane[15 + 4 * a].val().index() == m) & self.act[15 + 4 * a].val() {
+                if (self.lane[15 + 4 * a].val().index() == m) & self.act_r[15 + 4 * a].q.val() {
                     self.mul[m].a.next = self.p[1].q.val();
                     self.mul[m].b.next = self.op_g[4 * a + 3].val();
-                    self.pg[4 * a + 3].next = self.mul[m].p.val().get_bits::<G>(0);
+                }
+            }
+            for i in 0..16 {
+                if (self.lane[12 + i].val().index() == m) & self.add_r[12 + i].q.val() {
+                    self.pg[i].next = self.mul[m].p.val().get_bits::<G>(0);
                 }
             }
             for e in 0..3 {
                 for a in 0..4 {
                     // at: ddx * off_x + ddy * off_y; inc0 = ddy + q * ddx.
-                    if (self.lane[28 + 12 * e + 3 * a].val().index() == m) & self.act[28 + 12 * e + 3 * a].val() {
+                    if (self.lane[28 + 12 * e + 3 * a].val().index() == m) & self.act_r[28 + 12 * e + 3 * a].q.val() {
                         self.mul[m].a.next = self.ddx[a].val();
                         self.mul[m].b.next = self.op_s[8 * e + 2 * a].val();
-                        self.ps[12 * e + 3 * a].next = self.mul[m].p.val().get_bits::<ATTR>(0);
                     }
-                    if (self.lane[29 + 12 * e + 3 * a].val().index() == m) & self.act[29 + 12 * e + 3 * a].val() {
+                    if (self.lane[29 + 12 * e + 3 * a].val().index() == m) & self.act_r[29 + 12 * e + 3 * a].q.val() {
                         self.mul[m].a.next = self.ddy[a].val();
                         self.mul[m].b.next = self.op_s[8 * e + 2 * a + 1].val();
-                        self.ps[12 * e + 3 * a + 1].next = self.mul[m].p.val().get_bits::<ATTR>(0);
                     }
-                    if (self.lane[30 + 12 * e + 3 * a].val().index() == m) & self.act[30 + 12 * e + 3 * a].val() {
+                    if (self.lane[30 + 12 * e + 3 * a].val().index() == m) & self.act_r[30 + 12 * e + 3 * a].q.val() {
                         self.mul[m].a.next = self.ddx[a].val();
-                        self.mul[m].b.next = self.q[e].q.val();
-                        self.ps[12 * e + 3 * a + 2].next = self.mul[m].p.val().get_bits::<ATTR>(0);
+                        self.mul[m].b.next = self.op_q[4 * e + a].val();
                     }
+                }
+            }
+            for i in 0..36 {
+                if (self.lane[28 + i].val().index() == m) & self.add_r[28 + i].q.val() {
+                    self.ps[i].next = self.mul[m].p.val().get_bits::<ATTR>(0);
                 }
             }
         }
 
-        // ---- Accumulate each product into its register (the first one of a register
-        // starts it afresh). Products not due are 0.
+        // ---- Add each product into its register while setup runs (the first one of a
+        // register starts it afresh). Products not due are 0.
         self.area_base.next = self.area.q.val();
-        if self.act[0].val() {
+        if self.add_r[0].q.val() {
             self.area_base.next = 0.into();
         }
-        self.area.d.next = self.area_base.val() + self.pa[0].val() - self.pa[1].val();
         for e in 0..3 {
             self.num_base[e].next = self.num[e].q.val();
-            if self.act[2 + 2 * e].val() {
+            if self.add_r[2 + 2 * e].q.val() {
                 self.num_base[e].next = 0.into();
             }
-            self.num[e].d.next = self.num_base[e].val() + self.pn[2 * e].val() + self.pn[2 * e + 1].val();
         }
         // eq. (2): sign * delta * mant * 2^(15 - exp), floor, into `ooa_d`.
         for d in 0..4 {
@@ -1120,43 +1064,65 @@ impl Logic for TriangleSetup {
             if self.pe[d].val().get_bit(self.p_msb.val().index()) {
                 self.shr[d].next = (self.pe[d].val() >> self.rsh.val()) | !(self.ones.val() >> self.rsh.val());
             }
-            if self.act[8 + d].val() {
-                self.p[d].d.next = self.shr[d].val();
-                if self.exp_now.val() <= self.eq_shift.val() {
-                    self.p[d].d.next = self.pe[d].val();
-                }
-            }
         }
         for a in 0..4 {
             self.gx_base[a].next = self.gx[a].q.val();
-            if self.act[12 + 4 * a].val() {
+            if self.add_r[12 + 4 * a].q.val() {
                 self.gx_base[a].next = 0.into();
             }
-            self.gx[a].d.next = self.gx_base[a].val() + self.pg[4 * a].val() - self.pg[4 * a + 1].val();
             self.gy_base[a].next = self.gy[a].q.val();
-            if self.act[14 + 4 * a].val() {
+            if self.add_r[14 + 4 * a].q.val() {
                 self.gy_base[a].next = 0.into();
             }
-            self.gy[a].d.next = self.gy_base[a].val() + self.pg[4 * a + 2].val() - self.pg[4 * a + 3].val();
         }
         for e in 0..3 {
             for a in 0..4 {
                 self.plane_base[4 * e + a].next = self.plane[4 * e + a].q.val();
-                if self.act[28 + 12 * e + 3 * a].val() {
+                if self.add_r[28 + 12 * e + 3 * a].q.val() {
                     self.plane_base[4 * e + a].next = 0.into();
                 }
-                self.plane[4 * e + a].d.next = self.plane_base[4 * e + a].val()
-                    + self.ps[12 * e + 3 * a].val()
-                    + self.ps[12 * e + 3 * a + 1].val();
-                if self.act[30 + 12 * e + 3 * a].val() {
-                    self.inc0[4 * e + a].d.next =
-                        self.ddy[a].val().get_bits::<ATTR>(0) + self.ps[12 * e + 3 * a + 2].val();
+            }
+        }
+        if self.run.val() {
+            self.area.d.next = self.area_base.val() + self.pa[0].val() - self.pa[1].val();
+            for e in 0..3 {
+                self.num[e].d.next = self.num_base[e].val() + self.pn[2 * e].val() + self.pn[2 * e + 1].val();
+            }
+            for d in 0..4 {
+                if self.add_r[8 + d].q.val() {
+                    self.p[d].d.next = self.shr[d].val();
+                    if self.exp_e.q.val() <= self.eq_shift.val() {
+                        self.p[d].d.next = self.pe[d].val();
+                    }
                 }
-                // Hand-over: at = v0's attribute + floor(plane / 2^s); inc1 = inc0 + ddx.
+            }
+            for a in 0..4 {
+                self.gx[a].d.next = self.gx_base[a].val() + self.pg[4 * a].val() - self.pg[4 * a + 1].val();
+                self.gy[a].d.next = self.gy_base[a].val() + self.pg[4 * a + 2].val() - self.pg[4 * a + 3].val();
+            }
+            for e in 0..3 {
+                for a in 0..4 {
+                    self.plane[4 * e + a].d.next = self.plane_base[4 * e + a].val()
+                        + self.ps[12 * e + 3 * a].val()
+                        + self.ps[12 * e + 3 * a + 1].val();
+                    // inc0 = ddy + q * ddx, inc1 = inc0 + ddx; ddx for the result.
+                    if self.add_r[30 + 12 * e + 3 * a].q.val() {
+                        self.inc0[4 * e + a].d.next =
+                            self.ddy[a].val().get_bits::<ATTR>(0) + self.ps[12 * e + 3 * a + 2].val();
+                        self.inc1[4 * e + a].d.next = self.ddy[a].val().get_bits::<ATTR>(0)
+                            + self.ps[12 * e + 3 * a + 2].val()
+                            + self.ddx[a].val().get_bits::<ATTR>(0);
+                        self.ddx_o[a].d.next = self.ddx[a].val().get_bits::<ATTR>(0);
+                    }
+                }
+            }
+        }
+        // Hand-over: at = v0's attribute + floor(plane / 2^s).
+        for e in 0..3 {
+            for a in 0..4 {
                 if self.at_handover.val() {
                     self.plane[4 * e + a].d.next =
                         (self.plane[4 * e + a].q.val() >> self.frac.val()) + (self.attr0[a].val() << self.bsh[a].val());
-                    self.inc1[4 * e + a].d.next = self.inc0[4 * e + a].q.val() + self.ddx[a].val().get_bits::<ATTR>(0);
                 }
             }
         }
@@ -1214,10 +1180,21 @@ impl Logic for TriangleSetup {
             self.out.short1_count.next = self.g3.count[2].val();
             self.out.short1_d.next = self.g3.ed16[2].val().get_bits::<EDGE_D>(0);
         }
-        self.out.maj_x.next = self.x[0].q.val().get_bits::<PIXEL>(0);
-        self.out.maj_r.next = self.r[0].q.val();
-        self.out.maj_q.next = self.q[0].q.val().get_bits::<EDGE_Q>(0);
-        self.out.maj_rho.next = self.rho[0].q.val();
+        // Each edge's start and step from the last copy.
+        for v in (self._copies - 1)..self._copies {
+            self.out.maj_x.next = self.x[3 * v].q.val().get_bits::<PIXEL>(0);
+            self.out.maj_r.next = self.r[3 * v].q.val();
+            self.out.maj_q.next = self.q[3 * v].q.val().get_bits::<EDGE_Q>(0);
+            self.out.maj_rho.next = self.rho[3 * v].q.val();
+            self.out.short0_x.next = self.x[3 * v + 1].q.val().get_bits::<PIXEL>(0);
+            self.out.short0_r.next = self.r[3 * v + 1].q.val();
+            self.out.short0_q.next = self.q[3 * v + 1].q.val().get_bits::<EDGE_Q>(0);
+            self.out.short0_rho.next = self.rho[3 * v + 1].q.val();
+            self.out.short1_x.next = self.x[3 * v + 2].q.val().get_bits::<PIXEL>(0);
+            self.out.short1_r.next = self.r[3 * v + 2].q.val();
+            self.out.short1_q.next = self.q[3 * v + 2].q.val().get_bits::<EDGE_Q>(0);
+            self.out.short1_rho.next = self.rho[3 * v + 2].q.val();
+        }
         self.out.maj_at_z.next = self.plane[0].q.val().get_bits::<Z_ACC>(0);
         self.out.maj_at_c0.next = self.plane[1].q.val().get_bits::<C_ACC>(0);
         self.out.maj_at_c1.next = self.plane[2].q.val().get_bits::<C_ACC>(0);
@@ -1230,10 +1207,6 @@ impl Logic for TriangleSetup {
         self.out.maj_inc1_c0.next = self.inc1[1].q.val().get_bits::<DC>(0);
         self.out.maj_inc1_c1.next = self.inc1[2].q.val().get_bits::<DC>(0);
         self.out.maj_inc1_c2.next = self.inc1[3].q.val().get_bits::<DC>(0);
-        self.out.short0_x.next = self.x[1].q.val().get_bits::<PIXEL>(0);
-        self.out.short0_r.next = self.r[1].q.val();
-        self.out.short0_q.next = self.q[1].q.val().get_bits::<EDGE_Q>(0);
-        self.out.short0_rho.next = self.rho[1].q.val();
         self.out.short0_at_z.next = self.plane[4].q.val().get_bits::<Z_ACC>(0);
         self.out.short0_at_c0.next = self.plane[5].q.val().get_bits::<C_ACC>(0);
         self.out.short0_at_c1.next = self.plane[6].q.val().get_bits::<C_ACC>(0);
@@ -1246,10 +1219,6 @@ impl Logic for TriangleSetup {
         self.out.short0_inc1_c0.next = self.inc1[5].q.val().get_bits::<DC>(0);
         self.out.short0_inc1_c1.next = self.inc1[6].q.val().get_bits::<DC>(0);
         self.out.short0_inc1_c2.next = self.inc1[7].q.val().get_bits::<DC>(0);
-        self.out.short1_x.next = self.x[2].q.val().get_bits::<PIXEL>(0);
-        self.out.short1_r.next = self.r[2].q.val();
-        self.out.short1_q.next = self.q[2].q.val().get_bits::<EDGE_Q>(0);
-        self.out.short1_rho.next = self.rho[2].q.val();
         self.out.short1_at_z.next = self.plane[8].q.val().get_bits::<Z_ACC>(0);
         self.out.short1_at_c0.next = self.plane[9].q.val().get_bits::<C_ACC>(0);
         self.out.short1_at_c1.next = self.plane[10].q.val().get_bits::<C_ACC>(0);
@@ -1262,10 +1231,10 @@ impl Logic for TriangleSetup {
         self.out.short1_inc1_c0.next = self.inc1[9].q.val().get_bits::<DC>(0);
         self.out.short1_inc1_c1.next = self.inc1[10].q.val().get_bits::<DC>(0);
         self.out.short1_inc1_c2.next = self.inc1[11].q.val().get_bits::<DC>(0);
-        self.out.ddx_z.next = self.ddx[0].val().get_bits::<DZ>(0);
-        self.out.ddx_c0.next = self.ddx[1].val().get_bits::<DC>(0);
-        self.out.ddx_c1.next = self.ddx[2].val().get_bits::<DC>(0);
-        self.out.ddx_c2.next = self.ddx[3].val().get_bits::<DC>(0);
+        self.out.ddx_z.next = self.ddx_o[0].q.val().get_bits::<DZ>(0);
+        self.out.ddx_c0.next = self.ddx_o[1].q.val().get_bits::<DC>(0);
+        self.out.ddx_c1.next = self.ddx_o[2].q.val().get_bits::<DC>(0);
+        self.out.ddx_c2.next = self.ddx_o[3].q.val().get_bits::<DC>(0);
     }
 }
 
