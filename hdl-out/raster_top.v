@@ -9184,7 +9184,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     localparam  ends$1 = 8'h14;
     localparam  ends$2 = 8'h1c;
     localparam  ends$3 = 8'hff;
-    localparam  last_copy = 8'h2;
+    localparam  ends$4 = 8'hff;
     localparam  normalise = 8'h4;
     localparam  cyc$0 = 8'h1;
     localparam  cyc$1 = 8'h1;
@@ -9405,6 +9405,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [7:0] t$3$d;
     wire  [7:0] t$3$q;
     reg  t$3$clock;
+    reg  [7:0] t$4$d;
+    wire  [7:0] t$4$q;
+    reg  t$4$clock;
     reg  act_r$0$d;
     wire  act_r$0$q;
     reg  act_r$0$clock;
@@ -9885,6 +9888,15 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [15:0] vx$11$d;
     wire  [15:0] vx$11$q;
     reg  vx$11$clock;
+    reg  [15:0] vx$12$d;
+    wire  [15:0] vx$12$q;
+    reg  vx$12$clock;
+    reg  [15:0] vx$13$d;
+    wire  [15:0] vx$13$q;
+    reg  vx$13$clock;
+    reg  [15:0] vx$14$d;
+    wire  [15:0] vx$14$q;
+    reg  vx$14$clock;
     reg  [15:0] vy$0$d;
     wire  [15:0] vy$0$q;
     reg  vy$0$clock;
@@ -9921,6 +9933,15 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [15:0] vy$11$d;
     wire  [15:0] vy$11$q;
     reg  vy$11$clock;
+    reg  [15:0] vy$12$d;
+    wire  [15:0] vy$12$q;
+    reg  vy$12$clock;
+    reg  [15:0] vy$13$d;
+    wire  [15:0] vy$13$q;
+    reg  vy$13$clock;
+    reg  [15:0] vy$14$d;
+    wire  [15:0] vy$14$q;
+    reg  vy$14$clock;
     reg  [17:0] vz$0$d;
     wire  [17:0] vz$0$q;
     reg  vz$0$clock;
@@ -9957,6 +9978,15 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [17:0] vz$11$d;
     wire  [17:0] vz$11$q;
     reg  vz$11$clock;
+    reg  [17:0] vz$12$d;
+    wire  [17:0] vz$12$q;
+    reg  vz$12$clock;
+    reg  [17:0] vz$13$d;
+    wire  [17:0] vz$13$q;
+    reg  vz$13$clock;
+    reg  [17:0] vz$14$d;
+    wire  [17:0] vz$14$q;
+    reg  vz$14$clock;
     reg  [7:0] vc$0$d;
     wire  [7:0] vc$0$q;
     reg  vc$0$clock;
@@ -10065,6 +10095,33 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [7:0] vc$35$d;
     wire  [7:0] vc$35$q;
     reg  vc$35$clock;
+    reg  [7:0] vc$36$d;
+    wire  [7:0] vc$36$q;
+    reg  vc$36$clock;
+    reg  [7:0] vc$37$d;
+    wire  [7:0] vc$37$q;
+    reg  vc$37$clock;
+    reg  [7:0] vc$38$d;
+    wire  [7:0] vc$38$q;
+    reg  vc$38$clock;
+    reg  [7:0] vc$39$d;
+    wire  [7:0] vc$39$q;
+    reg  vc$39$clock;
+    reg  [7:0] vc$40$d;
+    wire  [7:0] vc$40$q;
+    reg  vc$40$clock;
+    reg  [7:0] vc$41$d;
+    wire  [7:0] vc$41$q;
+    reg  vc$41$clock;
+    reg  [7:0] vc$42$d;
+    wire  [7:0] vc$42$q;
+    reg  vc$42$clock;
+    reg  [7:0] vc$43$d;
+    wire  [7:0] vc$43$q;
+    reg  vc$43$clock;
+    reg  [7:0] vc$44$d;
+    wire  [7:0] vc$44$q;
+    reg  vc$44$clock;
     reg  [5:0] crosses$0$d;
     wire  [5:0] crosses$0$q;
     reg  crosses$0$clock;
@@ -10077,6 +10134,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [5:0] crosses$3$d;
     wire  [5:0] crosses$3$q;
     reg  crosses$3$clock;
+    reg  [5:0] crosses$4$d;
+    wire  [5:0] crosses$4$q;
+    reg  crosses$4$clock;
     reg  sign$0$d;
     wire  sign$0$q;
     reg  sign$0$clock;
@@ -10089,6 +10149,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  sign$3$d;
     wire  sign$3$q;
     reg  sign$3$clock;
+    reg  sign$4$d;
+    wire  sign$4$q;
+    reg  sign$4$clock;
     reg  [5:0] exp$0$d;
     wire  [5:0] exp$0$q;
     reg  exp$0$clock;
@@ -10101,6 +10164,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [5:0] exp$3$d;
     wire  [5:0] exp$3$q;
     reg  exp$3$clock;
+    reg  [5:0] exp$4$d;
+    wire  [5:0] exp$4$q;
+    reg  exp$4$clock;
     reg  [18:0] x$0$d;
     wire  [18:0] x$0$q;
     reg  x$0$clock;
@@ -10137,6 +10203,15 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [18:0] x$11$d;
     wire  [18:0] x$11$q;
     reg  x$11$clock;
+    reg  [18:0] x$12$d;
+    wire  [18:0] x$12$q;
+    reg  x$12$clock;
+    reg  [18:0] x$13$d;
+    wire  [18:0] x$13$q;
+    reg  x$13$clock;
+    reg  [18:0] x$14$d;
+    wire  [18:0] x$14$q;
+    reg  x$14$clock;
     reg  [20:0] r$0$d;
     wire  [20:0] r$0$q;
     reg  r$0$clock;
@@ -10173,6 +10248,15 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [20:0] r$11$d;
     wire  [20:0] r$11$q;
     reg  r$11$clock;
+    reg  [20:0] r$12$d;
+    wire  [20:0] r$12$q;
+    reg  r$12$clock;
+    reg  [20:0] r$13$d;
+    wire  [20:0] r$13$q;
+    reg  r$13$clock;
+    reg  [20:0] r$14$d;
+    wire  [20:0] r$14$q;
+    reg  r$14$clock;
     reg  [18:0] q$0$d;
     wire  [18:0] q$0$q;
     reg  q$0$clock;
@@ -10209,6 +10293,15 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [18:0] q$11$d;
     wire  [18:0] q$11$q;
     reg  q$11$clock;
+    reg  [18:0] q$12$d;
+    wire  [18:0] q$12$q;
+    reg  q$12$clock;
+    reg  [18:0] q$13$d;
+    wire  [18:0] q$13$q;
+    reg  q$13$clock;
+    reg  [18:0] q$14$d;
+    wire  [18:0] q$14$q;
+    reg  q$14$clock;
     reg  [20:0] rho$0$d;
     wire  [20:0] rho$0$q;
     reg  rho$0$clock;
@@ -10245,6 +10338,15 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [20:0] rho$11$d;
     wire  [20:0] rho$11$q;
     reg  rho$11$clock;
+    reg  [20:0] rho$12$d;
+    wire  [20:0] rho$12$q;
+    reg  rho$12$clock;
+    reg  [20:0] rho$13$d;
+    wire  [20:0] rho$13$q;
+    reg  rho$13$clock;
+    reg  [20:0] rho$14$d;
+    wire  [20:0] rho$14$q;
+    reg  rho$14$clock;
     reg  [15:0] g0$vx$0;
     reg  [15:0] g0$vx$1;
     reg  [15:0] g0$vx$2;
@@ -10545,6 +10647,81 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     wire  [39:0] g3$attr0$1;
     wire  [39:0] g3$attr0$2;
     wire  [39:0] g3$attr0$3;
+    reg  [15:0] g4$vx$0;
+    reg  [15:0] g4$vx$1;
+    reg  [15:0] g4$vx$2;
+    reg  [15:0] g4$vy$0;
+    reg  [15:0] g4$vy$1;
+    reg  [15:0] g4$vy$2;
+    reg  [17:0] g4$vz$0;
+    reg  [17:0] g4$vz$1;
+    reg  [17:0] g4$vz$2;
+    reg  [7:0] g4$vc$0;
+    reg  [7:0] g4$vc$1;
+    reg  [7:0] g4$vc$2;
+    reg  [7:0] g4$vc$3;
+    reg  [7:0] g4$vc$4;
+    reg  [7:0] g4$vc$5;
+    reg  [7:0] g4$vc$6;
+    reg  [7:0] g4$vc$7;
+    reg  [7:0] g4$vc$8;
+    reg  [5:0] g4$crosses;
+    reg  g4$maj_left;
+    reg  [18:0] g4$start_x$0;
+    reg  [18:0] g4$start_x$1;
+    reg  [18:0] g4$start_x$2;
+    wire  [57:0] g4$kdx$0;
+    wire  [57:0] g4$kdx$1;
+    wire  [57:0] g4$kdx$2;
+    wire  [56:0] g4$kdy$0;
+    wire  [56:0] g4$kdy$1;
+    wire  [56:0] g4$kdy$2;
+    wire  g4$up;
+    wire  [57:0] g4$edx$0;
+    wire  [57:0] g4$edx$1;
+    wire  [57:0] g4$edx$2;
+    wire  [56:0] g4$edy$0;
+    wire  [56:0] g4$edy$1;
+    wire  [56:0] g4$edy$2;
+    wire  [33:0] g4$edy_d$0;
+    wire  [33:0] g4$edy_d$1;
+    wire  [33:0] g4$edy_d$2;
+    wire  [33:0] g4$ed16$0;
+    wire  [33:0] g4$ed16$1;
+    wire  [33:0] g4$ed16$2;
+    wire  [18:0] g4$cy$0;
+    wire  [18:0] g4$cy$1;
+    wire  [18:0] g4$cy$2;
+    wire  [12:0] g4$count$0;
+    wire  [12:0] g4$count$1;
+    wire  [12:0] g4$count$2;
+    wire  [18:0] g4$toff$0;
+    wire  [18:0] g4$toff$1;
+    wire  [18:0] g4$toff$2;
+    wire  [18:0] g4$xf$0;
+    wire  [18:0] g4$xf$1;
+    wire  [18:0] g4$xf$2;
+    wire  [18:0] g4$xi$0;
+    wire  [18:0] g4$xi$1;
+    wire  [18:0] g4$xi$2;
+    wire  [18:0] g4$off_x$0;
+    wire  [18:0] g4$off_x$1;
+    wire  [18:0] g4$off_x$2;
+    wire  [18:0] g4$off_y$0;
+    wire  [18:0] g4$off_y$1;
+    wire  [18:0] g4$off_y$2;
+    wire  [18:0] g4$dmaj$0;
+    wire  [18:0] g4$dmaj$1;
+    wire  [18:0] g4$dmaj$2;
+    wire  [18:0] g4$dmaj$3;
+    wire  [18:0] g4$dbot$0;
+    wire  [18:0] g4$dbot$1;
+    wire  [18:0] g4$dbot$2;
+    wire  [18:0] g4$dbot$3;
+    wire  [39:0] g4$attr0$0;
+    wire  [39:0] g4$attr0$1;
+    wire  [39:0] g4$attr0$2;
+    wire  [39:0] g4$attr0$3;
     reg  [33:0] area$d;
     wire  [33:0] area$q;
     reg  area$clock;
@@ -10731,6 +10908,39 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [39:0] ddx_o$3$d;
     wire  [39:0] ddx_o$3$q;
     reg  ddx_o$3$clock;
+    reg  o_walk$d;
+    wire  o_walk$q;
+    reg  o_walk$clock;
+    reg  o_maj_left$d;
+    wire  o_maj_left$q;
+    reg  o_maj_left$clock;
+    reg  [12:0] o_j$0$d;
+    wire  [12:0] o_j$0$q;
+    reg  o_j$0$clock;
+    reg  [12:0] o_j$1$d;
+    wire  [12:0] o_j$1$q;
+    reg  o_j$1$clock;
+    reg  [12:0] o_j$2$d;
+    wire  [12:0] o_j$2$q;
+    reg  o_j$2$clock;
+    reg  [12:0] o_count$0$d;
+    wire  [12:0] o_count$0$q;
+    reg  o_count$0$clock;
+    reg  [12:0] o_count$1$d;
+    wire  [12:0] o_count$1$q;
+    reg  o_count$1$clock;
+    reg  [12:0] o_count$2$d;
+    wire  [12:0] o_count$2$q;
+    reg  o_count$2$clock;
+    reg  [20:0] o_d$0$d;
+    wire  [20:0] o_d$0$q;
+    reg  o_d$0$clock;
+    reg  [20:0] o_d$1$d;
+    wire  [20:0] o_d$1$q;
+    reg  o_d$1$clock;
+    reg  [20:0] o_d$2$d;
+    wire  [20:0] o_d$2$q;
+    reg  o_d$2$clock;
     
     // Local signals
     reg  take;
@@ -10755,6 +10965,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  maj_left$1;
     reg  maj_left$2;
     reg  maj_left$3;
+    reg  maj_left$4;
     reg  [33:0] area_abs;
     reg  [5:0] exp_c;
     reg  [33:0] norm_d;
@@ -10847,6 +11058,10 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [18:0] delta$13;
     reg  [18:0] delta$14;
     reg  [18:0] delta$15;
+    reg  [18:0] delta$16;
+    reg  [18:0] delta$17;
+    reg  [18:0] delta$18;
+    reg  [18:0] delta$19;
     reg  [18:0] eq_b$0;
     reg  [18:0] eq_b$1;
     reg  [18:0] eq_b$2;
@@ -10863,6 +11078,10 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [18:0] eq_b$13;
     reg  [18:0] eq_b$14;
     reg  [18:0] eq_b$15;
+    reg  [18:0] eq_b$16;
+    reg  [18:0] eq_b$17;
+    reg  [18:0] eq_b$18;
+    reg  [18:0] eq_b$19;
     reg  [18:0] op_e$0;
     reg  [18:0] op_e$1;
     reg  [18:0] op_e$2;
@@ -11043,6 +11262,11 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .d(t$3$d),
         .q(t$3$q),
         .clock(t$3$clock)
+    );
+    raster_top$core$triangle_setup$t$4 t$4(
+        .d(t$4$d),
+        .q(t$4$q),
+        .clock(t$4$clock)
     );
     raster_top$core$triangle_setup$act_r$0 act_r$0(
         .d(act_r$0$d),
@@ -11844,6 +12068,21 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .q(vx$11$q),
         .clock(vx$11$clock)
     );
+    raster_top$core$triangle_setup$vx$12 vx$12(
+        .d(vx$12$d),
+        .q(vx$12$q),
+        .clock(vx$12$clock)
+    );
+    raster_top$core$triangle_setup$vx$13 vx$13(
+        .d(vx$13$d),
+        .q(vx$13$q),
+        .clock(vx$13$clock)
+    );
+    raster_top$core$triangle_setup$vx$14 vx$14(
+        .d(vx$14$d),
+        .q(vx$14$q),
+        .clock(vx$14$clock)
+    );
     raster_top$core$triangle_setup$vy$0 vy$0(
         .d(vy$0$d),
         .q(vy$0$q),
@@ -11904,6 +12143,21 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .q(vy$11$q),
         .clock(vy$11$clock)
     );
+    raster_top$core$triangle_setup$vy$12 vy$12(
+        .d(vy$12$d),
+        .q(vy$12$q),
+        .clock(vy$12$clock)
+    );
+    raster_top$core$triangle_setup$vy$13 vy$13(
+        .d(vy$13$d),
+        .q(vy$13$q),
+        .clock(vy$13$clock)
+    );
+    raster_top$core$triangle_setup$vy$14 vy$14(
+        .d(vy$14$d),
+        .q(vy$14$q),
+        .clock(vy$14$clock)
+    );
     raster_top$core$triangle_setup$vz$0 vz$0(
         .d(vz$0$d),
         .q(vz$0$q),
@@ -11963,6 +12217,21 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .d(vz$11$d),
         .q(vz$11$q),
         .clock(vz$11$clock)
+    );
+    raster_top$core$triangle_setup$vz$12 vz$12(
+        .d(vz$12$d),
+        .q(vz$12$q),
+        .clock(vz$12$clock)
+    );
+    raster_top$core$triangle_setup$vz$13 vz$13(
+        .d(vz$13$d),
+        .q(vz$13$q),
+        .clock(vz$13$clock)
+    );
+    raster_top$core$triangle_setup$vz$14 vz$14(
+        .d(vz$14$d),
+        .q(vz$14$q),
+        .clock(vz$14$clock)
     );
     raster_top$core$triangle_setup$vc$0 vc$0(
         .d(vc$0$d),
@@ -12144,6 +12413,51 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .q(vc$35$q),
         .clock(vc$35$clock)
     );
+    raster_top$core$triangle_setup$vc$36 vc$36(
+        .d(vc$36$d),
+        .q(vc$36$q),
+        .clock(vc$36$clock)
+    );
+    raster_top$core$triangle_setup$vc$37 vc$37(
+        .d(vc$37$d),
+        .q(vc$37$q),
+        .clock(vc$37$clock)
+    );
+    raster_top$core$triangle_setup$vc$38 vc$38(
+        .d(vc$38$d),
+        .q(vc$38$q),
+        .clock(vc$38$clock)
+    );
+    raster_top$core$triangle_setup$vc$39 vc$39(
+        .d(vc$39$d),
+        .q(vc$39$q),
+        .clock(vc$39$clock)
+    );
+    raster_top$core$triangle_setup$vc$40 vc$40(
+        .d(vc$40$d),
+        .q(vc$40$q),
+        .clock(vc$40$clock)
+    );
+    raster_top$core$triangle_setup$vc$41 vc$41(
+        .d(vc$41$d),
+        .q(vc$41$q),
+        .clock(vc$41$clock)
+    );
+    raster_top$core$triangle_setup$vc$42 vc$42(
+        .d(vc$42$d),
+        .q(vc$42$q),
+        .clock(vc$42$clock)
+    );
+    raster_top$core$triangle_setup$vc$43 vc$43(
+        .d(vc$43$d),
+        .q(vc$43$q),
+        .clock(vc$43$clock)
+    );
+    raster_top$core$triangle_setup$vc$44 vc$44(
+        .d(vc$44$d),
+        .q(vc$44$q),
+        .clock(vc$44$clock)
+    );
     raster_top$core$triangle_setup$crosses$0 crosses$0(
         .d(crosses$0$d),
         .q(crosses$0$q),
@@ -12163,6 +12477,11 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .d(crosses$3$d),
         .q(crosses$3$q),
         .clock(crosses$3$clock)
+    );
+    raster_top$core$triangle_setup$crosses$4 crosses$4(
+        .d(crosses$4$d),
+        .q(crosses$4$q),
+        .clock(crosses$4$clock)
     );
     raster_top$core$triangle_setup$sign$0 sign$0(
         .d(sign$0$d),
@@ -12184,6 +12503,11 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .q(sign$3$q),
         .clock(sign$3$clock)
     );
+    raster_top$core$triangle_setup$sign$4 sign$4(
+        .d(sign$4$d),
+        .q(sign$4$q),
+        .clock(sign$4$clock)
+    );
     raster_top$core$triangle_setup$exp$0 exp$0(
         .d(exp$0$d),
         .q(exp$0$q),
@@ -12203,6 +12527,11 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .d(exp$3$d),
         .q(exp$3$q),
         .clock(exp$3$clock)
+    );
+    raster_top$core$triangle_setup$exp$4 exp$4(
+        .d(exp$4$d),
+        .q(exp$4$q),
+        .clock(exp$4$clock)
     );
     raster_top$core$triangle_setup$x$0 x$0(
         .d(x$0$d),
@@ -12264,6 +12593,21 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .q(x$11$q),
         .clock(x$11$clock)
     );
+    raster_top$core$triangle_setup$x$12 x$12(
+        .d(x$12$d),
+        .q(x$12$q),
+        .clock(x$12$clock)
+    );
+    raster_top$core$triangle_setup$x$13 x$13(
+        .d(x$13$d),
+        .q(x$13$q),
+        .clock(x$13$clock)
+    );
+    raster_top$core$triangle_setup$x$14 x$14(
+        .d(x$14$d),
+        .q(x$14$q),
+        .clock(x$14$clock)
+    );
     raster_top$core$triangle_setup$r$0 r$0(
         .d(r$0$d),
         .q(r$0$q),
@@ -12323,6 +12667,21 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .d(r$11$d),
         .q(r$11$q),
         .clock(r$11$clock)
+    );
+    raster_top$core$triangle_setup$r$12 r$12(
+        .d(r$12$d),
+        .q(r$12$q),
+        .clock(r$12$clock)
+    );
+    raster_top$core$triangle_setup$r$13 r$13(
+        .d(r$13$d),
+        .q(r$13$q),
+        .clock(r$13$clock)
+    );
+    raster_top$core$triangle_setup$r$14 r$14(
+        .d(r$14$d),
+        .q(r$14$q),
+        .clock(r$14$clock)
     );
     raster_top$core$triangle_setup$q$0 q$0(
         .d(q$0$d),
@@ -12384,6 +12743,21 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .q(q$11$q),
         .clock(q$11$clock)
     );
+    raster_top$core$triangle_setup$q$12 q$12(
+        .d(q$12$d),
+        .q(q$12$q),
+        .clock(q$12$clock)
+    );
+    raster_top$core$triangle_setup$q$13 q$13(
+        .d(q$13$d),
+        .q(q$13$q),
+        .clock(q$13$clock)
+    );
+    raster_top$core$triangle_setup$q$14 q$14(
+        .d(q$14$d),
+        .q(q$14$q),
+        .clock(q$14$clock)
+    );
     raster_top$core$triangle_setup$rho$0 rho$0(
         .d(rho$0$d),
         .q(rho$0$q),
@@ -12443,6 +12817,21 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .d(rho$11$d),
         .q(rho$11$q),
         .clock(rho$11$clock)
+    );
+    raster_top$core$triangle_setup$rho$12 rho$12(
+        .d(rho$12$d),
+        .q(rho$12$q),
+        .clock(rho$12$clock)
+    );
+    raster_top$core$triangle_setup$rho$13 rho$13(
+        .d(rho$13$d),
+        .q(rho$13$q),
+        .clock(rho$13$clock)
+    );
+    raster_top$core$triangle_setup$rho$14 rho$14(
+        .d(rho$14$d),
+        .q(rho$14$q),
+        .clock(rho$14$clock)
     );
     raster_top$core$triangle_setup$g0 g0(
         .vx$0(g0$vx$0),
@@ -12751,6 +13140,83 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .attr0$1(g3$attr0$1),
         .attr0$2(g3$attr0$2),
         .attr0$3(g3$attr0$3)
+    );
+    raster_top$core$triangle_setup$g4 g4(
+        .vx$0(g4$vx$0),
+        .vx$1(g4$vx$1),
+        .vx$2(g4$vx$2),
+        .vy$0(g4$vy$0),
+        .vy$1(g4$vy$1),
+        .vy$2(g4$vy$2),
+        .vz$0(g4$vz$0),
+        .vz$1(g4$vz$1),
+        .vz$2(g4$vz$2),
+        .vc$0(g4$vc$0),
+        .vc$1(g4$vc$1),
+        .vc$2(g4$vc$2),
+        .vc$3(g4$vc$3),
+        .vc$4(g4$vc$4),
+        .vc$5(g4$vc$5),
+        .vc$6(g4$vc$6),
+        .vc$7(g4$vc$7),
+        .vc$8(g4$vc$8),
+        .crosses(g4$crosses),
+        .maj_left(g4$maj_left),
+        .start_x$0(g4$start_x$0),
+        .start_x$1(g4$start_x$1),
+        .start_x$2(g4$start_x$2),
+        .kdx$0(g4$kdx$0),
+        .kdx$1(g4$kdx$1),
+        .kdx$2(g4$kdx$2),
+        .kdy$0(g4$kdy$0),
+        .kdy$1(g4$kdy$1),
+        .kdy$2(g4$kdy$2),
+        .up(g4$up),
+        .edx$0(g4$edx$0),
+        .edx$1(g4$edx$1),
+        .edx$2(g4$edx$2),
+        .edy$0(g4$edy$0),
+        .edy$1(g4$edy$1),
+        .edy$2(g4$edy$2),
+        .edy_d$0(g4$edy_d$0),
+        .edy_d$1(g4$edy_d$1),
+        .edy_d$2(g4$edy_d$2),
+        .ed16$0(g4$ed16$0),
+        .ed16$1(g4$ed16$1),
+        .ed16$2(g4$ed16$2),
+        .cy$0(g4$cy$0),
+        .cy$1(g4$cy$1),
+        .cy$2(g4$cy$2),
+        .count$0(g4$count$0),
+        .count$1(g4$count$1),
+        .count$2(g4$count$2),
+        .toff$0(g4$toff$0),
+        .toff$1(g4$toff$1),
+        .toff$2(g4$toff$2),
+        .xf$0(g4$xf$0),
+        .xf$1(g4$xf$1),
+        .xf$2(g4$xf$2),
+        .xi$0(g4$xi$0),
+        .xi$1(g4$xi$1),
+        .xi$2(g4$xi$2),
+        .off_x$0(g4$off_x$0),
+        .off_x$1(g4$off_x$1),
+        .off_x$2(g4$off_x$2),
+        .off_y$0(g4$off_y$0),
+        .off_y$1(g4$off_y$1),
+        .off_y$2(g4$off_y$2),
+        .dmaj$0(g4$dmaj$0),
+        .dmaj$1(g4$dmaj$1),
+        .dmaj$2(g4$dmaj$2),
+        .dmaj$3(g4$dmaj$3),
+        .dbot$0(g4$dbot$0),
+        .dbot$1(g4$dbot$1),
+        .dbot$2(g4$dbot$2),
+        .dbot$3(g4$dbot$3),
+        .attr0$0(g4$attr0$0),
+        .attr0$1(g4$attr0$1),
+        .attr0$2(g4$attr0$2),
+        .attr0$3(g4$attr0$3)
     );
     raster_top$core$triangle_setup$area area(
         .d(area$d),
@@ -13062,6 +13528,61 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .q(ddx_o$3$q),
         .clock(ddx_o$3$clock)
     );
+    raster_top$core$triangle_setup$o_walk o_walk(
+        .d(o_walk$d),
+        .q(o_walk$q),
+        .clock(o_walk$clock)
+    );
+    raster_top$core$triangle_setup$o_maj_left o_maj_left(
+        .d(o_maj_left$d),
+        .q(o_maj_left$q),
+        .clock(o_maj_left$clock)
+    );
+    raster_top$core$triangle_setup$o_j$0 o_j$0(
+        .d(o_j$0$d),
+        .q(o_j$0$q),
+        .clock(o_j$0$clock)
+    );
+    raster_top$core$triangle_setup$o_j$1 o_j$1(
+        .d(o_j$1$d),
+        .q(o_j$1$q),
+        .clock(o_j$1$clock)
+    );
+    raster_top$core$triangle_setup$o_j$2 o_j$2(
+        .d(o_j$2$d),
+        .q(o_j$2$q),
+        .clock(o_j$2$clock)
+    );
+    raster_top$core$triangle_setup$o_count$0 o_count$0(
+        .d(o_count$0$d),
+        .q(o_count$0$q),
+        .clock(o_count$0$clock)
+    );
+    raster_top$core$triangle_setup$o_count$1 o_count$1(
+        .d(o_count$1$d),
+        .q(o_count$1$q),
+        .clock(o_count$1$clock)
+    );
+    raster_top$core$triangle_setup$o_count$2 o_count$2(
+        .d(o_count$2$d),
+        .q(o_count$2$q),
+        .clock(o_count$2$clock)
+    );
+    raster_top$core$triangle_setup$o_d$0 o_d$0(
+        .d(o_d$0$d),
+        .q(o_d$0$q),
+        .clock(o_d$0$clock)
+    );
+    raster_top$core$triangle_setup$o_d$1 o_d$1(
+        .d(o_d$1$d),
+        .q(o_d$1$q),
+        .clock(o_d$1$clock)
+    );
+    raster_top$core$triangle_setup$o_d$2 o_d$2(
+        .d(o_d$2$d),
+        .q(o_d$2$q),
+        .clock(o_d$2$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -13091,6 +13612,28 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         busy_r$d = busy_r$q;
         phase$d = phase$q;
         off_grid_r$d = off_grid_r$q;
+        o_walk$clock = clock;
+        o_maj_left$clock = clock;
+        o_walk$d = o_walk$q;
+        o_maj_left$d = o_maj_left$q;
+        o_j$0$clock = clock;
+        o_j$0$d = o_j$0$q;
+        o_count$0$clock = clock;
+        o_count$0$d = o_count$0$q;
+        o_d$0$clock = clock;
+        o_d$0$d = o_d$0$q;
+        o_j$1$clock = clock;
+        o_j$1$d = o_j$1$q;
+        o_count$1$clock = clock;
+        o_count$1$d = o_count$1$q;
+        o_d$1$clock = clock;
+        o_d$1$d = o_d$1$q;
+        o_j$2$clock = clock;
+        o_j$2$d = o_j$2$q;
+        o_count$2$clock = clock;
+        o_count$2$d = o_count$2$q;
+        o_d$2$clock = clock;
+        o_d$2$d = o_d$2$q;
         div$clock = clock;
         t$0$clock = clock;
         t$0$d = t$0$q;
@@ -13364,6 +13907,74 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         vc$34$d = vc$34$q;
         vc$35$clock = clock;
         vc$35$d = vc$35$q;
+        t$4$clock = clock;
+        t$4$d = t$4$q;
+        crosses$4$clock = clock;
+        crosses$4$d = crosses$4$q;
+        sign$4$clock = clock;
+        sign$4$d = sign$4$q;
+        exp$4$clock = clock;
+        exp$4$d = exp$4$q;
+        x$12$clock = clock;
+        x$12$d = x$12$q;
+        r$12$clock = clock;
+        r$12$d = r$12$q;
+        q$12$clock = clock;
+        q$12$d = q$12$q;
+        rho$12$clock = clock;
+        rho$12$d = rho$12$q;
+        vx$12$clock = clock;
+        vx$12$d = vx$12$q;
+        vy$12$clock = clock;
+        vy$12$d = vy$12$q;
+        vz$12$clock = clock;
+        vz$12$d = vz$12$q;
+        x$13$clock = clock;
+        x$13$d = x$13$q;
+        r$13$clock = clock;
+        r$13$d = r$13$q;
+        q$13$clock = clock;
+        q$13$d = q$13$q;
+        rho$13$clock = clock;
+        rho$13$d = rho$13$q;
+        vx$13$clock = clock;
+        vx$13$d = vx$13$q;
+        vy$13$clock = clock;
+        vy$13$d = vy$13$q;
+        vz$13$clock = clock;
+        vz$13$d = vz$13$q;
+        x$14$clock = clock;
+        x$14$d = x$14$q;
+        r$14$clock = clock;
+        r$14$d = r$14$q;
+        q$14$clock = clock;
+        q$14$d = q$14$q;
+        rho$14$clock = clock;
+        rho$14$d = rho$14$q;
+        vx$14$clock = clock;
+        vx$14$d = vx$14$q;
+        vy$14$clock = clock;
+        vy$14$d = vy$14$q;
+        vz$14$clock = clock;
+        vz$14$d = vz$14$q;
+        vc$36$clock = clock;
+        vc$36$d = vc$36$q;
+        vc$37$clock = clock;
+        vc$37$d = vc$37$q;
+        vc$38$clock = clock;
+        vc$38$d = vc$38$q;
+        vc$39$clock = clock;
+        vc$39$d = vc$39$q;
+        vc$40$clock = clock;
+        vc$40$d = vc$40$q;
+        vc$41$clock = clock;
+        vc$41$d = vc$41$q;
+        vc$42$clock = clock;
+        vc$42$d = vc$42$q;
+        vc$43$clock = clock;
+        vc$43$d = vc$43$q;
+        vc$44$clock = clock;
+        vc$44$d = vc$44$q;
         num$0$clock = clock;
         num$0$d = num$0$q;
         num$1$clock = clock;
@@ -13485,6 +14096,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         maj_left$1 = sign$1$q;
         maj_left$2 = sign$2$q;
         maj_left$3 = sign$3$q;
+        maj_left$4 = sign$4$q;
         run = ~(valid_r$q & ~out$ready);
         out$valid = valid_r$q;
         inp$ready = run & ~(busy_r$q & off_grid_r$q);
@@ -15240,6 +15852,29 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         g3$vc$8 = vc$35$q;
         g3$crosses = crosses$3$q;
         g3$maj_left = maj_left$3;
+        g4$vx$0 = vx$12$q;
+        g4$vy$0 = vy$12$q;
+        g4$vz$0 = vz$12$q;
+        g4$start_x$0 = x$12$q;
+        g4$vx$1 = vx$13$q;
+        g4$vy$1 = vy$13$q;
+        g4$vz$1 = vz$13$q;
+        g4$start_x$1 = x$13$q;
+        g4$vx$2 = vx$14$q;
+        g4$vy$2 = vy$14$q;
+        g4$vz$2 = vz$14$q;
+        g4$start_x$2 = x$14$q;
+        g4$vc$0 = vc$36$q;
+        g4$vc$1 = vc$37$q;
+        g4$vc$2 = vc$38$q;
+        g4$vc$3 = vc$39$q;
+        g4$vc$4 = vc$40$q;
+        g4$vc$5 = vc$41$q;
+        g4$vc$6 = vc$42$q;
+        g4$vc$7 = vc$43$q;
+        g4$vc$8 = vc$44$q;
+        g4$crosses = crosses$4$q;
+        g4$maj_left = maj_left$4;
         area_abs = area$q;
         if (area$q[area_msb]) begin
             area_abs = ((32'h0) & 34'h3ffffffff) - area$q;
@@ -15447,6 +16082,10 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             xi$0 = g3$xi$0;
             ed$0 = g3$ed16$0[(32'h0)+:(21)];
         end
+        if (view_res$1 == 32'h4) begin
+            xi$0 = g4$xi$0;
+            ed$0 = g4$ed16$0[(32'h0)+:(21)];
+        end
         if (at_res$1 & (view_res_w$1 == 0)) begin
             x$0$d = xi$0 + q_n + r_pos;
             r$0$d = 32'h0;
@@ -15494,6 +16133,10 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             xi$1 = g3$xi$1;
             ed$1 = g3$ed16$1[(32'h0)+:(21)];
         end
+        if (view_res$3 == 32'h4) begin
+            xi$1 = g4$xi$1;
+            ed$1 = g4$ed16$1[(32'h0)+:(21)];
+        end
         if (at_res$3 & (view_res_w$3 == 0)) begin
             x$1$d = xi$1 + q_n + r_pos;
             r$1$d = 32'h0;
@@ -15540,6 +16183,10 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         if (view_res$5 == 32'h3) begin
             xi$2 = g3$xi$2;
             ed$2 = g3$ed16$2[(32'h0)+:(21)];
+        end
+        if (view_res$5 == 32'h4) begin
+            xi$2 = g4$xi$2;
+            ed$2 = g4$ed16$2[(32'h0)+:(21)];
         end
         if (at_res$5 & (view_res_w$5 == 0)) begin
             x$2$d = xi$2 + q_n + r_pos;
@@ -15660,6 +16307,8 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         delta$10 = g2$kdy$0[(32'h0)+:(19)];
         delta$12 = g3$kdx$0[(32'h0)+:(19)];
         delta$14 = g3$kdy$0[(32'h0)+:(19)];
+        delta$16 = g4$kdx$0[(32'h0)+:(19)];
+        delta$18 = g4$kdy$0[(32'h0)+:(19)];
         delta$1 = g0$kdx$1[(32'h0)+:(19)];
         delta$3 = g0$kdy$1[(32'h0)+:(19)];
         delta$5 = g1$kdx$1[(32'h0)+:(19)];
@@ -15668,6 +16317,8 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         delta$11 = g2$kdy$1[(32'h0)+:(19)];
         delta$13 = g3$kdx$1[(32'h0)+:(19)];
         delta$15 = g3$kdy$1[(32'h0)+:(19)];
+        delta$17 = g4$kdx$1[(32'h0)+:(19)];
+        delta$19 = g4$kdy$1[(32'h0)+:(19)];
         eq_b$0 = delta$0;
         if (maj_left$0) begin
             eq_b$0 = ((32'h0) & 19'h7ffff) - delta$0;
@@ -15731,6 +16382,22 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         eq_b$15 = delta$15;
         if (maj_left$3) begin
             eq_b$15 = ((32'h0) & 19'h7ffff) - delta$15;
+        end
+        eq_b$16 = delta$16;
+        if (maj_left$4) begin
+            eq_b$16 = ((32'h0) & 19'h7ffff) - delta$16;
+        end
+        eq_b$17 = delta$17;
+        if (maj_left$4) begin
+            eq_b$17 = ((32'h0) & 19'h7ffff) - delta$17;
+        end
+        eq_b$18 = delta$18;
+        if (maj_left$4) begin
+            eq_b$18 = ((32'h0) & 19'h7ffff) - delta$18;
+        end
+        eq_b$19 = delta$19;
+        if (maj_left$4) begin
+            eq_b$19 = ((32'h0) & 19'h7ffff) - delta$19;
         end
         op_e$0 = eq_b$0;
         op_e$1 = eq_b$1;
@@ -16172,6 +16839,138 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         if (view$62 == 32'h3) begin
             op_s$23 = g3$off_y$2;
         end
+        if (view$8 == 32'h4) begin
+            op_e$0 = eq_b$16;
+        end
+        if (view$9 == 32'h4) begin
+            op_e$1 = eq_b$17;
+        end
+        if (view$10 == 32'h4) begin
+            op_e$2 = eq_b$18;
+        end
+        if (view$11 == 32'h4) begin
+            op_e$3 = eq_b$19;
+        end
+        if (view$12 == 32'h4) begin
+            op_g$0 = g4$dmaj$0;
+        end
+        if (view$13 == 32'h4) begin
+            op_g$1 = g4$dbot$0;
+        end
+        if (view$14 == 32'h4) begin
+            op_g$2 = g4$dbot$0;
+        end
+        if (view$15 == 32'h4) begin
+            op_g$3 = g4$dmaj$0;
+        end
+        if (view$16 == 32'h4) begin
+            op_g$4 = g4$dmaj$1;
+        end
+        if (view$17 == 32'h4) begin
+            op_g$5 = g4$dbot$1;
+        end
+        if (view$18 == 32'h4) begin
+            op_g$6 = g4$dbot$1;
+        end
+        if (view$19 == 32'h4) begin
+            op_g$7 = g4$dmaj$1;
+        end
+        if (view$20 == 32'h4) begin
+            op_g$8 = g4$dmaj$2;
+        end
+        if (view$21 == 32'h4) begin
+            op_g$9 = g4$dbot$2;
+        end
+        if (view$22 == 32'h4) begin
+            op_g$10 = g4$dbot$2;
+        end
+        if (view$23 == 32'h4) begin
+            op_g$11 = g4$dmaj$2;
+        end
+        if (view$24 == 32'h4) begin
+            op_g$12 = g4$dmaj$3;
+        end
+        if (view$25 == 32'h4) begin
+            op_g$13 = g4$dbot$3;
+        end
+        if (view$26 == 32'h4) begin
+            op_g$14 = g4$dbot$3;
+        end
+        if (view$27 == 32'h4) begin
+            op_g$15 = g4$dmaj$3;
+        end
+        if (view$28 == 32'h4) begin
+            op_s$0 = g4$off_x$0;
+        end
+        if (view$29 == 32'h4) begin
+            op_s$1 = g4$off_y$0;
+        end
+        if (view$31 == 32'h4) begin
+            op_s$2 = g4$off_x$0;
+        end
+        if (view$32 == 32'h4) begin
+            op_s$3 = g4$off_y$0;
+        end
+        if (view$34 == 32'h4) begin
+            op_s$4 = g4$off_x$0;
+        end
+        if (view$35 == 32'h4) begin
+            op_s$5 = g4$off_y$0;
+        end
+        if (view$37 == 32'h4) begin
+            op_s$6 = g4$off_x$0;
+        end
+        if (view$38 == 32'h4) begin
+            op_s$7 = g4$off_y$0;
+        end
+        if (view$40 == 32'h4) begin
+            op_s$8 = g4$off_x$1;
+        end
+        if (view$41 == 32'h4) begin
+            op_s$9 = g4$off_y$1;
+        end
+        if (view$43 == 32'h4) begin
+            op_s$10 = g4$off_x$1;
+        end
+        if (view$44 == 32'h4) begin
+            op_s$11 = g4$off_y$1;
+        end
+        if (view$46 == 32'h4) begin
+            op_s$12 = g4$off_x$1;
+        end
+        if (view$47 == 32'h4) begin
+            op_s$13 = g4$off_y$1;
+        end
+        if (view$49 == 32'h4) begin
+            op_s$14 = g4$off_x$1;
+        end
+        if (view$50 == 32'h4) begin
+            op_s$15 = g4$off_y$1;
+        end
+        if (view$52 == 32'h4) begin
+            op_s$16 = g4$off_x$2;
+        end
+        if (view$53 == 32'h4) begin
+            op_s$17 = g4$off_y$2;
+        end
+        if (view$55 == 32'h4) begin
+            op_s$18 = g4$off_x$2;
+        end
+        if (view$56 == 32'h4) begin
+            op_s$19 = g4$off_y$2;
+        end
+        if (view$58 == 32'h4) begin
+            op_s$20 = g4$off_x$2;
+        end
+        if (view$59 == 32'h4) begin
+            op_s$21 = g4$off_y$2;
+        end
+        if (view$61 == 32'h4) begin
+            op_s$22 = g4$off_x$2;
+        end
+        if (view$62 == 32'h4) begin
+            op_s$23 = g4$off_y$2;
+        end
         ddx$0 = gx$0$q >> gsh$0;
         ddy$0 = gy$0$q >> gsh$0;
         ddx$1 = gx$1$q >> gsh$1;
@@ -16190,6 +16989,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         if (view_handover == 32'h3) begin
             attr0$0 = g3$attr0$0;
         end
+        if (view_handover == 32'h4) begin
+            attr0$0 = g4$attr0$0;
+        end
         attr0$1 = g0$attr0$1;
         if (view_handover == 32'h1) begin
             attr0$1 = g1$attr0$1;
@@ -16199,6 +17001,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         end
         if (view_handover == 32'h3) begin
             attr0$1 = g3$attr0$1;
+        end
+        if (view_handover == 32'h4) begin
+            attr0$1 = g4$attr0$1;
         end
         attr0$2 = g0$attr0$2;
         if (view_handover == 32'h1) begin
@@ -16210,6 +17015,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         if (view_handover == 32'h3) begin
             attr0$2 = g3$attr0$2;
         end
+        if (view_handover == 32'h4) begin
+            attr0$2 = g4$attr0$2;
+        end
         attr0$3 = g0$attr0$3;
         if (view_handover == 32'h1) begin
             attr0$3 = g1$attr0$3;
@@ -16219,6 +17027,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         end
         if (view_handover == 32'h3) begin
             attr0$3 = g3$attr0$3;
+        end
+        if (view_handover == 32'h4) begin
+            attr0$3 = g4$attr0$3;
         end
         op_q$0 = q$0$q;
         if (view$30 == 1) begin
@@ -19705,58 +20516,82 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         if (at_handover) begin
             plane$11$d = (plane$11$q >> frac) + (attr0$3 << bsh$3);
         end
-        if (last_copy == 32'h0) begin
-            out$walk = g0$up;
-            out$maj_left = maj_left$0;
-            out$maj_j = g0$cy$0[(frac)+:(13)];
-            out$maj_count = g0$count$0;
-            out$maj_d = g0$ed16$0[(32'h0)+:(21)];
-            out$short0_j = g0$cy$1[(frac)+:(13)];
-            out$short0_count = g0$count$1;
-            out$short0_d = g0$ed16$1[(32'h0)+:(21)];
-            out$short1_j = g0$cy$2[(frac)+:(13)];
-            out$short1_count = g0$count$2;
-            out$short1_d = g0$ed16$2[(32'h0)+:(21)];
+        if (at_handover & (view_handover == 32'h0)) begin
+            o_walk$d = g0$up;
+            o_maj_left$d = maj_left$0;
+            o_j$0$d = g0$cy$0[(frac)+:(13)];
+            o_count$0$d = g0$count$0;
+            o_d$0$d = g0$ed16$0[(32'h0)+:(21)];
+            o_j$1$d = g0$cy$1[(frac)+:(13)];
+            o_count$1$d = g0$count$1;
+            o_d$1$d = g0$ed16$1[(32'h0)+:(21)];
+            o_j$2$d = g0$cy$2[(frac)+:(13)];
+            o_count$2$d = g0$count$2;
+            o_d$2$d = g0$ed16$2[(32'h0)+:(21)];
         end
-        if (last_copy == 32'h1) begin
-            out$walk = g1$up;
-            out$maj_left = maj_left$1;
-            out$maj_j = g1$cy$0[(frac)+:(13)];
-            out$maj_count = g1$count$0;
-            out$maj_d = g1$ed16$0[(32'h0)+:(21)];
-            out$short0_j = g1$cy$1[(frac)+:(13)];
-            out$short0_count = g1$count$1;
-            out$short0_d = g1$ed16$1[(32'h0)+:(21)];
-            out$short1_j = g1$cy$2[(frac)+:(13)];
-            out$short1_count = g1$count$2;
-            out$short1_d = g1$ed16$2[(32'h0)+:(21)];
+        if (at_handover & (view_handover == 32'h1)) begin
+            o_walk$d = g1$up;
+            o_maj_left$d = maj_left$1;
+            o_j$0$d = g1$cy$0[(frac)+:(13)];
+            o_count$0$d = g1$count$0;
+            o_d$0$d = g1$ed16$0[(32'h0)+:(21)];
+            o_j$1$d = g1$cy$1[(frac)+:(13)];
+            o_count$1$d = g1$count$1;
+            o_d$1$d = g1$ed16$1[(32'h0)+:(21)];
+            o_j$2$d = g1$cy$2[(frac)+:(13)];
+            o_count$2$d = g1$count$2;
+            o_d$2$d = g1$ed16$2[(32'h0)+:(21)];
         end
-        if (last_copy == 32'h2) begin
-            out$walk = g2$up;
-            out$maj_left = maj_left$2;
-            out$maj_j = g2$cy$0[(frac)+:(13)];
-            out$maj_count = g2$count$0;
-            out$maj_d = g2$ed16$0[(32'h0)+:(21)];
-            out$short0_j = g2$cy$1[(frac)+:(13)];
-            out$short0_count = g2$count$1;
-            out$short0_d = g2$ed16$1[(32'h0)+:(21)];
-            out$short1_j = g2$cy$2[(frac)+:(13)];
-            out$short1_count = g2$count$2;
-            out$short1_d = g2$ed16$2[(32'h0)+:(21)];
+        if (at_handover & (view_handover == 32'h2)) begin
+            o_walk$d = g2$up;
+            o_maj_left$d = maj_left$2;
+            o_j$0$d = g2$cy$0[(frac)+:(13)];
+            o_count$0$d = g2$count$0;
+            o_d$0$d = g2$ed16$0[(32'h0)+:(21)];
+            o_j$1$d = g2$cy$1[(frac)+:(13)];
+            o_count$1$d = g2$count$1;
+            o_d$1$d = g2$ed16$1[(32'h0)+:(21)];
+            o_j$2$d = g2$cy$2[(frac)+:(13)];
+            o_count$2$d = g2$count$2;
+            o_d$2$d = g2$ed16$2[(32'h0)+:(21)];
         end
-        if (last_copy == 32'h3) begin
-            out$walk = g3$up;
-            out$maj_left = maj_left$3;
-            out$maj_j = g3$cy$0[(frac)+:(13)];
-            out$maj_count = g3$count$0;
-            out$maj_d = g3$ed16$0[(32'h0)+:(21)];
-            out$short0_j = g3$cy$1[(frac)+:(13)];
-            out$short0_count = g3$count$1;
-            out$short0_d = g3$ed16$1[(32'h0)+:(21)];
-            out$short1_j = g3$cy$2[(frac)+:(13)];
-            out$short1_count = g3$count$2;
-            out$short1_d = g3$ed16$2[(32'h0)+:(21)];
+        if (at_handover & (view_handover == 32'h3)) begin
+            o_walk$d = g3$up;
+            o_maj_left$d = maj_left$3;
+            o_j$0$d = g3$cy$0[(frac)+:(13)];
+            o_count$0$d = g3$count$0;
+            o_d$0$d = g3$ed16$0[(32'h0)+:(21)];
+            o_j$1$d = g3$cy$1[(frac)+:(13)];
+            o_count$1$d = g3$count$1;
+            o_d$1$d = g3$ed16$1[(32'h0)+:(21)];
+            o_j$2$d = g3$cy$2[(frac)+:(13)];
+            o_count$2$d = g3$count$2;
+            o_d$2$d = g3$ed16$2[(32'h0)+:(21)];
         end
+        if (at_handover & (view_handover == 32'h4)) begin
+            o_walk$d = g4$up;
+            o_maj_left$d = maj_left$4;
+            o_j$0$d = g4$cy$0[(frac)+:(13)];
+            o_count$0$d = g4$count$0;
+            o_d$0$d = g4$ed16$0[(32'h0)+:(21)];
+            o_j$1$d = g4$cy$1[(frac)+:(13)];
+            o_count$1$d = g4$count$1;
+            o_d$1$d = g4$ed16$1[(32'h0)+:(21)];
+            o_j$2$d = g4$cy$2[(frac)+:(13)];
+            o_count$2$d = g4$count$2;
+            o_d$2$d = g4$ed16$2[(32'h0)+:(21)];
+        end
+        out$walk = o_walk$q;
+        out$maj_left = o_maj_left$q;
+        out$maj_j = o_j$0$q;
+        out$maj_count = o_count$0$q;
+        out$maj_d = o_d$0$q;
+        out$short0_j = o_j$1$q;
+        out$short0_count = o_count$1$q;
+        out$short0_d = o_d$1$q;
+        out$short1_j = o_j$2$q;
+        out$short1_count = o_count$2$q;
+        out$short1_d = o_d$2$q;
         out$maj_x = x$6$q[(32'h0)+:(13)];
         out$maj_r = r$6$q;
         out$maj_q = q$6$q[(32'h0)+:(17)];
@@ -22360,6 +23195,25 @@ module raster_top$core$triangle_setup$crosses$3(d,q,clock);
 endmodule // raster_top$core$triangle_setup$crosses$3
 
 
+module raster_top$core$triangle_setup$crosses$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$crosses$4
+
+
 module raster_top$core$triangle_setup$ddx_o$0(d,q,clock);
     
     // Module arguments
@@ -24189,6 +25043,25 @@ module raster_top$core$triangle_setup$exp$3(d,q,clock);
 endmodule // raster_top$core$triangle_setup$exp$3
 
 
+module raster_top$core$triangle_setup$exp$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$exp$4
+
+
 module raster_top$core$triangle_setup$exp_e(d,q,clock);
     
     // Module arguments
@@ -25466,6 +26339,321 @@ module raster_top$core$triangle_setup$g3(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1
     end
     
 endmodule // raster_top$core$triangle_setup$g3
+
+
+module raster_top$core$triangle_setup$g4(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+    
+    // Module arguments
+    input wire  [15:0] vx$0;
+    input wire  [15:0] vx$1;
+    input wire  [15:0] vx$2;
+    input wire  [15:0] vy$0;
+    input wire  [15:0] vy$1;
+    input wire  [15:0] vy$2;
+    input wire  [17:0] vz$0;
+    input wire  [17:0] vz$1;
+    input wire  [17:0] vz$2;
+    input wire  [7:0] vc$0;
+    input wire  [7:0] vc$1;
+    input wire  [7:0] vc$2;
+    input wire  [7:0] vc$3;
+    input wire  [7:0] vc$4;
+    input wire  [7:0] vc$5;
+    input wire  [7:0] vc$6;
+    input wire  [7:0] vc$7;
+    input wire  [7:0] vc$8;
+    input wire  [5:0] crosses;
+    input wire  maj_left;
+    input wire  [18:0] start_x$0;
+    input wire  [18:0] start_x$1;
+    input wire  [18:0] start_x$2;
+    output reg  [57:0] kdx$0;
+    output reg  [57:0] kdx$1;
+    output reg  [57:0] kdx$2;
+    output reg  [56:0] kdy$0;
+    output reg  [56:0] kdy$1;
+    output reg  [56:0] kdy$2;
+    output reg  up;
+    output reg  [57:0] edx$0;
+    output reg  [57:0] edx$1;
+    output reg  [57:0] edx$2;
+    output reg  [56:0] edy$0;
+    output reg  [56:0] edy$1;
+    output reg  [56:0] edy$2;
+    output reg  [33:0] edy_d$0;
+    output reg  [33:0] edy_d$1;
+    output reg  [33:0] edy_d$2;
+    output reg  [33:0] ed16$0;
+    output reg  [33:0] ed16$1;
+    output reg  [33:0] ed16$2;
+    output reg  [18:0] cy$0;
+    output reg  [18:0] cy$1;
+    output reg  [18:0] cy$2;
+    output reg  [12:0] count$0;
+    output reg  [12:0] count$1;
+    output reg  [12:0] count$2;
+    output reg  [18:0] toff$0;
+    output reg  [18:0] toff$1;
+    output reg  [18:0] toff$2;
+    output reg  [18:0] xf$0;
+    output reg  [18:0] xf$1;
+    output reg  [18:0] xf$2;
+    output reg  [18:0] xi$0;
+    output reg  [18:0] xi$1;
+    output reg  [18:0] xi$2;
+    output reg  [18:0] off_x$0;
+    output reg  [18:0] off_x$1;
+    output reg  [18:0] off_x$2;
+    output reg  [18:0] off_y$0;
+    output reg  [18:0] off_y$1;
+    output reg  [18:0] off_y$2;
+    output reg  [18:0] dmaj$0;
+    output reg  [18:0] dmaj$1;
+    output reg  [18:0] dmaj$2;
+    output reg  [18:0] dmaj$3;
+    output reg  [18:0] dbot$0;
+    output reg  [18:0] dbot$1;
+    output reg  [18:0] dbot$2;
+    output reg  [18:0] dbot$3;
+    output reg  [39:0] attr0$0;
+    output reg  [39:0] attr0$1;
+    output reg  [39:0] attr0$2;
+    output reg  [39:0] attr0$3;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    localparam  half_m1 = 19'b111;
+    localparam  half = 19'b1000;
+    localparam  int_mask = 19'b1111111111111110000;
+    localparam  frac_mask = 19'b1111;
+    localparam  xy_msb = 8'hf;
+    localparam  z_msb = 8'h11;
+    localparam  nb_msb = 8'h12;
+    localparam  xy_ext = 58'h3ffffffffff0000;
+    localparam  y_ext = 57'h1ffffffffff0000;
+    localparam  z_ext = 19'b1000000000000000000;
+    localparam  shr_ext = 19'b1111000000000000000;
+    localparam  top_bit = 8'h2;
+    localparam  bottom_bit = 8'h3;
+    
+    // Local signals
+    reg  [57:0] xw$0;
+    reg  [57:0] xw$1;
+    reg  [57:0] xw$2;
+    reg  [56:0] yw$0;
+    reg  [56:0] yw$1;
+    reg  [56:0] yw$2;
+    reg  [18:0] zn$0;
+    reg  [18:0] zn$1;
+    reg  [18:0] zn$2;
+    reg  [18:0] cn$0;
+    reg  [18:0] cn$1;
+    reg  [18:0] cn$2;
+    reg  [18:0] cn$3;
+    reg  [18:0] cn$4;
+    reg  [18:0] cn$5;
+    reg  [18:0] cn$6;
+    reg  [18:0] cn$7;
+    reg  [18:0] cn$8;
+    reg  [18:0] xn$0;
+    reg  [18:0] xn$1;
+    reg  [18:0] xn$2;
+    reg  [18:0] yn$0;
+    reg  [18:0] yn$1;
+    reg  [18:0] yn$2;
+    reg  [18:0] cv$0;
+    reg  [18:0] cv$1;
+    reg  [18:0] cv$2;
+    reg  [12:0] span$0;
+    reg  [12:0] span$1;
+    reg  [12:0] span$2;
+    reg  [18:0] diff$0;
+    reg  [18:0] diff$1;
+    reg  [18:0] diff$2;
+    reg  [18:0] bx$0;
+    reg  [18:0] bx$1;
+    reg  [18:0] bx$2;
+    reg  [18:0] by$0;
+    reg  [18:0] by$1;
+    reg  [18:0] by$2;
+    reg  [18:0] xb$0;
+    reg  [18:0] xb$1;
+    reg  [18:0] xb$2;
+    reg  [18:0] tracked$0;
+    reg  [18:0] tracked$1;
+    reg  [18:0] tracked$2;
+    
+    // Update code
+    always @(*) begin
+        xw$0 = ((vx$0) & 58'h3ffffffffffffff);
+        if (vx$0[xy_msb]) begin
+            xw$0 = ((vx$0) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$1 = ((vx$1) & 58'h3ffffffffffffff);
+        if (vx$1[xy_msb]) begin
+            xw$1 = ((vx$1) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$2 = ((vx$2) & 58'h3ffffffffffffff);
+        if (vx$2[xy_msb]) begin
+            xw$2 = ((vx$2) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        yw$0 = ((vy$0) & 57'h1ffffffffffffff);
+        if (vy$0[xy_msb]) begin
+            yw$0 = ((vy$0) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$1 = ((vy$1) & 57'h1ffffffffffffff);
+        if (vy$1[xy_msb]) begin
+            yw$1 = ((vy$1) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$2 = ((vy$2) & 57'h1ffffffffffffff);
+        if (vy$2[xy_msb]) begin
+            yw$2 = ((vy$2) & 57'h1ffffffffffffff) | y_ext;
+        end
+        zn$0 = ((vz$0) & 19'h7ffff);
+        if (vz$0[z_msb]) begin
+            zn$0 = ((vz$0) & 19'h7ffff) | z_ext;
+        end
+        zn$1 = ((vz$1) & 19'h7ffff);
+        if (vz$1[z_msb]) begin
+            zn$1 = ((vz$1) & 19'h7ffff) | z_ext;
+        end
+        zn$2 = ((vz$2) & 19'h7ffff);
+        if (vz$2[z_msb]) begin
+            zn$2 = ((vz$2) & 19'h7ffff) | z_ext;
+        end
+        cn$0 = ((vc$0) & 19'h7ffff);
+        cn$1 = ((vc$1) & 19'h7ffff);
+        cn$2 = ((vc$2) & 19'h7ffff);
+        cn$3 = ((vc$3) & 19'h7ffff);
+        cn$4 = ((vc$4) & 19'h7ffff);
+        cn$5 = ((vc$5) & 19'h7ffff);
+        cn$6 = ((vc$6) & 19'h7ffff);
+        cn$7 = ((vc$7) & 19'h7ffff);
+        cn$8 = ((vc$8) & 19'h7ffff);
+        xn$0 = xw$0[(32'h0)+:(19)];
+        yn$0 = yw$0[(32'h0)+:(19)];
+        cv$0 = ((yn$0 + half_m1) & int_mask) | half;
+        xn$1 = xw$1[(32'h0)+:(19)];
+        yn$1 = yw$1[(32'h0)+:(19)];
+        cv$1 = ((yn$1 + half_m1) & int_mask) | half;
+        xn$2 = xw$2[(32'h0)+:(19)];
+        yn$2 = yw$2[(32'h0)+:(19)];
+        cv$2 = ((yn$2 + half_m1) & int_mask) | half;
+        kdx$0 = xw$2 - xw$0;
+        kdy$0 = yw$2 - yw$0;
+        diff$0 = cv$2 - cv$0;
+        kdx$1 = xw$1 - xw$0;
+        kdy$1 = yw$1 - yw$0;
+        diff$1 = cv$1 - cv$0;
+        kdx$2 = xw$2 - xw$1;
+        kdy$2 = yw$2 - yw$1;
+        diff$2 = cv$2 - cv$1;
+        span$0 = diff$0[(frac)+:(13)];
+        if (diff$0[nb_msb]) begin
+            span$0 = 32'h0;
+        end
+        span$1 = diff$1[(frac)+:(13)];
+        if (diff$1[nb_msb]) begin
+            span$1 = 32'h0;
+        end
+        span$2 = diff$2[(frac)+:(13)];
+        if (diff$2[nb_msb]) begin
+            span$2 = 32'h0;
+        end
+        up = crosses[top_bit] & ~crosses[bottom_bit];
+        edx$0 = kdx$0;
+        edy$0 = kdy$0;
+        count$0 = span$0;
+        edx$1 = kdx$1;
+        edy$1 = kdy$1;
+        count$1 = span$1;
+        edx$2 = kdx$2;
+        edy$2 = kdy$2;
+        count$2 = span$2;
+        bx$0 = xn$0;
+        by$0 = yn$0;
+        cy$0 = cv$0;
+        bx$1 = xn$0;
+        by$1 = yn$0;
+        cy$1 = cv$0;
+        bx$2 = xn$1;
+        by$2 = yn$1;
+        cy$2 = cv$1;
+        if (up) begin
+            edx$1 = kdx$2;
+            edy$1 = kdy$2;
+            count$1 = span$2;
+            edx$2 = kdx$1;
+            edy$2 = kdy$1;
+            count$2 = span$1;
+            bx$0 = xn$2;
+            by$0 = yn$2;
+            cy$0 = cv$2 - (frac_mask + 32'h1);
+            bx$1 = xn$2;
+            by$1 = yn$2;
+            cy$1 = cv$2 - (frac_mask + 32'h1);
+            cy$2 = cv$1 - (frac_mask + 32'h1);
+        end
+        edy_d$0 = ((edy$0) & 34'h3ffffffff);
+        edy_d$1 = ((edy$1) & 34'h3ffffffff);
+        edy_d$2 = ((edy$2) & 34'h3ffffffff);
+        tracked$0 = start_x$0 - 32'h1;
+        if (maj_left) begin
+            tracked$0 = start_x$0;
+        end
+        tracked$1 = start_x$1;
+        if (maj_left) begin
+            tracked$1 = start_x$1 - 32'h1;
+        end
+        tracked$2 = start_x$2;
+        if (maj_left) begin
+            tracked$2 = start_x$2 - 32'h1;
+        end
+        ed16$0 = edy_d$0 << frac;
+        toff$0 = cy$0 - by$0;
+        xb$0 = bx$0 - half;
+        xf$0 = xb$0 & frac_mask;
+        xi$0 = xb$0 >> frac;
+        if (xb$0[nb_msb]) begin
+            xi$0 = (xb$0 >> frac) | shr_ext;
+        end
+        off_y$0 = cy$0 - yn$0;
+        off_x$0 = (tracked$0 << frac) + half - xn$0;
+        ed16$1 = edy_d$1 << frac;
+        toff$1 = cy$1 - by$1;
+        xb$1 = bx$1 - half;
+        xf$1 = xb$1 & frac_mask;
+        xi$1 = xb$1 >> frac;
+        if (xb$1[nb_msb]) begin
+            xi$1 = (xb$1 >> frac) | shr_ext;
+        end
+        off_y$1 = cy$1 - yn$0;
+        off_x$1 = (tracked$1 << frac) + half - xn$0;
+        ed16$2 = edy_d$2 << frac;
+        toff$2 = cy$2 - by$2;
+        xb$2 = bx$2 - half;
+        xf$2 = xb$2 & frac_mask;
+        xi$2 = xb$2 >> frac;
+        if (xb$2[nb_msb]) begin
+            xi$2 = (xb$2 >> frac) | shr_ext;
+        end
+        off_y$2 = cy$2 - yn$0;
+        off_x$2 = (tracked$2 << frac) + half - xn$0;
+        dmaj$0 = zn$2 - zn$0;
+        dbot$0 = zn$1 - zn$0;
+        attr0$0 = ((zn$0) & 40'hffffffffff);
+        attr0$1 = ((vc$0) & 40'hffffffffff);
+        attr0$2 = ((vc$1) & 40'hffffffffff);
+        attr0$3 = ((vc$2) & 40'hffffffffff);
+        dmaj$1 = cn$6 - cn$0;
+        dbot$1 = cn$3 - cn$0;
+        dmaj$2 = cn$7 - cn$1;
+        dbot$2 = cn$4 - cn$1;
+        dmaj$3 = cn$8 - cn$2;
+        dbot$3 = cn$5 - cn$2;
+    end
+    
+endmodule // raster_top$core$triangle_setup$g4
 
 
 module raster_top$core$triangle_setup$gx$0(d,q,clock);
@@ -27301,6 +28489,215 @@ module raster_top$core$triangle_setup$num$2(d,q,clock);
 endmodule // raster_top$core$triangle_setup$num$2
 
 
+module raster_top$core$triangle_setup$o_count$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$o_count$0
+
+
+module raster_top$core$triangle_setup$o_count$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$o_count$1
+
+
+module raster_top$core$triangle_setup$o_count$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$o_count$2
+
+
+module raster_top$core$triangle_setup$o_d$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$o_d$0
+
+
+module raster_top$core$triangle_setup$o_d$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$o_d$1
+
+
+module raster_top$core$triangle_setup$o_d$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$o_d$2
+
+
+module raster_top$core$triangle_setup$o_j$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$o_j$0
+
+
+module raster_top$core$triangle_setup$o_j$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$o_j$1
+
+
+module raster_top$core$triangle_setup$o_j$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$o_j$2
+
+
+module raster_top$core$triangle_setup$o_maj_left(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$o_maj_left
+
+
+module raster_top$core$triangle_setup$o_walk(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$o_walk
+
+
 module raster_top$core$triangle_setup$off_grid_r(d,q,clock);
     
     // Module arguments
@@ -27719,6 +29116,63 @@ module raster_top$core$triangle_setup$q$11(d,q,clock);
 endmodule // raster_top$core$triangle_setup$q$11
 
 
+module raster_top$core$triangle_setup$q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$q$12
+
+
+module raster_top$core$triangle_setup$q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$q$13
+
+
+module raster_top$core$triangle_setup$q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$q$14
+
+
 module raster_top$core$triangle_setup$q$2(d,q,clock);
     
     // Module arguments
@@ -27945,6 +29399,63 @@ module raster_top$core$triangle_setup$r$11(d,q,clock);
     end
           
 endmodule // raster_top$core$triangle_setup$r$11
+
+
+module raster_top$core$triangle_setup$r$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$r$12
+
+
+module raster_top$core$triangle_setup$r$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$r$13
+
+
+module raster_top$core$triangle_setup$r$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$r$14
 
 
 module raster_top$core$triangle_setup$r$2(d,q,clock);
@@ -28308,6 +29819,63 @@ module raster_top$core$triangle_setup$rho$11(d,q,clock);
 endmodule // raster_top$core$triangle_setup$rho$11
 
 
+module raster_top$core$triangle_setup$rho$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$rho$12
+
+
+module raster_top$core$triangle_setup$rho$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$rho$13
+
+
+module raster_top$core$triangle_setup$rho$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$rho$14
+
+
 module raster_top$core$triangle_setup$rho$2(d,q,clock);
     
     // Module arguments
@@ -28536,6 +30104,25 @@ module raster_top$core$triangle_setup$sign$3(d,q,clock);
 endmodule // raster_top$core$triangle_setup$sign$3
 
 
+module raster_top$core$triangle_setup$sign$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$sign$4
+
+
 module raster_top$core$triangle_setup$t$0(d,q,clock);
     
     // Module arguments
@@ -28610,6 +30197,25 @@ module raster_top$core$triangle_setup$t$3(d,q,clock);
     end
           
 endmodule // raster_top$core$triangle_setup$t$3
+
+
+module raster_top$core$triangle_setup$t$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$t$4
 
 
 module raster_top$core$triangle_setup$valid_r(d,q,clock);
@@ -29201,6 +30807,82 @@ module raster_top$core$triangle_setup$vc$35(d,q,clock);
 endmodule // raster_top$core$triangle_setup$vc$35
 
 
+module raster_top$core$triangle_setup$vc$36(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$36
+
+
+module raster_top$core$triangle_setup$vc$37(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$37
+
+
+module raster_top$core$triangle_setup$vc$38(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$38
+
+
+module raster_top$core$triangle_setup$vc$39(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$39
+
+
 module raster_top$core$triangle_setup$vc$4(d,q,clock);
     
     // Module arguments
@@ -29218,6 +30900,101 @@ module raster_top$core$triangle_setup$vc$4(d,q,clock);
     end
           
 endmodule // raster_top$core$triangle_setup$vc$4
+
+
+module raster_top$core$triangle_setup$vc$40(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$40
+
+
+module raster_top$core$triangle_setup$vc$41(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$41
+
+
+module raster_top$core$triangle_setup$vc$42(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$42
+
+
+module raster_top$core$triangle_setup$vc$43(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$43
+
+
+module raster_top$core$triangle_setup$vc$44(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vc$44
 
 
 module raster_top$core$triangle_setup$vc$5(d,q,clock);
@@ -29389,6 +31166,63 @@ module raster_top$core$triangle_setup$vx$11(d,q,clock);
     end
           
 endmodule // raster_top$core$triangle_setup$vx$11
+
+
+module raster_top$core$triangle_setup$vx$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vx$12
+
+
+module raster_top$core$triangle_setup$vx$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vx$13
+
+
+module raster_top$core$triangle_setup$vx$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vx$14
 
 
 module raster_top$core$triangle_setup$vx$2(d,q,clock);
@@ -29619,6 +31453,63 @@ module raster_top$core$triangle_setup$vy$11(d,q,clock);
 endmodule // raster_top$core$triangle_setup$vy$11
 
 
+module raster_top$core$triangle_setup$vy$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vy$12
+
+
+module raster_top$core$triangle_setup$vy$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vy$13
+
+
+module raster_top$core$triangle_setup$vy$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vy$14
+
+
 module raster_top$core$triangle_setup$vy$2(d,q,clock);
     
     // Module arguments
@@ -29847,6 +31738,63 @@ module raster_top$core$triangle_setup$vz$11(d,q,clock);
 endmodule // raster_top$core$triangle_setup$vz$11
 
 
+module raster_top$core$triangle_setup$vz$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vz$12
+
+
+module raster_top$core$triangle_setup$vz$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vz$13
+
+
+module raster_top$core$triangle_setup$vz$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$vz$14
+
+
 module raster_top$core$triangle_setup$vz$2(d,q,clock);
     
     // Module arguments
@@ -30073,6 +32021,63 @@ module raster_top$core$triangle_setup$x$11(d,q,clock);
     end
           
 endmodule // raster_top$core$triangle_setup$x$11
+
+
+module raster_top$core$triangle_setup$x$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$x$12
+
+
+module raster_top$core$triangle_setup$x$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$x$13
+
+
+module raster_top$core$triangle_setup$x$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$x$14
 
 
 module raster_top$core$triangle_setup$x$2(d,q,clock);

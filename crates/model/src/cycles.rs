@@ -223,7 +223,10 @@ mod tests {
         // 001's 7 multipliers and 5-stage divider: the schedule's latency and II
         // (`triangle_setup::schedule`, whose tests derive them).
         let s = Schedule::new(7, crate::divider::LATENCY as usize).unwrap();
-        assert_eq!(setup_timing(&Timing::default()), SetupTiming { latency: s.latency as u32, interval: s.interval as u32 });
+        assert_eq!(
+            setup_timing(&Timing::default()),
+            SetupTiming { latency: s.latency as u32, interval: s.interval as u32 }
+        );
         assert_eq!(setup_latency(&Timing::default()), s.latency as u32);
     }
 

@@ -37,8 +37,9 @@
 //! `model::cycles::Timing` has the same two switches.
 //!
 //! **Timing** (`model::cycles::scanline_frame` predicts it cycle for cycle when the memory
-//! never stalls): cull_sort 3 cycles; setup `model::cycles::setup_timing` (latency 21, a
-//! triangle every 10 cycles at K = 7, L = 5); the edge walk's first command 2 cycles after
+//! never stalls): cull_sort 3 cycles; setup `model::cycles::setup_timing` (latency 28, a
+//! triangle every 10 cycles at K = 7, L = 5, taken on that grid or when setup is empty);
+//! the edge walk's first command 2 cycles after
 //! it takes a triangle, then a scanline per cycle; the span FIFO passes a command straight
 //! through when empty; span's first pixel 2 cycles after it takes a command, then a pixel
 //! per cycle; the write 2 cycles after the pixel.
@@ -85,7 +86,7 @@ pub struct RasterTopCore {
     fifo: SpanFifo,
     span: Span,
     /// Triangles in setup (taken, not yet handed to the edge walk): up to one per copy of
-    /// its registers (`triangle_setup::COPIES_MAX`, 4).
+    /// its registers (`triangle_setup::COPIES_MAX`, 5).
     in_setup: DFF<Bits<3>>,
     taken: Signal<Local, Bit>,
     handed: Signal<Local, Bit>,

@@ -10,11 +10,12 @@
 //! `inc1`, `ddx`: `dz`/`dc`), which `edge_walk` takes on its end of the link. `count`
 //! reaches 2^(PIXEL-1) = 4096 (a triangle over the whole `xy` range): read it unsigned.
 //!
-//! **Datapath.** `K` multipliers ([`Mul`], `MUL_A` x `MUL_B` bits) reused over 64
+//! **Datapath.** `K` multipliers ([`PipelinedMul`], `MUL_A` x `MUL_B` bits) reused over 64
 //! products, and the shared divider ([`crate::divider::Divider`]), into which setup
-//! issues its seven divisions one per cycle in the model's order (`TriangleSetupOut::divisions`:
-//! 1/area, then per edge the start and the step of the exact edge walker). Each product
-//! is added into its destination register in the cycle it comes out; the model's wraps
+//! issues its seven divisions (`TriangleSetupOut::divisions`: 1/area, then per edge the
+//! start and the step of the exact edge walker), each in a cycle of its own. A multiplier
+//! registers its operands and its product, and each product is added into its destination
+//! register in the cycle it comes out (two after its operands went in); the model's wraps
 //! (`ctx.put`) are the registers' widths, its floor shifts bit slices:
 //!
 //! | phase | products (A x B) | into | model |
@@ -24,8 +25,8 @@
 //! | numerators | dy * (x fraction), dx * t per edge | `num` (exact) | `start_in` |
 //! | eq. (2) | (OneOverArea << (15 - exp)) * (+-e.d), 4 | `p` (`ooa_d`; for exp > 15 the product >> (exp - 15), floor) | `ooa_times` |
 //! | gradients | p * attribute deltas, 16 | `gx`, `gy` (mod 2^`ooa_d`); ddx, ddy are their slices | `grad` |
-//! | starts, increments | ddx * off_x, ddy * off_y, ddx * q per edge and attribute, 36 | `plane`, `inc0` (mod 2^`dz`) | `at`, `inc0` |
-//! | hand-over | - | `at = floor(plane / 2^s) + v0's`, `inc1 = inc0 + ddx` | `at`, `inc1` |
+//! | starts, increments | ddx * off_x, ddy * off_y, ddx * q per edge and attribute, 36 | `plane`, `inc0` and `inc1 = inc0 + ddx` (mod 2^`dz`) | `at`, `inc0`, `inc1` |
+//! | hand-over | - | `at = floor(plane / 2^s) + v0's` | `at` |
 //!
 //! The order of eq. (2) is the model's: `OOA * e.d` first (the four products every
 //! attribute shares), then times the attribute difference, so no register overflows where
@@ -33,39 +34,37 @@
 //! 40-bit lanes (`dz`); a colour keeps its low `dc`/`c_acc` bits, the only ones its
 //! format holds (modular arithmetic, `fx::formats`).
 //!
-//! **Schedule** ([`Schedule`]; `model::cycles::setup_timing` is the same). Cycle 0 takes
-//! the triangle. With 001's 7 multipliers and 5-stage divider the schedule is split: one
-//! multiplier does twice the area and the six edge numerators, the other six eq. (2), the
-//! gradients and the starts, so that setup can take the next triangle in the cycle this one
-//! reaches cycle 10 (II) and two are in flight. Twice the area is normalised into a register
-//! (cycle 3), and each division's operands into the divider's operand register
-//! ([`DIVIDER_OPERANDS`]), so that no path runs from the vertices into the divider:
+//! **Schedule** ([`Schedule`], `model::triangle_setup::schedule`, which the cycle model
+//! reads too). Cycle 0 takes the triangle. A modulo schedule: each multiplier and the
+//! divider are reserved once per cycle modulo II, so setup takes a triangle every II cycles
+//! (on the grid of the last one it took, or at once when it is empty) and three are in
+//! flight. With 001's 7 multipliers and 5-stage divider (the products' operand cycles; a
+//! product is added two cycles later):
 //!
 //! ```text
-//!  cycle       0    1  2   3     4   5  6  7  8  9  10   11 12 13  14 ... 19  20        21
-//!  input       take                                   take (the next triangle)
-//!  mult. 0          area   numerators: edge 0, 1, 2
-//!  normalise               norm
-//!  div. issue                    1/a s0 q0 s1 q1 s2 q2
-//!  div. result                                        1/a  s0 q0 s1 ...  q2 (16)
-//!  mult. 1-6                                          eq2  gradients starts, increments
-//!  output                                                                   hand-over valid
+//!  cycle       0    1     2  3  4    5    6  7  8 10 11  12   15 16 17  18 19 20 22 23 24  27       28
+//!  input       take                                 take (the next triangle, cycle 10)
+//!  products         area, numerators      (7 + 1)        eq2  gradients starts, increments (7 7 7 2 7 6)
+//!  normalise                   norm
+//!  div. issue       q0    q1 q2 s0   1/a  s1 s2
+//!  div. result                                   1/a
+//!  output                                                                               hand-over valid
 //! ```
 //!
-//! Latency 21 (001 Table 3: 34), II 10: the six multipliers' 60 slots hold the 56 products
-//! of eq. (2) to the starts, and the divider takes the seven divisions in 7 cycles. The
-//! triangle's registers (vertices, crossings, the area's sign and exponent) are copied every
-//! II cycles, `Schedule::copies` of them: cycle c reads copy (c - 1) / II through that
-//! copy's [`Geometry`] (`g0` to `g3`), since by then the next triangle is in the copy before.
-//! Each other register is written by the next triangle only after this one has read it for
-//! the last time, which `Schedule::build` checks and II covers. So a deeper divider (for a
-//! faster clock) keeps II at 10: latency 6 + L + 10, four copies up to L = 24 (at 25, II
-//! 11). While a result waits for the edge walk, all of setup waits (`run` low: counters,
-//! registers, the divider and its operand register hold), the triangles behind it too.
-//! With fewer multipliers the sequential schedule (each phase on all of them in turn, II =
-//! latency - 2) can be the better one: `K` (1 to 7, `model::cycles::SETUP_MULTIPLIERS_MAX`:
-//! with more, the last edge's products would wait for its divisions) trades latency and II
-//! for area, 67 cycles and II 65 with one multiplier; the divider's `L` stages likewise.
+//! Latency 28 (001 Table 3: 34), II 10 = ceil(64 / 7). Twice the area is normalised into a
+//! register, each division's operands go into the divider's operand register
+//! ([`DIVIDER_OPERANDS`]) and 1/area, shifted for eq. (2), into a register, so that no path
+//! runs from the vertices into the divider or from the divider into a multiplier. The
+//! triangle's long-lived registers (vertices, crossings, the area's sign and exponent, each
+//! edge's x, r, q, rho) are copied every II cycles, `Schedule::copies` of them: cycle c
+//! reads copy (c - 1) / II through that copy's [`Geometry`] (`g0` to `g4`), and a division's
+//! result goes into the copy of the cycle after it. Every other register is written by the
+//! next triangle only after this one has read it for the last time, which `Schedule::new`
+//! checks. A deeper divider (for a faster clock) keeps II at 10 up to the deepest, L = 25
+//! (latency 48, five copies; beyond five, II would be a fifth of the latency). While a result waits for the edge
+//! walk, all of setup waits (`run` low: every register holds, the multipliers' and the
+//! divider's too), the triangles behind it too. `K` (1 to 7) trades II and latency for
+//! area: II 64 and latency 86 with one multiplier; the divider's `L` stages likewise.
 //!
 //! Model: `model::triangle_setup::triangle_setup`. Emitted: `hdl-out/triangle_setup.v`.
 
@@ -186,6 +185,7 @@ pub struct TriangleSetup {
     g1: Geometry,
     g2: Geometry,
     g3: Geometry,
+    g4: Geometry,
 
     // Normalise, into a register.
     area: DFF<Bits<AREA>>,
@@ -257,8 +257,14 @@ pub struct TriangleSetup {
     plane: [DFF<Bits<ATTR>>; 12],
     inc0: [DFF<Bits<ATTR>>; 12],
     inc1: [DFF<Bits<ATTR>>; 12],
-    /// ddx, registered with each increment for the result.
+    /// ddx, registered with each increment for the result; the walk direction, the side
+    /// of e_maj and each edge's first scanline, count and 2^s dy, registered at the hand-over.
     ddx_o: [DFF<Bits<ATTR>>; 4],
+    o_walk: DFF<Bit>,
+    o_maj_left: DFF<Bit>,
+    o_j: [DFF<Bits<PIXEL>>; 3],
+    o_count: [DFF<Bits<PIXEL>>; 3],
+    o_d: [DFF<Bits<EDGE_D>>; 3],
 
     // The schedule and the numbers a kernel cannot name.
     lane: [Constant<Bits<8>>; PRODUCTS],
@@ -270,10 +276,8 @@ pub struct TriangleSetup {
     view_res: [Constant<Bits<8>>; 7],
     view_res_w: [Constant<Bits<8>>; 7],
     view_handover: Constant<Bits<8>>,
-    /// Per copy, the last cycle of its part of the schedule (255 for copies not used); the
-    /// copy the result is read from.
+    /// Per copy, the last cycle of its part of the schedule (255 for copies not used).
     ends: [Constant<Bits<8>>; COPIES_MAX],
-    last_copy: Constant<Bits<8>>,
     normalise: Constant<Bits<8>>,
     cyc: [Constant<Bits<8>>; PRODUCTS],
     cyc_add: [Constant<Bits<8>>; PRODUCTS],
@@ -363,6 +367,7 @@ impl TriangleSetup {
             g1: Default::default(),
             g2: Default::default(),
             g3: Default::default(),
+            g4: Default::default(),
             area: Default::default(),
             area_abs: Default::default(),
             exp_c: Default::default(),
@@ -410,6 +415,11 @@ impl TriangleSetup {
             inc0: defaults(),
             inc1: defaults(),
             ddx_o: defaults(),
+            o_walk: Default::default(),
+            o_maj_left: Default::default(),
+            o_j: defaults(),
+            o_count: defaults(),
+            o_d: defaults(),
             lane: consts(|i| s.slots[i].1),
             view: consts(|i| s.view(s.slots[i].0)),
             view_add: consts(|i| s.view(s.add(i))),
@@ -417,7 +427,6 @@ impl TriangleSetup {
             view_res_w: consts(|j| s.view(s.result(j) + 1)),
             view_handover: Constant::new(s.view(s.handover).to_bits()),
             ends: consts(|v| if v < s.copies { ((v + 1) * s.interval).min(s.latency) } else { 255 }),
-            last_copy: Constant::new((s.copies - 1).to_bits()),
             normalise: Constant::new(s.normalise.to_bits()),
             cyc: consts(|i| s.slots[i].0),
             cyc_add: consts(|i| s.add(i)),
@@ -446,6 +455,15 @@ impl Logic for TriangleSetup {
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written.
         dff_setup!(self, clock, area, norm, div_v, div_n, div_d, mant_s, exp_e, norm_r, handover_r, valid_r, busy_r, phase, off_grid_r);
+        dff_setup!(self, clock, o_walk, o_maj_left);
+        for e in 0..3 {
+            self.o_j[e].clock.next = self.clock.val();
+            self.o_j[e].d.next = self.o_j[e].q.val();
+            self.o_count[e].clock.next = self.clock.val();
+            self.o_count[e].d.next = self.o_count[e].q.val();
+            self.o_d[e].clock.next = self.clock.val();
+            self.o_d[e].d.next = self.o_d[e].q.val();
+        }
         clock!(self, clock, div);
         for v in 0..COPIES_MAX {
             self.t[v].clock.next = self.clock.val();
@@ -669,6 +687,17 @@ impl Logic for TriangleSetup {
         }
         self.g3.crosses.next = self.crosses[3].q.val();
         self.g3.maj_left.next = self.maj_left[3].val();
+        for i in 0..3 {
+            self.g4.vx[i].next = self.vx[12 + i].q.val();
+            self.g4.vy[i].next = self.vy[12 + i].q.val();
+            self.g4.vz[i].next = self.vz[12 + i].q.val();
+            self.g4.start_x[i].next = self.x[12 + i].q.val();
+        }
+        for i in 0..9 {
+            self.g4.vc[i].next = self.vc[36 + i].q.val();
+        }
+        self.g4.crosses.next = self.crosses[4].q.val();
+        self.g4.maj_left.next = self.maj_left[4].val();
 
         // ---- Normalise twice the area for 1/area (`recip_operands`): |a| << (32 - exp),
         // into a register.
@@ -765,6 +794,10 @@ impl Logic for TriangleSetup {
                 self.xi[e].next = self.g3.xi[e].val();
                 self.ed[e].next = self.g3.ed16[e].val().get_bits::<EDGE_D>(0);
             }
+            if self.view_res[1 + 2 * e].val().index() == 4 {
+                self.xi[e].next = self.g4.xi[e].val();
+                self.ed[e].next = self.g4.ed16[e].val().get_bits::<EDGE_D>(0);
+            }
             // Into the copy the triangle is in next cycle.
             for v in 0..self._copies {
                 if self.at_res[1 + 2 * e].val() & (self.view_res_w[1 + 2 * e].val().index() == v) {
@@ -812,6 +845,8 @@ impl Logic for TriangleSetup {
             self.delta[10 + k].next = self.g2.kdy[k].val().get_bits::<NB>(0);
             self.delta[12 + k].next = self.g3.kdx[k].val().get_bits::<NB>(0);
             self.delta[14 + k].next = self.g3.kdy[k].val().get_bits::<NB>(0);
+            self.delta[16 + k].next = self.g4.kdx[k].val().get_bits::<NB>(0);
+            self.delta[18 + k].next = self.g4.kdy[k].val().get_bits::<NB>(0);
         }
         for v in 0..COPIES_MAX {
             for d in 0..4 {
@@ -925,6 +960,35 @@ impl Logic for TriangleSetup {
                 }
             }
         }
+        for d in 0..4 {
+            if self.view[8 + d].val().index() == 4 {
+                self.op_e[d].next = self.eq_b[16 + d].val();
+            }
+        }
+        for a in 0..4 {
+            if self.view[12 + 4 * a].val().index() == 4 {
+                self.op_g[4 * a].next = self.g4.dmaj[a].val();
+            }
+            if self.view[13 + 4 * a].val().index() == 4 {
+                self.op_g[4 * a + 1].next = self.g4.dbot[a].val();
+            }
+            if self.view[14 + 4 * a].val().index() == 4 {
+                self.op_g[4 * a + 2].next = self.g4.dbot[a].val();
+            }
+            if self.view[15 + 4 * a].val().index() == 4 {
+                self.op_g[4 * a + 3].next = self.g4.dmaj[a].val();
+            }
+        }
+        for e in 0..3 {
+            for a in 0..4 {
+                if self.view[28 + 12 * e + 3 * a].val().index() == 4 {
+                    self.op_s[8 * e + 2 * a].next = self.g4.off_x[e].val();
+                }
+                if self.view[29 + 12 * e + 3 * a].val().index() == 4 {
+                    self.op_s[8 * e + 2 * a + 1].next = self.g4.off_y[e].val();
+                }
+            }
+        }
         // ddx, ddy of each attribute: floor(g / 2^gsh), as lanes.
         for a in 0..4 {
             self.ddx[a].next = self.gx[a].q.val() >> self.gsh[a].val();
@@ -941,6 +1005,9 @@ impl Logic for TriangleSetup {
             }
             if self.view_handover.val().index() == 3 {
                 self.attr0[a].next = self.g3.attr0[a].val();
+            }
+            if self.view_handover.val().index() == 4 {
+                self.attr0[a].next = self.g4.attr0[a].val();
             }
         }
         // The increments' q, from the copy of their cycle.
@@ -1127,59 +1194,64 @@ impl Logic for TriangleSetup {
             }
         }
 
-        // ---- The result: the geometry's part from the last copy.
-        if self.last_copy.val().index() == 0 {
-            self.out.walk.next = self.g0.up.val();
-            self.out.maj_left.next = self.maj_left[0].val();
-            self.out.maj_j.next = self.g0.cy[0].val().get_bits::<PIXEL>(self.frac.val().index());
-            self.out.maj_count.next = self.g0.count[0].val();
-            self.out.maj_d.next = self.g0.ed16[0].val().get_bits::<EDGE_D>(0);
-            self.out.short0_j.next = self.g0.cy[1].val().get_bits::<PIXEL>(self.frac.val().index());
-            self.out.short0_count.next = self.g0.count[1].val();
-            self.out.short0_d.next = self.g0.ed16[1].val().get_bits::<EDGE_D>(0);
-            self.out.short1_j.next = self.g0.cy[2].val().get_bits::<PIXEL>(self.frac.val().index());
-            self.out.short1_count.next = self.g0.count[2].val();
-            self.out.short1_d.next = self.g0.ed16[2].val().get_bits::<EDGE_D>(0);
+        // ---- The result: the geometry's part registered at the hand-over from its copy, so
+        // that the edge walk starts from registers.
+        if self.at_handover.val() & (self.view_handover.val().index() == 0) {
+            self.o_walk.d.next = self.g0.up.val();
+            self.o_maj_left.d.next = self.maj_left[0].val();
+            for e in 0..3 {
+                self.o_j[e].d.next = self.g0.cy[e].val().get_bits::<PIXEL>(self.frac.val().index());
+                self.o_count[e].d.next = self.g0.count[e].val();
+                self.o_d[e].d.next = self.g0.ed16[e].val().get_bits::<EDGE_D>(0);
+            }
         }
-        if self.last_copy.val().index() == 1 {
-            self.out.walk.next = self.g1.up.val();
-            self.out.maj_left.next = self.maj_left[1].val();
-            self.out.maj_j.next = self.g1.cy[0].val().get_bits::<PIXEL>(self.frac.val().index());
-            self.out.maj_count.next = self.g1.count[0].val();
-            self.out.maj_d.next = self.g1.ed16[0].val().get_bits::<EDGE_D>(0);
-            self.out.short0_j.next = self.g1.cy[1].val().get_bits::<PIXEL>(self.frac.val().index());
-            self.out.short0_count.next = self.g1.count[1].val();
-            self.out.short0_d.next = self.g1.ed16[1].val().get_bits::<EDGE_D>(0);
-            self.out.short1_j.next = self.g1.cy[2].val().get_bits::<PIXEL>(self.frac.val().index());
-            self.out.short1_count.next = self.g1.count[2].val();
-            self.out.short1_d.next = self.g1.ed16[2].val().get_bits::<EDGE_D>(0);
+        if self.at_handover.val() & (self.view_handover.val().index() == 1) {
+            self.o_walk.d.next = self.g1.up.val();
+            self.o_maj_left.d.next = self.maj_left[1].val();
+            for e in 0..3 {
+                self.o_j[e].d.next = self.g1.cy[e].val().get_bits::<PIXEL>(self.frac.val().index());
+                self.o_count[e].d.next = self.g1.count[e].val();
+                self.o_d[e].d.next = self.g1.ed16[e].val().get_bits::<EDGE_D>(0);
+            }
         }
-        if self.last_copy.val().index() == 2 {
-            self.out.walk.next = self.g2.up.val();
-            self.out.maj_left.next = self.maj_left[2].val();
-            self.out.maj_j.next = self.g2.cy[0].val().get_bits::<PIXEL>(self.frac.val().index());
-            self.out.maj_count.next = self.g2.count[0].val();
-            self.out.maj_d.next = self.g2.ed16[0].val().get_bits::<EDGE_D>(0);
-            self.out.short0_j.next = self.g2.cy[1].val().get_bits::<PIXEL>(self.frac.val().index());
-            self.out.short0_count.next = self.g2.count[1].val();
-            self.out.short0_d.next = self.g2.ed16[1].val().get_bits::<EDGE_D>(0);
-            self.out.short1_j.next = self.g2.cy[2].val().get_bits::<PIXEL>(self.frac.val().index());
-            self.out.short1_count.next = self.g2.count[2].val();
-            self.out.short1_d.next = self.g2.ed16[2].val().get_bits::<EDGE_D>(0);
+        if self.at_handover.val() & (self.view_handover.val().index() == 2) {
+            self.o_walk.d.next = self.g2.up.val();
+            self.o_maj_left.d.next = self.maj_left[2].val();
+            for e in 0..3 {
+                self.o_j[e].d.next = self.g2.cy[e].val().get_bits::<PIXEL>(self.frac.val().index());
+                self.o_count[e].d.next = self.g2.count[e].val();
+                self.o_d[e].d.next = self.g2.ed16[e].val().get_bits::<EDGE_D>(0);
+            }
         }
-        if self.last_copy.val().index() == 3 {
-            self.out.walk.next = self.g3.up.val();
-            self.out.maj_left.next = self.maj_left[3].val();
-            self.out.maj_j.next = self.g3.cy[0].val().get_bits::<PIXEL>(self.frac.val().index());
-            self.out.maj_count.next = self.g3.count[0].val();
-            self.out.maj_d.next = self.g3.ed16[0].val().get_bits::<EDGE_D>(0);
-            self.out.short0_j.next = self.g3.cy[1].val().get_bits::<PIXEL>(self.frac.val().index());
-            self.out.short0_count.next = self.g3.count[1].val();
-            self.out.short0_d.next = self.g3.ed16[1].val().get_bits::<EDGE_D>(0);
-            self.out.short1_j.next = self.g3.cy[2].val().get_bits::<PIXEL>(self.frac.val().index());
-            self.out.short1_count.next = self.g3.count[2].val();
-            self.out.short1_d.next = self.g3.ed16[2].val().get_bits::<EDGE_D>(0);
+        if self.at_handover.val() & (self.view_handover.val().index() == 3) {
+            self.o_walk.d.next = self.g3.up.val();
+            self.o_maj_left.d.next = self.maj_left[3].val();
+            for e in 0..3 {
+                self.o_j[e].d.next = self.g3.cy[e].val().get_bits::<PIXEL>(self.frac.val().index());
+                self.o_count[e].d.next = self.g3.count[e].val();
+                self.o_d[e].d.next = self.g3.ed16[e].val().get_bits::<EDGE_D>(0);
+            }
         }
+        if self.at_handover.val() & (self.view_handover.val().index() == 4) {
+            self.o_walk.d.next = self.g4.up.val();
+            self.o_maj_left.d.next = self.maj_left[4].val();
+            for e in 0..3 {
+                self.o_j[e].d.next = self.g4.cy[e].val().get_bits::<PIXEL>(self.frac.val().index());
+                self.o_count[e].d.next = self.g4.count[e].val();
+                self.o_d[e].d.next = self.g4.ed16[e].val().get_bits::<EDGE_D>(0);
+            }
+        }
+        self.out.walk.next = self.o_walk.q.val();
+        self.out.maj_left.next = self.o_maj_left.q.val();
+        self.out.maj_j.next = self.o_j[0].q.val();
+        self.out.maj_count.next = self.o_count[0].q.val();
+        self.out.maj_d.next = self.o_d[0].q.val();
+        self.out.short0_j.next = self.o_j[1].q.val();
+        self.out.short0_count.next = self.o_count[1].q.val();
+        self.out.short0_d.next = self.o_d[1].q.val();
+        self.out.short1_j.next = self.o_j[2].q.val();
+        self.out.short1_count.next = self.o_count[2].q.val();
+        self.out.short1_d.next = self.o_d[2].q.val();
         // Each edge's start and step from the last copy.
         for v in (self._copies - 1)..self._copies {
             self.out.maj_x.next = self.x[3 * v].q.val().get_bits::<PIXEL>(0);

@@ -39,8 +39,8 @@ pub const MULTIPLIER_STAGES: usize = 2;
 /// no path runs from the geometry into the divider's first stage.
 pub const DIVIDER_OPERANDS: usize = 1;
 
-/// Most copies of a triangle's registers: II is at least a quarter of the latency.
-pub const COPIES_MAX: usize = 4;
+/// Most copies of a triangle's registers: II is at least a fifth of the latency.
+pub const COPIES_MAX: usize = 5;
 
 const M: usize = MULTIPLIER_STAGES;
 
@@ -100,8 +100,7 @@ impl Schedule {
         let mut slots = vec![(0, 0); PRODUCTS];
         // The first cycle from `ready` with a lane free (modulo II).
         let mut place = |i: usize, ready: usize| -> Option<usize> {
-            let (c, lane) =
-                (ready..ready + ii).find_map(|c| (0..k).find(|&m| !lanes[m][c % ii]).map(|m| (c, m)))?;
+            let (c, lane) = (ready..ready + ii).find_map(|c| (0..k).find(|&m| !lanes[m][c % ii]).map(|m| (c, m)))?;
             lanes[lane][c % ii] = true;
             slots[i] = (c, lane);
             Some(c)
@@ -200,7 +199,17 @@ impl Schedule {
         if !lives.iter().all(fits) {
             return None;
         }
-        Some(Schedule { multipliers: k, divider_latency: l, slots, normalise, issue, handover, latency, interval: ii, copies })
+        Some(Schedule {
+            multipliers: k,
+            divider_latency: l,
+            slots,
+            normalise,
+            issue,
+            handover,
+            latency,
+            interval: ii,
+            copies,
+        })
     }
 
     /// The cycle product `i` is added into its destination (its product register's output).
