@@ -9173,12 +9173,11 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     localparam  view_res$5 = 8'h1;
     localparam  view_res$6 = 8'h0;
     localparam  view_res_w$0 = 8'h1;
-    localparam  view_res_w$1 = 8'h1;
-    localparam  view_res_w$2 = 8'h0;
-    localparam  view_res_w$3 = 8'h1;
-    localparam  view_res_w$4 = 8'h0;
-    localparam  view_res_w$5 = 8'h1;
-    localparam  view_res_w$6 = 8'h0;
+    localparam  view_res_w$1 = 8'h0;
+    localparam  view_res_w$2 = 8'h1;
+    localparam  view_res_w$3 = 8'h0;
+    localparam  view_res_w$4 = 8'h1;
+    localparam  view_res_w$5 = 8'h0;
     localparam  view_handover = 8'h2;
     localparam  ends$0 = 8'ha;
     localparam  ends$1 = 8'h14;
@@ -16086,36 +16085,36 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             xi$0 = g4$xi$0;
             ed$0 = g4$ed16$0[(32'h0)+:(21)];
         end
-        if (at_res$1 & (view_res_w$1 == 0)) begin
+        if (at_res$1 & (view_res_w$0 == 0)) begin
             x$0$d = xi$0 + q_n + r_pos;
             r$0$d = 32'h0;
             if (r_pos) begin
                 r$0$d = ed$0 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$2 & (view_res_w$2 == 0)) begin
+        if (at_res$2 & (view_res_w$1 == 0)) begin
             q$0$d = q_n;
             rho$0$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$1 & (view_res_w$1 == 1)) begin
+        if (at_res$1 & (view_res_w$0 == 1)) begin
             x$3$d = xi$0 + q_n + r_pos;
             r$3$d = 32'h0;
             if (r_pos) begin
                 r$3$d = ed$0 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$2 & (view_res_w$2 == 1)) begin
+        if (at_res$2 & (view_res_w$1 == 1)) begin
             q$3$d = q_n;
             rho$3$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$1 & (view_res_w$1 == 2)) begin
+        if (at_res$1 & (view_res_w$0 == 2)) begin
             x$6$d = xi$0 + q_n + r_pos;
             r$6$d = 32'h0;
             if (r_pos) begin
                 r$6$d = ed$0 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$2 & (view_res_w$2 == 2)) begin
+        if (at_res$2 & (view_res_w$1 == 2)) begin
             q$6$d = q_n;
             rho$6$d = div$out_r[(32'h0)+:(21)] << frac;
         end
@@ -16137,36 +16136,36 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             xi$1 = g4$xi$1;
             ed$1 = g4$ed16$1[(32'h0)+:(21)];
         end
-        if (at_res$3 & (view_res_w$3 == 0)) begin
+        if (at_res$3 & (view_res_w$2 == 0)) begin
             x$1$d = xi$1 + q_n + r_pos;
             r$1$d = 32'h0;
             if (r_pos) begin
                 r$1$d = ed$1 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$4 & (view_res_w$4 == 0)) begin
+        if (at_res$4 & (view_res_w$3 == 0)) begin
             q$1$d = q_n;
             rho$1$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$3 & (view_res_w$3 == 1)) begin
+        if (at_res$3 & (view_res_w$2 == 1)) begin
             x$4$d = xi$1 + q_n + r_pos;
             r$4$d = 32'h0;
             if (r_pos) begin
                 r$4$d = ed$1 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$4 & (view_res_w$4 == 1)) begin
+        if (at_res$4 & (view_res_w$3 == 1)) begin
             q$4$d = q_n;
             rho$4$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$3 & (view_res_w$3 == 2)) begin
+        if (at_res$3 & (view_res_w$2 == 2)) begin
             x$7$d = xi$1 + q_n + r_pos;
             r$7$d = 32'h0;
             if (r_pos) begin
                 r$7$d = ed$1 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$4 & (view_res_w$4 == 2)) begin
+        if (at_res$4 & (view_res_w$3 == 2)) begin
             q$7$d = q_n;
             rho$7$d = div$out_r[(32'h0)+:(21)] << frac;
         end
@@ -16188,36 +16187,36 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             xi$2 = g4$xi$2;
             ed$2 = g4$ed16$2[(32'h0)+:(21)];
         end
-        if (at_res$5 & (view_res_w$5 == 0)) begin
+        if (at_res$5 & (view_res_w$4 == 0)) begin
             x$2$d = xi$2 + q_n + r_pos;
             r$2$d = 32'h0;
             if (r_pos) begin
                 r$2$d = ed$2 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$6 & (view_res_w$6 == 0)) begin
+        if (at_res$6 & (view_res_w$5 == 0)) begin
             q$2$d = q_n;
             rho$2$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$5 & (view_res_w$5 == 1)) begin
+        if (at_res$5 & (view_res_w$4 == 1)) begin
             x$5$d = xi$2 + q_n + r_pos;
             r$5$d = 32'h0;
             if (r_pos) begin
                 r$5$d = ed$2 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$6 & (view_res_w$6 == 1)) begin
+        if (at_res$6 & (view_res_w$5 == 1)) begin
             q$5$d = q_n;
             rho$5$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$5 & (view_res_w$5 == 2)) begin
+        if (at_res$5 & (view_res_w$4 == 2)) begin
             x$8$d = xi$2 + q_n + r_pos;
             r$8$d = 32'h0;
             if (r_pos) begin
                 r$8$d = ed$2 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$6 & (view_res_w$6 == 2)) begin
+        if (at_res$6 & (view_res_w$5 == 2)) begin
             q$8$d = q_n;
             rho$8$d = div$out_r[(32'h0)+:(21)] << frac;
         end

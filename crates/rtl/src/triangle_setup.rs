@@ -269,12 +269,12 @@ pub struct TriangleSetup {
     // The schedule and the numbers a kernel cannot name.
     lane: [Constant<Bits<8>>; PRODUCTS],
     /// The copy product i's operands, division j's result, the hand-over read
-    /// (`Schedule::view`); the copy division j's result is written into (that of the cycle
-    /// after, as copies move on at the end of a cycle).
+    /// (`Schedule::view`); the copy edge division j's result (division j + 1) is written
+    /// into (that of the cycle after, as copies move on at the end of a cycle).
     view: [Constant<Bits<8>>; PRODUCTS],
     view_add: [Constant<Bits<8>>; PRODUCTS],
     view_res: [Constant<Bits<8>>; 7],
-    view_res_w: [Constant<Bits<8>>; 7],
+    view_res_w: [Constant<Bits<8>>; 6],
     view_handover: Constant<Bits<8>>,
     /// Per copy, the last cycle of its part of the schedule (255 for copies not used).
     ends: [Constant<Bits<8>>; COPIES_MAX],
@@ -424,7 +424,7 @@ impl TriangleSetup {
             view: consts(|i| s.view(s.slots[i].0)),
             view_add: consts(|i| s.view(s.add(i))),
             view_res: consts(|j| s.view(s.result(j))),
-            view_res_w: consts(|j| s.view(s.result(j) + 1)),
+            view_res_w: consts(|j| s.view(s.result(j + 1) + 1)),
             view_handover: Constant::new(s.view(s.handover).to_bits()),
             ends: consts(|v| if v < s.copies { ((v + 1) * s.interval).min(s.latency) } else { 255 }),
             normalise: Constant::new(s.normalise.to_bits()),
@@ -800,7 +800,7 @@ impl Logic for TriangleSetup {
             }
             // Into the copy the triangle is in next cycle.
             for v in 0..self._copies {
-                if self.at_res[1 + 2 * e].val() & (self.view_res_w[1 + 2 * e].val().index() == v) {
+                if self.at_res[1 + 2 * e].val() & (self.view_res_w[2 * e].val().index() == v) {
                     self.x[3 * v + e].d.next = self.xi[e].val() + self.q_n.val() + self.r_pos.val();
                     self.r[3 * v + e].d.next = 0.into();
                     if self.r_pos.val() {
@@ -808,7 +808,7 @@ impl Logic for TriangleSetup {
                     }
                 }
                 // The step: q + rho/D pixels per scanline.
-                if self.at_res[2 + 2 * e].val() & (self.view_res_w[2 + 2 * e].val().index() == v) {
+                if self.at_res[2 + 2 * e].val() & (self.view_res_w[1 + 2 * e].val().index() == v) {
                     self.q[3 * v + e].d.next = self.q_n.val();
                     self.rho[3 * v + e].d.next = self.div.out_r.val().get_bits::<EDGE_D>(0) << self.frac.val();
                 }
