@@ -169,62 +169,62 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  view$5 = 8'h0;
     localparam  view$6 = 8'h0;
     localparam  view$7 = 8'h0;
-    localparam  view$8 = 8'h1;
-    localparam  view$9 = 8'h1;
-    localparam  view$10 = 8'h1;
-    localparam  view$11 = 8'h1;
-    localparam  view$12 = 8'h1;
-    localparam  view$13 = 8'h1;
-    localparam  view$14 = 8'h1;
-    localparam  view$15 = 8'h1;
-    localparam  view$16 = 8'h1;
-    localparam  view$17 = 8'h1;
-    localparam  view$18 = 8'h1;
-    localparam  view$19 = 8'h1;
-    localparam  view$20 = 8'h1;
-    localparam  view$21 = 8'h1;
-    localparam  view$22 = 8'h1;
-    localparam  view$23 = 8'h1;
-    localparam  view$24 = 8'h1;
-    localparam  view$25 = 8'h1;
-    localparam  view$26 = 8'h1;
-    localparam  view$27 = 8'h1;
-    localparam  view$28 = 8'h1;
-    localparam  view$29 = 8'h1;
-    localparam  view$30 = 8'h1;
-    localparam  view$31 = 8'h1;
-    localparam  view$32 = 8'h1;
-    localparam  view$33 = 8'h1;
-    localparam  view$34 = 8'h1;
-    localparam  view$35 = 8'h1;
-    localparam  view$36 = 8'h1;
-    localparam  view$37 = 8'h2;
-    localparam  view$38 = 8'h2;
-    localparam  view$39 = 8'h2;
-    localparam  view$40 = 8'h1;
-    localparam  view$41 = 8'h1;
-    localparam  view$42 = 8'h1;
-    localparam  view$43 = 8'h1;
-    localparam  view$44 = 8'h1;
-    localparam  view$45 = 8'h1;
-    localparam  view$46 = 8'h1;
-    localparam  view$47 = 8'h1;
-    localparam  view$48 = 8'h1;
-    localparam  view$49 = 8'h2;
-    localparam  view$50 = 8'h2;
-    localparam  view$51 = 8'h2;
-    localparam  view$52 = 8'h1;
-    localparam  view$53 = 8'h1;
-    localparam  view$54 = 8'h1;
-    localparam  view$55 = 8'h2;
-    localparam  view$56 = 8'h2;
-    localparam  view$57 = 8'h2;
-    localparam  view$58 = 8'h2;
-    localparam  view$59 = 8'h2;
-    localparam  view$60 = 8'h2;
-    localparam  view$61 = 8'h2;
-    localparam  view$62 = 8'h2;
-    localparam  view$63 = 8'h2;
+    localparam  view$8 = 8'h3;
+    localparam  view$9 = 8'h3;
+    localparam  view$10 = 8'h3;
+    localparam  view$11 = 8'h3;
+    localparam  view$12 = 8'h3;
+    localparam  view$13 = 8'h3;
+    localparam  view$14 = 8'h3;
+    localparam  view$15 = 8'h3;
+    localparam  view$16 = 8'h3;
+    localparam  view$17 = 8'h3;
+    localparam  view$18 = 8'h3;
+    localparam  view$19 = 8'h3;
+    localparam  view$20 = 8'h3;
+    localparam  view$21 = 8'h3;
+    localparam  view$22 = 8'h3;
+    localparam  view$23 = 8'h3;
+    localparam  view$24 = 8'h3;
+    localparam  view$25 = 8'h3;
+    localparam  view$26 = 8'h3;
+    localparam  view$27 = 8'h3;
+    localparam  view$28 = 8'h3;
+    localparam  view$29 = 8'h3;
+    localparam  view$30 = 8'h3;
+    localparam  view$31 = 8'h3;
+    localparam  view$32 = 8'h3;
+    localparam  view$33 = 8'h3;
+    localparam  view$34 = 8'h3;
+    localparam  view$35 = 8'h3;
+    localparam  view$36 = 8'h3;
+    localparam  view$37 = 8'h4;
+    localparam  view$38 = 8'h4;
+    localparam  view$39 = 8'h4;
+    localparam  view$40 = 8'h3;
+    localparam  view$41 = 8'h3;
+    localparam  view$42 = 8'h3;
+    localparam  view$43 = 8'h3;
+    localparam  view$44 = 8'h3;
+    localparam  view$45 = 8'h3;
+    localparam  view$46 = 8'h3;
+    localparam  view$47 = 8'h3;
+    localparam  view$48 = 8'h3;
+    localparam  view$49 = 8'h4;
+    localparam  view$50 = 8'h4;
+    localparam  view$51 = 8'h4;
+    localparam  view$52 = 8'h3;
+    localparam  view$53 = 8'h3;
+    localparam  view$54 = 8'h3;
+    localparam  view$55 = 8'h4;
+    localparam  view$56 = 8'h4;
+    localparam  view$57 = 8'h4;
+    localparam  view$58 = 8'h4;
+    localparam  view$59 = 8'h4;
+    localparam  view$60 = 8'h4;
+    localparam  view$61 = 8'h4;
+    localparam  view$62 = 8'h4;
+    localparam  view$63 = 8'h4;
     localparam  view_add$0 = 8'h0;
     localparam  view_add$1 = 8'h0;
     localparam  view_add$2 = 8'h0;
@@ -233,81 +233,81 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  view_add$5 = 8'h0;
     localparam  view_add$6 = 8'h0;
     localparam  view_add$7 = 8'h0;
-    localparam  view_add$8 = 8'h1;
-    localparam  view_add$9 = 8'h1;
-    localparam  view_add$10 = 8'h1;
-    localparam  view_add$11 = 8'h1;
-    localparam  view_add$12 = 8'h1;
-    localparam  view_add$13 = 8'h1;
-    localparam  view_add$14 = 8'h1;
-    localparam  view_add$15 = 8'h1;
-    localparam  view_add$16 = 8'h1;
-    localparam  view_add$17 = 8'h1;
-    localparam  view_add$18 = 8'h1;
-    localparam  view_add$19 = 8'h1;
-    localparam  view_add$20 = 8'h1;
-    localparam  view_add$21 = 8'h1;
-    localparam  view_add$22 = 8'h1;
-    localparam  view_add$23 = 8'h1;
-    localparam  view_add$24 = 8'h1;
-    localparam  view_add$25 = 8'h1;
-    localparam  view_add$26 = 8'h1;
-    localparam  view_add$27 = 8'h1;
-    localparam  view_add$28 = 8'h1;
-    localparam  view_add$29 = 8'h1;
-    localparam  view_add$30 = 8'h1;
-    localparam  view_add$31 = 8'h2;
-    localparam  view_add$32 = 8'h2;
-    localparam  view_add$33 = 8'h2;
-    localparam  view_add$34 = 8'h2;
-    localparam  view_add$35 = 8'h2;
-    localparam  view_add$36 = 8'h2;
-    localparam  view_add$37 = 8'h2;
-    localparam  view_add$38 = 8'h2;
-    localparam  view_add$39 = 8'h2;
-    localparam  view_add$40 = 8'h1;
-    localparam  view_add$41 = 8'h1;
-    localparam  view_add$42 = 8'h1;
-    localparam  view_add$43 = 8'h2;
-    localparam  view_add$44 = 8'h2;
-    localparam  view_add$45 = 8'h2;
-    localparam  view_add$46 = 8'h2;
-    localparam  view_add$47 = 8'h2;
-    localparam  view_add$48 = 8'h2;
-    localparam  view_add$49 = 8'h2;
-    localparam  view_add$50 = 8'h2;
-    localparam  view_add$51 = 8'h2;
-    localparam  view_add$52 = 8'h1;
-    localparam  view_add$53 = 8'h2;
-    localparam  view_add$54 = 8'h2;
-    localparam  view_add$55 = 8'h2;
-    localparam  view_add$56 = 8'h2;
-    localparam  view_add$57 = 8'h2;
-    localparam  view_add$58 = 8'h2;
-    localparam  view_add$59 = 8'h2;
-    localparam  view_add$60 = 8'h2;
-    localparam  view_add$61 = 8'h2;
-    localparam  view_add$62 = 8'h2;
-    localparam  view_add$63 = 8'h2;
-    localparam  view_res$0 = 8'h1;
-    localparam  view_res$1 = 8'h0;
-    localparam  view_res$2 = 8'h0;
-    localparam  view_res$3 = 8'h1;
-    localparam  view_res$4 = 8'h0;
-    localparam  view_res$5 = 8'h1;
-    localparam  view_res$6 = 8'h0;
-    localparam  view_res_w$0 = 8'h1;
-    localparam  view_res_w$1 = 8'h0;
-    localparam  view_res_w$2 = 8'h1;
-    localparam  view_res_w$3 = 8'h0;
-    localparam  view_res_w$4 = 8'h1;
-    localparam  view_res_w$5 = 8'h0;
-    localparam  view_handover = 8'h2;
+    localparam  view_add$8 = 8'h3;
+    localparam  view_add$9 = 8'h3;
+    localparam  view_add$10 = 8'h3;
+    localparam  view_add$11 = 8'h3;
+    localparam  view_add$12 = 8'h3;
+    localparam  view_add$13 = 8'h3;
+    localparam  view_add$14 = 8'h3;
+    localparam  view_add$15 = 8'h3;
+    localparam  view_add$16 = 8'h3;
+    localparam  view_add$17 = 8'h3;
+    localparam  view_add$18 = 8'h3;
+    localparam  view_add$19 = 8'h3;
+    localparam  view_add$20 = 8'h3;
+    localparam  view_add$21 = 8'h3;
+    localparam  view_add$22 = 8'h3;
+    localparam  view_add$23 = 8'h3;
+    localparam  view_add$24 = 8'h3;
+    localparam  view_add$25 = 8'h3;
+    localparam  view_add$26 = 8'h3;
+    localparam  view_add$27 = 8'h3;
+    localparam  view_add$28 = 8'h3;
+    localparam  view_add$29 = 8'h3;
+    localparam  view_add$30 = 8'h3;
+    localparam  view_add$31 = 8'h4;
+    localparam  view_add$32 = 8'h4;
+    localparam  view_add$33 = 8'h4;
+    localparam  view_add$34 = 8'h4;
+    localparam  view_add$35 = 8'h4;
+    localparam  view_add$36 = 8'h4;
+    localparam  view_add$37 = 8'h4;
+    localparam  view_add$38 = 8'h4;
+    localparam  view_add$39 = 8'h4;
+    localparam  view_add$40 = 8'h3;
+    localparam  view_add$41 = 8'h3;
+    localparam  view_add$42 = 8'h3;
+    localparam  view_add$43 = 8'h4;
+    localparam  view_add$44 = 8'h4;
+    localparam  view_add$45 = 8'h4;
+    localparam  view_add$46 = 8'h4;
+    localparam  view_add$47 = 8'h4;
+    localparam  view_add$48 = 8'h4;
+    localparam  view_add$49 = 8'h4;
+    localparam  view_add$50 = 8'h4;
+    localparam  view_add$51 = 8'h4;
+    localparam  view_add$52 = 8'h3;
+    localparam  view_add$53 = 8'h4;
+    localparam  view_add$54 = 8'h4;
+    localparam  view_add$55 = 8'h4;
+    localparam  view_add$56 = 8'h4;
+    localparam  view_add$57 = 8'h4;
+    localparam  view_add$58 = 8'h4;
+    localparam  view_add$59 = 8'h4;
+    localparam  view_add$60 = 8'h4;
+    localparam  view_add$61 = 8'h4;
+    localparam  view_add$62 = 8'h4;
+    localparam  view_add$63 = 8'h4;
+    localparam  view_res$0 = 8'h3;
+    localparam  view_res$1 = 8'h2;
+    localparam  view_res$2 = 8'h2;
+    localparam  view_res$3 = 8'h3;
+    localparam  view_res$4 = 8'h2;
+    localparam  view_res$5 = 8'h3;
+    localparam  view_res$6 = 8'h2;
+    localparam  view_res_w$0 = 8'h3;
+    localparam  view_res_w$1 = 8'h2;
+    localparam  view_res_w$2 = 8'h3;
+    localparam  view_res_w$3 = 8'h2;
+    localparam  view_res_w$4 = 8'h3;
+    localparam  view_res_w$5 = 8'h2;
+    localparam  view_handover = 8'h4;
     localparam  ends$0 = 8'ha;
     localparam  ends$1 = 8'h14;
-    localparam  ends$2 = 8'h1c;
-    localparam  ends$3 = 8'hff;
-    localparam  ends$4 = 8'hff;
+    localparam  ends$2 = 8'h1e;
+    localparam  ends$3 = 8'h28;
+    localparam  ends$4 = 8'h30;
     localparam  normalise = 8'h4;
     localparam  cyc$0 = 8'h1;
     localparam  cyc$1 = 8'h1;
@@ -317,62 +317,62 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  cyc$5 = 8'h1;
     localparam  cyc$6 = 8'h1;
     localparam  cyc$7 = 8'h2;
-    localparam  cyc$8 = 8'hc;
-    localparam  cyc$9 = 8'hc;
-    localparam  cyc$10 = 8'hc;
-    localparam  cyc$11 = 8'hc;
-    localparam  cyc$12 = 8'hf;
-    localparam  cyc$13 = 8'hf;
-    localparam  cyc$14 = 8'hf;
-    localparam  cyc$15 = 8'hf;
-    localparam  cyc$16 = 8'hf;
-    localparam  cyc$17 = 8'hf;
-    localparam  cyc$18 = 8'hf;
-    localparam  cyc$19 = 8'h10;
-    localparam  cyc$20 = 8'h10;
-    localparam  cyc$21 = 8'h10;
-    localparam  cyc$22 = 8'h10;
-    localparam  cyc$23 = 8'h10;
-    localparam  cyc$24 = 8'h10;
-    localparam  cyc$25 = 8'h10;
-    localparam  cyc$26 = 8'h11;
-    localparam  cyc$27 = 8'h11;
-    localparam  cyc$28 = 8'h12;
-    localparam  cyc$29 = 8'h12;
-    localparam  cyc$30 = 8'h12;
-    localparam  cyc$31 = 8'h13;
-    localparam  cyc$32 = 8'h13;
-    localparam  cyc$33 = 8'h13;
-    localparam  cyc$34 = 8'h13;
-    localparam  cyc$35 = 8'h13;
-    localparam  cyc$36 = 8'h14;
-    localparam  cyc$37 = 8'h17;
-    localparam  cyc$38 = 8'h17;
-    localparam  cyc$39 = 8'h17;
-    localparam  cyc$40 = 8'h12;
-    localparam  cyc$41 = 8'h12;
-    localparam  cyc$42 = 8'h12;
-    localparam  cyc$43 = 8'h14;
-    localparam  cyc$44 = 8'h14;
-    localparam  cyc$45 = 8'h14;
-    localparam  cyc$46 = 8'h14;
-    localparam  cyc$47 = 8'h14;
-    localparam  cyc$48 = 8'h14;
-    localparam  cyc$49 = 8'h18;
-    localparam  cyc$50 = 8'h18;
-    localparam  cyc$51 = 8'h18;
-    localparam  cyc$52 = 8'h12;
-    localparam  cyc$53 = 8'h13;
-    localparam  cyc$54 = 8'h13;
-    localparam  cyc$55 = 8'h16;
-    localparam  cyc$56 = 8'h16;
-    localparam  cyc$57 = 8'h17;
-    localparam  cyc$58 = 8'h17;
-    localparam  cyc$59 = 8'h17;
-    localparam  cyc$60 = 8'h17;
-    localparam  cyc$61 = 8'h18;
-    localparam  cyc$62 = 8'h18;
-    localparam  cyc$63 = 8'h18;
+    localparam  cyc$8 = 8'h20;
+    localparam  cyc$9 = 8'h20;
+    localparam  cyc$10 = 8'h20;
+    localparam  cyc$11 = 8'h20;
+    localparam  cyc$12 = 8'h23;
+    localparam  cyc$13 = 8'h23;
+    localparam  cyc$14 = 8'h23;
+    localparam  cyc$15 = 8'h23;
+    localparam  cyc$16 = 8'h23;
+    localparam  cyc$17 = 8'h23;
+    localparam  cyc$18 = 8'h23;
+    localparam  cyc$19 = 8'h24;
+    localparam  cyc$20 = 8'h24;
+    localparam  cyc$21 = 8'h24;
+    localparam  cyc$22 = 8'h24;
+    localparam  cyc$23 = 8'h24;
+    localparam  cyc$24 = 8'h24;
+    localparam  cyc$25 = 8'h24;
+    localparam  cyc$26 = 8'h25;
+    localparam  cyc$27 = 8'h25;
+    localparam  cyc$28 = 8'h26;
+    localparam  cyc$29 = 8'h26;
+    localparam  cyc$30 = 8'h26;
+    localparam  cyc$31 = 8'h27;
+    localparam  cyc$32 = 8'h27;
+    localparam  cyc$33 = 8'h27;
+    localparam  cyc$34 = 8'h27;
+    localparam  cyc$35 = 8'h27;
+    localparam  cyc$36 = 8'h28;
+    localparam  cyc$37 = 8'h2b;
+    localparam  cyc$38 = 8'h2b;
+    localparam  cyc$39 = 8'h2b;
+    localparam  cyc$40 = 8'h26;
+    localparam  cyc$41 = 8'h26;
+    localparam  cyc$42 = 8'h26;
+    localparam  cyc$43 = 8'h28;
+    localparam  cyc$44 = 8'h28;
+    localparam  cyc$45 = 8'h28;
+    localparam  cyc$46 = 8'h28;
+    localparam  cyc$47 = 8'h28;
+    localparam  cyc$48 = 8'h28;
+    localparam  cyc$49 = 8'h2c;
+    localparam  cyc$50 = 8'h2c;
+    localparam  cyc$51 = 8'h2c;
+    localparam  cyc$52 = 8'h26;
+    localparam  cyc$53 = 8'h27;
+    localparam  cyc$54 = 8'h27;
+    localparam  cyc$55 = 8'h2a;
+    localparam  cyc$56 = 8'h2a;
+    localparam  cyc$57 = 8'h2b;
+    localparam  cyc$58 = 8'h2b;
+    localparam  cyc$59 = 8'h2b;
+    localparam  cyc$60 = 8'h2b;
+    localparam  cyc$61 = 8'h2c;
+    localparam  cyc$62 = 8'h2c;
+    localparam  cyc$63 = 8'h2c;
     localparam  cyc_add$0 = 8'h3;
     localparam  cyc_add$1 = 8'h3;
     localparam  cyc_add$2 = 8'h3;
@@ -381,62 +381,62 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  cyc_add$5 = 8'h3;
     localparam  cyc_add$6 = 8'h3;
     localparam  cyc_add$7 = 8'h4;
-    localparam  cyc_add$8 = 8'he;
-    localparam  cyc_add$9 = 8'he;
-    localparam  cyc_add$10 = 8'he;
-    localparam  cyc_add$11 = 8'he;
-    localparam  cyc_add$12 = 8'h11;
-    localparam  cyc_add$13 = 8'h11;
-    localparam  cyc_add$14 = 8'h11;
-    localparam  cyc_add$15 = 8'h11;
-    localparam  cyc_add$16 = 8'h11;
-    localparam  cyc_add$17 = 8'h11;
-    localparam  cyc_add$18 = 8'h11;
-    localparam  cyc_add$19 = 8'h12;
-    localparam  cyc_add$20 = 8'h12;
-    localparam  cyc_add$21 = 8'h12;
-    localparam  cyc_add$22 = 8'h12;
-    localparam  cyc_add$23 = 8'h12;
-    localparam  cyc_add$24 = 8'h12;
-    localparam  cyc_add$25 = 8'h12;
-    localparam  cyc_add$26 = 8'h13;
-    localparam  cyc_add$27 = 8'h13;
-    localparam  cyc_add$28 = 8'h14;
-    localparam  cyc_add$29 = 8'h14;
-    localparam  cyc_add$30 = 8'h14;
-    localparam  cyc_add$31 = 8'h15;
-    localparam  cyc_add$32 = 8'h15;
-    localparam  cyc_add$33 = 8'h15;
-    localparam  cyc_add$34 = 8'h15;
-    localparam  cyc_add$35 = 8'h15;
-    localparam  cyc_add$36 = 8'h16;
-    localparam  cyc_add$37 = 8'h19;
-    localparam  cyc_add$38 = 8'h19;
-    localparam  cyc_add$39 = 8'h19;
-    localparam  cyc_add$40 = 8'h14;
-    localparam  cyc_add$41 = 8'h14;
-    localparam  cyc_add$42 = 8'h14;
-    localparam  cyc_add$43 = 8'h16;
-    localparam  cyc_add$44 = 8'h16;
-    localparam  cyc_add$45 = 8'h16;
-    localparam  cyc_add$46 = 8'h16;
-    localparam  cyc_add$47 = 8'h16;
-    localparam  cyc_add$48 = 8'h16;
-    localparam  cyc_add$49 = 8'h1a;
-    localparam  cyc_add$50 = 8'h1a;
-    localparam  cyc_add$51 = 8'h1a;
-    localparam  cyc_add$52 = 8'h14;
-    localparam  cyc_add$53 = 8'h15;
-    localparam  cyc_add$54 = 8'h15;
-    localparam  cyc_add$55 = 8'h18;
-    localparam  cyc_add$56 = 8'h18;
-    localparam  cyc_add$57 = 8'h19;
-    localparam  cyc_add$58 = 8'h19;
-    localparam  cyc_add$59 = 8'h19;
-    localparam  cyc_add$60 = 8'h19;
-    localparam  cyc_add$61 = 8'h1a;
-    localparam  cyc_add$62 = 8'h1a;
-    localparam  cyc_add$63 = 8'h1a;
+    localparam  cyc_add$8 = 8'h22;
+    localparam  cyc_add$9 = 8'h22;
+    localparam  cyc_add$10 = 8'h22;
+    localparam  cyc_add$11 = 8'h22;
+    localparam  cyc_add$12 = 8'h25;
+    localparam  cyc_add$13 = 8'h25;
+    localparam  cyc_add$14 = 8'h25;
+    localparam  cyc_add$15 = 8'h25;
+    localparam  cyc_add$16 = 8'h25;
+    localparam  cyc_add$17 = 8'h25;
+    localparam  cyc_add$18 = 8'h25;
+    localparam  cyc_add$19 = 8'h26;
+    localparam  cyc_add$20 = 8'h26;
+    localparam  cyc_add$21 = 8'h26;
+    localparam  cyc_add$22 = 8'h26;
+    localparam  cyc_add$23 = 8'h26;
+    localparam  cyc_add$24 = 8'h26;
+    localparam  cyc_add$25 = 8'h26;
+    localparam  cyc_add$26 = 8'h27;
+    localparam  cyc_add$27 = 8'h27;
+    localparam  cyc_add$28 = 8'h28;
+    localparam  cyc_add$29 = 8'h28;
+    localparam  cyc_add$30 = 8'h28;
+    localparam  cyc_add$31 = 8'h29;
+    localparam  cyc_add$32 = 8'h29;
+    localparam  cyc_add$33 = 8'h29;
+    localparam  cyc_add$34 = 8'h29;
+    localparam  cyc_add$35 = 8'h29;
+    localparam  cyc_add$36 = 8'h2a;
+    localparam  cyc_add$37 = 8'h2d;
+    localparam  cyc_add$38 = 8'h2d;
+    localparam  cyc_add$39 = 8'h2d;
+    localparam  cyc_add$40 = 8'h28;
+    localparam  cyc_add$41 = 8'h28;
+    localparam  cyc_add$42 = 8'h28;
+    localparam  cyc_add$43 = 8'h2a;
+    localparam  cyc_add$44 = 8'h2a;
+    localparam  cyc_add$45 = 8'h2a;
+    localparam  cyc_add$46 = 8'h2a;
+    localparam  cyc_add$47 = 8'h2a;
+    localparam  cyc_add$48 = 8'h2a;
+    localparam  cyc_add$49 = 8'h2e;
+    localparam  cyc_add$50 = 8'h2e;
+    localparam  cyc_add$51 = 8'h2e;
+    localparam  cyc_add$52 = 8'h28;
+    localparam  cyc_add$53 = 8'h29;
+    localparam  cyc_add$54 = 8'h29;
+    localparam  cyc_add$55 = 8'h2c;
+    localparam  cyc_add$56 = 8'h2c;
+    localparam  cyc_add$57 = 8'h2d;
+    localparam  cyc_add$58 = 8'h2d;
+    localparam  cyc_add$59 = 8'h2d;
+    localparam  cyc_add$60 = 8'h2d;
+    localparam  cyc_add$61 = 8'h2e;
+    localparam  cyc_add$62 = 8'h2e;
+    localparam  cyc_add$63 = 8'h2e;
     localparam  iss$0 = 8'h5;
     localparam  iss$1 = 8'h4;
     localparam  iss$2 = 8'h1;
@@ -444,18 +444,54 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  iss$4 = 8'h2;
     localparam  iss$5 = 8'h7;
     localparam  iss$6 = 8'h3;
-    localparam  res$0 = 8'hb;
-    localparam  res$1 = 8'ha;
-    localparam  res$2 = 8'h7;
-    localparam  res$3 = 8'hc;
-    localparam  res$4 = 8'h8;
-    localparam  res$5 = 8'hd;
-    localparam  res$6 = 8'h9;
-    localparam  handover = 8'h1b;
-    localparam  last = 8'h1c;
+    localparam  res$0 = 8'h1f;
+    localparam  res$1 = 8'h1e;
+    localparam  res$2 = 8'h1b;
+    localparam  res$3 = 8'h20;
+    localparam  res$4 = 8'h1c;
+    localparam  res$5 = 8'h21;
+    localparam  res$6 = 8'h1d;
+    localparam  handover = 8'h2f;
+    localparam  last = 8'h30;
     localparam  ii_m1 = 8'h9;
     localparam  recip_n = 58'h100000000000000;
     localparam  recip_top = 6'b100000;
+    localparam  bit_index$0 = 6'b0;
+    localparam  bit_index$1 = 6'b1;
+    localparam  bit_index$2 = 6'b10;
+    localparam  bit_index$3 = 6'b11;
+    localparam  bit_index$4 = 6'b100;
+    localparam  bit_index$5 = 6'b101;
+    localparam  bit_index$6 = 6'b110;
+    localparam  bit_index$7 = 6'b111;
+    localparam  bit_index$8 = 6'b1000;
+    localparam  bit_index$9 = 6'b1001;
+    localparam  bit_index$10 = 6'b1010;
+    localparam  bit_index$11 = 6'b1011;
+    localparam  bit_index$12 = 6'b1100;
+    localparam  bit_index$13 = 6'b1101;
+    localparam  bit_index$14 = 6'b1110;
+    localparam  bit_index$15 = 6'b1111;
+    localparam  bit_index$16 = 6'b10000;
+    localparam  bit_index$17 = 6'b10001;
+    localparam  bit_index$18 = 6'b10010;
+    localparam  bit_index$19 = 6'b10011;
+    localparam  bit_index$20 = 6'b10100;
+    localparam  bit_index$21 = 6'b10101;
+    localparam  bit_index$22 = 6'b10110;
+    localparam  bit_index$23 = 6'b10111;
+    localparam  bit_index$24 = 6'b11000;
+    localparam  bit_index$25 = 6'b11001;
+    localparam  bit_index$26 = 6'b11010;
+    localparam  bit_index$27 = 6'b11011;
+    localparam  bit_index$28 = 6'b11100;
+    localparam  bit_index$29 = 6'b11101;
+    localparam  bit_index$30 = 6'b11110;
+    localparam  bit_index$31 = 6'b11111;
+    localparam  bit_index$32 = 6'b100000;
+    localparam  bit_index$33 = 6'b100001;
+    localparam  bit_index$34 = 6'b100010;
+    localparam  bit_index$35 = 6'b100011;
     localparam  eq_shift = 6'b1111;
     localparam  gsh$0 = 8'h11;
     localparam  gsh$1 = 8'hd;
@@ -1470,6 +1506,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [20:0] rho$14$d;
     wire  [20:0] rho$14$q;
     reg  rho$14$clock;
+    reg  g0$clock;
     reg  [15:0] g0$vx$0;
     reg  [15:0] g0$vx$1;
     reg  [15:0] g0$vx$2;
@@ -1545,6 +1582,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     wire  [39:0] g0$attr0$1;
     wire  [39:0] g0$attr0$2;
     wire  [39:0] g0$attr0$3;
+    reg  g1$clock;
     reg  [15:0] g1$vx$0;
     reg  [15:0] g1$vx$1;
     reg  [15:0] g1$vx$2;
@@ -1620,6 +1658,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     wire  [39:0] g1$attr0$1;
     wire  [39:0] g1$attr0$2;
     wire  [39:0] g1$attr0$3;
+    reg  g2$clock;
     reg  [15:0] g2$vx$0;
     reg  [15:0] g2$vx$1;
     reg  [15:0] g2$vx$2;
@@ -1695,6 +1734,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     wire  [39:0] g2$attr0$1;
     wire  [39:0] g2$attr0$2;
     wire  [39:0] g2$attr0$3;
+    reg  g3$clock;
     reg  [15:0] g3$vx$0;
     reg  [15:0] g3$vx$1;
     reg  [15:0] g3$vx$2;
@@ -1770,6 +1810,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     wire  [39:0] g3$attr0$1;
     wire  [39:0] g3$attr0$2;
     wire  [39:0] g3$attr0$3;
+    reg  g4$clock;
     reg  [15:0] g4$vx$0;
     reg  [15:0] g4$vx$1;
     reg  [15:0] g4$vx$2;
@@ -1851,6 +1892,9 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [33:0] norm$d;
     wire  [33:0] norm$q;
     reg  norm$clock;
+    reg  [5:0] nsh$d;
+    wire  [5:0] nsh$q;
+    reg  nsh$clock;
     reg  div_v$d;
     wire  div_v$q;
     reg  div_v$clock;
@@ -1863,9 +1907,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [56:0] mant_s$d;
     wire  [56:0] mant_s$q;
     reg  mant_s$clock;
-    reg  [5:0] exp_e$d;
-    wire  [5:0] exp_e$q;
-    reg  exp_e$clock;
+    reg  [5:0] rsh$d;
+    wire  [5:0] rsh$q;
+    reg  rsh$clock;
+    reg  left$d;
+    wire  left$q;
+    reg  left$clock;
     reg  [57:0] num$0$d;
     wire  [57:0] num$0$q;
     reg  num$0$clock;
@@ -2090,7 +2137,36 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  maj_left$3;
     reg  maj_left$4;
     reg  [33:0] area_abs;
+    reg  [35:0] abs_p;
+    reg  nib_any$0;
+    reg  nib_any$1;
+    reg  nib_any$2;
+    reg  nib_any$3;
+    reg  nib_any$4;
+    reg  nib_any$5;
+    reg  nib_any$6;
+    reg  nib_any$7;
+    reg  nib_any$8;
+    reg  [5:0] nib_pos$0;
+    reg  [5:0] nib_pos$1;
+    reg  [5:0] nib_pos$2;
+    reg  [5:0] nib_pos$3;
+    reg  [5:0] nib_pos$4;
+    reg  [5:0] nib_pos$5;
+    reg  [5:0] nib_pos$6;
+    reg  [5:0] nib_pos$7;
+    reg  [5:0] nib_pos$8;
+    reg  [5:0] nib_sh$0;
+    reg  [5:0] nib_sh$1;
+    reg  [5:0] nib_sh$2;
+    reg  [5:0] nib_sh$3;
+    reg  [5:0] nib_sh$4;
+    reg  [5:0] nib_sh$5;
+    reg  [5:0] nib_sh$6;
+    reg  [5:0] nib_sh$7;
+    reg  [5:0] nib_sh$8;
     reg  [5:0] exp_c;
+    reg  [5:0] nsh_c;
     reg  [33:0] norm_d;
     reg  [5:0] exp_r;
     reg  [18:0] q_n;
@@ -2270,7 +2346,6 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  [56:0] shr$2;
     reg  [56:0] shr$3;
     reg  [5:0] lsh;
-    reg  [5:0] rsh;
     reg  [33:0] area_base;
     reg  [57:0] num_base$0;
     reg  [57:0] num_base$1;
@@ -3957,6 +4032,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .clock(rho$14$clock)
     );
     triangle_setup$g0 g0(
+        .clock(g0$clock),
         .vx$0(g0$vx$0),
         .vx$1(g0$vx$1),
         .vx$2(g0$vx$2),
@@ -4034,6 +4110,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .attr0$3(g0$attr0$3)
     );
     triangle_setup$g1 g1(
+        .clock(g1$clock),
         .vx$0(g1$vx$0),
         .vx$1(g1$vx$1),
         .vx$2(g1$vx$2),
@@ -4111,6 +4188,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .attr0$3(g1$attr0$3)
     );
     triangle_setup$g2 g2(
+        .clock(g2$clock),
         .vx$0(g2$vx$0),
         .vx$1(g2$vx$1),
         .vx$2(g2$vx$2),
@@ -4188,6 +4266,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .attr0$3(g2$attr0$3)
     );
     triangle_setup$g3 g3(
+        .clock(g3$clock),
         .vx$0(g3$vx$0),
         .vx$1(g3$vx$1),
         .vx$2(g3$vx$2),
@@ -4265,6 +4344,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .attr0$3(g3$attr0$3)
     );
     triangle_setup$g4 g4(
+        .clock(g4$clock),
         .vx$0(g4$vx$0),
         .vx$1(g4$vx$1),
         .vx$2(g4$vx$2),
@@ -4351,6 +4431,11 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .q(norm$q),
         .clock(norm$clock)
     );
+    triangle_setup$nsh nsh(
+        .d(nsh$d),
+        .q(nsh$q),
+        .clock(nsh$clock)
+    );
     triangle_setup$div_v div_v(
         .d(div_v$d),
         .q(div_v$q),
@@ -4371,10 +4456,15 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .q(mant_s$q),
         .clock(mant_s$clock)
     );
-    triangle_setup$exp_e exp_e(
-        .d(exp_e$d),
-        .q(exp_e$q),
-        .clock(exp_e$clock)
+    triangle_setup$rsh rsh(
+        .d(rsh$d),
+        .q(rsh$q),
+        .clock(rsh$clock)
+    );
+    triangle_setup$left left(
+        .d(left$d),
+        .q(left$q),
+        .clock(left$clock)
     );
     triangle_setup$num$0 num$0(
         .d(num$0$d),
@@ -4711,11 +4801,13 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     always @(*) begin
         area$clock = clock;
         norm$clock = clock;
+        nsh$clock = clock;
         div_v$clock = clock;
         div_n$clock = clock;
         div_d$clock = clock;
         mant_s$clock = clock;
-        exp_e$clock = clock;
+        rsh$clock = clock;
+        left$clock = clock;
         norm_r$clock = clock;
         handover_r$clock = clock;
         valid_r$clock = clock;
@@ -4724,11 +4816,13 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         off_grid_r$clock = clock;
         area$d = area$q;
         norm$d = norm$q;
+        nsh$d = nsh$q;
         div_v$d = div_v$q;
         div_n$d = div_n$q;
         div_d$d = div_d$q;
         mant_s$d = mant_s$q;
-        exp_e$d = exp_e$q;
+        rsh$d = rsh$q;
+        left$d = left$q;
         norm_r$d = norm_r$q;
         handover_r$d = handover_r$q;
         valid_r$d = valid_r$q;
@@ -4758,6 +4852,11 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         o_d$2$clock = clock;
         o_d$2$d = o_d$2$q;
         div$clock = clock;
+        g0$clock = clock;
+        g1$clock = clock;
+        g2$clock = clock;
+        g3$clock = clock;
+        g4$clock = clock;
         t$0$clock = clock;
         t$0$d = t$0$q;
         crosses$0$clock = clock;
@@ -5250,6 +5349,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             if (t$2$q == ends$2) begin
                 t$2$d = 32'h0;
             end
+            if (t$3$q != 32'h0) begin
+                t$3$d = t$3$q + 32'h1;
+            end
+            if (t$3$q == ends$3) begin
+                t$3$d = 32'h0;
+            end
+            if (t$4$q != 32'h0) begin
+                t$4$d = t$4$q + 32'h1;
+            end
+            if (t$4$q == ends$4) begin
+                t$4$d = 32'h0;
+            end
             if (t$0$q == ends$0) begin
                 t$1$d = ends$0 + 32'h1;
                 crosses$1$d = crosses$0$q;
@@ -5322,6 +5433,78 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
                 vc$25$d = vc$16$q;
                 vc$26$d = vc$17$q;
             end
+            if (t$2$q == ends$2) begin
+                t$3$d = ends$2 + 32'h1;
+                crosses$3$d = crosses$2$q;
+                sign$3$d = maj_left$2;
+                exp$3$d = exp$2$q;
+                x$9$d = x$6$q;
+                r$9$d = r$6$q;
+                q$9$d = q$6$q;
+                rho$9$d = rho$6$q;
+                vx$9$d = vx$6$q;
+                vy$9$d = vy$6$q;
+                vz$9$d = vz$6$q;
+                x$10$d = x$7$q;
+                r$10$d = r$7$q;
+                q$10$d = q$7$q;
+                rho$10$d = rho$7$q;
+                vx$10$d = vx$7$q;
+                vy$10$d = vy$7$q;
+                vz$10$d = vz$7$q;
+                x$11$d = x$8$q;
+                r$11$d = r$8$q;
+                q$11$d = q$8$q;
+                rho$11$d = rho$8$q;
+                vx$11$d = vx$8$q;
+                vy$11$d = vy$8$q;
+                vz$11$d = vz$8$q;
+                vc$27$d = vc$18$q;
+                vc$28$d = vc$19$q;
+                vc$29$d = vc$20$q;
+                vc$30$d = vc$21$q;
+                vc$31$d = vc$22$q;
+                vc$32$d = vc$23$q;
+                vc$33$d = vc$24$q;
+                vc$34$d = vc$25$q;
+                vc$35$d = vc$26$q;
+            end
+            if (t$3$q == ends$3) begin
+                t$4$d = ends$3 + 32'h1;
+                crosses$4$d = crosses$3$q;
+                sign$4$d = maj_left$3;
+                exp$4$d = exp$3$q;
+                x$12$d = x$9$q;
+                r$12$d = r$9$q;
+                q$12$d = q$9$q;
+                rho$12$d = rho$9$q;
+                vx$12$d = vx$9$q;
+                vy$12$d = vy$9$q;
+                vz$12$d = vz$9$q;
+                x$13$d = x$10$q;
+                r$13$d = r$10$q;
+                q$13$d = q$10$q;
+                rho$13$d = rho$10$q;
+                vx$13$d = vx$10$q;
+                vy$13$d = vy$10$q;
+                vz$13$d = vz$10$q;
+                x$14$d = x$11$q;
+                r$14$d = r$11$q;
+                q$14$d = q$11$q;
+                rho$14$d = rho$11$q;
+                vx$14$d = vx$11$q;
+                vy$14$d = vy$11$q;
+                vz$14$d = vz$11$q;
+                vc$36$d = vc$27$q;
+                vc$37$d = vc$28$q;
+                vc$38$d = vc$29$q;
+                vc$39$d = vc$30$q;
+                vc$40$d = vc$31$q;
+                vc$41$d = vc$32$q;
+                vc$42$d = vc$33$q;
+                vc$43$d = vc$34$q;
+                vc$44$d = vc$35$q;
+            end
         end
         if (take) begin
             t$0$d = 32'h1;
@@ -5367,6 +5550,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$0 == 2) & (t$2$d == cyc_add$0)) begin
             add_r$0$d = 1'b1;
         end
+        if ((view$0 == 3) & (t$3$d == cyc$0)) begin
+            act_r$0$d = 1'b1;
+        end
+        if ((view_add$0 == 3) & (t$3$d == cyc_add$0)) begin
+            add_r$0$d = 1'b1;
+        end
+        if ((view$0 == 4) & (t$4$d == cyc$0)) begin
+            act_r$0$d = 1'b1;
+        end
+        if ((view_add$0 == 4) & (t$4$d == cyc_add$0)) begin
+            add_r$0$d = 1'b1;
+        end
         act_r$1$clock = clock;
         act_r$1$d = 1'b0;
         add_r$1$clock = clock;
@@ -5387,6 +5582,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$1$d = 1'b1;
         end
         if ((view_add$1 == 2) & (t$2$d == cyc_add$1)) begin
+            add_r$1$d = 1'b1;
+        end
+        if ((view$1 == 3) & (t$3$d == cyc$1)) begin
+            act_r$1$d = 1'b1;
+        end
+        if ((view_add$1 == 3) & (t$3$d == cyc_add$1)) begin
+            add_r$1$d = 1'b1;
+        end
+        if ((view$1 == 4) & (t$4$d == cyc$1)) begin
+            act_r$1$d = 1'b1;
+        end
+        if ((view_add$1 == 4) & (t$4$d == cyc_add$1)) begin
             add_r$1$d = 1'b1;
         end
         act_r$2$clock = clock;
@@ -5411,6 +5618,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$2 == 2) & (t$2$d == cyc_add$2)) begin
             add_r$2$d = 1'b1;
         end
+        if ((view$2 == 3) & (t$3$d == cyc$2)) begin
+            act_r$2$d = 1'b1;
+        end
+        if ((view_add$2 == 3) & (t$3$d == cyc_add$2)) begin
+            add_r$2$d = 1'b1;
+        end
+        if ((view$2 == 4) & (t$4$d == cyc$2)) begin
+            act_r$2$d = 1'b1;
+        end
+        if ((view_add$2 == 4) & (t$4$d == cyc_add$2)) begin
+            add_r$2$d = 1'b1;
+        end
         act_r$3$clock = clock;
         act_r$3$d = 1'b0;
         add_r$3$clock = clock;
@@ -5431,6 +5650,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$3$d = 1'b1;
         end
         if ((view_add$3 == 2) & (t$2$d == cyc_add$3)) begin
+            add_r$3$d = 1'b1;
+        end
+        if ((view$3 == 3) & (t$3$d == cyc$3)) begin
+            act_r$3$d = 1'b1;
+        end
+        if ((view_add$3 == 3) & (t$3$d == cyc_add$3)) begin
+            add_r$3$d = 1'b1;
+        end
+        if ((view$3 == 4) & (t$4$d == cyc$3)) begin
+            act_r$3$d = 1'b1;
+        end
+        if ((view_add$3 == 4) & (t$4$d == cyc_add$3)) begin
             add_r$3$d = 1'b1;
         end
         act_r$4$clock = clock;
@@ -5455,6 +5686,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$4 == 2) & (t$2$d == cyc_add$4)) begin
             add_r$4$d = 1'b1;
         end
+        if ((view$4 == 3) & (t$3$d == cyc$4)) begin
+            act_r$4$d = 1'b1;
+        end
+        if ((view_add$4 == 3) & (t$3$d == cyc_add$4)) begin
+            add_r$4$d = 1'b1;
+        end
+        if ((view$4 == 4) & (t$4$d == cyc$4)) begin
+            act_r$4$d = 1'b1;
+        end
+        if ((view_add$4 == 4) & (t$4$d == cyc_add$4)) begin
+            add_r$4$d = 1'b1;
+        end
         act_r$5$clock = clock;
         act_r$5$d = 1'b0;
         add_r$5$clock = clock;
@@ -5475,6 +5718,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$5$d = 1'b1;
         end
         if ((view_add$5 == 2) & (t$2$d == cyc_add$5)) begin
+            add_r$5$d = 1'b1;
+        end
+        if ((view$5 == 3) & (t$3$d == cyc$5)) begin
+            act_r$5$d = 1'b1;
+        end
+        if ((view_add$5 == 3) & (t$3$d == cyc_add$5)) begin
+            add_r$5$d = 1'b1;
+        end
+        if ((view$5 == 4) & (t$4$d == cyc$5)) begin
+            act_r$5$d = 1'b1;
+        end
+        if ((view_add$5 == 4) & (t$4$d == cyc_add$5)) begin
             add_r$5$d = 1'b1;
         end
         act_r$6$clock = clock;
@@ -5499,6 +5754,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$6 == 2) & (t$2$d == cyc_add$6)) begin
             add_r$6$d = 1'b1;
         end
+        if ((view$6 == 3) & (t$3$d == cyc$6)) begin
+            act_r$6$d = 1'b1;
+        end
+        if ((view_add$6 == 3) & (t$3$d == cyc_add$6)) begin
+            add_r$6$d = 1'b1;
+        end
+        if ((view$6 == 4) & (t$4$d == cyc$6)) begin
+            act_r$6$d = 1'b1;
+        end
+        if ((view_add$6 == 4) & (t$4$d == cyc_add$6)) begin
+            add_r$6$d = 1'b1;
+        end
         act_r$7$clock = clock;
         act_r$7$d = 1'b0;
         add_r$7$clock = clock;
@@ -5519,6 +5786,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$7$d = 1'b1;
         end
         if ((view_add$7 == 2) & (t$2$d == cyc_add$7)) begin
+            add_r$7$d = 1'b1;
+        end
+        if ((view$7 == 3) & (t$3$d == cyc$7)) begin
+            act_r$7$d = 1'b1;
+        end
+        if ((view_add$7 == 3) & (t$3$d == cyc_add$7)) begin
+            add_r$7$d = 1'b1;
+        end
+        if ((view$7 == 4) & (t$4$d == cyc$7)) begin
+            act_r$7$d = 1'b1;
+        end
+        if ((view_add$7 == 4) & (t$4$d == cyc_add$7)) begin
             add_r$7$d = 1'b1;
         end
         act_r$8$clock = clock;
@@ -5543,6 +5822,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$8 == 2) & (t$2$d == cyc_add$8)) begin
             add_r$8$d = 1'b1;
         end
+        if ((view$8 == 3) & (t$3$d == cyc$8)) begin
+            act_r$8$d = 1'b1;
+        end
+        if ((view_add$8 == 3) & (t$3$d == cyc_add$8)) begin
+            add_r$8$d = 1'b1;
+        end
+        if ((view$8 == 4) & (t$4$d == cyc$8)) begin
+            act_r$8$d = 1'b1;
+        end
+        if ((view_add$8 == 4) & (t$4$d == cyc_add$8)) begin
+            add_r$8$d = 1'b1;
+        end
         act_r$9$clock = clock;
         act_r$9$d = 1'b0;
         add_r$9$clock = clock;
@@ -5563,6 +5854,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$9$d = 1'b1;
         end
         if ((view_add$9 == 2) & (t$2$d == cyc_add$9)) begin
+            add_r$9$d = 1'b1;
+        end
+        if ((view$9 == 3) & (t$3$d == cyc$9)) begin
+            act_r$9$d = 1'b1;
+        end
+        if ((view_add$9 == 3) & (t$3$d == cyc_add$9)) begin
+            add_r$9$d = 1'b1;
+        end
+        if ((view$9 == 4) & (t$4$d == cyc$9)) begin
+            act_r$9$d = 1'b1;
+        end
+        if ((view_add$9 == 4) & (t$4$d == cyc_add$9)) begin
             add_r$9$d = 1'b1;
         end
         act_r$10$clock = clock;
@@ -5587,6 +5890,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$10 == 2) & (t$2$d == cyc_add$10)) begin
             add_r$10$d = 1'b1;
         end
+        if ((view$10 == 3) & (t$3$d == cyc$10)) begin
+            act_r$10$d = 1'b1;
+        end
+        if ((view_add$10 == 3) & (t$3$d == cyc_add$10)) begin
+            add_r$10$d = 1'b1;
+        end
+        if ((view$10 == 4) & (t$4$d == cyc$10)) begin
+            act_r$10$d = 1'b1;
+        end
+        if ((view_add$10 == 4) & (t$4$d == cyc_add$10)) begin
+            add_r$10$d = 1'b1;
+        end
         act_r$11$clock = clock;
         act_r$11$d = 1'b0;
         add_r$11$clock = clock;
@@ -5607,6 +5922,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$11$d = 1'b1;
         end
         if ((view_add$11 == 2) & (t$2$d == cyc_add$11)) begin
+            add_r$11$d = 1'b1;
+        end
+        if ((view$11 == 3) & (t$3$d == cyc$11)) begin
+            act_r$11$d = 1'b1;
+        end
+        if ((view_add$11 == 3) & (t$3$d == cyc_add$11)) begin
+            add_r$11$d = 1'b1;
+        end
+        if ((view$11 == 4) & (t$4$d == cyc$11)) begin
+            act_r$11$d = 1'b1;
+        end
+        if ((view_add$11 == 4) & (t$4$d == cyc_add$11)) begin
             add_r$11$d = 1'b1;
         end
         act_r$12$clock = clock;
@@ -5631,6 +5958,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$12 == 2) & (t$2$d == cyc_add$12)) begin
             add_r$12$d = 1'b1;
         end
+        if ((view$12 == 3) & (t$3$d == cyc$12)) begin
+            act_r$12$d = 1'b1;
+        end
+        if ((view_add$12 == 3) & (t$3$d == cyc_add$12)) begin
+            add_r$12$d = 1'b1;
+        end
+        if ((view$12 == 4) & (t$4$d == cyc$12)) begin
+            act_r$12$d = 1'b1;
+        end
+        if ((view_add$12 == 4) & (t$4$d == cyc_add$12)) begin
+            add_r$12$d = 1'b1;
+        end
         act_r$13$clock = clock;
         act_r$13$d = 1'b0;
         add_r$13$clock = clock;
@@ -5651,6 +5990,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$13$d = 1'b1;
         end
         if ((view_add$13 == 2) & (t$2$d == cyc_add$13)) begin
+            add_r$13$d = 1'b1;
+        end
+        if ((view$13 == 3) & (t$3$d == cyc$13)) begin
+            act_r$13$d = 1'b1;
+        end
+        if ((view_add$13 == 3) & (t$3$d == cyc_add$13)) begin
+            add_r$13$d = 1'b1;
+        end
+        if ((view$13 == 4) & (t$4$d == cyc$13)) begin
+            act_r$13$d = 1'b1;
+        end
+        if ((view_add$13 == 4) & (t$4$d == cyc_add$13)) begin
             add_r$13$d = 1'b1;
         end
         act_r$14$clock = clock;
@@ -5675,6 +6026,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$14 == 2) & (t$2$d == cyc_add$14)) begin
             add_r$14$d = 1'b1;
         end
+        if ((view$14 == 3) & (t$3$d == cyc$14)) begin
+            act_r$14$d = 1'b1;
+        end
+        if ((view_add$14 == 3) & (t$3$d == cyc_add$14)) begin
+            add_r$14$d = 1'b1;
+        end
+        if ((view$14 == 4) & (t$4$d == cyc$14)) begin
+            act_r$14$d = 1'b1;
+        end
+        if ((view_add$14 == 4) & (t$4$d == cyc_add$14)) begin
+            add_r$14$d = 1'b1;
+        end
         act_r$15$clock = clock;
         act_r$15$d = 1'b0;
         add_r$15$clock = clock;
@@ -5695,6 +6058,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$15$d = 1'b1;
         end
         if ((view_add$15 == 2) & (t$2$d == cyc_add$15)) begin
+            add_r$15$d = 1'b1;
+        end
+        if ((view$15 == 3) & (t$3$d == cyc$15)) begin
+            act_r$15$d = 1'b1;
+        end
+        if ((view_add$15 == 3) & (t$3$d == cyc_add$15)) begin
+            add_r$15$d = 1'b1;
+        end
+        if ((view$15 == 4) & (t$4$d == cyc$15)) begin
+            act_r$15$d = 1'b1;
+        end
+        if ((view_add$15 == 4) & (t$4$d == cyc_add$15)) begin
             add_r$15$d = 1'b1;
         end
         act_r$16$clock = clock;
@@ -5719,6 +6094,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$16 == 2) & (t$2$d == cyc_add$16)) begin
             add_r$16$d = 1'b1;
         end
+        if ((view$16 == 3) & (t$3$d == cyc$16)) begin
+            act_r$16$d = 1'b1;
+        end
+        if ((view_add$16 == 3) & (t$3$d == cyc_add$16)) begin
+            add_r$16$d = 1'b1;
+        end
+        if ((view$16 == 4) & (t$4$d == cyc$16)) begin
+            act_r$16$d = 1'b1;
+        end
+        if ((view_add$16 == 4) & (t$4$d == cyc_add$16)) begin
+            add_r$16$d = 1'b1;
+        end
         act_r$17$clock = clock;
         act_r$17$d = 1'b0;
         add_r$17$clock = clock;
@@ -5739,6 +6126,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$17$d = 1'b1;
         end
         if ((view_add$17 == 2) & (t$2$d == cyc_add$17)) begin
+            add_r$17$d = 1'b1;
+        end
+        if ((view$17 == 3) & (t$3$d == cyc$17)) begin
+            act_r$17$d = 1'b1;
+        end
+        if ((view_add$17 == 3) & (t$3$d == cyc_add$17)) begin
+            add_r$17$d = 1'b1;
+        end
+        if ((view$17 == 4) & (t$4$d == cyc$17)) begin
+            act_r$17$d = 1'b1;
+        end
+        if ((view_add$17 == 4) & (t$4$d == cyc_add$17)) begin
             add_r$17$d = 1'b1;
         end
         act_r$18$clock = clock;
@@ -5763,6 +6162,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$18 == 2) & (t$2$d == cyc_add$18)) begin
             add_r$18$d = 1'b1;
         end
+        if ((view$18 == 3) & (t$3$d == cyc$18)) begin
+            act_r$18$d = 1'b1;
+        end
+        if ((view_add$18 == 3) & (t$3$d == cyc_add$18)) begin
+            add_r$18$d = 1'b1;
+        end
+        if ((view$18 == 4) & (t$4$d == cyc$18)) begin
+            act_r$18$d = 1'b1;
+        end
+        if ((view_add$18 == 4) & (t$4$d == cyc_add$18)) begin
+            add_r$18$d = 1'b1;
+        end
         act_r$19$clock = clock;
         act_r$19$d = 1'b0;
         add_r$19$clock = clock;
@@ -5783,6 +6194,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$19$d = 1'b1;
         end
         if ((view_add$19 == 2) & (t$2$d == cyc_add$19)) begin
+            add_r$19$d = 1'b1;
+        end
+        if ((view$19 == 3) & (t$3$d == cyc$19)) begin
+            act_r$19$d = 1'b1;
+        end
+        if ((view_add$19 == 3) & (t$3$d == cyc_add$19)) begin
+            add_r$19$d = 1'b1;
+        end
+        if ((view$19 == 4) & (t$4$d == cyc$19)) begin
+            act_r$19$d = 1'b1;
+        end
+        if ((view_add$19 == 4) & (t$4$d == cyc_add$19)) begin
             add_r$19$d = 1'b1;
         end
         act_r$20$clock = clock;
@@ -5807,6 +6230,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$20 == 2) & (t$2$d == cyc_add$20)) begin
             add_r$20$d = 1'b1;
         end
+        if ((view$20 == 3) & (t$3$d == cyc$20)) begin
+            act_r$20$d = 1'b1;
+        end
+        if ((view_add$20 == 3) & (t$3$d == cyc_add$20)) begin
+            add_r$20$d = 1'b1;
+        end
+        if ((view$20 == 4) & (t$4$d == cyc$20)) begin
+            act_r$20$d = 1'b1;
+        end
+        if ((view_add$20 == 4) & (t$4$d == cyc_add$20)) begin
+            add_r$20$d = 1'b1;
+        end
         act_r$21$clock = clock;
         act_r$21$d = 1'b0;
         add_r$21$clock = clock;
@@ -5827,6 +6262,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$21$d = 1'b1;
         end
         if ((view_add$21 == 2) & (t$2$d == cyc_add$21)) begin
+            add_r$21$d = 1'b1;
+        end
+        if ((view$21 == 3) & (t$3$d == cyc$21)) begin
+            act_r$21$d = 1'b1;
+        end
+        if ((view_add$21 == 3) & (t$3$d == cyc_add$21)) begin
+            add_r$21$d = 1'b1;
+        end
+        if ((view$21 == 4) & (t$4$d == cyc$21)) begin
+            act_r$21$d = 1'b1;
+        end
+        if ((view_add$21 == 4) & (t$4$d == cyc_add$21)) begin
             add_r$21$d = 1'b1;
         end
         act_r$22$clock = clock;
@@ -5851,6 +6298,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$22 == 2) & (t$2$d == cyc_add$22)) begin
             add_r$22$d = 1'b1;
         end
+        if ((view$22 == 3) & (t$3$d == cyc$22)) begin
+            act_r$22$d = 1'b1;
+        end
+        if ((view_add$22 == 3) & (t$3$d == cyc_add$22)) begin
+            add_r$22$d = 1'b1;
+        end
+        if ((view$22 == 4) & (t$4$d == cyc$22)) begin
+            act_r$22$d = 1'b1;
+        end
+        if ((view_add$22 == 4) & (t$4$d == cyc_add$22)) begin
+            add_r$22$d = 1'b1;
+        end
         act_r$23$clock = clock;
         act_r$23$d = 1'b0;
         add_r$23$clock = clock;
@@ -5871,6 +6330,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$23$d = 1'b1;
         end
         if ((view_add$23 == 2) & (t$2$d == cyc_add$23)) begin
+            add_r$23$d = 1'b1;
+        end
+        if ((view$23 == 3) & (t$3$d == cyc$23)) begin
+            act_r$23$d = 1'b1;
+        end
+        if ((view_add$23 == 3) & (t$3$d == cyc_add$23)) begin
+            add_r$23$d = 1'b1;
+        end
+        if ((view$23 == 4) & (t$4$d == cyc$23)) begin
+            act_r$23$d = 1'b1;
+        end
+        if ((view_add$23 == 4) & (t$4$d == cyc_add$23)) begin
             add_r$23$d = 1'b1;
         end
         act_r$24$clock = clock;
@@ -5895,6 +6366,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$24 == 2) & (t$2$d == cyc_add$24)) begin
             add_r$24$d = 1'b1;
         end
+        if ((view$24 == 3) & (t$3$d == cyc$24)) begin
+            act_r$24$d = 1'b1;
+        end
+        if ((view_add$24 == 3) & (t$3$d == cyc_add$24)) begin
+            add_r$24$d = 1'b1;
+        end
+        if ((view$24 == 4) & (t$4$d == cyc$24)) begin
+            act_r$24$d = 1'b1;
+        end
+        if ((view_add$24 == 4) & (t$4$d == cyc_add$24)) begin
+            add_r$24$d = 1'b1;
+        end
         act_r$25$clock = clock;
         act_r$25$d = 1'b0;
         add_r$25$clock = clock;
@@ -5915,6 +6398,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$25$d = 1'b1;
         end
         if ((view_add$25 == 2) & (t$2$d == cyc_add$25)) begin
+            add_r$25$d = 1'b1;
+        end
+        if ((view$25 == 3) & (t$3$d == cyc$25)) begin
+            act_r$25$d = 1'b1;
+        end
+        if ((view_add$25 == 3) & (t$3$d == cyc_add$25)) begin
+            add_r$25$d = 1'b1;
+        end
+        if ((view$25 == 4) & (t$4$d == cyc$25)) begin
+            act_r$25$d = 1'b1;
+        end
+        if ((view_add$25 == 4) & (t$4$d == cyc_add$25)) begin
             add_r$25$d = 1'b1;
         end
         act_r$26$clock = clock;
@@ -5939,6 +6434,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$26 == 2) & (t$2$d == cyc_add$26)) begin
             add_r$26$d = 1'b1;
         end
+        if ((view$26 == 3) & (t$3$d == cyc$26)) begin
+            act_r$26$d = 1'b1;
+        end
+        if ((view_add$26 == 3) & (t$3$d == cyc_add$26)) begin
+            add_r$26$d = 1'b1;
+        end
+        if ((view$26 == 4) & (t$4$d == cyc$26)) begin
+            act_r$26$d = 1'b1;
+        end
+        if ((view_add$26 == 4) & (t$4$d == cyc_add$26)) begin
+            add_r$26$d = 1'b1;
+        end
         act_r$27$clock = clock;
         act_r$27$d = 1'b0;
         add_r$27$clock = clock;
@@ -5959,6 +6466,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$27$d = 1'b1;
         end
         if ((view_add$27 == 2) & (t$2$d == cyc_add$27)) begin
+            add_r$27$d = 1'b1;
+        end
+        if ((view$27 == 3) & (t$3$d == cyc$27)) begin
+            act_r$27$d = 1'b1;
+        end
+        if ((view_add$27 == 3) & (t$3$d == cyc_add$27)) begin
+            add_r$27$d = 1'b1;
+        end
+        if ((view$27 == 4) & (t$4$d == cyc$27)) begin
+            act_r$27$d = 1'b1;
+        end
+        if ((view_add$27 == 4) & (t$4$d == cyc_add$27)) begin
             add_r$27$d = 1'b1;
         end
         act_r$28$clock = clock;
@@ -5983,6 +6502,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$28 == 2) & (t$2$d == cyc_add$28)) begin
             add_r$28$d = 1'b1;
         end
+        if ((view$28 == 3) & (t$3$d == cyc$28)) begin
+            act_r$28$d = 1'b1;
+        end
+        if ((view_add$28 == 3) & (t$3$d == cyc_add$28)) begin
+            add_r$28$d = 1'b1;
+        end
+        if ((view$28 == 4) & (t$4$d == cyc$28)) begin
+            act_r$28$d = 1'b1;
+        end
+        if ((view_add$28 == 4) & (t$4$d == cyc_add$28)) begin
+            add_r$28$d = 1'b1;
+        end
         act_r$29$clock = clock;
         act_r$29$d = 1'b0;
         add_r$29$clock = clock;
@@ -6003,6 +6534,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$29$d = 1'b1;
         end
         if ((view_add$29 == 2) & (t$2$d == cyc_add$29)) begin
+            add_r$29$d = 1'b1;
+        end
+        if ((view$29 == 3) & (t$3$d == cyc$29)) begin
+            act_r$29$d = 1'b1;
+        end
+        if ((view_add$29 == 3) & (t$3$d == cyc_add$29)) begin
+            add_r$29$d = 1'b1;
+        end
+        if ((view$29 == 4) & (t$4$d == cyc$29)) begin
+            act_r$29$d = 1'b1;
+        end
+        if ((view_add$29 == 4) & (t$4$d == cyc_add$29)) begin
             add_r$29$d = 1'b1;
         end
         act_r$30$clock = clock;
@@ -6027,6 +6570,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$30 == 2) & (t$2$d == cyc_add$30)) begin
             add_r$30$d = 1'b1;
         end
+        if ((view$30 == 3) & (t$3$d == cyc$30)) begin
+            act_r$30$d = 1'b1;
+        end
+        if ((view_add$30 == 3) & (t$3$d == cyc_add$30)) begin
+            add_r$30$d = 1'b1;
+        end
+        if ((view$30 == 4) & (t$4$d == cyc$30)) begin
+            act_r$30$d = 1'b1;
+        end
+        if ((view_add$30 == 4) & (t$4$d == cyc_add$30)) begin
+            add_r$30$d = 1'b1;
+        end
         act_r$31$clock = clock;
         act_r$31$d = 1'b0;
         add_r$31$clock = clock;
@@ -6047,6 +6602,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$31$d = 1'b1;
         end
         if ((view_add$31 == 2) & (t$2$d == cyc_add$31)) begin
+            add_r$31$d = 1'b1;
+        end
+        if ((view$31 == 3) & (t$3$d == cyc$31)) begin
+            act_r$31$d = 1'b1;
+        end
+        if ((view_add$31 == 3) & (t$3$d == cyc_add$31)) begin
+            add_r$31$d = 1'b1;
+        end
+        if ((view$31 == 4) & (t$4$d == cyc$31)) begin
+            act_r$31$d = 1'b1;
+        end
+        if ((view_add$31 == 4) & (t$4$d == cyc_add$31)) begin
             add_r$31$d = 1'b1;
         end
         act_r$32$clock = clock;
@@ -6071,6 +6638,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$32 == 2) & (t$2$d == cyc_add$32)) begin
             add_r$32$d = 1'b1;
         end
+        if ((view$32 == 3) & (t$3$d == cyc$32)) begin
+            act_r$32$d = 1'b1;
+        end
+        if ((view_add$32 == 3) & (t$3$d == cyc_add$32)) begin
+            add_r$32$d = 1'b1;
+        end
+        if ((view$32 == 4) & (t$4$d == cyc$32)) begin
+            act_r$32$d = 1'b1;
+        end
+        if ((view_add$32 == 4) & (t$4$d == cyc_add$32)) begin
+            add_r$32$d = 1'b1;
+        end
         act_r$33$clock = clock;
         act_r$33$d = 1'b0;
         add_r$33$clock = clock;
@@ -6091,6 +6670,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$33$d = 1'b1;
         end
         if ((view_add$33 == 2) & (t$2$d == cyc_add$33)) begin
+            add_r$33$d = 1'b1;
+        end
+        if ((view$33 == 3) & (t$3$d == cyc$33)) begin
+            act_r$33$d = 1'b1;
+        end
+        if ((view_add$33 == 3) & (t$3$d == cyc_add$33)) begin
+            add_r$33$d = 1'b1;
+        end
+        if ((view$33 == 4) & (t$4$d == cyc$33)) begin
+            act_r$33$d = 1'b1;
+        end
+        if ((view_add$33 == 4) & (t$4$d == cyc_add$33)) begin
             add_r$33$d = 1'b1;
         end
         act_r$34$clock = clock;
@@ -6115,6 +6706,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$34 == 2) & (t$2$d == cyc_add$34)) begin
             add_r$34$d = 1'b1;
         end
+        if ((view$34 == 3) & (t$3$d == cyc$34)) begin
+            act_r$34$d = 1'b1;
+        end
+        if ((view_add$34 == 3) & (t$3$d == cyc_add$34)) begin
+            add_r$34$d = 1'b1;
+        end
+        if ((view$34 == 4) & (t$4$d == cyc$34)) begin
+            act_r$34$d = 1'b1;
+        end
+        if ((view_add$34 == 4) & (t$4$d == cyc_add$34)) begin
+            add_r$34$d = 1'b1;
+        end
         act_r$35$clock = clock;
         act_r$35$d = 1'b0;
         add_r$35$clock = clock;
@@ -6135,6 +6738,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$35$d = 1'b1;
         end
         if ((view_add$35 == 2) & (t$2$d == cyc_add$35)) begin
+            add_r$35$d = 1'b1;
+        end
+        if ((view$35 == 3) & (t$3$d == cyc$35)) begin
+            act_r$35$d = 1'b1;
+        end
+        if ((view_add$35 == 3) & (t$3$d == cyc_add$35)) begin
+            add_r$35$d = 1'b1;
+        end
+        if ((view$35 == 4) & (t$4$d == cyc$35)) begin
+            act_r$35$d = 1'b1;
+        end
+        if ((view_add$35 == 4) & (t$4$d == cyc_add$35)) begin
             add_r$35$d = 1'b1;
         end
         act_r$36$clock = clock;
@@ -6159,6 +6774,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$36 == 2) & (t$2$d == cyc_add$36)) begin
             add_r$36$d = 1'b1;
         end
+        if ((view$36 == 3) & (t$3$d == cyc$36)) begin
+            act_r$36$d = 1'b1;
+        end
+        if ((view_add$36 == 3) & (t$3$d == cyc_add$36)) begin
+            add_r$36$d = 1'b1;
+        end
+        if ((view$36 == 4) & (t$4$d == cyc$36)) begin
+            act_r$36$d = 1'b1;
+        end
+        if ((view_add$36 == 4) & (t$4$d == cyc_add$36)) begin
+            add_r$36$d = 1'b1;
+        end
         act_r$37$clock = clock;
         act_r$37$d = 1'b0;
         add_r$37$clock = clock;
@@ -6179,6 +6806,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$37$d = 1'b1;
         end
         if ((view_add$37 == 2) & (t$2$d == cyc_add$37)) begin
+            add_r$37$d = 1'b1;
+        end
+        if ((view$37 == 3) & (t$3$d == cyc$37)) begin
+            act_r$37$d = 1'b1;
+        end
+        if ((view_add$37 == 3) & (t$3$d == cyc_add$37)) begin
+            add_r$37$d = 1'b1;
+        end
+        if ((view$37 == 4) & (t$4$d == cyc$37)) begin
+            act_r$37$d = 1'b1;
+        end
+        if ((view_add$37 == 4) & (t$4$d == cyc_add$37)) begin
             add_r$37$d = 1'b1;
         end
         act_r$38$clock = clock;
@@ -6203,6 +6842,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$38 == 2) & (t$2$d == cyc_add$38)) begin
             add_r$38$d = 1'b1;
         end
+        if ((view$38 == 3) & (t$3$d == cyc$38)) begin
+            act_r$38$d = 1'b1;
+        end
+        if ((view_add$38 == 3) & (t$3$d == cyc_add$38)) begin
+            add_r$38$d = 1'b1;
+        end
+        if ((view$38 == 4) & (t$4$d == cyc$38)) begin
+            act_r$38$d = 1'b1;
+        end
+        if ((view_add$38 == 4) & (t$4$d == cyc_add$38)) begin
+            add_r$38$d = 1'b1;
+        end
         act_r$39$clock = clock;
         act_r$39$d = 1'b0;
         add_r$39$clock = clock;
@@ -6223,6 +6874,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$39$d = 1'b1;
         end
         if ((view_add$39 == 2) & (t$2$d == cyc_add$39)) begin
+            add_r$39$d = 1'b1;
+        end
+        if ((view$39 == 3) & (t$3$d == cyc$39)) begin
+            act_r$39$d = 1'b1;
+        end
+        if ((view_add$39 == 3) & (t$3$d == cyc_add$39)) begin
+            add_r$39$d = 1'b1;
+        end
+        if ((view$39 == 4) & (t$4$d == cyc$39)) begin
+            act_r$39$d = 1'b1;
+        end
+        if ((view_add$39 == 4) & (t$4$d == cyc_add$39)) begin
             add_r$39$d = 1'b1;
         end
         act_r$40$clock = clock;
@@ -6247,6 +6910,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$40 == 2) & (t$2$d == cyc_add$40)) begin
             add_r$40$d = 1'b1;
         end
+        if ((view$40 == 3) & (t$3$d == cyc$40)) begin
+            act_r$40$d = 1'b1;
+        end
+        if ((view_add$40 == 3) & (t$3$d == cyc_add$40)) begin
+            add_r$40$d = 1'b1;
+        end
+        if ((view$40 == 4) & (t$4$d == cyc$40)) begin
+            act_r$40$d = 1'b1;
+        end
+        if ((view_add$40 == 4) & (t$4$d == cyc_add$40)) begin
+            add_r$40$d = 1'b1;
+        end
         act_r$41$clock = clock;
         act_r$41$d = 1'b0;
         add_r$41$clock = clock;
@@ -6267,6 +6942,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$41$d = 1'b1;
         end
         if ((view_add$41 == 2) & (t$2$d == cyc_add$41)) begin
+            add_r$41$d = 1'b1;
+        end
+        if ((view$41 == 3) & (t$3$d == cyc$41)) begin
+            act_r$41$d = 1'b1;
+        end
+        if ((view_add$41 == 3) & (t$3$d == cyc_add$41)) begin
+            add_r$41$d = 1'b1;
+        end
+        if ((view$41 == 4) & (t$4$d == cyc$41)) begin
+            act_r$41$d = 1'b1;
+        end
+        if ((view_add$41 == 4) & (t$4$d == cyc_add$41)) begin
             add_r$41$d = 1'b1;
         end
         act_r$42$clock = clock;
@@ -6291,6 +6978,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$42 == 2) & (t$2$d == cyc_add$42)) begin
             add_r$42$d = 1'b1;
         end
+        if ((view$42 == 3) & (t$3$d == cyc$42)) begin
+            act_r$42$d = 1'b1;
+        end
+        if ((view_add$42 == 3) & (t$3$d == cyc_add$42)) begin
+            add_r$42$d = 1'b1;
+        end
+        if ((view$42 == 4) & (t$4$d == cyc$42)) begin
+            act_r$42$d = 1'b1;
+        end
+        if ((view_add$42 == 4) & (t$4$d == cyc_add$42)) begin
+            add_r$42$d = 1'b1;
+        end
         act_r$43$clock = clock;
         act_r$43$d = 1'b0;
         add_r$43$clock = clock;
@@ -6311,6 +7010,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$43$d = 1'b1;
         end
         if ((view_add$43 == 2) & (t$2$d == cyc_add$43)) begin
+            add_r$43$d = 1'b1;
+        end
+        if ((view$43 == 3) & (t$3$d == cyc$43)) begin
+            act_r$43$d = 1'b1;
+        end
+        if ((view_add$43 == 3) & (t$3$d == cyc_add$43)) begin
+            add_r$43$d = 1'b1;
+        end
+        if ((view$43 == 4) & (t$4$d == cyc$43)) begin
+            act_r$43$d = 1'b1;
+        end
+        if ((view_add$43 == 4) & (t$4$d == cyc_add$43)) begin
             add_r$43$d = 1'b1;
         end
         act_r$44$clock = clock;
@@ -6335,6 +7046,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$44 == 2) & (t$2$d == cyc_add$44)) begin
             add_r$44$d = 1'b1;
         end
+        if ((view$44 == 3) & (t$3$d == cyc$44)) begin
+            act_r$44$d = 1'b1;
+        end
+        if ((view_add$44 == 3) & (t$3$d == cyc_add$44)) begin
+            add_r$44$d = 1'b1;
+        end
+        if ((view$44 == 4) & (t$4$d == cyc$44)) begin
+            act_r$44$d = 1'b1;
+        end
+        if ((view_add$44 == 4) & (t$4$d == cyc_add$44)) begin
+            add_r$44$d = 1'b1;
+        end
         act_r$45$clock = clock;
         act_r$45$d = 1'b0;
         add_r$45$clock = clock;
@@ -6355,6 +7078,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$45$d = 1'b1;
         end
         if ((view_add$45 == 2) & (t$2$d == cyc_add$45)) begin
+            add_r$45$d = 1'b1;
+        end
+        if ((view$45 == 3) & (t$3$d == cyc$45)) begin
+            act_r$45$d = 1'b1;
+        end
+        if ((view_add$45 == 3) & (t$3$d == cyc_add$45)) begin
+            add_r$45$d = 1'b1;
+        end
+        if ((view$45 == 4) & (t$4$d == cyc$45)) begin
+            act_r$45$d = 1'b1;
+        end
+        if ((view_add$45 == 4) & (t$4$d == cyc_add$45)) begin
             add_r$45$d = 1'b1;
         end
         act_r$46$clock = clock;
@@ -6379,6 +7114,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$46 == 2) & (t$2$d == cyc_add$46)) begin
             add_r$46$d = 1'b1;
         end
+        if ((view$46 == 3) & (t$3$d == cyc$46)) begin
+            act_r$46$d = 1'b1;
+        end
+        if ((view_add$46 == 3) & (t$3$d == cyc_add$46)) begin
+            add_r$46$d = 1'b1;
+        end
+        if ((view$46 == 4) & (t$4$d == cyc$46)) begin
+            act_r$46$d = 1'b1;
+        end
+        if ((view_add$46 == 4) & (t$4$d == cyc_add$46)) begin
+            add_r$46$d = 1'b1;
+        end
         act_r$47$clock = clock;
         act_r$47$d = 1'b0;
         add_r$47$clock = clock;
@@ -6399,6 +7146,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$47$d = 1'b1;
         end
         if ((view_add$47 == 2) & (t$2$d == cyc_add$47)) begin
+            add_r$47$d = 1'b1;
+        end
+        if ((view$47 == 3) & (t$3$d == cyc$47)) begin
+            act_r$47$d = 1'b1;
+        end
+        if ((view_add$47 == 3) & (t$3$d == cyc_add$47)) begin
+            add_r$47$d = 1'b1;
+        end
+        if ((view$47 == 4) & (t$4$d == cyc$47)) begin
+            act_r$47$d = 1'b1;
+        end
+        if ((view_add$47 == 4) & (t$4$d == cyc_add$47)) begin
             add_r$47$d = 1'b1;
         end
         act_r$48$clock = clock;
@@ -6423,6 +7182,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$48 == 2) & (t$2$d == cyc_add$48)) begin
             add_r$48$d = 1'b1;
         end
+        if ((view$48 == 3) & (t$3$d == cyc$48)) begin
+            act_r$48$d = 1'b1;
+        end
+        if ((view_add$48 == 3) & (t$3$d == cyc_add$48)) begin
+            add_r$48$d = 1'b1;
+        end
+        if ((view$48 == 4) & (t$4$d == cyc$48)) begin
+            act_r$48$d = 1'b1;
+        end
+        if ((view_add$48 == 4) & (t$4$d == cyc_add$48)) begin
+            add_r$48$d = 1'b1;
+        end
         act_r$49$clock = clock;
         act_r$49$d = 1'b0;
         add_r$49$clock = clock;
@@ -6443,6 +7214,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$49$d = 1'b1;
         end
         if ((view_add$49 == 2) & (t$2$d == cyc_add$49)) begin
+            add_r$49$d = 1'b1;
+        end
+        if ((view$49 == 3) & (t$3$d == cyc$49)) begin
+            act_r$49$d = 1'b1;
+        end
+        if ((view_add$49 == 3) & (t$3$d == cyc_add$49)) begin
+            add_r$49$d = 1'b1;
+        end
+        if ((view$49 == 4) & (t$4$d == cyc$49)) begin
+            act_r$49$d = 1'b1;
+        end
+        if ((view_add$49 == 4) & (t$4$d == cyc_add$49)) begin
             add_r$49$d = 1'b1;
         end
         act_r$50$clock = clock;
@@ -6467,6 +7250,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$50 == 2) & (t$2$d == cyc_add$50)) begin
             add_r$50$d = 1'b1;
         end
+        if ((view$50 == 3) & (t$3$d == cyc$50)) begin
+            act_r$50$d = 1'b1;
+        end
+        if ((view_add$50 == 3) & (t$3$d == cyc_add$50)) begin
+            add_r$50$d = 1'b1;
+        end
+        if ((view$50 == 4) & (t$4$d == cyc$50)) begin
+            act_r$50$d = 1'b1;
+        end
+        if ((view_add$50 == 4) & (t$4$d == cyc_add$50)) begin
+            add_r$50$d = 1'b1;
+        end
         act_r$51$clock = clock;
         act_r$51$d = 1'b0;
         add_r$51$clock = clock;
@@ -6487,6 +7282,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$51$d = 1'b1;
         end
         if ((view_add$51 == 2) & (t$2$d == cyc_add$51)) begin
+            add_r$51$d = 1'b1;
+        end
+        if ((view$51 == 3) & (t$3$d == cyc$51)) begin
+            act_r$51$d = 1'b1;
+        end
+        if ((view_add$51 == 3) & (t$3$d == cyc_add$51)) begin
+            add_r$51$d = 1'b1;
+        end
+        if ((view$51 == 4) & (t$4$d == cyc$51)) begin
+            act_r$51$d = 1'b1;
+        end
+        if ((view_add$51 == 4) & (t$4$d == cyc_add$51)) begin
             add_r$51$d = 1'b1;
         end
         act_r$52$clock = clock;
@@ -6511,6 +7318,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$52 == 2) & (t$2$d == cyc_add$52)) begin
             add_r$52$d = 1'b1;
         end
+        if ((view$52 == 3) & (t$3$d == cyc$52)) begin
+            act_r$52$d = 1'b1;
+        end
+        if ((view_add$52 == 3) & (t$3$d == cyc_add$52)) begin
+            add_r$52$d = 1'b1;
+        end
+        if ((view$52 == 4) & (t$4$d == cyc$52)) begin
+            act_r$52$d = 1'b1;
+        end
+        if ((view_add$52 == 4) & (t$4$d == cyc_add$52)) begin
+            add_r$52$d = 1'b1;
+        end
         act_r$53$clock = clock;
         act_r$53$d = 1'b0;
         add_r$53$clock = clock;
@@ -6531,6 +7350,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$53$d = 1'b1;
         end
         if ((view_add$53 == 2) & (t$2$d == cyc_add$53)) begin
+            add_r$53$d = 1'b1;
+        end
+        if ((view$53 == 3) & (t$3$d == cyc$53)) begin
+            act_r$53$d = 1'b1;
+        end
+        if ((view_add$53 == 3) & (t$3$d == cyc_add$53)) begin
+            add_r$53$d = 1'b1;
+        end
+        if ((view$53 == 4) & (t$4$d == cyc$53)) begin
+            act_r$53$d = 1'b1;
+        end
+        if ((view_add$53 == 4) & (t$4$d == cyc_add$53)) begin
             add_r$53$d = 1'b1;
         end
         act_r$54$clock = clock;
@@ -6555,6 +7386,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$54 == 2) & (t$2$d == cyc_add$54)) begin
             add_r$54$d = 1'b1;
         end
+        if ((view$54 == 3) & (t$3$d == cyc$54)) begin
+            act_r$54$d = 1'b1;
+        end
+        if ((view_add$54 == 3) & (t$3$d == cyc_add$54)) begin
+            add_r$54$d = 1'b1;
+        end
+        if ((view$54 == 4) & (t$4$d == cyc$54)) begin
+            act_r$54$d = 1'b1;
+        end
+        if ((view_add$54 == 4) & (t$4$d == cyc_add$54)) begin
+            add_r$54$d = 1'b1;
+        end
         act_r$55$clock = clock;
         act_r$55$d = 1'b0;
         add_r$55$clock = clock;
@@ -6575,6 +7418,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$55$d = 1'b1;
         end
         if ((view_add$55 == 2) & (t$2$d == cyc_add$55)) begin
+            add_r$55$d = 1'b1;
+        end
+        if ((view$55 == 3) & (t$3$d == cyc$55)) begin
+            act_r$55$d = 1'b1;
+        end
+        if ((view_add$55 == 3) & (t$3$d == cyc_add$55)) begin
+            add_r$55$d = 1'b1;
+        end
+        if ((view$55 == 4) & (t$4$d == cyc$55)) begin
+            act_r$55$d = 1'b1;
+        end
+        if ((view_add$55 == 4) & (t$4$d == cyc_add$55)) begin
             add_r$55$d = 1'b1;
         end
         act_r$56$clock = clock;
@@ -6599,6 +7454,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$56 == 2) & (t$2$d == cyc_add$56)) begin
             add_r$56$d = 1'b1;
         end
+        if ((view$56 == 3) & (t$3$d == cyc$56)) begin
+            act_r$56$d = 1'b1;
+        end
+        if ((view_add$56 == 3) & (t$3$d == cyc_add$56)) begin
+            add_r$56$d = 1'b1;
+        end
+        if ((view$56 == 4) & (t$4$d == cyc$56)) begin
+            act_r$56$d = 1'b1;
+        end
+        if ((view_add$56 == 4) & (t$4$d == cyc_add$56)) begin
+            add_r$56$d = 1'b1;
+        end
         act_r$57$clock = clock;
         act_r$57$d = 1'b0;
         add_r$57$clock = clock;
@@ -6619,6 +7486,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$57$d = 1'b1;
         end
         if ((view_add$57 == 2) & (t$2$d == cyc_add$57)) begin
+            add_r$57$d = 1'b1;
+        end
+        if ((view$57 == 3) & (t$3$d == cyc$57)) begin
+            act_r$57$d = 1'b1;
+        end
+        if ((view_add$57 == 3) & (t$3$d == cyc_add$57)) begin
+            add_r$57$d = 1'b1;
+        end
+        if ((view$57 == 4) & (t$4$d == cyc$57)) begin
+            act_r$57$d = 1'b1;
+        end
+        if ((view_add$57 == 4) & (t$4$d == cyc_add$57)) begin
             add_r$57$d = 1'b1;
         end
         act_r$58$clock = clock;
@@ -6643,6 +7522,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$58 == 2) & (t$2$d == cyc_add$58)) begin
             add_r$58$d = 1'b1;
         end
+        if ((view$58 == 3) & (t$3$d == cyc$58)) begin
+            act_r$58$d = 1'b1;
+        end
+        if ((view_add$58 == 3) & (t$3$d == cyc_add$58)) begin
+            add_r$58$d = 1'b1;
+        end
+        if ((view$58 == 4) & (t$4$d == cyc$58)) begin
+            act_r$58$d = 1'b1;
+        end
+        if ((view_add$58 == 4) & (t$4$d == cyc_add$58)) begin
+            add_r$58$d = 1'b1;
+        end
         act_r$59$clock = clock;
         act_r$59$d = 1'b0;
         add_r$59$clock = clock;
@@ -6663,6 +7554,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$59$d = 1'b1;
         end
         if ((view_add$59 == 2) & (t$2$d == cyc_add$59)) begin
+            add_r$59$d = 1'b1;
+        end
+        if ((view$59 == 3) & (t$3$d == cyc$59)) begin
+            act_r$59$d = 1'b1;
+        end
+        if ((view_add$59 == 3) & (t$3$d == cyc_add$59)) begin
+            add_r$59$d = 1'b1;
+        end
+        if ((view$59 == 4) & (t$4$d == cyc$59)) begin
+            act_r$59$d = 1'b1;
+        end
+        if ((view_add$59 == 4) & (t$4$d == cyc_add$59)) begin
             add_r$59$d = 1'b1;
         end
         act_r$60$clock = clock;
@@ -6687,6 +7590,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$60 == 2) & (t$2$d == cyc_add$60)) begin
             add_r$60$d = 1'b1;
         end
+        if ((view$60 == 3) & (t$3$d == cyc$60)) begin
+            act_r$60$d = 1'b1;
+        end
+        if ((view_add$60 == 3) & (t$3$d == cyc_add$60)) begin
+            add_r$60$d = 1'b1;
+        end
+        if ((view$60 == 4) & (t$4$d == cyc$60)) begin
+            act_r$60$d = 1'b1;
+        end
+        if ((view_add$60 == 4) & (t$4$d == cyc_add$60)) begin
+            add_r$60$d = 1'b1;
+        end
         act_r$61$clock = clock;
         act_r$61$d = 1'b0;
         add_r$61$clock = clock;
@@ -6707,6 +7622,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             act_r$61$d = 1'b1;
         end
         if ((view_add$61 == 2) & (t$2$d == cyc_add$61)) begin
+            add_r$61$d = 1'b1;
+        end
+        if ((view$61 == 3) & (t$3$d == cyc$61)) begin
+            act_r$61$d = 1'b1;
+        end
+        if ((view_add$61 == 3) & (t$3$d == cyc_add$61)) begin
+            add_r$61$d = 1'b1;
+        end
+        if ((view$61 == 4) & (t$4$d == cyc$61)) begin
+            act_r$61$d = 1'b1;
+        end
+        if ((view_add$61 == 4) & (t$4$d == cyc_add$61)) begin
             add_r$61$d = 1'b1;
         end
         act_r$62$clock = clock;
@@ -6731,6 +7658,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$62 == 2) & (t$2$d == cyc_add$62)) begin
             add_r$62$d = 1'b1;
         end
+        if ((view$62 == 3) & (t$3$d == cyc$62)) begin
+            act_r$62$d = 1'b1;
+        end
+        if ((view_add$62 == 3) & (t$3$d == cyc_add$62)) begin
+            add_r$62$d = 1'b1;
+        end
+        if ((view$62 == 4) & (t$4$d == cyc$62)) begin
+            act_r$62$d = 1'b1;
+        end
+        if ((view_add$62 == 4) & (t$4$d == cyc_add$62)) begin
+            add_r$62$d = 1'b1;
+        end
         act_r$63$clock = clock;
         act_r$63$d = 1'b0;
         add_r$63$clock = clock;
@@ -6753,6 +7692,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_add$63 == 2) & (t$2$d == cyc_add$63)) begin
             add_r$63$d = 1'b1;
         end
+        if ((view$63 == 3) & (t$3$d == cyc$63)) begin
+            act_r$63$d = 1'b1;
+        end
+        if ((view_add$63 == 3) & (t$3$d == cyc_add$63)) begin
+            add_r$63$d = 1'b1;
+        end
+        if ((view$63 == 4) & (t$4$d == cyc$63)) begin
+            act_r$63$d = 1'b1;
+        end
+        if ((view_add$63 == 4) & (t$4$d == cyc_add$63)) begin
+            add_r$63$d = 1'b1;
+        end
         norm_r$d = t$0$d == normalise;
         at_norm = norm_r$q & run;
         iss_r$0$clock = clock;
@@ -6767,6 +7718,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             res_r$0$d = 1'b1;
         end
         if ((view_res$0 == 2) & (t$2$d == res$0)) begin
+            res_r$0$d = 1'b1;
+        end
+        if ((view_res$0 == 3) & (t$3$d == res$0)) begin
+            res_r$0$d = 1'b1;
+        end
+        if ((view_res$0 == 4) & (t$4$d == res$0)) begin
             res_r$0$d = 1'b1;
         end
         at_res$0 = res_r$0$q & run;
@@ -6784,6 +7741,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_res$1 == 2) & (t$2$d == res$1)) begin
             res_r$1$d = 1'b1;
         end
+        if ((view_res$1 == 3) & (t$3$d == res$1)) begin
+            res_r$1$d = 1'b1;
+        end
+        if ((view_res$1 == 4) & (t$4$d == res$1)) begin
+            res_r$1$d = 1'b1;
+        end
         at_res$1 = res_r$1$q & run;
         iss_r$2$clock = clock;
         iss_r$2$d = t$0$d == iss$2;
@@ -6797,6 +7760,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             res_r$2$d = 1'b1;
         end
         if ((view_res$2 == 2) & (t$2$d == res$2)) begin
+            res_r$2$d = 1'b1;
+        end
+        if ((view_res$2 == 3) & (t$3$d == res$2)) begin
+            res_r$2$d = 1'b1;
+        end
+        if ((view_res$2 == 4) & (t$4$d == res$2)) begin
             res_r$2$d = 1'b1;
         end
         at_res$2 = res_r$2$q & run;
@@ -6814,6 +7783,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_res$3 == 2) & (t$2$d == res$3)) begin
             res_r$3$d = 1'b1;
         end
+        if ((view_res$3 == 3) & (t$3$d == res$3)) begin
+            res_r$3$d = 1'b1;
+        end
+        if ((view_res$3 == 4) & (t$4$d == res$3)) begin
+            res_r$3$d = 1'b1;
+        end
         at_res$3 = res_r$3$q & run;
         iss_r$4$clock = clock;
         iss_r$4$d = t$0$d == iss$4;
@@ -6827,6 +7802,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             res_r$4$d = 1'b1;
         end
         if ((view_res$4 == 2) & (t$2$d == res$4)) begin
+            res_r$4$d = 1'b1;
+        end
+        if ((view_res$4 == 3) & (t$3$d == res$4)) begin
+            res_r$4$d = 1'b1;
+        end
+        if ((view_res$4 == 4) & (t$4$d == res$4)) begin
             res_r$4$d = 1'b1;
         end
         at_res$4 = res_r$4$q & run;
@@ -6844,6 +7825,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_res$5 == 2) & (t$2$d == res$5)) begin
             res_r$5$d = 1'b1;
         end
+        if ((view_res$5 == 3) & (t$3$d == res$5)) begin
+            res_r$5$d = 1'b1;
+        end
+        if ((view_res$5 == 4) & (t$4$d == res$5)) begin
+            res_r$5$d = 1'b1;
+        end
         at_res$5 = res_r$5$q & run;
         iss_r$6$clock = clock;
         iss_r$6$d = t$0$d == iss$6;
@@ -6859,6 +7846,12 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_res$6 == 2) & (t$2$d == res$6)) begin
             res_r$6$d = 1'b1;
         end
+        if ((view_res$6 == 3) & (t$3$d == res$6)) begin
+            res_r$6$d = 1'b1;
+        end
+        if ((view_res$6 == 4) & (t$4$d == res$6)) begin
+            res_r$6$d = 1'b1;
+        end
         at_res$6 = res_r$6$q & run;
         handover_r$d = 1'b0;
         if ((view_handover == 0) & (t$0$d == handover)) begin
@@ -6870,8 +7863,14 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if ((view_handover == 2) & (t$2$d == handover)) begin
             handover_r$d = 1'b1;
         end
+        if ((view_handover == 3) & (t$3$d == handover)) begin
+            handover_r$d = 1'b1;
+        end
+        if ((view_handover == 4) & (t$4$d == handover)) begin
+            handover_r$d = 1'b1;
+        end
         at_handover = handover_r$q & run;
-        valid_r$d = t$2$d == last;
+        valid_r$d = t$4$d == last;
         busy_r$d = 1'b0;
         if (t$0$d != 32'h0) begin
             busy_r$d = 1'b1;
@@ -6882,234 +7881,348 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (t$2$d != 32'h0) begin
             busy_r$d = 1'b1;
         end
+        if (t$3$d != 32'h0) begin
+            busy_r$d = 1'b1;
+        end
+        if (t$4$d != 32'h0) begin
+            busy_r$d = 1'b1;
+        end
         off_grid_r$d = phase$d != 32'h0;
-        g0$vx$0 = vx$0$q;
-        g0$vy$0 = vy$0$q;
-        g0$vz$0 = vz$0$q;
+        g0$vx$0 = vx$0$d;
+        g0$vy$0 = vy$0$d;
+        g0$vz$0 = vz$0$d;
         g0$start_x$0 = x$0$q;
-        g0$vx$1 = vx$1$q;
-        g0$vy$1 = vy$1$q;
-        g0$vz$1 = vz$1$q;
+        g0$vx$1 = vx$1$d;
+        g0$vy$1 = vy$1$d;
+        g0$vz$1 = vz$1$d;
         g0$start_x$1 = x$1$q;
-        g0$vx$2 = vx$2$q;
-        g0$vy$2 = vy$2$q;
-        g0$vz$2 = vz$2$q;
+        g0$vx$2 = vx$2$d;
+        g0$vy$2 = vy$2$d;
+        g0$vz$2 = vz$2$d;
         g0$start_x$2 = x$2$q;
-        g0$vc$0 = vc$0$q;
-        g0$vc$1 = vc$1$q;
-        g0$vc$2 = vc$2$q;
-        g0$vc$3 = vc$3$q;
-        g0$vc$4 = vc$4$q;
-        g0$vc$5 = vc$5$q;
-        g0$vc$6 = vc$6$q;
-        g0$vc$7 = vc$7$q;
-        g0$vc$8 = vc$8$q;
-        g0$crosses = crosses$0$q;
+        g0$vc$0 = vc$0$d;
+        g0$vc$1 = vc$1$d;
+        g0$vc$2 = vc$2$d;
+        g0$vc$3 = vc$3$d;
+        g0$vc$4 = vc$4$d;
+        g0$vc$5 = vc$5$d;
+        g0$vc$6 = vc$6$d;
+        g0$vc$7 = vc$7$d;
+        g0$vc$8 = vc$8$d;
+        g0$crosses = crosses$0$d;
         g0$maj_left = maj_left$0;
-        g1$vx$0 = vx$3$q;
-        g1$vy$0 = vy$3$q;
-        g1$vz$0 = vz$3$q;
+        g1$vx$0 = vx$3$d;
+        g1$vy$0 = vy$3$d;
+        g1$vz$0 = vz$3$d;
         g1$start_x$0 = x$3$q;
-        g1$vx$1 = vx$4$q;
-        g1$vy$1 = vy$4$q;
-        g1$vz$1 = vz$4$q;
+        g1$vx$1 = vx$4$d;
+        g1$vy$1 = vy$4$d;
+        g1$vz$1 = vz$4$d;
         g1$start_x$1 = x$4$q;
-        g1$vx$2 = vx$5$q;
-        g1$vy$2 = vy$5$q;
-        g1$vz$2 = vz$5$q;
+        g1$vx$2 = vx$5$d;
+        g1$vy$2 = vy$5$d;
+        g1$vz$2 = vz$5$d;
         g1$start_x$2 = x$5$q;
-        g1$vc$0 = vc$9$q;
-        g1$vc$1 = vc$10$q;
-        g1$vc$2 = vc$11$q;
-        g1$vc$3 = vc$12$q;
-        g1$vc$4 = vc$13$q;
-        g1$vc$5 = vc$14$q;
-        g1$vc$6 = vc$15$q;
-        g1$vc$7 = vc$16$q;
-        g1$vc$8 = vc$17$q;
-        g1$crosses = crosses$1$q;
+        g1$vc$0 = vc$9$d;
+        g1$vc$1 = vc$10$d;
+        g1$vc$2 = vc$11$d;
+        g1$vc$3 = vc$12$d;
+        g1$vc$4 = vc$13$d;
+        g1$vc$5 = vc$14$d;
+        g1$vc$6 = vc$15$d;
+        g1$vc$7 = vc$16$d;
+        g1$vc$8 = vc$17$d;
+        g1$crosses = crosses$1$d;
         g1$maj_left = maj_left$1;
-        g2$vx$0 = vx$6$q;
-        g2$vy$0 = vy$6$q;
-        g2$vz$0 = vz$6$q;
+        g2$vx$0 = vx$6$d;
+        g2$vy$0 = vy$6$d;
+        g2$vz$0 = vz$6$d;
         g2$start_x$0 = x$6$q;
-        g2$vx$1 = vx$7$q;
-        g2$vy$1 = vy$7$q;
-        g2$vz$1 = vz$7$q;
+        g2$vx$1 = vx$7$d;
+        g2$vy$1 = vy$7$d;
+        g2$vz$1 = vz$7$d;
         g2$start_x$1 = x$7$q;
-        g2$vx$2 = vx$8$q;
-        g2$vy$2 = vy$8$q;
-        g2$vz$2 = vz$8$q;
+        g2$vx$2 = vx$8$d;
+        g2$vy$2 = vy$8$d;
+        g2$vz$2 = vz$8$d;
         g2$start_x$2 = x$8$q;
-        g2$vc$0 = vc$18$q;
-        g2$vc$1 = vc$19$q;
-        g2$vc$2 = vc$20$q;
-        g2$vc$3 = vc$21$q;
-        g2$vc$4 = vc$22$q;
-        g2$vc$5 = vc$23$q;
-        g2$vc$6 = vc$24$q;
-        g2$vc$7 = vc$25$q;
-        g2$vc$8 = vc$26$q;
-        g2$crosses = crosses$2$q;
+        g2$vc$0 = vc$18$d;
+        g2$vc$1 = vc$19$d;
+        g2$vc$2 = vc$20$d;
+        g2$vc$3 = vc$21$d;
+        g2$vc$4 = vc$22$d;
+        g2$vc$5 = vc$23$d;
+        g2$vc$6 = vc$24$d;
+        g2$vc$7 = vc$25$d;
+        g2$vc$8 = vc$26$d;
+        g2$crosses = crosses$2$d;
         g2$maj_left = maj_left$2;
-        g3$vx$0 = vx$9$q;
-        g3$vy$0 = vy$9$q;
-        g3$vz$0 = vz$9$q;
+        g3$vx$0 = vx$9$d;
+        g3$vy$0 = vy$9$d;
+        g3$vz$0 = vz$9$d;
         g3$start_x$0 = x$9$q;
-        g3$vx$1 = vx$10$q;
-        g3$vy$1 = vy$10$q;
-        g3$vz$1 = vz$10$q;
+        g3$vx$1 = vx$10$d;
+        g3$vy$1 = vy$10$d;
+        g3$vz$1 = vz$10$d;
         g3$start_x$1 = x$10$q;
-        g3$vx$2 = vx$11$q;
-        g3$vy$2 = vy$11$q;
-        g3$vz$2 = vz$11$q;
+        g3$vx$2 = vx$11$d;
+        g3$vy$2 = vy$11$d;
+        g3$vz$2 = vz$11$d;
         g3$start_x$2 = x$11$q;
-        g3$vc$0 = vc$27$q;
-        g3$vc$1 = vc$28$q;
-        g3$vc$2 = vc$29$q;
-        g3$vc$3 = vc$30$q;
-        g3$vc$4 = vc$31$q;
-        g3$vc$5 = vc$32$q;
-        g3$vc$6 = vc$33$q;
-        g3$vc$7 = vc$34$q;
-        g3$vc$8 = vc$35$q;
-        g3$crosses = crosses$3$q;
+        g3$vc$0 = vc$27$d;
+        g3$vc$1 = vc$28$d;
+        g3$vc$2 = vc$29$d;
+        g3$vc$3 = vc$30$d;
+        g3$vc$4 = vc$31$d;
+        g3$vc$5 = vc$32$d;
+        g3$vc$6 = vc$33$d;
+        g3$vc$7 = vc$34$d;
+        g3$vc$8 = vc$35$d;
+        g3$crosses = crosses$3$d;
         g3$maj_left = maj_left$3;
-        g4$vx$0 = vx$12$q;
-        g4$vy$0 = vy$12$q;
-        g4$vz$0 = vz$12$q;
+        g4$vx$0 = vx$12$d;
+        g4$vy$0 = vy$12$d;
+        g4$vz$0 = vz$12$d;
         g4$start_x$0 = x$12$q;
-        g4$vx$1 = vx$13$q;
-        g4$vy$1 = vy$13$q;
-        g4$vz$1 = vz$13$q;
+        g4$vx$1 = vx$13$d;
+        g4$vy$1 = vy$13$d;
+        g4$vz$1 = vz$13$d;
         g4$start_x$1 = x$13$q;
-        g4$vx$2 = vx$14$q;
-        g4$vy$2 = vy$14$q;
-        g4$vz$2 = vz$14$q;
+        g4$vx$2 = vx$14$d;
+        g4$vy$2 = vy$14$d;
+        g4$vz$2 = vz$14$d;
         g4$start_x$2 = x$14$q;
-        g4$vc$0 = vc$36$q;
-        g4$vc$1 = vc$37$q;
-        g4$vc$2 = vc$38$q;
-        g4$vc$3 = vc$39$q;
-        g4$vc$4 = vc$40$q;
-        g4$vc$5 = vc$41$q;
-        g4$vc$6 = vc$42$q;
-        g4$vc$7 = vc$43$q;
-        g4$vc$8 = vc$44$q;
-        g4$crosses = crosses$4$q;
+        g4$vc$0 = vc$36$d;
+        g4$vc$1 = vc$37$d;
+        g4$vc$2 = vc$38$d;
+        g4$vc$3 = vc$39$d;
+        g4$vc$4 = vc$40$d;
+        g4$vc$5 = vc$41$d;
+        g4$vc$6 = vc$42$d;
+        g4$vc$7 = vc$43$d;
+        g4$vc$8 = vc$44$d;
+        g4$crosses = crosses$4$d;
         g4$maj_left = maj_left$4;
         area_abs = area$q;
         if (area$q[area_msb]) begin
             area_abs = ((32'h0) & 34'h3ffffffff) - area$q;
         end
+        abs_p = ((area_abs) & 36'hfffffffff);
+        nib_any$0 = 1'b0;
+        nib_pos$0 = 32'h0;
+        if (abs_p[32'h4 * 0 + 0]) begin
+            nib_any$0 = 1'b1;
+            nib_pos$0 = bit_index$0;
+        end
+        if (abs_p[32'h4 * 0 + 1]) begin
+            nib_any$0 = 1'b1;
+            nib_pos$0 = bit_index$1;
+        end
+        if (abs_p[32'h4 * 0 + 2]) begin
+            nib_any$0 = 1'b1;
+            nib_pos$0 = bit_index$2;
+        end
+        if (abs_p[32'h4 * 0 + 3]) begin
+            nib_any$0 = 1'b1;
+            nib_pos$0 = bit_index$3;
+        end
+        nib_sh$0 = recip_top - nib_pos$0;
+        nib_any$1 = 1'b0;
+        nib_pos$1 = 32'h0;
+        if (abs_p[32'h4 * 1 + 0]) begin
+            nib_any$1 = 1'b1;
+            nib_pos$1 = bit_index$4;
+        end
+        if (abs_p[32'h4 * 1 + 1]) begin
+            nib_any$1 = 1'b1;
+            nib_pos$1 = bit_index$5;
+        end
+        if (abs_p[32'h4 * 1 + 2]) begin
+            nib_any$1 = 1'b1;
+            nib_pos$1 = bit_index$6;
+        end
+        if (abs_p[32'h4 * 1 + 3]) begin
+            nib_any$1 = 1'b1;
+            nib_pos$1 = bit_index$7;
+        end
+        nib_sh$1 = recip_top - nib_pos$1;
+        nib_any$2 = 1'b0;
+        nib_pos$2 = 32'h0;
+        if (abs_p[32'h4 * 2 + 0]) begin
+            nib_any$2 = 1'b1;
+            nib_pos$2 = bit_index$8;
+        end
+        if (abs_p[32'h4 * 2 + 1]) begin
+            nib_any$2 = 1'b1;
+            nib_pos$2 = bit_index$9;
+        end
+        if (abs_p[32'h4 * 2 + 2]) begin
+            nib_any$2 = 1'b1;
+            nib_pos$2 = bit_index$10;
+        end
+        if (abs_p[32'h4 * 2 + 3]) begin
+            nib_any$2 = 1'b1;
+            nib_pos$2 = bit_index$11;
+        end
+        nib_sh$2 = recip_top - nib_pos$2;
+        nib_any$3 = 1'b0;
+        nib_pos$3 = 32'h0;
+        if (abs_p[32'h4 * 3 + 0]) begin
+            nib_any$3 = 1'b1;
+            nib_pos$3 = bit_index$12;
+        end
+        if (abs_p[32'h4 * 3 + 1]) begin
+            nib_any$3 = 1'b1;
+            nib_pos$3 = bit_index$13;
+        end
+        if (abs_p[32'h4 * 3 + 2]) begin
+            nib_any$3 = 1'b1;
+            nib_pos$3 = bit_index$14;
+        end
+        if (abs_p[32'h4 * 3 + 3]) begin
+            nib_any$3 = 1'b1;
+            nib_pos$3 = bit_index$15;
+        end
+        nib_sh$3 = recip_top - nib_pos$3;
+        nib_any$4 = 1'b0;
+        nib_pos$4 = 32'h0;
+        if (abs_p[32'h4 * 4 + 0]) begin
+            nib_any$4 = 1'b1;
+            nib_pos$4 = bit_index$16;
+        end
+        if (abs_p[32'h4 * 4 + 1]) begin
+            nib_any$4 = 1'b1;
+            nib_pos$4 = bit_index$17;
+        end
+        if (abs_p[32'h4 * 4 + 2]) begin
+            nib_any$4 = 1'b1;
+            nib_pos$4 = bit_index$18;
+        end
+        if (abs_p[32'h4 * 4 + 3]) begin
+            nib_any$4 = 1'b1;
+            nib_pos$4 = bit_index$19;
+        end
+        nib_sh$4 = recip_top - nib_pos$4;
+        nib_any$5 = 1'b0;
+        nib_pos$5 = 32'h0;
+        if (abs_p[32'h4 * 5 + 0]) begin
+            nib_any$5 = 1'b1;
+            nib_pos$5 = bit_index$20;
+        end
+        if (abs_p[32'h4 * 5 + 1]) begin
+            nib_any$5 = 1'b1;
+            nib_pos$5 = bit_index$21;
+        end
+        if (abs_p[32'h4 * 5 + 2]) begin
+            nib_any$5 = 1'b1;
+            nib_pos$5 = bit_index$22;
+        end
+        if (abs_p[32'h4 * 5 + 3]) begin
+            nib_any$5 = 1'b1;
+            nib_pos$5 = bit_index$23;
+        end
+        nib_sh$5 = recip_top - nib_pos$5;
+        nib_any$6 = 1'b0;
+        nib_pos$6 = 32'h0;
+        if (abs_p[32'h4 * 6 + 0]) begin
+            nib_any$6 = 1'b1;
+            nib_pos$6 = bit_index$24;
+        end
+        if (abs_p[32'h4 * 6 + 1]) begin
+            nib_any$6 = 1'b1;
+            nib_pos$6 = bit_index$25;
+        end
+        if (abs_p[32'h4 * 6 + 2]) begin
+            nib_any$6 = 1'b1;
+            nib_pos$6 = bit_index$26;
+        end
+        if (abs_p[32'h4 * 6 + 3]) begin
+            nib_any$6 = 1'b1;
+            nib_pos$6 = bit_index$27;
+        end
+        nib_sh$6 = recip_top - nib_pos$6;
+        nib_any$7 = 1'b0;
+        nib_pos$7 = 32'h0;
+        if (abs_p[32'h4 * 7 + 0]) begin
+            nib_any$7 = 1'b1;
+            nib_pos$7 = bit_index$28;
+        end
+        if (abs_p[32'h4 * 7 + 1]) begin
+            nib_any$7 = 1'b1;
+            nib_pos$7 = bit_index$29;
+        end
+        if (abs_p[32'h4 * 7 + 2]) begin
+            nib_any$7 = 1'b1;
+            nib_pos$7 = bit_index$30;
+        end
+        if (abs_p[32'h4 * 7 + 3]) begin
+            nib_any$7 = 1'b1;
+            nib_pos$7 = bit_index$31;
+        end
+        nib_sh$7 = recip_top - nib_pos$7;
+        nib_any$8 = 1'b0;
+        nib_pos$8 = 32'h0;
+        if (abs_p[32'h4 * 8 + 0]) begin
+            nib_any$8 = 1'b1;
+            nib_pos$8 = bit_index$32;
+        end
+        if (abs_p[32'h4 * 8 + 1]) begin
+            nib_any$8 = 1'b1;
+            nib_pos$8 = bit_index$33;
+        end
+        if (abs_p[32'h4 * 8 + 2]) begin
+            nib_any$8 = 1'b1;
+            nib_pos$8 = bit_index$34;
+        end
+        if (abs_p[32'h4 * 8 + 3]) begin
+            nib_any$8 = 1'b1;
+            nib_pos$8 = bit_index$35;
+        end
+        nib_sh$8 = recip_top - nib_pos$8;
         exp_c = 32'h0;
-        if (area_abs[0]) begin
-            exp_c = 0;
+        nsh_c = recip_top;
+        if (nib_any$0) begin
+            exp_c = nib_pos$0;
+            nsh_c = nib_sh$0;
         end
-        if (area_abs[1]) begin
-            exp_c = 1;
+        if (nib_any$1) begin
+            exp_c = nib_pos$1;
+            nsh_c = nib_sh$1;
         end
-        if (area_abs[2]) begin
-            exp_c = 2;
+        if (nib_any$2) begin
+            exp_c = nib_pos$2;
+            nsh_c = nib_sh$2;
         end
-        if (area_abs[3]) begin
-            exp_c = 3;
+        if (nib_any$3) begin
+            exp_c = nib_pos$3;
+            nsh_c = nib_sh$3;
         end
-        if (area_abs[4]) begin
-            exp_c = 4;
+        if (nib_any$4) begin
+            exp_c = nib_pos$4;
+            nsh_c = nib_sh$4;
         end
-        if (area_abs[5]) begin
-            exp_c = 5;
+        if (nib_any$5) begin
+            exp_c = nib_pos$5;
+            nsh_c = nib_sh$5;
         end
-        if (area_abs[6]) begin
-            exp_c = 6;
+        if (nib_any$6) begin
+            exp_c = nib_pos$6;
+            nsh_c = nib_sh$6;
         end
-        if (area_abs[7]) begin
-            exp_c = 7;
+        if (nib_any$7) begin
+            exp_c = nib_pos$7;
+            nsh_c = nib_sh$7;
         end
-        if (area_abs[8]) begin
-            exp_c = 8;
+        if (nib_any$8) begin
+            exp_c = nib_pos$8;
+            nsh_c = nib_sh$8;
         end
-        if (area_abs[9]) begin
-            exp_c = 9;
-        end
-        if (area_abs[10]) begin
-            exp_c = 10;
-        end
-        if (area_abs[11]) begin
-            exp_c = 11;
-        end
-        if (area_abs[12]) begin
-            exp_c = 12;
-        end
-        if (area_abs[13]) begin
-            exp_c = 13;
-        end
-        if (area_abs[14]) begin
-            exp_c = 14;
-        end
-        if (area_abs[15]) begin
-            exp_c = 15;
-        end
-        if (area_abs[16]) begin
-            exp_c = 16;
-        end
-        if (area_abs[17]) begin
-            exp_c = 17;
-        end
-        if (area_abs[18]) begin
-            exp_c = 18;
-        end
-        if (area_abs[19]) begin
-            exp_c = 19;
-        end
-        if (area_abs[20]) begin
-            exp_c = 20;
-        end
-        if (area_abs[21]) begin
-            exp_c = 21;
-        end
-        if (area_abs[22]) begin
-            exp_c = 22;
-        end
-        if (area_abs[23]) begin
-            exp_c = 23;
-        end
-        if (area_abs[24]) begin
-            exp_c = 24;
-        end
-        if (area_abs[25]) begin
-            exp_c = 25;
-        end
-        if (area_abs[26]) begin
-            exp_c = 26;
-        end
-        if (area_abs[27]) begin
-            exp_c = 27;
-        end
-        if (area_abs[28]) begin
-            exp_c = 28;
-        end
-        if (area_abs[29]) begin
-            exp_c = 29;
-        end
-        if (area_abs[30]) begin
-            exp_c = 30;
-        end
-        if (area_abs[31]) begin
-            exp_c = 31;
-        end
-        if (area_abs[32]) begin
-            exp_c = 32;
-        end
-        if (area_abs[33]) begin
-            exp_c = 33;
-        end
-        norm_d = area_abs << (recip_top - exp_c);
         if (at_norm) begin
-            norm$d = norm_d;
+            norm$d = area_abs;
+            nsh$d = nsh_c;
             exp$0$d = exp_c;
         end
+        norm_d = norm$q << nsh$q;
         div$out_ready = 1'b1;
         div$hold = ~run;
         div$inp_valid = div_v$q;
@@ -7126,7 +8239,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (at_iss$0) begin
             div_v$d = 1'b1;
             div_n$d = recip_n;
-            div_d$d = norm$q;
+            div_d$d = norm_d;
         end
         if (at_iss$1) begin
             div_v$d = 1'b1;
@@ -7182,15 +8295,21 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (view_res$0 == 2) begin
             exp_r = exp$2$q;
         end
+        if (view_res$0 == 3) begin
+            exp_r = exp$3$q;
+        end
+        if (view_res$0 == 4) begin
+            exp_r = exp$4$q;
+        end
         lsh = eq_shift - exp_r;
         if (at_res$0) begin
-            exp_e$d = exp_r;
+            rsh$d = exp_r - eq_shift;
+            left$d = exp_r <= eq_shift;
             mant_s$d = ((div$out_q[(32'h0)+:(25)]) & 57'h1ffffffffffffff);
             if (exp_r <= eq_shift) begin
                 mant_s$d = ((div$out_q[(32'h0)+:(25)]) & 57'h1ffffffffffffff) << lsh;
             end
         end
-        rsh = exp_e$q - eq_shift;
         xi$0 = g0$xi$0;
         ed$0 = g0$ed16$0[(32'h0)+:(21)];
         if (view_res$1 == 32'h1) begin
@@ -7241,6 +8360,28 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (at_res$2 & (view_res_w$1 == 2)) begin
             q$6$d = q_n;
             rho$6$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (at_res$1 & (view_res_w$0 == 3)) begin
+            x$9$d = xi$0 + q_n + r_pos;
+            r$9$d = 32'h0;
+            if (r_pos) begin
+                r$9$d = ed$0 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$2 & (view_res_w$1 == 3)) begin
+            q$9$d = q_n;
+            rho$9$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (at_res$1 & (view_res_w$0 == 4)) begin
+            x$12$d = xi$0 + q_n + r_pos;
+            r$12$d = 32'h0;
+            if (r_pos) begin
+                r$12$d = ed$0 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$2 & (view_res_w$1 == 4)) begin
+            q$12$d = q_n;
+            rho$12$d = div$out_r[(32'h0)+:(21)] << frac;
         end
         xi$1 = g0$xi$1;
         ed$1 = g0$ed16$1[(32'h0)+:(21)];
@@ -7293,6 +8434,28 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             q$7$d = q_n;
             rho$7$d = div$out_r[(32'h0)+:(21)] << frac;
         end
+        if (at_res$3 & (view_res_w$2 == 3)) begin
+            x$10$d = xi$1 + q_n + r_pos;
+            r$10$d = 32'h0;
+            if (r_pos) begin
+                r$10$d = ed$1 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$4 & (view_res_w$3 == 3)) begin
+            q$10$d = q_n;
+            rho$10$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (at_res$3 & (view_res_w$2 == 4)) begin
+            x$13$d = xi$1 + q_n + r_pos;
+            r$13$d = 32'h0;
+            if (r_pos) begin
+                r$13$d = ed$1 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$4 & (view_res_w$3 == 4)) begin
+            q$13$d = q_n;
+            rho$13$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
         xi$2 = g0$xi$2;
         ed$2 = g0$ed16$2[(32'h0)+:(21)];
         if (view_res$5 == 32'h1) begin
@@ -7343,6 +8506,28 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (at_res$6 & (view_res_w$5 == 2)) begin
             q$8$d = q_n;
             rho$8$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (at_res$5 & (view_res_w$4 == 3)) begin
+            x$11$d = xi$2 + q_n + r_pos;
+            r$11$d = 32'h0;
+            if (r_pos) begin
+                r$11$d = ed$2 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$6 & (view_res_w$5 == 3)) begin
+            q$11$d = q_n;
+            rho$11$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (at_res$5 & (view_res_w$4 == 4)) begin
+            x$14$d = xi$2 + q_n + r_pos;
+            r$14$d = 32'h0;
+            if (r_pos) begin
+                r$14$d = ed$2 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$6 & (view_res_w$5 == 4)) begin
+            q$14$d = q_n;
+            rho$14$d = div$out_r[(32'h0)+:(21)] << frac;
         end
         mul$0$a = 32'h0;
         mul$0$b = 32'h0;
@@ -8161,12 +9346,24 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (view$30 == 2) begin
             op_q$0 = q$6$q;
         end
+        if (view$30 == 3) begin
+            op_q$0 = q$9$q;
+        end
+        if (view$30 == 4) begin
+            op_q$0 = q$12$q;
+        end
         op_q$1 = q$0$q;
         if (view$33 == 1) begin
             op_q$1 = q$3$q;
         end
         if (view$33 == 2) begin
             op_q$1 = q$6$q;
+        end
+        if (view$33 == 3) begin
+            op_q$1 = q$9$q;
+        end
+        if (view$33 == 4) begin
+            op_q$1 = q$12$q;
         end
         op_q$2 = q$0$q;
         if (view$36 == 1) begin
@@ -8175,12 +9372,24 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (view$36 == 2) begin
             op_q$2 = q$6$q;
         end
+        if (view$36 == 3) begin
+            op_q$2 = q$9$q;
+        end
+        if (view$36 == 4) begin
+            op_q$2 = q$12$q;
+        end
         op_q$3 = q$0$q;
         if (view$39 == 1) begin
             op_q$3 = q$3$q;
         end
         if (view$39 == 2) begin
             op_q$3 = q$6$q;
+        end
+        if (view$39 == 3) begin
+            op_q$3 = q$9$q;
+        end
+        if (view$39 == 4) begin
+            op_q$3 = q$12$q;
         end
         op_q$4 = q$1$q;
         if (view$42 == 1) begin
@@ -8189,12 +9398,24 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (view$42 == 2) begin
             op_q$4 = q$7$q;
         end
+        if (view$42 == 3) begin
+            op_q$4 = q$10$q;
+        end
+        if (view$42 == 4) begin
+            op_q$4 = q$13$q;
+        end
         op_q$5 = q$1$q;
         if (view$45 == 1) begin
             op_q$5 = q$4$q;
         end
         if (view$45 == 2) begin
             op_q$5 = q$7$q;
+        end
+        if (view$45 == 3) begin
+            op_q$5 = q$10$q;
+        end
+        if (view$45 == 4) begin
+            op_q$5 = q$13$q;
         end
         op_q$6 = q$1$q;
         if (view$48 == 1) begin
@@ -8203,12 +9424,24 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (view$48 == 2) begin
             op_q$6 = q$7$q;
         end
+        if (view$48 == 3) begin
+            op_q$6 = q$10$q;
+        end
+        if (view$48 == 4) begin
+            op_q$6 = q$13$q;
+        end
         op_q$7 = q$1$q;
         if (view$51 == 1) begin
             op_q$7 = q$4$q;
         end
         if (view$51 == 2) begin
             op_q$7 = q$7$q;
+        end
+        if (view$51 == 3) begin
+            op_q$7 = q$10$q;
+        end
+        if (view$51 == 4) begin
+            op_q$7 = q$13$q;
         end
         op_q$8 = q$2$q;
         if (view$54 == 1) begin
@@ -8217,12 +9450,24 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (view$54 == 2) begin
             op_q$8 = q$8$q;
         end
+        if (view$54 == 3) begin
+            op_q$8 = q$11$q;
+        end
+        if (view$54 == 4) begin
+            op_q$8 = q$14$q;
+        end
         op_q$9 = q$2$q;
         if (view$57 == 1) begin
             op_q$9 = q$5$q;
         end
         if (view$57 == 2) begin
             op_q$9 = q$8$q;
+        end
+        if (view$57 == 3) begin
+            op_q$9 = q$11$q;
+        end
+        if (view$57 == 4) begin
+            op_q$9 = q$14$q;
         end
         op_q$10 = q$2$q;
         if (view$60 == 1) begin
@@ -8231,12 +9476,24 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (view$60 == 2) begin
             op_q$10 = q$8$q;
         end
+        if (view$60 == 3) begin
+            op_q$10 = q$11$q;
+        end
+        if (view$60 == 4) begin
+            op_q$10 = q$14$q;
+        end
         op_q$11 = q$2$q;
         if (view$63 == 1) begin
             op_q$11 = q$5$q;
         end
         if (view$63 == 2) begin
             op_q$11 = q$8$q;
+        end
+        if (view$63 == 3) begin
+            op_q$11 = q$11$q;
+        end
+        if (view$63 == 4) begin
+            op_q$11 = q$14$q;
         end
         mul$0$en = run;
         if ((lane$0 == 0) & act_r$0$q) begin
@@ -11397,21 +12654,21 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         if (add_r$6$q) begin
             num_base$2 = 32'h0;
         end
-        shr$0 = pe$0 >> rsh;
+        shr$0 = pe$0 >> rsh$q;
         if (pe$0[p_msb]) begin
-            shr$0 = (pe$0 >> rsh) | ~(ones >> rsh);
+            shr$0 = (pe$0 >> rsh$q) | ~(ones >> rsh$q);
         end
-        shr$1 = pe$1 >> rsh;
+        shr$1 = pe$1 >> rsh$q;
         if (pe$1[p_msb]) begin
-            shr$1 = (pe$1 >> rsh) | ~(ones >> rsh);
+            shr$1 = (pe$1 >> rsh$q) | ~(ones >> rsh$q);
         end
-        shr$2 = pe$2 >> rsh;
+        shr$2 = pe$2 >> rsh$q;
         if (pe$2[p_msb]) begin
-            shr$2 = (pe$2 >> rsh) | ~(ones >> rsh);
+            shr$2 = (pe$2 >> rsh$q) | ~(ones >> rsh$q);
         end
-        shr$3 = pe$3 >> rsh;
+        shr$3 = pe$3 >> rsh$q;
         if (pe$3[p_msb]) begin
-            shr$3 = (pe$3 >> rsh) | ~(ones >> rsh);
+            shr$3 = (pe$3 >> rsh$q) | ~(ones >> rsh$q);
         end
         gx_base$0 = gx$0$q;
         if (add_r$12$q) begin
@@ -11500,25 +12757,25 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             num$2$d = num_base$2 + pn$4 + pn$5;
             if (add_r$8$q) begin
                 p$0$d = shr$0;
-                if (exp_e$q <= eq_shift) begin
+                if (left$q) begin
                     p$0$d = pe$0;
                 end
             end
             if (add_r$9$q) begin
                 p$1$d = shr$1;
-                if (exp_e$q <= eq_shift) begin
+                if (left$q) begin
                     p$1$d = pe$1;
                 end
             end
             if (add_r$10$q) begin
                 p$2$d = shr$2;
-                if (exp_e$q <= eq_shift) begin
+                if (left$q) begin
                     p$2$d = pe$2;
                 end
             end
             if (add_r$11$q) begin
                 p$3$d = shr$3;
-                if (exp_e$q <= eq_shift) begin
+                if (left$q) begin
                     p$3$d = pe$3;
                 end
             end
@@ -11715,18 +12972,18 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         out$short1_j = o_j$2$q;
         out$short1_count = o_count$2$q;
         out$short1_d = o_d$2$q;
-        out$maj_x = x$6$q[(32'h0)+:(13)];
-        out$maj_r = r$6$q;
-        out$maj_q = q$6$q[(32'h0)+:(17)];
-        out$maj_rho = rho$6$q;
-        out$short0_x = x$7$q[(32'h0)+:(13)];
-        out$short0_r = r$7$q;
-        out$short0_q = q$7$q[(32'h0)+:(17)];
-        out$short0_rho = rho$7$q;
-        out$short1_x = x$8$q[(32'h0)+:(13)];
-        out$short1_r = r$8$q;
-        out$short1_q = q$8$q[(32'h0)+:(17)];
-        out$short1_rho = rho$8$q;
+        out$maj_x = x$12$q[(32'h0)+:(13)];
+        out$maj_r = r$12$q;
+        out$maj_q = q$12$q[(32'h0)+:(17)];
+        out$maj_rho = rho$12$q;
+        out$short0_x = x$13$q[(32'h0)+:(13)];
+        out$short0_r = r$13$q;
+        out$short0_q = q$13$q[(32'h0)+:(17)];
+        out$short0_rho = rho$13$q;
+        out$short1_x = x$14$q[(32'h0)+:(13)];
+        out$short1_r = r$14$q;
+        out$short1_q = q$14$q[(32'h0)+:(17)];
+        out$short1_rho = rho$14$q;
         out$maj_at_z = plane$0$q[(32'h0)+:(36)];
         out$maj_at_c0 = plane$1$q[(32'h0)+:(32)];
         out$maj_at_c1 = plane$2$q[(32'h0)+:(32)];
@@ -14430,6 +15687,7 @@ module triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,o
     // Constant declarations
     localparam  n_msb = 8'h39;
     localparam  qm = 8'h19;
+    localparam  q_sign = 26'h2000000;
     
     // Stub signals
     reg  stages$0$clock;
@@ -14492,6 +15750,246 @@ module triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,o
     wire  [24:0] stages$4$x;
     wire  [33:0] stages$4$d;
     wire  stages$4$neg;
+    reg  stages$5$clock;
+    reg  stages$5$enable;
+    reg  stages$5$valid_in;
+    reg  [33:0] stages$5$p_in;
+    reg  [24:0] stages$5$x_in;
+    reg  [33:0] stages$5$d_in;
+    reg  stages$5$neg_in;
+    wire  stages$5$valid;
+    wire  [33:0] stages$5$p;
+    wire  [24:0] stages$5$x;
+    wire  [33:0] stages$5$d;
+    wire  stages$5$neg;
+    reg  stages$6$clock;
+    reg  stages$6$enable;
+    reg  stages$6$valid_in;
+    reg  [33:0] stages$6$p_in;
+    reg  [24:0] stages$6$x_in;
+    reg  [33:0] stages$6$d_in;
+    reg  stages$6$neg_in;
+    wire  stages$6$valid;
+    wire  [33:0] stages$6$p;
+    wire  [24:0] stages$6$x;
+    wire  [33:0] stages$6$d;
+    wire  stages$6$neg;
+    reg  stages$7$clock;
+    reg  stages$7$enable;
+    reg  stages$7$valid_in;
+    reg  [33:0] stages$7$p_in;
+    reg  [24:0] stages$7$x_in;
+    reg  [33:0] stages$7$d_in;
+    reg  stages$7$neg_in;
+    wire  stages$7$valid;
+    wire  [33:0] stages$7$p;
+    wire  [24:0] stages$7$x;
+    wire  [33:0] stages$7$d;
+    wire  stages$7$neg;
+    reg  stages$8$clock;
+    reg  stages$8$enable;
+    reg  stages$8$valid_in;
+    reg  [33:0] stages$8$p_in;
+    reg  [24:0] stages$8$x_in;
+    reg  [33:0] stages$8$d_in;
+    reg  stages$8$neg_in;
+    wire  stages$8$valid;
+    wire  [33:0] stages$8$p;
+    wire  [24:0] stages$8$x;
+    wire  [33:0] stages$8$d;
+    wire  stages$8$neg;
+    reg  stages$9$clock;
+    reg  stages$9$enable;
+    reg  stages$9$valid_in;
+    reg  [33:0] stages$9$p_in;
+    reg  [24:0] stages$9$x_in;
+    reg  [33:0] stages$9$d_in;
+    reg  stages$9$neg_in;
+    wire  stages$9$valid;
+    wire  [33:0] stages$9$p;
+    wire  [24:0] stages$9$x;
+    wire  [33:0] stages$9$d;
+    wire  stages$9$neg;
+    reg  stages$10$clock;
+    reg  stages$10$enable;
+    reg  stages$10$valid_in;
+    reg  [33:0] stages$10$p_in;
+    reg  [24:0] stages$10$x_in;
+    reg  [33:0] stages$10$d_in;
+    reg  stages$10$neg_in;
+    wire  stages$10$valid;
+    wire  [33:0] stages$10$p;
+    wire  [24:0] stages$10$x;
+    wire  [33:0] stages$10$d;
+    wire  stages$10$neg;
+    reg  stages$11$clock;
+    reg  stages$11$enable;
+    reg  stages$11$valid_in;
+    reg  [33:0] stages$11$p_in;
+    reg  [24:0] stages$11$x_in;
+    reg  [33:0] stages$11$d_in;
+    reg  stages$11$neg_in;
+    wire  stages$11$valid;
+    wire  [33:0] stages$11$p;
+    wire  [24:0] stages$11$x;
+    wire  [33:0] stages$11$d;
+    wire  stages$11$neg;
+    reg  stages$12$clock;
+    reg  stages$12$enable;
+    reg  stages$12$valid_in;
+    reg  [33:0] stages$12$p_in;
+    reg  [24:0] stages$12$x_in;
+    reg  [33:0] stages$12$d_in;
+    reg  stages$12$neg_in;
+    wire  stages$12$valid;
+    wire  [33:0] stages$12$p;
+    wire  [24:0] stages$12$x;
+    wire  [33:0] stages$12$d;
+    wire  stages$12$neg;
+    reg  stages$13$clock;
+    reg  stages$13$enable;
+    reg  stages$13$valid_in;
+    reg  [33:0] stages$13$p_in;
+    reg  [24:0] stages$13$x_in;
+    reg  [33:0] stages$13$d_in;
+    reg  stages$13$neg_in;
+    wire  stages$13$valid;
+    wire  [33:0] stages$13$p;
+    wire  [24:0] stages$13$x;
+    wire  [33:0] stages$13$d;
+    wire  stages$13$neg;
+    reg  stages$14$clock;
+    reg  stages$14$enable;
+    reg  stages$14$valid_in;
+    reg  [33:0] stages$14$p_in;
+    reg  [24:0] stages$14$x_in;
+    reg  [33:0] stages$14$d_in;
+    reg  stages$14$neg_in;
+    wire  stages$14$valid;
+    wire  [33:0] stages$14$p;
+    wire  [24:0] stages$14$x;
+    wire  [33:0] stages$14$d;
+    wire  stages$14$neg;
+    reg  stages$15$clock;
+    reg  stages$15$enable;
+    reg  stages$15$valid_in;
+    reg  [33:0] stages$15$p_in;
+    reg  [24:0] stages$15$x_in;
+    reg  [33:0] stages$15$d_in;
+    reg  stages$15$neg_in;
+    wire  stages$15$valid;
+    wire  [33:0] stages$15$p;
+    wire  [24:0] stages$15$x;
+    wire  [33:0] stages$15$d;
+    wire  stages$15$neg;
+    reg  stages$16$clock;
+    reg  stages$16$enable;
+    reg  stages$16$valid_in;
+    reg  [33:0] stages$16$p_in;
+    reg  [24:0] stages$16$x_in;
+    reg  [33:0] stages$16$d_in;
+    reg  stages$16$neg_in;
+    wire  stages$16$valid;
+    wire  [33:0] stages$16$p;
+    wire  [24:0] stages$16$x;
+    wire  [33:0] stages$16$d;
+    wire  stages$16$neg;
+    reg  stages$17$clock;
+    reg  stages$17$enable;
+    reg  stages$17$valid_in;
+    reg  [33:0] stages$17$p_in;
+    reg  [24:0] stages$17$x_in;
+    reg  [33:0] stages$17$d_in;
+    reg  stages$17$neg_in;
+    wire  stages$17$valid;
+    wire  [33:0] stages$17$p;
+    wire  [24:0] stages$17$x;
+    wire  [33:0] stages$17$d;
+    wire  stages$17$neg;
+    reg  stages$18$clock;
+    reg  stages$18$enable;
+    reg  stages$18$valid_in;
+    reg  [33:0] stages$18$p_in;
+    reg  [24:0] stages$18$x_in;
+    reg  [33:0] stages$18$d_in;
+    reg  stages$18$neg_in;
+    wire  stages$18$valid;
+    wire  [33:0] stages$18$p;
+    wire  [24:0] stages$18$x;
+    wire  [33:0] stages$18$d;
+    wire  stages$18$neg;
+    reg  stages$19$clock;
+    reg  stages$19$enable;
+    reg  stages$19$valid_in;
+    reg  [33:0] stages$19$p_in;
+    reg  [24:0] stages$19$x_in;
+    reg  [33:0] stages$19$d_in;
+    reg  stages$19$neg_in;
+    wire  stages$19$valid;
+    wire  [33:0] stages$19$p;
+    wire  [24:0] stages$19$x;
+    wire  [33:0] stages$19$d;
+    wire  stages$19$neg;
+    reg  stages$20$clock;
+    reg  stages$20$enable;
+    reg  stages$20$valid_in;
+    reg  [33:0] stages$20$p_in;
+    reg  [24:0] stages$20$x_in;
+    reg  [33:0] stages$20$d_in;
+    reg  stages$20$neg_in;
+    wire  stages$20$valid;
+    wire  [33:0] stages$20$p;
+    wire  [24:0] stages$20$x;
+    wire  [33:0] stages$20$d;
+    wire  stages$20$neg;
+    reg  stages$21$clock;
+    reg  stages$21$enable;
+    reg  stages$21$valid_in;
+    reg  [33:0] stages$21$p_in;
+    reg  [24:0] stages$21$x_in;
+    reg  [33:0] stages$21$d_in;
+    reg  stages$21$neg_in;
+    wire  stages$21$valid;
+    wire  [33:0] stages$21$p;
+    wire  [24:0] stages$21$x;
+    wire  [33:0] stages$21$d;
+    wire  stages$21$neg;
+    reg  stages$22$clock;
+    reg  stages$22$enable;
+    reg  stages$22$valid_in;
+    reg  [33:0] stages$22$p_in;
+    reg  [24:0] stages$22$x_in;
+    reg  [33:0] stages$22$d_in;
+    reg  stages$22$neg_in;
+    wire  stages$22$valid;
+    wire  [33:0] stages$22$p;
+    wire  [24:0] stages$22$x;
+    wire  [33:0] stages$22$d;
+    wire  stages$22$neg;
+    reg  stages$23$clock;
+    reg  stages$23$enable;
+    reg  stages$23$valid_in;
+    reg  [33:0] stages$23$p_in;
+    reg  [24:0] stages$23$x_in;
+    reg  [33:0] stages$23$d_in;
+    reg  stages$23$neg_in;
+    wire  stages$23$valid;
+    wire  [33:0] stages$23$p;
+    wire  [24:0] stages$23$x;
+    wire  [33:0] stages$23$d;
+    wire  stages$23$neg;
+    reg  stages$24$clock;
+    reg  stages$24$enable;
+    reg  stages$24$valid_in;
+    reg  [33:0] stages$24$p_in;
+    reg  [24:0] stages$24$x_in;
+    reg  [33:0] stages$24$d_in;
+    reg  stages$24$neg_in;
+    wire  stages$24$valid;
+    wire  [33:0] stages$24$p;
+    wire  [24:0] stages$24$x;
+    wire  [33:0] stages$24$d;
+    wire  stages$24$neg;
     
     // Local signals
     reg  advance;
@@ -14569,19 +16067,296 @@ module triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,o
         .d(stages$4$d),
         .neg(stages$4$neg)
     );
+    triangle_setup$div$stages$5 stages$5(
+        .clock(stages$5$clock),
+        .enable(stages$5$enable),
+        .valid_in(stages$5$valid_in),
+        .p_in(stages$5$p_in),
+        .x_in(stages$5$x_in),
+        .d_in(stages$5$d_in),
+        .neg_in(stages$5$neg_in),
+        .valid(stages$5$valid),
+        .p(stages$5$p),
+        .x(stages$5$x),
+        .d(stages$5$d),
+        .neg(stages$5$neg)
+    );
+    triangle_setup$div$stages$6 stages$6(
+        .clock(stages$6$clock),
+        .enable(stages$6$enable),
+        .valid_in(stages$6$valid_in),
+        .p_in(stages$6$p_in),
+        .x_in(stages$6$x_in),
+        .d_in(stages$6$d_in),
+        .neg_in(stages$6$neg_in),
+        .valid(stages$6$valid),
+        .p(stages$6$p),
+        .x(stages$6$x),
+        .d(stages$6$d),
+        .neg(stages$6$neg)
+    );
+    triangle_setup$div$stages$7 stages$7(
+        .clock(stages$7$clock),
+        .enable(stages$7$enable),
+        .valid_in(stages$7$valid_in),
+        .p_in(stages$7$p_in),
+        .x_in(stages$7$x_in),
+        .d_in(stages$7$d_in),
+        .neg_in(stages$7$neg_in),
+        .valid(stages$7$valid),
+        .p(stages$7$p),
+        .x(stages$7$x),
+        .d(stages$7$d),
+        .neg(stages$7$neg)
+    );
+    triangle_setup$div$stages$8 stages$8(
+        .clock(stages$8$clock),
+        .enable(stages$8$enable),
+        .valid_in(stages$8$valid_in),
+        .p_in(stages$8$p_in),
+        .x_in(stages$8$x_in),
+        .d_in(stages$8$d_in),
+        .neg_in(stages$8$neg_in),
+        .valid(stages$8$valid),
+        .p(stages$8$p),
+        .x(stages$8$x),
+        .d(stages$8$d),
+        .neg(stages$8$neg)
+    );
+    triangle_setup$div$stages$9 stages$9(
+        .clock(stages$9$clock),
+        .enable(stages$9$enable),
+        .valid_in(stages$9$valid_in),
+        .p_in(stages$9$p_in),
+        .x_in(stages$9$x_in),
+        .d_in(stages$9$d_in),
+        .neg_in(stages$9$neg_in),
+        .valid(stages$9$valid),
+        .p(stages$9$p),
+        .x(stages$9$x),
+        .d(stages$9$d),
+        .neg(stages$9$neg)
+    );
+    triangle_setup$div$stages$10 stages$10(
+        .clock(stages$10$clock),
+        .enable(stages$10$enable),
+        .valid_in(stages$10$valid_in),
+        .p_in(stages$10$p_in),
+        .x_in(stages$10$x_in),
+        .d_in(stages$10$d_in),
+        .neg_in(stages$10$neg_in),
+        .valid(stages$10$valid),
+        .p(stages$10$p),
+        .x(stages$10$x),
+        .d(stages$10$d),
+        .neg(stages$10$neg)
+    );
+    triangle_setup$div$stages$11 stages$11(
+        .clock(stages$11$clock),
+        .enable(stages$11$enable),
+        .valid_in(stages$11$valid_in),
+        .p_in(stages$11$p_in),
+        .x_in(stages$11$x_in),
+        .d_in(stages$11$d_in),
+        .neg_in(stages$11$neg_in),
+        .valid(stages$11$valid),
+        .p(stages$11$p),
+        .x(stages$11$x),
+        .d(stages$11$d),
+        .neg(stages$11$neg)
+    );
+    triangle_setup$div$stages$12 stages$12(
+        .clock(stages$12$clock),
+        .enable(stages$12$enable),
+        .valid_in(stages$12$valid_in),
+        .p_in(stages$12$p_in),
+        .x_in(stages$12$x_in),
+        .d_in(stages$12$d_in),
+        .neg_in(stages$12$neg_in),
+        .valid(stages$12$valid),
+        .p(stages$12$p),
+        .x(stages$12$x),
+        .d(stages$12$d),
+        .neg(stages$12$neg)
+    );
+    triangle_setup$div$stages$13 stages$13(
+        .clock(stages$13$clock),
+        .enable(stages$13$enable),
+        .valid_in(stages$13$valid_in),
+        .p_in(stages$13$p_in),
+        .x_in(stages$13$x_in),
+        .d_in(stages$13$d_in),
+        .neg_in(stages$13$neg_in),
+        .valid(stages$13$valid),
+        .p(stages$13$p),
+        .x(stages$13$x),
+        .d(stages$13$d),
+        .neg(stages$13$neg)
+    );
+    triangle_setup$div$stages$14 stages$14(
+        .clock(stages$14$clock),
+        .enable(stages$14$enable),
+        .valid_in(stages$14$valid_in),
+        .p_in(stages$14$p_in),
+        .x_in(stages$14$x_in),
+        .d_in(stages$14$d_in),
+        .neg_in(stages$14$neg_in),
+        .valid(stages$14$valid),
+        .p(stages$14$p),
+        .x(stages$14$x),
+        .d(stages$14$d),
+        .neg(stages$14$neg)
+    );
+    triangle_setup$div$stages$15 stages$15(
+        .clock(stages$15$clock),
+        .enable(stages$15$enable),
+        .valid_in(stages$15$valid_in),
+        .p_in(stages$15$p_in),
+        .x_in(stages$15$x_in),
+        .d_in(stages$15$d_in),
+        .neg_in(stages$15$neg_in),
+        .valid(stages$15$valid),
+        .p(stages$15$p),
+        .x(stages$15$x),
+        .d(stages$15$d),
+        .neg(stages$15$neg)
+    );
+    triangle_setup$div$stages$16 stages$16(
+        .clock(stages$16$clock),
+        .enable(stages$16$enable),
+        .valid_in(stages$16$valid_in),
+        .p_in(stages$16$p_in),
+        .x_in(stages$16$x_in),
+        .d_in(stages$16$d_in),
+        .neg_in(stages$16$neg_in),
+        .valid(stages$16$valid),
+        .p(stages$16$p),
+        .x(stages$16$x),
+        .d(stages$16$d),
+        .neg(stages$16$neg)
+    );
+    triangle_setup$div$stages$17 stages$17(
+        .clock(stages$17$clock),
+        .enable(stages$17$enable),
+        .valid_in(stages$17$valid_in),
+        .p_in(stages$17$p_in),
+        .x_in(stages$17$x_in),
+        .d_in(stages$17$d_in),
+        .neg_in(stages$17$neg_in),
+        .valid(stages$17$valid),
+        .p(stages$17$p),
+        .x(stages$17$x),
+        .d(stages$17$d),
+        .neg(stages$17$neg)
+    );
+    triangle_setup$div$stages$18 stages$18(
+        .clock(stages$18$clock),
+        .enable(stages$18$enable),
+        .valid_in(stages$18$valid_in),
+        .p_in(stages$18$p_in),
+        .x_in(stages$18$x_in),
+        .d_in(stages$18$d_in),
+        .neg_in(stages$18$neg_in),
+        .valid(stages$18$valid),
+        .p(stages$18$p),
+        .x(stages$18$x),
+        .d(stages$18$d),
+        .neg(stages$18$neg)
+    );
+    triangle_setup$div$stages$19 stages$19(
+        .clock(stages$19$clock),
+        .enable(stages$19$enable),
+        .valid_in(stages$19$valid_in),
+        .p_in(stages$19$p_in),
+        .x_in(stages$19$x_in),
+        .d_in(stages$19$d_in),
+        .neg_in(stages$19$neg_in),
+        .valid(stages$19$valid),
+        .p(stages$19$p),
+        .x(stages$19$x),
+        .d(stages$19$d),
+        .neg(stages$19$neg)
+    );
+    triangle_setup$div$stages$20 stages$20(
+        .clock(stages$20$clock),
+        .enable(stages$20$enable),
+        .valid_in(stages$20$valid_in),
+        .p_in(stages$20$p_in),
+        .x_in(stages$20$x_in),
+        .d_in(stages$20$d_in),
+        .neg_in(stages$20$neg_in),
+        .valid(stages$20$valid),
+        .p(stages$20$p),
+        .x(stages$20$x),
+        .d(stages$20$d),
+        .neg(stages$20$neg)
+    );
+    triangle_setup$div$stages$21 stages$21(
+        .clock(stages$21$clock),
+        .enable(stages$21$enable),
+        .valid_in(stages$21$valid_in),
+        .p_in(stages$21$p_in),
+        .x_in(stages$21$x_in),
+        .d_in(stages$21$d_in),
+        .neg_in(stages$21$neg_in),
+        .valid(stages$21$valid),
+        .p(stages$21$p),
+        .x(stages$21$x),
+        .d(stages$21$d),
+        .neg(stages$21$neg)
+    );
+    triangle_setup$div$stages$22 stages$22(
+        .clock(stages$22$clock),
+        .enable(stages$22$enable),
+        .valid_in(stages$22$valid_in),
+        .p_in(stages$22$p_in),
+        .x_in(stages$22$x_in),
+        .d_in(stages$22$d_in),
+        .neg_in(stages$22$neg_in),
+        .valid(stages$22$valid),
+        .p(stages$22$p),
+        .x(stages$22$x),
+        .d(stages$22$d),
+        .neg(stages$22$neg)
+    );
+    triangle_setup$div$stages$23 stages$23(
+        .clock(stages$23$clock),
+        .enable(stages$23$enable),
+        .valid_in(stages$23$valid_in),
+        .p_in(stages$23$p_in),
+        .x_in(stages$23$x_in),
+        .d_in(stages$23$d_in),
+        .neg_in(stages$23$neg_in),
+        .valid(stages$23$valid),
+        .p(stages$23$p),
+        .x(stages$23$x),
+        .d(stages$23$d),
+        .neg(stages$23$neg)
+    );
+    triangle_setup$div$stages$24 stages$24(
+        .clock(stages$24$clock),
+        .enable(stages$24$enable),
+        .valid_in(stages$24$valid_in),
+        .p_in(stages$24$p_in),
+        .x_in(stages$24$x_in),
+        .d_in(stages$24$d_in),
+        .neg_in(stages$24$neg_in),
+        .valid(stages$24$valid),
+        .p(stages$24$p),
+        .x(stages$24$x),
+        .d(stages$24$d),
+        .neg(stages$24$neg)
+    );
     
     // Update code
     always @(*) begin
-        advance = ~hold & (~stages$4$valid | out_ready);
-        out_valid = stages$4$valid;
-        last_x = stages$4$x;
-        out_r = stages$4$p;
-        if (stages$4$neg) begin
-            out_r = stages$4$d - stages$4$p - 32'h1;
-        end
+        advance = ~hold & (~stages$24$valid | out_ready);
+        out_valid = stages$24$valid;
+        last_x = stages$24$x;
+        out_r = stages$24$p;
         out_q = ((last_x) & 26'h3ffffff);
-        if (stages$4$neg) begin
-            out_q = ~((last_x) & 26'h3ffffff);
+        if (stages$24$neg) begin
+            out_q = ((last_x) & 26'h3ffffff) | q_sign;
         end
         stages$0$clock = clock;
         stages$0$enable = advance;
@@ -14593,6 +16368,46 @@ module triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,o
         stages$3$enable = advance;
         stages$4$clock = clock;
         stages$4$enable = advance;
+        stages$5$clock = clock;
+        stages$5$enable = advance;
+        stages$6$clock = clock;
+        stages$6$enable = advance;
+        stages$7$clock = clock;
+        stages$7$enable = advance;
+        stages$8$clock = clock;
+        stages$8$enable = advance;
+        stages$9$clock = clock;
+        stages$9$enable = advance;
+        stages$10$clock = clock;
+        stages$10$enable = advance;
+        stages$11$clock = clock;
+        stages$11$enable = advance;
+        stages$12$clock = clock;
+        stages$12$enable = advance;
+        stages$13$clock = clock;
+        stages$13$enable = advance;
+        stages$14$clock = clock;
+        stages$14$enable = advance;
+        stages$15$clock = clock;
+        stages$15$enable = advance;
+        stages$16$clock = clock;
+        stages$16$enable = advance;
+        stages$17$clock = clock;
+        stages$17$enable = advance;
+        stages$18$clock = clock;
+        stages$18$enable = advance;
+        stages$19$clock = clock;
+        stages$19$enable = advance;
+        stages$20$clock = clock;
+        stages$20$enable = advance;
+        stages$21$clock = clock;
+        stages$21$enable = advance;
+        stages$22$clock = clock;
+        stages$22$enable = advance;
+        stages$23$clock = clock;
+        stages$23$enable = advance;
+        stages$24$clock = clock;
+        stages$24$enable = advance;
         inp_ready = advance;
         m = inp_n;
         if (inp_n[n_msb]) begin
@@ -14623,6 +16438,106 @@ module triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,o
         stages$4$x_in = stages$3$x;
         stages$4$d_in = stages$3$d;
         stages$4$neg_in = stages$3$neg;
+        stages$5$valid_in = stages$4$valid;
+        stages$5$p_in = stages$4$p;
+        stages$5$x_in = stages$4$x;
+        stages$5$d_in = stages$4$d;
+        stages$5$neg_in = stages$4$neg;
+        stages$6$valid_in = stages$5$valid;
+        stages$6$p_in = stages$5$p;
+        stages$6$x_in = stages$5$x;
+        stages$6$d_in = stages$5$d;
+        stages$6$neg_in = stages$5$neg;
+        stages$7$valid_in = stages$6$valid;
+        stages$7$p_in = stages$6$p;
+        stages$7$x_in = stages$6$x;
+        stages$7$d_in = stages$6$d;
+        stages$7$neg_in = stages$6$neg;
+        stages$8$valid_in = stages$7$valid;
+        stages$8$p_in = stages$7$p;
+        stages$8$x_in = stages$7$x;
+        stages$8$d_in = stages$7$d;
+        stages$8$neg_in = stages$7$neg;
+        stages$9$valid_in = stages$8$valid;
+        stages$9$p_in = stages$8$p;
+        stages$9$x_in = stages$8$x;
+        stages$9$d_in = stages$8$d;
+        stages$9$neg_in = stages$8$neg;
+        stages$10$valid_in = stages$9$valid;
+        stages$10$p_in = stages$9$p;
+        stages$10$x_in = stages$9$x;
+        stages$10$d_in = stages$9$d;
+        stages$10$neg_in = stages$9$neg;
+        stages$11$valid_in = stages$10$valid;
+        stages$11$p_in = stages$10$p;
+        stages$11$x_in = stages$10$x;
+        stages$11$d_in = stages$10$d;
+        stages$11$neg_in = stages$10$neg;
+        stages$12$valid_in = stages$11$valid;
+        stages$12$p_in = stages$11$p;
+        stages$12$x_in = stages$11$x;
+        stages$12$d_in = stages$11$d;
+        stages$12$neg_in = stages$11$neg;
+        stages$13$valid_in = stages$12$valid;
+        stages$13$p_in = stages$12$p;
+        stages$13$x_in = stages$12$x;
+        stages$13$d_in = stages$12$d;
+        stages$13$neg_in = stages$12$neg;
+        stages$14$valid_in = stages$13$valid;
+        stages$14$p_in = stages$13$p;
+        stages$14$x_in = stages$13$x;
+        stages$14$d_in = stages$13$d;
+        stages$14$neg_in = stages$13$neg;
+        stages$15$valid_in = stages$14$valid;
+        stages$15$p_in = stages$14$p;
+        stages$15$x_in = stages$14$x;
+        stages$15$d_in = stages$14$d;
+        stages$15$neg_in = stages$14$neg;
+        stages$16$valid_in = stages$15$valid;
+        stages$16$p_in = stages$15$p;
+        stages$16$x_in = stages$15$x;
+        stages$16$d_in = stages$15$d;
+        stages$16$neg_in = stages$15$neg;
+        stages$17$valid_in = stages$16$valid;
+        stages$17$p_in = stages$16$p;
+        stages$17$x_in = stages$16$x;
+        stages$17$d_in = stages$16$d;
+        stages$17$neg_in = stages$16$neg;
+        stages$18$valid_in = stages$17$valid;
+        stages$18$p_in = stages$17$p;
+        stages$18$x_in = stages$17$x;
+        stages$18$d_in = stages$17$d;
+        stages$18$neg_in = stages$17$neg;
+        stages$19$valid_in = stages$18$valid;
+        stages$19$p_in = stages$18$p;
+        stages$19$x_in = stages$18$x;
+        stages$19$d_in = stages$18$d;
+        stages$19$neg_in = stages$18$neg;
+        stages$20$valid_in = stages$19$valid;
+        stages$20$p_in = stages$19$p;
+        stages$20$x_in = stages$19$x;
+        stages$20$d_in = stages$19$d;
+        stages$20$neg_in = stages$19$neg;
+        stages$21$valid_in = stages$20$valid;
+        stages$21$p_in = stages$20$p;
+        stages$21$x_in = stages$20$x;
+        stages$21$d_in = stages$20$d;
+        stages$21$neg_in = stages$20$neg;
+        stages$22$valid_in = stages$21$valid;
+        stages$22$p_in = stages$21$p;
+        stages$22$x_in = stages$21$x;
+        stages$22$d_in = stages$21$d;
+        stages$22$neg_in = stages$21$neg;
+        stages$23$valid_in = stages$22$valid;
+        stages$23$p_in = stages$22$p;
+        stages$23$x_in = stages$22$x;
+        stages$23$d_in = stages$22$d;
+        stages$23$neg_in = stages$22$neg;
+        stages$24$valid_in = stages$23$valid;
+        stages$24$p_in = stages$23$p;
+        stages$24$x_in = stages$23$x;
+        stages$24$d_in = stages$23$d;
+        stages$24$neg_in = stages$23$neg;
     end
     
 endmodule // triangle_setup$div
@@ -14647,6 +16562,7 @@ module triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
     // Constant declarations
     localparam  borrow = 8'h22;
     localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
     
     // Stub signals
     reg  valid_r$d;
@@ -14668,26 +16584,10 @@ module triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
-    reg  [34:0] tp$2;
-    reg  [34:0] tp$3;
-    reg  [34:0] tp$4;
-    reg  [34:0] tp$5;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
-    reg  [24:0] tx$2;
-    reg  [24:0] tx$3;
-    reg  [24:0] tx$4;
-    reg  [24:0] tx$5;
     reg  [34:0] t$0;
-    reg  [34:0] t$1;
-    reg  [34:0] t$2;
-    reg  [34:0] t$3;
-    reg  [34:0] t$4;
     reg  [34:0] diff$0;
-    reg  [34:0] diff$1;
-    reg  [34:0] diff$2;
-    reg  [34:0] diff$3;
-    reg  [34:0] diff$4;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -14745,62 +16645,14 @@ module triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
-        t$1 = tp$1 << 32'h1;
-        if (tx$1[x_msb]) begin
-            t$1 = (tp$1 << 32'h1) | 32'h1;
-        end
-        diff$1 = t$1 - d1;
-        if (diff$1[borrow]) begin
-            tp$2 = t$1;
-            tx$2 = tx$1 << 32'h1;
-        end
-        else begin
-            tp$2 = diff$1;
-            tx$2 = (tx$1 << 32'h1) | 32'h1;
-        end
-        t$2 = tp$2 << 32'h1;
-        if (tx$2[x_msb]) begin
-            t$2 = (tp$2 << 32'h1) | 32'h1;
-        end
-        diff$2 = t$2 - d1;
-        if (diff$2[borrow]) begin
-            tp$3 = t$2;
-            tx$3 = tx$2 << 32'h1;
-        end
-        else begin
-            tp$3 = diff$2;
-            tx$3 = (tx$2 << 32'h1) | 32'h1;
-        end
-        t$3 = tp$3 << 32'h1;
-        if (tx$3[x_msb]) begin
-            t$3 = (tp$3 << 32'h1) | 32'h1;
-        end
-        diff$3 = t$3 - d1;
-        if (diff$3[borrow]) begin
-            tp$4 = t$3;
-            tx$4 = tx$3 << 32'h1;
-        end
-        else begin
-            tp$4 = diff$3;
-            tx$4 = (tx$3 << 32'h1) | 32'h1;
-        end
-        t$4 = tp$4 << 32'h1;
-        if (tx$4[x_msb]) begin
-            t$4 = (tp$4 << 32'h1) | 32'h1;
-        end
-        diff$4 = t$4 - d1;
-        if (diff$4[borrow]) begin
-            tp$5 = t$4;
-            tx$5 = tx$4 << 32'h1;
-        end
-        else begin
-            tp$5 = diff$4;
-            tx$5 = (tx$4 << 32'h1) | 32'h1;
-        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$5[(32'h0)+:(34)];
-            x_r$d = tx$5;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
             d_r$d = d_in;
             neg_r$d = neg_in;
         end
@@ -14928,6 +16780,7 @@ module triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
     // Constant declarations
     localparam  borrow = 8'h22;
     localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
     
     // Stub signals
     reg  valid_r$d;
@@ -14949,26 +16802,10 @@ module triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
-    reg  [34:0] tp$2;
-    reg  [34:0] tp$3;
-    reg  [34:0] tp$4;
-    reg  [34:0] tp$5;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
-    reg  [24:0] tx$2;
-    reg  [24:0] tx$3;
-    reg  [24:0] tx$4;
-    reg  [24:0] tx$5;
     reg  [34:0] t$0;
-    reg  [34:0] t$1;
-    reg  [34:0] t$2;
-    reg  [34:0] t$3;
-    reg  [34:0] t$4;
     reg  [34:0] diff$0;
-    reg  [34:0] diff$1;
-    reg  [34:0] diff$2;
-    reg  [34:0] diff$3;
-    reg  [34:0] diff$4;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -15026,62 +16863,14 @@ module triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
-        t$1 = tp$1 << 32'h1;
-        if (tx$1[x_msb]) begin
-            t$1 = (tp$1 << 32'h1) | 32'h1;
-        end
-        diff$1 = t$1 - d1;
-        if (diff$1[borrow]) begin
-            tp$2 = t$1;
-            tx$2 = tx$1 << 32'h1;
-        end
-        else begin
-            tp$2 = diff$1;
-            tx$2 = (tx$1 << 32'h1) | 32'h1;
-        end
-        t$2 = tp$2 << 32'h1;
-        if (tx$2[x_msb]) begin
-            t$2 = (tp$2 << 32'h1) | 32'h1;
-        end
-        diff$2 = t$2 - d1;
-        if (diff$2[borrow]) begin
-            tp$3 = t$2;
-            tx$3 = tx$2 << 32'h1;
-        end
-        else begin
-            tp$3 = diff$2;
-            tx$3 = (tx$2 << 32'h1) | 32'h1;
-        end
-        t$3 = tp$3 << 32'h1;
-        if (tx$3[x_msb]) begin
-            t$3 = (tp$3 << 32'h1) | 32'h1;
-        end
-        diff$3 = t$3 - d1;
-        if (diff$3[borrow]) begin
-            tp$4 = t$3;
-            tx$4 = tx$3 << 32'h1;
-        end
-        else begin
-            tp$4 = diff$3;
-            tx$4 = (tx$3 << 32'h1) | 32'h1;
-        end
-        t$4 = tp$4 << 32'h1;
-        if (tx$4[x_msb]) begin
-            t$4 = (tp$4 << 32'h1) | 32'h1;
-        end
-        diff$4 = t$4 - d1;
-        if (diff$4[borrow]) begin
-            tp$5 = t$4;
-            tx$5 = tx$4 << 32'h1;
-        end
-        else begin
-            tp$5 = diff$4;
-            tx$5 = (tx$4 << 32'h1) | 32'h1;
-        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$5[(32'h0)+:(34)];
-            x_r$d = tx$5;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
             d_r$d = d_in;
             neg_r$d = neg_in;
         end
@@ -15190,7 +16979,7 @@ module triangle_setup$div$stages$1$x_r(d,q,clock);
 endmodule // triangle_setup$div$stages$1$x_r
 
 
-module triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module triangle_setup$div$stages$10(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -15209,6 +16998,7 @@ module triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
     // Constant declarations
     localparam  borrow = 8'h22;
     localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
     
     // Stub signals
     reg  valid_r$d;
@@ -15230,26 +17020,2190 @@ module triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
-    reg  [34:0] tp$2;
-    reg  [34:0] tp$3;
-    reg  [34:0] tp$4;
-    reg  [34:0] tp$5;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
-    reg  [24:0] tx$2;
-    reg  [24:0] tx$3;
-    reg  [24:0] tx$4;
-    reg  [24:0] tx$5;
     reg  [34:0] t$0;
-    reg  [34:0] t$1;
-    reg  [34:0] t$2;
-    reg  [34:0] t$3;
-    reg  [34:0] t$4;
     reg  [34:0] diff$0;
-    reg  [34:0] diff$1;
-    reg  [34:0] diff$2;
-    reg  [34:0] diff$3;
-    reg  [34:0] diff$4;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$10$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$10$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$10$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$10$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$10$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$10
+
+
+module triangle_setup$div$stages$10$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$10$d_r
+
+
+module triangle_setup$div$stages$10$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$10$neg_r
+
+
+module triangle_setup$div$stages$10$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$10$p_r
+
+
+module triangle_setup$div$stages$10$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$10$valid_r
+
+
+module triangle_setup$div$stages$10$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$10$x_r
+
+
+module triangle_setup$div$stages$11(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$11$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$11$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$11$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$11$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$11$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$11
+
+
+module triangle_setup$div$stages$11$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$11$d_r
+
+
+module triangle_setup$div$stages$11$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$11$neg_r
+
+
+module triangle_setup$div$stages$11$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$11$p_r
+
+
+module triangle_setup$div$stages$11$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$11$valid_r
+
+
+module triangle_setup$div$stages$11$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$11$x_r
+
+
+module triangle_setup$div$stages$12(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$12$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$12$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$12$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$12$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$12$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$12
+
+
+module triangle_setup$div$stages$12$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$12$d_r
+
+
+module triangle_setup$div$stages$12$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$12$neg_r
+
+
+module triangle_setup$div$stages$12$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$12$p_r
+
+
+module triangle_setup$div$stages$12$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$12$valid_r
+
+
+module triangle_setup$div$stages$12$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$12$x_r
+
+
+module triangle_setup$div$stages$13(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$13$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$13$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$13$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$13$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$13$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$13
+
+
+module triangle_setup$div$stages$13$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$13$d_r
+
+
+module triangle_setup$div$stages$13$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$13$neg_r
+
+
+module triangle_setup$div$stages$13$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$13$p_r
+
+
+module triangle_setup$div$stages$13$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$13$valid_r
+
+
+module triangle_setup$div$stages$13$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$13$x_r
+
+
+module triangle_setup$div$stages$14(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$14$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$14$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$14$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$14$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$14$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$14
+
+
+module triangle_setup$div$stages$14$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$14$d_r
+
+
+module triangle_setup$div$stages$14$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$14$neg_r
+
+
+module triangle_setup$div$stages$14$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$14$p_r
+
+
+module triangle_setup$div$stages$14$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$14$valid_r
+
+
+module triangle_setup$div$stages$14$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$14$x_r
+
+
+module triangle_setup$div$stages$15(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$15$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$15$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$15$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$15$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$15$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$15
+
+
+module triangle_setup$div$stages$15$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$15$d_r
+
+
+module triangle_setup$div$stages$15$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$15$neg_r
+
+
+module triangle_setup$div$stages$15$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$15$p_r
+
+
+module triangle_setup$div$stages$15$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$15$valid_r
+
+
+module triangle_setup$div$stages$15$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$15$x_r
+
+
+module triangle_setup$div$stages$16(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$16$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$16$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$16$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$16$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$16$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$16
+
+
+module triangle_setup$div$stages$16$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$16$d_r
+
+
+module triangle_setup$div$stages$16$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$16$neg_r
+
+
+module triangle_setup$div$stages$16$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$16$p_r
+
+
+module triangle_setup$div$stages$16$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$16$valid_r
+
+
+module triangle_setup$div$stages$16$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$16$x_r
+
+
+module triangle_setup$div$stages$17(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$17$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$17$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$17$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$17$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$17$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$17
+
+
+module triangle_setup$div$stages$17$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$17$d_r
+
+
+module triangle_setup$div$stages$17$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$17$neg_r
+
+
+module triangle_setup$div$stages$17$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$17$p_r
+
+
+module triangle_setup$div$stages$17$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$17$valid_r
+
+
+module triangle_setup$div$stages$17$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$17$x_r
+
+
+module triangle_setup$div$stages$18(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$18$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$18$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$18$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$18$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$18$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$18
+
+
+module triangle_setup$div$stages$18$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$18$d_r
+
+
+module triangle_setup$div$stages$18$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$18$neg_r
+
+
+module triangle_setup$div$stages$18$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$18$p_r
+
+
+module triangle_setup$div$stages$18$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$18$valid_r
+
+
+module triangle_setup$div$stages$18$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$18$x_r
+
+
+module triangle_setup$div$stages$19(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$19$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$19$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$19$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$19$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$19$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$19
+
+
+module triangle_setup$div$stages$19$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$19$d_r
+
+
+module triangle_setup$div$stages$19$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$19$neg_r
+
+
+module triangle_setup$div$stages$19$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$19$p_r
+
+
+module triangle_setup$div$stages$19$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$19$valid_r
+
+
+module triangle_setup$div$stages$19$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$19$x_r
+
+
+module triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -15307,62 +19261,14 @@ module triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
-        t$1 = tp$1 << 32'h1;
-        if (tx$1[x_msb]) begin
-            t$1 = (tp$1 << 32'h1) | 32'h1;
-        end
-        diff$1 = t$1 - d1;
-        if (diff$1[borrow]) begin
-            tp$2 = t$1;
-            tx$2 = tx$1 << 32'h1;
-        end
-        else begin
-            tp$2 = diff$1;
-            tx$2 = (tx$1 << 32'h1) | 32'h1;
-        end
-        t$2 = tp$2 << 32'h1;
-        if (tx$2[x_msb]) begin
-            t$2 = (tp$2 << 32'h1) | 32'h1;
-        end
-        diff$2 = t$2 - d1;
-        if (diff$2[borrow]) begin
-            tp$3 = t$2;
-            tx$3 = tx$2 << 32'h1;
-        end
-        else begin
-            tp$3 = diff$2;
-            tx$3 = (tx$2 << 32'h1) | 32'h1;
-        end
-        t$3 = tp$3 << 32'h1;
-        if (tx$3[x_msb]) begin
-            t$3 = (tp$3 << 32'h1) | 32'h1;
-        end
-        diff$3 = t$3 - d1;
-        if (diff$3[borrow]) begin
-            tp$4 = t$3;
-            tx$4 = tx$3 << 32'h1;
-        end
-        else begin
-            tp$4 = diff$3;
-            tx$4 = (tx$3 << 32'h1) | 32'h1;
-        end
-        t$4 = tp$4 << 32'h1;
-        if (tx$4[x_msb]) begin
-            t$4 = (tp$4 << 32'h1) | 32'h1;
-        end
-        diff$4 = t$4 - d1;
-        if (diff$4[borrow]) begin
-            tp$5 = t$4;
-            tx$5 = tx$4 << 32'h1;
-        end
-        else begin
-            tp$5 = diff$4;
-            tx$5 = (tx$4 << 32'h1) | 32'h1;
-        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$5[(32'h0)+:(34)];
-            x_r$d = tx$5;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
             d_r$d = d_in;
             neg_r$d = neg_in;
         end
@@ -15471,7 +19377,7 @@ module triangle_setup$div$stages$2$x_r(d,q,clock);
 endmodule // triangle_setup$div$stages$2$x_r
 
 
-module triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module triangle_setup$div$stages$20(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -15490,6 +19396,7 @@ module triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
     // Constant declarations
     localparam  borrow = 8'h22;
     localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
     
     // Stub signals
     reg  valid_r$d;
@@ -15511,26 +19418,1100 @@ module triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
-    reg  [34:0] tp$2;
-    reg  [34:0] tp$3;
-    reg  [34:0] tp$4;
-    reg  [34:0] tp$5;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
-    reg  [24:0] tx$2;
-    reg  [24:0] tx$3;
-    reg  [24:0] tx$4;
-    reg  [24:0] tx$5;
     reg  [34:0] t$0;
-    reg  [34:0] t$1;
-    reg  [34:0] t$2;
-    reg  [34:0] t$3;
-    reg  [34:0] t$4;
     reg  [34:0] diff$0;
-    reg  [34:0] diff$1;
-    reg  [34:0] diff$2;
-    reg  [34:0] diff$3;
-    reg  [34:0] diff$4;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$20$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$20$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$20$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$20$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$20$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$20
+
+
+module triangle_setup$div$stages$20$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$20$d_r
+
+
+module triangle_setup$div$stages$20$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$20$neg_r
+
+
+module triangle_setup$div$stages$20$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$20$p_r
+
+
+module triangle_setup$div$stages$20$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$20$valid_r
+
+
+module triangle_setup$div$stages$20$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$20$x_r
+
+
+module triangle_setup$div$stages$21(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$21$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$21$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$21$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$21$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$21$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$21
+
+
+module triangle_setup$div$stages$21$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$21$d_r
+
+
+module triangle_setup$div$stages$21$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$21$neg_r
+
+
+module triangle_setup$div$stages$21$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$21$p_r
+
+
+module triangle_setup$div$stages$21$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$21$valid_r
+
+
+module triangle_setup$div$stages$21$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$21$x_r
+
+
+module triangle_setup$div$stages$22(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$22$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$22$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$22$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$22$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$22$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$22
+
+
+module triangle_setup$div$stages$22$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$22$d_r
+
+
+module triangle_setup$div$stages$22$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$22$neg_r
+
+
+module triangle_setup$div$stages$22$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$22$p_r
+
+
+module triangle_setup$div$stages$22$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$22$valid_r
+
+
+module triangle_setup$div$stages$22$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$22$x_r
+
+
+module triangle_setup$div$stages$23(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$23$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$23$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$23$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$23$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$23$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$23
+
+
+module triangle_setup$div$stages$23$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$23$d_r
+
+
+module triangle_setup$div$stages$23$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$23$neg_r
+
+
+module triangle_setup$div$stages$23$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$23$p_r
+
+
+module triangle_setup$div$stages$23$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$23$valid_r
+
+
+module triangle_setup$div$stages$23$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$23$x_r
+
+
+module triangle_setup$div$stages$24(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b1;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$24$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$24$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$24$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$24$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$24$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$24
+
+
+module triangle_setup$div$stages$24$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$24$d_r
+
+
+module triangle_setup$div$stages$24$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$24$neg_r
+
+
+module triangle_setup$div$stages$24$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$24$p_r
+
+
+module triangle_setup$div$stages$24$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$24$valid_r
+
+
+module triangle_setup$div$stages$24$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$24$x_r
+
+
+module triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -15588,62 +20569,14 @@ module triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
-        t$1 = tp$1 << 32'h1;
-        if (tx$1[x_msb]) begin
-            t$1 = (tp$1 << 32'h1) | 32'h1;
-        end
-        diff$1 = t$1 - d1;
-        if (diff$1[borrow]) begin
-            tp$2 = t$1;
-            tx$2 = tx$1 << 32'h1;
-        end
-        else begin
-            tp$2 = diff$1;
-            tx$2 = (tx$1 << 32'h1) | 32'h1;
-        end
-        t$2 = tp$2 << 32'h1;
-        if (tx$2[x_msb]) begin
-            t$2 = (tp$2 << 32'h1) | 32'h1;
-        end
-        diff$2 = t$2 - d1;
-        if (diff$2[borrow]) begin
-            tp$3 = t$2;
-            tx$3 = tx$2 << 32'h1;
-        end
-        else begin
-            tp$3 = diff$2;
-            tx$3 = (tx$2 << 32'h1) | 32'h1;
-        end
-        t$3 = tp$3 << 32'h1;
-        if (tx$3[x_msb]) begin
-            t$3 = (tp$3 << 32'h1) | 32'h1;
-        end
-        diff$3 = t$3 - d1;
-        if (diff$3[borrow]) begin
-            tp$4 = t$3;
-            tx$4 = tx$3 << 32'h1;
-        end
-        else begin
-            tp$4 = diff$3;
-            tx$4 = (tx$3 << 32'h1) | 32'h1;
-        end
-        t$4 = tp$4 << 32'h1;
-        if (tx$4[x_msb]) begin
-            t$4 = (tp$4 << 32'h1) | 32'h1;
-        end
-        diff$4 = t$4 - d1;
-        if (diff$4[borrow]) begin
-            tp$5 = t$4;
-            tx$5 = tx$4 << 32'h1;
-        end
-        else begin
-            tp$5 = diff$4;
-            tx$5 = (tx$4 << 32'h1) | 32'h1;
-        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$5[(32'h0)+:(34)];
-            x_r$d = tx$5;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
             d_r$d = d_in;
             neg_r$d = neg_in;
         end
@@ -15771,6 +20704,7 @@ module triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
     // Constant declarations
     localparam  borrow = 8'h22;
     localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
     
     // Stub signals
     reg  valid_r$d;
@@ -15792,26 +20726,10 @@ module triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
-    reg  [34:0] tp$2;
-    reg  [34:0] tp$3;
-    reg  [34:0] tp$4;
-    reg  [34:0] tp$5;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
-    reg  [24:0] tx$2;
-    reg  [24:0] tx$3;
-    reg  [24:0] tx$4;
-    reg  [24:0] tx$5;
     reg  [34:0] t$0;
-    reg  [34:0] t$1;
-    reg  [34:0] t$2;
-    reg  [34:0] t$3;
-    reg  [34:0] t$4;
     reg  [34:0] diff$0;
-    reg  [34:0] diff$1;
-    reg  [34:0] diff$2;
-    reg  [34:0] diff$3;
-    reg  [34:0] diff$4;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -15869,62 +20787,14 @@ module triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,v
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
-        t$1 = tp$1 << 32'h1;
-        if (tx$1[x_msb]) begin
-            t$1 = (tp$1 << 32'h1) | 32'h1;
-        end
-        diff$1 = t$1 - d1;
-        if (diff$1[borrow]) begin
-            tp$2 = t$1;
-            tx$2 = tx$1 << 32'h1;
-        end
-        else begin
-            tp$2 = diff$1;
-            tx$2 = (tx$1 << 32'h1) | 32'h1;
-        end
-        t$2 = tp$2 << 32'h1;
-        if (tx$2[x_msb]) begin
-            t$2 = (tp$2 << 32'h1) | 32'h1;
-        end
-        diff$2 = t$2 - d1;
-        if (diff$2[borrow]) begin
-            tp$3 = t$2;
-            tx$3 = tx$2 << 32'h1;
-        end
-        else begin
-            tp$3 = diff$2;
-            tx$3 = (tx$2 << 32'h1) | 32'h1;
-        end
-        t$3 = tp$3 << 32'h1;
-        if (tx$3[x_msb]) begin
-            t$3 = (tp$3 << 32'h1) | 32'h1;
-        end
-        diff$3 = t$3 - d1;
-        if (diff$3[borrow]) begin
-            tp$4 = t$3;
-            tx$4 = tx$3 << 32'h1;
-        end
-        else begin
-            tp$4 = diff$3;
-            tx$4 = (tx$3 << 32'h1) | 32'h1;
-        end
-        t$4 = tp$4 << 32'h1;
-        if (tx$4[x_msb]) begin
-            t$4 = (tp$4 << 32'h1) | 32'h1;
-        end
-        diff$4 = t$4 - d1;
-        if (diff$4[borrow]) begin
-            tp$5 = t$4;
-            tx$5 = tx$4 << 32'h1;
-        end
-        else begin
-            tp$5 = diff$4;
-            tx$5 = (tx$4 << 32'h1) | 32'h1;
-        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$5[(32'h0)+:(34)];
-            x_r$d = tx$5;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
             d_r$d = d_in;
             neg_r$d = neg_in;
         end
@@ -16031,6 +20901,1096 @@ module triangle_setup$div$stages$4$x_r(d,q,clock);
     end
           
 endmodule // triangle_setup$div$stages$4$x_r
+
+
+module triangle_setup$div$stages$5(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$5$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$5$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$5$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$5$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$5$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$5
+
+
+module triangle_setup$div$stages$5$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$5$d_r
+
+
+module triangle_setup$div$stages$5$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$5$neg_r
+
+
+module triangle_setup$div$stages$5$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$5$p_r
+
+
+module triangle_setup$div$stages$5$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$5$valid_r
+
+
+module triangle_setup$div$stages$5$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$5$x_r
+
+
+module triangle_setup$div$stages$6(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$6$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$6$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$6$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$6$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$6$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$6
+
+
+module triangle_setup$div$stages$6$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$6$d_r
+
+
+module triangle_setup$div$stages$6$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$6$neg_r
+
+
+module triangle_setup$div$stages$6$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$6$p_r
+
+
+module triangle_setup$div$stages$6$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$6$valid_r
+
+
+module triangle_setup$div$stages$6$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$6$x_r
+
+
+module triangle_setup$div$stages$7(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$7$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$7$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$7$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$7$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$7$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$7
+
+
+module triangle_setup$div$stages$7$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$7$d_r
+
+
+module triangle_setup$div$stages$7$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$7$neg_r
+
+
+module triangle_setup$div$stages$7$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$7$p_r
+
+
+module triangle_setup$div$stages$7$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$7$valid_r
+
+
+module triangle_setup$div$stages$7$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$7$x_r
+
+
+module triangle_setup$div$stages$8(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$8$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$8$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$8$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$8$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$8$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$8
+
+
+module triangle_setup$div$stages$8$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$8$d_r
+
+
+module triangle_setup$div$stages$8$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$8$neg_r
+
+
+module triangle_setup$div$stages$8$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$8$p_r
+
+
+module triangle_setup$div$stages$8$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$8$valid_r
+
+
+module triangle_setup$div$stages$8$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$8$x_r
+
+
+module triangle_setup$div$stages$9(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    triangle_setup$div$stages$9$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    triangle_setup$div$stages$9$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    triangle_setup$div$stages$9$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    triangle_setup$div$stages$9$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    triangle_setup$div$stages$9$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // triangle_setup$div$stages$9
+
+
+module triangle_setup$div$stages$9$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$9$d_r
+
+
+module triangle_setup$div$stages$9$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$9$neg_r
+
+
+module triangle_setup$div$stages$9$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$9$p_r
+
+
+module triangle_setup$div$stages$9$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$9$valid_r
+
+
+module triangle_setup$div$stages$9$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$div$stages$9$x_r
 
 
 module triangle_setup$div_d(d,q,clock);
@@ -16185,343 +22145,1878 @@ module triangle_setup$exp$4(d,q,clock);
 endmodule // triangle_setup$exp$4
 
 
-module triangle_setup$exp_e(d,q,clock);
+module triangle_setup$g0(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
+    input wire  clock;
+    input wire  [15:0] vx$0;
+    input wire  [15:0] vx$1;
+    input wire  [15:0] vx$2;
+    input wire  [15:0] vy$0;
+    input wire  [15:0] vy$1;
+    input wire  [15:0] vy$2;
+    input wire  [17:0] vz$0;
+    input wire  [17:0] vz$1;
+    input wire  [17:0] vz$2;
+    input wire  [7:0] vc$0;
+    input wire  [7:0] vc$1;
+    input wire  [7:0] vc$2;
+    input wire  [7:0] vc$3;
+    input wire  [7:0] vc$4;
+    input wire  [7:0] vc$5;
+    input wire  [7:0] vc$6;
+    input wire  [7:0] vc$7;
+    input wire  [7:0] vc$8;
+    input wire  [5:0] crosses;
+    input wire  maj_left;
+    input wire  [18:0] start_x$0;
+    input wire  [18:0] start_x$1;
+    input wire  [18:0] start_x$2;
+    output reg  [57:0] kdx$0;
+    output reg  [57:0] kdx$1;
+    output reg  [57:0] kdx$2;
+    output reg  [56:0] kdy$0;
+    output reg  [56:0] kdy$1;
+    output reg  [56:0] kdy$2;
+    output reg  up;
+    output reg  [57:0] edx$0;
+    output reg  [57:0] edx$1;
+    output reg  [57:0] edx$2;
+    output reg  [56:0] edy$0;
+    output reg  [56:0] edy$1;
+    output reg  [56:0] edy$2;
+    output reg  [33:0] edy_d$0;
+    output reg  [33:0] edy_d$1;
+    output reg  [33:0] edy_d$2;
+    output reg  [33:0] ed16$0;
+    output reg  [33:0] ed16$1;
+    output reg  [33:0] ed16$2;
+    output reg  [18:0] cy$0;
+    output reg  [18:0] cy$1;
+    output reg  [18:0] cy$2;
+    output reg  [12:0] count$0;
+    output reg  [12:0] count$1;
+    output reg  [12:0] count$2;
+    output reg  [18:0] toff$0;
+    output reg  [18:0] toff$1;
+    output reg  [18:0] toff$2;
+    output reg  [18:0] xf$0;
+    output reg  [18:0] xf$1;
+    output reg  [18:0] xf$2;
+    output reg  [18:0] xi$0;
+    output reg  [18:0] xi$1;
+    output reg  [18:0] xi$2;
+    output reg  [18:0] off_x$0;
+    output reg  [18:0] off_x$1;
+    output reg  [18:0] off_x$2;
+    output reg  [18:0] off_y$0;
+    output reg  [18:0] off_y$1;
+    output reg  [18:0] off_y$2;
+    output reg  [18:0] dmaj$0;
+    output reg  [18:0] dmaj$1;
+    output reg  [18:0] dmaj$2;
+    output reg  [18:0] dmaj$3;
+    output reg  [18:0] dbot$0;
+    output reg  [18:0] dbot$1;
+    output reg  [18:0] dbot$2;
+    output reg  [18:0] dbot$3;
+    output reg  [39:0] attr0$0;
+    output reg  [39:0] attr0$1;
+    output reg  [39:0] attr0$2;
+    output reg  [39:0] attr0$3;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    localparam  half_m1 = 19'b111;
+    localparam  half = 19'b1000;
+    localparam  int_mask = 19'b1111111111111110000;
+    localparam  frac_mask = 19'b1111;
+    localparam  xy_msb = 8'hf;
+    localparam  z_msb = 8'h11;
+    localparam  nb_msb = 8'h12;
+    localparam  xy_ext = 58'h3ffffffffff0000;
+    localparam  y_ext = 57'h1ffffffffff0000;
+    localparam  z_ext = 19'b1000000000000000000;
+    localparam  shr_ext = 19'b1111000000000000000;
+    localparam  top_bit = 8'h2;
+    localparam  bottom_bit = 8'h3;
+    
+    // Stub signals
+    reg  [57:0] kdx_r$0$d;
+    wire  [57:0] kdx_r$0$q;
+    reg  kdx_r$0$clock;
+    reg  [57:0] kdx_r$1$d;
+    wire  [57:0] kdx_r$1$q;
+    reg  kdx_r$1$clock;
+    reg  [57:0] kdx_r$2$d;
+    wire  [57:0] kdx_r$2$q;
+    reg  kdx_r$2$clock;
+    reg  [56:0] kdy_r$0$d;
+    wire  [56:0] kdy_r$0$q;
+    reg  kdy_r$0$clock;
+    reg  [56:0] kdy_r$1$d;
+    wire  [56:0] kdy_r$1$q;
+    reg  kdy_r$1$clock;
+    reg  [56:0] kdy_r$2$d;
+    wire  [56:0] kdy_r$2$q;
+    reg  kdy_r$2$clock;
+    reg  up_r$d;
+    wire  up_r$q;
+    reg  up_r$clock;
+    reg  [57:0] edx_r$0$d;
+    wire  [57:0] edx_r$0$q;
+    reg  edx_r$0$clock;
+    reg  [57:0] edx_r$1$d;
+    wire  [57:0] edx_r$1$q;
+    reg  edx_r$1$clock;
+    reg  [57:0] edx_r$2$d;
+    wire  [57:0] edx_r$2$q;
+    reg  edx_r$2$clock;
+    reg  [56:0] edy_r$0$d;
+    wire  [56:0] edy_r$0$q;
+    reg  edy_r$0$clock;
+    reg  [56:0] edy_r$1$d;
+    wire  [56:0] edy_r$1$q;
+    reg  edy_r$1$clock;
+    reg  [56:0] edy_r$2$d;
+    wire  [56:0] edy_r$2$q;
+    reg  edy_r$2$clock;
+    reg  [33:0] edy_d_r$0$d;
+    wire  [33:0] edy_d_r$0$q;
+    reg  edy_d_r$0$clock;
+    reg  [33:0] edy_d_r$1$d;
+    wire  [33:0] edy_d_r$1$q;
+    reg  edy_d_r$1$clock;
+    reg  [33:0] edy_d_r$2$d;
+    wire  [33:0] edy_d_r$2$q;
+    reg  edy_d_r$2$clock;
+    reg  [33:0] ed16_r$0$d;
+    wire  [33:0] ed16_r$0$q;
+    reg  ed16_r$0$clock;
+    reg  [33:0] ed16_r$1$d;
+    wire  [33:0] ed16_r$1$q;
+    reg  ed16_r$1$clock;
+    reg  [33:0] ed16_r$2$d;
+    wire  [33:0] ed16_r$2$q;
+    reg  ed16_r$2$clock;
+    reg  [18:0] cy_r$0$d;
+    wire  [18:0] cy_r$0$q;
+    reg  cy_r$0$clock;
+    reg  [18:0] cy_r$1$d;
+    wire  [18:0] cy_r$1$q;
+    reg  cy_r$1$clock;
+    reg  [18:0] cy_r$2$d;
+    wire  [18:0] cy_r$2$q;
+    reg  cy_r$2$clock;
+    reg  [12:0] count_r$0$d;
+    wire  [12:0] count_r$0$q;
+    reg  count_r$0$clock;
+    reg  [12:0] count_r$1$d;
+    wire  [12:0] count_r$1$q;
+    reg  count_r$1$clock;
+    reg  [12:0] count_r$2$d;
+    wire  [12:0] count_r$2$q;
+    reg  count_r$2$clock;
+    reg  [18:0] toff_r$0$d;
+    wire  [18:0] toff_r$0$q;
+    reg  toff_r$0$clock;
+    reg  [18:0] toff_r$1$d;
+    wire  [18:0] toff_r$1$q;
+    reg  toff_r$1$clock;
+    reg  [18:0] toff_r$2$d;
+    wire  [18:0] toff_r$2$q;
+    reg  toff_r$2$clock;
+    reg  [18:0] xf_r$0$d;
+    wire  [18:0] xf_r$0$q;
+    reg  xf_r$0$clock;
+    reg  [18:0] xf_r$1$d;
+    wire  [18:0] xf_r$1$q;
+    reg  xf_r$1$clock;
+    reg  [18:0] xf_r$2$d;
+    wire  [18:0] xf_r$2$q;
+    reg  xf_r$2$clock;
+    reg  [18:0] xi_r$0$d;
+    wire  [18:0] xi_r$0$q;
+    reg  xi_r$0$clock;
+    reg  [18:0] xi_r$1$d;
+    wire  [18:0] xi_r$1$q;
+    reg  xi_r$1$clock;
+    reg  [18:0] xi_r$2$d;
+    wire  [18:0] xi_r$2$q;
+    reg  xi_r$2$clock;
+    reg  [18:0] off_y_r$0$d;
+    wire  [18:0] off_y_r$0$q;
+    reg  off_y_r$0$clock;
+    reg  [18:0] off_y_r$1$d;
+    wire  [18:0] off_y_r$1$q;
+    reg  off_y_r$1$clock;
+    reg  [18:0] off_y_r$2$d;
+    wire  [18:0] off_y_r$2$q;
+    reg  off_y_r$2$clock;
+    reg  [18:0] dmaj_r$0$d;
+    wire  [18:0] dmaj_r$0$q;
+    reg  dmaj_r$0$clock;
+    reg  [18:0] dmaj_r$1$d;
+    wire  [18:0] dmaj_r$1$q;
+    reg  dmaj_r$1$clock;
+    reg  [18:0] dmaj_r$2$d;
+    wire  [18:0] dmaj_r$2$q;
+    reg  dmaj_r$2$clock;
+    reg  [18:0] dmaj_r$3$d;
+    wire  [18:0] dmaj_r$3$q;
+    reg  dmaj_r$3$clock;
+    reg  [18:0] dbot_r$0$d;
+    wire  [18:0] dbot_r$0$q;
+    reg  dbot_r$0$clock;
+    reg  [18:0] dbot_r$1$d;
+    wire  [18:0] dbot_r$1$q;
+    reg  dbot_r$1$clock;
+    reg  [18:0] dbot_r$2$d;
+    wire  [18:0] dbot_r$2$q;
+    reg  dbot_r$2$clock;
+    reg  [18:0] dbot_r$3$d;
+    wire  [18:0] dbot_r$3$q;
+    reg  dbot_r$3$clock;
+    reg  [39:0] attr0_r$0$d;
+    wire  [39:0] attr0_r$0$q;
+    reg  attr0_r$0$clock;
+    reg  [39:0] attr0_r$1$d;
+    wire  [39:0] attr0_r$1$q;
+    reg  attr0_r$1$clock;
+    reg  [39:0] attr0_r$2$d;
+    wire  [39:0] attr0_r$2$q;
+    reg  attr0_r$2$clock;
+    reg  [39:0] attr0_r$3$d;
+    wire  [39:0] attr0_r$3$q;
+    reg  attr0_r$3$clock;
+    reg  [18:0] xn0_r$d;
+    wire  [18:0] xn0_r$q;
+    reg  xn0_r$clock;
+    
+    // Local signals
+    reg  [57:0] c_kdx$0;
+    reg  [57:0] c_kdx$1;
+    reg  [57:0] c_kdx$2;
+    reg  [56:0] c_kdy$0;
+    reg  [56:0] c_kdy$1;
+    reg  [56:0] c_kdy$2;
+    reg  c_up;
+    reg  [57:0] c_edx$0;
+    reg  [57:0] c_edx$1;
+    reg  [57:0] c_edx$2;
+    reg  [56:0] c_edy$0;
+    reg  [56:0] c_edy$1;
+    reg  [56:0] c_edy$2;
+    reg  [33:0] c_edy_d$0;
+    reg  [33:0] c_edy_d$1;
+    reg  [33:0] c_edy_d$2;
+    reg  [33:0] c_ed16$0;
+    reg  [33:0] c_ed16$1;
+    reg  [33:0] c_ed16$2;
+    reg  [18:0] c_cy$0;
+    reg  [18:0] c_cy$1;
+    reg  [18:0] c_cy$2;
+    reg  [12:0] c_count$0;
+    reg  [12:0] c_count$1;
+    reg  [12:0] c_count$2;
+    reg  [18:0] c_toff$0;
+    reg  [18:0] c_toff$1;
+    reg  [18:0] c_toff$2;
+    reg  [18:0] c_xf$0;
+    reg  [18:0] c_xf$1;
+    reg  [18:0] c_xf$2;
+    reg  [18:0] c_xi$0;
+    reg  [18:0] c_xi$1;
+    reg  [18:0] c_xi$2;
+    reg  [18:0] c_off_y$0;
+    reg  [18:0] c_off_y$1;
+    reg  [18:0] c_off_y$2;
+    reg  [18:0] c_dmaj$0;
+    reg  [18:0] c_dmaj$1;
+    reg  [18:0] c_dmaj$2;
+    reg  [18:0] c_dmaj$3;
+    reg  [18:0] c_dbot$0;
+    reg  [18:0] c_dbot$1;
+    reg  [18:0] c_dbot$2;
+    reg  [18:0] c_dbot$3;
+    reg  [39:0] c_attr0$0;
+    reg  [39:0] c_attr0$1;
+    reg  [39:0] c_attr0$2;
+    reg  [39:0] c_attr0$3;
+    reg  [57:0] xw$0;
+    reg  [57:0] xw$1;
+    reg  [57:0] xw$2;
+    reg  [56:0] yw$0;
+    reg  [56:0] yw$1;
+    reg  [56:0] yw$2;
+    reg  [18:0] zn$0;
+    reg  [18:0] zn$1;
+    reg  [18:0] zn$2;
+    reg  [18:0] cn$0;
+    reg  [18:0] cn$1;
+    reg  [18:0] cn$2;
+    reg  [18:0] cn$3;
+    reg  [18:0] cn$4;
+    reg  [18:0] cn$5;
+    reg  [18:0] cn$6;
+    reg  [18:0] cn$7;
+    reg  [18:0] cn$8;
+    reg  [18:0] xn$0;
+    reg  [18:0] xn$1;
+    reg  [18:0] xn$2;
+    reg  [18:0] yn$0;
+    reg  [18:0] yn$1;
+    reg  [18:0] yn$2;
+    reg  [18:0] cv$0;
+    reg  [18:0] cv$1;
+    reg  [18:0] cv$2;
+    reg  [12:0] span$0;
+    reg  [12:0] span$1;
+    reg  [12:0] span$2;
+    reg  [18:0] diff$0;
+    reg  [18:0] diff$1;
+    reg  [18:0] diff$2;
+    reg  [18:0] bx$0;
+    reg  [18:0] bx$1;
+    reg  [18:0] bx$2;
+    reg  [18:0] by$0;
+    reg  [18:0] by$1;
+    reg  [18:0] by$2;
+    reg  [18:0] xb$0;
+    reg  [18:0] xb$1;
+    reg  [18:0] xb$2;
+    reg  [18:0] tracked$0;
+    reg  [18:0] tracked$1;
+    reg  [18:0] tracked$2;
+    
+    // Sub module instances
+    triangle_setup$g0$kdx_r$0 kdx_r$0(
+        .d(kdx_r$0$d),
+        .q(kdx_r$0$q),
+        .clock(kdx_r$0$clock)
+    );
+    triangle_setup$g0$kdx_r$1 kdx_r$1(
+        .d(kdx_r$1$d),
+        .q(kdx_r$1$q),
+        .clock(kdx_r$1$clock)
+    );
+    triangle_setup$g0$kdx_r$2 kdx_r$2(
+        .d(kdx_r$2$d),
+        .q(kdx_r$2$q),
+        .clock(kdx_r$2$clock)
+    );
+    triangle_setup$g0$kdy_r$0 kdy_r$0(
+        .d(kdy_r$0$d),
+        .q(kdy_r$0$q),
+        .clock(kdy_r$0$clock)
+    );
+    triangle_setup$g0$kdy_r$1 kdy_r$1(
+        .d(kdy_r$1$d),
+        .q(kdy_r$1$q),
+        .clock(kdy_r$1$clock)
+    );
+    triangle_setup$g0$kdy_r$2 kdy_r$2(
+        .d(kdy_r$2$d),
+        .q(kdy_r$2$q),
+        .clock(kdy_r$2$clock)
+    );
+    triangle_setup$g0$up_r up_r(
+        .d(up_r$d),
+        .q(up_r$q),
+        .clock(up_r$clock)
+    );
+    triangle_setup$g0$edx_r$0 edx_r$0(
+        .d(edx_r$0$d),
+        .q(edx_r$0$q),
+        .clock(edx_r$0$clock)
+    );
+    triangle_setup$g0$edx_r$1 edx_r$1(
+        .d(edx_r$1$d),
+        .q(edx_r$1$q),
+        .clock(edx_r$1$clock)
+    );
+    triangle_setup$g0$edx_r$2 edx_r$2(
+        .d(edx_r$2$d),
+        .q(edx_r$2$q),
+        .clock(edx_r$2$clock)
+    );
+    triangle_setup$g0$edy_r$0 edy_r$0(
+        .d(edy_r$0$d),
+        .q(edy_r$0$q),
+        .clock(edy_r$0$clock)
+    );
+    triangle_setup$g0$edy_r$1 edy_r$1(
+        .d(edy_r$1$d),
+        .q(edy_r$1$q),
+        .clock(edy_r$1$clock)
+    );
+    triangle_setup$g0$edy_r$2 edy_r$2(
+        .d(edy_r$2$d),
+        .q(edy_r$2$q),
+        .clock(edy_r$2$clock)
+    );
+    triangle_setup$g0$edy_d_r$0 edy_d_r$0(
+        .d(edy_d_r$0$d),
+        .q(edy_d_r$0$q),
+        .clock(edy_d_r$0$clock)
+    );
+    triangle_setup$g0$edy_d_r$1 edy_d_r$1(
+        .d(edy_d_r$1$d),
+        .q(edy_d_r$1$q),
+        .clock(edy_d_r$1$clock)
+    );
+    triangle_setup$g0$edy_d_r$2 edy_d_r$2(
+        .d(edy_d_r$2$d),
+        .q(edy_d_r$2$q),
+        .clock(edy_d_r$2$clock)
+    );
+    triangle_setup$g0$ed16_r$0 ed16_r$0(
+        .d(ed16_r$0$d),
+        .q(ed16_r$0$q),
+        .clock(ed16_r$0$clock)
+    );
+    triangle_setup$g0$ed16_r$1 ed16_r$1(
+        .d(ed16_r$1$d),
+        .q(ed16_r$1$q),
+        .clock(ed16_r$1$clock)
+    );
+    triangle_setup$g0$ed16_r$2 ed16_r$2(
+        .d(ed16_r$2$d),
+        .q(ed16_r$2$q),
+        .clock(ed16_r$2$clock)
+    );
+    triangle_setup$g0$cy_r$0 cy_r$0(
+        .d(cy_r$0$d),
+        .q(cy_r$0$q),
+        .clock(cy_r$0$clock)
+    );
+    triangle_setup$g0$cy_r$1 cy_r$1(
+        .d(cy_r$1$d),
+        .q(cy_r$1$q),
+        .clock(cy_r$1$clock)
+    );
+    triangle_setup$g0$cy_r$2 cy_r$2(
+        .d(cy_r$2$d),
+        .q(cy_r$2$q),
+        .clock(cy_r$2$clock)
+    );
+    triangle_setup$g0$count_r$0 count_r$0(
+        .d(count_r$0$d),
+        .q(count_r$0$q),
+        .clock(count_r$0$clock)
+    );
+    triangle_setup$g0$count_r$1 count_r$1(
+        .d(count_r$1$d),
+        .q(count_r$1$q),
+        .clock(count_r$1$clock)
+    );
+    triangle_setup$g0$count_r$2 count_r$2(
+        .d(count_r$2$d),
+        .q(count_r$2$q),
+        .clock(count_r$2$clock)
+    );
+    triangle_setup$g0$toff_r$0 toff_r$0(
+        .d(toff_r$0$d),
+        .q(toff_r$0$q),
+        .clock(toff_r$0$clock)
+    );
+    triangle_setup$g0$toff_r$1 toff_r$1(
+        .d(toff_r$1$d),
+        .q(toff_r$1$q),
+        .clock(toff_r$1$clock)
+    );
+    triangle_setup$g0$toff_r$2 toff_r$2(
+        .d(toff_r$2$d),
+        .q(toff_r$2$q),
+        .clock(toff_r$2$clock)
+    );
+    triangle_setup$g0$xf_r$0 xf_r$0(
+        .d(xf_r$0$d),
+        .q(xf_r$0$q),
+        .clock(xf_r$0$clock)
+    );
+    triangle_setup$g0$xf_r$1 xf_r$1(
+        .d(xf_r$1$d),
+        .q(xf_r$1$q),
+        .clock(xf_r$1$clock)
+    );
+    triangle_setup$g0$xf_r$2 xf_r$2(
+        .d(xf_r$2$d),
+        .q(xf_r$2$q),
+        .clock(xf_r$2$clock)
+    );
+    triangle_setup$g0$xi_r$0 xi_r$0(
+        .d(xi_r$0$d),
+        .q(xi_r$0$q),
+        .clock(xi_r$0$clock)
+    );
+    triangle_setup$g0$xi_r$1 xi_r$1(
+        .d(xi_r$1$d),
+        .q(xi_r$1$q),
+        .clock(xi_r$1$clock)
+    );
+    triangle_setup$g0$xi_r$2 xi_r$2(
+        .d(xi_r$2$d),
+        .q(xi_r$2$q),
+        .clock(xi_r$2$clock)
+    );
+    triangle_setup$g0$off_y_r$0 off_y_r$0(
+        .d(off_y_r$0$d),
+        .q(off_y_r$0$q),
+        .clock(off_y_r$0$clock)
+    );
+    triangle_setup$g0$off_y_r$1 off_y_r$1(
+        .d(off_y_r$1$d),
+        .q(off_y_r$1$q),
+        .clock(off_y_r$1$clock)
+    );
+    triangle_setup$g0$off_y_r$2 off_y_r$2(
+        .d(off_y_r$2$d),
+        .q(off_y_r$2$q),
+        .clock(off_y_r$2$clock)
+    );
+    triangle_setup$g0$dmaj_r$0 dmaj_r$0(
+        .d(dmaj_r$0$d),
+        .q(dmaj_r$0$q),
+        .clock(dmaj_r$0$clock)
+    );
+    triangle_setup$g0$dmaj_r$1 dmaj_r$1(
+        .d(dmaj_r$1$d),
+        .q(dmaj_r$1$q),
+        .clock(dmaj_r$1$clock)
+    );
+    triangle_setup$g0$dmaj_r$2 dmaj_r$2(
+        .d(dmaj_r$2$d),
+        .q(dmaj_r$2$q),
+        .clock(dmaj_r$2$clock)
+    );
+    triangle_setup$g0$dmaj_r$3 dmaj_r$3(
+        .d(dmaj_r$3$d),
+        .q(dmaj_r$3$q),
+        .clock(dmaj_r$3$clock)
+    );
+    triangle_setup$g0$dbot_r$0 dbot_r$0(
+        .d(dbot_r$0$d),
+        .q(dbot_r$0$q),
+        .clock(dbot_r$0$clock)
+    );
+    triangle_setup$g0$dbot_r$1 dbot_r$1(
+        .d(dbot_r$1$d),
+        .q(dbot_r$1$q),
+        .clock(dbot_r$1$clock)
+    );
+    triangle_setup$g0$dbot_r$2 dbot_r$2(
+        .d(dbot_r$2$d),
+        .q(dbot_r$2$q),
+        .clock(dbot_r$2$clock)
+    );
+    triangle_setup$g0$dbot_r$3 dbot_r$3(
+        .d(dbot_r$3$d),
+        .q(dbot_r$3$q),
+        .clock(dbot_r$3$clock)
+    );
+    triangle_setup$g0$attr0_r$0 attr0_r$0(
+        .d(attr0_r$0$d),
+        .q(attr0_r$0$q),
+        .clock(attr0_r$0$clock)
+    );
+    triangle_setup$g0$attr0_r$1 attr0_r$1(
+        .d(attr0_r$1$d),
+        .q(attr0_r$1$q),
+        .clock(attr0_r$1$clock)
+    );
+    triangle_setup$g0$attr0_r$2 attr0_r$2(
+        .d(attr0_r$2$d),
+        .q(attr0_r$2$q),
+        .clock(attr0_r$2$clock)
+    );
+    triangle_setup$g0$attr0_r$3 attr0_r$3(
+        .d(attr0_r$3$d),
+        .q(attr0_r$3$q),
+        .clock(attr0_r$3$clock)
+    );
+    triangle_setup$g0$xn0_r xn0_r(
+        .d(xn0_r$d),
+        .q(xn0_r$q),
+        .clock(xn0_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        xw$0 = ((vx$0) & 58'h3ffffffffffffff);
+        if (vx$0[xy_msb]) begin
+            xw$0 = ((vx$0) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$1 = ((vx$1) & 58'h3ffffffffffffff);
+        if (vx$1[xy_msb]) begin
+            xw$1 = ((vx$1) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$2 = ((vx$2) & 58'h3ffffffffffffff);
+        if (vx$2[xy_msb]) begin
+            xw$2 = ((vx$2) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        yw$0 = ((vy$0) & 57'h1ffffffffffffff);
+        if (vy$0[xy_msb]) begin
+            yw$0 = ((vy$0) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$1 = ((vy$1) & 57'h1ffffffffffffff);
+        if (vy$1[xy_msb]) begin
+            yw$1 = ((vy$1) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$2 = ((vy$2) & 57'h1ffffffffffffff);
+        if (vy$2[xy_msb]) begin
+            yw$2 = ((vy$2) & 57'h1ffffffffffffff) | y_ext;
+        end
+        zn$0 = ((vz$0) & 19'h7ffff);
+        if (vz$0[z_msb]) begin
+            zn$0 = ((vz$0) & 19'h7ffff) | z_ext;
+        end
+        zn$1 = ((vz$1) & 19'h7ffff);
+        if (vz$1[z_msb]) begin
+            zn$1 = ((vz$1) & 19'h7ffff) | z_ext;
+        end
+        zn$2 = ((vz$2) & 19'h7ffff);
+        if (vz$2[z_msb]) begin
+            zn$2 = ((vz$2) & 19'h7ffff) | z_ext;
+        end
+        cn$0 = ((vc$0) & 19'h7ffff);
+        cn$1 = ((vc$1) & 19'h7ffff);
+        cn$2 = ((vc$2) & 19'h7ffff);
+        cn$3 = ((vc$3) & 19'h7ffff);
+        cn$4 = ((vc$4) & 19'h7ffff);
+        cn$5 = ((vc$5) & 19'h7ffff);
+        cn$6 = ((vc$6) & 19'h7ffff);
+        cn$7 = ((vc$7) & 19'h7ffff);
+        cn$8 = ((vc$8) & 19'h7ffff);
+        xn$0 = xw$0[(32'h0)+:(19)];
+        yn$0 = yw$0[(32'h0)+:(19)];
+        cv$0 = ((yn$0 + half_m1) & int_mask) | half;
+        xn$1 = xw$1[(32'h0)+:(19)];
+        yn$1 = yw$1[(32'h0)+:(19)];
+        cv$1 = ((yn$1 + half_m1) & int_mask) | half;
+        xn$2 = xw$2[(32'h0)+:(19)];
+        yn$2 = yw$2[(32'h0)+:(19)];
+        cv$2 = ((yn$2 + half_m1) & int_mask) | half;
+        c_kdx$0 = xw$2 - xw$0;
+        c_kdy$0 = yw$2 - yw$0;
+        diff$0 = cv$2 - cv$0;
+        c_kdx$1 = xw$1 - xw$0;
+        c_kdy$1 = yw$1 - yw$0;
+        diff$1 = cv$1 - cv$0;
+        c_kdx$2 = xw$2 - xw$1;
+        c_kdy$2 = yw$2 - yw$1;
+        diff$2 = cv$2 - cv$1;
+        span$0 = diff$0[(frac)+:(13)];
+        if (diff$0[nb_msb]) begin
+            span$0 = 32'h0;
+        end
+        span$1 = diff$1[(frac)+:(13)];
+        if (diff$1[nb_msb]) begin
+            span$1 = 32'h0;
+        end
+        span$2 = diff$2[(frac)+:(13)];
+        if (diff$2[nb_msb]) begin
+            span$2 = 32'h0;
+        end
+        c_up = crosses[top_bit] & ~crosses[bottom_bit];
+        c_edx$0 = c_kdx$0;
+        c_edy$0 = c_kdy$0;
+        c_count$0 = span$0;
+        c_edx$1 = c_kdx$1;
+        c_edy$1 = c_kdy$1;
+        c_count$1 = span$1;
+        c_edx$2 = c_kdx$2;
+        c_edy$2 = c_kdy$2;
+        c_count$2 = span$2;
+        bx$0 = xn$0;
+        by$0 = yn$0;
+        c_cy$0 = cv$0;
+        bx$1 = xn$0;
+        by$1 = yn$0;
+        c_cy$1 = cv$0;
+        bx$2 = xn$1;
+        by$2 = yn$1;
+        c_cy$2 = cv$1;
+        if (c_up) begin
+            c_edx$1 = c_kdx$2;
+            c_edy$1 = c_kdy$2;
+            c_count$1 = span$2;
+            c_edx$2 = c_kdx$1;
+            c_edy$2 = c_kdy$1;
+            c_count$2 = span$1;
+            bx$0 = xn$2;
+            by$0 = yn$2;
+            c_cy$0 = cv$2 - (frac_mask + 32'h1);
+            bx$1 = xn$2;
+            by$1 = yn$2;
+            c_cy$1 = cv$2 - (frac_mask + 32'h1);
+            c_cy$2 = cv$1 - (frac_mask + 32'h1);
+        end
+        c_edy_d$0 = ((c_edy$0) & 34'h3ffffffff);
+        c_edy_d$1 = ((c_edy$1) & 34'h3ffffffff);
+        c_edy_d$2 = ((c_edy$2) & 34'h3ffffffff);
+        tracked$0 = start_x$0 - 32'h1;
+        if (maj_left) begin
+            tracked$0 = start_x$0;
+        end
+        tracked$1 = start_x$1;
+        if (maj_left) begin
+            tracked$1 = start_x$1 - 32'h1;
+        end
+        tracked$2 = start_x$2;
+        if (maj_left) begin
+            tracked$2 = start_x$2 - 32'h1;
+        end
+        c_ed16$0 = c_edy_d$0 << frac;
+        c_toff$0 = c_cy$0 - by$0;
+        xb$0 = bx$0 - half;
+        c_xf$0 = xb$0 & frac_mask;
+        c_xi$0 = xb$0 >> frac;
+        if (xb$0[nb_msb]) begin
+            c_xi$0 = (xb$0 >> frac) | shr_ext;
+        end
+        c_off_y$0 = c_cy$0 - yn$0;
+        off_x$0 = (tracked$0 << frac) + half - xn0_r$q;
+        c_ed16$1 = c_edy_d$1 << frac;
+        c_toff$1 = c_cy$1 - by$1;
+        xb$1 = bx$1 - half;
+        c_xf$1 = xb$1 & frac_mask;
+        c_xi$1 = xb$1 >> frac;
+        if (xb$1[nb_msb]) begin
+            c_xi$1 = (xb$1 >> frac) | shr_ext;
+        end
+        c_off_y$1 = c_cy$1 - yn$0;
+        off_x$1 = (tracked$1 << frac) + half - xn0_r$q;
+        c_ed16$2 = c_edy_d$2 << frac;
+        c_toff$2 = c_cy$2 - by$2;
+        xb$2 = bx$2 - half;
+        c_xf$2 = xb$2 & frac_mask;
+        c_xi$2 = xb$2 >> frac;
+        if (xb$2[nb_msb]) begin
+            c_xi$2 = (xb$2 >> frac) | shr_ext;
+        end
+        c_off_y$2 = c_cy$2 - yn$0;
+        off_x$2 = (tracked$2 << frac) + half - xn0_r$q;
+        c_dmaj$0 = zn$2 - zn$0;
+        c_dbot$0 = zn$1 - zn$0;
+        c_attr0$0 = ((zn$0) & 40'hffffffffff);
+        c_attr0$1 = ((vc$0) & 40'hffffffffff);
+        c_attr0$2 = ((vc$1) & 40'hffffffffff);
+        c_attr0$3 = ((vc$2) & 40'hffffffffff);
+        c_dmaj$1 = cn$6 - cn$0;
+        c_dbot$1 = cn$3 - cn$0;
+        c_dmaj$2 = cn$7 - cn$1;
+        c_dbot$2 = cn$4 - cn$1;
+        c_dmaj$3 = cn$8 - cn$2;
+        c_dbot$3 = cn$5 - cn$2;
+        xn0_r$clock = clock;
+        xn0_r$d = xn$0;
+        kdx_r$0$clock = clock;
+        kdx_r$0$d = c_kdx$0;
+        kdx$0 = kdx_r$0$q;
+        kdx_r$1$clock = clock;
+        kdx_r$1$d = c_kdx$1;
+        kdx$1 = kdx_r$1$q;
+        kdx_r$2$clock = clock;
+        kdx_r$2$d = c_kdx$2;
+        kdx$2 = kdx_r$2$q;
+        kdy_r$0$clock = clock;
+        kdy_r$0$d = c_kdy$0;
+        kdy$0 = kdy_r$0$q;
+        kdy_r$1$clock = clock;
+        kdy_r$1$d = c_kdy$1;
+        kdy$1 = kdy_r$1$q;
+        kdy_r$2$clock = clock;
+        kdy_r$2$d = c_kdy$2;
+        kdy$2 = kdy_r$2$q;
+        up_r$clock = clock;
+        up_r$d = c_up;
+        up = up_r$q;
+        edx_r$0$clock = clock;
+        edx_r$0$d = c_edx$0;
+        edx$0 = edx_r$0$q;
+        edx_r$1$clock = clock;
+        edx_r$1$d = c_edx$1;
+        edx$1 = edx_r$1$q;
+        edx_r$2$clock = clock;
+        edx_r$2$d = c_edx$2;
+        edx$2 = edx_r$2$q;
+        edy_r$0$clock = clock;
+        edy_r$0$d = c_edy$0;
+        edy$0 = edy_r$0$q;
+        edy_r$1$clock = clock;
+        edy_r$1$d = c_edy$1;
+        edy$1 = edy_r$1$q;
+        edy_r$2$clock = clock;
+        edy_r$2$d = c_edy$2;
+        edy$2 = edy_r$2$q;
+        edy_d_r$0$clock = clock;
+        edy_d_r$0$d = c_edy_d$0;
+        edy_d$0 = edy_d_r$0$q;
+        edy_d_r$1$clock = clock;
+        edy_d_r$1$d = c_edy_d$1;
+        edy_d$1 = edy_d_r$1$q;
+        edy_d_r$2$clock = clock;
+        edy_d_r$2$d = c_edy_d$2;
+        edy_d$2 = edy_d_r$2$q;
+        ed16_r$0$clock = clock;
+        ed16_r$0$d = c_ed16$0;
+        ed16$0 = ed16_r$0$q;
+        ed16_r$1$clock = clock;
+        ed16_r$1$d = c_ed16$1;
+        ed16$1 = ed16_r$1$q;
+        ed16_r$2$clock = clock;
+        ed16_r$2$d = c_ed16$2;
+        ed16$2 = ed16_r$2$q;
+        cy_r$0$clock = clock;
+        cy_r$0$d = c_cy$0;
+        cy$0 = cy_r$0$q;
+        cy_r$1$clock = clock;
+        cy_r$1$d = c_cy$1;
+        cy$1 = cy_r$1$q;
+        cy_r$2$clock = clock;
+        cy_r$2$d = c_cy$2;
+        cy$2 = cy_r$2$q;
+        count_r$0$clock = clock;
+        count_r$0$d = c_count$0;
+        count$0 = count_r$0$q;
+        count_r$1$clock = clock;
+        count_r$1$d = c_count$1;
+        count$1 = count_r$1$q;
+        count_r$2$clock = clock;
+        count_r$2$d = c_count$2;
+        count$2 = count_r$2$q;
+        toff_r$0$clock = clock;
+        toff_r$0$d = c_toff$0;
+        toff$0 = toff_r$0$q;
+        toff_r$1$clock = clock;
+        toff_r$1$d = c_toff$1;
+        toff$1 = toff_r$1$q;
+        toff_r$2$clock = clock;
+        toff_r$2$d = c_toff$2;
+        toff$2 = toff_r$2$q;
+        xf_r$0$clock = clock;
+        xf_r$0$d = c_xf$0;
+        xf$0 = xf_r$0$q;
+        xf_r$1$clock = clock;
+        xf_r$1$d = c_xf$1;
+        xf$1 = xf_r$1$q;
+        xf_r$2$clock = clock;
+        xf_r$2$d = c_xf$2;
+        xf$2 = xf_r$2$q;
+        xi_r$0$clock = clock;
+        xi_r$0$d = c_xi$0;
+        xi$0 = xi_r$0$q;
+        xi_r$1$clock = clock;
+        xi_r$1$d = c_xi$1;
+        xi$1 = xi_r$1$q;
+        xi_r$2$clock = clock;
+        xi_r$2$d = c_xi$2;
+        xi$2 = xi_r$2$q;
+        off_y_r$0$clock = clock;
+        off_y_r$0$d = c_off_y$0;
+        off_y$0 = off_y_r$0$q;
+        off_y_r$1$clock = clock;
+        off_y_r$1$d = c_off_y$1;
+        off_y$1 = off_y_r$1$q;
+        off_y_r$2$clock = clock;
+        off_y_r$2$d = c_off_y$2;
+        off_y$2 = off_y_r$2$q;
+        dmaj_r$0$clock = clock;
+        dmaj_r$0$d = c_dmaj$0;
+        dmaj$0 = dmaj_r$0$q;
+        dmaj_r$1$clock = clock;
+        dmaj_r$1$d = c_dmaj$1;
+        dmaj$1 = dmaj_r$1$q;
+        dmaj_r$2$clock = clock;
+        dmaj_r$2$d = c_dmaj$2;
+        dmaj$2 = dmaj_r$2$q;
+        dmaj_r$3$clock = clock;
+        dmaj_r$3$d = c_dmaj$3;
+        dmaj$3 = dmaj_r$3$q;
+        dbot_r$0$clock = clock;
+        dbot_r$0$d = c_dbot$0;
+        dbot$0 = dbot_r$0$q;
+        dbot_r$1$clock = clock;
+        dbot_r$1$d = c_dbot$1;
+        dbot$1 = dbot_r$1$q;
+        dbot_r$2$clock = clock;
+        dbot_r$2$d = c_dbot$2;
+        dbot$2 = dbot_r$2$q;
+        dbot_r$3$clock = clock;
+        dbot_r$3$d = c_dbot$3;
+        dbot$3 = dbot_r$3$q;
+        attr0_r$0$clock = clock;
+        attr0_r$0$d = c_attr0$0;
+        attr0$0 = attr0_r$0$q;
+        attr0_r$1$clock = clock;
+        attr0_r$1$d = c_attr0$1;
+        attr0$1 = attr0_r$1$q;
+        attr0_r$2$clock = clock;
+        attr0_r$2$d = c_attr0$2;
+        attr0$2 = attr0_r$2$q;
+        attr0_r$3$clock = clock;
+        attr0_r$3$d = c_attr0$3;
+        attr0$3 = attr0_r$3$q;
+    end
+    
+endmodule // triangle_setup$g0
+
+
+module triangle_setup$g0$attr0_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 6'h0;
+       q = 40'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // triangle_setup$exp_e
+endmodule // triangle_setup$g0$attr0_r$0
 
 
-module triangle_setup$g0(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module triangle_setup$g0$attr0_r$1(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] vx$0;
-    input wire  [15:0] vx$1;
-    input wire  [15:0] vx$2;
-    input wire  [15:0] vy$0;
-    input wire  [15:0] vy$1;
-    input wire  [15:0] vy$2;
-    input wire  [17:0] vz$0;
-    input wire  [17:0] vz$1;
-    input wire  [17:0] vz$2;
-    input wire  [7:0] vc$0;
-    input wire  [7:0] vc$1;
-    input wire  [7:0] vc$2;
-    input wire  [7:0] vc$3;
-    input wire  [7:0] vc$4;
-    input wire  [7:0] vc$5;
-    input wire  [7:0] vc$6;
-    input wire  [7:0] vc$7;
-    input wire  [7:0] vc$8;
-    input wire  [5:0] crosses;
-    input wire  maj_left;
-    input wire  [18:0] start_x$0;
-    input wire  [18:0] start_x$1;
-    input wire  [18:0] start_x$2;
-    output reg  [57:0] kdx$0;
-    output reg  [57:0] kdx$1;
-    output reg  [57:0] kdx$2;
-    output reg  [56:0] kdy$0;
-    output reg  [56:0] kdy$1;
-    output reg  [56:0] kdy$2;
-    output reg  up;
-    output reg  [57:0] edx$0;
-    output reg  [57:0] edx$1;
-    output reg  [57:0] edx$2;
-    output reg  [56:0] edy$0;
-    output reg  [56:0] edy$1;
-    output reg  [56:0] edy$2;
-    output reg  [33:0] edy_d$0;
-    output reg  [33:0] edy_d$1;
-    output reg  [33:0] edy_d$2;
-    output reg  [33:0] ed16$0;
-    output reg  [33:0] ed16$1;
-    output reg  [33:0] ed16$2;
-    output reg  [18:0] cy$0;
-    output reg  [18:0] cy$1;
-    output reg  [18:0] cy$2;
-    output reg  [12:0] count$0;
-    output reg  [12:0] count$1;
-    output reg  [12:0] count$2;
-    output reg  [18:0] toff$0;
-    output reg  [18:0] toff$1;
-    output reg  [18:0] toff$2;
-    output reg  [18:0] xf$0;
-    output reg  [18:0] xf$1;
-    output reg  [18:0] xf$2;
-    output reg  [18:0] xi$0;
-    output reg  [18:0] xi$1;
-    output reg  [18:0] xi$2;
-    output reg  [18:0] off_x$0;
-    output reg  [18:0] off_x$1;
-    output reg  [18:0] off_x$2;
-    output reg  [18:0] off_y$0;
-    output reg  [18:0] off_y$1;
-    output reg  [18:0] off_y$2;
-    output reg  [18:0] dmaj$0;
-    output reg  [18:0] dmaj$1;
-    output reg  [18:0] dmaj$2;
-    output reg  [18:0] dmaj$3;
-    output reg  [18:0] dbot$0;
-    output reg  [18:0] dbot$1;
-    output reg  [18:0] dbot$2;
-    output reg  [18:0] dbot$3;
-    output reg  [39:0] attr0$0;
-    output reg  [39:0] attr0$1;
-    output reg  [39:0] attr0$2;
-    output reg  [39:0] attr0$3;
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  frac = 8'h4;
-    localparam  half_m1 = 19'b111;
-    localparam  half = 19'b1000;
-    localparam  int_mask = 19'b1111111111111110000;
-    localparam  frac_mask = 19'b1111;
-    localparam  xy_msb = 8'hf;
-    localparam  z_msb = 8'h11;
-    localparam  nb_msb = 8'h12;
-    localparam  xy_ext = 58'h3ffffffffff0000;
-    localparam  y_ext = 57'h1ffffffffff0000;
-    localparam  z_ext = 19'b1000000000000000000;
-    localparam  shr_ext = 19'b1111000000000000000;
-    localparam  top_bit = 8'h2;
-    localparam  bottom_bit = 8'h3;
-    
-    // Local signals
-    reg  [57:0] xw$0;
-    reg  [57:0] xw$1;
-    reg  [57:0] xw$2;
-    reg  [56:0] yw$0;
-    reg  [56:0] yw$1;
-    reg  [56:0] yw$2;
-    reg  [18:0] zn$0;
-    reg  [18:0] zn$1;
-    reg  [18:0] zn$2;
-    reg  [18:0] cn$0;
-    reg  [18:0] cn$1;
-    reg  [18:0] cn$2;
-    reg  [18:0] cn$3;
-    reg  [18:0] cn$4;
-    reg  [18:0] cn$5;
-    reg  [18:0] cn$6;
-    reg  [18:0] cn$7;
-    reg  [18:0] cn$8;
-    reg  [18:0] xn$0;
-    reg  [18:0] xn$1;
-    reg  [18:0] xn$2;
-    reg  [18:0] yn$0;
-    reg  [18:0] yn$1;
-    reg  [18:0] yn$2;
-    reg  [18:0] cv$0;
-    reg  [18:0] cv$1;
-    reg  [18:0] cv$2;
-    reg  [12:0] span$0;
-    reg  [12:0] span$1;
-    reg  [12:0] span$2;
-    reg  [18:0] diff$0;
-    reg  [18:0] diff$1;
-    reg  [18:0] diff$2;
-    reg  [18:0] bx$0;
-    reg  [18:0] bx$1;
-    reg  [18:0] bx$2;
-    reg  [18:0] by$0;
-    reg  [18:0] by$1;
-    reg  [18:0] by$2;
-    reg  [18:0] xb$0;
-    reg  [18:0] xb$1;
-    reg  [18:0] xb$2;
-    reg  [18:0] tracked$0;
-    reg  [18:0] tracked$1;
-    reg  [18:0] tracked$2;
-    
-    // Update code
-    always @(*) begin
-        xw$0 = ((vx$0) & 58'h3ffffffffffffff);
-        if (vx$0[xy_msb]) begin
-            xw$0 = ((vx$0) & 58'h3ffffffffffffff) | xy_ext;
-        end
-        xw$1 = ((vx$1) & 58'h3ffffffffffffff);
-        if (vx$1[xy_msb]) begin
-            xw$1 = ((vx$1) & 58'h3ffffffffffffff) | xy_ext;
-        end
-        xw$2 = ((vx$2) & 58'h3ffffffffffffff);
-        if (vx$2[xy_msb]) begin
-            xw$2 = ((vx$2) & 58'h3ffffffffffffff) | xy_ext;
-        end
-        yw$0 = ((vy$0) & 57'h1ffffffffffffff);
-        if (vy$0[xy_msb]) begin
-            yw$0 = ((vy$0) & 57'h1ffffffffffffff) | y_ext;
-        end
-        yw$1 = ((vy$1) & 57'h1ffffffffffffff);
-        if (vy$1[xy_msb]) begin
-            yw$1 = ((vy$1) & 57'h1ffffffffffffff) | y_ext;
-        end
-        yw$2 = ((vy$2) & 57'h1ffffffffffffff);
-        if (vy$2[xy_msb]) begin
-            yw$2 = ((vy$2) & 57'h1ffffffffffffff) | y_ext;
-        end
-        zn$0 = ((vz$0) & 19'h7ffff);
-        if (vz$0[z_msb]) begin
-            zn$0 = ((vz$0) & 19'h7ffff) | z_ext;
-        end
-        zn$1 = ((vz$1) & 19'h7ffff);
-        if (vz$1[z_msb]) begin
-            zn$1 = ((vz$1) & 19'h7ffff) | z_ext;
-        end
-        zn$2 = ((vz$2) & 19'h7ffff);
-        if (vz$2[z_msb]) begin
-            zn$2 = ((vz$2) & 19'h7ffff) | z_ext;
-        end
-        cn$0 = ((vc$0) & 19'h7ffff);
-        cn$1 = ((vc$1) & 19'h7ffff);
-        cn$2 = ((vc$2) & 19'h7ffff);
-        cn$3 = ((vc$3) & 19'h7ffff);
-        cn$4 = ((vc$4) & 19'h7ffff);
-        cn$5 = ((vc$5) & 19'h7ffff);
-        cn$6 = ((vc$6) & 19'h7ffff);
-        cn$7 = ((vc$7) & 19'h7ffff);
-        cn$8 = ((vc$8) & 19'h7ffff);
-        xn$0 = xw$0[(32'h0)+:(19)];
-        yn$0 = yw$0[(32'h0)+:(19)];
-        cv$0 = ((yn$0 + half_m1) & int_mask) | half;
-        xn$1 = xw$1[(32'h0)+:(19)];
-        yn$1 = yw$1[(32'h0)+:(19)];
-        cv$1 = ((yn$1 + half_m1) & int_mask) | half;
-        xn$2 = xw$2[(32'h0)+:(19)];
-        yn$2 = yw$2[(32'h0)+:(19)];
-        cv$2 = ((yn$2 + half_m1) & int_mask) | half;
-        kdx$0 = xw$2 - xw$0;
-        kdy$0 = yw$2 - yw$0;
-        diff$0 = cv$2 - cv$0;
-        kdx$1 = xw$1 - xw$0;
-        kdy$1 = yw$1 - yw$0;
-        diff$1 = cv$1 - cv$0;
-        kdx$2 = xw$2 - xw$1;
-        kdy$2 = yw$2 - yw$1;
-        diff$2 = cv$2 - cv$1;
-        span$0 = diff$0[(frac)+:(13)];
-        if (diff$0[nb_msb]) begin
-            span$0 = 32'h0;
-        end
-        span$1 = diff$1[(frac)+:(13)];
-        if (diff$1[nb_msb]) begin
-            span$1 = 32'h0;
-        end
-        span$2 = diff$2[(frac)+:(13)];
-        if (diff$2[nb_msb]) begin
-            span$2 = 32'h0;
-        end
-        up = crosses[top_bit] & ~crosses[bottom_bit];
-        edx$0 = kdx$0;
-        edy$0 = kdy$0;
-        count$0 = span$0;
-        edx$1 = kdx$1;
-        edy$1 = kdy$1;
-        count$1 = span$1;
-        edx$2 = kdx$2;
-        edy$2 = kdy$2;
-        count$2 = span$2;
-        bx$0 = xn$0;
-        by$0 = yn$0;
-        cy$0 = cv$0;
-        bx$1 = xn$0;
-        by$1 = yn$0;
-        cy$1 = cv$0;
-        bx$2 = xn$1;
-        by$2 = yn$1;
-        cy$2 = cv$1;
-        if (up) begin
-            edx$1 = kdx$2;
-            edy$1 = kdy$2;
-            count$1 = span$2;
-            edx$2 = kdx$1;
-            edy$2 = kdy$1;
-            count$2 = span$1;
-            bx$0 = xn$2;
-            by$0 = yn$2;
-            cy$0 = cv$2 - (frac_mask + 32'h1);
-            bx$1 = xn$2;
-            by$1 = yn$2;
-            cy$1 = cv$2 - (frac_mask + 32'h1);
-            cy$2 = cv$1 - (frac_mask + 32'h1);
-        end
-        edy_d$0 = ((edy$0) & 34'h3ffffffff);
-        edy_d$1 = ((edy$1) & 34'h3ffffffff);
-        edy_d$2 = ((edy$2) & 34'h3ffffffff);
-        tracked$0 = start_x$0 - 32'h1;
-        if (maj_left) begin
-            tracked$0 = start_x$0;
-        end
-        tracked$1 = start_x$1;
-        if (maj_left) begin
-            tracked$1 = start_x$1 - 32'h1;
-        end
-        tracked$2 = start_x$2;
-        if (maj_left) begin
-            tracked$2 = start_x$2 - 32'h1;
-        end
-        ed16$0 = edy_d$0 << frac;
-        toff$0 = cy$0 - by$0;
-        xb$0 = bx$0 - half;
-        xf$0 = xb$0 & frac_mask;
-        xi$0 = xb$0 >> frac;
-        if (xb$0[nb_msb]) begin
-            xi$0 = (xb$0 >> frac) | shr_ext;
-        end
-        off_y$0 = cy$0 - yn$0;
-        off_x$0 = (tracked$0 << frac) + half - xn$0;
-        ed16$1 = edy_d$1 << frac;
-        toff$1 = cy$1 - by$1;
-        xb$1 = bx$1 - half;
-        xf$1 = xb$1 & frac_mask;
-        xi$1 = xb$1 >> frac;
-        if (xb$1[nb_msb]) begin
-            xi$1 = (xb$1 >> frac) | shr_ext;
-        end
-        off_y$1 = cy$1 - yn$0;
-        off_x$1 = (tracked$1 << frac) + half - xn$0;
-        ed16$2 = edy_d$2 << frac;
-        toff$2 = cy$2 - by$2;
-        xb$2 = bx$2 - half;
-        xf$2 = xb$2 & frac_mask;
-        xi$2 = xb$2 >> frac;
-        if (xb$2[nb_msb]) begin
-            xi$2 = (xb$2 >> frac) | shr_ext;
-        end
-        off_y$2 = cy$2 - yn$0;
-        off_x$2 = (tracked$2 << frac) + half - xn$0;
-        dmaj$0 = zn$2 - zn$0;
-        dbot$0 = zn$1 - zn$0;
-        attr0$0 = ((zn$0) & 40'hffffffffff);
-        attr0$1 = ((vc$0) & 40'hffffffffff);
-        attr0$2 = ((vc$1) & 40'hffffffffff);
-        attr0$3 = ((vc$2) & 40'hffffffffff);
-        dmaj$1 = cn$6 - cn$0;
-        dbot$1 = cn$3 - cn$0;
-        dmaj$2 = cn$7 - cn$1;
-        dbot$2 = cn$4 - cn$1;
-        dmaj$3 = cn$8 - cn$2;
-        dbot$3 = cn$5 - cn$2;
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
     end
     
-endmodule // triangle_setup$g0
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$attr0_r$1
 
 
-module triangle_setup$g1(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module triangle_setup$g0$attr0_r$2(d,q,clock);
     
     // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$attr0_r$2
+
+
+module triangle_setup$g0$attr0_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$attr0_r$3
+
+
+module triangle_setup$g0$count_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$count_r$0
+
+
+module triangle_setup$g0$count_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$count_r$1
+
+
+module triangle_setup$g0$count_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$count_r$2
+
+
+module triangle_setup$g0$cy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$cy_r$0
+
+
+module triangle_setup$g0$cy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$cy_r$1
+
+
+module triangle_setup$g0$cy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$cy_r$2
+
+
+module triangle_setup$g0$dbot_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$dbot_r$0
+
+
+module triangle_setup$g0$dbot_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$dbot_r$1
+
+
+module triangle_setup$g0$dbot_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$dbot_r$2
+
+
+module triangle_setup$g0$dbot_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$dbot_r$3
+
+
+module triangle_setup$g0$dmaj_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$dmaj_r$0
+
+
+module triangle_setup$g0$dmaj_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$dmaj_r$1
+
+
+module triangle_setup$g0$dmaj_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$dmaj_r$2
+
+
+module triangle_setup$g0$dmaj_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$dmaj_r$3
+
+
+module triangle_setup$g0$ed16_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$ed16_r$0
+
+
+module triangle_setup$g0$ed16_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$ed16_r$1
+
+
+module triangle_setup$g0$ed16_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$ed16_r$2
+
+
+module triangle_setup$g0$edx_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$edx_r$0
+
+
+module triangle_setup$g0$edx_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$edx_r$1
+
+
+module triangle_setup$g0$edx_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$edx_r$2
+
+
+module triangle_setup$g0$edy_d_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$edy_d_r$0
+
+
+module triangle_setup$g0$edy_d_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$edy_d_r$1
+
+
+module triangle_setup$g0$edy_d_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$edy_d_r$2
+
+
+module triangle_setup$g0$edy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$edy_r$0
+
+
+module triangle_setup$g0$edy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$edy_r$1
+
+
+module triangle_setup$g0$edy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$edy_r$2
+
+
+module triangle_setup$g0$kdx_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$kdx_r$0
+
+
+module triangle_setup$g0$kdx_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$kdx_r$1
+
+
+module triangle_setup$g0$kdx_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$kdx_r$2
+
+
+module triangle_setup$g0$kdy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$kdy_r$0
+
+
+module triangle_setup$g0$kdy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$kdy_r$1
+
+
+module triangle_setup$g0$kdy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$kdy_r$2
+
+
+module triangle_setup$g0$off_y_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$off_y_r$0
+
+
+module triangle_setup$g0$off_y_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$off_y_r$1
+
+
+module triangle_setup$g0$off_y_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$off_y_r$2
+
+
+module triangle_setup$g0$toff_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$toff_r$0
+
+
+module triangle_setup$g0$toff_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$toff_r$1
+
+
+module triangle_setup$g0$toff_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$toff_r$2
+
+
+module triangle_setup$g0$up_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$up_r
+
+
+module triangle_setup$g0$xf_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$xf_r$0
+
+
+module triangle_setup$g0$xf_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$xf_r$1
+
+
+module triangle_setup$g0$xf_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$xf_r$2
+
+
+module triangle_setup$g0$xi_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$xi_r$0
+
+
+module triangle_setup$g0$xi_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$xi_r$1
+
+
+module triangle_setup$g0$xi_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$xi_r$2
+
+
+module triangle_setup$g0$xn0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g0$xn0_r
+
+
+module triangle_setup$g1(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] vx$0;
     input wire  [15:0] vx$1;
     input wire  [15:0] vx$2;
@@ -16614,7 +24109,208 @@ module triangle_setup$g1(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
     localparam  top_bit = 8'h2;
     localparam  bottom_bit = 8'h3;
     
+    // Stub signals
+    reg  [57:0] kdx_r$0$d;
+    wire  [57:0] kdx_r$0$q;
+    reg  kdx_r$0$clock;
+    reg  [57:0] kdx_r$1$d;
+    wire  [57:0] kdx_r$1$q;
+    reg  kdx_r$1$clock;
+    reg  [57:0] kdx_r$2$d;
+    wire  [57:0] kdx_r$2$q;
+    reg  kdx_r$2$clock;
+    reg  [56:0] kdy_r$0$d;
+    wire  [56:0] kdy_r$0$q;
+    reg  kdy_r$0$clock;
+    reg  [56:0] kdy_r$1$d;
+    wire  [56:0] kdy_r$1$q;
+    reg  kdy_r$1$clock;
+    reg  [56:0] kdy_r$2$d;
+    wire  [56:0] kdy_r$2$q;
+    reg  kdy_r$2$clock;
+    reg  up_r$d;
+    wire  up_r$q;
+    reg  up_r$clock;
+    reg  [57:0] edx_r$0$d;
+    wire  [57:0] edx_r$0$q;
+    reg  edx_r$0$clock;
+    reg  [57:0] edx_r$1$d;
+    wire  [57:0] edx_r$1$q;
+    reg  edx_r$1$clock;
+    reg  [57:0] edx_r$2$d;
+    wire  [57:0] edx_r$2$q;
+    reg  edx_r$2$clock;
+    reg  [56:0] edy_r$0$d;
+    wire  [56:0] edy_r$0$q;
+    reg  edy_r$0$clock;
+    reg  [56:0] edy_r$1$d;
+    wire  [56:0] edy_r$1$q;
+    reg  edy_r$1$clock;
+    reg  [56:0] edy_r$2$d;
+    wire  [56:0] edy_r$2$q;
+    reg  edy_r$2$clock;
+    reg  [33:0] edy_d_r$0$d;
+    wire  [33:0] edy_d_r$0$q;
+    reg  edy_d_r$0$clock;
+    reg  [33:0] edy_d_r$1$d;
+    wire  [33:0] edy_d_r$1$q;
+    reg  edy_d_r$1$clock;
+    reg  [33:0] edy_d_r$2$d;
+    wire  [33:0] edy_d_r$2$q;
+    reg  edy_d_r$2$clock;
+    reg  [33:0] ed16_r$0$d;
+    wire  [33:0] ed16_r$0$q;
+    reg  ed16_r$0$clock;
+    reg  [33:0] ed16_r$1$d;
+    wire  [33:0] ed16_r$1$q;
+    reg  ed16_r$1$clock;
+    reg  [33:0] ed16_r$2$d;
+    wire  [33:0] ed16_r$2$q;
+    reg  ed16_r$2$clock;
+    reg  [18:0] cy_r$0$d;
+    wire  [18:0] cy_r$0$q;
+    reg  cy_r$0$clock;
+    reg  [18:0] cy_r$1$d;
+    wire  [18:0] cy_r$1$q;
+    reg  cy_r$1$clock;
+    reg  [18:0] cy_r$2$d;
+    wire  [18:0] cy_r$2$q;
+    reg  cy_r$2$clock;
+    reg  [12:0] count_r$0$d;
+    wire  [12:0] count_r$0$q;
+    reg  count_r$0$clock;
+    reg  [12:0] count_r$1$d;
+    wire  [12:0] count_r$1$q;
+    reg  count_r$1$clock;
+    reg  [12:0] count_r$2$d;
+    wire  [12:0] count_r$2$q;
+    reg  count_r$2$clock;
+    reg  [18:0] toff_r$0$d;
+    wire  [18:0] toff_r$0$q;
+    reg  toff_r$0$clock;
+    reg  [18:0] toff_r$1$d;
+    wire  [18:0] toff_r$1$q;
+    reg  toff_r$1$clock;
+    reg  [18:0] toff_r$2$d;
+    wire  [18:0] toff_r$2$q;
+    reg  toff_r$2$clock;
+    reg  [18:0] xf_r$0$d;
+    wire  [18:0] xf_r$0$q;
+    reg  xf_r$0$clock;
+    reg  [18:0] xf_r$1$d;
+    wire  [18:0] xf_r$1$q;
+    reg  xf_r$1$clock;
+    reg  [18:0] xf_r$2$d;
+    wire  [18:0] xf_r$2$q;
+    reg  xf_r$2$clock;
+    reg  [18:0] xi_r$0$d;
+    wire  [18:0] xi_r$0$q;
+    reg  xi_r$0$clock;
+    reg  [18:0] xi_r$1$d;
+    wire  [18:0] xi_r$1$q;
+    reg  xi_r$1$clock;
+    reg  [18:0] xi_r$2$d;
+    wire  [18:0] xi_r$2$q;
+    reg  xi_r$2$clock;
+    reg  [18:0] off_y_r$0$d;
+    wire  [18:0] off_y_r$0$q;
+    reg  off_y_r$0$clock;
+    reg  [18:0] off_y_r$1$d;
+    wire  [18:0] off_y_r$1$q;
+    reg  off_y_r$1$clock;
+    reg  [18:0] off_y_r$2$d;
+    wire  [18:0] off_y_r$2$q;
+    reg  off_y_r$2$clock;
+    reg  [18:0] dmaj_r$0$d;
+    wire  [18:0] dmaj_r$0$q;
+    reg  dmaj_r$0$clock;
+    reg  [18:0] dmaj_r$1$d;
+    wire  [18:0] dmaj_r$1$q;
+    reg  dmaj_r$1$clock;
+    reg  [18:0] dmaj_r$2$d;
+    wire  [18:0] dmaj_r$2$q;
+    reg  dmaj_r$2$clock;
+    reg  [18:0] dmaj_r$3$d;
+    wire  [18:0] dmaj_r$3$q;
+    reg  dmaj_r$3$clock;
+    reg  [18:0] dbot_r$0$d;
+    wire  [18:0] dbot_r$0$q;
+    reg  dbot_r$0$clock;
+    reg  [18:0] dbot_r$1$d;
+    wire  [18:0] dbot_r$1$q;
+    reg  dbot_r$1$clock;
+    reg  [18:0] dbot_r$2$d;
+    wire  [18:0] dbot_r$2$q;
+    reg  dbot_r$2$clock;
+    reg  [18:0] dbot_r$3$d;
+    wire  [18:0] dbot_r$3$q;
+    reg  dbot_r$3$clock;
+    reg  [39:0] attr0_r$0$d;
+    wire  [39:0] attr0_r$0$q;
+    reg  attr0_r$0$clock;
+    reg  [39:0] attr0_r$1$d;
+    wire  [39:0] attr0_r$1$q;
+    reg  attr0_r$1$clock;
+    reg  [39:0] attr0_r$2$d;
+    wire  [39:0] attr0_r$2$q;
+    reg  attr0_r$2$clock;
+    reg  [39:0] attr0_r$3$d;
+    wire  [39:0] attr0_r$3$q;
+    reg  attr0_r$3$clock;
+    reg  [18:0] xn0_r$d;
+    wire  [18:0] xn0_r$q;
+    reg  xn0_r$clock;
+    
     // Local signals
+    reg  [57:0] c_kdx$0;
+    reg  [57:0] c_kdx$1;
+    reg  [57:0] c_kdx$2;
+    reg  [56:0] c_kdy$0;
+    reg  [56:0] c_kdy$1;
+    reg  [56:0] c_kdy$2;
+    reg  c_up;
+    reg  [57:0] c_edx$0;
+    reg  [57:0] c_edx$1;
+    reg  [57:0] c_edx$2;
+    reg  [56:0] c_edy$0;
+    reg  [56:0] c_edy$1;
+    reg  [56:0] c_edy$2;
+    reg  [33:0] c_edy_d$0;
+    reg  [33:0] c_edy_d$1;
+    reg  [33:0] c_edy_d$2;
+    reg  [33:0] c_ed16$0;
+    reg  [33:0] c_ed16$1;
+    reg  [33:0] c_ed16$2;
+    reg  [18:0] c_cy$0;
+    reg  [18:0] c_cy$1;
+    reg  [18:0] c_cy$2;
+    reg  [12:0] c_count$0;
+    reg  [12:0] c_count$1;
+    reg  [12:0] c_count$2;
+    reg  [18:0] c_toff$0;
+    reg  [18:0] c_toff$1;
+    reg  [18:0] c_toff$2;
+    reg  [18:0] c_xf$0;
+    reg  [18:0] c_xf$1;
+    reg  [18:0] c_xf$2;
+    reg  [18:0] c_xi$0;
+    reg  [18:0] c_xi$1;
+    reg  [18:0] c_xi$2;
+    reg  [18:0] c_off_y$0;
+    reg  [18:0] c_off_y$1;
+    reg  [18:0] c_off_y$2;
+    reg  [18:0] c_dmaj$0;
+    reg  [18:0] c_dmaj$1;
+    reg  [18:0] c_dmaj$2;
+    reg  [18:0] c_dmaj$3;
+    reg  [18:0] c_dbot$0;
+    reg  [18:0] c_dbot$1;
+    reg  [18:0] c_dbot$2;
+    reg  [18:0] c_dbot$3;
+    reg  [39:0] c_attr0$0;
+    reg  [39:0] c_attr0$1;
+    reg  [39:0] c_attr0$2;
+    reg  [39:0] c_attr0$3;
     reg  [57:0] xw$0;
     reg  [57:0] xw$1;
     reg  [57:0] xw$2;
@@ -16660,6 +24356,258 @@ module triangle_setup$g1(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
     reg  [18:0] tracked$0;
     reg  [18:0] tracked$1;
     reg  [18:0] tracked$2;
+    
+    // Sub module instances
+    triangle_setup$g1$kdx_r$0 kdx_r$0(
+        .d(kdx_r$0$d),
+        .q(kdx_r$0$q),
+        .clock(kdx_r$0$clock)
+    );
+    triangle_setup$g1$kdx_r$1 kdx_r$1(
+        .d(kdx_r$1$d),
+        .q(kdx_r$1$q),
+        .clock(kdx_r$1$clock)
+    );
+    triangle_setup$g1$kdx_r$2 kdx_r$2(
+        .d(kdx_r$2$d),
+        .q(kdx_r$2$q),
+        .clock(kdx_r$2$clock)
+    );
+    triangle_setup$g1$kdy_r$0 kdy_r$0(
+        .d(kdy_r$0$d),
+        .q(kdy_r$0$q),
+        .clock(kdy_r$0$clock)
+    );
+    triangle_setup$g1$kdy_r$1 kdy_r$1(
+        .d(kdy_r$1$d),
+        .q(kdy_r$1$q),
+        .clock(kdy_r$1$clock)
+    );
+    triangle_setup$g1$kdy_r$2 kdy_r$2(
+        .d(kdy_r$2$d),
+        .q(kdy_r$2$q),
+        .clock(kdy_r$2$clock)
+    );
+    triangle_setup$g1$up_r up_r(
+        .d(up_r$d),
+        .q(up_r$q),
+        .clock(up_r$clock)
+    );
+    triangle_setup$g1$edx_r$0 edx_r$0(
+        .d(edx_r$0$d),
+        .q(edx_r$0$q),
+        .clock(edx_r$0$clock)
+    );
+    triangle_setup$g1$edx_r$1 edx_r$1(
+        .d(edx_r$1$d),
+        .q(edx_r$1$q),
+        .clock(edx_r$1$clock)
+    );
+    triangle_setup$g1$edx_r$2 edx_r$2(
+        .d(edx_r$2$d),
+        .q(edx_r$2$q),
+        .clock(edx_r$2$clock)
+    );
+    triangle_setup$g1$edy_r$0 edy_r$0(
+        .d(edy_r$0$d),
+        .q(edy_r$0$q),
+        .clock(edy_r$0$clock)
+    );
+    triangle_setup$g1$edy_r$1 edy_r$1(
+        .d(edy_r$1$d),
+        .q(edy_r$1$q),
+        .clock(edy_r$1$clock)
+    );
+    triangle_setup$g1$edy_r$2 edy_r$2(
+        .d(edy_r$2$d),
+        .q(edy_r$2$q),
+        .clock(edy_r$2$clock)
+    );
+    triangle_setup$g1$edy_d_r$0 edy_d_r$0(
+        .d(edy_d_r$0$d),
+        .q(edy_d_r$0$q),
+        .clock(edy_d_r$0$clock)
+    );
+    triangle_setup$g1$edy_d_r$1 edy_d_r$1(
+        .d(edy_d_r$1$d),
+        .q(edy_d_r$1$q),
+        .clock(edy_d_r$1$clock)
+    );
+    triangle_setup$g1$edy_d_r$2 edy_d_r$2(
+        .d(edy_d_r$2$d),
+        .q(edy_d_r$2$q),
+        .clock(edy_d_r$2$clock)
+    );
+    triangle_setup$g1$ed16_r$0 ed16_r$0(
+        .d(ed16_r$0$d),
+        .q(ed16_r$0$q),
+        .clock(ed16_r$0$clock)
+    );
+    triangle_setup$g1$ed16_r$1 ed16_r$1(
+        .d(ed16_r$1$d),
+        .q(ed16_r$1$q),
+        .clock(ed16_r$1$clock)
+    );
+    triangle_setup$g1$ed16_r$2 ed16_r$2(
+        .d(ed16_r$2$d),
+        .q(ed16_r$2$q),
+        .clock(ed16_r$2$clock)
+    );
+    triangle_setup$g1$cy_r$0 cy_r$0(
+        .d(cy_r$0$d),
+        .q(cy_r$0$q),
+        .clock(cy_r$0$clock)
+    );
+    triangle_setup$g1$cy_r$1 cy_r$1(
+        .d(cy_r$1$d),
+        .q(cy_r$1$q),
+        .clock(cy_r$1$clock)
+    );
+    triangle_setup$g1$cy_r$2 cy_r$2(
+        .d(cy_r$2$d),
+        .q(cy_r$2$q),
+        .clock(cy_r$2$clock)
+    );
+    triangle_setup$g1$count_r$0 count_r$0(
+        .d(count_r$0$d),
+        .q(count_r$0$q),
+        .clock(count_r$0$clock)
+    );
+    triangle_setup$g1$count_r$1 count_r$1(
+        .d(count_r$1$d),
+        .q(count_r$1$q),
+        .clock(count_r$1$clock)
+    );
+    triangle_setup$g1$count_r$2 count_r$2(
+        .d(count_r$2$d),
+        .q(count_r$2$q),
+        .clock(count_r$2$clock)
+    );
+    triangle_setup$g1$toff_r$0 toff_r$0(
+        .d(toff_r$0$d),
+        .q(toff_r$0$q),
+        .clock(toff_r$0$clock)
+    );
+    triangle_setup$g1$toff_r$1 toff_r$1(
+        .d(toff_r$1$d),
+        .q(toff_r$1$q),
+        .clock(toff_r$1$clock)
+    );
+    triangle_setup$g1$toff_r$2 toff_r$2(
+        .d(toff_r$2$d),
+        .q(toff_r$2$q),
+        .clock(toff_r$2$clock)
+    );
+    triangle_setup$g1$xf_r$0 xf_r$0(
+        .d(xf_r$0$d),
+        .q(xf_r$0$q),
+        .clock(xf_r$0$clock)
+    );
+    triangle_setup$g1$xf_r$1 xf_r$1(
+        .d(xf_r$1$d),
+        .q(xf_r$1$q),
+        .clock(xf_r$1$clock)
+    );
+    triangle_setup$g1$xf_r$2 xf_r$2(
+        .d(xf_r$2$d),
+        .q(xf_r$2$q),
+        .clock(xf_r$2$clock)
+    );
+    triangle_setup$g1$xi_r$0 xi_r$0(
+        .d(xi_r$0$d),
+        .q(xi_r$0$q),
+        .clock(xi_r$0$clock)
+    );
+    triangle_setup$g1$xi_r$1 xi_r$1(
+        .d(xi_r$1$d),
+        .q(xi_r$1$q),
+        .clock(xi_r$1$clock)
+    );
+    triangle_setup$g1$xi_r$2 xi_r$2(
+        .d(xi_r$2$d),
+        .q(xi_r$2$q),
+        .clock(xi_r$2$clock)
+    );
+    triangle_setup$g1$off_y_r$0 off_y_r$0(
+        .d(off_y_r$0$d),
+        .q(off_y_r$0$q),
+        .clock(off_y_r$0$clock)
+    );
+    triangle_setup$g1$off_y_r$1 off_y_r$1(
+        .d(off_y_r$1$d),
+        .q(off_y_r$1$q),
+        .clock(off_y_r$1$clock)
+    );
+    triangle_setup$g1$off_y_r$2 off_y_r$2(
+        .d(off_y_r$2$d),
+        .q(off_y_r$2$q),
+        .clock(off_y_r$2$clock)
+    );
+    triangle_setup$g1$dmaj_r$0 dmaj_r$0(
+        .d(dmaj_r$0$d),
+        .q(dmaj_r$0$q),
+        .clock(dmaj_r$0$clock)
+    );
+    triangle_setup$g1$dmaj_r$1 dmaj_r$1(
+        .d(dmaj_r$1$d),
+        .q(dmaj_r$1$q),
+        .clock(dmaj_r$1$clock)
+    );
+    triangle_setup$g1$dmaj_r$2 dmaj_r$2(
+        .d(dmaj_r$2$d),
+        .q(dmaj_r$2$q),
+        .clock(dmaj_r$2$clock)
+    );
+    triangle_setup$g1$dmaj_r$3 dmaj_r$3(
+        .d(dmaj_r$3$d),
+        .q(dmaj_r$3$q),
+        .clock(dmaj_r$3$clock)
+    );
+    triangle_setup$g1$dbot_r$0 dbot_r$0(
+        .d(dbot_r$0$d),
+        .q(dbot_r$0$q),
+        .clock(dbot_r$0$clock)
+    );
+    triangle_setup$g1$dbot_r$1 dbot_r$1(
+        .d(dbot_r$1$d),
+        .q(dbot_r$1$q),
+        .clock(dbot_r$1$clock)
+    );
+    triangle_setup$g1$dbot_r$2 dbot_r$2(
+        .d(dbot_r$2$d),
+        .q(dbot_r$2$q),
+        .clock(dbot_r$2$clock)
+    );
+    triangle_setup$g1$dbot_r$3 dbot_r$3(
+        .d(dbot_r$3$d),
+        .q(dbot_r$3$q),
+        .clock(dbot_r$3$clock)
+    );
+    triangle_setup$g1$attr0_r$0 attr0_r$0(
+        .d(attr0_r$0$d),
+        .q(attr0_r$0$q),
+        .clock(attr0_r$0$clock)
+    );
+    triangle_setup$g1$attr0_r$1 attr0_r$1(
+        .d(attr0_r$1$d),
+        .q(attr0_r$1$q),
+        .clock(attr0_r$1$clock)
+    );
+    triangle_setup$g1$attr0_r$2 attr0_r$2(
+        .d(attr0_r$2$d),
+        .q(attr0_r$2$q),
+        .clock(attr0_r$2$clock)
+    );
+    triangle_setup$g1$attr0_r$3 attr0_r$3(
+        .d(attr0_r$3$d),
+        .q(attr0_r$3$q),
+        .clock(attr0_r$3$clock)
+    );
+    triangle_setup$g1$xn0_r xn0_r(
+        .d(xn0_r$d),
+        .q(xn0_r$q),
+        .clock(xn0_r$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -16717,14 +24665,14 @@ module triangle_setup$g1(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
         xn$2 = xw$2[(32'h0)+:(19)];
         yn$2 = yw$2[(32'h0)+:(19)];
         cv$2 = ((yn$2 + half_m1) & int_mask) | half;
-        kdx$0 = xw$2 - xw$0;
-        kdy$0 = yw$2 - yw$0;
+        c_kdx$0 = xw$2 - xw$0;
+        c_kdy$0 = yw$2 - yw$0;
         diff$0 = cv$2 - cv$0;
-        kdx$1 = xw$1 - xw$0;
-        kdy$1 = yw$1 - yw$0;
+        c_kdx$1 = xw$1 - xw$0;
+        c_kdy$1 = yw$1 - yw$0;
         diff$1 = cv$1 - cv$0;
-        kdx$2 = xw$2 - xw$1;
-        kdy$2 = yw$2 - yw$1;
+        c_kdx$2 = xw$2 - xw$1;
+        c_kdy$2 = yw$2 - yw$1;
         diff$2 = cv$2 - cv$1;
         span$0 = diff$0[(frac)+:(13)];
         if (diff$0[nb_msb]) begin
@@ -16738,43 +24686,43 @@ module triangle_setup$g1(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
         if (diff$2[nb_msb]) begin
             span$2 = 32'h0;
         end
-        up = crosses[top_bit] & ~crosses[bottom_bit];
-        edx$0 = kdx$0;
-        edy$0 = kdy$0;
-        count$0 = span$0;
-        edx$1 = kdx$1;
-        edy$1 = kdy$1;
-        count$1 = span$1;
-        edx$2 = kdx$2;
-        edy$2 = kdy$2;
-        count$2 = span$2;
+        c_up = crosses[top_bit] & ~crosses[bottom_bit];
+        c_edx$0 = c_kdx$0;
+        c_edy$0 = c_kdy$0;
+        c_count$0 = span$0;
+        c_edx$1 = c_kdx$1;
+        c_edy$1 = c_kdy$1;
+        c_count$1 = span$1;
+        c_edx$2 = c_kdx$2;
+        c_edy$2 = c_kdy$2;
+        c_count$2 = span$2;
         bx$0 = xn$0;
         by$0 = yn$0;
-        cy$0 = cv$0;
+        c_cy$0 = cv$0;
         bx$1 = xn$0;
         by$1 = yn$0;
-        cy$1 = cv$0;
+        c_cy$1 = cv$0;
         bx$2 = xn$1;
         by$2 = yn$1;
-        cy$2 = cv$1;
-        if (up) begin
-            edx$1 = kdx$2;
-            edy$1 = kdy$2;
-            count$1 = span$2;
-            edx$2 = kdx$1;
-            edy$2 = kdy$1;
-            count$2 = span$1;
+        c_cy$2 = cv$1;
+        if (c_up) begin
+            c_edx$1 = c_kdx$2;
+            c_edy$1 = c_kdy$2;
+            c_count$1 = span$2;
+            c_edx$2 = c_kdx$1;
+            c_edy$2 = c_kdy$1;
+            c_count$2 = span$1;
             bx$0 = xn$2;
             by$0 = yn$2;
-            cy$0 = cv$2 - (frac_mask + 32'h1);
+            c_cy$0 = cv$2 - (frac_mask + 32'h1);
             bx$1 = xn$2;
             by$1 = yn$2;
-            cy$1 = cv$2 - (frac_mask + 32'h1);
-            cy$2 = cv$1 - (frac_mask + 32'h1);
+            c_cy$1 = cv$2 - (frac_mask + 32'h1);
+            c_cy$2 = cv$1 - (frac_mask + 32'h1);
         end
-        edy_d$0 = ((edy$0) & 34'h3ffffffff);
-        edy_d$1 = ((edy$1) & 34'h3ffffffff);
-        edy_d$2 = ((edy$2) & 34'h3ffffffff);
+        c_edy_d$0 = ((c_edy$0) & 34'h3ffffffff);
+        c_edy_d$1 = ((c_edy$1) & 34'h3ffffffff);
+        c_edy_d$2 = ((c_edy$2) & 34'h3ffffffff);
         tracked$0 = start_x$0 - 32'h1;
         if (maj_left) begin
             tracked$0 = start_x$0;
@@ -16787,56 +24735,1156 @@ module triangle_setup$g1(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
         if (maj_left) begin
             tracked$2 = start_x$2 - 32'h1;
         end
-        ed16$0 = edy_d$0 << frac;
-        toff$0 = cy$0 - by$0;
+        c_ed16$0 = c_edy_d$0 << frac;
+        c_toff$0 = c_cy$0 - by$0;
         xb$0 = bx$0 - half;
-        xf$0 = xb$0 & frac_mask;
-        xi$0 = xb$0 >> frac;
+        c_xf$0 = xb$0 & frac_mask;
+        c_xi$0 = xb$0 >> frac;
         if (xb$0[nb_msb]) begin
-            xi$0 = (xb$0 >> frac) | shr_ext;
+            c_xi$0 = (xb$0 >> frac) | shr_ext;
         end
-        off_y$0 = cy$0 - yn$0;
-        off_x$0 = (tracked$0 << frac) + half - xn$0;
-        ed16$1 = edy_d$1 << frac;
-        toff$1 = cy$1 - by$1;
+        c_off_y$0 = c_cy$0 - yn$0;
+        off_x$0 = (tracked$0 << frac) + half - xn0_r$q;
+        c_ed16$1 = c_edy_d$1 << frac;
+        c_toff$1 = c_cy$1 - by$1;
         xb$1 = bx$1 - half;
-        xf$1 = xb$1 & frac_mask;
-        xi$1 = xb$1 >> frac;
+        c_xf$1 = xb$1 & frac_mask;
+        c_xi$1 = xb$1 >> frac;
         if (xb$1[nb_msb]) begin
-            xi$1 = (xb$1 >> frac) | shr_ext;
+            c_xi$1 = (xb$1 >> frac) | shr_ext;
         end
-        off_y$1 = cy$1 - yn$0;
-        off_x$1 = (tracked$1 << frac) + half - xn$0;
-        ed16$2 = edy_d$2 << frac;
-        toff$2 = cy$2 - by$2;
+        c_off_y$1 = c_cy$1 - yn$0;
+        off_x$1 = (tracked$1 << frac) + half - xn0_r$q;
+        c_ed16$2 = c_edy_d$2 << frac;
+        c_toff$2 = c_cy$2 - by$2;
         xb$2 = bx$2 - half;
-        xf$2 = xb$2 & frac_mask;
-        xi$2 = xb$2 >> frac;
+        c_xf$2 = xb$2 & frac_mask;
+        c_xi$2 = xb$2 >> frac;
         if (xb$2[nb_msb]) begin
-            xi$2 = (xb$2 >> frac) | shr_ext;
+            c_xi$2 = (xb$2 >> frac) | shr_ext;
         end
-        off_y$2 = cy$2 - yn$0;
-        off_x$2 = (tracked$2 << frac) + half - xn$0;
-        dmaj$0 = zn$2 - zn$0;
-        dbot$0 = zn$1 - zn$0;
-        attr0$0 = ((zn$0) & 40'hffffffffff);
-        attr0$1 = ((vc$0) & 40'hffffffffff);
-        attr0$2 = ((vc$1) & 40'hffffffffff);
-        attr0$3 = ((vc$2) & 40'hffffffffff);
-        dmaj$1 = cn$6 - cn$0;
-        dbot$1 = cn$3 - cn$0;
-        dmaj$2 = cn$7 - cn$1;
-        dbot$2 = cn$4 - cn$1;
-        dmaj$3 = cn$8 - cn$2;
-        dbot$3 = cn$5 - cn$2;
+        c_off_y$2 = c_cy$2 - yn$0;
+        off_x$2 = (tracked$2 << frac) + half - xn0_r$q;
+        c_dmaj$0 = zn$2 - zn$0;
+        c_dbot$0 = zn$1 - zn$0;
+        c_attr0$0 = ((zn$0) & 40'hffffffffff);
+        c_attr0$1 = ((vc$0) & 40'hffffffffff);
+        c_attr0$2 = ((vc$1) & 40'hffffffffff);
+        c_attr0$3 = ((vc$2) & 40'hffffffffff);
+        c_dmaj$1 = cn$6 - cn$0;
+        c_dbot$1 = cn$3 - cn$0;
+        c_dmaj$2 = cn$7 - cn$1;
+        c_dbot$2 = cn$4 - cn$1;
+        c_dmaj$3 = cn$8 - cn$2;
+        c_dbot$3 = cn$5 - cn$2;
+        xn0_r$clock = clock;
+        xn0_r$d = xn$0;
+        kdx_r$0$clock = clock;
+        kdx_r$0$d = c_kdx$0;
+        kdx$0 = kdx_r$0$q;
+        kdx_r$1$clock = clock;
+        kdx_r$1$d = c_kdx$1;
+        kdx$1 = kdx_r$1$q;
+        kdx_r$2$clock = clock;
+        kdx_r$2$d = c_kdx$2;
+        kdx$2 = kdx_r$2$q;
+        kdy_r$0$clock = clock;
+        kdy_r$0$d = c_kdy$0;
+        kdy$0 = kdy_r$0$q;
+        kdy_r$1$clock = clock;
+        kdy_r$1$d = c_kdy$1;
+        kdy$1 = kdy_r$1$q;
+        kdy_r$2$clock = clock;
+        kdy_r$2$d = c_kdy$2;
+        kdy$2 = kdy_r$2$q;
+        up_r$clock = clock;
+        up_r$d = c_up;
+        up = up_r$q;
+        edx_r$0$clock = clock;
+        edx_r$0$d = c_edx$0;
+        edx$0 = edx_r$0$q;
+        edx_r$1$clock = clock;
+        edx_r$1$d = c_edx$1;
+        edx$1 = edx_r$1$q;
+        edx_r$2$clock = clock;
+        edx_r$2$d = c_edx$2;
+        edx$2 = edx_r$2$q;
+        edy_r$0$clock = clock;
+        edy_r$0$d = c_edy$0;
+        edy$0 = edy_r$0$q;
+        edy_r$1$clock = clock;
+        edy_r$1$d = c_edy$1;
+        edy$1 = edy_r$1$q;
+        edy_r$2$clock = clock;
+        edy_r$2$d = c_edy$2;
+        edy$2 = edy_r$2$q;
+        edy_d_r$0$clock = clock;
+        edy_d_r$0$d = c_edy_d$0;
+        edy_d$0 = edy_d_r$0$q;
+        edy_d_r$1$clock = clock;
+        edy_d_r$1$d = c_edy_d$1;
+        edy_d$1 = edy_d_r$1$q;
+        edy_d_r$2$clock = clock;
+        edy_d_r$2$d = c_edy_d$2;
+        edy_d$2 = edy_d_r$2$q;
+        ed16_r$0$clock = clock;
+        ed16_r$0$d = c_ed16$0;
+        ed16$0 = ed16_r$0$q;
+        ed16_r$1$clock = clock;
+        ed16_r$1$d = c_ed16$1;
+        ed16$1 = ed16_r$1$q;
+        ed16_r$2$clock = clock;
+        ed16_r$2$d = c_ed16$2;
+        ed16$2 = ed16_r$2$q;
+        cy_r$0$clock = clock;
+        cy_r$0$d = c_cy$0;
+        cy$0 = cy_r$0$q;
+        cy_r$1$clock = clock;
+        cy_r$1$d = c_cy$1;
+        cy$1 = cy_r$1$q;
+        cy_r$2$clock = clock;
+        cy_r$2$d = c_cy$2;
+        cy$2 = cy_r$2$q;
+        count_r$0$clock = clock;
+        count_r$0$d = c_count$0;
+        count$0 = count_r$0$q;
+        count_r$1$clock = clock;
+        count_r$1$d = c_count$1;
+        count$1 = count_r$1$q;
+        count_r$2$clock = clock;
+        count_r$2$d = c_count$2;
+        count$2 = count_r$2$q;
+        toff_r$0$clock = clock;
+        toff_r$0$d = c_toff$0;
+        toff$0 = toff_r$0$q;
+        toff_r$1$clock = clock;
+        toff_r$1$d = c_toff$1;
+        toff$1 = toff_r$1$q;
+        toff_r$2$clock = clock;
+        toff_r$2$d = c_toff$2;
+        toff$2 = toff_r$2$q;
+        xf_r$0$clock = clock;
+        xf_r$0$d = c_xf$0;
+        xf$0 = xf_r$0$q;
+        xf_r$1$clock = clock;
+        xf_r$1$d = c_xf$1;
+        xf$1 = xf_r$1$q;
+        xf_r$2$clock = clock;
+        xf_r$2$d = c_xf$2;
+        xf$2 = xf_r$2$q;
+        xi_r$0$clock = clock;
+        xi_r$0$d = c_xi$0;
+        xi$0 = xi_r$0$q;
+        xi_r$1$clock = clock;
+        xi_r$1$d = c_xi$1;
+        xi$1 = xi_r$1$q;
+        xi_r$2$clock = clock;
+        xi_r$2$d = c_xi$2;
+        xi$2 = xi_r$2$q;
+        off_y_r$0$clock = clock;
+        off_y_r$0$d = c_off_y$0;
+        off_y$0 = off_y_r$0$q;
+        off_y_r$1$clock = clock;
+        off_y_r$1$d = c_off_y$1;
+        off_y$1 = off_y_r$1$q;
+        off_y_r$2$clock = clock;
+        off_y_r$2$d = c_off_y$2;
+        off_y$2 = off_y_r$2$q;
+        dmaj_r$0$clock = clock;
+        dmaj_r$0$d = c_dmaj$0;
+        dmaj$0 = dmaj_r$0$q;
+        dmaj_r$1$clock = clock;
+        dmaj_r$1$d = c_dmaj$1;
+        dmaj$1 = dmaj_r$1$q;
+        dmaj_r$2$clock = clock;
+        dmaj_r$2$d = c_dmaj$2;
+        dmaj$2 = dmaj_r$2$q;
+        dmaj_r$3$clock = clock;
+        dmaj_r$3$d = c_dmaj$3;
+        dmaj$3 = dmaj_r$3$q;
+        dbot_r$0$clock = clock;
+        dbot_r$0$d = c_dbot$0;
+        dbot$0 = dbot_r$0$q;
+        dbot_r$1$clock = clock;
+        dbot_r$1$d = c_dbot$1;
+        dbot$1 = dbot_r$1$q;
+        dbot_r$2$clock = clock;
+        dbot_r$2$d = c_dbot$2;
+        dbot$2 = dbot_r$2$q;
+        dbot_r$3$clock = clock;
+        dbot_r$3$d = c_dbot$3;
+        dbot$3 = dbot_r$3$q;
+        attr0_r$0$clock = clock;
+        attr0_r$0$d = c_attr0$0;
+        attr0$0 = attr0_r$0$q;
+        attr0_r$1$clock = clock;
+        attr0_r$1$d = c_attr0$1;
+        attr0$1 = attr0_r$1$q;
+        attr0_r$2$clock = clock;
+        attr0_r$2$d = c_attr0$2;
+        attr0$2 = attr0_r$2$q;
+        attr0_r$3$clock = clock;
+        attr0_r$3$d = c_attr0$3;
+        attr0$3 = attr0_r$3$q;
     end
     
 endmodule // triangle_setup$g1
 
 
-module triangle_setup$g2(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module triangle_setup$g1$attr0_r$0(d,q,clock);
     
     // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$attr0_r$0
+
+
+module triangle_setup$g1$attr0_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$attr0_r$1
+
+
+module triangle_setup$g1$attr0_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$attr0_r$2
+
+
+module triangle_setup$g1$attr0_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$attr0_r$3
+
+
+module triangle_setup$g1$count_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$count_r$0
+
+
+module triangle_setup$g1$count_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$count_r$1
+
+
+module triangle_setup$g1$count_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$count_r$2
+
+
+module triangle_setup$g1$cy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$cy_r$0
+
+
+module triangle_setup$g1$cy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$cy_r$1
+
+
+module triangle_setup$g1$cy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$cy_r$2
+
+
+module triangle_setup$g1$dbot_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$dbot_r$0
+
+
+module triangle_setup$g1$dbot_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$dbot_r$1
+
+
+module triangle_setup$g1$dbot_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$dbot_r$2
+
+
+module triangle_setup$g1$dbot_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$dbot_r$3
+
+
+module triangle_setup$g1$dmaj_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$dmaj_r$0
+
+
+module triangle_setup$g1$dmaj_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$dmaj_r$1
+
+
+module triangle_setup$g1$dmaj_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$dmaj_r$2
+
+
+module triangle_setup$g1$dmaj_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$dmaj_r$3
+
+
+module triangle_setup$g1$ed16_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$ed16_r$0
+
+
+module triangle_setup$g1$ed16_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$ed16_r$1
+
+
+module triangle_setup$g1$ed16_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$ed16_r$2
+
+
+module triangle_setup$g1$edx_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$edx_r$0
+
+
+module triangle_setup$g1$edx_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$edx_r$1
+
+
+module triangle_setup$g1$edx_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$edx_r$2
+
+
+module triangle_setup$g1$edy_d_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$edy_d_r$0
+
+
+module triangle_setup$g1$edy_d_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$edy_d_r$1
+
+
+module triangle_setup$g1$edy_d_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$edy_d_r$2
+
+
+module triangle_setup$g1$edy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$edy_r$0
+
+
+module triangle_setup$g1$edy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$edy_r$1
+
+
+module triangle_setup$g1$edy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$edy_r$2
+
+
+module triangle_setup$g1$kdx_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$kdx_r$0
+
+
+module triangle_setup$g1$kdx_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$kdx_r$1
+
+
+module triangle_setup$g1$kdx_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$kdx_r$2
+
+
+module triangle_setup$g1$kdy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$kdy_r$0
+
+
+module triangle_setup$g1$kdy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$kdy_r$1
+
+
+module triangle_setup$g1$kdy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$kdy_r$2
+
+
+module triangle_setup$g1$off_y_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$off_y_r$0
+
+
+module triangle_setup$g1$off_y_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$off_y_r$1
+
+
+module triangle_setup$g1$off_y_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$off_y_r$2
+
+
+module triangle_setup$g1$toff_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$toff_r$0
+
+
+module triangle_setup$g1$toff_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$toff_r$1
+
+
+module triangle_setup$g1$toff_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$toff_r$2
+
+
+module triangle_setup$g1$up_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$up_r
+
+
+module triangle_setup$g1$xf_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$xf_r$0
+
+
+module triangle_setup$g1$xf_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$xf_r$1
+
+
+module triangle_setup$g1$xf_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$xf_r$2
+
+
+module triangle_setup$g1$xi_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$xi_r$0
+
+
+module triangle_setup$g1$xi_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$xi_r$1
+
+
+module triangle_setup$g1$xi_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$xi_r$2
+
+
+module triangle_setup$g1$xn0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g1$xn0_r
+
+
+module triangle_setup$g2(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] vx$0;
     input wire  [15:0] vx$1;
     input wire  [15:0] vx$2;
@@ -16929,7 +25977,208 @@ module triangle_setup$g2(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
     localparam  top_bit = 8'h2;
     localparam  bottom_bit = 8'h3;
     
+    // Stub signals
+    reg  [57:0] kdx_r$0$d;
+    wire  [57:0] kdx_r$0$q;
+    reg  kdx_r$0$clock;
+    reg  [57:0] kdx_r$1$d;
+    wire  [57:0] kdx_r$1$q;
+    reg  kdx_r$1$clock;
+    reg  [57:0] kdx_r$2$d;
+    wire  [57:0] kdx_r$2$q;
+    reg  kdx_r$2$clock;
+    reg  [56:0] kdy_r$0$d;
+    wire  [56:0] kdy_r$0$q;
+    reg  kdy_r$0$clock;
+    reg  [56:0] kdy_r$1$d;
+    wire  [56:0] kdy_r$1$q;
+    reg  kdy_r$1$clock;
+    reg  [56:0] kdy_r$2$d;
+    wire  [56:0] kdy_r$2$q;
+    reg  kdy_r$2$clock;
+    reg  up_r$d;
+    wire  up_r$q;
+    reg  up_r$clock;
+    reg  [57:0] edx_r$0$d;
+    wire  [57:0] edx_r$0$q;
+    reg  edx_r$0$clock;
+    reg  [57:0] edx_r$1$d;
+    wire  [57:0] edx_r$1$q;
+    reg  edx_r$1$clock;
+    reg  [57:0] edx_r$2$d;
+    wire  [57:0] edx_r$2$q;
+    reg  edx_r$2$clock;
+    reg  [56:0] edy_r$0$d;
+    wire  [56:0] edy_r$0$q;
+    reg  edy_r$0$clock;
+    reg  [56:0] edy_r$1$d;
+    wire  [56:0] edy_r$1$q;
+    reg  edy_r$1$clock;
+    reg  [56:0] edy_r$2$d;
+    wire  [56:0] edy_r$2$q;
+    reg  edy_r$2$clock;
+    reg  [33:0] edy_d_r$0$d;
+    wire  [33:0] edy_d_r$0$q;
+    reg  edy_d_r$0$clock;
+    reg  [33:0] edy_d_r$1$d;
+    wire  [33:0] edy_d_r$1$q;
+    reg  edy_d_r$1$clock;
+    reg  [33:0] edy_d_r$2$d;
+    wire  [33:0] edy_d_r$2$q;
+    reg  edy_d_r$2$clock;
+    reg  [33:0] ed16_r$0$d;
+    wire  [33:0] ed16_r$0$q;
+    reg  ed16_r$0$clock;
+    reg  [33:0] ed16_r$1$d;
+    wire  [33:0] ed16_r$1$q;
+    reg  ed16_r$1$clock;
+    reg  [33:0] ed16_r$2$d;
+    wire  [33:0] ed16_r$2$q;
+    reg  ed16_r$2$clock;
+    reg  [18:0] cy_r$0$d;
+    wire  [18:0] cy_r$0$q;
+    reg  cy_r$0$clock;
+    reg  [18:0] cy_r$1$d;
+    wire  [18:0] cy_r$1$q;
+    reg  cy_r$1$clock;
+    reg  [18:0] cy_r$2$d;
+    wire  [18:0] cy_r$2$q;
+    reg  cy_r$2$clock;
+    reg  [12:0] count_r$0$d;
+    wire  [12:0] count_r$0$q;
+    reg  count_r$0$clock;
+    reg  [12:0] count_r$1$d;
+    wire  [12:0] count_r$1$q;
+    reg  count_r$1$clock;
+    reg  [12:0] count_r$2$d;
+    wire  [12:0] count_r$2$q;
+    reg  count_r$2$clock;
+    reg  [18:0] toff_r$0$d;
+    wire  [18:0] toff_r$0$q;
+    reg  toff_r$0$clock;
+    reg  [18:0] toff_r$1$d;
+    wire  [18:0] toff_r$1$q;
+    reg  toff_r$1$clock;
+    reg  [18:0] toff_r$2$d;
+    wire  [18:0] toff_r$2$q;
+    reg  toff_r$2$clock;
+    reg  [18:0] xf_r$0$d;
+    wire  [18:0] xf_r$0$q;
+    reg  xf_r$0$clock;
+    reg  [18:0] xf_r$1$d;
+    wire  [18:0] xf_r$1$q;
+    reg  xf_r$1$clock;
+    reg  [18:0] xf_r$2$d;
+    wire  [18:0] xf_r$2$q;
+    reg  xf_r$2$clock;
+    reg  [18:0] xi_r$0$d;
+    wire  [18:0] xi_r$0$q;
+    reg  xi_r$0$clock;
+    reg  [18:0] xi_r$1$d;
+    wire  [18:0] xi_r$1$q;
+    reg  xi_r$1$clock;
+    reg  [18:0] xi_r$2$d;
+    wire  [18:0] xi_r$2$q;
+    reg  xi_r$2$clock;
+    reg  [18:0] off_y_r$0$d;
+    wire  [18:0] off_y_r$0$q;
+    reg  off_y_r$0$clock;
+    reg  [18:0] off_y_r$1$d;
+    wire  [18:0] off_y_r$1$q;
+    reg  off_y_r$1$clock;
+    reg  [18:0] off_y_r$2$d;
+    wire  [18:0] off_y_r$2$q;
+    reg  off_y_r$2$clock;
+    reg  [18:0] dmaj_r$0$d;
+    wire  [18:0] dmaj_r$0$q;
+    reg  dmaj_r$0$clock;
+    reg  [18:0] dmaj_r$1$d;
+    wire  [18:0] dmaj_r$1$q;
+    reg  dmaj_r$1$clock;
+    reg  [18:0] dmaj_r$2$d;
+    wire  [18:0] dmaj_r$2$q;
+    reg  dmaj_r$2$clock;
+    reg  [18:0] dmaj_r$3$d;
+    wire  [18:0] dmaj_r$3$q;
+    reg  dmaj_r$3$clock;
+    reg  [18:0] dbot_r$0$d;
+    wire  [18:0] dbot_r$0$q;
+    reg  dbot_r$0$clock;
+    reg  [18:0] dbot_r$1$d;
+    wire  [18:0] dbot_r$1$q;
+    reg  dbot_r$1$clock;
+    reg  [18:0] dbot_r$2$d;
+    wire  [18:0] dbot_r$2$q;
+    reg  dbot_r$2$clock;
+    reg  [18:0] dbot_r$3$d;
+    wire  [18:0] dbot_r$3$q;
+    reg  dbot_r$3$clock;
+    reg  [39:0] attr0_r$0$d;
+    wire  [39:0] attr0_r$0$q;
+    reg  attr0_r$0$clock;
+    reg  [39:0] attr0_r$1$d;
+    wire  [39:0] attr0_r$1$q;
+    reg  attr0_r$1$clock;
+    reg  [39:0] attr0_r$2$d;
+    wire  [39:0] attr0_r$2$q;
+    reg  attr0_r$2$clock;
+    reg  [39:0] attr0_r$3$d;
+    wire  [39:0] attr0_r$3$q;
+    reg  attr0_r$3$clock;
+    reg  [18:0] xn0_r$d;
+    wire  [18:0] xn0_r$q;
+    reg  xn0_r$clock;
+    
     // Local signals
+    reg  [57:0] c_kdx$0;
+    reg  [57:0] c_kdx$1;
+    reg  [57:0] c_kdx$2;
+    reg  [56:0] c_kdy$0;
+    reg  [56:0] c_kdy$1;
+    reg  [56:0] c_kdy$2;
+    reg  c_up;
+    reg  [57:0] c_edx$0;
+    reg  [57:0] c_edx$1;
+    reg  [57:0] c_edx$2;
+    reg  [56:0] c_edy$0;
+    reg  [56:0] c_edy$1;
+    reg  [56:0] c_edy$2;
+    reg  [33:0] c_edy_d$0;
+    reg  [33:0] c_edy_d$1;
+    reg  [33:0] c_edy_d$2;
+    reg  [33:0] c_ed16$0;
+    reg  [33:0] c_ed16$1;
+    reg  [33:0] c_ed16$2;
+    reg  [18:0] c_cy$0;
+    reg  [18:0] c_cy$1;
+    reg  [18:0] c_cy$2;
+    reg  [12:0] c_count$0;
+    reg  [12:0] c_count$1;
+    reg  [12:0] c_count$2;
+    reg  [18:0] c_toff$0;
+    reg  [18:0] c_toff$1;
+    reg  [18:0] c_toff$2;
+    reg  [18:0] c_xf$0;
+    reg  [18:0] c_xf$1;
+    reg  [18:0] c_xf$2;
+    reg  [18:0] c_xi$0;
+    reg  [18:0] c_xi$1;
+    reg  [18:0] c_xi$2;
+    reg  [18:0] c_off_y$0;
+    reg  [18:0] c_off_y$1;
+    reg  [18:0] c_off_y$2;
+    reg  [18:0] c_dmaj$0;
+    reg  [18:0] c_dmaj$1;
+    reg  [18:0] c_dmaj$2;
+    reg  [18:0] c_dmaj$3;
+    reg  [18:0] c_dbot$0;
+    reg  [18:0] c_dbot$1;
+    reg  [18:0] c_dbot$2;
+    reg  [18:0] c_dbot$3;
+    reg  [39:0] c_attr0$0;
+    reg  [39:0] c_attr0$1;
+    reg  [39:0] c_attr0$2;
+    reg  [39:0] c_attr0$3;
     reg  [57:0] xw$0;
     reg  [57:0] xw$1;
     reg  [57:0] xw$2;
@@ -16975,6 +26224,258 @@ module triangle_setup$g2(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
     reg  [18:0] tracked$0;
     reg  [18:0] tracked$1;
     reg  [18:0] tracked$2;
+    
+    // Sub module instances
+    triangle_setup$g2$kdx_r$0 kdx_r$0(
+        .d(kdx_r$0$d),
+        .q(kdx_r$0$q),
+        .clock(kdx_r$0$clock)
+    );
+    triangle_setup$g2$kdx_r$1 kdx_r$1(
+        .d(kdx_r$1$d),
+        .q(kdx_r$1$q),
+        .clock(kdx_r$1$clock)
+    );
+    triangle_setup$g2$kdx_r$2 kdx_r$2(
+        .d(kdx_r$2$d),
+        .q(kdx_r$2$q),
+        .clock(kdx_r$2$clock)
+    );
+    triangle_setup$g2$kdy_r$0 kdy_r$0(
+        .d(kdy_r$0$d),
+        .q(kdy_r$0$q),
+        .clock(kdy_r$0$clock)
+    );
+    triangle_setup$g2$kdy_r$1 kdy_r$1(
+        .d(kdy_r$1$d),
+        .q(kdy_r$1$q),
+        .clock(kdy_r$1$clock)
+    );
+    triangle_setup$g2$kdy_r$2 kdy_r$2(
+        .d(kdy_r$2$d),
+        .q(kdy_r$2$q),
+        .clock(kdy_r$2$clock)
+    );
+    triangle_setup$g2$up_r up_r(
+        .d(up_r$d),
+        .q(up_r$q),
+        .clock(up_r$clock)
+    );
+    triangle_setup$g2$edx_r$0 edx_r$0(
+        .d(edx_r$0$d),
+        .q(edx_r$0$q),
+        .clock(edx_r$0$clock)
+    );
+    triangle_setup$g2$edx_r$1 edx_r$1(
+        .d(edx_r$1$d),
+        .q(edx_r$1$q),
+        .clock(edx_r$1$clock)
+    );
+    triangle_setup$g2$edx_r$2 edx_r$2(
+        .d(edx_r$2$d),
+        .q(edx_r$2$q),
+        .clock(edx_r$2$clock)
+    );
+    triangle_setup$g2$edy_r$0 edy_r$0(
+        .d(edy_r$0$d),
+        .q(edy_r$0$q),
+        .clock(edy_r$0$clock)
+    );
+    triangle_setup$g2$edy_r$1 edy_r$1(
+        .d(edy_r$1$d),
+        .q(edy_r$1$q),
+        .clock(edy_r$1$clock)
+    );
+    triangle_setup$g2$edy_r$2 edy_r$2(
+        .d(edy_r$2$d),
+        .q(edy_r$2$q),
+        .clock(edy_r$2$clock)
+    );
+    triangle_setup$g2$edy_d_r$0 edy_d_r$0(
+        .d(edy_d_r$0$d),
+        .q(edy_d_r$0$q),
+        .clock(edy_d_r$0$clock)
+    );
+    triangle_setup$g2$edy_d_r$1 edy_d_r$1(
+        .d(edy_d_r$1$d),
+        .q(edy_d_r$1$q),
+        .clock(edy_d_r$1$clock)
+    );
+    triangle_setup$g2$edy_d_r$2 edy_d_r$2(
+        .d(edy_d_r$2$d),
+        .q(edy_d_r$2$q),
+        .clock(edy_d_r$2$clock)
+    );
+    triangle_setup$g2$ed16_r$0 ed16_r$0(
+        .d(ed16_r$0$d),
+        .q(ed16_r$0$q),
+        .clock(ed16_r$0$clock)
+    );
+    triangle_setup$g2$ed16_r$1 ed16_r$1(
+        .d(ed16_r$1$d),
+        .q(ed16_r$1$q),
+        .clock(ed16_r$1$clock)
+    );
+    triangle_setup$g2$ed16_r$2 ed16_r$2(
+        .d(ed16_r$2$d),
+        .q(ed16_r$2$q),
+        .clock(ed16_r$2$clock)
+    );
+    triangle_setup$g2$cy_r$0 cy_r$0(
+        .d(cy_r$0$d),
+        .q(cy_r$0$q),
+        .clock(cy_r$0$clock)
+    );
+    triangle_setup$g2$cy_r$1 cy_r$1(
+        .d(cy_r$1$d),
+        .q(cy_r$1$q),
+        .clock(cy_r$1$clock)
+    );
+    triangle_setup$g2$cy_r$2 cy_r$2(
+        .d(cy_r$2$d),
+        .q(cy_r$2$q),
+        .clock(cy_r$2$clock)
+    );
+    triangle_setup$g2$count_r$0 count_r$0(
+        .d(count_r$0$d),
+        .q(count_r$0$q),
+        .clock(count_r$0$clock)
+    );
+    triangle_setup$g2$count_r$1 count_r$1(
+        .d(count_r$1$d),
+        .q(count_r$1$q),
+        .clock(count_r$1$clock)
+    );
+    triangle_setup$g2$count_r$2 count_r$2(
+        .d(count_r$2$d),
+        .q(count_r$2$q),
+        .clock(count_r$2$clock)
+    );
+    triangle_setup$g2$toff_r$0 toff_r$0(
+        .d(toff_r$0$d),
+        .q(toff_r$0$q),
+        .clock(toff_r$0$clock)
+    );
+    triangle_setup$g2$toff_r$1 toff_r$1(
+        .d(toff_r$1$d),
+        .q(toff_r$1$q),
+        .clock(toff_r$1$clock)
+    );
+    triangle_setup$g2$toff_r$2 toff_r$2(
+        .d(toff_r$2$d),
+        .q(toff_r$2$q),
+        .clock(toff_r$2$clock)
+    );
+    triangle_setup$g2$xf_r$0 xf_r$0(
+        .d(xf_r$0$d),
+        .q(xf_r$0$q),
+        .clock(xf_r$0$clock)
+    );
+    triangle_setup$g2$xf_r$1 xf_r$1(
+        .d(xf_r$1$d),
+        .q(xf_r$1$q),
+        .clock(xf_r$1$clock)
+    );
+    triangle_setup$g2$xf_r$2 xf_r$2(
+        .d(xf_r$2$d),
+        .q(xf_r$2$q),
+        .clock(xf_r$2$clock)
+    );
+    triangle_setup$g2$xi_r$0 xi_r$0(
+        .d(xi_r$0$d),
+        .q(xi_r$0$q),
+        .clock(xi_r$0$clock)
+    );
+    triangle_setup$g2$xi_r$1 xi_r$1(
+        .d(xi_r$1$d),
+        .q(xi_r$1$q),
+        .clock(xi_r$1$clock)
+    );
+    triangle_setup$g2$xi_r$2 xi_r$2(
+        .d(xi_r$2$d),
+        .q(xi_r$2$q),
+        .clock(xi_r$2$clock)
+    );
+    triangle_setup$g2$off_y_r$0 off_y_r$0(
+        .d(off_y_r$0$d),
+        .q(off_y_r$0$q),
+        .clock(off_y_r$0$clock)
+    );
+    triangle_setup$g2$off_y_r$1 off_y_r$1(
+        .d(off_y_r$1$d),
+        .q(off_y_r$1$q),
+        .clock(off_y_r$1$clock)
+    );
+    triangle_setup$g2$off_y_r$2 off_y_r$2(
+        .d(off_y_r$2$d),
+        .q(off_y_r$2$q),
+        .clock(off_y_r$2$clock)
+    );
+    triangle_setup$g2$dmaj_r$0 dmaj_r$0(
+        .d(dmaj_r$0$d),
+        .q(dmaj_r$0$q),
+        .clock(dmaj_r$0$clock)
+    );
+    triangle_setup$g2$dmaj_r$1 dmaj_r$1(
+        .d(dmaj_r$1$d),
+        .q(dmaj_r$1$q),
+        .clock(dmaj_r$1$clock)
+    );
+    triangle_setup$g2$dmaj_r$2 dmaj_r$2(
+        .d(dmaj_r$2$d),
+        .q(dmaj_r$2$q),
+        .clock(dmaj_r$2$clock)
+    );
+    triangle_setup$g2$dmaj_r$3 dmaj_r$3(
+        .d(dmaj_r$3$d),
+        .q(dmaj_r$3$q),
+        .clock(dmaj_r$3$clock)
+    );
+    triangle_setup$g2$dbot_r$0 dbot_r$0(
+        .d(dbot_r$0$d),
+        .q(dbot_r$0$q),
+        .clock(dbot_r$0$clock)
+    );
+    triangle_setup$g2$dbot_r$1 dbot_r$1(
+        .d(dbot_r$1$d),
+        .q(dbot_r$1$q),
+        .clock(dbot_r$1$clock)
+    );
+    triangle_setup$g2$dbot_r$2 dbot_r$2(
+        .d(dbot_r$2$d),
+        .q(dbot_r$2$q),
+        .clock(dbot_r$2$clock)
+    );
+    triangle_setup$g2$dbot_r$3 dbot_r$3(
+        .d(dbot_r$3$d),
+        .q(dbot_r$3$q),
+        .clock(dbot_r$3$clock)
+    );
+    triangle_setup$g2$attr0_r$0 attr0_r$0(
+        .d(attr0_r$0$d),
+        .q(attr0_r$0$q),
+        .clock(attr0_r$0$clock)
+    );
+    triangle_setup$g2$attr0_r$1 attr0_r$1(
+        .d(attr0_r$1$d),
+        .q(attr0_r$1$q),
+        .clock(attr0_r$1$clock)
+    );
+    triangle_setup$g2$attr0_r$2 attr0_r$2(
+        .d(attr0_r$2$d),
+        .q(attr0_r$2$q),
+        .clock(attr0_r$2$clock)
+    );
+    triangle_setup$g2$attr0_r$3 attr0_r$3(
+        .d(attr0_r$3$d),
+        .q(attr0_r$3$q),
+        .clock(attr0_r$3$clock)
+    );
+    triangle_setup$g2$xn0_r xn0_r(
+        .d(xn0_r$d),
+        .q(xn0_r$q),
+        .clock(xn0_r$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -17032,14 +26533,14 @@ module triangle_setup$g2(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
         xn$2 = xw$2[(32'h0)+:(19)];
         yn$2 = yw$2[(32'h0)+:(19)];
         cv$2 = ((yn$2 + half_m1) & int_mask) | half;
-        kdx$0 = xw$2 - xw$0;
-        kdy$0 = yw$2 - yw$0;
+        c_kdx$0 = xw$2 - xw$0;
+        c_kdy$0 = yw$2 - yw$0;
         diff$0 = cv$2 - cv$0;
-        kdx$1 = xw$1 - xw$0;
-        kdy$1 = yw$1 - yw$0;
+        c_kdx$1 = xw$1 - xw$0;
+        c_kdy$1 = yw$1 - yw$0;
         diff$1 = cv$1 - cv$0;
-        kdx$2 = xw$2 - xw$1;
-        kdy$2 = yw$2 - yw$1;
+        c_kdx$2 = xw$2 - xw$1;
+        c_kdy$2 = yw$2 - yw$1;
         diff$2 = cv$2 - cv$1;
         span$0 = diff$0[(frac)+:(13)];
         if (diff$0[nb_msb]) begin
@@ -17053,43 +26554,43 @@ module triangle_setup$g2(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
         if (diff$2[nb_msb]) begin
             span$2 = 32'h0;
         end
-        up = crosses[top_bit] & ~crosses[bottom_bit];
-        edx$0 = kdx$0;
-        edy$0 = kdy$0;
-        count$0 = span$0;
-        edx$1 = kdx$1;
-        edy$1 = kdy$1;
-        count$1 = span$1;
-        edx$2 = kdx$2;
-        edy$2 = kdy$2;
-        count$2 = span$2;
+        c_up = crosses[top_bit] & ~crosses[bottom_bit];
+        c_edx$0 = c_kdx$0;
+        c_edy$0 = c_kdy$0;
+        c_count$0 = span$0;
+        c_edx$1 = c_kdx$1;
+        c_edy$1 = c_kdy$1;
+        c_count$1 = span$1;
+        c_edx$2 = c_kdx$2;
+        c_edy$2 = c_kdy$2;
+        c_count$2 = span$2;
         bx$0 = xn$0;
         by$0 = yn$0;
-        cy$0 = cv$0;
+        c_cy$0 = cv$0;
         bx$1 = xn$0;
         by$1 = yn$0;
-        cy$1 = cv$0;
+        c_cy$1 = cv$0;
         bx$2 = xn$1;
         by$2 = yn$1;
-        cy$2 = cv$1;
-        if (up) begin
-            edx$1 = kdx$2;
-            edy$1 = kdy$2;
-            count$1 = span$2;
-            edx$2 = kdx$1;
-            edy$2 = kdy$1;
-            count$2 = span$1;
+        c_cy$2 = cv$1;
+        if (c_up) begin
+            c_edx$1 = c_kdx$2;
+            c_edy$1 = c_kdy$2;
+            c_count$1 = span$2;
+            c_edx$2 = c_kdx$1;
+            c_edy$2 = c_kdy$1;
+            c_count$2 = span$1;
             bx$0 = xn$2;
             by$0 = yn$2;
-            cy$0 = cv$2 - (frac_mask + 32'h1);
+            c_cy$0 = cv$2 - (frac_mask + 32'h1);
             bx$1 = xn$2;
             by$1 = yn$2;
-            cy$1 = cv$2 - (frac_mask + 32'h1);
-            cy$2 = cv$1 - (frac_mask + 32'h1);
+            c_cy$1 = cv$2 - (frac_mask + 32'h1);
+            c_cy$2 = cv$1 - (frac_mask + 32'h1);
         end
-        edy_d$0 = ((edy$0) & 34'h3ffffffff);
-        edy_d$1 = ((edy$1) & 34'h3ffffffff);
-        edy_d$2 = ((edy$2) & 34'h3ffffffff);
+        c_edy_d$0 = ((c_edy$0) & 34'h3ffffffff);
+        c_edy_d$1 = ((c_edy$1) & 34'h3ffffffff);
+        c_edy_d$2 = ((c_edy$2) & 34'h3ffffffff);
         tracked$0 = start_x$0 - 32'h1;
         if (maj_left) begin
             tracked$0 = start_x$0;
@@ -17102,56 +26603,1156 @@ module triangle_setup$g2(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
         if (maj_left) begin
             tracked$2 = start_x$2 - 32'h1;
         end
-        ed16$0 = edy_d$0 << frac;
-        toff$0 = cy$0 - by$0;
+        c_ed16$0 = c_edy_d$0 << frac;
+        c_toff$0 = c_cy$0 - by$0;
         xb$0 = bx$0 - half;
-        xf$0 = xb$0 & frac_mask;
-        xi$0 = xb$0 >> frac;
+        c_xf$0 = xb$0 & frac_mask;
+        c_xi$0 = xb$0 >> frac;
         if (xb$0[nb_msb]) begin
-            xi$0 = (xb$0 >> frac) | shr_ext;
+            c_xi$0 = (xb$0 >> frac) | shr_ext;
         end
-        off_y$0 = cy$0 - yn$0;
-        off_x$0 = (tracked$0 << frac) + half - xn$0;
-        ed16$1 = edy_d$1 << frac;
-        toff$1 = cy$1 - by$1;
+        c_off_y$0 = c_cy$0 - yn$0;
+        off_x$0 = (tracked$0 << frac) + half - xn0_r$q;
+        c_ed16$1 = c_edy_d$1 << frac;
+        c_toff$1 = c_cy$1 - by$1;
         xb$1 = bx$1 - half;
-        xf$1 = xb$1 & frac_mask;
-        xi$1 = xb$1 >> frac;
+        c_xf$1 = xb$1 & frac_mask;
+        c_xi$1 = xb$1 >> frac;
         if (xb$1[nb_msb]) begin
-            xi$1 = (xb$1 >> frac) | shr_ext;
+            c_xi$1 = (xb$1 >> frac) | shr_ext;
         end
-        off_y$1 = cy$1 - yn$0;
-        off_x$1 = (tracked$1 << frac) + half - xn$0;
-        ed16$2 = edy_d$2 << frac;
-        toff$2 = cy$2 - by$2;
+        c_off_y$1 = c_cy$1 - yn$0;
+        off_x$1 = (tracked$1 << frac) + half - xn0_r$q;
+        c_ed16$2 = c_edy_d$2 << frac;
+        c_toff$2 = c_cy$2 - by$2;
         xb$2 = bx$2 - half;
-        xf$2 = xb$2 & frac_mask;
-        xi$2 = xb$2 >> frac;
+        c_xf$2 = xb$2 & frac_mask;
+        c_xi$2 = xb$2 >> frac;
         if (xb$2[nb_msb]) begin
-            xi$2 = (xb$2 >> frac) | shr_ext;
+            c_xi$2 = (xb$2 >> frac) | shr_ext;
         end
-        off_y$2 = cy$2 - yn$0;
-        off_x$2 = (tracked$2 << frac) + half - xn$0;
-        dmaj$0 = zn$2 - zn$0;
-        dbot$0 = zn$1 - zn$0;
-        attr0$0 = ((zn$0) & 40'hffffffffff);
-        attr0$1 = ((vc$0) & 40'hffffffffff);
-        attr0$2 = ((vc$1) & 40'hffffffffff);
-        attr0$3 = ((vc$2) & 40'hffffffffff);
-        dmaj$1 = cn$6 - cn$0;
-        dbot$1 = cn$3 - cn$0;
-        dmaj$2 = cn$7 - cn$1;
-        dbot$2 = cn$4 - cn$1;
-        dmaj$3 = cn$8 - cn$2;
-        dbot$3 = cn$5 - cn$2;
+        c_off_y$2 = c_cy$2 - yn$0;
+        off_x$2 = (tracked$2 << frac) + half - xn0_r$q;
+        c_dmaj$0 = zn$2 - zn$0;
+        c_dbot$0 = zn$1 - zn$0;
+        c_attr0$0 = ((zn$0) & 40'hffffffffff);
+        c_attr0$1 = ((vc$0) & 40'hffffffffff);
+        c_attr0$2 = ((vc$1) & 40'hffffffffff);
+        c_attr0$3 = ((vc$2) & 40'hffffffffff);
+        c_dmaj$1 = cn$6 - cn$0;
+        c_dbot$1 = cn$3 - cn$0;
+        c_dmaj$2 = cn$7 - cn$1;
+        c_dbot$2 = cn$4 - cn$1;
+        c_dmaj$3 = cn$8 - cn$2;
+        c_dbot$3 = cn$5 - cn$2;
+        xn0_r$clock = clock;
+        xn0_r$d = xn$0;
+        kdx_r$0$clock = clock;
+        kdx_r$0$d = c_kdx$0;
+        kdx$0 = kdx_r$0$q;
+        kdx_r$1$clock = clock;
+        kdx_r$1$d = c_kdx$1;
+        kdx$1 = kdx_r$1$q;
+        kdx_r$2$clock = clock;
+        kdx_r$2$d = c_kdx$2;
+        kdx$2 = kdx_r$2$q;
+        kdy_r$0$clock = clock;
+        kdy_r$0$d = c_kdy$0;
+        kdy$0 = kdy_r$0$q;
+        kdy_r$1$clock = clock;
+        kdy_r$1$d = c_kdy$1;
+        kdy$1 = kdy_r$1$q;
+        kdy_r$2$clock = clock;
+        kdy_r$2$d = c_kdy$2;
+        kdy$2 = kdy_r$2$q;
+        up_r$clock = clock;
+        up_r$d = c_up;
+        up = up_r$q;
+        edx_r$0$clock = clock;
+        edx_r$0$d = c_edx$0;
+        edx$0 = edx_r$0$q;
+        edx_r$1$clock = clock;
+        edx_r$1$d = c_edx$1;
+        edx$1 = edx_r$1$q;
+        edx_r$2$clock = clock;
+        edx_r$2$d = c_edx$2;
+        edx$2 = edx_r$2$q;
+        edy_r$0$clock = clock;
+        edy_r$0$d = c_edy$0;
+        edy$0 = edy_r$0$q;
+        edy_r$1$clock = clock;
+        edy_r$1$d = c_edy$1;
+        edy$1 = edy_r$1$q;
+        edy_r$2$clock = clock;
+        edy_r$2$d = c_edy$2;
+        edy$2 = edy_r$2$q;
+        edy_d_r$0$clock = clock;
+        edy_d_r$0$d = c_edy_d$0;
+        edy_d$0 = edy_d_r$0$q;
+        edy_d_r$1$clock = clock;
+        edy_d_r$1$d = c_edy_d$1;
+        edy_d$1 = edy_d_r$1$q;
+        edy_d_r$2$clock = clock;
+        edy_d_r$2$d = c_edy_d$2;
+        edy_d$2 = edy_d_r$2$q;
+        ed16_r$0$clock = clock;
+        ed16_r$0$d = c_ed16$0;
+        ed16$0 = ed16_r$0$q;
+        ed16_r$1$clock = clock;
+        ed16_r$1$d = c_ed16$1;
+        ed16$1 = ed16_r$1$q;
+        ed16_r$2$clock = clock;
+        ed16_r$2$d = c_ed16$2;
+        ed16$2 = ed16_r$2$q;
+        cy_r$0$clock = clock;
+        cy_r$0$d = c_cy$0;
+        cy$0 = cy_r$0$q;
+        cy_r$1$clock = clock;
+        cy_r$1$d = c_cy$1;
+        cy$1 = cy_r$1$q;
+        cy_r$2$clock = clock;
+        cy_r$2$d = c_cy$2;
+        cy$2 = cy_r$2$q;
+        count_r$0$clock = clock;
+        count_r$0$d = c_count$0;
+        count$0 = count_r$0$q;
+        count_r$1$clock = clock;
+        count_r$1$d = c_count$1;
+        count$1 = count_r$1$q;
+        count_r$2$clock = clock;
+        count_r$2$d = c_count$2;
+        count$2 = count_r$2$q;
+        toff_r$0$clock = clock;
+        toff_r$0$d = c_toff$0;
+        toff$0 = toff_r$0$q;
+        toff_r$1$clock = clock;
+        toff_r$1$d = c_toff$1;
+        toff$1 = toff_r$1$q;
+        toff_r$2$clock = clock;
+        toff_r$2$d = c_toff$2;
+        toff$2 = toff_r$2$q;
+        xf_r$0$clock = clock;
+        xf_r$0$d = c_xf$0;
+        xf$0 = xf_r$0$q;
+        xf_r$1$clock = clock;
+        xf_r$1$d = c_xf$1;
+        xf$1 = xf_r$1$q;
+        xf_r$2$clock = clock;
+        xf_r$2$d = c_xf$2;
+        xf$2 = xf_r$2$q;
+        xi_r$0$clock = clock;
+        xi_r$0$d = c_xi$0;
+        xi$0 = xi_r$0$q;
+        xi_r$1$clock = clock;
+        xi_r$1$d = c_xi$1;
+        xi$1 = xi_r$1$q;
+        xi_r$2$clock = clock;
+        xi_r$2$d = c_xi$2;
+        xi$2 = xi_r$2$q;
+        off_y_r$0$clock = clock;
+        off_y_r$0$d = c_off_y$0;
+        off_y$0 = off_y_r$0$q;
+        off_y_r$1$clock = clock;
+        off_y_r$1$d = c_off_y$1;
+        off_y$1 = off_y_r$1$q;
+        off_y_r$2$clock = clock;
+        off_y_r$2$d = c_off_y$2;
+        off_y$2 = off_y_r$2$q;
+        dmaj_r$0$clock = clock;
+        dmaj_r$0$d = c_dmaj$0;
+        dmaj$0 = dmaj_r$0$q;
+        dmaj_r$1$clock = clock;
+        dmaj_r$1$d = c_dmaj$1;
+        dmaj$1 = dmaj_r$1$q;
+        dmaj_r$2$clock = clock;
+        dmaj_r$2$d = c_dmaj$2;
+        dmaj$2 = dmaj_r$2$q;
+        dmaj_r$3$clock = clock;
+        dmaj_r$3$d = c_dmaj$3;
+        dmaj$3 = dmaj_r$3$q;
+        dbot_r$0$clock = clock;
+        dbot_r$0$d = c_dbot$0;
+        dbot$0 = dbot_r$0$q;
+        dbot_r$1$clock = clock;
+        dbot_r$1$d = c_dbot$1;
+        dbot$1 = dbot_r$1$q;
+        dbot_r$2$clock = clock;
+        dbot_r$2$d = c_dbot$2;
+        dbot$2 = dbot_r$2$q;
+        dbot_r$3$clock = clock;
+        dbot_r$3$d = c_dbot$3;
+        dbot$3 = dbot_r$3$q;
+        attr0_r$0$clock = clock;
+        attr0_r$0$d = c_attr0$0;
+        attr0$0 = attr0_r$0$q;
+        attr0_r$1$clock = clock;
+        attr0_r$1$d = c_attr0$1;
+        attr0$1 = attr0_r$1$q;
+        attr0_r$2$clock = clock;
+        attr0_r$2$d = c_attr0$2;
+        attr0$2 = attr0_r$2$q;
+        attr0_r$3$clock = clock;
+        attr0_r$3$d = c_attr0$3;
+        attr0$3 = attr0_r$3$q;
     end
     
 endmodule // triangle_setup$g2
 
 
-module triangle_setup$g3(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module triangle_setup$g2$attr0_r$0(d,q,clock);
     
     // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$attr0_r$0
+
+
+module triangle_setup$g2$attr0_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$attr0_r$1
+
+
+module triangle_setup$g2$attr0_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$attr0_r$2
+
+
+module triangle_setup$g2$attr0_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$attr0_r$3
+
+
+module triangle_setup$g2$count_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$count_r$0
+
+
+module triangle_setup$g2$count_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$count_r$1
+
+
+module triangle_setup$g2$count_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$count_r$2
+
+
+module triangle_setup$g2$cy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$cy_r$0
+
+
+module triangle_setup$g2$cy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$cy_r$1
+
+
+module triangle_setup$g2$cy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$cy_r$2
+
+
+module triangle_setup$g2$dbot_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$dbot_r$0
+
+
+module triangle_setup$g2$dbot_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$dbot_r$1
+
+
+module triangle_setup$g2$dbot_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$dbot_r$2
+
+
+module triangle_setup$g2$dbot_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$dbot_r$3
+
+
+module triangle_setup$g2$dmaj_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$dmaj_r$0
+
+
+module triangle_setup$g2$dmaj_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$dmaj_r$1
+
+
+module triangle_setup$g2$dmaj_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$dmaj_r$2
+
+
+module triangle_setup$g2$dmaj_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$dmaj_r$3
+
+
+module triangle_setup$g2$ed16_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$ed16_r$0
+
+
+module triangle_setup$g2$ed16_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$ed16_r$1
+
+
+module triangle_setup$g2$ed16_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$ed16_r$2
+
+
+module triangle_setup$g2$edx_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$edx_r$0
+
+
+module triangle_setup$g2$edx_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$edx_r$1
+
+
+module triangle_setup$g2$edx_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$edx_r$2
+
+
+module triangle_setup$g2$edy_d_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$edy_d_r$0
+
+
+module triangle_setup$g2$edy_d_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$edy_d_r$1
+
+
+module triangle_setup$g2$edy_d_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$edy_d_r$2
+
+
+module triangle_setup$g2$edy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$edy_r$0
+
+
+module triangle_setup$g2$edy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$edy_r$1
+
+
+module triangle_setup$g2$edy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$edy_r$2
+
+
+module triangle_setup$g2$kdx_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$kdx_r$0
+
+
+module triangle_setup$g2$kdx_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$kdx_r$1
+
+
+module triangle_setup$g2$kdx_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$kdx_r$2
+
+
+module triangle_setup$g2$kdy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$kdy_r$0
+
+
+module triangle_setup$g2$kdy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$kdy_r$1
+
+
+module triangle_setup$g2$kdy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$kdy_r$2
+
+
+module triangle_setup$g2$off_y_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$off_y_r$0
+
+
+module triangle_setup$g2$off_y_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$off_y_r$1
+
+
+module triangle_setup$g2$off_y_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$off_y_r$2
+
+
+module triangle_setup$g2$toff_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$toff_r$0
+
+
+module triangle_setup$g2$toff_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$toff_r$1
+
+
+module triangle_setup$g2$toff_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$toff_r$2
+
+
+module triangle_setup$g2$up_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$up_r
+
+
+module triangle_setup$g2$xf_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$xf_r$0
+
+
+module triangle_setup$g2$xf_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$xf_r$1
+
+
+module triangle_setup$g2$xf_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$xf_r$2
+
+
+module triangle_setup$g2$xi_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$xi_r$0
+
+
+module triangle_setup$g2$xi_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$xi_r$1
+
+
+module triangle_setup$g2$xi_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$xi_r$2
+
+
+module triangle_setup$g2$xn0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g2$xn0_r
+
+
+module triangle_setup$g3(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] vx$0;
     input wire  [15:0] vx$1;
     input wire  [15:0] vx$2;
@@ -17244,7 +27845,208 @@ module triangle_setup$g3(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
     localparam  top_bit = 8'h2;
     localparam  bottom_bit = 8'h3;
     
+    // Stub signals
+    reg  [57:0] kdx_r$0$d;
+    wire  [57:0] kdx_r$0$q;
+    reg  kdx_r$0$clock;
+    reg  [57:0] kdx_r$1$d;
+    wire  [57:0] kdx_r$1$q;
+    reg  kdx_r$1$clock;
+    reg  [57:0] kdx_r$2$d;
+    wire  [57:0] kdx_r$2$q;
+    reg  kdx_r$2$clock;
+    reg  [56:0] kdy_r$0$d;
+    wire  [56:0] kdy_r$0$q;
+    reg  kdy_r$0$clock;
+    reg  [56:0] kdy_r$1$d;
+    wire  [56:0] kdy_r$1$q;
+    reg  kdy_r$1$clock;
+    reg  [56:0] kdy_r$2$d;
+    wire  [56:0] kdy_r$2$q;
+    reg  kdy_r$2$clock;
+    reg  up_r$d;
+    wire  up_r$q;
+    reg  up_r$clock;
+    reg  [57:0] edx_r$0$d;
+    wire  [57:0] edx_r$0$q;
+    reg  edx_r$0$clock;
+    reg  [57:0] edx_r$1$d;
+    wire  [57:0] edx_r$1$q;
+    reg  edx_r$1$clock;
+    reg  [57:0] edx_r$2$d;
+    wire  [57:0] edx_r$2$q;
+    reg  edx_r$2$clock;
+    reg  [56:0] edy_r$0$d;
+    wire  [56:0] edy_r$0$q;
+    reg  edy_r$0$clock;
+    reg  [56:0] edy_r$1$d;
+    wire  [56:0] edy_r$1$q;
+    reg  edy_r$1$clock;
+    reg  [56:0] edy_r$2$d;
+    wire  [56:0] edy_r$2$q;
+    reg  edy_r$2$clock;
+    reg  [33:0] edy_d_r$0$d;
+    wire  [33:0] edy_d_r$0$q;
+    reg  edy_d_r$0$clock;
+    reg  [33:0] edy_d_r$1$d;
+    wire  [33:0] edy_d_r$1$q;
+    reg  edy_d_r$1$clock;
+    reg  [33:0] edy_d_r$2$d;
+    wire  [33:0] edy_d_r$2$q;
+    reg  edy_d_r$2$clock;
+    reg  [33:0] ed16_r$0$d;
+    wire  [33:0] ed16_r$0$q;
+    reg  ed16_r$0$clock;
+    reg  [33:0] ed16_r$1$d;
+    wire  [33:0] ed16_r$1$q;
+    reg  ed16_r$1$clock;
+    reg  [33:0] ed16_r$2$d;
+    wire  [33:0] ed16_r$2$q;
+    reg  ed16_r$2$clock;
+    reg  [18:0] cy_r$0$d;
+    wire  [18:0] cy_r$0$q;
+    reg  cy_r$0$clock;
+    reg  [18:0] cy_r$1$d;
+    wire  [18:0] cy_r$1$q;
+    reg  cy_r$1$clock;
+    reg  [18:0] cy_r$2$d;
+    wire  [18:0] cy_r$2$q;
+    reg  cy_r$2$clock;
+    reg  [12:0] count_r$0$d;
+    wire  [12:0] count_r$0$q;
+    reg  count_r$0$clock;
+    reg  [12:0] count_r$1$d;
+    wire  [12:0] count_r$1$q;
+    reg  count_r$1$clock;
+    reg  [12:0] count_r$2$d;
+    wire  [12:0] count_r$2$q;
+    reg  count_r$2$clock;
+    reg  [18:0] toff_r$0$d;
+    wire  [18:0] toff_r$0$q;
+    reg  toff_r$0$clock;
+    reg  [18:0] toff_r$1$d;
+    wire  [18:0] toff_r$1$q;
+    reg  toff_r$1$clock;
+    reg  [18:0] toff_r$2$d;
+    wire  [18:0] toff_r$2$q;
+    reg  toff_r$2$clock;
+    reg  [18:0] xf_r$0$d;
+    wire  [18:0] xf_r$0$q;
+    reg  xf_r$0$clock;
+    reg  [18:0] xf_r$1$d;
+    wire  [18:0] xf_r$1$q;
+    reg  xf_r$1$clock;
+    reg  [18:0] xf_r$2$d;
+    wire  [18:0] xf_r$2$q;
+    reg  xf_r$2$clock;
+    reg  [18:0] xi_r$0$d;
+    wire  [18:0] xi_r$0$q;
+    reg  xi_r$0$clock;
+    reg  [18:0] xi_r$1$d;
+    wire  [18:0] xi_r$1$q;
+    reg  xi_r$1$clock;
+    reg  [18:0] xi_r$2$d;
+    wire  [18:0] xi_r$2$q;
+    reg  xi_r$2$clock;
+    reg  [18:0] off_y_r$0$d;
+    wire  [18:0] off_y_r$0$q;
+    reg  off_y_r$0$clock;
+    reg  [18:0] off_y_r$1$d;
+    wire  [18:0] off_y_r$1$q;
+    reg  off_y_r$1$clock;
+    reg  [18:0] off_y_r$2$d;
+    wire  [18:0] off_y_r$2$q;
+    reg  off_y_r$2$clock;
+    reg  [18:0] dmaj_r$0$d;
+    wire  [18:0] dmaj_r$0$q;
+    reg  dmaj_r$0$clock;
+    reg  [18:0] dmaj_r$1$d;
+    wire  [18:0] dmaj_r$1$q;
+    reg  dmaj_r$1$clock;
+    reg  [18:0] dmaj_r$2$d;
+    wire  [18:0] dmaj_r$2$q;
+    reg  dmaj_r$2$clock;
+    reg  [18:0] dmaj_r$3$d;
+    wire  [18:0] dmaj_r$3$q;
+    reg  dmaj_r$3$clock;
+    reg  [18:0] dbot_r$0$d;
+    wire  [18:0] dbot_r$0$q;
+    reg  dbot_r$0$clock;
+    reg  [18:0] dbot_r$1$d;
+    wire  [18:0] dbot_r$1$q;
+    reg  dbot_r$1$clock;
+    reg  [18:0] dbot_r$2$d;
+    wire  [18:0] dbot_r$2$q;
+    reg  dbot_r$2$clock;
+    reg  [18:0] dbot_r$3$d;
+    wire  [18:0] dbot_r$3$q;
+    reg  dbot_r$3$clock;
+    reg  [39:0] attr0_r$0$d;
+    wire  [39:0] attr0_r$0$q;
+    reg  attr0_r$0$clock;
+    reg  [39:0] attr0_r$1$d;
+    wire  [39:0] attr0_r$1$q;
+    reg  attr0_r$1$clock;
+    reg  [39:0] attr0_r$2$d;
+    wire  [39:0] attr0_r$2$q;
+    reg  attr0_r$2$clock;
+    reg  [39:0] attr0_r$3$d;
+    wire  [39:0] attr0_r$3$q;
+    reg  attr0_r$3$clock;
+    reg  [18:0] xn0_r$d;
+    wire  [18:0] xn0_r$q;
+    reg  xn0_r$clock;
+    
     // Local signals
+    reg  [57:0] c_kdx$0;
+    reg  [57:0] c_kdx$1;
+    reg  [57:0] c_kdx$2;
+    reg  [56:0] c_kdy$0;
+    reg  [56:0] c_kdy$1;
+    reg  [56:0] c_kdy$2;
+    reg  c_up;
+    reg  [57:0] c_edx$0;
+    reg  [57:0] c_edx$1;
+    reg  [57:0] c_edx$2;
+    reg  [56:0] c_edy$0;
+    reg  [56:0] c_edy$1;
+    reg  [56:0] c_edy$2;
+    reg  [33:0] c_edy_d$0;
+    reg  [33:0] c_edy_d$1;
+    reg  [33:0] c_edy_d$2;
+    reg  [33:0] c_ed16$0;
+    reg  [33:0] c_ed16$1;
+    reg  [33:0] c_ed16$2;
+    reg  [18:0] c_cy$0;
+    reg  [18:0] c_cy$1;
+    reg  [18:0] c_cy$2;
+    reg  [12:0] c_count$0;
+    reg  [12:0] c_count$1;
+    reg  [12:0] c_count$2;
+    reg  [18:0] c_toff$0;
+    reg  [18:0] c_toff$1;
+    reg  [18:0] c_toff$2;
+    reg  [18:0] c_xf$0;
+    reg  [18:0] c_xf$1;
+    reg  [18:0] c_xf$2;
+    reg  [18:0] c_xi$0;
+    reg  [18:0] c_xi$1;
+    reg  [18:0] c_xi$2;
+    reg  [18:0] c_off_y$0;
+    reg  [18:0] c_off_y$1;
+    reg  [18:0] c_off_y$2;
+    reg  [18:0] c_dmaj$0;
+    reg  [18:0] c_dmaj$1;
+    reg  [18:0] c_dmaj$2;
+    reg  [18:0] c_dmaj$3;
+    reg  [18:0] c_dbot$0;
+    reg  [18:0] c_dbot$1;
+    reg  [18:0] c_dbot$2;
+    reg  [18:0] c_dbot$3;
+    reg  [39:0] c_attr0$0;
+    reg  [39:0] c_attr0$1;
+    reg  [39:0] c_attr0$2;
+    reg  [39:0] c_attr0$3;
     reg  [57:0] xw$0;
     reg  [57:0] xw$1;
     reg  [57:0] xw$2;
@@ -17290,6 +28092,258 @@ module triangle_setup$g3(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
     reg  [18:0] tracked$0;
     reg  [18:0] tracked$1;
     reg  [18:0] tracked$2;
+    
+    // Sub module instances
+    triangle_setup$g3$kdx_r$0 kdx_r$0(
+        .d(kdx_r$0$d),
+        .q(kdx_r$0$q),
+        .clock(kdx_r$0$clock)
+    );
+    triangle_setup$g3$kdx_r$1 kdx_r$1(
+        .d(kdx_r$1$d),
+        .q(kdx_r$1$q),
+        .clock(kdx_r$1$clock)
+    );
+    triangle_setup$g3$kdx_r$2 kdx_r$2(
+        .d(kdx_r$2$d),
+        .q(kdx_r$2$q),
+        .clock(kdx_r$2$clock)
+    );
+    triangle_setup$g3$kdy_r$0 kdy_r$0(
+        .d(kdy_r$0$d),
+        .q(kdy_r$0$q),
+        .clock(kdy_r$0$clock)
+    );
+    triangle_setup$g3$kdy_r$1 kdy_r$1(
+        .d(kdy_r$1$d),
+        .q(kdy_r$1$q),
+        .clock(kdy_r$1$clock)
+    );
+    triangle_setup$g3$kdy_r$2 kdy_r$2(
+        .d(kdy_r$2$d),
+        .q(kdy_r$2$q),
+        .clock(kdy_r$2$clock)
+    );
+    triangle_setup$g3$up_r up_r(
+        .d(up_r$d),
+        .q(up_r$q),
+        .clock(up_r$clock)
+    );
+    triangle_setup$g3$edx_r$0 edx_r$0(
+        .d(edx_r$0$d),
+        .q(edx_r$0$q),
+        .clock(edx_r$0$clock)
+    );
+    triangle_setup$g3$edx_r$1 edx_r$1(
+        .d(edx_r$1$d),
+        .q(edx_r$1$q),
+        .clock(edx_r$1$clock)
+    );
+    triangle_setup$g3$edx_r$2 edx_r$2(
+        .d(edx_r$2$d),
+        .q(edx_r$2$q),
+        .clock(edx_r$2$clock)
+    );
+    triangle_setup$g3$edy_r$0 edy_r$0(
+        .d(edy_r$0$d),
+        .q(edy_r$0$q),
+        .clock(edy_r$0$clock)
+    );
+    triangle_setup$g3$edy_r$1 edy_r$1(
+        .d(edy_r$1$d),
+        .q(edy_r$1$q),
+        .clock(edy_r$1$clock)
+    );
+    triangle_setup$g3$edy_r$2 edy_r$2(
+        .d(edy_r$2$d),
+        .q(edy_r$2$q),
+        .clock(edy_r$2$clock)
+    );
+    triangle_setup$g3$edy_d_r$0 edy_d_r$0(
+        .d(edy_d_r$0$d),
+        .q(edy_d_r$0$q),
+        .clock(edy_d_r$0$clock)
+    );
+    triangle_setup$g3$edy_d_r$1 edy_d_r$1(
+        .d(edy_d_r$1$d),
+        .q(edy_d_r$1$q),
+        .clock(edy_d_r$1$clock)
+    );
+    triangle_setup$g3$edy_d_r$2 edy_d_r$2(
+        .d(edy_d_r$2$d),
+        .q(edy_d_r$2$q),
+        .clock(edy_d_r$2$clock)
+    );
+    triangle_setup$g3$ed16_r$0 ed16_r$0(
+        .d(ed16_r$0$d),
+        .q(ed16_r$0$q),
+        .clock(ed16_r$0$clock)
+    );
+    triangle_setup$g3$ed16_r$1 ed16_r$1(
+        .d(ed16_r$1$d),
+        .q(ed16_r$1$q),
+        .clock(ed16_r$1$clock)
+    );
+    triangle_setup$g3$ed16_r$2 ed16_r$2(
+        .d(ed16_r$2$d),
+        .q(ed16_r$2$q),
+        .clock(ed16_r$2$clock)
+    );
+    triangle_setup$g3$cy_r$0 cy_r$0(
+        .d(cy_r$0$d),
+        .q(cy_r$0$q),
+        .clock(cy_r$0$clock)
+    );
+    triangle_setup$g3$cy_r$1 cy_r$1(
+        .d(cy_r$1$d),
+        .q(cy_r$1$q),
+        .clock(cy_r$1$clock)
+    );
+    triangle_setup$g3$cy_r$2 cy_r$2(
+        .d(cy_r$2$d),
+        .q(cy_r$2$q),
+        .clock(cy_r$2$clock)
+    );
+    triangle_setup$g3$count_r$0 count_r$0(
+        .d(count_r$0$d),
+        .q(count_r$0$q),
+        .clock(count_r$0$clock)
+    );
+    triangle_setup$g3$count_r$1 count_r$1(
+        .d(count_r$1$d),
+        .q(count_r$1$q),
+        .clock(count_r$1$clock)
+    );
+    triangle_setup$g3$count_r$2 count_r$2(
+        .d(count_r$2$d),
+        .q(count_r$2$q),
+        .clock(count_r$2$clock)
+    );
+    triangle_setup$g3$toff_r$0 toff_r$0(
+        .d(toff_r$0$d),
+        .q(toff_r$0$q),
+        .clock(toff_r$0$clock)
+    );
+    triangle_setup$g3$toff_r$1 toff_r$1(
+        .d(toff_r$1$d),
+        .q(toff_r$1$q),
+        .clock(toff_r$1$clock)
+    );
+    triangle_setup$g3$toff_r$2 toff_r$2(
+        .d(toff_r$2$d),
+        .q(toff_r$2$q),
+        .clock(toff_r$2$clock)
+    );
+    triangle_setup$g3$xf_r$0 xf_r$0(
+        .d(xf_r$0$d),
+        .q(xf_r$0$q),
+        .clock(xf_r$0$clock)
+    );
+    triangle_setup$g3$xf_r$1 xf_r$1(
+        .d(xf_r$1$d),
+        .q(xf_r$1$q),
+        .clock(xf_r$1$clock)
+    );
+    triangle_setup$g3$xf_r$2 xf_r$2(
+        .d(xf_r$2$d),
+        .q(xf_r$2$q),
+        .clock(xf_r$2$clock)
+    );
+    triangle_setup$g3$xi_r$0 xi_r$0(
+        .d(xi_r$0$d),
+        .q(xi_r$0$q),
+        .clock(xi_r$0$clock)
+    );
+    triangle_setup$g3$xi_r$1 xi_r$1(
+        .d(xi_r$1$d),
+        .q(xi_r$1$q),
+        .clock(xi_r$1$clock)
+    );
+    triangle_setup$g3$xi_r$2 xi_r$2(
+        .d(xi_r$2$d),
+        .q(xi_r$2$q),
+        .clock(xi_r$2$clock)
+    );
+    triangle_setup$g3$off_y_r$0 off_y_r$0(
+        .d(off_y_r$0$d),
+        .q(off_y_r$0$q),
+        .clock(off_y_r$0$clock)
+    );
+    triangle_setup$g3$off_y_r$1 off_y_r$1(
+        .d(off_y_r$1$d),
+        .q(off_y_r$1$q),
+        .clock(off_y_r$1$clock)
+    );
+    triangle_setup$g3$off_y_r$2 off_y_r$2(
+        .d(off_y_r$2$d),
+        .q(off_y_r$2$q),
+        .clock(off_y_r$2$clock)
+    );
+    triangle_setup$g3$dmaj_r$0 dmaj_r$0(
+        .d(dmaj_r$0$d),
+        .q(dmaj_r$0$q),
+        .clock(dmaj_r$0$clock)
+    );
+    triangle_setup$g3$dmaj_r$1 dmaj_r$1(
+        .d(dmaj_r$1$d),
+        .q(dmaj_r$1$q),
+        .clock(dmaj_r$1$clock)
+    );
+    triangle_setup$g3$dmaj_r$2 dmaj_r$2(
+        .d(dmaj_r$2$d),
+        .q(dmaj_r$2$q),
+        .clock(dmaj_r$2$clock)
+    );
+    triangle_setup$g3$dmaj_r$3 dmaj_r$3(
+        .d(dmaj_r$3$d),
+        .q(dmaj_r$3$q),
+        .clock(dmaj_r$3$clock)
+    );
+    triangle_setup$g3$dbot_r$0 dbot_r$0(
+        .d(dbot_r$0$d),
+        .q(dbot_r$0$q),
+        .clock(dbot_r$0$clock)
+    );
+    triangle_setup$g3$dbot_r$1 dbot_r$1(
+        .d(dbot_r$1$d),
+        .q(dbot_r$1$q),
+        .clock(dbot_r$1$clock)
+    );
+    triangle_setup$g3$dbot_r$2 dbot_r$2(
+        .d(dbot_r$2$d),
+        .q(dbot_r$2$q),
+        .clock(dbot_r$2$clock)
+    );
+    triangle_setup$g3$dbot_r$3 dbot_r$3(
+        .d(dbot_r$3$d),
+        .q(dbot_r$3$q),
+        .clock(dbot_r$3$clock)
+    );
+    triangle_setup$g3$attr0_r$0 attr0_r$0(
+        .d(attr0_r$0$d),
+        .q(attr0_r$0$q),
+        .clock(attr0_r$0$clock)
+    );
+    triangle_setup$g3$attr0_r$1 attr0_r$1(
+        .d(attr0_r$1$d),
+        .q(attr0_r$1$q),
+        .clock(attr0_r$1$clock)
+    );
+    triangle_setup$g3$attr0_r$2 attr0_r$2(
+        .d(attr0_r$2$d),
+        .q(attr0_r$2$q),
+        .clock(attr0_r$2$clock)
+    );
+    triangle_setup$g3$attr0_r$3 attr0_r$3(
+        .d(attr0_r$3$d),
+        .q(attr0_r$3$q),
+        .clock(attr0_r$3$clock)
+    );
+    triangle_setup$g3$xn0_r xn0_r(
+        .d(xn0_r$d),
+        .q(xn0_r$q),
+        .clock(xn0_r$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -17347,14 +28401,14 @@ module triangle_setup$g3(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
         xn$2 = xw$2[(32'h0)+:(19)];
         yn$2 = yw$2[(32'h0)+:(19)];
         cv$2 = ((yn$2 + half_m1) & int_mask) | half;
-        kdx$0 = xw$2 - xw$0;
-        kdy$0 = yw$2 - yw$0;
+        c_kdx$0 = xw$2 - xw$0;
+        c_kdy$0 = yw$2 - yw$0;
         diff$0 = cv$2 - cv$0;
-        kdx$1 = xw$1 - xw$0;
-        kdy$1 = yw$1 - yw$0;
+        c_kdx$1 = xw$1 - xw$0;
+        c_kdy$1 = yw$1 - yw$0;
         diff$1 = cv$1 - cv$0;
-        kdx$2 = xw$2 - xw$1;
-        kdy$2 = yw$2 - yw$1;
+        c_kdx$2 = xw$2 - xw$1;
+        c_kdy$2 = yw$2 - yw$1;
         diff$2 = cv$2 - cv$1;
         span$0 = diff$0[(frac)+:(13)];
         if (diff$0[nb_msb]) begin
@@ -17368,43 +28422,43 @@ module triangle_setup$g3(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
         if (diff$2[nb_msb]) begin
             span$2 = 32'h0;
         end
-        up = crosses[top_bit] & ~crosses[bottom_bit];
-        edx$0 = kdx$0;
-        edy$0 = kdy$0;
-        count$0 = span$0;
-        edx$1 = kdx$1;
-        edy$1 = kdy$1;
-        count$1 = span$1;
-        edx$2 = kdx$2;
-        edy$2 = kdy$2;
-        count$2 = span$2;
+        c_up = crosses[top_bit] & ~crosses[bottom_bit];
+        c_edx$0 = c_kdx$0;
+        c_edy$0 = c_kdy$0;
+        c_count$0 = span$0;
+        c_edx$1 = c_kdx$1;
+        c_edy$1 = c_kdy$1;
+        c_count$1 = span$1;
+        c_edx$2 = c_kdx$2;
+        c_edy$2 = c_kdy$2;
+        c_count$2 = span$2;
         bx$0 = xn$0;
         by$0 = yn$0;
-        cy$0 = cv$0;
+        c_cy$0 = cv$0;
         bx$1 = xn$0;
         by$1 = yn$0;
-        cy$1 = cv$0;
+        c_cy$1 = cv$0;
         bx$2 = xn$1;
         by$2 = yn$1;
-        cy$2 = cv$1;
-        if (up) begin
-            edx$1 = kdx$2;
-            edy$1 = kdy$2;
-            count$1 = span$2;
-            edx$2 = kdx$1;
-            edy$2 = kdy$1;
-            count$2 = span$1;
+        c_cy$2 = cv$1;
+        if (c_up) begin
+            c_edx$1 = c_kdx$2;
+            c_edy$1 = c_kdy$2;
+            c_count$1 = span$2;
+            c_edx$2 = c_kdx$1;
+            c_edy$2 = c_kdy$1;
+            c_count$2 = span$1;
             bx$0 = xn$2;
             by$0 = yn$2;
-            cy$0 = cv$2 - (frac_mask + 32'h1);
+            c_cy$0 = cv$2 - (frac_mask + 32'h1);
             bx$1 = xn$2;
             by$1 = yn$2;
-            cy$1 = cv$2 - (frac_mask + 32'h1);
-            cy$2 = cv$1 - (frac_mask + 32'h1);
+            c_cy$1 = cv$2 - (frac_mask + 32'h1);
+            c_cy$2 = cv$1 - (frac_mask + 32'h1);
         end
-        edy_d$0 = ((edy$0) & 34'h3ffffffff);
-        edy_d$1 = ((edy$1) & 34'h3ffffffff);
-        edy_d$2 = ((edy$2) & 34'h3ffffffff);
+        c_edy_d$0 = ((c_edy$0) & 34'h3ffffffff);
+        c_edy_d$1 = ((c_edy$1) & 34'h3ffffffff);
+        c_edy_d$2 = ((c_edy$2) & 34'h3ffffffff);
         tracked$0 = start_x$0 - 32'h1;
         if (maj_left) begin
             tracked$0 = start_x$0;
@@ -17417,56 +28471,1156 @@ module triangle_setup$g3(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
         if (maj_left) begin
             tracked$2 = start_x$2 - 32'h1;
         end
-        ed16$0 = edy_d$0 << frac;
-        toff$0 = cy$0 - by$0;
+        c_ed16$0 = c_edy_d$0 << frac;
+        c_toff$0 = c_cy$0 - by$0;
         xb$0 = bx$0 - half;
-        xf$0 = xb$0 & frac_mask;
-        xi$0 = xb$0 >> frac;
+        c_xf$0 = xb$0 & frac_mask;
+        c_xi$0 = xb$0 >> frac;
         if (xb$0[nb_msb]) begin
-            xi$0 = (xb$0 >> frac) | shr_ext;
+            c_xi$0 = (xb$0 >> frac) | shr_ext;
         end
-        off_y$0 = cy$0 - yn$0;
-        off_x$0 = (tracked$0 << frac) + half - xn$0;
-        ed16$1 = edy_d$1 << frac;
-        toff$1 = cy$1 - by$1;
+        c_off_y$0 = c_cy$0 - yn$0;
+        off_x$0 = (tracked$0 << frac) + half - xn0_r$q;
+        c_ed16$1 = c_edy_d$1 << frac;
+        c_toff$1 = c_cy$1 - by$1;
         xb$1 = bx$1 - half;
-        xf$1 = xb$1 & frac_mask;
-        xi$1 = xb$1 >> frac;
+        c_xf$1 = xb$1 & frac_mask;
+        c_xi$1 = xb$1 >> frac;
         if (xb$1[nb_msb]) begin
-            xi$1 = (xb$1 >> frac) | shr_ext;
+            c_xi$1 = (xb$1 >> frac) | shr_ext;
         end
-        off_y$1 = cy$1 - yn$0;
-        off_x$1 = (tracked$1 << frac) + half - xn$0;
-        ed16$2 = edy_d$2 << frac;
-        toff$2 = cy$2 - by$2;
+        c_off_y$1 = c_cy$1 - yn$0;
+        off_x$1 = (tracked$1 << frac) + half - xn0_r$q;
+        c_ed16$2 = c_edy_d$2 << frac;
+        c_toff$2 = c_cy$2 - by$2;
         xb$2 = bx$2 - half;
-        xf$2 = xb$2 & frac_mask;
-        xi$2 = xb$2 >> frac;
+        c_xf$2 = xb$2 & frac_mask;
+        c_xi$2 = xb$2 >> frac;
         if (xb$2[nb_msb]) begin
-            xi$2 = (xb$2 >> frac) | shr_ext;
+            c_xi$2 = (xb$2 >> frac) | shr_ext;
         end
-        off_y$2 = cy$2 - yn$0;
-        off_x$2 = (tracked$2 << frac) + half - xn$0;
-        dmaj$0 = zn$2 - zn$0;
-        dbot$0 = zn$1 - zn$0;
-        attr0$0 = ((zn$0) & 40'hffffffffff);
-        attr0$1 = ((vc$0) & 40'hffffffffff);
-        attr0$2 = ((vc$1) & 40'hffffffffff);
-        attr0$3 = ((vc$2) & 40'hffffffffff);
-        dmaj$1 = cn$6 - cn$0;
-        dbot$1 = cn$3 - cn$0;
-        dmaj$2 = cn$7 - cn$1;
-        dbot$2 = cn$4 - cn$1;
-        dmaj$3 = cn$8 - cn$2;
-        dbot$3 = cn$5 - cn$2;
+        c_off_y$2 = c_cy$2 - yn$0;
+        off_x$2 = (tracked$2 << frac) + half - xn0_r$q;
+        c_dmaj$0 = zn$2 - zn$0;
+        c_dbot$0 = zn$1 - zn$0;
+        c_attr0$0 = ((zn$0) & 40'hffffffffff);
+        c_attr0$1 = ((vc$0) & 40'hffffffffff);
+        c_attr0$2 = ((vc$1) & 40'hffffffffff);
+        c_attr0$3 = ((vc$2) & 40'hffffffffff);
+        c_dmaj$1 = cn$6 - cn$0;
+        c_dbot$1 = cn$3 - cn$0;
+        c_dmaj$2 = cn$7 - cn$1;
+        c_dbot$2 = cn$4 - cn$1;
+        c_dmaj$3 = cn$8 - cn$2;
+        c_dbot$3 = cn$5 - cn$2;
+        xn0_r$clock = clock;
+        xn0_r$d = xn$0;
+        kdx_r$0$clock = clock;
+        kdx_r$0$d = c_kdx$0;
+        kdx$0 = kdx_r$0$q;
+        kdx_r$1$clock = clock;
+        kdx_r$1$d = c_kdx$1;
+        kdx$1 = kdx_r$1$q;
+        kdx_r$2$clock = clock;
+        kdx_r$2$d = c_kdx$2;
+        kdx$2 = kdx_r$2$q;
+        kdy_r$0$clock = clock;
+        kdy_r$0$d = c_kdy$0;
+        kdy$0 = kdy_r$0$q;
+        kdy_r$1$clock = clock;
+        kdy_r$1$d = c_kdy$1;
+        kdy$1 = kdy_r$1$q;
+        kdy_r$2$clock = clock;
+        kdy_r$2$d = c_kdy$2;
+        kdy$2 = kdy_r$2$q;
+        up_r$clock = clock;
+        up_r$d = c_up;
+        up = up_r$q;
+        edx_r$0$clock = clock;
+        edx_r$0$d = c_edx$0;
+        edx$0 = edx_r$0$q;
+        edx_r$1$clock = clock;
+        edx_r$1$d = c_edx$1;
+        edx$1 = edx_r$1$q;
+        edx_r$2$clock = clock;
+        edx_r$2$d = c_edx$2;
+        edx$2 = edx_r$2$q;
+        edy_r$0$clock = clock;
+        edy_r$0$d = c_edy$0;
+        edy$0 = edy_r$0$q;
+        edy_r$1$clock = clock;
+        edy_r$1$d = c_edy$1;
+        edy$1 = edy_r$1$q;
+        edy_r$2$clock = clock;
+        edy_r$2$d = c_edy$2;
+        edy$2 = edy_r$2$q;
+        edy_d_r$0$clock = clock;
+        edy_d_r$0$d = c_edy_d$0;
+        edy_d$0 = edy_d_r$0$q;
+        edy_d_r$1$clock = clock;
+        edy_d_r$1$d = c_edy_d$1;
+        edy_d$1 = edy_d_r$1$q;
+        edy_d_r$2$clock = clock;
+        edy_d_r$2$d = c_edy_d$2;
+        edy_d$2 = edy_d_r$2$q;
+        ed16_r$0$clock = clock;
+        ed16_r$0$d = c_ed16$0;
+        ed16$0 = ed16_r$0$q;
+        ed16_r$1$clock = clock;
+        ed16_r$1$d = c_ed16$1;
+        ed16$1 = ed16_r$1$q;
+        ed16_r$2$clock = clock;
+        ed16_r$2$d = c_ed16$2;
+        ed16$2 = ed16_r$2$q;
+        cy_r$0$clock = clock;
+        cy_r$0$d = c_cy$0;
+        cy$0 = cy_r$0$q;
+        cy_r$1$clock = clock;
+        cy_r$1$d = c_cy$1;
+        cy$1 = cy_r$1$q;
+        cy_r$2$clock = clock;
+        cy_r$2$d = c_cy$2;
+        cy$2 = cy_r$2$q;
+        count_r$0$clock = clock;
+        count_r$0$d = c_count$0;
+        count$0 = count_r$0$q;
+        count_r$1$clock = clock;
+        count_r$1$d = c_count$1;
+        count$1 = count_r$1$q;
+        count_r$2$clock = clock;
+        count_r$2$d = c_count$2;
+        count$2 = count_r$2$q;
+        toff_r$0$clock = clock;
+        toff_r$0$d = c_toff$0;
+        toff$0 = toff_r$0$q;
+        toff_r$1$clock = clock;
+        toff_r$1$d = c_toff$1;
+        toff$1 = toff_r$1$q;
+        toff_r$2$clock = clock;
+        toff_r$2$d = c_toff$2;
+        toff$2 = toff_r$2$q;
+        xf_r$0$clock = clock;
+        xf_r$0$d = c_xf$0;
+        xf$0 = xf_r$0$q;
+        xf_r$1$clock = clock;
+        xf_r$1$d = c_xf$1;
+        xf$1 = xf_r$1$q;
+        xf_r$2$clock = clock;
+        xf_r$2$d = c_xf$2;
+        xf$2 = xf_r$2$q;
+        xi_r$0$clock = clock;
+        xi_r$0$d = c_xi$0;
+        xi$0 = xi_r$0$q;
+        xi_r$1$clock = clock;
+        xi_r$1$d = c_xi$1;
+        xi$1 = xi_r$1$q;
+        xi_r$2$clock = clock;
+        xi_r$2$d = c_xi$2;
+        xi$2 = xi_r$2$q;
+        off_y_r$0$clock = clock;
+        off_y_r$0$d = c_off_y$0;
+        off_y$0 = off_y_r$0$q;
+        off_y_r$1$clock = clock;
+        off_y_r$1$d = c_off_y$1;
+        off_y$1 = off_y_r$1$q;
+        off_y_r$2$clock = clock;
+        off_y_r$2$d = c_off_y$2;
+        off_y$2 = off_y_r$2$q;
+        dmaj_r$0$clock = clock;
+        dmaj_r$0$d = c_dmaj$0;
+        dmaj$0 = dmaj_r$0$q;
+        dmaj_r$1$clock = clock;
+        dmaj_r$1$d = c_dmaj$1;
+        dmaj$1 = dmaj_r$1$q;
+        dmaj_r$2$clock = clock;
+        dmaj_r$2$d = c_dmaj$2;
+        dmaj$2 = dmaj_r$2$q;
+        dmaj_r$3$clock = clock;
+        dmaj_r$3$d = c_dmaj$3;
+        dmaj$3 = dmaj_r$3$q;
+        dbot_r$0$clock = clock;
+        dbot_r$0$d = c_dbot$0;
+        dbot$0 = dbot_r$0$q;
+        dbot_r$1$clock = clock;
+        dbot_r$1$d = c_dbot$1;
+        dbot$1 = dbot_r$1$q;
+        dbot_r$2$clock = clock;
+        dbot_r$2$d = c_dbot$2;
+        dbot$2 = dbot_r$2$q;
+        dbot_r$3$clock = clock;
+        dbot_r$3$d = c_dbot$3;
+        dbot$3 = dbot_r$3$q;
+        attr0_r$0$clock = clock;
+        attr0_r$0$d = c_attr0$0;
+        attr0$0 = attr0_r$0$q;
+        attr0_r$1$clock = clock;
+        attr0_r$1$d = c_attr0$1;
+        attr0$1 = attr0_r$1$q;
+        attr0_r$2$clock = clock;
+        attr0_r$2$d = c_attr0$2;
+        attr0$2 = attr0_r$2$q;
+        attr0_r$3$clock = clock;
+        attr0_r$3$d = c_attr0$3;
+        attr0$3 = attr0_r$3$q;
     end
     
 endmodule // triangle_setup$g3
 
 
-module triangle_setup$g4(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module triangle_setup$g3$attr0_r$0(d,q,clock);
     
     // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$attr0_r$0
+
+
+module triangle_setup$g3$attr0_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$attr0_r$1
+
+
+module triangle_setup$g3$attr0_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$attr0_r$2
+
+
+module triangle_setup$g3$attr0_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$attr0_r$3
+
+
+module triangle_setup$g3$count_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$count_r$0
+
+
+module triangle_setup$g3$count_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$count_r$1
+
+
+module triangle_setup$g3$count_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$count_r$2
+
+
+module triangle_setup$g3$cy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$cy_r$0
+
+
+module triangle_setup$g3$cy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$cy_r$1
+
+
+module triangle_setup$g3$cy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$cy_r$2
+
+
+module triangle_setup$g3$dbot_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$dbot_r$0
+
+
+module triangle_setup$g3$dbot_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$dbot_r$1
+
+
+module triangle_setup$g3$dbot_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$dbot_r$2
+
+
+module triangle_setup$g3$dbot_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$dbot_r$3
+
+
+module triangle_setup$g3$dmaj_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$dmaj_r$0
+
+
+module triangle_setup$g3$dmaj_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$dmaj_r$1
+
+
+module triangle_setup$g3$dmaj_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$dmaj_r$2
+
+
+module triangle_setup$g3$dmaj_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$dmaj_r$3
+
+
+module triangle_setup$g3$ed16_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$ed16_r$0
+
+
+module triangle_setup$g3$ed16_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$ed16_r$1
+
+
+module triangle_setup$g3$ed16_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$ed16_r$2
+
+
+module triangle_setup$g3$edx_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$edx_r$0
+
+
+module triangle_setup$g3$edx_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$edx_r$1
+
+
+module triangle_setup$g3$edx_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$edx_r$2
+
+
+module triangle_setup$g3$edy_d_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$edy_d_r$0
+
+
+module triangle_setup$g3$edy_d_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$edy_d_r$1
+
+
+module triangle_setup$g3$edy_d_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$edy_d_r$2
+
+
+module triangle_setup$g3$edy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$edy_r$0
+
+
+module triangle_setup$g3$edy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$edy_r$1
+
+
+module triangle_setup$g3$edy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$edy_r$2
+
+
+module triangle_setup$g3$kdx_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$kdx_r$0
+
+
+module triangle_setup$g3$kdx_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$kdx_r$1
+
+
+module triangle_setup$g3$kdx_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$kdx_r$2
+
+
+module triangle_setup$g3$kdy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$kdy_r$0
+
+
+module triangle_setup$g3$kdy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$kdy_r$1
+
+
+module triangle_setup$g3$kdy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$kdy_r$2
+
+
+module triangle_setup$g3$off_y_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$off_y_r$0
+
+
+module triangle_setup$g3$off_y_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$off_y_r$1
+
+
+module triangle_setup$g3$off_y_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$off_y_r$2
+
+
+module triangle_setup$g3$toff_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$toff_r$0
+
+
+module triangle_setup$g3$toff_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$toff_r$1
+
+
+module triangle_setup$g3$toff_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$toff_r$2
+
+
+module triangle_setup$g3$up_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$up_r
+
+
+module triangle_setup$g3$xf_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$xf_r$0
+
+
+module triangle_setup$g3$xf_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$xf_r$1
+
+
+module triangle_setup$g3$xf_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$xf_r$2
+
+
+module triangle_setup$g3$xi_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$xi_r$0
+
+
+module triangle_setup$g3$xi_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$xi_r$1
+
+
+module triangle_setup$g3$xi_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$xi_r$2
+
+
+module triangle_setup$g3$xn0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g3$xn0_r
+
+
+module triangle_setup$g4(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] vx$0;
     input wire  [15:0] vx$1;
     input wire  [15:0] vx$2;
@@ -17559,7 +29713,208 @@ module triangle_setup$g4(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
     localparam  top_bit = 8'h2;
     localparam  bottom_bit = 8'h3;
     
+    // Stub signals
+    reg  [57:0] kdx_r$0$d;
+    wire  [57:0] kdx_r$0$q;
+    reg  kdx_r$0$clock;
+    reg  [57:0] kdx_r$1$d;
+    wire  [57:0] kdx_r$1$q;
+    reg  kdx_r$1$clock;
+    reg  [57:0] kdx_r$2$d;
+    wire  [57:0] kdx_r$2$q;
+    reg  kdx_r$2$clock;
+    reg  [56:0] kdy_r$0$d;
+    wire  [56:0] kdy_r$0$q;
+    reg  kdy_r$0$clock;
+    reg  [56:0] kdy_r$1$d;
+    wire  [56:0] kdy_r$1$q;
+    reg  kdy_r$1$clock;
+    reg  [56:0] kdy_r$2$d;
+    wire  [56:0] kdy_r$2$q;
+    reg  kdy_r$2$clock;
+    reg  up_r$d;
+    wire  up_r$q;
+    reg  up_r$clock;
+    reg  [57:0] edx_r$0$d;
+    wire  [57:0] edx_r$0$q;
+    reg  edx_r$0$clock;
+    reg  [57:0] edx_r$1$d;
+    wire  [57:0] edx_r$1$q;
+    reg  edx_r$1$clock;
+    reg  [57:0] edx_r$2$d;
+    wire  [57:0] edx_r$2$q;
+    reg  edx_r$2$clock;
+    reg  [56:0] edy_r$0$d;
+    wire  [56:0] edy_r$0$q;
+    reg  edy_r$0$clock;
+    reg  [56:0] edy_r$1$d;
+    wire  [56:0] edy_r$1$q;
+    reg  edy_r$1$clock;
+    reg  [56:0] edy_r$2$d;
+    wire  [56:0] edy_r$2$q;
+    reg  edy_r$2$clock;
+    reg  [33:0] edy_d_r$0$d;
+    wire  [33:0] edy_d_r$0$q;
+    reg  edy_d_r$0$clock;
+    reg  [33:0] edy_d_r$1$d;
+    wire  [33:0] edy_d_r$1$q;
+    reg  edy_d_r$1$clock;
+    reg  [33:0] edy_d_r$2$d;
+    wire  [33:0] edy_d_r$2$q;
+    reg  edy_d_r$2$clock;
+    reg  [33:0] ed16_r$0$d;
+    wire  [33:0] ed16_r$0$q;
+    reg  ed16_r$0$clock;
+    reg  [33:0] ed16_r$1$d;
+    wire  [33:0] ed16_r$1$q;
+    reg  ed16_r$1$clock;
+    reg  [33:0] ed16_r$2$d;
+    wire  [33:0] ed16_r$2$q;
+    reg  ed16_r$2$clock;
+    reg  [18:0] cy_r$0$d;
+    wire  [18:0] cy_r$0$q;
+    reg  cy_r$0$clock;
+    reg  [18:0] cy_r$1$d;
+    wire  [18:0] cy_r$1$q;
+    reg  cy_r$1$clock;
+    reg  [18:0] cy_r$2$d;
+    wire  [18:0] cy_r$2$q;
+    reg  cy_r$2$clock;
+    reg  [12:0] count_r$0$d;
+    wire  [12:0] count_r$0$q;
+    reg  count_r$0$clock;
+    reg  [12:0] count_r$1$d;
+    wire  [12:0] count_r$1$q;
+    reg  count_r$1$clock;
+    reg  [12:0] count_r$2$d;
+    wire  [12:0] count_r$2$q;
+    reg  count_r$2$clock;
+    reg  [18:0] toff_r$0$d;
+    wire  [18:0] toff_r$0$q;
+    reg  toff_r$0$clock;
+    reg  [18:0] toff_r$1$d;
+    wire  [18:0] toff_r$1$q;
+    reg  toff_r$1$clock;
+    reg  [18:0] toff_r$2$d;
+    wire  [18:0] toff_r$2$q;
+    reg  toff_r$2$clock;
+    reg  [18:0] xf_r$0$d;
+    wire  [18:0] xf_r$0$q;
+    reg  xf_r$0$clock;
+    reg  [18:0] xf_r$1$d;
+    wire  [18:0] xf_r$1$q;
+    reg  xf_r$1$clock;
+    reg  [18:0] xf_r$2$d;
+    wire  [18:0] xf_r$2$q;
+    reg  xf_r$2$clock;
+    reg  [18:0] xi_r$0$d;
+    wire  [18:0] xi_r$0$q;
+    reg  xi_r$0$clock;
+    reg  [18:0] xi_r$1$d;
+    wire  [18:0] xi_r$1$q;
+    reg  xi_r$1$clock;
+    reg  [18:0] xi_r$2$d;
+    wire  [18:0] xi_r$2$q;
+    reg  xi_r$2$clock;
+    reg  [18:0] off_y_r$0$d;
+    wire  [18:0] off_y_r$0$q;
+    reg  off_y_r$0$clock;
+    reg  [18:0] off_y_r$1$d;
+    wire  [18:0] off_y_r$1$q;
+    reg  off_y_r$1$clock;
+    reg  [18:0] off_y_r$2$d;
+    wire  [18:0] off_y_r$2$q;
+    reg  off_y_r$2$clock;
+    reg  [18:0] dmaj_r$0$d;
+    wire  [18:0] dmaj_r$0$q;
+    reg  dmaj_r$0$clock;
+    reg  [18:0] dmaj_r$1$d;
+    wire  [18:0] dmaj_r$1$q;
+    reg  dmaj_r$1$clock;
+    reg  [18:0] dmaj_r$2$d;
+    wire  [18:0] dmaj_r$2$q;
+    reg  dmaj_r$2$clock;
+    reg  [18:0] dmaj_r$3$d;
+    wire  [18:0] dmaj_r$3$q;
+    reg  dmaj_r$3$clock;
+    reg  [18:0] dbot_r$0$d;
+    wire  [18:0] dbot_r$0$q;
+    reg  dbot_r$0$clock;
+    reg  [18:0] dbot_r$1$d;
+    wire  [18:0] dbot_r$1$q;
+    reg  dbot_r$1$clock;
+    reg  [18:0] dbot_r$2$d;
+    wire  [18:0] dbot_r$2$q;
+    reg  dbot_r$2$clock;
+    reg  [18:0] dbot_r$3$d;
+    wire  [18:0] dbot_r$3$q;
+    reg  dbot_r$3$clock;
+    reg  [39:0] attr0_r$0$d;
+    wire  [39:0] attr0_r$0$q;
+    reg  attr0_r$0$clock;
+    reg  [39:0] attr0_r$1$d;
+    wire  [39:0] attr0_r$1$q;
+    reg  attr0_r$1$clock;
+    reg  [39:0] attr0_r$2$d;
+    wire  [39:0] attr0_r$2$q;
+    reg  attr0_r$2$clock;
+    reg  [39:0] attr0_r$3$d;
+    wire  [39:0] attr0_r$3$q;
+    reg  attr0_r$3$clock;
+    reg  [18:0] xn0_r$d;
+    wire  [18:0] xn0_r$q;
+    reg  xn0_r$clock;
+    
     // Local signals
+    reg  [57:0] c_kdx$0;
+    reg  [57:0] c_kdx$1;
+    reg  [57:0] c_kdx$2;
+    reg  [56:0] c_kdy$0;
+    reg  [56:0] c_kdy$1;
+    reg  [56:0] c_kdy$2;
+    reg  c_up;
+    reg  [57:0] c_edx$0;
+    reg  [57:0] c_edx$1;
+    reg  [57:0] c_edx$2;
+    reg  [56:0] c_edy$0;
+    reg  [56:0] c_edy$1;
+    reg  [56:0] c_edy$2;
+    reg  [33:0] c_edy_d$0;
+    reg  [33:0] c_edy_d$1;
+    reg  [33:0] c_edy_d$2;
+    reg  [33:0] c_ed16$0;
+    reg  [33:0] c_ed16$1;
+    reg  [33:0] c_ed16$2;
+    reg  [18:0] c_cy$0;
+    reg  [18:0] c_cy$1;
+    reg  [18:0] c_cy$2;
+    reg  [12:0] c_count$0;
+    reg  [12:0] c_count$1;
+    reg  [12:0] c_count$2;
+    reg  [18:0] c_toff$0;
+    reg  [18:0] c_toff$1;
+    reg  [18:0] c_toff$2;
+    reg  [18:0] c_xf$0;
+    reg  [18:0] c_xf$1;
+    reg  [18:0] c_xf$2;
+    reg  [18:0] c_xi$0;
+    reg  [18:0] c_xi$1;
+    reg  [18:0] c_xi$2;
+    reg  [18:0] c_off_y$0;
+    reg  [18:0] c_off_y$1;
+    reg  [18:0] c_off_y$2;
+    reg  [18:0] c_dmaj$0;
+    reg  [18:0] c_dmaj$1;
+    reg  [18:0] c_dmaj$2;
+    reg  [18:0] c_dmaj$3;
+    reg  [18:0] c_dbot$0;
+    reg  [18:0] c_dbot$1;
+    reg  [18:0] c_dbot$2;
+    reg  [18:0] c_dbot$3;
+    reg  [39:0] c_attr0$0;
+    reg  [39:0] c_attr0$1;
+    reg  [39:0] c_attr0$2;
+    reg  [39:0] c_attr0$3;
     reg  [57:0] xw$0;
     reg  [57:0] xw$1;
     reg  [57:0] xw$2;
@@ -17605,6 +29960,258 @@ module triangle_setup$g4(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
     reg  [18:0] tracked$0;
     reg  [18:0] tracked$1;
     reg  [18:0] tracked$2;
+    
+    // Sub module instances
+    triangle_setup$g4$kdx_r$0 kdx_r$0(
+        .d(kdx_r$0$d),
+        .q(kdx_r$0$q),
+        .clock(kdx_r$0$clock)
+    );
+    triangle_setup$g4$kdx_r$1 kdx_r$1(
+        .d(kdx_r$1$d),
+        .q(kdx_r$1$q),
+        .clock(kdx_r$1$clock)
+    );
+    triangle_setup$g4$kdx_r$2 kdx_r$2(
+        .d(kdx_r$2$d),
+        .q(kdx_r$2$q),
+        .clock(kdx_r$2$clock)
+    );
+    triangle_setup$g4$kdy_r$0 kdy_r$0(
+        .d(kdy_r$0$d),
+        .q(kdy_r$0$q),
+        .clock(kdy_r$0$clock)
+    );
+    triangle_setup$g4$kdy_r$1 kdy_r$1(
+        .d(kdy_r$1$d),
+        .q(kdy_r$1$q),
+        .clock(kdy_r$1$clock)
+    );
+    triangle_setup$g4$kdy_r$2 kdy_r$2(
+        .d(kdy_r$2$d),
+        .q(kdy_r$2$q),
+        .clock(kdy_r$2$clock)
+    );
+    triangle_setup$g4$up_r up_r(
+        .d(up_r$d),
+        .q(up_r$q),
+        .clock(up_r$clock)
+    );
+    triangle_setup$g4$edx_r$0 edx_r$0(
+        .d(edx_r$0$d),
+        .q(edx_r$0$q),
+        .clock(edx_r$0$clock)
+    );
+    triangle_setup$g4$edx_r$1 edx_r$1(
+        .d(edx_r$1$d),
+        .q(edx_r$1$q),
+        .clock(edx_r$1$clock)
+    );
+    triangle_setup$g4$edx_r$2 edx_r$2(
+        .d(edx_r$2$d),
+        .q(edx_r$2$q),
+        .clock(edx_r$2$clock)
+    );
+    triangle_setup$g4$edy_r$0 edy_r$0(
+        .d(edy_r$0$d),
+        .q(edy_r$0$q),
+        .clock(edy_r$0$clock)
+    );
+    triangle_setup$g4$edy_r$1 edy_r$1(
+        .d(edy_r$1$d),
+        .q(edy_r$1$q),
+        .clock(edy_r$1$clock)
+    );
+    triangle_setup$g4$edy_r$2 edy_r$2(
+        .d(edy_r$2$d),
+        .q(edy_r$2$q),
+        .clock(edy_r$2$clock)
+    );
+    triangle_setup$g4$edy_d_r$0 edy_d_r$0(
+        .d(edy_d_r$0$d),
+        .q(edy_d_r$0$q),
+        .clock(edy_d_r$0$clock)
+    );
+    triangle_setup$g4$edy_d_r$1 edy_d_r$1(
+        .d(edy_d_r$1$d),
+        .q(edy_d_r$1$q),
+        .clock(edy_d_r$1$clock)
+    );
+    triangle_setup$g4$edy_d_r$2 edy_d_r$2(
+        .d(edy_d_r$2$d),
+        .q(edy_d_r$2$q),
+        .clock(edy_d_r$2$clock)
+    );
+    triangle_setup$g4$ed16_r$0 ed16_r$0(
+        .d(ed16_r$0$d),
+        .q(ed16_r$0$q),
+        .clock(ed16_r$0$clock)
+    );
+    triangle_setup$g4$ed16_r$1 ed16_r$1(
+        .d(ed16_r$1$d),
+        .q(ed16_r$1$q),
+        .clock(ed16_r$1$clock)
+    );
+    triangle_setup$g4$ed16_r$2 ed16_r$2(
+        .d(ed16_r$2$d),
+        .q(ed16_r$2$q),
+        .clock(ed16_r$2$clock)
+    );
+    triangle_setup$g4$cy_r$0 cy_r$0(
+        .d(cy_r$0$d),
+        .q(cy_r$0$q),
+        .clock(cy_r$0$clock)
+    );
+    triangle_setup$g4$cy_r$1 cy_r$1(
+        .d(cy_r$1$d),
+        .q(cy_r$1$q),
+        .clock(cy_r$1$clock)
+    );
+    triangle_setup$g4$cy_r$2 cy_r$2(
+        .d(cy_r$2$d),
+        .q(cy_r$2$q),
+        .clock(cy_r$2$clock)
+    );
+    triangle_setup$g4$count_r$0 count_r$0(
+        .d(count_r$0$d),
+        .q(count_r$0$q),
+        .clock(count_r$0$clock)
+    );
+    triangle_setup$g4$count_r$1 count_r$1(
+        .d(count_r$1$d),
+        .q(count_r$1$q),
+        .clock(count_r$1$clock)
+    );
+    triangle_setup$g4$count_r$2 count_r$2(
+        .d(count_r$2$d),
+        .q(count_r$2$q),
+        .clock(count_r$2$clock)
+    );
+    triangle_setup$g4$toff_r$0 toff_r$0(
+        .d(toff_r$0$d),
+        .q(toff_r$0$q),
+        .clock(toff_r$0$clock)
+    );
+    triangle_setup$g4$toff_r$1 toff_r$1(
+        .d(toff_r$1$d),
+        .q(toff_r$1$q),
+        .clock(toff_r$1$clock)
+    );
+    triangle_setup$g4$toff_r$2 toff_r$2(
+        .d(toff_r$2$d),
+        .q(toff_r$2$q),
+        .clock(toff_r$2$clock)
+    );
+    triangle_setup$g4$xf_r$0 xf_r$0(
+        .d(xf_r$0$d),
+        .q(xf_r$0$q),
+        .clock(xf_r$0$clock)
+    );
+    triangle_setup$g4$xf_r$1 xf_r$1(
+        .d(xf_r$1$d),
+        .q(xf_r$1$q),
+        .clock(xf_r$1$clock)
+    );
+    triangle_setup$g4$xf_r$2 xf_r$2(
+        .d(xf_r$2$d),
+        .q(xf_r$2$q),
+        .clock(xf_r$2$clock)
+    );
+    triangle_setup$g4$xi_r$0 xi_r$0(
+        .d(xi_r$0$d),
+        .q(xi_r$0$q),
+        .clock(xi_r$0$clock)
+    );
+    triangle_setup$g4$xi_r$1 xi_r$1(
+        .d(xi_r$1$d),
+        .q(xi_r$1$q),
+        .clock(xi_r$1$clock)
+    );
+    triangle_setup$g4$xi_r$2 xi_r$2(
+        .d(xi_r$2$d),
+        .q(xi_r$2$q),
+        .clock(xi_r$2$clock)
+    );
+    triangle_setup$g4$off_y_r$0 off_y_r$0(
+        .d(off_y_r$0$d),
+        .q(off_y_r$0$q),
+        .clock(off_y_r$0$clock)
+    );
+    triangle_setup$g4$off_y_r$1 off_y_r$1(
+        .d(off_y_r$1$d),
+        .q(off_y_r$1$q),
+        .clock(off_y_r$1$clock)
+    );
+    triangle_setup$g4$off_y_r$2 off_y_r$2(
+        .d(off_y_r$2$d),
+        .q(off_y_r$2$q),
+        .clock(off_y_r$2$clock)
+    );
+    triangle_setup$g4$dmaj_r$0 dmaj_r$0(
+        .d(dmaj_r$0$d),
+        .q(dmaj_r$0$q),
+        .clock(dmaj_r$0$clock)
+    );
+    triangle_setup$g4$dmaj_r$1 dmaj_r$1(
+        .d(dmaj_r$1$d),
+        .q(dmaj_r$1$q),
+        .clock(dmaj_r$1$clock)
+    );
+    triangle_setup$g4$dmaj_r$2 dmaj_r$2(
+        .d(dmaj_r$2$d),
+        .q(dmaj_r$2$q),
+        .clock(dmaj_r$2$clock)
+    );
+    triangle_setup$g4$dmaj_r$3 dmaj_r$3(
+        .d(dmaj_r$3$d),
+        .q(dmaj_r$3$q),
+        .clock(dmaj_r$3$clock)
+    );
+    triangle_setup$g4$dbot_r$0 dbot_r$0(
+        .d(dbot_r$0$d),
+        .q(dbot_r$0$q),
+        .clock(dbot_r$0$clock)
+    );
+    triangle_setup$g4$dbot_r$1 dbot_r$1(
+        .d(dbot_r$1$d),
+        .q(dbot_r$1$q),
+        .clock(dbot_r$1$clock)
+    );
+    triangle_setup$g4$dbot_r$2 dbot_r$2(
+        .d(dbot_r$2$d),
+        .q(dbot_r$2$q),
+        .clock(dbot_r$2$clock)
+    );
+    triangle_setup$g4$dbot_r$3 dbot_r$3(
+        .d(dbot_r$3$d),
+        .q(dbot_r$3$q),
+        .clock(dbot_r$3$clock)
+    );
+    triangle_setup$g4$attr0_r$0 attr0_r$0(
+        .d(attr0_r$0$d),
+        .q(attr0_r$0$q),
+        .clock(attr0_r$0$clock)
+    );
+    triangle_setup$g4$attr0_r$1 attr0_r$1(
+        .d(attr0_r$1$d),
+        .q(attr0_r$1$q),
+        .clock(attr0_r$1$clock)
+    );
+    triangle_setup$g4$attr0_r$2 attr0_r$2(
+        .d(attr0_r$2$d),
+        .q(attr0_r$2$q),
+        .clock(attr0_r$2$clock)
+    );
+    triangle_setup$g4$attr0_r$3 attr0_r$3(
+        .d(attr0_r$3$d),
+        .q(attr0_r$3$q),
+        .clock(attr0_r$3$clock)
+    );
+    triangle_setup$g4$xn0_r xn0_r(
+        .d(xn0_r$d),
+        .q(xn0_r$q),
+        .clock(xn0_r$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -17662,14 +30269,14 @@ module triangle_setup$g4(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
         xn$2 = xw$2[(32'h0)+:(19)];
         yn$2 = yw$2[(32'h0)+:(19)];
         cv$2 = ((yn$2 + half_m1) & int_mask) | half;
-        kdx$0 = xw$2 - xw$0;
-        kdy$0 = yw$2 - yw$0;
+        c_kdx$0 = xw$2 - xw$0;
+        c_kdy$0 = yw$2 - yw$0;
         diff$0 = cv$2 - cv$0;
-        kdx$1 = xw$1 - xw$0;
-        kdy$1 = yw$1 - yw$0;
+        c_kdx$1 = xw$1 - xw$0;
+        c_kdy$1 = yw$1 - yw$0;
         diff$1 = cv$1 - cv$0;
-        kdx$2 = xw$2 - xw$1;
-        kdy$2 = yw$2 - yw$1;
+        c_kdx$2 = xw$2 - xw$1;
+        c_kdy$2 = yw$2 - yw$1;
         diff$2 = cv$2 - cv$1;
         span$0 = diff$0[(frac)+:(13)];
         if (diff$0[nb_msb]) begin
@@ -17683,43 +30290,43 @@ module triangle_setup$g4(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
         if (diff$2[nb_msb]) begin
             span$2 = 32'h0;
         end
-        up = crosses[top_bit] & ~crosses[bottom_bit];
-        edx$0 = kdx$0;
-        edy$0 = kdy$0;
-        count$0 = span$0;
-        edx$1 = kdx$1;
-        edy$1 = kdy$1;
-        count$1 = span$1;
-        edx$2 = kdx$2;
-        edy$2 = kdy$2;
-        count$2 = span$2;
+        c_up = crosses[top_bit] & ~crosses[bottom_bit];
+        c_edx$0 = c_kdx$0;
+        c_edy$0 = c_kdy$0;
+        c_count$0 = span$0;
+        c_edx$1 = c_kdx$1;
+        c_edy$1 = c_kdy$1;
+        c_count$1 = span$1;
+        c_edx$2 = c_kdx$2;
+        c_edy$2 = c_kdy$2;
+        c_count$2 = span$2;
         bx$0 = xn$0;
         by$0 = yn$0;
-        cy$0 = cv$0;
+        c_cy$0 = cv$0;
         bx$1 = xn$0;
         by$1 = yn$0;
-        cy$1 = cv$0;
+        c_cy$1 = cv$0;
         bx$2 = xn$1;
         by$2 = yn$1;
-        cy$2 = cv$1;
-        if (up) begin
-            edx$1 = kdx$2;
-            edy$1 = kdy$2;
-            count$1 = span$2;
-            edx$2 = kdx$1;
-            edy$2 = kdy$1;
-            count$2 = span$1;
+        c_cy$2 = cv$1;
+        if (c_up) begin
+            c_edx$1 = c_kdx$2;
+            c_edy$1 = c_kdy$2;
+            c_count$1 = span$2;
+            c_edx$2 = c_kdx$1;
+            c_edy$2 = c_kdy$1;
+            c_count$2 = span$1;
             bx$0 = xn$2;
             by$0 = yn$2;
-            cy$0 = cv$2 - (frac_mask + 32'h1);
+            c_cy$0 = cv$2 - (frac_mask + 32'h1);
             bx$1 = xn$2;
             by$1 = yn$2;
-            cy$1 = cv$2 - (frac_mask + 32'h1);
-            cy$2 = cv$1 - (frac_mask + 32'h1);
+            c_cy$1 = cv$2 - (frac_mask + 32'h1);
+            c_cy$2 = cv$1 - (frac_mask + 32'h1);
         end
-        edy_d$0 = ((edy$0) & 34'h3ffffffff);
-        edy_d$1 = ((edy$1) & 34'h3ffffffff);
-        edy_d$2 = ((edy$2) & 34'h3ffffffff);
+        c_edy_d$0 = ((c_edy$0) & 34'h3ffffffff);
+        c_edy_d$1 = ((c_edy$1) & 34'h3ffffffff);
+        c_edy_d$2 = ((c_edy$2) & 34'h3ffffffff);
         tracked$0 = start_x$0 - 32'h1;
         if (maj_left) begin
             tracked$0 = start_x$0;
@@ -17732,51 +30339,1150 @@ module triangle_setup$g4(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,
         if (maj_left) begin
             tracked$2 = start_x$2 - 32'h1;
         end
-        ed16$0 = edy_d$0 << frac;
-        toff$0 = cy$0 - by$0;
+        c_ed16$0 = c_edy_d$0 << frac;
+        c_toff$0 = c_cy$0 - by$0;
         xb$0 = bx$0 - half;
-        xf$0 = xb$0 & frac_mask;
-        xi$0 = xb$0 >> frac;
+        c_xf$0 = xb$0 & frac_mask;
+        c_xi$0 = xb$0 >> frac;
         if (xb$0[nb_msb]) begin
-            xi$0 = (xb$0 >> frac) | shr_ext;
+            c_xi$0 = (xb$0 >> frac) | shr_ext;
         end
-        off_y$0 = cy$0 - yn$0;
-        off_x$0 = (tracked$0 << frac) + half - xn$0;
-        ed16$1 = edy_d$1 << frac;
-        toff$1 = cy$1 - by$1;
+        c_off_y$0 = c_cy$0 - yn$0;
+        off_x$0 = (tracked$0 << frac) + half - xn0_r$q;
+        c_ed16$1 = c_edy_d$1 << frac;
+        c_toff$1 = c_cy$1 - by$1;
         xb$1 = bx$1 - half;
-        xf$1 = xb$1 & frac_mask;
-        xi$1 = xb$1 >> frac;
+        c_xf$1 = xb$1 & frac_mask;
+        c_xi$1 = xb$1 >> frac;
         if (xb$1[nb_msb]) begin
-            xi$1 = (xb$1 >> frac) | shr_ext;
+            c_xi$1 = (xb$1 >> frac) | shr_ext;
         end
-        off_y$1 = cy$1 - yn$0;
-        off_x$1 = (tracked$1 << frac) + half - xn$0;
-        ed16$2 = edy_d$2 << frac;
-        toff$2 = cy$2 - by$2;
+        c_off_y$1 = c_cy$1 - yn$0;
+        off_x$1 = (tracked$1 << frac) + half - xn0_r$q;
+        c_ed16$2 = c_edy_d$2 << frac;
+        c_toff$2 = c_cy$2 - by$2;
         xb$2 = bx$2 - half;
-        xf$2 = xb$2 & frac_mask;
-        xi$2 = xb$2 >> frac;
+        c_xf$2 = xb$2 & frac_mask;
+        c_xi$2 = xb$2 >> frac;
         if (xb$2[nb_msb]) begin
-            xi$2 = (xb$2 >> frac) | shr_ext;
+            c_xi$2 = (xb$2 >> frac) | shr_ext;
         end
-        off_y$2 = cy$2 - yn$0;
-        off_x$2 = (tracked$2 << frac) + half - xn$0;
-        dmaj$0 = zn$2 - zn$0;
-        dbot$0 = zn$1 - zn$0;
-        attr0$0 = ((zn$0) & 40'hffffffffff);
-        attr0$1 = ((vc$0) & 40'hffffffffff);
-        attr0$2 = ((vc$1) & 40'hffffffffff);
-        attr0$3 = ((vc$2) & 40'hffffffffff);
-        dmaj$1 = cn$6 - cn$0;
-        dbot$1 = cn$3 - cn$0;
-        dmaj$2 = cn$7 - cn$1;
-        dbot$2 = cn$4 - cn$1;
-        dmaj$3 = cn$8 - cn$2;
-        dbot$3 = cn$5 - cn$2;
+        c_off_y$2 = c_cy$2 - yn$0;
+        off_x$2 = (tracked$2 << frac) + half - xn0_r$q;
+        c_dmaj$0 = zn$2 - zn$0;
+        c_dbot$0 = zn$1 - zn$0;
+        c_attr0$0 = ((zn$0) & 40'hffffffffff);
+        c_attr0$1 = ((vc$0) & 40'hffffffffff);
+        c_attr0$2 = ((vc$1) & 40'hffffffffff);
+        c_attr0$3 = ((vc$2) & 40'hffffffffff);
+        c_dmaj$1 = cn$6 - cn$0;
+        c_dbot$1 = cn$3 - cn$0;
+        c_dmaj$2 = cn$7 - cn$1;
+        c_dbot$2 = cn$4 - cn$1;
+        c_dmaj$3 = cn$8 - cn$2;
+        c_dbot$3 = cn$5 - cn$2;
+        xn0_r$clock = clock;
+        xn0_r$d = xn$0;
+        kdx_r$0$clock = clock;
+        kdx_r$0$d = c_kdx$0;
+        kdx$0 = kdx_r$0$q;
+        kdx_r$1$clock = clock;
+        kdx_r$1$d = c_kdx$1;
+        kdx$1 = kdx_r$1$q;
+        kdx_r$2$clock = clock;
+        kdx_r$2$d = c_kdx$2;
+        kdx$2 = kdx_r$2$q;
+        kdy_r$0$clock = clock;
+        kdy_r$0$d = c_kdy$0;
+        kdy$0 = kdy_r$0$q;
+        kdy_r$1$clock = clock;
+        kdy_r$1$d = c_kdy$1;
+        kdy$1 = kdy_r$1$q;
+        kdy_r$2$clock = clock;
+        kdy_r$2$d = c_kdy$2;
+        kdy$2 = kdy_r$2$q;
+        up_r$clock = clock;
+        up_r$d = c_up;
+        up = up_r$q;
+        edx_r$0$clock = clock;
+        edx_r$0$d = c_edx$0;
+        edx$0 = edx_r$0$q;
+        edx_r$1$clock = clock;
+        edx_r$1$d = c_edx$1;
+        edx$1 = edx_r$1$q;
+        edx_r$2$clock = clock;
+        edx_r$2$d = c_edx$2;
+        edx$2 = edx_r$2$q;
+        edy_r$0$clock = clock;
+        edy_r$0$d = c_edy$0;
+        edy$0 = edy_r$0$q;
+        edy_r$1$clock = clock;
+        edy_r$1$d = c_edy$1;
+        edy$1 = edy_r$1$q;
+        edy_r$2$clock = clock;
+        edy_r$2$d = c_edy$2;
+        edy$2 = edy_r$2$q;
+        edy_d_r$0$clock = clock;
+        edy_d_r$0$d = c_edy_d$0;
+        edy_d$0 = edy_d_r$0$q;
+        edy_d_r$1$clock = clock;
+        edy_d_r$1$d = c_edy_d$1;
+        edy_d$1 = edy_d_r$1$q;
+        edy_d_r$2$clock = clock;
+        edy_d_r$2$d = c_edy_d$2;
+        edy_d$2 = edy_d_r$2$q;
+        ed16_r$0$clock = clock;
+        ed16_r$0$d = c_ed16$0;
+        ed16$0 = ed16_r$0$q;
+        ed16_r$1$clock = clock;
+        ed16_r$1$d = c_ed16$1;
+        ed16$1 = ed16_r$1$q;
+        ed16_r$2$clock = clock;
+        ed16_r$2$d = c_ed16$2;
+        ed16$2 = ed16_r$2$q;
+        cy_r$0$clock = clock;
+        cy_r$0$d = c_cy$0;
+        cy$0 = cy_r$0$q;
+        cy_r$1$clock = clock;
+        cy_r$1$d = c_cy$1;
+        cy$1 = cy_r$1$q;
+        cy_r$2$clock = clock;
+        cy_r$2$d = c_cy$2;
+        cy$2 = cy_r$2$q;
+        count_r$0$clock = clock;
+        count_r$0$d = c_count$0;
+        count$0 = count_r$0$q;
+        count_r$1$clock = clock;
+        count_r$1$d = c_count$1;
+        count$1 = count_r$1$q;
+        count_r$2$clock = clock;
+        count_r$2$d = c_count$2;
+        count$2 = count_r$2$q;
+        toff_r$0$clock = clock;
+        toff_r$0$d = c_toff$0;
+        toff$0 = toff_r$0$q;
+        toff_r$1$clock = clock;
+        toff_r$1$d = c_toff$1;
+        toff$1 = toff_r$1$q;
+        toff_r$2$clock = clock;
+        toff_r$2$d = c_toff$2;
+        toff$2 = toff_r$2$q;
+        xf_r$0$clock = clock;
+        xf_r$0$d = c_xf$0;
+        xf$0 = xf_r$0$q;
+        xf_r$1$clock = clock;
+        xf_r$1$d = c_xf$1;
+        xf$1 = xf_r$1$q;
+        xf_r$2$clock = clock;
+        xf_r$2$d = c_xf$2;
+        xf$2 = xf_r$2$q;
+        xi_r$0$clock = clock;
+        xi_r$0$d = c_xi$0;
+        xi$0 = xi_r$0$q;
+        xi_r$1$clock = clock;
+        xi_r$1$d = c_xi$1;
+        xi$1 = xi_r$1$q;
+        xi_r$2$clock = clock;
+        xi_r$2$d = c_xi$2;
+        xi$2 = xi_r$2$q;
+        off_y_r$0$clock = clock;
+        off_y_r$0$d = c_off_y$0;
+        off_y$0 = off_y_r$0$q;
+        off_y_r$1$clock = clock;
+        off_y_r$1$d = c_off_y$1;
+        off_y$1 = off_y_r$1$q;
+        off_y_r$2$clock = clock;
+        off_y_r$2$d = c_off_y$2;
+        off_y$2 = off_y_r$2$q;
+        dmaj_r$0$clock = clock;
+        dmaj_r$0$d = c_dmaj$0;
+        dmaj$0 = dmaj_r$0$q;
+        dmaj_r$1$clock = clock;
+        dmaj_r$1$d = c_dmaj$1;
+        dmaj$1 = dmaj_r$1$q;
+        dmaj_r$2$clock = clock;
+        dmaj_r$2$d = c_dmaj$2;
+        dmaj$2 = dmaj_r$2$q;
+        dmaj_r$3$clock = clock;
+        dmaj_r$3$d = c_dmaj$3;
+        dmaj$3 = dmaj_r$3$q;
+        dbot_r$0$clock = clock;
+        dbot_r$0$d = c_dbot$0;
+        dbot$0 = dbot_r$0$q;
+        dbot_r$1$clock = clock;
+        dbot_r$1$d = c_dbot$1;
+        dbot$1 = dbot_r$1$q;
+        dbot_r$2$clock = clock;
+        dbot_r$2$d = c_dbot$2;
+        dbot$2 = dbot_r$2$q;
+        dbot_r$3$clock = clock;
+        dbot_r$3$d = c_dbot$3;
+        dbot$3 = dbot_r$3$q;
+        attr0_r$0$clock = clock;
+        attr0_r$0$d = c_attr0$0;
+        attr0$0 = attr0_r$0$q;
+        attr0_r$1$clock = clock;
+        attr0_r$1$d = c_attr0$1;
+        attr0$1 = attr0_r$1$q;
+        attr0_r$2$clock = clock;
+        attr0_r$2$d = c_attr0$2;
+        attr0$2 = attr0_r$2$q;
+        attr0_r$3$clock = clock;
+        attr0_r$3$d = c_attr0$3;
+        attr0$3 = attr0_r$3$q;
     end
     
 endmodule // triangle_setup$g4
+
+
+module triangle_setup$g4$attr0_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$attr0_r$0
+
+
+module triangle_setup$g4$attr0_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$attr0_r$1
+
+
+module triangle_setup$g4$attr0_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$attr0_r$2
+
+
+module triangle_setup$g4$attr0_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$attr0_r$3
+
+
+module triangle_setup$g4$count_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$count_r$0
+
+
+module triangle_setup$g4$count_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$count_r$1
+
+
+module triangle_setup$g4$count_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$count_r$2
+
+
+module triangle_setup$g4$cy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$cy_r$0
+
+
+module triangle_setup$g4$cy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$cy_r$1
+
+
+module triangle_setup$g4$cy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$cy_r$2
+
+
+module triangle_setup$g4$dbot_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$dbot_r$0
+
+
+module triangle_setup$g4$dbot_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$dbot_r$1
+
+
+module triangle_setup$g4$dbot_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$dbot_r$2
+
+
+module triangle_setup$g4$dbot_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$dbot_r$3
+
+
+module triangle_setup$g4$dmaj_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$dmaj_r$0
+
+
+module triangle_setup$g4$dmaj_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$dmaj_r$1
+
+
+module triangle_setup$g4$dmaj_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$dmaj_r$2
+
+
+module triangle_setup$g4$dmaj_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$dmaj_r$3
+
+
+module triangle_setup$g4$ed16_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$ed16_r$0
+
+
+module triangle_setup$g4$ed16_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$ed16_r$1
+
+
+module triangle_setup$g4$ed16_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$ed16_r$2
+
+
+module triangle_setup$g4$edx_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$edx_r$0
+
+
+module triangle_setup$g4$edx_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$edx_r$1
+
+
+module triangle_setup$g4$edx_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$edx_r$2
+
+
+module triangle_setup$g4$edy_d_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$edy_d_r$0
+
+
+module triangle_setup$g4$edy_d_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$edy_d_r$1
+
+
+module triangle_setup$g4$edy_d_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$edy_d_r$2
+
+
+module triangle_setup$g4$edy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$edy_r$0
+
+
+module triangle_setup$g4$edy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$edy_r$1
+
+
+module triangle_setup$g4$edy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$edy_r$2
+
+
+module triangle_setup$g4$kdx_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$kdx_r$0
+
+
+module triangle_setup$g4$kdx_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$kdx_r$1
+
+
+module triangle_setup$g4$kdx_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$kdx_r$2
+
+
+module triangle_setup$g4$kdy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$kdy_r$0
+
+
+module triangle_setup$g4$kdy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$kdy_r$1
+
+
+module triangle_setup$g4$kdy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$kdy_r$2
+
+
+module triangle_setup$g4$off_y_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$off_y_r$0
+
+
+module triangle_setup$g4$off_y_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$off_y_r$1
+
+
+module triangle_setup$g4$off_y_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$off_y_r$2
+
+
+module triangle_setup$g4$toff_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$toff_r$0
+
+
+module triangle_setup$g4$toff_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$toff_r$1
+
+
+module triangle_setup$g4$toff_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$toff_r$2
+
+
+module triangle_setup$g4$up_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$up_r
+
+
+module triangle_setup$g4$xf_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$xf_r$0
+
+
+module triangle_setup$g4$xf_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$xf_r$1
+
+
+module triangle_setup$g4$xf_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$xf_r$2
+
+
+module triangle_setup$g4$xi_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$xi_r$0
+
+
+module triangle_setup$g4$xi_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$xi_r$1
+
+
+module triangle_setup$g4$xi_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$xi_r$2
+
+
+module triangle_setup$g4$xn0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$g4$xn0_r
 
 
 module triangle_setup$gx$0(d,q,clock);
@@ -18537,6 +32243,25 @@ module triangle_setup$iss_r$6(d,q,clock);
     end
           
 endmodule // triangle_setup$iss_r$6
+
+
+module triangle_setup$left(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$left
 
 
 module triangle_setup$mant_s(d,q,clock);
@@ -19553,6 +33278,25 @@ module triangle_setup$norm_r(d,q,clock);
     end
           
 endmodule // triangle_setup$norm_r
+
+
+module triangle_setup$nsh(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$nsh
 
 
 module triangle_setup$num$0(d,q,clock);
@@ -21149,6 +34893,25 @@ module triangle_setup$rho$9(d,q,clock);
     end
           
 endmodule // triangle_setup$rho$9
+
+
+module triangle_setup$rsh(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$rsh
 
 
 module triangle_setup$sign$0(d,q,clock);

@@ -135,11 +135,11 @@ fn divider_exhaustive_w8_is_floor_division() {
 }
 
 /// Exhaustive at the narrow width for other depths, in rust-hdl's simulator: one stage,
-/// 001's five, and one step per stage.
+/// 001's five, one step per stage, and more stages than steps (registers only).
 #[test]
 fn divider_exhaustive_w8_other_latencies_rust_hdl() {
     let divs = all_narrow();
-    for latency in [1, 5, 8] {
+    for latency in [1, 5, 8, 11] {
         let r = hdl_only::<8, 7, 8, 9, 8>(latency, &divs, Flow::BACK_TO_BACK);
         assert!(r.taken.iter().zip(&r.out).all(|(t, o)| o - t == latency as u64), "L = {latency}");
     }
@@ -182,7 +182,7 @@ fn random_full_width(rng: &mut ChaCha8Rng, n: usize) -> Vec<DividerIn> {
     out
 }
 
-/// Random at the full width (`hdl-out/divider.v`, 5 stages), in both simulators, with
+/// Random at the full width (`hdl-out/divider.v`, 25 stages), in both simulators, with
 /// stalls; the error bound measured, also as a reciprocal (OneOverArea's mantissa).
 #[test]
 fn divider_random_full_width_is_floor_division() {
@@ -208,11 +208,12 @@ fn divider_random_full_width_is_floor_division() {
     );
 }
 
-/// 001 §II.2.라: one 5-stage pipelined divider, a division taken every cycle. Back to
-/// back, each result comes out `LATENCY` cycles after its division is taken.
+/// 001 §II.2.라: one pipelined divider, a division taken every cycle (001's has 5 stages;
+/// the default here one quotient step a stage, 25 at class 10). Back to back, each result
+/// comes out `LATENCY` cycles after its division is taken.
 #[test]
 fn divider_latency_and_ii_paper_001() {
-    assert_eq!((LATENCY, II), (5, 1));
+    assert_eq!((LATENCY, II), (DIV_QM as u32, 1));
     let mut rng = ChaCha8Rng::seed_from_u64(seed());
     let divs = random_full_width(&mut rng, 100);
     let vl = verilated("divider");

@@ -331,9 +331,9 @@ fn raster_top_size_classes_11_and_12_lockstep() {
         assert_eq!(prep.triangles.len(), l.triangles.len(), "{what}: the far triangle is sent whole");
         assert!(prep.fragments.last().is_some_and(|&n| n > 0), "{what}: the far triangle draws");
     }
-    let (k, l) = (7, 5);
-    lockstep(11, rtl::n11::raster_top::RasterTop::new(k, l, &Parts::ALL).expect("K = 7, L = 5"));
-    lockstep(12, rtl::n12::raster_top::RasterTop::new(k, l, &Parts::ALL).expect("K = 7, L = 5"));
+    let (k, l) = (7, model::divider::LATENCY as usize);
+    lockstep(11, rtl::n11::raster_top::RasterTop::new(k, l, &Parts::ALL).expect("K = 7, default L"));
+    lockstep(12, rtl::n12::raster_top::RasterTop::new(k, l, &Parts::ALL).expect("K = 7, default L"));
 }
 
 /// A screen larger than class 10's through the `raster_top` the CLI picks for it (class
@@ -578,10 +578,10 @@ fn raster_top_units_present_lockstep() {
             units_frame(&mut dual, units, &format!("{name}, {what}, stalled"), l, cull, &mut |_| rng.gen_bool(0.3));
         }
     }
-    let (k, l) = (7, 5);
-    run(|| rtl::raster_top::RasterTopFragments::new(k, l, &Parts::ALL).expect("K = 7, L = 5"), true, false);
-    run(|| rtl::raster_top::RasterTopSorted::new(k, l, &Parts::ALL).expect("K = 7, L = 5"), false, true);
-    run(|| rtl::raster_top::RasterTopCore::new(k, l, &Parts::ALL).expect("K = 7, L = 5"), false, false);
+    let (k, l) = (7, model::divider::LATENCY as usize);
+    run(|| rtl::raster_top::RasterTopFragments::new(k, l, &Parts::ALL).expect("K = 7, default L"), true, false);
+    run(|| rtl::raster_top::RasterTopSorted::new(k, l, &Parts::ALL).expect("K = 7, default L"), false, true);
+    run(|| rtl::raster_top::RasterTopCore::new(k, l, &Parts::ALL).expect("K = 7, default L"), false, false);
 }
 
 /// `raster_top` built at formats other than its class's defaults (`rtl::custom`; by default
@@ -611,7 +611,8 @@ fn raster_top_custom_formats_lockstep() {
     let crossing = crossing_40x30();
     // The clipping cases with the memory not ready one cycle in five.
     for (what, l, cull, stalling) in [("cube", &cube, cube_cull, false), ("clipping", &crossing, Cull::Back, true)] {
-        let unit = rtl::custom::raster_top::RasterTop::new(7, 5, &Parts::ALL).expect("K = 7, L = 5");
+        let unit = rtl::custom::raster_top::RasterTop::new(7, model::divider::LATENCY as usize, &Parts::ALL)
+            .expect("K = 7, default L");
         let mut dual = Dual::new(unit, vl.model().unwrap_or_else(|e| panic!("{e}")));
         let what = format!("{} formats, {what}", rtl::custom::SOURCE);
         let (prep, out) = check_at(build, &what, &mut dual, l, cull, ready_memory(&mut |c| !stalling || c % 5 != 3));

@@ -73,7 +73,7 @@ pub struct SetupTiming {
 /// ([`crate::triangle_setup::schedule::Schedule`]), 64 products on `setup_multipliers`
 /// multipliers (1 to 7) and the divider's `divider_latency` stages, several triangles in
 /// flight. While a result waits for the edge walk, all of setup waits with it (the
-/// triangles behind it too). 7 multipliers and 001's 5-stage divider: latency 28, II 10.
+/// triangles behind it too). 7 multipliers: latency 48, II 10 with the default 25-stage divider, 28 with 001's 5 stages.
 pub fn setup_timing(t: &Timing) -> SetupTiming {
     let s = Schedule::new(t.setup_multipliers as usize, t.divider_latency as usize).unwrap_or_else(|e| panic!("{e}"));
     SetupTiming { latency: s.latency as u32, interval: s.interval as u32 }
@@ -218,9 +218,15 @@ mod tests {
     use super::*;
     use crate::render::SpanWork;
 
+    /// 001's 5-stage divider, at which the frames below are derived by hand (setup's
+    /// latency 28, II 10).
+    fn l5() -> Timing {
+        Timing { divider_latency: 5, ..Timing::default() }
+    }
+
     #[test]
     fn cycles_setup_timing_is_its_schedules() {
-        // 001's 7 multipliers and 5-stage divider: the schedule's latency and II
+        // 001's 7 multipliers and the default divider: the schedule's latency and II
         // (`triangle_setup::schedule`, whose tests derive them).
         let s = Schedule::new(7, crate::divider::LATENCY as usize).unwrap();
         assert_eq!(
@@ -228,13 +234,14 @@ mod tests {
             SetupTiming { latency: s.latency as u32, interval: s.interval as u32 }
         );
         assert_eq!(setup_latency(&Timing::default()), s.latency as u32);
+        assert_eq!(setup_timing(&l5()), SetupTiming { latency: 28, interval: 10 });
     }
 
     /// Triangles in flight: each is taken on the II grid of the one before (latency 28, II
     /// 10); while one waits for the edge walk, those taken after it wait with it.
     #[test]
     fn cycles_setup_overlaps_triangles_and_waits_as_one() {
-        assert_eq!(setup_timing(&Timing::default()), SetupTiming { latency: 28, interval: 10 });
+        assert_eq!(setup_timing(&l5()), SetupTiming { latency: 28, interval: 10 });
         let walk = |n: usize| Work { passed_cull: true, scanlines: vec![None; n], vector_cycles: 0 };
         // First: culled out at 3 (cull_sort's three stages), taken, done at 31, walked
         // 33..83. Second: culled out at 4, taken at 3 + 10 = 13 (the grid), done at 41,
@@ -242,14 +249,14 @@ mod tests {
         // stage 2 while the second held the output register), taken at 23 (the second in its
         // cycle 10), in flight while the second waits 42 cycles: done at 23 + 28 + 42 = 93,
         // walked 95..96.
-        assert_eq!(scanline_frame(&[walk(50), walk(1), walk(1)], &Timing::default()).total, 96);
+        assert_eq!(scanline_frame(&[walk(50), walk(1), walk(1)], &l5()).total, 96);
         // A triangle waits for every result ahead of it that waits. With a second long walk,
         // the second waits from 41 to 83 as above and the third from 93 to 135; the fourth,
         // taken at 33 (the third in its cycle 10), runs 8 cycles, stands still 42, runs 10,
         // stands still 42, runs 10: done at 145, walked 147..148.
-        assert_eq!(scanline_frame(&[walk(50), walk(50), walk(1), walk(1)], &Timing::default()).total, 148);
+        assert_eq!(scanline_frame(&[walk(50), walk(50), walk(1), walk(1)], &l5()).total, 148);
         // Without the long walk nothing waits: the third is done at 51, walked 53..54.
-        assert_eq!(scanline_frame(&[walk(1), walk(1), walk(1)], &Timing::default()).total, 54);
+        assert_eq!(scanline_frame(&[walk(1), walk(1), walk(1)], &l5()).total, 54);
         // Off the grid, a triangle is taken once setup is empty: as above, the second waits
         // from 41 to 83; the third, culled out at 54 behind 40 culled ones, would be on the
         // grid at 85 (13 + 30 cycles of running) and goes in at 84, the cycle after the
@@ -257,13 +264,13 @@ mod tests {
         let mut frame = vec![walk(50), walk(1)];
         frame.extend(std::iter::repeat_n(Work::default(), 40));
         frame.push(walk(1));
-        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 115);
+        assert_eq!(scanline_frame(&frame, &l5()).total, 115);
         // On the grid: the third, culled out at 14 + 10 behind 10 culled ones, waits for
         // the grid at 33 (the second in its cycle 20), not for 41 and the second's result.
         let mut frame = vec![walk(1), walk(1)];
         frame.extend(std::iter::repeat_n(Work::default(), 10));
         frame.push(walk(1));
-        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 33 + 28 + 3);
+        assert_eq!(scanline_frame(&frame, &l5()).total, 33 + 28 + 3);
     }
 
     /// A span of `c` cycles whose last cycle sends a pixel.
@@ -278,11 +285,11 @@ mod tests {
         // 44..49; the last pixel leaves span's pixel register in 49 and is written 2 cycles
         // after, in cycle 51: 52 cycles.
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], vector_cycles: 0 };
-        let c = scanline_frame(std::slice::from_ref(&w), &Timing::default());
+        let c = scanline_frame(std::slice::from_ref(&w), &l5());
         assert_eq!((c.total, c.span_busy, c.triangles), (52, 15, 1));
         // A culled triangle ahead costs one cycle of cull_sort only.
         let culled = Work::default();
-        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &Timing::default()).total, 53);
+        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &l5()).total, 53);
         // Behind a triangle waiting for setup, culled ones wait too: the first triangle
         // leaves cull_sort for setup in cycle 3, the second (which crosses no scanline)
         // arrives in the output register at 4 and leaves in 13, when the first is in its
@@ -292,24 +299,24 @@ mod tests {
         // pixel, 52).
         let mut frame = vec![w.clone(), Work { passed_cull: true, ..Work::default() }];
         frame.extend(std::iter::repeat_n(culled, 40));
-        assert_eq!(scanline_frame(&frame, &Timing::default()).total, 13 + 40);
+        assert_eq!(scanline_frame(&frame, &l5()).total, 13 + 40);
         // With a 4-deep FIFO the walk runs ahead and span never waits: walking from 34
         // for 53 cycles, the last pixel out of the pixel register 1 later, written 2 later.
         let long = Work { scanlines: vec![full(50), full(1), full(1), None, full(1)], ..w.clone() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&long), &Timing::default()).total, 34 + 53 + 1 + 2);
+        assert_eq!(scanline_frame(std::slice::from_ref(&long), &l5()).total, 34 + 53 + 1 + 2);
         // A one-deep FIFO holds the walk until span takes each command; the last
         // command is emitted only at 86, reaches span at 87: one idle cycle.
-        let one_deep = Timing { span_fifo: 1, ..Timing::default() };
+        let one_deep = Timing { span_fifo: 1, ..l5() };
         assert_eq!(scanline_frame(&[long], &one_deep).total, 34 + 53 + 1 + 1 + 2);
         // Spans that end on pixels sent nowhere (off screen, out of the depth range, or
         // dropped): the frame ends when span is done, or 4 cycles after the last pixel's
         // walk cycle (out of the pixel register, into pixel_out, written).
         let mut tail = w.clone();
         tail.scanlines[2] = Some(SpanWork { cycles: 5, last_sent: Some(1) });
-        assert_eq!(scanline_frame(&[tail.clone()], &Timing::default()).total, 49);
+        assert_eq!(scanline_frame(&[tail.clone()], &l5()).total, 49);
         tail.scanlines[2] = Some(SpanWork { cycles: 1, last_sent: None });
         // Dropped: span done at 45, the pixel walked in 43 out of span in 44, written in 46.
-        assert_eq!(scanline_frame(&[tail], &Timing::default()).total, 47);
+        assert_eq!(scanline_frame(&[tail], &l5()).total, 47);
     }
 
     #[test]
@@ -319,13 +326,13 @@ mod tests {
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], vector_cycles: 0 };
         let mut frame = vec![Work::default(), w.clone()];
         frame.extend(std::iter::repeat_n(Work::default(), 30));
-        let no_cull = Timing { cull_sort: false, ..Timing::default() };
+        let no_cull = Timing { cull_sort: false, ..l5() };
         assert_eq!(scanline_frame(&frame, &no_cull).total, 49);
         // Without pixel_out the frame ends the cycle after span's last fragment (49):
         // 2 cycles less than with the depth test and write behind it.
-        let no_out = Timing { pixel_out: false, ..Timing::default() };
+        let no_out = Timing { pixel_out: false, ..l5() };
         assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 50);
-        let neither = Timing { cull_sort: false, pixel_out: false, ..Timing::default() };
+        let neither = Timing { cull_sort: false, pixel_out: false, ..l5() };
         assert_eq!(scanline_frame(&frame, &neither).total, 47);
     }
 

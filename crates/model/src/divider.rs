@@ -22,8 +22,15 @@ use fx::{unsigned_bits, Formats};
 
 /// Divisions accepted per cycle: one (001: "throughput 1 cycle").
 pub const II: u32 = 1;
-/// Default pipeline depth; 001's divider has 5 stages.
-pub const LATENCY: u32 = 5;
+/// Default pipeline depth: one quotient step per stage at size class 10 (its 25 steps),
+/// so that a stage is one subtract and select, for a 100 MHz clock (issue 17: 141.9 MHz
+/// alone on ECP5, against 39.6 at five steps a stage). 001's divider has 5 stages
+/// (`--param L=5`).
+pub const LATENCY: u32 = 25;
+/// The deepest divider built: stages past the quotient's steps (at formats with fewer than
+/// [`LATENCY`] quotient bits, say) are registers only, so the default depth builds at any
+/// formats.
+pub const LATENCY_MAX: u32 = 32;
 
 /// One division: signed dividend, positive divisor.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

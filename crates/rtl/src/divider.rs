@@ -4,7 +4,7 @@
 //!
 //! It is a radix-2 restoring divider: `QM` quotient bits, one per step, the steps spread
 //! over `latency` pipeline stages (stage `s` does steps `s*QM/L .. (s+1)*QM/L`, rounded
-//! down). Where 001's Taylor-series divider is off by up to 1 LSB, this one is exact, as
+//! down; with more stages than steps, some stages are registers only). Where 001's Taylor-series divider is off by up to 1 LSB, this one is exact, as
 //! `model::divider::divider` is: `q = floor(n / d)`, `r = n - q*d` in `[0, d)`.
 //!
 //! ```text
@@ -17,15 +17,15 @@
 //!        x = (x << 1) | bit                        (one subtractor per step: its borrow decides)
 //!      |   ... QM steps over L stages, a register after each stage ...
 //!      v
-//!  q = neg ? !x : x (Q = QM + 1 bits),  r = neg ? d - 1 - p : p
+//!  q = neg ? !x : x (Q = QM + 1 bits),  r = neg ? d - 1 - p : p  (in the last stage, registered)
 //! ```
 //!
 //! Contract (`model::divider::divider` asserts it): `d` in `[1, 2^D)`, `n` an `N`-bit
 //! two's complement number, and the quotient fits `Q` bits (`m < d * 2^QM`).
 //!
 //! Stream: `inp_valid`/`inp_ready` in, `out_valid`/`out_ready` out; a division taken in
-//! cycle t is at the output in cycle t + L (latency `L` = `model::divider::LATENCY` = 5
-//! by default), one per cycle (II 1). The pipeline advances unless its output is valid and
+//! cycle t is at the output in cycle t + L (latency `L` = `model::divider::LATENCY` = 25
+//! by default: one step a stage at size class 10), one per cycle (II 1). The pipeline advances unless its output is valid and
 //! not taken (`inp_ready = !out_valid | out_ready`), or `hold` is high: setup always takes
 //! the output and holds the whole pipeline, bubbles too, while it waits for the edge walk.
 //!
@@ -36,6 +36,8 @@ use crate::emit::{ports, verilog, Emitted};
 use crate::sim::{PinValue, Pins, Value};
 use super::widths::WIDTHS;
 use crate::Params;
+/// The deepest divider built (`model::divider::LATENCY_MAX`).
+pub const LATENCY_MAX: usize = model::divider::LATENCY_MAX as usize;
 use rust_hdl::prelude::*;
 
 /// Dividend bits of the emitted divider (`div_dividend_bits`).
@@ -86,11 +88,14 @@ pub struct DivStage<const D: usize, const D1: usize, const QM: usize> {
     /// Bit indices: the borrow of a difference (`D`), the MSB of `x` (`QM - 1`).
     borrow: Constant<Bits<8>>,
     x_msb: Constant<Bits<8>>,
+    /// The last stage: it registers the result, a negative dividend's corrected
+    /// (`r = d - 1 - p`, `q = !x`), so that the divider's outputs are registers.
+    fin: Constant<Bit>,
     _steps: usize,
 }
 
 impl<const D: usize, const D1: usize, const QM: usize> DivStage<D, D1, QM> {
-    fn new(steps: usize) -> Self {
+    fn new(steps: usize, fin: bool) -> Self {
         assert_eq!(D1, D + 1, "DivStage: D1 is D + 1");
         Self {
             clock: Default::default(),
@@ -117,6 +122,7 @@ impl<const D: usize, const D1: usize, const QM: usize> DivStage<D, D1, QM> {
             d1: Default::default(),
             borrow: Constant::new(D.to_bits()),
             x_msb: Constant::new((QM - 1).to_bits()),
+            fin: Constant::new(fin),
             _steps: steps,
         }
     }
@@ -149,6 +155,10 @@ impl<const D: usize, const D1: usize, const QM: usize> Logic for DivStage<D, D1,
             for i in self._steps..(self._steps + 1) {
                 self.p_r.d.next = self.tp[i].val().get_bits::<D>(0);
                 self.x_r.d.next = self.tx[i].val();
+                if self.fin.val() & self.neg_in.val() {
+                    self.p_r.d.next = self.d_in.val() - self.tp[i].val().get_bits::<D>(0) - 1;
+                    self.x_r.d.next = !self.tx[i].val();
+                }
             }
             self.d_r.d.next = self.d_in.val();
             self.neg_r.d.next = self.neg_in.val();
@@ -193,6 +203,8 @@ pub struct Divider<const N: usize, const D: usize, const D1: usize, const Q: usi
     /// dividend's top bits for the first partial remainder).
     n_msb: Constant<Bits<8>>,
     qm: Constant<Bits<8>>,
+    /// The quotient's sign bit (`2^QM`).
+    q_sign: Constant<Bits<Q>>,
     _latency: usize,
 }
 
@@ -202,10 +214,12 @@ impl<const N: usize, const D: usize, const D1: usize, const Q: usize, const QM: 
         assert_eq!(Q, QM + 1, "the quotient is QM magnitude bits and a sign");
         assert!(N - 1 <= QM + D, "the dividend's top N-1-QM bits must fit the D-bit partial remainder");
         assert!(
-            (1..=QM).contains(&latency),
-            "divider latency {latency} must be 1 to {QM} (one step at least per stage)"
+            (1..=LATENCY_MAX).contains(&latency),
+            "divider latency {latency} must be 1 to {LATENCY_MAX} (past {QM}, stages without steps)"
         );
-        let stages = (0..latency).map(|s| DivStage::new((s + 1) * QM / latency - s * QM / latency)).collect();
+        let stages = (0..latency)
+            .map(|s| DivStage::new((s + 1) * QM / latency - s * QM / latency, s + 1 == latency))
+            .collect();
         Self {
             clock: Default::default(),
             inp_valid: Default::default(),
@@ -223,6 +237,7 @@ impl<const N: usize, const D: usize, const D1: usize, const Q: usize, const QM: 
             last_x: Default::default(),
             n_msb: Constant::new((N - 1).to_bits()),
             qm: Constant::new(QM.to_bits()),
+            q_sign: Constant::new((1u128 << QM).to_bits()),
             _latency: latency,
         }
     }
@@ -244,13 +259,11 @@ impl<const N: usize, const D: usize, const D1: usize, const Q: usize, const QM: 
             self.advance.next = !self.hold.val() & (!self.stages[s].valid.val() | self.out_ready.val());
             self.out_valid.next = self.stages[s].valid.val();
             self.last_x.next = self.stages[s].x.val();
+            // The last stage registered the corrected result; the sign is the dividend's.
             self.out_r.next = self.stages[s].p.val();
-            if self.stages[s].neg.val() {
-                self.out_r.next = self.stages[s].d.val() - self.stages[s].p.val() - 1;
-            }
             self.out_q.next = bit_cast::<Q, QM>(self.last_x.val());
             if self.stages[s].neg.val() {
-                self.out_q.next = !bit_cast::<Q, QM>(self.last_x.val());
+                self.out_q.next = bit_cast::<Q, QM>(self.last_x.val()) | self.q_sign.val();
             }
         }
         for s in 0..self._latency {
@@ -320,8 +333,8 @@ pub fn emit<const N: usize, const D: usize, const D1: usize, const Q: usize, con
 /// `UNITS` entry: the divider at the RTL's widths with `params["L"]` stages.
 pub fn emit_divider(params: &Params) -> Result<Emitted, String> {
     let l = params["L"] as usize;
-    if !(1..=DIV_QM).contains(&l) {
-        return Err(format!("divider: L = {l} is not supported: 1 to {DIV_QM} stages"));
+    if !(1..=LATENCY_MAX).contains(&l) {
+        return Err(format!("divider: L = {l} is not supported: 1 to {LATENCY_MAX} stages"));
     }
     Ok(emit::<DIV_N, DIV_D, { DIV_D + 1 }, DIV_Q, DIV_QM>(l, params))
 }

@@ -136,11 +136,14 @@ const _: () = assert!(n10::CLASS == fx::RTL_CLASS);
 pub(crate) const K: Param = Param {
     name: "K",
     default: 7,
-    doc: "triangle_setup's multipliers, 1 to 7 (latency 66 to 18 with L = 5); 001 has 7",
+    doc: "triangle_setup's multipliers, 1 to 7 (latency 106 to 48, II 64 to 10, at L = 25); 001 has 7",
 };
 /// Stages of the shared divider (alone, in `triangle_setup` and in `raster_top`).
-pub(crate) const L: Param =
-    Param { name: "L", default: 5, doc: "stages of the shared divider (latency), 1 to 25; 001 has 5" };
+pub(crate) const L: Param = Param {
+    name: "L",
+    default: model::divider::LATENCY as u64,
+    doc: "stages of the shared divider (latency), 1 to 32 (25: one quotient step a stage at class 10); 001 has 5",
+};
 
 /// The switches of the scanline units' optional parts (`switch::Parts`), each 1 (present)
 /// by default.
@@ -278,8 +281,8 @@ pub const UNITS: &[Unit] = &[
 pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("ept", &[("P", 64)]),
     ("cull_sort", &[("N", 10), ("CULL", 1)]),
-    ("divider", &[("N", 10), ("L", 5)]),
-    ("triangle_setup", &[("N", 10), ("K", 7), ("L", 5)]),
+    ("divider", &[("N", 10), ("L", model::divider::LATENCY as u64)]),
+    ("triangle_setup", &[("N", 10), ("K", 7), ("L", model::divider::LATENCY as u64)]),
     ("edge_walk", &[("N", 10), ("CLIP_Y", 1)]),
     ("span", &[("N", 10), ("CLIP_X", 1), ("CLIP_Z", 1)]),
     ("pixel_out", &[("N", 10), ("DEPTH_TEST", 1)]),
@@ -288,7 +291,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
         &[
             ("N", 10),
             ("K", 7),
-            ("L", 5),
+            ("L", model::divider::LATENCY as u64),
             ("CULL_SORT", 1),
             ("PIXEL_OUT", 1),
             ("CULL", 1),

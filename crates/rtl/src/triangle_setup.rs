@@ -51,14 +51,18 @@
 //!  output                                                                               hand-over valid
 //! ```
 //!
-//! Latency 28 (001 Table 3: 34), II 10 = ceil(64 / 7). Twice the area is normalised into a
-//! register, each division's operands go into the divider's operand register
-//! ([`DIVIDER_OPERANDS`]) and 1/area, shifted for eq. (2), into a register, so that no path
-//! runs from the vertices into the divider or from the divider into a multiplier. The
-//! triangle's long-lived registers (vertices, crossings, the area's sign and exponent, each
-//! edge's x, r, q, rho) are copied every II cycles, `Schedule::copies` of them: cycle c
-//! reads copy (c - 1) / II through that copy's [`Geometry`] (`g0` to `g4`), and a division's
-//! result goes into the copy of the cycle after it. Every other register is written by the
+//! Latency 28 (001 Table 3: 34), II 10 = ceil(64 / 7); 48 with the default 25-stage
+//! divider. |area|, its leading one (found in two levels: nibbles, then the highest nibble)
+//! and the normalising shift go into registers, the shift done on the way into the
+//! divider's operand register ([`DIVIDER_OPERANDS`]), and 1/area, shifted for eq. (2), into a
+//! register, so that no path runs from the vertices into the divider or from the divider into
+//! a multiplier. The triangle's long-lived registers (vertices, crossings, the area's sign
+//! and exponent, each edge's x, r, q, rho) are copied every II cycles, `Schedule::copies` of
+//! them: cycle c reads copy (c - 1) / II through that copy's [`Geometry`] (`g0` to `g4`),
+//! whose outputs are registers loaded from the copy's next vertices (so they always hold the
+//! geometry of the copy's vertices, and no path runs through its adders into a multiplier's
+//! or the divider's operands), and a division's result goes into the copy of the cycle after
+//! it. Every other register is written by the
 //! next triangle only after this one has read it for the last time, which `Schedule::new`
 //! checks. A deeper divider (for a faster clock) keeps II at 10 up to the deepest, L = 25
 //! (latency 48, five copies; beyond five, II would be a fifth of the latency). While a result waits for the edge
@@ -72,7 +76,7 @@
 mod geometry;
 
 use super::cull_sort::{COLOR, OUTCODE, XY, Z};
-use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_Q, DIV_QM};
+use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_Q, LATENCY_MAX};
 use crate::emit::{ports, verilog, Emitted};
 use crate::mul::PipelinedMul;
 use crate::parts::defaults;
@@ -96,6 +100,9 @@ pub const MUL_P: usize = WIDTHS.mul_p;
 const W: usize = MUL_P;
 /// Twice the area, exact.
 const AREA: usize = DERIVED.area_bits as usize;
+/// Its nibbles, and its bits in whole nibbles.
+const NIB: usize = AREA.div_ceil(4);
+const AREA_P: usize = 4 * NIB;
 /// The narrow signed domain of the B operands and the edge geometry.
 const NB: usize = MUL_B;
 /// Gradients and OneOverArea x delta (`ooa_d`).
@@ -187,12 +194,22 @@ pub struct TriangleSetup {
     g3: Geometry,
     g4: Geometry,
 
-    // Normalise, into a register.
+    // Normalise: |area|, its leading one's position (`exp`) and the shift that normalises
+    // it into registers; shifted as it goes into the divider.
     area: DFF<Bits<AREA>>,
     area_abs: Signal<Local, Bits<AREA>>,
+    /// |area| in whole nibbles; per nibble, whether it has a one and the position of its
+    /// leading one, and the shift that puts it at `recip_top`: the leading one found in
+    /// two levels (nibbles, then the highest nibble with a one).
+    abs_p: Signal<Local, Bits<AREA_P>>,
+    nib_any: [Signal<Local, Bit>; NIB],
+    nib_pos: [Signal<Local, Bits<6>>; NIB],
+    nib_sh: [Signal<Local, Bits<6>>; NIB],
     exp_c: Signal<Local, Bits<6>>,
-    norm_d: Signal<Local, Bits<DIV_D>>,
+    nsh_c: Signal<Local, Bits<6>>,
     norm: DFF<Bits<DIV_D>>,
+    nsh: DFF<Bits<6>>,
+    norm_d: Signal<Local, Bits<DIV_D>>,
 
     /// The divider's operands, registered ([`DIVIDER_OPERANDS`]).
     div_v: DFF<Bit>,
@@ -200,10 +217,12 @@ pub struct TriangleSetup {
     div_d: DFF<Bits<DIV_D>>,
 
     // Divider results.
-    /// 1/area's mantissa, shifted left by 15 - exp when exp <= 15, and the area's exponent,
-    /// registered from 1/area's return for eq. (2) (the exponent from the copy of that cycle).
+    /// 1/area's mantissa, shifted left by 15 - exp when exp <= 15, and for eq. (2)'s
+    /// products the right shift exp - 15 and whether exp <= 15, registered from 1/area's
+    /// return (the area's exponent from the copy of that cycle).
     mant_s: DFF<Bits<MUL_A>>,
-    exp_e: DFF<Bits<6>>,
+    rsh: DFF<Bits<6>>,
+    left: DFF<Bit>,
     exp_r: Signal<Local, Bits<6>>,
     q_n: Signal<Local, Bits<NB>>,
     /// The quotient's sign bit and its extension into `q_n` (none when the quotient is
@@ -239,7 +258,6 @@ pub struct TriangleSetup {
     /// the mantissa goes into the multipliers shifted left by 15 - exp instead.
     shr: [Signal<Local, Bits<G>>; 4],
     lsh: Signal<Local, Bits<6>>,
-    rsh: Signal<Local, Bits<6>>,
 
     // Accumulators, and what each adds its products to: itself, or 0 for the first.
     area_base: Signal<Local, Bits<AREA>>,
@@ -290,6 +308,8 @@ pub struct TriangleSetup {
     /// 2^56: 1/area's dividend (`recip_operands`); the exponent of 1/area's top bit (32).
     recip_n: Constant<Bits<DIV_N>>,
     recip_top: Constant<Bits<6>>,
+    /// i, for the leading one's position.
+    bit_index: [Constant<Bits<6>>; AREA_P],
     /// `ooa_d.frac + s - ooa.frac` (15): eq. (2)'s shift is this less exp.
     eq_shift: Constant<Bits<6>>,
     /// Per attribute: the gradient's slice (`ooa_d.frac + z.frac - dz.frac` and the
@@ -318,8 +338,8 @@ pub(crate) fn ones_from<const B: usize>(from: usize, to: usize) -> Constant<Bits
 impl TriangleSetup {
     /// Setup with `k` multipliers and an `l`-stage divider (see [`Schedule::new`]).
     pub fn new(k: usize, l: usize) -> Result<TriangleSetup, String> {
-        if !(1..=DIV_QM).contains(&l) {
-            return Err(format!("triangle_setup: L = {l} divider stages is not supported: 1 to {DIV_QM}"));
+        if !(1..=LATENCY_MAX).contains(&l) {
+            return Err(format!("triangle_setup: L = {l} divider stages is not supported: 1 to {LATENCY_MAX}"));
         }
         let s = Schedule::new(k, l)?;
         // The counters and the phase are 8 bits wide.
@@ -370,14 +390,22 @@ impl TriangleSetup {
             g4: Default::default(),
             area: Default::default(),
             area_abs: Default::default(),
+            abs_p: Default::default(),
+            nib_any: defaults(),
+            nib_pos: defaults(),
+            nib_sh: defaults(),
             exp_c: Default::default(),
-            norm_d: Default::default(),
+            nsh_c: Default::default(),
             norm: Default::default(),
+            nsh: Default::default(),
+            norm_d: Default::default(),
+            bit_index: consts(|i| i),
             div_v: Default::default(),
             div_n: Default::default(),
             div_d: Default::default(),
             mant_s: Default::default(),
-            exp_e: Default::default(),
+            rsh: Default::default(),
+            left: Default::default(),
             exp_r: Default::default(),
             q_n: Default::default(),
             q_msb: Constant::new((QL - 1).to_bits()),
@@ -399,7 +427,6 @@ impl TriangleSetup {
             attr0: defaults(),
             shr: defaults(),
             lsh: Default::default(),
-            rsh: Default::default(),
             area_base: Default::default(),
             num_base: defaults(),
             gx_base: defaults(),
@@ -454,7 +481,7 @@ impl Logic for TriangleSetup {
     #[hdl_gen]
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written.
-        dff_setup!(self, clock, area, norm, div_v, div_n, div_d, mant_s, exp_e, norm_r, handover_r, valid_r, busy_r, phase, off_grid_r);
+        dff_setup!(self, clock, area, norm, nsh, div_v, div_n, div_d, mant_s, rsh, left, norm_r, handover_r, valid_r, busy_r, phase, off_grid_r);
         dff_setup!(self, clock, o_walk, o_maj_left);
         for e in 0..3 {
             self.o_j[e].clock.next = self.clock.val();
@@ -464,7 +491,7 @@ impl Logic for TriangleSetup {
             self.o_d[e].clock.next = self.clock.val();
             self.o_d[e].d.next = self.o_d[e].q.val();
         }
-        clock!(self, clock, div);
+        clock!(self, clock, div, g0, g1, g2, g3, g4);
         for v in 0..COPIES_MAX {
             self.t[v].clock.next = self.clock.val();
             self.t[v].d.next = self.t[v].q.val();
@@ -642,80 +669,96 @@ impl Logic for TriangleSetup {
         }
         self.off_grid_r.d.next = self.phase.d.val() != 0;
 
-        // ---- Geometry of each copy.
+        // ---- Geometry of each copy, from its next vertices (as written above) into the
+        // geometry's registers: they hold the geometry of the copy's vertices as they are.
         for i in 0..3 {
-            self.g0.vx[i].next = self.vx[i].q.val();
-            self.g0.vy[i].next = self.vy[i].q.val();
-            self.g0.vz[i].next = self.vz[i].q.val();
+            self.g0.vx[i].next = self.vx[i].d.val();
+            self.g0.vy[i].next = self.vy[i].d.val();
+            self.g0.vz[i].next = self.vz[i].d.val();
             self.g0.start_x[i].next = self.x[i].q.val();
         }
         for i in 0..9 {
-            self.g0.vc[i].next = self.vc[i].q.val();
+            self.g0.vc[i].next = self.vc[i].d.val();
         }
-        self.g0.crosses.next = self.crosses[0].q.val();
+        self.g0.crosses.next = self.crosses[0].d.val();
         self.g0.maj_left.next = self.maj_left[0].val();
         for i in 0..3 {
-            self.g1.vx[i].next = self.vx[3 + i].q.val();
-            self.g1.vy[i].next = self.vy[3 + i].q.val();
-            self.g1.vz[i].next = self.vz[3 + i].q.val();
+            self.g1.vx[i].next = self.vx[3 + i].d.val();
+            self.g1.vy[i].next = self.vy[3 + i].d.val();
+            self.g1.vz[i].next = self.vz[3 + i].d.val();
             self.g1.start_x[i].next = self.x[3 + i].q.val();
         }
         for i in 0..9 {
-            self.g1.vc[i].next = self.vc[9 + i].q.val();
+            self.g1.vc[i].next = self.vc[9 + i].d.val();
         }
-        self.g1.crosses.next = self.crosses[1].q.val();
+        self.g1.crosses.next = self.crosses[1].d.val();
         self.g1.maj_left.next = self.maj_left[1].val();
         for i in 0..3 {
-            self.g2.vx[i].next = self.vx[6 + i].q.val();
-            self.g2.vy[i].next = self.vy[6 + i].q.val();
-            self.g2.vz[i].next = self.vz[6 + i].q.val();
+            self.g2.vx[i].next = self.vx[6 + i].d.val();
+            self.g2.vy[i].next = self.vy[6 + i].d.val();
+            self.g2.vz[i].next = self.vz[6 + i].d.val();
             self.g2.start_x[i].next = self.x[6 + i].q.val();
         }
         for i in 0..9 {
-            self.g2.vc[i].next = self.vc[18 + i].q.val();
+            self.g2.vc[i].next = self.vc[18 + i].d.val();
         }
-        self.g2.crosses.next = self.crosses[2].q.val();
+        self.g2.crosses.next = self.crosses[2].d.val();
         self.g2.maj_left.next = self.maj_left[2].val();
         for i in 0..3 {
-            self.g3.vx[i].next = self.vx[9 + i].q.val();
-            self.g3.vy[i].next = self.vy[9 + i].q.val();
-            self.g3.vz[i].next = self.vz[9 + i].q.val();
+            self.g3.vx[i].next = self.vx[9 + i].d.val();
+            self.g3.vy[i].next = self.vy[9 + i].d.val();
+            self.g3.vz[i].next = self.vz[9 + i].d.val();
             self.g3.start_x[i].next = self.x[9 + i].q.val();
         }
         for i in 0..9 {
-            self.g3.vc[i].next = self.vc[27 + i].q.val();
+            self.g3.vc[i].next = self.vc[27 + i].d.val();
         }
-        self.g3.crosses.next = self.crosses[3].q.val();
+        self.g3.crosses.next = self.crosses[3].d.val();
         self.g3.maj_left.next = self.maj_left[3].val();
         for i in 0..3 {
-            self.g4.vx[i].next = self.vx[12 + i].q.val();
-            self.g4.vy[i].next = self.vy[12 + i].q.val();
-            self.g4.vz[i].next = self.vz[12 + i].q.val();
+            self.g4.vx[i].next = self.vx[12 + i].d.val();
+            self.g4.vy[i].next = self.vy[12 + i].d.val();
+            self.g4.vz[i].next = self.vz[12 + i].d.val();
             self.g4.start_x[i].next = self.x[12 + i].q.val();
         }
         for i in 0..9 {
-            self.g4.vc[i].next = self.vc[36 + i].q.val();
+            self.g4.vc[i].next = self.vc[36 + i].d.val();
         }
-        self.g4.crosses.next = self.crosses[4].q.val();
+        self.g4.crosses.next = self.crosses[4].d.val();
         self.g4.maj_left.next = self.maj_left[4].val();
 
-        // ---- Normalise twice the area for 1/area (`recip_operands`): |a| << (32 - exp),
-        // into a register.
+        // ---- Normalise twice the area for 1/area (`recip_operands`): |a| << (32 - exp).
+        // |a|, exp and the shift into registers; the shift is done as 1/area is issued.
         self.area_abs.next = self.area.q.val();
         if self.area.q.val().get_bit(self.area_msb.val().index()) {
             self.area_abs.next = bits::<AREA>(0) - self.area.q.val();
         }
+        self.abs_p.next = bit_cast::<AREA_P, AREA>(self.area_abs.val());
+        for g in 0..NIB {
+            self.nib_any[g].next = false;
+            self.nib_pos[g].next = 0.into();
+            for j in 0..4 {
+                if self.abs_p.val().get_bit(4 * g + j) {
+                    self.nib_any[g].next = true;
+                    self.nib_pos[g].next = self.bit_index[4 * g + j].val();
+                }
+            }
+            self.nib_sh[g].next = self.recip_top.val() - self.nib_pos[g].val();
+        }
         self.exp_c.next = 0.into();
-        for i in 0..AREA {
-            if self.area_abs.val().get_bit(i) {
-                self.exp_c.next = i.to_bits();
+        self.nsh_c.next = self.recip_top.val();
+        for g in 0..NIB {
+            if self.nib_any[g].val() {
+                self.exp_c.next = self.nib_pos[g].val();
+                self.nsh_c.next = self.nib_sh[g].val();
             }
         }
-        self.norm_d.next = self.area_abs.val() << (self.recip_top.val() - self.exp_c.val());
         if self.at_norm.val() {
-            self.norm.d.next = self.norm_d.val();
+            self.norm.d.next = self.area_abs.val();
+            self.nsh.d.next = self.nsh_c.val();
             self.exp[0].d.next = self.exp_c.val();
         }
+        self.norm_d.next = self.norm.q.val() << self.nsh.q.val();
 
         // ---- The divider: seven divisions issued in the first II cycles (copy 0,
         // `Schedule::build`) into its operand register (held, as the divider is, while
@@ -736,7 +779,7 @@ impl Logic for TriangleSetup {
         if self.at_iss[0].val() {
             self.div_v.d.next = true;
             self.div_n.d.next = self.recip_n.val();
-            self.div_d.d.next = self.norm.q.val();
+            self.div_d.d.next = self.norm_d.val();
         }
         for e in 0..3 {
             // Unused divisions go in as 0/1 (`model::divider`).
@@ -771,13 +814,13 @@ impl Logic for TriangleSetup {
         }
         self.lsh.next = self.eq_shift.val() - self.exp_r.val();
         if self.at_res[0].val() {
-            self.exp_e.d.next = self.exp_r.val();
+            self.rsh.d.next = self.exp_r.val() - self.eq_shift.val();
+            self.left.d.next = self.exp_r.val() <= self.eq_shift.val();
             self.mant_s.d.next = bit_cast::<MUL_A, MANT>(self.div.out_q.val().get_bits::<MANT>(0));
             if self.exp_r.val() <= self.eq_shift.val() {
                 self.mant_s.d.next = bit_cast::<MUL_A, MANT>(self.div.out_q.val().get_bits::<MANT>(0)) << self.lsh.val();
             }
         }
-        self.rsh.next = self.exp_e.q.val() - self.eq_shift.val();
         for e in 0..3 {
             // The start: x = first pixel at or right of the edge, r = x*D - num in [0, D).
             self.xi[e].next = self.g0.xi[e].val();
@@ -1127,9 +1170,9 @@ impl Logic for TriangleSetup {
         }
         // eq. (2): sign * delta * mant * 2^(15 - exp), floor, into `ooa_d`.
         for d in 0..4 {
-            self.shr[d].next = self.pe[d].val() >> self.rsh.val();
+            self.shr[d].next = self.pe[d].val() >> self.rsh.q.val();
             if self.pe[d].val().get_bit(self.p_msb.val().index()) {
-                self.shr[d].next = (self.pe[d].val() >> self.rsh.val()) | !(self.ones.val() >> self.rsh.val());
+                self.shr[d].next = (self.pe[d].val() >> self.rsh.q.val()) | !(self.ones.val() >> self.rsh.q.val());
             }
         }
         for a in 0..4 {
@@ -1158,7 +1201,7 @@ impl Logic for TriangleSetup {
             for d in 0..4 {
                 if self.add_r[8 + d].q.val() {
                     self.p[d].d.next = self.shr[d].val();
-                    if self.exp_e.q.val() <= self.eq_shift.val() {
+                    if self.left.q.val() {
                         self.p[d].d.next = self.pe[d].val();
                     }
                 }

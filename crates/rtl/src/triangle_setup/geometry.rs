@@ -6,7 +6,8 @@
 //!
 //! Setup has several triangles in flight (see `Schedule`) and a copy of a triangle's
 //! registers for each II cycles of its schedule, so it has one of these per copy: the part
-//! of the schedule that reads a copy reads its geometry.
+//! of the schedule that reads a copy reads its geometry, from registers (issue 17: the
+//! scanline centres and counts into the division issue were setup's critical path).
 
 use super::super::cull_sort::{outcode_bit, COLOR, OUTCODE, XY, Z};
 use super::super::divider::DIV_D;
@@ -16,9 +17,13 @@ use rust_hdl::prelude::*;
 
 const S: u32 = FORMATS.xy.frac;
 
-/// A triangle's geometry; combinational.
+/// A triangle's geometry, registered: its inputs are the copy's next vertices (the values
+/// its registers are loaded with), so its outputs, registers loaded every cycle, are the
+/// geometry of the vertices the copy holds, one cycle of adders away from every register
+/// that reads them. `off_x`, from the copy's start pixels and side, is combinational.
 #[derive(LogicBlock)]
 pub struct Geometry {
+    pub clock: Signal<In, Clock>,
     /// The triangle: x, y, z, colours (3 * vertex + channel), and its crossings.
     pub vx: [Signal<In, Bits<XY>>; 3],
     pub vy: [Signal<In, Bits<XY>>; 3],
@@ -56,6 +61,43 @@ pub struct Geometry {
     pub dbot: [Signal<Out, Bits<NB>>; 4],
     pub attr0: [Signal<Out, Bits<ATTR>>; 4],
 
+    /// The geometry as computed (from the copy's next vertices), and its registers: each
+    /// output above but `off_x` is its register, so that no path runs from a copy's vertices
+    /// through the adders above into the multipliers' operands or the divider's.
+    c_kdx: [Signal<Local, Bits<W>>; 3],
+    c_kdy: [Signal<Local, Bits<G>>; 3],
+    c_up: Signal<Local, Bit>,
+    c_edx: [Signal<Local, Bits<W>>; 3],
+    c_edy: [Signal<Local, Bits<G>>; 3],
+    c_edy_d: [Signal<Local, Bits<DIV_D>>; 3],
+    c_ed16: [Signal<Local, Bits<DIV_D>>; 3],
+    c_cy: [Signal<Local, Bits<NB>>; 3],
+    c_count: [Signal<Local, Bits<PIXEL>>; 3],
+    c_toff: [Signal<Local, Bits<NB>>; 3],
+    c_xf: [Signal<Local, Bits<NB>>; 3],
+    c_xi: [Signal<Local, Bits<NB>>; 3],
+    c_off_y: [Signal<Local, Bits<NB>>; 3],
+    c_dmaj: [Signal<Local, Bits<NB>>; 4],
+    c_dbot: [Signal<Local, Bits<NB>>; 4],
+    c_attr0: [Signal<Local, Bits<ATTR>>; 4],
+    kdx_r: [DFF<Bits<W>>; 3],
+    kdy_r: [DFF<Bits<G>>; 3],
+    up_r: DFF<Bit>,
+    edx_r: [DFF<Bits<W>>; 3],
+    edy_r: [DFF<Bits<G>>; 3],
+    edy_d_r: [DFF<Bits<DIV_D>>; 3],
+    ed16_r: [DFF<Bits<DIV_D>>; 3],
+    cy_r: [DFF<Bits<NB>>; 3],
+    count_r: [DFF<Bits<PIXEL>>; 3],
+    toff_r: [DFF<Bits<NB>>; 3],
+    xf_r: [DFF<Bits<NB>>; 3],
+    xi_r: [DFF<Bits<NB>>; 3],
+    off_y_r: [DFF<Bits<NB>>; 3],
+    dmaj_r: [DFF<Bits<NB>>; 4],
+    dbot_r: [DFF<Bits<NB>>; 4],
+    attr0_r: [DFF<Bits<ATTR>>; 4],
+    /// v0's x in the narrow domain, registered for `off_x`.
+    xn0_r: DFF<Bits<NB>>,
     /// x, y sign-extended to `W` and `G` bits (y only meets the multipliers' A side and
     /// divisors); z, colours as `NB`-bit numbers.
     xw: [Signal<Local, Bits<W>>; 3],
@@ -126,6 +168,40 @@ impl Default for Geometry {
             dmaj: Default::default(),
             dbot: Default::default(),
             attr0: Default::default(),
+            clock: Default::default(),
+            c_kdx: Default::default(),
+            kdx_r: Default::default(),
+            c_kdy: Default::default(),
+            kdy_r: Default::default(),
+            c_up: Default::default(),
+            up_r: Default::default(),
+            c_edx: Default::default(),
+            edx_r: Default::default(),
+            c_edy: Default::default(),
+            edy_r: Default::default(),
+            c_edy_d: Default::default(),
+            edy_d_r: Default::default(),
+            c_ed16: Default::default(),
+            ed16_r: Default::default(),
+            c_cy: Default::default(),
+            cy_r: Default::default(),
+            c_count: Default::default(),
+            count_r: Default::default(),
+            c_toff: Default::default(),
+            toff_r: Default::default(),
+            c_xf: Default::default(),
+            xf_r: Default::default(),
+            c_xi: Default::default(),
+            xi_r: Default::default(),
+            c_off_y: Default::default(),
+            off_y_r: Default::default(),
+            c_dmaj: Default::default(),
+            dmaj_r: Default::default(),
+            c_dbot: Default::default(),
+            dbot_r: Default::default(),
+            c_attr0: Default::default(),
+            attr0_r: Default::default(),
+            xn0_r: Default::default(),
             xw: Default::default(),
             yw: Default::default(),
             zn: Default::default(),
@@ -214,14 +290,14 @@ impl Logic for Geometry {
         }
         // e_maj, e_bot, e_top, and the scanlines between their ends' first centres
         // (`span` in the model).
-        self.kdx[0].next = self.xw[2].val() - self.xw[0].val();
-        self.kdy[0].next = self.yw[2].val() - self.yw[0].val();
+        self.c_kdx[0].next = self.xw[2].val() - self.xw[0].val();
+        self.c_kdy[0].next = self.yw[2].val() - self.yw[0].val();
         self.diff[0].next = self.cv[2].val() - self.cv[0].val();
-        self.kdx[1].next = self.xw[1].val() - self.xw[0].val();
-        self.kdy[1].next = self.yw[1].val() - self.yw[0].val();
+        self.c_kdx[1].next = self.xw[1].val() - self.xw[0].val();
+        self.c_kdy[1].next = self.yw[1].val() - self.yw[0].val();
         self.diff[1].next = self.cv[1].val() - self.cv[0].val();
-        self.kdx[2].next = self.xw[2].val() - self.xw[1].val();
-        self.kdy[2].next = self.yw[2].val() - self.yw[1].val();
+        self.c_kdx[2].next = self.xw[2].val() - self.xw[1].val();
+        self.c_kdy[2].next = self.yw[2].val() - self.yw[1].val();
         self.diff[2].next = self.cv[2].val() - self.cv[1].val();
         for k in 0..3 {
             self.span[k].next = self.diff[k].val().get_bits::<PIXEL>(self.frac.val().index());
@@ -232,41 +308,41 @@ impl Logic for Geometry {
         // The walk direction (003) and the edges in walk order. Walking down: e_maj,
         // e_bot, e_top, each from its upper vertex and first centre. Walking up: e_maj,
         // e_top, e_bot, each from its lower vertex and last centre.
-        self.up.next = self.crosses.val().get_bit(self.top_bit.val().index())
+        self.c_up.next = self.crosses.val().get_bit(self.top_bit.val().index())
             & !self.crosses.val().get_bit(self.bottom_bit.val().index());
         for e in 0..3 {
-            self.edx[e].next = self.kdx[e].val();
-            self.edy[e].next = self.kdy[e].val();
-            self.count[e].next = self.span[e].val();
+            self.c_edx[e].next = self.c_kdx[e].val();
+            self.c_edy[e].next = self.c_kdy[e].val();
+            self.c_count[e].next = self.span[e].val();
         }
         self.bx[0].next = self.xn[0].val();
         self.by[0].next = self.yn[0].val();
-        self.cy[0].next = self.cv[0].val();
+        self.c_cy[0].next = self.cv[0].val();
         self.bx[1].next = self.xn[0].val();
         self.by[1].next = self.yn[0].val();
-        self.cy[1].next = self.cv[0].val();
+        self.c_cy[1].next = self.cv[0].val();
         self.bx[2].next = self.xn[1].val();
         self.by[2].next = self.yn[1].val();
-        self.cy[2].next = self.cv[1].val();
-        if self.up.val() {
-            self.edx[1].next = self.kdx[2].val();
-            self.edy[1].next = self.kdy[2].val();
-            self.count[1].next = self.span[2].val();
-            self.edx[2].next = self.kdx[1].val();
-            self.edy[2].next = self.kdy[1].val();
-            self.count[2].next = self.span[1].val();
+        self.c_cy[2].next = self.cv[1].val();
+        if self.c_up.val() {
+            self.c_edx[1].next = self.c_kdx[2].val();
+            self.c_edy[1].next = self.c_kdy[2].val();
+            self.c_count[1].next = self.span[2].val();
+            self.c_edx[2].next = self.c_kdx[1].val();
+            self.c_edy[2].next = self.c_kdy[1].val();
+            self.c_count[2].next = self.span[1].val();
             self.bx[0].next = self.xn[2].val();
             self.by[0].next = self.yn[2].val();
-            self.cy[0].next = self.cv[2].val() - (self.frac_mask.val() + 1);
+            self.c_cy[0].next = self.cv[2].val() - (self.frac_mask.val() + 1);
             self.bx[1].next = self.xn[2].val();
             self.by[1].next = self.yn[2].val();
-            self.cy[1].next = self.cv[2].val() - (self.frac_mask.val() + 1);
-            self.cy[2].next = self.cv[1].val() - (self.frac_mask.val() + 1);
+            self.c_cy[1].next = self.cv[2].val() - (self.frac_mask.val() + 1);
+            self.c_cy[2].next = self.cv[1].val() - (self.frac_mask.val() + 1);
         }
         // dy is positive; `bit_cast` (a loop's index cannot) widens it to the divisor.
-        self.edy_d[0].next = bit_cast::<DIV_D, G>(self.edy[0].val());
-        self.edy_d[1].next = bit_cast::<DIV_D, G>(self.edy[1].val());
-        self.edy_d[2].next = bit_cast::<DIV_D, G>(self.edy[2].val());
+        self.c_edy_d[0].next = bit_cast::<DIV_D, G>(self.c_edy[0].val());
+        self.c_edy_d[1].next = bit_cast::<DIV_D, G>(self.c_edy[1].val());
+        self.c_edy_d[2].next = bit_cast::<DIV_D, G>(self.c_edy[2].val());
         // e_maj is the left side when maj_left; the short edges are then on the right.
         self.tracked[0].next = self.start_x[0].val() - 1;
         if self.maj_left.val() {
@@ -279,30 +355,112 @@ impl Logic for Geometry {
             }
         }
         for e in 0..3 {
-            self.ed16[e].next = self.edy_d[e].val() << self.frac.val();
+            self.c_ed16[e].next = self.c_edy_d[e].val() << self.frac.val();
             // The start division's offsets: t from the base vertex to the centre, and the
             // base's x - 1/2 split into pixel and fraction (floor).
-            self.toff[e].next = self.cy[e].val() - self.by[e].val();
+            self.c_toff[e].next = self.c_cy[e].val() - self.by[e].val();
             self.xb[e].next = self.bx[e].val() - self.half.val();
-            self.xf[e].next = self.xb[e].val() & self.frac_mask.val();
-            self.xi[e].next = self.xb[e].val() >> self.frac.val();
+            self.c_xf[e].next = self.xb[e].val() & self.frac_mask.val();
+            self.c_xi[e].next = self.xb[e].val() >> self.frac.val();
             if self.xb[e].val().get_bit(self.nb_msb.val().index()) {
-                self.xi[e].next = (self.xb[e].val() >> self.frac.val()) | self.shr_ext.val();
+                self.c_xi[e].next = (self.xb[e].val() >> self.frac.val()) | self.shr_ext.val();
             }
             // Offsets from v0 of the pixel centre this side tracks.
-            self.off_y[e].next = self.cy[e].val() - self.yn[0].val();
-            self.off_x[e].next = (self.tracked[e].val() << self.frac.val()) + self.half.val() - self.xn[0].val();
+            self.c_off_y[e].next = self.c_cy[e].val() - self.yn[0].val();
+            self.off_x[e].next = (self.tracked[e].val() << self.frac.val()) + self.half.val() - self.xn0_r.q.val();
         }
         // Attribute differences along e_maj and e_bot; v0's attributes.
-        self.dmaj[0].next = self.zn[2].val() - self.zn[0].val();
-        self.dbot[0].next = self.zn[1].val() - self.zn[0].val();
-        self.attr0[0].next = bit_cast::<ATTR, NB>(self.zn[0].val());
-        self.attr0[1].next = bit_cast::<ATTR, COLOR>(self.vc[0].val());
-        self.attr0[2].next = bit_cast::<ATTR, COLOR>(self.vc[1].val());
-        self.attr0[3].next = bit_cast::<ATTR, COLOR>(self.vc[2].val());
+        self.c_dmaj[0].next = self.zn[2].val() - self.zn[0].val();
+        self.c_dbot[0].next = self.zn[1].val() - self.zn[0].val();
+        self.c_attr0[0].next = bit_cast::<ATTR, NB>(self.zn[0].val());
+        self.c_attr0[1].next = bit_cast::<ATTR, COLOR>(self.vc[0].val());
+        self.c_attr0[2].next = bit_cast::<ATTR, COLOR>(self.vc[1].val());
+        self.c_attr0[3].next = bit_cast::<ATTR, COLOR>(self.vc[2].val());
         for c in 0..3 {
-            self.dmaj[c + 1].next = self.cn[6 + c].val() - self.cn[c].val();
-            self.dbot[c + 1].next = self.cn[3 + c].val() - self.cn[c].val();
+            self.c_dmaj[c + 1].next = self.cn[6 + c].val() - self.cn[c].val();
+            self.c_dbot[c + 1].next = self.cn[3 + c].val() - self.cn[c].val();
+        }
+        // ---- The registers: loaded every cycle from the next vertices, so each holds the
+        // geometry of the copy's vertices as they are.
+        self.xn0_r.clock.next = self.clock.val();
+        self.xn0_r.d.next = self.xn[0].val();
+        for i in 0..3 {
+            self.kdx_r[i].clock.next = self.clock.val();
+            self.kdx_r[i].d.next = self.c_kdx[i].val();
+            self.kdx[i].next = self.kdx_r[i].q.val();
+        }
+        for i in 0..3 {
+            self.kdy_r[i].clock.next = self.clock.val();
+            self.kdy_r[i].d.next = self.c_kdy[i].val();
+            self.kdy[i].next = self.kdy_r[i].q.val();
+        }
+        self.up_r.clock.next = self.clock.val();
+        self.up_r.d.next = self.c_up.val();
+        self.up.next = self.up_r.q.val();
+        for i in 0..3 {
+            self.edx_r[i].clock.next = self.clock.val();
+            self.edx_r[i].d.next = self.c_edx[i].val();
+            self.edx[i].next = self.edx_r[i].q.val();
+        }
+        for i in 0..3 {
+            self.edy_r[i].clock.next = self.clock.val();
+            self.edy_r[i].d.next = self.c_edy[i].val();
+            self.edy[i].next = self.edy_r[i].q.val();
+        }
+        for i in 0..3 {
+            self.edy_d_r[i].clock.next = self.clock.val();
+            self.edy_d_r[i].d.next = self.c_edy_d[i].val();
+            self.edy_d[i].next = self.edy_d_r[i].q.val();
+        }
+        for i in 0..3 {
+            self.ed16_r[i].clock.next = self.clock.val();
+            self.ed16_r[i].d.next = self.c_ed16[i].val();
+            self.ed16[i].next = self.ed16_r[i].q.val();
+        }
+        for i in 0..3 {
+            self.cy_r[i].clock.next = self.clock.val();
+            self.cy_r[i].d.next = self.c_cy[i].val();
+            self.cy[i].next = self.cy_r[i].q.val();
+        }
+        for i in 0..3 {
+            self.count_r[i].clock.next = self.clock.val();
+            self.count_r[i].d.next = self.c_count[i].val();
+            self.count[i].next = self.count_r[i].q.val();
+        }
+        for i in 0..3 {
+            self.toff_r[i].clock.next = self.clock.val();
+            self.toff_r[i].d.next = self.c_toff[i].val();
+            self.toff[i].next = self.toff_r[i].q.val();
+        }
+        for i in 0..3 {
+            self.xf_r[i].clock.next = self.clock.val();
+            self.xf_r[i].d.next = self.c_xf[i].val();
+            self.xf[i].next = self.xf_r[i].q.val();
+        }
+        for i in 0..3 {
+            self.xi_r[i].clock.next = self.clock.val();
+            self.xi_r[i].d.next = self.c_xi[i].val();
+            self.xi[i].next = self.xi_r[i].q.val();
+        }
+        for i in 0..3 {
+            self.off_y_r[i].clock.next = self.clock.val();
+            self.off_y_r[i].d.next = self.c_off_y[i].val();
+            self.off_y[i].next = self.off_y_r[i].q.val();
+        }
+        for i in 0..4 {
+            self.dmaj_r[i].clock.next = self.clock.val();
+            self.dmaj_r[i].d.next = self.c_dmaj[i].val();
+            self.dmaj[i].next = self.dmaj_r[i].q.val();
+        }
+        for i in 0..4 {
+            self.dbot_r[i].clock.next = self.clock.val();
+            self.dbot_r[i].d.next = self.c_dbot[i].val();
+            self.dbot[i].next = self.dbot_r[i].q.val();
+        }
+        for i in 0..4 {
+            self.attr0_r[i].clock.next = self.clock.val();
+            self.attr0_r[i].d.next = self.c_attr0[i].val();
+            self.attr0[i].next = self.attr0_r[i].q.val();
         }
     }
 }
