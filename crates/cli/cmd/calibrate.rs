@@ -27,8 +27,13 @@ pub fn run(out: &Path) -> Result<()> {
                 eprintln!("calibrate: {} {unit}", build.name);
                 let mut cmd = Command::new(&exe);
                 cmd.args(["report", "--no-pnr", "--unit", &unit, "--param", &format!("N={}", build.class)]);
-                for (k, v) in &build.params {
-                    cmd.args(["--param", &format!("{k}={v}")]);
+                // K and L always (the sample's design), not the units' defaults.
+                let design = build.design().map_err(anyhow::Error::msg)?;
+                if matches!(unit.as_str(), "triangle_setup" | "raster_top") {
+                    cmd.args(["--param", &format!("K={}", design.k)]);
+                }
+                if matches!(unit.as_str(), "divider" | "triangle_setup" | "raster_top") {
+                    cmd.args(["--param", &format!("L={}", design.l)]);
                 }
                 if !build.formats.is_empty() {
                     cmd.arg("--formats").arg(&formats);

@@ -132,7 +132,7 @@ pub struct Fitted {
     /// Its rows, one per scene.
     pub rows: Vec<Row>,
     /// The default design edgepaint ships for the workload's screens (size class 10 up to
-    /// 1024 x 1024, its formats, K = 7, L = 5), and its rows.
+    /// 1024 x 1024, its formats, K = 7, L = `model::divider::LATENCY`), and its rows.
     pub default: Design,
     pub default_rows: Vec<Row>,
     /// For each knob above its floor: the trial one bit narrower, which fails.

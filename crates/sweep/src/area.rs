@@ -93,7 +93,7 @@ pub struct Build {
     pub name: String,
     pub class: u32,
     pub formats: serde_json::Map<String, serde_json::Value>,
-    /// `K`, `L` where not the defaults.
+    /// `K`, `L` where not the defaults (7 and `model::divider::LATENCY`).
     #[serde(default)]
     pub params: BTreeMap<String, u32>,
     /// The units synthesized: [`UNITS`], only these, or with these too.
@@ -124,7 +124,7 @@ impl Build {
         let formats = Formats::with_overrides(side, side, &serde_json::Value::Object(self.formats.clone()))
             .map_err(|e| format!("calibration build {}: {e}", self.name))?;
         let param = |k: &str, d: u32| self.params.get(k).copied().unwrap_or(d);
-        Ok(Design { class: self.class, formats, k: param("K", 7), l: param("L", 5) })
+        Ok(Design { class: self.class, formats, k: param("K", 7), l: param("L", model::divider::LATENCY) })
     }
 
     /// The sample of `unit` from `edgepaint report`'s JSON (`report.json`).

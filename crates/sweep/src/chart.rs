@@ -166,7 +166,8 @@ fn is_design(r: &Row) -> bool {
 }
 
 /// A default row's mark, naming the paper whose design it is: `scanline default (001 K=7
-/// L=5)`, 001's 7 multipliers and 5-stage divider with its 16-bit depth buffer; `se default
+/// L=25)`, 001's 7 multipliers and 16-bit depth buffer with a divider of one quotient step a
+/// stage (001's has 5 stages); `se default
 /// (000, 64-pixel engines)` (000's 24-bit z words do not fit the engines' 32-bit words at 4
 /// subpixel bits: `skipped.txt`); `vector default (004, <n> lanes)`.
 fn default_label(r: &Row) -> String {

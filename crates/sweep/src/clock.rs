@@ -13,26 +13,25 @@ use crate::row::Source;
 use fx::Formats;
 use rtl::config::Widths;
 
-/// ECP5 Fmax in MHz of each unit at the default design (class 10, K = 7, L = 5), as
-/// placed and routed by the soak (README, "Units"). Setup's (its multipliers pipelined) is
-/// `raster_top`'s at L = 13, whose critical path ran from setup's geometry (scanline centres
-/// and counts) into the edge walk: a bound from below, as that path is now registered; at
-/// L = 5 the divider's stage is the slowest path.
+/// ECP5 Fmax in MHz of each unit at the default design (class 10, K = 7, L = 25), as
+/// placed and routed by the soak (README, "Units"). Setup's is `raster_top`'s, whose critical
+/// path runs from setup's operand selects through a multiplier's operand multiplexers
+/// (nearly all of it routing); the divider's stage is one restoring step.
 pub const MEASURED_MHZ: [(&str, f64); 6] = [
     ("cull_sort", 115.9),
-    ("triangle_setup", 40.0),
-    ("divider", 39.6),
+    ("triangle_setup", 38.0),
+    ("divider", 105.1),
     ("edge_walk", 111.1),
     ("span", 113.5),
     ("pixel_out", 127.4),
 ];
 /// `raster_top`'s ECP5 Fmax at the default design, MHz.
-pub const PIPELINE_MHZ: f64 = 31.5;
+pub const PIPELINE_MHZ: f64 = 38.3;
 
 /// The design [`MEASURED_MHZ`] and [`PIPELINE_MHZ`] were measured at: size class
-/// `fx::RTL_CLASS` at its default formats, K = 7, L = 5.
+/// `fx::RTL_CLASS` at its default formats, K = 7, L = `model::divider::LATENCY` (25).
 pub fn measured_design() -> Design {
-    Design { class: fx::RTL_CLASS, formats: Formats::for_n(fx::RTL_CLASS), k: 7, l: 5 }
+    Design { class: fx::RTL_CLASS, formats: Formats::for_n(fx::RTL_CLASS), k: 7, l: model::divider::LATENCY }
 }
 
 /// `raster_top`'s clock at `d`, MHz, and where the figure comes from: the routed
@@ -48,15 +47,16 @@ pub fn raster_top_mhz(d: &Design) -> (f64, Source) {
 }
 
 /// The width, in bits, of what a unit's critical path runs through, the delay's measure:
-/// cull_sort's sort of the vertices by y (xy bits); setup's scanline centres and counts
-/// (xy bits); the divider's stage, ceil((div_q - 1) / L) restoring steps of a `div_d`-bit
+/// cull_sort's sort of the vertices by y (xy bits); setup's multiplier operands (`mul_a`
+/// bits, their multiplexers spanning the die); the divider's stage, ceil((div_q - 1) / L) restoring steps of a `div_d`-bit
 /// subtraction in series; the edge walker's start decision at the hand-over (`edge_d`);
 /// span's depth rounding and range test (`z_acc`, `c_acc`, the wider); pixel_out's depth
 /// compare (`depth`).
 pub fn critical_bits(unit: &str, d: &Design) -> f64 {
     let w = Widths::of(d.class, &d.formats);
     let bits = match unit {
-        "cull_sort" | "triangle_setup" => w.xy,
+        "cull_sort" => w.xy,
+        "triangle_setup" => w.mul_a,
         "divider" => (w.div_q - 1).div_ceil(d.l.max(1) as usize) * w.div_d,
         "edge_walk" => w.edge_d,
         "span" => w.z_acc.max(w.c_acc),
@@ -81,13 +81,14 @@ pub fn pipeline_mhz(d: &Design, default: &Design) -> f64 {
 mod tests {
     use super::*;
     use fx::Formats;
+    use model::divider::LATENCY;
 
     #[test]
     fn raster_top_runs_at_the_routed_clock_at_the_default_and_the_modelled_one_elsewhere() {
-        let d = design(10, 5);
+        let d = design(10, LATENCY);
         assert_eq!(d, measured_design());
         assert_eq!(raster_top_mhz(&d), (PIPELINE_MHZ, Source::Measured));
-        let wide = design(12, 5);
+        let wide = design(12, LATENCY);
         assert_eq!(raster_top_mhz(&wide), (pipeline_mhz(&wide, &d), Source::Modelled));
         // K moves no critical path in the model: the same clock, but not a routed one.
         let k1 = Design { k: 1, ..d };
@@ -101,13 +102,15 @@ mod tests {
 
     #[test]
     fn the_default_runs_at_its_measured_clock_and_wider_or_shallower_designs_slower() {
-        let d = design(10, 5);
+        let d = design(10, LATENCY);
         assert!((pipeline_mhz(&d, &d) - PIPELINE_MHZ).abs() < 1e-9);
-        assert!(pipeline_mhz(&design(12, 5), &d) < PIPELINE_MHZ);
-        // One divider stage does all 5 stages' steps in series: it sets the clock.
+        assert!(pipeline_mhz(&design(12, LATENCY), &d) < PIPELINE_MHZ);
+        // One divider stage does all 25 stages' steps in series: it sets the clock, scaled
+        // from the default's slowest unit.
         let one = pipeline_mhz(&design(10, 1), &d);
         let div = MEASURED_MHZ[2].1 * critical_bits("divider", &d) / critical_bits("divider", &design(10, 1));
-        assert!((one - div * PIPELINE_MHZ / MEASURED_MHZ[2].1).abs() < 1e-9, "{one} {div}");
+        let slowest = MEASURED_MHZ.iter().map(|&(_, mhz)| mhz).fold(f64::INFINITY, f64::min);
+        assert!((one - div * PIPELINE_MHZ / slowest).abs() < 1e-9, "{one} {div}");
         assert!(one < PIPELINE_MHZ / 2.0);
     }
 }

@@ -139,7 +139,7 @@ impl Task<'_> {
             return row;
         }
         let design = Design { class: n, formats: self.formats, k: self.params["K"], l: self.params["L"] };
-        let default = Design { class: fx::RTL_CLASS, formats: fx::Formats::for_n(fx::RTL_CLASS), k: 7, l: 5 };
+        let default = clock::measured_design();
         let source = |measured: bool| if measured { Source::Measured } else { Source::Modelled };
         let mhz = clock::pipeline_mhz(&design, &default);
         (row.clock_mhz, row.clock_source) = (Some(mhz), Some(source(design == default)));
