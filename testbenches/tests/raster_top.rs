@@ -307,8 +307,15 @@ fn raster_top_hdl_vs_verilator_lockstep_long() {
 
 /// `raster_top` of size class `class` (`N`), emitted and Verilated.
 fn verilated_at(class: u32) -> Verilated {
-    testbenches::verilate(&testbenches::emitted("raster_top", [("N", class as u64)])).unwrap_or_else(|e| panic!("{e}"))
+    let params = [("N", class as u64), ("L", LOCKSTEP_L as u64)];
+    testbenches::verilate(&testbenches::emitted("raster_top", params)).unwrap_or_else(|e| panic!("{e}"))
 }
+
+/// The divider stages of the lockstep builds that test something else (size classes, units
+/// present): 001's 5, as rust-hdl's simulation of the default 25 stages is most of what they
+/// would cost. The default runs in lockstep at class 10 and at `rtl::custom`'s formats, and
+/// in Verilator against the model at every class.
+const LOCKSTEP_L: usize = 5;
 
 /// The larger size classes in rust-hdl and Verilator in lockstep: a small screen with the
 /// cube and a triangle whose vertices lie beyond class 10's coordinate range (|x| >= 2048,
@@ -331,7 +338,7 @@ fn raster_top_size_classes_11_and_12_lockstep() {
         assert_eq!(prep.triangles.len(), l.triangles.len(), "{what}: the far triangle is sent whole");
         assert!(prep.fragments.last().is_some_and(|&n| n > 0), "{what}: the far triangle draws");
     }
-    let (k, l) = (7, model::divider::LATENCY as usize);
+    let (k, l) = (7, LOCKSTEP_L);
     lockstep(11, rtl::n11::raster_top::RasterTop::new(k, l, &Parts::ALL).expect("K = 7, default L"));
     lockstep(12, rtl::n12::raster_top::RasterTop::new(k, l, &Parts::ALL).expect("K = 7, default L"));
 }
@@ -564,8 +571,11 @@ fn crossing_40x30() -> Trilist {
 #[test]
 fn raster_top_units_present_lockstep() {
     fn run<U: Block + Pins>(unit: impl Fn() -> U, cull_sort: bool, pixel_out: bool) {
-        let units = Timing { cull_sort, pixel_out, ..Timing::default() };
-        let e = testbenches::emitted("raster_top", [("CULL_SORT", cull_sort as u64), ("PIXEL_OUT", pixel_out as u64)]);
+        let units = Timing { cull_sort, pixel_out, divider_latency: LOCKSTEP_L as u32, ..Timing::default() };
+        let e = testbenches::emitted(
+            "raster_top",
+            [("CULL_SORT", cull_sort as u64), ("PIXEL_OUT", pixel_out as u64), ("L", LOCKSTEP_L as u64)],
+        );
         let vl = testbenches::verilate(&e).unwrap_or_else(|e| panic!("{e}"));
         let (cube, cube_cull) = scene("cube", Some((24, 16)));
         let crossing = crossing_40x30();
@@ -578,7 +588,7 @@ fn raster_top_units_present_lockstep() {
             units_frame(&mut dual, units, &format!("{name}, {what}, stalled"), l, cull, &mut |_| rng.gen_bool(0.3));
         }
     }
-    let (k, l) = (7, model::divider::LATENCY as usize);
+    let (k, l) = (7, LOCKSTEP_L);
     run(|| rtl::raster_top::RasterTopFragments::new(k, l, &Parts::ALL).expect("K = 7, default L"), true, false);
     run(|| rtl::raster_top::RasterTopSorted::new(k, l, &Parts::ALL).expect("K = 7, default L"), false, true);
     run(|| rtl::raster_top::RasterTopCore::new(k, l, &Parts::ALL).expect("K = 7, default L"), false, false);
