@@ -21,7 +21,10 @@ if ! command -v verilator >/dev/null; then
 fi
 # edgepaint as the test profile builds it (optimised, and the build `cargo test` already
 # made): no second build for the variants emitted below.
-edgepaint() { cargo run --profile test --quiet -- "$@"; }
+cargo build --profile test --quiet --bin edgepaint
+export EDGEPAINT=${CARGO_TARGET_DIR:-target}/debug/edgepaint
+# Emissions and lints run $LINT_JOBS (default: the CPU count) at a time.
+jobs=${LINT_JOBS:-$(nproc)}
 shopt -s nullglob
 files=("$@")
 if [[ ${#files[@]} -eq 0 ]]; then
@@ -30,32 +33,36 @@ if [[ ${#files[@]} -eq 0 ]]; then
         echo "lint: no Verilog in hdl-out/ (run 'cargo run --release' to emit it)" >&2
         exit 1
     fi
-    # raster_top at the larger size classes too (screens up to 2048 and 4096).
-    for n in 11 12; do
-        edgepaint emit --unit raster_top --param N=$n -o "target/lint/raster_top-N$n" >/dev/null
-        files+=("target/lint/raster_top-N$n/raster_top.v")
+    # raster_top's other builds, each a directory under target/lint/ and the arguments that
+    # emit it: the larger size classes (screens up to 2048 and 4096), units left out, and
+    # formats other than its class's defaults (24-bit depth, ...).
+    variants=(
+        "N11" "--param N=11"
+        "N12" "--param N=12"
+        "CULL_SORT=0" "--param CULL_SORT=0"
+        "PIXEL_OUT=0" "--param PIXEL_OUT=0"
+        "CULL_SORT=0-PIXEL_OUT=0" "--param CULL_SORT=0 --param PIXEL_OUT=0"
+        "custom" "--formats crates/rtl/custom-formats.json"
+    )
+    for ((i = 0; i < ${#variants[@]}; i += 2)); do
+        files+=("target/lint/raster_top-${variants[i]}/raster_top.v")
     done
-    # raster_top with units left out.
-    for units in "CULL_SORT=0" "PIXEL_OUT=0" "CULL_SORT=0 PIXEL_OUT=0"; do
-        dir="target/lint/raster_top-${units// /-}"
-        # shellcheck disable=SC2046 # one --param per word of $units
-        edgepaint emit --unit raster_top $(printf -- '--param %s ' $units) -o "$dir" >/dev/null
-        files+=("$dir/raster_top.v")
-    done
-    # raster_top at formats other than its class's defaults (24-bit depth, ...).
-    edgepaint emit --unit raster_top --formats crates/rtl/custom-formats.json \
-        -o target/lint/raster_top-custom >/dev/null
-    files+=("target/lint/raster_top-custom/raster_top.v")
+    for ((i = 0; i < ${#variants[@]}; i += 2)); do
+        printf '%s\0%s\0' "target/lint/raster_top-${variants[i]}" "${variants[i + 1]}"
+    done | xargs -0 -n 2 -P "$jobs" bash -c '
+        # shellcheck disable=SC2086 # the arguments are words
+        "$EDGEPAINT" emit --unit raster_top $2 -o "$1" >/dev/null || { echo "lint: emitting $1 failed" >&2; exit 255; }' emit
 fi
 
-failed=0
-for f in "${files[@]}"; do
+lint_one() {
+    local f=$1 top
     top=$(basename "$f" .v)
     if verilator --lint-only -Wall -Wno-WIDTH -Wno-DECLFILENAME --top-module "$top" scripts/lint-waivers.vlt "$f"; then
         echo "lint: $f: clean"
     else
         echo "lint: $f: FAILED" >&2
-        failed=1
+        return 1
     fi
-done
-exit $failed
+}
+export -f lint_one
+printf '%s\0' "${files[@]}" | xargs -0 -n 1 -P "$jobs" bash -c 'lint_one "$1"' lint

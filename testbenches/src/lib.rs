@@ -23,6 +23,7 @@ pub use sim::{frame, hdl_out, memory, streams, target_dir, write_if_changed, Hdl
 
 use rust_hdl::prelude::*;
 use std::fmt;
+use std::sync::Arc;
 
 /// Two simulators disagreeing, or a simulator disagreeing with the model.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -164,22 +165,29 @@ pub fn count() -> usize {
     std::env::var("EDGEPAINT_N").map_or(1000, |s| s.parse().expect("EDGEPAINT_N must be a count"))
 }
 
+/// Unit `name` and `params` over its defaults.
+fn unit_params<const K: usize>(name: &str, params: [(&str, u64); K]) -> (&'static rtl::Unit, rtl::Params) {
+    let unit = rtl::Unit::named(name).unwrap_or_else(|| panic!("no unit {name} in UNITS"));
+    (unit, unit.params(params.map(|(k, v)| (k.to_owned(), v))).unwrap_or_else(|e| panic!("{e}")))
+}
+
 /// Unit `name` emitted with `params` over its defaults (at the formats of its size class).
 pub fn emitted<const K: usize>(name: &str, params: [(&str, u64); K]) -> rtl::emit::Emitted {
-    let unit = rtl::Unit::named(name).unwrap_or_else(|| panic!("no unit {name} in UNITS"));
-    let params = unit.params(params.map(|(k, v)| (k.to_owned(), v))).unwrap_or_else(|e| panic!("{e}"));
+    let (unit, params) = unit_params(name, params);
     unit.emit(&params).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// Unit `name` with its default parameters, Verilated (the committed `hdl-out/<name>.v`:
 /// see `sim::verilog_file`).
-pub fn verilated(name: &str) -> Verilated {
+pub fn verilated(name: &str) -> Arc<Verilated> {
     verilated_with(name, [])
 }
 
-/// Unit `name` with `params` over its defaults, Verilated.
-pub fn verilated_with<const K: usize>(name: &str, params: [(&str, u64); K]) -> Verilated {
-    sim::verilate(&emitted(name, params)).unwrap_or_else(|e| panic!("{e}"))
+/// Unit `name` with `params` over its defaults, Verilated (once per process:
+/// `sim::verilated`).
+pub fn verilated_with<const K: usize>(name: &str, params: [(&str, u64); K]) -> Arc<Verilated> {
+    let (unit, params) = unit_params(name, params);
+    sim::verilated(unit, &params, None).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// rust-hdl and Verilator in lockstep through a whole frame: every output of `raster_top`

@@ -253,8 +253,7 @@ pub fn verilator_with(build: &Build, params: &[(&str, u64)]) -> Result<RasterTop
     let unit = rtl::Unit::named("raster_top").expect("raster_top is in UNITS");
     let given = params.iter().map(|(k, v)| (k.to_string(), *v));
     let params = unit.params([("N".to_owned(), build.class as u64)].into_iter().chain(given))?;
-    let e = unit.emit_at(&params, &build.formats)?;
-    Ok(RasterTopVl::new(crate::verilate(&e)?.model()?, *build))
+    Ok(RasterTopVl::new(crate::verilated(unit, &params, Some(&build.formats))?.model()?, *build))
 }
 
 /// What one frame is: the screen, the triangles (hardware words) and how to draw them.

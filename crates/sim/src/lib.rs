@@ -19,7 +19,9 @@ pub mod verilator;
 use rtl::emit::Emitted;
 pub use rtl::emit::Port;
 pub use rtl::sim::{Pins, PortDir, Value};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
 pub use verilator::{check_verilator, target_dir, write_if_changed, PortId, Verilated, VlSim};
 
 use rust_hdl::prelude::*;
@@ -122,4 +124,30 @@ pub fn verilog_file(e: &Emitted) -> Result<PathBuf, String> {
 /// Verilates `e` (see [`verilog_file`] for which file).
 pub fn verilate(e: &Emitted) -> Result<Verilated, String> {
     Verilated::new(e.unit, &verilog_file(e)?, &e.ports)
+}
+
+/// `unit` emitted with `params` at `formats` (`None`: its size class's defaults) and
+/// Verilated, once per process for each parameters and formats: rust-hdl takes seconds to
+/// emit `raster_top`, and the frame tests want it again and again. Threads asking for the
+/// same model wait for the first to make it.
+pub fn verilated(
+    unit: &rtl::Unit,
+    params: &rtl::Params,
+    formats: Option<&fx::Formats>,
+) -> Result<Arc<Verilated>, String> {
+    type Models = BTreeMap<String, Arc<Mutex<Option<Arc<Verilated>>>>>;
+    static MODELS: Mutex<Models> = Mutex::new(BTreeMap::new());
+    let key = format!("{} {params:?} {formats:?}", unit.name);
+    let slot = MODELS.lock().unwrap_or_else(|e| e.into_inner()).entry(key).or_default().clone();
+    let mut model = slot.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(m) = model.as_ref() {
+        return Ok(m.clone());
+    }
+    let e = match formats {
+        Some(f) => unit.emit_at(params, f)?,
+        None => unit.emit(params)?,
+    };
+    let m = Arc::new(verilate(&e)?);
+    *model = Some(m.clone());
+    Ok(m)
 }

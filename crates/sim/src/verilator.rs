@@ -5,9 +5,12 @@
 //! by its index) and [`Verilated::model`] loads it. The library is cached under
 //! `<target>/verilator/<top>-<hash>/`, the hash taken over the Verilog text, the top
 //! module, the ports, the shim and Verilator's version: a model is rebuilt only when one
-//! of those changes (a fresh clone or a touched file rebuilds nothing that is cached),
-//! and two processes or threads building the same model at once each build in a
-//! directory of their own and rename the result into place.
+//! of those changes (a fresh clone or a touched file rebuilds nothing that is cached).
+//! Verilator's runtime (`libverilated.a`, the same for every model built with the same
+//! flags) is compiled once, under `<target>/verilator/runtime-<hash>/`, and linked into
+//! each model, which then compiles only its own classes. Threads of one process that
+//! want the same model (or the runtime) wait for the first to build it; two processes
+//! each build in a directory of their own and rename the result into place.
 //!
 //! [`VlSim`] moves port values as [`Value`]s by name (the dual-simulation tests) or by
 //! [`PortId`] with plain integers (frame simulation, a million cycles per second and
@@ -15,13 +18,13 @@
 
 use crate::{Port, PortDir, Sim, Value};
 use libloading::Library;
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 use std::ffi::c_void;
 use std::hash::{Hash, Hasher};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 
 /// What to do when Verilator is missing or unusable.
 const SETUP_HINT: &str =
@@ -32,7 +35,11 @@ const SETUP_HINT: &str =
 const IGNORED_WARNINGS: &[&str] = &["WIDTH"];
 
 /// Bumped whenever the shim or the build commands change, so cached models are rebuilt.
-const SHIM_VERSION: u32 = 1;
+const SHIM_VERSION: u32 = 2;
+
+/// The flags every model and the runtime are Verilated and compiled with: the runtime
+/// built once serves every model only because they agree.
+const VERILATOR_FLAGS: &[&str] = &["--cc", "-sv", "--build", "-CFLAGS", "-fPIC"];
 
 /// Where edgepaint keeps what it builds to simulate (emitted Verilog, Verilated models):
 /// the Cargo target directory this binary was built in, so artifacts follow
@@ -151,13 +158,13 @@ impl Verilated {
         let version = check_verilator("verilator")?;
         let verilog = std::fs::read_to_string(file).map_err(|e| format!("reading {}: {e}", file.display()))?;
         let shim = shim(unit, ports);
-        let mut h = std::collections::hash_map::DefaultHasher::new();
-        (SHIM_VERSION, &version, unit, &verilog, &shim).hash(&mut h);
-        let dir = target_dir().join("verilator").join(format!("{unit}-{:016x}", h.finish()));
+        let dir =
+            target_dir().join("verilator").join(format!("{unit}-{:016x}", hash(&(&version, unit, &verilog, &shim))));
         let lib = dir.join(format!("libV{unit}.so"));
-        if !lib.is_file() {
-            build(unit, file, &shim, &dir, &lib)?;
-        }
+        once(&lib, || {
+            let runtime = runtime(&version)?;
+            build(unit, file, &shim, &runtime, &dir, &lib)
+        })?;
         // SAFETY: the library is the model just built from our own shim; loading it runs
         // only Verilator's static initialisers.
         let library = unsafe { Library::new(&lib) }.map_err(|e| format!("loading {}: {e}", lib.display()))?;
@@ -209,41 +216,94 @@ fn run(cmd: &mut Command, what: &str) -> Result<(), String> {
     ))
 }
 
-/// Verilates `file` with `shim` in a directory of this thread's own, links the shared
-/// library and renames it to `lib` (in `dir`).
-fn build(unit: &str, file: &Path, shim: &str, dir: &Path, lib: &Path) -> Result<(), String> {
-    let what = format!("Verilating {}", file.display());
+/// A hash of `key` and [`SHIM_VERSION`], naming a cache directory.
+fn hash(key: &impl Hash) -> u64 {
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    (SHIM_VERSION, VERILATOR_FLAGS, key).hash(&mut h);
+    h.finish()
+}
+
+/// Runs `make` unless `file` exists; while one thread of this process makes a file, the
+/// others wanting the same file wait for it.
+fn once(file: &Path, make: impl FnOnce() -> Result<(), String>) -> Result<(), String> {
+    static MAKING: Mutex<BTreeMap<PathBuf, Arc<Mutex<()>>>> = Mutex::new(BTreeMap::new());
+    let slot = MAKING.lock().unwrap_or_else(|e| e.into_inner()).entry(file.to_path_buf()).or_default().clone();
+    let _making = slot.lock().unwrap_or_else(|e| e.into_inner());
+    if file.is_file() {
+        return Ok(());
+    }
+    make()
+}
+
+/// A fresh directory of this thread's own beside `dir`, for a build to publish into
+/// `dir` by renaming.
+fn work_dir_beside(dir: &Path) -> Result<PathBuf, String> {
     static BUILDS: AtomicU64 = AtomicU64::new(0);
     let n = BUILDS.fetch_add(1, Ordering::Relaxed);
     let work = dir.with_extension(format!("build-{}-{n}", std::process::id()));
     let _ = std::fs::remove_dir_all(&work);
     std::fs::create_dir_all(&work).map_err(|e| format!("creating {}: {e}", work.display()))?;
-    let shim_file = work.join("shim.cpp");
-    std::fs::write(&shim_file, shim).map_err(|e| format!("writing {}: {e}", shim_file.display()))?;
+    Ok(work)
+}
+
+/// Moves `built` to `to`, creating `to`'s directory, and removes the work directory `work`.
+fn publish(built: &Path, to: &Path, work: &Path) -> Result<(), String> {
+    let dir = to.parent().expect("a file in a directory");
+    std::fs::create_dir_all(dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
+    std::fs::rename(built, to).map_err(|e| format!("moving {} to {}: {e}", built.display(), to.display()))?;
+    let _ = std::fs::remove_dir_all(work);
+    Ok(())
+}
+
+/// `verilator` with [`VERILATOR_FLAGS`] and the waivers, building make target `target`
+/// in `work`.
+fn verilator(work: &Path, target: &str) -> Command {
     let jobs = std::thread::available_parallelism().map_or(2, |n| n.get());
-    let mut verilator = Command::new("verilator");
-    verilator
-        .args(["--cc", "-sv", "--build", "-j", &jobs.to_string(), "-CFLAGS", "-fPIC"])
+    let mut cmd = Command::new("verilator");
+    cmd.args(VERILATOR_FLAGS)
+        .args(["-j", &jobs.to_string(), "-MAKEFLAGS", target])
         .args(IGNORED_WARNINGS.iter().map(|w| format!("-Wno-{w}")))
         .arg("--Mdir")
-        .arg(&work)
-        .args(["--top-module", unit])
-        .arg(file)
-        .arg(&shim_file);
-    run(&mut verilator, &what)?;
+        .arg(work);
+    cmd
+}
+
+/// Verilator's runtime library, `libverilated.a`, compiled once per Verilator version (from
+/// an empty module, with the models' flags) and returned from the cache after that.
+fn runtime(version: &str) -> Result<PathBuf, String> {
+    let lib = target_dir().join("verilator").join(format!("runtime-{:016x}", hash(&version))).join("libverilated.a");
+    once(&lib, || {
+        let work = work_dir_beside(lib.parent().expect("in a directory"))?;
+        let stub = work.join("ep_runtime.v");
+        std::fs::write(&stub, "module ep_runtime;\nendmodule\n")
+            .map_err(|e| format!("writing {}: {e}", stub.display()))?;
+        run(verilator(&work, "libverilated.a").args(["--top-module", "ep_runtime"]).arg(&stub), "Verilator's runtime")?;
+        publish(&work.join("libverilated.a"), &lib, &work)
+    })?;
+    Ok(lib)
+}
+
+/// Verilates `file` with `shim` in a directory of this thread's own, compiling only the
+/// model's classes, links them with the `runtime` into a shared library and renames it to
+/// `lib` (in `dir`).
+fn build(unit: &str, file: &Path, shim: &str, runtime: &Path, dir: &Path, lib: &Path) -> Result<(), String> {
+    let work = work_dir_beside(dir)?;
+    let shim_file = work.join("shim.cpp");
+    std::fs::write(&shim_file, shim).map_err(|e| format!("writing {}: {e}", shim_file.display()))?;
+    let archive = format!("libV{unit}.a");
+    let mut verilator = verilator(&work, &archive);
+    verilator.args(["--top-module", unit]).arg(file).arg(&shim_file);
+    run(&mut verilator, &format!("Verilating {}", file.display()))?;
     let linked = work.join(format!("libV{unit}.so"));
     let mut link = Command::new("c++");
     link.args(["-shared", "-fPIC", "-o"])
         .arg(&linked)
         .arg("-Wl,--whole-archive")
-        .arg(work.join(format!("libV{unit}.a")))
-        .arg(work.join("libverilated.a"))
+        .arg(work.join(archive))
+        .arg(runtime)
         .args(["-Wl,--no-whole-archive", "-pthread"]);
     run(&mut link, &format!("linking the model of {}", file.display()))?;
-    std::fs::create_dir_all(dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
-    std::fs::rename(&linked, lib).map_err(|e| format!("moving the model to {}: {e}", lib.display()))?;
-    let _ = std::fs::remove_dir_all(&work);
-    Ok(())
+    publish(&linked, lib, &work)
 }
 
 /// The shim's functions.
