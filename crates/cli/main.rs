@@ -25,7 +25,11 @@ struct Cli {
 enum Command {
     /// Run a scene through the software geometry stage and write its screen-space triangle list (trilist v1).
     Trilist(cmd::trilist::Args),
-    /// Render a scene or a trilist to a PNG, with the float reference or a fixed-point pipeline.
+    /// Pack a scene or trilist into the vertex buffer 001's command parser reads (indexed, fixed point).
+    Pack(cmd::pack::Args),
+    /// Print a vertex buffer: its header, triangle index list and vertex array.
+    Inspect(cmd::inspect::Args),
+    /// Render a scene, trilist or vertex buffer to a PNG, with the float reference or a fixed-point pipeline.
     Render(cmd::render::Args),
     /// Compare a fixed-point pipeline with the float reference: coverage, colour, depth, cycles.
     Accuracy(cmd::accuracy::Args),
@@ -46,6 +50,8 @@ fn main() -> ExitCode {
     let result = match cli.command {
         None => cmd::emit::run_default(),
         Some(Command::Trilist(a)) => cmd::trilist::run(a),
+        Some(Command::Pack(a)) => cmd::pack::run(a),
+        Some(Command::Inspect(a)) => cmd::inspect::run(a),
         Some(Command::Render(a)) => cmd::render::run(a),
         Some(Command::Accuracy(a)) => cmd::accuracy::run(a),
         Some(Command::Emit(a)) => cmd::emit::run(a),

@@ -29,7 +29,7 @@ pub struct Args {
 pub fn run(args: Args) -> Result<()> {
     let loaded = input::load(&args.input, args.size)?;
     let list = &loaded.trilist;
-    let formats = args.fixed.formats(list.width, list.height)?;
+    let formats = args.fixed.formats_of(&loaded)?;
     let mut reports = Vec::new();
     for &engine in &args.engine {
         let setup = |method| Setup {

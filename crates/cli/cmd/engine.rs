@@ -1,6 +1,7 @@
 //! The options shared by every command that runs a fixed-point pipeline:
 //! which method, its lanes, and the number formats.
 
+use super::input::Loaded;
 use anyhow::{Context, Result};
 use fx::Formats;
 use model::render::Method;
@@ -45,6 +46,20 @@ impl FixedArgs {
         };
         f.check(width, height).map_err(|e| anyhow::anyhow!("formats \"{}\": {e}", self.formats))?;
         Ok(f)
+    }
+
+    /// The formats `loaded` is drawn at: a vertex buffer's own (its words are at them; an
+    /// error when `--formats` asks for others), else [`FixedArgs::formats`].
+    pub fn formats_of(&self, loaded: &Loaded) -> Result<Formats> {
+        let list = &loaded.trilist;
+        match loaded.build {
+            Some(_) if self.formats != "default" => anyhow::bail!(
+                "--formats {}: a vertex buffer's words are at the formats its header gives, which draw it",
+                self.formats
+            ),
+            Some(b) => Ok(b.formats),
+            None => self.formats(list.width, list.height),
+        }
     }
 
     /// The model's method for an engine (None for the float reference).

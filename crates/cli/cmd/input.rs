@@ -1,6 +1,8 @@
-//! Reading a render input (scene or trilist) into a triangle list.
+//! Reading a render input (scene, trilist or vertex buffer) into a triangle list.
 
-use anyhow::{bail, Context, Result};
+use anyhow::{anyhow, bail, Context, Result};
+use fx::Build;
+use model::vertex_buffer::{VertexBuffer, MAGIC};
 use scene::{Input, Trilist};
 use std::path::Path;
 
@@ -27,11 +29,36 @@ pub struct Loaded {
     pub trilist: Trilist,
     pub background: [f64; 3],
     pub cull_back: bool,
+    /// A vertex buffer's build (size class and formats): its words are at these formats,
+    /// and its triangles (`trilist`) hold their values exactly.
+    pub build: Option<Build>,
 }
 
-/// Loads a scene (running the geometry stage) or a trilist. `size` overrides a
-/// scene's resolution; a trilist's coordinates are fixed, so it cannot be resized.
+/// Whether `path` starts as a vertex buffer does (`model::vertex_buffer::MAGIC`).
+fn is_vertex_buffer(path: &Path) -> bool {
+    use std::io::Read;
+    let mut magic = [0; 4];
+    std::fs::File::open(path).and_then(|mut f| f.read_exact(&mut magic)).is_ok() && magic == MAGIC
+}
+
+/// Reads the vertex buffer `path`; the error names the file, the offset and the rule.
+pub fn vertex_buffer(path: &Path) -> Result<VertexBuffer> {
+    let bytes = std::fs::read(path).with_context(|| format!("{}: cannot read the vertex buffer", path.display()))?;
+    VertexBuffer::decode(&bytes).map_err(|e| anyhow!("{}: {e}", path.display()))
+}
+
+/// Loads a scene (running the geometry stage), a trilist or a vertex buffer (told apart
+/// by its first bytes). `size` overrides a scene's resolution; a trilist's or a vertex
+/// buffer's coordinates are fixed, so they cannot be resized.
 pub fn load(path: &Path, size: Option<Size>) -> Result<Loaded> {
+    if is_vertex_buffer(path) {
+        let vb = vertex_buffer(path)?;
+        if size.is_some() {
+            bail!("{}: --size applies to scenes; a vertex buffer's coordinates are already in pixels", path.display());
+        }
+        let background = vb.background.map(f64::from);
+        return Ok(Loaded { trilist: vb.to_trilist(), background, cull_back: vb.cull_back, build: Some(vb.build) });
+    }
     match Input::load(path)? {
         Input::Scene(s) => {
             let s = match size {
@@ -39,13 +66,13 @@ pub fn load(path: &Path, size: Option<Size>) -> Result<Loaded> {
                 None => *s,
             };
             let trilist = s.to_trilist().map_err(|e| e.in_file(path))?;
-            Ok(Loaded { trilist, background: s.background, cull_back: s.cull_back })
+            Ok(Loaded { trilist, background: s.background, cull_back: s.cull_back, build: None })
         }
         Input::Trilist(t) => {
             if size.is_some() {
                 bail!("{}: --size applies to scenes; a trilist's coordinates are already in pixels", path.display());
             }
-            Ok(Loaded { trilist: t, background: [0.0; 3], cull_back: false })
+            Ok(Loaded { trilist: t, background: [0.0; 3], cull_back: false, build: None })
         }
     }
 }

@@ -6,6 +6,8 @@ pub mod emit;
 pub mod engine;
 pub mod fit;
 pub mod input;
+pub mod inspect;
+pub mod pack;
 pub mod rebuild;
 pub mod render;
 pub mod report;

@@ -13,7 +13,8 @@ use std::time::Instant;
 /// Arguments of `edgepaint render`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// Scene file or trilist (JSON); told apart by their keys.
+    /// Scene file or trilist (JSON; told apart by their keys), or vertex buffer
+    /// (`edgepaint pack`; drawn at the formats in its header).
     input: PathBuf,
     /// Output PNG (8-bit RGB).
     #[arg(short, long)]
@@ -79,7 +80,7 @@ pub fn run(args: Args) -> Result<()> {
     };
 
     if args.engine == Engine::Se {
-        return se(&args, list, cull_back, loaded.background);
+        return se(&args, list, &args.fixed.formats_of(&loaded)?, cull_back, loaded.background);
     }
 
     let bar = ProgressBar::new(list.triangles.len() as u64);
@@ -94,7 +95,7 @@ pub fn run(args: Args) -> Result<()> {
     );
     let (image, summary) = match args.fixed.method(args.engine, perspective)? {
         _ if args.engine == Engine::Rtl => {
-            match super::rtl::render(list, cull_back, loaded.background, &args.fixed, args.analysis, &args.params)? {
+            match super::rtl::render(&loaded, cull_back, &args.fixed, args.analysis, &args.params)? {
                 Some(drawn) => drawn,
                 None => return Ok(()), // drawn by an edgepaint compiled at --formats
             }
@@ -115,7 +116,7 @@ pub fn run(args: Args) -> Result<()> {
             (image, (summary, stats.fragments))
         }
         Some(method) => {
-            let f = args.fixed.formats(list.width, list.height)?;
+            let f = args.fixed.formats_of(&loaded)?;
             let mopts = model::render::Options {
                 method,
                 cull: if cull_back { model::cull_sort::Cull::Back } else { model::cull_sort::Cull::None },
@@ -164,18 +165,17 @@ pub fn run(args: Args) -> Result<()> {
 
 /// `--engine se`: the scanline pipeline's spans drawn by 000's shading engines, one per
 /// 64 columns (`model::se::array`); prints the cycles per span and per frame.
-fn se(args: &Args, list: &scene::Trilist, cull_back: bool, background: [f64; 3]) -> Result<()> {
+fn se(args: &Args, list: &scene::Trilist, f: &fx::Formats, cull_back: bool, background: [f64; 3]) -> Result<()> {
     anyhow::ensure!(!args.analysis, "--analysis applies to --engine scanline and vector, not se");
-    let f = args.fixed.formats(list.width, list.height)?;
     let cull = if cull_back { model::cull_sort::Cull::Back } else { model::cull_sort::Cull::None };
     let bg = background.map(|c| c.round().clamp(0.0, 255.0) as u8);
     let start = Instant::now();
-    let r = model::se::array::render(list, &f, cull, bg).map_err(|e| anyhow::anyhow!(e))?;
+    let r = model::se::array::render(list, f, cull, bg).map_err(|e| anyhow::anyhow!(e))?;
     let secs = start.elapsed().as_secs_f64();
     let depth16 = r.fb.depth.iter().map(|&d| depth16(d, f.z.frac)).collect();
     let image = Image { width: r.fb.width, height: r.fb.height, rgb: r.fb.rgb, depth16, written: r.fb.written };
     write_outputs(&image, &args.output, args.depth.as_deref(), args.mask.as_deref())?;
-    let (st, prm) = (&r.stats, model::se::array::engine_params(&f));
+    let (st, prm) = (&r.stats, model::se::array::engine_params(f));
     println!(
         "render se (000 shading engines: {} x {} pixels, z/colour words {}/{} bits): {} triangles in, {} drawn, {} culled ({} outside, {} back-facing, {} degenerate), {} not drawn (input); {} spans, {} pixels written; {} cycles, {:.1} per span ({} per span back to back, {} after a span on the same row: {} such), {} spans overflowed; {:.2} ms",
         r.engines, prm.p, prm.zw, prm.cw, st.triangles_in, st.drawn, st.culled_outside + st.culled_back + st.degenerate,

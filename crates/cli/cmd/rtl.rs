@@ -10,31 +10,31 @@
 //! formats, K or L, or an optional part left out, which the model does not see).
 
 use super::engine::FixedArgs;
+use super::input::Loaded;
 use super::render::{depth16, Image};
 use anyhow::{anyhow, bail, ensure, Result};
 use fx::Build;
 use model::cull_sort::Cull;
 use model::cycles::Timing;
-use scene::Trilist;
 use sim::frame::{self, Frame, MemoryModel, Report};
 use sim::memory::ReadDuringWrite;
 use std::time::Instant;
 use sweep::area::Design;
 use sweep::row::Source;
 
-/// Draws `list` through `raster_top`; returns the image and the summary line with its
+/// Draws `loaded` (its formats: `FixedArgs::formats_of`) through `raster_top`; returns the image and the summary line with its
 /// fragment count, or `None` when an edgepaint compiled at the formats asked for drew it.
 pub fn render(
-    list: &Trilist,
+    loaded: &Loaded,
     cull_back: bool,
-    background: [f64; 3],
     fixed: &FixedArgs,
     analysis: bool,
     params: &[(String, u64)],
 ) -> Result<Option<(Image, (String, u64))>> {
     ensure!(!analysis, "--analysis checks the models' arithmetic; it does not apply to --engine rtl");
+    let list = &loaded.trilist;
     let mut timing = Timing::default();
-    let mut class = Build::for_screen(list.width, list.height).class;
+    let mut class = loaded.build.unwrap_or(Build::for_screen(list.width, list.height)).class;
     let mut parts = Vec::new();
     for (name, v) in params {
         let v32 = u32::try_from(*v).unwrap_or(u32::MAX);
@@ -53,16 +53,17 @@ pub fn render(
     let (k, l) = (timing.setup_multipliers as u64, timing.divider_latency as u64);
     let mut unit_params = vec![("K", k), ("L", l)];
     unit_params.extend(parts.iter().copied());
-    let formats = fixed.formats(list.width, list.height)?;
+    let formats = fixed.formats_of(loaded)?;
     let build = Build { class, formats };
     if build != Build::of_class(class) {
-        rtl::config::check(class, &formats).map_err(|e| anyhow!("--engine rtl, formats \"{}\": {e}", fixed.formats))?;
-        if super::rebuild::ensure(&build, &format!("the formats of {}", fixed.formats))? {
+        let source = if loaded.build.is_some() { "the vertex buffer's" } else { fixed.formats.as_str() };
+        rtl::config::check(class, &formats).map_err(|e| anyhow!("--engine rtl, formats \"{source}\": {e}"))?;
+        if super::rebuild::ensure(&build, &format!("the formats of {source}"))? {
             return Ok(None);
         }
     }
     let cull = if cull_back { Cull::Back } else { Cull::None };
-    let background = background.map(|c| c.round().clamp(0.0, 255.0) as u8);
+    let background = loaded.background.map(|c| c.round().clamp(0.0, 255.0) as u8);
     let prep =
         model::raster_top::raster_top(&build, list, cull, background).map_err(|e| anyhow!("--engine rtl: {e}"))?;
     for (i, e) in prep.skipped.iter().take(5) {

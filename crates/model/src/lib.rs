@@ -26,6 +26,7 @@ pub mod se;
 pub mod span;
 pub mod triangle_setup;
 pub mod vector;
+pub mod vertex_buffer;
 
 /// Seed for randomised tests: `EDGEPAINT_SEED`, default 1.
 #[cfg(test)]
