@@ -4726,99 +4726,105 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
     reg  [2:0] level$count;
     wire  level$full;
     wire  level$empty;
+    reg  [1:0] wr$d;
+    wire  [1:0] wr$q;
+    reg  wr$clock;
+    reg  [1:0] rd$d;
+    wire  [1:0] rd$q;
+    reg  rd$clock;
     reg  y$clock;
-    reg  y$push;
-    reg  y$pop;
-    reg  [2:0] y$wr;
+    reg  y$we;
+    reg  [1:0] y$wr;
+    reg  [1:0] y$rd;
     reg  [9:0] y$din;
     wire  [9:0] y$head;
     reg  xl$clock;
-    reg  xl$push;
-    reg  xl$pop;
-    reg  [2:0] xl$wr;
+    reg  xl$we;
+    reg  [1:0] xl$wr;
+    reg  [1:0] xl$rd;
     reg  [12:0] xl$din;
     wire  [12:0] xl$head;
     reg  xr$clock;
-    reg  xr$push;
-    reg  xr$pop;
-    reg  [2:0] xr$wr;
+    reg  xr$we;
+    reg  [1:0] xr$wr;
+    reg  [1:0] xr$rd;
     reg  [12:0] xr$din;
     wire  [12:0] xr$head;
     reg  left_z$clock;
-    reg  left_z$push;
-    reg  left_z$pop;
-    reg  [2:0] left_z$wr;
+    reg  left_z$we;
+    reg  [1:0] left_z$wr;
+    reg  [1:0] left_z$rd;
     reg  [35:0] left_z$din;
     wire  [35:0] left_z$head;
     reg  left_c0$clock;
-    reg  left_c0$push;
-    reg  left_c0$pop;
-    reg  [2:0] left_c0$wr;
+    reg  left_c0$we;
+    reg  [1:0] left_c0$wr;
+    reg  [1:0] left_c0$rd;
     reg  [31:0] left_c0$din;
     wire  [31:0] left_c0$head;
     reg  left_c1$clock;
-    reg  left_c1$push;
-    reg  left_c1$pop;
-    reg  [2:0] left_c1$wr;
+    reg  left_c1$we;
+    reg  [1:0] left_c1$wr;
+    reg  [1:0] left_c1$rd;
     reg  [31:0] left_c1$din;
     wire  [31:0] left_c1$head;
     reg  left_c2$clock;
-    reg  left_c2$push;
-    reg  left_c2$pop;
-    reg  [2:0] left_c2$wr;
+    reg  left_c2$we;
+    reg  [1:0] left_c2$wr;
+    reg  [1:0] left_c2$rd;
     reg  [31:0] left_c2$din;
     wire  [31:0] left_c2$head;
     reg  right_z$clock;
-    reg  right_z$push;
-    reg  right_z$pop;
-    reg  [2:0] right_z$wr;
+    reg  right_z$we;
+    reg  [1:0] right_z$wr;
+    reg  [1:0] right_z$rd;
     reg  [35:0] right_z$din;
     wire  [35:0] right_z$head;
     reg  right_c0$clock;
-    reg  right_c0$push;
-    reg  right_c0$pop;
-    reg  [2:0] right_c0$wr;
+    reg  right_c0$we;
+    reg  [1:0] right_c0$wr;
+    reg  [1:0] right_c0$rd;
     reg  [31:0] right_c0$din;
     wire  [31:0] right_c0$head;
     reg  right_c1$clock;
-    reg  right_c1$push;
-    reg  right_c1$pop;
-    reg  [2:0] right_c1$wr;
+    reg  right_c1$we;
+    reg  [1:0] right_c1$wr;
+    reg  [1:0] right_c1$rd;
     reg  [31:0] right_c1$din;
     wire  [31:0] right_c1$head;
     reg  right_c2$clock;
-    reg  right_c2$push;
-    reg  right_c2$pop;
-    reg  [2:0] right_c2$wr;
+    reg  right_c2$we;
+    reg  [1:0] right_c2$wr;
+    reg  [1:0] right_c2$rd;
     reg  [31:0] right_c2$din;
     wire  [31:0] right_c2$head;
     reg  ddx_z$clock;
-    reg  ddx_z$push;
-    reg  ddx_z$pop;
-    reg  [2:0] ddx_z$wr;
+    reg  ddx_z$we;
+    reg  [1:0] ddx_z$wr;
+    reg  [1:0] ddx_z$rd;
     reg  [39:0] ddx_z$din;
     wire  [39:0] ddx_z$head;
     reg  ddx_c0$clock;
-    reg  ddx_c0$push;
-    reg  ddx_c0$pop;
-    reg  [2:0] ddx_c0$wr;
+    reg  ddx_c0$we;
+    reg  [1:0] ddx_c0$wr;
+    reg  [1:0] ddx_c0$rd;
     reg  [35:0] ddx_c0$din;
     wire  [35:0] ddx_c0$head;
     reg  ddx_c1$clock;
-    reg  ddx_c1$push;
-    reg  ddx_c1$pop;
-    reg  [2:0] ddx_c1$wr;
+    reg  ddx_c1$we;
+    reg  [1:0] ddx_c1$wr;
+    reg  [1:0] ddx_c1$rd;
     reg  [35:0] ddx_c1$din;
     wire  [35:0] ddx_c1$head;
     reg  ddx_c2$clock;
-    reg  ddx_c2$push;
-    reg  ddx_c2$pop;
-    reg  [2:0] ddx_c2$wr;
+    reg  ddx_c2$we;
+    reg  [1:0] ddx_c2$wr;
+    reg  [1:0] ddx_c2$rd;
     reg  [35:0] ddx_c2$din;
     wire  [35:0] ddx_c2$head;
     
     // Local signals
-    reg  [2:0] wr;
+    reg  we;
     reg  push;
     reg  pop;
     
@@ -4833,123 +4839,133 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .full(level$full),
         .empty(level$empty)
     );
+    raster_top$core$fifo$wr wr(
+        .d(wr$d),
+        .q(wr$q),
+        .clock(wr$clock)
+    );
+    raster_top$core$fifo$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     raster_top$core$fifo$y y(
         .clock(y$clock),
-        .push(y$push),
-        .pop(y$pop),
+        .we(y$we),
         .wr(y$wr),
+        .rd(y$rd),
         .din(y$din),
         .head(y$head)
     );
     raster_top$core$fifo$xl xl(
         .clock(xl$clock),
-        .push(xl$push),
-        .pop(xl$pop),
+        .we(xl$we),
         .wr(xl$wr),
+        .rd(xl$rd),
         .din(xl$din),
         .head(xl$head)
     );
     raster_top$core$fifo$xr xr(
         .clock(xr$clock),
-        .push(xr$push),
-        .pop(xr$pop),
+        .we(xr$we),
         .wr(xr$wr),
+        .rd(xr$rd),
         .din(xr$din),
         .head(xr$head)
     );
     raster_top$core$fifo$left_z left_z(
         .clock(left_z$clock),
-        .push(left_z$push),
-        .pop(left_z$pop),
+        .we(left_z$we),
         .wr(left_z$wr),
+        .rd(left_z$rd),
         .din(left_z$din),
         .head(left_z$head)
     );
     raster_top$core$fifo$left_c0 left_c0(
         .clock(left_c0$clock),
-        .push(left_c0$push),
-        .pop(left_c0$pop),
+        .we(left_c0$we),
         .wr(left_c0$wr),
+        .rd(left_c0$rd),
         .din(left_c0$din),
         .head(left_c0$head)
     );
     raster_top$core$fifo$left_c1 left_c1(
         .clock(left_c1$clock),
-        .push(left_c1$push),
-        .pop(left_c1$pop),
+        .we(left_c1$we),
         .wr(left_c1$wr),
+        .rd(left_c1$rd),
         .din(left_c1$din),
         .head(left_c1$head)
     );
     raster_top$core$fifo$left_c2 left_c2(
         .clock(left_c2$clock),
-        .push(left_c2$push),
-        .pop(left_c2$pop),
+        .we(left_c2$we),
         .wr(left_c2$wr),
+        .rd(left_c2$rd),
         .din(left_c2$din),
         .head(left_c2$head)
     );
     raster_top$core$fifo$right_z right_z(
         .clock(right_z$clock),
-        .push(right_z$push),
-        .pop(right_z$pop),
+        .we(right_z$we),
         .wr(right_z$wr),
+        .rd(right_z$rd),
         .din(right_z$din),
         .head(right_z$head)
     );
     raster_top$core$fifo$right_c0 right_c0(
         .clock(right_c0$clock),
-        .push(right_c0$push),
-        .pop(right_c0$pop),
+        .we(right_c0$we),
         .wr(right_c0$wr),
+        .rd(right_c0$rd),
         .din(right_c0$din),
         .head(right_c0$head)
     );
     raster_top$core$fifo$right_c1 right_c1(
         .clock(right_c1$clock),
-        .push(right_c1$push),
-        .pop(right_c1$pop),
+        .we(right_c1$we),
         .wr(right_c1$wr),
+        .rd(right_c1$rd),
         .din(right_c1$din),
         .head(right_c1$head)
     );
     raster_top$core$fifo$right_c2 right_c2(
         .clock(right_c2$clock),
-        .push(right_c2$push),
-        .pop(right_c2$pop),
+        .we(right_c2$we),
         .wr(right_c2$wr),
+        .rd(right_c2$rd),
         .din(right_c2$din),
         .head(right_c2$head)
     );
     raster_top$core$fifo$ddx_z ddx_z(
         .clock(ddx_z$clock),
-        .push(ddx_z$push),
-        .pop(ddx_z$pop),
+        .we(ddx_z$we),
         .wr(ddx_z$wr),
+        .rd(ddx_z$rd),
         .din(ddx_z$din),
         .head(ddx_z$head)
     );
     raster_top$core$fifo$ddx_c0 ddx_c0(
         .clock(ddx_c0$clock),
-        .push(ddx_c0$push),
-        .pop(ddx_c0$pop),
+        .we(ddx_c0$we),
         .wr(ddx_c0$wr),
+        .rd(ddx_c0$rd),
         .din(ddx_c0$din),
         .head(ddx_c0$head)
     );
     raster_top$core$fifo$ddx_c1 ddx_c1(
         .clock(ddx_c1$clock),
-        .push(ddx_c1$push),
-        .pop(ddx_c1$pop),
+        .we(ddx_c1$we),
         .wr(ddx_c1$wr),
+        .rd(ddx_c1$rd),
         .din(ddx_c1$din),
         .head(ddx_c1$head)
     );
     raster_top$core$fifo$ddx_c2 ddx_c2(
         .clock(ddx_c2$clock),
-        .push(ddx_c2$push),
-        .pop(ddx_c2$pop),
+        .we(ddx_c2$we),
         .wr(ddx_c2$wr),
+        .rd(ddx_c2$rd),
         .din(ddx_c2$din),
         .head(ddx_c2$head)
     );
@@ -4957,16 +4973,23 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
     // Update code
     always @(*) begin
         count$clock = clock;
+        wr$clock = clock;
+        rd$clock = clock;
         count$d = count$q;
+        wr$d = wr$q;
+        rd$d = rd$q;
         level$count = count$q;
         inp$ready = ~level$full;
         out$valid = ~level$empty | inp$valid;
         empty = level$empty;
-        push = inp$valid & ~level$full & ~(level$empty & out$ready);
+        we = inp$valid & ~level$full;
+        push = we & ~(level$empty & out$ready);
         pop = ~level$empty & out$ready;
-        wr = count$q;
+        if (push) begin
+            wr$d = wr$q + 32'h1;
+        end
         if (pop) begin
-            wr = count$q - 32'h1;
+            rd$d = rd$q + 32'h1;
         end
         if (push & ~pop) begin
             count$d = count$q + 32'h1;
@@ -4975,135 +4998,135 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
             count$d = count$q - 32'h1;
         end
         y$clock = clock;
-        y$push = push;
-        y$pop = pop;
-        y$wr = wr;
+        y$we = we;
+        y$wr = wr$q;
+        y$rd = rd$q;
         y$din = inp$y;
         out$y = y$head;
         if (level$empty) begin
             out$y = inp$y;
         end
         xl$clock = clock;
-        xl$push = push;
-        xl$pop = pop;
-        xl$wr = wr;
+        xl$we = we;
+        xl$wr = wr$q;
+        xl$rd = rd$q;
         xl$din = inp$xl;
         out$xl = xl$head;
         if (level$empty) begin
             out$xl = inp$xl;
         end
         xr$clock = clock;
-        xr$push = push;
-        xr$pop = pop;
-        xr$wr = wr;
+        xr$we = we;
+        xr$wr = wr$q;
+        xr$rd = rd$q;
         xr$din = inp$xr;
         out$xr = xr$head;
         if (level$empty) begin
             out$xr = inp$xr;
         end
         left_z$clock = clock;
-        left_z$push = push;
-        left_z$pop = pop;
-        left_z$wr = wr;
+        left_z$we = we;
+        left_z$wr = wr$q;
+        left_z$rd = rd$q;
         left_z$din = inp$left_z;
         out$left_z = left_z$head;
         if (level$empty) begin
             out$left_z = inp$left_z;
         end
         left_c0$clock = clock;
-        left_c0$push = push;
-        left_c0$pop = pop;
-        left_c0$wr = wr;
+        left_c0$we = we;
+        left_c0$wr = wr$q;
+        left_c0$rd = rd$q;
         left_c0$din = inp$left_c0;
         out$left_c0 = left_c0$head;
         if (level$empty) begin
             out$left_c0 = inp$left_c0;
         end
         left_c1$clock = clock;
-        left_c1$push = push;
-        left_c1$pop = pop;
-        left_c1$wr = wr;
+        left_c1$we = we;
+        left_c1$wr = wr$q;
+        left_c1$rd = rd$q;
         left_c1$din = inp$left_c1;
         out$left_c1 = left_c1$head;
         if (level$empty) begin
             out$left_c1 = inp$left_c1;
         end
         left_c2$clock = clock;
-        left_c2$push = push;
-        left_c2$pop = pop;
-        left_c2$wr = wr;
+        left_c2$we = we;
+        left_c2$wr = wr$q;
+        left_c2$rd = rd$q;
         left_c2$din = inp$left_c2;
         out$left_c2 = left_c2$head;
         if (level$empty) begin
             out$left_c2 = inp$left_c2;
         end
         right_z$clock = clock;
-        right_z$push = push;
-        right_z$pop = pop;
-        right_z$wr = wr;
+        right_z$we = we;
+        right_z$wr = wr$q;
+        right_z$rd = rd$q;
         right_z$din = inp$right_z;
         out$right_z = right_z$head;
         if (level$empty) begin
             out$right_z = inp$right_z;
         end
         right_c0$clock = clock;
-        right_c0$push = push;
-        right_c0$pop = pop;
-        right_c0$wr = wr;
+        right_c0$we = we;
+        right_c0$wr = wr$q;
+        right_c0$rd = rd$q;
         right_c0$din = inp$right_c0;
         out$right_c0 = right_c0$head;
         if (level$empty) begin
             out$right_c0 = inp$right_c0;
         end
         right_c1$clock = clock;
-        right_c1$push = push;
-        right_c1$pop = pop;
-        right_c1$wr = wr;
+        right_c1$we = we;
+        right_c1$wr = wr$q;
+        right_c1$rd = rd$q;
         right_c1$din = inp$right_c1;
         out$right_c1 = right_c1$head;
         if (level$empty) begin
             out$right_c1 = inp$right_c1;
         end
         right_c2$clock = clock;
-        right_c2$push = push;
-        right_c2$pop = pop;
-        right_c2$wr = wr;
+        right_c2$we = we;
+        right_c2$wr = wr$q;
+        right_c2$rd = rd$q;
         right_c2$din = inp$right_c2;
         out$right_c2 = right_c2$head;
         if (level$empty) begin
             out$right_c2 = inp$right_c2;
         end
         ddx_z$clock = clock;
-        ddx_z$push = push;
-        ddx_z$pop = pop;
-        ddx_z$wr = wr;
+        ddx_z$we = we;
+        ddx_z$wr = wr$q;
+        ddx_z$rd = rd$q;
         ddx_z$din = inp$ddx_z;
         out$ddx_z = ddx_z$head;
         if (level$empty) begin
             out$ddx_z = inp$ddx_z;
         end
         ddx_c0$clock = clock;
-        ddx_c0$push = push;
-        ddx_c0$pop = pop;
-        ddx_c0$wr = wr;
+        ddx_c0$we = we;
+        ddx_c0$wr = wr$q;
+        ddx_c0$rd = rd$q;
         ddx_c0$din = inp$ddx_c0;
         out$ddx_c0 = ddx_c0$head;
         if (level$empty) begin
             out$ddx_c0 = inp$ddx_c0;
         end
         ddx_c1$clock = clock;
-        ddx_c1$push = push;
-        ddx_c1$pop = pop;
-        ddx_c1$wr = wr;
+        ddx_c1$we = we;
+        ddx_c1$wr = wr$q;
+        ddx_c1$rd = rd$q;
         ddx_c1$din = inp$ddx_c1;
         out$ddx_c1 = ddx_c1$head;
         if (level$empty) begin
             out$ddx_c1 = inp$ddx_c1;
         end
         ddx_c2$clock = clock;
-        ddx_c2$push = push;
-        ddx_c2$pop = pop;
-        ddx_c2$wr = wr;
+        ddx_c2$we = we;
+        ddx_c2$wr = wr$q;
+        ddx_c2$rd = rd$q;
         ddx_c2$din = inp$ddx_c2;
         out$ddx_c2 = ddx_c2$head;
         if (level$empty) begin
@@ -5133,13 +5156,13 @@ module raster_top$core$fifo$count(d,q,clock);
 endmodule // raster_top$core$fifo$count
 
 
-module raster_top$core$fifo$ddx_c0(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -5183,32 +5206,34 @@ module raster_top$core$fifo$ddx_c0(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$ddx_c0
@@ -5290,13 +5315,13 @@ module raster_top$core$fifo$ddx_c0$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$ddx_c0$e$3
 
 
-module raster_top$core$fifo$ddx_c1(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -5340,32 +5365,34 @@ module raster_top$core$fifo$ddx_c1(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$ddx_c1
@@ -5447,13 +5474,13 @@ module raster_top$core$fifo$ddx_c1$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$ddx_c1$e$3
 
 
-module raster_top$core$fifo$ddx_c2(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -5497,32 +5524,34 @@ module raster_top$core$fifo$ddx_c2(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$ddx_c2
@@ -5604,13 +5633,13 @@ module raster_top$core$fifo$ddx_c2$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$ddx_c2$e$3
 
 
-module raster_top$core$fifo$ddx_z(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$ddx_z(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [39:0] din;
     output reg  [39:0] head;
     
@@ -5654,32 +5683,34 @@ module raster_top$core$fifo$ddx_z(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$ddx_z
@@ -5761,13 +5792,13 @@ module raster_top$core$fifo$ddx_z$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$ddx_z$e$3
 
 
-module raster_top$core$fifo$left_c0(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$left_c0(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -5811,32 +5842,34 @@ module raster_top$core$fifo$left_c0(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$left_c0
@@ -5918,13 +5951,13 @@ module raster_top$core$fifo$left_c0$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$left_c0$e$3
 
 
-module raster_top$core$fifo$left_c1(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$left_c1(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -5968,32 +6001,34 @@ module raster_top$core$fifo$left_c1(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$left_c1
@@ -6075,13 +6110,13 @@ module raster_top$core$fifo$left_c1$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$left_c1$e$3
 
 
-module raster_top$core$fifo$left_c2(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$left_c2(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6125,32 +6160,34 @@ module raster_top$core$fifo$left_c2(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$left_c2
@@ -6232,13 +6269,13 @@ module raster_top$core$fifo$left_c2$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$left_c2$e$3
 
 
-module raster_top$core$fifo$left_z(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$left_z(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -6282,32 +6319,34 @@ module raster_top$core$fifo$left_z(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$left_z
@@ -6408,13 +6447,32 @@ module raster_top$core$fifo$level(count,full,empty);
 endmodule // raster_top$core$fifo$level
 
 
-module raster_top$core$fifo$right_c0(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$rd(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$rd
+
+
+module raster_top$core$fifo$right_c0(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6458,32 +6516,34 @@ module raster_top$core$fifo$right_c0(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$right_c0
@@ -6565,13 +6625,13 @@ module raster_top$core$fifo$right_c0$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$right_c0$e$3
 
 
-module raster_top$core$fifo$right_c1(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$right_c1(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6615,32 +6675,34 @@ module raster_top$core$fifo$right_c1(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$right_c1
@@ -6722,13 +6784,13 @@ module raster_top$core$fifo$right_c1$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$right_c1$e$3
 
 
-module raster_top$core$fifo$right_c2(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$right_c2(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6772,32 +6834,34 @@ module raster_top$core$fifo$right_c2(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$right_c2
@@ -6879,13 +6943,13 @@ module raster_top$core$fifo$right_c2$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$right_c2$e$3
 
 
-module raster_top$core$fifo$right_z(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$right_z(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -6929,32 +6993,34 @@ module raster_top$core$fifo$right_z(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$right_z
@@ -7036,13 +7102,32 @@ module raster_top$core$fifo$right_z$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$right_z$e$3
 
 
-module raster_top$core$fifo$xl(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$wr(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$wr
+
+
+module raster_top$core$fifo$xl(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [12:0] din;
     output reg  [12:0] head;
     
@@ -7086,32 +7171,34 @@ module raster_top$core$fifo$xl(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$xl
@@ -7193,13 +7280,13 @@ module raster_top$core$fifo$xl$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$xl$e$3
 
 
-module raster_top$core$fifo$xr(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$xr(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [12:0] din;
     output reg  [12:0] head;
     
@@ -7243,32 +7330,34 @@ module raster_top$core$fifo$xr(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$xr
@@ -7350,13 +7439,13 @@ module raster_top$core$fifo$xr$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$xr$e$3
 
 
-module raster_top$core$fifo$y(clock,push,pop,wr,din,head);
+module raster_top$core$fifo$y(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  pop;
-    input wire  [2:0] wr;
+    input wire  we;
+    input wire  [1:0] wr;
+    input wire  [1:0] rd;
     input wire  [9:0] din;
     output reg  [9:0] head;
     
@@ -7400,32 +7489,34 @@ module raster_top$core$fifo$y(clock,push,pop,wr,din,head);
     always @(*) begin
         e$0$clock = clock;
         e$0$d = e$0$q;
+        if ((wr == 0) & we) begin
+            e$0$d = din;
+        end
         e$1$clock = clock;
         e$1$d = e$1$q;
+        if ((wr == 1) & we) begin
+            e$1$d = din;
+        end
         e$2$clock = clock;
         e$2$d = e$2$q;
+        if ((wr == 2) & we) begin
+            e$2$d = din;
+        end
         e$3$clock = clock;
         e$3$d = e$3$q;
-        if (pop) begin
-            e$0$d = e$1$q;
-            e$1$d = e$2$q;
-            e$2$d = e$3$q;
-        end
-        if (push) begin
-            if (wr == 0) begin
-                e$0$d = din;
-            end
-            if (wr == 1) begin
-                e$1$d = din;
-            end
-            if (wr == 2) begin
-                e$2$d = din;
-            end
-            if (wr == 3) begin
-                e$3$d = din;
-            end
+        if ((wr == 3) & we) begin
+            e$3$d = din;
         end
         head = e$0$q;
+        if (rd == 1) begin
+            head = e$1$q;
+        end
+        if (rd == 2) begin
+            head = e$2$q;
+        end
+        if (rd == 3) begin
+            head = e$3$q;
+        end
     end
     
 endmodule // raster_top$core$fifo$y

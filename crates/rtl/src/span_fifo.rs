@@ -9,6 +9,9 @@ use rust_hdl::prelude::*;
 
 /// Span commands the FIFO between the edge walk and span holds.
 pub const SPAN_FIFO: usize = 4;
+/// Bits of the FIFO's ring pointers, which wrap by themselves: [`SPAN_FIFO`] is 2^POINTER.
+const POINTER: usize = 2;
+const _: () = assert!(SPAN_FIFO == 1 << POINTER, "the span FIFO's pointers wrap at 2^POINTER entries");
 
 /// Whether a `D`-deep FIFO holding `count` entries is `full` or `empty`. (Alone in its
 /// module, so that these outputs depend on the registered count only: Verilator orders a
@@ -42,14 +45,17 @@ impl<const D: usize> Logic for FifoLevel<D> {
     }
 }
 
-/// One field of a `D`-deep FIFO: entries shift towards `head` on a pop; a push writes
-/// entry `wr`.
+/// One field of a `D`-deep FIFO held as a ring: entry `wr` is written while `we` is high,
+/// and `head` is entry `rd`. The entries' write enables come from the FIFO's input side and
+/// its registered pointer only, never from the output's handshake (on ECP5 that handshake
+/// spread to every entry's load enable was raster_top's critical path: span's accept, then
+/// one 17 ns net across the die).
 #[derive(LogicBlock)]
 pub struct FifoLane<const W: usize, const D: usize> {
     pub clock: Signal<In, Clock>,
-    pub push: Signal<In, Bit>,
-    pub pop: Signal<In, Bit>,
-    pub wr: Signal<In, Bits<3>>,
+    pub we: Signal<In, Bit>,
+    pub wr: Signal<In, Bits<POINTER>>,
+    pub rd: Signal<In, Bits<POINTER>>,
     pub din: Signal<In, Bits<W>>,
     pub head: Signal<Out, Bits<W>>,
     e: [DFF<Bits<W>>; D],
@@ -59,9 +65,9 @@ impl<const W: usize, const D: usize> Default for FifoLane<W, D> {
     fn default() -> Self {
         FifoLane {
             clock: Default::default(),
-            push: Default::default(),
-            pop: Default::default(),
+            we: Default::default(),
             wr: Default::default(),
+            rd: Default::default(),
             din: Default::default(),
             head: Default::default(),
             e: defaults(),
@@ -75,20 +81,16 @@ impl<const W: usize, const D: usize> Logic for FifoLane<W, D> {
         for i in 0..D {
             self.e[i].clock.next = self.clock.val();
             self.e[i].d.next = self.e[i].q.val();
-        }
-        if self.pop.val() {
-            for i in 0..(D - 1) {
-                self.e[i].d.next = self.e[i + 1].q.val();
-            }
-        }
-        if self.push.val() {
-            for i in 0..D {
-                if self.wr.val().index() == i {
-                    self.e[i].d.next = self.din.val();
-                }
+            if (self.wr.val().index() == i) & self.we.val() {
+                self.e[i].d.next = self.din.val();
             }
         }
         self.head.next = self.e[0].q.val();
+        for i in 1..D {
+            if self.rd.val().index() == i {
+                self.head.next = self.e[i].q.val();
+            }
+        }
     }
 }
 
@@ -107,8 +109,9 @@ pub struct SpanFifo {
     /// Entries held, and whether that is all or none.
     count: DFF<Bits<3>>,
     level: FifoLevel<SPAN_FIFO>,
-    /// The entry a push writes, counted after this cycle's pop.
-    wr: Signal<Local, Bits<3>>,
+    /// The entry the next push writes, and the head's: [`POINTER`] bits, wrapping.
+    wr: DFF<Bits<POINTER>>,
+    rd: DFF<Bits<POINTER>>,
     y: FifoLane<SCREEN, SPAN_FIFO>,
     xl: FifoLane<PIXEL, SPAN_FIFO>,
     xr: FifoLane<PIXEL, SPAN_FIFO>,
@@ -124,6 +127,9 @@ pub struct SpanFifo {
     ddx_c0: FifoLane<DC, SPAN_FIFO>,
     ddx_c1: FifoLane<DC, SPAN_FIFO>,
     ddx_c2: FifoLane<DC, SPAN_FIFO>,
+    /// Entry `wr` is written (the input offered and room for it, whether or not it also
+    /// passes straight through).
+    we: Signal<Local, Bit>,
     push: Signal<Local, Bit>,
     pop: Signal<Local, Bit>,
 }
@@ -136,17 +142,21 @@ macro_rules! span_fifo_logic {
         impl Logic for SpanFifo {
             #[hdl_gen]
             fn update(&mut self) {
-                dff_setup!(self, clock, count);
+                dff_setup!(self, clock, count, wr, rd);
                 self.level.count.next = self.count.q.val();
                 self.inp.ready.next = !self.level.full.val();
                 self.out.valid.next = !self.level.empty.val() | self.inp.valid.val();
                 self.empty.next = self.level.empty.val();
-                // Empty and taken at once: the command passes straight through.
-                self.push.next = self.inp.valid.val() & !self.level.full.val() & !(self.level.empty.val() & self.out.ready.val());
+                self.we.next = self.inp.valid.val() & !self.level.full.val();
+                // Empty and taken at once: the command passes straight through (entry `wr`
+                // is written all the same, and left behind).
+                self.push.next = self.we.val() & !(self.level.empty.val() & self.out.ready.val());
                 self.pop.next = !self.level.empty.val() & self.out.ready.val();
-                self.wr.next = self.count.q.val();
+                if self.push.val() {
+                    self.wr.d.next = self.wr.q.val() + 1;
+                }
                 if self.pop.val() {
-                    self.wr.next = self.count.q.val() - 1;
+                    self.rd.d.next = self.rd.q.val() + 1;
                 }
                 if self.push.val() & !self.pop.val() {
                     self.count.d.next = self.count.q.val() + 1;
@@ -156,9 +166,9 @@ macro_rules! span_fifo_logic {
                 }
                 $(
                     self.$f.clock.next = self.clock.val();
-                    self.$f.push.next = self.push.val();
-                    self.$f.pop.next = self.pop.val();
-                    self.$f.wr.next = self.wr.val();
+                    self.$f.we.next = self.we.val();
+                    self.$f.wr.next = self.wr.q.val();
+                    self.$f.rd.next = self.rd.q.val();
                     self.$f.din.next = self.inp.$f.val();
                     self.out.$f.next = self.$f.head.val();
                     if self.level.empty.val() {
