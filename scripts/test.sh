@@ -6,7 +6,8 @@
 # Verilator, the CLI as a process), then Verilator lint of every emitted file and Yosys
 # synthesis of each distinct module. One optimised build (the test profile) serves the
 # tests, the lint's extra variants and the CLI tests. Each step prints its time; the long
-# checks are in scripts/soak.sh.
+# checks are in scripts/soak.sh. Clippy runs beside the test build, and synthesis beside the
+# tests, so that neither leaves a core idle.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -26,12 +27,29 @@ scripts/setup-tools.sh
 source scripts/tools-env.sh
 took
 
-step "format and lints"
+step "format, lints and the test build"
 cargo fmt --all -- --check
-cargo clippy --workspace --all-targets --locked -- -D warnings
+# Clippy checks in a target directory of its own, beside the tests' optimised build: the two
+# share no artifacts (a check build against a code-generating one), and each alone leaves a
+# core idle for long stretches (the rtl crate).
+mkdir -p target
+CARGO_TARGET_DIR=target/clippy cargo clippy --workspace --all-targets --locked -- -D warnings \
+    >target/clippy.log 2>&1 &
+clippy=$!
+cargo test --workspace --locked --no-run
+clippy_ok=0
+wait $clippy || clippy_ok=$?
+cat target/clippy.log
+if [[ $clippy_ok -ne 0 ]]; then
+    echo "clippy failed (above)" >&2
+    exit 1
+fi
 took
 
-step "tests"
+step "tests, and Yosys synthesis of hdl-out/ beside them (each distinct module once)"
+# Synthesis needs only hdl-out/: it runs on the core the tests leave idle in their tails.
+scripts/synth.sh >target/synth-step.log 2>&1 &
+synth=$!
 cargo test --workspace --locked
 took
 
@@ -39,8 +57,14 @@ step "Verilator lint of hdl-out/ and of raster_top's other builds"
 scripts/lint.sh
 took
 
-step "Yosys synthesis of hdl-out/ (each distinct module once)"
-scripts/synth.sh
+step "waiting for the synthesis"
+synth_ok=0
+wait $synth || synth_ok=$?
+cat target/synth-step.log
+if [[ $synth_ok -ne 0 ]]; then
+    echo "synthesis failed (above)" >&2
+    exit 1
+fi
 took
 
 printf '\n== all tests passed in %d s\n' $((SECONDS - start))
