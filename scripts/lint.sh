@@ -20,9 +20,13 @@ if ! command -v verilator >/dev/null; then
     exit 1
 fi
 # edgepaint as the test profile builds it (optimised, and the build `cargo test` already
-# made): no second build for the variants emitted below.
-cargo build --profile test --quiet --bin edgepaint
-export EDGEPAINT=${CARGO_TARGET_DIR:-target}/debug/edgepaint
+# made): no second build for the variants emitted below. $EDGEPAINT, when set, is that
+# binary, built (scripts/test.sh runs the lint beside the tests, without a second cargo).
+if [[ -z ${EDGEPAINT:-} ]]; then
+    cargo build --profile test --quiet --bin edgepaint
+    EDGEPAINT=${CARGO_TARGET_DIR:-target}/debug/edgepaint
+fi
+export EDGEPAINT
 # Emissions and lints run $LINT_JOBS (default: the CPU count) at a time.
 jobs=${LINT_JOBS:-$(nproc)}
 shopt -s nullglob

@@ -6,8 +6,8 @@
 # Verilator, the CLI as a process), then Verilator lint of every emitted file and Yosys
 # synthesis of each distinct module. One optimised build (the test profile) serves the
 # tests, the lint's extra variants and the CLI tests. Each step prints its time; the long
-# checks are in scripts/soak.sh. Clippy runs beside the test build, and synthesis beside the
-# tests, so that neither leaves a core idle.
+# checks are in scripts/soak.sh. Synthesis and lint run beside the tests, so that no core
+# stands idle in the tests' tails (clippy beside the build was slower: both keep two cores busy).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -27,40 +27,42 @@ scripts/setup-tools.sh
 source scripts/tools-env.sh
 took
 
-step "format, lints and the test build"
+step "format and lints"
 cargo fmt --all -- --check
-# Clippy checks in a target directory of its own, beside the tests' optimised build: the two
-# share no artifacts (a check build against a code-generating one), and each alone leaves a
-# core idle for long stretches (the rtl crate).
-mkdir -p target
-CARGO_TARGET_DIR=target/clippy cargo clippy --workspace --all-targets --locked -- -D warnings \
-    >target/clippy.log 2>&1 &
-clippy=$!
-cargo test --workspace --locked --no-run
-clippy_ok=0
-wait $clippy || clippy_ok=$?
-cat target/clippy.log
-if [[ $clippy_ok -ne 0 ]]; then
-    echo "clippy failed (above)" >&2
-    exit 1
-fi
+cargo clippy --workspace --all-targets --locked -- -D warnings
 took
 
-step "tests, and Yosys synthesis of hdl-out/ beside them (each distinct module once)"
-# Synthesis needs only hdl-out/: it runs on the core the tests leave idle in their tails.
-scripts/synth.sh >target/synth-step.log 2>&1 &
+step "the tests' build"
+cargo test --workspace --locked --no-run
+took
+
+# Beside the tests, on the core their tails leave idle: Yosys synthesis of hdl-out/ (each
+# distinct module once; it needs only hdl-out/) and Verilator lint of hdl-out/ and of
+# raster_top's other builds (emitted by the test build's edgepaint). Their output is shown
+# once the tests are done.
+step "tests, with synthesis and lint beside them"
+out=${CARGO_TARGET_DIR:-target}
+scripts/synth.sh >"$out/synth-step.log" 2>&1 &
 synth=$!
+EDGEPAINT=$out/debug/edgepaint scripts/lint.sh >"$out/lint-step.log" 2>&1 &
+lint=$!
 cargo test --workspace --locked
 took
 
 step "Verilator lint of hdl-out/ and of raster_top's other builds"
-scripts/lint.sh
+lint_ok=0
+wait $lint || lint_ok=$?
+cat "$out/lint-step.log"
+if [[ $lint_ok -ne 0 ]]; then
+    echo "lint failed (above)" >&2
+    exit 1
+fi
 took
 
-step "waiting for the synthesis"
+step "Yosys synthesis of hdl-out/ (each distinct module once)"
 synth_ok=0
 wait $synth || synth_ok=$?
-cat target/synth-step.log
+cat "$out/synth-step.log"
 if [[ $synth_ok -ne 0 ]]; then
     echo "synthesis failed (above)" >&2
     exit 1

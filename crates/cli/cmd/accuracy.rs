@@ -11,7 +11,7 @@ use std::path::PathBuf;
 /// Arguments of `edgepaint accuracy`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// Scene file or trilist (JSON).
+    /// Scene file or trilist (JSON), or vertex buffer (measured at the formats in its header).
     input: PathBuf,
     /// Fixed-point pipeline(s) to measure.
     #[arg(long, value_enum, default_value = "scanline", num_args = 1.., value_delimiter = ',')]
