@@ -20,16 +20,6 @@ step() {
 took() {
     printf '== took %d s\n' $((SECONDS - last))
 }
-# finish WHAT PID LOG: waits for the background job PID, shows its LOG, stops on its failure.
-finish() {
-    local status=0
-    wait "$2" || status=$?
-    cat "$3"
-    if [[ $status -ne 0 ]]; then
-        echo "$1 failed (above)" >&2
-        exit 1
-    fi
-}
 
 step "tools"
 scripts/setup-tools.sh
@@ -60,11 +50,23 @@ cargo test --workspace --locked
 took
 
 step "Verilator lint of hdl-out/ and of raster_top's other builds"
-finish lint $lint "$out/lint-step.log"
+lint_ok=0
+wait $lint || lint_ok=$?
+cat "$out/lint-step.log"
+if [[ $lint_ok -ne 0 ]]; then
+    echo "lint failed (above)" >&2
+    exit 1
+fi
 took
 
 step "Yosys synthesis of hdl-out/ (each distinct module once)"
-finish synthesis $synth "$out/synth-step.log"
+synth_ok=0
+wait $synth || synth_ok=$?
+cat "$out/synth-step.log"
+if [[ $synth_ok -ne 0 ]]; then
+    echo "synthesis failed (above)" >&2
+    exit 1
+fi
 took
 
 printf '\n== all tests passed in %d s\n' $((SECONDS - start))
