@@ -16,11 +16,10 @@ use scene::stress::{fan, random_mesh, split_rectangle};
 use scene::{Triangle, Trilist, Vertex};
 use std::path::Path;
 use std::process::Command;
-use std::sync::Arc;
 use testbenches::frame::{self, draw, Cycle, Frame, FrameOut, MemoryModel, Report};
 use testbenches::memory::{Memory, ReadDuringWrite, Request};
 use testbenches::streams::{as_pins, pixel_of, unsigned};
-use testbenches::{seed, Dual, Pins, Value, Verilated};
+use testbenches::{seed, Dual, Pins, Value};
 
 /// The default `raster_top` under Verilator (the committed `hdl-out/raster_top.v`; the
 /// model is built once, cached under the target directory).
@@ -306,11 +305,6 @@ fn raster_top_hdl_vs_verilator_lockstep_long() {
     }
 }
 
-/// `raster_top` of size class `class` (`N`), emitted and Verilated.
-fn verilated_at(class: u32) -> Arc<Verilated> {
-    testbenches::verilated_with("raster_top", [("N", class as u64), ("L", LOCKSTEP_L as u64)])
-}
-
 /// The divider stages of the lockstep builds that test something else (size classes, units
 /// present): 001's 5, as rust-hdl's simulation of the default 25 stages is most of what they
 /// would cost. The default runs in lockstep at class 10 and at `rtl::custom`'s formats, and
@@ -326,7 +320,8 @@ const LOCKSTEP_L: usize = 5;
 /// at rust-hdl's speed. Spans across both edges are in `crossing_40x30` (in lockstep below)
 /// and in the clipping frames in Verilator.
 #[test]
-#[ignore = "soak: two more Verilator models of raster_top; the test command lints classes 11 and 12 and draws class 11 in Verilator against the model"]
+#[cfg(feature = "classes-11-12")]
+#[ignore = "soak: two more Verilator models of raster_top in rust-hdl's lockstep"]
 fn raster_top_size_classes_11_and_12_lockstep() {
     fn lockstep<U: Block + Pins>(class: u32, unit: U) {
         let (mut l, cull) = scene("cube", Some((24, 16)));
@@ -336,7 +331,7 @@ fn raster_top_size_classes_11_and_12_lockstep() {
         // (`model::guard_band`). Classes 11 and 12 take it whole.
         let class10 = raster_top(&Build::for_screen(l.width, l.height), &l, cull, [0; 3]).expect("a 24 x 16 frame");
         assert!(class10.skipped.is_empty() && class10.triangles.len() > l.triangles.len(), "class 10 clips it");
-        let vl = verilated_at(class);
+        let vl = testbenches::verilated_with("raster_top", [("N", class as u64), ("L", LOCKSTEP_L as u64)]);
         let mut dual = Dual::new(unit, vl.model().unwrap_or_else(|e| panic!("{e}")));
         let what = format!("class {class}, lockstep");
         let (prep, _) = check_at(Build::of_class(class), &what, &mut dual, &l, cull, ready_memory(&mut |c| c % 5 != 3));
@@ -351,6 +346,7 @@ fn raster_top_size_classes_11_and_12_lockstep() {
 /// A screen larger than class 10's through the `raster_top` the CLI picks for it (class
 /// 11), in Verilator: image and cycles the model's.
 #[test]
+#[cfg(feature = "classes-11-12")]
 fn raster_top_class_11_scene_vs_model() {
     let (l, cull) = scene("sphere", Some((1280, 960)));
     assert_eq!(Build::for_screen(l.width, l.height).class, 11);

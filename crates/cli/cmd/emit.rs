@@ -46,19 +46,19 @@ pub fn run(args: Args) -> Result<()> {
 
 /// Emits unit `name` with `params` over its defaults, at the formats file `formats` over
 /// its size class's defaults when given (a scanline unit). `None` when this edgepaint does
-/// not hold those formats and one compiled at them ran the command instead
-/// (`super::rebuild`).
+/// not hold that build (the formats, or a size class it is compiled without) and one
+/// compiled at it ran the command instead (`super::rebuild`).
 pub fn emit_with(name: &str, params: Vec<(String, u64)>, formats: Option<&Path>) -> Result<Option<Emitted>> {
-    let Some(path) = formats else {
-        return emit_one(name, params).map(Some);
-    };
     let unit = unit_named(name)?;
     let params = unit.params(params).map_err(|e| anyhow!(e))?;
     let Some(&class) = params.get("N") else {
-        bail!("{name} has no number formats to set (--formats is for the scanline units)");
+        if formats.is_some() {
+            bail!("{name} has no number formats to set (--formats is for the scanline units)");
+        }
+        return unit.emit(&params).map(Some).map_err(|e| anyhow!(e));
     };
-    let build = super::rebuild::build_from_file(path, u32::try_from(class).unwrap_or(u32::MAX))?;
-    if super::rebuild::ensure(&build, &format!("the formats of {}", path.display()))? {
+    let (build, why) = super::rebuild::build_at(u32::try_from(class).unwrap_or(u32::MAX), formats)?;
+    if super::rebuild::ensure(&build, &why)? {
         return Ok(None);
     }
     unit.emit_at(&params, &build.formats).map(Some).map_err(|e| anyhow!(e))
@@ -71,13 +71,6 @@ fn unit_named(name: &str) -> Result<&'static Unit> {
 /// `edgepaint` with no arguments: the default design into `hdl-out/`.
 pub fn run_default() -> Result<()> {
     emit_default(Path::new("hdl-out"))
-}
-
-/// Emits unit `name` with `params` over its defaults.
-pub fn emit_one(name: &str, params: Vec<(String, u64)>) -> Result<Emitted> {
-    let unit = unit_named(name)?;
-    let params = unit.params(params).map_err(|e| anyhow!(e))?;
-    unit.emit(&params).map_err(|e| anyhow!(e))
 }
 
 /// Writes the default design into `dir` and deletes any other `.v` there, so the

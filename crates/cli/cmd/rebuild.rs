@@ -3,9 +3,9 @@
 //! the same command run again in an edgepaint compiled at it.
 //!
 //! rust-hdl's widths are compile-time constants: edgepaint holds the units at the
-//! defaults of size classes 10, 11 and 12 and at one more build, `rtl::custom`, set when it
-//! is compiled (`EDGEPAINT_CLASS`, 8 to 12, `EDGEPAINT_FORMATS`; `crates/rtl/build.rs`). For any
-//! other build, [`ensure`] runs `cargo run --release` on edgepaint's sources with those
+//! defaults of size classes 10, 11 and 12 (11 and 12 with the feature `classes-11-12`, on by
+//! default) and at one more build, `rtl::custom`, set when it is compiled (`EDGEPAINT_CLASS`,
+//! 8 to 12, `EDGEPAINT_FORMATS`; `crates/rtl/build.rs`). For any other build, [`ensure`] runs `cargo run --release` on edgepaint's sources with those
 //! variables set, in a target directory of its own (`target/formats`, so the usual build
 //! is not disturbed): a full build the first time, the `rtl` crate and what uses it after.
 
@@ -18,16 +18,22 @@ use std::process::Command;
 const REBUILT: &str = "EDGEPAINT_REBUILT";
 
 /// The build at size class `class` with the formats file `path` over its defaults
-/// (`Formats::for_n(class)`, a class below 10 too), checked for the RTL.
-pub fn build_from_file(path: &Path, class: u32) -> Result<Build> {
-    if class > 16 {
-        bail!("size class {class} is not built");
+/// (`Formats::for_n(class)`, a class below 10 too), or at the defaults without a file,
+/// checked for the RTL; with what names it in messages.
+pub fn build_at(class: u32, path: Option<&Path>) -> Result<(Build, String)> {
+    let (min, max) = (rtl::config::CLASS_MIN, rtl::config::CLASS_MAX);
+    if !(min..=max).contains(&class) {
+        bail!("size class N = {class} is not built: the scanline units take {min} to {max} (screens up to 2^N x 2^N)");
     }
+    let Some(path) = path else {
+        let build = Build::of_class(class);
+        rtl::config::check(class, &build.formats).map_err(|e| anyhow::anyhow!("size class {class}: {e}"))?;
+        return Ok((build, format!("size class {class}")));
+    };
     let formats = fx::Formats::with_overrides_at(class, &super::engine::formats_json(path)?)
         .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-    let build = Build { class, formats };
     rtl::config::check(class, &formats).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-    Ok(build)
+    Ok((Build { class, formats }, format!("the formats of {}", path.display())))
 }
 
 /// `Ok(false)` when this edgepaint holds `build`: go on. Otherwise runs this command again

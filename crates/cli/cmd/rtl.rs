@@ -55,10 +55,15 @@ pub fn render(
     unit_params.extend(parts.iter().copied());
     let formats = fixed.formats_of(loaded)?;
     let build = Build { class, formats };
-    if build != Build::of_class(class) {
+    if !rtl::built(&build) {
         let source = if loaded.build.is_some() { "the vertex buffer's" } else { fixed.formats.as_str() };
         rtl::config::check(class, &formats).map_err(|e| anyhow!("--engine rtl, formats \"{source}\": {e}"))?;
-        if super::rebuild::ensure(&build, &format!("the formats of {source}"))? {
+        let why = if build == Build::of_class(class) {
+            format!("size class {class}")
+        } else {
+            format!("the formats of {source}")
+        };
+        if super::rebuild::ensure(&build, &why)? {
             return Ok(None);
         }
     }

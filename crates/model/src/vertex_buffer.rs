@@ -453,13 +453,10 @@ impl VertexBuffer {
             }
             let mut iw = [0; 3];
             for k in 0..3 {
-                iw[k] = unfield(f.inv_w, w(4 + k)).filter(|&iw| iw > 0).ok_or(DecodeError {
+                // 0 is a word: a vertex over 2^(frac + 1) times as far as the nearest one.
+                iw[k] = unfield(f.inv_w, w(4 + k)).filter(|&iw| iw >= 0).ok_or(DecodeError {
                     offset: at + 16 + 4 * k,
-                    rule: format!(
-                        "triangle {t}: inv_w of V{k} = {:#010x} is not a positive {} word",
-                        w(4 + k),
-                        f.inv_w
-                    ),
+                    rule: format!("triangle {t}: inv_w of V{k} = {:#010x} is not a {} word", w(4 + k), f.inv_w),
                 })?;
             }
             if iw.iter().max() != Some(&one) {
@@ -479,7 +476,11 @@ impl VertexBuffer {
 
 /// A w whose reciprocal in f64 is `iw` exactly (`input::to_fixed` divides the triangle's
 /// smallest w, 1 here, by it): 1 / iw, or the nearest f64 beside it that gives it back.
+/// For `iw` 0, 2^64: its reciprocal rounds to 0 in any `inv_w` format edgepaint builds.
 fn w_for(iw: f64) -> f64 {
+    if iw == 0.0 {
+        return 2f64.powi(64);
+    }
     let w = 1.0 / iw;
     let step = |x: f64, up: bool| f64::from_bits(if up { x.to_bits() + 1 } else { x.to_bits() - 1 });
     [w, step(w, true), step(w, false), step(step(w, true), true), step(step(w, false), false)]
@@ -543,7 +544,7 @@ mod tests {
     #[test]
     fn inv_w_words_survive_the_trilist_for_every_value() {
         let f = Build::default().formats.inv_w;
-        for raw in 1..=(1i128 << f.frac) {
+        for raw in 0..=(1i128 << f.frac) {
             let iw = f.to_f64(raw);
             assert_eq!(f.from_f64(1.0 / w_for(iw)), Some(raw), "inv_w {raw}");
         }
@@ -561,6 +562,26 @@ mod tests {
         let want = to_fixed(&list.triangles[0], &f).expect("fits");
         assert_eq!(vb.hardware_triangles(), vec![want]);
         let back = VertexBuffer::decode(&vb.encode()).expect("reads back");
+        let again = to_fixed(&back.to_trilist().triangles[0], &f).expect("fits");
+        assert_eq!(again, want);
+    }
+
+    /// A vertex a million times as far as the nearest has `inv_w` word 0 (w_min / w under
+    /// half of U1.15's LSB): the buffer stores it, reads it back and gives it back through
+    /// the trilist.
+    #[test]
+    fn a_vertex_far_past_the_inv_w_format_reads_back_as_0() {
+        let list = Trilist {
+            width: 16,
+            height: 16,
+            triangles: vec![tri([(1.0, 1.0, 0.2), (15.0, 2.0, 0.4), (3.0, 14.0, 0.9)], Some([1.0, 1e6, 2.0]))],
+        };
+        let vb = packed(&list);
+        let f = Build::for_screen(16, 16).formats;
+        let want = to_fixed(&list.triangles[0], &f).expect("fits");
+        assert_eq!(want.map(|v| v.iw), [1 << f.inv_w.frac, 0, 1 << (f.inv_w.frac - 1)]);
+        let back = VertexBuffer::decode(&vb.encode()).expect("reads back");
+        assert_eq!(back.hardware_triangles(), vec![want]);
         let again = to_fixed(&back.to_trilist().triangles[0], &f).expect("fits");
         assert_eq!(again, want);
     }
@@ -597,7 +618,7 @@ mod tests {
         broken(|b| set(b, tri(0) + 12, 0xffff | END_OF_BUFFER), tri(0) + 12, "only the last triangle ends");
         broken(|b| set(b, tri(0) + 12, 0xffff | END_OF_FRAME), tri(0) + 12, "only the buffer's last triangle");
         broken(|b| set(b, tri(2) + 12, 7), tri(2) + 12, "no textures");
-        broken(|b| set(b, tri(2) + 16, 0), tri(2) + 16, "not a positive");
+        broken(|b| set(b, tri(2) + 20, 0xffff_ffff), tri(2) + 20, "inv_w of V1 = 0xffffffff is not a");
         let halves = |b: &mut Vec<u8>| (0..3).for_each(|k| set(b, tri(2) + 16 + 4 * k, 1 << 14));
         broken(halves, tri(2) + 16, "its largest must be 1");
         broken(|b| set(b, tri(2) + 28, 1), tri(2) + 28, "reserved");

@@ -51,19 +51,33 @@ pub mod custom;
 #[allow(clippy::duplicate_mod)]
 pub mod n10;
 #[allow(clippy::duplicate_mod)]
+#[cfg(feature = "classes-11-12")]
 pub mod n11;
 #[allow(clippy::duplicate_mod)]
+#[cfg(feature = "classes-11-12")]
 pub mod n12;
 
-/// The size classes the scanline units are built for at their default formats (`n10`,
-/// `n11`, `n12`).
-pub const CLASSES: [u32; 3] = [n10::CLASS, n11::CLASS, n12::CLASS];
+/// Whether this edgepaint holds size classes 11 and 12 (the feature `classes-11-12`, on in
+/// edgepaint's default features; without it they are `custom` builds made on demand).
+const HOLDS_CLASSES_11_12: bool = cfg!(feature = "classes-11-12");
+
+/// The size classes the scanline units are built for at their default formats (`n10`, and
+/// `n11` and `n12` with the feature `classes-11-12`).
+pub const CLASSES: &[u32] = &[
+    n10::CLASS,
+    #[cfg(feature = "classes-11-12")]
+    n11::CLASS,
+    #[cfg(feature = "classes-11-12")]
+    n12::CLASS,
+];
 
 /// Every build of the scanline units: the size classes at their default formats, then
 /// `custom`.
-pub const BUILDS: [fx::Build; 4] = [
+pub const BUILDS: [fx::Build; CLASSES.len() + 1] = [
     fx::Build { class: n10::CLASS, formats: n10::FORMATS },
+    #[cfg(feature = "classes-11-12")]
     fx::Build { class: n11::CLASS, formats: n11::FORMATS },
+    #[cfg(feature = "classes-11-12")]
     fx::Build { class: n12::CLASS, formats: n12::FORMATS },
     fx::Build { class: custom::CLASS, formats: custom::FORMATS },
 ];
@@ -82,7 +96,14 @@ macro_rules! by_build {
                 params,
                 formats,
                 stringify!($unit),
-                [n10::$unit::$emit, n11::$unit::$emit, n12::$unit::$emit, custom::$unit::$emit],
+                [
+                    n10::$unit::$emit,
+                    #[cfg(feature = "classes-11-12")]
+                    n11::$unit::$emit,
+                    #[cfg(feature = "classes-11-12")]
+                    n12::$unit::$emit,
+                    custom::$unit::$emit,
+                ],
             )
         }
     };
@@ -101,7 +122,17 @@ fn emit_at_build(
 ) -> Result<Emitted, String> {
     let n = params["N"];
     let Some(class) = u32::try_from(n).ok().filter(|c| CLASSES.contains(c) || *c == custom::CLASS) else {
-        return Err(format!("{unit}: N = {n} is not supported: size classes {CLASSES:?} (screens up to 2^N x 2^N)"));
+        let feature = if HOLDS_CLASSES_11_12 {
+            ""
+        } else {
+            " (this edgepaint is built without the feature classes-11-12, on by default: classes 11 and 12 are \
+             custom builds, which `edgepaint emit|render` compiles when asked)"
+        };
+        return Err(format!(
+            "{unit}: N = {n} is not supported: size classes {CLASSES:?} and rtl::custom's {} (screens up to 2^N x \
+             2^N){feature}",
+            custom::CLASS
+        ));
     };
     let build = fx::Build { class, formats: formats.copied().unwrap_or(Formats::for_n(class)) };
     let i = BUILDS.iter().position(|b| *b == build).ok_or_else(|| {
