@@ -1,8 +1,9 @@
 //! In-process simulation speed of the EPT and of whole frames through `raster_top` in each
 //! simulator, in cycles per second.
 //!
-//! `cargo run --release -p testbenches --example sim_speed [SECONDS]` (default 2 s per
-//! measurement; needs Verilator: scripts/setup-tools.sh). EPT: one cycle = drive `xl`, `xr`,
+//! `cargo run --release -p testbenches --features classes-11-12 --example sim_speed [SECONDS]`
+//! (default 2 s per measurement; needs Verilator: scripts/setup-tools.sh; without the
+//! feature, classes 11 and 12 are left out). EPT: one cycle = drive `xl`, `xr`,
 //! settle, read `px`, as in the tests, with random (XL, XR) from a fixed seed. raster_top:
 //! the cube scene at 64 x 48 in rust-hdl, and the whole shipped scene `all` at 640 x 480 in
 //! Verilator at every build of the scanline units (`rtl::BUILDS`: size classes 10, 11 and

@@ -550,20 +550,30 @@ mod tests {
         }
     }
 
-    #[test]
-    fn perspective_triangles_keep_their_inv_w() {
+    /// One 16 x 16 triangle with vertices at distances `w` through `pack`, `encode`,
+    /// `decode` and `to_trilist`: the buffer holds `input::to_fixed`'s words and gives them
+    /// back at each step. Returns them.
+    fn round_trip(w: [f64; 3]) -> [Vtx; 3] {
         let list = Trilist {
             width: 16,
             height: 16,
-            triangles: vec![tri([(1.0, 1.0, 0.2), (15.0, 2.0, 0.4), (3.0, 14.0, 0.9)], Some([1.5, 3.0, 7.25]))],
+            triangles: vec![tri([(1.0, 1.0, 0.2), (15.0, 2.0, 0.4), (3.0, 14.0, 0.9)], Some(w))],
         };
-        let vb = packed(&list);
         let f = Build::for_screen(16, 16).formats;
         let want = to_fixed(&list.triangles[0], &f).expect("fits");
+        let vb = packed(&list);
         assert_eq!(vb.hardware_triangles(), vec![want]);
         let back = VertexBuffer::decode(&vb.encode()).expect("reads back");
+        assert_eq!(back.hardware_triangles(), vec![want]);
         let again = to_fixed(&back.to_trilist().triangles[0], &f).expect("fits");
         assert_eq!(again, want);
+        want
+    }
+
+    #[test]
+    fn perspective_triangles_keep_their_inv_w() {
+        let iw = round_trip([1.5, 3.0, 7.25]).map(|v| v.iw);
+        assert!(iw[0] == 1 << 15 && iw[1] < iw[0] && iw[2] < iw[1], "{iw:?}");
     }
 
     /// A vertex a million times as far as the nearest has `inv_w` word 0 (w_min / w under
@@ -571,19 +581,7 @@ mod tests {
     /// the trilist.
     #[test]
     fn a_vertex_far_past_the_inv_w_format_reads_back_as_0() {
-        let list = Trilist {
-            width: 16,
-            height: 16,
-            triangles: vec![tri([(1.0, 1.0, 0.2), (15.0, 2.0, 0.4), (3.0, 14.0, 0.9)], Some([1.0, 1e6, 2.0]))],
-        };
-        let vb = packed(&list);
-        let f = Build::for_screen(16, 16).formats;
-        let want = to_fixed(&list.triangles[0], &f).expect("fits");
-        assert_eq!(want.map(|v| v.iw), [1 << f.inv_w.frac, 0, 1 << (f.inv_w.frac - 1)]);
-        let back = VertexBuffer::decode(&vb.encode()).expect("reads back");
-        assert_eq!(back.hardware_triangles(), vec![want]);
-        let again = to_fixed(&back.to_trilist().triangles[0], &f).expect("fits");
-        assert_eq!(again, want);
+        assert_eq!(round_trip([1.0, 1e6, 2.0]).map(|v| v.iw), [1 << 15, 0, 1 << 14]);
     }
 
     /// Bytes of the fan's buffer with `edit` applied; the rule broken must name `offset`.
