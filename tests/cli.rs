@@ -459,6 +459,12 @@ fn cli_packs_inspects_and_renders_a_vertex_buffer() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(text.contains("vertex buffer v1: 96x72 screen, size class 10"), "{text}");
     assert!(text.contains(&format!("{} triangles from byte 96", buffer.triangles.len())), "{text}");
+    // The command parser's vertex fetches: the sphere is index-ordered, so each vertex is
+    // fetched about once (0.5 per triangle), far from a soup's 3.
+    let fetches = text.split("vertex cache, latency 0): ").nth(1).and_then(|s| s.split(' ').next());
+    let fetches: f64 = fetches.and_then(|f| f.parse().ok()).unwrap_or_else(|| panic!("{text}"));
+    assert!(fetches > 0.0 && fetches <= 1.2, "{text}");
+    fails_with(&["inspect", vb_s, "--cache", "3"], &["--cache", "power of two"]);
 
     let (a, b) = (d.join("scene.png"), d.join("vb.png"));
     let render = |input: &str, out: &Path, engine: &str| {

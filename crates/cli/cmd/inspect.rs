@@ -1,7 +1,8 @@
 //! `edgepaint inspect`: a vertex buffer, for a person (README, "Vertex buffer").
 
 use super::input;
-use anyhow::Result;
+use anyhow::{anyhow, ensure, Result};
+use model::command_parser::{self, Bench, Outcome, Params};
 use model::vertex_buffer::{VertexBuffer, HEADER_BYTES, RECORD_BYTES};
 use std::path::PathBuf;
 
@@ -15,12 +16,48 @@ pub struct Args {
     records: usize,
     #[arg(long)]
     all: bool,
+    /// Entries of the command parser's vertex cache for its fetch count (a power of two,
+    /// 1 to 1024).
+    #[arg(long, default_value_t = Params::default().cache)]
+    cache: u32,
+    /// Bytes per beat of the command parser's read bus (4, 8, 16 or 32).
+    #[arg(long, default_value_t = Params::default().beat_bytes)]
+    bus_bytes: u32,
+    /// Cycles before each burst's first beat, for the parser's cycle count.
+    #[arg(long, default_value_t = 0)]
+    latency: u32,
 }
 
 pub fn run(args: Args) -> Result<()> {
     let vb = input::vertex_buffer(&args.input)?;
+    let params = Params { cache: args.cache, beat_bytes: args.bus_bytes };
+    params.check().map_err(|e| anyhow!("--cache / --bus-bytes: {e}"))?;
     let shown = if args.all { usize::MAX } else { args.records };
     print!("{}", describe(&vb, shown));
+    // Each of the 4 T + 3 bursts (header, index records, vertices missed) takes at most its
+    // latency, 24 beats and a few cycles of address, check and lookup.
+    let max_cycles = (4 * vb.triangles.len() as u64 + 3) * (u64::from(args.latency) + 30);
+    let bench = Bench { latency: args.latency, max_cycles, ..Bench::default() };
+    let r = command_parser::run(params, vb.build, &vb.encode(), bench).map_err(|e| anyhow!(e))?;
+    ensure!(
+        r.outcome == Outcome::FrameDone,
+        "{}: the command parser's model ended in {:?}",
+        args.input.display(),
+        r.outcome
+    );
+    let s = r.stats;
+    println!(
+        "command parser (model::command_parser: {}-bit bus, {}-entry vertex cache, latency {}): {:.2} vertex fetches \
+         per triangle ({} fetched, {} from the cache), {} cycles ({:.1} per triangle)",
+        8 * params.beat_bytes,
+        params.cache,
+        args.latency,
+        s.fetches_per_triangle(),
+        s.vertex_bursts,
+        s.cache_hits,
+        r.cycles,
+        r.cycles as f64 / s.triangles.max(1) as f64
+    );
     Ok(())
 }
 

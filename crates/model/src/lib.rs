@@ -11,6 +11,7 @@
 //! * [`guard_band`]: the host's clipping front end; [`input`]: float vertices to hardware words;
 //!   [`ctx`]: formats and overflow records.
 
+pub mod command_parser;
 pub mod ctx;
 pub mod cull_sort;
 pub mod cycles;
@@ -21,6 +22,7 @@ pub mod guard_band;
 pub mod input;
 pub mod pixel_out;
 pub mod raster_top;
+pub mod read_memory;
 pub mod render;
 pub mod se;
 pub mod span;

@@ -217,12 +217,6 @@ pub fn pack(
     Ok((vb, skipped))
 }
 
-/// Little-endian 32-bit word `i` of a record or header at `at`.
-fn word(bytes: &[u8], at: usize, i: usize) -> u32 {
-    let o = at + 4 * i;
-    u32::from_le_bytes([bytes[o], bytes[o + 1], bytes[o + 2], bytes[o + 3]])
-}
-
 impl VertexBuffer {
     /// Byte offset of the triangle index list (right after the header).
     pub fn index_offset(&self) -> usize {
@@ -317,7 +311,9 @@ impl VertexBuffer {
         out
     }
 
-    /// Reads a buffer, checking every rule of the format (README, "Vertex buffer").
+    /// Reads a buffer, checking every rule of the format (README, "Vertex buffer"): the
+    /// header ([`read_header`]), the length, then each vertex record
+    /// ([`read_vertex_record`]) and each index record ([`read_index_record`]).
     pub fn decode(bytes: &[u8]) -> Result<VertexBuffer, DecodeError> {
         if bytes.len() < HEADER_BYTES {
             return fail(
@@ -325,153 +321,256 @@ impl VertexBuffer {
                 format!("the buffer ends inside its {HEADER_BYTES}-byte header ({} bytes)", bytes.len()),
             );
         }
-        if bytes[..4] != MAGIC {
-            return fail(0, format!("not a vertex buffer: the magic is {:02x?}, not \"EPVB\"", &bytes[..4]));
+        let located = |at: usize| move |e: Broken| DecodeError { offset: at + e.at, rule: e.rule };
+        let h = read_header(&words(bytes, 0)).map_err(located(0))?;
+        if h.length as usize != bytes.len() {
+            return fail(
+                32,
+                format!("the header gives the buffer's length as {} bytes; it has {}", h.length, bytes.len()),
+            );
         }
-        let h = |i| word(bytes, 0, i);
-        let version = h(1) as u16;
-        if version != VERSION {
-            return fail(4, format!("version {version}: this edgepaint reads version {VERSION}"));
-        }
-        let flags = (h(1) >> 16) as u16;
-        if flags & !FLAG_CULL_BACK != 0 {
-            return fail(6, format!("flags {flags:#06x}: only bit 0 (cull back faces) is defined"));
-        }
-        let (width, height) = (h(2) & 0xffff, h(2) >> 16);
-        let class = h(3);
-        let (triangles, vertices) = (h(4) as usize, h(5) as usize);
-        let (index_at, vertex_at, length) = (h(6) as usize, h(7) as usize, h(8) as usize);
-        let background = h(9).to_le_bytes();
-        let mut fmts = [Fmt::s(0, 0); 11];
-        for (i, (name, _)) in Formats::for_n(10).named().iter().enumerate() {
-            fmts[i] = word_format(h(10 + i)).ok_or(DecodeError {
-                offset: 40 + 4 * i,
-                rule: format!(
-                    "{name}'s format word {:#010x} is not a format (bits 0-18 only, 1 to {} bits)",
-                    h(10 + i),
-                    fx::MAX_BITS
-                ),
-            })?;
-        }
-        let build = Build { class, formats: formats_of(fmts) };
-        if background[3] != 0 || (21..24).any(|i| h(i) != 0) {
-            let at = if background[3] != 0 { 39 } else { 84 };
-            return fail(at, "reserved header bytes must be 0");
-        }
-        check_build(&build, width, height).map_err(|rule| DecodeError { offset: 8, rule })?;
-        if length != bytes.len() {
-            return fail(32, format!("the header gives the buffer's length as {length} bytes; it has {}", bytes.len()));
-        }
-        let region = |at: usize, n: usize, what: &str, field: usize| -> Result<(), DecodeError> {
-            let end = n.checked_mul(RECORD_BYTES).and_then(|b| b.checked_add(at));
-            if !at.is_multiple_of(RECORD_BYTES) || at < HEADER_BYTES {
-                return fail(
-                    field,
-                    format!("the {what} starts at byte {at}: past the header, on a {RECORD_BYTES}-byte boundary"),
-                );
-            }
-            match end {
-                Some(end) if end <= length => Ok(()),
-                _ => fail(
-                    field,
-                    format!("{n} records of the {what} from byte {at} run past the buffer's {length} bytes"),
-                ),
-            }
-        };
-        region(index_at, triangles, "index list", 24)?;
-        region(vertex_at, vertices, "vertex array", 28)?;
-        let overlap = index_at < vertex_at + vertices * RECORD_BYTES && vertex_at < index_at + triangles * RECORD_BYTES;
-        if overlap && triangles > 0 && vertices > 0 {
-            return fail(28, "the index list and the vertex array overlap");
-        }
-        let f = &build.formats;
         let mut vb = VertexBuffer {
-            build,
-            width,
-            height,
-            cull_back: flags & FLAG_CULL_BACK != 0,
-            background: [background[0], background[1], background[2]],
-            triangles: Vec::with_capacity(triangles),
-            vertices: Vec::with_capacity(vertices),
+            build: h.build,
+            width: h.width,
+            height: h.height,
+            cull_back: h.cull_back,
+            background: h.background,
+            triangles: Vec::with_capacity(h.triangles as usize),
+            vertices: Vec::with_capacity(h.vertices as usize),
         };
-        for v in 0..vertices {
-            let at = vertex_at + v * RECORD_BYTES;
-            let w = |i| word(bytes, at, i);
-            let get = |i: usize, name: &str, fmt: Fmt| {
-                unfield(fmt, w(i)).ok_or(DecodeError {
-                    offset: at + 4 * i,
-                    rule: format!("vertex {v}: {name} = {:#010x} is not a {fmt} word, sign- or zero-extended", w(i)),
-                })
-            };
-            let r = VertexRecord {
-                x: get(0, "x", f.xy)?,
-                y: get(1, "y", f.xy)?,
-                z: get(2, "z", f.z)?,
-                c: [get(3, "R", f.color)?, get(4, "G", f.color)?, get(5, "B", f.color)?],
-            };
-            if w(6) != 0 || w(7) != 0 {
-                return fail(at + 24, format!("vertex {v}: reserved words must be 0"));
-            }
-            vb.vertices.push(r);
+        for v in 0..h.vertices {
+            let at = h.vertex_at as usize + v as usize * RECORD_BYTES;
+            vb.vertices.push(read_vertex_record(&words(bytes, at), v, &h.build.formats).map_err(located(at))?);
         }
-        let one = 1i128 << f.inv_w.frac;
-        for t in 0..triangles {
-            let at = index_at + t * RECORD_BYTES;
-            let w = |i| word(bytes, at, i);
-            let v = [w(0), w(1), w(2)];
-            if let Some(k) = (0..3).find(|&k| v[k] as usize >= vertices) {
-                return fail(at + 4 * k, format!("triangle {t}: V{k} = {} is past the {vertices} vertices", v[k]));
-            }
-            let ti = w(3);
-            let texture = ti as u16;
-            if texture != NO_TEXTURE {
-                return fail(
-                    at + 12,
-                    format!(
-                        "triangle {t}: texture index {texture}: edgepaint has no textures ({NO_TEXTURE:#06x}: none)"
-                    ),
-                );
-            }
-            if ti & !(0xffff | END_OF_BUFFER | END_OF_FRAME) != 0 {
-                return fail(at + 12, format!("triangle {t}: TI {ti:#010x}: bits 18-31 are reserved (0)"));
-            }
-            let last = t + 1 == triangles;
-            let (eob, eof) = (ti & END_OF_BUFFER != 0, ti & END_OF_FRAME != 0);
-            if eob != last {
-                let rule = if last {
-                    "the last triangle must end the buffer"
-                } else {
-                    "only the last triangle ends the buffer"
-                };
-                return fail(at + 12, format!("triangle {t}: {rule} (TI bit 16)"));
-            }
-            if eof && !last {
-                return fail(
-                    at + 12,
-                    format!("triangle {t}: only the buffer's last triangle can end the frame (TI bit 17)"),
-                );
-            }
-            let mut iw = [0; 3];
-            for k in 0..3 {
-                // 0 is a word: a vertex over 2^(frac + 1) times as far as the nearest one.
-                iw[k] = unfield(f.inv_w, w(4 + k)).filter(|&iw| iw >= 0).ok_or(DecodeError {
-                    offset: at + 16 + 4 * k,
-                    rule: format!("triangle {t}: inv_w of V{k} = {:#010x} is not a {} word", w(4 + k), f.inv_w),
-                })?;
-            }
-            if iw.iter().max() != Some(&one) {
-                return fail(
-                    at + 16,
-                    format!("triangle {t}: inv_w is w_min / w over the triangle: its largest must be 1"),
-                );
-            }
-            if w(7) != 0 {
-                return fail(at + 28, format!("triangle {t}: reserved word must be 0"));
-            }
-            vb.triangles.push(IndexRecord { v, iw, end_of_buffer: eob, end_of_frame: eof });
+        for t in 0..h.triangles {
+            let at = h.index_at as usize + t as usize * RECORD_BYTES;
+            vb.triangles.push(read_index_record(&words(bytes, at), t, &h).map_err(located(at))?);
         }
         Ok(vb)
     }
+}
+
+/// The `N` little-endian 32-bit words from byte `at` (inside `bytes`).
+fn words<const N: usize>(bytes: &[u8], at: usize) -> [u32; N] {
+    std::array::from_fn(|i| {
+        let o = at + 4 * i;
+        u32::from_le_bytes([bytes[o], bytes[o + 1], bytes[o + 2], bytes[o + 3]])
+    })
+}
+
+/// A header's or a record's words breaking a rule: the byte offset inside it, the rule
+/// and its class ([`Fault`], the command parser's error code).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Broken {
+    pub at: usize,
+    pub fault: Fault,
+    pub rule: String,
+}
+
+fn broken<T>(at: usize, fault: Fault, rule: impl Into<String>) -> Result<T, Broken> {
+    Err(Broken { at, fault, rule: rule.into() })
+}
+
+/// The class of a rule a buffer breaks: the command parser's error code
+/// (`model::command_parser`), one per class.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[repr(u8)]
+pub enum Fault {
+    /// Not "EPVB".
+    Magic = 1,
+    /// Not version [`VERSION`].
+    Version = 2,
+    /// A reserved bit, byte or word is not 0.
+    Reserved = 3,
+    /// The size class or a format word is not a build's, or is not the hardware's.
+    Build = 4,
+    /// The arrays' offsets and counts: before the header's end, off a record boundary,
+    /// past the buffer's length, overlapping, or past 32-bit addresses.
+    Layout = 5,
+    /// A vertex index past the vertex array.
+    Index = 6,
+    /// TI: a texture, a reserved bit, or end flags on the wrong record.
+    TriangleInfo = 7,
+    /// An `inv_w` word outside its format, or none of a triangle's is 1.
+    InvW = 8,
+    /// A vertex word outside its format.
+    VertexWord = 9,
+    /// The memory answered a read with an error (the command parser only).
+    Bus = 10,
+    /// The buffer's address is not on a record boundary (the command parser only).
+    Address = 11,
+}
+
+/// What the header says.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Header {
+    pub build: Build,
+    pub width: u32,
+    pub height: u32,
+    pub cull_back: bool,
+    pub background: [u8; 3],
+    /// T and V.
+    pub triangles: u32,
+    pub vertices: u32,
+    /// Byte offsets of the index list and the vertex array.
+    pub index_at: u32,
+    pub vertex_at: u32,
+    /// The buffer's length in bytes.
+    pub length: u32,
+}
+
+/// The header's 24 words, checked: every rule that needs only the header (the length is
+/// the buffer's is the reader's to check).
+pub fn read_header(h: &[u32; HEADER_BYTES / 4]) -> Result<Header, Broken> {
+    if h[0] != u32::from_le_bytes(MAGIC) {
+        let magic = h[0].to_le_bytes();
+        return broken(0, Fault::Magic, format!("not a vertex buffer: the magic is {magic:02x?}, not \"EPVB\""));
+    }
+    let version = h[1] as u16;
+    if version != VERSION {
+        return broken(4, Fault::Version, format!("version {version}: this edgepaint reads version {VERSION}"));
+    }
+    let flags = (h[1] >> 16) as u16;
+    if flags & !FLAG_CULL_BACK != 0 {
+        return broken(6, Fault::Reserved, format!("flags {flags:#06x}: only bit 0 (cull back faces) is defined"));
+    }
+    let (width, height) = (h[2] & 0xffff, h[2] >> 16);
+    let background = h[9].to_le_bytes();
+    let mut fmts = [Fmt::s(0, 0); 11];
+    for (i, (name, _)) in Formats::for_n(10).named().iter().enumerate() {
+        fmts[i] = word_format(h[10 + i]).ok_or(Broken {
+            at: 40 + 4 * i,
+            fault: Fault::Build,
+            rule: format!(
+                "{name}'s format word {:#010x} is not a format (bits 0-18 only, 1 to {} bits)",
+                h[10 + i],
+                fx::MAX_BITS
+            ),
+        })?;
+    }
+    if background[3] != 0 || h[21..24].iter().any(|&w| w != 0) {
+        let at = if background[3] != 0 { 39 } else { 84 };
+        return broken(at, Fault::Reserved, "reserved header bytes must be 0");
+    }
+    let build = Build { class: h[3], formats: formats_of(fmts) };
+    check_build(&build, width, height).map_err(|rule| Broken { at: 8, fault: Fault::Build, rule })?;
+    let header = Header {
+        build,
+        width,
+        height,
+        cull_back: flags & FLAG_CULL_BACK != 0,
+        background: [background[0], background[1], background[2]],
+        triangles: h[4],
+        vertices: h[5],
+        index_at: h[6],
+        vertex_at: h[7],
+        length: h[8],
+    };
+    let region = |at: u32, n: u32, what: &str, field: usize| -> Result<(), Broken> {
+        let end = u64::from(at) + u64::from(n) * RECORD_BYTES as u64;
+        if !at.is_multiple_of(RECORD_BYTES as u32) || (at as usize) < HEADER_BYTES {
+            return broken(
+                field,
+                Fault::Layout,
+                format!("the {what} starts at byte {at}: past the header, on a {RECORD_BYTES}-byte boundary"),
+            );
+        }
+        if end > u64::from(header.length) {
+            return broken(
+                field,
+                Fault::Layout,
+                format!("{n} records of the {what} from byte {at} run past the buffer's {} bytes", header.length),
+            );
+        }
+        Ok(())
+    };
+    let (t, v) = (header.triangles, header.vertices);
+    region(header.index_at, t, "index list", 24)?;
+    region(header.vertex_at, v, "vertex array", 28)?;
+    let (i0, v0) = (u64::from(header.index_at), u64::from(header.vertex_at));
+    let record = RECORD_BYTES as u64;
+    if t > 0 && v > 0 && i0 < v0 + record * u64::from(v) && v0 < i0 + record * u64::from(t) {
+        return broken(28, Fault::Layout, "the index list and the vertex array overlap");
+    }
+    Ok(header)
+}
+
+/// Vertex record `v`'s 8 words at the formats `f`, checked.
+pub fn read_vertex_record(w: &[u32; RECORD_BYTES / 4], v: u32, f: &Formats) -> Result<VertexRecord, Broken> {
+    let get = |i: usize, name: &str, fmt: Fmt| {
+        unfield(fmt, w[i]).ok_or(Broken {
+            at: 4 * i,
+            fault: Fault::VertexWord,
+            rule: format!("vertex {v}: {name} = {:#010x} is not a {fmt} word, sign- or zero-extended", w[i]),
+        })
+    };
+    let r = VertexRecord {
+        x: get(0, "x", f.xy)?,
+        y: get(1, "y", f.xy)?,
+        z: get(2, "z", f.z)?,
+        c: [get(3, "R", f.color)?, get(4, "G", f.color)?, get(5, "B", f.color)?],
+    };
+    if w[6] != 0 || w[7] != 0 {
+        return broken(24, Fault::Reserved, format!("vertex {v}: reserved words must be 0"));
+    }
+    Ok(r)
+}
+
+/// Index record `t`'s 8 words in the buffer of header `h`, checked.
+pub fn read_index_record(w: &[u32; RECORD_BYTES / 4], t: u32, h: &Header) -> Result<IndexRecord, Broken> {
+    let vertices = h.vertices;
+    let v = [w[0], w[1], w[2]];
+    if let Some(k) = (0..3).find(|&k| v[k] >= vertices) {
+        return broken(4 * k, Fault::Index, format!("triangle {t}: V{k} = {} is past the {vertices} vertices", v[k]));
+    }
+    let ti = w[3];
+    let texture = ti as u16;
+    if texture != NO_TEXTURE {
+        return broken(
+            12,
+            Fault::TriangleInfo,
+            format!("triangle {t}: texture index {texture}: edgepaint has no textures ({NO_TEXTURE:#06x}: none)"),
+        );
+    }
+    if ti & !(0xffff | END_OF_BUFFER | END_OF_FRAME) != 0 {
+        return broken(12, Fault::TriangleInfo, format!("triangle {t}: TI {ti:#010x}: bits 18-31 are reserved (0)"));
+    }
+    let last = t + 1 == h.triangles;
+    let (eob, eof) = (ti & END_OF_BUFFER != 0, ti & END_OF_FRAME != 0);
+    if eob != last {
+        let rule =
+            if last { "the last triangle must end the buffer" } else { "only the last triangle ends the buffer" };
+        return broken(12, Fault::TriangleInfo, format!("triangle {t}: {rule} (TI bit 16)"));
+    }
+    if eof && !last {
+        return broken(
+            12,
+            Fault::TriangleInfo,
+            format!("triangle {t}: only the buffer's last triangle can end the frame (TI bit 17)"),
+        );
+    }
+    let f = &h.build.formats;
+    let one = 1i128 << f.inv_w.frac;
+    let mut iw = [0; 3];
+    for k in 0..3 {
+        // 0 is a word: a vertex over 2^(frac + 1) times as far as the nearest one.
+        iw[k] = unfield(f.inv_w, w[4 + k]).filter(|&iw| iw >= 0).ok_or(Broken {
+            at: 16 + 4 * k,
+            fault: Fault::InvW,
+            rule: format!("triangle {t}: inv_w of V{k} = {:#010x} is not a {} word", w[4 + k], f.inv_w),
+        })?;
+    }
+    if iw.iter().max() != Some(&one) {
+        return broken(
+            16,
+            Fault::InvW,
+            format!("triangle {t}: inv_w is w_min / w over the triangle: its largest must be 1"),
+        );
+    }
+    if w[7] != 0 {
+        return broken(28, Fault::Reserved, format!("triangle {t}: reserved word must be 0"));
+    }
+    Ok(IndexRecord { v, iw, end_of_buffer: eob, end_of_frame: eof })
 }
 
 /// A w whose reciprocal in f64 is `iw` exactly (`input::to_fixed` divides the triangle's
@@ -524,8 +623,8 @@ mod tests {
         assert_eq!(bytes.len(), HEADER_BYTES + 9 * RECORD_BYTES);
         assert_eq!(&bytes[..4], b"EPVB");
         // The last triangle ends the buffer and the frame; no other does.
-        assert_eq!(word(&bytes, HEADER_BYTES + 3 * RECORD_BYTES, 3), 0xffff | END_OF_BUFFER | END_OF_FRAME);
-        assert_eq!(word(&bytes, HEADER_BYTES, 3), 0xffff);
+        assert_eq!(words::<4>(&bytes, HEADER_BYTES + 3 * RECORD_BYTES)[3], 0xffff | END_OF_BUFFER | END_OF_FRAME);
+        assert_eq!(words::<4>(&bytes, HEADER_BYTES)[3], 0xffff);
         assert_eq!(VertexBuffer::decode(&bytes), Ok(vb));
     }
 
