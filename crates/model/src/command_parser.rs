@@ -146,8 +146,7 @@ impl Stats {
     }
 }
 
-/// The burst being received: what it is for, its beats so far and whether any came back
-/// with an error.
+/// What a burst reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Burst {
     Header,
