@@ -8,10 +8,11 @@
 #                             cull_sort, divider, triangle_setup, edge_walk, span and
 #                             pixel_out as its submodules), se.v, ept.v, and any unit not
 #                             listed in SUBMODULES; generic `synth -flatten` and
-#                             `synth_ecp5`, but raster_top.v and se.v in `synth_ecp5` only
-#                             (their generic runs took 155 s and 86 s of CPU, and
-#                             `synth_ecp5` runs the same coarse passes before mapping) (the
-#                             test command)
+#                             `synth_ecp5`, but raster_top.v, se.v and command_parser.v in
+#                             `synth_ecp5` only (their generic runs took 155 s, 86 s and
+#                             80 s of CPU, `synth_ecp5` runs the same coarse passes before
+#                             mapping, and the generic flow maps the parser's vertex cache
+#                             RAMs to 54,272 flip-flops) (the test command)
 #   scripts/synth.sh --all    every file, also `synth_ice40` (scripts/soak.sh, about 4.5
 #                             minutes: raster_top's iCE40 mapping alone takes 2.5)
 set -euo pipefail
@@ -24,7 +25,7 @@ fi
 # Units whose Verilog raster_top.v holds as submodules, synthesized there.
 SUBMODULES=(cull_sort divider triangle_setup edge_walk span pixel_out)
 # Units the test command maps with synth_ecp5 alone (--all runs every flow).
-ECP5_ONLY=(raster_top se)
+ECP5_ONLY=(raster_top se command_parser)
 flows=(generic ecp5)
 all=0
 if [[ ${1:-} == --all ]]; then

@@ -1,6 +1,7 @@
 //! The one test binary of the testbenches crate (see its Cargo.toml): one module per unit,
 //! plus the harness's own tests.
 
+mod command_parser;
 mod cull_sort;
 mod divider;
 mod edge_walk;

@@ -22,6 +22,8 @@
 //! and [`VertexBuffer::decode`] reads one back, checking every rule: an error names the
 //! byte offset and the rule broken, and nothing panics on any input.
 
+pub mod broken;
+
 use crate::guard_band;
 use crate::input::{to_fixed, InputError, Vtx};
 use fx::{Build, Fmt, Formats, Overflow, Rounding};
@@ -322,7 +324,7 @@ impl VertexBuffer {
             );
         }
         let located = |at: usize| move |e: Broken| DecodeError { offset: at + e.at, rule: e.rule };
-        let h = read_header(&words(bytes, 0)).map_err(located(0))?;
+        let h = read_header(&words(bytes, 0), None).map_err(located(0))?;
         if h.length as usize != bytes.len() {
             return fail(
                 32,
@@ -420,8 +422,11 @@ pub struct Header {
 }
 
 /// The header's 24 words, checked: every rule that needs only the header (the length is
-/// the buffer's is the reader's to check).
-pub fn read_header(h: &[u32; HEADER_BYTES / 4]) -> Result<Header, Broken> {
+/// the buffer's is the reader's to check). `hardware`, when given, is the build that will
+/// draw the buffer (the command parser's): a buffer for another is refused where the
+/// header's build is read, before its screen and layout, so that the parser's RTL compares
+/// the build's words with its own.
+pub fn read_header(h: &[u32; HEADER_BYTES / 4], hardware: Option<&Build>) -> Result<Header, Broken> {
     if h[0] != u32::from_le_bytes(MAGIC) {
         let magic = h[0].to_le_bytes();
         return broken(0, Fault::Magic, format!("not a vertex buffer: the magic is {magic:02x?}, not \"EPVB\""));
@@ -436,6 +441,10 @@ pub fn read_header(h: &[u32; HEADER_BYTES / 4]) -> Result<Header, Broken> {
     }
     let (width, height) = (h[2] & 0xffff, h[2] >> 16);
     let background = h[9].to_le_bytes();
+    if background[3] != 0 || h[21..24].iter().any(|&w| w != 0) {
+        let at = if background[3] != 0 { 39 } else { 84 };
+        return broken(at, Fault::Reserved, "reserved header bytes must be 0");
+    }
     let mut fmts = [Fmt::s(0, 0); 11];
     for (i, (name, _)) in Formats::for_n(10).named().iter().enumerate() {
         fmts[i] = word_format(h[10 + i]).ok_or(Broken {
@@ -448,11 +457,11 @@ pub fn read_header(h: &[u32; HEADER_BYTES / 4]) -> Result<Header, Broken> {
             ),
         })?;
     }
-    if background[3] != 0 || h[21..24].iter().any(|&w| w != 0) {
-        let at = if background[3] != 0 { 39 } else { 84 };
-        return broken(at, Fault::Reserved, "reserved header bytes must be 0");
-    }
     let build = Build { class: h[3], formats: formats_of(fmts) };
+    if let Some(hw) = hardware.filter(|&hw| *hw != build) {
+        let rule = format!("the buffer is for {build:?}; this hardware draws {hw:?}");
+        return Err(Broken { at: 12, fault: Fault::Build, rule });
+    }
     check_build(&build, width, height).map_err(|rule| Broken { at: 8, fault: Fault::Build, rule })?;
     let header = Header {
         build,

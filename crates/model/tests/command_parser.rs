@@ -5,7 +5,7 @@
 
 use fx::Build;
 use model::command_parser::{run, Bench, Outcome, Params, Run, Triangle};
-use model::vertex_buffer::{pack, Fault, IndexRecord, VertexBuffer, VertexRecord, HEADER_BYTES, RECORD_BYTES};
+use model::vertex_buffer::{broken, pack, Fault, IndexRecord, VertexBuffer, VertexRecord, HEADER_BYTES, RECORD_BYTES};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use scene::{Trilist, Vertex};
@@ -164,52 +164,17 @@ fn the_default_vertex_cache_holds_a_row_of_the_dense_torus() {
     assert!(small > 1.8, "{small} fetches per triangle at 32 entries");
 }
 
-/// A fan of four triangles packed for a 16 x 16 screen.
-fn fan() -> (VertexBuffer, Vec<u8>) {
-    let v = |(x, y, z): (f64, f64, f64)| Vertex::new(x, y, z, [200.0, 100.0, 50.0]);
-    let c = (8.0, 8.0, 0.5);
-    let rim = [(1.0, 1.0, 0.2), (15.0, 1.0, 0.3), (15.0, 15.0, 0.4), (1.0, 15.0, 0.6)];
-    let triangles = (0..4).map(|i| [v(c), v(rim[i]), v(rim[(i + 1) % 4])]).collect();
-    let list = Trilist { width: 16, height: 16, triangles };
-    let (vb, _) = pack(&list, &Build::for_screen(16, 16), true, [1, 2, 3]).expect("packs");
-    let bytes = vb.encode();
-    (vb, bytes)
-}
-
-fn set(bytes: &mut [u8], at: usize, w: u32) {
-    bytes[at..at + 4].copy_from_slice(&w.to_le_bytes());
-}
-
 /// Each class of broken rule stops the parser with its code within 200 cycles, every read
 /// inside the buffer.
 #[test]
 fn broken_buffers_stop_with_their_error_code() {
-    let (vb, good) = fan();
-    let build = vb.build;
-    let tri = |t: usize| HEADER_BYTES + t * RECORD_BYTES;
-    let vtx = |v: usize| HEADER_BYTES + 4 * RECORD_BYTES + v * RECORD_BYTES;
-    type Edit = Box<dyn Fn(&mut Vec<u8>)>;
-    let cases: Vec<(Edit, Fault)> = vec![
-        (Box::new(|b| b[0] = b'X'), Fault::Magic),
-        (Box::new(|b| b[4] = 2), Fault::Version),
-        (Box::new(|b| b[6] = 4), Fault::Reserved),
-        (Box::new(|b| set(b, 16, 1000)), Fault::Layout),
-        (Box::new(|b| set(b, 24, 100)), Fault::Layout),
-        (Box::new(|b| set(b, 40, 0xff_ffff)), Fault::Build),
-        (Box::new(move |b| set(b, tri(1) + 4, 5)), Fault::Index),
-        (Box::new(move |b| set(b, tri(2) + 12, 7)), Fault::TriangleInfo),
-        (Box::new(move |b| set(b, tri(3) + 12, 0xffff)), Fault::TriangleInfo),
-        (Box::new(move |b| (0..3).for_each(|k| set(b, tri(2) + 16 + 4 * k, 1 << 14))), Fault::InvW),
-        (Box::new(move |b| set(b, vtx(1) + 8, 0x7fff_ffff)), Fault::VertexWord),
-        (Box::new(move |b| set(b, vtx(0) + 28, 9)), Fault::Reserved),
-    ];
-    for (i, (edit, fault)) in cases.into_iter().enumerate() {
-        let mut bytes = good.clone();
-        edit(&mut bytes);
+    let vb = broken::fan();
+    let (build, good) = (vb.build, vb.encode());
+    for (what, bytes, fault) in broken::cases() {
         let r = run(Params::default(), build, &bytes, Bench::default()).expect("parameters");
-        assert_eq!(r.outcome, Outcome::Fault(fault), "case {i}");
-        assert!(r.cycles < 200, "case {i}: {} cycles", r.cycles);
-        assert!(reads_inside(&r, 0x1000, bytes.len() as u64, 8), "case {i}");
+        assert_eq!(r.outcome, Outcome::Fault(fault), "{what}");
+        assert!(r.cycles < 200, "{what}: {} cycles", r.cycles);
+        assert!(reads_inside(&r, 0x1000, bytes.len() as u64, 8), "{what}");
     }
     // Another build's buffer; a buffer off a record boundary; a buffer longer than the
     // memory holds (the read past it answered with an error).
@@ -229,21 +194,12 @@ fn broken_buffers_stop_with_their_error_code() {
 /// reads back.
 #[test]
 fn mutated_buffers_always_end_and_read_inside() {
-    let (vb, good) = fan();
+    let vb = broken::fan();
+    let good = vb.encode();
     let mut rng = ChaCha8Rng::seed_from_u64(seed());
     for case in 0..cases() {
         let mut bytes = good.clone();
-        for _ in 0..rng.gen_range(1..4) {
-            let at = rng.gen_range(0..bytes.len());
-            match rng.gen_range(0..3) {
-                0 => bytes[at] ^= 1 << rng.gen_range(0..8),
-                1 => bytes[at] = rng.gen(),
-                _ => {
-                    let w = at & !3;
-                    set(&mut bytes, w, rng.gen_range(0..64));
-                }
-            }
-        }
+        broken::mutate(&mut bytes, &mut |n| rng.gen_range(0..n));
         let (latency, pace) = (rng.gen_range(0..8), rng.gen_range(0.2..1.0));
         let (mut a, mut c) = (ChaCha8Rng::seed_from_u64(rng.gen()), ChaCha8Rng::seed_from_u64(rng.gen()));
         let bench = Bench {

@@ -24,6 +24,8 @@ pub mod switch;
 /// `clippy::duplicate_mod` allowance.)
 macro_rules! scanline_units {
     () => {
+        #[path = "command_parser.rs"]
+        pub mod command_parser;
         #[path = "cull_sort.rs"]
         pub mod cull_sort;
         #[path = "divider.rs"]
@@ -160,7 +162,9 @@ macro_rules! no_formats {
 
 /// The default size class, [`fx::RTL_CLASS`] (screens up to 1024 x 1024): its units are
 /// also at the crate's root (`rtl::raster_top`, ...).
-pub use n10::{cull_sort, divider, edge_walk, links, pixel_out, raster_top, span, triangle_setup, widths};
+pub use n10::{
+    command_parser, cull_sort, divider, edge_walk, links, pixel_out, raster_top, span, triangle_setup, widths,
+};
 const _: () = assert!(n10::CLASS == fx::RTL_CLASS);
 
 /// Multipliers in `triangle_setup` (and `raster_top`).
@@ -270,6 +274,19 @@ pub const UNITS: &[Unit] = &[
         build: by_build!(pixel_out::emit_pixel_out),
     },
     Unit {
+        name: "command_parser",
+        doc: "command parser, paper 001 Fig. 4: a vertex buffer's header, index and vertex records over AXI4, a vertex cache",
+        params: &[
+            N,
+            Param {
+                name: "CACHE",
+                default: 512,
+                doc: "vertex cache entries, 16, 64, 256, 512 or 1024 (model::command_parser::Params::cache)",
+            },
+        ],
+        build: by_build!(command_parser::emit_command_parser),
+    },
+    Unit {
         name: "raster_top",
         doc: "the scanline rasterizer of papers 001 and 003: cull_sort, setup with the divider, edge walk, span, pixel out",
         params: &[
@@ -317,6 +334,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("edge_walk", &[("N", 10), ("CLIP_Y", 1)]),
     ("span", &[("N", 10), ("CLIP_X", 1), ("CLIP_Z", 1)]),
     ("pixel_out", &[("N", 10), ("DEPTH_TEST", 1)]),
+    ("command_parser", &[("N", 10), ("CACHE", 512)]),
     (
         "raster_top",
         &[

@@ -26,6 +26,25 @@ crate::bundle! {
 }
 
 crate::bundle! {
+    /// An AXI4 read master's address (AR) and data (R) channels, 64-bit data: the command
+    /// parser reads its vertex buffer through it. Bursts are INCR (`ar_burst` 1) of 8-byte
+    /// beats (`ar_size` 3), `ar_len + 1` beats; `r_ready` is always high. A beat answered
+    /// with RRESP other than OKAY stops the parser (`Fault::Bus`).
+    ReadMaster {
+        Out ar_valid: Bit,
+        In ar_ready: Bit,
+        Out ar_addr: Bits<32>,
+        Out ar_len: Bits<8>,
+        Out ar_size: Bits<3>,
+        Out ar_burst: Bits<2>,
+        In r_valid: Bit,
+        Out r_ready: Bit,
+        In r_data: Bits<64>,
+        In r_resp: Bits<2>,
+    }
+}
+
+crate::bundle! {
     /// A triangle leaves `cull_sort`, passed or rejected, and why (`rtl::cull_sort`).
     Verdict {
         /// High in the cycle the triangle leaves.
@@ -207,5 +226,16 @@ triangle_link! {
     SortedSource => SortedSink {
         /// OR of the three outcodes: the planes the triangle crosses (`Sorted::crosses`).
         crosses: Bits<OUTCODE>,
+    }
+}
+
+triangle_link! {
+    /// A triangle out of `command_parser` (`model::command_parser::Triangle`): into the
+    /// rasterizer, with TI's end flags.
+    ParsedSource => ParsedSink {
+        /// The buffer's last triangle.
+        end_of_buffer: Bit,
+        /// The frame's last triangle.
+        end_of_frame: Bit,
     }
 }

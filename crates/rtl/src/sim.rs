@@ -90,13 +90,14 @@ impl<const N: usize> PinValue for Bits<N> {
 /// lists fails the unit's tests.
 #[macro_export]
 macro_rules! pins {
-    ($unit:ty {
+    // A unit with generic parameters: `pins!(impl[const N: usize] Unit<N> { ... })`.
+    (impl[$($g:tt)*] $unit:ty {
         clock: $clock:ident,
         inputs: [$($i:ident),* $(,)?],
         outputs: [$($o:ident),* $(,)?]
         $(, links: [$($l:ident),* $(,)?])? $(,)?
     }) => {
-        impl $crate::sim::Pins for $unit {
+        impl<$($g)*> $crate::sim::Pins for $unit {
             fn set(&mut self, pin: &str, value: &$crate::sim::Value) {
                 match pin {
                     $(stringify!($i) => self.$i.next = $crate::sim::PinValue::from_value(value),)*
@@ -127,6 +128,9 @@ macro_rules! pins {
                 Some(&mut self.$clock)
             }
         }
+    };
+    ($unit:ty { $($body:tt)* }) => {
+        $crate::pins!(impl[] $unit { $($body)* });
     };
 }
 

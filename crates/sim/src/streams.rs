@@ -1,4 +1,5 @@
-//! The model's transactions as port values, and back: a triangle (`[model::input::Vtx; 3]`),
+//! The model's transactions as port values, and back: a triangle (`[model::input::Vtx; 3]`,
+//! and as the command parser hands it over, `model::command_parser::Triangle`),
 //! a sorted triangle (`model::cull_sort::Sorted`), a set-up triangle
 //! (`model::triangle_setup::TriangleSetupOut`), a span command (`model::edge_walk::SpanCmd`)
 //! and a pixel (`model::span::Pixel`) on the pins `<end>$<field>` of a link end, nested
@@ -7,13 +8,14 @@
 //! have, or a value that does not fit its port, fails here.
 
 use crate::{Outputs, Value};
+use model::command_parser::Triangle;
 use model::cull_sort::Sorted;
 use model::edge_walk::SpanCmd;
 use model::input::Vtx;
 use model::span::Pixel;
 use model::triangle_setup::{Attrs, Edge, TriangleSetupOut, Walk};
 use rtl::link::Link;
-use rtl::links::{PixelSink, SortedSink, SpanCmdSink, TriangleSetupSink, TriangleSink};
+use rtl::links::{ParsedSink, PixelSink, SortedSink, SpanCmdSink, TriangleSetupSink, TriangleSink};
 
 /// Named port values, ready for `Dual::cycle` (through [`as_pins`]).
 pub type PinValues = Vec<(String, Value)>;
@@ -163,6 +165,18 @@ fn vertex(v: &[Vtx; 3], field: &str) -> Option<i128> {
 pub fn triangle(end: &str, v: &[Vtx; 3]) -> PinValues {
     link_pins::<TriangleSink>(end, |field| {
         vertex(v, field).unwrap_or_else(|| panic!("[model::input::Vtx; 3] has no field {field}"))
+    })
+}
+
+/// A triangle as the command parser hands it over on the pins of link end `end`
+/// (`links::ParsedSink`).
+pub fn parsed(end: &str, t: &Triangle) -> PinValues {
+    link_pins::<ParsedSink>(end, |field| match field {
+        "end_of_buffer" => t.end_of_buffer as i128,
+        "end_of_frame" => t.end_of_frame as i128,
+        _ => {
+            vertex(&t.vertices, field).unwrap_or_else(|| panic!("model::command_parser::Triangle has no field {field}"))
+        }
     })
 }
 
