@@ -1873,6 +1873,7 @@ module command_parser(clock,start,address,bus$ar_valid,bus$ar_ready,bus$ar_addr,
         fault = fault_r$q;
         frame_done = frame_r$q;
         buffer_done = buffer_r$q;
+        state = 32'h0;
         case (st$q)
             ParserState$Init:
                 begin

@@ -1031,6 +1031,9 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
         self.fault.next = self.fault_r.q.val();
         self.frame_done.next = self.frame_r.q.val();
         self.buffer_done.next = self.buffer_r.q.val();
+        // (Assigned first: a case without a default would hold the output in a latch for
+        // the register's one code that is no state.)
+        self.state.next = 0.into();
         match self.st.q.val() {
             ParserState::Init => {
                 self.state.next = 0.into();
