@@ -9,7 +9,7 @@
 //! Memory is read through an AXI4 read master (`links::ReadMaster`: 64-bit data, INCR bursts,
 //! one outstanding, every beat taken). A burst shifts into [`WORDS`] 32-bit registers from
 //! the top, two words a beat, so that once its last beat is in a header's word `i` is
-//! register `i` and a record's word `i` register [`16`] + `i`; [`HeaderCheck`],
+//! register `i` and a record's word `i` register [`RECORD_AT`] + `i`; [`HeaderCheck`],
 //! [`IndexCheck`] and [`VertexCheck`] check them the cycle after, as
 //! `vertex_buffer::read_header`, `read_index_record` and `read_vertex_record` do.
 //!
@@ -35,8 +35,9 @@ use rust_hdl::widgets::prelude::RAM;
 pub const BEAT_BYTES: u32 = 8;
 /// The burst registers: a header's words.
 pub const WORDS: usize = HEADER_BYTES / 4;
-/// A record's words, and the register its first word is in once its last beat is.
+/// A record's words.
 const RECORD: usize = RECORD_BYTES / 4;
+/// The register a record's first word is in once its last beat is.
 pub const RECORD_AT: usize = WORDS - RECORD;
 // A kernel's array indices are numbers (rust-hdl evaluates them without Rust's
 // constants): the kernel writes RECORD_AT as 16 and the two top registers as 22 and 23.
