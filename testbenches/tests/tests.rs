@@ -7,6 +7,7 @@ mod divider;
 mod edge_walk;
 mod ept;
 mod harness;
+mod pixel_bus;
 mod pixel_out;
 mod raster_top;
 mod se;

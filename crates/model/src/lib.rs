@@ -20,6 +20,7 @@ pub mod edge_walk;
 pub mod ept;
 pub mod guard_band;
 pub mod input;
+pub mod pixel_bus;
 pub mod pixel_out;
 pub mod raster_top;
 pub mod read_memory;
@@ -29,6 +30,7 @@ pub mod span;
 pub mod triangle_setup;
 pub mod vector;
 pub mod vertex_buffer;
+pub mod word_memory;
 
 /// Seed for randomised tests: `EDGEPAINT_SEED`, default 1.
 #[cfg(test)]

@@ -34,6 +34,8 @@ macro_rules! scanline_units {
         pub mod edge_walk;
         #[path = "links.rs"]
         pub mod links;
+        #[path = "pixel_bus.rs"]
+        pub mod pixel_bus;
         #[path = "pixel_out.rs"]
         pub mod pixel_out;
         #[path = "raster_top.rs"]
@@ -163,7 +165,8 @@ macro_rules! no_formats {
 /// The default size class, [`fx::RTL_CLASS`] (screens up to 1024 x 1024): its units are
 /// also at the crate's root (`rtl::raster_top`, ...).
 pub use n10::{
-    command_parser, cull_sort, divider, edge_walk, links, pixel_out, raster_top, span, triangle_setup, widths,
+    command_parser, cull_sort, divider, edge_walk, links, pixel_bus, pixel_out, raster_top, span, triangle_setup,
+    widths,
 };
 const _: () = assert!(n10::CLASS == fx::RTL_CLASS);
 
@@ -274,6 +277,12 @@ pub const UNITS: &[Unit] = &[
         build: by_build!(pixel_out::emit_pixel_out),
     },
     Unit {
+        name: "pixel_bus",
+        doc: "pixel_out on AXI4: the depth test and the depth and colour buffers in system memory, a clear, 16 pixels in flight",
+        params: &[N],
+        build: by_build!(pixel_bus::emit_pixel_bus),
+    },
+    Unit {
         name: "command_parser",
         doc: "command parser, paper 001 Fig. 4: a vertex buffer's header, index and vertex records over AXI4, a vertex cache",
         params: &[
@@ -334,6 +343,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("edge_walk", &[("N", 10), ("CLIP_Y", 1)]),
     ("span", &[("N", 10), ("CLIP_X", 1), ("CLIP_Z", 1)]),
     ("pixel_out", &[("N", 10), ("DEPTH_TEST", 1)]),
+    ("pixel_bus", &[("N", 10)]),
     ("command_parser", &[("N", 10), ("CACHE", 512)]),
     (
         "raster_top",

@@ -45,6 +45,47 @@ crate::bundle! {
 }
 
 crate::bundle! {
+    /// An AXI4 read master's address (AR) and data (R) channels, 32-bit data, single-beat
+    /// reads (`ar_len` 0, `ar_size` 2, `ar_burst` INCR); `r_ready` is always high:
+    /// `pixel_bus` reads depth words through it.
+    WordReadMaster {
+        Out ar_valid: Bit,
+        In ar_ready: Bit,
+        Out ar_addr: Bits<32>,
+        Out ar_len: Bits<8>,
+        Out ar_size: Bits<3>,
+        Out ar_burst: Bits<2>,
+        In r_valid: Bit,
+        Out r_ready: Bit,
+        In r_data: Bits<32>,
+        In r_resp: Bits<2>,
+    }
+}
+
+crate::bundle! {
+    /// An AXI4 write master's address (AW), data (W) and response (B) channels, 32-bit
+    /// data, single-beat writes of every byte (`aw_len` 0, `aw_size` 2, `aw_burst` INCR,
+    /// `w_strb` 15, `w_last` 1); `b_ready` is always high: `pixel_bus` writes depth and
+    /// colour words through two of them.
+    WordWriteMaster {
+        Out aw_valid: Bit,
+        In aw_ready: Bit,
+        Out aw_addr: Bits<32>,
+        Out aw_len: Bits<8>,
+        Out aw_size: Bits<3>,
+        Out aw_burst: Bits<2>,
+        Out w_valid: Bit,
+        In w_ready: Bit,
+        Out w_data: Bits<32>,
+        Out w_strb: Bits<4>,
+        Out w_last: Bit,
+        In b_valid: Bit,
+        Out b_ready: Bit,
+        In b_resp: Bits<2>,
+    }
+}
+
+crate::bundle! {
     /// A triangle leaves `cull_sort`, passed or rejected, and why (`rtl::cull_sort`).
     Verdict {
         /// High in the cycle the triangle leaves.
