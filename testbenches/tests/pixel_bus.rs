@@ -143,27 +143,14 @@ fn dual() -> Dual<PixelBus> {
 
 /// How a frame ended.
 struct End {
+    cycles: u64,
     error: bool,
-    depth: Vec<u32>,
-    color: Vec<u32>,
 }
 
-/// One frame (`start`, the clear when `clear`, then `pixels`) through the model and both
-/// simulators in lockstep; panics on the first difference.
-fn lockstep(
-    dual: &mut Dual<PixelBus>,
-    c: Config,
-    clear: bool,
-    pixels: &[Pixel],
-    pace: Pace,
-    rng: &mut ChaCha8Rng,
-) -> End {
+/// One frame (`drive`'s) through the model and both simulators in lockstep, for at most
+/// `limit` cycles; panics on the first difference, and on a transfer outside the memories.
+fn lockstep(dual: &mut Dual<PixelBus>, drive: &mut FrameDrive, limit: u64) -> End {
     let mut model = Model::new(params()).expect("the RTL's parameters");
-    let mut depth = memory(&c, DEPTH_BASE, c.depth_pitch, pace, rng);
-    let mut color = memory(&c, COLOR_BASE, c.color_pitch, pace, rng);
-    let mut offer = ChaCha8Rng::seed_from_u64(rng.gen());
-    let mut drive = FrameDrive::new(c, clear, &mut depth, &mut color, pixels, move || offer.gen_bool(pace.offer));
-    let limit = 100 + (c.width * c.height) as u64 * 4 + pixels.len() as u64 * (2 * pace.latency as u64 + 20);
     for cycle in 0..limit {
         let i = drive.inputs();
         let o = model.outputs(&i);
@@ -171,8 +158,9 @@ fn lockstep(
         compare(&got, &o).unwrap_or_else(|e| panic!("cycle {cycle}: {e}"));
         model.clock(&i);
         if drive.clock(&i, &o) {
-            assert_eq!((depth.outside_reads, depth.outside_writes, color.outside_writes), (0, 0, 0));
-            return End { error: o.error, depth: depth.words, color: color.words };
+            let outside = (drive.depth.outside_reads, drive.depth.outside_writes, drive.color.outside_writes);
+            assert_eq!(outside, (0, 0, 0), "reads and writes outside the memories");
+            return End { cycles: cycle + 1, error: o.error };
         }
     }
     panic!("the frame did not end in {limit} cycles");
@@ -243,18 +231,24 @@ fn pixel_bus_random_frames_vs_model() {
         let c = config(rng.gen_range(1..24), rng.gen_range(1..16), rng.gen_range(0..3));
         let clear = k % 2 == 0;
         let ps = pixels(&mut rng, &c, count() / 2);
-        let end = lockstep(&mut dual(), c, clear, &ps, pace, &mut rng);
+        let mut depth = memory(&c, DEPTH_BASE, c.depth_pitch, pace, &mut rng);
+        let mut color = memory(&c, COLOR_BASE, c.color_pitch, pace, &mut rng);
+        let mut offer = ChaCha8Rng::seed_from_u64(rng.gen());
+        let mut drive = FrameDrive::new(c, clear, &mut depth, &mut color, &ps, move || offer.gen_bool(pace.offer));
+        let limit = 100 + u64::from(4 * c.width * c.height) + ps.len() as u64 * (2 * u64::from(pace.latency) + 20);
+        let end = lockstep(&mut dual(), &mut drive, limit);
         let (z, rgb) = expected(&c, clear, &ps, &mut rng);
         assert!(!end.error);
-        assert_eq!(end.depth, z, "seed {seed}, latency {}: depth", pace.latency);
-        assert_eq!(end.color, rgb, "seed {seed}, latency {}: colour", pace.latency);
+        assert_eq!(depth.words, z, "seed {seed}, latency {}: depth", pace.latency);
+        assert_eq!(color.words, rgb, "seed {seed}, latency {}: colour", pace.latency);
     }
 }
 
 /// The last row of the build's largest screen, a pixel a cycle at latency 0, with the depth
 /// buffer's rows at the largest pitch (65,532 bytes): `y * pitch` uses every bit of the
 /// multipliers. The memories hold the last two rows only (the buffers' bases are moved down
-/// by the rows before them).
+/// by the rows before them; the depth buffer's wraps below address 0, as 32-bit addresses
+/// do).
 #[test]
 fn pixel_bus_largest_screen_vs_model() {
     let mut rng = ChaCha8Rng::seed_from_u64(seed());
@@ -265,34 +259,20 @@ fn pixel_bus_largest_screen_vs_model() {
         width: side,
         height: side,
         background: [1, 2, 3],
-        color_base: COLOR_BASE - skip(c_pitch),
+        color_base: COLOR_BASE.wrapping_sub(skip(c_pitch)),
         color_pitch: c_pitch,
-        depth_base: DEPTH_BASE - skip(z_pitch),
+        depth_base: DEPTH_BASE.wrapping_sub(skip(z_pitch)),
         depth_pitch: z_pitch,
     };
     let ps: Vec<Pixel> = (0..side).map(|x| Pixel { x, y: side - 1, z: x, rgb: [x as u8, 1, 2] }).collect();
     let pace = Pace { latency: 0, stall: 0.0, offer: 1.0 };
     let window = Config { height: 2, ..c };
-    let mut model = Model::new(params()).expect("parameters");
     let mut depth = memory(&window, DEPTH_BASE, z_pitch, pace, &mut rng);
     let mut color = memory(&window, COLOR_BASE, c_pitch, pace, &mut rng);
-    let mut dual = dual();
-    let mut drive = FrameDrive::new(c, false, &mut depth, &mut color, &ps, || true);
-    let mut done = None;
-    for cycle in 0..10 * side as u64 {
-        let i = drive.inputs();
-        let o = model.outputs(&i);
-        let got = dual.cycle(&as_pins(&input_pins(&i))).unwrap_or_else(|m| panic!("{m}"));
-        compare(&got, &o).unwrap_or_else(|e| panic!("cycle {cycle}: {e}"));
-        model.clock(&i);
-        if drive.clock(&i, &o) {
-            done = Some(cycle + 1);
-            break;
-        }
-    }
+    let end = lockstep(&mut dual(), &mut FrameDrive::new(c, false, &mut depth, &mut color, &ps, || true), 10 * 1024);
     // A pixel a cycle from cycle 1, then the last one's read, test, write and response
     // (derived in the model's test at latency 0).
-    assert_eq!(done, Some(u64::from(side) + 7));
+    assert_eq!((end.cycles, end.error), (u64::from(side) + 7, false));
     // Every pixel is nearer than the fill's depth, so each is written.
     let row = |pitch: u16| (GUARD + u32::from(pitch) / 4) as usize;
     for x in 0..side {

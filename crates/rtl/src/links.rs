@@ -25,41 +25,42 @@ crate::bundle! {
     }
 }
 
-crate::bundle! {
+/// Declares an AXI4 read master's address (AR) and data (R) channels with `$data`-bit data
+/// as a bundle (the ports `ar_valid`, `ar_ready`, `ar_addr`, `ar_len`, `ar_size`,
+/// `ar_burst`, `r_valid`, `r_ready`, `r_data`, `r_resp`).
+macro_rules! read_master {
+    ($(#[$meta:meta])* $name:ident, $data:literal) => {
+        crate::bundle! {
+            $(#[$meta])*
+            $name {
+                Out ar_valid: Bit,
+                In ar_ready: Bit,
+                Out ar_addr: Bits<32>,
+                Out ar_len: Bits<8>,
+                Out ar_size: Bits<3>,
+                Out ar_burst: Bits<2>,
+                In r_valid: Bit,
+                Out r_ready: Bit,
+                In r_data: Bits<$data>,
+                In r_resp: Bits<2>,
+            }
+        }
+    };
+}
+
+read_master! {
     /// An AXI4 read master's address (AR) and data (R) channels, 64-bit data: the command
     /// parser reads its vertex buffer through it. Bursts are INCR (`ar_burst` 1) of 8-byte
     /// beats (`ar_size` 3), `ar_len + 1` beats; `r_ready` is always high. A beat answered
     /// with RRESP other than OKAY stops the parser (`Fault::Bus`).
-    ReadMaster {
-        Out ar_valid: Bit,
-        In ar_ready: Bit,
-        Out ar_addr: Bits<32>,
-        Out ar_len: Bits<8>,
-        Out ar_size: Bits<3>,
-        Out ar_burst: Bits<2>,
-        In r_valid: Bit,
-        Out r_ready: Bit,
-        In r_data: Bits<64>,
-        In r_resp: Bits<2>,
-    }
+    ReadMaster, 64
 }
 
-crate::bundle! {
-    /// An AXI4 read master's address (AR) and data (R) channels, 32-bit data, single-beat
-    /// reads (`ar_len` 0, `ar_size` 2, `ar_burst` INCR); `r_ready` is always high:
-    /// `pixel_bus` reads depth words through it.
-    WordReadMaster {
-        Out ar_valid: Bit,
-        In ar_ready: Bit,
-        Out ar_addr: Bits<32>,
-        Out ar_len: Bits<8>,
-        Out ar_size: Bits<3>,
-        Out ar_burst: Bits<2>,
-        In r_valid: Bit,
-        Out r_ready: Bit,
-        In r_data: Bits<32>,
-        In r_resp: Bits<2>,
-    }
+read_master! {
+    /// An AXI4 read master's AR and R channels, 32-bit data, single-beat reads (`ar_len` 0,
+    /// `ar_size` 2, `ar_burst` INCR); `r_ready` is always high: `pixel_bus` reads depth
+    /// words through it.
+    WordReadMaster, 32
 }
 
 crate::bundle! {
@@ -84,6 +85,32 @@ crate::bundle! {
         In b_resp: Bits<2>,
     }
 }
+
+crate::bundle! {
+    /// An AXI4-Lite slave, 32-bit data, byte addresses of `model::gpu_regs::ADDR_BITS` bits
+    /// (no AWPROT or ARPROT): the host's port into `gpu_regs`.
+    LiteSlave {
+        In aw_valid: Bit,
+        Out aw_ready: Bit,
+        In aw_addr: Bits<6>,
+        In w_valid: Bit,
+        Out w_ready: Bit,
+        In w_data: Bits<32>,
+        In w_strb: Bits<4>,
+        Out b_valid: Bit,
+        In b_ready: Bit,
+        Out b_resp: Bits<2>,
+        In ar_valid: Bit,
+        Out ar_ready: Bit,
+        In ar_addr: Bits<6>,
+        Out r_valid: Bit,
+        In r_ready: Bit,
+        Out r_data: Bits<32>,
+        Out r_resp: Bits<2>,
+    }
+}
+
+const _: () = assert!(model::gpu_regs::ADDR_BITS == 6, "LiteSlave's addresses");
 
 crate::bundle! {
     /// A triangle leaves `cull_sort`, passed or rejected, and why (`rtl::cull_sort`).
