@@ -6,6 +6,7 @@ mod cull_sort;
 mod divider;
 mod edge_walk;
 mod ept;
+mod gpu_regs;
 mod harness;
 mod pixel_bus;
 mod pixel_out;

@@ -18,6 +18,7 @@ pub mod cycles;
 pub mod divider;
 pub mod edge_walk;
 pub mod ept;
+pub mod gpu_regs;
 pub mod guard_band;
 pub mod input;
 pub mod pixel_bus;

@@ -32,6 +32,8 @@ macro_rules! scanline_units {
         pub mod divider;
         #[path = "edge_walk.rs"]
         pub mod edge_walk;
+        #[path = "gpu_regs.rs"]
+        pub mod gpu_regs;
         #[path = "links.rs"]
         pub mod links;
         #[path = "pixel_bus.rs"]
@@ -165,8 +167,8 @@ macro_rules! no_formats {
 /// The default size class, [`fx::RTL_CLASS`] (screens up to 1024 x 1024): its units are
 /// also at the crate's root (`rtl::raster_top`, ...).
 pub use n10::{
-    command_parser, cull_sort, divider, edge_walk, links, pixel_bus, pixel_out, raster_top, span, triangle_setup,
-    widths,
+    command_parser, cull_sort, divider, edge_walk, gpu_regs, links, pixel_bus, pixel_out, raster_top, span,
+    triangle_setup, widths,
 };
 const _: () = assert!(n10::CLASS == fx::RTL_CLASS);
 
@@ -277,6 +279,12 @@ pub const UNITS: &[Unit] = &[
         build: by_build!(pixel_out::emit_pixel_out),
     },
     Unit {
+        name: "gpu_regs",
+        doc: "gpu_top's register block on an AXI4-Lite slave: control, status, interrupt, buffer addresses (model::gpu_regs::Reg)",
+        params: &[N],
+        build: by_build!(gpu_regs::emit_gpu_regs),
+    },
+    Unit {
         name: "pixel_bus",
         doc: "pixel_out on AXI4: the depth test and the depth and colour buffers in system memory, a clear, 16 pixels in flight",
         params: &[N],
@@ -344,6 +352,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("span", &[("N", 10), ("CLIP_X", 1), ("CLIP_Z", 1)]),
     ("pixel_out", &[("N", 10), ("DEPTH_TEST", 1)]),
     ("pixel_bus", &[("N", 10)]),
+    ("gpu_regs", &[("N", 10)]),
     ("command_parser", &[("N", 10), ("CACHE", 512)]),
     (
         "raster_top",
