@@ -7,6 +7,7 @@ mod divider;
 mod edge_walk;
 mod ept;
 mod gpu_regs;
+mod gpu_top;
 mod harness;
 mod pixel_bus;
 mod pixel_out;

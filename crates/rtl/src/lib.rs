@@ -34,6 +34,8 @@ macro_rules! scanline_units {
         pub mod edge_walk;
         #[path = "gpu_regs.rs"]
         pub mod gpu_regs;
+        #[path = "gpu_top.rs"]
+        pub mod gpu_top;
         #[path = "links.rs"]
         pub mod links;
         #[path = "pixel_bus.rs"]
@@ -167,7 +169,7 @@ macro_rules! no_formats {
 /// The default size class, [`fx::RTL_CLASS`] (screens up to 1024 x 1024): its units are
 /// also at the crate's root (`rtl::raster_top`, ...).
 pub use n10::{
-    command_parser, cull_sort, divider, edge_walk, gpu_regs, links, pixel_bus, pixel_out, raster_top, span,
+    command_parser, cull_sort, divider, edge_walk, gpu_regs, gpu_top, links, pixel_bus, pixel_out, raster_top, span,
     triangle_setup, widths,
 };
 const _: () = assert!(n10::CLASS == fx::RTL_CLASS);
@@ -329,6 +331,12 @@ pub const UNITS: &[Unit] = &[
         build: by_build!(raster_top::emit_raster_top),
     },
     Unit {
+        name: "gpu_top",
+        doc: "edgepaint as a core: gpu_regs (AXI4-Lite), command_parser (AXI4 reads), the scanline rasterizer, pixel_bus (AXI4)",
+        params: &[N, K, L],
+        build: by_build!(gpu_top::emit_gpu_top),
+    },
+    Unit {
         name: "se",
         doc: "shading engine, paper 000 Figs. 6-10: serial multipliers, bit-serial interpolator, EPT mask, z compare, 4 ports",
         params: &[
@@ -369,6 +377,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
             ("DEPTH_TEST", 1),
         ],
     ),
+    ("gpu_top", &[("N", 10), ("K", 7), ("L", model::divider::LATENCY as u64)]),
     ("se", &[("P", 64), ("ZW", 24), ("CW", 16), ("F", 16), ("I", 0)]),
 ];
 

@@ -118,3 +118,39 @@ macro_rules! link {
         }
     };
 }
+
+/// Joins the fields that two link ends of different links share, by name, with `valid` and
+/// `ready`: in a kernel, `Shared::<ParsedSource, TriangleSink>::join(&mut self.parser.out,
+/// &mut self.cull_sort.inp)` hands the parsed triangle's vertices to `cull_sort` and leaves
+/// the end flags behind. Every field of `B` must be a field of `A`.
+pub struct Shared<A, B>(std::marker::PhantomData<(A, B)>);
+
+impl<A: LinkPins, B: LinkPins + Link> Shared<A, B> {
+    /// The fields joined: `B`'s and `valid` from `a` to `b`, `ready` back.
+    fn forward() -> impl Iterator<Item = &'static str> {
+        B::FIELDS.iter().copied().chain(["valid"])
+    }
+
+    /// Rust's side (rust-hdl's simulation): drives `b`'s inputs from `a`'s outputs and back.
+    pub fn join(a: &mut A, b: &mut B) {
+        for f in Self::forward() {
+            let v = a.get(f).unwrap_or_else(|| panic!("the link end joined has no field {f}"));
+            assert!(b.set(f, &v), "{f} is not an input of the end joined to");
+        }
+        let ready = b.get("ready").expect("a link end has `ready`");
+        assert!(a.set("ready", &ready), "`ready` is not an input of the sending end");
+    }
+
+    /// The Verilog's side: the same connections as `assign`s (rust-hdl's `join_hdl`).
+    pub fn join_hdl(my_name: &str, this: &str, that: &str) -> Vec<rust_hdl::prelude::ast::VerilogLink> {
+        use rust_hdl::prelude::ast::{VerilogLink, VerilogLinkDetails};
+        let details = |f: &str| VerilogLinkDetails {
+            my_name: format!("{my_name}.{f}"),
+            owner_name: this.into(),
+            other_name: that.into(),
+        };
+        let mut links: Vec<VerilogLink> = Self::forward().map(|f| VerilogLink::Forward(details(f))).collect();
+        links.push(VerilogLink::Backward(details("ready")));
+        links
+    }
+}

@@ -1,0 +1,202 @@
+//! `gpu_top`: whole frames through the core as a host drives it, in Verilator: the
+//! registers written over AXI4-Lite, START, the vertex buffer read from one memory
+//! (`model::read_memory`), the depth and colour buffers in two others
+//! (`model::word_memory`), until the interrupt; then `STATUS`, `FRAME_CYCLES` and
+//! `TRIANGLES` read back. The buffers must equal the model's frame (`model::raster_top`) of
+//! the same buffer, and nothing may be read or written outside them.
+
+use fx::Build;
+use model::cull_sort::Cull;
+use model::gpu_regs::Reg;
+use model::pixel_bus::color_word;
+use model::raster_top::raster_top;
+use model::read_memory::{ReadMemory, ReadRequest};
+use model::vertex_buffer::{broken, pack, Fault, VertexBuffer};
+use model::word_memory::{WordMemory, WordRequest};
+use testbenches::{verilated_with, Outputs, PortDir, Sim, Value, VlSim};
+
+const VB_BASE: u32 = 0x1000;
+const DEPTH_BASE: u32 = 0x10_0000;
+const COLOR_BASE: u32 = 0x40_0000;
+const FILL: u32 = 0xdead_beef;
+
+/// The core in Verilator, with its memories and the host's registers.
+struct Soc<'a> {
+    vl: VlSim,
+    outputs: Vec<String>,
+    vb: ReadMemory<'a>,
+    depth: WordMemory<'a>,
+    color: WordMemory<'a>,
+    cycle: u64,
+}
+
+/// A register access of the host: a write (data) or a read.
+enum Access {
+    Write(Reg, u32),
+    Read(Reg),
+}
+
+impl<'a> Soc<'a> {
+    fn new(vb: &'a [u8], (width, height): (u32, u32), latency: u32) -> Soc<'a> {
+        let vl = verilated_with("gpu_top", []).model().unwrap_or_else(|e| panic!("{e}"));
+        let outputs = vl.ports().iter().filter(|p| p.dir == PortDir::Out).map(|p| p.name.clone()).collect();
+        let words = (width * height) as usize;
+        Soc {
+            vl,
+            outputs,
+            vb: ReadMemory::new(vb, VB_BASE, 8, latency, || false),
+            depth: WordMemory::new(vec![FILL; words], DEPTH_BASE, latency, || false),
+            color: WordMemory::new(vec![FILL; words], COLOR_BASE, latency, || false),
+            cycle: 0,
+        }
+    }
+
+    /// One cycle with the host's pins `host`: the memories answer, the outputs are read,
+    /// the clock ticks.
+    fn cycle(&mut self, host: &[(&str, Value)]) -> Outputs {
+        let bit = |b: bool| Value::new(1, b as u128);
+        let (r, z, c) = (self.vb.response(), self.depth.response(), self.color.response());
+        let mut pins: Vec<(String, Value)> = host.iter().map(|(n, v)| (n.to_string(), v.clone())).collect();
+        pins.extend([
+            ("vb$ar_ready".into(), bit(r.ar_ready)),
+            ("vb$r_valid".into(), bit(r.r_valid)),
+            ("vb$r_data".into(), Value::new(64, u128::from(r.r_data[0]) | u128::from(r.r_data[1]) << 32)),
+            ("vb$r_resp".into(), Value::new(2, if r.r_error { 2 } else { 0 })),
+            ("zr$ar_ready".into(), bit(z.ar_ready)),
+            ("zr$r_valid".into(), bit(z.r_valid)),
+            ("zr$r_data".into(), Value::new(32, z.r_data.into())),
+            ("zr$r_resp".into(), Value::new(2, if z.r_error { 2 } else { 0 })),
+        ]);
+        for (bus, m) in [("zw", &z), ("cw", &c)] {
+            pins.extend([
+                (format!("{bus}$aw_ready"), bit(m.aw_ready)),
+                (format!("{bus}$w_ready"), bit(m.w_ready)),
+                (format!("{bus}$b_valid"), bit(m.b_valid)),
+                (format!("{bus}$b_resp"), Value::new(2, if m.b_error { 2 } else { 0 })),
+            ]);
+        }
+        for (n, v) in &pins {
+            self.vl.set(n, v);
+        }
+        self.vl.settle();
+        let o = Outputs(self.outputs.iter().map(|n| (n.clone(), self.vl.get(n))).collect());
+        let on = |pin: &str| o.get(pin).bit(0);
+        let word = |pin: &str| o.get(pin).to_u128() as u32;
+        let ar = on("vb$ar_valid").then(|| ReadRequest { addr: word("vb$ar_addr"), beats: word("vb$ar_len") + 1 });
+        self.vb.clock(ar, on("vb$r_ready"));
+        let request = |bus: &str, reads: bool| WordRequest {
+            ar: (reads && on("zr$ar_valid")).then(|| word("zr$ar_addr")),
+            aw: on(&format!("{bus}$aw_valid")).then(|| word(&format!("{bus}$aw_addr"))),
+            w: on(&format!("{bus}$w_valid")).then(|| word(&format!("{bus}$w_data"))),
+            r_ready: true,
+            b_ready: true,
+        };
+        self.depth.clock(&request("zw", true));
+        self.color.clock(&request("cw", false));
+        self.vl.clock();
+        self.cycle += 1;
+        o
+    }
+
+    /// One register access, from offer to answer; returns the read's data (0 for a write)
+    /// and asserts an OKAY answer.
+    fn access(&mut self, a: Access) -> u32 {
+        let bit = |b: bool| Value::new(1, b as u128);
+        let (addr, data, write) = match a {
+            Access::Write(r, d) => (r as u32, d, true),
+            Access::Read(r) => (r as u32, 0, false),
+        };
+        let offer = vec![
+            ("host$aw_valid", bit(write)),
+            ("host$w_valid", bit(write)),
+            ("host$aw_addr", Value::new(6, addr.into())),
+            ("host$w_data", Value::new(32, data.into())),
+            ("host$w_strb", Value::new(4, 15)),
+            ("host$ar_valid", bit(!write)),
+            ("host$ar_addr", Value::new(6, addr.into())),
+            ("host$b_ready", bit(true)),
+            ("host$r_ready", bit(true)),
+        ];
+        let taken = if write { "host$w_ready" } else { "host$ar_ready" };
+        while !self.cycle(&offer).get(taken).bit(0) {}
+        let idle = [("host$aw_valid", bit(false)), ("host$w_valid", bit(false)), ("host$ar_valid", bit(false))];
+        loop {
+            let o = self.cycle(&idle);
+            let (valid, resp) = if write { ("host$b_valid", "host$b_resp") } else { ("host$r_valid", "host$r_resp") };
+            if o.get(valid).bit(0) {
+                assert_eq!(o.get(resp).to_u128(), 0, "{:?} answered an error", addr);
+                return if write { 0 } else { o.get("host$r_data").to_u128() as u32 };
+            }
+        }
+    }
+
+    /// A frame of the buffer at `VB_BASE`: the registers, START, cycles until the
+    /// interrupt (at most `limit`); returns `STATUS`, `FRAME_CYCLES`, `TRIANGLES`.
+    fn frame(&mut self, width: u32, clear: bool, limit: u64) -> (u32, u32, u32) {
+        for (r, v) in [
+            (Reg::VbAddr, VB_BASE),
+            (Reg::ColorBase, COLOR_BASE),
+            (Reg::ColorPitch, 4 * width),
+            (Reg::DepthBase, DEPTH_BASE),
+            (Reg::DepthPitch, 4 * width),
+            (Reg::Control, (clear as u32) << 1 | 4 | 1),
+        ] {
+            self.access(Access::Write(r, v));
+        }
+        let start = self.cycle;
+        let none: [(&str, Value); 0] = [];
+        while !self.cycle(&none).get("irq").bit(0) {
+            if self.cycle - start >= limit {
+                let status = self.access(Access::Read(Reg::Status));
+                let t = self.access(Access::Read(Reg::Triangles));
+                panic!("no interrupt in {limit} cycles: STATUS {status:#x}, {t} triangles, {} depth writes, {} colour writes", self.depth.written.len(), self.color.written.len());
+            }
+        }
+        self.access(Access::Write(Reg::Irq, 1));
+        let status = self.access(Access::Read(Reg::Status));
+        (status, self.access(Access::Read(Reg::FrameCycles)), self.access(Access::Read(Reg::Triangles)))
+    }
+}
+
+/// `vb`'s frame as the model draws it: the colour and depth words of each pixel.
+fn model_frame(vb: &VertexBuffer) -> (Vec<u32>, Vec<u32>) {
+    let list = vb.to_trilist();
+    let out = raster_top(&vb.build, &list, if vb.cull_back { Cull::Back } else { Cull::None }, vb.background)
+        .unwrap_or_else(|e| panic!("{e}"));
+    (out.render.fb.rgb.iter().map(|&c| color_word(c)).collect(), out.render.fb.depth.clone())
+}
+
+/// Shipped scenes at class 10 packed into vertex buffers and drawn through `gpu_top`, the
+/// buffers cleared, at memory latency 0 and 20: the buffers equal the model's frame;
+/// `STATUS` says done without error and `TRIANGLES` counts the buffer's triangles.
+#[test]
+fn gpu_top_frames_vs_model() {
+    for (scene, latency) in [("scenes/cube.json", 0), ("scenes/cube.json", 20)] {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(scene);
+        let list = scene::Scene::load(&path).and_then(|s| s.to_trilist()).expect("a shipped scene");
+        let (vb, _) = pack(&list, &Build::default(), true, [9, 8, 7]).expect("packs");
+        let bytes = vb.encode();
+        let mut soc = Soc::new(&bytes, (vb.width, vb.height), latency);
+        let (status, cycles, triangles) = soc.frame(vb.width, true, 1_000_000);
+        assert_eq!(status & 0xfff, 0, "{scene}: STATUS {status:#x}");
+        assert_eq!(triangles as usize, vb.triangles.len(), "{scene}");
+        let (color, depth) = model_frame(&vb);
+        assert_eq!(soc.color.words, color, "{scene}, latency {latency}: colour");
+        assert_eq!(soc.depth.words, depth, "{scene}, latency {latency}: depth");
+        assert_eq!((soc.depth.outside_reads, soc.depth.outside_writes, soc.color.outside_writes), (0, 0, 0));
+        eprintln!("gpu_top: {scene} at latency {latency}: {cycles} cycles, {triangles} triangles");
+    }
+}
+
+/// A broken buffer ends the frame with the parser's fault in `STATUS`, and writes nothing
+/// but the clear.
+#[test]
+fn gpu_top_broken_buffer_sets_the_fault() {
+    let fan = broken::fan();
+    let (_, bytes, fault) = broken::cases().into_iter().find(|c| c.2 != Fault::Bus).expect("a case");
+    let mut soc = Soc::new(&bytes, (fan.width, fan.height), 0);
+    let (status, _, _) = soc.frame(fan.width, false, 100_000);
+    assert_eq!((status >> 4) & 15, fault as u32, "STATUS {status:#x}");
+    assert_eq!(status & 3, 2, "not busy, failed: STATUS {status:#x}");
+    assert!(soc.depth.written.is_empty() && soc.color.written.is_empty());
+}
