@@ -1,4 +1,4 @@
-//! `gpu_top`: edgepaint as a core for an FPGA design (001's system, Fig. 3): the register
+//! `gpu_top`: edgepaint as a core for an FPGA design (001's processor, Fig. 1, without texture and blending): the register
 //! block on an AXI4-Lite slave (`gpu_regs`), the command parser reading vertex buffers
 //! through an AXI4 read master (`command_parser`), the scanline rasterizer (`cull_sort`,
 //! setup with the divider, the edge walk, span) and the pixels into system memory on AXI4
