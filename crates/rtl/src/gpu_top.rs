@@ -1,8 +1,8 @@
-//! `gpu_top`: edgepaint as a core for an FPGA design (001's processor, Fig. 1, without texture and blending): the register
-//! block on an AXI4-Lite slave (`gpu_regs`), the command parser reading vertex buffers
-//! through an AXI4 read master (`command_parser`), the scanline rasterizer (`cull_sort`,
-//! setup with the divider, the edge walk, span) and the pixels into system memory on AXI4
-//! (`pixel_bus`).
+//! `gpu_top`: edgepaint as a core for an FPGA design (001's processor, Fig. 1, without its
+//! texture and blending): the register block on an AXI4-Lite slave (`gpu_regs`), the
+//! command parser reading vertex buffers through an AXI4 read master (`command_parser`),
+//! the scanline rasterizer (`cull_sort`, setup with the divider, the edge walk, span) and
+//! the pixels into system memory on AXI4 (`pixel_bus`).
 //!
 //! **A frame.** Writing START (`CONTROL` bit 0) while idle starts the parser at `VB_ADDR`.
 //! When the header has passed its checks, its screen, back-face flag and background become
