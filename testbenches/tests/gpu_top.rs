@@ -13,6 +13,8 @@ use model::raster_top::raster_top;
 use model::read_memory::{ReadMemory, ReadRequest};
 use model::vertex_buffer::{broken, pack, Fault, VertexBuffer};
 use model::word_memory::{WordMemory, WordRequest};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
 use rtl::gpu_top::GpuTop;
 use rtl::switch::Parts;
 use testbenches::streams::as_pins;
@@ -67,13 +69,19 @@ enum Access {
 }
 
 impl<'a> Soc<'a> {
-    fn new(step: Step, vb: &'a [u8], (width, height): (u32, u32), latency: u32) -> Soc<'a> {
+    /// The memories answer `latency` cycles late, and each channel holds back a transfer
+    /// in a cycle with chance `stall`.
+    fn new(step: Step, vb: &'a [u8], (width, height): (u32, u32), latency: u32, stall: f64) -> Soc<'a> {
         let words = (width * height) as usize;
+        let stalls = |seed: u64| {
+            let mut rng = ChaCha8Rng::seed_from_u64(seed);
+            move || rng.gen_bool(stall)
+        };
         Soc {
             step,
-            vb: ReadMemory::new(vb, VB_BASE, 8, latency, || false),
-            depth: WordMemory::new(vec![FILL; words], DEPTH_BASE, latency, || false),
-            color: WordMemory::new(vec![FILL; words], COLOR_BASE, latency, || false),
+            vb: ReadMemory::new(vb, VB_BASE, 8, latency, stalls(1)),
+            depth: WordMemory::new(vec![FILL; words], DEPTH_BASE, latency, stalls(2)),
+            color: WordMemory::new(vec![FILL; words], COLOR_BASE, latency, stalls(3)),
             cycle: 0,
         }
     }
@@ -189,18 +197,19 @@ fn model_frame(vb: &VertexBuffer) -> (Vec<u32>, Vec<u32>) {
 }
 
 /// The cube packed into a vertex buffer and drawn through `gpu_top`, the buffers cleared,
-/// at memory latency 0 and 20: the buffers equal the model's frame; `STATUS` says done
-/// without error and `TRIANGLES` counts the buffer's triangles. Then drawn again without
-/// the clear: nothing changes, and at latency 0 it takes at most 5% more cycles than
-/// `raster_top` fed directly (`model::raster_top`'s count).
+/// at memory latency 0, and at 20 with every channel stalling 30% of the cycles: the
+/// buffers equal the model's frame; `STATUS` says done without error and `TRIANGLES` counts
+/// the buffer's triangles. Then drawn again without the clear: nothing changes, and at
+/// latency 0 it takes at most 5% more cycles than `raster_top` fed directly
+/// (`model::raster_top`'s count).
 #[test]
 fn gpu_top_frames_vs_model() {
-    for (scene, latency) in [("scenes/cube.json", 0), ("scenes/cube.json", 20)] {
+    for (scene, latency, stall) in [("scenes/cube.json", 0, 0.0), ("scenes/cube.json", 20, 0.3)] {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(scene);
         let list = scene::Scene::load(&path).and_then(|s| s.to_trilist()).expect("a shipped scene");
         let (vb, _) = pack(&list, &Build::default(), true, [9, 8, 7]).expect("packs");
         let bytes = vb.encode();
-        let mut soc = Soc::new(verilator(), &bytes, (vb.width, vb.height), latency);
+        let mut soc = Soc::new(verilator(), &bytes, (vb.width, vb.height), latency, stall);
         let (status, cycles, triangles) = soc.frame(vb.width, true, 1_000_000);
         assert_eq!(status & 0xfff, 0, "{scene}: STATUS {status:#x}");
         assert_eq!(triangles as usize, vb.triangles.len(), "{scene}");
@@ -229,7 +238,7 @@ fn gpu_top_frames_vs_model() {
 fn gpu_top_broken_buffer_sets_the_fault() {
     let fan = broken::fan();
     let (_, bytes, fault) = broken::cases().into_iter().find(|c| c.2 != Fault::Bus).expect("a case");
-    let mut soc = Soc::new(verilator(), &bytes, (fan.width, fan.height), 0);
+    let mut soc = Soc::new(verilator(), &bytes, (fan.width, fan.height), 0, 0.0);
     let (status, _, _) = soc.frame(fan.width, false, 100_000);
     assert_eq!((status >> 4) & 15, fault as u32, "STATUS {status:#x}");
     assert_eq!(status & 3, 2, "not busy, failed: STATUS {status:#x}");
@@ -237,13 +246,13 @@ fn gpu_top_broken_buffer_sets_the_fault() {
 }
 
 /// The fan (4 triangles, 16 x 16) through rust-hdl and Verilator in lockstep, cleared, at
-/// latency 3: both simulators give the same outputs every cycle, and the buffers are the
+/// latency 3 with the memories stalling 20% of the cycles: both simulators give the same outputs every cycle, and the buffers are the
 /// model's.
 #[test]
 fn gpu_top_small_frame_both_simulators() {
     let vb = broken::fan();
     let bytes = vb.encode();
-    let mut soc = Soc::new(dual(), &bytes, (vb.width, vb.height), 3);
+    let mut soc = Soc::new(dual(), &bytes, (vb.width, vb.height), 3, 0.2);
     let (status, _, triangles) = soc.frame(vb.width, true, 100_000);
     assert_eq!((status & 0xfff, triangles as usize), (0, vb.triangles.len()));
     let (color, depth) = model_frame(&vb);
