@@ -151,3 +151,20 @@ pub fn extremes() -> Vec<(&'static str, Case)> {
     out.push(("z at both format limits and z_max, colours at 0 and 255", z_limits));
     out.into_iter().flat_map(|(what, v)| [Cull::None, Cull::Back].map(|cull| (what, Case { v, clip, cull }))).collect()
 }
+
+/// The shipped scenes the default build draws (size class 10), each packed into a vertex
+/// buffer with back faces culled and background (9, 8, 7): the command parser's and
+/// `gpu_top`'s frames. Named by path.
+pub fn shipped_buffers() -> Vec<(String, model::vertex_buffer::VertexBuffer)> {
+    let build = fx::Build::default();
+    let mut out = Vec::new();
+    for path in scene::shipped::all().expect("scenes/") {
+        let list = scene::Scene::load(&path).and_then(|s| s.to_trilist()).expect("a shipped scene");
+        if fx::Build::for_screen(list.width, list.height) == build {
+            let (vb, _) = model::vertex_buffer::pack(&list, &build, true, [9, 8, 7]).expect("packs");
+            out.push((path.display().to_string(), vb));
+        }
+    }
+    assert!(out.len() >= 5, "shipped scenes at class 10: {}", out.len());
+    out
+}

@@ -7,11 +7,12 @@
 use fx::Build;
 use model::command_parser::{CommandParser as Model, Inputs, Outputs as ModelOutputs, Params, State};
 use model::read_memory::{ReadMemory, ReadResponse};
-use model::vertex_buffer::{broken, pack, Fault, VertexBuffer, RECORD_BYTES};
+use model::vertex_buffer::{broken, Fault, VertexBuffer, RECORD_BYTES};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::command_parser::{CommandParser, BEAT_BYTES};
 use rust_hdl::prelude::Block;
+use testbenches::stimulus::shipped_buffers;
 use testbenches::streams::parsed;
 use testbenches::{count, seed, verilated_with, Dual, Outputs, Pins, Value};
 
@@ -160,21 +161,6 @@ fn dual<const CB: usize, const G: usize>() -> Dual<CommandParser<CB, G>> {
     Dual::new(CommandParser::<CB, G>::new(), vl.model().unwrap_or_else(|e| panic!("{e}")))
 }
 
-/// The shipped scenes the parser's build draws (size class 10), packed with back faces
-/// culled.
-fn shipped() -> Vec<(String, VertexBuffer)> {
-    let mut out = Vec::new();
-    for path in scene::shipped::all().expect("scenes/") {
-        let list = scene::Scene::load(&path).and_then(|s| s.to_trilist()).expect("a shipped scene");
-        if Build::for_screen(list.width, list.height) == Build::default() {
-            let (vb, _) = pack(&list, &Build::default(), true, [9, 8, 7]).expect("packs");
-            out.push((path.display().to_string(), vb));
-        }
-    }
-    assert!(out.len() >= 5, "shipped scenes at class 10: {}", out.len());
-    out
-}
-
 /// Every shipped scene at class 10 at latency 0, the rasterizer taking each triangle at
 /// once; the scenes of up to 600 triangles also at latency 20, the memory stalling 30% of
 /// the cycles and the rasterizer taking half (the rest too at every pace in the soak, with
@@ -185,7 +171,7 @@ fn command_parser_shipped_scenes_vs_model() {
     let seed = seed();
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let stalled = Pace { latency: 20, stall: 0.3, take: 0.5 };
-    for (name, vb) in shipped() {
+    for (name, vb) in shipped_buffers() {
         let bytes = vb.encode();
         let paces = if vb.triangles.len() <= 600 || count() >= 10_000 { vec![AT_ONCE, stalled] } else { vec![AT_ONCE] };
         for pace in paces {
@@ -204,7 +190,7 @@ fn command_parser_shipped_scenes_vs_model() {
 fn command_parser_small_cache_and_buffers_back_to_back_vs_model() {
     let seed = seed();
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let scenes = shipped();
+    let scenes = shipped_buffers();
     let scene = |n: &str| &scenes.iter().find(|(name, _)| name.ends_with(n)).expect("a shipped scene").1;
     let (a, b) = (scene("sphere.json"), scene("torus.json"));
     let mut memory = a.encode();

@@ -19,6 +19,7 @@ pub mod divider;
 pub mod edge_walk;
 pub mod ept;
 pub mod gpu_regs;
+pub mod gpu_top;
 pub mod guard_band;
 pub mod input;
 pub mod pixel_bus;
