@@ -86,6 +86,9 @@ crate::bundle! {
     }
 }
 
+// LiteSlave's address ports are the register map's width.
+const _: () = assert!(model::gpu_regs::ADDR_BITS == 6, "LiteSlave's addresses");
+
 crate::bundle! {
     /// An AXI4-Lite slave, 32-bit data, byte addresses of `model::gpu_regs::ADDR_BITS` bits
     /// (no AWPROT or ARPROT): the host's port into `gpu_regs`.
@@ -109,8 +112,6 @@ crate::bundle! {
         Out r_resp: Bits<2>,
     }
 }
-
-const _: () = assert!(model::gpu_regs::ADDR_BITS == 6, "LiteSlave's addresses");
 
 crate::bundle! {
     /// A triangle leaves `cull_sort`, passed or rejected, and why (`rtl::cull_sort`).
