@@ -1,11 +1,13 @@
 
 
-module command_parser(clock,start,address,bus$ar_valid,bus$ar_ready,bus$ar_addr,bus$ar_len,bus$ar_size,bus$ar_burst,bus$r_valid,bus$r_ready,bus$r_data,bus$r_resp,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,out$end_of_buffer,out$end_of_frame,render_valid,width,height,cull_back,background,state,fault,frame_done,buffer_done);
+module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$ar_ready,bus$ar_addr,bus$ar_len,bus$ar_size,bus$ar_burst,bus$r_valid,bus$r_ready,bus$r_data,bus$r_resp,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,out$end_of_buffer,out$end_of_frame,render_valid,width,height,cull_back,background,state,fault,frame_done,buffer_done);
     
     // Module arguments
     input wire  clock;
     input wire  start;
     input wire  [31:0] address;
+    input wire  [15:0] max_width;
+    input wire  [15:0] max_height;
     output reg  bus$ar_valid;
     input wire  bus$ar_ready;
     output reg  [31:0] bus$ar_addr;
@@ -421,6 +423,8 @@ module command_parser(clock,start,address,bus$ar_valid,bus$ar_ready,bus$ar_addr,
     reg  [31:0] header_check$h$22;
     reg  [31:0] header_check$h$23;
     reg  [31:0] header_check$base;
+    reg  [15:0] header_check$max_width;
+    reg  [15:0] header_check$max_height;
     wire  [3:0] header_check$fault;
     reg  [31:0] index_check$r$0;
     reg  [31:0] index_check$r$1;
@@ -1030,6 +1034,8 @@ module command_parser(clock,start,address,bus$ar_valid,bus$ar_ready,bus$ar_addr,
         .h$22(header_check$h$22),
         .h$23(header_check$h$23),
         .base(header_check$base),
+        .max_width(header_check$max_width),
+        .max_height(header_check$max_height),
         .fault(header_check$fault)
     );
     command_parser$index_check index_check(
@@ -1299,6 +1305,8 @@ module command_parser(clock,start,address,bus$ar_valid,bus$ar_ready,bus$ar_addr,
         header_check$h$22 = w$22$q;
         header_check$h$23 = w$23$q;
         header_check$base = base$q;
+        header_check$max_width = max_width;
+        header_check$max_height = max_height;
         index_check$r$0 = w$16$q;
         vertex_check$r$0 = w$16$q;
         index_check$r$1 = w$17$q;
@@ -2270,7 +2278,7 @@ module command_parser$frame_r(d,q,clock);
 endmodule // command_parser$frame_r
 
 
-module command_parser$header_check(h$0,h$1,h$2,h$3,h$4,h$5,h$6,h$7,h$8,h$9,h$10,h$11,h$12,h$13,h$14,h$15,h$16,h$17,h$18,h$19,h$20,h$21,h$22,h$23,base,fault);
+module command_parser$header_check(h$0,h$1,h$2,h$3,h$4,h$5,h$6,h$7,h$8,h$9,h$10,h$11,h$12,h$13,h$14,h$15,h$16,h$17,h$18,h$19,h$20,h$21,h$22,h$23,base,max_width,max_height,fault);
     
     // Module arguments
     input wire  [31:0] h$0;
@@ -2298,6 +2306,8 @@ module command_parser$header_check(h$0,h$1,h$2,h$3,h$4,h$5,h$6,h$7,h$8,h$9,h$10,
     input wire  [31:0] h$22;
     input wire  [31:0] h$23;
     input wire  [31:0] base;
+    input wire  [15:0] max_width;
+    input wire  [15:0] max_height;
     output reg  [3:0] fault;
     
     // Constant declarations
@@ -2425,6 +2435,9 @@ module command_parser$header_check(h$0,h$1,h$2,h$3,h$4,h$5,h$6,h$7,h$8,h$9,h$10,
         vertex_end = vertex_at + (((h$5) & 38'h3fffffffff) << five);
         layout_bad = |h$6[(32'h0)+:(5)] | (index_at < header_bytes) | (index_end > length) | |h$7[(32'h0)+:(5)] | (vertex_at < header_bytes) | (vertex_end > length) | (|h$4 & |h$5 & (index_at < vertex_end) & (vertex_at < index_end)) | ((((base) & 33'h1ffffffff) + ((h$8) & 33'h1ffffffff)) > two_32);
         fault = 32'h0;
+        if ((width > max_width) | (height > max_height)) begin
+            fault = 32'hc;
+        end
         if (layout_bad) begin
             fault = 32'h5;
         end

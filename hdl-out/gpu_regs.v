@@ -1,6 +1,6 @@
 
 
-module gpu_regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$w_ready,host$w_data,host$w_strb,host$b_valid,host$b_ready,host$b_resp,host$ar_valid,host$ar_ready,host$ar_addr,host$r_valid,host$r_ready,host$r_data,host$r_resp,status,frame_cycles,triangles,done,start,clear,irq,vb_addr,color_base,color_pitch,depth_base,depth_pitch);
+module gpu_regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$w_ready,host$w_data,host$w_strb,host$b_valid,host$b_ready,host$b_resp,host$ar_valid,host$ar_ready,host$ar_addr,host$r_valid,host$r_ready,host$r_data,host$r_resp,status,frame_cycles,triangles,done,start,clear,irq,vb_addr,color_base,color_pitch,depth_base,depth_pitch,screen);
     
     // Module arguments
     input wire  clock;
@@ -33,6 +33,7 @@ module gpu_regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host
     output reg  [15:0] color_pitch;
     output reg  [31:0] depth_base;
     output reg  [15:0] depth_pitch;
+    output reg  [31:0] screen;
     
     // Stub signals
     reg  [2:0] control$d;
@@ -53,6 +54,9 @@ module gpu_regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host
     reg  [15:0] zpitch$d;
     wire  [15:0] zpitch$q;
     reg  zpitch$clock;
+    reg  [31:0] screen_r$d;
+    wire  [31:0] screen_r$q;
+    reg  screen_r$clock;
     reg  start_r$d;
     wire  start_r$q;
     reg  start_r$clock;
@@ -114,6 +118,11 @@ module gpu_regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host
         .q(zpitch$q),
         .clock(zpitch$clock)
     );
+    gpu_regs$screen_r screen_r(
+        .d(screen_r$d),
+        .q(screen_r$q),
+        .clock(screen_r$clock)
+    );
     gpu_regs$start_r start_r(
         .d(start_r$d),
         .q(start_r$q),
@@ -161,6 +170,7 @@ module gpu_regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host
         cpitch$clock = clock;
         zbase$clock = clock;
         zpitch$clock = clock;
+        screen_r$clock = clock;
         start_r$clock = clock;
         pending$clock = clock;
         b_valid$clock = clock;
@@ -174,6 +184,7 @@ module gpu_regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host
         cpitch$d = cpitch$q;
         zbase$d = zbase$q;
         zpitch$d = zpitch$q;
+        screen_r$d = screen_r$q;
         start_r$d = start_r$q;
         pending$d = pending$q;
         b_valid$d = b_valid$q;
@@ -189,6 +200,7 @@ module gpu_regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host
         color_pitch = cpitch$q;
         depth_base = zbase$q;
         depth_pitch = zpitch$q;
+        screen = screen_r$q;
         host$b_valid = b_valid$q;
         host$b_resp = b_resp$q;
         host$r_valid = r_valid$q;
@@ -241,7 +253,7 @@ module gpu_regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host
         if (write) begin
             b_valid$d = 1'b1;
             b_resp$d = 32'h0;
-            if (wi > 32'ha) begin
+            if (wi > 32'hb) begin
                 b_resp$d = 32'h2;
             end
             if (wi == 32'h1) begin
@@ -268,6 +280,9 @@ module gpu_regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host
             if (wi == 32'h8) begin
                 merged = (((zpitch$q) & 32'hffffffff) & ~mask) | (host$w_data & mask);
                 zpitch$d = merged[(32'h0)+:(16)];
+            end
+            if (wi == 32'hb) begin
+                screen_r$d = (screen_r$q & ~mask) | (host$w_data & mask);
             end
         end
         ri = host$ar_addr[(32'h2)+:(4)];
@@ -311,7 +326,10 @@ module gpu_regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host
             if (ri == 32'ha) begin
                 r_data$d = triangles;
             end
-            if (ri > 32'ha) begin
+            if (ri == 32'hb) begin
+                r_data$d = screen_r$q;
+            end
+            if (ri > 32'hb) begin
                 r_resp$d = 32'h2;
             end
         end
@@ -421,7 +439,7 @@ module gpu_regs$ident(id);
     output reg  [31:0] id;
     
     // Constant declarations
-    localparam  value = 32'h4550010a;
+    localparam  value = 32'h4550020a;
     
     // Update code
     always @(*) begin
@@ -505,6 +523,25 @@ module gpu_regs$r_valid(d,q,clock);
     end
           
 endmodule // gpu_regs$r_valid
+
+
+module gpu_regs$screen_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_regs$screen_r
 
 
 module gpu_regs$start_r(d,q,clock);

@@ -85,9 +85,12 @@ module gpu_top(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$
     wire  [15:0] regs$color_pitch;
     wire  [31:0] regs$depth_base;
     wire  [15:0] regs$depth_pitch;
+    wire  [31:0] regs$screen;
     reg  parser$clock;
     reg  parser$start;
     reg  [31:0] parser$address;
+    reg  [15:0] parser$max_width;
+    reg  [15:0] parser$max_height;
     wire  parser$out$valid;
     reg  parser$out$ready;
     wire  [15:0] parser$out$v0_x;
@@ -270,6 +273,9 @@ module gpu_top(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$
     reg  background$clock;
     
     // Local signals
+    reg  [15:0] max_width;
+    reg  [15:0] color_row;
+    reg  [15:0] depth_row;
     reg  done;
     reg  [31:0] status;
     
@@ -304,12 +310,15 @@ module gpu_top(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$
         .color_base(regs$color_base),
         .color_pitch(regs$color_pitch),
         .depth_base(regs$depth_base),
-        .depth_pitch(regs$depth_pitch)
+        .depth_pitch(regs$depth_pitch),
+        .screen(regs$screen)
     );
     gpu_top$parser parser(
         .clock(parser$clock),
         .start(parser$start),
         .address(parser$address),
+        .max_width(parser$max_width),
+        .max_height(parser$max_height),
         .bus$ar_valid(vb$ar_valid),
         .bus$ar_ready(vb$ar_ready),
         .bus$ar_addr(vb$ar_addr),
@@ -596,6 +605,17 @@ module gpu_top(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$
         irq = regs$irq;
         parser$start = regs$start & ~busy$q;
         parser$address = regs$vb_addr;
+        color_row = ((regs$color_pitch[(32'h2)+:(14)]) & 16'hffff);
+        depth_row = ((regs$depth_pitch[(32'h2)+:(14)]) & 16'hffff);
+        max_width = regs$screen[(32'h0)+:(16)];
+        if (color_row < max_width) begin
+            max_width = color_row;
+        end
+        if (depth_row < max_width) begin
+            max_width = depth_row;
+        end
+        parser$max_width = max_width;
+        parser$max_height = regs$screen[(32'h10)+:(16)];
         if (busy$q) begin
             cycles$d = cycles$q + 32'h1;
         end
@@ -49627,12 +49647,14 @@ module gpu_top$height(d,q,clock);
 endmodule // gpu_top$height
 
 
-module gpu_top$parser(clock,start,address,bus$ar_valid,bus$ar_ready,bus$ar_addr,bus$ar_len,bus$ar_size,bus$ar_burst,bus$r_valid,bus$r_ready,bus$r_data,bus$r_resp,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,out$end_of_buffer,out$end_of_frame,render_valid,width,height,cull_back,background,state,fault,frame_done,buffer_done);
+module gpu_top$parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$ar_ready,bus$ar_addr,bus$ar_len,bus$ar_size,bus$ar_burst,bus$r_valid,bus$r_ready,bus$r_data,bus$r_resp,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,out$end_of_buffer,out$end_of_frame,render_valid,width,height,cull_back,background,state,fault,frame_done,buffer_done);
     
     // Module arguments
     input wire  clock;
     input wire  start;
     input wire  [31:0] address;
+    input wire  [15:0] max_width;
+    input wire  [15:0] max_height;
     output reg  bus$ar_valid;
     input wire  bus$ar_ready;
     output reg  [31:0] bus$ar_addr;
@@ -50048,6 +50070,8 @@ module gpu_top$parser(clock,start,address,bus$ar_valid,bus$ar_ready,bus$ar_addr,
     reg  [31:0] header_check$h$22;
     reg  [31:0] header_check$h$23;
     reg  [31:0] header_check$base;
+    reg  [15:0] header_check$max_width;
+    reg  [15:0] header_check$max_height;
     wire  [3:0] header_check$fault;
     reg  [31:0] index_check$r$0;
     reg  [31:0] index_check$r$1;
@@ -50657,6 +50681,8 @@ module gpu_top$parser(clock,start,address,bus$ar_valid,bus$ar_ready,bus$ar_addr,
         .h$22(header_check$h$22),
         .h$23(header_check$h$23),
         .base(header_check$base),
+        .max_width(header_check$max_width),
+        .max_height(header_check$max_height),
         .fault(header_check$fault)
     );
     gpu_top$parser$index_check index_check(
@@ -50926,6 +50952,8 @@ module gpu_top$parser(clock,start,address,bus$ar_valid,bus$ar_ready,bus$ar_addr,
         header_check$h$22 = w$22$q;
         header_check$h$23 = w$23$q;
         header_check$base = base$q;
+        header_check$max_width = max_width;
+        header_check$max_height = max_height;
         index_check$r$0 = w$16$q;
         vertex_check$r$0 = w$16$q;
         index_check$r$1 = w$17$q;
@@ -51897,7 +51925,7 @@ module gpu_top$parser$frame_r(d,q,clock);
 endmodule // gpu_top$parser$frame_r
 
 
-module gpu_top$parser$header_check(h$0,h$1,h$2,h$3,h$4,h$5,h$6,h$7,h$8,h$9,h$10,h$11,h$12,h$13,h$14,h$15,h$16,h$17,h$18,h$19,h$20,h$21,h$22,h$23,base,fault);
+module gpu_top$parser$header_check(h$0,h$1,h$2,h$3,h$4,h$5,h$6,h$7,h$8,h$9,h$10,h$11,h$12,h$13,h$14,h$15,h$16,h$17,h$18,h$19,h$20,h$21,h$22,h$23,base,max_width,max_height,fault);
     
     // Module arguments
     input wire  [31:0] h$0;
@@ -51925,6 +51953,8 @@ module gpu_top$parser$header_check(h$0,h$1,h$2,h$3,h$4,h$5,h$6,h$7,h$8,h$9,h$10,
     input wire  [31:0] h$22;
     input wire  [31:0] h$23;
     input wire  [31:0] base;
+    input wire  [15:0] max_width;
+    input wire  [15:0] max_height;
     output reg  [3:0] fault;
     
     // Constant declarations
@@ -52052,6 +52082,9 @@ module gpu_top$parser$header_check(h$0,h$1,h$2,h$3,h$4,h$5,h$6,h$7,h$8,h$9,h$10,
         vertex_end = vertex_at + (((h$5) & 38'h3fffffffff) << five);
         layout_bad = |h$6[(32'h0)+:(5)] | (index_at < header_bytes) | (index_end > length) | |h$7[(32'h0)+:(5)] | (vertex_at < header_bytes) | (vertex_end > length) | (|h$4 & |h$5 & (index_at < vertex_end) & (vertex_at < index_end)) | ((((base) & 33'h1ffffffff) + ((h$8) & 33'h1ffffffff)) > two_32);
         fault = 32'h0;
+        if ((width > max_width) | (height > max_height)) begin
+            fault = 32'hc;
+        end
         if (layout_bad) begin
             fault = 32'h5;
         end
@@ -58590,7 +58623,7 @@ module gpu_top$pixel_bus$zw_valid(d,q,clock);
 endmodule // gpu_top$pixel_bus$zw_valid
 
 
-module gpu_top$regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$w_ready,host$w_data,host$w_strb,host$b_valid,host$b_ready,host$b_resp,host$ar_valid,host$ar_ready,host$ar_addr,host$r_valid,host$r_ready,host$r_data,host$r_resp,status,frame_cycles,triangles,done,start,clear,irq,vb_addr,color_base,color_pitch,depth_base,depth_pitch);
+module gpu_top$regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$w_ready,host$w_data,host$w_strb,host$b_valid,host$b_ready,host$b_resp,host$ar_valid,host$ar_ready,host$ar_addr,host$r_valid,host$r_ready,host$r_data,host$r_resp,status,frame_cycles,triangles,done,start,clear,irq,vb_addr,color_base,color_pitch,depth_base,depth_pitch,screen);
     
     // Module arguments
     input wire  clock;
@@ -58623,6 +58656,7 @@ module gpu_top$regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,
     output reg  [15:0] color_pitch;
     output reg  [31:0] depth_base;
     output reg  [15:0] depth_pitch;
+    output reg  [31:0] screen;
     
     // Stub signals
     reg  [2:0] control$d;
@@ -58643,6 +58677,9 @@ module gpu_top$regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,
     reg  [15:0] zpitch$d;
     wire  [15:0] zpitch$q;
     reg  zpitch$clock;
+    reg  [31:0] screen_r$d;
+    wire  [31:0] screen_r$q;
+    reg  screen_r$clock;
     reg  start_r$d;
     wire  start_r$q;
     reg  start_r$clock;
@@ -58704,6 +58741,11 @@ module gpu_top$regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,
         .q(zpitch$q),
         .clock(zpitch$clock)
     );
+    gpu_top$regs$screen_r screen_r(
+        .d(screen_r$d),
+        .q(screen_r$q),
+        .clock(screen_r$clock)
+    );
     gpu_top$regs$start_r start_r(
         .d(start_r$d),
         .q(start_r$q),
@@ -58751,6 +58793,7 @@ module gpu_top$regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,
         cpitch$clock = clock;
         zbase$clock = clock;
         zpitch$clock = clock;
+        screen_r$clock = clock;
         start_r$clock = clock;
         pending$clock = clock;
         b_valid$clock = clock;
@@ -58764,6 +58807,7 @@ module gpu_top$regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,
         cpitch$d = cpitch$q;
         zbase$d = zbase$q;
         zpitch$d = zpitch$q;
+        screen_r$d = screen_r$q;
         start_r$d = start_r$q;
         pending$d = pending$q;
         b_valid$d = b_valid$q;
@@ -58779,6 +58823,7 @@ module gpu_top$regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,
         color_pitch = cpitch$q;
         depth_base = zbase$q;
         depth_pitch = zpitch$q;
+        screen = screen_r$q;
         host$b_valid = b_valid$q;
         host$b_resp = b_resp$q;
         host$r_valid = r_valid$q;
@@ -58831,7 +58876,7 @@ module gpu_top$regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,
         if (write) begin
             b_valid$d = 1'b1;
             b_resp$d = 32'h0;
-            if (wi > 32'ha) begin
+            if (wi > 32'hb) begin
                 b_resp$d = 32'h2;
             end
             if (wi == 32'h1) begin
@@ -58858,6 +58903,9 @@ module gpu_top$regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,
             if (wi == 32'h8) begin
                 merged = (((zpitch$q) & 32'hffffffff) & ~mask) | (host$w_data & mask);
                 zpitch$d = merged[(32'h0)+:(16)];
+            end
+            if (wi == 32'hb) begin
+                screen_r$d = (screen_r$q & ~mask) | (host$w_data & mask);
             end
         end
         ri = host$ar_addr[(32'h2)+:(4)];
@@ -58901,7 +58949,10 @@ module gpu_top$regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,
             if (ri == 32'ha) begin
                 r_data$d = triangles;
             end
-            if (ri > 32'ha) begin
+            if (ri == 32'hb) begin
+                r_data$d = screen_r$q;
+            end
+            if (ri > 32'hb) begin
                 r_resp$d = 32'h2;
             end
         end
@@ -59011,7 +59062,7 @@ module gpu_top$regs$ident(id);
     output reg  [31:0] id;
     
     // Constant declarations
-    localparam  value = 32'h4550010a;
+    localparam  value = 32'h4550020a;
     
     // Update code
     always @(*) begin
@@ -59095,6 +59146,25 @@ module gpu_top$regs$r_valid(d,q,clock);
     end
           
 endmodule // gpu_top$regs$r_valid
+
+
+module gpu_top$regs$screen_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$regs$screen_r
 
 
 module gpu_top$regs$start_r(d,q,clock);

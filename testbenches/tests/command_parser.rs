@@ -5,7 +5,7 @@
 //! another, a small vertex cache, and every broken rule ending in the model's error code.
 
 use fx::Build;
-use model::command_parser::{CommandParser as Model, Inputs, Outputs as ModelOutputs, Params, State};
+use model::command_parser::{CommandParser as Model, Inputs, Outputs as ModelOutputs, Params, State, ANY_SCREEN};
 use model::read_memory::{ReadMemory, ReadResponse};
 use model::vertex_buffer::{broken, Fault, VertexBuffer, RECORD_BYTES};
 use rand::{Rng, SeedableRng};
@@ -27,9 +27,11 @@ struct Pace {
     stall: f64,
     /// Chance that the rasterizer takes the output triangle in a cycle.
     take: f64,
+    /// The largest screen the parser accepts (its `max_width`, `max_height`).
+    screen: [u32; 2],
 }
 
-const AT_ONCE: Pace = Pace { latency: 0, stall: 0.0, take: 1.0 };
+const AT_ONCE: Pace = Pace { latency: 0, stall: 0.0, take: 1.0, screen: ANY_SCREEN };
 
 /// How one buffer ended, and the triangles the rasterizer took from it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -126,10 +128,13 @@ fn lockstep<U: Block + Pins>(
         } else {
             (!idle && rng.gen_bool(0.05), rng.gen())
         };
-        let i = Inputs { start, address, bus: mem.response(), out_ready: take_rng.gen_bool(pace.take) };
+        let (screen, bus) = (pace.screen, mem.response());
+        let i = Inputs { start, address, screen, bus, out_ready: take_rng.gen_bool(pace.take) };
         let mut pins = vec![
             ("start", Value::new(1, start as u128)),
             ("address", Value::new(32, address.into())),
+            ("max_width", Value::new(16, screen[0].into())),
+            ("max_height", Value::new(16, screen[1].into())),
             ("out$ready", Value::new(1, i.out_ready as u128)),
         ];
         pins.extend(bus_pins(&i.bus));
@@ -170,7 +175,7 @@ fn dual<const CB: usize, const G: usize>() -> Dual<CommandParser<CB, G>> {
 fn command_parser_shipped_scenes_vs_model() {
     let seed = seed();
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let stalled = Pace { latency: 20, stall: 0.3, take: 0.5 };
+    let stalled = Pace { latency: 20, stall: 0.3, take: 0.5, ..AT_ONCE };
     for (name, vb) in shipped_buffers() {
         let bytes = vb.encode();
         let paces = if vb.triangles.len() <= 600 || count() >= 10_000 { vec![AT_ONCE, stalled] } else { vec![AT_ONCE] };
@@ -197,7 +202,7 @@ fn command_parser_small_cache_and_buffers_back_to_back_vs_model() {
     memory.resize(memory.len().next_multiple_of(RECORD_BYTES), 0);
     let second = BASE + memory.len() as u32;
     memory.extend(b.encode());
-    let pace = Pace { latency: 3, stall: 0.2, take: 0.7 };
+    let pace = Pace { latency: 3, stall: 0.2, take: 0.7, ..AT_ONCE };
     let ends = lockstep(&mut dual::<4, 1>(), 16, &memory, &[BASE, second, BASE], pace, &mut rng, 5_000_000)
         .unwrap_or_else(|e| panic!("seed {seed}: {e}"));
     let whole = |vb: &VertexBuffer| End { fault: None, triangles: vb.triangles.len() };
@@ -220,9 +225,10 @@ fn command_parser_vertex_repeated_hits_the_entry_just_written() {
 }
 
 /// Every broken rule (`vertex_buffer::broken`), a buffer for another build, a buffer
-/// address off a record boundary and a buffer longer than the memory (the read past it
-/// answered with an error): the parser stops with the model's error code, in both
-/// simulators, and a good buffer started after the error is read whole.
+/// address off a record boundary, a buffer longer than the memory (the read past it
+/// answered with an error) and a screen wider or taller than `max_width` x `max_height`:
+/// the parser stops with the model's error code, in both simulators, and a good buffer
+/// started after the error is read whole.
 #[test]
 fn command_parser_broken_buffers_vs_model() {
     let seed = seed();
@@ -249,6 +255,13 @@ fn command_parser_broken_buffers_vs_model() {
     let ends = lockstep(&mut dual::<9, 32>(), 512, short, &[BASE], AT_ONCE, &mut rng, 10_000)
         .unwrap_or_else(|e| panic!("seed {seed}: {e}"));
     assert_eq!(ends, [End { fault: Some(Fault::Bus), triangles: ends[0].triangles }]);
+    for (screen, fault) in [([15, 16], Some(Fault::Screen)), ([16, 15], Some(Fault::Screen)), ([16, 16], None)] {
+        let pace = Pace { screen, ..AT_ONCE };
+        let ends = lockstep(&mut dual::<9, 32>(), 512, &good, &[BASE], pace, &mut rng, 10_000)
+            .unwrap_or_else(|e| panic!("seed {seed}, buffers of {screen:?}: {e}"));
+        let triangles = if fault.is_some() { 0 } else { fan.triangles.len() };
+        assert_eq!(ends, [End { fault, triangles }], "buffers of {screen:?}");
+    }
 }
 
 /// Random edits of the fan's buffer (`EDGEPAINT_N` / 10 of them) at random latencies,
@@ -263,7 +276,7 @@ fn command_parser_mutated_buffers_vs_model() {
     for case in 0..count() / 10 {
         let mut bytes = good.clone();
         broken::mutate(&mut bytes, &mut |n| rng.gen_range(0..n));
-        let pace = Pace { latency: rng.gen_range(0..8), stall: 0.2, take: rng.gen_range(0.2..1.0) };
+        let pace = Pace { latency: rng.gen_range(0..8), stall: 0.2, take: rng.gen_range(0.2..1.0), ..AT_ONCE };
         let ends = lockstep(&mut dual::<9, 32>(), 512, &bytes, &[BASE], pace, &mut rng, 20_000)
             .unwrap_or_else(|e| panic!("seed {seed}, case {case}: {e}"));
         faults.insert(ends[0].fault.map(|f| f as u8));

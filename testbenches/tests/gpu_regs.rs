@@ -48,6 +48,7 @@ fn compare(got: &Outputs, o: &ModelOutputs) -> Result<(), String> {
         ("color_pitch", Value::new(16, o.color_pitch.into())),
         ("depth_base", Value::new(32, o.depth_base.into())),
         ("depth_pitch", Value::new(16, o.depth_pitch.into())),
+        ("screen", Value::new(32, o.screen.into())),
     ];
     if let Some(resp) = o.b {
         want.push(("host$b_resp", Value::new(2, resp.into())));

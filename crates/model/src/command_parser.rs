@@ -92,16 +92,29 @@ pub enum State {
 }
 
 /// What the parser is given, one cycle.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Inputs {
     /// Start reading the buffer at `address` (in INIT or Error).
     pub start: bool,
     pub address: u32,
+    /// The largest screen the colour and depth buffers hold (width, height): a header
+    /// asking for more stops the parser ([`Fault::Screen`]). Read when the header is checked.
+    pub screen: [u32; 2],
     /// The memory's side of the read bus.
     pub bus: ReadResponse,
     /// The rasterizer takes the output triangle.
     pub out_ready: bool,
 }
+
+impl Default for Inputs {
+    /// Nothing started, no screen refused ([`ANY_SCREEN`]).
+    fn default() -> Inputs {
+        Inputs { start: false, address: 0, screen: ANY_SCREEN, bus: ReadResponse::default(), out_ready: false }
+    }
+}
+
+/// A `screen` input that refuses no header: the largest the RTL's 16-bit ports carry.
+pub const ANY_SCREEN: [u32; 2] = [0xffff; 2];
 
 /// A triangle as the parser hands it over.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -269,11 +282,11 @@ impl CommandParser {
             }
             State::Header | State::TriIndex => {
                 if let Some(done) = complete {
-                    self.checked(done, out_free);
+                    self.checked(done, out_free, i.screen);
                 }
             }
             State::VertexFetch => match complete {
-                Some(done) => self.checked(done, out_free),
+                Some(done) => self.checked(done, out_free, i.screen),
                 // A lookup waits for the burst of a miss to come in whole and be checked.
                 None if self.burst.is_none() && self.complete.is_none() => self.look_up(out_free),
                 None => {}
@@ -331,13 +344,13 @@ impl CommandParser {
     }
 
     /// A burst received whole: its rules checked, then the next step.
-    fn checked(&mut self, done: Burst, out_free: bool) {
+    fn checked(&mut self, done: Burst, out_free: bool, screen: [u32; 2]) {
         if std::mem::take(&mut self.bus_error) {
             return self.stop(Fault::Bus);
         }
         let record: [u32; RECORD_BYTES / 4] = self.words[..RECORD_BYTES / 4].try_into().expect("a record");
         let result: Result<(), Broken> = match done {
-            Burst::Header => read_header(&self.words, Some(&self.build)).and_then(|h| self.accept_header(h)),
+            Burst::Header => read_header(&self.words, Some(&self.build)).and_then(|h| self.accept_header(h, screen)),
             Burst::Index => {
                 let h = self.header.expect("the header was read");
                 read_index_record(&record, self.t, &h).map(|r| {
@@ -363,11 +376,16 @@ impl CommandParser {
         }
     }
 
-    /// The header passed `read_header` for this hardware: its reads must stay below 2^32.
-    fn accept_header(&mut self, h: Header) -> Result<(), Broken> {
+    /// The header passed `read_header` for this hardware: its reads must stay below 2^32,
+    /// and its screen inside `screen`.
+    fn accept_header(&mut self, h: Header, screen: [u32; 2]) -> Result<(), Broken> {
         if u64::from(self.base) + u64::from(h.length) > 1 << 32 {
             let rule = format!("{} bytes from {:#x} run past 32-bit addresses", h.length, self.base);
             return Err(Broken { at: 32, fault: Fault::Layout, rule });
+        }
+        if h.width > screen[0] || h.height > screen[1] {
+            let rule = format!("a {}x{} screen on buffers of {}x{}", h.width, h.height, screen[0], screen[1]);
+            return Err(Broken { at: 8, fault: Fault::Screen, rule });
         }
         self.header = Some(h);
         if h.triangles == 0 {
@@ -454,6 +472,8 @@ pub struct Run {
     /// Every read burst, in order, and the beats the memory answered with an error.
     pub reads: Vec<ReadRequest>,
     pub reads_outside: u64,
+    /// The header, if it passed its checks.
+    pub header: Option<Header>,
 }
 
 /// The memory and the rasterizer around a [`run`].
@@ -468,19 +488,28 @@ pub struct Bench<'a> {
     pub take: Box<dyn FnMut(u64) -> bool + 'a>,
     /// The cycles allowed.
     pub max_cycles: u64,
+    /// The parser's `screen` input.
+    pub screen: [u32; 2],
 }
 
 impl Default for Bench<'_> {
     /// At address 0x1000, latency 0, nothing stalling, every triangle taken at once, a
-    /// million cycles allowed.
+    /// million cycles allowed, any screen.
     fn default() -> Self {
-        Bench { base: 0x1000, latency: 0, stall: Box::new(|| false), take: Box::new(|_| true), max_cycles: 1_000_000 }
+        Bench {
+            base: 0x1000,
+            latency: 0,
+            stall: Box::new(|| false),
+            take: Box::new(|_| true),
+            max_cycles: 1_000_000,
+            screen: ANY_SCREEN,
+        }
     }
 }
 
 /// Buffer `bytes` through a parser of `params` drawing `build`, started in cycle 0.
 pub fn run(params: Params, build: Build, bytes: &[u8], bench: Bench) -> Result<Run, String> {
-    let Bench { base, latency, mut stall, mut take, max_cycles } = bench;
+    let Bench { base, latency, mut stall, mut take, max_cycles, screen } = bench;
     let mut parser = CommandParser::new(params, build)?;
     let mut memory = crate::read_memory::ReadMemory::new(bytes, base, params.beat_bytes, latency, &mut *stall);
     let mut triangles = Vec::new();
@@ -501,16 +530,17 @@ pub fn run(params: Params, build: Build, bytes: &[u8], bench: Bench) -> Result<R
                 stats,
                 reads: memory.requests,
                 reads_outside: memory.outside,
+                header: o.render,
             });
         }
-        let i = Inputs { start: cycle == 0, address: base, bus: memory.response(), out_ready: take(cycle) };
+        let i = Inputs { start: cycle == 0, address: base, screen, bus: memory.response(), out_ready: take(cycle) };
         if let (Some(t), true) = (o.out, i.out_ready) {
             triangles.push((cycle, t));
         }
         memory.clock(o.ar, true);
         parser.clock(&i);
     }
-    let stats = parser.stats();
+    let (stats, header) = (parser.stats(), parser.outputs().render);
     Ok(Run {
         outcome: Outcome::Timeout,
         triangles,
@@ -518,5 +548,6 @@ pub fn run(params: Params, build: Build, bytes: &[u8], bench: Bench) -> Result<R
         stats,
         reads: memory.requests,
         reads_outside: memory.outside,
+        header,
     })
 }

@@ -13,14 +13,15 @@
 //!
 //! **The map** ([`Reg`]): identification, control (start, clear, interrupt enable),
 //! status, the frame-done interrupt (write 1 to clear), the vertex buffer's address, the
-//! colour and depth buffers' bases and pitches, and the last frame's cycles and triangles.
+//! colour and depth buffers' bases and pitches, the buffers' size, and the last frame's
+//! cycles and triangles.
 
 /// Bits of a register address.
 pub const ADDR_BITS: u32 = 6;
 
-/// `ID`'s value: "EP", the map's version 1, the hardware's size class.
+/// `ID`'s value: "EP", the map's version 2, the hardware's size class.
 pub fn id(class: u32) -> u32 {
-    u32::from_be_bytes([b'E', b'P', 1, class as u8])
+    u32::from_be_bytes([b'E', b'P', 2, class as u8])
 }
 
 /// The registers, by byte address.
@@ -47,11 +48,16 @@ pub enum Reg {
     FrameCycles = 0x24,
     /// Read only: triangles the last frame handed to the rasterizer.
     Triangles = 0x28,
+    /// The size of the colour and depth buffers in pixels: width in bits 0-15, height in
+    /// bits 16-31. A frame whose header asks for a wider or taller screen, or for rows
+    /// longer than a pitch holds, ends with fault `SCREEN` before any pixel is written
+    /// (`gpu_top`), so that no buffer asks the core to write outside the buffers.
+    Screen = 0x2c,
 }
 
 impl Reg {
     /// Every register, in address order.
-    pub const ALL: [Reg; 11] = [
+    pub const ALL: [Reg; 12] = [
         Reg::Id,
         Reg::Control,
         Reg::Status,
@@ -63,6 +69,7 @@ impl Reg {
         Reg::DepthPitch,
         Reg::FrameCycles,
         Reg::Triangles,
+        Reg::Screen,
     ];
 
     /// The register at byte address `addr` (its low two bits ignored).
@@ -74,7 +81,7 @@ impl Reg {
     fn writable(self) -> u32 {
         match self {
             Reg::Control => 0b110,
-            Reg::VbAddr | Reg::ColorBase | Reg::DepthBase => u32::MAX,
+            Reg::VbAddr | Reg::ColorBase | Reg::DepthBase | Reg::Screen => u32::MAX,
             Reg::ColorPitch | Reg::DepthPitch => 0xffff,
             _ => 0,
         }
@@ -120,6 +127,7 @@ pub struct Outputs {
     pub color_pitch: u16,
     pub depth_base: u32,
     pub depth_pitch: u16,
+    pub screen: u32,
 }
 
 /// The unit's registers.
@@ -172,6 +180,7 @@ impl GpuRegs {
             color_pitch: self.value(Reg::ColorPitch) as u16,
             depth_base: self.value(Reg::DepthBase),
             depth_pitch: self.value(Reg::DepthPitch) as u16,
+            screen: self.value(Reg::Screen),
         }
     }
 
@@ -265,16 +274,7 @@ mod tests {
     #[test]
     fn registers_read_back_what_was_written_under_the_strobes() {
         let mut h = Host::new();
-        assert_eq!(
-            h.read(Reg::Id as u32),
-            (
-                u32::from_be_bytes(
-                    *b"EP
-"
-                ),
-                OKAY
-            )
-        );
+        assert_eq!(h.read(Reg::Id as u32), (u32::from_be_bytes([b'E', b'P', 2, 10]), OKAY));
         assert_eq!(h.write(Reg::VbAddr as u32, 0x1234_5678, 0xf), OKAY);
         assert_eq!(h.write(Reg::VbAddr as u32, 0xaabb_ccdd, 0b0101), OKAY);
         assert_eq!(h.read(Reg::VbAddr as u32), (0x12bb_56dd, OKAY));
@@ -283,7 +283,7 @@ mod tests {
         // Read-only registers ignore writes; addresses outside the map answer SLVERR.
         assert_eq!(h.write(Reg::Id as u32, 0, 0xf), OKAY);
         assert_eq!(h.read(Reg::Id as u32).0, id(10));
-        assert_eq!(h.write(0x2c, 1, 0xf), SLVERR);
+        assert_eq!(h.write(0x30, 1, 0xf), SLVERR);
         assert_eq!(h.read(0x3c), (0, SLVERR));
         h.status = 0x5a5;
         assert_eq!(h.read(Reg::Status as u32), (0x5a5, OKAY));

@@ -86,6 +86,28 @@ pub struct VertexBuffer {
     pub vertices: Vec<VertexRecord>,
 }
 
+/// Triangles of hardware words as a `width` x `height` trilist: each word's value exactly,
+/// w chosen so that `input::to_fixed` at `f` gives back the `inv_w` words (none when every
+/// one is 1), so that every engine draws these words.
+pub fn words_trilist(f: &Formats, width: u32, height: u32, triangles: &[[Vtx; 3]]) -> Trilist {
+    let one = 1i128 << f.inv_w.frac;
+    let all_one = triangles.iter().all(|t| t.iter().all(|v| v.iw == one));
+    let triangles = triangles
+        .iter()
+        .map(|tri| {
+            tri.map(|v| {
+                let c = v.c.map(|c| f.color.to_f64(c));
+                let mut out = Vertex::new(f.xy.to_f64(v.x), f.xy.to_f64(v.y), f.z.to_f64(v.z), c);
+                if !all_one {
+                    out.w = Some(w_for(f.inv_w.to_f64(v.iw)));
+                }
+                out
+            })
+        })
+        .collect();
+    Trilist { width, height, triangles }
+}
+
 /// Why bytes are not a vertex buffer: the offset of the offending bytes and the rule.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct DecodeError {
@@ -247,24 +269,7 @@ impl VertexBuffer {
     /// `input::to_fixed` gives back the buffer's `inv_w` words (none when every one is 1),
     /// so that every engine draws the buffer's words.
     pub fn to_trilist(&self) -> Trilist {
-        let f = &self.build.formats;
-        let one = 1i128 << f.inv_w.frac;
-        let all_one = self.triangles.iter().all(|t| t.iw == [one; 3]);
-        let triangles = self
-            .hardware_triangles()
-            .iter()
-            .map(|tri| {
-                tri.map(|v| {
-                    let c = v.c.map(|c| f.color.to_f64(c));
-                    let mut out = Vertex::new(f.xy.to_f64(v.x), f.xy.to_f64(v.y), f.z.to_f64(v.z), c);
-                    if !all_one {
-                        out.w = Some(w_for(f.inv_w.to_f64(v.iw)));
-                    }
-                    out
-                })
-            })
-            .collect();
-        Trilist { width: self.width, height: self.height, triangles }
+        words_trilist(&self.build.formats, self.width, self.height, &self.hardware_triangles())
     }
 
     /// The buffer's bytes.
@@ -401,6 +406,9 @@ pub enum Fault {
     Bus = 10,
     /// The buffer's address is not on a record boundary (the command parser only).
     Address = 11,
+    /// The header's screen is larger than the buffers the host gave the core (the command
+    /// parser only: its `screen` input).
+    Screen = 12,
 }
 
 /// What the header says.

@@ -165,7 +165,8 @@ fn the_default_vertex_cache_holds_a_row_of_the_dense_torus() {
 }
 
 /// Each class of broken rule stops the parser with its code within 200 cycles, every read
-/// inside the buffer.
+/// inside the buffer; so do a buffer for another build, off a record boundary, longer than
+/// the memory, and a screen larger than the `screen` input.
 #[test]
 fn broken_buffers_stop_with_their_error_code() {
     let vb = broken::fan();
@@ -186,6 +187,20 @@ fn broken_buffers_stop_with_their_error_code() {
     let r = run(Params::default(), build, &good[..good.len() - RECORD_BYTES], Bench::default()).expect("parameters");
     assert_eq!(r.outcome, Outcome::Fault(Fault::Bus));
     assert!(r.reads_outside > 0);
+    // The fan's 16 x 16 screen on buffers one pixel narrower, or one row shorter, is
+    // refused after the header, before any other read; on buffers of exactly 16 x 16 it
+    // draws.
+    for (screen, outcome) in [
+        ([15, 16], Outcome::Fault(Fault::Screen)),
+        ([16, 15], Outcome::Fault(Fault::Screen)),
+        ([16, 16], Outcome::FrameDone),
+    ] {
+        let r = run(Params::default(), build, &good, Bench { screen, ..Bench::default() }).expect("parameters");
+        assert_eq!(r.outcome, outcome, "buffers of {screen:?}");
+        if r.outcome != Outcome::FrameDone {
+            assert_eq!((r.reads.len(), r.triangles.len()), (1, 0), "only the header read");
+        }
+    }
 }
 
 /// Random edits of the fan's buffer, at random latencies and stalls: the parser always

@@ -134,13 +134,15 @@ impl Logic for WordIs {
 }
 
 /// The header's rules (`vertex_buffer::read_header` for this hardware, then the parser's
-/// own: its bytes from `base` stay below 2^32): `fault` is the first broken rule's
-/// `Fault` code, 0 for none.
+/// own: its bytes from `base` stay below 2^32, its screen inside `max_width` x
+/// `max_height`): `fault` is the first broken rule's `Fault` code, 0 for none.
 #[derive(LogicBlock)]
 pub struct HeaderCheck {
     /// The header's words.
     pub h: [Signal<In, Bits<32>>; WORDS],
     pub base: Signal<In, Bits<32>>,
+    pub max_width: Signal<In, Bits<16>>,
+    pub max_height: Signal<In, Bits<16>>,
     pub fault: Signal<Out, Bits<4>>,
     magic: WordIs,
     size_class: WordIs,
@@ -172,6 +174,8 @@ impl Default for HeaderCheck {
         HeaderCheck {
             h: defaults(),
             base: Default::default(),
+            max_width: Default::default(),
+            max_height: Default::default(),
             fault: Default::default(),
             magic: WordIs::new(u32::from_le_bytes(MAGIC)),
             size_class: WordIs::new(CLASS),
@@ -240,8 +244,12 @@ impl Logic for HeaderCheck {
                 & (self.index_at.val() < self.vertex_end.val())
                 & (self.vertex_at.val() < self.index_end.val()))
             | ((bit_cast::<33, 32>(self.base.val()) + bit_cast::<33, 32>(self.h[8].val())) > self.two_32.val());
-        // The first rule broken wins: magic, version, flags and reserved bytes, build, layout.
+        // The first rule broken wins: magic, version, flags and reserved bytes, build,
+        // layout, the screen on the host's buffers.
         self.fault.next = 0.into();
+        if (self.width.val() > self.max_width.val()) | (self.height.val() > self.max_height.val()) {
+            self.fault.next = 12.into();
+        }
         if self.layout_bad.val() {
             self.fault.next = 5.into();
         }
@@ -410,6 +418,10 @@ pub struct CommandParser<const CB: usize, const G: usize> {
     /// Start reading the buffer at `address` (taken in INIT and Error).
     pub start: Signal<In, Bit>,
     pub address: Signal<In, Bits<32>>,
+    /// The largest screen the host's colour and depth buffers hold: a header asking for
+    /// more stops the parser (`Fault::Screen`).
+    pub max_width: Signal<In, Bits<16>>,
+    pub max_height: Signal<In, Bits<16>>,
     pub bus: ReadMaster,
     /// The triangles, to the rasterizer.
     pub out: ParsedSource,
@@ -527,6 +539,8 @@ impl<const CB: usize, const G: usize> CommandParser<CB, G> {
             clock: Default::default(),
             start: Default::default(),
             address: Default::default(),
+            max_width: Default::default(),
+            max_height: Default::default(),
             bus: Default::default(),
             out: Default::default(),
             render_valid: Default::default(),
@@ -694,6 +708,8 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
             self.header_check.h[i].next = self.w[i].q.val();
         }
         self.header_check.base.next = self.base.q.val();
+        self.header_check.max_width.next = self.max_width.val();
+        self.header_check.max_height.next = self.max_height.val();
         for i in 0..RECORD {
             self.index_check.r[i].next = self.w[i + 16].q.val();
             self.vertex_check.r[i].next = self.w[i + 16].q.val();
@@ -1063,7 +1079,7 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
 
 crate::pins!(impl[const CB: usize, const G: usize] CommandParser<CB, G> {
     clock: clock,
-    inputs: [start, address],
+    inputs: [start, address, max_width, max_height],
     outputs: [render_valid, width, height, cull_back, background, state, fault, frame_done, buffer_done],
     links: [bus, out],
 });

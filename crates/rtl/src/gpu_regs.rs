@@ -51,6 +51,8 @@ pub struct GpuRegs {
     pub color_pitch: Signal<Out, Bits<16>>,
     pub depth_base: Signal<Out, Bits<32>>,
     pub depth_pitch: Signal<Out, Bits<16>>,
+    /// `SCREEN`: the buffers' width (bits 0-15) and height (16-31) in pixels.
+    pub screen: Signal<Out, Bits<32>>,
     /// `CONTROL`'s CLEAR (bit 1) and IRQ_EN (bit 2); bit 0 stays 0.
     control: DFF<Bits<3>>,
     vb: DFF<Bits<32>>,
@@ -58,6 +60,7 @@ pub struct GpuRegs {
     cpitch: DFF<Bits<16>>,
     zbase: DFF<Bits<32>>,
     zpitch: DFF<Bits<16>>,
+    screen_r: DFF<Bits<32>>,
     start_r: DFF<Bit>,
     pending: DFF<Bit>,
     b_valid: DFF<Bit>,
@@ -79,8 +82,8 @@ impl Logic for GpuRegs {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, control, vb, cbase, cpitch, zbase, zpitch, start_r, pending, b_valid, b_resp, r_valid,
-            r_data, r_resp
+            self, clock, control, vb, cbase, cpitch, zbase, zpitch, screen_r, start_r, pending, b_valid, b_resp,
+            r_valid, r_data, r_resp
         );
         self.start.next = self.start_r.q.val();
         self.clear.next = self.control.q.val().get_bit(1);
@@ -90,6 +93,7 @@ impl Logic for GpuRegs {
         self.color_pitch.next = self.cpitch.q.val();
         self.depth_base.next = self.zbase.q.val();
         self.depth_pitch.next = self.zpitch.q.val();
+        self.screen.next = self.screen_r.q.val();
         self.host.b_valid.next = self.b_valid.q.val();
         self.host.b_resp.next = self.b_resp.q.val();
         self.host.r_valid.next = self.r_valid.q.val();
@@ -117,7 +121,7 @@ impl Logic for GpuRegs {
         if self.write.val() {
             self.b_valid.d.next = true;
             self.b_resp.d.next = 0.into();
-            if self.wi.val() > 10 {
+            if self.wi.val() > 11 {
                 self.b_resp.d.next = 2.into();
             }
             if self.wi.val() == 1 {
@@ -150,6 +154,10 @@ impl Logic for GpuRegs {
                 self.merged.next = (bit_cast::<32, 16>(self.zpitch.q.val()) & !self.mask.val())
                     | (self.host.w_data.val() & self.mask.val());
                 self.zpitch.d.next = self.merged.val().get_bits::<16>(0);
+            }
+            if self.wi.val() == 11 {
+                self.screen_r.d.next =
+                    (self.screen_r.q.val() & !self.mask.val()) | (self.host.w_data.val() & self.mask.val());
             }
         }
 
@@ -195,7 +203,10 @@ impl Logic for GpuRegs {
             if self.ri.val() == 10 {
                 self.r_data.d.next = self.triangles.val();
             }
-            if self.ri.val() > 10 {
+            if self.ri.val() == 11 {
+                self.r_data.d.next = self.screen_r.q.val();
+            }
+            if self.ri.val() > 11 {
                 self.r_resp.d.next = 2.into();
             }
         }
@@ -205,7 +216,7 @@ impl Logic for GpuRegs {
 crate::pins!(GpuRegs {
     clock: clock,
     inputs: [status, frame_cycles, triangles, done],
-    outputs: [start, clear, irq, vb_addr, color_base, color_pitch, depth_base, depth_pitch],
+    outputs: [start, clear, irq, vb_addr, color_base, color_pitch, depth_base, depth_pitch, screen],
     links: [host],
 });
 

@@ -5,7 +5,9 @@
 //! the pixels into system memory on AXI4 (`pixel_bus`).
 //!
 //! **A frame.** Writing START (`CONTROL` bit 0) while idle starts the parser at `VB_ADDR`.
-//! When the header has passed its checks, its screen, back-face flag and background become
+//! The parser refuses a header whose screen the buffers do not hold (`SCREEN`, and the
+//! pitches at 4 bytes a pixel; fault `SCREEN`), so no buffer makes the core write outside
+//! them. When the header has passed its checks, its screen, back-face flag and background become
 //! the rasterizer's and `pixel_bus`'s, and `pixel_bus` starts (clearing the buffers first
 //! when CLEAR is set; triangles wait meanwhile). The parser's triangles go to `cull_sort` as
 //! they come. The frame ends when the parser has ended (the buffer's last triangle, or an
@@ -68,6 +70,10 @@ pub struct GpuTop {
     rg: Concat<8, 8, 16>,
     rgb: Concat<16, 8, 24>,
     background: DFF<Bits<24>>,
+    /// The widest screen the buffers hold: `SCREEN`'s width, and each pitch's pixels.
+    max_width: Signal<Local, Bits<16>>,
+    color_row: Signal<Local, Bits<16>>,
+    depth_row: Signal<Local, Bits<16>>,
     done: Signal<Local, Bit>,
     status: Signal<Local, Bits<32>>,
 }
@@ -100,6 +106,18 @@ impl Logic for GpuTop {
         // The frame: START while idle starts the parser.
         self.parser.start.next = self.regs.start.val() & !self.busy.q.val();
         self.parser.address.next = self.regs.vb_addr.val();
+        // The screen the buffers hold (`model::gpu_top::screen_limit`).
+        self.color_row.next = bit_cast::<16, 14>(self.regs.color_pitch.val().get_bits::<14>(2));
+        self.depth_row.next = bit_cast::<16, 14>(self.regs.depth_pitch.val().get_bits::<14>(2));
+        self.max_width.next = self.regs.screen.val().get_bits::<16>(0);
+        if self.color_row.val() < self.max_width.val() {
+            self.max_width.next = self.color_row.val();
+        }
+        if self.depth_row.val() < self.max_width.val() {
+            self.max_width.next = self.depth_row.val();
+        }
+        self.parser.max_width.next = self.max_width.val();
+        self.parser.max_height.next = self.regs.screen.val().get_bits::<16>(16);
         if self.busy.q.val() {
             self.cycles.d.next = self.cycles.q.val() + 1;
         }

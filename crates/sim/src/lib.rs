@@ -5,7 +5,9 @@
 //! * [`VlSim`] runs a unit's emitted Verilog under Verilator, in-process; [`Verilated`]
 //!   builds the model (cached by content under `<target>/verilator/`).
 //! * [`frame`] draws whole frames through `raster_top` with the depth and colour buffers
-//!   in Rust ([`memory`]); [`streams`] moves the model's transactions to and from ports.
+//!   in Rust ([`memory`]); [`soc`] draws them through `gpu_top` from a vertex buffer, with
+//!   the buffers behind its AXI4 masters and a host on its registers; [`streams`] moves
+//!   the model's transactions to and from ports.
 //!
 //! A unit plugs in through `rtl::sim::Pins` (its pins by Verilog name, values as
 //! [`Value`]s of any width, so >64-bit ports work) and `rtl::emit::ports` (the port list,
@@ -13,6 +15,7 @@
 
 pub mod frame;
 pub mod memory;
+pub mod soc;
 pub mod streams;
 pub mod verilator;
 
