@@ -200,14 +200,16 @@ fn frame_time(summary: &str) -> (u64, f64, f64, String) {
     (cycles, ms.parse().unwrap(), mhz.parse().unwrap(), source.to_string())
 }
 
-/// `render --engine rtl` gives the frame's time beside its cycles: at the default design,
-/// at raster_top's routed ECP5 clock (`sweep::clock::PIPELINE_MHZ`), cycles / MHz.
+/// `render --engine rtl --top raster_top` gives the frame's time beside its cycles: at the
+/// default design, at raster_top's routed ECP5 clock (`sweep::clock::PIPELINE_MHZ`), cycles /
+/// MHz.
 #[test]
 fn cli_render_rtl_reports_the_frame_time_at_the_routed_clock() {
     let d = scratch("rtl-frame-time");
     let png = d.join("rtl.png");
     let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
-    let out = edgepaint(&["render", cube, "--size", "64x48", "--engine", "rtl", "-o", png.to_str().unwrap()]);
+    let args = ["render", cube, "--size", "64x48", "--engine", "rtl", "--top", "raster_top", "-o"];
+    let out = edgepaint(&[&args[..], &[png.to_str().unwrap()]].concat());
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let (cycles, ms, mhz, source) = frame_time(&stdout);
@@ -215,6 +217,40 @@ fn cli_render_rtl_reports_the_frame_time_at_the_routed_clock() {
     assert_eq!((mhz, source.as_str()), (sweep::clock::PIPELINE_MHZ, "routed, ECP5"), "{stdout}");
     let want = cycles as f64 / (sweep::clock::PIPELINE_MHZ * 1000.0);
     assert!((ms - want).abs() <= 0.0005 + 1e-12, "{ms} ms reported, {cycles} cycles at {mhz} MHz are {want} ms");
+}
+
+/// `render --engine rtl` draws through `gpu_top` by default: the scene packed into a vertex
+/// buffer in memory, the core driven through its registers; its PNG is the scanline
+/// model's and `raster_top`'s, its summary gives the bus traffic and the frame's cycles
+/// from START to the interrupt (the clear's pixel writes among them). `--top gpu_top` where
+/// gpu_top does not apply, and `--top` without `--engine rtl`, are clear errors.
+#[test]
+fn cli_render_rtl_draws_through_gpu_top() {
+    let d = scratch("rtl-gpu-top");
+    let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
+    let render = |name: &str, more: &[&str]| {
+        let png = d.join(name);
+        let args = [&["render", cube, "--size", "64x48", "-o", png.to_str().unwrap()][..], more].concat();
+        let out = edgepaint(&args);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        (std::fs::read(&png).unwrap(), String::from_utf8_lossy(&out.stdout).to_string())
+    };
+    let (gpu, summary) = render("gpu.png", &["--engine", "rtl"]);
+    assert!(summary.contains("rtl (gpu_top of size class 10"), "{summary}");
+    assert!(summary.contains("STATUS, TRIANGLES, image and depth equal to model::gpu_top's"), "{summary}");
+    assert!(summary.contains("3072 each among them"), "the clear of 64 x 48: {summary}");
+    let cycles: u64 = summary.split(" cycles from START").next().unwrap().rsplit(' ').next().unwrap().parse().unwrap();
+    assert!(cycles > 3072, "{summary}");
+    let (scan, _) = render("scan.png", &["--engine", "scanline"]);
+    let (raster, _) = render("raster.png", &["--engine", "rtl", "--top", "raster_top"]);
+    assert!(gpu == scan && raster == scan, "gpu_top's, raster_top's and the model's PNG are one");
+    let png = d.join("x.png");
+    let o = png.to_str().unwrap();
+    let base = ["render", cube, "--size", "64x48", "-o", o, "--engine", "rtl", "--top", "gpu_top"];
+    fails_with(&[&base[..], &["--param", "K=3"]].concat(), &["--top gpu_top", "--param K", "--top raster_top"]);
+    let custom = concat!(env!("CARGO_MANIFEST_DIR"), "/crates/rtl/custom-formats.json");
+    fails_with(&[&base[..], &["--formats", custom]].concat(), &["--top gpu_top", "default formats"]);
+    fails_with(&["render", cube, "-o", o, "--top", "gpu_top"], &["--top", "needs --engine rtl"]);
 }
 
 /// Formats other than a size class's defaults: `emit --formats` writes the scanline units
@@ -438,7 +474,8 @@ fn cli_fit_and_render_param_errors_are_clear() {
 
 /// `pack` writes a scene's vertex buffer (shared vertices once), `inspect` prints it, and
 /// `render` draws it: the scanline model's image of the buffer is the scene's, pixel for
-/// pixel (the same words), and `--engine rtl` draws it equal to the model. Broken buffers
+/// pixel (the same words), and `--engine rtl` draws the file's bytes through `gpu_top`
+/// equal to the model. Broken buffers
 /// and arguments are clear errors naming the file.
 #[test]
 fn cli_packs_inspects_and_renders_a_vertex_buffer() {
@@ -477,7 +514,11 @@ fn cli_packs_inspects_and_renders_a_vertex_buffer() {
     render(vb_s, &b, "scanline");
     assert_eq!(image::open(&a).unwrap().to_rgb8(), image::open(&b).unwrap().to_rgb8(), "the same words draw the same");
     let rtl = render(vb_s, &d.join("rtl.png"), "rtl");
-    assert!(rtl.contains("image, depth and cycles equal to the scanline model's"), "{rtl}");
+    assert!(
+        rtl.contains(&format!("gpu_top of size class 10, in Verilator, from a vertex buffer of {} bytes", bytes.len())),
+        "{rtl}"
+    );
+    assert!(rtl.contains("equal to model::gpu_top's"), "{rtl}");
     assert_eq!(image::open(d.join("rtl.png")).unwrap().to_rgb8(), image::open(&b).unwrap().to_rgb8());
 
     let png = d.join("x.png");

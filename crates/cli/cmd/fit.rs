@@ -123,7 +123,7 @@ pub fn run(args: Args) -> Result<()> {
         std::fs::create_dir_all(&dir).with_context(|| format!("{}: cannot create", dir.display()))?;
         for (input, file) in inputs.iter().zip(&args.inputs) {
             let png = dir.join(format!("{}.png", input.name));
-            let mut more = [&["--engine", "rtl", "-o", path(&png)?][..], &param_args].concat();
+            let mut more = [&["--engine", "rtl", "--top", "raster_top", "-o", path(&png)?][..], &param_args].concat();
             let size = args.size.map(|s| format!("{}x{}", s.width, s.height));
             if let Some(s) = &size {
                 more.extend(["--size", s]);

@@ -32,6 +32,8 @@ pub struct Loaded {
     /// A vertex buffer's build (size class and formats): its words are at these formats,
     /// and its triangles (`trilist`) hold their values exactly.
     pub build: Option<Build>,
+    /// A vertex buffer's bytes, as `render --engine rtl` hands them to `gpu_top`.
+    pub bytes: Option<Vec<u8>>,
 }
 
 /// Whether `path` starts as a vertex buffer does (`model::vertex_buffer::MAGIC`).
@@ -43,8 +45,14 @@ fn is_vertex_buffer(path: &Path) -> bool {
 
 /// Reads the vertex buffer `path`; the error names the file, the offset and the rule.
 pub fn vertex_buffer(path: &Path) -> Result<VertexBuffer> {
+    Ok(vertex_buffer_bytes(path)?.0)
+}
+
+/// [`vertex_buffer`], with the file's bytes.
+fn vertex_buffer_bytes(path: &Path) -> Result<(VertexBuffer, Vec<u8>)> {
     let bytes = std::fs::read(path).with_context(|| format!("{}: cannot read the vertex buffer", path.display()))?;
-    VertexBuffer::decode(&bytes).map_err(|e| anyhow!("{}: {e}", path.display()))
+    let vb = VertexBuffer::decode(&bytes).map_err(|e| anyhow!("{}: {e}", path.display()))?;
+    Ok((vb, bytes))
 }
 
 /// Loads a scene (running the geometry stage), a trilist or a vertex buffer (told apart
@@ -52,12 +60,13 @@ pub fn vertex_buffer(path: &Path) -> Result<VertexBuffer> {
 /// buffer's coordinates are fixed, so they cannot be resized.
 pub fn load(path: &Path, size: Option<Size>) -> Result<Loaded> {
     if is_vertex_buffer(path) {
-        let vb = vertex_buffer(path)?;
+        let (vb, bytes) = vertex_buffer_bytes(path)?;
         if size.is_some() {
             bail!("{}: --size applies to scenes; a vertex buffer's coordinates are already in pixels", path.display());
         }
         let background = vb.background.map(f64::from);
-        return Ok(Loaded { trilist: vb.to_trilist(), background, cull_back: vb.cull_back, build: Some(vb.build) });
+        let (trilist, cull_back, build) = (vb.to_trilist(), vb.cull_back, Some(vb.build));
+        return Ok(Loaded { trilist, background, cull_back, build, bytes: Some(bytes) });
     }
     match Input::load(path)? {
         Input::Scene(s) => {
@@ -66,13 +75,13 @@ pub fn load(path: &Path, size: Option<Size>) -> Result<Loaded> {
                 None => *s,
             };
             let trilist = s.to_trilist().map_err(|e| e.in_file(path))?;
-            Ok(Loaded { trilist, background: s.background, cull_back: s.cull_back, build: None })
+            Ok(Loaded { trilist, background: s.background, cull_back: s.cull_back, build: None, bytes: None })
         }
         Input::Trilist(t) => {
             if size.is_some() {
                 bail!("{}: --size applies to scenes; a trilist's coordinates are already in pixels", path.display());
             }
-            Ok(Loaded { trilist: t, background: [0.0; 3], cull_back: false, build: None })
+            Ok(Loaded { trilist: t, background: [0.0; 3], cull_back: false, build: None, bytes: None })
         }
     }
 }

@@ -48,6 +48,12 @@ pub struct Args {
     /// screen's) or an optional part's switch (`CLIP_Y=0`, ...: `rtl::switch`, README "Fit"); repeatable.
     #[arg(long = "param", value_name = "NAME=VALUE", value_parser = super::emit::parse_param)]
     params: Vec<(String, u64)>,
+    /// `--engine rtl`: the top that draws: `gpu_top` (the scene packed into a vertex buffer
+    /// in memory, the core driven through its registers and bus ports; the default build
+    /// only, no --param) or `raster_top` (triangles on the scanline pipeline's ports; any
+    /// size class, formats and --param). Default: gpu_top where it applies.
+    #[arg(long, value_enum)]
+    top: Option<super::rtl::Top>,
 }
 
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -93,9 +99,13 @@ pub fn run(args: Args) -> Result<()> {
         args.params.is_empty() || args.engine == Engine::Rtl,
         "--param sets raster_top's parameters: it needs --engine rtl"
     );
+    anyhow::ensure!(
+        args.top.is_none() || args.engine == Engine::Rtl,
+        "--top picks the RTL's top: it needs --engine rtl"
+    );
     let (image, summary) = match args.fixed.method(args.engine, perspective)? {
         _ if args.engine == Engine::Rtl => {
-            match super::rtl::render(&loaded, cull_back, &args.fixed, args.analysis, &args.params)? {
+            match super::rtl::render(&loaded, cull_back, &args.fixed, args.analysis, &args.params, args.top)? {
                 Some(drawn) => drawn,
                 None => return Ok(()), // drawn by an edgepaint compiled at --formats
             }

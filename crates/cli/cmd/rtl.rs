@@ -1,6 +1,16 @@
-//! `render --engine rtl`: a whole frame through the RTL of the scanline pipeline
-//! (`raster_top`) under Verilator, with the depth and colour buffers in Rust
-//! (`sim::frame`). The `raster_top` of the screen's size class draws it
+//! `render --engine rtl`: a whole frame through the RTL under Verilator, by one of two tops
+//! (`--top`).
+//!
+//! **`gpu_top`** (the default where it applies: the default build, no `--param`): the
+//! frame as a system draws it. The input is packed into a vertex buffer (a `.vb` input is
+//! used as it is), put in a memory behind `gpu_top`'s AXI4 read master, the depth and
+//! colour buffers in memories behind its other masters, and a host drives the registers
+//! through the README's sequence (`sim::soc`): START with CLEAR, to the interrupt, then
+//! `STATUS`, `FRAME_CYCLES` and `TRIANGLES`. The image is read out of the colour memory and
+//! checked against `model::gpu_top`'s frame, bit for bit, as is `STATUS`.
+//!
+//! **`raster_top`**: triangles on the scanline pipeline's ports, with the depth and colour
+//! buffers in Rust (`sim::frame`). The `raster_top` of the screen's size class draws it
 //! (`fx::Build::for_screen`: class 10 up to 1024 x 1024, 11 and 12 above) at the
 //! formats asked for (`--formats`; formats edgepaint is not built at are compiled first,
 //! `super::rebuild`). The Verilated model is built the first time, cached under
@@ -16,13 +26,27 @@ use anyhow::{anyhow, bail, ensure, Result};
 use fx::Build;
 use model::cull_sort::Cull;
 use model::cycles::Timing;
+use model::pixel_bus::color_word;
 use sim::frame::{self, Frame, MemoryModel, Report};
 use sim::memory::ReadDuringWrite;
+use sim::soc::{Pace, Soc, VB_BASE};
 use std::time::Instant;
 use sweep::area::Design;
 use sweep::row::Source;
 
-/// Draws `loaded` (its formats: `FixedArgs::formats_of`) through `raster_top`; returns the image and the summary line with its
+/// The top `render --engine rtl` draws through.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Top {
+    /// The core from a vertex buffer in memory, through its bus ports and registers.
+    #[value(name = "gpu_top")]
+    GpuTop,
+    /// The scanline pipeline, triangles on its ports.
+    #[value(name = "raster_top")]
+    RasterTop,
+}
+
+/// Draws `loaded` (its formats: `FixedArgs::formats_of`) through `top` (None: `gpu_top`
+/// where it applies, else `raster_top`); returns the image and the summary line with its
 /// fragment count, or `None` when an edgepaint compiled at the formats asked for drew it.
 pub fn render(
     loaded: &Loaded,
@@ -30,9 +54,24 @@ pub fn render(
     fixed: &FixedArgs,
     analysis: bool,
     params: &[(String, u64)],
+    top: Option<Top>,
 ) -> Result<Option<(Image, (String, u64))>> {
     ensure!(!analysis, "--analysis checks the models' arithmetic; it does not apply to --engine rtl");
     let list = &loaded.trilist;
+    let default_build = loaded.build.unwrap_or(Build::for_screen(list.width, list.height)) == Build::default()
+        && fixed.formats_of(loaded)? == Build::default().formats;
+    let gpu_top_why_not = match (params.first(), default_build) {
+        (Some((name, _)), _) => Some(format!("--param {name} sets raster_top's parameters")),
+        (None, false) => {
+            Some(format!("gpu_top is built at size class {} and its default formats only", Build::default().class))
+        }
+        (None, true) => None,
+    };
+    match (top, gpu_top_why_not) {
+        (Some(Top::GpuTop) | None, None) => return gpu_top(loaded, cull_back).map(Some),
+        (Some(Top::GpuTop), Some(why)) => bail!("--top gpu_top: {why}; draw with --top raster_top"),
+        _ => {}
+    }
     let mut timing = Timing::default();
     let mut class = loaded.build.unwrap_or(Build::for_screen(list.width, list.height)).class;
     let mut parts = Vec::new();
@@ -131,4 +170,87 @@ pub fn render(
         written: m.written,
     };
     Ok(Some((image, (summary, r.fragments))))
+}
+
+/// `--top gpu_top`: `loaded` packed into a vertex buffer (a vertex buffer's own bytes when
+/// its back-face flag is the one asked for) and drawn by `gpu_top` in Verilator as a host
+/// drives it (`sim::soc`), on buffers of the screen's size; `STATUS`, `TRIANGLES` and both
+/// buffers checked against `model::gpu_top::run`.
+fn gpu_top(loaded: &Loaded, cull_back: bool) -> Result<(Image, (String, u64))> {
+    let list = &loaded.trilist;
+    let build = Build::default();
+    let background = loaded.background.map(|c| c.round().clamp(0.0, 255.0) as u8);
+    let bytes = match (&loaded.bytes, loaded.cull_back == cull_back) {
+        (Some(bytes), true) => bytes.clone(),
+        _ => {
+            let (vb, skipped) = model::vertex_buffer::pack(list, &build, cull_back, background)
+                .map_err(|e| anyhow!("--engine rtl: packing the vertex buffer: {e}"))?;
+            for (i, e) in skipped.iter().take(5) {
+                eprintln!("warning: triangle {i} not drawn: {e}");
+            }
+            vb.encode()
+        }
+    };
+    let (width, height) = (list.width, list.height);
+    let cull = if cull_back { Cull::Back } else { Cull::None };
+    let prep =
+        model::raster_top::raster_top(&build, list, cull, background).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    // Generous: every cycle of the unbuffered frame, the clear, and the parser's reads.
+    let limit = 4 * prep.cycles() + 4 * u64::from(width * height) + 100 * bytes.len() as u64 + 100_000;
+    let model =
+        model::gpu_top::run(&bytes, VB_BASE, [width, height], limit).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let step = sim::soc::verilator().map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let mut soc = Soc::new(step, &bytes, (width, height), Pace::at_once());
+    let start = Instant::now();
+    let end = soc.frame(true, limit).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let secs = start.elapsed().as_secs_f64();
+    ensure!(
+        end.status & 0x1ff == model.status && end.triangles == model.triangles,
+        "gpu_top ended with STATUS {:#x} after {} triangles, its model with {:#x} after {}: a bug in the RTL or the model",
+        end.status,
+        end.triangles,
+        model.status,
+        model.triangles
+    );
+    ensure!(end.status & 0x1ff == 0, "gpu_top stopped the frame: STATUS {:#x} (README, \"gpu_top\")", end.status);
+    let frame = model.drawn.map(|d| d.2).ok_or_else(|| anyhow!("gpu_top: the header was not taken"))?;
+    if let Some(i) =
+        (0..frame.color.len()).find(|&i| (soc.color.words[i], soc.depth.words[i]) != (frame.color[i], frame.depth[i]))
+    {
+        bail!(
+            "gpu_top's buffers differ from its model's at pixel ({}, {}): a bug in the RTL or the model",
+            i as u32 % width,
+            i as u32 / width
+        );
+    }
+    let fb = &prep.render.fb;
+    debug_assert!(fb.rgb.iter().map(|&c| color_word(c)).eq(frame.color.iter().copied()));
+    let rgb = soc.color.words.iter().map(|&w| [(w >> 16) as u8, (w >> 8) as u8, w as u8]).collect();
+    let z = build.formats.z.frac;
+    let depth16 = soc.depth.words.iter().map(|&d| depth16(d, z)).collect();
+    let image = Image { width, height, rgb, depth16, written: fb.written.clone() };
+    let direct = prep.cycles();
+    let (mhz, slowest) = sweep::clock::gpu_top_mhz();
+    let fetches = soc.vb.requests.len();
+    let summary = format!(
+        "rtl (gpu_top of size class {}, in Verilator, from a vertex buffer of {} bytes in memory, driven through its \
+         registers): {} triangles read, {} drawn; {} bursts read from the vertex buffer; {} depth and {} colour \
+         writes (the clear's {} each among them); {} cycles from START to the interrupt ({} for \
+         raster_top fed the triangles directly, without the clear), frame time {:.3} ms at {mhz:.1} MHz (at most: \
+         {slowest} routed alone; gpu_top is not routed yet); {:.0} cycles/s simulated ({secs:.2} s); STATUS, \
+         TRIANGLES, image and depth equal to model::gpu_top's",
+        build.class,
+        bytes.len(),
+        end.triangles,
+        prep.sorted.len(),
+        fetches,
+        soc.depth.written.len(),
+        soc.color.written.len(),
+        width * height,
+        end.cycles,
+        direct,
+        f64::from(end.cycles) / (mhz * 1000.0),
+        soc.cycle as f64 / secs,
+    );
+    Ok((image, (summary, prep.fragments.iter().sum::<usize>() as u64)))
 }
