@@ -16,7 +16,7 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
     output reg  [1:0] bus$ar_burst;
     input wire  bus$r_valid;
     output reg  bus$r_ready;
-    input wire  [63:0] bus$r_data;
+    input wire  [127:0] bus$r_data;
     input wire  [1:0] bus$r_resp;
     output reg  out$valid;
     input wire  out$ready;
@@ -234,6 +234,36 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
     reg  rec_eof$d;
     wire  rec_eof$q;
     reg  rec_eof$clock;
+    reg  ahead_valid$d;
+    wire  ahead_valid$q;
+    reg  ahead_valid$clock;
+    reg  [3:0] ahead_fault$d;
+    wire  [3:0] ahead_fault$q;
+    reg  ahead_fault$clock;
+    reg  [31:0] ahead_v$0$d;
+    wire  [31:0] ahead_v$0$q;
+    reg  ahead_v$0$clock;
+    reg  [31:0] ahead_v$1$d;
+    wire  [31:0] ahead_v$1$q;
+    reg  ahead_v$1$clock;
+    reg  [31:0] ahead_v$2$d;
+    wire  [31:0] ahead_v$2$q;
+    reg  ahead_v$2$clock;
+    reg  [15:0] ahead_iw$0$d;
+    wire  [15:0] ahead_iw$0$q;
+    reg  ahead_iw$0$clock;
+    reg  [15:0] ahead_iw$1$d;
+    wire  [15:0] ahead_iw$1$q;
+    reg  ahead_iw$1$clock;
+    reg  [15:0] ahead_iw$2$d;
+    wire  [15:0] ahead_iw$2$q;
+    reg  ahead_iw$2$clock;
+    reg  ahead_eob$d;
+    wire  ahead_eob$q;
+    reg  ahead_eob$clock;
+    reg  ahead_eof$d;
+    wire  ahead_eof$q;
+    reg  ahead_eof$clock;
     reg  [1:0] k$d;
     wire  [1:0] k$q;
     reg  k$clock;
@@ -458,6 +488,8 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
     reg  hand;
     reg  vertex_in;
     reg  load_rec;
+    reg  is_ahead;
+    reg  load_ahead;
     reg  [1:0] kn;
     reg  [31:0] v_cur;
     reg  [8:0] slot;
@@ -739,6 +771,56 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
         .d(rec_eof$d),
         .q(rec_eof$q),
         .clock(rec_eof$clock)
+    );
+    command_parser$ahead_valid ahead_valid(
+        .d(ahead_valid$d),
+        .q(ahead_valid$q),
+        .clock(ahead_valid$clock)
+    );
+    command_parser$ahead_fault ahead_fault(
+        .d(ahead_fault$d),
+        .q(ahead_fault$q),
+        .clock(ahead_fault$clock)
+    );
+    command_parser$ahead_v$0 ahead_v$0(
+        .d(ahead_v$0$d),
+        .q(ahead_v$0$q),
+        .clock(ahead_v$0$clock)
+    );
+    command_parser$ahead_v$1 ahead_v$1(
+        .d(ahead_v$1$d),
+        .q(ahead_v$1$q),
+        .clock(ahead_v$1$clock)
+    );
+    command_parser$ahead_v$2 ahead_v$2(
+        .d(ahead_v$2$d),
+        .q(ahead_v$2$q),
+        .clock(ahead_v$2$clock)
+    );
+    command_parser$ahead_iw$0 ahead_iw$0(
+        .d(ahead_iw$0$d),
+        .q(ahead_iw$0$q),
+        .clock(ahead_iw$0$clock)
+    );
+    command_parser$ahead_iw$1 ahead_iw$1(
+        .d(ahead_iw$1$d),
+        .q(ahead_iw$1$q),
+        .clock(ahead_iw$1$clock)
+    );
+    command_parser$ahead_iw$2 ahead_iw$2(
+        .d(ahead_iw$2$d),
+        .q(ahead_iw$2$q),
+        .clock(ahead_iw$2$clock)
+    );
+    command_parser$ahead_eob ahead_eob(
+        .d(ahead_eob$d),
+        .q(ahead_eob$q),
+        .clock(ahead_eob$clock)
+    );
+    command_parser$ahead_eof ahead_eof(
+        .d(ahead_eof$d),
+        .q(ahead_eof$q),
+        .clock(ahead_eof$clock)
     );
     command_parser$k k(
         .d(k$d),
@@ -1089,6 +1171,10 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
         t$clock = clock;
         rec_eob$clock = clock;
         rec_eof$clock = clock;
+        ahead_valid$clock = clock;
+        ahead_fault$clock = clock;
+        ahead_eob$clock = clock;
+        ahead_eof$clock = clock;
         k$clock = clock;
         byp_valid$clock = clock;
         byp_tag$clock = clock;
@@ -1121,6 +1207,10 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
         t$d = t$q;
         rec_eob$d = rec_eob$q;
         rec_eof$d = rec_eof$q;
+        ahead_valid$d = ahead_valid$q;
+        ahead_fault$d = ahead_fault$q;
+        ahead_eob$d = ahead_eob$q;
+        ahead_eof$d = ahead_eof$q;
         k$d = k$q;
         byp_valid$d = byp_valid$q;
         byp_tag$d = byp_tag$q;
@@ -1134,6 +1224,10 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
         rec_v$0$d = rec_v$0$q;
         rec_iw$0$clock = clock;
         rec_iw$0$d = rec_iw$0$q;
+        ahead_v$0$clock = clock;
+        ahead_v$0$d = ahead_v$0$q;
+        ahead_iw$0$clock = clock;
+        ahead_iw$0$d = ahead_iw$0$q;
         asm$0$clock = clock;
         asm$0$d = asm$0$q;
         out_vtx$0$clock = clock;
@@ -1144,6 +1238,10 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
         rec_v$1$d = rec_v$1$q;
         rec_iw$1$clock = clock;
         rec_iw$1$d = rec_iw$1$q;
+        ahead_v$1$clock = clock;
+        ahead_v$1$d = ahead_v$1$q;
+        ahead_iw$1$clock = clock;
+        ahead_iw$1$d = ahead_iw$1$q;
         asm$1$clock = clock;
         asm$1$d = asm$1$q;
         out_vtx$1$clock = clock;
@@ -1154,6 +1252,10 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
         rec_v$2$d = rec_v$2$q;
         rec_iw$2$clock = clock;
         rec_iw$2$d = rec_iw$2$q;
+        ahead_v$2$clock = clock;
+        ahead_v$2$d = ahead_v$2$q;
+        ahead_iw$2$clock = clock;
+        ahead_iw$2$d = ahead_iw$2$q;
         asm$2$clock = clock;
         asm$2$d = asm$2$q;
         out_vtx$2$clock = clock;
@@ -1278,6 +1380,7 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
         vtx_ram$write_clock = clock;
         kn = k$q;
         load_rec = 1'b0;
+        load_ahead = 1'b0;
         vertex_in = 1'b0;
         byp_valid$d = 1'b0;
         header_check$h$0 = w$0$q;
@@ -1323,7 +1426,11 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
         vertex_check$r$6 = w$22$q;
         index_check$r$7 = w$23$q;
         vertex_check$r$7 = w$23$q;
+        is_ahead = st$q != ParserState$TriIndex;
         index_check$t = t$q;
+        if (is_ahead) begin
+            index_check$t = t$q + 32'h1;
+        end
         index_check$triangles = triangles$q;
         index_check$vertices = vertices$q;
         v_cur = rec_v$0$q;
@@ -1460,35 +1567,35 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
             ar_valid$d = 1'b0;
         end
         beat_in = burst$q & bus$r_valid & ~(ar_valid$q & ~bus$ar_ready);
-        last_beat = 32'h3;
+        last_beat = 32'h1;
         if (kind$q == BurstKind$Header) begin
-            last_beat = 32'hb;
+            last_beat = 32'h5;
         end
         if (beat_in) begin
-            w$0$d = w$2$q;
-            w$1$d = w$3$q;
-            w$2$d = w$4$q;
-            w$3$d = w$5$q;
-            w$4$d = w$6$q;
-            w$5$d = w$7$q;
-            w$6$d = w$8$q;
-            w$7$d = w$9$q;
-            w$8$d = w$10$q;
-            w$9$d = w$11$q;
-            w$10$d = w$12$q;
-            w$11$d = w$13$q;
-            w$12$d = w$14$q;
-            w$13$d = w$15$q;
-            w$14$d = w$16$q;
-            w$15$d = w$17$q;
-            w$16$d = w$18$q;
-            w$17$d = w$19$q;
-            w$18$d = w$20$q;
-            w$19$d = w$21$q;
-            w$20$d = w$22$q;
-            w$21$d = w$23$q;
-            w$22$d = bus$r_data[(32'h0)+:(32)];
-            w$23$d = bus$r_data[(32'h20)+:(32)];
+            w$0$d = w$4$q;
+            w$1$d = w$5$q;
+            w$2$d = w$6$q;
+            w$3$d = w$7$q;
+            w$4$d = w$8$q;
+            w$5$d = w$9$q;
+            w$6$d = w$10$q;
+            w$7$d = w$11$q;
+            w$8$d = w$12$q;
+            w$9$d = w$13$q;
+            w$10$d = w$14$q;
+            w$11$d = w$15$q;
+            w$12$d = w$16$q;
+            w$13$d = w$17$q;
+            w$14$d = w$18$q;
+            w$15$d = w$19$q;
+            w$16$d = w$20$q;
+            w$17$d = w$21$q;
+            w$18$d = w$22$q;
+            w$19$d = w$23$q;
+            w$20$d = bus$r_data[(32'h0)+:(32)];
+            w$21$d = bus$r_data[(32'h20)+:(32)];
+            w$22$d = bus$r_data[(32'h40)+:(32)];
+            w$23$d = bus$r_data[(32'h60)+:(32)];
             bus_error$d = bus_error$q | |bus$r_resp;
             beat$d = beat$q + 32'h1;
             if (beat$q == last_beat) begin
@@ -1520,11 +1627,12 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
             ParserState$VertexFetch:
                 begin
                     check = complete$q;
-                    look = ~complete$q & ~burst$q;
+                    look = ~complete$q & ~(burst$q & (kind$q == BurstKind$Vertex));
                 end
             ParserState$CpReady:
                 begin
-                    hand = out_free;
+                    check = complete$q;
+                    hand = out_free & ~complete$q;
                 end
             ParserState$End:
                 begin
@@ -1533,7 +1641,23 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
                     end
                 end
         endcase
-        if (check) begin
+        if (check & (kind$q == BurstKind$Index) & is_ahead) begin
+            bus_error$d = 1'b0;
+            ahead_valid$d = 1'b1;
+            ahead_fault$d = index_check$fault;
+            if (bus_error$q) begin
+                ahead_fault$d = 32'ha;
+            end
+            ahead_v$0$d = w$16$q;
+            ahead_iw$0$d = w$20$q[(32'h0)+:(16)];
+            ahead_v$1$d = w$17$q;
+            ahead_iw$1$d = w$21$q[(32'h0)+:(16)];
+            ahead_v$2$d = w$18$q;
+            ahead_iw$2$d = w$22$q[(32'h0)+:(16)];
+            ahead_eob$d = w$19$q[32'h10];
+            ahead_eof$d = w$19$q[32'h11];
+        end
+        else if (check) begin
             if (bus_error$q) begin
                 bus_error$d = 1'b0;
                 st$d = ParserState$Error;
@@ -1561,7 +1685,7 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
                                     st$d = ParserState$TriIndex;
                                     ar_valid$d = 1'b1;
                                     ar_addr$d = base$q + w$6$q;
-                                    ar_len$d = 32'h3;
+                                    ar_len$d = 32'h1;
                                     burst$d = 1'b1;
                                     kind$d = BurstKind$Index;
                                     beat$d = 32'h0;
@@ -1591,6 +1715,14 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
                                 rec_eof$d = w$19$q[32'h11];
                                 kn = 32'h0;
                                 st$d = ParserState$VertexFetch;
+                                if (~w$19$q[32'h10]) begin
+                                    ar_valid$d = 1'b1;
+                                    ar_addr$d = index_addr$q + 32'h20;
+                                    ar_len$d = 32'h1;
+                                    burst$d = 1'b1;
+                                    kind$d = BurstKind$Index;
+                                    beat$d = 32'h0;
+                                end
                             end
                         end
                     BurstKind$Vertex:
@@ -1713,10 +1845,10 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
                 cur = vtx;
                 vertex_in = 1'b1;
             end
-            else begin
+            else if (~burst$q) begin
                 ar_valid$d = 1'b1;
                 ar_addr$d = vertex_base$q + (v_cur << five);
-                ar_len$d = 32'h3;
+                ar_len$d = 32'h1;
                 burst$d = 1'b1;
                 kind$d = BurstKind$Vertex;
                 beat$d = 32'h0;
@@ -1760,14 +1892,36 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
             end
             else begin
                 t$d = t$q + 32'h1;
-                st$d = ParserState$TriIndex;
                 index_addr$d = index_addr$q + 32'h20;
-                ar_valid$d = 1'b1;
-                ar_addr$d = index_addr$q + 32'h20;
-                ar_len$d = 32'h3;
-                burst$d = 1'b1;
-                kind$d = BurstKind$Index;
-                beat$d = 32'h0;
+                st$d = ParserState$TriIndex;
+                if (ahead_valid$q) begin
+                    ahead_valid$d = 1'b0;
+                    if (|ahead_fault$q) begin
+                        st$d = ParserState$Error;
+                        fault_r$d = ahead_fault$q;
+                    end
+                    else begin
+                        load_ahead = 1'b1;
+                        rec_v$0$d = ahead_v$0$q;
+                        rec_iw$0$d = ahead_iw$0$q;
+                        rec_v$1$d = ahead_v$1$q;
+                        rec_iw$1$d = ahead_iw$1$q;
+                        rec_v$2$d = ahead_v$2$q;
+                        rec_iw$2$d = ahead_iw$2$q;
+                        rec_eob$d = ahead_eob$q;
+                        rec_eof$d = ahead_eof$q;
+                        kn = 32'h0;
+                        st$d = ParserState$VertexFetch;
+                        if (~ahead_eob$q) begin
+                            ar_valid$d = 1'b1;
+                            ar_addr$d = index_addr$q + 32'h40;
+                            ar_len$d = 32'h1;
+                            burst$d = 1'b1;
+                            kind$d = BurstKind$Index;
+                            beat$d = 32'h0;
+                        end
+                    end
+                end
             end
         end
         if (go) begin
@@ -1778,6 +1932,7 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
             bus_error$d = 1'b0;
             t$d = 32'h0;
             kn = 32'h0;
+            ahead_valid$d = 1'b0;
             valid$0$d = 32'h0;
             valid$1$d = 32'h0;
             valid$2$d = 32'h0;
@@ -1819,7 +1974,7 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
                 st$d = ParserState$Header;
                 ar_valid$d = 1'b1;
                 ar_addr$d = address;
-                ar_len$d = 32'hb;
+                ar_len$d = 32'h5;
                 burst$d = 1'b1;
                 kind$d = BurstKind$Header;
                 beat$d = 32'h0;
@@ -1834,6 +1989,11 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
             rvn$1 = w$17$q[(32'h0)+:(9)];
             rvn$2 = w$18$q[(32'h0)+:(9)];
         end
+        if (load_ahead) begin
+            rvn$0 = ahead_v$0$q[(32'h0)+:(9)];
+            rvn$1 = ahead_v$1$q[(32'h0)+:(9)];
+            rvn$2 = ahead_v$2$q[(32'h0)+:(9)];
+        end
         v_next = rvn$0;
         if (kn == 1) begin
             v_next = rvn$1;
@@ -1846,7 +2006,7 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
         bus$ar_valid = ar_valid$q;
         bus$ar_addr = ar_addr$q;
         bus$ar_len = ar_len$q;
-        bus$ar_size = 32'h3;
+        bus$ar_size = 32'h4;
         bus$ar_burst = 32'h1;
         bus$r_ready = 1'b1;
         out$valid = out_valid$q;
@@ -1915,6 +2075,196 @@ module command_parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
     end
     
 endmodule // command_parser
+
+
+module command_parser$ahead_eob(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // command_parser$ahead_eob
+
+
+module command_parser$ahead_eof(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // command_parser$ahead_eof
+
+
+module command_parser$ahead_fault(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // command_parser$ahead_fault
+
+
+module command_parser$ahead_iw$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // command_parser$ahead_iw$0
+
+
+module command_parser$ahead_iw$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // command_parser$ahead_iw$1
+
+
+module command_parser$ahead_iw$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // command_parser$ahead_iw$2
+
+
+module command_parser$ahead_v$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // command_parser$ahead_v$0
+
+
+module command_parser$ahead_v$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // command_parser$ahead_v$1
+
+
+module command_parser$ahead_v$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // command_parser$ahead_v$2
+
+
+module command_parser$ahead_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // command_parser$ahead_valid
 
 
 module command_parser$ar_addr(d,q,clock);

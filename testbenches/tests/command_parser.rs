@@ -64,7 +64,7 @@ fn compare(got: &Outputs, o: &ModelOutputs) -> Result<(), String> {
         ("buffer_done".into(), Value::new(1, o.buffer_done as u128)),
         ("render_valid".into(), Value::new(1, o.render.is_some() as u128)),
         ("bus$ar_valid".into(), Value::new(1, o.ar.is_some() as u128)),
-        ("bus$ar_size".into(), Value::new(3, 3)),
+        ("bus$ar_size".into(), Value::new(3, BEAT_BYTES.trailing_zeros().into())),
         ("bus$ar_burst".into(), Value::new(2, 1)),
         ("bus$r_ready".into(), Value::new(1, 1)),
         ("out$valid".into(), Value::new(1, o.out.is_some() as u128)),
@@ -96,7 +96,7 @@ fn bus_pins(r: &ReadResponse) -> [(&'static str, Value); 4] {
     [
         ("bus$ar_ready", Value::new(1, r.ar_ready as u128)),
         ("bus$r_valid", Value::new(1, r.r_valid as u128)),
-        ("bus$r_data", Value::new(64, u128::from(r.r_data[0]) | u128::from(r.r_data[1]) << 32)),
+        ("bus$r_data", Value::new(128, r.data_128())),
         ("bus$r_resp", Value::new(2, if r.r_error { 2 } else { 0 })),
     ]
 }

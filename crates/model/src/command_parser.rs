@@ -24,8 +24,14 @@
 //! the parser decides on it; a record is checked the cycle after its last beat; each
 //! vertex takes a cycle of cache lookup (a hit also copies it), a miss adds its burst and
 //! the check; the triangle goes to the output register in the cycle of its last vertex if
-//! the register is free or being taken (else it waits in CP Ready), and the next index
-//! record is asked for in the same cycle.
+//! the register is free or being taken (else it waits in CP Ready).
+//!
+//! The next index record is read ahead: record `t + 1` is asked for in the cycle record
+//! `t` is checked (or taken from ahead), so that its burst overlaps triangle `t`'s
+//! lookups; a lookup that misses is repeated until the bus is free. Record `t + 1` is checked when it comes in (in CP
+//! Ready that cycle holds the hand-over back), and its verdict waits until triangle `t`
+//! has been handed over: a rule it breaks stops the parser then, after triangle `t`, as
+//! when records were read one after another.
 
 use crate::input::Vtx;
 use crate::read_memory::{ReadRequest, ReadResponse};
@@ -45,12 +51,16 @@ pub struct Params {
 }
 
 impl Default for Params {
-    /// A 64-bit bus and 512 cache entries: an index-ordered mesh reuses a vertex a row of
-    /// the mesh later, so the cache must hold a row (the dense torus's rows are 255
-    /// vertices: 1.97 fetches per triangle at 32 entries, 1.49 at 256, 0.50 at 512). 512
-    /// entries of a vertex (about 90 bits at class 10) and its tag fit three ECP5 block RAMs.
+    /// A 128-bit bus and 512 cache entries. Each triangle costs an index record's burst
+    /// and, on an index-ordered mesh, half a vertex record's: on a 64-bit bus (4 beats a
+    /// record) the knot took 9.9 cycles a triangle, more than setup's 10-cycle pace leaves
+    /// for the triangles culled in a cycle or two; on 128 bits (2 beats) 6.9. An
+    /// index-ordered mesh reuses a vertex a row of the mesh later, so the cache must hold a
+    /// row (the dense torus's rows are 255 vertices: 1.97 fetches per triangle at 32
+    /// entries, 1.49 at 256, 0.50 at 512). 512 entries of a vertex (about 90 bits at class
+    /// 10) and its tag fit three ECP5 block RAMs.
     fn default() -> Params {
-        Params { beat_bytes: 8, cache: 512 }
+        Params { beat_bytes: 16, cache: 512 }
     }
 }
 
@@ -189,6 +199,9 @@ pub struct CommandParser {
     t: u32,
     record: Option<IndexRecord>,
     k: usize,
+    /// Record `t + 1`, read ahead while triangle `t` is assembled, and its verdict (the
+    /// rule it breaks, kept until its turn).
+    ahead: Option<Result<IndexRecord, Fault>>,
     assembled: [VertexRecord; 3],
     /// The vertex cache: the index each entry holds, and its record.
     tags: Vec<Option<u32>>,
@@ -220,6 +233,7 @@ impl CommandParser {
             t: 0,
             record: None,
             k: 0,
+            ahead: None,
             assembled: [NO_VERTEX; 3],
             tags: vec![None; params.cache as usize],
             data: vec![NO_VERTEX; params.cache as usize],
@@ -287,15 +301,19 @@ impl CommandParser {
             }
             State::VertexFetch => match complete {
                 Some(done) => self.checked(done, out_free, i.screen),
-                // A lookup waits for the burst of a miss to come in whole and be checked.
-                None if self.burst.is_none() && self.complete.is_none() => self.look_up(out_free),
+                // A lookup waits for the burst of a miss to come in whole and be checked; record
+                // t + 1's burst, read ahead, holds back only a miss.
+                None if !matches!(self.burst, Some((Burst::Vertex, _))) && self.complete != Some(Burst::Vertex) => {
+                    self.look_up(out_free)
+                }
                 None => {}
             },
-            State::CpReady => {
-                if out_free {
-                    self.hand_over();
-                }
-            }
+            State::CpReady => match complete {
+                // Record `t + 1` read ahead: checked this cycle, the hand-over waits a cycle.
+                Some(done) => self.checked(done, out_free, i.screen),
+                None if out_free => self.hand_over(),
+                None => {}
+            },
             State::End => {
                 if out_free {
                     self.state = State::Init;
@@ -345,10 +363,22 @@ impl CommandParser {
 
     /// A burst received whole: its rules checked, then the next step.
     fn checked(&mut self, done: Burst, out_free: bool, screen: [u32; 2]) {
-        if std::mem::take(&mut self.bus_error) {
+        let bus_error = std::mem::take(&mut self.bus_error);
+        let record: [u32; RECORD_BYTES / 4] = self.words[..RECORD_BYTES / 4].try_into().expect("a record");
+        if done == Burst::Index && self.state != State::TriIndex {
+            // Record t + 1, read ahead: its verdict waits for its turn.
+            let h = self.header.expect("the header was read");
+            let verdict = match bus_error {
+                true => Err(Fault::Bus),
+                false => read_index_record(&record, self.t + 1, &h).map_err(|e| e.fault),
+            };
+            self.stats.index_bursts += verdict.is_ok() as u64;
+            self.ahead = Some(verdict);
+            return;
+        }
+        if bus_error {
             return self.stop(Fault::Bus);
         }
-        let record: [u32; RECORD_BYTES / 4] = self.words[..RECORD_BYTES / 4].try_into().expect("a record");
         let result: Result<(), Broken> = match done {
             Burst::Header => read_header(&self.words, Some(&self.build)).and_then(|h| self.accept_header(h, screen)),
             Burst::Index => {
@@ -358,6 +388,7 @@ impl CommandParser {
                     self.record = Some(r);
                     self.k = 0;
                     self.state = State::VertexFetch;
+                    self.read_ahead();
                 })
             }
             Burst::Vertex => {
@@ -401,14 +432,14 @@ impl CommandParser {
     }
 
     /// One vertex looked up in the cache: a hit is copied (and, the last, hands the
-    /// triangle over), a miss is fetched.
+    /// triangle over), a miss is fetched once the bus is free (else looked up again).
     fn look_up(&mut self, out_free: bool) {
         let v = self.record.expect("an index record").v[self.k];
         let slot = (v & (self.params.cache - 1)) as usize;
         if self.tags[slot] == Some(v) {
             self.stats.cache_hits += 1;
             self.vertex_done(self.data[slot], out_free);
-        } else {
+        } else if self.burst.is_none() && self.complete.is_none() {
             let h = self.header.expect("the header was read");
             self.read(Burst::Vertex, h.vertex_at + v * RECORD_BYTES as u32, RECORD_BYTES);
         }
@@ -427,7 +458,18 @@ impl CommandParser {
         }
     }
 
-    /// Triangle `t` into the output register; the next index record asked for.
+    /// Record `t + 1` asked for while triangle `t` is assembled, unless `t` ends the buffer
+    /// (the bus is free: a record was just checked or taken from `ahead`).
+    fn read_ahead(&mut self) {
+        let r = self.record.expect("an index record");
+        if !r.end_of_buffer {
+            let h = self.header.expect("the header was read");
+            self.read(Burst::Index, h.index_at + (self.t + 1) * RECORD_BYTES as u32, RECORD_BYTES);
+        }
+    }
+
+    /// Triangle `t` into the output register; record `t + 1` becomes the current one if it
+    /// was read ahead (stopping on the rule it breaks), else it is awaited in Tri Index.
     fn hand_over(&mut self) {
         let r = self.record.expect("an index record");
         let vertices = [0, 1, 2].map(|k| {
@@ -437,11 +479,19 @@ impl CommandParser {
         self.out = Some(Triangle { vertices, end_of_buffer: r.end_of_buffer, end_of_frame: r.end_of_frame });
         if r.end_of_buffer {
             self.state = State::End;
-        } else {
-            let h = self.header.expect("the header was read");
-            self.t += 1;
-            self.state = State::TriIndex;
-            self.read(Burst::Index, h.index_at + self.t * RECORD_BYTES as u32, RECORD_BYTES);
+            return;
+        }
+        self.t += 1;
+        match self.ahead.take() {
+            Some(Ok(next)) => {
+                self.record = Some(next);
+                self.k = 0;
+                self.state = State::VertexFetch;
+                self.read_ahead();
+            }
+            Some(Err(fault)) => self.stop(fault),
+            // Its read is under way.
+            None => self.state = State::TriIndex,
         }
     }
 }
@@ -464,7 +514,8 @@ pub enum Outcome {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Run {
     pub outcome: Outcome,
-    /// The triangles the rasterizer took, with the cycle it took each in.
+    /// The triangles the rasterizer took, with the cycle it took each in (also one left in
+    /// the output register when the parser stopped on an error, taken after).
     pub triangles: Vec<(u64, Triangle)>,
     /// The cycle the outcome showed in (`frame_done`, `buffer_done` or the Error state).
     pub cycles: u64,
@@ -512,7 +563,7 @@ pub fn run(params: Params, build: Build, bytes: &[u8], bench: Bench) -> Result<R
     let Bench { base, latency, mut stall, mut take, max_cycles, screen } = bench;
     let mut parser = CommandParser::new(params, build)?;
     let mut memory = crate::read_memory::ReadMemory::new(bytes, base, params.beat_bytes, latency, &mut *stall);
-    let mut triangles = Vec::new();
+    let (mut triangles, mut ended) = (Vec::new(), None);
     for cycle in 0..max_cycles {
         let o = parser.outputs();
         let outcome = match (o.frame_done, o.buffer_done, o.fault) {
@@ -521,12 +572,14 @@ pub fn run(params: Params, build: Build, bytes: &[u8], bench: Bench) -> Result<R
             (_, _, Some(f)) => Some(Outcome::Fault(f)),
             _ => None,
         };
-        if let Some(outcome) = outcome {
+        ended = ended.or(outcome.map(|x| (x, cycle)));
+        // A triangle handed over before an error is still taken.
+        if let (Some((outcome, at)), None) = (ended, o.out) {
             let stats = parser.stats();
             return Ok(Run {
                 outcome,
                 triangles,
-                cycles: cycle,
+                cycles: at,
                 stats,
                 reads: memory.requests,
                 reads_outside: memory.outside,

@@ -23,6 +23,14 @@ pub struct ReadResponse {
     pub r_error: bool,
 }
 
+impl ReadResponse {
+    /// The beat's first four words as one 128-bit number, the first word lowest: RDATA of a
+    /// 128-bit bus.
+    pub fn data_128(&self) -> u128 {
+        self.r_data[..4].iter().rev().fold(0, |acc, &w| acc << 32 | u128::from(w))
+    }
+}
+
 /// A read burst asked for: the address of its first byte and its beats.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ReadRequest {
@@ -154,6 +162,12 @@ mod tests {
             assert!(cycle < 1000, "the burst is answered");
         }
         out
+    }
+
+    #[test]
+    fn data_128_puts_the_first_word_lowest() {
+        let r = ReadResponse { r_data: [1, 2, 3, 4, 5, 6, 7, 8], ..ReadResponse::default() };
+        assert_eq!(r.data_128(), 4 << 96 | 3 << 64 | 2 << 32 | 1);
     }
 
     #[test]

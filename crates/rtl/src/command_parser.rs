@@ -6,9 +6,9 @@
 //! the record that ends the buffer. Every rule a buffer breaks stops it in Error with the
 //! model's code (`model::vertex_buffer::Fault`).
 //!
-//! Memory is read through an AXI4 read master (`links::ReadMaster`: 64-bit data, INCR bursts,
+//! Memory is read through an AXI4 read master (`links::ReadMaster`: 128-bit data, INCR bursts,
 //! one outstanding, every beat taken). A burst shifts into [`WORDS`] 32-bit registers from
-//! the top, two words a beat, so that once its last beat is in a header's word `i` is
+//! the top, four words a beat, so that once its last beat is in a header's word `i` is
 //! register `i` and a record's word `i` register [`RECORD_AT`] + `i`; [`HeaderCheck`],
 //! [`IndexCheck`] and [`VertexCheck`] check them the cycle after, as
 //! `vertex_buffer::read_header`, `read_index_record` and `read_vertex_record` do.
@@ -32,7 +32,7 @@ use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::RAM;
 
 /// Bytes per beat of the read bus: `model::command_parser::Params::beat_bytes` of the RTL.
-pub const BEAT_BYTES: u32 = 8;
+pub const BEAT_BYTES: u32 = 16;
 /// The burst registers: a header's words.
 pub const WORDS: usize = HEADER_BYTES / 4;
 /// A record's words.
@@ -40,8 +40,9 @@ const RECORD: usize = RECORD_BYTES / 4;
 /// The register a record's first word is in once its last beat is.
 pub const RECORD_AT: usize = WORDS - RECORD;
 // A kernel's array indices are numbers (rust-hdl evaluates them without Rust's
-// constants): the kernel writes RECORD_AT as 16 and the two top registers as 22 and 23.
-const _: () = assert!(WORDS == 24 && RECORD == 8 && RECORD_AT == 16 && BEAT_BYTES == 8);
+// constants): the kernel writes RECORD_AT as 16, the four top registers as 20 to 23, a
+// record's last beat as 1 and a header's as 5.
+const _: () = assert!(WORDS == 24 && RECORD == 8 && RECORD_AT == 16 && BEAT_BYTES == 16);
 /// A vertex as the cache and the output register hold it: x, y, z, R, G, B from bit 0 up.
 const VTX: usize = 2 * XY + Z + 3 * COLOR;
 /// Entries a register of the cache's valid flags covers.
@@ -472,6 +473,14 @@ pub struct CommandParser<const CB: usize, const G: usize> {
     rec_iw: [DFF<Bits<INV_W>>; 3],
     rec_eob: DFF<Bit>,
     rec_eof: DFF<Bit>,
+    /// Record `t + 1`, read ahead while triangle `t` is assembled: held, its error code (0
+    /// none), its V0-V2, inv_w words and end flags.
+    ahead_valid: DFF<Bit>,
+    ahead_fault: DFF<Bits<4>>,
+    ahead_v: [DFF<Bits<32>>; 3],
+    ahead_iw: [DFF<Bits<INV_W>>; 3],
+    ahead_eob: DFF<Bit>,
+    ahead_eof: DFF<Bit>,
     k: DFF<Bits<2>>,
     asm: [DFF<Bits<VTX>>; 3],
     /// The vertex cache: entries holding a vertex of this buffer (entry `16 g + i` is bit
@@ -511,6 +520,10 @@ pub struct CommandParser<const CB: usize, const G: usize> {
     hand: Signal<Local, Bit>,
     vertex_in: Signal<Local, Bit>,
     load_rec: Signal<Local, Bit>,
+    /// The record that came in is `t + 1`'s, read ahead (not in Tri Index); the current
+    /// record is taken from ahead this cycle.
+    is_ahead: Signal<Local, Bit>,
+    load_ahead: Signal<Local, Bit>,
     kn: Signal<Local, Bits<2>>,
     v_cur: Signal<Local, Bits<32>>,
     slot: Signal<Local, Bits<CB>>,
@@ -578,6 +591,12 @@ impl<const CB: usize, const G: usize> CommandParser<CB, G> {
             rec_iw: defaults(),
             rec_eob: Default::default(),
             rec_eof: Default::default(),
+            ahead_valid: Default::default(),
+            ahead_fault: Default::default(),
+            ahead_v: Default::default(),
+            ahead_iw: Default::default(),
+            ahead_eob: Default::default(),
+            ahead_eof: Default::default(),
             k: Default::default(),
             asm: defaults(),
             valid: defaults(),
@@ -612,6 +631,8 @@ impl<const CB: usize, const G: usize> CommandParser<CB, G> {
             hand: Default::default(),
             vertex_in: Default::default(),
             load_rec: Default::default(),
+            is_ahead: Default::default(),
+            load_ahead: Default::default(),
             kn: Default::default(),
             v_cur: Default::default(),
             slot: Default::default(),
@@ -664,6 +685,10 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
             t,
             rec_eob,
             rec_eof,
+            ahead_valid,
+            ahead_fault,
+            ahead_eob,
+            ahead_eof,
             k,
             byp_valid,
             byp_tag,
@@ -679,6 +704,10 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
             self.rec_v[i].d.next = self.rec_v[i].q.val();
             self.rec_iw[i].clock.next = self.clock.val();
             self.rec_iw[i].d.next = self.rec_iw[i].q.val();
+            self.ahead_v[i].clock.next = self.clock.val();
+            self.ahead_v[i].d.next = self.ahead_v[i].q.val();
+            self.ahead_iw[i].clock.next = self.clock.val();
+            self.ahead_iw[i].d.next = self.ahead_iw[i].q.val();
             self.asm[i].clock.next = self.clock.val();
             self.asm[i].d.next = self.asm[i].q.val();
             self.out_vtx[i].clock.next = self.clock.val();
@@ -700,6 +729,7 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
         self.vtx_ram.write_clock.next = self.clock.val();
         self.kn.next = self.k.q.val();
         self.load_rec.next = false;
+        self.load_ahead.next = false;
         self.vertex_in.next = false;
         self.byp_valid.d.next = false;
 
@@ -714,7 +744,12 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
             self.index_check.r[i].next = self.w[i + 16].q.val();
             self.vertex_check.r[i].next = self.w[i + 16].q.val();
         }
+        // A record read ahead is triangle t + 1's.
+        self.is_ahead.next = self.st.q.val() != ParserState::TriIndex;
         self.index_check.t.next = self.t.q.val();
+        if self.is_ahead.val() {
+            self.index_check.t.next = self.t.q.val() + 1;
+        }
         self.index_check.triangles.next = self.triangles.q.val();
         self.index_check.vertices.next = self.vertices.q.val();
 
@@ -774,16 +809,18 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
         self.beat_in.next = self.burst.q.val()
             & self.bus.r_valid.val()
             & !(self.ar_valid.q.val() & !self.bus.ar_ready.val());
-        self.last_beat.next = 3.into();
+        self.last_beat.next = 1.into();
         if self.kind.q.val() == BurstKind::Header {
-            self.last_beat.next = 11.into();
+            self.last_beat.next = 5.into();
         }
         if self.beat_in.val() {
-            for i in 0..(WORDS - 2) {
-                self.w[i].d.next = self.w[i + 2].q.val();
+            for i in 0..(WORDS - 4) {
+                self.w[i].d.next = self.w[i + 4].q.val();
             }
-            self.w[22].d.next = self.bus.r_data.val().get_bits::<32>(0);
-            self.w[23].d.next = self.bus.r_data.val().get_bits::<32>(32);
+            self.w[20].d.next = self.bus.r_data.val().get_bits::<32>(0);
+            self.w[21].d.next = self.bus.r_data.val().get_bits::<32>(32);
+            self.w[22].d.next = self.bus.r_data.val().get_bits::<32>(64);
+            self.w[23].d.next = self.bus.r_data.val().get_bits::<32>(96);
             self.bus_error.d.next = self.bus_error.q.val() | self.bus.r_resp.val().any();
             self.beat.d.next = self.beat.q.val() + 1;
             if self.beat.q.val() == self.last_beat.val() {
@@ -811,12 +848,16 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
                 self.check.next = self.complete.q.val();
             }
             ParserState::VertexFetch => {
-                // A lookup waits for the burst of a miss to come in whole and be checked.
+                // A lookup waits for the burst of a miss to come in whole and be checked;
+                // record t + 1's burst, read ahead, holds back only a miss.
                 self.check.next = self.complete.q.val();
-                self.look.next = !self.complete.q.val() & !self.burst.q.val();
+                self.look.next =
+                    !self.complete.q.val() & !(self.burst.q.val() & (self.kind.q.val() == BurstKind::Vertex));
             }
             ParserState::CpReady => {
-                self.hand.next = self.out_free.val();
+                // Record t + 1, read ahead, is checked this cycle: the hand-over waits.
+                self.check.next = self.complete.q.val();
+                self.hand.next = self.out_free.val() & !self.complete.q.val();
             }
             ParserState::End => {
                 if self.out_free.val() {
@@ -825,8 +866,22 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
             }
         }
 
-        // A burst received whole: checked, then the next step.
-        if self.check.val() {
+        // A burst received whole: checked, then the next step. Record t + 1, read ahead,
+        // is kept with its verdict until triangle t is handed over.
+        if self.check.val() & (self.kind.q.val() == BurstKind::Index) & self.is_ahead.val() {
+            self.bus_error.d.next = false;
+            self.ahead_valid.d.next = true;
+            self.ahead_fault.d.next = self.index_check.fault.val();
+            if self.bus_error.q.val() {
+                self.ahead_fault.d.next = 10.into();
+            }
+            for i in 0..3 {
+                self.ahead_v[i].d.next = self.w[i + 16].q.val();
+                self.ahead_iw[i].d.next = self.w[i + 20].q.val().get_bits::<INV_W>(0);
+            }
+            self.ahead_eob.d.next = self.w[19].q.val().get_bit(16);
+            self.ahead_eof.d.next = self.w[19].q.val().get_bit(17);
+        } else if self.check.val() {
             if self.bus_error.q.val() {
                 self.bus_error.d.next = false;
                 self.st.d.next = ParserState::Error;
@@ -851,7 +906,7 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
                                 self.st.d.next = ParserState::TriIndex;
                                 self.ar_valid.d.next = true;
                                 self.ar_addr.d.next = self.base.q.val() + self.w[6].q.val();
-                                self.ar_len.d.next = 3.into();
+                                self.ar_len.d.next = 1.into();
                                 self.burst.d.next = true;
                                 self.kind.d.next = BurstKind::Index;
                                 self.beat.d.next = 0.into();
@@ -877,6 +932,15 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
                             self.rec_eof.d.next = self.w[19].q.val().get_bit(17);
                             self.kn.next = 0.into();
                             self.st.d.next = ParserState::VertexFetch;
+                            // Record t + 1 asked for ahead, unless t ends the buffer.
+                            if !self.w[19].q.val().get_bit(16) {
+                                self.ar_valid.d.next = true;
+                                self.ar_addr.d.next = self.index_addr.q.val() + 32;
+                                self.ar_len.d.next = 1.into();
+                                self.burst.d.next = true;
+                                self.kind.d.next = BurstKind::Index;
+                                self.beat.d.next = 0.into();
+                            }
                         }
                     }
                     BurstKind::Vertex => {
@@ -909,10 +973,10 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
             if self.hit.val() {
                 self.cur.next = self.vtx.val();
                 self.vertex_in.next = true;
-            } else {
+            } else if !self.burst.q.val() {
                 self.ar_valid.d.next = true;
                 self.ar_addr.d.next = self.vertex_base.q.val() + (self.v_cur.val() << self.five.val());
-                self.ar_len.d.next = 3.into();
+                self.ar_len.d.next = 1.into();
                 self.burst.d.next = true;
                 self.kind.d.next = BurstKind::Vertex;
                 self.beat.d.next = 0.into();
@@ -952,14 +1016,36 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
                 self.st.d.next = ParserState::End;
             } else {
                 self.t.d.next = self.t.q.val() + 1;
-                self.st.d.next = ParserState::TriIndex;
                 self.index_addr.d.next = self.index_addr.q.val() + 32;
-                self.ar_valid.d.next = true;
-                self.ar_addr.d.next = self.index_addr.q.val() + 32;
-                self.ar_len.d.next = 3.into();
-                self.burst.d.next = true;
-                self.kind.d.next = BurstKind::Index;
-                self.beat.d.next = 0.into();
+                // Record t + 1: read ahead (its error stops the parser now), or still
+                // coming (awaited in Tri Index).
+                self.st.d.next = ParserState::TriIndex;
+                if self.ahead_valid.q.val() {
+                    self.ahead_valid.d.next = false;
+                    if self.ahead_fault.q.val().any() {
+                        self.st.d.next = ParserState::Error;
+                        self.fault_r.d.next = self.ahead_fault.q.val();
+                    } else {
+                        self.load_ahead.next = true;
+                        for i in 0..3 {
+                            self.rec_v[i].d.next = self.ahead_v[i].q.val();
+                            self.rec_iw[i].d.next = self.ahead_iw[i].q.val();
+                        }
+                        self.rec_eob.d.next = self.ahead_eob.q.val();
+                        self.rec_eof.d.next = self.ahead_eof.q.val();
+                        self.kn.next = 0.into();
+                        self.st.d.next = ParserState::VertexFetch;
+                        // And record t + 2 asked for, unless t + 1 ends the buffer.
+                        if !self.ahead_eob.q.val() {
+                            self.ar_valid.d.next = true;
+                            self.ar_addr.d.next = self.index_addr.q.val() + 64;
+                            self.ar_len.d.next = 1.into();
+                            self.burst.d.next = true;
+                            self.kind.d.next = BurstKind::Index;
+                            self.beat.d.next = 0.into();
+                        }
+                    }
+                }
             }
         }
 
@@ -972,6 +1058,7 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
             self.bus_error.d.next = false;
             self.t.d.next = 0.into();
             self.kn.next = 0.into();
+            self.ahead_valid.d.next = false;
             for g in 0..G {
                 self.valid[g].d.next = 0.into();
             }
@@ -983,7 +1070,7 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
                 self.st.d.next = ParserState::Header;
                 self.ar_valid.d.next = true;
                 self.ar_addr.d.next = self.address.val();
-                self.ar_len.d.next = 11.into();
+                self.ar_len.d.next = 5.into();
                 self.burst.d.next = true;
                 self.kind.d.next = BurstKind::Header;
                 self.beat.d.next = 0.into();
@@ -1000,6 +1087,11 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
                 self.rvn[i].next = self.w[i + 16].q.val().get_bits::<CB>(0);
             }
         }
+        if self.load_ahead.val() {
+            for i in 0..3 {
+                self.rvn[i].next = self.ahead_v[i].q.val().get_bits::<CB>(0);
+            }
+        }
         self.v_next.next = self.rvn[0].val();
         for i in 1..3 {
             if self.kn.val().index() == i {
@@ -1013,7 +1105,7 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
         self.bus.ar_valid.next = self.ar_valid.q.val();
         self.bus.ar_addr.next = self.ar_addr.q.val();
         self.bus.ar_len.next = self.ar_len.q.val();
-        self.bus.ar_size.next = 3.into();
+        self.bus.ar_size.next = 4.into();
         self.bus.ar_burst.next = 1.into();
         self.bus.r_ready.next = true;
         self.out.valid.next = self.out_valid.q.val();

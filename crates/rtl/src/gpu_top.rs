@@ -44,7 +44,7 @@ pub struct GpuTop {
     /// The host's registers (`gpu_regs`) and the frame-done interrupt.
     pub host: LiteSlave,
     pub irq: Signal<Out, Bit>,
-    /// The vertex buffer's reads (`command_parser`'s AXI4 read master, 64-bit).
+    /// The vertex buffer's reads (`command_parser`'s AXI4 read master, 128-bit).
     pub vb: ReadMaster,
     /// The depth buffer's reads and writes, the colour buffer's writes (`pixel_bus`).
     pub zr: WordReadMaster,

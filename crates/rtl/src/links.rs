@@ -49,11 +49,11 @@ macro_rules! read_master {
 }
 
 read_master! {
-    /// An AXI4 read master's address (AR) and data (R) channels, 64-bit data: the command
-    /// parser reads its vertex buffer through it. Bursts are INCR (`ar_burst` 1) of 8-byte
-    /// beats (`ar_size` 3), `ar_len + 1` beats; `r_ready` is always high. A beat answered
+    /// An AXI4 read master's address (AR) and data (R) channels, 128-bit data: the command
+    /// parser reads its vertex buffer through it. Bursts are INCR (`ar_burst` 1) of 16-byte
+    /// beats (`ar_size` 4), `ar_len + 1` beats; `r_ready` is always high. A beat answered
     /// with RRESP other than OKAY stops the parser (`Fault::Bus`).
-    ReadMaster, 64
+    ReadMaster, 128
 }
 
 read_master! {

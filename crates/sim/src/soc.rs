@@ -91,7 +91,7 @@ impl<'a> Soc<'a> {
         let [a, b, c] = pace.stalls;
         Soc {
             step,
-            vb: ReadMemory::new(vb, VB_BASE, 8, pace.latency, a),
+            vb: ReadMemory::new(vb, VB_BASE, rtl::command_parser::BEAT_BYTES, pace.latency, a),
             depth: WordMemory::new(vec![FILL; words], DEPTH_BASE, pace.latency, b),
             color: WordMemory::new(vec![FILL; words], COLOR_BASE, pace.latency, c),
             screen,
@@ -113,7 +113,7 @@ impl<'a> Soc<'a> {
         pins.extend([
             ("vb$ar_ready".into(), bit(r.ar_ready)),
             ("vb$r_valid".into(), bit(r.r_valid)),
-            ("vb$r_data".into(), Value::new(64, u128::from(r.r_data[0]) | u128::from(r.r_data[1]) << 32)),
+            ("vb$r_data".into(), Value::new(128, r.data_128())),
             ("vb$r_resp".into(), Value::new(2, if r.r_error { 2 } else { 0 })),
             ("zr$ar_ready".into(), bit(z.ar_ready)),
             ("zr$r_valid".into(), bit(z.r_valid)),
