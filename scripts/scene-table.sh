@@ -16,7 +16,7 @@ echo "|---|---|---|---:|---:|---:|---|---:|"
 for spec in cube:320x240 sphere:320x240 cone:320x240 torus:320x240 pawn:320x240 house:320x240 clip:320x240 all:640x480; do
     scene=${spec%%:*}
     size=${spec#*:}
-    line=$("$bin" render --engine rtl "scenes/$scene.json" --size "$size" -o "$out/$scene.png" "$@" 2>&1 | grep '^render rtl')
+    line=$("$bin" render --engine rtl --top raster_top "scenes/$scene.json" --size "$size" -o "$out/$scene.png" "$@" 2>&1 | grep '^render rtl')
     python3 - "$scene" "$size" "$line" <<'EOF'
 import re, sys
 scene, size, line = sys.argv[1:]
