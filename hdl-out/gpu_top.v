@@ -71,6 +71,11 @@ module gpu_top(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$
     output wire  cw$b_ready;
     input wire  [1:0] cw$b_resp;
     
+    // Enums
+    localparam BurstKind$Header = 0;
+    localparam BurstKind$Index = 1;
+    localparam BurstKind$Vertex = 2;
+    
     // Stub signals
     reg  regs$clock;
     reg  [31:0] regs$status;
@@ -50137,6 +50142,9 @@ module gpu_top$parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
     reg  load_rec;
     reg  is_ahead;
     reg  load_ahead;
+    reg  ask;
+    reg  [31:0] ask_addr;
+    reg  [1:0] ask_kind;
     reg  [1:0] kn;
     reg  [31:0] v_cur;
     reg  [8:0] slot;
@@ -51028,6 +51036,9 @@ module gpu_top$parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
         kn = k$q;
         load_rec = 1'b0;
         load_ahead = 1'b0;
+        ask = 1'b0;
+        ask_addr = 32'h0;
+        ask_kind = BurstKind$Index;
         vertex_in = 1'b0;
         byp_valid$d = 1'b0;
         header_check$h$0 = w$0$q;
@@ -51330,12 +51341,8 @@ module gpu_top$parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
                                 vertex_base$d = base$q + w$7$q;
                                 if (|w$4$q) begin
                                     st$d = ParserState$TriIndex;
-                                    ar_valid$d = 1'b1;
-                                    ar_addr$d = base$q + w$6$q;
-                                    ar_len$d = 32'h1;
-                                    burst$d = 1'b1;
-                                    kind$d = BurstKind$Index;
-                                    beat$d = 32'h0;
+                                    ask = 1'b1;
+                                    ask_addr = base$q + w$6$q;
                                 end
                                 else begin
                                     frame_r$d = 1'b1;
@@ -51363,12 +51370,8 @@ module gpu_top$parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
                                 kn = 32'h0;
                                 st$d = ParserState$VertexFetch;
                                 if (~w$19$q[32'h10]) begin
-                                    ar_valid$d = 1'b1;
-                                    ar_addr$d = index_addr$q + 32'h20;
-                                    ar_len$d = 32'h1;
-                                    burst$d = 1'b1;
-                                    kind$d = BurstKind$Index;
-                                    beat$d = 32'h0;
+                                    ask = 1'b1;
+                                    ask_addr = index_addr$q + 32'h20;
                                 end
                             end
                         end
@@ -51493,12 +51496,9 @@ module gpu_top$parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
                 vertex_in = 1'b1;
             end
             else if (~burst$q) begin
-                ar_valid$d = 1'b1;
-                ar_addr$d = vertex_base$q + (v_cur << five);
-                ar_len$d = 32'h1;
-                burst$d = 1'b1;
-                kind$d = BurstKind$Vertex;
-                beat$d = 32'h0;
+                ask = 1'b1;
+                ask_addr = vertex_base$q + (v_cur << five);
+                ask_kind = BurstKind$Vertex;
             end
         end
         if (vertex_in) begin
@@ -51560,12 +51560,8 @@ module gpu_top$parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
                         kn = 32'h0;
                         st$d = ParserState$VertexFetch;
                         if (~ahead_eob$q) begin
-                            ar_valid$d = 1'b1;
-                            ar_addr$d = index_addr$q + 32'h40;
-                            ar_len$d = 32'h1;
-                            burst$d = 1'b1;
-                            kind$d = BurstKind$Index;
-                            beat$d = 32'h0;
+                            ask = 1'b1;
+                            ask_addr = index_addr$q + 32'h40;
                         end
                     end
                 end
@@ -51619,13 +51615,21 @@ module gpu_top$parser(clock,start,address,max_width,max_height,bus$ar_valid,bus$
             else begin
                 base$d = address;
                 st$d = ParserState$Header;
-                ar_valid$d = 1'b1;
-                ar_addr$d = address;
-                ar_len$d = 32'h5;
-                burst$d = 1'b1;
-                kind$d = BurstKind$Header;
-                beat$d = 32'h0;
+                ask = 1'b1;
+                ask_addr = address;
+                ask_kind = BurstKind$Header;
             end
+        end
+        if (ask) begin
+            ar_valid$d = 1'b1;
+            ar_addr$d = ask_addr;
+            ar_len$d = 32'h1;
+            if (ask_kind == BurstKind$Header) begin
+                ar_len$d = 32'h5;
+            end
+            burst$d = 1'b1;
+            kind$d = ask_kind;
+            beat$d = 32'h0;
         end
         k$d = kn;
         rvn$0 = rec_v$0$q[(32'h0)+:(9)];

@@ -524,6 +524,10 @@ pub struct CommandParser<const CB: usize, const G: usize> {
     /// record is taken from ahead this cycle.
     is_ahead: Signal<Local, Bit>,
     load_ahead: Signal<Local, Bit>,
+    /// A read decided on this cycle: its address and what it reads.
+    ask: Signal<Local, Bit>,
+    ask_addr: Signal<Local, Bits<32>>,
+    ask_kind: Signal<Local, BurstKind>,
     kn: Signal<Local, Bits<2>>,
     v_cur: Signal<Local, Bits<32>>,
     slot: Signal<Local, Bits<CB>>,
@@ -633,6 +637,9 @@ impl<const CB: usize, const G: usize> CommandParser<CB, G> {
             load_rec: Default::default(),
             is_ahead: Default::default(),
             load_ahead: Default::default(),
+            ask: Default::default(),
+            ask_addr: Default::default(),
+            ask_kind: Default::default(),
             kn: Default::default(),
             v_cur: Default::default(),
             slot: Default::default(),
@@ -730,6 +737,9 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
         self.kn.next = self.k.q.val();
         self.load_rec.next = false;
         self.load_ahead.next = false;
+        self.ask.next = false;
+        self.ask_addr.next = 0.into();
+        self.ask_kind.next = BurstKind::Index;
         self.vertex_in.next = false;
         self.byp_valid.d.next = false;
 
@@ -904,12 +914,8 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
                             self.vertex_base.d.next = self.base.q.val() + self.w[7].q.val();
                             if self.w[4].q.val().any() {
                                 self.st.d.next = ParserState::TriIndex;
-                                self.ar_valid.d.next = true;
-                                self.ar_addr.d.next = self.base.q.val() + self.w[6].q.val();
-                                self.ar_len.d.next = 1.into();
-                                self.burst.d.next = true;
-                                self.kind.d.next = BurstKind::Index;
-                                self.beat.d.next = 0.into();
+                                self.ask.next = true;
+                                self.ask_addr.next = self.base.q.val() + self.w[6].q.val();
                             } else {
                                 // A buffer of no triangles: nothing to draw, and the frame ends.
                                 self.frame_r.d.next = true;
@@ -934,12 +940,8 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
                             self.st.d.next = ParserState::VertexFetch;
                             // Record t + 1 asked for ahead, unless t ends the buffer.
                             if !self.w[19].q.val().get_bit(16) {
-                                self.ar_valid.d.next = true;
-                                self.ar_addr.d.next = self.index_addr.q.val() + 32;
-                                self.ar_len.d.next = 1.into();
-                                self.burst.d.next = true;
-                                self.kind.d.next = BurstKind::Index;
-                                self.beat.d.next = 0.into();
+                                self.ask.next = true;
+                                self.ask_addr.next = self.index_addr.q.val() + 32;
                             }
                         }
                     }
@@ -974,12 +976,9 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
                 self.cur.next = self.vtx.val();
                 self.vertex_in.next = true;
             } else if !self.burst.q.val() {
-                self.ar_valid.d.next = true;
-                self.ar_addr.d.next = self.vertex_base.q.val() + (self.v_cur.val() << self.five.val());
-                self.ar_len.d.next = 1.into();
-                self.burst.d.next = true;
-                self.kind.d.next = BurstKind::Vertex;
-                self.beat.d.next = 0.into();
+                self.ask.next = true;
+                self.ask_addr.next = self.vertex_base.q.val() + (self.v_cur.val() << self.five.val());
+                self.ask_kind.next = BurstKind::Vertex;
             }
         }
 
@@ -1037,12 +1036,8 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
                         self.st.d.next = ParserState::VertexFetch;
                         // And record t + 2 asked for, unless t + 1 ends the buffer.
                         if !self.ahead_eob.q.val() {
-                            self.ar_valid.d.next = true;
-                            self.ar_addr.d.next = self.index_addr.q.val() + 64;
-                            self.ar_len.d.next = 1.into();
-                            self.burst.d.next = true;
-                            self.kind.d.next = BurstKind::Index;
-                            self.beat.d.next = 0.into();
+                            self.ask.next = true;
+                            self.ask_addr.next = self.index_addr.q.val() + 64;
                         }
                     }
                 }
@@ -1068,13 +1063,24 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
             } else {
                 self.base.d.next = self.address.val();
                 self.st.d.next = ParserState::Header;
-                self.ar_valid.d.next = true;
-                self.ar_addr.d.next = self.address.val();
-                self.ar_len.d.next = 5.into();
-                self.burst.d.next = true;
-                self.kind.d.next = BurstKind::Header;
-                self.beat.d.next = 0.into();
+                self.ask.next = true;
+                self.ask_addr.next = self.address.val();
+                self.ask_kind.next = BurstKind::Header;
             }
+        }
+
+        // The read decided on this cycle, offered from the next: a header's 6 beats or a
+        // record's 2.
+        if self.ask.val() {
+            self.ar_valid.d.next = true;
+            self.ar_addr.d.next = self.ask_addr.val();
+            self.ar_len.d.next = 1.into();
+            if self.ask_kind.val() == BurstKind::Header {
+                self.ar_len.d.next = 5.into();
+            }
+            self.burst.d.next = true;
+            self.kind.d.next = self.ask_kind.val();
+            self.beat.d.next = 0.into();
         }
         self.k.d.next = self.kn.val();
 
