@@ -15,22 +15,22 @@ use rand_chacha::ChaCha8Rng;
 use rtl::gpu_top::GpuTop;
 use rtl::switch::Parts;
 use scene::{Trilist, Vertex};
-use sim::soc::{self, Pace, Soc, Step, FILL, VB_BASE};
+use sim::soc::{self, ByName, Core, Pace, Soc, FILL, VB_BASE};
 use testbenches::stimulus::shipped_buffers;
 use testbenches::{count, seed, Dual};
 
 /// The core in Verilator.
-fn verilator() -> Step {
+fn verilator() -> Box<dyn Core> {
     soc::verilator().unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// The core in rust-hdl and Verilator in lockstep, every output compared every cycle.
-fn dual() -> Step {
+fn dual() -> Box<dyn Core> {
     let vl = testbenches::verilated_with("gpu_top", []).model().unwrap_or_else(|e| panic!("{e}"));
     let parts = Parts::of(&Default::default()).expect("every part");
     let unit = GpuTop::new(7, model::divider::LATENCY as usize, &parts).expect("the default core");
     let mut dual = Dual::new(unit, vl);
-    Box::new(move |pins| dual.cycle(pins).unwrap_or_else(|m| panic!("{m}")))
+    Box::new(ByName(Box::new(move |pins| dual.cycle(pins).map_err(|m| m.to_string()))))
 }
 
 /// Memories answering `latency` cycles late, each channel holding back a transfer in a
@@ -107,14 +107,21 @@ fn expected_words(ending: &Ending, screen: (u32, u32)) -> (Vec<u32>, Vec<u32>) {
     (color, depth)
 }
 
-/// One hostile or ordinary buffer through `gpu_top` on `step`, the buffers `screen`
+/// One hostile or ordinary buffer through `gpu_top` on `core`, the buffers `screen`
 /// pixels large, cleared: the frame must end (the interrupt within `limit` cycles) with
 /// the model's `STATUS` and `TRIANGLES` (`model::gpu_top::run`), leave the model's words in
 /// both buffers and read and write nothing outside them. Returns the simulator, and the
 /// model's ending.
-fn hostile(step: Step, bytes: &[u8], screen: (u32, u32), p: Pace, limit: u64, what: &str) -> (Step, Ending) {
+fn hostile(
+    core: Box<dyn Core>,
+    bytes: &[u8],
+    screen: (u32, u32),
+    p: Pace,
+    limit: u64,
+    what: &str,
+) -> (Box<dyn Core>, Ending) {
     let ending = run(bytes, VB_BASE, [screen.0, screen.1], 10_000_000).unwrap_or_else(|e| panic!("{what}: {e}"));
-    let mut soc = Soc::new(step, bytes, screen, p);
+    let mut soc = Soc::new(core, bytes, screen, p);
     let end = soc.frame(true, limit).unwrap_or_else(|e| panic!("{what}: {e}"));
     assert_eq!((end.status & 0x1ff, end.triangles), (ending.status, ending.triangles), "{what}");
     let (color, depth) = expected_words(&ending, screen);
@@ -122,7 +129,7 @@ fn hostile(step: Step, bytes: &[u8], screen: (u32, u32), p: Pace, limit: u64, wh
     assert!(soc.depth.words == depth, "{what}: depth buffer");
     let outside = (soc.vb.outside, soc.depth.outside_reads, soc.depth.outside_writes, soc.color.outside_writes);
     assert_eq!(outside, (0, 0, 0, 0), "{what}: transfers outside the memories");
-    (soc.into_step(), ending)
+    (soc.into_core(), ending)
 }
 
 /// Every broken rule of `vertex_buffer::broken` (among them a triangle list with no end
@@ -133,22 +140,22 @@ fn hostile(step: Step, bytes: &[u8], screen: (u32, u32), p: Pace, limit: u64, wh
 #[test]
 fn gpu_top_broken_buffers_end_with_the_fault() {
     let fan = broken::fan();
-    let mut step = verilator();
+    let mut core = verilator();
     let mut faults = Vec::new();
     for (what, bytes, fault) in broken::cases() {
         let e;
-        (step, e) = hostile(step, &bytes, (16, 16), Pace::at_once(), 2_000, what);
+        (core, e) = hostile(core, &bytes, (16, 16), Pace::at_once(), 2_000, what);
         assert_eq!(e.status, model::gpu_top::status(Some(fault)), "{what}");
         faults.push(fault);
     }
     let good = fan.encode();
     for screen in [(15, 16), (16, 15)] {
         let e;
-        (step, e) = hostile(step, &good, screen, Pace::at_once(), 2_000, "the fan on smaller buffers");
+        (core, e) = hostile(core, &good, screen, Pace::at_once(), 2_000, "the fan on smaller buffers");
         assert_eq!((e.status, e.drawn), (model::gpu_top::status(Some(Fault::Screen)), None));
     }
     // Buffers of 16 x 16 whose colour rows are 60 bytes apart hold 15 pixels a row.
-    let mut soc = Soc::new(step, &good, (16, 16), Pace::at_once());
+    let mut soc = Soc::new(core, &good, (16, 16), Pace::at_once());
     let mut writes = soc.registers(true);
     writes.iter_mut().filter(|(r, _)| *r == Reg::ColorPitch).for_each(|w| w.1 = 60);
     let end = soc.frame_with(&writes, 2_000).unwrap_or_else(|e| panic!("{e}"));
@@ -186,7 +193,7 @@ fn random_buffer(rng: &mut ChaCha8Rng) -> Option<VertexBuffer> {
 fn gpu_top_random_and_mutated_buffers_vs_model() {
     let seed = seed();
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut step = verilator();
+    let mut core = verilator();
     let (mut faults, mut drawn) = (std::collections::BTreeSet::new(), 0);
     for case in 0..count() / 20 {
         let Some(vb) = random_buffer(&mut rng) else { continue };
@@ -199,7 +206,7 @@ fn gpu_top_random_and_mutated_buffers_vs_model() {
         let p = pace(rng.gen_range(0..4), 0.2, rng.gen());
         let what = format!("seed {seed}, case {case}");
         let e;
-        (step, e) = hostile(step, &bytes, screen, p, 1_000_000, &what);
+        (core, e) = hostile(core, &bytes, screen, p, 1_000_000, &what);
         faults.insert(e.status >> model::gpu_top::FAULT_SHIFT);
         drawn += e.triangles;
     }

@@ -199,8 +199,8 @@ fn gpu_top(loaded: &Loaded, cull_back: bool) -> Result<(Image, (String, u64))> {
     let limit = 4 * prep.cycles() + 4 * u64::from(width * height) + 100 * bytes.len() as u64 + 100_000;
     let model =
         model::gpu_top::run(&bytes, VB_BASE, [width, height], limit).map_err(|e| anyhow!("--engine rtl: {e}"))?;
-    let step = sim::soc::verilator().map_err(|e| anyhow!("--engine rtl: {e}"))?;
-    let mut soc = Soc::new(step, &bytes, (width, height), Pace::at_once());
+    let core = sim::soc::verilator().map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let mut soc = Soc::new(core, &bytes, (width, height), Pace::at_once());
     let start = Instant::now();
     let end = soc.frame(true, limit).map_err(|e| anyhow!("--engine rtl: {e}"))?;
     let secs = start.elapsed().as_secs_f64();

@@ -360,6 +360,15 @@ impl VlSim {
         (self.api.set)(self.handle, id.0, &masked);
     }
 
+    /// Drives input `id` (65 to 128 bits wide) with the low bits of `v`.
+    pub fn set_u128(&mut self, id: PortId, v: u128) {
+        let p = &self.ports[id.0 as usize];
+        debug_assert!(p.dir == PortDir::In && (65..=128).contains(&p.width), "{}: {}", self.unit, p.name);
+        let masked = if p.width == 128 { v } else { v & ((1 << p.width) - 1) };
+        let words = [masked as u64, (masked >> 64) as u64];
+        (self.api.set)(self.handle, id.0, words.as_ptr());
+    }
+
     /// Reads port `id` (at most 64 bits wide).
     pub fn get_u64(&mut self, id: PortId) -> u64 {
         debug_assert!(self.ports[id.0 as usize].width <= 64);
