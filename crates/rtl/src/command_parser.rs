@@ -11,7 +11,13 @@
 //! the top, four words a beat, so that once its last beat is in a header's word `i` is
 //! register `i` and a record's word `i` register [`RECORD_AT`] + `i`; [`HeaderCheck`],
 //! [`IndexCheck`] and [`VertexCheck`] check them the cycle after, as
-//! `vertex_buffer::read_header`, `read_index_record` and `read_vertex_record` do.
+//! `vertex_buffer::read_header`, `read_index_record` and `read_vertex_record` do. The
+//! header's screen must fit `max_width` x `max_height` (the buffers of `gpu_top`'s host).
+//!
+//! Index record t + 1 is read ahead while triangle t is assembled (the model's timing):
+//! asked for when record t is checked or taken from ahead, checked as it comes in (as
+//! triangle t + 1's: [`IndexCheck`]'s `t` is one more outside Tri Index), and held with its
+//! error code in the `ahead_*` registers until triangle t is handed over.
 //!
 //! The vertex cache is `2^CB` entries of block RAM, direct-mapped by the vertex index: a
 //! RAM of tags (the index an entry holds) beside a RAM of vertices (the six words at their
