@@ -164,9 +164,13 @@ fn sense(v: [u128; 23]) -> Sense {
     }
 }
 
+/// One cycle of a simulator driven by port name: drives the inputs named, returns every
+/// output, clocks.
+pub type NamedCycle = dyn FnMut(&[(&str, Value)]) -> Result<Outputs, String>;
+
 /// `gpu_top` in any simulator driven by port name (rust-hdl and Verilator in lockstep in
-/// the tests): each cycle drives the inputs, returns every output, clocks.
-pub struct ByName(pub Box<dyn FnMut(&[(&str, Value)]) -> Result<Outputs, String>>);
+/// the tests).
+pub struct ByName(pub Box<NamedCycle>);
 
 impl Core for ByName {
     fn cycle(&mut self, d: &Drive) -> Result<Sense, String> {
