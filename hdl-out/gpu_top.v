@@ -130,6 +130,54 @@ module gpu_top(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$
     wire  [3:0] parser$fault;
     wire  parser$frame_done;
     wire  parser$buffer_done;
+    reg  queue$clock;
+    reg  queue$inp$valid;
+    wire  queue$inp$ready;
+    reg  [15:0] queue$inp$v0_x;
+    reg  [15:0] queue$inp$v0_y;
+    reg  [17:0] queue$inp$v0_z;
+    reg  [7:0] queue$inp$v0_c0;
+    reg  [7:0] queue$inp$v0_c1;
+    reg  [7:0] queue$inp$v0_c2;
+    reg  [15:0] queue$inp$v0_iw;
+    reg  [15:0] queue$inp$v1_x;
+    reg  [15:0] queue$inp$v1_y;
+    reg  [17:0] queue$inp$v1_z;
+    reg  [7:0] queue$inp$v1_c0;
+    reg  [7:0] queue$inp$v1_c1;
+    reg  [7:0] queue$inp$v1_c2;
+    reg  [15:0] queue$inp$v1_iw;
+    reg  [15:0] queue$inp$v2_x;
+    reg  [15:0] queue$inp$v2_y;
+    reg  [17:0] queue$inp$v2_z;
+    reg  [7:0] queue$inp$v2_c0;
+    reg  [7:0] queue$inp$v2_c1;
+    reg  [7:0] queue$inp$v2_c2;
+    reg  [15:0] queue$inp$v2_iw;
+    wire  queue$out$valid;
+    reg  queue$out$ready;
+    wire  [15:0] queue$out$v0_x;
+    wire  [15:0] queue$out$v0_y;
+    wire  [17:0] queue$out$v0_z;
+    wire  [7:0] queue$out$v0_c0;
+    wire  [7:0] queue$out$v0_c1;
+    wire  [7:0] queue$out$v0_c2;
+    wire  [15:0] queue$out$v0_iw;
+    wire  [15:0] queue$out$v1_x;
+    wire  [15:0] queue$out$v1_y;
+    wire  [17:0] queue$out$v1_z;
+    wire  [7:0] queue$out$v1_c0;
+    wire  [7:0] queue$out$v1_c1;
+    wire  [7:0] queue$out$v1_c2;
+    wire  [15:0] queue$out$v1_iw;
+    wire  [15:0] queue$out$v2_x;
+    wire  [15:0] queue$out$v2_y;
+    wire  [17:0] queue$out$v2_z;
+    wire  [7:0] queue$out$v2_c0;
+    wire  [7:0] queue$out$v2_c1;
+    wire  [7:0] queue$out$v2_c2;
+    wire  [15:0] queue$out$v2_iw;
+    wire  queue$idle;
     reg  cull_sort$clock;
     reg  [10:0] cull_sort$width;
     reg  [10:0] cull_sort$height;
@@ -369,6 +417,56 @@ module gpu_top(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$
         .frame_done(parser$frame_done),
         .buffer_done(parser$buffer_done)
     );
+    gpu_top$queue queue(
+        .clock(queue$clock),
+        .inp$valid(queue$inp$valid),
+        .inp$ready(queue$inp$ready),
+        .inp$v0_x(queue$inp$v0_x),
+        .inp$v0_y(queue$inp$v0_y),
+        .inp$v0_z(queue$inp$v0_z),
+        .inp$v0_c0(queue$inp$v0_c0),
+        .inp$v0_c1(queue$inp$v0_c1),
+        .inp$v0_c2(queue$inp$v0_c2),
+        .inp$v0_iw(queue$inp$v0_iw),
+        .inp$v1_x(queue$inp$v1_x),
+        .inp$v1_y(queue$inp$v1_y),
+        .inp$v1_z(queue$inp$v1_z),
+        .inp$v1_c0(queue$inp$v1_c0),
+        .inp$v1_c1(queue$inp$v1_c1),
+        .inp$v1_c2(queue$inp$v1_c2),
+        .inp$v1_iw(queue$inp$v1_iw),
+        .inp$v2_x(queue$inp$v2_x),
+        .inp$v2_y(queue$inp$v2_y),
+        .inp$v2_z(queue$inp$v2_z),
+        .inp$v2_c0(queue$inp$v2_c0),
+        .inp$v2_c1(queue$inp$v2_c1),
+        .inp$v2_c2(queue$inp$v2_c2),
+        .inp$v2_iw(queue$inp$v2_iw),
+        .out$valid(queue$out$valid),
+        .out$ready(queue$out$ready),
+        .out$v0_x(queue$out$v0_x),
+        .out$v0_y(queue$out$v0_y),
+        .out$v0_z(queue$out$v0_z),
+        .out$v0_c0(queue$out$v0_c0),
+        .out$v0_c1(queue$out$v0_c1),
+        .out$v0_c2(queue$out$v0_c2),
+        .out$v0_iw(queue$out$v0_iw),
+        .out$v1_x(queue$out$v1_x),
+        .out$v1_y(queue$out$v1_y),
+        .out$v1_z(queue$out$v1_z),
+        .out$v1_c0(queue$out$v1_c0),
+        .out$v1_c1(queue$out$v1_c1),
+        .out$v1_c2(queue$out$v1_c2),
+        .out$v1_iw(queue$out$v1_iw),
+        .out$v2_x(queue$out$v2_x),
+        .out$v2_y(queue$out$v2_y),
+        .out$v2_z(queue$out$v2_z),
+        .out$v2_c0(queue$out$v2_c0),
+        .out$v2_c1(queue$out$v2_c1),
+        .out$v2_c2(queue$out$v2_c2),
+        .out$v2_iw(queue$out$v2_iw),
+        .idle(queue$idle)
+    );
     gpu_top$cull_sort cull_sort(
         .clock(cull_sort$clock),
         .width(cull_sort$width),
@@ -604,6 +702,7 @@ module gpu_top(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$
         background$d = background$q;
         regs$clock = clock;
         parser$clock = clock;
+        queue$clock = clock;
         cull_sort$clock = clock;
         core$clock = clock;
         pixel_bus$clock = clock;
@@ -663,13 +762,13 @@ module gpu_top(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$
         core$width = width$q;
         core$height = height$q;
         core$inp_last = 1'b0;
-        if (parser$out$valid & cull_sort$inp$ready) begin
+        if (parser$out$valid & queue$inp$ready) begin
             triangles$d = triangles$q + 32'h1;
         end
         if (busy$q & (parser$frame_done | parser$buffer_done | |parser$fault)) begin
             ended$d = 1'b1;
         end
-        done = busy$q & (header$q | |parser$fault) & ended$q & ~parser$out$valid & cull_sort$idle & core$idle & pixel_bus$idle;
+        done = busy$q & (header$q | |parser$fault) & ended$q & ~parser$out$valid & queue$idle & cull_sort$idle & core$idle & pixel_bus$idle;
         if (done) begin
             busy$d = 1'b0;
         end
@@ -690,29 +789,52 @@ module gpu_top(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$
         regs$status = status;
     end
     
-    always @(*) cull_sort$inp$v0_x = parser$out$v0_x;
-    always @(*) cull_sort$inp$v0_y = parser$out$v0_y;
-    always @(*) cull_sort$inp$v0_z = parser$out$v0_z;
-    always @(*) cull_sort$inp$v0_c0 = parser$out$v0_c0;
-    always @(*) cull_sort$inp$v0_c1 = parser$out$v0_c1;
-    always @(*) cull_sort$inp$v0_c2 = parser$out$v0_c2;
-    always @(*) cull_sort$inp$v0_iw = parser$out$v0_iw;
-    always @(*) cull_sort$inp$v1_x = parser$out$v1_x;
-    always @(*) cull_sort$inp$v1_y = parser$out$v1_y;
-    always @(*) cull_sort$inp$v1_z = parser$out$v1_z;
-    always @(*) cull_sort$inp$v1_c0 = parser$out$v1_c0;
-    always @(*) cull_sort$inp$v1_c1 = parser$out$v1_c1;
-    always @(*) cull_sort$inp$v1_c2 = parser$out$v1_c2;
-    always @(*) cull_sort$inp$v1_iw = parser$out$v1_iw;
-    always @(*) cull_sort$inp$v2_x = parser$out$v2_x;
-    always @(*) cull_sort$inp$v2_y = parser$out$v2_y;
-    always @(*) cull_sort$inp$v2_z = parser$out$v2_z;
-    always @(*) cull_sort$inp$v2_c0 = parser$out$v2_c0;
-    always @(*) cull_sort$inp$v2_c1 = parser$out$v2_c1;
-    always @(*) cull_sort$inp$v2_c2 = parser$out$v2_c2;
-    always @(*) cull_sort$inp$v2_iw = parser$out$v2_iw;
-    always @(*) cull_sort$inp$valid = parser$out$valid;
-    always @(*) parser$out$ready = cull_sort$inp$ready;
+    always @(*) queue$inp$v0_x = parser$out$v0_x;
+    always @(*) queue$inp$v0_y = parser$out$v0_y;
+    always @(*) queue$inp$v0_z = parser$out$v0_z;
+    always @(*) queue$inp$v0_c0 = parser$out$v0_c0;
+    always @(*) queue$inp$v0_c1 = parser$out$v0_c1;
+    always @(*) queue$inp$v0_c2 = parser$out$v0_c2;
+    always @(*) queue$inp$v0_iw = parser$out$v0_iw;
+    always @(*) queue$inp$v1_x = parser$out$v1_x;
+    always @(*) queue$inp$v1_y = parser$out$v1_y;
+    always @(*) queue$inp$v1_z = parser$out$v1_z;
+    always @(*) queue$inp$v1_c0 = parser$out$v1_c0;
+    always @(*) queue$inp$v1_c1 = parser$out$v1_c1;
+    always @(*) queue$inp$v1_c2 = parser$out$v1_c2;
+    always @(*) queue$inp$v1_iw = parser$out$v1_iw;
+    always @(*) queue$inp$v2_x = parser$out$v2_x;
+    always @(*) queue$inp$v2_y = parser$out$v2_y;
+    always @(*) queue$inp$v2_z = parser$out$v2_z;
+    always @(*) queue$inp$v2_c0 = parser$out$v2_c0;
+    always @(*) queue$inp$v2_c1 = parser$out$v2_c1;
+    always @(*) queue$inp$v2_c2 = parser$out$v2_c2;
+    always @(*) queue$inp$v2_iw = parser$out$v2_iw;
+    always @(*) queue$inp$valid = parser$out$valid;
+    always @(*) parser$out$ready = queue$inp$ready;
+    always @(*) cull_sort$inp$valid = queue$out$valid;
+    always @(*) queue$out$ready = cull_sort$inp$ready;
+    always @(*) cull_sort$inp$v0_x = queue$out$v0_x;
+    always @(*) cull_sort$inp$v0_y = queue$out$v0_y;
+    always @(*) cull_sort$inp$v0_z = queue$out$v0_z;
+    always @(*) cull_sort$inp$v0_c0 = queue$out$v0_c0;
+    always @(*) cull_sort$inp$v0_c1 = queue$out$v0_c1;
+    always @(*) cull_sort$inp$v0_c2 = queue$out$v0_c2;
+    always @(*) cull_sort$inp$v0_iw = queue$out$v0_iw;
+    always @(*) cull_sort$inp$v1_x = queue$out$v1_x;
+    always @(*) cull_sort$inp$v1_y = queue$out$v1_y;
+    always @(*) cull_sort$inp$v1_z = queue$out$v1_z;
+    always @(*) cull_sort$inp$v1_c0 = queue$out$v1_c0;
+    always @(*) cull_sort$inp$v1_c1 = queue$out$v1_c1;
+    always @(*) cull_sort$inp$v1_c2 = queue$out$v1_c2;
+    always @(*) cull_sort$inp$v1_iw = queue$out$v1_iw;
+    always @(*) cull_sort$inp$v2_x = queue$out$v2_x;
+    always @(*) cull_sort$inp$v2_y = queue$out$v2_y;
+    always @(*) cull_sort$inp$v2_z = queue$out$v2_z;
+    always @(*) cull_sort$inp$v2_c0 = queue$out$v2_c0;
+    always @(*) cull_sort$inp$v2_c1 = queue$out$v2_c1;
+    always @(*) cull_sort$inp$v2_c2 = queue$out$v2_c2;
+    always @(*) cull_sort$inp$v2_iw = queue$out$v2_iw;
     always @(*) core$inp$valid = cull_sort$out$valid;
     always @(*) cull_sort$out$ready = core$inp$ready;
     always @(*) core$inp$v0_x = cull_sort$out$v0_x;
@@ -58975,6 +59097,395 @@ module gpu_top$pixel_bus$zw_valid(d,q,clock);
     end
           
 endmodule // gpu_top$pixel_bus$zw_valid
+
+
+module gpu_top$queue(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,idle);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  inp$valid;
+    output reg  inp$ready;
+    input wire  [15:0] inp$v0_x;
+    input wire  [15:0] inp$v0_y;
+    input wire  [17:0] inp$v0_z;
+    input wire  [7:0] inp$v0_c0;
+    input wire  [7:0] inp$v0_c1;
+    input wire  [7:0] inp$v0_c2;
+    input wire  [15:0] inp$v0_iw;
+    input wire  [15:0] inp$v1_x;
+    input wire  [15:0] inp$v1_y;
+    input wire  [17:0] inp$v1_z;
+    input wire  [7:0] inp$v1_c0;
+    input wire  [7:0] inp$v1_c1;
+    input wire  [7:0] inp$v1_c2;
+    input wire  [15:0] inp$v1_iw;
+    input wire  [15:0] inp$v2_x;
+    input wire  [15:0] inp$v2_y;
+    input wire  [17:0] inp$v2_z;
+    input wire  [7:0] inp$v2_c0;
+    input wire  [7:0] inp$v2_c1;
+    input wire  [7:0] inp$v2_c2;
+    input wire  [15:0] inp$v2_iw;
+    output reg  out$valid;
+    input wire  out$ready;
+    output reg  [15:0] out$v0_x;
+    output reg  [15:0] out$v0_y;
+    output reg  [17:0] out$v0_z;
+    output reg  [7:0] out$v0_c0;
+    output reg  [7:0] out$v0_c1;
+    output reg  [7:0] out$v0_c2;
+    output reg  [15:0] out$v0_iw;
+    output reg  [15:0] out$v1_x;
+    output reg  [15:0] out$v1_y;
+    output reg  [17:0] out$v1_z;
+    output reg  [7:0] out$v1_c0;
+    output reg  [7:0] out$v1_c1;
+    output reg  [7:0] out$v1_c2;
+    output reg  [15:0] out$v1_iw;
+    output reg  [15:0] out$v2_x;
+    output reg  [15:0] out$v2_y;
+    output reg  [17:0] out$v2_z;
+    output reg  [7:0] out$v2_c0;
+    output reg  [7:0] out$v2_c1;
+    output reg  [7:0] out$v2_c2;
+    output reg  [15:0] out$v2_iw;
+    output reg  idle;
+    
+    // Constant declarations
+    localparam  depth = 16'h200;
+    localparam  at_y = 16'h10;
+    localparam  at_z = 16'h20;
+    localparam  at_c0 = 16'h32;
+    localparam  at_c1 = 16'h3a;
+    localparam  at_c2 = 16'h42;
+    localparam  at_iw = 16'h4a;
+    
+    // Stub signals
+    reg  [8:0] v0_ram$read_address;
+    reg  v0_ram$read_clock;
+    wire  [89:0] v0_ram$read_data;
+    reg  [8:0] v0_ram$write_address;
+    reg  v0_ram$write_clock;
+    reg  [89:0] v0_ram$write_data;
+    reg  v0_ram$write_enable;
+    reg  [8:0] v1_ram$read_address;
+    reg  v1_ram$read_clock;
+    wire  [89:0] v1_ram$read_data;
+    reg  [8:0] v1_ram$write_address;
+    reg  v1_ram$write_clock;
+    reg  [89:0] v1_ram$write_data;
+    reg  v1_ram$write_enable;
+    reg  [8:0] v2_ram$read_address;
+    reg  v2_ram$read_clock;
+    wire  [89:0] v2_ram$read_data;
+    reg  [8:0] v2_ram$write_address;
+    reg  v2_ram$write_clock;
+    reg  [89:0] v2_ram$write_data;
+    reg  v2_ram$write_enable;
+    reg  [8:0] wr$d;
+    wire  [8:0] wr$q;
+    reg  wr$clock;
+    reg  [8:0] rd$d;
+    wire  [8:0] rd$q;
+    reg  rd$clock;
+    reg  [15:0] level$d;
+    wire  [15:0] level$q;
+    reg  level$clock;
+    reg  fresh$d;
+    wire  fresh$q;
+    reg  fresh$clock;
+    
+    // Local signals
+    reg  push;
+    reg  pop;
+    reg  [8:0] read_at;
+    
+    // Sub module instances
+    gpu_top$queue$v0_ram v0_ram(
+        .read_address(v0_ram$read_address),
+        .read_clock(v0_ram$read_clock),
+        .read_data(v0_ram$read_data),
+        .write_address(v0_ram$write_address),
+        .write_clock(v0_ram$write_clock),
+        .write_data(v0_ram$write_data),
+        .write_enable(v0_ram$write_enable)
+    );
+    gpu_top$queue$v1_ram v1_ram(
+        .read_address(v1_ram$read_address),
+        .read_clock(v1_ram$read_clock),
+        .read_data(v1_ram$read_data),
+        .write_address(v1_ram$write_address),
+        .write_clock(v1_ram$write_clock),
+        .write_data(v1_ram$write_data),
+        .write_enable(v1_ram$write_enable)
+    );
+    gpu_top$queue$v2_ram v2_ram(
+        .read_address(v2_ram$read_address),
+        .read_clock(v2_ram$read_clock),
+        .read_data(v2_ram$read_data),
+        .write_address(v2_ram$write_address),
+        .write_clock(v2_ram$write_clock),
+        .write_data(v2_ram$write_data),
+        .write_enable(v2_ram$write_enable)
+    );
+    gpu_top$queue$wr wr(
+        .d(wr$d),
+        .q(wr$q),
+        .clock(wr$clock)
+    );
+    gpu_top$queue$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
+    gpu_top$queue$level level(
+        .d(level$d),
+        .q(level$q),
+        .clock(level$clock)
+    );
+    gpu_top$queue$fresh fresh(
+        .d(fresh$d),
+        .q(fresh$q),
+        .clock(fresh$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        wr$clock = clock;
+        rd$clock = clock;
+        level$clock = clock;
+        fresh$clock = clock;
+        wr$d = wr$q;
+        rd$d = rd$q;
+        level$d = level$q;
+        fresh$d = fresh$q;
+        v0_ram$read_clock = clock;
+        v0_ram$write_clock = clock;
+        v1_ram$read_clock = clock;
+        v1_ram$write_clock = clock;
+        v2_ram$read_clock = clock;
+        v2_ram$write_clock = clock;
+        inp$ready = level$q < depth;
+        out$valid = |level$q & ~(fresh$q & (level$q == 32'h1));
+        idle = ~|level$q;
+        push = inp$valid & inp$ready;
+        pop = out$valid & out$ready;
+        fresh$d = push;
+        if (push) begin
+            wr$d = wr$q + 32'h1;
+        end
+        if (pop) begin
+            rd$d = rd$q + 32'h1;
+        end
+        if (push & ~pop) begin
+            level$d = level$q + 32'h1;
+        end
+        if (~push & pop) begin
+            level$d = level$q - 32'h1;
+        end
+        v0_ram$write_enable = push;
+        v1_ram$write_enable = push;
+        v2_ram$write_enable = push;
+        v0_ram$write_address = wr$q;
+        v1_ram$write_address = wr$q;
+        v2_ram$write_address = wr$q;
+        v0_ram$write_data = ((inp$v0_x) & 90'h3ffffffffffffffffffffff) | (((inp$v0_y) & 90'h3ffffffffffffffffffffff) << at_y) | (((inp$v0_z) & 90'h3ffffffffffffffffffffff) << at_z) | (((inp$v0_c0) & 90'h3ffffffffffffffffffffff) << at_c0) | (((inp$v0_c1) & 90'h3ffffffffffffffffffffff) << at_c1) | (((inp$v0_c2) & 90'h3ffffffffffffffffffffff) << at_c2) | (((inp$v0_iw) & 90'h3ffffffffffffffffffffff) << at_iw);
+        v1_ram$write_data = ((inp$v1_x) & 90'h3ffffffffffffffffffffff) | (((inp$v1_y) & 90'h3ffffffffffffffffffffff) << at_y) | (((inp$v1_z) & 90'h3ffffffffffffffffffffff) << at_z) | (((inp$v1_c0) & 90'h3ffffffffffffffffffffff) << at_c0) | (((inp$v1_c1) & 90'h3ffffffffffffffffffffff) << at_c1) | (((inp$v1_c2) & 90'h3ffffffffffffffffffffff) << at_c2) | (((inp$v1_iw) & 90'h3ffffffffffffffffffffff) << at_iw);
+        v2_ram$write_data = ((inp$v2_x) & 90'h3ffffffffffffffffffffff) | (((inp$v2_y) & 90'h3ffffffffffffffffffffff) << at_y) | (((inp$v2_z) & 90'h3ffffffffffffffffffffff) << at_z) | (((inp$v2_c0) & 90'h3ffffffffffffffffffffff) << at_c0) | (((inp$v2_c1) & 90'h3ffffffffffffffffffffff) << at_c1) | (((inp$v2_c2) & 90'h3ffffffffffffffffffffff) << at_c2) | (((inp$v2_iw) & 90'h3ffffffffffffffffffffff) << at_iw);
+        read_at = rd$q;
+        if (pop) begin
+            read_at = rd$q + 32'h1;
+        end
+        v0_ram$read_address = read_at;
+        v1_ram$read_address = read_at;
+        v2_ram$read_address = read_at;
+        out$v0_x = v0_ram$read_data[(32'h0)+:(16)];
+        out$v0_y = v0_ram$read_data[(at_y)+:(16)];
+        out$v0_z = v0_ram$read_data[(at_z)+:(18)];
+        out$v0_c0 = v0_ram$read_data[(at_c0)+:(8)];
+        out$v0_c1 = v0_ram$read_data[(at_c1)+:(8)];
+        out$v0_c2 = v0_ram$read_data[(at_c2)+:(8)];
+        out$v0_iw = v0_ram$read_data[(at_iw)+:(16)];
+        out$v1_x = v1_ram$read_data[(32'h0)+:(16)];
+        out$v1_y = v1_ram$read_data[(at_y)+:(16)];
+        out$v1_z = v1_ram$read_data[(at_z)+:(18)];
+        out$v1_c0 = v1_ram$read_data[(at_c0)+:(8)];
+        out$v1_c1 = v1_ram$read_data[(at_c1)+:(8)];
+        out$v1_c2 = v1_ram$read_data[(at_c2)+:(8)];
+        out$v1_iw = v1_ram$read_data[(at_iw)+:(16)];
+        out$v2_x = v2_ram$read_data[(32'h0)+:(16)];
+        out$v2_y = v2_ram$read_data[(at_y)+:(16)];
+        out$v2_z = v2_ram$read_data[(at_z)+:(18)];
+        out$v2_c0 = v2_ram$read_data[(at_c0)+:(8)];
+        out$v2_c1 = v2_ram$read_data[(at_c1)+:(8)];
+        out$v2_c2 = v2_ram$read_data[(at_c2)+:(8)];
+        out$v2_iw = v2_ram$read_data[(at_iw)+:(16)];
+    end
+    
+endmodule // gpu_top$queue
+
+
+module gpu_top$queue$fresh(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$queue$fresh
+
+
+module gpu_top$queue$level(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$queue$level
+
+
+module gpu_top$queue$rd(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$queue$rd
+
+
+module gpu_top$queue$v0_ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [8:0] read_address;
+    input wire  read_clock;
+    output reg  [89:0] read_data;
+    input wire  [8:0] write_address;
+    input wire  write_clock;
+    input wire  [89:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg[89:0] mem[511:0];
+    
+    
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // gpu_top$queue$v0_ram
+
+
+module gpu_top$queue$v1_ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [8:0] read_address;
+    input wire  read_clock;
+    output reg  [89:0] read_data;
+    input wire  [8:0] write_address;
+    input wire  write_clock;
+    input wire  [89:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg[89:0] mem[511:0];
+    
+    
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // gpu_top$queue$v1_ram
+
+
+module gpu_top$queue$v2_ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [8:0] read_address;
+    input wire  read_clock;
+    output reg  [89:0] read_data;
+    input wire  [8:0] write_address;
+    input wire  write_clock;
+    input wire  [89:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg[89:0] mem[511:0];
+    
+    
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // gpu_top$queue$v2_ram
+
+
+module gpu_top$queue$wr(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$queue$wr
 
 
 module gpu_top$regs(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$w_ready,host$w_data,host$w_strb,host$b_valid,host$b_ready,host$b_resp,host$ar_valid,host$ar_ready,host$ar_addr,host$r_valid,host$r_ready,host$r_data,host$r_resp,status,frame_cycles,triangles,done,start,clear,irq,vb_addr,color_base,color_pitch,depth_base,depth_pitch,screen);

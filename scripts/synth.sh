@@ -26,7 +26,7 @@ fi
 # Units whose Verilog raster_top.v holds as submodules, synthesized there.
 SUBMODULES=(cull_sort divider triangle_setup edge_walk span pixel_out)
 # Units the test command maps with synth_ecp5 alone (--all runs every flow).
-ECP5_ONLY=(raster_top gpu_top se command_parser)
+ECP5_ONLY=(raster_top gpu_top se command_parser triangle_queue)
 flows=(generic ecp5)
 all=0
 if [[ ${1:-} == --all ]]; then

@@ -14,4 +14,5 @@ mod pixel_out;
 mod raster_top;
 mod se;
 mod span;
+mod triangle_queue;
 mod triangle_setup;

@@ -1,7 +1,7 @@
 //! The model of `rtl::gpu_top`, a frame at a time: what the core leaves in the colour and
 //! depth buffers and in its registers after a frame of a vertex buffer. Its cycles are not
 //! modelled here: every unit inside is cycle-exact to its own model (`command_parser`,
-//! `cull_sort`, ..., `pixel_bus`, `gpu_regs`), and the frame's pixels are
+//! `triangle_queue`, `cull_sort`, ..., `pixel_bus`, `gpu_regs`), and the frame's pixels are
 //! [`raster_top`](crate::raster_top)'s.
 
 use crate::command_parser::{self, Bench, Outcome, Params};

@@ -29,6 +29,7 @@ pub mod read_memory;
 pub mod render;
 pub mod se;
 pub mod span;
+pub mod triangle_queue;
 pub mod triangle_setup;
 pub mod vector;
 pub mod vertex_buffer;

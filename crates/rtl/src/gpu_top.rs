@@ -1,7 +1,7 @@
 //! `gpu_top`: edgepaint as a core for an FPGA design (001's processor, Fig. 1, without its
 //! texture and blending): the register block on an AXI4-Lite slave (`gpu_regs`), the
 //! command parser reading vertex buffers through an AXI4 read master (`command_parser`),
-//! the scanline rasterizer (`cull_sort`, setup with the divider, the edge walk, span) and
+//! the triangle queue (`triangle_queue`), the scanline rasterizer (`cull_sort`, setup with the divider, the edge walk, span) and
 //! the pixels into system memory on AXI4 (`pixel_bus`).
 //!
 //! **A frame.** Writing START (`CONTROL` bit 0) while idle starts the parser at `VB_ADDR`.
@@ -9,9 +9,11 @@
 //! pitches at 4 bytes a pixel; fault `SCREEN`), so no buffer makes the core write outside
 //! them. When the header has passed its checks, its screen, back-face flag and background become
 //! the rasterizer's and `pixel_bus`'s, and `pixel_bus` starts (clearing the buffers first
-//! when CLEAR is set; triangles wait meanwhile). The parser's triangles go to `cull_sort` as
-//! they come. The frame ends when the parser has ended (the buffer's last triangle, or an
-//! error) and the rasterizer and `pixel_bus` are empty: `IRQ` bit 0 is set, and
+//! when CLEAR is set; triangles wait meanwhile). The parser's triangles go to `cull_sort`
+//! through `triangle_queue` (512 triangles in block RAM), so that the parser reads ahead
+//! while large triangles are drawn and runs of culled ones do not wait for it. The frame
+//! ends when the parser has ended (the buffer's last triangle, or an error) and the queue,
+//! the rasterizer and `pixel_bus` are empty: `IRQ` bit 0 is set, and
 //! `FRAME_CYCLES` and `TRIANGLES` hold the frame's cycles (from START's cycle on) and the
 //! triangles handed over.
 //!
@@ -25,10 +27,12 @@ use super::command_parser::CommandParser;
 use super::cull_sort::CullSort;
 use super::gpu_regs::GpuRegs;
 use super::links::{
-    LiteSlave, ParsedSource, PixelSource, ReadMaster, SortedSource, TriangleSink, WordReadMaster, WordWriteMaster,
+    LiteSlave, ParsedSource, PixelSource, ReadMaster, SortedSource, TriangleSink, TriangleSource, WordReadMaster,
+    WordWriteMaster,
 };
 use super::pixel_bus::PixelBus;
 use super::raster_top::RasterTopCore;
+use super::triangle_queue::TriangleQueue;
 use super::widths::DIM;
 use crate::emit::{emit_unit, Emitted};
 use crate::link::Shared;
@@ -52,6 +56,7 @@ pub struct GpuTop {
     pub cw: WordWriteMaster,
     regs: GpuRegs,
     parser: CommandParser<9, 32>,
+    queue: TriangleQueue<9>,
     cull_sort: CullSort,
     core: RasterTopCore,
     pixel_bus: PixelBus,
@@ -95,7 +100,7 @@ impl Logic for GpuTop {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, busy, header, ended, cycles, triangles, width, height, cull_back, background);
-        clock!(self, clock, regs, parser, cull_sort, core, pixel_bus);
+        clock!(self, clock, regs, parser, queue, cull_sort, core, pixel_bus);
         LiteSlave::link(&mut self.host, &mut self.regs.host);
         ReadMaster::link(&mut self.vb, &mut self.parser.bus);
         WordReadMaster::link(&mut self.zr, &mut self.pixel_bus.zr);
@@ -157,17 +162,18 @@ impl Logic for GpuTop {
         self.pixel_bus.depth_base.next = self.regs.depth_base.val();
         self.pixel_bus.depth_pitch.next = self.regs.depth_pitch.val();
 
-        // Triangles: parser -> cull_sort -> the core -> pixel_bus.
+        // Triangles: parser -> the queue -> cull_sort -> the core -> pixel_bus.
         self.cull_sort.width.next = self.width.q.val();
         self.cull_sort.height.next = self.height.q.val();
         self.cull_sort.cull_back.next = self.cull_back.q.val();
         self.core.width.next = self.width.q.val();
         self.core.height.next = self.height.q.val();
-        Shared::<ParsedSource, TriangleSink>::join(&mut self.parser.out, &mut self.cull_sort.inp);
+        Shared::<ParsedSource, TriangleSink>::join(&mut self.parser.out, &mut self.queue.inp);
+        TriangleSource::join(&mut self.queue.out, &mut self.cull_sort.inp);
         SortedSource::join(&mut self.cull_sort.out, &mut self.core.inp);
         self.core.inp_last.next = false;
         PixelSource::join(&mut self.core.out, &mut self.pixel_bus.inp);
-        if self.parser.out.valid.val() & self.cull_sort.inp.ready.val() {
+        if self.parser.out.valid.val() & self.queue.inp.ready.val() {
             self.triangles.d.next = self.triangles.q.val() + 1;
         }
 
@@ -181,6 +187,7 @@ impl Logic for GpuTop {
             & (self.header.q.val() | self.parser.fault.val().any())
             & self.ended.q.val()
             & !self.parser.out.valid.val()
+            & self.queue.idle.val()
             & self.cull_sort.idle.val()
             & self.core.idle.val()
             & self.pixel_bus.idle.val();

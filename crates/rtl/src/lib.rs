@@ -48,6 +48,8 @@ macro_rules! scanline_units {
         pub mod span;
         #[path = "span_fifo.rs"]
         pub mod span_fifo;
+        #[path = "triangle_queue.rs"]
+        pub mod triangle_queue;
         #[path = "triangle_setup.rs"]
         pub mod triangle_setup;
         #[path = "widths.rs"]
@@ -170,7 +172,7 @@ macro_rules! no_formats {
 /// also at the crate's root (`rtl::raster_top`, ...).
 pub use n10::{
     command_parser, cull_sort, divider, edge_walk, gpu_regs, gpu_top, links, pixel_bus, pixel_out, raster_top, span,
-    triangle_setup, widths,
+    triangle_queue, triangle_setup, widths,
 };
 const _: () = assert!(n10::CLASS == fx::RTL_CLASS);
 
@@ -306,6 +308,19 @@ pub const UNITS: &[Unit] = &[
         build: by_build!(command_parser::emit_command_parser),
     },
     Unit {
+        name: "triangle_queue",
+        doc: "the triangles between command_parser and cull_sort in gpu_top, in block RAM: the parser runs ahead of the rasterizer",
+        params: &[
+            N,
+            Param {
+                name: "DEPTH",
+                default: 512,
+                doc: "triangles queued, 4, 64, 256 or 512 (model::triangle_queue::TriangleQueue::new)",
+            },
+        ],
+        build: by_build!(triangle_queue::emit_triangle_queue),
+    },
+    Unit {
         name: "raster_top",
         doc: "the scanline rasterizer of papers 001 and 003: cull_sort, setup with the divider, edge walk, span, pixel out",
         params: &[
@@ -362,6 +377,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("pixel_bus", &[("N", 10)]),
     ("gpu_regs", &[("N", 10)]),
     ("command_parser", &[("N", 10), ("CACHE", 512)]),
+    ("triangle_queue", &[("N", 10), ("DEPTH", 512)]),
     (
         "raster_top",
         &[
