@@ -63,7 +63,7 @@ want synth && step "lint of every raster_top variant, classes 11 and 12 too" scr
 # The test profile's build of edgepaint: the one the tests made.
 pnr() {
     local unit router
-    for unit in ept se cull_sort divider edge_walk span pixel_out pixel_bus gpu_regs command_parser triangle_setup raster_top gpu_top; do
+    for unit in ept se cull_sort divider edge_walk span pixel_out pixel_bus gpu_regs command_parser triangle_queue triangle_setup raster_top gpu_top; do
         router=router1
         [[ $unit == triangle_setup || $unit == raster_top || $unit == gpu_top ]] && router=router2
         cargo run --profile test --locked --quiet -- report --unit "$unit" --router $router \
