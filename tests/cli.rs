@@ -241,6 +241,9 @@ fn cli_render_rtl_draws_through_gpu_top() {
     assert!(summary.contains("3072 each among them"), "the clear of 64 x 48: {summary}");
     let cycles: u64 = summary.split(" cycles from START").next().unwrap().rsplit(' ').next().unwrap().parse().unwrap();
     assert!(cycles > 3072, "{summary}");
+    let mhz = sweep::clock::GPU_TOP_MHZ;
+    let at = format!("frame time {:.3} ms at {mhz:.1} MHz (gpu_top routed, ECP5)", cycles as f64 / (mhz * 1000.0));
+    assert!(summary.contains(&at), "{at}: {summary}");
     let (scan, _) = render("scan.png", &["--engine", "scanline"]);
     let (raster, _) = render("raster.png", &["--engine", "rtl", "--top", "raster_top"]);
     assert!(gpu == scan && raster == scan, "gpu_top's, raster_top's and the model's PNG are one");

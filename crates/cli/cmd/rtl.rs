@@ -230,14 +230,14 @@ fn gpu_top(loaded: &Loaded, cull_back: bool) -> Result<(Image, (String, u64))> {
     let depth16 = soc.depth.words.iter().map(|&d| depth16(d, z)).collect();
     let image = Image { width, height, rgb, depth16, written: fb.written.clone() };
     let direct = prep.cycles();
-    let (mhz, slowest) = sweep::clock::gpu_top_mhz();
+    let mhz = sweep::clock::GPU_TOP_MHZ;
     let fetches = soc.vb.requests.len();
     let summary = format!(
         "rtl (gpu_top of size class {}, in Verilator, from a vertex buffer of {} bytes in memory, driven through its \
          registers): {} triangles read, {} drawn; {} bursts read from the vertex buffer; {} depth and {} colour \
          writes (the clear's {} each among them); {} cycles from START to the interrupt ({} for \
-         raster_top fed the triangles directly, without the clear), frame time {:.3} ms at {mhz:.1} MHz (at most: \
-         {slowest} routed alone; gpu_top is not routed yet); {:.0} cycles/s simulated ({secs:.2} s); STATUS, \
+         raster_top fed the triangles directly, without the clear), frame time {:.3} ms at {mhz:.1} MHz (gpu_top \
+         routed, ECP5); {:.0} cycles/s simulated ({secs:.2} s); STATUS, \
          TRIANGLES, image and depth equal to model::gpu_top's",
         build.class,
         bytes.len(),
