@@ -47,31 +47,39 @@ pub struct Args {
     out: PathBuf,
 }
 
-/// An FPGA part for place and route: its name, nextpnr's flags for it, its LUT4s and
-/// multiplier blocks.
+/// An FPGA part for place and route: its name, nextpnr's flags for it, its LUT4s,
+/// multiplier blocks and block RAMs.
 struct Part {
     name: &'static str,
     flags: &'static [&'static str],
     luts: u64,
     dsps: u64,
+    brams: u64,
 }
 
 /// iCE40 part for place and route: the largest HX part (no DSP blocks; `synth_ice40`
 /// infers none).
 const ICE40: &[Part] =
-    &[Part { name: "iCE40HX8K-CT256", flags: &["--hx8k", "--package", "ct256"], luts: 7_680, dsps: 0 }];
+    &[Part { name: "iCE40HX8K-CT256", flags: &["--hx8k", "--package", "ct256"], luts: 7_680, dsps: 0, brams: 32 }];
 /// ECP5 parts, smallest first.
 const ECP5: &[Part] = &[
-    Part { name: "LFE5U-25F-CABGA381", flags: &["--25k", "--package", "CABGA381"], luts: 24_288, dsps: 28 },
-    Part { name: "LFE5U-45F-CABGA381", flags: &["--45k", "--package", "CABGA381"], luts: 43_848, dsps: 72 },
-    Part { name: "LFE5U-85F-CABGA381", flags: &["--85k", "--package", "CABGA381"], luts: 83_640, dsps: 156 },
+    Part { name: "LFE5U-25F-CABGA381", flags: &["--25k", "--package", "CABGA381"], luts: 24_288, dsps: 28, brams: 56 },
+    Part { name: "LFE5U-45F-CABGA381", flags: &["--45k", "--package", "CABGA381"], luts: 43_848, dsps: 72, brams: 108 },
+    Part {
+        name: "LFE5U-85F-CABGA381",
+        flags: &["--85k", "--package", "CABGA381"],
+        luts: 83_640,
+        dsps: 156,
+        brams: 208,
+    },
 ];
 
-/// The smallest of `parts` with room for `luts` and `dsps`, a quarter of its LUTs left
-/// for the wrapper and for routing: nextpnr-ecp5 took over 20 minutes and had not routed
-/// triangle_setup at 91% of an LFE5U-25F's LUTs.
-fn part_for(parts: &'static [Part], luts: u64, dsps: u64) -> Option<&'static Part> {
-    parts.iter().find(|p| luts * 4 <= p.luts * 3 && dsps <= p.dsps)
+/// The smallest of `parts` with room for `luts`, `dsps` and `brams` (iCE40 SB_RAM40_4K,
+/// ECP5 DP16KD), a quarter of its LUTs left for the wrapper and for routing: nextpnr-ecp5
+/// took over 20 minutes and had not routed triangle_setup at 91% of an LFE5U-25F's LUTs.
+/// (`triangle_queue`'s 138,240 RAM bits fit an HX8K's LUTs and not its 32 block RAMs.)
+fn part_for(parts: &'static [Part], luts: u64, dsps: u64, brams: u64) -> Option<&'static Part> {
+    parts.iter().find(|p| luts * 4 <= p.luts * 3 && dsps <= p.dsps && brams <= p.brams)
 }
 
 /// Target clocks for timing-driven placement, in MHz; the achieved Fmax is reported
@@ -114,6 +122,8 @@ struct Fpga {
     carry: u64,
     /// iCE40 SB_MAC16 or ECP5 MULT18X18D.
     dsps: u64,
+    /// iCE40 SB_RAM40_4K or ECP5 DP16KD block RAMs.
+    block_ram: u64,
     /// ECP5 TRELLIS_DPR16X4, 16 x 4 distributed (LUT) RAM with one write and one
     /// asynchronous read port (the shading engine's corner-turning memories); iCE40 has
     /// none (Yosys builds such memories from flip-flops there).
@@ -214,6 +224,7 @@ fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
         ffs: count(&ice40, &|k| k.starts_with("SB_DFF")),
         carry: count(&ice40, &|k| k == "SB_CARRY"),
         dsps: count(&ice40, &|k| k == "SB_MAC16"),
+        block_ram: count(&ice40, &|k| k == "SB_RAM40_4K"),
         lut_ram: 0,
         fmax_mhz: None,
     };
@@ -223,11 +234,12 @@ fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
         ffs: count(&ecp5_cells, &|k| k == "TRELLIS_FF"),
         carry: count(&ecp5_cells, &|k| k == "CCU2C"),
         dsps: count(&ecp5_cells, &|k| k == "MULT18X18D"),
+        block_ram: count(&ecp5_cells, &|k| k == "DP16KD"),
         lut_ram: count(&ecp5_cells, &|k| k == "TRELLIS_DPR16X4"),
         fmax_mhz: None,
     };
-    ice40.device = part_for(ICE40, ice40.luts, ice40.dsps).map(|p| p.name);
-    ecp5.device = part_for(ECP5, ecp5_lut_sites(&ecp5_cells), ecp5.dsps).map(|p| p.name);
+    ice40.device = part_for(ICE40, ice40.luts, ice40.dsps, ice40.block_ram).map(|p| p.name);
+    ecp5.device = part_for(ECP5, ecp5_lut_sites(&ecp5_cells), ecp5.dsps, ecp5.block_ram).map(|p| p.name);
     if let Some(router) = router {
         // The part is chosen for the wrapped unit: the wrapper's shift registers and output
         // multiplexers add a LUT and a flip-flop per port bit.
@@ -237,7 +249,8 @@ fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
         if ice40.device.is_some() {
             let script = format!("{read_both}; synth_ice40 -top {wrapped} -json {}", json("ice40_pnr.json"));
             let w = cells(&yosys_stat(dir, "ice40_pnr", &script, "")?);
-            let part = part_for(ICE40, count(&w, &|k| k == "SB_LUT4"), count(&w, &|k| k == "SB_MAC16"));
+            let part =
+                part_for(ICE40, count(&w, &|k| k == "SB_LUT4"), count(&w, &|k| k == "SB_MAC16"), ice40.block_ram);
             ice40.device = part.map(|p| p.name);
             if let Some(part) = part {
                 let args = (part.flags, "ice40_pnr.json", ICE40_TARGET_MHZ, &["--pcf-allow-unconstrained"][..]);
@@ -247,7 +260,7 @@ fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
         if ecp5.device.is_some() {
             let script = format!("{read_both}; synth_ecp5 -top {wrapped} -json {}", json("ecp5_pnr.json"));
             let w = cells(&yosys_stat(dir, "ecp5_pnr", &script, "")?);
-            let part = part_for(ECP5, ecp5_lut_sites(&w), count(&w, &|k| k == "MULT18X18D"));
+            let part = part_for(ECP5, ecp5_lut_sites(&w), count(&w, &|k| k == "MULT18X18D"), ecp5.block_ram);
             ecp5.device = part.map(|p| p.name);
             if let Some(part) = part {
                 std::fs::write(dir.join(ECP5_LPF.0), ECP5_LPF.1)
@@ -408,7 +421,7 @@ fn markdown(rows: &[Row]) -> String {
     md.push_str(&format!(
         "\nGE: transistors / 4, Yosys `stat -tech cmos` for the gates plus 24 per flip-flop (36 with an enable). LUT, FF, carry, DSP: the unit alone through `synth_ice40` / \
          `synth_ecp5`. Fmax: the unit between registers (`rtl::emit::pnr_wrapper`), nextpnr on {} and the \
-         smallest of {} with room for it (LUTs at most 75% of the part's).\n",
+         smallest of {} with room for it (LUTs at most 75% of the part's; its multipliers and block RAMs).\n",
         ICE40[0].name,
         ECP5.iter().map(|p| p.name).collect::<Vec<_>>().join(", ")
     ));
@@ -430,14 +443,18 @@ mod tests {
     #[test]
     fn report_places_on_the_smallest_part_with_room() {
         let name = |p: Option<&Part>| p.map(|p| p.name);
-        assert_eq!(name(part_for(ECP5, 1_000, 4)), Some("LFE5U-25F-CABGA381"));
+        assert_eq!(name(part_for(ECP5, 1_000, 4, 0)), Some("LFE5U-25F-CABGA381"));
         // 75% of 24,288 LUTs is 18,216: one more goes to the 45F; so do 29 multipliers.
-        assert_eq!(name(part_for(ECP5, 18_216, 0)), Some("LFE5U-25F-CABGA381"));
-        assert_eq!(name(part_for(ECP5, 18_217, 0)), Some("LFE5U-45F-CABGA381"));
-        assert_eq!(name(part_for(ECP5, 1_000, 29)), Some("LFE5U-45F-CABGA381"));
-        assert_eq!(name(part_for(ECP5, 70_000, 0)), None);
-        assert_eq!(name(part_for(ICE40, 6_000, 0)), None);
-        assert_eq!(name(part_for(ICE40, 5_760, 0)), Some("iCE40HX8K-CT256"));
+        assert_eq!(name(part_for(ECP5, 18_216, 0, 0)), Some("LFE5U-25F-CABGA381"));
+        assert_eq!(name(part_for(ECP5, 18_217, 0, 0)), Some("LFE5U-45F-CABGA381"));
+        assert_eq!(name(part_for(ECP5, 1_000, 29, 0)), Some("LFE5U-45F-CABGA381"));
+        assert_eq!(name(part_for(ECP5, 70_000, 0, 0)), None);
+        // Block RAMs: 56 on the 25F, 108 on the 45F, 208 on the 85F; 32 on an HX8K.
+        assert_eq!(name(part_for(ECP5, 1_000, 0, 57)), Some("LFE5U-45F-CABGA381"));
+        assert_eq!(name(part_for(ECP5, 1_000, 0, 209)), None);
+        assert_eq!(name(part_for(ICE40, 1_000, 0, 33)), None);
+        assert_eq!(name(part_for(ICE40, 6_000, 0, 0)), None);
+        assert_eq!(name(part_for(ICE40, 5_760, 0, 0)), Some("iCE40HX8K-CT256"));
     }
 
     #[test]
