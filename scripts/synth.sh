@@ -5,15 +5,17 @@
 # non-zero on any error. Logs and netlists go to $CARGO_TARGET_DIR/synth/ (default
 # target/synth/).
 #
-#   scripts/synth.sh          each distinct module once: raster_top.v (which holds
-#                             cull_sort, divider, triangle_setup, edge_walk, span and
-#                             pixel_out as its submodules), se.v, ept.v, and any unit not
-#                             listed in SUBMODULES; generic `synth -flatten` and
-#                             `synth_ecp5`, but raster_top.v, se.v and command_parser.v in
-#                             `synth_ecp5` only (their generic runs took 155 s, 86 s and
-#                             80 s of CPU, `synth_ecp5` runs the same coarse passes before
-#                             mapping, and the generic flow maps the parser's vertex cache
-#                             RAMs to 54,272 flip-flops) (the test command)
+#   scripts/synth.sh          each distinct module once: gpu_top.v (which holds
+#                             command_parser, triangle_queue, cull_sort, divider,
+#                             triangle_setup, edge_walk, span, pixel_bus and gpu_regs as its
+#                             submodules) in `synth_ecp5`, and every unit not listed in
+#                             SUBMODULES (pixel_out.v, ept.v: generic `synth -flatten` and
+#                             `synth_ecp5`; se.v: `synth_ecp5` only, its generic run took
+#                             86 s of CPU and `synth_ecp5` runs the same coarse passes before
+#                             mapping). raster_top.v is gpu_top's scanline units with
+#                             pixel_out behind them: its `synth_ecp5` took 176 s of CPU for
+#                             no module the others leave out but its own glue (the test
+#                             command)
 #   scripts/synth.sh --all    every file, also `synth_ice40` (scripts/soak.sh, about 4.5
 #                             minutes: raster_top's iCE40 mapping alone takes 2.5)
 set -euo pipefail
@@ -23,10 +25,11 @@ if ! command -v yosys >/dev/null; then
     echo "synth: yosys is not on PATH: run scripts/setup-tools.sh" >&2
     exit 1
 fi
-# Units whose Verilog raster_top.v holds as submodules, synthesized there.
-SUBMODULES=(cull_sort divider triangle_setup edge_walk span pixel_out)
+# Units whose modules gpu_top.v holds (raster_top.v: all but its glue and pixel_out, which
+# is synthesized alone), synthesized there.
+SUBMODULES=(command_parser triangle_queue cull_sort divider triangle_setup edge_walk span pixel_bus gpu_regs raster_top)
 # Units the test command maps with synth_ecp5 alone (--all runs every flow).
-ECP5_ONLY=(raster_top gpu_top se command_parser triangle_queue)
+ECP5_ONLY=(gpu_top se)
 flows=(generic ecp5)
 all=0
 if [[ ${1:-} == --all ]]; then

@@ -38,6 +38,10 @@ pub struct Args {
     /// Skip place and route (no Fmax): synthesis only, much faster.
     #[arg(long)]
     no_pnr: bool,
+    /// The flows to run: generic, ice40, ecp5 (give it several times; all three without
+    /// it). `--flow ecp5` reports a unit that fits no iCE40 (gpu_top) in an hour less.
+    #[arg(long = "flow", value_enum, value_name = "FLOW")]
+    flows: Vec<Flow>,
     /// nextpnr's router: router1 (its default) or router2, which routes large designs
     /// (triangle_setup, raster_top) in minutes where router1 had not finished in 20.
     #[arg(long, default_value = "router1", value_parser = ["router1", "router2"])]
@@ -45,6 +49,17 @@ pub struct Args {
     /// Directory for report.md, report.json and the tools' work files.
     #[arg(short, long, value_name = "DIR", default_value = "target/report")]
     out: PathBuf,
+}
+
+/// A synthesis flow of `edgepaint report`.
+#[derive(clap::ValueEnum, Clone, Copy, PartialEq, Eq)]
+enum Flow {
+    /// Yosys `synth -flatten`: generic cells and gate equivalents.
+    Generic,
+    /// `synth_ice40`, and place and route on an iCE40 HX8K.
+    Ice40,
+    /// `synth_ecp5`, and place and route on the smallest LFE5U with room.
+    Ecp5,
 }
 
 /// An FPGA part for place and route: its name, nextpnr's flags for it, its LUT4s,
@@ -94,9 +109,13 @@ struct Row {
     /// The formats file the unit was built at (`--formats`), if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     formats: Option<String>,
-    generic: Generic,
-    ice40: Fpga,
-    ecp5: Fpga,
+    /// Each flow's figures; `None` for a flow left out (`--flow`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    generic: Option<Generic>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    ice40: Option<Fpga>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    ecp5: Option<Fpga>,
 }
 
 #[derive(Serialize)]
@@ -150,9 +169,14 @@ pub fn run(args: Args) -> Result<()> {
             designs
         }
     };
+    let flows = if args.flows.is_empty() { vec![Flow::Generic, Flow::Ice40, Flow::Ecp5] } else { args.flows.clone() };
     let mut tools = vec!["yosys"];
     if !args.no_pnr {
-        tools.extend(["nextpnr-ice40", "nextpnr-ecp5"]);
+        tools.extend(flows.iter().filter_map(|f| match f {
+            Flow::Generic => None,
+            Flow::Ice40 => Some("nextpnr-ice40"),
+            Flow::Ecp5 => Some("nextpnr-ecp5"),
+        }));
     }
     for tool in tools {
         if Command::new(tool).arg("--version").output().is_err() {
@@ -167,7 +191,7 @@ pub fn run(args: Args) -> Result<()> {
         }
         let dir = args.out.join(format!("{}{tag}", e.unit));
         eprintln!("report: {}{tag} in {}", e.unit, dir.display());
-        let mut row = report(e, &dir, (!args.no_pnr).then_some(args.router.as_str()))?;
+        let mut row = report(e, &dir, &flows, (!args.no_pnr).then_some(args.router.as_str()))?;
         row.formats = args.formats.as_ref().map(|f| f.display().to_string());
         rows.push(row);
     }
@@ -195,7 +219,7 @@ fn sweep(params: &[(String, u64)]) -> Vec<Vec<(String, u64)>> {
     })
 }
 
-fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
+fn report(e: &Emitted, dir: &Path, flows: &[Flow], router: Option<&str>) -> Result<Row> {
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
     let unit_v = dir.join(e.file());
     let wrap_v = dir.join(format!("{}_pnr.v", e.unit));
@@ -203,64 +227,57 @@ fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
     std::fs::write(&wrap_v, rtl::emit::pnr_wrapper(e))?;
     let top = e.unit;
     let read = format!("read_verilog {}", unit_v.display());
+    // The part is chosen for the wrapped unit: the wrapper's shift registers and output
+    // multiplexers add a LUT and a flip-flop per port bit.
+    let read_both = format!("{read}; read_verilog {}", wrap_v.display());
+    let wrapped = format!("{top}_pnr");
+    let json = |name: &str| dir.join(name).display().to_string();
 
-    let generic = yosys_stat(dir, "generic", &format!("{read}; synth -flatten -top {top}"), "-tech cmos")?;
-    // "N+" when some cells (the flip-flops) have no estimate.
-    let transistors: u64 = generic["estimated_num_transistors"]
-        .as_str()
-        .and_then(|s| s.trim_end_matches('+').parse().ok())
-        .ok_or_else(|| anyhow!("no transistor estimate in Yosys' stat"))?;
-    let generic_cells = cells(&generic);
-    let flops = generic_cells.iter().filter_map(|(k, n)| ff_transistors(k).map(|t| (*n, n * t)));
-    let (flip_flops, ff_transistors) = flops.fold((0, 0), |(a, b), (n, t)| (a + n, b + t));
-    let ice40 = cells(&yosys_stat(dir, "ice40", &format!("{read}; synth_ice40 -top {top}"), "")?);
-    let ecp5_cells = cells(&yosys_stat(dir, "ecp5", &format!("{read}; synth_ecp5 -top {top}"), "")?);
-    let count = |cells: &BTreeMap<String, u64>, f: &dyn Fn(&str) -> bool| {
-        cells.iter().filter(|(k, _)| f(k)).map(|(_, n)| n).sum()
-    };
-    let mut ice40 = Fpga {
-        device: None,
-        luts: count(&ice40, &|k| k == "SB_LUT4"),
-        ffs: count(&ice40, &|k| k.starts_with("SB_DFF")),
-        carry: count(&ice40, &|k| k == "SB_CARRY"),
-        dsps: count(&ice40, &|k| k == "SB_MAC16"),
-        block_ram: count(&ice40, &|k| k == "SB_RAM40_4K"),
-        lut_ram: 0,
-        fmax_mhz: None,
-    };
-    let mut ecp5 = Fpga {
-        device: None,
-        luts: count(&ecp5_cells, &|k| k == "LUT4"),
-        ffs: count(&ecp5_cells, &|k| k == "TRELLIS_FF"),
-        carry: count(&ecp5_cells, &|k| k == "CCU2C"),
-        dsps: count(&ecp5_cells, &|k| k == "MULT18X18D"),
-        block_ram: count(&ecp5_cells, &|k| k == "DP16KD"),
-        lut_ram: count(&ecp5_cells, &|k| k == "TRELLIS_DPR16X4"),
-        fmax_mhz: None,
-    };
-    ice40.device = part_for(ICE40, ice40.luts, ice40.dsps, ice40.block_ram).map(|p| p.name);
-    ecp5.device = part_for(ECP5, ecp5_lut_sites(&ecp5_cells), ecp5.dsps, ecp5.block_ram).map(|p| p.name);
-    if let Some(router) = router {
-        // The part is chosen for the wrapped unit: the wrapper's shift registers and output
-        // multiplexers add a LUT and a flip-flop per port bit.
-        let read_both = format!("{read}; read_verilog {}", wrap_v.display());
-        let wrapped = format!("{top}_pnr");
-        let json = |name: &str| dir.join(name).display().to_string();
-        if ice40.device.is_some() {
+    let generic = if flows.contains(&Flow::Generic) { Some(generic(dir, &read, top)?) } else { None };
+    let ice40 = if flows.contains(&Flow::Ice40) {
+        let alone = cells(&yosys_stat(dir, "ice40", &format!("{read}; synth_ice40 -top {top}"), "")?);
+        let mut ice40 = Fpga {
+            device: None,
+            luts: count(&alone, |k| k == "SB_LUT4"),
+            ffs: count(&alone, |k| k.starts_with("SB_DFF")),
+            carry: count(&alone, |k| k == "SB_CARRY"),
+            dsps: count(&alone, |k| k == "SB_MAC16"),
+            block_ram: count(&alone, |k| k == "SB_RAM40_4K"),
+            lut_ram: 0,
+            fmax_mhz: None,
+        };
+        ice40.device = part_for(ICE40, ice40.luts, ice40.dsps, ice40.block_ram).map(|p| p.name);
+        if let (Some(router), Some(_)) = (router, ice40.device) {
             let script = format!("{read_both}; synth_ice40 -top {wrapped} -json {}", json("ice40_pnr.json"));
             let w = cells(&yosys_stat(dir, "ice40_pnr", &script, "")?);
-            let part =
-                part_for(ICE40, count(&w, &|k| k == "SB_LUT4"), count(&w, &|k| k == "SB_MAC16"), ice40.block_ram);
+            let part = part_for(ICE40, count(&w, |k| k == "SB_LUT4"), count(&w, |k| k == "SB_MAC16"), ice40.block_ram);
             ice40.device = part.map(|p| p.name);
             if let Some(part) = part {
                 let args = (part.flags, "ice40_pnr.json", ICE40_TARGET_MHZ, &["--pcf-allow-unconstrained"][..]);
                 ice40.fmax_mhz = Some(nextpnr(dir, "nextpnr-ice40", args, router)?);
             }
         }
-        if ecp5.device.is_some() {
+        Some(ice40)
+    } else {
+        None
+    };
+    let ecp5 = if flows.contains(&Flow::Ecp5) {
+        let alone = cells(&yosys_stat(dir, "ecp5", &format!("{read}; synth_ecp5 -top {top}"), "")?);
+        let mut ecp5 = Fpga {
+            device: None,
+            luts: count(&alone, |k| k == "LUT4"),
+            ffs: count(&alone, |k| k == "TRELLIS_FF"),
+            carry: count(&alone, |k| k == "CCU2C"),
+            dsps: count(&alone, |k| k == "MULT18X18D"),
+            block_ram: count(&alone, |k| k == "DP16KD"),
+            lut_ram: count(&alone, |k| k == "TRELLIS_DPR16X4"),
+            fmax_mhz: None,
+        };
+        ecp5.device = part_for(ECP5, ecp5_lut_sites(&alone), ecp5.dsps, ecp5.block_ram).map(|p| p.name);
+        if let (Some(router), Some(_)) = (router, ecp5.device) {
             let script = format!("{read_both}; synth_ecp5 -top {wrapped} -json {}", json("ecp5_pnr.json"));
             let w = cells(&yosys_stat(dir, "ecp5_pnr", &script, "")?);
-            let part = part_for(ECP5, ecp5_lut_sites(&w), count(&w, &|k| k == "MULT18X18D"), ecp5.block_ram);
+            let part = part_for(ECP5, ecp5_lut_sites(&w), count(&w, |k| k == "MULT18X18D"), ecp5.block_ram);
             ecp5.device = part.map(|p| p.name);
             if let Some(part) = part {
                 std::fs::write(dir.join(ECP5_LPF.0), ECP5_LPF.1)
@@ -270,21 +287,36 @@ fn report(e: &Emitted, dir: &Path, router: Option<&str>) -> Result<Row> {
                 ecp5.fmax_mhz = Some(nextpnr(dir, "nextpnr-ecp5", args, router)?);
             }
         }
-    }
-    Ok(Row {
-        unit: e.unit.to_owned(),
-        parameters: e.params.clone(),
-        formats: None,
-        generic: Generic {
-            cells: generic["num_cells"].as_u64().ok_or_else(|| anyhow!("no cell count in Yosys' stat"))?,
-            transistors,
-            flip_flops,
-            ff_transistors,
-            gate_equivalents: (transistors + ff_transistors) as f64 / 4.0,
-        },
-        ice40,
-        ecp5,
+        Some(ecp5)
+    } else {
+        None
+    };
+    Ok(Row { unit: e.unit.to_owned(), parameters: e.params.clone(), formats: None, generic, ice40, ecp5 })
+}
+
+/// The generic flow: Yosys `synth -flatten` of the unit alone (`read`: the command reading
+/// its Verilog; `top`: its module) and `stat -tech cmos`.
+fn generic(dir: &Path, read: &str, top: &str) -> Result<Generic> {
+    let generic = yosys_stat(dir, "generic", &format!("{read}; synth -flatten -top {top}"), "-tech cmos")?;
+    // "N+" when some cells (the flip-flops) have no estimate.
+    let transistors: u64 = generic["estimated_num_transistors"]
+        .as_str()
+        .and_then(|s| s.trim_end_matches('+').parse().ok())
+        .ok_or_else(|| anyhow!("no transistor estimate in Yosys' stat"))?;
+    let flops = cells(&generic).into_iter().filter_map(|(k, n)| ff_transistors(&k).map(|t| (n, n * t)));
+    let (flip_flops, ff_transistors) = flops.fold((0, 0), |(a, b), (n, t)| (a + n, b + t));
+    Ok(Generic {
+        cells: generic["num_cells"].as_u64().ok_or_else(|| anyhow!("no cell count in Yosys' stat"))?,
+        transistors,
+        flip_flops,
+        ff_transistors,
+        gate_equivalents: (transistors + ff_transistors) as f64 / 4.0,
     })
+}
+
+/// The cells of `cells` whose type passes `f`.
+fn count(cells: &BTreeMap<String, u64>, f: impl Fn(&str) -> bool) -> u64 {
+    cells.iter().filter(|(k, _)| f(k)).map(|(_, n)| n).sum()
 }
 
 /// The LUT4 sites an ECP5 netlist (`synth_ecp5` cell counts) occupies: a CCU2C (two bits
@@ -384,10 +416,15 @@ fn nextpnr(dir: &Path, tool: &str, args: (&[&str], &str, &str, &[&str]), router:
 }
 
 fn markdown(rows: &[Row]) -> String {
+    const SKIPPED: &str = "–";
     let mhz = |f: &Fpga| match (f.fmax_mhz, f.device) {
         (Some(mhz), Some(part)) => format!("{mhz:.1} ({})", part.split('-').take(2).collect::<Vec<_>>().join("-")),
         (_, None) => "does not fit".to_owned(),
-        (None, Some(_)) => "–".to_owned(),
+        (None, Some(_)) => SKIPPED.to_owned(),
+    };
+    // A flow left out (`--flow`) leaves its columns "–".
+    let columns = |f: Option<&Fpga>, n: usize, cols: &dyn Fn(&Fpga) -> Vec<String>| {
+        f.map_or_else(|| vec![SKIPPED.to_owned(); n], cols)
     };
     let mut md = String::from(
         "| unit | parameters | generic cells | GE (2-input) | iCE40 LUT | iCE40 FF | iCE40 carry | iCE40 DSP | iCE40 Fmax MHz | ECP5 LUT | ECP5 FF | ECP5 LUT RAM | ECP5 carry | ECP5 DSP | ECP5 Fmax MHz |\n\
@@ -396,27 +433,19 @@ fn markdown(rows: &[Row]) -> String {
     for r in rows {
         let mut params: Vec<String> = r.parameters.iter().map(|(k, v)| format!("{k}={v}")).collect();
         params.extend(r.formats.iter().map(|f| format!("formats={f}")));
-        let (i, e) = (&r.ice40, &r.ecp5);
-        writeln!(
-            md,
-            "| {} | {} | {} | {:.0} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
-            r.unit,
-            params.join(" "),
-            r.generic.cells,
-            r.generic.gate_equivalents,
-            i.luts,
-            i.ffs,
-            i.carry,
-            i.dsps,
-            mhz(i),
-            e.luts,
-            e.ffs,
-            e.lut_ram,
-            e.carry,
-            e.dsps,
-            mhz(e)
-        )
-        .expect("writing to a String");
+        let mut cells = vec![r.unit.clone(), params.join(" ")];
+        cells.extend(match &r.generic {
+            Some(g) => vec![g.cells.to_string(), format!("{:.0}", g.gate_equivalents)],
+            None => vec![SKIPPED.to_owned(); 2],
+        });
+        cells.extend(columns(r.ice40.as_ref(), 5, &|i| {
+            vec![i.luts.to_string(), i.ffs.to_string(), i.carry.to_string(), i.dsps.to_string(), mhz(i)]
+        }));
+        cells.extend(columns(r.ecp5.as_ref(), 6, &|e| {
+            let n = [e.luts, e.ffs, e.lut_ram, e.carry, e.dsps];
+            n.iter().map(u64::to_string).chain([mhz(e)]).collect()
+        }));
+        writeln!(md, "| {} |", cells.join(" | ")).expect("writing to a String");
     }
     md.push_str(&format!(
         "\nGE: transistors / 4, Yosys `stat -tech cmos` for the gates plus 24 per flip-flop (36 with an enable). LUT, FF, carry, DSP: the unit alone through `synth_ice40` / \
@@ -455,6 +484,35 @@ mod tests {
         assert_eq!(name(part_for(ICE40, 1_000, 0, 33)), None);
         assert_eq!(name(part_for(ICE40, 6_000, 0, 0)), None);
         assert_eq!(name(part_for(ICE40, 5_760, 0, 0)), Some("iCE40HX8K-CT256"));
+    }
+
+    #[test]
+    fn report_leaves_the_columns_of_a_flow_left_out_empty() {
+        let ecp5 = Fpga {
+            device: Some("LFE5U-85F-CABGA381"),
+            luts: 26_565,
+            ffs: 18_784,
+            carry: 4_269,
+            dsps: 32,
+            block_ram: 13,
+            lut_ram: 0,
+            fmax_mhz: Some(30.4),
+        };
+        let row = Row {
+            unit: "gpu_top".to_owned(),
+            parameters: BTreeMap::from([("N".to_owned(), 10)]),
+            formats: None,
+            generic: None,
+            ice40: None,
+            ecp5: Some(ecp5),
+        };
+        let md = markdown(&[row]);
+        let line = md.lines().nth(2).expect("a row under the header");
+        assert_eq!(
+            line,
+            "| gpu_top | N=10 | – | – | – | – | – | – | – | 26565 | 18784 | 0 | 4269 | 32 | 30.4 (LFE5U-85F) |"
+        );
+        assert_eq!(line.matches('|').count(), md.lines().next().unwrap().matches('|').count(), "one cell per column");
     }
 
     #[test]
