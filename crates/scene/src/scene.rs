@@ -503,27 +503,10 @@ mod tests {
         assert!(error_of(&v).contains("missing field `camera`"), "{}", error_of(&v));
     }
 
-    /// A folder of its own under the system temp dir, removed on drop.
-    struct TempDir(PathBuf);
-
-    impl TempDir {
-        fn new(name: &str) -> TempDir {
-            let dir = std::env::temp_dir().join(format!("edgepaint-scene-{name}-{}", std::process::id()));
-            std::fs::create_dir_all(&dir).unwrap();
-            TempDir(dir)
-        }
-    }
-
-    impl Drop for TempDir {
-        fn drop(&mut self) {
-            let _ = std::fs::remove_dir_all(&self.0);
-        }
-    }
-
     #[test]
     fn scene_obj_errors_name_the_obj_and_the_scene_file() {
-        let dir = TempDir::new("obj-errors");
-        let scene_path = dir.0.join("s.json");
+        let dir = tempfile::tempdir().unwrap();
+        let scene_path = dir.path().join("s.json");
         let write_scene = |obj: &str| {
             let mut v = valid();
             v["objects"][0] = json!({ "obj": obj });
@@ -541,7 +524,7 @@ mod tests {
         ];
         for (name, content, want) in cases {
             if let Some(text) = content {
-                std::fs::write(dir.0.join(name), text).unwrap();
+                std::fs::write(dir.path().join(name), text).unwrap();
             }
             write_scene(name);
             let err = Scene::load(&scene_path).unwrap_err().to_string();
@@ -549,10 +532,10 @@ mod tests {
             assert!(scene_named && err.contains(want), "{name}: got {err:?}, want the scene file and {want:?}");
         }
         // A good OBJ beside the scene loads, relative to the scene's folder.
-        std::fs::write(dir.0.join("tri.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+        std::fs::write(dir.path().join("tri.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
         write_scene("tri.obj");
         let s = Scene::load(&scene_path).unwrap();
-        assert_eq!(s.objects[0].source, ModelSource::Obj(dir.0.join("tri.obj")));
+        assert_eq!(s.objects[0].source, ModelSource::Obj(dir.path().join("tri.obj")));
         assert_eq!(s.objects[0].mesh.vertex_count(), 3);
     }
 }

@@ -428,15 +428,16 @@ mod tests {
     use std::ffi::OsString;
     use std::path::{Path, PathBuf};
 
-    /// A binary under `<root>/target/release/` (made here, with `marker` in `target/`).
-    fn tree(name: &str, marker: Option<&str>) -> (PathBuf, PathBuf) {
-        let root = std::env::temp_dir().join(format!("edgepaint-work-dir-{name}-{}", std::process::id()));
-        let target = root.join("target");
+    /// A binary under `<root>/target/release/` (made here, with `marker` in `target/`), and
+    /// the root, removed when dropped.
+    fn tree(marker: Option<&str>) -> (PathBuf, PathBuf, tempfile::TempDir) {
+        let root = tempfile::tempdir().unwrap();
+        let target = root.path().join("target");
         std::fs::create_dir_all(target.join("release")).unwrap();
         if let Some(m) = marker {
             std::fs::write(target.join(m), "").unwrap();
         }
-        (target.clone(), target.join("release").join("edgepaint"))
+        (target.clone(), target.join("release").join("edgepaint"), root)
     }
 
     fn env<'a>(vars: &'a [(&'a str, &'a str)]) -> impl Fn(&str) -> Option<OsString> + 'a {
@@ -445,21 +446,19 @@ mod tests {
 
     #[test]
     fn work_dir_is_the_cargo_target_directory_tagged_or_not() {
-        for (name, marker) in [("tag", "CACHEDIR.TAG"), ("rustc", ".rustc_info.json")] {
-            let (target, exe) = tree(name, Some(marker));
+        for marker in ["CACHEDIR.TAG", ".rustc_info.json"] {
+            let (target, exe, _root) = tree(Some(marker));
             assert_eq!(work_dir(Some(&exe), env(&[("HOME", "/home/u")])), target, "{marker}");
-            std::fs::remove_dir_all(target.parent().unwrap()).unwrap();
         }
     }
 
     #[test]
     fn work_dir_outside_a_target_directory_is_the_user_cache() {
-        let (target, exe) = tree("installed", None);
+        let (_, exe, _root) = tree(None);
         let home = [("HOME", "/home/u")];
         assert_eq!(work_dir(Some(&exe), env(&home)), Path::new("/home/u/.cache/edgepaint"));
         let xdg = [("HOME", "/home/u"), ("XDG_CACHE_HOME", "/var/cache/u")];
         assert_eq!(work_dir(Some(&exe), env(&xdg)), Path::new("/var/cache/u/edgepaint"));
         assert_eq!(work_dir(None, env(&[])), std::env::temp_dir().join("edgepaint"));
-        std::fs::remove_dir_all(target.parent().unwrap()).unwrap();
     }
 }

@@ -159,7 +159,8 @@ mod tests {
     /// A cell of `family` at (x, y): passing, failing or (None) not run.
     #[test]
     fn a_map_is_drawn_with_a_line_per_boundary_edge() {
-        let dir = std::env::temp_dir().join(format!("stability-map-{}", std::process::id()));
+        let tmp = tempfile::tempdir().unwrap();
+        let dir = tmp.path();
         let (x, y) = (Family::Depth.x().values, Family::Depth.y().unwrap().values);
         // Row 0 fails from x[2]; row 1 from x[3], and its last cell is not run: boundary
         // edges (x[1] | x[2]) and (x[2] | x[3]) across, and under x[2] between the rows.
@@ -173,12 +174,11 @@ mod tests {
         let all = maps(&cells);
         assert_eq!(all.len(), 1);
         assert_eq!(all[0].stem(), "depth_scanline_default");
-        draw(&all[0], &dir).unwrap();
+        draw(&all[0], dir).unwrap();
         let svg = std::fs::read_to_string(dir.join("depth_scanline_default.svg")).unwrap();
         assert!(svg.contains(&all[0].title()), "the caption");
         assert_eq!(svg.matches("stroke-width=\"4\"").count(), 3, "three boundary edges");
         assert!(svg.contains("near 1") && svg.contains("2^-4"), "the axes' labels");
         assert!(dir.join("depth_scanline_default.png").is_file());
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

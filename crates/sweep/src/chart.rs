@@ -549,13 +549,6 @@ pub(crate) mod tests {
         rows
     }
 
-    /// A fresh directory under the system's temporary directory.
-    pub(crate) fn temp(name: &str) -> std::path::PathBuf {
-        let dir = std::env::temp_dir().join(format!("sweep-{name}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        dir
-    }
-
     fn find<'a>(charts: &'a [Chart], stem: &str) -> &'a Chart {
         charts.iter().find(|c| c.stem == stem).unwrap_or_else(|| panic!("no chart {stem}"))
     }
@@ -664,9 +657,10 @@ pub(crate) mod tests {
 
     #[test]
     fn draw_writes_a_png_and_an_svg() {
-        let dir = temp("chart-draw");
+        let tmp = tempfile::tempdir().unwrap();
+        let dir = tmp.path();
         for c in charts(&rows()) {
-            draw(&c, &dir).unwrap();
+            draw(&c, dir).unwrap();
             let png = image::open(dir.join(format!("{}.png", c.stem))).unwrap();
             assert_eq!((png.width(), png.height()), SIZE);
             let svg = std::fs::read_to_string(dir.join(format!("{}.svg", c.stem))).unwrap();
@@ -680,8 +674,7 @@ pub(crate) mod tests {
             marks: Vec::new(),
             ..charts(&rows())[0].clone()
         };
-        assert!(draw(&empty, &dir).unwrap_err().contains("no point"));
+        assert!(draw(&empty, dir).unwrap_err().contains("no point"));
         assert!(!dir.join("empty.png").exists() && !dir.join("empty.svg").exists());
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

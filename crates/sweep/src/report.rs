@@ -138,14 +138,15 @@ fn design(rows: &[Row], method: &str, point: &str) -> (String, String) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::chart::tests::{rows, temp};
+    use crate::chart::tests::rows;
 
     #[test]
     fn the_report_embeds_every_chart_and_tabulates_the_front() {
         let rows = rows();
         let charts = crate::chart::charts(&rows);
-        let dir = temp("report");
-        write(&dir, &rows, &charts).unwrap();
+        let tmp = tempfile::tempdir().unwrap();
+        let dir = tmp.path();
+        write(dir, &rows, &charts).unwrap();
         let md = std::fs::read_to_string(dir.join(FILE)).unwrap();
         for stem in ["error_vs_cycles", "error_vs_frame_time", "error_vs_area", "sensitivity_xy_frac"] {
             assert!(md.contains(&format!("({stem}.svg)")), "{stem} missing:\n{md}");
@@ -163,6 +164,5 @@ mod tests {
         assert!(
             md.contains("cheapest design on the front with no more error is scanline default at 20000 LUT4s: 0% less")
         );
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

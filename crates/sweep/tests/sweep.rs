@@ -17,30 +17,23 @@ fn grid() -> Grid {
         .expect("a valid grid")
 }
 
-/// A fresh directory under the system's temporary one.
-fn scratch(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("edgepaint-sweep-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    d
-}
-
 #[test]
 fn sweep_shards_merge_to_the_unsharded_run() {
     let inputs = [input("cube", 48, 32), input("cone", 40, 30)];
     let points = grid().points();
     let whole = run(&inputs, &points, &Options::default(), &|| {}).unwrap().rows;
     assert_eq!(whole.len(), inputs.len() * points.len());
-    let dirs: Vec<PathBuf> = (0..3)
+    let dirs: Vec<tempfile::TempDir> = (0..3)
         .map(|i| {
-            let d = scratch(&format!("shard{i}"));
+            let d = tempfile::tempdir().unwrap();
             let rows =
                 run(&inputs, &points, &Options { shard: Some((i, 3)), ..Options::default() }, &|| {}).unwrap().rows;
             assert!(rows.len() < whole.len());
-            sweep::store::write(&d, &rows).unwrap();
+            sweep::store::write(d.path(), &rows).unwrap();
             d
         })
         .collect();
-    let merged = sweep::store::merge(&dirs.iter().map(PathBuf::as_path).collect::<Vec<_>>()).unwrap();
+    let merged = sweep::store::merge(&dirs.iter().map(tempfile::TempDir::path).collect::<Vec<_>>()).unwrap();
     assert_eq!(merged, whole);
     // Coarser subpixels cost accuracy: the sweep sees what the formats do.
     let err =
@@ -56,11 +49,11 @@ fn sweep_shards_merge_to_the_unsharded_run() {
 fn sweep_reads_a_cached_result_back() {
     let inputs = [input("cube", 32, 24)];
     let points = &grid().points()[..3];
-    let cache = scratch("cache");
-    let opts = Options { cache: Some(cache.clone()), ..Options::default() };
+    let cache = tempfile::tempdir().unwrap();
+    let opts = Options { cache: Some(cache.path().to_path_buf()), ..Options::default() };
     let first = run(&inputs, points, &opts, &|| {}).unwrap().rows;
     // Mark every cached result: a second run returns the marks, so it measured nothing.
-    for f in std::fs::read_dir(&cache).unwrap() {
+    for f in std::fs::read_dir(cache.path()).unwrap() {
         let path = f.unwrap().path();
         let mut row: sweep::row::Row = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
         row.psnr_db = -1.0;
