@@ -427,8 +427,8 @@ fn markdown(rows: &[Row]) -> String {
         f.map_or_else(|| vec![SKIPPED.to_owned(); n], cols)
     };
     let mut md = String::from(
-        "| unit | parameters | generic cells | GE (2-input) | iCE40 LUT | iCE40 FF | iCE40 carry | iCE40 DSP | iCE40 Fmax MHz | ECP5 LUT | ECP5 FF | ECP5 LUT RAM | ECP5 carry | ECP5 DSP | ECP5 Fmax MHz |\n\
-         |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+        "| unit | parameters | generic cells | GE (2-input) | iCE40 LUT | iCE40 FF | iCE40 carry | iCE40 DSP | iCE40 BRAM | iCE40 Fmax MHz | ECP5 LUT | ECP5 FF | ECP5 LUT RAM | ECP5 carry | ECP5 DSP | ECP5 BRAM | ECP5 Fmax MHz |\n\
+         |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
     );
     for r in rows {
         let mut params: Vec<String> = r.parameters.iter().map(|(k, v)| format!("{k}={v}")).collect();
@@ -438,18 +438,19 @@ fn markdown(rows: &[Row]) -> String {
             Some(g) => vec![g.cells.to_string(), format!("{:.0}", g.gate_equivalents)],
             None => vec![SKIPPED.to_owned(); 2],
         });
-        cells.extend(columns(r.ice40.as_ref(), 5, &|i| {
-            vec![i.luts.to_string(), i.ffs.to_string(), i.carry.to_string(), i.dsps.to_string(), mhz(i)]
+        cells.extend(columns(r.ice40.as_ref(), 6, &|i| {
+            let n = [i.luts, i.ffs, i.carry, i.dsps, i.block_ram];
+            n.iter().map(u64::to_string).chain([mhz(i)]).collect()
         }));
-        cells.extend(columns(r.ecp5.as_ref(), 6, &|e| {
-            let n = [e.luts, e.ffs, e.lut_ram, e.carry, e.dsps];
+        cells.extend(columns(r.ecp5.as_ref(), 7, &|e| {
+            let n = [e.luts, e.ffs, e.lut_ram, e.carry, e.dsps, e.block_ram];
             n.iter().map(u64::to_string).chain([mhz(e)]).collect()
         }));
         writeln!(md, "| {} |", cells.join(" | ")).expect("writing to a String");
     }
     md.push_str(&format!(
-        "\nGE: transistors / 4, Yosys `stat -tech cmos` for the gates plus 24 per flip-flop (36 with an enable). LUT, FF, carry, DSP: the unit alone through `synth_ice40` / \
-         `synth_ecp5`. Fmax: the unit between registers (`rtl::emit::pnr_wrapper`), nextpnr on {} and the \
+        "\nGE: transistors / 4, Yosys `stat -tech cmos` for the gates plus 24 per flip-flop (36 with an enable). LUT, FF, carry, DSP, BRAM (SB_RAM40_4K / DP16KD): the unit alone through \
+         `synth_ice40` / `synth_ecp5`. Fmax: the unit between registers (`rtl::emit::pnr_wrapper`), nextpnr on {} and the \
          smallest of {} with room for it (LUTs at most 75% of the part's; its multipliers and block RAMs).\n",
         ICE40[0].name,
         ECP5.iter().map(|p| p.name).collect::<Vec<_>>().join(", ")
@@ -510,7 +511,7 @@ mod tests {
         let line = md.lines().nth(2).expect("a row under the header");
         assert_eq!(
             line,
-            "| gpu_top | N=10 | – | – | – | – | – | – | – | 26565 | 18784 | 0 | 4269 | 32 | 30.4 (LFE5U-85F) |"
+            "| gpu_top | N=10 | – | – | – | – | – | – | – | – | 26565 | 18784 | 0 | 4269 | 32 | 13 | 30.4 (LFE5U-85F) |"
         );
         assert_eq!(line.matches('|').count(), md.lines().next().unwrap().matches('|').count(), "one cell per column");
     }
