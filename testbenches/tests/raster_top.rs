@@ -566,33 +566,45 @@ fn crossing_40x30() -> Trilist {
     )
 }
 
-/// Units present: `raster_top` without `pixel_out` (fragments out), without `cull_sort`
-/// (sorted triangles in), and without both, each emitted, Verilated and run beside its
-/// rust-hdl self on the cube and on triangles across every clip plane, once with nothing
-/// stalling (cycles = `model::cycles`) and once with the output stalled at random.
+/// Units present: `raster_top` without `pixel_out` (fragments out), emitted, Verilated and
+/// run beside its rust-hdl self on the cube and on triangles across every clip plane, once
+/// with nothing stalling (cycles = `model::cycles`) and once with the output stalled at
+/// random. The other builds run in [`raster_top_units_present_lockstep_long`].
 #[test]
 fn raster_top_units_present_lockstep() {
-    fn run<U: Block + Pins>(unit: impl Fn() -> U, cull_sort: bool, pixel_out: bool) {
-        let units = Timing { cull_sort, pixel_out, divider_latency: LOCKSTEP_L as u32, ..Timing::default() };
-        let vl = testbenches::verilated_with(
-            "raster_top",
-            [("CULL_SORT", cull_sort as u64), ("PIXEL_OUT", pixel_out as u64), ("L", LOCKSTEP_L as u64)],
-        );
-        let (cube, cube_cull) = scene("cube", Some((24, 16)));
-        let crossing = crossing_40x30();
-        let name = format!("CULL_SORT={} PIXEL_OUT={}", cull_sort as u8, pixel_out as u8);
-        for (what, l, cull) in [("cube", &cube, cube_cull), ("clipping", &crossing, Cull::Back)] {
-            let mut dual = Dual::new(unit(), vl.model().unwrap_or_else(|e| panic!("{e}")));
-            units_frame(&mut dual, units, &format!("{name}, {what}"), l, cull, &mut |_| false);
-            let mut rng = ChaCha8Rng::seed_from_u64(seed());
-            let mut dual = Dual::new(unit(), vl.model().unwrap_or_else(|e| panic!("{e}")));
-            units_frame(&mut dual, units, &format!("{name}, {what}, stalled"), l, cull, &mut |_| rng.gen_bool(0.3));
-        }
-    }
     let (k, l) = (7, LOCKSTEP_L);
-    run(|| rtl::raster_top::RasterTopFragments::new(k, l, &Parts::ALL).expect("K = 7, default L"), true, false);
-    run(|| rtl::raster_top::RasterTopSorted::new(k, l, &Parts::ALL).expect("K = 7, default L"), false, true);
-    run(|| rtl::raster_top::RasterTopCore::new(k, l, &Parts::ALL).expect("K = 7, default L"), false, false);
+    units_present(|| rtl::raster_top::RasterTopFragments::new(k, l, &Parts::ALL).expect("K = 7"), true, false);
+}
+
+/// [`raster_top_units_present_lockstep`] without `cull_sort` (sorted triangles in) and
+/// without both (`scripts/soak.sh`: two more Verilated builds of raster_top, 34 s of CPU;
+/// `gpu_top` holds the core without either, and its tests run it in the test command).
+#[test]
+#[ignore = "long: scripts/soak.sh runs it"]
+fn raster_top_units_present_lockstep_long() {
+    let (k, l) = (7, LOCKSTEP_L);
+    units_present(|| rtl::raster_top::RasterTopSorted::new(k, l, &Parts::ALL).expect("K = 7"), false, true);
+    units_present(|| rtl::raster_top::RasterTopCore::new(k, l, &Parts::ALL).expect("K = 7"), false, false);
+}
+
+/// One build of [`raster_top_units_present_lockstep`]: `unit` makes the rust-hdl block with
+/// `cull_sort` and `pixel_out` present or not.
+fn units_present<U: Block + Pins>(unit: impl Fn() -> U, cull_sort: bool, pixel_out: bool) {
+    let units = Timing { cull_sort, pixel_out, divider_latency: LOCKSTEP_L as u32, ..Timing::default() };
+    let vl = testbenches::verilated_with(
+        "raster_top",
+        [("CULL_SORT", cull_sort as u64), ("PIXEL_OUT", pixel_out as u64), ("L", LOCKSTEP_L as u64)],
+    );
+    let (cube, cube_cull) = scene("cube", Some((24, 16)));
+    let crossing = crossing_40x30();
+    let name = format!("CULL_SORT={} PIXEL_OUT={}", cull_sort as u8, pixel_out as u8);
+    for (what, l, cull) in [("cube", &cube, cube_cull), ("clipping", &crossing, Cull::Back)] {
+        let mut dual = Dual::new(unit(), vl.model().unwrap_or_else(|e| panic!("{e}")));
+        units_frame(&mut dual, units, &format!("{name}, {what}"), l, cull, &mut |_| false);
+        let mut rng = ChaCha8Rng::seed_from_u64(seed());
+        let mut dual = Dual::new(unit(), vl.model().unwrap_or_else(|e| panic!("{e}")));
+        units_frame(&mut dual, units, &format!("{name}, {what}, stalled"), l, cull, &mut |_| rng.gen_bool(0.3));
+    }
 }
 
 /// `raster_top` built at formats other than its class's defaults (`rtl::custom`; by default
