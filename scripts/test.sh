@@ -59,7 +59,7 @@ scripts/synth.sh >"$out/synth-step.log" 2>&1 &
 synth=$!
 # The test build's edgepaint holds no class 11 or 12: those variants are the soak's lint, as
 # are raster_top without cull_sort alone and without pixel_out alone (each 26 s of CPU; both
-# left out is linted here, and the tests run all three).
+# left out is linted here; the tests run raster_top without pixel_out, the soak the other two).
 EDGEPAINT=$out/debug/edgepaint LINT_SKIP="N11 N12 CULL_SORT=0 PIXEL_OUT=0" scripts/lint.sh >"$out/lint-step.log" 2>&1 &
 lint=$!
 cargo test --workspace --locked "${features[@]}"
