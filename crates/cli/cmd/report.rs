@@ -97,10 +97,67 @@ fn part_for(parts: &'static [Part], luts: u64, dsps: u64, brams: u64) -> Option<
     parts.iter().find(|p| luts * 4 <= p.luts * 3 && dsps <= p.dsps && brams <= p.brams)
 }
 
-/// Target clocks for timing-driven placement, in MHz; the achieved Fmax is reported
-/// whether or not it meets them.
-const ICE40_TARGET_MHZ: &str = "100";
-const ECP5_TARGET_MHZ: &str = "200";
+/// An FPGA family's flow: its Yosys mapping, the cells that mapping makes, its parts and
+/// its place and route.
+struct Family {
+    /// The flow's name, and the prefix of its work files.
+    name: &'static str,
+    /// Yosys' mapping pass.
+    synth: &'static str,
+    /// The cell types of LUTs, carry cells, multipliers, block RAMs and LUT RAMs, and the
+    /// prefix of its flip-flops' types.
+    lut: &'static str,
+    ff_prefix: &'static str,
+    carry: &'static str,
+    dsp: &'static str,
+    bram: &'static str,
+    lut_ram: Option<&'static str>,
+    /// The LUT sites a netlist occupies, from its cell counts.
+    lut_sites: fn(&BTreeMap<String, u64>) -> u64,
+    parts: &'static [Part],
+    nextpnr: &'static str,
+    /// Target clock for timing-driven placement, in MHz; the achieved Fmax is reported
+    /// whether or not it meets it.
+    target_mhz: &'static str,
+    /// The pin constraints (file name, text) written beside the netlist, and nextpnr's
+    /// flags for them.
+    pins: Option<(&'static str, &'static str)>,
+    pin_flags: &'static [&'static str],
+}
+
+const ICE40_FAMILY: Family = Family {
+    name: "ice40",
+    synth: "synth_ice40",
+    lut: "SB_LUT4",
+    ff_prefix: "SB_DFF",
+    carry: "SB_CARRY",
+    dsp: "SB_MAC16",
+    bram: "SB_RAM40_4K",
+    lut_ram: None,
+    lut_sites: |cells| count(cells, |k| k == "SB_LUT4"),
+    parts: ICE40,
+    nextpnr: "nextpnr-ice40",
+    target_mhz: "100",
+    pins: None,
+    pin_flags: &["--pcf-allow-unconstrained"],
+};
+
+const ECP5_FAMILY: Family = Family {
+    name: "ecp5",
+    synth: "synth_ecp5",
+    lut: "LUT4",
+    ff_prefix: "TRELLIS_FF",
+    carry: "CCU2C",
+    dsp: "MULT18X18D",
+    bram: "DP16KD",
+    lut_ram: Some("TRELLIS_DPR16X4"),
+    lut_sites: ecp5_lut_sites,
+    parts: ECP5,
+    nextpnr: "nextpnr-ecp5",
+    target_mhz: "200",
+    pins: Some(ECP5_LPF),
+    pin_flags: &["--lpf", ECP5_LPF.0, "--lpf-allow-unconstrained"],
+};
 
 #[derive(Serialize)]
 struct Row {
@@ -227,71 +284,51 @@ fn report(e: &Emitted, dir: &Path, flows: &[Flow], router: Option<&str>) -> Resu
     std::fs::write(&wrap_v, rtl::emit::pnr_wrapper(e))?;
     let top = e.unit;
     let read = format!("read_verilog {}", unit_v.display());
+    let generic = if flows.contains(&Flow::Generic) { Some(generic(dir, &read, top)?) } else { None };
+    let family = |flow, family| -> Result<Option<Fpga>> {
+        if !flows.contains(&flow) {
+            return Ok(None);
+        }
+        fpga(dir, family, &read, &format!("{read}; read_verilog {}", wrap_v.display()), top, router).map(Some)
+    };
+    let ice40 = family(Flow::Ice40, &ICE40_FAMILY)?;
+    let ecp5 = family(Flow::Ecp5, &ECP5_FAMILY)?;
+    Ok(Row { unit: e.unit.to_owned(), parameters: e.params.clone(), formats: None, generic, ice40, ecp5 })
+}
+
+/// An FPGA flow: the unit alone through `family`'s mapping (`read`: the command reading
+/// its Verilog; `top`: its module), and, with a `router`, the unit inside its wrapper
+/// (`read_both` reads both) placed and routed on the smallest part with room for it.
+fn fpga(dir: &Path, family: &Family, read: &str, read_both: &str, top: &str, router: Option<&str>) -> Result<Fpga> {
+    let f = family;
+    let script = format!("{read}; {} -top {top}", f.synth);
+    let alone = cells(&yosys_stat(dir, f.name, &script, "")?);
+    let mut fpga = Fpga {
+        device: None,
+        luts: count(&alone, |k| k == f.lut),
+        ffs: count(&alone, |k| k.starts_with(f.ff_prefix)),
+        carry: count(&alone, |k| k == f.carry),
+        dsps: count(&alone, |k| k == f.dsp),
+        block_ram: count(&alone, |k| k == f.bram),
+        lut_ram: count(&alone, |k| Some(k) == f.lut_ram),
+        fmax_mhz: None,
+    };
+    fpga.device = part_for(f.parts, (f.lut_sites)(&alone), fpga.dsps, fpga.block_ram).map(|p| p.name);
+    let Some(router) = router.filter(|_| fpga.device.is_some()) else { return Ok(fpga) };
     // The part is chosen for the wrapped unit: the wrapper's shift registers and output
     // multiplexers add a LUT and a flip-flop per port bit.
-    let read_both = format!("{read}; read_verilog {}", wrap_v.display());
-    let wrapped = format!("{top}_pnr");
-    let json = |name: &str| dir.join(name).display().to_string();
-
-    let generic = if flows.contains(&Flow::Generic) { Some(generic(dir, &read, top)?) } else { None };
-    let ice40 = if flows.contains(&Flow::Ice40) {
-        let alone = cells(&yosys_stat(dir, "ice40", &format!("{read}; synth_ice40 -top {top}"), "")?);
-        let mut ice40 = Fpga {
-            device: None,
-            luts: count(&alone, |k| k == "SB_LUT4"),
-            ffs: count(&alone, |k| k.starts_with("SB_DFF")),
-            carry: count(&alone, |k| k == "SB_CARRY"),
-            dsps: count(&alone, |k| k == "SB_MAC16"),
-            block_ram: count(&alone, |k| k == "SB_RAM40_4K"),
-            lut_ram: 0,
-            fmax_mhz: None,
-        };
-        ice40.device = part_for(ICE40, ice40.luts, ice40.dsps, ice40.block_ram).map(|p| p.name);
-        if let (Some(router), Some(_)) = (router, ice40.device) {
-            let script = format!("{read_both}; synth_ice40 -top {wrapped} -json {}", json("ice40_pnr.json"));
-            let w = cells(&yosys_stat(dir, "ice40_pnr", &script, "")?);
-            let part = part_for(ICE40, count(&w, |k| k == "SB_LUT4"), count(&w, |k| k == "SB_MAC16"), ice40.block_ram);
-            ice40.device = part.map(|p| p.name);
-            if let Some(part) = part {
-                let args = (part.flags, "ice40_pnr.json", ICE40_TARGET_MHZ, &["--pcf-allow-unconstrained"][..]);
-                ice40.fmax_mhz = Some(nextpnr(dir, "nextpnr-ice40", args, router)?);
-            }
+    let net = format!("{}_pnr.json", f.name);
+    let script = format!("{read_both}; {} -top {top}_pnr -json {}", f.synth, dir.join(&net).display());
+    let wrapped = cells(&yosys_stat(dir, &format!("{}_pnr", f.name), &script, "")?);
+    let part = part_for(f.parts, (f.lut_sites)(&wrapped), count(&wrapped, |k| k == f.dsp), fpga.block_ram);
+    fpga.device = part.map(|p| p.name);
+    if let Some(part) = part {
+        if let Some((file, text)) = f.pins {
+            std::fs::write(dir.join(file), text).with_context(|| format!("writing {}", dir.join(file).display()))?;
         }
-        Some(ice40)
-    } else {
-        None
-    };
-    let ecp5 = if flows.contains(&Flow::Ecp5) {
-        let alone = cells(&yosys_stat(dir, "ecp5", &format!("{read}; synth_ecp5 -top {top}"), "")?);
-        let mut ecp5 = Fpga {
-            device: None,
-            luts: count(&alone, |k| k == "LUT4"),
-            ffs: count(&alone, |k| k == "TRELLIS_FF"),
-            carry: count(&alone, |k| k == "CCU2C"),
-            dsps: count(&alone, |k| k == "MULT18X18D"),
-            block_ram: count(&alone, |k| k == "DP16KD"),
-            lut_ram: count(&alone, |k| k == "TRELLIS_DPR16X4"),
-            fmax_mhz: None,
-        };
-        ecp5.device = part_for(ECP5, ecp5_lut_sites(&alone), ecp5.dsps, ecp5.block_ram).map(|p| p.name);
-        if let (Some(router), Some(_)) = (router, ecp5.device) {
-            let script = format!("{read_both}; synth_ecp5 -top {wrapped} -json {}", json("ecp5_pnr.json"));
-            let w = cells(&yosys_stat(dir, "ecp5_pnr", &script, "")?);
-            let part = part_for(ECP5, ecp5_lut_sites(&w), count(&w, |k| k == "MULT18X18D"), ecp5.block_ram);
-            ecp5.device = part.map(|p| p.name);
-            if let Some(part) = part {
-                std::fs::write(dir.join(ECP5_LPF.0), ECP5_LPF.1)
-                    .with_context(|| format!("writing {}", dir.join(ECP5_LPF.0).display()))?;
-                let pins = ["--lpf", ECP5_LPF.0, "--lpf-allow-unconstrained"];
-                let args = (part.flags, "ecp5_pnr.json", ECP5_TARGET_MHZ, &pins[..]);
-                ecp5.fmax_mhz = Some(nextpnr(dir, "nextpnr-ecp5", args, router)?);
-            }
-        }
-        Some(ecp5)
-    } else {
-        None
-    };
-    Ok(Row { unit: e.unit.to_owned(), parameters: e.params.clone(), formats: None, generic, ice40, ecp5 })
+        fpga.fmax_mhz = Some(nextpnr(dir, f.nextpnr, (part.flags, &net, f.target_mhz, f.pin_flags), router)?);
+    }
+    Ok(fpga)
 }
 
 /// The generic flow: Yosys `synth -flatten` of the unit alone (`read`: the command reading
