@@ -3,10 +3,12 @@
 # any issue that touches RTL (README, "Soak"). About an hour on 2 cores; each step prints
 # its time, and everything it writes goes under target/soak/.
 #
-#   1. tests        the whole suite with size classes 11 and 12 compiled in (the feature
-#                   classes-11-12, which the test command leaves out: raster_top's widths
-#                   at each class, the class 11/12 lockstep and the class-11 scene in
-#                   Verilator), plus the tests marked #[ignore] for being long:
+#   1. tests        the whole suite with size classes 11 and 12 and rtl::custom compiled
+#                   in (the features classes-11-12 and custom-formats, which the test
+#                   command leaves out: raster_top's widths at each class, the class 11/12
+#                   lockstep and the class-11 scene in Verilator, raster_top's lockstep at
+#                   rtl::custom's formats and the CLI's emit and render at them), plus the
+#                   tests marked #[ignore] for being long:
 #                   the EPT at P = 1024 exhaustively (all 1,048,576 (XL, XR) pairs) in
 #                   rust-hdl and Verilator, whole shipped scenes through raster_top in
 #                   rust-hdl and Verilator in lockstep (every output every cycle), and
@@ -14,10 +16,11 @@
 #                   then raster_top's custom-formats lockstep at a class-9 build
 #   2. random soak  every random test with 10x the cases (EDGEPAINT_N = 10000) and another
 #                   seed (EDGEPAINT_SEED, default 2: the test command runs seed 1)
-#   3. synthesis    every file in hdl-out/, each unit alone too, in all three flows (the
-#                   test command synthesizes each distinct module once, without iCE40);
-#                   then Verilator lint of hdl-out/ and of every raster_top variant,
-#                   classes 11 and 12 too (scripts/lint.sh)
+#   3. synthesis    every file in hdl-out/, each unit alone too, in all three flows,
+#                   mapped to cells (the test command synthesizes each distinct module
+#                   once, without iCE40, and gpu_top only through synth_ecp5's coarse
+#                   passes); then Verilator lint of hdl-out/ and of every raster_top
+#                   variant, classes 11 and 12 and rtl::custom too (scripts/lint.sh)
 #   4. P&R          place and route of every unit of the default design on iCE40 and ECP5
 #                   (`edgepaint report`): area and Fmax in target/soak/report/<unit>/report.md.
 #                   nextpnr's router1 for all but triangle_setup and raster_top, which take
@@ -49,16 +52,16 @@ scripts/setup-tools.sh
 source scripts/tools-env.sh
 mkdir -p target/soak
 
-# Every build of the units: edgepaint's default features hold classes 11 and 12, and the
-# testbenches' feature adds their tests.
-features=(--features testbenches/classes-11-12)
+# Every build of the units: edgepaint's default features hold classes 11 and 12 and
+# rtl::custom, and the testbenches' features add their tests.
+features=(--features testbenches/classes-11-12,testbenches/custom-formats)
 want tests && step "tests at every class, with the long ones (#[ignore])" \
     cargo test --workspace --locked "${features[@]}" -- --include-ignored
 # rtl::custom below class 10 (issue 16: `edgepaint fit` gives a 320x240 workload class 9), in a
 # target directory of its own so that the other steps' builds are left alone.
 want tests && step "raster_top at a class-9 custom build (EDGEPAINT_CLASS=9)" \
     env EDGEPAINT_CLASS=9 EDGEPAINT_FORMATS='{"xy": "S10.3 half-up", "z": "S1.24 half-up", "color": "U8.2 half-up saturate", "inv_w": "U1.12 half-up", "ooa": "U1.20", "ooa_d": "S28.32", "dz": "S4.40", "z_acc": "S1.40", "dc": "S12.20", "c_acc": "S9.20"}' CARGO_TARGET_DIR=target/soak/class9 \
-    cargo test --locked -p testbenches --test tests raster_top_custom_formats_lockstep
+    cargo test --locked -p testbenches --features custom-formats --test tests raster_top_custom_formats_lockstep
 want random && step "random tests, EDGEPAINT_N=10000, seed ${EDGEPAINT_SEED:-2}" \
     env EDGEPAINT_N=10000 EDGEPAINT_SEED="${EDGEPAINT_SEED:-2}" cargo test --workspace --locked "${features[@]}"
 want synth && step "synthesis of every file in all flows" scripts/synth.sh --all

@@ -8,7 +8,10 @@
 #   scripts/synth.sh          each distinct module once: gpu_top.v (which holds
 #                             command_parser, triangle_queue, cull_sort, divider,
 #                             triangle_setup, edge_walk, span, pixel_bus and gpu_regs as its
-#                             submodules) in `synth_ecp5`, and every unit not listed in
+#                             submodules) in `synth_ecp5`'s coarse passes (`-run
+#                             begin:map_ram`: proc, flatten, opt, fsm, wreduce, share,
+#                             alumacc, memory; everything but the mapping to ECP5 cells,
+#                             which took 149 s of its 229 s of CPU), and every unit not listed in
 #                             SUBMODULES (pixel_out.v, ept.v: generic `synth -flatten` and
 #                             `synth_ecp5`; se.v: `synth_ecp5` only, its generic run took
 #                             86 s of CPU and `synth_ecp5` runs the same coarse passes before
@@ -16,8 +19,8 @@
 #                             pixel_out behind them: its `synth_ecp5` took 176 s of CPU for
 #                             no module the others leave out but its own glue (the test
 #                             command)
-#   scripts/synth.sh --all    every file, also `synth_ice40` (scripts/soak.sh, about 4.5
-#                             minutes: raster_top's iCE40 mapping alone takes 2.5)
+#   scripts/synth.sh --all    every file in every flow, mapped to cells, also `synth_ice40`
+#                             (scripts/soak.sh: 2,071 s on 2 cores at stop 37)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -28,8 +31,10 @@ fi
 # Units whose modules gpu_top.v holds (raster_top.v: all but its glue and pixel_out, which
 # is synthesized alone), synthesized there.
 SUBMODULES=(command_parser triangle_queue cull_sort divider triangle_setup edge_walk span pixel_bus gpu_regs raster_top)
-# Units the test command maps with synth_ecp5 alone (--all runs every flow).
-ECP5_ONLY=(gpu_top se)
+# Units the test command maps with synth_ecp5 alone, and those it takes through synth_ecp5's
+# coarse passes alone (--all runs every flow, mapped).
+ECP5_ONLY=(se)
+COARSE_ONLY=(gpu_top)
 flows=(generic ecp5)
 all=0
 if [[ ${1:-} == --all ]]; then
@@ -63,6 +68,7 @@ synth_one() {
         generic) cmd="synth -flatten -top $top; check -assert; stat" ;;
         ice40) cmd="synth_ice40 -top $top -json $out/$top.ice40.json; check -assert; stat" ;;
         ecp5) cmd="synth_ecp5 -top $top -json $out/$top.ecp5.json; check -assert; stat" ;;
+        coarse) cmd="synth_ecp5 -top $top -run begin:map_ram; check -assert; stat" ;;
     esac
     log=$out/$top.$flow.log
     # No latches: a combinational output some path leaves unassigned (a `match` without a
@@ -81,10 +87,14 @@ export -f synth_one
 # The largest files first, so the long jobs start early.
 mapfile -t files < <(ls -S "${files[@]}")
 for f in "${files[@]}"; do
-    for flow in "${flows[@]}"; do
-        if [[ $all == 0 && $flow != ecp5 && " ${ECP5_ONLY[*]} " =~ " $(basename "$f" .v) " ]]; then
-            continue
-        fi
+    unit=$(basename "$f" .v)
+    unit_flows=("${flows[@]}")
+    if [[ $all == 0 && " ${ECP5_ONLY[*]} " =~ " $unit " ]]; then
+        unit_flows=(ecp5)
+    elif [[ $all == 0 && " ${COARSE_ONLY[*]} " =~ " $unit " ]]; then
+        unit_flows=(coarse)
+    fi
+    for flow in "${unit_flows[@]}"; do
         printf '%s\0%s\0%s\0' "$f" "$flow" "$out"
     done
 done | xargs -0 -n 3 -P "${SYNTH_JOBS:-$(nproc)}" bash -c 'synth_one "$@"' synth

@@ -43,8 +43,9 @@ clippy_driver=$(rustc --print sysroot)/bin/clippy-driver
 [[ -x $clippy_driver ]] || clippy_driver=$(command -v clippy-driver)
 export RUSTC_WORKSPACE_WRAPPER=$clippy_driver
 export CLIPPY_ARGS=-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__
-# Without edgepaint's default feature classes-11-12: the copies of the scanline units at
-# size classes 11 and 12, half of the rtl crate (the build's longest), are the soak's.
+# Without edgepaint's default features classes-11-12 and custom-formats: the copies of the
+# scanline units at size classes 11 and 12 and at rtl::custom's formats, most of the rtl
+# crate (the build's longest), are the soak's.
 features=(--no-default-features)
 cargo test --workspace --locked "${features[@]}" --no-run
 took
@@ -57,15 +58,16 @@ step "tests, with synthesis and lint beside them"
 out=${CARGO_TARGET_DIR:-target}
 scripts/synth.sh >"$out/synth-step.log" 2>&1 &
 synth=$!
-# The test build's edgepaint holds no class 11 or 12: those variants are the soak's lint, as
-# are raster_top without cull_sort alone and without pixel_out alone (each 26 s of CPU; both
-# left out is linted here; the tests run raster_top without pixel_out, the soak the other two).
-EDGEPAINT=$out/debug/edgepaint LINT_SKIP="N11 N12 CULL_SORT=0 PIXEL_OUT=0" scripts/lint.sh >"$out/lint-step.log" 2>&1 &
+# The test build's edgepaint holds no class 11 or 12 and no rtl::custom: those variants are
+# the soak's lint, as are raster_top without cull_sort alone and without pixel_out alone (each
+# 26 s of CPU; both left out is linted here; the tests run raster_top without pixel_out, the
+# soak the other two).
+EDGEPAINT=$out/debug/edgepaint LINT_SKIP="N11 N12 CULL_SORT=0 PIXEL_OUT=0 custom" scripts/lint.sh >"$out/lint-step.log" 2>&1 &
 lint=$!
 cargo test --workspace --locked "${features[@]}"
 took
 
-step "Verilator lint of hdl-out/ and of raster_top without cull_sort and pixel_out and at rtl::custom's formats"
+step "Verilator lint of hdl-out/ and of raster_top without cull_sort and pixel_out"
 lint_ok=0
 wait $lint || lint_ok=$?
 cat "$out/lint-step.log"
@@ -75,7 +77,7 @@ if [[ $lint_ok -ne 0 ]]; then
 fi
 took
 
-step "Yosys synthesis of hdl-out/ (each distinct module once)"
+step "Yosys synthesis of hdl-out/ (each distinct module once; gpu_top's coarse passes)"
 synth_ok=0
 wait $synth || synth_ok=$?
 cat "$out/synth-step.log"

@@ -258,10 +258,11 @@ fn cli_render_rtl_draws_through_gpu_top() {
 
 /// Formats other than a size class's defaults: `emit --formats` writes the scanline units
 /// at them (the manifest records them, the ports follow them), `render --engine rtl
-/// --formats` draws through them, equal to the scanline model at those formats; formats the
-/// RTL cannot take, and units without formats, are clear errors. (`crates/rtl/
-/// custom-formats.json` is `rtl::custom`'s build, so nothing is recompiled here.)
+/// --formats` draws through them, equal to the scanline model at those formats.
+/// (`crates/rtl/custom-formats.json` is `rtl::custom`'s build, so nothing is recompiled
+/// here; the test command builds without it, so this is the soak's.)
 #[test]
+#[cfg_attr(not(feature = "custom-formats"), ignore = "needs rtl::custom (feature custom-formats): scripts/soak.sh")]
 fn cli_emits_and_renders_at_other_formats() {
     let d = scratch("formats");
     let custom = concat!(env!("CARGO_MANIFEST_DIR"), "/crates/rtl/custom-formats.json");
@@ -298,7 +299,15 @@ fn cli_emits_and_renders_at_other_formats() {
     let args = ["render", cube, "--size", "32x24", "--engine", "scanline", "--formats", custom, "-o"];
     assert!(edgepaint(&[&args[..], &[scan.to_str().unwrap()]].concat()).status.success());
     assert_eq!(std::fs::read(&png).unwrap(), std::fs::read(&scan).unwrap(), "the RTL's PNG is the model's");
+}
 
+/// Formats the RTL cannot take, and units without formats, are clear errors; formats no
+/// build holds, asked of an edgepaint already rebuilt for them, end without a loop.
+#[test]
+fn cli_formats_the_rtl_cannot_take_are_clear_errors() {
+    let d = scratch("bad-formats");
+    let custom = concat!(env!("CARGO_MANIFEST_DIR"), "/crates/rtl/custom-formats.json");
+    let dir = d.join("hdl");
     let o = dir.to_str().unwrap();
     let saturating = write(&d, "saturating.json", r#"{"dz": "S5.34 saturate"}"#);
     fails_with(

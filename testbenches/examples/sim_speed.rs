@@ -1,9 +1,9 @@
 //! In-process simulation speed of the EPT and of whole frames through `raster_top` in each
 //! simulator, in cycles per second.
 //!
-//! `cargo run --release -p testbenches --features classes-11-12 --example sim_speed [SECONDS]`
-//! (default 2 s per measurement; needs Verilator: scripts/setup-tools.sh; without the
-//! feature, classes 11 and 12 are left out). EPT: one cycle = drive `xl`, `xr`,
+//! `cargo run --release -p testbenches --features classes-11-12,custom-formats --example
+//! sim_speed [SECONDS]` (default 2 s per measurement; needs Verilator: scripts/setup-tools.sh;
+//! without the features, classes 11 and 12 and `rtl::custom` are left out). EPT: one cycle = drive `xl`, `xr`,
 //! settle, read `px`, as in the tests, with random (XL, XR) from a fixed seed. raster_top:
 //! the cube scene at 64 x 48 in rust-hdl, and the whole shipped scene `all` at 640 x 480 in
 //! Verilator at every build of the scanline units (`rtl::BUILDS`: size classes 10, 11 and
@@ -88,8 +88,9 @@ fn main() {
     let build = Build::default();
     let (cycles, hdl) = frame_speed(&mut HdlSim::new(frame::unit()), build, "cube", (64, 48), budget);
     println!("| raster_top | K=7 L=5, class 10, cube 64x48 ({cycles} cycles) | {hdl:.0} | |");
-    for build in rtl::BUILDS {
-        let formats = if build == Build::of_class(build.class) { "default formats" } else { rtl::custom::SOURCE };
+    for &build in rtl::BUILDS {
+        let custom = rtl::CUSTOM.map_or("other formats", |(_, source)| source);
+        let formats = if build == Build::of_class(build.class) { "default formats" } else { custom };
         let mut dut = frame::verilator(&build).unwrap_or_else(|e| panic!("{e}"));
         let (cycles, vl) = frame_speed(&mut dut, build, "all", (640, 480), budget);
         println!(

@@ -4,9 +4,10 @@
 //!
 //! rust-hdl's widths are compile-time constants: edgepaint holds the units at the
 //! defaults of size classes 10, 11 and 12 (11 and 12 with the feature `classes-11-12`, on by
-//! default) and at one more build, `rtl::custom`, set when it is compiled (`EDGEPAINT_CLASS`,
-//! 8 to 12, `EDGEPAINT_FORMATS`; `crates/rtl/build.rs`). For any other build, [`ensure`] runs `cargo run --release` on edgepaint's sources with those
-//! variables set, in a target directory of its own (`target/formats`, so the usual build
+//! default) and at one more build, `rtl::custom` (the feature `custom-formats`, on by
+//! default), set when it is compiled (`EDGEPAINT_CLASS`, 8 to 12, `EDGEPAINT_FORMATS`;
+//! `crates/rtl/build.rs`). For any other build, [`ensure`] runs `cargo run --release` on
+//! edgepaint's sources with those variables set, in a target directory of its own (`target/formats`, so the usual build
 //! is not disturbed): a full build the first time, the `rtl` crate and what uses it after.
 
 use anyhow::{bail, Context, Result};
@@ -50,12 +51,11 @@ pub fn ensure(build: &Build, why: &str) -> Result<bool> {
     let manifest = root.join("Cargo.toml");
     let formats = serde_json::to_string(&build.formats).expect("formats serialise");
     if !manifest.is_file() {
+        let custom = rtl::CUSTOM.map_or(String::new(), |(class, source)| format!(" and at {source} (class {class})"));
         bail!(
-            "{why}: this edgepaint holds the scanline units at the size classes' default formats and at {} \
-             (class {}); other formats need them compiled: build edgepaint from its sources with \
-             EDGEPAINT_CLASS={} EDGEPAINT_FORMATS='{formats}' (its sources are not at {})",
-            rtl::custom::SOURCE,
-            rtl::custom::CLASS,
+            "{why}: this edgepaint holds the scanline units at the size classes' default formats{custom}; other \
+             formats need them compiled: build edgepaint from its sources with EDGEPAINT_CLASS={} \
+             EDGEPAINT_FORMATS='{formats}' (its sources are not at {})",
             build.class,
             root.display()
         );

@@ -57,6 +57,7 @@ macro_rules! scanline_units {
     };
 }
 #[allow(clippy::duplicate_mod)]
+#[cfg(feature = "custom-formats")]
 pub mod custom;
 #[allow(clippy::duplicate_mod)]
 pub mod n10;
@@ -71,6 +72,22 @@ pub mod n12;
 /// edgepaint's default features; without it they are `custom` builds made on demand).
 const HOLDS_CLASSES_11_12: bool = cfg!(feature = "classes-11-12");
 
+/// `rtl::custom`'s size class and where its formats came from, when this edgepaint holds it
+/// (the feature `custom-formats`, on in edgepaint's default features; the test command
+/// builds without it, and the soak with it).
+pub const CUSTOM: Option<(u32, &str)> = {
+    #[cfg(feature = "custom-formats")]
+    let custom = Some((custom::CLASS, custom::SOURCE));
+    #[cfg(not(feature = "custom-formats"))]
+    let custom = None;
+    custom
+};
+
+/// [`CUSTOM`] for messages: "and <source> at class <class>", or nothing.
+fn custom_build_named() -> String {
+    CUSTOM.map_or(String::new(), |(class, source)| format!(", and {source} at class {class}"))
+}
+
 /// The size classes the scanline units are built for at their default formats (`n10`, and
 /// `n11` and `n12` with the feature `classes-11-12`).
 pub const CLASSES: &[u32] = &[
@@ -82,13 +99,14 @@ pub const CLASSES: &[u32] = &[
 ];
 
 /// Every build of the scanline units: the size classes at their default formats, then
-/// `custom`.
-pub const BUILDS: [fx::Build; CLASSES.len() + 1] = [
+/// `custom` when this edgepaint holds it.
+pub const BUILDS: &[fx::Build] = &[
     fx::Build { class: n10::CLASS, formats: n10::FORMATS },
     #[cfg(feature = "classes-11-12")]
     fx::Build { class: n11::CLASS, formats: n11::FORMATS },
     #[cfg(feature = "classes-11-12")]
     fx::Build { class: n12::CLASS, formats: n12::FORMATS },
+    #[cfg(feature = "custom-formats")]
     fx::Build { class: custom::CLASS, formats: custom::FORMATS },
 ];
 
@@ -112,6 +130,7 @@ macro_rules! by_build {
                     n11::$unit::$emit,
                     #[cfg(feature = "classes-11-12")]
                     n12::$unit::$emit,
+                    #[cfg(feature = "custom-formats")]
                     custom::$unit::$emit,
                 ],
             )
@@ -131,26 +150,24 @@ fn emit_at_build(
     emit: [BuildEmitter; BUILDS.len()],
 ) -> Result<Emitted, String> {
     let n = params["N"];
-    let Some(class) = u32::try_from(n).ok().filter(|c| CLASSES.contains(c) || *c == custom::CLASS) else {
+    let Some(class) = u32::try_from(n).ok().filter(|c| BUILDS.iter().any(|b| b.class == *c)) else {
         let feature = if HOLDS_CLASSES_11_12 {
             ""
         } else {
             " (this edgepaint is built without the feature classes-11-12, on by default: classes 11 and 12 are \
              custom builds, which `edgepaint emit|render` compiles when asked)"
         };
+        let custom = CUSTOM.map_or(String::new(), |(class, _)| format!(" and rtl::custom's {class}"));
         return Err(format!(
-            "{unit}: N = {n} is not supported: size classes {CLASSES:?} and rtl::custom's {} (screens up to 2^N x \
-             2^N){feature}",
-            custom::CLASS
+            "{unit}: N = {n} is not supported: size classes {CLASSES:?}{custom} (screens up to 2^N x 2^N){feature}"
         ));
     };
     let build = fx::Build { class, formats: formats.copied().unwrap_or(Formats::for_n(class)) };
     let i = BUILDS.iter().position(|b| *b == build).ok_or_else(|| {
         format!(
             "{unit}: edgepaint is not built at these formats for size class {class} (its builds: the defaults of \
-             classes {CLASSES:?}, and {} at class {}); `edgepaint emit --formats FILE` rebuilds it",
-            custom::SOURCE,
-            custom::CLASS
+             classes {CLASSES:?}{}); `edgepaint emit --formats FILE` rebuilds it",
+            custom_build_named()
         )
     })?;
     let mut e = emit[i](params)?;

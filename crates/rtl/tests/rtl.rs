@@ -227,6 +227,7 @@ mod link_bits {
             check!(n11);
             check!(n12);
         }
+        #[cfg(feature = "custom-formats")]
         check!(custom);
     }
 }

@@ -6,8 +6,8 @@
 //! Scanline and vector draw every mesh at both formats; the shading engines, ten times
 //! slower (cycle by cycle), a quarter of them at the default formats (their spans are the
 //! scanline pipeline's). As every random test of edgepaint, the cases come from
-//! `EDGEPAINT_SEED` (default 1) and `EDGEPAINT_N` (default 1000: 250 fans of 8 to 255
-//! triangles and 250 grids of 8 to 512, about 2,250 renders; the soak's 10,000 make ten
+//! `EDGEPAINT_SEED` (default 1) and `EDGEPAINT_N` (default 1000: 100 fans of 8 to 255
+//! triangles and 100 grids of 8 to 512, about 900 renders; the soak's 10,000 make ten
 //! times as many).
 
 use fx::Formats;
@@ -38,11 +38,11 @@ fn painted_once(list: &Trilist, se: bool) -> Result<(), TestCaseError> {
     Ok(())
 }
 
-/// `EDGEPAINT_N` / 4 cases per property from seed `EDGEPAINT_SEED`, nothing persisted.
+/// `EDGEPAINT_N` / 10 cases per property from seed `EDGEPAINT_SEED`, nothing persisted.
 fn config() -> ProptestConfig {
     let var = |name: &str, default: u64| std::env::var(name).ok().and_then(|s| s.parse().ok()).unwrap_or(default);
     ProptestConfig {
-        cases: (var("EDGEPAINT_N", 1000) / 4) as u32,
+        cases: (var("EDGEPAINT_N", 1000) / 10) as u32,
         rng_seed: proptest::test_runner::RngSeed::Fixed(var("EDGEPAINT_SEED", 1)),
         failure_persistence: None,
         ..ProptestConfig::default()
