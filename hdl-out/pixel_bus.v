@@ -72,6 +72,36 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
     reg  [10:0] cy$d;
     wire  [10:0] cy$q;
     reg  cy$clock;
+    reg  [31:0] in_zaddr$0$d;
+    wire  [31:0] in_zaddr$0$q;
+    reg  in_zaddr$0$clock;
+    reg  [31:0] in_zaddr$1$d;
+    wire  [31:0] in_zaddr$1$q;
+    reg  in_zaddr$1$clock;
+    reg  [31:0] in_caddr$0$d;
+    wire  [31:0] in_caddr$0$q;
+    reg  in_caddr$0$clock;
+    reg  [31:0] in_caddr$1$d;
+    wire  [31:0] in_caddr$1$q;
+    reg  in_caddr$1$clock;
+    reg  [15:0] in_z$0$d;
+    wire  [15:0] in_z$0$q;
+    reg  in_z$0$clock;
+    reg  [15:0] in_z$1$d;
+    wire  [15:0] in_z$1$q;
+    reg  in_z$1$clock;
+    reg  [23:0] in_rgb$0$d;
+    wire  [23:0] in_rgb$0$q;
+    reg  in_rgb$0$clock;
+    reg  [23:0] in_rgb$1$d;
+    wire  [23:0] in_rgb$1$q;
+    reg  in_rgb$1$clock;
+    reg  [1:0] in_head$d;
+    wire  [1:0] in_head$q;
+    reg  in_head$clock;
+    reg  [1:0] in_tail$d;
+    wire  [1:0] in_tail$q;
+    reg  in_tail$clock;
     reg  [31:0] e_zaddr$0$d;
     wire  [31:0] e_zaddr$0$q;
     reg  e_zaddr$0$clock;
@@ -445,7 +475,13 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
     reg  idle_now;
     reg  hazard;
     reg  [4:0] count;
+    reg  [1:0] in_count;
+    reg  [31:0] oldest_zaddr;
+    reg  [31:0] oldest_caddr;
+    reg  [15:0] oldest_z;
+    reg  [23:0] oldest_rgb;
     reg  take;
+    reg  enter;
     reg  can_write;
     reg  load;
     reg  [31:0] w_zaddr;
@@ -477,6 +513,56 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         .d(cy$d),
         .q(cy$q),
         .clock(cy$clock)
+    );
+    pixel_bus$in_zaddr$0 in_zaddr$0(
+        .d(in_zaddr$0$d),
+        .q(in_zaddr$0$q),
+        .clock(in_zaddr$0$clock)
+    );
+    pixel_bus$in_zaddr$1 in_zaddr$1(
+        .d(in_zaddr$1$d),
+        .q(in_zaddr$1$q),
+        .clock(in_zaddr$1$clock)
+    );
+    pixel_bus$in_caddr$0 in_caddr$0(
+        .d(in_caddr$0$d),
+        .q(in_caddr$0$q),
+        .clock(in_caddr$0$clock)
+    );
+    pixel_bus$in_caddr$1 in_caddr$1(
+        .d(in_caddr$1$d),
+        .q(in_caddr$1$q),
+        .clock(in_caddr$1$clock)
+    );
+    pixel_bus$in_z$0 in_z$0(
+        .d(in_z$0$d),
+        .q(in_z$0$q),
+        .clock(in_z$0$clock)
+    );
+    pixel_bus$in_z$1 in_z$1(
+        .d(in_z$1$d),
+        .q(in_z$1$q),
+        .clock(in_z$1$clock)
+    );
+    pixel_bus$in_rgb$0 in_rgb$0(
+        .d(in_rgb$0$d),
+        .q(in_rgb$0$q),
+        .clock(in_rgb$0$clock)
+    );
+    pixel_bus$in_rgb$1 in_rgb$1(
+        .d(in_rgb$1$d),
+        .q(in_rgb$1$q),
+        .clock(in_rgb$1$clock)
+    );
+    pixel_bus$in_head in_head(
+        .d(in_head$d),
+        .q(in_head$q),
+        .clock(in_head$clock)
+    );
+    pixel_bus$in_tail in_tail(
+        .d(in_tail$d),
+        .q(in_tail$q),
+        .clock(in_tail$clock)
     );
     pixel_bus$e_zaddr$0 e_zaddr$0(
         .d(e_zaddr$0$d),
@@ -1079,6 +1165,8 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         phase$clock = clock;
         cx$clock = clock;
         cy$clock = clock;
+        in_head$clock = clock;
+        in_tail$clock = clock;
         head$clock = clock;
         written$clock = clock;
         tested$clock = clock;
@@ -1100,6 +1188,8 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         phase$d = phase$q;
         cx$d = cx$q;
         cy$d = cy$q;
+        in_head$d = in_head$q;
+        in_tail$d = in_tail$q;
         head$d = head$q;
         written$d = written$q;
         tested$d = tested$q;
@@ -1118,6 +1208,22 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         c_pending$d = c_pending$q;
         credit$d = credit$q;
         err$d = err$q;
+        in_zaddr$0$clock = clock;
+        in_zaddr$0$d = in_zaddr$0$q;
+        in_caddr$0$clock = clock;
+        in_caddr$0$d = in_caddr$0$q;
+        in_z$0$clock = clock;
+        in_z$0$d = in_z$0$q;
+        in_rgb$0$clock = clock;
+        in_rgb$0$d = in_rgb$0$q;
+        in_zaddr$1$clock = clock;
+        in_zaddr$1$d = in_zaddr$1$q;
+        in_caddr$1$clock = clock;
+        in_caddr$1$d = in_caddr$1$q;
+        in_z$1$clock = clock;
+        in_z$1$d = in_z$1$q;
+        in_rgb$1$clock = clock;
+        in_rgb$1$d = in_rgb$1$q;
         e_zaddr$0$clock = clock;
         e_zaddr$0$d = e_zaddr$0$q;
         e_caddr$0$clock = clock;
@@ -1312,7 +1418,7 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         e_live$15$d = e_live$15$q;
         clearing = phase$q == 32'h1;
         drawing = phase$q == 32'h0;
-        idle_now = drawing & (head$q == tail$q) & (z_pending$q == 32'h0) & (c_pending$q == 32'h0);
+        idle_now = drawing & (in_head$q == in_tail$q) & (head$q == tail$q) & (z_pending$q == 32'h0) & (c_pending$q == 32'h0);
         idle = idle_now;
         error = err$q;
         y_sel = ((inp$y) & 11'h7ff);
@@ -1338,58 +1444,88 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         h_i = head$q[(32'h0)+:(4)];
         t_i = tested$q[(32'h0)+:(4)];
         tail_i = tail$q[(32'h0)+:(4)];
+        in_count = in_tail$q - in_head$q;
+        inp$ready = drawing & ~in_count[32'h1];
+        take = inp$valid & inp$ready;
+        if (take & (in_tail$q[(32'h0)+:(1)] == 0)) begin
+            in_zaddr$0$d = zaddr;
+            in_caddr$0$d = caddr;
+            in_z$0$d = inp$z;
+            in_rgb$0$d = rgb$out;
+        end
+        if (take & (in_tail$q[(32'h0)+:(1)] == 1)) begin
+            in_zaddr$1$d = zaddr;
+            in_caddr$1$d = caddr;
+            in_z$1$d = inp$z;
+            in_rgb$1$d = rgb$out;
+        end
+        if (take) begin
+            in_tail$d = in_tail$q + 32'h1;
+        end
+        oldest_zaddr = in_zaddr$0$q;
+        oldest_caddr = in_caddr$0$q;
+        oldest_z = in_z$0$q;
+        oldest_rgb = in_rgb$0$q;
+        if (in_head$q[32'h0]) begin
+            oldest_zaddr = in_zaddr$1$q;
+            oldest_caddr = in_caddr$1$q;
+            oldest_z = in_z$1$q;
+            oldest_rgb = in_rgb$1$q;
+        end
         hazard = 1'b0;
-        if (e_live$0$q & (e_zaddr$0$q == zaddr)) begin
+        if (e_live$0$q & (e_zaddr$0$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$1$q & (e_zaddr$1$q == zaddr)) begin
+        if (e_live$1$q & (e_zaddr$1$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$2$q & (e_zaddr$2$q == zaddr)) begin
+        if (e_live$2$q & (e_zaddr$2$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$3$q & (e_zaddr$3$q == zaddr)) begin
+        if (e_live$3$q & (e_zaddr$3$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$4$q & (e_zaddr$4$q == zaddr)) begin
+        if (e_live$4$q & (e_zaddr$4$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$5$q & (e_zaddr$5$q == zaddr)) begin
+        if (e_live$5$q & (e_zaddr$5$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$6$q & (e_zaddr$6$q == zaddr)) begin
+        if (e_live$6$q & (e_zaddr$6$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$7$q & (e_zaddr$7$q == zaddr)) begin
+        if (e_live$7$q & (e_zaddr$7$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$8$q & (e_zaddr$8$q == zaddr)) begin
+        if (e_live$8$q & (e_zaddr$8$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$9$q & (e_zaddr$9$q == zaddr)) begin
+        if (e_live$9$q & (e_zaddr$9$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$10$q & (e_zaddr$10$q == zaddr)) begin
+        if (e_live$10$q & (e_zaddr$10$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$11$q & (e_zaddr$11$q == zaddr)) begin
+        if (e_live$11$q & (e_zaddr$11$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$12$q & (e_zaddr$12$q == zaddr)) begin
+        if (e_live$12$q & (e_zaddr$12$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$13$q & (e_zaddr$13$q == zaddr)) begin
+        if (e_live$13$q & (e_zaddr$13$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$14$q & (e_zaddr$14$q == zaddr)) begin
+        if (e_live$14$q & (e_zaddr$14$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
-        if (e_live$15$q & (e_zaddr$15$q == zaddr)) begin
+        if (e_live$15$q & (e_zaddr$15$q == oldest_zaddr)) begin
             hazard = 1'b1;
         end
         count = tail$q - head$q;
-        inp$ready = drawing & ~count[32'h4] & (~ar_valid$q | zr$ar_ready) & ~hazard;
-        take = inp$valid & inp$ready;
+        enter = drawing & |in_count & ~count[32'h4] & (~ar_valid$q | zr$ar_ready) & ~hazard;
+        if (enter) begin
+            in_head$d = in_head$q + 32'h1;
+        end
         w_zaddr = e_zaddr$0$q;
         w_caddr = e_caddr$0$q;
         w_z = e_z$0$q;
@@ -1660,11 +1796,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 0)) begin
             e_pass$0$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 0)) begin
-            e_zaddr$0$d = zaddr;
-            e_caddr$0$d = caddr;
-            e_z$0$d = inp$z;
-            e_rgb$0$d = rgb$out;
+        if (enter & (tail_i == 0)) begin
+            e_zaddr$0$d = oldest_zaddr;
+            e_caddr$0$d = oldest_caddr;
+            e_z$0$d = oldest_z;
+            e_rgb$0$d = oldest_rgb;
             e_pass$0$d = 1'b0;
             e_live$0$d = 1'b1;
         end
@@ -1674,11 +1810,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 1)) begin
             e_pass$1$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 1)) begin
-            e_zaddr$1$d = zaddr;
-            e_caddr$1$d = caddr;
-            e_z$1$d = inp$z;
-            e_rgb$1$d = rgb$out;
+        if (enter & (tail_i == 1)) begin
+            e_zaddr$1$d = oldest_zaddr;
+            e_caddr$1$d = oldest_caddr;
+            e_z$1$d = oldest_z;
+            e_rgb$1$d = oldest_rgb;
             e_pass$1$d = 1'b0;
             e_live$1$d = 1'b1;
         end
@@ -1688,11 +1824,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 2)) begin
             e_pass$2$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 2)) begin
-            e_zaddr$2$d = zaddr;
-            e_caddr$2$d = caddr;
-            e_z$2$d = inp$z;
-            e_rgb$2$d = rgb$out;
+        if (enter & (tail_i == 2)) begin
+            e_zaddr$2$d = oldest_zaddr;
+            e_caddr$2$d = oldest_caddr;
+            e_z$2$d = oldest_z;
+            e_rgb$2$d = oldest_rgb;
             e_pass$2$d = 1'b0;
             e_live$2$d = 1'b1;
         end
@@ -1702,11 +1838,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 3)) begin
             e_pass$3$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 3)) begin
-            e_zaddr$3$d = zaddr;
-            e_caddr$3$d = caddr;
-            e_z$3$d = inp$z;
-            e_rgb$3$d = rgb$out;
+        if (enter & (tail_i == 3)) begin
+            e_zaddr$3$d = oldest_zaddr;
+            e_caddr$3$d = oldest_caddr;
+            e_z$3$d = oldest_z;
+            e_rgb$3$d = oldest_rgb;
             e_pass$3$d = 1'b0;
             e_live$3$d = 1'b1;
         end
@@ -1716,11 +1852,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 4)) begin
             e_pass$4$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 4)) begin
-            e_zaddr$4$d = zaddr;
-            e_caddr$4$d = caddr;
-            e_z$4$d = inp$z;
-            e_rgb$4$d = rgb$out;
+        if (enter & (tail_i == 4)) begin
+            e_zaddr$4$d = oldest_zaddr;
+            e_caddr$4$d = oldest_caddr;
+            e_z$4$d = oldest_z;
+            e_rgb$4$d = oldest_rgb;
             e_pass$4$d = 1'b0;
             e_live$4$d = 1'b1;
         end
@@ -1730,11 +1866,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 5)) begin
             e_pass$5$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 5)) begin
-            e_zaddr$5$d = zaddr;
-            e_caddr$5$d = caddr;
-            e_z$5$d = inp$z;
-            e_rgb$5$d = rgb$out;
+        if (enter & (tail_i == 5)) begin
+            e_zaddr$5$d = oldest_zaddr;
+            e_caddr$5$d = oldest_caddr;
+            e_z$5$d = oldest_z;
+            e_rgb$5$d = oldest_rgb;
             e_pass$5$d = 1'b0;
             e_live$5$d = 1'b1;
         end
@@ -1744,11 +1880,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 6)) begin
             e_pass$6$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 6)) begin
-            e_zaddr$6$d = zaddr;
-            e_caddr$6$d = caddr;
-            e_z$6$d = inp$z;
-            e_rgb$6$d = rgb$out;
+        if (enter & (tail_i == 6)) begin
+            e_zaddr$6$d = oldest_zaddr;
+            e_caddr$6$d = oldest_caddr;
+            e_z$6$d = oldest_z;
+            e_rgb$6$d = oldest_rgb;
             e_pass$6$d = 1'b0;
             e_live$6$d = 1'b1;
         end
@@ -1758,11 +1894,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 7)) begin
             e_pass$7$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 7)) begin
-            e_zaddr$7$d = zaddr;
-            e_caddr$7$d = caddr;
-            e_z$7$d = inp$z;
-            e_rgb$7$d = rgb$out;
+        if (enter & (tail_i == 7)) begin
+            e_zaddr$7$d = oldest_zaddr;
+            e_caddr$7$d = oldest_caddr;
+            e_z$7$d = oldest_z;
+            e_rgb$7$d = oldest_rgb;
             e_pass$7$d = 1'b0;
             e_live$7$d = 1'b1;
         end
@@ -1772,11 +1908,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 8)) begin
             e_pass$8$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 8)) begin
-            e_zaddr$8$d = zaddr;
-            e_caddr$8$d = caddr;
-            e_z$8$d = inp$z;
-            e_rgb$8$d = rgb$out;
+        if (enter & (tail_i == 8)) begin
+            e_zaddr$8$d = oldest_zaddr;
+            e_caddr$8$d = oldest_caddr;
+            e_z$8$d = oldest_z;
+            e_rgb$8$d = oldest_rgb;
             e_pass$8$d = 1'b0;
             e_live$8$d = 1'b1;
         end
@@ -1786,11 +1922,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 9)) begin
             e_pass$9$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 9)) begin
-            e_zaddr$9$d = zaddr;
-            e_caddr$9$d = caddr;
-            e_z$9$d = inp$z;
-            e_rgb$9$d = rgb$out;
+        if (enter & (tail_i == 9)) begin
+            e_zaddr$9$d = oldest_zaddr;
+            e_caddr$9$d = oldest_caddr;
+            e_z$9$d = oldest_z;
+            e_rgb$9$d = oldest_rgb;
             e_pass$9$d = 1'b0;
             e_live$9$d = 1'b1;
         end
@@ -1800,11 +1936,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 10)) begin
             e_pass$10$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 10)) begin
-            e_zaddr$10$d = zaddr;
-            e_caddr$10$d = caddr;
-            e_z$10$d = inp$z;
-            e_rgb$10$d = rgb$out;
+        if (enter & (tail_i == 10)) begin
+            e_zaddr$10$d = oldest_zaddr;
+            e_caddr$10$d = oldest_caddr;
+            e_z$10$d = oldest_z;
+            e_rgb$10$d = oldest_rgb;
             e_pass$10$d = 1'b0;
             e_live$10$d = 1'b1;
         end
@@ -1814,11 +1950,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 11)) begin
             e_pass$11$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 11)) begin
-            e_zaddr$11$d = zaddr;
-            e_caddr$11$d = caddr;
-            e_z$11$d = inp$z;
-            e_rgb$11$d = rgb$out;
+        if (enter & (tail_i == 11)) begin
+            e_zaddr$11$d = oldest_zaddr;
+            e_caddr$11$d = oldest_caddr;
+            e_z$11$d = oldest_z;
+            e_rgb$11$d = oldest_rgb;
             e_pass$11$d = 1'b0;
             e_live$11$d = 1'b1;
         end
@@ -1828,11 +1964,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 12)) begin
             e_pass$12$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 12)) begin
-            e_zaddr$12$d = zaddr;
-            e_caddr$12$d = caddr;
-            e_z$12$d = inp$z;
-            e_rgb$12$d = rgb$out;
+        if (enter & (tail_i == 12)) begin
+            e_zaddr$12$d = oldest_zaddr;
+            e_caddr$12$d = oldest_caddr;
+            e_z$12$d = oldest_z;
+            e_rgb$12$d = oldest_rgb;
             e_pass$12$d = 1'b0;
             e_live$12$d = 1'b1;
         end
@@ -1842,11 +1978,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 13)) begin
             e_pass$13$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 13)) begin
-            e_zaddr$13$d = zaddr;
-            e_caddr$13$d = caddr;
-            e_z$13$d = inp$z;
-            e_rgb$13$d = rgb$out;
+        if (enter & (tail_i == 13)) begin
+            e_zaddr$13$d = oldest_zaddr;
+            e_caddr$13$d = oldest_caddr;
+            e_z$13$d = oldest_z;
+            e_rgb$13$d = oldest_rgb;
             e_pass$13$d = 1'b0;
             e_live$13$d = 1'b1;
         end
@@ -1856,11 +1992,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 14)) begin
             e_pass$14$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 14)) begin
-            e_zaddr$14$d = zaddr;
-            e_caddr$14$d = caddr;
-            e_z$14$d = inp$z;
-            e_rgb$14$d = rgb$out;
+        if (enter & (tail_i == 14)) begin
+            e_zaddr$14$d = oldest_zaddr;
+            e_caddr$14$d = oldest_caddr;
+            e_z$14$d = oldest_z;
+            e_rgb$14$d = oldest_rgb;
             e_pass$14$d = 1'b0;
             e_live$14$d = 1'b1;
         end
@@ -1870,11 +2006,11 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$r_valid & (tested$q != tail$q) & (t_i == 15)) begin
             e_pass$15$d = (zr$r_resp == 32'h0) & (t_z < old_z);
         end
-        if (take & (tail_i == 15)) begin
-            e_zaddr$15$d = zaddr;
-            e_caddr$15$d = caddr;
-            e_z$15$d = inp$z;
-            e_rgb$15$d = rgb$out;
+        if (enter & (tail_i == 15)) begin
+            e_zaddr$15$d = oldest_zaddr;
+            e_caddr$15$d = oldest_caddr;
+            e_z$15$d = oldest_z;
+            e_rgb$15$d = oldest_rgb;
             e_pass$15$d = 1'b0;
             e_live$15$d = 1'b1;
         end
@@ -1884,10 +2020,10 @@ module pixel_bus(clock,start,clear,width,height,background,color_base,color_pitc
         if (zr$ar_ready) begin
             ar_valid$d = 1'b0;
         end
-        if (take) begin
+        if (enter) begin
             tail$d = tail$q + 32'h1;
             ar_valid$d = 1'b1;
-            ar_addr$d = zaddr;
+            ar_addr$d = oldest_zaddr;
         end
         if (load & ~zw$b_valid) begin
             z_pending$d = z_pending$q + 32'h1;
@@ -4022,6 +4158,196 @@ module pixel_bus$head(d,q,clock);
     end
           
 endmodule // pixel_bus$head
+
+
+module pixel_bus$in_caddr$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // pixel_bus$in_caddr$0
+
+
+module pixel_bus$in_caddr$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // pixel_bus$in_caddr$1
+
+
+module pixel_bus$in_head(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // pixel_bus$in_head
+
+
+module pixel_bus$in_rgb$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // pixel_bus$in_rgb$0
+
+
+module pixel_bus$in_rgb$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // pixel_bus$in_rgb$1
+
+
+module pixel_bus$in_tail(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // pixel_bus$in_tail
+
+
+module pixel_bus$in_z$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // pixel_bus$in_z$0
+
+
+module pixel_bus$in_z$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // pixel_bus$in_z$1
+
+
+module pixel_bus$in_zaddr$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // pixel_bus$in_zaddr$0
+
+
+module pixel_bus$in_zaddr$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // pixel_bus$in_zaddr$1
 
 
 module pixel_bus$phase(d,q,clock);

@@ -16,10 +16,12 @@
 //! (the far plane, `cull_sort::z_max`) and the `background` colour, one pixel a cycle, then
 //! waits for every write's response. Pixels are then taken one a cycle:
 //!
-//! * **In.** A pixel is taken when a queue entry is free, the read-address register is free
-//!   or being emptied, and no pixel in the queue has the same depth address (the hazard
-//!   check: that pixel's write has not been answered yet, so a read of the word could
-//!   return the old depth). Its depth word's read is offered from the next cycle.
+//! * **In.** A pixel is taken while drawing when one of the [`INPUT`] input registers is
+//!   free (`inp$ready` is a function of registers only), with its two word addresses. The
+//!   oldest input enters the queue when a queue entry is free, the read-address register
+//!   is free or being emptied, and no pixel in the queue has the same depth address (the
+//!   hazard check: that pixel's write has not been answered yet, so a read of the word
+//!   could return the old depth). Its depth word's read is offered from the next cycle.
 //! * **Test.** Read data come back in order, each into the oldest entry waiting for one:
 //!   the pixel passes if its depth is below the word's (and the read was not answered with
 //!   an error).
@@ -38,6 +40,7 @@
 
 use crate::span::Pixel;
 use crate::word_memory::{WordMemory, WordRequest, WordResponse};
+use std::collections::VecDeque;
 
 /// The unit's build parameters.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -63,6 +66,11 @@ impl Params {
 
 /// Writes of one buffer left unanswered at most, before the unit waits.
 pub const MAX_PENDING: u32 = 128;
+
+/// Input registers: pixels taken and not yet in the queue. Two keep a pixel a cycle
+/// coming in while `inp$ready` depends on no input: the address arithmetic and the hazard
+/// check, on the oldest input's registered address, end in registers.
+pub const INPUT: usize = 2;
 
 /// Where the buffers are and what a clear writes: ports held while the unit is busy.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -129,7 +137,7 @@ enum Phase {
     Settle,
 }
 
-/// A pixel in the queue.
+/// A pixel in the queue or in an input register.
 #[derive(Clone, Copy, Debug, Default)]
 struct Entry {
     depth_addr: u32,
@@ -168,6 +176,8 @@ pub struct PixelBus {
     /// The clear's next pixel.
     cx: u32,
     cy: u32,
+    /// The input registers, oldest first (at most [`INPUT`]).
+    input: VecDeque<Entry>,
     /// The queue, a ring: `head` (the oldest) <= `written` (the next to write) <= `tested`
     /// (the next to get its read data) <= `tail` (the next free), counted without wrapping.
     entries: Vec<Entry>,
@@ -196,6 +206,7 @@ impl PixelBus {
             phase: Phase::Draw,
             cx: 0,
             cy: 0,
+            input: VecDeque::with_capacity(INPUT),
             entries: vec![Entry::default(); params.entries as usize],
             head: 0,
             written: 0,
@@ -221,7 +232,11 @@ impl PixelBus {
     }
 
     fn idle(&self) -> bool {
-        self.phase == Phase::Draw && self.head == self.tail && self.z_pending == 0 && self.c_pending == 0
+        self.phase == Phase::Draw
+            && self.input.is_empty()
+            && self.head == self.tail
+            && self.z_pending == 0
+            && self.c_pending == 0
     }
 
     /// Whether both buffers' write registers can take a write this cycle.
@@ -229,24 +244,28 @@ impl PixelBus {
         self.zw.free(&i.depth) && self.cw.free(&i.color) && self.z_pending < MAX_PENDING && self.c_pending < MAX_PENDING
     }
 
-    /// Whether the pixel offered is taken this cycle.
-    fn takes(&self, i: &Inputs) -> bool {
-        let Some(p) = i.pixel else { return false };
-        let (depth_addr, _) = i.config.addresses(p.x, p.y);
-        let hazard = (self.head..self.tail).any(|n| self.entry(n).depth_addr == depth_addr);
+    /// `inp$ready`: a pixel offered is taken this cycle.
+    fn ready(&self) -> bool {
+        self.phase == Phase::Draw && self.input.len() < INPUT
+    }
+
+    /// Whether the oldest input enters the queue this cycle.
+    fn enters(&self, i: &Inputs) -> bool {
+        let Some(p) = self.input.front() else { return false };
+        let hazard = (self.head..self.tail).any(|n| self.entry(n).depth_addr == p.depth_addr);
         self.phase == Phase::Draw
             && self.tail - self.head < self.entries.len() as u64
             && (self.ar.is_none() || i.depth.ar_ready)
             && !hazard
     }
 
-    /// What the unit drives this cycle.
-    pub fn outputs(&self, i: &Inputs) -> Outputs {
+    /// What the unit drives this cycle: its registers' outputs alone (no input reaches an
+    /// output in the same cycle).
+    pub fn outputs(&self) -> Outputs {
         let request =
             |ar: Option<u32>, s: &WriteSlot| WordRequest { ar, aw: s.aw, w: s.w, r_ready: true, b_ready: true };
         Outputs {
-            ready: self
-                .takes(&Inputs { pixel: Some(i.pixel.unwrap_or(Pixel { x: 0, y: 0, z: 0, rgb: [0; 3] })), ..*i }),
+            ready: self.ready(),
             depth: request(self.ar, &self.zw),
             color: request(None, &self.cw),
             idle: self.idle(),
@@ -259,7 +278,8 @@ impl PixelBus {
         let c = i.config;
         let idle = self.idle();
         let can_write = self.can_write(i);
-        let taken = self.takes(i).then(|| i.pixel.expect("a pixel taken was offered"));
+        let enters = self.enters(i);
+        let taken = i.pixel.filter(|_| self.ready());
         let mut error = self.error || (i.depth.r_valid && i.depth.r_error);
         error |= (i.depth.b_valid && i.depth.b_error) || (i.color.b_valid && i.color.b_error);
 
@@ -327,12 +347,16 @@ impl PixelBus {
         }
 
         self.ar = self.ar.filter(|_| !i.depth.ar_ready);
+        if enters {
+            let e = self.input.pop_front().expect("an input enters");
+            let n = self.tail;
+            *self.entry_mut(n) = e;
+            self.tail += 1;
+            self.ar = Some(e.depth_addr);
+        }
         if let Some(p) = taken {
             let (depth_addr, color_addr) = c.addresses(p.x, p.y);
-            let n = self.tail;
-            *self.entry_mut(n) = Entry { depth_addr, color_addr, z: p.z, color: color_word(p.rgb), pass: false };
-            self.tail += 1;
-            self.ar = Some(depth_addr);
+            self.input.push_back(Entry { depth_addr, color_addr, z: p.z, color: color_word(p.rgb), pass: false });
         }
         let pending = |n: u32, load: bool, b: bool| (n + load as u32).wrapping_sub(b as u32) & 0xff;
         self.z_pending = pending(self.z_pending, load.is_some(), i.depth.b_valid);
@@ -448,7 +472,7 @@ mod tests {
         let mut unit = PixelBus::new(PARAMS).expect("parameters");
         for cycle in 0..max {
             let i = drive.inputs();
-            let o = unit.outputs(&i);
+            let o = unit.outputs();
             unit.clock(&i);
             if drive.clock(&i, &o) {
                 return Run { cycles: cycle + 1, error: o.error };
@@ -522,17 +546,18 @@ mod tests {
         let mut depth = memory(&c, DEPTH_BASE, 0, 0, || false);
         let mut color = memory(&c, COLOR_BASE, 0, 0, || false);
         let r = run(&mut FrameDrive::new(c, false, &mut depth, &mut color, &ps, || true), 1000);
-        // Cycle 0 starts, pixels are taken in cycles 1..=32; the last one's read is offered
-        // in 33 and answered in 34; in 35 it fails, and leaves in 36: idle is seen in 37.
-        assert_eq!(r.cycles, 38);
+        // Cycle 0 starts, pixels are taken in cycles 1..=32 and enter the queue in 2..=33;
+        // the last one's read is offered in 34 and answered in 35; in 36 it fails, and
+        // leaves in 37: idle is seen in 38.
+        assert_eq!(r.cycles, 39);
         let before = memory(&c, DEPTH_BASE, 0, 0, || false).words;
         assert_eq!(depth.words, before, "no depth below 0: nothing passes");
         let (mut depth, mut color) =
             (memory(&c, DEPTH_BASE, 0xffff_ffff, 0, || false), memory(&c, COLOR_BASE, 0, 0, || false));
         let r = run(&mut FrameDrive::new(c, false, &mut depth, &mut color, &ps, || true), 1000);
-        // When it passes, its writes are loaded in 35, offered and taken in 36, answered
-        // in 37, and it leaves with the response: idle in 38.
-        assert_eq!((r.cycles, depth.written.len(), color.written.len()), (39, 32, 32));
+        // When it passes, its writes are loaded in 36, offered and taken in 37, answered
+        // in 38, and it leaves with the response: idle in 39.
+        assert_eq!((r.cycles, depth.written.len(), color.written.len()), (40, 32, 32));
     }
 
     /// At latency 40, a read and a write's response take over 80 cycles: 16 entries let

@@ -9,11 +9,13 @@
 //!   writes. Both are the depth buffer's: one AXI4 master's read and write channels.
 //! * `cw$` (`links::WordWriteMaster`): colour writes, a write-only AXI4 master.
 //!
-//! **Registers:** [`ENTRIES`] queue entries (each a pixel's two word addresses, its depth,
-//! colour, whether it passed, and whether it is in the queue), four ring pointers, the read
-//! address, the two buffers' write address and data, the clear's pixel, and counts of the
-//! writes unanswered. Two multipliers make `y * pitch` for the pixel coming in (or the
-//! clear's): on ECP5, MULT18X18D blocks.
+//! **Registers:** two input registers (`model::pixel_bus::INPUT`: pixels taken, with their
+//! two word addresses, before they enter the queue, so that `inp$ready` comes from
+//! registers and the address arithmetic ends in one), [`ENTRIES`] queue entries (each a
+//! pixel's two word addresses, its depth, colour, whether it passed, and whether it is in
+//! the queue), four ring pointers, the read address, the two buffers' write address and
+//! data, the clear's pixel, and counts of the writes unanswered. Two multipliers make `y *
+//! pitch` for the pixel coming in (or the clear's): on ECP5, MULT18X18D blocks.
 //!
 //! Emitted: `hdl-out/pixel_bus.v`.
 
@@ -30,6 +32,9 @@ pub const ENTRIES: usize = 16;
 /// Bits of the ring pointers, which count to twice [`ENTRIES`] so that full and empty
 /// differ.
 const POINTER: usize = 5;
+/// Input registers (`model::pixel_bus::INPUT`), and the bits of their ring pointers.
+const INPUT: usize = 2;
+const IN_POINTER: usize = 2;
 const _: () = assert!(ENTRIES == 16 && 2 * ENTRIES == 1 << POINTER, "the kernel takes 4 bits of a pointer");
 /// `y` and `x` as the address arithmetic takes them: a clear counts to the screen's size.
 const YW: usize = DIM + 1;
@@ -67,6 +72,13 @@ pub struct PixelBus {
     /// The clear's next pixel.
     cx: DFF<Bits<DIM>>,
     cy: DFF<Bits<DIM>>,
+    /// The input registers, a ring: the oldest at `in_head`, the next free at `in_tail`.
+    in_zaddr: [DFF<Bits<32>>; INPUT],
+    in_caddr: [DFF<Bits<32>>; INPUT],
+    in_z: [DFF<Bits<DEPTH>>; INPUT],
+    in_rgb: [DFF<Bits<RGB>>; INPUT],
+    in_head: DFF<Bits<IN_POINTER>>,
+    in_tail: DFF<Bits<IN_POINTER>>,
     /// The queue's entries.
     e_zaddr: [DFF<Bits<32>>; ENTRIES],
     e_caddr: [DFF<Bits<32>>; ENTRIES],
@@ -117,7 +129,15 @@ pub struct PixelBus {
     idle_now: Signal<Local, Bit>,
     hazard: Signal<Local, Bit>,
     count: Signal<Local, Bits<POINTER>>,
+    /// Inputs held, and the oldest one's fields.
+    in_count: Signal<Local, Bits<IN_POINTER>>,
+    oldest_zaddr: Signal<Local, Bits<32>>,
+    oldest_caddr: Signal<Local, Bits<32>>,
+    oldest_z: Signal<Local, Bits<DEPTH>>,
+    oldest_rgb: Signal<Local, Bits<RGB>>,
+    /// A pixel taken into the input registers; the oldest input entering the queue.
     take: Signal<Local, Bit>,
+    enter: Signal<Local, Bit>,
     can_write: Signal<Local, Bit>,
     load: Signal<Local, Bit>,
     /// The entries at `written`, `head` and `tested`.
@@ -139,6 +159,10 @@ pub struct PixelBus {
 impl PixelBus {
     pub fn new() -> PixelBus {
         PixelBus {
+            in_zaddr: defaults(),
+            in_caddr: defaults(),
+            in_z: defaults(),
+            in_rgb: defaults(),
             e_zaddr: defaults(),
             e_caddr: defaults(),
             e_z: defaults(),
@@ -154,9 +178,19 @@ impl Logic for PixelBus {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, phase, cx, cy, head, written, tested, tail, ar_valid, ar_addr, zaw_valid, zaw_addr,
-            zw_valid, zw_data, caw_valid, caw_addr, cw_valid, cw_data, z_pending, c_pending, credit, err
+            self, clock, phase, cx, cy, in_head, in_tail, head, written, tested, tail, ar_valid, ar_addr, zaw_valid,
+            zaw_addr, zw_valid, zw_data, caw_valid, caw_addr, cw_valid, cw_data, z_pending, c_pending, credit, err
         );
+        for i in 0..INPUT {
+            self.in_zaddr[i].clock.next = self.clock.val();
+            self.in_zaddr[i].d.next = self.in_zaddr[i].q.val();
+            self.in_caddr[i].clock.next = self.clock.val();
+            self.in_caddr[i].d.next = self.in_caddr[i].q.val();
+            self.in_z[i].clock.next = self.clock.val();
+            self.in_z[i].d.next = self.in_z[i].q.val();
+            self.in_rgb[i].clock.next = self.clock.val();
+            self.in_rgb[i].d.next = self.in_rgb[i].q.val();
+        }
         for i in 0..ENTRIES {
             self.e_zaddr[i].clock.next = self.clock.val();
             self.e_zaddr[i].d.next = self.e_zaddr[i].q.val();
@@ -174,6 +208,7 @@ impl Logic for PixelBus {
         self.clearing.next = self.phase.q.val() == 1;
         self.drawing.next = self.phase.q.val() == 0;
         self.idle_now.next = self.drawing.val()
+            & (self.in_head.q.val() == self.in_tail.q.val())
             & (self.head.q.val() == self.tail.q.val())
             & (self.z_pending.q.val() == 0)
             & (self.c_pending.q.val() == 0);
@@ -205,19 +240,49 @@ impl Logic for PixelBus {
         self.t_i.next = self.tested.q.val().get_bits::<4>(0);
         self.tail_i.next = self.tail.q.val().get_bits::<4>(0);
 
-        // In: a free entry, the read address register free, no pixel of the same word.
+        // In: a free input register while drawing.
+        self.in_count.next = self.in_tail.q.val() - self.in_head.q.val();
+        self.inp.ready.next = self.drawing.val() & !self.in_count.val().get_bit(1);
+        self.take.next = self.inp.valid.val() & self.inp.ready.val();
+        for i in 0..INPUT {
+            if self.take.val() & (self.in_tail.q.val().get_bits::<1>(0).index() == i) {
+                self.in_zaddr[i].d.next = self.zaddr.val();
+                self.in_caddr[i].d.next = self.caddr.val();
+                self.in_z[i].d.next = self.inp.z.val();
+                self.in_rgb[i].d.next = self.rgb.out.val();
+            }
+        }
+        if self.take.val() {
+            self.in_tail.d.next = self.in_tail.q.val() + 1;
+        }
+        self.oldest_zaddr.next = self.in_zaddr[0].q.val();
+        self.oldest_caddr.next = self.in_caddr[0].q.val();
+        self.oldest_z.next = self.in_z[0].q.val();
+        self.oldest_rgb.next = self.in_rgb[0].q.val();
+        if self.in_head.q.val().get_bit(0) {
+            self.oldest_zaddr.next = self.in_zaddr[1].q.val();
+            self.oldest_caddr.next = self.in_caddr[1].q.val();
+            self.oldest_z.next = self.in_z[1].q.val();
+            self.oldest_rgb.next = self.in_rgb[1].q.val();
+        }
+
+        // Into the queue: the oldest input, with a free entry, the read address register
+        // free, and no pixel of the same word in the queue.
         self.hazard.next = false;
         for i in 0..ENTRIES {
-            if self.e_live[i].q.val() & (self.e_zaddr[i].q.val() == self.zaddr.val()) {
+            if self.e_live[i].q.val() & (self.e_zaddr[i].q.val() == self.oldest_zaddr.val()) {
                 self.hazard.next = true;
             }
         }
         self.count.next = self.tail.q.val() - self.head.q.val();
-        self.inp.ready.next = self.drawing.val()
+        self.enter.next = self.drawing.val()
+            & self.in_count.val().any()
             & !self.count.val().get_bit(4)
             & (!self.ar_valid.q.val() | self.zr.ar_ready.val())
             & !self.hazard.val();
-        self.take.next = self.inp.valid.val() & self.inp.ready.val();
+        if self.enter.val() {
+            self.in_head.d.next = self.in_head.q.val() + 1;
+        }
 
         // The entries at the pointers.
         self.w_zaddr.next = self.e_zaddr[0].q.val();
@@ -323,11 +388,11 @@ impl Logic for PixelBus {
             {
                 self.e_pass[i].d.next = (self.zr.r_resp.val() == 0) & (self.t_z.val() < self.old_z.val());
             }
-            if self.take.val() & (self.tail_i.val().index() == i) {
-                self.e_zaddr[i].d.next = self.zaddr.val();
-                self.e_caddr[i].d.next = self.caddr.val();
-                self.e_z[i].d.next = self.inp.z.val();
-                self.e_rgb[i].d.next = self.rgb.out.val();
+            if self.enter.val() & (self.tail_i.val().index() == i) {
+                self.e_zaddr[i].d.next = self.oldest_zaddr.val();
+                self.e_caddr[i].d.next = self.oldest_caddr.val();
+                self.e_z[i].d.next = self.oldest_z.val();
+                self.e_rgb[i].d.next = self.oldest_rgb.val();
                 self.e_pass[i].d.next = false;
                 self.e_live[i].d.next = true;
             }
@@ -336,14 +401,14 @@ impl Logic for PixelBus {
             self.tested.d.next = self.tested.q.val() + 1;
         }
 
-        // The read address of the pixel taken.
+        // The read address of the pixel entering the queue.
         if self.zr.ar_ready.val() {
             self.ar_valid.d.next = false;
         }
-        if self.take.val() {
+        if self.enter.val() {
             self.tail.d.next = self.tail.q.val() + 1;
             self.ar_valid.d.next = true;
-            self.ar_addr.d.next = self.zaddr.val();
+            self.ar_addr.d.next = self.oldest_zaddr.val();
         }
 
         // Writes unanswered.
