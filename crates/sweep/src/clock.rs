@@ -29,10 +29,11 @@ pub const MEASURED_MHZ: [(&str, f64); 6] = [
 pub const PIPELINE_MHZ: f64 = 38.3;
 
 /// `gpu_top`'s ECP5 Fmax at the default design, MHz, placed and routed whole (LFE5U-85F,
-/// nextpnr's router1; README, "Units"): its critical path is `pixel_bus`'s (the row times
-/// the pitch, the address sum, the hazard compares into its `inp$ready`, 37.9 MHz alone)
-/// continued through span's advance into span's registers.
-pub const GPU_TOP_MHZ: f64 = 30.4;
+/// nextpnr's router1; README, "Units"): its critical path is the command parser's (the
+/// triangle count against the buffer's, the index record's end and fault checks, the next
+/// vertex index into the tag RAM's read address). Before `pixel_bus`'s input registers
+/// (stop 38) it was 30.4 MHz, on `pixel_bus`'s path into span.
+pub const GPU_TOP_MHZ: f64 = 41.8;
 
 /// The design [`MEASURED_MHZ`] and [`PIPELINE_MHZ`] were measured at: size class
 /// `fx::RTL_CLASS` at its default formats, K = 7, L = `model::divider::LATENCY` (25).
