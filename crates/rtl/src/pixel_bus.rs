@@ -25,6 +25,7 @@ use crate::emit::{emit_unit, Emitted};
 use crate::mul::Mul;
 use crate::parts::{defaults, Concat};
 use crate::Params;
+use model::pixel_bus::INPUT;
 use rust_hdl::prelude::*;
 
 /// Pixels in flight (`model::pixel_bus::Params::entries`).
@@ -32,9 +33,10 @@ pub const ENTRIES: usize = 16;
 /// Bits of the ring pointers, which count to twice [`ENTRIES`] so that full and empty
 /// differ.
 const POINTER: usize = 5;
-/// Input registers (`model::pixel_bus::INPUT`), and the bits of their ring pointers.
-const INPUT: usize = 2;
+/// Bits of the input registers' ring pointers, which count to twice
+/// `model::pixel_bus::INPUT` (2).
 const IN_POINTER: usize = 2;
+const _: () = assert!(INPUT == 2 && 2 * INPUT == 1 << IN_POINTER, "the kernel picks an input by one pointer bit");
 const _: () = assert!(ENTRIES == 16 && 2 * ENTRIES == 1 << POINTER, "the kernel takes 4 bits of a pointer");
 /// `y` and `x` as the address arithmetic takes them: a clear counts to the screen's size.
 const YW: usize = DIM + 1;
