@@ -41,13 +41,14 @@ if [[ ${#files[@]} -eq 0 ]]; then
     fi
     # raster_top's other builds, each a directory under target/lint/ and the arguments that
     # emit it: the larger size classes (screens up to 2048 and 4096), units left out, and
-    # formats other than its class's defaults (24-bit depth, ...).
+    # formats other than its class's defaults (24-bit depth, ...), and its barycentric method.
     variants=(
         "N11" "--param N=11"
         "N12" "--param N=12"
         "CULL_SORT=0" "--param CULL_SORT=0"
         "PIXEL_OUT=0" "--param PIXEL_OUT=0"
         "CULL_SORT=0-PIXEL_OUT=0" "--param CULL_SORT=0 --param PIXEL_OUT=0"
+        "METHOD=1" "--param METHOD=1"
         "custom" "--formats crates/rtl/custom-formats.json"
     )
     emit=()

@@ -256,6 +256,41 @@ fn cli_render_rtl_draws_through_gpu_top() {
     fails_with(&["render", cube, "-o", o, "--top", "gpu_top"], &["--top", "needs --engine rtl"]);
 }
 
+/// `render --engine rtl --method vector` draws through `raster_top` with `METHOD = 1` (004's
+/// barycentric unit): its PNG is the vector model's at one lane, perspective-correct or
+/// with `--linear` screen-linear, and its frame time is at the vector unit's routed clock;
+/// what does not apply to it is a clear error.
+#[test]
+fn cli_render_rtl_draws_with_the_vector_method() {
+    let d = scratch("rtl-vector");
+    let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
+    let render = |name: &str, more: &[&str]| {
+        let png = d.join(name);
+        let args = [&["render", cube, "--size", "64x48", "-o", png.to_str().unwrap()][..], more].concat();
+        let out = edgepaint(&args);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        (std::fs::read(&png).unwrap(), String::from_utf8_lossy(&out.stdout).to_string())
+    };
+    for linear in [false, true] {
+        let more: &[&str] = if linear { &["--linear"] } else { &[] };
+        let (rtl, summary) = render("rtl.png", &[&["--engine", "rtl", "--method", "vector"][..], more].concat());
+        assert!(summary.contains("METHOD = 1: cull_sort, vector, pixel_out"), "{summary}");
+        assert!(summary.contains("image, depth and cycles equal to the vector (1 lane) model's"), "{summary}");
+        let (cycles, ms, mhz, source) = frame_time(&summary);
+        assert_eq!((mhz, source.as_str()), (sweep::clock::VECTOR_MHZ, "the vector unit's, routed, ECP5"), "{summary}");
+        assert!((ms - cycles as f64 / (mhz * 1000.0)).abs() <= 0.0005 + 1e-12, "{summary}");
+        let (model, _) = render("model.png", &[&["--engine", "vector", "--lanes", "1"][..], more].concat());
+        assert!(rtl == model, "raster_top's vector PNG is the vector model's (linear: {linear})");
+    }
+    let png = d.join("x.png");
+    let o = png.to_str().unwrap();
+    let base = ["render", cube, "--size", "64x48", "-o", o, "--engine", "rtl", "--method", "vector"];
+    fails_with(&[&base[..], &["--lanes", "4"]].concat(), &["one pixel a cycle", "--lanes 1"]);
+    fails_with(&[&base[..], &["--top", "gpu_top"]].concat(), &["gpu_top holds the scanline method"]);
+    fails_with(&[&base[..], &["--param", "K=3"]].concat(), &["--param K", "no triangle_setup"]);
+    fails_with(&["render", cube, "-o", o, "--method", "vector"], &["--method", "needs --engine rtl"]);
+}
+
 /// Formats other than a size class's defaults: `emit --formats` writes the scanline units
 /// at them (the manifest records them, the ports follow them), `render --engine rtl
 /// --formats` draws through them, equal to the scanline model at those formats.

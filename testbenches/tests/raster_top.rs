@@ -7,7 +7,8 @@ use fx::Build;
 use model::cull_sort::Cull;
 use model::cycles::Timing;
 use model::input::Vtx;
-use model::raster_top::{self as top, raster_top};
+use model::raster_top::{self as top, raster_top, raster_top_by};
+use model::render::Method;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::switch::Parts;
@@ -47,7 +48,20 @@ fn check_at(
     cull: Cull,
     mem: MemoryModel,
 ) -> (top::RasterTopOut, FrameOut) {
-    let prep = raster_top(&build, list, cull, [20, 24, 32]).unwrap_or_else(|e| panic!("{what}: {e}"));
+    check_by(build, Method::Scanline, what, dut, list, cull, mem)
+}
+
+/// [`check_at`] with `dut` a `raster_top` of `method`.
+fn check_by(
+    build: Build,
+    method: Method,
+    what: &str,
+    dut: &mut dyn Cycle,
+    list: &Trilist,
+    cull: Cull,
+    mem: MemoryModel,
+) -> (top::RasterTopOut, FrameOut) {
+    let prep = raster_top_by(&build, list, cull, [20, 24, 32], method).unwrap_or_else(|e| panic!("{what}: {e}"));
     assert!(prep.skipped.is_empty(), "{what}: triangles that do not fit the input formats");
     let f = Frame {
         build: prep.build,
@@ -101,6 +115,33 @@ fn raster_top_scenes_320x240_vs_model() {
         assert_eq!(r.cycles, r.predicted, "{name}: cycles, RTL against model::cycles");
         assert!(r.written > 1000, "{name}: {r:?}");
     }
+}
+
+/// `raster_top` with the barycentric method (`METHOD = 1`: `cull_sort`, `rtl::vector`,
+/// `pixel_out`), perspective-correct colours, under Verilator.
+fn vector_model() -> frame::RasterTopVl {
+    frame::verilator_with(&Build::default(), &[("METHOD", 1)]).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Every shipped scene at 64 x 48 and two at 320 x 240 drawn by the barycentric
+/// `raster_top` (004, one pixel a cycle): image, depth and cycle count the model's
+/// (`Method::Vector`, `model::cycles::vector_frame`); the memory stalling too.
+#[test]
+fn raster_top_vector_scenes_vs_model() {
+    let method = Method::Vector { lanes: 1, perspective: true };
+    let mut dut = vector_model();
+    let scenes = ["cube", "sphere", "cone", "torus", "pawn", "house", "all", "clip"].map(|n| (n, (64, 48)));
+    for (name, size) in scenes.into_iter().chain([("torus", (320, 240)), ("clip", (320, 240))]) {
+        let (list, cull) = scene(name, Some(size));
+        let (prep, out) = check_by(Build::default(), method, name, &mut dut, &list, cull, ready_memory(&mut |_| true));
+        let r = Report::of(&out, &prep);
+        assert_eq!(r.cycles, r.predicted, "{name} at {size:?}: cycles, RTL against model::cycles::vector_frame");
+        assert!(r.written > 0, "{name}: {r:?}");
+    }
+    let (list, cull) = scene("all", Some((64, 48)));
+    let mut rng = ChaCha8Rng::seed_from_u64(seed());
+    let mut stalls = |_| rng.gen_bool(0.7);
+    check_by(Build::default(), method, "all, stalling", &mut dut, &list, cull, ready_memory(&mut stalls));
 }
 
 fn list(width: u32, height: u32, triangles: Vec<Triangle>) -> Trilist {

@@ -16,3 +16,4 @@ mod se;
 mod span;
 mod triangle_queue;
 mod triangle_setup;
+mod vector;

@@ -130,7 +130,7 @@ pub fn compare(list: &Trilist, s: &Setup) -> Report {
     let fixed = model_render(list, &s.formats, &mopts, &mut |_| {});
     let FrameCycles { total: cycles, .. } = match s.method {
         Method::Scanline => scanline_frame(&fixed.work, &s.timing),
-        Method::Vector { .. } => vector_frame(&fixed.work),
+        Method::Vector { .. } => vector_frame(&fixed.work, &s.timing),
     };
     let perspective = matches!(s.method, Method::Vector { perspective: true, .. });
     let frame = Fixed {
@@ -244,6 +244,7 @@ fn against_reference(list: &Trilist, s: &Setup, perspective: bool, fixed: Fixed)
 pub fn method_name(m: Method) -> String {
     match m {
         Method::Scanline => "scanline".into(),
+        Method::Vector { lanes: 1, .. } => "vector (1 lane)".into(),
         Method::Vector { lanes, .. } => format!("vector ({lanes} lanes)"),
     }
 }

@@ -31,10 +31,14 @@ pub struct FixedArgs {
     /// their defaults, or follow from the keys given (accumulators, gradients, products).
     #[arg(long, default_value = "default")]
     pub formats: String,
-    /// Pixels the vector method evaluates per cycle.
-    #[arg(long, default_value_t = 4)]
-    pub lanes: u32,
+    /// Pixels the vector method evaluates per cycle: 4 by default; the RTL's vector unit
+    /// (`--engine rtl --method vector`) evaluates 1.
+    #[arg(long)]
+    pub lanes: Option<u32>,
 }
+
+/// The vector model's lanes when `--lanes` is not given.
+pub const DEFAULT_LANES: u32 = 4;
 
 impl FixedArgs {
     /// The formats for a `width` x `height` screen, checked.
@@ -64,11 +68,11 @@ impl FixedArgs {
 
     /// The model's method for an engine (None for the float reference).
     pub fn method(&self, engine: Engine, perspective: bool) -> Result<Option<Method>> {
-        anyhow::ensure!(self.lanes >= 1, "--lanes must be at least 1");
+        anyhow::ensure!(self.lanes != Some(0), "--lanes must be at least 1");
         Ok(match engine {
             Engine::Float => None,
             Engine::Scanline | Engine::Rtl => Some(Method::Scanline),
-            Engine::Vector => Some(Method::Vector { lanes: self.lanes, perspective }),
+            Engine::Vector => Some(Method::Vector { lanes: self.lanes.unwrap_or(DEFAULT_LANES), perspective }),
             Engine::Se => anyhow::bail!("--engine se has no model::render method: its spans are the scanline pipeline's, drawn by model::se::array"),
         })
     }

@@ -29,7 +29,7 @@ pub fn run(args: Args) -> Result<()> {
     let loaded = input::load(&args.input, args.size)?;
     ensure!(loaded.build.is_none(), "{}: already a vertex buffer", args.input.display());
     let list = &loaded.trilist;
-    let fixed = FixedArgs { formats: args.formats.clone(), lanes: 1 };
+    let fixed = FixedArgs { formats: args.formats.clone(), lanes: None };
     let build =
         Build { formats: fixed.formats(list.width, list.height)?, ..Build::for_screen(list.width, list.height) };
     let background = loaded.background.map(|c| c.round().clamp(0.0, 255.0) as u8);

@@ -54,6 +54,11 @@ pub struct Args {
     /// size class, formats and --param). Default: gpu_top where it applies.
     #[arg(long, value_enum)]
     top: Option<super::rtl::Top>,
+    /// `--engine rtl`: raster_top's method: `scanline` (001, 003; the default) or `vector`
+    /// (004: cull_sort, the per-pixel barycentric unit, pixel_out; one pixel a cycle, colours
+    /// perspective-correct unless --linear; on the raster_top top).
+    #[arg(long, value_enum)]
+    method: Option<super::rtl::RtlMethod>,
 }
 
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -103,9 +108,19 @@ pub fn run(args: Args) -> Result<()> {
         args.top.is_none() || args.engine == Engine::Rtl,
         "--top picks the RTL's top: it needs --engine rtl"
     );
+    anyhow::ensure!(
+        args.method.is_none() || args.engine == Engine::Rtl,
+        "--method picks the RTL's method: it needs --engine rtl (the models' methods are engines: --engine vector)"
+    );
     let (image, summary) = match args.fixed.method(args.engine, perspective)? {
         _ if args.engine == Engine::Rtl => {
-            match super::rtl::render(&loaded, cull_back, &args.fixed, args.analysis, &args.params, args.top)? {
+            let how = super::rtl::How {
+                method: args.method.unwrap_or(super::rtl::RtlMethod::Scanline),
+                perspective,
+                params: &args.params,
+                top: args.top,
+            };
+            match super::rtl::render(&loaded, cull_back, &args.fixed, args.analysis, &how)? {
                 Some(drawn) => drawn,
                 None => return Ok(()), // drawn by an edgepaint compiled at --formats
             }
@@ -142,7 +157,7 @@ pub fn run(args: Args) -> Result<()> {
             }
             let cycles = match method {
                 model::render::Method::Scanline => model::cycles::scanline_frame(&r.work, &Default::default()),
-                model::render::Method::Vector { .. } => model::cycles::vector_frame(&r.work),
+                model::render::Method::Vector { .. } => model::cycles::vector_frame(&r.work, &Default::default()),
             };
             let st = &r.stats;
             let summary = format!(

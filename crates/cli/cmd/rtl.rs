@@ -9,13 +9,14 @@
 //! `STATUS`, `FRAME_CYCLES` and `TRIANGLES`. The image is read out of the colour memory and
 //! checked against `model::gpu_top`'s frame, bit for bit, as is `STATUS`.
 //!
-//! **`raster_top`**: triangles on the scanline pipeline's ports, with the depth and colour
-//! buffers in Rust (`sim::frame`). The `raster_top` of the screen's size class draws it
+//! **`raster_top`**: triangles on the rasterizer's ports, with the depth and colour
+//! buffers in Rust (`sim::frame`); its method the scanline pipeline's (001, 003) or, with
+//! `--method vector`, 004's per-pixel barycentric unit (`METHOD = 1`). The `raster_top` of the screen's size class draws it
 //! (`fx::Build::for_screen`: class 10 up to 1024 x 1024, 11 and 12 above) at the
 //! formats asked for (`--formats`; formats edgepaint is not built at are compiled first,
 //! `super::rebuild`). The Verilated model is built the first time, cached under
-//! `target/verilator/` (Verilator from `scripts/setup-tools.sh`). The image is checked against the scanline model's, bit for
-//! bit. The summary gives the frame's time at the design's clock (`sweep::clock::raster_top_mhz`):
+//! `target/verilator/` (Verilator from `scripts/setup-tools.sh`). The image is checked against the method's model, bit for
+//! bit, and the cycles against `model::cycles`. The summary gives the frame's time at the design's clock (`sweep::clock::raster_top_mhz`):
 //! `raster_top`'s routed ECP5 Fmax at the default design, the clock model's elsewhere (other
 //! formats, K or L, or an optional part left out, which the model does not see).
 
@@ -27,6 +28,7 @@ use fx::Build;
 use model::cull_sort::Cull;
 use model::cycles::Timing;
 use model::pixel_bus::color_word;
+use model::render::Method;
 use sim::frame::{self, Frame, MemoryModel, Report};
 use sim::memory::ReadDuringWrite;
 use sim::soc::{Pace, Soc, VB_BASE};
@@ -45,7 +47,25 @@ pub enum Top {
     RasterTop,
 }
 
-/// Draws `loaded` (its formats: `FixedArgs::formats_of`) through `top` (None: `gpu_top`
+/// `raster_top`'s method (its parameter `METHOD`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum RtlMethod {
+    /// Setup, edge walk and span (001, 003).
+    Scanline,
+    /// The per-pixel barycentric unit (004), one pixel a cycle.
+    Vector,
+}
+
+/// What draws: the method, its colours, `raster_top`'s parameters and the top.
+pub struct How<'a> {
+    pub method: RtlMethod,
+    /// The vector method's colours perspective-correct.
+    pub perspective: bool,
+    pub params: &'a [(String, u64)],
+    pub top: Option<Top>,
+}
+
+/// Draws `loaded` (its formats: `FixedArgs::formats_of`) as `how` says (top None: `gpu_top`
 /// where it applies, else `raster_top`); returns the image and the summary line with its
 /// fragment count, or `None` when an edgepaint compiled at the formats asked for drew it.
 pub fn render(
@@ -53,14 +73,20 @@ pub fn render(
     cull_back: bool,
     fixed: &FixedArgs,
     analysis: bool,
-    params: &[(String, u64)],
-    top: Option<Top>,
+    how: &How,
 ) -> Result<Option<(Image, (String, u64))>> {
     ensure!(!analysis, "--analysis checks the models' arithmetic; it does not apply to --engine rtl");
+    let (params, top, vector) = (how.params, how.top, how.method == RtlMethod::Vector);
+    ensure!(
+        !vector || fixed.lanes.is_none_or(|l| l == 1),
+        "--engine rtl --method vector: raster_top's vector unit evaluates one pixel a cycle (--lanes 1), not {}",
+        fixed.lanes.unwrap_or(1)
+    );
     let list = &loaded.trilist;
     let default_build = loaded.build.unwrap_or(Build::for_screen(list.width, list.height)) == Build::default()
         && fixed.formats_of(loaded)? == Build::default().formats;
     let gpu_top_why_not = match (params.first(), default_build) {
+        _ if vector => Some("gpu_top holds the scanline method (--method scanline)".to_owned()),
         (Some((name, _)), _) => Some(format!("--param {name} sets raster_top's parameters")),
         (None, false) => {
             Some(format!("gpu_top is built at size class {} and its default formats only", Build::default().class))
@@ -78,6 +104,7 @@ pub fn render(
     for (name, v) in params {
         let v32 = u32::try_from(*v).unwrap_or(u32::MAX);
         match name.as_str() {
+            "K" if vector => bail!("--param K: triangle_setup's multipliers; --method vector has no triangle_setup (no setup unit: the vector unit sets up each triangle itself)"),
             "K" => timing.setup_multipliers = v32,
             "L" => timing.divider_latency = v32,
             "N" => class = v32,
@@ -90,7 +117,12 @@ pub fn render(
         }
     }
     let (k, l) = (timing.setup_multipliers as u64, timing.divider_latency as u64);
-    let mut unit_params = vec![("K", k), ("L", l)];
+    ensure!(
+        !vector || l == model::divider::LATENCY as u64,
+        "--method vector: --param L sets the divider's stages, and the vector model's cycles are those of the default {}",
+        model::divider::LATENCY
+    );
+    let mut unit_params = vec![("K", k), ("L", l), ("METHOD", vector as u64), ("PERSPECTIVE", how.perspective as u64)];
     unit_params.extend(parts.iter().copied());
     let formats = fixed.formats_of(loaded)?;
     let build = Build { class, formats };
@@ -108,8 +140,12 @@ pub fn render(
     }
     let cull = if cull_back { Cull::Back } else { Cull::None };
     let background = loaded.background.map(|c| c.round().clamp(0.0, 255.0) as u8);
-    let prep =
-        model::raster_top::raster_top(&build, list, cull, background).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let method = match how.method {
+        RtlMethod::Scanline => Method::Scanline,
+        RtlMethod::Vector => Method::Vector { lanes: 1, perspective: how.perspective },
+    };
+    let prep = model::raster_top::raster_top_by(&build, list, cull, background, method)
+        .map_err(|e| anyhow!("--engine rtl: {e}"))?;
     for (i, e) in prep.skipped.iter().take(5) {
         eprintln!("warning: triangle {i} not drawn: {e}");
     }
@@ -122,8 +158,9 @@ pub fn render(
     let out = frame::draw(&mut dut, &f, memory, max_cycles).map_err(|e| anyhow!(e))?;
     let secs = start.elapsed().as_secs_f64();
     let r = Report { predicted: prep.cycles_with(&timing), ..Report::of(&out, &prep) };
+    let name = accuracy::method_name(method);
     if let Some(first) = out.memory.differs_from(&prep.render.fb) {
-        bail!("the RTL's image differs from the scanline model's ({first}): a bug in the RTL or the model");
+        bail!("the RTL's image differs from the {name} model's ({first}): a bug in the RTL or the model");
     }
     ensure!(
         r.cycles == r.predicted,
@@ -136,16 +173,28 @@ pub fn render(
         Design { class: build.class, formats: build.formats, k: timing.setup_multipliers, l: timing.divider_latency };
     let (mhz, source) = sweep::clock::raster_top_mhz(&design);
     let every_part = parts.iter().all(|&(_, v)| v == 1);
-    let clock = match (source, every_part) {
-        (Source::Measured, true) => "routed, ECP5",
-        (_, true) => "modelled, ECP5",
-        (_, false) => "modelled, ECP5, not counting the parts left out",
+    let (mhz, clock) = match (vector, source, every_part) {
+        (true, _, true) if build == Build::default() => (sweep::clock::VECTOR_MHZ, "the vector unit's, routed, ECP5"),
+        (true, _, _) => {
+            (sweep::clock::VECTOR_MHZ, "the default vector unit's, routed, ECP5; not at these formats or parts")
+        }
+        (false, Source::Measured, true) => (mhz, "routed, ECP5"),
+        (false, _, true) => (mhz, "modelled, ECP5"),
+        (false, _, false) => (mhz, "modelled, ECP5, not counting the parts left out"),
+    };
+    let units = if vector {
+        format!(
+            "METHOD = 1: cull_sort, vector, pixel_out; L = {l}, colours {}",
+            if how.perspective { "perspective-correct" } else { "linear" }
+        )
+    } else {
+        format!("K = {k}, L = {l}")
     };
     let summary = format!(
-        "rtl (raster_top of size class {}{}, K = {k}, L = {l}, in Verilator): {} triangles in, {} drawn, {} culled; {} fragments, {} pixels written; \
+        "rtl (raster_top of size class {}{}, {units}, in Verilator): {} triangles in, {} drawn, {} culled; {} fragments, {} pixels written; \
          {} cycles (model::cycles: {}), frame time {:.3} ms at {mhz:.1} MHz ({clock}), {:.3} pixels per clock; per triangle: latency to its first pixel \
          {latency} cycles (min/median/max), {:.1} cycles between triangles (max {}); {:.0} cycles/s simulated ({secs:.2} s); \
-         image, depth and cycles equal to the scanline model's",
+         image, depth and cycles equal to the {name} model's",
         build.class,
         if build == Build::of_class(class) { "" } else { ", formats of --formats" },
         list.triangles.len(),

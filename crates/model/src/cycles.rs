@@ -23,8 +23,9 @@
 //! * `pixel_out`: one pixel per cycle, latency 2;
 //! * without `cull_sort` ([`Timing::cull_sort`]) the host sends only the triangles that
 //!   pass, straight to setup; without `pixel_out` the fragments leave `span` at once;
-//! * `vector`: the per-triangle cycles of `vector::vector` (lanes per cycle),
-//!   fed by `cull_sort`; triangles do not overlap in the vector unit.
+//! * `vector` (`rtl::vector`): fed by `cull_sort`, takes a triangle when it is empty, its
+//!   cycles per triangle and the cycle of its last pixel those of `vector::vector` (at
+//!   the default divider); triangles do not overlap in it.
 
 use crate::render::Work;
 use crate::triangle_setup::schedule::Schedule;
@@ -113,33 +114,15 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
     let running = |waits: &[(u64, u64)], from: u64, n: u64| {
         waits.iter().filter(|w| w.0 >= from).fold(from + n, |t, &(d, h)| if d < t { t + (h - d) } else { t })
     };
-    // cull_sort's stages (none without it): `stage_free[k]` is the cycle the triangle before
-    // left stage k + 1 (the last: the output register), in which the next may move into it;
-    // the next triangle is taken (without cull_sort: offered to setup) in `stage_free[0]`.
-    let stages = if t.cull_sort { cull_sort::LATENCY as usize } else { 0 };
-    let mut stage_free = vec![0u64; stages.max(1)];
-    let mut leaves = vec![0u64; stages.max(1)];
+    let mut cull = CullSortStages::new(t.cull_sort);
     let mut span_starts: Vec<u64> = Vec::new();
     let mut out = FrameCycles::default();
-    let write_latency = if t.pixel_out { 1 + pixel_out::LATENCY as u64 } else { 1 };
+    let write = write_latency(t);
     for w in work.iter().filter(|w| t.cull_sort || w.passed_cull) {
-        // `leaves[k]`: the cycle the triangle leaves stage k (0: taken); `culled`: its first
-        // cycle in the output register, with its verdict.
-        leaves[0] = stage_free[0];
-        for k in 1..stages {
-            leaves[k] = (leaves[k - 1] + 1).max(stage_free[k]);
-        }
-        let culled = if stages == 0 { leaves[0] } else { leaves[stages - 1] + 1 };
-        // Once the triangle leaves the output register (in `left`), each stage is free for
-        // the next one from the cycle this one left it.
-        fn moved_on(stage_free: &mut [u64], leaves: &[u64], left: u64) {
-            let n = stage_free.len();
-            stage_free[..n - 1].copy_from_slice(&leaves[1..]);
-            stage_free[n - 1] = left;
-        }
+        let culled = cull.arrive();
         last = last.max(culled);
         if !w.passed_cull {
-            moved_on(&mut stage_free, &leaves, culled);
+            cull.leave(culled);
             continue;
         }
         out.triangles += 1;
@@ -160,7 +143,7 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
             }
         }
         waits.retain(|w| w.0 >= setup_start);
-        moved_on(&mut stage_free, &leaves, setup_start);
+        cull.leave(setup_start);
         let done = running(&waits, setup_start, setup);
         let ew_start = done.max(ew_free);
         last_taken = Some((setup_start, ew_start));
@@ -183,7 +166,7 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
                 out.span_busy += span.cycles as u64;
                 // pixel_out is empty LATENCY cycles after the one after its last pixel.
                 if let Some(k) = span.last_sent {
-                    last = last.max(start + k as u64 + (span::LATENCY as u64 - 1) + write_latency);
+                    last = last.max(start + k as u64 + (span::LATENCY as u64 - 1) + write);
                 }
             }
             now += 1;
@@ -195,18 +178,81 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
     out
 }
 
-/// Cycles of a frame through the vector pipeline.
-pub fn vector_frame(work: &[Work]) -> FrameCycles {
+/// Cycles from a pixel presented to `pixel_out` (or, without it, leaving the rasterizer)
+/// to the cycle the frame can be done.
+fn write_latency(t: &Timing) -> u64 {
+    if t.pixel_out {
+        1 + pixel_out::LATENCY as u64
+    } else {
+        1
+    }
+}
+
+/// `cull_sort`'s stages as a frame sees them (none without it): `free[k]` is the cycle the
+/// triangle before left stage k + 1 (the last: the output register), in which the next may
+/// move into it; the next triangle is taken (without `cull_sort`: offered to the unit
+/// behind) in `free[0]`.
+struct CullSortStages {
+    stages: usize,
+    free: Vec<u64>,
+    /// The cycle the triangle in flight leaves stage k (0: taken).
+    leaves: Vec<u64>,
+}
+
+impl CullSortStages {
+    fn new(present: bool) -> Self {
+        let stages = if present { cull_sort::LATENCY as usize } else { 0 };
+        CullSortStages { stages, free: vec![0; stages.max(1)], leaves: vec![0; stages.max(1)] }
+    }
+
+    /// The next triangle through the stages: its first cycle in the output register, with
+    /// its verdict (without `cull_sort`, the cycle it is offered).
+    fn arrive(&mut self) -> u64 {
+        self.leaves[0] = self.free[0];
+        for k in 1..self.stages {
+            self.leaves[k] = (self.leaves[k - 1] + 1).max(self.free[k]);
+        }
+        if self.stages == 0 {
+            self.leaves[0]
+        } else {
+            self.leaves[self.stages - 1] + 1
+        }
+    }
+
+    /// The triangle leaves the output register in `left` (a rejected one in the cycle it
+    /// arrives; a passing one when the unit behind takes it): each stage is free for the
+    /// next from the cycle this one left it.
+    fn leave(&mut self, left: u64) {
+        let n = self.free.len();
+        self.free[..n - 1].copy_from_slice(&self.leaves[1..]);
+        self.free[n - 1] = left;
+    }
+}
+
+/// Cycles of a frame through the vector pipeline (`cull_sort` -> `vector` -> `pixel_out`,
+/// `rtl::raster_top` with `METHOD = 1`): the vector unit takes a passing triangle from
+/// `cull_sort`'s output register when it is empty (`Work::vector_cycles` after the one
+/// before), and sends its last pixel `Work::vector_last_sent` cycles after the take; the
+/// frame is done when the unit is empty and `pixel_out` has written that pixel.
+pub fn vector_frame(work: &[Work], t: &Timing) -> FrameCycles {
+    let mut cull = CullSortStages::new(t.cull_sort);
     let (mut free, mut last) = (0u64, 0u64);
     let mut out = FrameCycles::default();
-    for (i, w) in work.iter().enumerate() {
-        let culled = i as u64 + cull_sort::LATENCY as u64;
+    for w in work.iter().filter(|w| t.cull_sort || w.passed_cull) {
+        let culled = cull.arrive();
         last = last.max(culled);
-        if w.passed_cull {
-            out.triangles += 1;
-            free = free.max(culled) + w.vector_cycles as u64;
-            out.span_busy += w.vector_cycles as u64;
-            last = last.max(free + pixel_out::LATENCY as u64);
+        if !w.passed_cull {
+            cull.leave(culled);
+            continue;
+        }
+        out.triangles += 1;
+        let take = culled.max(free);
+        cull.leave(take);
+        free = take + w.vector_cycles as u64;
+        out.span_busy += w.vector_cycles as u64;
+        last = last.max(free);
+        if let Some(k) = w.vector_last_sent {
+            last = last.max(take + k as u64 + write_latency(t));
         }
     }
     out.total = last;
@@ -242,7 +288,8 @@ mod tests {
     #[test]
     fn cycles_setup_overlaps_triangles_and_waits_as_one() {
         assert_eq!(setup_timing(&l5()), SetupTiming { latency: 28, interval: 10 });
-        let walk = |n: usize| Work { passed_cull: true, scanlines: vec![None; n], vector_cycles: 0 };
+        let walk =
+            |n: usize| Work { passed_cull: true, scanlines: vec![None; n], vector_cycles: 0, vector_last_sent: None };
         // First: culled out at 3 (cull_sort's three stages), taken, done at 31, walked
         // 33..83. Second: culled out at 4, taken at 3 + 10 = 13 (the grid), done at 41,
         // waits for the walk until 83, walked 85..86. Third: culled out at 14 (it waited in
@@ -284,7 +331,12 @@ mod tests {
         // 33, 34, 35; span walks each from 1 cycle later or when free: 34..39, 39..44,
         // 44..49; the last pixel leaves span's pixel register in 49 and is written 2 cycles
         // after, in cycle 51: 52 cycles.
-        let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], vector_cycles: 0 };
+        let w = Work {
+            passed_cull: true,
+            scanlines: vec![full(5), full(5), full(5)],
+            vector_cycles: 0,
+            vector_last_sent: None,
+        };
         let c = scanline_frame(std::slice::from_ref(&w), &l5());
         assert_eq!((c.total, c.span_busy, c.triangles), (52, 15, 1));
         // A culled triangle ahead costs one cycle of cull_sort only.
@@ -323,7 +375,12 @@ mod tests {
     fn cycles_without_cull_sort_or_pixel_out() {
         // Without cull_sort the triangle reaches setup in cycle 0 and culled ones are not
         // sent: 3 cycles less, and nothing for the 30 culled ones.
-        let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], vector_cycles: 0 };
+        let w = Work {
+            passed_cull: true,
+            scanlines: vec![full(5), full(5), full(5)],
+            vector_cycles: 0,
+            vector_last_sent: None,
+        };
         let mut frame = vec![Work::default(), w.clone()];
         frame.extend(std::iter::repeat_n(Work::default(), 30));
         let no_cull = Timing { cull_sort: false, ..l5() };
@@ -336,11 +393,25 @@ mod tests {
         assert_eq!(scanline_frame(&frame, &neither).total, 47);
     }
 
+    /// The vector unit takes a triangle as `cull_sort` lets it go (3 cycles after it is
+    /// offered) or when it is empty, whichever is later; `cull_sort` holds the next one
+    /// in its output register meanwhile, and the frame ends when the unit is empty and
+    /// `pixel_out` has written the last pixel (2 cycles after it took it).
     #[test]
     fn cycles_vector_frame_adds_triangles_in_turn() {
-        let w = |c| Work { passed_cull: true, vector_cycles: c, ..Work::default() };
+        let w = |c, last| Work { passed_cull: true, vector_cycles: c, vector_last_sent: last, ..Work::default() };
+        let t = Timing::default();
         let cull = cull_sort::LATENCY as u64;
-        assert_eq!(vector_frame(&[w(100)]).total, cull + 100 + 2);
-        assert_eq!(vector_frame(&[w(100), Work::default(), w(10)]).total, cull + 100 + 10 + 2);
+        // Taken in cycle 3, empty again in 103; its last pixel leaves in 3 + 99 and is
+        // written by 102 + 3: done in 105.
+        assert_eq!(vector_frame(&[w(100, Some(99))], &t).total, cull + 99 + 3);
+        // Its last pixel earlier: done when the unit is empty.
+        assert_eq!(vector_frame(&[w(100, Some(50))], &t).total, cull + 100);
+        // A culled triangle between: the third is taken when the first has gone (103),
+        // not held by the culled one; it ends at 103 + 10.
+        assert_eq!(vector_frame(&[w(100, None), Work::default(), w(10, Some(9))], &t).total, cull + 100 + 9 + 3);
+        // Without pixel_out the last pixel ends the frame as it leaves.
+        let frag = Timing { pixel_out: false, ..t };
+        assert_eq!(vector_frame(&[w(100, Some(99))], &frag).total, cull + 100);
     }
 }

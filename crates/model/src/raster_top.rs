@@ -1,9 +1,10 @@
-//! The model of `rtl::raster_top`, the whole scanline rasterizer of papers 001 and 003
-//! (`cull_sort` -> `triangle_setup` with the `divider` -> `edge_walk` -> `span` ->
-//! `pixel_out`) at a build of its RTL (`fx::Build`: size class and formats): a frame as the
-//! hardware sees it. Its triangles as the input words the hardware takes, the memory writes it makes
-//! in order, its image ([`render::render`], `Method::Scanline`) and its cycle count
-//! ([`cycles::scanline_frame`]).
+//! The model of `rtl::raster_top`, the whole rasterizer: the scanline method of papers 001
+//! and 003 (`cull_sort` -> `triangle_setup` with the `divider` -> `edge_walk` -> `span` ->
+//! `pixel_out`), or with `METHOD = 1` the barycentric method of 004 (`cull_sort` -> `vector`
+//! -> `pixel_out`), at a build of its RTL (`fx::Build`: size class and formats): a frame as
+//! the hardware sees it. Its triangles as the input words the hardware takes, the memory
+//! writes it makes in order, its image ([`render::render`]) and its cycle count
+//! ([`cycles::scanline_frame`], [`cycles::vector_frame`]).
 
 use crate::cull_sort::{cull_sort, z_max, Clip, Cull, Sorted};
 use crate::cycles::{self, Timing};
@@ -23,6 +24,8 @@ pub const MAX_CLASS: u32 = 12;
 pub struct RasterTopOut {
     /// The size class of the `raster_top` drawing it and the formats it is built at.
     pub build: Build,
+    /// Its method: `Scanline`, or `Vector` with one lane.
+    pub method: Method,
     /// The triangles sent, as input words (`model::input::to_fixed`), in input order: the
     /// front end's pieces (`model::guard_band`).
     pub triangles: Vec<[Vtx; 3]>,
@@ -44,23 +47,45 @@ pub struct RasterTopOut {
 
 impl RasterTopOut {
     /// The frame's cycles, from the first triangle offered to `done`
-    /// ([`cycles::scanline_frame`], triangles back to back, memory always ready).
+    /// ([`cycles::scanline_frame`] or [`cycles::vector_frame`], triangles back to back,
+    /// memory always ready).
     pub fn cycles(&self) -> u64 {
         self.cycles_with(&Timing::default())
     }
 
     /// The frame's cycles with the units and parameters of `timing`.
     pub fn cycles_with(&self, timing: &Timing) -> u64 {
-        cycles::scanline_frame(&self.render.work, timing).total
+        match self.method {
+            Method::Scanline => cycles::scanline_frame(&self.render.work, timing).total,
+            Method::Vector { .. } => cycles::vector_frame(&self.render.work, timing).total,
+        }
     }
 }
 
-/// `list` drawn with `cull` on `background` by the `raster_top` of `build`: a size class
+/// `list` drawn with `cull` on `background` by the scanline `raster_top` of `build`
+/// ([`raster_top_by`] with `Method::Scanline`).
+pub fn raster_top(build: &Build, list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<RasterTopOut, String> {
+    raster_top_by(build, list, cull, background, Method::Scanline)
+}
+
+/// `list` drawn with `cull` on `background` by the `raster_top` of `build` and `method`
+/// (the vector method at one lane, as `rtl::vector` draws): a size class
 /// (which may be larger than the screen needs; `Build::for_screen` gives the smallest) and
 /// the formats it is built at (the class's defaults, or those of `rtl::custom`); an error
 /// for a class not built, a screen larger than 2^class, or formats that do not work on a
 /// 2^class screen.
-pub fn raster_top(build: &Build, list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<RasterTopOut, String> {
+pub fn raster_top_by(
+    build: &Build,
+    list: &Trilist,
+    cull: Cull,
+    background: [u8; 3],
+    method: Method,
+) -> Result<RasterTopOut, String> {
+    if let Method::Vector { lanes, .. } = method {
+        if lanes != 1 {
+            return Err(format!("raster_top's vector unit draws one pixel a cycle, not {lanes} lanes"));
+        }
+    }
     let Build { class, formats: f } = *build;
     if !(SMALLEST_CLASS..=MAX_CLASS).contains(&class) {
         let side = 1u64 << class.min(63);
@@ -80,7 +105,7 @@ pub fn raster_top(build: &Build, list: &Trilist, cull: Cull, background: [u8; 3]
         ));
     }
     f.check(side, side)?;
-    let opts = Options { method: Method::Scanline, cull, analysis: false, background };
+    let opts = Options { method, cull, analysis: false, background };
     let clip = Clip { width: list.width, height: list.height };
     let (mut triangles, mut skipped, mut sorted) = (Vec::new(), Vec::new(), Vec::new());
     let (mut fragments, mut pixels, mut writes) = (Vec::new(), Vec::new(), Vec::new());
@@ -101,7 +126,7 @@ pub fn raster_top(build: &Build, list: &Trilist, cull: Cull, background: [u8; 3]
     }
     let render = render::render(list, &f, &opts, &mut |_| {});
     debug_assert!(render.fb == fb, "the same pixels, through the same depth test");
-    Ok(RasterTopOut { build: *build, triangles, skipped, sorted, render, fragments, pixels, writes })
+    Ok(RasterTopOut { build: *build, method, triangles, skipped, sorted, render, fragments, pixels, writes })
 }
 
 #[cfg(test)]

@@ -26,7 +26,7 @@ use crate::input::{to_fixed, InputError, Vtx};
 use crate::pixel_out::Framebuffer;
 use crate::span::{span, Pixel};
 use crate::triangle_setup::triangle_setup;
-use crate::vector::vector;
+use crate::vector::{vector, LATENCY};
 use fx::Formats;
 use scene::{Triangle, Trilist};
 
@@ -58,8 +58,11 @@ pub struct Work {
     /// Per scanline the edge walk stepped through, the span command it emitted, if
     /// any (scanline method).
     pub scanlines: Vec<Option<SpanWork>>,
-    /// Cycles the vector unit took (vector method).
+    /// Cycles the vector unit took (vector method): from the cycle it took the triangle to
+    /// the one it can take the next.
     pub vector_cycles: u32,
+    /// The cycle, after the take, of the vector unit's last pixel sent to `pixel_out`, if any.
+    pub vector_last_sent: Option<u32>,
 }
 
 /// What one span command cost `span` (`model::span::SpanOut`): its cycles, and the
@@ -104,6 +107,7 @@ pub fn trace(v: &[Vtx; 3], clip: Clip, opts: &Options, ctx: &mut Ctx) -> Result<
         Method::Vector { lanes, perspective } => {
             let o = vector(&sorted, clip, lanes, perspective, ctx);
             t.work.vector_cycles = o.cycles;
+            t.work.vector_last_sent = o.walk.last().map(|&i| LATENCY + i / lanes);
             t.z_clipped = o.z_clipped;
             t.pixels = o.pixels;
         }

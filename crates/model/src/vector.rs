@@ -15,9 +15,12 @@
 //!   Eq. (6) solves the same system for a and b directly; the two agree exactly
 //!   in real arithmetic.
 //!
-//! Cycle model: `lanes` pixels of a row per cycle, rows of the clipped bounding
-//! box one after another, plus [`LATENCY`]. A model only so far: no RTL unit has this
-//! method yet (the barycentric back end is still to be built).
+//! Cycle model (`rtl::vector`'s, at `lanes` = 1): the unit takes a triangle when it is empty
+//! (triangles do not overlap in it); [`setup`] cycles later the walk of the clipped bounding
+//! box begins, `lanes` pixels of a row per cycle, rows one after another (pixel `walk[i]`
+//! of the walk in cycle `setup + walk[i] / lanes`); each pixel leaves [`pixel_latency`]
+//! cycles after its walk cycle, and the unit takes the next triangle in the cycle after
+//! the last walk cycle's pixel left: [`LATENCY`] + the walk's cycles after the take.
 
 use crate::ctx::{Ctx, Q};
 use crate::cull_sort::{z_max, Clip, Sorted};
@@ -25,9 +28,29 @@ use crate::divider::{divider, recip_operands};
 use crate::input::Vtx;
 use crate::span::{color_of, depth_of, Pixel};
 
-/// Pipeline depth of one lane: edge functions, a and b, attributes, and the
-/// perspective divide (a divider of `divider::LATENCY` stages and two products).
-pub const LATENCY: u32 = 3 + crate::divider::LATENCY + 2;
+/// Cycles from taking a triangle to its walk's first cycle, with a divider of
+/// `divider_latency` stages: the input registers, the area's products, its sign (v1 and v2
+/// swapped for a negative area), its leading one, 1/area's divisor normalised into a
+/// register in cycle 6, taken by the divider in cycle 7 and back `divider_latency` cycles
+/// later; the edge functions at the box's first pixel are ready by cycle 11, so a divider
+/// of fewer than 4 stages waits for them.
+pub const fn setup(divider_latency: u32) -> u32 {
+    8 + if divider_latency > 4 { divider_latency } else { 4 }
+}
+
+/// Cycles from a pixel's walk cycle to the cycle it leaves: coverage and a, b (eq. 3: two
+/// products and a shift, 3 cycles), depth (eq. 4: two products, the sum, the rounding) and
+/// beside it eq. 5's three products, their sum and leading one (5 cycles), 1/sum's divisor
+/// normalised into a register and through the divider, eq. 6's two products and shift
+/// (3 cycles), the colours (eq. 4: two products a channel, the sum, the rounding; 3 cycles)
+/// and the output register.
+pub const fn pixel_latency(divider_latency: u32) -> u32 {
+    16 + divider_latency
+}
+
+/// The cycles a triangle costs besides its walk, with the default divider: [`setup`] +
+/// [`pixel_latency`].
+pub const LATENCY: u32 = setup(crate::divider::LATENCY) + pixel_latency(crate::divider::LATENCY);
 
 /// Edge function of a -> b at p (exact, subpixel units squared).
 fn edge(a: &Vtx, b: &Vtx, px: i128, py: i128) -> i128 {
@@ -57,6 +80,9 @@ fn ratio(num: i128, den: i128, ctx: &mut Ctx) -> i128 {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct VectorOut {
     pub pixels: Vec<Pixel>,
+    /// Each pixel's index in the walk of the clipped bounding box (row by row from its
+    /// top left): `walk[i]` for `pixels[i]`.
+    pub walk: Vec<u32>,
     pub cycles: u32,
     pub z_clipped: u32,
 }
@@ -83,7 +109,7 @@ pub fn vector(t: &Sorted, clip: Clip, lanes: u32, perspective: bool, ctx: &mut C
     let y0 = lo(v.iter().map(|p| p.y).min().unwrap());
     let x1 = ((v.iter().map(|p| p.x).max().unwrap() - px / 2) >> s).min(clip.width as i128 - 1);
     let y1 = ((v.iter().map(|p| p.y).max().unwrap() - px / 2) >> s).min(clip.height as i128 - 1);
-    let mut out = VectorOut { pixels: Vec::new(), cycles: LATENCY, z_clipped: 0 };
+    let mut out = VectorOut { pixels: Vec::new(), walk: Vec::new(), cycles: LATENCY, z_clipped: 0 };
     if x0 > x1 || y0 > y1 {
         return out;
     }
@@ -111,7 +137,10 @@ pub fn vector(t: &Sorted, clip: Clip, lanes: u32, perspective: bool, ctx: &mut C
                 let l = [one - a - b, a, b];
                 let q: [i128; 3] =
                     std::array::from_fn(|k| ctx.put_scaled(Q::Bary, l[k] * v[k].iw, f.bary.frac + f.inv_w.frac));
-                let sum = q[0] + q[1] + q[2];
+                // Every term floors to 0 only where the pixel lies on the nearest vertex's
+                // opposite edge and the other two are more than 2^inv_w.frac times as far
+                // (their w_min / w rounds to 0): no weight to divide, so divide by 1.
+                let sum = (q[0] + q[1] + q[2]).max(1);
                 (ratio(q[1], sum, ctx), ratio(q[2], sum, ctx))
             } else {
                 (a, b)
@@ -126,6 +155,7 @@ pub fn vector(t: &Sorted, clip: Clip, lanes: u32, perspective: bool, ctx: &mut C
             let depth = depth_of(z, &f);
             if (0..=zmax).contains(&depth) {
                 out.pixels.push(Pixel { x: xx as u32, y: yy as u32, z: depth as u32, rgb: c.map(|c| color_of(c, &f)) });
+                out.walk.push(((yy - y0) * (x1 - x0 + 1) + xx - x0) as u32);
             } else {
                 out.z_clipped += 1;
             }

@@ -152,11 +152,11 @@ pub const fn violation(class: u32, f: &Formats) -> Option<&'static str> {
     if f.xy.int < class + 1 {
         return Some("xy needs class + 1 integer bits: the screen's positions and its guard band");
     }
-    let internal = [f.ooa, f.ooa_d, f.dz, f.z_acc, f.dc, f.c_acc];
+    let internal = [f.ooa, f.ooa_d, f.dz, f.z_acc, f.dc, f.c_acc, f.bary];
     let mut i = 0;
     while i < internal.len() {
         if !plain(internal[i]) {
-            return Some("ooa, ooa_d, dz, z_acc, dc and c_acc are registers of the RTL: truncate and wrap only");
+            return Some("ooa, ooa_d, dz, z_acc, dc, c_acc and bary are registers of the RTL: truncate and wrap only");
         }
         i += 1;
     }

@@ -52,6 +52,8 @@ macro_rules! scanline_units {
         pub mod triangle_queue;
         #[path = "triangle_setup.rs"]
         pub mod triangle_setup;
+        #[path = "vector.rs"]
+        pub mod vector;
         #[path = "widths.rs"]
         pub mod widths;
     };
@@ -189,7 +191,7 @@ macro_rules! no_formats {
 /// also at the crate's root (`rtl::raster_top`, ...).
 pub use n10::{
     command_parser, cull_sort, divider, edge_walk, gpu_regs, gpu_top, links, pixel_bus, pixel_out, raster_top, span,
-    triangle_queue, triangle_setup, widths,
+    triangle_queue, triangle_setup, vector, widths,
 };
 const _: () = assert!(n10::CLASS == fx::RTL_CLASS);
 
@@ -216,6 +218,13 @@ const CLIP_Y: Param = part(1);
 const CLIP_X: Param = part(2);
 const CLIP_Z: Param = part(3);
 const DEPTH_TEST: Param = part(4);
+
+/// Whether the vector unit's colours are perspective-correct.
+const PERSPECTIVE: Param = Param {
+    name: "PERSPECTIVE",
+    default: 1,
+    doc: "1: colours perspective-correct (004 eq. 5-6, the divider's second use); 0: screen-linear (vector)",
+};
 
 /// The size-class parameter every scanline unit has.
 const N: Param = Param {
@@ -359,6 +368,12 @@ pub const UNITS: &[Unit] = &[
             CLIP_X,
             CLIP_Z,
             DEPTH_TEST,
+            Param {
+                name: "METHOD",
+                default: 0,
+                doc: "0: the scanline method (001, 003); 1: the barycentric method (004): cull_sort, vector, pixel_out (K unused)",
+            },
+            PERSPECTIVE,
         ],
         build: by_build!(raster_top::emit_raster_top),
     },
@@ -367,6 +382,16 @@ pub const UNITS: &[Unit] = &[
         doc: "edgepaint as a core: gpu_regs (AXI4-Lite), command_parser (AXI4 reads), the scanline rasterizer, pixel_bus (AXI4)",
         params: &[N, K, L],
         build: by_build!(gpu_top::emit_gpu_top),
+    },
+    Unit {
+        name: "vector",
+        doc: "per-pixel barycentric rasterization, paper 004 eq. 1-6: a pixel per cycle, bounding-box walk, perspective-correct colours",
+        params: &[
+            N,
+            L,
+            PERSPECTIVE,
+        ],
+        build: by_build!(vector::emit_vector),
     },
     Unit {
         name: "se",
@@ -408,9 +433,12 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
             ("CLIP_X", 1),
             ("CLIP_Z", 1),
             ("DEPTH_TEST", 1),
+            ("METHOD", 0),
+            ("PERSPECTIVE", 1),
         ],
     ),
     ("gpu_top", &[("N", 10), ("K", 7), ("L", model::divider::LATENCY as u64)]),
+    ("vector", &[("N", 10), ("L", model::divider::LATENCY as u64), ("PERSPECTIVE", 1)]),
     ("se", &[("P", 64), ("ZW", 24), ("CW", 16), ("F", 16), ("I", 0)]),
 ];
 

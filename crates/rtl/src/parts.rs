@@ -184,3 +184,49 @@ impl<const IN: usize, const OUT: usize> Logic for SignExtend<IN, OUT> {
         }
     }
 }
+
+/// `q` = `d` of `n` enabled cycles before (`en` high: every stage moves on; low: all hold):
+/// a shift register of `n` `W`-bit stages, `n` >= 1 (`DelayLine::new`).
+#[derive(LogicBlock)]
+pub struct DelayLine<const W: usize> {
+    pub clock: Signal<In, Clock>,
+    pub en: Signal<In, Bit>,
+    pub d: Signal<In, Bits<W>>,
+    pub q: Signal<Out, Bits<W>>,
+    stages: Vec<DFF<Bits<W>>>,
+    _n: usize,
+}
+
+impl<const W: usize> DelayLine<W> {
+    pub fn new(n: usize) -> Self {
+        assert!(n >= 1, "DelayLine of {n} stages");
+        DelayLine {
+            clock: Default::default(),
+            en: Default::default(),
+            d: Default::default(),
+            q: Default::default(),
+            stages: (0..n).map(|_| Default::default()).collect(),
+            _n: n,
+        }
+    }
+}
+
+impl<const W: usize> Logic for DelayLine<W> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        for i in 0..self._n {
+            self.stages[i].clock.next = self.clock.val();
+            self.stages[i].d.next = self.stages[i].q.val();
+        }
+        if self.en.val() {
+            self.stages[0].d.next = self.d.val();
+            for i in 1..self._n {
+                self.stages[i].d.next = self.stages[i - 1].q.val();
+            }
+        }
+        // The last stage, by a loop of one iteration (array indices from loop variables).
+        for i in (self._n - 1)..self._n {
+            self.q.next = self.stages[i].q.val();
+        }
+    }
+}

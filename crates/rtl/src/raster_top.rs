@@ -55,6 +55,7 @@ use super::pixel_out::PixelOut;
 use super::span::Span;
 use super::span_fifo::SpanFifo;
 use super::triangle_setup::TriangleSetup;
+use super::vector::Vector;
 use super::widths::DIM;
 use crate::emit::{emit_unit, Emitted};
 use crate::switch::Parts;
@@ -359,6 +360,73 @@ crate::pins!(RasterTop {
     links: [inp, mem, verdict],
 });
 
+/// The barycentric rasterizer (`METHOD = 1`, paper 004): `cull_sort`, [`Vector`] and
+/// `pixel_out`, with [`RasterTop`]'s ports. The vector unit takes a triangle when it is
+/// empty and sends a pixel a cycle (`rtl::vector`); `model::cycles::vector_frame` predicts
+/// the frame cycle for cycle.
+#[derive(LogicBlock, Default)]
+pub struct RasterTopVector {
+    pub clock: Signal<In, Clock>,
+    /// As [`RasterTop`]'s.
+    pub width: Signal<In, Bits<DIM>>,
+    pub height: Signal<In, Bits<DIM>>,
+    pub inp: TriangleSink,
+    pub inp_last: Signal<In, Bit>,
+    pub cull_back: Signal<In, Bit>,
+    pub verdict: Verdict,
+    pub mem: MemoryPort,
+    pub done: Signal<Out, Bit>,
+    cull_sort: CullSort,
+    vector: Vector,
+    pixel_out: PixelOut,
+    last_in: DFF<Bit>,
+}
+
+impl RasterTopVector {
+    /// `cull_sort`, the vector unit with an `l`-stage divider and perspective-correct colours
+    /// or not, and `pixel_out`, with the parts `parts` says (`CULL`, `DEPTH_TEST`).
+    pub fn new(l: usize, perspective: bool, parts: &Parts) -> Result<RasterTopVector, String> {
+        Ok(RasterTopVector {
+            cull_sort: CullSort::new(parts),
+            vector: Vector::new(l, perspective)?,
+            pixel_out: PixelOut::new(parts),
+            ..Default::default()
+        })
+    }
+}
+
+impl Logic for RasterTopVector {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, last_in);
+        clock!(self, clock, cull_sort, vector, pixel_out);
+        self.cull_sort.width.next = self.width.val();
+        self.cull_sort.height.next = self.height.val();
+        self.cull_sort.cull_back.next = self.cull_back.val();
+        self.vector.width.next = self.width.val();
+        self.vector.height.next = self.height.val();
+        TriangleSink::link(&mut self.inp, &mut self.cull_sort.inp);
+        Verdict::link(&mut self.verdict, &mut self.cull_sort.verdict);
+        SortedSource::join(&mut self.cull_sort.out, &mut self.vector.inp);
+        PixelSource::join(&mut self.vector.out, &mut self.pixel_out.inp);
+        MemoryPort::link(&mut self.mem, &mut self.pixel_out.mem);
+        if self.inp.valid.val() & self.inp.ready.val() {
+            self.last_in.d.next = self.inp_last.val();
+        }
+        self.done.next = self.last_in.q.val()
+            & self.cull_sort.idle.val()
+            & self.vector.idle.val()
+            & self.pixel_out.idle.val();
+    }
+}
+
+crate::pins!(RasterTopVector {
+    clock: clock,
+    inputs: [width, height, inp_last, cull_back],
+    outputs: [done],
+    links: [inp, mem, verdict],
+});
+
 /// `UNITS` entry: the rasterizer with `params["K"]` setup multipliers, a
 /// `params["L"]`-stage divider, `cull_sort` and `pixel_out` present (1) or not (0) as
 /// `params["CULL_SORT"]` and `params["PIXEL_OUT"]` say, and the optional parts of the units
@@ -366,6 +434,24 @@ crate::pins!(RasterTop {
 pub fn emit_raster_top(params: &Params) -> Result<Emitted, String> {
     let (k, l) = (params["K"] as usize, params["L"] as usize);
     let parts = Parts::of(params)?;
+    let perspective = match params["PERSPECTIVE"] {
+        0 => false,
+        1 => true,
+        v => return Err(format!("raster_top: PERSPECTIVE = {v}: 0 or 1")),
+    };
+    match params["METHOD"] {
+        0 => {}
+        1 => {
+            if (params["CULL_SORT"], params["PIXEL_OUT"]) != (1, 1) {
+                return Err("raster_top: METHOD = 1 (vector) is built with cull_sort and pixel_out (CULL_SORT = 1, PIXEL_OUT = 1)".into());
+            }
+            if !(parts.clip_y && parts.clip_x && parts.clip_z) {
+                return Err("raster_top: CLIP_Y, CLIP_X and CLIP_Z switch parts of edge_walk and span, which METHOD = 1 (vector) has not: its box walk clips to the screen".into());
+            }
+            return Ok(emit_unit("raster_top", RasterTopVector::new(l, perspective, &parts)?, params));
+        }
+        m => return Err(format!("raster_top: METHOD = {m}: 0 (scanline) or 1 (vector)")),
+    }
     if params["CULL_SORT"] == 0 && !parts.cull {
         return Err("raster_top: CULL = 0 removes cull_sort's rejecting and culling, which CULL_SORT = 0 has no unit for".into());
     }
