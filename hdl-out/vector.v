@@ -44,6 +44,12 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     localparam  at_mant = 8'h20;
     localparam  at_walk = 8'h20;
     localparam  drain = 8'h29;
+    localparam  held_m1 = 8'h26;
+    localparam  tap_exp = 8'h1;
+    localparam  tap_z = 8'h2;
+    localparam  tap_z0 = 8'h4;
+    localparam  tap_c = 8'h24;
+    localparam  tap_c0 = 8'h26;
     localparam  half_xy = 16'h8000;
     localparam  px_half_m1 = 17'b111;
     localparam  px_half = 17'b1000;
@@ -67,6 +73,16 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  div$out_ready;
     wire  [25:0] div$out_q;
     wire  [33:0] div$out_r;
+    reg  div_a$clock;
+    reg  div_a$inp_valid;
+    wire  div_a$inp_ready;
+    reg  div_a$hold;
+    reg  [57:0] div_a$inp_n;
+    reg  [33:0] div_a$inp_d;
+    wire  div_a$out_valid;
+    reg  div_a$out_ready;
+    wire  [25:0] div_a$out_q;
+    wire  [33:0] div_a$out_r;
     reg  mul_s$0$clock;
     reg  mul_s$0$en;
     reg  [16:0] mul_s$0$a;
@@ -152,15 +168,27 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [8:0] mul_c2$2$a;
     reg  [27:0] mul_c2$2$b;
     wire  [37:0] mul_c2$2$p;
-    reg  busy$d;
-    wire  busy$q;
-    reg  busy$clock;
+    reg  sbusy$d;
+    wire  sbusy$q;
+    reg  sbusy$clock;
     reg  [7:0] sc$d;
     wire  [7:0] sc$q;
     reg  sc$clock;
     reg  [7:0] dc$d;
     wire  [7:0] dc$q;
     reg  dc$clock;
+    reg  [7:0] hold$0$d;
+    wire  [7:0] hold$0$q;
+    reg  hold$0$clock;
+    reg  [7:0] hold$1$d;
+    wire  [7:0] hold$1$q;
+    reg  hold$1$clock;
+    reg  wp$d;
+    wire  wp$q;
+    reg  wp$clock;
+    reg  [63:0] ph$d;
+    wire  [63:0] ph$q;
+    reg  ph$clock;
     reg  [15:0] vx$0$d;
     wire  [15:0] vx$0$q;
     reg  vx$0$clock;
@@ -307,6 +335,9 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [29:0] norm_s$x;
     reg  [7:0] norm_s$exp;
     wire  [33:0] norm_s$d;
+    reg  [33:0] div_da$d;
+    wire  [33:0] div_da$q;
+    reg  div_da$clock;
     reg  [33:0] div_d$d;
     wire  [33:0] div_d$q;
     reg  div_d$clock;
@@ -421,6 +452,137 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [9:0] ty$d;
     wire  [9:0] ty$q;
     reg  ty$clock;
+    reg  [9:0] wx0$d;
+    wire  [9:0] wx0$q;
+    reg  wx0$clock;
+    reg  [9:0] wx1$d;
+    wire  [9:0] wx1$q;
+    reg  wx1$clock;
+    reg  [9:0] wy1$d;
+    wire  [9:0] wy1$q;
+    reg  wy1$clock;
+    reg  [16:0] wdx$0$d;
+    wire  [16:0] wdx$0$q;
+    reg  wdx$0$clock;
+    reg  [16:0] wdx$1$d;
+    wire  [16:0] wdx$1$q;
+    reg  wdx$1$clock;
+    reg  [16:0] wdx$2$d;
+    wire  [16:0] wdx$2$q;
+    reg  wdx$2$clock;
+    reg  [16:0] wdy$0$d;
+    wire  [16:0] wdy$0$q;
+    reg  wdy$0$clock;
+    reg  [16:0] wdy$1$d;
+    wire  [16:0] wdy$1$q;
+    reg  wdy$1$clock;
+    reg  [16:0] wdy$2$d;
+    wire  [16:0] wdy$2$q;
+    reg  wdy$2$clock;
+    reg  [24:0] k_mant$0$d;
+    wire  [24:0] k_mant$0$q;
+    reg  k_mant$0$clock;
+    reg  [24:0] k_mant$1$d;
+    wire  [24:0] k_mant$1$q;
+    reg  k_mant$1$clock;
+    reg  [7:0] k_exp$0$d;
+    wire  [7:0] k_exp$0$q;
+    reg  k_exp$0$clock;
+    reg  [7:0] k_exp$1$d;
+    wire  [7:0] k_exp$1$q;
+    reg  k_exp$1$clock;
+    reg  [18:0] k_d1z$0$d;
+    wire  [18:0] k_d1z$0$q;
+    reg  k_d1z$0$clock;
+    reg  [18:0] k_d1z$1$d;
+    wire  [18:0] k_d1z$1$q;
+    reg  k_d1z$1$clock;
+    reg  [18:0] k_d2z$0$d;
+    wire  [18:0] k_d2z$0$q;
+    reg  k_d2z$0$clock;
+    reg  [18:0] k_d2z$1$d;
+    wire  [18:0] k_d2z$1$q;
+    reg  k_d2z$1$clock;
+    reg  [17:0] k_z0$0$d;
+    wire  [17:0] k_z0$0$q;
+    reg  k_z0$0$clock;
+    reg  [17:0] k_z0$1$d;
+    wire  [17:0] k_z0$1$q;
+    reg  k_z0$1$clock;
+    reg  [15:0] k_iw$0$d;
+    wire  [15:0] k_iw$0$q;
+    reg  k_iw$0$clock;
+    reg  [15:0] k_iw$1$d;
+    wire  [15:0] k_iw$1$q;
+    reg  k_iw$1$clock;
+    reg  [15:0] k_iw$2$d;
+    wire  [15:0] k_iw$2$q;
+    reg  k_iw$2$clock;
+    reg  [15:0] k_iw$3$d;
+    wire  [15:0] k_iw$3$q;
+    reg  k_iw$3$clock;
+    reg  [15:0] k_iw$4$d;
+    wire  [15:0] k_iw$4$q;
+    reg  k_iw$4$clock;
+    reg  [15:0] k_iw$5$d;
+    wire  [15:0] k_iw$5$q;
+    reg  k_iw$5$clock;
+    reg  [8:0] k_d1c$0$d;
+    wire  [8:0] k_d1c$0$q;
+    reg  k_d1c$0$clock;
+    reg  [8:0] k_d1c$1$d;
+    wire  [8:0] k_d1c$1$q;
+    reg  k_d1c$1$clock;
+    reg  [8:0] k_d1c$2$d;
+    wire  [8:0] k_d1c$2$q;
+    reg  k_d1c$2$clock;
+    reg  [8:0] k_d1c$3$d;
+    wire  [8:0] k_d1c$3$q;
+    reg  k_d1c$3$clock;
+    reg  [8:0] k_d1c$4$d;
+    wire  [8:0] k_d1c$4$q;
+    reg  k_d1c$4$clock;
+    reg  [8:0] k_d1c$5$d;
+    wire  [8:0] k_d1c$5$q;
+    reg  k_d1c$5$clock;
+    reg  [8:0] k_d2c$0$d;
+    wire  [8:0] k_d2c$0$q;
+    reg  k_d2c$0$clock;
+    reg  [8:0] k_d2c$1$d;
+    wire  [8:0] k_d2c$1$q;
+    reg  k_d2c$1$clock;
+    reg  [8:0] k_d2c$2$d;
+    wire  [8:0] k_d2c$2$q;
+    reg  k_d2c$2$clock;
+    reg  [8:0] k_d2c$3$d;
+    wire  [8:0] k_d2c$3$q;
+    reg  k_d2c$3$clock;
+    reg  [8:0] k_d2c$4$d;
+    wire  [8:0] k_d2c$4$q;
+    reg  k_d2c$4$clock;
+    reg  [8:0] k_d2c$5$d;
+    wire  [8:0] k_d2c$5$q;
+    reg  k_d2c$5$clock;
+    reg  [7:0] k_c0$0$d;
+    wire  [7:0] k_c0$0$q;
+    reg  k_c0$0$clock;
+    reg  [7:0] k_c0$1$d;
+    wire  [7:0] k_c0$1$q;
+    reg  k_c0$1$clock;
+    reg  [7:0] k_c0$2$d;
+    wire  [7:0] k_c0$2$q;
+    reg  k_c0$2$clock;
+    reg  [7:0] k_c0$3$d;
+    wire  [7:0] k_c0$3$q;
+    reg  k_c0$3$clock;
+    reg  [7:0] k_c0$4$d;
+    wire  [7:0] k_c0$4$q;
+    reg  k_c0$4$clock;
+    reg  [7:0] k_c0$5$d;
+    wire  [7:0] k_c0$5$q;
+    reg  k_c0$5$clock;
+    reg  [17:0] ez0$x;
+    wire  [18:0] ez0$y;
     reg  tag_dl$clock;
     reg  tag_dl$en;
     reg  [20:0] tag_dl$d;
@@ -577,6 +739,10 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     // Local signals
     reg  run;
     reg  take;
+    reg  at_last;
+    reg  walk_ok;
+    reg  set_ok;
+    reg  hand;
     reg  [15:0] ux$0;
     reg  [15:0] ux$1;
     reg  [15:0] ux$2;
@@ -595,12 +761,28 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [12:0] hi_y_c;
     reg  [16:0] cx0;
     reg  [16:0] cy0;
+    reg  [24:0] mant_c;
     reg  owns$0;
     reg  owns$1;
     reg  owns$2;
     reg  covered;
-    reg  [9:0] x_end;
-    reg  [9:0] y_end;
+    reg  [24:0] c_mant;
+    reg  [7:0] c_exp;
+    reg  [18:0] c_d1z;
+    reg  [18:0] c_d2z;
+    reg  [17:0] c_z0;
+    reg  [15:0] c_iw$0;
+    reg  [15:0] c_iw$1;
+    reg  [15:0] c_iw$2;
+    reg  [8:0] c_d1c$0;
+    reg  [8:0] c_d1c$1;
+    reg  [8:0] c_d1c$2;
+    reg  [8:0] c_d2c$0;
+    reg  [8:0] c_d2c$1;
+    reg  [8:0] c_d2c$2;
+    reg  [7:0] c_c0$0;
+    reg  [7:0] c_c0$1;
+    reg  [7:0] c_c0$2;
     reg  [20:0] tag;
     reg  [20:0] tag_out;
     reg  [16:0] dtag;
@@ -626,6 +808,18 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .out_ready(div$out_ready),
         .out_q(div$out_q),
         .out_r(div$out_r)
+    );
+    vector$div_a div_a(
+        .clock(div_a$clock),
+        .inp_valid(div_a$inp_valid),
+        .inp_ready(div_a$inp_ready),
+        .hold(div_a$hold),
+        .inp_n(div_a$inp_n),
+        .inp_d(div_a$inp_d),
+        .out_valid(div_a$out_valid),
+        .out_ready(div_a$out_ready),
+        .out_q(div_a$out_q),
+        .out_r(div_a$out_r)
     );
     vector$mul_s$0 mul_s$0(
         .clock(mul_s$0$clock),
@@ -746,10 +940,10 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .b(mul_c2$2$b),
         .p(mul_c2$2$p)
     );
-    vector$busy busy(
-        .d(busy$d),
-        .q(busy$q),
-        .clock(busy$clock)
+    vector$sbusy sbusy(
+        .d(sbusy$d),
+        .q(sbusy$q),
+        .clock(sbusy$clock)
     );
     vector$sc sc(
         .d(sc$d),
@@ -760,6 +954,26 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .d(dc$d),
         .q(dc$q),
         .clock(dc$clock)
+    );
+    vector$hold$0 hold$0(
+        .d(hold$0$d),
+        .q(hold$0$q),
+        .clock(hold$0$clock)
+    );
+    vector$hold$1 hold$1(
+        .d(hold$1$d),
+        .q(hold$1$q),
+        .clock(hold$1$clock)
+    );
+    vector$wp wp(
+        .d(wp$d),
+        .q(wp$q),
+        .clock(wp$clock)
+    );
+    vector$ph ph(
+        .d(ph$d),
+        .q(ph$q),
+        .clock(ph$clock)
     );
     vector$vx$0 vx$0(
         .d(vx$0$d),
@@ -1017,6 +1231,11 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .exp(norm_s$exp),
         .d(norm_s$d)
     );
+    vector$div_da div_da(
+        .d(div_da$d),
+        .q(div_da$q),
+        .clock(div_da$clock)
+    );
     vector$div_d div_d(
         .d(div_d$d),
         .q(div_d$q),
@@ -1216,6 +1435,225 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .d(ty$d),
         .q(ty$q),
         .clock(ty$clock)
+    );
+    vector$wx0 wx0(
+        .d(wx0$d),
+        .q(wx0$q),
+        .clock(wx0$clock)
+    );
+    vector$wx1 wx1(
+        .d(wx1$d),
+        .q(wx1$q),
+        .clock(wx1$clock)
+    );
+    vector$wy1 wy1(
+        .d(wy1$d),
+        .q(wy1$q),
+        .clock(wy1$clock)
+    );
+    vector$wdx$0 wdx$0(
+        .d(wdx$0$d),
+        .q(wdx$0$q),
+        .clock(wdx$0$clock)
+    );
+    vector$wdx$1 wdx$1(
+        .d(wdx$1$d),
+        .q(wdx$1$q),
+        .clock(wdx$1$clock)
+    );
+    vector$wdx$2 wdx$2(
+        .d(wdx$2$d),
+        .q(wdx$2$q),
+        .clock(wdx$2$clock)
+    );
+    vector$wdy$0 wdy$0(
+        .d(wdy$0$d),
+        .q(wdy$0$q),
+        .clock(wdy$0$clock)
+    );
+    vector$wdy$1 wdy$1(
+        .d(wdy$1$d),
+        .q(wdy$1$q),
+        .clock(wdy$1$clock)
+    );
+    vector$wdy$2 wdy$2(
+        .d(wdy$2$d),
+        .q(wdy$2$q),
+        .clock(wdy$2$clock)
+    );
+    vector$k_mant$0 k_mant$0(
+        .d(k_mant$0$d),
+        .q(k_mant$0$q),
+        .clock(k_mant$0$clock)
+    );
+    vector$k_mant$1 k_mant$1(
+        .d(k_mant$1$d),
+        .q(k_mant$1$q),
+        .clock(k_mant$1$clock)
+    );
+    vector$k_exp$0 k_exp$0(
+        .d(k_exp$0$d),
+        .q(k_exp$0$q),
+        .clock(k_exp$0$clock)
+    );
+    vector$k_exp$1 k_exp$1(
+        .d(k_exp$1$d),
+        .q(k_exp$1$q),
+        .clock(k_exp$1$clock)
+    );
+    vector$k_d1z$0 k_d1z$0(
+        .d(k_d1z$0$d),
+        .q(k_d1z$0$q),
+        .clock(k_d1z$0$clock)
+    );
+    vector$k_d1z$1 k_d1z$1(
+        .d(k_d1z$1$d),
+        .q(k_d1z$1$q),
+        .clock(k_d1z$1$clock)
+    );
+    vector$k_d2z$0 k_d2z$0(
+        .d(k_d2z$0$d),
+        .q(k_d2z$0$q),
+        .clock(k_d2z$0$clock)
+    );
+    vector$k_d2z$1 k_d2z$1(
+        .d(k_d2z$1$d),
+        .q(k_d2z$1$q),
+        .clock(k_d2z$1$clock)
+    );
+    vector$k_z0$0 k_z0$0(
+        .d(k_z0$0$d),
+        .q(k_z0$0$q),
+        .clock(k_z0$0$clock)
+    );
+    vector$k_z0$1 k_z0$1(
+        .d(k_z0$1$d),
+        .q(k_z0$1$q),
+        .clock(k_z0$1$clock)
+    );
+    vector$k_iw$0 k_iw$0(
+        .d(k_iw$0$d),
+        .q(k_iw$0$q),
+        .clock(k_iw$0$clock)
+    );
+    vector$k_iw$1 k_iw$1(
+        .d(k_iw$1$d),
+        .q(k_iw$1$q),
+        .clock(k_iw$1$clock)
+    );
+    vector$k_iw$2 k_iw$2(
+        .d(k_iw$2$d),
+        .q(k_iw$2$q),
+        .clock(k_iw$2$clock)
+    );
+    vector$k_iw$3 k_iw$3(
+        .d(k_iw$3$d),
+        .q(k_iw$3$q),
+        .clock(k_iw$3$clock)
+    );
+    vector$k_iw$4 k_iw$4(
+        .d(k_iw$4$d),
+        .q(k_iw$4$q),
+        .clock(k_iw$4$clock)
+    );
+    vector$k_iw$5 k_iw$5(
+        .d(k_iw$5$d),
+        .q(k_iw$5$q),
+        .clock(k_iw$5$clock)
+    );
+    vector$k_d1c$0 k_d1c$0(
+        .d(k_d1c$0$d),
+        .q(k_d1c$0$q),
+        .clock(k_d1c$0$clock)
+    );
+    vector$k_d1c$1 k_d1c$1(
+        .d(k_d1c$1$d),
+        .q(k_d1c$1$q),
+        .clock(k_d1c$1$clock)
+    );
+    vector$k_d1c$2 k_d1c$2(
+        .d(k_d1c$2$d),
+        .q(k_d1c$2$q),
+        .clock(k_d1c$2$clock)
+    );
+    vector$k_d1c$3 k_d1c$3(
+        .d(k_d1c$3$d),
+        .q(k_d1c$3$q),
+        .clock(k_d1c$3$clock)
+    );
+    vector$k_d1c$4 k_d1c$4(
+        .d(k_d1c$4$d),
+        .q(k_d1c$4$q),
+        .clock(k_d1c$4$clock)
+    );
+    vector$k_d1c$5 k_d1c$5(
+        .d(k_d1c$5$d),
+        .q(k_d1c$5$q),
+        .clock(k_d1c$5$clock)
+    );
+    vector$k_d2c$0 k_d2c$0(
+        .d(k_d2c$0$d),
+        .q(k_d2c$0$q),
+        .clock(k_d2c$0$clock)
+    );
+    vector$k_d2c$1 k_d2c$1(
+        .d(k_d2c$1$d),
+        .q(k_d2c$1$q),
+        .clock(k_d2c$1$clock)
+    );
+    vector$k_d2c$2 k_d2c$2(
+        .d(k_d2c$2$d),
+        .q(k_d2c$2$q),
+        .clock(k_d2c$2$clock)
+    );
+    vector$k_d2c$3 k_d2c$3(
+        .d(k_d2c$3$d),
+        .q(k_d2c$3$q),
+        .clock(k_d2c$3$clock)
+    );
+    vector$k_d2c$4 k_d2c$4(
+        .d(k_d2c$4$d),
+        .q(k_d2c$4$q),
+        .clock(k_d2c$4$clock)
+    );
+    vector$k_d2c$5 k_d2c$5(
+        .d(k_d2c$5$d),
+        .q(k_d2c$5$q),
+        .clock(k_d2c$5$clock)
+    );
+    vector$k_c0$0 k_c0$0(
+        .d(k_c0$0$d),
+        .q(k_c0$0$q),
+        .clock(k_c0$0$clock)
+    );
+    vector$k_c0$1 k_c0$1(
+        .d(k_c0$1$d),
+        .q(k_c0$1$q),
+        .clock(k_c0$1$clock)
+    );
+    vector$k_c0$2 k_c0$2(
+        .d(k_c0$2$d),
+        .q(k_c0$2$q),
+        .clock(k_c0$2$clock)
+    );
+    vector$k_c0$3 k_c0$3(
+        .d(k_c0$3$d),
+        .q(k_c0$3$q),
+        .clock(k_c0$3$clock)
+    );
+    vector$k_c0$4 k_c0$4(
+        .d(k_c0$4$d),
+        .q(k_c0$4$q),
+        .clock(k_c0$4$clock)
+    );
+    vector$k_c0$5 k_c0$5(
+        .d(k_c0$5$d),
+        .q(k_c0$5$q),
+        .clock(k_c0$5$clock)
+    );
+    vector$ez0 ez0(
+        .x(ez0$x),
+        .y(ez0$y)
     );
     vector$tag_dl tag_dl(
         .clock(tag_dl$clock),
@@ -1470,7 +1908,7 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     
     // Update code
     always @(*) begin
-        busy$clock = clock;
+        sbusy$clock = clock;
         sc$clock = clock;
         dc$clock = clock;
         bx0$clock = clock;
@@ -1482,9 +1920,10 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         area$clock = clock;
         area_abs$clock = clock;
         exp_a$clock = clock;
+        div_da$clock = clock;
         div_d$clock = clock;
         mant$clock = clock;
-        busy$d = busy$q;
+        sbusy$d = sbusy$q;
         sc$d = sc$q;
         dc$d = dc$q;
         bx0$d = bx0$q;
@@ -1496,8 +1935,19 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         area$d = area$q;
         area_abs$d = area_abs$q;
         exp_a$d = exp_a$q;
+        div_da$d = div_da$q;
         div_d$d = div_d$q;
         mant$d = mant$q;
+        wp$clock = clock;
+        ph$clock = clock;
+        wx0$clock = clock;
+        wx1$clock = clock;
+        wy1$clock = clock;
+        wp$d = wp$q;
+        ph$d = ph$q;
+        wx0$d = wx0$q;
+        wx1$d = wx1$q;
+        wy1$d = wy1$q;
         d1z$clock = clock;
         d2z$clock = clock;
         tv$clock = clock;
@@ -1541,6 +1991,7 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         o_y$d = o_y$q;
         o_z$d = o_z$q;
         div$clock = clock;
+        div_a$clock = clock;
         mul_a$clock = clock;
         mul_b$clock = clock;
         mul_z1$clock = clock;
@@ -1583,6 +2034,10 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         mul_l$0$clock = clock;
         mul_c1$0$clock = clock;
         mul_c2$0$clock = clock;
+        wdx$0$clock = clock;
+        wdx$0$d = wdx$0$q;
+        wdy$0$clock = clock;
+        wdy$0$d = wdy$0$q;
         vx$1$clock = clock;
         vx$1$d = vx$1$q;
         vy$1$clock = clock;
@@ -1614,6 +2069,10 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         mul_l$1$clock = clock;
         mul_c1$1$clock = clock;
         mul_c2$1$clock = clock;
+        wdx$1$clock = clock;
+        wdx$1$d = wdx$1$q;
+        wdy$1$clock = clock;
+        wdy$1$d = wdy$1$q;
         vx$2$clock = clock;
         vx$2$d = vx$2$q;
         vy$2$clock = clock;
@@ -1645,6 +2104,58 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         mul_l$2$clock = clock;
         mul_c1$2$clock = clock;
         mul_c2$2$clock = clock;
+        wdx$2$clock = clock;
+        wdx$2$d = wdx$2$q;
+        wdy$2$clock = clock;
+        wdy$2$d = wdy$2$q;
+        k_iw$0$clock = clock;
+        k_iw$0$d = k_iw$0$q;
+        k_d1c$0$clock = clock;
+        k_d1c$0$d = k_d1c$0$q;
+        k_d2c$0$clock = clock;
+        k_d2c$0$d = k_d2c$0$q;
+        k_c0$0$clock = clock;
+        k_c0$0$d = k_c0$0$q;
+        k_iw$1$clock = clock;
+        k_iw$1$d = k_iw$1$q;
+        k_d1c$1$clock = clock;
+        k_d1c$1$d = k_d1c$1$q;
+        k_d2c$1$clock = clock;
+        k_d2c$1$d = k_d2c$1$q;
+        k_c0$1$clock = clock;
+        k_c0$1$d = k_c0$1$q;
+        k_iw$2$clock = clock;
+        k_iw$2$d = k_iw$2$q;
+        k_d1c$2$clock = clock;
+        k_d1c$2$d = k_d1c$2$q;
+        k_d2c$2$clock = clock;
+        k_d2c$2$d = k_d2c$2$q;
+        k_c0$2$clock = clock;
+        k_c0$2$d = k_c0$2$q;
+        k_iw$3$clock = clock;
+        k_iw$3$d = k_iw$3$q;
+        k_d1c$3$clock = clock;
+        k_d1c$3$d = k_d1c$3$q;
+        k_d2c$3$clock = clock;
+        k_d2c$3$d = k_d2c$3$q;
+        k_c0$3$clock = clock;
+        k_c0$3$d = k_c0$3$q;
+        k_iw$4$clock = clock;
+        k_iw$4$d = k_iw$4$q;
+        k_d1c$4$clock = clock;
+        k_d1c$4$d = k_d1c$4$q;
+        k_d2c$4$clock = clock;
+        k_d2c$4$d = k_d2c$4$q;
+        k_c0$4$clock = clock;
+        k_c0$4$d = k_c0$4$q;
+        k_iw$5$clock = clock;
+        k_iw$5$d = k_iw$5$q;
+        k_d1c$5$clock = clock;
+        k_d1c$5$d = k_d1c$5$q;
+        k_d2c$5$clock = clock;
+        k_d2c$5$d = k_d2c$5$q;
+        k_c0$5$clock = clock;
+        k_c0$5$d = k_c0$5$q;
         vc$0$clock = clock;
         vc$0$d = vc$0$q;
         vc$1$clock = clock;
@@ -1664,15 +2175,55 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         vc$8$clock = clock;
         vc$8$d = vc$8$q;
         mul_s$0$clock = clock;
+        hold$0$clock = clock;
+        hold$0$d = hold$0$q;
+        k_mant$0$clock = clock;
+        k_mant$0$d = k_mant$0$q;
+        k_exp$0$clock = clock;
+        k_exp$0$d = k_exp$0$q;
+        k_d1z$0$clock = clock;
+        k_d1z$0$d = k_d1z$0$q;
+        k_d2z$0$clock = clock;
+        k_d2z$0$d = k_d2z$0$q;
+        k_z0$0$clock = clock;
+        k_z0$0$d = k_z0$0$q;
         mul_s$1$clock = clock;
+        hold$1$clock = clock;
+        hold$1$d = hold$1$q;
+        k_mant$1$clock = clock;
+        k_mant$1$d = k_mant$1$q;
+        k_exp$1$clock = clock;
+        k_exp$1$d = k_exp$1$q;
+        k_d1z$1$clock = clock;
+        k_d1z$1$d = k_d1z$1$q;
+        k_d2z$1$clock = clock;
+        k_d2z$1$d = k_d2z$1$q;
+        k_z0$1$clock = clock;
+        k_z0$1$d = k_z0$1$q;
         run = ~(o_valid$q & ~out$ready);
-        take = inp$valid & ~busy$q;
-        inp$ready = ~busy$q;
-        idle = ~busy$q;
+        inp$ready = ~sbusy$q & run;
+        take = inp$valid & inp$ready;
+        idle = ~sbusy$q & ~tv$q & (dc$q == 32'h0);
+        at_last = (tx$q == wx1$q) & (ty$q == wy1$q);
+        walk_ok = ~tv$q | at_last;
+        set_ok = hold$1$q == 32'h0;
+        if (wp$q) begin
+            set_ok = hold$0$q == 32'h0;
+        end
+        hand = sbusy$q & (sc$q == at_walk) & (empty$q | (walk_ok & set_ok));
         div$hold = ~run;
         div$out_ready = 1'b1;
         div$inp_valid = 1'b1;
         div$inp_n = recip_n;
+        div_a$hold = ~run;
+        div_a$out_ready = 1'b1;
+        div_a$inp_valid = 1'b1;
+        div_a$inp_n = recip_n;
+        div_a$inp_d = div_da$q;
+        mant_c = mant$q;
+        if (sc$q == at_mant) begin
+            mant_c = div_a$out_q[(32'h0)+:(25)];
+        end
         mul_a$en = run;
         mul_b$en = run;
         mul_z1$en = run;
@@ -1700,31 +2251,31 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         ez$0$x = vz$0$q;
         ux$0 = vx$0$q ^ half_xy;
         uy$0 = vy$0$q ^ half_xy;
-        dx_neg$0$x = dx$0$q;
-        dy_neg$0$x = dy$0$q;
-        owns$0 = dy_neg$0$neg | ((dy$0$q == 32'h0) & ~dx_neg$0$neg & (dx$0$q != 32'h0));
-        edx$0$x = dx$0$q;
-        edy$0$x = dy$0$q;
+        dx_neg$0$x = wdx$0$q;
+        dy_neg$0$x = wdy$0$q;
+        owns$0 = dy_neg$0$neg | ((wdy$0$q == 32'h0) & ~dx_neg$0$neg & (wdx$0$q != 32'h0));
+        edx$0$x = wdx$0$q;
+        edy$0$x = wdy$0$q;
         ex$1$x = vx$1$q;
         ey$1$x = vy$1$q;
         ez$1$x = vz$1$q;
         ux$1 = vx$1$q ^ half_xy;
         uy$1 = vy$1$q ^ half_xy;
-        dx_neg$1$x = dx$1$q;
-        dy_neg$1$x = dy$1$q;
-        owns$1 = dy_neg$1$neg | ((dy$1$q == 32'h0) & ~dx_neg$1$neg & (dx$1$q != 32'h0));
-        edx$1$x = dx$1$q;
-        edy$1$x = dy$1$q;
+        dx_neg$1$x = wdx$1$q;
+        dy_neg$1$x = wdy$1$q;
+        owns$1 = dy_neg$1$neg | ((wdy$1$q == 32'h0) & ~dx_neg$1$neg & (wdx$1$q != 32'h0));
+        edx$1$x = wdx$1$q;
+        edy$1$x = wdy$1$q;
         ex$2$x = vx$2$q;
         ey$2$x = vy$2$q;
         ez$2$x = vz$2$q;
         ux$2 = vx$2$q ^ half_xy;
         uy$2 = vy$2$q ^ half_xy;
-        dx_neg$2$x = dx$2$q;
-        dy_neg$2$x = dy$2$q;
-        owns$2 = dy_neg$2$neg | ((dy$2$q == 32'h0) & ~dx_neg$2$neg & (dx$2$q != 32'h0));
-        edx$2$x = dx$2$q;
-        edy$2$x = dy$2$q;
+        dx_neg$2$x = wdx$2$q;
+        dy_neg$2$x = wdy$2$q;
+        owns$2 = dy_neg$2$neg | ((wdy$2$q == 32'h0) & ~dx_neg$2$neg & (wdx$2$q != 32'h0));
+        edx$2$x = wdx$2$q;
+        edy$2$x = wdy$2$q;
         min_x = ux$0;
         max_x = ux$0;
         min_y = uy$0;
@@ -1823,31 +2374,84 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         end
         tag_dl$d = tag;
         tag_out = tag_dl$q;
-        x_end = ((bx1$q) & 10'h3ff);
-        y_end = ((by1$q) & 10'h3ff);
+        c_mant = k_mant$0$q;
+        if (wp$q) begin
+            c_mant = k_mant$1$q;
+        end
+        c_exp = k_exp$0$q;
+        if (ph$q[tap_exp]) begin
+            c_exp = k_exp$1$q;
+        end
+        c_d1z = k_d1z$0$q;
+        c_d2z = k_d2z$0$q;
+        c_iw$0 = k_iw$0$q;
+        c_iw$1 = k_iw$1$q;
+        c_iw$2 = k_iw$2$q;
+        if (ph$q[tap_z]) begin
+            c_d1z = k_d1z$1$q;
+            c_d2z = k_d2z$1$q;
+            c_iw$0 = k_iw$3$q;
+            c_iw$1 = k_iw$4$q;
+            c_iw$2 = k_iw$5$q;
+        end
+        c_z0 = k_z0$0$q;
+        if (ph$q[tap_z0]) begin
+            c_z0 = k_z0$1$q;
+        end
+        c_d1c$0 = k_d1c$0$q;
+        c_d2c$0 = k_d2c$0$q;
+        if (ph$q[tap_c]) begin
+            c_d1c$0 = k_d1c$3$q;
+            c_d2c$0 = k_d2c$3$q;
+        end
+        c_c0$0 = k_c0$0$q;
+        if (ph$q[tap_c0]) begin
+            c_c0$0 = k_c0$3$q;
+        end
+        c_d1c$1 = k_d1c$1$q;
+        c_d2c$1 = k_d2c$1$q;
+        if (ph$q[tap_c]) begin
+            c_d1c$1 = k_d1c$4$q;
+            c_d2c$1 = k_d2c$4$q;
+        end
+        c_c0$1 = k_c0$1$q;
+        if (ph$q[tap_c0]) begin
+            c_c0$1 = k_c0$4$q;
+        end
+        c_d1c$2 = k_d1c$2$q;
+        c_d2c$2 = k_d2c$2$q;
+        if (ph$q[tap_c]) begin
+            c_d1c$2 = k_d1c$5$q;
+            c_d2c$2 = k_d2c$5$q;
+        end
+        c_c0$2 = k_c0$2$q;
+        if (ph$q[tap_c0]) begin
+            c_c0$2 = k_c0$5$q;
+        end
         mul_a$a = w$1$q;
-        mul_a$b = ((mant$q) & 26'h3ffffff);
+        mul_a$b = ((c_mant) & 26'h3ffffff);
         mul_b$a = w$2$q;
-        mul_b$b = ((mant$q) & 26'h3ffffff);
+        mul_b$b = ((c_mant) & 26'h3ffffff);
         rs_a$x = mul_a$p;
-        rs_a$by = exp_a$q;
+        rs_a$by = c_exp;
         rs_b$x = mul_b$p;
-        rs_b$by = exp_a$q;
-        mul_z1$a = d1z$q;
+        rs_b$by = c_exp;
+        mul_z1$a = c_d1z;
         mul_z1$b = a3$q;
-        mul_z2$a = d2z$q;
+        mul_z2$a = c_d2z;
         mul_z2$b = b3$q;
         mul_l$0$a = one - a3$q - b3$q;
-        mul_l$0$b = ((viw$0$q) & 17'h1ffff);
+        mul_l$0$b = ((c_iw$0) & 17'h1ffff);
         mul_l$1$a = a3$q;
-        mul_l$1$b = ((viw$1$q) & 17'h1ffff);
+        mul_l$1$b = ((c_iw$1) & 17'h1ffff);
         mul_l$2$a = b3$q;
-        mul_l$2$b = ((viw$2$q) & 17'h1ffff);
+        mul_l$2$b = ((c_iw$2) & 17'h1ffff);
         ab_pair = (((a3$q) & 56'hffffffffffffff) << half_pair) | ((b3$q) & 56'hffffffffffffff);
         ab_dl$d = ab_pair;
         rs_z$x = mul_z1$p + mul_z2$p;
         rs_z$by = 32'h0;
-        rs_z0$x = ez$0$y;
+        ez0$x = c_z0;
+        rs_z0$x = ez0$y;
         rs_z0$by = 32'h0;
         rs_q$0$x = mul_l$0$p;
         rs_q$0$by = 32'h0;
@@ -1887,27 +2491,27 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
             ca = ca11$q;
             cb = cb11$q;
         end
-        mul_c1$0$a = d1c$0$q;
-        mul_c2$0$a = d2c$0$q;
-        mul_c1$1$a = d1c$1$q;
-        mul_c2$1$a = d2c$1$q;
-        mul_c1$2$a = d1c$2$q;
-        mul_c2$2$a = d2c$2$q;
-        rs_c0$0$x = ((vc$0$q) & 9'h1ff);
-        rs_c0$1$x = ((vc$1$q) & 9'h1ff);
-        rs_c0$2$x = ((vc$2$q) & 9'h1ff);
+        rs_c0$0$x = ((c_c0$0) & 9'h1ff);
+        rs_c0$1$x = ((c_c0$1) & 9'h1ff);
+        rs_c0$2$x = ((c_c0$2) & 9'h1ff);
+        mul_c1$0$a = c_d1c$0;
+        mul_c2$0$a = c_d2c$0;
         mul_c1$0$b = ca;
         mul_c2$0$b = cb;
         rs_c$0$x = mul_c1$0$p + mul_c2$0$p;
         rs_c$0$by = 32'h0;
         rs_c0$0$by = 32'h0;
         color_of$0$x = c14$0$q;
+        mul_c1$1$a = c_d1c$1;
+        mul_c2$1$a = c_d2c$1;
         mul_c1$1$b = ca;
         mul_c2$1$b = cb;
         rs_c$1$x = mul_c1$1$p + mul_c2$1$p;
         rs_c$1$by = 32'h0;
         rs_c0$1$by = 32'h0;
         color_of$1$x = c14$1$q;
+        mul_c1$2$a = c_d1c$2;
+        mul_c2$2$a = c_d2c$2;
         mul_c1$2$b = ca;
         mul_c2$2$b = cb;
         rs_c$2$x = mul_c1$2$p + mul_c2$2$p;
@@ -1915,17 +2519,24 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         rs_c0$2$by = 32'h0;
         color_of$2$x = c14$2$q;
         if (run) begin
-            if (sc$q != 32'h0) begin
+            if ((sc$q != 32'h0) & (sc$q != at_walk)) begin
                 sc$d = sc$q + 32'h1;
             end
             if (dc$q != 32'h0) begin
                 dc$d = dc$q - 32'h1;
-                if (dc$q == 32'h1) begin
-                    busy$d = 1'b0;
-                end
+            end
+            if (hold$0$q != 32'h0) begin
+                hold$0$d = hold$0$q - 32'h1;
+            end
+            if (hold$1$q != 32'h0) begin
+                hold$1$d = hold$1$q - 32'h1;
+            end
+            ph$d = ph$q << x_shift;
+            if (wp$q) begin
+                ph$d = (ph$q << x_shift) | 64'h1;
             end
             if (take) begin
-                busy$d = 1'b1;
+                sbusy$d = 1'b1;
                 sc$d = 32'h1;
                 vx$0$d = inp$v0_x;
                 vx$1$d = inp$v1_x;
@@ -2021,47 +2632,97 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
                 w0$2$d = mul_s$0$p - mul_s$1$p;
             end
             if (sc$q == at_mant) begin
-                mant$d = div$out_q[(32'h0)+:(25)];
-            end
-            if (sc$q == at_walk) begin
-                sc$d = 32'h0;
-                tx$d = ((bx0$q) & 10'h3ff);
-                ty$d = ((by0$q) & 10'h3ff);
-                w$0$d = w0$0$q;
-                wrow$0$d = w0$0$q;
-                w$1$d = w0$1$q;
-                wrow$1$d = w0$1$q;
-                w$2$d = w0$2$q;
-                wrow$2$d = w0$2$q;
-                if (empty$q) begin
-                    dc$d = drain;
-                end
-                else begin
-                    tv$d = 1'b1;
-                end
+                mant$d = mant_c;
             end
             if (tv$q) begin
-                if (tx$q == x_end) begin
-                    if (ty$q == y_end) begin
-                        tv$d = 1'b0;
-                        dc$d = drain;
+                if (at_last) begin
+                    tv$d = 1'b0;
+                    dc$d = drain;
+                    if (wp$q) begin
+                        hold$1$d = held_m1;
                     end
                     else begin
-                        tx$d = ((bx0$q) & 10'h3ff);
-                        ty$d = ty$q + 32'h1;
-                        wrow$0$d = wrow$0$q + (edx$0$y << frac);
-                        w$0$d = wrow$0$q + (edx$0$y << frac);
-                        wrow$1$d = wrow$1$q + (edx$1$y << frac);
-                        w$1$d = wrow$1$q + (edx$1$y << frac);
-                        wrow$2$d = wrow$2$q + (edx$2$y << frac);
-                        w$2$d = wrow$2$q + (edx$2$y << frac);
+                        hold$0$d = held_m1;
                     end
+                end
+                else if (tx$q == wx1$q) begin
+                    tx$d = wx0$q;
+                    ty$d = ty$q + 32'h1;
+                    wrow$0$d = wrow$0$q + (edx$0$y << frac);
+                    w$0$d = wrow$0$q + (edx$0$y << frac);
+                    wrow$1$d = wrow$1$q + (edx$1$y << frac);
+                    w$1$d = wrow$1$q + (edx$1$y << frac);
+                    wrow$2$d = wrow$2$q + (edx$2$y << frac);
+                    w$2$d = wrow$2$q + (edx$2$y << frac);
                 end
                 else begin
                     tx$d = tx$q + 32'h1;
                     w$0$d = w$0$q - (edy$0$y << frac);
                     w$1$d = w$1$q - (edy$1$y << frac);
                     w$2$d = w$2$q - (edy$2$y << frac);
+                end
+            end
+            if (hand) begin
+                sbusy$d = 1'b0;
+                sc$d = 32'h0;
+                if (~empty$q) begin
+                    tv$d = 1'b1;
+                    wp$d = ~wp$q;
+                    tx$d = ((bx0$q) & 10'h3ff);
+                    ty$d = ((by0$q) & 10'h3ff);
+                    wx0$d = ((bx0$q) & 10'h3ff);
+                    wx1$d = ((bx1$q) & 10'h3ff);
+                    wy1$d = ((by1$q) & 10'h3ff);
+                    w$0$d = w0$0$q;
+                    wrow$0$d = w0$0$q;
+                    wdx$0$d = dx$0$q;
+                    wdy$0$d = dy$0$q;
+                    w$1$d = w0$1$q;
+                    wrow$1$d = w0$1$q;
+                    wdx$1$d = dx$1$q;
+                    wdy$1$d = dy$1$q;
+                    w$2$d = w0$2$q;
+                    wrow$2$d = w0$2$q;
+                    wdx$2$d = dx$2$q;
+                    wdy$2$d = dy$2$q;
+                    if (wp$q) begin
+                        k_mant$0$d = mant_c;
+                        k_exp$0$d = exp_a$q;
+                        k_d1z$0$d = d1z$q;
+                        k_d2z$0$d = d2z$q;
+                        k_z0$0$d = vz$0$q;
+                        k_iw$0$d = viw$0$q;
+                        k_d1c$0$d = d1c$0$q;
+                        k_d2c$0$d = d2c$0$q;
+                        k_c0$0$d = vc$0$q;
+                        k_iw$1$d = viw$1$q;
+                        k_d1c$1$d = d1c$1$q;
+                        k_d2c$1$d = d2c$1$q;
+                        k_c0$1$d = vc$1$q;
+                        k_iw$2$d = viw$2$q;
+                        k_d1c$2$d = d1c$2$q;
+                        k_d2c$2$d = d2c$2$q;
+                        k_c0$2$d = vc$2$q;
+                    end
+                    else begin
+                        k_mant$1$d = mant_c;
+                        k_exp$1$d = exp_a$q;
+                        k_d1z$1$d = d1z$q;
+                        k_d2z$1$d = d2z$q;
+                        k_z0$1$d = vz$0$q;
+                        k_iw$3$d = viw$0$q;
+                        k_d1c$3$d = d1c$0$q;
+                        k_d2c$3$d = d2c$0$q;
+                        k_c0$3$d = vc$0$q;
+                        k_iw$4$d = viw$1$q;
+                        k_d1c$4$d = d1c$1$q;
+                        k_d2c$4$d = d2c$1$q;
+                        k_c0$4$d = vc$1$q;
+                        k_iw$5$d = viw$2$q;
+                        k_d1c$5$d = d1c$2$q;
+                        k_d2c$5$d = d2c$2$q;
+                        k_c0$5$d = vc$2$q;
+                    end
                 end
             end
             a3$d = rs_a$y;
@@ -2096,7 +2757,7 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
             end
             div_d$d = norm_s$d;
             if (sc$q == 32'h6) begin
-                div_d$d = norm_a$d;
+                div_da$d = norm_a$d;
             end
             sum7$d = sum_c;
             sum8$d = sum7$q;
@@ -3272,25 +3933,6 @@ module vector$bneg(d,q,clock);
     end
           
 endmodule // vector$bneg
-
-
-module vector$busy(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$busy
 
 
 module vector$bx0(d,q,clock);
@@ -10210,6 +10852,6329 @@ module vector$div$stages$9$x_r(d,q,clock);
 endmodule // vector$div$stages$9$x_r
 
 
+module vector$div_a(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  hold;
+    input wire  [57:0] inp_n;
+    input wire  [33:0] inp_d;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [25:0] out_q;
+    output reg  [33:0] out_r;
+    
+    // Constant declarations
+    localparam  n_msb = 8'h39;
+    localparam  qm = 8'h19;
+    localparam  q_sign = 26'h2000000;
+    
+    // Stub signals
+    reg  stages$0$clock;
+    reg  stages$0$enable;
+    reg  stages$0$valid_in;
+    reg  [33:0] stages$0$p_in;
+    reg  [24:0] stages$0$x_in;
+    reg  [33:0] stages$0$d_in;
+    reg  stages$0$neg_in;
+    wire  stages$0$valid;
+    wire  [33:0] stages$0$p;
+    wire  [24:0] stages$0$x;
+    wire  [33:0] stages$0$d;
+    wire  stages$0$neg;
+    reg  stages$1$clock;
+    reg  stages$1$enable;
+    reg  stages$1$valid_in;
+    reg  [33:0] stages$1$p_in;
+    reg  [24:0] stages$1$x_in;
+    reg  [33:0] stages$1$d_in;
+    reg  stages$1$neg_in;
+    wire  stages$1$valid;
+    wire  [33:0] stages$1$p;
+    wire  [24:0] stages$1$x;
+    wire  [33:0] stages$1$d;
+    wire  stages$1$neg;
+    reg  stages$2$clock;
+    reg  stages$2$enable;
+    reg  stages$2$valid_in;
+    reg  [33:0] stages$2$p_in;
+    reg  [24:0] stages$2$x_in;
+    reg  [33:0] stages$2$d_in;
+    reg  stages$2$neg_in;
+    wire  stages$2$valid;
+    wire  [33:0] stages$2$p;
+    wire  [24:0] stages$2$x;
+    wire  [33:0] stages$2$d;
+    wire  stages$2$neg;
+    reg  stages$3$clock;
+    reg  stages$3$enable;
+    reg  stages$3$valid_in;
+    reg  [33:0] stages$3$p_in;
+    reg  [24:0] stages$3$x_in;
+    reg  [33:0] stages$3$d_in;
+    reg  stages$3$neg_in;
+    wire  stages$3$valid;
+    wire  [33:0] stages$3$p;
+    wire  [24:0] stages$3$x;
+    wire  [33:0] stages$3$d;
+    wire  stages$3$neg;
+    reg  stages$4$clock;
+    reg  stages$4$enable;
+    reg  stages$4$valid_in;
+    reg  [33:0] stages$4$p_in;
+    reg  [24:0] stages$4$x_in;
+    reg  [33:0] stages$4$d_in;
+    reg  stages$4$neg_in;
+    wire  stages$4$valid;
+    wire  [33:0] stages$4$p;
+    wire  [24:0] stages$4$x;
+    wire  [33:0] stages$4$d;
+    wire  stages$4$neg;
+    reg  stages$5$clock;
+    reg  stages$5$enable;
+    reg  stages$5$valid_in;
+    reg  [33:0] stages$5$p_in;
+    reg  [24:0] stages$5$x_in;
+    reg  [33:0] stages$5$d_in;
+    reg  stages$5$neg_in;
+    wire  stages$5$valid;
+    wire  [33:0] stages$5$p;
+    wire  [24:0] stages$5$x;
+    wire  [33:0] stages$5$d;
+    wire  stages$5$neg;
+    reg  stages$6$clock;
+    reg  stages$6$enable;
+    reg  stages$6$valid_in;
+    reg  [33:0] stages$6$p_in;
+    reg  [24:0] stages$6$x_in;
+    reg  [33:0] stages$6$d_in;
+    reg  stages$6$neg_in;
+    wire  stages$6$valid;
+    wire  [33:0] stages$6$p;
+    wire  [24:0] stages$6$x;
+    wire  [33:0] stages$6$d;
+    wire  stages$6$neg;
+    reg  stages$7$clock;
+    reg  stages$7$enable;
+    reg  stages$7$valid_in;
+    reg  [33:0] stages$7$p_in;
+    reg  [24:0] stages$7$x_in;
+    reg  [33:0] stages$7$d_in;
+    reg  stages$7$neg_in;
+    wire  stages$7$valid;
+    wire  [33:0] stages$7$p;
+    wire  [24:0] stages$7$x;
+    wire  [33:0] stages$7$d;
+    wire  stages$7$neg;
+    reg  stages$8$clock;
+    reg  stages$8$enable;
+    reg  stages$8$valid_in;
+    reg  [33:0] stages$8$p_in;
+    reg  [24:0] stages$8$x_in;
+    reg  [33:0] stages$8$d_in;
+    reg  stages$8$neg_in;
+    wire  stages$8$valid;
+    wire  [33:0] stages$8$p;
+    wire  [24:0] stages$8$x;
+    wire  [33:0] stages$8$d;
+    wire  stages$8$neg;
+    reg  stages$9$clock;
+    reg  stages$9$enable;
+    reg  stages$9$valid_in;
+    reg  [33:0] stages$9$p_in;
+    reg  [24:0] stages$9$x_in;
+    reg  [33:0] stages$9$d_in;
+    reg  stages$9$neg_in;
+    wire  stages$9$valid;
+    wire  [33:0] stages$9$p;
+    wire  [24:0] stages$9$x;
+    wire  [33:0] stages$9$d;
+    wire  stages$9$neg;
+    reg  stages$10$clock;
+    reg  stages$10$enable;
+    reg  stages$10$valid_in;
+    reg  [33:0] stages$10$p_in;
+    reg  [24:0] stages$10$x_in;
+    reg  [33:0] stages$10$d_in;
+    reg  stages$10$neg_in;
+    wire  stages$10$valid;
+    wire  [33:0] stages$10$p;
+    wire  [24:0] stages$10$x;
+    wire  [33:0] stages$10$d;
+    wire  stages$10$neg;
+    reg  stages$11$clock;
+    reg  stages$11$enable;
+    reg  stages$11$valid_in;
+    reg  [33:0] stages$11$p_in;
+    reg  [24:0] stages$11$x_in;
+    reg  [33:0] stages$11$d_in;
+    reg  stages$11$neg_in;
+    wire  stages$11$valid;
+    wire  [33:0] stages$11$p;
+    wire  [24:0] stages$11$x;
+    wire  [33:0] stages$11$d;
+    wire  stages$11$neg;
+    reg  stages$12$clock;
+    reg  stages$12$enable;
+    reg  stages$12$valid_in;
+    reg  [33:0] stages$12$p_in;
+    reg  [24:0] stages$12$x_in;
+    reg  [33:0] stages$12$d_in;
+    reg  stages$12$neg_in;
+    wire  stages$12$valid;
+    wire  [33:0] stages$12$p;
+    wire  [24:0] stages$12$x;
+    wire  [33:0] stages$12$d;
+    wire  stages$12$neg;
+    reg  stages$13$clock;
+    reg  stages$13$enable;
+    reg  stages$13$valid_in;
+    reg  [33:0] stages$13$p_in;
+    reg  [24:0] stages$13$x_in;
+    reg  [33:0] stages$13$d_in;
+    reg  stages$13$neg_in;
+    wire  stages$13$valid;
+    wire  [33:0] stages$13$p;
+    wire  [24:0] stages$13$x;
+    wire  [33:0] stages$13$d;
+    wire  stages$13$neg;
+    reg  stages$14$clock;
+    reg  stages$14$enable;
+    reg  stages$14$valid_in;
+    reg  [33:0] stages$14$p_in;
+    reg  [24:0] stages$14$x_in;
+    reg  [33:0] stages$14$d_in;
+    reg  stages$14$neg_in;
+    wire  stages$14$valid;
+    wire  [33:0] stages$14$p;
+    wire  [24:0] stages$14$x;
+    wire  [33:0] stages$14$d;
+    wire  stages$14$neg;
+    reg  stages$15$clock;
+    reg  stages$15$enable;
+    reg  stages$15$valid_in;
+    reg  [33:0] stages$15$p_in;
+    reg  [24:0] stages$15$x_in;
+    reg  [33:0] stages$15$d_in;
+    reg  stages$15$neg_in;
+    wire  stages$15$valid;
+    wire  [33:0] stages$15$p;
+    wire  [24:0] stages$15$x;
+    wire  [33:0] stages$15$d;
+    wire  stages$15$neg;
+    reg  stages$16$clock;
+    reg  stages$16$enable;
+    reg  stages$16$valid_in;
+    reg  [33:0] stages$16$p_in;
+    reg  [24:0] stages$16$x_in;
+    reg  [33:0] stages$16$d_in;
+    reg  stages$16$neg_in;
+    wire  stages$16$valid;
+    wire  [33:0] stages$16$p;
+    wire  [24:0] stages$16$x;
+    wire  [33:0] stages$16$d;
+    wire  stages$16$neg;
+    reg  stages$17$clock;
+    reg  stages$17$enable;
+    reg  stages$17$valid_in;
+    reg  [33:0] stages$17$p_in;
+    reg  [24:0] stages$17$x_in;
+    reg  [33:0] stages$17$d_in;
+    reg  stages$17$neg_in;
+    wire  stages$17$valid;
+    wire  [33:0] stages$17$p;
+    wire  [24:0] stages$17$x;
+    wire  [33:0] stages$17$d;
+    wire  stages$17$neg;
+    reg  stages$18$clock;
+    reg  stages$18$enable;
+    reg  stages$18$valid_in;
+    reg  [33:0] stages$18$p_in;
+    reg  [24:0] stages$18$x_in;
+    reg  [33:0] stages$18$d_in;
+    reg  stages$18$neg_in;
+    wire  stages$18$valid;
+    wire  [33:0] stages$18$p;
+    wire  [24:0] stages$18$x;
+    wire  [33:0] stages$18$d;
+    wire  stages$18$neg;
+    reg  stages$19$clock;
+    reg  stages$19$enable;
+    reg  stages$19$valid_in;
+    reg  [33:0] stages$19$p_in;
+    reg  [24:0] stages$19$x_in;
+    reg  [33:0] stages$19$d_in;
+    reg  stages$19$neg_in;
+    wire  stages$19$valid;
+    wire  [33:0] stages$19$p;
+    wire  [24:0] stages$19$x;
+    wire  [33:0] stages$19$d;
+    wire  stages$19$neg;
+    reg  stages$20$clock;
+    reg  stages$20$enable;
+    reg  stages$20$valid_in;
+    reg  [33:0] stages$20$p_in;
+    reg  [24:0] stages$20$x_in;
+    reg  [33:0] stages$20$d_in;
+    reg  stages$20$neg_in;
+    wire  stages$20$valid;
+    wire  [33:0] stages$20$p;
+    wire  [24:0] stages$20$x;
+    wire  [33:0] stages$20$d;
+    wire  stages$20$neg;
+    reg  stages$21$clock;
+    reg  stages$21$enable;
+    reg  stages$21$valid_in;
+    reg  [33:0] stages$21$p_in;
+    reg  [24:0] stages$21$x_in;
+    reg  [33:0] stages$21$d_in;
+    reg  stages$21$neg_in;
+    wire  stages$21$valid;
+    wire  [33:0] stages$21$p;
+    wire  [24:0] stages$21$x;
+    wire  [33:0] stages$21$d;
+    wire  stages$21$neg;
+    reg  stages$22$clock;
+    reg  stages$22$enable;
+    reg  stages$22$valid_in;
+    reg  [33:0] stages$22$p_in;
+    reg  [24:0] stages$22$x_in;
+    reg  [33:0] stages$22$d_in;
+    reg  stages$22$neg_in;
+    wire  stages$22$valid;
+    wire  [33:0] stages$22$p;
+    wire  [24:0] stages$22$x;
+    wire  [33:0] stages$22$d;
+    wire  stages$22$neg;
+    reg  stages$23$clock;
+    reg  stages$23$enable;
+    reg  stages$23$valid_in;
+    reg  [33:0] stages$23$p_in;
+    reg  [24:0] stages$23$x_in;
+    reg  [33:0] stages$23$d_in;
+    reg  stages$23$neg_in;
+    wire  stages$23$valid;
+    wire  [33:0] stages$23$p;
+    wire  [24:0] stages$23$x;
+    wire  [33:0] stages$23$d;
+    wire  stages$23$neg;
+    reg  stages$24$clock;
+    reg  stages$24$enable;
+    reg  stages$24$valid_in;
+    reg  [33:0] stages$24$p_in;
+    reg  [24:0] stages$24$x_in;
+    reg  [33:0] stages$24$d_in;
+    reg  stages$24$neg_in;
+    wire  stages$24$valid;
+    wire  [33:0] stages$24$p;
+    wire  [24:0] stages$24$x;
+    wire  [33:0] stages$24$d;
+    wire  stages$24$neg;
+    
+    // Local signals
+    reg  advance;
+    reg  [57:0] m;
+    reg  [24:0] last_x;
+    
+    // Sub module instances
+    vector$div_a$stages$0 stages$0(
+        .clock(stages$0$clock),
+        .enable(stages$0$enable),
+        .valid_in(stages$0$valid_in),
+        .p_in(stages$0$p_in),
+        .x_in(stages$0$x_in),
+        .d_in(stages$0$d_in),
+        .neg_in(stages$0$neg_in),
+        .valid(stages$0$valid),
+        .p(stages$0$p),
+        .x(stages$0$x),
+        .d(stages$0$d),
+        .neg(stages$0$neg)
+    );
+    vector$div_a$stages$1 stages$1(
+        .clock(stages$1$clock),
+        .enable(stages$1$enable),
+        .valid_in(stages$1$valid_in),
+        .p_in(stages$1$p_in),
+        .x_in(stages$1$x_in),
+        .d_in(stages$1$d_in),
+        .neg_in(stages$1$neg_in),
+        .valid(stages$1$valid),
+        .p(stages$1$p),
+        .x(stages$1$x),
+        .d(stages$1$d),
+        .neg(stages$1$neg)
+    );
+    vector$div_a$stages$2 stages$2(
+        .clock(stages$2$clock),
+        .enable(stages$2$enable),
+        .valid_in(stages$2$valid_in),
+        .p_in(stages$2$p_in),
+        .x_in(stages$2$x_in),
+        .d_in(stages$2$d_in),
+        .neg_in(stages$2$neg_in),
+        .valid(stages$2$valid),
+        .p(stages$2$p),
+        .x(stages$2$x),
+        .d(stages$2$d),
+        .neg(stages$2$neg)
+    );
+    vector$div_a$stages$3 stages$3(
+        .clock(stages$3$clock),
+        .enable(stages$3$enable),
+        .valid_in(stages$3$valid_in),
+        .p_in(stages$3$p_in),
+        .x_in(stages$3$x_in),
+        .d_in(stages$3$d_in),
+        .neg_in(stages$3$neg_in),
+        .valid(stages$3$valid),
+        .p(stages$3$p),
+        .x(stages$3$x),
+        .d(stages$3$d),
+        .neg(stages$3$neg)
+    );
+    vector$div_a$stages$4 stages$4(
+        .clock(stages$4$clock),
+        .enable(stages$4$enable),
+        .valid_in(stages$4$valid_in),
+        .p_in(stages$4$p_in),
+        .x_in(stages$4$x_in),
+        .d_in(stages$4$d_in),
+        .neg_in(stages$4$neg_in),
+        .valid(stages$4$valid),
+        .p(stages$4$p),
+        .x(stages$4$x),
+        .d(stages$4$d),
+        .neg(stages$4$neg)
+    );
+    vector$div_a$stages$5 stages$5(
+        .clock(stages$5$clock),
+        .enable(stages$5$enable),
+        .valid_in(stages$5$valid_in),
+        .p_in(stages$5$p_in),
+        .x_in(stages$5$x_in),
+        .d_in(stages$5$d_in),
+        .neg_in(stages$5$neg_in),
+        .valid(stages$5$valid),
+        .p(stages$5$p),
+        .x(stages$5$x),
+        .d(stages$5$d),
+        .neg(stages$5$neg)
+    );
+    vector$div_a$stages$6 stages$6(
+        .clock(stages$6$clock),
+        .enable(stages$6$enable),
+        .valid_in(stages$6$valid_in),
+        .p_in(stages$6$p_in),
+        .x_in(stages$6$x_in),
+        .d_in(stages$6$d_in),
+        .neg_in(stages$6$neg_in),
+        .valid(stages$6$valid),
+        .p(stages$6$p),
+        .x(stages$6$x),
+        .d(stages$6$d),
+        .neg(stages$6$neg)
+    );
+    vector$div_a$stages$7 stages$7(
+        .clock(stages$7$clock),
+        .enable(stages$7$enable),
+        .valid_in(stages$7$valid_in),
+        .p_in(stages$7$p_in),
+        .x_in(stages$7$x_in),
+        .d_in(stages$7$d_in),
+        .neg_in(stages$7$neg_in),
+        .valid(stages$7$valid),
+        .p(stages$7$p),
+        .x(stages$7$x),
+        .d(stages$7$d),
+        .neg(stages$7$neg)
+    );
+    vector$div_a$stages$8 stages$8(
+        .clock(stages$8$clock),
+        .enable(stages$8$enable),
+        .valid_in(stages$8$valid_in),
+        .p_in(stages$8$p_in),
+        .x_in(stages$8$x_in),
+        .d_in(stages$8$d_in),
+        .neg_in(stages$8$neg_in),
+        .valid(stages$8$valid),
+        .p(stages$8$p),
+        .x(stages$8$x),
+        .d(stages$8$d),
+        .neg(stages$8$neg)
+    );
+    vector$div_a$stages$9 stages$9(
+        .clock(stages$9$clock),
+        .enable(stages$9$enable),
+        .valid_in(stages$9$valid_in),
+        .p_in(stages$9$p_in),
+        .x_in(stages$9$x_in),
+        .d_in(stages$9$d_in),
+        .neg_in(stages$9$neg_in),
+        .valid(stages$9$valid),
+        .p(stages$9$p),
+        .x(stages$9$x),
+        .d(stages$9$d),
+        .neg(stages$9$neg)
+    );
+    vector$div_a$stages$10 stages$10(
+        .clock(stages$10$clock),
+        .enable(stages$10$enable),
+        .valid_in(stages$10$valid_in),
+        .p_in(stages$10$p_in),
+        .x_in(stages$10$x_in),
+        .d_in(stages$10$d_in),
+        .neg_in(stages$10$neg_in),
+        .valid(stages$10$valid),
+        .p(stages$10$p),
+        .x(stages$10$x),
+        .d(stages$10$d),
+        .neg(stages$10$neg)
+    );
+    vector$div_a$stages$11 stages$11(
+        .clock(stages$11$clock),
+        .enable(stages$11$enable),
+        .valid_in(stages$11$valid_in),
+        .p_in(stages$11$p_in),
+        .x_in(stages$11$x_in),
+        .d_in(stages$11$d_in),
+        .neg_in(stages$11$neg_in),
+        .valid(stages$11$valid),
+        .p(stages$11$p),
+        .x(stages$11$x),
+        .d(stages$11$d),
+        .neg(stages$11$neg)
+    );
+    vector$div_a$stages$12 stages$12(
+        .clock(stages$12$clock),
+        .enable(stages$12$enable),
+        .valid_in(stages$12$valid_in),
+        .p_in(stages$12$p_in),
+        .x_in(stages$12$x_in),
+        .d_in(stages$12$d_in),
+        .neg_in(stages$12$neg_in),
+        .valid(stages$12$valid),
+        .p(stages$12$p),
+        .x(stages$12$x),
+        .d(stages$12$d),
+        .neg(stages$12$neg)
+    );
+    vector$div_a$stages$13 stages$13(
+        .clock(stages$13$clock),
+        .enable(stages$13$enable),
+        .valid_in(stages$13$valid_in),
+        .p_in(stages$13$p_in),
+        .x_in(stages$13$x_in),
+        .d_in(stages$13$d_in),
+        .neg_in(stages$13$neg_in),
+        .valid(stages$13$valid),
+        .p(stages$13$p),
+        .x(stages$13$x),
+        .d(stages$13$d),
+        .neg(stages$13$neg)
+    );
+    vector$div_a$stages$14 stages$14(
+        .clock(stages$14$clock),
+        .enable(stages$14$enable),
+        .valid_in(stages$14$valid_in),
+        .p_in(stages$14$p_in),
+        .x_in(stages$14$x_in),
+        .d_in(stages$14$d_in),
+        .neg_in(stages$14$neg_in),
+        .valid(stages$14$valid),
+        .p(stages$14$p),
+        .x(stages$14$x),
+        .d(stages$14$d),
+        .neg(stages$14$neg)
+    );
+    vector$div_a$stages$15 stages$15(
+        .clock(stages$15$clock),
+        .enable(stages$15$enable),
+        .valid_in(stages$15$valid_in),
+        .p_in(stages$15$p_in),
+        .x_in(stages$15$x_in),
+        .d_in(stages$15$d_in),
+        .neg_in(stages$15$neg_in),
+        .valid(stages$15$valid),
+        .p(stages$15$p),
+        .x(stages$15$x),
+        .d(stages$15$d),
+        .neg(stages$15$neg)
+    );
+    vector$div_a$stages$16 stages$16(
+        .clock(stages$16$clock),
+        .enable(stages$16$enable),
+        .valid_in(stages$16$valid_in),
+        .p_in(stages$16$p_in),
+        .x_in(stages$16$x_in),
+        .d_in(stages$16$d_in),
+        .neg_in(stages$16$neg_in),
+        .valid(stages$16$valid),
+        .p(stages$16$p),
+        .x(stages$16$x),
+        .d(stages$16$d),
+        .neg(stages$16$neg)
+    );
+    vector$div_a$stages$17 stages$17(
+        .clock(stages$17$clock),
+        .enable(stages$17$enable),
+        .valid_in(stages$17$valid_in),
+        .p_in(stages$17$p_in),
+        .x_in(stages$17$x_in),
+        .d_in(stages$17$d_in),
+        .neg_in(stages$17$neg_in),
+        .valid(stages$17$valid),
+        .p(stages$17$p),
+        .x(stages$17$x),
+        .d(stages$17$d),
+        .neg(stages$17$neg)
+    );
+    vector$div_a$stages$18 stages$18(
+        .clock(stages$18$clock),
+        .enable(stages$18$enable),
+        .valid_in(stages$18$valid_in),
+        .p_in(stages$18$p_in),
+        .x_in(stages$18$x_in),
+        .d_in(stages$18$d_in),
+        .neg_in(stages$18$neg_in),
+        .valid(stages$18$valid),
+        .p(stages$18$p),
+        .x(stages$18$x),
+        .d(stages$18$d),
+        .neg(stages$18$neg)
+    );
+    vector$div_a$stages$19 stages$19(
+        .clock(stages$19$clock),
+        .enable(stages$19$enable),
+        .valid_in(stages$19$valid_in),
+        .p_in(stages$19$p_in),
+        .x_in(stages$19$x_in),
+        .d_in(stages$19$d_in),
+        .neg_in(stages$19$neg_in),
+        .valid(stages$19$valid),
+        .p(stages$19$p),
+        .x(stages$19$x),
+        .d(stages$19$d),
+        .neg(stages$19$neg)
+    );
+    vector$div_a$stages$20 stages$20(
+        .clock(stages$20$clock),
+        .enable(stages$20$enable),
+        .valid_in(stages$20$valid_in),
+        .p_in(stages$20$p_in),
+        .x_in(stages$20$x_in),
+        .d_in(stages$20$d_in),
+        .neg_in(stages$20$neg_in),
+        .valid(stages$20$valid),
+        .p(stages$20$p),
+        .x(stages$20$x),
+        .d(stages$20$d),
+        .neg(stages$20$neg)
+    );
+    vector$div_a$stages$21 stages$21(
+        .clock(stages$21$clock),
+        .enable(stages$21$enable),
+        .valid_in(stages$21$valid_in),
+        .p_in(stages$21$p_in),
+        .x_in(stages$21$x_in),
+        .d_in(stages$21$d_in),
+        .neg_in(stages$21$neg_in),
+        .valid(stages$21$valid),
+        .p(stages$21$p),
+        .x(stages$21$x),
+        .d(stages$21$d),
+        .neg(stages$21$neg)
+    );
+    vector$div_a$stages$22 stages$22(
+        .clock(stages$22$clock),
+        .enable(stages$22$enable),
+        .valid_in(stages$22$valid_in),
+        .p_in(stages$22$p_in),
+        .x_in(stages$22$x_in),
+        .d_in(stages$22$d_in),
+        .neg_in(stages$22$neg_in),
+        .valid(stages$22$valid),
+        .p(stages$22$p),
+        .x(stages$22$x),
+        .d(stages$22$d),
+        .neg(stages$22$neg)
+    );
+    vector$div_a$stages$23 stages$23(
+        .clock(stages$23$clock),
+        .enable(stages$23$enable),
+        .valid_in(stages$23$valid_in),
+        .p_in(stages$23$p_in),
+        .x_in(stages$23$x_in),
+        .d_in(stages$23$d_in),
+        .neg_in(stages$23$neg_in),
+        .valid(stages$23$valid),
+        .p(stages$23$p),
+        .x(stages$23$x),
+        .d(stages$23$d),
+        .neg(stages$23$neg)
+    );
+    vector$div_a$stages$24 stages$24(
+        .clock(stages$24$clock),
+        .enable(stages$24$enable),
+        .valid_in(stages$24$valid_in),
+        .p_in(stages$24$p_in),
+        .x_in(stages$24$x_in),
+        .d_in(stages$24$d_in),
+        .neg_in(stages$24$neg_in),
+        .valid(stages$24$valid),
+        .p(stages$24$p),
+        .x(stages$24$x),
+        .d(stages$24$d),
+        .neg(stages$24$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        advance = ~hold & (~stages$24$valid | out_ready);
+        out_valid = stages$24$valid;
+        last_x = stages$24$x;
+        out_r = stages$24$p;
+        out_q = ((last_x) & 26'h3ffffff);
+        if (stages$24$neg) begin
+            out_q = ((last_x) & 26'h3ffffff) | q_sign;
+        end
+        stages$0$clock = clock;
+        stages$0$enable = advance;
+        stages$1$clock = clock;
+        stages$1$enable = advance;
+        stages$2$clock = clock;
+        stages$2$enable = advance;
+        stages$3$clock = clock;
+        stages$3$enable = advance;
+        stages$4$clock = clock;
+        stages$4$enable = advance;
+        stages$5$clock = clock;
+        stages$5$enable = advance;
+        stages$6$clock = clock;
+        stages$6$enable = advance;
+        stages$7$clock = clock;
+        stages$7$enable = advance;
+        stages$8$clock = clock;
+        stages$8$enable = advance;
+        stages$9$clock = clock;
+        stages$9$enable = advance;
+        stages$10$clock = clock;
+        stages$10$enable = advance;
+        stages$11$clock = clock;
+        stages$11$enable = advance;
+        stages$12$clock = clock;
+        stages$12$enable = advance;
+        stages$13$clock = clock;
+        stages$13$enable = advance;
+        stages$14$clock = clock;
+        stages$14$enable = advance;
+        stages$15$clock = clock;
+        stages$15$enable = advance;
+        stages$16$clock = clock;
+        stages$16$enable = advance;
+        stages$17$clock = clock;
+        stages$17$enable = advance;
+        stages$18$clock = clock;
+        stages$18$enable = advance;
+        stages$19$clock = clock;
+        stages$19$enable = advance;
+        stages$20$clock = clock;
+        stages$20$enable = advance;
+        stages$21$clock = clock;
+        stages$21$enable = advance;
+        stages$22$clock = clock;
+        stages$22$enable = advance;
+        stages$23$clock = clock;
+        stages$23$enable = advance;
+        stages$24$clock = clock;
+        stages$24$enable = advance;
+        inp_ready = advance;
+        m = inp_n;
+        if (inp_n[n_msb]) begin
+            m = ~inp_n;
+        end
+        stages$0$valid_in = inp_valid;
+        stages$0$p_in = ((m >> qm) & 34'h3ffffffff);
+        stages$0$x_in = m[(32'h0)+:(25)];
+        stages$0$d_in = inp_d;
+        stages$0$neg_in = inp_n[n_msb];
+        stages$1$valid_in = stages$0$valid;
+        stages$1$p_in = stages$0$p;
+        stages$1$x_in = stages$0$x;
+        stages$1$d_in = stages$0$d;
+        stages$1$neg_in = stages$0$neg;
+        stages$2$valid_in = stages$1$valid;
+        stages$2$p_in = stages$1$p;
+        stages$2$x_in = stages$1$x;
+        stages$2$d_in = stages$1$d;
+        stages$2$neg_in = stages$1$neg;
+        stages$3$valid_in = stages$2$valid;
+        stages$3$p_in = stages$2$p;
+        stages$3$x_in = stages$2$x;
+        stages$3$d_in = stages$2$d;
+        stages$3$neg_in = stages$2$neg;
+        stages$4$valid_in = stages$3$valid;
+        stages$4$p_in = stages$3$p;
+        stages$4$x_in = stages$3$x;
+        stages$4$d_in = stages$3$d;
+        stages$4$neg_in = stages$3$neg;
+        stages$5$valid_in = stages$4$valid;
+        stages$5$p_in = stages$4$p;
+        stages$5$x_in = stages$4$x;
+        stages$5$d_in = stages$4$d;
+        stages$5$neg_in = stages$4$neg;
+        stages$6$valid_in = stages$5$valid;
+        stages$6$p_in = stages$5$p;
+        stages$6$x_in = stages$5$x;
+        stages$6$d_in = stages$5$d;
+        stages$6$neg_in = stages$5$neg;
+        stages$7$valid_in = stages$6$valid;
+        stages$7$p_in = stages$6$p;
+        stages$7$x_in = stages$6$x;
+        stages$7$d_in = stages$6$d;
+        stages$7$neg_in = stages$6$neg;
+        stages$8$valid_in = stages$7$valid;
+        stages$8$p_in = stages$7$p;
+        stages$8$x_in = stages$7$x;
+        stages$8$d_in = stages$7$d;
+        stages$8$neg_in = stages$7$neg;
+        stages$9$valid_in = stages$8$valid;
+        stages$9$p_in = stages$8$p;
+        stages$9$x_in = stages$8$x;
+        stages$9$d_in = stages$8$d;
+        stages$9$neg_in = stages$8$neg;
+        stages$10$valid_in = stages$9$valid;
+        stages$10$p_in = stages$9$p;
+        stages$10$x_in = stages$9$x;
+        stages$10$d_in = stages$9$d;
+        stages$10$neg_in = stages$9$neg;
+        stages$11$valid_in = stages$10$valid;
+        stages$11$p_in = stages$10$p;
+        stages$11$x_in = stages$10$x;
+        stages$11$d_in = stages$10$d;
+        stages$11$neg_in = stages$10$neg;
+        stages$12$valid_in = stages$11$valid;
+        stages$12$p_in = stages$11$p;
+        stages$12$x_in = stages$11$x;
+        stages$12$d_in = stages$11$d;
+        stages$12$neg_in = stages$11$neg;
+        stages$13$valid_in = stages$12$valid;
+        stages$13$p_in = stages$12$p;
+        stages$13$x_in = stages$12$x;
+        stages$13$d_in = stages$12$d;
+        stages$13$neg_in = stages$12$neg;
+        stages$14$valid_in = stages$13$valid;
+        stages$14$p_in = stages$13$p;
+        stages$14$x_in = stages$13$x;
+        stages$14$d_in = stages$13$d;
+        stages$14$neg_in = stages$13$neg;
+        stages$15$valid_in = stages$14$valid;
+        stages$15$p_in = stages$14$p;
+        stages$15$x_in = stages$14$x;
+        stages$15$d_in = stages$14$d;
+        stages$15$neg_in = stages$14$neg;
+        stages$16$valid_in = stages$15$valid;
+        stages$16$p_in = stages$15$p;
+        stages$16$x_in = stages$15$x;
+        stages$16$d_in = stages$15$d;
+        stages$16$neg_in = stages$15$neg;
+        stages$17$valid_in = stages$16$valid;
+        stages$17$p_in = stages$16$p;
+        stages$17$x_in = stages$16$x;
+        stages$17$d_in = stages$16$d;
+        stages$17$neg_in = stages$16$neg;
+        stages$18$valid_in = stages$17$valid;
+        stages$18$p_in = stages$17$p;
+        stages$18$x_in = stages$17$x;
+        stages$18$d_in = stages$17$d;
+        stages$18$neg_in = stages$17$neg;
+        stages$19$valid_in = stages$18$valid;
+        stages$19$p_in = stages$18$p;
+        stages$19$x_in = stages$18$x;
+        stages$19$d_in = stages$18$d;
+        stages$19$neg_in = stages$18$neg;
+        stages$20$valid_in = stages$19$valid;
+        stages$20$p_in = stages$19$p;
+        stages$20$x_in = stages$19$x;
+        stages$20$d_in = stages$19$d;
+        stages$20$neg_in = stages$19$neg;
+        stages$21$valid_in = stages$20$valid;
+        stages$21$p_in = stages$20$p;
+        stages$21$x_in = stages$20$x;
+        stages$21$d_in = stages$20$d;
+        stages$21$neg_in = stages$20$neg;
+        stages$22$valid_in = stages$21$valid;
+        stages$22$p_in = stages$21$p;
+        stages$22$x_in = stages$21$x;
+        stages$22$d_in = stages$21$d;
+        stages$22$neg_in = stages$21$neg;
+        stages$23$valid_in = stages$22$valid;
+        stages$23$p_in = stages$22$p;
+        stages$23$x_in = stages$22$x;
+        stages$23$d_in = stages$22$d;
+        stages$23$neg_in = stages$22$neg;
+        stages$24$valid_in = stages$23$valid;
+        stages$24$p_in = stages$23$p;
+        stages$24$x_in = stages$23$x;
+        stages$24$d_in = stages$23$d;
+        stages$24$neg_in = stages$23$neg;
+    end
+    
+endmodule // vector$div_a
+
+
+module vector$div_a$stages$0(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$0$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$0$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$0$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$0$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$0$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$0
+
+
+module vector$div_a$stages$0$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$0$d_r
+
+
+module vector$div_a$stages$0$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$0$neg_r
+
+
+module vector$div_a$stages$0$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$0$p_r
+
+
+module vector$div_a$stages$0$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$0$valid_r
+
+
+module vector$div_a$stages$0$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$0$x_r
+
+
+module vector$div_a$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$1$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$1$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$1$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$1$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$1$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$1
+
+
+module vector$div_a$stages$1$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$1$d_r
+
+
+module vector$div_a$stages$1$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$1$neg_r
+
+
+module vector$div_a$stages$1$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$1$p_r
+
+
+module vector$div_a$stages$1$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$1$valid_r
+
+
+module vector$div_a$stages$1$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$1$x_r
+
+
+module vector$div_a$stages$10(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$10$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$10$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$10$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$10$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$10$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$10
+
+
+module vector$div_a$stages$10$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$10$d_r
+
+
+module vector$div_a$stages$10$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$10$neg_r
+
+
+module vector$div_a$stages$10$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$10$p_r
+
+
+module vector$div_a$stages$10$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$10$valid_r
+
+
+module vector$div_a$stages$10$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$10$x_r
+
+
+module vector$div_a$stages$11(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$11$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$11$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$11$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$11$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$11$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$11
+
+
+module vector$div_a$stages$11$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$11$d_r
+
+
+module vector$div_a$stages$11$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$11$neg_r
+
+
+module vector$div_a$stages$11$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$11$p_r
+
+
+module vector$div_a$stages$11$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$11$valid_r
+
+
+module vector$div_a$stages$11$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$11$x_r
+
+
+module vector$div_a$stages$12(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$12$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$12$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$12$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$12$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$12$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$12
+
+
+module vector$div_a$stages$12$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$12$d_r
+
+
+module vector$div_a$stages$12$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$12$neg_r
+
+
+module vector$div_a$stages$12$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$12$p_r
+
+
+module vector$div_a$stages$12$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$12$valid_r
+
+
+module vector$div_a$stages$12$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$12$x_r
+
+
+module vector$div_a$stages$13(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$13$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$13$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$13$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$13$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$13$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$13
+
+
+module vector$div_a$stages$13$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$13$d_r
+
+
+module vector$div_a$stages$13$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$13$neg_r
+
+
+module vector$div_a$stages$13$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$13$p_r
+
+
+module vector$div_a$stages$13$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$13$valid_r
+
+
+module vector$div_a$stages$13$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$13$x_r
+
+
+module vector$div_a$stages$14(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$14$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$14$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$14$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$14$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$14$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$14
+
+
+module vector$div_a$stages$14$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$14$d_r
+
+
+module vector$div_a$stages$14$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$14$neg_r
+
+
+module vector$div_a$stages$14$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$14$p_r
+
+
+module vector$div_a$stages$14$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$14$valid_r
+
+
+module vector$div_a$stages$14$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$14$x_r
+
+
+module vector$div_a$stages$15(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$15$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$15$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$15$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$15$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$15$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$15
+
+
+module vector$div_a$stages$15$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$15$d_r
+
+
+module vector$div_a$stages$15$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$15$neg_r
+
+
+module vector$div_a$stages$15$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$15$p_r
+
+
+module vector$div_a$stages$15$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$15$valid_r
+
+
+module vector$div_a$stages$15$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$15$x_r
+
+
+module vector$div_a$stages$16(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$16$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$16$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$16$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$16$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$16$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$16
+
+
+module vector$div_a$stages$16$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$16$d_r
+
+
+module vector$div_a$stages$16$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$16$neg_r
+
+
+module vector$div_a$stages$16$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$16$p_r
+
+
+module vector$div_a$stages$16$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$16$valid_r
+
+
+module vector$div_a$stages$16$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$16$x_r
+
+
+module vector$div_a$stages$17(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$17$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$17$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$17$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$17$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$17$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$17
+
+
+module vector$div_a$stages$17$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$17$d_r
+
+
+module vector$div_a$stages$17$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$17$neg_r
+
+
+module vector$div_a$stages$17$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$17$p_r
+
+
+module vector$div_a$stages$17$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$17$valid_r
+
+
+module vector$div_a$stages$17$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$17$x_r
+
+
+module vector$div_a$stages$18(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$18$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$18$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$18$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$18$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$18$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$18
+
+
+module vector$div_a$stages$18$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$18$d_r
+
+
+module vector$div_a$stages$18$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$18$neg_r
+
+
+module vector$div_a$stages$18$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$18$p_r
+
+
+module vector$div_a$stages$18$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$18$valid_r
+
+
+module vector$div_a$stages$18$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$18$x_r
+
+
+module vector$div_a$stages$19(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$19$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$19$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$19$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$19$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$19$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$19
+
+
+module vector$div_a$stages$19$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$19$d_r
+
+
+module vector$div_a$stages$19$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$19$neg_r
+
+
+module vector$div_a$stages$19$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$19$p_r
+
+
+module vector$div_a$stages$19$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$19$valid_r
+
+
+module vector$div_a$stages$19$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$19$x_r
+
+
+module vector$div_a$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$2$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$2$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$2$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$2$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$2$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$2
+
+
+module vector$div_a$stages$2$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$2$d_r
+
+
+module vector$div_a$stages$2$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$2$neg_r
+
+
+module vector$div_a$stages$2$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$2$p_r
+
+
+module vector$div_a$stages$2$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$2$valid_r
+
+
+module vector$div_a$stages$2$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$2$x_r
+
+
+module vector$div_a$stages$20(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$20$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$20$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$20$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$20$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$20$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$20
+
+
+module vector$div_a$stages$20$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$20$d_r
+
+
+module vector$div_a$stages$20$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$20$neg_r
+
+
+module vector$div_a$stages$20$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$20$p_r
+
+
+module vector$div_a$stages$20$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$20$valid_r
+
+
+module vector$div_a$stages$20$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$20$x_r
+
+
+module vector$div_a$stages$21(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$21$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$21$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$21$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$21$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$21$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$21
+
+
+module vector$div_a$stages$21$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$21$d_r
+
+
+module vector$div_a$stages$21$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$21$neg_r
+
+
+module vector$div_a$stages$21$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$21$p_r
+
+
+module vector$div_a$stages$21$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$21$valid_r
+
+
+module vector$div_a$stages$21$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$21$x_r
+
+
+module vector$div_a$stages$22(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$22$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$22$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$22$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$22$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$22$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$22
+
+
+module vector$div_a$stages$22$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$22$d_r
+
+
+module vector$div_a$stages$22$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$22$neg_r
+
+
+module vector$div_a$stages$22$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$22$p_r
+
+
+module vector$div_a$stages$22$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$22$valid_r
+
+
+module vector$div_a$stages$22$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$22$x_r
+
+
+module vector$div_a$stages$23(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$23$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$23$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$23$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$23$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$23$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$23
+
+
+module vector$div_a$stages$23$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$23$d_r
+
+
+module vector$div_a$stages$23$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$23$neg_r
+
+
+module vector$div_a$stages$23$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$23$p_r
+
+
+module vector$div_a$stages$23$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$23$valid_r
+
+
+module vector$div_a$stages$23$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$23$x_r
+
+
+module vector$div_a$stages$24(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b1;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$24$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$24$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$24$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$24$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$24$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$24
+
+
+module vector$div_a$stages$24$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$24$d_r
+
+
+module vector$div_a$stages$24$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$24$neg_r
+
+
+module vector$div_a$stages$24$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$24$p_r
+
+
+module vector$div_a$stages$24$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$24$valid_r
+
+
+module vector$div_a$stages$24$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$24$x_r
+
+
+module vector$div_a$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$3$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$3$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$3$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$3$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$3$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$3
+
+
+module vector$div_a$stages$3$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$3$d_r
+
+
+module vector$div_a$stages$3$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$3$neg_r
+
+
+module vector$div_a$stages$3$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$3$p_r
+
+
+module vector$div_a$stages$3$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$3$valid_r
+
+
+module vector$div_a$stages$3$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$3$x_r
+
+
+module vector$div_a$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$4$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$4$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$4$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$4$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$4$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$4
+
+
+module vector$div_a$stages$4$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$4$d_r
+
+
+module vector$div_a$stages$4$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$4$neg_r
+
+
+module vector$div_a$stages$4$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$4$p_r
+
+
+module vector$div_a$stages$4$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$4$valid_r
+
+
+module vector$div_a$stages$4$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$4$x_r
+
+
+module vector$div_a$stages$5(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$5$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$5$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$5$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$5$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$5$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$5
+
+
+module vector$div_a$stages$5$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$5$d_r
+
+
+module vector$div_a$stages$5$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$5$neg_r
+
+
+module vector$div_a$stages$5$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$5$p_r
+
+
+module vector$div_a$stages$5$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$5$valid_r
+
+
+module vector$div_a$stages$5$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$5$x_r
+
+
+module vector$div_a$stages$6(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$6$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$6$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$6$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$6$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$6$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$6
+
+
+module vector$div_a$stages$6$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$6$d_r
+
+
+module vector$div_a$stages$6$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$6$neg_r
+
+
+module vector$div_a$stages$6$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$6$p_r
+
+
+module vector$div_a$stages$6$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$6$valid_r
+
+
+module vector$div_a$stages$6$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$6$x_r
+
+
+module vector$div_a$stages$7(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$7$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$7$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$7$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$7$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$7$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$7
+
+
+module vector$div_a$stages$7$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$7$d_r
+
+
+module vector$div_a$stages$7$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$7$neg_r
+
+
+module vector$div_a$stages$7$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$7$p_r
+
+
+module vector$div_a$stages$7$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$7$valid_r
+
+
+module vector$div_a$stages$7$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$7$x_r
+
+
+module vector$div_a$stages$8(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$8$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$8$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$8$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$8$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$8$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$8
+
+
+module vector$div_a$stages$8$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$8$d_r
+
+
+module vector$div_a$stages$8$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$8$neg_r
+
+
+module vector$div_a$stages$8$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$8$p_r
+
+
+module vector$div_a$stages$8$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$8$valid_r
+
+
+module vector$div_a$stages$8$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$8$x_r
+
+
+module vector$div_a$stages$9(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$div_a$stages$9$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$div_a$stages$9$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$div_a$stages$9$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$div_a$stages$9$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$div_a$stages$9$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$div_a$stages$9
+
+
+module vector$div_a$stages$9$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$9$d_r
+
+
+module vector$div_a$stages$9$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$9$neg_r
+
+
+module vector$div_a$stages$9$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$9$p_r
+
+
+module vector$div_a$stages$9$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$9$valid_r
+
+
+module vector$div_a$stages$9$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_a$stages$9$x_r
+
+
 module vector$div_d(d,q,clock);
     
     // Module arguments
@@ -10227,6 +17192,25 @@ module vector$div_d(d,q,clock);
     end
           
 endmodule // vector$div_d
+
+
+module vector$div_da(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$div_da
 
 
 module vector$dtag_dl(clock,en,d,q);
@@ -12866,6 +19850,711 @@ module vector$ez$2(x,y);
     end
     
 endmodule // vector$ez$2
+
+
+module vector$ez0(x,y);
+    
+    // Module arguments
+    input wire  [17:0] x;
+    output reg  [18:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h11;
+    localparam  ext = 19'b1000000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 19'h7ffff);
+        if (x[msb]) begin
+            y = ((x) & 19'h7ffff) | ext;
+        end
+    end
+    
+endmodule // vector$ez0
+
+
+module vector$hold$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$hold$0
+
+
+module vector$hold$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$hold$1
+
+
+module vector$k_c0$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_c0$0
+
+
+module vector$k_c0$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_c0$1
+
+
+module vector$k_c0$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_c0$2
+
+
+module vector$k_c0$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_c0$3
+
+
+module vector$k_c0$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_c0$4
+
+
+module vector$k_c0$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_c0$5
+
+
+module vector$k_d1c$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d1c$0
+
+
+module vector$k_d1c$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d1c$1
+
+
+module vector$k_d1c$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d1c$2
+
+
+module vector$k_d1c$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d1c$3
+
+
+module vector$k_d1c$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d1c$4
+
+
+module vector$k_d1c$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d1c$5
+
+
+module vector$k_d1z$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d1z$0
+
+
+module vector$k_d1z$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d1z$1
+
+
+module vector$k_d2c$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d2c$0
+
+
+module vector$k_d2c$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d2c$1
+
+
+module vector$k_d2c$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d2c$2
+
+
+module vector$k_d2c$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d2c$3
+
+
+module vector$k_d2c$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d2c$4
+
+
+module vector$k_d2c$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d2c$5
+
+
+module vector$k_d2z$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d2z$0
+
+
+module vector$k_d2z$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_d2z$1
+
+
+module vector$k_exp$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_exp$0
+
+
+module vector$k_exp$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_exp$1
+
+
+module vector$k_iw$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_iw$0
+
+
+module vector$k_iw$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_iw$1
+
+
+module vector$k_iw$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_iw$2
+
+
+module vector$k_iw$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_iw$3
+
+
+module vector$k_iw$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_iw$4
+
+
+module vector$k_iw$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_iw$5
+
+
+module vector$k_mant$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_mant$0
+
+
+module vector$k_mant$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_mant$1
+
+
+module vector$k_z0$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_z0$0
+
+
+module vector$k_z0$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$k_z0$1
 
 
 module vector$lead_a(x,pos);
@@ -15857,6 +23546,25 @@ module vector$persp(on);
 endmodule // vector$persp
 
 
+module vector$ph(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$ph
+
+
 module vector$q6$0(d,q,clock);
     
     // Module arguments
@@ -17224,6 +24932,25 @@ module vector$rs_z0(x,by,y);
     end
     
 endmodule // vector$rs_z0
+
+
+module vector$sbusy(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sbusy
 
 
 module vector$sc(d,q,clock);
@@ -19126,6 +26853,139 @@ module vector$w_neg$2(x,neg);
 endmodule // vector$w_neg$2
 
 
+module vector$wdx$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$wdx$0
+
+
+module vector$wdx$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$wdx$1
+
+
+module vector$wdx$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$wdx$2
+
+
+module vector$wdy$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$wdy$0
+
+
+module vector$wdy$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$wdy$1
+
+
+module vector$wdy$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$wdy$2
+
+
+module vector$wp(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$wp
+
+
 module vector$wrow$0(d,q,clock);
     
     // Module arguments
@@ -19181,6 +27041,63 @@ module vector$wrow$2(d,q,clock);
     end
           
 endmodule // vector$wrow$2
+
+
+module vector$wx0(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$wx0
+
+
+module vector$wx1(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$wx1
+
+
+module vector$wy1(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$wy1
 
 
 module vector$z6(d,q,clock);

@@ -1,12 +1,13 @@
 //! The barycentric unit (paper 004): rust-hdl and Verilator in lockstep, every output
 //! compared on every cycle, against `model::vector` at one lane: each pixel in walk order,
 //! and, back to back, the cycle each triangle is taken and each pixel leaves
-//! (`model::vector::LATENCY` + its walk index after the take).
+//! (`model::cycles::VectorUnit`: setup overlapping the walk before).
 
 use model::ctx::Ctx;
 use model::cull_sort::{cull_sort, Clip, Cull, Sorted};
+use model::cycles::VectorUnit;
 use model::span::Pixel;
-use model::vector::{vector, VectorOut, LATENCY};
+use model::vector::{pixel_latency, vector, VectorOut};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rtl::vector::Vector;
@@ -51,7 +52,7 @@ fn run(dual: &mut Dual<Vector>, jobs: &[Job], flow: Flow, seed: u64) -> Vec<(u64
         jobs.iter().enumerate().flat_map(|(j, job)| job.out.pixels.iter().map(move |p| (j, *p))).collect();
     let mut times: Vec<(u64, Vec<u64>)> = Vec::new();
     let (mut next, mut presenting, mut ready, mut got, mut idle) = (0, false, true, 0, false);
-    let work: u64 = jobs.iter().map(|j| j.out.cycles as u64).sum();
+    let work: u64 = jobs.iter().map(|j| j.out.walk_cycles as u64 + 100).sum();
     let limit = 4 * work + 1000;
     let fail = |m: testbenches::Mismatch| panic!("{m}\nseed {seed}");
     while got < expected.len() || next < jobs.len() || !idle {
@@ -83,15 +84,22 @@ fn run(dual: &mut Dual<Vector>, jobs: &[Job], flow: Flow, seed: u64) -> Vec<(u64
     times
 }
 
-/// Back to back, each triangle is taken `cycles` after the one before, and its pixel i
-/// leaves `LATENCY + walk[i]` cycles after its take: the model's cycle count, exactly.
+/// Back to back (each triangle offered from the cycle after the one before was taken), the
+/// cycle each is taken and each of its pixels leaves (`pixel_latency` after its walk
+/// cycle) are `model::cycles::VectorUnit`'s, exactly.
 fn check_timing(jobs: &[Job], times: &[(u64, Vec<u64>)]) {
     assert_eq!(times.len(), jobs.len());
+    let l = model::divider::LATENCY;
+    let mut unit = VectorUnit::new(l);
+    let mut offered = 0;
     for (j, (job, (taken, left))) in jobs.iter().zip(times).enumerate() {
-        if let Some((next, _)) = times.get(j + 1) {
-            assert_eq!(next - taken, job.out.cycles as u64, "triangle {j}: taken {taken}, the next at {next}");
-        }
-        let want: Vec<u64> = job.out.walk.iter().map(|&i| taken + (LATENCY + i) as u64).collect();
+        let t = unit.triangle(offered, job.out.walk_cycles);
+        assert_eq!(*taken, t.taken, "triangle {j}: the cycle it was taken");
+        offered = t.taken + 1;
+        let want: Vec<u64> = match t.start {
+            Some(start) => job.out.walk.iter().map(|&i| start + (i + pixel_latency(l)) as u64).collect(),
+            None => Vec::new(),
+        };
         assert_eq!(*left, want, "triangle {j}: the cycles its pixels left");
     }
 }
@@ -124,9 +132,9 @@ fn vector_extremes_vs_model() {
     check_timing(&jobs, &t);
 }
 
-/// 004's per-pixel unit draws a pixel a cycle: a triangle covering the whole screen takes
-/// its box's pixels plus `LATENCY` cycles, and its pixels leave one a cycle; its colours
-/// are perspective-correct (eq. 5-6), its depth screen-linear.
+/// 004's per-pixel unit draws a pixel a cycle: a triangle covering the whole screen walks
+/// its box in as many cycles, and its pixels leave one a cycle; its colours are
+/// perspective-correct (eq. 5-6), its depth screen-linear.
 #[test]
 fn vector_one_pixel_per_cycle_paper_004() {
     let (w, h) = (CLIP.width as i128 * 16, CLIP.height as i128 * 16);
@@ -141,7 +149,7 @@ fn vector_one_pixel_per_cycle_paper_004() {
     let flat = vector(&jobs[0].sorted, CLIP, 1, false, &mut Ctx::new(FORMATS));
     let moved = jobs[0].out.pixels.iter().zip(&flat.pixels).filter(|(p, q)| p.rgb != q.rgb && p.z == q.z).count();
     assert!(moved > 1000, "perspective moves the colours, not the depth: {moved} pixels");
-    assert_eq!(jobs[0].out.cycles, LATENCY + CLIP.width * CLIP.height);
+    assert_eq!(jobs[0].out.walk_cycles, CLIP.width * CLIP.height);
     let t = run(&mut dual(true), &jobs, Flow::BACK_TO_BACK, seed());
     check_timing(&jobs, &t);
     assert!(t[0].1.windows(2).all(|p| p[1] == p[0] + 1), "a pixel every cycle");

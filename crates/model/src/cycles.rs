@@ -23,13 +23,13 @@
 //! * `pixel_out`: one pixel per cycle, latency 2;
 //! * without `cull_sort` ([`Timing::cull_sort`]) the host sends only the triangles that
 //!   pass, straight to setup; without `pixel_out` the fragments leave `span` at once;
-//! * `vector` (`rtl::vector`): fed by `cull_sort`, takes a triangle when it is empty, its
-//!   cycles per triangle and the cycle of its last pixel those of `vector::vector` (at
-//!   the default divider); triangles do not overlap in it.
+//! * `vector` (`rtl::vector`): fed by `cull_sort`; [`VectorUnit`] (setup overlapping the
+//!   walk before, two sets of constants), with the walks of `vector::vector` at the
+//!   default divider.
 
 use crate::render::Work;
 use crate::triangle_setup::schedule::Schedule;
-use crate::{cull_sort, edge_walk, pixel_out, span};
+use crate::{cull_sort, edge_walk, pixel_out, span, vector};
 
 /// Hardware parameters the cycle model depends on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -229,14 +229,88 @@ impl CullSortStages {
     }
 }
 
+/// The vector unit's timing (`rtl::vector`, `model::vector`): triangles go through its
+/// setup one at a time, and each non-empty one then through its walk, overlapping the next
+/// one's setup; a walk uses one of two sets of the triangle's constants.
+#[derive(Clone, Debug)]
+pub struct VectorUnit {
+    setup: u64,
+    pixel: u64,
+    held: u64,
+    /// The first cycle setup may take a triangle; the walk's last cycle (a handover may
+    /// come in it); per set, the first cycle it may be loaded; the set the next walk uses.
+    setup_free: u64,
+    walk_last: Option<u64>,
+    set_free: [u64; 2],
+    set: usize,
+    /// The first cycle the unit is empty, after what it has been given.
+    idle: u64,
+}
+
+/// When the vector unit handled one triangle ([`VectorUnit::triangle`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct VectorTimes {
+    /// The cycle it was taken.
+    pub taken: u64,
+    /// The cycle its walk's first pixel is in the walk's registers (its pixel `k` leaves
+    /// `vector::pixel_latency` cycles after `start + k`); `None` for an empty box.
+    pub start: Option<u64>,
+}
+
+impl VectorUnit {
+    /// An empty unit with a `divider_latency`-stage divider.
+    pub fn new(divider_latency: u32) -> VectorUnit {
+        VectorUnit {
+            setup: vector::setup(divider_latency) as u64,
+            pixel: vector::pixel_latency(divider_latency) as u64,
+            held: vector::constants_read(divider_latency) as u64,
+            setup_free: 0,
+            walk_last: None,
+            set_free: [0; 2],
+            set: 0,
+            idle: 0,
+        }
+    }
+
+    /// A triangle offered from cycle `offered` whose box takes `walk` cycles (0: empty): taken
+    /// when setup is free; set up in `vector::setup` cycles, the last of which (or a later
+    /// one) hands it to the walk when the walk before is in its last cycle or done and its
+    /// set of constants is read no more; setup is free from the cycle after.
+    pub fn triangle(&mut self, offered: u64, walk: u32) -> VectorTimes {
+        let taken = offered.max(self.setup_free);
+        let ready = taken + self.setup - 1;
+        if walk == 0 {
+            self.setup_free = ready + 1;
+            self.idle = self.idle.max(self.setup_free);
+            return VectorTimes { taken, start: None };
+        }
+        let handed = ready.max(self.walk_last.unwrap_or(0)).max(self.set_free[self.set]);
+        let last = handed + walk as u64;
+        self.setup_free = handed + 1;
+        self.walk_last = Some(last);
+        self.set_free[self.set] = last + self.held;
+        self.set ^= 1;
+        self.idle = self.idle.max(last + self.pixel + 1);
+        VectorTimes { taken, start: Some(handed + 1) }
+    }
+
+    /// The first cycle the unit is empty after the triangles given.
+    pub fn idle(&self) -> u64 {
+        self.idle
+    }
+}
+
 /// Cycles of a frame through the vector pipeline (`cull_sort` -> `vector` -> `pixel_out`,
-/// `rtl::raster_top` with `METHOD = 1`): the vector unit takes a passing triangle from
-/// `cull_sort`'s output register when it is empty (`Work::vector_cycles` after the one
-/// before), and sends its last pixel `Work::vector_last_sent` cycles after the take; the
-/// frame is done when the unit is empty and `pixel_out` has written that pixel.
+/// `rtl::raster_top` with `METHOD = 1`): the vector unit ([`VectorUnit`], the default
+/// divider) takes a passing triangle from `cull_sort`'s output register when its setup is
+/// free, and sends its pixel `k` of the walk `vector::pixel_latency` cycles after the walk
+/// cycle `k`; the frame is done when the unit is empty and `pixel_out` has written the last
+/// pixel.
 pub fn vector_frame(work: &[Work], t: &Timing) -> FrameCycles {
     let mut cull = CullSortStages::new(t.cull_sort);
-    let (mut free, mut last) = (0u64, 0u64);
+    let mut unit = VectorUnit::new(crate::divider::LATENCY);
+    let pixel = vector::pixel_latency(crate::divider::LATENCY) as u64;
+    let mut last = 0u64;
     let mut out = FrameCycles::default();
     for w in work.iter().filter(|w| t.cull_sort || w.passed_cull) {
         let culled = cull.arrive();
@@ -246,16 +320,14 @@ pub fn vector_frame(work: &[Work], t: &Timing) -> FrameCycles {
             continue;
         }
         out.triangles += 1;
-        let take = culled.max(free);
-        cull.leave(take);
-        free = take + w.vector_cycles as u64;
-        out.span_busy += w.vector_cycles as u64;
-        last = last.max(free);
-        if let Some(k) = w.vector_last_sent {
-            last = last.max(take + k as u64 + write_latency(t));
+        let times = unit.triangle(culled, w.vector_walk);
+        cull.leave(times.taken);
+        out.span_busy += w.vector_walk as u64;
+        if let (Some(start), Some(k)) = (times.start, w.vector_last_sent) {
+            last = last.max(start + k as u64 + pixel + write_latency(t));
         }
     }
-    out.total = last;
+    out.total = last.max(unit.idle());
     out
 }
 
@@ -289,7 +361,7 @@ mod tests {
     fn cycles_setup_overlaps_triangles_and_waits_as_one() {
         assert_eq!(setup_timing(&l5()), SetupTiming { latency: 28, interval: 10 });
         let walk =
-            |n: usize| Work { passed_cull: true, scanlines: vec![None; n], vector_cycles: 0, vector_last_sent: None };
+            |n: usize| Work { passed_cull: true, scanlines: vec![None; n], vector_walk: 0, vector_last_sent: None };
         // First: culled out at 3 (cull_sort's three stages), taken, done at 31, walked
         // 33..83. Second: culled out at 4, taken at 3 + 10 = 13 (the grid), done at 41,
         // waits for the walk until 83, walked 85..86. Third: culled out at 14 (it waited in
@@ -334,7 +406,7 @@ mod tests {
         let w = Work {
             passed_cull: true,
             scanlines: vec![full(5), full(5), full(5)],
-            vector_cycles: 0,
+            vector_walk: 0,
             vector_last_sent: None,
         };
         let c = scanline_frame(std::slice::from_ref(&w), &l5());
@@ -378,7 +450,7 @@ mod tests {
         let w = Work {
             passed_cull: true,
             scanlines: vec![full(5), full(5), full(5)],
-            vector_cycles: 0,
+            vector_walk: 0,
             vector_last_sent: None,
         };
         let mut frame = vec![Work::default(), w.clone()];
@@ -393,25 +465,35 @@ mod tests {
         assert_eq!(scanline_frame(&frame, &neither).total, 47);
     }
 
-    /// The vector unit takes a triangle as `cull_sort` lets it go (3 cycles after it is
-    /// offered) or when it is empty, whichever is later; `cull_sort` holds the next one
-    /// in its output register meanwhile, and the frame ends when the unit is empty and
-    /// `pixel_out` has written the last pixel (2 cycles after it took it).
+    /// The vector unit sets the next triangle up while it walks one, and starts the next
+    /// walk in the cycle after this one's last, or when the set of constants it uses is free
+    /// (two walks before); the frame ends when the last pixel is written or the unit is empty.
     #[test]
-    fn cycles_vector_frame_adds_triangles_in_turn() {
-        let w = |c, last| Work { passed_cull: true, vector_cycles: c, vector_last_sent: last, ..Work::default() };
+    fn cycles_vector_frame_overlaps_setup_and_walk() {
+        let l = crate::divider::LATENCY;
+        let (setup, pixel, held) =
+            (vector::setup(l) as u64, vector::pixel_latency(l) as u64, vector::constants_read(l) as u64);
+        let w = |walk, last| Work { passed_cull: true, vector_walk: walk, vector_last_sent: last, ..Work::default() };
         let t = Timing::default();
         let cull = cull_sort::LATENCY as u64;
-        // Taken in cycle 3, empty again in 103; its last pixel leaves in 3 + 99 and is
-        // written by 102 + 3: done in 105.
-        assert_eq!(vector_frame(&[w(100, Some(99))], &t).total, cull + 99 + 3);
-        // Its last pixel earlier: done when the unit is empty.
-        assert_eq!(vector_frame(&[w(100, Some(50))], &t).total, cull + 100);
-        // A culled triangle between: the third is taken when the first has gone (103),
-        // not held by the culled one; it ends at 103 + 10.
-        assert_eq!(vector_frame(&[w(100, None), Work::default(), w(10, Some(9))], &t).total, cull + 100 + 9 + 3);
-        // Without pixel_out the last pixel ends the frame as it leaves.
-        let frag = Timing { pixel_out: false, ..t };
-        assert_eq!(vector_frame(&[w(100, Some(99))], &frag).total, cull + 100);
+        // Taken in cycle 3 (cull_sort's latency), handed over at 3 + setup - 1, its walk
+        // from the cycle after for 100 cycles; its last pixel leaves pixel_latency later and
+        // is written 3 cycles on.
+        let first = cull + setup;
+        assert_eq!(vector_frame(&[w(100, Some(99))], &t).total, first + 99 + pixel + 3);
+        // Its last pixel earlier: done when the unit is empty (the walk's end + pixel + 1).
+        assert_eq!(vector_frame(&[w(100, Some(50))], &t).total, first + 99 + pixel + 1);
+        // A second triangle is set up during the first's walk and walks right after it.
+        let two = vector_frame(&[w(100, Some(99)), w(10, Some(9))], &t).total;
+        assert_eq!(two, first + 100 + 9 + pixel + 3);
+        // Short walks: the third waits for the first's constants to be read no more.
+        let mut u = VectorUnit::new(l);
+        let s: Vec<u64> = (0..3).map(|_| u.triangle(0, 1).start.unwrap()).collect();
+        assert_eq!(s[1] - s[0], setup, "the second: its own setup, taken as the first was handed over");
+        assert_eq!(s[2], (s[0] + held).max(s[1] + setup), "the third: the first's set");
+        // An empty box hands over as soon as it is set up and walks nothing.
+        let mut u = VectorUnit::new(l);
+        assert_eq!(u.triangle(5, 0), VectorTimes { taken: 5, start: None });
+        assert_eq!(u.idle(), 5 + setup);
     }
 }

@@ -26,7 +26,7 @@ use crate::input::{to_fixed, InputError, Vtx};
 use crate::pixel_out::Framebuffer;
 use crate::span::{span, Pixel};
 use crate::triangle_setup::triangle_setup;
-use crate::vector::{vector, LATENCY};
+use crate::vector::vector;
 use fx::Formats;
 use scene::{Triangle, Trilist};
 
@@ -58,10 +58,9 @@ pub struct Work {
     /// Per scanline the edge walk stepped through, the span command it emitted, if
     /// any (scanline method).
     pub scanlines: Vec<Option<SpanWork>>,
-    /// Cycles the vector unit took (vector method): from the cycle it took the triangle to
-    /// the one it can take the next.
-    pub vector_cycles: u32,
-    /// The cycle, after the take, of the vector unit's last pixel sent to `pixel_out`, if any.
+    /// Cycles of the vector unit's walk of its box (vector method; 0 for an empty box).
+    pub vector_walk: u32,
+    /// The walk cycle of the vector unit's last pixel sent to `pixel_out`, if any.
     pub vector_last_sent: Option<u32>,
 }
 
@@ -106,8 +105,8 @@ pub fn trace(v: &[Vtx; 3], clip: Clip, opts: &Options, ctx: &mut Ctx) -> Result<
         }
         Method::Vector { lanes, perspective } => {
             let o = vector(&sorted, clip, lanes, perspective, ctx);
-            t.work.vector_cycles = o.cycles;
-            t.work.vector_last_sent = o.walk.last().map(|&i| LATENCY + i / lanes);
+            t.work.vector_walk = o.walk_cycles;
+            t.work.vector_last_sent = o.walk.last().map(|&i| i / lanes);
             t.z_clipped = o.z_clipped;
             t.pixels = o.pixels;
         }

@@ -15,12 +15,12 @@
 //!   Eq. (6) solves the same system for a and b directly; the two agree exactly
 //!   in real arithmetic.
 //!
-//! Cycle model (`rtl::vector`'s, at `lanes` = 1): the unit takes a triangle when it is empty
-//! (triangles do not overlap in it); [`setup`] cycles later the walk of the clipped bounding
-//! box begins, `lanes` pixels of a row per cycle, rows one after another (pixel `walk[i]`
-//! of the walk in cycle `setup + walk[i] / lanes`); each pixel leaves [`pixel_latency`]
-//! cycles after its walk cycle, and the unit takes the next triangle in the cycle after
-//! the last walk cycle's pixel left: [`LATENCY`] + the walk's cycles after the take.
+//! Cycle model (`rtl::vector`'s, at `lanes` = 1; a frame's: `cycles::vector_frame`): the
+//! unit sets a triangle up in [`setup`] cycles while it walks the one before; the walk of
+//! the clipped bounding box, `lanes` pixels of a row per cycle, rows one after another
+//! ([`VectorOut::walk_cycles`]; pixel `walk[i]` in the walk's cycle `walk[i] / lanes`), begins
+//! when the walk before has ended and the constants of the triangle two before are read no
+//! more ([`constants_read`]); each pixel leaves [`pixel_latency`] cycles after its walk cycle.
 
 use crate::ctx::{Ctx, Q};
 use crate::cull_sort::{z_max, Clip, Sorted};
@@ -48,9 +48,12 @@ pub const fn pixel_latency(divider_latency: u32) -> u32 {
     16 + divider_latency
 }
 
-/// The cycles a triangle costs besides its walk, with the default divider: [`setup`] +
-/// [`pixel_latency`].
-pub const LATENCY: u32 = setup(crate::divider::LATENCY) + pixel_latency(crate::divider::LATENCY);
+/// Cycles after a pixel's walk cycle in which its triangle's constants are still read (the
+/// colours' c0 at t+14+L): a triangle's constants are one of two sets, and the walk two
+/// triangles on may load that set only after its last pixel got this far.
+pub const fn constants_read(divider_latency: u32) -> u32 {
+    pixel_latency(divider_latency) - 2
+}
 
 /// Edge function of a -> b at p (exact, subpixel units squared).
 fn edge(a: &Vtx, b: &Vtx, px: i128, py: i128) -> i128 {
@@ -76,14 +79,15 @@ fn ratio(num: i128, den: i128, ctx: &mut Ctx) -> i128 {
     }
 }
 
-/// What one triangle produced, and the cycles it took.
+/// What one triangle produced, and its walk.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct VectorOut {
     pub pixels: Vec<Pixel>,
     /// Each pixel's index in the walk of the clipped bounding box (row by row from its
     /// top left): `walk[i]` for `pixels[i]`.
     pub walk: Vec<u32>,
-    pub cycles: u32,
+    /// Cycles of the walk of its box: rows x ceil(columns / lanes); 0 for an empty box.
+    pub walk_cycles: u32,
     pub z_clipped: u32,
 }
 
@@ -109,11 +113,11 @@ pub fn vector(t: &Sorted, clip: Clip, lanes: u32, perspective: bool, ctx: &mut C
     let y0 = lo(v.iter().map(|p| p.y).min().unwrap());
     let x1 = ((v.iter().map(|p| p.x).max().unwrap() - px / 2) >> s).min(clip.width as i128 - 1);
     let y1 = ((v.iter().map(|p| p.y).max().unwrap() - px / 2) >> s).min(clip.height as i128 - 1);
-    let mut out = VectorOut { pixels: Vec::new(), walk: Vec::new(), cycles: LATENCY, z_clipped: 0 };
+    let mut out = VectorOut { pixels: Vec::new(), walk: Vec::new(), walk_cycles: 0, z_clipped: 0 };
     if x0 > x1 || y0 > y1 {
         return out;
     }
-    out.cycles += ((y1 - y0 + 1) as u32) * ((x1 - x0 + 1) as u32).div_ceil(lanes);
+    out.walk_cycles = ((y1 - y0 + 1) as u32) * ((x1 - x0 + 1) as u32).div_ceil(lanes);
 
     let d_attr = |k: usize| (v[k].z - v[0].z, [0, 1, 2].map(|i| v[k].c[i] - v[0].c[i]));
     let (d1, d2) = (d_attr(1), d_attr(2));

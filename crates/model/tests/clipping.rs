@@ -148,5 +148,5 @@ fn clipping_vector_method_needs_no_walk_direction() {
     };
     let t = &crossing_cases()[6].1;
     let tr = triangle(t, Clip { width: W, height: H }, &f, &opts).0.unwrap();
-    assert_eq!(tr.work.vector_cycles, W * H + model::vector::LATENCY);
+    assert_eq!(tr.work.vector_walk, W * H);
 }

@@ -1,10 +1,12 @@
 //! `vector`: per-pixel barycentric rasterization of paper 004 (Lee et al. 2009, eq. 1-6),
 //! one pixel per clock, bit-exact and cycle-exact to `model::vector::vector` at `lanes` = 1.
 //!
-//! It takes one sorted triangle (the link `inp`, `links::SortedSink`, the vertices' `inv_w`
-//! included) when it is empty, walks the triangle's bounding box of pixel centres (clipped
-//! to the screen) row by row, and sends each pixel inside whose depth lies in [0, z_max]
-//! on the link `out` (`links::PixelSource`, as `span` does to `pixel_out`).
+//! It takes a sorted triangle (the link `inp`, `links::SortedSink`, the vertices' `inv_w`
+//! included) when its setup is free, walks the triangle's bounding box of pixel centres
+//! (clipped to the screen) row by row, and sends each pixel inside whose depth lies in
+//! [0, z_max] on the link `out` (`links::PixelSource`, as `span` does to `pixel_out`).
+//! Setup works on the next triangle while the walk and the pixel pipeline work on this
+//! one.
 //!
 //! **Setup** (cycle 0 takes the triangle; `model::vector::setup` cycles, 33 with the
 //! default 25-stage divider):
@@ -18,10 +20,13 @@
 //!  cycle 4      its sign: v1 and v2 swapped for a negative area (clockwise on screen); |area|
 //!  cycle 5      edge deltas of the (swapped) edges v1->v2, v2->v0, v0->v1; attribute
 //!               differences v1 - v0, v2 - v0; |area|'s leading one (exp)
-//!  cycle 6      1/area's divisor (`model::divider::recip_operands`) into a register; the
-//!               divider takes it in cycle 7 and returns it L later
+//!  cycle 6      1/area's divisor (`model::divider::recip_operands`) into a register; its
+//!               divider (setup's own) takes it in cycle 7 and returns it L later
 //!  cycles 6-8   each edge function at the box's first pixel centre: two products
-//!  cycle 7+L    1/area's mantissa; the walk starts the cycle after (or at cycle 12, L < 4)
+//!  cycle 7+L    1/area's mantissa; handed to the walk this cycle (or at cycle 11, L < 4)
+//!               or later: when the walk before is in its last pixel or done, and the set
+//!               of constants the triangle goes into is free (below); its walk starts the
+//!               cycle after, and setup may take the next triangle
 //! ```
 //!
 //! **Walk.** A pixel a cycle; the edge functions step exactly by -2^s dy along a row and
@@ -37,7 +42,7 @@
 //!            q_k = l_k iw_k, l = (1 - a - b, a, b) (eq. 5)                              (3)
 //!  t+6       depth rounded and tested against [0, z_max]; sum = q0 + q1 + q2
 //!  t+7       the sum's leading one
-//!  t+8       1/sum's divisor into a register; t+9 into the divider (1/area's), back at t+9+L
+//!  t+8       1/sum's divisor into a register; t+9 into the pixels' divider, back at t+9+L
 //!  t+9+L..   a' = q1/sum, b' = q2/sum (eq. 6): q x 1/sum's mantissa, shifted             (2)
 //!  t+12+L..  colours c0 + (c1 - c0) a' + (c2 - c0) b' (eq. 4; a, b without
 //!            perspective correction), rounded and clamped                                (6)
@@ -48,10 +53,13 @@
 //! ([`Rescale`]): a and b wrap to `bary`, the depth accumulator to `z_acc`, the colours to
 //! `c_acc`; depth and colour round as `span` rounds them (`span::DepthOf`, `span::ColorOf`).
 //!
-//! Triangles do not overlap in the unit: it takes the next one in the cycle after the last
-//! walked pixel left the pipeline (`model::vector::LATENCY` + the walk's cycles after the
-//! take). While a pixel waits on `out` the whole unit waits (`run` low: every register
-//! holds, the multipliers' and the divider's too).
+//! **Triangles in flight.** The pipeline's stages read their triangle's constants (1/area's
+//! mantissa and exponent at t+0 and t+2; z's and eq. 5's at t+3 and t+5; the colours' at
+//! t+12+L and t+14+L) from one of two sets, the pixel's set found in a shift register of
+//! the walk's (`ph`): the walk after next may load a set only when the last pixel using it
+//! has passed t+14+L (`model::vector::constants_read`). `model::cycles::VectorUnit` is this
+//! timing. While a pixel waits on `out` the whole unit waits (`run` low: every register
+//! holds, the multipliers' and the dividers' too).
 //!
 //! **Parameters.** `N`, the size class (widths from `crate::widths`); `L`, the divider's
 //! stages; `PERSPECTIVE` (1: colours by eq. 5-6; 0: by a and b, and the synthesis removes
@@ -278,7 +286,10 @@ pub struct Vector {
     pub idle: Signal<Out, Bit>,
 
     persp: Switch,
+    /// The pixels' divider (1/sum, a division every cycle) and 1/area's, for the triangle
+    /// in setup while the one before walks.
     div: DividerRtl,
+    div_a: DividerRtl,
     /// Setup's two multipliers: the area, then each edge function at the first pixel.
     mul_s: [PipelinedMul<D1, D1, EFN>; 2],
     mul_a: PipelinedMul<EFN, MANT1, PAB>,
@@ -292,16 +303,37 @@ pub struct Vector {
     mul_c2: [PipelinedMul<C1, BARY, PC>; 3],
 
     // Control.
-    /// A triangle is in the unit; the unit runs (no pixel waits on `out`).
-    busy: DFF<Bit>,
+    /// A triangle is in setup (taken, not yet handed to the walk); the unit runs (no pixel
+    /// waits on `out`).
+    sbusy: DFF<Bit>,
     run: Signal<Local, Bit>,
     take: Signal<Local, Bit>,
-    /// Setup's cycle (1 to the walk's start; 0 otherwise) and the drain's count down.
+    /// Setup's cycle (1 up to `at_walk`, where it waits for the handover; 0: none) and, from
+    /// the walk's last cycle, the cycles until its last pixel has left.
     sc: DFF<Bits<8>>,
     dc: DFF<Bits<8>>,
     at_mant: Constant<Bits<8>>,
     at_walk: Constant<Bits<8>>,
     drain: Constant<Bits<8>>,
+    /// The walk is in its last pixel or done; the set the next walk loads is free; the
+    /// triangle in setup goes to the walk (or, with an empty box, away) this cycle.
+    at_last: Signal<Local, Bit>,
+    walk_ok: Signal<Local, Bit>,
+    set_ok: Signal<Local, Bit>,
+    hand: Signal<Local, Bit>,
+    /// Per set of constants, the cycles they are still read (`model::vector::constants_read`
+    /// from the walk's last cycle, less one).
+    hold: [DFF<Bits<8>>; 2],
+    held_m1: Constant<Bits<8>>,
+    /// The walking triangle's set, and the sets of the pixels behind the walk: bit j that
+    /// of the pixel at t+j+1. Taps: the stages that read a constant.
+    wp: DFF<Bit>,
+    ph: DFF<Bits<64>>,
+    tap_exp: Constant<Bits<8>>,
+    tap_z: Constant<Bits<8>>,
+    tap_z0: Constant<Bits<8>>,
+    tap_c: Constant<Bits<8>>,
+    tap_c0: Constant<Bits<8>>,
 
     // The triangle: vertices (swapped for a negative area in cycle 4).
     vx: [DFF<Bits<XY>>; 3],
@@ -363,7 +395,11 @@ pub struct Vector {
     norm_a: Normalise<AREA, { max(AREA, DIV_D) + 1 }>,
     norm_s: Normalise<SUMW, { max(SUMW, max(DIV_D, TOP + 1)) }>,
     recip_n: Constant<Bits<DIV_N>>,
-    /// The divider's divisor, registered: 1/area's in cycle 6, else the pixel's 1/sum's.
+    /// 1/area's mantissa: from its divider in cycle 7 + L (the handover may come in it),
+    /// from `mant` after.
+    mant_c: Signal<Local, Bits<MANT>>,
+    /// The dividers' divisors, registered: 1/area's in cycle 6, each pixel's 1/sum's.
+    div_da: DFF<Bits<DIV_D>>,
     div_d: DFF<Bits<DIV_D>>,
     mant: DFF<Bits<MANT>>,
 
@@ -387,12 +423,36 @@ pub struct Vector {
     d1c: [DFF<Bits<C1>>; 3],
     d2c: [DFF<Bits<C1>>; 3],
 
-    // The walk.
+    // The walk: its pixel, its box and edges (setup's, handed over).
     tv: DFF<Bit>,
     tx: DFF<Bits<SCREEN>>,
     ty: DFF<Bits<SCREEN>>,
-    x_end: Signal<Local, Bits<SCREEN>>,
-    y_end: Signal<Local, Bits<SCREEN>>,
+    wx0: DFF<Bits<SCREEN>>,
+    wx1: DFF<Bits<SCREEN>>,
+    wy1: DFF<Bits<SCREEN>>,
+    wdx: [DFF<Bits<D1>>; 3],
+    wdy: [DFF<Bits<D1>>; 3],
+    /// Two sets of a triangle's constants for the pixels (set s at index s, or 3s + k for
+    /// vertex or channel k), and those of the pixel at each stage that reads one.
+    k_mant: [DFF<Bits<MANT>>; 2],
+    k_exp: [DFF<Bits<8>>; 2],
+    k_d1z: [DFF<Bits<Z1>>; 2],
+    k_d2z: [DFF<Bits<Z1>>; 2],
+    k_z0: [DFF<Bits<Z>>; 2],
+    k_iw: [DFF<Bits<INV_W>>; 6],
+    k_d1c: [DFF<Bits<C1>>; 6],
+    k_d2c: [DFF<Bits<C1>>; 6],
+    k_c0: [DFF<Bits<COLOR>>; 6],
+    c_mant: Signal<Local, Bits<MANT>>,
+    c_exp: Signal<Local, Bits<8>>,
+    c_d1z: Signal<Local, Bits<Z1>>,
+    c_d2z: Signal<Local, Bits<Z1>>,
+    c_z0: Signal<Local, Bits<Z>>,
+    ez0: SignExtend<Z, Z1>,
+    c_iw: [Signal<Local, Bits<INV_W>>; 3],
+    c_d1c: [Signal<Local, Bits<C1>>; 3],
+    c_d2c: [Signal<Local, Bits<C1>>; 3],
+    c_c0: [Signal<Local, Bits<COLOR>>; 3],
     tag: Signal<Local, Bits<TAG>>,
     tag_dl: DelayLine<TAG>,
     tag_out: Signal<Local, Bits<TAG>>,
@@ -464,6 +524,7 @@ impl Vector {
             idle: Default::default(),
             persp: Switch::new(perspective),
             div: DividerRtl::new(l),
+            div_a: DividerRtl::new(l),
             mul_s: defaults(),
             mul_a: Default::default(),
             mul_b: Default::default(),
@@ -474,7 +535,7 @@ impl Vector {
             mul_rb: Default::default(),
             mul_c1: defaults(),
             mul_c2: defaults(),
-            busy: Default::default(),
+            sbusy: Default::default(),
             run: Default::default(),
             take: Default::default(),
             sc: Default::default(),
@@ -482,6 +543,19 @@ impl Vector {
             at_mant: Constant::new((7 + l).to_bits()),
             at_walk: Constant::new((setup - 1).to_bits()),
             drain: Constant::new(pixel.to_bits()),
+            at_last: Default::default(),
+            walk_ok: Default::default(),
+            set_ok: Default::default(),
+            hand: Default::default(),
+            hold: defaults(),
+            held_m1: Constant::new((model::vector::constants_read(l as u32) as usize - 1).to_bits()),
+            wp: Default::default(),
+            ph: Default::default(),
+            tap_exp: Constant::new(1usize.to_bits()),
+            tap_z: Constant::new(2usize.to_bits()),
+            tap_z0: Constant::new(4usize.to_bits()),
+            tap_c: Constant::new((11 + l).to_bits()),
+            tap_c0: Constant::new((13 + l).to_bits()),
             vx: defaults(),
             vy: defaults(),
             vz: defaults(),
@@ -534,6 +608,8 @@ impl Vector {
             norm_a: Default::default(),
             norm_s: Default::default(),
             recip_n: Constant::new((1u128 << (TOP as u32 + FORMATS.ooa.frac)).to_bits()),
+            mant_c: Default::default(),
+            div_da: Default::default(),
             div_d: Default::default(),
             mant: Default::default(),
             dx: defaults(),
@@ -555,8 +631,30 @@ impl Vector {
             tv: Default::default(),
             tx: Default::default(),
             ty: Default::default(),
-            x_end: Default::default(),
-            y_end: Default::default(),
+            wx0: Default::default(),
+            wx1: Default::default(),
+            wy1: Default::default(),
+            wdx: defaults(),
+            wdy: defaults(),
+            k_mant: defaults(),
+            k_exp: defaults(),
+            k_d1z: defaults(),
+            k_d2z: defaults(),
+            k_z0: defaults(),
+            k_iw: defaults(),
+            k_d1c: defaults(),
+            k_d2c: defaults(),
+            k_c0: defaults(),
+            c_mant: Default::default(),
+            c_exp: Default::default(),
+            c_d1z: Default::default(),
+            c_d2z: Default::default(),
+            c_z0: Default::default(),
+            ez0: Default::default(),
+            c_iw: defaults(),
+            c_d1c: defaults(),
+            c_d2c: defaults(),
+            c_c0: defaults(),
             tag: Default::default(),
             tag_dl: DelayLine::new(pixel - 1),
             tag_out: Default::default(),
@@ -620,11 +718,12 @@ impl Logic for Vector {
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written, and is written only while the
         // unit runs.
-        dff_setup!(self, clock, busy, sc, dc, bx0, bx1, by0, by1, bneg, empty, area, area_abs, exp_a, div_d, mant);
+        dff_setup!(self, clock, sbusy, sc, dc, bx0, bx1, by0, by1, bneg, empty, area, area_abs, exp_a, div_da, div_d, mant);
+        dff_setup!(self, clock, wp, ph, wx0, wx1, wy1);
         dff_setup!(self, clock, d1z, d2z, tv, tx, ty, a3, b3, z6, sum7, sum8, exp8, ca11, cb11);
         dff_setup!(self, clock, min_xr, max_xr, min_yr, max_yr);
         dff_setup!(self, clock, o_valid, o_x, o_y, o_z);
-        clock!(self, clock, div, mul_a, mul_b, mul_z1, mul_z2, mul_ra, mul_rb, tag_dl, dtag_dl, q_dl, exp_dl, ab_dl);
+        clock!(self, clock, div, div_a, mul_a, mul_b, mul_z1, mul_z2, mul_ra, mul_rb, tag_dl, dtag_dl, q_dl, exp_dl, ab_dl);
         for k in 0..3 {
             self.vx[k].clock.next = self.clock.val();
             self.vx[k].d.next = self.vx[k].q.val();
@@ -657,6 +756,20 @@ impl Logic for Vector {
             self.mul_l[k].clock.next = self.clock.val();
             self.mul_c1[k].clock.next = self.clock.val();
             self.mul_c2[k].clock.next = self.clock.val();
+            self.wdx[k].clock.next = self.clock.val();
+            self.wdx[k].d.next = self.wdx[k].q.val();
+            self.wdy[k].clock.next = self.clock.val();
+            self.wdy[k].d.next = self.wdy[k].q.val();
+        }
+        for k in 0..6 {
+            self.k_iw[k].clock.next = self.clock.val();
+            self.k_iw[k].d.next = self.k_iw[k].q.val();
+            self.k_d1c[k].clock.next = self.clock.val();
+            self.k_d1c[k].d.next = self.k_d1c[k].q.val();
+            self.k_d2c[k].clock.next = self.clock.val();
+            self.k_d2c[k].d.next = self.k_d2c[k].q.val();
+            self.k_c0[k].clock.next = self.clock.val();
+            self.k_c0[k].d.next = self.k_c0[k].q.val();
         }
         for k in 0..9 {
             self.vc[k].clock.next = self.clock.val();
@@ -664,17 +777,51 @@ impl Logic for Vector {
         }
         for k in 0..2 {
             self.mul_s[k].clock.next = self.clock.val();
+            self.hold[k].clock.next = self.clock.val();
+            self.hold[k].d.next = self.hold[k].q.val();
+            self.k_mant[k].clock.next = self.clock.val();
+            self.k_mant[k].d.next = self.k_mant[k].q.val();
+            self.k_exp[k].clock.next = self.clock.val();
+            self.k_exp[k].d.next = self.k_exp[k].q.val();
+            self.k_d1z[k].clock.next = self.clock.val();
+            self.k_d1z[k].d.next = self.k_d1z[k].q.val();
+            self.k_d2z[k].clock.next = self.clock.val();
+            self.k_d2z[k].d.next = self.k_d2z[k].q.val();
+            self.k_z0[k].clock.next = self.clock.val();
+            self.k_z0[k].d.next = self.k_z0[k].q.val();
         }
 
-        // ---- Control: the unit runs unless a pixel waits on `out`.
+        // ---- Control: the unit runs unless a pixel waits on `out`. Setup takes a triangle
+        // when it holds none and the unit runs, and hands it to the walk in its last cycle
+        // (`at_walk`) or later: when the walk is in its last pixel or done and the set of
+        // constants the walk loads (the other than the walking triangle's) is read no more;
+        // an empty box at once.
         self.run.next = !(self.o_valid.q.val() & !self.out.ready.val());
-        self.take.next = self.inp.valid.val() & !self.busy.q.val();
-        self.inp.ready.next = !self.busy.q.val();
-        self.idle.next = !self.busy.q.val();
+        self.inp.ready.next = !self.sbusy.q.val() & self.run.val();
+        self.take.next = self.inp.valid.val() & self.inp.ready.val();
+        self.idle.next = !self.sbusy.q.val() & !self.tv.q.val() & (self.dc.q.val() == 0);
+        self.at_last.next = (self.tx.q.val() == self.wx1.q.val()) & (self.ty.q.val() == self.wy1.q.val());
+        self.walk_ok.next = !self.tv.q.val() | self.at_last.val();
+        self.set_ok.next = self.hold[1].q.val() == 0;
+        if self.wp.q.val() {
+            self.set_ok.next = self.hold[0].q.val() == 0;
+        }
+        self.hand.next = self.sbusy.q.val()
+            & (self.sc.q.val() == self.at_walk.val())
+            & (self.empty.q.val() | (self.walk_ok.val() & self.set_ok.val()));
         self.div.hold.next = !self.run.val();
         self.div.out_ready.next = true;
         self.div.inp_valid.next = true;
         self.div.inp_n.next = self.recip_n.val();
+        self.div_a.hold.next = !self.run.val();
+        self.div_a.out_ready.next = true;
+        self.div_a.inp_valid.next = true;
+        self.div_a.inp_n.next = self.recip_n.val();
+        self.div_a.inp_d.next = self.div_da.q.val();
+        self.mant_c.next = self.mant.q.val();
+        if self.sc.q.val() == self.at_mant.val() {
+            self.mant_c.next = self.div_a.out_q.val().get_bits::<MANT>(0);
+        }
         self.mul_a.en.next = self.run.val();
         self.mul_b.en.next = self.run.val();
         self.mul_z1.en.next = self.run.val();
@@ -702,13 +849,13 @@ impl Logic for Vector {
             self.ez[k].x.next = self.vz[k].q.val();
             self.ux[k].next = self.vx[k].q.val() ^ self.half_xy.val();
             self.uy[k].next = self.vy[k].q.val() ^ self.half_xy.val();
-            self.dx_neg[k].x.next = self.dx[k].q.val();
-            self.dy_neg[k].x.next = self.dy[k].q.val();
+            self.dx_neg[k].x.next = self.wdx[k].q.val();
+            self.dy_neg[k].x.next = self.wdy[k].q.val();
             // Top edges run in +x, left edges in -y (clockwise on screen, y down).
             self.owns[k].next = self.dy_neg[k].neg.val()
-                | ((self.dy[k].q.val() == 0) & !self.dx_neg[k].neg.val() & (self.dx[k].q.val() != 0));
-            self.edx[k].x.next = self.dx[k].q.val();
-            self.edy[k].x.next = self.dy[k].q.val();
+                | ((self.wdy[k].q.val() == 0) & !self.dx_neg[k].neg.val() & (self.wdx[k].q.val() != 0));
+            self.edx[k].x.next = self.wdx[k].q.val();
+            self.edy[k].x.next = self.wdy[k].q.val();
         }
         // The bounding box of the vertices, in unsigned order, then of pixel centres.
         self.min_x.next = self.ux[0].val();
@@ -780,7 +927,7 @@ impl Logic for Vector {
             self.mul_s[1].a.next = self.dy[2].q.val();
             self.mul_s[1].b.next = self.cx0.val() - self.ex[0].y.val();
         }
-        // The divider: 1/area's divisor registered in cycle 6, else the pixel's 1/sum's at t+8.
+        // The dividers: 1/area's divisor registered in cycle 6 (above), the pixel's 1/sum's at t+8.
         self.norm_s.x.next = self.sum8.q.val();
         self.norm_s.exp.next = self.exp8.q.val();
         self.div.inp_d.next = self.div_d.q.val();
@@ -802,37 +949,74 @@ impl Logic for Vector {
         }
         self.tag_dl.d.next = self.tag.val();
         self.tag_out.next = self.tag_dl.q.val();
-        self.x_end.next = bit_cast::<SCREEN, PIXEL>(self.bx1.q.val());
-        self.y_end.next = bit_cast::<SCREEN, PIXEL>(self.by1.q.val());
+
+        // ---- Each stage's constants: of the set of the pixel there.
+        self.c_mant.next = self.k_mant[0].q.val();
+        if self.wp.q.val() {
+            self.c_mant.next = self.k_mant[1].q.val();
+        }
+        self.c_exp.next = self.k_exp[0].q.val();
+        if self.ph.q.val().get_bit(self.tap_exp.val().index()) {
+            self.c_exp.next = self.k_exp[1].q.val();
+        }
+        self.c_d1z.next = self.k_d1z[0].q.val();
+        self.c_d2z.next = self.k_d2z[0].q.val();
+        for k in 0..3 {
+            self.c_iw[k].next = self.k_iw[k].q.val();
+        }
+        if self.ph.q.val().get_bit(self.tap_z.val().index()) {
+            self.c_d1z.next = self.k_d1z[1].q.val();
+            self.c_d2z.next = self.k_d2z[1].q.val();
+            for k in 0..3 {
+                self.c_iw[k].next = self.k_iw[3 + k].q.val();
+            }
+        }
+        self.c_z0.next = self.k_z0[0].q.val();
+        if self.ph.q.val().get_bit(self.tap_z0.val().index()) {
+            self.c_z0.next = self.k_z0[1].q.val();
+        }
+        for k in 0..3 {
+            self.c_d1c[k].next = self.k_d1c[k].q.val();
+            self.c_d2c[k].next = self.k_d2c[k].q.val();
+            if self.ph.q.val().get_bit(self.tap_c.val().index()) {
+                self.c_d1c[k].next = self.k_d1c[3 + k].q.val();
+                self.c_d2c[k].next = self.k_d2c[3 + k].q.val();
+            }
+            self.c_c0[k].next = self.k_c0[k].q.val();
+            if self.ph.q.val().get_bit(self.tap_c0.val().index()) {
+                self.c_c0[k].next = self.k_c0[3 + k].q.val();
+            }
+        }
 
         // ---- The pixel pipeline. t+0: a, b's products.
         self.mul_a.a.next = self.w[1].q.val();
-        self.mul_a.b.next = bit_cast::<MANT1, MANT>(self.mant.q.val());
+        self.mul_a.b.next = bit_cast::<MANT1, MANT>(self.c_mant.val());
         self.mul_b.a.next = self.w[2].q.val();
-        self.mul_b.b.next = bit_cast::<MANT1, MANT>(self.mant.q.val());
+        self.mul_b.b.next = bit_cast::<MANT1, MANT>(self.c_mant.val());
         // t+2: shifted by the area's exponent.
         self.rs_a.x.next = self.mul_a.p.val();
-        self.rs_a.by.next = self.exp_a.q.val();
+        self.rs_a.by.next = self.c_exp.val();
         self.rs_b.x.next = self.mul_b.p.val();
-        self.rs_b.by.next = self.exp_a.q.val();
+        self.rs_b.by.next = self.c_exp.val();
         // t+3: depth's and eq. 5's products.
-        self.mul_z1.a.next = self.d1z.q.val();
+        self.mul_z1.a.next = self.c_d1z.val();
         self.mul_z1.b.next = self.a3.q.val();
-        self.mul_z2.a.next = self.d2z.q.val();
+        self.mul_z2.a.next = self.c_d2z.val();
         self.mul_z2.b.next = self.b3.q.val();
         self.mul_l[0].a.next = self.one.val() - self.a3.q.val() - self.b3.q.val();
-        self.mul_l[0].b.next = bit_cast::<IW1, INV_W>(self.viw[0].q.val());
+        self.mul_l[0].b.next = bit_cast::<IW1, INV_W>(self.c_iw[0].val());
         self.mul_l[1].a.next = self.a3.q.val();
-        self.mul_l[1].b.next = bit_cast::<IW1, INV_W>(self.viw[1].q.val());
+        self.mul_l[1].b.next = bit_cast::<IW1, INV_W>(self.c_iw[1].val());
         self.mul_l[2].a.next = self.b3.q.val();
-        self.mul_l[2].b.next = bit_cast::<IW1, INV_W>(self.viw[2].q.val());
+        self.mul_l[2].b.next = bit_cast::<IW1, INV_W>(self.c_iw[2].val());
         self.ab_pair.next = (bit_cast::<{ 2 * BARY }, BARY>(self.a3.q.val()) << self.half_pair.val())
             | bit_cast::<{ 2 * BARY }, BARY>(self.b3.q.val());
         self.ab_dl.d.next = self.ab_pair.val();
         // t+5: the depth accumulator; the weights q.
         self.rs_z.x.next = self.mul_z1.p.val() + self.mul_z2.p.val();
         self.rs_z.by.next = 0.into();
-        self.rs_z0.x.next = self.ez[0].y.val();
+        self.ez0.x.next = self.c_z0.val();
+        self.rs_z0.x.next = self.ez0.y.val();
         self.rs_z0.by.next = 0.into();
         for k in 0..3 {
             self.rs_q[k].x.next = self.mul_l[k].p.val();
@@ -873,16 +1057,12 @@ impl Logic for Vector {
             self.ca.next = self.ca11.q.val();
             self.cb.next = self.cb11.q.val();
         }
-        self.mul_c1[0].a.next = self.d1c[0].q.val();
-        self.mul_c2[0].a.next = self.d2c[0].q.val();
-        self.mul_c1[1].a.next = self.d1c[1].q.val();
-        self.mul_c2[1].a.next = self.d2c[1].q.val();
-        self.mul_c1[2].a.next = self.d1c[2].q.val();
-        self.mul_c2[2].a.next = self.d2c[2].q.val();
-        self.rs_c0[0].x.next = bit_cast::<C1, COLOR>(self.vc[0].q.val());
-        self.rs_c0[1].x.next = bit_cast::<C1, COLOR>(self.vc[1].q.val());
-        self.rs_c0[2].x.next = bit_cast::<C1, COLOR>(self.vc[2].q.val());
+        self.rs_c0[0].x.next = bit_cast::<C1, COLOR>(self.c_c0[0].val());
+        self.rs_c0[1].x.next = bit_cast::<C1, COLOR>(self.c_c0[1].val());
+        self.rs_c0[2].x.next = bit_cast::<C1, COLOR>(self.c_c0[2].val());
         for k in 0..3 {
+            self.mul_c1[k].a.next = self.c_d1c[k].val();
+            self.mul_c2[k].a.next = self.c_d2c[k].val();
             self.mul_c1[k].b.next = self.ca.val();
             self.mul_c2[k].b.next = self.cb.val();
             // t+14+L: each colour accumulator; t+15+L: rounded and clamped.
@@ -895,17 +1075,23 @@ impl Logic for Vector {
         // ---- Registers, while the unit runs.
         if self.run.val() {
             // Setup's counter, the drain's, and the end of the unit's work on a triangle.
-            if self.sc.q.val() != 0 {
+            if (self.sc.q.val() != 0) & (self.sc.q.val() != self.at_walk.val()) {
                 self.sc.d.next = self.sc.q.val() + 1;
             }
             if self.dc.q.val() != 0 {
                 self.dc.d.next = self.dc.q.val() - 1;
-                if self.dc.q.val() == 1 {
-                    self.busy.d.next = false;
+            }
+            for k in 0..2 {
+                if self.hold[k].q.val() != 0 {
+                    self.hold[k].d.next = self.hold[k].q.val() - 1;
                 }
             }
+            self.ph.d.next = self.ph.q.val() << self.x_shift.val();
+            if self.wp.q.val() {
+                self.ph.d.next = (self.ph.q.val() << self.x_shift.val()) | 1u64;
+            }
             if self.take.val() {
-                self.busy.d.next = true;
+                self.sbusy.d.next = true;
                 self.sc.d.next = 1.into();
                 self.vx[0].d.next = self.inp.v0_x.val();
                 self.vx[1].d.next = self.inp.v1_x.val();
@@ -1007,40 +1193,76 @@ impl Logic for Vector {
             }
             // Cycle 7 + L: 1/area's mantissa.
             if self.sc.q.val() == self.at_mant.val() {
-                self.mant.d.next = self.div.out_q.val().get_bits::<MANT>(0);
+                self.mant.d.next = self.mant_c.val();
             }
-            // The walk: its first pixel after setup, then a pixel a cycle, row by row.
-            if self.sc.q.val() == self.at_walk.val() {
-                self.sc.d.next = 0.into();
-                self.tx.d.next = bit_cast::<SCREEN, PIXEL>(self.bx0.q.val());
-                self.ty.d.next = bit_cast::<SCREEN, PIXEL>(self.by0.q.val());
-                for k in 0..3 {
-                    self.w[k].d.next = self.w0[k].q.val();
-                    self.wrow[k].d.next = self.w0[k].q.val();
-                }
-                if self.empty.q.val() {
-                    self.dc.d.next = self.drain.val();
-                } else {
-                    self.tv.d.next = true;
-                }
-            }
+            // The walk: a pixel a cycle, row by row; in its last, the set its triangle's
+            // constants are in is held for the pixels behind.
             if self.tv.q.val() {
-                if self.tx.q.val() == self.x_end.val() {
-                    if self.ty.q.val() == self.y_end.val() {
-                        self.tv.d.next = false;
-                        self.dc.d.next = self.drain.val();
+                if self.at_last.val() {
+                    self.tv.d.next = false;
+                    self.dc.d.next = self.drain.val();
+                    if self.wp.q.val() {
+                        self.hold[1].d.next = self.held_m1.val();
                     } else {
-                        self.tx.d.next = bit_cast::<SCREEN, PIXEL>(self.bx0.q.val());
-                        self.ty.d.next = self.ty.q.val() + 1;
-                        for k in 0..3 {
-                            self.wrow[k].d.next = self.wrow[k].q.val() + (self.edx[k].y.val() << self.frac.val());
-                            self.w[k].d.next = self.wrow[k].q.val() + (self.edx[k].y.val() << self.frac.val());
-                        }
+                        self.hold[0].d.next = self.held_m1.val();
+                    }
+                } else if self.tx.q.val() == self.wx1.q.val() {
+                    self.tx.d.next = self.wx0.q.val();
+                    self.ty.d.next = self.ty.q.val() + 1;
+                    for k in 0..3 {
+                        self.wrow[k].d.next = self.wrow[k].q.val() + (self.edx[k].y.val() << self.frac.val());
+                        self.w[k].d.next = self.wrow[k].q.val() + (self.edx[k].y.val() << self.frac.val());
                     }
                 } else {
                     self.tx.d.next = self.tx.q.val() + 1;
                     for k in 0..3 {
                         self.w[k].d.next = self.w[k].q.val() - (self.edy[k].y.val() << self.frac.val());
+                    }
+                }
+            }
+            // The handover: setup is free from the next cycle; a non-empty box's walk starts
+            // with its first pixel, its constants in the other set.
+            if self.hand.val() {
+                self.sbusy.d.next = false;
+                self.sc.d.next = 0.into();
+                if !self.empty.q.val() {
+                    self.tv.d.next = true;
+                    self.wp.d.next = !self.wp.q.val();
+                    self.tx.d.next = bit_cast::<SCREEN, PIXEL>(self.bx0.q.val());
+                    self.ty.d.next = bit_cast::<SCREEN, PIXEL>(self.by0.q.val());
+                    self.wx0.d.next = bit_cast::<SCREEN, PIXEL>(self.bx0.q.val());
+                    self.wx1.d.next = bit_cast::<SCREEN, PIXEL>(self.bx1.q.val());
+                    self.wy1.d.next = bit_cast::<SCREEN, PIXEL>(self.by1.q.val());
+                    for k in 0..3 {
+                        self.w[k].d.next = self.w0[k].q.val();
+                        self.wrow[k].d.next = self.w0[k].q.val();
+                        self.wdx[k].d.next = self.dx[k].q.val();
+                        self.wdy[k].d.next = self.dy[k].q.val();
+                    }
+                    if self.wp.q.val() {
+                        self.k_mant[0].d.next = self.mant_c.val();
+                        self.k_exp[0].d.next = self.exp_a.q.val();
+                        self.k_d1z[0].d.next = self.d1z.q.val();
+                        self.k_d2z[0].d.next = self.d2z.q.val();
+                        self.k_z0[0].d.next = self.vz[0].q.val();
+                        for k in 0..3 {
+                            self.k_iw[k].d.next = self.viw[k].q.val();
+                            self.k_d1c[k].d.next = self.d1c[k].q.val();
+                            self.k_d2c[k].d.next = self.d2c[k].q.val();
+                            self.k_c0[k].d.next = self.vc[k].q.val();
+                        }
+                    } else {
+                        self.k_mant[1].d.next = self.mant_c.val();
+                        self.k_exp[1].d.next = self.exp_a.q.val();
+                        self.k_d1z[1].d.next = self.d1z.q.val();
+                        self.k_d2z[1].d.next = self.d2z.q.val();
+                        self.k_z0[1].d.next = self.vz[0].q.val();
+                        for k in 0..3 {
+                            self.k_iw[3 + k].d.next = self.viw[k].q.val();
+                            self.k_d1c[3 + k].d.next = self.d1c[k].q.val();
+                            self.k_d2c[3 + k].d.next = self.d2c[k].q.val();
+                            self.k_c0[3 + k].d.next = self.vc[k].q.val();
+                        }
                     }
                 }
             }
@@ -1061,7 +1283,7 @@ impl Logic for Vector {
             }
             self.div_d.d.next = self.norm_s.d.val();
             if self.sc.q.val() == 6 {
-                self.div_d.d.next = self.norm_a.d.val();
+                self.div_da.d.next = self.norm_a.d.val();
             }
             self.sum7.d.next = self.sum_c.val();
             self.sum8.d.next = self.sum7.q.val();
@@ -1100,3 +1322,4 @@ pub fn emit_vector(params: &Params) -> Result<Emitted, String> {
     };
     Ok(emit_unit("vector", Vector::new(params["L"] as usize, perspective)?, params))
 }
+
