@@ -41,8 +41,8 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     output reg  idle;
     
     // Constant declarations
-    localparam  at_mant = 8'h20;
-    localparam  at_walk = 8'h20;
+    localparam  at_mant = 8'h14;
+    localparam  at_walk = 8'h14;
     localparam  drain = 8'h29;
     localparam  held_m1 = 8'h26;
     localparam  tap_exp = 8'h1;
@@ -11028,150 +11028,6 @@ module vector$div_a(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_rea
     wire  [24:0] stages$12$x;
     wire  [33:0] stages$12$d;
     wire  stages$12$neg;
-    reg  stages$13$clock;
-    reg  stages$13$enable;
-    reg  stages$13$valid_in;
-    reg  [33:0] stages$13$p_in;
-    reg  [24:0] stages$13$x_in;
-    reg  [33:0] stages$13$d_in;
-    reg  stages$13$neg_in;
-    wire  stages$13$valid;
-    wire  [33:0] stages$13$p;
-    wire  [24:0] stages$13$x;
-    wire  [33:0] stages$13$d;
-    wire  stages$13$neg;
-    reg  stages$14$clock;
-    reg  stages$14$enable;
-    reg  stages$14$valid_in;
-    reg  [33:0] stages$14$p_in;
-    reg  [24:0] stages$14$x_in;
-    reg  [33:0] stages$14$d_in;
-    reg  stages$14$neg_in;
-    wire  stages$14$valid;
-    wire  [33:0] stages$14$p;
-    wire  [24:0] stages$14$x;
-    wire  [33:0] stages$14$d;
-    wire  stages$14$neg;
-    reg  stages$15$clock;
-    reg  stages$15$enable;
-    reg  stages$15$valid_in;
-    reg  [33:0] stages$15$p_in;
-    reg  [24:0] stages$15$x_in;
-    reg  [33:0] stages$15$d_in;
-    reg  stages$15$neg_in;
-    wire  stages$15$valid;
-    wire  [33:0] stages$15$p;
-    wire  [24:0] stages$15$x;
-    wire  [33:0] stages$15$d;
-    wire  stages$15$neg;
-    reg  stages$16$clock;
-    reg  stages$16$enable;
-    reg  stages$16$valid_in;
-    reg  [33:0] stages$16$p_in;
-    reg  [24:0] stages$16$x_in;
-    reg  [33:0] stages$16$d_in;
-    reg  stages$16$neg_in;
-    wire  stages$16$valid;
-    wire  [33:0] stages$16$p;
-    wire  [24:0] stages$16$x;
-    wire  [33:0] stages$16$d;
-    wire  stages$16$neg;
-    reg  stages$17$clock;
-    reg  stages$17$enable;
-    reg  stages$17$valid_in;
-    reg  [33:0] stages$17$p_in;
-    reg  [24:0] stages$17$x_in;
-    reg  [33:0] stages$17$d_in;
-    reg  stages$17$neg_in;
-    wire  stages$17$valid;
-    wire  [33:0] stages$17$p;
-    wire  [24:0] stages$17$x;
-    wire  [33:0] stages$17$d;
-    wire  stages$17$neg;
-    reg  stages$18$clock;
-    reg  stages$18$enable;
-    reg  stages$18$valid_in;
-    reg  [33:0] stages$18$p_in;
-    reg  [24:0] stages$18$x_in;
-    reg  [33:0] stages$18$d_in;
-    reg  stages$18$neg_in;
-    wire  stages$18$valid;
-    wire  [33:0] stages$18$p;
-    wire  [24:0] stages$18$x;
-    wire  [33:0] stages$18$d;
-    wire  stages$18$neg;
-    reg  stages$19$clock;
-    reg  stages$19$enable;
-    reg  stages$19$valid_in;
-    reg  [33:0] stages$19$p_in;
-    reg  [24:0] stages$19$x_in;
-    reg  [33:0] stages$19$d_in;
-    reg  stages$19$neg_in;
-    wire  stages$19$valid;
-    wire  [33:0] stages$19$p;
-    wire  [24:0] stages$19$x;
-    wire  [33:0] stages$19$d;
-    wire  stages$19$neg;
-    reg  stages$20$clock;
-    reg  stages$20$enable;
-    reg  stages$20$valid_in;
-    reg  [33:0] stages$20$p_in;
-    reg  [24:0] stages$20$x_in;
-    reg  [33:0] stages$20$d_in;
-    reg  stages$20$neg_in;
-    wire  stages$20$valid;
-    wire  [33:0] stages$20$p;
-    wire  [24:0] stages$20$x;
-    wire  [33:0] stages$20$d;
-    wire  stages$20$neg;
-    reg  stages$21$clock;
-    reg  stages$21$enable;
-    reg  stages$21$valid_in;
-    reg  [33:0] stages$21$p_in;
-    reg  [24:0] stages$21$x_in;
-    reg  [33:0] stages$21$d_in;
-    reg  stages$21$neg_in;
-    wire  stages$21$valid;
-    wire  [33:0] stages$21$p;
-    wire  [24:0] stages$21$x;
-    wire  [33:0] stages$21$d;
-    wire  stages$21$neg;
-    reg  stages$22$clock;
-    reg  stages$22$enable;
-    reg  stages$22$valid_in;
-    reg  [33:0] stages$22$p_in;
-    reg  [24:0] stages$22$x_in;
-    reg  [33:0] stages$22$d_in;
-    reg  stages$22$neg_in;
-    wire  stages$22$valid;
-    wire  [33:0] stages$22$p;
-    wire  [24:0] stages$22$x;
-    wire  [33:0] stages$22$d;
-    wire  stages$22$neg;
-    reg  stages$23$clock;
-    reg  stages$23$enable;
-    reg  stages$23$valid_in;
-    reg  [33:0] stages$23$p_in;
-    reg  [24:0] stages$23$x_in;
-    reg  [33:0] stages$23$d_in;
-    reg  stages$23$neg_in;
-    wire  stages$23$valid;
-    wire  [33:0] stages$23$p;
-    wire  [24:0] stages$23$x;
-    wire  [33:0] stages$23$d;
-    wire  stages$23$neg;
-    reg  stages$24$clock;
-    reg  stages$24$enable;
-    reg  stages$24$valid_in;
-    reg  [33:0] stages$24$p_in;
-    reg  [24:0] stages$24$x_in;
-    reg  [33:0] stages$24$d_in;
-    reg  stages$24$neg_in;
-    wire  stages$24$valid;
-    wire  [33:0] stages$24$p;
-    wire  [24:0] stages$24$x;
-    wire  [33:0] stages$24$d;
-    wire  stages$24$neg;
     
     // Local signals
     reg  advance;
@@ -11361,183 +11217,15 @@ module vector$div_a(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_rea
         .d(stages$12$d),
         .neg(stages$12$neg)
     );
-    vector$div_a$stages$13 stages$13(
-        .clock(stages$13$clock),
-        .enable(stages$13$enable),
-        .valid_in(stages$13$valid_in),
-        .p_in(stages$13$p_in),
-        .x_in(stages$13$x_in),
-        .d_in(stages$13$d_in),
-        .neg_in(stages$13$neg_in),
-        .valid(stages$13$valid),
-        .p(stages$13$p),
-        .x(stages$13$x),
-        .d(stages$13$d),
-        .neg(stages$13$neg)
-    );
-    vector$div_a$stages$14 stages$14(
-        .clock(stages$14$clock),
-        .enable(stages$14$enable),
-        .valid_in(stages$14$valid_in),
-        .p_in(stages$14$p_in),
-        .x_in(stages$14$x_in),
-        .d_in(stages$14$d_in),
-        .neg_in(stages$14$neg_in),
-        .valid(stages$14$valid),
-        .p(stages$14$p),
-        .x(stages$14$x),
-        .d(stages$14$d),
-        .neg(stages$14$neg)
-    );
-    vector$div_a$stages$15 stages$15(
-        .clock(stages$15$clock),
-        .enable(stages$15$enable),
-        .valid_in(stages$15$valid_in),
-        .p_in(stages$15$p_in),
-        .x_in(stages$15$x_in),
-        .d_in(stages$15$d_in),
-        .neg_in(stages$15$neg_in),
-        .valid(stages$15$valid),
-        .p(stages$15$p),
-        .x(stages$15$x),
-        .d(stages$15$d),
-        .neg(stages$15$neg)
-    );
-    vector$div_a$stages$16 stages$16(
-        .clock(stages$16$clock),
-        .enable(stages$16$enable),
-        .valid_in(stages$16$valid_in),
-        .p_in(stages$16$p_in),
-        .x_in(stages$16$x_in),
-        .d_in(stages$16$d_in),
-        .neg_in(stages$16$neg_in),
-        .valid(stages$16$valid),
-        .p(stages$16$p),
-        .x(stages$16$x),
-        .d(stages$16$d),
-        .neg(stages$16$neg)
-    );
-    vector$div_a$stages$17 stages$17(
-        .clock(stages$17$clock),
-        .enable(stages$17$enable),
-        .valid_in(stages$17$valid_in),
-        .p_in(stages$17$p_in),
-        .x_in(stages$17$x_in),
-        .d_in(stages$17$d_in),
-        .neg_in(stages$17$neg_in),
-        .valid(stages$17$valid),
-        .p(stages$17$p),
-        .x(stages$17$x),
-        .d(stages$17$d),
-        .neg(stages$17$neg)
-    );
-    vector$div_a$stages$18 stages$18(
-        .clock(stages$18$clock),
-        .enable(stages$18$enable),
-        .valid_in(stages$18$valid_in),
-        .p_in(stages$18$p_in),
-        .x_in(stages$18$x_in),
-        .d_in(stages$18$d_in),
-        .neg_in(stages$18$neg_in),
-        .valid(stages$18$valid),
-        .p(stages$18$p),
-        .x(stages$18$x),
-        .d(stages$18$d),
-        .neg(stages$18$neg)
-    );
-    vector$div_a$stages$19 stages$19(
-        .clock(stages$19$clock),
-        .enable(stages$19$enable),
-        .valid_in(stages$19$valid_in),
-        .p_in(stages$19$p_in),
-        .x_in(stages$19$x_in),
-        .d_in(stages$19$d_in),
-        .neg_in(stages$19$neg_in),
-        .valid(stages$19$valid),
-        .p(stages$19$p),
-        .x(stages$19$x),
-        .d(stages$19$d),
-        .neg(stages$19$neg)
-    );
-    vector$div_a$stages$20 stages$20(
-        .clock(stages$20$clock),
-        .enable(stages$20$enable),
-        .valid_in(stages$20$valid_in),
-        .p_in(stages$20$p_in),
-        .x_in(stages$20$x_in),
-        .d_in(stages$20$d_in),
-        .neg_in(stages$20$neg_in),
-        .valid(stages$20$valid),
-        .p(stages$20$p),
-        .x(stages$20$x),
-        .d(stages$20$d),
-        .neg(stages$20$neg)
-    );
-    vector$div_a$stages$21 stages$21(
-        .clock(stages$21$clock),
-        .enable(stages$21$enable),
-        .valid_in(stages$21$valid_in),
-        .p_in(stages$21$p_in),
-        .x_in(stages$21$x_in),
-        .d_in(stages$21$d_in),
-        .neg_in(stages$21$neg_in),
-        .valid(stages$21$valid),
-        .p(stages$21$p),
-        .x(stages$21$x),
-        .d(stages$21$d),
-        .neg(stages$21$neg)
-    );
-    vector$div_a$stages$22 stages$22(
-        .clock(stages$22$clock),
-        .enable(stages$22$enable),
-        .valid_in(stages$22$valid_in),
-        .p_in(stages$22$p_in),
-        .x_in(stages$22$x_in),
-        .d_in(stages$22$d_in),
-        .neg_in(stages$22$neg_in),
-        .valid(stages$22$valid),
-        .p(stages$22$p),
-        .x(stages$22$x),
-        .d(stages$22$d),
-        .neg(stages$22$neg)
-    );
-    vector$div_a$stages$23 stages$23(
-        .clock(stages$23$clock),
-        .enable(stages$23$enable),
-        .valid_in(stages$23$valid_in),
-        .p_in(stages$23$p_in),
-        .x_in(stages$23$x_in),
-        .d_in(stages$23$d_in),
-        .neg_in(stages$23$neg_in),
-        .valid(stages$23$valid),
-        .p(stages$23$p),
-        .x(stages$23$x),
-        .d(stages$23$d),
-        .neg(stages$23$neg)
-    );
-    vector$div_a$stages$24 stages$24(
-        .clock(stages$24$clock),
-        .enable(stages$24$enable),
-        .valid_in(stages$24$valid_in),
-        .p_in(stages$24$p_in),
-        .x_in(stages$24$x_in),
-        .d_in(stages$24$d_in),
-        .neg_in(stages$24$neg_in),
-        .valid(stages$24$valid),
-        .p(stages$24$p),
-        .x(stages$24$x),
-        .d(stages$24$d),
-        .neg(stages$24$neg)
-    );
     
     // Update code
     always @(*) begin
-        advance = ~hold & (~stages$24$valid | out_ready);
-        out_valid = stages$24$valid;
-        last_x = stages$24$x;
-        out_r = stages$24$p;
+        advance = ~hold & (~stages$12$valid | out_ready);
+        out_valid = stages$12$valid;
+        last_x = stages$12$x;
+        out_r = stages$12$p;
         out_q = ((last_x) & 26'h3ffffff);
-        if (stages$24$neg) begin
+        if (stages$12$neg) begin
             out_q = ((last_x) & 26'h3ffffff) | q_sign;
         end
         stages$0$clock = clock;
@@ -11566,30 +11254,6 @@ module vector$div_a(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_rea
         stages$11$enable = advance;
         stages$12$clock = clock;
         stages$12$enable = advance;
-        stages$13$clock = clock;
-        stages$13$enable = advance;
-        stages$14$clock = clock;
-        stages$14$enable = advance;
-        stages$15$clock = clock;
-        stages$15$enable = advance;
-        stages$16$clock = clock;
-        stages$16$enable = advance;
-        stages$17$clock = clock;
-        stages$17$enable = advance;
-        stages$18$clock = clock;
-        stages$18$enable = advance;
-        stages$19$clock = clock;
-        stages$19$enable = advance;
-        stages$20$clock = clock;
-        stages$20$enable = advance;
-        stages$21$clock = clock;
-        stages$21$enable = advance;
-        stages$22$clock = clock;
-        stages$22$enable = advance;
-        stages$23$clock = clock;
-        stages$23$enable = advance;
-        stages$24$clock = clock;
-        stages$24$enable = advance;
         inp_ready = advance;
         m = inp_n;
         if (inp_n[n_msb]) begin
@@ -11660,66 +11324,6 @@ module vector$div_a(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_rea
         stages$12$x_in = stages$11$x;
         stages$12$d_in = stages$11$d;
         stages$12$neg_in = stages$11$neg;
-        stages$13$valid_in = stages$12$valid;
-        stages$13$p_in = stages$12$p;
-        stages$13$x_in = stages$12$x;
-        stages$13$d_in = stages$12$d;
-        stages$13$neg_in = stages$12$neg;
-        stages$14$valid_in = stages$13$valid;
-        stages$14$p_in = stages$13$p;
-        stages$14$x_in = stages$13$x;
-        stages$14$d_in = stages$13$d;
-        stages$14$neg_in = stages$13$neg;
-        stages$15$valid_in = stages$14$valid;
-        stages$15$p_in = stages$14$p;
-        stages$15$x_in = stages$14$x;
-        stages$15$d_in = stages$14$d;
-        stages$15$neg_in = stages$14$neg;
-        stages$16$valid_in = stages$15$valid;
-        stages$16$p_in = stages$15$p;
-        stages$16$x_in = stages$15$x;
-        stages$16$d_in = stages$15$d;
-        stages$16$neg_in = stages$15$neg;
-        stages$17$valid_in = stages$16$valid;
-        stages$17$p_in = stages$16$p;
-        stages$17$x_in = stages$16$x;
-        stages$17$d_in = stages$16$d;
-        stages$17$neg_in = stages$16$neg;
-        stages$18$valid_in = stages$17$valid;
-        stages$18$p_in = stages$17$p;
-        stages$18$x_in = stages$17$x;
-        stages$18$d_in = stages$17$d;
-        stages$18$neg_in = stages$17$neg;
-        stages$19$valid_in = stages$18$valid;
-        stages$19$p_in = stages$18$p;
-        stages$19$x_in = stages$18$x;
-        stages$19$d_in = stages$18$d;
-        stages$19$neg_in = stages$18$neg;
-        stages$20$valid_in = stages$19$valid;
-        stages$20$p_in = stages$19$p;
-        stages$20$x_in = stages$19$x;
-        stages$20$d_in = stages$19$d;
-        stages$20$neg_in = stages$19$neg;
-        stages$21$valid_in = stages$20$valid;
-        stages$21$p_in = stages$20$p;
-        stages$21$x_in = stages$20$x;
-        stages$21$d_in = stages$20$d;
-        stages$21$neg_in = stages$20$neg;
-        stages$22$valid_in = stages$21$valid;
-        stages$22$p_in = stages$21$p;
-        stages$22$x_in = stages$21$x;
-        stages$22$d_in = stages$21$d;
-        stages$22$neg_in = stages$21$neg;
-        stages$23$valid_in = stages$22$valid;
-        stages$23$p_in = stages$22$p;
-        stages$23$x_in = stages$22$x;
-        stages$23$d_in = stages$22$d;
-        stages$23$neg_in = stages$22$neg;
-        stages$24$valid_in = stages$23$valid;
-        stages$24$p_in = stages$23$p;
-        stages$24$x_in = stages$23$x;
-        stages$24$d_in = stages$23$d;
-        stages$24$neg_in = stages$23$neg;
     end
     
 endmodule // vector$div_a
@@ -11984,10 +11588,14 @@ module vector$div_a$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
     reg  [34:0] t$0;
+    reg  [34:0] t$1;
     reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -12045,13 +11653,26 @@ module vector$div_a$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
+            p_r$d = tp$2[(32'h0)+:(34)];
+            x_r$d = tx$2;
             if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
+                p_r$d = d_in - tp$2[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$2;
             end
             d_r$d = d_in;
             neg_r$d = neg_in;
@@ -12202,10 +11823,14 @@ module vector$div_a$stages$10(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
     reg  [34:0] t$0;
+    reg  [34:0] t$1;
     reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -12263,13 +11888,26 @@ module vector$div_a$stages$10(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
+            p_r$d = tp$2[(32'h0)+:(34)];
+            x_r$d = tx$2;
             if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
+                p_r$d = d_in - tp$2[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$2;
             end
             d_r$d = d_in;
             neg_r$d = neg_in;
@@ -12420,10 +12058,14 @@ module vector$div_a$stages$11(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
     reg  [34:0] t$0;
+    reg  [34:0] t$1;
     reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -12481,13 +12123,26 @@ module vector$div_a$stages$11(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
+            p_r$d = tp$2[(32'h0)+:(34)];
+            x_r$d = tx$2;
             if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
+                p_r$d = d_in - tp$2[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$2;
             end
             d_r$d = d_in;
             neg_r$d = neg_in;
@@ -12616,7 +12271,7 @@ module vector$div_a$stages$12(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,
     // Constant declarations
     localparam  borrow = 8'h22;
     localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
+    localparam  fin = 1'b1;
     
     // Stub signals
     reg  valid_r$d;
@@ -12638,10 +12293,14 @@ module vector$div_a$stages$12(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
     reg  [34:0] t$0;
+    reg  [34:0] t$1;
     reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -12699,13 +12358,26 @@ module vector$div_a$stages$12(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
+            p_r$d = tp$2[(32'h0)+:(34)];
+            x_r$d = tx$2;
             if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
+                p_r$d = d_in - tp$2[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$2;
             end
             d_r$d = d_in;
             neg_r$d = neg_in;
@@ -12815,1532 +12487,6 @@ module vector$div_a$stages$12$x_r(d,q,clock);
 endmodule // vector$div_a$stages$12$x_r
 
 
-module vector$div_a$stages$13(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div_a$stages$13$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div_a$stages$13$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div_a$stages$13$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div_a$stages$13$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div_a$stages$13$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div_a$stages$13
-
-
-module vector$div_a$stages$13$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$13$d_r
-
-
-module vector$div_a$stages$13$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$13$neg_r
-
-
-module vector$div_a$stages$13$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$13$p_r
-
-
-module vector$div_a$stages$13$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$13$valid_r
-
-
-module vector$div_a$stages$13$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$13$x_r
-
-
-module vector$div_a$stages$14(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div_a$stages$14$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div_a$stages$14$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div_a$stages$14$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div_a$stages$14$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div_a$stages$14$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div_a$stages$14
-
-
-module vector$div_a$stages$14$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$14$d_r
-
-
-module vector$div_a$stages$14$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$14$neg_r
-
-
-module vector$div_a$stages$14$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$14$p_r
-
-
-module vector$div_a$stages$14$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$14$valid_r
-
-
-module vector$div_a$stages$14$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$14$x_r
-
-
-module vector$div_a$stages$15(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div_a$stages$15$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div_a$stages$15$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div_a$stages$15$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div_a$stages$15$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div_a$stages$15$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div_a$stages$15
-
-
-module vector$div_a$stages$15$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$15$d_r
-
-
-module vector$div_a$stages$15$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$15$neg_r
-
-
-module vector$div_a$stages$15$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$15$p_r
-
-
-module vector$div_a$stages$15$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$15$valid_r
-
-
-module vector$div_a$stages$15$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$15$x_r
-
-
-module vector$div_a$stages$16(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div_a$stages$16$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div_a$stages$16$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div_a$stages$16$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div_a$stages$16$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div_a$stages$16$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div_a$stages$16
-
-
-module vector$div_a$stages$16$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$16$d_r
-
-
-module vector$div_a$stages$16$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$16$neg_r
-
-
-module vector$div_a$stages$16$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$16$p_r
-
-
-module vector$div_a$stages$16$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$16$valid_r
-
-
-module vector$div_a$stages$16$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$16$x_r
-
-
-module vector$div_a$stages$17(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div_a$stages$17$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div_a$stages$17$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div_a$stages$17$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div_a$stages$17$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div_a$stages$17$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div_a$stages$17
-
-
-module vector$div_a$stages$17$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$17$d_r
-
-
-module vector$div_a$stages$17$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$17$neg_r
-
-
-module vector$div_a$stages$17$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$17$p_r
-
-
-module vector$div_a$stages$17$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$17$valid_r
-
-
-module vector$div_a$stages$17$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$17$x_r
-
-
-module vector$div_a$stages$18(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div_a$stages$18$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div_a$stages$18$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div_a$stages$18$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div_a$stages$18$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div_a$stages$18$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div_a$stages$18
-
-
-module vector$div_a$stages$18$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$18$d_r
-
-
-module vector$div_a$stages$18$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$18$neg_r
-
-
-module vector$div_a$stages$18$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$18$p_r
-
-
-module vector$div_a$stages$18$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$18$valid_r
-
-
-module vector$div_a$stages$18$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$18$x_r
-
-
-module vector$div_a$stages$19(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div_a$stages$19$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div_a$stages$19$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div_a$stages$19$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div_a$stages$19$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div_a$stages$19$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div_a$stages$19
-
-
-module vector$div_a$stages$19$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$19$d_r
-
-
-module vector$div_a$stages$19$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$19$neg_r
-
-
-module vector$div_a$stages$19$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$19$p_r
-
-
-module vector$div_a$stages$19$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$19$valid_r
-
-
-module vector$div_a$stages$19$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$19$x_r
-
-
 module vector$div_a$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
@@ -14382,10 +12528,14 @@ module vector$div_a$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
     reg  [34:0] t$0;
+    reg  [34:0] t$1;
     reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -14443,13 +12593,26 @@ module vector$div_a$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
+            p_r$d = tp$2[(32'h0)+:(34)];
+            x_r$d = tx$2;
             if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
+                p_r$d = d_in - tp$2[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$2;
             end
             d_r$d = d_in;
             neg_r$d = neg_in;
@@ -14559,1096 +12722,6 @@ module vector$div_a$stages$2$x_r(d,q,clock);
 endmodule // vector$div_a$stages$2$x_r
 
 
-module vector$div_a$stages$20(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div_a$stages$20$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div_a$stages$20$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div_a$stages$20$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div_a$stages$20$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div_a$stages$20$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div_a$stages$20
-
-
-module vector$div_a$stages$20$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$20$d_r
-
-
-module vector$div_a$stages$20$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$20$neg_r
-
-
-module vector$div_a$stages$20$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$20$p_r
-
-
-module vector$div_a$stages$20$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$20$valid_r
-
-
-module vector$div_a$stages$20$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$20$x_r
-
-
-module vector$div_a$stages$21(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div_a$stages$21$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div_a$stages$21$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div_a$stages$21$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div_a$stages$21$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div_a$stages$21$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div_a$stages$21
-
-
-module vector$div_a$stages$21$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$21$d_r
-
-
-module vector$div_a$stages$21$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$21$neg_r
-
-
-module vector$div_a$stages$21$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$21$p_r
-
-
-module vector$div_a$stages$21$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$21$valid_r
-
-
-module vector$div_a$stages$21$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$21$x_r
-
-
-module vector$div_a$stages$22(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div_a$stages$22$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div_a$stages$22$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div_a$stages$22$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div_a$stages$22$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div_a$stages$22$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div_a$stages$22
-
-
-module vector$div_a$stages$22$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$22$d_r
-
-
-module vector$div_a$stages$22$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$22$neg_r
-
-
-module vector$div_a$stages$22$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$22$p_r
-
-
-module vector$div_a$stages$22$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$22$valid_r
-
-
-module vector$div_a$stages$22$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$22$x_r
-
-
-module vector$div_a$stages$23(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div_a$stages$23$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div_a$stages$23$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div_a$stages$23$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div_a$stages$23$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div_a$stages$23$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div_a$stages$23
-
-
-module vector$div_a$stages$23$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$23$d_r
-
-
-module vector$div_a$stages$23$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$23$neg_r
-
-
-module vector$div_a$stages$23$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$23$p_r
-
-
-module vector$div_a$stages$23$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$23$valid_r
-
-
-module vector$div_a$stages$23$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$23$x_r
-
-
-module vector$div_a$stages$24(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b1;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div_a$stages$24$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div_a$stages$24$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div_a$stages$24$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div_a$stages$24$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div_a$stages$24$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div_a$stages$24
-
-
-module vector$div_a$stages$24$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$24$d_r
-
-
-module vector$div_a$stages$24$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$24$neg_r
-
-
-module vector$div_a$stages$24$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$24$p_r
-
-
-module vector$div_a$stages$24$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$24$valid_r
-
-
-module vector$div_a$stages$24$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_a$stages$24$x_r
-
-
 module vector$div_a$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
@@ -15690,10 +12763,14 @@ module vector$div_a$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
     reg  [34:0] t$0;
+    reg  [34:0] t$1;
     reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -15751,13 +12828,26 @@ module vector$div_a$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
+            p_r$d = tp$2[(32'h0)+:(34)];
+            x_r$d = tx$2;
             if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
+                p_r$d = d_in - tp$2[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$2;
             end
             d_r$d = d_in;
             neg_r$d = neg_in;
@@ -15908,10 +12998,14 @@ module vector$div_a$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
     reg  [34:0] t$0;
+    reg  [34:0] t$1;
     reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -15969,13 +13063,26 @@ module vector$div_a$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
+            p_r$d = tp$2[(32'h0)+:(34)];
+            x_r$d = tx$2;
             if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
+                p_r$d = d_in - tp$2[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$2;
             end
             d_r$d = d_in;
             neg_r$d = neg_in;
@@ -16126,10 +13233,14 @@ module vector$div_a$stages$5(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
     reg  [34:0] t$0;
+    reg  [34:0] t$1;
     reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -16187,13 +13298,26 @@ module vector$div_a$stages$5(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
+            p_r$d = tp$2[(32'h0)+:(34)];
+            x_r$d = tx$2;
             if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
+                p_r$d = d_in - tp$2[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$2;
             end
             d_r$d = d_in;
             neg_r$d = neg_in;
@@ -16344,10 +13468,14 @@ module vector$div_a$stages$6(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
     reg  [34:0] t$0;
+    reg  [34:0] t$1;
     reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -16405,13 +13533,26 @@ module vector$div_a$stages$6(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
+            p_r$d = tp$2[(32'h0)+:(34)];
+            x_r$d = tx$2;
             if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
+                p_r$d = d_in - tp$2[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$2;
             end
             d_r$d = d_in;
             neg_r$d = neg_in;
@@ -16562,10 +13703,14 @@ module vector$div_a$stages$7(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
     reg  [34:0] t$0;
+    reg  [34:0] t$1;
     reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -16623,13 +13768,26 @@ module vector$div_a$stages$7(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
+            p_r$d = tp$2[(32'h0)+:(34)];
+            x_r$d = tx$2;
             if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
+                p_r$d = d_in - tp$2[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$2;
             end
             d_r$d = d_in;
             neg_r$d = neg_in;
@@ -16780,10 +13938,14 @@ module vector$div_a$stages$8(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
     reg  [34:0] t$0;
+    reg  [34:0] t$1;
     reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -16841,13 +14003,26 @@ module vector$div_a$stages$8(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
+            p_r$d = tp$2[(32'h0)+:(34)];
+            x_r$d = tx$2;
             if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
+                p_r$d = d_in - tp$2[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$2;
             end
             d_r$d = d_in;
             neg_r$d = neg_in;
@@ -16998,10 +14173,14 @@ module vector$div_a$stages$9(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
     // Local signals
     reg  [34:0] tp$0;
     reg  [34:0] tp$1;
+    reg  [34:0] tp$2;
     reg  [24:0] tx$0;
     reg  [24:0] tx$1;
+    reg  [24:0] tx$2;
     reg  [34:0] t$0;
+    reg  [34:0] t$1;
     reg  [34:0] diff$0;
+    reg  [34:0] diff$1;
     reg  [34:0] d1;
     
     // Sub module instances
@@ -17059,13 +14238,26 @@ module vector$div_a$stages$9(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p
             tp$1 = diff$0;
             tx$1 = (tx$0 << 32'h1) | 32'h1;
         end
+        t$1 = tp$1 << 32'h1;
+        if (tx$1[x_msb]) begin
+            t$1 = (tp$1 << 32'h1) | 32'h1;
+        end
+        diff$1 = t$1 - d1;
+        if (diff$1[borrow]) begin
+            tp$2 = t$1;
+            tx$2 = tx$1 << 32'h1;
+        end
+        else begin
+            tp$2 = diff$1;
+            tx$2 = (tx$1 << 32'h1) | 32'h1;
+        end
         if (enable) begin
             valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
+            p_r$d = tp$2[(32'h0)+:(34)];
+            x_r$d = tx$2;
             if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
+                p_r$d = d_in - tp$2[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$2;
             end
             d_r$d = d_in;
             neg_r$d = neg_in;

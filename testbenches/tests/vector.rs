@@ -39,8 +39,13 @@ fn jobs(v: impl IntoIterator<Item = [model::input::Vtx; 3]>, perspective: bool) 
 
 /// The unit in both simulators, with or without perspective-correct colours.
 fn dual(perspective: bool) -> Dual<Vector> {
-    let vl = verilated_with("vector", [("PERSPECTIVE", perspective as u64)]);
-    let unit = Vector::new(model::divider::LATENCY as usize, perspective).unwrap_or_else(|e| panic!("{e}"));
+    dual_with(perspective, model::divider::LATENCY)
+}
+
+/// [`dual`] with `l` divider stages.
+fn dual_with(perspective: bool, l: u32) -> Dual<Vector> {
+    let vl = verilated_with("vector", [("PERSPECTIVE", perspective as u64), ("L", l as u64)]);
+    let unit = Vector::new(l as usize, perspective).unwrap_or_else(|e| panic!("{e}"));
     Dual::new(unit, vl.model().unwrap_or_else(|e| panic!("{e}")))
 }
 
@@ -88,8 +93,12 @@ fn run(dual: &mut Dual<Vector>, jobs: &[Job], flow: Flow, seed: u64) -> Vec<(u64
 /// cycle each is taken and each of its pixels leaves (`pixel_latency` after its walk
 /// cycle) are `model::cycles::VectorUnit`'s, exactly.
 fn check_timing(jobs: &[Job], times: &[(u64, Vec<u64>)]) {
+    check_timing_with(jobs, times, model::divider::LATENCY);
+}
+
+/// [`check_timing`] with `l` divider stages.
+fn check_timing_with(jobs: &[Job], times: &[(u64, Vec<u64>)], l: u32) {
     assert_eq!(times.len(), jobs.len());
-    let l = model::divider::LATENCY;
     let mut unit = VectorUnit::new(l);
     let mut offered = 0;
     for (j, (job, (taken, left))) in jobs.iter().zip(times).enumerate() {
@@ -120,6 +129,17 @@ fn vector_random_vs_model() {
         check_timing(&jobs, &t);
         run(&mut d, &jobs, Flow::STALLING, seed);
     }
+}
+
+/// With 001's 5-stage divider (setup 13 cycles, each pixel out 21 cycles after its walk
+/// cycle), as the model's timing for it says.
+#[test]
+fn vector_with_a_5_stage_divider_vs_model() {
+    let jobs = random_jobs(count() / 100, seed(), true);
+    let mut d = dual_with(true, 5);
+    let t = run(&mut d, &jobs, Flow::BACK_TO_BACK, seed());
+    check_timing_with(&jobs, &t, 5);
+    assert_eq!((model::vector::setup(5), model::vector::pixel_latency(5)), (13, 21));
 }
 
 /// The triangles at the limits of `xy`, z and colour (`stimulus::extremes`) on the small

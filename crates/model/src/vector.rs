@@ -28,14 +28,27 @@ use crate::divider::{divider, recip_operands};
 use crate::input::Vtx;
 use crate::span::{color_of, depth_of, Pixel};
 
-/// Cycles from taking a triangle to its walk's first cycle, with a divider of
-/// `divider_latency` stages: the input registers, the area's products, its sign (v1 and v2
-/// swapped for a negative area), its leading one, 1/area's divisor normalised into a
-/// register in cycle 6, taken by the divider in cycle 7 and back `divider_latency` cycles
-/// later; the edge functions at the box's first pixel are ready by cycle 11, so a divider
-/// of fewer than 4 stages waits for them.
+/// Stages of setup's own divider, for 1/area, when the pixels' has `divider_latency`: at
+/// most 13 (93 MHz alone on ECP5, README "Units": faster than the unit's critical path), so
+/// that setup is short; the pixels' divider keeps its stages (a new division every cycle).
+pub const fn area_divider_latency(divider_latency: u32) -> u32 {
+    if divider_latency < 13 {
+        divider_latency
+    } else {
+        13
+    }
+}
+
+/// Cycles from taking a triangle to the cycle after the earliest handover to the walk, with
+/// a pixels' divider of `divider_latency` stages: the input registers, the area's products,
+/// its sign (v1 and v2 swapped for a negative area), its leading one, 1/area's divisor
+/// normalised into a register in cycle 6, taken by setup's divider
+/// ([`area_divider_latency`] stages) in cycle 7 and back that many cycles later; the edge
+/// functions at the box's first pixel are ready by cycle 11, so a divider of fewer than 4
+/// stages waits for them.
 pub const fn setup(divider_latency: u32) -> u32 {
-    8 + if divider_latency > 4 { divider_latency } else { 4 }
+    let la = area_divider_latency(divider_latency);
+    8 + if la > 4 { la } else { 4 }
 }
 
 /// Cycles from a pixel's walk cycle to the cycle it leaves: coverage and a, b (eq. 3: two

@@ -8,8 +8,8 @@
 //! Setup works on the next triangle while the walk and the pixel pipeline work on this
 //! one.
 //!
-//! **Setup** (cycle 0 takes the triangle; `model::vector::setup` cycles, 33 with the
-//! default 25-stage divider):
+//! **Setup** (cycle 0 takes the triangle; `model::vector::setup` cycles, 21 with the
+//! default divider):
 //!
 //! ```text
 //!  cycle 1      bounding box: min and max of x and y (registers)
@@ -20,10 +20,11 @@
 //!  cycle 4      its sign: v1 and v2 swapped for a negative area (clockwise on screen); |area|
 //!  cycle 5      edge deltas of the (swapped) edges v1->v2, v2->v0, v0->v1; attribute
 //!               differences v1 - v0, v2 - v0; |area|'s leading one (exp)
-//!  cycle 6      1/area's divisor (`model::divider::recip_operands`) into a register; its
-//!               divider (setup's own) takes it in cycle 7 and returns it L later
+//!  cycle 6      1/area's divisor (`model::divider::recip_operands`) into a register; setup's
+//!               own divider (LA = `model::vector::area_divider_latency` stages, 13 at the
+//!               default L = 25) takes it in cycle 7 and returns it LA later
 //!  cycles 6-8   each edge function at the box's first pixel centre: two products
-//!  cycle 7+L    1/area's mantissa; handed to the walk this cycle (or at cycle 11, L < 4)
+//!  cycle 7+LA   1/area's mantissa; handed to the walk this cycle (or at cycle 11, LA < 4)
 //!               or later: when the walk before is in its last pixel or done, and the set
 //!               of constants the triangle goes into is free (below); its walk starts the
 //!               cycle after, and setup may take the next triangle
@@ -395,7 +396,7 @@ pub struct Vector {
     norm_a: Normalise<AREA, { max(AREA, DIV_D) + 1 }>,
     norm_s: Normalise<SUMW, { max(SUMW, max(DIV_D, TOP + 1)) }>,
     recip_n: Constant<Bits<DIV_N>>,
-    /// 1/area's mantissa: from its divider in cycle 7 + L (the handover may come in it),
+    /// 1/area's mantissa: from its divider in cycle 7 + LA (the handover may come in it),
     /// from `mant` after.
     mant_c: Signal<Local, Bits<MANT>>,
     /// The dividers' divisors, registered: 1/area's in cycle 6, each pixel's 1/sum's.
@@ -514,6 +515,7 @@ impl Vector {
         }
         let (setup, pixel) =
             (model::vector::setup(l as u32) as usize, model::vector::pixel_latency(l as u32) as usize);
+        let la = model::vector::area_divider_latency(l as u32) as usize;
         let px = 1usize << FORMATS.xy.frac;
         Ok(Vector {
             clock: Default::default(),
@@ -524,7 +526,7 @@ impl Vector {
             idle: Default::default(),
             persp: Switch::new(perspective),
             div: DividerRtl::new(l),
-            div_a: DividerRtl::new(l),
+            div_a: DividerRtl::new(la),
             mul_s: defaults(),
             mul_a: Default::default(),
             mul_b: Default::default(),
@@ -540,7 +542,7 @@ impl Vector {
             take: Default::default(),
             sc: Default::default(),
             dc: Default::default(),
-            at_mant: Constant::new((7 + l).to_bits()),
+            at_mant: Constant::new((7 + la).to_bits()),
             at_walk: Constant::new((setup - 1).to_bits()),
             drain: Constant::new(pixel.to_bits()),
             at_last: Default::default(),
@@ -1191,7 +1193,7 @@ impl Logic for Vector {
             if self.sc.q.val() == 10 {
                 self.w0[2].d.next = self.mul_s[0].p.val() - self.mul_s[1].p.val();
             }
-            // Cycle 7 + L: 1/area's mantissa.
+            // Cycle 7 + LA: 1/area's mantissa.
             if self.sc.q.val() == self.at_mant.val() {
                 self.mant.d.next = self.mant_c.val();
             }

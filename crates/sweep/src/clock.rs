@@ -38,7 +38,7 @@ pub const GPU_TOP_MHZ: f64 = 41.8;
 /// The vector unit's ECP5 Fmax (`rtl::vector`, paper 004) at the default design, MHz,
 /// placed and routed alone (README, "Units"): the clock `render --engine rtl --method
 /// vector` gives its frame times at; `cull_sort` and `pixel_out` route faster alone.
-pub const VECTOR_MHZ: f64 = 67.6;
+pub const VECTOR_MHZ: f64 = 72.8;
 
 /// The design [`MEASURED_MHZ`] and [`PIPELINE_MHZ`] were measured at: size class
 /// `fx::RTL_CLASS` at its default formats, K = 7, L = `model::divider::LATENCY` (25).
