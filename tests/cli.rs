@@ -219,6 +219,16 @@ fn cli_render_rtl_reports_the_frame_time_at_the_routed_clock() {
     assert!((ms - want).abs() <= 0.0005 + 1e-12, "{ms} ms reported, {cycles} cycles at {mhz} MHz are {want} ms");
 }
 
+/// `render` of the cube at 64 x 48 into `png` with `more` arguments, which must succeed:
+/// the PNG's bytes and the summary.
+fn render_cube(png: &std::path::Path, more: &[&str]) -> (Vec<u8>, String) {
+    let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
+    let args = [&["render", cube, "--size", "64x48", "-o", png.to_str().unwrap()][..], more].concat();
+    let out = edgepaint(&args);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    (std::fs::read(png).unwrap(), String::from_utf8_lossy(&out.stdout).to_string())
+}
+
 /// `render --engine rtl` draws through `gpu_top` by default: the scene packed into a vertex
 /// buffer in memory, the core driven through its registers; its PNG is the scanline
 /// model's and `raster_top`'s, its summary gives the bus traffic and the frame's cycles
@@ -228,13 +238,7 @@ fn cli_render_rtl_reports_the_frame_time_at_the_routed_clock() {
 fn cli_render_rtl_draws_through_gpu_top() {
     let d = scratch("rtl-gpu-top");
     let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
-    let render = |name: &str, more: &[&str]| {
-        let png = d.join(name);
-        let args = [&["render", cube, "--size", "64x48", "-o", png.to_str().unwrap()][..], more].concat();
-        let out = edgepaint(&args);
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-        (std::fs::read(&png).unwrap(), String::from_utf8_lossy(&out.stdout).to_string())
-    };
+    let render = |name: &str, more: &[&str]| render_cube(&d.join(name), more);
     let (gpu, summary) = render("gpu.png", &["--engine", "rtl"]);
     assert!(summary.contains("rtl (gpu_top of size class 10"), "{summary}");
     assert!(summary.contains("STATUS, TRIANGLES, image and depth equal to model::gpu_top's"), "{summary}");
@@ -264,13 +268,7 @@ fn cli_render_rtl_draws_through_gpu_top() {
 fn cli_render_rtl_draws_with_the_vector_method() {
     let d = scratch("rtl-vector");
     let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
-    let render = |name: &str, more: &[&str]| {
-        let png = d.join(name);
-        let args = [&["render", cube, "--size", "64x48", "-o", png.to_str().unwrap()][..], more].concat();
-        let out = edgepaint(&args);
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-        (std::fs::read(&png).unwrap(), String::from_utf8_lossy(&out.stdout).to_string())
-    };
+    let render = |name: &str, more: &[&str]| render_cube(&d.join(name), more);
     for linear in [false, true] {
         let more: &[&str] = if linear { &["--linear"] } else { &[] };
         let (rtl, summary) = render("rtl.png", &[&["--engine", "rtl", "--method", "vector"][..], more].concat());

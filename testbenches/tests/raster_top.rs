@@ -36,22 +36,10 @@ fn check(
     cull: Cull,
     mem: MemoryModel,
 ) -> (top::RasterTopOut, FrameOut) {
-    check_at(Build::for_screen(list.width, list.height), what, dut, list, cull, mem)
+    check_by(Build::for_screen(list.width, list.height), Method::Scanline, what, dut, list, cull, mem)
 }
 
-/// [`check`] with `dut` the `raster_top` of build `build`.
-fn check_at(
-    build: Build,
-    what: &str,
-    dut: &mut dyn Cycle,
-    list: &Trilist,
-    cull: Cull,
-    mem: MemoryModel,
-) -> (top::RasterTopOut, FrameOut) {
-    check_by(build, Method::Scanline, what, dut, list, cull, mem)
-}
-
-/// [`check_at`] with `dut` a `raster_top` of `method`.
+/// [`check`] with `dut` the `raster_top` of build `build` and `method`.
 fn check_by(
     build: Build,
     method: Method,
@@ -375,7 +363,15 @@ fn raster_top_size_classes_11_and_12_lockstep() {
         let vl = testbenches::verilated_with("raster_top", [("N", class as u64), ("L", LOCKSTEP_L as u64)]);
         let mut dual = Dual::new(unit, vl.model().unwrap_or_else(|e| panic!("{e}")));
         let what = format!("class {class}, lockstep");
-        let (prep, _) = check_at(Build::of_class(class), &what, &mut dual, &l, cull, ready_memory(&mut |c| c % 5 != 3));
+        let (prep, _) = check_by(
+            Build::of_class(class),
+            Method::Scanline,
+            &what,
+            &mut dual,
+            &l,
+            cull,
+            ready_memory(&mut |c| c % 5 != 3),
+        );
         assert_eq!(prep.triangles.len(), l.triangles.len(), "{what}: the far triangle is sent whole");
         assert!(prep.fragments.last().is_some_and(|&n| n > 0), "{what}: the far triangle draws");
     }
@@ -689,7 +685,15 @@ fn raster_top_custom_formats_lockstep() {
             .expect("K = 7, default L");
         let mut dual = Dual::new(unit, vl.model().unwrap_or_else(|e| panic!("{e}")));
         let what = format!("{} formats, {what}", rtl::custom::SOURCE);
-        let (prep, out) = check_at(build, &what, &mut dual, l, cull, ready_memory(&mut |c| !stalling || c % 5 != 3));
+        let (prep, out) = check_by(
+            build,
+            Method::Scanline,
+            &what,
+            &mut dual,
+            l,
+            cull,
+            ready_memory(&mut |c| !stalling || c % 5 != 3),
+        );
         if out.stalls == 0 {
             assert_eq!(out.cycles, prep.cycles(), "{what}: cycles, RTL against model::cycles");
         }
