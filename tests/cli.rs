@@ -262,8 +262,8 @@ fn cli_render_rtl_draws_through_gpu_top() {
 
 /// `render --engine rtl --method vector` draws through `raster_top` with `METHOD = 1` (004's
 /// barycentric unit): its PNG is the vector model's at one lane, perspective-correct or
-/// with `--linear` screen-linear, and its frame time is at the vector unit's routed clock;
-/// what does not apply to it is a clear error.
+/// with `--linear` screen-linear, and its frame time is at its routed ECP5 clock
+/// (`sweep::clock::VECTOR_PIPELINE_MHZ`); what does not apply to it is a clear error.
 #[test]
 fn cli_render_rtl_draws_with_the_vector_method() {
     let d = scratch("rtl-vector");
@@ -275,7 +275,7 @@ fn cli_render_rtl_draws_with_the_vector_method() {
         assert!(summary.contains("METHOD = 1: cull_sort, vector, pixel_out"), "{summary}");
         assert!(summary.contains("image, depth and cycles equal to the vector (1 lane) model's"), "{summary}");
         let (cycles, ms, mhz, source) = frame_time(&summary);
-        assert_eq!((mhz, source.as_str()), (sweep::clock::VECTOR_MHZ, "the vector unit's, routed, ECP5"), "{summary}");
+        assert_eq!((mhz, source.as_str()), (sweep::clock::VECTOR_PIPELINE_MHZ, "routed, ECP5"), "{summary}");
         assert!((ms - cycles as f64 / (mhz * 1000.0)).abs() <= 0.0005 + 1e-12, "{summary}");
         let (model, _) = render("model.png", &[&["--engine", "vector", "--lanes", "1"][..], more].concat());
         assert!(rtl == model, "raster_top's vector PNG is the vector model's (linear: {linear})");

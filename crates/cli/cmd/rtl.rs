@@ -174,9 +174,9 @@ pub fn render(
     let (mhz, source) = sweep::clock::raster_top_mhz(&design);
     let every_part = parts.iter().all(|&(_, v)| v == 1);
     let (mhz, clock) = match (vector, source, every_part) {
-        (true, _, true) if build == Build::default() => (sweep::clock::VECTOR_MHZ, "the vector unit's, routed, ECP5"),
+        (true, _, true) if build == Build::default() => (sweep::clock::VECTOR_PIPELINE_MHZ, "routed, ECP5"),
         (true, _, _) => {
-            (sweep::clock::VECTOR_MHZ, "the default vector unit's, routed, ECP5; not at these formats or parts")
+            (sweep::clock::VECTOR_PIPELINE_MHZ, "the default design's, routed, ECP5; not at these formats or parts")
         }
         (false, Source::Measured, true) => (mhz, "routed, ECP5"),
         (false, _, true) => (mhz, "modelled, ECP5"),

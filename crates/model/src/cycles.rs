@@ -119,12 +119,7 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
     let mut out = FrameCycles::default();
     let write = write_latency(t);
     for w in work.iter().filter(|w| t.cull_sort || w.passed_cull) {
-        let culled = cull.arrive();
-        last = last.max(culled);
-        if !w.passed_cull {
-            cull.leave(culled);
-            continue;
-        }
+        let Some(culled) = cull.passing(w.passed_cull, &mut last) else { continue };
         out.triangles += 1;
         // Setup takes a triangle on the grid of the last one it took (when that one has run
         // II, 2 II, ... cycles), or at once when empty. No triangle is taken while setup
@@ -217,6 +212,19 @@ impl CullSortStages {
         } else {
             self.leaves[self.stages - 1] + 1
         }
+    }
+
+    /// The next triangle through the stages, its verdict `passed`: the cycle it arrives in
+    /// the output register (the frame lasts at least until then, in `last`), or `None` when
+    /// it is rejected and leaves in that cycle.
+    fn passing(&mut self, passed: bool, last: &mut u64) -> Option<u64> {
+        let culled = self.arrive();
+        *last = (*last).max(culled);
+        if !passed {
+            self.leave(culled);
+            return None;
+        }
+        Some(culled)
     }
 
     /// The triangle leaves the output register in `left` (a rejected one in the cycle it
@@ -313,12 +321,7 @@ pub fn vector_frame(work: &[Work], t: &Timing) -> FrameCycles {
     let mut last = 0u64;
     let mut out = FrameCycles::default();
     for w in work.iter().filter(|w| t.cull_sort || w.passed_cull) {
-        let culled = cull.arrive();
-        last = last.max(culled);
-        if !w.passed_cull {
-            cull.leave(culled);
-            continue;
-        }
+        let Some(culled) = cull.passing(w.passed_cull, &mut last) else { continue };
         out.triangles += 1;
         let times = unit.triangle(culled, w.vector_walk);
         cull.leave(times.taken);
@@ -360,8 +363,7 @@ mod tests {
     #[test]
     fn cycles_setup_overlaps_triangles_and_waits_as_one() {
         assert_eq!(setup_timing(&l5()), SetupTiming { latency: 28, interval: 10 });
-        let walk =
-            |n: usize| Work { passed_cull: true, scanlines: vec![None; n], vector_walk: 0, vector_last_sent: None };
+        let walk = |n: usize| Work { passed_cull: true, scanlines: vec![None; n], ..Work::default() };
         // First: culled out at 3 (cull_sort's three stages), taken, done at 31, walked
         // 33..83. Second: culled out at 4, taken at 3 + 10 = 13 (the grid), done at 41,
         // waits for the walk until 83, walked 85..86. Third: culled out at 14 (it waited in
@@ -403,12 +405,7 @@ mod tests {
         // 33, 34, 35; span walks each from 1 cycle later or when free: 34..39, 39..44,
         // 44..49; the last pixel leaves span's pixel register in 49 and is written 2 cycles
         // after, in cycle 51: 52 cycles.
-        let w = Work {
-            passed_cull: true,
-            scanlines: vec![full(5), full(5), full(5)],
-            vector_walk: 0,
-            vector_last_sent: None,
-        };
+        let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], ..Work::default() };
         let c = scanline_frame(std::slice::from_ref(&w), &l5());
         assert_eq!((c.total, c.span_busy, c.triangles), (52, 15, 1));
         // A culled triangle ahead costs one cycle of cull_sort only.
@@ -447,12 +444,7 @@ mod tests {
     fn cycles_without_cull_sort_or_pixel_out() {
         // Without cull_sort the triangle reaches setup in cycle 0 and culled ones are not
         // sent: 3 cycles less, and nothing for the 30 culled ones.
-        let w = Work {
-            passed_cull: true,
-            scanlines: vec![full(5), full(5), full(5)],
-            vector_walk: 0,
-            vector_last_sent: None,
-        };
+        let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], ..Work::default() };
         let mut frame = vec![Work::default(), w.clone()];
         frame.extend(std::iter::repeat_n(Work::default(), 30));
         let no_cull = Timing { cull_sort: false, ..l5() };

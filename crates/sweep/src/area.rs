@@ -38,6 +38,13 @@ pub struct Cost {
     pub ice40_lut4: f64,
 }
 
+/// The barycentric pipeline at the default design, as `edgepaint report --unit raster_top
+/// --param METHOD=1` measured it (stop 39: `cull_sort`, `rtl::vector` at one lane with
+/// perspective-correct colours, `pixel_out`): the vector method's cost where the sweep
+/// prices it (`run`); no model covers the vector unit at other formats yet.
+pub const VECTOR_PIPELINE: Cost =
+    Cost { ge: 259_780.0, ecp5_lut4: 7_257.0, ecp5_ff: 10_473.0, ecp5_dsp: 42.0, ice40_lut4: 32_233.0 };
+
 /// The metrics of a [`Cost`], by name.
 pub const METRICS: [&str; 5] = ["ge", "ecp5_lut4", "ecp5_ff", "ecp5_dsp", "ice40_lut4"];
 /// The metric counted, not fitted: ECP5 multiplier blocks ([`multiplier_blocks`]).

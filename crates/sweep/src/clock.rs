@@ -35,10 +35,11 @@ pub const PIPELINE_MHZ: f64 = 38.3;
 /// (stop 38) it was 30.4 MHz, on `pixel_bus`'s path into span.
 pub const GPU_TOP_MHZ: f64 = 41.8;
 
-/// The vector unit's ECP5 Fmax (`rtl::vector`, paper 004) at the default design, MHz,
-/// placed and routed alone (README, "Units"): the clock `render --engine rtl --method
-/// vector` gives its frame times at; `cull_sort` and `pixel_out` route faster alone.
-pub const VECTOR_MHZ: f64 = 72.8;
+/// The barycentric pipeline's ECP5 Fmax (`raster_top` with `METHOD = 1`: `cull_sort`,
+/// `rtl::vector` at one lane, `pixel_out`) at the default design, MHz, placed and routed
+/// whole (LFE5U-45F, router1; README, "Units"): its critical path is the vector unit's a/b
+/// product (72.8 MHz routed alone).
+pub const VECTOR_PIPELINE_MHZ: f64 = 62.8;
 
 /// The design [`MEASURED_MHZ`] and [`PIPELINE_MHZ`] were measured at: size class
 /// `fx::RTL_CLASS` at its default formats, K = 7, L = `model::divider::LATENCY` (25).

@@ -135,6 +135,9 @@ impl Task<'_> {
     /// every row.
     fn priced(&self, mut row: Row, model: &Model) -> Row {
         let n = self.point.class(self.input.trilist.width, self.input.trilist.height);
+        if self.point.method == Method::Vector {
+            return self.priced_vector(row, n);
+        }
         if self.point.method != Method::Scanline || rtl::config::check(n, &self.formats).is_err() {
             return row;
         }
@@ -147,6 +150,22 @@ impl Task<'_> {
         let measured = model.measured(&design);
         (row.cost, row.cost_source) =
             (Some(measured.unwrap_or_else(|| model.pipeline(&design))), Some(source(measured.is_some())));
+        row
+    }
+
+    /// `row` (the vector method at size class `n`) with the clock, frame time and cost of
+    /// its pipeline in RTL, `raster_top` with `METHOD = 1` (`rtl::vector`: one lane), at the
+    /// design it was built and measured at: the default formats of `clock::measured_design`
+    /// and one lane. Elsewhere none: no area model covers the vector unit yet.
+    fn priced_vector(&self, mut row: Row, n: u32) -> Row {
+        let d = clock::measured_design();
+        if self.params["lanes"] != 1 || n != d.class || self.formats != d.formats {
+            return row;
+        }
+        let mhz = clock::VECTOR_PIPELINE_MHZ;
+        (row.clock_mhz, row.clock_source) = (Some(mhz), Some(Source::Measured));
+        row.frame_us = Some(row.cycles as f64 / mhz);
+        (row.cost, row.cost_source) = (Some(crate::area::VECTOR_PIPELINE), Some(Source::Measured));
         row
     }
 }

@@ -79,8 +79,9 @@ fn sweep_skips_what_the_shading_engines_cannot_draw() {
 }
 
 /// Cost and clock: measured at the default design (Yosys' raster_top among the calibration
-/// samples, the routed clock), modelled at a design never built, absent where no RTL
-/// pipeline exists (vector).
+/// samples, the routed clock), modelled at a design never built; the vector method's at one
+/// lane and the default formats (its pipeline in RTL, measured), absent at other vector
+/// points (no area model covers the vector unit).
 #[test]
 fn sweep_rows_carry_cost_and_clock_measured_or_modelled() {
     use sweep::area::{Model, PIPELINE};
@@ -103,7 +104,11 @@ fn sweep_rows_carry_cost_and_clock_measured_or_modelled() {
     // 6 subpixel bits with every other quantity wide: a larger, slower design.
     let wide = row("scanline", "xy.frac=6");
     assert!(wide.cost.unwrap().ge > c7.ge && wide.clock_mhz.unwrap() < sweep::clock::PIPELINE_MHZ);
-    for r in swept.rows.iter().filter(|r| r.method == "vector") {
+    let one_lane = row("vector", "lanes=1");
+    assert_eq!((one_lane.cost, one_lane.cost_source), (Some(sweep::area::VECTOR_PIPELINE), Some(Source::Measured)));
+    let mhz = sweep::clock::VECTOR_PIPELINE_MHZ;
+    assert_eq!((one_lane.clock_mhz, one_lane.frame_us), (Some(mhz), Some(one_lane.cycles as f64 / mhz)));
+    for r in swept.rows.iter().filter(|r| r.method == "vector" && r.point != "lanes=1") {
         assert_eq!((r.cost, r.clock_mhz, r.frame_us), (None, None, None), "{} {}", r.method, r.point);
     }
 }
