@@ -1,6 +1,6 @@
 
 
-module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
+module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out_valid,out_ready,out_mask,out_x,out_y,out_z,out_rgb,idle);
     
     // Module arguments
     input wire  clock;
@@ -30,14 +30,13 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     input wire  [7:0] inp$v2_c2;
     input wire  [15:0] inp$v2_iw;
     input wire  [5:0] inp$crosses;
-    output reg  out$valid;
-    input wire  out$ready;
-    output reg  [9:0] out$x;
-    output reg  [9:0] out$y;
-    output reg  [15:0] out$z;
-    output reg  [7:0] out$rgb0;
-    output reg  [7:0] out$rgb1;
-    output reg  [7:0] out$rgb2;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  out_mask;
+    output reg  [9:0] out_x;
+    output reg  [9:0] out_y;
+    output reg  [15:0] out_z;
+    output reg  [23:0] out_rgb;
     output reg  idle;
     
     // Constant declarations
@@ -54,25 +53,52 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     localparam  px_half_m1 = 17'b111;
     localparam  px_half = 17'b1000;
     localparam  frac = 8'h4;
+    localparam  chunk = 10'b1111111111;
+    localparam  chunk_p = 13'b1111111111111;
+    localparam  lg = 8'h0;
+    localparam  one_s = 8'h1;
+    localparam  step = 10'b1;
     localparam  recip_n = 58'h100000000000000;
-    localparam  x_shift = 8'h1;
-    localparam  y_shift = 8'hb;
-    localparam  one = 28'h4000000;
-    localparam  half_pair = 8'h1c;
-    localparam  full = 8'hff;
+    localparam  y_shift = 8'ha;
+    localparam  at_mask$0 = 1'b1;
     
     // Stub signals
-    wire  persp$on;
-    reg  div$clock;
-    reg  div$inp_valid;
-    wire  div$inp_ready;
-    reg  div$hold;
-    reg  [57:0] div$inp_n;
-    reg  [33:0] div$inp_d;
-    wire  div$out_valid;
-    reg  div$out_ready;
-    wire  [25:0] div$out_q;
-    wire  [33:0] div$out_r;
+    reg  lanes$0$clock;
+    reg  lanes$0$run;
+    reg  lanes$0$load;
+    reg  [34:0] lanes$0$g_0;
+    reg  [34:0] lanes$0$g_1;
+    reg  [34:0] lanes$0$g_2;
+    reg  lanes$0$valid;
+    reg  [9:0] lanes$0$x;
+    reg  [9:0] lanes$0$x0;
+    reg  [9:0] lanes$0$x1;
+    reg  [34:0] lanes$0$w_0;
+    reg  [34:0] lanes$0$w_1;
+    reg  [34:0] lanes$0$w_2;
+    reg  lanes$0$owns_0;
+    reg  lanes$0$owns_1;
+    reg  lanes$0$owns_2;
+    reg  [24:0] lanes$0$c_mant;
+    reg  [7:0] lanes$0$c_exp;
+    reg  [18:0] lanes$0$c_d1z;
+    reg  [18:0] lanes$0$c_d2z;
+    reg  [17:0] lanes$0$c_z0;
+    reg  [15:0] lanes$0$c_iw_0;
+    reg  [15:0] lanes$0$c_iw_1;
+    reg  [15:0] lanes$0$c_iw_2;
+    reg  [8:0] lanes$0$c_d1c_0;
+    reg  [8:0] lanes$0$c_d1c_1;
+    reg  [8:0] lanes$0$c_d1c_2;
+    reg  [8:0] lanes$0$c_d2c_0;
+    reg  [8:0] lanes$0$c_d2c_1;
+    reg  [8:0] lanes$0$c_d2c_2;
+    reg  [7:0] lanes$0$c_c0_0;
+    reg  [7:0] lanes$0$c_c0_1;
+    reg  [7:0] lanes$0$c_c0_2;
+    wire  lanes$0$o_valid;
+    wire  [15:0] lanes$0$o_z;
+    wire  [23:0] lanes$0$o_rgb;
     reg  div_a$clock;
     reg  div_a$inp_valid;
     wire  div_a$inp_ready;
@@ -93,81 +119,6 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [16:0] mul_s$1$a;
     reg  [16:0] mul_s$1$b;
     wire  [34:0] mul_s$1$p;
-    reg  mul_a$clock;
-    reg  mul_a$en;
-    reg  [34:0] mul_a$a;
-    reg  [25:0] mul_a$b;
-    wire  [60:0] mul_a$p;
-    reg  mul_b$clock;
-    reg  mul_b$en;
-    reg  [34:0] mul_b$a;
-    reg  [25:0] mul_b$b;
-    wire  [60:0] mul_b$p;
-    reg  mul_z1$clock;
-    reg  mul_z1$en;
-    reg  [18:0] mul_z1$a;
-    reg  [27:0] mul_z1$b;
-    wire  [47:0] mul_z1$p;
-    reg  mul_z2$clock;
-    reg  mul_z2$en;
-    reg  [18:0] mul_z2$a;
-    reg  [27:0] mul_z2$b;
-    wire  [47:0] mul_z2$p;
-    reg  mul_l$0$clock;
-    reg  mul_l$0$en;
-    reg  [27:0] mul_l$0$a;
-    reg  [16:0] mul_l$0$b;
-    wire  [44:0] mul_l$0$p;
-    reg  mul_l$1$clock;
-    reg  mul_l$1$en;
-    reg  [27:0] mul_l$1$a;
-    reg  [16:0] mul_l$1$b;
-    wire  [44:0] mul_l$1$p;
-    reg  mul_l$2$clock;
-    reg  mul_l$2$en;
-    reg  [27:0] mul_l$2$a;
-    reg  [16:0] mul_l$2$b;
-    wire  [44:0] mul_l$2$p;
-    reg  mul_ra$clock;
-    reg  mul_ra$en;
-    reg  [27:0] mul_ra$a;
-    reg  [25:0] mul_ra$b;
-    wire  [53:0] mul_ra$p;
-    reg  mul_rb$clock;
-    reg  mul_rb$en;
-    reg  [27:0] mul_rb$a;
-    reg  [25:0] mul_rb$b;
-    wire  [53:0] mul_rb$p;
-    reg  mul_c1$0$clock;
-    reg  mul_c1$0$en;
-    reg  [8:0] mul_c1$0$a;
-    reg  [27:0] mul_c1$0$b;
-    wire  [37:0] mul_c1$0$p;
-    reg  mul_c1$1$clock;
-    reg  mul_c1$1$en;
-    reg  [8:0] mul_c1$1$a;
-    reg  [27:0] mul_c1$1$b;
-    wire  [37:0] mul_c1$1$p;
-    reg  mul_c1$2$clock;
-    reg  mul_c1$2$en;
-    reg  [8:0] mul_c1$2$a;
-    reg  [27:0] mul_c1$2$b;
-    wire  [37:0] mul_c1$2$p;
-    reg  mul_c2$0$clock;
-    reg  mul_c2$0$en;
-    reg  [8:0] mul_c2$0$a;
-    reg  [27:0] mul_c2$0$b;
-    wire  [37:0] mul_c2$0$p;
-    reg  mul_c2$1$clock;
-    reg  mul_c2$1$en;
-    reg  [8:0] mul_c2$1$a;
-    reg  [27:0] mul_c2$1$b;
-    wire  [37:0] mul_c2$1$p;
-    reg  mul_c2$2$clock;
-    reg  mul_c2$2$en;
-    reg  [8:0] mul_c2$2$a;
-    reg  [27:0] mul_c2$2$b;
-    wire  [37:0] mul_c2$2$p;
     reg  sbusy$d;
     wire  sbusy$q;
     reg  sbusy$clock;
@@ -183,6 +134,9 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [7:0] hold$1$d;
     wire  [7:0] hold$1$q;
     reg  hold$1$clock;
+    reg  sp$d;
+    wire  sp$q;
+    reg  sp$clock;
     reg  wp$d;
     wire  wp$q;
     reg  wp$clock;
@@ -282,6 +236,9 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [15:0] max_yr$d;
     wire  [15:0] max_yr$q;
     reg  max_yr$clock;
+    reg  [15:0] top_xr$d;
+    wire  [15:0] top_xr$q;
+    reg  top_xr$clock;
     reg  [16:0] neg_lo_x$x;
     wire  neg_lo_x$neg;
     reg  [16:0] neg_lo_y$x;
@@ -298,6 +255,10 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     wire  [16:0] ext_max_x$y;
     reg  [15:0] ext_max_y$x;
     wire  [16:0] ext_max_y$y;
+    reg  [15:0] ext_top$x;
+    wire  [16:0] ext_top$y;
+    reg  [15:0] neg_top$x;
+    wire  neg_top$neg;
     reg  [12:0] bx0$d;
     wire  [12:0] bx0$q;
     reg  bx0$clock;
@@ -316,6 +277,9 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  empty$d;
     wire  empty$q;
     reg  empty$clock;
+    reg  [12:0] cs$d;
+    wire  [12:0] cs$q;
+    reg  cs$clock;
     reg  [34:0] area$d;
     wire  [34:0] area$q;
     reg  area$clock;
@@ -332,15 +296,9 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [33:0] norm_a$x;
     reg  [7:0] norm_a$exp;
     wire  [33:0] norm_a$d;
-    reg  [29:0] norm_s$x;
-    reg  [7:0] norm_s$exp;
-    wire  [33:0] norm_s$d;
     reg  [33:0] div_da$d;
     wire  [33:0] div_da$q;
     reg  div_da$clock;
-    reg  [33:0] div_d$d;
-    wire  [33:0] div_d$q;
-    reg  div_d$clock;
     reg  [24:0] mant$d;
     wire  [24:0] mant$q;
     reg  mant$clock;
@@ -362,30 +320,6 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [16:0] dy$2$d;
     wire  [16:0] dy$2$q;
     reg  dy$2$clock;
-    reg  [16:0] dx_neg$0$x;
-    wire  dx_neg$0$neg;
-    reg  [16:0] dx_neg$1$x;
-    wire  dx_neg$1$neg;
-    reg  [16:0] dx_neg$2$x;
-    wire  dx_neg$2$neg;
-    reg  [16:0] dy_neg$0$x;
-    wire  dy_neg$0$neg;
-    reg  [16:0] dy_neg$1$x;
-    wire  dy_neg$1$neg;
-    reg  [16:0] dy_neg$2$x;
-    wire  dy_neg$2$neg;
-    reg  [16:0] edx$0$x;
-    wire  [34:0] edx$0$y;
-    reg  [16:0] edx$1$x;
-    wire  [34:0] edx$1$y;
-    reg  [16:0] edx$2$x;
-    wire  [34:0] edx$2$y;
-    reg  [16:0] edy$0$x;
-    wire  [34:0] edy$0$y;
-    reg  [16:0] edy$1$x;
-    wire  [34:0] edy$1$y;
-    reg  [16:0] edy$2$x;
-    wire  [34:0] edy$2$y;
     reg  [34:0] w0$0$d;
     wire  [34:0] w0$0$q;
     reg  w0$0$clock;
@@ -395,30 +329,6 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [34:0] w0$2$d;
     wire  [34:0] w0$2$q;
     reg  w0$2$clock;
-    reg  [34:0] wrow$0$d;
-    wire  [34:0] wrow$0$q;
-    reg  wrow$0$clock;
-    reg  [34:0] wrow$1$d;
-    wire  [34:0] wrow$1$q;
-    reg  wrow$1$clock;
-    reg  [34:0] wrow$2$d;
-    wire  [34:0] wrow$2$q;
-    reg  wrow$2$clock;
-    reg  [34:0] w$0$d;
-    wire  [34:0] w$0$q;
-    reg  w$0$clock;
-    reg  [34:0] w$1$d;
-    wire  [34:0] w$1$q;
-    reg  w$1$clock;
-    reg  [34:0] w$2$d;
-    wire  [34:0] w$2$q;
-    reg  w$2$clock;
-    reg  [34:0] w_neg$0$x;
-    wire  w_neg$0$neg;
-    reg  [34:0] w_neg$1$x;
-    wire  w_neg$1$neg;
-    reg  [34:0] w_neg$2$x;
-    wire  w_neg$2$neg;
     reg  [18:0] d1z$d;
     wire  [18:0] d1z$q;
     reg  d1z$clock;
@@ -443,12 +353,198 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [8:0] d2c$2$d;
     wire  [8:0] d2c$2$q;
     reg  d2c$2$clock;
+    reg  sv$d;
+    wire  sv$q;
+    reg  sv$clock;
+    reg  [9:0] sy$d;
+    wire  [9:0] sy$q;
+    reg  sy$clock;
+    reg  [9:0] sy1$d;
+    wire  [9:0] sy1$q;
+    reg  sy1$clock;
+    reg  [9:0] sc0$d;
+    wire  [9:0] sc0$q;
+    reg  sc0$clock;
+    reg  [9:0] sc1$d;
+    wire  [9:0] sc1$q;
+    reg  sc1$clock;
+    reg  [9:0] sx0$d;
+    wire  [9:0] sx0$q;
+    reg  sx0$clock;
+    reg  [9:0] sx1$d;
+    wire  [9:0] sx1$q;
+    reg  sx1$clock;
+    reg  [9:0] sl$d;
+    wire  [9:0] sl$q;
+    reg  sl$clock;
+    reg  [9:0] sr$d;
+    wire  [9:0] sr$q;
+    reg  sr$clock;
+    reg  [34:0] el$0$d;
+    wire  [34:0] el$0$q;
+    reg  el$0$clock;
+    reg  [34:0] el$1$d;
+    wire  [34:0] el$1$q;
+    reg  el$1$clock;
+    reg  [34:0] el$2$d;
+    wire  [34:0] el$2$q;
+    reg  el$2$clock;
+    reg  [34:0] er$0$d;
+    wire  [34:0] er$0$q;
+    reg  er$0$clock;
+    reg  [34:0] er$1$d;
+    wire  [34:0] er$1$q;
+    reg  er$1$clock;
+    reg  [34:0] er$2$d;
+    wire  [34:0] er$2$q;
+    reg  er$2$clock;
+    reg  [34:0] ell$0$d;
+    wire  [34:0] ell$0$q;
+    reg  ell$0$clock;
+    reg  [34:0] ell$1$d;
+    wire  [34:0] ell$1$q;
+    reg  ell$1$clock;
+    reg  [34:0] ell$2$d;
+    wire  [34:0] ell$2$q;
+    reg  ell$2$clock;
+    reg  [34:0] elm$0$d;
+    wire  [34:0] elm$0$q;
+    reg  elm$0$clock;
+    reg  [34:0] elm$1$d;
+    wire  [34:0] elm$1$q;
+    reg  elm$1$clock;
+    reg  [34:0] elm$2$d;
+    wire  [34:0] elm$2$q;
+    reg  elm$2$clock;
+    reg  [34:0] ern$0$d;
+    wire  [34:0] ern$0$q;
+    reg  ern$0$clock;
+    reg  [34:0] ern$1$d;
+    wire  [34:0] ern$1$q;
+    reg  ern$1$clock;
+    reg  [34:0] ern$2$d;
+    wire  [34:0] ern$2$q;
+    reg  ern$2$clock;
+    reg  [16:0] sdx$0$d;
+    wire  [16:0] sdx$0$q;
+    reg  sdx$0$clock;
+    reg  [16:0] sdx$1$d;
+    wire  [16:0] sdx$1$q;
+    reg  sdx$1$clock;
+    reg  [16:0] sdx$2$d;
+    wire  [16:0] sdx$2$q;
+    reg  sdx$2$clock;
+    reg  [16:0] sdy$0$d;
+    wire  [16:0] sdy$0$q;
+    reg  sdy$0$clock;
+    reg  [16:0] sdy$1$d;
+    wire  [16:0] sdy$1$q;
+    reg  sdy$1$clock;
+    reg  [16:0] sdy$2$d;
+    wire  [16:0] sdy$2$q;
+    reg  sdy$2$clock;
+    reg  [16:0] scls$0$dx;
+    reg  [16:0] scls$0$dy;
+    wire  scls$0$left;
+    wire  scls$0$right;
+    wire  scls$0$flat;
+    wire  scls$0$owns;
+    wire  [34:0] scls$0$g;
+    wire  [34:0] scls$0$h;
+    reg  [16:0] scls$1$dx;
+    reg  [16:0] scls$1$dy;
+    wire  scls$1$left;
+    wire  scls$1$right;
+    wire  scls$1$flat;
+    wire  scls$1$owns;
+    wire  [34:0] scls$1$g;
+    wire  [34:0] scls$1$h;
+    reg  [16:0] scls$2$dx;
+    reg  [16:0] scls$2$dy;
+    wire  scls$2$left;
+    wire  scls$2$right;
+    wire  scls$2$flat;
+    wire  scls$2$owns;
+    wire  [34:0] scls$2$g;
+    wire  [34:0] scls$2$h;
+    reg  [16:0] hcls$0$dx;
+    reg  [16:0] hcls$0$dy;
+    wire  hcls$0$left;
+    wire  hcls$0$right;
+    wire  hcls$0$flat;
+    wire  hcls$0$owns;
+    wire  [34:0] hcls$0$g;
+    wire  [34:0] hcls$0$h;
+    reg  [16:0] hcls$1$dx;
+    reg  [16:0] hcls$1$dy;
+    wire  hcls$1$left;
+    wire  hcls$1$right;
+    wire  hcls$1$flat;
+    wire  hcls$1$owns;
+    wire  [34:0] hcls$1$g;
+    wire  [34:0] hcls$1$h;
+    reg  [16:0] hcls$2$dx;
+    reg  [16:0] hcls$2$dy;
+    wire  hcls$2$left;
+    wire  hcls$2$right;
+    wire  hcls$2$flat;
+    wire  hcls$2$owns;
+    wire  [34:0] hcls$2$g;
+    wire  [34:0] hcls$2$h;
+    reg  [34:0] rej_ll$0$e;
+    reg  rej_ll$0$owns;
+    wire  rej_ll$0$rejects;
+    reg  [34:0] rej_ll$1$e;
+    reg  rej_ll$1$owns;
+    wire  rej_ll$1$rejects;
+    reg  [34:0] rej_ll$2$e;
+    reg  rej_ll$2$owns;
+    wire  rej_ll$2$rejects;
+    reg  [34:0] rej_lm$0$e;
+    reg  rej_lm$0$owns;
+    wire  rej_lm$0$rejects;
+    reg  [34:0] rej_lm$1$e;
+    reg  rej_lm$1$owns;
+    wire  rej_lm$1$rejects;
+    reg  [34:0] rej_lm$2$e;
+    reg  rej_lm$2$owns;
+    wire  rej_lm$2$rejects;
+    reg  [34:0] rej_lf$0$e;
+    reg  rej_lf$0$owns;
+    wire  rej_lf$0$rejects;
+    reg  [34:0] rej_lf$1$e;
+    reg  rej_lf$1$owns;
+    wire  rej_lf$1$rejects;
+    reg  [34:0] rej_lf$2$e;
+    reg  rej_lf$2$owns;
+    wire  rej_lf$2$rejects;
+    reg  [34:0] rej_rf$0$e;
+    reg  rej_rf$0$owns;
+    wire  rej_rf$0$rejects;
+    reg  [34:0] rej_rf$1$e;
+    reg  rej_rf$1$owns;
+    wire  rej_rf$1$rejects;
+    reg  [34:0] rej_rf$2$e;
+    reg  rej_rf$2$owns;
+    wire  rej_rf$2$rejects;
+    reg  [34:0] rej_rn$0$e;
+    reg  rej_rn$0$owns;
+    wire  rej_rn$0$rejects;
+    reg  [34:0] rej_rn$1$e;
+    reg  rej_rn$1$owns;
+    wire  rej_rn$1$rejects;
+    reg  [34:0] rej_rn$2$e;
+    reg  rej_rn$2$owns;
+    wire  rej_rn$2$rejects;
     reg  tv$d;
     wire  tv$q;
     reg  tv$clock;
     reg  [9:0] tx$d;
     wire  [9:0] tx$q;
     reg  tx$clock;
+    reg  [9:0] te$d;
+    wire  [9:0] te$q;
+    reg  te$clock;
     reg  [9:0] ty$d;
     wire  [9:0] ty$q;
     reg  ty$clock;
@@ -458,9 +554,15 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [9:0] wx1$d;
     wire  [9:0] wx1$q;
     reg  wx1$clock;
-    reg  [9:0] wy1$d;
-    wire  [9:0] wy1$q;
-    reg  wy1$clock;
+    reg  [34:0] w$0$d;
+    wire  [34:0] w$0$q;
+    reg  w$0$clock;
+    reg  [34:0] w$1$d;
+    wire  [34:0] w$1$q;
+    reg  w$1$clock;
+    reg  [34:0] w$2$d;
+    wire  [34:0] w$2$q;
+    reg  w$2$clock;
     reg  [16:0] wdx$0$d;
     wire  [16:0] wdx$0$q;
     reg  wdx$0$clock;
@@ -479,6 +581,30 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [16:0] wdy$2$d;
     wire  [16:0] wdy$2$q;
     reg  wdy$2$clock;
+    reg  [16:0] wcls$0$dx;
+    reg  [16:0] wcls$0$dy;
+    wire  wcls$0$left;
+    wire  wcls$0$right;
+    wire  wcls$0$flat;
+    wire  wcls$0$owns;
+    wire  [34:0] wcls$0$g;
+    wire  [34:0] wcls$0$h;
+    reg  [16:0] wcls$1$dx;
+    reg  [16:0] wcls$1$dy;
+    wire  wcls$1$left;
+    wire  wcls$1$right;
+    wire  wcls$1$flat;
+    wire  wcls$1$owns;
+    wire  [34:0] wcls$1$g;
+    wire  [34:0] wcls$1$h;
+    reg  [16:0] wcls$2$dx;
+    reg  [16:0] wcls$2$dy;
+    wire  wcls$2$left;
+    wire  wcls$2$right;
+    wire  wcls$2$flat;
+    wire  wcls$2$owns;
+    wire  [34:0] wcls$2$g;
+    wire  [34:0] wcls$2$h;
     reg  [24:0] k_mant$0$d;
     wire  [24:0] k_mant$0$q;
     reg  k_mant$0$clock;
@@ -581,166 +707,24 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [7:0] k_c0$5$d;
     wire  [7:0] k_c0$5$q;
     reg  k_c0$5$clock;
-    reg  [17:0] ez0$x;
-    wire  [18:0] ez0$y;
     reg  tag_dl$clock;
     reg  tag_dl$en;
-    reg  [20:0] tag_dl$d;
-    wire  [20:0] tag_dl$q;
-    reg  [60:0] rs_a$x;
-    reg  [7:0] rs_a$by;
-    wire  [27:0] rs_a$y;
-    reg  [60:0] rs_b$x;
-    reg  [7:0] rs_b$by;
-    wire  [27:0] rs_b$y;
-    reg  [27:0] a3$d;
-    wire  [27:0] a3$q;
-    reg  a3$clock;
-    reg  [27:0] b3$d;
-    wire  [27:0] b3$q;
-    reg  b3$clock;
-    reg  [47:0] rs_z$x;
-    reg  [7:0] rs_z$by;
-    wire  [35:0] rs_z$y;
-    reg  [18:0] rs_z0$x;
-    reg  [7:0] rs_z0$by;
-    wire  [35:0] rs_z0$y;
-    reg  [35:0] z6$d;
-    wire  [35:0] z6$q;
-    reg  z6$clock;
-    reg  [35:0] depth_of$x;
-    wire  depth_of$neg;
-    wire  depth_of$over;
-    wire  [15:0] depth_of$low;
-    reg  dtag_dl$clock;
-    reg  dtag_dl$en;
-    reg  [16:0] dtag_dl$d;
-    wire  [16:0] dtag_dl$q;
-    reg  [44:0] rs_q$0$x;
-    reg  [7:0] rs_q$0$by;
-    wire  [27:0] rs_q$0$y;
-    reg  [44:0] rs_q$1$x;
-    reg  [7:0] rs_q$1$by;
-    wire  [27:0] rs_q$1$y;
-    reg  [44:0] rs_q$2$x;
-    reg  [7:0] rs_q$2$by;
-    wire  [27:0] rs_q$2$y;
-    reg  [27:0] q6$0$d;
-    wire  [27:0] q6$0$q;
-    reg  q6$0$clock;
-    reg  [27:0] q6$1$d;
-    wire  [27:0] q6$1$q;
-    reg  q6$1$clock;
-    reg  [27:0] q6$2$d;
-    wire  [27:0] q6$2$q;
-    reg  q6$2$clock;
-    reg  [27:0] eq$0$x;
-    wire  [29:0] eq$0$y;
-    reg  [27:0] eq$1$x;
-    wire  [29:0] eq$1$y;
-    reg  [27:0] eq$2$x;
-    wire  [29:0] eq$2$y;
-    reg  [29:0] sum7$d;
-    wire  [29:0] sum7$q;
-    reg  sum7$clock;
-    reg  [29:0] lead_s$x;
-    wire  [7:0] lead_s$pos;
-    reg  [29:0] sum8$d;
-    wire  [29:0] sum8$q;
-    reg  sum8$clock;
-    reg  [7:0] exp8$d;
-    wire  [7:0] exp8$q;
-    reg  exp8$clock;
-    reg  q_dl$clock;
-    reg  q_dl$en;
-    reg  [55:0] q_dl$d;
-    wire  [55:0] q_dl$q;
-    reg  exp_dl$clock;
-    reg  exp_dl$en;
-    reg  [7:0] exp_dl$d;
-    wire  [7:0] exp_dl$q;
-    reg  ab_dl$clock;
-    reg  ab_dl$en;
-    reg  [55:0] ab_dl$d;
-    wire  [55:0] ab_dl$q;
-    reg  [53:0] rs_ra$x;
-    reg  [7:0] rs_ra$by;
-    wire  [27:0] rs_ra$y;
-    reg  [53:0] rs_rb$x;
-    reg  [7:0] rs_rb$by;
-    wire  [27:0] rs_rb$y;
-    reg  [27:0] ca11$d;
-    wire  [27:0] ca11$q;
-    reg  ca11$clock;
-    reg  [27:0] cb11$d;
-    wire  [27:0] cb11$q;
-    reg  cb11$clock;
-    reg  [37:0] rs_c$0$x;
-    reg  [7:0] rs_c$0$by;
-    wire  [31:0] rs_c$0$y;
-    reg  [37:0] rs_c$1$x;
-    reg  [7:0] rs_c$1$by;
-    wire  [31:0] rs_c$1$y;
-    reg  [37:0] rs_c$2$x;
-    reg  [7:0] rs_c$2$by;
-    wire  [31:0] rs_c$2$y;
-    reg  [8:0] rs_c0$0$x;
-    reg  [7:0] rs_c0$0$by;
-    wire  [31:0] rs_c0$0$y;
-    reg  [8:0] rs_c0$1$x;
-    reg  [7:0] rs_c0$1$by;
-    wire  [31:0] rs_c0$1$y;
-    reg  [8:0] rs_c0$2$x;
-    reg  [7:0] rs_c0$2$by;
-    wire  [31:0] rs_c0$2$y;
-    reg  [31:0] c14$0$d;
-    wire  [31:0] c14$0$q;
-    reg  c14$0$clock;
-    reg  [31:0] c14$1$d;
-    wire  [31:0] c14$1$q;
-    reg  c14$1$clock;
-    reg  [31:0] c14$2$d;
-    wire  [31:0] c14$2$q;
-    reg  c14$2$clock;
-    reg  [31:0] color_of$0$x;
-    wire  color_of$0$neg;
-    wire  color_of$0$over;
-    wire  [7:0] color_of$0$low;
-    reg  [31:0] color_of$1$x;
-    wire  color_of$1$neg;
-    wire  color_of$1$over;
-    wire  [7:0] color_of$1$low;
-    reg  [31:0] color_of$2$x;
-    wire  color_of$2$neg;
-    wire  color_of$2$over;
-    wire  [7:0] color_of$2$low;
-    reg  o_valid$d;
-    wire  o_valid$q;
-    reg  o_valid$clock;
+    reg  [19:0] tag_dl$d;
+    wire  [19:0] tag_dl$q;
     reg  [9:0] o_x$d;
     wire  [9:0] o_x$q;
     reg  o_x$clock;
     reg  [9:0] o_y$d;
     wire  [9:0] o_y$q;
     reg  o_y$clock;
-    reg  [15:0] o_z$d;
-    wire  [15:0] o_z$q;
-    reg  o_z$clock;
-    reg  [7:0] o_rgb$0$d;
-    wire  [7:0] o_rgb$0$q;
-    reg  o_rgb$0$clock;
-    reg  [7:0] o_rgb$1$d;
-    wire  [7:0] o_rgb$1$q;
-    reg  o_rgb$1$clock;
-    reg  [7:0] o_rgb$2$d;
-    wire  [7:0] o_rgb$2$q;
-    reg  o_rgb$2$clock;
+    reg  [15:0] place_z$0$x;
+    wire  [15:0] place_z$0$y;
+    reg  [23:0] place_rgb$0$x;
+    wire  [23:0] place_rgb$0$y;
     
     // Local signals
     reg  run;
     reg  take;
-    reg  at_last;
-    reg  walk_ok;
     reg  set_ok;
     reg  hand;
     reg  [15:0] ux$0;
@@ -753,19 +737,39 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [15:0] max_x;
     reg  [15:0] min_y;
     reg  [15:0] max_y;
+    reg  [15:0] top_x;
     reg  [16:0] lo_x;
     reg  [16:0] lo_y;
     reg  [16:0] hi_x;
     reg  [16:0] hi_y;
     reg  [12:0] hi_x_c;
     reg  [12:0] hi_y_c;
+    reg  [12:0] top_c;
     reg  [16:0] cx0;
     reg  [16:0] cy0;
     reg  [24:0] mant_c;
-    reg  owns$0;
-    reg  owns$1;
-    reg  owns$2;
-    reg  covered;
+    reg  [34:0] s_chunk$0;
+    reg  [34:0] s_chunk$1;
+    reg  [34:0] s_chunk$2;
+    reg  [34:0] h_chunk$0;
+    reg  [34:0] h_chunk$1;
+    reg  [34:0] h_chunk$2;
+    reg  [34:0] h_less$0;
+    reg  [34:0] h_less$1;
+    reg  [34:0] h_less$2;
+    reg  out_l;
+    reg  out_lm;
+    reg  out_r;
+    reg  out_rn;
+    reg  dead;
+    reg  l_right;
+    reg  l_left;
+    reg  r_left;
+    reg  r_right;
+    reg  found;
+    reg  row_empty;
+    reg  row_last;
+    reg  walk_free;
     reg  [24:0] c_mant;
     reg  [7:0] c_exp;
     reg  [18:0] c_d1z;
@@ -783,31 +787,52 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [7:0] c_c0$0;
     reg  [7:0] c_c0$1;
     reg  [7:0] c_c0$2;
-    reg  [20:0] tag;
-    reg  [20:0] tag_out;
-    reg  [16:0] dtag;
-    reg  [16:0] dtag_out;
-    reg  [29:0] sum_c;
-    reg  [55:0] q_pair;
-    reg  [55:0] ab_pair;
-    reg  [27:0] ca;
-    reg  [27:0] cb;
+    reg  [19:0] tag;
+    reg  g_mask$0;
+    reg  g_mask$1;
+    reg  [15:0] g_z$0;
+    reg  [15:0] g_z$1;
+    reg  [23:0] g_rgb$0;
+    reg  [23:0] g_rgb$1;
     
     // Sub module instances
-    vector$persp persp(
-        .on(persp$on)
-    );
-    vector$div div(
-        .clock(div$clock),
-        .inp_valid(div$inp_valid),
-        .inp_ready(div$inp_ready),
-        .hold(div$hold),
-        .inp_n(div$inp_n),
-        .inp_d(div$inp_d),
-        .out_valid(div$out_valid),
-        .out_ready(div$out_ready),
-        .out_q(div$out_q),
-        .out_r(div$out_r)
+    vector$lanes$0 lanes$0(
+        .clock(lanes$0$clock),
+        .run(lanes$0$run),
+        .load(lanes$0$load),
+        .g_0(lanes$0$g_0),
+        .g_1(lanes$0$g_1),
+        .g_2(lanes$0$g_2),
+        .valid(lanes$0$valid),
+        .x(lanes$0$x),
+        .x0(lanes$0$x0),
+        .x1(lanes$0$x1),
+        .w_0(lanes$0$w_0),
+        .w_1(lanes$0$w_1),
+        .w_2(lanes$0$w_2),
+        .owns_0(lanes$0$owns_0),
+        .owns_1(lanes$0$owns_1),
+        .owns_2(lanes$0$owns_2),
+        .c_mant(lanes$0$c_mant),
+        .c_exp(lanes$0$c_exp),
+        .c_d1z(lanes$0$c_d1z),
+        .c_d2z(lanes$0$c_d2z),
+        .c_z0(lanes$0$c_z0),
+        .c_iw_0(lanes$0$c_iw_0),
+        .c_iw_1(lanes$0$c_iw_1),
+        .c_iw_2(lanes$0$c_iw_2),
+        .c_d1c_0(lanes$0$c_d1c_0),
+        .c_d1c_1(lanes$0$c_d1c_1),
+        .c_d1c_2(lanes$0$c_d1c_2),
+        .c_d2c_0(lanes$0$c_d2c_0),
+        .c_d2c_1(lanes$0$c_d2c_1),
+        .c_d2c_2(lanes$0$c_d2c_2),
+        .c_c0_0(lanes$0$c_c0_0),
+        .c_c0_1(lanes$0$c_c0_1),
+        .c_c0_2(lanes$0$c_c0_2),
+        .o_valid(lanes$0$o_valid),
+        .o_z(lanes$0$o_z),
+        .o_rgb(lanes$0$o_rgb)
     );
     vector$div_a div_a(
         .clock(div_a$clock),
@@ -835,111 +860,6 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .b(mul_s$1$b),
         .p(mul_s$1$p)
     );
-    vector$mul_a mul_a(
-        .clock(mul_a$clock),
-        .en(mul_a$en),
-        .a(mul_a$a),
-        .b(mul_a$b),
-        .p(mul_a$p)
-    );
-    vector$mul_b mul_b(
-        .clock(mul_b$clock),
-        .en(mul_b$en),
-        .a(mul_b$a),
-        .b(mul_b$b),
-        .p(mul_b$p)
-    );
-    vector$mul_z1 mul_z1(
-        .clock(mul_z1$clock),
-        .en(mul_z1$en),
-        .a(mul_z1$a),
-        .b(mul_z1$b),
-        .p(mul_z1$p)
-    );
-    vector$mul_z2 mul_z2(
-        .clock(mul_z2$clock),
-        .en(mul_z2$en),
-        .a(mul_z2$a),
-        .b(mul_z2$b),
-        .p(mul_z2$p)
-    );
-    vector$mul_l$0 mul_l$0(
-        .clock(mul_l$0$clock),
-        .en(mul_l$0$en),
-        .a(mul_l$0$a),
-        .b(mul_l$0$b),
-        .p(mul_l$0$p)
-    );
-    vector$mul_l$1 mul_l$1(
-        .clock(mul_l$1$clock),
-        .en(mul_l$1$en),
-        .a(mul_l$1$a),
-        .b(mul_l$1$b),
-        .p(mul_l$1$p)
-    );
-    vector$mul_l$2 mul_l$2(
-        .clock(mul_l$2$clock),
-        .en(mul_l$2$en),
-        .a(mul_l$2$a),
-        .b(mul_l$2$b),
-        .p(mul_l$2$p)
-    );
-    vector$mul_ra mul_ra(
-        .clock(mul_ra$clock),
-        .en(mul_ra$en),
-        .a(mul_ra$a),
-        .b(mul_ra$b),
-        .p(mul_ra$p)
-    );
-    vector$mul_rb mul_rb(
-        .clock(mul_rb$clock),
-        .en(mul_rb$en),
-        .a(mul_rb$a),
-        .b(mul_rb$b),
-        .p(mul_rb$p)
-    );
-    vector$mul_c1$0 mul_c1$0(
-        .clock(mul_c1$0$clock),
-        .en(mul_c1$0$en),
-        .a(mul_c1$0$a),
-        .b(mul_c1$0$b),
-        .p(mul_c1$0$p)
-    );
-    vector$mul_c1$1 mul_c1$1(
-        .clock(mul_c1$1$clock),
-        .en(mul_c1$1$en),
-        .a(mul_c1$1$a),
-        .b(mul_c1$1$b),
-        .p(mul_c1$1$p)
-    );
-    vector$mul_c1$2 mul_c1$2(
-        .clock(mul_c1$2$clock),
-        .en(mul_c1$2$en),
-        .a(mul_c1$2$a),
-        .b(mul_c1$2$b),
-        .p(mul_c1$2$p)
-    );
-    vector$mul_c2$0 mul_c2$0(
-        .clock(mul_c2$0$clock),
-        .en(mul_c2$0$en),
-        .a(mul_c2$0$a),
-        .b(mul_c2$0$b),
-        .p(mul_c2$0$p)
-    );
-    vector$mul_c2$1 mul_c2$1(
-        .clock(mul_c2$1$clock),
-        .en(mul_c2$1$en),
-        .a(mul_c2$1$a),
-        .b(mul_c2$1$b),
-        .p(mul_c2$1$p)
-    );
-    vector$mul_c2$2 mul_c2$2(
-        .clock(mul_c2$2$clock),
-        .en(mul_c2$2$en),
-        .a(mul_c2$2$a),
-        .b(mul_c2$2$b),
-        .p(mul_c2$2$p)
-    );
     vector$sbusy sbusy(
         .d(sbusy$d),
         .q(sbusy$q),
@@ -964,6 +884,11 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .d(hold$1$d),
         .q(hold$1$q),
         .clock(hold$1$clock)
+    );
+    vector$sp sp(
+        .d(sp$d),
+        .q(sp$q),
+        .clock(sp$clock)
     );
     vector$wp wp(
         .d(wp$d),
@@ -1136,6 +1061,11 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .q(max_yr$q),
         .clock(max_yr$clock)
     );
+    vector$top_xr top_xr(
+        .d(top_xr$d),
+        .q(top_xr$q),
+        .clock(top_xr$clock)
+    );
     vector$neg_lo_x neg_lo_x(
         .x(neg_lo_x$x),
         .neg(neg_lo_x$neg)
@@ -1168,6 +1098,14 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .x(ext_max_y$x),
         .y(ext_max_y$y)
     );
+    vector$ext_top ext_top(
+        .x(ext_top$x),
+        .y(ext_top$y)
+    );
+    vector$neg_top neg_top(
+        .x(neg_top$x),
+        .neg(neg_top$neg)
+    );
     vector$bx0 bx0(
         .d(bx0$d),
         .q(bx0$q),
@@ -1198,6 +1136,11 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .q(empty$q),
         .clock(empty$clock)
     );
+    vector$cs cs(
+        .d(cs$d),
+        .q(cs$q),
+        .clock(cs$clock)
+    );
     vector$area area(
         .d(area$d),
         .q(area$q),
@@ -1226,20 +1169,10 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .exp(norm_a$exp),
         .d(norm_a$d)
     );
-    vector$norm_s norm_s(
-        .x(norm_s$x),
-        .exp(norm_s$exp),
-        .d(norm_s$d)
-    );
     vector$div_da div_da(
         .d(div_da$d),
         .q(div_da$q),
         .clock(div_da$clock)
-    );
-    vector$div_d div_d(
-        .d(div_d$d),
-        .q(div_d$q),
-        .clock(div_d$clock)
     );
     vector$mant mant(
         .d(mant$d),
@@ -1276,54 +1209,6 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .q(dy$2$q),
         .clock(dy$2$clock)
     );
-    vector$dx_neg$0 dx_neg$0(
-        .x(dx_neg$0$x),
-        .neg(dx_neg$0$neg)
-    );
-    vector$dx_neg$1 dx_neg$1(
-        .x(dx_neg$1$x),
-        .neg(dx_neg$1$neg)
-    );
-    vector$dx_neg$2 dx_neg$2(
-        .x(dx_neg$2$x),
-        .neg(dx_neg$2$neg)
-    );
-    vector$dy_neg$0 dy_neg$0(
-        .x(dy_neg$0$x),
-        .neg(dy_neg$0$neg)
-    );
-    vector$dy_neg$1 dy_neg$1(
-        .x(dy_neg$1$x),
-        .neg(dy_neg$1$neg)
-    );
-    vector$dy_neg$2 dy_neg$2(
-        .x(dy_neg$2$x),
-        .neg(dy_neg$2$neg)
-    );
-    vector$edx$0 edx$0(
-        .x(edx$0$x),
-        .y(edx$0$y)
-    );
-    vector$edx$1 edx$1(
-        .x(edx$1$x),
-        .y(edx$1$y)
-    );
-    vector$edx$2 edx$2(
-        .x(edx$2$x),
-        .y(edx$2$y)
-    );
-    vector$edy$0 edy$0(
-        .x(edy$0$x),
-        .y(edy$0$y)
-    );
-    vector$edy$1 edy$1(
-        .x(edy$1$x),
-        .y(edy$1$y)
-    );
-    vector$edy$2 edy$2(
-        .x(edy$2$x),
-        .y(edy$2$y)
-    );
     vector$w0$0 w0$0(
         .d(w0$0$d),
         .q(w0$0$q),
@@ -1338,48 +1223,6 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .d(w0$2$d),
         .q(w0$2$q),
         .clock(w0$2$clock)
-    );
-    vector$wrow$0 wrow$0(
-        .d(wrow$0$d),
-        .q(wrow$0$q),
-        .clock(wrow$0$clock)
-    );
-    vector$wrow$1 wrow$1(
-        .d(wrow$1$d),
-        .q(wrow$1$q),
-        .clock(wrow$1$clock)
-    );
-    vector$wrow$2 wrow$2(
-        .d(wrow$2$d),
-        .q(wrow$2$q),
-        .clock(wrow$2$clock)
-    );
-    vector$w$0 w$0(
-        .d(w$0$d),
-        .q(w$0$q),
-        .clock(w$0$clock)
-    );
-    vector$w$1 w$1(
-        .d(w$1$d),
-        .q(w$1$q),
-        .clock(w$1$clock)
-    );
-    vector$w$2 w$2(
-        .d(w$2$d),
-        .q(w$2$q),
-        .clock(w$2$clock)
-    );
-    vector$w_neg$0 w_neg$0(
-        .x(w_neg$0$x),
-        .neg(w_neg$0$neg)
-    );
-    vector$w_neg$1 w_neg$1(
-        .x(w_neg$1$x),
-        .neg(w_neg$1$neg)
-    );
-    vector$w_neg$2 w_neg$2(
-        .x(w_neg$2$x),
-        .neg(w_neg$2$neg)
     );
     vector$d1z d1z(
         .d(d1z$d),
@@ -1421,6 +1264,291 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .q(d2c$2$q),
         .clock(d2c$2$clock)
     );
+    vector$sv sv(
+        .d(sv$d),
+        .q(sv$q),
+        .clock(sv$clock)
+    );
+    vector$sy sy(
+        .d(sy$d),
+        .q(sy$q),
+        .clock(sy$clock)
+    );
+    vector$sy1 sy1(
+        .d(sy1$d),
+        .q(sy1$q),
+        .clock(sy1$clock)
+    );
+    vector$sc0 sc0(
+        .d(sc0$d),
+        .q(sc0$q),
+        .clock(sc0$clock)
+    );
+    vector$sc1 sc1(
+        .d(sc1$d),
+        .q(sc1$q),
+        .clock(sc1$clock)
+    );
+    vector$sx0 sx0(
+        .d(sx0$d),
+        .q(sx0$q),
+        .clock(sx0$clock)
+    );
+    vector$sx1 sx1(
+        .d(sx1$d),
+        .q(sx1$q),
+        .clock(sx1$clock)
+    );
+    vector$sl sl(
+        .d(sl$d),
+        .q(sl$q),
+        .clock(sl$clock)
+    );
+    vector$sr sr(
+        .d(sr$d),
+        .q(sr$q),
+        .clock(sr$clock)
+    );
+    vector$el$0 el$0(
+        .d(el$0$d),
+        .q(el$0$q),
+        .clock(el$0$clock)
+    );
+    vector$el$1 el$1(
+        .d(el$1$d),
+        .q(el$1$q),
+        .clock(el$1$clock)
+    );
+    vector$el$2 el$2(
+        .d(el$2$d),
+        .q(el$2$q),
+        .clock(el$2$clock)
+    );
+    vector$er$0 er$0(
+        .d(er$0$d),
+        .q(er$0$q),
+        .clock(er$0$clock)
+    );
+    vector$er$1 er$1(
+        .d(er$1$d),
+        .q(er$1$q),
+        .clock(er$1$clock)
+    );
+    vector$er$2 er$2(
+        .d(er$2$d),
+        .q(er$2$q),
+        .clock(er$2$clock)
+    );
+    vector$ell$0 ell$0(
+        .d(ell$0$d),
+        .q(ell$0$q),
+        .clock(ell$0$clock)
+    );
+    vector$ell$1 ell$1(
+        .d(ell$1$d),
+        .q(ell$1$q),
+        .clock(ell$1$clock)
+    );
+    vector$ell$2 ell$2(
+        .d(ell$2$d),
+        .q(ell$2$q),
+        .clock(ell$2$clock)
+    );
+    vector$elm$0 elm$0(
+        .d(elm$0$d),
+        .q(elm$0$q),
+        .clock(elm$0$clock)
+    );
+    vector$elm$1 elm$1(
+        .d(elm$1$d),
+        .q(elm$1$q),
+        .clock(elm$1$clock)
+    );
+    vector$elm$2 elm$2(
+        .d(elm$2$d),
+        .q(elm$2$q),
+        .clock(elm$2$clock)
+    );
+    vector$ern$0 ern$0(
+        .d(ern$0$d),
+        .q(ern$0$q),
+        .clock(ern$0$clock)
+    );
+    vector$ern$1 ern$1(
+        .d(ern$1$d),
+        .q(ern$1$q),
+        .clock(ern$1$clock)
+    );
+    vector$ern$2 ern$2(
+        .d(ern$2$d),
+        .q(ern$2$q),
+        .clock(ern$2$clock)
+    );
+    vector$sdx$0 sdx$0(
+        .d(sdx$0$d),
+        .q(sdx$0$q),
+        .clock(sdx$0$clock)
+    );
+    vector$sdx$1 sdx$1(
+        .d(sdx$1$d),
+        .q(sdx$1$q),
+        .clock(sdx$1$clock)
+    );
+    vector$sdx$2 sdx$2(
+        .d(sdx$2$d),
+        .q(sdx$2$q),
+        .clock(sdx$2$clock)
+    );
+    vector$sdy$0 sdy$0(
+        .d(sdy$0$d),
+        .q(sdy$0$q),
+        .clock(sdy$0$clock)
+    );
+    vector$sdy$1 sdy$1(
+        .d(sdy$1$d),
+        .q(sdy$1$q),
+        .clock(sdy$1$clock)
+    );
+    vector$sdy$2 sdy$2(
+        .d(sdy$2$d),
+        .q(sdy$2$q),
+        .clock(sdy$2$clock)
+    );
+    vector$scls$0 scls$0(
+        .dx(scls$0$dx),
+        .dy(scls$0$dy),
+        .left(scls$0$left),
+        .right(scls$0$right),
+        .flat(scls$0$flat),
+        .owns(scls$0$owns),
+        .g(scls$0$g),
+        .h(scls$0$h)
+    );
+    vector$scls$1 scls$1(
+        .dx(scls$1$dx),
+        .dy(scls$1$dy),
+        .left(scls$1$left),
+        .right(scls$1$right),
+        .flat(scls$1$flat),
+        .owns(scls$1$owns),
+        .g(scls$1$g),
+        .h(scls$1$h)
+    );
+    vector$scls$2 scls$2(
+        .dx(scls$2$dx),
+        .dy(scls$2$dy),
+        .left(scls$2$left),
+        .right(scls$2$right),
+        .flat(scls$2$flat),
+        .owns(scls$2$owns),
+        .g(scls$2$g),
+        .h(scls$2$h)
+    );
+    vector$hcls$0 hcls$0(
+        .dx(hcls$0$dx),
+        .dy(hcls$0$dy),
+        .left(hcls$0$left),
+        .right(hcls$0$right),
+        .flat(hcls$0$flat),
+        .owns(hcls$0$owns),
+        .g(hcls$0$g),
+        .h(hcls$0$h)
+    );
+    vector$hcls$1 hcls$1(
+        .dx(hcls$1$dx),
+        .dy(hcls$1$dy),
+        .left(hcls$1$left),
+        .right(hcls$1$right),
+        .flat(hcls$1$flat),
+        .owns(hcls$1$owns),
+        .g(hcls$1$g),
+        .h(hcls$1$h)
+    );
+    vector$hcls$2 hcls$2(
+        .dx(hcls$2$dx),
+        .dy(hcls$2$dy),
+        .left(hcls$2$left),
+        .right(hcls$2$right),
+        .flat(hcls$2$flat),
+        .owns(hcls$2$owns),
+        .g(hcls$2$g),
+        .h(hcls$2$h)
+    );
+    vector$rej_ll$0 rej_ll$0(
+        .e(rej_ll$0$e),
+        .owns(rej_ll$0$owns),
+        .rejects(rej_ll$0$rejects)
+    );
+    vector$rej_ll$1 rej_ll$1(
+        .e(rej_ll$1$e),
+        .owns(rej_ll$1$owns),
+        .rejects(rej_ll$1$rejects)
+    );
+    vector$rej_ll$2 rej_ll$2(
+        .e(rej_ll$2$e),
+        .owns(rej_ll$2$owns),
+        .rejects(rej_ll$2$rejects)
+    );
+    vector$rej_lm$0 rej_lm$0(
+        .e(rej_lm$0$e),
+        .owns(rej_lm$0$owns),
+        .rejects(rej_lm$0$rejects)
+    );
+    vector$rej_lm$1 rej_lm$1(
+        .e(rej_lm$1$e),
+        .owns(rej_lm$1$owns),
+        .rejects(rej_lm$1$rejects)
+    );
+    vector$rej_lm$2 rej_lm$2(
+        .e(rej_lm$2$e),
+        .owns(rej_lm$2$owns),
+        .rejects(rej_lm$2$rejects)
+    );
+    vector$rej_lf$0 rej_lf$0(
+        .e(rej_lf$0$e),
+        .owns(rej_lf$0$owns),
+        .rejects(rej_lf$0$rejects)
+    );
+    vector$rej_lf$1 rej_lf$1(
+        .e(rej_lf$1$e),
+        .owns(rej_lf$1$owns),
+        .rejects(rej_lf$1$rejects)
+    );
+    vector$rej_lf$2 rej_lf$2(
+        .e(rej_lf$2$e),
+        .owns(rej_lf$2$owns),
+        .rejects(rej_lf$2$rejects)
+    );
+    vector$rej_rf$0 rej_rf$0(
+        .e(rej_rf$0$e),
+        .owns(rej_rf$0$owns),
+        .rejects(rej_rf$0$rejects)
+    );
+    vector$rej_rf$1 rej_rf$1(
+        .e(rej_rf$1$e),
+        .owns(rej_rf$1$owns),
+        .rejects(rej_rf$1$rejects)
+    );
+    vector$rej_rf$2 rej_rf$2(
+        .e(rej_rf$2$e),
+        .owns(rej_rf$2$owns),
+        .rejects(rej_rf$2$rejects)
+    );
+    vector$rej_rn$0 rej_rn$0(
+        .e(rej_rn$0$e),
+        .owns(rej_rn$0$owns),
+        .rejects(rej_rn$0$rejects)
+    );
+    vector$rej_rn$1 rej_rn$1(
+        .e(rej_rn$1$e),
+        .owns(rej_rn$1$owns),
+        .rejects(rej_rn$1$rejects)
+    );
+    vector$rej_rn$2 rej_rn$2(
+        .e(rej_rn$2$e),
+        .owns(rej_rn$2$owns),
+        .rejects(rej_rn$2$rejects)
+    );
     vector$tv tv(
         .d(tv$d),
         .q(tv$q),
@@ -1430,6 +1558,11 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .d(tx$d),
         .q(tx$q),
         .clock(tx$clock)
+    );
+    vector$te te(
+        .d(te$d),
+        .q(te$q),
+        .clock(te$clock)
     );
     vector$ty ty(
         .d(ty$d),
@@ -1446,10 +1579,20 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .q(wx1$q),
         .clock(wx1$clock)
     );
-    vector$wy1 wy1(
-        .d(wy1$d),
-        .q(wy1$q),
-        .clock(wy1$clock)
+    vector$w$0 w$0(
+        .d(w$0$d),
+        .q(w$0$q),
+        .clock(w$0$clock)
+    );
+    vector$w$1 w$1(
+        .d(w$1$d),
+        .q(w$1$q),
+        .clock(w$1$clock)
+    );
+    vector$w$2 w$2(
+        .d(w$2$d),
+        .q(w$2$q),
+        .clock(w$2$clock)
     );
     vector$wdx$0 wdx$0(
         .d(wdx$0$d),
@@ -1480,6 +1623,36 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .d(wdy$2$d),
         .q(wdy$2$q),
         .clock(wdy$2$clock)
+    );
+    vector$wcls$0 wcls$0(
+        .dx(wcls$0$dx),
+        .dy(wcls$0$dy),
+        .left(wcls$0$left),
+        .right(wcls$0$right),
+        .flat(wcls$0$flat),
+        .owns(wcls$0$owns),
+        .g(wcls$0$g),
+        .h(wcls$0$h)
+    );
+    vector$wcls$1 wcls$1(
+        .dx(wcls$1$dx),
+        .dy(wcls$1$dy),
+        .left(wcls$1$left),
+        .right(wcls$1$right),
+        .flat(wcls$1$flat),
+        .owns(wcls$1$owns),
+        .g(wcls$1$g),
+        .h(wcls$1$h)
+    );
+    vector$wcls$2 wcls$2(
+        .dx(wcls$2$dx),
+        .dy(wcls$2$dy),
+        .left(wcls$2$left),
+        .right(wcls$2$right),
+        .flat(wcls$2$flat),
+        .owns(wcls$2$owns),
+        .g(wcls$2$g),
+        .h(wcls$2$h)
     );
     vector$k_mant$0 k_mant$0(
         .d(k_mant$0$d),
@@ -1651,229 +1824,11 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .q(k_c0$5$q),
         .clock(k_c0$5$clock)
     );
-    vector$ez0 ez0(
-        .x(ez0$x),
-        .y(ez0$y)
-    );
     vector$tag_dl tag_dl(
         .clock(tag_dl$clock),
         .en(tag_dl$en),
         .d(tag_dl$d),
         .q(tag_dl$q)
-    );
-    vector$rs_a rs_a(
-        .x(rs_a$x),
-        .by(rs_a$by),
-        .y(rs_a$y)
-    );
-    vector$rs_b rs_b(
-        .x(rs_b$x),
-        .by(rs_b$by),
-        .y(rs_b$y)
-    );
-    vector$a3 a3(
-        .d(a3$d),
-        .q(a3$q),
-        .clock(a3$clock)
-    );
-    vector$b3 b3(
-        .d(b3$d),
-        .q(b3$q),
-        .clock(b3$clock)
-    );
-    vector$rs_z rs_z(
-        .x(rs_z$x),
-        .by(rs_z$by),
-        .y(rs_z$y)
-    );
-    vector$rs_z0 rs_z0(
-        .x(rs_z0$x),
-        .by(rs_z0$by),
-        .y(rs_z0$y)
-    );
-    vector$z6 z6(
-        .d(z6$d),
-        .q(z6$q),
-        .clock(z6$clock)
-    );
-    vector$depth_of depth_of(
-        .x(depth_of$x),
-        .neg(depth_of$neg),
-        .over(depth_of$over),
-        .low(depth_of$low)
-    );
-    vector$dtag_dl dtag_dl(
-        .clock(dtag_dl$clock),
-        .en(dtag_dl$en),
-        .d(dtag_dl$d),
-        .q(dtag_dl$q)
-    );
-    vector$rs_q$0 rs_q$0(
-        .x(rs_q$0$x),
-        .by(rs_q$0$by),
-        .y(rs_q$0$y)
-    );
-    vector$rs_q$1 rs_q$1(
-        .x(rs_q$1$x),
-        .by(rs_q$1$by),
-        .y(rs_q$1$y)
-    );
-    vector$rs_q$2 rs_q$2(
-        .x(rs_q$2$x),
-        .by(rs_q$2$by),
-        .y(rs_q$2$y)
-    );
-    vector$q6$0 q6$0(
-        .d(q6$0$d),
-        .q(q6$0$q),
-        .clock(q6$0$clock)
-    );
-    vector$q6$1 q6$1(
-        .d(q6$1$d),
-        .q(q6$1$q),
-        .clock(q6$1$clock)
-    );
-    vector$q6$2 q6$2(
-        .d(q6$2$d),
-        .q(q6$2$q),
-        .clock(q6$2$clock)
-    );
-    vector$eq$0 eq$0(
-        .x(eq$0$x),
-        .y(eq$0$y)
-    );
-    vector$eq$1 eq$1(
-        .x(eq$1$x),
-        .y(eq$1$y)
-    );
-    vector$eq$2 eq$2(
-        .x(eq$2$x),
-        .y(eq$2$y)
-    );
-    vector$sum7 sum7(
-        .d(sum7$d),
-        .q(sum7$q),
-        .clock(sum7$clock)
-    );
-    vector$lead_s lead_s(
-        .x(lead_s$x),
-        .pos(lead_s$pos)
-    );
-    vector$sum8 sum8(
-        .d(sum8$d),
-        .q(sum8$q),
-        .clock(sum8$clock)
-    );
-    vector$exp8 exp8(
-        .d(exp8$d),
-        .q(exp8$q),
-        .clock(exp8$clock)
-    );
-    vector$q_dl q_dl(
-        .clock(q_dl$clock),
-        .en(q_dl$en),
-        .d(q_dl$d),
-        .q(q_dl$q)
-    );
-    vector$exp_dl exp_dl(
-        .clock(exp_dl$clock),
-        .en(exp_dl$en),
-        .d(exp_dl$d),
-        .q(exp_dl$q)
-    );
-    vector$ab_dl ab_dl(
-        .clock(ab_dl$clock),
-        .en(ab_dl$en),
-        .d(ab_dl$d),
-        .q(ab_dl$q)
-    );
-    vector$rs_ra rs_ra(
-        .x(rs_ra$x),
-        .by(rs_ra$by),
-        .y(rs_ra$y)
-    );
-    vector$rs_rb rs_rb(
-        .x(rs_rb$x),
-        .by(rs_rb$by),
-        .y(rs_rb$y)
-    );
-    vector$ca11 ca11(
-        .d(ca11$d),
-        .q(ca11$q),
-        .clock(ca11$clock)
-    );
-    vector$cb11 cb11(
-        .d(cb11$d),
-        .q(cb11$q),
-        .clock(cb11$clock)
-    );
-    vector$rs_c$0 rs_c$0(
-        .x(rs_c$0$x),
-        .by(rs_c$0$by),
-        .y(rs_c$0$y)
-    );
-    vector$rs_c$1 rs_c$1(
-        .x(rs_c$1$x),
-        .by(rs_c$1$by),
-        .y(rs_c$1$y)
-    );
-    vector$rs_c$2 rs_c$2(
-        .x(rs_c$2$x),
-        .by(rs_c$2$by),
-        .y(rs_c$2$y)
-    );
-    vector$rs_c0$0 rs_c0$0(
-        .x(rs_c0$0$x),
-        .by(rs_c0$0$by),
-        .y(rs_c0$0$y)
-    );
-    vector$rs_c0$1 rs_c0$1(
-        .x(rs_c0$1$x),
-        .by(rs_c0$1$by),
-        .y(rs_c0$1$y)
-    );
-    vector$rs_c0$2 rs_c0$2(
-        .x(rs_c0$2$x),
-        .by(rs_c0$2$by),
-        .y(rs_c0$2$y)
-    );
-    vector$c14$0 c14$0(
-        .d(c14$0$d),
-        .q(c14$0$q),
-        .clock(c14$0$clock)
-    );
-    vector$c14$1 c14$1(
-        .d(c14$1$d),
-        .q(c14$1$q),
-        .clock(c14$1$clock)
-    );
-    vector$c14$2 c14$2(
-        .d(c14$2$d),
-        .q(c14$2$q),
-        .clock(c14$2$clock)
-    );
-    vector$color_of$0 color_of$0(
-        .x(color_of$0$x),
-        .neg(color_of$0$neg),
-        .over(color_of$0$over),
-        .low(color_of$0$low)
-    );
-    vector$color_of$1 color_of$1(
-        .x(color_of$1$x),
-        .neg(color_of$1$neg),
-        .over(color_of$1$over),
-        .low(color_of$1$low)
-    );
-    vector$color_of$2 color_of$2(
-        .x(color_of$2$x),
-        .neg(color_of$2$neg),
-        .over(color_of$2$over),
-        .low(color_of$2$low)
-    );
-    vector$o_valid o_valid(
-        .d(o_valid$d),
-        .q(o_valid$q),
-        .clock(o_valid$clock)
     );
     vector$o_x o_x(
         .d(o_x$d),
@@ -1885,25 +1840,13 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .q(o_y$q),
         .clock(o_y$clock)
     );
-    vector$o_z o_z(
-        .d(o_z$d),
-        .q(o_z$q),
-        .clock(o_z$clock)
+    vector$place_z$0 place_z$0(
+        .x(place_z$0$x),
+        .y(place_z$0$y)
     );
-    vector$o_rgb$0 o_rgb$0(
-        .d(o_rgb$0$d),
-        .q(o_rgb$0$q),
-        .clock(o_rgb$0$clock)
-    );
-    vector$o_rgb$1 o_rgb$1(
-        .d(o_rgb$1$d),
-        .q(o_rgb$1$q),
-        .clock(o_rgb$1$clock)
-    );
-    vector$o_rgb$2 o_rgb$2(
-        .d(o_rgb$2$d),
-        .q(o_rgb$2$q),
-        .clock(o_rgb$2$clock)
+    vector$place_rgb$0 place_rgb$0(
+        .x(place_rgb$0$x),
+        .y(place_rgb$0$y)
     );
     
     // Update code
@@ -1917,11 +1860,11 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         by1$clock = clock;
         bneg$clock = clock;
         empty$clock = clock;
+        cs$clock = clock;
         area$clock = clock;
         area_abs$clock = clock;
         exp_a$clock = clock;
         div_da$clock = clock;
-        div_d$clock = clock;
         mant$clock = clock;
         sbusy$d = sbusy$q;
         sc$d = sc$q;
@@ -1932,77 +1875,69 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         by1$d = by1$q;
         bneg$d = bneg$q;
         empty$d = empty$q;
+        cs$d = cs$q;
         area$d = area$q;
         area_abs$d = area_abs$q;
         exp_a$d = exp_a$q;
         div_da$d = div_da$q;
-        div_d$d = div_d$q;
         mant$d = mant$q;
+        sp$clock = clock;
         wp$clock = clock;
         ph$clock = clock;
-        wx0$clock = clock;
-        wx1$clock = clock;
-        wy1$clock = clock;
-        wp$d = wp$q;
-        ph$d = ph$q;
-        wx0$d = wx0$q;
-        wx1$d = wx1$q;
-        wy1$d = wy1$q;
         d1z$clock = clock;
         d2z$clock = clock;
-        tv$clock = clock;
-        tx$clock = clock;
-        ty$clock = clock;
-        a3$clock = clock;
-        b3$clock = clock;
-        z6$clock = clock;
-        sum7$clock = clock;
-        sum8$clock = clock;
-        exp8$clock = clock;
-        ca11$clock = clock;
-        cb11$clock = clock;
-        d1z$d = d1z$q;
-        d2z$d = d2z$q;
-        tv$d = tv$q;
-        tx$d = tx$q;
-        ty$d = ty$q;
-        a3$d = a3$q;
-        b3$d = b3$q;
-        z6$d = z6$q;
-        sum7$d = sum7$q;
-        sum8$d = sum8$q;
-        exp8$d = exp8$q;
-        ca11$d = ca11$q;
-        cb11$d = cb11$q;
         min_xr$clock = clock;
         max_xr$clock = clock;
         min_yr$clock = clock;
         max_yr$clock = clock;
+        top_xr$clock = clock;
+        sp$d = sp$q;
+        wp$d = wp$q;
+        ph$d = ph$q;
+        d1z$d = d1z$q;
+        d2z$d = d2z$q;
         min_xr$d = min_xr$q;
         max_xr$d = max_xr$q;
         min_yr$d = min_yr$q;
         max_yr$d = max_yr$q;
-        o_valid$clock = clock;
+        top_xr$d = top_xr$q;
+        sv$clock = clock;
+        sy$clock = clock;
+        sy1$clock = clock;
+        sc0$clock = clock;
+        sc1$clock = clock;
+        sx0$clock = clock;
+        sx1$clock = clock;
+        sl$clock = clock;
+        sr$clock = clock;
+        tv$clock = clock;
+        tx$clock = clock;
+        te$clock = clock;
+        ty$clock = clock;
+        wx0$clock = clock;
+        wx1$clock = clock;
         o_x$clock = clock;
         o_y$clock = clock;
-        o_z$clock = clock;
-        o_valid$d = o_valid$q;
+        sv$d = sv$q;
+        sy$d = sy$q;
+        sy1$d = sy1$q;
+        sc0$d = sc0$q;
+        sc1$d = sc1$q;
+        sx0$d = sx0$q;
+        sx1$d = sx1$q;
+        sl$d = sl$q;
+        sr$d = sr$q;
+        tv$d = tv$q;
+        tx$d = tx$q;
+        te$d = te$q;
+        ty$d = ty$q;
+        wx0$d = wx0$q;
+        wx1$d = wx1$q;
         o_x$d = o_x$q;
         o_y$d = o_y$q;
-        o_z$d = o_z$q;
-        div$clock = clock;
         div_a$clock = clock;
-        mul_a$clock = clock;
-        mul_b$clock = clock;
-        mul_z1$clock = clock;
-        mul_z2$clock = clock;
-        mul_ra$clock = clock;
-        mul_rb$clock = clock;
         tag_dl$clock = clock;
-        dtag_dl$clock = clock;
-        q_dl$clock = clock;
-        exp_dl$clock = clock;
-        ab_dl$clock = clock;
+        lanes$0$clock = clock;
         vx$0$clock = clock;
         vx$0$d = vx$0$q;
         vy$0$clock = clock;
@@ -2017,23 +1952,26 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         dy$0$d = dy$0$q;
         w0$0$clock = clock;
         w0$0$d = w0$0$q;
-        wrow$0$clock = clock;
-        wrow$0$d = wrow$0$q;
-        w$0$clock = clock;
-        w$0$d = w$0$q;
         d1c$0$clock = clock;
         d1c$0$d = d1c$0$q;
         d2c$0$clock = clock;
         d2c$0$d = d2c$0$q;
-        q6$0$clock = clock;
-        q6$0$d = q6$0$q;
-        c14$0$clock = clock;
-        c14$0$d = c14$0$q;
-        o_rgb$0$clock = clock;
-        o_rgb$0$d = o_rgb$0$q;
-        mul_l$0$clock = clock;
-        mul_c1$0$clock = clock;
-        mul_c2$0$clock = clock;
+        el$0$clock = clock;
+        el$0$d = el$0$q;
+        er$0$clock = clock;
+        er$0$d = er$0$q;
+        ell$0$clock = clock;
+        ell$0$d = ell$0$q;
+        elm$0$clock = clock;
+        elm$0$d = elm$0$q;
+        ern$0$clock = clock;
+        ern$0$d = ern$0$q;
+        sdx$0$clock = clock;
+        sdx$0$d = sdx$0$q;
+        sdy$0$clock = clock;
+        sdy$0$d = sdy$0$q;
+        w$0$clock = clock;
+        w$0$d = w$0$q;
         wdx$0$clock = clock;
         wdx$0$d = wdx$0$q;
         wdy$0$clock = clock;
@@ -2052,23 +1990,26 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         dy$1$d = dy$1$q;
         w0$1$clock = clock;
         w0$1$d = w0$1$q;
-        wrow$1$clock = clock;
-        wrow$1$d = wrow$1$q;
-        w$1$clock = clock;
-        w$1$d = w$1$q;
         d1c$1$clock = clock;
         d1c$1$d = d1c$1$q;
         d2c$1$clock = clock;
         d2c$1$d = d2c$1$q;
-        q6$1$clock = clock;
-        q6$1$d = q6$1$q;
-        c14$1$clock = clock;
-        c14$1$d = c14$1$q;
-        o_rgb$1$clock = clock;
-        o_rgb$1$d = o_rgb$1$q;
-        mul_l$1$clock = clock;
-        mul_c1$1$clock = clock;
-        mul_c2$1$clock = clock;
+        el$1$clock = clock;
+        el$1$d = el$1$q;
+        er$1$clock = clock;
+        er$1$d = er$1$q;
+        ell$1$clock = clock;
+        ell$1$d = ell$1$q;
+        elm$1$clock = clock;
+        elm$1$d = elm$1$q;
+        ern$1$clock = clock;
+        ern$1$d = ern$1$q;
+        sdx$1$clock = clock;
+        sdx$1$d = sdx$1$q;
+        sdy$1$clock = clock;
+        sdy$1$d = sdy$1$q;
+        w$1$clock = clock;
+        w$1$d = w$1$q;
         wdx$1$clock = clock;
         wdx$1$d = wdx$1$q;
         wdy$1$clock = clock;
@@ -2087,23 +2028,26 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         dy$2$d = dy$2$q;
         w0$2$clock = clock;
         w0$2$d = w0$2$q;
-        wrow$2$clock = clock;
-        wrow$2$d = wrow$2$q;
-        w$2$clock = clock;
-        w$2$d = w$2$q;
         d1c$2$clock = clock;
         d1c$2$d = d1c$2$q;
         d2c$2$clock = clock;
         d2c$2$d = d2c$2$q;
-        q6$2$clock = clock;
-        q6$2$d = q6$2$q;
-        c14$2$clock = clock;
-        c14$2$d = c14$2$q;
-        o_rgb$2$clock = clock;
-        o_rgb$2$d = o_rgb$2$q;
-        mul_l$2$clock = clock;
-        mul_c1$2$clock = clock;
-        mul_c2$2$clock = clock;
+        el$2$clock = clock;
+        el$2$d = el$2$q;
+        er$2$clock = clock;
+        er$2$d = er$2$q;
+        ell$2$clock = clock;
+        ell$2$d = ell$2$q;
+        elm$2$clock = clock;
+        elm$2$d = elm$2$q;
+        ern$2$clock = clock;
+        ern$2$d = ern$2$q;
+        sdx$2$clock = clock;
+        sdx$2$d = sdx$2$q;
+        sdy$2$clock = clock;
+        sdy$2$d = sdy$2$q;
+        w$2$clock = clock;
+        w$2$d = w$2$q;
         wdx$2$clock = clock;
         wdx$2$d = wdx$2$q;
         wdy$2$clock = clock;
@@ -2200,21 +2144,32 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         k_d2z$1$d = k_d2z$1$q;
         k_z0$1$clock = clock;
         k_z0$1$d = k_z0$1$q;
-        run = ~(o_valid$q & ~out$ready);
+        g_mask$0 = 32'h0;
+        g_z$0 = 32'h0;
+        g_rgb$0 = 32'h0;
+        g_mask$1 = g_mask$0;
+        if (lanes$0$o_valid) begin
+            g_mask$1 = g_mask$0 | at_mask$0;
+        end
+        place_z$0$x = lanes$0$o_z;
+        place_rgb$0$x = lanes$0$o_rgb;
+        g_z$1 = g_z$0 | place_z$0$y;
+        g_rgb$1 = g_rgb$0 | place_rgb$0$y;
+        out_mask = g_mask$1;
+        out_z = g_z$1;
+        out_rgb = g_rgb$1;
+        out_valid = out_mask != 32'h0;
+        run = ~(out_valid & ~out_ready);
+        mul_s$0$en = run;
+        mul_s$1$en = run;
         inp$ready = ~sbusy$q & run;
         take = inp$valid & inp$ready;
-        idle = ~sbusy$q & ~tv$q & (dc$q == 32'h0);
-        at_last = (tx$q == wx1$q) & (ty$q == wy1$q);
-        walk_ok = ~tv$q | at_last;
+        idle = ~sbusy$q & ~sv$q & ~tv$q & (dc$q == 32'h0);
         set_ok = hold$1$q == 32'h0;
-        if (wp$q) begin
+        if (sp$q) begin
             set_ok = hold$0$q == 32'h0;
         end
-        hand = sbusy$q & (sc$q == at_walk) & (empty$q | (walk_ok & set_ok));
-        div$hold = ~run;
-        div$out_ready = 1'b1;
-        div$inp_valid = 1'b1;
-        div$inp_n = recip_n;
+        hand = sbusy$q & (sc$q == at_walk) & (empty$q | (~sv$q & set_ok));
         div_a$hold = ~run;
         div_a$out_ready = 1'b1;
         div_a$inp_valid = 1'b1;
@@ -2224,62 +2179,27 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         if (sc$q == at_mant) begin
             mant_c = div_a$out_q[(32'h0)+:(25)];
         end
-        mul_a$en = run;
-        mul_b$en = run;
-        mul_z1$en = run;
-        mul_z2$en = run;
-        mul_ra$en = run;
-        mul_rb$en = run;
         tag_dl$en = run;
-        dtag_dl$en = run;
-        q_dl$en = run;
-        exp_dl$en = run;
-        ab_dl$en = run;
-        mul_l$0$en = run;
-        mul_c1$0$en = run;
-        mul_c2$0$en = run;
-        mul_l$1$en = run;
-        mul_c1$1$en = run;
-        mul_c2$1$en = run;
-        mul_l$2$en = run;
-        mul_c1$2$en = run;
-        mul_c2$2$en = run;
-        mul_s$0$en = run;
-        mul_s$1$en = run;
         ex$0$x = vx$0$q;
         ey$0$x = vy$0$q;
         ez$0$x = vz$0$q;
         ux$0 = vx$0$q ^ half_xy;
         uy$0 = vy$0$q ^ half_xy;
-        dx_neg$0$x = wdx$0$q;
-        dy_neg$0$x = wdy$0$q;
-        owns$0 = dy_neg$0$neg | ((wdy$0$q == 32'h0) & ~dx_neg$0$neg & (wdx$0$q != 32'h0));
-        edx$0$x = wdx$0$q;
-        edy$0$x = wdy$0$q;
         ex$1$x = vx$1$q;
         ey$1$x = vy$1$q;
         ez$1$x = vz$1$q;
         ux$1 = vx$1$q ^ half_xy;
         uy$1 = vy$1$q ^ half_xy;
-        dx_neg$1$x = wdx$1$q;
-        dy_neg$1$x = wdy$1$q;
-        owns$1 = dy_neg$1$neg | ((wdy$1$q == 32'h0) & ~dx_neg$1$neg & (wdx$1$q != 32'h0));
-        edx$1$x = wdx$1$q;
-        edy$1$x = wdy$1$q;
         ex$2$x = vx$2$q;
         ey$2$x = vy$2$q;
         ez$2$x = vz$2$q;
         ux$2 = vx$2$q ^ half_xy;
         uy$2 = vy$2$q ^ half_xy;
-        dx_neg$2$x = wdx$2$q;
-        dy_neg$2$x = wdy$2$q;
-        owns$2 = dy_neg$2$neg | ((wdy$2$q == 32'h0) & ~dx_neg$2$neg & (wdx$2$q != 32'h0));
-        edx$2$x = wdx$2$q;
-        edy$2$x = wdy$2$q;
         min_x = ux$0;
         max_x = ux$0;
         min_y = uy$0;
         max_y = uy$0;
+        top_x = vx$0$q;
         if (ux$1 < min_x) begin
             min_x = ux$1;
         end
@@ -2288,6 +2208,7 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         end
         if (uy$1 < min_y) begin
             min_y = uy$1;
+            top_x = vx$1$q;
         end
         if (uy$1 > max_y) begin
             max_y = uy$1;
@@ -2300,6 +2221,7 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         end
         if (uy$2 < min_y) begin
             min_y = uy$2;
+            top_x = vx$2$q;
         end
         if (uy$2 > max_y) begin
             max_y = uy$2;
@@ -2324,7 +2246,16 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         if (hi_y_c >= ((height) & 13'h1fff)) begin
             hi_y_c = ((height) & 13'h1fff) - 32'h1;
         end
-        cx0 = (((bx0$q) & 17'h1ffff) << frac) + px_half;
+        ext_top$x = top_xr$q;
+        neg_top$x = top_xr$q;
+        top_c = ((ext_top$y >> frac) & 13'h1fff);
+        if (top_c > bx1$q) begin
+            top_c = bx1$q;
+        end
+        if (neg_top$neg | (top_c < bx0$q)) begin
+            top_c = bx0$q;
+        end
+        cx0 = (((cs$q) & 17'h1ffff) << frac) + px_half;
         cy0 = (((by0$q) & 17'h1ffff) << frac) + px_half;
         area_neg$x = area$q;
         lead_a$x = area_abs$q;
@@ -2352,28 +2283,121 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
             mul_s$1$a = dy$2$q;
             mul_s$1$b = cx0 - ex$0$y;
         end
-        norm_s$x = sum8$q;
-        norm_s$exp = exp8$q;
-        div$inp_d = div_d$q;
-        covered = tv$q;
-        w_neg$0$x = w$0$q;
-        if (w_neg$0$neg | ((w$0$q == 32'h0) & ~owns$0)) begin
-            covered = 1'b0;
+        out_l = 1'b0;
+        out_lm = 1'b0;
+        out_r = 1'b0;
+        out_rn = 1'b0;
+        dead = 1'b0;
+        scls$0$dx = sdx$0$q;
+        scls$0$dy = sdy$0$q;
+        s_chunk$0 = scls$0$g << lg;
+        hcls$0$dx = dx$0$q;
+        hcls$0$dy = dy$0$q;
+        h_chunk$0 = hcls$0$g << lg;
+        h_less$0 = (hcls$0$g << lg) - hcls$0$g;
+        rej_ll$0$e = ell$0$q;
+        rej_lm$0$e = elm$0$q;
+        rej_lf$0$e = el$0$q;
+        rej_rf$0$e = er$0$q;
+        rej_rn$0$e = ern$0$q;
+        rej_ll$0$owns = scls$0$owns;
+        rej_lm$0$owns = scls$0$owns;
+        rej_lf$0$owns = scls$0$owns;
+        rej_rf$0$owns = scls$0$owns;
+        rej_rn$0$owns = scls$0$owns;
+        if (scls$0$left & rej_ll$0$rejects) begin
+            out_l = 1'b1;
         end
-        w_neg$1$x = w$1$q;
-        if (w_neg$1$neg | ((w$1$q == 32'h0) & ~owns$1)) begin
-            covered = 1'b0;
+        if (scls$0$left & rej_lm$0$rejects) begin
+            out_lm = 1'b1;
         end
-        w_neg$2$x = w$2$q;
-        if (w_neg$2$neg | ((w$2$q == 32'h0) & ~owns$2)) begin
-            covered = 1'b0;
+        if (scls$0$right & rej_rf$0$rejects) begin
+            out_r = 1'b1;
         end
-        tag = (((ty$q) & 21'h1fffff) << y_shift) | (((tx$q) & 21'h1fffff) << x_shift);
-        if (covered) begin
-            tag = (((ty$q) & 21'h1fffff) << y_shift) | (((tx$q) & 21'h1fffff) << x_shift) | 64'h1;
+        if (scls$0$right & rej_rn$0$rejects) begin
+            out_rn = 1'b1;
         end
-        tag_dl$d = tag;
-        tag_out = tag_dl$q;
+        if (scls$0$flat & rej_lf$0$rejects) begin
+            dead = 1'b1;
+        end
+        scls$1$dx = sdx$1$q;
+        scls$1$dy = sdy$1$q;
+        s_chunk$1 = scls$1$g << lg;
+        hcls$1$dx = dx$1$q;
+        hcls$1$dy = dy$1$q;
+        h_chunk$1 = hcls$1$g << lg;
+        h_less$1 = (hcls$1$g << lg) - hcls$1$g;
+        rej_ll$1$e = ell$1$q;
+        rej_lm$1$e = elm$1$q;
+        rej_lf$1$e = el$1$q;
+        rej_rf$1$e = er$1$q;
+        rej_rn$1$e = ern$1$q;
+        rej_ll$1$owns = scls$1$owns;
+        rej_lm$1$owns = scls$1$owns;
+        rej_lf$1$owns = scls$1$owns;
+        rej_rf$1$owns = scls$1$owns;
+        rej_rn$1$owns = scls$1$owns;
+        if (scls$1$left & rej_ll$1$rejects) begin
+            out_l = 1'b1;
+        end
+        if (scls$1$left & rej_lm$1$rejects) begin
+            out_lm = 1'b1;
+        end
+        if (scls$1$right & rej_rf$1$rejects) begin
+            out_r = 1'b1;
+        end
+        if (scls$1$right & rej_rn$1$rejects) begin
+            out_rn = 1'b1;
+        end
+        if (scls$1$flat & rej_lf$1$rejects) begin
+            dead = 1'b1;
+        end
+        scls$2$dx = sdx$2$q;
+        scls$2$dy = sdy$2$q;
+        s_chunk$2 = scls$2$g << lg;
+        hcls$2$dx = dx$2$q;
+        hcls$2$dy = dy$2$q;
+        h_chunk$2 = hcls$2$g << lg;
+        h_less$2 = (hcls$2$g << lg) - hcls$2$g;
+        rej_ll$2$e = ell$2$q;
+        rej_lm$2$e = elm$2$q;
+        rej_lf$2$e = el$2$q;
+        rej_rf$2$e = er$2$q;
+        rej_rn$2$e = ern$2$q;
+        rej_ll$2$owns = scls$2$owns;
+        rej_lm$2$owns = scls$2$owns;
+        rej_lf$2$owns = scls$2$owns;
+        rej_rf$2$owns = scls$2$owns;
+        rej_rn$2$owns = scls$2$owns;
+        if (scls$2$left & rej_ll$2$rejects) begin
+            out_l = 1'b1;
+        end
+        if (scls$2$left & rej_lm$2$rejects) begin
+            out_lm = 1'b1;
+        end
+        if (scls$2$right & rej_rf$2$rejects) begin
+            out_r = 1'b1;
+        end
+        if (scls$2$right & rej_rn$2$rejects) begin
+            out_rn = 1'b1;
+        end
+        if (scls$2$flat & rej_lf$2$rejects) begin
+            dead = 1'b1;
+        end
+        l_right = ~dead & out_l & (sl$q != sc1$q);
+        l_left = ~dead & ~out_l & ~out_lm & (sl$q != sc0$q);
+        r_left = ~dead & out_r & (sr$q != sc0$q);
+        r_right = ~dead & ~out_r & ~out_rn & (sr$q != sc1$q);
+        found = sv$q & ~l_right & ~l_left & ~r_left & ~r_right;
+        row_empty = dead | out_l | out_r | (sl$q > sr$q);
+        row_last = sy$q == sy1$q;
+        walk_free = ~tv$q | (tx$q == te$q);
+        wcls$0$dx = wdx$0$q;
+        wcls$0$dy = wdy$0$q;
+        wcls$1$dx = wdx$1$q;
+        wcls$1$dy = wdy$1$q;
+        wcls$2$dx = wdx$2$q;
+        wcls$2$dy = wdy$2$q;
         c_mant = k_mant$0$q;
         if (wp$q) begin
             c_mant = k_mant$1$q;
@@ -2428,96 +2452,42 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         if (ph$q[tap_c0]) begin
             c_c0$2 = k_c0$5$q;
         end
-        mul_a$a = w$1$q;
-        mul_a$b = ((c_mant) & 26'h3ffffff);
-        mul_b$a = w$2$q;
-        mul_b$b = ((c_mant) & 26'h3ffffff);
-        rs_a$x = mul_a$p;
-        rs_a$by = c_exp;
-        rs_b$x = mul_b$p;
-        rs_b$by = c_exp;
-        mul_z1$a = c_d1z;
-        mul_z1$b = a3$q;
-        mul_z2$a = c_d2z;
-        mul_z2$b = b3$q;
-        mul_l$0$a = one - a3$q - b3$q;
-        mul_l$0$b = ((c_iw$0) & 17'h1ffff);
-        mul_l$1$a = a3$q;
-        mul_l$1$b = ((c_iw$1) & 17'h1ffff);
-        mul_l$2$a = b3$q;
-        mul_l$2$b = ((c_iw$2) & 17'h1ffff);
-        ab_pair = (((a3$q) & 56'hffffffffffffff) << half_pair) | ((b3$q) & 56'hffffffffffffff);
-        ab_dl$d = ab_pair;
-        rs_z$x = mul_z1$p + mul_z2$p;
-        rs_z$by = 32'h0;
-        ez0$x = c_z0;
-        rs_z0$x = ez0$y;
-        rs_z0$by = 32'h0;
-        rs_q$0$x = mul_l$0$p;
-        rs_q$0$by = 32'h0;
-        eq$0$x = q6$0$q;
-        rs_q$1$x = mul_l$1$p;
-        rs_q$1$by = 32'h0;
-        eq$1$x = q6$1$q;
-        rs_q$2$x = mul_l$2$p;
-        rs_q$2$by = 32'h0;
-        eq$2$x = q6$2$q;
-        depth_of$x = z6$q;
-        dtag = ((depth_of$low) & 17'h1ffff) << x_shift;
-        if (~depth_of$neg & ~depth_of$over) begin
-            dtag = (((depth_of$low) & 17'h1ffff) << x_shift) | 64'h1;
-        end
-        dtag_dl$d = dtag;
-        dtag_out = dtag_dl$q;
-        sum_c = eq$0$y + eq$1$y + eq$2$y;
-        if (sum_c == 32'h0) begin
-            sum_c = 32'h1;
-        end
-        q_pair = (((q6$1$q) & 56'hffffffffffffff) << half_pair) | ((q6$2$q) & 56'hffffffffffffff);
-        q_dl$d = q_pair;
-        lead_s$x = sum7$q;
-        exp_dl$d = exp8$q;
-        mul_ra$a = ((q_dl$q >> half_pair) & 28'hfffffff);
-        mul_ra$b = ((div$out_q[(32'h0)+:(25)]) & 26'h3ffffff);
-        mul_rb$a = ((q_dl$q) & 28'hfffffff);
-        mul_rb$b = ((div$out_q[(32'h0)+:(25)]) & 26'h3ffffff);
-        rs_ra$x = mul_ra$p;
-        rs_ra$by = exp_dl$q;
-        rs_rb$x = mul_rb$p;
-        rs_rb$by = exp_dl$q;
-        ca = ((ab_dl$q >> half_pair) & 28'hfffffff);
-        cb = ((ab_dl$q) & 28'hfffffff);
-        if (persp$on) begin
-            ca = ca11$q;
-            cb = cb11$q;
-        end
-        rs_c0$0$x = ((c_c0$0) & 9'h1ff);
-        rs_c0$1$x = ((c_c0$1) & 9'h1ff);
-        rs_c0$2$x = ((c_c0$2) & 9'h1ff);
-        mul_c1$0$a = c_d1c$0;
-        mul_c2$0$a = c_d2c$0;
-        mul_c1$0$b = ca;
-        mul_c2$0$b = cb;
-        rs_c$0$x = mul_c1$0$p + mul_c2$0$p;
-        rs_c$0$by = 32'h0;
-        rs_c0$0$by = 32'h0;
-        color_of$0$x = c14$0$q;
-        mul_c1$1$a = c_d1c$1;
-        mul_c2$1$a = c_d2c$1;
-        mul_c1$1$b = ca;
-        mul_c2$1$b = cb;
-        rs_c$1$x = mul_c1$1$p + mul_c2$1$p;
-        rs_c$1$by = 32'h0;
-        rs_c0$1$by = 32'h0;
-        color_of$1$x = c14$1$q;
-        mul_c1$2$a = c_d1c$2;
-        mul_c2$2$a = c_d2c$2;
-        mul_c1$2$b = ca;
-        mul_c2$2$b = cb;
-        rs_c$2$x = mul_c1$2$p + mul_c2$2$p;
-        rs_c$2$by = 32'h0;
-        rs_c0$2$by = 32'h0;
-        color_of$2$x = c14$2$q;
+        tag = (((ty$q) & 20'hfffff) << y_shift) | ((tx$q) & 20'hfffff);
+        tag_dl$d = tag;
+        lanes$0$run = run;
+        lanes$0$load = found & ~row_empty & walk_free;
+        lanes$0$valid = tv$q;
+        lanes$0$x = tx$q;
+        lanes$0$x0 = wx0$q;
+        lanes$0$x1 = wx1$q;
+        lanes$0$c_mant = c_mant;
+        lanes$0$c_exp = c_exp;
+        lanes$0$c_d1z = c_d1z;
+        lanes$0$c_d2z = c_d2z;
+        lanes$0$c_z0 = c_z0;
+        lanes$0$g_0 = scls$0$g;
+        lanes$0$w_0 = w$0$q;
+        lanes$0$owns_0 = wcls$0$owns;
+        lanes$0$c_iw_0 = c_iw$0;
+        lanes$0$c_d1c_0 = c_d1c$0;
+        lanes$0$c_d2c_0 = c_d2c$0;
+        lanes$0$c_c0_0 = c_c0$0;
+        lanes$0$g_1 = scls$1$g;
+        lanes$0$w_1 = w$1$q;
+        lanes$0$owns_1 = wcls$1$owns;
+        lanes$0$c_iw_1 = c_iw$1;
+        lanes$0$c_d1c_1 = c_d1c$1;
+        lanes$0$c_d2c_1 = c_d2c$1;
+        lanes$0$c_c0_1 = c_c0$1;
+        lanes$0$g_2 = scls$2$g;
+        lanes$0$w_2 = w$2$q;
+        lanes$0$owns_2 = wcls$2$owns;
+        lanes$0$c_iw_2 = c_iw$2;
+        lanes$0$c_d1c_2 = c_d1c$2;
+        lanes$0$c_d2c_2 = c_d2c$2;
+        lanes$0$c_c0_2 = c_c0$2;
+        out_x = o_x$q;
+        out_y = o_y$q;
         if (run) begin
             if ((sc$q != 32'h0) & (sc$q != at_walk)) begin
                 sc$d = sc$q + 32'h1;
@@ -2531,9 +2501,9 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
             if (hold$1$q != 32'h0) begin
                 hold$1$d = hold$1$q - 32'h1;
             end
-            ph$d = ph$q << x_shift;
+            ph$d = ph$q << one_s;
             if (wp$q) begin
-                ph$d = (ph$q << x_shift) | 64'h1;
+                ph$d = (ph$q << one_s) | 64'h1;
             end
             if (take) begin
                 sbusy$d = 1'b1;
@@ -2565,6 +2535,7 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
                 max_xr$d = max_x ^ half_xy;
                 min_yr$d = min_y ^ half_xy;
                 max_yr$d = max_y ^ half_xy;
+                top_xr$d = top_x;
             end
             if (sc$q == 32'h2) begin
                 bx0$d = ((lo_x >> frac) & 13'h1fff);
@@ -2581,9 +2552,8 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
             end
             if (sc$q == 32'h3) begin
                 empty$d = bneg$q | (bx0$q > bx1$q) | (by0$q > by1$q);
-            end
-            if (sc$q == 32'h3) begin
                 area$d = mul_s$0$p - mul_s$1$p;
+                cs$d = top_c & chunk_p;
             end
             if (sc$q == 32'h4) begin
                 area_abs$d = ((area$q) & 34'h3ffffffff);
@@ -2622,6 +2592,9 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
                 d2c$2$d = ((vc$8$q) & 9'h1ff) - ((vc$2$q) & 9'h1ff);
                 exp_a$d = lead_a$pos;
             end
+            if (sc$q == 32'h6) begin
+                div_da$d = norm_a$d;
+            end
             if (sc$q == 32'h8) begin
                 w0$0$d = mul_s$0$p - mul_s$1$p;
             end
@@ -2635,57 +2608,144 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
                 mant$d = mant_c;
             end
             if (tv$q) begin
-                if (at_last) begin
-                    tv$d = 1'b0;
-                    dc$d = drain;
-                    if (wp$q) begin
-                        hold$1$d = held_m1;
-                    end
-                    else begin
-                        hold$0$d = held_m1;
-                    end
-                end
-                else if (tx$q == wx1$q) begin
-                    tx$d = wx0$q;
-                    ty$d = ty$q + 32'h1;
-                    wrow$0$d = wrow$0$q + (edx$0$y << frac);
-                    w$0$d = wrow$0$q + (edx$0$y << frac);
-                    wrow$1$d = wrow$1$q + (edx$1$y << frac);
-                    w$1$d = wrow$1$q + (edx$1$y << frac);
-                    wrow$2$d = wrow$2$q + (edx$2$y << frac);
-                    w$2$d = wrow$2$q + (edx$2$y << frac);
+                dc$d = drain;
+                if (wp$q) begin
+                    hold$1$d = held_m1;
                 end
                 else begin
-                    tx$d = tx$q + 32'h1;
-                    w$0$d = w$0$q - (edy$0$y << frac);
-                    w$1$d = w$1$q - (edy$1$y << frac);
-                    w$2$d = w$2$q - (edy$2$y << frac);
+                    hold$0$d = held_m1;
+                end
+                if (tx$q == te$q) begin
+                    tv$d = 1'b0;
+                end
+                else begin
+                    tx$d = tx$q + step;
+                    w$0$d = w$0$q - (wcls$0$g << lg);
+                    w$1$d = w$1$q - (wcls$1$g << lg);
+                    w$2$d = w$2$q - (wcls$2$g << lg);
+                end
+            end
+            if (sv$q) begin
+                if (l_right) begin
+                    sl$d = sl$q + step;
+                    el$0$d = el$0$q - s_chunk$0;
+                    ell$0$d = ell$0$q - s_chunk$0;
+                    elm$0$d = elm$0$q - s_chunk$0;
+                    el$1$d = el$1$q - s_chunk$1;
+                    ell$1$d = ell$1$q - s_chunk$1;
+                    elm$1$d = elm$1$q - s_chunk$1;
+                    el$2$d = el$2$q - s_chunk$2;
+                    ell$2$d = ell$2$q - s_chunk$2;
+                    elm$2$d = elm$2$q - s_chunk$2;
+                end
+                if (l_left) begin
+                    sl$d = sl$q - step;
+                    el$0$d = el$0$q + s_chunk$0;
+                    ell$0$d = ell$0$q + s_chunk$0;
+                    elm$0$d = elm$0$q + s_chunk$0;
+                    el$1$d = el$1$q + s_chunk$1;
+                    ell$1$d = ell$1$q + s_chunk$1;
+                    elm$1$d = elm$1$q + s_chunk$1;
+                    el$2$d = el$2$q + s_chunk$2;
+                    ell$2$d = ell$2$q + s_chunk$2;
+                    elm$2$d = elm$2$q + s_chunk$2;
+                end
+                if (r_left) begin
+                    sr$d = sr$q - step;
+                    er$0$d = er$0$q + s_chunk$0;
+                    ern$0$d = ern$0$q + s_chunk$0;
+                    er$1$d = er$1$q + s_chunk$1;
+                    ern$1$d = ern$1$q + s_chunk$1;
+                    er$2$d = er$2$q + s_chunk$2;
+                    ern$2$d = ern$2$q + s_chunk$2;
+                end
+                if (r_right) begin
+                    sr$d = sr$q + step;
+                    er$0$d = er$0$q - s_chunk$0;
+                    ern$0$d = ern$0$q - s_chunk$0;
+                    er$1$d = er$1$q - s_chunk$1;
+                    ern$1$d = ern$1$q - s_chunk$1;
+                    er$2$d = er$2$q - s_chunk$2;
+                    ern$2$d = ern$2$q - s_chunk$2;
+                end
+                if (found & (row_empty | walk_free)) begin
+                    if (row_last) begin
+                        sv$d = 1'b0;
+                    end
+                    else begin
+                        sy$d = sy$q + 32'h1;
+                        el$0$d = el$0$q + scls$0$h;
+                        er$0$d = er$0$q + scls$0$h;
+                        ell$0$d = ell$0$q + scls$0$h;
+                        elm$0$d = elm$0$q + scls$0$h;
+                        ern$0$d = ern$0$q + scls$0$h;
+                        el$1$d = el$1$q + scls$1$h;
+                        er$1$d = er$1$q + scls$1$h;
+                        ell$1$d = ell$1$q + scls$1$h;
+                        elm$1$d = elm$1$q + scls$1$h;
+                        ern$1$d = ern$1$q + scls$1$h;
+                        el$2$d = el$2$q + scls$2$h;
+                        er$2$d = er$2$q + scls$2$h;
+                        ell$2$d = ell$2$q + scls$2$h;
+                        elm$2$d = elm$2$q + scls$2$h;
+                        ern$2$d = ern$2$q + scls$2$h;
+                    end
+                end
+                if (found & ~row_empty & walk_free) begin
+                    tv$d = 1'b1;
+                    tx$d = sl$q;
+                    te$d = sr$q;
+                    ty$d = sy$q;
+                    wx0$d = sx0$q;
+                    wx1$d = sx1$q;
+                    wp$d = sp$q;
+                    w$0$d = el$0$q;
+                    wdx$0$d = sdx$0$q;
+                    wdy$0$d = sdy$0$q;
+                    w$1$d = el$1$q;
+                    wdx$1$d = sdx$1$q;
+                    wdy$1$d = sdy$1$q;
+                    w$2$d = el$2$q;
+                    wdx$2$d = sdx$2$q;
+                    wdy$2$d = sdy$2$q;
                 end
             end
             if (hand) begin
                 sbusy$d = 1'b0;
                 sc$d = 32'h0;
                 if (~empty$q) begin
-                    tv$d = 1'b1;
-                    wp$d = ~wp$q;
-                    tx$d = ((bx0$q) & 10'h3ff);
-                    ty$d = ((by0$q) & 10'h3ff);
-                    wx0$d = ((bx0$q) & 10'h3ff);
-                    wx1$d = ((bx1$q) & 10'h3ff);
-                    wy1$d = ((by1$q) & 10'h3ff);
-                    w$0$d = w0$0$q;
-                    wrow$0$d = w0$0$q;
-                    wdx$0$d = dx$0$q;
-                    wdy$0$d = dy$0$q;
-                    w$1$d = w0$1$q;
-                    wrow$1$d = w0$1$q;
-                    wdx$1$d = dx$1$q;
-                    wdy$1$d = dy$1$q;
-                    w$2$d = w0$2$q;
-                    wrow$2$d = w0$2$q;
-                    wdx$2$d = dx$2$q;
-                    wdy$2$d = dy$2$q;
-                    if (wp$q) begin
+                    sv$d = 1'b1;
+                    sp$d = ~sp$q;
+                    sy$d = ((by0$q) & 10'h3ff);
+                    sy1$d = ((by1$q) & 10'h3ff);
+                    sx0$d = ((bx0$q) & 10'h3ff);
+                    sx1$d = ((bx1$q) & 10'h3ff);
+                    sc0$d = ((bx0$q) & 10'h3ff) & chunk;
+                    sc1$d = ((bx1$q) & 10'h3ff) & chunk;
+                    sl$d = ((cs$q) & 10'h3ff);
+                    sr$d = ((cs$q) & 10'h3ff);
+                    el$0$d = w0$0$q;
+                    er$0$d = w0$0$q;
+                    ell$0$d = w0$0$q - h_less$0;
+                    elm$0$d = w0$0$q + hcls$0$g;
+                    ern$0$d = w0$0$q - h_chunk$0;
+                    sdx$0$d = dx$0$q;
+                    sdy$0$d = dy$0$q;
+                    el$1$d = w0$1$q;
+                    er$1$d = w0$1$q;
+                    ell$1$d = w0$1$q - h_less$1;
+                    elm$1$d = w0$1$q + hcls$1$g;
+                    ern$1$d = w0$1$q - h_chunk$1;
+                    sdx$1$d = dx$1$q;
+                    sdy$1$d = dy$1$q;
+                    el$2$d = w0$2$q;
+                    er$2$d = w0$2$q;
+                    ell$2$d = w0$2$q - h_less$2;
+                    elm$2$d = w0$2$q + hcls$2$g;
+                    ern$2$d = w0$2$q - h_chunk$2;
+                    sdx$2$d = dx$2$q;
+                    sdy$2$d = dy$2$q;
+                    if (sp$q) begin
                         k_mant$0$d = mant_c;
                         k_exp$0$d = exp_a$q;
                         k_d1z$0$d = d1z$q;
@@ -2725,1121 +2785,12 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
                     end
                 end
             end
-            a3$d = rs_a$y;
-            b3$d = rs_b$y;
-            z6$d = rs_z$y + rs_z0$y;
-            q6$0$d = rs_q$0$y;
-            c14$0$d = rs_c$0$y + rs_c0$0$y;
-            o_rgb$0$d = color_of$0$low;
-            if (color_of$0$over) begin
-                o_rgb$0$d = full;
-            end
-            if (color_of$0$neg) begin
-                o_rgb$0$d = 32'h0;
-            end
-            q6$1$d = rs_q$1$y;
-            c14$1$d = rs_c$1$y + rs_c0$1$y;
-            o_rgb$1$d = color_of$1$low;
-            if (color_of$1$over) begin
-                o_rgb$1$d = full;
-            end
-            if (color_of$1$neg) begin
-                o_rgb$1$d = 32'h0;
-            end
-            q6$2$d = rs_q$2$y;
-            c14$2$d = rs_c$2$y + rs_c0$2$y;
-            o_rgb$2$d = color_of$2$low;
-            if (color_of$2$over) begin
-                o_rgb$2$d = full;
-            end
-            if (color_of$2$neg) begin
-                o_rgb$2$d = 32'h0;
-            end
-            div_d$d = norm_s$d;
-            if (sc$q == 32'h6) begin
-                div_da$d = norm_a$d;
-            end
-            sum7$d = sum_c;
-            sum8$d = sum7$q;
-            exp8$d = lead_s$pos;
-            ca11$d = rs_ra$y;
-            cb11$d = rs_rb$y;
-            o_valid$d = tag_out[32'h0] & dtag_out[32'h0];
-            o_x$d = ((tag_out >> x_shift) & 10'h3ff);
-            o_y$d = ((tag_out >> y_shift) & 10'h3ff);
-            o_z$d = ((dtag_out >> x_shift) & 16'hffff);
+            o_x$d = ((tag_dl$q) & 10'h3ff);
+            o_y$d = ((tag_dl$q >> y_shift) & 10'h3ff);
         end
-        out$valid = o_valid$q;
-        out$x = o_x$q;
-        out$y = o_y$q;
-        out$z = o_z$q;
-        out$rgb0 = o_rgb$0$q;
-        out$rgb1 = o_rgb$1$q;
-        out$rgb2 = o_rgb$2$q;
     end
     
 endmodule // vector
-
-
-module vector$a3(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$a3
-
-
-module vector$ab_dl(clock,en,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    
-    // Stub signals
-    reg  [55:0] stages$0$d;
-    wire  [55:0] stages$0$q;
-    reg  stages$0$clock;
-    reg  [55:0] stages$1$d;
-    wire  [55:0] stages$1$q;
-    reg  stages$1$clock;
-    reg  [55:0] stages$2$d;
-    wire  [55:0] stages$2$q;
-    reg  stages$2$clock;
-    reg  [55:0] stages$3$d;
-    wire  [55:0] stages$3$q;
-    reg  stages$3$clock;
-    reg  [55:0] stages$4$d;
-    wire  [55:0] stages$4$q;
-    reg  stages$4$clock;
-    reg  [55:0] stages$5$d;
-    wire  [55:0] stages$5$q;
-    reg  stages$5$clock;
-    reg  [55:0] stages$6$d;
-    wire  [55:0] stages$6$q;
-    reg  stages$6$clock;
-    reg  [55:0] stages$7$d;
-    wire  [55:0] stages$7$q;
-    reg  stages$7$clock;
-    reg  [55:0] stages$8$d;
-    wire  [55:0] stages$8$q;
-    reg  stages$8$clock;
-    reg  [55:0] stages$9$d;
-    wire  [55:0] stages$9$q;
-    reg  stages$9$clock;
-    reg  [55:0] stages$10$d;
-    wire  [55:0] stages$10$q;
-    reg  stages$10$clock;
-    reg  [55:0] stages$11$d;
-    wire  [55:0] stages$11$q;
-    reg  stages$11$clock;
-    reg  [55:0] stages$12$d;
-    wire  [55:0] stages$12$q;
-    reg  stages$12$clock;
-    reg  [55:0] stages$13$d;
-    wire  [55:0] stages$13$q;
-    reg  stages$13$clock;
-    reg  [55:0] stages$14$d;
-    wire  [55:0] stages$14$q;
-    reg  stages$14$clock;
-    reg  [55:0] stages$15$d;
-    wire  [55:0] stages$15$q;
-    reg  stages$15$clock;
-    reg  [55:0] stages$16$d;
-    wire  [55:0] stages$16$q;
-    reg  stages$16$clock;
-    reg  [55:0] stages$17$d;
-    wire  [55:0] stages$17$q;
-    reg  stages$17$clock;
-    reg  [55:0] stages$18$d;
-    wire  [55:0] stages$18$q;
-    reg  stages$18$clock;
-    reg  [55:0] stages$19$d;
-    wire  [55:0] stages$19$q;
-    reg  stages$19$clock;
-    reg  [55:0] stages$20$d;
-    wire  [55:0] stages$20$q;
-    reg  stages$20$clock;
-    reg  [55:0] stages$21$d;
-    wire  [55:0] stages$21$q;
-    reg  stages$21$clock;
-    reg  [55:0] stages$22$d;
-    wire  [55:0] stages$22$q;
-    reg  stages$22$clock;
-    reg  [55:0] stages$23$d;
-    wire  [55:0] stages$23$q;
-    reg  stages$23$clock;
-    reg  [55:0] stages$24$d;
-    wire  [55:0] stages$24$q;
-    reg  stages$24$clock;
-    reg  [55:0] stages$25$d;
-    wire  [55:0] stages$25$q;
-    reg  stages$25$clock;
-    reg  [55:0] stages$26$d;
-    wire  [55:0] stages$26$q;
-    reg  stages$26$clock;
-    reg  [55:0] stages$27$d;
-    wire  [55:0] stages$27$q;
-    reg  stages$27$clock;
-    reg  [55:0] stages$28$d;
-    wire  [55:0] stages$28$q;
-    reg  stages$28$clock;
-    reg  [55:0] stages$29$d;
-    wire  [55:0] stages$29$q;
-    reg  stages$29$clock;
-    reg  [55:0] stages$30$d;
-    wire  [55:0] stages$30$q;
-    reg  stages$30$clock;
-    reg  [55:0] stages$31$d;
-    wire  [55:0] stages$31$q;
-    reg  stages$31$clock;
-    reg  [55:0] stages$32$d;
-    wire  [55:0] stages$32$q;
-    reg  stages$32$clock;
-    reg  [55:0] stages$33$d;
-    wire  [55:0] stages$33$q;
-    reg  stages$33$clock;
-    
-    // Sub module instances
-    vector$ab_dl$stages$0 stages$0(
-        .d(stages$0$d),
-        .q(stages$0$q),
-        .clock(stages$0$clock)
-    );
-    vector$ab_dl$stages$1 stages$1(
-        .d(stages$1$d),
-        .q(stages$1$q),
-        .clock(stages$1$clock)
-    );
-    vector$ab_dl$stages$2 stages$2(
-        .d(stages$2$d),
-        .q(stages$2$q),
-        .clock(stages$2$clock)
-    );
-    vector$ab_dl$stages$3 stages$3(
-        .d(stages$3$d),
-        .q(stages$3$q),
-        .clock(stages$3$clock)
-    );
-    vector$ab_dl$stages$4 stages$4(
-        .d(stages$4$d),
-        .q(stages$4$q),
-        .clock(stages$4$clock)
-    );
-    vector$ab_dl$stages$5 stages$5(
-        .d(stages$5$d),
-        .q(stages$5$q),
-        .clock(stages$5$clock)
-    );
-    vector$ab_dl$stages$6 stages$6(
-        .d(stages$6$d),
-        .q(stages$6$q),
-        .clock(stages$6$clock)
-    );
-    vector$ab_dl$stages$7 stages$7(
-        .d(stages$7$d),
-        .q(stages$7$q),
-        .clock(stages$7$clock)
-    );
-    vector$ab_dl$stages$8 stages$8(
-        .d(stages$8$d),
-        .q(stages$8$q),
-        .clock(stages$8$clock)
-    );
-    vector$ab_dl$stages$9 stages$9(
-        .d(stages$9$d),
-        .q(stages$9$q),
-        .clock(stages$9$clock)
-    );
-    vector$ab_dl$stages$10 stages$10(
-        .d(stages$10$d),
-        .q(stages$10$q),
-        .clock(stages$10$clock)
-    );
-    vector$ab_dl$stages$11 stages$11(
-        .d(stages$11$d),
-        .q(stages$11$q),
-        .clock(stages$11$clock)
-    );
-    vector$ab_dl$stages$12 stages$12(
-        .d(stages$12$d),
-        .q(stages$12$q),
-        .clock(stages$12$clock)
-    );
-    vector$ab_dl$stages$13 stages$13(
-        .d(stages$13$d),
-        .q(stages$13$q),
-        .clock(stages$13$clock)
-    );
-    vector$ab_dl$stages$14 stages$14(
-        .d(stages$14$d),
-        .q(stages$14$q),
-        .clock(stages$14$clock)
-    );
-    vector$ab_dl$stages$15 stages$15(
-        .d(stages$15$d),
-        .q(stages$15$q),
-        .clock(stages$15$clock)
-    );
-    vector$ab_dl$stages$16 stages$16(
-        .d(stages$16$d),
-        .q(stages$16$q),
-        .clock(stages$16$clock)
-    );
-    vector$ab_dl$stages$17 stages$17(
-        .d(stages$17$d),
-        .q(stages$17$q),
-        .clock(stages$17$clock)
-    );
-    vector$ab_dl$stages$18 stages$18(
-        .d(stages$18$d),
-        .q(stages$18$q),
-        .clock(stages$18$clock)
-    );
-    vector$ab_dl$stages$19 stages$19(
-        .d(stages$19$d),
-        .q(stages$19$q),
-        .clock(stages$19$clock)
-    );
-    vector$ab_dl$stages$20 stages$20(
-        .d(stages$20$d),
-        .q(stages$20$q),
-        .clock(stages$20$clock)
-    );
-    vector$ab_dl$stages$21 stages$21(
-        .d(stages$21$d),
-        .q(stages$21$q),
-        .clock(stages$21$clock)
-    );
-    vector$ab_dl$stages$22 stages$22(
-        .d(stages$22$d),
-        .q(stages$22$q),
-        .clock(stages$22$clock)
-    );
-    vector$ab_dl$stages$23 stages$23(
-        .d(stages$23$d),
-        .q(stages$23$q),
-        .clock(stages$23$clock)
-    );
-    vector$ab_dl$stages$24 stages$24(
-        .d(stages$24$d),
-        .q(stages$24$q),
-        .clock(stages$24$clock)
-    );
-    vector$ab_dl$stages$25 stages$25(
-        .d(stages$25$d),
-        .q(stages$25$q),
-        .clock(stages$25$clock)
-    );
-    vector$ab_dl$stages$26 stages$26(
-        .d(stages$26$d),
-        .q(stages$26$q),
-        .clock(stages$26$clock)
-    );
-    vector$ab_dl$stages$27 stages$27(
-        .d(stages$27$d),
-        .q(stages$27$q),
-        .clock(stages$27$clock)
-    );
-    vector$ab_dl$stages$28 stages$28(
-        .d(stages$28$d),
-        .q(stages$28$q),
-        .clock(stages$28$clock)
-    );
-    vector$ab_dl$stages$29 stages$29(
-        .d(stages$29$d),
-        .q(stages$29$q),
-        .clock(stages$29$clock)
-    );
-    vector$ab_dl$stages$30 stages$30(
-        .d(stages$30$d),
-        .q(stages$30$q),
-        .clock(stages$30$clock)
-    );
-    vector$ab_dl$stages$31 stages$31(
-        .d(stages$31$d),
-        .q(stages$31$q),
-        .clock(stages$31$clock)
-    );
-    vector$ab_dl$stages$32 stages$32(
-        .d(stages$32$d),
-        .q(stages$32$q),
-        .clock(stages$32$clock)
-    );
-    vector$ab_dl$stages$33 stages$33(
-        .d(stages$33$d),
-        .q(stages$33$q),
-        .clock(stages$33$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        stages$0$clock = clock;
-        stages$0$d = stages$0$q;
-        stages$1$clock = clock;
-        stages$1$d = stages$1$q;
-        stages$2$clock = clock;
-        stages$2$d = stages$2$q;
-        stages$3$clock = clock;
-        stages$3$d = stages$3$q;
-        stages$4$clock = clock;
-        stages$4$d = stages$4$q;
-        stages$5$clock = clock;
-        stages$5$d = stages$5$q;
-        stages$6$clock = clock;
-        stages$6$d = stages$6$q;
-        stages$7$clock = clock;
-        stages$7$d = stages$7$q;
-        stages$8$clock = clock;
-        stages$8$d = stages$8$q;
-        stages$9$clock = clock;
-        stages$9$d = stages$9$q;
-        stages$10$clock = clock;
-        stages$10$d = stages$10$q;
-        stages$11$clock = clock;
-        stages$11$d = stages$11$q;
-        stages$12$clock = clock;
-        stages$12$d = stages$12$q;
-        stages$13$clock = clock;
-        stages$13$d = stages$13$q;
-        stages$14$clock = clock;
-        stages$14$d = stages$14$q;
-        stages$15$clock = clock;
-        stages$15$d = stages$15$q;
-        stages$16$clock = clock;
-        stages$16$d = stages$16$q;
-        stages$17$clock = clock;
-        stages$17$d = stages$17$q;
-        stages$18$clock = clock;
-        stages$18$d = stages$18$q;
-        stages$19$clock = clock;
-        stages$19$d = stages$19$q;
-        stages$20$clock = clock;
-        stages$20$d = stages$20$q;
-        stages$21$clock = clock;
-        stages$21$d = stages$21$q;
-        stages$22$clock = clock;
-        stages$22$d = stages$22$q;
-        stages$23$clock = clock;
-        stages$23$d = stages$23$q;
-        stages$24$clock = clock;
-        stages$24$d = stages$24$q;
-        stages$25$clock = clock;
-        stages$25$d = stages$25$q;
-        stages$26$clock = clock;
-        stages$26$d = stages$26$q;
-        stages$27$clock = clock;
-        stages$27$d = stages$27$q;
-        stages$28$clock = clock;
-        stages$28$d = stages$28$q;
-        stages$29$clock = clock;
-        stages$29$d = stages$29$q;
-        stages$30$clock = clock;
-        stages$30$d = stages$30$q;
-        stages$31$clock = clock;
-        stages$31$d = stages$31$q;
-        stages$32$clock = clock;
-        stages$32$d = stages$32$q;
-        stages$33$clock = clock;
-        stages$33$d = stages$33$q;
-        if (en) begin
-            stages$0$d = d;
-            stages$1$d = stages$0$q;
-            stages$2$d = stages$1$q;
-            stages$3$d = stages$2$q;
-            stages$4$d = stages$3$q;
-            stages$5$d = stages$4$q;
-            stages$6$d = stages$5$q;
-            stages$7$d = stages$6$q;
-            stages$8$d = stages$7$q;
-            stages$9$d = stages$8$q;
-            stages$10$d = stages$9$q;
-            stages$11$d = stages$10$q;
-            stages$12$d = stages$11$q;
-            stages$13$d = stages$12$q;
-            stages$14$d = stages$13$q;
-            stages$15$d = stages$14$q;
-            stages$16$d = stages$15$q;
-            stages$17$d = stages$16$q;
-            stages$18$d = stages$17$q;
-            stages$19$d = stages$18$q;
-            stages$20$d = stages$19$q;
-            stages$21$d = stages$20$q;
-            stages$22$d = stages$21$q;
-            stages$23$d = stages$22$q;
-            stages$24$d = stages$23$q;
-            stages$25$d = stages$24$q;
-            stages$26$d = stages$25$q;
-            stages$27$d = stages$26$q;
-            stages$28$d = stages$27$q;
-            stages$29$d = stages$28$q;
-            stages$30$d = stages$29$q;
-            stages$31$d = stages$30$q;
-            stages$32$d = stages$31$q;
-            stages$33$d = stages$32$q;
-        end
-        q = stages$33$q;
-    end
-    
-endmodule // vector$ab_dl
-
-
-module vector$ab_dl$stages$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$0
-
-
-module vector$ab_dl$stages$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$1
-
-
-module vector$ab_dl$stages$10(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$10
-
-
-module vector$ab_dl$stages$11(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$11
-
-
-module vector$ab_dl$stages$12(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$12
-
-
-module vector$ab_dl$stages$13(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$13
-
-
-module vector$ab_dl$stages$14(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$14
-
-
-module vector$ab_dl$stages$15(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$15
-
-
-module vector$ab_dl$stages$16(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$16
-
-
-module vector$ab_dl$stages$17(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$17
-
-
-module vector$ab_dl$stages$18(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$18
-
-
-module vector$ab_dl$stages$19(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$19
-
-
-module vector$ab_dl$stages$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$2
-
-
-module vector$ab_dl$stages$20(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$20
-
-
-module vector$ab_dl$stages$21(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$21
-
-
-module vector$ab_dl$stages$22(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$22
-
-
-module vector$ab_dl$stages$23(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$23
-
-
-module vector$ab_dl$stages$24(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$24
-
-
-module vector$ab_dl$stages$25(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$25
-
-
-module vector$ab_dl$stages$26(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$26
-
-
-module vector$ab_dl$stages$27(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$27
-
-
-module vector$ab_dl$stages$28(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$28
-
-
-module vector$ab_dl$stages$29(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$29
-
-
-module vector$ab_dl$stages$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$3
-
-
-module vector$ab_dl$stages$30(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$30
-
-
-module vector$ab_dl$stages$31(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$31
-
-
-module vector$ab_dl$stages$32(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$32
-
-
-module vector$ab_dl$stages$33(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$33
-
-
-module vector$ab_dl$stages$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$4
-
-
-module vector$ab_dl$stages$5(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$5
-
-
-module vector$ab_dl$stages$6(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$6
-
-
-module vector$ab_dl$stages$7(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$7
-
-
-module vector$ab_dl$stages$8(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$8
-
-
-module vector$ab_dl$stages$9(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ab_dl$stages$9
 
 
 module vector$area(d,q,clock);
@@ -3895,25 +2846,6 @@ module vector$area_neg(x,neg);
     end
     
 endmodule // vector$area_neg
-
-
-module vector$b3(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$b3
 
 
 module vector$bneg(d,q,clock);
@@ -4011,288 +2943,23 @@ module vector$by1(d,q,clock);
 endmodule // vector$by1
 
 
-module vector$c14$0(d,q,clock);
+module vector$cs(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [12:0] d;
+    output reg  [12:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 32'h0;
+       q = 13'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // vector$c14$0
-
-
-module vector$c14$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$c14$1
-
-
-module vector$c14$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$c14$2
-
-
-module vector$ca11(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ca11
-
-
-module vector$cb11(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$cb11
-
-
-module vector$color_of$0(x,neg,over,low);
-    
-    // Module arguments
-    input wire  [31:0] x;
-    output reg  neg;
-    output reg  over;
-    output reg  [7:0] low;
-    
-    // Constant declarations
-    localparam  top = 33'h100000000;
-    localparam  half = 33'h200000;
-    localparam  shift = 8'h16;
-    localparam  limit = 33'h100;
-    
-    // Stub signals
-    reg  [31:0] x_neg$x;
-    wire  x_neg$neg;
-    
-    // Local signals
-    reg  [32:0] ext;
-    reg  [32:0] sum;
-    reg  [32:0] shifted;
-    
-    // Sub module instances
-    vector$color_of$0$x_neg x_neg(
-        .x(x_neg$x),
-        .neg(x_neg$neg)
-    );
-    
-    // Update code
-    always @(*) begin
-        x_neg$x = x;
-        ext = ((x) & 33'h1ffffffff);
-        if (x_neg$neg) begin
-            ext = ((x) & 33'h1ffffffff) | top;
-        end
-        sum = ext + half;
-        neg = sum >= top;
-        shifted = sum >> shift;
-        over = ~neg & (shifted >= limit);
-        low = ((shifted) & 8'hff);
-    end
-    
-endmodule // vector$color_of$0
-
-
-module vector$color_of$0$x_neg(x,neg);
-    
-    // Module arguments
-    input wire  [31:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 32'h80000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$color_of$0$x_neg
-
-
-module vector$color_of$1(x,neg,over,low);
-    
-    // Module arguments
-    input wire  [31:0] x;
-    output reg  neg;
-    output reg  over;
-    output reg  [7:0] low;
-    
-    // Constant declarations
-    localparam  top = 33'h100000000;
-    localparam  half = 33'h200000;
-    localparam  shift = 8'h16;
-    localparam  limit = 33'h100;
-    
-    // Stub signals
-    reg  [31:0] x_neg$x;
-    wire  x_neg$neg;
-    
-    // Local signals
-    reg  [32:0] ext;
-    reg  [32:0] sum;
-    reg  [32:0] shifted;
-    
-    // Sub module instances
-    vector$color_of$1$x_neg x_neg(
-        .x(x_neg$x),
-        .neg(x_neg$neg)
-    );
-    
-    // Update code
-    always @(*) begin
-        x_neg$x = x;
-        ext = ((x) & 33'h1ffffffff);
-        if (x_neg$neg) begin
-            ext = ((x) & 33'h1ffffffff) | top;
-        end
-        sum = ext + half;
-        neg = sum >= top;
-        shifted = sum >> shift;
-        over = ~neg & (shifted >= limit);
-        low = ((shifted) & 8'hff);
-    end
-    
-endmodule // vector$color_of$1
-
-
-module vector$color_of$1$x_neg(x,neg);
-    
-    // Module arguments
-    input wire  [31:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 32'h80000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$color_of$1$x_neg
-
-
-module vector$color_of$2(x,neg,over,low);
-    
-    // Module arguments
-    input wire  [31:0] x;
-    output reg  neg;
-    output reg  over;
-    output reg  [7:0] low;
-    
-    // Constant declarations
-    localparam  top = 33'h100000000;
-    localparam  half = 33'h200000;
-    localparam  shift = 8'h16;
-    localparam  limit = 33'h100;
-    
-    // Stub signals
-    reg  [31:0] x_neg$x;
-    wire  x_neg$neg;
-    
-    // Local signals
-    reg  [32:0] ext;
-    reg  [32:0] sum;
-    reg  [32:0] shifted;
-    
-    // Sub module instances
-    vector$color_of$2$x_neg x_neg(
-        .x(x_neg$x),
-        .neg(x_neg$neg)
-    );
-    
-    // Update code
-    always @(*) begin
-        x_neg$x = x;
-        ext = ((x) & 33'h1ffffffff);
-        if (x_neg$neg) begin
-            ext = ((x) & 33'h1ffffffff) | top;
-        end
-        sum = ext + half;
-        neg = sum >= top;
-        shifted = sum >> shift;
-        over = ~neg & (shifted >= limit);
-        low = ((shifted) & 8'hff);
-    end
-    
-endmodule // vector$color_of$2
-
-
-module vector$color_of$2$x_neg(x,neg);
-    
-    // Module arguments
-    input wire  [31:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 32'h80000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$color_of$2$x_neg
+endmodule // vector$cs
 
 
 module vector$d1c$0(d,q,clock);
@@ -4464,6392 +3131,6 @@ module vector$dc(d,q,clock);
     end
           
 endmodule // vector$dc
-
-
-module vector$depth_of(x,neg,over,low);
-    
-    // Module arguments
-    input wire  [35:0] x;
-    output reg  neg;
-    output reg  over;
-    output reg  [15:0] low;
-    
-    // Constant declarations
-    localparam  top = 37'h1000000000;
-    localparam  half = 37'h20000;
-    localparam  shift = 8'h12;
-    localparam  limit = 37'h10000;
-    
-    // Stub signals
-    reg  [35:0] x_neg$x;
-    wire  x_neg$neg;
-    
-    // Local signals
-    reg  [36:0] ext;
-    reg  [36:0] sum;
-    reg  [36:0] shifted;
-    
-    // Sub module instances
-    vector$depth_of$x_neg x_neg(
-        .x(x_neg$x),
-        .neg(x_neg$neg)
-    );
-    
-    // Update code
-    always @(*) begin
-        x_neg$x = x;
-        ext = ((x) & 37'h1fffffffff);
-        if (x_neg$neg) begin
-            ext = ((x) & 37'h1fffffffff) | top;
-        end
-        sum = ext + half;
-        neg = sum >= top;
-        shifted = sum >> shift;
-        over = ~neg & (shifted >= limit);
-        low = ((shifted) & 16'hffff);
-    end
-    
-endmodule // vector$depth_of
-
-
-module vector$depth_of$x_neg(x,neg);
-    
-    // Module arguments
-    input wire  [35:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 36'h800000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$depth_of$x_neg
-
-
-module vector$div(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  inp_valid;
-    output reg  inp_ready;
-    input wire  hold;
-    input wire  [57:0] inp_n;
-    input wire  [33:0] inp_d;
-    output reg  out_valid;
-    input wire  out_ready;
-    output reg  [25:0] out_q;
-    output reg  [33:0] out_r;
-    
-    // Constant declarations
-    localparam  n_msb = 8'h39;
-    localparam  qm = 8'h19;
-    localparam  q_sign = 26'h2000000;
-    
-    // Stub signals
-    reg  stages$0$clock;
-    reg  stages$0$enable;
-    reg  stages$0$valid_in;
-    reg  [33:0] stages$0$p_in;
-    reg  [24:0] stages$0$x_in;
-    reg  [33:0] stages$0$d_in;
-    reg  stages$0$neg_in;
-    wire  stages$0$valid;
-    wire  [33:0] stages$0$p;
-    wire  [24:0] stages$0$x;
-    wire  [33:0] stages$0$d;
-    wire  stages$0$neg;
-    reg  stages$1$clock;
-    reg  stages$1$enable;
-    reg  stages$1$valid_in;
-    reg  [33:0] stages$1$p_in;
-    reg  [24:0] stages$1$x_in;
-    reg  [33:0] stages$1$d_in;
-    reg  stages$1$neg_in;
-    wire  stages$1$valid;
-    wire  [33:0] stages$1$p;
-    wire  [24:0] stages$1$x;
-    wire  [33:0] stages$1$d;
-    wire  stages$1$neg;
-    reg  stages$2$clock;
-    reg  stages$2$enable;
-    reg  stages$2$valid_in;
-    reg  [33:0] stages$2$p_in;
-    reg  [24:0] stages$2$x_in;
-    reg  [33:0] stages$2$d_in;
-    reg  stages$2$neg_in;
-    wire  stages$2$valid;
-    wire  [33:0] stages$2$p;
-    wire  [24:0] stages$2$x;
-    wire  [33:0] stages$2$d;
-    wire  stages$2$neg;
-    reg  stages$3$clock;
-    reg  stages$3$enable;
-    reg  stages$3$valid_in;
-    reg  [33:0] stages$3$p_in;
-    reg  [24:0] stages$3$x_in;
-    reg  [33:0] stages$3$d_in;
-    reg  stages$3$neg_in;
-    wire  stages$3$valid;
-    wire  [33:0] stages$3$p;
-    wire  [24:0] stages$3$x;
-    wire  [33:0] stages$3$d;
-    wire  stages$3$neg;
-    reg  stages$4$clock;
-    reg  stages$4$enable;
-    reg  stages$4$valid_in;
-    reg  [33:0] stages$4$p_in;
-    reg  [24:0] stages$4$x_in;
-    reg  [33:0] stages$4$d_in;
-    reg  stages$4$neg_in;
-    wire  stages$4$valid;
-    wire  [33:0] stages$4$p;
-    wire  [24:0] stages$4$x;
-    wire  [33:0] stages$4$d;
-    wire  stages$4$neg;
-    reg  stages$5$clock;
-    reg  stages$5$enable;
-    reg  stages$5$valid_in;
-    reg  [33:0] stages$5$p_in;
-    reg  [24:0] stages$5$x_in;
-    reg  [33:0] stages$5$d_in;
-    reg  stages$5$neg_in;
-    wire  stages$5$valid;
-    wire  [33:0] stages$5$p;
-    wire  [24:0] stages$5$x;
-    wire  [33:0] stages$5$d;
-    wire  stages$5$neg;
-    reg  stages$6$clock;
-    reg  stages$6$enable;
-    reg  stages$6$valid_in;
-    reg  [33:0] stages$6$p_in;
-    reg  [24:0] stages$6$x_in;
-    reg  [33:0] stages$6$d_in;
-    reg  stages$6$neg_in;
-    wire  stages$6$valid;
-    wire  [33:0] stages$6$p;
-    wire  [24:0] stages$6$x;
-    wire  [33:0] stages$6$d;
-    wire  stages$6$neg;
-    reg  stages$7$clock;
-    reg  stages$7$enable;
-    reg  stages$7$valid_in;
-    reg  [33:0] stages$7$p_in;
-    reg  [24:0] stages$7$x_in;
-    reg  [33:0] stages$7$d_in;
-    reg  stages$7$neg_in;
-    wire  stages$7$valid;
-    wire  [33:0] stages$7$p;
-    wire  [24:0] stages$7$x;
-    wire  [33:0] stages$7$d;
-    wire  stages$7$neg;
-    reg  stages$8$clock;
-    reg  stages$8$enable;
-    reg  stages$8$valid_in;
-    reg  [33:0] stages$8$p_in;
-    reg  [24:0] stages$8$x_in;
-    reg  [33:0] stages$8$d_in;
-    reg  stages$8$neg_in;
-    wire  stages$8$valid;
-    wire  [33:0] stages$8$p;
-    wire  [24:0] stages$8$x;
-    wire  [33:0] stages$8$d;
-    wire  stages$8$neg;
-    reg  stages$9$clock;
-    reg  stages$9$enable;
-    reg  stages$9$valid_in;
-    reg  [33:0] stages$9$p_in;
-    reg  [24:0] stages$9$x_in;
-    reg  [33:0] stages$9$d_in;
-    reg  stages$9$neg_in;
-    wire  stages$9$valid;
-    wire  [33:0] stages$9$p;
-    wire  [24:0] stages$9$x;
-    wire  [33:0] stages$9$d;
-    wire  stages$9$neg;
-    reg  stages$10$clock;
-    reg  stages$10$enable;
-    reg  stages$10$valid_in;
-    reg  [33:0] stages$10$p_in;
-    reg  [24:0] stages$10$x_in;
-    reg  [33:0] stages$10$d_in;
-    reg  stages$10$neg_in;
-    wire  stages$10$valid;
-    wire  [33:0] stages$10$p;
-    wire  [24:0] stages$10$x;
-    wire  [33:0] stages$10$d;
-    wire  stages$10$neg;
-    reg  stages$11$clock;
-    reg  stages$11$enable;
-    reg  stages$11$valid_in;
-    reg  [33:0] stages$11$p_in;
-    reg  [24:0] stages$11$x_in;
-    reg  [33:0] stages$11$d_in;
-    reg  stages$11$neg_in;
-    wire  stages$11$valid;
-    wire  [33:0] stages$11$p;
-    wire  [24:0] stages$11$x;
-    wire  [33:0] stages$11$d;
-    wire  stages$11$neg;
-    reg  stages$12$clock;
-    reg  stages$12$enable;
-    reg  stages$12$valid_in;
-    reg  [33:0] stages$12$p_in;
-    reg  [24:0] stages$12$x_in;
-    reg  [33:0] stages$12$d_in;
-    reg  stages$12$neg_in;
-    wire  stages$12$valid;
-    wire  [33:0] stages$12$p;
-    wire  [24:0] stages$12$x;
-    wire  [33:0] stages$12$d;
-    wire  stages$12$neg;
-    reg  stages$13$clock;
-    reg  stages$13$enable;
-    reg  stages$13$valid_in;
-    reg  [33:0] stages$13$p_in;
-    reg  [24:0] stages$13$x_in;
-    reg  [33:0] stages$13$d_in;
-    reg  stages$13$neg_in;
-    wire  stages$13$valid;
-    wire  [33:0] stages$13$p;
-    wire  [24:0] stages$13$x;
-    wire  [33:0] stages$13$d;
-    wire  stages$13$neg;
-    reg  stages$14$clock;
-    reg  stages$14$enable;
-    reg  stages$14$valid_in;
-    reg  [33:0] stages$14$p_in;
-    reg  [24:0] stages$14$x_in;
-    reg  [33:0] stages$14$d_in;
-    reg  stages$14$neg_in;
-    wire  stages$14$valid;
-    wire  [33:0] stages$14$p;
-    wire  [24:0] stages$14$x;
-    wire  [33:0] stages$14$d;
-    wire  stages$14$neg;
-    reg  stages$15$clock;
-    reg  stages$15$enable;
-    reg  stages$15$valid_in;
-    reg  [33:0] stages$15$p_in;
-    reg  [24:0] stages$15$x_in;
-    reg  [33:0] stages$15$d_in;
-    reg  stages$15$neg_in;
-    wire  stages$15$valid;
-    wire  [33:0] stages$15$p;
-    wire  [24:0] stages$15$x;
-    wire  [33:0] stages$15$d;
-    wire  stages$15$neg;
-    reg  stages$16$clock;
-    reg  stages$16$enable;
-    reg  stages$16$valid_in;
-    reg  [33:0] stages$16$p_in;
-    reg  [24:0] stages$16$x_in;
-    reg  [33:0] stages$16$d_in;
-    reg  stages$16$neg_in;
-    wire  stages$16$valid;
-    wire  [33:0] stages$16$p;
-    wire  [24:0] stages$16$x;
-    wire  [33:0] stages$16$d;
-    wire  stages$16$neg;
-    reg  stages$17$clock;
-    reg  stages$17$enable;
-    reg  stages$17$valid_in;
-    reg  [33:0] stages$17$p_in;
-    reg  [24:0] stages$17$x_in;
-    reg  [33:0] stages$17$d_in;
-    reg  stages$17$neg_in;
-    wire  stages$17$valid;
-    wire  [33:0] stages$17$p;
-    wire  [24:0] stages$17$x;
-    wire  [33:0] stages$17$d;
-    wire  stages$17$neg;
-    reg  stages$18$clock;
-    reg  stages$18$enable;
-    reg  stages$18$valid_in;
-    reg  [33:0] stages$18$p_in;
-    reg  [24:0] stages$18$x_in;
-    reg  [33:0] stages$18$d_in;
-    reg  stages$18$neg_in;
-    wire  stages$18$valid;
-    wire  [33:0] stages$18$p;
-    wire  [24:0] stages$18$x;
-    wire  [33:0] stages$18$d;
-    wire  stages$18$neg;
-    reg  stages$19$clock;
-    reg  stages$19$enable;
-    reg  stages$19$valid_in;
-    reg  [33:0] stages$19$p_in;
-    reg  [24:0] stages$19$x_in;
-    reg  [33:0] stages$19$d_in;
-    reg  stages$19$neg_in;
-    wire  stages$19$valid;
-    wire  [33:0] stages$19$p;
-    wire  [24:0] stages$19$x;
-    wire  [33:0] stages$19$d;
-    wire  stages$19$neg;
-    reg  stages$20$clock;
-    reg  stages$20$enable;
-    reg  stages$20$valid_in;
-    reg  [33:0] stages$20$p_in;
-    reg  [24:0] stages$20$x_in;
-    reg  [33:0] stages$20$d_in;
-    reg  stages$20$neg_in;
-    wire  stages$20$valid;
-    wire  [33:0] stages$20$p;
-    wire  [24:0] stages$20$x;
-    wire  [33:0] stages$20$d;
-    wire  stages$20$neg;
-    reg  stages$21$clock;
-    reg  stages$21$enable;
-    reg  stages$21$valid_in;
-    reg  [33:0] stages$21$p_in;
-    reg  [24:0] stages$21$x_in;
-    reg  [33:0] stages$21$d_in;
-    reg  stages$21$neg_in;
-    wire  stages$21$valid;
-    wire  [33:0] stages$21$p;
-    wire  [24:0] stages$21$x;
-    wire  [33:0] stages$21$d;
-    wire  stages$21$neg;
-    reg  stages$22$clock;
-    reg  stages$22$enable;
-    reg  stages$22$valid_in;
-    reg  [33:0] stages$22$p_in;
-    reg  [24:0] stages$22$x_in;
-    reg  [33:0] stages$22$d_in;
-    reg  stages$22$neg_in;
-    wire  stages$22$valid;
-    wire  [33:0] stages$22$p;
-    wire  [24:0] stages$22$x;
-    wire  [33:0] stages$22$d;
-    wire  stages$22$neg;
-    reg  stages$23$clock;
-    reg  stages$23$enable;
-    reg  stages$23$valid_in;
-    reg  [33:0] stages$23$p_in;
-    reg  [24:0] stages$23$x_in;
-    reg  [33:0] stages$23$d_in;
-    reg  stages$23$neg_in;
-    wire  stages$23$valid;
-    wire  [33:0] stages$23$p;
-    wire  [24:0] stages$23$x;
-    wire  [33:0] stages$23$d;
-    wire  stages$23$neg;
-    reg  stages$24$clock;
-    reg  stages$24$enable;
-    reg  stages$24$valid_in;
-    reg  [33:0] stages$24$p_in;
-    reg  [24:0] stages$24$x_in;
-    reg  [33:0] stages$24$d_in;
-    reg  stages$24$neg_in;
-    wire  stages$24$valid;
-    wire  [33:0] stages$24$p;
-    wire  [24:0] stages$24$x;
-    wire  [33:0] stages$24$d;
-    wire  stages$24$neg;
-    
-    // Local signals
-    reg  advance;
-    reg  [57:0] m;
-    reg  [24:0] last_x;
-    
-    // Sub module instances
-    vector$div$stages$0 stages$0(
-        .clock(stages$0$clock),
-        .enable(stages$0$enable),
-        .valid_in(stages$0$valid_in),
-        .p_in(stages$0$p_in),
-        .x_in(stages$0$x_in),
-        .d_in(stages$0$d_in),
-        .neg_in(stages$0$neg_in),
-        .valid(stages$0$valid),
-        .p(stages$0$p),
-        .x(stages$0$x),
-        .d(stages$0$d),
-        .neg(stages$0$neg)
-    );
-    vector$div$stages$1 stages$1(
-        .clock(stages$1$clock),
-        .enable(stages$1$enable),
-        .valid_in(stages$1$valid_in),
-        .p_in(stages$1$p_in),
-        .x_in(stages$1$x_in),
-        .d_in(stages$1$d_in),
-        .neg_in(stages$1$neg_in),
-        .valid(stages$1$valid),
-        .p(stages$1$p),
-        .x(stages$1$x),
-        .d(stages$1$d),
-        .neg(stages$1$neg)
-    );
-    vector$div$stages$2 stages$2(
-        .clock(stages$2$clock),
-        .enable(stages$2$enable),
-        .valid_in(stages$2$valid_in),
-        .p_in(stages$2$p_in),
-        .x_in(stages$2$x_in),
-        .d_in(stages$2$d_in),
-        .neg_in(stages$2$neg_in),
-        .valid(stages$2$valid),
-        .p(stages$2$p),
-        .x(stages$2$x),
-        .d(stages$2$d),
-        .neg(stages$2$neg)
-    );
-    vector$div$stages$3 stages$3(
-        .clock(stages$3$clock),
-        .enable(stages$3$enable),
-        .valid_in(stages$3$valid_in),
-        .p_in(stages$3$p_in),
-        .x_in(stages$3$x_in),
-        .d_in(stages$3$d_in),
-        .neg_in(stages$3$neg_in),
-        .valid(stages$3$valid),
-        .p(stages$3$p),
-        .x(stages$3$x),
-        .d(stages$3$d),
-        .neg(stages$3$neg)
-    );
-    vector$div$stages$4 stages$4(
-        .clock(stages$4$clock),
-        .enable(stages$4$enable),
-        .valid_in(stages$4$valid_in),
-        .p_in(stages$4$p_in),
-        .x_in(stages$4$x_in),
-        .d_in(stages$4$d_in),
-        .neg_in(stages$4$neg_in),
-        .valid(stages$4$valid),
-        .p(stages$4$p),
-        .x(stages$4$x),
-        .d(stages$4$d),
-        .neg(stages$4$neg)
-    );
-    vector$div$stages$5 stages$5(
-        .clock(stages$5$clock),
-        .enable(stages$5$enable),
-        .valid_in(stages$5$valid_in),
-        .p_in(stages$5$p_in),
-        .x_in(stages$5$x_in),
-        .d_in(stages$5$d_in),
-        .neg_in(stages$5$neg_in),
-        .valid(stages$5$valid),
-        .p(stages$5$p),
-        .x(stages$5$x),
-        .d(stages$5$d),
-        .neg(stages$5$neg)
-    );
-    vector$div$stages$6 stages$6(
-        .clock(stages$6$clock),
-        .enable(stages$6$enable),
-        .valid_in(stages$6$valid_in),
-        .p_in(stages$6$p_in),
-        .x_in(stages$6$x_in),
-        .d_in(stages$6$d_in),
-        .neg_in(stages$6$neg_in),
-        .valid(stages$6$valid),
-        .p(stages$6$p),
-        .x(stages$6$x),
-        .d(stages$6$d),
-        .neg(stages$6$neg)
-    );
-    vector$div$stages$7 stages$7(
-        .clock(stages$7$clock),
-        .enable(stages$7$enable),
-        .valid_in(stages$7$valid_in),
-        .p_in(stages$7$p_in),
-        .x_in(stages$7$x_in),
-        .d_in(stages$7$d_in),
-        .neg_in(stages$7$neg_in),
-        .valid(stages$7$valid),
-        .p(stages$7$p),
-        .x(stages$7$x),
-        .d(stages$7$d),
-        .neg(stages$7$neg)
-    );
-    vector$div$stages$8 stages$8(
-        .clock(stages$8$clock),
-        .enable(stages$8$enable),
-        .valid_in(stages$8$valid_in),
-        .p_in(stages$8$p_in),
-        .x_in(stages$8$x_in),
-        .d_in(stages$8$d_in),
-        .neg_in(stages$8$neg_in),
-        .valid(stages$8$valid),
-        .p(stages$8$p),
-        .x(stages$8$x),
-        .d(stages$8$d),
-        .neg(stages$8$neg)
-    );
-    vector$div$stages$9 stages$9(
-        .clock(stages$9$clock),
-        .enable(stages$9$enable),
-        .valid_in(stages$9$valid_in),
-        .p_in(stages$9$p_in),
-        .x_in(stages$9$x_in),
-        .d_in(stages$9$d_in),
-        .neg_in(stages$9$neg_in),
-        .valid(stages$9$valid),
-        .p(stages$9$p),
-        .x(stages$9$x),
-        .d(stages$9$d),
-        .neg(stages$9$neg)
-    );
-    vector$div$stages$10 stages$10(
-        .clock(stages$10$clock),
-        .enable(stages$10$enable),
-        .valid_in(stages$10$valid_in),
-        .p_in(stages$10$p_in),
-        .x_in(stages$10$x_in),
-        .d_in(stages$10$d_in),
-        .neg_in(stages$10$neg_in),
-        .valid(stages$10$valid),
-        .p(stages$10$p),
-        .x(stages$10$x),
-        .d(stages$10$d),
-        .neg(stages$10$neg)
-    );
-    vector$div$stages$11 stages$11(
-        .clock(stages$11$clock),
-        .enable(stages$11$enable),
-        .valid_in(stages$11$valid_in),
-        .p_in(stages$11$p_in),
-        .x_in(stages$11$x_in),
-        .d_in(stages$11$d_in),
-        .neg_in(stages$11$neg_in),
-        .valid(stages$11$valid),
-        .p(stages$11$p),
-        .x(stages$11$x),
-        .d(stages$11$d),
-        .neg(stages$11$neg)
-    );
-    vector$div$stages$12 stages$12(
-        .clock(stages$12$clock),
-        .enable(stages$12$enable),
-        .valid_in(stages$12$valid_in),
-        .p_in(stages$12$p_in),
-        .x_in(stages$12$x_in),
-        .d_in(stages$12$d_in),
-        .neg_in(stages$12$neg_in),
-        .valid(stages$12$valid),
-        .p(stages$12$p),
-        .x(stages$12$x),
-        .d(stages$12$d),
-        .neg(stages$12$neg)
-    );
-    vector$div$stages$13 stages$13(
-        .clock(stages$13$clock),
-        .enable(stages$13$enable),
-        .valid_in(stages$13$valid_in),
-        .p_in(stages$13$p_in),
-        .x_in(stages$13$x_in),
-        .d_in(stages$13$d_in),
-        .neg_in(stages$13$neg_in),
-        .valid(stages$13$valid),
-        .p(stages$13$p),
-        .x(stages$13$x),
-        .d(stages$13$d),
-        .neg(stages$13$neg)
-    );
-    vector$div$stages$14 stages$14(
-        .clock(stages$14$clock),
-        .enable(stages$14$enable),
-        .valid_in(stages$14$valid_in),
-        .p_in(stages$14$p_in),
-        .x_in(stages$14$x_in),
-        .d_in(stages$14$d_in),
-        .neg_in(stages$14$neg_in),
-        .valid(stages$14$valid),
-        .p(stages$14$p),
-        .x(stages$14$x),
-        .d(stages$14$d),
-        .neg(stages$14$neg)
-    );
-    vector$div$stages$15 stages$15(
-        .clock(stages$15$clock),
-        .enable(stages$15$enable),
-        .valid_in(stages$15$valid_in),
-        .p_in(stages$15$p_in),
-        .x_in(stages$15$x_in),
-        .d_in(stages$15$d_in),
-        .neg_in(stages$15$neg_in),
-        .valid(stages$15$valid),
-        .p(stages$15$p),
-        .x(stages$15$x),
-        .d(stages$15$d),
-        .neg(stages$15$neg)
-    );
-    vector$div$stages$16 stages$16(
-        .clock(stages$16$clock),
-        .enable(stages$16$enable),
-        .valid_in(stages$16$valid_in),
-        .p_in(stages$16$p_in),
-        .x_in(stages$16$x_in),
-        .d_in(stages$16$d_in),
-        .neg_in(stages$16$neg_in),
-        .valid(stages$16$valid),
-        .p(stages$16$p),
-        .x(stages$16$x),
-        .d(stages$16$d),
-        .neg(stages$16$neg)
-    );
-    vector$div$stages$17 stages$17(
-        .clock(stages$17$clock),
-        .enable(stages$17$enable),
-        .valid_in(stages$17$valid_in),
-        .p_in(stages$17$p_in),
-        .x_in(stages$17$x_in),
-        .d_in(stages$17$d_in),
-        .neg_in(stages$17$neg_in),
-        .valid(stages$17$valid),
-        .p(stages$17$p),
-        .x(stages$17$x),
-        .d(stages$17$d),
-        .neg(stages$17$neg)
-    );
-    vector$div$stages$18 stages$18(
-        .clock(stages$18$clock),
-        .enable(stages$18$enable),
-        .valid_in(stages$18$valid_in),
-        .p_in(stages$18$p_in),
-        .x_in(stages$18$x_in),
-        .d_in(stages$18$d_in),
-        .neg_in(stages$18$neg_in),
-        .valid(stages$18$valid),
-        .p(stages$18$p),
-        .x(stages$18$x),
-        .d(stages$18$d),
-        .neg(stages$18$neg)
-    );
-    vector$div$stages$19 stages$19(
-        .clock(stages$19$clock),
-        .enable(stages$19$enable),
-        .valid_in(stages$19$valid_in),
-        .p_in(stages$19$p_in),
-        .x_in(stages$19$x_in),
-        .d_in(stages$19$d_in),
-        .neg_in(stages$19$neg_in),
-        .valid(stages$19$valid),
-        .p(stages$19$p),
-        .x(stages$19$x),
-        .d(stages$19$d),
-        .neg(stages$19$neg)
-    );
-    vector$div$stages$20 stages$20(
-        .clock(stages$20$clock),
-        .enable(stages$20$enable),
-        .valid_in(stages$20$valid_in),
-        .p_in(stages$20$p_in),
-        .x_in(stages$20$x_in),
-        .d_in(stages$20$d_in),
-        .neg_in(stages$20$neg_in),
-        .valid(stages$20$valid),
-        .p(stages$20$p),
-        .x(stages$20$x),
-        .d(stages$20$d),
-        .neg(stages$20$neg)
-    );
-    vector$div$stages$21 stages$21(
-        .clock(stages$21$clock),
-        .enable(stages$21$enable),
-        .valid_in(stages$21$valid_in),
-        .p_in(stages$21$p_in),
-        .x_in(stages$21$x_in),
-        .d_in(stages$21$d_in),
-        .neg_in(stages$21$neg_in),
-        .valid(stages$21$valid),
-        .p(stages$21$p),
-        .x(stages$21$x),
-        .d(stages$21$d),
-        .neg(stages$21$neg)
-    );
-    vector$div$stages$22 stages$22(
-        .clock(stages$22$clock),
-        .enable(stages$22$enable),
-        .valid_in(stages$22$valid_in),
-        .p_in(stages$22$p_in),
-        .x_in(stages$22$x_in),
-        .d_in(stages$22$d_in),
-        .neg_in(stages$22$neg_in),
-        .valid(stages$22$valid),
-        .p(stages$22$p),
-        .x(stages$22$x),
-        .d(stages$22$d),
-        .neg(stages$22$neg)
-    );
-    vector$div$stages$23 stages$23(
-        .clock(stages$23$clock),
-        .enable(stages$23$enable),
-        .valid_in(stages$23$valid_in),
-        .p_in(stages$23$p_in),
-        .x_in(stages$23$x_in),
-        .d_in(stages$23$d_in),
-        .neg_in(stages$23$neg_in),
-        .valid(stages$23$valid),
-        .p(stages$23$p),
-        .x(stages$23$x),
-        .d(stages$23$d),
-        .neg(stages$23$neg)
-    );
-    vector$div$stages$24 stages$24(
-        .clock(stages$24$clock),
-        .enable(stages$24$enable),
-        .valid_in(stages$24$valid_in),
-        .p_in(stages$24$p_in),
-        .x_in(stages$24$x_in),
-        .d_in(stages$24$d_in),
-        .neg_in(stages$24$neg_in),
-        .valid(stages$24$valid),
-        .p(stages$24$p),
-        .x(stages$24$x),
-        .d(stages$24$d),
-        .neg(stages$24$neg)
-    );
-    
-    // Update code
-    always @(*) begin
-        advance = ~hold & (~stages$24$valid | out_ready);
-        out_valid = stages$24$valid;
-        last_x = stages$24$x;
-        out_r = stages$24$p;
-        out_q = ((last_x) & 26'h3ffffff);
-        if (stages$24$neg) begin
-            out_q = ((last_x) & 26'h3ffffff) | q_sign;
-        end
-        stages$0$clock = clock;
-        stages$0$enable = advance;
-        stages$1$clock = clock;
-        stages$1$enable = advance;
-        stages$2$clock = clock;
-        stages$2$enable = advance;
-        stages$3$clock = clock;
-        stages$3$enable = advance;
-        stages$4$clock = clock;
-        stages$4$enable = advance;
-        stages$5$clock = clock;
-        stages$5$enable = advance;
-        stages$6$clock = clock;
-        stages$6$enable = advance;
-        stages$7$clock = clock;
-        stages$7$enable = advance;
-        stages$8$clock = clock;
-        stages$8$enable = advance;
-        stages$9$clock = clock;
-        stages$9$enable = advance;
-        stages$10$clock = clock;
-        stages$10$enable = advance;
-        stages$11$clock = clock;
-        stages$11$enable = advance;
-        stages$12$clock = clock;
-        stages$12$enable = advance;
-        stages$13$clock = clock;
-        stages$13$enable = advance;
-        stages$14$clock = clock;
-        stages$14$enable = advance;
-        stages$15$clock = clock;
-        stages$15$enable = advance;
-        stages$16$clock = clock;
-        stages$16$enable = advance;
-        stages$17$clock = clock;
-        stages$17$enable = advance;
-        stages$18$clock = clock;
-        stages$18$enable = advance;
-        stages$19$clock = clock;
-        stages$19$enable = advance;
-        stages$20$clock = clock;
-        stages$20$enable = advance;
-        stages$21$clock = clock;
-        stages$21$enable = advance;
-        stages$22$clock = clock;
-        stages$22$enable = advance;
-        stages$23$clock = clock;
-        stages$23$enable = advance;
-        stages$24$clock = clock;
-        stages$24$enable = advance;
-        inp_ready = advance;
-        m = inp_n;
-        if (inp_n[n_msb]) begin
-            m = ~inp_n;
-        end
-        stages$0$valid_in = inp_valid;
-        stages$0$p_in = ((m >> qm) & 34'h3ffffffff);
-        stages$0$x_in = m[(32'h0)+:(25)];
-        stages$0$d_in = inp_d;
-        stages$0$neg_in = inp_n[n_msb];
-        stages$1$valid_in = stages$0$valid;
-        stages$1$p_in = stages$0$p;
-        stages$1$x_in = stages$0$x;
-        stages$1$d_in = stages$0$d;
-        stages$1$neg_in = stages$0$neg;
-        stages$2$valid_in = stages$1$valid;
-        stages$2$p_in = stages$1$p;
-        stages$2$x_in = stages$1$x;
-        stages$2$d_in = stages$1$d;
-        stages$2$neg_in = stages$1$neg;
-        stages$3$valid_in = stages$2$valid;
-        stages$3$p_in = stages$2$p;
-        stages$3$x_in = stages$2$x;
-        stages$3$d_in = stages$2$d;
-        stages$3$neg_in = stages$2$neg;
-        stages$4$valid_in = stages$3$valid;
-        stages$4$p_in = stages$3$p;
-        stages$4$x_in = stages$3$x;
-        stages$4$d_in = stages$3$d;
-        stages$4$neg_in = stages$3$neg;
-        stages$5$valid_in = stages$4$valid;
-        stages$5$p_in = stages$4$p;
-        stages$5$x_in = stages$4$x;
-        stages$5$d_in = stages$4$d;
-        stages$5$neg_in = stages$4$neg;
-        stages$6$valid_in = stages$5$valid;
-        stages$6$p_in = stages$5$p;
-        stages$6$x_in = stages$5$x;
-        stages$6$d_in = stages$5$d;
-        stages$6$neg_in = stages$5$neg;
-        stages$7$valid_in = stages$6$valid;
-        stages$7$p_in = stages$6$p;
-        stages$7$x_in = stages$6$x;
-        stages$7$d_in = stages$6$d;
-        stages$7$neg_in = stages$6$neg;
-        stages$8$valid_in = stages$7$valid;
-        stages$8$p_in = stages$7$p;
-        stages$8$x_in = stages$7$x;
-        stages$8$d_in = stages$7$d;
-        stages$8$neg_in = stages$7$neg;
-        stages$9$valid_in = stages$8$valid;
-        stages$9$p_in = stages$8$p;
-        stages$9$x_in = stages$8$x;
-        stages$9$d_in = stages$8$d;
-        stages$9$neg_in = stages$8$neg;
-        stages$10$valid_in = stages$9$valid;
-        stages$10$p_in = stages$9$p;
-        stages$10$x_in = stages$9$x;
-        stages$10$d_in = stages$9$d;
-        stages$10$neg_in = stages$9$neg;
-        stages$11$valid_in = stages$10$valid;
-        stages$11$p_in = stages$10$p;
-        stages$11$x_in = stages$10$x;
-        stages$11$d_in = stages$10$d;
-        stages$11$neg_in = stages$10$neg;
-        stages$12$valid_in = stages$11$valid;
-        stages$12$p_in = stages$11$p;
-        stages$12$x_in = stages$11$x;
-        stages$12$d_in = stages$11$d;
-        stages$12$neg_in = stages$11$neg;
-        stages$13$valid_in = stages$12$valid;
-        stages$13$p_in = stages$12$p;
-        stages$13$x_in = stages$12$x;
-        stages$13$d_in = stages$12$d;
-        stages$13$neg_in = stages$12$neg;
-        stages$14$valid_in = stages$13$valid;
-        stages$14$p_in = stages$13$p;
-        stages$14$x_in = stages$13$x;
-        stages$14$d_in = stages$13$d;
-        stages$14$neg_in = stages$13$neg;
-        stages$15$valid_in = stages$14$valid;
-        stages$15$p_in = stages$14$p;
-        stages$15$x_in = stages$14$x;
-        stages$15$d_in = stages$14$d;
-        stages$15$neg_in = stages$14$neg;
-        stages$16$valid_in = stages$15$valid;
-        stages$16$p_in = stages$15$p;
-        stages$16$x_in = stages$15$x;
-        stages$16$d_in = stages$15$d;
-        stages$16$neg_in = stages$15$neg;
-        stages$17$valid_in = stages$16$valid;
-        stages$17$p_in = stages$16$p;
-        stages$17$x_in = stages$16$x;
-        stages$17$d_in = stages$16$d;
-        stages$17$neg_in = stages$16$neg;
-        stages$18$valid_in = stages$17$valid;
-        stages$18$p_in = stages$17$p;
-        stages$18$x_in = stages$17$x;
-        stages$18$d_in = stages$17$d;
-        stages$18$neg_in = stages$17$neg;
-        stages$19$valid_in = stages$18$valid;
-        stages$19$p_in = stages$18$p;
-        stages$19$x_in = stages$18$x;
-        stages$19$d_in = stages$18$d;
-        stages$19$neg_in = stages$18$neg;
-        stages$20$valid_in = stages$19$valid;
-        stages$20$p_in = stages$19$p;
-        stages$20$x_in = stages$19$x;
-        stages$20$d_in = stages$19$d;
-        stages$20$neg_in = stages$19$neg;
-        stages$21$valid_in = stages$20$valid;
-        stages$21$p_in = stages$20$p;
-        stages$21$x_in = stages$20$x;
-        stages$21$d_in = stages$20$d;
-        stages$21$neg_in = stages$20$neg;
-        stages$22$valid_in = stages$21$valid;
-        stages$22$p_in = stages$21$p;
-        stages$22$x_in = stages$21$x;
-        stages$22$d_in = stages$21$d;
-        stages$22$neg_in = stages$21$neg;
-        stages$23$valid_in = stages$22$valid;
-        stages$23$p_in = stages$22$p;
-        stages$23$x_in = stages$22$x;
-        stages$23$d_in = stages$22$d;
-        stages$23$neg_in = stages$22$neg;
-        stages$24$valid_in = stages$23$valid;
-        stages$24$p_in = stages$23$p;
-        stages$24$x_in = stages$23$x;
-        stages$24$d_in = stages$23$d;
-        stages$24$neg_in = stages$23$neg;
-    end
-    
-endmodule // vector$div
-
-
-module vector$div$stages$0(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$0$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$0$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$0$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$0$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$0$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$0
-
-
-module vector$div$stages$0$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$0$d_r
-
-
-module vector$div$stages$0$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$0$neg_r
-
-
-module vector$div$stages$0$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$0$p_r
-
-
-module vector$div$stages$0$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$0$valid_r
-
-
-module vector$div$stages$0$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$0$x_r
-
-
-module vector$div$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$1$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$1$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$1$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$1$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$1$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$1
-
-
-module vector$div$stages$1$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$1$d_r
-
-
-module vector$div$stages$1$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$1$neg_r
-
-
-module vector$div$stages$1$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$1$p_r
-
-
-module vector$div$stages$1$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$1$valid_r
-
-
-module vector$div$stages$1$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$1$x_r
-
-
-module vector$div$stages$10(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$10$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$10$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$10$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$10$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$10$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$10
-
-
-module vector$div$stages$10$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$10$d_r
-
-
-module vector$div$stages$10$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$10$neg_r
-
-
-module vector$div$stages$10$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$10$p_r
-
-
-module vector$div$stages$10$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$10$valid_r
-
-
-module vector$div$stages$10$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$10$x_r
-
-
-module vector$div$stages$11(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$11$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$11$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$11$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$11$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$11$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$11
-
-
-module vector$div$stages$11$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$11$d_r
-
-
-module vector$div$stages$11$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$11$neg_r
-
-
-module vector$div$stages$11$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$11$p_r
-
-
-module vector$div$stages$11$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$11$valid_r
-
-
-module vector$div$stages$11$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$11$x_r
-
-
-module vector$div$stages$12(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$12$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$12$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$12$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$12$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$12$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$12
-
-
-module vector$div$stages$12$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$12$d_r
-
-
-module vector$div$stages$12$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$12$neg_r
-
-
-module vector$div$stages$12$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$12$p_r
-
-
-module vector$div$stages$12$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$12$valid_r
-
-
-module vector$div$stages$12$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$12$x_r
-
-
-module vector$div$stages$13(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$13$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$13$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$13$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$13$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$13$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$13
-
-
-module vector$div$stages$13$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$13$d_r
-
-
-module vector$div$stages$13$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$13$neg_r
-
-
-module vector$div$stages$13$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$13$p_r
-
-
-module vector$div$stages$13$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$13$valid_r
-
-
-module vector$div$stages$13$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$13$x_r
-
-
-module vector$div$stages$14(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$14$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$14$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$14$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$14$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$14$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$14
-
-
-module vector$div$stages$14$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$14$d_r
-
-
-module vector$div$stages$14$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$14$neg_r
-
-
-module vector$div$stages$14$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$14$p_r
-
-
-module vector$div$stages$14$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$14$valid_r
-
-
-module vector$div$stages$14$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$14$x_r
-
-
-module vector$div$stages$15(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$15$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$15$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$15$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$15$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$15$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$15
-
-
-module vector$div$stages$15$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$15$d_r
-
-
-module vector$div$stages$15$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$15$neg_r
-
-
-module vector$div$stages$15$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$15$p_r
-
-
-module vector$div$stages$15$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$15$valid_r
-
-
-module vector$div$stages$15$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$15$x_r
-
-
-module vector$div$stages$16(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$16$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$16$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$16$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$16$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$16$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$16
-
-
-module vector$div$stages$16$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$16$d_r
-
-
-module vector$div$stages$16$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$16$neg_r
-
-
-module vector$div$stages$16$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$16$p_r
-
-
-module vector$div$stages$16$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$16$valid_r
-
-
-module vector$div$stages$16$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$16$x_r
-
-
-module vector$div$stages$17(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$17$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$17$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$17$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$17$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$17$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$17
-
-
-module vector$div$stages$17$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$17$d_r
-
-
-module vector$div$stages$17$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$17$neg_r
-
-
-module vector$div$stages$17$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$17$p_r
-
-
-module vector$div$stages$17$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$17$valid_r
-
-
-module vector$div$stages$17$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$17$x_r
-
-
-module vector$div$stages$18(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$18$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$18$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$18$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$18$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$18$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$18
-
-
-module vector$div$stages$18$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$18$d_r
-
-
-module vector$div$stages$18$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$18$neg_r
-
-
-module vector$div$stages$18$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$18$p_r
-
-
-module vector$div$stages$18$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$18$valid_r
-
-
-module vector$div$stages$18$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$18$x_r
-
-
-module vector$div$stages$19(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$19$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$19$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$19$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$19$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$19$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$19
-
-
-module vector$div$stages$19$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$19$d_r
-
-
-module vector$div$stages$19$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$19$neg_r
-
-
-module vector$div$stages$19$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$19$p_r
-
-
-module vector$div$stages$19$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$19$valid_r
-
-
-module vector$div$stages$19$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$19$x_r
-
-
-module vector$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$2$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$2$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$2$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$2$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$2$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$2
-
-
-module vector$div$stages$2$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$2$d_r
-
-
-module vector$div$stages$2$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$2$neg_r
-
-
-module vector$div$stages$2$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$2$p_r
-
-
-module vector$div$stages$2$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$2$valid_r
-
-
-module vector$div$stages$2$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$2$x_r
-
-
-module vector$div$stages$20(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$20$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$20$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$20$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$20$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$20$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$20
-
-
-module vector$div$stages$20$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$20$d_r
-
-
-module vector$div$stages$20$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$20$neg_r
-
-
-module vector$div$stages$20$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$20$p_r
-
-
-module vector$div$stages$20$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$20$valid_r
-
-
-module vector$div$stages$20$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$20$x_r
-
-
-module vector$div$stages$21(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$21$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$21$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$21$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$21$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$21$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$21
-
-
-module vector$div$stages$21$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$21$d_r
-
-
-module vector$div$stages$21$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$21$neg_r
-
-
-module vector$div$stages$21$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$21$p_r
-
-
-module vector$div$stages$21$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$21$valid_r
-
-
-module vector$div$stages$21$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$21$x_r
-
-
-module vector$div$stages$22(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$22$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$22$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$22$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$22$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$22$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$22
-
-
-module vector$div$stages$22$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$22$d_r
-
-
-module vector$div$stages$22$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$22$neg_r
-
-
-module vector$div$stages$22$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$22$p_r
-
-
-module vector$div$stages$22$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$22$valid_r
-
-
-module vector$div$stages$22$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$22$x_r
-
-
-module vector$div$stages$23(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$23$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$23$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$23$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$23$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$23$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$23
-
-
-module vector$div$stages$23$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$23$d_r
-
-
-module vector$div$stages$23$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$23$neg_r
-
-
-module vector$div$stages$23$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$23$p_r
-
-
-module vector$div$stages$23$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$23$valid_r
-
-
-module vector$div$stages$23$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$23$x_r
-
-
-module vector$div$stages$24(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b1;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$24$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$24$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$24$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$24$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$24$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$24
-
-
-module vector$div$stages$24$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$24$d_r
-
-
-module vector$div$stages$24$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$24$neg_r
-
-
-module vector$div$stages$24$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$24$p_r
-
-
-module vector$div$stages$24$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$24$valid_r
-
-
-module vector$div$stages$24$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$24$x_r
-
-
-module vector$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$3$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$3$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$3$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$3$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$3$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$3
-
-
-module vector$div$stages$3$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$3$d_r
-
-
-module vector$div$stages$3$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$3$neg_r
-
-
-module vector$div$stages$3$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$3$p_r
-
-
-module vector$div$stages$3$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$3$valid_r
-
-
-module vector$div$stages$3$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$3$x_r
-
-
-module vector$div$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$4$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$4$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$4$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$4$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$4$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$4
-
-
-module vector$div$stages$4$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$4$d_r
-
-
-module vector$div$stages$4$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$4$neg_r
-
-
-module vector$div$stages$4$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$4$p_r
-
-
-module vector$div$stages$4$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$4$valid_r
-
-
-module vector$div$stages$4$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$4$x_r
-
-
-module vector$div$stages$5(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$5$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$5$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$5$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$5$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$5$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$5
-
-
-module vector$div$stages$5$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$5$d_r
-
-
-module vector$div$stages$5$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$5$neg_r
-
-
-module vector$div$stages$5$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$5$p_r
-
-
-module vector$div$stages$5$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$5$valid_r
-
-
-module vector$div$stages$5$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$5$x_r
-
-
-module vector$div$stages$6(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$6$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$6$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$6$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$6$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$6$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$6
-
-
-module vector$div$stages$6$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$6$d_r
-
-
-module vector$div$stages$6$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$6$neg_r
-
-
-module vector$div$stages$6$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$6$p_r
-
-
-module vector$div$stages$6$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$6$valid_r
-
-
-module vector$div$stages$6$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$6$x_r
-
-
-module vector$div$stages$7(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$7$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$7$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$7$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$7$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$7$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$7
-
-
-module vector$div$stages$7$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$7$d_r
-
-
-module vector$div$stages$7$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$7$neg_r
-
-
-module vector$div$stages$7$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$7$p_r
-
-
-module vector$div$stages$7$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$7$valid_r
-
-
-module vector$div$stages$7$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$7$x_r
-
-
-module vector$div$stages$8(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$8$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$8$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$8$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$8$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$8$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$8
-
-
-module vector$div$stages$8$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$8$d_r
-
-
-module vector$div$stages$8$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$8$neg_r
-
-
-module vector$div$stages$8$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$8$p_r
-
-
-module vector$div$stages$8$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$8$valid_r
-
-
-module vector$div$stages$8$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$8$x_r
-
-
-module vector$div$stages$9(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  enable;
-    input wire  valid_in;
-    input wire  [33:0] p_in;
-    input wire  [24:0] x_in;
-    input wire  [33:0] d_in;
-    input wire  neg_in;
-    output reg  valid;
-    output reg  [33:0] p;
-    output reg  [24:0] x;
-    output reg  [33:0] d;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  borrow = 8'h22;
-    localparam  x_msb = 8'h18;
-    localparam  fin = 1'b0;
-    
-    // Stub signals
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
-    reg  [33:0] p_r$d;
-    wire  [33:0] p_r$q;
-    reg  p_r$clock;
-    reg  [24:0] x_r$d;
-    wire  [24:0] x_r$q;
-    reg  x_r$clock;
-    reg  [33:0] d_r$d;
-    wire  [33:0] d_r$q;
-    reg  d_r$clock;
-    reg  neg_r$d;
-    wire  neg_r$q;
-    reg  neg_r$clock;
-    
-    // Local signals
-    reg  [34:0] tp$0;
-    reg  [34:0] tp$1;
-    reg  [24:0] tx$0;
-    reg  [24:0] tx$1;
-    reg  [34:0] t$0;
-    reg  [34:0] diff$0;
-    reg  [34:0] d1;
-    
-    // Sub module instances
-    vector$div$stages$9$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
-    );
-    vector$div$stages$9$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$div$stages$9$x_r x_r(
-        .d(x_r$d),
-        .q(x_r$q),
-        .clock(x_r$clock)
-    );
-    vector$div$stages$9$d_r d_r(
-        .d(d_r$d),
-        .q(d_r$q),
-        .clock(d_r$clock)
-    );
-    vector$div$stages$9$neg_r neg_r(
-        .d(neg_r$d),
-        .q(neg_r$q),
-        .clock(neg_r$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        valid_r$clock = clock;
-        p_r$clock = clock;
-        x_r$clock = clock;
-        d_r$clock = clock;
-        neg_r$clock = clock;
-        valid_r$d = valid_r$q;
-        p_r$d = p_r$q;
-        x_r$d = x_r$q;
-        d_r$d = d_r$q;
-        neg_r$d = neg_r$q;
-        d1 = ((d_in) & 35'h7ffffffff);
-        tp$0 = ((p_in) & 35'h7ffffffff);
-        tx$0 = x_in;
-        t$0 = tp$0 << 32'h1;
-        if (tx$0[x_msb]) begin
-            t$0 = (tp$0 << 32'h1) | 32'h1;
-        end
-        diff$0 = t$0 - d1;
-        if (diff$0[borrow]) begin
-            tp$1 = t$0;
-            tx$1 = tx$0 << 32'h1;
-        end
-        else begin
-            tp$1 = diff$0;
-            tx$1 = (tx$0 << 32'h1) | 32'h1;
-        end
-        if (enable) begin
-            valid_r$d = valid_in;
-            p_r$d = tp$1[(32'h0)+:(34)];
-            x_r$d = tx$1;
-            if (fin & neg_in) begin
-                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
-                x_r$d = ~tx$1;
-            end
-            d_r$d = d_in;
-            neg_r$d = neg_in;
-        end
-        valid = valid_r$q;
-        p = p_r$q;
-        x = x_r$q;
-        d = d_r$q;
-        neg = neg_r$q;
-    end
-    
-endmodule // vector$div$stages$9
-
-
-module vector$div$stages$9$d_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$9$d_r
-
-
-module vector$div$stages$9$neg_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$9$neg_r
-
-
-module vector$div$stages$9$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$9$p_r
-
-
-module vector$div$stages$9$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$9$valid_r
-
-
-module vector$div$stages$9$x_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [24:0] d;
-    output reg  [24:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 25'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div$stages$9$x_r
 
 
 module vector$div_a(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
@@ -14367,25 +6648,6 @@ module vector$div_a$stages$9$x_r(d,q,clock);
 endmodule // vector$div_a$stages$9$x_r
 
 
-module vector$div_d(d,q,clock);
-    
-    // Module arguments
-    input wire  [33:0] d;
-    output reg  [33:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 34'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$div_d
-
-
 module vector$div_da(d,q,clock);
     
     // Module arguments
@@ -14403,1048 +6665,6 @@ module vector$div_da(d,q,clock);
     end
           
 endmodule // vector$div_da
-
-
-module vector$dtag_dl(clock,en,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    
-    // Stub signals
-    reg  [16:0] stages$0$d;
-    wire  [16:0] stages$0$q;
-    reg  stages$0$clock;
-    reg  [16:0] stages$1$d;
-    wire  [16:0] stages$1$q;
-    reg  stages$1$clock;
-    reg  [16:0] stages$2$d;
-    wire  [16:0] stages$2$q;
-    reg  stages$2$clock;
-    reg  [16:0] stages$3$d;
-    wire  [16:0] stages$3$q;
-    reg  stages$3$clock;
-    reg  [16:0] stages$4$d;
-    wire  [16:0] stages$4$q;
-    reg  stages$4$clock;
-    reg  [16:0] stages$5$d;
-    wire  [16:0] stages$5$q;
-    reg  stages$5$clock;
-    reg  [16:0] stages$6$d;
-    wire  [16:0] stages$6$q;
-    reg  stages$6$clock;
-    reg  [16:0] stages$7$d;
-    wire  [16:0] stages$7$q;
-    reg  stages$7$clock;
-    reg  [16:0] stages$8$d;
-    wire  [16:0] stages$8$q;
-    reg  stages$8$clock;
-    reg  [16:0] stages$9$d;
-    wire  [16:0] stages$9$q;
-    reg  stages$9$clock;
-    reg  [16:0] stages$10$d;
-    wire  [16:0] stages$10$q;
-    reg  stages$10$clock;
-    reg  [16:0] stages$11$d;
-    wire  [16:0] stages$11$q;
-    reg  stages$11$clock;
-    reg  [16:0] stages$12$d;
-    wire  [16:0] stages$12$q;
-    reg  stages$12$clock;
-    reg  [16:0] stages$13$d;
-    wire  [16:0] stages$13$q;
-    reg  stages$13$clock;
-    reg  [16:0] stages$14$d;
-    wire  [16:0] stages$14$q;
-    reg  stages$14$clock;
-    reg  [16:0] stages$15$d;
-    wire  [16:0] stages$15$q;
-    reg  stages$15$clock;
-    reg  [16:0] stages$16$d;
-    wire  [16:0] stages$16$q;
-    reg  stages$16$clock;
-    reg  [16:0] stages$17$d;
-    wire  [16:0] stages$17$q;
-    reg  stages$17$clock;
-    reg  [16:0] stages$18$d;
-    wire  [16:0] stages$18$q;
-    reg  stages$18$clock;
-    reg  [16:0] stages$19$d;
-    wire  [16:0] stages$19$q;
-    reg  stages$19$clock;
-    reg  [16:0] stages$20$d;
-    wire  [16:0] stages$20$q;
-    reg  stages$20$clock;
-    reg  [16:0] stages$21$d;
-    wire  [16:0] stages$21$q;
-    reg  stages$21$clock;
-    reg  [16:0] stages$22$d;
-    wire  [16:0] stages$22$q;
-    reg  stages$22$clock;
-    reg  [16:0] stages$23$d;
-    wire  [16:0] stages$23$q;
-    reg  stages$23$clock;
-    reg  [16:0] stages$24$d;
-    wire  [16:0] stages$24$q;
-    reg  stages$24$clock;
-    reg  [16:0] stages$25$d;
-    wire  [16:0] stages$25$q;
-    reg  stages$25$clock;
-    reg  [16:0] stages$26$d;
-    wire  [16:0] stages$26$q;
-    reg  stages$26$clock;
-    reg  [16:0] stages$27$d;
-    wire  [16:0] stages$27$q;
-    reg  stages$27$clock;
-    reg  [16:0] stages$28$d;
-    wire  [16:0] stages$28$q;
-    reg  stages$28$clock;
-    reg  [16:0] stages$29$d;
-    wire  [16:0] stages$29$q;
-    reg  stages$29$clock;
-    reg  [16:0] stages$30$d;
-    wire  [16:0] stages$30$q;
-    reg  stages$30$clock;
-    reg  [16:0] stages$31$d;
-    wire  [16:0] stages$31$q;
-    reg  stages$31$clock;
-    reg  [16:0] stages$32$d;
-    wire  [16:0] stages$32$q;
-    reg  stages$32$clock;
-    reg  [16:0] stages$33$d;
-    wire  [16:0] stages$33$q;
-    reg  stages$33$clock;
-    
-    // Sub module instances
-    vector$dtag_dl$stages$0 stages$0(
-        .d(stages$0$d),
-        .q(stages$0$q),
-        .clock(stages$0$clock)
-    );
-    vector$dtag_dl$stages$1 stages$1(
-        .d(stages$1$d),
-        .q(stages$1$q),
-        .clock(stages$1$clock)
-    );
-    vector$dtag_dl$stages$2 stages$2(
-        .d(stages$2$d),
-        .q(stages$2$q),
-        .clock(stages$2$clock)
-    );
-    vector$dtag_dl$stages$3 stages$3(
-        .d(stages$3$d),
-        .q(stages$3$q),
-        .clock(stages$3$clock)
-    );
-    vector$dtag_dl$stages$4 stages$4(
-        .d(stages$4$d),
-        .q(stages$4$q),
-        .clock(stages$4$clock)
-    );
-    vector$dtag_dl$stages$5 stages$5(
-        .d(stages$5$d),
-        .q(stages$5$q),
-        .clock(stages$5$clock)
-    );
-    vector$dtag_dl$stages$6 stages$6(
-        .d(stages$6$d),
-        .q(stages$6$q),
-        .clock(stages$6$clock)
-    );
-    vector$dtag_dl$stages$7 stages$7(
-        .d(stages$7$d),
-        .q(stages$7$q),
-        .clock(stages$7$clock)
-    );
-    vector$dtag_dl$stages$8 stages$8(
-        .d(stages$8$d),
-        .q(stages$8$q),
-        .clock(stages$8$clock)
-    );
-    vector$dtag_dl$stages$9 stages$9(
-        .d(stages$9$d),
-        .q(stages$9$q),
-        .clock(stages$9$clock)
-    );
-    vector$dtag_dl$stages$10 stages$10(
-        .d(stages$10$d),
-        .q(stages$10$q),
-        .clock(stages$10$clock)
-    );
-    vector$dtag_dl$stages$11 stages$11(
-        .d(stages$11$d),
-        .q(stages$11$q),
-        .clock(stages$11$clock)
-    );
-    vector$dtag_dl$stages$12 stages$12(
-        .d(stages$12$d),
-        .q(stages$12$q),
-        .clock(stages$12$clock)
-    );
-    vector$dtag_dl$stages$13 stages$13(
-        .d(stages$13$d),
-        .q(stages$13$q),
-        .clock(stages$13$clock)
-    );
-    vector$dtag_dl$stages$14 stages$14(
-        .d(stages$14$d),
-        .q(stages$14$q),
-        .clock(stages$14$clock)
-    );
-    vector$dtag_dl$stages$15 stages$15(
-        .d(stages$15$d),
-        .q(stages$15$q),
-        .clock(stages$15$clock)
-    );
-    vector$dtag_dl$stages$16 stages$16(
-        .d(stages$16$d),
-        .q(stages$16$q),
-        .clock(stages$16$clock)
-    );
-    vector$dtag_dl$stages$17 stages$17(
-        .d(stages$17$d),
-        .q(stages$17$q),
-        .clock(stages$17$clock)
-    );
-    vector$dtag_dl$stages$18 stages$18(
-        .d(stages$18$d),
-        .q(stages$18$q),
-        .clock(stages$18$clock)
-    );
-    vector$dtag_dl$stages$19 stages$19(
-        .d(stages$19$d),
-        .q(stages$19$q),
-        .clock(stages$19$clock)
-    );
-    vector$dtag_dl$stages$20 stages$20(
-        .d(stages$20$d),
-        .q(stages$20$q),
-        .clock(stages$20$clock)
-    );
-    vector$dtag_dl$stages$21 stages$21(
-        .d(stages$21$d),
-        .q(stages$21$q),
-        .clock(stages$21$clock)
-    );
-    vector$dtag_dl$stages$22 stages$22(
-        .d(stages$22$d),
-        .q(stages$22$q),
-        .clock(stages$22$clock)
-    );
-    vector$dtag_dl$stages$23 stages$23(
-        .d(stages$23$d),
-        .q(stages$23$q),
-        .clock(stages$23$clock)
-    );
-    vector$dtag_dl$stages$24 stages$24(
-        .d(stages$24$d),
-        .q(stages$24$q),
-        .clock(stages$24$clock)
-    );
-    vector$dtag_dl$stages$25 stages$25(
-        .d(stages$25$d),
-        .q(stages$25$q),
-        .clock(stages$25$clock)
-    );
-    vector$dtag_dl$stages$26 stages$26(
-        .d(stages$26$d),
-        .q(stages$26$q),
-        .clock(stages$26$clock)
-    );
-    vector$dtag_dl$stages$27 stages$27(
-        .d(stages$27$d),
-        .q(stages$27$q),
-        .clock(stages$27$clock)
-    );
-    vector$dtag_dl$stages$28 stages$28(
-        .d(stages$28$d),
-        .q(stages$28$q),
-        .clock(stages$28$clock)
-    );
-    vector$dtag_dl$stages$29 stages$29(
-        .d(stages$29$d),
-        .q(stages$29$q),
-        .clock(stages$29$clock)
-    );
-    vector$dtag_dl$stages$30 stages$30(
-        .d(stages$30$d),
-        .q(stages$30$q),
-        .clock(stages$30$clock)
-    );
-    vector$dtag_dl$stages$31 stages$31(
-        .d(stages$31$d),
-        .q(stages$31$q),
-        .clock(stages$31$clock)
-    );
-    vector$dtag_dl$stages$32 stages$32(
-        .d(stages$32$d),
-        .q(stages$32$q),
-        .clock(stages$32$clock)
-    );
-    vector$dtag_dl$stages$33 stages$33(
-        .d(stages$33$d),
-        .q(stages$33$q),
-        .clock(stages$33$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        stages$0$clock = clock;
-        stages$0$d = stages$0$q;
-        stages$1$clock = clock;
-        stages$1$d = stages$1$q;
-        stages$2$clock = clock;
-        stages$2$d = stages$2$q;
-        stages$3$clock = clock;
-        stages$3$d = stages$3$q;
-        stages$4$clock = clock;
-        stages$4$d = stages$4$q;
-        stages$5$clock = clock;
-        stages$5$d = stages$5$q;
-        stages$6$clock = clock;
-        stages$6$d = stages$6$q;
-        stages$7$clock = clock;
-        stages$7$d = stages$7$q;
-        stages$8$clock = clock;
-        stages$8$d = stages$8$q;
-        stages$9$clock = clock;
-        stages$9$d = stages$9$q;
-        stages$10$clock = clock;
-        stages$10$d = stages$10$q;
-        stages$11$clock = clock;
-        stages$11$d = stages$11$q;
-        stages$12$clock = clock;
-        stages$12$d = stages$12$q;
-        stages$13$clock = clock;
-        stages$13$d = stages$13$q;
-        stages$14$clock = clock;
-        stages$14$d = stages$14$q;
-        stages$15$clock = clock;
-        stages$15$d = stages$15$q;
-        stages$16$clock = clock;
-        stages$16$d = stages$16$q;
-        stages$17$clock = clock;
-        stages$17$d = stages$17$q;
-        stages$18$clock = clock;
-        stages$18$d = stages$18$q;
-        stages$19$clock = clock;
-        stages$19$d = stages$19$q;
-        stages$20$clock = clock;
-        stages$20$d = stages$20$q;
-        stages$21$clock = clock;
-        stages$21$d = stages$21$q;
-        stages$22$clock = clock;
-        stages$22$d = stages$22$q;
-        stages$23$clock = clock;
-        stages$23$d = stages$23$q;
-        stages$24$clock = clock;
-        stages$24$d = stages$24$q;
-        stages$25$clock = clock;
-        stages$25$d = stages$25$q;
-        stages$26$clock = clock;
-        stages$26$d = stages$26$q;
-        stages$27$clock = clock;
-        stages$27$d = stages$27$q;
-        stages$28$clock = clock;
-        stages$28$d = stages$28$q;
-        stages$29$clock = clock;
-        stages$29$d = stages$29$q;
-        stages$30$clock = clock;
-        stages$30$d = stages$30$q;
-        stages$31$clock = clock;
-        stages$31$d = stages$31$q;
-        stages$32$clock = clock;
-        stages$32$d = stages$32$q;
-        stages$33$clock = clock;
-        stages$33$d = stages$33$q;
-        if (en) begin
-            stages$0$d = d;
-            stages$1$d = stages$0$q;
-            stages$2$d = stages$1$q;
-            stages$3$d = stages$2$q;
-            stages$4$d = stages$3$q;
-            stages$5$d = stages$4$q;
-            stages$6$d = stages$5$q;
-            stages$7$d = stages$6$q;
-            stages$8$d = stages$7$q;
-            stages$9$d = stages$8$q;
-            stages$10$d = stages$9$q;
-            stages$11$d = stages$10$q;
-            stages$12$d = stages$11$q;
-            stages$13$d = stages$12$q;
-            stages$14$d = stages$13$q;
-            stages$15$d = stages$14$q;
-            stages$16$d = stages$15$q;
-            stages$17$d = stages$16$q;
-            stages$18$d = stages$17$q;
-            stages$19$d = stages$18$q;
-            stages$20$d = stages$19$q;
-            stages$21$d = stages$20$q;
-            stages$22$d = stages$21$q;
-            stages$23$d = stages$22$q;
-            stages$24$d = stages$23$q;
-            stages$25$d = stages$24$q;
-            stages$26$d = stages$25$q;
-            stages$27$d = stages$26$q;
-            stages$28$d = stages$27$q;
-            stages$29$d = stages$28$q;
-            stages$30$d = stages$29$q;
-            stages$31$d = stages$30$q;
-            stages$32$d = stages$31$q;
-            stages$33$d = stages$32$q;
-        end
-        q = stages$33$q;
-    end
-    
-endmodule // vector$dtag_dl
-
-
-module vector$dtag_dl$stages$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$0
-
-
-module vector$dtag_dl$stages$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$1
-
-
-module vector$dtag_dl$stages$10(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$10
-
-
-module vector$dtag_dl$stages$11(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$11
-
-
-module vector$dtag_dl$stages$12(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$12
-
-
-module vector$dtag_dl$stages$13(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$13
-
-
-module vector$dtag_dl$stages$14(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$14
-
-
-module vector$dtag_dl$stages$15(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$15
-
-
-module vector$dtag_dl$stages$16(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$16
-
-
-module vector$dtag_dl$stages$17(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$17
-
-
-module vector$dtag_dl$stages$18(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$18
-
-
-module vector$dtag_dl$stages$19(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$19
-
-
-module vector$dtag_dl$stages$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$2
-
-
-module vector$dtag_dl$stages$20(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$20
-
-
-module vector$dtag_dl$stages$21(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$21
-
-
-module vector$dtag_dl$stages$22(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$22
-
-
-module vector$dtag_dl$stages$23(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$23
-
-
-module vector$dtag_dl$stages$24(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$24
-
-
-module vector$dtag_dl$stages$25(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$25
-
-
-module vector$dtag_dl$stages$26(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$26
-
-
-module vector$dtag_dl$stages$27(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$27
-
-
-module vector$dtag_dl$stages$28(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$28
-
-
-module vector$dtag_dl$stages$29(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$29
-
-
-module vector$dtag_dl$stages$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$3
-
-
-module vector$dtag_dl$stages$30(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$30
-
-
-module vector$dtag_dl$stages$31(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$31
-
-
-module vector$dtag_dl$stages$32(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$32
-
-
-module vector$dtag_dl$stages$33(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$33
-
-
-module vector$dtag_dl$stages$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$4
-
-
-module vector$dtag_dl$stages$5(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$5
-
-
-module vector$dtag_dl$stages$6(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$6
-
-
-module vector$dtag_dl$stages$7(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$7
-
-
-module vector$dtag_dl$stages$8(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$8
-
-
-module vector$dtag_dl$stages$9(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$dtag_dl$stages$9
 
 
 module vector$dx$0(d,q,clock);
@@ -15504,57 +6724,6 @@ module vector$dx$2(d,q,clock);
 endmodule // vector$dx$2
 
 
-module vector$dx_neg$0(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$dx_neg$0
-
-
-module vector$dx_neg$1(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$dx_neg$1
-
-
-module vector$dx_neg$2(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$dx_neg$2
-
-
 module vector$dy$0(d,q,clock);
     
     // Module arguments
@@ -15612,181 +6781,175 @@ module vector$dy$2(d,q,clock);
 endmodule // vector$dy$2
 
 
-module vector$dy_neg$0(x,neg);
+module vector$el$0(d,q,clock);
     
     // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
     end
     
-endmodule // vector$dy_neg$0
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$el$0
 
 
-module vector$dy_neg$1(x,neg);
+module vector$el$1(d,q,clock);
     
     // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
     end
     
-endmodule // vector$dy_neg$1
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$el$1
 
 
-module vector$dy_neg$2(x,neg);
+module vector$el$2(d,q,clock);
     
     // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
     end
     
-endmodule // vector$dy_neg$2
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$el$2
 
 
-module vector$edx$0(x,y);
+module vector$ell$0(d,q,clock);
     
     // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
     end
     
-endmodule // vector$edx$0
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$ell$0
 
 
-module vector$edx$1(x,y);
+module vector$ell$1(d,q,clock);
     
     // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
     end
     
-endmodule // vector$edx$1
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$ell$1
 
 
-module vector$edx$2(x,y);
+module vector$ell$2(d,q,clock);
     
     // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
     end
     
-endmodule // vector$edx$2
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$ell$2
 
 
-module vector$edy$0(x,y);
+module vector$elm$0(d,q,clock);
     
     // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
     end
     
-endmodule // vector$edy$0
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$elm$0
 
 
-module vector$edy$1(x,y);
+module vector$elm$1(d,q,clock);
     
     // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
     end
     
-endmodule // vector$edy$1
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$elm$1
 
 
-module vector$edy$2(x,y);
+module vector$elm$2(d,q,clock);
     
     // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
     end
     
-endmodule // vector$edy$2
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$elm$2
 
 
 module vector$empty(d,q,clock);
@@ -15808,67 +6971,118 @@ module vector$empty(d,q,clock);
 endmodule // vector$empty
 
 
-module vector$eq$0(x,y);
+module vector$er$0(d,q,clock);
     
     // Module arguments
-    input wire  [27:0] x;
-    output reg  [29:0] y;
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  msb = 8'h1b;
-    localparam  ext = 30'h30000000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 30'h3fffffff);
-        if (x[msb]) begin
-            y = ((x) & 30'h3fffffff) | ext;
-        end
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
     end
     
-endmodule // vector$eq$0
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$er$0
 
 
-module vector$eq$1(x,y);
+module vector$er$1(d,q,clock);
     
     // Module arguments
-    input wire  [27:0] x;
-    output reg  [29:0] y;
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  msb = 8'h1b;
-    localparam  ext = 30'h30000000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 30'h3fffffff);
-        if (x[msb]) begin
-            y = ((x) & 30'h3fffffff) | ext;
-        end
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
     end
     
-endmodule // vector$eq$1
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$er$1
 
 
-module vector$eq$2(x,y);
+module vector$er$2(d,q,clock);
     
     // Module arguments
-    input wire  [27:0] x;
-    output reg  [29:0] y;
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  msb = 8'h1b;
-    localparam  ext = 30'h30000000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 30'h3fffffff);
-        if (x[msb]) begin
-            y = ((x) & 30'h3fffffff) | ext;
-        end
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
     end
     
-endmodule // vector$eq$2
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$er$2
+
+
+module vector$ern$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$ern$0
+
+
+module vector$ern$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$ern$1
+
+
+module vector$ern$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$ern$2
 
 
 module vector$ex$0(x,y);
@@ -15934,25 +7148,6 @@ module vector$ex$2(x,y);
 endmodule // vector$ex$2
 
 
-module vector$exp8(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp8
-
-
 module vector$exp_a(d,q,clock);
     
     // Module arguments
@@ -15970,868 +7165,6 @@ module vector$exp_a(d,q,clock);
     end
           
 endmodule // vector$exp_a
-
-
-module vector$exp_dl(clock,en,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    
-    // Stub signals
-    reg  [7:0] stages$0$d;
-    wire  [7:0] stages$0$q;
-    reg  stages$0$clock;
-    reg  [7:0] stages$1$d;
-    wire  [7:0] stages$1$q;
-    reg  stages$1$clock;
-    reg  [7:0] stages$2$d;
-    wire  [7:0] stages$2$q;
-    reg  stages$2$clock;
-    reg  [7:0] stages$3$d;
-    wire  [7:0] stages$3$q;
-    reg  stages$3$clock;
-    reg  [7:0] stages$4$d;
-    wire  [7:0] stages$4$q;
-    reg  stages$4$clock;
-    reg  [7:0] stages$5$d;
-    wire  [7:0] stages$5$q;
-    reg  stages$5$clock;
-    reg  [7:0] stages$6$d;
-    wire  [7:0] stages$6$q;
-    reg  stages$6$clock;
-    reg  [7:0] stages$7$d;
-    wire  [7:0] stages$7$q;
-    reg  stages$7$clock;
-    reg  [7:0] stages$8$d;
-    wire  [7:0] stages$8$q;
-    reg  stages$8$clock;
-    reg  [7:0] stages$9$d;
-    wire  [7:0] stages$9$q;
-    reg  stages$9$clock;
-    reg  [7:0] stages$10$d;
-    wire  [7:0] stages$10$q;
-    reg  stages$10$clock;
-    reg  [7:0] stages$11$d;
-    wire  [7:0] stages$11$q;
-    reg  stages$11$clock;
-    reg  [7:0] stages$12$d;
-    wire  [7:0] stages$12$q;
-    reg  stages$12$clock;
-    reg  [7:0] stages$13$d;
-    wire  [7:0] stages$13$q;
-    reg  stages$13$clock;
-    reg  [7:0] stages$14$d;
-    wire  [7:0] stages$14$q;
-    reg  stages$14$clock;
-    reg  [7:0] stages$15$d;
-    wire  [7:0] stages$15$q;
-    reg  stages$15$clock;
-    reg  [7:0] stages$16$d;
-    wire  [7:0] stages$16$q;
-    reg  stages$16$clock;
-    reg  [7:0] stages$17$d;
-    wire  [7:0] stages$17$q;
-    reg  stages$17$clock;
-    reg  [7:0] stages$18$d;
-    wire  [7:0] stages$18$q;
-    reg  stages$18$clock;
-    reg  [7:0] stages$19$d;
-    wire  [7:0] stages$19$q;
-    reg  stages$19$clock;
-    reg  [7:0] stages$20$d;
-    wire  [7:0] stages$20$q;
-    reg  stages$20$clock;
-    reg  [7:0] stages$21$d;
-    wire  [7:0] stages$21$q;
-    reg  stages$21$clock;
-    reg  [7:0] stages$22$d;
-    wire  [7:0] stages$22$q;
-    reg  stages$22$clock;
-    reg  [7:0] stages$23$d;
-    wire  [7:0] stages$23$q;
-    reg  stages$23$clock;
-    reg  [7:0] stages$24$d;
-    wire  [7:0] stages$24$q;
-    reg  stages$24$clock;
-    reg  [7:0] stages$25$d;
-    wire  [7:0] stages$25$q;
-    reg  stages$25$clock;
-    reg  [7:0] stages$26$d;
-    wire  [7:0] stages$26$q;
-    reg  stages$26$clock;
-    reg  [7:0] stages$27$d;
-    wire  [7:0] stages$27$q;
-    reg  stages$27$clock;
-    
-    // Sub module instances
-    vector$exp_dl$stages$0 stages$0(
-        .d(stages$0$d),
-        .q(stages$0$q),
-        .clock(stages$0$clock)
-    );
-    vector$exp_dl$stages$1 stages$1(
-        .d(stages$1$d),
-        .q(stages$1$q),
-        .clock(stages$1$clock)
-    );
-    vector$exp_dl$stages$2 stages$2(
-        .d(stages$2$d),
-        .q(stages$2$q),
-        .clock(stages$2$clock)
-    );
-    vector$exp_dl$stages$3 stages$3(
-        .d(stages$3$d),
-        .q(stages$3$q),
-        .clock(stages$3$clock)
-    );
-    vector$exp_dl$stages$4 stages$4(
-        .d(stages$4$d),
-        .q(stages$4$q),
-        .clock(stages$4$clock)
-    );
-    vector$exp_dl$stages$5 stages$5(
-        .d(stages$5$d),
-        .q(stages$5$q),
-        .clock(stages$5$clock)
-    );
-    vector$exp_dl$stages$6 stages$6(
-        .d(stages$6$d),
-        .q(stages$6$q),
-        .clock(stages$6$clock)
-    );
-    vector$exp_dl$stages$7 stages$7(
-        .d(stages$7$d),
-        .q(stages$7$q),
-        .clock(stages$7$clock)
-    );
-    vector$exp_dl$stages$8 stages$8(
-        .d(stages$8$d),
-        .q(stages$8$q),
-        .clock(stages$8$clock)
-    );
-    vector$exp_dl$stages$9 stages$9(
-        .d(stages$9$d),
-        .q(stages$9$q),
-        .clock(stages$9$clock)
-    );
-    vector$exp_dl$stages$10 stages$10(
-        .d(stages$10$d),
-        .q(stages$10$q),
-        .clock(stages$10$clock)
-    );
-    vector$exp_dl$stages$11 stages$11(
-        .d(stages$11$d),
-        .q(stages$11$q),
-        .clock(stages$11$clock)
-    );
-    vector$exp_dl$stages$12 stages$12(
-        .d(stages$12$d),
-        .q(stages$12$q),
-        .clock(stages$12$clock)
-    );
-    vector$exp_dl$stages$13 stages$13(
-        .d(stages$13$d),
-        .q(stages$13$q),
-        .clock(stages$13$clock)
-    );
-    vector$exp_dl$stages$14 stages$14(
-        .d(stages$14$d),
-        .q(stages$14$q),
-        .clock(stages$14$clock)
-    );
-    vector$exp_dl$stages$15 stages$15(
-        .d(stages$15$d),
-        .q(stages$15$q),
-        .clock(stages$15$clock)
-    );
-    vector$exp_dl$stages$16 stages$16(
-        .d(stages$16$d),
-        .q(stages$16$q),
-        .clock(stages$16$clock)
-    );
-    vector$exp_dl$stages$17 stages$17(
-        .d(stages$17$d),
-        .q(stages$17$q),
-        .clock(stages$17$clock)
-    );
-    vector$exp_dl$stages$18 stages$18(
-        .d(stages$18$d),
-        .q(stages$18$q),
-        .clock(stages$18$clock)
-    );
-    vector$exp_dl$stages$19 stages$19(
-        .d(stages$19$d),
-        .q(stages$19$q),
-        .clock(stages$19$clock)
-    );
-    vector$exp_dl$stages$20 stages$20(
-        .d(stages$20$d),
-        .q(stages$20$q),
-        .clock(stages$20$clock)
-    );
-    vector$exp_dl$stages$21 stages$21(
-        .d(stages$21$d),
-        .q(stages$21$q),
-        .clock(stages$21$clock)
-    );
-    vector$exp_dl$stages$22 stages$22(
-        .d(stages$22$d),
-        .q(stages$22$q),
-        .clock(stages$22$clock)
-    );
-    vector$exp_dl$stages$23 stages$23(
-        .d(stages$23$d),
-        .q(stages$23$q),
-        .clock(stages$23$clock)
-    );
-    vector$exp_dl$stages$24 stages$24(
-        .d(stages$24$d),
-        .q(stages$24$q),
-        .clock(stages$24$clock)
-    );
-    vector$exp_dl$stages$25 stages$25(
-        .d(stages$25$d),
-        .q(stages$25$q),
-        .clock(stages$25$clock)
-    );
-    vector$exp_dl$stages$26 stages$26(
-        .d(stages$26$d),
-        .q(stages$26$q),
-        .clock(stages$26$clock)
-    );
-    vector$exp_dl$stages$27 stages$27(
-        .d(stages$27$d),
-        .q(stages$27$q),
-        .clock(stages$27$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        stages$0$clock = clock;
-        stages$0$d = stages$0$q;
-        stages$1$clock = clock;
-        stages$1$d = stages$1$q;
-        stages$2$clock = clock;
-        stages$2$d = stages$2$q;
-        stages$3$clock = clock;
-        stages$3$d = stages$3$q;
-        stages$4$clock = clock;
-        stages$4$d = stages$4$q;
-        stages$5$clock = clock;
-        stages$5$d = stages$5$q;
-        stages$6$clock = clock;
-        stages$6$d = stages$6$q;
-        stages$7$clock = clock;
-        stages$7$d = stages$7$q;
-        stages$8$clock = clock;
-        stages$8$d = stages$8$q;
-        stages$9$clock = clock;
-        stages$9$d = stages$9$q;
-        stages$10$clock = clock;
-        stages$10$d = stages$10$q;
-        stages$11$clock = clock;
-        stages$11$d = stages$11$q;
-        stages$12$clock = clock;
-        stages$12$d = stages$12$q;
-        stages$13$clock = clock;
-        stages$13$d = stages$13$q;
-        stages$14$clock = clock;
-        stages$14$d = stages$14$q;
-        stages$15$clock = clock;
-        stages$15$d = stages$15$q;
-        stages$16$clock = clock;
-        stages$16$d = stages$16$q;
-        stages$17$clock = clock;
-        stages$17$d = stages$17$q;
-        stages$18$clock = clock;
-        stages$18$d = stages$18$q;
-        stages$19$clock = clock;
-        stages$19$d = stages$19$q;
-        stages$20$clock = clock;
-        stages$20$d = stages$20$q;
-        stages$21$clock = clock;
-        stages$21$d = stages$21$q;
-        stages$22$clock = clock;
-        stages$22$d = stages$22$q;
-        stages$23$clock = clock;
-        stages$23$d = stages$23$q;
-        stages$24$clock = clock;
-        stages$24$d = stages$24$q;
-        stages$25$clock = clock;
-        stages$25$d = stages$25$q;
-        stages$26$clock = clock;
-        stages$26$d = stages$26$q;
-        stages$27$clock = clock;
-        stages$27$d = stages$27$q;
-        if (en) begin
-            stages$0$d = d;
-            stages$1$d = stages$0$q;
-            stages$2$d = stages$1$q;
-            stages$3$d = stages$2$q;
-            stages$4$d = stages$3$q;
-            stages$5$d = stages$4$q;
-            stages$6$d = stages$5$q;
-            stages$7$d = stages$6$q;
-            stages$8$d = stages$7$q;
-            stages$9$d = stages$8$q;
-            stages$10$d = stages$9$q;
-            stages$11$d = stages$10$q;
-            stages$12$d = stages$11$q;
-            stages$13$d = stages$12$q;
-            stages$14$d = stages$13$q;
-            stages$15$d = stages$14$q;
-            stages$16$d = stages$15$q;
-            stages$17$d = stages$16$q;
-            stages$18$d = stages$17$q;
-            stages$19$d = stages$18$q;
-            stages$20$d = stages$19$q;
-            stages$21$d = stages$20$q;
-            stages$22$d = stages$21$q;
-            stages$23$d = stages$22$q;
-            stages$24$d = stages$23$q;
-            stages$25$d = stages$24$q;
-            stages$26$d = stages$25$q;
-            stages$27$d = stages$26$q;
-        end
-        q = stages$27$q;
-    end
-    
-endmodule // vector$exp_dl
-
-
-module vector$exp_dl$stages$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$0
-
-
-module vector$exp_dl$stages$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$1
-
-
-module vector$exp_dl$stages$10(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$10
-
-
-module vector$exp_dl$stages$11(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$11
-
-
-module vector$exp_dl$stages$12(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$12
-
-
-module vector$exp_dl$stages$13(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$13
-
-
-module vector$exp_dl$stages$14(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$14
-
-
-module vector$exp_dl$stages$15(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$15
-
-
-module vector$exp_dl$stages$16(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$16
-
-
-module vector$exp_dl$stages$17(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$17
-
-
-module vector$exp_dl$stages$18(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$18
-
-
-module vector$exp_dl$stages$19(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$19
-
-
-module vector$exp_dl$stages$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$2
-
-
-module vector$exp_dl$stages$20(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$20
-
-
-module vector$exp_dl$stages$21(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$21
-
-
-module vector$exp_dl$stages$22(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$22
-
-
-module vector$exp_dl$stages$23(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$23
-
-
-module vector$exp_dl$stages$24(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$24
-
-
-module vector$exp_dl$stages$25(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$25
-
-
-module vector$exp_dl$stages$26(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$26
-
-
-module vector$exp_dl$stages$27(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$27
-
-
-module vector$exp_dl$stages$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$3
-
-
-module vector$exp_dl$stages$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$4
-
-
-module vector$exp_dl$stages$5(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$5
-
-
-module vector$exp_dl$stages$6(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$6
-
-
-module vector$exp_dl$stages$7(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$7
-
-
-module vector$exp_dl$stages$8(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$8
-
-
-module vector$exp_dl$stages$9(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$exp_dl$stages$9
 
 
 module vector$ext_max_x(x,y);
@@ -16916,6 +7249,27 @@ module vector$ext_min_y(x,y);
     end
     
 endmodule // vector$ext_min_y
+
+
+module vector$ext_top(x,y);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [16:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'hf;
+    localparam  ext = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 17'h1ffff);
+        if (x[msb]) begin
+            y = ((x) & 17'h1ffff) | ext;
+        end
+    end
+    
+endmodule // vector$ext_top
 
 
 module vector$ey$0(x,y);
@@ -17044,25 +7398,412 @@ module vector$ez$2(x,y);
 endmodule // vector$ez$2
 
 
-module vector$ez0(x,y);
+module vector$hcls$0(dx,dy,left,right,flat,owns,g,h);
     
     // Module arguments
-    input wire  [17:0] x;
-    output reg  [18:0] y;
+    input wire  [16:0] dx;
+    input wire  [16:0] dy;
+    output reg  left;
+    output reg  right;
+    output reg  flat;
+    output reg  owns;
+    output reg  [34:0] g;
+    output reg  [34:0] h;
     
     // Constant declarations
-    localparam  msb = 8'h11;
-    localparam  ext = 19'b1000000000000000000;
+    localparam  frac = 8'h4;
+    
+    // Stub signals
+    reg  [16:0] dx_neg$x;
+    wire  dx_neg$neg;
+    reg  [16:0] dy_neg$x;
+    wire  dy_neg$neg;
+    reg  [16:0] ex$x;
+    wire  [34:0] ex$y;
+    reg  [16:0] ey$x;
+    wire  [34:0] ey$y;
+    
+    // Sub module instances
+    vector$hcls$0$dx_neg dx_neg(
+        .x(dx_neg$x),
+        .neg(dx_neg$neg)
+    );
+    vector$hcls$0$dy_neg dy_neg(
+        .x(dy_neg$x),
+        .neg(dy_neg$neg)
+    );
+    vector$hcls$0$ex ex(
+        .x(ex$x),
+        .y(ex$y)
+    );
+    vector$hcls$0$ey ey(
+        .x(ey$x),
+        .y(ey$y)
+    );
     
     // Update code
     always @(*) begin
-        y = ((x) & 19'h7ffff);
+        dx_neg$x = dx;
+        dy_neg$x = dy;
+        left = dy_neg$neg;
+        flat = dy == 32'h0;
+        right = ~dy_neg$neg & (dy != 32'h0);
+        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
+        ex$x = dx;
+        ey$x = dy;
+        g = ey$y << frac;
+        h = ex$y << frac;
+    end
+    
+endmodule // vector$hcls$0
+
+
+module vector$hcls$0$dx_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$hcls$0$dx_neg
+
+
+module vector$hcls$0$dy_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$hcls$0$dy_neg
+
+
+module vector$hcls$0$ex(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
         if (x[msb]) begin
-            y = ((x) & 19'h7ffff) | ext;
+            y = ((x) & 35'h7ffffffff) | ext;
         end
     end
     
-endmodule // vector$ez0
+endmodule // vector$hcls$0$ex
+
+
+module vector$hcls$0$ey(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$hcls$0$ey
+
+
+module vector$hcls$1(dx,dy,left,right,flat,owns,g,h);
+    
+    // Module arguments
+    input wire  [16:0] dx;
+    input wire  [16:0] dy;
+    output reg  left;
+    output reg  right;
+    output reg  flat;
+    output reg  owns;
+    output reg  [34:0] g;
+    output reg  [34:0] h;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    
+    // Stub signals
+    reg  [16:0] dx_neg$x;
+    wire  dx_neg$neg;
+    reg  [16:0] dy_neg$x;
+    wire  dy_neg$neg;
+    reg  [16:0] ex$x;
+    wire  [34:0] ex$y;
+    reg  [16:0] ey$x;
+    wire  [34:0] ey$y;
+    
+    // Sub module instances
+    vector$hcls$1$dx_neg dx_neg(
+        .x(dx_neg$x),
+        .neg(dx_neg$neg)
+    );
+    vector$hcls$1$dy_neg dy_neg(
+        .x(dy_neg$x),
+        .neg(dy_neg$neg)
+    );
+    vector$hcls$1$ex ex(
+        .x(ex$x),
+        .y(ex$y)
+    );
+    vector$hcls$1$ey ey(
+        .x(ey$x),
+        .y(ey$y)
+    );
+    
+    // Update code
+    always @(*) begin
+        dx_neg$x = dx;
+        dy_neg$x = dy;
+        left = dy_neg$neg;
+        flat = dy == 32'h0;
+        right = ~dy_neg$neg & (dy != 32'h0);
+        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
+        ex$x = dx;
+        ey$x = dy;
+        g = ey$y << frac;
+        h = ex$y << frac;
+    end
+    
+endmodule // vector$hcls$1
+
+
+module vector$hcls$1$dx_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$hcls$1$dx_neg
+
+
+module vector$hcls$1$dy_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$hcls$1$dy_neg
+
+
+module vector$hcls$1$ex(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$hcls$1$ex
+
+
+module vector$hcls$1$ey(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$hcls$1$ey
+
+
+module vector$hcls$2(dx,dy,left,right,flat,owns,g,h);
+    
+    // Module arguments
+    input wire  [16:0] dx;
+    input wire  [16:0] dy;
+    output reg  left;
+    output reg  right;
+    output reg  flat;
+    output reg  owns;
+    output reg  [34:0] g;
+    output reg  [34:0] h;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    
+    // Stub signals
+    reg  [16:0] dx_neg$x;
+    wire  dx_neg$neg;
+    reg  [16:0] dy_neg$x;
+    wire  dy_neg$neg;
+    reg  [16:0] ex$x;
+    wire  [34:0] ex$y;
+    reg  [16:0] ey$x;
+    wire  [34:0] ey$y;
+    
+    // Sub module instances
+    vector$hcls$2$dx_neg dx_neg(
+        .x(dx_neg$x),
+        .neg(dx_neg$neg)
+    );
+    vector$hcls$2$dy_neg dy_neg(
+        .x(dy_neg$x),
+        .neg(dy_neg$neg)
+    );
+    vector$hcls$2$ex ex(
+        .x(ex$x),
+        .y(ex$y)
+    );
+    vector$hcls$2$ey ey(
+        .x(ey$x),
+        .y(ey$y)
+    );
+    
+    // Update code
+    always @(*) begin
+        dx_neg$x = dx;
+        dy_neg$x = dy;
+        left = dy_neg$neg;
+        flat = dy == 32'h0;
+        right = ~dy_neg$neg & (dy != 32'h0);
+        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
+        ex$x = dx;
+        ey$x = dy;
+        g = ey$y << frac;
+        h = ex$y << frac;
+    end
+    
+endmodule // vector$hcls$2
+
+
+module vector$hcls$2$dx_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$hcls$2$dx_neg
+
+
+module vector$hcls$2$dy_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$hcls$2$dy_neg
+
+
+module vector$hcls$2$ex(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$hcls$2$ex
+
+
+module vector$hcls$2$ey(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$hcls$2$ey
 
 
 module vector$hold$0(d,q,clock);
@@ -17749,6 +8490,15987 @@ module vector$k_z0$1(d,q,clock);
 endmodule // vector$k_z0$1
 
 
+module vector$lanes$0(clock,run,load,g_0,g_1,g_2,valid,x,x0,x1,w_0,w_1,w_2,owns_0,owns_1,owns_2,c_mant,c_exp,c_d1z,c_d2z,c_z0,c_iw_0,c_iw_1,c_iw_2,c_d1c_0,c_d1c_1,c_d1c_2,c_d2c_0,c_d2c_1,c_d2c_2,c_c0_0,c_c0_1,c_c0_2,o_valid,o_z,o_rgb);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  run;
+    input wire  load;
+    input wire  [34:0] g_0;
+    input wire  [34:0] g_1;
+    input wire  [34:0] g_2;
+    input wire  valid;
+    input wire  [9:0] x;
+    input wire  [9:0] x0;
+    input wire  [9:0] x1;
+    input wire  [34:0] w_0;
+    input wire  [34:0] w_1;
+    input wire  [34:0] w_2;
+    input wire  owns_0;
+    input wire  owns_1;
+    input wire  owns_2;
+    input wire  [24:0] c_mant;
+    input wire  [7:0] c_exp;
+    input wire  [18:0] c_d1z;
+    input wire  [18:0] c_d2z;
+    input wire  [17:0] c_z0;
+    input wire  [15:0] c_iw_0;
+    input wire  [15:0] c_iw_1;
+    input wire  [15:0] c_iw_2;
+    input wire  [8:0] c_d1c_0;
+    input wire  [8:0] c_d1c_1;
+    input wire  [8:0] c_d1c_2;
+    input wire  [8:0] c_d2c_0;
+    input wire  [8:0] c_d2c_1;
+    input wire  [8:0] c_d2c_2;
+    input wire  [7:0] c_c0_0;
+    input wire  [7:0] c_c0_1;
+    input wire  [7:0] c_c0_2;
+    output reg  o_valid;
+    output reg  [15:0] o_z;
+    output reg  [23:0] o_rgb;
+    
+    // Constant declarations
+    localparam  idx = 10'b0;
+    localparam  m1 = 35'h0;
+    localparam  m2 = 35'h0;
+    localparam  m4 = 35'h0;
+    localparam  one_s = 8'h1;
+    localparam  ch1 = 8'h8;
+    localparam  ch2 = 8'h10;
+    localparam  two_s = 8'h2;
+    localparam  recip_n = 58'h100000000000000;
+    localparam  one = 28'h4000000;
+    localparam  half_pair = 8'h1c;
+    localparam  full = 8'hff;
+    
+    // Stub signals
+    wire  persp$on;
+    reg  [34:0] off$0$d;
+    wire  [34:0] off$0$q;
+    reg  off$0$clock;
+    reg  [34:0] off$1$d;
+    wire  [34:0] off$1$q;
+    reg  off$1$clock;
+    reg  [34:0] off$2$d;
+    wire  [34:0] off$2$q;
+    reg  off$2$clock;
+    reg  [34:0] rej$0$e;
+    reg  rej$0$owns;
+    wire  rej$0$rejects;
+    reg  [34:0] rej$1$e;
+    reg  rej$1$owns;
+    wire  rej$1$rejects;
+    reg  [34:0] rej$2$e;
+    reg  rej$2$owns;
+    wire  rej$2$rejects;
+    reg  hit_dl$clock;
+    reg  hit_dl$en;
+    reg  hit_dl$d;
+    wire  hit_dl$q;
+    reg  div$clock;
+    reg  div$inp_valid;
+    wire  div$inp_ready;
+    reg  div$hold;
+    reg  [57:0] div$inp_n;
+    reg  [33:0] div$inp_d;
+    wire  div$out_valid;
+    reg  div$out_ready;
+    wire  [25:0] div$out_q;
+    wire  [33:0] div$out_r;
+    reg  mul_a$clock;
+    reg  mul_a$en;
+    reg  [34:0] mul_a$a;
+    reg  [25:0] mul_a$b;
+    wire  [60:0] mul_a$p;
+    reg  mul_b$clock;
+    reg  mul_b$en;
+    reg  [34:0] mul_b$a;
+    reg  [25:0] mul_b$b;
+    wire  [60:0] mul_b$p;
+    reg  mul_z1$clock;
+    reg  mul_z1$en;
+    reg  [18:0] mul_z1$a;
+    reg  [27:0] mul_z1$b;
+    wire  [47:0] mul_z1$p;
+    reg  mul_z2$clock;
+    reg  mul_z2$en;
+    reg  [18:0] mul_z2$a;
+    reg  [27:0] mul_z2$b;
+    wire  [47:0] mul_z2$p;
+    reg  mul_l$0$clock;
+    reg  mul_l$0$en;
+    reg  [27:0] mul_l$0$a;
+    reg  [16:0] mul_l$0$b;
+    wire  [44:0] mul_l$0$p;
+    reg  mul_l$1$clock;
+    reg  mul_l$1$en;
+    reg  [27:0] mul_l$1$a;
+    reg  [16:0] mul_l$1$b;
+    wire  [44:0] mul_l$1$p;
+    reg  mul_l$2$clock;
+    reg  mul_l$2$en;
+    reg  [27:0] mul_l$2$a;
+    reg  [16:0] mul_l$2$b;
+    wire  [44:0] mul_l$2$p;
+    reg  mul_ra$clock;
+    reg  mul_ra$en;
+    reg  [27:0] mul_ra$a;
+    reg  [25:0] mul_ra$b;
+    wire  [53:0] mul_ra$p;
+    reg  mul_rb$clock;
+    reg  mul_rb$en;
+    reg  [27:0] mul_rb$a;
+    reg  [25:0] mul_rb$b;
+    wire  [53:0] mul_rb$p;
+    reg  mul_c1$0$clock;
+    reg  mul_c1$0$en;
+    reg  [8:0] mul_c1$0$a;
+    reg  [27:0] mul_c1$0$b;
+    wire  [37:0] mul_c1$0$p;
+    reg  mul_c1$1$clock;
+    reg  mul_c1$1$en;
+    reg  [8:0] mul_c1$1$a;
+    reg  [27:0] mul_c1$1$b;
+    wire  [37:0] mul_c1$1$p;
+    reg  mul_c1$2$clock;
+    reg  mul_c1$2$en;
+    reg  [8:0] mul_c1$2$a;
+    reg  [27:0] mul_c1$2$b;
+    wire  [37:0] mul_c1$2$p;
+    reg  mul_c2$0$clock;
+    reg  mul_c2$0$en;
+    reg  [8:0] mul_c2$0$a;
+    reg  [27:0] mul_c2$0$b;
+    wire  [37:0] mul_c2$0$p;
+    reg  mul_c2$1$clock;
+    reg  mul_c2$1$en;
+    reg  [8:0] mul_c2$1$a;
+    reg  [27:0] mul_c2$1$b;
+    wire  [37:0] mul_c2$1$p;
+    reg  mul_c2$2$clock;
+    reg  mul_c2$2$en;
+    reg  [8:0] mul_c2$2$a;
+    reg  [27:0] mul_c2$2$b;
+    wire  [37:0] mul_c2$2$p;
+    reg  [29:0] norm_s$x;
+    reg  [7:0] norm_s$exp;
+    wire  [33:0] norm_s$d;
+    reg  [33:0] div_d$d;
+    wire  [33:0] div_d$q;
+    reg  div_d$clock;
+    reg  [60:0] rs_a$x;
+    reg  [7:0] rs_a$by;
+    wire  [27:0] rs_a$y;
+    reg  [60:0] rs_b$x;
+    reg  [7:0] rs_b$by;
+    wire  [27:0] rs_b$y;
+    reg  [27:0] a3$d;
+    wire  [27:0] a3$q;
+    reg  a3$clock;
+    reg  [27:0] b3$d;
+    wire  [27:0] b3$q;
+    reg  b3$clock;
+    reg  [47:0] rs_z$x;
+    reg  [7:0] rs_z$by;
+    wire  [35:0] rs_z$y;
+    reg  [18:0] rs_z0$x;
+    reg  [7:0] rs_z0$by;
+    wire  [35:0] rs_z0$y;
+    reg  [17:0] ez0$x;
+    wire  [18:0] ez0$y;
+    reg  [35:0] z6$d;
+    wire  [35:0] z6$q;
+    reg  z6$clock;
+    reg  [35:0] depth_of$x;
+    wire  depth_of$neg;
+    wire  depth_of$over;
+    wire  [15:0] depth_of$low;
+    reg  dtag_dl$clock;
+    reg  dtag_dl$en;
+    reg  [16:0] dtag_dl$d;
+    wire  [16:0] dtag_dl$q;
+    reg  [44:0] rs_q$0$x;
+    reg  [7:0] rs_q$0$by;
+    wire  [27:0] rs_q$0$y;
+    reg  [44:0] rs_q$1$x;
+    reg  [7:0] rs_q$1$by;
+    wire  [27:0] rs_q$1$y;
+    reg  [44:0] rs_q$2$x;
+    reg  [7:0] rs_q$2$by;
+    wire  [27:0] rs_q$2$y;
+    reg  [27:0] q6$0$d;
+    wire  [27:0] q6$0$q;
+    reg  q6$0$clock;
+    reg  [27:0] q6$1$d;
+    wire  [27:0] q6$1$q;
+    reg  q6$1$clock;
+    reg  [27:0] q6$2$d;
+    wire  [27:0] q6$2$q;
+    reg  q6$2$clock;
+    reg  [27:0] eq$0$x;
+    wire  [29:0] eq$0$y;
+    reg  [27:0] eq$1$x;
+    wire  [29:0] eq$1$y;
+    reg  [27:0] eq$2$x;
+    wire  [29:0] eq$2$y;
+    reg  [29:0] sum7$d;
+    wire  [29:0] sum7$q;
+    reg  sum7$clock;
+    reg  [29:0] lead_s$x;
+    wire  [7:0] lead_s$pos;
+    reg  [29:0] sum8$d;
+    wire  [29:0] sum8$q;
+    reg  sum8$clock;
+    reg  [7:0] exp8$d;
+    wire  [7:0] exp8$q;
+    reg  exp8$clock;
+    reg  q_dl$clock;
+    reg  q_dl$en;
+    reg  [55:0] q_dl$d;
+    wire  [55:0] q_dl$q;
+    reg  exp_dl$clock;
+    reg  exp_dl$en;
+    reg  [7:0] exp_dl$d;
+    wire  [7:0] exp_dl$q;
+    reg  ab_dl$clock;
+    reg  ab_dl$en;
+    reg  [55:0] ab_dl$d;
+    wire  [55:0] ab_dl$q;
+    reg  [53:0] rs_ra$x;
+    reg  [7:0] rs_ra$by;
+    wire  [27:0] rs_ra$y;
+    reg  [53:0] rs_rb$x;
+    reg  [7:0] rs_rb$by;
+    wire  [27:0] rs_rb$y;
+    reg  [27:0] ca11$d;
+    wire  [27:0] ca11$q;
+    reg  ca11$clock;
+    reg  [27:0] cb11$d;
+    wire  [27:0] cb11$q;
+    reg  cb11$clock;
+    reg  [37:0] rs_c$0$x;
+    reg  [7:0] rs_c$0$by;
+    wire  [31:0] rs_c$0$y;
+    reg  [37:0] rs_c$1$x;
+    reg  [7:0] rs_c$1$by;
+    wire  [31:0] rs_c$1$y;
+    reg  [37:0] rs_c$2$x;
+    reg  [7:0] rs_c$2$by;
+    wire  [31:0] rs_c$2$y;
+    reg  [8:0] rs_c0$0$x;
+    reg  [7:0] rs_c0$0$by;
+    wire  [31:0] rs_c0$0$y;
+    reg  [8:0] rs_c0$1$x;
+    reg  [7:0] rs_c0$1$by;
+    wire  [31:0] rs_c0$1$y;
+    reg  [8:0] rs_c0$2$x;
+    reg  [7:0] rs_c0$2$by;
+    wire  [31:0] rs_c0$2$y;
+    reg  [31:0] c14$0$d;
+    wire  [31:0] c14$0$q;
+    reg  c14$0$clock;
+    reg  [31:0] c14$1$d;
+    wire  [31:0] c14$1$q;
+    reg  c14$1$clock;
+    reg  [31:0] c14$2$d;
+    wire  [31:0] c14$2$q;
+    reg  c14$2$clock;
+    reg  [31:0] color_of$0$x;
+    wire  color_of$0$neg;
+    wire  color_of$0$over;
+    wire  [7:0] color_of$0$low;
+    reg  [31:0] color_of$1$x;
+    wire  color_of$1$neg;
+    wire  color_of$1$over;
+    wire  [7:0] color_of$1$low;
+    reg  [31:0] color_of$2$x;
+    wire  color_of$2$neg;
+    wire  color_of$2$over;
+    wire  [7:0] color_of$2$low;
+    reg  ov$d;
+    wire  ov$q;
+    reg  ov$clock;
+    reg  [15:0] oz$d;
+    wire  [15:0] oz$q;
+    reg  oz$clock;
+    reg  [7:0] orgb$0$d;
+    wire  [7:0] orgb$0$q;
+    reg  orgb$0$clock;
+    reg  [7:0] orgb$1$d;
+    wire  [7:0] orgb$1$q;
+    reg  orgb$1$clock;
+    reg  [7:0] orgb$2$d;
+    wire  [7:0] orgb$2$q;
+    reg  orgb$2$clock;
+    
+    // Local signals
+    reg  [34:0] g$0;
+    reg  [34:0] g$1;
+    reg  [34:0] g$2;
+    reg  [34:0] w$0;
+    reg  [34:0] w$1;
+    reg  [34:0] w$2;
+    reg  owns$0;
+    reg  owns$1;
+    reg  owns$2;
+    reg  [15:0] c_iw$0;
+    reg  [15:0] c_iw$1;
+    reg  [15:0] c_iw$2;
+    reg  [8:0] c_d1c$0;
+    reg  [8:0] c_d1c$1;
+    reg  [8:0] c_d1c$2;
+    reg  [8:0] c_d2c$0;
+    reg  [8:0] c_d2c$1;
+    reg  [8:0] c_d2c$2;
+    reg  [7:0] c_c0$0;
+    reg  [7:0] c_c0$1;
+    reg  [7:0] c_c0$2;
+    reg  [34:0] e$0;
+    reg  [34:0] e$1;
+    reg  [34:0] e$2;
+    reg  [9:0] px;
+    reg  covered;
+    reg  hit;
+    reg  [16:0] dtag;
+    reg  [29:0] sum_c;
+    reg  [55:0] q_pair;
+    reg  [55:0] ab_pair;
+    reg  [27:0] ca;
+    reg  [27:0] cb;
+    
+    // Sub module instances
+    vector$lanes$0$persp persp(
+        .on(persp$on)
+    );
+    vector$lanes$0$off$0 off$0(
+        .d(off$0$d),
+        .q(off$0$q),
+        .clock(off$0$clock)
+    );
+    vector$lanes$0$off$1 off$1(
+        .d(off$1$d),
+        .q(off$1$q),
+        .clock(off$1$clock)
+    );
+    vector$lanes$0$off$2 off$2(
+        .d(off$2$d),
+        .q(off$2$q),
+        .clock(off$2$clock)
+    );
+    vector$lanes$0$rej$0 rej$0(
+        .e(rej$0$e),
+        .owns(rej$0$owns),
+        .rejects(rej$0$rejects)
+    );
+    vector$lanes$0$rej$1 rej$1(
+        .e(rej$1$e),
+        .owns(rej$1$owns),
+        .rejects(rej$1$rejects)
+    );
+    vector$lanes$0$rej$2 rej$2(
+        .e(rej$2$e),
+        .owns(rej$2$owns),
+        .rejects(rej$2$rejects)
+    );
+    vector$lanes$0$hit_dl hit_dl(
+        .clock(hit_dl$clock),
+        .en(hit_dl$en),
+        .d(hit_dl$d),
+        .q(hit_dl$q)
+    );
+    vector$lanes$0$div div(
+        .clock(div$clock),
+        .inp_valid(div$inp_valid),
+        .inp_ready(div$inp_ready),
+        .hold(div$hold),
+        .inp_n(div$inp_n),
+        .inp_d(div$inp_d),
+        .out_valid(div$out_valid),
+        .out_ready(div$out_ready),
+        .out_q(div$out_q),
+        .out_r(div$out_r)
+    );
+    vector$lanes$0$mul_a mul_a(
+        .clock(mul_a$clock),
+        .en(mul_a$en),
+        .a(mul_a$a),
+        .b(mul_a$b),
+        .p(mul_a$p)
+    );
+    vector$lanes$0$mul_b mul_b(
+        .clock(mul_b$clock),
+        .en(mul_b$en),
+        .a(mul_b$a),
+        .b(mul_b$b),
+        .p(mul_b$p)
+    );
+    vector$lanes$0$mul_z1 mul_z1(
+        .clock(mul_z1$clock),
+        .en(mul_z1$en),
+        .a(mul_z1$a),
+        .b(mul_z1$b),
+        .p(mul_z1$p)
+    );
+    vector$lanes$0$mul_z2 mul_z2(
+        .clock(mul_z2$clock),
+        .en(mul_z2$en),
+        .a(mul_z2$a),
+        .b(mul_z2$b),
+        .p(mul_z2$p)
+    );
+    vector$lanes$0$mul_l$0 mul_l$0(
+        .clock(mul_l$0$clock),
+        .en(mul_l$0$en),
+        .a(mul_l$0$a),
+        .b(mul_l$0$b),
+        .p(mul_l$0$p)
+    );
+    vector$lanes$0$mul_l$1 mul_l$1(
+        .clock(mul_l$1$clock),
+        .en(mul_l$1$en),
+        .a(mul_l$1$a),
+        .b(mul_l$1$b),
+        .p(mul_l$1$p)
+    );
+    vector$lanes$0$mul_l$2 mul_l$2(
+        .clock(mul_l$2$clock),
+        .en(mul_l$2$en),
+        .a(mul_l$2$a),
+        .b(mul_l$2$b),
+        .p(mul_l$2$p)
+    );
+    vector$lanes$0$mul_ra mul_ra(
+        .clock(mul_ra$clock),
+        .en(mul_ra$en),
+        .a(mul_ra$a),
+        .b(mul_ra$b),
+        .p(mul_ra$p)
+    );
+    vector$lanes$0$mul_rb mul_rb(
+        .clock(mul_rb$clock),
+        .en(mul_rb$en),
+        .a(mul_rb$a),
+        .b(mul_rb$b),
+        .p(mul_rb$p)
+    );
+    vector$lanes$0$mul_c1$0 mul_c1$0(
+        .clock(mul_c1$0$clock),
+        .en(mul_c1$0$en),
+        .a(mul_c1$0$a),
+        .b(mul_c1$0$b),
+        .p(mul_c1$0$p)
+    );
+    vector$lanes$0$mul_c1$1 mul_c1$1(
+        .clock(mul_c1$1$clock),
+        .en(mul_c1$1$en),
+        .a(mul_c1$1$a),
+        .b(mul_c1$1$b),
+        .p(mul_c1$1$p)
+    );
+    vector$lanes$0$mul_c1$2 mul_c1$2(
+        .clock(mul_c1$2$clock),
+        .en(mul_c1$2$en),
+        .a(mul_c1$2$a),
+        .b(mul_c1$2$b),
+        .p(mul_c1$2$p)
+    );
+    vector$lanes$0$mul_c2$0 mul_c2$0(
+        .clock(mul_c2$0$clock),
+        .en(mul_c2$0$en),
+        .a(mul_c2$0$a),
+        .b(mul_c2$0$b),
+        .p(mul_c2$0$p)
+    );
+    vector$lanes$0$mul_c2$1 mul_c2$1(
+        .clock(mul_c2$1$clock),
+        .en(mul_c2$1$en),
+        .a(mul_c2$1$a),
+        .b(mul_c2$1$b),
+        .p(mul_c2$1$p)
+    );
+    vector$lanes$0$mul_c2$2 mul_c2$2(
+        .clock(mul_c2$2$clock),
+        .en(mul_c2$2$en),
+        .a(mul_c2$2$a),
+        .b(mul_c2$2$b),
+        .p(mul_c2$2$p)
+    );
+    vector$lanes$0$norm_s norm_s(
+        .x(norm_s$x),
+        .exp(norm_s$exp),
+        .d(norm_s$d)
+    );
+    vector$lanes$0$div_d div_d(
+        .d(div_d$d),
+        .q(div_d$q),
+        .clock(div_d$clock)
+    );
+    vector$lanes$0$rs_a rs_a(
+        .x(rs_a$x),
+        .by(rs_a$by),
+        .y(rs_a$y)
+    );
+    vector$lanes$0$rs_b rs_b(
+        .x(rs_b$x),
+        .by(rs_b$by),
+        .y(rs_b$y)
+    );
+    vector$lanes$0$a3 a3(
+        .d(a3$d),
+        .q(a3$q),
+        .clock(a3$clock)
+    );
+    vector$lanes$0$b3 b3(
+        .d(b3$d),
+        .q(b3$q),
+        .clock(b3$clock)
+    );
+    vector$lanes$0$rs_z rs_z(
+        .x(rs_z$x),
+        .by(rs_z$by),
+        .y(rs_z$y)
+    );
+    vector$lanes$0$rs_z0 rs_z0(
+        .x(rs_z0$x),
+        .by(rs_z0$by),
+        .y(rs_z0$y)
+    );
+    vector$lanes$0$ez0 ez0(
+        .x(ez0$x),
+        .y(ez0$y)
+    );
+    vector$lanes$0$z6 z6(
+        .d(z6$d),
+        .q(z6$q),
+        .clock(z6$clock)
+    );
+    vector$lanes$0$depth_of depth_of(
+        .x(depth_of$x),
+        .neg(depth_of$neg),
+        .over(depth_of$over),
+        .low(depth_of$low)
+    );
+    vector$lanes$0$dtag_dl dtag_dl(
+        .clock(dtag_dl$clock),
+        .en(dtag_dl$en),
+        .d(dtag_dl$d),
+        .q(dtag_dl$q)
+    );
+    vector$lanes$0$rs_q$0 rs_q$0(
+        .x(rs_q$0$x),
+        .by(rs_q$0$by),
+        .y(rs_q$0$y)
+    );
+    vector$lanes$0$rs_q$1 rs_q$1(
+        .x(rs_q$1$x),
+        .by(rs_q$1$by),
+        .y(rs_q$1$y)
+    );
+    vector$lanes$0$rs_q$2 rs_q$2(
+        .x(rs_q$2$x),
+        .by(rs_q$2$by),
+        .y(rs_q$2$y)
+    );
+    vector$lanes$0$q6$0 q6$0(
+        .d(q6$0$d),
+        .q(q6$0$q),
+        .clock(q6$0$clock)
+    );
+    vector$lanes$0$q6$1 q6$1(
+        .d(q6$1$d),
+        .q(q6$1$q),
+        .clock(q6$1$clock)
+    );
+    vector$lanes$0$q6$2 q6$2(
+        .d(q6$2$d),
+        .q(q6$2$q),
+        .clock(q6$2$clock)
+    );
+    vector$lanes$0$eq$0 eq$0(
+        .x(eq$0$x),
+        .y(eq$0$y)
+    );
+    vector$lanes$0$eq$1 eq$1(
+        .x(eq$1$x),
+        .y(eq$1$y)
+    );
+    vector$lanes$0$eq$2 eq$2(
+        .x(eq$2$x),
+        .y(eq$2$y)
+    );
+    vector$lanes$0$sum7 sum7(
+        .d(sum7$d),
+        .q(sum7$q),
+        .clock(sum7$clock)
+    );
+    vector$lanes$0$lead_s lead_s(
+        .x(lead_s$x),
+        .pos(lead_s$pos)
+    );
+    vector$lanes$0$sum8 sum8(
+        .d(sum8$d),
+        .q(sum8$q),
+        .clock(sum8$clock)
+    );
+    vector$lanes$0$exp8 exp8(
+        .d(exp8$d),
+        .q(exp8$q),
+        .clock(exp8$clock)
+    );
+    vector$lanes$0$q_dl q_dl(
+        .clock(q_dl$clock),
+        .en(q_dl$en),
+        .d(q_dl$d),
+        .q(q_dl$q)
+    );
+    vector$lanes$0$exp_dl exp_dl(
+        .clock(exp_dl$clock),
+        .en(exp_dl$en),
+        .d(exp_dl$d),
+        .q(exp_dl$q)
+    );
+    vector$lanes$0$ab_dl ab_dl(
+        .clock(ab_dl$clock),
+        .en(ab_dl$en),
+        .d(ab_dl$d),
+        .q(ab_dl$q)
+    );
+    vector$lanes$0$rs_ra rs_ra(
+        .x(rs_ra$x),
+        .by(rs_ra$by),
+        .y(rs_ra$y)
+    );
+    vector$lanes$0$rs_rb rs_rb(
+        .x(rs_rb$x),
+        .by(rs_rb$by),
+        .y(rs_rb$y)
+    );
+    vector$lanes$0$ca11 ca11(
+        .d(ca11$d),
+        .q(ca11$q),
+        .clock(ca11$clock)
+    );
+    vector$lanes$0$cb11 cb11(
+        .d(cb11$d),
+        .q(cb11$q),
+        .clock(cb11$clock)
+    );
+    vector$lanes$0$rs_c$0 rs_c$0(
+        .x(rs_c$0$x),
+        .by(rs_c$0$by),
+        .y(rs_c$0$y)
+    );
+    vector$lanes$0$rs_c$1 rs_c$1(
+        .x(rs_c$1$x),
+        .by(rs_c$1$by),
+        .y(rs_c$1$y)
+    );
+    vector$lanes$0$rs_c$2 rs_c$2(
+        .x(rs_c$2$x),
+        .by(rs_c$2$by),
+        .y(rs_c$2$y)
+    );
+    vector$lanes$0$rs_c0$0 rs_c0$0(
+        .x(rs_c0$0$x),
+        .by(rs_c0$0$by),
+        .y(rs_c0$0$y)
+    );
+    vector$lanes$0$rs_c0$1 rs_c0$1(
+        .x(rs_c0$1$x),
+        .by(rs_c0$1$by),
+        .y(rs_c0$1$y)
+    );
+    vector$lanes$0$rs_c0$2 rs_c0$2(
+        .x(rs_c0$2$x),
+        .by(rs_c0$2$by),
+        .y(rs_c0$2$y)
+    );
+    vector$lanes$0$c14$0 c14$0(
+        .d(c14$0$d),
+        .q(c14$0$q),
+        .clock(c14$0$clock)
+    );
+    vector$lanes$0$c14$1 c14$1(
+        .d(c14$1$d),
+        .q(c14$1$q),
+        .clock(c14$1$clock)
+    );
+    vector$lanes$0$c14$2 c14$2(
+        .d(c14$2$d),
+        .q(c14$2$q),
+        .clock(c14$2$clock)
+    );
+    vector$lanes$0$color_of$0 color_of$0(
+        .x(color_of$0$x),
+        .neg(color_of$0$neg),
+        .over(color_of$0$over),
+        .low(color_of$0$low)
+    );
+    vector$lanes$0$color_of$1 color_of$1(
+        .x(color_of$1$x),
+        .neg(color_of$1$neg),
+        .over(color_of$1$over),
+        .low(color_of$1$low)
+    );
+    vector$lanes$0$color_of$2 color_of$2(
+        .x(color_of$2$x),
+        .neg(color_of$2$neg),
+        .over(color_of$2$over),
+        .low(color_of$2$low)
+    );
+    vector$lanes$0$ov ov(
+        .d(ov$d),
+        .q(ov$q),
+        .clock(ov$clock)
+    );
+    vector$lanes$0$oz oz(
+        .d(oz$d),
+        .q(oz$q),
+        .clock(oz$clock)
+    );
+    vector$lanes$0$orgb$0 orgb$0(
+        .d(orgb$0$d),
+        .q(orgb$0$q),
+        .clock(orgb$0$clock)
+    );
+    vector$lanes$0$orgb$1 orgb$1(
+        .d(orgb$1$d),
+        .q(orgb$1$q),
+        .clock(orgb$1$clock)
+    );
+    vector$lanes$0$orgb$2 orgb$2(
+        .d(orgb$2$d),
+        .q(orgb$2$q),
+        .clock(orgb$2$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        div_d$clock = clock;
+        a3$clock = clock;
+        b3$clock = clock;
+        z6$clock = clock;
+        sum7$clock = clock;
+        sum8$clock = clock;
+        exp8$clock = clock;
+        ca11$clock = clock;
+        cb11$clock = clock;
+        ov$clock = clock;
+        oz$clock = clock;
+        div_d$d = div_d$q;
+        a3$d = a3$q;
+        b3$d = b3$q;
+        z6$d = z6$q;
+        sum7$d = sum7$q;
+        sum8$d = sum8$q;
+        exp8$d = exp8$q;
+        ca11$d = ca11$q;
+        cb11$d = cb11$q;
+        ov$d = ov$q;
+        oz$d = oz$q;
+        div$clock = clock;
+        mul_a$clock = clock;
+        mul_b$clock = clock;
+        mul_z1$clock = clock;
+        mul_z2$clock = clock;
+        mul_ra$clock = clock;
+        mul_rb$clock = clock;
+        hit_dl$clock = clock;
+        dtag_dl$clock = clock;
+        q_dl$clock = clock;
+        exp_dl$clock = clock;
+        ab_dl$clock = clock;
+        off$0$clock = clock;
+        off$0$d = off$0$q;
+        q6$0$clock = clock;
+        q6$0$d = q6$0$q;
+        c14$0$clock = clock;
+        c14$0$d = c14$0$q;
+        orgb$0$clock = clock;
+        orgb$0$d = orgb$0$q;
+        mul_l$0$clock = clock;
+        mul_c1$0$clock = clock;
+        mul_c2$0$clock = clock;
+        mul_l$0$en = run;
+        mul_c1$0$en = run;
+        mul_c2$0$en = run;
+        off$1$clock = clock;
+        off$1$d = off$1$q;
+        q6$1$clock = clock;
+        q6$1$d = q6$1$q;
+        c14$1$clock = clock;
+        c14$1$d = c14$1$q;
+        orgb$1$clock = clock;
+        orgb$1$d = orgb$1$q;
+        mul_l$1$clock = clock;
+        mul_c1$1$clock = clock;
+        mul_c2$1$clock = clock;
+        mul_l$1$en = run;
+        mul_c1$1$en = run;
+        mul_c2$1$en = run;
+        off$2$clock = clock;
+        off$2$d = off$2$q;
+        q6$2$clock = clock;
+        q6$2$d = q6$2$q;
+        c14$2$clock = clock;
+        c14$2$d = c14$2$q;
+        orgb$2$clock = clock;
+        orgb$2$d = orgb$2$q;
+        mul_l$2$clock = clock;
+        mul_c1$2$clock = clock;
+        mul_c2$2$clock = clock;
+        mul_l$2$en = run;
+        mul_c1$2$en = run;
+        mul_c2$2$en = run;
+        mul_a$en = run;
+        mul_b$en = run;
+        mul_z1$en = run;
+        mul_z2$en = run;
+        mul_ra$en = run;
+        mul_rb$en = run;
+        hit_dl$en = run;
+        dtag_dl$en = run;
+        q_dl$en = run;
+        exp_dl$en = run;
+        ab_dl$en = run;
+        div$hold = ~run;
+        div$out_ready = 1'b1;
+        div$inp_valid = 1'b1;
+        div$inp_n = recip_n;
+        g$0 = g_0;
+        g$1 = g_1;
+        g$2 = g_2;
+        w$0 = w_0;
+        w$1 = w_1;
+        w$2 = w_2;
+        owns$0 = owns_0;
+        owns$1 = owns_1;
+        owns$2 = owns_2;
+        c_iw$0 = c_iw_0;
+        c_iw$1 = c_iw_1;
+        c_iw$2 = c_iw_2;
+        c_d1c$0 = c_d1c_0;
+        c_d1c$1 = c_d1c_1;
+        c_d1c$2 = c_d1c_2;
+        c_d2c$0 = c_d2c_0;
+        c_d2c$1 = c_d2c_1;
+        c_d2c$2 = c_d2c_2;
+        c_c0$0 = c_c0_0;
+        c_c0$1 = c_c0_1;
+        c_c0$2 = c_c0_2;
+        px = x + idx;
+        covered = valid & (px >= x0) & (px <= x1);
+        e$0 = w$0 - off$0$q;
+        rej$0$e = e$0;
+        rej$0$owns = owns$0;
+        if (rej$0$rejects) begin
+            covered = 1'b0;
+        end
+        e$1 = w$1 - off$1$q;
+        rej$1$e = e$1;
+        rej$1$owns = owns$1;
+        if (rej$1$rejects) begin
+            covered = 1'b0;
+        end
+        e$2 = w$2 - off$2$q;
+        rej$2$e = e$2;
+        rej$2$owns = owns$2;
+        if (rej$2$rejects) begin
+            covered = 1'b0;
+        end
+        hit = 32'h0;
+        if (covered) begin
+            hit = 32'h1;
+        end
+        hit_dl$d = hit;
+        mul_a$a = e$1;
+        mul_a$b = ((c_mant) & 26'h3ffffff);
+        mul_b$a = e$2;
+        mul_b$b = ((c_mant) & 26'h3ffffff);
+        rs_a$x = mul_a$p;
+        rs_a$by = c_exp;
+        rs_b$x = mul_b$p;
+        rs_b$by = c_exp;
+        mul_z1$a = c_d1z;
+        mul_z1$b = a3$q;
+        mul_z2$a = c_d2z;
+        mul_z2$b = b3$q;
+        mul_l$0$a = one - a3$q - b3$q;
+        mul_l$0$b = ((c_iw$0) & 17'h1ffff);
+        mul_l$1$a = a3$q;
+        mul_l$1$b = ((c_iw$1) & 17'h1ffff);
+        mul_l$2$a = b3$q;
+        mul_l$2$b = ((c_iw$2) & 17'h1ffff);
+        ab_pair = (((a3$q) & 56'hffffffffffffff) << half_pair) | ((b3$q) & 56'hffffffffffffff);
+        ab_dl$d = ab_pair;
+        rs_z$x = mul_z1$p + mul_z2$p;
+        rs_z$by = 32'h0;
+        ez0$x = c_z0;
+        rs_z0$x = ez0$y;
+        rs_z0$by = 32'h0;
+        rs_q$0$x = mul_l$0$p;
+        rs_q$0$by = 32'h0;
+        eq$0$x = q6$0$q;
+        rs_q$1$x = mul_l$1$p;
+        rs_q$1$by = 32'h0;
+        eq$1$x = q6$1$q;
+        rs_q$2$x = mul_l$2$p;
+        rs_q$2$by = 32'h0;
+        eq$2$x = q6$2$q;
+        depth_of$x = z6$q;
+        dtag = ((depth_of$low) & 17'h1ffff) << one_s;
+        if (~depth_of$neg & ~depth_of$over) begin
+            dtag = (((depth_of$low) & 17'h1ffff) << one_s) | 64'h1;
+        end
+        dtag_dl$d = dtag;
+        sum_c = eq$0$y + eq$1$y + eq$2$y;
+        if (sum_c == 32'h0) begin
+            sum_c = 32'h1;
+        end
+        q_pair = (((q6$1$q) & 56'hffffffffffffff) << half_pair) | ((q6$2$q) & 56'hffffffffffffff);
+        q_dl$d = q_pair;
+        lead_s$x = sum7$q;
+        exp_dl$d = exp8$q;
+        norm_s$x = sum8$q;
+        norm_s$exp = exp8$q;
+        div$inp_d = div_d$q;
+        mul_ra$a = ((q_dl$q >> half_pair) & 28'hfffffff);
+        mul_ra$b = ((div$out_q[(32'h0)+:(25)]) & 26'h3ffffff);
+        mul_rb$a = ((q_dl$q) & 28'hfffffff);
+        mul_rb$b = ((div$out_q[(32'h0)+:(25)]) & 26'h3ffffff);
+        rs_ra$x = mul_ra$p;
+        rs_ra$by = exp_dl$q;
+        rs_rb$x = mul_rb$p;
+        rs_rb$by = exp_dl$q;
+        ca = ((ab_dl$q >> half_pair) & 28'hfffffff);
+        cb = ((ab_dl$q) & 28'hfffffff);
+        if (persp$on) begin
+            ca = ca11$q;
+            cb = cb11$q;
+        end
+        rs_c0$0$x = ((c_c0$0) & 9'h1ff);
+        rs_c0$1$x = ((c_c0$1) & 9'h1ff);
+        rs_c0$2$x = ((c_c0$2) & 9'h1ff);
+        mul_c1$0$a = c_d1c$0;
+        mul_c2$0$a = c_d2c$0;
+        mul_c1$0$b = ca;
+        mul_c2$0$b = cb;
+        rs_c$0$x = mul_c1$0$p + mul_c2$0$p;
+        rs_c$0$by = 32'h0;
+        rs_c0$0$by = 32'h0;
+        color_of$0$x = c14$0$q;
+        mul_c1$1$a = c_d1c$1;
+        mul_c2$1$a = c_d2c$1;
+        mul_c1$1$b = ca;
+        mul_c2$1$b = cb;
+        rs_c$1$x = mul_c1$1$p + mul_c2$1$p;
+        rs_c$1$by = 32'h0;
+        rs_c0$1$by = 32'h0;
+        color_of$1$x = c14$1$q;
+        mul_c1$2$a = c_d1c$2;
+        mul_c2$2$a = c_d2c$2;
+        mul_c1$2$b = ca;
+        mul_c2$2$b = cb;
+        rs_c$2$x = mul_c1$2$p + mul_c2$2$p;
+        rs_c$2$by = 32'h0;
+        rs_c0$2$by = 32'h0;
+        color_of$2$x = c14$2$q;
+        if (run) begin
+            if (load) begin
+                off$0$d = (g$0 & m1) + ((g$0 << one_s) & m2) + ((g$0 << two_s) & m4);
+                off$1$d = (g$1 & m1) + ((g$1 << one_s) & m2) + ((g$1 << two_s) & m4);
+                off$2$d = (g$2 & m1) + ((g$2 << one_s) & m2) + ((g$2 << two_s) & m4);
+            end
+            a3$d = rs_a$y;
+            b3$d = rs_b$y;
+            z6$d = rs_z$y + rs_z0$y;
+            q6$0$d = rs_q$0$y;
+            c14$0$d = rs_c$0$y + rs_c0$0$y;
+            orgb$0$d = color_of$0$low;
+            if (color_of$0$over) begin
+                orgb$0$d = full;
+            end
+            if (color_of$0$neg) begin
+                orgb$0$d = 32'h0;
+            end
+            q6$1$d = rs_q$1$y;
+            c14$1$d = rs_c$1$y + rs_c0$1$y;
+            orgb$1$d = color_of$1$low;
+            if (color_of$1$over) begin
+                orgb$1$d = full;
+            end
+            if (color_of$1$neg) begin
+                orgb$1$d = 32'h0;
+            end
+            q6$2$d = rs_q$2$y;
+            c14$2$d = rs_c$2$y + rs_c0$2$y;
+            orgb$2$d = color_of$2$low;
+            if (color_of$2$over) begin
+                orgb$2$d = full;
+            end
+            if (color_of$2$neg) begin
+                orgb$2$d = 32'h0;
+            end
+            div_d$d = norm_s$d;
+            sum7$d = sum_c;
+            sum8$d = sum7$q;
+            exp8$d = lead_s$pos;
+            ca11$d = rs_ra$y;
+            cb11$d = rs_rb$y;
+            ov$d = (hit_dl$q != 32'h0) & dtag_dl$q[32'h0];
+            oz$d = ((dtag_dl$q >> one_s) & 16'hffff);
+        end
+        o_valid = ov$q;
+        o_z = oz$q;
+        o_rgb = ((orgb$0$q) & 24'hffffff) | (((orgb$1$q) & 24'hffffff) << ch1) | (((orgb$2$q) & 24'hffffff) << ch2);
+    end
+    
+endmodule // vector$lanes$0
+
+
+module vector$lanes$0$a3(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$a3
+
+
+module vector$lanes$0$ab_dl(clock,en,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    
+    // Stub signals
+    reg  [55:0] stages$0$d;
+    wire  [55:0] stages$0$q;
+    reg  stages$0$clock;
+    reg  [55:0] stages$1$d;
+    wire  [55:0] stages$1$q;
+    reg  stages$1$clock;
+    reg  [55:0] stages$2$d;
+    wire  [55:0] stages$2$q;
+    reg  stages$2$clock;
+    reg  [55:0] stages$3$d;
+    wire  [55:0] stages$3$q;
+    reg  stages$3$clock;
+    reg  [55:0] stages$4$d;
+    wire  [55:0] stages$4$q;
+    reg  stages$4$clock;
+    reg  [55:0] stages$5$d;
+    wire  [55:0] stages$5$q;
+    reg  stages$5$clock;
+    reg  [55:0] stages$6$d;
+    wire  [55:0] stages$6$q;
+    reg  stages$6$clock;
+    reg  [55:0] stages$7$d;
+    wire  [55:0] stages$7$q;
+    reg  stages$7$clock;
+    reg  [55:0] stages$8$d;
+    wire  [55:0] stages$8$q;
+    reg  stages$8$clock;
+    reg  [55:0] stages$9$d;
+    wire  [55:0] stages$9$q;
+    reg  stages$9$clock;
+    reg  [55:0] stages$10$d;
+    wire  [55:0] stages$10$q;
+    reg  stages$10$clock;
+    reg  [55:0] stages$11$d;
+    wire  [55:0] stages$11$q;
+    reg  stages$11$clock;
+    reg  [55:0] stages$12$d;
+    wire  [55:0] stages$12$q;
+    reg  stages$12$clock;
+    reg  [55:0] stages$13$d;
+    wire  [55:0] stages$13$q;
+    reg  stages$13$clock;
+    reg  [55:0] stages$14$d;
+    wire  [55:0] stages$14$q;
+    reg  stages$14$clock;
+    reg  [55:0] stages$15$d;
+    wire  [55:0] stages$15$q;
+    reg  stages$15$clock;
+    reg  [55:0] stages$16$d;
+    wire  [55:0] stages$16$q;
+    reg  stages$16$clock;
+    reg  [55:0] stages$17$d;
+    wire  [55:0] stages$17$q;
+    reg  stages$17$clock;
+    reg  [55:0] stages$18$d;
+    wire  [55:0] stages$18$q;
+    reg  stages$18$clock;
+    reg  [55:0] stages$19$d;
+    wire  [55:0] stages$19$q;
+    reg  stages$19$clock;
+    reg  [55:0] stages$20$d;
+    wire  [55:0] stages$20$q;
+    reg  stages$20$clock;
+    reg  [55:0] stages$21$d;
+    wire  [55:0] stages$21$q;
+    reg  stages$21$clock;
+    reg  [55:0] stages$22$d;
+    wire  [55:0] stages$22$q;
+    reg  stages$22$clock;
+    reg  [55:0] stages$23$d;
+    wire  [55:0] stages$23$q;
+    reg  stages$23$clock;
+    reg  [55:0] stages$24$d;
+    wire  [55:0] stages$24$q;
+    reg  stages$24$clock;
+    reg  [55:0] stages$25$d;
+    wire  [55:0] stages$25$q;
+    reg  stages$25$clock;
+    reg  [55:0] stages$26$d;
+    wire  [55:0] stages$26$q;
+    reg  stages$26$clock;
+    reg  [55:0] stages$27$d;
+    wire  [55:0] stages$27$q;
+    reg  stages$27$clock;
+    reg  [55:0] stages$28$d;
+    wire  [55:0] stages$28$q;
+    reg  stages$28$clock;
+    reg  [55:0] stages$29$d;
+    wire  [55:0] stages$29$q;
+    reg  stages$29$clock;
+    reg  [55:0] stages$30$d;
+    wire  [55:0] stages$30$q;
+    reg  stages$30$clock;
+    reg  [55:0] stages$31$d;
+    wire  [55:0] stages$31$q;
+    reg  stages$31$clock;
+    reg  [55:0] stages$32$d;
+    wire  [55:0] stages$32$q;
+    reg  stages$32$clock;
+    reg  [55:0] stages$33$d;
+    wire  [55:0] stages$33$q;
+    reg  stages$33$clock;
+    
+    // Sub module instances
+    vector$lanes$0$ab_dl$stages$0 stages$0(
+        .d(stages$0$d),
+        .q(stages$0$q),
+        .clock(stages$0$clock)
+    );
+    vector$lanes$0$ab_dl$stages$1 stages$1(
+        .d(stages$1$d),
+        .q(stages$1$q),
+        .clock(stages$1$clock)
+    );
+    vector$lanes$0$ab_dl$stages$2 stages$2(
+        .d(stages$2$d),
+        .q(stages$2$q),
+        .clock(stages$2$clock)
+    );
+    vector$lanes$0$ab_dl$stages$3 stages$3(
+        .d(stages$3$d),
+        .q(stages$3$q),
+        .clock(stages$3$clock)
+    );
+    vector$lanes$0$ab_dl$stages$4 stages$4(
+        .d(stages$4$d),
+        .q(stages$4$q),
+        .clock(stages$4$clock)
+    );
+    vector$lanes$0$ab_dl$stages$5 stages$5(
+        .d(stages$5$d),
+        .q(stages$5$q),
+        .clock(stages$5$clock)
+    );
+    vector$lanes$0$ab_dl$stages$6 stages$6(
+        .d(stages$6$d),
+        .q(stages$6$q),
+        .clock(stages$6$clock)
+    );
+    vector$lanes$0$ab_dl$stages$7 stages$7(
+        .d(stages$7$d),
+        .q(stages$7$q),
+        .clock(stages$7$clock)
+    );
+    vector$lanes$0$ab_dl$stages$8 stages$8(
+        .d(stages$8$d),
+        .q(stages$8$q),
+        .clock(stages$8$clock)
+    );
+    vector$lanes$0$ab_dl$stages$9 stages$9(
+        .d(stages$9$d),
+        .q(stages$9$q),
+        .clock(stages$9$clock)
+    );
+    vector$lanes$0$ab_dl$stages$10 stages$10(
+        .d(stages$10$d),
+        .q(stages$10$q),
+        .clock(stages$10$clock)
+    );
+    vector$lanes$0$ab_dl$stages$11 stages$11(
+        .d(stages$11$d),
+        .q(stages$11$q),
+        .clock(stages$11$clock)
+    );
+    vector$lanes$0$ab_dl$stages$12 stages$12(
+        .d(stages$12$d),
+        .q(stages$12$q),
+        .clock(stages$12$clock)
+    );
+    vector$lanes$0$ab_dl$stages$13 stages$13(
+        .d(stages$13$d),
+        .q(stages$13$q),
+        .clock(stages$13$clock)
+    );
+    vector$lanes$0$ab_dl$stages$14 stages$14(
+        .d(stages$14$d),
+        .q(stages$14$q),
+        .clock(stages$14$clock)
+    );
+    vector$lanes$0$ab_dl$stages$15 stages$15(
+        .d(stages$15$d),
+        .q(stages$15$q),
+        .clock(stages$15$clock)
+    );
+    vector$lanes$0$ab_dl$stages$16 stages$16(
+        .d(stages$16$d),
+        .q(stages$16$q),
+        .clock(stages$16$clock)
+    );
+    vector$lanes$0$ab_dl$stages$17 stages$17(
+        .d(stages$17$d),
+        .q(stages$17$q),
+        .clock(stages$17$clock)
+    );
+    vector$lanes$0$ab_dl$stages$18 stages$18(
+        .d(stages$18$d),
+        .q(stages$18$q),
+        .clock(stages$18$clock)
+    );
+    vector$lanes$0$ab_dl$stages$19 stages$19(
+        .d(stages$19$d),
+        .q(stages$19$q),
+        .clock(stages$19$clock)
+    );
+    vector$lanes$0$ab_dl$stages$20 stages$20(
+        .d(stages$20$d),
+        .q(stages$20$q),
+        .clock(stages$20$clock)
+    );
+    vector$lanes$0$ab_dl$stages$21 stages$21(
+        .d(stages$21$d),
+        .q(stages$21$q),
+        .clock(stages$21$clock)
+    );
+    vector$lanes$0$ab_dl$stages$22 stages$22(
+        .d(stages$22$d),
+        .q(stages$22$q),
+        .clock(stages$22$clock)
+    );
+    vector$lanes$0$ab_dl$stages$23 stages$23(
+        .d(stages$23$d),
+        .q(stages$23$q),
+        .clock(stages$23$clock)
+    );
+    vector$lanes$0$ab_dl$stages$24 stages$24(
+        .d(stages$24$d),
+        .q(stages$24$q),
+        .clock(stages$24$clock)
+    );
+    vector$lanes$0$ab_dl$stages$25 stages$25(
+        .d(stages$25$d),
+        .q(stages$25$q),
+        .clock(stages$25$clock)
+    );
+    vector$lanes$0$ab_dl$stages$26 stages$26(
+        .d(stages$26$d),
+        .q(stages$26$q),
+        .clock(stages$26$clock)
+    );
+    vector$lanes$0$ab_dl$stages$27 stages$27(
+        .d(stages$27$d),
+        .q(stages$27$q),
+        .clock(stages$27$clock)
+    );
+    vector$lanes$0$ab_dl$stages$28 stages$28(
+        .d(stages$28$d),
+        .q(stages$28$q),
+        .clock(stages$28$clock)
+    );
+    vector$lanes$0$ab_dl$stages$29 stages$29(
+        .d(stages$29$d),
+        .q(stages$29$q),
+        .clock(stages$29$clock)
+    );
+    vector$lanes$0$ab_dl$stages$30 stages$30(
+        .d(stages$30$d),
+        .q(stages$30$q),
+        .clock(stages$30$clock)
+    );
+    vector$lanes$0$ab_dl$stages$31 stages$31(
+        .d(stages$31$d),
+        .q(stages$31$q),
+        .clock(stages$31$clock)
+    );
+    vector$lanes$0$ab_dl$stages$32 stages$32(
+        .d(stages$32$d),
+        .q(stages$32$q),
+        .clock(stages$32$clock)
+    );
+    vector$lanes$0$ab_dl$stages$33 stages$33(
+        .d(stages$33$d),
+        .q(stages$33$q),
+        .clock(stages$33$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        stages$0$clock = clock;
+        stages$0$d = stages$0$q;
+        stages$1$clock = clock;
+        stages$1$d = stages$1$q;
+        stages$2$clock = clock;
+        stages$2$d = stages$2$q;
+        stages$3$clock = clock;
+        stages$3$d = stages$3$q;
+        stages$4$clock = clock;
+        stages$4$d = stages$4$q;
+        stages$5$clock = clock;
+        stages$5$d = stages$5$q;
+        stages$6$clock = clock;
+        stages$6$d = stages$6$q;
+        stages$7$clock = clock;
+        stages$7$d = stages$7$q;
+        stages$8$clock = clock;
+        stages$8$d = stages$8$q;
+        stages$9$clock = clock;
+        stages$9$d = stages$9$q;
+        stages$10$clock = clock;
+        stages$10$d = stages$10$q;
+        stages$11$clock = clock;
+        stages$11$d = stages$11$q;
+        stages$12$clock = clock;
+        stages$12$d = stages$12$q;
+        stages$13$clock = clock;
+        stages$13$d = stages$13$q;
+        stages$14$clock = clock;
+        stages$14$d = stages$14$q;
+        stages$15$clock = clock;
+        stages$15$d = stages$15$q;
+        stages$16$clock = clock;
+        stages$16$d = stages$16$q;
+        stages$17$clock = clock;
+        stages$17$d = stages$17$q;
+        stages$18$clock = clock;
+        stages$18$d = stages$18$q;
+        stages$19$clock = clock;
+        stages$19$d = stages$19$q;
+        stages$20$clock = clock;
+        stages$20$d = stages$20$q;
+        stages$21$clock = clock;
+        stages$21$d = stages$21$q;
+        stages$22$clock = clock;
+        stages$22$d = stages$22$q;
+        stages$23$clock = clock;
+        stages$23$d = stages$23$q;
+        stages$24$clock = clock;
+        stages$24$d = stages$24$q;
+        stages$25$clock = clock;
+        stages$25$d = stages$25$q;
+        stages$26$clock = clock;
+        stages$26$d = stages$26$q;
+        stages$27$clock = clock;
+        stages$27$d = stages$27$q;
+        stages$28$clock = clock;
+        stages$28$d = stages$28$q;
+        stages$29$clock = clock;
+        stages$29$d = stages$29$q;
+        stages$30$clock = clock;
+        stages$30$d = stages$30$q;
+        stages$31$clock = clock;
+        stages$31$d = stages$31$q;
+        stages$32$clock = clock;
+        stages$32$d = stages$32$q;
+        stages$33$clock = clock;
+        stages$33$d = stages$33$q;
+        if (en) begin
+            stages$0$d = d;
+            stages$1$d = stages$0$q;
+            stages$2$d = stages$1$q;
+            stages$3$d = stages$2$q;
+            stages$4$d = stages$3$q;
+            stages$5$d = stages$4$q;
+            stages$6$d = stages$5$q;
+            stages$7$d = stages$6$q;
+            stages$8$d = stages$7$q;
+            stages$9$d = stages$8$q;
+            stages$10$d = stages$9$q;
+            stages$11$d = stages$10$q;
+            stages$12$d = stages$11$q;
+            stages$13$d = stages$12$q;
+            stages$14$d = stages$13$q;
+            stages$15$d = stages$14$q;
+            stages$16$d = stages$15$q;
+            stages$17$d = stages$16$q;
+            stages$18$d = stages$17$q;
+            stages$19$d = stages$18$q;
+            stages$20$d = stages$19$q;
+            stages$21$d = stages$20$q;
+            stages$22$d = stages$21$q;
+            stages$23$d = stages$22$q;
+            stages$24$d = stages$23$q;
+            stages$25$d = stages$24$q;
+            stages$26$d = stages$25$q;
+            stages$27$d = stages$26$q;
+            stages$28$d = stages$27$q;
+            stages$29$d = stages$28$q;
+            stages$30$d = stages$29$q;
+            stages$31$d = stages$30$q;
+            stages$32$d = stages$31$q;
+            stages$33$d = stages$32$q;
+        end
+        q = stages$33$q;
+    end
+    
+endmodule // vector$lanes$0$ab_dl
+
+
+module vector$lanes$0$ab_dl$stages$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$0
+
+
+module vector$lanes$0$ab_dl$stages$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$1
+
+
+module vector$lanes$0$ab_dl$stages$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$10
+
+
+module vector$lanes$0$ab_dl$stages$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$11
+
+
+module vector$lanes$0$ab_dl$stages$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$12
+
+
+module vector$lanes$0$ab_dl$stages$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$13
+
+
+module vector$lanes$0$ab_dl$stages$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$14
+
+
+module vector$lanes$0$ab_dl$stages$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$15
+
+
+module vector$lanes$0$ab_dl$stages$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$16
+
+
+module vector$lanes$0$ab_dl$stages$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$17
+
+
+module vector$lanes$0$ab_dl$stages$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$18
+
+
+module vector$lanes$0$ab_dl$stages$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$19
+
+
+module vector$lanes$0$ab_dl$stages$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$2
+
+
+module vector$lanes$0$ab_dl$stages$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$20
+
+
+module vector$lanes$0$ab_dl$stages$21(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$21
+
+
+module vector$lanes$0$ab_dl$stages$22(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$22
+
+
+module vector$lanes$0$ab_dl$stages$23(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$23
+
+
+module vector$lanes$0$ab_dl$stages$24(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$24
+
+
+module vector$lanes$0$ab_dl$stages$25(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$25
+
+
+module vector$lanes$0$ab_dl$stages$26(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$26
+
+
+module vector$lanes$0$ab_dl$stages$27(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$27
+
+
+module vector$lanes$0$ab_dl$stages$28(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$28
+
+
+module vector$lanes$0$ab_dl$stages$29(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$29
+
+
+module vector$lanes$0$ab_dl$stages$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$3
+
+
+module vector$lanes$0$ab_dl$stages$30(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$30
+
+
+module vector$lanes$0$ab_dl$stages$31(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$31
+
+
+module vector$lanes$0$ab_dl$stages$32(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$32
+
+
+module vector$lanes$0$ab_dl$stages$33(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$33
+
+
+module vector$lanes$0$ab_dl$stages$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$4
+
+
+module vector$lanes$0$ab_dl$stages$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$5
+
+
+module vector$lanes$0$ab_dl$stages$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$6
+
+
+module vector$lanes$0$ab_dl$stages$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$7
+
+
+module vector$lanes$0$ab_dl$stages$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$8
+
+
+module vector$lanes$0$ab_dl$stages$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ab_dl$stages$9
+
+
+module vector$lanes$0$b3(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$b3
+
+
+module vector$lanes$0$c14$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$c14$0
+
+
+module vector$lanes$0$c14$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$c14$1
+
+
+module vector$lanes$0$c14$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$c14$2
+
+
+module vector$lanes$0$ca11(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ca11
+
+
+module vector$lanes$0$cb11(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$cb11
+
+
+module vector$lanes$0$color_of$0(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [7:0] low;
+    
+    // Constant declarations
+    localparam  top = 33'h100000000;
+    localparam  half = 33'h200000;
+    localparam  shift = 8'h16;
+    localparam  limit = 33'h100;
+    
+    // Stub signals
+    reg  [31:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [32:0] ext;
+    reg  [32:0] sum;
+    reg  [32:0] shifted;
+    
+    // Sub module instances
+    vector$lanes$0$color_of$0$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 33'h1ffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 33'h1ffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 8'hff);
+    end
+    
+endmodule // vector$lanes$0$color_of$0
+
+
+module vector$lanes$0$color_of$0$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 32'h80000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$lanes$0$color_of$0$x_neg
+
+
+module vector$lanes$0$color_of$1(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [7:0] low;
+    
+    // Constant declarations
+    localparam  top = 33'h100000000;
+    localparam  half = 33'h200000;
+    localparam  shift = 8'h16;
+    localparam  limit = 33'h100;
+    
+    // Stub signals
+    reg  [31:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [32:0] ext;
+    reg  [32:0] sum;
+    reg  [32:0] shifted;
+    
+    // Sub module instances
+    vector$lanes$0$color_of$1$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 33'h1ffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 33'h1ffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 8'hff);
+    end
+    
+endmodule // vector$lanes$0$color_of$1
+
+
+module vector$lanes$0$color_of$1$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 32'h80000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$lanes$0$color_of$1$x_neg
+
+
+module vector$lanes$0$color_of$2(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [7:0] low;
+    
+    // Constant declarations
+    localparam  top = 33'h100000000;
+    localparam  half = 33'h200000;
+    localparam  shift = 8'h16;
+    localparam  limit = 33'h100;
+    
+    // Stub signals
+    reg  [31:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [32:0] ext;
+    reg  [32:0] sum;
+    reg  [32:0] shifted;
+    
+    // Sub module instances
+    vector$lanes$0$color_of$2$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 33'h1ffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 33'h1ffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 8'hff);
+    end
+    
+endmodule // vector$lanes$0$color_of$2
+
+
+module vector$lanes$0$color_of$2$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [31:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 32'h80000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$lanes$0$color_of$2$x_neg
+
+
+module vector$lanes$0$depth_of(x,neg,over,low);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    output reg  over;
+    output reg  [15:0] low;
+    
+    // Constant declarations
+    localparam  top = 37'h1000000000;
+    localparam  half = 37'h20000;
+    localparam  shift = 8'h12;
+    localparam  limit = 37'h10000;
+    
+    // Stub signals
+    reg  [35:0] x_neg$x;
+    wire  x_neg$neg;
+    
+    // Local signals
+    reg  [36:0] ext;
+    reg  [36:0] sum;
+    reg  [36:0] shifted;
+    
+    // Sub module instances
+    vector$lanes$0$depth_of$x_neg x_neg(
+        .x(x_neg$x),
+        .neg(x_neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_neg$x = x;
+        ext = ((x) & 37'h1fffffffff);
+        if (x_neg$neg) begin
+            ext = ((x) & 37'h1fffffffff) | top;
+        end
+        sum = ext + half;
+        neg = sum >= top;
+        shifted = sum >> shift;
+        over = ~neg & (shifted >= limit);
+        low = ((shifted) & 16'hffff);
+    end
+    
+endmodule // vector$lanes$0$depth_of
+
+
+module vector$lanes$0$depth_of$x_neg(x,neg);
+    
+    // Module arguments
+    input wire  [35:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 36'h800000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$lanes$0$depth_of$x_neg
+
+
+module vector$lanes$0$div(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  inp_valid;
+    output reg  inp_ready;
+    input wire  hold;
+    input wire  [57:0] inp_n;
+    input wire  [33:0] inp_d;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [25:0] out_q;
+    output reg  [33:0] out_r;
+    
+    // Constant declarations
+    localparam  n_msb = 8'h39;
+    localparam  qm = 8'h19;
+    localparam  q_sign = 26'h2000000;
+    
+    // Stub signals
+    reg  stages$0$clock;
+    reg  stages$0$enable;
+    reg  stages$0$valid_in;
+    reg  [33:0] stages$0$p_in;
+    reg  [24:0] stages$0$x_in;
+    reg  [33:0] stages$0$d_in;
+    reg  stages$0$neg_in;
+    wire  stages$0$valid;
+    wire  [33:0] stages$0$p;
+    wire  [24:0] stages$0$x;
+    wire  [33:0] stages$0$d;
+    wire  stages$0$neg;
+    reg  stages$1$clock;
+    reg  stages$1$enable;
+    reg  stages$1$valid_in;
+    reg  [33:0] stages$1$p_in;
+    reg  [24:0] stages$1$x_in;
+    reg  [33:0] stages$1$d_in;
+    reg  stages$1$neg_in;
+    wire  stages$1$valid;
+    wire  [33:0] stages$1$p;
+    wire  [24:0] stages$1$x;
+    wire  [33:0] stages$1$d;
+    wire  stages$1$neg;
+    reg  stages$2$clock;
+    reg  stages$2$enable;
+    reg  stages$2$valid_in;
+    reg  [33:0] stages$2$p_in;
+    reg  [24:0] stages$2$x_in;
+    reg  [33:0] stages$2$d_in;
+    reg  stages$2$neg_in;
+    wire  stages$2$valid;
+    wire  [33:0] stages$2$p;
+    wire  [24:0] stages$2$x;
+    wire  [33:0] stages$2$d;
+    wire  stages$2$neg;
+    reg  stages$3$clock;
+    reg  stages$3$enable;
+    reg  stages$3$valid_in;
+    reg  [33:0] stages$3$p_in;
+    reg  [24:0] stages$3$x_in;
+    reg  [33:0] stages$3$d_in;
+    reg  stages$3$neg_in;
+    wire  stages$3$valid;
+    wire  [33:0] stages$3$p;
+    wire  [24:0] stages$3$x;
+    wire  [33:0] stages$3$d;
+    wire  stages$3$neg;
+    reg  stages$4$clock;
+    reg  stages$4$enable;
+    reg  stages$4$valid_in;
+    reg  [33:0] stages$4$p_in;
+    reg  [24:0] stages$4$x_in;
+    reg  [33:0] stages$4$d_in;
+    reg  stages$4$neg_in;
+    wire  stages$4$valid;
+    wire  [33:0] stages$4$p;
+    wire  [24:0] stages$4$x;
+    wire  [33:0] stages$4$d;
+    wire  stages$4$neg;
+    reg  stages$5$clock;
+    reg  stages$5$enable;
+    reg  stages$5$valid_in;
+    reg  [33:0] stages$5$p_in;
+    reg  [24:0] stages$5$x_in;
+    reg  [33:0] stages$5$d_in;
+    reg  stages$5$neg_in;
+    wire  stages$5$valid;
+    wire  [33:0] stages$5$p;
+    wire  [24:0] stages$5$x;
+    wire  [33:0] stages$5$d;
+    wire  stages$5$neg;
+    reg  stages$6$clock;
+    reg  stages$6$enable;
+    reg  stages$6$valid_in;
+    reg  [33:0] stages$6$p_in;
+    reg  [24:0] stages$6$x_in;
+    reg  [33:0] stages$6$d_in;
+    reg  stages$6$neg_in;
+    wire  stages$6$valid;
+    wire  [33:0] stages$6$p;
+    wire  [24:0] stages$6$x;
+    wire  [33:0] stages$6$d;
+    wire  stages$6$neg;
+    reg  stages$7$clock;
+    reg  stages$7$enable;
+    reg  stages$7$valid_in;
+    reg  [33:0] stages$7$p_in;
+    reg  [24:0] stages$7$x_in;
+    reg  [33:0] stages$7$d_in;
+    reg  stages$7$neg_in;
+    wire  stages$7$valid;
+    wire  [33:0] stages$7$p;
+    wire  [24:0] stages$7$x;
+    wire  [33:0] stages$7$d;
+    wire  stages$7$neg;
+    reg  stages$8$clock;
+    reg  stages$8$enable;
+    reg  stages$8$valid_in;
+    reg  [33:0] stages$8$p_in;
+    reg  [24:0] stages$8$x_in;
+    reg  [33:0] stages$8$d_in;
+    reg  stages$8$neg_in;
+    wire  stages$8$valid;
+    wire  [33:0] stages$8$p;
+    wire  [24:0] stages$8$x;
+    wire  [33:0] stages$8$d;
+    wire  stages$8$neg;
+    reg  stages$9$clock;
+    reg  stages$9$enable;
+    reg  stages$9$valid_in;
+    reg  [33:0] stages$9$p_in;
+    reg  [24:0] stages$9$x_in;
+    reg  [33:0] stages$9$d_in;
+    reg  stages$9$neg_in;
+    wire  stages$9$valid;
+    wire  [33:0] stages$9$p;
+    wire  [24:0] stages$9$x;
+    wire  [33:0] stages$9$d;
+    wire  stages$9$neg;
+    reg  stages$10$clock;
+    reg  stages$10$enable;
+    reg  stages$10$valid_in;
+    reg  [33:0] stages$10$p_in;
+    reg  [24:0] stages$10$x_in;
+    reg  [33:0] stages$10$d_in;
+    reg  stages$10$neg_in;
+    wire  stages$10$valid;
+    wire  [33:0] stages$10$p;
+    wire  [24:0] stages$10$x;
+    wire  [33:0] stages$10$d;
+    wire  stages$10$neg;
+    reg  stages$11$clock;
+    reg  stages$11$enable;
+    reg  stages$11$valid_in;
+    reg  [33:0] stages$11$p_in;
+    reg  [24:0] stages$11$x_in;
+    reg  [33:0] stages$11$d_in;
+    reg  stages$11$neg_in;
+    wire  stages$11$valid;
+    wire  [33:0] stages$11$p;
+    wire  [24:0] stages$11$x;
+    wire  [33:0] stages$11$d;
+    wire  stages$11$neg;
+    reg  stages$12$clock;
+    reg  stages$12$enable;
+    reg  stages$12$valid_in;
+    reg  [33:0] stages$12$p_in;
+    reg  [24:0] stages$12$x_in;
+    reg  [33:0] stages$12$d_in;
+    reg  stages$12$neg_in;
+    wire  stages$12$valid;
+    wire  [33:0] stages$12$p;
+    wire  [24:0] stages$12$x;
+    wire  [33:0] stages$12$d;
+    wire  stages$12$neg;
+    reg  stages$13$clock;
+    reg  stages$13$enable;
+    reg  stages$13$valid_in;
+    reg  [33:0] stages$13$p_in;
+    reg  [24:0] stages$13$x_in;
+    reg  [33:0] stages$13$d_in;
+    reg  stages$13$neg_in;
+    wire  stages$13$valid;
+    wire  [33:0] stages$13$p;
+    wire  [24:0] stages$13$x;
+    wire  [33:0] stages$13$d;
+    wire  stages$13$neg;
+    reg  stages$14$clock;
+    reg  stages$14$enable;
+    reg  stages$14$valid_in;
+    reg  [33:0] stages$14$p_in;
+    reg  [24:0] stages$14$x_in;
+    reg  [33:0] stages$14$d_in;
+    reg  stages$14$neg_in;
+    wire  stages$14$valid;
+    wire  [33:0] stages$14$p;
+    wire  [24:0] stages$14$x;
+    wire  [33:0] stages$14$d;
+    wire  stages$14$neg;
+    reg  stages$15$clock;
+    reg  stages$15$enable;
+    reg  stages$15$valid_in;
+    reg  [33:0] stages$15$p_in;
+    reg  [24:0] stages$15$x_in;
+    reg  [33:0] stages$15$d_in;
+    reg  stages$15$neg_in;
+    wire  stages$15$valid;
+    wire  [33:0] stages$15$p;
+    wire  [24:0] stages$15$x;
+    wire  [33:0] stages$15$d;
+    wire  stages$15$neg;
+    reg  stages$16$clock;
+    reg  stages$16$enable;
+    reg  stages$16$valid_in;
+    reg  [33:0] stages$16$p_in;
+    reg  [24:0] stages$16$x_in;
+    reg  [33:0] stages$16$d_in;
+    reg  stages$16$neg_in;
+    wire  stages$16$valid;
+    wire  [33:0] stages$16$p;
+    wire  [24:0] stages$16$x;
+    wire  [33:0] stages$16$d;
+    wire  stages$16$neg;
+    reg  stages$17$clock;
+    reg  stages$17$enable;
+    reg  stages$17$valid_in;
+    reg  [33:0] stages$17$p_in;
+    reg  [24:0] stages$17$x_in;
+    reg  [33:0] stages$17$d_in;
+    reg  stages$17$neg_in;
+    wire  stages$17$valid;
+    wire  [33:0] stages$17$p;
+    wire  [24:0] stages$17$x;
+    wire  [33:0] stages$17$d;
+    wire  stages$17$neg;
+    reg  stages$18$clock;
+    reg  stages$18$enable;
+    reg  stages$18$valid_in;
+    reg  [33:0] stages$18$p_in;
+    reg  [24:0] stages$18$x_in;
+    reg  [33:0] stages$18$d_in;
+    reg  stages$18$neg_in;
+    wire  stages$18$valid;
+    wire  [33:0] stages$18$p;
+    wire  [24:0] stages$18$x;
+    wire  [33:0] stages$18$d;
+    wire  stages$18$neg;
+    reg  stages$19$clock;
+    reg  stages$19$enable;
+    reg  stages$19$valid_in;
+    reg  [33:0] stages$19$p_in;
+    reg  [24:0] stages$19$x_in;
+    reg  [33:0] stages$19$d_in;
+    reg  stages$19$neg_in;
+    wire  stages$19$valid;
+    wire  [33:0] stages$19$p;
+    wire  [24:0] stages$19$x;
+    wire  [33:0] stages$19$d;
+    wire  stages$19$neg;
+    reg  stages$20$clock;
+    reg  stages$20$enable;
+    reg  stages$20$valid_in;
+    reg  [33:0] stages$20$p_in;
+    reg  [24:0] stages$20$x_in;
+    reg  [33:0] stages$20$d_in;
+    reg  stages$20$neg_in;
+    wire  stages$20$valid;
+    wire  [33:0] stages$20$p;
+    wire  [24:0] stages$20$x;
+    wire  [33:0] stages$20$d;
+    wire  stages$20$neg;
+    reg  stages$21$clock;
+    reg  stages$21$enable;
+    reg  stages$21$valid_in;
+    reg  [33:0] stages$21$p_in;
+    reg  [24:0] stages$21$x_in;
+    reg  [33:0] stages$21$d_in;
+    reg  stages$21$neg_in;
+    wire  stages$21$valid;
+    wire  [33:0] stages$21$p;
+    wire  [24:0] stages$21$x;
+    wire  [33:0] stages$21$d;
+    wire  stages$21$neg;
+    reg  stages$22$clock;
+    reg  stages$22$enable;
+    reg  stages$22$valid_in;
+    reg  [33:0] stages$22$p_in;
+    reg  [24:0] stages$22$x_in;
+    reg  [33:0] stages$22$d_in;
+    reg  stages$22$neg_in;
+    wire  stages$22$valid;
+    wire  [33:0] stages$22$p;
+    wire  [24:0] stages$22$x;
+    wire  [33:0] stages$22$d;
+    wire  stages$22$neg;
+    reg  stages$23$clock;
+    reg  stages$23$enable;
+    reg  stages$23$valid_in;
+    reg  [33:0] stages$23$p_in;
+    reg  [24:0] stages$23$x_in;
+    reg  [33:0] stages$23$d_in;
+    reg  stages$23$neg_in;
+    wire  stages$23$valid;
+    wire  [33:0] stages$23$p;
+    wire  [24:0] stages$23$x;
+    wire  [33:0] stages$23$d;
+    wire  stages$23$neg;
+    reg  stages$24$clock;
+    reg  stages$24$enable;
+    reg  stages$24$valid_in;
+    reg  [33:0] stages$24$p_in;
+    reg  [24:0] stages$24$x_in;
+    reg  [33:0] stages$24$d_in;
+    reg  stages$24$neg_in;
+    wire  stages$24$valid;
+    wire  [33:0] stages$24$p;
+    wire  [24:0] stages$24$x;
+    wire  [33:0] stages$24$d;
+    wire  stages$24$neg;
+    
+    // Local signals
+    reg  advance;
+    reg  [57:0] m;
+    reg  [24:0] last_x;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$0 stages$0(
+        .clock(stages$0$clock),
+        .enable(stages$0$enable),
+        .valid_in(stages$0$valid_in),
+        .p_in(stages$0$p_in),
+        .x_in(stages$0$x_in),
+        .d_in(stages$0$d_in),
+        .neg_in(stages$0$neg_in),
+        .valid(stages$0$valid),
+        .p(stages$0$p),
+        .x(stages$0$x),
+        .d(stages$0$d),
+        .neg(stages$0$neg)
+    );
+    vector$lanes$0$div$stages$1 stages$1(
+        .clock(stages$1$clock),
+        .enable(stages$1$enable),
+        .valid_in(stages$1$valid_in),
+        .p_in(stages$1$p_in),
+        .x_in(stages$1$x_in),
+        .d_in(stages$1$d_in),
+        .neg_in(stages$1$neg_in),
+        .valid(stages$1$valid),
+        .p(stages$1$p),
+        .x(stages$1$x),
+        .d(stages$1$d),
+        .neg(stages$1$neg)
+    );
+    vector$lanes$0$div$stages$2 stages$2(
+        .clock(stages$2$clock),
+        .enable(stages$2$enable),
+        .valid_in(stages$2$valid_in),
+        .p_in(stages$2$p_in),
+        .x_in(stages$2$x_in),
+        .d_in(stages$2$d_in),
+        .neg_in(stages$2$neg_in),
+        .valid(stages$2$valid),
+        .p(stages$2$p),
+        .x(stages$2$x),
+        .d(stages$2$d),
+        .neg(stages$2$neg)
+    );
+    vector$lanes$0$div$stages$3 stages$3(
+        .clock(stages$3$clock),
+        .enable(stages$3$enable),
+        .valid_in(stages$3$valid_in),
+        .p_in(stages$3$p_in),
+        .x_in(stages$3$x_in),
+        .d_in(stages$3$d_in),
+        .neg_in(stages$3$neg_in),
+        .valid(stages$3$valid),
+        .p(stages$3$p),
+        .x(stages$3$x),
+        .d(stages$3$d),
+        .neg(stages$3$neg)
+    );
+    vector$lanes$0$div$stages$4 stages$4(
+        .clock(stages$4$clock),
+        .enable(stages$4$enable),
+        .valid_in(stages$4$valid_in),
+        .p_in(stages$4$p_in),
+        .x_in(stages$4$x_in),
+        .d_in(stages$4$d_in),
+        .neg_in(stages$4$neg_in),
+        .valid(stages$4$valid),
+        .p(stages$4$p),
+        .x(stages$4$x),
+        .d(stages$4$d),
+        .neg(stages$4$neg)
+    );
+    vector$lanes$0$div$stages$5 stages$5(
+        .clock(stages$5$clock),
+        .enable(stages$5$enable),
+        .valid_in(stages$5$valid_in),
+        .p_in(stages$5$p_in),
+        .x_in(stages$5$x_in),
+        .d_in(stages$5$d_in),
+        .neg_in(stages$5$neg_in),
+        .valid(stages$5$valid),
+        .p(stages$5$p),
+        .x(stages$5$x),
+        .d(stages$5$d),
+        .neg(stages$5$neg)
+    );
+    vector$lanes$0$div$stages$6 stages$6(
+        .clock(stages$6$clock),
+        .enable(stages$6$enable),
+        .valid_in(stages$6$valid_in),
+        .p_in(stages$6$p_in),
+        .x_in(stages$6$x_in),
+        .d_in(stages$6$d_in),
+        .neg_in(stages$6$neg_in),
+        .valid(stages$6$valid),
+        .p(stages$6$p),
+        .x(stages$6$x),
+        .d(stages$6$d),
+        .neg(stages$6$neg)
+    );
+    vector$lanes$0$div$stages$7 stages$7(
+        .clock(stages$7$clock),
+        .enable(stages$7$enable),
+        .valid_in(stages$7$valid_in),
+        .p_in(stages$7$p_in),
+        .x_in(stages$7$x_in),
+        .d_in(stages$7$d_in),
+        .neg_in(stages$7$neg_in),
+        .valid(stages$7$valid),
+        .p(stages$7$p),
+        .x(stages$7$x),
+        .d(stages$7$d),
+        .neg(stages$7$neg)
+    );
+    vector$lanes$0$div$stages$8 stages$8(
+        .clock(stages$8$clock),
+        .enable(stages$8$enable),
+        .valid_in(stages$8$valid_in),
+        .p_in(stages$8$p_in),
+        .x_in(stages$8$x_in),
+        .d_in(stages$8$d_in),
+        .neg_in(stages$8$neg_in),
+        .valid(stages$8$valid),
+        .p(stages$8$p),
+        .x(stages$8$x),
+        .d(stages$8$d),
+        .neg(stages$8$neg)
+    );
+    vector$lanes$0$div$stages$9 stages$9(
+        .clock(stages$9$clock),
+        .enable(stages$9$enable),
+        .valid_in(stages$9$valid_in),
+        .p_in(stages$9$p_in),
+        .x_in(stages$9$x_in),
+        .d_in(stages$9$d_in),
+        .neg_in(stages$9$neg_in),
+        .valid(stages$9$valid),
+        .p(stages$9$p),
+        .x(stages$9$x),
+        .d(stages$9$d),
+        .neg(stages$9$neg)
+    );
+    vector$lanes$0$div$stages$10 stages$10(
+        .clock(stages$10$clock),
+        .enable(stages$10$enable),
+        .valid_in(stages$10$valid_in),
+        .p_in(stages$10$p_in),
+        .x_in(stages$10$x_in),
+        .d_in(stages$10$d_in),
+        .neg_in(stages$10$neg_in),
+        .valid(stages$10$valid),
+        .p(stages$10$p),
+        .x(stages$10$x),
+        .d(stages$10$d),
+        .neg(stages$10$neg)
+    );
+    vector$lanes$0$div$stages$11 stages$11(
+        .clock(stages$11$clock),
+        .enable(stages$11$enable),
+        .valid_in(stages$11$valid_in),
+        .p_in(stages$11$p_in),
+        .x_in(stages$11$x_in),
+        .d_in(stages$11$d_in),
+        .neg_in(stages$11$neg_in),
+        .valid(stages$11$valid),
+        .p(stages$11$p),
+        .x(stages$11$x),
+        .d(stages$11$d),
+        .neg(stages$11$neg)
+    );
+    vector$lanes$0$div$stages$12 stages$12(
+        .clock(stages$12$clock),
+        .enable(stages$12$enable),
+        .valid_in(stages$12$valid_in),
+        .p_in(stages$12$p_in),
+        .x_in(stages$12$x_in),
+        .d_in(stages$12$d_in),
+        .neg_in(stages$12$neg_in),
+        .valid(stages$12$valid),
+        .p(stages$12$p),
+        .x(stages$12$x),
+        .d(stages$12$d),
+        .neg(stages$12$neg)
+    );
+    vector$lanes$0$div$stages$13 stages$13(
+        .clock(stages$13$clock),
+        .enable(stages$13$enable),
+        .valid_in(stages$13$valid_in),
+        .p_in(stages$13$p_in),
+        .x_in(stages$13$x_in),
+        .d_in(stages$13$d_in),
+        .neg_in(stages$13$neg_in),
+        .valid(stages$13$valid),
+        .p(stages$13$p),
+        .x(stages$13$x),
+        .d(stages$13$d),
+        .neg(stages$13$neg)
+    );
+    vector$lanes$0$div$stages$14 stages$14(
+        .clock(stages$14$clock),
+        .enable(stages$14$enable),
+        .valid_in(stages$14$valid_in),
+        .p_in(stages$14$p_in),
+        .x_in(stages$14$x_in),
+        .d_in(stages$14$d_in),
+        .neg_in(stages$14$neg_in),
+        .valid(stages$14$valid),
+        .p(stages$14$p),
+        .x(stages$14$x),
+        .d(stages$14$d),
+        .neg(stages$14$neg)
+    );
+    vector$lanes$0$div$stages$15 stages$15(
+        .clock(stages$15$clock),
+        .enable(stages$15$enable),
+        .valid_in(stages$15$valid_in),
+        .p_in(stages$15$p_in),
+        .x_in(stages$15$x_in),
+        .d_in(stages$15$d_in),
+        .neg_in(stages$15$neg_in),
+        .valid(stages$15$valid),
+        .p(stages$15$p),
+        .x(stages$15$x),
+        .d(stages$15$d),
+        .neg(stages$15$neg)
+    );
+    vector$lanes$0$div$stages$16 stages$16(
+        .clock(stages$16$clock),
+        .enable(stages$16$enable),
+        .valid_in(stages$16$valid_in),
+        .p_in(stages$16$p_in),
+        .x_in(stages$16$x_in),
+        .d_in(stages$16$d_in),
+        .neg_in(stages$16$neg_in),
+        .valid(stages$16$valid),
+        .p(stages$16$p),
+        .x(stages$16$x),
+        .d(stages$16$d),
+        .neg(stages$16$neg)
+    );
+    vector$lanes$0$div$stages$17 stages$17(
+        .clock(stages$17$clock),
+        .enable(stages$17$enable),
+        .valid_in(stages$17$valid_in),
+        .p_in(stages$17$p_in),
+        .x_in(stages$17$x_in),
+        .d_in(stages$17$d_in),
+        .neg_in(stages$17$neg_in),
+        .valid(stages$17$valid),
+        .p(stages$17$p),
+        .x(stages$17$x),
+        .d(stages$17$d),
+        .neg(stages$17$neg)
+    );
+    vector$lanes$0$div$stages$18 stages$18(
+        .clock(stages$18$clock),
+        .enable(stages$18$enable),
+        .valid_in(stages$18$valid_in),
+        .p_in(stages$18$p_in),
+        .x_in(stages$18$x_in),
+        .d_in(stages$18$d_in),
+        .neg_in(stages$18$neg_in),
+        .valid(stages$18$valid),
+        .p(stages$18$p),
+        .x(stages$18$x),
+        .d(stages$18$d),
+        .neg(stages$18$neg)
+    );
+    vector$lanes$0$div$stages$19 stages$19(
+        .clock(stages$19$clock),
+        .enable(stages$19$enable),
+        .valid_in(stages$19$valid_in),
+        .p_in(stages$19$p_in),
+        .x_in(stages$19$x_in),
+        .d_in(stages$19$d_in),
+        .neg_in(stages$19$neg_in),
+        .valid(stages$19$valid),
+        .p(stages$19$p),
+        .x(stages$19$x),
+        .d(stages$19$d),
+        .neg(stages$19$neg)
+    );
+    vector$lanes$0$div$stages$20 stages$20(
+        .clock(stages$20$clock),
+        .enable(stages$20$enable),
+        .valid_in(stages$20$valid_in),
+        .p_in(stages$20$p_in),
+        .x_in(stages$20$x_in),
+        .d_in(stages$20$d_in),
+        .neg_in(stages$20$neg_in),
+        .valid(stages$20$valid),
+        .p(stages$20$p),
+        .x(stages$20$x),
+        .d(stages$20$d),
+        .neg(stages$20$neg)
+    );
+    vector$lanes$0$div$stages$21 stages$21(
+        .clock(stages$21$clock),
+        .enable(stages$21$enable),
+        .valid_in(stages$21$valid_in),
+        .p_in(stages$21$p_in),
+        .x_in(stages$21$x_in),
+        .d_in(stages$21$d_in),
+        .neg_in(stages$21$neg_in),
+        .valid(stages$21$valid),
+        .p(stages$21$p),
+        .x(stages$21$x),
+        .d(stages$21$d),
+        .neg(stages$21$neg)
+    );
+    vector$lanes$0$div$stages$22 stages$22(
+        .clock(stages$22$clock),
+        .enable(stages$22$enable),
+        .valid_in(stages$22$valid_in),
+        .p_in(stages$22$p_in),
+        .x_in(stages$22$x_in),
+        .d_in(stages$22$d_in),
+        .neg_in(stages$22$neg_in),
+        .valid(stages$22$valid),
+        .p(stages$22$p),
+        .x(stages$22$x),
+        .d(stages$22$d),
+        .neg(stages$22$neg)
+    );
+    vector$lanes$0$div$stages$23 stages$23(
+        .clock(stages$23$clock),
+        .enable(stages$23$enable),
+        .valid_in(stages$23$valid_in),
+        .p_in(stages$23$p_in),
+        .x_in(stages$23$x_in),
+        .d_in(stages$23$d_in),
+        .neg_in(stages$23$neg_in),
+        .valid(stages$23$valid),
+        .p(stages$23$p),
+        .x(stages$23$x),
+        .d(stages$23$d),
+        .neg(stages$23$neg)
+    );
+    vector$lanes$0$div$stages$24 stages$24(
+        .clock(stages$24$clock),
+        .enable(stages$24$enable),
+        .valid_in(stages$24$valid_in),
+        .p_in(stages$24$p_in),
+        .x_in(stages$24$x_in),
+        .d_in(stages$24$d_in),
+        .neg_in(stages$24$neg_in),
+        .valid(stages$24$valid),
+        .p(stages$24$p),
+        .x(stages$24$x),
+        .d(stages$24$d),
+        .neg(stages$24$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        advance = ~hold & (~stages$24$valid | out_ready);
+        out_valid = stages$24$valid;
+        last_x = stages$24$x;
+        out_r = stages$24$p;
+        out_q = ((last_x) & 26'h3ffffff);
+        if (stages$24$neg) begin
+            out_q = ((last_x) & 26'h3ffffff) | q_sign;
+        end
+        stages$0$clock = clock;
+        stages$0$enable = advance;
+        stages$1$clock = clock;
+        stages$1$enable = advance;
+        stages$2$clock = clock;
+        stages$2$enable = advance;
+        stages$3$clock = clock;
+        stages$3$enable = advance;
+        stages$4$clock = clock;
+        stages$4$enable = advance;
+        stages$5$clock = clock;
+        stages$5$enable = advance;
+        stages$6$clock = clock;
+        stages$6$enable = advance;
+        stages$7$clock = clock;
+        stages$7$enable = advance;
+        stages$8$clock = clock;
+        stages$8$enable = advance;
+        stages$9$clock = clock;
+        stages$9$enable = advance;
+        stages$10$clock = clock;
+        stages$10$enable = advance;
+        stages$11$clock = clock;
+        stages$11$enable = advance;
+        stages$12$clock = clock;
+        stages$12$enable = advance;
+        stages$13$clock = clock;
+        stages$13$enable = advance;
+        stages$14$clock = clock;
+        stages$14$enable = advance;
+        stages$15$clock = clock;
+        stages$15$enable = advance;
+        stages$16$clock = clock;
+        stages$16$enable = advance;
+        stages$17$clock = clock;
+        stages$17$enable = advance;
+        stages$18$clock = clock;
+        stages$18$enable = advance;
+        stages$19$clock = clock;
+        stages$19$enable = advance;
+        stages$20$clock = clock;
+        stages$20$enable = advance;
+        stages$21$clock = clock;
+        stages$21$enable = advance;
+        stages$22$clock = clock;
+        stages$22$enable = advance;
+        stages$23$clock = clock;
+        stages$23$enable = advance;
+        stages$24$clock = clock;
+        stages$24$enable = advance;
+        inp_ready = advance;
+        m = inp_n;
+        if (inp_n[n_msb]) begin
+            m = ~inp_n;
+        end
+        stages$0$valid_in = inp_valid;
+        stages$0$p_in = ((m >> qm) & 34'h3ffffffff);
+        stages$0$x_in = m[(32'h0)+:(25)];
+        stages$0$d_in = inp_d;
+        stages$0$neg_in = inp_n[n_msb];
+        stages$1$valid_in = stages$0$valid;
+        stages$1$p_in = stages$0$p;
+        stages$1$x_in = stages$0$x;
+        stages$1$d_in = stages$0$d;
+        stages$1$neg_in = stages$0$neg;
+        stages$2$valid_in = stages$1$valid;
+        stages$2$p_in = stages$1$p;
+        stages$2$x_in = stages$1$x;
+        stages$2$d_in = stages$1$d;
+        stages$2$neg_in = stages$1$neg;
+        stages$3$valid_in = stages$2$valid;
+        stages$3$p_in = stages$2$p;
+        stages$3$x_in = stages$2$x;
+        stages$3$d_in = stages$2$d;
+        stages$3$neg_in = stages$2$neg;
+        stages$4$valid_in = stages$3$valid;
+        stages$4$p_in = stages$3$p;
+        stages$4$x_in = stages$3$x;
+        stages$4$d_in = stages$3$d;
+        stages$4$neg_in = stages$3$neg;
+        stages$5$valid_in = stages$4$valid;
+        stages$5$p_in = stages$4$p;
+        stages$5$x_in = stages$4$x;
+        stages$5$d_in = stages$4$d;
+        stages$5$neg_in = stages$4$neg;
+        stages$6$valid_in = stages$5$valid;
+        stages$6$p_in = stages$5$p;
+        stages$6$x_in = stages$5$x;
+        stages$6$d_in = stages$5$d;
+        stages$6$neg_in = stages$5$neg;
+        stages$7$valid_in = stages$6$valid;
+        stages$7$p_in = stages$6$p;
+        stages$7$x_in = stages$6$x;
+        stages$7$d_in = stages$6$d;
+        stages$7$neg_in = stages$6$neg;
+        stages$8$valid_in = stages$7$valid;
+        stages$8$p_in = stages$7$p;
+        stages$8$x_in = stages$7$x;
+        stages$8$d_in = stages$7$d;
+        stages$8$neg_in = stages$7$neg;
+        stages$9$valid_in = stages$8$valid;
+        stages$9$p_in = stages$8$p;
+        stages$9$x_in = stages$8$x;
+        stages$9$d_in = stages$8$d;
+        stages$9$neg_in = stages$8$neg;
+        stages$10$valid_in = stages$9$valid;
+        stages$10$p_in = stages$9$p;
+        stages$10$x_in = stages$9$x;
+        stages$10$d_in = stages$9$d;
+        stages$10$neg_in = stages$9$neg;
+        stages$11$valid_in = stages$10$valid;
+        stages$11$p_in = stages$10$p;
+        stages$11$x_in = stages$10$x;
+        stages$11$d_in = stages$10$d;
+        stages$11$neg_in = stages$10$neg;
+        stages$12$valid_in = stages$11$valid;
+        stages$12$p_in = stages$11$p;
+        stages$12$x_in = stages$11$x;
+        stages$12$d_in = stages$11$d;
+        stages$12$neg_in = stages$11$neg;
+        stages$13$valid_in = stages$12$valid;
+        stages$13$p_in = stages$12$p;
+        stages$13$x_in = stages$12$x;
+        stages$13$d_in = stages$12$d;
+        stages$13$neg_in = stages$12$neg;
+        stages$14$valid_in = stages$13$valid;
+        stages$14$p_in = stages$13$p;
+        stages$14$x_in = stages$13$x;
+        stages$14$d_in = stages$13$d;
+        stages$14$neg_in = stages$13$neg;
+        stages$15$valid_in = stages$14$valid;
+        stages$15$p_in = stages$14$p;
+        stages$15$x_in = stages$14$x;
+        stages$15$d_in = stages$14$d;
+        stages$15$neg_in = stages$14$neg;
+        stages$16$valid_in = stages$15$valid;
+        stages$16$p_in = stages$15$p;
+        stages$16$x_in = stages$15$x;
+        stages$16$d_in = stages$15$d;
+        stages$16$neg_in = stages$15$neg;
+        stages$17$valid_in = stages$16$valid;
+        stages$17$p_in = stages$16$p;
+        stages$17$x_in = stages$16$x;
+        stages$17$d_in = stages$16$d;
+        stages$17$neg_in = stages$16$neg;
+        stages$18$valid_in = stages$17$valid;
+        stages$18$p_in = stages$17$p;
+        stages$18$x_in = stages$17$x;
+        stages$18$d_in = stages$17$d;
+        stages$18$neg_in = stages$17$neg;
+        stages$19$valid_in = stages$18$valid;
+        stages$19$p_in = stages$18$p;
+        stages$19$x_in = stages$18$x;
+        stages$19$d_in = stages$18$d;
+        stages$19$neg_in = stages$18$neg;
+        stages$20$valid_in = stages$19$valid;
+        stages$20$p_in = stages$19$p;
+        stages$20$x_in = stages$19$x;
+        stages$20$d_in = stages$19$d;
+        stages$20$neg_in = stages$19$neg;
+        stages$21$valid_in = stages$20$valid;
+        stages$21$p_in = stages$20$p;
+        stages$21$x_in = stages$20$x;
+        stages$21$d_in = stages$20$d;
+        stages$21$neg_in = stages$20$neg;
+        stages$22$valid_in = stages$21$valid;
+        stages$22$p_in = stages$21$p;
+        stages$22$x_in = stages$21$x;
+        stages$22$d_in = stages$21$d;
+        stages$22$neg_in = stages$21$neg;
+        stages$23$valid_in = stages$22$valid;
+        stages$23$p_in = stages$22$p;
+        stages$23$x_in = stages$22$x;
+        stages$23$d_in = stages$22$d;
+        stages$23$neg_in = stages$22$neg;
+        stages$24$valid_in = stages$23$valid;
+        stages$24$p_in = stages$23$p;
+        stages$24$x_in = stages$23$x;
+        stages$24$d_in = stages$23$d;
+        stages$24$neg_in = stages$23$neg;
+    end
+    
+endmodule // vector$lanes$0$div
+
+
+module vector$lanes$0$div$stages$0(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$0$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$0$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$0$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$0$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$0$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$0
+
+
+module vector$lanes$0$div$stages$0$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$0$d_r
+
+
+module vector$lanes$0$div$stages$0$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$0$neg_r
+
+
+module vector$lanes$0$div$stages$0$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$0$p_r
+
+
+module vector$lanes$0$div$stages$0$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$0$valid_r
+
+
+module vector$lanes$0$div$stages$0$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$0$x_r
+
+
+module vector$lanes$0$div$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$1$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$1$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$1$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$1$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$1$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$1
+
+
+module vector$lanes$0$div$stages$1$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$1$d_r
+
+
+module vector$lanes$0$div$stages$1$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$1$neg_r
+
+
+module vector$lanes$0$div$stages$1$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$1$p_r
+
+
+module vector$lanes$0$div$stages$1$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$1$valid_r
+
+
+module vector$lanes$0$div$stages$1$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$1$x_r
+
+
+module vector$lanes$0$div$stages$10(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$10$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$10$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$10$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$10$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$10$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$10
+
+
+module vector$lanes$0$div$stages$10$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$10$d_r
+
+
+module vector$lanes$0$div$stages$10$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$10$neg_r
+
+
+module vector$lanes$0$div$stages$10$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$10$p_r
+
+
+module vector$lanes$0$div$stages$10$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$10$valid_r
+
+
+module vector$lanes$0$div$stages$10$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$10$x_r
+
+
+module vector$lanes$0$div$stages$11(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$11$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$11$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$11$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$11$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$11$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$11
+
+
+module vector$lanes$0$div$stages$11$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$11$d_r
+
+
+module vector$lanes$0$div$stages$11$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$11$neg_r
+
+
+module vector$lanes$0$div$stages$11$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$11$p_r
+
+
+module vector$lanes$0$div$stages$11$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$11$valid_r
+
+
+module vector$lanes$0$div$stages$11$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$11$x_r
+
+
+module vector$lanes$0$div$stages$12(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$12$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$12$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$12$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$12$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$12$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$12
+
+
+module vector$lanes$0$div$stages$12$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$12$d_r
+
+
+module vector$lanes$0$div$stages$12$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$12$neg_r
+
+
+module vector$lanes$0$div$stages$12$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$12$p_r
+
+
+module vector$lanes$0$div$stages$12$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$12$valid_r
+
+
+module vector$lanes$0$div$stages$12$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$12$x_r
+
+
+module vector$lanes$0$div$stages$13(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$13$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$13$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$13$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$13$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$13$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$13
+
+
+module vector$lanes$0$div$stages$13$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$13$d_r
+
+
+module vector$lanes$0$div$stages$13$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$13$neg_r
+
+
+module vector$lanes$0$div$stages$13$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$13$p_r
+
+
+module vector$lanes$0$div$stages$13$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$13$valid_r
+
+
+module vector$lanes$0$div$stages$13$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$13$x_r
+
+
+module vector$lanes$0$div$stages$14(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$14$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$14$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$14$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$14$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$14$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$14
+
+
+module vector$lanes$0$div$stages$14$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$14$d_r
+
+
+module vector$lanes$0$div$stages$14$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$14$neg_r
+
+
+module vector$lanes$0$div$stages$14$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$14$p_r
+
+
+module vector$lanes$0$div$stages$14$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$14$valid_r
+
+
+module vector$lanes$0$div$stages$14$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$14$x_r
+
+
+module vector$lanes$0$div$stages$15(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$15$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$15$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$15$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$15$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$15$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$15
+
+
+module vector$lanes$0$div$stages$15$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$15$d_r
+
+
+module vector$lanes$0$div$stages$15$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$15$neg_r
+
+
+module vector$lanes$0$div$stages$15$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$15$p_r
+
+
+module vector$lanes$0$div$stages$15$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$15$valid_r
+
+
+module vector$lanes$0$div$stages$15$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$15$x_r
+
+
+module vector$lanes$0$div$stages$16(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$16$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$16$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$16$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$16$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$16$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$16
+
+
+module vector$lanes$0$div$stages$16$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$16$d_r
+
+
+module vector$lanes$0$div$stages$16$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$16$neg_r
+
+
+module vector$lanes$0$div$stages$16$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$16$p_r
+
+
+module vector$lanes$0$div$stages$16$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$16$valid_r
+
+
+module vector$lanes$0$div$stages$16$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$16$x_r
+
+
+module vector$lanes$0$div$stages$17(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$17$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$17$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$17$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$17$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$17$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$17
+
+
+module vector$lanes$0$div$stages$17$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$17$d_r
+
+
+module vector$lanes$0$div$stages$17$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$17$neg_r
+
+
+module vector$lanes$0$div$stages$17$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$17$p_r
+
+
+module vector$lanes$0$div$stages$17$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$17$valid_r
+
+
+module vector$lanes$0$div$stages$17$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$17$x_r
+
+
+module vector$lanes$0$div$stages$18(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$18$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$18$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$18$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$18$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$18$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$18
+
+
+module vector$lanes$0$div$stages$18$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$18$d_r
+
+
+module vector$lanes$0$div$stages$18$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$18$neg_r
+
+
+module vector$lanes$0$div$stages$18$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$18$p_r
+
+
+module vector$lanes$0$div$stages$18$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$18$valid_r
+
+
+module vector$lanes$0$div$stages$18$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$18$x_r
+
+
+module vector$lanes$0$div$stages$19(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$19$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$19$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$19$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$19$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$19$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$19
+
+
+module vector$lanes$0$div$stages$19$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$19$d_r
+
+
+module vector$lanes$0$div$stages$19$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$19$neg_r
+
+
+module vector$lanes$0$div$stages$19$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$19$p_r
+
+
+module vector$lanes$0$div$stages$19$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$19$valid_r
+
+
+module vector$lanes$0$div$stages$19$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$19$x_r
+
+
+module vector$lanes$0$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$2$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$2$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$2$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$2$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$2$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$2
+
+
+module vector$lanes$0$div$stages$2$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$2$d_r
+
+
+module vector$lanes$0$div$stages$2$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$2$neg_r
+
+
+module vector$lanes$0$div$stages$2$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$2$p_r
+
+
+module vector$lanes$0$div$stages$2$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$2$valid_r
+
+
+module vector$lanes$0$div$stages$2$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$2$x_r
+
+
+module vector$lanes$0$div$stages$20(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$20$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$20$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$20$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$20$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$20$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$20
+
+
+module vector$lanes$0$div$stages$20$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$20$d_r
+
+
+module vector$lanes$0$div$stages$20$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$20$neg_r
+
+
+module vector$lanes$0$div$stages$20$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$20$p_r
+
+
+module vector$lanes$0$div$stages$20$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$20$valid_r
+
+
+module vector$lanes$0$div$stages$20$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$20$x_r
+
+
+module vector$lanes$0$div$stages$21(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$21$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$21$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$21$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$21$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$21$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$21
+
+
+module vector$lanes$0$div$stages$21$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$21$d_r
+
+
+module vector$lanes$0$div$stages$21$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$21$neg_r
+
+
+module vector$lanes$0$div$stages$21$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$21$p_r
+
+
+module vector$lanes$0$div$stages$21$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$21$valid_r
+
+
+module vector$lanes$0$div$stages$21$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$21$x_r
+
+
+module vector$lanes$0$div$stages$22(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$22$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$22$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$22$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$22$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$22$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$22
+
+
+module vector$lanes$0$div$stages$22$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$22$d_r
+
+
+module vector$lanes$0$div$stages$22$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$22$neg_r
+
+
+module vector$lanes$0$div$stages$22$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$22$p_r
+
+
+module vector$lanes$0$div$stages$22$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$22$valid_r
+
+
+module vector$lanes$0$div$stages$22$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$22$x_r
+
+
+module vector$lanes$0$div$stages$23(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$23$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$23$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$23$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$23$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$23$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$23
+
+
+module vector$lanes$0$div$stages$23$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$23$d_r
+
+
+module vector$lanes$0$div$stages$23$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$23$neg_r
+
+
+module vector$lanes$0$div$stages$23$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$23$p_r
+
+
+module vector$lanes$0$div$stages$23$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$23$valid_r
+
+
+module vector$lanes$0$div$stages$23$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$23$x_r
+
+
+module vector$lanes$0$div$stages$24(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b1;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$24$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$24$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$24$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$24$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$24$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$24
+
+
+module vector$lanes$0$div$stages$24$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$24$d_r
+
+
+module vector$lanes$0$div$stages$24$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$24$neg_r
+
+
+module vector$lanes$0$div$stages$24$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$24$p_r
+
+
+module vector$lanes$0$div$stages$24$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$24$valid_r
+
+
+module vector$lanes$0$div$stages$24$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$24$x_r
+
+
+module vector$lanes$0$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$3$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$3$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$3$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$3$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$3$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$3
+
+
+module vector$lanes$0$div$stages$3$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$3$d_r
+
+
+module vector$lanes$0$div$stages$3$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$3$neg_r
+
+
+module vector$lanes$0$div$stages$3$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$3$p_r
+
+
+module vector$lanes$0$div$stages$3$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$3$valid_r
+
+
+module vector$lanes$0$div$stages$3$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$3$x_r
+
+
+module vector$lanes$0$div$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$4$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$4$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$4$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$4$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$4$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$4
+
+
+module vector$lanes$0$div$stages$4$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$4$d_r
+
+
+module vector$lanes$0$div$stages$4$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$4$neg_r
+
+
+module vector$lanes$0$div$stages$4$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$4$p_r
+
+
+module vector$lanes$0$div$stages$4$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$4$valid_r
+
+
+module vector$lanes$0$div$stages$4$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$4$x_r
+
+
+module vector$lanes$0$div$stages$5(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$5$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$5$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$5$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$5$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$5$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$5
+
+
+module vector$lanes$0$div$stages$5$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$5$d_r
+
+
+module vector$lanes$0$div$stages$5$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$5$neg_r
+
+
+module vector$lanes$0$div$stages$5$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$5$p_r
+
+
+module vector$lanes$0$div$stages$5$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$5$valid_r
+
+
+module vector$lanes$0$div$stages$5$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$5$x_r
+
+
+module vector$lanes$0$div$stages$6(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$6$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$6$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$6$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$6$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$6$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$6
+
+
+module vector$lanes$0$div$stages$6$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$6$d_r
+
+
+module vector$lanes$0$div$stages$6$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$6$neg_r
+
+
+module vector$lanes$0$div$stages$6$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$6$p_r
+
+
+module vector$lanes$0$div$stages$6$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$6$valid_r
+
+
+module vector$lanes$0$div$stages$6$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$6$x_r
+
+
+module vector$lanes$0$div$stages$7(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$7$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$7$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$7$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$7$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$7$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$7
+
+
+module vector$lanes$0$div$stages$7$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$7$d_r
+
+
+module vector$lanes$0$div$stages$7$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$7$neg_r
+
+
+module vector$lanes$0$div$stages$7$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$7$p_r
+
+
+module vector$lanes$0$div$stages$7$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$7$valid_r
+
+
+module vector$lanes$0$div$stages$7$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$7$x_r
+
+
+module vector$lanes$0$div$stages$8(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$8$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$8$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$8$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$8$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$8$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$8
+
+
+module vector$lanes$0$div$stages$8$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$8$d_r
+
+
+module vector$lanes$0$div$stages$8$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$8$neg_r
+
+
+module vector$lanes$0$div$stages$8$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$8$p_r
+
+
+module vector$lanes$0$div$stages$8$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$8$valid_r
+
+
+module vector$lanes$0$div$stages$8$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$8$x_r
+
+
+module vector$lanes$0$div$stages$9(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  enable;
+    input wire  valid_in;
+    input wire  [33:0] p_in;
+    input wire  [24:0] x_in;
+    input wire  [33:0] d_in;
+    input wire  neg_in;
+    output reg  valid;
+    output reg  [33:0] p;
+    output reg  [24:0] x;
+    output reg  [33:0] d;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  borrow = 8'h22;
+    localparam  x_msb = 8'h18;
+    localparam  fin = 1'b0;
+    
+    // Stub signals
+    reg  valid_r$d;
+    wire  valid_r$q;
+    reg  valid_r$clock;
+    reg  [33:0] p_r$d;
+    wire  [33:0] p_r$q;
+    reg  p_r$clock;
+    reg  [24:0] x_r$d;
+    wire  [24:0] x_r$q;
+    reg  x_r$clock;
+    reg  [33:0] d_r$d;
+    wire  [33:0] d_r$q;
+    reg  d_r$clock;
+    reg  neg_r$d;
+    wire  neg_r$q;
+    reg  neg_r$clock;
+    
+    // Local signals
+    reg  [34:0] tp$0;
+    reg  [34:0] tp$1;
+    reg  [24:0] tx$0;
+    reg  [24:0] tx$1;
+    reg  [34:0] t$0;
+    reg  [34:0] diff$0;
+    reg  [34:0] d1;
+    
+    // Sub module instances
+    vector$lanes$0$div$stages$9$valid_r valid_r(
+        .d(valid_r$d),
+        .q(valid_r$q),
+        .clock(valid_r$clock)
+    );
+    vector$lanes$0$div$stages$9$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$div$stages$9$x_r x_r(
+        .d(x_r$d),
+        .q(x_r$q),
+        .clock(x_r$clock)
+    );
+    vector$lanes$0$div$stages$9$d_r d_r(
+        .d(d_r$d),
+        .q(d_r$q),
+        .clock(d_r$clock)
+    );
+    vector$lanes$0$div$stages$9$neg_r neg_r(
+        .d(neg_r$d),
+        .q(neg_r$q),
+        .clock(neg_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid_r$clock = clock;
+        p_r$clock = clock;
+        x_r$clock = clock;
+        d_r$clock = clock;
+        neg_r$clock = clock;
+        valid_r$d = valid_r$q;
+        p_r$d = p_r$q;
+        x_r$d = x_r$q;
+        d_r$d = d_r$q;
+        neg_r$d = neg_r$q;
+        d1 = ((d_in) & 35'h7ffffffff);
+        tp$0 = ((p_in) & 35'h7ffffffff);
+        tx$0 = x_in;
+        t$0 = tp$0 << 32'h1;
+        if (tx$0[x_msb]) begin
+            t$0 = (tp$0 << 32'h1) | 32'h1;
+        end
+        diff$0 = t$0 - d1;
+        if (diff$0[borrow]) begin
+            tp$1 = t$0;
+            tx$1 = tx$0 << 32'h1;
+        end
+        else begin
+            tp$1 = diff$0;
+            tx$1 = (tx$0 << 32'h1) | 32'h1;
+        end
+        if (enable) begin
+            valid_r$d = valid_in;
+            p_r$d = tp$1[(32'h0)+:(34)];
+            x_r$d = tx$1;
+            if (fin & neg_in) begin
+                p_r$d = d_in - tp$1[(32'h0)+:(34)] - 32'h1;
+                x_r$d = ~tx$1;
+            end
+            d_r$d = d_in;
+            neg_r$d = neg_in;
+        end
+        valid = valid_r$q;
+        p = p_r$q;
+        x = x_r$q;
+        d = d_r$q;
+        neg = neg_r$q;
+    end
+    
+endmodule // vector$lanes$0$div$stages$9
+
+
+module vector$lanes$0$div$stages$9$d_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$9$d_r
+
+
+module vector$lanes$0$div$stages$9$neg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$9$neg_r
+
+
+module vector$lanes$0$div$stages$9$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$9$p_r
+
+
+module vector$lanes$0$div$stages$9$valid_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$9$valid_r
+
+
+module vector$lanes$0$div$stages$9$x_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div$stages$9$x_r
+
+
+module vector$lanes$0$div_d(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$div_d
+
+
+module vector$lanes$0$dtag_dl(clock,en,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    
+    // Stub signals
+    reg  [16:0] stages$0$d;
+    wire  [16:0] stages$0$q;
+    reg  stages$0$clock;
+    reg  [16:0] stages$1$d;
+    wire  [16:0] stages$1$q;
+    reg  stages$1$clock;
+    reg  [16:0] stages$2$d;
+    wire  [16:0] stages$2$q;
+    reg  stages$2$clock;
+    reg  [16:0] stages$3$d;
+    wire  [16:0] stages$3$q;
+    reg  stages$3$clock;
+    reg  [16:0] stages$4$d;
+    wire  [16:0] stages$4$q;
+    reg  stages$4$clock;
+    reg  [16:0] stages$5$d;
+    wire  [16:0] stages$5$q;
+    reg  stages$5$clock;
+    reg  [16:0] stages$6$d;
+    wire  [16:0] stages$6$q;
+    reg  stages$6$clock;
+    reg  [16:0] stages$7$d;
+    wire  [16:0] stages$7$q;
+    reg  stages$7$clock;
+    reg  [16:0] stages$8$d;
+    wire  [16:0] stages$8$q;
+    reg  stages$8$clock;
+    reg  [16:0] stages$9$d;
+    wire  [16:0] stages$9$q;
+    reg  stages$9$clock;
+    reg  [16:0] stages$10$d;
+    wire  [16:0] stages$10$q;
+    reg  stages$10$clock;
+    reg  [16:0] stages$11$d;
+    wire  [16:0] stages$11$q;
+    reg  stages$11$clock;
+    reg  [16:0] stages$12$d;
+    wire  [16:0] stages$12$q;
+    reg  stages$12$clock;
+    reg  [16:0] stages$13$d;
+    wire  [16:0] stages$13$q;
+    reg  stages$13$clock;
+    reg  [16:0] stages$14$d;
+    wire  [16:0] stages$14$q;
+    reg  stages$14$clock;
+    reg  [16:0] stages$15$d;
+    wire  [16:0] stages$15$q;
+    reg  stages$15$clock;
+    reg  [16:0] stages$16$d;
+    wire  [16:0] stages$16$q;
+    reg  stages$16$clock;
+    reg  [16:0] stages$17$d;
+    wire  [16:0] stages$17$q;
+    reg  stages$17$clock;
+    reg  [16:0] stages$18$d;
+    wire  [16:0] stages$18$q;
+    reg  stages$18$clock;
+    reg  [16:0] stages$19$d;
+    wire  [16:0] stages$19$q;
+    reg  stages$19$clock;
+    reg  [16:0] stages$20$d;
+    wire  [16:0] stages$20$q;
+    reg  stages$20$clock;
+    reg  [16:0] stages$21$d;
+    wire  [16:0] stages$21$q;
+    reg  stages$21$clock;
+    reg  [16:0] stages$22$d;
+    wire  [16:0] stages$22$q;
+    reg  stages$22$clock;
+    reg  [16:0] stages$23$d;
+    wire  [16:0] stages$23$q;
+    reg  stages$23$clock;
+    reg  [16:0] stages$24$d;
+    wire  [16:0] stages$24$q;
+    reg  stages$24$clock;
+    reg  [16:0] stages$25$d;
+    wire  [16:0] stages$25$q;
+    reg  stages$25$clock;
+    reg  [16:0] stages$26$d;
+    wire  [16:0] stages$26$q;
+    reg  stages$26$clock;
+    reg  [16:0] stages$27$d;
+    wire  [16:0] stages$27$q;
+    reg  stages$27$clock;
+    reg  [16:0] stages$28$d;
+    wire  [16:0] stages$28$q;
+    reg  stages$28$clock;
+    reg  [16:0] stages$29$d;
+    wire  [16:0] stages$29$q;
+    reg  stages$29$clock;
+    reg  [16:0] stages$30$d;
+    wire  [16:0] stages$30$q;
+    reg  stages$30$clock;
+    reg  [16:0] stages$31$d;
+    wire  [16:0] stages$31$q;
+    reg  stages$31$clock;
+    reg  [16:0] stages$32$d;
+    wire  [16:0] stages$32$q;
+    reg  stages$32$clock;
+    reg  [16:0] stages$33$d;
+    wire  [16:0] stages$33$q;
+    reg  stages$33$clock;
+    
+    // Sub module instances
+    vector$lanes$0$dtag_dl$stages$0 stages$0(
+        .d(stages$0$d),
+        .q(stages$0$q),
+        .clock(stages$0$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$1 stages$1(
+        .d(stages$1$d),
+        .q(stages$1$q),
+        .clock(stages$1$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$2 stages$2(
+        .d(stages$2$d),
+        .q(stages$2$q),
+        .clock(stages$2$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$3 stages$3(
+        .d(stages$3$d),
+        .q(stages$3$q),
+        .clock(stages$3$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$4 stages$4(
+        .d(stages$4$d),
+        .q(stages$4$q),
+        .clock(stages$4$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$5 stages$5(
+        .d(stages$5$d),
+        .q(stages$5$q),
+        .clock(stages$5$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$6 stages$6(
+        .d(stages$6$d),
+        .q(stages$6$q),
+        .clock(stages$6$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$7 stages$7(
+        .d(stages$7$d),
+        .q(stages$7$q),
+        .clock(stages$7$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$8 stages$8(
+        .d(stages$8$d),
+        .q(stages$8$q),
+        .clock(stages$8$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$9 stages$9(
+        .d(stages$9$d),
+        .q(stages$9$q),
+        .clock(stages$9$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$10 stages$10(
+        .d(stages$10$d),
+        .q(stages$10$q),
+        .clock(stages$10$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$11 stages$11(
+        .d(stages$11$d),
+        .q(stages$11$q),
+        .clock(stages$11$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$12 stages$12(
+        .d(stages$12$d),
+        .q(stages$12$q),
+        .clock(stages$12$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$13 stages$13(
+        .d(stages$13$d),
+        .q(stages$13$q),
+        .clock(stages$13$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$14 stages$14(
+        .d(stages$14$d),
+        .q(stages$14$q),
+        .clock(stages$14$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$15 stages$15(
+        .d(stages$15$d),
+        .q(stages$15$q),
+        .clock(stages$15$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$16 stages$16(
+        .d(stages$16$d),
+        .q(stages$16$q),
+        .clock(stages$16$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$17 stages$17(
+        .d(stages$17$d),
+        .q(stages$17$q),
+        .clock(stages$17$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$18 stages$18(
+        .d(stages$18$d),
+        .q(stages$18$q),
+        .clock(stages$18$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$19 stages$19(
+        .d(stages$19$d),
+        .q(stages$19$q),
+        .clock(stages$19$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$20 stages$20(
+        .d(stages$20$d),
+        .q(stages$20$q),
+        .clock(stages$20$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$21 stages$21(
+        .d(stages$21$d),
+        .q(stages$21$q),
+        .clock(stages$21$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$22 stages$22(
+        .d(stages$22$d),
+        .q(stages$22$q),
+        .clock(stages$22$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$23 stages$23(
+        .d(stages$23$d),
+        .q(stages$23$q),
+        .clock(stages$23$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$24 stages$24(
+        .d(stages$24$d),
+        .q(stages$24$q),
+        .clock(stages$24$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$25 stages$25(
+        .d(stages$25$d),
+        .q(stages$25$q),
+        .clock(stages$25$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$26 stages$26(
+        .d(stages$26$d),
+        .q(stages$26$q),
+        .clock(stages$26$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$27 stages$27(
+        .d(stages$27$d),
+        .q(stages$27$q),
+        .clock(stages$27$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$28 stages$28(
+        .d(stages$28$d),
+        .q(stages$28$q),
+        .clock(stages$28$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$29 stages$29(
+        .d(stages$29$d),
+        .q(stages$29$q),
+        .clock(stages$29$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$30 stages$30(
+        .d(stages$30$d),
+        .q(stages$30$q),
+        .clock(stages$30$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$31 stages$31(
+        .d(stages$31$d),
+        .q(stages$31$q),
+        .clock(stages$31$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$32 stages$32(
+        .d(stages$32$d),
+        .q(stages$32$q),
+        .clock(stages$32$clock)
+    );
+    vector$lanes$0$dtag_dl$stages$33 stages$33(
+        .d(stages$33$d),
+        .q(stages$33$q),
+        .clock(stages$33$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        stages$0$clock = clock;
+        stages$0$d = stages$0$q;
+        stages$1$clock = clock;
+        stages$1$d = stages$1$q;
+        stages$2$clock = clock;
+        stages$2$d = stages$2$q;
+        stages$3$clock = clock;
+        stages$3$d = stages$3$q;
+        stages$4$clock = clock;
+        stages$4$d = stages$4$q;
+        stages$5$clock = clock;
+        stages$5$d = stages$5$q;
+        stages$6$clock = clock;
+        stages$6$d = stages$6$q;
+        stages$7$clock = clock;
+        stages$7$d = stages$7$q;
+        stages$8$clock = clock;
+        stages$8$d = stages$8$q;
+        stages$9$clock = clock;
+        stages$9$d = stages$9$q;
+        stages$10$clock = clock;
+        stages$10$d = stages$10$q;
+        stages$11$clock = clock;
+        stages$11$d = stages$11$q;
+        stages$12$clock = clock;
+        stages$12$d = stages$12$q;
+        stages$13$clock = clock;
+        stages$13$d = stages$13$q;
+        stages$14$clock = clock;
+        stages$14$d = stages$14$q;
+        stages$15$clock = clock;
+        stages$15$d = stages$15$q;
+        stages$16$clock = clock;
+        stages$16$d = stages$16$q;
+        stages$17$clock = clock;
+        stages$17$d = stages$17$q;
+        stages$18$clock = clock;
+        stages$18$d = stages$18$q;
+        stages$19$clock = clock;
+        stages$19$d = stages$19$q;
+        stages$20$clock = clock;
+        stages$20$d = stages$20$q;
+        stages$21$clock = clock;
+        stages$21$d = stages$21$q;
+        stages$22$clock = clock;
+        stages$22$d = stages$22$q;
+        stages$23$clock = clock;
+        stages$23$d = stages$23$q;
+        stages$24$clock = clock;
+        stages$24$d = stages$24$q;
+        stages$25$clock = clock;
+        stages$25$d = stages$25$q;
+        stages$26$clock = clock;
+        stages$26$d = stages$26$q;
+        stages$27$clock = clock;
+        stages$27$d = stages$27$q;
+        stages$28$clock = clock;
+        stages$28$d = stages$28$q;
+        stages$29$clock = clock;
+        stages$29$d = stages$29$q;
+        stages$30$clock = clock;
+        stages$30$d = stages$30$q;
+        stages$31$clock = clock;
+        stages$31$d = stages$31$q;
+        stages$32$clock = clock;
+        stages$32$d = stages$32$q;
+        stages$33$clock = clock;
+        stages$33$d = stages$33$q;
+        if (en) begin
+            stages$0$d = d;
+            stages$1$d = stages$0$q;
+            stages$2$d = stages$1$q;
+            stages$3$d = stages$2$q;
+            stages$4$d = stages$3$q;
+            stages$5$d = stages$4$q;
+            stages$6$d = stages$5$q;
+            stages$7$d = stages$6$q;
+            stages$8$d = stages$7$q;
+            stages$9$d = stages$8$q;
+            stages$10$d = stages$9$q;
+            stages$11$d = stages$10$q;
+            stages$12$d = stages$11$q;
+            stages$13$d = stages$12$q;
+            stages$14$d = stages$13$q;
+            stages$15$d = stages$14$q;
+            stages$16$d = stages$15$q;
+            stages$17$d = stages$16$q;
+            stages$18$d = stages$17$q;
+            stages$19$d = stages$18$q;
+            stages$20$d = stages$19$q;
+            stages$21$d = stages$20$q;
+            stages$22$d = stages$21$q;
+            stages$23$d = stages$22$q;
+            stages$24$d = stages$23$q;
+            stages$25$d = stages$24$q;
+            stages$26$d = stages$25$q;
+            stages$27$d = stages$26$q;
+            stages$28$d = stages$27$q;
+            stages$29$d = stages$28$q;
+            stages$30$d = stages$29$q;
+            stages$31$d = stages$30$q;
+            stages$32$d = stages$31$q;
+            stages$33$d = stages$32$q;
+        end
+        q = stages$33$q;
+    end
+    
+endmodule // vector$lanes$0$dtag_dl
+
+
+module vector$lanes$0$dtag_dl$stages$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$0
+
+
+module vector$lanes$0$dtag_dl$stages$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$1
+
+
+module vector$lanes$0$dtag_dl$stages$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$10
+
+
+module vector$lanes$0$dtag_dl$stages$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$11
+
+
+module vector$lanes$0$dtag_dl$stages$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$12
+
+
+module vector$lanes$0$dtag_dl$stages$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$13
+
+
+module vector$lanes$0$dtag_dl$stages$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$14
+
+
+module vector$lanes$0$dtag_dl$stages$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$15
+
+
+module vector$lanes$0$dtag_dl$stages$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$16
+
+
+module vector$lanes$0$dtag_dl$stages$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$17
+
+
+module vector$lanes$0$dtag_dl$stages$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$18
+
+
+module vector$lanes$0$dtag_dl$stages$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$19
+
+
+module vector$lanes$0$dtag_dl$stages$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$2
+
+
+module vector$lanes$0$dtag_dl$stages$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$20
+
+
+module vector$lanes$0$dtag_dl$stages$21(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$21
+
+
+module vector$lanes$0$dtag_dl$stages$22(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$22
+
+
+module vector$lanes$0$dtag_dl$stages$23(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$23
+
+
+module vector$lanes$0$dtag_dl$stages$24(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$24
+
+
+module vector$lanes$0$dtag_dl$stages$25(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$25
+
+
+module vector$lanes$0$dtag_dl$stages$26(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$26
+
+
+module vector$lanes$0$dtag_dl$stages$27(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$27
+
+
+module vector$lanes$0$dtag_dl$stages$28(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$28
+
+
+module vector$lanes$0$dtag_dl$stages$29(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$29
+
+
+module vector$lanes$0$dtag_dl$stages$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$3
+
+
+module vector$lanes$0$dtag_dl$stages$30(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$30
+
+
+module vector$lanes$0$dtag_dl$stages$31(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$31
+
+
+module vector$lanes$0$dtag_dl$stages$32(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$32
+
+
+module vector$lanes$0$dtag_dl$stages$33(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$33
+
+
+module vector$lanes$0$dtag_dl$stages$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$4
+
+
+module vector$lanes$0$dtag_dl$stages$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$5
+
+
+module vector$lanes$0$dtag_dl$stages$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$6
+
+
+module vector$lanes$0$dtag_dl$stages$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$7
+
+
+module vector$lanes$0$dtag_dl$stages$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$8
+
+
+module vector$lanes$0$dtag_dl$stages$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$dtag_dl$stages$9
+
+
+module vector$lanes$0$eq$0(x,y);
+    
+    // Module arguments
+    input wire  [27:0] x;
+    output reg  [29:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h1b;
+    localparam  ext = 30'h30000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 30'h3fffffff);
+        if (x[msb]) begin
+            y = ((x) & 30'h3fffffff) | ext;
+        end
+    end
+    
+endmodule // vector$lanes$0$eq$0
+
+
+module vector$lanes$0$eq$1(x,y);
+    
+    // Module arguments
+    input wire  [27:0] x;
+    output reg  [29:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h1b;
+    localparam  ext = 30'h30000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 30'h3fffffff);
+        if (x[msb]) begin
+            y = ((x) & 30'h3fffffff) | ext;
+        end
+    end
+    
+endmodule // vector$lanes$0$eq$1
+
+
+module vector$lanes$0$eq$2(x,y);
+    
+    // Module arguments
+    input wire  [27:0] x;
+    output reg  [29:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h1b;
+    localparam  ext = 30'h30000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 30'h3fffffff);
+        if (x[msb]) begin
+            y = ((x) & 30'h3fffffff) | ext;
+        end
+    end
+    
+endmodule // vector$lanes$0$eq$2
+
+
+module vector$lanes$0$exp8(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp8
+
+
+module vector$lanes$0$exp_dl(clock,en,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    
+    // Stub signals
+    reg  [7:0] stages$0$d;
+    wire  [7:0] stages$0$q;
+    reg  stages$0$clock;
+    reg  [7:0] stages$1$d;
+    wire  [7:0] stages$1$q;
+    reg  stages$1$clock;
+    reg  [7:0] stages$2$d;
+    wire  [7:0] stages$2$q;
+    reg  stages$2$clock;
+    reg  [7:0] stages$3$d;
+    wire  [7:0] stages$3$q;
+    reg  stages$3$clock;
+    reg  [7:0] stages$4$d;
+    wire  [7:0] stages$4$q;
+    reg  stages$4$clock;
+    reg  [7:0] stages$5$d;
+    wire  [7:0] stages$5$q;
+    reg  stages$5$clock;
+    reg  [7:0] stages$6$d;
+    wire  [7:0] stages$6$q;
+    reg  stages$6$clock;
+    reg  [7:0] stages$7$d;
+    wire  [7:0] stages$7$q;
+    reg  stages$7$clock;
+    reg  [7:0] stages$8$d;
+    wire  [7:0] stages$8$q;
+    reg  stages$8$clock;
+    reg  [7:0] stages$9$d;
+    wire  [7:0] stages$9$q;
+    reg  stages$9$clock;
+    reg  [7:0] stages$10$d;
+    wire  [7:0] stages$10$q;
+    reg  stages$10$clock;
+    reg  [7:0] stages$11$d;
+    wire  [7:0] stages$11$q;
+    reg  stages$11$clock;
+    reg  [7:0] stages$12$d;
+    wire  [7:0] stages$12$q;
+    reg  stages$12$clock;
+    reg  [7:0] stages$13$d;
+    wire  [7:0] stages$13$q;
+    reg  stages$13$clock;
+    reg  [7:0] stages$14$d;
+    wire  [7:0] stages$14$q;
+    reg  stages$14$clock;
+    reg  [7:0] stages$15$d;
+    wire  [7:0] stages$15$q;
+    reg  stages$15$clock;
+    reg  [7:0] stages$16$d;
+    wire  [7:0] stages$16$q;
+    reg  stages$16$clock;
+    reg  [7:0] stages$17$d;
+    wire  [7:0] stages$17$q;
+    reg  stages$17$clock;
+    reg  [7:0] stages$18$d;
+    wire  [7:0] stages$18$q;
+    reg  stages$18$clock;
+    reg  [7:0] stages$19$d;
+    wire  [7:0] stages$19$q;
+    reg  stages$19$clock;
+    reg  [7:0] stages$20$d;
+    wire  [7:0] stages$20$q;
+    reg  stages$20$clock;
+    reg  [7:0] stages$21$d;
+    wire  [7:0] stages$21$q;
+    reg  stages$21$clock;
+    reg  [7:0] stages$22$d;
+    wire  [7:0] stages$22$q;
+    reg  stages$22$clock;
+    reg  [7:0] stages$23$d;
+    wire  [7:0] stages$23$q;
+    reg  stages$23$clock;
+    reg  [7:0] stages$24$d;
+    wire  [7:0] stages$24$q;
+    reg  stages$24$clock;
+    reg  [7:0] stages$25$d;
+    wire  [7:0] stages$25$q;
+    reg  stages$25$clock;
+    reg  [7:0] stages$26$d;
+    wire  [7:0] stages$26$q;
+    reg  stages$26$clock;
+    reg  [7:0] stages$27$d;
+    wire  [7:0] stages$27$q;
+    reg  stages$27$clock;
+    
+    // Sub module instances
+    vector$lanes$0$exp_dl$stages$0 stages$0(
+        .d(stages$0$d),
+        .q(stages$0$q),
+        .clock(stages$0$clock)
+    );
+    vector$lanes$0$exp_dl$stages$1 stages$1(
+        .d(stages$1$d),
+        .q(stages$1$q),
+        .clock(stages$1$clock)
+    );
+    vector$lanes$0$exp_dl$stages$2 stages$2(
+        .d(stages$2$d),
+        .q(stages$2$q),
+        .clock(stages$2$clock)
+    );
+    vector$lanes$0$exp_dl$stages$3 stages$3(
+        .d(stages$3$d),
+        .q(stages$3$q),
+        .clock(stages$3$clock)
+    );
+    vector$lanes$0$exp_dl$stages$4 stages$4(
+        .d(stages$4$d),
+        .q(stages$4$q),
+        .clock(stages$4$clock)
+    );
+    vector$lanes$0$exp_dl$stages$5 stages$5(
+        .d(stages$5$d),
+        .q(stages$5$q),
+        .clock(stages$5$clock)
+    );
+    vector$lanes$0$exp_dl$stages$6 stages$6(
+        .d(stages$6$d),
+        .q(stages$6$q),
+        .clock(stages$6$clock)
+    );
+    vector$lanes$0$exp_dl$stages$7 stages$7(
+        .d(stages$7$d),
+        .q(stages$7$q),
+        .clock(stages$7$clock)
+    );
+    vector$lanes$0$exp_dl$stages$8 stages$8(
+        .d(stages$8$d),
+        .q(stages$8$q),
+        .clock(stages$8$clock)
+    );
+    vector$lanes$0$exp_dl$stages$9 stages$9(
+        .d(stages$9$d),
+        .q(stages$9$q),
+        .clock(stages$9$clock)
+    );
+    vector$lanes$0$exp_dl$stages$10 stages$10(
+        .d(stages$10$d),
+        .q(stages$10$q),
+        .clock(stages$10$clock)
+    );
+    vector$lanes$0$exp_dl$stages$11 stages$11(
+        .d(stages$11$d),
+        .q(stages$11$q),
+        .clock(stages$11$clock)
+    );
+    vector$lanes$0$exp_dl$stages$12 stages$12(
+        .d(stages$12$d),
+        .q(stages$12$q),
+        .clock(stages$12$clock)
+    );
+    vector$lanes$0$exp_dl$stages$13 stages$13(
+        .d(stages$13$d),
+        .q(stages$13$q),
+        .clock(stages$13$clock)
+    );
+    vector$lanes$0$exp_dl$stages$14 stages$14(
+        .d(stages$14$d),
+        .q(stages$14$q),
+        .clock(stages$14$clock)
+    );
+    vector$lanes$0$exp_dl$stages$15 stages$15(
+        .d(stages$15$d),
+        .q(stages$15$q),
+        .clock(stages$15$clock)
+    );
+    vector$lanes$0$exp_dl$stages$16 stages$16(
+        .d(stages$16$d),
+        .q(stages$16$q),
+        .clock(stages$16$clock)
+    );
+    vector$lanes$0$exp_dl$stages$17 stages$17(
+        .d(stages$17$d),
+        .q(stages$17$q),
+        .clock(stages$17$clock)
+    );
+    vector$lanes$0$exp_dl$stages$18 stages$18(
+        .d(stages$18$d),
+        .q(stages$18$q),
+        .clock(stages$18$clock)
+    );
+    vector$lanes$0$exp_dl$stages$19 stages$19(
+        .d(stages$19$d),
+        .q(stages$19$q),
+        .clock(stages$19$clock)
+    );
+    vector$lanes$0$exp_dl$stages$20 stages$20(
+        .d(stages$20$d),
+        .q(stages$20$q),
+        .clock(stages$20$clock)
+    );
+    vector$lanes$0$exp_dl$stages$21 stages$21(
+        .d(stages$21$d),
+        .q(stages$21$q),
+        .clock(stages$21$clock)
+    );
+    vector$lanes$0$exp_dl$stages$22 stages$22(
+        .d(stages$22$d),
+        .q(stages$22$q),
+        .clock(stages$22$clock)
+    );
+    vector$lanes$0$exp_dl$stages$23 stages$23(
+        .d(stages$23$d),
+        .q(stages$23$q),
+        .clock(stages$23$clock)
+    );
+    vector$lanes$0$exp_dl$stages$24 stages$24(
+        .d(stages$24$d),
+        .q(stages$24$q),
+        .clock(stages$24$clock)
+    );
+    vector$lanes$0$exp_dl$stages$25 stages$25(
+        .d(stages$25$d),
+        .q(stages$25$q),
+        .clock(stages$25$clock)
+    );
+    vector$lanes$0$exp_dl$stages$26 stages$26(
+        .d(stages$26$d),
+        .q(stages$26$q),
+        .clock(stages$26$clock)
+    );
+    vector$lanes$0$exp_dl$stages$27 stages$27(
+        .d(stages$27$d),
+        .q(stages$27$q),
+        .clock(stages$27$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        stages$0$clock = clock;
+        stages$0$d = stages$0$q;
+        stages$1$clock = clock;
+        stages$1$d = stages$1$q;
+        stages$2$clock = clock;
+        stages$2$d = stages$2$q;
+        stages$3$clock = clock;
+        stages$3$d = stages$3$q;
+        stages$4$clock = clock;
+        stages$4$d = stages$4$q;
+        stages$5$clock = clock;
+        stages$5$d = stages$5$q;
+        stages$6$clock = clock;
+        stages$6$d = stages$6$q;
+        stages$7$clock = clock;
+        stages$7$d = stages$7$q;
+        stages$8$clock = clock;
+        stages$8$d = stages$8$q;
+        stages$9$clock = clock;
+        stages$9$d = stages$9$q;
+        stages$10$clock = clock;
+        stages$10$d = stages$10$q;
+        stages$11$clock = clock;
+        stages$11$d = stages$11$q;
+        stages$12$clock = clock;
+        stages$12$d = stages$12$q;
+        stages$13$clock = clock;
+        stages$13$d = stages$13$q;
+        stages$14$clock = clock;
+        stages$14$d = stages$14$q;
+        stages$15$clock = clock;
+        stages$15$d = stages$15$q;
+        stages$16$clock = clock;
+        stages$16$d = stages$16$q;
+        stages$17$clock = clock;
+        stages$17$d = stages$17$q;
+        stages$18$clock = clock;
+        stages$18$d = stages$18$q;
+        stages$19$clock = clock;
+        stages$19$d = stages$19$q;
+        stages$20$clock = clock;
+        stages$20$d = stages$20$q;
+        stages$21$clock = clock;
+        stages$21$d = stages$21$q;
+        stages$22$clock = clock;
+        stages$22$d = stages$22$q;
+        stages$23$clock = clock;
+        stages$23$d = stages$23$q;
+        stages$24$clock = clock;
+        stages$24$d = stages$24$q;
+        stages$25$clock = clock;
+        stages$25$d = stages$25$q;
+        stages$26$clock = clock;
+        stages$26$d = stages$26$q;
+        stages$27$clock = clock;
+        stages$27$d = stages$27$q;
+        if (en) begin
+            stages$0$d = d;
+            stages$1$d = stages$0$q;
+            stages$2$d = stages$1$q;
+            stages$3$d = stages$2$q;
+            stages$4$d = stages$3$q;
+            stages$5$d = stages$4$q;
+            stages$6$d = stages$5$q;
+            stages$7$d = stages$6$q;
+            stages$8$d = stages$7$q;
+            stages$9$d = stages$8$q;
+            stages$10$d = stages$9$q;
+            stages$11$d = stages$10$q;
+            stages$12$d = stages$11$q;
+            stages$13$d = stages$12$q;
+            stages$14$d = stages$13$q;
+            stages$15$d = stages$14$q;
+            stages$16$d = stages$15$q;
+            stages$17$d = stages$16$q;
+            stages$18$d = stages$17$q;
+            stages$19$d = stages$18$q;
+            stages$20$d = stages$19$q;
+            stages$21$d = stages$20$q;
+            stages$22$d = stages$21$q;
+            stages$23$d = stages$22$q;
+            stages$24$d = stages$23$q;
+            stages$25$d = stages$24$q;
+            stages$26$d = stages$25$q;
+            stages$27$d = stages$26$q;
+        end
+        q = stages$27$q;
+    end
+    
+endmodule // vector$lanes$0$exp_dl
+
+
+module vector$lanes$0$exp_dl$stages$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$0
+
+
+module vector$lanes$0$exp_dl$stages$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$1
+
+
+module vector$lanes$0$exp_dl$stages$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$10
+
+
+module vector$lanes$0$exp_dl$stages$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$11
+
+
+module vector$lanes$0$exp_dl$stages$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$12
+
+
+module vector$lanes$0$exp_dl$stages$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$13
+
+
+module vector$lanes$0$exp_dl$stages$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$14
+
+
+module vector$lanes$0$exp_dl$stages$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$15
+
+
+module vector$lanes$0$exp_dl$stages$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$16
+
+
+module vector$lanes$0$exp_dl$stages$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$17
+
+
+module vector$lanes$0$exp_dl$stages$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$18
+
+
+module vector$lanes$0$exp_dl$stages$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$19
+
+
+module vector$lanes$0$exp_dl$stages$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$2
+
+
+module vector$lanes$0$exp_dl$stages$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$20
+
+
+module vector$lanes$0$exp_dl$stages$21(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$21
+
+
+module vector$lanes$0$exp_dl$stages$22(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$22
+
+
+module vector$lanes$0$exp_dl$stages$23(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$23
+
+
+module vector$lanes$0$exp_dl$stages$24(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$24
+
+
+module vector$lanes$0$exp_dl$stages$25(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$25
+
+
+module vector$lanes$0$exp_dl$stages$26(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$26
+
+
+module vector$lanes$0$exp_dl$stages$27(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$27
+
+
+module vector$lanes$0$exp_dl$stages$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$3
+
+
+module vector$lanes$0$exp_dl$stages$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$4
+
+
+module vector$lanes$0$exp_dl$stages$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$5
+
+
+module vector$lanes$0$exp_dl$stages$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$6
+
+
+module vector$lanes$0$exp_dl$stages$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$7
+
+
+module vector$lanes$0$exp_dl$stages$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$8
+
+
+module vector$lanes$0$exp_dl$stages$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$exp_dl$stages$9
+
+
+module vector$lanes$0$ez0(x,y);
+    
+    // Module arguments
+    input wire  [17:0] x;
+    output reg  [18:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h11;
+    localparam  ext = 19'b1000000000000000000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 19'h7ffff);
+        if (x[msb]) begin
+            y = ((x) & 19'h7ffff) | ext;
+        end
+    end
+    
+endmodule // vector$lanes$0$ez0
+
+
+module vector$lanes$0$hit_dl(clock,en,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  d;
+    output reg  q;
+    
+    // Stub signals
+    reg  stages$0$d;
+    wire  stages$0$q;
+    reg  stages$0$clock;
+    reg  stages$1$d;
+    wire  stages$1$q;
+    reg  stages$1$clock;
+    reg  stages$2$d;
+    wire  stages$2$q;
+    reg  stages$2$clock;
+    reg  stages$3$d;
+    wire  stages$3$q;
+    reg  stages$3$clock;
+    reg  stages$4$d;
+    wire  stages$4$q;
+    reg  stages$4$clock;
+    reg  stages$5$d;
+    wire  stages$5$q;
+    reg  stages$5$clock;
+    reg  stages$6$d;
+    wire  stages$6$q;
+    reg  stages$6$clock;
+    reg  stages$7$d;
+    wire  stages$7$q;
+    reg  stages$7$clock;
+    reg  stages$8$d;
+    wire  stages$8$q;
+    reg  stages$8$clock;
+    reg  stages$9$d;
+    wire  stages$9$q;
+    reg  stages$9$clock;
+    reg  stages$10$d;
+    wire  stages$10$q;
+    reg  stages$10$clock;
+    reg  stages$11$d;
+    wire  stages$11$q;
+    reg  stages$11$clock;
+    reg  stages$12$d;
+    wire  stages$12$q;
+    reg  stages$12$clock;
+    reg  stages$13$d;
+    wire  stages$13$q;
+    reg  stages$13$clock;
+    reg  stages$14$d;
+    wire  stages$14$q;
+    reg  stages$14$clock;
+    reg  stages$15$d;
+    wire  stages$15$q;
+    reg  stages$15$clock;
+    reg  stages$16$d;
+    wire  stages$16$q;
+    reg  stages$16$clock;
+    reg  stages$17$d;
+    wire  stages$17$q;
+    reg  stages$17$clock;
+    reg  stages$18$d;
+    wire  stages$18$q;
+    reg  stages$18$clock;
+    reg  stages$19$d;
+    wire  stages$19$q;
+    reg  stages$19$clock;
+    reg  stages$20$d;
+    wire  stages$20$q;
+    reg  stages$20$clock;
+    reg  stages$21$d;
+    wire  stages$21$q;
+    reg  stages$21$clock;
+    reg  stages$22$d;
+    wire  stages$22$q;
+    reg  stages$22$clock;
+    reg  stages$23$d;
+    wire  stages$23$q;
+    reg  stages$23$clock;
+    reg  stages$24$d;
+    wire  stages$24$q;
+    reg  stages$24$clock;
+    reg  stages$25$d;
+    wire  stages$25$q;
+    reg  stages$25$clock;
+    reg  stages$26$d;
+    wire  stages$26$q;
+    reg  stages$26$clock;
+    reg  stages$27$d;
+    wire  stages$27$q;
+    reg  stages$27$clock;
+    reg  stages$28$d;
+    wire  stages$28$q;
+    reg  stages$28$clock;
+    reg  stages$29$d;
+    wire  stages$29$q;
+    reg  stages$29$clock;
+    reg  stages$30$d;
+    wire  stages$30$q;
+    reg  stages$30$clock;
+    reg  stages$31$d;
+    wire  stages$31$q;
+    reg  stages$31$clock;
+    reg  stages$32$d;
+    wire  stages$32$q;
+    reg  stages$32$clock;
+    reg  stages$33$d;
+    wire  stages$33$q;
+    reg  stages$33$clock;
+    reg  stages$34$d;
+    wire  stages$34$q;
+    reg  stages$34$clock;
+    reg  stages$35$d;
+    wire  stages$35$q;
+    reg  stages$35$clock;
+    reg  stages$36$d;
+    wire  stages$36$q;
+    reg  stages$36$clock;
+    reg  stages$37$d;
+    wire  stages$37$q;
+    reg  stages$37$clock;
+    reg  stages$38$d;
+    wire  stages$38$q;
+    reg  stages$38$clock;
+    reg  stages$39$d;
+    wire  stages$39$q;
+    reg  stages$39$clock;
+    
+    // Sub module instances
+    vector$lanes$0$hit_dl$stages$0 stages$0(
+        .d(stages$0$d),
+        .q(stages$0$q),
+        .clock(stages$0$clock)
+    );
+    vector$lanes$0$hit_dl$stages$1 stages$1(
+        .d(stages$1$d),
+        .q(stages$1$q),
+        .clock(stages$1$clock)
+    );
+    vector$lanes$0$hit_dl$stages$2 stages$2(
+        .d(stages$2$d),
+        .q(stages$2$q),
+        .clock(stages$2$clock)
+    );
+    vector$lanes$0$hit_dl$stages$3 stages$3(
+        .d(stages$3$d),
+        .q(stages$3$q),
+        .clock(stages$3$clock)
+    );
+    vector$lanes$0$hit_dl$stages$4 stages$4(
+        .d(stages$4$d),
+        .q(stages$4$q),
+        .clock(stages$4$clock)
+    );
+    vector$lanes$0$hit_dl$stages$5 stages$5(
+        .d(stages$5$d),
+        .q(stages$5$q),
+        .clock(stages$5$clock)
+    );
+    vector$lanes$0$hit_dl$stages$6 stages$6(
+        .d(stages$6$d),
+        .q(stages$6$q),
+        .clock(stages$6$clock)
+    );
+    vector$lanes$0$hit_dl$stages$7 stages$7(
+        .d(stages$7$d),
+        .q(stages$7$q),
+        .clock(stages$7$clock)
+    );
+    vector$lanes$0$hit_dl$stages$8 stages$8(
+        .d(stages$8$d),
+        .q(stages$8$q),
+        .clock(stages$8$clock)
+    );
+    vector$lanes$0$hit_dl$stages$9 stages$9(
+        .d(stages$9$d),
+        .q(stages$9$q),
+        .clock(stages$9$clock)
+    );
+    vector$lanes$0$hit_dl$stages$10 stages$10(
+        .d(stages$10$d),
+        .q(stages$10$q),
+        .clock(stages$10$clock)
+    );
+    vector$lanes$0$hit_dl$stages$11 stages$11(
+        .d(stages$11$d),
+        .q(stages$11$q),
+        .clock(stages$11$clock)
+    );
+    vector$lanes$0$hit_dl$stages$12 stages$12(
+        .d(stages$12$d),
+        .q(stages$12$q),
+        .clock(stages$12$clock)
+    );
+    vector$lanes$0$hit_dl$stages$13 stages$13(
+        .d(stages$13$d),
+        .q(stages$13$q),
+        .clock(stages$13$clock)
+    );
+    vector$lanes$0$hit_dl$stages$14 stages$14(
+        .d(stages$14$d),
+        .q(stages$14$q),
+        .clock(stages$14$clock)
+    );
+    vector$lanes$0$hit_dl$stages$15 stages$15(
+        .d(stages$15$d),
+        .q(stages$15$q),
+        .clock(stages$15$clock)
+    );
+    vector$lanes$0$hit_dl$stages$16 stages$16(
+        .d(stages$16$d),
+        .q(stages$16$q),
+        .clock(stages$16$clock)
+    );
+    vector$lanes$0$hit_dl$stages$17 stages$17(
+        .d(stages$17$d),
+        .q(stages$17$q),
+        .clock(stages$17$clock)
+    );
+    vector$lanes$0$hit_dl$stages$18 stages$18(
+        .d(stages$18$d),
+        .q(stages$18$q),
+        .clock(stages$18$clock)
+    );
+    vector$lanes$0$hit_dl$stages$19 stages$19(
+        .d(stages$19$d),
+        .q(stages$19$q),
+        .clock(stages$19$clock)
+    );
+    vector$lanes$0$hit_dl$stages$20 stages$20(
+        .d(stages$20$d),
+        .q(stages$20$q),
+        .clock(stages$20$clock)
+    );
+    vector$lanes$0$hit_dl$stages$21 stages$21(
+        .d(stages$21$d),
+        .q(stages$21$q),
+        .clock(stages$21$clock)
+    );
+    vector$lanes$0$hit_dl$stages$22 stages$22(
+        .d(stages$22$d),
+        .q(stages$22$q),
+        .clock(stages$22$clock)
+    );
+    vector$lanes$0$hit_dl$stages$23 stages$23(
+        .d(stages$23$d),
+        .q(stages$23$q),
+        .clock(stages$23$clock)
+    );
+    vector$lanes$0$hit_dl$stages$24 stages$24(
+        .d(stages$24$d),
+        .q(stages$24$q),
+        .clock(stages$24$clock)
+    );
+    vector$lanes$0$hit_dl$stages$25 stages$25(
+        .d(stages$25$d),
+        .q(stages$25$q),
+        .clock(stages$25$clock)
+    );
+    vector$lanes$0$hit_dl$stages$26 stages$26(
+        .d(stages$26$d),
+        .q(stages$26$q),
+        .clock(stages$26$clock)
+    );
+    vector$lanes$0$hit_dl$stages$27 stages$27(
+        .d(stages$27$d),
+        .q(stages$27$q),
+        .clock(stages$27$clock)
+    );
+    vector$lanes$0$hit_dl$stages$28 stages$28(
+        .d(stages$28$d),
+        .q(stages$28$q),
+        .clock(stages$28$clock)
+    );
+    vector$lanes$0$hit_dl$stages$29 stages$29(
+        .d(stages$29$d),
+        .q(stages$29$q),
+        .clock(stages$29$clock)
+    );
+    vector$lanes$0$hit_dl$stages$30 stages$30(
+        .d(stages$30$d),
+        .q(stages$30$q),
+        .clock(stages$30$clock)
+    );
+    vector$lanes$0$hit_dl$stages$31 stages$31(
+        .d(stages$31$d),
+        .q(stages$31$q),
+        .clock(stages$31$clock)
+    );
+    vector$lanes$0$hit_dl$stages$32 stages$32(
+        .d(stages$32$d),
+        .q(stages$32$q),
+        .clock(stages$32$clock)
+    );
+    vector$lanes$0$hit_dl$stages$33 stages$33(
+        .d(stages$33$d),
+        .q(stages$33$q),
+        .clock(stages$33$clock)
+    );
+    vector$lanes$0$hit_dl$stages$34 stages$34(
+        .d(stages$34$d),
+        .q(stages$34$q),
+        .clock(stages$34$clock)
+    );
+    vector$lanes$0$hit_dl$stages$35 stages$35(
+        .d(stages$35$d),
+        .q(stages$35$q),
+        .clock(stages$35$clock)
+    );
+    vector$lanes$0$hit_dl$stages$36 stages$36(
+        .d(stages$36$d),
+        .q(stages$36$q),
+        .clock(stages$36$clock)
+    );
+    vector$lanes$0$hit_dl$stages$37 stages$37(
+        .d(stages$37$d),
+        .q(stages$37$q),
+        .clock(stages$37$clock)
+    );
+    vector$lanes$0$hit_dl$stages$38 stages$38(
+        .d(stages$38$d),
+        .q(stages$38$q),
+        .clock(stages$38$clock)
+    );
+    vector$lanes$0$hit_dl$stages$39 stages$39(
+        .d(stages$39$d),
+        .q(stages$39$q),
+        .clock(stages$39$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        stages$0$clock = clock;
+        stages$0$d = stages$0$q;
+        stages$1$clock = clock;
+        stages$1$d = stages$1$q;
+        stages$2$clock = clock;
+        stages$2$d = stages$2$q;
+        stages$3$clock = clock;
+        stages$3$d = stages$3$q;
+        stages$4$clock = clock;
+        stages$4$d = stages$4$q;
+        stages$5$clock = clock;
+        stages$5$d = stages$5$q;
+        stages$6$clock = clock;
+        stages$6$d = stages$6$q;
+        stages$7$clock = clock;
+        stages$7$d = stages$7$q;
+        stages$8$clock = clock;
+        stages$8$d = stages$8$q;
+        stages$9$clock = clock;
+        stages$9$d = stages$9$q;
+        stages$10$clock = clock;
+        stages$10$d = stages$10$q;
+        stages$11$clock = clock;
+        stages$11$d = stages$11$q;
+        stages$12$clock = clock;
+        stages$12$d = stages$12$q;
+        stages$13$clock = clock;
+        stages$13$d = stages$13$q;
+        stages$14$clock = clock;
+        stages$14$d = stages$14$q;
+        stages$15$clock = clock;
+        stages$15$d = stages$15$q;
+        stages$16$clock = clock;
+        stages$16$d = stages$16$q;
+        stages$17$clock = clock;
+        stages$17$d = stages$17$q;
+        stages$18$clock = clock;
+        stages$18$d = stages$18$q;
+        stages$19$clock = clock;
+        stages$19$d = stages$19$q;
+        stages$20$clock = clock;
+        stages$20$d = stages$20$q;
+        stages$21$clock = clock;
+        stages$21$d = stages$21$q;
+        stages$22$clock = clock;
+        stages$22$d = stages$22$q;
+        stages$23$clock = clock;
+        stages$23$d = stages$23$q;
+        stages$24$clock = clock;
+        stages$24$d = stages$24$q;
+        stages$25$clock = clock;
+        stages$25$d = stages$25$q;
+        stages$26$clock = clock;
+        stages$26$d = stages$26$q;
+        stages$27$clock = clock;
+        stages$27$d = stages$27$q;
+        stages$28$clock = clock;
+        stages$28$d = stages$28$q;
+        stages$29$clock = clock;
+        stages$29$d = stages$29$q;
+        stages$30$clock = clock;
+        stages$30$d = stages$30$q;
+        stages$31$clock = clock;
+        stages$31$d = stages$31$q;
+        stages$32$clock = clock;
+        stages$32$d = stages$32$q;
+        stages$33$clock = clock;
+        stages$33$d = stages$33$q;
+        stages$34$clock = clock;
+        stages$34$d = stages$34$q;
+        stages$35$clock = clock;
+        stages$35$d = stages$35$q;
+        stages$36$clock = clock;
+        stages$36$d = stages$36$q;
+        stages$37$clock = clock;
+        stages$37$d = stages$37$q;
+        stages$38$clock = clock;
+        stages$38$d = stages$38$q;
+        stages$39$clock = clock;
+        stages$39$d = stages$39$q;
+        if (en) begin
+            stages$0$d = d;
+            stages$1$d = stages$0$q;
+            stages$2$d = stages$1$q;
+            stages$3$d = stages$2$q;
+            stages$4$d = stages$3$q;
+            stages$5$d = stages$4$q;
+            stages$6$d = stages$5$q;
+            stages$7$d = stages$6$q;
+            stages$8$d = stages$7$q;
+            stages$9$d = stages$8$q;
+            stages$10$d = stages$9$q;
+            stages$11$d = stages$10$q;
+            stages$12$d = stages$11$q;
+            stages$13$d = stages$12$q;
+            stages$14$d = stages$13$q;
+            stages$15$d = stages$14$q;
+            stages$16$d = stages$15$q;
+            stages$17$d = stages$16$q;
+            stages$18$d = stages$17$q;
+            stages$19$d = stages$18$q;
+            stages$20$d = stages$19$q;
+            stages$21$d = stages$20$q;
+            stages$22$d = stages$21$q;
+            stages$23$d = stages$22$q;
+            stages$24$d = stages$23$q;
+            stages$25$d = stages$24$q;
+            stages$26$d = stages$25$q;
+            stages$27$d = stages$26$q;
+            stages$28$d = stages$27$q;
+            stages$29$d = stages$28$q;
+            stages$30$d = stages$29$q;
+            stages$31$d = stages$30$q;
+            stages$32$d = stages$31$q;
+            stages$33$d = stages$32$q;
+            stages$34$d = stages$33$q;
+            stages$35$d = stages$34$q;
+            stages$36$d = stages$35$q;
+            stages$37$d = stages$36$q;
+            stages$38$d = stages$37$q;
+            stages$39$d = stages$38$q;
+        end
+        q = stages$39$q;
+    end
+    
+endmodule // vector$lanes$0$hit_dl
+
+
+module vector$lanes$0$hit_dl$stages$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$0
+
+
+module vector$lanes$0$hit_dl$stages$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$1
+
+
+module vector$lanes$0$hit_dl$stages$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$10
+
+
+module vector$lanes$0$hit_dl$stages$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$11
+
+
+module vector$lanes$0$hit_dl$stages$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$12
+
+
+module vector$lanes$0$hit_dl$stages$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$13
+
+
+module vector$lanes$0$hit_dl$stages$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$14
+
+
+module vector$lanes$0$hit_dl$stages$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$15
+
+
+module vector$lanes$0$hit_dl$stages$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$16
+
+
+module vector$lanes$0$hit_dl$stages$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$17
+
+
+module vector$lanes$0$hit_dl$stages$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$18
+
+
+module vector$lanes$0$hit_dl$stages$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$19
+
+
+module vector$lanes$0$hit_dl$stages$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$2
+
+
+module vector$lanes$0$hit_dl$stages$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$20
+
+
+module vector$lanes$0$hit_dl$stages$21(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$21
+
+
+module vector$lanes$0$hit_dl$stages$22(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$22
+
+
+module vector$lanes$0$hit_dl$stages$23(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$23
+
+
+module vector$lanes$0$hit_dl$stages$24(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$24
+
+
+module vector$lanes$0$hit_dl$stages$25(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$25
+
+
+module vector$lanes$0$hit_dl$stages$26(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$26
+
+
+module vector$lanes$0$hit_dl$stages$27(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$27
+
+
+module vector$lanes$0$hit_dl$stages$28(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$28
+
+
+module vector$lanes$0$hit_dl$stages$29(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$29
+
+
+module vector$lanes$0$hit_dl$stages$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$3
+
+
+module vector$lanes$0$hit_dl$stages$30(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$30
+
+
+module vector$lanes$0$hit_dl$stages$31(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$31
+
+
+module vector$lanes$0$hit_dl$stages$32(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$32
+
+
+module vector$lanes$0$hit_dl$stages$33(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$33
+
+
+module vector$lanes$0$hit_dl$stages$34(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$34
+
+
+module vector$lanes$0$hit_dl$stages$35(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$35
+
+
+module vector$lanes$0$hit_dl$stages$36(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$36
+
+
+module vector$lanes$0$hit_dl$stages$37(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$37
+
+
+module vector$lanes$0$hit_dl$stages$38(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$38
+
+
+module vector$lanes$0$hit_dl$stages$39(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$39
+
+
+module vector$lanes$0$hit_dl$stages$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$4
+
+
+module vector$lanes$0$hit_dl$stages$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$5
+
+
+module vector$lanes$0$hit_dl$stages$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$6
+
+
+module vector$lanes$0$hit_dl$stages$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$7
+
+
+module vector$lanes$0$hit_dl$stages$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$8
+
+
+module vector$lanes$0$hit_dl$stages$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$hit_dl$stages$9
+
+
+module vector$lanes$0$lead_s(x,pos);
+    
+    // Module arguments
+    input wire  [29:0] x;
+    output reg  [7:0] pos;
+    
+    // Constant declarations
+    localparam  index$0 = 8'h0;
+    localparam  index$1 = 8'h1;
+    localparam  index$2 = 8'h2;
+    localparam  index$3 = 8'h3;
+    localparam  index$4 = 8'h4;
+    localparam  index$5 = 8'h5;
+    localparam  index$6 = 8'h6;
+    localparam  index$7 = 8'h7;
+    localparam  index$8 = 8'h8;
+    localparam  index$9 = 8'h9;
+    localparam  index$10 = 8'ha;
+    localparam  index$11 = 8'hb;
+    localparam  index$12 = 8'hc;
+    localparam  index$13 = 8'hd;
+    localparam  index$14 = 8'he;
+    localparam  index$15 = 8'hf;
+    localparam  index$16 = 8'h10;
+    localparam  index$17 = 8'h11;
+    localparam  index$18 = 8'h12;
+    localparam  index$19 = 8'h13;
+    localparam  index$20 = 8'h14;
+    localparam  index$21 = 8'h15;
+    localparam  index$22 = 8'h16;
+    localparam  index$23 = 8'h17;
+    localparam  index$24 = 8'h18;
+    localparam  index$25 = 8'h19;
+    localparam  index$26 = 8'h1a;
+    localparam  index$27 = 8'h1b;
+    localparam  index$28 = 8'h1c;
+    localparam  index$29 = 8'h1d;
+    
+    // Update code
+    always @(*) begin
+        pos = 32'h0;
+        if (x[0]) begin
+            pos = index$0;
+        end
+        if (x[1]) begin
+            pos = index$1;
+        end
+        if (x[2]) begin
+            pos = index$2;
+        end
+        if (x[3]) begin
+            pos = index$3;
+        end
+        if (x[4]) begin
+            pos = index$4;
+        end
+        if (x[5]) begin
+            pos = index$5;
+        end
+        if (x[6]) begin
+            pos = index$6;
+        end
+        if (x[7]) begin
+            pos = index$7;
+        end
+        if (x[8]) begin
+            pos = index$8;
+        end
+        if (x[9]) begin
+            pos = index$9;
+        end
+        if (x[10]) begin
+            pos = index$10;
+        end
+        if (x[11]) begin
+            pos = index$11;
+        end
+        if (x[12]) begin
+            pos = index$12;
+        end
+        if (x[13]) begin
+            pos = index$13;
+        end
+        if (x[14]) begin
+            pos = index$14;
+        end
+        if (x[15]) begin
+            pos = index$15;
+        end
+        if (x[16]) begin
+            pos = index$16;
+        end
+        if (x[17]) begin
+            pos = index$17;
+        end
+        if (x[18]) begin
+            pos = index$18;
+        end
+        if (x[19]) begin
+            pos = index$19;
+        end
+        if (x[20]) begin
+            pos = index$20;
+        end
+        if (x[21]) begin
+            pos = index$21;
+        end
+        if (x[22]) begin
+            pos = index$22;
+        end
+        if (x[23]) begin
+            pos = index$23;
+        end
+        if (x[24]) begin
+            pos = index$24;
+        end
+        if (x[25]) begin
+            pos = index$25;
+        end
+        if (x[26]) begin
+            pos = index$26;
+        end
+        if (x[27]) begin
+            pos = index$27;
+        end
+        if (x[28]) begin
+            pos = index$28;
+        end
+        if (x[29]) begin
+            pos = index$29;
+        end
+    end
+    
+endmodule // vector$lanes$0$lead_s
+
+
+module vector$lanes$0$mul_a(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [34:0] a;
+    input wire  [25:0] b;
+    output reg  [60:0] p;
+    
+    // Stub signals
+    reg  [34:0] a_r$d;
+    wire  [34:0] a_r$q;
+    reg  a_r$clock;
+    reg  [25:0] b_r$d;
+    wire  [25:0] b_r$q;
+    reg  b_r$clock;
+    reg  [60:0] p_r$d;
+    wire  [60:0] p_r$q;
+    reg  p_r$clock;
+    reg  [34:0] mul$a;
+    reg  [25:0] mul$b;
+    wire  [60:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_a$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_a$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_a$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_a$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_a
+
+
+module vector$lanes$0$mul_a$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_a$a_r
+
+
+module vector$lanes$0$mul_a$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [25:0] d;
+    output reg  [25:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 26'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_a$b_r
+
+
+module vector$lanes$0$mul_a$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [34:0] a;
+    input wire  [25:0] b;
+    output reg  [60:0] p;
+    
+    // Update code (custom)
+    // p = low 61 bits of a * b, both signed: a signed 61-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_a$mul
+
+
+module vector$lanes$0$mul_a$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [60:0] d;
+    output reg  [60:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 61'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_a$p_r
+
+
+module vector$lanes$0$mul_b(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [34:0] a;
+    input wire  [25:0] b;
+    output reg  [60:0] p;
+    
+    // Stub signals
+    reg  [34:0] a_r$d;
+    wire  [34:0] a_r$q;
+    reg  a_r$clock;
+    reg  [25:0] b_r$d;
+    wire  [25:0] b_r$q;
+    reg  b_r$clock;
+    reg  [60:0] p_r$d;
+    wire  [60:0] p_r$q;
+    reg  p_r$clock;
+    reg  [34:0] mul$a;
+    reg  [25:0] mul$b;
+    wire  [60:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_b$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_b$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_b$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_b$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_b
+
+
+module vector$lanes$0$mul_b$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_b$a_r
+
+
+module vector$lanes$0$mul_b$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [25:0] d;
+    output reg  [25:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 26'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_b$b_r
+
+
+module vector$lanes$0$mul_b$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [34:0] a;
+    input wire  [25:0] b;
+    output reg  [60:0] p;
+    
+    // Update code (custom)
+    // p = low 61 bits of a * b, both signed: a signed 61-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_b$mul
+
+
+module vector$lanes$0$mul_b$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [60:0] d;
+    output reg  [60:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 61'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_b$p_r
+
+
+module vector$lanes$0$mul_c1$0(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [8:0] a;
+    input wire  [27:0] b;
+    output reg  [37:0] p;
+    
+    // Stub signals
+    reg  [8:0] a_r$d;
+    wire  [8:0] a_r$q;
+    reg  a_r$clock;
+    reg  [27:0] b_r$d;
+    wire  [27:0] b_r$q;
+    reg  b_r$clock;
+    reg  [37:0] p_r$d;
+    wire  [37:0] p_r$q;
+    reg  p_r$clock;
+    reg  [8:0] mul$a;
+    reg  [27:0] mul$b;
+    wire  [37:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_c1$0$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_c1$0$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_c1$0$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_c1$0$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_c1$0
+
+
+module vector$lanes$0$mul_c1$0$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c1$0$a_r
+
+
+module vector$lanes$0$mul_c1$0$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c1$0$b_r
+
+
+module vector$lanes$0$mul_c1$0$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [8:0] a;
+    input wire  [27:0] b;
+    output reg  [37:0] p;
+    
+    // Update code (custom)
+    // p = low 38 bits of a * b, both signed: a signed 38-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_c1$0$mul
+
+
+module vector$lanes$0$mul_c1$0$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [37:0] d;
+    output reg  [37:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 38'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c1$0$p_r
+
+
+module vector$lanes$0$mul_c1$1(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [8:0] a;
+    input wire  [27:0] b;
+    output reg  [37:0] p;
+    
+    // Stub signals
+    reg  [8:0] a_r$d;
+    wire  [8:0] a_r$q;
+    reg  a_r$clock;
+    reg  [27:0] b_r$d;
+    wire  [27:0] b_r$q;
+    reg  b_r$clock;
+    reg  [37:0] p_r$d;
+    wire  [37:0] p_r$q;
+    reg  p_r$clock;
+    reg  [8:0] mul$a;
+    reg  [27:0] mul$b;
+    wire  [37:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_c1$1$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_c1$1$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_c1$1$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_c1$1$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_c1$1
+
+
+module vector$lanes$0$mul_c1$1$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c1$1$a_r
+
+
+module vector$lanes$0$mul_c1$1$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c1$1$b_r
+
+
+module vector$lanes$0$mul_c1$1$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [8:0] a;
+    input wire  [27:0] b;
+    output reg  [37:0] p;
+    
+    // Update code (custom)
+    // p = low 38 bits of a * b, both signed: a signed 38-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_c1$1$mul
+
+
+module vector$lanes$0$mul_c1$1$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [37:0] d;
+    output reg  [37:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 38'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c1$1$p_r
+
+
+module vector$lanes$0$mul_c1$2(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [8:0] a;
+    input wire  [27:0] b;
+    output reg  [37:0] p;
+    
+    // Stub signals
+    reg  [8:0] a_r$d;
+    wire  [8:0] a_r$q;
+    reg  a_r$clock;
+    reg  [27:0] b_r$d;
+    wire  [27:0] b_r$q;
+    reg  b_r$clock;
+    reg  [37:0] p_r$d;
+    wire  [37:0] p_r$q;
+    reg  p_r$clock;
+    reg  [8:0] mul$a;
+    reg  [27:0] mul$b;
+    wire  [37:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_c1$2$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_c1$2$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_c1$2$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_c1$2$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_c1$2
+
+
+module vector$lanes$0$mul_c1$2$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c1$2$a_r
+
+
+module vector$lanes$0$mul_c1$2$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c1$2$b_r
+
+
+module vector$lanes$0$mul_c1$2$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [8:0] a;
+    input wire  [27:0] b;
+    output reg  [37:0] p;
+    
+    // Update code (custom)
+    // p = low 38 bits of a * b, both signed: a signed 38-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_c1$2$mul
+
+
+module vector$lanes$0$mul_c1$2$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [37:0] d;
+    output reg  [37:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 38'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c1$2$p_r
+
+
+module vector$lanes$0$mul_c2$0(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [8:0] a;
+    input wire  [27:0] b;
+    output reg  [37:0] p;
+    
+    // Stub signals
+    reg  [8:0] a_r$d;
+    wire  [8:0] a_r$q;
+    reg  a_r$clock;
+    reg  [27:0] b_r$d;
+    wire  [27:0] b_r$q;
+    reg  b_r$clock;
+    reg  [37:0] p_r$d;
+    wire  [37:0] p_r$q;
+    reg  p_r$clock;
+    reg  [8:0] mul$a;
+    reg  [27:0] mul$b;
+    wire  [37:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_c2$0$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_c2$0$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_c2$0$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_c2$0$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_c2$0
+
+
+module vector$lanes$0$mul_c2$0$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c2$0$a_r
+
+
+module vector$lanes$0$mul_c2$0$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c2$0$b_r
+
+
+module vector$lanes$0$mul_c2$0$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [8:0] a;
+    input wire  [27:0] b;
+    output reg  [37:0] p;
+    
+    // Update code (custom)
+    // p = low 38 bits of a * b, both signed: a signed 38-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_c2$0$mul
+
+
+module vector$lanes$0$mul_c2$0$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [37:0] d;
+    output reg  [37:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 38'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c2$0$p_r
+
+
+module vector$lanes$0$mul_c2$1(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [8:0] a;
+    input wire  [27:0] b;
+    output reg  [37:0] p;
+    
+    // Stub signals
+    reg  [8:0] a_r$d;
+    wire  [8:0] a_r$q;
+    reg  a_r$clock;
+    reg  [27:0] b_r$d;
+    wire  [27:0] b_r$q;
+    reg  b_r$clock;
+    reg  [37:0] p_r$d;
+    wire  [37:0] p_r$q;
+    reg  p_r$clock;
+    reg  [8:0] mul$a;
+    reg  [27:0] mul$b;
+    wire  [37:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_c2$1$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_c2$1$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_c2$1$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_c2$1$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_c2$1
+
+
+module vector$lanes$0$mul_c2$1$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c2$1$a_r
+
+
+module vector$lanes$0$mul_c2$1$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c2$1$b_r
+
+
+module vector$lanes$0$mul_c2$1$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [8:0] a;
+    input wire  [27:0] b;
+    output reg  [37:0] p;
+    
+    // Update code (custom)
+    // p = low 38 bits of a * b, both signed: a signed 38-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_c2$1$mul
+
+
+module vector$lanes$0$mul_c2$1$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [37:0] d;
+    output reg  [37:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 38'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c2$1$p_r
+
+
+module vector$lanes$0$mul_c2$2(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [8:0] a;
+    input wire  [27:0] b;
+    output reg  [37:0] p;
+    
+    // Stub signals
+    reg  [8:0] a_r$d;
+    wire  [8:0] a_r$q;
+    reg  a_r$clock;
+    reg  [27:0] b_r$d;
+    wire  [27:0] b_r$q;
+    reg  b_r$clock;
+    reg  [37:0] p_r$d;
+    wire  [37:0] p_r$q;
+    reg  p_r$clock;
+    reg  [8:0] mul$a;
+    reg  [27:0] mul$b;
+    wire  [37:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_c2$2$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_c2$2$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_c2$2$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_c2$2$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_c2$2
+
+
+module vector$lanes$0$mul_c2$2$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c2$2$a_r
+
+
+module vector$lanes$0$mul_c2$2$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c2$2$b_r
+
+
+module vector$lanes$0$mul_c2$2$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [8:0] a;
+    input wire  [27:0] b;
+    output reg  [37:0] p;
+    
+    // Update code (custom)
+    // p = low 38 bits of a * b, both signed: a signed 38-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_c2$2$mul
+
+
+module vector$lanes$0$mul_c2$2$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [37:0] d;
+    output reg  [37:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 38'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_c2$2$p_r
+
+
+module vector$lanes$0$mul_l$0(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [27:0] a;
+    input wire  [16:0] b;
+    output reg  [44:0] p;
+    
+    // Stub signals
+    reg  [27:0] a_r$d;
+    wire  [27:0] a_r$q;
+    reg  a_r$clock;
+    reg  [16:0] b_r$d;
+    wire  [16:0] b_r$q;
+    reg  b_r$clock;
+    reg  [44:0] p_r$d;
+    wire  [44:0] p_r$q;
+    reg  p_r$clock;
+    reg  [27:0] mul$a;
+    reg  [16:0] mul$b;
+    wire  [44:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_l$0$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_l$0$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_l$0$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_l$0$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_l$0
+
+
+module vector$lanes$0$mul_l$0$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_l$0$a_r
+
+
+module vector$lanes$0$mul_l$0$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_l$0$b_r
+
+
+module vector$lanes$0$mul_l$0$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [27:0] a;
+    input wire  [16:0] b;
+    output reg  [44:0] p;
+    
+    // Update code (custom)
+    // p = low 45 bits of a * b, both signed: a signed 45-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_l$0$mul
+
+
+module vector$lanes$0$mul_l$0$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [44:0] d;
+    output reg  [44:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 45'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_l$0$p_r
+
+
+module vector$lanes$0$mul_l$1(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [27:0] a;
+    input wire  [16:0] b;
+    output reg  [44:0] p;
+    
+    // Stub signals
+    reg  [27:0] a_r$d;
+    wire  [27:0] a_r$q;
+    reg  a_r$clock;
+    reg  [16:0] b_r$d;
+    wire  [16:0] b_r$q;
+    reg  b_r$clock;
+    reg  [44:0] p_r$d;
+    wire  [44:0] p_r$q;
+    reg  p_r$clock;
+    reg  [27:0] mul$a;
+    reg  [16:0] mul$b;
+    wire  [44:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_l$1$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_l$1$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_l$1$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_l$1$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_l$1
+
+
+module vector$lanes$0$mul_l$1$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_l$1$a_r
+
+
+module vector$lanes$0$mul_l$1$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_l$1$b_r
+
+
+module vector$lanes$0$mul_l$1$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [27:0] a;
+    input wire  [16:0] b;
+    output reg  [44:0] p;
+    
+    // Update code (custom)
+    // p = low 45 bits of a * b, both signed: a signed 45-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_l$1$mul
+
+
+module vector$lanes$0$mul_l$1$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [44:0] d;
+    output reg  [44:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 45'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_l$1$p_r
+
+
+module vector$lanes$0$mul_l$2(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [27:0] a;
+    input wire  [16:0] b;
+    output reg  [44:0] p;
+    
+    // Stub signals
+    reg  [27:0] a_r$d;
+    wire  [27:0] a_r$q;
+    reg  a_r$clock;
+    reg  [16:0] b_r$d;
+    wire  [16:0] b_r$q;
+    reg  b_r$clock;
+    reg  [44:0] p_r$d;
+    wire  [44:0] p_r$q;
+    reg  p_r$clock;
+    reg  [27:0] mul$a;
+    reg  [16:0] mul$b;
+    wire  [44:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_l$2$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_l$2$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_l$2$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_l$2$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_l$2
+
+
+module vector$lanes$0$mul_l$2$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_l$2$a_r
+
+
+module vector$lanes$0$mul_l$2$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_l$2$b_r
+
+
+module vector$lanes$0$mul_l$2$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [27:0] a;
+    input wire  [16:0] b;
+    output reg  [44:0] p;
+    
+    // Update code (custom)
+    // p = low 45 bits of a * b, both signed: a signed 45-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_l$2$mul
+
+
+module vector$lanes$0$mul_l$2$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [44:0] d;
+    output reg  [44:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 45'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_l$2$p_r
+
+
+module vector$lanes$0$mul_ra(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [27:0] a;
+    input wire  [25:0] b;
+    output reg  [53:0] p;
+    
+    // Stub signals
+    reg  [27:0] a_r$d;
+    wire  [27:0] a_r$q;
+    reg  a_r$clock;
+    reg  [25:0] b_r$d;
+    wire  [25:0] b_r$q;
+    reg  b_r$clock;
+    reg  [53:0] p_r$d;
+    wire  [53:0] p_r$q;
+    reg  p_r$clock;
+    reg  [27:0] mul$a;
+    reg  [25:0] mul$b;
+    wire  [53:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_ra$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_ra$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_ra$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_ra$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_ra
+
+
+module vector$lanes$0$mul_ra$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_ra$a_r
+
+
+module vector$lanes$0$mul_ra$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [25:0] d;
+    output reg  [25:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 26'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_ra$b_r
+
+
+module vector$lanes$0$mul_ra$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [27:0] a;
+    input wire  [25:0] b;
+    output reg  [53:0] p;
+    
+    // Update code (custom)
+    // p = low 54 bits of a * b, both signed: a signed 54-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_ra$mul
+
+
+module vector$lanes$0$mul_ra$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [53:0] d;
+    output reg  [53:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 54'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_ra$p_r
+
+
+module vector$lanes$0$mul_rb(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [27:0] a;
+    input wire  [25:0] b;
+    output reg  [53:0] p;
+    
+    // Stub signals
+    reg  [27:0] a_r$d;
+    wire  [27:0] a_r$q;
+    reg  a_r$clock;
+    reg  [25:0] b_r$d;
+    wire  [25:0] b_r$q;
+    reg  b_r$clock;
+    reg  [53:0] p_r$d;
+    wire  [53:0] p_r$q;
+    reg  p_r$clock;
+    reg  [27:0] mul$a;
+    reg  [25:0] mul$b;
+    wire  [53:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_rb$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_rb$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_rb$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_rb$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_rb
+
+
+module vector$lanes$0$mul_rb$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_rb$a_r
+
+
+module vector$lanes$0$mul_rb$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [25:0] d;
+    output reg  [25:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 26'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_rb$b_r
+
+
+module vector$lanes$0$mul_rb$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [27:0] a;
+    input wire  [25:0] b;
+    output reg  [53:0] p;
+    
+    // Update code (custom)
+    // p = low 54 bits of a * b, both signed: a signed 54-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_rb$mul
+
+
+module vector$lanes$0$mul_rb$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [53:0] d;
+    output reg  [53:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 54'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_rb$p_r
+
+
+module vector$lanes$0$mul_z1(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [18:0] a;
+    input wire  [27:0] b;
+    output reg  [47:0] p;
+    
+    // Stub signals
+    reg  [18:0] a_r$d;
+    wire  [18:0] a_r$q;
+    reg  a_r$clock;
+    reg  [27:0] b_r$d;
+    wire  [27:0] b_r$q;
+    reg  b_r$clock;
+    reg  [47:0] p_r$d;
+    wire  [47:0] p_r$q;
+    reg  p_r$clock;
+    reg  [18:0] mul$a;
+    reg  [27:0] mul$b;
+    wire  [47:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_z1$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_z1$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_z1$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_z1$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_z1
+
+
+module vector$lanes$0$mul_z1$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_z1$a_r
+
+
+module vector$lanes$0$mul_z1$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_z1$b_r
+
+
+module vector$lanes$0$mul_z1$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [18:0] a;
+    input wire  [27:0] b;
+    output reg  [47:0] p;
+    
+    // Update code (custom)
+    // p = low 48 bits of a * b, both signed: a signed 48-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_z1$mul
+
+
+module vector$lanes$0$mul_z1$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_z1$p_r
+
+
+module vector$lanes$0$mul_z2(clock,en,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [18:0] a;
+    input wire  [27:0] b;
+    output reg  [47:0] p;
+    
+    // Stub signals
+    reg  [18:0] a_r$d;
+    wire  [18:0] a_r$q;
+    reg  a_r$clock;
+    reg  [27:0] b_r$d;
+    wire  [27:0] b_r$q;
+    reg  b_r$clock;
+    reg  [47:0] p_r$d;
+    wire  [47:0] p_r$q;
+    reg  p_r$clock;
+    reg  [18:0] mul$a;
+    reg  [27:0] mul$b;
+    wire  [47:0] mul$p;
+    
+    // Sub module instances
+    vector$lanes$0$mul_z2$a_r a_r(
+        .d(a_r$d),
+        .q(a_r$q),
+        .clock(a_r$clock)
+    );
+    vector$lanes$0$mul_z2$b_r b_r(
+        .d(b_r$d),
+        .q(b_r$q),
+        .clock(b_r$clock)
+    );
+    vector$lanes$0$mul_z2$p_r p_r(
+        .d(p_r$d),
+        .q(p_r$q),
+        .clock(p_r$clock)
+    );
+    vector$lanes$0$mul_z2$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .p(mul$p)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_r$clock = clock;
+        b_r$clock = clock;
+        p_r$clock = clock;
+        a_r$d = a_r$q;
+        b_r$d = b_r$q;
+        p_r$d = p_r$q;
+        mul$a = a_r$q;
+        mul$b = b_r$q;
+        if (en) begin
+            a_r$d = a;
+            b_r$d = b;
+            p_r$d = mul$p;
+        end
+        p = p_r$q;
+    end
+    
+endmodule // vector$lanes$0$mul_z2
+
+
+module vector$lanes$0$mul_z2$a_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_z2$a_r
+
+
+module vector$lanes$0$mul_z2$b_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_z2$b_r
+
+
+module vector$lanes$0$mul_z2$mul(a,b,p);
+    
+    // Module arguments
+    input wire  [18:0] a;
+    input wire  [27:0] b;
+    output reg  [47:0] p;
+    
+    // Update code (custom)
+    // p = low 48 bits of a * b, both signed: a signed 48-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // vector$lanes$0$mul_z2$mul
+
+
+module vector$lanes$0$mul_z2$p_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$mul_z2$p_r
+
+
+module vector$lanes$0$norm_s(x,exp,d);
+    
+    // Module arguments
+    input wire  [29:0] x;
+    input wire  [7:0] exp;
+    output reg  [33:0] d;
+    
+    // Constant declarations
+    localparam  top = 8'h20;
+    
+    // Local signals
+    reg  [7:0] lsh;
+    reg  [7:0] rsh;
+    reg  [33:0] wide;
+    
+    // Update code
+    always @(*) begin
+        lsh = top - exp;
+        rsh = 32'h0;
+        if (exp > top) begin
+            lsh = 32'h0;
+            rsh = exp - top;
+        end
+        wide = (((x) & 34'h3ffffffff) << lsh) >> rsh;
+        d = ((wide) & 34'h3ffffffff);
+    end
+    
+endmodule // vector$lanes$0$norm_s
+
+
+module vector$lanes$0$off$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$off$0
+
+
+module vector$lanes$0$off$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$off$1
+
+
+module vector$lanes$0$off$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$off$2
+
+
+module vector$lanes$0$orgb$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$orgb$0
+
+
+module vector$lanes$0$orgb$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$orgb$1
+
+
+module vector$lanes$0$orgb$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$orgb$2
+
+
+module vector$lanes$0$ov(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$ov
+
+
+module vector$lanes$0$oz(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$oz
+
+
+module vector$lanes$0$persp(on);
+    
+    // Module arguments
+    output reg  on;
+    
+    // Constant declarations
+    localparam  value = 1'b1;
+    
+    // Update code
+    always @(*) begin
+        on = value;
+    end
+    
+endmodule // vector$lanes$0$persp
+
+
+module vector$lanes$0$q6$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q6$0
+
+
+module vector$lanes$0$q6$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q6$1
+
+
+module vector$lanes$0$q6$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q6$2
+
+
+module vector$lanes$0$q_dl(clock,en,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  en;
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    
+    // Stub signals
+    reg  [55:0] stages$0$d;
+    wire  [55:0] stages$0$q;
+    reg  stages$0$clock;
+    reg  [55:0] stages$1$d;
+    wire  [55:0] stages$1$q;
+    reg  stages$1$clock;
+    reg  [55:0] stages$2$d;
+    wire  [55:0] stages$2$q;
+    reg  stages$2$clock;
+    reg  [55:0] stages$3$d;
+    wire  [55:0] stages$3$q;
+    reg  stages$3$clock;
+    reg  [55:0] stages$4$d;
+    wire  [55:0] stages$4$q;
+    reg  stages$4$clock;
+    reg  [55:0] stages$5$d;
+    wire  [55:0] stages$5$q;
+    reg  stages$5$clock;
+    reg  [55:0] stages$6$d;
+    wire  [55:0] stages$6$q;
+    reg  stages$6$clock;
+    reg  [55:0] stages$7$d;
+    wire  [55:0] stages$7$q;
+    reg  stages$7$clock;
+    reg  [55:0] stages$8$d;
+    wire  [55:0] stages$8$q;
+    reg  stages$8$clock;
+    reg  [55:0] stages$9$d;
+    wire  [55:0] stages$9$q;
+    reg  stages$9$clock;
+    reg  [55:0] stages$10$d;
+    wire  [55:0] stages$10$q;
+    reg  stages$10$clock;
+    reg  [55:0] stages$11$d;
+    wire  [55:0] stages$11$q;
+    reg  stages$11$clock;
+    reg  [55:0] stages$12$d;
+    wire  [55:0] stages$12$q;
+    reg  stages$12$clock;
+    reg  [55:0] stages$13$d;
+    wire  [55:0] stages$13$q;
+    reg  stages$13$clock;
+    reg  [55:0] stages$14$d;
+    wire  [55:0] stages$14$q;
+    reg  stages$14$clock;
+    reg  [55:0] stages$15$d;
+    wire  [55:0] stages$15$q;
+    reg  stages$15$clock;
+    reg  [55:0] stages$16$d;
+    wire  [55:0] stages$16$q;
+    reg  stages$16$clock;
+    reg  [55:0] stages$17$d;
+    wire  [55:0] stages$17$q;
+    reg  stages$17$clock;
+    reg  [55:0] stages$18$d;
+    wire  [55:0] stages$18$q;
+    reg  stages$18$clock;
+    reg  [55:0] stages$19$d;
+    wire  [55:0] stages$19$q;
+    reg  stages$19$clock;
+    reg  [55:0] stages$20$d;
+    wire  [55:0] stages$20$q;
+    reg  stages$20$clock;
+    reg  [55:0] stages$21$d;
+    wire  [55:0] stages$21$q;
+    reg  stages$21$clock;
+    reg  [55:0] stages$22$d;
+    wire  [55:0] stages$22$q;
+    reg  stages$22$clock;
+    reg  [55:0] stages$23$d;
+    wire  [55:0] stages$23$q;
+    reg  stages$23$clock;
+    reg  [55:0] stages$24$d;
+    wire  [55:0] stages$24$q;
+    reg  stages$24$clock;
+    reg  [55:0] stages$25$d;
+    wire  [55:0] stages$25$q;
+    reg  stages$25$clock;
+    reg  [55:0] stages$26$d;
+    wire  [55:0] stages$26$q;
+    reg  stages$26$clock;
+    reg  [55:0] stages$27$d;
+    wire  [55:0] stages$27$q;
+    reg  stages$27$clock;
+    
+    // Sub module instances
+    vector$lanes$0$q_dl$stages$0 stages$0(
+        .d(stages$0$d),
+        .q(stages$0$q),
+        .clock(stages$0$clock)
+    );
+    vector$lanes$0$q_dl$stages$1 stages$1(
+        .d(stages$1$d),
+        .q(stages$1$q),
+        .clock(stages$1$clock)
+    );
+    vector$lanes$0$q_dl$stages$2 stages$2(
+        .d(stages$2$d),
+        .q(stages$2$q),
+        .clock(stages$2$clock)
+    );
+    vector$lanes$0$q_dl$stages$3 stages$3(
+        .d(stages$3$d),
+        .q(stages$3$q),
+        .clock(stages$3$clock)
+    );
+    vector$lanes$0$q_dl$stages$4 stages$4(
+        .d(stages$4$d),
+        .q(stages$4$q),
+        .clock(stages$4$clock)
+    );
+    vector$lanes$0$q_dl$stages$5 stages$5(
+        .d(stages$5$d),
+        .q(stages$5$q),
+        .clock(stages$5$clock)
+    );
+    vector$lanes$0$q_dl$stages$6 stages$6(
+        .d(stages$6$d),
+        .q(stages$6$q),
+        .clock(stages$6$clock)
+    );
+    vector$lanes$0$q_dl$stages$7 stages$7(
+        .d(stages$7$d),
+        .q(stages$7$q),
+        .clock(stages$7$clock)
+    );
+    vector$lanes$0$q_dl$stages$8 stages$8(
+        .d(stages$8$d),
+        .q(stages$8$q),
+        .clock(stages$8$clock)
+    );
+    vector$lanes$0$q_dl$stages$9 stages$9(
+        .d(stages$9$d),
+        .q(stages$9$q),
+        .clock(stages$9$clock)
+    );
+    vector$lanes$0$q_dl$stages$10 stages$10(
+        .d(stages$10$d),
+        .q(stages$10$q),
+        .clock(stages$10$clock)
+    );
+    vector$lanes$0$q_dl$stages$11 stages$11(
+        .d(stages$11$d),
+        .q(stages$11$q),
+        .clock(stages$11$clock)
+    );
+    vector$lanes$0$q_dl$stages$12 stages$12(
+        .d(stages$12$d),
+        .q(stages$12$q),
+        .clock(stages$12$clock)
+    );
+    vector$lanes$0$q_dl$stages$13 stages$13(
+        .d(stages$13$d),
+        .q(stages$13$q),
+        .clock(stages$13$clock)
+    );
+    vector$lanes$0$q_dl$stages$14 stages$14(
+        .d(stages$14$d),
+        .q(stages$14$q),
+        .clock(stages$14$clock)
+    );
+    vector$lanes$0$q_dl$stages$15 stages$15(
+        .d(stages$15$d),
+        .q(stages$15$q),
+        .clock(stages$15$clock)
+    );
+    vector$lanes$0$q_dl$stages$16 stages$16(
+        .d(stages$16$d),
+        .q(stages$16$q),
+        .clock(stages$16$clock)
+    );
+    vector$lanes$0$q_dl$stages$17 stages$17(
+        .d(stages$17$d),
+        .q(stages$17$q),
+        .clock(stages$17$clock)
+    );
+    vector$lanes$0$q_dl$stages$18 stages$18(
+        .d(stages$18$d),
+        .q(stages$18$q),
+        .clock(stages$18$clock)
+    );
+    vector$lanes$0$q_dl$stages$19 stages$19(
+        .d(stages$19$d),
+        .q(stages$19$q),
+        .clock(stages$19$clock)
+    );
+    vector$lanes$0$q_dl$stages$20 stages$20(
+        .d(stages$20$d),
+        .q(stages$20$q),
+        .clock(stages$20$clock)
+    );
+    vector$lanes$0$q_dl$stages$21 stages$21(
+        .d(stages$21$d),
+        .q(stages$21$q),
+        .clock(stages$21$clock)
+    );
+    vector$lanes$0$q_dl$stages$22 stages$22(
+        .d(stages$22$d),
+        .q(stages$22$q),
+        .clock(stages$22$clock)
+    );
+    vector$lanes$0$q_dl$stages$23 stages$23(
+        .d(stages$23$d),
+        .q(stages$23$q),
+        .clock(stages$23$clock)
+    );
+    vector$lanes$0$q_dl$stages$24 stages$24(
+        .d(stages$24$d),
+        .q(stages$24$q),
+        .clock(stages$24$clock)
+    );
+    vector$lanes$0$q_dl$stages$25 stages$25(
+        .d(stages$25$d),
+        .q(stages$25$q),
+        .clock(stages$25$clock)
+    );
+    vector$lanes$0$q_dl$stages$26 stages$26(
+        .d(stages$26$d),
+        .q(stages$26$q),
+        .clock(stages$26$clock)
+    );
+    vector$lanes$0$q_dl$stages$27 stages$27(
+        .d(stages$27$d),
+        .q(stages$27$q),
+        .clock(stages$27$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        stages$0$clock = clock;
+        stages$0$d = stages$0$q;
+        stages$1$clock = clock;
+        stages$1$d = stages$1$q;
+        stages$2$clock = clock;
+        stages$2$d = stages$2$q;
+        stages$3$clock = clock;
+        stages$3$d = stages$3$q;
+        stages$4$clock = clock;
+        stages$4$d = stages$4$q;
+        stages$5$clock = clock;
+        stages$5$d = stages$5$q;
+        stages$6$clock = clock;
+        stages$6$d = stages$6$q;
+        stages$7$clock = clock;
+        stages$7$d = stages$7$q;
+        stages$8$clock = clock;
+        stages$8$d = stages$8$q;
+        stages$9$clock = clock;
+        stages$9$d = stages$9$q;
+        stages$10$clock = clock;
+        stages$10$d = stages$10$q;
+        stages$11$clock = clock;
+        stages$11$d = stages$11$q;
+        stages$12$clock = clock;
+        stages$12$d = stages$12$q;
+        stages$13$clock = clock;
+        stages$13$d = stages$13$q;
+        stages$14$clock = clock;
+        stages$14$d = stages$14$q;
+        stages$15$clock = clock;
+        stages$15$d = stages$15$q;
+        stages$16$clock = clock;
+        stages$16$d = stages$16$q;
+        stages$17$clock = clock;
+        stages$17$d = stages$17$q;
+        stages$18$clock = clock;
+        stages$18$d = stages$18$q;
+        stages$19$clock = clock;
+        stages$19$d = stages$19$q;
+        stages$20$clock = clock;
+        stages$20$d = stages$20$q;
+        stages$21$clock = clock;
+        stages$21$d = stages$21$q;
+        stages$22$clock = clock;
+        stages$22$d = stages$22$q;
+        stages$23$clock = clock;
+        stages$23$d = stages$23$q;
+        stages$24$clock = clock;
+        stages$24$d = stages$24$q;
+        stages$25$clock = clock;
+        stages$25$d = stages$25$q;
+        stages$26$clock = clock;
+        stages$26$d = stages$26$q;
+        stages$27$clock = clock;
+        stages$27$d = stages$27$q;
+        if (en) begin
+            stages$0$d = d;
+            stages$1$d = stages$0$q;
+            stages$2$d = stages$1$q;
+            stages$3$d = stages$2$q;
+            stages$4$d = stages$3$q;
+            stages$5$d = stages$4$q;
+            stages$6$d = stages$5$q;
+            stages$7$d = stages$6$q;
+            stages$8$d = stages$7$q;
+            stages$9$d = stages$8$q;
+            stages$10$d = stages$9$q;
+            stages$11$d = stages$10$q;
+            stages$12$d = stages$11$q;
+            stages$13$d = stages$12$q;
+            stages$14$d = stages$13$q;
+            stages$15$d = stages$14$q;
+            stages$16$d = stages$15$q;
+            stages$17$d = stages$16$q;
+            stages$18$d = stages$17$q;
+            stages$19$d = stages$18$q;
+            stages$20$d = stages$19$q;
+            stages$21$d = stages$20$q;
+            stages$22$d = stages$21$q;
+            stages$23$d = stages$22$q;
+            stages$24$d = stages$23$q;
+            stages$25$d = stages$24$q;
+            stages$26$d = stages$25$q;
+            stages$27$d = stages$26$q;
+        end
+        q = stages$27$q;
+    end
+    
+endmodule // vector$lanes$0$q_dl
+
+
+module vector$lanes$0$q_dl$stages$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$0
+
+
+module vector$lanes$0$q_dl$stages$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$1
+
+
+module vector$lanes$0$q_dl$stages$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$10
+
+
+module vector$lanes$0$q_dl$stages$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$11
+
+
+module vector$lanes$0$q_dl$stages$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$12
+
+
+module vector$lanes$0$q_dl$stages$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$13
+
+
+module vector$lanes$0$q_dl$stages$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$14
+
+
+module vector$lanes$0$q_dl$stages$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$15
+
+
+module vector$lanes$0$q_dl$stages$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$16
+
+
+module vector$lanes$0$q_dl$stages$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$17
+
+
+module vector$lanes$0$q_dl$stages$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$18
+
+
+module vector$lanes$0$q_dl$stages$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$19
+
+
+module vector$lanes$0$q_dl$stages$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$2
+
+
+module vector$lanes$0$q_dl$stages$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$20
+
+
+module vector$lanes$0$q_dl$stages$21(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$21
+
+
+module vector$lanes$0$q_dl$stages$22(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$22
+
+
+module vector$lanes$0$q_dl$stages$23(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$23
+
+
+module vector$lanes$0$q_dl$stages$24(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$24
+
+
+module vector$lanes$0$q_dl$stages$25(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$25
+
+
+module vector$lanes$0$q_dl$stages$26(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$26
+
+
+module vector$lanes$0$q_dl$stages$27(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$27
+
+
+module vector$lanes$0$q_dl$stages$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$3
+
+
+module vector$lanes$0$q_dl$stages$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$4
+
+
+module vector$lanes$0$q_dl$stages$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$5
+
+
+module vector$lanes$0$q_dl$stages$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$6
+
+
+module vector$lanes$0$q_dl$stages$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$7
+
+
+module vector$lanes$0$q_dl$stages$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$8
+
+
+module vector$lanes$0$q_dl$stages$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$q_dl$stages$9
+
+
+module vector$lanes$0$rej$0(e,owns,rejects);
+    
+    // Module arguments
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
+    
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
+    
+    // Sub module instances
+    vector$lanes$0$rej$0$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
+    end
+    
+endmodule // vector$lanes$0$rej$0
+
+
+module vector$lanes$0$rej$0$neg(x,neg);
+    
+    // Module arguments
+    input wire  [34:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 35'h400000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$lanes$0$rej$0$neg
+
+
+module vector$lanes$0$rej$1(e,owns,rejects);
+    
+    // Module arguments
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
+    
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
+    
+    // Sub module instances
+    vector$lanes$0$rej$1$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
+    end
+    
+endmodule // vector$lanes$0$rej$1
+
+
+module vector$lanes$0$rej$1$neg(x,neg);
+    
+    // Module arguments
+    input wire  [34:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 35'h400000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$lanes$0$rej$1$neg
+
+
+module vector$lanes$0$rej$2(e,owns,rejects);
+    
+    // Module arguments
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
+    
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
+    
+    // Sub module instances
+    vector$lanes$0$rej$2$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
+    end
+    
+endmodule // vector$lanes$0$rej$2
+
+
+module vector$lanes$0$rej$2$neg(x,neg);
+    
+    // Module arguments
+    input wire  [34:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 35'h400000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$lanes$0$rej$2$neg
+
+
+module vector$lanes$0$rs_a(x,by,y);
+    
+    // Module arguments
+    input wire  [60:0] x;
+    input wire  [7:0] by;
+    output reg  [27:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h2;
+    localparam  rsh = 8'h0;
+    localparam  msb = 8'h3c;
+    localparam  ext = 61'h0;
+    
+    // Local signals
+    reg  [60:0] wide;
+    reg  [60:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 61'h1fffffffffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 61'h1fffffffffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 28'hfffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_a
+
+
+module vector$lanes$0$rs_b(x,by,y);
+    
+    // Module arguments
+    input wire  [60:0] x;
+    input wire  [7:0] by;
+    output reg  [27:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h2;
+    localparam  rsh = 8'h0;
+    localparam  msb = 8'h3c;
+    localparam  ext = 61'h0;
+    
+    // Local signals
+    reg  [60:0] wide;
+    reg  [60:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 61'h1fffffffffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 61'h1fffffffffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 28'hfffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_b
+
+
+module vector$lanes$0$rs_c$0(x,by,y);
+    
+    // Module arguments
+    input wire  [37:0] x;
+    input wire  [7:0] by;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h0;
+    localparam  rsh = 8'h4;
+    localparam  msb = 8'h25;
+    localparam  ext = 38'h0;
+    
+    // Local signals
+    reg  [37:0] wide;
+    reg  [37:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 38'h3fffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 38'h3fffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 32'hffffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_c$0
+
+
+module vector$lanes$0$rs_c$1(x,by,y);
+    
+    // Module arguments
+    input wire  [37:0] x;
+    input wire  [7:0] by;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h0;
+    localparam  rsh = 8'h4;
+    localparam  msb = 8'h25;
+    localparam  ext = 38'h0;
+    
+    // Local signals
+    reg  [37:0] wide;
+    reg  [37:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 38'h3fffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 38'h3fffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 32'hffffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_c$1
+
+
+module vector$lanes$0$rs_c$2(x,by,y);
+    
+    // Module arguments
+    input wire  [37:0] x;
+    input wire  [7:0] by;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h0;
+    localparam  rsh = 8'h4;
+    localparam  msb = 8'h25;
+    localparam  ext = 38'h0;
+    
+    // Local signals
+    reg  [37:0] wide;
+    reg  [37:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 38'h3fffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 38'h3fffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 32'hffffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_c$2
+
+
+module vector$lanes$0$rs_c0$0(x,by,y);
+    
+    // Module arguments
+    input wire  [8:0] x;
+    input wire  [7:0] by;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h16;
+    localparam  rsh = 8'h0;
+    localparam  msb = 8'h8;
+    localparam  ext = 32'hfffffe00;
+    
+    // Local signals
+    reg  [31:0] wide;
+    reg  [31:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 32'hffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 32'hffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 32'hffffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_c0$0
+
+
+module vector$lanes$0$rs_c0$1(x,by,y);
+    
+    // Module arguments
+    input wire  [8:0] x;
+    input wire  [7:0] by;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h16;
+    localparam  rsh = 8'h0;
+    localparam  msb = 8'h8;
+    localparam  ext = 32'hfffffe00;
+    
+    // Local signals
+    reg  [31:0] wide;
+    reg  [31:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 32'hffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 32'hffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 32'hffffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_c0$1
+
+
+module vector$lanes$0$rs_c0$2(x,by,y);
+    
+    // Module arguments
+    input wire  [8:0] x;
+    input wire  [7:0] by;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h16;
+    localparam  rsh = 8'h0;
+    localparam  msb = 8'h8;
+    localparam  ext = 32'hfffffe00;
+    
+    // Local signals
+    reg  [31:0] wide;
+    reg  [31:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 32'hffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 32'hffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 32'hffffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_c0$2
+
+
+module vector$lanes$0$rs_q$0(x,by,y);
+    
+    // Module arguments
+    input wire  [44:0] x;
+    input wire  [7:0] by;
+    output reg  [27:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h0;
+    localparam  rsh = 8'hf;
+    localparam  msb = 8'h2c;
+    localparam  ext = 45'h0;
+    
+    // Local signals
+    reg  [44:0] wide;
+    reg  [44:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 45'h1fffffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 45'h1fffffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 28'hfffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_q$0
+
+
+module vector$lanes$0$rs_q$1(x,by,y);
+    
+    // Module arguments
+    input wire  [44:0] x;
+    input wire  [7:0] by;
+    output reg  [27:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h0;
+    localparam  rsh = 8'hf;
+    localparam  msb = 8'h2c;
+    localparam  ext = 45'h0;
+    
+    // Local signals
+    reg  [44:0] wide;
+    reg  [44:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 45'h1fffffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 45'h1fffffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 28'hfffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_q$1
+
+
+module vector$lanes$0$rs_q$2(x,by,y);
+    
+    // Module arguments
+    input wire  [44:0] x;
+    input wire  [7:0] by;
+    output reg  [27:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h0;
+    localparam  rsh = 8'hf;
+    localparam  msb = 8'h2c;
+    localparam  ext = 45'h0;
+    
+    // Local signals
+    reg  [44:0] wide;
+    reg  [44:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 45'h1fffffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 45'h1fffffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 28'hfffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_q$2
+
+
+module vector$lanes$0$rs_ra(x,by,y);
+    
+    // Module arguments
+    input wire  [53:0] x;
+    input wire  [7:0] by;
+    output reg  [27:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h2;
+    localparam  rsh = 8'h0;
+    localparam  msb = 8'h35;
+    localparam  ext = 58'h3c0000000000000;
+    
+    // Local signals
+    reg  [57:0] wide;
+    reg  [57:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 58'h3ffffffffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 58'h3ffffffffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 28'hfffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_ra
+
+
+module vector$lanes$0$rs_rb(x,by,y);
+    
+    // Module arguments
+    input wire  [53:0] x;
+    input wire  [7:0] by;
+    output reg  [27:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h2;
+    localparam  rsh = 8'h0;
+    localparam  msb = 8'h35;
+    localparam  ext = 58'h3c0000000000000;
+    
+    // Local signals
+    reg  [57:0] wide;
+    reg  [57:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 58'h3ffffffffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 58'h3ffffffffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 28'hfffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_rb
+
+
+module vector$lanes$0$rs_z(x,by,y);
+    
+    // Module arguments
+    input wire  [47:0] x;
+    input wire  [7:0] by;
+    output reg  [35:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h0;
+    localparam  rsh = 8'h8;
+    localparam  msb = 8'h2f;
+    localparam  ext = 48'h0;
+    
+    // Local signals
+    reg  [47:0] wide;
+    reg  [47:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 48'hffffffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 48'hffffffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 36'hfffffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_z
+
+
+module vector$lanes$0$rs_z0(x,by,y);
+    
+    // Module arguments
+    input wire  [18:0] x;
+    input wire  [7:0] by;
+    output reg  [35:0] y;
+    
+    // Constant declarations
+    localparam  lsh = 8'h12;
+    localparam  rsh = 8'h0;
+    localparam  msb = 8'h12;
+    localparam  ext = 36'hffff80000;
+    
+    // Local signals
+    reg  [35:0] wide;
+    reg  [35:0] shifted;
+    
+    // Update code
+    always @(*) begin
+        wide = ((x) & 36'hfffffffff);
+        if (x[msb]) begin
+            wide = ((x) & 36'hfffffffff) | ext;
+        end
+        shifted = ((wide << lsh) >> rsh) >> by;
+        y = ((shifted) & 36'hfffffffff);
+    end
+    
+endmodule // vector$lanes$0$rs_z0
+
+
+module vector$lanes$0$sum7(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 30'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$sum7
+
+
+module vector$lanes$0$sum8(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 30'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$sum8
+
+
+module vector$lanes$0$z6(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$lanes$0$z6
+
+
 module vector$lead_a(x,pos);
     
     // Module arguments
@@ -17901,142 +24623,6 @@ module vector$lead_a(x,pos);
 endmodule // vector$lead_a
 
 
-module vector$lead_s(x,pos);
-    
-    // Module arguments
-    input wire  [29:0] x;
-    output reg  [7:0] pos;
-    
-    // Constant declarations
-    localparam  index$0 = 8'h0;
-    localparam  index$1 = 8'h1;
-    localparam  index$2 = 8'h2;
-    localparam  index$3 = 8'h3;
-    localparam  index$4 = 8'h4;
-    localparam  index$5 = 8'h5;
-    localparam  index$6 = 8'h6;
-    localparam  index$7 = 8'h7;
-    localparam  index$8 = 8'h8;
-    localparam  index$9 = 8'h9;
-    localparam  index$10 = 8'ha;
-    localparam  index$11 = 8'hb;
-    localparam  index$12 = 8'hc;
-    localparam  index$13 = 8'hd;
-    localparam  index$14 = 8'he;
-    localparam  index$15 = 8'hf;
-    localparam  index$16 = 8'h10;
-    localparam  index$17 = 8'h11;
-    localparam  index$18 = 8'h12;
-    localparam  index$19 = 8'h13;
-    localparam  index$20 = 8'h14;
-    localparam  index$21 = 8'h15;
-    localparam  index$22 = 8'h16;
-    localparam  index$23 = 8'h17;
-    localparam  index$24 = 8'h18;
-    localparam  index$25 = 8'h19;
-    localparam  index$26 = 8'h1a;
-    localparam  index$27 = 8'h1b;
-    localparam  index$28 = 8'h1c;
-    localparam  index$29 = 8'h1d;
-    
-    // Update code
-    always @(*) begin
-        pos = 32'h0;
-        if (x[0]) begin
-            pos = index$0;
-        end
-        if (x[1]) begin
-            pos = index$1;
-        end
-        if (x[2]) begin
-            pos = index$2;
-        end
-        if (x[3]) begin
-            pos = index$3;
-        end
-        if (x[4]) begin
-            pos = index$4;
-        end
-        if (x[5]) begin
-            pos = index$5;
-        end
-        if (x[6]) begin
-            pos = index$6;
-        end
-        if (x[7]) begin
-            pos = index$7;
-        end
-        if (x[8]) begin
-            pos = index$8;
-        end
-        if (x[9]) begin
-            pos = index$9;
-        end
-        if (x[10]) begin
-            pos = index$10;
-        end
-        if (x[11]) begin
-            pos = index$11;
-        end
-        if (x[12]) begin
-            pos = index$12;
-        end
-        if (x[13]) begin
-            pos = index$13;
-        end
-        if (x[14]) begin
-            pos = index$14;
-        end
-        if (x[15]) begin
-            pos = index$15;
-        end
-        if (x[16]) begin
-            pos = index$16;
-        end
-        if (x[17]) begin
-            pos = index$17;
-        end
-        if (x[18]) begin
-            pos = index$18;
-        end
-        if (x[19]) begin
-            pos = index$19;
-        end
-        if (x[20]) begin
-            pos = index$20;
-        end
-        if (x[21]) begin
-            pos = index$21;
-        end
-        if (x[22]) begin
-            pos = index$22;
-        end
-        if (x[23]) begin
-            pos = index$23;
-        end
-        if (x[24]) begin
-            pos = index$24;
-        end
-        if (x[25]) begin
-            pos = index$25;
-        end
-        if (x[26]) begin
-            pos = index$26;
-        end
-        if (x[27]) begin
-            pos = index$27;
-        end
-        if (x[28]) begin
-            pos = index$28;
-        end
-        if (x[29]) begin
-            pos = index$29;
-        end
-    end
-    
-endmodule // vector$lead_s
-
-
 module vector$mant(d,q,clock);
     
     // Module arguments
@@ -18130,1787 +24716,6 @@ module vector$min_yr(d,q,clock);
     end
           
 endmodule // vector$min_yr
-
-
-module vector$mul_a(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [34:0] a;
-    input wire  [25:0] b;
-    output reg  [60:0] p;
-    
-    // Stub signals
-    reg  [34:0] a_r$d;
-    wire  [34:0] a_r$q;
-    reg  a_r$clock;
-    reg  [25:0] b_r$d;
-    wire  [25:0] b_r$q;
-    reg  b_r$clock;
-    reg  [60:0] p_r$d;
-    wire  [60:0] p_r$q;
-    reg  p_r$clock;
-    reg  [34:0] mul$a;
-    reg  [25:0] mul$b;
-    wire  [60:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_a$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_a$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_a$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_a$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_a
-
-
-module vector$mul_a$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_a$a_r
-
-
-module vector$mul_a$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [25:0] d;
-    output reg  [25:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 26'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_a$b_r
-
-
-module vector$mul_a$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [34:0] a;
-    input wire  [25:0] b;
-    output reg  [60:0] p;
-    
-    // Update code (custom)
-    // p = low 61 bits of a * b, both signed: a signed 61-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_a$mul
-
-
-module vector$mul_a$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [60:0] d;
-    output reg  [60:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 61'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_a$p_r
-
-
-module vector$mul_b(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [34:0] a;
-    input wire  [25:0] b;
-    output reg  [60:0] p;
-    
-    // Stub signals
-    reg  [34:0] a_r$d;
-    wire  [34:0] a_r$q;
-    reg  a_r$clock;
-    reg  [25:0] b_r$d;
-    wire  [25:0] b_r$q;
-    reg  b_r$clock;
-    reg  [60:0] p_r$d;
-    wire  [60:0] p_r$q;
-    reg  p_r$clock;
-    reg  [34:0] mul$a;
-    reg  [25:0] mul$b;
-    wire  [60:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_b$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_b$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_b$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_b$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_b
-
-
-module vector$mul_b$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_b$a_r
-
-
-module vector$mul_b$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [25:0] d;
-    output reg  [25:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 26'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_b$b_r
-
-
-module vector$mul_b$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [34:0] a;
-    input wire  [25:0] b;
-    output reg  [60:0] p;
-    
-    // Update code (custom)
-    // p = low 61 bits of a * b, both signed: a signed 61-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_b$mul
-
-
-module vector$mul_b$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [60:0] d;
-    output reg  [60:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 61'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_b$p_r
-
-
-module vector$mul_c1$0(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [8:0] a;
-    input wire  [27:0] b;
-    output reg  [37:0] p;
-    
-    // Stub signals
-    reg  [8:0] a_r$d;
-    wire  [8:0] a_r$q;
-    reg  a_r$clock;
-    reg  [27:0] b_r$d;
-    wire  [27:0] b_r$q;
-    reg  b_r$clock;
-    reg  [37:0] p_r$d;
-    wire  [37:0] p_r$q;
-    reg  p_r$clock;
-    reg  [8:0] mul$a;
-    reg  [27:0] mul$b;
-    wire  [37:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_c1$0$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_c1$0$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_c1$0$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_c1$0$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_c1$0
-
-
-module vector$mul_c1$0$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 9'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c1$0$a_r
-
-
-module vector$mul_c1$0$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c1$0$b_r
-
-
-module vector$mul_c1$0$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [8:0] a;
-    input wire  [27:0] b;
-    output reg  [37:0] p;
-    
-    // Update code (custom)
-    // p = low 38 bits of a * b, both signed: a signed 38-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_c1$0$mul
-
-
-module vector$mul_c1$0$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [37:0] d;
-    output reg  [37:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 38'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c1$0$p_r
-
-
-module vector$mul_c1$1(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [8:0] a;
-    input wire  [27:0] b;
-    output reg  [37:0] p;
-    
-    // Stub signals
-    reg  [8:0] a_r$d;
-    wire  [8:0] a_r$q;
-    reg  a_r$clock;
-    reg  [27:0] b_r$d;
-    wire  [27:0] b_r$q;
-    reg  b_r$clock;
-    reg  [37:0] p_r$d;
-    wire  [37:0] p_r$q;
-    reg  p_r$clock;
-    reg  [8:0] mul$a;
-    reg  [27:0] mul$b;
-    wire  [37:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_c1$1$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_c1$1$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_c1$1$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_c1$1$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_c1$1
-
-
-module vector$mul_c1$1$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 9'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c1$1$a_r
-
-
-module vector$mul_c1$1$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c1$1$b_r
-
-
-module vector$mul_c1$1$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [8:0] a;
-    input wire  [27:0] b;
-    output reg  [37:0] p;
-    
-    // Update code (custom)
-    // p = low 38 bits of a * b, both signed: a signed 38-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_c1$1$mul
-
-
-module vector$mul_c1$1$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [37:0] d;
-    output reg  [37:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 38'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c1$1$p_r
-
-
-module vector$mul_c1$2(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [8:0] a;
-    input wire  [27:0] b;
-    output reg  [37:0] p;
-    
-    // Stub signals
-    reg  [8:0] a_r$d;
-    wire  [8:0] a_r$q;
-    reg  a_r$clock;
-    reg  [27:0] b_r$d;
-    wire  [27:0] b_r$q;
-    reg  b_r$clock;
-    reg  [37:0] p_r$d;
-    wire  [37:0] p_r$q;
-    reg  p_r$clock;
-    reg  [8:0] mul$a;
-    reg  [27:0] mul$b;
-    wire  [37:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_c1$2$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_c1$2$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_c1$2$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_c1$2$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_c1$2
-
-
-module vector$mul_c1$2$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 9'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c1$2$a_r
-
-
-module vector$mul_c1$2$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c1$2$b_r
-
-
-module vector$mul_c1$2$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [8:0] a;
-    input wire  [27:0] b;
-    output reg  [37:0] p;
-    
-    // Update code (custom)
-    // p = low 38 bits of a * b, both signed: a signed 38-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_c1$2$mul
-
-
-module vector$mul_c1$2$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [37:0] d;
-    output reg  [37:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 38'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c1$2$p_r
-
-
-module vector$mul_c2$0(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [8:0] a;
-    input wire  [27:0] b;
-    output reg  [37:0] p;
-    
-    // Stub signals
-    reg  [8:0] a_r$d;
-    wire  [8:0] a_r$q;
-    reg  a_r$clock;
-    reg  [27:0] b_r$d;
-    wire  [27:0] b_r$q;
-    reg  b_r$clock;
-    reg  [37:0] p_r$d;
-    wire  [37:0] p_r$q;
-    reg  p_r$clock;
-    reg  [8:0] mul$a;
-    reg  [27:0] mul$b;
-    wire  [37:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_c2$0$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_c2$0$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_c2$0$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_c2$0$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_c2$0
-
-
-module vector$mul_c2$0$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 9'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c2$0$a_r
-
-
-module vector$mul_c2$0$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c2$0$b_r
-
-
-module vector$mul_c2$0$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [8:0] a;
-    input wire  [27:0] b;
-    output reg  [37:0] p;
-    
-    // Update code (custom)
-    // p = low 38 bits of a * b, both signed: a signed 38-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_c2$0$mul
-
-
-module vector$mul_c2$0$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [37:0] d;
-    output reg  [37:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 38'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c2$0$p_r
-
-
-module vector$mul_c2$1(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [8:0] a;
-    input wire  [27:0] b;
-    output reg  [37:0] p;
-    
-    // Stub signals
-    reg  [8:0] a_r$d;
-    wire  [8:0] a_r$q;
-    reg  a_r$clock;
-    reg  [27:0] b_r$d;
-    wire  [27:0] b_r$q;
-    reg  b_r$clock;
-    reg  [37:0] p_r$d;
-    wire  [37:0] p_r$q;
-    reg  p_r$clock;
-    reg  [8:0] mul$a;
-    reg  [27:0] mul$b;
-    wire  [37:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_c2$1$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_c2$1$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_c2$1$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_c2$1$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_c2$1
-
-
-module vector$mul_c2$1$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 9'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c2$1$a_r
-
-
-module vector$mul_c2$1$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c2$1$b_r
-
-
-module vector$mul_c2$1$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [8:0] a;
-    input wire  [27:0] b;
-    output reg  [37:0] p;
-    
-    // Update code (custom)
-    // p = low 38 bits of a * b, both signed: a signed 38-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_c2$1$mul
-
-
-module vector$mul_c2$1$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [37:0] d;
-    output reg  [37:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 38'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c2$1$p_r
-
-
-module vector$mul_c2$2(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [8:0] a;
-    input wire  [27:0] b;
-    output reg  [37:0] p;
-    
-    // Stub signals
-    reg  [8:0] a_r$d;
-    wire  [8:0] a_r$q;
-    reg  a_r$clock;
-    reg  [27:0] b_r$d;
-    wire  [27:0] b_r$q;
-    reg  b_r$clock;
-    reg  [37:0] p_r$d;
-    wire  [37:0] p_r$q;
-    reg  p_r$clock;
-    reg  [8:0] mul$a;
-    reg  [27:0] mul$b;
-    wire  [37:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_c2$2$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_c2$2$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_c2$2$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_c2$2$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_c2$2
-
-
-module vector$mul_c2$2$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 9'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c2$2$a_r
-
-
-module vector$mul_c2$2$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c2$2$b_r
-
-
-module vector$mul_c2$2$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [8:0] a;
-    input wire  [27:0] b;
-    output reg  [37:0] p;
-    
-    // Update code (custom)
-    // p = low 38 bits of a * b, both signed: a signed 38-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_c2$2$mul
-
-
-module vector$mul_c2$2$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [37:0] d;
-    output reg  [37:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 38'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_c2$2$p_r
-
-
-module vector$mul_l$0(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [27:0] a;
-    input wire  [16:0] b;
-    output reg  [44:0] p;
-    
-    // Stub signals
-    reg  [27:0] a_r$d;
-    wire  [27:0] a_r$q;
-    reg  a_r$clock;
-    reg  [16:0] b_r$d;
-    wire  [16:0] b_r$q;
-    reg  b_r$clock;
-    reg  [44:0] p_r$d;
-    wire  [44:0] p_r$q;
-    reg  p_r$clock;
-    reg  [27:0] mul$a;
-    reg  [16:0] mul$b;
-    wire  [44:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_l$0$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_l$0$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_l$0$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_l$0$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_l$0
-
-
-module vector$mul_l$0$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_l$0$a_r
-
-
-module vector$mul_l$0$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_l$0$b_r
-
-
-module vector$mul_l$0$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [27:0] a;
-    input wire  [16:0] b;
-    output reg  [44:0] p;
-    
-    // Update code (custom)
-    // p = low 45 bits of a * b, both signed: a signed 45-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_l$0$mul
-
-
-module vector$mul_l$0$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [44:0] d;
-    output reg  [44:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 45'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_l$0$p_r
-
-
-module vector$mul_l$1(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [27:0] a;
-    input wire  [16:0] b;
-    output reg  [44:0] p;
-    
-    // Stub signals
-    reg  [27:0] a_r$d;
-    wire  [27:0] a_r$q;
-    reg  a_r$clock;
-    reg  [16:0] b_r$d;
-    wire  [16:0] b_r$q;
-    reg  b_r$clock;
-    reg  [44:0] p_r$d;
-    wire  [44:0] p_r$q;
-    reg  p_r$clock;
-    reg  [27:0] mul$a;
-    reg  [16:0] mul$b;
-    wire  [44:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_l$1$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_l$1$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_l$1$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_l$1$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_l$1
-
-
-module vector$mul_l$1$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_l$1$a_r
-
-
-module vector$mul_l$1$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_l$1$b_r
-
-
-module vector$mul_l$1$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [27:0] a;
-    input wire  [16:0] b;
-    output reg  [44:0] p;
-    
-    // Update code (custom)
-    // p = low 45 bits of a * b, both signed: a signed 45-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_l$1$mul
-
-
-module vector$mul_l$1$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [44:0] d;
-    output reg  [44:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 45'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_l$1$p_r
-
-
-module vector$mul_l$2(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [27:0] a;
-    input wire  [16:0] b;
-    output reg  [44:0] p;
-    
-    // Stub signals
-    reg  [27:0] a_r$d;
-    wire  [27:0] a_r$q;
-    reg  a_r$clock;
-    reg  [16:0] b_r$d;
-    wire  [16:0] b_r$q;
-    reg  b_r$clock;
-    reg  [44:0] p_r$d;
-    wire  [44:0] p_r$q;
-    reg  p_r$clock;
-    reg  [27:0] mul$a;
-    reg  [16:0] mul$b;
-    wire  [44:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_l$2$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_l$2$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_l$2$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_l$2$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_l$2
-
-
-module vector$mul_l$2$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_l$2$a_r
-
-
-module vector$mul_l$2$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_l$2$b_r
-
-
-module vector$mul_l$2$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [27:0] a;
-    input wire  [16:0] b;
-    output reg  [44:0] p;
-    
-    // Update code (custom)
-    // p = low 45 bits of a * b, both signed: a signed 45-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_l$2$mul
-
-
-module vector$mul_l$2$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [44:0] d;
-    output reg  [44:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 45'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_l$2$p_r
-
-
-module vector$mul_ra(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [27:0] a;
-    input wire  [25:0] b;
-    output reg  [53:0] p;
-    
-    // Stub signals
-    reg  [27:0] a_r$d;
-    wire  [27:0] a_r$q;
-    reg  a_r$clock;
-    reg  [25:0] b_r$d;
-    wire  [25:0] b_r$q;
-    reg  b_r$clock;
-    reg  [53:0] p_r$d;
-    wire  [53:0] p_r$q;
-    reg  p_r$clock;
-    reg  [27:0] mul$a;
-    reg  [25:0] mul$b;
-    wire  [53:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_ra$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_ra$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_ra$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_ra$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_ra
-
-
-module vector$mul_ra$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_ra$a_r
-
-
-module vector$mul_ra$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [25:0] d;
-    output reg  [25:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 26'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_ra$b_r
-
-
-module vector$mul_ra$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [27:0] a;
-    input wire  [25:0] b;
-    output reg  [53:0] p;
-    
-    // Update code (custom)
-    // p = low 54 bits of a * b, both signed: a signed 54-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_ra$mul
-
-
-module vector$mul_ra$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [53:0] d;
-    output reg  [53:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 54'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_ra$p_r
-
-
-module vector$mul_rb(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [27:0] a;
-    input wire  [25:0] b;
-    output reg  [53:0] p;
-    
-    // Stub signals
-    reg  [27:0] a_r$d;
-    wire  [27:0] a_r$q;
-    reg  a_r$clock;
-    reg  [25:0] b_r$d;
-    wire  [25:0] b_r$q;
-    reg  b_r$clock;
-    reg  [53:0] p_r$d;
-    wire  [53:0] p_r$q;
-    reg  p_r$clock;
-    reg  [27:0] mul$a;
-    reg  [25:0] mul$b;
-    wire  [53:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_rb$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_rb$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_rb$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_rb$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_rb
-
-
-module vector$mul_rb$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_rb$a_r
-
-
-module vector$mul_rb$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [25:0] d;
-    output reg  [25:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 26'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_rb$b_r
-
-
-module vector$mul_rb$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [27:0] a;
-    input wire  [25:0] b;
-    output reg  [53:0] p;
-    
-    // Update code (custom)
-    // p = low 54 bits of a * b, both signed: a signed 54-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_rb$mul
-
-
-module vector$mul_rb$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [53:0] d;
-    output reg  [53:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 54'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_rb$p_r
 
 
 module vector$mul_s$0(clock,en,a,b,p);
@@ -20187,280 +24992,6 @@ module vector$mul_s$1$p_r(d,q,clock);
 endmodule // vector$mul_s$1$p_r
 
 
-module vector$mul_z1(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [18:0] a;
-    input wire  [27:0] b;
-    output reg  [47:0] p;
-    
-    // Stub signals
-    reg  [18:0] a_r$d;
-    wire  [18:0] a_r$q;
-    reg  a_r$clock;
-    reg  [27:0] b_r$d;
-    wire  [27:0] b_r$q;
-    reg  b_r$clock;
-    reg  [47:0] p_r$d;
-    wire  [47:0] p_r$q;
-    reg  p_r$clock;
-    reg  [18:0] mul$a;
-    reg  [27:0] mul$b;
-    wire  [47:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_z1$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_z1$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_z1$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_z1$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_z1
-
-
-module vector$mul_z1$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [18:0] d;
-    output reg  [18:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 19'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_z1$a_r
-
-
-module vector$mul_z1$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_z1$b_r
-
-
-module vector$mul_z1$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [18:0] a;
-    input wire  [27:0] b;
-    output reg  [47:0] p;
-    
-    // Update code (custom)
-    // p = low 48 bits of a * b, both signed: a signed 48-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_z1$mul
-
-
-module vector$mul_z1$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [47:0] d;
-    output reg  [47:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 48'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_z1$p_r
-
-
-module vector$mul_z2(clock,en,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [18:0] a;
-    input wire  [27:0] b;
-    output reg  [47:0] p;
-    
-    // Stub signals
-    reg  [18:0] a_r$d;
-    wire  [18:0] a_r$q;
-    reg  a_r$clock;
-    reg  [27:0] b_r$d;
-    wire  [27:0] b_r$q;
-    reg  b_r$clock;
-    reg  [47:0] p_r$d;
-    wire  [47:0] p_r$q;
-    reg  p_r$clock;
-    reg  [18:0] mul$a;
-    reg  [27:0] mul$b;
-    wire  [47:0] mul$p;
-    
-    // Sub module instances
-    vector$mul_z2$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    vector$mul_z2$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    vector$mul_z2$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    vector$mul_z2$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
-    end
-    
-endmodule // vector$mul_z2
-
-
-module vector$mul_z2$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [18:0] d;
-    output reg  [18:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 19'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_z2$a_r
-
-
-module vector$mul_z2$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_z2$b_r
-
-
-module vector$mul_z2$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [18:0] a;
-    input wire  [27:0] b;
-    output reg  [47:0] p;
-    
-    // Update code (custom)
-    // p = low 48 bits of a * b, both signed: a signed 48-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // vector$mul_z2$mul
-
-
-module vector$mul_z2$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [47:0] d;
-    output reg  [47:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 48'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$mul_z2$p_r
-
-
 module vector$neg_hi_x(x,neg);
     
     // Module arguments
@@ -20529,6 +25060,23 @@ module vector$neg_lo_y(x,neg);
 endmodule // vector$neg_lo_y
 
 
+module vector$neg_top(x,neg);
+    
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 16'h8000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$neg_top
+
+
 module vector$norm_a(x,exp,d);
     
     // Module arguments
@@ -20557,112 +25105,6 @@ module vector$norm_a(x,exp,d);
     end
     
 endmodule // vector$norm_a
-
-
-module vector$norm_s(x,exp,d);
-    
-    // Module arguments
-    input wire  [29:0] x;
-    input wire  [7:0] exp;
-    output reg  [33:0] d;
-    
-    // Constant declarations
-    localparam  top = 8'h20;
-    
-    // Local signals
-    reg  [7:0] lsh;
-    reg  [7:0] rsh;
-    reg  [33:0] wide;
-    
-    // Update code
-    always @(*) begin
-        lsh = top - exp;
-        rsh = 32'h0;
-        if (exp > top) begin
-            lsh = 32'h0;
-            rsh = exp - top;
-        end
-        wide = (((x) & 34'h3ffffffff) << lsh) >> rsh;
-        d = ((wide) & 34'h3ffffffff);
-    end
-    
-endmodule // vector$norm_s
-
-
-module vector$o_rgb$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$o_rgb$0
-
-
-module vector$o_rgb$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$o_rgb$1
-
-
-module vector$o_rgb$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$o_rgb$2
-
-
-module vector$o_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$o_valid
 
 
 module vector$o_x(d,q,clock);
@@ -20703,41 +25145,6 @@ module vector$o_y(d,q,clock);
 endmodule // vector$o_y
 
 
-module vector$o_z(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$o_z
-
-
-module vector$persp(on);
-    
-    // Module arguments
-    output reg  on;
-    
-    // Constant declarations
-    localparam  value = 1'b1;
-    
-    // Update code
-    always @(*) begin
-        on = value;
-    end
-    
-endmodule // vector$persp
-
-
 module vector$ph(d,q,clock);
     
     // Module arguments
@@ -20757,1373 +25164,683 @@ module vector$ph(d,q,clock);
 endmodule // vector$ph
 
 
-module vector$q6$0(d,q,clock);
+module vector$place_rgb$0(x,y);
     
     // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
+    input wire  [23:0] x;
+    output reg  [23:0] y;
     
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
+    // Constant declarations
+    localparam  at = 16'h0;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 24'hffffff) << at;
     end
     
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q6$0
+endmodule // vector$place_rgb$0
 
 
-module vector$q6$1(d,q,clock);
+module vector$place_z$0(x,y);
     
     // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
+    input wire  [15:0] x;
+    output reg  [15:0] y;
     
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
+    // Constant declarations
+    localparam  at = 16'h0;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 16'hffff) << at;
     end
     
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q6$1
+endmodule // vector$place_z$0
 
 
-module vector$q6$2(d,q,clock);
+module vector$rej_lf$0(e,owns,rejects);
     
     // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 28'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q6$2
-
-
-module vector$q_dl(clock,en,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  en;
-    input wire  [55:0] d;
-    output reg  [55:0] q;
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
     
     // Stub signals
-    reg  [55:0] stages$0$d;
-    wire  [55:0] stages$0$q;
-    reg  stages$0$clock;
-    reg  [55:0] stages$1$d;
-    wire  [55:0] stages$1$q;
-    reg  stages$1$clock;
-    reg  [55:0] stages$2$d;
-    wire  [55:0] stages$2$q;
-    reg  stages$2$clock;
-    reg  [55:0] stages$3$d;
-    wire  [55:0] stages$3$q;
-    reg  stages$3$clock;
-    reg  [55:0] stages$4$d;
-    wire  [55:0] stages$4$q;
-    reg  stages$4$clock;
-    reg  [55:0] stages$5$d;
-    wire  [55:0] stages$5$q;
-    reg  stages$5$clock;
-    reg  [55:0] stages$6$d;
-    wire  [55:0] stages$6$q;
-    reg  stages$6$clock;
-    reg  [55:0] stages$7$d;
-    wire  [55:0] stages$7$q;
-    reg  stages$7$clock;
-    reg  [55:0] stages$8$d;
-    wire  [55:0] stages$8$q;
-    reg  stages$8$clock;
-    reg  [55:0] stages$9$d;
-    wire  [55:0] stages$9$q;
-    reg  stages$9$clock;
-    reg  [55:0] stages$10$d;
-    wire  [55:0] stages$10$q;
-    reg  stages$10$clock;
-    reg  [55:0] stages$11$d;
-    wire  [55:0] stages$11$q;
-    reg  stages$11$clock;
-    reg  [55:0] stages$12$d;
-    wire  [55:0] stages$12$q;
-    reg  stages$12$clock;
-    reg  [55:0] stages$13$d;
-    wire  [55:0] stages$13$q;
-    reg  stages$13$clock;
-    reg  [55:0] stages$14$d;
-    wire  [55:0] stages$14$q;
-    reg  stages$14$clock;
-    reg  [55:0] stages$15$d;
-    wire  [55:0] stages$15$q;
-    reg  stages$15$clock;
-    reg  [55:0] stages$16$d;
-    wire  [55:0] stages$16$q;
-    reg  stages$16$clock;
-    reg  [55:0] stages$17$d;
-    wire  [55:0] stages$17$q;
-    reg  stages$17$clock;
-    reg  [55:0] stages$18$d;
-    wire  [55:0] stages$18$q;
-    reg  stages$18$clock;
-    reg  [55:0] stages$19$d;
-    wire  [55:0] stages$19$q;
-    reg  stages$19$clock;
-    reg  [55:0] stages$20$d;
-    wire  [55:0] stages$20$q;
-    reg  stages$20$clock;
-    reg  [55:0] stages$21$d;
-    wire  [55:0] stages$21$q;
-    reg  stages$21$clock;
-    reg  [55:0] stages$22$d;
-    wire  [55:0] stages$22$q;
-    reg  stages$22$clock;
-    reg  [55:0] stages$23$d;
-    wire  [55:0] stages$23$q;
-    reg  stages$23$clock;
-    reg  [55:0] stages$24$d;
-    wire  [55:0] stages$24$q;
-    reg  stages$24$clock;
-    reg  [55:0] stages$25$d;
-    wire  [55:0] stages$25$q;
-    reg  stages$25$clock;
-    reg  [55:0] stages$26$d;
-    wire  [55:0] stages$26$q;
-    reg  stages$26$clock;
-    reg  [55:0] stages$27$d;
-    wire  [55:0] stages$27$q;
-    reg  stages$27$clock;
+    reg  [34:0] neg$x;
+    wire  neg$neg;
     
     // Sub module instances
-    vector$q_dl$stages$0 stages$0(
-        .d(stages$0$d),
-        .q(stages$0$q),
-        .clock(stages$0$clock)
-    );
-    vector$q_dl$stages$1 stages$1(
-        .d(stages$1$d),
-        .q(stages$1$q),
-        .clock(stages$1$clock)
-    );
-    vector$q_dl$stages$2 stages$2(
-        .d(stages$2$d),
-        .q(stages$2$q),
-        .clock(stages$2$clock)
-    );
-    vector$q_dl$stages$3 stages$3(
-        .d(stages$3$d),
-        .q(stages$3$q),
-        .clock(stages$3$clock)
-    );
-    vector$q_dl$stages$4 stages$4(
-        .d(stages$4$d),
-        .q(stages$4$q),
-        .clock(stages$4$clock)
-    );
-    vector$q_dl$stages$5 stages$5(
-        .d(stages$5$d),
-        .q(stages$5$q),
-        .clock(stages$5$clock)
-    );
-    vector$q_dl$stages$6 stages$6(
-        .d(stages$6$d),
-        .q(stages$6$q),
-        .clock(stages$6$clock)
-    );
-    vector$q_dl$stages$7 stages$7(
-        .d(stages$7$d),
-        .q(stages$7$q),
-        .clock(stages$7$clock)
-    );
-    vector$q_dl$stages$8 stages$8(
-        .d(stages$8$d),
-        .q(stages$8$q),
-        .clock(stages$8$clock)
-    );
-    vector$q_dl$stages$9 stages$9(
-        .d(stages$9$d),
-        .q(stages$9$q),
-        .clock(stages$9$clock)
-    );
-    vector$q_dl$stages$10 stages$10(
-        .d(stages$10$d),
-        .q(stages$10$q),
-        .clock(stages$10$clock)
-    );
-    vector$q_dl$stages$11 stages$11(
-        .d(stages$11$d),
-        .q(stages$11$q),
-        .clock(stages$11$clock)
-    );
-    vector$q_dl$stages$12 stages$12(
-        .d(stages$12$d),
-        .q(stages$12$q),
-        .clock(stages$12$clock)
-    );
-    vector$q_dl$stages$13 stages$13(
-        .d(stages$13$d),
-        .q(stages$13$q),
-        .clock(stages$13$clock)
-    );
-    vector$q_dl$stages$14 stages$14(
-        .d(stages$14$d),
-        .q(stages$14$q),
-        .clock(stages$14$clock)
-    );
-    vector$q_dl$stages$15 stages$15(
-        .d(stages$15$d),
-        .q(stages$15$q),
-        .clock(stages$15$clock)
-    );
-    vector$q_dl$stages$16 stages$16(
-        .d(stages$16$d),
-        .q(stages$16$q),
-        .clock(stages$16$clock)
-    );
-    vector$q_dl$stages$17 stages$17(
-        .d(stages$17$d),
-        .q(stages$17$q),
-        .clock(stages$17$clock)
-    );
-    vector$q_dl$stages$18 stages$18(
-        .d(stages$18$d),
-        .q(stages$18$q),
-        .clock(stages$18$clock)
-    );
-    vector$q_dl$stages$19 stages$19(
-        .d(stages$19$d),
-        .q(stages$19$q),
-        .clock(stages$19$clock)
-    );
-    vector$q_dl$stages$20 stages$20(
-        .d(stages$20$d),
-        .q(stages$20$q),
-        .clock(stages$20$clock)
-    );
-    vector$q_dl$stages$21 stages$21(
-        .d(stages$21$d),
-        .q(stages$21$q),
-        .clock(stages$21$clock)
-    );
-    vector$q_dl$stages$22 stages$22(
-        .d(stages$22$d),
-        .q(stages$22$q),
-        .clock(stages$22$clock)
-    );
-    vector$q_dl$stages$23 stages$23(
-        .d(stages$23$d),
-        .q(stages$23$q),
-        .clock(stages$23$clock)
-    );
-    vector$q_dl$stages$24 stages$24(
-        .d(stages$24$d),
-        .q(stages$24$q),
-        .clock(stages$24$clock)
-    );
-    vector$q_dl$stages$25 stages$25(
-        .d(stages$25$d),
-        .q(stages$25$q),
-        .clock(stages$25$clock)
-    );
-    vector$q_dl$stages$26 stages$26(
-        .d(stages$26$d),
-        .q(stages$26$q),
-        .clock(stages$26$clock)
-    );
-    vector$q_dl$stages$27 stages$27(
-        .d(stages$27$d),
-        .q(stages$27$q),
-        .clock(stages$27$clock)
+    vector$rej_lf$0$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
     );
     
     // Update code
     always @(*) begin
-        stages$0$clock = clock;
-        stages$0$d = stages$0$q;
-        stages$1$clock = clock;
-        stages$1$d = stages$1$q;
-        stages$2$clock = clock;
-        stages$2$d = stages$2$q;
-        stages$3$clock = clock;
-        stages$3$d = stages$3$q;
-        stages$4$clock = clock;
-        stages$4$d = stages$4$q;
-        stages$5$clock = clock;
-        stages$5$d = stages$5$q;
-        stages$6$clock = clock;
-        stages$6$d = stages$6$q;
-        stages$7$clock = clock;
-        stages$7$d = stages$7$q;
-        stages$8$clock = clock;
-        stages$8$d = stages$8$q;
-        stages$9$clock = clock;
-        stages$9$d = stages$9$q;
-        stages$10$clock = clock;
-        stages$10$d = stages$10$q;
-        stages$11$clock = clock;
-        stages$11$d = stages$11$q;
-        stages$12$clock = clock;
-        stages$12$d = stages$12$q;
-        stages$13$clock = clock;
-        stages$13$d = stages$13$q;
-        stages$14$clock = clock;
-        stages$14$d = stages$14$q;
-        stages$15$clock = clock;
-        stages$15$d = stages$15$q;
-        stages$16$clock = clock;
-        stages$16$d = stages$16$q;
-        stages$17$clock = clock;
-        stages$17$d = stages$17$q;
-        stages$18$clock = clock;
-        stages$18$d = stages$18$q;
-        stages$19$clock = clock;
-        stages$19$d = stages$19$q;
-        stages$20$clock = clock;
-        stages$20$d = stages$20$q;
-        stages$21$clock = clock;
-        stages$21$d = stages$21$q;
-        stages$22$clock = clock;
-        stages$22$d = stages$22$q;
-        stages$23$clock = clock;
-        stages$23$d = stages$23$q;
-        stages$24$clock = clock;
-        stages$24$d = stages$24$q;
-        stages$25$clock = clock;
-        stages$25$d = stages$25$q;
-        stages$26$clock = clock;
-        stages$26$d = stages$26$q;
-        stages$27$clock = clock;
-        stages$27$d = stages$27$q;
-        if (en) begin
-            stages$0$d = d;
-            stages$1$d = stages$0$q;
-            stages$2$d = stages$1$q;
-            stages$3$d = stages$2$q;
-            stages$4$d = stages$3$q;
-            stages$5$d = stages$4$q;
-            stages$6$d = stages$5$q;
-            stages$7$d = stages$6$q;
-            stages$8$d = stages$7$q;
-            stages$9$d = stages$8$q;
-            stages$10$d = stages$9$q;
-            stages$11$d = stages$10$q;
-            stages$12$d = stages$11$q;
-            stages$13$d = stages$12$q;
-            stages$14$d = stages$13$q;
-            stages$15$d = stages$14$q;
-            stages$16$d = stages$15$q;
-            stages$17$d = stages$16$q;
-            stages$18$d = stages$17$q;
-            stages$19$d = stages$18$q;
-            stages$20$d = stages$19$q;
-            stages$21$d = stages$20$q;
-            stages$22$d = stages$21$q;
-            stages$23$d = stages$22$q;
-            stages$24$d = stages$23$q;
-            stages$25$d = stages$24$q;
-            stages$26$d = stages$25$q;
-            stages$27$d = stages$26$q;
-        end
-        q = stages$27$q;
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
     end
     
-endmodule // vector$q_dl
+endmodule // vector$rej_lf$0
 
 
-module vector$q_dl$stages$0(d,q,clock);
+module vector$rej_lf$0$neg(x,neg);
     
     // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$0
-
-
-module vector$q_dl$stages$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$1
-
-
-module vector$q_dl$stages$10(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$10
-
-
-module vector$q_dl$stages$11(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$11
-
-
-module vector$q_dl$stages$12(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$12
-
-
-module vector$q_dl$stages$13(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$13
-
-
-module vector$q_dl$stages$14(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$14
-
-
-module vector$q_dl$stages$15(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$15
-
-
-module vector$q_dl$stages$16(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$16
-
-
-module vector$q_dl$stages$17(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$17
-
-
-module vector$q_dl$stages$18(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$18
-
-
-module vector$q_dl$stages$19(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$19
-
-
-module vector$q_dl$stages$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$2
-
-
-module vector$q_dl$stages$20(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$20
-
-
-module vector$q_dl$stages$21(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$21
-
-
-module vector$q_dl$stages$22(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$22
-
-
-module vector$q_dl$stages$23(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$23
-
-
-module vector$q_dl$stages$24(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$24
-
-
-module vector$q_dl$stages$25(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$25
-
-
-module vector$q_dl$stages$26(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$26
-
-
-module vector$q_dl$stages$27(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$27
-
-
-module vector$q_dl$stages$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$3
-
-
-module vector$q_dl$stages$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$4
-
-
-module vector$q_dl$stages$5(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$5
-
-
-module vector$q_dl$stages$6(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$6
-
-
-module vector$q_dl$stages$7(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$7
-
-
-module vector$q_dl$stages$8(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$8
-
-
-module vector$q_dl$stages$9(d,q,clock);
-    
-    // Module arguments
-    input wire  [55:0] d;
-    output reg  [55:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 56'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$q_dl$stages$9
-
-
-module vector$rs_a(x,by,y);
-    
-    // Module arguments
-    input wire  [60:0] x;
-    input wire  [7:0] by;
-    output reg  [27:0] y;
+    input wire  [34:0] x;
+    output reg  neg;
     
     // Constant declarations
-    localparam  lsh = 8'h2;
-    localparam  rsh = 8'h0;
-    localparam  msb = 8'h3c;
-    localparam  ext = 61'h0;
-    
-    // Local signals
-    reg  [60:0] wide;
-    reg  [60:0] shifted;
+    localparam  half = 35'h400000000;
     
     // Update code
     always @(*) begin
-        wide = ((x) & 61'h1fffffffffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 61'h1fffffffffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 28'hfffffff);
+        neg = x >= half;
     end
     
-endmodule // vector$rs_a
+endmodule // vector$rej_lf$0$neg
 
 
-module vector$rs_b(x,by,y);
+module vector$rej_lf$1(e,owns,rejects);
     
     // Module arguments
-    input wire  [60:0] x;
-    input wire  [7:0] by;
-    output reg  [27:0] y;
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
     
-    // Constant declarations
-    localparam  lsh = 8'h2;
-    localparam  rsh = 8'h0;
-    localparam  msb = 8'h3c;
-    localparam  ext = 61'h0;
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
     
-    // Local signals
-    reg  [60:0] wide;
-    reg  [60:0] shifted;
+    // Sub module instances
+    vector$rej_lf$1$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
     
     // Update code
     always @(*) begin
-        wide = ((x) & 61'h1fffffffffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 61'h1fffffffffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 28'hfffffff);
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
     end
     
-endmodule // vector$rs_b
+endmodule // vector$rej_lf$1
 
 
-module vector$rs_c$0(x,by,y);
+module vector$rej_lf$1$neg(x,neg);
     
     // Module arguments
-    input wire  [37:0] x;
-    input wire  [7:0] by;
-    output reg  [31:0] y;
+    input wire  [34:0] x;
+    output reg  neg;
     
     // Constant declarations
-    localparam  lsh = 8'h0;
-    localparam  rsh = 8'h4;
-    localparam  msb = 8'h25;
-    localparam  ext = 38'h0;
-    
-    // Local signals
-    reg  [37:0] wide;
-    reg  [37:0] shifted;
+    localparam  half = 35'h400000000;
     
     // Update code
     always @(*) begin
-        wide = ((x) & 38'h3fffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 38'h3fffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 32'hffffffff);
+        neg = x >= half;
     end
     
-endmodule // vector$rs_c$0
+endmodule // vector$rej_lf$1$neg
 
 
-module vector$rs_c$1(x,by,y);
+module vector$rej_lf$2(e,owns,rejects);
     
     // Module arguments
-    input wire  [37:0] x;
-    input wire  [7:0] by;
-    output reg  [31:0] y;
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
     
-    // Constant declarations
-    localparam  lsh = 8'h0;
-    localparam  rsh = 8'h4;
-    localparam  msb = 8'h25;
-    localparam  ext = 38'h0;
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
     
-    // Local signals
-    reg  [37:0] wide;
-    reg  [37:0] shifted;
+    // Sub module instances
+    vector$rej_lf$2$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
     
     // Update code
     always @(*) begin
-        wide = ((x) & 38'h3fffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 38'h3fffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 32'hffffffff);
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
     end
     
-endmodule // vector$rs_c$1
+endmodule // vector$rej_lf$2
 
 
-module vector$rs_c$2(x,by,y);
+module vector$rej_lf$2$neg(x,neg);
     
     // Module arguments
-    input wire  [37:0] x;
-    input wire  [7:0] by;
-    output reg  [31:0] y;
+    input wire  [34:0] x;
+    output reg  neg;
     
     // Constant declarations
-    localparam  lsh = 8'h0;
-    localparam  rsh = 8'h4;
-    localparam  msb = 8'h25;
-    localparam  ext = 38'h0;
-    
-    // Local signals
-    reg  [37:0] wide;
-    reg  [37:0] shifted;
+    localparam  half = 35'h400000000;
     
     // Update code
     always @(*) begin
-        wide = ((x) & 38'h3fffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 38'h3fffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 32'hffffffff);
+        neg = x >= half;
     end
     
-endmodule // vector$rs_c$2
+endmodule // vector$rej_lf$2$neg
 
 
-module vector$rs_c0$0(x,by,y);
+module vector$rej_ll$0(e,owns,rejects);
     
     // Module arguments
-    input wire  [8:0] x;
-    input wire  [7:0] by;
-    output reg  [31:0] y;
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
     
-    // Constant declarations
-    localparam  lsh = 8'h16;
-    localparam  rsh = 8'h0;
-    localparam  msb = 8'h8;
-    localparam  ext = 32'hfffffe00;
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
     
-    // Local signals
-    reg  [31:0] wide;
-    reg  [31:0] shifted;
+    // Sub module instances
+    vector$rej_ll$0$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
     
     // Update code
     always @(*) begin
-        wide = ((x) & 32'hffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 32'hffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 32'hffffffff);
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
     end
     
-endmodule // vector$rs_c0$0
+endmodule // vector$rej_ll$0
 
 
-module vector$rs_c0$1(x,by,y);
+module vector$rej_ll$0$neg(x,neg);
     
     // Module arguments
-    input wire  [8:0] x;
-    input wire  [7:0] by;
-    output reg  [31:0] y;
+    input wire  [34:0] x;
+    output reg  neg;
     
     // Constant declarations
-    localparam  lsh = 8'h16;
-    localparam  rsh = 8'h0;
-    localparam  msb = 8'h8;
-    localparam  ext = 32'hfffffe00;
-    
-    // Local signals
-    reg  [31:0] wide;
-    reg  [31:0] shifted;
+    localparam  half = 35'h400000000;
     
     // Update code
     always @(*) begin
-        wide = ((x) & 32'hffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 32'hffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 32'hffffffff);
+        neg = x >= half;
     end
     
-endmodule // vector$rs_c0$1
+endmodule // vector$rej_ll$0$neg
 
 
-module vector$rs_c0$2(x,by,y);
+module vector$rej_ll$1(e,owns,rejects);
     
     // Module arguments
-    input wire  [8:0] x;
-    input wire  [7:0] by;
-    output reg  [31:0] y;
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
     
-    // Constant declarations
-    localparam  lsh = 8'h16;
-    localparam  rsh = 8'h0;
-    localparam  msb = 8'h8;
-    localparam  ext = 32'hfffffe00;
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
     
-    // Local signals
-    reg  [31:0] wide;
-    reg  [31:0] shifted;
+    // Sub module instances
+    vector$rej_ll$1$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
     
     // Update code
     always @(*) begin
-        wide = ((x) & 32'hffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 32'hffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 32'hffffffff);
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
     end
     
-endmodule // vector$rs_c0$2
+endmodule // vector$rej_ll$1
 
 
-module vector$rs_q$0(x,by,y);
+module vector$rej_ll$1$neg(x,neg);
     
     // Module arguments
-    input wire  [44:0] x;
-    input wire  [7:0] by;
-    output reg  [27:0] y;
+    input wire  [34:0] x;
+    output reg  neg;
     
     // Constant declarations
-    localparam  lsh = 8'h0;
-    localparam  rsh = 8'hf;
-    localparam  msb = 8'h2c;
-    localparam  ext = 45'h0;
-    
-    // Local signals
-    reg  [44:0] wide;
-    reg  [44:0] shifted;
+    localparam  half = 35'h400000000;
     
     // Update code
     always @(*) begin
-        wide = ((x) & 45'h1fffffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 45'h1fffffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 28'hfffffff);
+        neg = x >= half;
     end
     
-endmodule // vector$rs_q$0
+endmodule // vector$rej_ll$1$neg
 
 
-module vector$rs_q$1(x,by,y);
+module vector$rej_ll$2(e,owns,rejects);
     
     // Module arguments
-    input wire  [44:0] x;
-    input wire  [7:0] by;
-    output reg  [27:0] y;
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
     
-    // Constant declarations
-    localparam  lsh = 8'h0;
-    localparam  rsh = 8'hf;
-    localparam  msb = 8'h2c;
-    localparam  ext = 45'h0;
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
     
-    // Local signals
-    reg  [44:0] wide;
-    reg  [44:0] shifted;
+    // Sub module instances
+    vector$rej_ll$2$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
     
     // Update code
     always @(*) begin
-        wide = ((x) & 45'h1fffffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 45'h1fffffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 28'hfffffff);
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
     end
     
-endmodule // vector$rs_q$1
+endmodule // vector$rej_ll$2
 
 
-module vector$rs_q$2(x,by,y);
+module vector$rej_ll$2$neg(x,neg);
     
     // Module arguments
-    input wire  [44:0] x;
-    input wire  [7:0] by;
-    output reg  [27:0] y;
+    input wire  [34:0] x;
+    output reg  neg;
     
     // Constant declarations
-    localparam  lsh = 8'h0;
-    localparam  rsh = 8'hf;
-    localparam  msb = 8'h2c;
-    localparam  ext = 45'h0;
-    
-    // Local signals
-    reg  [44:0] wide;
-    reg  [44:0] shifted;
+    localparam  half = 35'h400000000;
     
     // Update code
     always @(*) begin
-        wide = ((x) & 45'h1fffffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 45'h1fffffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 28'hfffffff);
+        neg = x >= half;
     end
     
-endmodule // vector$rs_q$2
+endmodule // vector$rej_ll$2$neg
 
 
-module vector$rs_ra(x,by,y);
+module vector$rej_lm$0(e,owns,rejects);
     
     // Module arguments
-    input wire  [53:0] x;
-    input wire  [7:0] by;
-    output reg  [27:0] y;
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
     
-    // Constant declarations
-    localparam  lsh = 8'h2;
-    localparam  rsh = 8'h0;
-    localparam  msb = 8'h35;
-    localparam  ext = 58'h3c0000000000000;
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
     
-    // Local signals
-    reg  [57:0] wide;
-    reg  [57:0] shifted;
+    // Sub module instances
+    vector$rej_lm$0$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
     
     // Update code
     always @(*) begin
-        wide = ((x) & 58'h3ffffffffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 58'h3ffffffffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 28'hfffffff);
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
     end
     
-endmodule // vector$rs_ra
+endmodule // vector$rej_lm$0
 
 
-module vector$rs_rb(x,by,y);
+module vector$rej_lm$0$neg(x,neg);
     
     // Module arguments
-    input wire  [53:0] x;
-    input wire  [7:0] by;
-    output reg  [27:0] y;
+    input wire  [34:0] x;
+    output reg  neg;
     
     // Constant declarations
-    localparam  lsh = 8'h2;
-    localparam  rsh = 8'h0;
-    localparam  msb = 8'h35;
-    localparam  ext = 58'h3c0000000000000;
-    
-    // Local signals
-    reg  [57:0] wide;
-    reg  [57:0] shifted;
+    localparam  half = 35'h400000000;
     
     // Update code
     always @(*) begin
-        wide = ((x) & 58'h3ffffffffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 58'h3ffffffffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 28'hfffffff);
+        neg = x >= half;
     end
     
-endmodule // vector$rs_rb
+endmodule // vector$rej_lm$0$neg
 
 
-module vector$rs_z(x,by,y);
+module vector$rej_lm$1(e,owns,rejects);
     
     // Module arguments
-    input wire  [47:0] x;
-    input wire  [7:0] by;
-    output reg  [35:0] y;
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
     
-    // Constant declarations
-    localparam  lsh = 8'h0;
-    localparam  rsh = 8'h8;
-    localparam  msb = 8'h2f;
-    localparam  ext = 48'h0;
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
     
-    // Local signals
-    reg  [47:0] wide;
-    reg  [47:0] shifted;
+    // Sub module instances
+    vector$rej_lm$1$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
     
     // Update code
     always @(*) begin
-        wide = ((x) & 48'hffffffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 48'hffffffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 36'hfffffffff);
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
     end
     
-endmodule // vector$rs_z
+endmodule // vector$rej_lm$1
 
 
-module vector$rs_z0(x,by,y);
+module vector$rej_lm$1$neg(x,neg);
     
     // Module arguments
-    input wire  [18:0] x;
-    input wire  [7:0] by;
-    output reg  [35:0] y;
+    input wire  [34:0] x;
+    output reg  neg;
     
     // Constant declarations
-    localparam  lsh = 8'h12;
-    localparam  rsh = 8'h0;
-    localparam  msb = 8'h12;
-    localparam  ext = 36'hffff80000;
-    
-    // Local signals
-    reg  [35:0] wide;
-    reg  [35:0] shifted;
+    localparam  half = 35'h400000000;
     
     // Update code
     always @(*) begin
-        wide = ((x) & 36'hfffffffff);
-        if (x[msb]) begin
-            wide = ((x) & 36'hfffffffff) | ext;
-        end
-        shifted = ((wide << lsh) >> rsh) >> by;
-        y = ((shifted) & 36'hfffffffff);
+        neg = x >= half;
     end
     
-endmodule // vector$rs_z0
+endmodule // vector$rej_lm$1$neg
+
+
+module vector$rej_lm$2(e,owns,rejects);
+    
+    // Module arguments
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
+    
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
+    
+    // Sub module instances
+    vector$rej_lm$2$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
+    end
+    
+endmodule // vector$rej_lm$2
+
+
+module vector$rej_lm$2$neg(x,neg);
+    
+    // Module arguments
+    input wire  [34:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 35'h400000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$rej_lm$2$neg
+
+
+module vector$rej_rf$0(e,owns,rejects);
+    
+    // Module arguments
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
+    
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
+    
+    // Sub module instances
+    vector$rej_rf$0$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
+    end
+    
+endmodule // vector$rej_rf$0
+
+
+module vector$rej_rf$0$neg(x,neg);
+    
+    // Module arguments
+    input wire  [34:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 35'h400000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$rej_rf$0$neg
+
+
+module vector$rej_rf$1(e,owns,rejects);
+    
+    // Module arguments
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
+    
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
+    
+    // Sub module instances
+    vector$rej_rf$1$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
+    end
+    
+endmodule // vector$rej_rf$1
+
+
+module vector$rej_rf$1$neg(x,neg);
+    
+    // Module arguments
+    input wire  [34:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 35'h400000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$rej_rf$1$neg
+
+
+module vector$rej_rf$2(e,owns,rejects);
+    
+    // Module arguments
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
+    
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
+    
+    // Sub module instances
+    vector$rej_rf$2$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
+    end
+    
+endmodule // vector$rej_rf$2
+
+
+module vector$rej_rf$2$neg(x,neg);
+    
+    // Module arguments
+    input wire  [34:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 35'h400000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$rej_rf$2$neg
+
+
+module vector$rej_rn$0(e,owns,rejects);
+    
+    // Module arguments
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
+    
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
+    
+    // Sub module instances
+    vector$rej_rn$0$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
+    end
+    
+endmodule // vector$rej_rn$0
+
+
+module vector$rej_rn$0$neg(x,neg);
+    
+    // Module arguments
+    input wire  [34:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 35'h400000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$rej_rn$0$neg
+
+
+module vector$rej_rn$1(e,owns,rejects);
+    
+    // Module arguments
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
+    
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
+    
+    // Sub module instances
+    vector$rej_rn$1$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
+    end
+    
+endmodule // vector$rej_rn$1
+
+
+module vector$rej_rn$1$neg(x,neg);
+    
+    // Module arguments
+    input wire  [34:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 35'h400000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$rej_rn$1$neg
+
+
+module vector$rej_rn$2(e,owns,rejects);
+    
+    // Module arguments
+    input wire  [34:0] e;
+    input wire  owns;
+    output reg  rejects;
+    
+    // Stub signals
+    reg  [34:0] neg$x;
+    wire  neg$neg;
+    
+    // Sub module instances
+    vector$rej_rn$2$neg neg(
+        .x(neg$x),
+        .neg(neg$neg)
+    );
+    
+    // Update code
+    always @(*) begin
+        neg$x = e;
+        rejects = neg$neg | ((e == 32'h0) & ~owns);
+    end
+    
+endmodule // vector$rej_rn$2
+
+
+module vector$rej_rn$2$neg(x,neg);
+    
+    // Module arguments
+    input wire  [34:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 35'h400000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$rej_rn$2$neg
 
 
 module vector$sbusy(d,q,clock);
@@ -22164,42 +25881,716 @@ module vector$sc(d,q,clock);
 endmodule // vector$sc
 
 
-module vector$sum7(d,q,clock);
+module vector$sc0(d,q,clock);
     
     // Module arguments
-    input wire  [29:0] d;
-    output reg  [29:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 30'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // vector$sum7
+endmodule // vector$sc0
 
 
-module vector$sum8(d,q,clock);
+module vector$sc1(d,q,clock);
     
     // Module arguments
-    input wire  [29:0] d;
-    output reg  [29:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 30'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // vector$sum8
+endmodule // vector$sc1
+
+
+module vector$scls$0(dx,dy,left,right,flat,owns,g,h);
+    
+    // Module arguments
+    input wire  [16:0] dx;
+    input wire  [16:0] dy;
+    output reg  left;
+    output reg  right;
+    output reg  flat;
+    output reg  owns;
+    output reg  [34:0] g;
+    output reg  [34:0] h;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    
+    // Stub signals
+    reg  [16:0] dx_neg$x;
+    wire  dx_neg$neg;
+    reg  [16:0] dy_neg$x;
+    wire  dy_neg$neg;
+    reg  [16:0] ex$x;
+    wire  [34:0] ex$y;
+    reg  [16:0] ey$x;
+    wire  [34:0] ey$y;
+    
+    // Sub module instances
+    vector$scls$0$dx_neg dx_neg(
+        .x(dx_neg$x),
+        .neg(dx_neg$neg)
+    );
+    vector$scls$0$dy_neg dy_neg(
+        .x(dy_neg$x),
+        .neg(dy_neg$neg)
+    );
+    vector$scls$0$ex ex(
+        .x(ex$x),
+        .y(ex$y)
+    );
+    vector$scls$0$ey ey(
+        .x(ey$x),
+        .y(ey$y)
+    );
+    
+    // Update code
+    always @(*) begin
+        dx_neg$x = dx;
+        dy_neg$x = dy;
+        left = dy_neg$neg;
+        flat = dy == 32'h0;
+        right = ~dy_neg$neg & (dy != 32'h0);
+        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
+        ex$x = dx;
+        ey$x = dy;
+        g = ey$y << frac;
+        h = ex$y << frac;
+    end
+    
+endmodule // vector$scls$0
+
+
+module vector$scls$0$dx_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$scls$0$dx_neg
+
+
+module vector$scls$0$dy_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$scls$0$dy_neg
+
+
+module vector$scls$0$ex(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$scls$0$ex
+
+
+module vector$scls$0$ey(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$scls$0$ey
+
+
+module vector$scls$1(dx,dy,left,right,flat,owns,g,h);
+    
+    // Module arguments
+    input wire  [16:0] dx;
+    input wire  [16:0] dy;
+    output reg  left;
+    output reg  right;
+    output reg  flat;
+    output reg  owns;
+    output reg  [34:0] g;
+    output reg  [34:0] h;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    
+    // Stub signals
+    reg  [16:0] dx_neg$x;
+    wire  dx_neg$neg;
+    reg  [16:0] dy_neg$x;
+    wire  dy_neg$neg;
+    reg  [16:0] ex$x;
+    wire  [34:0] ex$y;
+    reg  [16:0] ey$x;
+    wire  [34:0] ey$y;
+    
+    // Sub module instances
+    vector$scls$1$dx_neg dx_neg(
+        .x(dx_neg$x),
+        .neg(dx_neg$neg)
+    );
+    vector$scls$1$dy_neg dy_neg(
+        .x(dy_neg$x),
+        .neg(dy_neg$neg)
+    );
+    vector$scls$1$ex ex(
+        .x(ex$x),
+        .y(ex$y)
+    );
+    vector$scls$1$ey ey(
+        .x(ey$x),
+        .y(ey$y)
+    );
+    
+    // Update code
+    always @(*) begin
+        dx_neg$x = dx;
+        dy_neg$x = dy;
+        left = dy_neg$neg;
+        flat = dy == 32'h0;
+        right = ~dy_neg$neg & (dy != 32'h0);
+        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
+        ex$x = dx;
+        ey$x = dy;
+        g = ey$y << frac;
+        h = ex$y << frac;
+    end
+    
+endmodule // vector$scls$1
+
+
+module vector$scls$1$dx_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$scls$1$dx_neg
+
+
+module vector$scls$1$dy_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$scls$1$dy_neg
+
+
+module vector$scls$1$ex(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$scls$1$ex
+
+
+module vector$scls$1$ey(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$scls$1$ey
+
+
+module vector$scls$2(dx,dy,left,right,flat,owns,g,h);
+    
+    // Module arguments
+    input wire  [16:0] dx;
+    input wire  [16:0] dy;
+    output reg  left;
+    output reg  right;
+    output reg  flat;
+    output reg  owns;
+    output reg  [34:0] g;
+    output reg  [34:0] h;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    
+    // Stub signals
+    reg  [16:0] dx_neg$x;
+    wire  dx_neg$neg;
+    reg  [16:0] dy_neg$x;
+    wire  dy_neg$neg;
+    reg  [16:0] ex$x;
+    wire  [34:0] ex$y;
+    reg  [16:0] ey$x;
+    wire  [34:0] ey$y;
+    
+    // Sub module instances
+    vector$scls$2$dx_neg dx_neg(
+        .x(dx_neg$x),
+        .neg(dx_neg$neg)
+    );
+    vector$scls$2$dy_neg dy_neg(
+        .x(dy_neg$x),
+        .neg(dy_neg$neg)
+    );
+    vector$scls$2$ex ex(
+        .x(ex$x),
+        .y(ex$y)
+    );
+    vector$scls$2$ey ey(
+        .x(ey$x),
+        .y(ey$y)
+    );
+    
+    // Update code
+    always @(*) begin
+        dx_neg$x = dx;
+        dy_neg$x = dy;
+        left = dy_neg$neg;
+        flat = dy == 32'h0;
+        right = ~dy_neg$neg & (dy != 32'h0);
+        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
+        ex$x = dx;
+        ey$x = dy;
+        g = ey$y << frac;
+        h = ex$y << frac;
+    end
+    
+endmodule // vector$scls$2
+
+
+module vector$scls$2$dx_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$scls$2$dx_neg
+
+
+module vector$scls$2$dy_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$scls$2$dy_neg
+
+
+module vector$scls$2$ex(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$scls$2$ex
+
+
+module vector$scls$2$ey(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$scls$2$ey
+
+
+module vector$sdx$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sdx$0
+
+
+module vector$sdx$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sdx$1
+
+
+module vector$sdx$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sdx$2
+
+
+module vector$sdy$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sdy$0
+
+
+module vector$sdy$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sdy$1
+
+
+module vector$sdy$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sdy$2
+
+
+module vector$sl(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sl
+
+
+module vector$sp(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sp
+
+
+module vector$sr(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sr
+
+
+module vector$sv(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sv
+
+
+module vector$sx0(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sx0
+
+
+module vector$sx1(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sx1
+
+
+module vector$sy(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sy
+
+
+module vector$sy1(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$sy1
 
 
 module vector$tag_dl(clock,en,d,q);
@@ -22207,129 +26598,129 @@ module vector$tag_dl(clock,en,d,q);
     // Module arguments
     input wire  clock;
     input wire  en;
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     
     // Stub signals
-    reg  [20:0] stages$0$d;
-    wire  [20:0] stages$0$q;
+    reg  [19:0] stages$0$d;
+    wire  [19:0] stages$0$q;
     reg  stages$0$clock;
-    reg  [20:0] stages$1$d;
-    wire  [20:0] stages$1$q;
+    reg  [19:0] stages$1$d;
+    wire  [19:0] stages$1$q;
     reg  stages$1$clock;
-    reg  [20:0] stages$2$d;
-    wire  [20:0] stages$2$q;
+    reg  [19:0] stages$2$d;
+    wire  [19:0] stages$2$q;
     reg  stages$2$clock;
-    reg  [20:0] stages$3$d;
-    wire  [20:0] stages$3$q;
+    reg  [19:0] stages$3$d;
+    wire  [19:0] stages$3$q;
     reg  stages$3$clock;
-    reg  [20:0] stages$4$d;
-    wire  [20:0] stages$4$q;
+    reg  [19:0] stages$4$d;
+    wire  [19:0] stages$4$q;
     reg  stages$4$clock;
-    reg  [20:0] stages$5$d;
-    wire  [20:0] stages$5$q;
+    reg  [19:0] stages$5$d;
+    wire  [19:0] stages$5$q;
     reg  stages$5$clock;
-    reg  [20:0] stages$6$d;
-    wire  [20:0] stages$6$q;
+    reg  [19:0] stages$6$d;
+    wire  [19:0] stages$6$q;
     reg  stages$6$clock;
-    reg  [20:0] stages$7$d;
-    wire  [20:0] stages$7$q;
+    reg  [19:0] stages$7$d;
+    wire  [19:0] stages$7$q;
     reg  stages$7$clock;
-    reg  [20:0] stages$8$d;
-    wire  [20:0] stages$8$q;
+    reg  [19:0] stages$8$d;
+    wire  [19:0] stages$8$q;
     reg  stages$8$clock;
-    reg  [20:0] stages$9$d;
-    wire  [20:0] stages$9$q;
+    reg  [19:0] stages$9$d;
+    wire  [19:0] stages$9$q;
     reg  stages$9$clock;
-    reg  [20:0] stages$10$d;
-    wire  [20:0] stages$10$q;
+    reg  [19:0] stages$10$d;
+    wire  [19:0] stages$10$q;
     reg  stages$10$clock;
-    reg  [20:0] stages$11$d;
-    wire  [20:0] stages$11$q;
+    reg  [19:0] stages$11$d;
+    wire  [19:0] stages$11$q;
     reg  stages$11$clock;
-    reg  [20:0] stages$12$d;
-    wire  [20:0] stages$12$q;
+    reg  [19:0] stages$12$d;
+    wire  [19:0] stages$12$q;
     reg  stages$12$clock;
-    reg  [20:0] stages$13$d;
-    wire  [20:0] stages$13$q;
+    reg  [19:0] stages$13$d;
+    wire  [19:0] stages$13$q;
     reg  stages$13$clock;
-    reg  [20:0] stages$14$d;
-    wire  [20:0] stages$14$q;
+    reg  [19:0] stages$14$d;
+    wire  [19:0] stages$14$q;
     reg  stages$14$clock;
-    reg  [20:0] stages$15$d;
-    wire  [20:0] stages$15$q;
+    reg  [19:0] stages$15$d;
+    wire  [19:0] stages$15$q;
     reg  stages$15$clock;
-    reg  [20:0] stages$16$d;
-    wire  [20:0] stages$16$q;
+    reg  [19:0] stages$16$d;
+    wire  [19:0] stages$16$q;
     reg  stages$16$clock;
-    reg  [20:0] stages$17$d;
-    wire  [20:0] stages$17$q;
+    reg  [19:0] stages$17$d;
+    wire  [19:0] stages$17$q;
     reg  stages$17$clock;
-    reg  [20:0] stages$18$d;
-    wire  [20:0] stages$18$q;
+    reg  [19:0] stages$18$d;
+    wire  [19:0] stages$18$q;
     reg  stages$18$clock;
-    reg  [20:0] stages$19$d;
-    wire  [20:0] stages$19$q;
+    reg  [19:0] stages$19$d;
+    wire  [19:0] stages$19$q;
     reg  stages$19$clock;
-    reg  [20:0] stages$20$d;
-    wire  [20:0] stages$20$q;
+    reg  [19:0] stages$20$d;
+    wire  [19:0] stages$20$q;
     reg  stages$20$clock;
-    reg  [20:0] stages$21$d;
-    wire  [20:0] stages$21$q;
+    reg  [19:0] stages$21$d;
+    wire  [19:0] stages$21$q;
     reg  stages$21$clock;
-    reg  [20:0] stages$22$d;
-    wire  [20:0] stages$22$q;
+    reg  [19:0] stages$22$d;
+    wire  [19:0] stages$22$q;
     reg  stages$22$clock;
-    reg  [20:0] stages$23$d;
-    wire  [20:0] stages$23$q;
+    reg  [19:0] stages$23$d;
+    wire  [19:0] stages$23$q;
     reg  stages$23$clock;
-    reg  [20:0] stages$24$d;
-    wire  [20:0] stages$24$q;
+    reg  [19:0] stages$24$d;
+    wire  [19:0] stages$24$q;
     reg  stages$24$clock;
-    reg  [20:0] stages$25$d;
-    wire  [20:0] stages$25$q;
+    reg  [19:0] stages$25$d;
+    wire  [19:0] stages$25$q;
     reg  stages$25$clock;
-    reg  [20:0] stages$26$d;
-    wire  [20:0] stages$26$q;
+    reg  [19:0] stages$26$d;
+    wire  [19:0] stages$26$q;
     reg  stages$26$clock;
-    reg  [20:0] stages$27$d;
-    wire  [20:0] stages$27$q;
+    reg  [19:0] stages$27$d;
+    wire  [19:0] stages$27$q;
     reg  stages$27$clock;
-    reg  [20:0] stages$28$d;
-    wire  [20:0] stages$28$q;
+    reg  [19:0] stages$28$d;
+    wire  [19:0] stages$28$q;
     reg  stages$28$clock;
-    reg  [20:0] stages$29$d;
-    wire  [20:0] stages$29$q;
+    reg  [19:0] stages$29$d;
+    wire  [19:0] stages$29$q;
     reg  stages$29$clock;
-    reg  [20:0] stages$30$d;
-    wire  [20:0] stages$30$q;
+    reg  [19:0] stages$30$d;
+    wire  [19:0] stages$30$q;
     reg  stages$30$clock;
-    reg  [20:0] stages$31$d;
-    wire  [20:0] stages$31$q;
+    reg  [19:0] stages$31$d;
+    wire  [19:0] stages$31$q;
     reg  stages$31$clock;
-    reg  [20:0] stages$32$d;
-    wire  [20:0] stages$32$q;
+    reg  [19:0] stages$32$d;
+    wire  [19:0] stages$32$q;
     reg  stages$32$clock;
-    reg  [20:0] stages$33$d;
-    wire  [20:0] stages$33$q;
+    reg  [19:0] stages$33$d;
+    wire  [19:0] stages$33$q;
     reg  stages$33$clock;
-    reg  [20:0] stages$34$d;
-    wire  [20:0] stages$34$q;
+    reg  [19:0] stages$34$d;
+    wire  [19:0] stages$34$q;
     reg  stages$34$clock;
-    reg  [20:0] stages$35$d;
-    wire  [20:0] stages$35$q;
+    reg  [19:0] stages$35$d;
+    wire  [19:0] stages$35$q;
     reg  stages$35$clock;
-    reg  [20:0] stages$36$d;
-    wire  [20:0] stages$36$q;
+    reg  [19:0] stages$36$d;
+    wire  [19:0] stages$36$q;
     reg  stages$36$clock;
-    reg  [20:0] stages$37$d;
-    wire  [20:0] stages$37$q;
+    reg  [19:0] stages$37$d;
+    wire  [19:0] stages$37$q;
     reg  stages$37$clock;
-    reg  [20:0] stages$38$d;
-    wire  [20:0] stages$38$q;
+    reg  [19:0] stages$38$d;
+    wire  [19:0] stages$38$q;
     reg  stages$38$clock;
-    reg  [20:0] stages$39$d;
-    wire  [20:0] stages$39$q;
+    reg  [19:0] stages$39$d;
+    wire  [19:0] stages$39$q;
     reg  stages$39$clock;
     
     // Sub module instances
@@ -22667,13 +27058,13 @@ endmodule // vector$tag_dl
 module vector$tag_dl$stages$0(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22686,13 +27077,13 @@ endmodule // vector$tag_dl$stages$0
 module vector$tag_dl$stages$1(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22705,13 +27096,13 @@ endmodule // vector$tag_dl$stages$1
 module vector$tag_dl$stages$10(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22724,13 +27115,13 @@ endmodule // vector$tag_dl$stages$10
 module vector$tag_dl$stages$11(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22743,13 +27134,13 @@ endmodule // vector$tag_dl$stages$11
 module vector$tag_dl$stages$12(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22762,13 +27153,13 @@ endmodule // vector$tag_dl$stages$12
 module vector$tag_dl$stages$13(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22781,13 +27172,13 @@ endmodule // vector$tag_dl$stages$13
 module vector$tag_dl$stages$14(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22800,13 +27191,13 @@ endmodule // vector$tag_dl$stages$14
 module vector$tag_dl$stages$15(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22819,13 +27210,13 @@ endmodule // vector$tag_dl$stages$15
 module vector$tag_dl$stages$16(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22838,13 +27229,13 @@ endmodule // vector$tag_dl$stages$16
 module vector$tag_dl$stages$17(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22857,13 +27248,13 @@ endmodule // vector$tag_dl$stages$17
 module vector$tag_dl$stages$18(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22876,13 +27267,13 @@ endmodule // vector$tag_dl$stages$18
 module vector$tag_dl$stages$19(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22895,13 +27286,13 @@ endmodule // vector$tag_dl$stages$19
 module vector$tag_dl$stages$2(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22914,13 +27305,13 @@ endmodule // vector$tag_dl$stages$2
 module vector$tag_dl$stages$20(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22933,13 +27324,13 @@ endmodule // vector$tag_dl$stages$20
 module vector$tag_dl$stages$21(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22952,13 +27343,13 @@ endmodule // vector$tag_dl$stages$21
 module vector$tag_dl$stages$22(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22971,13 +27362,13 @@ endmodule // vector$tag_dl$stages$22
 module vector$tag_dl$stages$23(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -22990,13 +27381,13 @@ endmodule // vector$tag_dl$stages$23
 module vector$tag_dl$stages$24(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23009,13 +27400,13 @@ endmodule // vector$tag_dl$stages$24
 module vector$tag_dl$stages$25(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23028,13 +27419,13 @@ endmodule // vector$tag_dl$stages$25
 module vector$tag_dl$stages$26(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23047,13 +27438,13 @@ endmodule // vector$tag_dl$stages$26
 module vector$tag_dl$stages$27(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23066,13 +27457,13 @@ endmodule // vector$tag_dl$stages$27
 module vector$tag_dl$stages$28(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23085,13 +27476,13 @@ endmodule // vector$tag_dl$stages$28
 module vector$tag_dl$stages$29(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23104,13 +27495,13 @@ endmodule // vector$tag_dl$stages$29
 module vector$tag_dl$stages$3(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23123,13 +27514,13 @@ endmodule // vector$tag_dl$stages$3
 module vector$tag_dl$stages$30(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23142,13 +27533,13 @@ endmodule // vector$tag_dl$stages$30
 module vector$tag_dl$stages$31(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23161,13 +27552,13 @@ endmodule // vector$tag_dl$stages$31
 module vector$tag_dl$stages$32(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23180,13 +27571,13 @@ endmodule // vector$tag_dl$stages$32
 module vector$tag_dl$stages$33(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23199,13 +27590,13 @@ endmodule // vector$tag_dl$stages$33
 module vector$tag_dl$stages$34(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23218,13 +27609,13 @@ endmodule // vector$tag_dl$stages$34
 module vector$tag_dl$stages$35(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23237,13 +27628,13 @@ endmodule // vector$tag_dl$stages$35
 module vector$tag_dl$stages$36(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23256,13 +27647,13 @@ endmodule // vector$tag_dl$stages$36
 module vector$tag_dl$stages$37(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23275,13 +27666,13 @@ endmodule // vector$tag_dl$stages$37
 module vector$tag_dl$stages$38(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23294,13 +27685,13 @@ endmodule // vector$tag_dl$stages$38
 module vector$tag_dl$stages$39(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23313,13 +27704,13 @@ endmodule // vector$tag_dl$stages$39
 module vector$tag_dl$stages$4(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23332,13 +27723,13 @@ endmodule // vector$tag_dl$stages$4
 module vector$tag_dl$stages$5(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23351,13 +27742,13 @@ endmodule // vector$tag_dl$stages$5
 module vector$tag_dl$stages$6(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23370,13 +27761,13 @@ endmodule // vector$tag_dl$stages$6
 module vector$tag_dl$stages$7(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23389,13 +27780,13 @@ endmodule // vector$tag_dl$stages$7
 module vector$tag_dl$stages$8(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23408,13 +27799,13 @@ endmodule // vector$tag_dl$stages$8
 module vector$tag_dl$stages$9(d,q,clock);
     
     // Module arguments
-    input wire  [20:0] d;
-    output reg  [20:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 21'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -23422,6 +27813,44 @@ module vector$tag_dl$stages$9(d,q,clock);
     end
           
 endmodule // vector$tag_dl$stages$9
+
+
+module vector$te(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$te
+
+
+module vector$top_xr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$top_xr
 
 
 module vector$tv(d,q,clock);
@@ -23994,55 +28423,412 @@ module vector$w0$2(d,q,clock);
 endmodule // vector$w0$2
 
 
-module vector$w_neg$0(x,neg);
+module vector$wcls$0(dx,dy,left,right,flat,owns,g,h);
     
     // Module arguments
-    input wire  [34:0] x;
+    input wire  [16:0] dx;
+    input wire  [16:0] dy;
+    output reg  left;
+    output reg  right;
+    output reg  flat;
+    output reg  owns;
+    output reg  [34:0] g;
+    output reg  [34:0] h;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    
+    // Stub signals
+    reg  [16:0] dx_neg$x;
+    wire  dx_neg$neg;
+    reg  [16:0] dy_neg$x;
+    wire  dy_neg$neg;
+    reg  [16:0] ex$x;
+    wire  [34:0] ex$y;
+    reg  [16:0] ey$x;
+    wire  [34:0] ey$y;
+    
+    // Sub module instances
+    vector$wcls$0$dx_neg dx_neg(
+        .x(dx_neg$x),
+        .neg(dx_neg$neg)
+    );
+    vector$wcls$0$dy_neg dy_neg(
+        .x(dy_neg$x),
+        .neg(dy_neg$neg)
+    );
+    vector$wcls$0$ex ex(
+        .x(ex$x),
+        .y(ex$y)
+    );
+    vector$wcls$0$ey ey(
+        .x(ey$x),
+        .y(ey$y)
+    );
+    
+    // Update code
+    always @(*) begin
+        dx_neg$x = dx;
+        dy_neg$x = dy;
+        left = dy_neg$neg;
+        flat = dy == 32'h0;
+        right = ~dy_neg$neg & (dy != 32'h0);
+        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
+        ex$x = dx;
+        ey$x = dy;
+        g = ey$y << frac;
+        h = ex$y << frac;
+    end
+    
+endmodule // vector$wcls$0
+
+
+module vector$wcls$0$dx_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
     output reg  neg;
     
     // Constant declarations
-    localparam  half = 35'h400000000;
+    localparam  half = 17'b10000000000000000;
     
     // Update code
     always @(*) begin
         neg = x >= half;
     end
     
-endmodule // vector$w_neg$0
+endmodule // vector$wcls$0$dx_neg
 
 
-module vector$w_neg$1(x,neg);
+module vector$wcls$0$dy_neg(x,neg);
     
     // Module arguments
-    input wire  [34:0] x;
+    input wire  [16:0] x;
     output reg  neg;
     
     // Constant declarations
-    localparam  half = 35'h400000000;
+    localparam  half = 17'b10000000000000000;
     
     // Update code
     always @(*) begin
         neg = x >= half;
     end
     
-endmodule // vector$w_neg$1
+endmodule // vector$wcls$0$dy_neg
 
 
-module vector$w_neg$2(x,neg);
+module vector$wcls$0$ex(x,y);
     
     // Module arguments
-    input wire  [34:0] x;
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$wcls$0$ex
+
+
+module vector$wcls$0$ey(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$wcls$0$ey
+
+
+module vector$wcls$1(dx,dy,left,right,flat,owns,g,h);
+    
+    // Module arguments
+    input wire  [16:0] dx;
+    input wire  [16:0] dy;
+    output reg  left;
+    output reg  right;
+    output reg  flat;
+    output reg  owns;
+    output reg  [34:0] g;
+    output reg  [34:0] h;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    
+    // Stub signals
+    reg  [16:0] dx_neg$x;
+    wire  dx_neg$neg;
+    reg  [16:0] dy_neg$x;
+    wire  dy_neg$neg;
+    reg  [16:0] ex$x;
+    wire  [34:0] ex$y;
+    reg  [16:0] ey$x;
+    wire  [34:0] ey$y;
+    
+    // Sub module instances
+    vector$wcls$1$dx_neg dx_neg(
+        .x(dx_neg$x),
+        .neg(dx_neg$neg)
+    );
+    vector$wcls$1$dy_neg dy_neg(
+        .x(dy_neg$x),
+        .neg(dy_neg$neg)
+    );
+    vector$wcls$1$ex ex(
+        .x(ex$x),
+        .y(ex$y)
+    );
+    vector$wcls$1$ey ey(
+        .x(ey$x),
+        .y(ey$y)
+    );
+    
+    // Update code
+    always @(*) begin
+        dx_neg$x = dx;
+        dy_neg$x = dy;
+        left = dy_neg$neg;
+        flat = dy == 32'h0;
+        right = ~dy_neg$neg & (dy != 32'h0);
+        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
+        ex$x = dx;
+        ey$x = dy;
+        g = ey$y << frac;
+        h = ex$y << frac;
+    end
+    
+endmodule // vector$wcls$1
+
+
+module vector$wcls$1$dx_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
     output reg  neg;
     
     // Constant declarations
-    localparam  half = 35'h400000000;
+    localparam  half = 17'b10000000000000000;
     
     // Update code
     always @(*) begin
         neg = x >= half;
     end
     
-endmodule // vector$w_neg$2
+endmodule // vector$wcls$1$dx_neg
+
+
+module vector$wcls$1$dy_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$wcls$1$dy_neg
+
+
+module vector$wcls$1$ex(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$wcls$1$ex
+
+
+module vector$wcls$1$ey(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$wcls$1$ey
+
+
+module vector$wcls$2(dx,dy,left,right,flat,owns,g,h);
+    
+    // Module arguments
+    input wire  [16:0] dx;
+    input wire  [16:0] dy;
+    output reg  left;
+    output reg  right;
+    output reg  flat;
+    output reg  owns;
+    output reg  [34:0] g;
+    output reg  [34:0] h;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    
+    // Stub signals
+    reg  [16:0] dx_neg$x;
+    wire  dx_neg$neg;
+    reg  [16:0] dy_neg$x;
+    wire  dy_neg$neg;
+    reg  [16:0] ex$x;
+    wire  [34:0] ex$y;
+    reg  [16:0] ey$x;
+    wire  [34:0] ey$y;
+    
+    // Sub module instances
+    vector$wcls$2$dx_neg dx_neg(
+        .x(dx_neg$x),
+        .neg(dx_neg$neg)
+    );
+    vector$wcls$2$dy_neg dy_neg(
+        .x(dy_neg$x),
+        .neg(dy_neg$neg)
+    );
+    vector$wcls$2$ex ex(
+        .x(ex$x),
+        .y(ex$y)
+    );
+    vector$wcls$2$ey ey(
+        .x(ey$x),
+        .y(ey$y)
+    );
+    
+    // Update code
+    always @(*) begin
+        dx_neg$x = dx;
+        dy_neg$x = dy;
+        left = dy_neg$neg;
+        flat = dy == 32'h0;
+        right = ~dy_neg$neg & (dy != 32'h0);
+        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
+        ex$x = dx;
+        ey$x = dy;
+        g = ey$y << frac;
+        h = ex$y << frac;
+    end
+    
+endmodule // vector$wcls$2
+
+
+module vector$wcls$2$dx_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$wcls$2$dx_neg
+
+
+module vector$wcls$2$dy_neg(x,neg);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  neg;
+    
+    // Constant declarations
+    localparam  half = 17'b10000000000000000;
+    
+    // Update code
+    always @(*) begin
+        neg = x >= half;
+    end
+    
+endmodule // vector$wcls$2$dy_neg
+
+
+module vector$wcls$2$ex(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$wcls$2$ex
+
+
+module vector$wcls$2$ey(x,y);
+    
+    // Module arguments
+    input wire  [16:0] x;
+    output reg  [34:0] y;
+    
+    // Constant declarations
+    localparam  msb = 8'h10;
+    localparam  ext = 35'h7fffe0000;
+    
+    // Update code
+    always @(*) begin
+        y = ((x) & 35'h7ffffffff);
+        if (x[msb]) begin
+            y = ((x) & 35'h7ffffffff) | ext;
+        end
+    end
+    
+endmodule // vector$wcls$2$ey
 
 
 module vector$wdx$0(d,q,clock);
@@ -24178,63 +28964,6 @@ module vector$wp(d,q,clock);
 endmodule // vector$wp
 
 
-module vector$wrow$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$wrow$0
-
-
-module vector$wrow$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$wrow$1
-
-
-module vector$wrow$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$wrow$2
-
-
 module vector$wx0(d,q,clock);
     
     // Module arguments
@@ -24271,41 +29000,3 @@ module vector$wx1(d,q,clock);
     end
           
 endmodule // vector$wx1
-
-
-module vector$wy1(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$wy1
-
-
-module vector$z6(d,q,clock);
-    
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$z6

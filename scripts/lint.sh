@@ -39,30 +39,32 @@ if [[ ${#files[@]} -eq 0 ]]; then
         echo "lint: no Verilog in hdl-out/ (run 'cargo run --release' to emit it)" >&2
         exit 1
     fi
-    # raster_top's other builds, each a directory under target/lint/ and the arguments that
-    # emit it: the larger size classes (screens up to 2048 and 4096), units left out, and
-    # formats other than its class's defaults (24-bit depth, ...), and its barycentric method.
+    # Other builds, each a directory under target/lint/ named unit-variant and the
+    # arguments that emit it: raster_top at the larger size classes (screens up to 2048 and
+    # 4096), with units left out, at formats other than its class's defaults (24-bit depth,
+    # ...), and with its barycentric method; the vector unit with several lanes.
     variants=(
-        "N11" "--param N=11"
-        "N12" "--param N=12"
-        "CULL_SORT=0" "--param CULL_SORT=0"
-        "PIXEL_OUT=0" "--param PIXEL_OUT=0"
-        "CULL_SORT=0-PIXEL_OUT=0" "--param CULL_SORT=0 --param PIXEL_OUT=0"
-        "METHOD=1" "--param METHOD=1"
-        "custom" "--formats crates/rtl/custom-formats.json"
+        "raster_top-N11" "--param N=11"
+        "raster_top-N12" "--param N=12"
+        "raster_top-CULL_SORT=0" "--param CULL_SORT=0"
+        "raster_top-PIXEL_OUT=0" "--param PIXEL_OUT=0"
+        "raster_top-CULL_SORT=0-PIXEL_OUT=0" "--param CULL_SORT=0 --param PIXEL_OUT=0"
+        "raster_top-METHOD=1" "--param METHOD=1"
+        "raster_top-custom" "--formats crates/rtl/custom-formats.json"
+        "vector-LANES=4" "--param LANES=4"
     )
     emit=()
     for ((i = 0; i < ${#variants[@]}; i += 2)); do
-        if [[ " ${LINT_SKIP:-} " =~ " ${variants[i]} " ]]; then
-            echo "lint: raster_top-${variants[i]} skipped (LINT_SKIP)"
+        if [[ " ${LINT_SKIP:-} " =~ " ${variants[i]#raster_top-} " ]]; then
+            echo "lint: ${variants[i]} skipped (LINT_SKIP)"
             continue
         fi
-        files+=("target/lint/raster_top-${variants[i]}/raster_top.v")
-        emit+=("target/lint/raster_top-${variants[i]}" "${variants[i + 1]}")
+        files+=("target/lint/${variants[i]}/${variants[i]%%-*}.v")
+        emit+=("target/lint/${variants[i]}" "${variants[i]%%-*} ${variants[i + 1]}")
     done
     printf '%s\0' "${emit[@]}" | xargs -0 -n 2 -P "$jobs" bash -c '
         # shellcheck disable=SC2086 # the arguments are words
-        "$EDGEPAINT" emit --unit raster_top $2 -o "$1" >/dev/null || { echo "lint: emitting $1 failed" >&2; exit 255; }' emit
+        "$EDGEPAINT" emit --unit $2 -o "$1" >/dev/null || { echo "lint: emitting $1 failed" >&2; exit 255; }' emit
 fi
 
 # gpu_top holds these units (raster_top's without pixel_out): their waivers apply to its

@@ -68,7 +68,12 @@ impl FixedArgs {
 
     /// The model's method for an engine (None for the float reference).
     pub fn method(&self, engine: Engine, perspective: bool) -> Result<Option<Method>> {
-        anyhow::ensure!(self.lanes != Some(0), "--lanes must be at least 1");
+        if let Some(l) = self.lanes {
+            anyhow::ensure!(
+                model::vector::lanes_supported(l),
+                "--lanes {l}: the vector walk's chunks are aligned to the lanes, so 1, 2, 4, ... up to 64"
+            );
+        }
         Ok(match engine {
             Engine::Float => None,
             Engine::Scanline | Engine::Rtl => Some(Method::Scanline),

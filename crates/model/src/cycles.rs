@@ -238,17 +238,20 @@ impl CullSortStages {
 }
 
 /// The vector unit's timing (`rtl::vector`, `model::vector`): triangles go through its
-/// setup one at a time, and each non-empty one then through its walk, overlapping the next
-/// one's setup; a walk uses one of two sets of the triangle's constants.
+/// setup one at a time, then through the scout, which finds each row's chunks, and the
+/// walker, which walks them; setup overlaps the scout and the walker, and the scout the
+/// walker. A triangle's constants are one of two sets.
 #[derive(Clone, Debug)]
 pub struct VectorUnit {
     setup: u64,
     pixel: u64,
     held: u64,
-    /// The first cycle setup may take a triangle; the walk's last cycle (a handover may
-    /// come in it); per set, the first cycle it may be loaded; the set the next walk uses.
+    /// The first cycle setup may take a triangle; the first cycle the scout is free; the
+    /// walker's last chunk (it may take a row in that cycle or later); per set, the first
+    /// cycle it may be loaded; the set the next triangle uses.
     setup_free: u64,
-    walk_last: Option<u64>,
+    scout_free: u64,
+    walk_last: u64,
     set_free: [u64; 2],
     set: usize,
     /// The first cycle the unit is empty, after what it has been given.
@@ -256,13 +259,21 @@ pub struct VectorUnit {
 }
 
 /// When the vector unit handled one triangle ([`VectorUnit::triangle`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct VectorTimes {
     /// The cycle it was taken.
     pub taken: u64,
-    /// The cycle its walk's first pixel is in the walk's registers (its pixel `k` leaves
-    /// `vector::pixel_latency` cycles after `start + k`); `None` for an empty box.
-    pub start: Option<u64>,
+    /// Per row of its walk, the cycle the walker took it (its chunk `k` is in the walker's
+    /// registers in the cycle `take + 1 + k`, and its pixels leave `vector::pixel_latency`
+    /// cycles after); `None` for a row found empty. Empty for an empty box.
+    pub takes: Vec<Option<u64>>,
+}
+
+impl VectorTimes {
+    /// The walk cycle of chunk `k` of row `row`.
+    pub fn chunk(&self, (row, k): (u32, u32)) -> u64 {
+        self.takes[row as usize].expect("a row walked") + 1 + k as u64
+    }
 }
 
 impl VectorUnit {
@@ -273,33 +284,56 @@ impl VectorUnit {
             pixel: vector::pixel_latency(divider_latency) as u64,
             held: vector::constants_read(divider_latency) as u64,
             setup_free: 0,
-            walk_last: None,
+            scout_free: 0,
+            walk_last: 0,
             set_free: [0; 2],
             set: 0,
             idle: 0,
         }
     }
 
-    /// A triangle offered from cycle `offered` whose box takes `walk` cycles (0: empty): taken
-    /// when setup is free; set up in `vector::setup` cycles, the last of which (or a later
-    /// one) hands it to the walk when the walk before is in its last cycle or done and its
-    /// set of constants is read no more; setup is free from the cycle after.
-    pub fn triangle(&mut self, offered: u64, walk: u32) -> VectorTimes {
+    /// A triangle offered from cycle `offered` whose box has the rows `rows` (none: empty):
+    /// taken when setup is free; set up in `vector::setup` cycles, the last of which (or a
+    /// later one) hands it to the scout when the scout is free and its set of constants is
+    /// read no more; setup is free from the cycle after, and the scout starts on the first
+    /// row. The scout searches a row for `search` cycles from the cycle after it began it; a
+    /// row found empty it leaves in its last, a row found it holds until the walker takes
+    /// it (in the walker's last chunk or later), and it begins the next row in the cycle
+    /// after that.
+    pub fn triangle(&mut self, offered: u64, rows: &[vector::WalkRow]) -> VectorTimes {
         let taken = offered.max(self.setup_free);
         let ready = taken + self.setup - 1;
-        if walk == 0 {
+        if rows.is_empty() {
             self.setup_free = ready + 1;
             self.idle = self.idle.max(self.setup_free);
-            return VectorTimes { taken, start: None };
+            return VectorTimes { taken, takes: Vec::new() };
         }
-        let handed = ready.max(self.walk_last.unwrap_or(0)).max(self.set_free[self.set]);
-        let last = handed + walk as u64;
+        let handed = ready.max(self.scout_free).max(self.set_free[self.set]);
         self.setup_free = handed + 1;
-        self.walk_last = Some(last);
-        self.set_free[self.set] = last + self.held;
+        let mut start = handed + 1;
+        let mut takes = Vec::with_capacity(rows.len());
+        let mut walked = false;
+        for r in rows {
+            let found = start + r.search as u64 - 1;
+            if r.chunks == 0 {
+                takes.push(None);
+                start = found + 1;
+                continue;
+            }
+            let take = found.max(self.walk_last);
+            takes.push(Some(take));
+            self.walk_last = take + r.chunks as u64;
+            walked = true;
+            start = take + 1;
+        }
+        self.scout_free = start;
+        if walked {
+            self.set_free[self.set] = self.walk_last + self.held;
+            self.idle = self.idle.max(self.walk_last + self.pixel + 1);
+        }
         self.set ^= 1;
-        self.idle = self.idle.max(last + self.pixel + 1);
-        VectorTimes { taken, start: Some(handed + 1) }
+        self.idle = self.idle.max(self.scout_free).max(self.setup_free);
+        VectorTimes { taken, takes }
     }
 
     /// The first cycle the unit is empty after the triangles given.
@@ -323,11 +357,11 @@ pub fn vector_frame(work: &[Work], t: &Timing) -> FrameCycles {
     for w in work.iter().filter(|w| t.cull_sort || w.passed_cull) {
         let Some(culled) = cull.passing(w.passed_cull, &mut last) else { continue };
         out.triangles += 1;
-        let times = unit.triangle(culled, w.vector_walk);
+        let times = unit.triangle(culled, &w.vector_rows);
         cull.leave(times.taken);
-        out.span_busy += w.vector_walk as u64;
-        if let (Some(start), Some(k)) = (times.start, w.vector_last_sent) {
-            last = last.max(start + k as u64 + pixel + write_latency(t));
+        out.span_busy += w.vector_rows.iter().map(|r| r.chunks as u64).sum::<u64>();
+        if let Some(at) = w.vector_last_sent {
+            last = last.max(times.chunk(at) + pixel + write_latency(t));
         }
     }
     out.total = last.max(unit.idle());
@@ -457,35 +491,52 @@ mod tests {
         assert_eq!(scanline_frame(&frame, &neither).total, 47);
     }
 
-    /// The vector unit sets the next triangle up while it walks one, and starts the next
-    /// walk in the cycle after this one's last, or when the set of constants it uses is free
-    /// (two walks before); the frame ends when the last pixel is written or the unit is empty.
+    /// The vector unit sets the next triangle up while it walks one, its scout finds the
+    /// next row while the walker walks one, and the walker takes the row in its last chunk
+    /// of the row before; a triangle waits for its set of constants (two triangles before);
+    /// the frame ends when the last pixel is written or the unit is empty.
     #[test]
-    fn cycles_vector_frame_overlaps_setup_and_walk() {
+    fn cycles_vector_frame_overlaps_setup_scout_and_walk() {
         let l = crate::divider::LATENCY;
         let (setup, pixel, held) =
             (vector::setup(l) as u64, vector::pixel_latency(l) as u64, vector::constants_read(l) as u64);
-        let w = |walk, last| Work { passed_cull: true, vector_walk: walk, vector_last_sent: last, ..Work::default() };
+        let row = |search, chunks| vector::WalkRow { search, chunks };
+        let w = |rows: Vec<vector::WalkRow>, last| Work {
+            passed_cull: true,
+            vector_rows: rows,
+            vector_last_sent: last,
+            ..Work::default()
+        };
         let t = Timing::default();
         let cull = cull_sort::LATENCY as u64;
-        // Taken in cycle 3 (cull_sort's latency), handed over at 3 + setup - 1, its walk
-        // from the cycle after for 100 cycles; its last pixel leaves pixel_latency later and
-        // is written 3 cycles on.
+        // Taken in cycle 3 (cull_sort's latency), handed over at 3 + setup - 1; the scout
+        // finds its one row in the cycle after, the walker takes it then and walks its 100
+        // chunks from the cycle after; the last pixel leaves pixel_latency later and is
+        // written 3 cycles on.
         let first = cull + setup;
-        assert_eq!(vector_frame(&[w(100, Some(99))], &t).total, first + 99 + pixel + 3);
+        assert_eq!(vector_frame(&[w(vec![row(1, 100)], Some((0, 99)))], &t).total, first + 100 + pixel + 3);
         // Its last pixel earlier: done when the unit is empty (the walk's end + pixel + 1).
-        assert_eq!(vector_frame(&[w(100, Some(50))], &t).total, first + 99 + pixel + 1);
+        assert_eq!(vector_frame(&[w(vec![row(1, 100)], Some((0, 50)))], &t).total, first + 100 + pixel + 1);
         // A second triangle is set up during the first's walk and walks right after it.
-        let two = vector_frame(&[w(100, Some(99)), w(10, Some(9))], &t).total;
-        assert_eq!(two, first + 100 + 9 + pixel + 3);
+        let two = vector_frame(&[w(vec![row(1, 100)], Some((0, 99))), w(vec![row(1, 10)], Some((0, 9)))], &t).total;
+        assert_eq!(two, first + 110 + pixel + 3);
+        // A row the scout needs 5 cycles for (4 moves) is taken 5 cycles after the row
+        // before was: 2 cycles after the walker's last chunk of a 2-chunk row.
+        let mut u = VectorUnit::new(l);
+        let rows = [row(1, 2), row(5, 1), row(3, 0), row(1, 4)];
+        let times = u.triangle(0, &rows);
+        let handed = setup - 1;
+        assert_eq!(times.takes, vec![Some(handed + 1), Some(handed + 6), None, Some(handed + 10)]);
+        assert_eq!(times.chunk((3, 3)), handed + 14);
+        assert_eq!(u.idle(), handed + 14 + pixel + 1);
         // Short walks: the third waits for the first's constants to be read no more.
         let mut u = VectorUnit::new(l);
-        let s: Vec<u64> = (0..3).map(|_| u.triangle(0, 1).start.unwrap()).collect();
+        let s: Vec<u64> = (0..3).map(|_| u.triangle(0, &[row(1, 1)]).chunk((0, 0))).collect();
         assert_eq!(s[1] - s[0], setup, "the second: its own setup, taken as the first was handed over");
-        assert_eq!(s[2], (s[0] + held).max(s[1] + setup), "the third: the first's set");
+        assert_eq!(s[2], (s[0] + held + 2).max(s[1] + setup), "the third: the first's set");
         // An empty box hands over as soon as it is set up and walks nothing.
         let mut u = VectorUnit::new(l);
-        assert_eq!(u.triangle(5, 0), VectorTimes { taken: 5, start: None });
+        assert_eq!(u.triangle(5, &[]), VectorTimes { taken: 5, takes: Vec::new() });
         assert_eq!(u.idle(), 5 + setup);
     }
 }

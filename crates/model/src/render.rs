@@ -26,7 +26,7 @@ use crate::input::{to_fixed, InputError, Vtx};
 use crate::pixel_out::Framebuffer;
 use crate::span::{span, Pixel};
 use crate::triangle_setup::triangle_setup;
-use crate::vector::vector;
+use crate::vector::{vector, WalkRow};
 use fx::Formats;
 use scene::{Triangle, Trilist};
 
@@ -58,10 +58,11 @@ pub struct Work {
     /// Per scanline the edge walk stepped through, the span command it emitted, if
     /// any (scanline method).
     pub scanlines: Vec<Option<SpanWork>>,
-    /// Cycles of the vector unit's walk of its box (vector method; 0 for an empty box).
-    pub vector_walk: u32,
-    /// The walk cycle of the vector unit's last pixel sent to `pixel_out`, if any.
-    pub vector_last_sent: Option<u32>,
+    /// The rows of the vector unit's walk of its box (vector method; none for an empty box).
+    pub vector_rows: Vec<WalkRow>,
+    /// The place in that walk (row, chunk) of the vector unit's last pixel sent to
+    /// `pixel_out`, if any.
+    pub vector_last_sent: Option<(u32, u32)>,
 }
 
 /// What one span command cost `span` (`model::span::SpanOut`): its cycles, and the
@@ -105,8 +106,8 @@ pub fn trace(v: &[Vtx; 3], clip: Clip, opts: &Options, ctx: &mut Ctx) -> Result<
         }
         Method::Vector { lanes, perspective } => {
             let o = vector(&sorted, clip, lanes, perspective, ctx);
-            t.work.vector_walk = o.walk_cycles;
-            t.work.vector_last_sent = o.walk.last().map(|&i| i / lanes);
+            t.work.vector_last_sent = o.at.last().copied();
+            t.work.vector_rows = o.rows;
             t.z_clipped = o.z_clipped;
             t.pixels = o.pixels;
         }

@@ -15,12 +15,12 @@
 //!   Eq. (6) solves the same system for a and b directly; the two agree exactly
 //!   in real arithmetic.
 //!
-//! Cycle model (`rtl::vector`'s, at `lanes` = 1; a frame's: `cycles::vector_frame`): the
-//! unit sets a triangle up in [`setup`] cycles while it walks the one before; the walk of
-//! the clipped bounding box, `lanes` pixels of a row per cycle, rows one after another
-//! ([`VectorOut::walk_cycles`]; pixel `walk[i]` in the walk's cycle `walk[i] / lanes`), begins
-//! when the walk before has ended and the constants of the triangle two before are read no
-//! more ([`constants_read`]); each pixel leaves [`pixel_latency`] cycles after its walk cycle.
+//! Cycle model (`rtl::vector`'s; a frame's: `cycles::vector_frame`): the unit sets a
+//! triangle up in [`setup`] cycles while it walks the ones before, and hands it to the walk's
+//! scout when the scout is done with the one before and the triangle's set of constants is
+//! read no more ([`constants_read`]); the scout finds each row's chunks ahead of the walker,
+//! which walks a chunk of `lanes` pixels a cycle ([`vector`], [`WalkRow`]); each pixel leaves
+//! [`pixel_latency`] cycles after its chunk's walk cycle (`cycles::VectorUnit`).
 
 use crate::ctx::{Ctx, Q};
 use crate::cull_sort::{z_max, Clip, Sorted};
@@ -44,7 +44,7 @@ pub const fn area_divider_latency(divider_latency: u32) -> u32 {
 /// its sign (v1 and v2 swapped for a negative area), its leading one, 1/area's divisor
 /// normalised into a register in cycle 6, taken by setup's divider
 /// ([`area_divider_latency`] stages) in cycle 7 and back that many cycles later; the edge
-/// functions at the box's first pixel are ready by cycle 11, so a divider of fewer than 4
+/// functions at the first row's start chunk are ready by cycle 11, so a divider of fewer than 4
 /// stages waits for them.
 pub const fn setup(divider_latency: u32) -> u32 {
     let la = area_divider_latency(divider_latency);
@@ -92,23 +92,64 @@ fn ratio(num: i128, den: i128, ctx: &mut Ctx) -> i128 {
     }
 }
 
+/// One row of a triangle's walk: the scout's cycles on it and the chunks the walker
+/// walks in it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct WalkRow {
+    /// Cycles the scout spends on the row: one, and one more per chunk its probes move.
+    pub search: u32,
+    /// Chunks of `lanes` pixels walked, a cycle each: 0 for a row found empty.
+    pub chunks: u32,
+}
+
 /// What one triangle produced, and its walk.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct VectorOut {
     pub pixels: Vec<Pixel>,
-    /// Each pixel's index in the walk of the clipped bounding box (row by row from its
-    /// top left): `walk[i]` for `pixels[i]`.
-    pub walk: Vec<u32>,
-    /// Cycles of the walk of its box: rows x ceil(columns / lanes); 0 for an empty box.
-    pub walk_cycles: u32,
+    /// Each pixel's place in the walk: its row (index in `rows`) and its chunk's offset from
+    /// the row's first chunk, for `pixels[i]`.
+    pub at: Vec<(u32, u32)>,
+    /// The rows of the box, top to bottom; none for an empty box.
+    pub rows: Vec<WalkRow>,
     pub z_clipped: u32,
 }
 
-/// Rasterizes one triangle (from `cull_sort`) with `lanes` pixels per cycle.
+impl VectorOut {
+    /// The chunks walked, a cycle each.
+    pub fn chunks(&self) -> u32 {
+        self.rows.iter().map(|r| r.chunks).sum()
+    }
+}
+
+/// Whether the walk takes `lanes` lanes: a power of two, at most 64 (chunks are aligned to
+/// multiples of `lanes`; `rtl::vector` is built with 1, 2, 4 or 8).
+pub fn lanes_supported(lanes: u32) -> bool {
+    lanes.is_power_of_two() && lanes <= 64
+}
+
+/// Rasterizes one triangle (from `cull_sort`) with `lanes` pixels per cycle ([`lanes_supported`]).
+///
+/// **The walk** (`rtl::vector`'s scout and walker). The box's rows are walked top to bottom
+/// in chunks of `lanes` pixels aligned to multiples of `lanes` (pixel x goes to lane
+/// x mod `lanes`), only from the row's first chunk that may hold a pixel inside to its last:
+/// * an edge whose function rises to the right (dy < 0) bounds the row on the left: a chunk
+///   whose last pixel it rejects, and every chunk left of it, holds none; one that falls
+///   (dy > 0) bounds it on the right, from the first pixel of a chunk it rejects; a
+///   horizontal edge that rejects one pixel of the row rejects all of it;
+/// * a scout finds each row's first and last chunk ahead of the walker with two probes that
+///   start where they ended on the row before (on the first row, at the chunk of the
+///   vertex with the least y, the first of equals, clamped to the box), each moving a chunk
+///   a cycle towards its bound: a row costs it one cycle and one more per move of the probe
+///   that moves more ([`WalkRow::search`]);
+/// * the walker takes a row the scout found from the cycle in its last chunk of the row
+///   before, and walks a chunk a cycle; the scout then searches the next row. A row found
+///   empty is not walked.
 pub fn vector(t: &Sorted, clip: Clip, lanes: u32, perspective: bool, ctx: &mut Ctx) -> VectorOut {
+    assert!(lanes_supported(lanes), "vector: {lanes} lanes");
     let f = ctx.f;
     let s = f.xy.frac;
     let px = 1i128 << s;
+    let top = *t.v.iter().min_by_key(|p| p.y).expect("three vertices");
     let mut v = t.v;
     let mut area = edge(&v[0], &v[1], v[2].x, v[2].y);
     if area < 0 {
@@ -126,20 +167,63 @@ pub fn vector(t: &Sorted, clip: Clip, lanes: u32, perspective: bool, ctx: &mut C
     let y0 = lo(v.iter().map(|p| p.y).min().unwrap());
     let x1 = ((v.iter().map(|p| p.x).max().unwrap() - px / 2) >> s).min(clip.width as i128 - 1);
     let y1 = ((v.iter().map(|p| p.y).max().unwrap() - px / 2) >> s).min(clip.height as i128 - 1);
-    let mut out = VectorOut { pixels: Vec::new(), walk: Vec::new(), walk_cycles: 0, z_clipped: 0 };
+    let mut out = VectorOut::default();
     if x0 > x1 || y0 > y1 {
         return out;
     }
-    out.walk_cycles = ((y1 - y0 + 1) as u32) * ((x1 - x0 + 1) as u32).div_ceil(lanes);
+
+    // The walk: chunks by their first x.
+    let n = lanes as i128;
+    let (c0, c1) = (x0 & !(n - 1), x1 & !(n - 1));
+    let at = |k: usize, x: i128, y: i128| edge(&edges[k].0, &edges[k].1, x * px + px / 2, y * px + px / 2);
+    let pass = |k: usize, e: i128| e > 0 || (e == 0 && owns[k]);
+    let dy = edges.map(|(a, b)| b.y - a.y);
+    let mut sl = (top.x >> s).clamp(x0, x1) & !(n - 1);
+    let mut sr = sl;
 
     let d_attr = |k: usize| (v[k].z - v[0].z, [0, 1, 2].map(|i| v[k].c[i] - v[0].c[i]));
     let (d1, d2) = (d_attr(1), d_attr(2));
     for yy in y0..=y1 {
+        let left_out = |c: i128| (0..3).any(|k| dy[k] < 0 && !pass(k, at(k, c + n - 1, yy)));
+        let right_out = |c: i128| (0..3).any(|k| dy[k] > 0 && !pass(k, at(k, c, yy)));
+        let dead = (0..3).any(|k| dy[k] == 0 && !pass(k, at(k, sl, yy)));
+        let mut search = 1;
+        // The probes move a chunk a cycle towards their bounds (none on a dead row).
+        loop {
+            let ml = if dead {
+                0
+            } else if left_out(sl) && sl < c1 {
+                n
+            } else if !left_out(sl - n) && sl > c0 {
+                -n
+            } else {
+                0
+            };
+            let mr = if dead {
+                0
+            } else if right_out(sr) && sr > c0 {
+                -n
+            } else if !right_out(sr + n) && sr < c1 {
+                n
+            } else {
+                0
+            };
+            if ml == 0 && mr == 0 {
+                break;
+            }
+            (sl, sr, search) = (sl + ml, sr + mr, search + 1);
+        }
+        let empty = dead || left_out(sl) || right_out(sr) || sl > sr;
+        let row = out.rows.len() as u32;
+        out.rows.push(WalkRow { search, chunks: if empty { 0 } else { ((sr - sl) / n + 1) as u32 } });
+        if empty {
+            continue;
+        }
         let cy = yy * px + px / 2;
-        for xx in x0..=x1 {
+        for xx in sl.max(x0)..=(sr + n - 1).min(x1) {
             let cx = xx * px + px / 2;
             let w = edges.map(|(a, b)| edge(&a, &b, cx, cy));
-            if !(0..3).all(|k| w[k] > 0 || (w[k] == 0 && owns[k])) {
+            if !(0..3).all(|k| pass(k, w[k])) {
                 continue;
             }
             // Eq. (3): a, b from the exact numerators and 1/area.
@@ -172,7 +256,7 @@ pub fn vector(t: &Sorted, clip: Clip, lanes: u32, perspective: bool, ctx: &mut C
             let depth = depth_of(z, &f);
             if (0..=zmax).contains(&depth) {
                 out.pixels.push(Pixel { x: xx as u32, y: yy as u32, z: depth as u32, rgb: c.map(|c| color_of(c, &f)) });
-                out.walk.push(((yy - y0) * (x1 - x0 + 1) + xx - x0) as u32);
+                out.at.push((row, ((xx & !(n - 1)) - sl) as u32 / lanes));
             } else {
                 out.z_clipped += 1;
             }

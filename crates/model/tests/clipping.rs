@@ -138,7 +138,7 @@ fn clipping_span_walks_right_to_left_when_it_starts_left_of_the_screen() {
 #[test]
 fn clipping_vector_method_needs_no_walk_direction() {
     // The vector method clips by its bounding box: a triangle crossing all four
-    // sides tests only on-screen pixels.
+    // sides walks only on-screen rows and pixels.
     let f = Formats::for_resolution(W, H);
     let opts = Options {
         method: Method::Vector { lanes: 1, perspective: false },
@@ -148,5 +148,7 @@ fn clipping_vector_method_needs_no_walk_direction() {
     };
     let t = &crossing_cases()[6].1;
     let tr = triangle(t, Clip { width: W, height: H }, &f, &opts).0.unwrap();
-    assert_eq!(tr.work.vector_walk, W * H);
+    assert_eq!(tr.work.vector_rows.len() as u32, H);
+    assert!(tr.work.vector_rows.iter().all(|r| r.chunks <= W));
+    assert_eq!(tr.work.vector_rows.iter().map(|r| r.chunks).sum::<u32>(), tr.pixels.len() as u32 + tr.z_clipped);
 }

@@ -226,6 +226,14 @@ const PERSPECTIVE: Param = Param {
     doc: "1: colours perspective-correct (004 eq. 5-6, the divider's second use); 0: screen-linear (vector)",
 };
 
+/// The vector unit's lanes.
+const LANES: Param = Param {
+    name: "LANES",
+    default: 1,
+    doc:
+        "pixels per cycle of the vector unit: 1, 2, 4 or 8 lanes, a chunk of a row each cycle (raster_top draws with 1)",
+};
+
 /// The size-class parameter every scanline unit has.
 const N: Param = Param {
     name: "N",
@@ -385,11 +393,12 @@ pub const UNITS: &[Unit] = &[
     },
     Unit {
         name: "vector",
-        doc: "per-pixel barycentric rasterization, paper 004 eq. 1-6: a pixel per cycle, bounding-box walk, perspective-correct colours",
+        doc: "per-pixel barycentric rasterization, paper 004 eq. 1-6: LANES pixels per cycle, a walk of each row's chunks, perspective-correct colours",
         params: &[
             N,
             L,
             PERSPECTIVE,
+            LANES,
         ],
         build: by_build!(vector::emit_vector),
     },
@@ -438,7 +447,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
         ],
     ),
     ("gpu_top", &[("N", 10), ("K", 7), ("L", model::divider::LATENCY as u64)]),
-    ("vector", &[("N", 10), ("L", model::divider::LATENCY as u64), ("PERSPECTIVE", 1)]),
+    ("vector", &[("N", 10), ("L", model::divider::LATENCY as u64), ("PERSPECTIVE", 1), ("LANES", 1)]),
     ("se", &[("P", 64), ("ZW", 24), ("CW", 16), ("F", 16), ("I", 0)]),
 ];
 

@@ -55,8 +55,8 @@ use super::pixel_out::PixelOut;
 use super::span::Span;
 use super::span_fifo::SpanFifo;
 use super::triangle_setup::TriangleSetup;
-use super::vector::Vector;
-use super::widths::DIM;
+use super::vector::Vector1;
+use super::widths::{CHANNEL, DIM};
 use crate::emit::{emit_unit, Emitted};
 use crate::switch::Parts;
 use crate::Params;
@@ -364,7 +364,7 @@ crate::pins!(RasterTop {
 /// `pixel_out`, with [`RasterTop`]'s ports. The vector unit takes a triangle when it is
 /// empty and sends a pixel a cycle (`rtl::vector`); `model::cycles::vector_frame` predicts
 /// the frame cycle for cycle.
-#[derive(LogicBlock, Default)]
+#[derive(LogicBlock)]
 pub struct RasterTopVector {
     pub clock: Signal<In, Clock>,
     /// As [`RasterTop`]'s.
@@ -377,9 +377,12 @@ pub struct RasterTopVector {
     pub mem: MemoryPort,
     pub done: Signal<Out, Bit>,
     cull_sort: CullSort,
-    vector: Vector,
+    vector: Vector1,
     pixel_out: PixelOut,
     last_in: DFF<Bit>,
+    /// Channel k's place in the vector unit's `out_rgb`.
+    ch1: Constant<Bits<8>>,
+    ch2: Constant<Bits<8>>,
 }
 
 impl RasterTopVector {
@@ -388,9 +391,20 @@ impl RasterTopVector {
     pub fn new(l: usize, perspective: bool, parts: &Parts) -> Result<RasterTopVector, String> {
         Ok(RasterTopVector {
             cull_sort: CullSort::new(parts),
-            vector: Vector::new(l, perspective)?,
+            vector: Vector1::new(l, perspective)?,
             pixel_out: PixelOut::new(parts),
-            ..Default::default()
+            ch1: Constant::new(CHANNEL.to_bits()),
+            ch2: Constant::new((2 * CHANNEL).to_bits()),
+            clock: Default::default(),
+            width: Default::default(),
+            height: Default::default(),
+            inp: Default::default(),
+            inp_last: Default::default(),
+            cull_back: Default::default(),
+            verdict: Default::default(),
+            mem: Default::default(),
+            done: Default::default(),
+            last_in: Default::default(),
         })
     }
 }
@@ -408,7 +422,16 @@ impl Logic for RasterTopVector {
         TriangleSink::link(&mut self.inp, &mut self.cull_sort.inp);
         Verdict::link(&mut self.verdict, &mut self.cull_sort.verdict);
         SortedSource::join(&mut self.cull_sort.out, &mut self.vector.inp);
-        PixelSource::join(&mut self.vector.out, &mut self.pixel_out.inp);
+        self.pixel_out.inp.valid.next = self.vector.out_valid.val();
+        self.vector.out_ready.next = self.pixel_out.inp.ready.val();
+        self.pixel_out.inp.x.next = self.vector.out_x.val();
+        self.pixel_out.inp.y.next = self.vector.out_y.val();
+        self.pixel_out.inp.z.next = self.vector.out_z.val();
+        self.pixel_out.inp.rgb0.next = bit_cast::<CHANNEL, { 3 * CHANNEL }>(self.vector.out_rgb.val());
+        self.pixel_out.inp.rgb1.next =
+            bit_cast::<CHANNEL, { 3 * CHANNEL }>(self.vector.out_rgb.val() >> self.ch1.val());
+        self.pixel_out.inp.rgb2.next =
+            bit_cast::<CHANNEL, { 3 * CHANNEL }>(self.vector.out_rgb.val() >> self.ch2.val());
         MemoryPort::link(&mut self.mem, &mut self.pixel_out.mem);
         if self.inp.valid.val() & self.inp.ready.val() {
             self.last_in.d.next = self.inp_last.val();

@@ -1,40 +1,57 @@
 //! `vector`: per-pixel barycentric rasterization of paper 004 (Lee et al. 2009, eq. 1-6),
-//! one pixel per clock, bit-exact and cycle-exact to `model::vector::vector` at `lanes` = 1.
+//! `LANES` pixels per clock (1, 2, 4 or 8), bit-exact and cycle-exact to
+//! `model::vector::vector` and `model::cycles::VectorUnit`.
 //!
 //! It takes a sorted triangle (the link `inp`, `links::SortedSink`, the vertices' `inv_w`
-//! included) when its setup is free, walks the triangle's bounding box of pixel centres
-//! (clipped to the screen) row by row, and sends each pixel inside whose depth lies in
-//! [0, z_max] on the link `out` (`links::PixelSource`, as `span` does to `pixel_out`).
-//! Setup works on the next triangle while the walk and the pixel pipeline work on this
-//! one.
+//! included) when its setup is free; a scout finds, row by row of the triangle's bounding
+//! box of pixel centres (clipped to the screen), the chunks of `LANES` pixels that may hold
+//! a pixel inside; the walker walks them, a chunk a cycle, and the lanes ([`lane::Lane`])
+//! test and shade their pixel of the chunk. Each chunk with a pixel inside whose depth lies
+//! in [0, z_max] leaves on `out_*`: the chunk's first x and its row, a mask of the lanes
+//! with a pixel, their depths and colours. Setup works on the next triangle while the scout
+//! and the walker work on the ones before.
 //!
 //! **Setup** (cycle 0 takes the triangle; `model::vector::setup` cycles, 21 with the
 //! default divider):
 //!
 //! ```text
-//!  cycle 1      bounding box: min and max of x and y (registers)
-//!               area products (v1 - v0) x (v2 - v0), two multipliers
+//!  cycle 1      bounding box: min and max of x and y (registers); the x of the first
+//!               vertex of least y; area products (v1 - v0) x (v2 - v0), two multipliers
 //!  cycle 2      the box to pixel centres, clipped to the screen
-//!  cycle 3      empty box?
-//!  cycle 3      twice the area (exact)
-//!  cycle 4      its sign: v1 and v2 swapped for a negative area (clockwise on screen); |area|
+//!  cycle 3      empty box?; twice the area (exact); the start chunk: the top vertex's
+//!               pixel clamped to the box, rounded down to a multiple of LANES
+//!  cycle 4      the area's sign: v1 and v2 swapped for a negative area (clockwise on
+//!               screen); |area|
 //!  cycle 5      edge deltas of the (swapped) edges v1->v2, v2->v0, v0->v1; attribute
 //!               differences v1 - v0, v2 - v0; |area|'s leading one (exp)
 //!  cycle 6      1/area's divisor (`model::divider::recip_operands`) into a register; setup's
 //!               own divider (LA = `model::vector::area_divider_latency` stages, 13 at the
 //!               default L = 25) takes it in cycle 7 and returns it LA later
-//!  cycles 6-8   each edge function at the box's first pixel centre: two products
-//!  cycle 7+LA   1/area's mantissa; handed to the walk this cycle (or at cycle 11, LA < 4)
-//!               or later: when the walk before is in its last pixel or done, and the set
-//!               of constants the triangle goes into is free (below); its walk starts the
-//!               cycle after, and setup may take the next triangle
+//!  cycles 6-8   each edge function at the start chunk's first pixel centre in the box's
+//!               first row: two products
+//!  cycle 7+LA   1/area's mantissa; handed to the scout this cycle (or at cycle 11, LA < 4)
+//!               or later: when the scout is free and the set of constants the triangle
+//!               goes into is free (below); setup may take the next triangle the cycle after
 //! ```
 //!
-//! **Walk.** A pixel a cycle; the edge functions step exactly by -2^s dy along a row and
-//! 2^s dx down a column, so every pixel's are exact. Coverage: all three positive, or zero
-//! on an edge the triangle owns (top-left rule), as the model.
+//! **Scout** (`model::vector::vector` gives the rule, `WalkRow` its cycles). Two probes,
+//! each a chunk and the three edge functions at its first pixel, start on the first row at
+//! the start chunk and on each next row where they ended (the functions step exactly:
+//! -2^s dy a pixel right, 2^s dx a row down). An edge rising to the right (dy < 0) bounds a
+//! row on the left: the left probe moves right while that edge rejects its chunk's last
+//! pixel, left while no such edge rejects the pixel left of its chunk; the right probe
+//! mirrors it with the edges falling to the right at its chunk's first pixel and the next
+//! chunk's. A probe moves a chunk a cycle, within the box. A flat edge rejecting the row
+//! ends it empty at once. When neither probe moves the row is found: empty (a probe still
+//! out, or crossed) and left, or held until the walker takes it.
 //!
-//! **Pixel pipeline** (cycle t: the pixel's edge functions in the walk registers; `L` the
+//! **Walker.** It takes a found row in its last chunk of the row before (or idle): the
+//! chunk, the row's last chunk, the left probe's edge functions, its triangle's edges and
+//! set; then a chunk a cycle. Lane i tests pixel x + i with the chunk's functions less
+//! i x 2^s dy (loaded when the walker takes a row): inside the box, and all three positive
+//! or zero on an edge the triangle owns (top-left rule), as the model.
+//!
+//! **Pixel pipeline**, in every lane (cycle t: the chunk in the walker's registers; `L` the
 //! divider's stages; `model::vector::pixel_latency` = 16 + L):
 //!
 //! ```text
@@ -43,11 +60,11 @@
 //!            q_k = l_k iw_k, l = (1 - a - b, a, b) (eq. 5)                              (3)
 //!  t+6       depth rounded and tested against [0, z_max]; sum = q0 + q1 + q2
 //!  t+7       the sum's leading one
-//!  t+8       1/sum's divisor into a register; t+9 into the pixels' divider, back at t+9+L
+//!  t+8       1/sum's divisor into a register; t+9 into the lane's divider, back at t+9+L
 //!  t+9+L..   a' = q1/sum, b' = q2/sum (eq. 6): q x 1/sum's mantissa, shifted             (2)
 //!  t+12+L..  colours c0 + (c1 - c0) a' + (c2 - c0) b' (eq. 4; a, b without
 //!            perspective correction), rounded and clamped                                (6)
-//!  t+16+L    the pixel on `out`
+//!  t+16+L    the chunk on `out`
 //! ```
 //!
 //! The arithmetic is the model's, every wrap a register's width and every floor a bit slice
@@ -56,29 +73,31 @@
 //!
 //! **Triangles in flight.** The pipeline's stages read their triangle's constants (1/area's
 //! mantissa and exponent at t+0 and t+2; z's and eq. 5's at t+3 and t+5; the colours' at
-//! t+12+L and t+14+L) from one of two sets, the pixel's set found in a shift register of
-//! the walk's (`ph`): the walk after next may load a set only when the last pixel using it
-//! has passed t+14+L (`model::vector::constants_read`). `model::cycles::VectorUnit` is this
-//! timing. While a pixel waits on `out` the whole unit waits (`run` low: every register
-//! holds, the multipliers' and the dividers' too).
+//! t+12+L and t+14+L) from one of two sets, the chunk's set found in a shift register of
+//! the walker's (`ph`): a triangle may load a set at its handover only when the last chunk
+//! using it has passed t+14+L (`model::vector::constants_read`). While a chunk waits on
+//! `out` the whole unit waits (`run` low: every register holds, the multipliers' and the
+//! dividers' too).
 //!
 //! **Parameters.** `N`, the size class (widths from `crate::widths`); `L`, the divider's
 //! stages; `PERSPECTIVE` (1: colours by eq. 5-6; 0: by a and b, and the synthesis removes
-//! eq. 5-6's multipliers and the divider's second use).
+//! eq. 5-6's multipliers and the divider's second use); `LANES`.
 //!
 //! Model: `model::vector::vector`. Emitted: `hdl-out/vector.v`.
 
 use super::cull_sort::{COLOR, INV_W, XY, Z};
 use super::divider::{DividerRtl, DIV_D, DIV_N, LATENCY_MAX};
-use super::links::{PixelSource, SortedSink};
-use super::span::{ColorOf, DepthOf};
+use super::links::SortedSink;
 use super::widths::{CHANNEL, C_ACC, DEPTH, DERIVED, DIM, FORMATS, PIXEL, SCREEN, Z_ACC};
 use crate::emit::{emit_unit, Emitted};
 use crate::mul::PipelinedMul;
 use crate::parts::{defaults, DelayLine, Negative, SignExtend};
-use crate::switch::Switch;
 use crate::Params;
+use lane::Lane;
 use rust_hdl::prelude::*;
+
+#[path = "vector/lane.rs"]
+mod lane;
 
 /// A vertex difference and a pixel centre's offset from a vertex: `delta_bits`.
 const D1: usize = XY + 1;
@@ -151,9 +170,8 @@ const Q_WIDE: usize = max(PL, QR + BARY);
 const Z0_WIDE: usize = max(Z1, Z_ACC);
 const C0_WIDE: usize = max(C1, C_ACC);
 
-/// The walk's tag of a pixel: inside, x, y (`{y, x, inside}`); the depth's: in range, depth.
-const TAG: usize = 2 * SCREEN + 1;
-const DTAG: usize = DEPTH + 1;
+/// A chunk's place through the pipeline: `{y, x}`.
+const TAG: usize = 2 * SCREEN;
 
 /// `y` = the low `OUT` bits of floor(x 2^lsh / 2^(rsh + by)), `x` an `IN`-bit two's
 /// complement number: the model's `rescale` (floor) and its wrap into a register, as a bit
@@ -272,62 +290,157 @@ impl<const N: usize, const W: usize> Logic for Normalise<N, W> {
     }
 }
 
-/// The barycentric unit; see the module documentation.
+/// `rejects` = edge function `e` rejects its sample: negative, or zero on an edge that does
+/// not own its samples (top-left rule).
+#[derive(LogicBlock, Default)]
+pub struct Rejects {
+    pub e: Signal<In, Bits<EFN>>,
+    pub owns: Signal<In, Bit>,
+    pub rejects: Signal<Out, Bit>,
+    neg: Negative<EFN>,
+}
+
+impl Logic for Rejects {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.neg.x.next = self.e.val();
+        self.rejects.next = self.neg.neg.val() | ((self.e.val() == 0) & !self.owns.val());
+    }
+}
+
+/// `y` = `x` placed at bit `at` of a wider word, zeros elsewhere.
 #[derive(LogicBlock)]
-pub struct Vector {
+pub struct Place<const W: usize, const OUT: usize> {
+    pub x: Signal<In, Bits<W>>,
+    pub y: Signal<Out, Bits<OUT>>,
+    at: Constant<Bits<16>>,
+}
+
+impl<const W: usize, const OUT: usize> Place<W, OUT> {
+    pub fn new(at: usize) -> Self {
+        assert!(at + W <= OUT, "Place<{W}, {OUT}> at {at}");
+        Place { x: Default::default(), y: Default::default(), at: Constant::new(at.to_bits()) }
+    }
+}
+
+impl<const W: usize, const OUT: usize> Logic for Place<W, OUT> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.y.next = bit_cast::<OUT, W>(self.x.val()) << self.at.val();
+    }
+}
+
+/// An edge's class from its (swapped, clockwise) deltas: its function rises to the right
+/// (`left`: dy < 0, it bounds a row on the left), falls (`right`: dy > 0) or is constant
+/// along a row (`flat`); whether it owns its samples (top edges run in +x, left edges in
+/// -y); its function's step a pixel right (`g`: it falls by dy 2^s) and a row down (`h`:
+/// it rises by dx 2^s).
+#[derive(LogicBlock)]
+pub struct EdgeClass {
+    pub dx: Signal<In, Bits<D1>>,
+    pub dy: Signal<In, Bits<D1>>,
+    pub left: Signal<Out, Bit>,
+    pub right: Signal<Out, Bit>,
+    pub flat: Signal<Out, Bit>,
+    pub owns: Signal<Out, Bit>,
+    pub g: Signal<Out, Bits<EFN>>,
+    pub h: Signal<Out, Bits<EFN>>,
+    dx_neg: Negative<D1>,
+    dy_neg: Negative<D1>,
+    ex: SignExtend<D1, EFN>,
+    ey: SignExtend<D1, EFN>,
+    frac: Constant<Bits<8>>,
+}
+
+impl Default for EdgeClass {
+    fn default() -> Self {
+        EdgeClass {
+            dx: Default::default(),
+            dy: Default::default(),
+            left: Default::default(),
+            right: Default::default(),
+            flat: Default::default(),
+            owns: Default::default(),
+            g: Default::default(),
+            h: Default::default(),
+            dx_neg: Default::default(),
+            dy_neg: Default::default(),
+            ex: Default::default(),
+            ey: Default::default(),
+            frac: Constant::new((FORMATS.xy.frac as usize).to_bits()),
+        }
+    }
+}
+
+impl Logic for EdgeClass {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.dx_neg.x.next = self.dx.val();
+        self.dy_neg.x.next = self.dy.val();
+        self.left.next = self.dy_neg.neg.val();
+        self.flat.next = self.dy.val() == 0;
+        self.right.next = !self.dy_neg.neg.val() & (self.dy.val() != 0);
+        self.owns.next = self.dy_neg.neg.val() | ((self.dy.val() == 0) & !self.dx_neg.neg.val() & (self.dx.val() != 0));
+        self.ex.x.next = self.dx.val();
+        self.ey.x.next = self.dy.val();
+        self.g.next = self.ey.y.val() << self.frac.val();
+        self.h.next = self.ex.y.val() << self.frac.val();
+    }
+}
+
+/// The barycentric unit with `LANES` lanes (1, 2, 4 or 8; `ZW` = `LANES` x `DEPTH`, `CW` =
+/// `LANES` x 3 x `CHANNEL`, the output's widths); see the module documentation.
+#[derive(LogicBlock)]
+pub struct Vector<const LANES: usize, const ZW: usize, const CW: usize> {
     pub clock: Signal<In, Clock>,
     /// Screen size in pixels, 1 to 2^CLASS each; constant during a frame.
     pub width: Signal<In, Bits<DIM>>,
     pub height: Signal<In, Bits<DIM>>,
-    /// The sorted triangle in (`inp.crosses` is not read), taken when the unit is empty.
+    /// The sorted triangle in (`inp.crosses` is not read), taken when setup is free.
     pub inp: SortedSink,
-    /// The pixels, each held until `out.ready`.
-    pub out: PixelSource,
+    /// A chunk's pixels, held until `out_ready`: `out_mask` bit i for pixel (`out_x` + i,
+    /// `out_y`) with depth `out_z` bits [i DEPTH, (i+1) DEPTH) and R, G, B `out_rgb` bits
+    /// [(3i+k) CHANNEL, (3i+k+1) CHANNEL), k = 0, 1, 2.
+    pub out_valid: Signal<Out, Bit>,
+    pub out_ready: Signal<In, Bit>,
+    pub out_mask: Signal<Out, Bits<LANES>>,
+    pub out_x: Signal<Out, Bits<SCREEN>>,
+    pub out_y: Signal<Out, Bits<SCREEN>>,
+    pub out_z: Signal<Out, Bits<ZW>>,
+    pub out_rgb: Signal<Out, Bits<CW>>,
     /// No triangle in the unit.
     pub idle: Signal<Out, Bit>,
 
-    persp: Switch,
-    /// The pixels' divider (1/sum, a division every cycle) and 1/area's, for the triangle
-    /// in setup while the one before walks.
-    div: DividerRtl,
+    lanes: Vec<Lane>,
+    /// 1/area's divider, for the triangle in setup.
     div_a: DividerRtl,
-    /// Setup's two multipliers: the area, then each edge function at the first pixel.
+    /// Setup's two multipliers: the area, then each edge function at the start chunk.
     mul_s: [PipelinedMul<D1, D1, EFN>; 2],
-    mul_a: PipelinedMul<EFN, MANT1, PAB>,
-    mul_b: PipelinedMul<EFN, MANT1, PAB>,
-    mul_z1: PipelinedMul<Z1, BARY, PZ>,
-    mul_z2: PipelinedMul<Z1, BARY, PZ>,
-    mul_l: [PipelinedMul<BARY, IW1, PL>; 3],
-    mul_ra: PipelinedMul<BARY, MANT1, PR>,
-    mul_rb: PipelinedMul<BARY, MANT1, PR>,
-    mul_c1: [PipelinedMul<C1, BARY, PC>; 3],
-    mul_c2: [PipelinedMul<C1, BARY, PC>; 3],
 
     // Control.
-    /// A triangle is in setup (taken, not yet handed to the walk); the unit runs (no pixel
-    /// waits on `out`).
+    /// A triangle is in setup (taken, not yet handed to the scout); the unit runs (no
+    /// chunk waits on `out`).
     sbusy: DFF<Bit>,
     run: Signal<Local, Bit>,
     take: Signal<Local, Bit>,
-    /// Setup's cycle (1 up to `at_walk`, where it waits for the handover; 0: none) and, from
-    /// the walk's last cycle, the cycles until its last pixel has left.
+    /// Setup's cycle (1 up to `at_walk`, where it waits for the handover; 0: none) and the
+    /// cycles until the walker's last chunk has left.
     sc: DFF<Bits<8>>,
     dc: DFF<Bits<8>>,
     at_mant: Constant<Bits<8>>,
     at_walk: Constant<Bits<8>>,
     drain: Constant<Bits<8>>,
-    /// The walk is in its last pixel or done; the set the next walk loads is free; the
-    /// triangle in setup goes to the walk (or, with an empty box, away) this cycle.
-    at_last: Signal<Local, Bit>,
-    walk_ok: Signal<Local, Bit>,
+    /// The set the next triangle loads is free; the triangle in setup goes to the scout
+    /// (or, with an empty box, away) this cycle.
     set_ok: Signal<Local, Bit>,
     hand: Signal<Local, Bit>,
     /// Per set of constants, the cycles they are still read (`model::vector::constants_read`
-    /// from the walk's last cycle, less one).
+    /// from the walker's last chunk using them, less one).
     hold: [DFF<Bits<8>>; 2],
     held_m1: Constant<Bits<8>>,
-    /// The walking triangle's set, and the sets of the pixels behind the walk: bit j that
-    /// of the pixel at t+j+1. Taps: the stages that read a constant.
+    /// The scout's triangle's set, the walker's, and the sets of the chunks behind the
+    /// walker: bit j that of the chunk at t+j+1. Taps: the stages that read a constant.
+    sp: DFF<Bit>,
     wp: DFF<Bit>,
     ph: DFF<Bits<64>>,
     tap_exp: Constant<Bits<8>>,
@@ -336,7 +449,7 @@ pub struct Vector {
     tap_c: Constant<Bits<8>>,
     tap_c0: Constant<Bits<8>>,
 
-    // The triangle: vertices (swapped for a negative area in cycle 4).
+    // Setup: the triangle's vertices (swapped for a negative area in cycle 4).
     vx: [DFF<Bits<XY>>; 3],
     vy: [DFF<Bits<XY>>; 3],
     vz: [DFF<Bits<Z>>; 3],
@@ -353,11 +466,15 @@ pub struct Vector {
     max_x: Signal<Local, Bits<XY>>,
     min_y: Signal<Local, Bits<XY>>,
     max_y: Signal<Local, Bits<XY>>,
-    /// The vertices' extremes (sign bits flipped back), registered in cycle 1.
+    /// x of the first vertex of least y.
+    top_x: Signal<Local, Bits<XY>>,
+    /// The vertices' extremes (sign bits flipped back) and the top vertex's x, registered in
+    /// cycle 1.
     min_xr: DFF<Bits<XY>>,
     max_xr: DFF<Bits<XY>>,
     min_yr: DFF<Bits<XY>>,
     max_yr: DFF<Bits<XY>>,
+    top_xr: DFF<Bits<XY>>,
     /// The box's corners before clamping: min + (px/2 - 1), max - px/2 (D1 bits).
     lo_x: Signal<Local, Bits<D1>>,
     lo_y: Signal<Local, Bits<D1>>,
@@ -371,11 +488,13 @@ pub struct Vector {
     ext_min_y: SignExtend<XY, D1>,
     ext_max_x: SignExtend<XY, D1>,
     ext_max_y: SignExtend<XY, D1>,
+    ext_top: SignExtend<XY, D1>,
+    neg_top: Negative<XY>,
     px_half_m1: Constant<Bits<D1>>,
     px_half: Constant<Bits<D1>>,
     frac: Constant<Bits<8>>,
     /// The box (pixels, non-negative), whether its bottom or right lies left of or above
-    /// the screen, and whether it is empty.
+    /// the screen, and whether it is empty; the first row's start chunk (its first x).
     bx0: DFF<Bits<PIXEL>>,
     bx1: DFF<Bits<PIXEL>>,
     by0: DFF<Bits<PIXEL>>,
@@ -384,7 +503,15 @@ pub struct Vector {
     hi_y_c: Signal<Local, Bits<PIXEL>>,
     bneg: DFF<Bit>,
     empty: DFF<Bit>,
-    /// The box's first pixel centre, in `xy` units.
+    top_c: Signal<Local, Bits<PIXEL>>,
+    cs: DFF<Bits<PIXEL>>,
+    /// Multiples of `LANES`: ones above the low log2(LANES) bits.
+    chunk: Constant<Bits<SCREEN>>,
+    chunk_p: Constant<Bits<PIXEL>>,
+    lg: Constant<Bits<8>>,
+    one_s: Constant<Bits<8>>,
+    step: Constant<Bits<SCREEN>>,
+    /// The start chunk's first pixel centre, in `xy` units.
     cx0: Signal<Local, Bits<D1>>,
     cy0: Signal<Local, Bits<D1>>,
 
@@ -394,47 +521,93 @@ pub struct Vector {
     lead_a: LeadingOne<AREA>,
     exp_a: DFF<Bits<8>>,
     norm_a: Normalise<AREA, { max(AREA, DIV_D) + 1 }>,
-    norm_s: Normalise<SUMW, { max(SUMW, max(DIV_D, TOP + 1)) }>,
     recip_n: Constant<Bits<DIV_N>>,
     /// 1/area's mantissa: from its divider in cycle 7 + LA (the handover may come in it),
     /// from `mant` after.
     mant_c: Signal<Local, Bits<MANT>>,
-    /// The dividers' divisors, registered: 1/area's in cycle 6, each pixel's 1/sum's.
+    /// 1/area's divisor, registered in cycle 6.
     div_da: DFF<Bits<DIV_D>>,
-    div_d: DFF<Bits<DIV_D>>,
     mant: DFF<Bits<MANT>>,
 
-    /// Per edge (v1->v2, v2->v0, v0->v1): dx, dy; whether it owns its samples; the edge
-    /// function at the first pixel, at the row's first pixel and at the walk's pixel.
+    /// Per edge (v1->v2, v2->v0, v0->v1): dx, dy, and its function at the start chunk.
     dx: [DFF<Bits<D1>>; 3],
     dy: [DFF<Bits<D1>>; 3],
-    dx_neg: [Negative<D1>; 3],
-    dy_neg: [Negative<D1>; 3],
-    owns: [Signal<Local, Bit>; 3],
-    edx: [SignExtend<D1, EFN>; 3],
-    edy: [SignExtend<D1, EFN>; 3],
     w0: [DFF<Bits<EFN>>; 3],
-    wrow: [DFF<Bits<EFN>>; 3],
-    w: [DFF<Bits<EFN>>; 3],
-    w_neg: [Negative<EFN>; 3],
-    covered: Signal<Local, Bit>,
     /// Attribute differences v1 - v0, v2 - v0 (after the swap).
     d1z: DFF<Bits<Z1>>,
     d2z: DFF<Bits<Z1>>,
     d1c: [DFF<Bits<C1>>; 3],
     d2c: [DFF<Bits<C1>>; 3],
 
-    // The walk: its pixel, its box and edges (setup's, handed over).
+    // The scout: busy, its row and the last row, the box's first and last chunk and x
+    // extent, each probe's chunk and the edge functions at its first pixel, its edges.
+    sv: DFF<Bit>,
+    sy: DFF<Bits<SCREEN>>,
+    sy1: DFF<Bits<SCREEN>>,
+    sc0: DFF<Bits<SCREEN>>,
+    sc1: DFF<Bits<SCREEN>>,
+    sx0: DFF<Bits<SCREEN>>,
+    sx1: DFF<Bits<SCREEN>>,
+    sl: DFF<Bits<SCREEN>>,
+    sr: DFF<Bits<SCREEN>>,
+    el: [DFF<Bits<EFN>>; 3],
+    er: [DFF<Bits<EFN>>; 3],
+    /// The edge functions the probes test, kept beside `el` and `er` (every step of those
+    /// steps these): at the left probe's chunk's last pixel, at the pixel left of it, at the
+    /// first pixel of the chunk right of the right probe's.
+    ell: [DFF<Bits<EFN>>; 3],
+    elm: [DFF<Bits<EFN>>; 3],
+    ern: [DFF<Bits<EFN>>; 3],
+    sdx: [DFF<Bits<D1>>; 3],
+    sdy: [DFF<Bits<D1>>; 3],
+    scls: [EdgeClass; 3],
+    /// Each edge's step over a chunk (the scout's triangle), and setup's triangle's edges:
+    /// classes, steps over a chunk and over all but its last pixel.
+    s_chunk: [Signal<Local, Bits<EFN>>; 3],
+    hcls: [EdgeClass; 3],
+    h_chunk: [Signal<Local, Bits<EFN>>; 3],
+    h_less: [Signal<Local, Bits<EFN>>; 3],
+    /// Per edge: at the left probe's last pixel, at the pixel left of it, at the left probe's
+    /// first pixel (flat edges), at the right probe's first pixel and the next chunk's.
+    rej_ll: [Rejects; 3],
+    rej_lm: [Rejects; 3],
+    rej_lf: [Rejects; 3],
+    rej_rf: [Rejects; 3],
+    rej_rn: [Rejects; 3],
+    /// The left probe's chunk and all left of it hold no pixel; the chunk left of it holds
+    /// none; the right probe's and all right of it; the next right; a flat edge rejects the
+    /// row.
+    out_l: Signal<Local, Bit>,
+    out_lm: Signal<Local, Bit>,
+    out_r: Signal<Local, Bit>,
+    out_rn: Signal<Local, Bit>,
+    dead: Signal<Local, Bit>,
+    /// Probe moves: left probe right or left, right probe left or right.
+    l_right: Signal<Local, Bit>,
+    l_left: Signal<Local, Bit>,
+    r_left: Signal<Local, Bit>,
+    r_right: Signal<Local, Bit>,
+    /// The scout's row is found (no probe moves), found empty, and its last.
+    found: Signal<Local, Bit>,
+    row_empty: Signal<Local, Bit>,
+    row_last: Signal<Local, Bit>,
+
+    // The walker: a chunk (its first x), the row's last chunk, the row; the box's x
+    // extent, each edge function at the chunk's first pixel, its edges.
     tv: DFF<Bit>,
     tx: DFF<Bits<SCREEN>>,
+    te: DFF<Bits<SCREEN>>,
     ty: DFF<Bits<SCREEN>>,
     wx0: DFF<Bits<SCREEN>>,
     wx1: DFF<Bits<SCREEN>>,
-    wy1: DFF<Bits<SCREEN>>,
+    w: [DFF<Bits<EFN>>; 3],
     wdx: [DFF<Bits<D1>>; 3],
     wdy: [DFF<Bits<D1>>; 3],
+    wcls: [EdgeClass; 3],
+    walk_free: Signal<Local, Bit>,
+
     /// Two sets of a triangle's constants for the pixels (set s at index s, or 3s + k for
-    /// vertex or channel k), and those of the pixel at each stage that reads one.
+    /// vertex or channel k), and those of the chunk at each stage that reads one.
     k_mant: [DFF<Bits<MANT>>; 2],
     k_exp: [DFF<Bits<8>>; 2],
     k_d1z: [DFF<Bits<Z1>>; 2],
@@ -449,67 +622,32 @@ pub struct Vector {
     c_d1z: Signal<Local, Bits<Z1>>,
     c_d2z: Signal<Local, Bits<Z1>>,
     c_z0: Signal<Local, Bits<Z>>,
-    ez0: SignExtend<Z, Z1>,
     c_iw: [Signal<Local, Bits<INV_W>>; 3],
     c_d1c: [Signal<Local, Bits<C1>>; 3],
     c_d2c: [Signal<Local, Bits<C1>>; 3],
     c_c0: [Signal<Local, Bits<COLOR>>; 3],
+    /// The chunk's place `{y, x}` through the pipeline.
     tag: Signal<Local, Bits<TAG>>,
     tag_dl: DelayLine<TAG>,
-    tag_out: Signal<Local, Bits<TAG>>,
-    x_shift: Constant<Bits<8>>,
     y_shift: Constant<Bits<8>>,
-
-    // The pixel pipeline.
-    rs_a: Rescale<PAB, AB_WIDE, BARY>,
-    rs_b: Rescale<PAB, AB_WIDE, BARY>,
-    a3: DFF<Bits<BARY>>,
-    b3: DFF<Bits<BARY>>,
-    one: Constant<Bits<BARY>>,
-    rs_z: Rescale<PZ, Z_WIDE, Z_ACC>,
-    rs_z0: Rescale<Z1, Z0_WIDE, Z_ACC>,
-    z6: DFF<Bits<Z_ACC>>,
-    depth_of: DepthOf,
-    dtag: Signal<Local, Bits<DTAG>>,
-    dtag_dl: DelayLine<DTAG>,
-    dtag_out: Signal<Local, Bits<DTAG>>,
-    rs_q: [Rescale<PL, Q_WIDE, BARY>; 3],
-    q6: [DFF<Bits<BARY>>; 3],
-    eq: [SignExtend<BARY, SUMW>; 3],
-    sum_c: Signal<Local, Bits<SUMW>>,
-    sum7: DFF<Bits<SUMW>>,
-    lead_s: LeadingOne<SUMW>,
-    sum8: DFF<Bits<SUMW>>,
-    exp8: DFF<Bits<8>>,
-    q_pair: Signal<Local, Bits<{ 2 * BARY }>>,
-    q_dl: DelayLine<{ 2 * BARY }>,
-    exp_dl: DelayLine<8>,
-    ab_pair: Signal<Local, Bits<{ 2 * BARY }>>,
-    ab_dl: DelayLine<{ 2 * BARY }>,
-    half_pair: Constant<Bits<8>>,
-    rs_ra: Rescale<PR, R_WIDE, BARY>,
-    rs_rb: Rescale<PR, R_WIDE, BARY>,
-    ca11: DFF<Bits<BARY>>,
-    cb11: DFF<Bits<BARY>>,
-    ca: Signal<Local, Bits<BARY>>,
-    cb: Signal<Local, Bits<BARY>>,
-    rs_c: [Rescale<PC, C_WIDE, C_ACC>; 3],
-    rs_c0: [Rescale<C1, C0_WIDE, C_ACC>; 3],
-    c14: [DFF<Bits<C_ACC>>; 3],
-    color_of: [ColorOf; 3],
-    full: Constant<Bits<CHANNEL>>,
-
-    // The output register.
-    o_valid: DFF<Bit>,
     o_x: DFF<Bits<SCREEN>>,
     o_y: DFF<Bits<SCREEN>>,
-    o_z: DFF<Bits<DEPTH>>,
-    o_rgb: [DFF<Bits<CHANNEL>>; 3],
+    /// The lanes' outputs gathered: after lane i, lanes 0 to i - 1 (`ZW`, `CW` bits).
+    g_mask: Vec<Signal<Local, Bits<LANES>>>,
+    g_z: Vec<Signal<Local, Bits<ZW>>>,
+    g_rgb: Vec<Signal<Local, Bits<CW>>>,
+    at_mask: Vec<Constant<Bits<LANES>>>,
+    place_z: Vec<Place<DEPTH, ZW>>,
+    place_rgb: Vec<Place<{ 3 * CHANNEL }, CW>>,
 }
 
-impl Vector {
+impl<const LANES: usize, const ZW: usize, const CW: usize> Vector<LANES, ZW, CW> {
     /// The unit with an `l`-stage divider, colours perspective-corrected or not.
-    pub fn new(l: usize, perspective: bool) -> Result<Vector, String> {
+    pub fn new(l: usize, perspective: bool) -> Result<Self, String> {
+        assert!(
+            matches!(LANES, 1 | 2 | 4 | 8) && ZW == LANES * DEPTH && CW == LANES * 3 * CHANNEL,
+            "Vector<{LANES}, {ZW}, {CW}>"
+        );
         if !(1..=LATENCY_MAX).contains(&l) {
             return Err(format!("vector: L = {l} divider stages is not supported: 1 to {LATENCY_MAX}"));
         }
@@ -522,21 +660,17 @@ impl Vector {
             width: Default::default(),
             height: Default::default(),
             inp: Default::default(),
-            out: Default::default(),
+            out_valid: Default::default(),
+            out_ready: Default::default(),
+            out_mask: Default::default(),
+            out_x: Default::default(),
+            out_y: Default::default(),
+            out_z: Default::default(),
+            out_rgb: Default::default(),
             idle: Default::default(),
-            persp: Switch::new(perspective),
-            div: DividerRtl::new(l),
+            lanes: (0..LANES).map(|i| Lane::new(i, l, perspective)).collect(),
             div_a: DividerRtl::new(la),
             mul_s: defaults(),
-            mul_a: Default::default(),
-            mul_b: Default::default(),
-            mul_z1: Default::default(),
-            mul_z2: Default::default(),
-            mul_l: defaults(),
-            mul_ra: Default::default(),
-            mul_rb: Default::default(),
-            mul_c1: defaults(),
-            mul_c2: defaults(),
             sbusy: Default::default(),
             run: Default::default(),
             take: Default::default(),
@@ -545,12 +679,11 @@ impl Vector {
             at_mant: Constant::new((7 + la).to_bits()),
             at_walk: Constant::new((setup - 1).to_bits()),
             drain: Constant::new(pixel.to_bits()),
-            at_last: Default::default(),
-            walk_ok: Default::default(),
             set_ok: Default::default(),
             hand: Default::default(),
             hold: defaults(),
             held_m1: Constant::new((model::vector::constants_read(l as u32) as usize - 1).to_bits()),
+            sp: Default::default(),
             wp: Default::default(),
             ph: Default::default(),
             tap_exp: Constant::new(1usize.to_bits()),
@@ -573,10 +706,12 @@ impl Vector {
             max_x: Default::default(),
             min_y: Default::default(),
             max_y: Default::default(),
+            top_x: Default::default(),
             min_xr: Default::default(),
             max_xr: Default::default(),
             min_yr: Default::default(),
             max_yr: Default::default(),
+            top_xr: Default::default(),
             lo_x: Default::default(),
             lo_y: Default::default(),
             hi_x: Default::default(),
@@ -589,6 +724,8 @@ impl Vector {
             ext_min_y: Default::default(),
             ext_max_x: Default::default(),
             ext_max_y: Default::default(),
+            ext_top: Default::default(),
+            neg_top: Default::default(),
             px_half_m1: Constant::new((px / 2 - 1).to_bits()),
             px_half: Constant::new((px / 2).to_bits()),
             frac: Constant::new((FORMATS.xy.frac as usize).to_bits()),
@@ -600,6 +737,13 @@ impl Vector {
             hi_y_c: Default::default(),
             bneg: Default::default(),
             empty: Default::default(),
+            top_c: Default::default(),
+            cs: Default::default(),
+            chunk: Constant::new(!Bits::<SCREEN>::default() << (LANES.trailing_zeros() as u64)),
+            chunk_p: Constant::new(!Bits::<PIXEL>::default() << (LANES.trailing_zeros() as u64)),
+            lg: Constant::new((LANES.trailing_zeros() as usize).to_bits()),
+            one_s: Constant::new(1usize.to_bits()),
+            step: Constant::new(LANES.to_bits()),
             cx0: Default::default(),
             cy0: Default::default(),
             area: Default::default(),
@@ -608,36 +752,66 @@ impl Vector {
             lead_a: Default::default(),
             exp_a: Default::default(),
             norm_a: Default::default(),
-            norm_s: Default::default(),
             recip_n: Constant::new((1u128 << (TOP as u32 + FORMATS.ooa.frac)).to_bits()),
             mant_c: Default::default(),
             div_da: Default::default(),
-            div_d: Default::default(),
             mant: Default::default(),
             dx: defaults(),
             dy: defaults(),
-            dx_neg: defaults(),
-            dy_neg: defaults(),
-            owns: defaults(),
-            edx: defaults(),
-            edy: defaults(),
             w0: defaults(),
-            wrow: defaults(),
-            w: defaults(),
-            w_neg: defaults(),
-            covered: Default::default(),
             d1z: Default::default(),
             d2z: Default::default(),
             d1c: defaults(),
             d2c: defaults(),
+            sv: Default::default(),
+            sy: Default::default(),
+            sy1: Default::default(),
+            sc0: Default::default(),
+            sc1: Default::default(),
+            sx0: Default::default(),
+            sx1: Default::default(),
+            sl: Default::default(),
+            sr: Default::default(),
+            el: defaults(),
+            er: defaults(),
+            ell: defaults(),
+            elm: defaults(),
+            ern: defaults(),
+            sdx: defaults(),
+            sdy: defaults(),
+            scls: defaults(),
+            s_chunk: defaults(),
+            hcls: defaults(),
+            h_chunk: defaults(),
+            h_less: defaults(),
+            rej_ll: defaults(),
+            rej_lm: defaults(),
+            rej_lf: defaults(),
+            rej_rf: defaults(),
+            rej_rn: defaults(),
+            out_l: Default::default(),
+            out_lm: Default::default(),
+            out_r: Default::default(),
+            out_rn: Default::default(),
+            dead: Default::default(),
+            l_right: Default::default(),
+            l_left: Default::default(),
+            r_left: Default::default(),
+            r_right: Default::default(),
+            found: Default::default(),
+            row_empty: Default::default(),
+            row_last: Default::default(),
             tv: Default::default(),
             tx: Default::default(),
+            te: Default::default(),
             ty: Default::default(),
             wx0: Default::default(),
             wx1: Default::default(),
-            wy1: Default::default(),
+            w: defaults(),
             wdx: defaults(),
             wdy: defaults(),
+            wcls: defaults(),
+            walk_free: Default::default(),
             k_mant: defaults(),
             k_exp: defaults(),
             k_d1z: defaults(),
@@ -652,80 +826,44 @@ impl Vector {
             c_d1z: Default::default(),
             c_d2z: Default::default(),
             c_z0: Default::default(),
-            ez0: Default::default(),
             c_iw: defaults(),
             c_d1c: defaults(),
             c_d2c: defaults(),
             c_c0: defaults(),
             tag: Default::default(),
             tag_dl: DelayLine::new(pixel - 1),
-            tag_out: Default::default(),
-            x_shift: Constant::new(1usize.to_bits()),
-            y_shift: Constant::new((SCREEN + 1).to_bits()),
-            rs_a: Rescale::new(RL, RR),
-            rs_b: Rescale::new(RL, RR),
-            a3: Default::default(),
-            b3: Default::default(),
-            one: Constant::new((1u64 << FORMATS.bary.frac).to_bits()),
-            rs_z: Rescale::new(ZL, ZR),
-            rs_z0: Rescale::new(Z0L, 0),
-            z6: Default::default(),
-            depth_of: Default::default(),
-            dtag: Default::default(),
-            dtag_dl: DelayLine::new(pixel - 7),
-            dtag_out: Default::default(),
-            rs_q: std::array::from_fn(|_| Rescale::new(0, QR)),
-            q6: defaults(),
-            eq: defaults(),
-            sum_c: Default::default(),
-            sum7: Default::default(),
-            lead_s: Default::default(),
-            sum8: Default::default(),
-            exp8: Default::default(),
-            q_pair: Default::default(),
-            q_dl: DelayLine::new(l + 3),
-            exp_dl: DelayLine::new(l + 3),
-            ab_pair: Default::default(),
-            ab_dl: DelayLine::new(pixel - 7),
-            half_pair: Constant::new(BARY.to_bits()),
-            rs_ra: Rescale::new(RL, RR),
-            rs_rb: Rescale::new(RL, RR),
-            ca11: Default::default(),
-            cb11: Default::default(),
-            ca: Default::default(),
-            cb: Default::default(),
-            rs_c: std::array::from_fn(|_| Rescale::new(CL, CR)),
-            rs_c0: std::array::from_fn(|_| Rescale::new(C0L, 0)),
-            c14: defaults(),
-            color_of: defaults(),
-            full: Constant::new(255usize.to_bits()),
-            o_valid: Default::default(),
+            y_shift: Constant::new(SCREEN.to_bits()),
             o_x: Default::default(),
             o_y: Default::default(),
-            o_z: Default::default(),
-            o_rgb: defaults(),
+            g_mask: (0..=LANES).map(|_| Default::default()).collect(),
+            g_z: (0..=LANES).map(|_| Default::default()).collect(),
+            g_rgb: (0..=LANES).map(|_| Default::default()).collect(),
+            at_mask: (0..LANES).map(|i| Constant::new((1usize << i).to_bits())).collect(),
+            place_z: (0..LANES).map(|i| Place::new(i * DEPTH)).collect(),
+            place_rgb: (0..LANES).map(|i| Place::new(3 * i * CHANNEL)).collect(),
         })
     }
 }
 
-/// The default unit (`UNITS`): the default divider, perspective-correct colours.
-impl Default for Vector {
+/// The default unit: the default divider, perspective-correct colours.
+impl<const LANES: usize, const ZW: usize, const CW: usize> Default for Vector<LANES, ZW, CW> {
     fn default() -> Self {
         Vector::new(crate::L.default as usize, true).expect("the default L is supported")
     }
 }
 
-impl Logic for Vector {
+impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANES, ZW, CW> {
     #[hdl_gen]
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written, and is written only while the
         // unit runs.
-        dff_setup!(self, clock, sbusy, sc, dc, bx0, bx1, by0, by1, bneg, empty, area, area_abs, exp_a, div_da, div_d, mant);
-        dff_setup!(self, clock, wp, ph, wx0, wx1, wy1);
-        dff_setup!(self, clock, d1z, d2z, tv, tx, ty, a3, b3, z6, sum7, sum8, exp8, ca11, cb11);
-        dff_setup!(self, clock, min_xr, max_xr, min_yr, max_yr);
-        dff_setup!(self, clock, o_valid, o_x, o_y, o_z);
-        clock!(self, clock, div, div_a, mul_a, mul_b, mul_z1, mul_z2, mul_ra, mul_rb, tag_dl, dtag_dl, q_dl, exp_dl, ab_dl);
+        dff_setup!(self, clock, sbusy, sc, dc, bx0, bx1, by0, by1, bneg, empty, cs, area, area_abs, exp_a, div_da, mant);
+        dff_setup!(self, clock, sp, wp, ph, d1z, d2z, min_xr, max_xr, min_yr, max_yr, top_xr);
+        dff_setup!(self, clock, sv, sy, sy1, sc0, sc1, sx0, sx1, sl, sr, tv, tx, te, ty, wx0, wx1, o_x, o_y);
+        clock!(self, clock, div_a, tag_dl);
+        for i in 0..LANES {
+            self.lanes[i].clock.next = self.clock.val();
+        }
         for k in 0..3 {
             self.vx[k].clock.next = self.clock.val();
             self.vx[k].d.next = self.vx[k].q.val();
@@ -741,23 +879,26 @@ impl Logic for Vector {
             self.dy[k].d.next = self.dy[k].q.val();
             self.w0[k].clock.next = self.clock.val();
             self.w0[k].d.next = self.w0[k].q.val();
-            self.wrow[k].clock.next = self.clock.val();
-            self.wrow[k].d.next = self.wrow[k].q.val();
-            self.w[k].clock.next = self.clock.val();
-            self.w[k].d.next = self.w[k].q.val();
             self.d1c[k].clock.next = self.clock.val();
             self.d1c[k].d.next = self.d1c[k].q.val();
             self.d2c[k].clock.next = self.clock.val();
             self.d2c[k].d.next = self.d2c[k].q.val();
-            self.q6[k].clock.next = self.clock.val();
-            self.q6[k].d.next = self.q6[k].q.val();
-            self.c14[k].clock.next = self.clock.val();
-            self.c14[k].d.next = self.c14[k].q.val();
-            self.o_rgb[k].clock.next = self.clock.val();
-            self.o_rgb[k].d.next = self.o_rgb[k].q.val();
-            self.mul_l[k].clock.next = self.clock.val();
-            self.mul_c1[k].clock.next = self.clock.val();
-            self.mul_c2[k].clock.next = self.clock.val();
+            self.el[k].clock.next = self.clock.val();
+            self.el[k].d.next = self.el[k].q.val();
+            self.er[k].clock.next = self.clock.val();
+            self.er[k].d.next = self.er[k].q.val();
+            self.ell[k].clock.next = self.clock.val();
+            self.ell[k].d.next = self.ell[k].q.val();
+            self.elm[k].clock.next = self.clock.val();
+            self.elm[k].d.next = self.elm[k].q.val();
+            self.ern[k].clock.next = self.clock.val();
+            self.ern[k].d.next = self.ern[k].q.val();
+            self.sdx[k].clock.next = self.clock.val();
+            self.sdx[k].d.next = self.sdx[k].q.val();
+            self.sdy[k].clock.next = self.clock.val();
+            self.sdy[k].d.next = self.sdy[k].q.val();
+            self.w[k].clock.next = self.clock.val();
+            self.w[k].d.next = self.w[k].q.val();
             self.wdx[k].clock.next = self.clock.val();
             self.wdx[k].d.next = self.wdx[k].q.val();
             self.wdy[k].clock.next = self.clock.val();
@@ -793,28 +934,44 @@ impl Logic for Vector {
             self.k_z0[k].d.next = self.k_z0[k].q.val();
         }
 
-        // ---- Control: the unit runs unless a pixel waits on `out`. Setup takes a triangle
-        // when it holds none and the unit runs, and hands it to the walk in its last cycle
-        // (`at_walk`) or later: when the walk is in its last pixel or done and the set of
-        // constants the walk loads (the other than the walking triangle's) is read no more;
-        // an empty box at once.
-        self.run.next = !(self.o_valid.q.val() & !self.out.ready.val());
+        // ---- Control: the unit runs unless a chunk waits on `out`. Setup takes a triangle
+        // when it holds none and the unit runs, and hands it to the scout in its last cycle
+        // (`at_walk`) or later: when the scout is free and the set of constants the triangle
+        // loads (the other than the scout's last) is read no more; an empty box at once.
+        // ---- The lanes' outputs gathered: the chunk on `out`; the unit runs unless it waits.
+        self.g_mask[0].next = 0.into();
+        self.g_z[0].next = 0.into();
+        self.g_rgb[0].next = 0.into();
+        for i in 0..LANES {
+            self.g_mask[i + 1].next = self.g_mask[i].val();
+            if self.lanes[i].o_valid.val() {
+                self.g_mask[i + 1].next = self.g_mask[i].val() | self.at_mask[i].val();
+            }
+            self.place_z[i].x.next = self.lanes[i].o_z.val();
+            self.place_rgb[i].x.next = self.lanes[i].o_rgb.val();
+            self.g_z[i + 1].next = self.g_z[i].val() | self.place_z[i].y.val();
+            self.g_rgb[i + 1].next = self.g_rgb[i].val() | self.place_rgb[i].y.val();
+        }
+        for i in LANES..(LANES + 1) {
+            self.out_mask.next = self.g_mask[i].val();
+            self.out_z.next = self.g_z[i].val();
+            self.out_rgb.next = self.g_rgb[i].val();
+        }
+        self.out_valid.next = self.out_mask.val() != 0;
+        self.run.next = !(self.out_valid.val() & !self.out_ready.val());
+        for k in 0..2 {
+            self.mul_s[k].en.next = self.run.val();
+        }
         self.inp.ready.next = !self.sbusy.q.val() & self.run.val();
         self.take.next = self.inp.valid.val() & self.inp.ready.val();
-        self.idle.next = !self.sbusy.q.val() & !self.tv.q.val() & (self.dc.q.val() == 0);
-        self.at_last.next = (self.tx.q.val() == self.wx1.q.val()) & (self.ty.q.val() == self.wy1.q.val());
-        self.walk_ok.next = !self.tv.q.val() | self.at_last.val();
+        self.idle.next = !self.sbusy.q.val() & !self.sv.q.val() & !self.tv.q.val() & (self.dc.q.val() == 0);
         self.set_ok.next = self.hold[1].q.val() == 0;
-        if self.wp.q.val() {
+        if self.sp.q.val() {
             self.set_ok.next = self.hold[0].q.val() == 0;
         }
         self.hand.next = self.sbusy.q.val()
             & (self.sc.q.val() == self.at_walk.val())
-            & (self.empty.q.val() | (self.walk_ok.val() & self.set_ok.val()));
-        self.div.hold.next = !self.run.val();
-        self.div.out_ready.next = true;
-        self.div.inp_valid.next = true;
-        self.div.inp_n.next = self.recip_n.val();
+            & (self.empty.q.val() | (!self.sv.q.val() & self.set_ok.val()));
         self.div_a.hold.next = !self.run.val();
         self.div_a.out_ready.next = true;
         self.div_a.inp_valid.next = true;
@@ -824,46 +981,23 @@ impl Logic for Vector {
         if self.sc.q.val() == self.at_mant.val() {
             self.mant_c.next = self.div_a.out_q.val().get_bits::<MANT>(0);
         }
-        self.mul_a.en.next = self.run.val();
-        self.mul_b.en.next = self.run.val();
-        self.mul_z1.en.next = self.run.val();
-        self.mul_z2.en.next = self.run.val();
-        self.mul_ra.en.next = self.run.val();
-        self.mul_rb.en.next = self.run.val();
         self.tag_dl.en.next = self.run.val();
-        self.dtag_dl.en.next = self.run.val();
-        self.q_dl.en.next = self.run.val();
-        self.exp_dl.en.next = self.run.val();
-        self.ab_dl.en.next = self.run.val();
-        for k in 0..3 {
-            self.mul_l[k].en.next = self.run.val();
-            self.mul_c1[k].en.next = self.run.val();
-            self.mul_c2[k].en.next = self.run.val();
-        }
-        for k in 0..2 {
-            self.mul_s[k].en.next = self.run.val();
-        }
 
-        // ---- The triangle's geometry, combinationally from its registers.
+        // ---- Setup's geometry, combinationally from its registers.
         for k in 0..3 {
             self.ex[k].x.next = self.vx[k].q.val();
             self.ey[k].x.next = self.vy[k].q.val();
             self.ez[k].x.next = self.vz[k].q.val();
             self.ux[k].next = self.vx[k].q.val() ^ self.half_xy.val();
             self.uy[k].next = self.vy[k].q.val() ^ self.half_xy.val();
-            self.dx_neg[k].x.next = self.wdx[k].q.val();
-            self.dy_neg[k].x.next = self.wdy[k].q.val();
-            // Top edges run in +x, left edges in -y (clockwise on screen, y down).
-            self.owns[k].next = self.dy_neg[k].neg.val()
-                | ((self.wdy[k].q.val() == 0) & !self.dx_neg[k].neg.val() & (self.wdx[k].q.val() != 0));
-            self.edx[k].x.next = self.wdx[k].q.val();
-            self.edy[k].x.next = self.wdy[k].q.val();
         }
-        // The bounding box of the vertices, in unsigned order, then of pixel centres.
+        // The bounding box of the vertices, in unsigned order, and the top vertex's x; then
+        // the box of pixel centres.
         self.min_x.next = self.ux[0].val();
         self.max_x.next = self.ux[0].val();
         self.min_y.next = self.uy[0].val();
         self.max_y.next = self.uy[0].val();
+        self.top_x.next = self.vx[0].q.val();
         for k in 1..3 {
             if self.ux[k].val() < self.min_x.val() {
                 self.min_x.next = self.ux[k].val();
@@ -873,6 +1007,7 @@ impl Logic for Vector {
             }
             if self.uy[k].val() < self.min_y.val() {
                 self.min_y.next = self.uy[k].val();
+                self.top_x.next = self.vx[k].q.val();
             }
             if self.uy[k].val() > self.max_y.val() {
                 self.max_y.next = self.uy[k].val();
@@ -898,15 +1033,25 @@ impl Logic for Vector {
         if self.hi_y_c.val() >= bit_cast::<PIXEL, DIM>(self.height.val()) {
             self.hi_y_c.next = bit_cast::<PIXEL, DIM>(self.height.val()) - 1;
         }
-        self.cx0.next = (bit_cast::<D1, PIXEL>(self.bx0.q.val()) << self.frac.val()) + self.px_half.val();
+        // The top vertex's pixel, clamped to the box (cycle 3).
+        self.ext_top.x.next = self.top_xr.q.val();
+        self.neg_top.x.next = self.top_xr.q.val();
+        self.top_c.next = bit_cast::<PIXEL, D1>(self.ext_top.y.val() >> self.frac.val());
+        if self.top_c.val() > self.bx1.q.val() {
+            self.top_c.next = self.bx1.q.val();
+        }
+        if self.neg_top.neg.val() | (self.top_c.val() < self.bx0.q.val()) {
+            self.top_c.next = self.bx0.q.val();
+        }
+        self.cx0.next = (bit_cast::<D1, PIXEL>(self.cs.q.val()) << self.frac.val()) + self.px_half.val();
         self.cy0.next = (bit_cast::<D1, PIXEL>(self.by0.q.val()) << self.frac.val()) + self.px_half.val();
         self.area_neg.x.next = self.area.q.val();
         self.lead_a.x.next = self.area_abs.q.val();
         self.norm_a.x.next = self.area_abs.q.val();
         self.norm_a.exp.next = self.exp_a.q.val();
 
-        // Setup's multipliers: the area in cycle 1, edge k's function at the first pixel
-        // centre in cycle 6 + k (from its start vertex v1, v2, v0).
+        // Setup's multipliers: the area in cycle 1, edge k's function at the start chunk's
+        // first pixel centre in cycle 6 + k (from its start vertex v1, v2, v0).
         self.mul_s[0].a.next = self.ex[1].y.val() - self.ex[0].y.val();
         self.mul_s[0].b.next = self.ey[2].y.val() - self.ey[0].y.val();
         self.mul_s[1].a.next = self.ey[1].y.val() - self.ey[0].y.val();
@@ -929,30 +1074,70 @@ impl Logic for Vector {
             self.mul_s[1].a.next = self.dy[2].q.val();
             self.mul_s[1].b.next = self.cx0.val() - self.ex[0].y.val();
         }
-        // The dividers: 1/area's divisor registered in cycle 6 (above), the pixel's 1/sum's at t+8.
-        self.norm_s.x.next = self.sum8.q.val();
-        self.norm_s.exp.next = self.exp8.q.val();
-        self.div.inp_d.next = self.div_d.q.val();
 
-        // ---- The walk's pixel: inside (coverage, top-left rule), and its tag.
-        self.covered.next = self.tv.q.val();
+        // ---- The scout: each probe's bound tests, its moves, the row found.
+        self.out_l.next = false;
+        self.out_lm.next = false;
+        self.out_r.next = false;
+        self.out_rn.next = false;
+        self.dead.next = false;
         for k in 0..3 {
-            self.w_neg[k].x.next = self.w[k].q.val();
-            if self.w_neg[k].neg.val() | ((self.w[k].q.val() == 0) & !self.owns[k].val()) {
-                self.covered.next = false;
+            self.scls[k].dx.next = self.sdx[k].q.val();
+            self.scls[k].dy.next = self.sdy[k].q.val();
+            self.s_chunk[k].next = self.scls[k].g.val() << self.lg.val();
+            self.hcls[k].dx.next = self.dx[k].q.val();
+            self.hcls[k].dy.next = self.dy[k].q.val();
+            self.h_chunk[k].next = self.hcls[k].g.val() << self.lg.val();
+            self.h_less[k].next = (self.hcls[k].g.val() << self.lg.val()) - self.hcls[k].g.val();
+            self.rej_ll[k].e.next = self.ell[k].q.val();
+            self.rej_lm[k].e.next = self.elm[k].q.val();
+            self.rej_lf[k].e.next = self.el[k].q.val();
+            self.rej_rf[k].e.next = self.er[k].q.val();
+            self.rej_rn[k].e.next = self.ern[k].q.val();
+            self.rej_ll[k].owns.next = self.scls[k].owns.val();
+            self.rej_lm[k].owns.next = self.scls[k].owns.val();
+            self.rej_lf[k].owns.next = self.scls[k].owns.val();
+            self.rej_rf[k].owns.next = self.scls[k].owns.val();
+            self.rej_rn[k].owns.next = self.scls[k].owns.val();
+            if self.scls[k].left.val() & self.rej_ll[k].rejects.val() {
+                self.out_l.next = true;
+            }
+            if self.scls[k].left.val() & self.rej_lm[k].rejects.val() {
+                self.out_lm.next = true;
+            }
+            if self.scls[k].right.val() & self.rej_rf[k].rejects.val() {
+                self.out_r.next = true;
+            }
+            if self.scls[k].right.val() & self.rej_rn[k].rejects.val() {
+                self.out_rn.next = true;
+            }
+            if self.scls[k].flat.val() & self.rej_lf[k].rejects.val() {
+                self.dead.next = true;
             }
         }
-        self.tag.next = (bit_cast::<TAG, SCREEN>(self.ty.q.val()) << self.y_shift.val())
-            | (bit_cast::<TAG, SCREEN>(self.tx.q.val()) << self.x_shift.val());
-        if self.covered.val() {
-            self.tag.next = (bit_cast::<TAG, SCREEN>(self.ty.q.val()) << self.y_shift.val())
-                | (bit_cast::<TAG, SCREEN>(self.tx.q.val()) << self.x_shift.val())
-                | 1u64;
+        self.l_right.next = !self.dead.val() & self.out_l.val() & (self.sl.q.val() != self.sc1.q.val());
+        self.l_left.next = !self.dead.val()
+            & !self.out_l.val()
+            & !self.out_lm.val()
+            & (self.sl.q.val() != self.sc0.q.val());
+        self.r_left.next = !self.dead.val() & self.out_r.val() & (self.sr.q.val() != self.sc0.q.val());
+        self.r_right.next = !self.dead.val()
+            & !self.out_r.val()
+            & !self.out_rn.val()
+            & (self.sr.q.val() != self.sc1.q.val());
+        self.found.next =
+            self.sv.q.val() & !self.l_right.val() & !self.l_left.val() & !self.r_left.val() & !self.r_right.val();
+        self.row_empty.next =
+            self.dead.val() | self.out_l.val() | self.out_r.val() | (self.sl.q.val() > self.sr.q.val());
+        self.row_last.next = self.sy.q.val() == self.sy1.q.val();
+        // The walker is free in its row's last chunk; it takes a row found not empty.
+        self.walk_free.next = !self.tv.q.val() | (self.tx.q.val() == self.te.q.val());
+        for k in 0..3 {
+            self.wcls[k].dx.next = self.wdx[k].q.val();
+            self.wcls[k].dy.next = self.wdy[k].q.val();
         }
-        self.tag_dl.d.next = self.tag.val();
-        self.tag_out.next = self.tag_dl.q.val();
 
-        // ---- Each stage's constants: of the set of the pixel there.
+        // ---- Each stage's constants: of the set of the chunk there.
         self.c_mant.next = self.k_mant[0].q.val();
         if self.wp.q.val() {
             self.c_mant.next = self.k_mant[1].q.val();
@@ -990,93 +1175,52 @@ impl Logic for Vector {
             }
         }
 
-        // ---- The pixel pipeline. t+0: a, b's products.
-        self.mul_a.a.next = self.w[1].q.val();
-        self.mul_a.b.next = bit_cast::<MANT1, MANT>(self.c_mant.val());
-        self.mul_b.a.next = self.w[2].q.val();
-        self.mul_b.b.next = bit_cast::<MANT1, MANT>(self.c_mant.val());
-        // t+2: shifted by the area's exponent.
-        self.rs_a.x.next = self.mul_a.p.val();
-        self.rs_a.by.next = self.c_exp.val();
-        self.rs_b.x.next = self.mul_b.p.val();
-        self.rs_b.by.next = self.c_exp.val();
-        // t+3: depth's and eq. 5's products.
-        self.mul_z1.a.next = self.c_d1z.val();
-        self.mul_z1.b.next = self.a3.q.val();
-        self.mul_z2.a.next = self.c_d2z.val();
-        self.mul_z2.b.next = self.b3.q.val();
-        self.mul_l[0].a.next = self.one.val() - self.a3.q.val() - self.b3.q.val();
-        self.mul_l[0].b.next = bit_cast::<IW1, INV_W>(self.c_iw[0].val());
-        self.mul_l[1].a.next = self.a3.q.val();
-        self.mul_l[1].b.next = bit_cast::<IW1, INV_W>(self.c_iw[1].val());
-        self.mul_l[2].a.next = self.b3.q.val();
-        self.mul_l[2].b.next = bit_cast::<IW1, INV_W>(self.c_iw[2].val());
-        self.ab_pair.next = (bit_cast::<{ 2 * BARY }, BARY>(self.a3.q.val()) << self.half_pair.val())
-            | bit_cast::<{ 2 * BARY }, BARY>(self.b3.q.val());
-        self.ab_dl.d.next = self.ab_pair.val();
-        // t+5: the depth accumulator; the weights q.
-        self.rs_z.x.next = self.mul_z1.p.val() + self.mul_z2.p.val();
-        self.rs_z.by.next = 0.into();
-        self.ez0.x.next = self.c_z0.val();
-        self.rs_z0.x.next = self.ez0.y.val();
-        self.rs_z0.by.next = 0.into();
-        for k in 0..3 {
-            self.rs_q[k].x.next = self.mul_l[k].p.val();
-            self.rs_q[k].by.next = 0.into();
-            self.eq[k].x.next = self.q6[k].q.val();
+        // ---- The lanes: the walker's chunk, the constants; their outputs gathered.
+        self.tag.next = (bit_cast::<TAG, SCREEN>(self.ty.q.val()) << self.y_shift.val())
+            | bit_cast::<TAG, SCREEN>(self.tx.q.val());
+        self.tag_dl.d.next = self.tag.val();
+        for i in 0..LANES {
+            self.lanes[i].run.next = self.run.val();
+            self.lanes[i].load.next = self.found.val() & !self.row_empty.val() & self.walk_free.val();
+            self.lanes[i].valid.next = self.tv.q.val();
+            self.lanes[i].x.next = self.tx.q.val();
+            self.lanes[i].x0.next = self.wx0.q.val();
+            self.lanes[i].x1.next = self.wx1.q.val();
+            self.lanes[i].c_mant.next = self.c_mant.val();
+            self.lanes[i].c_exp.next = self.c_exp.val();
+            self.lanes[i].c_d1z.next = self.c_d1z.val();
+            self.lanes[i].c_d2z.next = self.c_d2z.val();
+            self.lanes[i].c_z0.next = self.c_z0.val();
+            // Written out per edge and channel: rust-hdl substitutes a loop index in the
+            // first [...] of a name only.
+            self.lanes[i].g_0.next = self.scls[0].g.val();
+            self.lanes[i].w_0.next = self.w[0].q.val();
+            self.lanes[i].owns_0.next = self.wcls[0].owns.val();
+            self.lanes[i].c_iw_0.next = self.c_iw[0].val();
+            self.lanes[i].c_d1c_0.next = self.c_d1c[0].val();
+            self.lanes[i].c_d2c_0.next = self.c_d2c[0].val();
+            self.lanes[i].c_c0_0.next = self.c_c0[0].val();
+            self.lanes[i].g_1.next = self.scls[1].g.val();
+            self.lanes[i].w_1.next = self.w[1].q.val();
+            self.lanes[i].owns_1.next = self.wcls[1].owns.val();
+            self.lanes[i].c_iw_1.next = self.c_iw[1].val();
+            self.lanes[i].c_d1c_1.next = self.c_d1c[1].val();
+            self.lanes[i].c_d2c_1.next = self.c_d2c[1].val();
+            self.lanes[i].c_c0_1.next = self.c_c0[1].val();
+            self.lanes[i].g_2.next = self.scls[2].g.val();
+            self.lanes[i].w_2.next = self.w[2].q.val();
+            self.lanes[i].owns_2.next = self.wcls[2].owns.val();
+            self.lanes[i].c_iw_2.next = self.c_iw[2].val();
+            self.lanes[i].c_d1c_2.next = self.c_d1c[2].val();
+            self.lanes[i].c_d2c_2.next = self.c_d2c[2].val();
+            self.lanes[i].c_c0_2.next = self.c_c0[2].val();
         }
-        // t+6: the depth, rounded, and whether it lies in [0, z_max]; the weights' sum.
-        self.depth_of.x.next = self.z6.q.val();
-        self.dtag.next = bit_cast::<DTAG, DEPTH>(self.depth_of.low.val()) << self.x_shift.val();
-        if !self.depth_of.neg.val() & !self.depth_of.over.val() {
-            self.dtag.next = (bit_cast::<DTAG, DEPTH>(self.depth_of.low.val()) << self.x_shift.val()) | 1u64;
-        }
-        self.dtag_dl.d.next = self.dtag.val();
-        self.dtag_out.next = self.dtag_dl.q.val();
-        self.sum_c.next = self.eq[0].y.val() + self.eq[1].y.val() + self.eq[2].y.val();
-        if self.sum_c.val() == 0 {
-            self.sum_c.next = 1.into();
-        }
-        self.q_pair.next = (bit_cast::<{ 2 * BARY }, BARY>(self.q6[1].q.val()) << self.half_pair.val())
-            | bit_cast::<{ 2 * BARY }, BARY>(self.q6[2].q.val());
-        self.q_dl.d.next = self.q_pair.val();
-        // t+7: the sum's leading one; t+8: the divisor's register (below); t+9: the divider.
-        self.lead_s.x.next = self.sum7.q.val();
-        self.exp_dl.d.next = self.exp8.q.val();
-        // t+9+L: eq. 6's products with 1/sum's mantissa; t+11+L: shifted.
-        self.mul_ra.a.next = bit_cast::<BARY, { 2 * BARY }>(self.q_dl.q.val() >> self.half_pair.val());
-        self.mul_ra.b.next = bit_cast::<MANT1, MANT>(self.div.out_q.val().get_bits::<MANT>(0));
-        self.mul_rb.a.next = bit_cast::<BARY, { 2 * BARY }>(self.q_dl.q.val());
-        self.mul_rb.b.next = bit_cast::<MANT1, MANT>(self.div.out_q.val().get_bits::<MANT>(0));
-        self.rs_ra.x.next = self.mul_ra.p.val();
-        self.rs_ra.by.next = self.exp_dl.q.val();
-        self.rs_rb.x.next = self.mul_rb.p.val();
-        self.rs_rb.by.next = self.exp_dl.q.val();
-        // t+12+L: the colours' weights, corrected or not; their products.
-        self.ca.next = bit_cast::<BARY, { 2 * BARY }>(self.ab_dl.q.val() >> self.half_pair.val());
-        self.cb.next = bit_cast::<BARY, { 2 * BARY }>(self.ab_dl.q.val());
-        if self.persp.on.val() {
-            self.ca.next = self.ca11.q.val();
-            self.cb.next = self.cb11.q.val();
-        }
-        self.rs_c0[0].x.next = bit_cast::<C1, COLOR>(self.c_c0[0].val());
-        self.rs_c0[1].x.next = bit_cast::<C1, COLOR>(self.c_c0[1].val());
-        self.rs_c0[2].x.next = bit_cast::<C1, COLOR>(self.c_c0[2].val());
-        for k in 0..3 {
-            self.mul_c1[k].a.next = self.c_d1c[k].val();
-            self.mul_c2[k].a.next = self.c_d2c[k].val();
-            self.mul_c1[k].b.next = self.ca.val();
-            self.mul_c2[k].b.next = self.cb.val();
-            // t+14+L: each colour accumulator; t+15+L: rounded and clamped.
-            self.rs_c[k].x.next = self.mul_c1[k].p.val() + self.mul_c2[k].p.val();
-            self.rs_c[k].by.next = 0.into();
-            self.rs_c0[k].by.next = 0.into();
-            self.color_of[k].x.next = self.c14[k].q.val();
-        }
+        self.out_x.next = self.o_x.q.val();
+        self.out_y.next = self.o_y.q.val();
 
         // ---- Registers, while the unit runs.
         if self.run.val() {
-            // Setup's counter, the drain's, and the end of the unit's work on a triangle.
+            // Setup's counter, the drain's, the sets' holds.
             if (self.sc.q.val() != 0) & (self.sc.q.val() != self.at_walk.val()) {
                 self.sc.d.next = self.sc.q.val() + 1;
             }
@@ -1088,9 +1232,9 @@ impl Logic for Vector {
                     self.hold[k].d.next = self.hold[k].q.val() - 1;
                 }
             }
-            self.ph.d.next = self.ph.q.val() << self.x_shift.val();
+            self.ph.d.next = self.ph.q.val() << self.one_s.val();
             if self.wp.q.val() {
-                self.ph.d.next = (self.ph.q.val() << self.x_shift.val()) | 1u64;
+                self.ph.d.next = (self.ph.q.val() << self.one_s.val()) | 1u64;
             }
             if self.take.val() {
                 self.sbusy.d.next = true;
@@ -1117,12 +1261,13 @@ impl Logic for Vector {
                 self.viw[1].d.next = self.inp.v1_iw.val();
                 self.viw[2].d.next = self.inp.v2_iw.val();
             }
-            // Cycle 1: the vertices' extremes; cycle 2: the box.
+            // Cycle 1: the vertices' extremes, the top vertex's x; cycle 2: the box.
             if self.sc.q.val() == 1 {
                 self.min_xr.d.next = self.min_x.val() ^ self.half_xy.val();
                 self.max_xr.d.next = self.max_x.val() ^ self.half_xy.val();
                 self.min_yr.d.next = self.min_y.val() ^ self.half_xy.val();
                 self.max_yr.d.next = self.max_y.val() ^ self.half_xy.val();
+                self.top_xr.d.next = self.top_x.val();
             }
             if self.sc.q.val() == 2 {
                 self.bx0.d.next = bit_cast::<PIXEL, D1>(self.lo_x.val() >> self.frac.val());
@@ -1137,14 +1282,12 @@ impl Logic for Vector {
                 self.by1.d.next = self.hi_y_c.val();
                 self.bneg.d.next = self.neg_hi_x.neg.val() | self.neg_hi_y.neg.val();
             }
-            // Cycle 3: empty?
+            // Cycle 3: empty? Twice the area; the start chunk.
             if self.sc.q.val() == 3 {
                 self.empty.d.next =
                     self.bneg.q.val() | (self.bx0.q.val() > self.bx1.q.val()) | (self.by0.q.val() > self.by1.q.val());
-            }
-            // Cycle 3: twice the area.
-            if self.sc.q.val() == 3 {
                 self.area.d.next = self.mul_s[0].p.val() - self.mul_s[1].p.val();
+                self.cs.d.next = self.top_c.val() & self.chunk_p.val();
             }
             // Cycle 4: clockwise (v1, v2 swapped for a negative area); |area|.
             if self.sc.q.val() == 4 {
@@ -1183,7 +1326,11 @@ impl Logic for Vector {
                 self.d2c[2].d.next = bit_cast::<C1, COLOR>(self.vc[8].q.val()) - bit_cast::<C1, COLOR>(self.vc[2].q.val());
                 self.exp_a.d.next = self.lead_a.pos.val();
             }
-            // Cycles 8-10: the edge functions at the first pixel centre.
+            // Cycle 6: 1/area's divisor; cycles 8-10: the edge functions at the start chunk's
+            // first pixel centre; cycle 7 + LA: 1/area's mantissa.
+            if self.sc.q.val() == 6 {
+                self.div_da.d.next = self.norm_a.d.val();
+            }
             if self.sc.q.val() == 8 {
                 self.w0[0].d.next = self.mul_s[0].p.val() - self.mul_s[1].p.val();
             }
@@ -1193,55 +1340,117 @@ impl Logic for Vector {
             if self.sc.q.val() == 10 {
                 self.w0[2].d.next = self.mul_s[0].p.val() - self.mul_s[1].p.val();
             }
-            // Cycle 7 + LA: 1/area's mantissa.
             if self.sc.q.val() == self.at_mant.val() {
                 self.mant.d.next = self.mant_c.val();
             }
-            // The walk: a pixel a cycle, row by row; in its last, the set its triangle's
-            // constants are in is held for the pixels behind.
+
+            // The walker: a chunk a cycle to the row's last, then the next row the scout
+            // found (below) or none. While it walks, its set of constants is held for the
+            // chunks behind it, and the unit is not empty.
             if self.tv.q.val() {
-                if self.at_last.val() {
-                    self.tv.d.next = false;
-                    self.dc.d.next = self.drain.val();
-                    if self.wp.q.val() {
-                        self.hold[1].d.next = self.held_m1.val();
-                    } else {
-                        self.hold[0].d.next = self.held_m1.val();
-                    }
-                } else if self.tx.q.val() == self.wx1.q.val() {
-                    self.tx.d.next = self.wx0.q.val();
-                    self.ty.d.next = self.ty.q.val() + 1;
-                    for k in 0..3 {
-                        self.wrow[k].d.next = self.wrow[k].q.val() + (self.edx[k].y.val() << self.frac.val());
-                        self.w[k].d.next = self.wrow[k].q.val() + (self.edx[k].y.val() << self.frac.val());
-                    }
+                self.dc.d.next = self.drain.val();
+                if self.wp.q.val() {
+                    self.hold[1].d.next = self.held_m1.val();
                 } else {
-                    self.tx.d.next = self.tx.q.val() + 1;
+                    self.hold[0].d.next = self.held_m1.val();
+                }
+                if self.tx.q.val() == self.te.q.val() {
+                    self.tv.d.next = false;
+                } else {
+                    self.tx.d.next = self.tx.q.val() + self.step.val();
                     for k in 0..3 {
-                        self.w[k].d.next = self.w[k].q.val() - (self.edy[k].y.val() << self.frac.val());
+                        self.w[k].d.next = self.w[k].q.val() - (self.wcls[k].g.val() << self.lg.val());
                     }
                 }
             }
-            // The handover: setup is free from the next cycle; a non-empty box's walk starts
-            // with its first pixel, its constants in the other set.
+            // The scout: probes move a chunk a cycle; a row found empty is left at once, a row
+            // found not empty when the walker takes it; after the last row the scout is free.
+            if self.sv.q.val() {
+                if self.l_right.val() {
+                    self.sl.d.next = self.sl.q.val() + self.step.val();
+                    for k in 0..3 {
+                        self.el[k].d.next = self.el[k].q.val() - self.s_chunk[k].val();
+                        self.ell[k].d.next = self.ell[k].q.val() - self.s_chunk[k].val();
+                        self.elm[k].d.next = self.elm[k].q.val() - self.s_chunk[k].val();
+                    }
+                }
+                if self.l_left.val() {
+                    self.sl.d.next = self.sl.q.val() - self.step.val();
+                    for k in 0..3 {
+                        self.el[k].d.next = self.el[k].q.val() + self.s_chunk[k].val();
+                        self.ell[k].d.next = self.ell[k].q.val() + self.s_chunk[k].val();
+                        self.elm[k].d.next = self.elm[k].q.val() + self.s_chunk[k].val();
+                    }
+                }
+                if self.r_left.val() {
+                    self.sr.d.next = self.sr.q.val() - self.step.val();
+                    for k in 0..3 {
+                        self.er[k].d.next = self.er[k].q.val() + self.s_chunk[k].val();
+                        self.ern[k].d.next = self.ern[k].q.val() + self.s_chunk[k].val();
+                    }
+                }
+                if self.r_right.val() {
+                    self.sr.d.next = self.sr.q.val() + self.step.val();
+                    for k in 0..3 {
+                        self.er[k].d.next = self.er[k].q.val() - self.s_chunk[k].val();
+                        self.ern[k].d.next = self.ern[k].q.val() - self.s_chunk[k].val();
+                    }
+                }
+                if self.found.val() & (self.row_empty.val() | self.walk_free.val()) {
+                    if self.row_last.val() {
+                        self.sv.d.next = false;
+                    } else {
+                        self.sy.d.next = self.sy.q.val() + 1;
+                        for k in 0..3 {
+                            self.el[k].d.next = self.el[k].q.val() + self.scls[k].h.val();
+                            self.er[k].d.next = self.er[k].q.val() + self.scls[k].h.val();
+                            self.ell[k].d.next = self.ell[k].q.val() + self.scls[k].h.val();
+                            self.elm[k].d.next = self.elm[k].q.val() + self.scls[k].h.val();
+                            self.ern[k].d.next = self.ern[k].q.val() + self.scls[k].h.val();
+                        }
+                    }
+                }
+                if self.found.val() & !self.row_empty.val() & self.walk_free.val() {
+                    self.tv.d.next = true;
+                    self.tx.d.next = self.sl.q.val();
+                    self.te.d.next = self.sr.q.val();
+                    self.ty.d.next = self.sy.q.val();
+                    self.wx0.d.next = self.sx0.q.val();
+                    self.wx1.d.next = self.sx1.q.val();
+                    self.wp.d.next = self.sp.q.val();
+                    for k in 0..3 {
+                        self.w[k].d.next = self.el[k].q.val();
+                        self.wdx[k].d.next = self.sdx[k].q.val();
+                        self.wdy[k].d.next = self.sdy[k].q.val();
+                    }
+                }
+            }
+            // The handover: setup is free from the next cycle; a non-empty box goes to the
+            // scout, its first row's probes at the start chunk, its constants in the other set.
             if self.hand.val() {
                 self.sbusy.d.next = false;
                 self.sc.d.next = 0.into();
                 if !self.empty.q.val() {
-                    self.tv.d.next = true;
-                    self.wp.d.next = !self.wp.q.val();
-                    self.tx.d.next = bit_cast::<SCREEN, PIXEL>(self.bx0.q.val());
-                    self.ty.d.next = bit_cast::<SCREEN, PIXEL>(self.by0.q.val());
-                    self.wx0.d.next = bit_cast::<SCREEN, PIXEL>(self.bx0.q.val());
-                    self.wx1.d.next = bit_cast::<SCREEN, PIXEL>(self.bx1.q.val());
-                    self.wy1.d.next = bit_cast::<SCREEN, PIXEL>(self.by1.q.val());
+                    self.sv.d.next = true;
+                    self.sp.d.next = !self.sp.q.val();
+                    self.sy.d.next = bit_cast::<SCREEN, PIXEL>(self.by0.q.val());
+                    self.sy1.d.next = bit_cast::<SCREEN, PIXEL>(self.by1.q.val());
+                    self.sx0.d.next = bit_cast::<SCREEN, PIXEL>(self.bx0.q.val());
+                    self.sx1.d.next = bit_cast::<SCREEN, PIXEL>(self.bx1.q.val());
+                    self.sc0.d.next = bit_cast::<SCREEN, PIXEL>(self.bx0.q.val()) & self.chunk.val();
+                    self.sc1.d.next = bit_cast::<SCREEN, PIXEL>(self.bx1.q.val()) & self.chunk.val();
+                    self.sl.d.next = bit_cast::<SCREEN, PIXEL>(self.cs.q.val());
+                    self.sr.d.next = bit_cast::<SCREEN, PIXEL>(self.cs.q.val());
                     for k in 0..3 {
-                        self.w[k].d.next = self.w0[k].q.val();
-                        self.wrow[k].d.next = self.w0[k].q.val();
-                        self.wdx[k].d.next = self.dx[k].q.val();
-                        self.wdy[k].d.next = self.dy[k].q.val();
+                        self.el[k].d.next = self.w0[k].q.val();
+                        self.er[k].d.next = self.w0[k].q.val();
+                        self.ell[k].d.next = self.w0[k].q.val() - self.h_less[k].val();
+                        self.elm[k].d.next = self.w0[k].q.val() + self.hcls[k].g.val();
+                        self.ern[k].d.next = self.w0[k].q.val() - self.h_chunk[k].val();
+                        self.sdx[k].d.next = self.dx[k].q.val();
+                        self.sdy[k].d.next = self.dy[k].q.val();
                     }
-                    if self.wp.q.val() {
+                    if self.sp.q.val() {
                         self.k_mant[0].d.next = self.mant_c.val();
                         self.k_exp[0].d.next = self.exp_a.q.val();
                         self.k_d1z[0].d.next = self.d1z.q.val();
@@ -1268,60 +1477,37 @@ impl Logic for Vector {
                     }
                 }
             }
-            // The pixel pipeline's registers.
-            self.a3.d.next = self.rs_a.y.val();
-            self.b3.d.next = self.rs_b.y.val();
-            self.z6.d.next = self.rs_z.y.val() + self.rs_z0.y.val();
-            for k in 0..3 {
-                self.q6[k].d.next = self.rs_q[k].y.val();
-                self.c14[k].d.next = self.rs_c[k].y.val() + self.rs_c0[k].y.val();
-                self.o_rgb[k].d.next = self.color_of[k].low.val();
-                if self.color_of[k].over.val() {
-                    self.o_rgb[k].d.next = self.full.val();
-                }
-                if self.color_of[k].neg.val() {
-                    self.o_rgb[k].d.next = 0.into();
-                }
-            }
-            self.div_d.d.next = self.norm_s.d.val();
-            if self.sc.q.val() == 6 {
-                self.div_da.d.next = self.norm_a.d.val();
-            }
-            self.sum7.d.next = self.sum_c.val();
-            self.sum8.d.next = self.sum7.q.val();
-            self.exp8.d.next = self.lead_s.pos.val();
-            self.ca11.d.next = self.rs_ra.y.val();
-            self.cb11.d.next = self.rs_rb.y.val();
-            self.o_valid.d.next = self.tag_out.val().get_bit(0) & self.dtag_out.val().get_bit(0);
-            self.o_x.d.next = bit_cast::<SCREEN, TAG>(self.tag_out.val() >> self.x_shift.val());
-            self.o_y.d.next = bit_cast::<SCREEN, TAG>(self.tag_out.val() >> self.y_shift.val());
-            self.o_z.d.next = bit_cast::<DEPTH, DTAG>(self.dtag_out.val() >> self.x_shift.val());
+            // The output's place: the chunk's first x and its row.
+            self.o_x.d.next = bit_cast::<SCREEN, TAG>(self.tag_dl.q.val());
+            self.o_y.d.next = bit_cast::<SCREEN, TAG>(self.tag_dl.q.val() >> self.y_shift.val());
         }
-        self.out.valid.next = self.o_valid.q.val();
-        self.out.x.next = self.o_x.q.val();
-        self.out.y.next = self.o_y.q.val();
-        self.out.z.next = self.o_z.q.val();
-        self.out.rgb0.next = self.o_rgb[0].q.val();
-        self.out.rgb1.next = self.o_rgb[1].q.val();
-        self.out.rgb2.next = self.o_rgb[2].q.val();
     }
 }
 
-crate::pins!(Vector {
+crate::pins!(impl[const LANES: usize, const ZW: usize, const CW: usize] Vector<LANES, ZW, CW> {
     clock: clock,
-    inputs: [width, height],
-    outputs: [idle],
-    links: [inp, out],
+    inputs: [width, height, out_ready],
+    outputs: [idle, out_valid, out_mask, out_x, out_y, out_z, out_rgb],
+    links: [inp],
 });
 
-/// `UNITS` entry: the barycentric unit with an `L`-stage divider, perspective-correct
-/// colours as `params["PERSPECTIVE"]` says.
+/// The unit at one lane, as `raster_top` uses it.
+pub type Vector1 = Vector<1, DEPTH, { 3 * CHANNEL }>;
+
+/// `UNITS` entry: the barycentric unit with `LANES` lanes and an `L`-stage divider,
+/// perspective-correct colours as `params["PERSPECTIVE"]` says.
 pub fn emit_vector(params: &Params) -> Result<Emitted, String> {
     let perspective = match params["PERSPECTIVE"] {
         0 => false,
         1 => true,
         v => return Err(format!("vector: PERSPECTIVE = {v}: 0 or 1")),
     };
-    Ok(emit_unit("vector", Vector::new(params["L"] as usize, perspective)?, params))
+    let l = params["L"] as usize;
+    Ok(match params["LANES"] {
+        1 => emit_unit("vector", Vector::<1, DEPTH, { 3 * CHANNEL }>::new(l, perspective)?, params),
+        2 => emit_unit("vector", Vector::<2, { 2 * DEPTH }, { 6 * CHANNEL }>::new(l, perspective)?, params),
+        4 => emit_unit("vector", Vector::<4, { 4 * DEPTH }, { 12 * CHANNEL }>::new(l, perspective)?, params),
+        8 => emit_unit("vector", Vector::<8, { 8 * DEPTH }, { 24 * CHANNEL }>::new(l, perspective)?, params),
+        n => return Err(format!("vector: LANES = {n}: 1, 2, 4 or 8")),
+    })
 }
-
