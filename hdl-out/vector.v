@@ -398,33 +398,6 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [34:0] er$2$d;
     wire  [34:0] er$2$q;
     reg  er$2$clock;
-    reg  [34:0] ell$0$d;
-    wire  [34:0] ell$0$q;
-    reg  ell$0$clock;
-    reg  [34:0] ell$1$d;
-    wire  [34:0] ell$1$q;
-    reg  ell$1$clock;
-    reg  [34:0] ell$2$d;
-    wire  [34:0] ell$2$q;
-    reg  ell$2$clock;
-    reg  [34:0] elm$0$d;
-    wire  [34:0] elm$0$q;
-    reg  elm$0$clock;
-    reg  [34:0] elm$1$d;
-    wire  [34:0] elm$1$q;
-    reg  elm$1$clock;
-    reg  [34:0] elm$2$d;
-    wire  [34:0] elm$2$q;
-    reg  elm$2$clock;
-    reg  [34:0] ern$0$d;
-    wire  [34:0] ern$0$q;
-    reg  ern$0$clock;
-    reg  [34:0] ern$1$d;
-    wire  [34:0] ern$1$q;
-    reg  ern$1$clock;
-    reg  [34:0] ern$2$d;
-    wire  [34:0] ern$2$q;
-    reg  ern$2$clock;
     reg  [16:0] sdx$0$d;
     wire  [16:0] sdx$0$q;
     reg  sdx$0$clock;
@@ -467,30 +440,6 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     wire  scls$2$owns;
     wire  [34:0] scls$2$g;
     wire  [34:0] scls$2$h;
-    reg  [16:0] hcls$0$dx;
-    reg  [16:0] hcls$0$dy;
-    wire  hcls$0$left;
-    wire  hcls$0$right;
-    wire  hcls$0$flat;
-    wire  hcls$0$owns;
-    wire  [34:0] hcls$0$g;
-    wire  [34:0] hcls$0$h;
-    reg  [16:0] hcls$1$dx;
-    reg  [16:0] hcls$1$dy;
-    wire  hcls$1$left;
-    wire  hcls$1$right;
-    wire  hcls$1$flat;
-    wire  hcls$1$owns;
-    wire  [34:0] hcls$1$g;
-    wire  [34:0] hcls$1$h;
-    reg  [16:0] hcls$2$dx;
-    reg  [16:0] hcls$2$dy;
-    wire  hcls$2$left;
-    wire  hcls$2$right;
-    wire  hcls$2$flat;
-    wire  hcls$2$owns;
-    wire  [34:0] hcls$2$g;
-    wire  [34:0] hcls$2$h;
     reg  [34:0] rej_ll$0$e;
     reg  rej_ll$0$owns;
     wire  rej_ll$0$rejects;
@@ -563,48 +512,24 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [34:0] w$2$d;
     wire  [34:0] w$2$q;
     reg  w$2$clock;
-    reg  [16:0] wdx$0$d;
-    wire  [16:0] wdx$0$q;
-    reg  wdx$0$clock;
-    reg  [16:0] wdx$1$d;
-    wire  [16:0] wdx$1$q;
-    reg  wdx$1$clock;
-    reg  [16:0] wdx$2$d;
-    wire  [16:0] wdx$2$q;
-    reg  wdx$2$clock;
-    reg  [16:0] wdy$0$d;
-    wire  [16:0] wdy$0$q;
-    reg  wdy$0$clock;
-    reg  [16:0] wdy$1$d;
-    wire  [16:0] wdy$1$q;
-    reg  wdy$1$clock;
-    reg  [16:0] wdy$2$d;
-    wire  [16:0] wdy$2$q;
-    reg  wdy$2$clock;
-    reg  [16:0] wcls$0$dx;
-    reg  [16:0] wcls$0$dy;
-    wire  wcls$0$left;
-    wire  wcls$0$right;
-    wire  wcls$0$flat;
-    wire  wcls$0$owns;
-    wire  [34:0] wcls$0$g;
-    wire  [34:0] wcls$0$h;
-    reg  [16:0] wcls$1$dx;
-    reg  [16:0] wcls$1$dy;
-    wire  wcls$1$left;
-    wire  wcls$1$right;
-    wire  wcls$1$flat;
-    wire  wcls$1$owns;
-    wire  [34:0] wcls$1$g;
-    wire  [34:0] wcls$1$h;
-    reg  [16:0] wcls$2$dx;
-    reg  [16:0] wcls$2$dy;
-    wire  wcls$2$left;
-    wire  wcls$2$right;
-    wire  wcls$2$flat;
-    wire  wcls$2$owns;
-    wire  [34:0] wcls$2$g;
-    wire  [34:0] wcls$2$h;
+    reg  wown$0$d;
+    wire  wown$0$q;
+    reg  wown$0$clock;
+    reg  wown$1$d;
+    wire  wown$1$q;
+    reg  wown$1$clock;
+    reg  wown$2$d;
+    wire  wown$2$q;
+    reg  wown$2$clock;
+    reg  [34:0] wstep$0$d;
+    wire  [34:0] wstep$0$q;
+    reg  wstep$0$clock;
+    reg  [34:0] wstep$1$d;
+    wire  [34:0] wstep$1$q;
+    reg  wstep$1$clock;
+    reg  [34:0] wstep$2$d;
+    wire  [34:0] wstep$2$q;
+    reg  wstep$2$clock;
     reg  [24:0] k_mant$0$d;
     wire  [24:0] k_mant$0$q;
     reg  k_mant$0$clock;
@@ -751,12 +676,9 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
     reg  [34:0] s_chunk$0;
     reg  [34:0] s_chunk$1;
     reg  [34:0] s_chunk$2;
-    reg  [34:0] h_chunk$0;
-    reg  [34:0] h_chunk$1;
-    reg  [34:0] h_chunk$2;
-    reg  [34:0] h_less$0;
-    reg  [34:0] h_less$1;
-    reg  [34:0] h_less$2;
+    reg  [34:0] s_less$0;
+    reg  [34:0] s_less$1;
+    reg  [34:0] s_less$2;
     reg  out_l;
     reg  out_lm;
     reg  out_r;
@@ -1339,51 +1261,6 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .q(er$2$q),
         .clock(er$2$clock)
     );
-    vector$ell$0 ell$0(
-        .d(ell$0$d),
-        .q(ell$0$q),
-        .clock(ell$0$clock)
-    );
-    vector$ell$1 ell$1(
-        .d(ell$1$d),
-        .q(ell$1$q),
-        .clock(ell$1$clock)
-    );
-    vector$ell$2 ell$2(
-        .d(ell$2$d),
-        .q(ell$2$q),
-        .clock(ell$2$clock)
-    );
-    vector$elm$0 elm$0(
-        .d(elm$0$d),
-        .q(elm$0$q),
-        .clock(elm$0$clock)
-    );
-    vector$elm$1 elm$1(
-        .d(elm$1$d),
-        .q(elm$1$q),
-        .clock(elm$1$clock)
-    );
-    vector$elm$2 elm$2(
-        .d(elm$2$d),
-        .q(elm$2$q),
-        .clock(elm$2$clock)
-    );
-    vector$ern$0 ern$0(
-        .d(ern$0$d),
-        .q(ern$0$q),
-        .clock(ern$0$clock)
-    );
-    vector$ern$1 ern$1(
-        .d(ern$1$d),
-        .q(ern$1$q),
-        .clock(ern$1$clock)
-    );
-    vector$ern$2 ern$2(
-        .d(ern$2$d),
-        .q(ern$2$q),
-        .clock(ern$2$clock)
-    );
     vector$sdx$0 sdx$0(
         .d(sdx$0$d),
         .q(sdx$0$q),
@@ -1443,36 +1320,6 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .owns(scls$2$owns),
         .g(scls$2$g),
         .h(scls$2$h)
-    );
-    vector$hcls$0 hcls$0(
-        .dx(hcls$0$dx),
-        .dy(hcls$0$dy),
-        .left(hcls$0$left),
-        .right(hcls$0$right),
-        .flat(hcls$0$flat),
-        .owns(hcls$0$owns),
-        .g(hcls$0$g),
-        .h(hcls$0$h)
-    );
-    vector$hcls$1 hcls$1(
-        .dx(hcls$1$dx),
-        .dy(hcls$1$dy),
-        .left(hcls$1$left),
-        .right(hcls$1$right),
-        .flat(hcls$1$flat),
-        .owns(hcls$1$owns),
-        .g(hcls$1$g),
-        .h(hcls$1$h)
-    );
-    vector$hcls$2 hcls$2(
-        .dx(hcls$2$dx),
-        .dy(hcls$2$dy),
-        .left(hcls$2$left),
-        .right(hcls$2$right),
-        .flat(hcls$2$flat),
-        .owns(hcls$2$owns),
-        .g(hcls$2$g),
-        .h(hcls$2$h)
     );
     vector$rej_ll$0 rej_ll$0(
         .e(rej_ll$0$e),
@@ -1594,65 +1441,35 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         .q(w$2$q),
         .clock(w$2$clock)
     );
-    vector$wdx$0 wdx$0(
-        .d(wdx$0$d),
-        .q(wdx$0$q),
-        .clock(wdx$0$clock)
+    vector$wown$0 wown$0(
+        .d(wown$0$d),
+        .q(wown$0$q),
+        .clock(wown$0$clock)
     );
-    vector$wdx$1 wdx$1(
-        .d(wdx$1$d),
-        .q(wdx$1$q),
-        .clock(wdx$1$clock)
+    vector$wown$1 wown$1(
+        .d(wown$1$d),
+        .q(wown$1$q),
+        .clock(wown$1$clock)
     );
-    vector$wdx$2 wdx$2(
-        .d(wdx$2$d),
-        .q(wdx$2$q),
-        .clock(wdx$2$clock)
+    vector$wown$2 wown$2(
+        .d(wown$2$d),
+        .q(wown$2$q),
+        .clock(wown$2$clock)
     );
-    vector$wdy$0 wdy$0(
-        .d(wdy$0$d),
-        .q(wdy$0$q),
-        .clock(wdy$0$clock)
+    vector$wstep$0 wstep$0(
+        .d(wstep$0$d),
+        .q(wstep$0$q),
+        .clock(wstep$0$clock)
     );
-    vector$wdy$1 wdy$1(
-        .d(wdy$1$d),
-        .q(wdy$1$q),
-        .clock(wdy$1$clock)
+    vector$wstep$1 wstep$1(
+        .d(wstep$1$d),
+        .q(wstep$1$q),
+        .clock(wstep$1$clock)
     );
-    vector$wdy$2 wdy$2(
-        .d(wdy$2$d),
-        .q(wdy$2$q),
-        .clock(wdy$2$clock)
-    );
-    vector$wcls$0 wcls$0(
-        .dx(wcls$0$dx),
-        .dy(wcls$0$dy),
-        .left(wcls$0$left),
-        .right(wcls$0$right),
-        .flat(wcls$0$flat),
-        .owns(wcls$0$owns),
-        .g(wcls$0$g),
-        .h(wcls$0$h)
-    );
-    vector$wcls$1 wcls$1(
-        .dx(wcls$1$dx),
-        .dy(wcls$1$dy),
-        .left(wcls$1$left),
-        .right(wcls$1$right),
-        .flat(wcls$1$flat),
-        .owns(wcls$1$owns),
-        .g(wcls$1$g),
-        .h(wcls$1$h)
-    );
-    vector$wcls$2 wcls$2(
-        .dx(wcls$2$dx),
-        .dy(wcls$2$dy),
-        .left(wcls$2$left),
-        .right(wcls$2$right),
-        .flat(wcls$2$flat),
-        .owns(wcls$2$owns),
-        .g(wcls$2$g),
-        .h(wcls$2$h)
+    vector$wstep$2 wstep$2(
+        .d(wstep$2$d),
+        .q(wstep$2$q),
+        .clock(wstep$2$clock)
     );
     vector$k_mant$0 k_mant$0(
         .d(k_mant$0$d),
@@ -1960,22 +1777,16 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         el$0$d = el$0$q;
         er$0$clock = clock;
         er$0$d = er$0$q;
-        ell$0$clock = clock;
-        ell$0$d = ell$0$q;
-        elm$0$clock = clock;
-        elm$0$d = elm$0$q;
-        ern$0$clock = clock;
-        ern$0$d = ern$0$q;
         sdx$0$clock = clock;
         sdx$0$d = sdx$0$q;
         sdy$0$clock = clock;
         sdy$0$d = sdy$0$q;
         w$0$clock = clock;
         w$0$d = w$0$q;
-        wdx$0$clock = clock;
-        wdx$0$d = wdx$0$q;
-        wdy$0$clock = clock;
-        wdy$0$d = wdy$0$q;
+        wown$0$clock = clock;
+        wown$0$d = wown$0$q;
+        wstep$0$clock = clock;
+        wstep$0$d = wstep$0$q;
         vx$1$clock = clock;
         vx$1$d = vx$1$q;
         vy$1$clock = clock;
@@ -1998,22 +1809,16 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         el$1$d = el$1$q;
         er$1$clock = clock;
         er$1$d = er$1$q;
-        ell$1$clock = clock;
-        ell$1$d = ell$1$q;
-        elm$1$clock = clock;
-        elm$1$d = elm$1$q;
-        ern$1$clock = clock;
-        ern$1$d = ern$1$q;
         sdx$1$clock = clock;
         sdx$1$d = sdx$1$q;
         sdy$1$clock = clock;
         sdy$1$d = sdy$1$q;
         w$1$clock = clock;
         w$1$d = w$1$q;
-        wdx$1$clock = clock;
-        wdx$1$d = wdx$1$q;
-        wdy$1$clock = clock;
-        wdy$1$d = wdy$1$q;
+        wown$1$clock = clock;
+        wown$1$d = wown$1$q;
+        wstep$1$clock = clock;
+        wstep$1$d = wstep$1$q;
         vx$2$clock = clock;
         vx$2$d = vx$2$q;
         vy$2$clock = clock;
@@ -2036,22 +1841,16 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         el$2$d = el$2$q;
         er$2$clock = clock;
         er$2$d = er$2$q;
-        ell$2$clock = clock;
-        ell$2$d = ell$2$q;
-        elm$2$clock = clock;
-        elm$2$d = elm$2$q;
-        ern$2$clock = clock;
-        ern$2$d = ern$2$q;
         sdx$2$clock = clock;
         sdx$2$d = sdx$2$q;
         sdy$2$clock = clock;
         sdy$2$d = sdy$2$q;
         w$2$clock = clock;
         w$2$d = w$2$q;
-        wdx$2$clock = clock;
-        wdx$2$d = wdx$2$q;
-        wdy$2$clock = clock;
-        wdy$2$d = wdy$2$q;
+        wown$2$clock = clock;
+        wown$2$d = wown$2$q;
+        wstep$2$clock = clock;
+        wstep$2$d = wstep$2$q;
         k_iw$0$clock = clock;
         k_iw$0$d = k_iw$0$q;
         k_d1c$0$clock = clock;
@@ -2291,15 +2090,12 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         scls$0$dx = sdx$0$q;
         scls$0$dy = sdy$0$q;
         s_chunk$0 = scls$0$g << lg;
-        hcls$0$dx = dx$0$q;
-        hcls$0$dy = dy$0$q;
-        h_chunk$0 = hcls$0$g << lg;
-        h_less$0 = (hcls$0$g << lg) - hcls$0$g;
-        rej_ll$0$e = ell$0$q;
-        rej_lm$0$e = elm$0$q;
+        s_less$0 = s_chunk$0 - scls$0$g;
+        rej_ll$0$e = el$0$q - s_less$0;
+        rej_lm$0$e = el$0$q + scls$0$g;
         rej_lf$0$e = el$0$q;
         rej_rf$0$e = er$0$q;
-        rej_rn$0$e = ern$0$q;
+        rej_rn$0$e = er$0$q - s_chunk$0;
         rej_ll$0$owns = scls$0$owns;
         rej_lm$0$owns = scls$0$owns;
         rej_lf$0$owns = scls$0$owns;
@@ -2323,15 +2119,12 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         scls$1$dx = sdx$1$q;
         scls$1$dy = sdy$1$q;
         s_chunk$1 = scls$1$g << lg;
-        hcls$1$dx = dx$1$q;
-        hcls$1$dy = dy$1$q;
-        h_chunk$1 = hcls$1$g << lg;
-        h_less$1 = (hcls$1$g << lg) - hcls$1$g;
-        rej_ll$1$e = ell$1$q;
-        rej_lm$1$e = elm$1$q;
+        s_less$1 = s_chunk$1 - scls$1$g;
+        rej_ll$1$e = el$1$q - s_less$1;
+        rej_lm$1$e = el$1$q + scls$1$g;
         rej_lf$1$e = el$1$q;
         rej_rf$1$e = er$1$q;
-        rej_rn$1$e = ern$1$q;
+        rej_rn$1$e = er$1$q - s_chunk$1;
         rej_ll$1$owns = scls$1$owns;
         rej_lm$1$owns = scls$1$owns;
         rej_lf$1$owns = scls$1$owns;
@@ -2355,15 +2148,12 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         scls$2$dx = sdx$2$q;
         scls$2$dy = sdy$2$q;
         s_chunk$2 = scls$2$g << lg;
-        hcls$2$dx = dx$2$q;
-        hcls$2$dy = dy$2$q;
-        h_chunk$2 = hcls$2$g << lg;
-        h_less$2 = (hcls$2$g << lg) - hcls$2$g;
-        rej_ll$2$e = ell$2$q;
-        rej_lm$2$e = elm$2$q;
+        s_less$2 = s_chunk$2 - scls$2$g;
+        rej_ll$2$e = el$2$q - s_less$2;
+        rej_lm$2$e = el$2$q + scls$2$g;
         rej_lf$2$e = el$2$q;
         rej_rf$2$e = er$2$q;
-        rej_rn$2$e = ern$2$q;
+        rej_rn$2$e = er$2$q - s_chunk$2;
         rej_ll$2$owns = scls$2$owns;
         rej_lm$2$owns = scls$2$owns;
         rej_lf$2$owns = scls$2$owns;
@@ -2392,12 +2182,6 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         row_empty = dead | out_l | out_r | (sl$q > sr$q);
         row_last = sy$q == sy1$q;
         walk_free = ~tv$q | (tx$q == te$q);
-        wcls$0$dx = wdx$0$q;
-        wcls$0$dy = wdy$0$q;
-        wcls$1$dx = wdx$1$q;
-        wcls$1$dy = wdy$1$q;
-        wcls$2$dx = wdx$2$q;
-        wcls$2$dy = wdy$2$q;
         c_mant = k_mant$0$q;
         if (wp$q) begin
             c_mant = k_mant$1$q;
@@ -2467,21 +2251,21 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
         lanes$0$c_z0 = c_z0;
         lanes$0$g_0 = scls$0$g;
         lanes$0$w_0 = w$0$q;
-        lanes$0$owns_0 = wcls$0$owns;
+        lanes$0$owns_0 = wown$0$q;
         lanes$0$c_iw_0 = c_iw$0;
         lanes$0$c_d1c_0 = c_d1c$0;
         lanes$0$c_d2c_0 = c_d2c$0;
         lanes$0$c_c0_0 = c_c0$0;
         lanes$0$g_1 = scls$1$g;
         lanes$0$w_1 = w$1$q;
-        lanes$0$owns_1 = wcls$1$owns;
+        lanes$0$owns_1 = wown$1$q;
         lanes$0$c_iw_1 = c_iw$1;
         lanes$0$c_d1c_1 = c_d1c$1;
         lanes$0$c_d2c_1 = c_d2c$1;
         lanes$0$c_c0_1 = c_c0$1;
         lanes$0$g_2 = scls$2$g;
         lanes$0$w_2 = w$2$q;
-        lanes$0$owns_2 = wcls$2$owns;
+        lanes$0$owns_2 = wown$2$q;
         lanes$0$c_iw_2 = c_iw$2;
         lanes$0$c_d1c_2 = c_d1c$2;
         lanes$0$c_d2c_2 = c_d2c$2;
@@ -2620,53 +2404,35 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
                 end
                 else begin
                     tx$d = tx$q + step;
-                    w$0$d = w$0$q - (wcls$0$g << lg);
-                    w$1$d = w$1$q - (wcls$1$g << lg);
-                    w$2$d = w$2$q - (wcls$2$g << lg);
+                    w$0$d = w$0$q - wstep$0$q;
+                    w$1$d = w$1$q - wstep$1$q;
+                    w$2$d = w$2$q - wstep$2$q;
                 end
             end
             if (sv$q) begin
                 if (l_right) begin
                     sl$d = sl$q + step;
                     el$0$d = el$0$q - s_chunk$0;
-                    ell$0$d = ell$0$q - s_chunk$0;
-                    elm$0$d = elm$0$q - s_chunk$0;
                     el$1$d = el$1$q - s_chunk$1;
-                    ell$1$d = ell$1$q - s_chunk$1;
-                    elm$1$d = elm$1$q - s_chunk$1;
                     el$2$d = el$2$q - s_chunk$2;
-                    ell$2$d = ell$2$q - s_chunk$2;
-                    elm$2$d = elm$2$q - s_chunk$2;
                 end
                 if (l_left) begin
                     sl$d = sl$q - step;
                     el$0$d = el$0$q + s_chunk$0;
-                    ell$0$d = ell$0$q + s_chunk$0;
-                    elm$0$d = elm$0$q + s_chunk$0;
                     el$1$d = el$1$q + s_chunk$1;
-                    ell$1$d = ell$1$q + s_chunk$1;
-                    elm$1$d = elm$1$q + s_chunk$1;
                     el$2$d = el$2$q + s_chunk$2;
-                    ell$2$d = ell$2$q + s_chunk$2;
-                    elm$2$d = elm$2$q + s_chunk$2;
                 end
                 if (r_left) begin
                     sr$d = sr$q - step;
                     er$0$d = er$0$q + s_chunk$0;
-                    ern$0$d = ern$0$q + s_chunk$0;
                     er$1$d = er$1$q + s_chunk$1;
-                    ern$1$d = ern$1$q + s_chunk$1;
                     er$2$d = er$2$q + s_chunk$2;
-                    ern$2$d = ern$2$q + s_chunk$2;
                 end
                 if (r_right) begin
                     sr$d = sr$q + step;
                     er$0$d = er$0$q - s_chunk$0;
-                    ern$0$d = ern$0$q - s_chunk$0;
                     er$1$d = er$1$q - s_chunk$1;
-                    ern$1$d = ern$1$q - s_chunk$1;
                     er$2$d = er$2$q - s_chunk$2;
-                    ern$2$d = ern$2$q - s_chunk$2;
                 end
                 if (found & (row_empty | walk_free)) begin
                     if (row_last) begin
@@ -2676,19 +2442,10 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
                         sy$d = sy$q + 32'h1;
                         el$0$d = el$0$q + scls$0$h;
                         er$0$d = er$0$q + scls$0$h;
-                        ell$0$d = ell$0$q + scls$0$h;
-                        elm$0$d = elm$0$q + scls$0$h;
-                        ern$0$d = ern$0$q + scls$0$h;
                         el$1$d = el$1$q + scls$1$h;
                         er$1$d = er$1$q + scls$1$h;
-                        ell$1$d = ell$1$q + scls$1$h;
-                        elm$1$d = elm$1$q + scls$1$h;
-                        ern$1$d = ern$1$q + scls$1$h;
                         el$2$d = el$2$q + scls$2$h;
                         er$2$d = er$2$q + scls$2$h;
-                        ell$2$d = ell$2$q + scls$2$h;
-                        elm$2$d = elm$2$q + scls$2$h;
-                        ern$2$d = ern$2$q + scls$2$h;
                     end
                 end
                 if (found & ~row_empty & walk_free) begin
@@ -2700,14 +2457,14 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
                     wx1$d = sx1$q;
                     wp$d = sp$q;
                     w$0$d = el$0$q;
-                    wdx$0$d = sdx$0$q;
-                    wdy$0$d = sdy$0$q;
+                    wown$0$d = scls$0$owns;
+                    wstep$0$d = s_chunk$0;
                     w$1$d = el$1$q;
-                    wdx$1$d = sdx$1$q;
-                    wdy$1$d = sdy$1$q;
+                    wown$1$d = scls$1$owns;
+                    wstep$1$d = s_chunk$1;
                     w$2$d = el$2$q;
-                    wdx$2$d = sdx$2$q;
-                    wdy$2$d = sdy$2$q;
+                    wown$2$d = scls$2$owns;
+                    wstep$2$d = s_chunk$2;
                 end
             end
             if (hand) begin
@@ -2726,23 +2483,14 @@ module vector(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,
                     sr$d = ((cs$q) & 10'h3ff);
                     el$0$d = w0$0$q;
                     er$0$d = w0$0$q;
-                    ell$0$d = w0$0$q - h_less$0;
-                    elm$0$d = w0$0$q + hcls$0$g;
-                    ern$0$d = w0$0$q - h_chunk$0;
                     sdx$0$d = dx$0$q;
                     sdy$0$d = dy$0$q;
                     el$1$d = w0$1$q;
                     er$1$d = w0$1$q;
-                    ell$1$d = w0$1$q - h_less$1;
-                    elm$1$d = w0$1$q + hcls$1$g;
-                    ern$1$d = w0$1$q - h_chunk$1;
                     sdx$1$d = dx$1$q;
                     sdy$1$d = dy$1$q;
                     el$2$d = w0$2$q;
                     er$2$d = w0$2$q;
-                    ell$2$d = w0$2$q - h_less$2;
-                    elm$2$d = w0$2$q + hcls$2$g;
-                    ern$2$d = w0$2$q - h_chunk$2;
                     sdx$2$d = dx$2$q;
                     sdy$2$d = dy$2$q;
                     if (sp$q) begin
@@ -6838,120 +6586,6 @@ module vector$el$2(d,q,clock);
 endmodule // vector$el$2
 
 
-module vector$ell$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ell$0
-
-
-module vector$ell$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ell$1
-
-
-module vector$ell$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ell$2
-
-
-module vector$elm$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$elm$0
-
-
-module vector$elm$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$elm$1
-
-
-module vector$elm$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$elm$2
-
-
 module vector$empty(d,q,clock);
     
     // Module arguments
@@ -7026,63 +6660,6 @@ module vector$er$2(d,q,clock);
     end
           
 endmodule // vector$er$2
-
-
-module vector$ern$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ern$0
-
-
-module vector$ern$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ern$1
-
-
-module vector$ern$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [34:0] d;
-    output reg  [34:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 35'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$ern$2
 
 
 module vector$ex$0(x,y);
@@ -7396,414 +6973,6 @@ module vector$ez$2(x,y);
     end
     
 endmodule // vector$ez$2
-
-
-module vector$hcls$0(dx,dy,left,right,flat,owns,g,h);
-    
-    // Module arguments
-    input wire  [16:0] dx;
-    input wire  [16:0] dy;
-    output reg  left;
-    output reg  right;
-    output reg  flat;
-    output reg  owns;
-    output reg  [34:0] g;
-    output reg  [34:0] h;
-    
-    // Constant declarations
-    localparam  frac = 8'h4;
-    
-    // Stub signals
-    reg  [16:0] dx_neg$x;
-    wire  dx_neg$neg;
-    reg  [16:0] dy_neg$x;
-    wire  dy_neg$neg;
-    reg  [16:0] ex$x;
-    wire  [34:0] ex$y;
-    reg  [16:0] ey$x;
-    wire  [34:0] ey$y;
-    
-    // Sub module instances
-    vector$hcls$0$dx_neg dx_neg(
-        .x(dx_neg$x),
-        .neg(dx_neg$neg)
-    );
-    vector$hcls$0$dy_neg dy_neg(
-        .x(dy_neg$x),
-        .neg(dy_neg$neg)
-    );
-    vector$hcls$0$ex ex(
-        .x(ex$x),
-        .y(ex$y)
-    );
-    vector$hcls$0$ey ey(
-        .x(ey$x),
-        .y(ey$y)
-    );
-    
-    // Update code
-    always @(*) begin
-        dx_neg$x = dx;
-        dy_neg$x = dy;
-        left = dy_neg$neg;
-        flat = dy == 32'h0;
-        right = ~dy_neg$neg & (dy != 32'h0);
-        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
-        ex$x = dx;
-        ey$x = dy;
-        g = ey$y << frac;
-        h = ex$y << frac;
-    end
-    
-endmodule // vector$hcls$0
-
-
-module vector$hcls$0$dx_neg(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$hcls$0$dx_neg
-
-
-module vector$hcls$0$dy_neg(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$hcls$0$dy_neg
-
-
-module vector$hcls$0$ex(x,y);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
-    
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
-    end
-    
-endmodule // vector$hcls$0$ex
-
-
-module vector$hcls$0$ey(x,y);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
-    
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
-    end
-    
-endmodule // vector$hcls$0$ey
-
-
-module vector$hcls$1(dx,dy,left,right,flat,owns,g,h);
-    
-    // Module arguments
-    input wire  [16:0] dx;
-    input wire  [16:0] dy;
-    output reg  left;
-    output reg  right;
-    output reg  flat;
-    output reg  owns;
-    output reg  [34:0] g;
-    output reg  [34:0] h;
-    
-    // Constant declarations
-    localparam  frac = 8'h4;
-    
-    // Stub signals
-    reg  [16:0] dx_neg$x;
-    wire  dx_neg$neg;
-    reg  [16:0] dy_neg$x;
-    wire  dy_neg$neg;
-    reg  [16:0] ex$x;
-    wire  [34:0] ex$y;
-    reg  [16:0] ey$x;
-    wire  [34:0] ey$y;
-    
-    // Sub module instances
-    vector$hcls$1$dx_neg dx_neg(
-        .x(dx_neg$x),
-        .neg(dx_neg$neg)
-    );
-    vector$hcls$1$dy_neg dy_neg(
-        .x(dy_neg$x),
-        .neg(dy_neg$neg)
-    );
-    vector$hcls$1$ex ex(
-        .x(ex$x),
-        .y(ex$y)
-    );
-    vector$hcls$1$ey ey(
-        .x(ey$x),
-        .y(ey$y)
-    );
-    
-    // Update code
-    always @(*) begin
-        dx_neg$x = dx;
-        dy_neg$x = dy;
-        left = dy_neg$neg;
-        flat = dy == 32'h0;
-        right = ~dy_neg$neg & (dy != 32'h0);
-        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
-        ex$x = dx;
-        ey$x = dy;
-        g = ey$y << frac;
-        h = ex$y << frac;
-    end
-    
-endmodule // vector$hcls$1
-
-
-module vector$hcls$1$dx_neg(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$hcls$1$dx_neg
-
-
-module vector$hcls$1$dy_neg(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$hcls$1$dy_neg
-
-
-module vector$hcls$1$ex(x,y);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
-    
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
-    end
-    
-endmodule // vector$hcls$1$ex
-
-
-module vector$hcls$1$ey(x,y);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
-    
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
-    end
-    
-endmodule // vector$hcls$1$ey
-
-
-module vector$hcls$2(dx,dy,left,right,flat,owns,g,h);
-    
-    // Module arguments
-    input wire  [16:0] dx;
-    input wire  [16:0] dy;
-    output reg  left;
-    output reg  right;
-    output reg  flat;
-    output reg  owns;
-    output reg  [34:0] g;
-    output reg  [34:0] h;
-    
-    // Constant declarations
-    localparam  frac = 8'h4;
-    
-    // Stub signals
-    reg  [16:0] dx_neg$x;
-    wire  dx_neg$neg;
-    reg  [16:0] dy_neg$x;
-    wire  dy_neg$neg;
-    reg  [16:0] ex$x;
-    wire  [34:0] ex$y;
-    reg  [16:0] ey$x;
-    wire  [34:0] ey$y;
-    
-    // Sub module instances
-    vector$hcls$2$dx_neg dx_neg(
-        .x(dx_neg$x),
-        .neg(dx_neg$neg)
-    );
-    vector$hcls$2$dy_neg dy_neg(
-        .x(dy_neg$x),
-        .neg(dy_neg$neg)
-    );
-    vector$hcls$2$ex ex(
-        .x(ex$x),
-        .y(ex$y)
-    );
-    vector$hcls$2$ey ey(
-        .x(ey$x),
-        .y(ey$y)
-    );
-    
-    // Update code
-    always @(*) begin
-        dx_neg$x = dx;
-        dy_neg$x = dy;
-        left = dy_neg$neg;
-        flat = dy == 32'h0;
-        right = ~dy_neg$neg & (dy != 32'h0);
-        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
-        ex$x = dx;
-        ey$x = dy;
-        g = ey$y << frac;
-        h = ex$y << frac;
-    end
-    
-endmodule // vector$hcls$2
-
-
-module vector$hcls$2$dx_neg(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$hcls$2$dx_neg
-
-
-module vector$hcls$2$dy_neg(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$hcls$2$dy_neg
-
-
-module vector$hcls$2$ex(x,y);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
-    
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
-    end
-    
-endmodule // vector$hcls$2$ex
-
-
-module vector$hcls$2$ey(x,y);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
-    
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
-    end
-    
-endmodule // vector$hcls$2$ey
 
 
 module vector$hold$0(d,q,clock);
@@ -23843,25 +23012,25 @@ module vector$lanes$0$rej$0(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$lanes$0$rej$0$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$lanes$0$rej$0$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$lanes$0$rej$0
 
 
-module vector$lanes$0$rej$0$neg(x,neg);
+module vector$lanes$0$rej$0$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -23875,7 +23044,7 @@ module vector$lanes$0$rej$0$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$lanes$0$rej$0$neg
+endmodule // vector$lanes$0$rej$0$sign
 
 
 module vector$lanes$0$rej$1(e,owns,rejects);
@@ -23886,25 +23055,25 @@ module vector$lanes$0$rej$1(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$lanes$0$rej$1$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$lanes$0$rej$1$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$lanes$0$rej$1
 
 
-module vector$lanes$0$rej$1$neg(x,neg);
+module vector$lanes$0$rej$1$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -23918,7 +23087,7 @@ module vector$lanes$0$rej$1$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$lanes$0$rej$1$neg
+endmodule // vector$lanes$0$rej$1$sign
 
 
 module vector$lanes$0$rej$2(e,owns,rejects);
@@ -23929,25 +23098,25 @@ module vector$lanes$0$rej$2(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$lanes$0$rej$2$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$lanes$0$rej$2$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$lanes$0$rej$2
 
 
-module vector$lanes$0$rej$2$neg(x,neg);
+module vector$lanes$0$rej$2$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -23961,7 +23130,7 @@ module vector$lanes$0$rej$2$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$lanes$0$rej$2$neg
+endmodule // vector$lanes$0$rej$2$sign
 
 
 module vector$lanes$0$rs_a(x,by,y);
@@ -25206,25 +24375,25 @@ module vector$rej_lf$0(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_lf$0$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_lf$0$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_lf$0
 
 
-module vector$rej_lf$0$neg(x,neg);
+module vector$rej_lf$0$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25238,7 +24407,7 @@ module vector$rej_lf$0$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_lf$0$neg
+endmodule // vector$rej_lf$0$sign
 
 
 module vector$rej_lf$1(e,owns,rejects);
@@ -25249,25 +24418,25 @@ module vector$rej_lf$1(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_lf$1$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_lf$1$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_lf$1
 
 
-module vector$rej_lf$1$neg(x,neg);
+module vector$rej_lf$1$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25281,7 +24450,7 @@ module vector$rej_lf$1$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_lf$1$neg
+endmodule // vector$rej_lf$1$sign
 
 
 module vector$rej_lf$2(e,owns,rejects);
@@ -25292,25 +24461,25 @@ module vector$rej_lf$2(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_lf$2$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_lf$2$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_lf$2
 
 
-module vector$rej_lf$2$neg(x,neg);
+module vector$rej_lf$2$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25324,7 +24493,7 @@ module vector$rej_lf$2$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_lf$2$neg
+endmodule // vector$rej_lf$2$sign
 
 
 module vector$rej_ll$0(e,owns,rejects);
@@ -25335,25 +24504,25 @@ module vector$rej_ll$0(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_ll$0$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_ll$0$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_ll$0
 
 
-module vector$rej_ll$0$neg(x,neg);
+module vector$rej_ll$0$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25367,7 +24536,7 @@ module vector$rej_ll$0$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_ll$0$neg
+endmodule // vector$rej_ll$0$sign
 
 
 module vector$rej_ll$1(e,owns,rejects);
@@ -25378,25 +24547,25 @@ module vector$rej_ll$1(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_ll$1$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_ll$1$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_ll$1
 
 
-module vector$rej_ll$1$neg(x,neg);
+module vector$rej_ll$1$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25410,7 +24579,7 @@ module vector$rej_ll$1$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_ll$1$neg
+endmodule // vector$rej_ll$1$sign
 
 
 module vector$rej_ll$2(e,owns,rejects);
@@ -25421,25 +24590,25 @@ module vector$rej_ll$2(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_ll$2$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_ll$2$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_ll$2
 
 
-module vector$rej_ll$2$neg(x,neg);
+module vector$rej_ll$2$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25453,7 +24622,7 @@ module vector$rej_ll$2$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_ll$2$neg
+endmodule // vector$rej_ll$2$sign
 
 
 module vector$rej_lm$0(e,owns,rejects);
@@ -25464,25 +24633,25 @@ module vector$rej_lm$0(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_lm$0$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_lm$0$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_lm$0
 
 
-module vector$rej_lm$0$neg(x,neg);
+module vector$rej_lm$0$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25496,7 +24665,7 @@ module vector$rej_lm$0$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_lm$0$neg
+endmodule // vector$rej_lm$0$sign
 
 
 module vector$rej_lm$1(e,owns,rejects);
@@ -25507,25 +24676,25 @@ module vector$rej_lm$1(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_lm$1$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_lm$1$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_lm$1
 
 
-module vector$rej_lm$1$neg(x,neg);
+module vector$rej_lm$1$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25539,7 +24708,7 @@ module vector$rej_lm$1$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_lm$1$neg
+endmodule // vector$rej_lm$1$sign
 
 
 module vector$rej_lm$2(e,owns,rejects);
@@ -25550,25 +24719,25 @@ module vector$rej_lm$2(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_lm$2$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_lm$2$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_lm$2
 
 
-module vector$rej_lm$2$neg(x,neg);
+module vector$rej_lm$2$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25582,7 +24751,7 @@ module vector$rej_lm$2$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_lm$2$neg
+endmodule // vector$rej_lm$2$sign
 
 
 module vector$rej_rf$0(e,owns,rejects);
@@ -25593,25 +24762,25 @@ module vector$rej_rf$0(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_rf$0$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_rf$0$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_rf$0
 
 
-module vector$rej_rf$0$neg(x,neg);
+module vector$rej_rf$0$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25625,7 +24794,7 @@ module vector$rej_rf$0$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_rf$0$neg
+endmodule // vector$rej_rf$0$sign
 
 
 module vector$rej_rf$1(e,owns,rejects);
@@ -25636,25 +24805,25 @@ module vector$rej_rf$1(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_rf$1$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_rf$1$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_rf$1
 
 
-module vector$rej_rf$1$neg(x,neg);
+module vector$rej_rf$1$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25668,7 +24837,7 @@ module vector$rej_rf$1$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_rf$1$neg
+endmodule // vector$rej_rf$1$sign
 
 
 module vector$rej_rf$2(e,owns,rejects);
@@ -25679,25 +24848,25 @@ module vector$rej_rf$2(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_rf$2$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_rf$2$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_rf$2
 
 
-module vector$rej_rf$2$neg(x,neg);
+module vector$rej_rf$2$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25711,7 +24880,7 @@ module vector$rej_rf$2$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_rf$2$neg
+endmodule // vector$rej_rf$2$sign
 
 
 module vector$rej_rn$0(e,owns,rejects);
@@ -25722,25 +24891,25 @@ module vector$rej_rn$0(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_rn$0$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_rn$0$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_rn$0
 
 
-module vector$rej_rn$0$neg(x,neg);
+module vector$rej_rn$0$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25754,7 +24923,7 @@ module vector$rej_rn$0$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_rn$0$neg
+endmodule // vector$rej_rn$0$sign
 
 
 module vector$rej_rn$1(e,owns,rejects);
@@ -25765,25 +24934,25 @@ module vector$rej_rn$1(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_rn$1$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_rn$1$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_rn$1
 
 
-module vector$rej_rn$1$neg(x,neg);
+module vector$rej_rn$1$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25797,7 +24966,7 @@ module vector$rej_rn$1$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_rn$1$neg
+endmodule // vector$rej_rn$1$sign
 
 
 module vector$rej_rn$2(e,owns,rejects);
@@ -25808,25 +24977,25 @@ module vector$rej_rn$2(e,owns,rejects);
     output reg  rejects;
     
     // Stub signals
-    reg  [34:0] neg$x;
-    wire  neg$neg;
+    reg  [34:0] sign$x;
+    wire  sign$neg;
     
     // Sub module instances
-    vector$rej_rn$2$neg neg(
-        .x(neg$x),
-        .neg(neg$neg)
+    vector$rej_rn$2$sign sign(
+        .x(sign$x),
+        .neg(sign$neg)
     );
     
     // Update code
     always @(*) begin
-        neg$x = e;
-        rejects = neg$neg | ((e == 32'h0) & ~owns);
+        sign$x = e;
+        rejects = sign$neg | ((e == 32'h0) & ~owns);
     end
     
 endmodule // vector$rej_rn$2
 
 
-module vector$rej_rn$2$neg(x,neg);
+module vector$rej_rn$2$sign(x,neg);
     
     // Module arguments
     input wire  [34:0] x;
@@ -25840,7 +25009,7 @@ module vector$rej_rn$2$neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // vector$rej_rn$2$neg
+endmodule // vector$rej_rn$2$sign
 
 
 module vector$sbusy(d,q,clock);
@@ -28423,526 +27592,61 @@ module vector$w0$2(d,q,clock);
 endmodule // vector$w0$2
 
 
-module vector$wcls$0(dx,dy,left,right,flat,owns,g,h);
+module vector$wown$0(d,q,clock);
     
     // Module arguments
-    input wire  [16:0] dx;
-    input wire  [16:0] dy;
-    output reg  left;
-    output reg  right;
-    output reg  flat;
-    output reg  owns;
-    output reg  [34:0] g;
-    output reg  [34:0] h;
-    
-    // Constant declarations
-    localparam  frac = 8'h4;
-    
-    // Stub signals
-    reg  [16:0] dx_neg$x;
-    wire  dx_neg$neg;
-    reg  [16:0] dy_neg$x;
-    wire  dy_neg$neg;
-    reg  [16:0] ex$x;
-    wire  [34:0] ex$y;
-    reg  [16:0] ey$x;
-    wire  [34:0] ey$y;
-    
-    // Sub module instances
-    vector$wcls$0$dx_neg dx_neg(
-        .x(dx_neg$x),
-        .neg(dx_neg$neg)
-    );
-    vector$wcls$0$dy_neg dy_neg(
-        .x(dy_neg$x),
-        .neg(dy_neg$neg)
-    );
-    vector$wcls$0$ex ex(
-        .x(ex$x),
-        .y(ex$y)
-    );
-    vector$wcls$0$ey ey(
-        .x(ey$x),
-        .y(ey$y)
-    );
-    
-    // Update code
-    always @(*) begin
-        dx_neg$x = dx;
-        dy_neg$x = dy;
-        left = dy_neg$neg;
-        flat = dy == 32'h0;
-        right = ~dy_neg$neg & (dy != 32'h0);
-        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
-        ex$x = dx;
-        ey$x = dy;
-        g = ey$y << frac;
-        h = ex$y << frac;
-    end
-    
-endmodule // vector$wcls$0
-
-
-module vector$wcls$0$dx_neg(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$wcls$0$dx_neg
-
-
-module vector$wcls$0$dy_neg(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$wcls$0$dy_neg
-
-
-module vector$wcls$0$ex(x,y);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
-    
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
-    end
-    
-endmodule // vector$wcls$0$ex
-
-
-module vector$wcls$0$ey(x,y);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
-    
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
-    end
-    
-endmodule // vector$wcls$0$ey
-
-
-module vector$wcls$1(dx,dy,left,right,flat,owns,g,h);
-    
-    // Module arguments
-    input wire  [16:0] dx;
-    input wire  [16:0] dy;
-    output reg  left;
-    output reg  right;
-    output reg  flat;
-    output reg  owns;
-    output reg  [34:0] g;
-    output reg  [34:0] h;
-    
-    // Constant declarations
-    localparam  frac = 8'h4;
-    
-    // Stub signals
-    reg  [16:0] dx_neg$x;
-    wire  dx_neg$neg;
-    reg  [16:0] dy_neg$x;
-    wire  dy_neg$neg;
-    reg  [16:0] ex$x;
-    wire  [34:0] ex$y;
-    reg  [16:0] ey$x;
-    wire  [34:0] ey$y;
-    
-    // Sub module instances
-    vector$wcls$1$dx_neg dx_neg(
-        .x(dx_neg$x),
-        .neg(dx_neg$neg)
-    );
-    vector$wcls$1$dy_neg dy_neg(
-        .x(dy_neg$x),
-        .neg(dy_neg$neg)
-    );
-    vector$wcls$1$ex ex(
-        .x(ex$x),
-        .y(ex$y)
-    );
-    vector$wcls$1$ey ey(
-        .x(ey$x),
-        .y(ey$y)
-    );
-    
-    // Update code
-    always @(*) begin
-        dx_neg$x = dx;
-        dy_neg$x = dy;
-        left = dy_neg$neg;
-        flat = dy == 32'h0;
-        right = ~dy_neg$neg & (dy != 32'h0);
-        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
-        ex$x = dx;
-        ey$x = dy;
-        g = ey$y << frac;
-        h = ex$y << frac;
-    end
-    
-endmodule // vector$wcls$1
-
-
-module vector$wcls$1$dx_neg(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$wcls$1$dx_neg
-
-
-module vector$wcls$1$dy_neg(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$wcls$1$dy_neg
-
-
-module vector$wcls$1$ex(x,y);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
-    
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
-    end
-    
-endmodule // vector$wcls$1$ex
-
-
-module vector$wcls$1$ey(x,y);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
-    
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
-    end
-    
-endmodule // vector$wcls$1$ey
-
-
-module vector$wcls$2(dx,dy,left,right,flat,owns,g,h);
-    
-    // Module arguments
-    input wire  [16:0] dx;
-    input wire  [16:0] dy;
-    output reg  left;
-    output reg  right;
-    output reg  flat;
-    output reg  owns;
-    output reg  [34:0] g;
-    output reg  [34:0] h;
-    
-    // Constant declarations
-    localparam  frac = 8'h4;
-    
-    // Stub signals
-    reg  [16:0] dx_neg$x;
-    wire  dx_neg$neg;
-    reg  [16:0] dy_neg$x;
-    wire  dy_neg$neg;
-    reg  [16:0] ex$x;
-    wire  [34:0] ex$y;
-    reg  [16:0] ey$x;
-    wire  [34:0] ey$y;
-    
-    // Sub module instances
-    vector$wcls$2$dx_neg dx_neg(
-        .x(dx_neg$x),
-        .neg(dx_neg$neg)
-    );
-    vector$wcls$2$dy_neg dy_neg(
-        .x(dy_neg$x),
-        .neg(dy_neg$neg)
-    );
-    vector$wcls$2$ex ex(
-        .x(ex$x),
-        .y(ex$y)
-    );
-    vector$wcls$2$ey ey(
-        .x(ey$x),
-        .y(ey$y)
-    );
-    
-    // Update code
-    always @(*) begin
-        dx_neg$x = dx;
-        dy_neg$x = dy;
-        left = dy_neg$neg;
-        flat = dy == 32'h0;
-        right = ~dy_neg$neg & (dy != 32'h0);
-        owns = dy_neg$neg | ((dy == 32'h0) & ~dx_neg$neg & (dx != 32'h0));
-        ex$x = dx;
-        ey$x = dy;
-        g = ey$y << frac;
-        h = ex$y << frac;
-    end
-    
-endmodule // vector$wcls$2
-
-
-module vector$wcls$2$dx_neg(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$wcls$2$dx_neg
-
-
-module vector$wcls$2$dy_neg(x,neg);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 17'b10000000000000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // vector$wcls$2$dy_neg
-
-
-module vector$wcls$2$ex(x,y);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
-    
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
-    end
-    
-endmodule // vector$wcls$2$ex
-
-
-module vector$wcls$2$ey(x,y);
-    
-    // Module arguments
-    input wire  [16:0] x;
-    output reg  [34:0] y;
-    
-    // Constant declarations
-    localparam  msb = 8'h10;
-    localparam  ext = 35'h7fffe0000;
-    
-    // Update code
-    always @(*) begin
-        y = ((x) & 35'h7ffffffff);
-        if (x[msb]) begin
-            y = ((x) & 35'h7ffffffff) | ext;
-        end
-    end
-    
-endmodule // vector$wcls$2$ey
-
-
-module vector$wdx$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 17'h0;
+       q = 1'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // vector$wdx$0
+endmodule // vector$wown$0
 
 
-module vector$wdx$1(d,q,clock);
+module vector$wown$1(d,q,clock);
     
     // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 17'h0;
+       q = 1'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // vector$wdx$1
+endmodule // vector$wown$1
 
 
-module vector$wdx$2(d,q,clock);
+module vector$wown$2(d,q,clock);
     
     // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 17'h0;
+       q = 1'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // vector$wdx$2
-
-
-module vector$wdy$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$wdy$0
-
-
-module vector$wdy$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$wdy$1
-
-
-module vector$wdy$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // vector$wdy$2
+endmodule // vector$wown$2
 
 
 module vector$wp(d,q,clock);
@@ -28962,6 +27666,63 @@ module vector$wp(d,q,clock);
     end
           
 endmodule // vector$wp
+
+
+module vector$wstep$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$wstep$0
+
+
+module vector$wstep$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$wstep$1
+
+
+module vector$wstep$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // vector$wstep$2
 
 
 module vector$wx0(d,q,clock);

@@ -297,14 +297,14 @@ pub struct Rejects {
     pub e: Signal<In, Bits<EFN>>,
     pub owns: Signal<In, Bit>,
     pub rejects: Signal<Out, Bit>,
-    neg: Negative<EFN>,
+    sign: Negative<EFN>,
 }
 
 impl Logic for Rejects {
     #[hdl_gen]
     fn update(&mut self) {
-        self.neg.x.next = self.e.val();
-        self.rejects.next = self.neg.neg.val() | ((self.e.val() == 0) & !self.owns.val());
+        self.sign.x.next = self.e.val();
+        self.rejects.next = self.sign.neg.val() | ((self.e.val() == 0) & !self.owns.val());
     }
 }
 
@@ -552,21 +552,12 @@ pub struct Vector<const LANES: usize, const ZW: usize, const CW: usize> {
     sr: DFF<Bits<SCREEN>>,
     el: [DFF<Bits<EFN>>; 3],
     er: [DFF<Bits<EFN>>; 3],
-    /// The edge functions the probes test, kept beside `el` and `er` (every step of those
-    /// steps these): at the left probe's chunk's last pixel, at the pixel left of it, at the
-    /// first pixel of the chunk right of the right probe's.
-    ell: [DFF<Bits<EFN>>; 3],
-    elm: [DFF<Bits<EFN>>; 3],
-    ern: [DFF<Bits<EFN>>; 3],
     sdx: [DFF<Bits<D1>>; 3],
     sdy: [DFF<Bits<D1>>; 3],
     scls: [EdgeClass; 3],
-    /// Each edge's step over a chunk (the scout's triangle), and setup's triangle's edges:
-    /// classes, steps over a chunk and over all but its last pixel.
+    /// Each edge's step over a chunk, and over all but its last pixel.
     s_chunk: [Signal<Local, Bits<EFN>>; 3],
-    hcls: [EdgeClass; 3],
-    h_chunk: [Signal<Local, Bits<EFN>>; 3],
-    h_less: [Signal<Local, Bits<EFN>>; 3],
+    s_less: [Signal<Local, Bits<EFN>>; 3],
     /// Per edge: at the left probe's last pixel, at the pixel left of it, at the left probe's
     /// first pixel (flat edges), at the right probe's first pixel and the next chunk's.
     rej_ll: [Rejects; 3],
@@ -601,9 +592,9 @@ pub struct Vector<const LANES: usize, const ZW: usize, const CW: usize> {
     wx0: DFF<Bits<SCREEN>>,
     wx1: DFF<Bits<SCREEN>>,
     w: [DFF<Bits<EFN>>; 3],
-    wdx: [DFF<Bits<D1>>; 3],
-    wdy: [DFF<Bits<D1>>; 3],
-    wcls: [EdgeClass; 3],
+    /// Per edge: whether it owns its samples, its function's step over a chunk.
+    wown: [DFF<Bit>; 3],
+    wstep: [DFF<Bits<EFN>>; 3],
     walk_free: Signal<Local, Bit>,
 
     /// Two sets of a triangle's constants for the pixels (set s at index s, or 3s + k for
@@ -774,16 +765,11 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Vector<LANES, ZW, CW>
             sr: Default::default(),
             el: defaults(),
             er: defaults(),
-            ell: defaults(),
-            elm: defaults(),
-            ern: defaults(),
             sdx: defaults(),
             sdy: defaults(),
             scls: defaults(),
             s_chunk: defaults(),
-            hcls: defaults(),
-            h_chunk: defaults(),
-            h_less: defaults(),
+            s_less: defaults(),
             rej_ll: defaults(),
             rej_lm: defaults(),
             rej_lf: defaults(),
@@ -808,9 +794,8 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Vector<LANES, ZW, CW>
             wx0: Default::default(),
             wx1: Default::default(),
             w: defaults(),
-            wdx: defaults(),
-            wdy: defaults(),
-            wcls: defaults(),
+            wown: defaults(),
+            wstep: defaults(),
             walk_free: Default::default(),
             k_mant: defaults(),
             k_exp: defaults(),
@@ -887,22 +872,16 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANE
             self.el[k].d.next = self.el[k].q.val();
             self.er[k].clock.next = self.clock.val();
             self.er[k].d.next = self.er[k].q.val();
-            self.ell[k].clock.next = self.clock.val();
-            self.ell[k].d.next = self.ell[k].q.val();
-            self.elm[k].clock.next = self.clock.val();
-            self.elm[k].d.next = self.elm[k].q.val();
-            self.ern[k].clock.next = self.clock.val();
-            self.ern[k].d.next = self.ern[k].q.val();
             self.sdx[k].clock.next = self.clock.val();
             self.sdx[k].d.next = self.sdx[k].q.val();
             self.sdy[k].clock.next = self.clock.val();
             self.sdy[k].d.next = self.sdy[k].q.val();
             self.w[k].clock.next = self.clock.val();
             self.w[k].d.next = self.w[k].q.val();
-            self.wdx[k].clock.next = self.clock.val();
-            self.wdx[k].d.next = self.wdx[k].q.val();
-            self.wdy[k].clock.next = self.clock.val();
-            self.wdy[k].d.next = self.wdy[k].q.val();
+            self.wown[k].clock.next = self.clock.val();
+            self.wown[k].d.next = self.wown[k].q.val();
+            self.wstep[k].clock.next = self.clock.val();
+            self.wstep[k].d.next = self.wstep[k].q.val();
         }
         for k in 0..6 {
             self.k_iw[k].clock.next = self.clock.val();
@@ -1085,15 +1064,12 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANE
             self.scls[k].dx.next = self.sdx[k].q.val();
             self.scls[k].dy.next = self.sdy[k].q.val();
             self.s_chunk[k].next = self.scls[k].g.val() << self.lg.val();
-            self.hcls[k].dx.next = self.dx[k].q.val();
-            self.hcls[k].dy.next = self.dy[k].q.val();
-            self.h_chunk[k].next = self.hcls[k].g.val() << self.lg.val();
-            self.h_less[k].next = (self.hcls[k].g.val() << self.lg.val()) - self.hcls[k].g.val();
-            self.rej_ll[k].e.next = self.ell[k].q.val();
-            self.rej_lm[k].e.next = self.elm[k].q.val();
+            self.s_less[k].next = self.s_chunk[k].val() - self.scls[k].g.val();
+            self.rej_ll[k].e.next = self.el[k].q.val() - self.s_less[k].val();
+            self.rej_lm[k].e.next = self.el[k].q.val() + self.scls[k].g.val();
             self.rej_lf[k].e.next = self.el[k].q.val();
             self.rej_rf[k].e.next = self.er[k].q.val();
-            self.rej_rn[k].e.next = self.ern[k].q.val();
+            self.rej_rn[k].e.next = self.er[k].q.val() - self.s_chunk[k].val();
             self.rej_ll[k].owns.next = self.scls[k].owns.val();
             self.rej_lm[k].owns.next = self.scls[k].owns.val();
             self.rej_lf[k].owns.next = self.scls[k].owns.val();
@@ -1132,10 +1108,6 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANE
         self.row_last.next = self.sy.q.val() == self.sy1.q.val();
         // The walker is free in its row's last chunk; it takes a row found not empty.
         self.walk_free.next = !self.tv.q.val() | (self.tx.q.val() == self.te.q.val());
-        for k in 0..3 {
-            self.wcls[k].dx.next = self.wdx[k].q.val();
-            self.wcls[k].dy.next = self.wdy[k].q.val();
-        }
 
         // ---- Each stage's constants: of the set of the chunk there.
         self.c_mant.next = self.k_mant[0].q.val();
@@ -1195,21 +1167,21 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANE
             // first [...] of a name only.
             self.lanes[i].g_0.next = self.scls[0].g.val();
             self.lanes[i].w_0.next = self.w[0].q.val();
-            self.lanes[i].owns_0.next = self.wcls[0].owns.val();
+            self.lanes[i].owns_0.next = self.wown[0].q.val();
             self.lanes[i].c_iw_0.next = self.c_iw[0].val();
             self.lanes[i].c_d1c_0.next = self.c_d1c[0].val();
             self.lanes[i].c_d2c_0.next = self.c_d2c[0].val();
             self.lanes[i].c_c0_0.next = self.c_c0[0].val();
             self.lanes[i].g_1.next = self.scls[1].g.val();
             self.lanes[i].w_1.next = self.w[1].q.val();
-            self.lanes[i].owns_1.next = self.wcls[1].owns.val();
+            self.lanes[i].owns_1.next = self.wown[1].q.val();
             self.lanes[i].c_iw_1.next = self.c_iw[1].val();
             self.lanes[i].c_d1c_1.next = self.c_d1c[1].val();
             self.lanes[i].c_d2c_1.next = self.c_d2c[1].val();
             self.lanes[i].c_c0_1.next = self.c_c0[1].val();
             self.lanes[i].g_2.next = self.scls[2].g.val();
             self.lanes[i].w_2.next = self.w[2].q.val();
-            self.lanes[i].owns_2.next = self.wcls[2].owns.val();
+            self.lanes[i].owns_2.next = self.wown[2].q.val();
             self.lanes[i].c_iw_2.next = self.c_iw[2].val();
             self.lanes[i].c_d1c_2.next = self.c_d1c[2].val();
             self.lanes[i].c_d2c_2.next = self.c_d2c[2].val();
@@ -1359,7 +1331,7 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANE
                 } else {
                     self.tx.d.next = self.tx.q.val() + self.step.val();
                     for k in 0..3 {
-                        self.w[k].d.next = self.w[k].q.val() - (self.wcls[k].g.val() << self.lg.val());
+                        self.w[k].d.next = self.w[k].q.val() - self.wstep[k].q.val();
                     }
                 }
             }
@@ -1370,30 +1342,24 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANE
                     self.sl.d.next = self.sl.q.val() + self.step.val();
                     for k in 0..3 {
                         self.el[k].d.next = self.el[k].q.val() - self.s_chunk[k].val();
-                        self.ell[k].d.next = self.ell[k].q.val() - self.s_chunk[k].val();
-                        self.elm[k].d.next = self.elm[k].q.val() - self.s_chunk[k].val();
                     }
                 }
                 if self.l_left.val() {
                     self.sl.d.next = self.sl.q.val() - self.step.val();
                     for k in 0..3 {
                         self.el[k].d.next = self.el[k].q.val() + self.s_chunk[k].val();
-                        self.ell[k].d.next = self.ell[k].q.val() + self.s_chunk[k].val();
-                        self.elm[k].d.next = self.elm[k].q.val() + self.s_chunk[k].val();
                     }
                 }
                 if self.r_left.val() {
                     self.sr.d.next = self.sr.q.val() - self.step.val();
                     for k in 0..3 {
                         self.er[k].d.next = self.er[k].q.val() + self.s_chunk[k].val();
-                        self.ern[k].d.next = self.ern[k].q.val() + self.s_chunk[k].val();
                     }
                 }
                 if self.r_right.val() {
                     self.sr.d.next = self.sr.q.val() + self.step.val();
                     for k in 0..3 {
                         self.er[k].d.next = self.er[k].q.val() - self.s_chunk[k].val();
-                        self.ern[k].d.next = self.ern[k].q.val() - self.s_chunk[k].val();
                     }
                 }
                 if self.found.val() & (self.row_empty.val() | self.walk_free.val()) {
@@ -1404,9 +1370,6 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANE
                         for k in 0..3 {
                             self.el[k].d.next = self.el[k].q.val() + self.scls[k].h.val();
                             self.er[k].d.next = self.er[k].q.val() + self.scls[k].h.val();
-                            self.ell[k].d.next = self.ell[k].q.val() + self.scls[k].h.val();
-                            self.elm[k].d.next = self.elm[k].q.val() + self.scls[k].h.val();
-                            self.ern[k].d.next = self.ern[k].q.val() + self.scls[k].h.val();
                         }
                     }
                 }
@@ -1420,8 +1383,8 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANE
                     self.wp.d.next = self.sp.q.val();
                     for k in 0..3 {
                         self.w[k].d.next = self.el[k].q.val();
-                        self.wdx[k].d.next = self.sdx[k].q.val();
-                        self.wdy[k].d.next = self.sdy[k].q.val();
+                        self.wown[k].d.next = self.scls[k].owns.val();
+                        self.wstep[k].d.next = self.s_chunk[k].val();
                     }
                 }
             }
@@ -1444,9 +1407,6 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANE
                     for k in 0..3 {
                         self.el[k].d.next = self.w0[k].q.val();
                         self.er[k].d.next = self.w0[k].q.val();
-                        self.ell[k].d.next = self.w0[k].q.val() - self.h_less[k].val();
-                        self.elm[k].d.next = self.w0[k].q.val() + self.hcls[k].g.val();
-                        self.ern[k].d.next = self.w0[k].q.val() - self.h_chunk[k].val();
                         self.sdx[k].d.next = self.dx[k].q.val();
                         self.sdy[k].d.next = self.dy[k].q.val();
                     }

@@ -6,13 +6,13 @@ use super::{
     LeadingOne, Normalise, Rejects, Rescale, AB_WIDE, BARY, C0L, C0_WIDE, C1, CL, CR, C_WIDE, EFN, IW1, MANT, MANT1,
     PAB, PC, PL, PR, PZ, QR, Q_WIDE, RL, RR, R_WIDE, SUMW, Z0L, Z0_WIDE, Z1, ZL, ZR, Z_WIDE,
 };
-use crate::cull_sort::{COLOR, INV_W, Z};
-use crate::divider::DividerRtl;
+use super::super::cull_sort::{COLOR, INV_W, Z};
+use super::super::divider::{DividerRtl, DIV_D, DIV_N};
 use crate::mul::PipelinedMul;
 use crate::parts::{defaults, DelayLine, SignExtend};
-use crate::span::{ColorOf, DepthOf};
+use super::super::span::{ColorOf, DepthOf};
 use crate::switch::Switch;
-use crate::widths::{CHANNEL, C_ACC, DEPTH, FORMATS, SCREEN, Z_ACC};
+use super::super::widths::{CHANNEL, C_ACC, DEPTH, FORMATS, SCREEN, Z_ACC};
 use rust_hdl::prelude::*;
 
 /// The depth's tag through the pipeline: in range, depth.
@@ -102,9 +102,9 @@ pub struct Lane {
     mul_rb: PipelinedMul<BARY, MANT1, PR>,
     mul_c1: [PipelinedMul<C1, BARY, PC>; 3],
     mul_c2: [PipelinedMul<C1, BARY, PC>; 3],
-    recip_n: Constant<Bits<{ crate::divider::DIV_N }>>,
-    norm_s: Normalise<SUMW, { super::max(SUMW, super::max(crate::divider::DIV_D, super::TOP + 1)) }>,
-    div_d: DFF<Bits<{ crate::divider::DIV_D }>>,
+    recip_n: Constant<Bits<DIV_N>>,
+    norm_s: Normalise<SUMW, { super::max(SUMW, super::max(DIV_D, super::TOP + 1)) }>,
+    div_d: DFF<Bits<DIV_D>>,
     rs_a: Rescale<PAB, AB_WIDE, BARY>,
     rs_b: Rescale<PAB, AB_WIDE, BARY>,
     a3: DFF<Bits<BARY>>,
