@@ -287,6 +287,8 @@ fn cli_render_rtl_draws_with_the_vector_method() {
     fails_with(&[&base[..], &["--top", "gpu_top"]].concat(), &["gpu_top holds the scanline method"]);
     fails_with(&[&base[..], &["--param", "K=3"]].concat(), &["--param K", "no triangle_setup"]);
     fails_with(&["render", cube, "-o", o, "--method", "vector"], &["--method", "needs --engine rtl"]);
+    // The vector walk's chunks are aligned to the lanes: a power of two.
+    fails_with(&["render", cube, "-o", o, "--engine", "vector", "--lanes", "3"], &["--lanes 3", "1, 2, 4"]);
 }
 
 /// Formats other than a size class's defaults: `emit --formats` writes the scanline units

@@ -24,8 +24,10 @@
 //! * without `cull_sort` ([`Timing::cull_sort`]) the host sends only the triangles that
 //!   pass, straight to setup; without `pixel_out` the fragments leave `span` at once;
 //! * `vector` (`rtl::vector`): fed by `cull_sort`; [`VectorUnit`] (setup overlapping the
-//!   walk before, two sets of constants), with the walks of `vector::vector` at the
-//!   default divider.
+//!   scout and the walker, the scout a row ahead of the walker, two sets of constants),
+//!   with the rows of `vector::vector`'s walk at the default divider; its chunks go to
+//!   `pixel_out` as they leave (one lane: a pixel a cycle; more lanes count as a `pixel_out`
+//!   as wide).
 
 use crate::render::Work;
 use crate::triangle_setup::schedule::Schedule;

@@ -39,11 +39,38 @@ pub struct Cost {
 }
 
 /// The barycentric pipeline at the default design, as `edgepaint report --unit raster_top
-/// --param METHOD=1` measured it (stop 39: `cull_sort`, `rtl::vector` at one lane with
-/// perspective-correct colours, `pixel_out`): the vector method's cost where the sweep
-/// prices it (`run`); no model covers the vector unit at other formats yet.
+/// --param METHOD=1` measured it (stop 40: `cull_sort`, `rtl::vector` at one lane with
+/// perspective-correct colours, the scout and the walker, `pixel_out`): the vector method's
+/// cost where the sweep prices it (`run`, [`vector_pipeline`]).
 pub const VECTOR_PIPELINE: Cost =
-    Cost { ge: 259_780.0, ecp5_lut4: 7_257.0, ecp5_ff: 10_473.0, ecp5_dsp: 42.0, ice40_lut4: 32_233.0 };
+    Cost { ge: 275_176.0, ecp5_lut4: 8_305.0, ecp5_ff: 10_707.0, ecp5_dsp: 42.0, ice40_lut4: 33_566.0 };
+
+/// One more lane of it: `edgepaint report --unit vector` at `LANES=2` less `LANES=1` (stop
+/// 40: a lane's coverage, its pixel pipeline with 16 multipliers and a divider, and the
+/// lanes' gathering), and a `pixel_out` for the lane's bank (README, "Units": 1,701 GE, 151
+/// LUT4, 142 FF); iCE40 LUT4s, not synthesized for the lane, in the pipeline's ratio of
+/// iCE40 LUT4s to gate equivalents.
+pub const VECTOR_LANE: Cost = Cost {
+    ge: (417_995.0 - 252_322.0) + 1_701.0,
+    ecp5_lut4: (9_923.0 - 7_935.0) + 151.0,
+    ecp5_ff: (15_218.0 - 9_593.0) + 142.0,
+    ecp5_dsp: 78.0 - 40.0,
+    ice40_lut4: ((417_995.0 - 252_322.0) + 1_701.0) * VECTOR_PIPELINE.ice40_lut4 / VECTOR_PIPELINE.ge,
+};
+
+/// The barycentric pipeline at `lanes` lanes (1, 2, 4 or 8) at the default design: measured
+/// at one ([`VECTOR_PIPELINE`]); beyond it a model, a [`VECTOR_LANE`] per lane more (the
+/// lanes beside one another, `raster_top` not yet built with more than one). `None` for
+/// other lane counts (`rtl::vector` is built with 1, 2, 4 or 8).
+pub fn vector_pipeline(lanes: u32) -> Option<Cost> {
+    matches!(lanes, 1 | 2 | 4 | 8).then(|| {
+        let mut c = VECTOR_PIPELINE;
+        for _ in 1..lanes {
+            c = c.add(VECTOR_LANE);
+        }
+        c
+    })
+}
 
 /// The metrics of a [`Cost`], by name.
 pub const METRICS: [&str; 5] = ["ge", "ecp5_lut4", "ecp5_ff", "ecp5_dsp", "ice40_lut4"];

@@ -37,9 +37,10 @@ pub const GPU_TOP_MHZ: f64 = 41.8;
 
 /// The barycentric pipeline's ECP5 Fmax (`raster_top` with `METHOD = 1`: `cull_sort`,
 /// `rtl::vector` at one lane, `pixel_out`) at the default design, MHz, placed and routed
-/// whole (LFE5U-45F, router1; README, "Units"): its critical path is the vector unit's a/b
-/// product (72.8 MHz routed alone).
-pub const VECTOR_PIPELINE_MHZ: f64 = 62.8;
+/// whole (LFE5U-45F, router2; README, "Units"): its critical path is the vector unit's scout
+/// (a probe's edge function less a chunk's step, the reject test, the probes' moves and the
+/// row found, into the probes' registers; 50.5 MHz routed alone, 62.8 with stop 39's box walk).
+pub const VECTOR_PIPELINE_MHZ: f64 = 48.2;
 
 /// The design [`MEASURED_MHZ`] and [`PIPELINE_MHZ`] were measured at: size class
 /// `fx::RTL_CLASS` at its default formats, K = 7, L = `model::divider::LATENCY` (25).

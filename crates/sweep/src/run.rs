@@ -154,18 +154,22 @@ impl Task<'_> {
     }
 
     /// `row` (the vector method at size class `n`) with the clock, frame time and cost of
-    /// its pipeline in RTL, `raster_top` with `METHOD = 1` (`rtl::vector`: one lane), at the
-    /// design it was built and measured at: the default formats of `clock::measured_design`
-    /// and one lane. Elsewhere none: no area model covers the vector unit yet.
+    /// its pipeline in RTL, `raster_top` with `METHOD = 1` (`rtl::vector`), at the formats it
+    /// was built and measured at (`clock::measured_design`'s): measured at one lane,
+    /// modelled at 2, 4 and 8 (`area::vector_pipeline`; the clock the one lane's). Elsewhere
+    /// none: no area model covers the vector unit at other formats yet.
     fn priced_vector(&self, mut row: Row, n: u32) -> Row {
         let d = clock::measured_design();
-        if self.params["lanes"] != 1 || n != d.class || self.formats != d.formats {
+        let lanes = self.params["lanes"];
+        let Some(cost) = crate::area::vector_pipeline(lanes).filter(|_| n == d.class && self.formats == d.formats)
+        else {
             return row;
-        }
+        };
+        let source = if lanes == 1 { Source::Measured } else { Source::Modelled };
         let mhz = clock::VECTOR_PIPELINE_MHZ;
-        (row.clock_mhz, row.clock_source) = (Some(mhz), Some(Source::Measured));
+        (row.clock_mhz, row.clock_source) = (Some(mhz), Some(source));
         row.frame_us = Some(row.cycles as f64 / mhz);
-        (row.cost, row.cost_source) = (Some(crate::area::VECTOR_PIPELINE), Some(Source::Measured));
+        (row.cost, row.cost_source) = (Some(cost), Some(source));
         row
     }
 }

@@ -80,8 +80,9 @@ fn sweep_skips_what_the_shading_engines_cannot_draw() {
 
 /// Cost and clock: measured at the default design (Yosys' raster_top among the calibration
 /// samples, the routed clock), modelled at a design never built; the vector method's at one
-/// lane and the default formats (its pipeline in RTL, measured), absent at other vector
-/// points (no area model covers the vector unit).
+/// lane and the default formats (its pipeline in RTL, measured), modelled at 2, 4 and 8
+/// lanes there, absent at other vector points (no area model covers the vector unit at other
+/// formats).
 #[test]
 fn sweep_rows_carry_cost_and_clock_measured_or_modelled() {
     use sweep::area::{Model, PIPELINE};
@@ -108,7 +109,22 @@ fn sweep_rows_carry_cost_and_clock_measured_or_modelled() {
     assert_eq!((one_lane.cost, one_lane.cost_source), (Some(sweep::area::VECTOR_PIPELINE), Some(Source::Measured)));
     let mhz = sweep::clock::VECTOR_PIPELINE_MHZ;
     assert_eq!((one_lane.clock_mhz, one_lane.frame_us), (Some(mhz), Some(one_lane.cycles as f64 / mhz)));
+    // More lanes at the default formats (the vector default: 4): a lane and a pixel_out bank
+    // more each, modelled; lanes the RTL is not built with, and other formats, unpriced.
+    let four = row("vector", "default");
+    assert_eq!((four.params["lanes"], four.cost_source), (4, Some(Source::Modelled)));
+    let lane = sweep::area::VECTOR_LANE;
     for r in swept.rows.iter().filter(|r| r.method == "vector" && r.point != "lanes=1") {
-        assert_eq!((r.cost, r.clock_mhz, r.frame_us), (None, None, None), "{} {}", r.method, r.point);
+        let l = r.params["lanes"];
+        if [2, 4, 8].contains(&l) && r.formats == four.formats {
+            let c = sweep::area::vector_pipeline(l).unwrap();
+            assert_eq!(
+                (r.cost, r.cost_source, r.clock_source),
+                (Some(c), Some(Source::Modelled), Some(Source::Modelled))
+            );
+            assert_eq!(c.ecp5_dsp, sweep::area::VECTOR_PIPELINE.ecp5_dsp + (l - 1) as f64 * lane.ecp5_dsp);
+        } else {
+            assert_eq!((r.cost, r.clock_mhz, r.frame_us), (None, None, None), "{} {}", r.method, r.point);
+        }
     }
 }
