@@ -114,13 +114,6 @@ pub struct VectorOut {
     pub z_clipped: u32,
 }
 
-impl VectorOut {
-    /// The chunks walked, a cycle each.
-    pub fn chunks(&self) -> u32 {
-        self.rows.iter().map(|r| r.chunks).sum()
-    }
-}
-
 /// Whether the walk takes `lanes` lanes: a power of two, at most 64 (chunks are aligned to
 /// multiples of `lanes`; `rtl::vector` is built with 1, 2, 4 or 8).
 pub fn lanes_supported(lanes: u32) -> bool {

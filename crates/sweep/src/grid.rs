@@ -277,6 +277,13 @@ impl Point {
                 _ => return Err(format!("point {}: unknown knob \"{knob}\"", self.label())),
             }
         }
+        if self.method == Method::Vector && !model::vector::lanes_supported(params["lanes"]) {
+            let l = params["lanes"];
+            return Err(format!(
+                "point {}: lanes = {l}: the vector walk's chunks are aligned to the lanes, so 1, 2, 4, ... up to 64",
+                self.label()
+            ));
+        }
         if wide {
             // The others stay wide; only what the modular condition and the fraction
             // couplings need moves.
@@ -388,5 +395,8 @@ mod tests {
         assert!(e.contains("unknown knob \"w.frac\""), "{e}");
         assert!(Grid::parse(r#"{"method": ["scanline"]}"#).unwrap_err().contains("unknown field"));
         assert!(Grid::parse(r#"{"methods": []}"#).unwrap_err().contains("\"methods\" is empty"));
+        let g = Grid::parse(r#"{"methods": ["vector"], "sensitivity": {"lanes": [3]}}"#).unwrap();
+        let e = g.points()[1].resolve(320, 240).unwrap_err();
+        assert!(e.contains("vector lanes=3") && e.contains("lanes = 3"), "{e}");
     }
 }
