@@ -8692,7 +8692,7 @@ module vector$lanes$0(clock,run,load,g_0,g_1,g_2,valid,x,x0,x1,w_0,w_1,w_2,owns_
         end
         o_valid = ov$q;
         o_z = oz$q;
-        o_rgb = ((orgb$0$q) & 24'hffffff) | (((orgb$1$q) & 24'hffffff) << ch1) | (((orgb$2$q) & 24'hffffff) << ch2);
+        o_rgb = (((orgb$0$q) & 24'hffffff) << ch2) | (((orgb$1$q) & 24'hffffff) << ch1) | ((orgb$2$q) & 24'hffffff);
     end
     
 endmodule // vector$lanes$0

@@ -261,32 +261,46 @@ fn cli_render_rtl_draws_through_gpu_top() {
 }
 
 /// `render --engine rtl --method vector` draws through `raster_top` with `METHOD = 1` (004's
-/// barycentric unit): its PNG is the vector model's at one lane, perspective-correct or
-/// with `--linear` screen-linear, and its frame time is at its routed ECP5 clock
-/// (`sweep::clock::VECTOR_PIPELINE_MHZ`); what does not apply to it is a clear error.
+/// barycentric unit) with `--lanes` lanes (default 4, as the vector model's): its PNG is the
+/// vector model's, perspective-correct or with `--linear` screen-linear, and its frame time
+/// at the routed ECP5 clock of one lane (`sweep::clock::VECTOR_PIPELINE_MHZ`), said to be
+/// that one lane's at others; what does not apply to it is a clear error.
 #[test]
 fn cli_render_rtl_draws_with_the_vector_method() {
     let d = scratch("rtl-vector");
     let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
     let render = |name: &str, more: &[&str]| render_cube(&d.join(name), more);
-    for linear in [false, true] {
-        let more: &[&str] = if linear { &["--linear"] } else { &[] };
-        let (rtl, summary) = render("rtl.png", &[&["--engine", "rtl", "--method", "vector"][..], more].concat());
-        assert!(summary.contains("METHOD = 1: cull_sort, vector, pixel_out"), "{summary}");
-        assert!(summary.contains("image, depth and cycles equal to the vector (1 lane) model's"), "{summary}");
+    for (linear, lanes) in [(false, None), (true, Some("1"))] {
+        let mut more: Vec<&str> = if linear { vec!["--linear"] } else { vec![] };
+        more.extend(lanes.map(|l| ["--lanes", l]).into_iter().flatten());
+        let n = lanes.unwrap_or("4");
+        let (rtl, summary) = render("rtl.png", &[&["--engine", "rtl", "--method", "vector"][..], &more].concat());
+        assert!(summary.contains(&format!("METHOD = 1: cull_sort, vector with {n} lanes, pixel_out")), "{summary}");
+        let model_name = if n == "1" { "vector (1 lane)".to_owned() } else { format!("vector ({n} lanes)") };
+        assert!(summary.contains(&format!("image, depth and cycles equal to the {model_name} model's")), "{summary}");
         let (cycles, ms, mhz, source) = frame_time(&summary);
-        assert_eq!((mhz, source.as_str()), (sweep::clock::VECTOR_PIPELINE_MHZ, "routed, ECP5"), "{summary}");
+        let want = if n == "1" {
+            "routed, ECP5"
+        } else {
+            "the default design's at one lane, routed, ECP5; not at these lanes, formats or parts"
+        };
+        assert_eq!((mhz, source.as_str()), (sweep::clock::VECTOR_PIPELINE_MHZ, want), "{summary}");
         assert!((ms - cycles as f64 / (mhz * 1000.0)).abs() <= 0.0005 + 1e-12, "{summary}");
-        let (model, _) = render("model.png", &[&["--engine", "vector", "--lanes", "1"][..], more].concat());
-        assert!(rtl == model, "raster_top's vector PNG is the vector model's (linear: {linear})");
+        let (model, _) = render(
+            "model.png",
+            &[&["--engine", "vector", "--lanes", n][..], if linear { &["--linear"][..] } else { &[] }].concat(),
+        );
+        assert!(rtl == model, "raster_top's vector PNG is the vector model's (linear: {linear}, {n} lanes)");
     }
     let png = d.join("x.png");
     let o = png.to_str().unwrap();
     let base = ["render", cube, "--size", "64x48", "-o", o, "--engine", "rtl", "--method", "vector"];
-    fails_with(&[&base[..], &["--lanes", "4"]].concat(), &["one pixel a cycle", "--lanes 1"]);
+    fails_with(&[&base[..], &["--lanes", "16"]].concat(), &["--lanes 16", "1, 2, 4 or 8"]);
     fails_with(&[&base[..], &["--top", "gpu_top"]].concat(), &["gpu_top holds the scanline method"]);
     fails_with(&[&base[..], &["--param", "K=3"]].concat(), &["--param K", "no triangle_setup"]);
     fails_with(&["render", cube, "-o", o, "--method", "vector"], &["--method", "needs --engine rtl"]);
+    let scanline = ["render", cube, "--size", "64x48", "-o", o, "--engine", "rtl", "--top", "raster_top"];
+    fails_with(&[&scanline[..], &["--lanes", "4"]].concat(), &["--lanes", "the vector unit's (--method vector)"]);
     // The vector walk's chunks are aligned to the lanes: a power of two.
     fails_with(&["render", cube, "-o", o, "--engine", "vector", "--lanes", "3"], &["--lanes 3", "1, 2, 4"]);
 }

@@ -67,6 +67,7 @@ fn frame_speed(dut: &mut dyn Cycle, build: Build, name: &str, size: (u32, u32), 
         cull,
         background: [0; 3],
         triangles: &prep.triangles,
+        lanes: 1,
     };
     let (start, mut total, mut frame_cycles) = (Instant::now(), 0, 0);
     while total == 0 || start.elapsed() < budget {

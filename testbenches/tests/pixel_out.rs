@@ -1,18 +1,19 @@
 //! The pixel output unit: rust-hdl and Verilator in lockstep, every cycle, with the depth
 //! and colour buffers in Rust (`testbenches::memory`), against
 //! `model::pixel_out::Framebuffer`: the same writes in the same order, each `LATENCY`
-//! cycles of a ready memory after its pixel came in, and the same buffers at the end.
+//! cycles of a ready memory after its pixel came in, and the same buffers at the end; and
+//! likewise for chunks of four pixels (`LANES = 4`).
 
 use model::cull_sort::z_max;
 use model::pixel_out::{Framebuffer, II, LATENCY};
 use model::span::Pixel;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use rtl::pixel_out::PixelOut;
+use rtl::pixel_out::{ChunkOut, PixelOut};
 use rtl::switch::Parts;
-use rtl::widths::{CLASS, DEPTH};
+use rtl::widths::{ADDR, CLASS, DEPTH, RGB, SCREEN};
 use std::collections::VecDeque;
-use testbenches::memory::{Memory, ReadDuringWrite, Request, Write};
+use testbenches::memory::{pack, Memory, ReadDuringWrite, Request, Write};
 use testbenches::streams::{as_pins, pixel};
 use testbenches::{count, seed, verilated, verilated_with, Dual, Value};
 
@@ -54,7 +55,7 @@ fn run(
     assert_eq!(II, 1);
     let zmax = z_max(&rtl::widths::FORMATS) as u32;
     let mut model = Framebuffer::new(w, h, zmax, [7, 8, 9]);
-    let mut mem = Memory::new(CLASS, (w, h), zmax, [7, 8, 9], rdw);
+    let mut mem = Memory::new(CLASS, 1, (w, h), zmax, [7, 8, 9], rdw);
     let mut rng = ChaCha8Rng::seed_from_u64(seed());
     // Pixels taken and not yet due: the ready cycle their write is due in, and the
     // model's write (None when the depth test fails).
@@ -66,7 +67,7 @@ fn run(
         let mut pins = vec![
             ("inp$valid", Value::new(1, valid as u128)),
             ("mem$ready", Value::new(1, mem_ready as u128)),
-            ("mem$rd_z", Value::new(DEPTH, mem.rd_z() as u128)),
+            ("mem$rd_z", mem.rd_z_value(DEPTH)),
         ];
         let p = pixel("inp", &pixels[next.min(pixels.len() - 1)]);
         pins.extend(as_pins(&p));
@@ -76,10 +77,11 @@ fn run(
             return Err(format!("cycle {cycle}: inp$ready differs from mem$ready"));
         }
         let req = Request::of(&out);
-        if req.rd_en != (valid && depth_test) {
+        if req.rd_en != (valid && depth_test) as u8 {
             return Err(format!("cycle {cycle}: rd_en {} for inp$valid {valid}", req.rd_en));
         }
-        let write = mem.edge(mem_ready, &req);
+        let writes = mem.edge(mem_ready, &req);
+        let write = writes.as_slice().first().copied();
         if !mem_ready {
             if write.is_some() {
                 return Err(format!("cycle {cycle}: a write without mem_ready"));
@@ -166,13 +168,10 @@ fn pixel_out_latency_is_2() {
     assert_eq!(LATENCY, 2);
     let vl = verilated("pixel_out");
     let mut d = dual(&vl);
-    let mut mem = Memory::new(CLASS, (8, 8), 65535, [0; 3], ReadDuringWrite::Old);
+    let mut mem = Memory::new(CLASS, 1, (8, 8), 65535, [0; 3], ReadDuringWrite::Old);
     let p = Pixel { x: 3, y: 5, z: 100, rgb: [1, 2, 3] };
-    let mut pins = vec![
-        ("inp$valid", Value::new(1, 1)),
-        ("mem$ready", Value::new(1, 1)),
-        ("mem$rd_z", Value::new(DEPTH, mem.rd_z() as u128)),
-    ];
+    let mut pins =
+        vec![("inp$valid", Value::new(1, 1)), ("mem$ready", Value::new(1, 1)), ("mem$rd_z", mem.rd_z_value(DEPTH))];
     let p = pixel("inp", &p);
     pins.extend(as_pins(&p));
     let mut seen = Vec::new();
@@ -180,7 +179,7 @@ fn pixel_out_latency_is_2() {
         if t == 1 {
             pins[0].1 = Value::new(1, 0);
         }
-        pins[2].1 = Value::new(DEPTH, mem.rd_z() as u128);
+        pins[2].1 = mem.rd_z_value(DEPTH);
         let out = d.cycle(&pins).unwrap_or_else(|m| panic!("{m}"));
         let req = Request::of(&out);
         seen.push((req.rd_en, req.wr_en));
@@ -189,7 +188,7 @@ fn pixel_out_latency_is_2() {
         }
         mem.edge(true, &req);
     }
-    assert_eq!(seen, [(true, false), (false, false), (false, true), (false, false)]);
+    assert_eq!(seen, [(1, 0), (0, 0), (0, 1), (0, 0)]);
     assert_eq!((mem.depth[5 * 8 + 3], mem.rgb[5 * 8 + 3]), (100, [1, 2, 3]));
 }
 
@@ -223,4 +222,132 @@ fn pixel_out_without_depth_test_vs_model() {
         run(&mut dual(), false, &[p(100), p(200)], (w, h), ReadDuringWrite::Old, |_| true).is_err(),
         "the farther pixel overwrites"
     );
+}
+
+/// The unit for chunks of four pixels (`LANES = 4`, `rtl::pixel_out::ChunkOut`).
+type Chunk4 = ChunkOut<4, { ADDR - 2 }, { 4 * DEPTH }, { 4 * RGB }>;
+
+/// A chunk: its row, its place in the row (x / 4), and per lane a pixel or none.
+type Chunk = (u32, u32, [Option<(u32, [u8; 3])>; 4]);
+
+/// Random chunks of four on a `w` x `h` screen (lanes past `w` empty), skewed toward
+/// read-after-write hazards: a chunk often on the address of one 1, 2 or 3 before it, its
+/// lanes a new random set, a lane's depth often that of the same lane before.
+fn chunks(rng: &mut ChaCha8Rng, w: u32, h: u32, n: usize, zmax: u32) -> Vec<Chunk> {
+    let mut out: Vec<Chunk> = Vec::with_capacity(n);
+    for i in 0..n {
+        let back = rng.gen_range(1..=4);
+        let (y, c) = if i >= back && rng.gen_bool(0.6) {
+            (out[i - back].0, out[i - back].1)
+        } else {
+            (rng.gen_range(0..h), rng.gen_range(0..w.div_ceil(4)))
+        };
+        let lanes = std::array::from_fn(|k| {
+            let on = 4 * c + (k as u32) < w && rng.gen_bool(0.7);
+            let z = match (i >= back).then(|| out[i - back].2[k]).flatten() {
+                Some((z, _)) if rng.gen_bool(0.4) => z,
+                _ => [0, zmax, zmax - 1, rng.gen_range(0..=zmax)][rng.gen_range(0..4)],
+            };
+            on.then(|| (z, rng.gen()))
+        });
+        out.push((y, c, lanes));
+    }
+    out
+}
+
+/// Sends `chunks` (`in_valid` low 20% of the time) with the memory ready when `ready` says;
+/// checks each read's lanes, each chunk's writes `LATENCY` ready cycles after it came in
+/// against the model's writes of its pixels in lane order, and the buffers at the end.
+fn run_chunks(
+    dual: &mut Dual<Chunk4>,
+    chunks: &[Chunk],
+    (w, h): (u32, u32),
+    rdw: ReadDuringWrite,
+    mut ready: impl FnMut(&mut ChaCha8Rng) -> bool,
+) -> Result<Memory, String> {
+    let zmax = z_max(&rtl::widths::FORMATS) as u32;
+    let mut model = Framebuffer::new(w, h, zmax, [7, 8, 9]);
+    let mut mem = Memory::new(CLASS, 4, (w, h), zmax, [7, 8, 9], rdw);
+    let mut rng = ChaCha8Rng::seed_from_u64(seed());
+    let mut due: VecDeque<(u64, Vec<Write>)> = VecDeque::new();
+    let (mut next, mut ready_cycle) = (0, 0u64);
+    while next < chunks.len() || !due.is_empty() {
+        let mem_ready = ready(&mut rng);
+        let valid = next < chunks.len() && rng.gen_bool(0.8);
+        let (y, c, lanes) = chunks[next.min(chunks.len() - 1)];
+        let mask = (0..4).filter(|&k| lanes[k].is_some()).map(|k| 1u8 << k).sum::<u8>();
+        let zs = lanes.map(|l| l.map_or(0, |(z, _)| z));
+        let rgbs = lanes.map(|l| l.map_or(0, |(_, [r, g, b])| u32::from_be_bytes([0, r, g, b])));
+        let pins = [
+            ("in_valid", Value::new(1, valid as u128)),
+            ("in_mask", Value::new(4, mask as u128)),
+            ("in_addr", Value::new(ADDR - 2, ((y << (SCREEN - 2)) | c) as u128)),
+            ("in_z", pack(&zs, DEPTH, 4)),
+            ("in_rgb", pack(&rgbs, RGB, 4)),
+            ("mem$ready", Value::new(1, mem_ready as u128)),
+            ("mem$rd_z", mem.rd_z_value(DEPTH)),
+        ];
+        let out = dual.cycle(&pins).map_err(|m| m.to_string())?;
+        let cycle = dual.cycles() - 1;
+        if (out.get("in_ready") == &Value::new(1, 1)) != mem_ready {
+            return Err(format!("cycle {cycle}: in_ready differs from mem$ready"));
+        }
+        let req = Request::of(&out);
+        if req.rd_en != if valid { mask } else { 0 } {
+            return Err(format!("cycle {cycle}: rd_en {:#b} for a chunk of lanes {mask:#b}", req.rd_en));
+        }
+        let writes = mem.edge(mem_ready, &req);
+        if !mem_ready {
+            if !writes.as_slice().is_empty() {
+                return Err(format!("cycle {cycle}: a write without mem_ready"));
+            }
+            continue;
+        }
+        let want = match due.front() {
+            Some((at, _)) if *at == ready_cycle => due.pop_front().map(|(_, w)| w).unwrap_or_default(),
+            _ => Vec::new(),
+        };
+        if writes.as_slice() != want.as_slice() {
+            return Err(format!("cycle {cycle} (ready cycle {ready_cycle}): wrote {writes:?}, model {want:?}"));
+        }
+        if valid {
+            let mut w = Vec::new();
+            for (k, lane) in lanes.iter().enumerate() {
+                if let Some((z, rgb)) = *lane {
+                    let p = Pixel { x: 4 * c + k as u32, y, z, rgb };
+                    if model.pixel_out(&p, 0) {
+                        w.push(Write { x: p.x, y, z, rgb });
+                    }
+                }
+            }
+            due.push_back((ready_cycle + LATENCY as u64, w));
+            next += 1;
+        }
+        ready_cycle += 1;
+    }
+    if (mem.depth.clone(), mem.rgb.clone()) != (model.depth, model.rgb) {
+        return Err("the buffers differ from the model's".into());
+    }
+    Ok(mem)
+}
+
+/// Chunks of four pixels (`LANES = 4`: the memory port of `raster_top` with a 4-lane vector
+/// unit) in rust-hdl and Verilator in lockstep, with many hazards between chunks on one
+/// address and lanes written or not, a screen whose width is not a multiple of four, the
+/// memory ready or stalling, either read-during-write: every lane's write as the model's.
+#[test]
+fn pixel_out_chunks_vs_model() {
+    let seed = seed();
+    let zmax = z_max(&rtl::widths::FORMATS) as u32;
+    let vl = verilated_with("pixel_out", [("LANES", 4)]);
+    let dual = || Dual::new(Chunk4::new(&Parts::ALL), vl.model().unwrap_or_else(|e| panic!("{e}")));
+    let mut rng = ChaCha8Rng::seed_from_u64(seed.wrapping_add(21));
+    let ch = chunks(&mut rng, 13, 5, count() * 4, zmax);
+    for rdw in [ReadDuringWrite::Old, ReadDuringWrite::New] {
+        let mem = run_chunks(&mut dual(), &ch, (13, 5), rdw, |_| true).unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+        let pixels = ch.iter().flat_map(|c| c.2).flatten().count() as u64;
+        assert!(mem.writes > 0 && mem.writes < pixels, "some pixels pass, some fail");
+        run_chunks(&mut dual(), &ch, (13, 5), rdw, |r| r.gen_bool(0.7))
+            .unwrap_or_else(|e| panic!("seed {seed}, stalling: {e}"));
+    }
 }

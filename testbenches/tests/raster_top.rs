@@ -58,6 +58,10 @@ fn check_by(
         cull,
         background: [20, 24, 32],
         triangles: &prep.triangles,
+        lanes: match method {
+            Method::Vector { lanes, .. } => lanes,
+            Method::Scanline => 1,
+        },
     };
     let out = draw(dut, &f, mem, 50_000_000).unwrap_or_else(|e| panic!("{what}: {e}"));
     assert_eq!(out.memory.differs_from(&prep.render.fb), None, "{what}");
@@ -106,30 +110,53 @@ fn raster_top_scenes_320x240_vs_model() {
 }
 
 /// `raster_top` with the barycentric method (`METHOD = 1`: `cull_sort`, `rtl::vector`,
-/// `pixel_out`), perspective-correct colours, under Verilator.
-fn vector_model() -> frame::RasterTopVl {
-    frame::verilator_with(&Build::default(), &[("METHOD", 1)]).unwrap_or_else(|e| panic!("{e}"))
+/// `pixel_out`) with `lanes` lanes, perspective-correct colours, under Verilator.
+fn vector_model(lanes: u32) -> frame::RasterTopVl {
+    frame::verilator_with(&Build::default(), &[("METHOD", 1), ("LANES", lanes as u64)])
+        .unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// Every shipped scene at 64 x 48 and two at 320 x 240 drawn by the barycentric
-/// `raster_top` (004, one pixel a cycle): image, depth and cycle count the model's
+/// `raster_top` (004) with `lanes` lanes: image, depth and cycle count the model's
 /// (`Method::Vector`, `model::cycles::vector_frame`); the memory stalling too.
-#[test]
-fn raster_top_vector_scenes_vs_model() {
-    let method = Method::Vector { lanes: 1, perspective: true };
-    let mut dut = vector_model();
+fn vector_scenes(lanes: u32) {
+    let method = Method::Vector { lanes, perspective: true };
+    let mut dut = vector_model(lanes);
+    assert_eq!(dut.lanes(), lanes, "the memory port's lanes");
     let scenes = ["cube", "sphere", "cone", "torus", "pawn", "house", "all", "clip"].map(|n| (n, (64, 48)));
     for (name, size) in scenes.into_iter().chain([("torus", (320, 240)), ("clip", (320, 240))]) {
         let (list, cull) = scene(name, Some(size));
-        let (prep, out) = check_by(Build::default(), method, name, &mut dut, &list, cull, ready_memory(&mut |_| true));
+        let what = format!("{name} at {size:?}, {lanes} lanes");
+        let (prep, out) = check_by(Build::default(), method, &what, &mut dut, &list, cull, ready_memory(&mut |_| true));
         let r = Report::of(&out, &prep);
-        assert_eq!(r.cycles, r.predicted, "{name} at {size:?}: cycles, RTL against model::cycles::vector_frame");
-        assert!(r.written > 0, "{name}: {r:?}");
+        assert_eq!(r.cycles, r.predicted, "{what}: cycles, RTL against model::cycles::vector_frame");
+        assert!(r.written > 0, "{what}: {r:?}");
     }
     let (list, cull) = scene("all", Some((64, 48)));
     let mut rng = ChaCha8Rng::seed_from_u64(seed());
     let mut stalls = |_| rng.gen_bool(0.7);
     check_by(Build::default(), method, "all, stalling", &mut dut, &list, cull, ready_memory(&mut stalls));
+}
+
+/// The barycentric `raster_top` at one lane (`--engine rtl --method vector --lanes 1`).
+#[test]
+fn raster_top_vector_scenes_vs_model() {
+    vector_scenes(1);
+}
+
+/// At four lanes (the default of `--lanes`): a memory word per chunk of four pixels.
+#[test]
+fn raster_top_vector_4_lanes_scenes_vs_model() {
+    vector_scenes(4);
+}
+
+/// At two and eight lanes (`scripts/soak.sh`: two more Verilated models of the whole
+/// rasterizer).
+#[test]
+#[ignore = "soak: scripts/soak.sh"]
+fn raster_top_vector_2_and_8_lanes_scenes_vs_model() {
+    vector_scenes(2);
+    vector_scenes(8);
 }
 
 fn list(width: u32, height: u32, triangles: Vec<Triangle>) -> Trilist {
@@ -224,6 +251,7 @@ fn raster_top_without_optional_parts_vs_model() {
             cull: Cull::None,
             background: [20, 24, 32],
             triangles: &prep.triangles,
+            lanes: 1,
         };
         let out = draw(&mut dut, &f, ready_memory(&mut |_| true), 10_000_000).unwrap_or_else(|e| panic!("{what}: {e}"));
         assert_eq!(out.memory.differs_from(&prep.render.fb), None, "{what}");
@@ -234,8 +262,15 @@ fn raster_top_without_optional_parts_vs_model() {
     let beyond_far = [(5.3, 5.2, 0.4), (75.7, 15.1, 1.4), (20.1, 55.6, 0.6)];
     let clipping = list(80, 60, vec![beyond_far.map(|(x, y, z)| Vertex::new(x, y, z, [200.0, 90.0, 30.0]))]);
     let prep = raster_top(&Build::default(), &clipping, cull, [20, 24, 32]).unwrap_or_else(|e| panic!("{e}"));
-    let f =
-        Frame { build: prep.build, width: 80, height: 60, cull, background: [20, 24, 32], triangles: &prep.triangles };
+    let f = Frame {
+        build: prep.build,
+        width: 80,
+        height: 60,
+        cull,
+        background: [20, 24, 32],
+        triangles: &prep.triangles,
+        lanes: 1,
+    };
     let out = draw(&mut dut, &f, ready_memory(&mut |_| true), 1_000_000);
     assert!(
         out.map_or(true, |o| o.memory.depth != prep.render.fb.depth),
@@ -488,6 +523,7 @@ fn iverilog_replay(dir: &str, frames: &[(&str, (u32, u32), bool)]) {
             cull,
             background: [0; 3],
             triangles: &prep.triangles,
+            lanes: 1,
         };
         let vectors = dir.join(format!("{name}.vec"));
         frame::write_vectors(&vectors, &f, &prep.writes).expect("the vector file");
@@ -533,7 +569,7 @@ fn units_frame<U: Block + Pins>(
     let build = prep.build;
     let class = build.class;
     let zmax = model::cull_sort::z_max(&build.formats) as u32;
-    let mut memory = Memory::new(class, (list.width, list.height), zmax, [20, 24, 32], ReadDuringWrite::Old);
+    let mut memory = Memory::new(class, 1, (list.width, list.height), zmax, [20, 24, 32], ReadDuringWrite::Old);
     let (mut taken, mut fragments, mut stalled) = (0, Vec::new(), false);
     let dim = |v: u32| Value::new(class as usize + 1, v as u128);
     for cycle in 0..5_000_000u64 {
@@ -552,7 +588,7 @@ fn units_frame<U: Block + Pins>(
         }
         if units.pixel_out {
             pins.push(("mem$ready".into(), Value::new(1, ready as u128)));
-            pins.push(("mem$rd_z".into(), Value::new(rtl::widths::DEPTH, memory.rd_z() as u128)));
+            pins.push(("mem$rd_z".into(), memory.rd_z_value(rtl::widths::DEPTH)));
         } else {
             pins.push(("out$ready".into(), Value::new(1, ready as u128)));
         }
@@ -755,6 +791,7 @@ fn raster_top_100k_random_triangles_vs_model() {
             cull,
             background: [20, 24, 32],
             triangles: &tris,
+            lanes: 1,
         };
         let out = draw(&mut dut, &f, ready_memory(&mut |_| true), 100_000_000)
             .unwrap_or_else(|e| panic!("frame {frame_no}: {e}"));

@@ -61,7 +61,7 @@ fn chunk_pixels(out: &testbenches::Outputs, lanes: usize) -> Vec<Pixel> {
             x: x + i as u32,
             y,
             z: field(z, i * DEPTH, DEPTH),
-            rgb: std::array::from_fn(|k| field(rgb, (3 * i + k) * CHANNEL, CHANNEL) as u8),
+            rgb: std::array::from_fn(|k| field(rgb, (3 * i + 2 - k) * CHANNEL, CHANNEL) as u8),
         })
         .collect()
 }

@@ -11,7 +11,8 @@
 //!
 //! **`raster_top`**: triangles on the rasterizer's ports, with the depth and colour
 //! buffers in Rust (`sim::frame`); its method the scanline pipeline's (001, 003) or, with
-//! `--method vector`, 004's per-pixel barycentric unit (`METHOD = 1`). The `raster_top` of the screen's size class draws it
+//! `--method vector`, 004's per-pixel barycentric unit (`METHOD = 1`) with `--lanes` lanes (1, 2, 4
+//! or 8; default 4, as the vector model's), its memory a word per chunk of lanes. The `raster_top` of the screen's size class draws it
 //! (`fx::Build::for_screen`: class 10 up to 1024 x 1024, 11 and 12 above) at the
 //! formats asked for (`--formats`; formats edgepaint is not built at are compiled first,
 //! `super::rebuild`). The Verilated model is built the first time, cached under
@@ -52,7 +53,7 @@ pub enum Top {
 pub enum RtlMethod {
     /// Setup, edge walk and span (001, 003).
     Scanline,
-    /// The per-pixel barycentric unit (004), one pixel a cycle.
+    /// The per-pixel barycentric unit (004), `--lanes` pixels a cycle.
     Vector,
 }
 
@@ -78,9 +79,13 @@ pub fn render(
     ensure!(!analysis, "--analysis checks the models' arithmetic; it does not apply to --engine rtl");
     let (params, top, vector) = (how.params, how.top, how.method == RtlMethod::Vector);
     ensure!(
-        !vector || fixed.lanes.is_none_or(|l| l == 1),
-        "--engine rtl --method vector: raster_top's vector unit evaluates one pixel a cycle (--lanes 1), not {}",
-        fixed.lanes.unwrap_or(1)
+        vector || fixed.lanes.is_none(),
+        "--engine rtl --lanes: the lanes are the vector unit's (--method vector); the scanline method draws a pixel a cycle"
+    );
+    let lanes = if vector { fixed.lanes.unwrap_or(super::engine::DEFAULT_LANES) } else { 1 };
+    ensure!(
+        model::raster_top::LANES.contains(&lanes),
+        "--engine rtl --method vector --lanes {lanes}: raster_top's vector unit is built with 1, 2, 4 or 8 lanes"
     );
     let list = &loaded.trilist;
     let default_build = loaded.build.unwrap_or(Build::for_screen(list.width, list.height)) == Build::default()
@@ -122,7 +127,13 @@ pub fn render(
         "--method vector: --param L sets the divider's stages, and the vector model's cycles are those of the default {}",
         model::divider::LATENCY
     );
-    let mut unit_params = vec![("K", k), ("L", l), ("METHOD", vector as u64), ("PERSPECTIVE", how.perspective as u64)];
+    let mut unit_params = vec![
+        ("K", k),
+        ("L", l),
+        ("METHOD", vector as u64),
+        ("PERSPECTIVE", how.perspective as u64),
+        ("LANES", lanes as u64),
+    ];
     unit_params.extend(parts.iter().copied());
     let formats = fixed.formats_of(loaded)?;
     let build = Build { class, formats };
@@ -142,7 +153,7 @@ pub fn render(
     let background = loaded.background.map(|c| c.round().clamp(0.0, 255.0) as u8);
     let method = match how.method {
         RtlMethod::Scanline => Method::Scanline,
-        RtlMethod::Vector => Method::Vector { lanes: 1, perspective: how.perspective },
+        RtlMethod::Vector => Method::Vector { lanes, perspective: how.perspective },
     };
     let prep = model::raster_top::raster_top_by(&build, list, cull, background, method)
         .map_err(|e| anyhow!("--engine rtl: {e}"))?;
@@ -150,7 +161,8 @@ pub fn render(
         eprintln!("warning: triangle {i} not drawn: {e}");
     }
     ensure!(!prep.triangles.is_empty(), "--engine rtl: no triangle to draw");
-    let f = Frame { build, width: list.width, height: list.height, cull, background, triangles: &prep.triangles };
+    let f =
+        Frame { build, width: list.width, height: list.height, cull, background, triangles: &prep.triangles, lanes };
     let memory = MemoryModel { read_during_write: ReadDuringWrite::Old, ready: &mut |_| true };
     let max_cycles = 2 * prep.cycles() + 100_000;
     let mut dut = frame::verilator_with(&build, &unit_params).map_err(|e| anyhow!("--engine rtl: {e}"))?;
@@ -174,17 +186,20 @@ pub fn render(
     let (mhz, source) = sweep::clock::raster_top_mhz(&design);
     let every_part = parts.iter().all(|&(_, v)| v == 1);
     let (mhz, clock) = match (vector, source, every_part) {
-        (true, _, true) if build == Build::default() => (sweep::clock::VECTOR_PIPELINE_MHZ, "routed, ECP5"),
-        (true, _, _) => {
-            (sweep::clock::VECTOR_PIPELINE_MHZ, "the default design's, routed, ECP5; not at these formats or parts")
+        (true, _, true) if build == Build::default() && lanes == 1 => {
+            (sweep::clock::VECTOR_PIPELINE_MHZ, "routed, ECP5")
         }
+        (true, _, _) => (
+            sweep::clock::VECTOR_PIPELINE_MHZ,
+            "the default design's at one lane, routed, ECP5; not at these lanes, formats or parts",
+        ),
         (false, Source::Measured, true) => (mhz, "routed, ECP5"),
         (false, _, true) => (mhz, "modelled, ECP5"),
         (false, _, false) => (mhz, "modelled, ECP5, not counting the parts left out"),
     };
     let units = if vector {
         format!(
-            "METHOD = 1: cull_sort, vector, pixel_out; L = {l}, colours {}",
+            "METHOD = 1: cull_sort, vector with {lanes} lanes, pixel_out; L = {l}, colours {}",
             if how.perspective { "perspective-correct" } else { "linear" }
         )
     } else {

@@ -20,11 +20,14 @@ use scene::Trilist;
 /// build may have a class from `fx::SMALLEST_CLASS`, 8, up).
 pub const MAX_CLASS: u32 = 12;
 
+/// The lanes `raster_top`'s vector unit is built with (`rtl::vector`'s `LANES`).
+pub const LANES: [u32; 4] = [1, 2, 4, 8];
+
 /// One frame through `raster_top`, as the model draws it.
 pub struct RasterTopOut {
     /// The size class of the `raster_top` drawing it and the formats it is built at.
     pub build: Build,
-    /// Its method: `Scanline`, or `Vector` with one lane.
+    /// Its method: `Scanline`, or `Vector` with 1, 2, 4 or 8 lanes ([`LANES`]).
     pub method: Method,
     /// The triangles sent, as input words (`model::input::to_fixed`), in input order: the
     /// front end's pieces (`model::guard_band`).
@@ -69,7 +72,7 @@ pub fn raster_top(build: &Build, list: &Trilist, cull: Cull, background: [u8; 3]
 }
 
 /// `list` drawn with `cull` on `background` by the `raster_top` of `build` and `method`
-/// (the vector method at one lane, as `rtl::vector` draws): a size class
+/// (the vector method at the lanes `rtl::vector` is built with, [`LANES`]): a size class
 /// (which may be larger than the screen needs; `Build::for_screen` gives the smallest) and
 /// the formats it is built at (the class's defaults, or those of `rtl::custom`); an error
 /// for a class not built, a screen larger than 2^class, or formats that do not work on a
@@ -82,8 +85,8 @@ pub fn raster_top_by(
     method: Method,
 ) -> Result<RasterTopOut, String> {
     if let Method::Vector { lanes, .. } = method {
-        if lanes != 1 {
-            return Err(format!("raster_top's vector unit draws one pixel a cycle, not {lanes} lanes"));
+        if !LANES.contains(&lanes) {
+            return Err(format!("raster_top's vector unit has 1, 2, 4 or 8 lanes, not {lanes}"));
         }
     }
     let Build { class, formats: f } = *build;

@@ -231,7 +231,7 @@ const LANES: Param = Param {
     name: "LANES",
     default: 1,
     doc:
-        "pixels per cycle of the vector unit: 1, 2, 4 or 8 lanes, a chunk of a row each cycle (raster_top draws with 1)",
+        "pixels per cycle of the vector unit (raster_top: with METHOD = 1): 1, 2, 4 or 8 lanes, a chunk of a row each cycle",
 };
 
 /// The size-class parameter every scanline unit has.
@@ -312,8 +312,16 @@ pub const UNITS: &[Unit] = &[
     },
     Unit {
         name: "pixel_out",
-        doc: "depth test LESS and depth/colour writes through a synchronous memory port, one pixel per cycle",
-        params: &[N, DEPTH_TEST],
+        doc: "depth test LESS and depth/colour writes through a synchronous memory port, one pixel (or chunk of LANES pixels) per cycle",
+        params: &[
+            N,
+            DEPTH_TEST,
+            Param {
+                name: "LANES",
+                default: 1,
+                doc: "1: a pixel a cycle on the pixel link (inp), a memory word per pixel; 2, 4 or 8: a chunk of a row a cycle (in_*), a memory word per chunk",
+            },
+        ],
         build: by_build!(pixel_out::emit_pixel_out),
     },
     Unit {
@@ -382,6 +390,7 @@ pub const UNITS: &[Unit] = &[
                 doc: "0: the scanline method (001, 003); 1: the barycentric method (004): cull_sort, vector, pixel_out (K unused)",
             },
             PERSPECTIVE,
+            LANES,
         ],
         build: by_build!(raster_top::emit_raster_top),
     },
@@ -424,7 +433,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("triangle_setup", &[("N", 10), ("K", 7), ("L", model::divider::LATENCY as u64)]),
     ("edge_walk", &[("N", 10), ("CLIP_Y", 1)]),
     ("span", &[("N", 10), ("CLIP_X", 1), ("CLIP_Z", 1)]),
-    ("pixel_out", &[("N", 10), ("DEPTH_TEST", 1)]),
+    ("pixel_out", &[("N", 10), ("DEPTH_TEST", 1), ("LANES", 1)]),
     ("pixel_bus", &[("N", 10)]),
     ("gpu_regs", &[("N", 10)]),
     ("command_parser", &[("N", 10), ("CACHE", 512)]),
@@ -444,6 +453,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
             ("DEPTH_TEST", 1),
             ("METHOD", 0),
             ("PERSPECTIVE", 1),
+            ("LANES", 1),
         ],
     ),
     ("gpu_top", &[("N", 10), ("K", 7), ("L", model::divider::LATENCY as u64)]),

@@ -38,22 +38,22 @@ pub const fn is_input<D: rust_hdl::prelude::Direction>() -> bool {
 
 /// Declares a bundle: a rust-hdl interface of the signals given, each with its direction
 /// (`In` or `Out`, as seen by the unit holding the bundle) and type (`Bit` or `Bits<N>`),
-/// and its [`LinkPins`].
+/// and its [`LinkPins`]; its widths may be const parameters (`Name<const A: usize> { ... }`).
 #[macro_export]
 macro_rules! bundle {
     (
         $(#[$meta:meta])*
-        $name:ident {
+        $name:ident $(< $(const $g:ident : usize),+ >)? {
             $( $(#[$fmeta:meta])* $dir:ident $field:ident : $ty:ty ),* $(,)?
         }
     ) => {
         $(#[$meta])*
         #[derive(LogicInterface, Default)]
-        pub struct $name {
+        pub struct $name $(< $(const $g: usize),+ >)? {
             $( $(#[$fmeta])* pub $field: Signal<$dir, $ty>, )*
         }
 
-        impl $crate::link::LinkPins for $name {
+        impl $(< $(const $g: usize),+ >)? $crate::link::LinkPins for $name $(< $($g),+ >)? {
             fn set(&mut self, field: &str, value: &$crate::sim::Value) -> bool {
                 match field {
                     $( stringify!($field) if $crate::link::is_input::<$dir>() => {

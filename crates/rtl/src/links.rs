@@ -7,23 +7,30 @@ use rust_hdl::prelude::*;
 
 crate::bundle! {
     /// `pixel_out`'s memory port, as `pixel_out` (and `raster_top` with it) holds it: a word
-    /// per pixel at address `{y, x}`, a depth and a colour (see `rtl::pixel_out`).
-    MemoryPort {
+    /// per chunk of `LANES` pixels of a row (pixel x in lane x mod `LANES`) at address
+    /// `{y, x / LANES}` (`AW` bits), each lane a depth (`ZW` = `LANES` depths: lane i at bits
+    /// [i DEPTH, (i + 1) DEPTH)) and a colour (`CW` = `LANES` x 24 bits: lane i's
+    /// `{R, G, B}`, R on top, at [i RGB, (i + 1) RGB)), read and written with an enable per
+    /// lane (see `rtl::pixel_out`). One lane: [`MemoryPort`].
+    ChunkPort<const LANES: usize, const AW: usize, const ZW: usize, const CW: usize> {
         /// The memory performs this cycle's read and write at the rising edge; low: neither.
         In ready: Bit,
-        /// Read the depth at `rd_addr`.
-        Out rd_en: Bit,
-        Out rd_addr: Bits<ADDR>,
-        /// The depth last read (from the cycle after the read).
-        In rd_z: Bits<DEPTH>,
-        /// Write `wr_z` and `wr_rgb` at `wr_addr`.
-        Out wr_en: Bit,
-        Out wr_addr: Bits<ADDR>,
-        Out wr_z: Bits<DEPTH>,
-        /// `{R, G, B}`, R in the top byte.
-        Out wr_rgb: Bits<RGB>,
+        /// Read the depths of the lanes set at `rd_addr`.
+        Out rd_en: Bits<LANES>,
+        Out rd_addr: Bits<AW>,
+        /// The depths last read (from the cycle after the read; a lane not read: any value).
+        In rd_z: Bits<ZW>,
+        /// Write the lanes set of `wr_z` and `wr_rgb` at `wr_addr`.
+        Out wr_en: Bits<LANES>,
+        Out wr_addr: Bits<AW>,
+        Out wr_z: Bits<ZW>,
+        Out wr_rgb: Bits<CW>,
     }
 }
+
+/// The memory port of one lane: a word per pixel at address `{y, x}`, a depth and a
+/// colour (`{R, G, B}`, R in the top byte), as the scanline `raster_top` has it.
+pub type MemoryPort = ChunkPort<1, ADDR, DEPTH, RGB>;
 
 /// Declares an AXI4 read master's address (AR) and data (R) channels with `$data`-bit data
 /// as a bundle (the ports `ar_valid`, `ar_ready`, `ar_addr`, `ar_len`, `ar_size`,

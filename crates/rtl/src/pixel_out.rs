@@ -32,13 +32,13 @@
 use crate::emit::{emit_unit, Emitted};
 use crate::parts::Concat;
 use crate::switch::{Parts, Switch};
-use super::links::{MemoryPort, PixelSink};
+use super::links::{ChunkPort, MemoryPort, PixelSink};
 use super::widths::{ADDR, CHANNEL, DEPTH, RGB, SCREEN};
 use crate::Params;
 use rust_hdl::prelude::*;
 
-/// The pixel output unit: see the module documentation.
-#[derive(LogicBlock, Default)]
+/// The pixel output unit at one lane, behind the pixel link: see the module documentation.
+#[derive(LogicBlock)]
 pub struct PixelOut {
     pub clock: Signal<In, Clock>,
     /// The pixels; `inp.ready` is `mem.ready`: a pixel is taken whenever the memory is.
@@ -48,94 +48,42 @@ pub struct PixelOut {
     /// No pixel in the pipeline (for `raster_top`'s frame-done): empty 3 cycles after the
     /// last pixel came in, whether it was written or not.
     pub idle: Signal<Out, Bit>,
-    /// The depth test present (`DEPTH_TEST`, `crate::switch`); without it no depth is read
-    /// and every pixel is written: no two pixels of a frame may share an address.
-    depth_test: Switch,
-    /// s1: the pixel whose depth is being read (`mem.rd_z` holds it this cycle).
-    s1_valid: DFF<Bit>,
-    s1_addr: DFF<Bits<ADDR>>,
-    s1_z: DFF<Bits<DEPTH>>,
-    s1_rgb: DFF<Bits<RGB>>,
-    /// s2: the pixel after its test; written when it passed (`s2_write`).
-    s2_valid: DFF<Bit>,
-    s2_write: DFF<Bit>,
-    s2_addr: DFF<Bits<ADDR>>,
-    s2_z: DFF<Bits<DEPTH>>,
-    s2_rgb: DFF<Bits<RGB>>,
-    /// s3: the write done in the last cycle the memory was ready (its address is compared
-    /// while it is in s2: `hit3`).
-    s3_valid: DFF<Bit>,
-    s3_z: DFF<Bits<DEPTH>>,
-    /// s1's address equals s2's (`hit2`) and s3's (`hit3`): compared as s1's pixel came in,
-    /// against the pixels then in s1 and s2, which moved on to s2 and s3 with it.
-    hit2: DFF<Bit>,
-    hit3: DFF<Bit>,
+    chunk: ChunkOut<1, ADDR, DEPTH, RGB>,
     /// `{y, x}` and `{R, G, B}` of the pixel coming in.
     addr: Concat<SCREEN, SCREEN, ADDR>,
     rg: Concat<CHANNEL, CHANNEL, { 2 * CHANNEL }>,
     rgb: Concat<{ 2 * CHANNEL }, CHANNEL, RGB>,
-    /// The depth s1's pixel is tested against, and the test.
-    old_z: Signal<Local, Bits<DEPTH>>,
-    pass: Signal<Local, Bit>,
+    /// The one lane's enable.
+    one: Constant<Bits<1>>,
 }
 
 impl Logic for PixelOut {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(
-            self, clock, s1_valid, s1_addr, s1_z, s1_rgb, s2_valid, s2_write, s2_addr, s2_z, s2_rgb, s3_valid, s3_z,
-            hit2, hit3
-        );
+        clock!(self, clock, chunk);
         self.addr.hi.next = self.inp.y.val();
         self.addr.lo.next = self.inp.x.val();
         self.rg.hi.next = self.inp.rgb0.val();
         self.rg.lo.next = self.inp.rgb1.val();
         self.rgb.hi.next = self.rg.out.val();
         self.rgb.lo.next = self.inp.rgb2.val();
-
-        // Cycle t: the pixel comes in and its depth is read.
-        self.inp.ready.next = self.mem.ready.val();
-        self.mem.rd_en.next = self.inp.valid.val() & self.depth_test.on.val();
-        self.mem.rd_addr.next = self.addr.out.val();
-
-        // Cycle t + 1: depth test against the newest depth of the address (the address
-        // compares made in cycle t).
-        self.old_z.next = self.mem.rd_z.val();
-        if self.s3_valid.q.val() & self.hit3.q.val() {
-            self.old_z.next = self.s3_z.q.val();
-        }
-        if self.s2_write.q.val() & self.hit2.q.val() {
-            self.old_z.next = self.s2_z.q.val();
-        }
-        self.pass.next = self.s1_valid.q.val();
-        if self.depth_test.on.val() & (self.s1_z.q.val() >= self.old_z.val()) {
-            self.pass.next = false;
-        }
-
-        // Cycle t + 2: the write.
-        self.mem.wr_en.next = self.s2_write.q.val();
-        self.mem.wr_addr.next = self.s2_addr.q.val();
-        self.mem.wr_z.next = self.s2_z.q.val();
-        self.mem.wr_rgb.next = self.s2_rgb.q.val();
-        self.idle.next = !self.s1_valid.q.val() & !self.s2_valid.q.val();
-
-        if self.mem.ready.val() {
-            self.s1_valid.d.next = self.inp.valid.val();
-            self.s1_addr.d.next = self.addr.out.val();
-            self.s1_z.d.next = self.inp.z.val();
-            self.s1_rgb.d.next = self.rgb.out.val();
-            self.hit2.d.next = self.s1_addr.q.val() == self.addr.out.val();
-            self.hit3.d.next = self.s2_addr.q.val() == self.addr.out.val();
-            self.s2_valid.d.next = self.s1_valid.q.val();
-            self.s2_write.d.next = self.pass.val();
-            self.s2_addr.d.next = self.s1_addr.q.val();
-            self.s2_z.d.next = self.s1_z.q.val();
-            self.s2_rgb.d.next = self.s1_rgb.q.val();
-            self.s3_valid.d.next = self.s2_write.q.val();
-            self.s3_z.d.next = self.s2_z.q.val();
-        }
+        self.chunk.in_valid.next = self.inp.valid.val();
+        self.chunk.in_mask.next = self.one.val();
+        self.chunk.in_addr.next = self.addr.out.val();
+        self.chunk.in_z.next = self.inp.z.val();
+        self.chunk.in_rgb.next = self.rgb.out.val();
+        self.inp.ready.next = self.chunk.in_ready.val();
+        MemoryPort::link(&mut self.mem, &mut self.chunk.mem);
+        self.idle.next = self.chunk.idle.val();
     }
 }
+
+crate::pins!(impl[const LANES: usize, const AW: usize, const ZW: usize, const CW: usize] ChunkOut<LANES, AW, ZW, CW> {
+    clock: clock,
+    inputs: [in_valid, in_mask, in_addr, in_z, in_rgb],
+    outputs: [in_ready, idle],
+    links: [mem],
+});
 
 crate::pins!(PixelOut {
     clock: clock,
@@ -147,12 +95,249 @@ crate::pins!(PixelOut {
 impl PixelOut {
     /// The pixel output unit with the depth test present or not (`parts.depth_test`).
     pub fn new(parts: &Parts) -> PixelOut {
-        PixelOut { depth_test: Switch::new(parts.depth_test), ..Default::default() }
+        PixelOut {
+            clock: Default::default(),
+            inp: Default::default(),
+            mem: Default::default(),
+            idle: Default::default(),
+            chunk: ChunkOut::new(parts),
+            addr: Default::default(),
+            rg: Default::default(),
+            rgb: Default::default(),
+            one: Constant::new(1.into()),
+        }
+    }
+}
+
+/// The unit with the depth test (`raster_top`'s variants hold one).
+impl Default for PixelOut {
+    fn default() -> Self {
+        PixelOut::new(&Parts::ALL)
+    }
+}
+
+/// The pixel output unit for chunks of `LANES` pixels (`AW` address bits, `ZW` = `LANES`
+/// x `DEPTH`, `CW` = `LANES` x `RGB`): see the module documentation.
+#[derive(LogicBlock)]
+pub struct ChunkOut<const LANES: usize, const AW: usize, const ZW: usize, const CW: usize> {
+    pub clock: Signal<In, Clock>,
+    /// A chunk in: its lanes with a pixel (`in_mask`), its address, the lanes' depths and
+    /// colours as the memory words hold them. Taken whenever the memory is ready.
+    pub in_valid: Signal<In, Bit>,
+    pub in_ready: Signal<Out, Bit>,
+    pub in_mask: Signal<In, Bits<LANES>>,
+    pub in_addr: Signal<In, Bits<AW>>,
+    pub in_z: Signal<In, Bits<ZW>>,
+    pub in_rgb: Signal<In, Bits<CW>>,
+    /// The memory port (see the module documentation).
+    pub mem: ChunkPort<LANES, AW, ZW, CW>,
+    /// No chunk in the pipeline: empty 3 cycles after the last one came in.
+    pub idle: Signal<Out, Bit>,
+    /// The depth test present (`DEPTH_TEST`, `crate::switch`); without it no depth is read
+    /// and every pixel is written: no two pixels of a frame may share an address.
+    depth_test: Switch,
+    /// s1: the chunk whose depths are being read (`mem.rd_z` holds them this cycle).
+    s1_valid: DFF<Bit>,
+    s1_mask: DFF<Bits<LANES>>,
+    s1_addr: DFF<Bits<AW>>,
+    s1_z: DFF<Bits<ZW>>,
+    s1_rgb: DFF<Bits<CW>>,
+    /// s2: the chunk after its test; its lanes that passed are written (`s2_write`).
+    s2_valid: DFF<Bit>,
+    s2_write: DFF<Bits<LANES>>,
+    s2_addr: DFF<Bits<AW>>,
+    s2_z: DFF<Bits<ZW>>,
+    s2_rgb: DFF<Bits<CW>>,
+    /// s3: the lanes written in the last cycle the memory was ready (its address is
+    /// compared while it is in s2: `hit3`).
+    s3_write: DFF<Bits<LANES>>,
+    s3_z: DFF<Bits<ZW>>,
+    /// s1's address equals s2's (`hit2`) and s3's (`hit3`): compared as s1's chunk came in,
+    /// against the chunks then in s1 and s2, which moved on to s2 and s3 with it.
+    hit2: DFF<Bit>,
+    hit3: DFF<Bit>,
+    /// Each lane's test, and the lanes that pass gathered (`pass`).
+    lanes: Vec<LaneTest<LANES, ZW>>,
+    g_pass: Vec<Signal<Local, Bits<LANES>>>,
+    pass: Signal<Local, Bits<LANES>>,
+}
+
+impl<const LANES: usize, const AW: usize, const ZW: usize, const CW: usize> ChunkOut<LANES, AW, ZW, CW> {
+    /// The unit with the depth test present or not (`parts.depth_test`).
+    pub fn new(parts: &Parts) -> Self {
+        assert!(ZW == LANES * DEPTH && CW == LANES * RGB, "ChunkOut<{LANES}, {AW}, {ZW}, {CW}>");
+        ChunkOut {
+            clock: Default::default(),
+            in_valid: Default::default(),
+            in_ready: Default::default(),
+            in_mask: Default::default(),
+            in_addr: Default::default(),
+            in_z: Default::default(),
+            in_rgb: Default::default(),
+            mem: Default::default(),
+            idle: Default::default(),
+            depth_test: Switch::new(parts.depth_test),
+            s1_valid: Default::default(),
+            s1_mask: Default::default(),
+            s1_addr: Default::default(),
+            s1_z: Default::default(),
+            s1_rgb: Default::default(),
+            s2_valid: Default::default(),
+            s2_write: Default::default(),
+            s2_addr: Default::default(),
+            s2_z: Default::default(),
+            s2_rgb: Default::default(),
+            s3_write: Default::default(),
+            s3_z: Default::default(),
+            hit2: Default::default(),
+            hit3: Default::default(),
+            lanes: (0..LANES).map(LaneTest::new).collect(),
+            g_pass: (0..=LANES).map(|_| Default::default()).collect(),
+            pass: Default::default(),
+        }
+    }
+}
+
+impl<const LANES: usize, const AW: usize, const ZW: usize, const CW: usize> Logic for ChunkOut<LANES, AW, ZW, CW> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, s1_valid, s1_mask, s1_addr, s1_z, s1_rgb, s2_valid, s2_write, s2_addr, s2_z, s2_rgb,
+            s3_write, s3_z, hit2, hit3
+        );
+
+        // Cycle t: the chunk comes in and its lanes' depths are read.
+        self.in_ready.next = self.mem.ready.val();
+        self.mem.rd_en.next = 0.into();
+        if self.in_valid.val() & self.depth_test.on.val() {
+            self.mem.rd_en.next = self.in_mask.val();
+        }
+        self.mem.rd_addr.next = self.in_addr.val();
+
+        // Cycle t + 1: each lane's test against the newest depth of its pixel (the address
+        // compares made in cycle t).
+        self.g_pass[0].next = 0.into();
+        for i in 0..LANES {
+            self.lanes[i].rd_z.next = self.mem.rd_z.val();
+            self.lanes[i].s1_z.next = self.s1_z.q.val();
+            self.lanes[i].s2_z.next = self.s2_z.q.val();
+            self.lanes[i].s3_z.next = self.s3_z.q.val();
+            self.lanes[i].s1_mask.next = self.s1_mask.q.val();
+            self.lanes[i].s2_write.next = self.s2_write.q.val();
+            self.lanes[i].s3_write.next = self.s3_write.q.val();
+            self.lanes[i].hit2.next = self.hit2.q.val();
+            self.lanes[i].hit3.next = self.hit3.q.val();
+            self.lanes[i].on.next = self.depth_test.on.val();
+            self.g_pass[i + 1].next = self.g_pass[i].val() | self.lanes[i].pass.val();
+        }
+        for i in LANES..(LANES + 1) {
+            self.pass.next = self.g_pass[i].val();
+        }
+
+        // Cycle t + 2: the write.
+        self.mem.wr_en.next = self.s2_write.q.val();
+        self.mem.wr_addr.next = self.s2_addr.q.val();
+        self.mem.wr_z.next = self.s2_z.q.val();
+        self.mem.wr_rgb.next = self.s2_rgb.q.val();
+        self.idle.next = !self.s1_valid.q.val() & !self.s2_valid.q.val();
+
+        if self.mem.ready.val() {
+            self.s1_valid.d.next = self.in_valid.val();
+            self.s1_mask.d.next = 0.into();
+            if self.in_valid.val() {
+                self.s1_mask.d.next = self.in_mask.val();
+            }
+            self.s1_addr.d.next = self.in_addr.val();
+            self.s1_z.d.next = self.in_z.val();
+            self.s1_rgb.d.next = self.in_rgb.val();
+            self.hit2.d.next = self.s1_addr.q.val() == self.in_addr.val();
+            self.hit3.d.next = self.s2_addr.q.val() == self.in_addr.val();
+            self.s2_valid.d.next = self.s1_valid.q.val();
+            self.s2_write.d.next = self.pass.val();
+            self.s2_addr.d.next = self.s1_addr.q.val();
+            self.s2_z.d.next = self.s1_z.q.val();
+            self.s2_rgb.d.next = self.s1_rgb.q.val();
+            self.s3_write.d.next = self.s2_write.q.val();
+            self.s3_z.d.next = self.s2_z.q.val();
+        }
+    }
+}
+
+/// One lane's depth test in [`ChunkOut`]: lane `i`'s depth out of each chunk word, the
+/// newest depth of its pixel (s2's if s2 writes this lane of the same chunk, else s3's
+/// likewise, else the one read), and `pass`: the lane's bit when its pixel is present and
+/// nearer (LESS), or present and the test absent.
+#[derive(LogicBlock)]
+pub struct LaneTest<const LANES: usize, const ZW: usize> {
+    pub rd_z: Signal<In, Bits<ZW>>,
+    pub s1_z: Signal<In, Bits<ZW>>,
+    pub s2_z: Signal<In, Bits<ZW>>,
+    pub s3_z: Signal<In, Bits<ZW>>,
+    pub s1_mask: Signal<In, Bits<LANES>>,
+    pub s2_write: Signal<In, Bits<LANES>>,
+    pub s3_write: Signal<In, Bits<LANES>>,
+    pub hit2: Signal<In, Bit>,
+    pub hit3: Signal<In, Bit>,
+    /// The depth test present.
+    pub on: Signal<In, Bit>,
+    pub pass: Signal<Out, Bits<LANES>>,
+    /// The lane's first depth bit and its bit in the masks.
+    at: Constant<Bits<16>>,
+    lane_bit: Constant<Bits<LANES>>,
+    z: Signal<Local, Bits<DEPTH>>,
+    old_z: Signal<Local, Bits<DEPTH>>,
+}
+
+impl<const LANES: usize, const ZW: usize> LaneTest<LANES, ZW> {
+    fn new(i: usize) -> Self {
+        LaneTest {
+            rd_z: Default::default(),
+            s1_z: Default::default(),
+            s2_z: Default::default(),
+            s3_z: Default::default(),
+            s1_mask: Default::default(),
+            s2_write: Default::default(),
+            s3_write: Default::default(),
+            hit2: Default::default(),
+            hit3: Default::default(),
+            on: Default::default(),
+            pass: Default::default(),
+            at: Constant::new((i * DEPTH).to_bits()),
+            lane_bit: Constant::new((1usize << i).to_bits()),
+            z: Default::default(),
+            old_z: Default::default(),
+        }
+    }
+}
+
+impl<const LANES: usize, const ZW: usize> Logic for LaneTest<LANES, ZW> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.old_z.next = bit_cast::<DEPTH, ZW>(self.rd_z.val() >> self.at.val());
+        if ((self.s3_write.val() & self.lane_bit.val()) != 0) & self.hit3.val() {
+            self.old_z.next = bit_cast::<DEPTH, ZW>(self.s3_z.val() >> self.at.val());
+        }
+        if ((self.s2_write.val() & self.lane_bit.val()) != 0) & self.hit2.val() {
+            self.old_z.next = bit_cast::<DEPTH, ZW>(self.s2_z.val() >> self.at.val());
+        }
+        self.z.next = bit_cast::<DEPTH, ZW>(self.s1_z.val() >> self.at.val());
+        self.pass.next = self.s1_mask.val() & self.lane_bit.val();
+        if self.on.val() & (self.z.val() >= self.old_z.val()) {
+            self.pass.next = 0.into();
+        }
     }
 }
 
 /// `UNITS` entry: the pixel output unit, with the depth test as `params["DEPTH_TEST"]`
-/// says (widths from `crate::widths`).
+/// says (widths from `crate::widths`): [`PixelOut`] at `LANES` = 1, [`ChunkOut`] at 2, 4
+/// or 8.
 pub fn emit_pixel_out(params: &Params) -> Result<Emitted, String> {
-    Ok(emit_unit("pixel_out", PixelOut::new(&Parts::of(params)?), params))
+    let parts = Parts::of(params)?;
+    Ok(match params["LANES"] {
+        1 => emit_unit("pixel_out", PixelOut::new(&parts), params),
+        2 => emit_unit("pixel_out", ChunkOut::<2, { ADDR - 1 }, { 2 * DEPTH }, { 2 * RGB }>::new(&parts), params),
+        4 => emit_unit("pixel_out", ChunkOut::<4, { ADDR - 2 }, { 4 * DEPTH }, { 4 * RGB }>::new(&parts), params),
+        8 => emit_unit("pixel_out", ChunkOut::<8, { ADDR - 3 }, { 8 * DEPTH }, { 8 * RGB }>::new(&parts), params),
+        n => return Err(format!("pixel_out: LANES = {n}: 1, 2, 4 or 8")),
+    })
 }

@@ -48,15 +48,15 @@
 use super::cull_sort::CullSort;
 use super::edge_walk::EdgeWalk;
 use super::links::{
-    MemoryPort, PixelSource, SortedSink, SortedSource, SpanCmdSource, TriangleSetupSource, TriangleSink,
+    ChunkPort, MemoryPort, PixelSource, SortedSink, SortedSource, SpanCmdSource, TriangleSetupSource, TriangleSink,
     Verdict,
 };
-use super::pixel_out::PixelOut;
+use super::pixel_out::{ChunkOut, PixelOut};
 use super::span::Span;
 use super::span_fifo::SpanFifo;
 use super::triangle_setup::TriangleSetup;
-use super::vector::Vector1;
-use super::widths::{CHANNEL, DIM};
+use super::vector::Vector;
+use super::widths::{ADDR, DEPTH, DIM, RGB, SCREEN};
 use crate::emit::{emit_unit, Emitted};
 use crate::switch::Parts;
 use crate::Params;
@@ -360,12 +360,15 @@ crate::pins!(RasterTop {
     links: [inp, mem, verdict],
 });
 
-/// The barycentric rasterizer (`METHOD = 1`, paper 004): `cull_sort`, [`Vector`] and
-/// `pixel_out`, with [`RasterTop`]'s ports. The vector unit takes a triangle when it is
-/// empty and sends a pixel a cycle (`rtl::vector`); `model::cycles::vector_frame` predicts
-/// the frame cycle for cycle.
+/// The barycentric rasterizer (`METHOD = 1`, paper 004): `cull_sort`, [`Vector`] with
+/// `LANES` lanes and [`ChunkOut`] (`pixel_out` a chunk a cycle), with [`RasterTop`]'s ports
+/// but the memory port a word per chunk of `LANES` pixels (`links::ChunkPort`: address
+/// `{y, x / LANES}`, `AW` = 2 N - log2 `LANES` bits; at one lane `links::MemoryPort`, as
+/// the scanline `raster_top`'s). The vector unit takes a triangle when its setup is free
+/// and sends a chunk a cycle (`rtl::vector`); `model::cycles::vector_frame` predicts the
+/// frame cycle for cycle.
 #[derive(LogicBlock)]
-pub struct RasterTopVector {
+pub struct RasterTopVector<const LANES: usize, const ZW: usize, const CW: usize, const AW: usize> {
     pub clock: Signal<In, Clock>,
     /// As [`RasterTop`]'s.
     pub width: Signal<In, Bits<DIM>>,
@@ -374,27 +377,29 @@ pub struct RasterTopVector {
     pub inp_last: Signal<In, Bit>,
     pub cull_back: Signal<In, Bit>,
     pub verdict: Verdict,
-    pub mem: MemoryPort,
+    pub mem: ChunkPort<LANES, AW, ZW, CW>,
     pub done: Signal<Out, Bit>,
     cull_sort: CullSort,
-    vector: Vector1,
-    pixel_out: PixelOut,
+    vector: Vector<LANES, ZW, CW>,
+    pixel_out: ChunkOut<LANES, AW, ZW, CW>,
     last_in: DFF<Bit>,
-    /// Channel k's place in the vector unit's `out_rgb`.
-    ch1: Constant<Bits<8>>,
-    ch2: Constant<Bits<8>>,
+    /// A chunk's address: `y` shifted by the row's chunk bits, `x` by log2 `LANES`.
+    row_at: Constant<Bits<8>>,
+    lane_bits: Constant<Bits<8>>,
 }
 
-impl RasterTopVector {
+impl<const LANES: usize, const ZW: usize, const CW: usize, const AW: usize> RasterTopVector<LANES, ZW, CW, AW> {
     /// `cull_sort`, the vector unit with an `l`-stage divider and perspective-correct colours
     /// or not, and `pixel_out`, with the parts `parts` says (`CULL`, `DEPTH_TEST`).
-    pub fn new(l: usize, perspective: bool, parts: &Parts) -> Result<RasterTopVector, String> {
+    pub fn new(l: usize, perspective: bool, parts: &Parts) -> Result<Self, String> {
+        let lane_bits = LANES.trailing_zeros() as usize;
+        assert_eq!(AW, 2 * SCREEN - lane_bits, "RasterTopVector<{LANES}, {ZW}, {CW}, {AW}>");
         Ok(RasterTopVector {
             cull_sort: CullSort::new(parts),
-            vector: Vector1::new(l, perspective)?,
-            pixel_out: PixelOut::new(parts),
-            ch1: Constant::new(CHANNEL.to_bits()),
-            ch2: Constant::new((2 * CHANNEL).to_bits()),
+            vector: Vector::new(l, perspective)?,
+            pixel_out: ChunkOut::new(parts),
+            row_at: Constant::new((SCREEN - lane_bits).to_bits()),
+            lane_bits: Constant::new(lane_bits.to_bits()),
             clock: Default::default(),
             width: Default::default(),
             height: Default::default(),
@@ -409,7 +414,9 @@ impl RasterTopVector {
     }
 }
 
-impl Logic for RasterTopVector {
+impl<const LANES: usize, const ZW: usize, const CW: usize, const AW: usize> Logic
+    for RasterTopVector<LANES, ZW, CW, AW>
+{
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, last_in);
@@ -422,17 +429,15 @@ impl Logic for RasterTopVector {
         TriangleSink::link(&mut self.inp, &mut self.cull_sort.inp);
         Verdict::link(&mut self.verdict, &mut self.cull_sort.verdict);
         SortedSource::join(&mut self.cull_sort.out, &mut self.vector.inp);
-        self.pixel_out.inp.valid.next = self.vector.out_valid.val();
-        self.vector.out_ready.next = self.pixel_out.inp.ready.val();
-        self.pixel_out.inp.x.next = self.vector.out_x.val();
-        self.pixel_out.inp.y.next = self.vector.out_y.val();
-        self.pixel_out.inp.z.next = self.vector.out_z.val();
-        self.pixel_out.inp.rgb0.next = bit_cast::<CHANNEL, { 3 * CHANNEL }>(self.vector.out_rgb.val());
-        self.pixel_out.inp.rgb1.next =
-            bit_cast::<CHANNEL, { 3 * CHANNEL }>(self.vector.out_rgb.val() >> self.ch1.val());
-        self.pixel_out.inp.rgb2.next =
-            bit_cast::<CHANNEL, { 3 * CHANNEL }>(self.vector.out_rgb.val() >> self.ch2.val());
-        MemoryPort::link(&mut self.mem, &mut self.pixel_out.mem);
+        // The vector unit's chunk is a memory word's lanes as they are.
+        self.pixel_out.in_valid.next = self.vector.out_valid.val();
+        self.vector.out_ready.next = self.pixel_out.in_ready.val();
+        self.pixel_out.in_mask.next = self.vector.out_mask.val();
+        self.pixel_out.in_addr.next = (bit_cast::<AW, SCREEN>(self.vector.out_y.val()) << self.row_at.val())
+            | bit_cast::<AW, SCREEN>(self.vector.out_x.val() >> self.lane_bits.val());
+        self.pixel_out.in_z.next = self.vector.out_z.val();
+        self.pixel_out.in_rgb.next = self.vector.out_rgb.val();
+        ChunkPort::<LANES, AW, ZW, CW>::link(&mut self.mem, &mut self.pixel_out.mem);
         if self.inp.valid.val() & self.inp.ready.val() {
             self.last_in.d.next = self.inp_last.val();
         }
@@ -443,12 +448,15 @@ impl Logic for RasterTopVector {
     }
 }
 
-crate::pins!(RasterTopVector {
+crate::pins!(impl[const LANES: usize, const ZW: usize, const CW: usize, const AW: usize] RasterTopVector<LANES, ZW, CW, AW> {
     clock: clock,
     inputs: [width, height, inp_last, cull_back],
     outputs: [done],
     links: [inp, mem, verdict],
 });
+
+/// The barycentric `raster_top` at one lane, on the scanline one's memory port.
+pub type RasterTopVector1 = RasterTopVector<1, DEPTH, RGB, ADDR>;
 
 /// `UNITS` entry: the rasterizer with `params["K"]` setup multipliers, a
 /// `params["L"]`-stage divider, `cull_sort` and `pixel_out` present (1) or not (0) as
@@ -463,6 +471,9 @@ pub fn emit_raster_top(params: &Params) -> Result<Emitted, String> {
         v => return Err(format!("raster_top: PERSPECTIVE = {v}: 0 or 1")),
     };
     match params["METHOD"] {
+        0 if params["LANES"] != 1 => {
+            return Err(format!("raster_top: LANES = {} is the vector unit's (METHOD = 1); the scanline method draws a pixel a cycle", params["LANES"]))
+        }
         0 => {}
         1 => {
             if (params["CULL_SORT"], params["PIXEL_OUT"]) != (1, 1) {
@@ -471,7 +482,26 @@ pub fn emit_raster_top(params: &Params) -> Result<Emitted, String> {
             if !(parts.clip_y && parts.clip_x && parts.clip_z) {
                 return Err("raster_top: CLIP_Y, CLIP_X and CLIP_Z switch parts of edge_walk and span, which METHOD = 1 (vector) has not: its box walk clips to the screen".into());
             }
-            return Ok(emit_unit("raster_top", RasterTopVector::new(l, perspective, &parts)?, params));
+            let p = &parts;
+            return Ok(match params["LANES"] {
+                1 => emit_unit("raster_top", RasterTopVector1::new(l, perspective, p)?, params),
+                2 => emit_unit(
+                    "raster_top",
+                    RasterTopVector::<2, { 2 * DEPTH }, { 2 * RGB }, { ADDR - 1 }>::new(l, perspective, p)?,
+                    params,
+                ),
+                4 => emit_unit(
+                    "raster_top",
+                    RasterTopVector::<4, { 4 * DEPTH }, { 4 * RGB }, { ADDR - 2 }>::new(l, perspective, p)?,
+                    params,
+                ),
+                8 => emit_unit(
+                    "raster_top",
+                    RasterTopVector::<8, { 8 * DEPTH }, { 8 * RGB }, { ADDR - 3 }>::new(l, perspective, p)?,
+                    params,
+                ),
+                n => return Err(format!("raster_top: LANES = {n}: 1, 2, 4 or 8 (METHOD = 1)")),
+            });
         }
         m => return Err(format!("raster_top: METHOD = {m}: 0 (scanline) or 1 (vector)")),
     }

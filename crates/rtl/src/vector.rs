@@ -399,8 +399,9 @@ pub struct Vector<const LANES: usize, const ZW: usize, const CW: usize> {
     /// The sorted triangle in (`inp.crosses` is not read), taken when setup is free.
     pub inp: SortedSink,
     /// A chunk's pixels, held until `out_ready`: `out_mask` bit i for pixel (`out_x` + i,
-    /// `out_y`) with depth `out_z` bits [i DEPTH, (i+1) DEPTH) and R, G, B `out_rgb` bits
-    /// [(3i+k) CHANNEL, (3i+k+1) CHANNEL), k = 0, 1, 2.
+    /// `out_y`) with depth `out_z` bits [i DEPTH, (i+1) DEPTH) and colour `{R, G, B}` (R on
+    /// top) `out_rgb` bits [3i CHANNEL, 3(i+1) CHANNEL): the lanes as a memory word of
+    /// `links::ChunkPort` holds them.
     pub out_valid: Signal<Out, Bit>,
     pub out_ready: Signal<In, Bit>,
     pub out_mask: Signal<Out, Bits<LANES>>,
@@ -1450,9 +1451,6 @@ crate::pins!(impl[const LANES: usize, const ZW: usize, const CW: usize] Vector<L
     outputs: [idle, out_valid, out_mask, out_x, out_y, out_z, out_rgb],
     links: [inp],
 });
-
-/// The unit at one lane, as `raster_top` uses it.
-pub type Vector1 = Vector<1, DEPTH, { 3 * CHANNEL }>;
 
 /// `UNITS` entry: the barycentric unit with `LANES` lanes and an `L`-stage divider,
 /// perspective-correct colours as `params["PERSPECTIVE"]` says.

@@ -7,7 +7,7 @@
 //! as the one before it is taken (back to back, as `model::cycles` assumes). The frame
 //! takes [`FrameOut::cycles`] cycles: `done` is first high in that cycle.
 
-use crate::memory::{Memory, ReadDuringWrite, Request};
+use crate::memory::{pack, pack_words, unpack, Memory, ReadDuringWrite, Request, MAX_LANES};
 use crate::streams::{raw, unsigned};
 use crate::{HdlSim, Outputs, Pins, PortId, Sim, Value, VlSim};
 use fx::Build;
@@ -32,7 +32,10 @@ pub struct Drive {
     /// The triangle offered (`inp$v<k>_*`).
     pub tri: [Vtx; 3],
     pub mem_ready: bool,
-    pub rd_z: u32,
+    /// Pixels a memory word (`raster_top`'s `LANES`; 1 but for the vector method's), and
+    /// each lane's depth read (`mem$rd_z`).
+    pub lanes: u32,
+    pub rd_z: [u32; MAX_LANES],
 }
 
 /// `raster_top`'s outputs in one cycle, sampled before the clock edge.
@@ -91,7 +94,7 @@ pub fn named(d: &Drive) -> Vec<(String, Value)> {
         ("inp$valid".into(), Value::new(1, d.inp_valid as u128)),
         ("inp_last".into(), Value::new(1, d.inp_last as u128)),
         ("mem$ready".into(), Value::new(1, d.mem_ready as u128)),
-        ("mem$rd_z".into(), Value::new(w.depth, d.rd_z as u128)),
+        ("mem$rd_z".into(), pack(&d.rd_z, w.depth, d.lanes as usize)),
     ];
     out.extend(triangle_pins(&d.build, &d.tri));
     out
@@ -161,6 +164,10 @@ pub struct RasterTopVl {
     vertices: [[PortId; 7]; 3],
     /// inp$ready, verdict$valid, verdict$code, done, mem$rd_en, mem$rd_addr, mem$wr_en, mem$wr_addr, mem$wr_z, mem$wr_rgb.
     outputs: [PortId; 10],
+    /// Pixels a memory word (the width of `mem$wr_en`), and the words of `mem$rd_z`,
+    /// `mem$wr_z` and `mem$wr_rgb`.
+    lanes: usize,
+    words: [Vec<u64>; 3],
 }
 
 impl RasterTopVl {
@@ -185,8 +192,11 @@ impl RasterTopVl {
             "mem$wr_z",
             "mem$wr_rgb",
         ]);
+        let words = |id: PortId| vec![0; vl.width(id).div_ceil(64)];
         RasterTopVl {
             clock: vl.port("clock"),
+            lanes: vl.width(outputs[6]),
+            words: [words(inputs[6]), words(outputs[8]), words(outputs[9])],
             inputs: inputs.try_into().expect("seven inputs"),
             vertices,
             outputs: outputs.try_into().expect("ten outputs"),
@@ -194,12 +204,20 @@ impl RasterTopVl {
             build,
         }
     }
+
+    /// Pixels a memory word: the `LANES` of its vector unit (1 for the scanline method).
+    pub fn lanes(&self) -> u32 {
+        self.lanes as u32
+    }
 }
 
 impl Cycle for RasterTopVl {
     fn cycle(&mut self, d: &Drive) -> Result<Sense, String> {
-        if d.build != self.build {
-            return Err(format!("this raster_top is of build {:?}, not {:?}", self.build, d.build));
+        if d.build != self.build || d.lanes as usize != self.lanes {
+            return Err(format!(
+                "this raster_top is of build {:?} with {} lanes, not {:?} with {}",
+                self.build, self.lanes, d.build, d.lanes
+            ));
         }
         let vl = &mut self.vl;
         let [width, height, cull_back, inp_valid, inp_last, mem_ready, rd_z] = self.inputs;
@@ -209,7 +227,10 @@ impl Cycle for RasterTopVl {
         vl.set_u64(inp_valid, d.inp_valid as u64);
         vl.set_u64(inp_last, d.inp_last as u64);
         vl.set_u64(mem_ready, d.mem_ready as u64);
-        vl.set_u64(rd_z, d.rd_z as u64);
+        let depth = vl.width(rd_z) / self.lanes;
+        let [rd_words, z_words, rgb_words] = &mut self.words;
+        pack_words(&d.rd_z, depth, self.lanes, rd_words);
+        vl.set_words(rd_z, rd_words);
         for (v, ids) in d.tri.iter().zip(&self.vertices) {
             // Two's complement, cut to the port's width by `set_u64`.
             for (id, x) in ids.iter().zip([v.x, v.y, v.z, v.c[0], v.c[1], v.c[2], v.iw]) {
@@ -217,21 +238,22 @@ impl Cycle for RasterTopVl {
             }
         }
         vl.eval();
-        let [inp_ready, verdict_valid, verdict_code, done, rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb] =
-            self.outputs.map(|id| vl.get_u64(id));
+        let [inp_ready, verdict_valid, verdict_code, done, rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb] = self.outputs;
+        vl.get_words(wr_z, z_words);
+        vl.get_words(wr_rgb, rgb_words);
         let s = Sense {
-            inp_ready: inp_ready == 1,
-            verdict_valid: verdict_valid == 1,
-            verdict_code: verdict_code as u8,
+            inp_ready: vl.get_u64(inp_ready) == 1,
+            verdict_valid: vl.get_u64(verdict_valid) == 1,
+            verdict_code: vl.get_u64(verdict_code) as u8,
             req: Request {
-                rd_en: rd_en == 1,
-                rd_addr: rd_addr as u32,
-                wr_en: wr_en == 1,
-                wr_addr: wr_addr as u32,
-                wr_z: wr_z as u32,
-                wr_rgb: wr_rgb as u32,
+                rd_en: vl.get_u64(rd_en) as u8,
+                rd_addr: vl.get_u64(rd_addr) as u32,
+                wr_en: vl.get_u64(wr_en) as u8,
+                wr_addr: vl.get_u64(wr_addr) as u32,
+                wr_z: unpack(z_words, depth, self.lanes),
+                wr_rgb: unpack(rgb_words, 3 * CHANNEL, self.lanes),
             },
-            done: done == 1,
+            done: vl.get_u64(done) == 1,
         };
         // The rising edge. The clock falls with the next cycle's inputs, in that cycle's
         // one settle: nothing in the design acts on a falling edge.
@@ -265,6 +287,8 @@ pub struct Frame<'a> {
     pub cull: Cull,
     pub background: [u8; 3],
     pub triangles: &'a [[Vtx; 3]],
+    /// Pixels a memory word: the `LANES` of the `raster_top` drawing it.
+    pub lanes: u32,
 }
 
 /// How the memory behaves.
@@ -283,7 +307,8 @@ pub struct FrameOut {
     pub taken: Vec<u64>,
     /// Per triangle, in order, `cull_sort`'s verdict code (`rtl::cull_sort::verdict`).
     pub verdicts: Vec<u8>,
-    /// The cycle of each depth read (one per pixel reaching `pixel_out`), in order.
+    /// The cycle of each depth read (one per pixel reaching `pixel_out`: a chunk's read
+    /// once per lane read), in order.
     pub reads: Vec<u64>,
     /// Cycles the memory was not ready.
     pub stalls: u64,
@@ -295,11 +320,11 @@ pub fn draw(dut: &mut dyn Cycle, frame: &Frame, mem: MemoryModel, max_cycles: u6
     assert!(!frame.triangles.is_empty(), "a frame needs a triangle to carry inp_last");
     let zmax = z_max(&frame.build.formats) as u32;
     let size = (frame.width, frame.height);
-    let mut memory = Memory::new(frame.build.class, size, zmax, frame.background, mem.read_during_write);
+    let mut memory = Memory::new(frame.build.class, frame.lanes, size, zmax, frame.background, mem.read_during_write);
     let n = frame.triangles.len();
     let (mut taken, mut verdicts, mut reads, mut stalls) = (Vec::new(), Vec::new(), Vec::new(), 0);
     let (build, width, height, cull_back) = (frame.build, frame.width, frame.height, frame.cull == Cull::Back);
-    let mut d = Drive { build, width, height, cull_back, ..Drive::default() };
+    let mut d = Drive { build, width, height, cull_back, lanes: frame.lanes, ..Drive::default() };
     for cycle in 0..max_cycles {
         let next = taken.len();
         d.inp_valid = next < n;
@@ -319,8 +344,8 @@ pub fn draw(dut: &mut dyn Cycle, frame: &Frame, mem: MemoryModel, max_cycles: u6
         if o.verdict_valid {
             verdicts.push(o.verdict_code);
         }
-        if d.mem_ready && o.req.rd_en {
-            reads.push(cycle);
+        if d.mem_ready {
+            reads.extend(std::iter::repeat_n(cycle, o.req.rd_en.count_ones() as usize));
         }
         stalls += !d.mem_ready as u64;
         memory.edge(d.mem_ready, &o.req);

@@ -1,10 +1,11 @@
 //! The depth and colour buffers behind `pixel_out`'s memory port, in Rust (see
-//! `rtl::pixel_out` for the port's contract): one word per pixel at address `{y, x}` (`x` in
-//! the low `n` bits for size class `n`), reads returning data the cycle after, `mem$ready`
-//! stalling both.
+//! `rtl::pixel_out` for the port's contract): one word per chunk of `lanes` pixels of a row
+//! at address `{y, x / lanes}` (`x / lanes` in the low `n` - log2 `lanes` bits for size
+//! class `n`; one lane: a word per pixel at `{y, x}`), an enable per lane, reads returning
+//! data the cycle after, `mem$ready` stalling both.
 
 use crate::streams::unsigned;
-use crate::Outputs;
+use crate::{Outputs, Value};
 use model::pixel_out::Framebuffer;
 use rtl::widths::CHANNEL;
 
@@ -18,8 +19,11 @@ pub enum ReadDuringWrite {
     New,
 }
 
-/// One write the memory performed.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// The most lanes a memory word holds (`rtl::vector`'s `LANES`: 1, 2, 4 or 8).
+pub const MAX_LANES: usize = 8;
+
+/// One pixel the memory wrote.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Write {
     pub x: u32,
     pub y: u32,
@@ -27,28 +31,83 @@ pub struct Write {
     pub rgb: [u8; 3],
 }
 
-/// The memory's request in one cycle, as `pixel_out` (or `raster_top`) drives it.
+/// The pixels one edge wrote, lowest lane first.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Writes {
+    n: usize,
+    at: [Write; MAX_LANES],
+}
+
+impl Writes {
+    pub fn as_slice(&self) -> &[Write] {
+        &self.at[..self.n]
+    }
+}
+
+/// Field `i` (`width` bits at bit `i width`) of the little-endian words `words`.
+fn field(words: &[u64], width: usize, i: usize) -> u32 {
+    let lo = i * width;
+    let (w, b) = (lo / 64, lo % 64);
+    let mut v = words.get(w).copied().unwrap_or(0) >> b;
+    if b + width > 64 {
+        v |= words.get(w + 1).copied().unwrap_or(0) << (64 - b);
+    }
+    (v & ((1u64 << width) - 1)) as u32
+}
+
+/// `lanes` fields of `width` bits each ([`field`]).
+pub fn unpack(words: &[u64], width: usize, lanes: usize) -> [u32; MAX_LANES] {
+    std::array::from_fn(|i| if i < lanes { field(words, width, i) } else { 0 })
+}
+
+/// The first `lanes` of `fields`, `width` bits each, side by side in `words` (as many as
+/// they fill), little-endian.
+pub fn pack_words(fields: &[u32], width: usize, lanes: usize, words: &mut [u64]) {
+    words.fill(0);
+    for (i, &f) in fields[..lanes].iter().enumerate() {
+        let (w, b) = ((i * width) / 64, (i * width) % 64);
+        words[w] |= (f as u64) << b;
+        if b + width > 64 {
+            words[w + 1] |= (f as u64) >> (64 - b);
+        }
+    }
+}
+
+/// [`pack_words`] as a value.
+pub fn pack(fields: &[u32], width: usize, lanes: usize) -> Value {
+    let mut words = vec![0u64; (lanes * width).div_ceil(64)];
+    pack_words(fields, width, lanes, &mut words);
+    Value::from_words(lanes * width, &words)
+}
+
+/// The memory's request in one cycle, as `pixel_out` (or `raster_top`) drives it: a word
+/// of `lanes` pixels (`rtl::links::ChunkPort`; one lane: `MemoryPort`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Request {
-    pub rd_en: bool,
+    /// The lanes read and written (bit i: lane i).
+    pub rd_en: u8,
     pub rd_addr: u32,
-    pub wr_en: bool,
+    pub wr_en: u8,
     pub wr_addr: u32,
-    pub wr_z: u32,
-    pub wr_rgb: u32,
+    /// Per lane, the depth and the colour `{R, G, B}` written.
+    pub wr_z: [u32; MAX_LANES],
+    pub wr_rgb: [u32; MAX_LANES],
 }
 
 impl Request {
-    /// Read off a unit's outputs (`mem$rd_en`, ... `mem$wr_rgb`: `rtl::links::MemoryPort`).
+    /// Read off a unit's outputs (`mem$rd_en`, ... `mem$wr_rgb`), its lanes from the width
+    /// of `mem$wr_en`.
     pub fn of(o: &Outputs) -> Request {
         let get = |p: &str| unsigned(o.get(p)) as u32;
+        let lanes = o.get("mem$wr_en").width();
+        let (z, rgb) = (o.get("mem$wr_z"), o.get("mem$wr_rgb"));
         Request {
-            rd_en: get("mem$rd_en") == 1,
+            rd_en: get("mem$rd_en") as u8,
             rd_addr: get("mem$rd_addr"),
-            wr_en: get("mem$wr_en") == 1,
+            wr_en: get("mem$wr_en") as u8,
             wr_addr: get("mem$wr_addr"),
-            wr_z: get("mem$wr_z"),
-            wr_rgb: get("mem$wr_rgb"),
+            wr_z: unpack(z.words(), z.width() / lanes, lanes),
+            wr_rgb: unpack(rgb.words(), 3 * CHANNEL, lanes),
         }
     }
 }
@@ -63,32 +122,42 @@ pub struct Memory {
     pub rgb: Vec<[u8; 3]>,
     /// Whether a pixel was ever written.
     pub written: Vec<bool>,
-    /// Writes performed so far.
+    /// Pixels written so far.
     pub writes: u64,
-    /// Reads performed so far.
+    /// Pixels whose depth was read so far.
     pub reads: u64,
-    /// Address bits of `x`: the size class.
+    /// Pixels a word, and the address bits of the word's place in its row.
+    lanes: u32,
     x_bits: u32,
     read_during_write: ReadDuringWrite,
-    rd_z: u32,
+    rd_z: [u32; MAX_LANES],
 }
 
 impl Memory {
     /// Buffers cleared to depth `z_max` and colour `background`, for the `pixel_out` of size
-    /// class `class`.
-    pub fn new(class: u32, (width, height): (u32, u32), z_max: u32, background: [u8; 3], rdw: ReadDuringWrite) -> Self {
+    /// class `class` with `lanes` pixels a word (1, 2, 4 or 8).
+    pub fn new(
+        class: u32,
+        lanes: u32,
+        (width, height): (u32, u32),
+        z_max: u32,
+        background: [u8; 3],
+        rdw: ReadDuringWrite,
+    ) -> Self {
+        assert!(lanes.is_power_of_two() && lanes as usize <= MAX_LANES, "{lanes} lanes");
         let n = (width * height) as usize;
         Memory {
             width,
             height,
-            x_bits: class,
+            lanes,
+            x_bits: class - lanes.trailing_zeros(),
             depth: vec![z_max; n],
             rgb: vec![background; n],
             written: vec![false; n],
             writes: 0,
             reads: 0,
             read_during_write: rdw,
-            rd_z: 0,
+            rd_z: [0; MAX_LANES],
         }
     }
 
@@ -110,18 +179,23 @@ impl Memory {
         }
     }
 
-    /// `rd_z`: the depth last read.
-    pub fn rd_z(&self) -> u32 {
+    /// `rd_z`: the depths last read, per lane (a lane not read keeps its last).
+    pub fn rd_z(&self) -> [u32; MAX_LANES] {
         self.rd_z
     }
 
-    /// The pixel `(x, y)` at address `addr`.
-    fn xy(&self, addr: u32) -> (u32, u32) {
-        (addr & ((1 << self.x_bits) - 1), addr >> self.x_bits)
+    /// `rd_z` as the port `mem$rd_z` of `depth`-bit lanes takes it.
+    pub fn rd_z_value(&self, depth: usize) -> Value {
+        pack(&self.rd_z, depth, self.lanes as usize)
     }
 
-    fn index(&self, addr: u32, what: &str) -> usize {
-        let (x, y) = self.xy(addr);
+    /// Lane `lane`'s pixel `(x, y)` of the word at address `addr`.
+    fn xy(&self, addr: u32, lane: usize) -> (u32, u32) {
+        ((addr & ((1 << self.x_bits) - 1)) * self.lanes + lane as u32, addr >> self.x_bits)
+    }
+
+    fn index(&self, addr: u32, lane: usize, what: &str) -> usize {
+        let (x, y) = self.xy(addr, lane);
         assert!(
             x < self.width && y < self.height,
             "{what} of ({x}, {y}), off the {}x{} screen",
@@ -132,42 +206,56 @@ impl Memory {
     }
 
     /// One rising edge with `req` asked for: with `mem$ready` the memory performs the
-    /// read and the write. Returns the write, if one was performed.
-    pub fn edge(&mut self, mem_ready: bool, req: &Request) -> Option<Write> {
+    /// read and the write, lane by lane. Returns the pixels written.
+    pub fn edge(&mut self, mem_ready: bool, req: &Request) -> Writes {
+        let mut out = Writes::default();
         if !mem_ready {
-            return None;
+            return out;
         }
-        let read = req.rd_en.then(|| self.index(req.rd_addr, "read"));
-        if let (Some(i), ReadDuringWrite::Old) = (read, self.read_during_write) {
-            self.rd_z = self.depth[i];
+        let lanes = self.lanes as usize;
+        let on = |mask: u8, i: usize| mask >> i & 1 == 1;
+        let read: [Option<usize>; MAX_LANES] =
+            std::array::from_fn(|i| (i < lanes && on(req.rd_en, i)).then(|| self.index(req.rd_addr, i, "read")));
+        if self.read_during_write == ReadDuringWrite::Old {
+            self.take_reads(&read);
         }
-        let write = req.wr_en.then(|| {
-            let i = self.index(req.wr_addr, "write");
-            let rgb = [req.wr_rgb >> (2 * CHANNEL), req.wr_rgb >> CHANNEL, req.wr_rgb].map(|c| c as u8);
-            self.depth[i] = req.wr_z;
-            self.rgb[i] = rgb;
-            self.written[i] = true;
+        for i in (0..lanes).filter(|&i| on(req.wr_en, i)) {
+            let at = self.index(req.wr_addr, i, "write");
+            let c = req.wr_rgb[i];
+            let rgb = [c >> (2 * CHANNEL), c >> CHANNEL, c].map(|c| c as u8);
+            self.depth[at] = req.wr_z[i];
+            self.rgb[at] = rgb;
+            self.written[at] = true;
             self.writes += 1;
-            let (x, y) = self.xy(req.wr_addr);
-            Write { x, y, z: req.wr_z, rgb }
-        });
-        if let (Some(i), ReadDuringWrite::New) = (read, self.read_during_write) {
-            self.rd_z = self.depth[i];
+            let (x, y) = self.xy(req.wr_addr, i);
+            out.at[out.n] = Write { x, y, z: req.wr_z[i], rgb };
+            out.n += 1;
         }
-        self.reads += read.is_some() as u64;
-        write
+        if self.read_during_write == ReadDuringWrite::New {
+            self.take_reads(&read);
+        }
+        out
+    }
+
+    fn take_reads(&mut self, read: &[Option<usize>; MAX_LANES]) {
+        for (lane, at) in read.iter().enumerate() {
+            if let Some(at) = *at {
+                self.rd_z[lane] = self.depth[at];
+                self.reads += 1;
+            }
+        }
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{Memory, ReadDuringWrite};
+    use super::{pack, unpack, Memory, ReadDuringWrite, Request, Write, MAX_LANES};
     use model::pixel_out::Framebuffer;
 
     #[test]
     fn differs_from_names_the_first_pixel_that_differs() {
         let mut fb = Framebuffer::new(4, 3, 100, [1, 2, 3]);
-        let mut mem = Memory::new(2, (4, 3), 100, [1, 2, 3], ReadDuringWrite::Old);
+        let mut mem = Memory::new(2, 1, (4, 3), 100, [1, 2, 3], ReadDuringWrite::Old);
         assert_eq!(mem.differs_from(&fb), None);
         fb.depth[2 * 4 + 1] = 7;
         assert_eq!(mem.differs_from(&fb).unwrap(), "depth of pixel (1, 2): RTL 100, model 7");
@@ -175,5 +263,34 @@ mod tests {
         assert_eq!(mem.differs_from(&fb).unwrap(), "colour of pixel (3, 1): RTL [9, 9, 9], model [1, 2, 3]");
         let small = Framebuffer::new(2, 2, 100, [1, 2, 3]);
         assert_eq!(mem.differs_from(&small).unwrap(), "a 4x3 memory against a 2x2 frame");
+    }
+
+    #[test]
+    fn pack_and_unpack_fields_across_words() {
+        let f = [0xabcdef, 0x123456, 0xfedcba, 0x0f0f0f, 0, 0, 0, 0];
+        let v = pack(&f, 24, 4);
+        assert_eq!(v.width(), 96);
+        assert_eq!(v.words(), [0xdcba_1234_56ab_cdef, 0x0f0f_0ffe]);
+        assert_eq!(unpack(v.words(), 24, 4), f);
+        assert_eq!(unpack(v.words(), 24, 2)[2..], [0; MAX_LANES - 2]);
+    }
+
+    /// A word of four lanes at `{y, x / 4}`: reads and writes only the lanes enabled, each
+    /// at its own pixel, on a screen whose width is not a multiple of four.
+    #[test]
+    fn lanes_read_and_write_their_own_pixels() {
+        let mut mem = Memory::new(4, 4, (6, 3), 100, [1, 2, 3], ReadDuringWrite::Old);
+        mem.depth[2 * 6 + 5] = 55;
+        let addr = (2 << 2) | 1; // row 2, pixels 4..7
+        let mut req = Request { rd_en: 0b0010, rd_addr: addr, wr_en: 0b0001, wr_addr: addr, ..Request::default() };
+        req.wr_z[0] = 7;
+        req.wr_rgb[0] = 0x0a0b0c;
+        req.wr_z[1] = 9;
+        let w = mem.edge(true, &req);
+        assert_eq!(w.as_slice(), [Write { x: 4, y: 2, z: 7, rgb: [10, 11, 12] }]);
+        assert_eq!((mem.rd_z()[1], mem.reads, mem.writes), (55, 1, 1));
+        assert_eq!((mem.depth[2 * 6 + 4], mem.depth[2 * 6 + 5]), (7, 55), "lane 1 not written");
+        assert_eq!(mem.rd_z_value(16).words()[0], 55 << 16);
+        assert!(mem.edge(false, &Request { wr_en: 0b10, ..req }).as_slice().is_empty(), "no write when not ready");
     }
 }

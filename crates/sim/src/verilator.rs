@@ -369,6 +369,26 @@ impl VlSim {
         (self.api.set)(self.handle, id.0, words.as_ptr());
     }
 
+    /// Drives input `id` with the little-endian words `words` (as many as its width needs).
+    pub fn set_words(&mut self, id: PortId, words: &[u64]) {
+        let p = &self.ports[id.0 as usize];
+        assert!(p.dir == PortDir::In && words.len() == p.width.div_ceil(64), "{}: {}", self.unit, p.name);
+        (self.api.set)(self.handle, id.0, words.as_ptr());
+    }
+
+    /// Reads port `id` into `words` (as many as its width needs), little-endian.
+    pub fn get_words(&mut self, id: PortId, words: &mut [u64]) {
+        assert_eq!(words.len(), self.ports[id.0 as usize].width.div_ceil(64), "{}", self.unit);
+        // The shim ORs a wide port's 32-bit words in.
+        words.fill(0);
+        (self.api.get)(self.handle, id.0, words.as_mut_ptr());
+    }
+
+    /// The width of port `id`.
+    pub fn width(&self, id: PortId) -> usize {
+        self.ports[id.0 as usize].width
+    }
+
     /// Reads port `id` (at most 64 bits wide).
     pub fn get_u64(&mut self, id: PortId) -> u64 {
         debug_assert!(self.ports[id.0 as usize].width <= 64);

@@ -63,7 +63,7 @@ pub struct Lane {
     /// The output registers: a pixel inside with its depth in range, its depth and colour.
     pub o_valid: Signal<Out, Bit>,
     pub o_z: Signal<Out, Bits<DEPTH>>,
-    /// R, G, B at bits [k CHANNEL, (k+1) CHANNEL).
+    /// `{R, G, B}`, R on top.
     pub o_rgb: Signal<Out, Bits<{ 3 * CHANNEL }>>,
 
     /// The per-edge and per-channel inputs as arrays.
@@ -467,8 +467,8 @@ impl Logic for Lane {
         }
         self.o_valid.next = self.ov.q.val();
         self.o_z.next = self.oz.q.val();
-        self.o_rgb.next = bit_cast::<{ 3 * CHANNEL }, CHANNEL>(self.orgb[0].q.val())
+        self.o_rgb.next = (bit_cast::<{ 3 * CHANNEL }, CHANNEL>(self.orgb[0].q.val()) << self.ch2.val())
             | (bit_cast::<{ 3 * CHANNEL }, CHANNEL>(self.orgb[1].q.val()) << self.ch1.val())
-            | (bit_cast::<{ 3 * CHANNEL }, CHANNEL>(self.orgb[2].q.val()) << self.ch2.val());
+            | bit_cast::<{ 3 * CHANNEL }, CHANNEL>(self.orgb[2].q.val());
     }
 }
