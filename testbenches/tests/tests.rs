@@ -13,6 +13,7 @@ mod pixel_bus;
 mod pixel_out;
 mod raster_top;
 mod se;
+mod se_cmd;
 mod span;
 mod triangle_queue;
 mod triangle_setup;

@@ -29,9 +29,9 @@
 //!   `pixel_out` as they leave (one lane: a pixel a cycle; more lanes count as a `pixel_out`
 //!   as wide).
 
-use crate::render::Work;
+use crate::render::{SpanWork, Work};
 use crate::triangle_setup::schedule::Schedule;
-use crate::{cull_sort, edge_walk, pixel_out, span, vector};
+use crate::{cull_sort, edge_walk, pixel_out, se, se_cmd, span, vector};
 
 /// Hardware parameters the cycle model depends on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -102,10 +102,103 @@ pub struct FrameCycles {
 
 /// Cycles of a frame through the scanline pipeline.
 pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
+    front_end_frame(work, t, &mut SpanUnit { free: 0, write: write_latency(t) })
+}
+
+/// Cycles of a frame through the SE back end (`rtl::raster_top` with `METHOD = 2`): the
+/// scanline pipeline's front end up to the span FIFO, then `se_cmd` and the array of
+/// engines `prm` (all alike but for their index: one issue reaches every engine at once);
+/// `ready_after`: `se_cmd::ready_after` of the build's formats. The frame is done
+/// [`SE_DONE`] cycles after the last issue.
+pub fn se_frame(work: &[Work], t: &Timing, prm: &se::SeParams, ready_after: u64) -> FrameCycles {
+    front_end_frame(work, t, &mut SeIssue { prm: *prm, ready_after, free: 0, last_issue: None })
+}
+
+/// Cycles from the SE back end's last issue to the cycle its `raster_top` is done: the
+/// engines' latency (their last write in its last cycle) and a cycle for the idle flags.
+pub fn se_done(prm: &se::SeParams) -> u64 {
+    prm.latency() as u64 + SE_DONE
+}
+
+/// Cycles `done` follows the engines' last write by.
+pub const SE_DONE: u64 = 1;
+
+/// What takes the span FIFO's commands: `span` or `se_cmd`.
+trait SpanTaker {
+    /// The span `s` at the FIFO's head from cycle `avail`: the cycle it is taken. The frame
+    /// lasts at least until `last`; `busy` counts the cycles the span unit (or the engines)
+    /// worked.
+    fn take(&mut self, avail: u64, s: &SpanWork, last: &mut u64, busy: &mut u64) -> u64;
+    /// The first cycle it may take the next span.
+    fn free(&self) -> u64;
+}
+
+/// `span`: it takes a command when idle or in the last cycle of the walk before; walk cycle
+/// k's pixel leaves in start + k + LATENCY - 1 (its pixel register), and `pixel_out` is
+/// empty `write` cycles after.
+struct SpanUnit {
+    free: u64,
+    write: u64,
+}
+
+impl SpanTaker for SpanUnit {
+    fn take(&mut self, avail: u64, s: &SpanWork, last: &mut u64, busy: &mut u64) -> u64 {
+        let start = avail.max(self.free);
+        self.free = start + s.cycles as u64;
+        *busy += s.cycles as u64;
+        if let Some(k) = s.last_sent {
+            *last = (*last).max(start + k as u64 + (span::LATENCY as u64 - 1) + self.write);
+        }
+        start
+    }
+
+    fn free(&self) -> u64 {
+        self.free
+    }
+}
+
+/// `se_cmd` and the engines: a span off screen is dropped in the cycle it is taken; one on
+/// screen is offered `ready_after` cycles after and issued when `se_cmd::issue_gap` has
+/// passed since the last issue; the next is taken the cycle after.
+struct SeIssue {
+    prm: se::SeParams,
+    ready_after: u64,
+    free: u64,
+    /// The last issue: its cycle and row.
+    last_issue: Option<(u64, u32)>,
+}
+
+impl SpanTaker for SeIssue {
+    fn take(&mut self, avail: u64, s: &SpanWork, last: &mut u64, busy: &mut u64) -> u64 {
+        let start = avail.max(self.free);
+        if !s.on_screen {
+            self.free = start + 1;
+            return start;
+        }
+        let ready = start + self.ready_after;
+        let issue = match self.last_issue {
+            Some((c, y)) => ready.max(c + se_cmd::issue_gap(&self.prm, y == s.y)),
+            None => ready,
+        };
+        self.last_issue = Some((issue, s.y));
+        self.free = issue + 1;
+        *busy += self.prm.ii() as u64;
+        *last = (*last).max(issue + se_done(&self.prm));
+        start
+    }
+
+    fn free(&self) -> u64 {
+        self.free
+    }
+}
+
+/// Cycles of a frame through `cull_sort`, setup, the edge walk and the span FIFO, its
+/// commands taken by `taker`.
+fn front_end_frame(work: &[Work], t: &Timing, taker: &mut impl SpanTaker) -> FrameCycles {
     let SetupTiming { latency: setup, interval, .. } = setup_timing(t);
     let (setup, interval) = (setup as u64, interval as u64);
     let fifo = t.span_fifo.max(1) as usize;
-    let (mut ew_free, mut span_free, mut last) = (0u64, 0u64, 0u64);
+    let (mut ew_free, mut last) = (0u64, 0u64);
     // The last triangle setup took: the cycle it was taken and the cycle its result was
     // taken (setup is empty from the next one); and the spans of cycles in which setup
     // stands still (from the cycle a result is valid until the one it is taken in), those
@@ -119,7 +212,6 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
     let mut cull = CullSortStages::new(t.cull_sort);
     let mut span_starts: Vec<u64> = Vec::new();
     let mut out = FrameCycles::default();
-    let write = write_latency(t);
     for w in work.iter().filter(|w| t.cull_sort || w.passed_cull) {
         let Some(culled) = cull.passing(w.passed_cull, &mut last) else { continue };
         out.triangles += 1;
@@ -150,26 +242,16 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
         let mut now = ew_start + edge_walk::LATENCY as u64;
         for scanline in &w.scanlines {
             if let Some(span) = scanline {
-                // A full FIFO holds the walk until the span unit takes an older command.
+                // A full FIFO holds the walk until the taker takes an older command.
                 if span_starts.len() >= fifo {
                     now = now.max(span_starts[span_starts.len() - fifo]);
                 }
-                // The walk's first cycle: span takes the command when idle or in the last
-                // cycle of the walk before; walk cycle k's pixel leaves span in
-                // start + k + LATENCY - 1 (its pixel register).
-                let start = (now + 1).max(span_free);
-                span_starts.push(start);
-                span_free = start + span.cycles as u64;
-                out.span_busy += span.cycles as u64;
-                // pixel_out is empty LATENCY cycles after the one after its last pixel.
-                if let Some(k) = span.last_sent {
-                    last = last.max(start + k as u64 + (span::LATENCY as u64 - 1) + write);
-                }
+                span_starts.push(taker.take(now + 1, span, &mut last, &mut out.span_busy));
             }
             now += 1;
         }
         ew_free = now;
-        last = last.max(span_free).max(now);
+        last = last.max(taker.free()).max(now);
     }
     out.total = last;
     out
@@ -373,7 +455,6 @@ pub fn vector_frame(work: &[Work], t: &Timing) -> FrameCycles {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::SpanWork;
 
     /// 001's 5-stage divider, at which the frames below are derived by hand (setup's
     /// latency 28, II 10).
@@ -432,7 +513,7 @@ mod tests {
 
     /// A span of `c` cycles whose last cycle sends a pixel.
     fn full(c: u32) -> Option<SpanWork> {
-        Some(SpanWork { cycles: c, last_sent: Some(c - 1) })
+        Some(SpanWork { cycles: c, last_sent: Some(c - 1), ..SpanWork::default() })
     }
 
     #[test]
@@ -469,9 +550,9 @@ mod tests {
         // dropped): the frame ends when span is done, or 4 cycles after the last pixel's
         // walk cycle (out of the pixel register, into pixel_out, written).
         let mut tail = w.clone();
-        tail.scanlines[2] = Some(SpanWork { cycles: 5, last_sent: Some(1) });
+        tail.scanlines[2] = Some(SpanWork { cycles: 5, last_sent: Some(1), ..SpanWork::default() });
         assert_eq!(scanline_frame(&[tail.clone()], &l5()).total, 49);
-        tail.scanlines[2] = Some(SpanWork { cycles: 1, last_sent: None });
+        tail.scanlines[2] = Some(SpanWork { cycles: 1, last_sent: None, ..SpanWork::default() });
         // Dropped: span done at 45, the pixel walked in 43 out of span in 44, written in 46.
         assert_eq!(scanline_frame(&[tail], &l5()).total, 47);
     }

@@ -5,7 +5,8 @@
 //! * [`cull_sort`] (003), [`divider`] (001), [`triangle_setup`] (001),
 //!   [`edge_walk`] (001, 003), [`span`] (001, 003), [`pixel_out`]: the scanline pipeline;
 //! * [`vector`] (004): per-pixel barycentric rasterization;
-//! * [`se`] (000): the shading engine, cycle-exact, and the engine array drawing the scanline's spans;
+//! * [`se`] (000): the shading engine, cycle-exact, and the engine array drawing the scanline's spans,
+//!   fed by [`se_cmd`];
 //! * [`render`]: whole frames through either, with analysis mode; [`cycles`]: the cycle model;
 //! * [`raster_top`]: a frame as the scanline pipeline's RTL takes and writes it;
 //! * [`guard_band`]: the host's clipping front end; [`input`]: float vertices to hardware words;
@@ -28,6 +29,7 @@ pub mod raster_top;
 pub mod read_memory;
 pub mod render;
 pub mod se;
+pub mod se_cmd;
 pub mod span;
 pub mod triangle_queue;
 pub mod triangle_setup;

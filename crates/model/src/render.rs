@@ -66,11 +66,14 @@ pub struct Work {
 }
 
 /// What one span command cost `span` (`model::span::SpanOut`): its cycles, and the
-/// cycle of its last pixel sent to `pixel_out`, if any.
+/// cycle of its last pixel sent to `pixel_out`, if any; and what the SE back end needs of
+/// it (`cycles::se_frame`): its row, and whether it meets the screen (`se_cmd::on_screen`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct SpanWork {
     pub cycles: u32,
     pub last_sent: Option<u32>,
+    pub y: u32,
+    pub on_screen: bool,
 }
 
 /// One triangle's pixels (before the depth test) and work.
@@ -99,7 +102,12 @@ pub fn trace(v: &[Vtx; 3], clip: Clip, opts: &Options, ctx: &mut Ctx) -> Result<
                     t.spans += 1;
                     t.z_clipped += o.z_clipped;
                     t.pixels.extend(o.pixels);
-                    SpanWork { cycles: o.cycles, last_sent: o.last_sent }
+                    SpanWork {
+                        cycles: o.cycles,
+                        last_sent: o.last_sent,
+                        y: cmd.y as u32,
+                        on_screen: crate::se_cmd::on_screen(cmd, clip.width),
+                    }
                 });
                 t.work.scanlines.push(work);
             }

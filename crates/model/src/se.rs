@@ -156,7 +156,7 @@ impl SeParams {
     }
 
     /// K = log2 P, the interpolator's levels.
-    pub fn levels(&self) -> u32 {
+    pub const fn levels(&self) -> u32 {
         self.p.trailing_zeros()
     }
 

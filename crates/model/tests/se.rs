@@ -7,8 +7,9 @@ use model::cull_sort::{cull_sort, z_max, Clip, Cull};
 use model::edge_walk::edge_walk;
 use model::input::to_fixed;
 use model::render::{render, Method, Options};
-use model::se::array::{self, command};
+use model::se::array;
 use model::se::{interp::interp, mul::endpoint, SeParams};
+use model::se_cmd::se_cmd;
 use model::span::span;
 use model::triangle_setup::triangle_setup;
 use std::collections::HashMap;
@@ -35,7 +36,7 @@ fn fragments(list: &scene::Trilist, f: &Formats, cull: Cull, prm: &SeParams) -> 
         let setup = triangle_setup(&sorted, &mut ctx);
         for cmd in edge_walk(&setup, clip, &mut ctx).spans() {
             let row = cmd.y as usize * list.width as usize;
-            let se = command(cmd, f, prm.frac);
+            let se = se_cmd(cmd, f, prm.frac);
             let (lo, hi) = (cmd.xl.max(0), cmd.xr.min(list.width as i128 - 1));
             for x in lo..=hi {
                 let prm = SeParams { index: (x / prm.p as i128) as u32, ..*prm };

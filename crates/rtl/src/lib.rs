@@ -44,6 +44,8 @@ macro_rules! scanline_units {
         pub mod pixel_out;
         #[path = "raster_top.rs"]
         pub mod raster_top;
+        #[path = "se_cmd.rs"]
+        pub mod se_cmd;
         #[path = "span.rs"]
         pub mod span;
         #[path = "span_fifo.rs"]
@@ -190,8 +192,8 @@ macro_rules! no_formats {
 /// The default size class, [`fx::RTL_CLASS`] (screens up to 1024 x 1024): its units are
 /// also at the crate's root (`rtl::raster_top`, ...).
 pub use n10::{
-    command_parser, cull_sort, divider, edge_walk, gpu_regs, gpu_top, links, pixel_bus, pixel_out, raster_top, span,
-    triangle_queue, triangle_setup, vector, widths,
+    command_parser, cull_sort, divider, edge_walk, gpu_regs, gpu_top, links, pixel_bus, pixel_out, raster_top, se_cmd,
+    span, triangle_queue, triangle_setup, vector, widths,
 };
 const _: () = assert!(n10::CLASS == fx::RTL_CLASS);
 
@@ -325,6 +327,12 @@ pub const UNITS: &[Unit] = &[
         build: by_build!(pixel_out::emit_pixel_out),
     },
     Unit {
+        name: "se_cmd",
+        doc: "the SE back end's span command unit (000 Fig. 5): a span's lines A X + B for the engines, x0 A a bit a cycle, issued at the engines' gap",
+        params: &[N],
+        build: by_build!(se_cmd::emit_se_cmd),
+    },
+    Unit {
         name: "gpu_regs",
         doc: "gpu_top's register block on an AXI4-Lite slave: control, status, interrupt, buffer addresses (model::gpu_regs::Reg)",
         params: &[N],
@@ -434,6 +442,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("edge_walk", &[("N", 10), ("CLIP_Y", 1)]),
     ("span", &[("N", 10), ("CLIP_X", 1), ("CLIP_Z", 1)]),
     ("pixel_out", &[("N", 10), ("DEPTH_TEST", 1), ("LANES", 1)]),
+    ("se_cmd", &[("N", 10)]),
     ("pixel_bus", &[("N", 10)]),
     ("gpu_regs", &[("N", 10)]),
     ("command_parser", &[("N", 10), ("CACHE", 512)]),

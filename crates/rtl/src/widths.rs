@@ -47,3 +47,13 @@ pub const DEPTH: usize = WIDTHS.depth;
 pub use crate::config::CHANNEL;
 /// A colour-buffer word: R, G, B, R in the top byte.
 pub const RGB: usize = 3 * CHANNEL;
+
+/// The SE back end's engines at this build (`model::se::array::engine_params`): z and
+/// colour words of `SE_ZW` and `SE_CW` bits, `SE_F` fraction bits in A and B, whose words
+/// are `SE_ZA` and `SE_CA` bits.
+pub const SE: model::se::SeParams = model::se::array::engine_params(&FORMATS);
+pub const SE_ZW: usize = SE.zw as usize;
+pub const SE_CW: usize = SE.cw as usize;
+pub const SE_F: usize = SE.frac as usize;
+pub const SE_ZA: usize = SE_ZW + SE_F;
+pub const SE_CA: usize = SE_CW + SE_F;

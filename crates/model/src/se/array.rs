@@ -5,21 +5,11 @@
 //!
 //! # From a span command to an SE command
 //!
-//! A scanline span ([`SpanCmd`]) carries its ends xl, xr, the attributes at one end in the
-//! accumulator formats (`z_acc`, `c_acc`) and the per-pixel steps (`dz`, `dc`). The SE
-//! takes, per attribute, the line f(X) = A X + B over screen columns X:
-//!
-//! * A = the step, B = v0 - x0 A, from the end the scanline's `span` walks from (xl, or xr
-//!   for a span starting left of the screen), so that f is exactly the line `span`
-//!   accumulates;
-//! * in SE word LSBs with `frac` fraction bits (default 16), rounded half up: z words
-//!   count depth-buffer LSBs (2^-z.frac, the scanline's depth), colour words count colour
-//!   levels. From the default formats: A, B of z from `z_acc` S1.34 (18 fraction bits below
-//!   a depth LSB), of colour from `c_acc` S9.22 (22 below a level).
-//!
-//! The z-buffer's words (z.frac bits) are read zero extended; a written z word is stored
-//! as is (the SE writes only 0 <= z < old z <= z_max); a colour word is clamped to 0..255
-//! on its way into the 8-bit frame buffer.
+//! [`crate::se_cmd`]: the lines f(X) = A X + B of z, R, G and B in SE word LSBs, spans wholly
+//! off screen dropped, and the issue onto the span bus. The z-buffer's words (z.frac bits)
+//! are read zero extended; a written z word is stored as is (the SE writes only 0 <= z <
+//! old z <= z_max); a colour word is clamped to 0..255 on its way into the 8-bit frame
+//! buffer.
 //!
 //! # Rounding difference from the scanline model
 //!
@@ -50,23 +40,15 @@
 use super::{Se, SeCmd, SeIn, SeParams, PORTS, SPAN_X_BITS};
 use crate::ctx::Ctx;
 use crate::cull_sort::{cull_sort, z_max, Clip, Cull, Reject};
-use crate::edge_walk::{edge_walk, SpanCmd};
+use crate::edge_walk::edge_walk;
 use crate::guard_band;
 use crate::input::to_fixed;
 use crate::pixel_out::Framebuffer;
-use crate::triangle_setup::{triangle_setup, Attrs};
+use crate::se_cmd::{issue_gap, on_screen, se_cmd};
+use crate::triangle_setup::triangle_setup;
 use fx::{fits_s, shr_half_up, signed_bits, wrap_s, Formats};
 use scene::Trilist;
 use std::collections::VecDeque;
-
-/// A value with `from` fraction bits at `frac` fraction bits, rounded half up.
-fn to_frac(v: i128, from: u32, frac: u32) -> i128 {
-    if from >= frac {
-        shr_half_up(v, from - frac)
-    } else {
-        v << (frac - from)
-    }
-}
 
 /// The engines the backend builds for `f`: 000's P = 64 and 16 fraction bits, with z and
 /// colour words just wide enough that no line the formats can carry overflows at the
@@ -76,26 +58,13 @@ fn to_frac(v: i128, from: u32, frac: u32) -> i128 {
 /// (|v0| < 2 z, |A| < 32 z per pixel: a = 17, b = 27), colour words of 21 bits
 /// (a = 9, b = 19). 000's 24 and 16 bits would overflow on steep slivers: all.json has
 /// spans with colour slopes of 1100 levels per pixel.
-pub fn engine_params(f: &Formats) -> SeParams {
+pub const fn engine_params(f: &Formats) -> SeParams {
+    const fn word(a: u32, b: u32) -> u32 {
+        signed_bits((1i128 << a) + (1i128 << b) + 1)
+    }
     let paper = SeParams::paper(0);
     let k = paper.levels();
-    let word = |a: u32, b: u32| signed_bits((1i128 << a) + (1i128 << b) + 1);
     SeParams { zw: word(f.z_acc.int + f.z.frac, f.dz.int + f.z.frac + k), cw: word(f.c_acc.int, f.dc.int + k), ..paper }
-}
-
-/// The SE command for one scanline span, for engines with `frac` fraction bits in A, B.
-pub fn command(span: &SpanCmd, f: &Formats, frac: u32) -> SeCmd {
-    // Fraction bits of the accumulators below an SE word's LSB.
-    let below = [f.z_acc.frac - f.z.frac, f.c_acc.frac, f.c_acc.frac, f.c_acc.frac];
-    let (x0, at): (i128, Attrs) = if span.xl < 0 { (span.xr, span.right) } else { (span.xl, span.left) };
-    let v0 = [at.z, at.c[0], at.c[1], at.c[2]];
-    let step = [span.ddx.z, span.ddx.c[0], span.ddx.c[1], span.ddx.c[2]];
-    SeCmd {
-        xl: span.xl,
-        xr: span.xr,
-        a: std::array::from_fn(|j| to_frac(step[j], below[j], frac)),
-        b: std::array::from_fn(|j| to_frac(v0[j] - x0 * step[j], below[j], frac)),
-    }
 }
 
 /// Whether every attribute's line, rounded at the region's ends as the multipliers round
@@ -159,25 +128,24 @@ pub fn spans(list: &Trilist, f: &Formats, cull: Cull, frac: u32) -> (Vec<SeSpan>
         let mut ctx = Ctx::new(*f);
         let setup = triangle_setup(&sorted, &mut ctx);
         for span in edge_walk(&setup, clip, &mut ctx).spans() {
-            if span.xr < 0 || span.xl >= list.width as i128 {
+            if !on_screen(span, list.width) {
                 continue;
             }
-            out.push(SeSpan { tri: i as u32, y: span.y as u32, cmd: command(span, f, frac) });
+            out.push(SeSpan { tri: i as u32, y: span.y as u32, cmd: se_cmd(span, f, frac) });
         }
     }
     st.spans = out.len() as u64;
     (out, st)
 }
 
-/// The clock each span is issued in: [`SeParams::ii`] after the previous one, or
-/// [`SeParams::latency`] after it on the same row.
+/// The clock each span is issued in, the first in clock 0 and each next one
+/// [`issue_gap`] after the one before (spans always waiting: the engines alone).
 pub fn issue_cycles(spans: &[SeSpan], prm: &SeParams) -> Vec<u64> {
     let mut at = Vec::with_capacity(spans.len());
     for (k, s) in spans.iter().enumerate() {
         let c = match k {
             0 => 0,
-            _ if spans[k - 1].y == s.y => at[k - 1] + prm.latency() as u64,
-            _ => at[k - 1] + prm.ii() as u64,
+            _ => at[k - 1] + issue_gap(prm, spans[k - 1].y == s.y),
         };
         at.push(c);
     }
