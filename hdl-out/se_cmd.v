@@ -1,6 +1,6 @@
 
 
-module se_cmd(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$left_c0,inp$left_c1,inp$left_c2,inp$right_z,inp$right_c0,inp$right_c1,inp$right_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out_valid,out_ready,xl,xr,za,zb,ra,rb,ga,gb,ba,bb,rd_y,wr_y,idle);
+module se_cmd(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$left_c0,inp$left_c1,inp$left_c2,inp$right_z,inp$right_c0,inp$right_c1,inp$right_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out_valid,out_ready,xl,xr,za,zb,ra,rb,ga,gb,ba,bb,rd_y,wr_y,idle,engines_idle);
     
     // Module arguments
     input wire  clock;
@@ -37,6 +37,7 @@ module se_cmd(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp
     output reg  [9:0] rd_y;
     output reg  [9:0] wr_y;
     output reg  idle;
+    output reg  engines_idle;
     
     // Constant declarations
     localparam  pixel = 5'b1101;
@@ -336,6 +337,7 @@ module se_cmd(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp
             wr_y = last_y$q;
         end
         idle = ~busy$q;
+        engines_idle = ~started$q | (since$q >= latency);
     end
     
 endmodule // se_cmd

@@ -42,7 +42,8 @@ if [[ ${#files[@]} -eq 0 ]]; then
     # Other builds, each a directory under target/lint/ named unit-variant and the
     # arguments that emit it: raster_top at the larger size classes (screens up to 2048 and
     # 4096), with units left out, at formats other than its class's defaults (24-bit depth,
-    # ...), and with its barycentric method at one lane and four; the vector unit and
+    # ...), with its barycentric method at one lane and four and its SE back end (16
+    # engines); the vector unit and
     # pixel_out with several lanes.
     variants=(
         "raster_top-N11" "--param N=11"
@@ -52,6 +53,7 @@ if [[ ${#files[@]} -eq 0 ]]; then
         "raster_top-CULL_SORT=0-PIXEL_OUT=0" "--param CULL_SORT=0 --param PIXEL_OUT=0"
         "raster_top-METHOD=1" "--param METHOD=1"
         "raster_top-METHOD=1-LANES=4" "--param METHOD=1 --param LANES=4"
+        "raster_top-METHOD=2" "--param METHOD=2"
         "raster_top-custom" "--formats crates/rtl/custom-formats.json"
         "vector-LANES=4" "--param LANES=4"
         "pixel_out-LANES=4" "--param LANES=4"

@@ -305,6 +305,34 @@ fn cli_render_rtl_draws_with_the_vector_method() {
     fails_with(&["render", cube, "-o", o, "--engine", "vector", "--lanes", "3"], &["--lanes 3", "1, 2, 4"]);
 }
 
+/// `render --engine rtl --method se` draws through `raster_top`'s SE back end (`METHOD =
+/// 2`: 000's shading engines behind the scanline front end) in Verilator: its PNG is the SE
+/// model's (`--engine se`), its summary says the cycles equal `model::cycles::se_frame`'s;
+/// what does not apply to it is a clear error.
+#[test]
+fn cli_render_rtl_draws_with_the_se_back_end() {
+    let d = scratch("rtl-se");
+    let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
+    let render = |name: &str, more: &[&str]| render_cube(&d.join(name), more);
+    // Five engines: the Verilated model the raster_top tests build.
+    let (rtl, summary) = render("rtl.png", &["--engine", "rtl", "--method", "se", "--param", "ENGINES=5"]);
+    assert!(summary.contains("METHOD = 2: the scanline front end, se_cmd and 5 shading engines"), "{summary}");
+    assert!(summary.contains("image, depth and cycles equal to the se model's"), "{summary}");
+    let (model, _) = render("model.png", &["--engine", "se"]);
+    assert!(rtl == model, "raster_top's SE back end PNG is the se model's");
+    let png = d.join("x.png");
+    let o = png.to_str().unwrap();
+    let base = ["render", cube, "--size", "64x48", "-o", o, "--engine", "rtl", "--method", "se"];
+    fails_with(&[&base[..], &["--param", "ENGINES=3"]].concat(), &["3 engines", "1, 5 or 16"]);
+    fails_with(&[&base[..], &["--param", "K=3"]].concat(), &["--param K", "ENGINES"]);
+    fails_with(&[&base[..], &["--lanes", "4"]].concat(), &["--method se", "--lanes"]);
+    let wide = ["render", cube, "--size", "1100x48", "-o", o, "--engine", "rtl", "--method", "se"];
+    fails_with(&wide, &["size class 10", "1100x48"]);
+    let five =
+        ["render", cube, "--size", "400x48", "-o", o, "--engine", "rtl", "--method", "se", "--param", "ENGINES=5"];
+    fails_with(&five, &["5 engines for a screen 400 columns wide"]);
+}
+
 /// Formats other than a size class's defaults: `emit --formats` writes the scanline units
 /// at them (the manifest records them, the ports follow them), `render --engine rtl
 /// --formats` draws through them, equal to the scanline model at those formats.

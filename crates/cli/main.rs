@@ -45,8 +45,25 @@ enum Command {
     Stability(cmd::stability::Args),
 }
 
+/// The stack of the thread that runs a command: rust-hdl builds, moves and walks a design's
+/// blocks on the stack, and the largest (raster_top with 16 shading engines) overflow a
+/// main thread's 8 MiB in an unoptimised build.
+const STACK: usize = 512 << 20;
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    let run = std::thread::Builder::new().stack_size(STACK).spawn(move || run(cli));
+    match run.map(|t| t.join()) {
+        Ok(Ok(code)) => code,
+        Ok(Err(_)) => ExitCode::FAILURE,
+        Err(e) => {
+            eprintln!("edgepaint: error: starting the command's thread: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run(cli: Cli) -> ExitCode {
     let result = match cli.command {
         None => cmd::emit::run_default(),
         Some(Command::Trilist(a)) => cmd::trilist::run(a),

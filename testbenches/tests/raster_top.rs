@@ -7,7 +7,7 @@ use fx::Build;
 use model::cull_sort::Cull;
 use model::cycles::Timing;
 use model::input::Vtx;
-use model::raster_top::{self as top, raster_top, raster_top_by};
+use model::raster_top::{self as top, raster_top, raster_top_by, raster_top_se};
 use model::render::Method;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -19,6 +19,7 @@ use std::path::Path;
 use std::process::Command;
 use testbenches::frame::{self, draw, Cycle, Frame, FrameOut, MemoryModel, Report};
 use testbenches::memory::{Memory, ReadDuringWrite, Request};
+use testbenches::se_frame;
 use testbenches::streams::{as_pins, pixel_of, unsigned};
 use testbenches::{seed, Dual, Pins, Value};
 
@@ -157,6 +158,61 @@ fn raster_top_vector_4_lanes_scenes_vs_model() {
 fn raster_top_vector_2_and_8_lanes_scenes_vs_model() {
     vector_scenes(2);
     vector_scenes(8);
+}
+
+/// Every shipped scene at 64 x 48 and torus and clip at 320 x 240 drawn by `raster_top`'s
+/// SE back end (`METHOD = 2`: 000's shading engines behind the scanline front end and
+/// `se_cmd`, five engines) under Verilator: image, depth, pixels written and cycles the
+/// model's (`model::raster_top::raster_top_se`: `se::array::render`, `cycles::se_frame`).
+#[test]
+fn raster_top_se_scenes_vs_model() {
+    let mut dut = se_frame::verilator(5).unwrap_or_else(|e| panic!("{e}"));
+    let scenes = ["cube", "sphere", "cone", "torus", "pawn", "house", "all", "clip"].map(|n| (n, (64, 48)));
+    for (name, size) in scenes.into_iter().chain([("torus", (320, 240)), ("clip", (320, 240))]) {
+        let (list, cull) = scene(name, Some(size));
+        let what = format!("{name} at {size:?}, SE back end");
+        let prep =
+            raster_top_se(&Build::default(), &list, cull, [20, 24, 32]).unwrap_or_else(|e| panic!("{what}: {e}"));
+        let f = Frame {
+            build: Build::default(),
+            width: list.width,
+            height: list.height,
+            cull,
+            background: [20, 24, 32],
+            triangles: &prep.front.triangles,
+            lanes: 1,
+        };
+        let out = se_frame::draw(&mut dut, &f, 50_000_000).unwrap_or_else(|e| panic!("{what}: {e}"));
+        assert_eq!(out.memory.differs_from(&prep.fb), None, "{what}");
+        assert_eq!(out.memory.writes, prep.pixels_written, "{what}: pixels written");
+        assert_eq!(out.cycles, prep.cycles, "{what}: cycles, RTL against model::cycles::se_frame");
+        assert!(out.memory.writes > 0, "{what}");
+    }
+}
+
+/// The SE back end with its default 16 engines (`scripts/soak.sh`: its Verilated model
+/// takes minutes to build): torus at 1024 x 768 and all at 1000 x 700, image, depth, pixels
+/// written and cycles the model's.
+#[test]
+#[ignore = "soak: scripts/soak.sh"]
+fn raster_top_se_16_engines_vs_model() {
+    let mut dut = se_frame::verilator(16).unwrap_or_else(|e| panic!("{e}"));
+    for (name, size) in [("torus", (1024, 768)), ("all", (1000, 700))] {
+        let (list, cull) = scene(name, Some(size));
+        let prep = raster_top_se(&Build::default(), &list, cull, [0; 3]).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let f = Frame {
+            build: Build::default(),
+            width: list.width,
+            height: list.height,
+            cull,
+            background: [0; 3],
+            triangles: &prep.front.triangles,
+            lanes: 1,
+        };
+        let out = se_frame::draw(&mut dut, &f, 100_000_000).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(out.memory.differs_from(&prep.fb), None, "{name}");
+        assert_eq!((out.memory.writes, out.cycles), (prep.pixels_written, prep.cycles), "{name}: writes, cycles");
+    }
 }
 
 fn list(width: u32, height: u32, triangles: Vec<Triangle>) -> Trilist {

@@ -54,9 +54,10 @@ pub struct Args {
     /// size class, formats and --param). Default: gpu_top where it applies.
     #[arg(long, value_enum)]
     top: Option<super::rtl::Top>,
-    /// `--engine rtl`: raster_top's method: `scanline` (001, 003; the default) or `vector`
-    /// (004: cull_sort, the per-pixel barycentric unit, pixel_out; one pixel a cycle, colours
-    /// perspective-correct unless --linear; on the raster_top top).
+    /// `--engine rtl`: raster_top's method: `scanline` (001, 003; the default), `vector`
+    /// (004: cull_sort, the per-pixel barycentric unit with --lanes lanes, pixel_out; colours
+    /// perspective-correct unless --linear) or `se` (000's shading engines behind the scanline
+    /// front end; --param ENGINES=1, 5 or 16, default the fewest that cover the screen).
     #[arg(long, value_enum)]
     method: Option<super::rtl::RtlMethod>,
 }

@@ -12,7 +12,9 @@
 //! **`raster_top`**: triangles on the rasterizer's ports, with the depth and colour
 //! buffers in Rust (`sim::frame`); its method the scanline pipeline's (001, 003) or, with
 //! `--method vector`, 004's per-pixel barycentric unit (`METHOD = 1`) with `--lanes` lanes (1, 2, 4
-//! or 8; default 4, as the vector model's), its memory a word per chunk of lanes. The `raster_top` of the screen's size class draws it
+//! or 8; default 4, as the vector model's), its memory a word per chunk of lanes; with
+//! `--method se`, 000's shading engines behind the scanline front end (`METHOD = 2`,
+//! `sim::se_frame`). The `raster_top` of the screen's size class draws it
 //! (`fx::Build::for_screen`: class 10 up to 1024 x 1024, 11 and 12 above) at the
 //! formats asked for (`--formats`; formats edgepaint is not built at are compiled first,
 //! `super::rebuild`). The Verilated model is built the first time, cached under
@@ -55,6 +57,8 @@ pub enum RtlMethod {
     Scanline,
     /// The per-pixel barycentric unit (004), `--lanes` pixels a cycle.
     Vector,
+    /// 000's shading engines behind the scanline front end (`METHOD = 2`).
+    Se,
 }
 
 /// What draws: the method, its colours, `raster_top`'s parameters and the top.
@@ -77,6 +81,9 @@ pub fn render(
     how: &How,
 ) -> Result<Option<(Image, (String, u64))>> {
     ensure!(!analysis, "--analysis checks the models' arithmetic; it does not apply to --engine rtl");
+    if how.method == RtlMethod::Se {
+        return se_back_end(loaded, cull_back, fixed, how).map(Some);
+    }
     let (params, top, vector) = (how.params, how.top, how.method == RtlMethod::Vector);
     ensure!(
         vector || fixed.lanes.is_none(),
@@ -151,9 +158,9 @@ pub fn render(
     }
     let cull = if cull_back { Cull::Back } else { Cull::None };
     let background = loaded.background.map(|c| c.round().clamp(0.0, 255.0) as u8);
-    let method = match how.method {
-        RtlMethod::Scanline => Method::Scanline,
-        RtlMethod::Vector => Method::Vector { lanes, perspective: how.perspective },
+    let method = match vector {
+        false => Method::Scanline,
+        true => Method::Vector { lanes, perspective: how.perspective },
     };
     let prep = model::raster_top::raster_top_by(&build, list, cull, background, method)
         .map_err(|e| anyhow!("--engine rtl: {e}"))?;
@@ -234,6 +241,98 @@ pub fn render(
         written: m.written,
     };
     Ok(Some((image, (summary, r.fragments))))
+}
+
+/// The SE back end's engine counts built (`raster_top`'s `ENGINES`).
+const ENGINES: [u32; 3] = [1, 5, 16];
+
+/// `--method se`: `loaded` drawn by `raster_top` with `METHOD = 2` (the scanline front end,
+/// `se_cmd` and the fewest engines built that cover the screen, or `--param ENGINES=N`) at
+/// the default build, in Verilator (`sim::se_frame`); image, depth, pixels written and
+/// cycles checked against `model::raster_top::raster_top_se`.
+fn se_back_end(loaded: &Loaded, cull_back: bool, fixed: &FixedArgs, how: &How) -> Result<(Image, (String, u64))> {
+    let list = &loaded.trilist;
+    let build = Build::default();
+    ensure!(
+        fixed.formats_of(loaded)? == build.formats && loaded.build.is_none_or(|b| b == build),
+        "--method se: the SE back end is built at size class {} and its default formats only (screens up to {}x{}, \
+         no --formats); this is a {}x{} screen",
+        build.class,
+        1 << build.class,
+        1 << build.class,
+        list.width,
+        list.height
+    );
+    ensure!(fixed.lanes.is_none(), "--method se: --lanes is the vector unit's (--method vector)");
+    ensure!(how.top != Some(Top::GpuTop), "--method se: gpu_top holds the scanline method (--method scanline)");
+    let cover = list.width.div_ceil(64);
+    let mut engines = ENGINES.into_iter().find(|&e| e >= cover).unwrap_or(u32::MAX);
+    for (name, v) in how.params {
+        match name.as_str() {
+            "ENGINES" => engines = u32::try_from(*v).unwrap_or(u32::MAX),
+            _ => bail!("--param {name}: --method se takes ENGINES (its shading engines: 1, 5 or 16)"),
+        }
+    }
+    ensure!(
+        ENGINES.contains(&engines) && 64 * engines >= list.width,
+        "--method se: {} engines for a screen {} columns wide: raster_top's SE back end is built with 1, 5 or 16 \
+         engines of 64 columns each",
+        if engines == u32::MAX { "no number of".to_owned() } else { engines.to_string() },
+        list.width
+    );
+    let cull = if cull_back { Cull::Back } else { Cull::None };
+    let background = loaded.background.map(|c| c.round().clamp(0.0, 255.0) as u8);
+    let prep = model::raster_top::raster_top_se(&build, list, cull, background)
+        .map_err(|e| anyhow!("--engine rtl --method se: {e}"))?;
+    ensure!(!prep.front.triangles.is_empty(), "--engine rtl: no triangle to draw");
+    let f = Frame {
+        build,
+        width: list.width,
+        height: list.height,
+        cull,
+        background,
+        triangles: &prep.front.triangles,
+        lanes: 1,
+    };
+    let mut dut = sim::se_frame::verilator(engines).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let start = Instant::now();
+    let out = sim::se_frame::draw(&mut dut, &f, 2 * prep.cycles + 100_000).map_err(|e| anyhow!(e))?;
+    let secs = start.elapsed().as_secs_f64();
+    if let Some(first) = out.memory.differs_from(&prep.fb) {
+        bail!("the RTL's image differs from the se model's ({first}): a bug in the RTL or the model");
+    }
+    ensure!(
+        out.cycles == prep.cycles && out.memory.writes == prep.pixels_written,
+        "the RTL took {} cycles and wrote {} pixels, the model {} and {}: a bug in the RTL or the model",
+        out.cycles,
+        out.memory.writes,
+        prep.cycles,
+        prep.pixels_written
+    );
+    let drawn = out.verdicts.iter().filter(|&&v| v as u64 == rtl::cull_sort::verdict::PASSED).count();
+    let summary = format!(
+        "rtl (raster_top of size class {}, METHOD = 2: the scanline front end, se_cmd and {engines} shading engines of \
+         64 pixels, in Verilator): {} triangles in, {drawn} drawn; {} spans issued, {} pixels written; {} cycles \
+         (model::cycles::se_frame: {}), {:.3} pixels per clock; {:.0} cycles/s simulated ({secs:.2} s); image, \
+         depth and cycles equal to the se model's",
+        build.class,
+        list.triangles.len(),
+        out.reads / 16,
+        out.memory.writes,
+        out.cycles,
+        prep.cycles,
+        out.memory.writes as f64 / out.cycles.max(1) as f64,
+        out.cycles as f64 / secs,
+    );
+    let m = out.memory;
+    let image = Image {
+        width: m.width,
+        height: m.height,
+        depth16: m.depth.iter().map(|&d| depth16(d, build.formats.z.frac)).collect(),
+        rgb: m.rgb,
+        written: m.written,
+    };
+    Ok((image, (summary, m.writes)))
 }
 
 /// `--top gpu_top`: `loaded` packed into a vertex buffer (a vertex buffer's own bytes when

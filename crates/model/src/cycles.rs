@@ -109,25 +109,22 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
 /// scanline pipeline's front end up to the span FIFO, then `se_cmd` and the array of
 /// engines `prm` (all alike but for their index: one issue reaches every engine at once);
 /// `ready_after`: `se_cmd::ready_after` of the build's formats. The frame is done
-/// [`SE_DONE`] cycles after the last issue.
+/// [`se_done`] cycles after the last issue.
 pub fn se_frame(work: &[Work], t: &Timing, prm: &se::SeParams, ready_after: u64) -> FrameCycles {
     front_end_frame(work, t, &mut SeIssue { prm: *prm, ready_after, free: 0, last_issue: None })
 }
 
 /// Cycles from the SE back end's last issue to the cycle its `raster_top` is done: the
-/// engines' latency (their last write in its last cycle) and a cycle for the idle flags.
+/// engines' latency (their last write is in the cycle before).
 pub fn se_done(prm: &se::SeParams) -> u64 {
-    prm.latency() as u64 + SE_DONE
+    prm.latency() as u64
 }
-
-/// Cycles `done` follows the engines' last write by.
-pub const SE_DONE: u64 = 1;
 
 /// What takes the span FIFO's commands: `span` or `se_cmd`.
 trait SpanTaker {
-    /// The span `s` at the FIFO's head from cycle `avail`: the cycle it is taken. The frame
-    /// lasts at least until `last`; `busy` counts the cycles the span unit (or the engines)
-    /// worked.
+    /// The span `s` at the FIFO's head from the cycle before `avail`: the cycle after the one
+    /// it is taken in. The frame lasts at least until `last`; `busy` counts the cycles the
+    /// span unit (or the engines) worked.
     fn take(&mut self, avail: u64, s: &SpanWork, last: &mut u64, busy: &mut u64) -> u64;
     /// The first cycle it may take the next span.
     fn free(&self) -> u64;
@@ -163,6 +160,7 @@ impl SpanTaker for SpanUnit {
 struct SeIssue {
     prm: se::SeParams,
     ready_after: u64,
+    /// The cycle after the first one `se_cmd` may take a span in.
     free: u64,
     /// The last issue: its cycle and row.
     last_issue: Option<(u64, u32)>,
@@ -175,13 +173,13 @@ impl SpanTaker for SeIssue {
             self.free = start + 1;
             return start;
         }
-        let ready = start + self.ready_after;
+        let ready = start - 1 + self.ready_after;
         let issue = match self.last_issue {
             Some((c, y)) => ready.max(c + se_cmd::issue_gap(&self.prm, y == s.y)),
             None => ready,
         };
         self.last_issue = Some((issue, s.y));
-        self.free = issue + 1;
+        self.free = issue + 2;
         *busy += self.prm.ii() as u64;
         *last = (*last).max(issue + se_done(&self.prm));
         start

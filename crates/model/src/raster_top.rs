@@ -132,6 +132,30 @@ pub fn raster_top_by(
     Ok(RasterTopOut { build: *build, method, triangles, skipped, sorted, render, fragments, pixels, writes })
 }
 
+/// One frame through `raster_top`'s SE back end (`METHOD = 2`).
+pub struct RasterTopSeOut {
+    /// The scanline front end's frame: the input words sent, the triangles culled, the
+    /// work of each (its spans' rows and whether they meet the screen).
+    pub front: RasterTopOut,
+    /// The image and depth the engines draw (`se::array::render`).
+    pub fb: Framebuffer,
+    /// Pixels the engines wrote.
+    pub pixels_written: u64,
+    /// The frame's cycles ([`cycles::se_frame`], triangles back to back).
+    pub cycles: u64,
+}
+
+/// `list` drawn with `cull` on `background` by the SE back end of `build` (the class's
+/// default formats; an error where the engine array cannot draw the screen).
+pub fn raster_top_se(build: &Build, list: &Trilist, cull: Cull, background: [u8; 3]) -> Result<RasterTopSeOut, String> {
+    let front = raster_top_by(build, list, cull, background, Method::Scanline)?;
+    let f = &build.formats;
+    let se = crate::se::array::render(list, f, cull, background)?;
+    let prm = crate::se::array::array_params(list.width, f)?;
+    let cycles = cycles::se_frame(&front.render.work, &Timing::default(), &prm, crate::se_cmd::ready_after(f)).total;
+    Ok(RasterTopSeOut { front, fb: se.fb, pixels_written: se.pixels_written, cycles })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -44,6 +44,8 @@ macro_rules! scanline_units {
         pub mod pixel_out;
         #[path = "raster_top.rs"]
         pub mod raster_top;
+        #[path = "se_array.rs"]
+        pub mod se_array;
         #[path = "se_cmd.rs"]
         pub mod se_cmd;
         #[path = "span.rs"]
@@ -395,10 +397,15 @@ pub const UNITS: &[Unit] = &[
             Param {
                 name: "METHOD",
                 default: 0,
-                doc: "0: the scanline method (001, 003); 1: the barycentric method (004): cull_sort, vector, pixel_out (K unused)",
+                doc: "0: the scanline method (001, 003); 1: the barycentric method (004): cull_sort, vector, pixel_out (K unused); 2: the SE back end (000): the scanline front end, se_cmd and ENGINES shading engines",
             },
             PERSPECTIVE,
             LANES,
+            Param {
+                name: "ENGINES",
+                default: 16,
+                doc: "the SE back end's shading engines (METHOD = 2): 1, 5 or 16, screens up to 64 columns a engine",
+            },
         ],
         build: by_build!(raster_top::emit_raster_top),
     },
@@ -463,6 +470,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
             ("METHOD", 0),
             ("PERSPECTIVE", 1),
             ("LANES", 1),
+            ("ENGINES", 16),
         ],
     ),
     ("gpu_top", &[("N", 10), ("K", 7), ("L", model::divider::LATENCY as u64)]),

@@ -28,6 +28,25 @@ crate::bundle! {
     }
 }
 
+crate::bundle! {
+    /// The SE back end's memory port (`raster_top` with `METHOD = 2`, `rtl::se_array`): a
+    /// word of `EL` = 4 x engines lanes, lane 4 i + k the pixel 64 i + 4 j + k of a row for
+    /// group j (engine i's port k), at address `{y, j}` (`AW` bits); a depth a lane (`ZW` =
+    /// `EL` x `DEPTH` bits) and a colour (`CW` = `EL` x 24 bits, `{R, G, B}`). A read's data
+    /// is wanted on `rd_z` in the cycle it is asked for (the engines' old-z load, 000 Fig. 6);
+    /// a write is made at the rising edge, the lanes of `wr_en`.
+    SeMemory<const EL: usize, const AW: usize, const ZW: usize, const CW: usize> {
+        Out rd: Bit,
+        Out rd_addr: Bits<AW>,
+        In rd_z: Bits<ZW>,
+        Out wr: Bit,
+        Out wr_addr: Bits<AW>,
+        Out wr_en: Bits<EL>,
+        Out wr_z: Bits<ZW>,
+        Out wr_rgb: Bits<CW>,
+    }
+}
+
 /// The memory port of one lane: a word per pixel at address `{y, x}`, a depth and a
 /// colour (`{R, G, B}`, R in the top byte), as the scanline `raster_top` has it.
 pub type MemoryPort = ChunkPort<1, ADDR, DEPTH, RGB>;

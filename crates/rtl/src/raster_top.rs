@@ -48,16 +48,19 @@
 use super::cull_sort::CullSort;
 use super::edge_walk::EdgeWalk;
 use super::links::{
-    ChunkPort, MemoryPort, PixelSource, SortedSink, SortedSource, SpanCmdSource, TriangleSetupSource, TriangleSink,
+    ChunkPort, MemoryPort, PixelSource, SeMemory, SortedSink, SortedSource, SpanCmdSource, TriangleSetupSource, TriangleSink,
     Verdict,
 };
 use super::pixel_out::{ChunkOut, PixelOut};
+use super::se_array::Bank;
+use super::se_cmd::SeCmd;
 use super::span::Span;
 use super::span_fifo::SpanFifo;
 use super::triangle_setup::TriangleSetup;
 use super::vector::Vector;
 use super::widths::{ADDR, DEPTH, DIM, RGB, SCREEN};
 use crate::emit::{emit_unit, Emitted};
+use crate::parts::Concat;
 use crate::switch::Parts;
 use crate::Params;
 use rust_hdl::prelude::*;
@@ -458,6 +461,168 @@ crate::pins!(impl[const LANES: usize, const ZW: usize, const CW: usize, const AW
 /// The barycentric `raster_top` at one lane, on the scanline one's memory port.
 pub type RasterTopVector1 = RasterTopVector<1, DEPTH, RGB, ADDR>;
 
+/// The SE back end (`METHOD = 2`, paper 000 on the scanline front end of 001/003):
+/// `cull_sort`, `triangle_setup`, `edge_walk` and the span FIFO as [`RasterTop`]'s, then
+/// `se_cmd` and `E` shading engines on one span bus (`rtl::se_array`), with [`RasterTop`]'s
+/// ports but the engines' banked memory port (`links::SeMemory`: `EL` = 4 `E` lanes, `ZW`
+/// and `CW` bits of depths and colours); screens up to 64 `E` columns wide.
+/// `model::cycles::se_frame` predicts the frame cycle for cycle.
+#[derive(LogicBlock)]
+pub struct RasterTopSe<const E: usize, const EL: usize, const ZW: usize, const CW: usize> {
+    pub clock: Signal<In, Clock>,
+    /// As [`RasterTop`]'s.
+    pub width: Signal<In, Bits<DIM>>,
+    pub height: Signal<In, Bits<DIM>>,
+    pub inp: TriangleSink,
+    pub inp_last: Signal<In, Bit>,
+    pub cull_back: Signal<In, Bit>,
+    pub verdict: Verdict,
+    pub mem: SeMemory<EL, { SCREEN + 4 }, ZW, CW>,
+    pub done: Signal<Out, Bit>,
+    cull_sort: CullSort,
+    triangle_setup: TriangleSetup,
+    edge_walk: EdgeWalk,
+    fifo: SpanFifo,
+    se_cmd: SeCmd,
+    banks: Vec<Bank<ZW, CW, EL>>,
+    /// The banks' write words gathered.
+    g_z: Vec<Signal<Local, Bits<ZW>>>,
+    g_rgb: Vec<Signal<Local, Bits<CW>>>,
+    g_en: Vec<Signal<Local, Bits<EL>>>,
+    rd_addr: Concat<SCREEN, 4, { SCREEN + 4 }>,
+    wr_addr: Concat<SCREEN, 4, { SCREEN + 4 }>,
+    /// Triangles in setup, as [`RasterTopCore`]'s.
+    in_setup: DFF<Bits<3>>,
+    taken: Signal<Local, Bit>,
+    handed: Signal<Local, Bit>,
+    last_in: DFF<Bit>,
+}
+
+impl<const E: usize, const EL: usize, const ZW: usize, const CW: usize> RasterTopSe<E, EL, ZW, CW> {
+    /// `cull_sort`, setup with `k` multipliers and an `l`-stage divider, the edge walk, the
+    /// span FIFO, `se_cmd` and the `E` engines, with the parts `parts` says (`CULL`,
+    /// `CLIP_Y`).
+    pub fn new(k: usize, l: usize, parts: &Parts) -> Result<Self, String> {
+        assert!(EL == 4 * E && ZW == EL * DEPTH && CW == EL * RGB, "RasterTopSe<{E}, {EL}, {ZW}, {CW}>");
+        if !super::se_array::FITS {
+            return Err("raster_top: METHOD = 2 (the SE back end) is built at size class 10's default formats, whose engines are rtl::se::SeWide".into());
+        }
+        Ok(RasterTopSe {
+            clock: Default::default(),
+            width: Default::default(),
+            height: Default::default(),
+            inp: Default::default(),
+            inp_last: Default::default(),
+            cull_back: Default::default(),
+            verdict: Default::default(),
+            mem: Default::default(),
+            done: Default::default(),
+            cull_sort: CullSort::new(parts),
+            triangle_setup: TriangleSetup::new(k, l)?,
+            edge_walk: EdgeWalk::new(parts),
+            fifo: Default::default(),
+            se_cmd: Default::default(),
+            banks: (0..E).map(Bank::new).collect(),
+            g_z: (0..=E).map(|_| Default::default()).collect(),
+            g_rgb: (0..=E).map(|_| Default::default()).collect(),
+            g_en: (0..=E).map(|_| Default::default()).collect(),
+            rd_addr: Default::default(),
+            wr_addr: Default::default(),
+            in_setup: Default::default(),
+            taken: Default::default(),
+            handed: Default::default(),
+            last_in: Default::default(),
+        })
+    }
+}
+
+impl<const E: usize, const EL: usize, const ZW: usize, const CW: usize> Logic for RasterTopSe<E, EL, ZW, CW> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, in_setup, last_in);
+        clock!(self, clock, cull_sort, triangle_setup, edge_walk, fifo, se_cmd);
+        for i in 0..E {
+            self.banks[i].clock.next = self.clock.val();
+        }
+        self.cull_sort.width.next = self.width.val();
+        self.cull_sort.height.next = self.height.val();
+        self.cull_sort.cull_back.next = self.cull_back.val();
+        self.edge_walk.height.next = self.height.val();
+        self.se_cmd.width.next = self.width.val();
+        // Triangles into cull_sort, on through setup and the edge walk into the span FIFO.
+        TriangleSink::link(&mut self.inp, &mut self.cull_sort.inp);
+        Verdict::link(&mut self.verdict, &mut self.cull_sort.verdict);
+        SortedSource::join(&mut self.cull_sort.out, &mut self.triangle_setup.inp);
+        TriangleSetupSource::join(&mut self.triangle_setup.out, &mut self.edge_walk.inp);
+        SpanCmdSource::join(&mut self.edge_walk.out, &mut self.fifo.inp);
+        SpanCmdSource::join(&mut self.fifo.out, &mut self.se_cmd.inp);
+
+        // The span bus: every engine takes each command; all run in step.
+        self.g_z[0].next = 0.into();
+        self.g_rgb[0].next = 0.into();
+        self.g_en[0].next = 0.into();
+        for i in 0..E {
+            self.banks[i].valid.next = self.se_cmd.out_valid.val();
+            self.banks[i].xl.next = self.se_cmd.xl.val();
+            self.banks[i].xr.next = self.se_cmd.xr.val();
+            self.banks[i].za.next = self.se_cmd.za.val();
+            self.banks[i].zb.next = self.se_cmd.zb.val();
+            self.banks[i].ra.next = self.se_cmd.ra.val();
+            self.banks[i].rb.next = self.se_cmd.rb.val();
+            self.banks[i].ga.next = self.se_cmd.ga.val();
+            self.banks[i].gb.next = self.se_cmd.gb.val();
+            self.banks[i].ba.next = self.se_cmd.ba.val();
+            self.banks[i].bb.next = self.se_cmd.bb.val();
+            self.banks[i].rd_z.next = self.mem.rd_z.val();
+            self.g_z[i + 1].next = self.g_z[i].val() | self.banks[i].wr_z.val();
+            self.g_rgb[i + 1].next = self.g_rgb[i].val() | self.banks[i].wr_rgb.val();
+            self.g_en[i + 1].next = self.g_en[i].val() | self.banks[i].wr_en.val();
+        }
+        for i in 0..1 {
+            self.se_cmd.out_ready.next = self.banks[i].ready.val();
+            self.mem.rd.next = self.banks[i].oz_rd.val();
+            self.rd_addr.lo.next = self.banks[i].oz_addr.val();
+            self.mem.wr.next = self.banks[i].wr.val();
+            self.wr_addr.lo.next = self.banks[i].wr_addr.val();
+        }
+        for i in E..(E + 1) {
+            self.mem.wr_z.next = self.g_z[i].val();
+            self.mem.wr_rgb.next = self.g_rgb[i].val();
+            self.mem.wr_en.next = self.g_en[i].val();
+        }
+        self.rd_addr.hi.next = self.se_cmd.rd_y.val();
+        self.wr_addr.hi.next = self.se_cmd.wr_y.val();
+        self.mem.rd_addr.next = self.rd_addr.out.val();
+        self.mem.wr_addr.next = self.wr_addr.out.val();
+
+        self.taken.next = self.triangle_setup.inp.valid.val() & self.triangle_setup.inp.ready.val();
+        self.handed.next = self.triangle_setup.out.valid.val() & self.edge_walk.inp.ready.val();
+        if self.taken.val() & !self.handed.val() {
+            self.in_setup.d.next = self.in_setup.q.val() + 1;
+        }
+        if !self.taken.val() & self.handed.val() {
+            self.in_setup.d.next = self.in_setup.q.val() - 1;
+        }
+        if self.inp.valid.val() & self.inp.ready.val() {
+            self.last_in.d.next = self.inp_last.val();
+        }
+        self.done.next = self.last_in.q.val()
+            & self.cull_sort.idle.val()
+            & (self.in_setup.q.val() == 0)
+            & self.edge_walk.inp.ready.val()
+            & self.fifo.empty.val()
+            & self.se_cmd.idle.val()
+            & self.se_cmd.engines_idle.val();
+    }
+}
+
+crate::pins!(impl[const E: usize, const EL: usize, const ZW: usize, const CW: usize] RasterTopSe<E, EL, ZW, CW> {
+    clock: clock,
+    inputs: [width, height, inp_last, cull_back],
+    outputs: [done],
+    links: [inp, mem, verdict],
+});
+
 /// `UNITS` entry: the rasterizer with `params["K"]` setup multipliers, a
 /// `params["L"]`-stage divider, `cull_sort` and `pixel_out` present (1) or not (0) as
 /// `params["CULL_SORT"]` and `params["PIXEL_OUT"]` say, and the optional parts of the units
@@ -503,7 +668,24 @@ pub fn emit_raster_top(params: &Params) -> Result<Emitted, String> {
                 n => return Err(format!("raster_top: LANES = {n}: 1, 2, 4 or 8 (METHOD = 1)")),
             });
         }
-        m => return Err(format!("raster_top: METHOD = {m}: 0 (scanline) or 1 (vector)")),
+        2 => {
+            if (params["CULL_SORT"], params["PIXEL_OUT"]) != (1, 1) || !(parts.clip_x && parts.clip_z && parts.depth_test) {
+                return Err("raster_top: METHOD = 2 (the SE back end) is built with cull_sort and its engines (CULL_SORT = 1, PIXEL_OUT = 1; CLIP_X, CLIP_Z and DEPTH_TEST are the engines' own: 1)".into());
+            }
+            if params["LANES"] != 1 {
+                return Err("raster_top: LANES is the vector unit's (METHOD = 1); METHOD = 2 has ENGINES".into());
+            }
+            let p = &parts;
+            return Ok(match params["ENGINES"] {
+                1 => emit_unit("raster_top", RasterTopSe::<1, 4, { 4 * DEPTH }, { 4 * RGB }>::new(k, l, p)?, params),
+                5 => emit_unit("raster_top", RasterTopSe::<5, 20, { 20 * DEPTH }, { 20 * RGB }>::new(k, l, p)?, params),
+                16 => {
+                    emit_unit("raster_top", RasterTopSe::<16, 64, { 64 * DEPTH }, { 64 * RGB }>::new(k, l, p)?, params)
+                }
+                n => return Err(format!("raster_top: ENGINES = {n}: 1, 5 or 16 (screens up to 64, 320 or 1024 columns)")),
+            });
+        }
+        m => return Err(format!("raster_top: METHOD = {m}: 0 (scanline), 1 (vector) or 2 (se)")),
     }
     if params["CULL_SORT"] == 0 && !parts.cull {
         return Err("raster_top: CULL = 0 removes cull_sort's rejecting and culling, which CULL_SORT = 0 has no unit for".into());

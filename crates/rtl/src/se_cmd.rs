@@ -28,6 +28,8 @@ use rust_hdl::prelude::*;
 /// value less it.
 const PZ: usize = PIXEL + DZ + 1;
 const PC: usize = PIXEL + DC + 1;
+// `k` counts x0's bits in 5; the start values fit beside the products.
+const _: () = assert!(PIXEL < 32 && Z_ACC < PZ && C_ACC < PC);
 /// Fraction bits of the accumulators below an SE word's LSB.
 const BELOW_Z: usize = (FORMATS.z_acc.frac - FORMATS.z.frac) as usize;
 const BELOW_C: usize = FORMATS.c_acc.frac as usize;
@@ -180,6 +182,9 @@ pub struct SeCmd {
     pub wr_y: Signal<Out, Bits<SCREEN>>,
     /// No span held.
     pub idle: Signal<Out, Bit>,
+    /// The engines are done with every span issued: none was, or the last was issued their
+    /// latency ago (its last write was in the cycle before).
+    pub engines_idle: Signal<Out, Bit>,
     attr_z: AttrZ,
     attr_r: AttrC,
     attr_g: AttrC,
@@ -213,7 +218,6 @@ pub struct SeCmd {
 
 impl Default for SeCmd {
     fn default() -> Self {
-        assert!(PIXEL < 32 && Z_ACC < PZ && C_ACC < PC, "se_cmd at PIXEL = {PIXEL}");
         let latency = SE.latency() as usize;
         assert!(latency < 255, "the engines' latency {latency} fits `since`");
         SeCmd {
@@ -235,6 +239,7 @@ impl Default for SeCmd {
             rd_y: Default::default(),
             wr_y: Default::default(),
             idle: Default::default(),
+            engines_idle: Default::default(),
             attr_z: Attr::new(BELOW_Z),
             attr_r: Attr::new(BELOW_C),
             attr_g: Attr::new(BELOW_C),
@@ -363,13 +368,14 @@ impl Logic for SeCmd {
             self.wr_y.next = self.last_y.q.val();
         }
         self.idle.next = !self.busy.q.val();
+        self.engines_idle.next = !self.started.q.val() | (self.since.q.val() >= self.latency.val());
     }
 }
 
 crate::pins!(SeCmd {
     clock: clock,
     inputs: [width, out_ready],
-    outputs: [out_valid, xl, xr, za, zb, ra, rb, ga, gb, ba, bb, rd_y, wr_y, idle],
+    outputs: [out_valid, xl, xr, za, zb, ra, rb, ga, gb, ba, bb, rd_y, wr_y, idle, engines_idle],
     links: [inp],
 });
 

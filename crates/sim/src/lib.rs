@@ -15,6 +15,7 @@
 
 pub mod frame;
 pub mod memory;
+pub mod se_frame;
 pub mod soc;
 pub mod streams;
 pub mod verilator;

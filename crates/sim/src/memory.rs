@@ -45,7 +45,7 @@ impl Writes {
 }
 
 /// Field `i` (`width` bits at bit `i width`) of the little-endian words `words`.
-fn field(words: &[u64], width: usize, i: usize) -> u32 {
+pub fn field(words: &[u64], width: usize, i: usize) -> u32 {
     let lo = i * width;
     let (w, b) = (lo / 64, lo % 64);
     let mut v = words.get(w).copied().unwrap_or(0) >> b;
