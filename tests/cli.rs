@@ -549,7 +549,10 @@ fn cli_fit_and_render_param_errors_are_clear() {
     fails_with(&fit("psnr>=40,,problems=0", &[]), &["empty term"]);
     fails_with(&fit("psnr<=40", &[]), &["\"psnr<=40\"", "larger is better"]);
     fails_with(&fit("sharpness>=2", &[]), &["unknown measure \"sharpness\""]);
-    fails_with(&fit("psnr>=40", &["--method", "vector"]), &["--method vector", "no RTL pipeline"]);
+    fails_with(
+        &fit("psnr>=40", &["--method", "vector"]),
+        &["--method vector", "scanline pipeline's formats and parts only"],
+    );
     fails_with(
         &fit("colour_max_lsb<=0,coverage_differs=0", &["--no-synth", "--no-proof"]),
         &["not met even with every knob at its ceiling", "cube: "],

@@ -146,18 +146,25 @@ pub fn compare(list: &Trilist, s: &Setup) -> Report {
 
 /// Draws `list` with 000's shading engines behind the scanline pipeline's spans
 /// (`model::se::array`, `render --engine se`) and compares with the reference, screen-linear
-/// as the scanline method; `s.method` and `s.timing` are not used (the engines' own cycles
-/// count). Problems: triangles whose vertices do not fit the input formats, and spans whose
-/// line overflowed an engine's words. Errs when no SE array fits the screen or the formats.
+/// as the scanline method; `s.method` is not used. The cycles are the whole SE back end's
+/// (`raster_top` with `METHOD = 2`: the scanline front end at `s.timing`, `se_cmd` and the
+/// engines; `model::cycles::se_frame`). Problems: triangles whose vertices do not fit the
+/// input formats, and spans whose line overflowed an engine's words. Errs when no SE array
+/// fits the screen or the formats.
 pub fn compare_se(list: &Trilist, s: &Setup) -> Result<Report, String> {
-    let r = model::se::array::render(list, &s.formats, model_cull(s.cull_back), background8(s.background))?;
+    let (cull, background) = (model_cull(s.cull_back), background8(s.background));
+    let r = model::se::array::render(list, &s.formats, cull, background)?;
+    let prm = model::se::array::array_params(list.width, &s.formats)?;
+    let opts = ModelOptions { method: Method::Scanline, cull, analysis: false, background };
+    let work = model_render(list, &s.formats, &opts, &mut |_| {}).work;
+    let cycles = model::cycles::se_frame(&work, &s.timing, &prm, model::se_cmd::ready_after(&s.formats)).total;
     let frame = Fixed {
         method: format!("se ({} engines)", r.engines),
         problems: r.stats.input_rejected + r.ends_overflowed,
         degenerate: r.stats.degenerate,
         pixels_written: r.pixels_written,
         fb: r.fb,
-        cycles: r.cycles,
+        cycles,
     };
     Ok(against_reference(list, s, false, frame))
 }

@@ -64,7 +64,8 @@ pub struct Args {
 pub fn run(args: Args) -> Result<()> {
     if args.method == "se" || args.method == "vector" {
         bail!(
-            "--method {}: fit emits RTL, and the {} method has no RTL pipeline yet; use scanline or auto",
+            "--method {}: fit searches the scanline pipeline's formats and parts only so far (the {} method's RTL is \
+             built at the default formats); use scanline or auto",
             args.method,
             args.method
         );

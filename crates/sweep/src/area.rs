@@ -58,6 +58,27 @@ pub const VECTOR_LANE: Cost = Cost {
     ice40_lut4: ((417_995.0 - 252_322.0) + 1_701.0) * VECTOR_PIPELINE.ice40_lut4 / VECTOR_PIPELINE.ge,
 };
 
+/// The SE back end (`raster_top` with `METHOD = 2`: the scanline front end, `se_cmd` and
+/// five shading engines) at the default design, synthesized (`edgepaint report --unit
+/// raster_top --param METHOD=2 --param ENGINES=5`, stop 41; README, "Units"): the generic
+/// flow's gate equivalents count the engines' corner-turning RAMs as flip-flops, ECP5 maps
+/// them to 605 LUT RAMs; iCE40 LUT4s, not synthesized, in the vector pipeline's ratio of
+/// iCE40 to ECP5 LUT4s.
+pub const SE_PIPELINE_5: Cost = Cost {
+    ge: 943_093.0,
+    ecp5_lut4: 47_771.0,
+    ecp5_ff: 17_990.0,
+    ecp5_dsp: 30.0,
+    ice40_lut4: 47_771.0 * VECTOR_PIPELINE.ice40_lut4 / VECTOR_PIPELINE.ecp5_lut4,
+};
+
+/// The SE back end for a screen `width` columns wide at the default design: the fewest
+/// engines built that cover it (`rtl::raster_top`'s `ENGINES`: 1, 5 or 16), priced where
+/// that is five, the engine count measured ([`SE_PIPELINE_5`]); `None` elsewhere.
+pub fn se_pipeline(width: u32) -> Option<Cost> {
+    (65..=320).contains(&width).then_some(SE_PIPELINE_5)
+}
+
 /// The barycentric pipeline at `lanes` lanes (1, 2, 4 or 8) at the default design: measured
 /// at one ([`VECTOR_PIPELINE`]); beyond it a model, a [`VECTOR_LANE`] per lane more (the
 /// lanes beside one another). Checked against `raster_top` at `LANES=4` synthesized (stop

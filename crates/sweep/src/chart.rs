@@ -179,8 +179,8 @@ fn default_label(r: &Row) -> String {
     }
 }
 
-/// A title's note naming the methods without the figure (`has`): ` (vector, se: no RTL
-/// pipeline yet, not shown)`, empty when every method has it.
+/// A title's note naming the methods without the figure (`has`): ` (vector, se: not
+/// measured in RTL yet, not shown)`, empty when every method has it.
 fn missing(rows: &[Row], has: fn(&Row) -> bool) -> String {
     let mut methods: BTreeMap<&str, bool> = BTreeMap::new();
     for r in rows {
@@ -189,7 +189,7 @@ fn missing(rows: &[Row], has: fn(&Row) -> bool) -> String {
     let without: Vec<&str> = methods.into_iter().filter(|(_, has)| !has).map(|(m, _)| m).collect();
     match without.is_empty() {
         true => String::new(),
-        false => format!(" ({}: no RTL pipeline yet, not shown)", without.join(", ")),
+        false => format!(" ({}: not measured in RTL yet, not shown)", without.join(", ")),
     }
 }
 
@@ -622,7 +622,7 @@ pub(crate) mod tests {
             assert_eq!(c.series.len(), 1, "{stem}");
             assert_eq!(c.series[0].name, "scanline");
             assert!((c.series[0].points[0].x - x).abs() < 1e-9, "{stem}");
-            assert!(c.title.ends_with(" (vector: no RTL pipeline yet, not shown)"), "{}", c.title);
+            assert!(c.title.ends_with(" (vector: not measured in RTL yet, not shown)"), "{}", c.title);
         }
         let no_rtl: Vec<Row> = rows().into_iter().filter(|r| r.method == "vector").collect();
         assert!(charts_stems(&no_rtl).iter().all(|s| s != "error_vs_frame_time" && s != "error_vs_area"));

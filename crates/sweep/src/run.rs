@@ -138,6 +138,9 @@ impl Task<'_> {
         if self.point.method == Method::Vector {
             return self.priced_vector(row, n);
         }
+        if self.point.method == Method::Se {
+            return self.priced_se(row, n);
+        }
         if self.point.method != Method::Scanline || rtl::config::check(n, &self.formats).is_err() {
             return row;
         }
@@ -170,6 +173,19 @@ impl Task<'_> {
         (row.clock_mhz, row.clock_source) = (Some(mhz), Some(source));
         row.frame_us = Some(row.cycles as f64 / mhz);
         (row.cost, row.cost_source) = (Some(cost), Some(source));
+        row
+    }
+
+    /// `row` (the SE method at size class `n`) with the cost of its pipeline in RTL,
+    /// `raster_top` with `METHOD = 2`, where it was synthesized (`area::se_pipeline`: the
+    /// default formats, five engines); no clock (not yet routed), so no frame time.
+    fn priced_se(&self, mut row: Row, n: u32) -> Row {
+        let d = clock::measured_design();
+        let cost =
+            crate::area::se_pipeline(self.input.trilist.width).filter(|_| n == d.class && self.formats == d.formats);
+        if let Some(cost) = cost {
+            (row.cost, row.cost_source) = (Some(cost), Some(Source::Measured));
+        }
         row
     }
 }

@@ -128,3 +128,21 @@ fn sweep_rows_carry_cost_and_clock_measured_or_modelled() {
         }
     }
 }
+
+/// The SE method is priced where its pipeline in RTL was synthesized: five engines (a
+/// screen 65 to 320 columns wide) at the default formats; it has no clock yet (not routed),
+/// so no frame time. Its cycles are the whole SE back end's (`model::cycles::se_frame`).
+#[test]
+fn sweep_prices_the_se_back_end_where_it_was_synthesized() {
+    use sweep::grid::Method;
+    let points: Vec<_> =
+        grid().points().into_iter().filter(|p| p.method == Method::Se && p.name == "default").collect();
+    assert_eq!(points.len(), 1);
+    for (w, h, priced) in [(320, 240, true), (48, 32, false)] {
+        let swept = run(&[input("cube", w, h)], &points, &Options::default(), &|| {}).unwrap();
+        let r = &swept.rows[0];
+        assert_eq!(r.cost, priced.then_some(sweep::area::SE_PIPELINE_5), "{w}x{h}");
+        assert_eq!((r.clock_mhz, r.frame_us), (None, None), "{w}x{h}");
+        assert!(r.cycles > 136 * 10, "{w}x{h}: {} cycles", r.cycles);
+    }
+}
