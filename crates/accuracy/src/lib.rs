@@ -154,10 +154,7 @@ pub fn compare(list: &Trilist, s: &Setup) -> Report {
 pub fn compare_se(list: &Trilist, s: &Setup) -> Result<Report, String> {
     let (cull, background) = (model_cull(s.cull_back), background8(s.background));
     let r = model::se::array::render(list, &s.formats, cull, background)?;
-    let prm = model::se::array::array_params(list.width, &s.formats)?;
-    let opts = ModelOptions { method: Method::Scanline, cull, analysis: false, background };
-    let work = model_render(list, &s.formats, &opts, &mut |_| {}).work;
-    let cycles = model::cycles::se_frame(&work, &s.timing, &prm, model::se_cmd::ready_after(&s.formats)).total;
+    let cycles = model::se::array::back_end_cycles(list, &s.formats, cull, background, &s.timing)?;
     let frame = Fixed {
         method: format!("se ({} engines)", r.engines),
         problems: r.stats.input_rejected + r.ends_overflowed,

@@ -190,7 +190,8 @@ pub fn run(args: Args) -> Result<()> {
 }
 
 /// `--engine se`: the scanline pipeline's spans drawn by 000's shading engines, one per
-/// 64 columns (`model::se::array`); prints the cycles per span and per frame.
+/// 64 columns (`model::se::array`); prints the engines' cycles per span and per frame, and
+/// the whole SE back end's frame (`raster_top` with `METHOD = 2`).
 fn se(args: &Args, list: &scene::Trilist, f: &fx::Formats, cull_back: bool, background: [f64; 3]) -> Result<()> {
     anyhow::ensure!(!args.analysis, "--analysis applies to --engine scanline and vector, not se");
     let cull = if cull_back { model::cull_sort::Cull::Back } else { model::cull_sort::Cull::None };
@@ -198,15 +199,17 @@ fn se(args: &Args, list: &scene::Trilist, f: &fx::Formats, cull_back: bool, back
     let start = Instant::now();
     let r = model::se::array::render(list, f, cull, bg).map_err(|e| anyhow::anyhow!(e))?;
     let secs = start.elapsed().as_secs_f64();
+    let whole =
+        model::se::array::back_end_cycles(list, f, cull, bg, &Default::default()).map_err(|e| anyhow::anyhow!(e))?;
     let depth16 = r.fb.depth.iter().map(|&d| depth16(d, f.z.frac)).collect();
     let image = Image { width: r.fb.width, height: r.fb.height, rgb: r.fb.rgb, depth16, written: r.fb.written };
     write_outputs(&image, &args.output, args.depth.as_deref(), args.mask.as_deref())?;
     let (st, prm) = (&r.stats, model::se::array::engine_params(f));
     println!(
-        "render se (000 shading engines: {} x {} pixels, z/colour words {}/{} bits): {} triangles in, {} drawn, {} culled ({} outside, {} back-facing, {} degenerate), {} not drawn (input); {} spans, {} pixels written; {} cycles, {:.1} per span ({} per span back to back, {} after a span on the same row: {} such), {} spans overflowed; {:.2} ms",
+        "render se (000 shading engines: {} x {} pixels, z/colour words {}/{} bits): {} triangles in, {} drawn, {} culled ({} outside, {} back-facing, {} degenerate), {} not drawn (input); {} spans, {} pixels written; {} cycles, {:.1} per span ({} per span back to back, {} after a span on the same row: {} such), {} spans overflowed; the whole back end (raster_top METHOD = 2, model::cycles::se_frame): {} cycles; {:.2} ms",
         r.engines, prm.p, prm.zw, prm.cw, st.triangles_in, st.drawn, st.culled_outside + st.culled_back + st.degenerate,
         st.culled_outside, st.culled_back, st.degenerate, st.input_rejected, st.spans, r.pixels_written, r.cycles,
-        r.cycles as f64 / st.spans.max(1) as f64, prm.ii(), prm.latency(), r.same_row_stalls, r.ends_overflowed, secs * 1e3,
+        r.cycles as f64 / st.spans.max(1) as f64, prm.ii(), prm.latency(), r.same_row_stalls, r.ends_overflowed, whole, secs * 1e3,
     );
     Ok(())
 }

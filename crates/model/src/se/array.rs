@@ -188,6 +188,22 @@ pub fn array_params(width: u32, f: &Formats) -> Result<SeParams, String> {
     Ok(prm)
 }
 
+/// Cycles of `list`'s frame through the whole SE back end (`rtl::raster_top` with `METHOD =
+/// 2`): the scanline front end at `timing`, `se_cmd` and the engines
+/// (`cycles::se_frame`), triangles back to back. Errs as [`array_params`].
+pub fn back_end_cycles(
+    list: &Trilist,
+    f: &Formats,
+    cull: Cull,
+    background: [u8; 3],
+    timing: &crate::cycles::Timing,
+) -> Result<u64, String> {
+    let prm = array_params(list.width, f)?;
+    let opts = crate::render::Options { method: crate::render::Method::Scanline, cull, analysis: false, background };
+    let work = crate::render::render(list, f, &opts, &mut |_| {}).work;
+    Ok(crate::cycles::se_frame(&work, timing, &prm, crate::se_cmd::ready_after(f)).total)
+}
+
 /// Draws `list` with the engines of [`engine_params`], one per P columns. Errs when the
 /// screen is wider than the engines' X reaches or the formats need words wider than 32 bits.
 pub fn render(list: &Trilist, f: &Formats, cull: Cull, background: [u8; 3]) -> Result<SeRender, String> {
