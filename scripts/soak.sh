@@ -17,9 +17,10 @@
 #   2. random soak  every random test with 10x the cases (EDGEPAINT_N = 10000) and another
 #                   seed (EDGEPAINT_SEED, default 2: the test command runs seed 1)
 #   3. synthesis    every file in hdl-out/, each unit alone too, in all three flows,
-#                   mapped to cells (the test command synthesizes each distinct module
-#                   once, without iCE40, and gpu_top only through synth_ecp5's coarse
-#                   passes); then Verilator lint of hdl-out/ and of every raster_top
+#                   mapped to cells, raster_top's barycentric and SE back ends (in
+#                   hdl-out/'s directories) by synth_ecp5 only (the test command
+#                   synthesizes each distinct module once, without iCE40, and gpu_top
+#                   only through synth_ecp5's coarse passes); then Verilator lint of hdl-out/ and of every raster_top
 #                   variant, classes 11 and 12 and rtl::custom too (scripts/lint.sh)
 #   4. P&R          place and route of every unit of the default design on iCE40 and ECP5
 #                   (`edgepaint report`): area and Fmax in target/soak/report/<unit>/report.md.

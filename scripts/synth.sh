@@ -20,7 +20,10 @@
 #                             no module the others leave out but its own glue (the test
 #                             command)
 #   scripts/synth.sh --all    every file in every flow, mapped to cells, also `synth_ice40`
-#                             (scripts/soak.sh: 2,071 s on 2 cores at stop 37)
+#                             (scripts/soak.sh: 2,071 s on 2 cores at stop 37), and the
+#                             variants in hdl-out/'s directories (raster_top's barycentric
+#                             and SE back ends) by `synth_ecp5` only: the generic flow makes
+#                             flip-flops of the SE engines' RAMs, and no iCE40 holds either
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -51,6 +54,7 @@ if [[ ${#files[@]} -eq 0 ]]; then
             files+=("$f")
         fi
     done
+    [[ $all == 1 ]] && files+=(hdl-out/*/*.v)
 fi
 if [[ ${#files[@]} -eq 0 ]]; then
     echo "synth: no Verilog in hdl-out/ (run 'cargo run --release' to emit it)" >&2
@@ -62,15 +66,18 @@ mkdir -p "$out"
 # One job per file and flow, $SYNTH_JOBS (default: the CPU count) at a time: raster_top
 # and triangle_setup take minutes each.
 synth_one() {
-    local f=$1 flow=$2 out=$3 top cmd log
+    local f=$1 flow=$2 out=$3 top name cmd log
     top=$(basename "$f" .v)
+    # A variant's work files are named after its directory (raster_top-METHOD=2).
+    name=$(basename "$(dirname "$f")")
+    [[ $name == "$top"-* ]] || name=$top
     case $flow in
         generic) cmd="synth -flatten -top $top; check -assert; stat" ;;
-        ice40) cmd="synth_ice40 -top $top -json $out/$top.ice40.json; check -assert; stat" ;;
-        ecp5) cmd="synth_ecp5 -top $top -json $out/$top.ecp5.json; check -assert; stat" ;;
+        ice40) cmd="synth_ice40 -top $top -json $out/$name.ice40.json; check -assert; stat" ;;
+        ecp5) cmd="synth_ecp5 -top $top -json $out/$name.ecp5.json; check -assert; stat" ;;
         coarse) cmd="synth_ecp5 -top $top -run begin:map_ram; check -assert; stat" ;;
     esac
-    log=$out/$top.$flow.log
+    log=$out/$name.$flow.log
     # No latches: a combinational output some path leaves unassigned (a `match` without a
     # default in a kernel) holds its value in one, which the flows map to a logic loop
     # that `check` does not flag (nextpnr's timing analysis stops on it).
@@ -89,7 +96,9 @@ mapfile -t files < <(ls -S "${files[@]}")
 for f in "${files[@]}"; do
     unit=$(basename "$f" .v)
     unit_flows=("${flows[@]}")
-    if [[ $all == 0 && " ${ECP5_ONLY[*]} " =~ " $unit " ]]; then
+    if [[ $(basename "$(dirname "$f")") == "$unit"-* ]]; then
+        unit_flows=(ecp5)
+    elif [[ $all == 0 && " ${ECP5_ONLY[*]} " =~ " $unit " ]]; then
         unit_flows=(ecp5)
     elif [[ $all == 0 && " ${COARSE_ONLY[*]} " =~ " $unit " ]]; then
         unit_flows=(coarse)

@@ -73,18 +73,31 @@ pub fn run_default() -> Result<()> {
     emit_default(Path::new("hdl-out"))
 }
 
-/// Writes the default design into `dir` and deletes any other `.v` there, so the
-/// directory holds exactly the design.
+/// Writes the default design into `dir` and deletes any other `.v` there and in its
+/// subdirectories (a subdirectory left empty too), so the directory holds exactly the design.
 fn emit_default(dir: &Path) -> Result<()> {
     let design = rtl::emit::default_design();
     write(dir, &design)?;
-    for entry in std::fs::read_dir(dir).with_context(|| format!("listing {}", dir.display()))? {
+    remove_stale(dir, dir, &design)
+}
+
+/// Deletes the `.v` files under `at` (a directory of `root` or `root` itself) that are not
+/// files of `design`, and `at` itself when that leaves it empty.
+fn remove_stale(root: &Path, at: &Path, design: &[Emitted]) -> Result<()> {
+    for entry in std::fs::read_dir(at).with_context(|| format!("listing {}", at.display()))? {
         let path = entry?.path();
-        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or_default().to_owned();
+        if path.is_dir() {
+            remove_stale(root, &path, design)?;
+            continue;
+        }
+        let name = path.strip_prefix(root).expect("under root").to_string_lossy().into_owned();
         if name.ends_with(".v") && !design.iter().any(|e| e.file() == name) {
             std::fs::remove_file(&path).with_context(|| format!("removing stale {}", path.display()))?;
             println!("removed {} (not in the default design)", path.display());
         }
+    }
+    if at != root && std::fs::read_dir(at)?.next().is_none() {
+        std::fs::remove_dir(at).with_context(|| format!("removing {}", at.display()))?;
     }
     Ok(())
 }

@@ -327,7 +327,7 @@ pub fn emit<const N: usize, const D: usize, const D1: usize, const Q: usize, con
 ) -> Emitted {
     let mut u = Divider::<N, D, D1, Q, QM>::new(latency);
     u.connect_all();
-    Emitted { unit: "divider", params: params.clone(), formats: None, ports: ports(&u), verilog: verilog("divider", &u) }
+    Emitted { unit: "divider", params: params.clone(), formats: None, ports: ports(&u), verilog: verilog("divider", &u), dir: None }
 }
 
 /// `UNITS` entry: the divider at the RTL's widths with `params["L"]` stages.

@@ -2,7 +2,7 @@
 //! `manifest.json` that lists every emitted unit with its parameters and ports.
 
 use crate::sim::PortDir;
-use crate::{Params, Unit, DEFAULT_DESIGN, UNITS};
+use crate::{Params, Unit, DEFAULT_DESIGN, DEFAULT_VARIANTS, UNITS};
 use rust_hdl::prelude::*;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -25,12 +25,23 @@ pub struct Emitted {
     pub formats: Option<fx::Formats>,
     pub ports: Vec<Port>,
     pub verilog: String,
+    /// The directory under the output directory that holds it: `None` for the output
+    /// directory itself, a [`DEFAULT_VARIANTS`] entry's name for that build.
+    pub dir: Option<String>,
 }
 
 impl Emitted {
-    /// The file name under the output directory: `<unit>.v`.
+    /// The file's path under the output directory ([`file_name`]).
     pub fn file(&self) -> String {
-        format!("{}.v", self.unit)
+        file_name(self.unit, self.dir.as_deref())
+    }
+}
+
+/// A unit's file under an output directory: `<unit>.v`, or `<dir>/<unit>.v`.
+pub fn file_name(unit: &str, dir: Option<&str>) -> String {
+    match dir {
+        Some(dir) => format!("{dir}/{unit}.v"),
+        None => format!("{unit}.v"),
     }
 }
 
@@ -51,7 +62,14 @@ pub fn emit<U: Block + Default>(name: &'static str, params: Params) -> Emitted {
 /// Connects `u` and emits it as unit `name` with `params` and its ports.
 pub fn emit_unit<U: Block>(name: &'static str, mut u: U, params: &Params) -> Emitted {
     u.connect_all();
-    Emitted { unit: name, params: params.clone(), formats: None, ports: ports(&u), verilog: verilog(name, &u) }
+    Emitted {
+        unit: name,
+        params: params.clone(),
+        formats: None,
+        ports: ports(&u),
+        verilog: verilog(name, &u),
+        dir: None,
+    }
 }
 
 /// The top-level ports of `u`, in declaration order (a bundle's pins are named
@@ -144,17 +162,38 @@ pub fn files(units: &[Emitted]) -> Vec<(String, String)> {
     out
 }
 
-/// The default design (`DEFAULT_DESIGN`), emitted.
+/// A unit of the default design: the unit, its parameters (every one of them), and the
+/// directory under `hdl-out/` that holds it (`None`: `hdl-out/` itself).
+pub struct DesignEntry {
+    pub unit: &'static Unit,
+    pub params: Params,
+    pub dir: Option<String>,
+}
+
+/// The default design's units: [`DEFAULT_DESIGN`], then [`DEFAULT_VARIANTS`], each in the
+/// directory `<unit>-<NAME>=<VALUE>-...` of the parameters it sets.
+pub fn default_entries() -> Vec<DesignEntry> {
+    let entry = |name: &str, params: &[(&str, u64)], dir: Option<String>| {
+        let unit = Unit::named(name).expect("DEFAULT_DESIGN names units in UNITS");
+        let params =
+            unit.params(params.iter().map(|(k, v)| (k.to_string(), *v))).expect("DEFAULT_DESIGN parameters are valid");
+        DesignEntry { unit, params, dir }
+    };
+    let main = DEFAULT_DESIGN.iter().map(|(name, params)| entry(name, params, None));
+    let variants = DEFAULT_VARIANTS.iter().map(|(name, set)| {
+        let (_, base) = DEFAULT_DESIGN.iter().find(|(n, _)| n == name).expect("a variant of a DEFAULT_DESIGN unit");
+        let params: Vec<(&str, u64)> = base.iter().chain(set.iter()).copied().collect();
+        let dir = set.iter().fold(name.to_string(), |d, (k, v)| format!("{d}-{k}={v}"));
+        entry(name, &params, Some(dir))
+    });
+    main.chain(variants).collect()
+}
+
+/// The default design ([`default_entries`]), emitted.
 pub fn default_design() -> Vec<Emitted> {
-    DEFAULT_DESIGN
-        .iter()
-        .map(|(name, params)| {
-            let unit = Unit::named(name).expect("DEFAULT_DESIGN names units in UNITS");
-            let params = unit
-                .params(params.iter().map(|(k, v)| (k.to_string(), *v)))
-                .expect("DEFAULT_DESIGN parameters are valid");
-            unit.emit(&params).expect("DEFAULT_DESIGN parameters are supported")
-        })
+    default_entries()
+        .into_iter()
+        .map(|d| Emitted { dir: d.dir, ..d.unit.emit(&d.params).expect("DEFAULT_DESIGN parameters are supported") })
         .collect()
 }
 
@@ -165,6 +204,7 @@ pub fn write(dir: &Path, units: &[Emitted]) -> std::io::Result<Vec<PathBuf>> {
         .into_iter()
         .map(|(name, text)| {
             let path = dir.join(name);
+            std::fs::create_dir_all(path.parent().expect("a file under dir"))?;
             std::fs::write(&path, text)?;
             Ok(path)
         })

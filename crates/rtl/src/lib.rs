@@ -238,6 +238,16 @@ const LANES: Param = Param {
         "pixels per cycle of the vector unit (raster_top: with METHOD = 1): 1, 2, 4 or 8 lanes, a chunk of a row each cycle",
 };
 
+/// The SE back end's engine counts built (`raster_top`'s `ENGINES` with `METHOD = 2`), each
+/// engine 64 columns of the screen (`rtl::se::SeWide`, P = 64).
+pub const SE_ENGINES: [u32; 3] = [1, 5, 16];
+
+/// The fewest engines built ([`SE_ENGINES`]) that cover a screen `width` columns wide;
+/// `None` beyond 1,024 columns.
+pub fn se_engines_for(width: u32) -> Option<u32> {
+    SE_ENGINES.into_iter().find(|&e| 64 * e >= width)
+}
+
 /// The size-class parameter every scanline unit has.
 const N: Param = Param {
     name: "N",
@@ -477,6 +487,15 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("vector", &[("N", 10), ("L", model::divider::LATENCY as u64), ("PERSPECTIVE", 1), ("LANES", 1)]),
     ("se", &[("P", 64), ("ZW", 24), ("CW", 16), ("F", 16), ("I", 0)]),
 ];
+
+/// Builds beside the default design that `edgepaint` with no arguments also emits, each
+/// into a directory of `hdl-out/` named after the parameters it sets
+/// (`raster_top-METHOD=1-LANES=4/raster_top.v`): `raster_top` with the barycentric back end
+/// at four lanes, and with the SE back end (16 engines), each a whole pipeline with the
+/// default `raster_top`'s ports but its memory port. The parameters are set over the
+/// unit's in [`DEFAULT_DESIGN`].
+pub const DEFAULT_VARIANTS: &[(&str, &[(&str, u64)])] =
+    &[("raster_top", &[("METHOD", 1), ("LANES", 4)]), ("raster_top", &[("METHOD", 2)])];
 
 impl Unit {
     /// The unit called `name`.

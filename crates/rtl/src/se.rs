@@ -703,7 +703,7 @@ pub type SeWide = Se64<29, 21, 45, 37>;
 /// Emits `u` (built, not yet connected) as unit `se`.
 fn emit_unit<U: Block>(mut u: U, params: Params) -> Emitted {
     u.connect_all();
-    Emitted { unit: "se", params, formats: None, ports: ports(&u), verilog: verilog("se", &u) }
+    Emitted { unit: "se", params, formats: None, ports: ports(&u), verilog: verilog("se", &u), dir: None }
 }
 
 /// `UNITS` entry: emits the SE for `params` P, ZW, CW, F, I (see `rtl::UNITS`).

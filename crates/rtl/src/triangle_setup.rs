@@ -1372,5 +1372,6 @@ pub fn emit_triangle_setup(params: &Params) -> Result<Emitted, String> {
         formats: None,
         ports: ports(&u),
         verilog: verilog("triangle_setup", &u),
+        dir: None,
     })
 }

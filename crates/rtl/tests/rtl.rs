@@ -117,13 +117,41 @@ mod emit {
                 "hdl-out/{name} is stale or missing: run `cargo run --release` and commit hdl-out/"
             );
         }
-        for entry in std::fs::read_dir(&dir).expect("hdl-out/") {
-            let name = entry.expect("hdl-out/ entry").file_name().to_string_lossy().into_owned();
-            assert!(
-                files.iter().any(|(n, _)| *n == name),
-                "hdl-out/{name} is not part of the default design: run `cargo run --release`"
-            );
+        let mut dirs = vec![dir.clone()];
+        while let Some(at) = dirs.pop() {
+            for entry in std::fs::read_dir(&at).expect("hdl-out/") {
+                let path = entry.expect("hdl-out/ entry").path();
+                if path.is_dir() {
+                    dirs.push(path);
+                    continue;
+                }
+                let name = path.strip_prefix(&dir).expect("under hdl-out/").to_string_lossy().into_owned();
+                assert!(
+                    files.iter().any(|(n, _)| *n == name),
+                    "hdl-out/{name} is not part of the default design: run `cargo run --release`"
+                );
+            }
         }
+    }
+
+    /// The variants beside the default design go into directories named after the
+    /// parameters they set, with every other parameter the default design's.
+    #[test]
+    fn default_variants_have_directories_of_their_parameters() {
+        let entries = default_entries();
+        let dirs: Vec<_> = entries.iter().filter_map(|d| d.dir.clone()).collect();
+        assert_eq!(dirs, ["raster_top-METHOD=1-LANES=4", "raster_top-METHOD=2"]);
+        let main = entries.iter().find(|d| d.unit.name == "raster_top" && d.dir.is_none()).expect("raster_top");
+        let vector = entries.iter().find(|d| d.dir.as_deref() == Some("raster_top-METHOD=1-LANES=4")).expect("vector");
+        for (k, v) in &main.params {
+            let want = match k.as_str() {
+                "METHOD" => 1,
+                "LANES" => 4,
+                _ => *v,
+            };
+            assert_eq!(vector.params[k], want, "{k}");
+        }
+        assert_eq!(file_name("raster_top", vector.dir.as_deref()), "raster_top-METHOD=1-LANES=4/raster_top.v");
     }
 
     /// One name per unit: `rtl/src/<name>.rs`, `model/src/<name>.rs` and

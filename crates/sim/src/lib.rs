@@ -95,24 +95,25 @@ pub fn hdl_out() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../hdl-out")
 }
 
-/// Whether `e` is a unit of the default design at its parameters and formats, so that
-/// `hdl-out/` holds its Verilog (the test `hdl_out_is_fresh` keeps that file current).
-fn committed(e: &Emitted) -> bool {
+/// Where `hdl-out/` holds `e`'s Verilog, when `e` is a unit of the default design at its
+/// parameters and formats (`rtl::emit::default_entries`; the test `hdl_out_is_fresh` keeps
+/// that file current).
+fn committed(e: &Emitted) -> Option<PathBuf> {
     let class_formats = e.params.get("N").map(|&n| fx::Formats::for_n(n as u32));
-    e.formats == class_formats
-        && rtl::DEFAULT_DESIGN.iter().any(|(unit, params)| {
-            *unit == e.unit && params.iter().map(|(k, v)| (k.to_string(), *v)).collect::<rtl::Params>() == e.params
-        })
+    let entry = rtl::emit::default_entries()
+        .into_iter()
+        .find(|d| e.formats == class_formats && d.unit.name == e.unit && d.params == e.params)?;
+    Some(hdl_out().join(rtl::emit::file_name(e.unit, entry.dir.as_deref())))
 }
 
-/// The Verilog file of `e` as the simulations should see it: the committed
-/// `hdl-out/<unit>.v` when the default design holds this unit with these parameters (so
-/// the committed file is what is simulated), otherwise `e` written under the target
-/// directory (`<target>/hdl/<unit>-<params>[-F<formats>]/<unit>.v`, `<formats>` a hash of
-/// formats other than the size class's defaults).
+/// The Verilog file of `e` as the simulations should see it: the committed file in
+/// `hdl-out/` when the default design holds this unit with these parameters (so the
+/// committed file is what is simulated), otherwise `e` written under the target directory
+/// (`<target>/hdl/<unit>-<params>[-F<formats>]/<unit>.v`, `<formats>` a hash of formats
+/// other than the size class's defaults).
 pub fn verilog_file(e: &Emitted) -> Result<PathBuf, String> {
-    if committed(e) {
-        return Ok(hdl_out().join(e.file()));
+    if let Some(file) = committed(e) {
+        return Ok(file);
     }
     let mut tag: String = e.params.iter().map(|(k, v)| format!("-{k}{v}")).collect();
     let class = e.params.get("N").map(|&n| fx::Formats::for_n(n as u32));
