@@ -189,9 +189,10 @@ fn cli_accuracy_writes_a_table_and_json() {
 }
 
 /// `render --engine rtl`'s frame time: (cycles, ms, MHz, where the clock comes from), read
-/// off the summary's "N cycles (model::cycles: N), frame time T ms at F MHz (SOURCE)".
+/// off the summary's "N cycles (model::cycles[::se_frame]: N), frame time T ms at F MHz
+/// (SOURCE)".
 fn frame_time(summary: &str) -> (u64, f64, f64, String) {
-    let (before, after) = summary.split_once(" cycles (model::cycles: ").expect("the cycles");
+    let (before, after) = summary.split_once(" cycles (model::cycles").expect("the cycles");
     let cycles = before.rsplit(' ').next().unwrap().parse().unwrap();
     let (_, t) = after.split_once("frame time ").expect("the frame time");
     let (ms, t) = t.split_once(" ms at ").unwrap();
@@ -263,8 +264,8 @@ fn cli_render_rtl_draws_through_gpu_top() {
 /// `render --engine rtl --method vector` draws through `raster_top` with `METHOD = 1` (004's
 /// barycentric unit) with `--lanes` lanes (default 4, as the vector model's): its PNG is the
 /// vector model's, perspective-correct or with `--linear` screen-linear, and its frame time
-/// at the routed ECP5 clock of one lane (`sweep::clock::VECTOR_PIPELINE_MHZ`), said to be
-/// that one lane's at others; what does not apply to it is a clear error.
+/// at the routed ECP5 clock of its lanes (`sweep::clock::vector_pipeline_mhz`: one and four
+/// routed); what does not apply to it is a clear error.
 #[test]
 fn cli_render_rtl_draws_with_the_vector_method() {
     let d = scratch("rtl-vector");
@@ -279,12 +280,8 @@ fn cli_render_rtl_draws_with_the_vector_method() {
         let model_name = if n == "1" { "vector (1 lane)".to_owned() } else { format!("vector ({n} lanes)") };
         assert!(summary.contains(&format!("image, depth and cycles equal to the {model_name} model's")), "{summary}");
         let (cycles, ms, mhz, source) = frame_time(&summary);
-        let want = if n == "1" {
-            "routed, ECP5"
-        } else {
-            "the default design's at one lane, routed, ECP5; not at these lanes, formats or parts"
-        };
-        assert_eq!((mhz, source.as_str()), (sweep::clock::VECTOR_PIPELINE_MHZ, want), "{summary}");
+        let want_mhz = if n == "1" { sweep::clock::VECTOR_PIPELINE_MHZ } else { sweep::clock::VECTOR_PIPELINE_4_MHZ };
+        assert_eq!((mhz, source.as_str()), (want_mhz, "routed, ECP5"), "{summary}");
         assert!((ms - cycles as f64 / (mhz * 1000.0)).abs() <= 0.0005 + 1e-12, "{summary}");
         let (model, _) = render(
             "model.png",
@@ -307,8 +304,9 @@ fn cli_render_rtl_draws_with_the_vector_method() {
 
 /// `render --engine rtl --method se` draws through `raster_top`'s SE back end (`METHOD =
 /// 2`: 000's shading engines behind the scanline front end) in Verilator: its PNG is the SE
-/// model's (`--engine se`), its summary says the cycles equal `model::cycles::se_frame`'s;
-/// what does not apply to it is a clear error.
+/// model's (`--engine se`), its summary says the cycles equal `model::cycles::se_frame`'s
+/// and gives the frame time at the clock routed at one engine
+/// (`sweep::clock::SE_PIPELINE_MHZ`); what does not apply to it is a clear error.
 #[test]
 fn cli_render_rtl_draws_with_the_se_back_end() {
     let d = scratch("rtl-se");
@@ -318,6 +316,9 @@ fn cli_render_rtl_draws_with_the_se_back_end() {
     let (rtl, summary) = render("rtl.png", &["--engine", "rtl", "--method", "se", "--param", "ENGINES=5"]);
     assert!(summary.contains("METHOD = 2: the scanline front end, se_cmd and 5 shading engines"), "{summary}");
     assert!(summary.contains("image, depth and cycles equal to the se model's"), "{summary}");
+    let (cycles, ms, mhz, source) = frame_time(&summary);
+    assert_eq!((mhz, source.as_str()), (sweep::clock::SE_PIPELINE_MHZ, "one engine's, routed, ECP5"), "{summary}");
+    assert!((ms - cycles as f64 / (mhz * 1000.0)).abs() <= 0.0005 + 1e-12, "{summary}");
     let (model, _) = render("model.png", &["--engine", "se"]);
     assert!(rtl == model, "raster_top's SE back end PNG is the se model's");
     let png = d.join("x.png");

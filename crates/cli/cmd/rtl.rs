@@ -192,14 +192,13 @@ pub fn render(
         Design { class: build.class, formats: build.formats, k: timing.setup_multipliers, l: timing.divider_latency };
     let (mhz, source) = sweep::clock::raster_top_mhz(&design);
     let every_part = parts.iter().all(|&(_, v)| v == 1);
+    let vector_clock = sweep::clock::vector_pipeline_mhz(lanes).expect("lanes raster_top is built with");
     let (mhz, clock) = match (vector, source, every_part) {
-        (true, _, true) if build == Build::default() && lanes == 1 => {
-            (sweep::clock::VECTOR_PIPELINE_MHZ, "routed, ECP5")
-        }
-        (true, _, _) => (
-            sweep::clock::VECTOR_PIPELINE_MHZ,
-            "the default design's at one lane, routed, ECP5; not at these lanes, formats or parts",
-        ),
+        (true, _, true) if build == Build::default() => match vector_clock {
+            (mhz, Source::Measured) => (mhz, "routed, ECP5"),
+            (mhz, Source::Modelled) => (mhz, "modelled from one lane's and four's routed clocks, ECP5"),
+        },
+        (true, _, _) => (vector_clock.0, "the default design's at these lanes, ECP5; not at these formats or parts"),
         (false, Source::Measured, true) => (mhz, "routed, ECP5"),
         (false, _, true) => (mhz, "modelled, ECP5"),
         (false, _, false) => (mhz, "modelled, ECP5, not counting the parts left out"),
@@ -243,9 +242,6 @@ pub fn render(
     Ok(Some((image, (summary, r.fragments))))
 }
 
-/// The SE back end's engine counts built (`raster_top`'s `ENGINES`).
-const ENGINES: [u32; 3] = [1, 5, 16];
-
 /// `--method se`: `loaded` drawn by `raster_top` with `METHOD = 2` (the scanline front end,
 /// `se_cmd` and the fewest engines built that cover the screen, or `--param ENGINES=N`) at
 /// the default build, in Verilator (`sim::se_frame`); image, depth, pixels written and
@@ -265,8 +261,7 @@ fn se_back_end(loaded: &Loaded, cull_back: bool, fixed: &FixedArgs, how: &How) -
     );
     ensure!(fixed.lanes.is_none(), "--method se: --lanes is the vector unit's (--method vector)");
     ensure!(how.top != Some(Top::GpuTop), "--method se: gpu_top holds the scanline method (--method scanline)");
-    let cover = list.width.div_ceil(64);
-    let mut engines = ENGINES.into_iter().find(|&e| e >= cover).unwrap_or(u32::MAX);
+    let mut engines = rtl::se_engines_for(list.width).unwrap_or(u32::MAX);
     for (name, v) in how.params {
         match name.as_str() {
             "ENGINES" => engines = u32::try_from(*v).unwrap_or(u32::MAX),
@@ -274,7 +269,7 @@ fn se_back_end(loaded: &Loaded, cull_back: bool, fixed: &FixedArgs, how: &How) -
         }
     }
     ensure!(
-        ENGINES.contains(&engines) && 64 * engines >= list.width,
+        rtl::SE_ENGINES.contains(&engines) && 64 * engines >= list.width,
         "--method se: {} engines for a screen {} columns wide: raster_top's SE back end is built with 1, 5 or 16 \
          engines of 64 columns each",
         if engines == u32::MAX { "no number of".to_owned() } else { engines.to_string() },
@@ -310,17 +305,20 @@ fn se_back_end(loaded: &Loaded, cull_back: bool, fixed: &FixedArgs, how: &How) -
         prep.pixels_written
     );
     let drawn = out.verdicts.iter().filter(|&&v| v as u64 == rtl::cull_sort::verdict::PASSED).count();
+    let mhz = sweep::clock::SE_PIPELINE_MHZ;
+    let clock = if engines == 1 { "routed, ECP5" } else { "one engine's, routed, ECP5" };
     let summary = format!(
         "rtl (raster_top of size class {}, METHOD = 2: the scanline front end, se_cmd and {engines} shading engines of \
          64 pixels, in Verilator): {} triangles in, {drawn} drawn; {} spans issued, {} pixels written; {} cycles \
-         (model::cycles::se_frame: {}), {:.3} pixels per clock; {:.0} cycles/s simulated ({secs:.2} s); image, \
-         depth and cycles equal to the se model's",
+         (model::cycles::se_frame: {}), frame time {:.3} ms at {mhz:.1} MHz ({clock}), {:.3} pixels per clock; \
+         {:.0} cycles/s simulated ({secs:.2} s); image, depth and cycles equal to the se model's",
         build.class,
         list.triangles.len(),
         out.reads / 16,
         out.memory.writes,
         out.cycles,
         prep.cycles,
+        out.cycles as f64 / (mhz * 1000.0),
         out.memory.writes as f64 / out.cycles.max(1) as f64,
         out.cycles as f64 / secs,
     );

@@ -12,6 +12,7 @@
 //! A pipeline (`raster_top`) is its units plus the span FIFO between the edge walk and
 //! span, whose cost is fitted as a multiple of the FIFO's bits.
 
+use crate::row::Source;
 use fx::Formats;
 use rtl::config::Widths;
 // The span FIFO's depth in span commands, the same in every build.
@@ -62,21 +63,48 @@ pub const VECTOR_LANE: Cost = Cost {
 /// five shading engines) at the default design, synthesized (`edgepaint report --unit
 /// raster_top --param METHOD=2 --param ENGINES=5`, stop 41; README, "Units"): the generic
 /// flow's gate equivalents count the engines' corner-turning RAMs as flip-flops, ECP5 maps
-/// them to 605 LUT RAMs; iCE40 LUT4s, not synthesized, in the vector pipeline's ratio of
-/// iCE40 to ECP5 LUT4s.
-pub const SE_PIPELINE_5: Cost = Cost {
-    ge: 943_093.0,
-    ecp5_lut4: 47_771.0,
-    ecp5_ff: 17_990.0,
-    ecp5_dsp: 30.0,
-    ice40_lut4: 47_771.0 * VECTOR_PIPELINE.ice40_lut4 / VECTOR_PIPELINE.ecp5_lut4,
-};
+/// them to 605 LUT RAMs.
+pub const SE_PIPELINE_5: Cost = se_measured(943_093.0, 47_771.0, 17_990.0);
 
-/// The SE back end for a screen `width` columns wide at the default design: the fewest
-/// engines built that cover it (`rtl::raster_top`'s `ENGINES`: 1, 5 or 16), priced where
-/// that is five, the engine count measured ([`SE_PIPELINE_5`]); `None` elsewhere.
-pub fn se_pipeline(width: u32) -> Option<Cost> {
-    (65..=320).contains(&width).then_some(SE_PIPELINE_5)
+/// The same at one engine (`--param ENGINES=1`, stop 42; 121 LUT RAMs), placed and routed
+/// (`sweep::clock::SE_PIPELINE_MHZ`).
+pub const SE_PIPELINE_1: Cost = se_measured(460_752.0, 26_554.0, 14_614.0);
+
+/// The SE back end as synthesized: gate equivalents, ECP5 LUT4s and flip-flops, and
+/// setup's 30 DSP blocks (the engines' multipliers are serial); iCE40 LUT4s, not
+/// synthesized, in the vector pipeline's ratio of iCE40 to ECP5 LUT4s.
+const fn se_measured(ge: f64, ecp5_lut4: f64, ecp5_ff: f64) -> Cost {
+    let ice40_lut4 = ecp5_lut4 * VECTOR_PIPELINE.ice40_lut4 / VECTOR_PIPELINE.ecp5_lut4;
+    Cost { ge, ecp5_lut4, ecp5_ff, ecp5_dsp: 30.0, ice40_lut4 }
+}
+
+/// An engine more: a quarter of [`SE_PIPELINE_5`] less [`SE_PIPELINE_1`] (a `Bank`: the
+/// engine, its four ports' clamps, and its share of the gathered write word).
+pub fn se_engine() -> Cost {
+    let mut c = Cost::default();
+    for m in 0..METRICS.len() {
+        c.set(m, (SE_PIPELINE_5.get(m) - SE_PIPELINE_1.get(m)) / 4.0);
+    }
+    c
+}
+
+/// The SE back end for a screen `width` columns wide at the default design, with the fewest
+/// engines built that cover it (`rtl::se_engines_for`: 1, 5 or 16), and where the figure
+/// comes from: measured at 1 and 5 engines, modelled at 16 ([`SE_PIPELINE_5`] and 11
+/// [`se_engine`]s: the engines beside one another on the span bus); `None` beyond 1,024
+/// columns.
+pub fn se_pipeline(width: u32) -> Option<(Cost, Source)> {
+    Some(match rtl::se_engines_for(width)? {
+        1 => (SE_PIPELINE_1, Source::Measured),
+        5 => (SE_PIPELINE_5, Source::Measured),
+        e => {
+            let mut c = SE_PIPELINE_5;
+            for _ in 5..e {
+                c = c.add(se_engine());
+            }
+            (c, Source::Modelled)
+        }
+    })
 }
 
 /// The barycentric pipeline at `lanes` lanes (1, 2, 4 or 8) at the default design: measured

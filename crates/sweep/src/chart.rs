@@ -10,6 +10,7 @@ use crate::row::Row;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 use std::path::Path;
@@ -93,7 +94,13 @@ pub fn charts(rows: &[Row]) -> Vec<Chart> {
     )];
     if rows.iter().any(|r| r.frame_us.is_some()) {
         let title = format!("Colour error vs frame time{}", missing(rows, |r| r.frame_us.is_some()));
-        out.push(scatter(rows, "error_vs_frame_time", title, "mean frame time (µs), modelled clock", |r| r.frame_us));
+        out.push(scatter(
+            rows,
+            "error_vs_frame_time",
+            title,
+            "mean frame time (µs), at the routed or modelled clock",
+            |r| r.frame_us,
+        ));
     }
     if rows.iter().any(|r| r.cost.is_some()) {
         let title = format!("Colour error vs area{}", missing(rows, |r| r.cost.is_some()));
@@ -360,12 +367,21 @@ fn all_points(chart: &Chart) -> impl Iterator<Item = &Pt> {
 /// Draws `chart` on `root` over `axes`, linear or log as the chart says.
 fn render<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, chart: &Chart, axes: &Axes) -> Result<(), String> {
     let (x, y) = axes.clone();
+    let right = |p: &Pt| label_left(p, &axes.0, chart.x_log);
     match (chart.x_log, chart.y_log) {
-        (false, false) => plot(root, chart, x, y),
-        (true, false) => plot(root, chart, x.log_scale(), y),
-        (false, true) => plot(root, chart, x, y.log_scale()),
-        (true, true) => plot(root, chart, x.log_scale(), y.log_scale()),
+        (false, false) => plot(root, chart, x, y, &right),
+        (true, false) => plot(root, chart, x.log_scale(), y, &right),
+        (false, true) => plot(root, chart, x, y.log_scale(), &right),
+        (true, true) => plot(root, chart, x.log_scale(), y.log_scale(), &right),
     }
+}
+
+/// Whether `p`'s label goes to its left: past 60% of the x axis `x` (log or linear), where
+/// a label to the right would run off the plot.
+fn label_left(p: &Pt, x: &Range<f64>, log: bool) -> bool {
+    let f = |v: f64| if log { v.ln() } else { v };
+    let v = shown(p.x, log);
+    (f(v) - f(x.start)) > 0.6 * (f(x.end) - f(x.start))
 }
 
 /// A tick label: plain for moderate magnitudes, scientific otherwise.
@@ -406,8 +422,15 @@ fn title_size(title: &str) -> f64 {
     (f64::from(SIZE.0 - 40) / (0.6 * title.chars().count() as f64)).min(22.0)
 }
 
-/// Draws `chart` on `root` over axes `x` and `y`.
-fn plot<DB, X, Y>(root: &DrawingArea<DB, Shift>, chart: &Chart, x: X, y: Y) -> Result<(), String>
+/// Draws `chart` on `root` over axes `x` and `y`, a point's label to its left where `left`
+/// says so.
+fn plot<DB, X, Y>(
+    root: &DrawingArea<DB, Shift>,
+    chart: &Chart,
+    x: X,
+    y: Y,
+    left: &dyn Fn(&Pt) -> bool,
+) -> Result<(), String>
 where
     DB: DrawingBackend,
     X: AsRangedCoord<Value = f64>,
@@ -437,6 +460,14 @@ where
         .map_err(err)?;
     let at = |p: &Pt| (shown(p.x, chart.x_log), shown(p.y, chart.y_log));
     let label_font = ("sans-serif", 11).into_font();
+    // A label beside a point (`dx`, `dy` from it to the right), or as far to its left.
+    let label = |text: String, p: &Pt, (dx, dy): (i32, i32)| {
+        let style = TextStyle::from(label_font.clone());
+        match left(p) {
+            true => Text::new(text, (-dx, dy), style.pos(Pos::new(HPos::Right, VPos::Top))),
+            false => Text::new(text, (dx, dy), style),
+        }
+    };
     for (i, s) in chart.series.iter().enumerate() {
         let colour = COLOURS[i % COLOURS.len()];
         c.draw_series(s.points.iter().map(|p| Circle::new(at(p), 3, colour.filled())))
@@ -452,7 +483,7 @@ where
         c.draw_series(chart.front.iter().map(|p| {
             EmptyElement::at(at(p))
                 + Circle::new((0, 0), 4, BLACK.stroke_width(1))
-                + Text::new(front_label(chart, p), (5, 4), label_font.clone())
+                + label(front_label(chart, p), p, (5, 4))
         }))
         .map_err(err)?;
     }
@@ -460,7 +491,7 @@ where
         c.draw_series(chart.marks.iter().map(|p| {
             EmptyElement::at(at(p))
                 + TriangleMarker::new((0, 0), 9, MARK.filled())
-                + Text::new(p.label.clone(), (8, -16), label_font.clone())
+                + label(p.label.clone(), p, (8, -16))
         }))
         .map_err(err)?
         .label("default design")
@@ -637,6 +668,16 @@ pub(crate) mod tests {
         let marks: Vec<String> =
             find(&charts(&rows), "error_vs_cycles").marks.iter().map(|p| p.label.clone()).collect();
         assert_eq!(marks, ["scanline default (001 K=7 L=5)", "se default (000, 64-pixel engines)"]);
+    }
+
+    #[test]
+    fn labels_past_three_fifths_of_the_x_axis_go_left() {
+        let at = |x: f64| Pt { x, y: 1.0, label: String::new() };
+        assert!(!label_left(&at(50.0), &(0.0..100.0), false));
+        assert!(label_left(&at(70.0), &(0.0..100.0), false));
+        // On a log axis from 10 to 10,000, 3/5 of the way is 10^2.8, about 631.
+        assert!(!label_left(&at(600.0), &(10.0..10_000.0), true));
+        assert!(label_left(&at(700.0), &(10.0..10_000.0), true));
     }
 
     fn charts_stems(rows: &[Row]) -> Vec<String> {

@@ -42,6 +42,35 @@ pub const GPU_TOP_MHZ: f64 = 41.8;
 /// row found, into the probes' registers; 50.5 MHz routed alone, 62.8 with stop 39's box walk).
 pub const VECTOR_PIPELINE_MHZ: f64 = 48.2;
 
+/// The same at four lanes (`--param LANES=4`, LFE5U-85F, router2, stop 42): its critical
+/// path is the vector unit's stall, from a lane's output valid through `pixel_out`'s ready
+/// into the hold of every lane's 25-stage divider (17.5 of its 24.4 ns the hold net's
+/// routing to its fan-out).
+pub const VECTOR_PIPELINE_4_MHZ: f64 = 41.0;
+
+/// The barycentric pipeline's clock at `lanes` lanes (1, 2, 4 or 8) at the default design,
+/// MHz, and where it comes from: routed at one lane and four ([`VECTOR_PIPELINE_MHZ`],
+/// [`VECTOR_PIPELINE_4_MHZ`]); at two and eight its period modelled as linear in the lanes
+/// through those two, the stall net's fan-out growing with them (two lanes: 45.5 MHz, where
+/// the vector unit alone at two lanes routed at 45.7). `None` for other lane counts.
+pub fn vector_pipeline_mhz(lanes: u32) -> Option<(f64, Source)> {
+    let (one, four) = (1.0 / VECTOR_PIPELINE_MHZ, 1.0 / VECTOR_PIPELINE_4_MHZ);
+    match lanes {
+        1 => Some((VECTOR_PIPELINE_MHZ, Source::Measured)),
+        4 => Some((VECTOR_PIPELINE_4_MHZ, Source::Measured)),
+        2 | 8 => Some((1.0 / (one + (four - one) * f64::from(lanes - 1) / 3.0), Source::Modelled)),
+        _ => None,
+    }
+}
+
+/// The SE back end's ECP5 Fmax (`raster_top` with `METHOD = 2`: the scanline front end,
+/// `se_cmd`, one engine) at the default design, MHz, placed and routed whole (LFE5U-85F,
+/// router2, stop 42; README, "Units"): its critical path runs from the span FIFO's read
+/// through `se_cmd`'s test of a span's ends against the screen into the enables of its
+/// serial multiplier's registers, 20.2 of its 23.2 ns routing. Five and 16 engines fit no
+/// ECP5 with the report's room for routing; the sweep takes this clock for them.
+pub const SE_PIPELINE_MHZ: f64 = 43.1;
+
 /// The design [`MEASURED_MHZ`] and [`PIPELINE_MHZ`] were measured at: size class
 /// `fx::RTL_CLASS` at its default formats, K = 7, L = `model::divider::LATENCY` (25).
 pub fn measured_design() -> Design {
@@ -96,6 +125,18 @@ mod tests {
     use super::*;
     use fx::Formats;
     use model::divider::LATENCY;
+
+    #[test]
+    fn vector_clock_is_routed_at_one_and_four_lanes_and_modelled_between() {
+        assert_eq!(vector_pipeline_mhz(1), Some((VECTOR_PIPELINE_MHZ, Source::Measured)));
+        assert_eq!(vector_pipeline_mhz(4), Some((VECTOR_PIPELINE_4_MHZ, Source::Measured)));
+        let (two, s2) = vector_pipeline_mhz(2).unwrap();
+        let (eight, s8) = vector_pipeline_mhz(8).unwrap();
+        assert_eq!((s2, s8), (Source::Modelled, Source::Modelled));
+        assert!(VECTOR_PIPELINE_4_MHZ < two && two < VECTOR_PIPELINE_MHZ, "{two}");
+        assert!((two - 45.5).abs() < 0.05 && eight < VECTOR_PIPELINE_4_MHZ, "{two} {eight}");
+        assert_eq!(vector_pipeline_mhz(3), None);
+    }
 
     #[test]
     fn raster_top_runs_at_the_routed_clock_at_the_default_and_the_modelled_one_elsewhere() {

@@ -158,9 +158,10 @@ impl Task<'_> {
 
     /// `row` (the vector method at size class `n`) with the clock, frame time and cost of
     /// its pipeline in RTL, `raster_top` with `METHOD = 1` (`rtl::vector`), at the formats it
-    /// was built and measured at (`clock::measured_design`'s): measured at one lane,
-    /// modelled at 2, 4 and 8 (`area::vector_pipeline`; the clock the one lane's). Elsewhere
-    /// none: no area model covers the vector unit at other formats yet.
+    /// was built and measured at (`clock::measured_design`'s): the cost measured at one lane,
+    /// modelled at 2, 4 and 8 (`area::vector_pipeline`), the clock routed at one and four
+    /// (`clock::vector_pipeline_mhz`). Elsewhere none: no area model covers the vector unit
+    /// at other formats yet.
     fn priced_vector(&self, mut row: Row, n: u32) -> Row {
         let d = clock::measured_design();
         let lanes = self.params["lanes"];
@@ -169,23 +170,31 @@ impl Task<'_> {
             return row;
         };
         let source = if lanes == 1 { Source::Measured } else { Source::Modelled };
-        let mhz = clock::VECTOR_PIPELINE_MHZ;
-        (row.clock_mhz, row.clock_source) = (Some(mhz), Some(source));
+        let (mhz, clock_source) = clock::vector_pipeline_mhz(lanes).expect("lanes the area model prices");
+        (row.clock_mhz, row.clock_source) = (Some(mhz), Some(clock_source));
         row.frame_us = Some(row.cycles as f64 / mhz);
         (row.cost, row.cost_source) = (Some(cost), Some(source));
         row
     }
 
-    /// `row` (the SE method at size class `n`) with the cost of its pipeline in RTL,
-    /// `raster_top` with `METHOD = 2`, where it was synthesized (`area::se_pipeline`: the
-    /// default formats, five engines); no clock (not yet routed), so no frame time.
+    /// `row` (the SE method at size class `n`) with the clock, frame time and cost of its
+    /// pipeline in RTL, `raster_top` with `METHOD = 2`, at the formats it was built at (the
+    /// default ones) and the fewest engines that cover the screen (`area::se_pipeline`:
+    /// measured at one and five engines, modelled at 16; the clock the one engine's, routed,
+    /// measured there and modelled elsewhere: the engines run side by side on the span bus).
     fn priced_se(&self, mut row: Row, n: u32) -> Row {
         let d = clock::measured_design();
-        let cost =
-            crate::area::se_pipeline(self.input.trilist.width).filter(|_| n == d.class && self.formats == d.formats);
-        if let Some(cost) = cost {
-            (row.cost, row.cost_source) = (Some(cost), Some(Source::Measured));
-        }
+        let Some((cost, source)) =
+            crate::area::se_pipeline(self.input.trilist.width).filter(|_| n == d.class && self.formats == d.formats)
+        else {
+            return row;
+        };
+        let engines = rtl::se_engines_for(self.input.trilist.width);
+        let mhz = clock::SE_PIPELINE_MHZ;
+        let clock_source = if engines == Some(1) { Source::Measured } else { Source::Modelled };
+        (row.clock_mhz, row.clock_source) = (Some(mhz), Some(clock_source));
+        row.frame_us = Some(row.cycles as f64 / mhz);
+        (row.cost, row.cost_source) = (Some(cost), Some(source));
         row
     }
 }

@@ -110,7 +110,8 @@ fn sweep_rows_carry_cost_and_clock_measured_or_modelled() {
     let mhz = sweep::clock::VECTOR_PIPELINE_MHZ;
     assert_eq!((one_lane.clock_mhz, one_lane.frame_us), (Some(mhz), Some(one_lane.cycles as f64 / mhz)));
     // More lanes at the default formats (the vector default: 4): a lane and a pixel_out bank
-    // more each, modelled; lanes the RTL is not built with, and other formats, unpriced.
+    // more each, modelled, at the clock routed at four lanes or modelled at two and eight;
+    // lanes the RTL is not built with, and other formats, unpriced.
     let four = row("vector", "default");
     assert_eq!((four.params["lanes"], four.cost_source), (4, Some(Source::Modelled)));
     let lane = sweep::area::VECTOR_LANE;
@@ -118,10 +119,10 @@ fn sweep_rows_carry_cost_and_clock_measured_or_modelled() {
         let l = r.params["lanes"];
         if [2, 4, 8].contains(&l) && r.formats == four.formats {
             let c = sweep::area::vector_pipeline(l).unwrap();
-            assert_eq!(
-                (r.cost, r.cost_source, r.clock_source),
-                (Some(c), Some(Source::Modelled), Some(Source::Modelled))
-            );
+            let clock = sweep::clock::vector_pipeline_mhz(l).unwrap();
+            assert_eq!((r.cost, r.cost_source), (Some(c), Some(Source::Modelled)));
+            assert_eq!((r.clock_mhz, r.clock_source), (Some(clock.0), Some(clock.1)));
+            assert_eq!(clock.1 == Source::Measured, l == 4, "lanes {l}");
             assert_eq!(c.ecp5_dsp, sweep::area::VECTOR_PIPELINE.ecp5_dsp + (l - 1) as f64 * lane.ecp5_dsp);
         } else {
             assert_eq!((r.cost, r.clock_mhz, r.frame_us), (None, None, None), "{} {}", r.method, r.point);
@@ -129,20 +130,36 @@ fn sweep_rows_carry_cost_and_clock_measured_or_modelled() {
     }
 }
 
-/// The SE method is priced where its pipeline in RTL was synthesized: five engines (a
-/// screen 65 to 320 columns wide) at the default formats; it has no clock yet (not routed),
-/// so no frame time. Its cycles are the whole SE back end's (`model::cycles::se_frame`).
+/// The SE method is priced with the fewest engines that cover the screen: synthesized at
+/// one engine (up to 64 columns; its clock routed) and five (65 to 320), modelled at 16 (up
+/// to 1,024), at the default formats. Its cycles are the whole SE back end's
+/// (`model::cycles::se_frame`).
 #[test]
-fn sweep_prices_the_se_back_end_where_it_was_synthesized() {
+fn sweep_prices_the_se_back_end_by_its_engines() {
+    use sweep::area::{se_engine, SE_PIPELINE_1, SE_PIPELINE_5};
+    use sweep::clock::SE_PIPELINE_MHZ;
     use sweep::grid::Method;
+    use sweep::row::Source;
     let points: Vec<_> =
         grid().points().into_iter().filter(|p| p.method == Method::Se && p.name == "default").collect();
     assert_eq!(points.len(), 1);
-    for (w, h, priced) in [(320, 240, true), (48, 32, false)] {
+    let m = Some(Source::Measured);
+    let sixteen = SE_PIPELINE_5.ecp5_lut4 + 11.0 * se_engine().ecp5_lut4;
+    for (w, h, cost, cost_source, clock_source) in [
+        (48, 32, SE_PIPELINE_1.ecp5_lut4, m, m),
+        (64, 48, SE_PIPELINE_1.ecp5_lut4, m, m),
+        (65, 48, SE_PIPELINE_5.ecp5_lut4, m, Some(Source::Modelled)),
+        (320, 240, SE_PIPELINE_5.ecp5_lut4, m, Some(Source::Modelled)),
+        (640, 32, sixteen, Some(Source::Modelled), Some(Source::Modelled)),
+    ] {
         let swept = run(&[input("cube", w, h)], &points, &Options::default(), &|| {}).unwrap();
         let r = &swept.rows[0];
-        assert_eq!(r.cost, priced.then_some(sweep::area::SE_PIPELINE_5), "{w}x{h}");
-        assert_eq!((r.clock_mhz, r.frame_us), (None, None), "{w}x{h}");
+        assert_eq!(r.cost.map(|c| c.ecp5_lut4), Some(cost), "{w}x{h}");
+        assert_eq!((r.cost_source, r.clock_source), (cost_source, clock_source), "{w}x{h}");
+        assert_eq!(r.frame_us, Some(r.cycles as f64 / SE_PIPELINE_MHZ), "{w}x{h}");
         assert!(r.cycles > 136 * 10, "{w}x{h}: {} cycles", r.cycles);
     }
+    // An engine more costs logic, flip-flops and no multiplier (the engines' are serial).
+    let e = se_engine();
+    assert!(e.ecp5_lut4 > 1_000.0 && e.ecp5_ff > 0.0 && e.ecp5_dsp == 0.0, "{e:?}");
 }
