@@ -91,8 +91,9 @@ pub fn se_engine() -> Cost {
 /// The SE back end for a screen `width` columns wide at the default design, with the fewest
 /// engines built that cover it (`rtl::se_engines_for`: 1, 5 or 16), and where the figure
 /// comes from: measured at 1 and 5 engines, modelled at 16 ([`SE_PIPELINE_5`] and 11
-/// [`se_engine`]s: the engines beside one another on the span bus); `None` beyond 1,024
-/// columns.
+/// [`se_engine`]s: the engines beside one another on the span bus; `synth_ecp5` of
+/// `raster_top` at 16 engines gave 106,907 LUT4s and 27,343 FF against the model's 106,118
+/// and 27,274, stop 42); `None` beyond 1,024 columns.
 pub fn se_pipeline(width: u32) -> Option<(Cost, Source)> {
     Some(match rtl::se_engines_for(width)? {
         1 => (SE_PIPELINE_1, Source::Measured),
