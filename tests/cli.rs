@@ -534,9 +534,11 @@ fn cli_stability_maps_families_and_bad_arguments_fail() {
     assert!(!Path::new(&o).exists(), "nothing written on bad arguments");
 }
 
-/// `edgepaint fit` refuses a bad target, a method without RTL and an unreachable target
-/// clearly; `render --param` is for the RTL engine only. (A whole fit rebuilds edgepaint at
-/// the fitted formats: `crates/fit/tests` runs the search, the soak the command.)
+/// `edgepaint fit` refuses a bad target or objective and a target no design of the method
+/// meets, naming each design's miss; `render --param` is for the RTL engine only. (A whole
+/// scanline fit rebuilds edgepaint at the fitted formats: `crates/fit/tests` runs the
+/// search, the soak the command; `cli_fit_chooses_the_barycentric_back_end_and_proves_it`
+/// runs one whose design is built at the default formats.)
 #[test]
 fn cli_fit_and_render_param_errors_are_clear() {
     let d = scratch("fit");
@@ -551,18 +553,51 @@ fn cli_fit_and_render_param_errors_are_clear() {
     fails_with(&fit("psnr<=40", &[]), &["\"psnr<=40\"", "larger is better"]);
     fails_with(&fit("sharpness>=2", &[]), &["unknown measure \"sharpness\""]);
     fails_with(
-        &fit("psnr>=40", &["--method", "vector"]),
-        &["--method vector", "scanline pipeline's formats and parts only"],
+        &fit("colour_max_lsb<=0,coverage_differs=0", &["--method", "vector"]),
+        &["no design of --method vector meets the target", "vector lanes=1: cube: colour_max_lsb is", "vector lanes=8"],
     );
     fails_with(
         &fit("colour_max_lsb<=0,coverage_differs=0", &["--no-synth", "--no-proof"]),
-        &["not met even with every knob at its ceiling", "cube: "],
+        &["no design of --method auto", "not met even with every knob at its ceiling", "se engines=1: cube: "],
     );
+    fails_with(&fit("psnr>=40", &["--objective", "speed"]), &["'speed'", "area*time"]);
     let png = d.join("p.png");
     let args = ["render", cube, "--size", "32x24", "--param", "K=3", "-o", png.to_str().unwrap()];
     fails_with(&args, &["--param", "needs --engine rtl"]);
     let args = ["render", cube, "--size", "32x24", "--engine", "rtl", "--param", "P=3", "-o", png.to_str().unwrap()];
     fails_with(&args, &["--param P", "takes N", "K (setup's multipliers)", "CLIP_Y"]);
+}
+
+/// `fit --method vector` runs the barycentric back end at each lane count it is built with,
+/// chooses the lanes for the objective (area: one lane, the fewest gates), emits raster_top
+/// at them, and proves the workload in Verilator: the proof's PNG is the vector model's; the
+/// manifest and the report name every design compared.
+#[test]
+fn cli_fit_chooses_the_barycentric_back_end_and_proves_it() {
+    let d = scratch("fit-vector");
+    let cube = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cube.json");
+    let o = d.join("out");
+    let target = "psnr>=40,colour_max_lsb<=8,depth_order=exact,coverage_unexplained=0";
+    let args = ["fit", cube, "--size", "64x48", "--target", target, "--method", "vector", "--no-synth"];
+    let out = edgepaint(&[&args[..], &["-o", o.to_str().unwrap()]].concat());
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let read =
+        |p: PathBuf| -> serde_json::Value { serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap() };
+    let m = read(o.join("manifest.json"));
+    assert_eq!((m["method"].as_str(), m["params"]["lanes"].as_u64()), (Some("vector"), Some(1)));
+    let compared = m["methods_compared"].as_array().unwrap();
+    let lanes: Vec<u64> = compared.iter().map(|c| c["params"]["lanes"].as_u64().unwrap()).collect();
+    assert_eq!(lanes, [1, 2, 4, 8]);
+    assert!(compared.iter().all(|c| c["passes"] == true), "{compared:?}");
+    assert_eq!(m["proven_in_verilator"], serde_json::json!(["cube"]));
+    let hdl = read(o.join("hdl").join("manifest.json"));
+    let p = &hdl["units"][0]["parameters"];
+    assert_eq!((p["METHOD"].as_u64(), p["LANES"].as_u64()), (Some(1), Some(1)), "{p}");
+    let (model, _) = render_cube(&d.join("model.png"), &["--engine", "vector", "--lanes", "1"]);
+    assert!(std::fs::read(o.join("proof").join("cube.png")).unwrap() == model, "the proof's PNG is the vector model's");
+    let report = std::fs::read_to_string(o.join("report.md")).unwrap();
+    assert!(report.contains("| vector lanes=1 (chosen) | yes |"), "{report}");
+    assert!(report.contains("Method: `vector`, **vector lanes=1**"), "{report}");
 }
 
 /// `pack` writes a scene's vertex buffer (shared vertices once), `inspect` prints it, and

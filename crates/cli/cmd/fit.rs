@@ -1,22 +1,26 @@
-//! `edgepaint fit`: the narrowest scanline design that meets an accuracy target on a
-//! workload (`fit` crate), emitted as Verilog, synthesized, and proven on the workload in
-//! Verilator.
+//! `edgepaint fit`: the smallest design that meets an accuracy target on a workload (`fit`
+//! crate): the narrowest scanline design, or with `--method auto` (the default) whichever
+//! of it and the barycentric and SE back ends at their built formats best meets the
+//! objective (`fit::method`), emitted as Verilog, synthesized, and proven on the workload
+//! in Verilator.
 //!
 //! Writes into DIR: `formats.json` (every quantity's format: `--formats` of `emit`,
 //! `render`, `report`), `manifest.json` (the design, the target, every scene's measures,
-//! the minimality trials), `hdl/raster_top.v` with its manifest (`edgepaint emit` at the
-//! fitted build), `yosys/` (`edgepaint report --no-pnr` of the fitted raster_top),
-//! `proof/<scene>.png` (each scene drawn by the fitted RTL in Verilator, checked equal to the
-//! model, image and depth) and `report.md`.
+//! the methods compared, the minimality trials), `hdl/raster_top.v` with its manifest
+//! (`edgepaint emit` at the chosen design), `yosys/` (`edgepaint report --no-pnr` of the
+//! chosen raster_top), `proof/<scene>.png` (each scene drawn by the chosen RTL in
+//! Verilator, checked equal to the model: image, depth and cycles) and `report.md`.
 
 use super::input::Size;
 use anyhow::{anyhow, bail, Context, Result};
+use fit::method::Candidate;
 use fit::parts::Needed;
-use fit::search::{cost, fit, Objective};
+use fit::search::{cost, fit, Fitted, Objective};
 use fit::target::Target;
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use sweep::area::Model;
+use sweep::area::{Design, Model};
+use sweep::grid::Method;
 use sweep::row::Row;
 use sweep::run::Options;
 
@@ -30,12 +34,16 @@ pub struct Args {
     /// `psnr>=45,colour_max_lsb<=2,depth_order=exact,coverage_unexplained=0` (README, "Fit").
     #[arg(long, value_name = "SPEC")]
     target: String,
-    /// The method: `scanline` (001/003), the one whose pipeline exists in RTL; `auto`
-    /// chooses among those (today scanline).
+    /// The method: `scanline` (001/003: its formats, K, L and parts fitted), `vector`
+    /// (004's barycentric back end at its built formats: the lanes chosen), `se` (000's
+    /// shading engines at their built formats: the fewest engines that cover the screen), or
+    /// `auto`: each of them, and the one that best meets the objective.
     #[arg(long, default_value = "auto", value_parser = ["auto", "scanline", "se", "vector"])]
     method: String,
-    /// What setup's multipliers K and divider stages L are chosen for.
-    #[arg(long, default_value = "area", value_parser = ["area", "cycles", "area*cycles"])]
+    /// What the method, setup's multipliers K and divider stages L, and the lanes are
+    /// chosen for: the area model's gate equivalents (`area`), the mean cycles per frame
+    /// (`cycles`), the mean frame time at the design's clock (`time`), or a product.
+    #[arg(long, default_value = "area", value_parser = Objective::NAMES.map(|(n, _)| n))]
     objective: String,
     /// Integer bits of headroom over the workload's ranges (`dz`, `dc`, `ooa_d`, `z_acc`,
     /// `c_acc`; each range x 2^BITS): for inputs near the workload, such as an animation's
@@ -61,44 +69,132 @@ pub struct Args {
     out: PathBuf,
 }
 
-pub fn run(args: Args) -> Result<()> {
-    if args.method == "se" || args.method == "vector" {
-        bail!(
-            "--method {}: fit searches the scanline pipeline's formats and parts only so far (the {} method's RTL is \
-             built at the default formats); use scanline or auto",
-            args.method,
-            args.method
-        );
+/// The design chosen, and what it is measured against.
+struct Chosen {
+    candidate: Candidate,
+    /// The scanline search's outcome, when the scanline method is chosen.
+    fitted: Option<Fitted>,
+    /// Its size class and formats.
+    class: u32,
+    formats: fx::Formats,
+    /// The default design and its rows.
+    default: Design,
+    default_rows: Vec<Row>,
+    /// Every candidate compared, the chosen one among them.
+    candidates: Vec<Candidate>,
+    /// Designs run.
+    trials: usize,
+}
+
+/// The candidates of `--method` on the workload, and the one chosen for the objective.
+fn choose(args: &Args, inputs: &[sweep::run::Input], target: &Target, opts: &Options) -> Result<Chosen> {
+    let objective = objective(args);
+    let model = Model::calibrated();
+    let all = args.method == "auto";
+    let mut candidates = Vec::new();
+    let mut fitted = None;
+    let mut trials = 0;
+    if all || args.method == "scanline" {
+        eprintln!("fit: searching the scanline pipeline's formats ({} scenes)", inputs.len());
+        let f = fit(inputs, target, objective, args.margin, opts);
+        if let (Err(e), false) = (&f, all) {
+            bail!("{e}");
+        }
+        candidates.push(fit::method::scanline(&f, model));
+        trials += f.as_ref().map_or(0, |f| f.trials);
+        fitted = f.ok();
     }
-    let target = Target::parse(&args.target).map_err(|e| anyhow!(e))?;
-    let objective = match args.objective.as_str() {
-        "cycles" => Objective::Cycles,
-        "area*cycles" => Objective::AreaCycles,
-        _ => Objective::Area,
+    if all || args.method == "vector" {
+        eprintln!("fit: the barycentric back end at 1, 2, 4 and 8 lanes");
+        candidates.extend(fit::method::vector(inputs, target, opts).map_err(|e| anyhow!(e))?);
+        trials += model::raster_top::LANES.len();
+    }
+    if all || args.method == "se" {
+        eprintln!("fit: the SE back end");
+        candidates.push(fit::method::se(inputs, target, opts).map_err(|e| anyhow!(e))?);
+        trials += 1;
+    }
+    let Some(chosen) = fit::method::choose(&candidates, objective).cloned() else {
+        let why: Vec<String> = candidates
+            .iter()
+            .map(|c| format!("{}: {}", c.label(), c.misses.first().map_or("?", String::as_str)))
+            .collect();
+        bail!("no design of --method {} meets the target: {}", args.method, why.join("; "));
     };
+    let (default, default_rows) = match &fitted {
+        Some(f) => (f.default, f.default_rows.clone()),
+        None => {
+            trials += 1;
+            fit::search::shipped(inputs, target, opts).map_err(|e| anyhow!(e))?
+        }
+    };
+    let (class, formats, fitted) = match chosen.method {
+        Method::Scanline => {
+            let f = fitted.context("the scanline design chosen without a fit: a bug in fit")?;
+            (f.design.class, f.design.formats, Some(f))
+        }
+        _ => (fx::Build::default().class, fx::Build::default().formats, None),
+    };
+    Ok(Chosen { candidate: chosen, fitted, class, formats, default, default_rows, candidates, trials })
+}
+
+fn objective(args: &Args) -> Objective {
+    Objective::NAMES.iter().find(|(n, _)| *n == args.objective).map_or(Objective::Area, |(_, o)| *o)
+}
+
+/// A parameter of the chosen candidate (lanes, engines).
+fn param(c: &Candidate, name: &str) -> u64 {
+    c.params.get(name).copied().unwrap_or_default() as u64
+}
+
+pub fn run(args: Args) -> Result<()> {
+    let target = Target::parse(&args.target).map_err(|e| anyhow!(e))?;
     let inputs = args.inputs.iter().map(|p| super::sweep::load(p, args.size)).collect::<Result<Vec<_>>>()?;
     let opts = Options { jobs: args.jobs, shard: None, cache: Some(args.out.join("cache")), area: None };
     let start = std::time::Instant::now();
-    eprintln!("fit: searching the formats ({} scenes)", inputs.len());
-    let fitted = fit(&inputs, &target, objective, args.margin, &opts).map_err(|e| anyhow!(e))?;
+    let chosen = choose(&args, &inputs, &target, &opts)?;
     let search_s = start.elapsed().as_secs_f64();
-    let d = fitted.design;
+    let c = &chosen.candidate;
+    let scanline = c.method == Method::Scanline;
+    eprintln!("fit: chose {}", c.label());
     let out = &args.out;
     std::fs::create_dir_all(out).with_context(|| format!("{}: cannot create", out.display()))?;
     let formats_path = out.join("formats.json");
-    let formats_json = serde_json::to_string_pretty(&d.formats)? + "\n";
+    let formats_json = serde_json::to_string_pretty(&chosen.formats)? + "\n";
     super::input::write(&formats_path, "the fitted formats", formats_json.as_bytes())?;
-    let side = 1u32 << d.class;
+    let side = 1u32 << chosen.class;
     let reread =
         fx::Formats::with_overrides(side, side, &serde_json::from_str(&formats_json)?).map_err(|e| anyhow!(e))?;
-    anyhow::ensure!(reread == d.formats, "formats.json does not read back as the fitted formats: a bug in fit");
-    let needed = fit::parts::needed(&inputs, &d.formats);
-    let mut params = vec![("N", d.class as u64), ("K", d.k as u64), ("L", d.l as u64)];
-    params.extend(needed.parts.params());
+    anyhow::ensure!(reread == chosen.formats, "formats.json does not read back as the fitted formats: a bug in fit");
+    let needed = fit::parts::needed(&inputs, &chosen.formats);
+    // raster_top's parameters (`emit`, `report`) and how `render --engine rtl` draws with it.
+    let (params, render_how): (Vec<(&str, u64)>, Vec<String>) = match c.method {
+        Method::Scanline => {
+            let mut p = vec![("N", chosen.class as u64), ("K", param(c, "K")), ("L", param(c, "L"))];
+            p.extend(needed.parts.params());
+            let how = p.iter().flat_map(|(k, v)| ["--param".into(), format!("{k}={v}")]).collect();
+            (p, how)
+        }
+        Method::Vector => {
+            let lanes = param(c, "lanes");
+            (
+                vec![("METHOD", 1), ("LANES", lanes)],
+                ["--method", "vector", "--lanes"].map(String::from).into_iter().chain([lanes.to_string()]).collect(),
+            )
+        }
+        Method::Se => {
+            let engines = param(c, "engines");
+            (
+                vec![("METHOD", 2), ("ENGINES", engines)],
+                vec!["--method".into(), "se".into(), "--param".into(), format!("ENGINES={engines}")],
+            )
+        }
+    };
+    // The scanline design is built at its fitted formats; the others at the defaults.
+    let formats_arg: Vec<&str> = if scanline { vec!["--formats", path(&formats_path)?] } else { Vec::new() };
     let edgepaint = |what: &str, sub: &[&str], more: &[&str]| -> Result<()> {
         let mut cmd = Command::new(std::env::current_exe()?);
-        cmd.args(sub).args(["--formats"]).arg(&formats_path);
-        cmd.args(more);
+        cmd.args(sub).args(&formats_arg).args(more);
         eprintln!("fit: {what}");
         let status = cmd.status().with_context(|| format!("running edgepaint for {what}"))?;
         anyhow::ensure!(status.success(), "{what} failed ({status})");
@@ -108,12 +204,16 @@ pub fn run(args: Args) -> Result<()> {
     let param_args: Vec<&str> = param_args.iter().map(String::as_str).collect();
     let hdl = out.join("hdl");
     let emit = [&["emit", "--unit", "raster_top"][..], &param_args].concat();
-    edgepaint("emitting the fitted raster_top", &emit, &["-o", path(&hdl)?])?;
+    edgepaint("emitting the chosen raster_top", &emit, &["-o", path(&hdl)?])?;
     let yosys = if args.no_synth {
         None
     } else {
         let dir = out.join("yosys");
-        let report = [&["report", "--no-pnr", "--unit", "raster_top"][..], &param_args].concat();
+        let mut report = [&["report", "--no-pnr", "--unit", "raster_top"][..], &param_args].concat();
+        if c.method == Method::Se {
+            // The generic flow makes flip-flops of the engines' memories.
+            report.extend(["--flow", "ecp5"]);
+        }
         edgepaint("synthesizing it (Yosys, several minutes)", &report, &["-o", path(&dir)?])?;
         let text = std::fs::read_to_string(dir.join("report.json")).context("reading Yosys' report")?;
         Some(serde_json::from_str::<serde_json::Value>(&text)?["units"][0].clone())
@@ -122,33 +222,47 @@ pub fn run(args: Args) -> Result<()> {
     if !args.no_proof {
         let dir = out.join("proof");
         std::fs::create_dir_all(&dir).with_context(|| format!("{}: cannot create", dir.display()))?;
+        let how: Vec<&str> = render_how.iter().map(String::as_str).collect();
         for (input, file) in inputs.iter().zip(&args.inputs) {
             let png = dir.join(format!("{}.png", input.name));
-            let mut more = [&["--engine", "rtl", "--top", "raster_top", "-o", path(&png)?][..], &param_args].concat();
+            let mut more = [&["--engine", "rtl", "--top", "raster_top", "-o", path(&png)?][..], &how].concat();
             let size = args.size.map(|s| format!("{}x{}", s.width, s.height));
             if let Some(s) = &size {
                 more.extend(["--size", s]);
             }
             more.push(path(file)?);
-            edgepaint(&format!("drawing {} with the fitted RTL in Verilator", input.name), &["render"], &more)?;
+            edgepaint(&format!("drawing {} with the chosen RTL in Verilator", input.name), &["render"], &more)?;
             proven.push(input.name.clone());
         }
     }
+    let f = chosen.fitted.as_ref();
+    let compared: Vec<serde_json::Value> = chosen
+        .candidates
+        .iter()
+        .map(|k| {
+            serde_json::json!({"method": k.method.name(), "params": k.params, "passes": k.passes(),
+                "misses": k.misses, "cost": k.cost.map(|c| c.0), "cost_source": k.cost.map(|c| c.1),
+                "clock_mhz": k.clock.map(|c| c.0), "clock_source": k.clock.map(|c| c.1),
+                "mean_cycles": k.cycles(), "score": k.score(objective(&args))})
+        })
+        .collect();
     let manifest = serde_json::json!({
-        "class": d.class, "K": d.k, "L": d.l, "formats": d.formats, "target": args.target,
-        "objective": args.objective, "scenes": fitted.rows, "default_scenes": fitted.default_rows,
-        "narrower": fitted.narrower.iter().map(|(k, t)| serde_json::json!({"knob": k, "value": t.set[k], "misses": t.misses})).collect::<Vec<_>>(),
-        "trials": fitted.trials, "proven_in_verilator": proven,
-        "margin": fitted.margin,
-        "ranges": fitted.ints.iter().map(|i| serde_json::json!({"quantity": i.quantity, "min": i.range.map(|r| r.0), "max": i.range.map(|r| r.1), "int_needed": i.needed, "int_floor": i.floor, "int_default": i.default, "int_fitted": i.fitted})).collect::<Vec<_>>(),
-        "parts": needed.parts, "parts_needed_by": needed.why.iter().map(|(p, s)| serde_json::json!({"param": p, "scene": s})).collect::<Vec<_>>(),
+        "method": c.method.name(), "params": c.params, "methods_compared": compared,
+        "class": chosen.class, "formats": chosen.formats, "target": args.target,
+        "objective": args.objective, "scenes": c.rows, "default_scenes": chosen.default_rows,
+        "narrower": f.map_or(Vec::new(), |f| f.narrower.iter().map(|(k, t)| serde_json::json!({"knob": k, "value": t.set[k], "misses": t.misses})).collect()),
+        "trials": chosen.trials, "proven_in_verilator": proven,
+        "margin": args.margin,
+        "ranges": f.map_or(Vec::new(), |f| f.ints.iter().map(|i| serde_json::json!({"quantity": i.quantity, "min": i.range.map(|r| r.0), "max": i.range.map(|r| r.1), "int_needed": i.needed, "int_floor": i.floor, "int_default": i.default, "int_fitted": i.fitted})).collect()),
+        "parts": scanline.then_some(&needed.parts),
+        "parts_needed_by": needed.why.iter().filter(|_| scanline).map(|(p, s)| serde_json::json!({"param": p, "scene": s})).collect::<Vec<_>>(),
     });
     super::input::write(
         &out.join("manifest.json"),
         "the fit's manifest",
         (serde_json::to_string_pretty(&manifest)? + "\n").as_bytes(),
     )?;
-    let md = report(&fitted, &needed, &target, &args, yosys.as_ref(), &proven, search_s);
+    let md = report(&chosen, &needed, &target, &args, yosys.as_ref(), &proven, search_s);
     super::input::write(&out.join("report.md"), "the fit's report", md.as_bytes())?;
     print!("{md}");
     println!("wrote {}", out.display());
@@ -165,9 +279,9 @@ fn mean(rows: &[Row], f: impl Fn(&Row) -> f64) -> f64 {
     rows.iter().map(f).sum::<f64>() / rows.len().max(1) as f64
 }
 
-/// The report: the fitted design beside the default one.
+/// The report: the chosen design beside the default one, and the methods compared.
 fn report(
-    fitted: &fit::search::Fitted,
+    chosen: &Chosen,
     needed: &Needed,
     target: &Target,
     args: &Args,
@@ -176,71 +290,118 @@ fn report(
     secs: f64,
 ) -> String {
     let model = Model::calibrated();
-    let d = &fitted.design;
-    let default = &fitted.default;
-    let (cf, cd) = (cost(d, model), cost(default, model));
-    let mut md = format!("# edgepaint fit\n\nWorkload: {}. Target: `{}` (every scene; `problems=0` unless bounded). Method: scanline (001/003), the one method with a pipeline in RTL. Objective: {}. Search: {} designs run in {secs:.1} s.\n\n",
-        fitted.rows.iter().map(|r| r.scene.as_str()).collect::<Vec<_>>().join(", "), args.target, args.objective, fitted.trials);
-    md += "| | default | fitted |\n|---|---|---|\n";
-    md += &format!("| size class | {} | {} |\n| K, L | 7, 5 | {}, {} |\n", default.class, d.class, d.k, d.l);
+    let c = &chosen.candidate;
+    let fitted = chosen.fitted.as_ref();
+    let default = &chosen.default;
+    let cd = cost(default, model);
+    let (cf, cf_source) = c.cost.unwrap_or((cd, sweep::row::Source::Modelled));
+    let why = match args.method.as_str() {
+        "auto" => format!(
+            "`auto`: the least {} of the {} designs compared that meet the target",
+            args.objective,
+            chosen.candidates.len()
+        ),
+        m => format!("`{m}`"),
+    };
+    let mut md = format!(
+        "# edgepaint fit\n\nWorkload: {}. Target: `{}` (every scene; `problems=0` unless bounded). Method: {why}, \
+         **{}**. Objective: {}. Search: {} designs run in {secs:.1} s.\n\n",
+        c.rows.iter().map(|r| r.scene.as_str()).collect::<Vec<_>>().join(", "),
+        args.target,
+        c.label(),
+        args.objective,
+        chosen.trials
+    );
+    md += "| | default | chosen |\n|---|---|---|\n";
+    md += &format!("| method | scanline K={} L={} | {} |\n", default.k, default.l, c.label());
+    md += &format!("| size class | {} | {} |\n", default.class, chosen.class);
     let removed: Vec<&str> = needed.parts.params().iter().filter(|(_, on)| *on == 0).map(|(p, _)| *p).collect();
     md += &format!(
         "| optional parts removed | none | {} |\n",
-        if removed.is_empty() { "none".into() } else { removed.join(", ") }
+        match (fitted, removed.is_empty()) {
+            (None, _) => "none (fitted for the scanline method)".to_string(),
+            (Some(_), true) => "none".into(),
+            (Some(_), false) => removed.join(", "),
+        }
     );
-    for ((q, fd), (_, ff)) in default.formats.named().iter().zip(d.formats.named()) {
+    for ((q, fd), (_, ff)) in default.formats.named().iter().zip(chosen.formats.named()) {
         let mark = if *fd != ff { " **" } else { "" };
         md += &format!("| {q} | {fd} | {ff}{mark} |\n");
     }
     let pct = |a: f64, b: f64| format!("{:+.0}%", 100.0 * (b / a - 1.0));
-    md += &format!("| GE (area model, every part present) | {:.0} | {:.0} ({}) |\n", cd.ge, cf.ge, pct(cd.ge, cf.ge));
+    let how = match (c.method, cf_source) {
+        (Method::Scanline, _) => "area model, every part present",
+        (_, sweep::row::Source::Measured) => "Yosys, the calibration's run of this design",
+        _ => "area model",
+    };
+    md += &format!("| GE ({how}) | {:.0} | {:.0} ({}) |\n", cd.ge, cf.ge, pct(cd.ge, cf.ge));
     md += &format!(
-        "| ECP5 LUT4 / FF / DSP (area model, every part present) | {:.0} / {:.0} / {:.0} | {:.0} / {:.0} / {:.0} |\n",
+        "| ECP5 LUT4 / FF / DSP ({how}) | {:.0} / {:.0} / {:.0} | {:.0} / {:.0} / {:.0} |\n",
         cd.ecp5_lut4, cd.ecp5_ff, cd.ecp5_dsp, cf.ecp5_lut4, cf.ecp5_ff, cf.ecp5_dsp
     );
-    md += &format!("| iCE40 LUT4 (area model, every part present) | {:.0} | {:.0} |\n", cd.ice40_lut4, cf.ice40_lut4);
+    md += &format!("| iCE40 LUT4 ({how}) | {:.0} | {:.0} |\n", cd.ice40_lut4, cf.ice40_lut4);
     if let Some(y) = yosys {
         let measured = model.measured(default);
-        let n = |v: &serde_json::Value| v.as_f64().unwrap_or(f64::NAN);
-        let ge = n(&y["generic"]["gate_equivalents"]);
+        let n = |v: &serde_json::Value| v.as_f64().map_or("–".to_string(), |x| format!("{x:.0}"));
+        let ge = y["generic"]["gate_equivalents"].as_f64();
         md += &format!(
-            "| GE (Yosys, emitted raster_top) | {} | {ge:.0}{} |\n| ECP5 LUT4 / FF / DSP (Yosys) | {} | {:.0} / {:.0} / {:.0} |\n| iCE40 LUT4 (Yosys) | {} | {:.0} |\n",
+            "| GE (Yosys, emitted raster_top) | {} | {}{} |\n| ECP5 LUT4 / FF / DSP (Yosys) | {} | {} / {} / {} |\n| iCE40 LUT4 (Yosys) | {} | {} |\n",
             measured.map_or("–".into(), |c| format!("{:.0}", c.ge)),
-            measured.map_or(String::new(), |c| format!(" ({})", pct(c.ge, ge))),
+            n(&y["generic"]["gate_equivalents"]),
+            measured.zip(ge).map_or(String::new(), |(c, ge)| format!(" ({})", pct(c.ge, ge))),
             measured.map_or("–".into(), |c| format!("{:.0} / {:.0} / {:.0}", c.ecp5_lut4, c.ecp5_ff, c.ecp5_dsp)),
             n(&y["ecp5"]["luts"]), n(&y["ecp5"]["ffs"]), n(&y["ecp5"]["dsps"]),
             measured.map_or("–".into(), |c| format!("{:.0}", c.ice40_lut4)),
             n(&y["ice40"]["luts"]),
         );
     }
+    let default_cycles = mean(&chosen.default_rows, |r| r.cycles as f64);
+    md += &format!("| cycles per frame (mean) | {default_cycles:.0} | {:.0} |\n", c.cycles());
+    let default_mhz = mean(&chosen.default_rows, |r| r.clock_mhz.unwrap_or(f64::NAN));
+    let mhz = c.clock.map_or(f64::NAN, |k| k.0);
+    md += &format!("| clock, MHz | {default_mhz:.1} | {mhz:.1} |\n");
     md += &format!(
-        "| cycles per frame (mean) | {:.0} | {:.0} |\n",
-        mean(&fitted.default_rows, |r| r.cycles as f64),
-        mean(&fitted.rows, |r| r.cycles as f64)
+        "| frame time (mean), µs | {:.1} | {:.1} |\n",
+        mean(&chosen.default_rows, |r| r.frame_us.unwrap_or(f64::NAN)),
+        c.frame_us().unwrap_or(f64::NAN)
     );
-    md += &format!(
-        "| clock (modelled), MHz | {:.1} | {:.1} |\n",
-        mean(&fitted.default_rows, |r| r.clock_mhz.unwrap_or(f64::NAN)),
-        mean(&fitted.rows, |r| r.clock_mhz.unwrap_or(f64::NAN))
-    );
-    md += "\n## Units present\n\nThe optional parts of the units (`rtl::switch`), kept only where the workload uses them (`fit::parts`):\n\n| part | fitted | because |\n|---|---|---|\n";
-    for (name, on) in needed.parts.params() {
-        let doc = rtl::switch::Parts::PARAMS.iter().find(|(p, _)| *p == name).map_or("", |(_, d)| d);
-        let because = needed
-            .why
-            .iter()
-            .find(|(p, _)| *p == name)
-            .map_or("nothing in the workload uses it".to_string(), |(_, s)| format!("{s} uses it"));
-        md += &format!(
-            "| `{name}` ({}) | {} | {because} |\n",
-            doc.split(';').next().unwrap_or(doc).trim_start_matches("1: "),
-            if on == 1 { "present" } else { "**removed**" }
-        );
+    md += "\n## Methods compared\n\nEach design run on the workload through its bit-exact model against the float reference (`fit::method`). The barycentric and SE back ends exist in RTL at the default formats of size class 10 only, so they compete there; the scanline design is the one fitted. Area: the calibration's Yosys run of the design where there is one, the area model elsewhere; clock: routed where measured, modelled elsewhere.\n\n| design | meets the target | GE | ECP5 LUT4 / FF / DSP | cycles (mean) | clock, MHz | frame (mean), µs |\n|---|---|---:|---|---:|---:|---:|\n";
+    for k in &chosen.candidates {
+        let mark = if k.label() == c.label() { " (chosen)" } else { "" };
+        let met = if k.passes() {
+            "yes".to_string()
+        } else {
+            format!("no: {}", k.misses.first().map_or("?", String::as_str))
+        };
+        let src = |s: sweep::row::Source| if s == sweep::row::Source::Measured { "measured" } else { "modelled" };
+        let (ge, cells) = k.cost.map_or(("–".into(), "–".into()), |(c, s)| {
+            (format!("{:.0} ({})", c.ge, src(s)), format!("{:.0} / {:.0} / {:.0}", c.ecp5_lut4, c.ecp5_ff, c.ecp5_dsp))
+        });
+        let clock = k.clock.map_or("–".into(), |(m, s)| format!("{m:.1} ({})", src(s)));
+        let frame = k.frame_us().map_or("–".into(), |t| format!("{t:.1}"));
+        md += &format!("| {}{mark} | {met} | {ge} | {cells} | {:.0} | {clock} | {frame} |\n", k.label(), k.cycles());
     }
-    md += &format!("\n## Integer bits from the workload's ranges\n\nThe values the model's registers were given over the workload (analysis mode), the integer bits they need, plus the margin ({} bits), within the RTL's floor and the defaults' rules (`fit::search`):\n\n| quantity | range seen | needed | floor | default | fitted |\n|---|---|---:|---:|---:|---:|\n", fitted.margin);
-    for i in &fitted.ints {
-        let range = i.range.map_or("none".to_string(), |(lo, hi)| format!("[{lo:.4}, {hi:.4}]"));
-        md += &format!("| {} | {range} | {} | {} | {} | {} |\n", i.quantity, i.needed, i.floor, i.default, i.fitted);
+    if let Some(fitted) = fitted {
+        md += "\n## Units present\n\nThe optional parts of the units (`rtl::switch`), kept only where the workload uses them (`fit::parts`):\n\n| part | fitted | because |\n|---|---|---|\n";
+        for (name, on) in needed.parts.params() {
+            let doc = rtl::switch::Parts::PARAMS.iter().find(|(p, _)| *p == name).map_or("", |(_, d)| d);
+            let because = needed
+                .why
+                .iter()
+                .find(|(p, _)| *p == name)
+                .map_or("nothing in the workload uses it".to_string(), |(_, s)| format!("{s} uses it"));
+            md += &format!(
+                "| `{name}` ({}) | {} | {because} |\n",
+                doc.split(';').next().unwrap_or(doc).trim_start_matches("1: "),
+                if on == 1 { "present" } else { "**removed**" }
+            );
+        }
+        md += &format!("\n## Integer bits from the workload's ranges\n\nThe values the model's registers were given over the workload (analysis mode), the integer bits they need, plus the margin ({} bits), within the RTL's floor and the defaults' rules (`fit::search`):\n\n| quantity | range seen | needed | floor | default | fitted |\n|---|---|---:|---:|---:|---:|\n", fitted.margin);
+        for i in &fitted.ints {
+            let range = i.range.map_or("none".to_string(), |(lo, hi)| format!("[{lo:.4}, {hi:.4}]"));
+            md +=
+                &format!("| {} | {range} | {} | {} | {} | {} |\n", i.quantity, i.needed, i.floor, i.default, i.fitted);
+        }
     }
     md += "\n## Each scene against the target\n\n| scene | design |";
     for t in &target.terms {
@@ -249,7 +410,7 @@ fn report(
     md += "\n|---|---|";
     md += &"---:|".repeat(target.terms.len());
     md += "\n";
-    for (label, rows) in [("default", &fitted.default_rows), ("fitted", &fitted.rows)] {
+    for (label, rows) in [("default", &chosen.default_rows), ("chosen", &c.rows)] {
         for r in rows {
             md += &format!("| {} | {label} |", r.scene);
             for t in &target.terms {
@@ -259,13 +420,19 @@ fn report(
             md += "\n";
         }
     }
-    md += "\n## Minimal knob by knob\n\nEach knob one bit narrower, run on the workload:\n\n";
-    for (knob, t) in &fitted.narrower {
-        md += &format!("- {knob} = {}: {}\n", t.set[knob], t.misses.first().map_or("passes (?)", String::as_str));
+    match fitted {
+        Some(fitted) => {
+            md += "\n## Minimal knob by knob\n\nEach knob one bit narrower, run on the workload:\n\n";
+            for (knob, t) in &fitted.narrower {
+                md +=
+                    &format!("- {knob} = {}: {}\n", t.set[knob], t.misses.first().map_or("passes (?)", String::as_str));
+            }
+        }
+        None => md += "\nThe chosen back end's formats are the defaults it is built at: not fitted.\n",
     }
     md += &match proven.len() {
         0 => "\nNot proven in Verilator (`--no-proof`).\n".to_string(),
-        _ => format!("\n**Proof.** The fitted raster_top (its formats, K and L, and the parts present), in Verilator, drew {} exactly as the model does at the fitted design: image and depth bit for bit, and the cycles `model::cycles` predicts (`render --engine rtl`). The guarantee is for this workload as given: a scene with larger ranges may need wider formats, and the models' analysis mode (`render --analysis`) reports the overflow.\n", proven.join(", ")),
+        _ => format!("\n**Proof.** The chosen raster_top ({}), in Verilator, drew {} exactly as the model does at that design: image and depth bit for bit, and the cycles `model::cycles` predicts (`render --engine rtl`). The guarantee is for this workload as given: a scene with larger ranges may need wider formats, and the models' analysis mode (`render --analysis`) reports the overflow.\n", c.label(), proven.join(", ")),
     };
     md
 }

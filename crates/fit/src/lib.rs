@@ -3,8 +3,10 @@
 //! scanline pipeline with which every scene of the workload meets it, by the bit-exact
 //! models against the float reference, then setup's parameters for an objective;
 //! [`parts::needed`] leaves out the optional parts (clipping, culling, the depth test) the
-//! workload never uses.
+//! workload never uses; [`method`] sets the scanline design beside the barycentric and SE
+//! back ends at their built formats and chooses the method (`--method auto`).
 
+pub mod method;
 pub mod parts;
 pub mod search;
 pub mod target;

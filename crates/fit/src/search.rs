@@ -52,7 +52,8 @@
 //!
 //! Setup's multipliers `K` and the divider's stages `L` change cycles and area, not pixels:
 //! they are chosen last, over K 1 to 7 and L 1 to 8, by the objective (the area model's
-//! gate equivalents, the workload's mean cycles per frame, or their product).
+//! gate equivalents, the workload's mean cycles or time per frame, or a product of area and
+//! one of them).
 
 use crate::target::Target;
 use model::ctx::{Ranges, Q};
@@ -69,15 +70,44 @@ pub type Set = BTreeMap<String, u32>;
 /// For each knob above its floor, the trial one bit narrower.
 pub type Narrower = Vec<(String, Trial)>;
 
-/// What K and L are chosen for.
+/// What K and L, and the method (`fit::method`), are chosen for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Objective {
     /// Fewest gate equivalents (area model).
     Area,
     /// Fewest cycles per frame, mean over the workload.
     Cycles,
+    /// Shortest frame, mean over the workload, at the design's clock (routed where
+    /// measured, `sweep::clock` elsewhere).
+    Time,
     /// Least gate equivalents x mean cycles.
     AreaCycles,
+    /// Least gate equivalents x mean frame time.
+    AreaTime,
+}
+
+impl Objective {
+    /// The objectives by the names `--objective` takes.
+    pub const NAMES: [(&'static str, Objective); 5] = [
+        ("area", Objective::Area),
+        ("cycles", Objective::Cycles),
+        ("time", Objective::Time),
+        ("area*cycles", Objective::AreaCycles),
+        ("area*time", Objective::AreaTime),
+    ];
+
+    /// The score of a design of `ge` gate equivalents taking `cycles` per frame and
+    /// `frame_us` microseconds (means over the workload): the smaller the better; a tie on
+    /// the objective goes to area or, for area, to cycles.
+    pub fn score(self, ge: f64, cycles: f64, frame_us: f64) -> f64 {
+        match self {
+            Objective::Area => ge + cycles * 1e-9,
+            Objective::Cycles => cycles + ge * 1e-9,
+            Objective::Time => frame_us + ge * 1e-12,
+            Objective::AreaCycles => ge * cycles,
+            Objective::AreaTime => ge * frame_us,
+        }
+    }
 }
 
 /// The knobs fitted, in the order fitted, with the floor and ceiling of their fraction
@@ -357,12 +387,9 @@ impl<'a> Search<'a> {
                     continue;
                 }
                 let ge = model.pipeline(&self.design(&s)?).ge;
-                let cycles = t.rows.iter().map(|r| r.cycles as f64).sum::<f64>() / t.rows.len().max(1) as f64;
-                let score = match objective {
-                    Objective::Area => ge + cycles * 1e-9,
-                    Objective::Cycles => cycles + ge * 1e-9,
-                    Objective::AreaCycles => ge * cycles,
-                };
+                let mean = |f: &dyn Fn(&Row) -> f64| t.rows.iter().map(f).sum::<f64>() / t.rows.len().max(1) as f64;
+                let frame = mean(&|r| r.frame_us.unwrap_or(f64::INFINITY));
+                let score = objective.score(ge, mean(&|r| r.cycles as f64), frame);
                 if best.as_ref().is_none_or(|(b, ..)| score < *b) {
                     best = Some((score, s, t.rows));
                 }
@@ -386,11 +413,7 @@ pub fn fit(
     let (knobs, narrower) = s.formats()?;
     let (knobs, ints) = s.ints(&knobs, margin)?;
     let (set, rows) = s.params(&knobs, objective, model)?;
-    // The default design edgepaint ships for these screens (class 10 up to 1024 x 1024).
-    let class = inputs.iter().map(|i| fx::resolution_bits(i.trilist.width, i.trilist.height)).max();
-    let mut shipped = Search { class: class.unwrap_or(fx::RTL_CLASS), ..Search::new(inputs, target, opts) };
-    let default_rows = shipped.trial(&Set::new())?.rows;
-    let default = shipped.design(&Set::new())?;
+    let (default, default_rows) = shipped(inputs, target, opts)?;
     Ok(Fitted {
         design: s.design(&set)?,
         set,
@@ -398,10 +421,19 @@ pub fn fit(
         default,
         default_rows,
         narrower,
-        trials: s.trials + shipped.trials,
+        trials: s.trials + 1,
         ints,
         margin,
     })
+}
+
+/// The default design edgepaint ships for the workload's screens (size class 10 up to
+/// 1024 x 1024, its formats, K = 7, L = `model::divider::LATENCY`) and its rows: what a fit
+/// is measured against.
+pub fn shipped(inputs: &[Input], target: &Target, opts: &Options) -> Result<(Design, Vec<Row>), String> {
+    let class = inputs.iter().map(|i| fx::resolution_bits(i.trilist.width, i.trilist.height)).max();
+    let mut s = Search { class: class.unwrap_or(fx::RTL_CLASS), ..Search::new(inputs, target, opts) };
+    Ok((s.design(&Set::new())?, s.trial(&Set::new())?.rows))
 }
 
 /// The modelled cost of `d` (the calibration's measurement where it has one).
