@@ -122,6 +122,44 @@ fn cli_bad_input_is_a_clear_error_naming_the_file() {
     fails_with(&["render", &ok, "-o", d.join("no/such/dir/x.png").to_str().unwrap()], &["no/such/dir/x.png"]);
 }
 
+/// A textured scene (OBJ + MTL + PNG) draws on the float reference, its trilist (version
+/// 2) draws the same image; the engines without a texture unit refuse it by name.
+#[test]
+fn cli_draws_textured_scenes_on_the_float_reference_only() {
+    let d = scratch("textured");
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/textured/crate.json");
+    let (a, b, tris) = (d.join("scene.png"), d.join("tris.png"), d.join("tris.json"));
+    let o = edgepaint(&["render", scene, "--engine", "float", "-o", a.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = edgepaint(&["trilist", scene, "-o", tris.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(std::fs::read_to_string(&tris).unwrap().starts_with(r#"{"version":2,"#));
+    let o = edgepaint(&["render", tris.to_str().unwrap(), "-o", b.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (ia, ib) = (image::open(&a).unwrap().to_rgb8(), image::open(&b).unwrap().to_rgb8());
+    // The crate's planks: many colours, not the flat lit colour of an untextured cube.
+    let colours: std::collections::HashSet<[u8; 3]> = ia.pixels().map(|p| p.0).collect();
+    assert!(colours.len() > 500, "{} colours", colours.len());
+    // The trilist has no background: compare where the crate is.
+    let bg = ia.get_pixel(0, 0).0;
+    for (p, q) in ia.pixels().zip(ib.pixels()) {
+        if p.0 != bg {
+            assert_eq!(p, q);
+        }
+    }
+    let out = d.join("x.out");
+    let out = out.to_str().unwrap();
+    for (cmd, what) in [
+        (vec!["render", scene, "--engine", "scanline", "-o", out], "--engine scanline has no texture unit yet"),
+        (vec!["render", scene, "--engine", "rtl", "-o", out], "--engine rtl has no texture unit yet"),
+        (vec!["accuracy", scene], "the fixed-point models has no texture unit yet"),
+        (vec!["pack", scene, "-o", out], "vertex buffer (001's command parser) has no texture unit yet"),
+        (vec!["sweep", scene, "-o", out], "the fixed-point models has no texture unit yet"),
+    ] {
+        fails_with(&cmd, &["crate.json: the scene is textured", what]);
+    }
+}
+
 #[test]
 fn cli_renders_a_scene_and_its_trilist_to_the_same_image() {
     let d = scratch("good");

@@ -178,7 +178,7 @@ fn random_buffer(rng: &mut ChaCha8Rng) -> Option<VertexBuffer> {
         Vertex::new(x, y, rng.gen_range(-0.1..1.1), c)
     };
     let triangles = (0..rng.gen_range(1..=12)).map(|_| [0; 3].map(|_| vertex(rng))).collect();
-    let list = Trilist { width, height, triangles };
+    let list = Trilist { width, height, triangles, textures: Vec::new() };
     let background = [0; 3].map(|_| rng.gen());
     pack(&list, &fx::Build::default(), rng.gen(), background).ok().map(|(vb, _)| vb)
 }

@@ -216,7 +216,7 @@ fn raster_top_se_16_engines_vs_model() {
 }
 
 fn list(width: u32, height: u32, triangles: Vec<Triangle>) -> Trilist {
-    Trilist { width, height, triangles }
+    Trilist { width, height, triangles, textures: Vec::new() }
 }
 
 /// The model's fill-rule cases (`scene::stress`, as `crates/model/tests/watertight.rs`):

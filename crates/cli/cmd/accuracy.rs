@@ -28,6 +28,7 @@ pub struct Args {
 
 pub fn run(args: Args) -> Result<()> {
     let loaded = input::load(&args.input, args.size)?;
+    loaded.untextured(&args.input, "the fixed-point models")?;
     let list = &loaded.trilist;
     let formats = args.fixed.formats_of(&loaded)?;
     let mut reports = Vec::new();

@@ -36,6 +36,21 @@ pub struct Loaded {
     pub bytes: Option<Vec<u8>>,
 }
 
+impl Loaded {
+    /// An error naming `path` when its triangles are textured: `what` has no texture unit
+    /// yet (the float reference alone draws textures).
+    pub fn untextured(&self, path: &Path, what: &str) -> Result<()> {
+        if self.trilist.is_textured() {
+            bail!(
+                "{}: the scene is textured, and {what} has no texture unit yet: only the float reference draws \
+                 textures (render --engine float)",
+                path.display()
+            );
+        }
+        Ok(())
+    }
+}
+
 /// Whether `path` starts as a vertex buffer does (`model::vertex_buffer::MAGIC`).
 fn is_vertex_buffer(path: &Path) -> bool {
     use std::io::Read;

@@ -27,6 +27,7 @@ pub struct Args {
 
 pub fn run(args: Args) -> Result<()> {
     let loaded = input::load(&args.input, args.size)?;
+    loaded.untextured(&args.input, "the vertex buffer (001's command parser)")?;
     ensure!(loaded.build.is_none(), "{}: already a vertex buffer", args.input.display());
     let list = &loaded.trilist;
     let fixed = FixedArgs { formats: args.formats.clone(), lanes: None };

@@ -79,6 +79,10 @@ pub struct Image {
 
 pub fn run(args: Args) -> Result<()> {
     let loaded = input::load(&args.input, args.size)?;
+    if args.engine != Engine::Float {
+        let name = clap::ValueEnum::to_possible_value(&args.engine).map_or(String::new(), |v| v.get_name().to_owned());
+        loaded.untextured(&args.input, &format!("--engine {name}"))?;
+    }
     let list = &loaded.trilist;
     let cull_back = match args.cull {
         Some(CullArg::Back) => true,

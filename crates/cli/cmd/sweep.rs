@@ -181,6 +181,7 @@ fn area_model(path: &Path) -> Result<sweep::area::Model> {
 /// An input of the sweep, its cache key from its file's bytes and the size asked for.
 pub fn load(path: &Path, size: Option<Size>) -> Result<Input> {
     let loaded = input::load(path, size)?;
+    loaded.untextured(path, "the fixed-point models")?;
     let bytes = std::fs::read(path).with_context(|| format!("{}: cannot read", path.display()))?;
     let mut h = std::collections::hash_map::DefaultHasher::new();
     (bytes, size.map(|s| (s.width, s.height))).hash(&mut h);

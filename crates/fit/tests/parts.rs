@@ -21,7 +21,7 @@ fn triangles(cull_back: bool, tris: &[[(f64, f64, f64); 3]]) -> Input {
     Input {
         name: "t".into(),
         key: 0,
-        trilist: Trilist { width: 64, height: 48, triangles },
+        trilist: Trilist { width: 64, height: 48, triangles, textures: Vec::new() },
         background: [0.0; 3],
         cull_back,
     }

@@ -12,7 +12,7 @@ use sweep::run::{Input, Options as RunOptions};
 
 /// A 64 x 48 workload (size class 8, the smallest) of `tris`.
 fn input(name: &str, tris: Vec<[Vertex; 3]>) -> Input {
-    let trilist = Trilist { width: 64, height: 48, triangles: tris };
+    let trilist = Trilist { width: 64, height: 48, triangles: tris, textures: Vec::new() };
     Input { name: name.into(), key: 1, trilist, background: [0.0; 3], cull_back: false }
 }
 
@@ -42,6 +42,7 @@ fn steep() -> Trilist {
             [v(2.0, 20.0, 0.9, 255.0), v(62.0, 21.0, 0.1, 0.0), v(3.0, 23.0, 0.2, 0.0)],
             [v(40.0, 10.0, 0.0, 0.0), v(40.4, 10.2, 1.0, 0.0), v(50.0, 40.0, 0.5, 0.0)],
         ],
+        textures: Vec::new(),
     }
 }
 

@@ -113,7 +113,7 @@ pub fn overlap() -> VertexBuffer {
             v(10.0, 3.0, 0.4, [90.0, 0.0, 90.0]),
         ],
     ];
-    let list = Trilist { width: 16, height: 16, triangles };
+    let list = Trilist { width: 16, height: 16, triangles, textures: Vec::new() };
     crate::vertex_buffer::pack(&list, &fx::Build::default(), false, [1, 2, 3]).expect("the overlap packs").0
 }
 

@@ -171,7 +171,7 @@ mod tests {
         // written twice, the first triangle's pixels first.
         let far = tri([(1.0, 1.0, 0.6), (15.0, 1.0, 0.6), (1.0, 15.0, 0.6)]);
         let near = tri([(2.0, 2.0, 0.2), (14.0, 2.0, 0.2), (2.0, 14.0, 0.2)]);
-        let list = Trilist { width: 16, height: 16, triangles: vec![far, near] };
+        let list = Trilist { width: 16, height: 16, triangles: vec![far, near], textures: Vec::new() };
         let f = raster_top(&Build::for_screen(16, 16), &list, Cull::None, [0; 3]).expect("a 16 x 16 frame");
         assert_eq!(f.triangles.len(), 2);
         assert!(f.skipped.is_empty());
@@ -193,7 +193,7 @@ mod tests {
 
     #[test]
     fn raster_top_picks_the_size_class_and_rejects_larger_screens() {
-        let screen = |width, height| Trilist { width, height, triangles: vec![] };
+        let screen = |width, height| Trilist { width, height, triangles: vec![], textures: Vec::new() };
         assert_eq!([(320, 240), (1025, 16), (16, 4096)].map(|(w, h)| Build::for_screen(w, h).class), [10, 11, 12]);
         let err = raster_top(&Build::for_screen(4097, 16), &screen(4097, 16), Cull::None, [0; 3])
             .err()
@@ -214,7 +214,7 @@ mod tests {
         let huge = tri([(5000.0, 1.0, 0.5), (1.0, 1.0, 0.5), (1.0, 9.0, 0.5)]);
         let mut bright = tri([(1.0, 1.0, 0.4), (9.0, 1.0, 0.4), (1.0, 9.0, 0.4)]);
         bright[0].r = 300.0;
-        let list = Trilist { width: 16, height: 16, triangles: vec![huge, bright] };
+        let list = Trilist { width: 16, height: 16, triangles: vec![huge, bright], textures: Vec::new() };
         let f = raster_top(&Build::for_screen(16, 16), &list, Cull::None, [0; 3]).expect("a 16 x 16 frame");
         assert_eq!((f.triangles.len(), f.skipped.len(), f.skipped[0].0), (2, 1, 1));
         assert_eq!((f.skipped[0].1.vertex, f.skipped[0].1.quantity), (0, "r"));

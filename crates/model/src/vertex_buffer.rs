@@ -105,7 +105,7 @@ pub fn words_trilist(f: &Formats, width: u32, height: u32, triangles: &[[Vtx; 3]
             })
         })
         .collect();
-    Trilist { width, height, triangles }
+    Trilist { width, height, triangles, textures: Vec::new() }
 }
 
 /// Why bytes are not a vertex buffer: the offset of the offending bytes and the rule.
@@ -625,7 +625,7 @@ mod tests {
         let c = (8.0, 8.0, 0.5);
         let rim = [(1.0, 1.0, 0.2), (15.0, 1.0, 0.3), (15.0, 15.0, 0.4), (1.0, 15.0, 0.6)];
         let triangles = (0..4).map(|i| tri([c, rim[i], rim[(i + 1) % 4]], None)).collect();
-        Trilist { width: 16, height: 16, triangles }
+        Trilist { width: 16, height: 16, triangles, textures: Vec::new() }
     }
 
     fn packed(list: &Trilist) -> VertexBuffer {
@@ -674,6 +674,7 @@ mod tests {
             width: 16,
             height: 16,
             triangles: vec![tri([(1.0, 1.0, 0.2), (15.0, 2.0, 0.4), (3.0, 14.0, 0.9)], Some(w))],
+            textures: Vec::new(),
         };
         let f = Build::for_screen(16, 16).formats;
         let want = to_fixed(&list.triangles[0], &f).expect("fits");

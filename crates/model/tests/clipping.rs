@@ -70,7 +70,12 @@ fn clipping_cull_sort_rejects_triangles_wholly_outside_before_setup() {
             let opts = Options { method, cull: Cull::None, analysis: false, background: [0; 3] };
             let got = triangle(&t, Clip { width: W, height: H }, &f, &opts).0;
             assert_eq!(got, Err(Dropped::Rejected(Reject::Outside(plane))), "{method:?} plane {plane:#b}");
-            let r = render(&Trilist { width: W, height: H, triangles: vec![t] }, &f, &opts, &mut |_| {});
+            let r = render(
+                &Trilist { width: W, height: H, triangles: vec![t], textures: Vec::new() },
+                &f,
+                &opts,
+                &mut |_| {},
+            );
             assert!(!r.work[0].passed_cull, "{method:?}: a rejected triangle must not reach setup");
             assert_eq!(r.stats.culled_outside, 1);
         }

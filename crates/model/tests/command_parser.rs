@@ -122,7 +122,7 @@ fn vertex_fetches_per_triangle_indexed_and_soup() {
             triangles.push([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
         }
     }
-    let list = Trilist { width: 256, height: 256, triangles };
+    let list = Trilist { width: 256, height: 256, triangles, textures: Vec::new() };
     let build = Build::for_screen(256, 256);
     let (vb, _) = pack(&list, &build, false, [0; 3]).expect("packs");
     let r = run(Params::default(), build, &vb.encode(), Bench::default()).expect("parameters");

@@ -12,7 +12,7 @@ const METHODS: [Method; 3] =
     [Method::Scanline, Method::Vector { lanes: 4, perspective: true }, Method::Vector { lanes: 4, perspective: false }];
 
 fn list(width: u32, height: u32, t: Triangle) -> Trilist {
-    Trilist { width, height, triangles: vec![t] }
+    Trilist { width, height, triangles: vec![t], textures: Vec::new() }
 }
 
 /// Every engine's coverage against the reference's (`perspective`: the reference

@@ -40,7 +40,7 @@ fn whole_screen(n: f64) -> Vec<Triangle> {
 fn overflow_whole_screen_triangles_at_the_largest_resolution_fit_default_formats() {
     let n = MAX_RESOLUTION;
     let f = Formats::for_resolution(n, n);
-    let list = Trilist { width: n, height: n, triangles: whole_screen(n as f64) };
+    let list = Trilist { width: n, height: n, triangles: whole_screen(n as f64), textures: Vec::new() };
     for m in METHODS {
         let r = render(&list, &f, &opts(m, true), &mut |_| {});
         assert_eq!(r.problems, vec![], "{m:?}");
@@ -59,7 +59,7 @@ fn overflow_whole_screen_triangles_at_the_largest_resolution_fit_default_formats
 fn overflow_narrow_vertex_format_draws_what_it_can_represent() {
     let n = MAX_RESOLUTION;
     let f = Formats { xy: Fmt::s(8, 4).half_up(), ..Formats::for_resolution(n, n) };
-    let list = Trilist { width: n, height: n, triangles: whole_screen(n as f64) };
+    let list = Trilist { width: n, height: n, triangles: whole_screen(n as f64), textures: Vec::new() };
     for m in METHODS {
         for analysis in [false, true] {
             let r = render(&list, &f, &opts(m, analysis), &mut |_| {});

@@ -148,7 +148,7 @@ fn se_refuses_xy_ranges_beyond_its_span_ends() {
         scene::Vertex::new(200.5, 20.75, 0.3, [0.0, 255.0, 0.0]),
         scene::Vertex::new(210.25, 180.5, 0.35, [0.0, 0.0, 255.0]),
     ];
-    let list = scene::Trilist { width: 256, height: 256, triangles: vec![tri] };
+    let list = scene::Trilist { width: 256, height: 256, triangles: vec![tri], textures: Vec::new() };
     let err = array::render(&list, &f, Cull::None, [0; 3]).unwrap_err();
     assert!(err.contains("span ends") && err.contains("S13.2"), "{err}");
     let f = at("S12.2 half-up");

@@ -33,10 +33,25 @@ pub fn to_screen(tri: &Triangle) -> Result<Vec<[RasterVertex; 3]>, Rejected> {
         return Err(Rejected::WZero);
     }
     if w.iter().all(|&w| w > 0.0) {
-        return Ok(vec![tri.map(|v| RasterVertex { x: v.x, y: v.y, z: v.z, inv_w: 1.0 / v.w_or_one(), rgb: v.rgb() })]);
+        return Ok(vec![tri.map(|v| RasterVertex {
+            x: v.x,
+            y: v.y,
+            z: v.z,
+            inv_w: 1.0 / v.w_or_one(),
+            rgb: v.rgb(),
+            st: st(&v),
+        })]);
     }
-    // Homogeneous vertices: position * w, w, and the colour (linear in clip space).
-    let hom: Vec<[f64; 7]> = tri.iter().zip(w).map(|(v, w)| [v.x * w, v.y * w, v.z * w, w, v.r, v.g, v.b]).collect();
+    // Homogeneous vertices: position * w, w, the colour and the texture coordinates
+    // (linear in clip space).
+    let hom: Vec<[f64; 9]> = tri
+        .iter()
+        .zip(w)
+        .map(|(v, w)| {
+            let [s, t] = st(v);
+            [v.x * w, v.y * w, v.z * w, w, v.r, v.g, v.b, s, t]
+        })
+        .collect();
     let eps = W_EPSILON * w.iter().fold(0.0f64, |m, w| m.max(w.abs()));
     let mut poly = Vec::with_capacity(4);
     for i in 0..3 {
@@ -61,9 +76,15 @@ pub fn to_screen(tri: &Triangle) -> Result<Vec<[RasterVertex; 3]>, Rejected> {
             z: h[2] / h[3],
             inv_w: 1.0 / h[3],
             rgb: [h[4], h[5], h[6]],
+            st: [h[7], h[8]],
         })
         .collect();
     Ok((1..screen.len() - 1).map(|i| [screen[0], screen[i], screen[i + 1]]).collect())
+}
+
+/// A vertex's texture coordinates, 0 when it has none.
+fn st(v: &scene::Vertex) -> [f64; 2] {
+    v.tex.map_or([0.0; 2], |x| [x.s, x.t])
 }
 
 #[cfg(test)]

@@ -4,6 +4,10 @@
 //! * depth test LESS against a depth buffer cleared to 1.0;
 //! * Gouraud colour, screen-linear by default and perspective-correct when the
 //!   trilist carries w (unless [`Options::ignore_w`]);
+//! * textures as OpenGL 4.6 samples them (section 8.14: the scale factor rho exactly,
+//!   level selection, wrap per texel, nearest and bilinear filters; the `texture` crate)
+//!   at the texture coordinates interpolated as the colour is, their derivatives exact,
+//!   through the texture environment with the lit colour as the fragment's;
 //! * no culling by default, back faces on request;
 //! * clipped to the screen, and per pixel to z in [0, 1]; triangles with a
 //!   vertex behind the eye are clipped in homogeneous space first ([`clip`]).
@@ -15,7 +19,7 @@ pub mod clip;
 pub mod raster;
 
 pub use raster::{Fragment, RasterVertex};
-use scene::{Triangle, Trilist};
+use scene::{TextureRef, Triangle, Trilist};
 
 /// How colours are interpolated across a triangle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -190,7 +194,12 @@ pub fn render(list: &Trilist, opts: &Options, progress: &mut dyn FnMut(usize)) -
     let mut frame = Frame::new(list.width, list.height, opts.background);
     let mut stats = Stats { triangles_in: list.triangles.len() as u64, ..Stats::default() };
     for (i, tri) in list.triangles.iter().enumerate() {
+        let tex = tri[0].tex.and_then(|x| list.textures.get(x.texture as usize));
         let outcome = fragments(tri, list.width, list.height, opts, |f| {
+            let f = match tex {
+                Some(t) => Fragment { rgb: textured(&f, t), ..f },
+                None => f,
+            };
             stats.fragments += 1;
             if !(0.0..=1.0).contains(&f.z) {
                 stats.z_clipped += 1;
@@ -209,4 +218,20 @@ pub fn render(list: &Trilist, opts: &Options, progress: &mut dyn FnMut(usize)) -
     }
     progress(list.triangles.len());
     (frame, stats)
+}
+
+/// The colour of fragment `f` of a triangle textured by `t`: what `t`'s sampler gives at
+/// the fragment's texture coordinates and level of detail (lambda = log2 rho, rho exact
+/// from the coordinates' derivatives in texels of level 0: OpenGL 4.6 section 8.14.1),
+/// through `t`'s texture environment with the lit colour as the fragment's (alpha 1, the
+/// environment colour GL's default, transparent black).
+pub fn textured(f: &Fragment, t: &TextureRef) -> [f64; 3] {
+    let base = t.mips.base();
+    let (w, h) = (base.width() as f64, base.height() as f64);
+    let [[sx, tx], [sy, ty]] = f.dst;
+    let lambda = texture::lambda(texture::rho_exact(sx * w, tx * h, sy * w, ty * h));
+    let cs = texture::sample(&t.mips, &t.sampler, f.st[0], f.st[1], lambda);
+    let cf = [f.rgb[0] / 255.0, f.rgb[1] / 255.0, f.rgb[2] / 255.0, 1.0];
+    let c = texture::environment(t.env, cf, cs, [0.0; 4]);
+    [c[0] * 255.0, c[1] * 255.0, c[2] * 255.0]
 }

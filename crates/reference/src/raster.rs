@@ -22,15 +22,24 @@ pub struct RasterVertex {
     /// 1/w (1 when the input had no w).
     pub inv_w: f64,
     pub rgb: [f64; 3],
+    /// Texture coordinates (s, t); 0 where the input has none.
+    pub st: [f64; 2],
 }
 
-/// A covered sample: pixel (x, y) with interpolated depth and colour.
+/// A covered sample: pixel (x, y) with interpolated depth, colour and texture
+/// coordinates.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fragment {
     pub x: u32,
     pub y: u32,
     pub z: f64,
     pub rgb: [f64; 3],
+    /// Texture coordinates (s, t) at the centre, interpolated as the colour is.
+    pub st: [f64; 2],
+    /// Their derivatives per pixel: `[[ds/dx, dt/dx], [ds/dy, dt/dy]]`, exact for the
+    /// interpolation used (perspective: 001's eq. (3), the quotient rule on
+    /// (s/w) / (1/w)).
+    pub dst: [[f64; 2]; 2],
 }
 
 /// Edge function of the directed edge a -> b at sample s, evaluated in canonical
@@ -62,10 +71,10 @@ pub fn signed_area2(v: &[RasterVertex; 3]) -> f64 {
 }
 
 /// Calls `emit` for every pixel centre of the `width` x `height` screen that the
-/// triangle covers under the top-left rule, with depth and colour interpolated at
-/// the centre. Depth is screen-linear (it is z/w already); colour follows
-/// `interp`. Returns the number of covered samples. A zero-area triangle covers
-/// nothing.
+/// triangle covers under the top-left rule, with depth, colour and texture coordinates
+/// interpolated at the centre. Depth is screen-linear (it is z/w already); colour and
+/// texture coordinates follow `interp`. Returns the number of covered samples. A
+/// zero-area triangle covers nothing.
 pub fn rasterize(
     tri: &[RasterVertex; 3],
     width: u32,
@@ -89,6 +98,14 @@ pub fn rasterize(
         let (dx, dy) = (b.0 - a.0, b.1 - a.1);
         dy < 0.0 || (dy == 0.0 && dx > 0.0)
     });
+    // The barycentric weights' derivatives along x and y (the edge functions' over area2).
+    let db = [edges.map(|(a, b)| -(b.1 - a.1) / area2), edges.map(|(a, b)| (b.0 - a.0) / area2)];
+    // Texture coordinates are N / Q with N = sum b_k st_k q_k and Q = sum b_k q_k (q the
+    // vertices' 1/w, or 1 screen-linearly).
+    let q = match interp {
+        Interpolation::Linear => [1.0; 3],
+        Interpolation::Perspective => v.map(|v| v.inv_w),
+    };
 
     let min_x = p.iter().map(|q| q.0).fold(f64::INFINITY, f64::min);
     let max_x = p.iter().map(|q| q.0).fold(f64::NEG_INFINITY, f64::max);
@@ -131,8 +148,15 @@ pub fn rasterize(
                     std::array::from_fn(|c| lerp(v.map(|v| v.rgb[c]), q[1] / sum, q[2] / sum))
                 }
             };
+            let sum = |w: [f64; 3], a: &dyn Fn(usize) -> f64| (0..3).map(|k| w[k] * q[k] * a(k)).sum::<f64>();
+            let den = sum(b, &|_| 1.0);
+            let st: [f64; 2] = std::array::from_fn(|c| sum(b, &|k| v[k].st[c]) / den);
+            let dst = db.map(|d| {
+                let dden = sum(d, &|_| 1.0);
+                std::array::from_fn(|c| (sum(d, &|k| v[k].st[c]) - st[c] * dden) / den)
+            });
             covered += 1;
-            emit(Fragment { x: px, y: py, z, rgb });
+            emit(Fragment { x: px, y: py, z, rgb, st, dst });
         }
     }
     covered

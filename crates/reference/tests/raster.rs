@@ -56,7 +56,7 @@ fn reference_perspective_colour_is_the_ratio_of_two_planes() {
 }
 
 fn one(tris: Vec<Triangle>, opts: &Options) -> reference::Frame {
-    render(&Trilist { width: 16, height: 16, triangles: tris }, opts, &mut |_| {}).0
+    render(&Trilist { width: 16, height: 16, triangles: tris, textures: Vec::new() }, opts, &mut |_| {}).0
 }
 
 #[test]
@@ -87,8 +87,11 @@ fn reference_depth_test_is_less_and_order_independent() {
 fn reference_clips_samples_outside_z_0_1() {
     // z runs from -1 at the left edge to 2 at the right: only samples with z in [0, 1] remain.
     let t = [vz(0.0, 0.0, -1.0, [9.0; 3]), vz(16.0, 0.0, 2.0, [9.0; 3]), vz(0.0, 16.0, -1.0, [9.0; 3])];
-    let (frame, stats) =
-        render(&Trilist { width: 16, height: 16, triangles: vec![t] }, &Options::default(), &mut |_| {});
+    let (frame, stats) = render(
+        &Trilist { width: 16, height: 16, triangles: vec![t], textures: Vec::new() },
+        &Options::default(),
+        &mut |_| {},
+    );
     for (i, &wrote) in frame.written.iter().enumerate() {
         let x = (i % 16) as f64 + 0.5;
         let z = -1.0 + 3.0 * x / 16.0;
@@ -158,7 +161,12 @@ fn reference_draws_a_triangle_through_the_eye_plane_like_an_eye_space_clip() {
 }
 
 fn one_sized(tris: Vec<Triangle>, size: u32) -> reference::Frame {
-    render(&Trilist { width: size, height: size, triangles: tris }, &Options::default(), &mut |_| {}).0
+    render(
+        &Trilist { width: size, height: size, triangles: tris, textures: Vec::new() },
+        &Options::default(),
+        &mut |_| {},
+    )
+    .0
 }
 
 /// A golden reference reproduces a constant attribute exactly: a triangle at z = 1 never
@@ -170,7 +178,7 @@ fn reference_constant_attributes_are_exact() {
     let odd = [(3.3, 1.7), (637.9, 13.1), (91.1, 478.3)];
     let at = |z: f64, rgb: [f64; 3]| -> Triangle { odd.map(|(x, y)| vz(x, y, z, rgb)) };
     let draw = |tris: Vec<Triangle>| {
-        let list = Trilist { width: 640, height: 480, triangles: tris };
+        let list = Trilist { width: 640, height: 480, triangles: tris, textures: Vec::new() };
         render(&list, &Options::default(), &mut |_| {})
     };
     let (frame, stats) = draw(vec![at(1.0, [1.0; 3])]);

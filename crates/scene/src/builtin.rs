@@ -88,6 +88,8 @@ fn cube(d: usize) -> Mesh {
             let corner = |su: f64, sv: f64| MeshVertex {
                 position: std::array::from_fn(|k| n[k] + su * u[k] + sv * v[k]),
                 normal: n,
+                // The whole image on each face.
+                uv: [(su + 1.0) / 2.0, (sv + 1.0) / 2.0],
             };
             // Grid lines at -1 + 2 i / d: the same values on every face, so that shared
             // edges match bit for bit (n[k] + s * 1 + t * 0 is s exactly).
@@ -102,7 +104,7 @@ fn cube(d: usize) -> Mesh {
             }
         }
     }
-    Mesh { triangles }
+    Mesh { triangles, texture: None }
 }
 
 /// A point of a lathe profile in the half-plane through the y axis: distance
@@ -180,6 +182,10 @@ fn lathe(profile: &[ProfilePoint], slices: usize, closed: bool) -> Mesh {
                 MeshVertex {
                     position: revolve(p.r, p.y, (j % slices) as f64 * step),
                     normal: revolve(nrm[0], nrm[1], normal_theta),
+                    // Around the axis, then along the profile: the image wrapped once.
+                    // (s + 1 at the segment's far end, so that a closed profile's last
+                    // segment runs to 1, not back to 0).
+                    uv: [j as f64 / slices as f64, if i == s { s } else { s + 1 } as f64 / segments as f64],
                 }
             };
             let at = |i: usize, j: usize| vertex(i, j, (j % slices) as f64 * step);
@@ -197,7 +203,7 @@ fn lathe(profile: &[ProfilePoint], slices: usize, closed: bool) -> Mesh {
             }
         }
     }
-    Mesh { triangles }
+    Mesh { triangles, texture: None }
 }
 
 /// `profile` (open) with each segment cut into `d` equal pieces; the points added are

@@ -35,7 +35,7 @@
 use crate::math::{cross, dot, length, normalize, sub, Mat3, Mat4, Vec3, Vec4};
 use crate::mesh::MeshVertex;
 use crate::scene::{Camera, Lights};
-use crate::trilist::{Triangle, Vertex};
+use crate::trilist::{Tex, Triangle, Vertex};
 
 /// Nearest screen depth a vertex may have after clipping (before it, 0 is the near plane).
 pub const GUARD_Z_MIN: f64 = -0.5;
@@ -176,6 +176,8 @@ pub fn lambert(color: [f64; 3], normal: Vec3, lights: &Lights) -> [f64; 3] {
 pub struct ClipVertex {
     pub clip: Vec4,
     pub rgb: [f64; 3],
+    /// Texture coordinates (s, t).
+    pub st: [f64; 2],
 }
 
 impl ClipVertex {
@@ -183,6 +185,7 @@ impl ClipVertex {
         ClipVertex {
             clip: std::array::from_fn(|k| self.clip[k] + t * (o.clip[k] - self.clip[k])),
             rgb: std::array::from_fn(|k| self.rgb[k] + t * (o.rgb[k] - self.rgb[k])),
+            st: std::array::from_fn(|k| self.st[k] + t * (o.st[k] - self.st[k])),
         }
     }
 }
@@ -217,14 +220,19 @@ impl ObjectTransform {
             // Only underflow can make a unit normal vanish under an invertible
             // matrix; such a vertex gets the ambient light alone.
             let n_world = normalize(self.normal_matrix.apply(v.normal)).unwrap_or([0.0; 3]);
-            ClipVertex { clip: self.clip_from_object.apply_point(v.position), rgb: lambert(color, n_world, lights) }
+            ClipVertex {
+                clip: self.clip_from_object.apply_point(v.position),
+                rgb: lambert(color, n_world, lights),
+                st: v.uv,
+            }
         })
     }
 }
 
 /// Clips one clip-space triangle to the guard band and emits the screen-space
-/// triangles that remain (none, the triangle itself, or a fan of up to 7).
-pub fn emit_clipped(tri: [ClipVertex; 3], projection: &Projection, out: &mut Vec<Triangle>) {
+/// triangles that remain (none, the triangle itself, or a fan of up to 7), their vertices
+/// textured by texture `texture` when given.
+pub fn emit_clipped(tri: [ClipVertex; 3], projection: &Projection, texture: Option<u16>, out: &mut Vec<Triangle>) {
     let (band, planes) = (&projection.band, &projection.planes);
     // Outcodes as in 003's cull & sort: bit p set when outside plane p.
     let outcode = |v: &ClipVertex| -> u8 {
@@ -263,7 +271,8 @@ pub fn emit_clipped(tri: [ClipVertex; 3], projection: &Projection, out: &mut Vec
             // Clipped vertices lie on a band plane up to rounding: clamp that
             // rounding away so every vertex is provably inside the band.
             let (x, y, z) = band.clamp(x, y, z);
-            Vertex { w: Some(v.clip[3]), ..Vertex::new(x, y, z, v.rgb.map(|c| c.clamp(0.0, 255.0))) }
+            let tex = texture.map(|texture| Tex { s: v.st[0], t: v.st[1], texture });
+            Vertex { w: Some(v.clip[3]), tex, ..Vertex::new(x, y, z, v.rgb.map(|c| c.clamp(0.0, 255.0))) }
         })
         .collect();
     out.extend((1..screen.len() - 1).map(|i| [screen[0], screen[i], screen[i + 1]]));
@@ -381,12 +390,12 @@ mod tests {
     }
 
     fn cv(p: &Projection, world: Vec3, rgb: [f64; 3]) -> ClipVertex {
-        ClipVertex { clip: p.to_clip(world), rgb }
+        ClipVertex { clip: p.to_clip(world), rgb, st: [0.0; 2] }
     }
 
     fn clipped(p: &Projection, tri: [ClipVertex; 3]) -> Vec<Triangle> {
         let mut out = Vec::new();
-        emit_clipped(tri, p, &mut out);
+        emit_clipped(tri, p, None, &mut out);
         out
     }
 

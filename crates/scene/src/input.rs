@@ -17,7 +17,7 @@ impl Input {
         let raw: serde_json::Value = parse_json(&text).map_err(|e| e.in_file(path))?;
         let base = path.parent().unwrap_or(Path::new("."));
         let input = if raw.get("triangles").is_some() {
-            Trilist::from_value(&raw).map(Input::Trilist)
+            Trilist::from_value(&raw, base).map(Input::Trilist)
         } else if raw.get("objects").is_some() {
             Scene::from_value(&raw, base).map(|s| Input::Scene(Box::new(s)))
         } else {

@@ -1,5 +1,5 @@
 //! Scene and mesh input, built-in models, the software geometry stage, and the
-//! trilist v1 screen-space exchange format.
+//! trilist screen-space exchange format (v1, and v2 with textures).
 //!
 //! A [`Scene`] (read from a JSON scene file, see [`scene`]) becomes a
 //! [`Trilist`] through [`Scene::to_trilist`], the [`geometry`] stage that paper
@@ -22,4 +22,4 @@ pub use geometry::{guard_band, GuardBand, GUARD_Z_MAX, GUARD_Z_MIN};
 pub use input::Input;
 pub use mesh::{Mesh, MeshVertex};
 pub use scene::Scene;
-pub use trilist::{Triangle, Trilist, Vertex, MAX_RESOLUTION};
+pub use trilist::{Tex, TextureRef, TextureSpec, Triangle, Trilist, Vertex, MAX_RESOLUTION};

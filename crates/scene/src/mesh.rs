@@ -3,13 +3,16 @@
 use crate::error::{Error, Result};
 use crate::math::{add, cross, dot, face_normal, normalize, Vec3};
 use std::collections::HashMap;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
-/// One mesh vertex: object-space position and unit normal.
+/// One mesh vertex: object-space position, unit normal and texture coordinates.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MeshVertex {
     pub position: Vec3,
     pub normal: Vec3,
+    /// Texture coordinates (s, t): OpenGL's, (0, 0) the image's bottom-left corner, as an
+    /// OBJ file's `vt`; (0, 0) where the mesh has none.
+    pub uv: [f64; 2],
 }
 
 /// A triangle soup: every triangle carries its own three vertices, the way the
@@ -18,6 +21,9 @@ pub struct MeshVertex {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Mesh {
     pub triangles: Vec<[MeshVertex; 3]>,
+    /// The image its material maps onto it (an OBJ material's `map_Kd`, resolved against
+    /// the MTL file's folder), if any.
+    pub texture: Option<PathBuf>,
 }
 
 impl Mesh {
@@ -79,35 +85,75 @@ impl Mesh {
     }
 
     /// Loads an OBJ file: polygons are triangulated as fans, every object and
-    /// group in the file goes into the one mesh, materials and texture
-    /// coordinates are ignored. Normals come from the file (`vn`, referenced
-    /// by every face); a file without them gets smooth normals, see
-    /// [`smooth_normals`]. Errors name the file and say what is wrong.
+    /// group in the file goes into the one mesh. Normals come from the file (`vn`,
+    /// referenced by every face); a file without them gets smooth normals, see
+    /// [`smooth_normals`]. Texture coordinates (`vt`) are kept when every face has
+    /// them; the image of the materials' `map_Kd` (their MTL files, `mtllib`, relative
+    /// to the OBJ's folder, the image relative to the MTL's) becomes the mesh's texture:
+    /// one image per mesh, so materials naming different images are an error, as is a
+    /// textured mesh without `vt`. Errors name the file and say what is wrong.
     pub fn load_obj(path: &Path) -> Result<Mesh> {
         let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
-        Self::from_obj_text(&text).map_err(|msg| Error::invalid(msg).in_file(path))
+        let dir = path.parent().unwrap_or(Path::new("."));
+        Self::parse_obj(&text, Some(dir)).map_err(|msg| Error::invalid(msg).in_file(path))
     }
 
-    /// Parses OBJ text (see [`Mesh::load_obj`]); the error is the message alone.
+    /// Parses OBJ text without its materials (see [`Mesh::load_obj`]); the error is the
+    /// message alone.
     pub fn from_obj_text(text: &str) -> std::result::Result<Mesh, String> {
+        Self::parse_obj(text, None)
+    }
+
+    /// Parses OBJ text, its MTL files read from `dir` (none without it).
+    fn parse_obj(text: &str, dir: Option<&Path>) -> std::result::Result<Mesh, String> {
         let opts =
             tobj::LoadOptions { triangulate: true, ignore_points: true, ignore_lines: true, ..Default::default() };
-        let no_materials = |_: &Path| Ok((Vec::new(), Default::default()));
-        let (models, _) = tobj::load_obj_buf(&mut text.as_bytes(), &opts, no_materials)
-            .map_err(|e| format!("not a valid OBJ file: {e}"))?;
+        let mtl = |p: &Path| match dir {
+            Some(d) => tobj::load_mtl(d.join(p)),
+            None => Ok((Vec::new(), Default::default())),
+        };
+        let (models, materials) =
+            tobj::load_obj_buf(&mut text.as_bytes(), &opts, mtl).map_err(|e| format!("not a valid OBJ file: {e}"))?;
+        let materials = materials.map_err(|e| format!("its material library cannot be read: {e}"))?;
         let mut positions: Vec<[Vec3; 3]> = Vec::new();
         let mut normals: Vec<[Vec3; 3]> = Vec::new();
-        let mut all_have_normals = true;
+        let mut uvs: Vec<[[f64; 2]; 3]> = Vec::new();
+        let (mut all_have_normals, mut all_have_uv) = (true, true);
+        let mut texture: Option<PathBuf> = None;
+        // tobj gives a face without `vt` a neighbour's coordinates when the file has some:
+        // ask the text whether every face names its own.
+        all_have_uv &= every_face_has_vt(text);
         for model in &models {
             let m = &model.mesh;
             let at = |data: &[f32], i: u32| -> Vec3 { std::array::from_fn(|c| data[3 * i as usize + c] as f64) };
             let has_normals = m.normal_indices.len() == m.indices.len();
+            let has_uv = m.texcoord_indices.len() == m.indices.len();
             all_have_normals &= has_normals;
+            all_have_uv &= has_uv;
+            let image = m.material_id.and_then(|i| materials.get(i)).and_then(|mat| mat.diffuse_texture.as_ref());
+            if let (Some(image), Some(dir)) = (image, dir) {
+                let image = dir.join(image);
+                match &texture {
+                    Some(t) if *t != image => {
+                        return Err(format!(
+                            "its materials map two images ({} and {}): a mesh takes one texture",
+                            t.display(),
+                            image.display()
+                        ))
+                    }
+                    _ => texture = Some(image),
+                }
+            }
             for (t, tri) in m.indices.chunks_exact(3).enumerate() {
                 positions.push(std::array::from_fn(|k| at(&m.positions, tri[k])));
                 if has_normals {
                     normals.push(std::array::from_fn(|k| at(&m.normals, m.normal_indices[3 * t + k])));
                 }
+                let uv = |k: usize| {
+                    let i = 2 * m.texcoord_indices[3 * t + k] as usize;
+                    [m.texcoords[i] as f64, m.texcoords[i + 1] as f64]
+                };
+                uvs.push(if has_uv { std::array::from_fn(uv) } else { [[0.0; 2]; 3] });
             }
         }
         if positions.is_empty() {
@@ -115,6 +161,15 @@ impl Mesh {
         }
         if let Some(p) = positions.iter().flatten().find(|p| p.iter().any(|c| !c.is_finite())) {
             return Err(format!("vertex position {p:?} is not finite"));
+        }
+        if let Some(uv) = uvs.iter().flatten().find(|uv| uv.iter().any(|c| !c.is_finite())) {
+            return Err(format!("texture coordinate {uv:?} is not finite"));
+        }
+        if let (Some(image), false) = (&texture, all_have_uv) {
+            return Err(format!(
+                "its material maps {} but not every face has texture coordinates (vt)",
+                image.display()
+            ));
         }
         let normals = if all_have_normals {
             let mut unit = Vec::with_capacity(normals.len());
@@ -132,12 +187,22 @@ impl Mesh {
         let triangles = positions
             .iter()
             .zip(&normals)
-            .map(|(p, n)| std::array::from_fn(|k| MeshVertex { position: p[k], normal: n[k] }))
+            .zip(&uvs)
+            .map(|((p, n), uv)| std::array::from_fn(|k| MeshVertex { position: p[k], normal: n[k], uv: uv[k] }))
             .collect();
-        let mesh = Mesh { triangles };
+        let mesh = Mesh { triangles, texture };
         mesh.check()?;
         Ok(mesh)
     }
+}
+
+/// Whether every face (`f`) of OBJ `text` gives each of its vertices a texture
+/// coordinate (`v/vt` or `v/vt/vn`).
+fn every_face_has_vt(text: &str) -> bool {
+    text.lines()
+        .filter_map(|l| l.trim_start().strip_prefix("f "))
+        .flat_map(str::split_whitespace)
+        .all(|vertex| vertex.split('/').nth(1).is_some_and(|vt| !vt.is_empty()))
 }
 
 /// A normal from a file, made unit length.

@@ -42,6 +42,11 @@
 //! | &nbsp; `.transform.rotate_deg` | [rx, ry, rz] | [0, 0, 0] | degrees about the world x, then y, then z axis, each counter-clockwise seen from the positive end of the axis (right-hand rule) |
 //! | &nbsp; `.transform.scale` | number or [x, y, z], no zero | 1 | a negative factor mirrors the object (its faces stay front faces) |
 //! | &nbsp; `.color` | [r, g, b] in 0..255 | [255, 255, 255] | the surface's colour |
+//! | &nbsp; `.texture` | object | the OBJ material's `map_Kd`, else none | a texture mapped by the mesh's texture coordinates (an OBJ's `vt`; a built-in model's own, see [`builtin`]), modulating the lit colour by default: |
+//! | &nbsp;&nbsp; `.image` | path | the material's `map_Kd` | a PNG file relative to the scene file's folder; its sides powers of two |
+//! | &nbsp;&nbsp; `.sampler` | object | bilinear, nearest mip level, repeat | `texture::Sampler`: `min`, `mag` (`nearest`, `linear`), `mip` (`none`, `nearest`, `linear`), `wrap_s`, `wrap_t` (`repeat`, `mirrored_repeat`, `clamp_to_edge`) |
+//! | &nbsp;&nbsp; `.env` | name | `modulate` | the texture environment: `replace`, `modulate`, `decal`, `blend`, `add` (OpenGL's) |
+//! | &nbsp;&nbsp; `.format` | name | `rgba8888` | the texel format the image and its mip levels are stored in (001's five colour modes): `rgb565`, `rgba5551`, `rgba4444`, `rgb888`, `rgba8888` |
 //! | `cull` | `"none"` or `"back"` | `"none"` | whether the renderer drops back faces ([`Scene::cull_back`]) |
 //!
 //! An object's vertices go to world space by `translate * Rz * Ry * Rx * scale`
@@ -55,7 +60,7 @@ use crate::error::{parse_json, Error, Result};
 use crate::geometry::{emit_clipped, ObjectTransform, Projection};
 use crate::math::{Mat3, Vec3};
 use crate::mesh::Mesh;
-use crate::trilist::{check_resolution, Trilist};
+use crate::trilist::{check_resolution, TextureRef, TextureSpec, Trilist};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
@@ -128,6 +133,8 @@ pub struct Object {
     pub transform: Transform,
     /// Surface colour in [0, 255].
     pub color: [f64; 3],
+    /// The texture mapped onto it, loaded.
+    pub texture: Option<TextureRef>,
 }
 
 /// Object to world: scale, then rotate about x, y, z (in that order), then translate.
@@ -220,6 +227,7 @@ struct ObjectFile {
     transform: Transform,
     #[serde(default = "white")]
     color: [f64; 3],
+    texture: Option<TextureSpec>,
 }
 
 impl ObjectFile {
@@ -261,7 +269,24 @@ impl ObjectFile {
                 )))
             }
         };
-        Ok(Object { source, mesh, transform: self.transform, color: self.color })
+        let image = match (&self.texture, &mesh.texture) {
+            (Some(TextureSpec { image: Some(image), .. }), _) => Some(base_dir.join(image)),
+            (_, Some(image)) => Some(image.clone()),
+            (Some(_), None) => {
+                return Err(Error::invalid(format!(
+                    "{at}.texture: no image: give \"image\", or an OBJ whose material has map_Kd"
+                )))
+            }
+            (None, None) => None,
+        };
+        let texture = match image {
+            Some(image) => Some(
+                TextureRef::load(&image, &self.texture.unwrap_or_default())
+                    .map_err(|e| Error::invalid(format!("{at}.texture: {e}")))?,
+            ),
+            None => None,
+        };
+        Ok(Object { source, mesh, transform: self.transform, color: self.color, texture })
     }
 }
 
@@ -350,8 +375,20 @@ impl Scene {
         for (i, o) in self.objects.iter().enumerate() {
             let xf = ObjectTransform::new(&projection, &o.transform.linear(), o.transform.translate)
                 .map_err(|msg| Error::invalid(format!("objects[{i}].transform: {msg}")))?;
+            let texture = match &o.texture {
+                Some(t) => {
+                    let at = list.textures.iter().position(|u| u == t).unwrap_or(list.textures.len());
+                    if at == list.textures.len() {
+                        list.textures.push(t.clone());
+                    }
+                    Some(u16::try_from(at).map_err(|_| {
+                        Error::invalid(format!("objects[{i}].texture: more than {} textures", u16::MAX))
+                    })?)
+                }
+                None => None,
+            };
             for tri in &o.mesh.triangles {
-                emit_clipped(xf.vertices(tri, o.color, &self.lights), &projection, &mut list.triangles);
+                emit_clipped(xf.vertices(tri, o.color, &self.lights), &projection, texture, &mut list.triangles);
             }
         }
         Ok(list)

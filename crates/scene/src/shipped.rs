@@ -22,8 +22,20 @@ pub fn dense() -> PathBuf {
 
 /// Every shipped scene (`scenes/*.json`, not the folders under it), sorted by path.
 pub fn all() -> std::io::Result<Vec<PathBuf>> {
+    scenes_in(dir())
+}
+
+/// The shipped textured scenes, `scenes/textured/*.json` (with their OBJ, MTL and PNG
+/// files, from `scripts/gen-textures.py`): the float reference draws them; the
+/// fixed-point models and the RTL have no texture unit yet.
+pub fn textured() -> std::io::Result<Vec<PathBuf>> {
+    scenes_in(dir().join("textured"))
+}
+
+/// The scene files (`*.json`) in `folder`, sorted by path.
+fn scenes_in(folder: PathBuf) -> std::io::Result<Vec<PathBuf>> {
     let mut paths = Vec::new();
-    for entry in std::fs::read_dir(dir())? {
+    for entry in std::fs::read_dir(folder)? {
         let p = entry?.path();
         if p.extension().is_some_and(|e| e == "json") {
             paths.push(p);

@@ -1,4 +1,4 @@
-//! trilist v1: the screen-space triangle list every rasterizer in edgepaint reads.
+//! trilist: the screen-space triangle list every rasterizer in edgepaint reads.
 //!
 //! ```json
 //! {"width": W, "height": H,
@@ -14,12 +14,32 @@
 //!   interpolated perspective-correctly; without it w = 1 (screen-linear).
 //!   `w <= 0` is legal (a vertex behind the eye): see `reference` for how it is drawn.
 //!
+//! **Version 2** adds textures (version 1 files, without `"version"`, still read):
+//!
+//! ```json
+//! {"version": 2, "width": W, "height": H,
+//!  "textures": [{"image": "checker.png", "sampler": {"wrap_s": "clamp_to_edge"}, "env": "modulate",
+//!                "format": "rgb565"}],
+//!  "triangles": [ [[x,y,z,r,g,b,w,s,t,texture], ...], ... ]}
+//! ```
+//!
+//! * `textures`: the images (PNG, relative to the trilist's folder), each with its
+//!   sampler state, texture environment and texel format (`texture::Sampler`,
+//!   `texture::EnvMode`, `texture::TexelFormat`: 001's five colour modes, the image and
+//!   its mip levels stored in it; keys left out take the defaults: bilinear, nearest mip
+//!   level, repeat, MODULATE, RGBA8888).
+//! * a textured vertex has 10 values: w, then the texture coordinates `s`, `t`
+//!   (OpenGL's: (0, 0) the image's bottom-left corner, 1 its width or height) and the
+//!   index of its texture in `textures`; the three vertices of a triangle name the same
+//!   texture, or none has one.
+//!
 //! Reading validates everything and reports the file, the triangle, the vertex
 //! and the value at fault; nothing here panics on bad input.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::fmt;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use crate::error::{Error, Result};
 
@@ -39,12 +59,70 @@ pub struct Vertex {
     pub b: f64,
     /// Clip-space w when the producer knew it (7th value); `None` means w = 1.
     pub w: Option<f64>,
+    /// Texture coordinates and the texture they address (version 2), if textured.
+    pub tex: Option<Tex>,
+}
+
+/// A vertex's texture coordinates (OpenGL's s and t: (0, 0) the image's bottom-left
+/// corner, 1 its width or height) and the index of its texture in [`Trilist::textures`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tex {
+    pub s: f64,
+    pub t: f64,
+    pub texture: u16,
+}
+
+/// A texture as the triangles address it: its image with the mip chain built from it and
+/// stored in its texel format, its sampler state and texture environment.
+#[derive(Clone, Debug)]
+pub struct TextureRef {
+    /// The PNG file (absolute when it was loaded from a file).
+    pub image: PathBuf,
+    pub sampler: texture::Sampler,
+    pub env: texture::EnvMode,
+    pub format: texture::TexelFormat,
+    /// The image's mip chain (2 x 2 box filter) in `format`, built when it was loaded.
+    pub mips: Arc<texture::MipChain>,
+}
+
+impl PartialEq for TextureRef {
+    /// The same file with the same state (the mip chain follows from the file).
+    fn eq(&self, o: &TextureRef) -> bool {
+        (&self.image, &self.sampler, &self.env, &self.format) == (&o.image, &o.sampler, &o.env, &o.format)
+    }
+}
+
+/// A texture as scene and trilist files give it: every key optional (a scene's OBJ
+/// object may take its image from its material).
+#[derive(Clone, Debug, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TextureSpec {
+    /// The PNG file, relative to the file that names it.
+    pub image: Option<PathBuf>,
+    #[serde(default)]
+    pub sampler: texture::Sampler,
+    #[serde(default)]
+    pub env: texture::EnvMode,
+    #[serde(default)]
+    pub format: texture::TexelFormat,
+}
+
+impl TextureRef {
+    /// Loads `image` and builds its mip chain, with `spec`'s state; the error names the
+    /// file.
+    pub fn load(image: &Path, spec: &TextureSpec) -> Result<TextureRef> {
+        let base = texture::Texture::load(image).map_err(|e| Error::invalid(e.to_string()))?;
+        let mips = texture::MipChain::new(base).map_err(|e| Error::invalid(e.to_string()))?.quantized(spec.format);
+        // Held absolute: a trilist written elsewhere still finds it.
+        let image = std::fs::canonicalize(image).unwrap_or_else(|_| image.to_path_buf());
+        Ok(TextureRef { image, sampler: spec.sampler, env: spec.env, format: spec.format, mips: Arc::new(mips) })
+    }
 }
 
 impl Vertex {
     /// A vertex without w (screen-linear interpolation).
     pub const fn new(x: f64, y: f64, z: f64, rgb: [f64; 3]) -> Self {
-        Vertex { x, y, z, r: rgb[0], g: rgb[1], b: rgb[2], w: None }
+        Vertex { x, y, z, r: rgb[0], g: rgb[1], b: rgb[2], w: None, tex: None }
     }
 
     /// The colour as an array.
@@ -67,40 +145,65 @@ pub struct Trilist {
     pub width: u32,
     pub height: u32,
     pub triangles: Vec<Triangle>,
+    /// The textures the vertices' [`Tex::texture`] index (version 2); empty in version 1.
+    pub textures: Vec<TextureRef>,
 }
 
 /// Which vertex field a validation error refers to.
-const FIELD_NAMES: [&str; 7] = ["x", "y", "z", "r", "g", "b", "w"];
+const FIELD_NAMES: [&str; 10] = ["x", "y", "z", "r", "g", "b", "w", "s", "t", "texture"];
 
 impl Trilist {
     /// An empty list for a `width` x `height` screen (checked).
     pub fn new(width: u32, height: u32) -> Result<Self> {
         check_resolution(width, height)?;
-        Ok(Trilist { width, height, triangles: Vec::new() })
+        Ok(Trilist { width, height, triangles: Vec::new(), textures: Vec::new() })
     }
 
-    /// Reads and validates a trilist v1 file.
+    /// Whether any triangle is textured.
+    pub fn is_textured(&self) -> bool {
+        self.triangles.iter().any(|t| t[0].tex.is_some())
+    }
+
+    /// Reads and validates a trilist file; texture images are relative to its folder.
     pub fn load(path: &Path) -> Result<Self> {
         let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
-        Self::from_json(&text).map_err(|e| e.in_file(path))
+        let raw: serde_json::Value = crate::error::parse_json(&text).map_err(|e| e.in_file(path))?;
+        Self::from_value(&raw, path.parent().unwrap_or(Path::new("."))).map_err(|e| e.in_file(path))
     }
 
-    /// Parses and validates trilist v1 JSON text.
+    /// Parses and validates trilist JSON text (texture images relative to the working
+    /// folder).
     pub fn from_json(text: &str) -> Result<Self> {
         let raw: serde_json::Value = crate::error::parse_json(text)?;
-        Self::from_value(&raw)
+        Self::from_value(&raw, Path::new("."))
     }
 
-    /// Validates an already parsed JSON value (also used to sniff input kinds).
-    pub fn from_value(raw: &serde_json::Value) -> Result<Self> {
+    /// Validates an already parsed JSON value (also used to sniff input kinds); texture
+    /// images are relative to `base_dir`.
+    pub fn from_value(raw: &serde_json::Value, base_dir: &Path) -> Result<Self> {
         let obj = raw
             .as_object()
             .ok_or_else(|| Error::invalid("a trilist must be a JSON object with width, height and triangles"))?;
+        let version = match obj.get("version") {
+            None => 1,
+            Some(v) if v.as_u64() == Some(2) => 2,
+            Some(v) => {
+                return Err(Error::invalid(format!("\"version\" = {v}: edgepaint reads trilist versions 1 and 2")))
+            }
+        };
         for key in obj.keys() {
-            if !matches!(key.as_str(), "width" | "height" | "triangles") {
-                return Err(Error::invalid(format!("unknown key \"{key}\" (trilist v1 has width, height, triangles)")));
+            let known = matches!(key.as_str(), "width" | "height" | "triangles")
+                || (version == 2 && matches!(key.as_str(), "version" | "textures"));
+            if !known {
+                return Err(Error::invalid(format!(
+                    "unknown key \"{key}\" (trilist v1 has width, height, triangles; v2 adds version and textures)"
+                )));
             }
         }
+        let textures = match obj.get("textures") {
+            None => Vec::new(),
+            Some(t) => parse_textures(t, base_dir)?,
+        };
         let dim = |name: &str| -> Result<u32> {
             let v = obj.get(name).ok_or_else(|| Error::invalid(format!("missing \"{name}\"")))?;
             let n = v
@@ -125,22 +228,40 @@ impl Trilist {
             }
             let mut out = [Vertex::new(0.0, 0.0, 0.0, [0.0; 3]); 3];
             for (k, v) in verts.iter().enumerate() {
-                out[k] = parse_vertex(v).map_err(|msg| Error::invalid(format!("triangle {t} vertex {k}: {msg}")))?;
+                out[k] = parse_vertex(v, version, textures.len())
+                    .map_err(|msg| Error::invalid(format!("triangle {t} vertex {k}: {msg}")))?;
+            }
+            let units = out.map(|v| v.tex.map(|x| x.texture));
+            if units[1] != units[0] || units[2] != units[0] {
+                return Err(Error::invalid(format!(
+                    "triangle {t}: its vertices name textures {units:?}: the three name the same texture, or none has one"
+                )));
             }
             triangles.push(out);
         }
-        Ok(Trilist { width, height, triangles })
+        Ok(Trilist { width, height, triangles, textures })
     }
 
-    /// Writes trilist v1 JSON. A vertex carries the 7th value exactly when it has w.
+    /// Writes trilist JSON: version 1 without textures, else version 2 (image paths as
+    /// held). A vertex carries the 7th value exactly when it has w or a texture (w = 1
+    /// written for a textured vertex without w), and values 8 to 10 when textured.
     pub fn to_json(&self) -> String {
         #[derive(Serialize)]
+        struct OutTexture<'a> {
+            image: &'a Path,
+            sampler: texture::Sampler,
+            env: texture::EnvMode,
+            format: texture::TexelFormat,
+        }
+        #[derive(Serialize)]
         struct Out<'a> {
+            #[serde(skip_serializing_if = "Option::is_none")]
+            version: Option<u32>,
             width: u32,
             height: u32,
+            #[serde(skip_serializing_if = "Vec::is_empty")]
+            textures: Vec<OutTexture<'a>>,
             triangles: Vec<[Vec<f64>; 3]>,
-            #[serde(skip)]
-            _p: std::marker::PhantomData<&'a ()>,
         }
         let triangles = self
             .triangles
@@ -148,16 +269,25 @@ impl Trilist {
             .map(|t| {
                 t.map(|v| {
                     let mut a = vec![v.x, v.y, v.z, v.r, v.g, v.b];
-                    a.extend(v.w);
+                    match v.tex {
+                        Some(x) => a.extend([v.w_or_one(), x.s, x.t, x.texture as f64]),
+                        None => a.extend(v.w),
+                    }
                     a
                 })
             })
             .collect();
-        serde_json::to_string(&Out { width: self.width, height: self.height, triangles, _p: Default::default() })
+        let textures: Vec<OutTexture> = self
+            .textures
+            .iter()
+            .map(|t| OutTexture { image: &t.image, sampler: t.sampler, env: t.env, format: t.format })
+            .collect();
+        let version = (!textures.is_empty()).then_some(2);
+        serde_json::to_string(&Out { version, width: self.width, height: self.height, textures, triangles })
             .expect("finite floats always serialise")
     }
 
-    /// Writes the list to `path` as trilist v1 JSON.
+    /// Writes the list to `path` as trilist JSON.
     pub fn save(&self, path: &Path) -> Result<()> {
         std::fs::write(path, self.to_json()).map_err(|e| Error::io(path, e))
     }
@@ -175,12 +305,35 @@ pub fn check_resolution(width: u32, height: u32) -> Result<()> {
     Ok(())
 }
 
-fn parse_vertex(v: &serde_json::Value) -> std::result::Result<Vertex, String> {
-    let a = v.as_array().ok_or("must be an array [x,y,z,r,g,b] or [x,y,z,r,g,b,w]")?;
-    if a.len() != 6 && a.len() != 7 {
-        return Err(format!("has {} values, a vertex needs 6 (x,y,z,r,g,b) or 7 (with w)", a.len()));
+/// A version 2 file's `textures`, each image loaded from `base_dir`.
+fn parse_textures(raw: &serde_json::Value, base_dir: &Path) -> Result<Vec<TextureRef>> {
+    let list = raw.as_array().ok_or_else(|| Error::invalid("\"textures\" must be an array"))?;
+    if list.len() > u16::MAX as usize {
+        return Err(Error::invalid(format!("{} textures: at most {}", list.len(), u16::MAX)));
     }
-    let mut f = [0.0f64; 7];
+    list.iter()
+        .enumerate()
+        .map(|(i, t)| {
+            let at = |e: &dyn fmt::Display| Error::invalid(format!("textures[{i}]: {e}"));
+            let spec: TextureSpec = serde_json::from_value(t.clone()).map_err(|e| at(&e))?;
+            let image = spec.image.as_ref().ok_or_else(|| at(&"missing \"image\""))?;
+            TextureRef::load(&base_dir.join(image), &spec).map_err(|e| at(&e))
+        })
+        .collect()
+}
+
+/// One vertex of a version `version` file with `textures` textures.
+fn parse_vertex(v: &serde_json::Value, version: u32, textures: usize) -> std::result::Result<Vertex, String> {
+    let want = if version == 2 {
+        "6 (x,y,z,r,g,b), 7 (with w) or 10 (with w, s, t and a texture)"
+    } else {
+        "6 (x,y,z,r,g,b) or 7 (with w)"
+    };
+    let a = v.as_array().ok_or_else(|| format!("must be an array of {want} values"))?;
+    if !(a.len() == 6 || a.len() == 7 || (version == 2 && a.len() == 10)) {
+        return Err(format!("has {} values, a vertex needs {want}", a.len()));
+    }
+    let mut f = [0.0f64; 10];
     for (i, x) in a.iter().enumerate() {
         f[i] = x.as_f64().ok_or_else(|| format!("{} must be a number, got {x}", FIELD_NAMES[i]))?;
         if !f[i].is_finite() {
@@ -192,7 +345,19 @@ fn parse_vertex(v: &serde_json::Value) -> std::result::Result<Vertex, String> {
             return Err(format!("colour {} = {c} is outside [0, 255]", FIELD_NAMES[i]));
         }
     }
-    Ok(Vertex { x: f[0], y: f[1], z: f[2], r: f[3], g: f[4], b: f[5], w: (a.len() == 7).then_some(f[6]) })
+    let tex = if a.len() == 10 {
+        let unit = f[9];
+        if unit.fract() != 0.0 || unit < 0.0 || unit >= textures as f64 {
+            return Err(format!(
+                "texture {unit} is not one of the file's {textures} textures (0 to {})",
+                textures as f64 - 1.0
+            ));
+        }
+        Some(Tex { s: f[7], t: f[8], texture: unit as u16 })
+    } else {
+        None
+    };
+    Ok(Vertex { x: f[0], y: f[1], z: f[2], r: f[3], g: f[4], b: f[5], w: (a.len() >= 7).then_some(f[6]), tex })
 }
 
 impl fmt::Display for Vertex {
@@ -200,6 +365,9 @@ impl fmt::Display for Vertex {
         write!(f, "({}, {}, z {}, rgb {} {} {}", self.x, self.y, self.z, self.r, self.g, self.b)?;
         if let Some(w) = self.w {
             write!(f, ", w {w}")?;
+        }
+        if let Some(x) = self.tex {
+            write!(f, ", s {} t {} texture {}", x.s, x.t, x.texture)?;
         }
         write!(f, ")")
     }

@@ -38,7 +38,7 @@ fn v(x: f64, y: f64, z: f64, rgb: [f64; 3]) -> Vertex {
 }
 
 fn list(width: u32, height: u32, triangles: Vec<Triangle>) -> Trilist {
-    Trilist { width: width.min(MAX_RESOLUTION), height: height.min(MAX_RESOLUTION), triangles }
+    Trilist { width: width.min(MAX_RESOLUTION), height: height.min(MAX_RESOLUTION), triangles, textures: Vec::new() }
 }
 
 /// How a needle runs.

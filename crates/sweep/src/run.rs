@@ -34,6 +34,12 @@ impl Input {
         };
         let s = s.with_size(width, height).map_err(|e| format!("{}: {e}", path.display()))?;
         let trilist = s.to_trilist().map_err(|e| format!("{}: {e}", path.display()))?;
+        if trilist.is_textured() {
+            return Err(format!(
+                "{}: the scene is textured: the fixed-point models have no texture unit yet",
+                path.display()
+            ));
+        }
         Ok(Input { name, key: 1, trilist, background: s.background, cull_back: s.cull_back })
     }
 }

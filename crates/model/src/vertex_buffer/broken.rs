@@ -13,7 +13,7 @@ pub fn fan() -> VertexBuffer {
     let c = (8.0, 8.0, 0.5);
     let rim = [(1.0, 1.0, 0.2), (15.0, 1.0, 0.3), (15.0, 15.0, 0.4), (1.0, 15.0, 0.6)];
     let triangles = (0..4).map(|i| [v(c), v(rim[i]), v(rim[(i + 1) % 4])]).collect();
-    let list = Trilist { width: 16, height: 16, triangles };
+    let list = Trilist { width: 16, height: 16, triangles, textures: Vec::new() };
     pack(&list, &Build::for_screen(16, 16), true, [1, 2, 3]).expect("the fan packs").0
 }
 
