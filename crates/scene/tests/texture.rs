@@ -151,3 +151,16 @@ fn trilist_version_2_carries_textures_and_version_1_still_reads() {
     let e = Trilist::from_json(r#"{"width":4,"height":4,"textures":[],"triangles":[]}"#).unwrap_err().to_string();
     assert!(e.contains("unknown key \"textures\""), "{e}");
 }
+
+#[test]
+fn every_shipped_textured_scene_draws_textured() {
+    let scenes = scene::shipped::textured().unwrap();
+    assert!(scenes.len() >= 2, "{scenes:?}");
+    for path in scenes {
+        let list = Scene::load(&path).unwrap().to_trilist().unwrap();
+        assert!(list.is_textured(), "{}", path.display());
+        let (frame, _) = reference::render(&list, &reference::Options::default(), &mut |_| {});
+        let colours: std::collections::HashSet<[u8; 3]> = frame.rgb8().into_iter().collect();
+        assert!(colours.len() > 100, "{}: {} colours", path.display(), colours.len());
+    }
+}
