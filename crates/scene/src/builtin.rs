@@ -90,6 +90,7 @@ fn cube(d: usize) -> Mesh {
                 normal: n,
                 // The whole image on each face.
                 uv: [(su + 1.0) / 2.0, (sv + 1.0) / 2.0],
+                texture: None,
             };
             // Grid lines at -1 + 2 i / d: the same values on every face, so that shared
             // edges match bit for bit (n[k] + s * 1 + t * 0 is s exactly).
@@ -104,7 +105,7 @@ fn cube(d: usize) -> Mesh {
             }
         }
     }
-    Mesh { triangles, texture: None }
+    Mesh { triangles, textures: Vec::new(), has_uv: true }
 }
 
 /// A point of a lathe profile in the half-plane through the y axis: distance
@@ -186,6 +187,7 @@ fn lathe(profile: &[ProfilePoint], slices: usize, closed: bool) -> Mesh {
                     // (s + 1 at the segment's far end, so that a closed profile's last
                     // segment runs to 1, not back to 0).
                     uv: [j as f64 / slices as f64, if i == s { s } else { s + 1 } as f64 / segments as f64],
+                    texture: None,
                 }
             };
             let at = |i: usize, j: usize| vertex(i, j, (j % slices) as f64 * step);
@@ -203,7 +205,7 @@ fn lathe(profile: &[ProfilePoint], slices: usize, closed: bool) -> Mesh {
             }
         }
     }
-    Mesh { triangles, texture: None }
+    Mesh { triangles, textures: Vec::new(), has_uv: true }
 }
 
 /// `profile` (open) with each segment cut into `d` equal pieces; the points added are

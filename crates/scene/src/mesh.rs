@@ -13,6 +13,9 @@ pub struct MeshVertex {
     /// Texture coordinates (s, t): OpenGL's, (0, 0) the image's bottom-left corner, as an
     /// OBJ file's `vt`; (0, 0) where the mesh has none.
     pub uv: [f64; 2],
+    /// The index in [`Mesh::textures`] of the image its triangle's material maps (the
+    /// three vertices of a triangle agree); `None` for an untextured triangle.
+    pub texture: Option<u16>,
 }
 
 /// A triangle soup: every triangle carries its own three vertices, the way the
@@ -21,9 +24,12 @@ pub struct MeshVertex {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Mesh {
     pub triangles: Vec<[MeshVertex; 3]>,
-    /// The image its material maps onto it (an OBJ material's `map_Kd`, resolved against
-    /// the MTL file's folder), if any.
-    pub texture: Option<PathBuf>,
+    /// The images its materials map onto it (an OBJ material's `map_Kd`, resolved against
+    /// the MTL file's folder), each once.
+    pub textures: Vec<PathBuf>,
+    /// Whether its vertices carry texture coordinates of their own (every built-in model;
+    /// an OBJ whose faces all give `vt`).
+    pub has_uv: bool,
 }
 
 impl Mesh {
@@ -88,10 +94,10 @@ impl Mesh {
     /// group in the file goes into the one mesh. Normals come from the file (`vn`,
     /// referenced by every face); a file without them gets smooth normals, see
     /// [`smooth_normals`]. Texture coordinates (`vt`) are kept when every face has
-    /// them; the image of the materials' `map_Kd` (their MTL files, `mtllib`, relative
-    /// to the OBJ's folder, the image relative to the MTL's) becomes the mesh's texture:
-    /// one image per mesh, so materials naming different images are an error, as is a
-    /// textured mesh without `vt`. Errors name the file and say what is wrong.
+    /// them; each material's `map_Kd` (the MTL files, `mtllib`, relative to the OBJ's
+    /// folder, the image relative to the MTL's) textures the faces that use it, the faces
+    /// of a material without one are drawn untextured; a textured mesh whose faces do not
+    /// all give `vt` is an error. Errors name the file and say what is wrong.
     pub fn load_obj(path: &Path) -> Result<Mesh> {
         let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
         let dir = path.parent().unwrap_or(Path::new("."));
@@ -119,7 +125,8 @@ impl Mesh {
         let mut normals: Vec<[Vec3; 3]> = Vec::new();
         let mut uvs: Vec<[[f64; 2]; 3]> = Vec::new();
         let (mut all_have_normals, mut all_have_uv) = (true, true);
-        let mut texture: Option<PathBuf> = None;
+        let mut textures: Vec<PathBuf> = Vec::new();
+        let mut texture_of: Vec<Option<u16>> = Vec::new();
         // tobj gives a face without `vt` a neighbour's coordinates when the file has some:
         // ask the text whether every face names its own.
         all_have_uv &= every_face_has_vt(text);
@@ -131,19 +138,17 @@ impl Mesh {
             all_have_normals &= has_normals;
             all_have_uv &= has_uv;
             let image = m.material_id.and_then(|i| materials.get(i)).and_then(|mat| mat.diffuse_texture.as_ref());
-            if let (Some(image), Some(dir)) = (image, dir) {
-                let image = dir.join(image);
-                match &texture {
-                    Some(t) if *t != image => {
-                        return Err(format!(
-                            "its materials map two images ({} and {}): a mesh takes one texture",
-                            t.display(),
-                            image.display()
-                        ))
+            let texture = match (image, dir) {
+                (Some(image), Some(dir)) => {
+                    let image = dir.join(image);
+                    let at = textures.iter().position(|t| *t == image).unwrap_or(textures.len());
+                    if at == textures.len() {
+                        textures.push(image);
                     }
-                    _ => texture = Some(image),
+                    Some(u16::try_from(at).map_err(|_| format!("its materials map more than {} images", u16::MAX))?)
                 }
-            }
+                _ => None,
+            };
             for (t, tri) in m.indices.chunks_exact(3).enumerate() {
                 positions.push(std::array::from_fn(|k| at(&m.positions, tri[k])));
                 if has_normals {
@@ -154,6 +159,7 @@ impl Mesh {
                     [m.texcoords[i] as f64, m.texcoords[i + 1] as f64]
                 };
                 uvs.push(if has_uv { std::array::from_fn(uv) } else { [[0.0; 2]; 3] });
+                texture_of.push(texture);
             }
         }
         if positions.is_empty() {
@@ -165,7 +171,7 @@ impl Mesh {
         if let Some(uv) = uvs.iter().flatten().find(|uv| uv.iter().any(|c| !c.is_finite())) {
             return Err(format!("texture coordinate {uv:?} is not finite"));
         }
-        if let (Some(image), false) = (&texture, all_have_uv) {
+        if let (Some(image), false) = (textures.first(), all_have_uv) {
             return Err(format!(
                 "its material maps {} but not every face has texture coordinates (vt)",
                 image.display()
@@ -188,9 +194,12 @@ impl Mesh {
             .iter()
             .zip(&normals)
             .zip(&uvs)
-            .map(|((p, n), uv)| std::array::from_fn(|k| MeshVertex { position: p[k], normal: n[k], uv: uv[k] }))
+            .zip(&texture_of)
+            .map(|(((p, n), uv), &texture)| {
+                std::array::from_fn(|k| MeshVertex { position: p[k], normal: n[k], uv: uv[k], texture })
+            })
             .collect();
-        let mesh = Mesh { triangles, texture };
+        let mesh = Mesh { triangles, textures, has_uv: all_have_uv };
         mesh.check()?;
         Ok(mesh)
     }

@@ -42,8 +42,8 @@
 //! | &nbsp; `.transform.rotate_deg` | [rx, ry, rz] | [0, 0, 0] | degrees about the world x, then y, then z axis, each counter-clockwise seen from the positive end of the axis (right-hand rule) |
 //! | &nbsp; `.transform.scale` | number or [x, y, z], no zero | 1 | a negative factor mirrors the object (its faces stay front faces) |
 //! | &nbsp; `.color` | [r, g, b] in 0..255 | [255, 255, 255] | the surface's colour |
-//! | &nbsp; `.texture` | object | the OBJ material's `map_Kd`, else none | a texture mapped by the mesh's texture coordinates (an OBJ's `vt`; a built-in model's own, see [`builtin`]), modulating the lit colour by default: |
-//! | &nbsp;&nbsp; `.image` | path | the material's `map_Kd` | a PNG file relative to the scene file's folder; its sides powers of two |
+//! | &nbsp; `.texture` | object | each OBJ material's `map_Kd`, else none | a texture mapped by the mesh's texture coordinates (an OBJ's `vt`; a built-in model's own, see [`builtin`]), modulating the lit colour by default: |
+//! | &nbsp;&nbsp; `.image` | path | the materials' `map_Kd` | a PNG file relative to the scene file's folder, its sides powers of two, on every triangle of the object (in place of its materials' images) |
 //! | &nbsp;&nbsp; `.sampler` | object | bilinear, nearest mip level, repeat | `texture::Sampler`: `min`, `mag` (`nearest`, `linear`), `mip` (`none`, `nearest`, `linear`), `wrap_s`, `wrap_t` (`repeat`, `mirrored_repeat`, `clamp_to_edge`) |
 //! | &nbsp;&nbsp; `.env` | name | `modulate` | the texture environment: `replace`, `modulate`, `decal`, `blend`, `add` (OpenGL's) |
 //! | &nbsp;&nbsp; `.format` | name | `rgba8888` | the texel format the image and its mip levels are stored in (001's five colour modes): `rgb565`, `rgba5551`, `rgba4444`, `rgb888`, `rgba8888` |
@@ -133,8 +133,8 @@ pub struct Object {
     pub transform: Transform,
     /// Surface colour in [0, 255].
     pub color: [f64; 3],
-    /// The texture mapped onto it, loaded.
-    pub texture: Option<TextureRef>,
+    /// The textures its triangles name (`MeshVertex::texture` indexes them), loaded.
+    pub textures: Vec<TextureRef>,
 }
 
 /// Object to world: scale, then rotate about x, y, z (in that order), then translate.
@@ -233,7 +233,7 @@ struct ObjectFile {
 impl ObjectFile {
     /// Loads the mesh; `at` names the object in messages.
     fn load(self, base_dir: &Path, at: &str) -> Result<Object> {
-        let (source, mesh) = match (self.model, self.obj) {
+        let (source, mut mesh) = match (self.model, self.obj) {
             (Some(name), None) => {
                 let detail = self.detail.unwrap_or(1);
                 if !(1..=builtin::MAX_DETAIL).contains(&detail) {
@@ -269,24 +269,29 @@ impl ObjectFile {
                 )))
             }
         };
-        let image = match (&self.texture, &mesh.texture) {
-            (Some(TextureSpec { image: Some(image), .. }), _) => Some(base_dir.join(image)),
-            (_, Some(image)) => Some(image.clone()),
-            (Some(_), None) => {
+        let images = match &self.texture {
+            Some(TextureSpec { image: Some(image), .. }) => {
+                if !mesh.has_uv {
+                    return Err(Error::invalid(format!(
+                        "{at}.texture: the mesh has no texture coordinates (an OBJ needs vt on every face)"
+                    )));
+                }
+                mesh.triangles.iter_mut().flatten().for_each(|v| v.texture = Some(0));
+                vec![base_dir.join(image)]
+            }
+            Some(_) if mesh.textures.is_empty() => {
                 return Err(Error::invalid(format!(
-                    "{at}.texture: no image: give \"image\", or an OBJ whose material has map_Kd"
+                    "{at}.texture: no image: give \"image\", or an OBJ whose materials have map_Kd"
                 )))
             }
-            (None, None) => None,
+            _ => mesh.textures.clone(),
         };
-        let texture = match image {
-            Some(image) => Some(
-                TextureRef::load(&image, &self.texture.unwrap_or_default())
-                    .map_err(|e| Error::invalid(format!("{at}.texture: {e}")))?,
-            ),
-            None => None,
-        };
-        Ok(Object { source, mesh, transform: self.transform, color: self.color, texture })
+        let spec = self.texture.unwrap_or_default();
+        let textures = images
+            .iter()
+            .map(|image| TextureRef::load(image, &spec).map_err(|e| Error::invalid(format!("{at}.texture: {e}"))))
+            .collect::<Result<Vec<_>>>()?;
+        Ok(Object { source, mesh, transform: self.transform, color: self.color, textures })
     }
 }
 
@@ -375,19 +380,19 @@ impl Scene {
         for (i, o) in self.objects.iter().enumerate() {
             let xf = ObjectTransform::new(&projection, &o.transform.linear(), o.transform.translate)
                 .map_err(|msg| Error::invalid(format!("objects[{i}].transform: {msg}")))?;
-            let texture = match &o.texture {
-                Some(t) => {
-                    let at = list.textures.iter().position(|u| u == t).unwrap_or(list.textures.len());
-                    if at == list.textures.len() {
-                        list.textures.push(t.clone());
-                    }
-                    Some(u16::try_from(at).map_err(|_| {
-                        Error::invalid(format!("objects[{i}].texture: more than {} textures", u16::MAX))
-                    })?)
+            // The object's textures as the list's.
+            let mut index = Vec::with_capacity(o.textures.len());
+            for t in &o.textures {
+                let at = list.textures.iter().position(|u| u == t).unwrap_or(list.textures.len());
+                if at == list.textures.len() {
+                    list.textures.push(t.clone());
                 }
-                None => None,
-            };
+                index.push(u16::try_from(at).map_err(|_| {
+                    Error::invalid(format!("objects[{i}].texture: more than {} textures in the scene", u16::MAX))
+                })?);
+            }
             for tri in &o.mesh.triangles {
+                let texture = tri[0].texture.and_then(|k| index.get(k as usize).copied());
                 emit_clipped(xf.vertices(tri, o.color, &self.lights), &projection, texture, &mut list.triangles);
             }
         }

@@ -31,7 +31,8 @@ const QUAD: &str =
 #[test]
 fn an_obj_takes_its_coordinates_from_vt_and_its_image_from_map_kd() {
     let mesh = Mesh::load_obj(&textured_dir().join("crate.obj")).unwrap();
-    assert_eq!(mesh.texture.as_deref(), Some(textured_dir().join("crate.png").as_path()));
+    assert_eq!(mesh.textures, [textured_dir().join("crate.png")]);
+    assert!(mesh.has_uv && mesh.triangles.iter().flatten().all(|v| v.texture == Some(0)));
     mesh.check_closed().unwrap();
     // The front face (+z): f 5/1/1 6/2/1 7/3/1 8/4/1, a fan of two triangles.
     let front = mesh.triangles[0];
@@ -43,7 +44,15 @@ fn an_obj_takes_its_coordinates_from_vt_and_its_image_from_map_kd() {
     assert_eq!(quad.triangles[0][1].uv, [2.0, 0.0]);
     // Without materials (from text) the coordinates stay, with no image.
     let text = Mesh::from_obj_text(QUAD).unwrap();
-    assert_eq!((text.texture, text.triangles[1][2].uv), (None, [0.0, 1.0]));
+    assert_eq!((text.textures.len(), text.triangles[1][2].uv, text.triangles[1][2].texture), (0, [0.0, 1.0], None));
+    // Materials with their own images texture their own faces; one without draws plain.
+    let three = format!("{QUAD}usemtl b\nf 1/1 3/3 4/4\nusemtl c\nf 1/1 2/2 4/4\n");
+    let mtl = b"newmtl a\nmap_Kd t.png\nnewmtl b\nmap_Kd u.png\nnewmtl c\nKd 1 0 0\n";
+    let d = scratch(&[("q.obj", three.as_bytes()), ("m.mtl", mtl)]);
+    let mesh = Mesh::load_obj(&d.path().join("q.obj")).unwrap();
+    assert_eq!(mesh.textures, [d.path().join("t.png"), d.path().join("u.png")]);
+    let of: Vec<Option<u16>> = mesh.triangles.iter().map(|t| t[0].texture).collect();
+    assert_eq!(of, [Some(0), Some(0), Some(1), None]);
 }
 
 #[test]
@@ -52,11 +61,6 @@ fn obj_texture_errors_name_the_file_and_the_rule() {
     let d = scratch(&[("q.obj", no_vt.as_bytes()), ("m.mtl", b"newmtl a\nmap_Kd t.png\n")]);
     let e = Mesh::load_obj(&d.path().join("q.obj")).unwrap_err().to_string();
     assert!(e.contains("q.obj") && e.contains("not every face has texture coordinates (vt)"), "{e}");
-    let two = format!("{QUAD}usemtl b\nf 1/1 3/3 4/4\n");
-    let mtl = b"newmtl a\nmap_Kd t.png\nnewmtl b\nmap_Kd u.png\n";
-    let d = scratch(&[("q.obj", two.as_bytes()), ("m.mtl", mtl)]);
-    let e = Mesh::load_obj(&d.path().join("q.obj")).unwrap_err().to_string();
-    assert!(e.contains("q.obj") && e.contains("a mesh takes one texture"), "{e}");
     let d = scratch(&[("q.obj", QUAD.as_bytes())]);
     let e = Mesh::load_obj(&d.path().join("q.obj")).unwrap_err().to_string();
     assert!(e.contains("q.obj") && e.contains("material library cannot be read"), "{e}");
@@ -77,7 +81,7 @@ fn scene_in(dir: &Path, object: &str) -> Result<Scene, String> {
 fn a_scene_object_names_its_texture_and_state() {
     let d = scratch(&[("t.png", &png(8, 4)), ("odd.png", &png(3, 4))]);
     let s = scene_in(d.path(), r#"{"model": "cube", "texture": {"image": "t.png", "sampler": {"wrap_s": "clamp_to_edge", "mip": "linear"}, "env": "decal"}}"#).unwrap();
-    let t = s.objects[0].texture.as_ref().unwrap();
+    let t = &s.objects[0].textures[0];
     assert_eq!(
         (t.sampler.wrap_s, t.sampler.mip, t.env),
         (texture::Wrap::ClampToEdge, texture::MipMode::Linear, texture::EnvMode::Decal)
@@ -86,7 +90,7 @@ fn a_scene_object_names_its_texture_and_state() {
     assert_eq!(t.format, texture::TexelFormat::Rgba8888);
     // RGB565 stores grey 128 as 16 of 31 red and blue and 32 of 63 green.
     let s = scene_in(d.path(), r#"{"model": "cube", "texture": {"image": "t.png", "format": "rgb565"}}"#).unwrap();
-    let texel = s.objects[0].texture.as_ref().unwrap().mips.base().texel(0, 0);
+    let texel = s.objects[0].textures[0].mips.base().texel(0, 0);
     assert_eq!(texel, [16.0 / 31.0, 32.0 / 63.0, 16.0 / 31.0, 1.0]);
     // Every vertex of the trilist names the one texture; s, t within the face's [0, 1].
     let list = s.to_trilist().unwrap();
@@ -112,6 +116,29 @@ fn a_scene_object_names_its_texture_and_state() {
             assert!(e.contains(w), "{object}: {e} should name {w}");
         }
     }
+}
+
+#[test]
+fn each_material_textures_its_own_faces_through_the_geometry_stage() {
+    let three = format!("{QUAD}usemtl b\nf 1/1 3/3 4/4\nusemtl c\nf 1/1 2/2 4/4\n");
+    let mtl = b"newmtl a\nmap_Kd t.png\nnewmtl b\nmap_Kd u.png\nnewmtl c\nKd 1 0 0\n";
+    let d = scratch(&[("q.obj", three.as_bytes()), ("m.mtl", mtl), ("t.png", &png(4, 4)), ("u.png", &png(2, 8))]);
+    let s = scene_in(d.path(), r#"{"obj": "q.obj", "transform": {"translate": [-0.5, -0.5, 0]}}"#).unwrap();
+    assert_eq!(s.objects[0].textures.len(), 2);
+    let list = s.to_trilist().unwrap();
+    assert_eq!(list.textures.iter().map(|t| t.mips.base().height()).collect::<Vec<_>>(), [4, 8]);
+    let units: Vec<Option<u16>> = list.triangles.iter().map(|t| t[0].tex.map(|x| x.texture)).collect();
+    assert_eq!(units, [Some(0), Some(0), Some(1), None]);
+    // The scene's image in place of the materials': every triangle, one texture.
+    let s = scene_in(d.path(), r#"{"obj": "q.obj", "texture": {"image": "u.png"}}"#).unwrap();
+    let list = s.to_trilist().unwrap();
+    assert_eq!(list.textures.len(), 1);
+    assert!(list.triangles.iter().all(|t| t[0].tex.is_some_and(|x| x.texture == 0)));
+    // ... which needs the mesh's own coordinates.
+    let flat = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    std::fs::write(d.path().join("flat.obj"), flat).unwrap();
+    let e = scene_in(d.path(), r#"{"obj": "flat.obj", "texture": {"image": "u.png"}}"#).unwrap_err();
+    assert!(e.contains("objects[0].texture: the mesh has no texture coordinates"), "{e}");
 }
 
 #[test]
