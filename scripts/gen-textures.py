@@ -5,6 +5,9 @@
   scene's texture, where perspective-incorrect interpolation bends the squares' edges.
 - crate.png: 128 x 128, a wooden crate's face: planks with a darker frame and grain, the
   texture of crate.obj's material (crate.mtl, map_Kd).
+- level0.png to level6.png: 64 x 64 down to 1 x 1, each mip level one colour (red, orange,
+  yellow, green, cyan, blue, magenta) with a faint grid of its texels: mip-levels.json's
+  levels, showing which level the level of detail selects where.
 
 Run from the repository root: python3 scripts/gen-textures.py
 """
@@ -41,5 +44,16 @@ def crate(x, y):
     return tuple(max(0, min(255, round(c * shade))) for c in base)
 
 
+LEVEL_COLOURS = [(255, 0, 0), (255, 128, 0), (255, 255, 0), (0, 200, 0), (0, 220, 220), (40, 40, 255), (220, 0, 220)]
+
+
+def level(colour):
+    def pixel(x, y):
+        return colour if (x + y) % 2 == 0 else tuple(c * 7 // 8 for c in colour)
+    return pixel
+
+
 png("scenes/textured/checker.png", 64, 64, checker)
 png("scenes/textured/crate.png", 128, 128, crate)
+for k, colour in enumerate(LEVEL_COLOURS):
+    png(f"scenes/textured/level{k}.png", 64 >> k, 64 >> k, level(colour))

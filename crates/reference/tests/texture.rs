@@ -15,7 +15,7 @@ fn texture(w: u32, h: u32, f: impl Fn(u32, u32) -> [u8; 3], sampler: Sampler, en
     let bytes: Vec<u8> = (0..h).flat_map(|j| (0..w).flat_map(move |i| f(i, j))).collect();
     let rgba: Vec<u8> = bytes.chunks(3).flat_map(|c| [c[0], c[1], c[2], 255]).collect();
     let mips = MipChain::new(Texture::from_rgba8(w, h, &rgba).unwrap()).unwrap();
-    TextureRef { image: "test".into(), sampler, env, format: Default::default(), mips: Arc::new(mips) }
+    TextureRef { images: vec!["test".into()], sampler, env, format: Default::default(), mips: Arc::new(mips) }
 }
 
 /// The screen-aligned square [0, n) x [0, n) mapped to the whole texture (s right, t up),
@@ -138,5 +138,36 @@ fn coordinate_derivatives_are_the_planes_own() {
                 assert!((got[c] - want[c]).abs() <= 1e-6 * want[c].abs().max(1e-3), "{f:?}: {got:?} against {want:?}");
             }
         }
+    }
+}
+
+#[test]
+fn each_level_given_shows_where_lambda_selects_it() {
+    // Levels of one colour each (64 x 64 down to 1 x 1) on a square of n pixels: rho =
+    // 64 / n, lambda = log2(64 / n), and GL_*_MIPMAP_NEAREST takes level
+    // ceil(lambda + 1/2) - 1 (magnification, level 0, at lambda <= 0).
+    const COLOURS: [[u8; 3]; 7] =
+        [[255, 0, 0], [255, 128, 0], [255, 255, 0], [0, 255, 0], [0, 255, 255], [0, 0, 255], [255, 0, 255]];
+    let levels: Vec<Texture> = (0..7)
+        .map(|k| {
+            let side = 64 >> k;
+            let rgba: Vec<u8> =
+                (0..side * side).flat_map(|_| [COLOURS[k][0], COLOURS[k][1], COLOURS[k][2], 255]).collect();
+            Texture::from_rgba8(side, side, &rgba).unwrap()
+        })
+        .collect();
+    let mips = Arc::new(MipChain::from_levels(levels).unwrap());
+    let sampler = Sampler { min: Filter::Nearest, ..Sampler::default() };
+    for (n, level) in [(64, 0), (46, 0), (45, 1), (32, 1), (16, 2), (12, 2), (11, 3), (8, 3), (2, 5)] {
+        let t = TextureRef {
+            images: vec!["levels".into()],
+            sampler,
+            env: EnvMode::Replace,
+            format: Default::default(),
+            mips: mips.clone(),
+        };
+        let frame = draw(n, square(n as f64, [255.0; 3]), t);
+        let want = COLOURS[level].map(f64::from);
+        assert!(frame.color.iter().all(|c| *c == want), "{n} pixels: want level {level}, got {:?}", &frame.color[..1]);
     }
 }

@@ -44,6 +44,7 @@
 //! | &nbsp; `.color` | [r, g, b] in 0..255 | [255, 255, 255] | the surface's colour |
 //! | &nbsp; `.texture` | object | each OBJ material's `map_Kd`, else none | a texture mapped by the mesh's texture coordinates (an OBJ's `vt`; a built-in model's own, see [`builtin`]), modulating the lit colour by default: |
 //! | &nbsp;&nbsp; `.image` | path | the materials' `map_Kd` | a PNG file relative to the scene file's folder, its sides powers of two, on every triangle of the object (in place of its materials' images) |
+//! | &nbsp;&nbsp; `.levels` | [path, ...] | | instead of `image`: each mip level's own PNG, base first, down to 1x1 (each level half the one before) |
 //! | &nbsp;&nbsp; `.sampler` | object | bilinear, nearest mip level, repeat | `texture::Sampler`: `min`, `mag` (`nearest`, `linear`), `mip` (`none`, `nearest`, `linear`), `wrap_s`, `wrap_t` (`repeat`, `mirrored_repeat`, `clamp_to_edge`) |
 //! | &nbsp;&nbsp; `.env` | name | `modulate` | the texture environment: `replace`, `modulate`, `decal`, `blend`, `add` (OpenGL's) |
 //! | &nbsp;&nbsp; `.format` | name | `rgba8888` | the texel format the image and its mip levels are stored in (001's five colour modes): `rgb565`, `rgba5551`, `rgba4444`, `rgb888`, `rgba8888` |
@@ -269,27 +270,29 @@ impl ObjectFile {
                 )))
             }
         };
-        let images = match &self.texture {
-            Some(TextureSpec { image: Some(image), .. }) => {
+        let keyed = self.texture.is_some();
+        let spec = self.texture.unwrap_or_default();
+        let given = spec.files(base_dir).map_err(|e| Error::invalid(format!("{at}.texture: {e}")))?;
+        let textures: Vec<Vec<PathBuf>> = match given {
+            Some(files) => {
                 if !mesh.has_uv {
                     return Err(Error::invalid(format!(
                         "{at}.texture: the mesh has no texture coordinates (an OBJ needs vt on every face)"
                     )));
                 }
                 mesh.triangles.iter_mut().flatten().for_each(|v| v.texture = Some(0));
-                vec![base_dir.join(image)]
+                vec![files]
             }
-            Some(_) if mesh.textures.is_empty() => {
+            None if keyed && mesh.textures.is_empty() => {
                 return Err(Error::invalid(format!(
-                    "{at}.texture: no image: give \"image\", or an OBJ whose materials have map_Kd"
+                    "{at}.texture: no image: give \"image\" or \"levels\", or an OBJ whose materials have map_Kd"
                 )))
             }
-            _ => mesh.textures.clone(),
+            None => mesh.textures.iter().map(|image| vec![image.clone()]).collect(),
         };
-        let spec = self.texture.unwrap_or_default();
-        let textures = images
+        let textures = textures
             .iter()
-            .map(|image| TextureRef::load(image, &spec).map_err(|e| Error::invalid(format!("{at}.texture: {e}"))))
+            .map(|files| TextureRef::load(files, &spec).map_err(|e| Error::invalid(format!("{at}.texture: {e}"))))
             .collect::<Result<Vec<_>>>()?;
         Ok(Object { source, mesh, transform: self.transform, color: self.color, textures })
     }

@@ -19,11 +19,12 @@
 //! ```json
 //! {"version": 2, "width": W, "height": H,
 //!  "textures": [{"image": "checker.png", "sampler": {"wrap_s": "clamp_to_edge"}, "env": "modulate",
-//!                "format": "rgb565"}],
+//!                "format": "rgb565"}, {"levels": ["l0.png", "l1.png", "l2.png"]}],
 //!  "triangles": [ [[x,y,z,r,g,b,w,s,t,texture], ...], ... ]}
 //! ```
 //!
-//! * `textures`: the images (PNG, relative to the trilist's folder), each with its
+//! * `textures`: the images (PNG, relative to the trilist's folder: `image`, its mip
+//!   levels built from it, or `levels`, every level's own image down to 1x1), each with its
 //!   sampler state, texture environment and texel format (`texture::Sampler`,
 //!   `texture::EnvMode`, `texture::TexelFormat`: 001's five colour modes, the image and
 //!   its mip levels stored in it; keys left out take the defaults: bilinear, nearest mip
@@ -72,12 +73,14 @@ pub struct Tex {
     pub texture: u16,
 }
 
-/// A texture as the triangles address it: its image with the mip chain built from it and
-/// stored in its texel format, its sampler state and texture environment.
+/// A texture as the triangles address it: its image with the mip chain built from it (or
+/// its levels' images) stored in its texel format, its sampler state and texture
+/// environment.
 #[derive(Clone, Debug)]
 pub struct TextureRef {
-    /// The PNG file (absolute when it was loaded from a file).
-    pub image: PathBuf,
+    /// The PNG files, absolute: the base image alone, its chain built by the box filter;
+    /// or every level's, base first.
+    pub images: Vec<PathBuf>,
     pub sampler: texture::Sampler,
     pub env: texture::EnvMode,
     pub format: texture::TexelFormat,
@@ -88,7 +91,7 @@ pub struct TextureRef {
 impl PartialEq for TextureRef {
     /// The same file with the same state (the mip chain follows from the file).
     fn eq(&self, o: &TextureRef) -> bool {
-        (&self.image, &self.sampler, &self.env, &self.format) == (&o.image, &o.sampler, &o.env, &o.format)
+        (&self.images, &self.sampler, &self.env, &self.format) == (&o.images, &o.sampler, &o.env, &o.format)
     }
 }
 
@@ -97,8 +100,11 @@ impl PartialEq for TextureRef {
 #[derive(Clone, Debug, Default, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TextureSpec {
-    /// The PNG file, relative to the file that names it.
+    /// The PNG file, relative to the file that names it; its mip levels are built from it.
     pub image: Option<PathBuf>,
+    /// Instead of `image`: every mip level's PNG file, base first, down to 1x1 (as OpenGL
+    /// takes a texture's levels one by one).
+    pub levels: Option<Vec<PathBuf>>,
     #[serde(default)]
     pub sampler: texture::Sampler,
     #[serde(default)]
@@ -108,14 +114,35 @@ pub struct TextureSpec {
 }
 
 impl TextureRef {
-    /// Loads `image` and builds its mip chain, with `spec`'s state; the error names the
-    /// file.
-    pub fn load(image: &Path, spec: &TextureSpec) -> Result<TextureRef> {
-        let base = texture::Texture::load(image).map_err(|e| Error::invalid(e.to_string()))?;
-        let mips = texture::MipChain::new(base).map_err(|e| Error::invalid(e.to_string()))?.quantized(spec.format);
-        // Held absolute: a trilist written elsewhere still finds it.
-        let image = std::fs::canonicalize(image).unwrap_or_else(|_| image.to_path_buf());
-        Ok(TextureRef { image, sampler: spec.sampler, env: spec.env, format: spec.format, mips: Arc::new(mips) })
+    /// Loads `images` (one: the base, its mip chain built from it; several: every level,
+    /// base first) with `spec`'s state; the error names the file.
+    pub fn load(images: &[PathBuf], spec: &TextureSpec) -> Result<TextureRef> {
+        let levels = images
+            .iter()
+            .map(|p| texture::Texture::load(p).map_err(|e| Error::invalid(e.to_string())))
+            .collect::<Result<Vec<_>>>()?;
+        let mips = match levels.len() {
+            1 => texture::MipChain::new(levels.into_iter().next().expect("one level")),
+            _ => texture::MipChain::from_levels(levels),
+        };
+        let mips = mips.map_err(|e| Error::invalid(e.to_string()))?.quantized(spec.format);
+        // Held absolute: a trilist written elsewhere still finds them.
+        let images = images.iter().map(|p| std::fs::canonicalize(p).unwrap_or_else(|_| p.clone())).collect();
+        Ok(TextureRef { images, sampler: spec.sampler, env: spec.env, format: spec.format, mips: Arc::new(mips) })
+    }
+}
+
+impl TextureSpec {
+    /// Its files relative to `base_dir` (`image`, or `levels`); `None` when it names
+    /// neither; an error when it names both.
+    pub fn files(&self, base_dir: &Path) -> std::result::Result<Option<Vec<PathBuf>>, String> {
+        match (&self.image, &self.levels) {
+            (Some(_), Some(_)) => Err("give \"image\" or \"levels\", not both".into()),
+            (Some(image), None) => Ok(Some(vec![base_dir.join(image)])),
+            (None, Some(levels)) if levels.is_empty() => Err("\"levels\" is empty".into()),
+            (None, Some(levels)) => Ok(Some(levels.iter().map(|l| base_dir.join(l)).collect())),
+            (None, None) => Ok(None),
+        }
     }
 }
 
@@ -248,7 +275,10 @@ impl Trilist {
     pub fn to_json(&self) -> String {
         #[derive(Serialize)]
         struct OutTexture<'a> {
-            image: &'a Path,
+            #[serde(skip_serializing_if = "Option::is_none")]
+            image: Option<&'a PathBuf>,
+            #[serde(skip_serializing_if = "Option::is_none")]
+            levels: Option<&'a [PathBuf]>,
             sampler: texture::Sampler,
             env: texture::EnvMode,
             format: texture::TexelFormat,
@@ -280,7 +310,13 @@ impl Trilist {
         let textures: Vec<OutTexture> = self
             .textures
             .iter()
-            .map(|t| OutTexture { image: &t.image, sampler: t.sampler, env: t.env, format: t.format })
+            .map(|t| {
+                let (image, levels) = match &t.images[..] {
+                    [one] => (Some(one), None),
+                    all => (None, Some(all)),
+                };
+                OutTexture { image, levels, sampler: t.sampler, env: t.env, format: t.format }
+            })
             .collect();
         let version = (!textures.is_empty()).then_some(2);
         serde_json::to_string(&Out { version, width: self.width, height: self.height, textures, triangles })
@@ -316,8 +352,8 @@ fn parse_textures(raw: &serde_json::Value, base_dir: &Path) -> Result<Vec<Textur
         .map(|(i, t)| {
             let at = |e: &dyn fmt::Display| Error::invalid(format!("textures[{i}]: {e}"));
             let spec: TextureSpec = serde_json::from_value(t.clone()).map_err(|e| at(&e))?;
-            let image = spec.image.as_ref().ok_or_else(|| at(&"missing \"image\""))?;
-            TextureRef::load(&base_dir.join(image), &spec).map_err(|e| at(&e))
+            let files = spec.files(base_dir).map_err(|e| at(&e))?.ok_or_else(|| at(&"missing \"image\""))?;
+            TextureRef::load(&files, &spec).map_err(|e| at(&e))
         })
         .collect()
 }

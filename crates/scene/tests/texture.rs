@@ -142,6 +142,31 @@ fn each_material_textures_its_own_faces_through_the_geometry_stage() {
 }
 
 #[test]
+fn mip_levels_given_one_by_one_load_and_travel_in_the_trilist() {
+    let s = Scene::load(&textured_dir().join("mip-levels.json")).unwrap();
+    let list = s.to_trilist().unwrap();
+    // Five cubes, one texture of seven levels.
+    assert_eq!(list.textures.len(), 1);
+    assert_eq!(list.textures[0].images.len(), 7);
+    assert_eq!(list.textures[0].mips.levels()[3].width(), 8);
+    let json = list.to_json();
+    assert!(json.contains(r#""levels":["#) && !json.contains(r#""image""#));
+    let back = Trilist::from_value(&serde_json::from_str(&json).unwrap(), Path::new(".")).unwrap();
+    assert_eq!(back, list);
+    let d = scratch(&[("a.png", &png(4, 4)), ("b.png", &png(2, 2)), ("c.png", &png(1, 1)), ("x.png", &png(2, 1))]);
+    for (texture, want) in [
+        (r#"{"image": "a.png", "levels": ["a.png"]}"#, "not both"),
+        (r#"{"levels": []}"#, "\"levels\" is empty"),
+        (r#"{"levels": ["a.png", "x.png", "c.png"]}"#, "mip level 1 is 2x1; level 1 of a 4x4 texture is 2x2"),
+        (r#"{"levels": ["a.png", "b.png"]}"#, "2 mip levels given; a 4x4 texture has 3"),
+    ] {
+        let e = scene_in(d.path(), &format!(r#"{{"model": "cube", "texture": {texture}}}"#)).unwrap_err();
+        assert!(e.contains("objects[0].texture") && e.contains(want), "{texture}: {e}");
+    }
+    scene_in(d.path(), r#"{"model": "cube", "texture": {"levels": ["a.png", "b.png", "c.png"]}}"#).unwrap();
+}
+
+#[test]
 fn trilist_version_2_carries_textures_and_version_1_still_reads() {
     let s = Scene::load(&textured_dir().join("crate.json")).unwrap();
     let list = s.to_trilist().unwrap();
@@ -186,8 +211,15 @@ fn every_shipped_textured_scene_draws_textured() {
     for path in scenes {
         let list = Scene::load(&path).unwrap().to_trilist().unwrap();
         assert!(list.is_textured(), "{}", path.display());
-        let (frame, _) = reference::render(&list, &reference::Options::default(), &mut |_| {});
-        let colours: std::collections::HashSet<[u8; 3]> = frame.rgb8().into_iter().collect();
-        assert!(colours.len() > 100, "{}: {} colours", path.display(), colours.len());
+        let draw = |list: &Trilist| reference::render(list, &reference::Options::default(), &mut |_| {}).0;
+        let textured = draw(&list);
+        // The same triangles untextured: the texture changes most pixels drawn.
+        let mut plain = list.clone();
+        plain.triangles.iter_mut().flatten().for_each(|v| v.tex = None);
+        let plain = draw(&plain);
+        let written = textured.written.iter().filter(|&&w| w).count();
+        let changed =
+            (0..textured.color.len()).filter(|&i| textured.written[i] && textured.color[i] != plain.color[i]).count();
+        assert!(written > 1000 && changed > written / 2, "{}: {changed} of {written} pixels textured", path.display());
     }
 }

@@ -77,6 +77,42 @@ pub enum Error {
         /// Its height in texels.
         height: u32,
     },
+    /// A level given to [`MipChain::from_levels`](crate::MipChain::from_levels) is not the
+    /// size its place in the chain asks for.
+    #[error("{name}: mip level {level} is {width}x{height}; level {level} of a {base_width}x{base_height} texture is {want_width}x{want_height}")]
+    WrongLevelSize {
+        /// The level's name.
+        name: String,
+        /// Its place in the chain.
+        level: usize,
+        /// Its width in texels.
+        width: u32,
+        /// Its height in texels.
+        height: u32,
+        /// The base level's width.
+        base_width: u32,
+        /// The base level's height.
+        base_height: u32,
+        /// The width level `level` must have.
+        want_width: u32,
+        /// The height level `level` must have.
+        want_height: u32,
+    },
+    /// [`MipChain::from_levels`](crate::MipChain::from_levels) was given more or fewer levels
+    /// than the base's chain has.
+    #[error("{name}: {got} mip levels given; a {width}x{height} texture has {want} (down to 1x1)")]
+    LevelCount {
+        /// The base level's name.
+        name: String,
+        /// Levels given.
+        got: usize,
+        /// Levels the base's chain has.
+        want: usize,
+        /// The base level's width.
+        width: u32,
+        /// The base level's height.
+        height: u32,
+    },
 }
 
 /// A texture image: `width` x `height` RGBA texels in [0, 1].

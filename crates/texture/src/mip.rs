@@ -27,6 +27,44 @@ impl MipChain {
         Ok(MipChain { levels })
     }
 
+    /// The chain of the levels given, base first, as OpenGL takes each level of a texture
+    /// from the application (`glTexImage2D` with its level): the base's sides powers of
+    /// two, level k max(1, w / 2^k) x max(1, h / 2^k), down to 1x1. The errors name the
+    /// level at fault.
+    pub fn from_levels(levels: Vec<Texture>) -> Result<MipChain, Error> {
+        let base = levels.first().ok_or_else(|| Error::LevelCount {
+            name: "no level".into(),
+            got: 0,
+            want: 1,
+            width: 0,
+            height: 0,
+        })?;
+        let (width, height) = (base.width(), base.height());
+        if !(width.is_power_of_two() && height.is_power_of_two()) {
+            return Err(Error::NotPowerOfTwo { name: base.name().to_string(), width, height });
+        }
+        let want = width.max(height).ilog2() as usize + 1;
+        if levels.len() != want {
+            return Err(Error::LevelCount { name: base.name().to_string(), got: levels.len(), want, width, height });
+        }
+        for (k, level) in levels.iter().enumerate() {
+            let (w, h) = ((width >> k).max(1), (height >> k).max(1));
+            if (level.width(), level.height()) != (w, h) {
+                return Err(Error::WrongLevelSize {
+                    name: level.name().to_string(),
+                    level: k,
+                    width: level.width(),
+                    height: level.height(),
+                    base_width: width,
+                    base_height: height,
+                    want_width: w,
+                    want_height: h,
+                });
+            }
+        }
+        Ok(MipChain { levels })
+    }
+
     /// The levels, base first; never empty.
     pub fn levels(&self) -> &[Texture] {
         &self.levels

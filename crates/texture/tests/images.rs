@@ -201,3 +201,18 @@ fn quantizing_a_texture_rounds_each_texel() {
     let chain = MipChain::new(reds(2, 1, &[100, 100])).unwrap().quantized(TexelFormat::Rgba4444);
     assert_eq!(chain.levels()[1].texel(0, 0), [0.4, 0.0, 0.0, 1.0]);
 }
+
+#[test]
+fn levels_given_one_by_one_make_a_chain_when_their_sizes_halve() {
+    let level = |w: u32, h: u32, red: u8| reds(w, h, &vec![red; (w * h) as usize]);
+    let chain = MipChain::from_levels(vec![level(4, 2, 10), level(2, 1, 20), level(1, 1, 30)]).unwrap();
+    assert_eq!(chain.levels().len(), 3);
+    assert_red(&chain.levels()[1], 1, 0, 20.0);
+    let e = MipChain::from_levels(vec![level(4, 2, 10), level(2, 2, 20), level(1, 1, 30)]).unwrap_err().to_string();
+    assert!(e.contains("mip level 1 is 2x2; level 1 of a 4x2 texture is 2x1"), "{e}");
+    let e = MipChain::from_levels(vec![level(4, 2, 10), level(2, 1, 20)]).unwrap_err().to_string();
+    assert!(e.contains("2 mip levels given; a 4x2 texture has 3"), "{e}");
+    let e = MipChain::from_levels(vec![level(3, 1, 10)]).unwrap_err().to_string();
+    assert!(e.contains("powers of two"), "{e}");
+    assert!(MipChain::from_levels(Vec::new()).is_err());
+}
