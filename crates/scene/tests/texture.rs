@@ -223,3 +223,38 @@ fn every_shipped_textured_scene_draws_textured() {
         assert!(written > 1000 && changed > written / 2, "{}: {changed} of {written} pixels textured", path.display());
     }
 }
+
+#[test]
+fn each_texture_environment_combines_the_lit_colour_and_the_texel_as_opengl_does() {
+    // A cube face-on, lit fully (ambient 0.55 and a head-on light 0.45): the fragment colour
+    // Cf is the object's colour; at the screen's centre the texture's yellow disc, alpha 1.
+    let badge = std::fs::read(textured_dir().join("badge.png")).unwrap();
+    let d = scratch(&[("badge.png", &badge)]);
+    let cf: [f64; 3] = [90.0, 140.0, 230.0];
+    let cs: [f64; 3] = [250.0, 220.0, 40.0];
+    let want = |mode: &str| -> [f64; 3] {
+        std::array::from_fn(|c| match mode {
+            "replace" | "decal" => cs[c],
+            "modulate" => cf[c] * cs[c] / 255.0,
+            "blend" => cf[c] * (1.0 - cs[c] / 255.0),
+            _ => (cf[c] + cs[c]).min(255.0),
+        })
+    };
+    for mode in ["replace", "modulate", "decal", "blend", "add"] {
+        let text = format!(
+            r#"{{"width": 32, "height": 24, "camera": {{"eye": [0, 0, 5], "target": [0, 0, 0], "fov_y_deg": 45, "near": 1, "far": 10}},
+            "lights": {{"ambient": [0.55, 0.55, 0.55], "directional": [{{"direction": [0, 0, -1], "color": [0.45, 0.45, 0.45]}}]}},
+            "objects": [{{"model": "cube", "color": [90, 140, 230], "texture": {{"image": "badge.png", "env": "{mode}"}}}}]}}"#
+        );
+        let path = d.path().join("s.json");
+        std::fs::write(&path, text).unwrap();
+        let list = Scene::load(&path).unwrap().to_trilist().unwrap();
+        let frame = reference::render(&list, &reference::Options::default(), &mut |_| {}).0;
+        let got = frame.color[12 * 32 + 16];
+        assert!(
+            got.iter().zip(want(mode)).all(|(g, w)| (g - w).abs() < 1e-9),
+            "{mode}: {got:?} against {:?}",
+            want(mode)
+        );
+    }
+}
