@@ -109,9 +109,12 @@ pub fn footprint(chain: &MipChain, sampler: &Sampler, s: f64, t: f64, lambda: f6
         .into_iter()
         .flat_map(|(level, weight)| {
             let texture = &chain.levels()[level];
-            level_taps(texture, filter, sampler.wrap_s, sampler.wrap_t, sampler.weights, s, t)
-                .into_iter()
-                .map(move |(i, j, w)| Tap { level, i, j, weight: weight * w })
+            level_taps(texture, filter, sampler, s, t).into_iter().map(move |(i, j, w)| Tap {
+                level,
+                i,
+                j,
+                weight: weight * w,
+            })
         })
         .collect();
     Footprint { choice, taps }
@@ -122,8 +125,8 @@ pub fn sample(chain: &MipChain, sampler: &Sampler, s: f64, t: f64, lambda: f64) 
     footprint(chain, sampler, s, t, lambda).colour(chain)
 }
 
-/// The colour at (s, t) of one level, of size w x h (OpenGL 4.6 section 8.14.2), with
-/// u = s · w and v = t · h:
+/// The colour at (s, t) of one level, of size w x h, by `filter` with `sampler`'s wrap
+/// modes and weights (OpenGL 4.6 section 8.14.2), with u = s · w and v = t · h:
 /// - [`Filter::Nearest`]: texel (wrap_s(floor(u)), wrap_t(floor(v))).
 /// - [`Filter::Linear`]: i0 = wrap_s(floor(u - 1/2)), i1 = wrap_s(floor(u - 1/2) + 1),
 ///   alpha = frac(u - 1/2), and likewise j0, j1, beta along v; the colour is
@@ -132,30 +135,13 @@ pub fn sample(chain: &MipChain, sampler: &Sampler, s: f64, t: f64, lambda: f64) 
 ///
 /// A non-finite u or v (a NaN or infinite coordinate, or one so large the product
 /// overflows) is taken as 0.
-pub fn sample_level(
-    level: &Texture,
-    filter: Filter,
-    wrap_s: Wrap,
-    wrap_t: Wrap,
-    weights: Weights,
-    s: f64,
-    t: f64,
-) -> Rgba {
-    weighted_sum(
-        level_taps(level, filter, wrap_s, wrap_t, weights, s, t).into_iter().map(|(i, j, w)| (level.texel(i, j), w)),
-    )
+pub fn sample_level(level: &Texture, filter: Filter, sampler: &Sampler, s: f64, t: f64) -> Rgba {
+    weighted_sum(level_taps(level, filter, sampler, s, t).into_iter().map(|(i, j, w)| (level.texel(i, j), w)))
 }
 
 /// The texels (i, j) and weights [`sample_level`] reads.
-fn level_taps(
-    level: &Texture,
-    filter: Filter,
-    wrap_s: Wrap,
-    wrap_t: Wrap,
-    weights: Weights,
-    s: f64,
-    t: f64,
-) -> Vec<(u32, u32, f64)> {
+fn level_taps(level: &Texture, filter: Filter, sampler: &Sampler, s: f64, t: f64) -> Vec<(u32, u32, f64)> {
+    let (wrap_s, wrap_t, weights) = (sampler.wrap_s, sampler.wrap_t, sampler.weights);
     let across = axis(s, level.width(), filter, wrap_s, weights);
     let up = axis(t, level.height(), filter, wrap_t, weights);
     up.iter().flat_map(|&(j, b)| across.iter().map(move |&(i, a)| (i, j, a * b))).collect()

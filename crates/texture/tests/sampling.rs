@@ -39,7 +39,8 @@ fn two_by_two() -> Texture {
 }
 
 fn at(filter: Filter, wrap: Wrap, s: f64, t: f64) -> Rgba {
-    sample_level(&two_by_two(), filter, wrap, wrap, Weights::Linear, s, t)
+    let sampler = Sampler { wrap_s: wrap, wrap_t: wrap, weights: Weights::Linear, ..Sampler::default() };
+    sample_level(&two_by_two(), filter, &sampler, s, t)
 }
 
 #[test]
@@ -86,7 +87,9 @@ fn gaussian_weights_follow_3a2_minus_2a3() {
     assert_eq!(Weights::Gaussian.weight(1.0), 1.0);
     // alpha = 0.25: 3/16 - 2/64 = 0.15625 of b = 100.
     let t = two_by_two();
-    let colour = sample_level(&t, Filter::Linear, Wrap::Repeat, Wrap::Repeat, Weights::Gaussian, 0.375, 0.25);
+    let gaussian =
+        Sampler { wrap_s: Wrap::Repeat, wrap_t: Wrap::Repeat, weights: Weights::Gaussian, ..Sampler::default() };
+    let colour = sample_level(&t, Filter::Linear, &gaussian, 0.375, 0.25);
     assert_red(colour, 15.625);
 }
 
@@ -249,7 +252,7 @@ fn check_sample(base: Texture, sampler: Sampler, s: f64, t: f64, lambda: f64) ->
     // Every level's texels are means of the base's, so the base's range bounds every level.
     prop_assert!(within(sample(&chain, &sampler, s, t, lambda), chain.base()));
     for level in chain.levels() {
-        let colour = sample_level(level, sampler.min, sampler.wrap_s, sampler.wrap_t, sampler.weights, s, t);
+        let colour = sample_level(level, sampler.min, &sampler, s, t);
         prop_assert!(within(colour, level), "{colour:?} outside level {}x{}", level.width(), level.height());
     }
     Ok(())
