@@ -6,6 +6,7 @@
 
 pub mod fmt;
 pub mod formats;
+pub mod texture;
 
 pub use fmt::{
     clog2, fits_s, shr_floor, shr_half_up, signed_bits, unsigned_bits, wrap_s, wrap_u, Fmt, Overflow, Rounding,
@@ -14,3 +15,4 @@ pub use fmt::{
 pub use formats::{
     resolution_bits, smallest_class, Build, Derived, Formats, Given, RTL_CLASS, SMALLEST_CLASS, SUBPIXEL_BITS,
 };
+pub use texture::TexFormats;

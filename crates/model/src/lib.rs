@@ -5,6 +5,8 @@
 //! * [`cull_sort`] (003), [`divider`] (001), [`triangle_setup`] (001),
 //!   [`edge_walk`] (001, 003), [`span`] (001, 003), [`pixel_out`]: the scanline pipeline;
 //! * [`vector`] (004): per-pixel barycentric rasterization;
+//! * [`texture_unit`] (001): perspective-correct, mip-mapped, filtered texels and the texture
+//!   environment, reading [`texture_memory`]'s layout;
 //! * [`se`] (000): the shading engine, cycle-exact, and the engine array drawing the scanline's spans,
 //!   fed by [`se_cmd`];
 //! * [`render`]: whole frames through either, with analysis mode; [`cycles`]: the cycle model;
@@ -31,6 +33,8 @@ pub mod render;
 pub mod se;
 pub mod se_cmd;
 pub mod span;
+pub mod texture_memory;
+pub mod texture_unit;
 pub mod triangle_queue;
 pub mod triangle_setup;
 pub mod vector;

@@ -10,6 +10,8 @@
 //! - [`sample()`] ([`mod@sample`]): nearest and bilinear texel selection and filtering (section 8.14.2).
 //! - [`environment`] ([`mod@env`]): the texture environment of OpenGL 2.1's glTexEnv.
 //! - [`blend()`] ([`mod@blend`]): framebuffer blending (OpenGL 4.6 section 17.3.6).
+//! - [`conformance`]: judging an implementation's texels as the GL and Vulkan conformance
+//!   tests judge texture filtering.
 //!
 //! The texture unit it models is that of paper "001" (Woo, Jang and Lee 2004, *Embedded 3D
 //! Graphics Rendering Processor*), section II-5: texture coordinates divided by w per pixel
@@ -24,6 +26,7 @@
 #![warn(missing_docs)]
 
 pub mod blend;
+pub mod conformance;
 pub mod env;
 pub mod format;
 pub mod image;

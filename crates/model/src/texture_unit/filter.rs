@@ -1,0 +1,104 @@
+//! Texel decode and filtering in fixed point: paper 001's bilinear filter with plain linear
+//! weights or its Gaussian-approximating weights (Fig. 6), and the linear blend between two
+//! levels.
+//!
+//! - Decode: a c-bit channel widens to 8 bits by bit replication (c << (8 - c) | c >> (2c -
+//!   8) ..., the usual hardware expansion, within 1/2 LSB of c · 255 / (2^c - 1)); a format
+//!   without alpha reads alpha 255.
+//! - Weights: a = alpha's top `weight` bits (linear), or the table
+//!   round((3x² - 2x³) · 2^weight) at x = alpha / 2^subtexel (Gaussian); the first texel of a
+//!   pair gets 2^weight - a.
+//! - Bilinear: each pair along s weighted, then the two along t, rounded half up once:
+//!   C = (Σ T · w_s · w_t + 2^(2·weight-1)) >> 2·weight.
+//! - Levels: C = (C1 · (2^lod_frac - f) + C2 · f + 2^(lod_frac-1)) >> lod_frac.
+
+use fx::TexFormats;
+use texture::{TexelFormat, Weights};
+
+/// A decoded texel or a filtered colour: R, G, B, A in 0..=255.
+pub type Rgba8 = [u8; 4];
+
+/// The channels of `word` in `format`, each widened to 8 bits.
+pub fn decode(format: TexelFormat, word: u32) -> Rgba8 {
+    let mut rgba = [255u8; 4];
+    let mut rest = word;
+    for (c, bits) in rgba.iter_mut().zip(format.bits()).rev().filter(|&(_, bits)| bits > 0) {
+        let code = rest & ((1 << bits) - 1);
+        rest >>= bits;
+        let mut wide = 0u32;
+        let mut filled = 0;
+        while filled < 8 {
+            wide = (wide << bits) | code;
+            filled += bits;
+        }
+        *c = (wide >> (filled - 8)) as u8;
+    }
+    rgba
+}
+
+/// The Gaussian-approximating weight table: entry x = round((3a² - 2a³) · 2^weight) for
+/// a = x / 2^subtexel, in 0..=2^weight. The RTL's ROM holds the same entries.
+pub fn gaussian_table(f: &TexFormats) -> Vec<u32> {
+    let n = 1u32 << f.subtexel;
+    (0..n)
+        .map(|x| {
+            let a = f64::from(x) / f64::from(n);
+            (a * a * (3.0 - 2.0 * a) * f64::from(1u32 << f.weight)).round() as u32
+        })
+        .collect()
+}
+
+/// The weight of the second texel of a pair at fraction `alpha` (`subtexel` bits).
+pub fn weight(f: &TexFormats, weights: Weights, gaussian: &[u32], alpha: u32) -> u32 {
+    match weights {
+        Weights::Linear if f.subtexel >= f.weight => alpha >> (f.subtexel - f.weight),
+        Weights::Linear => alpha << (f.weight - f.subtexel),
+        Weights::Gaussian => gaussian[alpha as usize],
+    }
+}
+
+/// The bilinear mix of texels `[T(i0, j0), T(i1, j0), T(i0, j1), T(i1, j1)]` with weights
+/// `a` (along s) and `b` (along t) of the second of each pair.
+pub fn bilinear(f: &TexFormats, texels: [Rgba8; 4], a: u32, b: u32) -> Rgba8 {
+    let one = 1u64 << f.weight;
+    let (a, b) = (u64::from(a), u64::from(b));
+    let w = [(one - a) * (one - b), a * (one - b), (one - a) * b, a * b];
+    let mut out = [0u8; 4];
+    for (k, c) in out.iter_mut().enumerate() {
+        let sum: u64 = texels.iter().zip(w).map(|(t, w)| u64::from(t[k]) * w).sum();
+        *c = ((sum + (1 << (2 * f.weight - 1))) >> (2 * f.weight)) as u8;
+    }
+    out
+}
+
+/// The blend of two levels' colours, `frac` (`lod_frac` bits) the weight of the second.
+pub fn between_levels(f: &TexFormats, c1: Rgba8, c2: Rgba8, frac: u32) -> Rgba8 {
+    let one = 1u32 << f.lod_frac;
+    let mut out = [0u8; 4];
+    for (k, c) in out.iter_mut().enumerate() {
+        let sum = u32::from(c1[k]) * (one - frac) + u32::from(c2[k]) * frac;
+        *c = ((sum + (one >> 1)) >> f.lod_frac) as u8;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decode_replicates_bits_to_within_half_an_lsb() {
+        for format in TexelFormat::ALL {
+            let bits = format.bits();
+            for c in [0u32, 1, 5, 9, 15, 31, 63, 255] {
+                let word = bits.iter().fold(0u32, |w, &b| if b == 0 { w } else { (w << b) | (c & ((1 << b) - 1)) });
+                let got = decode(format, word);
+                for (k, &b) in bits.iter().enumerate() {
+                    let want =
+                        if b == 0 { 255.0 } else { f64::from(c & ((1 << b) - 1)) * 255.0 / f64::from((1 << b) - 1) };
+                    assert!((f64::from(got[k]) - want).abs() <= 0.5, "{format:?} channel {k} code {c}: {}", got[k]);
+                }
+            }
+        }
+    }
+}
