@@ -40,20 +40,23 @@ pub struct TexFormats {
 
 impl Default for TexFormats {
     fn default() -> TexFormats {
-        TexFormats {
-            st: Fmt::s(8, 20).saturating(),
-            q: Fmt::u(1, 20),
-            dst: Fmt::s(8, 24),
-            dq: Fmt::s(1, 28),
-            recip: 24,
-            subtexel: 8,
-            lod_frac: 6,
-            weight: 8,
-        }
+        TexFormats::DEFAULT
     }
 }
 
 impl TexFormats {
+    /// The defaults, as a constant: the RTL's widths are read off it at compile time.
+    pub const DEFAULT: TexFormats = TexFormats {
+        st: Fmt::s(8, 20).saturating(),
+        q: Fmt::u(1, 20),
+        dst: Fmt::s(8, 24),
+        dq: Fmt::s(1, 28),
+        recip: 24,
+        subtexel: 8,
+        lod_frac: 6,
+        weight: 8,
+    };
+
     /// Whether these formats can work; the error names the field and the rule.
     pub fn check(&self) -> Result<(), String> {
         let need = |ok: bool, what: String| if ok { Ok(()) } else { Err(what) };

@@ -25,9 +25,9 @@ pub mod input;
 use crate::texture_memory;
 use address::{levels, taps, Levels, Taps};
 use coords::{coords, log2_table, Coords};
-use filter::{between_levels, bilinear, decode, gaussian_table, weight, Rgba8};
+use filter::{gaussian_table, texel, FilterIn, Rgba8};
 use fx::TexFormats;
-use texture::{EnvMode, Filter, LodRule, Sampler, TexelFormat};
+use texture::{EnvMode, LodRule, Sampler, TexelFormat};
 
 /// The state a texture is drawn with: its size, chain, address and how it is sampled.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -117,43 +117,38 @@ impl TextureUnit {
         let f = &self.formats;
         let c = self.coords(state, p, g);
         let levels = levels(f, state, c.lambda);
+        let (filter, first, second) = match levels {
+            Levels::Magnify => (state.sampler.mag, 0, None),
+            Levels::One(d) => (state.sampler.min, d, None),
+            Levels::Two { d1, frac } => (state.sampler.min, d1, Some((d1 + 1, frac))),
+        };
+        let mut x = FilterIn { two_levels: second.is_some(), frac: second.map_or(0, |s| s.1), ..FilterIn::default() };
         let mut fetches = Vec::with_capacity(2);
-        let mut level = |d: u32, filter: Filter| {
+        for (k, d) in std::iter::once(first).chain(second.map(|s| s.0)).enumerate() {
             let taps = taps(f, state, &c, d, filter);
-            let (texels, fetch) = read(state, memory, d, &taps);
+            let (words, fetch) = read(state, memory, d, &taps);
+            (x.words[k], x.alpha[k], x.beta[k]) = (words, taps.alpha, taps.beta);
             fetches.push(fetch);
-            let (a, b) = (self.weight(state, taps.alpha), self.weight(state, taps.beta));
-            bilinear(f, texels, a, b)
-        };
-        let texel = match levels {
-            Levels::Magnify => level(0, state.sampler.mag),
-            Levels::One(d) => level(d, state.sampler.min),
-            Levels::Two { d1, frac } => {
-                let c1 = level(d1, state.sampler.min);
-                between_levels(f, c1, level(d1 + 1, state.sampler.min), frac)
-            }
-        };
+        }
+        let texel = texel(f, state.format, state.sampler.weights, &self.gaussian, &x);
         let colour = env::environment(state.env, [cf[0], cf[1], cf[2], 255], texel);
         Sample { coords: c, levels, texel, colour, fetches }
     }
-
-    fn weight(&self, state: &TexState, alpha: u32) -> u32 {
-        weight(&self.formats, state.sampler.weights, &self.gaussian, alpha)
-    }
 }
 
-/// The four texels of `taps` in level `d` ([T(i0, j0), T(i1, j0), T(i0, j1), T(i1, j1)]) and
-/// the cache access that reads them: one bank per distinct texel (two texels of a
-/// footprint that coincide, at a clamped edge or in a 1-wide level, are one read).
-fn read(state: &TexState, memory: &[u32], d: u32, taps: &Taps) -> ([Rgba8; 4], Fetch) {
+/// The words of the four texels of `taps` in level `d` ([T(i0, j0), T(i1, j0), T(i0, j1),
+/// T(i1, j1)]) and the cache access that reads them: one bank per distinct texel (two
+/// texels of a footprint that coincide, at a clamped edge or in a 1-wide level, are one
+/// read).
+fn read(state: &TexState, memory: &[u32], d: u32, taps: &Taps) -> ([u32; 4], Fetch) {
     let [ws, hs] = state.size_log2;
     let mut fetch = [None; 4];
-    let mut texels = [[0; 4]; 4];
-    for (k, texel) in texels.iter_mut().enumerate() {
+    let mut words = [0; 4];
+    for (k, word) in words.iter_mut().enumerate() {
         let (i, j) = (taps.i[k & 1], taps.j[k >> 1]);
         let address = texture_memory::address(state.base, ws, hs, d, i, j);
         fetch[texture_memory::bank(i, j)] = Some(address);
-        *texel = decode(state.format, memory.get(address as usize).copied().unwrap_or(0));
+        *word = memory.get(address as usize).copied().unwrap_or(0);
     }
-    (texels, fetch)
+    (words, fetch)
 }

@@ -57,6 +57,33 @@ pub fn weight(f: &TexFormats, weights: Weights, gaussian: &[u32], alpha: u32) ->
     }
 }
 
+/// One pixel's texels as the filter takes them: up to two levels' 2x2 footprints (texture
+/// memory words `[T(i0, j0), T(i1, j0), T(i0, j1), T(i1, j1)]`; a nearest sample's one texel
+/// four times with zero fractions), each level's fractions alpha and beta (`subtexel`
+/// bits), and the second level's weight `frac` (`lod_frac` bits) when there are two.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FilterIn {
+    pub words: [[u32; 4]; 2],
+    pub alpha: [u32; 2],
+    pub beta: [u32; 2],
+    pub frac: u32,
+    pub two_levels: bool,
+}
+
+/// The filtered texel Cs of `x`: each level's words decoded from `format` and mixed
+/// bilinearly with `weights`, the two levels blended when there are two.
+pub fn texel(f: &TexFormats, format: TexelFormat, weights: Weights, gaussian: &[u32], x: &FilterIn) -> Rgba8 {
+    let level = |k: usize| {
+        let (a, b) = (weight(f, weights, gaussian, x.alpha[k]), weight(f, weights, gaussian, x.beta[k]));
+        bilinear(f, x.words[k].map(|w| decode(format, w)), a, b)
+    };
+    if x.two_levels {
+        between_levels(f, level(0), level(1), x.frac)
+    } else {
+        level(0)
+    }
+}
+
 /// The bilinear mix of texels `[T(i0, j0), T(i1, j0), T(i0, j1), T(i1, j1)]` with weights
 /// `a` (along s) and `b` (along t) of the second of each pair.
 pub fn bilinear(f: &TexFormats, texels: [Rgba8; 4], a: u32, b: u32) -> Rgba8 {
