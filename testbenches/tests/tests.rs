@@ -15,6 +15,7 @@ mod raster_top;
 mod se;
 mod se_cmd;
 mod span;
+mod texture_coords;
 mod triangle_queue;
 mod triangle_setup;
 mod vector;

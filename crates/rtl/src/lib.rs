@@ -14,6 +14,7 @@ pub mod parts;
 pub mod se;
 pub mod sim;
 pub mod switch;
+pub mod texture_coords;
 
 /// The scanline pipeline's units, as modules of a build module (`n10.rs`, ..., `custom.rs`):
 /// rust-hdl's widths are compile-time constants, so each build (`config`: a size class `n`,
@@ -447,6 +448,12 @@ pub const UNITS: &[Unit] = &[
             Param { name: "I", default: 0, doc: "engine index i: region [P i, P (i + 1)), P (i + 1) < 2048" },
         ],
         build: no_formats!(se::emit_se),
+    },
+    Unit {
+        name: "texture_coords",
+        doc: "the texture unit's coordinates, paper 001 §II.5 eq. (3) and (4): s = (s·q)/q, t likewise, lambda; a pixel a clock",
+        params: &[Param { name: "EXACT", default: 0, doc: "0: 001's eq. (4), max of the four derivatives; 1: GL's exact rho" }],
+        build: no_formats!(texture_coords::emit_texture_coords),
     },
 ];
 
