@@ -152,12 +152,43 @@ fn cli_draws_textured_scenes_on_the_float_reference_only() {
     for (cmd, what) in [
         (vec!["render", scene, "--engine", "scanline", "-o", out], "--engine scanline has no texture unit yet"),
         (vec!["render", scene, "--engine", "rtl", "-o", out], "--engine rtl has no texture unit yet"),
-        (vec!["accuracy", scene], "the fixed-point models has no texture unit yet"),
         (vec!["pack", scene, "-o", out], "vertex buffer (001's command parser) has no texture unit yet"),
         (vec!["sweep", scene, "-o", out], "the fixed-point models has no texture unit yet"),
     ] {
         fails_with(&cmd, &["crate.json: the scene is textured", what]);
     }
+}
+
+#[test]
+fn cli_accuracy_measures_the_texture_unit_on_a_textured_scene() {
+    let d = scratch("texture-accuracy");
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/textured/crate.json");
+    let json = d.join("acc.json");
+    let o = edgepaint(&["accuracy", scene, "--json", json.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        out.contains("(textured, Max level of detail)") && out.contains("| out of conformance tolerance | 0 |"),
+        "{out}"
+    );
+    let report: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(report["texture"]["failures"], 0);
+    assert!(report["texture"]["pixels"].as_u64().unwrap() > 10_000);
+    assert!(report["texture"]["psnr_db"].as_f64().unwrap() >= 40.0);
+    // The pipelines measured on the lit colours: their coverage equals the reference's.
+    assert_eq!(report["engines"][0]["method"], "scanline");
+    // A formats file's texture object sets the unit's precisions; an impossible one is named.
+    let coarse = d.join("coarse.json");
+    std::fs::write(&coarse, r#"{"texture": {"subtexel": 2, "weight": 2}}"#).unwrap();
+    let o = edgepaint(&["accuracy", scene, "--formats", coarse.to_str().unwrap(), "--lod", "exact"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        out.contains("(textured, Exact level of detail)") && !out.contains("| out of conformance tolerance | 0 |"),
+        "{out}"
+    );
+    std::fs::write(&coarse, r#"{"texture": {"subtexel": 0}}"#).unwrap();
+    fails_with(&["accuracy", scene, "--formats", coarse.to_str().unwrap()], &["coarse.json: texture: subtexel = 0"]);
 }
 
 #[test]

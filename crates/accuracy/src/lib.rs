@@ -23,6 +23,8 @@
 //! Colour and depth errors are measured where the same triangle won the pixel
 //! in both renders (each frame records its writers for this purpose).
 
+pub mod texture;
+
 use fx::Formats;
 use model::cycles::{scanline_frame, vector_frame, FrameCycles, Timing};
 use model::pixel_out::Framebuffer;

@@ -1,12 +1,17 @@
-//! `edgepaint accuracy`: a fixed-point pipeline against the float reference.
+//! `edgepaint accuracy`: a fixed-point pipeline against the float reference. On a textured
+//! scene, the texture unit's error (`accuracy::texture`) and the pipelines' on the scene's
+//! lit colours without its textures (setup and the interpolators do not carry texture
+//! coordinates yet).
 
 use super::engine::{Engine, FixedArgs};
 use super::input::{self, Size};
+use accuracy::texture::{judge, TextureSetup};
 use accuracy::{compare, compare_se, Setup};
 use anyhow::{bail, Result};
 use model::cycles::Timing;
 use model::render::Method;
 use std::path::PathBuf;
+use texture::LodRule;
 
 /// Arguments of `edgepaint accuracy`.
 #[derive(clap::Args)]
@@ -24,12 +29,36 @@ pub struct Args {
     /// Override a scene's resolution, e.g. 320x240.
     #[arg(long)]
     size: Option<Size>,
+    /// The texture unit's level-of-detail rule: 001's eq. (4) (max, the design's) or GL's
+    /// exact rho; the reference uses the same.
+    #[arg(long, value_enum, default_value = "max")]
+    lod: Lod,
+}
+
+/// A level-of-detail rule (`texture::LodRule`).
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+enum Lod {
+    Max,
+    Exact,
 }
 
 pub fn run(args: Args) -> Result<()> {
     let loaded = input::load(&args.input, args.size)?;
-    loaded.untextured(&args.input, "the fixed-point models")?;
-    let list = &loaded.trilist;
+    let texture = if loaded.trilist.is_textured() {
+        let lod = match args.lod {
+            Lod::Max => LodRule::Max,
+            Lod::Exact => LodRule::Exact,
+        };
+        let setup = TextureSetup { formats: args.fixed.texture_formats()?, lod, affine: false };
+        let r = judge(&loaded.trilist, &setup).map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?;
+        println!("{} (textured, {lod:?} level of detail)\n{}", args.input.display(), r.table());
+        println!("The pipelines below draw the scene's lit colours without its textures.\n");
+        Some(r)
+    } else {
+        None
+    };
+    let plain = loaded.trilist.without_textures();
+    let list = &plain;
     let formats = args.fixed.formats_of(&loaded)?;
     let mut reports = Vec::new();
     for &engine in &args.engine {
@@ -54,7 +83,12 @@ pub fn run(args: Args) -> Result<()> {
         reports.push(r);
     }
     if let Some(path) = &args.json {
-        let json = serde_json::to_string_pretty(&reports)?;
+        // An array of the pipelines' reports; on a textured scene an object holding it as
+        // "engines" beside the texture unit's report.
+        let json = match &texture {
+            None => serde_json::to_string_pretty(&reports)?,
+            Some(t) => serde_json::to_string_pretty(&serde_json::json!({ "texture": t, "engines": reports }))?,
+        };
         input::write(path, "the accuracy report", json.as_bytes())?;
     }
     Ok(())

@@ -3,7 +3,7 @@
 
 use super::input::Loaded;
 use anyhow::{Context, Result};
-use fx::Formats;
+use fx::{Formats, TexFormats};
 use model::render::Method;
 use std::path::Path;
 
@@ -50,6 +50,16 @@ impl FixedArgs {
         };
         f.check(width, height).map_err(|e| anyhow::anyhow!("formats \"{}\": {e}", self.formats))?;
         Ok(f)
+    }
+
+    /// The texture unit's formats: the formats file's `"texture"` object over the defaults
+    /// (`fx::TexFormats`), or the defaults.
+    pub fn texture_formats(&self) -> Result<TexFormats> {
+        match self.formats.as_str() {
+            "default" | "wide" => Ok(TexFormats::DEFAULT),
+            path => TexFormats::from_formats_file(&formats_json(Path::new(path))?)
+                .map_err(|e| anyhow::anyhow!("{path}: {e}")),
+        }
     }
 
     /// The formats `loaded` is drawn at: a vertex buffer's own (its words are at them; an

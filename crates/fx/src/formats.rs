@@ -274,8 +274,12 @@ impl Formats {
         let obj = json.as_object().ok_or("a formats file must be a JSON object mapping quantities to formats")?;
         let target = v.as_object_mut().expect("formats serialise to an object");
         for (k, val) in obj {
+            if k == "texture" {
+                // The texture unit's formats: `TexFormats::from_formats_file`.
+                continue;
+            }
             if !target.contains_key(k) {
-                let known: Vec<&str> = target.keys().map(String::as_str).collect();
+                let known: Vec<&str> = target.keys().map(String::as_str).chain(["texture"]).collect();
                 return Err(format!("unknown quantity \"{k}\" (known: {})", known.join(", ")));
             }
             target.insert(k.clone(), val.clone());

@@ -14,7 +14,8 @@
 //! | `weight` | 8 | fraction bits of the bilinear filter's weights |
 //!
 //! The defaults meet Vulkan 1.0's minimums (4 sub-texel and 4 level bits) and Vulkan
-//! Roadmap 2022's (8 and 6), see `../shared/PRECISION.md`.
+//! Roadmap 2022's (8 and 6), see `../shared/PRECISION.md`. In a formats file they are the
+//! object under the key `"texture"`, e.g. `{"xy": "S11.4", "texture": {"subtexel": 4}}`.
 
 use crate::fmt::Fmt;
 use serde::{Deserialize, Serialize};
@@ -45,6 +46,17 @@ impl Default for TexFormats {
 }
 
 impl TexFormats {
+    /// The texture unit's formats of a formats file: its object `"texture"` over the
+    /// defaults (all of them when it has none), checked.
+    pub fn from_formats_file(json: &serde_json::Value) -> Result<TexFormats, String> {
+        let f = match json.get("texture") {
+            None => TexFormats::DEFAULT,
+            Some(t) => serde_json::from_value(t.clone()).map_err(|e| format!("texture: {e}"))?,
+        };
+        f.check().map_err(|e| format!("texture: {e}"))?;
+        Ok(f)
+    }
+
     /// The defaults, as a constant: the RTL's widths are read off it at compile time.
     pub const DEFAULT: TexFormats = TexFormats {
         st: Fmt::s(8, 20).saturating(),
@@ -97,5 +109,10 @@ mod tests {
         let json: TexFormats = serde_json::from_str(r#"{"subtexel": 4, "lod_frac": 4}"#).unwrap();
         assert_eq!((json.subtexel, json.lod_frac, json.weight), (4, 4, 8));
         assert!(serde_json::from_str::<TexFormats>(r#"{"texels": 4}"#).is_err());
+        let file: serde_json::Value = serde_json::from_str(r#"{"xy": "S11.4", "texture": {"weight": 6}}"#).unwrap();
+        assert_eq!(TexFormats::from_formats_file(&file).unwrap().weight, 6);
+        assert_eq!(crate::Formats::with_overrides(320, 240, &file).unwrap().xy.frac, 4);
+        let bad: serde_json::Value = serde_json::from_str(r#"{"texture": {"subtexel": 0}}"#).unwrap();
+        assert!(TexFormats::from_formats_file(&bad).unwrap_err().starts_with("texture: subtexel = 0"));
     }
 }

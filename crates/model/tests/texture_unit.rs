@@ -1,23 +1,17 @@
 //! The texture unit's bit-exact model (`model::texture_unit`, paper 001 section II-5)
-//! against values worked out by hand, against the float reference's rules one stage at a
-//! time (wrap, level choice, the divide and the level of detail), and as the GL and Vulkan
-//! conformance tests judge texture filtering (`texture::conformance`) on every shipped
-//! textured scene and on random textures, states and triangles.
+//! against values worked out by hand and against the float reference's rules one stage at
+//! a time: wrap, level choice, the divide and the level of detail. Its error over whole
+//! scenes, judged as the conformance tests judge texture filtering, is
+//! `crates/accuracy/tests/texture.rs`'s.
 
 mod common;
 
 use fx::{Fmt, TexFormats};
-use model::texture_memory::layout;
 use model::texture_unit::address::{levels, taps, wrap_index, Levels};
-use model::texture_unit::input::TexPlanes;
-use model::texture_unit::{Sample, TexGrad, TexIn, TexState, TextureUnit};
+use model::texture_unit::{TexGrad, TexIn, TexState, TextureUnit};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use reference::{prepare, raster, Interpolation, Options, Prepared};
-use scene::{Scene, Triangle, Trilist};
-use std::path::Path;
-use texture::conformance::{check, reference, Probe};
-use texture::{EnvMode, Filter, LevelChoice, LodRule, MipChain, MipMode, Sampler, TexelFormat, Texture, Weights, Wrap};
+use texture::{EnvMode, Filter, LevelChoice, LodRule, MipMode, Sampler, TexelFormat, Wrap};
 
 fn unit() -> TextureUnit {
     TextureUnit::new(TexFormats::default()).unwrap()
@@ -169,163 +163,4 @@ fn coordinates_and_level_agree_with_f64_within_their_precision() {
         worst_lambda * one,
         f.lod_frac
     );
-}
-
-/// Every fragment of `list` through the unit at `formats` (q = 1 everywhere when `affine`)
-/// judged against the float reference at the state's level-of-detail rule: (pixels,
-/// failures, PSNR in dB).
-fn judge(list: &Trilist, formats: TexFormats, rule: LodRule, affine: bool) -> (u64, u64, f64) {
-    let u = TextureUnit::new(formats).unwrap();
-    let f = u.formats;
-    let memories: Vec<Vec<u32>> = list.textures.iter().map(|t| layout(&t.mips, t.format)).collect();
-    let (mut pixels, mut failures, mut sq_err) = (0u64, 0u64, 0.0f64);
-    for tri in &list.triangles {
-        let Some(tex) = tri[0].tex else { continue };
-        let t = &list.textures[tex.texture as usize];
-        let base = t.mips.base();
-        let st = TexState {
-            size_log2: [base.width().trailing_zeros(), base.height().trailing_zeros()],
-            levels: t.mips.levels().len() as u32,
-            base: 0,
-            format: t.format,
-            sampler: t.sampler,
-            env: t.env,
-            lod: rule,
-        };
-        let Prepared::Draw(parts, interp) = prepare(tri, &Options::default()) else { continue };
-        for part in &parts {
-            let inv_w = match (interp, affine) {
-                (Interpolation::Perspective, false) => part.map(|v| v.inv_w),
-                _ => [1.0; 3],
-            };
-            let Some(planes) = TexPlanes::new(part.map(|v| [v.x, v.y]), part.map(|v| v.st), inv_w) else { continue };
-            let g = planes.grad(&f);
-            raster::rasterize(part, list.width, list.height, interp, |frag| {
-                let cf = frag.rgb.map(|c| c.round().clamp(0.0, 255.0) as u8);
-                let p = planes.at(&f, f64::from(frag.x) + 0.5, f64::from(frag.y) + 0.5);
-                let Sample { colour, .. } = u.sample(&st, &memories[tex.texture as usize], &p, &g, cf);
-                let [[sx, tx], [sy, ty]] = frag.dst;
-                let (w, h) = (f64::from(base.width()), f64::from(base.height()));
-                let lambda = rule.rho(sx * w, tx * h, sy * w, ty * h).log2();
-                let probe = Probe { s: frag.st[0], t: frag.st[1], lambda };
-                let cf = cf.map(f64::from);
-                let got = [colour[0], colour[1], colour[2]];
-                let want = reference(&t.mips, &t.sampler, t.env, cf, probe);
-                sq_err += want.iter().zip(got).map(|(w, g)| (w - f64::from(g)).powi(2)).sum::<f64>() / 3.0;
-                pixels += 1;
-                if let Err(miss) = check(&t.mips, &t.sampler, t.env, cf, probe, got) {
-                    if failures < 3 && !affine {
-                        eprintln!("({}, {}): {miss:?} at {probe:?}", frag.x, frag.y);
-                    }
-                    failures += 1;
-                }
-            });
-        }
-    }
-    let mse = sq_err / pixels.max(1) as f64;
-    (pixels, failures, 10.0 * (255.0f64 * 255.0 / mse).log10())
-}
-
-fn shipped(name: &str) -> Trilist {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenes/textured");
-    Scene::load(&dir.join(name)).unwrap().to_trilist().unwrap()
-}
-
-#[test]
-fn every_shipped_textured_scene_passes_the_conformance_check_at_both_lod_rules() {
-    let paths = scene::shipped::textured().unwrap();
-    assert!(paths.len() >= 4, "{paths:?}");
-    for path in paths {
-        let list = Scene::load(&path).unwrap().to_trilist().unwrap();
-        for rule in [LodRule::Max, LodRule::Exact] {
-            let (pixels, failures, psnr) = judge(&list, TexFormats::default(), rule, false);
-            println!("{} {rule:?}: {pixels} pixels, {failures} failures, {psnr:.1} dB", path.display());
-            assert!(pixels > 5_000, "{}: {pixels} textured pixels", path.display());
-            assert_eq!(failures, 0, "{} {rule:?}", path.display());
-            // The design's rule (001's eq. 4); at GL's exact rule, one level per colour (the
-            // mip-level scene) makes each pixel near a level boundary that chose the other
-            // level count in full.
-            assert!(rule == LodRule::Exact || psnr >= 40.0, "{} {rule:?}: {psnr:.1} dB", path.display());
-        }
-    }
-}
-
-#[test]
-fn the_grazing_checkerboard_shows_the_rubber_sheet_only_when_affine() {
-    let list = shipped("checker.json");
-    let (pixels, failures, _) = judge(&list, TexFormats::default(), LodRule::Max, false);
-    assert_eq!(failures, 0);
-    let (_, affine_failures, psnr) = judge(&list, TexFormats::default(), LodRule::Max, true);
-    println!("checker: affine {affine_failures} of {pixels} pixels out of tolerance, {psnr:.1} dB");
-    assert!(affine_failures * 5 > pixels, "affine: only {affine_failures} of {pixels} pixels out of tolerance");
-}
-
-/// A random 2^ws x 2^hs RGBA texture.
-fn random_chain(rng: &mut ChaCha8Rng, ws: u32, hs: u32, format: TexelFormat) -> MipChain {
-    let n = (1usize << ws) * (1usize << hs);
-    let rgba: Vec<u8> = (0..4 * n).map(|_| rng.gen()).collect();
-    MipChain::new(Texture::from_rgba8(1 << ws, 1 << hs, &rgba).unwrap()).unwrap().quantized(format)
-}
-
-#[test]
-fn random_states_textures_and_triangles_pass_the_conformance_check() {
-    let mut rng = ChaCha8Rng::seed_from_u64(common::seed());
-    let filters = [Filter::Nearest, Filter::Linear];
-    let mips = [MipMode::None, MipMode::Nearest, MipMode::Linear];
-    let wraps = [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::ClampToEdge];
-    let envs = [EnvMode::Replace, EnvMode::Modulate, EnvMode::Decal, EnvMode::Blend, EnvMode::Add];
-    let (mut pixels, mut failures) = (0, 0);
-    for case in 0..120 {
-        let format = TexelFormat::ALL[case % 5];
-        let (ws, hs) = (rng.gen_range(0..=6), rng.gen_range(0..=6));
-        let sampler = Sampler {
-            min: filters[rng.gen_range(0..2)],
-            mag: filters[rng.gen_range(0..2)],
-            mip: mips[rng.gen_range(0..3)],
-            wrap_s: wraps[rng.gen_range(0..3)],
-            wrap_t: wraps[rng.gen_range(0..3)],
-            weights: if rng.gen() { Weights::Linear } else { Weights::Gaussian },
-        };
-        let mips = std::sync::Arc::new(random_chain(&mut rng, ws, hs, format));
-        let env = envs[rng.gen_range(0..5)];
-        let tex = scene::TextureRef { images: vec!["random".into()], sampler, env, format, mips };
-        // A screen-space triangle in perspective: w from 1 to 8, s and t over a few repeats.
-        let v = |rng: &mut ChaCha8Rng| scene::Vertex {
-            w: Some(rng.gen_range(1.0..8.0)),
-            tex: Some(scene::Tex { s: rng.gen_range(-3.0..3.0), t: rng.gen_range(-3.0..3.0), texture: 0 }),
-            ..scene::Vertex::new(
-                rng.gen_range(-8.0..72.0),
-                rng.gen_range(-8.0..72.0),
-                0.5,
-                [rng.gen_range(0.0..255.0), 200.0, 90.0],
-            )
-        };
-        let tri: Triangle = [v(&mut rng), v(&mut rng), v(&mut rng)];
-        let list = Trilist { width: 64, height: 64, triangles: vec![tri], textures: vec![tex] };
-        let rule = if case % 2 == 0 { LodRule::Max } else { LodRule::Exact };
-        let (p, fails, _) = judge(&list, TexFormats::default(), rule, false);
-        pixels += p;
-        failures += fails;
-        assert_eq!(fails, 0, "case {case}: {ws}x{hs} {format:?} {sampler:?} {env:?} {rule:?}");
-    }
-    println!("{pixels} pixels, {failures} failures");
-    assert!(pixels > 20_000);
-}
-
-#[test]
-fn formats_below_vulkans_minimums_fail_the_check_where_the_defaults_pass() {
-    // The defaults: Vulkan 1.0's minimums (4 sub-texel and 4 level bits) and Roadmap 2022's
-    // (8 and 6) met.
-    let d = TexFormats::default();
-    assert!(d.subtexel >= 8 && d.lod_frac >= 6);
-    let list = shipped("crate.json");
-    for (what, coarse) in [
-        ("2 sub-texel bits", TexFormats { subtexel: 2, weight: 2, ..d }),
-        ("2 level bits", TexFormats { lod_frac: 2, ..d }),
-        ("8 reciprocal bits", TexFormats { recip: 8, ..d }),
-    ] {
-        let (pixels, failures, psnr) = judge(&list, coarse, LodRule::Max, false);
-        println!("crate at {what}: {failures} of {pixels} pixels out of tolerance, {psnr:.1} dB");
-        assert!(failures > 0, "{what}: no failures");
-    }
 }

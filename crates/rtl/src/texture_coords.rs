@@ -74,7 +74,7 @@ const T: usize = (F.lod_frac + 4) as usize;
 const SAT: usize = PS - ST + 1;
 const TE: usize = 12;
 const SUM: usize = 24;
-const _: () = assert!(G_SHIFT < PG && DIV_QM % 2 == 0 && M <= 127 && SQ <= 127 && M <= 255);
+const _: () = assert!(G_SHIFT < PG && DIV_QM.is_multiple_of(2) && M <= 127 && SQ <= 127);
 
 /// A constant bit index or shift amount (rust-hdl's `hdl_gen` reads a Rust constant in an
 /// expression as a Verilog name, so each one used there is a `Constant` field).

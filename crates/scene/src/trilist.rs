@@ -191,6 +191,12 @@ impl Trilist {
         self.triangles.iter().any(|t| t[0].tex.is_some())
     }
 
+    /// The same triangles in their lit colours alone: no texture coordinates, no textures.
+    pub fn without_textures(&self) -> Trilist {
+        let triangles = self.triangles.iter().map(|t| t.map(|v| Vertex { tex: None, ..v })).collect();
+        Trilist { width: self.width, height: self.height, triangles, textures: Vec::new() }
+    }
+
     /// Reads and validates a trilist file; texture images are relative to its folder.
     pub fn load(path: &Path) -> Result<Self> {
         let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;

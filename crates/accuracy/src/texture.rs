@@ -1,0 +1,155 @@
+//! The texture unit's error: every textured fragment of a scene through the bit-exact
+//! texture unit (`model::texture_unit`, paper 001 section II-5) against the float
+//! reference at the same level-of-detail rule, judged as the GL and Vulkan conformance
+//! tests judge texture filtering (`texture::conformance`).
+//!
+//! The unit is driven on its own: each fragment's s·q, t·q and q and its triangle's
+//! gradients come from the float triangle (`model::texture_unit::input::TexPlanes`),
+//! quantized to the unit's formats, and its lit colour is the reference's rounded to 8
+//! bits, so the numbers measure the texture unit alone. (Setup and the interpolators do
+//! not carry s·q, t·q and q yet.)
+
+use fx::TexFormats;
+use model::texture_memory::layout;
+use model::texture_unit::input::TexPlanes;
+use model::texture_unit::{TexState, TextureUnit};
+use reference::{prepare, raster, Interpolation, Options, Prepared};
+use scene::Trilist;
+use serde::Serialize;
+use texture::conformance::{check, reference, Probe};
+use texture::LodRule;
+
+/// How the unit is driven.
+#[derive(Clone, Copy, Debug)]
+pub struct TextureSetup {
+    pub formats: TexFormats,
+    /// The unit's level-of-detail rule; the reference uses the same.
+    pub lod: LodRule,
+    /// Texture coordinates interpolated screen-linearly (q = 1 at every vertex: the
+    /// rubber sheet) while the reference stays perspective-correct.
+    pub affine: bool,
+}
+
+/// The pixel furthest out of tolerance.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct TextureMiss {
+    pub x: u32,
+    pub y: u32,
+    pub reference: [f64; 3],
+    pub got: [u8; 3],
+    pub error_lsb: f64,
+    pub tolerance_lsb: f64,
+}
+
+/// The unit's error over a scene.
+#[derive(Clone, Debug, Serialize)]
+pub struct TextureReport {
+    /// Textured fragments judged (hidden ones too: every fragment the rasterizer makes).
+    pub pixels: u64,
+    /// Fragments outside the conformance tolerance of every allowed result.
+    pub failures: u64,
+    /// Against the reference at the fragment's own coordinates, 8-bit LSB.
+    pub max_error_lsb: f64,
+    pub mean_error_lsb: f64,
+    pub psnr_db: f64,
+    /// Texels read through the cache (2x2 footprints, one per level read).
+    pub fetches: u64,
+    pub worst_failure: Option<TextureMiss>,
+}
+
+/// Every textured fragment of `list` through the texture unit set up as `s`.
+pub fn judge(list: &Trilist, s: &TextureSetup) -> Result<TextureReport, String> {
+    let unit = TextureUnit::new(s.formats)?;
+    let f = unit.formats;
+    let memories: Vec<Vec<u32>> = list.textures.iter().map(|t| layout(&t.mips, t.format)).collect();
+    let mut r = TextureReport {
+        pixels: 0,
+        failures: 0,
+        max_error_lsb: 0.0,
+        mean_error_lsb: 0.0,
+        psnr_db: f64::INFINITY,
+        fetches: 0,
+        worst_failure: None,
+    };
+    let (mut sum, mut sum_sq) = (0.0, 0.0);
+    for tri in &list.triangles {
+        let Some(tex) = tri[0].tex else { continue };
+        let t = list.textures.get(tex.texture as usize).ok_or("a triangle names a texture the list lacks")?;
+        let base = t.mips.base();
+        let state = TexState {
+            size_log2: [base.width().trailing_zeros(), base.height().trailing_zeros()],
+            levels: t.mips.levels().len() as u32,
+            base: 0,
+            format: t.format,
+            sampler: t.sampler,
+            env: t.env,
+            lod: s.lod,
+        };
+        state.check()?;
+        let Prepared::Draw(parts, interp) = prepare(tri, &Options::default()) else { continue };
+        for part in &parts {
+            let inv_w = match (interp, s.affine) {
+                (Interpolation::Perspective, false) => part.map(|v| v.inv_w),
+                _ => [1.0; 3],
+            };
+            let Some(planes) = TexPlanes::new(part.map(|v| [v.x, v.y]), part.map(|v| v.st), inv_w) else { continue };
+            let g = planes.grad(&f);
+            raster::rasterize(part, list.width, list.height, interp, |frag| {
+                let cf = frag.rgb.map(|c| c.round().clamp(0.0, 255.0) as u8);
+                let p = planes.at(&f, f64::from(frag.x) + 0.5, f64::from(frag.y) + 0.5);
+                let sample = unit.sample(&state, &memories[tex.texture as usize], &p, &g, cf);
+                let [[sx, tx], [sy, ty]] = frag.dst;
+                let (w, h) = (f64::from(base.width()), f64::from(base.height()));
+                let lambda = s.lod.rho(sx * w, tx * h, sy * w, ty * h).log2();
+                let probe = Probe { s: frag.st[0], t: frag.st[1], lambda };
+                let cf = cf.map(f64::from);
+                let got = [sample.colour[0], sample.colour[1], sample.colour[2]];
+                let want = reference(&t.mips, &t.sampler, t.env, cf, probe);
+                for (w, g) in want.iter().zip(got) {
+                    let e = (w - f64::from(g)).abs();
+                    (sum, sum_sq) = (sum + e, sum_sq + e * e);
+                    r.max_error_lsb = r.max_error_lsb.max(e);
+                }
+                r.pixels += 1;
+                r.fetches += sample.fetches.len() as u64;
+                if let Err(miss) = check(&t.mips, &t.sampler, t.env, cf, probe, got) {
+                    r.failures += 1;
+                    if r.worst_failure.is_none_or(|w| miss.error_lsb > w.error_lsb) {
+                        r.worst_failure = Some(TextureMiss {
+                            x: frag.x,
+                            y: frag.y,
+                            reference: miss.reference,
+                            got,
+                            error_lsb: miss.error_lsb,
+                            tolerance_lsb: miss.tolerance_lsb,
+                        });
+                    }
+                }
+            });
+        }
+    }
+    let channels = 3.0 * r.pixels.max(1) as f64;
+    r.mean_error_lsb = sum / channels;
+    if sum_sq > 0.0 {
+        r.psnr_db = 10.0 * (255.0f64 * 255.0 / (sum_sq / channels)).log10();
+    }
+    Ok(r)
+}
+
+impl TextureReport {
+    /// The report as a Markdown table.
+    pub fn table(&self) -> String {
+        let worst = self.worst_failure.map_or("none".to_owned(), |m| {
+            format!(
+                "({}, {}): {:?} against {:.1?}, {:.2} LSB over a tolerance of {}",
+                m.x, m.y, m.got, m.reference, m.error_lsb, m.tolerance_lsb
+            )
+        });
+        format!(
+            "| texture unit | value |\n|---|---|\n| textured fragments | {} |\n| out of conformance tolerance | {} |\n\
+             | colour max error (LSB) | {:.2} |\n| colour mean error (LSB) | {:.3} |\n| PSNR (dB) | {:.1} |\n\
+             | 2x2 fetches | {} |\n| worst failure | {worst} |\n",
+            self.pixels, self.failures, self.max_error_lsb, self.mean_error_lsb, self.psnr_db, self.fetches
+        )
+    }
+}
