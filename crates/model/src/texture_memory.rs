@@ -14,6 +14,10 @@
 
 use texture::{MipChain, TexelFormat};
 
+/// Bits of a texture memory word address: 64 Mi words, room for the chain of a 4096 x 4096
+/// texture (22.4 Mi words) and more.
+pub const ADDR_BITS: u32 = 26;
+
 /// Words of each plane of level `d` of a 2^`ws` x 2^`hs` texture.
 pub fn plane_words(ws: u32, hs: u32, d: u32) -> u32 {
     1 << (ws.saturating_sub(d + 1) + hs.saturating_sub(d + 1))

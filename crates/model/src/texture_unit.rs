@@ -5,27 +5,23 @@
 //! decode and the texture environment. The RTL texture unit must give the same colour on
 //! every pixel; the float reference (`texture`, `reference::textured`) measures it.
 //!
-//! Stages, one module each:
-//! 1. [`coords`]: s = (s·q) / q, t likewise, and lambda, from the pixel's s·q, t·q and
-//!    q = w_min / w ([`TexIn`]) and the triangle's gradients of them ([`TexGrad`]);
-//! 2. [`address`]: the levels lambda selects, and each level's texels, wrapped;
-//! 3. `texture_memory` and the texture cache: each texel's word, a 2x2 footprint in one
+//! Stages, one unit each (the RTL's of the same names):
+//! 1. `texture_coords`: s = (s·q) / q, t likewise, and lambda, from the pixel's s·q, t·q
+//!    and q = w_min / w ([`TexIn`]) and the triangle's gradients of them ([`TexGrad`]);
+//! 2. `texture_address`: the levels lambda selects, and each level's texels, wrapped, as
+//!    one cache access (`texture_address::request`) per level;
+//! 3. `texture_memory` and `texture_cache`: each texel's word, a 2x2 footprint in one
 //!    clock from four banks ([`Fetch`]);
-//! 4. [`filter`]: decode, bilinear filter, the blend between two levels;
-//! 5. [`env`]: the texture environment with the fragment's lit colour.
+//! 4. `texture_filter`: decode, bilinear filter, the blend between two levels, and the
+//!    texture environment with the fragment's lit colour.
 //!
 //! Every precision is a field of [`TexFormats`].
 
-pub mod address;
-pub mod coords;
-pub mod env;
-pub mod filter;
 pub mod input;
 
-use crate::texture_memory;
-use address::{levels, taps, Levels, Taps};
-use coords::{coords, log2_table, Coords};
-use filter::{gaussian_table, texel, FilterIn, Rgba8};
+use crate::texture_address::{levels, request, Levels};
+use crate::texture_coords::{coords, log2_table, Coords};
+use crate::texture_filter::{environment, gaussian_table, texel, FilterIn, Rgba8};
 use fx::TexFormats;
 use texture::{EnvMode, LodRule, Sampler, TexelFormat};
 
@@ -116,39 +112,17 @@ impl TextureUnit {
     pub fn sample(&self, state: &TexState, memory: &[u32], p: &TexIn, g: &TexGrad, cf: [u8; 3]) -> Sample {
         let f = &self.formats;
         let c = self.coords(state, p, g);
-        let levels = levels(f, state, c.lambda);
-        let (filter, first, second) = match levels {
-            Levels::Magnify => (state.sampler.mag, 0, None),
-            Levels::One(d) => (state.sampler.min, d, None),
-            Levels::Two { d1, frac } => (state.sampler.min, d1, Some((d1 + 1, frac))),
-        };
-        let mut x = FilterIn { two_levels: second.is_some(), frac: second.map_or(0, |s| s.1), ..FilterIn::default() };
+        let first = request(f, state, &c, false);
+        let mut x = FilterIn { two_levels: first.two_levels, frac: first.frac, ..FilterIn::default() };
         let mut fetches = Vec::with_capacity(2);
-        for (k, d) in std::iter::once(first).chain(second.map(|s| s.0)).enumerate() {
-            let taps = taps(f, state, &c, d, filter);
-            let (words, fetch) = read(state, memory, d, &taps);
-            (x.words[k], x.alpha[k], x.beta[k]) = (words, taps.alpha, taps.beta);
-            fetches.push(fetch);
+        for k in 0..1 + usize::from(first.two_levels) {
+            let r = if k == 0 { first } else { request(f, state, &c, true) };
+            let word = |bank: usize| r.fetch[bank].and_then(|a| memory.get(a as usize)).copied().unwrap_or(0);
+            (x.words[k], x.alpha[k], x.beta[k]) = (r.banks.map(word), r.alpha, r.beta);
+            fetches.push(r.fetch);
         }
         let texel = texel(f, state.format, state.sampler.weights, &self.gaussian, &x);
-        let colour = env::environment(state.env, [cf[0], cf[1], cf[2], 255], texel);
-        Sample { coords: c, levels, texel, colour, fetches }
+        let colour = environment(state.env, [cf[0], cf[1], cf[2], 255], texel);
+        Sample { coords: c, levels: levels(f, state, c.lambda), texel, colour, fetches }
     }
-}
-
-/// The words of the four texels of `taps` in level `d` ([T(i0, j0), T(i1, j0), T(i0, j1),
-/// T(i1, j1)]) and the cache access that reads them: one bank per distinct texel (two
-/// texels of a footprint that coincide, at a clamped edge or in a 1-wide level, are one
-/// read).
-fn read(state: &TexState, memory: &[u32], d: u32, taps: &Taps) -> ([u32; 4], Fetch) {
-    let [ws, hs] = state.size_log2;
-    let mut fetch = [None; 4];
-    let mut words = [0; 4];
-    for (k, word) in words.iter_mut().enumerate() {
-        let (i, j) = (taps.i[k & 1], taps.j[k >> 1]);
-        let address = texture_memory::address(state.base, ws, hs, d, i, j);
-        fetch[texture_memory::bank(i, j)] = Some(address);
-        *word = memory.get(address as usize).copied().unwrap_or(0);
-    }
-    (words, fetch)
 }

@@ -7,7 +7,7 @@
 mod common;
 
 use fx::{Fmt, TexFormats};
-use model::texture_unit::address::{levels, taps, wrap_index, Levels};
+use model::texture_address::{levels, taps, wrap_index, Levels};
 use model::texture_unit::{TexGrad, TexIn, TexState, TextureUnit};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -49,7 +49,7 @@ fn the_divide_and_texel_selection_give_the_worked_values() {
     // t = 1: v - 1/2 = 3.5, texels 3 and 4 -> 0 (repeat), beta 1/2.
     assert_eq!((taps.j, taps.beta), ([3, 0], 128));
     // Nearest: floor(1.25) = 1, floor(4) = 4 -> 0.
-    let near = model::texture_unit::address::taps(&f, &st, &c, 0, Filter::Nearest);
+    let near = model::texture_address::taps(&f, &st, &c, 0, Filter::Nearest);
     assert_eq!((near.i, near.j), ([1, 1], [0, 0]));
     // No derivatives: magnified.
     assert_eq!(levels(&f, &st, c.lambda), Levels::Magnify);

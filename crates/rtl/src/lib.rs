@@ -14,7 +14,9 @@ pub mod parts;
 pub mod se;
 pub mod sim;
 pub mod switch;
+pub mod texture_address;
 pub mod texture_coords;
+pub mod texture_filter;
 
 /// The scanline pipeline's units, as modules of a build module (`n10.rs`, ..., `custom.rs`):
 /// rust-hdl's widths are compile-time constants, so each build (`config`: a size class `n`,
@@ -450,10 +452,22 @@ pub const UNITS: &[Unit] = &[
         build: no_formats!(se::emit_se),
     },
     Unit {
+        name: "texture_address",
+        doc: "the texture unit's addresses, paper 001 §II.5 / GL 4.6 §8.14: level, 2x2 footprint, wrap, a word per cache bank; combinational",
+        params: &[],
+        build: no_formats!(texture_address::emit_texture_address),
+    },
+    Unit {
         name: "texture_coords",
         doc: "the texture unit's coordinates, paper 001 §II.5 eq. (3) and (4): s = (s·q)/q, t likewise, lambda; a pixel a clock",
         params: &[Param { name: "EXACT", default: 0, doc: "0: 001's eq. (4), max of the four derivatives; 1: GL's exact rho" }],
         build: no_formats!(texture_coords::emit_texture_coords),
+    },
+    Unit {
+        name: "texture_filter",
+        doc: "the texture unit's filter, paper 001 §II.5, Fig. 6: decode, bilinear (linear or Gaussian weights), levels, environment; a pixel a clock",
+        params: &[],
+        build: no_formats!(texture_filter::emit_texture_filter),
     },
 ];
 

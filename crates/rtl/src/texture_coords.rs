@@ -2,7 +2,7 @@
 //! per clock: the perspective division of its eq. (3), s = (s·q) / q and t = (t·q) / q, and
 //! the level of detail of its eq. (4), lambda = log2 max(|ds/dx|, |dt/dx|, |ds/dy|,
 //! |dt/dy|) in texels, or OpenGL's exact rho (`EXACT = 1`). Bit-exact to
-//! `model::texture_unit::coords` at `fx::TexFormats::DEFAULT`.
+//! `model::texture_coords` at `fx::TexFormats::DEFAULT`.
 //!
 //! ```text
 //!  q ──leading one──> M = q << lz ──> divider: r = floor(2^45 / M)    (DIV_STAGES stages,
@@ -12,7 +12,7 @@
 //!  C  g = d(s·q)/dx - (s · dq/dx) >> 24 (x4), |g| << ws or hs  4 multipliers 29 x 30
 //!  D  m = max of the four (EXACT = 0), or of the two sums of squares (EXACT = 1: 4 squares)
 //!  E1 the leading ones of m and r, the 10 bits below each: indices of two 1024-entry log2
-//!     tables (`model::texture_unit::coords::log2_table`)
+//!     tables (`model::texture_coords::log2_table`)
 //!  E2 the tables read: synchronous ROMs (block RAM), addressed by the indices entering E2,
 //!     or by E2's own while the pipeline stalls, so that entry and pixel stay together
 //!  E3 lambda = round(log2 m + log2 r + (lz - 49) · 2^10, 4 bits); MAGNIFIED for m = 0
@@ -29,7 +29,7 @@ use crate::emit::{ports, verilog, Emitted};
 use crate::mul::Mul;
 use crate::Params;
 use fx::TexFormats;
-use model::texture_unit::coords::{log2_table, MAGNIFIED};
+use model::texture_coords::{log2_table, MAGNIFIED};
 use rust_hdl::prelude::*;
 
 const F: TexFormats = TexFormats::DEFAULT;

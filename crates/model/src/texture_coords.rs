@@ -19,7 +19,7 @@
 //! in `lod_frac + 3` fraction bits; the sum is rounded half up to `lod_frac` bits. A pixel
 //! whose four numerators are 0 gets [`MAGNIFIED`].
 
-use super::{TexGrad, TexIn, TexState};
+use crate::texture_unit::{TexGrad, TexIn, TexState};
 use fx::{shr_floor, TexFormats};
 use texture::LodRule;
 

@@ -8,8 +8,9 @@
 //! footprint's texels are wrapped separately, as GL says); sides are powers of two, so
 //! REPEAT is a mask, MIRRORED_REPEAT a mask and a reflection, CLAMP_TO_EDGE a clamp.
 
-use super::coords::Coords;
-use super::TexState;
+use crate::texture_coords::Coords;
+use crate::texture_memory;
+use crate::texture_unit::{Fetch, TexState};
 use fx::TexFormats;
 use texture::{Filter, MipMode, Wrap};
 
@@ -92,4 +93,41 @@ pub fn wrap_index(wrap: Wrap, i: i64, size_log2: u32) -> u32 {
         }
         Wrap::ClampToEdge => i.clamp(0, n - 1) as u32,
     }
+}
+
+/// One access of the texture cache: the texels of one level of a pixel's footprint.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Request {
+    /// Each bank's word address, or none.
+    pub fetch: Fetch,
+    /// The bank of each footprint texel [T(i0, j0), T(i1, j0), T(i0, j1), T(i1, j1)]: two
+    /// texels that coincide (at a clamped edge, in a 1-wide level, or a nearest sample's
+    /// one texel four times) are one read of one bank.
+    pub banks: [usize; 4],
+    /// The level's fractions (`subtexel` bits; 0 for nearest).
+    pub alpha: u32,
+    pub beta: u32,
+    /// Whether the pixel reads two levels, and the second's weight (`lod_frac` bits).
+    pub two_levels: bool,
+    pub frac: u32,
+}
+
+/// The cache access for the pixel at `c`: of its first level, or of its second (the finer
+/// level's next) when `second` and it reads two: what the RTL unit `texture_address` gives.
+pub fn request(f: &TexFormats, state: &TexState, c: &Coords, second: bool) -> Request {
+    let (filter, d, two_levels, frac) = match levels(f, state, c.lambda) {
+        Levels::Magnify => (state.sampler.mag, 0, false, 0),
+        Levels::One(d) => (state.sampler.min, d, false, 0),
+        Levels::Two { d1, frac } => (state.sampler.min, d1 + u32::from(second), true, frac),
+    };
+    let taps = taps(f, state, c, d, filter);
+    let [ws, hs] = state.size_log2;
+    let mut fetch = [None; 4];
+    let banks = std::array::from_fn(|k| {
+        let (i, j) = (taps.i[k & 1], taps.j[k >> 1]);
+        let bank = texture_memory::bank(i, j);
+        fetch[bank] = Some(texture_memory::address(state.base, ws, hs, d, i, j));
+        bank
+    });
+    Request { fetch, banks, alpha: taps.alpha, beta: taps.beta, two_levels, frac }
 }

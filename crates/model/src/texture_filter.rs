@@ -1,6 +1,7 @@
-//! Texel decode and filtering in fixed point: paper 001's bilinear filter with plain linear
-//! weights or its Gaussian-approximating weights (Fig. 6), and the linear blend between two
-//! levels.
+//! The texture unit's filter (paper 001 section II-5) in fixed point: texel decode, the
+//! bilinear filter with plain linear weights or 001's Gaussian-approximating weights (its
+//! Fig. 6), the linear blend between two levels, and the texture environment. Bit-exact
+//! model of the RTL unit `texture_filter`: [`texel`] then [`environment`].
 //!
 //! - Decode: a c-bit channel widens to 8 bits by bit replication (c << (8 - c) | c >> (2c -
 //!   8) ..., the usual hardware expansion, within 1/2 LSB of c · 255 / (2^c - 1)); a format
@@ -12,8 +13,11 @@
 //!   C = (Σ T · w_s · w_t + 2^(2·weight-1)) >> 2·weight.
 //! - Levels: C = (C1 · (2^lod_frac - f) + C2 · f + 2^(lod_frac-1)) >> lod_frac.
 
+//! - Environment (OpenGL 2.1's glTexEnv, section 3.13): the fragment's lit colour Cf
+//!   (alpha 255) with the filtered texel Cs, the environment colour Cc transparent black as
+//!   GL's default; each product of two 8-bit colours rounded to nearest ([`mul255`]).
 use fx::TexFormats;
-use texture::{TexelFormat, Weights};
+use texture::{EnvMode, TexelFormat, Weights};
 
 /// A decoded texel or a filtered colour: R, G, B, A in 0..=255.
 pub type Rgba8 = [u8; 4];
@@ -109,6 +113,37 @@ pub fn between_levels(f: &TexFormats, c1: Rgba8, c2: Rgba8, frac: u32) -> Rgba8 
     out
 }
 
+/// round(p / 255) for p in 0..=255 · 255 (the sum of two products whose weights add to 255
+/// too): (p + 128 + ((p + 128) >> 8)) >> 8, exact in that range.
+pub fn div255(p: u32) -> u8 {
+    let p = p + 128;
+    ((p + (p >> 8)) >> 8) as u8
+}
+
+/// round(x · y / 255).
+pub fn mul255(x: u8, y: u8) -> u8 {
+    div255(u32::from(x) * u32::from(y))
+}
+
+/// The texture environment `mode` of fragment colour `cf` and texel colour `cs`:
+/// REPLACE Cs; MODULATE Cf · Cs; DECAL Cf (1 - As) + Cs As (alpha Af); BLEND Cf (1 - Cs)
+/// (+ Cc Cs, 0), alpha Af · As; ADD min(Cf + Cs, 1), alpha Af · As.
+pub fn environment(mode: EnvMode, cf: Rgba8, cs: Rgba8) -> Rgba8 {
+    let colour = |k: usize| match mode {
+        EnvMode::Replace => cs[k],
+        EnvMode::Modulate => mul255(cf[k], cs[k]),
+        EnvMode::Decal => div255(u32::from(cf[k]) * u32::from(255 - cs[3]) + u32::from(cs[k]) * u32::from(cs[3])),
+        EnvMode::Blend => mul255(cf[k], 255 - cs[k]),
+        EnvMode::Add => cf[k].saturating_add(cs[k]),
+    };
+    let alpha = match mode {
+        EnvMode::Replace => cs[3],
+        EnvMode::Decal => cf[3],
+        EnvMode::Modulate | EnvMode::Blend | EnvMode::Add => mul255(cf[3], cs[3]),
+    };
+    [colour(0), colour(1), colour(2), alpha]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -126,6 +161,13 @@ mod tests {
                     assert!((f64::from(got[k]) - want).abs() <= 0.5, "{format:?} channel {k} code {c}: {}", got[k]);
                 }
             }
+        }
+    }
+
+    #[test]
+    fn div255_rounds_exactly() {
+        for p in 0..=255 * 255 {
+            assert_eq!(u32::from(div255(p)), (2 * p + 255) / 510, "{p}");
         }
     }
 }
