@@ -13,9 +13,11 @@
 #                             alumacc, memory; everything but the mapping to ECP5 cells,
 #                             which took 149 s of its 229 s of CPU), and every unit not listed in
 #                             SUBMODULES (pixel_out.v, ept.v: generic `synth -flatten` and
-#                             `synth_ecp5`; se.v and vector.v: `synth_ecp5` only, their generic
-#                             runs took 86 s and 40 s of CPU and `synth_ecp5` runs the same
-#                             coarse passes before mapping). raster_top.v is gpu_top's scanline units with
+#                             `synth_ecp5`; se.v, vector.v, texture_coords.v and
+#                             texture_cache.v: `synth_ecp5` only, their generic runs took 86,
+#                             40, about 90 and 60 s of CPU (the generic flow makes flip-flops of
+#                             the RAMs and ROMs) and `synth_ecp5` runs the same coarse passes
+#                             before mapping). raster_top.v is gpu_top's scanline units with
 #                             pixel_out behind them: its `synth_ecp5` took 176 s of CPU for
 #                             no module the others leave out but its own glue (the test
 #                             command)
@@ -36,7 +38,7 @@ fi
 SUBMODULES=(command_parser triangle_queue cull_sort divider triangle_setup edge_walk span pixel_bus gpu_regs raster_top)
 # Units the test command maps with synth_ecp5 alone, and those it takes through synth_ecp5's
 # coarse passes alone (--all runs every flow, mapped).
-ECP5_ONLY=(se vector)
+ECP5_ONLY=(se vector texture_coords texture_cache)
 COARSE_ONLY=(gpu_top)
 flows=(generic ecp5)
 all=0

@@ -16,6 +16,7 @@ mod se;
 mod se_cmd;
 mod span;
 mod texture_address;
+mod texture_cache;
 mod texture_coords;
 mod texture_filter;
 mod triangle_queue;

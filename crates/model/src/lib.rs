@@ -34,6 +34,7 @@ pub mod se;
 pub mod se_cmd;
 pub mod span;
 pub mod texture_address;
+pub mod texture_cache;
 pub mod texture_coords;
 pub mod texture_filter;
 pub mod texture_memory;

@@ -15,6 +15,7 @@ pub mod se;
 pub mod sim;
 pub mod switch;
 pub mod texture_address;
+pub mod texture_cache;
 pub mod texture_coords;
 pub mod texture_filter;
 
@@ -464,6 +465,20 @@ pub const UNITS: &[Unit] = &[
         build: no_formats!(texture_coords::emit_texture_coords),
     },
     Unit {
+        name: "texture_cache",
+        doc: "the texture cache of paper 001 §II.5 (printed §II.2.마): four banks (a 2x2 bilinear footprint a clock), one memory read port",
+        params: &[
+            Param {
+                name: "SETS",
+                default: 64,
+                doc: "sets per bank, a power of two from 4 to 256 (built: rtl::texture_cache::GEOMETRIES)",
+            },
+            Param { name: "WAYS", default: 2, doc: "lines per set: 1, 2 or 4 (round-robin replacement per set)" },
+            Param { name: "LINE", default: 4, doc: "32-bit words per line, a power of two from 1 to 16" },
+        ],
+        build: no_formats!(texture_cache::emit_texture_cache),
+    },
+    Unit {
         name: "texture_filter",
         doc: "the texture unit's filter, paper 001 §II.5, Fig. 6: decode, bilinear (linear or Gaussian weights), levels, environment; a pixel a clock",
         params: &[],
@@ -485,6 +500,10 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("gpu_regs", &[("N", 10)]),
     ("command_parser", &[("N", 10), ("CACHE", 512)]),
     ("triangle_queue", &[("N", 10), ("DEPTH", 512)]),
+    ("texture_coords", &[("EXACT", 0)]),
+    ("texture_address", &[]),
+    ("texture_cache", &[("SETS", 64), ("WAYS", 2), ("LINE", 4)]),
+    ("texture_filter", &[]),
     (
         "raster_top",
         &[

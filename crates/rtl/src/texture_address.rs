@@ -17,7 +17,7 @@
 //! The state (size, levels, filters, mipmapping, wrap, base) is the texture's, held by the
 //! texture unit while a triangle is drawn. Tests: `testbenches/tests/texture_address.rs`.
 
-use crate::emit::{ports, verilog, Emitted};
+use crate::emit::{emit_unit, Emitted};
 use crate::sim::{Pins, Value};
 use crate::Params;
 use fx::TexFormats;
@@ -433,14 +433,5 @@ impl Pins for TextureAddress {
 
 /// `UNITS` entry: the unit at `fx::TexFormats::DEFAULT`.
 pub fn emit_texture_address(params: &Params) -> Result<Emitted, String> {
-    let mut u = TextureAddress::default();
-    u.connect_all();
-    Ok(Emitted {
-        unit: "texture_address",
-        params: params.clone(),
-        formats: None,
-        ports: ports(&u),
-        verilog: verilog("texture_address", &u),
-        dir: None,
-    })
+    Ok(emit_unit("texture_address", TextureAddress::default(), params))
 }

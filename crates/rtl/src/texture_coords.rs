@@ -25,7 +25,7 @@
 //! (`--param EXACT=0|1`).
 
 use crate::divider::Divider;
-use crate::emit::{ports, verilog, Emitted};
+use crate::emit::{emit_unit, Emitted};
 use crate::mul::Mul;
 use crate::Params;
 use fx::TexFormats;
@@ -87,6 +87,73 @@ fn word<const N: usize>(v: u128) -> Constant<Bits<N>> {
     Constant::new(v.to_bits())
 }
 
+/// One numerator of the quotient rule in texels of level 0: |d(x·q) - floor(x · dq >>
+/// G_SHIFT)| << size_log2, for x = s or t and d = d/dx or d/dy (`model::texture_coords`'s
+/// `numerator`). Combinational.
+#[derive(LogicBlock)]
+pub struct Numerator {
+    pub dxq: Signal<In, Bits<DST>>,
+    pub x: Signal<In, Bits<ST>>,
+    pub dq: Signal<In, Bits<DQ>>,
+    pub size_log2: Signal<In, Bits<4>>,
+    pub u: Signal<Out, Bits<U>>,
+    mul: Mul<ST, DQ, PG>,
+    g: Signal<Local, Bits<G>>,
+    g_abs: Signal<Local, Bits<GA>>,
+    /// The product's slice (G_SHIFT), the sign bits DST - 1, PG - 1, G - 1, and the masks
+    /// that sign-extend the gradient and the slice to G bits.
+    g_shift: Constant<Bits<8>>,
+    dst_msb: Constant<Bits<8>>,
+    pg_msb: Constant<Bits<8>>,
+    g_msb: Constant<Bits<8>>,
+    ext_dst: Constant<Bits<G>>,
+    ext_pgs: Constant<Bits<G>>,
+}
+
+impl Default for Numerator {
+    fn default() -> Self {
+        let mask = |bits: usize| (1u128 << bits) - 1;
+        Self {
+            dxq: Default::default(),
+            x: Default::default(),
+            dq: Default::default(),
+            size_log2: Default::default(),
+            u: Default::default(),
+            mul: Default::default(),
+            g: Default::default(),
+            g_abs: Default::default(),
+            g_shift: at(G_SHIFT),
+            dst_msb: at(DST - 1),
+            pg_msb: at(PG - 1),
+            g_msb: at(G - 1),
+            ext_dst: word(mask(G) ^ mask(DST)),
+            ext_pgs: word(mask(G) ^ mask(PGS)),
+        }
+    }
+}
+
+impl Logic for Numerator {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.mul.a.next = self.x.val();
+        self.mul.b.next = self.dq.val();
+        // The gradient sign-extended, less the product's slice sign-extended.
+        self.g.next = bit_cast::<G, DST>(self.dxq.val())
+            - bit_cast::<G, PGS>(self.mul.p.val().get_bits::<PGS>(self.g_shift.val().index()));
+        if self.dxq.val().get_bit(self.dst_msb.val().index()) {
+            self.g.next = self.g.val() + self.ext_dst.val();
+        }
+        if self.mul.p.val().get_bit(self.pg_msb.val().index()) {
+            self.g.next = self.g.val() - self.ext_pgs.val();
+        }
+        self.g_abs.next = self.g.val().get_bits::<GA>(0);
+        if self.g.val().get_bit(self.g_msb.val().index()) {
+            self.g_abs.next = !self.g_abs.val() + 1;
+        }
+        self.u.next = bit_cast::<U, GA>(self.g_abs.val()) << bit_cast::<U, 4>(self.size_log2.val());
+    }
+}
+
 /// The texture coordinates unit; `exact` chooses GL's exact rho over 001's eq. (4).
 #[derive(LogicBlock)]
 pub struct TextureCoords {
@@ -140,9 +207,7 @@ pub struct TextureCoords {
     b_hs: DFF<Bits<4>>,
     b_r: DFF<Bits<DIV_Q>>,
     // C: the numerators, (s, x), (s, y), (t, x), (t, y).
-    mul_g: [Mul<ST, DQ, PG>; 4],
-    g: [Signal<Local, Bits<G>>; 4],
-    g_abs: [Signal<Local, Bits<GA>>; 4],
+    num: [Numerator; 4],
     c_valid: DFF<Bit>,
     c_st: [DFF<Bits<ST>>; 2],
     c_u: [DFF<Bits<U>>; 4],
@@ -190,17 +255,12 @@ pub struct TextureCoords {
     dividend: Constant<Bits<DIV_N>>,
     /// i, for the leading ones.
     index: Vec<Constant<Bits<8>>>,
-    /// Bit positions and shifts: QB - 1, recip + 1, ST - 1, PS - 1, the numerator's product
-    /// slice (G_SHIFT), DST - 1, PG - 1, G - 1, M - 1, the log index slices (M - 1 - T,
-    /// DIV_Q - 1 - T), DIV_Q - 1, T, T - 1, SUM - 1.
+    /// Bit positions and shifts: QB - 1, recip + 1, ST - 1, PS - 1, M - 1, the log index
+    /// slices (M - 1 - T, DIV_Q - 1 - T), DIV_Q - 1, T, T - 1, SUM - 1.
     qb_top: Constant<Bits<8>>,
     recip_1: Constant<Bits<8>>,
     st_msb: Constant<Bits<8>>,
     ps_msb: Constant<Bits<8>>,
-    g_shift: Constant<Bits<8>>,
-    dst_msb: Constant<Bits<8>>,
-    pg_msb: Constant<Bits<8>>,
-    g_msb: Constant<Bits<8>>,
     m_top: Constant<Bits<8>>,
     m_index: Constant<Bits<8>>,
     r_top: Constant<Bits<8>>,
@@ -211,11 +271,8 @@ pub struct TextureCoords {
     /// The most negative and positive `st` values, for the divide's saturation.
     st_min: Constant<Bits<ST>>,
     st_max: Constant<Bits<ST>>,
-    /// Masks of the sign extensions: PS bits, a gradient to G, a product slice to G, 24 to
-    /// 32 bits.
+    /// Masks of the sign extensions: PS bits, 24 to 32 bits.
     ones_ps: Constant<Bits<PS>>,
-    ext_dst: Constant<Bits<G>>,
-    ext_pgs: Constant<Bits<G>>,
     ones_sum: Constant<Bits<SUM>>,
     ext_lambda: Constant<Bits<LAMBDA>>,
     /// lambda's exponent offset qf - QB - dst.frac - recip (lz is added), in T fraction bits.
@@ -276,9 +333,7 @@ impl TextureCoords {
             b_ws: Default::default(),
             b_hs: Default::default(),
             b_r: Default::default(),
-            mul_g: Default::default(),
-            g: Default::default(),
-            g_abs: Default::default(),
+            num: Default::default(),
             c_valid: Default::default(),
             c_st: Default::default(),
             c_u: Default::default(),
@@ -324,10 +379,6 @@ impl TextureCoords {
             recip_1: at(R + 1),
             st_msb: at(ST - 1),
             ps_msb: at(PS - 1),
-            g_shift: at(G_SHIFT),
-            dst_msb: at(DST - 1),
-            pg_msb: at(PG - 1),
-            g_msb: at(G - 1),
             m_top: at(M - 1),
             m_index: at(M - 1 - T),
             r_top: at(DIV_Q - 1),
@@ -338,8 +389,6 @@ impl TextureCoords {
             st_min: word(1 << (ST - 1)),
             st_max: word(mask(ST - 1)),
             ones_ps: word(mask(PS)),
-            ext_dst: word(mask(G) ^ mask(DST)),
-            ext_pgs: word(mask(G) ^ mask(PGS)),
             ones_sum: word(mask(SUM)),
             ext_lambda: word(mask(LAMBDA) ^ mask(SUM)),
             offset: word(offset as i128 as u128 & mask(SUM)),
@@ -509,72 +558,29 @@ impl Logic for TextureCoords {
 
         // C: g = d(x·q) - floor(x · dq >> G_SHIFT) for (s, x), (s, y), (t, x), (t, y); |g|
         // in texels of level 0 (u along s by ws, v along t by hs).
-        self.mul_g[0].a.next = self.b_st[0].q.val();
-        self.mul_g[0].b.next = self.b_dq[0].q.val();
-        self.mul_g[1].a.next = self.b_st[0].q.val();
-        self.mul_g[1].b.next = self.b_dq[1].q.val();
-        self.mul_g[2].a.next = self.b_st[1].q.val();
-        self.mul_g[2].b.next = self.b_dq[0].q.val();
-        self.mul_g[3].a.next = self.b_st[1].q.val();
-        self.mul_g[3].b.next = self.b_dq[1].q.val();
-        // The gradient sign-extended, less the product's slice sign-extended.
-        self.g[0].next = bit_cast::<G, DST>(self.b_dxq[0].q.val())
-            - bit_cast::<G, PGS>(self.mul_g[0].p.val().get_bits::<PGS>(self.g_shift.val().index()));
-        if self.b_dxq[0].q.val().get_bit(self.dst_msb.val().index()) {
-            self.g[0].next = self.g[0].val() + self.ext_dst.val();
-        }
-        if self.mul_g[0].p.val().get_bit(self.pg_msb.val().index()) {
-            self.g[0].next = self.g[0].val() - self.ext_pgs.val();
-        }
-        self.g_abs[0].next = self.g[0].val().get_bits::<GA>(0);
-        if self.g[0].val().get_bit(self.g_msb.val().index()) {
-            self.g_abs[0].next = !self.g_abs[0].val() + 1;
-        }
-        self.g[1].next = bit_cast::<G, DST>(self.b_dxq[1].q.val())
-            - bit_cast::<G, PGS>(self.mul_g[1].p.val().get_bits::<PGS>(self.g_shift.val().index()));
-        if self.b_dxq[1].q.val().get_bit(self.dst_msb.val().index()) {
-            self.g[1].next = self.g[1].val() + self.ext_dst.val();
-        }
-        if self.mul_g[1].p.val().get_bit(self.pg_msb.val().index()) {
-            self.g[1].next = self.g[1].val() - self.ext_pgs.val();
-        }
-        self.g_abs[1].next = self.g[1].val().get_bits::<GA>(0);
-        if self.g[1].val().get_bit(self.g_msb.val().index()) {
-            self.g_abs[1].next = !self.g_abs[1].val() + 1;
-        }
-        self.g[2].next = bit_cast::<G, DST>(self.b_dxq[2].q.val())
-            - bit_cast::<G, PGS>(self.mul_g[2].p.val().get_bits::<PGS>(self.g_shift.val().index()));
-        if self.b_dxq[2].q.val().get_bit(self.dst_msb.val().index()) {
-            self.g[2].next = self.g[2].val() + self.ext_dst.val();
-        }
-        if self.mul_g[2].p.val().get_bit(self.pg_msb.val().index()) {
-            self.g[2].next = self.g[2].val() - self.ext_pgs.val();
-        }
-        self.g_abs[2].next = self.g[2].val().get_bits::<GA>(0);
-        if self.g[2].val().get_bit(self.g_msb.val().index()) {
-            self.g_abs[2].next = !self.g_abs[2].val() + 1;
-        }
-        self.g[3].next = bit_cast::<G, DST>(self.b_dxq[3].q.val())
-            - bit_cast::<G, PGS>(self.mul_g[3].p.val().get_bits::<PGS>(self.g_shift.val().index()));
-        if self.b_dxq[3].q.val().get_bit(self.dst_msb.val().index()) {
-            self.g[3].next = self.g[3].val() + self.ext_dst.val();
-        }
-        if self.mul_g[3].p.val().get_bit(self.pg_msb.val().index()) {
-            self.g[3].next = self.g[3].val() - self.ext_pgs.val();
-        }
-        self.g_abs[3].next = self.g[3].val().get_bits::<GA>(0);
-        if self.g[3].val().get_bit(self.g_msb.val().index()) {
-            self.g_abs[3].next = !self.g_abs[3].val() + 1;
+        self.num[0].x.next = self.b_st[0].q.val();
+        self.num[0].dq.next = self.b_dq[0].q.val();
+        self.num[0].size_log2.next = self.b_ws.q.val();
+        self.num[1].x.next = self.b_st[0].q.val();
+        self.num[1].dq.next = self.b_dq[1].q.val();
+        self.num[1].size_log2.next = self.b_ws.q.val();
+        self.num[2].x.next = self.b_st[1].q.val();
+        self.num[2].dq.next = self.b_dq[0].q.val();
+        self.num[2].size_log2.next = self.b_hs.q.val();
+        self.num[3].x.next = self.b_st[1].q.val();
+        self.num[3].dq.next = self.b_dq[1].q.val();
+        self.num[3].size_log2.next = self.b_hs.q.val();
+        for k in 0..4 {
+            self.num[k].dxq.next = self.b_dxq[k].q.val();
         }
         if self.en.val() {
             self.c_valid.d.next = self.b_valid.q.val();
             for k in 0..2 {
                 self.c_st[k].d.next = self.b_st[k].q.val();
             }
-            self.c_u[0].d.next = bit_cast::<U, GA>(self.g_abs[0].val()) << bit_cast::<U, 4>(self.b_ws.q.val());
-            self.c_u[1].d.next = bit_cast::<U, GA>(self.g_abs[1].val()) << bit_cast::<U, 4>(self.b_ws.q.val());
-            self.c_u[2].d.next = bit_cast::<U, GA>(self.g_abs[2].val()) << bit_cast::<U, 4>(self.b_hs.q.val());
-            self.c_u[3].d.next = bit_cast::<U, GA>(self.g_abs[3].val()) << bit_cast::<U, 4>(self.b_hs.q.val());
+            for k in 0..4 {
+                self.c_u[k].d.next = self.num[k].u.val();
+            }
             self.c_lz.d.next = self.b_lz.q.val();
             self.c_r.d.next = self.b_r.q.val();
         }
@@ -709,14 +715,5 @@ pub fn emit_texture_coords(params: &Params) -> Result<Emitted, String> {
         1 => true,
         e => return Err(format!("texture_coords: EXACT = {e}: 0 (001's eq. 4) or 1 (GL's exact rho)")),
     };
-    let mut u = TextureCoords::new(exact);
-    u.connect_all();
-    Ok(Emitted {
-        unit: "texture_coords",
-        params: params.clone(),
-        formats: None,
-        ports: ports(&u),
-        verilog: verilog("texture_coords", &u),
-        dir: None,
-    })
+    Ok(emit_unit("texture_coords", TextureCoords::new(exact), params))
 }
