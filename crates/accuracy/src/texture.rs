@@ -10,9 +10,10 @@
 //! not carry s·q, t·q and q yet.)
 
 use fx::TexFormats;
+use model::texture_cache::{hit_rate_of_trace, Params as CacheParams, Stats};
 use model::texture_memory::layout;
 use model::texture_unit::input::TexPlanes;
-use model::texture_unit::{TexState, TextureUnit};
+use model::texture_unit::{Fetch, TexState, TextureUnit};
 use reference::{prepare, raster, Interpolation, Options, Prepared};
 use scene::Trilist;
 use serde::Serialize;
@@ -52,23 +53,56 @@ pub struct TextureReport {
     pub max_error_lsb: f64,
     pub mean_error_lsb: f64,
     pub psnr_db: f64,
-    /// Texels read through the cache (2x2 footprints, one per level read).
-    pub fetches: u64,
+    /// Cache accesses (a 2x2 footprint of one level each), in raster order triangle by
+    /// triangle, the textures laid out one after the other from word 0.
+    #[serde(skip)]
+    pub trace: Vec<Fetch>,
+    /// The texture cache's counts on `trace` at the default geometry ([`DEFAULT_CACHE`]).
+    pub cache: CacheStats,
     pub worst_failure: Option<TextureMiss>,
+}
+
+/// The cache geometry the default design emits (`rtl::DEFAULT_DESIGN`'s `texture_cache`).
+pub const DEFAULT_CACHE: CacheParams = CacheParams { sets: 64, ways: 2, line: 4 };
+
+/// A cache geometry's counts on a trace.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct CacheStats {
+    pub sets: u32,
+    pub ways: u32,
+    pub line: u32,
+    pub hits: u64,
+    pub misses: u64,
+    /// hits / (hits + misses), per lane lookup.
+    pub hit_rate: f64,
+}
+
+/// The counts of the cache at `params` on `trace`.
+pub fn cache_stats(params: &CacheParams, trace: &[Fetch]) -> CacheStats {
+    let Stats { hits, misses, .. } = hit_rate_of_trace(params, trace);
+    let CacheParams { sets, ways, line } = *params;
+    let hit_rate = hits as f64 / (hits + misses).max(1) as f64;
+    CacheStats { sets, ways, line, hits, misses, hit_rate }
 }
 
 /// Every textured fragment of `list` through the texture unit set up as `s`.
 pub fn judge(list: &Trilist, s: &TextureSetup) -> Result<TextureReport, String> {
     let unit = TextureUnit::new(s.formats)?;
     let f = unit.formats;
-    let memories: Vec<Vec<u32>> = list.textures.iter().map(|t| layout(&t.mips, t.format)).collect();
+    // The textures one after the other in one texture memory.
+    let (mut memory, mut bases) = (Vec::new(), Vec::new());
+    for t in &list.textures {
+        bases.push(memory.len() as u32);
+        memory.extend(layout(&t.mips, t.format));
+    }
     let mut r = TextureReport {
         pixels: 0,
         failures: 0,
         max_error_lsb: 0.0,
         mean_error_lsb: 0.0,
         psnr_db: f64::INFINITY,
-        fetches: 0,
+        trace: Vec::new(),
+        cache: cache_stats(&DEFAULT_CACHE, &[]),
         worst_failure: None,
     };
     let (mut sum, mut sum_sq) = (0.0, 0.0);
@@ -79,7 +113,7 @@ pub fn judge(list: &Trilist, s: &TextureSetup) -> Result<TextureReport, String> 
         let state = TexState {
             size_log2: [base.width().trailing_zeros(), base.height().trailing_zeros()],
             levels: t.mips.levels().len() as u32,
-            base: 0,
+            base: bases[tex.texture as usize],
             format: t.format,
             sampler: t.sampler,
             env: t.env,
@@ -97,7 +131,7 @@ pub fn judge(list: &Trilist, s: &TextureSetup) -> Result<TextureReport, String> 
             raster::rasterize(part, list.width, list.height, interp, |frag| {
                 let cf = frag.rgb.map(|c| c.round().clamp(0.0, 255.0) as u8);
                 let p = planes.at(&f, f64::from(frag.x) + 0.5, f64::from(frag.y) + 0.5);
-                let sample = unit.sample(&state, &memories[tex.texture as usize], &p, &g, cf);
+                let sample = unit.sample(&state, &memory, &p, &g, cf);
                 let [[sx, tx], [sy, ty]] = frag.dst;
                 let (w, h) = (f64::from(base.width()), f64::from(base.height()));
                 let lambda = s.lod.rho(sx * w, tx * h, sy * w, ty * h).log2();
@@ -111,7 +145,7 @@ pub fn judge(list: &Trilist, s: &TextureSetup) -> Result<TextureReport, String> 
                     r.max_error_lsb = r.max_error_lsb.max(e);
                 }
                 r.pixels += 1;
-                r.fetches += sample.fetches.len() as u64;
+                r.trace.extend(&sample.fetches);
                 if let Err(miss) = check(&t.mips, &t.sampler, t.env, cf, probe, got) {
                     r.failures += 1;
                     if r.worst_failure.is_none_or(|w| miss.error_lsb > w.error_lsb) {
@@ -128,6 +162,7 @@ pub fn judge(list: &Trilist, s: &TextureSetup) -> Result<TextureReport, String> 
             });
         }
     }
+    r.cache = cache_stats(&DEFAULT_CACHE, &r.trace);
     let channels = 3.0 * r.pixels.max(1) as f64;
     r.mean_error_lsb = sum / channels;
     if sum_sq > 0.0 {
@@ -148,8 +183,18 @@ impl TextureReport {
         format!(
             "| texture unit | value |\n|---|---|\n| textured fragments | {} |\n| out of conformance tolerance | {} |\n\
              | colour max error (LSB) | {:.2} |\n| colour mean error (LSB) | {:.3} |\n| PSNR (dB) | {:.1} |\n\
-             | 2x2 fetches | {} |\n| worst failure | {worst} |\n",
-            self.pixels, self.failures, self.max_error_lsb, self.mean_error_lsb, self.psnr_db, self.fetches
+             | cache accesses (2x2 footprints) | {} |\n| cache hit rate ({} sets, {} ways, {} words) | {:.4} |\n\
+             | worst failure | {worst} |\n",
+            self.pixels,
+            self.failures,
+            self.max_error_lsb,
+            self.mean_error_lsb,
+            self.psnr_db,
+            self.trace.len(),
+            self.cache.sets,
+            self.cache.ways,
+            self.cache.line,
+            self.cache.hit_rate
         )
     }
 }

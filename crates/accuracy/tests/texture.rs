@@ -137,3 +137,24 @@ fn formats_below_vulkans_minimums_fail_the_check_where_the_defaults_pass() {
         assert!(failures > 0, "{what}: no failures");
     }
 }
+
+#[test]
+fn the_cache_hit_rate_on_each_shipped_textured_scene_grows_with_the_cache() {
+    use accuracy::texture::cache_stats;
+    use model::texture_cache::Params;
+    let geometries = [
+        Params { sets: 16, ways: 1, line: 4 },
+        Params { sets: 64, ways: 2, line: 4 },
+        Params { sets: 256, ways: 4, line: 16 },
+    ];
+    for path in scene::shipped::textured().unwrap() {
+        let list = Scene::load(&path).unwrap().to_trilist().unwrap();
+        let r = judge(&list, &setup(TexFormats::default(), LodRule::Max, false)).unwrap();
+        let rates: Vec<f64> = geometries.iter().map(|g| cache_stats(g, &r.trace).hit_rate).collect();
+        println!("{}: {} accesses, hit rates {rates:.4?}", path.display(), r.trace.len());
+        // Every access reads at least one word, and neighbouring pixels share texels: the
+        // smallest cache already hits most lookups, and the largest at least as often.
+        assert_eq!(r.cache.hit_rate, rates[1]);
+        assert!(rates[0] > 0.5 && rates[2] >= rates[0], "{rates:?}");
+    }
+}

@@ -555,10 +555,10 @@ mod tests {
     fn texture_cache_params_split_and_refuse() {
         let p = Params { sets: 16, ways: 2, line: 4 };
         assert_eq!(p.check(), Ok(()));
-        assert_eq!(p.tag_bits(), 14);
-        // Word: 2 bits, set: 4 bits, tag: the other 14.
+        assert_eq!(p.tag_bits(), ADDR_BITS - 6);
+        // Word: 2 bits, set: 4 bits, tag: the other ADDR_BITS - 6.
         assert_eq!(p.split((1 << 6) | (0b0110 << 2) | 0b11), (1, 0b0110, 0b11));
-        assert_eq!(p.split(0xf_ffff), (0x3fff, 15, 3));
+        assert_eq!(p.split((1 << ADDR_BITS) - 1), ((1 << (ADDR_BITS - 6)) - 1, 15, 3));
         for bad in [
             Params { sets: 2, ways: 1, line: 1 },
             Params { sets: 12, ways: 1, line: 1 },

@@ -4,7 +4,8 @@
 //! model of the RTL unit `texture_filter`: [`texel`] then [`environment`].
 //!
 //! - Decode: a c-bit channel widens to 8 bits by bit replication (c << (8 - c) | c >> (2c -
-//!   8) ..., the usual hardware expansion, within 1/2 LSB of c · 255 / (2^c - 1)); a format
+//!   8) ..., the usual hardware expansion, within 0.72 LSB of c · 255 / (2^c - 1): exact for 1,
+//!   4 and 8 bits, 0.68 LSB at most for 5 and 0.72 for 6); a format
 //!   without alpha reads alpha 255.
 //! - Weights: a = alpha's top `weight` bits (linear), or the table
 //!   round((3x² - 2x³) · 2^weight) at x = alpha / 2^subtexel (Gaussian); the first texel of a
@@ -149,7 +150,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn decode_replicates_bits_to_within_half_an_lsb() {
+    fn decode_replicates_bits_to_within_0_72_lsb() {
         for format in TexelFormat::ALL {
             let bits = format.bits();
             for c in [0u32, 1, 5, 9, 15, 31, 63, 255] {
@@ -158,7 +159,7 @@ mod tests {
                 for (k, &b) in bits.iter().enumerate() {
                     let want =
                         if b == 0 { 255.0 } else { f64::from(c & ((1 << b) - 1)) * 255.0 / f64::from((1 << b) - 1) };
-                    assert!((f64::from(got[k]) - want).abs() <= 0.5, "{format:?} channel {k} code {c}: {}", got[k]);
+                    assert!((f64::from(got[k]) - want).abs() <= 0.72, "{format:?} channel {k} code {c}: {}", got[k]);
                 }
             }
         }
