@@ -5,7 +5,7 @@
 //! Model, bit for bit: `model::texture_filter::texel` at `fx::TexFormats::DEFAULT`
 //! (subtexel 8, weight 8, lod_frac 6 bits), then `model::texture_filter::environment`
 //! with the fragment colour `[R, G, B, 255]`. Tests: `testbenches/tests/texture_filter.rs`.
-//! Emitted: `edgepaint emit --unit texture_filter` (not in the default design).
+//! Emitted: `hdl-out/texture_filter.v` (`edgepaint emit --unit texture_filter`).
 //!
 //! # Stages
 //!
