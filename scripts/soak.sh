@@ -30,7 +30,9 @@
 #                   router2 on the divider); gpu_top takes router1, on which router2 diverged
 #                   (router1 routed it in 68 minutes, with other work beside it), and only
 #                   in the ECP5 flow (`--flow ecp5`: no iCE40 holds it, and the generic
-#                   flow makes flip-flops of its RAMs; those two took an hour)
+#                   flow makes flip-flops of its RAMs; those two took an hour); the texture
+#                   units and blend take router2 in the generic and ECP5 flows (their
+#                   multipliers fit no iCE40 HX8K; 1 to 45 minutes each at stop 45)
 #
 # `scripts/soak.sh STEP...` runs only the steps named (tests, random, synth, pnr).
 set -euo pipefail
@@ -70,11 +72,15 @@ want synth && step "lint of every raster_top variant, classes 11 and 12 too" scr
 # The test profile's build of edgepaint: the one the tests made.
 pnr() {
     local unit router flows
-    for unit in ept se cull_sort divider edge_walk span pixel_out pixel_bus gpu_regs command_parser triangle_queue triangle_setup raster_top gpu_top; do
+    for unit in ept se cull_sort divider edge_walk span pixel_out pixel_bus gpu_regs command_parser triangle_queue triangle_setup raster_top gpu_top \
+        texture_coords texture_address texture_cache texture_filter texture_unit blend; do
         router=router1
-        [[ $unit == triangle_setup || $unit == raster_top ]] && router=router2
+        [[ $unit == triangle_setup || $unit == raster_top || $unit == texture_* ]] && router=router2
         flows=()
         [[ $unit == gpu_top ]] && flows=(--flow ecp5)
+        # The texture units hold multipliers (or, the cache, RAMs the generic flow makes
+        # flip-flops of) no iCE40 HX8K has: the generic flow for gate equivalents and ECP5.
+        [[ $unit == texture_* || $unit == blend ]] && flows=(--flow generic --flow ecp5)
         cargo run --profile test --locked --quiet -- report --unit "$unit" --router $router "${flows[@]}" \
             -o "target/soak/report/$unit"
     done

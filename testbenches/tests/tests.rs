@@ -1,6 +1,7 @@
 //! The one test binary of the testbenches crate (see its Cargo.toml): one module per unit,
 //! plus the harness's own tests.
 
+mod blend;
 mod command_parser;
 mod cull_sort;
 mod divider;
@@ -19,6 +20,8 @@ mod texture_address;
 mod texture_cache;
 mod texture_coords;
 mod texture_filter;
+mod texture_setup;
+mod texture_unit;
 mod triangle_queue;
 mod triangle_setup;
 mod vector;

@@ -24,7 +24,7 @@
 //! the new vertices to `xy`.
 
 use fx::Formats;
-use scene::{Triangle, Trilist, Vertex};
+use scene::{Tex, Triangle, Trilist, Vertex};
 
 /// The near plane of the homogeneous clip, as a fraction of the triangle's largest |w|.
 pub const W_NEAR: f64 = 1.0 / (1u64 << 30) as f64;
@@ -40,7 +40,8 @@ pub struct Pieces {
     pub clipped: u64,
 }
 
-/// A polygon vertex: position, depth, colour and w's reciprocal (1 without w).
+/// A polygon vertex: position, depth, colour, w's reciprocal (1 without w) and texture
+/// coordinates (0 when untextured).
 #[derive(Clone, Copy, Debug)]
 struct P {
     x: f64,
@@ -48,6 +49,7 @@ struct P {
     z: f64,
     rgb: [f64; 3],
     inv_w: f64,
+    st: [f64; 2],
 }
 
 /// The pieces of every triangle of `list` for formats `f`; `perspective`: the method
@@ -86,7 +88,13 @@ fn clip(tri: &Triangle, f: &Formats, perspective: bool) -> Option<Vec<Triangle>>
     for (axis, bound, keep_below) in planes {
         poly = clip_axis(&poly, axis, bound, keep_below, perspective);
     }
-    let vertex = |p: &P| Vertex { w: has_w.then_some(1.0 / p.inv_w), ..Vertex::new(p.x, p.y, p.z, p.rgb) };
+    let texture = tri[0].tex.map(|t| t.texture);
+    let vertex = |p: &P| Vertex {
+        w: has_w.then_some(1.0 / p.inv_w),
+        tex: texture.map(|texture| Tex { s: p.st[0], t: p.st[1], texture }),
+        blend: tri[0].blend,
+        ..Vertex::new(p.x, p.y, p.z, p.rgb)
+    };
     Some(
         (1..poly.len().saturating_sub(1)).map(|k| [vertex(&poly[0]), vertex(&poly[k]), vertex(&poly[k + 1])]).collect(),
     )
@@ -94,7 +102,7 @@ fn clip(tri: &Triangle, f: &Formats, perspective: bool) -> Option<Vec<Triangle>>
 
 /// A trilist vertex as a polygon vertex.
 fn screen(v: Vertex) -> P {
-    P { x: v.x, y: v.y, z: v.z, rgb: v.rgb(), inv_w: 1.0 / v.w_or_one() }
+    P { x: v.x, y: v.y, z: v.z, rgb: v.rgb(), inv_w: 1.0 / v.w_or_one(), st: st_of(&v) }
 }
 
 /// Step 1: the polygon in front of the near plane, projected; `None` when a vertex lies at
@@ -105,9 +113,17 @@ fn near(tri: &Triangle) -> Option<Vec<P>> {
         return None;
     }
     let w_near = W_NEAR * w.iter().fold(0.0f64, |m, w| m.max(w.abs()));
-    // Homogeneous: (x w, y w, z w, w) and the colours, all linear along an edge.
-    let h: Vec<[f64; 7]> = tri.iter().zip(w).map(|(v, w)| [v.x * w, v.y * w, v.z * w, w, v.r, v.g, v.b]).collect();
-    let d = |p: &[f64; 7]| p[3] - w_near;
+    // Homogeneous: (x w, y w, z w, w), the colours and texture coordinates, all linear
+    // along an edge.
+    let h: Vec<[f64; 9]> = tri
+        .iter()
+        .zip(w)
+        .map(|(v, w)| {
+            let st = st_of(v);
+            [v.x * w, v.y * w, v.z * w, w, v.r, v.g, v.b, st[0], st[1]]
+        })
+        .collect();
+    let d = |p: &[f64; 9]| p[3] - w_near;
     let mut poly = Vec::new();
     for k in 0..h.len() {
         let (a, b) = (&h[k], &h[(k + 1) % h.len()]);
@@ -116,14 +132,21 @@ fn near(tri: &Triangle) -> Option<Vec<P>> {
         }
         if (d(a) >= 0.0) != (d(b) >= 0.0) {
             let t = d(a) / (d(a) - d(b));
-            let mut p: [f64; 7] = std::array::from_fn(|c| a[c] + t * (b[c] - a[c]));
+            let mut p: [f64; 9] = std::array::from_fn(|c| a[c] + t * (b[c] - a[c]));
             p[3] = w_near;
             poly.push(p);
         }
     }
     Some(
         poly.iter()
-            .map(|p| P { x: p[0] / p[3], y: p[1] / p[3], z: p[2] / p[3], rgb: [p[4], p[5], p[6]], inv_w: 1.0 / p[3] })
+            .map(|p| P {
+                x: p[0] / p[3],
+                y: p[1] / p[3],
+                z: p[2] / p[3],
+                rgb: [p[4], p[5], p[6]],
+                inv_w: 1.0 / p[3],
+                st: [p[7], p[8]],
+            })
             .collect(),
     )
 }
@@ -151,7 +174,8 @@ fn clip_axis(poly: &[P], axis: usize, bound: f64, keep_below: bool, perspective:
 }
 
 /// The point at screen-space parameter `t` from `a` to `b`: position and depth linear,
-/// colour linear or (`perspective`) linear in clip space, w's reciprocal linear.
+/// colour linear or (`perspective`) linear in clip space, w's reciprocal linear, texture
+/// coordinates linear in clip space (the texture path divides by q whatever the method).
 fn between(a: &P, b: &P, t: f64, perspective: bool) -> P {
     let lerp = |u: f64, v: f64| u + t * (v - u);
     let inv_w = lerp(a.inv_w, b.inv_w);
@@ -162,5 +186,11 @@ fn between(a: &P, b: &P, t: f64, perspective: bool) -> P {
             lerp(a.rgb[c], b.rgb[c])
         }
     });
-    P { x: lerp(a.x, b.x), y: lerp(a.y, b.y), z: lerp(a.z, b.z), rgb, inv_w }
+    let st = std::array::from_fn(|c| lerp(a.st[c] * a.inv_w, b.st[c] * b.inv_w) / inv_w);
+    P { x: lerp(a.x, b.x), y: lerp(a.y, b.y), z: lerp(a.z, b.z), rgb, inv_w, st }
+}
+
+/// A vertex's texture coordinates, 0 when it has none.
+fn st_of(v: &Vertex) -> [f64; 2] {
+    v.tex.map_or([0.0; 2], |t| [t.s, t.t])
 }

@@ -14,6 +14,7 @@
 //! * [`guard_band`]: the host's clipping front end; [`input`]: float vertices to hardware words;
 //!   [`ctx`]: formats and overflow records.
 
+pub mod blend;
 pub mod command_parser;
 pub mod ctx;
 pub mod cull_sort;
@@ -38,6 +39,7 @@ pub mod texture_cache;
 pub mod texture_coords;
 pub mod texture_filter;
 pub mod texture_memory;
+pub mod texture_setup;
 pub mod texture_unit;
 pub mod triangle_queue;
 pub mod triangle_setup;

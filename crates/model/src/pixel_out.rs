@@ -5,7 +5,9 @@
 //! the cycle after the address) and writes depth and colour when the new depth
 //! is less: latency 2, one pixel per cycle. Mirrors `rtl::pixel_out`.
 
+use crate::blend::blend;
 use crate::span::Pixel;
+use texture::BlendMode;
 
 /// Cycles from a pixel in to its write (read, compare-and-write).
 pub const LATENCY: u32 = 2;
@@ -43,10 +45,19 @@ impl Framebuffer {
 
     /// Depth test LESS, then write a pixel of triangle `tri`. Returns whether it was written.
     pub fn pixel_out(&mut self, p: &Pixel, tri: u32) -> bool {
+        self.pixel_out_blended(p, 255, BlendMode::Opaque, tri)
+    }
+
+    /// Depth test LESS, then blend the fragment (colour `p.rgb`, alpha `alpha`) onto the
+    /// colour buffer by `mode` (`blend`, 001's six modes; the buffer has no alpha, so the
+    /// destination's is 255) and write it, depth as without blending (GL 4.6 §17.3.6).
+    pub fn pixel_out_blended(&mut self, p: &Pixel, alpha: u8, mode: BlendMode, tri: u32) -> bool {
         let i = (p.y * self.width + p.x) as usize;
         if p.z < self.depth[i] {
+            let [r, g, b] = self.rgb[i];
+            let c = blend(mode, [p.rgb[0], p.rgb[1], p.rgb[2], alpha], [r, g, b, 255]);
             self.depth[i] = p.z;
-            self.rgb[i] = p.rgb;
+            self.rgb[i] = [c[0], c[1], c[2]];
             self.written[i] = true;
             self.writer[i] = tri;
             true

@@ -4,6 +4,11 @@
 //!   -> `edge_walk` -> `span` -> `pixel_out`;
 //! * vector (004): `cull_sort` -> `vector` -> `pixel_out`.
 //!
+//! A textured triangle's fragments ([`render_with`] and a [`Texturing`]) go through
+//! `texture_setup`'s planes and the texture unit (`texture_unit`, 001 §II-5) between the
+//! back end and `pixel_out`, which blends them onto the colour buffer by the triangle's blend
+//! mode (`blend`, 001's six modes) after the depth test.
+//!
 //! In analysis mode every emitted depth and colour is compared with the exact
 //! value of the triangle's plane at that pixel (f64, from the same fixed-point
 //! vertices). Positions never wrap (their formats hold the whole coordinate
@@ -25,6 +30,9 @@ use crate::guard_band;
 use crate::input::{to_fixed, InputError, Vtx};
 use crate::pixel_out::Framebuffer;
 use crate::span::{span, Pixel};
+use crate::texture_memory::TextureMemory;
+use crate::texture_setup::{tex_vertices, texture_setup};
+use crate::texture_unit::{Fetch, TextureUnit};
 use crate::triangle_setup::triangle_setup;
 use crate::vector::{vector, WalkRow};
 use fx::Formats;
@@ -247,10 +255,62 @@ pub struct Render {
     /// The smallest and largest value each quantity's registers were given, over every
     /// triangle that reached `cull_sort` (those dropped for an overflow too).
     pub ranges: Ranges,
+    /// The texture unit's cache accesses, in drawing order (textured renders).
+    pub fetches: Vec<Fetch>,
 }
 
-/// Renders a trilist through the fixed-point pipeline chosen in `opts`.
+/// How the fixed-point engines texture (paper 001 §II-5): every fragment of a textured
+/// triangle, before the depth test, through `texture_setup`'s planes and the texture unit,
+/// its lit colour going in as the fragment colour of the texture environment.
+#[derive(Clone, Debug)]
+pub struct Texturing {
+    pub unit: TextureUnit,
+    pub memory: TextureMemory,
+    /// Screen-linear texture coordinates (q = 1 at every vertex): the rubber sheet.
+    pub affine: bool,
+}
+
+impl Texturing {
+    /// Textures the pixels of triangle `tri` (hardware vertices `v`, at screen formats `f`):
+    /// their colours, and their alphas in `alpha`; its cache accesses go to `fetches`.
+    /// Untextured triangles are left alone.
+    pub fn apply(
+        &self,
+        tri: &Triangle,
+        v: &[Vtx; 3],
+        f: &Formats,
+        pixels: &mut [Pixel],
+        alpha: &mut Vec<u8>,
+        fetches: &mut Vec<Fetch>,
+    ) -> Result<(), InputError> {
+        let Some(tv) = tex_vertices(tri, v, &self.unit.formats, self.affine)? else { return Ok(()) };
+        let (Some(planes), Some(tex)) = (texture_setup(&tv, f, &self.unit.formats), tri[0].tex) else { return Ok(()) };
+        let state = &self.memory.states[tex.texture as usize];
+        let g = planes.grad();
+        alpha.clear();
+        for p in pixels {
+            let sample = self.unit.sample(state, &self.memory.words, &planes.at(p.x, p.y), &g, p.rgb);
+            p.rgb = [sample.colour[0], sample.colour[1], sample.colour[2]];
+            alpha.push(sample.colour[3]);
+            fetches.extend(sample.fetches);
+        }
+        Ok(())
+    }
+}
+
+/// Renders a trilist through the fixed-point pipeline chosen in `opts`, untextured.
 pub fn render(list: &Trilist, f: &Formats, opts: &Options, progress: &mut dyn FnMut(usize)) -> Render {
+    render_with(list, f, opts, None, progress)
+}
+
+/// [`render`], texturing textured triangles with `texturing` when given.
+pub fn render_with(
+    list: &Trilist,
+    f: &Formats,
+    opts: &Options,
+    texturing: Option<&Texturing>,
+    progress: &mut dyn FnMut(usize),
+) -> Render {
     let clip = Clip { width: list.width, height: list.height };
     let mut fb = Framebuffer::new(list.width, list.height, z_max(f) as u32, opts.background);
     let mut stats = Stats { triangles_in: list.triangles.len() as u64, ..Stats::default() };
@@ -260,10 +320,18 @@ pub fn render(list: &Trilist, f: &Formats, opts: &Options, progress: &mut dyn Fn
     stats.clipped = pieces.clipped;
     let mut work = Vec::with_capacity(pieces.triangles.len());
     let mut ranges = Ranges::default();
+    let (mut fetches, mut alpha) = (Vec::new(), Vec::new());
     for (k, tri) in pieces.triangles.iter().enumerate() {
         let i = pieces.source[k];
-        let (res, over, seen) = triangle_ranged(tri, clip, f, opts);
+        let (mut res, over, seen) = triangle_ranged(tri, clip, f, opts);
         ranges.merge(&seen);
+        alpha.clear();
+        if let (Some(tx), Ok(t)) = (texturing, &mut res) {
+            let v = to_fixed(tri, f).expect("triangle_ranged converted it");
+            if let Err(e) = tx.apply(tri, &v, f, &mut t.pixels, &mut alpha, &mut fetches) {
+                res = Err(Dropped::Input(e));
+            }
+        }
         match res {
             Ok(t) => {
                 stats.drawn += 1;
@@ -272,9 +340,10 @@ pub fn render(list: &Trilist, f: &Formats, opts: &Options, progress: &mut dyn Fn
                 stats.fragments += t.pixels.len() as u64;
                 stats.z_clipped += t.z_clipped as u64;
                 stats.crosses |= t.crosses;
-                for p in &t.pixels {
+                for (n, p) in t.pixels.iter().enumerate() {
                     stats.overdraw += fb.written[(p.y * fb.width + p.x) as usize] as u64;
-                    stats.pixels_written += fb.pixel_out(p, i as u32) as u64;
+                    let a = alpha.get(n).copied().unwrap_or(255);
+                    stats.pixels_written += fb.pixel_out_blended(p, a, tri[0].blend, i as u32) as u64;
                 }
                 work.push(t.work);
             }
@@ -298,5 +367,5 @@ pub fn render(list: &Trilist, f: &Formats, opts: &Options, progress: &mut dyn Fn
         }
     }
     progress(list.triangles.len());
-    Render { fb, stats, problems, work, ranges }
+    Render { fb, stats, problems, work, ranges, fetches }
 }

@@ -12,7 +12,9 @@
 //! One word is one texel in its [`TexelFormat`]'s encoding (`TexelFormat::encode`), in the
 //! low bits.
 
-use texture::{MipChain, TexelFormat};
+use crate::texture_unit::TexState;
+use scene::Trilist;
+use texture::{LodRule, MipChain, TexelFormat};
 
 /// Bits of a texture memory word address: 64 Mi words, room for the chain of a 4096 x 4096
 /// texture (22.4 Mi words) and more.
@@ -57,6 +59,41 @@ pub fn layout(chain: &MipChain, format: TexelFormat) -> Vec<u32> {
         }
     }
     words
+}
+
+/// Every texture of a trilist in one texture memory, one after the other from word 0, and
+/// the state each is drawn with (index: `scene::Tex::texture`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TextureMemory {
+    pub words: Vec<u32>,
+    pub states: Vec<TexState>,
+}
+
+impl TextureMemory {
+    /// `list`'s textures laid out, drawn at level-of-detail rule `lod`; an error names the
+    /// texture and the unit's rule it breaks (`TexState::check`).
+    pub fn load(list: &Trilist, lod: LodRule) -> Result<TextureMemory, String> {
+        let mut m = TextureMemory { words: Vec::new(), states: Vec::new() };
+        for (k, t) in list.textures.iter().enumerate() {
+            let base = t.mips.base();
+            let state = TexState {
+                size_log2: [base.width().trailing_zeros(), base.height().trailing_zeros()],
+                levels: t.mips.levels().len() as u32,
+                base: m.words.len() as u32,
+                format: t.format,
+                sampler: t.sampler,
+                env: t.env,
+                lod,
+            };
+            state.check().map_err(|e| format!("texture {k} ({}): {e}", t.images[0].display()))?;
+            m.words.extend(layout(&t.mips, t.format));
+            m.states.push(state);
+        }
+        if m.words.len() as u64 > 1 << ADDR_BITS {
+            return Err(format!("the textures take {} words: texture memory holds 2^{ADDR_BITS}", m.words.len()));
+        }
+        Ok(m)
+    }
 }
 
 #[cfg(test)]

@@ -18,6 +18,7 @@
 //! Every precision is a field of [`TexFormats`].
 
 pub mod input;
+pub mod pipeline;
 
 use crate::texture_address::{levels, request, Levels};
 use crate::texture_coords::{coords, log2_table, Coords};

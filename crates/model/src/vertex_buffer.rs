@@ -39,7 +39,7 @@ pub const VERSION: u16 = 1;
 pub const HEADER_BYTES: usize = 96;
 /// The length of an index record and of a vertex record, and the arrays' alignment.
 pub const RECORD_BYTES: usize = 32;
-/// TI's texture index of an untextured triangle (edgepaint has no texture unit yet).
+/// TI's texture index of an untextured triangle (the command parser carries no texture yet).
 pub const NO_TEXTURE: u16 = 0xffff;
 /// TI: the last triangle of the buffer.
 pub const END_OF_BUFFER: u32 = 1 << 16;

@@ -91,3 +91,38 @@ fn guard_band_leaves_a_triangle_inside_untouched() {
     let cut = pieces(&l, &Formats::for_resolution(640, 480), true);
     assert_eq!((cut.triangles, cut.source, cut.clipped), (vec![t], vec![0], 0));
 }
+
+/// A textured triangle beyond the guard band: its pieces keep its texture and blend mode,
+/// and every new vertex's s and t are the perspective-correct values at its place (s/w and
+/// 1/w linear on screen).
+#[test]
+fn guard_band_pieces_carry_texture_coordinates_perspective_correct() {
+    // On screen: 1/w = 0.0001 x + 0.0002 y + 1, s/w = 0.003 x - 0.001 y + 0.5,
+    // t/w = 0.002 y + 0.25 (every w > 0: the 2-D clip of step 2).
+    let inv_w = |x: f64, y: f64| 0.0001 * x + 0.0002 * y + 1.0;
+    let (s_w, t_w) = (|x: f64, y: f64| 0.003 * x - 0.001 * y + 0.5, |_x: f64, y: f64| 0.002 * y + 0.25);
+    let p = [(-3000.0, 50.0), (600.0, 20.0), (300.0, 400.0)];
+    let t: Triangle = std::array::from_fn(|k| {
+        let (x, y) = p[k];
+        let w = 1.0 / inv_w(x, y);
+        Vertex {
+            w: Some(w),
+            tex: Some(scene::Tex { s: s_w(x, y) * w, t: t_w(x, y) * w, texture: 0 }),
+            blend: texture::BlendMode::Alpha,
+            ..Vertex::new(x, y, 0.5, [9.0; 3])
+        }
+    });
+    let f = Formats::for_resolution(640, 480);
+    let cut = pieces(&list(640, 480, t), &f, false);
+    assert_eq!(cut.clipped, 1);
+    assert!(cut.triangles.len() >= 2);
+    for v in cut.triangles.iter().flatten() {
+        let tex = v.tex.expect("a piece keeps its texture");
+        assert_eq!((tex.texture, v.blend), (0, texture::BlendMode::Alpha));
+        let w = 1.0 / inv_w(v.x, v.y);
+        assert!((v.w.unwrap() - w).abs() < 1e-12 * w, "w {} at ({}, {}), want {w}", v.w.unwrap(), v.x, v.y);
+        for (got, want) in [(tex.s, s_w(v.x, v.y) * w), (tex.t, t_w(v.x, v.y) * w)] {
+            assert!((got - want).abs() < 1e-12 * (1.0 + want.abs()), "({}, {}): {got} against {want}", v.x, v.y);
+        }
+    }
+}

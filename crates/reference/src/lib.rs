@@ -8,6 +8,9 @@
 //!   level selection, wrap per texel, nearest and bilinear filters; the `texture` crate)
 //!   at the texture coordinates interpolated as the colour is, their derivatives exact,
 //!   through the texture environment with the lit colour as the fragment's;
+//! * framebuffer blending in draw order, per triangle ([`Frame::write_blended`]: paper
+//!   001's six blend modes as OpenGL 4.6 section 17.3.6 blends, the `texture` crate's
+//!   [`texture::blend()`]);
 //! * no culling by default, back faces on request;
 //! * clipped to the screen, and per pixel to z in [0, 1]; triangles with a
 //!   vertex behind the eye are clipped in homogeneous space first ([`clip`]).
@@ -20,6 +23,7 @@ pub mod raster;
 
 pub use raster::{Fragment, RasterVertex};
 use scene::{TextureRef, Triangle, Trilist};
+use texture::BlendMode;
 
 /// How colours are interpolated across a triangle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -114,10 +118,32 @@ impl Frame {
 
     /// Depth test LESS, then write a sample of triangle `tri`. Returns whether it was written.
     pub fn write(&mut self, f: &Fragment, tri: u32) -> bool {
+        self.write_blended(f, 1.0, BlendMode::Opaque, tri)
+    }
+
+    /// Depth test LESS, then blend sample `f` of triangle `tri`, its colour `f.rgb` with
+    /// alpha `alpha` in [0, 1], onto the pixel's colour by `mode` (OpenGL 4.6 section
+    /// 17.3.6, blend equation FUNC_ADD, [`texture::blend()`]); returns whether it passed.
+    /// The frame holds no alpha: the destination's alpha is 1, as GL reads it from a colour
+    /// buffer without alpha, and the blended alpha is dropped. [`BlendMode::Opaque`] is
+    /// blending disabled: the fragment's colour is stored as it is.
+    ///
+    /// Depth is written as without blending: blending happens after the depth test and
+    /// does not change it or the depth write (section 17.3.4; the depth mask is on), so a
+    /// blended fragment that passes stores its z, and later fragments behind it fail
+    /// even where it was transparent (alpha 0).
+    pub fn write_blended(&mut self, f: &Fragment, alpha: f64, mode: BlendMode, tri: u32) -> bool {
         let i = f.y as usize * self.width as usize + f.x as usize;
         if f.z < self.depth[i] {
             self.depth[i] = f.z;
-            self.color[i] = f.rgb;
+            self.color[i] = match mode {
+                BlendMode::Opaque => f.rgb,
+                _ => {
+                    let (src, dst) = (f.rgb.map(|c| c / 255.0), self.color[i].map(|c| c / 255.0));
+                    let c = texture::blend(mode, [src[0], src[1], src[2], alpha], [dst[0], dst[1], dst[2], 1.0]);
+                    [c[0] * 255.0, c[1] * 255.0, c[2] * 255.0]
+                }
+            };
             self.written[i] = true;
             self.writer[i] = tri;
             true
@@ -189,21 +215,27 @@ pub fn fragments(tri: &Triangle, width: u32, height: u32, opts: &Options, mut em
 }
 
 /// Renders a whole triangle list. `progress` is called with the number of
-/// triangles done so far, every few hundred triangles and at the end.
+/// triangles done so far, every few hundred triangles and at the end. Each fragment that
+/// passes the depth test is blended onto the frame by its triangle's blend mode
+/// ([`Frame::write_blended`]), with the texture environment's alpha where the triangle is
+/// textured ([`textured`]) and alpha 1 where it is not.
 pub fn render(list: &Trilist, opts: &Options, progress: &mut dyn FnMut(usize)) -> (Frame, Stats) {
     let mut frame = Frame::new(list.width, list.height, opts.background);
     let mut stats = Stats { triangles_in: list.triangles.len() as u64, ..Stats::default() };
     for (i, tri) in list.triangles.iter().enumerate() {
         let tex = tri[0].tex.and_then(|x| list.textures.get(x.texture as usize));
         let outcome = fragments(tri, list.width, list.height, opts, |f| {
-            let f = match tex {
-                Some(t) => Fragment { rgb: textured(&f, t), ..f },
-                None => f,
+            let (f, alpha) = match tex {
+                Some(t) => {
+                    let c = textured(&f, t);
+                    (Fragment { rgb: [c[0] * 255.0, c[1] * 255.0, c[2] * 255.0], ..f }, c[3])
+                }
+                None => (f, 1.0),
             };
             stats.fragments += 1;
             if !(0.0..=1.0).contains(&f.z) {
                 stats.z_clipped += 1;
-            } else if frame.write(&f, i as u32) {
+            } else if frame.write_blended(&f, alpha, tri[0].blend, i as u32) {
                 stats.pixels_written += 1;
             }
         });
@@ -220,18 +252,17 @@ pub fn render(list: &Trilist, opts: &Options, progress: &mut dyn FnMut(usize)) -
     (frame, stats)
 }
 
-/// The colour of fragment `f` of a triangle textured by `t`: what `t`'s sampler gives at
-/// the fragment's texture coordinates and level of detail (lambda = log2 rho, rho exact
-/// from the coordinates' derivatives in texels of level 0: OpenGL 4.6 section 8.14.1),
-/// through `t`'s texture environment with the lit colour as the fragment's (alpha 1, the
-/// environment colour GL's default, transparent black).
-pub fn textured(f: &Fragment, t: &TextureRef) -> [f64; 3] {
+/// The colour and alpha, in [0, 1], of fragment `f` of a triangle textured by `t`: what
+/// `t`'s sampler gives at the fragment's texture coordinates and level of detail
+/// (lambda = log2 rho, rho exact from the coordinates' derivatives in texels of level 0:
+/// OpenGL 4.6 section 8.14.1), through `t`'s texture environment with the lit colour as the
+/// fragment's (alpha 1, the environment colour GL's default, transparent black).
+pub fn textured(f: &Fragment, t: &TextureRef) -> texture::Rgba {
     let base = t.mips.base();
     let (w, h) = (base.width() as f64, base.height() as f64);
     let [[sx, tx], [sy, ty]] = f.dst;
     let lambda = texture::lambda(texture::rho_exact(sx * w, tx * h, sy * w, ty * h));
     let cs = texture::sample(&t.mips, &t.sampler, f.st[0], f.st[1], lambda);
     let cf = [f.rgb[0] / 255.0, f.rgb[1] / 255.0, f.rgb[2] / 255.0, 1.0];
-    let c = texture::environment(t.env, cf, cs, [0.0; 4]);
-    [c[0] * 255.0, c[1] * 255.0, c[2] * 255.0]
+    texture::environment(t.env, cf, cs, [0.0; 4])
 }

@@ -5,6 +5,7 @@
 //! tests are `testbenches/tests/<name>.rs`. [`DEFAULT_DESIGN`] is what `edgepaint` with no
 //! arguments writes into `hdl-out/`.
 
+pub mod blend;
 pub mod config;
 pub mod emit;
 pub mod ept;
@@ -18,6 +19,8 @@ pub mod texture_address;
 pub mod texture_cache;
 pub mod texture_coords;
 pub mod texture_filter;
+pub mod texture_setup;
+pub mod texture_unit;
 
 /// The scanline pipeline's units, as modules of a build module (`n10.rs`, ..., `custom.rs`):
 /// rust-hdl's widths are compile-time constants, so each build (`config`: a size class `n`,
@@ -484,6 +487,29 @@ pub const UNITS: &[Unit] = &[
         params: &[],
         build: no_formats!(texture_filter::emit_texture_filter),
     },
+    Unit {
+        name: "texture_setup",
+        doc: "paper 001 §II.5's texture planes: per triangle the gradients of s·q, t·q, q (one shared multiplier, 30 cycles) and the LOD gradients; per pixel s·q, t·q, q, a pixel a clock",
+        params: &[],
+        build: no_formats!(texture_setup::emit_texture_setup),
+    },
+    Unit {
+        name: "blend",
+        doc: "framebuffer blending, paper 001 §II.5's six blend modes as GL 4.6 §17.3.6 blend functions: src RGBA8 onto dst RGBA8, products rounded exactly (x y / 255), saturating adds; combinational",
+        params: &[],
+        build: no_formats!(blend::emit_blend),
+    },
+    Unit {
+        name: "texture_unit",
+        doc: "paper 001 §II.5's texture unit, one pipeline: texture_coords, texture_address, texture_cache, texture_filter; a pixel a clock while the cache hits, stalls on a miss",
+        params: &[
+            Param { name: "SETS", default: 64, doc: "the cache's sets per bank (built: rtl::texture_unit::GEOMETRIES)" },
+            Param { name: "WAYS", default: 2, doc: "the cache's lines per set" },
+            Param { name: "LINE", default: 4, doc: "the cache's 32-bit words per line" },
+            Param { name: "EXACT", default: 0, doc: "0: 001's eq. (4), max of the four derivatives; 1: GL's exact rho" },
+        ],
+        build: no_formats!(texture_unit::emit_texture_unit),
+    },
 ];
 
 /// The default design: units and parameters that `edgepaint` with no arguments emits.
@@ -504,6 +530,9 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("texture_address", &[]),
     ("texture_cache", &[("SETS", 64), ("WAYS", 2), ("LINE", 4)]),
     ("texture_filter", &[]),
+    ("texture_setup", &[]),
+    ("blend", &[]),
+    ("texture_unit", &[("SETS", 64), ("WAYS", 2), ("LINE", 4), ("EXACT", 0)]),
     (
         "raster_top",
         &[

@@ -48,6 +48,7 @@
 //! | &nbsp;&nbsp; `.sampler` | object | bilinear, nearest mip level, repeat | `texture::Sampler`: `min`, `mag` (`nearest`, `linear`), `mip` (`none`, `nearest`, `linear`), `wrap_s`, `wrap_t` (`repeat`, `mirrored_repeat`, `clamp_to_edge`) |
 //! | &nbsp;&nbsp; `.env` | name | `modulate` | the texture environment: `replace`, `modulate`, `decal`, `blend`, `add` (OpenGL's) |
 //! | &nbsp;&nbsp; `.format` | name | `rgba8888` | the texel format the image and its mip levels are stored in (001's five colour modes): `rgb565`, `rgba5551`, `rgba4444`, `rgb888`, `rgba8888` |
+//! | &nbsp; `.blend` | name | `opaque` | framebuffer blending of the object's fragments onto the colour already drawn, in draw order (paper 001's six blend modes, OpenGL 4.6 section 17.3.6; the source alpha is the texture environment's, 1 untextured): `opaque` (no blending: replace), `alpha`, `additive`, `multiply`, `premultiplied_alpha`, `alpha_additive` (`texture::BlendMode`) |
 //! | `cull` | `"none"` or `"back"` | `"none"` | whether the renderer drops back faces ([`Scene::cull_back`]) |
 //!
 //! An object's vertices go to world space by `translate * Rz * Ry * Rx * scale`
@@ -64,6 +65,7 @@ use crate::mesh::Mesh;
 use crate::trilist::{check_resolution, TextureRef, TextureSpec, Trilist};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
+use texture::BlendMode;
 
 /// A scene: resolution, background, camera, lights and objects, checked.
 #[derive(Clone, Debug, PartialEq)]
@@ -136,6 +138,8 @@ pub struct Object {
     pub color: [f64; 3],
     /// The textures its triangles name (`MeshVertex::texture` indexes them), loaded.
     pub textures: Vec<TextureRef>,
+    /// How its fragments blend onto the framebuffer (`blend`; opaque by default).
+    pub blend: BlendMode,
 }
 
 /// Object to world: scale, then rotate about x, y, z (in that order), then translate.
@@ -229,6 +233,8 @@ struct ObjectFile {
     #[serde(default = "white")]
     color: [f64; 3],
     texture: Option<TextureSpec>,
+    #[serde(default)]
+    blend: BlendMode,
 }
 
 impl ObjectFile {
@@ -294,7 +300,7 @@ impl ObjectFile {
             .iter()
             .map(|files| TextureRef::load(files, &spec).map_err(|e| Error::invalid(format!("{at}.texture: {e}"))))
             .collect::<Result<Vec<_>>>()?;
-        Ok(Object { source, mesh, transform: self.transform, color: self.color, textures })
+        Ok(Object { source, mesh, transform: self.transform, color: self.color, textures, blend: self.blend })
     }
 }
 
@@ -394,10 +400,12 @@ impl Scene {
                     Error::invalid(format!("objects[{i}].texture: more than {} textures in the scene", u16::MAX))
                 })?);
             }
+            let first = list.triangles.len();
             for tri in &o.mesh.triangles {
                 let texture = tri[0].texture.and_then(|k| index.get(k as usize).copied());
                 emit_clipped(xf.vertices(tri, o.color, &self.lights), &projection, texture, &mut list.triangles);
             }
+            list.triangles[first..].iter_mut().flatten().for_each(|v| v.blend = o.blend);
         }
         Ok(list)
     }
@@ -444,6 +452,8 @@ mod tests {
         assert_eq!(s.objects[0].transform, Transform::default());
         assert_eq!(s.objects[0].color, [255.0; 3]);
         assert_eq!(s.objects[0].source, ModelSource::Builtin("cube".into()));
+        assert_eq!(s.objects[0].blend, BlendMode::Opaque);
+        assert!(!s.to_trilist().unwrap().is_blended());
         let mut v = valid();
         v["cull"] = json!("back");
         v["objects"][0]["transform"] = json!({"scale": [1, 2, 3]});
@@ -455,6 +465,42 @@ mod tests {
         let s = Scene::from_value(&v, Path::new(".")).unwrap();
         assert_eq!(s.objects[0].mesh.triangles.len(), 12 * 3 * 3);
         assert_eq!(s.objects[0].source, ModelSource::Builtin("cube".into()));
+    }
+
+    #[test]
+    fn scene_blend_goes_to_every_triangle_of_its_object_and_to_the_trilist() {
+        let mut v = valid();
+        v["objects"] = json!([
+            {"model": "cube"},
+            {"model": "cube", "blend": "alpha", "transform": {"scale": 0.5}},
+            {"model": "cube", "blend": "multiply", "transform": {"translate": [0, 0, 1]}}
+        ]);
+        let s = Scene::from_value(&v, Path::new(".")).unwrap();
+        let modes: Vec<BlendMode> = s.objects.iter().map(|o| o.blend).collect();
+        assert_eq!(modes, [BlendMode::Opaque, BlendMode::Alpha, BlendMode::Multiply]);
+        let list = s.to_trilist().unwrap();
+        assert!(list.is_blended());
+        // The cube is 12 triangles, none of them clipped here: 12 of each mode, in draw order.
+        assert_eq!(list.triangles.len(), 36);
+        for (k, want) in modes.iter().enumerate() {
+            for t in &list.triangles[12 * k..12 * (k + 1)] {
+                assert_eq!(t.map(|v| v.blend), [*want; 3]);
+            }
+        }
+        // The screen-space file keeps it.
+        assert_eq!(Trilist::from_json(&list.to_json()).unwrap(), list);
+    }
+
+    #[test]
+    fn scene_bad_blend_names_the_scene_file_and_the_key() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("s.json");
+        let mut v = valid();
+        v["objects"][0]["blend"] = json!("Alpha");
+        std::fs::write(&path, v.to_string()).unwrap();
+        let err = Scene::load(&path).unwrap_err().to_string();
+        let want = format!("{}: objects[0].blend: unknown variant `Alpha`", path.display());
+        assert!(err.starts_with(&want), "got {err:?}, want {want:?}");
     }
 
     #[test]
@@ -525,6 +571,13 @@ mod tests {
             ("/objects/0", json!({"color": [1, 2, 3]}), "objects[0]: has neither \"model\" nor \"obj\""),
             ("/objects/0/colour", json!([1, 2, 3]), "objects[0].colour: unknown field `colour`"),
             ("/cull", json!("front"), "cull: unknown variant `front`, expected `none` or `back`"),
+            (
+                "/objects/0/blend",
+                json!("screen"),
+                "objects[0].blend: unknown variant `screen`, expected one of `opaque`, `alpha`, `additive`, \
+                 `multiply`, `premultiplied_alpha`, `alpha_additive`",
+            ),
+            ("/objects/0/blend", json!(1), "objects[0].blend: invalid type: integer `1`"),
             ("/fog", json!(true), "fog: unknown field `fog`"),
         ];
         for (pointer, value, want) in cases {

@@ -26,8 +26,8 @@ pub fn all() -> std::io::Result<Vec<PathBuf>> {
 }
 
 /// The shipped textured scenes, `scenes/textured/*.json` (with their OBJ, MTL and PNG
-/// files, from `scripts/gen-textures.py`): the float reference draws them; the
-/// fixed-point models and the RTL have no texture unit yet.
+/// files, from `scripts/gen-textures.py`): the float reference and the scanline and vector
+/// models draw them; the RTL pipelines have no texture path yet.
 pub fn textured() -> std::io::Result<Vec<PathBuf>> {
     scenes_in(dir().join("textured"))
 }

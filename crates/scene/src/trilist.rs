@@ -34,6 +34,14 @@
 //!   index of its texture in `textures`; the three vertices of a triangle name the same
 //!   texture, or none has one.
 //!
+//! * `blend`: framebuffer blending as state entries, each `{"first": n, "mode": m}`: the
+//!   triangles from index `n` up to the next entry's `first` are blended onto the
+//!   framebuffer by mode `m` (`texture::BlendMode`: `opaque`, `alpha`, `additive`,
+//!   `multiply`, `premultiplied_alpha`, `alpha_additive`; paper 001's six blend modes,
+//!   OpenGL 4.6 section 17.3.6). Entries run in increasing `first`, each below the number
+//!   of triangles; the triangles before the first entry, and all of a file without
+//!   `blend`, are opaque (no blending). Written as one entry where the mode changes.
+//!
 //! Reading validates everything and reports the file, the triangle, the vertex
 //! and the value at fault; nothing here panics on bad input.
 
@@ -43,6 +51,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use crate::error::{Error, Result};
+use texture::BlendMode;
 
 /// Largest width or height edgepaint accepts. The fixed-point formats derive
 /// their integer bits from the resolution; 4096 keeps every default format
@@ -62,6 +71,9 @@ pub struct Vertex {
     pub w: Option<f64>,
     /// Texture coordinates and the texture they address (version 2), if textured.
     pub tex: Option<Tex>,
+    /// How its triangle's fragments blend onto the framebuffer (version 2's `blend`);
+    /// the three vertices of a triangle agree. [`BlendMode::Opaque`]: no blending.
+    pub blend: BlendMode,
 }
 
 /// A vertex's texture coordinates (OpenGL's s and t: (0, 0) the image's bottom-left
@@ -149,7 +161,7 @@ impl TextureSpec {
 impl Vertex {
     /// A vertex without w (screen-linear interpolation).
     pub const fn new(x: f64, y: f64, z: f64, rgb: [f64; 3]) -> Self {
-        Vertex { x, y, z, r: rgb[0], g: rgb[1], b: rgb[2], w: None, tex: None }
+        Vertex { x, y, z, r: rgb[0], g: rgb[1], b: rgb[2], w: None, tex: None, blend: BlendMode::Opaque }
     }
 
     /// The colour as an array.
@@ -191,6 +203,12 @@ impl Trilist {
         self.triangles.iter().any(|t| t[0].tex.is_some())
     }
 
+    /// Whether any triangle blends onto the framebuffer (a mode other than
+    /// [`BlendMode::Opaque`]).
+    pub fn is_blended(&self) -> bool {
+        self.triangles.iter().any(|t| t[0].blend != BlendMode::Opaque)
+    }
+
     /// The same triangles in their lit colours alone: no texture coordinates, no textures.
     pub fn without_textures(&self) -> Trilist {
         let triangles = self.triangles.iter().map(|t| t.map(|v| Vertex { tex: None, ..v })).collect();
@@ -226,10 +244,10 @@ impl Trilist {
         };
         for key in obj.keys() {
             let known = matches!(key.as_str(), "width" | "height" | "triangles")
-                || (version == 2 && matches!(key.as_str(), "version" | "textures"));
+                || (version == 2 && matches!(key.as_str(), "version" | "textures" | "blend"));
             if !known {
                 return Err(Error::invalid(format!(
-                    "unknown key \"{key}\" (trilist v1 has width, height, triangles; v2 adds version and textures)"
+                    "unknown key \"{key}\" (trilist v1 has width, height, triangles; v2 adds version, textures and blend)"
                 )));
             }
         }
@@ -272,12 +290,16 @@ impl Trilist {
             }
             triangles.push(out);
         }
+        if let Some(b) = obj.get("blend") {
+            apply_blend(b, &mut triangles)?;
+        }
         Ok(Trilist { width, height, triangles, textures })
     }
 
-    /// Writes trilist JSON: version 1 without textures, else version 2 (image paths as
-    /// held). A vertex carries the 7th value exactly when it has w or a texture (w = 1
-    /// written for a textured vertex without w), and values 8 to 10 when textured.
+    /// Writes trilist JSON: version 1 without textures and blending, else version 2 (image
+    /// paths as held; `blend` an entry wherever the mode changes). A vertex carries the 7th
+    /// value exactly when it has w or a texture (w = 1 written for a textured vertex without
+    /// w), and values 8 to 10 when textured.
     pub fn to_json(&self) -> String {
         #[derive(Serialize)]
         struct OutTexture<'a> {
@@ -297,6 +319,8 @@ impl Trilist {
             height: u32,
             #[serde(skip_serializing_if = "Vec::is_empty")]
             textures: Vec<OutTexture<'a>>,
+            #[serde(skip_serializing_if = "Vec::is_empty")]
+            blend: Vec<BlendEntry>,
             triangles: Vec<[Vec<f64>; 3]>,
         }
         let triangles = self
@@ -324,8 +348,16 @@ impl Trilist {
                 OutTexture { image, levels, sampler: t.sampler, env: t.env, format: t.format }
             })
             .collect();
-        let version = (!textures.is_empty()).then_some(2);
-        serde_json::to_string(&Out { version, width: self.width, height: self.height, textures, triangles })
+        let mut blend = Vec::new();
+        let mut mode = BlendMode::Opaque;
+        for (first, t) in self.triangles.iter().enumerate() {
+            if t[0].blend != mode {
+                mode = t[0].blend;
+                blend.push(BlendEntry { first, mode });
+            }
+        }
+        let version = (!textures.is_empty() || !blend.is_empty()).then_some(2);
+        serde_json::to_string(&Out { version, width: self.width, height: self.height, textures, blend, triangles })
             .expect("finite floats always serialise")
     }
 
@@ -364,6 +396,52 @@ fn parse_textures(raw: &serde_json::Value, base_dir: &Path) -> Result<Vec<Textur
         .collect()
 }
 
+/// A state entry of a version 2 file's `blend`: triangles from `first` on blend by `mode`.
+#[derive(Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+struct BlendEntry {
+    first: usize,
+    mode: BlendMode,
+}
+
+/// Sets each triangle's blend mode from a version 2 file's `blend` entries; the error
+/// names the entry and its key.
+fn apply_blend(raw: &serde_json::Value, triangles: &mut [Triangle]) -> Result<()> {
+    let list = raw.as_array().ok_or_else(|| {
+        Error::invalid("\"blend\" must be an array of state entries {\"first\": triangle, \"mode\": name}")
+    })?;
+    let mut entries = Vec::with_capacity(list.len());
+    for (i, e) in list.iter().enumerate() {
+        let entry: BlendEntry = serde_path_to_error::deserialize(e).map_err(|err| {
+            let at = err.path().to_string();
+            let inner = err.into_inner();
+            Error::invalid(if at == "." { format!("blend[{i}]: {inner}") } else { format!("blend[{i}].{at}: {inner}") })
+        })?;
+        if entry.first >= triangles.len() {
+            return Err(Error::invalid(format!(
+                "blend[{i}].first = {} is not a triangle of the file's {}",
+                entry.first,
+                triangles.len()
+            )));
+        }
+        if let Some(prev) = entries.last().map(|p: &BlendEntry| p.first).filter(|&p| p >= entry.first) {
+            return Err(Error::invalid(format!(
+                "blend[{i}].first = {} does not follow blend[{}].first = {prev}: entries run in increasing order",
+                entry.first,
+                i - 1
+            )));
+        }
+        entries.push(entry);
+    }
+    for (k, entry) in entries.iter().enumerate() {
+        let end = entries.get(k + 1).map_or(triangles.len(), |n| n.first);
+        for t in &mut triangles[entry.first..end] {
+            t.iter_mut().for_each(|v| v.blend = entry.mode);
+        }
+    }
+    Ok(())
+}
+
 /// One vertex of a version `version` file with `textures` textures.
 fn parse_vertex(v: &serde_json::Value, version: u32, textures: usize) -> std::result::Result<Vertex, String> {
     let want = if version == 2 {
@@ -399,7 +477,8 @@ fn parse_vertex(v: &serde_json::Value, version: u32, textures: usize) -> std::re
     } else {
         None
     };
-    Ok(Vertex { x: f[0], y: f[1], z: f[2], r: f[3], g: f[4], b: f[5], w: (a.len() >= 7).then_some(f[6]), tex })
+    let w = (a.len() >= 7).then_some(f[6]);
+    Ok(Vertex { x: f[0], y: f[1], z: f[2], r: f[3], g: f[4], b: f[5], w, tex, blend: BlendMode::Opaque })
 }
 
 impl fmt::Display for Vertex {
@@ -410,6 +489,9 @@ impl fmt::Display for Vertex {
         }
         if let Some(x) = self.tex {
             write!(f, ", s {} t {} texture {}", x.s, x.t, x.texture)?;
+        }
+        if self.blend != BlendMode::Opaque {
+            write!(f, ", blend {:?}", self.blend)?;
         }
         write!(f, ")")
     }
@@ -429,6 +511,72 @@ mod tests {
         ]);
         let back = Trilist::from_json(&t.to_json()).unwrap();
         assert_eq!(back, t);
+    }
+
+    /// Three untextured triangles: the first opaque, the other two blended `alpha` then
+    /// `additive`.
+    fn blended() -> Trilist {
+        let mut t = Trilist::new(8, 8).unwrap();
+        for (k, mode) in [BlendMode::Opaque, BlendMode::Alpha, BlendMode::Additive].into_iter().enumerate() {
+            let v = |x: f64, y: f64| Vertex { blend: mode, ..Vertex::new(x, y, 0.1 * k as f64, [10.0, 20.0, 30.0]) };
+            t.triangles.push([v(0.0, 0.0), v(8.0, 0.0), v(0.0, 8.0)]);
+        }
+        t
+    }
+
+    #[test]
+    fn trilist_blend_state_round_trips_as_state_entries() {
+        let t = blended();
+        assert!(t.is_blended());
+        let json = t.to_json();
+        let raw: serde_json::Value = serde_json::from_str(&json).unwrap();
+        assert_eq!(raw["version"], 2);
+        assert_eq!(raw["blend"], serde_json::json!([{"first": 1, "mode": "alpha"}, {"first": 2, "mode": "additive"}]));
+        assert_eq!(Trilist::from_json(&json).unwrap(), t);
+        // Without blending the list stays version 1, and a version 1 file reads unblended.
+        let plain = Trilist { triangles: t.triangles[..1].to_vec(), ..t.clone() };
+        assert!(!plain.is_blended());
+        assert!(!plain.to_json().contains("version"));
+        let v1 = r#"{"width":4,"height":4,"triangles":[[[0,0,0,9,9,9],[4,0,0,9,9,9],[0,4,0,9,9,9]]]}"#;
+        let read = Trilist::from_json(v1).unwrap();
+        assert!(!read.is_blended());
+        assert_eq!(read.triangles[0].map(|v| v.blend), [BlendMode::Opaque; 3]);
+        // An entry covers the triangles up to the next one; those before the first are opaque.
+        let v2 = r#"{"version":2,"width":4,"height":4,"blend":[{"first":1,"mode":"premultiplied_alpha"}],
+            "triangles":[[[0,0,0,9,9,9],[4,0,0,9,9,9],[0,4,0,9,9,9]],[[0,0,0,9,9,9],[4,0,0,9,9,9],[0,4,0,9,9,9]],
+                         [[0,0,0,9,9,9],[4,0,0,9,9,9],[0,4,0,9,9,9]]]}"#;
+        let modes: Vec<BlendMode> = Trilist::from_json(v2).unwrap().triangles.iter().map(|t| t[2].blend).collect();
+        assert_eq!(modes, [BlendMode::Opaque, BlendMode::PremultipliedAlpha, BlendMode::PremultipliedAlpha]);
+    }
+
+    #[test]
+    fn trilist_bad_blend_state_names_the_file_and_the_key() {
+        let tri = "[[0,0,0,9,9,9],[4,0,0,9,9,9],[0,4,0,9,9,9]]";
+        let file = |blend: &str, version: &str| {
+            format!(r#"{{{version}"width":4,"height":4,"blend":{blend},"triangles":[{tri},{tri}]}}"#)
+        };
+        let v2 = r#""version":2,"#;
+        let cases = [
+            (file(r#"[{"first":0,"mode":"screen"}]"#, v2), "blend[0].mode: unknown variant `screen`, expected one of"),
+            (file(r#"[{"first":0,"mode":"alpha"},{"first":-1,"mode":"alpha"}]"#, v2), "blend[1].first: invalid value"),
+            (file(r#"[{"first":2,"mode":"alpha"}]"#, v2), "blend[0].first = 2 is not a triangle of the file's 2"),
+            (
+                file(r#"[{"first":1,"mode":"alpha"},{"first":1,"mode":"multiply"}]"#, v2),
+                "blend[1].first = 1 does not follow blend[0].first = 1",
+            ),
+            (file(r#"[{"first":0}]"#, v2), "blend[0]: missing field `mode`"),
+            (file(r#"[{"first":0,"mode":"alpha","op":"add"}]"#, v2), "blend[0].op: unknown field `op`"),
+            (file(r#"{"first":0,"mode":"alpha"}"#, v2), "\"blend\" must be an array of state entries"),
+            (file(r#"[{"first":0,"mode":"alpha"}]"#, ""), "unknown key \"blend\""),
+        ];
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("t.json");
+        for (json, want) in cases {
+            std::fs::write(&path, &json).unwrap();
+            let err = Trilist::load(&path).unwrap_err().to_string();
+            let named = err.starts_with(&format!("{}: ", path.display()));
+            assert!(named && err.contains(want), "{json}: got {err:?}, want the file and {want:?}");
+        }
     }
 
     #[test]

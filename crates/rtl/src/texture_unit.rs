@@ -1,0 +1,595 @@
+//! `texture_unit`: paper 001's texture unit (Woo, Jang and Lee 2004, section II-5) as one
+//! pipeline, a textured pixel a clock while the texture cache hits: `texture_coords` (the
+//! perspective division of eq. 3 and the level of detail of eq. 4) -> `texture_address`
+//! (levels, footprint and wrap, OpenGL 4.6 sections 8.14.2, 8.14.3 and 8.15) ->
+//! `texture_cache` (four banks, one memory read port) -> `texture_filter` (decode, bilinear
+//! with 001's Fig. 6 weights, the blend between levels, the texture environment of OpenGL
+//! 2.1 section 3.13). Cycle for cycle `model::texture_unit::pipeline`; every colour is
+//! `model::texture_unit::TextureUnit::sample`'s.
+//!
+//! ```text
+//!  inp ──> texture_coords ──> texture_address ──> texture_cache ──> pick ──> texture_filter ──> out
+//!   │      19 stages, en_c    (combinational)      valid/ready      words    5 stages, en_f
+//!   │                          second ──┘           side: attrs      └─> pair (a pixel's 1st level)
+//!   └─ cf, tag ──> two 32-entry RAMs: cf read as the pixel enters the filter, tag at out
+//! ```
+//!
+//! # Stalls
+//!
+//! Two global enables and the cache's handshakes, no skid buffer:
+//!
+//! * `en_f = out_ready | !out_valid`: the filter (and the output, its last register) moves
+//!   on unless its pixel waits to be taken. The cache's `out_ready` is `en_f`: a cache
+//!   result goes into the filter, or into the pair register, only when the filter moves.
+//! * `en_c = !coords.out_valid | (the cache takes coords' pixel's last access)`: coords
+//!   moves on when its last stage is empty or its pixel's access is taken, so it stalls
+//!   exactly while the cache refuses (a miss being filled, a Clear, a full output) and its
+//!   bubbles are squeezed out. `inp_ready = en_c & !st_load` (so it depends on `out_ready`,
+//!   `inp_flush` and `st_load` in the same cycle, never on `inp_valid`, as the cache's).
+//! * A pixel between two levels (GL's `*_MIPMAP_LINEAR` with a nonzero fraction) makes two
+//!   accesses: the first level's in the cycle coords shows it (`second` low), the second's
+//!   in the next one the cache takes (`second` high); coords holds it until the second is
+//!   taken, so `inp_ready` is low for that one cycle. The first's words (picked into
+//!   footprint order) wait in the pair register; the filter takes the pixel once, with the
+//!   second's words.
+//!
+//! The cache's side payload carries each access's attributes (bit 0 second, 1 two levels,
+//! 7..2 the level fraction, 15..8 the footprint's banks, 23..16 alpha, 31..24 beta; 63..32
+//! zero). A pixel's lit colour `inp_cf` and tag `inp_tag` go into two RAMs of 32 words at
+//! its taking (`wp`): `cf` is read as the pixel enters the filter (`rc`), `tag` while it is
+//! at the output (`rt`); both RAMs read synchronously at the pointer's next value every
+//! cycle, and a word is written at least 21 cycles before it is read, so it is always
+//! read after its write. At most 19 + 2 + 1 + 5 = 27 pixels are in flight (coords' stages,
+//! the cache's S1 and output register, the pair register, the filter's stages), so 32
+//! words never overflow.
+//!
+//! # Cycles
+//!
+//! A pixel of one level taken in cycle t, every stage free and the cache hitting:
+//!
+//! ```text
+//!  cycle   what
+//!  t       inp_valid & inp_ready: into texture_coords (cf, tag into the RAMs)
+//!  t+19    coords.out_valid; address; the cache takes the access
+//!  t+20    cache S1: every lane hits
+//!  t+21    cache out_valid: the words picked into footprint order, into the filter (cf read)
+//!  t+26    out_valid, out_rgba, out_tag: [`LATENCY`] = 26
+//! ```
+//!
+//! Between two levels: the first access is taken in t+19 (`inp_ready` low in t+19), the
+//! second in t+20; the first's words go into the pair register in t+21, the second's with
+//! them into the filter in t+22; out in t+27. One such pixel costs one cycle more than a
+//! one-level pixel. A miss of m lanes holds the cache (`texture_cache`'s table: m·LINE +
+//! L + 2 cycles more than a hit at memory latency L), and with it coords and the input;
+//! `out_ready` low holds the filter and the cache's output register, and then the rest.
+//!
+//! # State
+//!
+//! The texture's state is registers (`st_*`), loaded by `st_load` (the cycle it is high,
+//! `inp_ready` is low), read by every stage as its pixel passes: load it only while `idle`
+//! (no pixel in flight), once a texture, not per pixel. The level-of-detail rule is the
+//! parameter `EXACT`, as `texture_coords` has it. The triangle's gradients come with each
+//! pixel (`inp_d*`): `texture_coords` carries them past its divider in its delay line
+//! anyway, so registers for them here would only add flip-flops; holding them per triangle
+//! (a triangle's gradients in one of two register sets, a set bit down the delay line
+//! instead of 176 bits) would save that delay line and is not done yet. `inp_flush` (a
+//! pulse) is the cache's: it invalidates every line once the access in the cache's S1 is
+//! done; accesses after it (the pixels then in coords, too) read memory afresh.
+//!
+//! Area (Yosys 0.23 `synth_ecp5`, the default design's parameters): 13,585 LUT4, 6,882 FF,
+//! 55 MULT18X18D, 10 DP16KD and 204 DPR16X4: the four units' sum (13,890 LUT4, 6,613 FF,
+//! 55, 10 and 144) and the state, pair and pointer registers and the cf and tag RAMs.
+//! Throughput on the shipped textured scenes (every textured fragment in raster order,
+//! memory latency 10, the default cache; `model::texture_unit::pipeline::cycles`): 0.87
+//! pixels a clock on `checker.json` (hit rate 0.997), 0.20 to 0.24 on `crate.json`,
+//! `env-modes.json` and `mip-levels.json` (0.94 to 0.75): the cache blocks on a miss, so
+//! each missing lane's line costs the whole pipeline LINE + L + 2 cycles.
+//!
+//! Model: `model::texture_unit::pipeline`.
+//! Tests: `testbenches/tests/texture_unit.rs`. Emitted: `edgepaint emit --unit
+//! texture_unit --param SETS=.. --param WAYS=.. --param LINE=.. --param EXACT=0|1`.
+
+use crate::emit::{emit_unit, Emitted};
+use crate::texture_address::TextureAddress;
+use crate::texture_cache::{TextureCache, ADDR};
+use crate::texture_coords::{TextureCoords, DQ, DST, QB, ST};
+use crate::texture_filter::TextureFilter;
+use crate::Params;
+use rust_hdl::prelude::*;
+use rust_hdl::widgets::prelude::RAM;
+
+/// Input to output of a one-level pixel when nothing stalls: coords, the cache's hit
+/// latency, the filter.
+pub const LATENCY: usize =
+    crate::texture_coords::LATENCY + model::texture_cache::HIT_LATENCY as usize + crate::texture_filter::LATENCY;
+/// log2 of the cf and tag RAMs' words: room for every pixel in flight (at most 27).
+const FB: usize = 5;
+
+/// One of the four cache words, by its bank code: the footprint texel's word.
+#[derive(LogicBlock, Default)]
+pub struct Pick {
+    pub data0: Signal<In, Bits<32>>,
+    pub data1: Signal<In, Bits<32>>,
+    pub data2: Signal<In, Bits<32>>,
+    pub data3: Signal<In, Bits<32>>,
+    pub bank: Signal<In, Bits<2>>,
+    pub word: Signal<Out, Bits<32>>,
+}
+
+impl Logic for Pick {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.word.next = self.data0.val();
+        if self.bank.val() == 1 {
+            self.word.next = self.data1.val();
+        }
+        if self.bank.val() == 2 {
+            self.word.next = self.data2.val();
+        }
+        if self.bank.val() == 3 {
+            self.word.next = self.data3.val();
+        }
+    }
+}
+
+/// The texture unit over a cache of `1 << SB` sets, `W` ways, `1 << (DA - SB)` words a line
+/// (`texture_cache`'s widths; name it by geometry with [`TextureUnitOf`]).
+#[derive(LogicBlock)]
+pub struct TextureUnit<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const TV: usize> {
+    pub clock: Signal<In, Clock>,
+    /// A pixel is offered: s·q, t·q (`st`), q (`q`), its triangle's gradients (`dst`, `dq`),
+    /// its lit colour (R 23..16, G 15..8, B 7..0) and a tag carried to `out_tag`.
+    pub inp_valid: Signal<In, Bit>,
+    /// The pixel is taken this cycle (with `inp_valid`).
+    pub inp_ready: Signal<Out, Bit>,
+    pub inp_sq: Signal<In, Bits<ST>>,
+    pub inp_tq: Signal<In, Bits<ST>>,
+    pub inp_q: Signal<In, Bits<QB>>,
+    pub inp_dsq_x: Signal<In, Bits<DST>>,
+    pub inp_dsq_y: Signal<In, Bits<DST>>,
+    pub inp_dtq_x: Signal<In, Bits<DST>>,
+    pub inp_dtq_y: Signal<In, Bits<DST>>,
+    pub inp_dq_x: Signal<In, Bits<DQ>>,
+    pub inp_dq_y: Signal<In, Bits<DQ>>,
+    pub inp_cf: Signal<In, Bits<24>>,
+    pub inp_tag: Signal<In, Bits<32>>,
+    /// High for a cycle: the state registers take `st_*` (only while `idle`).
+    pub st_load: Signal<In, Bit>,
+    /// The texture: log2 of its sides, its levels (1 to 13), its base word address,
+    /// `texture_address`'s codes (filters 1 linear; mip 0 none, 1 nearest, 2 linear; wrap
+    /// 0 repeat, 1 mirrored repeat, 2 clamp to edge), `texture_filter`'s (format, Gaussian
+    /// weights, environment).
+    pub st_ws: Signal<In, Bits<4>>,
+    pub st_hs: Signal<In, Bits<4>>,
+    pub st_levels: Signal<In, Bits<4>>,
+    pub st_base: Signal<In, Bits<ADDR>>,
+    pub st_min_linear: Signal<In, Bit>,
+    pub st_mag_linear: Signal<In, Bit>,
+    pub st_mip: Signal<In, Bits<2>>,
+    pub st_wrap_s: Signal<In, Bits<2>>,
+    pub st_wrap_t: Signal<In, Bits<2>>,
+    pub st_format: Signal<In, Bits<3>>,
+    pub st_gaussian: Signal<In, Bit>,
+    pub st_env: Signal<In, Bits<3>>,
+    /// A pulse: the cache invalidates every line.
+    pub inp_flush: Signal<In, Bit>,
+    /// A textured pixel: its colour (R 31..24, G 23..16, B 15..8, A 7..0) and tag, held
+    /// until taken (`out_ready`).
+    pub out_valid: Signal<Out, Bit>,
+    pub out_ready: Signal<In, Bit>,
+    pub out_rgba: Signal<Out, Bits<32>>,
+    pub out_tag: Signal<Out, Bits<32>>,
+    /// The cache's memory read port: a word asked (`mem_valid`, `mem_addr`) until
+    /// `mem_ack`; words answered in order (`mem_rvalid`, `mem_rdata`).
+    pub mem_valid: Signal<Out, Bit>,
+    pub mem_addr: Signal<Out, Bits<ADDR>>,
+    pub mem_ack: Signal<In, Bit>,
+    pub mem_rvalid: Signal<In, Bit>,
+    pub mem_rdata: Signal<In, Bits<32>>,
+    /// The cache's counters, per lane lookup (32 bits, wrapping).
+    pub hits: Signal<Out, Bits<32>>,
+    pub misses: Signal<Out, Bits<32>>,
+    pub fills: Signal<Out, Bits<32>>,
+    /// No pixel in flight: the state may be loaded.
+    pub idle: Signal<Out, Bit>,
+
+    coords: TextureCoords,
+    address: TextureAddress,
+    cache: TextureCache<SB, DA, W, TAG, TV>,
+    pick: [Pick; 4],
+    filter: TextureFilter,
+    cf_ram: RAM<Bits<24>, FB>,
+    tag_ram: RAM<Bits<32>, FB>,
+    r_ws: DFF<Bits<4>>,
+    r_hs: DFF<Bits<4>>,
+    r_levels: DFF<Bits<4>>,
+    r_base: DFF<Bits<ADDR>>,
+    r_min_linear: DFF<Bit>,
+    r_mag_linear: DFF<Bit>,
+    r_mip: DFF<Bits<2>>,
+    r_wrap_s: DFF<Bits<2>>,
+    r_wrap_t: DFF<Bits<2>>,
+    r_format: DFF<Bits<3>>,
+    r_gaussian: DFF<Bit>,
+    r_env: DFF<Bits<3>>,
+    /// Coords' pixel's access is of its second level.
+    second: DFF<Bit>,
+    /// The RAMs' pointers: the next pixel's word; the pixel entering the filter's; the
+    /// pixel at the output's.
+    wp: DFF<Bits<FB>>,
+    rc: DFF<Bits<FB>>,
+    rt: DFF<Bits<FB>>,
+    /// A two-level pixel's first level: its words in footprint order, alpha, beta.
+    pair_words: [DFF<Bits<32>>; 4],
+    pair_alpha: DFF<Bits<8>>,
+    pair_beta: DFF<Bits<8>>,
+    en_f: Signal<Local, Bit>,
+    en_c: Signal<Local, Bit>,
+    take: Signal<Local, Bit>,
+    accept: Signal<Local, Bit>,
+    attr: Signal<Local, Bits<32>>,
+    /// The cache's result: its attributes (the side's low half), a pixel's first level,
+    /// a whole pixel for the filter.
+    res: Signal<Local, Bits<32>>,
+    first: Signal<Local, Bit>,
+    whole: Signal<Local, Bit>,
+}
+
+impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const TV: usize>
+    TextureUnit<SB, DA, W, TAG, TV>
+{
+    /// The unit, with GL's exact rho when `exact` (else 001's eq. 4).
+    pub fn new(exact: bool) -> Self {
+        Self {
+            clock: Default::default(),
+            inp_valid: Default::default(),
+            inp_ready: Default::default(),
+            inp_sq: Default::default(),
+            inp_tq: Default::default(),
+            inp_q: Default::default(),
+            inp_dsq_x: Default::default(),
+            inp_dsq_y: Default::default(),
+            inp_dtq_x: Default::default(),
+            inp_dtq_y: Default::default(),
+            inp_dq_x: Default::default(),
+            inp_dq_y: Default::default(),
+            inp_cf: Default::default(),
+            inp_tag: Default::default(),
+            st_load: Default::default(),
+            st_ws: Default::default(),
+            st_hs: Default::default(),
+            st_levels: Default::default(),
+            st_base: Default::default(),
+            st_min_linear: Default::default(),
+            st_mag_linear: Default::default(),
+            st_mip: Default::default(),
+            st_wrap_s: Default::default(),
+            st_wrap_t: Default::default(),
+            st_format: Default::default(),
+            st_gaussian: Default::default(),
+            st_env: Default::default(),
+            inp_flush: Default::default(),
+            out_valid: Default::default(),
+            out_ready: Default::default(),
+            out_rgba: Default::default(),
+            out_tag: Default::default(),
+            mem_valid: Default::default(),
+            mem_addr: Default::default(),
+            mem_ack: Default::default(),
+            mem_rvalid: Default::default(),
+            mem_rdata: Default::default(),
+            hits: Default::default(),
+            misses: Default::default(),
+            fills: Default::default(),
+            idle: Default::default(),
+            coords: TextureCoords::new(exact),
+            address: Default::default(),
+            cache: Default::default(),
+            pick: Default::default(),
+            filter: Default::default(),
+            cf_ram: Default::default(),
+            tag_ram: Default::default(),
+            r_ws: Default::default(),
+            r_hs: Default::default(),
+            r_levels: Default::default(),
+            r_base: Default::default(),
+            r_min_linear: Default::default(),
+            r_mag_linear: Default::default(),
+            r_mip: Default::default(),
+            r_wrap_s: Default::default(),
+            r_wrap_t: Default::default(),
+            r_format: Default::default(),
+            r_gaussian: Default::default(),
+            r_env: Default::default(),
+            second: Default::default(),
+            wp: Default::default(),
+            rc: Default::default(),
+            rt: Default::default(),
+            pair_words: Default::default(),
+            pair_alpha: Default::default(),
+            pair_beta: Default::default(),
+            en_f: Default::default(),
+            en_c: Default::default(),
+            take: Default::default(),
+            accept: Default::default(),
+            attr: Default::default(),
+            res: Default::default(),
+            first: Default::default(),
+            whole: Default::default(),
+        }
+    }
+}
+
+impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const TV: usize> Default
+    for TextureUnit<SB, DA, W, TAG, TV>
+{
+    fn default() -> Self {
+        Self::new(false)
+    }
+}
+
+impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const TV: usize> Logic
+    for TextureUnit<SB, DA, W, TAG, TV>
+{
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self,
+            clock,
+            r_ws,
+            r_hs,
+            r_levels,
+            r_base,
+            r_min_linear,
+            r_mag_linear,
+            r_mip,
+            r_wrap_s,
+            r_wrap_t,
+            r_format,
+            r_gaussian,
+            r_env,
+            second,
+            wp,
+            rc,
+            rt,
+            pair_alpha,
+            pair_beta
+        );
+        for k in 0..4 {
+            self.pair_words[k].clock.next = self.clock.val();
+            self.pair_words[k].d.next = self.pair_words[k].q.val();
+        }
+        if self.st_load.val() {
+            self.r_ws.d.next = self.st_ws.val();
+            self.r_hs.d.next = self.st_hs.val();
+            self.r_levels.d.next = self.st_levels.val();
+            self.r_base.d.next = self.st_base.val();
+            self.r_min_linear.d.next = self.st_min_linear.val();
+            self.r_mag_linear.d.next = self.st_mag_linear.val();
+            self.r_mip.d.next = self.st_mip.val();
+            self.r_wrap_s.d.next = self.st_wrap_s.val();
+            self.r_wrap_t.d.next = self.st_wrap_t.val();
+            self.r_format.d.next = self.st_format.val();
+            self.r_gaussian.d.next = self.st_gaussian.val();
+            self.r_env.d.next = self.st_env.val();
+        }
+
+        // The filter moves on unless its pixel waits at the output.
+        self.en_f.next = self.out_ready.val() | !self.filter.out_valid.val();
+
+        // Coords' pixel: its access (the second level's when `second`) to the cache.
+        self.address.s.next = self.coords.out_s.val();
+        self.address.t.next = self.coords.out_t.val();
+        self.address.lambda.next = self.coords.out_lambda.val();
+        self.address.second.next = self.second.q.val();
+        self.address.ws.next = self.r_ws.q.val();
+        self.address.hs.next = self.r_hs.q.val();
+        self.address.levels.next = self.r_levels.q.val();
+        self.address.base.next = self.r_base.q.val();
+        self.address.min_linear.next = self.r_min_linear.q.val();
+        self.address.mag_linear.next = self.r_mag_linear.q.val();
+        self.address.mip.next = self.r_mip.q.val();
+        self.address.wrap_s.next = self.r_wrap_s.q.val();
+        self.address.wrap_t.next = self.r_wrap_t.q.val();
+        self.attr.next = (bit_cast::<32, 8>(self.address.beta.val()) << 24)
+            | (bit_cast::<32, 8>(self.address.alpha.val()) << 16)
+            | (bit_cast::<32, 8>(self.address.banks.val()) << 8)
+            | (bit_cast::<32, 6>(self.address.frac.val()) << 2);
+        if self.address.two_levels.val() {
+            self.attr.next = self.attr.val().replace_bit(1, true);
+        }
+        if self.second.q.val() {
+            self.attr.next = self.attr.val().replace_bit(0, true);
+        }
+        self.cache.clock.next = self.clock.val();
+        self.cache.inp_valid.next = self.coords.out_valid.val();
+        self.cache.inp_en.next = self.address.lanes.val();
+        self.cache.inp_addr0.next = self.address.addr0.val();
+        self.cache.inp_addr1.next = self.address.addr1.val();
+        self.cache.inp_addr2.next = self.address.addr2.val();
+        self.cache.inp_addr3.next = self.address.addr3.val();
+        self.cache.inp_side.next = bit_cast::<64, 32>(self.attr.val());
+        self.cache.inp_flush.next = self.inp_flush.val();
+        self.cache.out_ready.next = self.en_f.val();
+        self.cache.mem_ack.next = self.mem_ack.val();
+        self.cache.mem_rvalid.next = self.mem_rvalid.val();
+        self.cache.mem_rdata.next = self.mem_rdata.val();
+        self.mem_valid.next = self.cache.mem_valid.val();
+        self.mem_addr.next = self.cache.mem_addr.val();
+        self.hits.next = self.cache.hits.val();
+        self.misses.next = self.cache.misses.val();
+        self.fills.next = self.cache.fills.val();
+
+        // Coords moves on when its last stage is empty or its pixel's last access is taken.
+        self.take.next = self.coords.out_valid.val() & self.cache.inp_ready.val();
+        self.en_c.next =
+            !self.coords.out_valid.val() | (self.take.val() & (!self.address.two_levels.val() | self.second.q.val()));
+        if self.take.val() {
+            self.second.d.next = self.address.two_levels.val() & !self.second.q.val();
+        }
+        self.inp_ready.next = self.en_c.val() & !self.st_load.val();
+        self.accept.next = self.inp_valid.val() & self.inp_ready.val();
+        self.coords.clock.next = self.clock.val();
+        self.coords.en.next = self.en_c.val();
+        self.coords.inp_valid.next = self.inp_valid.val() & !self.st_load.val();
+        self.coords.inp_sq.next = self.inp_sq.val();
+        self.coords.inp_tq.next = self.inp_tq.val();
+        self.coords.inp_q.next = self.inp_q.val();
+        self.coords.inp_dsq_x.next = self.inp_dsq_x.val();
+        self.coords.inp_dsq_y.next = self.inp_dsq_y.val();
+        self.coords.inp_dtq_x.next = self.inp_dtq_x.val();
+        self.coords.inp_dtq_y.next = self.inp_dtq_y.val();
+        self.coords.inp_dq_x.next = self.inp_dq_x.val();
+        self.coords.inp_dq_y.next = self.inp_dq_y.val();
+        self.coords.inp_ws.next = self.r_ws.q.val();
+        self.coords.inp_hs.next = self.r_hs.q.val();
+
+        // The pixel's colour and tag, in order, one RAM word a pixel.
+        self.cf_ram.write_clock.next = self.clock.val();
+        self.cf_ram.read_clock.next = self.clock.val();
+        self.tag_ram.write_clock.next = self.clock.val();
+        self.tag_ram.read_clock.next = self.clock.val();
+        self.cf_ram.write_enable.next = self.accept.val();
+        self.tag_ram.write_enable.next = self.accept.val();
+        self.cf_ram.write_address.next = self.wp.q.val();
+        self.tag_ram.write_address.next = self.wp.q.val();
+        self.cf_ram.write_data.next = self.inp_cf.val();
+        self.tag_ram.write_data.next = self.inp_tag.val();
+        if self.accept.val() {
+            self.wp.d.next = self.wp.q.val() + 1;
+        }
+
+        // The cache's result: a first level waits in the pair register, a whole pixel
+        // (one level, or the second of two) goes into the filter.
+        self.res.next = self.cache.out_side.val().get_bits::<32>(0);
+        for k in 0..4 {
+            self.pick[k].data0.next = self.cache.out_data0.val();
+            self.pick[k].data1.next = self.cache.out_data1.val();
+            self.pick[k].data2.next = self.cache.out_data2.val();
+            self.pick[k].data3.next = self.cache.out_data3.val();
+        }
+        self.pick[0].bank.next = self.res.val().get_bits::<2>(8);
+        self.pick[1].bank.next = self.res.val().get_bits::<2>(10);
+        self.pick[2].bank.next = self.res.val().get_bits::<2>(12);
+        self.pick[3].bank.next = self.res.val().get_bits::<2>(14);
+        self.first.next = self.res.val().get_bit(1) & !self.res.val().get_bit(0);
+        self.whole.next = self.cache.out_valid.val() & !self.first.val();
+        if self.cache.out_valid.val() & self.first.val() & self.en_f.val() {
+            for k in 0..4 {
+                self.pair_words[k].d.next = self.pick[k].word.val();
+            }
+            self.pair_alpha.d.next = self.res.val().get_bits::<8>(16);
+            self.pair_beta.d.next = self.res.val().get_bits::<8>(24);
+        }
+        self.filter.clock.next = self.clock.val();
+        self.filter.en.next = self.en_f.val();
+        self.filter.inp_valid.next = self.whole.val();
+        self.filter.inp_words0_0.next = self.pick[0].word.val();
+        self.filter.inp_words0_1.next = self.pick[1].word.val();
+        self.filter.inp_words0_2.next = self.pick[2].word.val();
+        self.filter.inp_words0_3.next = self.pick[3].word.val();
+        self.filter.inp_alpha0.next = self.res.val().get_bits::<8>(16);
+        self.filter.inp_beta0.next = self.res.val().get_bits::<8>(24);
+        if self.res.val().get_bit(1) {
+            self.filter.inp_words0_0.next = self.pair_words[0].q.val();
+            self.filter.inp_words0_1.next = self.pair_words[1].q.val();
+            self.filter.inp_words0_2.next = self.pair_words[2].q.val();
+            self.filter.inp_words0_3.next = self.pair_words[3].q.val();
+            self.filter.inp_alpha0.next = self.pair_alpha.q.val();
+            self.filter.inp_beta0.next = self.pair_beta.q.val();
+        }
+        self.filter.inp_words1_0.next = self.pick[0].word.val();
+        self.filter.inp_words1_1.next = self.pick[1].word.val();
+        self.filter.inp_words1_2.next = self.pick[2].word.val();
+        self.filter.inp_words1_3.next = self.pick[3].word.val();
+        self.filter.inp_alpha1.next = self.res.val().get_bits::<8>(16);
+        self.filter.inp_beta1.next = self.res.val().get_bits::<8>(24);
+        self.filter.inp_frac.next = self.res.val().get_bits::<6>(2);
+        self.filter.inp_two_levels.next = self.res.val().get_bit(1);
+        self.filter.inp_format.next = self.r_format.q.val();
+        self.filter.inp_gaussian.next = self.r_gaussian.q.val();
+        self.filter.inp_env.next = self.r_env.q.val();
+        self.filter.inp_cf.next = self.cf_ram.read_data.val();
+        self.cf_ram.read_address.next = self.rc.q.val();
+        if self.whole.val() & self.en_f.val() {
+            self.rc.d.next = self.rc.q.val() + 1;
+            self.cf_ram.read_address.next = self.rc.q.val() + 1;
+        }
+
+        // The output: the filter's last stage, the tag of its pixel.
+        self.out_valid.next = self.filter.out_valid.val();
+        self.out_rgba.next = self.filter.out_rgba.val();
+        self.out_tag.next = self.tag_ram.read_data.val();
+        self.tag_ram.read_address.next = self.rt.q.val();
+        if self.filter.out_valid.val() & self.out_ready.val() {
+            self.rt.d.next = self.rt.q.val() + 1;
+            self.tag_ram.read_address.next = self.rt.q.val() + 1;
+        }
+        self.idle.next = self.wp.q.val() == self.rt.q.val();
+    }
+}
+
+crate::pins!(impl[const SB: usize, const DA: usize, const W: usize, const TAG: usize, const TV: usize]
+    TextureUnit<SB, DA, W, TAG, TV> {
+    clock: clock,
+    inputs: [
+        inp_valid, inp_sq, inp_tq, inp_q, inp_dsq_x, inp_dsq_y, inp_dtq_x, inp_dtq_y, inp_dq_x, inp_dq_y, inp_cf,
+        inp_tag, st_load, st_ws, st_hs, st_levels, st_base, st_min_linear, st_mag_linear, st_mip, st_wrap_s,
+        st_wrap_t, st_format, st_gaussian, st_env, inp_flush, out_ready, mem_ack, mem_rvalid, mem_rdata,
+    ],
+    outputs: [inp_ready, out_valid, out_rgba, out_tag, mem_valid, mem_addr, hits, misses, fills, idle],
+});
+
+/// The cache geometries the unit is built for: (SETS, WAYS, LINE) and its type.
+macro_rules! unit_geometries {
+    ($(($s:literal $w:literal $l:literal) => $unit:ty,)*) => {
+        /// The cache geometries (SETS, WAYS, LINE) `texture_unit` is built for: the default
+        /// design's and the tests' small direct-mapped one. (Each is a copy of the cache and
+        /// the unit in this crate; `texture_cache` alone is built at more.)
+        pub const GEOMETRIES: &[(u32, u32, u32)] = &[$(($s, $w, $l)),*];
+
+        /// `emit_unit` of geometry `g`, when built.
+        fn emit_built(g: (u32, u32, u32), exact: bool, params: &Params) -> Option<Emitted> {
+            $(
+                if g == ($s, $w, $l) {
+                    return Some(emit_unit("texture_unit", <$unit>::new(exact), params));
+                }
+            )*
+            None
+        }
+    };
+}
+
+/// The unit over the default cache: 64 sets, 2 ways, 4 words.
+pub type TextureUnit6424 = TextureUnit<6, 8, 2, 18, 19>;
+/// The unit over a cache of 4 sets, 1 way, 1 word (every new word a miss): the tests'.
+pub type TextureUnit411 = TextureUnit<2, 2, 1, 24, 25>;
+
+unit_geometries! {
+    (64 2 4) => TextureUnit6424,
+    (4 1 1) => TextureUnit411,
+}
+
+/// `UNITS` entry: the unit over the cache `params["SETS"]`, `["WAYS"]`, `["LINE"]` (one of
+/// [`GEOMETRIES`]), the level-of-detail rule `params["EXACT"]`.
+pub fn emit_texture_unit(params: &Params) -> Result<Emitted, String> {
+    let exact = match params["EXACT"] {
+        0 => false,
+        1 => true,
+        e => return Err(format!("texture_unit: EXACT = {e}: 0 (001's eq. 4) or 1 (GL's exact rho)")),
+    };
+    let get = |k: &str| u32::try_from(params[k]).map_err(|_| format!("texture_unit: {k} = {} is too large", params[k]));
+    let p = model::texture_cache::Params { sets: get("SETS")?, ways: get("WAYS")?, line: get("LINE")? };
+    p.check()?;
+    emit_built((p.sets, p.ways, p.line), exact, params).ok_or_else(|| {
+        let built: Vec<String> = GEOMETRIES.iter().map(|(s, w, l)| format!("{s}/{w}/{l}")).collect();
+        format!(
+            "texture_unit: SETS = {}, WAYS = {}, LINE = {} is not built; the geometries built (SETS/WAYS/LINE, \
+             rtl::texture_unit::GEOMETRIES): {}",
+            p.sets,
+            p.ways,
+            p.line,
+            built.join(", ")
+        )
+    })
+}
