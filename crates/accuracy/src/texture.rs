@@ -3,18 +3,23 @@
 //! reference at the same level-of-detail rule, judged as the GL and Vulkan conformance
 //! tests judge texture filtering (`texture::conformance`).
 //!
-//! The unit is driven on its own: each fragment's s·q, t·q and q and its triangle's
-//! gradients come from the float triangle (`model::texture_unit::input::TexPlanes`),
-//! quantized to the unit's formats, and its lit colour is the reference's rounded to 8
-//! bits, so the numbers measure the texture unit alone. (Setup and the interpolators do
-//! not carry s·q, t·q and q yet.)
+//! The unit is driven as the fixed-point engines drive it: the scene's triangles clipped by
+//! their front end (`model::guard_band`, at the screen's default formats), each piece's
+//! vertices in the hardware's words, and each fragment's s·q, t·q and q and its triangle's
+//! gradients from `model::texture_setup`'s planes. The fragments are the float
+//! reference's over the same triangle (its vertices snapped to the `xy` grid as the
+//! rasterizer's are), and each one's lit colour is the reference's rounded to 8 bits, so
+//! the numbers measure the texture path alone (setup's planes and the unit), not the
+//! rasterizer's coverage, snapping or colour.
 
-use fx::TexFormats;
+use fx::{Formats, TexFormats};
+use model::guard_band;
+use model::input::to_fixed;
 use model::texture_cache::{hit_rate_of_trace, Params as CacheParams, Stats};
-use model::texture_memory::layout;
-use model::texture_unit::input::TexPlanes;
-use model::texture_unit::{Fetch, TexState, TextureUnit};
-use reference::{prepare, raster, Interpolation, Options, Prepared};
+use model::texture_memory::TextureMemory;
+use model::texture_setup::{tex_vertices, texture_setup};
+use model::texture_unit::{Fetch, TextureUnit};
+use reference::{prepare, raster, Options, Prepared};
 use scene::Trilist;
 use serde::Serialize;
 use texture::conformance::{check, reference, Probe};
@@ -89,12 +94,7 @@ pub fn cache_stats(params: &CacheParams, trace: &[Fetch]) -> CacheStats {
 pub fn judge(list: &Trilist, s: &TextureSetup) -> Result<TextureReport, String> {
     let unit = TextureUnit::new(s.formats)?;
     let f = unit.formats;
-    // The textures one after the other in one texture memory.
-    let (mut memory, mut bases) = (Vec::new(), Vec::new());
-    for t in &list.textures {
-        bases.push(memory.len() as u32);
-        memory.extend(layout(&t.mips, t.format));
-    }
+    let memory = TextureMemory::load(list, s.lod)?;
     let mut r = TextureReport {
         pixels: 0,
         failures: 0,
@@ -106,32 +106,30 @@ pub fn judge(list: &Trilist, s: &TextureSetup) -> Result<TextureReport, String> 
         worst_failure: None,
     };
     let (mut sum, mut sum_sq) = (0.0, 0.0);
-    for tri in &list.triangles {
+    let screen = Formats::for_resolution(list.width, list.height);
+    for tri in &guard_band::pieces(list, &screen, true).triangles {
         let Some(tex) = tri[0].tex else { continue };
         let t = list.textures.get(tex.texture as usize).ok_or("a triangle names a texture the list lacks")?;
         let base = t.mips.base();
-        let state = TexState {
-            size_log2: [base.width().trailing_zeros(), base.height().trailing_zeros()],
-            levels: t.mips.levels().len() as u32,
-            base: bases[tex.texture as usize],
-            format: t.format,
-            sampler: t.sampler,
-            env: t.env,
-            lod: s.lod,
-        };
-        state.check()?;
-        let Prepared::Draw(parts, interp) = prepare(tri, &Options::default()) else { continue };
+        let state = memory.states[tex.texture as usize];
+        let v = to_fixed(tri, &screen).map_err(|e| format!("a clipped triangle: {e}"))?;
+        // The reference takes the vertices where the rasterizer has them, snapped to `xy`:
+        // the coordinates' error from the snapping (up to half a sub-pixel's worth of a
+        // pixel's footprint) is the geometry's, not the texture path's.
+        let snapped: scene::Triangle = std::array::from_fn(|k| scene::Vertex {
+            x: screen.xy.to_f64(v[k].x),
+            y: screen.xy.to_f64(v[k].y),
+            ..tri[k]
+        });
+        let Prepared::Draw(parts, interp) = prepare(&snapped, &Options::default()) else { continue };
+        let tv = tex_vertices(tri, &v, &f, s.affine).map_err(|e| e.to_string())?.expect("a textured triangle");
+        let Some(planes) = texture_setup(&tv, &screen, &f) else { continue };
+        let g = planes.grad();
         for part in &parts {
-            let inv_w = match (interp, s.affine) {
-                (Interpolation::Perspective, false) => part.map(|v| v.inv_w),
-                _ => [1.0; 3],
-            };
-            let Some(planes) = TexPlanes::new(part.map(|v| [v.x, v.y]), part.map(|v| v.st), inv_w) else { continue };
-            let g = planes.grad(&f);
             raster::rasterize(part, list.width, list.height, interp, |frag| {
                 let cf = frag.rgb.map(|c| c.round().clamp(0.0, 255.0) as u8);
-                let p = planes.at(&f, f64::from(frag.x) + 0.5, f64::from(frag.y) + 0.5);
-                let sample = unit.sample(&state, &memory, &p, &g, cf);
+                let p = planes.at(frag.x, frag.y);
+                let sample = unit.sample(&state, &memory.words, &p, &g, cf);
                 let [[sx, tx], [sy, ty]] = frag.dst;
                 let (w, h) = (f64::from(base.width()), f64::from(base.height()));
                 let lambda = s.lod.rho(sx * w, tx * h, sy * w, ty * h).log2();

@@ -4,9 +4,12 @@
 //! models against the float reference, then setup's parameters for an objective;
 //! [`parts::needed`] leaves out the optional parts (clipping, culling, the depth test) the
 //! workload never uses; [`method`] sets the scanline design beside the barycentric and SE
-//! back ends at their built formats and chooses the method (`--method auto`).
+//! back ends at their built formats and chooses the method (`--method auto`); [`texture`]
+//! fits the texture unit (001 section II-5): whether the workload needs it, its filter and
+//! its mip chain, and its narrowest precision knobs.
 
 pub mod method;
 pub mod parts;
 pub mod search;
 pub mod target;
+pub mod texture;

@@ -7,7 +7,9 @@
 //! compared with the float reference (`accuracy::compare`), and judged by its family's
 //! documented criterion. [`run`] runs the cells in parallel, [`boundary`] finds where each
 //! row of a map starts failing, [`map`] draws the heatmaps with the boundary, and
-//! [`report`] writes `cells.json` and `report.md`.
+//! [`report`] writes `cells.json` and `report.md`. [`texture`] stresses the texture unit
+//! (001 section II-5) the same way: its families through the bit-exact unit, judged by the
+//! conformance check.
 
 pub mod boundary;
 pub mod cell;
@@ -16,3 +18,4 @@ pub mod geometry;
 pub mod map;
 pub mod report;
 pub mod run;
+pub mod texture;

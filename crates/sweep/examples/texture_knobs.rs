@@ -1,35 +1,29 @@
 //! The texture unit's precision knobs against its error: every shipped textured scene
 //! through the bit-exact unit (`accuracy::texture`) at each value of one knob, the others at
 //! their defaults, judged as the conformance tests judge filtering. Writes
-//! `docs/texture/knobs.png` and `.svg` (or the folder given) and prints a Markdown table.
+//! `docs/texture/knobs.png` and `.svg` (or the folder given), with Vulkan 1.0's minimums and
+//! Roadmap 2022's values of `subtexel` and `lod_frac` drawn as rules, and prints a Markdown
+//! table. The same points, with area, cache and frame time, are `edgepaint sweep --texture`'s
+//! sensitivity points (`sweep::texture`).
 //!
 //! `cargo run --release -p sweep --example texture_knobs [DIR]`
 
 use accuracy::texture::{judge, TextureSetup};
-use fx::{Fmt, TexFormats};
+use fx::TexFormats;
 use scene::{Scene, Trilist};
 use std::path::PathBuf;
 use sweep::chart::{draw, Chart, Pt, Series};
+use sweep::texture::{rules, Knob, Knobs};
 use texture::LodRule;
 
-/// A knob: its name, its values, and the formats at a value (the defaults elsewhere).
-struct Knob {
-    name: &'static str,
-    values: std::ops::RangeInclusive<u32>,
-    set: fn(u32) -> TexFormats,
+/// Each knob's values.
+fn values(knob: Knob) -> std::ops::RangeInclusive<u32> {
+    match knob {
+        Knob::Subtexel | Knob::Weight => 1..=10,
+        Knob::LodFrac => 1..=8,
+        Knob::Recip => 8..=24,
+    }
 }
-
-const KNOBS: [Knob; 4] = [
-    Knob {
-        name: "subtexel",
-        values: 1..=10,
-        // s and t need subtexel + 12 fraction bits (texel coordinates of a 4096-texel level).
-        set: |b| TexFormats { subtexel: b, st: Fmt::s(8, (b + 12).max(20)).saturating(), ..TexFormats::DEFAULT },
-    },
-    Knob { name: "lod_frac", values: 1..=8, set: |b| TexFormats { lod_frac: b, ..TexFormats::DEFAULT } },
-    Knob { name: "weight", values: 1..=10, set: |b| TexFormats { weight: b, ..TexFormats::DEFAULT } },
-    Knob { name: "recip", values: 8..=24, set: |b| TexFormats { recip: b, ..TexFormats::DEFAULT } },
-];
 
 fn main() -> Result<(), String> {
     let dir = std::env::args().nth(1).map_or_else(|| PathBuf::from("docs/texture"), PathBuf::from);
@@ -42,10 +36,11 @@ fn main() -> Result<(), String> {
     println!("|---|---:|---:|---:|---:|");
     let mut series = Vec::new();
     let mut marks = Vec::new();
-    for knob in &KNOBS {
+    for knob in Knob::ALL {
         let mut points = Vec::new();
-        for bits in knob.values.clone() {
-            let setup = TextureSetup { formats: (knob.set)(bits), lod: LodRule::Max, affine: false };
+        for bits in values(knob) {
+            let formats = Knobs::DEFAULT.with(knob, bits).formats();
+            let setup = TextureSetup { formats, lod: LodRule::Max, affine: false };
             let (mut pixels, mut failures, mut worst, mut psnr) = (0, 0, 0.0f64, f64::INFINITY);
             for list in &lists {
                 let r = judge(list, &setup)?;
@@ -54,9 +49,9 @@ fn main() -> Result<(), String> {
                 psnr = psnr.min(r.psnr_db);
             }
             let percent = 100.0 * failures as f64 / pixels.max(1) as f64;
-            println!("| {} | {bits} | {failures} of {pixels} ({percent:.3}%) | {worst:.2} | {psnr:.1} |", knob.name);
-            let label = format!("{}={bits}", knob.name);
-            if (knob.set)(bits) == TexFormats::DEFAULT {
+            println!("| {} | {bits} | {failures} of {pixels} ({percent:.3}%) | {worst:.2} | {psnr:.1} |", knob.name());
+            let label = format!("{}={bits}", knob.name());
+            if formats == TexFormats::DEFAULT {
                 // One mark where two knobs' defaults coincide (subtexel and weight at 8).
                 match marks.iter_mut().find(|m: &&mut Pt| (m.x, m.y) == (f64::from(bits), percent)) {
                     Some(m) => m.label = format!("{label} {}", m.label),
@@ -65,7 +60,7 @@ fn main() -> Result<(), String> {
             }
             points.push(Pt { x: f64::from(bits), y: percent, label });
         }
-        series.push(Series { name: knob.name.to_owned(), points });
+        series.push(Series { name: knob.name().to_owned(), points });
     }
     let chart = Chart {
         stem: "knobs".into(),
@@ -79,6 +74,8 @@ fn main() -> Result<(), String> {
         series,
         front: Vec::new(),
         marks,
+        // Vulkan 1.0's minimums and Roadmap 2022's values of subtexel and lod_frac.
+        rules: rules(&[Knob::Subtexel, Knob::LodFrac]),
     };
     draw(&chart, &dir)?;
     println!("\nwrote {}", dir.join("knobs.png").display());

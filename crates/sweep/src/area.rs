@@ -468,7 +468,7 @@ pub fn validation_report(model: &Model) -> String {
 /// unconstrained least-squares solution on each subset of the columns, the best of those
 /// that are non-negative (the features are few). Columns are scaled to a maximum of 1 for
 /// the solve.
-fn nnls(a: &[Vec<f64>], y: &[f64]) -> Vec<f64> {
+pub(crate) fn nnls(a: &[Vec<f64>], y: &[f64]) -> Vec<f64> {
     let n = a[0].len();
     let scale: Vec<f64> = (0..n)
         .map(|j| a.iter().map(|r| r[j].abs()).fold(0.0, f64::max))

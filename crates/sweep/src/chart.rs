@@ -61,6 +61,10 @@ pub struct Chart {
     pub front: Vec<Pt>,
     /// Points singled out (the default design), drawn as a distinct marker with their label.
     pub marks: Vec<Pt>,
+    /// Vertical reference lines: what an API requires of the x axis' quantity (Vulkan 1.0's
+    /// minimum sub-texel bits, say), each drawn as a grey line at its `x` with its `label`
+    /// near the top (`y` unused).
+    pub rules: Vec<Pt>,
 }
 
 /// The indices of the points no other point dominates when both x and y are minimised,
@@ -162,6 +166,7 @@ fn scatter(rows: &[Row], stem: &str, title: String, x_label: &str, x: fn(&Row) -
         series: series.into_iter().map(|(name, points)| Series { name: name.into(), points }).collect(),
         front,
         marks,
+        rules: Vec::new(),
     }
 }
 
@@ -258,6 +263,7 @@ fn sensitivity(rows: &[Row], knob: &str) -> Chart {
         series,
         front: Vec::new(),
         marks,
+        rules: Vec::new(),
     }
 }
 
@@ -296,6 +302,9 @@ const COLOURS: [RGBColor; 6] = [
 
 /// The marks' colour.
 const MARK: RGBColor = RGBColor(255, 127, 14);
+
+/// The reference lines' colour.
+const RULE: RGBColor = RGBColor(90, 90, 90);
 
 /// The embedded font, registered once as plotters' `sans-serif` (no system font is read);
 /// the error if it does not parse. Public for the other charts drawn with it (`stability`).
@@ -359,9 +368,12 @@ fn range(values: impl Iterator<Item = f64>, log: bool) -> Option<Range<f64>> {
     Some(start..hi + pad)
 }
 
-/// Every point of `chart` (series, front, marks).
-fn all_points(chart: &Chart) -> impl Iterator<Item = &Pt> {
-    chart.series.iter().flat_map(|s| &s.points).chain(&chart.front).chain(&chart.marks)
+/// Every point of `chart` (series, front, marks); a rule counts by its x alone (its y is
+/// that of the chart's first point, so that it widens no y range).
+fn all_points(chart: &Chart) -> impl Iterator<Item = Pt> + '_ {
+    let points = || chart.series.iter().flat_map(|s| &s.points).chain(&chart.front).chain(&chart.marks);
+    let y = points().map(|p| p.y).find(|y| y.is_finite()).unwrap_or(f64::NAN);
+    points().cloned().chain(chart.rules.iter().map(move |r| Pt { y, ..r.clone() }))
 }
 
 /// Draws `chart` on `root` over `axes`, linear or log as the chart says.
@@ -384,11 +396,15 @@ fn label_left(p: &Pt, x: &Range<f64>, log: bool) -> bool {
     (f(v) - f(x.start)) > 0.6 * (f(x.end) - f(x.start))
 }
 
-/// A tick label: plain for moderate magnitudes, scientific otherwise.
+/// A tick label: plain for moderate magnitudes (whole from 10,000 to a million), scientific
+/// otherwise.
 fn tick(v: &f64) -> String {
     let a = v.abs();
     if a == 0.0 || (0.01..10_000.0).contains(&a) {
         format!("{}", (v * 1000.0).round() / 1000.0)
+    } else if (10_000.0..1e6).contains(&a) {
+        // Whole numbers: 13500, not 1.4e4 (two ticks 1,000 apart would read alike).
+        format!("{v:.0}")
     } else {
         format!("{v:.1e}")
     }
@@ -496,6 +512,15 @@ where
         .map_err(err)?
         .label("default design")
         .legend(|(x, y)| TriangleMarker::new((x, y), 6, MARK.filled()));
+    }
+    let y_range = c.plotting_area().get_y_range();
+    for (k, r) in chart.rules.iter().enumerate() {
+        let x = shown(r.x, chart.x_log);
+        c.draw_series(LineSeries::new([(x, y_range.start), (x, y_range.end)], RULE.stroke_width(1))).map_err(err)?;
+        // Labels stacked down from the top, one line each, so that rules close together stay legible.
+        let at = (x, y_range.end);
+        let text = Text::new(r.label.clone(), (4, 4 + 13 * k as i32), label_font.clone().color(&RULE));
+        c.draw_series(std::iter::once(EmptyElement::at(at) + text)).map_err(err)?;
     }
     c.configure_series_labels()
         .position(SeriesLabelPosition::UpperRight)
@@ -713,6 +738,7 @@ pub(crate) mod tests {
             series: vec![Series { name: "scanline".into(), points: Vec::new() }],
             front: Vec::new(),
             marks: Vec::new(),
+            rules: Vec::new(),
             ..charts(&rows())[0].clone()
         };
         assert!(draw(&empty, dir).unwrap_err().contains("no point"));

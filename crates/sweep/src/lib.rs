@@ -13,6 +13,8 @@
 //! [`chart::charts`] turns the rows into charts (error against cycles, frame time and area
 //! with the Pareto front, one sensitivity chart per knob), [`chart::draw`] draws them as PNG
 //! and SVG, and [`report::write`] writes a Markdown report that embeds them.
+//! [`texture`] sweeps the texture unit (001 section II-5): its precision knobs and cache
+//! geometries against conformance failures, area ([`texture_area`]), hit rate and frame time.
 
 pub mod area;
 pub mod chart;
@@ -22,3 +24,5 @@ pub mod report;
 pub mod row;
 pub mod run;
 pub mod store;
+pub mod texture;
+pub mod texture_area;
