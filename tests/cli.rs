@@ -123,9 +123,11 @@ fn cli_bad_input_is_a_clear_error_naming_the_file() {
 }
 
 /// A textured scene (OBJ + MTL + PNG) draws on the float reference, its trilist (version
-/// 2) draws the same image; the engines without a texture unit refuse it by name.
+/// 2) draws the same image; the scanline and vector models texture it through
+/// `texture_setup` and the texture unit, close to the reference; the engines that cannot
+/// texture refuse it by name.
 #[test]
-fn cli_draws_textured_scenes_on_the_float_reference_only() {
+fn cli_draws_textured_scenes_on_the_float_scanline_and_vector_engines() {
     let d = scratch("textured");
     let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/textured/crate.json");
     let (a, b, tris) = (d.join("scene.png"), d.join("tris.png"), d.join("tris.json"));
@@ -147,15 +149,61 @@ fn cli_draws_textured_scenes_on_the_float_reference_only() {
             assert_eq!(p, q);
         }
     }
+    // The fixed-point engines: the same planks, within a few LSB on average where both drew
+    // the crate (edges differ by the vertices' snapping).
+    for engine in ["scanline", "vector"] {
+        close_to_the_reference(&d, scene, engine, &ia, Some(bg), 15_000);
+    }
     let out = d.join("x.out");
     let out = out.to_str().unwrap();
     for (cmd, what) in [
-        (vec!["render", scene, "--engine", "scanline", "-o", out], "--engine scanline has no texture unit yet"),
+        (vec!["render", scene, "--engine", "se", "-o", out], "--engine se cannot texture or blend: 000's shading"),
         (vec!["render", scene, "--engine", "rtl", "-o", out], "--engine rtl has no texture unit yet"),
         (vec!["pack", scene, "-o", out], "vertex buffer (001's command parser) has no texture unit yet"),
-        (vec!["sweep", scene, "-o", out], "the fixed-point models has no texture unit yet"),
     ] {
         fails_with(&cmd, &["crate.json: the scene is textured", what]);
+    }
+}
+
+/// `scene` drawn by `engine` is `reference` within a few LSB on average where both drew
+/// (every pixel when `bg` is `None`) and far from it on few channels; at least `pixels`
+/// pixels compared.
+fn close_to_the_reference(
+    d: &Path,
+    scene: &str,
+    engine: &str,
+    reference: &image::RgbImage,
+    bg: Option<[u8; 3]>,
+    pixels: usize,
+) {
+    let c = d.join(format!("{engine}.png"));
+    let o = edgepaint(&["render", scene, "--engine", engine, "-o", c.to_str().unwrap()]);
+    assert!(o.status.success(), "{engine}: {}", String::from_utf8_lossy(&o.stderr));
+    let ic = image::open(&c).unwrap().to_rgb8();
+    let both: Vec<(u8, u8)> = reference
+        .pixels()
+        .zip(ic.pixels())
+        .filter(|(p, q)| bg.is_none_or(|bg| p.0 != bg && q.0 != bg))
+        .flat_map(|(p, q)| p.0.into_iter().zip(q.0))
+        .collect();
+    let mean = both.iter().map(|&(p, q)| f64::from(p.abs_diff(q))).sum::<f64>() / both.len() as f64;
+    let far = both.iter().filter(|&&(p, q)| p.abs_diff(q) > 32).count();
+    println!("{scene} {engine}: {} channels, mean difference {mean:.3}, {far} beyond 32", both.len());
+    assert!(both.len() > 3 * pixels && mean < 1.5 && far * 200 < both.len(), "{engine}: mean {mean}, {far} far");
+}
+
+/// The blend-mode scene (a textured badge by each of 001's six modes over two backdrops)
+/// draws on the fixed-point engines as on the reference: they blend after the depth test.
+#[test]
+fn cli_blends_on_the_fixed_point_engines() {
+    let d = scratch("blend");
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/blend/blend-modes.json");
+    let a = d.join("float.png");
+    let o = edgepaint(&["render", scene, "--engine", "float", "-o", a.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let reference = image::open(&a).unwrap().to_rgb8();
+    for engine in ["scanline", "vector"] {
+        close_to_the_reference(&d, scene, engine, &reference, None, 40_000);
     }
 }
 

@@ -11,7 +11,6 @@ use anyhow::{bail, Result};
 use model::cycles::Timing;
 use model::render::Method;
 use std::path::PathBuf;
-use texture::LodRule;
 
 /// Arguments of `edgepaint accuracy`.
 #[derive(clap::Args)]
@@ -29,26 +28,12 @@ pub struct Args {
     /// Override a scene's resolution, e.g. 320x240.
     #[arg(long)]
     size: Option<Size>,
-    /// The texture unit's level-of-detail rule: 001's eq. (4) (max, the design's) or GL's
-    /// exact rho; the reference uses the same.
-    #[arg(long, value_enum, default_value = "max")]
-    lod: Lod,
-}
-
-/// A level-of-detail rule (`texture::LodRule`).
-#[derive(Clone, Copy, Debug, clap::ValueEnum)]
-enum Lod {
-    Max,
-    Exact,
 }
 
 pub fn run(args: Args) -> Result<()> {
     let loaded = input::load(&args.input, args.size)?;
     let texture = if loaded.trilist.is_textured() {
-        let lod = match args.lod {
-            Lod::Max => LodRule::Max,
-            Lod::Exact => LodRule::Exact,
-        };
+        let lod = args.fixed.lod_rule();
         let setup = TextureSetup { formats: args.fixed.texture_formats()?, lod, affine: false };
         let r = judge(&loaded.trilist, &setup).map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?;
         println!("{} (textured, {lod:?} level of detail)\n{}", args.input.display(), r.table());

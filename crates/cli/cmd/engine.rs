@@ -4,8 +4,12 @@
 use super::input::Loaded;
 use anyhow::{Context, Result};
 use fx::{Formats, TexFormats};
-use model::render::Method;
+use model::render::{Method, Texturing};
+use model::texture_memory::TextureMemory;
+use model::texture_unit::TextureUnit;
+use scene::Trilist;
 use std::path::Path;
+use texture::LodRule;
 
 /// Which rasterizer draws.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -35,6 +39,17 @@ pub struct FixedArgs {
     /// (`--engine rtl --method vector`) evaluates 1.
     #[arg(long)]
     pub lanes: Option<u32>,
+    /// The texture unit's level-of-detail rule: 001's eq. (4) (max, the design's) or GL's
+    /// exact rho; the float reference uses the same.
+    #[arg(long, value_enum, default_value = "max")]
+    pub lod: Lod,
+}
+
+/// A level-of-detail rule (`texture::LodRule`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Lod {
+    Max,
+    Exact,
 }
 
 /// The vector model's lanes when `--lanes` is not given.
@@ -60,6 +75,27 @@ impl FixedArgs {
             path => TexFormats::from_formats_file(&formats_json(Path::new(path))?)
                 .map_err(|e| anyhow::anyhow!("{path}: {e}")),
         }
+    }
+
+    /// The level-of-detail rule `--lod` names.
+    pub fn lod_rule(&self) -> LodRule {
+        match self.lod {
+            Lod::Max => LodRule::Max,
+            Lod::Exact => LodRule::Exact,
+        }
+    }
+
+    /// How the fixed-point engines texture `list` (`None` when it is untextured): the unit at
+    /// [`FixedArgs::texture_formats`], `--lod`, its textures in memory; `affine`: screen-linear
+    /// coordinates. `path` names the input in errors.
+    pub fn texturing(&self, list: &Trilist, affine: bool, path: &Path) -> Result<Option<Texturing>> {
+        if !list.is_textured() {
+            return Ok(None);
+        }
+        let unit = TextureUnit::new(self.texture_formats()?).map_err(|e| anyhow::anyhow!("texture formats: {e}"))?;
+        let memory =
+            TextureMemory::load(list, self.lod_rule()).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+        Ok(Some(Texturing { unit, memory, affine }))
     }
 
     /// The formats `loaded` is drawn at: a vertex buffer's own (its words are at them; an

@@ -10,6 +10,14 @@
 //! (`edgepaint emit` at the chosen design), `yosys/` (`edgepaint report --no-pnr` of the
 //! chosen raster_top), `proof/<scene>.png` (each scene drawn by the chosen RTL in
 //! Verilator, checked equal to the model: image, depth and cycles) and `report.md`.
+//!
+//! A textured scene's geometry and lit colours are fitted as the rest (its textures
+//! stripped: the raster pipeline carries no texture coordinates yet), and the texture unit
+//! (paper 001 section II-5) is fitted on its textured fragments (`fit::texture`): the
+//! narrowest knobs meeting the conformance check and the target's PSNR, written into
+//! `formats.json`'s `"texture"` object, and the texture units emitted beside raster_top, each
+//! into `hdl/<unit>/` (at their built formats, the cache at the default geometry). An
+//! untextured workload gets no texture unit.
 
 use super::input::Size;
 use anyhow::{anyhow, bail, Context, Result};
@@ -149,7 +157,14 @@ fn param(c: &Candidate, name: &str) -> u64 {
 
 pub fn run(args: Args) -> Result<()> {
     let target = Target::parse(&args.target).map_err(|e| anyhow!(e))?;
-    let inputs = args.inputs.iter().map(|p| super::sweep::load(p, args.size)).collect::<Result<Vec<_>>>()?;
+    let mut inputs = Vec::new();
+    let mut textured = Vec::new();
+    for p in &args.inputs {
+        let (input, tex) = load(p, args.size)?;
+        inputs.push(input);
+        textured.extend(tex);
+    }
+    let tex = fit_texture(&textured, &target)?;
     let opts = Options { jobs: args.jobs, shard: None, cache: Some(args.out.join("cache")), area: None };
     let start = std::time::Instant::now();
     let chosen = choose(&args, &inputs, &target, &opts)?;
@@ -160,12 +175,22 @@ pub fn run(args: Args) -> Result<()> {
     let out = &args.out;
     std::fs::create_dir_all(out).with_context(|| format!("{}: cannot create", out.display()))?;
     let formats_path = out.join("formats.json");
-    let formats_json = serde_json::to_string_pretty(&chosen.formats)? + "\n";
+    let mut formats_value = serde_json::to_value(chosen.formats)?;
+    if let Some(t) = &tex {
+        formats_value["texture"] = serde_json::to_value(t.fit.formats)?;
+    }
+    let formats_json = serde_json::to_string_pretty(&formats_value)? + "\n";
     super::input::write(&formats_path, "the fitted formats", formats_json.as_bytes())?;
     let side = 1u32 << chosen.class;
     let reread =
         fx::Formats::with_overrides(side, side, &serde_json::from_str(&formats_json)?).map_err(|e| anyhow!(e))?;
     anyhow::ensure!(reread == chosen.formats, "formats.json does not read back as the fitted formats: a bug in fit");
+    let reread_tex =
+        fx::TexFormats::from_formats_file(&serde_json::from_str(&formats_json)?).map_err(|e| anyhow!(e))?;
+    anyhow::ensure!(
+        tex.as_ref().is_none_or(|t| t.fit.formats == reread_tex),
+        "formats.json does not read back as the fitted texture formats: a bug in fit"
+    );
     let needed = fit::parts::needed(&inputs, &chosen.formats);
     // raster_top's parameters (`emit`, `report`) and how `render --engine rtl` draws with it.
     let (params, render_how): (Vec<(&str, u64)>, Vec<String>) = match c.method {
@@ -205,6 +230,19 @@ pub fn run(args: Args) -> Result<()> {
     let hdl = out.join("hdl");
     let emit = [&["emit", "--unit", "raster_top"][..], &param_args].concat();
     edgepaint("emitting the chosen raster_top", &emit, &["-o", path(&hdl)?])?;
+    if tex.is_some() {
+        // The texture units exist in RTL at their default formats (and the cache at every
+        // geometry of `rtl::texture_cache::GEOMETRIES`): emitted as built, each into its own
+        // directory (`hdl/<unit>/`: `emit` writes one unit's `manifest.json`).
+        for unit in TEXTURE_UNITS {
+            eprintln!("fit: emitting {unit}");
+            let status = Command::new(std::env::current_exe()?)
+                .args(["emit", "--unit", unit, "-o", path(&hdl.join(unit))?])
+                .status()
+                .with_context(|| format!("running edgepaint to emit {unit}"))?;
+            anyhow::ensure!(status.success(), "emitting {unit} failed ({status})");
+        }
+    }
     let yosys = if args.no_synth {
         None
     } else {
@@ -224,6 +262,10 @@ pub fn run(args: Args) -> Result<()> {
         std::fs::create_dir_all(&dir).with_context(|| format!("{}: cannot create", dir.display()))?;
         let how: Vec<&str> = render_how.iter().map(String::as_str).collect();
         for (input, file) in inputs.iter().zip(&args.inputs) {
+            if textured.iter().any(|t| t.name == input.name) {
+                // The RTL draws no textured scene yet (no texture unit in raster_top).
+                continue;
+            }
             let png = dir.join(format!("{}.png", input.name));
             let mut more = [&["--engine", "rtl", "--top", "raster_top", "-o", path(&png)?][..], &how].concat();
             let size = args.size.map(|s| format!("{}x{}", s.width, s.height));
@@ -255,6 +297,7 @@ pub fn run(args: Args) -> Result<()> {
         "margin": args.margin,
         "ranges": f.map_or(Vec::new(), |f| f.ints.iter().map(|i| serde_json::json!({"quantity": i.quantity, "min": i.range.map(|r| r.0), "max": i.range.map(|r| r.1), "int_needed": i.needed, "int_floor": i.floor, "int_default": i.default, "int_fitted": i.fitted})).collect()),
         "parts": scanline.then_some(&needed.parts),
+        "texture": tex.as_ref().map(|t| t.manifest()),
         "parts_needed_by": needed.why.iter().filter(|_| scanline).map(|(p, s)| serde_json::json!({"param": p, "scene": s})).collect::<Vec<_>>(),
     });
     super::input::write(
@@ -262,11 +305,98 @@ pub fn run(args: Args) -> Result<()> {
         "the fit's manifest",
         (serde_json::to_string_pretty(&manifest)? + "\n").as_bytes(),
     )?;
-    let md = report(&chosen, &needed, &target, &args, yosys.as_ref(), &proven, search_s);
+    let mut md = report(&chosen, &needed, &target, &args, yosys.as_ref(), &proven, search_s);
+    md += &match &tex {
+        Some(t) => t.report(),
+        None => "\n## Texture unit\n\nNo scene is textured: the design has no texture unit (no `texture_*` unit emitted, no `\"texture\"` formats).\n".into(),
+    };
     super::input::write(&out.join("report.md"), "the fit's report", md.as_bytes())?;
     print!("{md}");
     println!("wrote {}", out.display());
     Ok(())
+}
+
+/// The texture units a textured workload's design keeps (`rtl`'s names), in pipeline order.
+const TEXTURE_UNITS: [&str; 4] = ["texture_coords", "texture_address", "texture_cache", "texture_filter"];
+
+/// A workload input: the raster pipeline's (its textures stripped, when it has any) and
+/// its textured scene for the texture unit's fit.
+fn load(p: &Path, size: Option<Size>) -> Result<(sweep::run::Input, Option<fit::texture::TexScene>)> {
+    let mut loaded = super::input::load(p, size)?;
+    let tex = loaded.trilist.is_textured().then(|| fit::texture::TexScene {
+        name: p.file_stem().map_or_else(|| p.display().to_string(), |s| s.to_string_lossy().into_owned()),
+        list: loaded.trilist.clone(),
+    });
+    loaded.trilist.textures.clear();
+    for v in loaded.trilist.triangles.iter_mut().flatten() {
+        v.tex = None;
+    }
+    Ok((super::sweep::input_of(p, size, loaded)?, tex))
+}
+
+/// The texture unit's fit on the textured scenes, and what they need of it.
+struct TexFitted {
+    needs: fit::texture::TexNeeds,
+    fit: fit::texture::TexFit,
+}
+
+/// The texture unit fitted to `scenes` for `target`'s PSNR (its `psnr>=` term) and the
+/// conformance check; `None` when no scene is textured.
+fn fit_texture(scenes: &[fit::texture::TexScene], target: &Target) -> Result<Option<TexFitted>> {
+    if scenes.is_empty() {
+        return Ok(None);
+    }
+    let psnr = target.terms.iter().find(|t| t.measure == fit::target::Measure::Psnr).map(|t| t.value);
+    eprintln!("fit: the texture unit's knobs ({} textured scenes)", scenes.len());
+    let fit = fit::texture::fit_formats(scenes, &fit::texture::TexTarget { psnr_db: psnr }).map_err(|e| anyhow!(e))?;
+    Ok(Some(TexFitted { needs: fit::texture::needs(scenes), fit }))
+}
+
+impl TexFitted {
+    fn manifest(&self) -> serde_json::Value {
+        let n = &self.needs;
+        serde_json::json!({
+            "formats": self.fit.formats, "units": TEXTURE_UNITS,
+            "needs": {"unit": n.unit, "filter": n.filter, "mip": n.mip},
+            "scenes": self.fit.scenes.iter().map(|(s, f, x, p)| serde_json::json!({"scene": s, "fragments": f, "failures": x, "psnr_db": p})).collect::<Vec<_>>(),
+            "narrower": self.fit.narrower.iter().map(|(k, t)| serde_json::json!({"knob": k.name(), "value": t.knobs.get(*k), "misses": t.miss})).collect::<Vec<_>>(),
+            "trials": self.fit.trials,
+        })
+    }
+
+    fn report(&self) -> String {
+        let (d, k) = (sweep::texture::Knobs::DEFAULT, sweep::texture::Knobs::of(&self.fit.formats));
+        let n = &self.needs;
+        let why = |s: &Option<String>, what: &str| {
+            s.as_ref().map_or(format!("not needed: {what}"), |s| format!("needed ({s})"))
+        };
+        let mut md = format!(
+            "\n## Texture unit\n\nThe textured scenes' fragments through the bit-exact texture unit against the float reference \
+             (`fit::texture`, the conformance check; {} designs judged). Emitted into `hdl/<unit>/`: {} (the cache at the \
+             default geometry; the units at their built formats: the fitted knobs are in `formats.json`'s `\"texture\"`). Textured scenes are \
+             not drawn in the Verilator proof (raster_top has no texture unit yet).\n\n| | default | fitted |\n|---|---:|---:|\n",
+            self.fit.trials,
+            TEXTURE_UNITS.join(", ")
+        );
+        for knob in sweep::texture::Knob::ALL {
+            md += &format!("| {} | {} | {} |\n", knob.name(), d.get(knob), k.get(knob));
+        }
+        md += &format!(
+            "\n- the texture unit: {}\n- the bilinear filter: {}\n- the mip chain: {}\n\n| scene | fragments | out of tolerance | PSNR (dB) |\n|---|---:|---:|---:|\n",
+            why(&n.unit, "no textured triangle"),
+            why(&n.filter, "every sampler is nearest"),
+            why(&n.mip, "no minified fragment under a mip mode"),
+        );
+        for (s, f, x, p) in &self.fit.scenes {
+            md += &format!("| {s} | {f} | {x} | {} |\n", p.map_or("exact".into(), |p| format!("{p:.1}")));
+        }
+        md += "\nEach knob one bit narrower:\n\n";
+        for (knob, t) in &self.fit.narrower {
+            md +=
+                &format!("- {} = {}: {}\n", knob.name(), t.knobs.get(*knob), t.miss.as_deref().unwrap_or("passes (?)"));
+        }
+        md
+    }
 }
 
 /// `p` as a string for a command line; an error for a path that is not UTF-8.

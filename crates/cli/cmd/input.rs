@@ -37,15 +37,16 @@ pub struct Loaded {
 }
 
 impl Loaded {
-    /// An error naming `path` when its triangles are textured: `what` has no texture unit
-    /// yet (the float reference alone draws textures).
+    /// An error naming `path` when its triangles are textured or blended: `what` has no
+    /// texture unit or blending yet (the float reference and the scanline and vector models
+    /// draw them).
     pub fn untextured(&self, path: &Path, what: &str) -> Result<()> {
+        let draw = "(render --engine float, scanline or vector)";
         if self.trilist.is_textured() {
-            bail!(
-                "{}: the scene is textured, and {what} has no texture unit yet: only the float reference draws \
-                 textures (render --engine float)",
-                path.display()
-            );
+            bail!("{}: the scene is textured, and {what} has no texture unit yet {draw}", path.display());
+        }
+        if self.trilist.is_blended() {
+            bail!("{}: the scene blends, and {what} has no framebuffer blending yet {draw}", path.display());
         }
         Ok(())
     }

@@ -30,7 +30,7 @@ pub fn run(args: Args) -> Result<()> {
     loaded.untextured(&args.input, "the vertex buffer (001's command parser)")?;
     ensure!(loaded.build.is_none(), "{}: already a vertex buffer", args.input.display());
     let list = &loaded.trilist;
-    let fixed = FixedArgs { formats: args.formats.clone(), lanes: None };
+    let fixed = FixedArgs { formats: args.formats.clone(), lanes: None, lod: super::engine::Lod::Max };
     let build =
         Build { formats: fixed.formats(list.width, list.height)?, ..Build::for_screen(list.width, list.height) };
     let background = loaded.background.map(|c| c.round().clamp(0.0, 255.0) as u8);

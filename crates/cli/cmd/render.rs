@@ -79,9 +79,17 @@ pub struct Image {
 
 pub fn run(args: Args) -> Result<()> {
     let loaded = input::load(&args.input, args.size)?;
-    if args.engine != Engine::Float {
-        let name = clap::ValueEnum::to_possible_value(&args.engine).map_or(String::new(), |v| v.get_name().to_owned());
-        loaded.untextured(&args.input, &format!("--engine {name}"))?;
+    if args.engine == Engine::Rtl {
+        loaded.untextured(&args.input, "--engine rtl")?;
+    }
+    if args.engine == Engine::Se && (loaded.trilist.is_textured() || loaded.trilist.is_blended()) {
+        anyhow::bail!(
+            "{}: the scene is textured or blends, and --engine se cannot texture or blend: 000's shading \
+             engines interpolate colour and write it inside their pixel memories, with no per-pixel path \
+             out to a texture unit or a blender (README, \"The texture unit\"); draw it with --engine \
+             scanline or vector",
+            args.input.display()
+        );
     }
     let list = &loaded.trilist;
     let cull_back = match args.cull {
@@ -153,7 +161,8 @@ pub fn run(args: Args) -> Result<()> {
                 analysis: args.analysis,
                 background: loaded.background.map(|c| c.round().clamp(0.0, 255.0) as u8),
             };
-            let r = model::render::render(list, &f, &mopts, &mut progress);
+            let texturing = args.fixed.texturing(list, args.linear, &args.input)?;
+            let r = model::render::render_with(list, &f, &mopts, texturing.as_ref(), &mut progress);
             for p in r.problems.iter().take(5) {
                 eprintln!("warning: triangle {} not drawn: {}", p.triangle, problem(&p.why));
             }
@@ -171,6 +180,20 @@ pub fn run(args: Args) -> Result<()> {
                 st.input_rejected + st.overflowed, st.spans, st.fragments, st.z_clipped, st.pixels_written, cycles.total,
                 st.pixels_written as f64 / cycles.total.max(1) as f64
             );
+            let summary = match &texturing {
+                None => summary,
+                Some(_) => {
+                    let c = accuracy::texture::cache_stats(&accuracy::texture::DEFAULT_CACHE, &r.fetches);
+                    format!(
+                        "{summary}; texture cache ({} sets, {} ways, {} words): {} accesses (2x2 footprints), hit rate {:.4}",
+                        c.sets,
+                        c.ways,
+                        c.line,
+                        r.fetches.len(),
+                        c.hit_rate
+                    )
+                }
+            };
             let depth16 = r.fb.depth.iter().map(|&d| depth16(d, f.z.frac)).collect();
             let image = Image { width: r.fb.width, height: r.fb.height, rgb: r.fb.rgb, depth16, written: r.fb.written };
             (image, (summary, st.fragments))

@@ -1,5 +1,7 @@
 //! `edgepaint sweep`: every scene through every design point of a grid, charted
-//! (`sweep` crate); `edgepaint sweep merge`: the shards of a sweep as one.
+//! (`sweep` crate); `edgepaint sweep merge`: the shards of a sweep as one; `edgepaint sweep
+//! --texture`: textured scenes through the texture unit's knobs and cache geometries
+//! (`sweep::texture`).
 
 use super::input::{self, Size};
 use anyhow::{anyhow, Context, Result};
@@ -50,6 +52,12 @@ pub struct Args {
     /// instead of those edgepaint was built with.
     #[arg(long, value_name = "FILE")]
     area: Option<PathBuf>,
+    /// Sweep the texture unit instead (paper 001 section II-5): textured scenes through its
+    /// precision knobs (subtexel, lod_frac, weight, recip) and cache geometries, `--grid` a
+    /// texture grid (README, "Sweep"); writes texture.jsonl, texture.csv, the charts and
+    /// texture.md.
+    #[arg(long, conflicts_with_all = ["method", "shard", "calibrate", "area"])]
+    texture: bool,
 }
 
 #[derive(clap::Subcommand)]
@@ -96,11 +104,14 @@ pub fn run(args: Args) -> Result<()> {
         let rows = sweep::store::merge(&dirs).map_err(|e| anyhow!(e))?;
         return finish(&out, &rows, true);
     }
-    let out = args.out.context("give the output directory with -o DIR")?;
+    let out = args.out.clone().context("give the output directory with -o DIR")?;
     if args.calibrate {
         return super::calibrate::run(&out);
     }
     anyhow::ensure!(!args.inputs.is_empty(), "give at least one scene or trilist to sweep");
+    if args.texture {
+        return texture(&args, &out);
+    }
     let area = args.area.as_deref().map(area_model).transpose()?;
     let mut grid = match &args.grid {
         Some(path) => {
@@ -170,6 +181,51 @@ fn finish(out: &Path, rows: &[sweep::row::Row], charts: bool) -> Result<()> {
     Ok(())
 }
 
+/// `edgepaint sweep --texture`: the texture unit's grid on the textured inputs, its rows,
+/// charts and report into `out`.
+fn texture(args: &Args, out: &Path) -> Result<()> {
+    use sweep::texture::{TexGrid, TexInput};
+    let grid = match &args.grid {
+        Some(path) => {
+            let text =
+                std::fs::read_to_string(path).with_context(|| format!("{}: cannot read the grid", path.display()))?;
+            TexGrid::parse(&text).map_err(|e| anyhow!("{}: {e}", path.display()))?
+        }
+        None => TexGrid::default(),
+    };
+    let inputs = args
+        .inputs
+        .iter()
+        .map(|p| {
+            let name = p.file_stem().map_or_else(|| p.display().to_string(), |s| s.to_string_lossy().into_owned());
+            Ok(TexInput { name, list: input::load(p, args.size)?.trilist })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let points = grid.points().len();
+    let bar = ProgressBar::new((inputs.len() * points) as u64).with_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} (scene, knob point)s, {elapsed} elapsed, {eta} to go")
+            .expect("a valid template"),
+    );
+    let start = Instant::now();
+    let rows = sweep::texture::run(&inputs, &grid, args.jobs, &|| bar.inc(1)).map_err(|e| anyhow!(e))?;
+    bar.finish_and_clear();
+    println!(
+        "{} rows ({} scenes x {points} knob points x {} cache geometries) in {:.1} s",
+        rows.len(),
+        inputs.len(),
+        grid.caches.len(),
+        start.elapsed().as_secs_f64()
+    );
+    sweep::texture::write(out, &rows).map_err(|e| anyhow!(e))?;
+    let charts = sweep::texture::charts(&rows);
+    for c in &charts {
+        sweep::chart::draw(c, out).map_err(|e| anyhow!(e))?;
+    }
+    input::write(&out.join("texture.md"), "the texture report", sweep::texture::report(&rows, &charts).as_bytes())?;
+    println!("wrote {}", out.display());
+    Ok(())
+}
+
 /// The area model fitted to the calibration samples in `path`.
 fn area_model(path: &Path) -> Result<sweep::area::Model> {
     let text = std::fs::read_to_string(path).with_context(|| format!("{}: cannot read", path.display()))?;
@@ -182,6 +238,12 @@ fn area_model(path: &Path) -> Result<sweep::area::Model> {
 pub fn load(path: &Path, size: Option<Size>) -> Result<Input> {
     let loaded = input::load(path, size)?;
     loaded.untextured(path, "the fixed-point models")?;
+    input_of(path, size, loaded)
+}
+
+/// The sweep's input of `loaded`, read from `path` at `size`: named by its file's stem,
+/// keyed by its bytes and the size.
+pub fn input_of(path: &Path, size: Option<Size>, loaded: input::Loaded) -> Result<Input> {
     let bytes = std::fs::read(path).with_context(|| format!("{}: cannot read", path.display()))?;
     let mut h = std::collections::hash_map::DefaultHasher::new();
     (bytes, size.map(|s| (s.width, s.height))).hash(&mut h);
