@@ -371,15 +371,12 @@ fn raster_top_back_to_back_vs_model() {
     assert!(gaps[fill..].iter().all(|&g| g == ii), "one-pixel triangles taken every {ii} cycles: {gaps:?}");
 }
 
-/// The memory port stalled (`mem$ready` low 30% of the time, in bursts), reads returning
-/// the old or the new word: the same image, nothing lost or written twice.
-#[test]
-fn raster_top_memory_stalled_vs_model() {
-    let (l, cull) = scene("all", Some((96, 64)));
-    for rdw in [ReadDuringWrite::Old, ReadDuringWrite::New] {
-        let mut rng = ChaCha8Rng::seed_from_u64(seed());
-        let mut burst = 0;
-        let mut ready = |_| {
+/// A memory ready in 80% of the cycles, with bursts of 1 to 19 stalled cycles: which
+/// cycles are ready, for the first `n`.
+fn stall_pattern(rng: &mut ChaCha8Rng, n: usize) -> Vec<bool> {
+    let mut burst = 0;
+    (0..n)
+        .map(|_| {
             if burst > 0 {
                 burst -= 1;
                 return false;
@@ -388,11 +385,45 @@ fn raster_top_memory_stalled_vs_model() {
                 burst = rng.gen_range(1..20);
             }
             rng.gen_bool(0.8)
-        };
+        })
+        .collect()
+}
+
+/// The memory port stalled (`mem$ready` low 30% of the time, in bursts), reads returning
+/// the old or the new word: the same image, nothing lost or written twice, and the frame's
+/// cycles those `model::cycles::scanline_frame_stalled` predicts for the same stalls.
+#[test]
+fn raster_top_memory_stalled_vs_model() {
+    let (l, cull) = scene("all", Some((96, 64)));
+    for rdw in [ReadDuringWrite::Old, ReadDuringWrite::New] {
+        let pattern = stall_pattern(&mut ChaCha8Rng::seed_from_u64(seed()), 1 << 20);
+        let ready = |c: u64| pattern.get(c as usize).copied().unwrap_or(true);
         let mut dut = model();
-        let (_, out) =
-            check("all, stalled", &mut dut, &l, cull, MemoryModel { read_during_write: rdw, ready: &mut ready });
+        let (prep, out) =
+            check("all, stalled", &mut dut, &l, cull, MemoryModel { read_during_write: rdw, ready: &mut |c| ready(c) });
         assert!(out.stalls > out.cycles / 5, "{} stalled cycles of {}", out.stalls, out.cycles);
+        let predicted = prep.cycles_stalled(&Timing::default(), &ready).unwrap();
+        assert_eq!(out.cycles, predicted, "all, stalled: cycles, RTL against model::cycles");
+        // Most stalls fall where the pipeline waits for setup anyway: they cost some cycles,
+        // far fewer than stalled.
+        assert!(predicted > prep.cycles(), "the stalls cost cycles: {predicted} against {}", prep.cycles());
+    }
+    // Pixel-bound frames behind a memory ready one cycle in two at random: span, the span
+    // FIFO, the edge walk and setup all wait on it, and the cycle model follows.
+    let mut rng = ChaCha8Rng::seed_from_u64(seed() ^ 0x5a11);
+    let half: Vec<bool> = (0..1 << 21).map(|_| rng.gen_bool(0.5)).collect();
+    let ready = |c: u64| half.get(c as usize).copied().unwrap_or(true);
+    for name in ["torus", "clip"] {
+        let (l, cull) = scene(name, Some((160, 120)));
+        let mut dut = model();
+        let (prep, out) = check(name, &mut dut, &l, cull, ready_memory(&mut |c| ready(c)));
+        let predicted = prep.cycles_stalled(&Timing::default(), &ready).unwrap();
+        assert_eq!(out.cycles, predicted, "{name}, half stalled: cycles, RTL against model::cycles");
+        assert!(
+            predicted > prep.cycles() + prep.render.stats.fragments / 2,
+            "{name}: {predicted} against {}",
+            prep.cycles()
+        );
     }
 }
 
@@ -403,12 +434,9 @@ fn raster_top_hdl_vs_verilator_lockstep() {
     let (l, cull) = scene("cube", Some((24, 16)));
     let vl = testbenches::verilated("raster_top");
     let mut dual = Dual::new(frame::unit(), vl.model().unwrap_or_else(|e| panic!("{e}")));
-    let mut stall = 0u64;
-    let mut ready = |_| {
-        stall += 1;
-        !stall.is_multiple_of(7)
-    };
-    check("cube, lockstep", &mut dual, &l, cull, ready_memory(&mut ready));
+    let ready = |c: u64| c % 7 != 6;
+    let (prep, out) = check("cube, lockstep", &mut dual, &l, cull, ready_memory(&mut |c| ready(c)));
+    assert_eq!(out.cycles, prep.cycles_stalled(&Timing::default(), &ready).unwrap(), "cube, lockstep: cycles");
 }
 
 /// Every shipped scene at 128 x 96 in rust-hdl and Verilator in lockstep, every output of
@@ -421,7 +449,8 @@ fn raster_top_hdl_vs_verilator_lockstep_long() {
     for name in ["cube", "sphere", "cone", "torus", "pawn", "house", "all", "clip"] {
         let (l, cull) = scene(name, Some((128, 96)));
         let mut dual = Dual::new(frame::unit(), vl.model().unwrap_or_else(|e| panic!("{e}")));
-        check(&format!("{name}, lockstep"), &mut dual, &l, cull, ready_memory(&mut |c| c % 5 != 2));
+        let (prep, out) = check(&format!("{name}, lockstep"), &mut dual, &l, cull, ready_memory(&mut |c| c % 5 != 2));
+        assert_eq!(out.cycles, prep.cycles_stalled(&Timing::default(), &|c| c % 5 != 2).unwrap(), "{name}: cycles");
     }
 }
 

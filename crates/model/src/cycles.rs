@@ -102,7 +102,20 @@ pub struct FrameCycles {
 
 /// Cycles of a frame through the scanline pipeline.
 pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
-    front_end_frame(work, t, &mut SpanUnit { free: 0, write: write_latency(t) })
+    scanline_frame_stalled(work, t, &|_| true)
+}
+
+/// [`scanline_frame`] behind a memory ready (`raster_top`'s `mem$ready`) in the cycles
+/// `ready` says (cycle 0 the one the first triangle is offered in; ready again after any
+/// cycle, or the frame never ends). `pixel_out` takes a pixel only in a ready cycle and
+/// moves its stages only then, so a pixel taken in cycle c is tested in the first ready
+/// cycle after c and written in the next; span's pixel register holds a pixel not taken,
+/// and its walk with it, unsent cycles too (`rtl::span`); the span FIFO, the edge walk and
+/// setup fill behind it as the cycle model has them without stalls. Without `pixel_out`
+/// ([`Timing::pixel_out`]), `ready` is the host's `out$ready`.
+pub fn scanline_frame_stalled(work: &[Work], t: &Timing, ready: &dyn Fn(u64) -> bool) -> FrameCycles {
+    let sink = Sink { ready, pixel_out: t.pixel_out };
+    front_end_frame(work, t, &mut SpanUnit { free: 0, held: None, sink })
 }
 
 /// Cycles of a frame through the SE back end (`rtl::raster_top` with `METHOD = 2`): the
@@ -128,29 +141,86 @@ trait SpanTaker {
     fn take(&mut self, avail: u64, s: &SpanWork, last: &mut u64, busy: &mut u64) -> u64;
     /// The first cycle it may take the next span.
     fn free(&self) -> u64;
+    /// After the frame's last span: the frame lasts at least until what it still holds is
+    /// through.
+    fn finish(&mut self, _last: &mut u64) {}
 }
 
-/// `span`: it takes a command when idle or in the last cycle of the walk before; walk cycle
-/// k's pixel leaves in start + k + LATENCY - 1 (its pixel register), and `pixel_out` is
-/// empty `write` cycles after.
-struct SpanUnit {
-    free: u64,
-    write: u64,
+/// What takes `span`'s pixels: `pixel_out` and its memory, ready in the cycles `ready` says
+/// (or, without `pixel_out`, the host).
+struct Sink<'a> {
+    ready: &'a dyn Fn(u64) -> bool,
+    pixel_out: bool,
 }
 
-impl SpanTaker for SpanUnit {
-    fn take(&mut self, avail: u64, s: &SpanWork, last: &mut u64, busy: &mut u64) -> u64 {
-        let start = avail.max(self.free);
-        self.free = start + s.cycles as u64;
-        *busy += s.cycles as u64;
-        if let Some(k) = s.last_sent {
-            *last = (*last).max(start + k as u64 + (span::LATENCY as u64 - 1) + self.write);
+impl Sink<'_> {
+    /// The cycle a pixel presented from cycle `from` on is taken in: the first ready one.
+    fn take(&self, from: u64) -> u64 {
+        (from..).find(|&c| (self.ready)(c)).expect("the memory is ready again")
+    }
+
+    /// The cycle the frame can be done in once the pixel taken in `taken` is through: the
+    /// cycle after `pixel_out`'s write, which is in the second ready cycle after `taken`
+    /// (its test in the first; `taken` + 2 without stalls: [`pixel_out::LATENCY`]); without
+    /// `pixel_out`, the cycle after `taken`.
+    fn through(&self, taken: u64) -> u64 {
+        if self.pixel_out {
+            const _: () = assert!(pixel_out::LATENCY == 2);
+            self.take(self.take(taken + 1) + 1) + 1
+        } else {
+            taken + 1
         }
+    }
+}
+
+/// `span`: it takes a command when idle or in the last cycle of the walk before, and walks
+/// it in the cycles from `start` (in this model's count; `FrameCycles::total` is the cycle
+/// `done` rises in), a walk cycle (a pixel sent or not) in each cycle its pixel register is
+/// empty or its pixel is taken; a pixel walked in cycle a is in the register from a + 1
+/// ([`span::LATENCY`] = 2) until the sink takes it. Without stalls, walk cycle k is
+/// start + k, its pixel taken in start + k + 1, and the frame done 3 cycles after that.
+struct SpanUnit<'a> {
+    free: u64,
+    /// The cycle from which the pixel register holds a pixel not yet taken, if it does.
+    held: Option<u64>,
+    sink: Sink<'a>,
+}
+
+impl SpanUnit<'_> {
+    /// The pixel register's pixel, if any, taken by the sink: the cycle it is taken in
+    /// (the frame lasts until it is through).
+    fn release(&mut self, last: &mut u64) -> Option<u64> {
+        let taken = self.sink.take(self.held.take()?);
+        *last = (*last).max(self.sink.through(taken));
+        Some(taken)
+    }
+}
+
+impl SpanTaker for SpanUnit<'_> {
+    fn take(&mut self, avail: u64, s: &SpanWork, last: &mut u64, busy: &mut u64) -> u64 {
+        const _: () = assert!(span::LATENCY == 2);
+        let start = avail.max(self.free);
+        let (mut at, mut unsent) = (start, s.unsent.iter().peekable());
+        for k in 0..s.cycles {
+            // Walk cycle k: in the first cycle from `at` with the register empty, or in the
+            // one its pixel is taken in.
+            let walked = self.release(last).map_or(at, |taken| taken.max(at));
+            if unsent.next_if_eq(&&k).is_none() {
+                self.held = Some(walked + 1);
+            }
+            at = walked + 1;
+        }
+        self.free = at;
+        *busy += self.free - start;
         start
     }
 
     fn free(&self) -> u64 {
         self.free
+    }
+
+    fn finish(&mut self, last: &mut u64) {
+        self.release(last);
     }
 }
 
@@ -251,6 +321,7 @@ fn front_end_frame(work: &[Work], t: &Timing, taker: &mut impl SpanTaker) -> Fra
         ew_free = now;
         last = last.max(taker.free()).max(now);
     }
+    taker.finish(&mut last);
     out.total = last;
     out
 }
@@ -509,9 +580,9 @@ mod tests {
         assert_eq!(scanline_frame(&frame, &l5()).total, 33 + 28 + 3);
     }
 
-    /// A span of `c` cycles whose last cycle sends a pixel.
+    /// A span of `c` cycles, each sending a pixel.
     fn full(c: u32) -> Option<SpanWork> {
-        Some(SpanWork { cycles: c, last_sent: Some(c - 1), ..SpanWork::default() })
+        Some(SpanWork { cycles: c, ..SpanWork::default() })
     }
 
     #[test]
@@ -548,11 +619,50 @@ mod tests {
         // dropped): the frame ends when span is done, or 4 cycles after the last pixel's
         // walk cycle (out of the pixel register, into pixel_out, written).
         let mut tail = w.clone();
-        tail.scanlines[2] = Some(SpanWork { cycles: 5, last_sent: Some(1), ..SpanWork::default() });
+        tail.scanlines[2] = Some(SpanWork { cycles: 5, unsent: vec![2, 3, 4], ..SpanWork::default() });
         assert_eq!(scanline_frame(&[tail.clone()], &l5()).total, 49);
-        tail.scanlines[2] = Some(SpanWork { cycles: 1, last_sent: None, ..SpanWork::default() });
+        tail.scanlines[2] = Some(SpanWork { cycles: 1, unsent: vec![0], ..SpanWork::default() });
         // Dropped: span done at 45, the pixel walked in 43 out of span in 44, written in 46.
         assert_eq!(scanline_frame(&[tail], &l5()).total, 47);
+    }
+
+    /// The memory stalling (`mem$ready` low): `pixel_out` and span's pixel register hold,
+    /// the walk with them; a stall with nothing to take costs nothing.
+    #[test]
+    fn cycles_scanline_frame_behind_a_stalling_memory() {
+        // The frame of `cycles_one_triangle_through_the_scanline_pipeline`: spans walked in
+        // 34..38, 39..43, 44..48, each pixel in the register from the cycle after its walk
+        // cycle and taken there; the last tested in 50, written in 51, done in 52.
+        let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], ..Work::default() };
+        let stalled = |from: u64, to: u64| {
+            scanline_frame_stalled(std::slice::from_ref(&w), &l5(), &move |c| !(from..=to).contains(&c)).total
+        };
+        assert_eq!(stalled(1, 0), 52, "never stalled: as scanline_frame");
+        // Stalled before the first pixel: nothing waits for the memory.
+        assert_eq!(stalled(10, 30), 52);
+        // Stalled in 40..44: the second span's first pixel (in the register from 40) is
+        // taken in 45, its second walk cycle with it; everything 5 cycles later.
+        assert_eq!(stalled(40, 44), 57);
+        // Stalled in 51 only: the last pixel, taken in 49 and tested in 50, is written in 52.
+        assert_eq!(stalled(51, 51), 53);
+        // Stalled in 36..38 under a first span that sends nothing: its walk goes on (the
+        // register stays empty); the second span's first pixel is walked in 39 and taken in
+        // 40, after the stall: 52 as without it.
+        let quiet = Work {
+            scanlines: vec![
+                Some(SpanWork { cycles: 5, unsent: vec![0, 1, 2, 3, 4], ..SpanWork::default() }),
+                full(5),
+                full(5),
+            ],
+            ..w.clone()
+        };
+        assert_eq!(scanline_frame(std::slice::from_ref(&quiet), &l5()).total, 52);
+        let quiet_stalled = scanline_frame_stalled(std::slice::from_ref(&quiet), &l5(), &|c| !(36..=38).contains(&c));
+        assert_eq!(quiet_stalled.total, 52);
+        // The same stall under a span that sends: its pixel walked in 35, in the register
+        // from 36, is taken in 39, and each walk cycle after waits for the one before:
+        // walked in 34, 35, 39, 40, 41 instead of 34..38: 3 cycles later.
+        assert_eq!(stalled(36, 38), 55);
     }
 
     #[test]

@@ -63,6 +63,16 @@ impl RasterTopOut {
             Method::Vector { .. } => cycles::vector_frame(&self.render.work, timing).total,
         }
     }
+
+    /// The frame's cycles with the memory ready in the cycles `ready` says
+    /// ([`cycles::scanline_frame_stalled`]); the scanline method only: an error for the
+    /// vector method, whose cycle model assumes a memory that never stalls.
+    pub fn cycles_stalled(&self, timing: &Timing, ready: &dyn Fn(u64) -> bool) -> Result<u64, String> {
+        match self.method {
+            Method::Scanline => Ok(cycles::scanline_frame_stalled(&self.render.work, timing, ready).total),
+            Method::Vector { .. } => Err("the vector method's cycle model has a memory that never stalls".into()),
+        }
+    }
 }
 
 /// `list` drawn with `cull` on `background` by the scanline `raster_top` of `build`

@@ -73,13 +73,14 @@ pub struct Work {
     pub vector_last_sent: Option<(u32, u32)>,
 }
 
-/// What one span command cost `span` (`model::span::SpanOut`): its cycles, and the
-/// cycle of its last pixel sent to `pixel_out`, if any; and what the SE back end needs of
+/// What one span command cost `span` (`model::span::SpanOut`): its cycles, and those
+/// that sent no pixel to `pixel_out`; and what the SE back end needs of
 /// it (`cycles::se_frame`): its row, and whether it meets the screen (`se_cmd::on_screen`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct SpanWork {
     pub cycles: u32,
-    pub last_sent: Option<u32>,
+    /// The walk's cycles that sent nothing (`model::span::SpanOut::unsent`).
+    pub unsent: Vec<u32>,
     pub y: u32,
     pub on_screen: bool,
 }
@@ -112,7 +113,7 @@ pub fn trace(v: &[Vtx; 3], clip: Clip, opts: &Options, ctx: &mut Ctx) -> Result<
                     t.pixels.extend(o.pixels);
                     SpanWork {
                         cycles: o.cycles,
-                        last_sent: o.last_sent,
+                        unsent: o.unsent,
                         y: cmd.y as u32,
                         on_screen: crate::se_cmd::on_screen(cmd, clip.width),
                     }

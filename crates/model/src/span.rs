@@ -47,9 +47,11 @@ pub struct SpanOut {
     pub cycles: u32,
     /// Pixels walked whose depth fell outside [0, z_max].
     pub z_clipped: u32,
-    /// The cycle of the walk (from 0) its last pixel went out in, if any: the walk may end
-    /// on pixels right of the screen or outside the depth range, which go nowhere.
-    pub last_sent: Option<u32>,
+    /// The cycles of the walk (from 0) that sent no pixel: right of the screen, outside the
+    /// depth range (the walk may end on such pixels, which go nowhere), or the one cycle of
+    /// a dropped span. A stalled output holds the walk in those too
+    /// (`cycles::scanline_frame_stalled`).
+    pub unsent: Vec<u32>,
 }
 
 /// A z accumulator rounded to the depth buffer's fraction bits (may be out of range).
@@ -70,12 +72,12 @@ pub fn span(cmd: &SpanCmd, clip: Clip, ctx: &mut Ctx) -> SpanOut {
     let outside_x = cmd.xl > w - 1 || cmd.xr < 0;
     let outside_z = (zl < 0 && zr < 0) || (zl > zmax && zr > zmax);
     if outside_x || outside_z {
-        return SpanOut { pixels: Vec::new(), cycles: 1, z_clipped: 0, last_sent: None };
+        return SpanOut { pixels: Vec::new(), cycles: 1, z_clipped: 0, unsent: vec![0] };
     }
     // 003: a span starting left of the screen is walked right to left.
     let (mut x, last, dir, mut a): (i128, i128, i128, Attrs) =
         if cmd.xl < 0 { (cmd.xr, 0, -1, cmd.right) } else { (cmd.xl, cmd.xr.min(w - 1), 1, cmd.left) };
-    let mut out = SpanOut { pixels: Vec::new(), cycles: 0, z_clipped: 0, last_sent: None };
+    let mut out = SpanOut { pixels: Vec::new(), cycles: 0, z_clipped: 0, unsent: Vec::new() };
     loop {
         out.cycles += 1;
         if x < w {
@@ -83,10 +85,12 @@ pub fn span(cmd: &SpanCmd, clip: Clip, ctx: &mut Ctx) -> SpanOut {
             if (0..=zmax).contains(&z) {
                 let rgb = a.c.map(|c| color_of(c, &f));
                 out.pixels.push(Pixel { x: x as u32, y: cmd.y as u32, z: z as u32, rgb });
-                out.last_sent = Some(out.cycles - 1);
             } else {
                 out.z_clipped += 1;
+                out.unsent.push(out.cycles - 1);
             }
+        } else {
+            out.unsent.push(out.cycles - 1);
         }
         if x == last {
             break;
