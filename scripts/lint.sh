@@ -44,7 +44,7 @@ if [[ ${#files[@]} -eq 0 ]]; then
     # arguments that emit it: raster_top at the larger size classes (screens up to 2048 and
     # 4096), with units left out, at formats other than its class's defaults (24-bit depth,
     # ...), with its barycentric method at one lane (hdl-out/ holds it at four, and the SE
-    # back end); the vector unit and pixel_out with several lanes.
+    # back end); the vector unit and pixel_out with several lanes, and pixel_out blending.
     variants=(
         "raster_top-N11" "--param N=11"
         "raster_top-N12" "--param N=12"
@@ -55,6 +55,7 @@ if [[ ${#files[@]} -eq 0 ]]; then
         "raster_top-custom" "--formats crates/rtl/custom-formats.json"
         "vector-LANES=4" "--param LANES=4"
         "pixel_out-LANES=4" "--param LANES=4"
+        "pixel_out-BLEND=1" "--param BLEND=1"
     )
     emit=()
     for ((i = 0; i < ${#variants[@]}; i += 2)); do

@@ -12,6 +12,7 @@ mod gpu_top;
 mod harness;
 mod pixel_bus;
 mod pixel_out;
+mod pixel_out_blend;
 mod raster_top;
 mod se;
 mod se_cmd;

@@ -3,7 +3,9 @@
 //!
 //! In hardware it reads the old depth through a synchronous memory port (data
 //! the cycle after the address) and writes depth and colour when the new depth
-//! is less: latency 2, one pixel per cycle. Mirrors `rtl::pixel_out`.
+//! is less: latency 2, one pixel per cycle. Mirrors `rtl::pixel_out`; with its `BLEND` = 1
+//! it also reads the colour and writes the blend, as [`Framebuffer::pixel_out_blended`], at
+//! the same latency.
 
 use crate::blend::blend;
 use crate::span::Pixel;

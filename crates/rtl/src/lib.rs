@@ -333,7 +333,7 @@ pub const UNITS: &[Unit] = &[
     },
     Unit {
         name: "pixel_out",
-        doc: "depth test LESS and depth/colour writes through a synchronous memory port, one pixel (or chunk of LANES pixels) per cycle",
+        doc: "depth test LESS and depth/colour writes through a synchronous memory port, one pixel (or chunk of LANES pixels) per cycle; BLEND = 1: the colour blended onto the colour read",
         params: &[
             N,
             DEPTH_TEST,
@@ -341,6 +341,11 @@ pub const UNITS: &[Unit] = &[
                 name: "LANES",
                 default: 1,
                 doc: "1: a pixel a cycle on the pixel link (inp), a memory word per pixel; 2, 4 or 8: a chunk of a row a cycle (in_*), a memory word per chunk",
+            },
+            Param {
+                name: "BLEND",
+                default: 0,
+                doc: "0: the pixel's colour is written; 1 (LANES = 1): blended onto the colour read (mem$rd_rgb) by the pixel's alpha and mode (inp$alpha, inp$mode: blend's six modes, 001 §II.5, GL 4.6 §17.3.6), latency 2",
             },
         ],
         build: by_build!(pixel_out::emit_pixel_out),
@@ -520,7 +525,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("triangle_setup", &[("N", 10), ("K", 7), ("L", model::divider::LATENCY as u64)]),
     ("edge_walk", &[("N", 10), ("CLIP_Y", 1)]),
     ("span", &[("N", 10), ("CLIP_X", 1), ("CLIP_Z", 1)]),
-    ("pixel_out", &[("N", 10), ("DEPTH_TEST", 1), ("LANES", 1)]),
+    ("pixel_out", &[("N", 10), ("DEPTH_TEST", 1), ("LANES", 1), ("BLEND", 0)]),
     ("se_cmd", &[("N", 10)]),
     ("pixel_bus", &[("N", 10)]),
     ("gpu_regs", &[("N", 10)]),

@@ -51,6 +51,28 @@ crate::bundle! {
 /// colour (`{R, G, B}`, R in the top byte), as the scanline `raster_top` has it.
 pub type MemoryPort = ChunkPort<1, ADDR, DEPTH, RGB>;
 
+crate::bundle! {
+    /// The blending `pixel_out`'s memory port (`BLEND` = 1, `rtl::pixel_out::PixelOutBlend`):
+    /// [`MemoryPort`] whose reads also return the word's colour, on `rd_rgb`, for the blend
+    /// onto it. The same words, addresses and timing.
+    BlendMemoryPort {
+        /// The memory performs this cycle's read and write at the rising edge; low: neither.
+        In ready: Bit,
+        /// Read the word at `rd_addr`, `{y, x}` (one lane's enable, as `MemoryPort`'s).
+        Out rd_en: Bits<1>,
+        Out rd_addr: Bits<ADDR>,
+        /// The depth and the colour (`{R, G, B}`, R on top) last read, from the cycle after
+        /// the read.
+        In rd_z: Bits<DEPTH>,
+        In rd_rgb: Bits<RGB>,
+        /// Write `wr_z` and `wr_rgb` at `wr_addr`.
+        Out wr_en: Bits<1>,
+        Out wr_addr: Bits<ADDR>,
+        Out wr_z: Bits<DEPTH>,
+        Out wr_rgb: Bits<RGB>,
+    }
+}
+
 /// Declares an AXI4 read master's address (AR) and data (R) channels with `$data`-bit data
 /// as a bundle (the ports `ar_valid`, `ar_ready`, `ar_addr`, `ar_len`, `ar_size`,
 /// `ar_burst`, `r_valid`, `r_ready`, `r_data`, `r_resp`).
@@ -151,18 +173,42 @@ crate::bundle! {
     }
 }
 
-crate::link! {
+/// Declares a link whose fields are a pixel's (`model::span::Pixel`: `x`, `y`, `z`, `rgb0..2`),
+/// then the fields given.
+macro_rules! pixel_link {
+    ($(#[$meta:meta])* $source:ident => $sink:ident { $($more:tt)* }) => {
+        crate::link! {
+            $(#[$meta])*
+            $source => $sink {
+                x: Bits<SCREEN>,
+                y: Bits<SCREEN>,
+                /// Depth, the depth buffer's `DEPTH` bits.
+                z: Bits<DEPTH>,
+                /// R, G, B.
+                rgb0: Bits<CHANNEL>,
+                rgb1: Bits<CHANNEL>,
+                rgb2: Bits<CHANNEL>,
+                $($more)*
+            }
+        }
+    };
+}
+
+pixel_link! {
     /// A pixel on screen (`model::span::Pixel`): `span` -> `pixel_out`, and the fragments
     /// out of a `raster_top` without `pixel_out`.
-    PixelSource => PixelSink {
-        x: Bits<SCREEN>,
-        y: Bits<SCREEN>,
-        /// Depth, the depth buffer's `DEPTH` bits.
-        z: Bits<DEPTH>,
-        /// R, G, B.
-        rgb0: Bits<CHANNEL>,
-        rgb1: Bits<CHANNEL>,
-        rgb2: Bits<CHANNEL>,
+    PixelSource => PixelSink {}
+}
+
+pixel_link! {
+    /// A pixel to blend (`model::span::Pixel` with the arguments of
+    /// `model::pixel_out::Framebuffer::pixel_out_blended`): into the blending `pixel_out`
+    /// (`BLEND` = 1).
+    BlendPixelSource => BlendPixelSink {
+        /// The fragment's alpha (0..=255 for 0..1).
+        alpha: Bits<8>,
+        /// The blend mode, `rtl::blend`'s code (`model::blend::MODES`' index; 6 and 7 opaque).
+        mode: Bits<3>,
     }
 }
 

@@ -2,7 +2,8 @@
 //! `rtl::pixel_out` for the port's contract): one word per chunk of `lanes` pixels of a row
 //! at address `{y, x / lanes}` (`x / lanes` in the low `n` - log2 `lanes` bits for size
 //! class `n`; one lane: a word per pixel at `{y, x}`), an enable per lane, reads returning
-//! data the cycle after, `mem$ready` stalling both.
+//! data the cycle after (the depth, and for the blending `pixel_out` the colour too),
+//! `mem$ready` stalling both.
 
 use crate::streams::unsigned;
 use crate::{Outputs, Value};
@@ -131,6 +132,7 @@ pub struct Memory {
     x_bits: u32,
     read_during_write: ReadDuringWrite,
     rd_z: [u32; MAX_LANES],
+    rd_rgb: [u32; MAX_LANES],
 }
 
 impl Memory {
@@ -158,6 +160,7 @@ impl Memory {
             reads: 0,
             read_during_write: rdw,
             rd_z: [0; MAX_LANES],
+            rd_rgb: [0; MAX_LANES],
         }
     }
 
@@ -187,6 +190,12 @@ impl Memory {
     /// `rd_z` as the port `mem$rd_z` of `depth`-bit lanes takes it.
     pub fn rd_z_value(&self, depth: usize) -> Value {
         pack(&self.rd_z, depth, self.lanes as usize)
+    }
+
+    /// The colours last read, per lane, as the port `mem$rd_rgb` of the blending
+    /// `pixel_out` takes them (`{R, G, B}`, R on top).
+    pub fn rd_rgb_value(&self) -> Value {
+        pack(&self.rd_rgb, 3 * CHANNEL, self.lanes as usize)
     }
 
     /// Lane `lane`'s pixel `(x, y)` of the word at address `addr`.
@@ -241,6 +250,8 @@ impl Memory {
         for (lane, at) in read.iter().enumerate() {
             if let Some(at) = *at {
                 self.rd_z[lane] = self.depth[at];
+                let [r, g, b] = self.rgb[at].map(u32::from);
+                self.rd_rgb[lane] = (r << (2 * CHANNEL)) | (g << CHANNEL) | b;
                 self.reads += 1;
             }
         }

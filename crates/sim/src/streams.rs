@@ -2,7 +2,7 @@
 //! and as the command parser hands it over, `model::command_parser::Triangle`),
 //! a sorted triangle (`model::cull_sort::Sorted`), a set-up triangle
 //! (`model::triangle_setup::TriangleSetupOut`), a span command (`model::edge_walk::SpanCmd`)
-//! and a pixel (`model::span::Pixel`) on the pins `<end>$<field>` of a link end, nested
+//! and a pixel (`model::span::Pixel`, also with an alpha and a blend mode) on the pins `<end>$<field>` of a link end, nested
 //! fields joined by `_` (`inp$maj_at_c0`, `out$left_z`, `out$rgb2`). The fields and their
 //! widths are read off the link's declaration (`rtl::links`), so a field the model does not
 //! have, or a value that does not fit its port, fails here.
@@ -15,7 +15,7 @@ use model::input::Vtx;
 use model::span::Pixel;
 use model::triangle_setup::{Attrs, Edge, TriangleSetupOut, Walk};
 use rtl::link::Link;
-use rtl::links::{ParsedSink, PixelSink, SortedSink, SpanCmdSink, TriangleSetupSink, TriangleSink};
+use rtl::links::{BlendPixelSink, ParsedSink, PixelSink, SortedSink, SpanCmdSink, TriangleSetupSink, TriangleSink};
 
 /// Named port values, ready for `Dual::cycle` (through [`as_pins`]).
 pub type PinValues = Vec<(String, Value)>;
@@ -121,9 +121,9 @@ fn link_pins<L: Link>(end: &str, value: impl Fn(&str) -> i128) -> PinValues {
     L::FIELDS.iter().zip(L::WIDTHS).map(|(f, w)| (format!("{end}${f}"), raw(*w, value(f)))).collect()
 }
 
-/// A pixel on the pins of link end `end` (`pixel_out`'s `inp`: `links::PixelSink`).
-pub fn pixel(end: &str, p: &Pixel) -> PinValues {
-    link_pins::<PixelSink>(end, |field| match field {
+/// Field `field` of pixel `p` (`x`, `y`, `z`, `rgb0`, `rgb1`, `rgb2`).
+fn pixel_field(p: &Pixel, field: &str) -> i128 {
+    match field {
         "x" => p.x as i128,
         "y" => p.y as i128,
         "z" => p.z as i128,
@@ -131,6 +131,21 @@ pub fn pixel(end: &str, p: &Pixel) -> PinValues {
         "rgb1" => p.rgb[1] as i128,
         "rgb2" => p.rgb[2] as i128,
         _ => panic!("model::span::Pixel has no field {field}"),
+    }
+}
+
+/// A pixel on the pins of link end `end` (`pixel_out`'s `inp`: `links::PixelSink`).
+pub fn pixel(end: &str, p: &Pixel) -> PinValues {
+    link_pins::<PixelSink>(end, |field| pixel_field(p, field))
+}
+
+/// A pixel with its alpha and blend mode (`rtl::blend`'s code) on the pins of link end
+/// `end` (the blending `pixel_out`'s `inp`: `links::BlendPixelSink`).
+pub fn blend_pixel(end: &str, p: &Pixel, alpha: u8, mode: u8) -> PinValues {
+    link_pins::<BlendPixelSink>(end, |field| match field {
+        "alpha" => alpha as i128,
+        "mode" => mode as i128,
+        _ => pixel_field(p, field),
     })
 }
 
