@@ -113,7 +113,9 @@ pub struct Request {
 }
 
 /// The cache access for the pixel at `c`: of its first level, or of its second (the finer
-/// level's next) when `second` and it reads two: what the RTL unit `texture_address` gives.
+/// level's next) when `second` and it reads two: what the RTL unit `texture_address` gives,
+/// `rtl::texture_address::LATENCY` (3) enabled clocks after the pixel goes in (its
+/// `inp_two_levels`, whether the pixel reads two levels, at once).
 pub fn request(f: &TexFormats, state: &TexState, c: &Coords, second: bool) -> Request {
     let (filter, d, two_levels, frac) = match levels(f, state, c.lambda) {
         Levels::Magnify => (state.sampler.mag, 0, false, 0),

@@ -9,39 +9,46 @@
 //!
 //! ```text
 //!  inp ──> texture_coords ──> texture_address ──> texture_cache ──> pick ──> texture_filter ──> out
-//!   │      19 stages, en_c    (combinational)      valid/ready      words    5 stages, en_f
-//!   │                          second ──┘           side: attrs      └─> pair (a pixel's 1st level)
+//!   │      19 stages, en_c    3 stages, en_a       valid/ready      words    5 stages, en_f
+//!   │                 second ──┘                   side: attrs      └─> pair (a pixel's 1st level)
 //!   └─ cf, tag ──> two 32-entry RAMs: cf read as the pixel enters the filter, tag at out
 //! ```
 //!
 //! # Stalls
 //!
-//! Two global enables and the cache's handshakes, no skid buffer:
+//! Three global enables and the cache's handshakes, no skid buffer:
 //!
 //! * `en_f = out_ready | !out_valid`: the filter (and the output, its last register) moves
 //!   on unless its pixel waits to be taken. The cache's `out_ready` is `en_f`: a cache
 //!   result goes into the filter, or into the pair register, only when the filter moves.
-//! * `en_c = !coords.out_valid | (the cache takes coords' pixel's last access)`: coords
-//!   moves on when its last stage is empty or its pixel's access is taken, so it stalls
-//!   exactly while the cache refuses (a miss being filled, a Clear, a full output) and its
-//!   bubbles are squeezed out. `inp_ready = en_c & !st_load` (so it depends on `out_ready`,
-//!   `inp_flush` and `st_load` in the same cycle, never on `inp_valid`, as the cache's).
+//! * `en_a = !address.out_valid | cache.inp_ready`: `texture_address` moves on when its
+//!   last stage is empty or the cache takes its access, so it stalls exactly while the
+//!   cache refuses (a miss being filled, a Clear, a full output) and its last stage's
+//!   bubbles are squeezed out.
+//! * `en_c = !coords.out_valid | (en_a & (!two | second))`: coords moves on when its last
+//!   stage is empty or `texture_address` takes its pixel's last access (`two`:
+//!   `texture_address`' combinational `inp_two_levels` of coords' pixel). `inp_ready = en_c
+//!   & !st_load` (so it depends on `out_ready`, `inp_flush` and `st_load` in the same cycle,
+//!   never on `inp_valid`, as the cache's).
 //! * A pixel between two levels (GL's `*_MIPMAP_LINEAR` with a nonzero fraction) makes two
-//!   accesses: the first level's in the cycle coords shows it (`second` low), the second's
-//!   in the next one the cache takes (`second` high); coords holds it until the second is
-//!   taken, so `inp_ready` is low for that one cycle. The first's words (picked into
-//!   footprint order) wait in the pair register; the filter takes the pixel once, with the
-//!   second's words.
+//!   accesses: the first level's into `texture_address` in the cycle it moves while coords
+//!   shows the pixel (`second` low), the second's in the next one it moves (`second` high,
+//!   carried to `out_second`); coords holds the pixel until then, so `inp_ready` is low for
+//!   that one cycle. The two accesses pass `texture_address` and the cache one after the
+//!   other. The first's words (picked into footprint order) wait in the pair register; the
+//!   filter takes the pixel once, with the second's words.
 //!
 //! The cache's side payload carries each access's attributes (bit 0 second, 1 two levels,
 //! 7..2 the level fraction, 15..8 the footprint's banks, 23..16 alpha, 31..24 beta; 63..32
 //! zero). A pixel's lit colour `inp_cf` and tag `inp_tag` go into two RAMs of 32 words at
 //! its taking (`wp`): `cf` is read as the pixel enters the filter (`rc`), `tag` while it is
 //! at the output (`rt`); both RAMs read synchronously at the pointer's next value every
-//! cycle, and a word is written at least 21 cycles before it is read, so it is always
-//! read after its write. At most 19 + 2 + 1 + 5 = 27 pixels are in flight (coords' stages,
-//! the cache's S1 and output register, the pair register, the filter's stages), so 32
-//! words never overflow.
+//! cycle, and a word is written at least 24 cycles before it is read (19 + 3 + 2: coords,
+//! `texture_address`, the cache), so it is always read after its write. At most 19 + 3 +
+//! 2 + 1 + 5 = 30 pixels are in flight (coords' stages, `texture_address`' stages, the
+//! cache's S1 and output register, the pair register, the filter's stages: each pixel in
+//! flight holds at least one of these places), so 32 words never overflow and `wp == rt`
+//! (`idle`) means that none is.
 //!
 //! # Cycles
 //!
@@ -50,17 +57,21 @@
 //! ```text
 //!  cycle   what
 //!  t       inp_valid & inp_ready: into texture_coords (cf, tag into the RAMs)
-//!  t+19    coords.out_valid; address; the cache takes the access
-//!  t+20    cache S1: every lane hits
-//!  t+21    cache out_valid: the words picked into footprint order, into the filter (cf read)
-//!  t+26    out_valid, out_rgba, out_tag: [`LATENCY`] = 26
+//!  t+19    coords.out_valid: the access into texture_address (stage A: the level)
+//!  t+20    stage B: the footprint's indices and fractions, the level's first word
+//!  t+21    stage C: wrap, each bank's word
+//!  t+22    address.out_valid: the cache takes the access
+//!  t+23    cache S1: every lane hits
+//!  t+24    cache out_valid: the words picked into footprint order, into the filter (cf read)
+//!  t+29    out_valid, out_rgba, out_tag: [`LATENCY`] = 29
 //! ```
 //!
-//! Between two levels: the first access is taken in t+19 (`inp_ready` low in t+19), the
-//! second in t+20; the first's words go into the pair register in t+21, the second's with
-//! them into the filter in t+22; out in t+27. One such pixel costs one cycle more than a
-//! one-level pixel. A miss of m lanes holds the cache (`texture_cache`'s table: m·LINE +
-//! L + 2 cycles more than a hit at memory latency L), and with it coords and the input;
+//! Between two levels: the first access goes into texture_address in t+19 (`inp_ready`
+//! low in t+19), the second in t+20; the cache takes them in t+22 and t+23; the first's
+//! words go into the pair register in t+24, the second's with them into the filter in
+//! t+25; out in t+30. One such pixel costs one cycle more than a one-level pixel. A miss
+//! of m lanes holds the cache (`texture_cache`'s table: m·LINE + L + 2 cycles more than a
+//! hit at memory latency L), and with it `texture_address`, coords and the input;
 //! `out_ready` low holds the filter and the cache's output register, and then the rest.
 //!
 //! # State
@@ -74,11 +85,16 @@
 //! (a triangle's gradients in one of two register sets, a set bit down the delay line
 //! instead of 176 bits) would save that delay line and is not done yet. `inp_flush` (a
 //! pulse) is the cache's: it invalidates every line once the access in the cache's S1 is
-//! done; accesses after it (the pixels then in coords, too) read memory afresh.
+//! done; accesses after it (the pixels then in coords and texture_address, too) read
+//! memory afresh.
 //!
-//! Area (Yosys 0.23 `synth_ecp5`, the default design's parameters): 13,585 LUT4, 6,882 FF,
-//! 55 MULT18X18D, 10 DP16KD and 204 DPR16X4: the four units' sum (13,890 LUT4, 6,613 FF,
-//! 55, 10 and 144) and the state, pair and pointer registers and the cf and tag RAMs.
+//! Area (Yosys 0.23 `synth_ecp5`, the default design's parameters): 9,876 LUT4, 7,263 FF,
+//! 55 MULT18X18D, 10 DP16KD and 204 DPR16X4: the four units' sum (9,667 LUT4, 7,066 FF,
+//! 55, 10 and 176) and the state, pair and pointer registers and the cf and tag RAMs.
+//! 31.5 MHz between registers on an LFE5U-45F (nextpnr-ecp5 router2; 13.6 MHz while
+//! `texture_address` was combinational), its critical path in `texture_coords`' stage C
+//! (s · dq/dx through the multiplier, the numerator, its magnitude and the shift by the
+//! size: 31.8 ns, 21.6 of them routing).
 //! Throughput on the shipped textured scenes (every textured fragment in raster order,
 //! memory latency 10, the default cache; `model::texture_unit::pipeline::cycles`): 0.87
 //! pixels a clock on `checker.json` (hit rate 0.997), 0.20 to 0.24 on `crate.json`,
@@ -98,11 +114,13 @@ use crate::Params;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::RAM;
 
-/// Input to output of a one-level pixel when nothing stalls: coords, the cache's hit
-/// latency, the filter.
-pub const LATENCY: usize =
-    crate::texture_coords::LATENCY + model::texture_cache::HIT_LATENCY as usize + crate::texture_filter::LATENCY;
-/// log2 of the cf and tag RAMs' words: room for every pixel in flight (at most 27).
+/// Input to output of a one-level pixel when nothing stalls: coords, texture_address, the
+/// cache's hit latency, the filter.
+pub const LATENCY: usize = crate::texture_coords::LATENCY
+    + crate::texture_address::LATENCY
+    + model::texture_cache::HIT_LATENCY as usize
+    + crate::texture_filter::LATENCY;
+/// log2 of the cf and tag RAMs' words: room for every pixel in flight (at most 30).
 const FB: usize = 5;
 
 /// One of the four cache words, by its bank code: the footprint texel's word.
@@ -212,7 +230,7 @@ pub struct TextureUnit<const SB: usize, const DA: usize, const W: usize, const T
     r_format: DFF<Bits<3>>,
     r_gaussian: DFF<Bit>,
     r_env: DFF<Bits<3>>,
-    /// Coords' pixel's access is of its second level.
+    /// The access coords' pixel makes next (into texture_address) is of its second level.
     second: DFF<Bit>,
     /// The RAMs' pointers: the next pixel's word; the pixel entering the filter's; the
     /// pixel at the output's.
@@ -224,6 +242,7 @@ pub struct TextureUnit<const SB: usize, const DA: usize, const W: usize, const T
     pair_alpha: DFF<Bits<8>>,
     pair_beta: DFF<Bits<8>>,
     en_f: Signal<Local, Bit>,
+    en_a: Signal<Local, Bit>,
     en_c: Signal<Local, Bit>,
     take: Signal<Local, Bit>,
     accept: Signal<Local, Bit>,
@@ -309,6 +328,7 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
             pair_alpha: Default::default(),
             pair_beta: Default::default(),
             en_f: Default::default(),
+            en_a: Default::default(),
             en_c: Default::default(),
             take: Default::default(),
             accept: Default::default(),
@@ -377,7 +397,15 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
         // The filter moves on unless its pixel waits at the output.
         self.en_f.next = self.out_ready.val() | !self.filter.out_valid.val();
 
-        // Coords' pixel: its access (the second level's when `second`) to the cache.
+        // texture_address moves on when its last stage is empty or the cache takes its
+        // access.
+        self.en_a.next = !self.address.out_valid.val() | self.cache.inp_ready.val();
+
+        // Coords' pixel into texture_address: its access (the second level's when `second`),
+        // at the cache LATENCY enabled clocks later.
+        self.address.clock.next = self.clock.val();
+        self.address.en.next = self.en_a.val();
+        self.address.inp_valid.next = self.coords.out_valid.val();
         self.address.s.next = self.coords.out_s.val();
         self.address.t.next = self.coords.out_t.val();
         self.address.lambda.next = self.coords.out_lambda.val();
@@ -398,11 +426,11 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
         if self.address.two_levels.val() {
             self.attr.next = self.attr.val().replace_bit(1, true);
         }
-        if self.second.q.val() {
+        if self.address.out_second.val() {
             self.attr.next = self.attr.val().replace_bit(0, true);
         }
         self.cache.clock.next = self.clock.val();
-        self.cache.inp_valid.next = self.coords.out_valid.val();
+        self.cache.inp_valid.next = self.address.out_valid.val();
         self.cache.inp_en.next = self.address.lanes.val();
         self.cache.inp_addr0.next = self.address.addr0.val();
         self.cache.inp_addr1.next = self.address.addr1.val();
@@ -420,12 +448,13 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
         self.misses.next = self.cache.misses.val();
         self.fills.next = self.cache.fills.val();
 
-        // Coords moves on when its last stage is empty or its pixel's last access is taken.
-        self.take.next = self.coords.out_valid.val() & self.cache.inp_ready.val();
-        self.en_c.next =
-            !self.coords.out_valid.val() | (self.take.val() & (!self.address.two_levels.val() | self.second.q.val()));
+        // Coords moves on when its last stage is empty or texture_address takes its pixel's
+        // last access.
+        self.take.next = self.coords.out_valid.val() & self.en_a.val();
+        self.en_c.next = !self.coords.out_valid.val()
+            | (self.en_a.val() & (!self.address.inp_two_levels.val() | self.second.q.val()));
         if self.take.val() {
-            self.second.d.next = self.address.two_levels.val() & !self.second.q.val();
+            self.second.d.next = self.address.inp_two_levels.val() & !self.second.q.val();
         }
         self.inp_ready.next = self.en_c.val() & !self.st_load.val();
         self.accept.next = self.inp_valid.val() & self.inp_ready.val();

@@ -1,6 +1,7 @@
 //! The texture unit of paper 001 (section II-5) as one pipeline, cycle for cycle as the RTL
 //! top `rtl::texture_unit` runs it: `texture_coords` (19 stages, a global enable), then
-//! `texture_address` (combinational), the texture cache ([`crate::texture_cache`]'s cycle
+//! `texture_address` (3 stages, a global enable; each access computed by `request` as it
+//! enters and carried through them), the texture cache ([`crate::texture_cache`]'s cycle
 //! model, inside), and `texture_filter` (5 stages, a global enable). Each colour is
 //! computed from the words the cache gives, with the functions
 //! [`super::TextureUnit::sample`] uses (`coords`, `request`, `texel`, `environment`), so it
@@ -11,11 +12,14 @@
 //! The cycle behaviour (`rtl::texture_unit`'s module documentation has the timing table):
 //!
 //! * `en_f = out_ready | !out_valid` moves the filter; the cache's `out_ready` is `en_f`.
-//! * `en_c = !coords_valid | (the cache takes the pixel's last access)` moves coords;
-//!   `inp_ready = en_c & !st_load`.
+//! * `en_a = !address_valid | (the cache takes the access)` moves texture_address.
+//! * `en_c = !coords_valid | (en_a and the access entering texture_address is the pixel's
+//!   last)` moves coords; `inp_ready = en_c & !st_load`.
 //! * A pixel between two levels makes two accesses, the second (GL 4.6 section 8.14.3's
-//!   level d1 + 1) in the cycle after the first's taking at the earliest; its first level's
-//!   words wait in a pair register and the filter takes the pixel with the second's.
+//!   level d1 + 1) into texture_address in the cycle after the first at the earliest
+//!   (coords holds the pixel until then); both pass texture_address and the cache one
+//!   after the other; its first level's words wait in a pair register and the filter takes
+//!   the pixel with the second's.
 //! * A one-level pixel taken in cycle t, with nothing stalling, is out in t + [`LATENCY`].
 //!
 //! [`cycles`] runs a stream of pixels through the unit behind a memory of fixed latency
@@ -32,10 +36,13 @@ use texture::LodRule;
 
 /// `texture_coords`' stages: the divider's 13 and 6 more (`rtl::texture_coords::LATENCY`).
 pub const COORDS_STAGES: usize = 19;
+/// `texture_address`' stages: the level, the footprint and offset, the wrap and words
+/// (`rtl::texture_address::LATENCY`).
+pub const ADDRESS_STAGES: usize = 3;
 /// `texture_filter`'s stages.
 pub const FILTER_STAGES: usize = 5;
 /// Input to output of a one-level pixel when nothing stalls.
-pub const LATENCY: u64 = COORDS_STAGES as u64 + HIT_LATENCY + FILTER_STAGES as u64;
+pub const LATENCY: u64 = COORDS_STAGES as u64 + ADDRESS_STAGES as u64 + HIT_LATENCY + FILTER_STAGES as u64;
 
 /// One pixel offered: its inputs, its triangle's gradients, its lit colour and a tag the
 /// unit carries to the output.
@@ -112,7 +119,11 @@ pub struct Pipeline {
     cache: TextureCache,
     state: TexState,
     coords: [Option<InCoords>; COORDS_STAGES],
+    /// The access coords' pixel makes next is of its second level.
     second: bool,
+    /// texture_address' stages: each access (computed as it enters, with the state then,
+    /// which holds while pixels are in flight) and whether it is of a second level.
+    address: [Option<(Request, bool)>; ADDRESS_STAGES],
     /// Each pixel's (cf, tag) from its taking: the RTL's RAMs, popped as the pixel enters
     /// the filter (cf) and leaves the output (tag).
     cf: VecDeque<[u8; 3]>,
@@ -153,6 +164,7 @@ impl Pipeline {
             },
             coords: [None; COORDS_STAGES],
             second: false,
+            address: [None; ADDRESS_STAGES],
             cf: VecDeque::new(),
             tags: VecDeque::new(),
             pair: ([0; 4], 0, 0),
@@ -165,23 +177,26 @@ impl Pipeline {
     pub fn step(&mut self, i: &UnitIn, m: MemIn) -> UnitOut {
         let f = self.f;
         let en_f = i.out_ready || self.filter[FILTER_STAGES - 1].is_none();
-        let head = self.coords[COORDS_STAGES - 1];
-        let req = head.map(|h| request(&f, &self.state, &h.c, self.second));
-        let cin = match &req {
-            Some(r) => CacheIn {
+        let head = self.address[ADDRESS_STAGES - 1];
+        let cin = match &head {
+            Some((r, second)) => CacheIn {
                 inp_valid: true,
                 inp_en: (0..LANES).filter(|&b| r.fetch[b].is_some()).map(|b| 1u8 << b).sum(),
                 inp_addr: r.fetch.map(|a| a.unwrap_or(0)),
-                inp_side: attributes(r, self.second),
+                inp_side: attributes(r, *second),
                 inp_flush: i.flush,
                 out_ready: en_f,
             },
             None => CacheIn { inp_flush: i.flush, out_ready: en_f, ..CacheIn::default() },
         };
         let co = self.cache.step(&cin, m);
-        let take = req.is_some() && co.inp_ready;
-        let two = req.is_some_and(|r| r.two_levels);
-        let en_c = req.is_none() || (take && (!two || self.second));
+        // texture_address moves on when its last stage is empty or the cache takes its
+        // access; coords when its last stage is empty or texture_address takes the last
+        // access of its pixel.
+        let en_a = head.is_none() || co.inp_ready;
+        let entry = self.coords[COORDS_STAGES - 1].map(|h| request(&f, &self.state, &h.c, self.second));
+        let two = entry.is_some_and(|r| r.two_levels);
+        let en_c = entry.is_none() || (en_a && (!two || self.second));
         let inp_ready = en_c && !i.st_load;
         let accept = i.inp_valid && inp_ready;
 
@@ -232,8 +247,13 @@ impl Pipeline {
                 self.pair = (words, alpha, beta);
             }
         }
-        if take {
-            self.second = two && !self.second;
+        if en_a {
+            let entering = entry.map(|r| (r, self.second));
+            if entry.is_some() {
+                self.second = two && !self.second;
+            }
+            self.address.copy_within(0..ADDRESS_STAGES - 1, 1);
+            self.address[0] = entering;
         }
         if en_c {
             let entering = accept.then(|| {
@@ -379,11 +399,12 @@ mod tests {
     }
 
     /// A 1 x 1 texture, magnified (zero gradients), nearest: one lane an access. The first
-    /// access misses: taken 19 cycles after the pixel (coords), its word asked 2 cycles
-    /// later, a line of 4 words asked in 4 cycles, the last answered L = 5 cycles after,
-    /// then the cache's Wait and lookup (2) and output register (1): out of the cache in
-    /// cycle 19 + 4 + 4 + 5 = 32, of the filter 5 later, 37; each later pixel, waiting in
-    /// coords, hits, one a clock. 100 pixels: 37 + 100 cycles.
+    /// access misses: taken 22 cycles after the pixel (coords' 19, texture_address' 3), its
+    /// word asked 2 cycles later, a line of 4 words asked in 4 cycles, the last answered L =
+    /// 5 cycles after, then the cache's Wait and lookup (2) and output register (1): out of
+    /// the cache in cycle 22 + 4 + 4 + 5 = 35, of the filter 5 later, 40; each later pixel,
+    /// waiting in texture_address and coords, hits, one a clock. 100 pixels: 40 + 100
+    /// cycles.
     #[test]
     fn texture_unit_pipeline_streams_a_pixel_a_clock_after_a_cold_miss() {
         let s = state([0, 0], 1, MipMode::None, Filter::Nearest, LodRule::Max);
@@ -397,14 +418,15 @@ mod tests {
             })
             .collect();
         let run = cycles(F, CACHE, LodRule::Max, &memory, 5, &[(s, pixels)]).unwrap();
-        assert_eq!(run, Run { cycles: 137, pixels: 100, hits: 99, misses: 1, fills: 1 });
+        assert_eq!(run, Run { cycles: 140, pixels: 100, hits: 99, misses: 1, fills: 1 });
     }
 
-    /// A pixel taken alone comes out 26 cycles later (19 + 2 + 5) when its access hits,
-    /// 27 when it reads two levels (its second access a cycle after the first).
+    /// A pixel taken alone comes out 29 cycles later (19 + 3 + 2 + 5) when its access hits,
+    /// 30 when it reads two levels (its second access a cycle after the first).
     #[test]
     fn texture_unit_pipeline_latency_of_one_and_two_levels() {
-        for (mip, latency) in [(MipMode::None, 26), (MipMode::Linear, 27)] {
+        assert_eq!(LATENCY, 29);
+        for (mip, latency) in [(MipMode::None, 29), (MipMode::Linear, 30)] {
             let s = state([4, 4], 5, mip, Filter::Linear, LodRule::Max);
             let memory: Vec<u32> = (0..400).collect();
             let mut u = Pipeline::new(F, CACHE, LodRule::Max).unwrap();
@@ -497,7 +519,7 @@ mod tests {
             for latency in [1, 5, 20] {
                 let run = cycles(F, CACHE, lod, &memory, latency, &draws).unwrap();
                 assert_eq!((run.pixels, run.hits, run.misses, run.fills), (n, want.hits, want.misses, want.fills));
-                assert!(run.cycles >= fetches.len() as u64 + 26, "{lod:?} {latency}: {run:?}");
+                assert!(run.cycles >= fetches.len() as u64 + LATENCY, "{lod:?} {latency}: {run:?}");
             }
         }
     }
