@@ -13,9 +13,10 @@
 #                             alumacc, memory; everything but the mapping to ECP5 cells,
 #                             which took 149 s of its 229 s of CPU), and every unit not listed in
 #                             SUBMODULES (pixel_out.v, ept.v: generic `synth -flatten` and
-#                             `synth_ecp5`; se.v, vector.v and texture_unit.v (which holds
-#                             texture_coords, texture_address, texture_cache and
-#                             texture_filter): `synth_ecp5` only, the generic runs of the first
+#                             `synth_ecp5`; se.v, vector.v and texture_path.v (which holds
+#                             texture_setup and texture_unit, and in it texture_coords,
+#                             texture_address, texture_cache and texture_filter):
+#                             `synth_ecp5` only, the generic runs of the first
 #                             three took 86, 40 and about 150 s of CPU (the generic flow makes
 #                             flip-flops of the RAMs and ROMs) and `synth_ecp5` runs the same
 #                             coarse passes before mapping). raster_top.v is gpu_top's scanline units with
@@ -35,13 +36,13 @@ if ! command -v yosys >/dev/null; then
     exit 1
 fi
 # Units whose modules gpu_top.v holds (raster_top.v: all but its glue and pixel_out, which
-# is synthesized alone), synthesized there; and the texture unit's four, which texture_unit.v
-# holds.
+# is synthesized alone), synthesized there; and the texture units, which texture_path.v holds
+# (texture_setup, and texture_unit with its four).
 SUBMODULES=(command_parser triangle_queue cull_sort divider triangle_setup edge_walk span pixel_bus gpu_regs raster_top
-    texture_coords texture_address texture_cache texture_filter)
+    texture_coords texture_address texture_cache texture_filter texture_unit texture_setup)
 # Units the test command maps with synth_ecp5 alone, and those it takes through synth_ecp5's
 # coarse passes alone (--all runs every flow, mapped).
-ECP5_ONLY=(se vector texture_unit)
+ECP5_ONLY=(se vector texture_path)
 COARSE_ONLY=(gpu_top)
 flows=(generic ecp5)
 all=0

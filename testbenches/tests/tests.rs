@@ -21,6 +21,7 @@ mod texture_address;
 mod texture_cache;
 mod texture_coords;
 mod texture_filter;
+mod texture_path;
 mod texture_setup;
 mod texture_unit;
 mod triangle_queue;

@@ -7,7 +7,7 @@
 use fx::{Formats, TexFormats};
 use model::divider::reciprocal;
 use model::input::to_fixed;
-use model::texture_setup::{tex_vertices, texture_setup, TexVtx, TexturePlanes};
+use model::texture_setup::{area2, tex_vertices, texture_setup, TexVtx, TexturePlanes};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::texture_setup::{TextureSetup, DQ, DST, EXP, LATENCY, MANT, QB, SCREEN, SETUP_CYCLES, ST, XY};
@@ -28,7 +28,7 @@ fn bit(b: bool) -> Value {
 }
 
 /// A random perspective triangle of one of several kinds.
-fn triangle(rng: &mut ChaCha8Rng) -> Triangle {
+pub(crate) fn triangle(rng: &mut ChaCha8Rng) -> Triangle {
     let kind = rng.gen_range(0..5);
     // Positions: on screen, across the guard band, or a sliver (a third vertex near the
     // line through the first two).
@@ -60,16 +60,14 @@ fn triangle(rng: &mut ChaCha8Rng) -> Triangle {
 
 /// A triangle's texture vertices, its planes and the reciprocal of twice its area, or
 /// `None` when out of range or of zero area.
-fn setup(tri: &Triangle) -> Option<([TexVtx; 3], TexturePlanes, model::divider::Recip)> {
+pub(crate) fn setup(tri: &Triangle) -> Option<([TexVtx; 3], TexturePlanes, model::divider::Recip)> {
     let v = to_fixed(tri, &F).ok()?;
     let tv = tex_vertices(tri, &v, &TF, false).ok()??;
     let planes = texture_setup(&tv, &F, &TF)?;
-    let (e1, e2) = ([tv[1].x - tv[0].x, tv[1].y - tv[0].y], [tv[2].x - tv[0].x, tv[2].y - tv[0].y]);
-    let area2 = e1[0] * e2[1] - e2[0] * e1[1];
-    Some((tv, planes, reciprocal(area2.abs(), &F)))
+    Some((tv, planes, reciprocal(area2(&tv).abs(), &F)))
 }
 
-fn start_pins(tv: &[TexVtx; 3], r: &model::divider::Recip) -> Vec<(&'static str, Value)> {
+pub(crate) fn start_pins(tv: &[TexVtx; 3], r: &model::divider::Recip) -> Vec<(&'static str, Value)> {
     const NAMES: [[&str; 5]; 3] = [
         ["tri_x0", "tri_y0", "tri_sq0", "tri_tq0", "tri_q0"],
         ["tri_x1", "tri_y1", "tri_sq1", "tri_tq1", "tri_q1"],
@@ -89,7 +87,7 @@ fn start_pins(tv: &[TexVtx; 3], r: &model::divider::Recip) -> Vec<(&'static str,
 }
 
 /// A pixel: in the triangle's bounding box (mostly inside or near it) or anywhere.
-fn pixel(rng: &mut ChaCha8Rng, tv: &[TexVtx; 3]) -> (u32, u32) {
+pub(crate) fn pixel(rng: &mut ChaCha8Rng, tv: &[TexVtx; 3]) -> (u32, u32) {
     let max = (1i128 << SCREEN) - 1;
     if rng.gen_bool(0.3) {
         return (rng.gen_range(0..=max as u32), rng.gen_range(0..=max as u32));

@@ -30,7 +30,7 @@ const WRAPS: [Wrap; 3] = [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::ClampToEdge]
 const MIPS: [MipMode; 3] = [MipMode::None, MipMode::Nearest, MipMode::Linear];
 const ENVS: [EnvMode; 5] = [EnvMode::Replace, EnvMode::Modulate, EnvMode::Decal, EnvMode::Blend, EnvMode::Add];
 /// Words of the test's texture memory.
-const MEMORY: usize = 1 << 15;
+pub(crate) const MEMORY: usize = 1 << 15;
 
 fn raw(bits: usize, v: i64) -> Value {
     Value::new(bits, (v as u128) & ((1u128 << bits) - 1))
@@ -40,12 +40,30 @@ fn bit(b: bool) -> Value {
     Value::new(1, b.into())
 }
 
-/// The unit's input pins for `i` and the memory's `m`.
-fn pins(i: &UnitIn, m: &MemIn) -> Vec<(&'static str, Value)> {
-    let (p, g, s) = (&i.pixel.p, &i.pixel.g, &i.state);
-    let cf = i.pixel.cf;
+/// A state's `st_*` pins (`texture_unit`'s codes of `TexState`).
+pub(crate) fn state_pins(s: &TexState) -> Vec<(&'static str, Value)> {
     let code = |w: Wrap| WRAPS.iter().position(|x| *x == w).unwrap() as u128;
     vec![
+        ("st_ws", Value::new(4, s.size_log2[0].into())),
+        ("st_hs", Value::new(4, s.size_log2[1].into())),
+        ("st_levels", Value::new(4, s.levels.into())),
+        ("st_base", Value::new(26, s.base.into())),
+        ("st_min_linear", bit(s.sampler.min == Filter::Linear)),
+        ("st_mag_linear", bit(s.sampler.mag == Filter::Linear)),
+        ("st_mip", Value::new(2, MIPS.iter().position(|m| *m == s.sampler.mip).unwrap() as u128)),
+        ("st_wrap_s", Value::new(2, code(s.sampler.wrap_s))),
+        ("st_wrap_t", Value::new(2, code(s.sampler.wrap_t))),
+        ("st_format", Value::new(3, TexelFormat::ALL.iter().position(|f| *f == s.format).unwrap() as u128)),
+        ("st_gaussian", bit(s.sampler.weights == Weights::Gaussian)),
+        ("st_env", Value::new(3, ENVS.iter().position(|e| *e == s.env).unwrap() as u128)),
+    ]
+}
+
+/// The unit's input pins for `i` and the memory's `m`.
+fn pins(i: &UnitIn, m: &MemIn) -> Vec<(&'static str, Value)> {
+    let (p, g) = (&i.pixel.p, &i.pixel.g);
+    let cf = i.pixel.cf;
+    let mut pins = vec![
         ("inp_valid", bit(i.inp_valid)),
         ("inp_sq", raw(ST, p.sq)),
         ("inp_tq", raw(ST, p.tq)),
@@ -59,24 +77,17 @@ fn pins(i: &UnitIn, m: &MemIn) -> Vec<(&'static str, Value)> {
         ("inp_cf", Value::new(24, (cf[0] as u128) << 16 | (cf[1] as u128) << 8 | cf[2] as u128)),
         ("inp_tag", Value::new(32, i.pixel.tag.into())),
         ("st_load", bit(i.st_load)),
-        ("st_ws", Value::new(4, s.size_log2[0].into())),
-        ("st_hs", Value::new(4, s.size_log2[1].into())),
-        ("st_levels", Value::new(4, s.levels.into())),
-        ("st_base", Value::new(26, s.base.into())),
-        ("st_min_linear", bit(s.sampler.min == Filter::Linear)),
-        ("st_mag_linear", bit(s.sampler.mag == Filter::Linear)),
-        ("st_mip", Value::new(2, MIPS.iter().position(|m| *m == s.sampler.mip).unwrap() as u128)),
-        ("st_wrap_s", Value::new(2, code(s.sampler.wrap_s))),
-        ("st_wrap_t", Value::new(2, code(s.sampler.wrap_t))),
-        ("st_format", Value::new(3, TexelFormat::ALL.iter().position(|f| *f == s.format).unwrap() as u128)),
-        ("st_gaussian", bit(s.sampler.weights == Weights::Gaussian)),
-        ("st_env", Value::new(3, ENVS.iter().position(|e| *e == s.env).unwrap() as u128)),
         ("inp_flush", bit(i.flush)),
         ("out_ready", bit(i.out_ready)),
-        ("mem_ack", bit(m.ack)),
-        ("mem_rvalid", bit(m.rvalid)),
-        ("mem_rdata", Value::new(32, m.rdata.into())),
-    ]
+    ];
+    pins.extend(state_pins(&i.state));
+    pins.extend(mem_pins(m));
+    pins
+}
+
+/// The memory's answer on the `mem_*` pins.
+pub(crate) fn mem_pins(m: &MemIn) -> [(&'static str, Value); 3] {
+    [("mem_ack", bit(m.ack)), ("mem_rvalid", bit(m.rvalid)), ("mem_rdata", Value::new(32, m.rdata.into()))]
 }
 
 /// The model's outputs compared every cycle (`out_rgba` and `out_tag` with `out_valid`).
@@ -104,7 +115,7 @@ struct Draw {
 
 /// A random texture in a random format at a random place of `memory` (laid out by
 /// `texture_memory::layout`), and a random state to draw it with.
-fn random_state(rng: &mut ChaCha8Rng, memory: &mut [u32], lod: LodRule) -> TexState {
+pub(crate) fn random_state(rng: &mut ChaCha8Rng, memory: &mut [u32], lod: LodRule) -> TexState {
     let format = TexelFormat::ALL[rng.gen_range(0..5)];
     let (ws, hs) = (rng.gen_range(0..=6), rng.gen_range(1..=6));
     let n = (1usize << ws) * (1usize << hs);
@@ -199,11 +210,32 @@ fn random_draws(rng: &mut ChaCha8Rng, memory: &mut [u32], lod: LodRule, pixels: 
 
 /// The test's memory: takes the word asked when `ack` (decided before the cycle), answers
 /// it `latency` cycles later, in order, a word a cycle at most.
-struct Memory {
-    words: Vec<u32>,
-    latency: u64,
-    ack_chance: f64,
-    queue: VecDeque<(u64, u32)>,
+pub(crate) struct Memory {
+    pub(crate) words: Vec<u32>,
+    pub(crate) latency: u64,
+    pub(crate) ack_chance: f64,
+    pub(crate) queue: VecDeque<(u64, u32)>,
+}
+
+impl Memory {
+    /// Cycle `now`'s answer, and whether a word asked is taken.
+    pub(crate) fn answer(&mut self, now: u64, rng: &mut ChaCha8Rng) -> MemIn {
+        let ack = self.ack_chance >= 1.0 || rng.gen_bool(self.ack_chance);
+        let answer = self.queue.front().filter(|(due, _)| *due <= now).map(|&(_, w)| w);
+        if answer.is_some() {
+            self.queue.pop_front();
+        }
+        MemIn { ack, rvalid: answer.is_some(), rdata: answer.unwrap_or(0) }
+    }
+
+    /// After cycle `now` with answer `m`: the word at `addr` asked when `valid`.
+    pub(crate) fn ask(&mut self, now: u64, m: &MemIn, valid: bool, addr: u32) {
+        if valid && m.ack {
+            let due = (now + self.latency).max(self.queue.back().map_or(0, |(d, _)| d + 1));
+            let word = self.words.get(addr as usize).copied().unwrap_or(0);
+            self.queue.push_back((due, word));
+        }
+    }
 }
 
 /// The unit in both simulators beside the model and the memory.
@@ -222,12 +254,7 @@ impl<U: Block + Pins> Bench<U> {
     /// One clock: `i` and the memory's answer driven, every output compared between the
     /// simulators and with the model.
     fn cycle(&mut self, i: &UnitIn) -> UnitOut {
-        let ack = self.mem.ack_chance >= 1.0 || self.rng.gen_bool(self.mem.ack_chance);
-        let answer = self.mem.queue.front().filter(|(due, _)| *due <= self.now).map(|&(_, w)| w);
-        if answer.is_some() {
-            self.mem.queue.pop_front();
-        }
-        let m = MemIn { ack, rvalid: answer.is_some(), rdata: answer.unwrap_or(0) };
+        let m = self.mem.answer(self.now, &mut self.rng);
         let got = self.dual.cycle(&pins(i, &m)).unwrap_or_else(|e| panic!("{e}"));
         let o = self.model.step(i, m);
         let mut want = every_cycle(&o);
@@ -239,11 +266,7 @@ impl<U: Block + Pins> Bench<U> {
         for (pin, v) in want {
             self.dual.expect(&got, pin, &v).unwrap_or_else(|e| panic!("{e} (seed {})", seed()));
         }
-        if o.mem_valid && ack {
-            let due = (self.now + self.mem.latency).max(self.mem.queue.back().map_or(0, |(d, _)| d + 1));
-            let word = self.mem.words.get(o.mem_addr as usize).copied().unwrap_or(0);
-            self.mem.queue.push_back((due, word));
-        }
+        self.mem.ask(self.now, &m, o.mem_valid, o.mem_addr);
         self.now += 1;
         o
     }

@@ -39,6 +39,7 @@ pub mod texture_cache;
 pub mod texture_coords;
 pub mod texture_filter;
 pub mod texture_memory;
+pub mod texture_path;
 pub mod texture_setup;
 pub mod texture_unit;
 pub mod triangle_queue;

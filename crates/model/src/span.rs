@@ -30,7 +30,7 @@ pub const LATENCY: u32 = 2;
 pub const II: u32 = 1;
 
 /// A pixel leaving the rasterizer, before the depth test.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Pixel {
     pub x: u32,
     pub y: u32,

@@ -104,12 +104,19 @@ pub const fn plane_fmt(f: &Formats, fm: Fmt) -> Fmt {
     Fmt::s(fm.int + f.xy.frac + 1, plane_frac(f, fm.frac))
 }
 
+/// Twice the signed area of the triangle of `v`, in squared sub-pixels: its reciprocal
+/// `divider::reciprocal(|area2|)` is triangle setup's OneOverArea, which `rtl::texture_setup`
+/// takes as an input.
+pub fn area2(v: &[TexVtx; 3]) -> i128 {
+    (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[2].x - v[0].x) * (v[1].y - v[0].y)
+}
+
 /// The planes of a textured triangle's vertices `v` at screen formats `f` and texture
 /// formats `tf`; `None` for a triangle of zero area (which draws nothing).
 pub fn texture_setup(v: &[TexVtx; 3], f: &Formats, tf: &TexFormats) -> Option<TexturePlanes> {
     let s = f.xy.frac;
     let (e1, e2) = ([v[1].x - v[0].x, v[1].y - v[0].y], [v[2].x - v[0].x, v[2].y - v[0].y]);
-    let area2 = e1[0] * e2[1] - e2[0] * e1[1];
+    let area2 = area2(v);
     if area2 == 0 {
         return None;
     }

@@ -19,6 +19,7 @@ pub mod texture_address;
 pub mod texture_cache;
 pub mod texture_coords;
 pub mod texture_filter;
+pub mod texture_path;
 pub mod texture_setup;
 pub mod texture_unit;
 
@@ -279,6 +280,20 @@ pub struct Param {
     pub doc: &'static str,
 }
 
+/// The texture units' level-of-detail rule (`texture_coords`, `texture_unit`,
+/// `texture_path`).
+const EXACT: Param =
+    Param { name: "EXACT", default: 0, doc: "0: 001's eq. (4), max of the four derivatives; 1: GL's exact rho" };
+
+/// [`EXACT`] of `unit` in `params`: whether GL's exact rho chooses the level.
+pub fn exact_rule(unit: &str, params: &Params) -> Result<bool, String> {
+    match params["EXACT"] {
+        0 => Ok(false),
+        1 => Ok(true),
+        e => Err(format!("{unit}: EXACT = {e}: 0 (001's eq. 4) or 1 (GL's exact rho)")),
+    }
+}
+
 /// One hardware unit: its name, parameters and how to emit it.
 pub struct Unit {
     pub name: &'static str,
@@ -469,7 +484,7 @@ pub const UNITS: &[Unit] = &[
     Unit {
         name: "texture_coords",
         doc: "the texture unit's coordinates, paper 001 §II.5 eq. (3) and (4): s = (s·q)/q, t likewise, lambda; a pixel a clock",
-        params: &[Param { name: "EXACT", default: 0, doc: "0: 001's eq. (4), max of the four derivatives; 1: GL's exact rho" }],
+        params: &[EXACT],
         build: no_formats!(texture_coords::emit_texture_coords),
     },
     Unit {
@@ -511,9 +526,15 @@ pub const UNITS: &[Unit] = &[
             Param { name: "SETS", default: 64, doc: "the cache's sets per bank (built: rtl::texture_unit::GEOMETRIES)" },
             Param { name: "WAYS", default: 2, doc: "the cache's lines per set" },
             Param { name: "LINE", default: 4, doc: "the cache's 32-bit words per line" },
-            Param { name: "EXACT", default: 0, doc: "0: 001's eq. (4), max of the four derivatives; 1: GL's exact rho" },
+            EXACT,
         ],
         build: no_formats!(texture_unit::emit_texture_unit),
+    },
+    Unit {
+        name: "texture_path",
+        doc: "a textured fragment's way, paper 001 §II.5: per triangle texture_setup (on its first fragment, 30 cycles), per fragment texture_setup's pixel part and texture_unit (the default cache); out: the blending pixel_out's fragments",
+        params: &[EXACT],
+        build: no_formats!(texture_path::emit_texture_path),
     },
 ];
 
@@ -538,6 +559,7 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
     ("texture_setup", &[]),
     ("blend", &[]),
     ("texture_unit", &[("SETS", 64), ("WAYS", 2), ("LINE", 4), ("EXACT", 0)]),
+    ("texture_path", &[("EXACT", 0)]),
     (
         "raster_top",
         &[

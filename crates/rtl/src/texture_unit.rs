@@ -602,11 +602,7 @@ unit_geometries! {
 /// `UNITS` entry: the unit over the cache `params["SETS"]`, `["WAYS"]`, `["LINE"]` (one of
 /// [`GEOMETRIES`]), the level-of-detail rule `params["EXACT"]`.
 pub fn emit_texture_unit(params: &Params) -> Result<Emitted, String> {
-    let exact = match params["EXACT"] {
-        0 => false,
-        1 => true,
-        e => return Err(format!("texture_unit: EXACT = {e}: 0 (001's eq. 4) or 1 (GL's exact rho)")),
-    };
+    let exact = crate::exact_rule("texture_unit", params)?;
     let get = |k: &str| u32::try_from(params[k]).map_err(|_| format!("texture_unit: {k} = {} is too large", params[k]));
     let p = model::texture_cache::Params { sets: get("SETS")?, ways: get("WAYS")?, line: get("LINE")? };
     p.check()?;

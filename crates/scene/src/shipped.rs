@@ -27,7 +27,8 @@ pub fn all() -> std::io::Result<Vec<PathBuf>> {
 
 /// The shipped textured scenes, `scenes/textured/*.json` (with their OBJ, MTL and PNG
 /// files, from `scripts/gen-textures.py`): the float reference and the scanline and vector
-/// models draw them; the RTL pipelines have no texture path yet.
+/// models draw them, and `rtl::texture_path` their textured fragments (`raster_top` has no
+/// texture path yet).
 pub fn textured() -> std::io::Result<Vec<PathBuf>> {
     scenes_in(dir().join("textured"))
 }

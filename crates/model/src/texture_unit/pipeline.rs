@@ -172,6 +172,16 @@ impl Pipeline {
         })
     }
 
+    /// No pixel in flight (the output `idle` of this cycle): the state may be loaded.
+    pub fn is_idle(&self) -> bool {
+        self.tags.is_empty()
+    }
+
+    /// Whether the cache has left its power-up Clear (it takes accesses).
+    pub fn cache_running(&self) -> bool {
+        self.cache.state() == crate::texture_cache::State::Run
+    }
+
     /// One clock: the outputs of this cycle for inputs `i` and the memory's `m`, then the
     /// edge. Panics if a state of another level-of-detail rule is loaded.
     pub fn step(&mut self, i: &UnitIn, m: MemIn) -> UnitOut {
@@ -219,7 +229,7 @@ impl Pipeline {
             hits: co.hits,
             misses: co.misses,
             fills: co.fills,
-            idle: self.tags.is_empty(),
+            idle: self.is_idle(),
         };
 
         // The edge.
@@ -332,7 +342,7 @@ pub fn cycles(
         let load = UnitIn { st_load: true, ..UnitIn::idle(*state) };
         step(&mut u, &load, &mut now);
         if start.is_none() {
-            while u.cache.state() != crate::texture_cache::State::Run {
+            while !u.cache_running() {
                 step(&mut u, &UnitIn::idle(*state), &mut now);
             }
             start = Some(now);

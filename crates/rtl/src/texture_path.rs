@@ -1,0 +1,367 @@
+//! `texture_path`: a textured fragment's way from `span` to the blending `pixel_out` (paper
+//! 001 §II-5: s·q, t·q and q per pixel from the triangle's planes, then the texture unit).
+//! Cycle for cycle `model::texture_path::TexturePath`, whose module documentation is the
+//! specification; size class 10 (`texture_setup`'s formats).
+//!
+//! ```text
+//!  inp (a fragment) ──> texture_setup, pixel part ──> texture_unit ──> out (BlendPixelSource)
+//!  inp_new, tri$*        3 stages, en                  (64 sets, 2 ways,   x, y, z, mode from the
+//!  (a triangle's first   cf: the lit colour beside     4-word lines)       side RAM; rgb, alpha
+//!   fragment brings it)  it in 3 registers                                 from the unit
+//!        └─ phase: RUN -> DRAIN -> SETUP -> FIRST -> RUN
+//! ```
+//!
+//! **Phases** (`phase`): RUN takes fragments while the pixel part moves (`en`: its last
+//! stage empty or `texture_unit` taking its pixel), unless the fragment offered is a
+//! triangle's first (`inp_new`), which sends the path to DRAIN. DRAIN waits for the pixel
+//! part to be empty (`in_px`, the pixels in it) and, when the triangle's state (`tri$ws` to
+//! `tri$env`, one word) differs from the one loaded (`loaded`), for `texture_unit` to be
+//! idle; then, in one cycle, `texture_setup` starts on `tri$*` and `texture_unit` loads the
+//! state if it changed (SETUP). SETUP waits for `texture_setup`'s `done` (30 cycles); FIRST
+//! takes the waiting fragment when the pixel part moves, and goes back to RUN.
+//!
+//! **The side RAM.** Each fragment taken writes its x, y, z and blend mode at `wp`; they are
+//! read, synchronously at the read pointer's next value as `texture_unit`'s RAMs are, while
+//! it is at `texture_unit`'s output. A word is read at least 3 + 29 cycles after its write,
+//! and at most 3 + 30 fragments are in flight (`texture_unit`'s module documentation), so
+//! 64 words never overflow. `texture_unit`'s tag is not used (0).
+//!
+//! Model: `model::texture_path`. Tests: `testbenches/tests/texture_path.rs`. Emitted:
+//! `edgepaint emit --unit texture_path --param EXACT=0|1`.
+
+use crate::emit::{emit_unit, Emitted};
+use crate::n10::links::{BlendPixelSource, PixelSink};
+use crate::n10::widths::{DEPTH, SCREEN};
+use crate::texture_cache::ADDR;
+use crate::texture_setup::{TextureSetup, EXP, MANT, QB, ST, XY};
+use crate::texture_unit::TextureUnit6424;
+use crate::Params;
+use rust_hdl::prelude::*;
+use rust_hdl::widgets::prelude::RAM;
+
+/// log2 of the side RAM's words.
+const SB: usize = 6;
+/// A side word: x, y, z, the blend mode.
+const SIDE: usize = 2 * SCREEN + DEPTH + 3;
+/// The state word: the 12 `tri$` state fields side by side.
+const SW: usize = 4 + 4 + 4 + ADDR + 1 + 1 + 2 + 2 + 2 + 3 + 1 + 3;
+/// The phases' codes.
+const PHASES: [u64; 4] = [0, 1, 2, 3];
+
+crate::bundle! {
+    /// A triangle as its first fragment brings it (`model::texture_path::TexTriangle`):
+    /// `texture_setup`'s per-triangle inputs, `texture_unit`'s state (its `st_*` codes) and
+    /// the blend mode (`rtl::blend`'s code).
+    TexTri {
+        In x0: Bits<XY>,
+        In y0: Bits<XY>,
+        In x1: Bits<XY>,
+        In y1: Bits<XY>,
+        In x2: Bits<XY>,
+        In y2: Bits<XY>,
+        In sq0: Bits<ST>,
+        In sq1: Bits<ST>,
+        In sq2: Bits<ST>,
+        In tq0: Bits<ST>,
+        In tq1: Bits<ST>,
+        In tq2: Bits<ST>,
+        In q0: Bits<QB>,
+        In q1: Bits<QB>,
+        In q2: Bits<QB>,
+        /// The reciprocal of |twice the area| (`model::divider::reciprocal`), as triangle
+        /// setup's divider has it.
+        In mant: Bits<MANT>,
+        In exp: Bits<EXP>,
+        In ws: Bits<4>,
+        In hs: Bits<4>,
+        In levels: Bits<4>,
+        In base: Bits<ADDR>,
+        In min_linear: Bit,
+        In mag_linear: Bit,
+        In mip: Bits<2>,
+        In wrap_s: Bits<2>,
+        In wrap_t: Bits<2>,
+        In format: Bits<3>,
+        In gaussian: Bit,
+        In env: Bits<3>,
+        In mode: Bits<3>,
+    }
+}
+
+/// The texture path: see the module documentation.
+#[derive(LogicBlock)]
+pub struct TexturePath {
+    pub clock: Signal<In, Clock>,
+    /// The fragments: position, depth and lit colour.
+    pub inp: PixelSink,
+    /// The fragment offered is its triangle's first: `tri` holds the triangle.
+    pub inp_new: Signal<In, Bit>,
+    pub tri: TexTri,
+    /// A pulse: the texture cache invalidates every line.
+    pub inp_flush: Signal<In, Bit>,
+    /// The textured fragments: the environment's colour and alpha, the triangle's mode.
+    pub out: BlendPixelSource,
+    /// `texture_unit`'s memory read port and counters.
+    pub mem_valid: Signal<Out, Bit>,
+    pub mem_addr: Signal<Out, Bits<ADDR>>,
+    pub mem_ack: Signal<In, Bit>,
+    pub mem_rvalid: Signal<In, Bit>,
+    pub mem_rdata: Signal<In, Bits<32>>,
+    pub hits: Signal<Out, Bits<32>>,
+    pub misses: Signal<Out, Bits<32>>,
+    pub fills: Signal<Out, Bits<32>>,
+    /// No fragment in the path, and no triangle being set up.
+    pub idle: Signal<Out, Bit>,
+
+    setup: TextureSetup,
+    unit: TextureUnit6424,
+    side: RAM<Bits<SIDE>, SB>,
+    phase: DFF<Bits<2>>,
+    loaded: DFF<Bits<SW>>,
+    /// Pixels in texture_setup's pixel part.
+    in_px: DFF<Bits<2>>,
+    /// The lit colour beside the pixel part's three stages.
+    cf: [DFF<Bits<24>>; 3],
+    wp: DFF<Bits<SB>>,
+    rt: DFF<Bits<SB>>,
+    st_word: Signal<Local, Bits<SW>>,
+    same: Signal<Local, Bit>,
+    start: Signal<Local, Bit>,
+    en: Signal<Local, Bit>,
+    accept: Signal<Local, Bit>,
+    leave: Signal<Local, Bit>,
+    side_in: Signal<Local, Bits<SIDE>>,
+    /// The phases: RUN, DRAIN, SETUP, FIRST.
+    run: Constant<Bits<2>>,
+    drain: Constant<Bits<2>>,
+    setup_phase: Constant<Bits<2>>,
+    first: Constant<Bits<2>>,
+    /// Where x, y and z stand in a side word.
+    at_x: Constant<Bits<8>>,
+    at_y: Constant<Bits<8>>,
+    at_z: Constant<Bits<8>>,
+}
+
+impl TexturePath {
+    /// The path, its level of detail by GL's exact rho when `exact` (else 001's eq. 4).
+    pub fn new(exact: bool) -> TexturePath {
+        TexturePath {
+            clock: Default::default(),
+            inp: Default::default(),
+            inp_new: Default::default(),
+            tri: Default::default(),
+            inp_flush: Default::default(),
+            out: Default::default(),
+            mem_valid: Default::default(),
+            mem_addr: Default::default(),
+            mem_ack: Default::default(),
+            mem_rvalid: Default::default(),
+            mem_rdata: Default::default(),
+            hits: Default::default(),
+            misses: Default::default(),
+            fills: Default::default(),
+            idle: Default::default(),
+            setup: Default::default(),
+            unit: TextureUnit6424::new(exact),
+            side: Default::default(),
+            phase: Default::default(),
+            loaded: Default::default(),
+            in_px: Default::default(),
+            cf: Default::default(),
+            wp: Default::default(),
+            rt: Default::default(),
+            st_word: Default::default(),
+            same: Default::default(),
+            start: Default::default(),
+            en: Default::default(),
+            accept: Default::default(),
+            leave: Default::default(),
+            side_in: Default::default(),
+            run: Constant::new(PHASES[0].to_bits()),
+            drain: Constant::new(PHASES[1].to_bits()),
+            setup_phase: Constant::new(PHASES[2].to_bits()),
+            first: Constant::new(PHASES[3].to_bits()),
+            at_x: Constant::new((SCREEN + DEPTH + 3).to_bits()),
+            at_y: Constant::new((DEPTH + 3).to_bits()),
+            at_z: Constant::new(3usize.to_bits()),
+        }
+    }
+}
+
+impl Logic for TexturePath {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, phase, loaded, in_px, wp, rt);
+        for k in 0..3 {
+            self.cf[k].clock.next = self.clock.val();
+            self.cf[k].d.next = self.cf[k].q.val();
+        }
+        clock!(self, clock, setup, unit);
+
+        // The triangle's state, one word, against the one loaded.
+        self.st_word.next = (bit_cast::<SW, 4>(self.tri.ws.val()) << 49)
+            | (bit_cast::<SW, 4>(self.tri.hs.val()) << 45)
+            | (bit_cast::<SW, 4>(self.tri.levels.val()) << 41)
+            | (bit_cast::<SW, ADDR>(self.tri.base.val()) << 15)
+            | (bit_cast::<SW, 2>(self.tri.mip.val()) << 11)
+            | (bit_cast::<SW, 2>(self.tri.wrap_s.val()) << 9)
+            | (bit_cast::<SW, 2>(self.tri.wrap_t.val()) << 7)
+            | (bit_cast::<SW, 3>(self.tri.format.val()) << 4)
+            | bit_cast::<SW, 3>(self.tri.env.val());
+        if self.tri.min_linear.val() {
+            self.st_word.next = self.st_word.val().replace_bit(14, true);
+        }
+        if self.tri.mag_linear.val() {
+            self.st_word.next = self.st_word.val().replace_bit(13, true);
+        }
+        if self.tri.gaussian.val() {
+            self.st_word.next = self.st_word.val().replace_bit(3, true);
+        }
+        self.same.next = self.st_word.val() == self.loaded.q.val();
+        self.start.next = (self.phase.q.val() == self.drain.val())
+            & (self.in_px.q.val() == 0)
+            & (self.same.val() | self.unit.idle.val());
+
+        // texture_setup: the triangle at the start, its pixel part moving with `en`.
+        self.setup.start.next = self.start.val();
+        self.setup.tri_x0.next = self.tri.x0.val();
+        self.setup.tri_y0.next = self.tri.y0.val();
+        self.setup.tri_x1.next = self.tri.x1.val();
+        self.setup.tri_y1.next = self.tri.y1.val();
+        self.setup.tri_x2.next = self.tri.x2.val();
+        self.setup.tri_y2.next = self.tri.y2.val();
+        self.setup.tri_sq0.next = self.tri.sq0.val();
+        self.setup.tri_sq1.next = self.tri.sq1.val();
+        self.setup.tri_sq2.next = self.tri.sq2.val();
+        self.setup.tri_tq0.next = self.tri.tq0.val();
+        self.setup.tri_tq1.next = self.tri.tq1.val();
+        self.setup.tri_tq2.next = self.tri.tq2.val();
+        self.setup.tri_q0.next = self.tri.q0.val();
+        self.setup.tri_q1.next = self.tri.q1.val();
+        self.setup.tri_q2.next = self.tri.q2.val();
+        self.setup.tri_mant.next = self.tri.mant.val();
+        self.setup.tri_exp.next = self.tri.exp.val();
+
+        // texture_unit: the pixel part's last stage with the triangle's LOD gradients and
+        // the lit colour; the state when it changes.
+        self.unit.inp_valid.next = self.setup.out_valid.val();
+        self.unit.inp_sq.next = self.setup.out_sq.val();
+        self.unit.inp_tq.next = self.setup.out_tq.val();
+        self.unit.inp_q.next = self.setup.out_q.val();
+        self.unit.inp_dsq_x.next = self.setup.dsq_x.val();
+        self.unit.inp_dsq_y.next = self.setup.dsq_y.val();
+        self.unit.inp_dtq_x.next = self.setup.dtq_x.val();
+        self.unit.inp_dtq_y.next = self.setup.dtq_y.val();
+        self.unit.inp_dq_x.next = self.setup.dq_x.val();
+        self.unit.inp_dq_y.next = self.setup.dq_y.val();
+        self.unit.inp_cf.next = self.cf[2].q.val();
+        self.unit.inp_tag.next = 0.into();
+        self.unit.st_load.next = self.start.val() & !self.same.val();
+        self.unit.st_ws.next = self.tri.ws.val();
+        self.unit.st_hs.next = self.tri.hs.val();
+        self.unit.st_levels.next = self.tri.levels.val();
+        self.unit.st_base.next = self.tri.base.val();
+        self.unit.st_min_linear.next = self.tri.min_linear.val();
+        self.unit.st_mag_linear.next = self.tri.mag_linear.val();
+        self.unit.st_mip.next = self.tri.mip.val();
+        self.unit.st_wrap_s.next = self.tri.wrap_s.val();
+        self.unit.st_wrap_t.next = self.tri.wrap_t.val();
+        self.unit.st_format.next = self.tri.format.val();
+        self.unit.st_gaussian.next = self.tri.gaussian.val();
+        self.unit.st_env.next = self.tri.env.val();
+        self.unit.inp_flush.next = self.inp_flush.val();
+        self.unit.out_ready.next = self.out.ready.val();
+        self.unit.mem_ack.next = self.mem_ack.val();
+        self.unit.mem_rvalid.next = self.mem_rvalid.val();
+        self.unit.mem_rdata.next = self.mem_rdata.val();
+        self.mem_valid.next = self.unit.mem_valid.val();
+        self.mem_addr.next = self.unit.mem_addr.val();
+        self.hits.next = self.unit.hits.val();
+        self.misses.next = self.unit.misses.val();
+        self.fills.next = self.unit.fills.val();
+
+        // Fragments in: the pixel part moves when its last stage is empty or taken.
+        self.en.next = !self.setup.out_valid.val() | self.unit.inp_ready.val();
+        self.inp.ready.next = self.en.val()
+            & (((self.phase.q.val() == self.run.val()) & !self.inp_new.val())
+                | (self.phase.q.val() == self.first.val()));
+        self.accept.next = self.inp.valid.val() & self.inp.ready.val();
+        self.setup.en.next = self.en.val();
+        self.setup.inp_valid.next = self.accept.val();
+        self.setup.inp_x.next = self.inp.x.val();
+        self.setup.inp_y.next = self.inp.y.val();
+        if self.en.val() {
+            self.cf[0].d.next = (bit_cast::<24, 8>(self.inp.rgb0.val()) << 16)
+                | (bit_cast::<24, 8>(self.inp.rgb1.val()) << 8)
+                | bit_cast::<24, 8>(self.inp.rgb2.val());
+            self.cf[1].d.next = self.cf[0].q.val();
+            self.cf[2].d.next = self.cf[1].q.val();
+        }
+        self.leave.next = self.setup.out_valid.val() & self.unit.inp_ready.val();
+        if self.accept.val() & !self.leave.val() {
+            self.in_px.d.next = self.in_px.q.val() + 1;
+        }
+        if !self.accept.val() & self.leave.val() {
+            self.in_px.d.next = self.in_px.q.val() - 1;
+        }
+
+        // The phases.
+        if (self.phase.q.val() == self.run.val()) & self.inp.valid.val() & self.inp_new.val() {
+            self.phase.d.next = self.drain.val();
+        }
+        if self.start.val() {
+            self.phase.d.next = self.setup_phase.val();
+            self.loaded.d.next = self.st_word.val();
+        }
+        if (self.phase.q.val() == self.setup_phase.val()) & self.setup.done.val() {
+            self.phase.d.next = self.first.val();
+        }
+        if (self.phase.q.val() == self.first.val()) & self.accept.val() {
+            self.phase.d.next = self.run.val();
+        }
+
+        // The side RAM: x, y, z and mode at the taking, read at the output.
+        self.side_in.next = (bit_cast::<SIDE, SCREEN>(self.inp.x.val()) << self.at_x.val())
+            | (bit_cast::<SIDE, SCREEN>(self.inp.y.val()) << self.at_y.val())
+            | (bit_cast::<SIDE, DEPTH>(self.inp.z.val()) << self.at_z.val())
+            | bit_cast::<SIDE, 3>(self.tri.mode.val());
+        self.side.write_clock.next = self.clock.val();
+        self.side.read_clock.next = self.clock.val();
+        self.side.write_enable.next = self.accept.val();
+        self.side.write_address.next = self.wp.q.val();
+        self.side.write_data.next = self.side_in.val();
+        if self.accept.val() {
+            self.wp.d.next = self.wp.q.val() + 1;
+        }
+        self.side.read_address.next = self.rt.q.val();
+        if self.unit.out_valid.val() & self.out.ready.val() {
+            self.rt.d.next = self.rt.q.val() + 1;
+            self.side.read_address.next = self.rt.q.val() + 1;
+        }
+
+        // Out: the unit's colour and alpha, the side word's position, depth and mode.
+        self.out.valid.next = self.unit.out_valid.val();
+        self.out.x.next = self.side.read_data.val().get_bits::<SCREEN>(self.at_x.val().index());
+        self.out.y.next = self.side.read_data.val().get_bits::<SCREEN>(self.at_y.val().index());
+        self.out.z.next = self.side.read_data.val().get_bits::<DEPTH>(self.at_z.val().index());
+        self.out.mode.next = self.side.read_data.val().get_bits::<3>(0);
+        self.out.rgb0.next = self.unit.out_rgba.val().get_bits::<8>(24);
+        self.out.rgb1.next = self.unit.out_rgba.val().get_bits::<8>(16);
+        self.out.rgb2.next = self.unit.out_rgba.val().get_bits::<8>(8);
+        self.out.alpha.next = self.unit.out_rgba.val().get_bits::<8>(0);
+        self.idle.next = self.unit.idle.val() & (self.in_px.q.val() == 0) & (self.phase.q.val() == self.run.val());
+    }
+}
+
+crate::pins!(TexturePath {
+    clock: clock,
+    inputs: [inp_new, inp_flush, mem_ack, mem_rvalid, mem_rdata],
+    outputs: [mem_valid, mem_addr, hits, misses, fills, idle],
+    links: [inp, tri, out],
+});
+
+/// `UNITS` entry: the path, the level-of-detail rule `params["EXACT"]`.
+pub fn emit_texture_path(params: &Params) -> Result<Emitted, String> {
+    let exact = crate::exact_rule("texture_path", params)?;
+    Ok(emit_unit("texture_path", TexturePath::new(exact), params))
+}
