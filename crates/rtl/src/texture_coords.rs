@@ -8,9 +8,12 @@
 //!  q ──leading one──> M = q << lz ──> divider: r = floor(2^45 / M)    (DIV_STAGES stages,
 //!  s·q, t·q, gradients, ws, hs ──────> delay line ─────────────┐       the shared divider
 //!                                                              v       of 001, reused)
-//!  B  s = sat((s·q · r) >> (25 - lz)), t likewise              2 multipliers 29 x 27
-//!  C  g = d(s·q)/dx - (s · dq/dx) >> 24 (x4), |g| << ws or hs  4 multipliers 29 x 30
-//!  D  m = max of the four (EXACT = 0), or of the two sums of squares (EXACT = 1: 4 squares)
+//!  B1 the products s·q · r, t·q · r, registered                2 multipliers 29 x 27
+//!  B2 s = sat(s·q · r >> (25 - lz)), t likewise
+//!  C1 the products s · dq/dx (x4), registered from bit 24 up    4 multipliers 29 x 30
+//!  C2 g = d(s·q)/dx - (s · dq/dx) >> 24 (x4), |g| << ws or hs
+//!  D  m = max of the four (EXACT = 0: two levels of maxima), or of the two sums of squares
+//!     (EXACT = 1: 4 squares)
 //!  E1 the leading ones of m and r, the 10 bits below each: indices of two 1024-entry log2
 //!     tables (`model::texture_coords::log2_table`)
 //!  E2 the tables read: synchronous ROMs (block RAM), addressed by the indices entering E2,
@@ -18,8 +21,11 @@
 //!  E3 lambda = round(log2 m + log2 r + (lz - 49) · 2^10, 4 bits); MAGNIFIED for m = 0
 //! ```
 //!
-//! Latency [`LATENCY`] = `DIV_STAGES` + 6 cycles; a global enable `en` holds every register
-//! (the texture unit stalls on a cache miss). `inp_valid` travels to `out_valid`.
+//! Latency [`LATENCY`] = `DIV_STAGES` + 8 cycles (21); a global enable `en` holds every
+//! register (the texture unit stalls on a cache miss). `inp_valid` travels to `out_valid`.
+//! Each multiplier of B and C has a register after it (B1, C1): in one stage, a product
+//! and what follows it (B's shift and saturation, C's difference, magnitude and shift by
+//! the size) were the unit's critical path, and `texture_unit`'s (31.8 ns on ECP5, C).
 //!
 //! Model: `model::texture_unit::TextureUnit::coords`. Emitted: `texture_coords`
 //! (`--param EXACT=0|1`).
@@ -53,7 +59,7 @@ const DIV_D: usize = QB;
 /// Divider stages: two restoring steps each.
 pub const DIV_STAGES: usize = DIV_QM / 2;
 /// Input to output, in enabled cycles.
-pub const LATENCY: usize = DIV_STAGES + 6;
+pub const LATENCY: usize = DIV_STAGES + 8;
 /// s·q · r.
 const PS: usize = ST + DIV_Q;
 /// s · dq/dx, and its shift to `dst`'s fraction bits.
@@ -89,22 +95,20 @@ fn word<const N: usize>(v: u128) -> Constant<Bits<N>> {
 
 /// One numerator of the quotient rule in texels of level 0: |d(x·q) - floor(x · dq >>
 /// G_SHIFT)| << size_log2, for x = s or t and d = d/dx or d/dy (`model::texture_coords`'s
-/// `numerator`). Combinational.
+/// `numerator`), from the product x · dq's bits from G_SHIFT up (`p`, its top bit the
+/// product's sign; the product is stage C1's, registered). Combinational.
 #[derive(LogicBlock)]
 pub struct Numerator {
     pub dxq: Signal<In, Bits<DST>>,
-    pub x: Signal<In, Bits<ST>>,
-    pub dq: Signal<In, Bits<DQ>>,
+    pub p: Signal<In, Bits<PGS>>,
     pub size_log2: Signal<In, Bits<4>>,
     pub u: Signal<Out, Bits<U>>,
-    mul: Mul<ST, DQ, PG>,
     g: Signal<Local, Bits<G>>,
     g_abs: Signal<Local, Bits<GA>>,
-    /// The product's slice (G_SHIFT), the sign bits DST - 1, PG - 1, G - 1, and the masks
-    /// that sign-extend the gradient and the slice to G bits.
-    g_shift: Constant<Bits<8>>,
+    /// The sign bits DST - 1, PGS - 1, G - 1, and the masks that sign-extend the gradient
+    /// and the product's slice to G bits.
     dst_msb: Constant<Bits<8>>,
-    pg_msb: Constant<Bits<8>>,
+    pgs_msb: Constant<Bits<8>>,
     g_msb: Constant<Bits<8>>,
     ext_dst: Constant<Bits<G>>,
     ext_pgs: Constant<Bits<G>>,
@@ -115,16 +119,13 @@ impl Default for Numerator {
         let mask = |bits: usize| (1u128 << bits) - 1;
         Self {
             dxq: Default::default(),
-            x: Default::default(),
-            dq: Default::default(),
+            p: Default::default(),
             size_log2: Default::default(),
             u: Default::default(),
-            mul: Default::default(),
             g: Default::default(),
             g_abs: Default::default(),
-            g_shift: at(G_SHIFT),
             dst_msb: at(DST - 1),
-            pg_msb: at(PG - 1),
+            pgs_msb: at(PGS - 1),
             g_msb: at(G - 1),
             ext_dst: word(mask(G) ^ mask(DST)),
             ext_pgs: word(mask(G) ^ mask(PGS)),
@@ -135,15 +136,12 @@ impl Default for Numerator {
 impl Logic for Numerator {
     #[hdl_gen]
     fn update(&mut self) {
-        self.mul.a.next = self.x.val();
-        self.mul.b.next = self.dq.val();
         // The gradient sign-extended, less the product's slice sign-extended.
-        self.g.next = bit_cast::<G, DST>(self.dxq.val())
-            - bit_cast::<G, PGS>(self.mul.p.val().get_bits::<PGS>(self.g_shift.val().index()));
+        self.g.next = bit_cast::<G, DST>(self.dxq.val()) - bit_cast::<G, PGS>(self.p.val());
         if self.dxq.val().get_bit(self.dst_msb.val().index()) {
             self.g.next = self.g.val() + self.ext_dst.val();
         }
-        if self.mul.p.val().get_bit(self.pg_msb.val().index()) {
+        if self.p.val().get_bit(self.pgs_msb.val().index()) {
             self.g.next = self.g.val() - self.ext_pgs.val();
         }
         self.g_abs.next = self.g.val().get_bits::<GA>(0);
@@ -192,10 +190,20 @@ pub struct TextureCoords {
     dl_lz: Vec<DFF<Bits<8>>>,
     dl_ws: Vec<DFF<Bits<4>>>,
     dl_hs: Vec<DFF<Bits<4>>>,
-    // B: the divide.
+    // B1: the divide's products s·q · r and t·q · r, and the shift.
     mul_s: Mul<ST, DIV_Q, PS>,
     mul_t: Mul<ST, DIV_Q, PS>,
     sh: Signal<Local, Bits<8>>,
+    b1_valid: DFF<Bit>,
+    b1_p: [DFF<Bits<PS>>; 2],
+    b1_sh: DFF<Bits<8>>,
+    b1_dxq: [DFF<Bits<DST>>; 4],
+    b1_dq: [DFF<Bits<DQ>>; 2],
+    b1_lz: DFF<Bits<8>>,
+    b1_ws: DFF<Bits<4>>,
+    b1_hs: DFF<Bits<4>>,
+    b1_r: DFF<Bits<DIV_Q>>,
+    // B2: the products shifted and saturated.
     wide: [Signal<Local, Bits<PS>>; 2],
     st_c: [Signal<Local, Bits<ST>>; 2],
     b_valid: DFF<Bit>,
@@ -206,15 +214,27 @@ pub struct TextureCoords {
     b_ws: DFF<Bits<4>>,
     b_hs: DFF<Bits<4>>,
     b_r: DFF<Bits<DIV_Q>>,
-    // C: the numerators, (s, x), (s, y), (t, x), (t, y).
+    // C1: the products s · dq/dx, s · dq/dy, t · dq/dx, t · dq/dy (their bits from G_SHIFT
+    // up); C2: the numerators, (s, x), (s, y), (t, x), (t, y).
+    mul_g: [Mul<ST, DQ, PG>; 4],
+    c1_valid: DFF<Bit>,
+    c1_st: [DFF<Bits<ST>>; 2],
+    c1_p: [DFF<Bits<PGS>>; 4],
+    c1_dxq: [DFF<Bits<DST>>; 4],
+    c1_lz: DFF<Bits<8>>,
+    c1_ws: DFF<Bits<4>>,
+    c1_hs: DFF<Bits<4>>,
+    c1_r: DFF<Bits<DIV_Q>>,
     num: [Numerator; 4],
     c_valid: DFF<Bit>,
     c_st: [DFF<Bits<ST>>; 2],
     c_u: [DFF<Bits<U>>; 4],
     c_lz: DFF<Bits<8>>,
     c_r: DFF<Bits<DIV_Q>>,
-    // D: the scale factor (squared for the exact rule).
+    // D: the scale factor (squared for the exact rule); 001's as a tree of maxima.
     mul_sq: [Mul<U1, U1, SQ>; 4],
+    m_01: Signal<Local, Bits<U>>,
+    m_23: Signal<Local, Bits<U>>,
     m_max: Signal<Local, Bits<U>>,
     m_x: Signal<Local, Bits<M>>,
     m_y: Signal<Local, Bits<M>>,
@@ -255,12 +275,14 @@ pub struct TextureCoords {
     dividend: Constant<Bits<DIV_N>>,
     /// i, for the leading ones.
     index: Vec<Constant<Bits<8>>>,
-    /// Bit positions and shifts: QB - 1, recip + 1, ST - 1, PS - 1, M - 1, the log index
-    /// slices (M - 1 - T, DIV_Q - 1 - T), DIV_Q - 1, T, T - 1, SUM - 1.
+    /// Bit positions and shifts: QB - 1, recip + 1, ST - 1, PS - 1, G_SHIFT (the slice of
+    /// x · dq), M - 1, the log index slices (M - 1 - T, DIV_Q - 1 - T), DIV_Q - 1, T, T - 1,
+    /// SUM - 1.
     qb_top: Constant<Bits<8>>,
     recip_1: Constant<Bits<8>>,
     st_msb: Constant<Bits<8>>,
     ps_msb: Constant<Bits<8>>,
+    g_shift: Constant<Bits<8>>,
     m_top: Constant<Bits<8>>,
     m_index: Constant<Bits<8>>,
     r_top: Constant<Bits<8>>,
@@ -323,6 +345,15 @@ impl TextureCoords {
             mul_s: Default::default(),
             mul_t: Default::default(),
             sh: Default::default(),
+            b1_valid: Default::default(),
+            b1_p: Default::default(),
+            b1_sh: Default::default(),
+            b1_dxq: Default::default(),
+            b1_dq: Default::default(),
+            b1_lz: Default::default(),
+            b1_ws: Default::default(),
+            b1_hs: Default::default(),
+            b1_r: Default::default(),
             wide: Default::default(),
             st_c: Default::default(),
             b_valid: Default::default(),
@@ -333,6 +364,15 @@ impl TextureCoords {
             b_ws: Default::default(),
             b_hs: Default::default(),
             b_r: Default::default(),
+            mul_g: Default::default(),
+            c1_valid: Default::default(),
+            c1_st: Default::default(),
+            c1_p: Default::default(),
+            c1_dxq: Default::default(),
+            c1_lz: Default::default(),
+            c1_ws: Default::default(),
+            c1_hs: Default::default(),
+            c1_r: Default::default(),
             num: Default::default(),
             c_valid: Default::default(),
             c_st: Default::default(),
@@ -340,6 +380,8 @@ impl TextureCoords {
             c_lz: Default::default(),
             c_r: Default::default(),
             mul_sq: Default::default(),
+            m_01: Default::default(),
+            m_23: Default::default(),
             m_max: Default::default(),
             m_x: Default::default(),
             m_y: Default::default(),
@@ -379,6 +421,7 @@ impl TextureCoords {
             recip_1: at(R + 1),
             st_msb: at(ST - 1),
             ps_msb: at(PS - 1),
+            g_shift: at(G_SHIFT),
             m_top: at(M - 1),
             m_index: at(M - 1 - T),
             r_top: at(DIV_Q - 1),
@@ -407,10 +450,17 @@ impl Logic for TextureCoords {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, b_valid, b_lz, b_ws, b_hs, b_r, c_valid, c_lz, c_r, d_valid, d_m, d_lz, d_r, e1_valid,
-            e1_zero, e1_lz, e2_valid, e2_zero, e2_lz, e_valid, e_lambda
+            self, clock, b1_valid, b1_sh, b1_lz, b1_ws, b1_hs, b1_r, b_valid, b_lz, b_ws, b_hs, b_r, c1_valid, c1_lz,
+            c1_ws, c1_hs, c1_r, c_valid, c_lz, c_r, d_valid, d_m, d_lz, d_r, e1_valid, e1_zero, e1_lz, e2_valid,
+            e2_zero, e2_lz, e_valid, e_lambda
         );
         for k in 0..2 {
+            self.b1_p[k].clock.next = self.clock.val();
+            self.b1_p[k].d.next = self.b1_p[k].q.val();
+            self.b1_dq[k].clock.next = self.clock.val();
+            self.b1_dq[k].d.next = self.b1_dq[k].q.val();
+            self.c1_st[k].clock.next = self.clock.val();
+            self.c1_st[k].d.next = self.c1_st[k].q.val();
             self.b_st[k].clock.next = self.clock.val();
             self.b_st[k].d.next = self.b_st[k].q.val();
             self.b_dq[k].clock.next = self.clock.val();
@@ -435,6 +485,12 @@ impl Logic for TextureCoords {
             self.e2_idx[k].d.next = self.e2_idx[k].q.val();
         }
         for k in 0..4 {
+            self.b1_dxq[k].clock.next = self.clock.val();
+            self.b1_dxq[k].d.next = self.b1_dxq[k].q.val();
+            self.c1_p[k].clock.next = self.clock.val();
+            self.c1_p[k].d.next = self.c1_p[k].q.val();
+            self.c1_dxq[k].clock.next = self.clock.val();
+            self.c1_dxq[k].d.next = self.c1_dxq[k].q.val();
             self.b_dxq[k].clock.next = self.clock.val();
             self.b_dxq[k].d.next = self.b_dxq[k].q.val();
             self.c_u[k].clock.next = self.clock.val();
@@ -509,7 +565,7 @@ impl Logic for TextureCoords {
             }
         }
 
-        // B: s = sat((s·q · r) >> (recip + 1 - lz)), likewise t.
+        // B1: the products s·q · r and t·q · r, and the shift recip + 1 - lz.
         for i in (DIV_STAGES - 1)..DIV_STAGES {
             self.mul_s.a.next = self.dl_sq[i].q.val();
             self.mul_t.a.next = self.dl_tq[i].q.val();
@@ -517,13 +573,32 @@ impl Logic for TextureCoords {
         }
         self.mul_s.b.next = self.recip.out_q.val();
         self.mul_t.b.next = self.recip.out_q.val();
-        self.wide[0].next = self.mul_s.p.val() >> self.sh.val();
-        if self.mul_s.p.val().get_bit(self.ps_msb.val().index()) {
-            self.wide[0].next = (self.mul_s.p.val() >> self.sh.val()) | !(self.ones_ps.val() >> self.sh.val());
+        if self.en.val() {
+            self.b1_valid.d.next = self.recip.out_valid.val();
+            self.b1_r.d.next = self.recip.out_q.val();
+            self.b1_p[0].d.next = self.mul_s.p.val();
+            self.b1_p[1].d.next = self.mul_t.p.val();
+            self.b1_sh.d.next = self.sh.val();
+            for i in (DIV_STAGES - 1)..DIV_STAGES {
+                self.b1_dxq[0].d.next = self.dl_dsq_x[i].q.val();
+                self.b1_dxq[1].d.next = self.dl_dsq_y[i].q.val();
+                self.b1_dxq[2].d.next = self.dl_dtq_x[i].q.val();
+                self.b1_dxq[3].d.next = self.dl_dtq_y[i].q.val();
+                self.b1_dq[0].d.next = self.dl_dq_x[i].q.val();
+                self.b1_dq[1].d.next = self.dl_dq_y[i].q.val();
+                self.b1_lz.d.next = self.dl_lz[i].q.val();
+                self.b1_ws.d.next = self.dl_ws[i].q.val();
+                self.b1_hs.d.next = self.dl_hs[i].q.val();
+            }
         }
-        self.wide[1].next = self.mul_t.p.val() >> self.sh.val();
-        if self.mul_t.p.val().get_bit(self.ps_msb.val().index()) {
-            self.wide[1].next = (self.mul_t.p.val() >> self.sh.val()) | !(self.ones_ps.val() >> self.sh.val());
+
+        // B2: s = sat(product >> sh), likewise t.
+        for k in 0..2 {
+            self.wide[k].next = self.b1_p[k].q.val() >> self.b1_sh.q.val();
+            if self.b1_p[k].q.val().get_bit(self.ps_msb.val().index()) {
+                self.wide[k].next =
+                    (self.b1_p[k].q.val() >> self.b1_sh.q.val()) | !(self.ones_ps.val() >> self.b1_sh.q.val());
+            }
         }
         for k in 0..2 {
             // Fits when its bits from ST - 1 up are all equal.
@@ -538,59 +613,78 @@ impl Logic for TextureCoords {
             }
         }
         if self.en.val() {
-            self.b_valid.d.next = self.recip.out_valid.val();
-            self.b_r.d.next = self.recip.out_q.val();
+            self.b_valid.d.next = self.b1_valid.q.val();
+            self.b_r.d.next = self.b1_r.q.val();
             for k in 0..2 {
                 self.b_st[k].d.next = self.st_c[k].val();
+                self.b_dq[k].d.next = self.b1_dq[k].q.val();
             }
-            for i in (DIV_STAGES - 1)..DIV_STAGES {
-                self.b_dxq[0].d.next = self.dl_dsq_x[i].q.val();
-                self.b_dxq[1].d.next = self.dl_dsq_y[i].q.val();
-                self.b_dxq[2].d.next = self.dl_dtq_x[i].q.val();
-                self.b_dxq[3].d.next = self.dl_dtq_y[i].q.val();
-                self.b_dq[0].d.next = self.dl_dq_x[i].q.val();
-                self.b_dq[1].d.next = self.dl_dq_y[i].q.val();
-                self.b_lz.d.next = self.dl_lz[i].q.val();
-                self.b_ws.d.next = self.dl_ws[i].q.val();
-                self.b_hs.d.next = self.dl_hs[i].q.val();
+            for k in 0..4 {
+                self.b_dxq[k].d.next = self.b1_dxq[k].q.val();
             }
+            self.b_lz.d.next = self.b1_lz.q.val();
+            self.b_ws.d.next = self.b1_ws.q.val();
+            self.b_hs.d.next = self.b1_hs.q.val();
         }
 
-        // C: g = d(x·q) - floor(x · dq >> G_SHIFT) for (s, x), (s, y), (t, x), (t, y); |g|
-        // in texels of level 0 (u along s by ws, v along t by hs).
-        self.num[0].x.next = self.b_st[0].q.val();
-        self.num[0].dq.next = self.b_dq[0].q.val();
-        self.num[0].size_log2.next = self.b_ws.q.val();
-        self.num[1].x.next = self.b_st[0].q.val();
-        self.num[1].dq.next = self.b_dq[1].q.val();
-        self.num[1].size_log2.next = self.b_ws.q.val();
-        self.num[2].x.next = self.b_st[1].q.val();
-        self.num[2].dq.next = self.b_dq[0].q.val();
-        self.num[2].size_log2.next = self.b_hs.q.val();
-        self.num[3].x.next = self.b_st[1].q.val();
-        self.num[3].dq.next = self.b_dq[1].q.val();
-        self.num[3].size_log2.next = self.b_hs.q.val();
+        // C1: x · dq for (s, x), (s, y), (t, x), (t, y), its bits from G_SHIFT up.
+        self.mul_g[0].a.next = self.b_st[0].q.val();
+        self.mul_g[0].b.next = self.b_dq[0].q.val();
+        self.mul_g[1].a.next = self.b_st[0].q.val();
+        self.mul_g[1].b.next = self.b_dq[1].q.val();
+        self.mul_g[2].a.next = self.b_st[1].q.val();
+        self.mul_g[2].b.next = self.b_dq[0].q.val();
+        self.mul_g[3].a.next = self.b_st[1].q.val();
+        self.mul_g[3].b.next = self.b_dq[1].q.val();
+        if self.en.val() {
+            self.c1_valid.d.next = self.b_valid.q.val();
+            for k in 0..2 {
+                self.c1_st[k].d.next = self.b_st[k].q.val();
+            }
+            for k in 0..4 {
+                self.c1_p[k].d.next = self.mul_g[k].p.val().get_bits::<PGS>(self.g_shift.val().index());
+                self.c1_dxq[k].d.next = self.b_dxq[k].q.val();
+            }
+            self.c1_lz.d.next = self.b_lz.q.val();
+            self.c1_ws.d.next = self.b_ws.q.val();
+            self.c1_hs.d.next = self.b_hs.q.val();
+            self.c1_r.d.next = self.b_r.q.val();
+        }
+
+        // C2: g = d(x·q) - floor(x · dq >> G_SHIFT); |g| in texels of level 0 (u along s by
+        // ws, v along t by hs).
+        self.num[0].size_log2.next = self.c1_ws.q.val();
+        self.num[1].size_log2.next = self.c1_ws.q.val();
+        self.num[2].size_log2.next = self.c1_hs.q.val();
+        self.num[3].size_log2.next = self.c1_hs.q.val();
         for k in 0..4 {
-            self.num[k].dxq.next = self.b_dxq[k].q.val();
+            self.num[k].dxq.next = self.c1_dxq[k].q.val();
+            self.num[k].p.next = self.c1_p[k].q.val();
         }
         if self.en.val() {
-            self.c_valid.d.next = self.b_valid.q.val();
+            self.c_valid.d.next = self.c1_valid.q.val();
             for k in 0..2 {
-                self.c_st[k].d.next = self.b_st[k].q.val();
+                self.c_st[k].d.next = self.c1_st[k].q.val();
             }
             for k in 0..4 {
                 self.c_u[k].d.next = self.num[k].u.val();
             }
-            self.c_lz.d.next = self.b_lz.q.val();
-            self.c_r.d.next = self.b_r.q.val();
+            self.c_lz.d.next = self.c1_lz.q.val();
+            self.c_r.d.next = self.c1_r.q.val();
         }
 
         // D: 001's max of the four, or GL's max of |(u, v)_x|² and |(u, v)_y|².
-        self.m_max.next = self.c_u[0].q.val();
-        for k in 1..4 {
-            if self.c_u[k].q.val() > self.m_max.val() {
-                self.m_max.next = self.c_u[k].q.val();
-            }
+        self.m_01.next = self.c_u[0].q.val();
+        if self.c_u[1].q.val() > self.c_u[0].q.val() {
+            self.m_01.next = self.c_u[1].q.val();
+        }
+        self.m_23.next = self.c_u[2].q.val();
+        if self.c_u[3].q.val() > self.c_u[2].q.val() {
+            self.m_23.next = self.c_u[3].q.val();
+        }
+        self.m_max.next = self.m_01.val();
+        if self.m_23.val() > self.m_01.val() {
+            self.m_max.next = self.m_23.val();
         }
         self.mul_sq[0].a.next = bit_cast::<U1, U>(self.c_u[0].q.val());
         self.mul_sq[0].b.next = bit_cast::<U1, U>(self.c_u[0].q.val());

@@ -9,9 +9,9 @@
 //!
 //! ```text
 //!  inp ──> texture_coords ──> texture_address ──> texture_cache ──> pick ──> texture_filter ──> out
-//!   │      19 stages, en_c    3 stages, en_a       valid/ready      words    5 stages, en_f
+//!   │      21 stages, en_c    3 stages, en_a       valid/ready      words    5 stages, en_f
 //!   │                 second ──┘                   side: attrs      └─> pair (a pixel's 1st level)
-//!   └─ cf, tag ──> two 32-entry RAMs: cf read as the pixel enters the filter, tag at out
+//!   └─ cf, tag ──> two 64-entry RAMs: cf read as the pixel enters the filter, tag at out
 //! ```
 //!
 //! # Stalls
@@ -40,15 +40,16 @@
 //!
 //! The cache's side payload carries each access's attributes (bit 0 second, 1 two levels,
 //! 7..2 the level fraction, 15..8 the footprint's banks, 23..16 alpha, 31..24 beta; 63..32
-//! zero). A pixel's lit colour `inp_cf` and tag `inp_tag` go into two RAMs of 32 words at
+//! zero). A pixel's lit colour `inp_cf` and tag `inp_tag` go into two RAMs of 64 words at
 //! its taking (`wp`): `cf` is read as the pixel enters the filter (`rc`), `tag` while it is
 //! at the output (`rt`); both RAMs read synchronously at the pointer's next value every
-//! cycle, and a word is written at least 24 cycles before it is read (19 + 3 + 2: coords,
-//! `texture_address`, the cache), so it is always read after its write. At most 19 + 3 +
-//! 2 + 1 + 5 = 30 pixels are in flight (coords' stages, `texture_address`' stages, the
-//! cache's S1 and output register, the pair register, the filter's stages: each pixel in
-//! flight holds at least one of these places), so 32 words never overflow and `wp == rt`
-//! (`idle`) means that none is.
+//! cycle, and a word is written at least 26 cycles before it is read (21 + 3 + 2: coords,
+//! `texture_address`, the cache), so it is always read after its write. At most 21 + 3 +
+//! 2 + 1 + 5 = 32 pixels are in flight ([`IN_FLIGHT`]: coords' stages, `texture_address`'
+//! stages, the cache's S1 and output register, the pair register, the filter's stages: each
+//! pixel in flight holds at least one of these places), so 64 words never overflow and `wp
+//! == rt` (`idle`) means that none is. (32 words held at most 31: enough for the 19 stages
+//! coords had before B and C were split, not for 21.)
 //!
 //! # Cycles
 //!
@@ -57,19 +58,19 @@
 //! ```text
 //!  cycle   what
 //!  t       inp_valid & inp_ready: into texture_coords (cf, tag into the RAMs)
-//!  t+19    coords.out_valid: the access into texture_address (stage A: the level)
-//!  t+20    stage B: the footprint's indices and fractions, the level's first word
-//!  t+21    stage C: wrap, each bank's word
-//!  t+22    address.out_valid: the cache takes the access
-//!  t+23    cache S1: every lane hits
-//!  t+24    cache out_valid: the words picked into footprint order, into the filter (cf read)
-//!  t+29    out_valid, out_rgba, out_tag: [`LATENCY`] = 29
+//!  t+21    coords.out_valid: the access into texture_address (stage A: the level)
+//!  t+22    stage B: the footprint's indices and fractions, the level's first word
+//!  t+23    stage C: wrap, each bank's word
+//!  t+24    address.out_valid: the cache takes the access
+//!  t+25    cache S1: every lane hits
+//!  t+26    cache out_valid: the words picked into footprint order, into the filter (cf read)
+//!  t+31    out_valid, out_rgba, out_tag: [`LATENCY`] = 31
 //! ```
 //!
-//! Between two levels: the first access goes into texture_address in t+19 (`inp_ready`
-//! low in t+19), the second in t+20; the cache takes them in t+22 and t+23; the first's
-//! words go into the pair register in t+24, the second's with them into the filter in
-//! t+25; out in t+30. One such pixel costs one cycle more than a one-level pixel. A miss
+//! Between two levels: the first access goes into texture_address in t+21 (`inp_ready`
+//! low in t+21), the second in t+22; the cache takes them in t+24 and t+25; the first's
+//! words go into the pair register in t+26, the second's with them into the filter in
+//! t+27; out in t+32. One such pixel costs one cycle more than a one-level pixel. A miss
 //! of m lanes holds the cache (`texture_cache`'s table: m·LINE + L + 2 cycles more than a
 //! hit at memory latency L), and with it `texture_address`, coords and the input;
 //! `out_ready` low holds the filter and the cache's output register, and then the rest.
@@ -120,8 +121,21 @@ pub const LATENCY: usize = crate::texture_coords::LATENCY
     + crate::texture_address::LATENCY
     + model::texture_cache::HIT_LATENCY as usize
     + crate::texture_filter::LATENCY;
-/// log2 of the cf and tag RAMs' words: room for every pixel in flight (at most 30).
-const FB: usize = 5;
+/// Pixels in flight at most: coords' and texture_address' stages, the cache's S1 and output
+/// register, the pair register, the filter's stages (32).
+pub const IN_FLIGHT: usize = crate::texture_coords::LATENCY
+    + crate::texture_address::LATENCY
+    + model::texture_cache::HIT_LATENCY as usize
+    + 1
+    + crate::texture_filter::LATENCY;
+/// log2 of the cf and tag RAMs' words: room for every pixel in flight, with `wp == rt` left
+/// to mean none.
+const FB: usize = 6;
+const _: () = assert!(IN_FLIGHT < 1 << FB);
+const _: () = assert!(
+    crate::texture_coords::LATENCY == model::texture_unit::pipeline::COORDS_STAGES
+        && LATENCY as u64 == model::texture_unit::pipeline::LATENCY
+);
 
 /// One of the four cache words, by its bank code: the footprint texel's word.
 #[derive(LogicBlock, Default)]

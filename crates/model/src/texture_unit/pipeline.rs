@@ -1,5 +1,5 @@
 //! The texture unit of paper 001 (section II-5) as one pipeline, cycle for cycle as the RTL
-//! top `rtl::texture_unit` runs it: `texture_coords` (19 stages, a global enable), then
+//! top `rtl::texture_unit` runs it: `texture_coords` (21 stages, a global enable), then
 //! `texture_address` (3 stages, a global enable; each access computed by `request` as it
 //! enters and carried through them), the texture cache ([`crate::texture_cache`]'s cycle
 //! model, inside), and `texture_filter` (5 stages, a global enable). Each colour is
@@ -34,8 +34,8 @@ use fx::TexFormats;
 use std::collections::VecDeque;
 use texture::LodRule;
 
-/// `texture_coords`' stages: the divider's 13 and 6 more (`rtl::texture_coords::LATENCY`).
-pub const COORDS_STAGES: usize = 19;
+/// `texture_coords`' stages: the divider's 13 and 8 more (`rtl::texture_coords::LATENCY`).
+pub const COORDS_STAGES: usize = 21;
 /// `texture_address`' stages: the level, the footprint and offset, the wrap and words
 /// (`rtl::texture_address::LATENCY`).
 pub const ADDRESS_STAGES: usize = 3;
@@ -409,11 +409,11 @@ mod tests {
     }
 
     /// A 1 x 1 texture, magnified (zero gradients), nearest: one lane an access. The first
-    /// access misses: taken 22 cycles after the pixel (coords' 19, texture_address' 3), its
+    /// access misses: taken 24 cycles after the pixel (coords' 21, texture_address' 3), its
     /// word asked 2 cycles later, a line of 4 words asked in 4 cycles, the last answered L =
     /// 5 cycles after, then the cache's Wait and lookup (2) and output register (1): out of
-    /// the cache in cycle 22 + 4 + 4 + 5 = 35, of the filter 5 later, 40; each later pixel,
-    /// waiting in texture_address and coords, hits, one a clock. 100 pixels: 40 + 100
+    /// the cache in cycle 24 + 4 + 4 + 5 = 37, of the filter 5 later, 42; each later pixel,
+    /// waiting in texture_address and coords, hits, one a clock. 100 pixels: 42 + 100
     /// cycles.
     #[test]
     fn texture_unit_pipeline_streams_a_pixel_a_clock_after_a_cold_miss() {
@@ -428,15 +428,17 @@ mod tests {
             })
             .collect();
         let run = cycles(F, CACHE, LodRule::Max, &memory, 5, &[(s, pixels)]).unwrap();
-        assert_eq!(run, Run { cycles: 140, pixels: 100, hits: 99, misses: 1, fills: 1 });
+        // Out of the cache 4 + LINE + L cycles after it takes the access (the sum above).
+        let miss = (COORDS_STAGES + ADDRESS_STAGES) as u64 + 4 + 4 + 5;
+        let cycles = miss + FILTER_STAGES as u64 + 100;
+        assert_eq!(run, Run { cycles, pixels: 100, hits: 99, misses: 1, fills: 1 });
     }
 
-    /// A pixel taken alone comes out 29 cycles later (19 + 3 + 2 + 5) when its access hits,
-    /// 30 when it reads two levels (its second access a cycle after the first).
+    /// A pixel taken alone comes out [`LATENCY`] = 31 cycles later (21 + 3 + 2 + 5) when its
+    /// access hits, 32 when it reads two levels (its second access a cycle after the first).
     #[test]
     fn texture_unit_pipeline_latency_of_one_and_two_levels() {
-        assert_eq!(LATENCY, 29);
-        for (mip, latency) in [(MipMode::None, 29), (MipMode::Linear, 30)] {
+        for (mip, latency) in [(MipMode::None, LATENCY), (MipMode::Linear, LATENCY + 1)] {
             let s = state([4, 4], 5, mip, Filter::Linear, LodRule::Max);
             let memory: Vec<u32> = (0..400).collect();
             let mut u = Pipeline::new(F, CACHE, LodRule::Max).unwrap();
