@@ -27,6 +27,12 @@
 //! and what follows it (B's shift and saturation, C's difference, magnitude and shift by
 //! the size) were the unit's critical path, and `texture_unit`'s (31.8 ns on ECP5, C).
 //!
+//! Area and clock (Yosys 0.23 `synth_ecp5`, nextpnr-ecp5 router2 on an LFE5U-25F, 001's
+//! rule): 3,141 LUT4, 5,817 FF, 24 MULT18X18D, 2 DP16KD, 48.0 MHz between registers (3,104
+//! LUT4, 5,095 FF and 34.7 MHz with 19 stages). The critical path is now E1: m's leading
+//! one (a priority chain over `d_m`) and the normalising shift into the table index
+//! `e1_idx` (20.8 ns, 11.8 of them routing).
+//!
 //! Model: `model::texture_unit::TextureUnit::coords`. Emitted: `texture_coords`
 //! (`--param EXACT=0|1`).
 

@@ -89,13 +89,17 @@
 //! done; accesses after it (the pixels then in coords and texture_address, too) read
 //! memory afresh.
 //!
-//! Area (Yosys 0.23 `synth_ecp5`, the default design's parameters): 9,876 LUT4, 7,263 FF,
-//! 55 MULT18X18D, 10 DP16KD and 204 DPR16X4: the four units' sum (9,667 LUT4, 7,066 FF,
-//! 55, 10 and 176) and the state, pair and pointer registers and the cf and tag RAMs.
-//! 31.5 MHz between registers on an LFE5U-45F (nextpnr-ecp5 router2; 13.6 MHz while
-//! `texture_address` was combinational), its critical path in `texture_coords`' stage C
-//! (s · dq/dx through the multiplier, the numerator, its magnitude and the shift by the
-//! size: 31.8 ns, 21.6 of them routing).
+//! Area (Yosys 0.23 `synth_ecp5`, the default design's parameters): 9,251 LUT4, 8,028 FF,
+//! 55 MULT18X18D, 11 DP16KD and 200 DPR16X4: the four units and the state, pair and
+//! pointer registers and the cf and tag RAMs of 64 words (tag in a DP16KD, cf in
+//! DPR16X4s). 41.0 MHz between registers on an LFE5U-45F (nextpnr-ecp5 router2), its
+//! critical path now in `texture_filter`: a decoded texel (`s4_cs`) through the texture
+//! environment's multiplier, its bias and rounding into `s5_rgba` (24.4 ns, 15.8 of them
+//! routing). Before `texture_coords`' B and C had a register after their multipliers
+//! (19 stages, 32-word RAMs): 9,876 LUT4, 7,263 FF, 10 DP16KD, 204 DPR16X4, 31.5 MHz, the
+//! critical path in its stage C (s · dq/dx through the multiplier, the numerator, its
+//! magnitude and the shift by the size: 31.8 ns, 21.6 of them routing); 13.6 MHz while
+//! `texture_address` was combinational.
 //! Throughput on the shipped textured scenes (every textured fragment in raster order,
 //! memory latency 10, the default cache; `model::texture_unit::pipeline::cycles`): 0.87
 //! pixels a clock on `checker.json` (hit rate 0.997), 0.20 to 0.24 on `crate.json`,
