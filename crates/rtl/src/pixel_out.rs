@@ -94,24 +94,44 @@ pub struct PixelOut {
     one: Constant<Bits<1>>,
 }
 
-impl Logic for PixelOut {
+/// The kernel of a one-lane unit ([`PixelOut`], [`PixelOutBlend`]): the pixel coming in
+/// onto the chunk's one lane (its `{y, x}`, `{R, G, B}` and the lane's enable) and
+/// `inp.ready` from the chunk, then the unit's own statements (its memory port's wiring,
+/// and the blending unit's colour path), then `idle`. A macro writes the kernels out before
+/// `#[hdl_gen]` reads them. Each unit writes its part as a kernel, `#[hdl_gen] fn
+/// update(&mut self) { ... }`: the attribute and `self` are then the unit's tokens, not the
+/// macro's, so that (by macro hygiene) its statements' `self` is the kernel's argument, in
+/// the kernel and in the code `#[hdl_gen]` makes of it.
+macro_rules! one_lane_kernel {
+    ($unit:ident, $pound:tt $hdl_gen:tt fn update(&mut $s:ident) { $($own:tt)* }) => {
+        impl Logic for $unit {
+            $pound $hdl_gen
+            fn update(&mut $s) {
+                clock!($s, clock, chunk);
+                $s.addr.hi.next = $s.inp.y.val();
+                $s.addr.lo.next = $s.inp.x.val();
+                $s.rg.hi.next = $s.inp.rgb0.val();
+                $s.rg.lo.next = $s.inp.rgb1.val();
+                $s.rgb.hi.next = $s.rg.out.val();
+                $s.rgb.lo.next = $s.inp.rgb2.val();
+                $s.chunk.in_valid.next = $s.inp.valid.val();
+                $s.chunk.in_mask.next = $s.one.val();
+                $s.chunk.in_addr.next = $s.addr.out.val();
+                $s.chunk.in_z.next = $s.inp.z.val();
+                $s.chunk.in_rgb.next = $s.rgb.out.val();
+                $s.inp.ready.next = $s.chunk.in_ready.val();
+                $($own)*
+                $s.idle.next = $s.chunk.idle.val();
+            }
+        }
+    };
+}
+
+one_lane_kernel! {
+    PixelOut,
     #[hdl_gen]
     fn update(&mut self) {
-        clock!(self, clock, chunk);
-        self.addr.hi.next = self.inp.y.val();
-        self.addr.lo.next = self.inp.x.val();
-        self.rg.hi.next = self.inp.rgb0.val();
-        self.rg.lo.next = self.inp.rgb1.val();
-        self.rgb.hi.next = self.rg.out.val();
-        self.rgb.lo.next = self.inp.rgb2.val();
-        self.chunk.in_valid.next = self.inp.valid.val();
-        self.chunk.in_mask.next = self.one.val();
-        self.chunk.in_addr.next = self.addr.out.val();
-        self.chunk.in_z.next = self.inp.z.val();
-        self.chunk.in_rgb.next = self.rgb.out.val();
-        self.inp.ready.next = self.chunk.in_ready.val();
         MemoryPort::link(&mut self.mem, &mut self.chunk.mem);
-        self.idle.next = self.chunk.idle.val();
     }
 }
 
@@ -174,22 +194,10 @@ pub struct PixelOutBlend {
     one: Constant<Bits<1>>,
 }
 
-impl Logic for PixelOutBlend {
+one_lane_kernel! {
+    PixelOutBlend,
     #[hdl_gen]
     fn update(&mut self) {
-        clock!(self, clock, chunk);
-        self.addr.hi.next = self.inp.y.val();
-        self.addr.lo.next = self.inp.x.val();
-        self.rg.hi.next = self.inp.rgb0.val();
-        self.rg.lo.next = self.inp.rgb1.val();
-        self.rgb.hi.next = self.rg.out.val();
-        self.rgb.lo.next = self.inp.rgb2.val();
-        self.chunk.in_valid.next = self.inp.valid.val();
-        self.chunk.in_mask.next = self.one.val();
-        self.chunk.in_addr.next = self.addr.out.val();
-        self.chunk.in_z.next = self.inp.z.val();
-        self.chunk.in_rgb.next = self.rgb.out.val();
-        self.inp.ready.next = self.chunk.in_ready.val();
         self.chunk.mem.ready.next = self.mem.ready.val();
         self.mem.rd_en.next = self.chunk.mem.rd_en.val();
         self.mem.rd_addr.next = self.chunk.mem.rd_addr.val();
@@ -204,7 +212,6 @@ impl Logic for PixelOutBlend {
             self.chunk.in_mode[b].next = self.inp.mode.val();
             self.chunk.rd_rgb[b].next = self.mem.rd_rgb.val();
         }
-        self.idle.next = self.chunk.idle.val();
     }
 }
 
