@@ -12,10 +12,11 @@ use rand_chacha::ChaCha8Rng;
 use rtl::pixel_out::{ChunkOut, PixelOut};
 use rtl::switch::Parts;
 use rtl::widths::{ADDR, CLASS, DEPTH, RGB, SCREEN};
+use rust_hdl::prelude::Block;
 use std::collections::VecDeque;
 use testbenches::memory::{pack, Memory, ReadDuringWrite, Request, Write};
-use testbenches::streams::{as_pins, pixel};
-use testbenches::{count, seed, verilated, verilated_with, Dual, Value};
+use testbenches::streams::{as_pins, pixel, PinValues};
+use testbenches::{count, seed, verilated, verilated_with, Dual, Pins, Value};
 
 /// Random pixels on a `w` x `h` screen, skewed toward read-after-write hazards: a pixel
 /// often repeats the address of one 1, 2 or 3 pixels before it, with a nearer, farther or
@@ -39,47 +40,54 @@ fn pixels(rng: &mut ChaCha8Rng, w: u32, h: u32, n: usize, zmax: u32) -> Vec<Pixe
     out
 }
 
-/// Sends `pixels` (`inp$valid` low 20% of the time) with the memory ready when `ready`
-/// says; checks every write the memory performs against the model's, in order, each
-/// `LATENCY` ready cycles after its pixel came in, and that a depth is read for each pixel
-/// when `depth_test` (a unit with its depth test) and never otherwise; returns the memory
-/// and the cycles.
-fn run(
-    dual: &mut Dual<PixelOut>,
-    depth_test: bool,
-    pixels: &[Pixel],
-    (w, h): (u32, u32),
-    rdw: ReadDuringWrite,
-    mut ready: impl FnMut(&mut ChaCha8Rng) -> bool,
-) -> Result<(Memory, u64), String> {
-    assert_eq!(II, 1);
+/// A `w` x `h` memory of one pixel a word (`testbenches::memory`, read-during-write `rdw`)
+/// and the model's framebuffer, both cleared to `background` at the farthest depth.
+pub(crate) fn buffers((w, h): (u32, u32), background: [u8; 3], rdw: ReadDuringWrite) -> (Memory, Framebuffer) {
     let zmax = z_max(&rtl::widths::FORMATS) as u32;
-    let mut model = Framebuffer::new(w, h, zmax, [7, 8, 9]);
-    let mut mem = Memory::new(CLASS, 1, (w, h), zmax, [7, 8, 9], rdw);
+    (Memory::new(CLASS, 1, (w, h), zmax, background, rdw), Framebuffer::new(w, h, zmax, background))
+}
+
+/// The lockstep run of a one-lane unit (`PixelOut`, `PixelOutBlend`) on `n` pixels behind
+/// `mem`: sends them in order (`inp$valid` low 20% of the time), pixel `i`'s fields and any
+/// read data besides `mem$rd_z` on the pins `pins(i, &mem)`, with the memory ready when
+/// `ready` says; checks that `inp$ready` is `mem$ready`, the read asked each cycle
+/// (`read_ok(&request, i, inp$valid)`, an error saying what is wrong), every write the
+/// memory performs against the model's (`model(&mut fb, i)`: pixel `i`'s write, None when
+/// its depth test fails), in order, each `LATENCY` ready cycles after its pixel came in, and
+/// the buffers at the end against `fb`'s. Returns the memory.
+pub(crate) fn lockstep<U: Block + Pins>(
+    dual: &mut Dual<U>,
+    n: usize,
+    (mut mem, mut fb): (Memory, Framebuffer),
+    mut ready: impl FnMut(&mut ChaCha8Rng) -> bool,
+    pins: impl Fn(usize, &Memory) -> PinValues,
+    read_ok: impl Fn(&Request, usize, bool) -> Result<(), String>,
+    mut model: impl FnMut(&mut Framebuffer, usize) -> Option<Write>,
+) -> Result<Memory, String> {
+    assert_eq!(II, 1);
     let mut rng = ChaCha8Rng::seed_from_u64(seed());
     // Pixels taken and not yet due: the ready cycle their write is due in, and the
     // model's write (None when the depth test fails).
     let mut due: VecDeque<(u64, Option<Write>)> = VecDeque::new();
     let (mut next, mut ready_cycle) = (0, 0u64);
-    while next < pixels.len() || !due.is_empty() {
+    while next < n || !due.is_empty() {
         let mem_ready = ready(&mut rng);
-        let valid = next < pixels.len() && rng.gen_bool(0.8);
-        let mut pins = vec![
+        let valid = next < n && rng.gen_bool(0.8);
+        let i = next.min(n - 1);
+        let mut inputs = vec![
             ("inp$valid", Value::new(1, valid as u128)),
             ("mem$ready", Value::new(1, mem_ready as u128)),
             ("mem$rd_z", mem.rd_z_value(DEPTH)),
         ];
-        let p = pixel("inp", &pixels[next.min(pixels.len() - 1)]);
-        pins.extend(as_pins(&p));
-        let out = dual.cycle(&pins).map_err(|m| m.to_string())?;
+        let own = pins(i, &mem);
+        inputs.extend(as_pins(&own));
+        let out = dual.cycle(&inputs).map_err(|m| m.to_string())?;
         let cycle = dual.cycles() - 1;
         if (out.get("inp$ready") == &Value::new(1, 1)) != mem_ready {
             return Err(format!("cycle {cycle}: inp$ready differs from mem$ready"));
         }
         let req = Request::of(&out);
-        if req.rd_en != (valid && depth_test) as u8 {
-            return Err(format!("cycle {cycle}: rd_en {} for inp$valid {valid}", req.rd_en));
-        }
+        read_ok(&req, i, valid).map_err(|e| format!("cycle {cycle}: {e}"))?;
         let writes = mem.edge(mem_ready, &req);
         let write = writes.as_slice().first().copied();
         if !mem_ready {
@@ -99,16 +107,43 @@ fn run(
             return Err(format!("cycle {cycle} (ready cycle {ready_cycle}): wrote {write:?}, model {want:?}"));
         }
         if valid {
-            let p = &pixels[next];
-            let w = model.pixel_out(p, 0).then_some(Write { x: p.x, y: p.y, z: p.z, rgb: p.rgb });
-            due.push_back((ready_cycle + LATENCY as u64, w));
+            due.push_back((ready_cycle + LATENCY as u64, model(&mut fb, next)));
             next += 1;
         }
         ready_cycle += 1;
     }
-    if (mem.depth.clone(), mem.rgb.clone()) != (model.depth, model.rgb) {
-        return Err("the buffers differ from the model's".into());
+    if let Some(d) = mem.differs_from(&fb) {
+        return Err(format!("the buffers differ from the model's: {d}"));
     }
+    Ok(mem)
+}
+
+/// Sends `pixels` through [`lockstep`] (the buffers cleared to [7, 8, 9]), with a depth
+/// read for each pixel when `depth_test` (a unit with its depth test) and never otherwise;
+/// returns the memory and the cycles.
+fn run(
+    dual: &mut Dual<PixelOut>,
+    depth_test: bool,
+    pixels: &[Pixel],
+    size: (u32, u32),
+    rdw: ReadDuringWrite,
+    ready: impl FnMut(&mut ChaCha8Rng) -> bool,
+) -> Result<(Memory, u64), String> {
+    let mem = lockstep(
+        dual,
+        pixels.len(),
+        buffers(size, [7, 8, 9], rdw),
+        ready,
+        |i, _| pixel("inp", &pixels[i]),
+        |req, _, valid| match req.rd_en == (valid && depth_test) as u8 {
+            true => Ok(()),
+            false => Err(format!("rd_en {} for inp$valid {valid}", req.rd_en)),
+        },
+        |fb, i| {
+            let p = &pixels[i];
+            fb.pixel_out(p, 0).then_some(Write { x: p.x, y: p.y, z: p.z, rgb: p.rgb })
+        },
+    )?;
     Ok((mem, dual.cycles()))
 }
 

@@ -7,16 +7,16 @@
 //! end; pixels on one address back to back and one, two and three apart, in every mode,
 //! blended in order as the model blends them one after the other.
 
+use super::pixel_out::{buffers, lockstep};
 use model::blend::{MODES, WORKED, WORKED_SRC_DST};
 use model::cull_sort::z_max;
-use model::pixel_out::{Framebuffer, II, LATENCY};
+use model::pixel_out::LATENCY;
 use model::span::Pixel;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::pixel_out::PixelOutBlend;
 use rtl::switch::Parts;
 use rtl::widths::{CLASS, DEPTH, SCREEN};
-use std::collections::VecDeque;
 use testbenches::memory::{Memory, ReadDuringWrite, Request, Write};
 use testbenches::streams::{as_pins, blend_pixel};
 use testbenches::{count, seed, verilated_with, Dual, Value, Verilated};
@@ -71,72 +71,41 @@ struct Ran {
     after_written: [u64; 3],
 }
 
-/// Sends `frags` (`inp$valid` low 20% of the time) with the memory (cleared to `background`)
-/// ready when `ready` says; checks every write the memory performs against the model's
-/// (`pixel_out_blended`), in order, each `LATENCY` ready cycles after its pixel came in,
-/// that the word of every pixel is read as it comes in (depth and colour, with the depth
-/// test or without it), and the buffers at the end.
+/// Sends `frags` through `pixel_out`'s lockstep run (the memory cleared to `background`):
+/// checks every write against the model's (`pixel_out_blended`) and that the word of every
+/// pixel is read as it comes in (depth and colour, with the depth test or without it).
 fn run(
     dual: &mut Dual<PixelOutBlend>,
     frags: &[Frag],
-    (w, h): (u32, u32),
+    size: (u32, u32),
     background: [u8; 3],
     rdw: ReadDuringWrite,
-    mut ready: impl FnMut(&mut ChaCha8Rng) -> bool,
+    ready: impl FnMut(&mut ChaCha8Rng) -> bool,
 ) -> Result<Ran, String> {
-    assert_eq!(II, 1);
-    let zmax = z_max(&rtl::widths::FORMATS) as u32;
-    let mut model = Framebuffer::new(w, h, zmax, background);
-    let mut mem = Memory::new(CLASS, 1, (w, h), zmax, background, rdw);
-    let mut rng = ChaCha8Rng::seed_from_u64(seed());
-    // Pixels taken and not yet due: the ready cycle their write is due in, and the
-    // model's write (None when the depth test fails).
-    let mut due: VecDeque<(u64, Option<Write>)> = VecDeque::new();
     let mut written: Vec<Option<(u32, u32)>> = Vec::new();
     let mut after_written = [0; 3];
-    let (mut next, mut ready_cycle) = (0, 0u64);
-    while next < frags.len() || !due.is_empty() {
-        let mem_ready = ready(&mut rng);
-        let valid = next < frags.len() && rng.gen_bool(0.8);
-        let (p, alpha, code) = &frags[next.min(frags.len() - 1)];
-        let mut pins = vec![
-            ("inp$valid", Value::new(1, valid as u128)),
-            ("mem$ready", Value::new(1, mem_ready as u128)),
-            ("mem$rd_z", mem.rd_z_value(DEPTH)),
-            ("mem$rd_rgb", mem.rd_rgb_value()),
-        ];
-        let fields = blend_pixel("inp", p, *alpha, *code);
-        pins.extend(as_pins(&fields));
-        let out = dual.cycle(&pins).map_err(|m| m.to_string())?;
-        let cycle = dual.cycles() - 1;
-        if (out.get("inp$ready") == &Value::new(1, 1)) != mem_ready {
-            return Err(format!("cycle {cycle}: inp$ready differs from mem$ready"));
-        }
-        let req = Request::of(&out);
-        if req.rd_en != valid as u8 || (valid && req.rd_addr != (p.y << SCREEN) | p.x) {
-            return Err(format!("cycle {cycle}: read {} at {:#x} for inp$valid {valid}", req.rd_en, req.rd_addr));
-        }
-        let writes = mem.edge(mem_ready, &req);
-        let write = writes.as_slice().first().copied();
-        if !mem_ready {
-            if write.is_some() {
-                return Err(format!("cycle {cycle}: a write without mem_ready"));
+    let mem = lockstep(
+        dual,
+        frags.len(),
+        buffers(size, background, rdw),
+        ready,
+        |i, mem| {
+            let (p, alpha, code) = &frags[i];
+            let mut pins = vec![("mem$rd_rgb".to_string(), mem.rd_rgb_value())];
+            pins.extend(blend_pixel("inp", p, *alpha, *code));
+            pins
+        },
+        |req, i, valid| {
+            let p = &frags[i].0;
+            match req.rd_en != valid as u8 || (valid && req.rd_addr != (p.y << SCREEN) | p.x) {
+                true => Err(format!("read {} at {:#x} for inp$valid {valid}", req.rd_en, req.rd_addr)),
+                false => Ok(()),
             }
-            continue;
-        }
-        let want = match due.front() {
-            Some(&(at, w)) if at == ready_cycle => {
-                due.pop_front();
-                w
-            }
-            _ => None,
-        };
-        if write != want {
-            return Err(format!("cycle {cycle} (ready cycle {ready_cycle}): wrote {write:?}, model {want:?}"));
-        }
-        if valid {
-            let w = model.pixel_out_blended(p, *alpha, mode_of(*code), 0).then(|| {
-                let rgb = model.rgb[(p.y * model.width + p.x) as usize];
+        },
+        |fb, i| {
+            let (p, alpha, code) = &frags[i];
+            let w = fb.pixel_out_blended(p, *alpha, mode_of(*code), 0).then(|| {
+                let rgb = fb.rgb[(p.y * fb.width + p.x) as usize];
                 Write { x: p.x, y: p.y, z: p.z, rgb }
             });
             if w.is_some() {
@@ -145,14 +114,9 @@ fn run(
                 }
             }
             written.push(w.map(|w| (w.x, w.y)));
-            due.push_back((ready_cycle + LATENCY as u64, w));
-            next += 1;
-        }
-        ready_cycle += 1;
-    }
-    if let Some(d) = mem.differs_from(&model) {
-        return Err(format!("the buffers differ from the model's: {d}"));
-    }
+            w
+        },
+    )?;
     Ok(Ran { mem, after_written })
 }
 
