@@ -17,6 +17,7 @@
 
 pub mod flow;
 pub mod stimulus;
+pub mod texture;
 
 pub use sim::{check_verilator, verilate, Pins, Port, PortDir, Value, Verilated, VlSim};
 pub use sim::{frame, hdl_out, memory, se_frame, streams, target_dir, write_if_changed, HdlSim, Outputs, Sim};

@@ -7,8 +7,9 @@ use fx::{Fmt, TexFormats};
 use model::texture_unit::{TexGrad, TexIn, TexState, TextureUnit};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use rtl::texture_coords::{TextureCoords, DQ, DST, LAMBDA, LATENCY, QB, ST};
+use rtl::texture_coords::{TextureCoords, LAMBDA, LATENCY, ST};
 use std::collections::VecDeque;
+use testbenches::texture::coord_pins;
 use testbenches::{count, seed, verilated_with, Dual, Value};
 use texture::{LodRule, Sampler};
 
@@ -40,22 +41,10 @@ fn raw(bits: usize, v: i64) -> Value {
 }
 
 fn pins(x: &Pixel, valid: bool, en: bool) -> Vec<(&'static str, Value)> {
-    let (p, g) = (&x.p, &x.g);
-    vec![
-        ("en", Value::new(1, en.into())),
-        ("inp_valid", Value::new(1, valid.into())),
-        ("inp_sq", raw(ST, p.sq)),
-        ("inp_tq", raw(ST, p.tq)),
-        ("inp_q", raw(QB, p.q)),
-        ("inp_dsq_x", raw(DST, g.dsq[0])),
-        ("inp_dsq_y", raw(DST, g.dsq[1])),
-        ("inp_dtq_x", raw(DST, g.dtq[0])),
-        ("inp_dtq_y", raw(DST, g.dtq[1])),
-        ("inp_dq_x", raw(DQ, g.dq[0])),
-        ("inp_dq_y", raw(DQ, g.dq[1])),
-        ("inp_ws", Value::new(4, x.size_log2[0].into())),
-        ("inp_hs", Value::new(4, x.size_log2[1].into())),
-    ]
+    let mut pins = vec![("en", Value::new(1, en.into())), ("inp_valid", Value::new(1, valid.into()))];
+    pins.extend(coord_pins(&x.p, &x.g));
+    pins.extend([("inp_ws", Value::new(4, x.size_log2[0].into())), ("inp_hs", Value::new(4, x.size_log2[1].into()))]);
+    pins
 }
 
 /// A random raw value of `fmt`: anywhere in its range, or small (a few LSB), or at its ends.

@@ -18,10 +18,10 @@ use model::texture_unit::pipeline::{Pipeline, Pixel, UnitIn, UnitOut};
 use model::texture_unit::{Fetch, TexState, TextureUnit};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use rtl::texture_coords::{DQ, DST, QB, ST};
 use rtl::texture_unit::{TextureUnit411, TextureUnit6424};
 use rust_hdl::prelude::Block;
 use std::collections::VecDeque;
+use testbenches::texture::coord_pins;
 use testbenches::{count, seed, verilated_with, Dual, Pins, Value};
 use texture::{EnvMode, Filter, LodRule, MipChain, MipMode, Sampler, TexelFormat, Texture, Weights, Wrap};
 
@@ -31,10 +31,6 @@ const MIPS: [MipMode; 3] = [MipMode::None, MipMode::Nearest, MipMode::Linear];
 const ENVS: [EnvMode; 5] = [EnvMode::Replace, EnvMode::Modulate, EnvMode::Decal, EnvMode::Blend, EnvMode::Add];
 /// Words of the test's texture memory.
 pub(crate) const MEMORY: usize = 1 << 15;
-
-fn raw(bits: usize, v: i64) -> Value {
-    Value::new(bits, (v as u128) & ((1u128 << bits) - 1))
-}
 
 fn bit(b: bool) -> Value {
     Value::new(1, b.into())
@@ -61,25 +57,16 @@ pub(crate) fn state_pins(s: &TexState) -> Vec<(&'static str, Value)> {
 
 /// The unit's input pins for `i` and the memory's `m`.
 fn pins(i: &UnitIn, m: &MemIn) -> Vec<(&'static str, Value)> {
-    let (p, g) = (&i.pixel.p, &i.pixel.g);
     let cf = i.pixel.cf;
-    let mut pins = vec![
-        ("inp_valid", bit(i.inp_valid)),
-        ("inp_sq", raw(ST, p.sq)),
-        ("inp_tq", raw(ST, p.tq)),
-        ("inp_q", raw(QB, p.q)),
-        ("inp_dsq_x", raw(DST, g.dsq[0])),
-        ("inp_dsq_y", raw(DST, g.dsq[1])),
-        ("inp_dtq_x", raw(DST, g.dtq[0])),
-        ("inp_dtq_y", raw(DST, g.dtq[1])),
-        ("inp_dq_x", raw(DQ, g.dq[0])),
-        ("inp_dq_y", raw(DQ, g.dq[1])),
+    let mut pins = vec![("inp_valid", bit(i.inp_valid))];
+    pins.extend(coord_pins(&i.pixel.p, &i.pixel.g));
+    pins.extend([
         ("inp_cf", Value::new(24, (cf[0] as u128) << 16 | (cf[1] as u128) << 8 | cf[2] as u128)),
         ("inp_tag", Value::new(32, i.pixel.tag.into())),
         ("st_load", bit(i.st_load)),
         ("inp_flush", bit(i.flush)),
         ("out_ready", bit(i.out_ready)),
-    ];
+    ]);
     pins.extend(state_pins(&i.state));
     pins.extend(mem_pins(m));
     pins
