@@ -3110,17 +3110,17 @@ module texture_path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x
     reg  [23:0] filter$inp_cf;
     wire  filter$out_valid;
     wire  [31:0] filter$out_rgba;
-    reg  [4:0] cf_ram$read_address;
+    reg  [5:0] cf_ram$read_address;
     reg  cf_ram$read_clock;
     wire  [23:0] cf_ram$read_data;
-    reg  [4:0] cf_ram$write_address;
+    reg  [5:0] cf_ram$write_address;
     reg  cf_ram$write_clock;
     reg  [23:0] cf_ram$write_data;
     reg  cf_ram$write_enable;
-    reg  [4:0] tag_ram$read_address;
+    reg  [5:0] tag_ram$read_address;
     reg  tag_ram$read_clock;
     wire  [31:0] tag_ram$read_data;
-    reg  [4:0] tag_ram$write_address;
+    reg  [5:0] tag_ram$write_address;
     reg  tag_ram$write_clock;
     reg  [31:0] tag_ram$write_data;
     reg  tag_ram$write_enable;
@@ -3163,14 +3163,14 @@ module texture_path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x
     reg  second$d;
     wire  second$q;
     reg  second$clock;
-    reg  [4:0] wp$d;
-    wire  [4:0] wp$q;
+    reg  [5:0] wp$d;
+    wire  [5:0] wp$q;
     reg  wp$clock;
-    reg  [4:0] rc$d;
-    wire  [4:0] rc$q;
+    reg  [5:0] rc$d;
+    wire  [5:0] rc$q;
     reg  rc$clock;
-    reg  [4:0] rt$d;
-    wire  [4:0] rt$q;
+    reg  [5:0] rt$d;
+    wire  [5:0] rt$q;
     reg  rt$clock;
     reg  [31:0] pair_words$0$d;
     wire  [31:0] pair_words$0$q;
@@ -8269,16 +8269,16 @@ endmodule // texture_path$unit$cache$st
 module texture_path$unit$cf_ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [4:0] read_address;
+    input wire  [5:0] read_address;
     input wire  read_clock;
     output reg  [23:0] read_data;
-    input wire  [4:0] write_address;
+    input wire  [5:0] write_address;
     input wire  write_clock;
     input wire  [23:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
-    reg[23:0] mem[31:0];
+    reg[23:0] mem[63:0];
     
     
     
@@ -8419,6 +8419,7 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
     localparam  recip_1 = 8'h19;
     localparam  st_msb = 8'h1c;
     localparam  ps_msb = 8'h37;
+    localparam  g_shift = 8'h18;
     localparam  m_top = 8'h5e;
     localparam  m_index = 8'h54;
     localparam  r_top = 8'h1a;
@@ -8880,6 +8881,48 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
     reg  [28:0] mul_t$a;
     reg  [26:0] mul_t$b;
     wire  [55:0] mul_t$p;
+    reg  b1_valid$d;
+    wire  b1_valid$q;
+    reg  b1_valid$clock;
+    reg  [55:0] b1_p$0$d;
+    wire  [55:0] b1_p$0$q;
+    reg  b1_p$0$clock;
+    reg  [55:0] b1_p$1$d;
+    wire  [55:0] b1_p$1$q;
+    reg  b1_p$1$clock;
+    reg  [7:0] b1_sh$d;
+    wire  [7:0] b1_sh$q;
+    reg  b1_sh$clock;
+    reg  [32:0] b1_dxq$0$d;
+    wire  [32:0] b1_dxq$0$q;
+    reg  b1_dxq$0$clock;
+    reg  [32:0] b1_dxq$1$d;
+    wire  [32:0] b1_dxq$1$q;
+    reg  b1_dxq$1$clock;
+    reg  [32:0] b1_dxq$2$d;
+    wire  [32:0] b1_dxq$2$q;
+    reg  b1_dxq$2$clock;
+    reg  [32:0] b1_dxq$3$d;
+    wire  [32:0] b1_dxq$3$q;
+    reg  b1_dxq$3$clock;
+    reg  [29:0] b1_dq$0$d;
+    wire  [29:0] b1_dq$0$q;
+    reg  b1_dq$0$clock;
+    reg  [29:0] b1_dq$1$d;
+    wire  [29:0] b1_dq$1$q;
+    reg  b1_dq$1$clock;
+    reg  [7:0] b1_lz$d;
+    wire  [7:0] b1_lz$q;
+    reg  b1_lz$clock;
+    reg  [3:0] b1_ws$d;
+    wire  [3:0] b1_ws$q;
+    reg  b1_ws$clock;
+    reg  [3:0] b1_hs$d;
+    wire  [3:0] b1_hs$q;
+    reg  b1_hs$clock;
+    reg  [26:0] b1_r$d;
+    wire  [26:0] b1_r$q;
+    reg  b1_r$clock;
     reg  b_valid$d;
     wire  b_valid$q;
     reg  b_valid$clock;
@@ -8919,24 +8962,77 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
     reg  [26:0] b_r$d;
     wire  [26:0] b_r$q;
     reg  b_r$clock;
+    reg  [28:0] mul_g$0$a;
+    reg  [29:0] mul_g$0$b;
+    wire  [58:0] mul_g$0$p;
+    reg  [28:0] mul_g$1$a;
+    reg  [29:0] mul_g$1$b;
+    wire  [58:0] mul_g$1$p;
+    reg  [28:0] mul_g$2$a;
+    reg  [29:0] mul_g$2$b;
+    wire  [58:0] mul_g$2$p;
+    reg  [28:0] mul_g$3$a;
+    reg  [29:0] mul_g$3$b;
+    wire  [58:0] mul_g$3$p;
+    reg  c1_valid$d;
+    wire  c1_valid$q;
+    reg  c1_valid$clock;
+    reg  [28:0] c1_st$0$d;
+    wire  [28:0] c1_st$0$q;
+    reg  c1_st$0$clock;
+    reg  [28:0] c1_st$1$d;
+    wire  [28:0] c1_st$1$q;
+    reg  c1_st$1$clock;
+    reg  [34:0] c1_p$0$d;
+    wire  [34:0] c1_p$0$q;
+    reg  c1_p$0$clock;
+    reg  [34:0] c1_p$1$d;
+    wire  [34:0] c1_p$1$q;
+    reg  c1_p$1$clock;
+    reg  [34:0] c1_p$2$d;
+    wire  [34:0] c1_p$2$q;
+    reg  c1_p$2$clock;
+    reg  [34:0] c1_p$3$d;
+    wire  [34:0] c1_p$3$q;
+    reg  c1_p$3$clock;
+    reg  [32:0] c1_dxq$0$d;
+    wire  [32:0] c1_dxq$0$q;
+    reg  c1_dxq$0$clock;
+    reg  [32:0] c1_dxq$1$d;
+    wire  [32:0] c1_dxq$1$q;
+    reg  c1_dxq$1$clock;
+    reg  [32:0] c1_dxq$2$d;
+    wire  [32:0] c1_dxq$2$q;
+    reg  c1_dxq$2$clock;
+    reg  [32:0] c1_dxq$3$d;
+    wire  [32:0] c1_dxq$3$q;
+    reg  c1_dxq$3$clock;
+    reg  [7:0] c1_lz$d;
+    wire  [7:0] c1_lz$q;
+    reg  c1_lz$clock;
+    reg  [3:0] c1_ws$d;
+    wire  [3:0] c1_ws$q;
+    reg  c1_ws$clock;
+    reg  [3:0] c1_hs$d;
+    wire  [3:0] c1_hs$q;
+    reg  c1_hs$clock;
+    reg  [26:0] c1_r$d;
+    wire  [26:0] c1_r$q;
+    reg  c1_r$clock;
     reg  [32:0] num$0$dxq;
-    reg  [28:0] num$0$x;
-    reg  [29:0] num$0$dq;
+    reg  [34:0] num$0$p;
     reg  [3:0] num$0$size_log2;
     wire  [46:0] num$0$u;
     reg  [32:0] num$1$dxq;
-    reg  [28:0] num$1$x;
-    reg  [29:0] num$1$dq;
+    reg  [34:0] num$1$p;
     reg  [3:0] num$1$size_log2;
     wire  [46:0] num$1$u;
     reg  [32:0] num$2$dxq;
-    reg  [28:0] num$2$x;
-    reg  [29:0] num$2$dq;
+    reg  [34:0] num$2$p;
     reg  [3:0] num$2$size_log2;
     wire  [46:0] num$2$u;
     reg  [32:0] num$3$dxq;
-    reg  [28:0] num$3$x;
-    reg  [29:0] num$3$dq;
+    reg  [34:0] num$3$p;
     reg  [3:0] num$3$size_log2;
     wire  [46:0] num$3$u;
     reg  c_valid$d;
@@ -9077,6 +9173,8 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
     reg  [55:0] wide$1;
     reg  [28:0] st_c$0;
     reg  [28:0] st_c$1;
+    reg  [46:0] m_01;
+    reg  [46:0] m_23;
     reg  [46:0] m_max;
     reg  [94:0] m_x;
     reg  [94:0] m_y;
@@ -9826,6 +9924,76 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
         .b(mul_t$b),
         .p(mul_t$p)
     );
+    texture_path$unit$coords$b1_valid b1_valid(
+        .d(b1_valid$d),
+        .q(b1_valid$q),
+        .clock(b1_valid$clock)
+    );
+    texture_path$unit$coords$b1_p$0 b1_p$0(
+        .d(b1_p$0$d),
+        .q(b1_p$0$q),
+        .clock(b1_p$0$clock)
+    );
+    texture_path$unit$coords$b1_p$1 b1_p$1(
+        .d(b1_p$1$d),
+        .q(b1_p$1$q),
+        .clock(b1_p$1$clock)
+    );
+    texture_path$unit$coords$b1_sh b1_sh(
+        .d(b1_sh$d),
+        .q(b1_sh$q),
+        .clock(b1_sh$clock)
+    );
+    texture_path$unit$coords$b1_dxq$0 b1_dxq$0(
+        .d(b1_dxq$0$d),
+        .q(b1_dxq$0$q),
+        .clock(b1_dxq$0$clock)
+    );
+    texture_path$unit$coords$b1_dxq$1 b1_dxq$1(
+        .d(b1_dxq$1$d),
+        .q(b1_dxq$1$q),
+        .clock(b1_dxq$1$clock)
+    );
+    texture_path$unit$coords$b1_dxq$2 b1_dxq$2(
+        .d(b1_dxq$2$d),
+        .q(b1_dxq$2$q),
+        .clock(b1_dxq$2$clock)
+    );
+    texture_path$unit$coords$b1_dxq$3 b1_dxq$3(
+        .d(b1_dxq$3$d),
+        .q(b1_dxq$3$q),
+        .clock(b1_dxq$3$clock)
+    );
+    texture_path$unit$coords$b1_dq$0 b1_dq$0(
+        .d(b1_dq$0$d),
+        .q(b1_dq$0$q),
+        .clock(b1_dq$0$clock)
+    );
+    texture_path$unit$coords$b1_dq$1 b1_dq$1(
+        .d(b1_dq$1$d),
+        .q(b1_dq$1$q),
+        .clock(b1_dq$1$clock)
+    );
+    texture_path$unit$coords$b1_lz b1_lz(
+        .d(b1_lz$d),
+        .q(b1_lz$q),
+        .clock(b1_lz$clock)
+    );
+    texture_path$unit$coords$b1_ws b1_ws(
+        .d(b1_ws$d),
+        .q(b1_ws$q),
+        .clock(b1_ws$clock)
+    );
+    texture_path$unit$coords$b1_hs b1_hs(
+        .d(b1_hs$d),
+        .q(b1_hs$q),
+        .clock(b1_hs$clock)
+    );
+    texture_path$unit$coords$b1_r b1_r(
+        .d(b1_r$d),
+        .q(b1_r$q),
+        .clock(b1_r$clock)
+    );
     texture_path$unit$coords$b_valid b_valid(
         .d(b_valid$d),
         .q(b_valid$q),
@@ -9891,31 +10059,122 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
         .q(b_r$q),
         .clock(b_r$clock)
     );
+    texture_path$unit$coords$mul_g$0 mul_g$0(
+        .a(mul_g$0$a),
+        .b(mul_g$0$b),
+        .p(mul_g$0$p)
+    );
+    texture_path$unit$coords$mul_g$1 mul_g$1(
+        .a(mul_g$1$a),
+        .b(mul_g$1$b),
+        .p(mul_g$1$p)
+    );
+    texture_path$unit$coords$mul_g$2 mul_g$2(
+        .a(mul_g$2$a),
+        .b(mul_g$2$b),
+        .p(mul_g$2$p)
+    );
+    texture_path$unit$coords$mul_g$3 mul_g$3(
+        .a(mul_g$3$a),
+        .b(mul_g$3$b),
+        .p(mul_g$3$p)
+    );
+    texture_path$unit$coords$c1_valid c1_valid(
+        .d(c1_valid$d),
+        .q(c1_valid$q),
+        .clock(c1_valid$clock)
+    );
+    texture_path$unit$coords$c1_st$0 c1_st$0(
+        .d(c1_st$0$d),
+        .q(c1_st$0$q),
+        .clock(c1_st$0$clock)
+    );
+    texture_path$unit$coords$c1_st$1 c1_st$1(
+        .d(c1_st$1$d),
+        .q(c1_st$1$q),
+        .clock(c1_st$1$clock)
+    );
+    texture_path$unit$coords$c1_p$0 c1_p$0(
+        .d(c1_p$0$d),
+        .q(c1_p$0$q),
+        .clock(c1_p$0$clock)
+    );
+    texture_path$unit$coords$c1_p$1 c1_p$1(
+        .d(c1_p$1$d),
+        .q(c1_p$1$q),
+        .clock(c1_p$1$clock)
+    );
+    texture_path$unit$coords$c1_p$2 c1_p$2(
+        .d(c1_p$2$d),
+        .q(c1_p$2$q),
+        .clock(c1_p$2$clock)
+    );
+    texture_path$unit$coords$c1_p$3 c1_p$3(
+        .d(c1_p$3$d),
+        .q(c1_p$3$q),
+        .clock(c1_p$3$clock)
+    );
+    texture_path$unit$coords$c1_dxq$0 c1_dxq$0(
+        .d(c1_dxq$0$d),
+        .q(c1_dxq$0$q),
+        .clock(c1_dxq$0$clock)
+    );
+    texture_path$unit$coords$c1_dxq$1 c1_dxq$1(
+        .d(c1_dxq$1$d),
+        .q(c1_dxq$1$q),
+        .clock(c1_dxq$1$clock)
+    );
+    texture_path$unit$coords$c1_dxq$2 c1_dxq$2(
+        .d(c1_dxq$2$d),
+        .q(c1_dxq$2$q),
+        .clock(c1_dxq$2$clock)
+    );
+    texture_path$unit$coords$c1_dxq$3 c1_dxq$3(
+        .d(c1_dxq$3$d),
+        .q(c1_dxq$3$q),
+        .clock(c1_dxq$3$clock)
+    );
+    texture_path$unit$coords$c1_lz c1_lz(
+        .d(c1_lz$d),
+        .q(c1_lz$q),
+        .clock(c1_lz$clock)
+    );
+    texture_path$unit$coords$c1_ws c1_ws(
+        .d(c1_ws$d),
+        .q(c1_ws$q),
+        .clock(c1_ws$clock)
+    );
+    texture_path$unit$coords$c1_hs c1_hs(
+        .d(c1_hs$d),
+        .q(c1_hs$q),
+        .clock(c1_hs$clock)
+    );
+    texture_path$unit$coords$c1_r c1_r(
+        .d(c1_r$d),
+        .q(c1_r$q),
+        .clock(c1_r$clock)
+    );
     texture_path$unit$coords$num$0 num$0(
         .dxq(num$0$dxq),
-        .x(num$0$x),
-        .dq(num$0$dq),
+        .p(num$0$p),
         .size_log2(num$0$size_log2),
         .u(num$0$u)
     );
     texture_path$unit$coords$num$1 num$1(
         .dxq(num$1$dxq),
-        .x(num$1$x),
-        .dq(num$1$dq),
+        .p(num$1$p),
         .size_log2(num$1$size_log2),
         .u(num$1$u)
     );
     texture_path$unit$coords$num$2 num$2(
         .dxq(num$2$dxq),
-        .x(num$2$x),
-        .dq(num$2$dq),
+        .p(num$2$p),
         .size_log2(num$2$size_log2),
         .u(num$2$u)
     );
     texture_path$unit$coords$num$3 num$3(
         .dxq(num$3$dxq),
-        .x(num$3$x),
-        .dq(num$3$dq),
+        .p(num$3$p),
         .size_log2(num$3$size_log2),
         .u(num$3$u)
     );
@@ -10137,11 +10396,22 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
     
     // Update code
     always @(*) begin
+        b1_valid$clock = clock;
+        b1_sh$clock = clock;
+        b1_lz$clock = clock;
+        b1_ws$clock = clock;
+        b1_hs$clock = clock;
+        b1_r$clock = clock;
         b_valid$clock = clock;
         b_lz$clock = clock;
         b_ws$clock = clock;
         b_hs$clock = clock;
         b_r$clock = clock;
+        c1_valid$clock = clock;
+        c1_lz$clock = clock;
+        c1_ws$clock = clock;
+        c1_hs$clock = clock;
+        c1_r$clock = clock;
         c_valid$clock = clock;
         c_lz$clock = clock;
         c_r$clock = clock;
@@ -10157,11 +10427,22 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
         e2_lz$clock = clock;
         e_valid$clock = clock;
         e_lambda$clock = clock;
+        b1_valid$d = b1_valid$q;
+        b1_sh$d = b1_sh$q;
+        b1_lz$d = b1_lz$q;
+        b1_ws$d = b1_ws$q;
+        b1_hs$d = b1_hs$q;
+        b1_r$d = b1_r$q;
         b_valid$d = b_valid$q;
         b_lz$d = b_lz$q;
         b_ws$d = b_ws$q;
         b_hs$d = b_hs$q;
         b_r$d = b_r$q;
+        c1_valid$d = c1_valid$q;
+        c1_lz$d = c1_lz$q;
+        c1_ws$d = c1_ws$q;
+        c1_hs$d = c1_hs$q;
+        c1_r$d = c1_r$q;
         c_valid$d = c_valid$q;
         c_lz$d = c_lz$q;
         c_r$d = c_r$q;
@@ -10177,6 +10458,12 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
         e2_lz$d = e2_lz$q;
         e_valid$d = e_valid$q;
         e_lambda$d = e_lambda$q;
+        b1_p$0$clock = clock;
+        b1_p$0$d = b1_p$0$q;
+        b1_dq$0$clock = clock;
+        b1_dq$0$d = b1_dq$0$q;
+        c1_st$0$clock = clock;
+        c1_st$0$d = c1_st$0$q;
         b_st$0$clock = clock;
         b_st$0$d = b_st$0$q;
         b_dq$0$clock = clock;
@@ -10199,6 +10486,12 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
         e1_idx$0$d = e1_idx$0$q;
         e2_idx$0$clock = clock;
         e2_idx$0$d = e2_idx$0$q;
+        b1_p$1$clock = clock;
+        b1_p$1$d = b1_p$1$q;
+        b1_dq$1$clock = clock;
+        b1_dq$1$d = b1_dq$1$q;
+        c1_st$1$clock = clock;
+        c1_st$1$d = c1_st$1$q;
         b_st$1$clock = clock;
         b_st$1$d = b_st$1$q;
         b_dq$1$clock = clock;
@@ -10221,18 +10514,42 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
         e1_idx$1$d = e1_idx$1$q;
         e2_idx$1$clock = clock;
         e2_idx$1$d = e2_idx$1$q;
+        b1_dxq$0$clock = clock;
+        b1_dxq$0$d = b1_dxq$0$q;
+        c1_p$0$clock = clock;
+        c1_p$0$d = c1_p$0$q;
+        c1_dxq$0$clock = clock;
+        c1_dxq$0$d = c1_dxq$0$q;
         b_dxq$0$clock = clock;
         b_dxq$0$d = b_dxq$0$q;
         c_u$0$clock = clock;
         c_u$0$d = c_u$0$q;
+        b1_dxq$1$clock = clock;
+        b1_dxq$1$d = b1_dxq$1$q;
+        c1_p$1$clock = clock;
+        c1_p$1$d = c1_p$1$q;
+        c1_dxq$1$clock = clock;
+        c1_dxq$1$d = c1_dxq$1$q;
         b_dxq$1$clock = clock;
         b_dxq$1$d = b_dxq$1$q;
         c_u$1$clock = clock;
         c_u$1$d = c_u$1$q;
+        b1_dxq$2$clock = clock;
+        b1_dxq$2$d = b1_dxq$2$q;
+        c1_p$2$clock = clock;
+        c1_p$2$d = c1_p$2$q;
+        c1_dxq$2$clock = clock;
+        c1_dxq$2$d = c1_dxq$2$q;
         b_dxq$2$clock = clock;
         b_dxq$2$d = b_dxq$2$q;
         c_u$2$clock = clock;
         c_u$2$d = c_u$2$q;
+        b1_dxq$3$clock = clock;
+        b1_dxq$3$d = b1_dxq$3$q;
+        c1_p$3$clock = clock;
+        c1_p$3$d = c1_p$3$q;
+        c1_dxq$3$clock = clock;
+        c1_dxq$3$d = c1_dxq$3$q;
         b_dxq$3$clock = clock;
         b_dxq$3$d = b_dxq$3$q;
         c_u$3$clock = clock;
@@ -10747,13 +11064,29 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
         sh = recip_1 - dl_lz$12$q;
         mul_s$b = recip$out_q;
         mul_t$b = recip$out_q;
-        wide$0 = mul_s$p >> sh;
-        if (mul_s$p[ps_msb]) begin
-            wide$0 = (mul_s$p >> sh) | ~(ones_ps >> sh);
+        if (en) begin
+            b1_valid$d = recip$out_valid;
+            b1_r$d = recip$out_q;
+            b1_p$0$d = mul_s$p;
+            b1_p$1$d = mul_t$p;
+            b1_sh$d = sh;
+            b1_dxq$0$d = dl_dsq_x$12$q;
+            b1_dxq$1$d = dl_dsq_y$12$q;
+            b1_dxq$2$d = dl_dtq_x$12$q;
+            b1_dxq$3$d = dl_dtq_y$12$q;
+            b1_dq$0$d = dl_dq_x$12$q;
+            b1_dq$1$d = dl_dq_y$12$q;
+            b1_lz$d = dl_lz$12$q;
+            b1_ws$d = dl_ws$12$q;
+            b1_hs$d = dl_hs$12$q;
         end
-        wide$1 = mul_t$p >> sh;
-        if (mul_t$p[ps_msb]) begin
-            wide$1 = (mul_t$p >> sh) | ~(ones_ps >> sh);
+        wide$0 = b1_p$0$q >> b1_sh$q;
+        if (b1_p$0$q[ps_msb]) begin
+            wide$0 = (b1_p$0$q >> b1_sh$q) | ~(ones_ps >> b1_sh$q);
+        end
+        wide$1 = b1_p$1$q >> b1_sh$q;
+        if (b1_p$1$q[ps_msb]) begin
+            wide$1 = (b1_p$1$q >> b1_sh$q) | ~(ones_ps >> b1_sh$q);
         end
         st_c$0 = wide$0[(32'h0)+:(29)];
         if (|(wide$0 >> st_msb) & ~(&wide$0[(st_msb)+:(28)])) begin
@@ -10770,56 +11103,79 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
             end
         end
         if (en) begin
-            b_valid$d = recip$out_valid;
-            b_r$d = recip$out_q;
+            b_valid$d = b1_valid$q;
+            b_r$d = b1_r$q;
             b_st$0$d = st_c$0;
+            b_dq$0$d = b1_dq$0$q;
             b_st$1$d = st_c$1;
-            b_dxq$0$d = dl_dsq_x$12$q;
-            b_dxq$1$d = dl_dsq_y$12$q;
-            b_dxq$2$d = dl_dtq_x$12$q;
-            b_dxq$3$d = dl_dtq_y$12$q;
-            b_dq$0$d = dl_dq_x$12$q;
-            b_dq$1$d = dl_dq_y$12$q;
-            b_lz$d = dl_lz$12$q;
-            b_ws$d = dl_ws$12$q;
-            b_hs$d = dl_hs$12$q;
+            b_dq$1$d = b1_dq$1$q;
+            b_dxq$0$d = b1_dxq$0$q;
+            b_dxq$1$d = b1_dxq$1$q;
+            b_dxq$2$d = b1_dxq$2$q;
+            b_dxq$3$d = b1_dxq$3$q;
+            b_lz$d = b1_lz$q;
+            b_ws$d = b1_ws$q;
+            b_hs$d = b1_hs$q;
         end
-        num$0$x = b_st$0$q;
-        num$0$dq = b_dq$0$q;
-        num$0$size_log2 = b_ws$q;
-        num$1$x = b_st$0$q;
-        num$1$dq = b_dq$1$q;
-        num$1$size_log2 = b_ws$q;
-        num$2$x = b_st$1$q;
-        num$2$dq = b_dq$0$q;
-        num$2$size_log2 = b_hs$q;
-        num$3$x = b_st$1$q;
-        num$3$dq = b_dq$1$q;
-        num$3$size_log2 = b_hs$q;
-        num$0$dxq = b_dxq$0$q;
-        num$1$dxq = b_dxq$1$q;
-        num$2$dxq = b_dxq$2$q;
-        num$3$dxq = b_dxq$3$q;
+        mul_g$0$a = b_st$0$q;
+        mul_g$0$b = b_dq$0$q;
+        mul_g$1$a = b_st$0$q;
+        mul_g$1$b = b_dq$1$q;
+        mul_g$2$a = b_st$1$q;
+        mul_g$2$b = b_dq$0$q;
+        mul_g$3$a = b_st$1$q;
+        mul_g$3$b = b_dq$1$q;
         if (en) begin
-            c_valid$d = b_valid$q;
-            c_st$0$d = b_st$0$q;
-            c_st$1$d = b_st$1$q;
+            c1_valid$d = b_valid$q;
+            c1_st$0$d = b_st$0$q;
+            c1_st$1$d = b_st$1$q;
+            c1_p$0$d = mul_g$0$p[(g_shift)+:(35)];
+            c1_dxq$0$d = b_dxq$0$q;
+            c1_p$1$d = mul_g$1$p[(g_shift)+:(35)];
+            c1_dxq$1$d = b_dxq$1$q;
+            c1_p$2$d = mul_g$2$p[(g_shift)+:(35)];
+            c1_dxq$2$d = b_dxq$2$q;
+            c1_p$3$d = mul_g$3$p[(g_shift)+:(35)];
+            c1_dxq$3$d = b_dxq$3$q;
+            c1_lz$d = b_lz$q;
+            c1_ws$d = b_ws$q;
+            c1_hs$d = b_hs$q;
+            c1_r$d = b_r$q;
+        end
+        num$0$size_log2 = c1_ws$q;
+        num$1$size_log2 = c1_ws$q;
+        num$2$size_log2 = c1_hs$q;
+        num$3$size_log2 = c1_hs$q;
+        num$0$dxq = c1_dxq$0$q;
+        num$0$p = c1_p$0$q;
+        num$1$dxq = c1_dxq$1$q;
+        num$1$p = c1_p$1$q;
+        num$2$dxq = c1_dxq$2$q;
+        num$2$p = c1_p$2$q;
+        num$3$dxq = c1_dxq$3$q;
+        num$3$p = c1_p$3$q;
+        if (en) begin
+            c_valid$d = c1_valid$q;
+            c_st$0$d = c1_st$0$q;
+            c_st$1$d = c1_st$1$q;
             c_u$0$d = num$0$u;
             c_u$1$d = num$1$u;
             c_u$2$d = num$2$u;
             c_u$3$d = num$3$u;
-            c_lz$d = b_lz$q;
-            c_r$d = b_r$q;
+            c_lz$d = c1_lz$q;
+            c_r$d = c1_r$q;
         end
-        m_max = c_u$0$q;
-        if (c_u$1$q > m_max) begin
-            m_max = c_u$1$q;
+        m_01 = c_u$0$q;
+        if (c_u$1$q > c_u$0$q) begin
+            m_01 = c_u$1$q;
         end
-        if (c_u$2$q > m_max) begin
-            m_max = c_u$2$q;
+        m_23 = c_u$2$q;
+        if (c_u$3$q > c_u$2$q) begin
+            m_23 = c_u$3$q;
         end
-        if (c_u$3$q > m_max) begin
-            m_max = c_u$3$q;
+        m_max = m_01;
+        if (m_23 > m_01) begin
+            m_max = m_23;
         end
         mul_sq$0$a = ((c_u$0$q) & 48'hffffffffffff);
         mul_sq$0$b = ((c_u$0$q) & 48'hffffffffffff);
@@ -11273,6 +11629,272 @@ module texture_path$unit$coords(clock,en,inp_valid,inp_sq,inp_tq,inp_q,inp_dsq_x
 endmodule // texture_path$unit$coords
 
 
+module texture_path$unit$coords$b1_dq$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 30'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_dq$0
+
+
+module texture_path$unit$coords$b1_dq$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 30'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_dq$1
+
+
+module texture_path$unit$coords$b1_dxq$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_dxq$0
+
+
+module texture_path$unit$coords$b1_dxq$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_dxq$1
+
+
+module texture_path$unit$coords$b1_dxq$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_dxq$2
+
+
+module texture_path$unit$coords$b1_dxq$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_dxq$3
+
+
+module texture_path$unit$coords$b1_hs(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_hs
+
+
+module texture_path$unit$coords$b1_lz(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_lz
+
+
+module texture_path$unit$coords$b1_p$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_p$0
+
+
+module texture_path$unit$coords$b1_p$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [55:0] d;
+    output reg  [55:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 56'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_p$1
+
+
+module texture_path$unit$coords$b1_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [26:0] d;
+    output reg  [26:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 27'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_r
+
+
+module texture_path$unit$coords$b1_sh(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_sh
+
+
+module texture_path$unit$coords$b1_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_valid
+
+
+module texture_path$unit$coords$b1_ws(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$b1_ws
+
+
 module texture_path$unit$coords$b_dq$0(d,q,clock);
     
     // Module arguments
@@ -11518,6 +12140,291 @@ module texture_path$unit$coords$b_ws(d,q,clock);
     end
           
 endmodule // texture_path$unit$coords$b_ws
+
+
+module texture_path$unit$coords$c1_dxq$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_dxq$0
+
+
+module texture_path$unit$coords$c1_dxq$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_dxq$1
+
+
+module texture_path$unit$coords$c1_dxq$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_dxq$2
+
+
+module texture_path$unit$coords$c1_dxq$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_dxq$3
+
+
+module texture_path$unit$coords$c1_hs(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_hs
+
+
+module texture_path$unit$coords$c1_lz(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_lz
+
+
+module texture_path$unit$coords$c1_p$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_p$0
+
+
+module texture_path$unit$coords$c1_p$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_p$1
+
+
+module texture_path$unit$coords$c1_p$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_p$2
+
+
+module texture_path$unit$coords$c1_p$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [34:0] d;
+    output reg  [34:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 35'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_p$3
+
+
+module texture_path$unit$coords$c1_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [26:0] d;
+    output reg  [26:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 27'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_r
+
+
+module texture_path$unit$coords$c1_st$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [28:0] d;
+    output reg  [28:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 29'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_st$0
+
+
+module texture_path$unit$coords$c1_st$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [28:0] d;
+    output reg  [28:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 29'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_st$1
+
+
+module texture_path$unit$coords$c1_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_valid
+
+
+module texture_path$unit$coords$c1_ws(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // texture_path$unit$coords$c1_ws
 
 
 module texture_path$unit$coords$c_lz(d,q,clock);
@@ -17026,6 +17933,62 @@ module texture_path$unit$coords$log_r(address,clock,data);
 endmodule // texture_path$unit$coords$log_r
 
 
+module texture_path$unit$coords$mul_g$0(a,b,p);
+    
+    // Module arguments
+    input wire  [28:0] a;
+    input wire  [29:0] b;
+    output reg  [58:0] p;
+    
+    // Update code (custom)
+    // p = low 59 bits of a * b, both signed: a signed 59-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // texture_path$unit$coords$mul_g$0
+
+
+module texture_path$unit$coords$mul_g$1(a,b,p);
+    
+    // Module arguments
+    input wire  [28:0] a;
+    input wire  [29:0] b;
+    output reg  [58:0] p;
+    
+    // Update code (custom)
+    // p = low 59 bits of a * b, both signed: a signed 59-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // texture_path$unit$coords$mul_g$1
+
+
+module texture_path$unit$coords$mul_g$2(a,b,p);
+    
+    // Module arguments
+    input wire  [28:0] a;
+    input wire  [29:0] b;
+    output reg  [58:0] p;
+    
+    // Update code (custom)
+    // p = low 59 bits of a * b, both signed: a signed 59-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // texture_path$unit$coords$mul_g$2
+
+
+module texture_path$unit$coords$mul_g$3(a,b,p);
+    
+    // Module arguments
+    input wire  [28:0] a;
+    input wire  [29:0] b;
+    output reg  [58:0] p;
+    
+    // Update code (custom)
+    // p = low 59 bits of a * b, both signed: a signed 59-bit context sign-extends
+    // both operands before multiplying.
+    always @(*) p = $signed(a) * $signed(b);
+endmodule // texture_path$unit$coords$mul_g$3
+
+
 module texture_path$unit$coords$mul_s(a,b,p);
     
     // Module arguments
@@ -17110,48 +18073,32 @@ module texture_path$unit$coords$mul_t(a,b,p);
 endmodule // texture_path$unit$coords$mul_t
 
 
-module texture_path$unit$coords$num$0(dxq,x,dq,size_log2,u);
+module texture_path$unit$coords$num$0(dxq,p,size_log2,u);
     
     // Module arguments
     input wire  [32:0] dxq;
-    input wire  [28:0] x;
-    input wire  [29:0] dq;
+    input wire  [34:0] p;
     input wire  [3:0] size_log2;
     output reg  [46:0] u;
     
     // Constant declarations
-    localparam  g_shift = 8'h18;
     localparam  dst_msb = 8'h20;
-    localparam  pg_msb = 8'h3a;
+    localparam  pgs_msb = 8'h22;
     localparam  g_msb = 8'h23;
     localparam  ext_dst = 36'he00000000;
     localparam  ext_pgs = 36'h800000000;
-    
-    // Stub signals
-    reg  [28:0] mul$a;
-    reg  [29:0] mul$b;
-    wire  [58:0] mul$p;
     
     // Local signals
     reg  [35:0] g;
     reg  [34:0] g_abs;
     
-    // Sub module instances
-    texture_path$unit$coords$num$0$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
     // Update code
     always @(*) begin
-        mul$a = x;
-        mul$b = dq;
-        g = ((dxq) & 36'hfffffffff) - ((mul$p[(g_shift)+:(35)]) & 36'hfffffffff);
+        g = ((dxq) & 36'hfffffffff) - ((p) & 36'hfffffffff);
         if (dxq[dst_msb]) begin
             g = g + ext_dst;
         end
-        if (mul$p[pg_msb]) begin
+        if (p[pgs_msb]) begin
             g = g - ext_pgs;
         end
         g_abs = g[(32'h0)+:(35)];
@@ -17164,62 +18111,32 @@ module texture_path$unit$coords$num$0(dxq,x,dq,size_log2,u);
 endmodule // texture_path$unit$coords$num$0
 
 
-module texture_path$unit$coords$num$0$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [28:0] a;
-    input wire  [29:0] b;
-    output reg  [58:0] p;
-    
-    // Update code (custom)
-    // p = low 59 bits of a * b, both signed: a signed 59-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // texture_path$unit$coords$num$0$mul
-
-
-module texture_path$unit$coords$num$1(dxq,x,dq,size_log2,u);
+module texture_path$unit$coords$num$1(dxq,p,size_log2,u);
     
     // Module arguments
     input wire  [32:0] dxq;
-    input wire  [28:0] x;
-    input wire  [29:0] dq;
+    input wire  [34:0] p;
     input wire  [3:0] size_log2;
     output reg  [46:0] u;
     
     // Constant declarations
-    localparam  g_shift = 8'h18;
     localparam  dst_msb = 8'h20;
-    localparam  pg_msb = 8'h3a;
+    localparam  pgs_msb = 8'h22;
     localparam  g_msb = 8'h23;
     localparam  ext_dst = 36'he00000000;
     localparam  ext_pgs = 36'h800000000;
-    
-    // Stub signals
-    reg  [28:0] mul$a;
-    reg  [29:0] mul$b;
-    wire  [58:0] mul$p;
     
     // Local signals
     reg  [35:0] g;
     reg  [34:0] g_abs;
     
-    // Sub module instances
-    texture_path$unit$coords$num$1$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
     // Update code
     always @(*) begin
-        mul$a = x;
-        mul$b = dq;
-        g = ((dxq) & 36'hfffffffff) - ((mul$p[(g_shift)+:(35)]) & 36'hfffffffff);
+        g = ((dxq) & 36'hfffffffff) - ((p) & 36'hfffffffff);
         if (dxq[dst_msb]) begin
             g = g + ext_dst;
         end
-        if (mul$p[pg_msb]) begin
+        if (p[pgs_msb]) begin
             g = g - ext_pgs;
         end
         g_abs = g[(32'h0)+:(35)];
@@ -17232,62 +18149,32 @@ module texture_path$unit$coords$num$1(dxq,x,dq,size_log2,u);
 endmodule // texture_path$unit$coords$num$1
 
 
-module texture_path$unit$coords$num$1$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [28:0] a;
-    input wire  [29:0] b;
-    output reg  [58:0] p;
-    
-    // Update code (custom)
-    // p = low 59 bits of a * b, both signed: a signed 59-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // texture_path$unit$coords$num$1$mul
-
-
-module texture_path$unit$coords$num$2(dxq,x,dq,size_log2,u);
+module texture_path$unit$coords$num$2(dxq,p,size_log2,u);
     
     // Module arguments
     input wire  [32:0] dxq;
-    input wire  [28:0] x;
-    input wire  [29:0] dq;
+    input wire  [34:0] p;
     input wire  [3:0] size_log2;
     output reg  [46:0] u;
     
     // Constant declarations
-    localparam  g_shift = 8'h18;
     localparam  dst_msb = 8'h20;
-    localparam  pg_msb = 8'h3a;
+    localparam  pgs_msb = 8'h22;
     localparam  g_msb = 8'h23;
     localparam  ext_dst = 36'he00000000;
     localparam  ext_pgs = 36'h800000000;
-    
-    // Stub signals
-    reg  [28:0] mul$a;
-    reg  [29:0] mul$b;
-    wire  [58:0] mul$p;
     
     // Local signals
     reg  [35:0] g;
     reg  [34:0] g_abs;
     
-    // Sub module instances
-    texture_path$unit$coords$num$2$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
     // Update code
     always @(*) begin
-        mul$a = x;
-        mul$b = dq;
-        g = ((dxq) & 36'hfffffffff) - ((mul$p[(g_shift)+:(35)]) & 36'hfffffffff);
+        g = ((dxq) & 36'hfffffffff) - ((p) & 36'hfffffffff);
         if (dxq[dst_msb]) begin
             g = g + ext_dst;
         end
-        if (mul$p[pg_msb]) begin
+        if (p[pgs_msb]) begin
             g = g - ext_pgs;
         end
         g_abs = g[(32'h0)+:(35)];
@@ -17300,62 +18187,32 @@ module texture_path$unit$coords$num$2(dxq,x,dq,size_log2,u);
 endmodule // texture_path$unit$coords$num$2
 
 
-module texture_path$unit$coords$num$2$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [28:0] a;
-    input wire  [29:0] b;
-    output reg  [58:0] p;
-    
-    // Update code (custom)
-    // p = low 59 bits of a * b, both signed: a signed 59-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // texture_path$unit$coords$num$2$mul
-
-
-module texture_path$unit$coords$num$3(dxq,x,dq,size_log2,u);
+module texture_path$unit$coords$num$3(dxq,p,size_log2,u);
     
     // Module arguments
     input wire  [32:0] dxq;
-    input wire  [28:0] x;
-    input wire  [29:0] dq;
+    input wire  [34:0] p;
     input wire  [3:0] size_log2;
     output reg  [46:0] u;
     
     // Constant declarations
-    localparam  g_shift = 8'h18;
     localparam  dst_msb = 8'h20;
-    localparam  pg_msb = 8'h3a;
+    localparam  pgs_msb = 8'h22;
     localparam  g_msb = 8'h23;
     localparam  ext_dst = 36'he00000000;
     localparam  ext_pgs = 36'h800000000;
-    
-    // Stub signals
-    reg  [28:0] mul$a;
-    reg  [29:0] mul$b;
-    wire  [58:0] mul$p;
     
     // Local signals
     reg  [35:0] g;
     reg  [34:0] g_abs;
     
-    // Sub module instances
-    texture_path$unit$coords$num$3$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
     // Update code
     always @(*) begin
-        mul$a = x;
-        mul$b = dq;
-        g = ((dxq) & 36'hfffffffff) - ((mul$p[(g_shift)+:(35)]) & 36'hfffffffff);
+        g = ((dxq) & 36'hfffffffff) - ((p) & 36'hfffffffff);
         if (dxq[dst_msb]) begin
             g = g + ext_dst;
         end
-        if (mul$p[pg_msb]) begin
+        if (p[pgs_msb]) begin
             g = g - ext_pgs;
         end
         g_abs = g[(32'h0)+:(35)];
@@ -17366,20 +18223,6 @@ module texture_path$unit$coords$num$3(dxq,x,dq,size_log2,u);
     end
     
 endmodule // texture_path$unit$coords$num$3
-
-
-module texture_path$unit$coords$num$3$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [28:0] a;
-    input wire  [29:0] b;
-    output reg  [58:0] p;
-    
-    // Update code (custom)
-    // p = low 59 bits of a * b, both signed: a signed 59-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // texture_path$unit$coords$num$3$mul
 
 
 module texture_path$unit$coords$recip(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
@@ -27516,13 +28359,13 @@ endmodule // texture_path$unit$r_ws
 module texture_path$unit$rc(d,q,clock);
     
     // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
+    input wire  [5:0] d;
+    output reg  [5:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 5'h0;
+       q = 6'h0;
     end
     
     always @(posedge clock) begin
@@ -27535,13 +28378,13 @@ endmodule // texture_path$unit$rc
 module texture_path$unit$rt(d,q,clock);
     
     // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
+    input wire  [5:0] d;
+    output reg  [5:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 5'h0;
+       q = 6'h0;
     end
     
     always @(posedge clock) begin
@@ -27573,16 +28416,16 @@ endmodule // texture_path$unit$second
 module texture_path$unit$tag_ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [4:0] read_address;
+    input wire  [5:0] read_address;
     input wire  read_clock;
     output reg  [31:0] read_data;
-    input wire  [4:0] write_address;
+    input wire  [5:0] write_address;
     input wire  write_clock;
     input wire  [31:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
-    reg[31:0] mem[31:0];
+    reg[31:0] mem[63:0];
     
     
     
@@ -27602,13 +28445,13 @@ endmodule // texture_path$unit$tag_ram
 module texture_path$unit$wp(d,q,clock);
     
     // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
+    input wire  [5:0] d;
+    output reg  [5:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 5'h0;
+       q = 6'h0;
     end
     
     always @(posedge clock) begin

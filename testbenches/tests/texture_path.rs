@@ -265,7 +265,7 @@ fn texture_path_frames_of_the_shipped_textured_scenes_equal_the_models() {
                 fb.pixel_out_blended(&p, alpha, blend, k as u32);
             }
         }
-        let name = path.display();
+        let name = path.strip_prefix(scene::shipped::dir()).unwrap_or(&path).display();
         assert!(fb.rgb == want.fb.rgb, "{name}: the image differs from the model's");
         assert!(fb.depth == want.fb.depth, "{name}: the depth differs from the model's");
         let s = hit_rate_of_trace(&CACHE, &want.fetches);

@@ -4,7 +4,7 @@
 //!
 //! ```text
 //!  fragment + its triangle ──> texture_setup's pixel part ──> texture_unit ──> fragment, alpha, mode
-//!   (x, y, z, lit rgb;          (s·q, t·q, q at the pixel,     (19 + 3 + 2 + 5
+//!   (x, y, z, lit rgb;          (s·q, t·q, q at the pixel,     (21 + 3 + 2 + 5
 //!    `new`: a triangle's         3 stages)                      stages)
 //!    first fragment)
 //!        └─ a triangle's first fragment: drain the pixel part, load the texture's state

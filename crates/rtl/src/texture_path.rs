@@ -22,9 +22,10 @@
 //!
 //! **The side RAM.** Each fragment taken writes its x, y, z and blend mode at `wp`; they are
 //! read, synchronously at the read pointer's next value as `texture_unit`'s RAMs are, while
-//! it is at `texture_unit`'s output. A word is read at least 3 + 29 cycles after its write,
-//! and at most 3 + 30 fragments are in flight (`texture_unit`'s module documentation), so
-//! 64 words never overflow. `texture_unit`'s tag is not used (0).
+//! it is at `texture_unit`'s output. A word is read at least `texture_setup::LATENCY` +
+//! `texture_unit::LATENCY` cycles after its write, and at most as many fragments are in
+//! flight as the pixel part's stages and `texture_unit::IN_FLIGHT` (3 + 32), so 64 words
+//! never overflow. `texture_unit`'s tag is not used (0).
 //!
 //! Model: `model::texture_path`. Tests: `testbenches/tests/texture_path.rs`. Emitted:
 //! `edgepaint emit --unit texture_path --param EXACT=0|1`.
@@ -39,8 +40,9 @@ use crate::Params;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::RAM;
 
-/// log2 of the side RAM's words.
+/// log2 of the side RAM's words: room for every fragment in flight.
 const SB: usize = 6;
+const _: () = assert!(crate::texture_setup::LATENCY + crate::texture_unit::IN_FLIGHT < 1 << SB);
 /// A side word: x, y, z, the blend mode.
 const SIDE: usize = 2 * SCREEN + DEPTH + 3;
 /// The state word: the 12 `tri$` state fields side by side.
