@@ -810,10 +810,6 @@ crate::pins!(TextureCoords {
 
 /// `UNITS` entry: the unit at `fx::TexFormats::DEFAULT`, `params["EXACT"]` choosing the rule.
 pub fn emit_texture_coords(params: &Params) -> Result<Emitted, String> {
-    let exact = match params["EXACT"] {
-        0 => false,
-        1 => true,
-        e => return Err(format!("texture_coords: EXACT = {e}: 0 (001's eq. 4) or 1 (GL's exact rho)")),
-    };
+    let exact = crate::exact_rule("texture_coords", params)?;
     Ok(emit_unit("texture_coords", TextureCoords::new(exact), params))
 }
