@@ -10,7 +10,7 @@
 //! against `TextureUnit::sample` at `texture_setup`'s planes, in order.
 
 use crate::texture_setup::{pixel, setup, start_pins, triangle};
-use crate::texture_unit::{mem_pins, random_state, state_pins, Memory, MEMORY};
+use crate::texture_unit::{mem_pins, random_state, request_pins, state_pins, Memory, MEMORY};
 use fx::{Formats, TexFormats};
 use model::blend::MODES;
 use model::span::Pixel;
@@ -90,16 +90,8 @@ fn pins(i: &PathIn, recip: &model::divider::Recip) -> Vec<(String, Value)> {
 
 /// The model's outputs compared every cycle, and the fragment out with `out$valid`.
 fn outputs(o: &PathOut) -> Vec<(&'static str, Value)> {
-    let mut want = vec![
-        ("inp$ready", bit(o.inp_ready)),
-        ("out$valid", bit(o.out_valid)),
-        ("mem_valid", bit(o.mem_valid)),
-        ("mem_addr", Value::new(26, o.mem_addr.into())),
-        ("hits", Value::new(32, o.hits.into())),
-        ("misses", Value::new(32, o.misses.into())),
-        ("fills", Value::new(32, o.fills.into())),
-        ("idle", bit(o.idle)),
-    ];
+    let mut want = vec![("inp$ready", bit(o.inp_ready)), ("out$valid", bit(o.out_valid)), ("idle", bit(o.idle))];
+    want.extend(request_pins(o.mem_valid, o.mem_addr, [o.hits, o.misses, o.fills]));
     if o.out_valid {
         let p = &o.out.pixel;
         want.extend([

@@ -79,15 +79,21 @@ pub(crate) fn mem_pins(m: &MemIn) -> [(&'static str, Value); 3] {
 
 /// The model's outputs compared every cycle (`out_rgba` and `out_tag` with `out_valid`).
 fn every_cycle(o: &UnitOut) -> Vec<(&'static str, Value)> {
-    vec![
-        ("inp_ready", bit(o.inp_ready)),
-        ("out_valid", bit(o.out_valid)),
-        ("mem_valid", bit(o.mem_valid)),
-        ("mem_addr", Value::new(26, o.mem_addr.into())),
-        ("hits", Value::new(32, o.hits.into())),
-        ("misses", Value::new(32, o.misses.into())),
-        ("fills", Value::new(32, o.fills.into())),
-        ("idle", bit(o.idle)),
+    let mut want = vec![("inp_ready", bit(o.inp_ready)), ("out_valid", bit(o.out_valid)), ("idle", bit(o.idle))];
+    want.extend(request_pins(o.mem_valid, o.mem_addr, [o.hits, o.misses, o.fills]));
+    want
+}
+
+/// The memory request (`mem_valid`, `mem_addr`) and the cache's counters (`hits`,
+/// `misses`, `fills`) on the pins of `texture_unit` and of `texture_path`, which holds it.
+pub(crate) fn request_pins(valid: bool, addr: u32, counters: [u32; 3]) -> [(&'static str, Value); 5] {
+    let [hits, misses, fills] = counters.map(|c| Value::new(32, c.into()));
+    [
+        ("mem_valid", bit(valid)),
+        ("mem_addr", Value::new(26, addr.into())),
+        ("hits", hits),
+        ("misses", misses),
+        ("fills", fills),
     ]
 }
 
