@@ -271,6 +271,11 @@ module gpu_top(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$
     wire  [7:0] core$out$rgb2;
     wire  core$idle;
     wire  core$done;
+    reg  core$hold;
+    wire  core$handed;
+    wire  [24:0] core$recip_mant;
+    wire  [5:0] core$recip_exp;
+    wire  core$walk_idle;
     reg  pixel_bus$clock;
     reg  pixel_bus$start;
     reg  pixel_bus$clear;
@@ -562,7 +567,12 @@ module gpu_top(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$
         .out$rgb1(core$out$rgb1),
         .out$rgb2(core$out$rgb2),
         .idle(core$idle),
-        .done(core$done)
+        .done(core$done),
+        .hold(core$hold),
+        .handed(core$handed),
+        .recip_mant(core$recip_mant),
+        .recip_exp(core$recip_exp),
+        .walk_idle(core$walk_idle)
     );
     gpu_top$pixel_bus pixel_bus(
         .clock(pixel_bus$clock),
@@ -762,6 +772,7 @@ module gpu_top(clock,host$aw_valid,host$aw_ready,host$aw_addr,host$w_valid,host$
         core$width = width$q;
         core$height = height$q;
         core$inp_last = 1'b0;
+        core$hold = 1'b0;
         if (parser$out$valid & queue$inp$ready) begin
             triangles$d = triangles$q + 32'h1;
         end
@@ -908,7 +919,7 @@ module gpu_top$busy(d,q,clock);
 endmodule // gpu_top$busy
 
 
-module gpu_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,inp_last,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle,done);
+module gpu_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,inp_last,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle,done,hold,handed,recip_mant,recip_exp,walk_idle);
     
     // Module arguments
     input wire  clock;
@@ -949,6 +960,11 @@ module gpu_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp
     output wire  [7:0] out$rgb2;
     output reg  idle;
     output reg  done;
+    input wire  hold;
+    output reg  handed;
+    output reg  [24:0] recip_mant;
+    output reg  [5:0] recip_exp;
+    output reg  walk_idle;
     
     // Stub signals
     reg  triangle_setup$clock;
@@ -1017,6 +1033,8 @@ module gpu_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp
     wire  [35:0] triangle_setup$out$ddx_c0;
     wire  [35:0] triangle_setup$out$ddx_c1;
     wire  [35:0] triangle_setup$out$ddx_c2;
+    wire  [24:0] triangle_setup$recip_mant;
+    wire  [5:0] triangle_setup$recip_exp;
     reg  edge_walk$clock;
     reg  [10:0] edge_walk$height;
     reg  edge_walk$inp$valid;
@@ -1101,6 +1119,8 @@ module gpu_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp
     wire  [35:0] edge_walk$out$ddx_c0;
     wire  [35:0] edge_walk$out$ddx_c1;
     wire  [35:0] edge_walk$out$ddx_c2;
+    reg  edge_walk$hold;
+    wire  edge_walk$idle;
     reg  fifo$clock;
     reg  fifo$inp$valid;
     wire  fifo$inp$ready;
@@ -1166,7 +1186,6 @@ module gpu_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp
     
     // Local signals
     reg  taken;
-    reg  handed;
     
     // Sub module instances
     gpu_top$core$triangle_setup triangle_setup(
@@ -1259,7 +1278,9 @@ module gpu_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp
         .out$ddx_z(triangle_setup$out$ddx_z),
         .out$ddx_c0(triangle_setup$out$ddx_c0),
         .out$ddx_c1(triangle_setup$out$ddx_c1),
-        .out$ddx_c2(triangle_setup$out$ddx_c2)
+        .out$ddx_c2(triangle_setup$out$ddx_c2),
+        .recip_mant(triangle_setup$recip_mant),
+        .recip_exp(triangle_setup$recip_exp)
     );
     gpu_top$core$edge_walk edge_walk(
         .clock(edge_walk$clock),
@@ -1345,7 +1366,9 @@ module gpu_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp
         .out$ddx_z(edge_walk$out$ddx_z),
         .out$ddx_c0(edge_walk$out$ddx_c0),
         .out$ddx_c1(edge_walk$out$ddx_c1),
-        .out$ddx_c2(edge_walk$out$ddx_c2)
+        .out$ddx_c2(edge_walk$out$ddx_c2),
+        .hold(edge_walk$hold),
+        .idle(edge_walk$idle)
     );
     gpu_top$core$fifo fifo(
         .clock(fifo$clock),
@@ -1440,6 +1463,9 @@ module gpu_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp
             last_in$d = inp_last;
         end
         edge_walk$height = height;
+        edge_walk$hold = hold;
+        recip_mant = triangle_setup$recip_mant;
+        recip_exp = triangle_setup$recip_exp;
         span$width = width;
         taken = inp$valid & inp$ready;
         handed = triangle_setup$out$valid & edge_walk$inp$ready;
@@ -1449,7 +1475,8 @@ module gpu_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp
         if (~taken & handed) begin
             in_setup$d = in_setup$q - 32'h1;
         end
-        idle = (in_setup$q == 32'h0) & edge_walk$inp$ready & fifo$empty & span$idle;
+        walk_idle = edge_walk$idle & fifo$empty & span$idle;
+        idle = (in_setup$q == 32'h0) & walk_idle;
         done = last_in$q & idle;
     end
     
@@ -1555,7 +1582,7 @@ module gpu_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp
 endmodule // gpu_top$core
 
 
-module gpu_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_j,inp$maj_count,inp$maj_x,inp$maj_r,inp$maj_q,inp$maj_rho,inp$maj_d,inp$maj_at_z,inp$maj_at_c0,inp$maj_at_c1,inp$maj_at_c2,inp$maj_inc0_z,inp$maj_inc0_c0,inp$maj_inc0_c1,inp$maj_inc0_c2,inp$maj_inc1_z,inp$maj_inc1_c0,inp$maj_inc1_c1,inp$maj_inc1_c2,inp$short0_j,inp$short0_count,inp$short0_x,inp$short0_r,inp$short0_q,inp$short0_rho,inp$short0_d,inp$short0_at_z,inp$short0_at_c0,inp$short0_at_c1,inp$short0_at_c2,inp$short0_inc0_z,inp$short0_inc0_c0,inp$short0_inc0_c1,inp$short0_inc0_c2,inp$short0_inc1_z,inp$short0_inc1_c0,inp$short0_inc1_c1,inp$short0_inc1_c2,inp$short1_j,inp$short1_count,inp$short1_x,inp$short1_r,inp$short1_q,inp$short1_rho,inp$short1_d,inp$short1_at_z,inp$short1_at_c0,inp$short1_at_c1,inp$short1_at_c2,inp$short1_inc0_z,inp$short1_inc0_c0,inp$short1_inc0_c1,inp$short1_inc0_c2,inp$short1_inc1_z,inp$short1_inc1_c0,inp$short1_inc1_c1,inp$short1_inc1_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
+module gpu_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_j,inp$maj_count,inp$maj_x,inp$maj_r,inp$maj_q,inp$maj_rho,inp$maj_d,inp$maj_at_z,inp$maj_at_c0,inp$maj_at_c1,inp$maj_at_c2,inp$maj_inc0_z,inp$maj_inc0_c0,inp$maj_inc0_c1,inp$maj_inc0_c2,inp$maj_inc1_z,inp$maj_inc1_c0,inp$maj_inc1_c1,inp$maj_inc1_c2,inp$short0_j,inp$short0_count,inp$short0_x,inp$short0_r,inp$short0_q,inp$short0_rho,inp$short0_d,inp$short0_at_z,inp$short0_at_c0,inp$short0_at_c1,inp$short0_at_c2,inp$short0_inc0_z,inp$short0_inc0_c0,inp$short0_inc0_c1,inp$short0_inc0_c2,inp$short0_inc1_z,inp$short0_inc1_c0,inp$short0_inc1_c1,inp$short0_inc1_c2,inp$short1_j,inp$short1_count,inp$short1_x,inp$short1_r,inp$short1_q,inp$short1_rho,inp$short1_d,inp$short1_at_z,inp$short1_at_c0,inp$short1_at_c1,inp$short1_at_c2,inp$short1_inc0_z,inp$short1_inc0_c0,inp$short1_inc0_c1,inp$short1_inc0_c2,inp$short1_inc1_z,inp$short1_inc1_c0,inp$short1_inc1_c1,inp$short1_inc1_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,hold,idle);
     
     // Module arguments
     input wire  clock;
@@ -1642,6 +1669,8 @@ module gpu_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_
     output reg  [35:0] out$ddx_c0;
     output reg  [35:0] out$ddx_c1;
     output reg  [35:0] out$ddx_c2;
+    input wire  hold;
+    output reg  idle;
     
     // Stub signals
     wire  clip_y$on;
@@ -2275,8 +2304,9 @@ module gpu_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_
         o_right_c2$d = o_right_c2$q;
         maj$clock = clock;
         cur$clock = clock;
-        inp$ready = ~busy$q;
-        accept = inp$valid & ~busy$q;
+        idle = ~busy$q;
+        inp$ready = ~busy$q & ~hold;
+        accept = inp$valid & ~busy$q & ~hold;
         in_up = inp$walk & clip_y$on;
         height_j = ((height) & 13'h1fff);
         in_j_sign$x = inp$maj_j;
@@ -9571,7 +9601,7 @@ module gpu_top$core$span$zr$x_neg(x,neg);
 endmodule // gpu_top$core$span$zr$x_neg
 
 
-module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2);
+module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,recip_mant,recip_exp);
     
     // Module arguments
     input wire  clock;
@@ -9664,6 +9694,8 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
     output reg  [35:0] out$ddx_c0;
     output reg  [35:0] out$ddx_c1;
     output reg  [35:0] out$ddx_c2;
+    output reg  [24:0] recip_mant;
+    output reg  [5:0] recip_exp;
     
     // Constant declarations
     localparam  q_msb = 8'h12;
@@ -9868,11 +9900,12 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
     localparam  view_res$5 = 8'h3;
     localparam  view_res$6 = 8'h2;
     localparam  view_res_w$0 = 8'h3;
-    localparam  view_res_w$1 = 8'h2;
-    localparam  view_res_w$2 = 8'h3;
-    localparam  view_res_w$3 = 8'h2;
-    localparam  view_res_w$4 = 8'h3;
-    localparam  view_res_w$5 = 8'h2;
+    localparam  view_res_w$1 = 8'h3;
+    localparam  view_res_w$2 = 8'h2;
+    localparam  view_res_w$3 = 8'h3;
+    localparam  view_res_w$4 = 8'h2;
+    localparam  view_res_w$5 = 8'h3;
+    localparam  view_res_w$6 = 8'h2;
     localparam  view_handover = 8'h4;
     localparam  ends$0 = 8'ha;
     localparam  ends$1 = 8'h14;
@@ -10897,6 +10930,21 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
     reg  [5:0] exp$4$d;
     wire  [5:0] exp$4$q;
     reg  exp$4$clock;
+    reg  [24:0] mant$0$d;
+    wire  [24:0] mant$0$q;
+    reg  mant$0$clock;
+    reg  [24:0] mant$1$d;
+    wire  [24:0] mant$1$q;
+    reg  mant$1$clock;
+    reg  [24:0] mant$2$d;
+    wire  [24:0] mant$2$q;
+    reg  mant$2$clock;
+    reg  [24:0] mant$3$d;
+    wire  [24:0] mant$3$q;
+    reg  mant$3$clock;
+    reg  [24:0] mant$4$d;
+    wire  [24:0] mant$4$q;
+    reg  mant$4$clock;
     reg  [18:0] x$0$d;
     wire  [18:0] x$0$q;
     reg  x$0$clock;
@@ -13302,6 +13350,31 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
         .q(exp$4$q),
         .clock(exp$4$clock)
     );
+    gpu_top$core$triangle_setup$mant$0 mant$0(
+        .d(mant$0$d),
+        .q(mant$0$q),
+        .clock(mant$0$clock)
+    );
+    gpu_top$core$triangle_setup$mant$1 mant$1(
+        .d(mant$1$d),
+        .q(mant$1$q),
+        .clock(mant$1$clock)
+    );
+    gpu_top$core$triangle_setup$mant$2 mant$2(
+        .d(mant$2$d),
+        .q(mant$2$q),
+        .clock(mant$2$clock)
+    );
+    gpu_top$core$triangle_setup$mant$3 mant$3(
+        .d(mant$3$d),
+        .q(mant$3$q),
+        .clock(mant$3$clock)
+    );
+    gpu_top$core$triangle_setup$mant$4 mant$4(
+        .d(mant$4$d),
+        .q(mant$4$q),
+        .clock(mant$4$clock)
+    );
     gpu_top$core$triangle_setup$x$0 x$0(
         .d(x$0$d),
         .q(x$0$q),
@@ -14436,6 +14509,8 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
         sign$0$d = sign$0$q;
         exp$0$clock = clock;
         exp$0$d = exp$0$q;
+        mant$0$clock = clock;
+        mant$0$d = mant$0$q;
         x$0$clock = clock;
         x$0$d = x$0$q;
         r$0$clock = clock;
@@ -14504,6 +14579,8 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
         sign$1$d = sign$1$q;
         exp$1$clock = clock;
         exp$1$d = exp$1$q;
+        mant$1$clock = clock;
+        mant$1$d = mant$1$q;
         x$3$clock = clock;
         x$3$d = x$3$q;
         r$3$clock = clock;
@@ -14572,6 +14649,8 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
         sign$2$d = sign$2$q;
         exp$2$clock = clock;
         exp$2$d = exp$2$q;
+        mant$2$clock = clock;
+        mant$2$d = mant$2$q;
         x$6$clock = clock;
         x$6$d = x$6$q;
         r$6$clock = clock;
@@ -14640,6 +14719,8 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
         sign$3$d = sign$3$q;
         exp$3$clock = clock;
         exp$3$d = exp$3$q;
+        mant$3$clock = clock;
+        mant$3$d = mant$3$q;
         x$9$clock = clock;
         x$9$d = x$9$q;
         r$9$clock = clock;
@@ -14708,6 +14789,8 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
         sign$4$d = sign$4$q;
         exp$4$clock = clock;
         exp$4$d = exp$4$q;
+        mant$4$clock = clock;
+        mant$4$d = mant$4$q;
         x$12$clock = clock;
         x$12$d = x$12$q;
         r$12$clock = clock;
@@ -14937,6 +15020,7 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
                 crosses$1$d = crosses$0$q;
                 sign$1$d = maj_left$0;
                 exp$1$d = exp$0$q;
+                mant$1$d = mant$0$q;
                 x$3$d = x$0$q;
                 r$3$d = r$0$q;
                 q$3$d = q$0$q;
@@ -14973,6 +15057,7 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
                 crosses$2$d = crosses$1$q;
                 sign$2$d = maj_left$1;
                 exp$2$d = exp$1$q;
+                mant$2$d = mant$1$q;
                 x$6$d = x$3$q;
                 r$6$d = r$3$q;
                 q$6$d = q$3$q;
@@ -15009,6 +15094,7 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
                 crosses$3$d = crosses$2$q;
                 sign$3$d = maj_left$2;
                 exp$3$d = exp$2$q;
+                mant$3$d = mant$2$q;
                 x$9$d = x$6$q;
                 r$9$d = r$6$q;
                 q$9$d = q$6$q;
@@ -15045,6 +15131,7 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
                 crosses$4$d = crosses$3$q;
                 sign$4$d = maj_left$3;
                 exp$4$d = exp$3$q;
+                mant$4$d = mant$3$q;
                 x$12$d = x$9$q;
                 r$12$d = r$9$q;
                 q$12$d = q$9$q;
@@ -17899,58 +17986,58 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
             xi$0 = g4$xi$0;
             ed$0 = g4$ed16$0[(32'h0)+:(21)];
         end
-        if (at_res$1 & (view_res_w$0 == 0)) begin
+        if (at_res$1 & (view_res_w$1 == 0)) begin
             x$0$d = xi$0 + q_n + r_pos;
             r$0$d = 32'h0;
             if (r_pos) begin
                 r$0$d = ed$0 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$2 & (view_res_w$1 == 0)) begin
+        if (at_res$2 & (view_res_w$2 == 0)) begin
             q$0$d = q_n;
             rho$0$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$1 & (view_res_w$0 == 1)) begin
+        if (at_res$1 & (view_res_w$1 == 1)) begin
             x$3$d = xi$0 + q_n + r_pos;
             r$3$d = 32'h0;
             if (r_pos) begin
                 r$3$d = ed$0 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$2 & (view_res_w$1 == 1)) begin
+        if (at_res$2 & (view_res_w$2 == 1)) begin
             q$3$d = q_n;
             rho$3$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$1 & (view_res_w$0 == 2)) begin
+        if (at_res$1 & (view_res_w$1 == 2)) begin
             x$6$d = xi$0 + q_n + r_pos;
             r$6$d = 32'h0;
             if (r_pos) begin
                 r$6$d = ed$0 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$2 & (view_res_w$1 == 2)) begin
+        if (at_res$2 & (view_res_w$2 == 2)) begin
             q$6$d = q_n;
             rho$6$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$1 & (view_res_w$0 == 3)) begin
+        if (at_res$1 & (view_res_w$1 == 3)) begin
             x$9$d = xi$0 + q_n + r_pos;
             r$9$d = 32'h0;
             if (r_pos) begin
                 r$9$d = ed$0 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$2 & (view_res_w$1 == 3)) begin
+        if (at_res$2 & (view_res_w$2 == 3)) begin
             q$9$d = q_n;
             rho$9$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$1 & (view_res_w$0 == 4)) begin
+        if (at_res$1 & (view_res_w$1 == 4)) begin
             x$12$d = xi$0 + q_n + r_pos;
             r$12$d = 32'h0;
             if (r_pos) begin
                 r$12$d = ed$0 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$2 & (view_res_w$1 == 4)) begin
+        if (at_res$2 & (view_res_w$2 == 4)) begin
             q$12$d = q_n;
             rho$12$d = div$out_r[(32'h0)+:(21)] << frac;
         end
@@ -17972,58 +18059,58 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
             xi$1 = g4$xi$1;
             ed$1 = g4$ed16$1[(32'h0)+:(21)];
         end
-        if (at_res$3 & (view_res_w$2 == 0)) begin
+        if (at_res$3 & (view_res_w$3 == 0)) begin
             x$1$d = xi$1 + q_n + r_pos;
             r$1$d = 32'h0;
             if (r_pos) begin
                 r$1$d = ed$1 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$4 & (view_res_w$3 == 0)) begin
+        if (at_res$4 & (view_res_w$4 == 0)) begin
             q$1$d = q_n;
             rho$1$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$3 & (view_res_w$2 == 1)) begin
+        if (at_res$3 & (view_res_w$3 == 1)) begin
             x$4$d = xi$1 + q_n + r_pos;
             r$4$d = 32'h0;
             if (r_pos) begin
                 r$4$d = ed$1 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$4 & (view_res_w$3 == 1)) begin
+        if (at_res$4 & (view_res_w$4 == 1)) begin
             q$4$d = q_n;
             rho$4$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$3 & (view_res_w$2 == 2)) begin
+        if (at_res$3 & (view_res_w$3 == 2)) begin
             x$7$d = xi$1 + q_n + r_pos;
             r$7$d = 32'h0;
             if (r_pos) begin
                 r$7$d = ed$1 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$4 & (view_res_w$3 == 2)) begin
+        if (at_res$4 & (view_res_w$4 == 2)) begin
             q$7$d = q_n;
             rho$7$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$3 & (view_res_w$2 == 3)) begin
+        if (at_res$3 & (view_res_w$3 == 3)) begin
             x$10$d = xi$1 + q_n + r_pos;
             r$10$d = 32'h0;
             if (r_pos) begin
                 r$10$d = ed$1 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$4 & (view_res_w$3 == 3)) begin
+        if (at_res$4 & (view_res_w$4 == 3)) begin
             q$10$d = q_n;
             rho$10$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$3 & (view_res_w$2 == 4)) begin
+        if (at_res$3 & (view_res_w$3 == 4)) begin
             x$13$d = xi$1 + q_n + r_pos;
             r$13$d = 32'h0;
             if (r_pos) begin
                 r$13$d = ed$1 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$4 & (view_res_w$3 == 4)) begin
+        if (at_res$4 & (view_res_w$4 == 4)) begin
             q$13$d = q_n;
             rho$13$d = div$out_r[(32'h0)+:(21)] << frac;
         end
@@ -18045,60 +18132,75 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
             xi$2 = g4$xi$2;
             ed$2 = g4$ed16$2[(32'h0)+:(21)];
         end
-        if (at_res$5 & (view_res_w$4 == 0)) begin
+        if (at_res$5 & (view_res_w$5 == 0)) begin
             x$2$d = xi$2 + q_n + r_pos;
             r$2$d = 32'h0;
             if (r_pos) begin
                 r$2$d = ed$2 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$6 & (view_res_w$5 == 0)) begin
+        if (at_res$6 & (view_res_w$6 == 0)) begin
             q$2$d = q_n;
             rho$2$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$5 & (view_res_w$4 == 1)) begin
+        if (at_res$5 & (view_res_w$5 == 1)) begin
             x$5$d = xi$2 + q_n + r_pos;
             r$5$d = 32'h0;
             if (r_pos) begin
                 r$5$d = ed$2 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$6 & (view_res_w$5 == 1)) begin
+        if (at_res$6 & (view_res_w$6 == 1)) begin
             q$5$d = q_n;
             rho$5$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$5 & (view_res_w$4 == 2)) begin
+        if (at_res$5 & (view_res_w$5 == 2)) begin
             x$8$d = xi$2 + q_n + r_pos;
             r$8$d = 32'h0;
             if (r_pos) begin
                 r$8$d = ed$2 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$6 & (view_res_w$5 == 2)) begin
+        if (at_res$6 & (view_res_w$6 == 2)) begin
             q$8$d = q_n;
             rho$8$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$5 & (view_res_w$4 == 3)) begin
+        if (at_res$5 & (view_res_w$5 == 3)) begin
             x$11$d = xi$2 + q_n + r_pos;
             r$11$d = 32'h0;
             if (r_pos) begin
                 r$11$d = ed$2 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$6 & (view_res_w$5 == 3)) begin
+        if (at_res$6 & (view_res_w$6 == 3)) begin
             q$11$d = q_n;
             rho$11$d = div$out_r[(32'h0)+:(21)] << frac;
         end
-        if (at_res$5 & (view_res_w$4 == 4)) begin
+        if (at_res$5 & (view_res_w$5 == 4)) begin
             x$14$d = xi$2 + q_n + r_pos;
             r$14$d = 32'h0;
             if (r_pos) begin
                 r$14$d = ed$2 - div$out_r[(32'h0)+:(21)];
             end
         end
-        if (at_res$6 & (view_res_w$5 == 4)) begin
+        if (at_res$6 & (view_res_w$6 == 4)) begin
             q$14$d = q_n;
             rho$14$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
+        if (at_res$0 & (view_res_w$0 == 0)) begin
+            mant$0$d = div$out_q[(32'h0)+:(25)];
+        end
+        if (at_res$0 & (view_res_w$0 == 1)) begin
+            mant$1$d = div$out_q[(32'h0)+:(25)];
+        end
+        if (at_res$0 & (view_res_w$0 == 2)) begin
+            mant$2$d = div$out_q[(32'h0)+:(25)];
+        end
+        if (at_res$0 & (view_res_w$0 == 3)) begin
+            mant$3$d = div$out_q[(32'h0)+:(25)];
+        end
+        if (at_res$0 & (view_res_w$0 == 4)) begin
+            mant$4$d = div$out_q[(32'h0)+:(25)];
         end
         mul$0$a = 32'h0;
         mul$0$b = 32'h0;
@@ -22543,6 +22645,8 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
         out$short1_j = o_j$2$q;
         out$short1_count = o_count$2$q;
         out$short1_d = o_d$2$q;
+        recip_mant = mant$4$q;
+        recip_exp = exp$4$q;
         out$maj_x = x$12$q[(32'h0)+:(13)];
         out$maj_r = r$12$q;
         out$maj_q = q$12$q[(32'h0)+:(17)];
@@ -41833,6 +41937,101 @@ module gpu_top$core$triangle_setup$left(d,q,clock);
     end
           
 endmodule // gpu_top$core$triangle_setup$left
+
+
+module gpu_top$core$triangle_setup$mant$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$triangle_setup$mant$0
+
+
+module gpu_top$core$triangle_setup$mant$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$triangle_setup$mant$1
+
+
+module gpu_top$core$triangle_setup$mant$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$triangle_setup$mant$2
+
+
+module gpu_top$core$triangle_setup$mant$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$triangle_setup$mant$3
+
+
+module gpu_top$core$triangle_setup$mant$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$triangle_setup$mant$4
 
 
 module gpu_top$core$triangle_setup$mant_s(d,q,clock);

@@ -1,5 +1,6 @@
 //! Triangle setup (paper 001): rust-hdl and Verilator in lockstep, every output compared on
-//! every cycle, and each result (`out_*`, `TriangleSetupOut` flattened) checked against
+//! every cycle, and each result (`out_*`, `TriangleSetupOut` flattened, and OneOverArea on
+//! `recip_mant`, `recip_exp`) checked against
 //! `model::triangle_setup`; latency and initiation interval against
 //! `model::cycles::setup_timing`. Its inputs are the triangles `model::cull_sort` passes.
 
@@ -71,7 +72,12 @@ fn run(cycle: &mut Cycle, tris: &[Sorted], flow: Flow, rng: &mut ChaCha8Rng) -> 
             if !was_valid {
                 timing[i].valid = now;
             }
-            for (pin, want) in triangle_setup_out("out", &model(&tris[i])) {
+            let m = model(&tris[i]);
+            let recip = [
+                ("recip_mant", Value::new(rtl::triangle_setup::MANT, m.recip.mant as u128)),
+                ("recip_exp", Value::new(6, m.recip.exp as u128)),
+            ];
+            for (pin, want) in triangle_setup_out("out", &m).into_iter().chain(recip.map(|(p, v)| (p.to_string(), v))) {
                 if out.get(&pin) != &want {
                     return Err(format!(
                         "cycle {now}: {pin} = {} but the model says {want} for triangle {i}:\n{:?}",

@@ -97,6 +97,10 @@ pub struct TriangleSetupOut {
     pub ddx: Attrs,
     /// The seven divisions issued to the divider, in issue order.
     pub divisions: [DividerIn; 7],
+    /// OneOverArea, the reciprocal of |twice the area| from the divider
+    /// (`divider::reciprocal`): the texture path's (`texture_path::Draw::tex`) for its own
+    /// setup, so that one divider serves both.
+    pub recip: Recip,
 }
 
 /// `ceil((v - half)/px)` for a subpixel coordinate: the first scanline (or
@@ -224,7 +228,7 @@ pub fn triangle_setup(t: &Sorted, ctx: &mut Ctx) -> TriangleSetupOut {
         };
         out[k] = Edge { j, count, x, r, q: sp.q, rho: px * sp.r, d, at, inc0, inc1 };
     }
-    TriangleSetupOut { walk, maj_left, maj: out[0], short: [out[1], out[2]], ddx, divisions }
+    TriangleSetupOut { walk, maj_left, maj: out[0], short: [out[1], out[2]], ddx, divisions, recip: ooa }
 }
 
 #[cfg(test)]

@@ -317,10 +317,16 @@ pub struct EdgeWalk {
     /// Screen height in pixels, 1 to 2^SCREEN: the walk down stops after row `height - 1`.
     /// Read only when a triangle is taken.
     pub height: Signal<In, Bits<DIM>>,
-    /// The set-up triangle; `inp.ready` high in IDLE: a triangle is taken when `inp.valid` is high too.
+    /// The set-up triangle; `inp.ready` high in IDLE while `hold` is low: a triangle is
+    /// taken when `inp.valid` is high too.
     pub inp: TriangleSetupSink,
     /// A span command (a scanline with pixels, on screen).
     pub out: SpanCmdSource,
+    /// Take no triangle (the textured `raster_top`'s gate: one triangle behind setup at a
+    /// time).
+    pub hold: Signal<In, Bit>,
+    /// IDLE: no triangle taken, no span command held.
+    pub idle: Signal<Out, Bit>,
     /// Y clipping present (`CLIP_Y`, `crate::switch`); without it the walk is always down
     /// and the screen's rows are not checked: no triangle may cross the top or bottom.
     clip_y: Switch,
@@ -464,8 +470,9 @@ impl Logic for EdgeWalk {
         // whether the Y clip leaves any scanline (none when the long edge crosses no
         // scanline centre or the walk starts beyond the boundary it walks towards), the rows
         // to the boundary and whether scanline 0 is the last.
-        self.inp.ready.next = !self.busy.q.val();
-        self.accept.next = self.inp.valid.val() & !self.busy.q.val();
+        self.idle.next = !self.busy.q.val();
+        self.inp.ready.next = !self.busy.q.val() & !self.hold.val();
+        self.accept.next = self.inp.valid.val() & !self.busy.q.val() & !self.hold.val();
         self.in_up.next = self.inp.walk.val() & self.clip_y.on.val();
         self.height_j.next = bit_cast::<PIXEL, DIM>(self.height.val());
         self.in_j_sign.x.next = self.inp.maj_j.val();
@@ -711,9 +718,10 @@ impl Logic for EdgeWalk {
 crate::pins!(EdgeWalk {
     clock: clock,
     inputs: [
-        height,
+        height, hold,
     ],
     outputs: [
+        idle,
     ],
     links: [inp, out],
 });

@@ -172,6 +172,7 @@ impl Logic for GpuTop {
         TriangleSource::join(&mut self.queue.out, &mut self.cull_sort.inp);
         SortedSource::join(&mut self.cull_sort.out, &mut self.core.inp);
         self.core.inp_last.next = false;
+        self.core.hold.next = false;
         PixelSource::join(&mut self.core.out, &mut self.pixel_bus.inp);
         if self.parser.out.valid.val() & self.queue.inp.ready.val() {
             self.triangles.d.next = self.triangles.q.val() + 1;

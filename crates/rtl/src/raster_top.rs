@@ -56,7 +56,7 @@ use super::se_array::Bank;
 use super::se_cmd::SeCmd;
 use super::span::Span;
 use super::span_fifo::SpanFifo;
-use super::triangle_setup::TriangleSetup;
+use super::triangle_setup::{TriangleSetup, MANT};
 use super::vector::Vector;
 use super::widths::{ADDR, DEPTH, DIM, RGB, SCREEN};
 use crate::emit::{emit_unit, Emitted};
@@ -85,6 +85,17 @@ pub struct RasterTopCore {
     pub idle: Signal<Out, Bit>,
     /// The frame is drawn: the `inp_last` triangle has been taken and every unit is empty.
     pub done: Signal<Out, Bit>,
+    /// The edge walk takes no triangle (the textured `raster_top`'s gate,
+    /// `rtl::raster_top_textured`; low in every other build).
+    pub hold: Signal<In, Bit>,
+    /// The edge walk takes a triangle from setup this cycle, and that triangle's
+    /// OneOverArea (`triangle_setup`'s `recip_mant`, `recip_exp`).
+    pub handed: Signal<Out, Bit>,
+    pub recip_mant: Signal<Out, Bits<MANT>>,
+    pub recip_exp: Signal<Out, Bits<6>>,
+    /// The edge walk, the span FIFO and span are empty: every fragment of the triangles
+    /// handed over has left `span`.
+    pub walk_idle: Signal<Out, Bit>,
     triangle_setup: TriangleSetup,
     edge_walk: EdgeWalk,
     fifo: SpanFifo,
@@ -93,7 +104,6 @@ pub struct RasterTopCore {
     /// its registers (`triangle_setup::COPIES_MAX`, 5).
     in_setup: DFF<Bits<3>>,
     taken: Signal<Local, Bit>,
-    handed: Signal<Local, Bit>,
     /// The last triangle taken had `inp_last`.
     last_in: DFF<Bit>,
 }
@@ -111,13 +121,17 @@ impl RasterTopCore {
             out: Default::default(),
             idle: Default::default(),
             done: Default::default(),
+            hold: Default::default(),
+            handed: Default::default(),
+            recip_mant: Default::default(),
+            recip_exp: Default::default(),
+            walk_idle: Default::default(),
             triangle_setup: TriangleSetup::new(k, l)?,
             edge_walk: EdgeWalk::new(parts),
             fifo: Default::default(),
             span: Span::new(parts),
             in_setup: Default::default(),
             taken: Default::default(),
-            handed: Default::default(),
             last_in: Default::default(),
         })
     }
@@ -146,6 +160,9 @@ impl Logic for RasterTopCore {
         // triangle_setup -> edge_walk: `TriangleSetupOut`.
         self.edge_walk.height.next = self.height.val();
         TriangleSetupSource::join(&mut self.triangle_setup.out, &mut self.edge_walk.inp);
+        self.edge_walk.hold.next = self.hold.val();
+        self.recip_mant.next = self.triangle_setup.recip_mant.val();
+        self.recip_exp.next = self.triangle_setup.recip_exp.val();
 
         // edge_walk -> span FIFO -> span: `SpanCmd`.
         self.span.width.next = self.width.val();
@@ -163,18 +180,16 @@ impl Logic for RasterTopCore {
         if !self.taken.val() & self.handed.val() {
             self.in_setup.d.next = self.in_setup.q.val() - 1;
         }
-        self.idle.next = (self.in_setup.q.val() == 0)
-            & self.edge_walk.inp.ready.val()
-            & self.fifo.empty.val()
-            & self.span.idle.val();
+        self.walk_idle.next = self.edge_walk.idle.val() & self.fifo.empty.val() & self.span.idle.val();
+        self.idle.next = (self.in_setup.q.val() == 0) & self.walk_idle.val();
         self.done.next = self.last_in.q.val() & self.idle.val();
     }
 }
 
 crate::pins!(RasterTopCore {
     clock: clock,
-    inputs: [width, height, inp_last],
-    outputs: [idle, done],
+    inputs: [width, height, inp_last, hold],
+    outputs: [idle, done, handed, recip_mant, recip_exp, walk_idle],
     links: [inp, out],
 });
 
@@ -227,6 +242,7 @@ impl Logic for RasterTopFragments {
         Verdict::link(&mut self.verdict, &mut self.cull_sort.verdict);
         SortedSource::join(&mut self.cull_sort.out, &mut self.core.inp);
         self.core.inp_last.next = false;
+        self.core.hold.next = false;
         PixelSource::link(&mut self.out, &mut self.core.out);
         if self.inp.valid.val() & self.inp.ready.val() {
             self.last_in.d.next = self.inp_last.val();
@@ -278,6 +294,7 @@ impl Logic for RasterTopSorted {
         self.core.height.next = self.height.val();
         SortedSink::link(&mut self.inp, &mut self.core.inp);
         self.core.inp_last.next = self.inp_last.val();
+        self.core.hold.next = false;
         PixelSource::join(&mut self.core.out, &mut self.pixel_out.inp);
         MemoryPort::link(&mut self.mem, &mut self.pixel_out.mem);
         self.done.next = self.core.done.val() & self.pixel_out.idle.val();
@@ -344,6 +361,7 @@ impl Logic for RasterTop {
         Verdict::link(&mut self.verdict, &mut self.cull_sort.verdict);
         SortedSource::join(&mut self.cull_sort.out, &mut self.core.inp);
         self.core.inp_last.next = false;
+        self.core.hold.next = false;
         PixelSource::join(&mut self.core.out, &mut self.pixel_out.inp);
         MemoryPort::link(&mut self.mem, &mut self.pixel_out.mem);
         if self.inp.valid.val() & self.inp.ready.val() {
@@ -554,6 +572,7 @@ impl<const E: usize, const EL: usize, const ZW: usize, const CW: usize> Logic fo
         Verdict::link(&mut self.verdict, &mut self.cull_sort.verdict);
         SortedSource::join(&mut self.cull_sort.out, &mut self.triangle_setup.inp);
         TriangleSetupSource::join(&mut self.triangle_setup.out, &mut self.edge_walk.inp);
+        self.edge_walk.hold.next = false;
         SpanCmdSource::join(&mut self.edge_walk.out, &mut self.fifo.inp);
         SpanCmdSource::join(&mut self.fifo.out, &mut self.se_cmd.inp);
 
@@ -694,6 +713,15 @@ pub fn emit_raster_top(params: &Params) -> Result<Emitted, String> {
         return Err("raster_top: DEPTH_TEST = 0 removes pixel_out's depth test, which PIXEL_OUT = 0 has no unit for".into());
     }
     let p = &parts;
+    match (params["CULL_SORT"], params["PIXEL_OUT"], params["TEXTURE"]) {
+        (_, _, 0) => {}
+        (1, 1, 1) if super::widths::FORMATS == crate::n10::FORMATS => return crate::raster_top_textured::emit(params, p),
+        (1, 1, 1) => {
+            return Err("raster_top: TEXTURE = 1 is built at size class 10's default formats (N = 10), as texture_path".into())
+        }
+        (_, _, 1) => return Err("raster_top: TEXTURE = 1 is built with cull_sort and pixel_out (CULL_SORT = 1, PIXEL_OUT = 1)".into()),
+        (_, _, t) => return Err(format!("raster_top: TEXTURE = {t}: 0 or 1")),
+    }
     match (params["CULL_SORT"], params["PIXEL_OUT"]) {
         (1, 1) => Ok(emit_unit("raster_top", RasterTop::new(k, l, p)?, params)),
         (1, 0) => Ok(emit_unit("raster_top", RasterTopFragments::new(k, l, p)?, params)),

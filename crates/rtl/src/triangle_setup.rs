@@ -9,6 +9,8 @@
 //! `x`: `PIXEL`; `r`, `rho`, `d`: `EDGE_D`; `q`: `EDGE_Q`; `at`: `z_acc`/`c_acc`; `inc0`,
 //! `inc1`, `ddx`: `dz`/`dc`), which `edge_walk` takes on its end of the link. `count`
 //! reaches 2^(PIXEL-1) = 4096 (a triangle over the whole `xy` range): read it unsigned.
+//! Beside `out`, `recip_mant` and `recip_exp` give the triangle's OneOverArea
+//! (`TriangleSetupOut::recip`) for the texture path of a textured `raster_top`.
 //!
 //! **Datapath.** `K` multipliers ([`PipelinedMul`], `MUL_A` x `MUL_B` bits) reused over 64
 //! products, and the shared divider ([`crate::divider::Divider`]), into which setup
@@ -113,7 +115,7 @@ const QL: usize = if DIV_Q < NB { DIV_Q } else { NB };
 /// An attribute lane: z's gradient width; colours use its low bits.
 const ATTR: usize = DZ;
 /// OneOverArea's mantissa (`ooa`).
-const MANT: usize = FORMATS.ooa.bits() as usize;
+pub const MANT: usize = FORMATS.ooa.bits() as usize;
 
 const S: u32 = FORMATS.xy.frac;
 
@@ -131,6 +133,12 @@ pub struct TriangleSetup {
     pub inp: SortedSink,
     /// The set-up triangle, held until `out.ready`.
     pub out: TriangleSetupSource,
+    /// With `out`: OneOverArea (`TriangleSetupOut::recip`), the reciprocal of |twice the
+    /// area| as the divider returned it, its mantissa and the exponent of |twice the area|'s
+    /// top bit: the texture path's (`rtl::raster_top_textured`), which sets up its own
+    /// planes with it, so that one divider serves both.
+    pub recip_mant: Signal<Out, Bits<MANT>>,
+    pub recip_exp: Signal<Out, Bits<6>>,
 
     // Sub-blocks.
     mul: Vec<PipelinedMul<MUL_A, MUL_B, MUL_P>>,
@@ -179,6 +187,8 @@ pub struct TriangleSetup {
     crosses: [DFF<Bits<OUTCODE>>; COPIES_MAX],
     sign: [DFF<Bit>; COPIES_MAX],
     exp: [DFF<Bits<6>>; COPIES_MAX],
+    /// OneOverArea's mantissa as the divider returned it, from the copy after its return.
+    mant: [DFF<Bits<MANT>>; COPIES_MAX],
     x: [DFF<Bits<NB>>; 3 * COPIES_MAX],
     r: [DFF<Bits<EDGE_D>>; 3 * COPIES_MAX],
     q: [DFF<Bits<NB>>; 3 * COPIES_MAX],
@@ -287,12 +297,12 @@ pub struct TriangleSetup {
     // The schedule and the numbers a kernel cannot name.
     lane: [Constant<Bits<8>>; PRODUCTS],
     /// The copy product i's operands, division j's result, the hand-over read
-    /// (`Schedule::view`); the copy edge division j's result (division j + 1) is written
-    /// into (that of the cycle after, as copies move on at the end of a cycle).
+    /// (`Schedule::view`); the copy division j's result is written into (that of the cycle
+    /// after, as copies move on at the end of a cycle).
     view: [Constant<Bits<8>>; PRODUCTS],
     view_add: [Constant<Bits<8>>; PRODUCTS],
     view_res: [Constant<Bits<8>>; 7],
-    view_res_w: [Constant<Bits<8>>; 6],
+    view_res_w: [Constant<Bits<8>>; 7],
     view_handover: Constant<Bits<8>>,
     /// Per copy, the last cycle of its part of the schedule (255 for copies not used).
     ends: [Constant<Bits<8>>; COPIES_MAX],
@@ -352,6 +362,8 @@ impl TriangleSetup {
             clock: Default::default(),
             inp: Default::default(),
             out: Default::default(),
+            recip_mant: Default::default(),
+            recip_exp: Default::default(),
             mul: (0..k).map(|_| Default::default()).collect(),
             div: DividerRtl::new(l),
             t: defaults(),
@@ -378,6 +390,7 @@ impl TriangleSetup {
             crosses: defaults(),
             sign: defaults(),
             exp: defaults(),
+            mant: defaults(),
             x: defaults(),
             r: defaults(),
             q: defaults(),
@@ -451,7 +464,7 @@ impl TriangleSetup {
             view: consts(|i| s.view(s.slots[i].0)),
             view_add: consts(|i| s.view(s.add(i))),
             view_res: consts(|j| s.view(s.result(j))),
-            view_res_w: consts(|j| s.view(s.result(j + 1) + 1)),
+            view_res_w: consts(|j| s.view(s.result(j) + 1)),
             view_handover: Constant::new(s.view(s.handover).to_bits()),
             ends: consts(|v| if v < s.copies { ((v + 1) * s.interval).min(s.latency) } else { 255 }),
             normalise: Constant::new(s.normalise.to_bits()),
@@ -501,6 +514,8 @@ impl Logic for TriangleSetup {
             self.sign[v].d.next = self.sign[v].q.val();
             self.exp[v].clock.next = self.clock.val();
             self.exp[v].d.next = self.exp[v].q.val();
+            self.mant[v].clock.next = self.clock.val();
+            self.mant[v].d.next = self.mant[v].q.val();
             for i in 0..3 {
                 self.x[3 * v + i].clock.next = self.clock.val();
                 self.x[3 * v + i].d.next = self.x[3 * v + i].q.val();
@@ -583,6 +598,7 @@ impl Logic for TriangleSetup {
                     self.crosses[v + 1].d.next = self.crosses[v].q.val();
                     self.sign[v + 1].d.next = self.maj_left[v].val();
                     self.exp[v + 1].d.next = self.exp[v].q.val();
+                    self.mant[v + 1].d.next = self.mant[v].q.val();
                     for i in 0..3 {
                         self.x[3 * v + 3 + i].d.next = self.x[3 * v + i].q.val();
                         self.r[3 * v + 3 + i].d.next = self.r[3 * v + i].q.val();
@@ -843,7 +859,7 @@ impl Logic for TriangleSetup {
             }
             // Into the copy the triangle is in next cycle.
             for v in 0..self._copies {
-                if self.at_res[1 + 2 * e].val() & (self.view_res_w[2 * e].val().index() == v) {
+                if self.at_res[1 + 2 * e].val() & (self.view_res_w[1 + 2 * e].val().index() == v) {
                     self.x[3 * v + e].d.next = self.xi[e].val() + self.q_n.val() + self.r_pos.val();
                     self.r[3 * v + e].d.next = 0.into();
                     if self.r_pos.val() {
@@ -851,10 +867,16 @@ impl Logic for TriangleSetup {
                     }
                 }
                 // The step: q + rho/D pixels per scanline.
-                if self.at_res[2 + 2 * e].val() & (self.view_res_w[1 + 2 * e].val().index() == v) {
+                if self.at_res[2 + 2 * e].val() & (self.view_res_w[2 + 2 * e].val().index() == v) {
                     self.q[3 * v + e].d.next = self.q_n.val();
                     self.rho[3 * v + e].d.next = self.div.out_r.val().get_bits::<EDGE_D>(0) << self.frac.val();
                 }
+            }
+        }
+        // OneOverArea as it returned, for the texture path, into the copy of the cycle after.
+        for v in 0..self._copies {
+            if self.at_res[0].val() & (self.view_res_w[0].val().index() == v) {
+                self.mant[v].d.next = self.div.out_q.val().get_bits::<MANT>(0);
             }
         }
 
@@ -1295,8 +1317,10 @@ impl Logic for TriangleSetup {
         self.out.short1_j.next = self.o_j[2].q.val();
         self.out.short1_count.next = self.o_count[2].q.val();
         self.out.short1_d.next = self.o_d[2].q.val();
-        // Each edge's start and step from the last copy.
+        // Each edge's start and step, and OneOverArea, from the last copy.
         for v in (self._copies - 1)..self._copies {
+            self.recip_mant.next = self.mant[v].q.val();
+            self.recip_exp.next = self.exp[v].q.val();
             self.out.maj_x.next = self.x[3 * v].q.val().get_bits::<PIXEL>(0);
             self.out.maj_r.next = self.r[3 * v].q.val();
             self.out.maj_q.next = self.q[3 * v].q.val().get_bits::<EDGE_Q>(0);
@@ -1358,6 +1382,7 @@ crate::pins!(TriangleSetup {
     inputs: [
     ],
     outputs: [
+        recip_mant, recip_exp,
     ],
     links: [inp, out],
 });
