@@ -14,6 +14,7 @@ mod pixel_bus;
 mod pixel_out;
 mod pixel_out_blend;
 mod raster_top;
+mod raster_top_textured;
 mod se;
 mod se_cmd;
 mod span;

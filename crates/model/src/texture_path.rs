@@ -33,7 +33,7 @@
 use crate::cull_sort::Clip;
 use crate::divider::{reciprocal, Recip};
 use crate::guard_band;
-use crate::input::to_fixed;
+use crate::input::{to_fixed, Vtx};
 use crate::render::{triangle_ranged, Options, Texturing};
 use crate::span::Pixel;
 use crate::texture_cache::{MemIn, Params};
@@ -253,6 +253,36 @@ pub fn draws(list: &scene::Trilist, f: &Formats, opts: &Options, texturing: &Tex
             (TexTriangle { v, state, blend: tri[0].blend }, reciprocal(area2(&v).abs(), f))
         });
         out.push(Draw { pixels: t.pixels, blend: tri[0].blend, tex });
+    }
+    out
+}
+
+/// A triangle as the textured `raster_top` (`rtl::raster_top_textured`) takes it: its input
+/// words, its blend mode and, when textured, its texture words (`tex$*`: the triangle
+/// `texture_path` takes, whose reciprocal setup's divider computes on the way).
+#[derive(Clone, Copy, Debug)]
+pub struct Sent {
+    pub v: [Vtx; 3],
+    pub blend: BlendMode,
+    pub tex: Option<TexTriangle>,
+}
+
+/// The triangles a host sends the textured `raster_top` to draw `list` as
+/// `render::render_with(list, f, opts, Some(texturing))` draws it with the scanline method:
+/// the guard band's pieces whose vertices and texture vertices fit their formats
+/// (`to_fixed`, `tex_vertices`; the render drops the others), culled or not, in order;
+/// textured where `Texturing::apply` textures (a piece of zero area is culled).
+pub fn sent(list: &scene::Trilist, f: &Formats, texturing: &Texturing) -> Vec<Sent> {
+    let mut out = Vec::new();
+    for tri in &guard_band::pieces(list, f, false).triangles {
+        let Ok(v) = to_fixed(tri, f) else { continue };
+        let Ok(tv) = tex_vertices(tri, &v, &texturing.unit.formats, texturing.affine) else { continue };
+        let tex = tv.zip(tri[0].tex).filter(|(tv, _)| area2(tv) != 0).map(|(tv, tex)| TexTriangle {
+            v: tv,
+            state: texturing.memory.states[tex.texture as usize],
+            blend: tri[0].blend,
+        });
+        out.push(Sent { v, blend: tri[0].blend, tex });
     }
     out
 }

@@ -12,6 +12,7 @@ pub mod ept;
 pub mod link;
 pub mod mul;
 pub mod parts;
+pub mod raster_top_textured;
 pub mod se;
 pub mod sim;
 pub mod switch;
@@ -443,6 +444,12 @@ pub const UNITS: &[Unit] = &[
                 default: 16,
                 doc: "the SE back end's shading engines (METHOD = 2): 1, 5 or 16, screens up to 64 columns a engine",
             },
+            Param {
+                name: "TEXTURE",
+                default: 0,
+                doc: "1: textured (N = 10, METHOD = 0): texture_path between span and a blending pixel_out, the texture words on tex$*, the texture memory on tex_mem_*",
+            },
+            EXACT,
         ],
         build: by_build!(raster_top::emit_raster_top),
     },
@@ -577,6 +584,8 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
             ("PERSPECTIVE", 1),
             ("LANES", 1),
             ("ENGINES", 16),
+            ("TEXTURE", 0),
+            ("EXACT", 0),
         ],
     ),
     ("gpu_top", &[("N", 10), ("K", 7), ("L", model::divider::LATENCY as u64)]),
@@ -588,10 +597,14 @@ pub const DEFAULT_DESIGN: &[(&str, &[(&str, u64)])] = &[
 /// into a directory of `hdl-out/` named after the parameters it sets
 /// (`raster_top-METHOD=1-LANES=4/raster_top.v`): `raster_top` with the barycentric back end
 /// at four lanes, and with the SE back end (16 engines), each a whole pipeline with the
-/// default `raster_top`'s ports but its memory port. The parameters are set over the
-/// unit's in [`DEFAULT_DESIGN`].
-pub const DEFAULT_VARIANTS: &[(&str, &[(&str, u64)])] =
-    &[("raster_top", &[("METHOD", 1), ("LANES", 4)]), ("raster_top", &[("METHOD", 2)])];
+/// default `raster_top`'s ports but its memory port; and the textured `raster_top`
+/// (`rtl::raster_top_textured`). The parameters are set over the unit's in
+/// [`DEFAULT_DESIGN`].
+pub const DEFAULT_VARIANTS: &[(&str, &[(&str, u64)])] = &[
+    ("raster_top", &[("METHOD", 1), ("LANES", 4)]),
+    ("raster_top", &[("METHOD", 2)]),
+    ("raster_top", &[("TEXTURE", 1)]),
+];
 
 impl Unit {
     /// The unit called `name`.

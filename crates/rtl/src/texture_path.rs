@@ -46,7 +46,7 @@ const _: () = assert!(crate::texture_setup::LATENCY + crate::texture_unit::IN_FL
 /// A side word: x, y, z, the blend mode.
 const SIDE: usize = 2 * SCREEN + DEPTH + 3;
 /// The state word: the 12 `tri$` state fields side by side.
-const SW: usize = 4 + 4 + 4 + ADDR + 1 + 1 + 2 + 2 + 2 + 3 + 1 + 3;
+pub(crate) const SW: usize = 4 + 4 + 4 + ADDR + 1 + 1 + 2 + 2 + 2 + 3 + 1 + 3;
 /// The phases' codes.
 const PHASES: [u64; 4] = [0, 1, 2, 3];
 
