@@ -10,7 +10,7 @@
 //! against `TextureUnit::sample` at `texture_setup`'s planes, in order.
 
 use crate::texture_setup::{pixel, setup, start_pins, triangle};
-use crate::texture_unit::{mem_pins, random_state, request_pins, state_pins, Memory, MEMORY};
+use crate::texture_unit::{mem_pins, random_state, request_pins, Memory, MEMORY};
 use fx::{Formats, TexFormats};
 use model::blend::MODES;
 use model::span::Pixel;
@@ -20,6 +20,7 @@ use model::texture_unit::TextureUnit;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::texture_path::TexturePath as Rtl;
+use sim::textured::state_pins;
 use std::collections::VecDeque;
 use testbenches::{count, seed, verilated_with, Dual, Value};
 use texture::LodRule;
@@ -130,7 +131,7 @@ fn lockstep(lod: LodRule, salt: u64) {
         let total = want.len();
         let mut dual = Dual::new(Rtl::new(exact == 1), vl.model().unwrap_or_else(|e| panic!("{e}")));
         let mut model = TexturePath::new(F, TF, CACHE, lod).unwrap();
-        let mut mem = Memory { words, latency, ack_chance: if k == 2 { 0.7 } else { 1.0 }, queue: VecDeque::new() };
+        let mut mem = Memory::new(words, latency, if k == 2 { 0.7 } else { 1.0 });
         let ready_chance = [1.0, 0.7, 0.4][k];
         let frags: Vec<(usize, usize)> =
             tris.iter().enumerate().flat_map(|(t, x)| (0..x.frags.len()).map(move |f| (t, f))).collect();
@@ -172,6 +173,7 @@ fn texture_path_lockstep_with_the_model_max_rule() {
 }
 
 #[test]
+#[ignore = "long: scripts/soak.sh runs it"]
 fn texture_path_lockstep_with_the_model_exact_rule() {
     lockstep(LodRule::Exact, 0x7a8);
 }
@@ -183,6 +185,7 @@ fn texture_path_lockstep_with_the_model_exact_rule() {
 /// blending `pixel_out` writes them) equals the textured scanline render's, image and
 /// depth, and the cache's counters are those of the render's accesses.
 #[test]
+#[ignore = "long: scripts/soak.sh runs it"]
 fn texture_path_frames_of_the_shipped_textured_scenes_equal_the_models() {
     use model::pixel_out::Framebuffer;
     use model::render::{render_with, Method, Options, Texturing};
@@ -207,8 +210,7 @@ fn texture_path_frames_of_the_shipped_textured_scenes_equal_the_models() {
             .collect();
 
         let mut vl = vl.model().unwrap_or_else(|e| panic!("{e}"));
-        let mut mem =
-            Memory { words: texturing.memory.words.clone(), latency: 10, ack_chance: 1.0, queue: VecDeque::new() };
+        let mut mem = Memory::new(texturing.memory.words.clone(), 10, 1.0);
         let mut rng = ChaCha8Rng::seed_from_u64(seed());
         let (mut next, mut now, mut out) = (0, 0u64, Vec::with_capacity(frags.len()));
         let mut counters = [0u64; 3];

@@ -79,9 +79,6 @@ pub struct Image {
 
 pub fn run(args: Args) -> Result<()> {
     let loaded = input::load(&args.input, args.size)?;
-    if args.engine == Engine::Rtl {
-        loaded.untextured(&args.input, "--engine rtl")?;
-    }
     if args.engine == Engine::Se && (loaded.trilist.is_textured() || loaded.trilist.is_blended()) {
         anyhow::bail!(
             "{}: the scene is textured or blends, and --engine se cannot texture or blend: 000's shading \
@@ -132,6 +129,7 @@ pub fn run(args: Args) -> Result<()> {
                 perspective,
                 params: &args.params,
                 top: args.top,
+                input: &args.input,
             };
             match super::rtl::render(&loaded, cull_back, &args.fixed, args.analysis, &how)? {
                 Some(drawn) => drawn,

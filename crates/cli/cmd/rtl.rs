@@ -68,10 +68,13 @@ pub struct How<'a> {
     pub perspective: bool,
     pub params: &'a [(String, u64)],
     pub top: Option<Top>,
+    /// The scene's file, for errors.
+    pub input: &'a std::path::Path,
 }
 
 /// Draws `loaded` (its formats: `FixedArgs::formats_of`) as `how` says (top None: `gpu_top`
-/// where it applies, else `raster_top`); returns the image and the summary line with its
+/// where it applies, else `raster_top`; a textured or blended scene: the textured
+/// `raster_top`); returns the image and the summary line with its
 /// fragment count, or `None` when an edgepaint compiled at the formats asked for drew it.
 pub fn render(
     loaded: &Loaded,
@@ -81,6 +84,9 @@ pub fn render(
     how: &How,
 ) -> Result<Option<(Image, (String, u64))>> {
     ensure!(!analysis, "--analysis checks the models' arithmetic; it does not apply to --engine rtl");
+    if loaded.trilist.is_textured() || loaded.trilist.is_blended() {
+        return textured(loaded, cull_back, fixed, how).map(Some);
+    }
     if how.method == RtlMethod::Se {
         return se_back_end(loaded, cull_back, fixed, how).map(Some);
     }
@@ -231,15 +237,102 @@ pub fn render(
         r.interval.1,
         r.cycles as f64 / secs,
     );
-    let m = out.memory;
-    let image = Image {
-        width: m.width,
-        height: m.height,
-        depth16: m.depth.iter().map(|&d| depth16(d, formats.z.frac)).collect(),
-        rgb: m.rgb,
-        written: m.written,
-    };
+    let image = image_of(out.memory, formats.z.frac);
     Ok(Some((image, (summary, r.fragments))))
+}
+
+/// A textured or blended scene: `loaded` drawn by the textured `raster_top` (`TEXTURE = 1`:
+/// the scanline method, `texture_path` and the blending `pixel_out`) at the default build,
+/// in Verilator (`sim::textured`), behind a texture memory of latency 10; image and depth
+/// checked against the textured scanline render (`model::render::render_with`), the
+/// cache's counters against its accesses.
+fn textured(loaded: &Loaded, cull_back: bool, fixed: &FixedArgs, how: &How) -> Result<(Image, (String, u64))> {
+    let list = &loaded.trilist;
+    let build = sim::textured::BUILD;
+    let what = format!(
+        "{}: the scene is textured or blends, and the textured raster_top (TEXTURE = 1) that draws it",
+        how.input.display()
+    );
+    ensure!(how.method == RtlMethod::Scanline, "{what} has the scanline method only (no --method vector or se)");
+    ensure!(how.top != Some(Top::GpuTop), "{what} is raster_top's: --top gpu_top has no texture path yet");
+    ensure!(how.params.is_empty(), "{what} is built at raster_top's default parameters (no --param)");
+    ensure!(
+        fixed.formats_of(loaded)? == build.formats && loaded.build.is_none_or(|b| b == build),
+        "{what} is built at size class {} and its default formats only (screens up to {}x{}, no --formats)",
+        build.class,
+        1 << build.class,
+        1 << build.class
+    );
+    let side = 1u32 << build.class;
+    ensure!(
+        list.width <= side && list.height <= side,
+        "{what} draws screens up to {side}x{side}, not {}x{}",
+        list.width,
+        list.height
+    );
+    let f = build.formats;
+    let texturing = fixed.texturing(list, !how.perspective, how.input)?;
+    let tris = model::texture_path::sent(list, &f, texturing.as_ref());
+    ensure!(!tris.is_empty(), "{}: --engine rtl: no triangle to draw", how.input.display());
+    let background = loaded.background.map(|c| c.round().clamp(0.0, 255.0) as u8);
+    let cull = if cull_back { Cull::Back } else { Cull::None };
+    let opts = model::render::Options { method: Method::Scanline, cull, analysis: false, background };
+    let want = model::render::render_with(list, &f, &opts, texturing.as_ref(), &mut |_| {});
+    let exact = fixed.lod_rule() == texture::LodRule::Exact;
+    let mut vl = sim::textured::TexturedVl::new(exact).map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let words = texturing.as_ref().map_or(Vec::new(), |t| t.memory.words.clone());
+    let mut tex = sim::textured::TexMemory::new(words, 10);
+    let start = Instant::now();
+    let size = (list.width, list.height);
+    let max_cycles = 100 * (want.stats.fragments + 1000 * tris.len() as u64);
+    let out = sim::textured::draw(
+        &mut |p| vl.cycle(p),
+        &tris,
+        size,
+        background,
+        cull_back,
+        &mut tex,
+        &mut |_| true,
+        max_cycles,
+    )
+    .map_err(|e| anyhow!(e))?;
+    let secs = start.elapsed().as_secs_f64();
+    if let Some(first) = out.memory.differs_from(&want.fb) {
+        bail!("the RTL's image differs from the textured scanline model's ({first}): a bug in the RTL or the model");
+    }
+    let c = model::texture_cache::hit_rate_of_trace(&accuracy::texture::DEFAULT_CACHE, &want.fetches);
+    ensure!(
+        out.counters == [c.hits, c.misses, c.fills],
+        "the RTL's texture cache counted {:?} hits, misses and fills, the model's accesses give {:?}: a bug in the RTL or the model",
+        out.counters,
+        [c.hits, c.misses, c.fills]
+    );
+    let st = &want.stats;
+    let summary = format!(
+        "rtl (raster_top of size class {} with TEXTURE = 1: cull_sort, setup, edge walk, span, texture_path with a 64-set \
+         2-way cache of 4-word lines, blending pixel_out; in Verilator, a texture memory of latency 10): {} triangles in, \
+         {} drawn; {} fragments, {} pixels written; {} cycles ({:.3} fragments per clock; not yet predicted by \
+         model::cycles), texture cache hit rate {:.4} ({} misses); {:.0} cycles/s simulated ({secs:.2} s); image and depth \
+         equal to the textured scanline model's",
+        build.class,
+        list.triangles.len(),
+        st.drawn,
+        st.fragments,
+        st.pixels_written,
+        out.cycles,
+        st.fragments as f64 / out.cycles.max(1) as f64,
+        c.hits as f64 / (c.hits + c.misses).max(1) as f64,
+        c.misses,
+        out.cycles as f64 / secs,
+    );
+    let image = image_of(out.memory, f.z.frac);
+    Ok((image, (summary, st.fragments)))
+}
+
+/// The image of the buffers `m`, depth in `z_frac` fraction bits.
+fn image_of(m: sim::memory::Memory, z_frac: u32) -> Image {
+    let depth16 = m.depth.iter().map(|&d| depth16(d, z_frac)).collect();
+    Image { width: m.width, height: m.height, depth16, rgb: m.rgb, written: m.written }
 }
 
 /// `--method se`: `loaded` drawn by `raster_top` with `METHOD = 2` (the scanline front end,
@@ -322,15 +415,8 @@ fn se_back_end(loaded: &Loaded, cull_back: bool, fixed: &FixedArgs, how: &How) -
         out.memory.writes as f64 / out.cycles.max(1) as f64,
         out.cycles as f64 / secs,
     );
-    let m = out.memory;
-    let image = Image {
-        width: m.width,
-        height: m.height,
-        depth16: m.depth.iter().map(|&d| depth16(d, build.formats.z.frac)).collect(),
-        rgb: m.rgb,
-        written: m.written,
-    };
-    Ok((image, (summary, m.writes)))
+    let writes = out.memory.writes;
+    Ok((image_of(out.memory, build.formats.z.frac), (summary, writes)))
 }
 
 /// `--top gpu_top`: `loaded` packed into a vertex buffer (a vertex buffer's own bytes when

@@ -268,20 +268,25 @@ pub struct Sent {
 }
 
 /// The triangles a host sends the textured `raster_top` to draw `list` as
-/// `render::render_with(list, f, opts, Some(texturing))` draws it with the scanline method:
-/// the guard band's pieces whose vertices and texture vertices fit their formats
-/// (`to_fixed`, `tex_vertices`; the render drops the others), culled or not, in order;
-/// textured where `Texturing::apply` textures (a piece of zero area is culled).
-pub fn sent(list: &scene::Trilist, f: &Formats, texturing: &Texturing) -> Vec<Sent> {
+/// `render::render_with(list, f, opts, texturing)` draws it with the scanline method: the
+/// guard band's pieces whose vertices and texture vertices fit their formats (`to_fixed`,
+/// `tex_vertices`; the render drops the others), culled or not, in order; textured where
+/// `Texturing::apply` textures (a piece of zero area is culled).
+pub fn sent(list: &scene::Trilist, f: &Formats, texturing: Option<&Texturing>) -> Vec<Sent> {
     let mut out = Vec::new();
     for tri in &guard_band::pieces(list, f, false).triangles {
         let Ok(v) = to_fixed(tri, f) else { continue };
-        let Ok(tv) = tex_vertices(tri, &v, &texturing.unit.formats, texturing.affine) else { continue };
-        let tex = tv.zip(tri[0].tex).filter(|(tv, _)| area2(tv) != 0).map(|(tv, tex)| TexTriangle {
-            v: tv,
-            state: texturing.memory.states[tex.texture as usize],
-            blend: tri[0].blend,
-        });
+        let tex = match texturing {
+            None => None,
+            Some(tx) => {
+                let Ok(tv) = tex_vertices(tri, &v, &tx.unit.formats, tx.affine) else { continue };
+                tv.zip(tri[0].tex).filter(|(tv, _)| area2(tv) != 0).map(|(tv, tex)| TexTriangle {
+                    v: tv,
+                    state: tx.memory.states[tex.texture as usize],
+                    blend: tri[0].blend,
+                })
+            }
+        };
         out.push(Sent { v, blend: tri[0].blend, tex });
     }
     out

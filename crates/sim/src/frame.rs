@@ -7,7 +7,7 @@
 //! as the one before it is taken (back to back, as `model::cycles` assumes). The frame
 //! takes [`FrameOut::cycles`] cycles: `done` is first high in that cycle.
 
-use crate::memory::{pack, pack_words, unpack, Memory, ReadDuringWrite, Request, MAX_LANES};
+use crate::memory::{pack, pack_words, unpack, Memory, ReadDuringWrite, Request, MAX_LANES, REQUEST};
 use crate::streams::{raw, unsigned};
 use crate::{HdlSim, Outputs, Pins, PortId, Sim, Value, VlSim};
 use fx::Build;
@@ -180,18 +180,7 @@ impl RasterTopVl {
             let names = ["x", "y", "z", "c0", "c1", "c2", "iw"].map(|f| format!("inp$v{k}_{f}"));
             names.map(|n| vl.port(&n))
         });
-        let outputs = ids(&[
-            "inp$ready",
-            "verdict$valid",
-            "verdict$code",
-            "done",
-            "mem$rd_en",
-            "mem$rd_addr",
-            "mem$wr_en",
-            "mem$wr_addr",
-            "mem$wr_z",
-            "mem$wr_rgb",
-        ]);
+        let outputs = ids(&[&["inp$ready", "verdict$valid", "verdict$code", "done"][..], &REQUEST[..]].concat());
         let words = |id: PortId| vec![0; vl.width(id).div_ceil(64)];
         RasterTopVl {
             clock: vl.port("clock"),

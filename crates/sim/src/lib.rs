@@ -6,8 +6,9 @@
 //!   builds the model (cached by content under `<target>/verilator/`).
 //! * [`frame`] draws whole frames through `raster_top` with the depth and colour buffers
 //!   in Rust ([`memory`]); [`soc`] draws them through `gpu_top` from a vertex buffer, with
-//!   the buffers behind its AXI4 masters and a host on its registers; [`streams`] moves
-//!   the model's transactions to and from ports.
+//!   the buffers behind its AXI4 masters and a host on its registers; [`textured`] through
+//!   the textured `raster_top`, with a texture memory; [`streams`] moves the model's
+//!   transactions to and from ports.
 //!
 //! A unit plugs in through `rtl::sim::Pins` (its pins by Verilog name, values as
 //! [`Value`]s of any width, so >64-bit ports work) and `rtl::emit::ports` (the port list,
@@ -18,6 +19,7 @@ pub mod memory;
 pub mod se_frame;
 pub mod soc;
 pub mod streams;
+pub mod textured;
 pub mod verilator;
 
 use rtl::emit::Emitted;

@@ -95,6 +95,9 @@ pub struct Request {
     pub wr_rgb: [u32; MAX_LANES],
 }
 
+/// The output ports a [`Request`] is read off.
+pub const REQUEST: [&str; 6] = ["mem$rd_en", "mem$rd_addr", "mem$wr_en", "mem$wr_addr", "mem$wr_z", "mem$wr_rgb"];
+
 impl Request {
     /// Read off a unit's outputs (`mem$rd_en`, ... `mem$wr_rgb`), its lanes from the width
     /// of `mem$wr_en`.
