@@ -544,6 +544,7 @@ fn raster_top_latency_of_one_triangle() {
 /// as rust-hdl writes it, one large `always @(*)` per module re-run on every change of a
 /// submodule's output, Icarus manages under 10 cycles/s; after `proc`, about 1,500.
 #[test]
+#[ignore = "long: scripts/soak.sh runs it"]
 fn raster_top_iverilog_replay() {
     iverilog_replay("replay", &[("cube", (48, 32), false), ("clip", (64, 48), true)]);
 }

@@ -167,6 +167,7 @@ fn vector_four_lanes_random_vs_model() {
 }
 
 #[test]
+#[ignore = "long: scripts/soak.sh runs it"]
 fn vector_eight_lanes_random_vs_model() {
     random_vs_model::<8, { 8 * DEPTH }, { 24 * CHANNEL }>(count() / 40, true, L);
 }
@@ -184,9 +185,16 @@ fn vector_with_a_5_stage_divider_vs_model() {
 #[test]
 fn vector_extremes_vs_model() {
     let v: Vec<_> = extremes().into_iter().map(|(_, c)| c.v).collect();
-    let one = jobs(v.clone(), 1, true);
+    let one = jobs(v, 1, true);
     let t = run(&mut dual::<1, DEPTH, { 3 * CHANNEL }>(true, L), &one, Flow::BACK_TO_BACK, seed());
     check_timing(&one, &t, L);
+}
+
+/// [`vector_extremes_vs_model`] at eight lanes (its Verilated model is the soak's).
+#[test]
+#[ignore = "long: scripts/soak.sh runs it"]
+fn vector_extremes_eight_lanes_vs_model() {
+    let v: Vec<_> = extremes().into_iter().map(|(_, c)| c.v).collect();
     let eight = jobs(v, 8, true);
     let t = run(&mut dual::<8, { 8 * DEPTH }, { 24 * CHANNEL }>(true, L), &eight, Flow::BACK_TO_BACK, seed());
     check_timing(&eight, &t, L);
