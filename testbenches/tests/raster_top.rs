@@ -165,6 +165,7 @@ fn raster_top_vector_2_and_8_lanes_scenes_vs_model() {
 /// `se_cmd`, five engines) under Verilator: image, depth, pixels written and cycles the
 /// model's (`model::raster_top::raster_top_se`: `se::array::render`, `cycles::se_frame`).
 #[test]
+#[ignore = "long: scripts/soak.sh runs it (the SE back end's Verilated model)"]
 fn raster_top_se_scenes_vs_model() {
     let mut dut = se_frame::verilator(5).unwrap_or_else(|e| panic!("{e}"));
     let scenes = ["cube", "sphere", "cone", "torus", "pawn", "house", "all", "clip"].map(|n| (n, (64, 48)));

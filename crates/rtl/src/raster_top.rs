@@ -34,7 +34,9 @@
 //! ([`RasterTopSorted`]: the memory port `mem$*` rather than the fragment stream `out$*`
 //! for a depth test and memory of the host's own), both give [`RasterTop`]. Each variant
 //! is a block holding the smaller one, emitted as module `raster_top`;
-//! `model::cycles::Timing` has the same two switches.
+//! `model::cycles::Timing` has the same two switches. `TEXTURE = 1` (size class 10) puts
+//! `texture_path` and the blending `pixel_out` behind the core: `rtl::raster_top_textured`,
+//! which holds the core's edge walk (`hold`) until `span` is empty at each triangle.
 //!
 //! **Timing** (`model::cycles::scanline_frame` predicts it cycle for cycle when the memory
 //! never stalls): cull_sort 3 cycles; setup `model::cycles::setup_timing` (latency 28, a

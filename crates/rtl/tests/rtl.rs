@@ -140,7 +140,7 @@ mod emit {
     fn default_variants_have_directories_of_their_parameters() {
         let entries = default_entries();
         let dirs: Vec<_> = entries.iter().filter_map(|d| d.dir.clone()).collect();
-        assert_eq!(dirs, ["raster_top-METHOD=1-LANES=4", "raster_top-METHOD=2"]);
+        assert_eq!(dirs, ["raster_top-METHOD=1-LANES=4", "raster_top-METHOD=2", "raster_top-TEXTURE=1"]);
         let main = entries.iter().find(|d| d.unit.name == "raster_top" && d.dir.is_none()).expect("raster_top");
         let vector = entries.iter().find(|d| d.dir.as_deref() == Some("raster_top-METHOD=1-LANES=4")).expect("vector");
         for (k, v) in &main.params {
@@ -152,6 +152,10 @@ mod emit {
             assert_eq!(vector.params[k], want, "{k}");
         }
         assert_eq!(file_name("raster_top", vector.dir.as_deref()), "raster_top-METHOD=1-LANES=4/raster_top.v");
+        let textured = entries.iter().find(|d| d.dir.as_deref() == Some("raster_top-TEXTURE=1")).expect("textured");
+        for (k, v) in &main.params {
+            assert_eq!(textured.params[k], if k == "TEXTURE" { 1 } else { *v }, "{k}");
+        }
     }
 
     /// One name per unit: `rtl/src/<name>.rs`, `model/src/<name>.rs` and
