@@ -6,7 +6,7 @@
 # Verilator, the CLI as a process), then Verilator lint of every emitted file and Yosys
 # synthesis of each distinct module. One optimised build (the test profile) serves the
 # tests, the lint's extra variants and the CLI tests. Each step prints its time; the long
-# checks are in scripts/soak.sh. Synthesis runs beside the build and the tests (niced) and lint beside the tests, so that no core
+# checks are in scripts/soak.sh. Synthesis and lint run beside the tests, so that no core
 # stands idle in the tests' tails (clippy beside the build was slower: both keep two cores busy).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -38,16 +38,6 @@ took
 # the tests. A separate `cargo clippy` checked every dependency and crate a second time
 # (173 s of a clean clone). The variables stay set for `cargo test` below: they are part
 # of what Cargo compiled with.
-# Beside the build and the tests, at low priority: Yosys synthesis of hdl-out/ (each distinct
-# module once; it needs only hdl-out/, which is committed). The build's tail is serial (the rtl
-# crate, then the testbenches' test binary, one crate each: about 170 s with a core idle), as
-# are the tests' tails; nice gives the synthesis those idle cycles and the build and tests the
-# rest. Its output is shown once the tests are done.
-out=${CARGO_TARGET_DIR:-target}
-mkdir -p "$out"
-nice -n 15 scripts/synth.sh >"$out/synth-step.log" 2>&1 &
-synth=$!
-
 step "the tests' build, with clippy's lints (-D warnings)"
 clippy_driver=$(rustc --print sysroot)/bin/clippy-driver
 [[ -x $clippy_driver ]] || clippy_driver=$(command -v clippy-driver)
@@ -64,10 +54,14 @@ features=(--no-default-features)
 cargo test --workspace --locked "${features[@]}" --no-run
 took
 
-# Beside the tests, on the core their tails leave idle: Verilator lint of hdl-out/ and of
-# raster_top's other builds (emitted by the test build's edgepaint). Its output is shown once
-# the tests are done.
+# Beside the tests, on the core their tails leave idle: Yosys synthesis of hdl-out/ (each
+# distinct module once; it needs only hdl-out/) and Verilator lint of hdl-out/ and of
+# raster_top's other builds (emitted by the test build's edgepaint). Their output is shown
+# once the tests are done.
 step "tests, with synthesis and lint beside them"
+out=${CARGO_TARGET_DIR:-target}
+scripts/synth.sh >"$out/synth-step.log" 2>&1 &
+synth=$!
 # The test build's edgepaint holds no class 11 or 12 and no rtl::custom: those variants are
 # the soak's lint, as are raster_top without cull_sort alone and without pixel_out alone (each
 # 26 s of CPU; both left out is linted here; the tests run raster_top without pixel_out, the
