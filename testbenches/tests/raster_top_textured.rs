@@ -5,20 +5,24 @@
 //! (`model::texture_path::sent`: the input words and each one's texture words on `tex$*`,
 //! `sim::textured`), behind a framebuffer memory that reads colour for blending and a
 //! texture memory of latency 10 (refusing words at random in the lockstep); the image and
-//! depth written equal the textured scanline render's (`model::render::render_with`), and
-//! the cache's hits, misses and fills those of the render's accesses.
+//! depth written equal the textured scanline render's (`model::render::render_with`), the
+//! cache's hits, misses and fills those of the render's accesses, and the cycles and
+//! counters those of the cycle model (`model::cycles::textured`).
 
 use fx::{Formats, TexFormats};
+use model::cycles::textured::textured_frame;
+use model::cycles::Timing;
 use model::render::{render_with, Method, Options, Render, Texturing};
 use model::texture_cache::{hit_rate_of_trace, Params};
-use model::texture_path::sent;
+use model::texture_memory::ReadPort;
+use model::texture_path::{sent_work, TexturePath};
 use model::texture_unit::TextureUnit;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::raster_top_textured::RasterTopTextured;
 use rtl::switch::Parts;
 use sim::streams::as_pins;
-use sim::textured::{draw, Clock, TexMemory, TexturedOut, TexturedVl};
+use sim::textured::{draw, Clock, TexturedOut, TexturedVl};
 use testbenches::{seed, verilated_with, Dual};
 use texture::LodRule;
 
@@ -53,14 +57,22 @@ fn scene(path: &std::path::Path, shrink: f64) -> Scene {
     Scene { name, list, texturing, want }
 }
 
+/// A texture memory of latency 10 holding `s`'s textures, and whether it takes a request
+/// in each cycle, asked in order from cycle 0: with probability `ack_chance`, from the
+/// test's seed.
+fn texture_memory(s: &Scene, ack_chance: f64) -> (ReadPort, impl FnMut(u64) -> bool) {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed());
+    (ReadPort::new(s.texturing.memory.words.clone(), 10), move |_| ack_chance >= 1.0 || rng.gen_bool(ack_chance))
+}
+
 /// `s` drawn through `cycle` behind a texture memory acknowledging a request with
 /// probability `ack_chance`: the image and depth must be the render's, the cache's
-/// counters those of its accesses.
+/// counters those of its accesses, the cycles and counters those of the cycle model
+/// (`model::cycles::textured`) behind the same memory.
 fn check(s: &Scene, cycle: &mut Clock, ack_chance: f64) -> TexturedOut {
-    let tris = sent(&s.list, &F, Some(&s.texturing));
-    let mut tex = TexMemory::new(s.texturing.memory.words.clone(), 10);
-    let mut rng = ChaCha8Rng::seed_from_u64(seed());
-    let mut ack = |_| ack_chance >= 1.0 || rng.gen_bool(ack_chance);
+    let work = sent_work(&s.list, &F, &OPTS, Some(&s.texturing));
+    let tris: Vec<_> = work.iter().map(|w| w.sent).collect();
+    let (mut tex, mut ack) = texture_memory(s, ack_chance);
     let size = (s.list.width, s.list.height);
     let drawn = draw(cycle, &tris, size, OPTS.background, false, &mut tex, &mut ack, 10_000_000)
         .unwrap_or_else(|e| panic!("{}: {e}", s.name));
@@ -69,6 +81,10 @@ fn check(s: &Scene, cycle: &mut Clock, ack_chance: f64) -> TexturedOut {
     }
     let c = hit_rate_of_trace(&CACHE, &s.want.fetches);
     assert_eq!(drawn.counters, [c.hits, c.misses, c.fills], "{}: the cache's hits, misses and fills", s.name);
+    let path = TexturePath::new(F, TF, CACHE, LodRule::Max).unwrap();
+    let (mut tex, mut ack) = texture_memory(s, ack_chance);
+    let model = textured_frame(&work, &Timing::default(), path, &mut tex, &mut ack, &|_| true);
+    assert_eq!((drawn.cycles, drawn.counters), (model.frame.total, model.counters), "{}: cycles, counters", s.name);
     drawn
 }
 
@@ -107,7 +123,7 @@ fn raster_top_textured_frames_equal_the_textured_render() {
         println!(
             "raster_top TEXTURE=1 {}: {} triangles, {} fragments in {} cycles ({:.3} a clock), hit rate {:.3}",
             s.name,
-            sent(&s.list, &F, Some(&s.texturing)).len(),
+            sent_work(&s.list, &F, &OPTS, Some(&s.texturing)).len(),
             s.want.stats.fragments,
             drawn.cycles,
             s.want.stats.fragments as f64 / drawn.cycles as f64,

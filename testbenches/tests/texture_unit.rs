@@ -12,6 +12,7 @@
 
 use fx::TexFormats;
 use model::texture_cache::{hit_rate_of_trace, MemIn, Params};
+use model::texture_memory::ReadPort;
 use model::texture_memory::{chain_words, layout};
 use model::texture_unit::input::TexPlanes;
 use model::texture_unit::pipeline::{Pipeline, Pixel, UnitIn, UnitOut};
@@ -20,7 +21,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::texture_unit::{TextureUnit411, TextureUnit6424};
 use rust_hdl::prelude::Block;
-use sim::textured::{state_pins, TexMemory, ENVS, MIPS, WRAPS};
+use sim::textured::{state_pins, ENVS, MIPS, WRAPS};
 use testbenches::texture::coord_pins;
 use testbenches::{count, seed, verilated_with, Dual, Pins, Value};
 use texture::{Filter, LodRule, MipChain, MipMode, Sampler, TexelFormat, Texture, Weights};
@@ -182,7 +183,7 @@ fn random_draws(rng: &mut ChaCha8Rng, memory: &mut [u32], lod: LodRule, pixels: 
 /// The test's memory: takes the word asked when `ack` (decided before the cycle), answers
 /// it `latency` cycles later, in order, a word a cycle at most.
 pub(crate) struct Memory {
-    pub(crate) mem: TexMemory,
+    pub(crate) mem: ReadPort,
     pub(crate) ack_chance: f64,
 }
 
@@ -190,7 +191,7 @@ impl Memory {
     /// `words` answered `latency` cycles after they are asked, a request taken with
     /// probability `ack_chance`.
     pub(crate) fn new(words: Vec<u32>, latency: u64, ack_chance: f64) -> Memory {
-        Memory { mem: TexMemory::new(words, latency), ack_chance }
+        Memory { mem: ReadPort::new(words, latency), ack_chance }
     }
 
     /// Cycle `now`'s answer, and whether a word asked is taken.

@@ -29,6 +29,7 @@ use super::render::{depth16, Image};
 use anyhow::{anyhow, bail, ensure, Result};
 use fx::Build;
 use model::cull_sort::Cull;
+use model::cycles::textured::textured_frame;
 use model::cycles::Timing;
 use model::pixel_bus::color_word;
 use model::render::Method;
@@ -257,7 +258,9 @@ fn textured(loaded: &Loaded, cull_back: bool, fixed: &FixedArgs, how: &How) -> R
     ensure!(how.top != Some(Top::GpuTop), "{what} is raster_top's: --top gpu_top has no texture path yet");
     ensure!(how.params.is_empty(), "{what} is built at raster_top's default parameters (no --param)");
     ensure!(
-        fixed.formats_of(loaded)? == build.formats && loaded.build.is_none_or(|b| b == build),
+        fixed.formats_of(loaded)? == build.formats
+            && loaded.build.is_none_or(|b| b == build)
+            && fixed.texture_formats()? == fx::TexFormats::DEFAULT,
         "{what} is built at size class {} and its default formats only (screens up to {}x{}, no --formats)",
         build.class,
         1 << build.class,
@@ -272,16 +275,17 @@ fn textured(loaded: &Loaded, cull_back: bool, fixed: &FixedArgs, how: &How) -> R
     );
     let f = build.formats;
     let texturing = fixed.texturing(list, !how.perspective, how.input)?;
-    let tris = model::texture_path::sent(list, &f, texturing.as_ref());
-    ensure!(!tris.is_empty(), "{}: --engine rtl: no triangle to draw", how.input.display());
     let background = loaded.background.map(|c| c.round().clamp(0.0, 255.0) as u8);
     let cull = if cull_back { Cull::Back } else { Cull::None };
     let opts = model::render::Options { method: Method::Scanline, cull, analysis: false, background };
+    let work = model::texture_path::sent_work(list, &f, &opts, texturing.as_ref());
+    let tris: Vec<_> = work.iter().map(|w| w.sent).collect();
+    ensure!(!tris.is_empty(), "{}: --engine rtl: no triangle to draw", how.input.display());
     let want = model::render::render_with(list, &f, &opts, texturing.as_ref(), &mut |_| {});
     let exact = fixed.lod_rule() == texture::LodRule::Exact;
     let mut vl = sim::textured::TexturedVl::new(exact).map_err(|e| anyhow!("--engine rtl: {e}"))?;
     let words = texturing.as_ref().map_or(Vec::new(), |t| t.memory.words.clone());
-    let mut tex = sim::textured::TexMemory::new(words, 10);
+    let mut tex = model::texture_memory::ReadPort::new(words.clone(), 10);
     let start = Instant::now();
     let size = (list.width, list.height);
     let max_cycles = 100 * (want.stats.fragments + 1000 * tris.len() as u64);
@@ -307,12 +311,23 @@ fn textured(loaded: &Loaded, cull_back: bool, fixed: &FixedArgs, how: &How) -> R
         out.counters,
         [c.hits, c.misses, c.fills]
     );
+    let cache = accuracy::texture::DEFAULT_CACHE;
+    let path = model::texture_path::TexturePath::new(f, fx::TexFormats::DEFAULT, cache, fixed.lod_rule())
+        .map_err(|e| anyhow!("--engine rtl: {e}"))?;
+    let mut tex = model::texture_memory::ReadPort::new(words, 10);
+    let predicted = textured_frame(&work, &Timing::default(), path, &mut tex, &mut |_| true, &|_| true);
+    ensure!(
+        predicted.frame.total == out.cycles,
+        "the RTL took {} cycles, model::cycles::textured predicts {}: a bug in the RTL or the cycle model",
+        out.cycles,
+        predicted.frame.total
+    );
     let st = &want.stats;
     let summary = format!(
         "rtl (raster_top of size class {} with TEXTURE = 1: cull_sort, setup, edge walk, span, texture_path with a 64-set \
          2-way cache of 4-word lines, blending pixel_out; in Verilator, a texture memory of latency 10): {} triangles in, \
-         {} drawn; {} fragments, {} pixels written; {} cycles ({:.3} fragments per clock; not yet predicted by \
-         model::cycles), texture cache hit rate {:.4} ({} misses); {:.0} cycles/s simulated ({secs:.2} s); image and depth \
+         {} drawn; {} fragments, {} pixels written; {} cycles ({:.3} fragments per clock, as model::cycles::textured \
+         predicts), texture cache hit rate {:.4} ({} misses); {:.0} cycles/s simulated ({secs:.2} s); image and depth \
          equal to the textured scanline model's",
         build.class,
         list.triangles.len(),

@@ -27,11 +27,15 @@
 //!   scout and the walker, the scout a row ahead of the walker, two sets of constants),
 //!   with the rows of `vector::vector`'s walk at the default divider; its chunks go to
 //!   `pixel_out` as they leave (one lane: a pixel a cycle; more lanes count as a `pixel_out`
-//!   as wide).
+//!   as wide);
+//! * the textured `raster_top` ([`textured`]): the same front end, `span`'s fragments taken
+//!   by the texture path's cycle-for-cycle model or by `pixel_out`.
 
 use crate::render::{SpanWork, Work};
 use crate::triangle_setup::schedule::Schedule;
 use crate::{cull_sort, edge_walk, pixel_out, se, se_cmd, span, vector};
+
+pub mod textured;
 
 /// Hardware parameters the cycle model depends on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -115,7 +119,7 @@ pub fn scanline_frame(work: &[Work], t: &Timing) -> FrameCycles {
 /// ([`Timing::pixel_out`]), `ready` is the host's `out$ready`.
 pub fn scanline_frame_stalled(work: &[Work], t: &Timing, ready: &dyn Fn(u64) -> bool) -> FrameCycles {
     let sink = Sink { ready, pixel_out: t.pixel_out };
-    front_end_frame(work, t, &mut SpanUnit { free: 0, held: None, sink })
+    front_end_frame(work, t, &mut SpanUnit::new(sink))
 }
 
 /// Cycles of a frame through the SE back end (`rtl::raster_top` with `METHOD = 2`): the
@@ -141,8 +145,31 @@ trait SpanTaker {
     fn take(&mut self, avail: u64, s: &SpanWork, last: &mut u64, busy: &mut u64) -> u64;
     /// The first cycle it may take the next span.
     fn free(&self) -> u64;
+    /// The cycle the edge walk takes triangle `index` (of the frame's work), ready for it
+    /// from cycle `at` on: `at`, unless the taker holds the edge walk back.
+    fn hand(&mut self, at: u64, _index: usize, _last: &mut u64) -> u64 {
+        at
+    }
     /// After the frame's last span: the frame lasts at least until what it still holds is
     /// through.
+    fn finish(&mut self, _last: &mut u64) {}
+}
+
+/// What takes `span`'s pixels.
+trait PixelSink {
+    /// Whether the edge walk takes a triangle only once `span` is idle, every pixel of the
+    /// triangle before taken ([`PixelSink::hand`] says when).
+    const HOLDS_THE_WALK: bool = false;
+    /// The cycle a pixel presented from cycle `from` on is taken in; the frame lasts at
+    /// least until that pixel is through (in `last`).
+    fn take(&mut self, from: u64, last: &mut u64) -> u64;
+    /// With [`PixelSink::HOLDS_THE_WALK`]: the cycle the edge walk takes triangle `index`
+    /// (of the frame's work), `span` idle and the triangle ready from cycle `idle` on.
+    fn hand(&mut self, idle: u64, _index: usize, _last: &mut u64) -> u64 {
+        idle
+    }
+    /// After the frame's last pixel: the frame lasts at least until what the sink still
+    /// holds is through.
     fn finish(&mut self, _last: &mut u64) {}
 }
 
@@ -155,7 +182,7 @@ struct Sink<'a> {
 
 impl Sink<'_> {
     /// The cycle a pixel presented from cycle `from` on is taken in: the first ready one.
-    fn take(&self, from: u64) -> u64 {
+    fn first_ready(&self, from: u64) -> u64 {
         (from..).find(|&c| (self.ready)(c)).expect("the memory is ready again")
     }
 
@@ -166,10 +193,18 @@ impl Sink<'_> {
     fn through(&self, taken: u64) -> u64 {
         if self.pixel_out {
             const _: () = assert!(pixel_out::LATENCY == 2);
-            self.take(self.take(taken + 1) + 1) + 1
+            self.first_ready(self.first_ready(taken + 1) + 1) + 1
         } else {
             taken + 1
         }
+    }
+}
+
+impl PixelSink for Sink<'_> {
+    fn take(&mut self, from: u64, last: &mut u64) -> u64 {
+        let taken = self.first_ready(from);
+        *last = (*last).max(self.through(taken));
+        taken
     }
 }
 
@@ -179,24 +214,26 @@ impl Sink<'_> {
 /// empty or its pixel is taken; a pixel walked in cycle a is in the register from a + 1
 /// ([`span::LATENCY`] = 2) until the sink takes it. Without stalls, walk cycle k is
 /// start + k, its pixel taken in start + k + 1, and the frame done 3 cycles after that.
-struct SpanUnit<'a> {
+struct SpanUnit<S> {
     free: u64,
     /// The cycle from which the pixel register holds a pixel not yet taken, if it does.
     held: Option<u64>,
-    sink: Sink<'a>,
+    sink: S,
 }
 
-impl SpanUnit<'_> {
+impl<S: PixelSink> SpanUnit<S> {
+    fn new(sink: S) -> Self {
+        SpanUnit { free: 0, held: None, sink }
+    }
+
     /// The pixel register's pixel, if any, taken by the sink: the cycle it is taken in
     /// (the frame lasts until it is through).
     fn release(&mut self, last: &mut u64) -> Option<u64> {
-        let taken = self.sink.take(self.held.take()?);
-        *last = (*last).max(self.sink.through(taken));
-        Some(taken)
+        Some(self.sink.take(self.held.take()?, last))
     }
 }
 
-impl SpanTaker for SpanUnit<'_> {
+impl<S: PixelSink> SpanTaker for SpanUnit<S> {
     fn take(&mut self, avail: u64, s: &SpanWork, last: &mut u64, busy: &mut u64) -> u64 {
         const _: () = assert!(span::LATENCY == 2);
         let start = avail.max(self.free);
@@ -219,8 +256,19 @@ impl SpanTaker for SpanUnit<'_> {
         self.free
     }
 
+    fn hand(&mut self, at: u64, index: usize, last: &mut u64) -> u64 {
+        if !S::HOLDS_THE_WALK {
+            return at;
+        }
+        // span is idle once it has walked its last span and its last pixel is taken.
+        let taken = self.release(last);
+        let idle = at.max(self.free).max(taken.map_or(0, |t| t + 1));
+        self.sink.hand(idle, index, last)
+    }
+
     fn finish(&mut self, last: &mut u64) {
         self.release(last);
+        self.sink.finish(last);
     }
 }
 
@@ -280,7 +328,7 @@ fn front_end_frame(work: &[Work], t: &Timing, taker: &mut impl SpanTaker) -> Fra
     let mut cull = CullSortStages::new(t.cull_sort);
     let mut span_starts: Vec<u64> = Vec::new();
     let mut out = FrameCycles::default();
-    for w in work.iter().filter(|w| t.cull_sort || w.passed_cull) {
+    for (index, w) in work.iter().enumerate().filter(|(_, w)| t.cull_sort || w.passed_cull) {
         let Some(culled) = cull.passing(w.passed_cull, &mut last) else { continue };
         out.triangles += 1;
         // Setup takes a triangle on the grid of the last one it took (when that one has run
@@ -302,7 +350,7 @@ fn front_end_frame(work: &[Work], t: &Timing, taker: &mut impl SpanTaker) -> Fra
         waits.retain(|w| w.0 >= setup_start);
         cull.leave(setup_start);
         let done = running(&waits, setup_start, setup);
-        let ew_start = done.max(ew_free);
+        let ew_start = taker.hand(done.max(ew_free), index, &mut last);
         last_taken = Some((setup_start, ew_start));
         if ew_start > done {
             waits.push((done, ew_start));

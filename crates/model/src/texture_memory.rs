@@ -12,8 +12,10 @@
 //! One word is one texel in its [`TexelFormat`]'s encoding (`TexelFormat::encode`), in the
 //! low bits.
 
+use crate::texture_cache::MemIn;
 use crate::texture_unit::TexState;
 use scene::Trilist;
+use std::collections::VecDeque;
 use texture::{LodRule, MipChain, TexelFormat};
 
 /// Bits of a texture memory word address: 64 Mi words, room for the chain of a 4096 x 4096
@@ -93,6 +95,40 @@ impl TextureMemory {
             return Err(format!("the textures take {} words: texture memory holds 2^{ADDR_BITS}", m.words.len()));
         }
         Ok(m)
+    }
+}
+
+/// The texture memory behind `texture_unit`'s read port (`mem_valid`, `mem_addr`,
+/// `mem_ack`, `mem_rvalid`, `mem_rdata`): each word asked and acknowledged comes back
+/// `latency` cycles later, in order, at most one a cycle.
+#[derive(Clone, Debug)]
+pub struct ReadPort {
+    pub words: Vec<u32>,
+    pub latency: u64,
+    queue: VecDeque<(u64, u32)>,
+}
+
+impl ReadPort {
+    pub fn new(words: Vec<u32>, latency: u64) -> ReadPort {
+        ReadPort { words, latency, queue: VecDeque::new() }
+    }
+
+    /// Cycle `now`'s answer; a word asked in it is taken when `ack`.
+    pub fn answer(&mut self, now: u64, ack: bool) -> MemIn {
+        let answer = self.queue.front().filter(|(due, _)| *due <= now).map(|&(_, w)| w);
+        if answer.is_some() {
+            self.queue.pop_front();
+        }
+        MemIn { ack, rvalid: answer.is_some(), rdata: answer.unwrap_or(0) }
+    }
+
+    /// After cycle `now` with answer `m`: the word at `addr` asked when `valid`.
+    pub fn ask(&mut self, now: u64, m: &MemIn, valid: bool, addr: u32) {
+        if valid && m.ack {
+            let due = (now + self.latency).max(self.queue.back().map_or(0, |(d, _)| d + 1));
+            let word = self.words.get(addr as usize).copied().unwrap_or(0);
+            self.queue.push_back((due, word));
+        }
     }
 }
 

@@ -34,7 +34,7 @@ use crate::cull_sort::Clip;
 use crate::divider::{reciprocal, Recip};
 use crate::guard_band;
 use crate::input::{to_fixed, Vtx};
-use crate::render::{triangle_ranged, Options, Texturing};
+use crate::render::{triangle_ranged, Dropped, Options, Texturing, Work};
 use crate::span::Pixel;
 use crate::texture_cache::{MemIn, Params};
 use crate::texture_setup::{area2, tex_vertices, texture_setup, TexVtx, TexturePlanes};
@@ -50,7 +50,7 @@ pub const PIXEL_STAGES: usize = 3;
 pub const SETUP_CYCLES: u32 = 30;
 
 /// A textured triangle, as its first fragment brings it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct TexTriangle {
     /// Its vertices as the texture path takes them (`texture_setup::tex_vertices`).
     pub v: [TexVtx; 3],
@@ -60,7 +60,7 @@ pub struct TexTriangle {
 
 /// A fragment offered: the pixel (its colour the lit one), whether it is its triangle's
 /// first, and its triangle (read only with `new`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Fragment {
     pub pixel: Pixel,
     pub new: bool,
@@ -158,6 +158,12 @@ impl TexturePath {
         self.unit.cache_running()
     }
 
+    /// No fragment in the path and no triangle being set up (the output `idle` of this
+    /// cycle, whatever the inputs).
+    pub fn is_idle(&self) -> bool {
+        self.unit.is_idle() && self.stages.iter().all(Option::is_none) && self.phase == Phase::Run
+    }
+
     /// One clock: the outputs of this cycle for inputs `i` and the texture memory's `m`,
     /// then the edge. Panics when a triangle of zero area brings fragments (the rasterizer
     /// draws none).
@@ -196,7 +202,7 @@ impl TexturePath {
             hits: uo.hits,
             misses: uo.misses,
             fills: uo.fills,
-            idle: uo.idle && drained && self.phase == Phase::Run,
+            idle: self.is_idle(),
         };
 
         // The edge.
@@ -242,19 +248,14 @@ pub struct Draw {
 /// scanline method, in drawing order (the guard band's pieces that are neither culled nor
 /// dropped), each as the texture path takes it: textured where `Texturing::apply` textures.
 pub fn draws(list: &scene::Trilist, f: &Formats, opts: &Options, texturing: &Texturing) -> Vec<Draw> {
-    let clip = Clip { width: list.width, height: list.height };
-    let mut out = Vec::new();
-    for tri in &guard_band::pieces(list, f, false).triangles {
-        let (Ok(t), _, _) = triangle_ranged(tri, clip, f, opts) else { continue };
-        let v = to_fixed(tri, f).expect("triangle_ranged converted it");
-        let Ok(tv) = tex_vertices(tri, &v, &texturing.unit.formats, texturing.affine) else { continue };
-        let tex = tv.zip(tri[0].tex).filter(|(tv, _)| area2(tv) != 0).map(|(v, tex)| {
-            let state = texturing.memory.states[tex.texture as usize];
-            (TexTriangle { v, state, blend: tri[0].blend }, reciprocal(area2(&v).abs(), f))
-        });
-        out.push(Draw { pixels: t.pixels, blend: tri[0].blend, tex });
-    }
-    out
+    let drawn = sent_work(list, f, opts, Some(texturing)).into_iter().filter(|s| s.drawn);
+    drawn
+        .map(|s| Draw {
+            blend: s.sent.blend,
+            tex: s.sent.tex.map(|t| (t, reciprocal(area2(&t.v).abs(), f))),
+            pixels: s.pixels,
+        })
+        .collect()
 }
 
 /// A triangle as the textured `raster_top` (`rtl::raster_top_textured`) takes it: its input
@@ -273,13 +274,21 @@ pub struct Sent {
 /// `tex_vertices`; the render drops the others), culled or not, in order; textured where
 /// `Texturing::apply` textures (a piece of zero area is culled).
 pub fn sent(list: &scene::Trilist, f: &Formats, texturing: Option<&Texturing>) -> Vec<Sent> {
-    let mut out = Vec::new();
-    for tri in &guard_band::pieces(list, f, false).triangles {
-        let Ok(v) = to_fixed(tri, f) else { continue };
+    sendable(list, f, texturing).map(|(_, s)| s).collect()
+}
+
+/// [`sent`]'s triangles, each with its guard-band piece.
+fn sendable<'a>(
+    list: &'a scene::Trilist,
+    f: &'a Formats,
+    texturing: Option<&'a Texturing>,
+) -> impl Iterator<Item = (scene::Triangle, Sent)> + 'a {
+    guard_band::pieces(list, f, false).triangles.into_iter().filter_map(move |tri| {
+        let v = to_fixed(&tri, f).ok()?;
         let tex = match texturing {
             None => None,
             Some(tx) => {
-                let Ok(tv) = tex_vertices(tri, &v, &tx.unit.formats, tx.affine) else { continue };
+                let tv = tex_vertices(&tri, &v, &tx.unit.formats, tx.affine).ok()?;
                 tv.zip(tri[0].tex).filter(|(tv, _)| area2(tv) != 0).map(|(tv, tex)| TexTriangle {
                     v: tv,
                     state: tx.memory.states[tex.texture as usize],
@@ -287,9 +296,35 @@ pub fn sent(list: &scene::Trilist, f: &Formats, texturing: Option<&Texturing>) -
                 })
             }
         };
-        out.push(Sent { v, blend: tri[0].blend, tex });
-    }
-    out
+        let blend = tri[0].blend;
+        Some((tri, Sent { v, blend, tex }))
+    })
+}
+
+/// A triangle sent ([`sent`]) with what the scanline pipeline makes of it under `opts`:
+/// its work (`render::Work`, for the cycle model) and its fragments in the order `span`
+/// sends them (lit colours, before the depth test).
+#[derive(Clone, Debug)]
+pub struct SentWork {
+    pub sent: Sent,
+    pub work: Work,
+    pub pixels: Vec<Pixel>,
+    /// Whether it is drawn: neither culled nor dropped (an overflow passes `cull_sort`).
+    pub drawn: bool,
+}
+
+/// [`sent`]'s triangles with their work and fragments under `opts` (its cull).
+pub fn sent_work(list: &scene::Trilist, f: &Formats, opts: &Options, texturing: Option<&Texturing>) -> Vec<SentWork> {
+    let clip = Clip { width: list.width, height: list.height };
+    let sent = sendable(list, f, texturing);
+    sent.map(|(tri, sent)| match triangle_ranged(&tri, clip, f, opts).0 {
+        Ok(t) => SentWork { sent, work: t.work, pixels: t.pixels, drawn: true },
+        Err(why) => {
+            let work = Work { passed_cull: matches!(why, Dropped::Overflow(_)), ..Work::default() };
+            SentWork { sent, work, pixels: Vec::new(), drawn: false }
+        }
+    })
+    .collect()
 }
 
 #[cfg(test)]

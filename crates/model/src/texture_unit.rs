@@ -27,7 +27,7 @@ use fx::TexFormats;
 use texture::{EnvMode, LodRule, Sampler, TexelFormat};
 
 /// The state a texture is drawn with: its size, chain, address and how it is sampled.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct TexState {
     /// log2 of the base level's width and height (at most `fx::texture::MAX_SIZE_LOG2`).
     pub size_log2: [u32; 2],

@@ -1,7 +1,7 @@
 //! Whole frames through the textured `raster_top` (`rtl::raster_top_textured`, `TEXTURE =
 //! 1`): the triangles with their texture words in (`model::texture_path::sent`), the depth
 //! and colour buffers in Rust ([`Memory`], which returns colour for blending) and the
-//! texture memory behind `texture_path`'s read port ([`TexMemory`]). The frame simulation
+//! texture memory behind `texture_path`'s read port (`model::texture_memory::ReadPort`). The frame simulation
 //! of `edgepaint render --engine rtl` on textured and blended scenes and of the textured
 //! `raster_top`'s tests.
 //!
@@ -13,10 +13,9 @@ use crate::streams::raw;
 use crate::{Outputs, Sim, Value, VlSim};
 use fx::Build;
 use model::blend::MODES;
-use model::texture_cache::MemIn;
+use model::texture_memory::ReadPort;
 use model::texture_path::Sent;
 use model::texture_unit::TexState;
-use std::collections::VecDeque;
 use texture::{EnvMode, Filter, MipMode, TexelFormat, Weights, Wrap};
 
 /// `texture_unit`'s codes of the wrap modes, the mip modes and the environments.
@@ -49,40 +48,6 @@ pub fn state_pins(s: &TexState) -> Vec<(&'static str, Value)> {
         ("st_gaussian", bit(s.sampler.weights == Weights::Gaussian)),
         ("st_env", Value::new(3, ENVS.iter().position(|e| *e == s.env).unwrap() as u128)),
     ]
-}
-
-/// The texture memory behind `texture_unit`'s read port (`mem_valid`, `mem_addr`,
-/// `mem_ack`, `mem_rvalid`, `mem_rdata`): each word asked and acknowledged comes back
-/// `latency` cycles later, in order, at most one a cycle.
-#[derive(Clone, Debug)]
-pub struct TexMemory {
-    pub words: Vec<u32>,
-    pub latency: u64,
-    queue: VecDeque<(u64, u32)>,
-}
-
-impl TexMemory {
-    pub fn new(words: Vec<u32>, latency: u64) -> TexMemory {
-        TexMemory { words, latency, queue: VecDeque::new() }
-    }
-
-    /// Cycle `now`'s answer; a word asked in it is taken when `ack`.
-    pub fn answer(&mut self, now: u64, ack: bool) -> MemIn {
-        let answer = self.queue.front().filter(|(due, _)| *due <= now).map(|&(_, w)| w);
-        if answer.is_some() {
-            self.queue.pop_front();
-        }
-        MemIn { ack, rvalid: answer.is_some(), rdata: answer.unwrap_or(0) }
-    }
-
-    /// After cycle `now` with answer `m`: the word at `addr` asked when `valid`.
-    pub fn ask(&mut self, now: u64, m: &MemIn, valid: bool, addr: u32) {
-        if valid && m.ack {
-            let due = (now + self.latency).max(self.queue.back().map_or(0, |(d, _)| d + 1));
-            let word = self.words.get(addr as usize).copied().unwrap_or(0);
-            self.queue.push_back((due, word));
-        }
-    }
 }
 
 /// Triangle `s` on the pins `inp$*` and `tex$*` (an untextured triangle's texture words but
@@ -131,7 +96,7 @@ pub fn draw(
     (width, height): (u32, u32),
     background: [u8; 3],
     cull_back: bool,
-    tex: &mut TexMemory,
+    tex: &mut ReadPort,
     ack: &mut dyn FnMut(u64) -> bool,
     max_cycles: u64,
 ) -> Result<TexturedOut, String> {

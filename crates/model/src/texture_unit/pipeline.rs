@@ -30,6 +30,7 @@ use crate::texture_address::{request, Request};
 use crate::texture_cache::{CacheIn, MemIn, Params, TextureCache, HIT_LATENCY, LANES};
 use crate::texture_coords::Coords;
 use crate::texture_filter::{environment, gaussian_table, texel, FilterIn, Rgba8};
+use crate::texture_memory::ReadPort;
 use fx::TexFormats;
 use std::collections::VecDeque;
 use texture::LodRule;
@@ -317,20 +318,13 @@ pub fn cycles(
     draws: &[(TexState, Vec<Pixel>)],
 ) -> Result<Run, String> {
     let mut u = Pipeline::new(formats, cache, lod)?;
-    let latency = latency.max(1);
-    let mut answers: VecDeque<(u64, u32)> = VecDeque::new();
+    let mut port = ReadPort::new(memory.to_vec(), latency.max(1));
     let mut now = 0u64;
     let mut run = Run::default();
     let mut step = |u: &mut Pipeline, i: &UnitIn, now: &mut u64| {
-        let due = answers.front().filter(|(t, _)| *t <= *now).map(|&(_, w)| w);
-        if due.is_some() {
-            answers.pop_front();
-        }
-        let o = u.step(i, MemIn { ack: true, rvalid: due.is_some(), rdata: due.unwrap_or(0) });
-        if o.mem_valid {
-            let at = (*now + latency).max(answers.back().map_or(0, |(t, _)| t + 1));
-            answers.push_back((at, memory.get(o.mem_addr as usize).copied().unwrap_or(0)));
-        }
+        let m = port.answer(*now, true);
+        let o = u.step(i, m);
+        port.ask(*now, &m, o.mem_valid, o.mem_addr);
         *now += 1;
         o
     };

@@ -1,0 +1,155 @@
+//! The cycle model of the textured `raster_top` (`rtl::raster_top_textured`, `TEXTURE = 1`):
+//! the scanline front end of [`super`] (`cull_sort`, setup, the edge walk, the span FIFO
+//! and `span`), whose fragments a textured triangle sends through the texture path of
+//! paper 001 §II-5, stepped cycle for cycle ([`TexturePath`], behind its texture memory),
+//! and an untextured one straight to the blending `pixel_out`:
+//!
+//! * the edge walk takes a triangle only once `span` is idle, every fragment of the one
+//!   before taken, and an untextured one only once the texture path is idle too (the RTL's
+//!   `hold`); the triangle is the path's from the cycle after;
+//! * a textured fragment is taken in the cycle the path takes it (its first with `new`:
+//!   the path sets the triangle up first); the path's output goes to `pixel_out`, which
+//!   takes it in a ready cycle (the memory's `ready`; the path's output is ready only while
+//!   the current triangle is textured);
+//! * an untextured fragment is taken by `pixel_out` as in [`super::scanline_frame_stalled`];
+//! * the frame is done once the last pixel is written and the path is idle.
+//!
+//! The path is stepped from cycle 0 (the cache's power-up Clear included), one cycle at a
+//! time and only forward: the front end asks for its cycles in order.
+
+use super::{front_end_frame, FrameCycles, PixelSink, Sink, SpanUnit, Timing};
+use crate::render::Work;
+use crate::span::Pixel;
+use crate::texture_memory::ReadPort;
+use crate::texture_path::{Fragment, PathIn, SentWork, TexTriangle, TexturePath};
+
+/// A textured frame's cycles and the texture cache's counters when it is done.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TexturedCycles {
+    pub frame: FrameCycles,
+    /// The cache's hits, misses and fills (`texture_path`'s counters).
+    pub counters: [u64; 3],
+}
+
+/// Cycles of a frame of `tris` (the triangles sent, `texture_path::sent_work`) through the
+/// textured `raster_top` with the units of `t`: its texture path `path` (at power-up),
+/// behind texture memory `memory`, which takes a request in the cycles `ack` says (asked once
+/// a cycle, in order from cycle 0), and a framebuffer memory ready in the cycles `ready`
+/// says. Panics when a triangle's fragments are not as many as its work sends.
+pub fn textured_frame(
+    tris: &[SentWork],
+    t: &Timing,
+    path: TexturePath,
+    memory: &mut ReadPort,
+    ack: &mut dyn FnMut(u64) -> bool,
+    ready: &dyn Fn(u64) -> bool,
+) -> TexturedCycles {
+    let work: Vec<Work> = tris.iter().map(|s| s.work.clone()).collect();
+    let sink = PathSink {
+        tris,
+        path,
+        memory,
+        ack,
+        out: Sink { ready, pixel_out: t.pixel_out },
+        now: 0,
+        cur: None,
+        first: false,
+        pixels: [].iter(),
+        counters: [0; 3],
+    };
+    let mut span = SpanUnit::new(sink);
+    let frame = front_end_frame(&work, t, &mut span);
+    TexturedCycles { frame, counters: span.sink.counters }
+}
+
+/// `span`'s pixels taken by the texture path (the current triangle textured) or by
+/// `pixel_out`.
+struct PathSink<'a> {
+    tris: &'a [SentWork],
+    path: TexturePath,
+    memory: &'a mut ReadPort,
+    ack: &'a mut dyn FnMut(u64) -> bool,
+    /// `pixel_out` and its memory.
+    out: Sink<'a>,
+    /// The path's next cycle.
+    now: u64,
+    /// The triangle whose fragments come, when textured; whether its first is still to
+    /// come; its fragments still to come.
+    cur: Option<TexTriangle>,
+    first: bool,
+    pixels: std::slice::Iter<'a, Pixel>,
+    /// The counters after the last cycle stepped.
+    counters: [u64; 3],
+}
+
+impl PathSink<'_> {
+    /// One cycle of the path, `frag` offered when given: whether it is taken. Its output
+    /// taken by `pixel_out` makes the frame last until that is written.
+    fn step(&mut self, frag: Option<Fragment>, last: &mut u64) -> bool {
+        let c = self.now;
+        let m = self.memory.answer(c, (self.ack)(c));
+        let i = PathIn {
+            inp_valid: frag.is_some(),
+            frag: frag.unwrap_or_default(),
+            flush: false,
+            out_ready: self.cur.is_some() && (self.out.ready)(c),
+        };
+        let o = self.path.step(&i, m);
+        self.memory.ask(c, &m, o.mem_valid, o.mem_addr);
+        if o.out_valid && i.out_ready {
+            *last = (*last).max(self.out.through(c));
+        }
+        self.counters = [o.hits, o.misses, o.fills].map(u64::from);
+        self.now += 1;
+        o.inp_ready
+    }
+
+    /// The path stepped with nothing offered up to cycle `to`, not included.
+    fn advance(&mut self, to: u64, last: &mut u64) {
+        while self.now < to {
+            self.step(None, last);
+        }
+    }
+
+    /// The path stepped with nothing offered until it is idle: that cycle.
+    fn drain(&mut self, last: &mut u64) -> u64 {
+        while !self.path.is_idle() {
+            self.step(None, last);
+        }
+        self.now
+    }
+}
+
+impl PixelSink for PathSink<'_> {
+    const HOLDS_THE_WALK: bool = true;
+
+    fn take(&mut self, from: u64, last: &mut u64) -> u64 {
+        let pixel = *self.pixels.next().expect("as many fragments as the work sends");
+        let Some(tri) = self.cur else { return self.out.take(from, last) };
+        let frag = Fragment { pixel, new: self.first, tri };
+        self.first = false;
+        self.advance(from, last);
+        loop {
+            let c = self.now;
+            if self.step(Some(frag), last) {
+                return c;
+            }
+        }
+    }
+
+    fn hand(&mut self, idle: u64, index: usize, last: &mut u64) -> u64 {
+        assert!(self.pixels.next().is_none(), "as many fragments as the work sends");
+        debug_assert!(self.now <= idle, "the path is stepped only forward");
+        let s = &self.tris[index];
+        self.advance(idle, last);
+        let handed = if s.sent.tex.is_some() { idle } else { self.drain(last) };
+        self.advance(handed + 1, last);
+        (self.cur, self.first, self.pixels) = (s.sent.tex, true, s.pixels.iter());
+        handed
+    }
+
+    fn finish(&mut self, last: &mut u64) {
+        let idle = self.drain(last);
+        *last = (*last).max(idle);
+    }
+}
