@@ -349,6 +349,8 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
     reg  [2:0] tail;
     reg  push;
     reg  [3:0] base;
+    reg  [3:0] wi_next;
+    reg  slot_free;
     reg  [388:0] word_in;
     reg  [388:0] word;
     
@@ -752,8 +754,10 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
         cull_sort$inp$v2_c1 = inp$v2_c1;
         cull_sort$inp$v2_c2 = inp$v2_c2;
         cull_sort$inp$v2_iw = inp$v2_iw;
-        cull_sort$inp$valid = inp$valid & ((wi$q + 32'h1) != base);
-        inp$ready = cull_sort$inp$ready & ((wi$q + 32'h1) != base);
+        wi_next = wi$q + 32'h1;
+        slot_free = wi_next != base;
+        cull_sort$inp$valid = inp$valid & slot_free;
+        inp$ready = cull_sort$inp$ready & slot_free;
         core$inp_last = 1'b0;
         if (inp$valid & inp$ready) begin
             last_in$d = inp_last;

@@ -145,10 +145,19 @@ trait SpanTaker {
     fn take(&mut self, avail: u64, s: &SpanWork, last: &mut u64, busy: &mut u64) -> u64;
     /// The first cycle it may take the next span.
     fn free(&self) -> u64;
-    /// The cycle the edge walk takes triangle `index` (of the frame's work), ready for it
-    /// from cycle `at` on: `at`, unless the taker holds the edge walk back.
-    fn hand(&mut self, at: u64, _index: usize, _last: &mut u64) -> u64 {
-        at
+    /// The first cycle triangle `index` (of the frame's work) may be taken in, the edge walk
+    /// free from cycle `ew_free` (of the triangle before): 0, unless the taker holds the
+    /// input back.
+    fn offer(&mut self, _index: usize, _ew_free: u64, _last: &mut u64) -> u64 {
+        0
+    }
+    /// Triangle `index` left `cull_sort` rejected in cycle `left`.
+    fn rejected(&mut self, _index: usize, _left: u64) {}
+    /// The cycle the edge walk takes triangle `index`, setup's result for it valid from cycle
+    /// `done` and the edge walk free from `ew_free`: the later, unless the taker holds the
+    /// edge walk back.
+    fn hand(&mut self, done: u64, ew_free: u64, _index: usize, _last: &mut u64) -> u64 {
+        done.max(ew_free)
     }
     /// After the frame's last span: the frame lasts at least until what it still holds is
     /// through.
@@ -157,17 +166,9 @@ trait SpanTaker {
 
 /// What takes `span`'s pixels.
 trait PixelSink {
-    /// Whether the edge walk takes a triangle only once `span` is idle, every pixel of the
-    /// triangle before taken ([`PixelSink::hand`] says when).
-    const HOLDS_THE_WALK: bool = false;
     /// The cycle a pixel presented from cycle `from` on is taken in; the frame lasts at
     /// least until that pixel is through (in `last`).
     fn take(&mut self, from: u64, last: &mut u64) -> u64;
-    /// With [`PixelSink::HOLDS_THE_WALK`]: the cycle the edge walk takes triangle `index`
-    /// (of the frame's work), `span` idle and the triangle ready from cycle `idle` on.
-    fn hand(&mut self, idle: u64, _index: usize, _last: &mut u64) -> u64 {
-        idle
-    }
     /// After the frame's last pixel: the frame lasts at least until what the sink still
     /// holds is through.
     fn finish(&mut self, _last: &mut u64) {}
@@ -218,18 +219,29 @@ struct SpanUnit<S> {
     free: u64,
     /// The cycle from which the pixel register holds a pixel not yet taken, if it does.
     held: Option<u64>,
+    /// The cycle after the last one a pixel was taken in.
+    emptied: u64,
     sink: S,
 }
 
 impl<S: PixelSink> SpanUnit<S> {
     fn new(sink: S) -> Self {
-        SpanUnit { free: 0, held: None, sink }
+        SpanUnit { free: 0, held: None, emptied: 0, sink }
     }
 
     /// The pixel register's pixel, if any, taken by the sink: the cycle it is taken in
     /// (the frame lasts until it is through).
     fn release(&mut self, last: &mut u64) -> Option<u64> {
-        Some(self.sink.take(self.held.take()?, last))
+        let taken = self.sink.take(self.held.take()?, last);
+        self.emptied = taken + 1;
+        Some(taken)
+    }
+
+    /// The first cycle `span` is idle (`rtl::span`'s `idle`) after the spans it was given:
+    /// its last walked, its last pixel taken.
+    fn idle(&mut self, last: &mut u64) -> u64 {
+        self.release(last);
+        self.free.max(self.emptied)
     }
 }
 
@@ -254,16 +266,6 @@ impl<S: PixelSink> SpanTaker for SpanUnit<S> {
 
     fn free(&self) -> u64 {
         self.free
-    }
-
-    fn hand(&mut self, at: u64, index: usize, last: &mut u64) -> u64 {
-        if !S::HOLDS_THE_WALK {
-            return at;
-        }
-        // span is idle once it has walked its last span and its last pixel is taken.
-        let taken = self.release(last);
-        let idle = at.max(self.free).max(taken.map_or(0, |t| t + 1));
-        self.sink.hand(idle, index, last)
     }
 
     fn finish(&mut self, last: &mut u64) {
@@ -329,7 +331,14 @@ fn front_end_frame(work: &[Work], t: &Timing, taker: &mut impl SpanTaker) -> Fra
     let mut span_starts: Vec<u64> = Vec::new();
     let mut out = FrameCycles::default();
     for (index, w) in work.iter().enumerate().filter(|(_, w)| t.cull_sort || w.passed_cull) {
-        let Some(culled) = cull.passing(w.passed_cull, &mut last) else { continue };
+        cull.not_before(taker.offer(index, ew_free, &mut last));
+        let culled = match cull.passing(w.passed_cull, &mut last) {
+            Ok(culled) => culled,
+            Err(left) => {
+                taker.rejected(index, left);
+                continue;
+            }
+        };
         out.triangles += 1;
         // Setup takes a triangle on the grid of the last one it took (when that one has run
         // II, 2 II, ... cycles), or at once when empty. No triangle is taken while setup
@@ -350,7 +359,7 @@ fn front_end_frame(work: &[Work], t: &Timing, taker: &mut impl SpanTaker) -> Fra
         waits.retain(|w| w.0 >= setup_start);
         cull.leave(setup_start);
         let done = running(&waits, setup_start, setup);
-        let ew_start = taker.hand(done.max(ew_free), index, &mut last);
+        let ew_start = taker.hand(done, ew_free, index, &mut last);
         last_taken = Some((setup_start, ew_start));
         if ew_start > done {
             waits.push((done, ew_start));
@@ -416,16 +425,21 @@ impl CullSortStages {
     }
 
     /// The next triangle through the stages, its verdict `passed`: the cycle it arrives in
-    /// the output register (the frame lasts at least until then, in `last`), or `None` when
-    /// it is rejected and leaves in that cycle.
-    fn passing(&mut self, passed: bool, last: &mut u64) -> Option<u64> {
+    /// the output register (the frame lasts at least until then, in `last`), or, when it is
+    /// rejected, `Err` of that cycle, which it leaves in.
+    fn passing(&mut self, passed: bool, last: &mut u64) -> Result<u64, u64> {
         let culled = self.arrive();
         *last = (*last).max(culled);
         if !passed {
             self.leave(culled);
-            return None;
+            return Err(culled);
         }
-        Some(culled)
+        Ok(culled)
+    }
+
+    /// The next triangle is taken no earlier than cycle `c`.
+    fn not_before(&mut self, c: u64) {
+        self.free[0] = self.free[0].max(c);
     }
 
     /// The triangle leaves the output register in `left` (a rejected one in the cycle it
@@ -556,7 +570,7 @@ pub fn vector_frame(work: &[Work], t: &Timing) -> FrameCycles {
     let mut last = 0u64;
     let mut out = FrameCycles::default();
     for w in work.iter().filter(|w| t.cull_sort || w.passed_cull) {
-        let Some(culled) = cull.passing(w.passed_cull, &mut last) else { continue };
+        let Ok(culled) = cull.passing(w.passed_cull, &mut last) else { continue };
         out.triangles += 1;
         let times = unit.triangle(culled, &w.vector_rows);
         cull.leave(times.taken);

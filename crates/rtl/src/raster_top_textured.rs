@@ -161,8 +161,11 @@ pub struct RasterTopTextured {
     first: DFF<Bit>,
     cur_mant: DFF<Bits<{ crate::texture_setup::MANT }>>,
     cur_exp: DFF<Bits<{ crate::texture_setup::EXP }>>,
-    /// The oldest slot in use (or `wi` when none is).
+    /// The oldest slot in use (or `wi` when none is); the slot after `wi`, and whether it is
+    /// not the oldest in use (a triangle may be taken).
     base: Signal<Local, Bits<SB>>,
+    wi_next: Signal<Local, Bits<SB>>,
+    slot_free: Signal<Local, Bit>,
     word_in: Signal<Local, Bits<PW>>,
     word: Signal<Local, Bits<PW>>,
     last_in: DFF<Bit>,
@@ -221,6 +224,8 @@ impl RasterTopTextured {
             cur_mant: Default::default(),
             cur_exp: Default::default(),
             base: Default::default(),
+            wi_next: Default::default(),
+            slot_free: Default::default(),
             word_in: Default::default(),
             word: Default::default(),
             last_in: Default::default(),
@@ -283,8 +288,12 @@ impl Logic for RasterTopTextured {
         self.cull_sort.inp.v2_c1.next = self.inp.v2_c1.val();
         self.cull_sort.inp.v2_c2.next = self.inp.v2_c2.val();
         self.cull_sort.inp.v2_iw.next = self.inp.v2_iw.val();
-        self.cull_sort.inp.valid.next = self.inp.valid.val() & ((self.wi.q.val() + 1) != self.base.val());
-        self.inp.ready.next = self.cull_sort.inp.ready.val() & ((self.wi.q.val() + 1) != self.base.val());
+        // (wi + 1 in a signal of its own: compared as an expression, Verilog would widen the
+        // sum to 32 bits and never wrap it.)
+        self.wi_next.next = self.wi.q.val() + 1;
+        self.slot_free.next = self.wi_next.val() != self.base.val();
+        self.cull_sort.inp.valid.next = self.inp.valid.val() & self.slot_free.val();
+        self.inp.ready.next = self.cull_sort.inp.ready.val() & self.slot_free.val();
         Verdict::link(&mut self.verdict, &mut self.cull_sort.verdict);
         SortedSource::join(&mut self.cull_sort.out, &mut self.core.inp);
         self.core.inp_last.next = false;

@@ -12,16 +12,23 @@
 //!   takes it in a ready cycle (the memory's `ready`; the path's output is ready only while
 //!   the current triangle is textured);
 //! * an untextured fragment is taken by `pixel_out` as in [`super::scanline_frame_stalled`];
-//! * the frame is done once the last pixel is written and the path is idle.
+//! * the frame is done once the last pixel is written and the path is idle;
+//! * the triangles' texture words wait in [`SLOTS`] slots, one per triangle taken, from its
+//!   taking until `cull_sort` rejects it, or until the edge walk has walked it (`span` idle
+//!   after it), and no slot is freed before an older one: a triangle is taken only while
+//!   a slot beyond the next is free (15 triangles in use at most).
 //!
 //! The path is stepped from cycle 0 (the cache's power-up Clear included), one cycle at a
 //! time and only forward: the front end asks for its cycles in order.
 
-use super::{front_end_frame, FrameCycles, PixelSink, Sink, SpanUnit, Timing};
-use crate::render::Work;
+use super::{front_end_frame, FrameCycles, PixelSink, Sink, SpanTaker, SpanUnit, Timing};
+use crate::render::{SpanWork, Work};
 use crate::span::Pixel;
 use crate::texture_memory::ReadPort;
 use crate::texture_path::{Fragment, PathIn, SentWork, TexTriangle, TexturePath};
+
+/// The slots of texture words (`rtl::raster_top_textured`'s RAM).
+pub const SLOTS: usize = 16;
 
 /// A textured frame's cycles and the texture cache's counters when it is done.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -57,9 +64,82 @@ pub fn textured_frame(
         pixels: [].iter(),
         counters: [0; 3],
     };
-    let mut span = SpanUnit::new(sink);
-    let frame = front_end_frame(&work, t, &mut span);
-    TexturedCycles { frame, counters: span.sink.counters }
+    let mut taker = TexturedTaker { span: SpanUnit::new(sink), freed: Vec::new(), walked: None, after: Vec::new() };
+    let frame = front_end_frame(&work, t, &mut taker);
+    TexturedCycles { frame, counters: taker.span.sink.counters }
+}
+
+/// `span` and its sink, the edge walk held back as the module documentation says, and the
+/// slots.
+struct TexturedTaker<'a> {
+    span: SpanUnit<PathSink<'a>>,
+    /// Per triangle sent, in order, the cycle from which its slot is free and every older
+    /// one (known for the triangles before the one last handed to the edge walk).
+    freed: Vec<u64>,
+    /// The triangle last handed to the edge walk (its index) and the rejected ones after
+    /// it: the cycles after their verdicts. Their slots are freed once it is walked.
+    walked: Option<usize>,
+    after: Vec<u64>,
+}
+
+impl TexturedTaker<'_> {
+    /// The triangle last handed is walked in cycle `idle` (the first with `span` idle after
+    /// it): its slot is free from the next, and the rejected ones' after it from then or
+    /// the cycle after their verdicts.
+    fn walked(&mut self, idle: u64) {
+        if self.walked.take().is_some() {
+            self.free_from(idle + 1);
+            for v in std::mem::take(&mut self.after) {
+                self.free_from(v);
+            }
+        }
+    }
+
+    /// The next triangle's slot is free from cycle `c` (or when the one before is).
+    fn free_from(&mut self, c: u64) {
+        let c = c.max(self.freed.last().copied().unwrap_or(0));
+        self.freed.push(c);
+    }
+}
+
+impl SpanTaker for TexturedTaker<'_> {
+    fn take(&mut self, avail: u64, s: &SpanWork, last: &mut u64, busy: &mut u64) -> u64 {
+        self.span.take(avail, s, last, busy)
+    }
+
+    fn free(&self) -> u64 {
+        self.span.free()
+    }
+
+    fn offer(&mut self, index: usize, ew_free: u64, last: &mut u64) -> u64 {
+        // Taken once the triangle SLOTS - 1 before it has left its slot: SLOTS - 1 in use
+        // with it at most (the RTL's `wi + 1 != base`).
+        let Some(oldest) = (index + 1).checked_sub(SLOTS) else { return 0 };
+        if oldest >= self.freed.len() {
+            let idle = ew_free.max(self.span.idle(last));
+            self.walked(idle);
+        }
+        self.freed[oldest]
+    }
+
+    fn rejected(&mut self, _index: usize, left: u64) {
+        match self.walked {
+            Some(_) => self.after.push(left + 1),
+            None => self.free_from(left + 1),
+        }
+    }
+
+    fn hand(&mut self, done: u64, ew_free: u64, index: usize, last: &mut u64) -> u64 {
+        // The triangle before is walked once the edge walk and span are idle.
+        let idle = ew_free.max(self.span.idle(last));
+        self.walked(idle);
+        self.walked = Some(index);
+        self.span.sink.hand(done.max(idle), index, last)
+    }
+
+    fn finish(&mut self, last: &mut u64) {
+        self.span.finish(last);
+    }
 }
 
 /// `span`'s pixels taken by the texture path (the current triangle textured) or by
@@ -120,9 +200,22 @@ impl PathSink<'_> {
     }
 }
 
-impl PixelSink for PathSink<'_> {
-    const HOLDS_THE_WALK: bool = true;
+impl PathSink<'_> {
+    /// The cycle the edge walk takes triangle `index`, `span` idle and setup's result valid
+    /// from cycle `idle`: then if it is textured, else once the path is idle too.
+    fn hand(&mut self, idle: u64, index: usize, last: &mut u64) -> u64 {
+        assert!(self.pixels.next().is_none(), "as many fragments as the work sends");
+        debug_assert!(self.now <= idle, "the path is stepped only forward");
+        let s = &self.tris[index];
+        self.advance(idle, last);
+        let handed = if s.sent.tex.is_some() { idle } else { self.drain(last) };
+        self.advance(handed + 1, last);
+        (self.cur, self.first, self.pixels) = (s.sent.tex, true, s.pixels.iter());
+        handed
+    }
+}
 
+impl PixelSink for PathSink<'_> {
     fn take(&mut self, from: u64, last: &mut u64) -> u64 {
         let pixel = *self.pixels.next().expect("as many fragments as the work sends");
         let Some(tri) = self.cur else { return self.out.take(from, last) };
@@ -135,17 +228,6 @@ impl PixelSink for PathSink<'_> {
                 return c;
             }
         }
-    }
-
-    fn hand(&mut self, idle: u64, index: usize, last: &mut u64) -> u64 {
-        assert!(self.pixels.next().is_none(), "as many fragments as the work sends");
-        debug_assert!(self.now <= idle, "the path is stepped only forward");
-        let s = &self.tris[index];
-        self.advance(idle, last);
-        let handed = if s.sent.tex.is_some() { idle } else { self.drain(last) };
-        self.advance(handed + 1, last);
-        (self.cur, self.first, self.pixels) = (s.sent.tex, true, s.pixels.iter());
-        handed
     }
 
     fn finish(&mut self, last: &mut u64) {
