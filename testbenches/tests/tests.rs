@@ -1,7 +1,7 @@
-//! The one test binary of the testbenches crate (see its Cargo.toml): one module per unit,
-//! plus the harness's own tests.
+//! The testbenches' first test binary (see its Cargo.toml): the scanline units, `raster_top`,
+//! the command parser and `gpu_top`, one module per unit, plus the harness's own tests. The
+//! back ends are in `back_ends.rs`.
 
-mod blend;
 mod command_parser;
 mod cull_sort;
 mod divider;
@@ -14,17 +14,6 @@ mod pixel_bus;
 mod pixel_out;
 mod pixel_out_blend;
 mod raster_top;
-mod raster_top_textured;
-mod se;
-mod se_cmd;
 mod span;
-mod texture_address;
-mod texture_cache;
-mod texture_coords;
-mod texture_filter;
-mod texture_path;
-mod texture_setup;
-mod texture_unit;
 mod triangle_queue;
 mod triangle_setup;
-mod vector;

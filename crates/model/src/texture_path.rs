@@ -158,8 +158,8 @@ impl TexturePath {
         self.unit.cache_running()
     }
 
-    /// No fragment in the path and no triangle being set up (the output `idle` of this
-    /// cycle, whatever the inputs).
+    /// No fragment in the path and no triangle being set up: between two steps, the output
+    /// `idle` of the next, whatever its inputs.
     pub fn is_idle(&self) -> bool {
         self.unit.is_idle() && self.stages.iter().all(Option::is_none) && self.phase == Phase::Run
     }
@@ -202,7 +202,7 @@ impl TexturePath {
             hits: uo.hits,
             misses: uo.misses,
             fills: uo.fills,
-            idle: self.is_idle(),
+            idle: uo.idle && drained && self.phase == Phase::Run,
         };
 
         // The edge.

@@ -98,14 +98,39 @@ pub fn hdl_out() -> PathBuf {
 }
 
 /// Where `hdl-out/` holds `e`'s Verilog, when `e` is a unit of the default design at its
-/// parameters and formats (`rtl::emit::default_entries`; the test `hdl_out_is_fresh` keeps
-/// that file current).
+/// parameters and formats ([`committed_build`]).
 fn committed(e: &Emitted) -> Option<PathBuf> {
     let class_formats = e.params.get("N").map(|&n| fx::Formats::for_n(n as u32));
-    let entry = rtl::emit::default_entries()
-        .into_iter()
-        .find(|d| e.formats == class_formats && d.unit.name == e.unit && d.params == e.params)?;
-    Some(hdl_out().join(rtl::emit::file_name(e.unit, entry.dir.as_deref())))
+    committed_build(e.unit, &e.params).filter(|_| e.formats == class_formats).map(|(file, _)| file)
+}
+
+/// The file and ports of `unit` at `params` (at its size class's formats) in `hdl-out/`,
+/// when the default design holds it: its entry in `hdl-out/manifest.json` (the test
+/// `hdl_out_is_fresh` keeps both current). The simulations verilate that file, and take
+/// its ports from there rather than emitting the unit again (seconds of rust-hdl for a
+/// `raster_top`, in every process that simulates it).
+fn committed_build(unit: &str, params: &rtl::Params) -> Option<(PathBuf, Vec<Port>)> {
+    static MANIFEST: std::sync::OnceLock<Option<serde_json::Value>> = std::sync::OnceLock::new();
+    let manifest = MANIFEST
+        .get_or_init(|| serde_json::from_str(&std::fs::read_to_string(hdl_out().join("manifest.json")).ok()?).ok())
+        .as_ref()?;
+    for entry in manifest["units"].as_array()? {
+        let entry_params: Option<rtl::Params> = serde_json::from_value(entry["parameters"].clone()).ok();
+        if entry["unit"] != unit || entry_params.as_ref() != Some(params) {
+            continue;
+        }
+        let port = |p: &serde_json::Value| {
+            let dir = match p["direction"].as_str()? {
+                "input" => PortDir::In,
+                "output" => PortDir::Out,
+                _ => return None,
+            };
+            Some(Port { name: p["name"].as_str()?.to_string(), dir, width: p["width"].as_u64()? as usize })
+        };
+        let ports = entry["ports"].as_array()?.iter().map(port).collect::<Option<Vec<Port>>>()?;
+        return Some((hdl_out().join(entry["file"].as_str()?), ports));
+    }
+    None
 }
 
 /// The Verilog file of `e` as the simulations should see it: the committed file in
@@ -150,11 +175,15 @@ pub fn verilated(
     if let Some(m) = model.as_ref() {
         return Ok(m.clone());
     }
-    let e = match formats {
-        Some(f) => unit.emit_at(params, f)?,
-        None => unit.emit(params)?,
-    };
-    let m = Arc::new(verilate(&e)?);
+    let class_formats = params.get("N").map(|&n| fx::Formats::for_n(n as u32));
+    let committed = committed_build(unit.name, params).filter(|_| formats.is_none_or(|f| Some(*f) == class_formats));
+    let m = Arc::new(match committed {
+        Some((file, ports)) => Verilated::new(unit.name, &file, &ports)?,
+        None => verilate(&match formats {
+            Some(f) => unit.emit_at(params, f)?,
+            None => unit.emit(params)?,
+        })?,
+    });
     *model = Some(m.clone());
     Ok(m)
 }
