@@ -8,16 +8,18 @@
 #   scripts/synth.sh          each distinct module once: gpu_top.v (which holds
 #                             command_parser, triangle_queue, cull_sort, divider,
 #                             triangle_setup, edge_walk, span, pixel_bus and gpu_regs as its
-#                             submodules), se.v, vector.v and texture_path.v (which holds
-#                             texture_setup and texture_unit, and in it texture_coords,
-#                             texture_address, texture_cache and texture_filter) in
-#                             `synth_ecp5`'s coarse passes (`-run begin:map_ram`: proc,
-#                             flatten, opt, fsm, wreduce, share, alumacc, memory; everything
-#                             but the mapping to ECP5 cells, which took 149 s of gpu_top's
-#                             229 s of CPU, and at stop 49 most of texture_path's 139 s and
-#                             vector's 133 s, beside the tests), and every other unit not
-#                             listed in SUBMODULES (pixel_out.v, ept.v, se_cmd.v, blend.v:
-#                             generic `synth -flatten` and `synth_ecp5`). raster_top.v is gpu_top's scanline units with
+#                             submodules), se.v and vector.v in `synth_ecp5`'s coarse passes
+#                             (`-run begin:map_ram`: proc, flatten, opt, fsm, wreduce, share,
+#                             alumacc, memory; everything but the mapping to ECP5 cells,
+#                             which took 149 s of gpu_top's 229 s of CPU, and at stop 49
+#                             most of vector's 133 s beside the tests); texture_path.v
+#                             (which holds texture_setup and texture_unit, and in it
+#                             texture_coords, texture_address, texture_cache and
+#                             texture_filter) by `synth_ecp5` (its coarse passes alone leave
+#                             texture_coords' log ROMs unmapped, with undriven wires that
+#                             `check -assert` refuses); every other unit not listed in
+#                             SUBMODULES (pixel_out.v, ept.v, se_cmd.v, blend.v) by generic
+#                             `synth -flatten` and `synth_ecp5`. raster_top.v is gpu_top's scanline units with
 #                             pixel_out behind them: its `synth_ecp5` took 176 s of CPU for
 #                             no module the others leave out but its own glue (the test
 #                             command)
@@ -40,7 +42,8 @@ SUBMODULES=(command_parser triangle_queue cull_sort divider triangle_setup edge_
     texture_coords texture_address texture_cache texture_filter texture_unit texture_setup)
 # Units the test command maps with synth_ecp5 alone, and those it takes through synth_ecp5's
 # coarse passes alone (--all runs every flow, mapped).
-COARSE_ONLY=(gpu_top se vector texture_path)
+ECP5_ONLY=(texture_path)
+COARSE_ONLY=(gpu_top se vector)
 flows=(generic ecp5)
 all=0
 if [[ ${1:-} == --all ]]; then
@@ -100,6 +103,8 @@ for f in "${files[@]}"; do
     unit=$(basename "$f" .v)
     unit_flows=("${flows[@]}")
     if [[ $(basename "$(dirname "$f")") == "$unit"-* ]]; then
+        unit_flows=(ecp5)
+    elif [[ $all == 0 && " ${ECP5_ONLY[*]} " =~ " $unit " ]]; then
         unit_flows=(ecp5)
     elif [[ $all == 0 && " ${COARSE_ONLY[*]} " =~ " $unit " ]]; then
         unit_flows=(coarse)

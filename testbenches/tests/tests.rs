@@ -1,6 +1,7 @@
 //! The testbenches' first test binary (see its Cargo.toml): the scanline units, `raster_top`,
-//! the command parser and `gpu_top`, one module per unit, plus the harness's own tests. The
-//! back ends are in `back_ends.rs`.
+//! the shading engine of 000 and its `se_cmd`, the command parser and `gpu_top`, one module per
+//! unit, plus the harness's own tests. Texture, blending and the vector unit are in
+//! `texture_vector.rs`.
 
 mod command_parser;
 mod cull_sort;
@@ -14,6 +15,8 @@ mod pixel_bus;
 mod pixel_out;
 mod pixel_out_blend;
 mod raster_top;
+mod se;
+mod se_cmd;
 mod span;
 mod triangle_queue;
 mod triangle_setup;
