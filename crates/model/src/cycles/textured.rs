@@ -42,7 +42,8 @@ pub struct TexturedCycles {
 /// textured `raster_top` with the units of `t`: its texture path `path` (at power-up),
 /// behind texture memory `memory`, which takes a request in the cycles `ack` says (asked once
 /// a cycle, in order from cycle 0), and a framebuffer memory ready in the cycles `ready`
-/// says. Panics when a triangle's fragments are not as many as its work sends.
+/// says. Panics when `t` leaves out `cull_sort` or `pixel_out` (the textured `raster_top`
+/// has both), or a triangle's fragments are not as many as its work sends.
 pub fn textured_frame(
     tris: &[SentWork],
     t: &Timing,
@@ -51,6 +52,7 @@ pub fn textured_frame(
     ack: &mut dyn FnMut(u64) -> bool,
     ready: &dyn Fn(u64) -> bool,
 ) -> TexturedCycles {
+    assert!(t.cull_sort && t.pixel_out, "the textured raster_top has cull_sort and pixel_out");
     let work: Vec<Work> = tris.iter().map(|s| s.work.clone()).collect();
     let sink = PathSink {
         tris,
@@ -64,7 +66,7 @@ pub fn textured_frame(
         pixels: [].iter(),
         counters: [0; 3],
     };
-    let mut taker = TexturedTaker { span: SpanUnit::new(sink), freed: Vec::new(), walked: None, after: Vec::new() };
+    let mut taker = TexturedTaker { span: SpanUnit::new(sink), freed: Vec::new(), walking: false, after: Vec::new() };
     let frame = front_end_frame(&work, t, &mut taker);
     TexturedCycles { frame, counters: taker.span.sink.counters }
 }
@@ -76,9 +78,10 @@ struct TexturedTaker<'a> {
     /// Per triangle sent, in order, the cycle from which its slot is free and every older
     /// one (known for the triangles before the one last handed to the edge walk).
     freed: Vec<u64>,
-    /// The triangle last handed to the edge walk (its index) and the rejected ones after
-    /// it: the cycles after their verdicts. Their slots are freed once it is walked.
-    walked: Option<usize>,
+    /// Whether a triangle was handed to the edge walk and not yet walked, and the rejected
+    /// ones after it: the cycles after their verdicts. Their slots are freed once it is
+    /// walked.
+    walking: bool,
     after: Vec<u64>,
 }
 
@@ -87,7 +90,7 @@ impl TexturedTaker<'_> {
     /// it): its slot is free from the next, and the rejected ones' after it from then or
     /// the cycle after their verdicts.
     fn walked(&mut self, idle: u64) {
-        if self.walked.take().is_some() {
+        if std::mem::take(&mut self.walking) {
             self.free_from(idle + 1);
             for v in std::mem::take(&mut self.after) {
                 self.free_from(v);
@@ -123,9 +126,10 @@ impl SpanTaker for TexturedTaker<'_> {
     }
 
     fn rejected(&mut self, _index: usize, left: u64) {
-        match self.walked {
-            Some(_) => self.after.push(left + 1),
-            None => self.free_from(left + 1),
+        if self.walking {
+            self.after.push(left + 1);
+        } else {
+            self.free_from(left + 1);
         }
     }
 
@@ -133,7 +137,7 @@ impl SpanTaker for TexturedTaker<'_> {
         // The triangle before is walked once the edge walk and span are idle.
         let idle = ew_free.max(self.span.idle(last));
         self.walked(idle);
-        self.walked = Some(index);
+        self.walking = true;
         self.span.sink.hand(done.max(idle), index, last)
     }
 
