@@ -8,18 +8,19 @@
 #   scripts/synth.sh          each distinct module once: gpu_top.v (which holds
 #                             command_parser, triangle_queue, cull_sort, divider,
 #                             triangle_setup, edge_walk, span, pixel_bus and gpu_regs as its
-#                             submodules), se.v and vector.v in `synth_ecp5`'s coarse passes
-#                             (`-run begin:map_ram`: proc, flatten, opt, fsm, wreduce, share,
-#                             alumacc, memory; everything but the mapping to ECP5 cells,
-#                             which took 149 s of gpu_top's 229 s of CPU, and at stop 49
-#                             most of vector's 133 s beside the tests); texture_path.v
-#                             (which holds texture_setup and texture_unit, and in it
-#                             texture_coords, texture_address, texture_cache and
-#                             texture_filter) by `synth_ecp5` (its coarse passes alone leave
-#                             texture_coords' log ROMs unmapped, with undriven wires that
-#                             `check -assert` refuses); every other unit not listed in
-#                             SUBMODULES (pixel_out.v, ept.v, se_cmd.v, blend.v) by generic
-#                             `synth -flatten` and `synth_ecp5`. raster_top.v is gpu_top's scanline units with
+#                             submodules), se.v, vector.v and texture_path.v (which holds
+#                             texture_setup and texture_unit, and in it texture_coords,
+#                             texture_address, texture_cache and texture_filter) through
+#                             `synth_ecp5`'s coarse passes and its RAM mapping (`-run
+#                             begin:map_gates`: proc, flatten, opt, fsm, wreduce, share,
+#                             alumacc, memory, BRAM and LUTRAM mapping, memory_map;
+#                             everything but the mapping to gates and LUTs, which took
+#                             149 s of gpu_top's 229 s of CPU and 78 s of texture_path's
+#                             139 s; stopped before the RAM mapping, texture_coords' log
+#                             ROMs keep undriven wires that `check -assert` refuses);
+#                             every other unit not listed in SUBMODULES (pixel_out.v, ept.v,
+#                             se_cmd.v, blend.v) by generic `synth -flatten` and
+#                             `synth_ecp5`. raster_top.v is gpu_top's scanline units with
 #                             pixel_out behind them: its `synth_ecp5` took 176 s of CPU for
 #                             no module the others leave out but its own glue (the test
 #                             command)
@@ -40,10 +41,9 @@ fi
 # (texture_setup, and texture_unit with its four).
 SUBMODULES=(command_parser triangle_queue cull_sort divider triangle_setup edge_walk span pixel_bus gpu_regs raster_top
     texture_coords texture_address texture_cache texture_filter texture_unit texture_setup)
-# Units the test command maps with synth_ecp5 alone, and those it takes through synth_ecp5's
-# coarse passes alone (--all runs every flow, mapped).
-ECP5_ONLY=(texture_path)
-COARSE_ONLY=(gpu_top se vector)
+# Units the test command takes through synth_ecp5's coarse passes and its RAM mapping alone
+# (--all runs every flow, mapped to cells).
+COARSE_ONLY=(gpu_top se vector texture_path)
 flows=(generic ecp5)
 all=0
 if [[ ${1:-} == --all ]]; then
@@ -81,7 +81,7 @@ synth_one() {
         generic) cmd="synth -flatten -top $top; check -assert; stat" ;;
         ice40) cmd="synth_ice40 -top $top -json $out/$name.ice40.json; check -assert; stat" ;;
         ecp5) cmd="synth_ecp5 -top $top -json $out/$name.ecp5.json; check -assert; stat" ;;
-        coarse) cmd="synth_ecp5 -top $top -run begin:map_ram; check -assert; stat" ;;
+        coarse) cmd="synth_ecp5 -top $top -run begin:map_gates; check -assert; stat" ;;
     esac
     log=$out/$name.$flow.log
     # No latches: a combinational output some path leaves unassigned (a `match` without a
@@ -103,8 +103,6 @@ for f in "${files[@]}"; do
     unit=$(basename "$f" .v)
     unit_flows=("${flows[@]}")
     if [[ $(basename "$(dirname "$f")") == "$unit"-* ]]; then
-        unit_flows=(ecp5)
-    elif [[ $all == 0 && " ${ECP5_ONLY[*]} " =~ " $unit " ]]; then
         unit_flows=(ecp5)
     elif [[ $all == 0 && " ${COARSE_ONLY[*]} " =~ " $unit " ]]; then
         unit_flows=(coarse)

@@ -168,6 +168,7 @@ impl TexturePath {
     /// then the edge. Panics when a triangle of zero area brings fragments (the rasterizer
     /// draws none).
     pub fn step(&mut self, i: &PathIn, m: MemIn) -> PathOut {
+        let idle = self.is_idle();
         let drained = self.stages.iter().all(Option::is_none);
         let same = self.loaded == Some(i.frag.tri.state);
         let start = self.phase == Phase::Drain && drained && (same || self.unit.is_idle());
@@ -202,7 +203,7 @@ impl TexturePath {
             hits: uo.hits,
             misses: uo.misses,
             fills: uo.fills,
-            idle: uo.idle && drained && self.phase == Phase::Run,
+            idle,
         };
 
         // The edge.

@@ -223,12 +223,22 @@ fn hash(key: &impl Hash) -> u64 {
     h.finish()
 }
 
-/// Runs `make` unless `file` exists; while one thread of this process makes a file, the
-/// others wanting the same file wait for it.
+/// Runs `make` unless `file` exists; while one thread of any process makes a file, the
+/// others wanting the same file wait for it: the threads of this process on a mutex, other
+/// processes (the CLI's tests run several `render --engine rtl` at once) on an exclusive
+/// lock of `<file>.lock`, so a model is compiled once, not once per process.
 fn once(file: &Path, make: impl FnOnce() -> Result<(), String>) -> Result<(), String> {
     static MAKING: Mutex<BTreeMap<PathBuf, Arc<Mutex<()>>>> = Mutex::new(BTreeMap::new());
     let slot = MAKING.lock().unwrap_or_else(|e| e.into_inner()).entry(file.to_path_buf()).or_default().clone();
     let _making = slot.lock().unwrap_or_else(|e| e.into_inner());
+    if file.is_file() {
+        return Ok(());
+    }
+    let dir = file.parent().expect("a file in a directory");
+    std::fs::create_dir_all(dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
+    let lock_path = file.with_extension("lock");
+    let lock = std::fs::File::create(&lock_path).map_err(|e| format!("creating {}: {e}", lock_path.display()))?;
+    lock.lock().map_err(|e| format!("locking {}: {e}", lock_path.display()))?;
     if file.is_file() {
         return Ok(());
     }
@@ -444,7 +454,7 @@ impl Sim for VlSim {
 
 #[cfg(test)]
 mod tests {
-    use super::work_dir;
+    use super::{once, work_dir};
     use std::ffi::OsString;
     use std::path::{Path, PathBuf};
 
@@ -480,5 +490,41 @@ mod tests {
         let xdg = [("HOME", "/home/u"), ("XDG_CACHE_HOME", "/var/cache/u")];
         assert_eq!(work_dir(Some(&exe), env(&xdg)), Path::new("/var/cache/u/edgepaint"));
         assert_eq!(work_dir(None, env(&[])), std::env::temp_dir().join("edgepaint"));
+    }
+
+    /// A build another process holds (its lock on `<file>.lock`: a lock of another open
+    /// file, as another process's would be) is waited for, and not made again once it is
+    /// published.
+    #[test]
+    fn once_waits_for_a_build_in_another_process() {
+        let root = tempfile::tempdir().unwrap();
+        let file = root.path().join("model").join("libVunit.so");
+        std::fs::create_dir_all(file.parent().unwrap()).unwrap();
+        let other = std::fs::File::create(file.with_extension("lock")).unwrap();
+        other.lock().unwrap();
+        let waiter = {
+            let file = file.clone();
+            std::thread::spawn(move || {
+                let mut made = false;
+                once(&file, || {
+                    made = true;
+                    Ok(())
+                })
+                .unwrap();
+                made
+            })
+        };
+        std::thread::sleep(std::time::Duration::from_millis(200));
+        assert!(!waiter.is_finished(), "once went on while the other process held the lock");
+        std::fs::write(&file, "built").unwrap();
+        other.unlock().unwrap();
+        assert!(!waiter.join().unwrap(), "the file the other process published was made again");
+        let mut made = false;
+        once(&root.path().join("other").join("lib.so"), || {
+            made = true;
+            Ok(())
+        })
+        .unwrap();
+        assert!(made, "a file nobody has made is made");
     }
 }
