@@ -19,8 +19,9 @@
 #   3. synthesis    every file in hdl-out/, each unit alone too, in all three flows,
 #                   mapped to cells, raster_top's barycentric and SE back ends (in
 #                   hdl-out/'s directories) by synth_ecp5 only (the test command
-#                   synthesizes each distinct module once, without iCE40, and gpu_top
-#                   only through synth_ecp5's coarse passes); then Verilator lint of hdl-out/ and of every raster_top
+#                   synthesizes each distinct module once, without iCE40, and gpu_top, se,
+#                   vector and texture_path only up to synth_ecp5's gate mapping); then
+#                   Verilator lint of hdl-out/ and of every raster_top
 #                   variant, classes 11 and 12 and rtl::custom too (scripts/lint.sh)
 #   4. P&R          place and route of every unit of the default design on iCE40 and ECP5
 #                   (`edgepaint report`): area and Fmax in target/soak/report/<unit>/report.md.
@@ -31,8 +32,9 @@
 #                   (router1 routed it in 68 minutes, with other work beside it), and only
 #                   in the ECP5 flow (`--flow ecp5`: no iCE40 holds it, and the generic
 #                   flow makes flip-flops of its RAMs; those two took an hour); the texture
-#                   units and blend take router2 in the generic and ECP5 flows (their
-#                   multipliers fit no iCE40 HX8K; 1 to 45 minutes each at stop 45)
+#                   units, texture_setup, texture_path and blend take router2 in the generic
+#                   and ECP5 flows (their multipliers fit no iCE40 HX8K; 1 to 45 minutes each
+#                   at stop 45), and the textured raster_top (TEXTURE=1) router2 in ECP5
 #
 # `scripts/soak.sh STEP...` runs only the steps named (tests, random, synth, pnr).
 set -euo pipefail
@@ -73,7 +75,7 @@ want synth && step "lint of every raster_top variant, classes 11 and 12 too" scr
 pnr() {
     local unit router flows
     for unit in ept se cull_sort divider edge_walk span pixel_out pixel_bus gpu_regs command_parser triangle_queue triangle_setup raster_top gpu_top \
-        texture_coords texture_address texture_cache texture_filter texture_unit blend; do
+        texture_coords texture_address texture_cache texture_filter texture_unit texture_setup texture_path blend; do
         router=router1
         [[ $unit == triangle_setup || $unit == raster_top || $unit == texture_* ]] && router=router2
         flows=()
@@ -84,6 +86,10 @@ pnr() {
         cargo run --profile test --locked --quiet -- report --unit "$unit" --router $router "${flows[@]}" \
             -o "target/soak/report/$unit"
     done
+    # The textured raster_top (texture_path behind the scanline units): ECP5 only, as raster_top
+    # fits no iCE40.
+    cargo run --profile test --locked --quiet -- report --unit raster_top --param TEXTURE=1 --router router2 --flow ecp5 \
+        -o target/soak/report/raster_top-TEXTURE=1
 }
 want pnr && step "place and route of the default design" pnr
 printf '\n== soak: all steps passed (%s)\n' "${steps[*]}"

@@ -81,7 +81,7 @@ if [[ $lint_ok -ne 0 ]]; then
 fi
 took
 
-step "Yosys synthesis of hdl-out/ (each distinct module once; gpu_top's coarse passes)"
+step "Yosys synthesis of hdl-out/ (each distinct module once; the four largest up to the gate mapping)"
 synth_ok=0
 wait $synth || synth_ok=$?
 cat "$out/synth-step.log"
