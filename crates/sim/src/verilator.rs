@@ -8,9 +8,10 @@
 //! of those changes (a fresh clone or a touched file rebuilds nothing that is cached).
 //! Verilator's runtime (`libverilated.a`, the same for every model built with the same
 //! flags) is compiled once, under `<target>/verilator/runtime-<hash>/`, and linked into
-//! each model, which then compiles only its own classes. Threads of one process that
-//! want the same model (or the runtime) wait for the first to build it; two processes
-//! each build in a directory of their own and rename the result into place.
+//! each model, which then compiles only its own classes. Threads and processes that want
+//! the same model (or the runtime) wait for the first to build it (a mutex within a
+//! process, a lock file beside the model across processes); a build works in a directory
+//! of its own and renames the result into place.
 //!
 //! [`VlSim`] moves port values as [`Value`]s by name (the dual-simulation tests) or by
 //! [`PortId`] with plain integers (frame simulation, a million cycles per second and
