@@ -1,12 +1,11 @@
-use num_bigint::BigUint;
-use num_traits::{One, ToPrimitive};
-
 use crate::bits::LiteralType;
 use std::cmp::Ordering;
 use std::num::Wrapping;
 
-pub type ShortType = u32;
-pub const SHORT_BITS: usize = 32;
+// edgepaint: u64 rather than u32, so that vectors of 33 to 64 bits are a machine word and
+// not a heap-allocated `BitVec` of bools added bit by bit (vendor/README.md).
+pub type ShortType = u64;
+pub const SHORT_BITS: usize = 64;
 
 #[derive(Clone, Debug, Copy, PartialEq, Hash)]
 pub struct ShortBitVec<const N: usize>(ShortType);
@@ -19,7 +18,12 @@ fn test_max_legal_calc() {
 
 impl<const N: usize> ShortBitVec<N> {
     pub fn max_legal() -> u64 {
-        (1_u64 << N) - 1
+        // edgepaint: N may now be 64.
+        if N >= 64 {
+            u64::MAX
+        } else {
+            (1_u64 << N) - 1
+        }
     }
 
     pub fn short(&self) -> ShortType {
@@ -161,9 +165,12 @@ impl<const N: usize> std::ops::Shr<LiteralType> for ShortBitVec<N> {
 
     #[inline(always)]
     fn shr(self, rhs: LiteralType) -> Self::Output {
-        let x: BigUint = self.0.into();
-        let mask: BigUint = (BigUint::one() << N) - BigUint::one();
-        ShortBitVec::<N>(((x >> rhs) & mask).to_u32().unwrap())
+        // edgepaint: a machine shift (was through BigUint); bits shifted past either end are 0.
+        if rhs >= SHORT_BITS as LiteralType {
+            ShortBitVec::<N>(0)
+        } else {
+            ShortBitVec::<N>(self.0 >> rhs)
+        }
     }
 }
 
@@ -182,9 +189,12 @@ impl<const N: usize> std::ops::Shl<LiteralType> for ShortBitVec<N> {
 
     #[inline(always)]
     fn shl(self, rhs: LiteralType) -> Self::Output {
-        let x: BigUint = self.0.into();
-        let mask: BigUint = (BigUint::one() << N) - BigUint::one();
-        ShortBitVec::<N>(((x << rhs) & mask).to_u32().unwrap())
+        // edgepaint: a machine shift (was through BigUint); bits shifted past either end are 0.
+        if rhs >= SHORT_BITS as LiteralType {
+            ShortBitVec::<N>(0)
+        } else {
+            ShortBitVec::<N>((self.0 << rhs) & Self::bit_mask())
+        }
     }
 }
 
