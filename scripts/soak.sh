@@ -35,13 +35,15 @@
 #                   units, texture_setup, texture_path and blend take router2 in the generic
 #                   and ECP5 flows (their multipliers fit no iCE40 HX8K; 1 to 45 minutes each
 #                   at stop 45), and the textured raster_top (TEXTURE=1) router2 in ECP5
+#   5. mutate       scripts/mutate.sh: one operator of the emitted Verilog of edge_walk, span
+#                   and triangle_setup changed at a time; the test command's tests must fail
 #
-# `scripts/soak.sh STEP...` runs only the steps named (tests, random, synth, pnr).
+# `scripts/soak.sh STEP...` runs only the steps named (tests, random, synth, pnr, mutate).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 steps=("$@")
-[[ ${#steps[@]} -gt 0 ]] || steps=(tests random synth pnr)
+[[ ${#steps[@]} -gt 0 ]] || steps=(tests random synth pnr mutate)
 want() { [[ " ${steps[*]} " =~ " $1 " ]]; }
 step() {
     local name=$1
@@ -92,4 +94,5 @@ pnr() {
         -o target/soak/report/raster_top-TEXTURE=1
 }
 want pnr && step "place and route of the default design" pnr
+want mutate && step "mutations of the emitted Verilog of edge_walk, span and triangle_setup" scripts/mutate.sh
 printf '\n== soak: all steps passed (%s)\n' "${steps[*]}"

@@ -29,28 +29,14 @@ took
 
 step "format"
 cargo fmt --all -- --check
+# The rtl crate's units are modules declared inside its size-class macro (crates/rtl/src/lib.rs),
+# which cargo fmt does not reach: rustfmt checks them by name.
+find crates/rtl/src -name '*.rs' -print0 | xargs -0 rustfmt --edition 2021 --check
 took
 
-# Clippy's lints come with the tests' build: clippy-driver compiles the workspace's crates
-# (rustc with clippy's lints; the dependencies are compiled by rustc) as
-# `cargo clippy --workspace --all-targets -- -D warnings` sets it up, so one build both
-# lints every target (libraries, binaries, tests, examples; there are no benches) and makes
-# the tests. A separate `cargo clippy` checked every dependency and crate a second time
-# (173 s of a clean clone). The variables stay set for `cargo test` below: they are part
-# of what Cargo compiled with.
 step "the tests' build, with clippy's lints (-D warnings)"
-clippy_driver=$(rustc --print sysroot)/bin/clippy-driver
-[[ -x $clippy_driver ]] || clippy_driver=$(command -v clippy-driver)
-export RUSTC_WORKSPACE_WRAPPER=$clippy_driver
-export CLIPPY_ARGS=-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__
-# No incremental compilation: a clean clone gains nothing from its caches, and without it
-# each crate is compiled in 16 code-generation units rather than 256 (less work repeated
-# across units at opt-level 3, and no cache written).
-export CARGO_INCREMENTAL=0
-# Without edgepaint's default features classes-11-12 and custom-formats: the copies of the
-# scanline units at size classes 11 and 12 and at rtl::custom's formats, most of the rtl
-# crate (the build's longest), are the soak's.
-features=(--no-default-features)
+# shellcheck source=scripts/test-build-env.sh
+source scripts/test-build-env.sh
 cargo test --workspace --locked "${features[@]}" --no-run
 took
 
