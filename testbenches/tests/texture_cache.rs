@@ -72,11 +72,11 @@ const OUTPUTS: [&str; 12] = [
     "out_data2",
     "out_data3",
     "out_side",
-    "mem_valid",
-    "mem_addr",
-    "hits",
-    "misses",
-    "fills",
+    "mem$valid",
+    "mem$addr",
+    "counters$hits",
+    "counters$misses",
+    "counters$fills",
 ];
 
 /// The model's value of output `pin`.
@@ -90,11 +90,11 @@ fn model_pin(o: &CacheOut, pin: &str) -> Value {
         "out_data2" => Value::new(32, o.out_data[2] as u128),
         "out_data3" => Value::new(32, o.out_data[3] as u128),
         "out_side" => Value::new(64, o.out_side as u128),
-        "mem_valid" => bit(o.mem_valid),
-        "mem_addr" => Value::new(ADDR, o.mem_addr as u128),
-        "hits" => Value::new(32, o.hits as u128),
-        "misses" => Value::new(32, o.misses as u128),
-        "fills" => Value::new(32, o.fills as u128),
+        "mem$valid" => bit(o.mem_valid),
+        "mem$addr" => Value::new(ADDR, o.mem_addr as u128),
+        "counters$hits" => Value::new(32, o.hits as u128),
+        "counters$misses" => Value::new(32, o.misses as u128),
+        "counters$fills" => Value::new(32, o.fills as u128),
         _ => unreachable!("{pin}"),
     }
 }
@@ -166,9 +166,9 @@ impl<U: Block + Pins + Default> Bench<U> {
             ("inp_side", Value::new(64, i.inp_side as u128)),
             ("inp_flush", bit(i.inp_flush)),
             ("out_ready", bit(i.out_ready)),
-            ("mem_ack", bit(m.ack)),
-            ("mem_rvalid", bit(m.rvalid)),
-            ("mem_rdata", Value::new(32, m.rdata as u128)),
+            ("mem$ack", bit(m.ack)),
+            ("mem$rvalid", bit(m.rvalid)),
+            ("mem$rdata", Value::new(32, m.rdata as u128)),
         ];
         let got = self.dual.cycle(&pins).map_err(|e| e.to_string())?;
         let o = self.model.step(i, m);

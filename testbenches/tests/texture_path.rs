@@ -242,8 +242,8 @@ fn texture_path_frames_of_the_shipped_textured_scenes_equal_the_models() {
                 };
                 out.push((pixel, got(&mut vl, "out$alpha") as u8, MODES[got(&mut vl, "out$mode") as usize]));
             }
-            mem.ask(now, &m, got(&mut vl, "mem_valid") == 1, got(&mut vl, "mem_addr"));
-            counters = ["hits", "misses", "fills"].map(|p| u64::from(got(&mut vl, p)));
+            mem.ask(now, &m, got(&mut vl, "mem$valid") == 1, got(&mut vl, "mem$addr"));
+            counters = ["counters$hits", "counters$misses", "counters$fills"].map(|p| u64::from(got(&mut vl, p)));
             vl.clock();
             now += 1;
         }

@@ -53,7 +53,7 @@ fn pins(i: &UnitIn, m: &MemIn) -> Vec<(&'static str, Value)> {
 
 /// The memory's answer on the `mem_*` pins.
 pub(crate) fn mem_pins(m: &MemIn) -> [(&'static str, Value); 3] {
-    [("mem_ack", bit(m.ack)), ("mem_rvalid", bit(m.rvalid)), ("mem_rdata", Value::new(32, m.rdata.into()))]
+    [("mem$ack", bit(m.ack)), ("mem$rvalid", bit(m.rvalid)), ("mem$rdata", Value::new(32, m.rdata.into()))]
 }
 
 /// The model's outputs compared every cycle (`out_rgba` and `out_tag` with `out_valid`).
@@ -68,11 +68,11 @@ fn every_cycle(o: &UnitOut) -> Vec<(&'static str, Value)> {
 pub(crate) fn request_pins(valid: bool, addr: u32, counters: [u32; 3]) -> [(&'static str, Value); 5] {
     let [hits, misses, fills] = counters.map(|c| Value::new(32, c.into()));
     [
-        ("mem_valid", bit(valid)),
-        ("mem_addr", Value::new(26, addr.into())),
-        ("hits", hits),
-        ("misses", misses),
-        ("fills", fills),
+        ("mem$valid", bit(valid)),
+        ("mem$addr", Value::new(26, addr.into())),
+        ("counters$hits", hits),
+        ("counters$misses", misses),
+        ("counters$fills", fills),
     ]
 }
 

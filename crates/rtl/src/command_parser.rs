@@ -33,6 +33,7 @@ use super::widths::{CLASS, FORMATS};
 use crate::emit::{emit_unit, Emitted};
 use crate::parts::defaults;
 use crate::Params;
+use blank::Blank;
 use model::vertex_buffer::{format_word, HEADER_BYTES, MAGIC, NO_TEXTURE, RECORD_BYTES, VERSION};
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::RAM;
@@ -80,7 +81,7 @@ pub enum BurstKind {
 /// `ok` = the 32-bit field `w` holds a word of an `N`-bit format, sign- or zero-extended
 /// (`vertex_buffer::unfield`): the bits from `shift` up (`N` - 1 for a signed format, `N`
 /// for an unsigned one) are 0, or, signed, all 1.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct FieldFits {
     pub w: Signal<In, Bits<32>>,
     pub ok: Signal<Out, Bit>,
@@ -99,13 +100,11 @@ impl FieldFits {
         assert!((1..=32).contains(&n), "a field of {n} bits");
         let shift = if signed { n - 1 } else { n };
         FieldFits {
-            w: Default::default(),
-            ok: Default::default(),
             shift: Constant::new((shift.min(31) as u64).to_bits()),
             ones: Constant::new(bits((u32::MAX >> shift.min(31)) as u64)),
             sign_ext: Constant::new(signed),
             every: Constant::new(shift == 32),
-            high: Default::default(),
+            ..FieldFits::blank()
         }
     }
 }
@@ -143,7 +142,7 @@ impl Logic for WordIs {
 /// The header's rules (`vertex_buffer::read_header` for this hardware, then the parser's
 /// own: its bytes from `base` stay below 2^32, its screen inside `max_width` x
 /// `max_height`): `fault` is the first broken rule's `Fault` code, 0 for none.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct HeaderCheck {
     /// The header's words.
     pub h: [Signal<In, Bits<32>>; WORDS],
@@ -151,9 +150,12 @@ pub struct HeaderCheck {
     pub max_width: Signal<In, Bits<16>>,
     pub max_height: Signal<In, Bits<16>>,
     pub fault: Signal<Out, Bits<4>>,
+    #[given]
     magic: WordIs,
+    #[given]
     size_class: WordIs,
     /// Words 10-20: the hardware's format words (`Formats::named` order).
+    #[given]
     formats: [WordIs; 11],
     version: Constant<Bits<16>>,
     /// The largest screen side: 2^CLASS, at most `scene::trilist::MAX_RESOLUTION`.
@@ -178,29 +180,19 @@ impl Default for HeaderCheck {
     fn default() -> Self {
         let side = (1u64 << CLASS).min(u64::from(scene::trilist::MAX_RESOLUTION));
         let named = FORMATS.named();
-        HeaderCheck {
-            h: defaults(),
-            base: Default::default(),
-            max_width: Default::default(),
-            max_height: Default::default(),
-            fault: Default::default(),
+        let given = HeaderCheckGiven {
             magic: WordIs::new(u32::from_le_bytes(MAGIC)),
             size_class: WordIs::new(CLASS),
             formats: std::array::from_fn(|i| WordIs::new(format_word(named[i].1))),
+        };
+        HeaderCheck {
+            h: defaults(),
             version: Constant::new(bits(u64::from(VERSION))),
             side: Constant::new(bits(side)),
             header_bytes: Constant::new(bits(HEADER_BYTES as u64)),
             five: Constant::new(bits(5)),
             two_32: Constant::new(bits(1 << 32)),
-            width: Default::default(),
-            height: Default::default(),
-            build_bad: Default::default(),
-            index_at: Default::default(),
-            index_end: Default::default(),
-            vertex_at: Default::default(),
-            vertex_end: Default::default(),
-            length: Default::default(),
-            layout_bad: Default::default(),
+            ..HeaderCheck::blank(given)
         }
     }
 }
@@ -283,7 +275,7 @@ impl Logic for HeaderCheck {
 /// An index record's rules (`vertex_buffer::read_index_record`) for triangle `t` of a
 /// buffer of `triangles` and `vertices`: `fault` is the first broken rule's code, 0 for
 /// none.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct IndexCheck {
     /// The record's words.
     pub r: [Signal<In, Bits<32>>; RECORD],
@@ -292,6 +284,7 @@ pub struct IndexCheck {
     pub vertices: Signal<In, Bits<32>>,
     pub fault: Signal<Out, Bits<4>>,
     /// Each `inv_w` word: a non-negative word of the format (`INV_W` bits, less the sign).
+    #[given]
     iw: [FieldFits; 3],
     no_texture: Constant<Bits<16>>,
     /// 1 in the `inv_w` format.
@@ -306,20 +299,12 @@ pub struct IndexCheck {
 impl Default for IndexCheck {
     fn default() -> Self {
         let f = FORMATS.inv_w;
+        let given = IndexCheckGiven { iw: std::array::from_fn(|_| FieldFits::new(INV_W - f.signed as usize, false)) };
         IndexCheck {
             r: defaults(),
-            t: Default::default(),
-            triangles: Default::default(),
-            vertices: Default::default(),
-            fault: Default::default(),
-            iw: std::array::from_fn(|_| FieldFits::new(INV_W - f.signed as usize, false)),
             no_texture: Constant::new(bits(u64::from(NO_TEXTURE))),
             one: Constant::new(bits(1 << f.frac)),
-            last: Default::default(),
-            eob: Default::default(),
-            eof: Default::default(),
-            ti_bad: Default::default(),
-            iw_bad: Default::default(),
+            ..IndexCheck::blank(given)
         }
     }
 }
@@ -371,12 +356,13 @@ impl Logic for IndexCheck {
 
 /// A vertex record's rules (`vertex_buffer::read_vertex_record`): `fault` is the first
 /// broken rule's code, 0 for none.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct VertexCheck {
     /// The record's words.
     pub r: [Signal<In, Bits<32>>; RECORD],
     pub fault: Signal<Out, Bits<4>>,
     /// Words 0-5 in their formats: x, y (`xy`), z, R, G, B (`color`).
+    #[given]
     fits: [FieldFits; 6],
 }
 
@@ -385,11 +371,8 @@ impl Default for VertexCheck {
         let f = &FORMATS;
         let fmt = [f.xy, f.xy, f.z, f.color, f.color, f.color];
         let width = [XY, XY, Z, COLOR, COLOR, COLOR];
-        VertexCheck {
-            r: defaults(),
-            fault: Default::default(),
-            fits: std::array::from_fn(|i| FieldFits::new(width[i], fmt[i].signed)),
-        }
+        let given = VertexCheckGiven { fits: std::array::from_fn(|i| FieldFits::new(width[i], fmt[i].signed)) };
+        VertexCheck { r: defaults(), ..VertexCheck::blank(given) }
     }
 }
 
@@ -419,7 +402,7 @@ impl Logic for VertexCheck {
 /// The command parser with a vertex cache of `2^CB` entries, `G` = 2^CB / 16 registers of
 /// their valid flags (see the module's documentation; `model::command_parser::CommandParser`
 /// with `beat_bytes` 8 and `cache` 2^CB).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct CommandParser<const CB: usize, const G: usize> {
     pub clock: Signal<In, Clock>,
     /// Start reading the buffer at `address` (taken in INIT and Error).
@@ -559,72 +542,13 @@ impl<const CB: usize, const G: usize> CommandParser<CB, G> {
         );
         let shift = |n: usize| Constant::new(bits(n as u64));
         CommandParser {
-            clock: Default::default(),
-            start: Default::default(),
-            address: Default::default(),
-            max_width: Default::default(),
-            max_height: Default::default(),
-            bus: Default::default(),
-            out: Default::default(),
-            render_valid: Default::default(),
-            width: Default::default(),
-            height: Default::default(),
-            cull_back: Default::default(),
-            background: Default::default(),
-            state: Default::default(),
-            fault: Default::default(),
-            frame_done: Default::default(),
-            buffer_done: Default::default(),
-            st: Default::default(),
-            fault_r: Default::default(),
-            base: Default::default(),
-            render_r: Default::default(),
-            width_r: Default::default(),
-            height_r: Default::default(),
-            cull_r: Default::default(),
-            background_r: Default::default(),
-            triangles: Default::default(),
-            vertices: Default::default(),
-            index_addr: Default::default(),
-            vertex_base: Default::default(),
-            ar_valid: Default::default(),
-            ar_addr: Default::default(),
-            ar_len: Default::default(),
-            burst: Default::default(),
-            kind: Default::default(),
-            beat: Default::default(),
-            complete: Default::default(),
-            bus_error: Default::default(),
             w: defaults(),
-            t: Default::default(),
             rec_v: defaults(),
             rec_iw: defaults(),
-            rec_eob: Default::default(),
-            rec_eof: Default::default(),
-            ahead_valid: Default::default(),
-            ahead_fault: Default::default(),
-            ahead_v: Default::default(),
-            ahead_iw: Default::default(),
-            ahead_eob: Default::default(),
-            ahead_eof: Default::default(),
-            k: Default::default(),
             asm: defaults(),
             valid: defaults(),
-            tag_ram: Default::default(),
-            vtx_ram: Default::default(),
-            byp_valid: Default::default(),
-            byp_tag: Default::default(),
-            byp_vtx: Default::default(),
-            out_valid: Default::default(),
             out_vtx: defaults(),
             out_iw: defaults(),
-            out_eob: Default::default(),
-            out_eof: Default::default(),
-            frame_r: Default::default(),
-            buffer_r: Default::default(),
-            header_check: Default::default(),
-            index_check: Default::default(),
-            vertex_check: Default::default(),
             five: shift(5),
             four: shift(4),
             at_y: shift(XY),
@@ -632,33 +556,8 @@ impl<const CB: usize, const G: usize> CommandParser<CB, G> {
             at_c0: shift(2 * XY + Z),
             at_c1: shift(2 * XY + Z + COLOR),
             at_c2: shift(2 * XY + Z + 2 * COLOR),
-            out_free: Default::default(),
-            beat_in: Default::default(),
-            last_beat: Default::default(),
-            go: Default::default(),
-            check: Default::default(),
-            look: Default::default(),
-            hand: Default::default(),
-            vertex_in: Default::default(),
-            load_rec: Default::default(),
-            is_ahead: Default::default(),
-            load_ahead: Default::default(),
-            ask: Default::default(),
-            ask_addr: Default::default(),
-            ask_kind: Default::default(),
-            kn: Default::default(),
-            v_cur: Default::default(),
-            slot: Default::default(),
-            group: Default::default(),
-            lane: Default::default(),
-            held: Default::default(),
-            tag: Default::default(),
-            vtx: Default::default(),
-            hit: Default::default(),
-            fetched: Default::default(),
-            cur: Default::default(),
             rvn: defaults(),
-            v_next: Default::default(),
+            ..CommandParser::blank()
         }
     }
 }
@@ -822,9 +721,8 @@ impl<const CB: usize, const G: usize> Logic for CommandParser<CB, G> {
         if self.ar_valid.q.val() & self.bus.ar_ready.val() {
             self.ar_valid.d.next = false;
         }
-        self.beat_in.next = self.burst.q.val()
-            & self.bus.r_valid.val()
-            & !(self.ar_valid.q.val() & !self.bus.ar_ready.val());
+        self.beat_in.next =
+            self.burst.q.val() & self.bus.r_valid.val() & !(self.ar_valid.q.val() & !self.bus.ar_ready.val());
         self.last_beat.next = 1.into();
         if self.kind.q.val() == BurstKind::Header {
             self.last_beat.next = 5.into();

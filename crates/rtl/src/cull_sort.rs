@@ -33,13 +33,14 @@
 //! Model: `model::cull_sort::cull_sort`; its timing `model::cycles::scanline_frame`.
 //! Emitted: `hdl-out/cull_sort.v`.
 
+use super::links::{SortedSource, TriangleSink, Verdict};
+use super::widths::{DIM, FORMATS, WIDTHS};
 use crate::emit::{emit_unit, Emitted};
 use crate::mul::Mul;
 use crate::parts::SignExtend;
 use crate::switch::{Parts, Switch};
-use super::links::{SortedSource, TriangleSink, Verdict};
-use super::widths::{DIM, FORMATS, WIDTHS};
 use crate::Params;
+use blank::Blank;
 use rust_hdl::prelude::*;
 
 /// Vertex x, y (`xy`), z (`z`), R, G, B (`color`) and w_min / w (`inv_w`), as they enter
@@ -79,7 +80,7 @@ pub mod verdict {
 }
 
 /// The cull & sort unit; see the module documentation.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct CullSort {
     pub clock: Signal<In, Clock>,
     /// Screen size in pixels, 1 to 2^CLASS (the size class): the clip volume is [0, width] x [0, height].
@@ -203,78 +204,6 @@ pub struct CullSort {
 impl Default for CullSort {
     fn default() -> Self {
         Self {
-            clock: Default::default(),
-            width: Default::default(),
-            height: Default::default(),
-            cull_back: Default::default(),
-            inp: Default::default(),
-            out: Default::default(),
-            verdict: Default::default(),
-            idle: Default::default(),
-            vx: Default::default(),
-            vy: Default::default(),
-            vz: Default::default(),
-            vc: Default::default(),
-            viw: Default::default(),
-            oc: Default::default(),
-            left: Default::default(),
-            right_of: Default::default(),
-            top: Default::default(),
-            below: Default::default(),
-            near: Default::default(),
-            far: Default::default(),
-            right: Default::default(),
-            bottom: Default::default(),
-            wx: Default::default(),
-            wy: Default::default(),
-            key: Default::default(),
-            le01: Default::default(),
-            le12: Default::default(),
-            le02: Default::default(),
-            gt01: Default::default(),
-            gt12: Default::default(),
-            gt02: Default::default(),
-            rank: Default::default(),
-            s1x: Default::default(),
-            s1y: Default::default(),
-            s1z: Default::default(),
-            s1c: Default::default(),
-            s1iw: Default::default(),
-            e1x: Default::default(),
-            e2y: Default::default(),
-            e2x: Default::default(),
-            e1y: Default::default(),
-            outside1: Default::default(),
-            crosses1: Default::default(),
-            back1: Default::default(),
-            full1: Default::default(),
-            s2x: Default::default(),
-            s2y: Default::default(),
-            s2z: Default::default(),
-            s2c: Default::default(),
-            s2iw: Default::default(),
-            area_mul: Default::default(),
-            prod0: Default::default(),
-            prod1: Default::default(),
-            outside2: Default::default(),
-            crosses2: Default::default(),
-            back2: Default::default(),
-            full2: Default::default(),
-            area: Default::default(),
-            code: Default::default(),
-            take: Default::default(),
-            move1: Default::default(),
-            move2: Default::default(),
-            leave: Default::default(),
-            sx: Default::default(),
-            sy: Default::default(),
-            sz: Default::default(),
-            sc: Default::default(),
-            siw: Default::default(),
-            crosses: Default::default(),
-            code_r: Default::default(),
-            outside_r: Default::default(),
-            full: Default::default(),
             z_max: Constant::new(((1u64 << FORMATS.z.frac) - 1).to_bits()),
             half: Constant::new((1u64 << (XY - 1)).to_bits()),
             xy_msb: Constant::new((XY - 1).to_bits()),
@@ -285,7 +214,7 @@ impl Default for CullSort {
             outside: Constant::new(verdict::OUTSIDE.to_bits()),
             back_face: Constant::new(verdict::BACK_FACE.to_bits()),
             zero_area: Constant::new(verdict::ZERO_AREA.to_bits()),
-            cull: Default::default(),
+            ..Self::blank()
         }
     }
 }
@@ -526,9 +455,7 @@ impl Logic for CullSort {
 
 crate::pins!(CullSort {
     clock: clock,
-    inputs: [
-        width, height, cull_back,
-    ],
+    inputs: [width, height, cull_back,],
     outputs: [idle],
     links: [out, inp, verdict],
 });

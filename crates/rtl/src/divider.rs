@@ -32,12 +32,13 @@
 //! Model: `model::divider`. Emitted: `hdl-out/divider.v` at the widths of
 //! `Formats::derived` (`div_dividend_bits`, `div_divisor_bits`, `div_quotient_bits`).
 
+use super::widths::WIDTHS;
 use crate::emit::{ports, verilog, Emitted};
 use crate::sim::{PinValue, Pins, Value};
-use super::widths::WIDTHS;
 use crate::Params;
 /// The deepest divider built (`model::divider::LATENCY_MAX`).
 pub const LATENCY_MAX: usize = model::divider::LATENCY_MAX as usize;
+use blank::Blank;
 use rust_hdl::prelude::*;
 
 /// Dividend bits of the emitted divider (`div_dividend_bits`).
@@ -56,7 +57,7 @@ pub type DividerRtl = Divider<DIV_N, DIV_D, { DIV_D + 1 }, DIV_Q, DIV_QM>;
 /// dividend/quotient bits `x`, then a register for each (held while `enable` is low).
 /// `D1` = `D + 1`: a step's `2p + 1` and its difference with `d` (stable Rust cannot
 /// write `D + 1` as a width).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct DivStage<const D: usize, const D1: usize, const QM: usize> {
     pub clock: Signal<In, Clock>,
     /// Advance the pipeline this cycle.
@@ -98,32 +99,15 @@ impl<const D: usize, const D1: usize, const QM: usize> DivStage<D, D1, QM> {
     fn new(steps: usize, fin: bool) -> Self {
         assert_eq!(D1, D + 1, "DivStage: D1 is D + 1");
         Self {
-            clock: Default::default(),
-            enable: Default::default(),
-            valid_in: Default::default(),
-            p_in: Default::default(),
-            x_in: Default::default(),
-            d_in: Default::default(),
-            neg_in: Default::default(),
-            valid: Default::default(),
-            p: Default::default(),
-            x: Default::default(),
-            d: Default::default(),
-            neg: Default::default(),
-            valid_r: Default::default(),
-            p_r: Default::default(),
-            x_r: Default::default(),
-            d_r: Default::default(),
-            neg_r: Default::default(),
             tp: (0..=steps).map(|_| Default::default()).collect(),
             tx: (0..=steps).map(|_| Default::default()).collect(),
             t: (0..steps).map(|_| Default::default()).collect(),
             diff: (0..steps).map(|_| Default::default()).collect(),
-            d1: Default::default(),
             borrow: Constant::new(D.to_bits()),
             x_msb: Constant::new((QM - 1).to_bits()),
             fin: Constant::new(fin),
             _steps: steps,
+            ..Self::blank()
         }
     }
 }
@@ -174,7 +158,7 @@ impl<const D: usize, const D1: usize, const QM: usize> Logic for DivStage<D, D1,
 /// The pipelined floor divider: `N`-bit signed dividend, `D`-bit divisor and remainder,
 /// `Q`-bit signed quotient (`QM = Q - 1` steps; `D1 = D + 1`). See the module
 /// documentation.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Divider<const N: usize, const D: usize, const D1: usize, const Q: usize, const QM: usize> {
     pub clock: Signal<In, Clock>,
     pub inp_valid: Signal<In, Bit>,
@@ -217,28 +201,15 @@ impl<const N: usize, const D: usize, const D1: usize, const Q: usize, const QM: 
             (1..=LATENCY_MAX).contains(&latency),
             "divider latency {latency} must be 1 to {LATENCY_MAX} (past {QM}, stages without steps)"
         );
-        let stages = (0..latency)
-            .map(|s| DivStage::new((s + 1) * QM / latency - s * QM / latency, s + 1 == latency))
-            .collect();
+        let stages =
+            (0..latency).map(|s| DivStage::new((s + 1) * QM / latency - s * QM / latency, s + 1 == latency)).collect();
         Self {
-            clock: Default::default(),
-            inp_valid: Default::default(),
-            inp_ready: Default::default(),
-            hold: Default::default(),
-            inp_n: Default::default(),
-            inp_d: Default::default(),
-            out_valid: Default::default(),
-            out_ready: Default::default(),
-            out_q: Default::default(),
-            out_r: Default::default(),
             stages,
-            advance: Default::default(),
-            m: Default::default(),
-            last_x: Default::default(),
             n_msb: Constant::new((N - 1).to_bits()),
             qm: Constant::new(QM.to_bits()),
             q_sign: Constant::new((1u128 << QM).to_bits()),
             _latency: latency,
+            ..Self::blank()
         }
     }
 
@@ -327,7 +298,14 @@ pub fn emit<const N: usize, const D: usize, const D1: usize, const Q: usize, con
 ) -> Emitted {
     let mut u = Divider::<N, D, D1, Q, QM>::new(latency);
     u.connect_all();
-    Emitted { unit: "divider", params: params.clone(), formats: None, ports: ports(&u), verilog: verilog("divider", &u), dir: None }
+    Emitted {
+        unit: "divider",
+        params: params.clone(),
+        formats: None,
+        ports: ports(&u),
+        verilog: verilog("divider", &u),
+        dir: None,
+    }
 }
 
 /// `UNITS` entry: the divider at the RTL's widths with `params["L"]` stages.

@@ -62,11 +62,11 @@
 //! cycle after the last scanline is presented and taken. Model:
 //! `model::edge_walk::edge_walk`. Emitted: `hdl-out/edge_walk.v`.
 
+use super::links::{SpanCmdSource, TriangleSetupSink};
+use super::widths::{C_ACC, DC, DIM, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
 use crate::emit::{emit_unit, Emitted};
 use crate::parts::{Negative, SignedLess};
 use crate::switch::{Parts, Switch};
-use super::links::{SpanCmdSource, TriangleSetupSink};
-use super::widths::{C_ACC, DC, DIM, DZ, EDGE_D, EDGE_Q, PIXEL, SCREEN, Z_ACC};
 use crate::Params;
 use rust_hdl::prelude::*;
 
@@ -164,9 +164,8 @@ impl Logic for EdgeStart {
         self.nr.next = !self.r_w.val();
         self.nrho.next = !self.rho_w.val();
         self.sum.next = self.d_w.val() ^ self.nr.val() ^ self.nrho.val();
-        self.carry.next = (self.d_w.val() & self.nr.val())
-            | (self.d_w.val() & self.nrho.val())
-            | (self.nr.val() & self.nrho.val());
+        self.carry.next =
+            (self.d_w.val() & self.nr.val()) | (self.d_w.val() & self.nrho.val()) | (self.nr.val() & self.nrho.val());
         self.t.next = self.r_w.val() - self.rho_w.val();
         if self.up.val() {
             self.t.next = self.sum.val() + ((self.carry.val() << 1) | 1);
@@ -715,16 +714,7 @@ impl Logic for EdgeWalk {
     }
 }
 
-crate::pins!(EdgeWalk {
-    clock: clock,
-    inputs: [
-        height, hold,
-    ],
-    outputs: [
-        idle,
-    ],
-    links: [inp, out],
-});
+crate::pins!(EdgeWalk { clock: clock, inputs: [height, hold,], outputs: [idle,], links: [inp, out] });
 
 impl EdgeWalk {
     /// The edge walk with Y clipping present or not (`parts.clip_y`).

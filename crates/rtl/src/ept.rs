@@ -26,6 +26,7 @@
 use crate::emit::{emit, Emitted};
 use crate::sim::{Pins, Value};
 use crate::Params;
+use blank::Blank;
 use rust_hdl::prelude::*;
 
 /// The processing element of paper 002, Fig. 3.
@@ -179,7 +180,7 @@ macro_rules! ept_size {
     ($top:ident, $tree:ident, $child:ident, $n:tt, $half:tt, $b:tt, $k:tt, $kc:tt) => {
         #[doc = concat!("A subtree of the EPT over ", stringify!($n), " pixels (paper 002, Fig. 4): \
             one PE (Fig. 3) over two ", stringify!($half), "-pixel subtrees.")]
-        #[derive(LogicBlock)]
+        #[derive(LogicBlock, Blank)]
         pub struct $tree {
             /// LI for this subtree's PE, routed by its parent.
             pub li: Signal<In, Bit>,
@@ -205,18 +206,7 @@ macro_rules! ept_size {
 
         impl Default for $tree {
             fn default() -> Self {
-                Self {
-                    li: Default::default(),
-                    ri: Default::default(),
-                    lcs: Default::default(),
-                    rcs: Default::default(),
-                    xl: Default::default(),
-                    xr: Default::default(),
-                    px: Default::default(),
-                    pe: Default::default(),
-                    left: vec![$child::default()],
-                    right: vec![$child::default()],
-                }
+                Self { left: vec![$child::default()], right: vec![$child::default()], ..Self::blank() }
             }
         }
 

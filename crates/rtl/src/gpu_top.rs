@@ -200,8 +200,7 @@ impl Logic for GpuTop {
         self.regs.triangles.next = self.triangles.q.val();
         self.status.next = 0.into();
         self.status.next = self.status.val().replace_bit(0, self.busy.q.val());
-        self.status.next =
-            self.status.val().replace_bit(1, self.parser.fault.val().any() | self.pixel_bus.error.val());
+        self.status.next = self.status.val().replace_bit(1, self.parser.fault.val().any() | self.pixel_bus.error.val());
         for k in 0..4 {
             self.status.next = self.status.val().replace_bit(4 + k, self.parser.fault.val().get_bit(k));
         }
@@ -213,12 +212,7 @@ impl Logic for GpuTop {
     }
 }
 
-crate::pins!(GpuTop {
-    clock: clock,
-    inputs: [],
-    outputs: [irq],
-    links: [host, vb, zr, zw, cw],
-});
+crate::pins!(GpuTop { clock: clock, inputs: [], outputs: [irq], links: [host, vb, zr, zw, cw] });
 
 /// `UNITS` entry: the core with `params["K"]` setup multipliers and a `params["L"]`-stage
 /// divider, every optional part of the rasterizer present.

@@ -7,6 +7,7 @@
 //! [`Negative`] and [`SignedLess`]. Width-derived numbers (a sign bit's weight, a shift)
 //! are `Constant`s here, because an `#[hdl_gen]` kernel cannot name a Rust constant.
 
+use blank::Blank;
 use rust_hdl::prelude::*;
 
 /// `N` default values: an array of signals, registers or blocks as a unit starts.
@@ -38,7 +39,7 @@ impl<const N: usize> Logic for Negative<N> {
 
 /// `lt` = `a < b`, for `N`-bit two's complement `a` and `b` (flipping both sign bits
 /// turns the signed order into the unsigned one).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct SignedLess<const N: usize> {
     pub a: Signal<In, Bits<N>>,
     pub b: Signal<In, Bits<N>>,
@@ -49,12 +50,7 @@ pub struct SignedLess<const N: usize> {
 
 impl<const N: usize> Default for SignedLess<N> {
     fn default() -> Self {
-        SignedLess {
-            a: Default::default(),
-            b: Default::default(),
-            lt: Default::default(),
-            half: Constant::new(bits(1 << (N - 1))),
-        }
+        SignedLess { half: Constant::new(bits(1 << (N - 1))), ..SignedLess::blank() }
     }
 }
 
@@ -69,7 +65,7 @@ impl<const N: usize> Logic for SignedLess<N> {
 /// `x`: `r = floor((x + 2^(S-1)) / 2^S)`, computed in `EXT = IN + 1` bits so that nothing
 /// wraps (`fx::shr_half_up`). Outputs `neg` (r < 0), `over` (r >= 2^OUT) and the low `OUT`
 /// bits of r, which are r itself when neither is set.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct RoundShift<const IN: usize, const EXT: usize, const OUT: usize, const S: usize> {
     pub x: Signal<In, Bits<IN>>,
     pub neg: Signal<Out, Bit>,
@@ -92,18 +88,11 @@ impl<const IN: usize, const EXT: usize, const OUT: usize, const S: usize> Defaul
     fn default() -> Self {
         assert!(EXT == IN + 1 && S >= 1 && S + OUT < EXT && S < 256, "RoundShift<{IN}, {EXT}, {OUT}, {S}>");
         RoundShift {
-            x: Default::default(),
-            neg: Default::default(),
-            over: Default::default(),
-            low: Default::default(),
-            x_neg: Default::default(),
             top: Constant::new(bits(1 << IN)),
             half: Constant::new(bits(1 << (S - 1))),
             shift: Constant::new(bits(S as u64)),
             limit: Constant::new(bits(1 << OUT)),
-            ext: Default::default(),
-            sum: Default::default(),
-            shifted: Default::default(),
+            ..RoundShift::blank()
         }
     }
 }
@@ -125,7 +114,7 @@ impl<const IN: usize, const EXT: usize, const OUT: usize, const S: usize> Logic 
 }
 
 /// `out` = `{hi, lo}`: `hi` above the `LO` bits of `lo`, `W = HI + LO` bits.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Concat<const HI: usize, const LO: usize, const W: usize> {
     pub hi: Signal<In, Bits<HI>>,
     pub lo: Signal<In, Bits<LO>>,
@@ -136,12 +125,7 @@ pub struct Concat<const HI: usize, const LO: usize, const W: usize> {
 impl<const HI: usize, const LO: usize, const W: usize> Default for Concat<HI, LO, W> {
     fn default() -> Self {
         assert!(W == HI + LO && LO < 256, "Concat<{HI}, {LO}, {W}>");
-        Concat {
-            hi: Default::default(),
-            lo: Default::default(),
-            out: Default::default(),
-            shift: Constant::new(bits(LO as u64)),
-        }
+        Concat { shift: Constant::new(bits(LO as u64)), ..Concat::blank() }
     }
 }
 
@@ -154,7 +138,7 @@ impl<const HI: usize, const LO: usize, const W: usize> Logic for Concat<HI, LO, 
 
 /// `y` = `x` sign-extended from `IN` to `OUT` bits (`OUT > IN`): a kernel cannot `bit_cast`
 /// an array element indexed by a loop's variable, so an array of these does it.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct SignExtend<const IN: usize, const OUT: usize> {
     pub x: Signal<In, Bits<IN>>,
     pub y: Signal<Out, Bits<OUT>>,
@@ -167,10 +151,9 @@ impl<const IN: usize, const OUT: usize> Default for SignExtend<IN, OUT> {
     fn default() -> Self {
         assert!(IN < OUT, "SignExtend<{IN}, {OUT}>: widens");
         SignExtend {
-            x: Default::default(),
-            y: Default::default(),
             msb: Constant::new((IN - 1).to_bits()),
             ext: Constant::new(!Bits::<OUT>::default() << (IN as u64)),
+            ..SignExtend::blank()
         }
     }
 }
@@ -187,7 +170,7 @@ impl<const IN: usize, const OUT: usize> Logic for SignExtend<IN, OUT> {
 
 /// `q` = `d` of `n` enabled cycles before (`en` high: every stage moves on; low: all hold):
 /// a shift register of `n` `W`-bit stages, `n` >= 1 (`DelayLine::new`).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct DelayLine<const W: usize> {
     pub clock: Signal<In, Clock>,
     pub en: Signal<In, Bit>,
@@ -200,14 +183,7 @@ pub struct DelayLine<const W: usize> {
 impl<const W: usize> DelayLine<W> {
     pub fn new(n: usize) -> Self {
         assert!(n >= 1, "DelayLine of {n} stages");
-        DelayLine {
-            clock: Default::default(),
-            en: Default::default(),
-            d: Default::default(),
-            q: Default::default(),
-            stages: (0..n).map(|_| Default::default()).collect(),
-            _n: n,
-        }
+        DelayLine { stages: (0..n).map(|_| Default::default()).collect(), _n: n, ..DelayLine::blank() }
     }
 }
 

@@ -384,10 +384,7 @@ impl Logic for PixelBus {
             if self.retire.val() & (self.h_i.val().index() == i) {
                 self.e_live[i].d.next = false;
             }
-            if self.zr.r_valid.val()
-                & (self.tested.q.val() != self.tail.q.val())
-                & (self.t_i.val().index() == i)
-            {
+            if self.zr.r_valid.val() & (self.tested.q.val() != self.tail.q.val()) & (self.t_i.val().index() == i) {
                 self.e_pass[i].d.next = (self.zr.r_resp.val() == 0) & (self.t_z.val() < self.old_z.val());
             }
             if self.enter.val() & (self.tail_i.val().index() == i) {
@@ -489,17 +486,7 @@ impl Logic for PixelBus {
 
 crate::pins!(PixelBus {
     clock: clock,
-    inputs: [
-        start,
-        clear,
-        width,
-        height,
-        background,
-        color_base,
-        color_pitch,
-        depth_base,
-        depth_pitch
-    ],
+    inputs: [start, clear, width, height, background, color_base, color_pitch, depth_base, depth_pitch],
     outputs: [idle, error],
     links: [inp, zr, zw, cw],
 });

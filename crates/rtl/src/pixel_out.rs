@@ -65,17 +65,18 @@
 //! --param BLEND=1` (linted by `scripts/lint.sh`). With `BLEND` = 0 the unit and its Verilog
 //! are as they were: the colour path is a list of none ([`ChunkOut::new`]).
 
+use super::links::{BlendMemoryPort, BlendPixelSink, ChunkPort, MemoryPort, PixelSink};
+use super::widths::{ADDR, CHANNEL, DEPTH, RGB, SCREEN};
 use crate::blend::BlendChannel;
 use crate::emit::{emit_unit, Emitted};
 use crate::parts::Concat;
 use crate::switch::{Parts, Switch};
-use super::links::{BlendMemoryPort, BlendPixelSink, ChunkPort, MemoryPort, PixelSink};
-use super::widths::{ADDR, CHANNEL, DEPTH, RGB, SCREEN};
 use crate::Params;
+use blank::Blank;
 use rust_hdl::prelude::*;
 
 /// The pixel output unit at one lane, behind the pixel link: see the module documentation.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct PixelOut {
     pub clock: Signal<In, Clock>,
     /// The pixels; `inp.ready` is `mem.ready`: a pixel is taken whenever the memory is.
@@ -85,6 +86,7 @@ pub struct PixelOut {
     /// No pixel in the pipeline (for `raster_top`'s frame-done): empty 3 cycles after the
     /// last pixel came in, whether it was written or not.
     pub idle: Signal<Out, Bit>,
+    #[given]
     chunk: ChunkOut<1, ADDR, DEPTH, RGB>,
     /// `{y, x}` and `{R, G, B}` of the pixel coming in.
     addr: Concat<SCREEN, SCREEN, ADDR>,
@@ -142,27 +144,12 @@ crate::pins!(impl[const LANES: usize, const AW: usize, const ZW: usize, const CW
     links: [mem],
 });
 
-crate::pins!(PixelOut {
-    clock: clock,
-    inputs: [],
-    outputs: [idle],
-    links: [inp, mem],
-});
+crate::pins!(PixelOut { clock: clock, inputs: [], outputs: [idle], links: [inp, mem] });
 
 impl PixelOut {
     /// The pixel output unit with the depth test present or not (`parts.depth_test`).
     pub fn new(parts: &Parts) -> PixelOut {
-        PixelOut {
-            clock: Default::default(),
-            inp: Default::default(),
-            mem: Default::default(),
-            idle: Default::default(),
-            chunk: ChunkOut::new(parts),
-            addr: Default::default(),
-            rg: Default::default(),
-            rgb: Default::default(),
-            one: Constant::new(1.into()),
-        }
+        PixelOut { one: Constant::new(1.into()), ..PixelOut::blank(PixelOutGiven { chunk: ChunkOut::new(parts) }) }
     }
 }
 
@@ -176,7 +163,7 @@ impl Default for PixelOut {
 /// The blending pixel output unit (`BLEND` = 1) at one lane: [`PixelOut`] with each pixel's
 /// alpha and blend mode on its link and the colour read with the depth: see the module
 /// documentation.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct PixelOutBlend {
     pub clock: Signal<In, Clock>,
     /// The pixels; `inp.ready` is `mem.ready`.
@@ -185,6 +172,7 @@ pub struct PixelOutBlend {
     pub mem: BlendMemoryPort,
     /// No pixel in the pipeline, as [`PixelOut`]'s.
     pub idle: Signal<Out, Bit>,
+    #[given]
     chunk: ChunkOut<1, ADDR, DEPTH, RGB>,
     /// `{y, x}` and `{R, G, B}` of the pixel coming in.
     addr: Concat<SCREEN, SCREEN, ADDR>,
@@ -215,27 +203,15 @@ one_lane_kernel! {
     }
 }
 
-crate::pins!(PixelOutBlend {
-    clock: clock,
-    inputs: [],
-    outputs: [idle],
-    links: [inp, mem],
-});
+crate::pins!(PixelOutBlend { clock: clock, inputs: [], outputs: [idle], links: [inp, mem] });
 
 impl PixelOutBlend {
     /// The blending unit with the depth test present or not (`parts.depth_test`; without
     /// it every pixel is written, blended).
     pub fn new(parts: &Parts) -> PixelOutBlend {
         PixelOutBlend {
-            clock: Default::default(),
-            inp: Default::default(),
-            mem: Default::default(),
-            idle: Default::default(),
-            chunk: ChunkOut::blending(parts),
-            addr: Default::default(),
-            rg: Default::default(),
-            rgb: Default::default(),
             one: Constant::new(1.into()),
+            ..PixelOutBlend::blank(PixelOutBlendGiven { chunk: ChunkOut::blending(parts) })
         }
     }
 }
@@ -249,7 +225,7 @@ impl Default for PixelOutBlend {
 
 /// The pixel output unit for chunks of `LANES` pixels (`AW` address bits, `ZW` = `LANES`
 /// x `DEPTH`, `CW` = `LANES` x `RGB`): see the module documentation.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct ChunkOut<const LANES: usize, const AW: usize, const ZW: usize, const CW: usize> {
     pub clock: Signal<In, Clock>,
     /// A chunk in: its lanes with a pixel (`in_mask`), its address, the lanes' depths and
@@ -320,38 +296,15 @@ impl<const LANES: usize, const AW: usize, const ZW: usize, const CW: usize> Chun
     fn with_blend(parts: &Parts, blend: usize) -> Self {
         assert!(ZW == LANES * DEPTH && CW == LANES * RGB, "ChunkOut<{LANES}, {AW}, {ZW}, {CW}>");
         ChunkOut {
-            clock: Default::default(),
-            in_valid: Default::default(),
-            in_ready: Default::default(),
-            in_mask: Default::default(),
-            in_addr: Default::default(),
-            in_z: Default::default(),
-            in_rgb: Default::default(),
             in_alpha: (0..blend).map(|_| Default::default()).collect(),
             in_mode: (0..blend).map(|_| Default::default()).collect(),
             rd_rgb: (0..blend).map(|_| Default::default()).collect(),
-            mem: Default::default(),
-            idle: Default::default(),
             depth_test: Switch::new(parts.depth_test),
-            s1_valid: Default::default(),
-            s1_mask: Default::default(),
-            s1_addr: Default::default(),
-            s1_z: Default::default(),
-            s1_rgb: Default::default(),
-            s2_valid: Default::default(),
-            s2_write: Default::default(),
-            s2_addr: Default::default(),
-            s2_z: Default::default(),
-            s2_rgb: Default::default(),
-            s3_write: Default::default(),
-            s3_z: Default::default(),
-            hit2: Default::default(),
-            hit3: Default::default(),
             lanes: (0..LANES).map(LaneTest::new).collect(),
             g_pass: (0..=LANES).map(|_| Default::default()).collect(),
-            pass: Default::default(),
             blend: (0..blend).map(|_| Default::default()).collect(),
             _blend: blend,
+            ..ChunkOut::blank()
         }
     }
 }
@@ -360,8 +313,8 @@ impl<const LANES: usize, const AW: usize, const ZW: usize, const CW: usize> Logi
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, s1_valid, s1_mask, s1_addr, s1_z, s1_rgb, s2_valid, s2_write, s2_addr, s2_z, s2_rgb,
-            s3_write, s3_z, hit2, hit3
+            self, clock, s1_valid, s1_mask, s1_addr, s1_z, s1_rgb, s2_valid, s2_write, s2_addr, s2_z, s2_rgb, s3_write,
+            s3_z, hit2, hit3
         );
 
         // Cycle t: the chunk comes in and its lanes' depths are read.
@@ -512,7 +465,7 @@ impl<const CW: usize> Logic for BlendLane<CW> {
 /// newest depth of its pixel (s2's if s2 writes this lane of the same chunk, else s3's
 /// likewise, else the one read), and `pass`: the lane's bit when its pixel is present and
 /// nearer (LESS), or present and the test absent.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct LaneTest<const LANES: usize, const ZW: usize> {
     pub rd_z: Signal<In, Bits<ZW>>,
     pub s1_z: Signal<In, Bits<ZW>>,
@@ -536,21 +489,9 @@ pub struct LaneTest<const LANES: usize, const ZW: usize> {
 impl<const LANES: usize, const ZW: usize> LaneTest<LANES, ZW> {
     fn new(i: usize) -> Self {
         LaneTest {
-            rd_z: Default::default(),
-            s1_z: Default::default(),
-            s2_z: Default::default(),
-            s3_z: Default::default(),
-            s1_mask: Default::default(),
-            s2_write: Default::default(),
-            s3_write: Default::default(),
-            hit2: Default::default(),
-            hit3: Default::default(),
-            on: Default::default(),
-            pass: Default::default(),
             at: Constant::new((i * DEPTH).to_bits()),
             lane_bit: Constant::new((1usize << i).to_bits()),
-            z: Default::default(),
-            old_z: Default::default(),
+            ..LaneTest::blank()
         }
     }
 }

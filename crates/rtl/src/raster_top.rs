@@ -50,8 +50,8 @@
 use super::cull_sort::CullSort;
 use super::edge_walk::EdgeWalk;
 use super::links::{
-    ChunkPort, MemoryPort, PixelSource, SeMemory, SortedSink, SortedSource, SpanCmdSource, TriangleSetupSource, TriangleSink,
-    Verdict,
+    ChunkPort, MemoryPort, PixelSource, SeMemory, SortedSink, SortedSource, SpanCmdSource, TriangleSetupSource,
+    TriangleSink, Verdict,
 };
 use super::pixel_out::{ChunkOut, PixelOut};
 use super::se_array::Bank;
@@ -65,13 +65,14 @@ use crate::emit::{emit_unit, Emitted};
 use crate::parts::Concat;
 use crate::switch::Parts;
 use crate::Params;
+use blank::Blank;
 use rust_hdl::prelude::*;
 
 /// `raster_top` with neither `cull_sort` nor `pixel_out` (`CULL_SORT = 0`, `PIXEL_OUT = 0`),
 /// the core every variant holds: `triangle_setup` (with the divider) -> `edge_walk` -> the
 /// span FIFO -> `span`. Sorted triangles in (`model::cull_sort::Sorted`, with their clip
 /// crossings, on the link `inp`), fragments out (`model::span::Pixel` on `out`).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct RasterTopCore {
     pub clock: Signal<In, Clock>,
     /// Screen size in pixels, 1 to 2^CLASS each (the size class); constant during a frame.
@@ -98,6 +99,7 @@ pub struct RasterTopCore {
     /// The edge walk, the span FIFO and span are empty: every fragment of the triangles
     /// handed over has left `span`.
     pub walk_idle: Signal<Out, Bit>,
+    #[given]
     triangle_setup: TriangleSetup,
     edge_walk: EdgeWalk,
     fifo: SpanFifo,
@@ -115,26 +117,9 @@ impl RasterTopCore {
     /// `parts` says.
     pub fn new(k: usize, l: usize, parts: &Parts) -> Result<RasterTopCore, String> {
         Ok(RasterTopCore {
-            clock: Default::default(),
-            width: Default::default(),
-            height: Default::default(),
-            inp: Default::default(),
-            inp_last: Default::default(),
-            out: Default::default(),
-            idle: Default::default(),
-            done: Default::default(),
-            hold: Default::default(),
-            handed: Default::default(),
-            recip_mant: Default::default(),
-            recip_exp: Default::default(),
-            walk_idle: Default::default(),
-            triangle_setup: TriangleSetup::new(k, l)?,
             edge_walk: EdgeWalk::new(parts),
-            fifo: Default::default(),
             span: Span::new(parts),
-            in_setup: Default::default(),
-            taken: Default::default(),
-            last_in: Default::default(),
+            ..RasterTopCore::blank(RasterTopCoreGiven { triangle_setup: TriangleSetup::new(k, l)? })
         })
     }
 }
@@ -224,7 +209,11 @@ impl RasterTopFragments {
     /// `cull_sort` and the core with `k` multipliers in setup and an `l`-stage divider,
     /// with the parts `parts` says.
     pub fn new(k: usize, l: usize, parts: &Parts) -> Result<RasterTopFragments, String> {
-        Ok(RasterTopFragments { cull_sort: CullSort::new(parts), core: RasterTopCore::new(k, l, parts)?, ..Default::default() })
+        Ok(RasterTopFragments {
+            cull_sort: CullSort::new(parts),
+            core: RasterTopCore::new(k, l, parts)?,
+            ..Default::default()
+        })
     }
 }
 
@@ -284,7 +273,11 @@ impl RasterTopSorted {
     /// The core with `k` multipliers in setup and an `l`-stage divider, and `pixel_out`,
     /// with the parts `parts` says.
     pub fn new(k: usize, l: usize, parts: &Parts) -> Result<RasterTopSorted, String> {
-        Ok(RasterTopSorted { core: RasterTopCore::new(k, l, parts)?, pixel_out: PixelOut::new(parts), ..Default::default() })
+        Ok(RasterTopSorted {
+            core: RasterTopCore::new(k, l, parts)?,
+            pixel_out: PixelOut::new(parts),
+            ..Default::default()
+        })
     }
 }
 
@@ -303,12 +296,7 @@ impl Logic for RasterTopSorted {
     }
 }
 
-crate::pins!(RasterTopSorted {
-    clock: clock,
-    inputs: [width, height, inp_last],
-    outputs: [done],
-    links: [inp, mem],
-});
+crate::pins!(RasterTopSorted { clock: clock, inputs: [width, height, inp_last], outputs: [done], links: [inp, mem] });
 
 /// The whole scanline rasterizer (`CULL_SORT = 1`, `PIXEL_OUT = 1`): `cull_sort`, the core
 /// and `pixel_out`. Triangles in as submitted, `cull_sort`'s verdicts, the memory port, and
@@ -369,10 +357,8 @@ impl Logic for RasterTop {
         if self.inp.valid.val() & self.inp.ready.val() {
             self.last_in.d.next = self.inp_last.val();
         }
-        self.done.next = self.last_in.q.val()
-            & self.cull_sort.idle.val()
-            & self.core.idle.val()
-            & self.pixel_out.idle.val();
+        self.done.next =
+            self.last_in.q.val() & self.cull_sort.idle.val() & self.core.idle.val() & self.pixel_out.idle.val();
     }
 }
 
@@ -390,7 +376,7 @@ crate::pins!(RasterTop {
 /// the scanline `raster_top`'s). The vector unit takes a triangle when its setup is free
 /// and sends a chunk a cycle (`rtl::vector`); `model::cycles::vector_frame` predicts the
 /// frame cycle for cycle.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct RasterTopVector<const LANES: usize, const ZW: usize, const CW: usize, const AW: usize> {
     pub clock: Signal<In, Clock>,
     /// As [`RasterTop`]'s.
@@ -404,6 +390,7 @@ pub struct RasterTopVector<const LANES: usize, const ZW: usize, const CW: usize,
     pub done: Signal<Out, Bit>,
     cull_sort: CullSort,
     vector: Vector<LANES, ZW, CW>,
+    #[given]
     pixel_out: ChunkOut<LANES, AW, ZW, CW>,
     last_in: DFF<Bit>,
     /// A chunk's address: `y` shifted by the row's chunk bits, `x` by log2 `LANES`.
@@ -420,19 +407,9 @@ impl<const LANES: usize, const ZW: usize, const CW: usize, const AW: usize> Rast
         Ok(RasterTopVector {
             cull_sort: CullSort::new(parts),
             vector: Vector::new(l, perspective)?,
-            pixel_out: ChunkOut::new(parts),
             row_at: Constant::new((SCREEN - lane_bits).to_bits()),
             lane_bits: Constant::new(lane_bits.to_bits()),
-            clock: Default::default(),
-            width: Default::default(),
-            height: Default::default(),
-            inp: Default::default(),
-            inp_last: Default::default(),
-            cull_back: Default::default(),
-            verdict: Default::default(),
-            mem: Default::default(),
-            done: Default::default(),
-            last_in: Default::default(),
+            ..RasterTopVector::blank(RasterTopVectorGiven { pixel_out: ChunkOut::new(parts) })
         })
     }
 }
@@ -464,10 +441,8 @@ impl<const LANES: usize, const ZW: usize, const CW: usize, const AW: usize> Logi
         if self.inp.valid.val() & self.inp.ready.val() {
             self.last_in.d.next = self.inp_last.val();
         }
-        self.done.next = self.last_in.q.val()
-            & self.cull_sort.idle.val()
-            & self.vector.idle.val()
-            & self.pixel_out.idle.val();
+        self.done.next =
+            self.last_in.q.val() & self.cull_sort.idle.val() & self.vector.idle.val() & self.pixel_out.idle.val();
     }
 }
 
@@ -487,7 +462,7 @@ pub type RasterTopVector1 = RasterTopVector<1, DEPTH, RGB, ADDR>;
 /// ports but the engines' banked memory port (`links::SeMemory`: `EL` = 4 `E` lanes, `ZW`
 /// and `CW` bits of depths and colours); screens up to 64 `E` columns wide.
 /// `model::cycles::se_frame` predicts the frame cycle for cycle.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct RasterTopSe<const E: usize, const EL: usize, const ZW: usize, const CW: usize> {
     pub clock: Signal<In, Clock>,
     /// As [`RasterTop`]'s.
@@ -500,6 +475,7 @@ pub struct RasterTopSe<const E: usize, const EL: usize, const ZW: usize, const C
     pub mem: SeMemory<EL, { SCREEN + 4 }, ZW, CW>,
     pub done: Signal<Out, Bit>,
     cull_sort: CullSort,
+    #[given]
     triangle_setup: TriangleSetup,
     edge_walk: EdgeWalk,
     fifo: SpanFifo,
@@ -528,30 +504,13 @@ impl<const E: usize, const EL: usize, const ZW: usize, const CW: usize> RasterTo
             return Err("raster_top: METHOD = 2 (the SE back end) is built at size class 10's default formats, whose engines are rtl::se::SeWide".into());
         }
         Ok(RasterTopSe {
-            clock: Default::default(),
-            width: Default::default(),
-            height: Default::default(),
-            inp: Default::default(),
-            inp_last: Default::default(),
-            cull_back: Default::default(),
-            verdict: Default::default(),
-            mem: Default::default(),
-            done: Default::default(),
             cull_sort: CullSort::new(parts),
-            triangle_setup: TriangleSetup::new(k, l)?,
             edge_walk: EdgeWalk::new(parts),
-            fifo: Default::default(),
-            se_cmd: Default::default(),
             banks: (0..E).map(Bank::new).collect(),
             g_z: (0..=E).map(|_| Default::default()).collect(),
             g_rgb: (0..=E).map(|_| Default::default()).collect(),
             g_en: (0..=E).map(|_| Default::default()).collect(),
-            rd_addr: Default::default(),
-            wr_addr: Default::default(),
-            in_setup: Default::default(),
-            taken: Default::default(),
-            handed: Default::default(),
-            last_in: Default::default(),
+            ..RasterTopSe::blank(RasterTopSeGiven { triangle_setup: TriangleSetup::new(k, l)? })
         })
     }
 }
@@ -658,7 +617,10 @@ pub fn emit_raster_top(params: &Params) -> Result<Emitted, String> {
     };
     match params["METHOD"] {
         0 if params["LANES"] != 1 => {
-            return Err(format!("raster_top: LANES = {} is the vector unit's (METHOD = 1); the scanline method draws a pixel a cycle", params["LANES"]))
+            return Err(format!(
+                "raster_top: LANES = {} is the vector unit's (METHOD = 1); the scanline method draws a pixel a cycle",
+                params["LANES"]
+            ))
         }
         0 => {}
         1 => {
@@ -690,7 +652,9 @@ pub fn emit_raster_top(params: &Params) -> Result<Emitted, String> {
             });
         }
         2 => {
-            if (params["CULL_SORT"], params["PIXEL_OUT"]) != (1, 1) || !(parts.clip_x && parts.clip_z && parts.depth_test) {
+            if (params["CULL_SORT"], params["PIXEL_OUT"]) != (1, 1)
+                || !(parts.clip_x && parts.clip_z && parts.depth_test)
+            {
                 return Err("raster_top: METHOD = 2 (the SE back end) is built with cull_sort and its engines (CULL_SORT = 1, PIXEL_OUT = 1; CLIP_X, CLIP_Z and DEPTH_TEST are the engines' own: 1)".into());
             }
             if params["LANES"] != 1 {
@@ -703,25 +667,42 @@ pub fn emit_raster_top(params: &Params) -> Result<Emitted, String> {
                 16 => {
                     emit_unit("raster_top", RasterTopSe::<16, 64, { 64 * DEPTH }, { 64 * RGB }>::new(k, l, p)?, params)
                 }
-                n => return Err(format!("raster_top: ENGINES = {n}: 1, 5 or 16 (screens up to 64, 320 or 1024 columns)")),
+                n => {
+                    return Err(format!(
+                        "raster_top: ENGINES = {n}: 1, 5 or 16 (screens up to 64, 320 or 1024 columns)"
+                    ))
+                }
             });
         }
         m => return Err(format!("raster_top: METHOD = {m}: 0 (scanline), 1 (vector) or 2 (se)")),
     }
     if params["CULL_SORT"] == 0 && !parts.cull {
-        return Err("raster_top: CULL = 0 removes cull_sort's rejecting and culling, which CULL_SORT = 0 has no unit for".into());
+        return Err(
+            "raster_top: CULL = 0 removes cull_sort's rejecting and culling, which CULL_SORT = 0 has no unit for"
+                .into(),
+        );
     }
     if params["PIXEL_OUT"] == 0 && !parts.depth_test {
-        return Err("raster_top: DEPTH_TEST = 0 removes pixel_out's depth test, which PIXEL_OUT = 0 has no unit for".into());
+        return Err(
+            "raster_top: DEPTH_TEST = 0 removes pixel_out's depth test, which PIXEL_OUT = 0 has no unit for".into()
+        );
     }
     let p = &parts;
     match (params["CULL_SORT"], params["PIXEL_OUT"], params["TEXTURE"]) {
         (_, _, 0) => {}
-        (1, 1, 1) if super::widths::FORMATS == crate::n10::FORMATS => return crate::raster_top_textured::emit(params, p),
-        (1, 1, 1) => {
-            return Err("raster_top: TEXTURE = 1 is built at size class 10's default formats (N = 10), as texture_path".into())
+        (1, 1, 1) if super::widths::FORMATS == crate::n10::FORMATS => {
+            return crate::raster_top_textured::emit(params, p)
         }
-        (_, _, 1) => return Err("raster_top: TEXTURE = 1 is built with cull_sort and pixel_out (CULL_SORT = 1, PIXEL_OUT = 1)".into()),
+        (1, 1, 1) => {
+            return Err(
+                "raster_top: TEXTURE = 1 is built at size class 10's default formats (N = 10), as texture_path".into()
+            )
+        }
+        (_, _, 1) => {
+            return Err(
+                "raster_top: TEXTURE = 1 is built with cull_sort and pixel_out (CULL_SORT = 1, PIXEL_OUT = 1)".into()
+            )
+        }
         (_, _, t) => return Err(format!("raster_top: TEXTURE = {t}: 0 or 1")),
     }
     match (params["CULL_SORT"], params["PIXEL_OUT"]) {

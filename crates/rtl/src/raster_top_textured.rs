@@ -40,10 +40,11 @@ use crate::n10::pixel_out::PixelOutBlend;
 use crate::n10::raster_top::RasterTopCore;
 use crate::n10::widths::DIM;
 use crate::switch::Parts;
-use crate::texture_cache::ADDR as TADDR;
+use crate::texture_cache::{CacheCounters, TexMemory, ADDR as TADDR};
 use crate::texture_path::{TexturePath, SW};
 use crate::texture_setup::{QB, ST, XY};
 use crate::Params;
+use blank::Blank;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::RAM;
 
@@ -106,7 +107,7 @@ crate::bundle! {
 }
 
 /// The textured rasterizer: see the module documentation.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct RasterTopTextured {
     pub clock: Signal<In, Clock>,
     /// As `RasterTop`'s.
@@ -123,19 +124,14 @@ pub struct RasterTopTextured {
     /// The blending `pixel_out`'s memory port.
     pub mem: BlendMemoryPort,
     /// The texture memory's read port and the cache's counters (`texture_path`'s).
-    pub tex_mem_valid: Signal<Out, Bit>,
-    pub tex_mem_addr: Signal<Out, Bits<TADDR>>,
-    pub tex_mem_ack: Signal<In, Bit>,
-    pub tex_mem_rvalid: Signal<In, Bit>,
-    pub tex_mem_rdata: Signal<In, Bits<32>>,
-    pub hits: Signal<Out, Bits<32>>,
-    pub misses: Signal<Out, Bits<32>>,
-    pub fills: Signal<Out, Bits<32>>,
+    pub tex_mem: TexMemory,
+    pub counters: CacheCounters,
     /// `inp_last`'s triangle taken, every unit empty and the last pixel written.
     pub done: Signal<Out, Bit>,
 
     cull_sort: CullSort,
     core: RasterTopCore,
+    #[given]
     path: TexturePath,
     pixel_out: PixelOutBlend,
     slots: RAM<Bits<PW>, SB>,
@@ -183,53 +179,11 @@ impl RasterTopTextured {
             at[f] = at[f - 1] + WIDTHS[f - 1];
         }
         Ok(RasterTopTextured {
-            clock: Default::default(),
-            width: Default::default(),
-            height: Default::default(),
-            inp: Default::default(),
-            tex: Default::default(),
-            inp_last: Default::default(),
-            cull_back: Default::default(),
-            verdict: Default::default(),
-            inp_flush: Default::default(),
-            mem: Default::default(),
-            tex_mem_valid: Default::default(),
-            tex_mem_addr: Default::default(),
-            tex_mem_ack: Default::default(),
-            tex_mem_rvalid: Default::default(),
-            tex_mem_rdata: Default::default(),
-            hits: Default::default(),
-            misses: Default::default(),
-            fills: Default::default(),
-            done: Default::default(),
             cull_sort: CullSort::new(parts),
             core: RasterTopCore::new(k, l, parts)?,
-            path: TexturePath::new(exact),
             pixel_out: PixelOutBlend::new(parts),
-            slots: Default::default(),
-            wi: Default::default(),
-            vi: Default::default(),
-            tex_bits: Default::default(),
-            queue: Default::default(),
-            qh: Default::default(),
-            qn: Default::default(),
-            head: Default::default(),
-            head_tex: Default::default(),
-            tail: Default::default(),
-            push: Default::default(),
-            cur: Default::default(),
-            cur_live: Default::default(),
-            cur_tex: Default::default(),
-            first: Default::default(),
-            cur_mant: Default::default(),
-            cur_exp: Default::default(),
-            base: Default::default(),
-            wi_next: Default::default(),
-            slot_free: Default::default(),
-            word_in: Default::default(),
-            word: Default::default(),
-            last_in: Default::default(),
             at: at.map(|a| Constant::new(a.to_bits())),
+            ..RasterTopTextured::blank(RasterTopTexturedGiven { path: TexturePath::new(exact) })
         })
     }
 }
@@ -454,14 +408,8 @@ impl Logic for RasterTopTextured {
             self.pixel_out.inp.mode.next = self.word.val().get_bits::<3>(self.at[27].val().index());
         }
         BlendMemoryPort::link(&mut self.mem, &mut self.pixel_out.mem);
-        self.tex_mem_valid.next = self.path.mem_valid.val();
-        self.tex_mem_addr.next = self.path.mem_addr.val();
-        self.path.mem_ack.next = self.tex_mem_ack.val();
-        self.path.mem_rvalid.next = self.tex_mem_rvalid.val();
-        self.path.mem_rdata.next = self.tex_mem_rdata.val();
-        self.hits.next = self.path.hits.val();
-        self.misses.next = self.path.misses.val();
-        self.fills.next = self.path.fills.val();
+        TexMemory::link(&mut self.tex_mem, &mut self.path.mem);
+        CacheCounters::link(&mut self.counters, &mut self.path.counters);
         self.done.next = self.last_in.q.val()
             & self.cull_sort.idle.val()
             & self.core.idle.val()
@@ -472,9 +420,9 @@ impl Logic for RasterTopTextured {
 
 crate::pins!(RasterTopTextured {
     clock: clock,
-    inputs: [width, height, inp_last, cull_back, inp_flush, tex_mem_ack, tex_mem_rvalid, tex_mem_rdata],
-    outputs: [tex_mem_valid, tex_mem_addr, hits, misses, fills, done],
-    links: [inp, tex, mem, verdict],
+    inputs: [width, height, inp_last, cull_back, inp_flush],
+    outputs: [done],
+    links: [inp, tex, mem, verdict, tex_mem, counters],
 });
 
 /// `raster_top` with `TEXTURE = 1`: the textured rasterizer with `params["K"]` setup

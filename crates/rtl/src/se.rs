@@ -59,6 +59,7 @@ use crate::ept::{Ept16, Ept32, Ept64, Ept8};
 use crate::parts::defaults;
 use crate::sim::{Pins, Value};
 use crate::Params;
+use blank::Blank;
 use interp::Interp;
 use mul::{SerialMul, X_BITS};
 use rust_hdl::prelude::*;
@@ -79,7 +80,7 @@ macro_rules! se_size {
     ($top:ident, $ept:ident, $p:tt, $k:tt, $qb:tt, $dcb:tt) => {
         #[doc = concat!("The shading engine of 000 (Fig. 6) over ", stringify!($p), " pixels: z words of ZW bits, \
             colour words of CW bits, A and B words of ZA = ZW + F and CA = CW + F bits. See the module doc.")]
-        #[derive(LogicBlock)]
+        #[derive(LogicBlock, Blank)]
         pub struct $top<const ZW: usize, const CW: usize, const ZA: usize, const CA: usize> {
             pub clock: Signal<In, Clock>,
             /// A span command is offered; taken when `ready` is high too.
@@ -255,63 +256,6 @@ macro_rules! se_size {
                 let sign = 1u64 << (SPAN_X_BITS - 1);
                 let xl = p * index;
                 Self {
-                    clock: Default::default(),
-                    valid: Default::default(),
-                    xl: Default::default(),
-                    xr: Default::default(),
-                    za: Default::default(),
-                    zb: Default::default(),
-                    ra: Default::default(),
-                    rb: Default::default(),
-                    ga: Default::default(),
-                    gb: Default::default(),
-                    ba: Default::default(),
-                    bb: Default::default(),
-                    oz0: Default::default(),
-                    oz1: Default::default(),
-                    oz2: Default::default(),
-                    oz3: Default::default(),
-                    ready: Default::default(),
-                    oz_rd: Default::default(),
-                    oz_addr: Default::default(),
-                    wr: Default::default(),
-                    wr_addr: Default::default(),
-                    nz0: Default::default(),
-                    nz1: Default::default(),
-                    nz2: Default::default(),
-                    nz3: Default::default(),
-                    r0: Default::default(),
-                    r1: Default::default(),
-                    r2: Default::default(),
-                    r3: Default::default(),
-                    g0: Default::default(),
-                    g1: Default::default(),
-                    g2: Default::default(),
-                    g3: Default::default(),
-                    b0: Default::default(),
-                    b1: Default::default(),
-                    b2: Default::default(),
-                    b3: Default::default(),
-                    we0: Default::default(),
-                    we1: Default::default(),
-                    we2: Default::default(),
-                    we3: Default::default(),
-                    h: Default::default(),
-                    sc: Default::default(),
-                    att: Default::default(),
-                    dc: Default::default(),
-                    dgo: Default::default(),
-                    ml: Default::default(),
-                    mr: Default::default(),
-                    hit: Default::default(),
-                    ach_z: Default::default(),
-                    bch_z: Default::default(),
-                    ach_r: Default::default(),
-                    bch_r: Default::default(),
-                    ach_g: Default::default(),
-                    bch_g: Default::default(),
-                    ach_b: Default::default(),
-                    bch_b: Default::default(),
                     k_head: k(za + 3 * ca),
                     k_m1: k(m1),
                     k_m2: k(m2),
@@ -335,41 +279,9 @@ macro_rules! se_size {
                     k_xr: k(xl + p),
                     k_zamsb: k(1 << (za - 1)),
                     k_camsb: k(1 << (ca - 1)),
-                    mul_l: Default::default(),
-                    mul_r: Default::default(),
-                    interp: Default::default(),
-                    ept: Default::default(),
                     zc: defaults(),
-                    ozm: Default::default(),
-                    nzm: Default::default(),
-                    rm: Default::default(),
-                    gm: Default::default(),
-                    bm: Default::default(),
                     wes: defaults(),
-                    rdy: Default::default(),
-                    accept: Default::default(),
-                    xlb: Default::default(),
-                    xrb: Default::default(),
-                    ozload: Default::default(),
-                    mfirst: Default::default(),
-                    start: Default::default(),
-                    satt: Default::default(),
-                    isz: Default::default(),
-                    half: Default::default(),
-                    ext: Default::default(),
-                    win: Default::default(),
-                    send: Default::default(),
-                    zwin: Default::default(),
-                    rwin: Default::default(),
-                    gwin: Default::default(),
-                    bwin: Default::default(),
-                    zfirst: Default::default(),
-                    wbit: Default::default(),
-                    welatch: Default::default(),
-                    dstart: Default::default(),
-                    dump: Default::default(),
-                    og: Default::default(),
-                    mask: Default::default(),
+                    ..Self::blank()
                 }
             }
         }

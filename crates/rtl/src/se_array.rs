@@ -10,6 +10,7 @@
 use super::widths::{CHANNEL, DEPTH, PIXEL, RGB, SE_CA, SE_ZA};
 use crate::parts::Negative;
 use crate::se::{SeWide, SPAN_X_BITS};
+use blank::Blank;
 use rust_hdl::prelude::*;
 
 /// `SeWide`'s z and colour words and their A and B words.
@@ -33,7 +34,12 @@ pub struct Clamp8<const W: usize> {
 
 impl<const W: usize> Default for Clamp8<W> {
     fn default() -> Self {
-        Clamp8 { x: Default::default(), y: Default::default(), sign: Default::default(), max: Constant::new(255.into()) }
+        Clamp8 {
+            x: Default::default(),
+            y: Default::default(),
+            sign: Default::default(),
+            max: Constant::new(255.into()),
+        }
     }
 }
 
@@ -54,7 +60,7 @@ impl<const W: usize> Logic for Clamp8<W> {
 /// One engine port, lane `l` of the array's words (`ZW`, `CW` and `EL` bits of depths,
 /// colours and enables): its old z out of the read word, its new z, colour and write
 /// enable placed in the write word.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct PortOut<const ZW: usize, const CW: usize, const EL: usize> {
     pub rd_z: Signal<In, Bits<ZW>>,
     pub oz: Signal<Out, Bits<EZ>>,
@@ -82,25 +88,12 @@ impl<const ZW: usize, const CW: usize, const EL: usize> PortOut<ZW, CW, EL> {
     fn new(l: usize) -> Self {
         assert!(l < EL && ZW == EL * DEPTH && CW == EL * RGB, "PortOut<{ZW}, {CW}, {EL}> lane {l}");
         PortOut {
-            rd_z: Default::default(),
-            oz: Default::default(),
-            nz: Default::default(),
-            r: Default::default(),
-            g: Default::default(),
-            b: Default::default(),
-            we: Default::default(),
-            wr_z: Default::default(),
-            wr_rgb: Default::default(),
-            wr_en: Default::default(),
-            cr: Default::default(),
-            cg: Default::default(),
-            cb: Default::default(),
             at_z: Constant::new((l * DEPTH).to_bits()),
             at_rgb: Constant::new((l * RGB).to_bits()),
             lane: Constant::new(Bits::<EL>::from(1u64) << (l as u64)),
             ch1: Constant::new(CHANNEL.to_bits()),
             ch2: Constant::new((2 * CHANNEL).to_bits()),
-            rgb: Default::default(),
+            ..PortOut::blank()
         }
     }
 }
@@ -128,7 +121,7 @@ impl<const ZW: usize, const CW: usize, const EL: usize> Logic for PortOut<ZW, CW
 /// span bus in (`se_cmd`'s command), the engine's schedule out (`ready`, `oz_rd`,
 /// `oz_addr`, `wr`, `wr_addr`: the same in every engine), its lanes of the read word in
 /// and of the write word out (zero in the other lanes).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Bank<const ZW: usize, const CW: usize, const EL: usize> {
     pub clock: Signal<In, Clock>,
     pub valid: Signal<In, Bit>,
@@ -151,44 +144,29 @@ pub struct Bank<const ZW: usize, const CW: usize, const EL: usize> {
     pub wr_z: Signal<Out, Bits<ZW>>,
     pub wr_rgb: Signal<Out, Bits<CW>>,
     pub wr_en: Signal<Out, Bits<EL>>,
+    #[given]
     se: SeWide,
+    #[given]
     p0: PortOut<ZW, CW, EL>,
+    #[given]
     p1: PortOut<ZW, CW, EL>,
+    #[given]
     p2: PortOut<ZW, CW, EL>,
+    #[given]
     p3: PortOut<ZW, CW, EL>,
 }
 
 impl<const ZW: usize, const CW: usize, const EL: usize> Bank<ZW, CW, EL> {
     /// Engine `i`: the region [64 i, 64 (i + 1)), lanes 4 i to 4 i + 3.
     pub fn new(i: usize) -> Self {
-        Bank {
-            clock: Default::default(),
-            valid: Default::default(),
-            xl: Default::default(),
-            xr: Default::default(),
-            za: Default::default(),
-            zb: Default::default(),
-            ra: Default::default(),
-            rb: Default::default(),
-            ga: Default::default(),
-            gb: Default::default(),
-            ba: Default::default(),
-            bb: Default::default(),
-            rd_z: Default::default(),
-            ready: Default::default(),
-            oz_rd: Default::default(),
-            oz_addr: Default::default(),
-            wr: Default::default(),
-            wr_addr: Default::default(),
-            wr_z: Default::default(),
-            wr_rgb: Default::default(),
-            wr_en: Default::default(),
+        let given = BankGiven {
             se: SeWide::new(i as u64),
             p0: PortOut::new(4 * i),
             p1: PortOut::new(4 * i + 1),
             p2: PortOut::new(4 * i + 2),
             p3: PortOut::new(4 * i + 3),
-        }
+        };
+        Bank { ..Bank::blank(given) }
     }
 }
 

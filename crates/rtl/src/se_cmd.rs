@@ -22,6 +22,7 @@ use super::widths::{C_ACC, DC, DIM, DZ, FORMATS, PIXEL, SCREEN, SE, SE_CA, SE_F,
 use crate::emit::{emit_unit, Emitted};
 use crate::parts::{Negative, SignExtend};
 use crate::Params;
+use blank::Blank;
 use rust_hdl::prelude::*;
 
 /// Bits of x0 A and of B before its rounding: a `PIXEL`-bit x0 times a step, and the start
@@ -37,7 +38,7 @@ const BELOW_C: usize = FORMATS.c_acc.frac as usize;
 /// `y` = the low `OUT` bits of x 2^F / 2^S rounded half up (`model::se_cmd`'s `to_frac`),
 /// for an `IN`-bit two's complement x, in `W` bits (more than `IN`, at least S + `OUT`:
 /// the bits read are exact modulo 2^W).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Line<const IN: usize, const W: usize, const OUT: usize> {
     pub x: Signal<In, Bits<IN>>,
     pub y: Signal<Out, Bits<OUT>>,
@@ -51,12 +52,10 @@ impl<const IN: usize, const W: usize, const OUT: usize> Line<IN, W, OUT> {
     fn new(s: usize) -> Self {
         assert!(W > IN && W >= s + OUT && s < 64, "Line<{IN}, {W}, {OUT}> from {s} fraction bits");
         Line {
-            x: Default::default(),
-            y: Default::default(),
-            widen: Default::default(),
             frac: Constant::new(SE_F.to_bits()),
             half: Constant::new(if s == 0 { 0u64 } else { 1u64 << (s - 1) }.to_bits()),
             s: Constant::new(s.to_bits()),
+            ..Line::blank()
         }
     }
 }
@@ -73,7 +72,7 @@ impl<const IN: usize, const W: usize, const OUT: usize> Logic for Line<IN, W, OU
 /// bit of x0 a cycle in `P` bits (`run`: add the step shifted by the bits done when `bit`,
 /// subtract it for x0's sign bit, `last`), and its A and B (`OUT` bits, from `below`
 /// fraction bits below a word LSB; `WA` and `WB` the [`Line`]s' widths).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Attr<const V: usize, const S: usize, const P: usize, const OUT: usize, const WA: usize, const WB: usize> {
     pub clock: Signal<In, Clock>,
     /// Load `v0` and `step` (and clear the product).
@@ -91,7 +90,9 @@ pub struct Attr<const V: usize, const S: usize, const P: usize, const OUT: usize
     acc: DFF<Bits<P>>,
     ext_step: SignExtend<S, P>,
     ext_v0: SignExtend<V, P>,
+    #[given]
     line_a: Line<S, WA, OUT>,
+    #[given]
     line_b: Line<P, WB, OUT>,
 }
 
@@ -99,25 +100,7 @@ impl<const V: usize, const S: usize, const P: usize, const OUT: usize, const WA:
     Attr<V, S, P, OUT, WA, WB>
 {
     fn new(below: usize) -> Self {
-        Attr {
-            clock: Default::default(),
-            load: Default::default(),
-            v0: Default::default(),
-            step: Default::default(),
-            run: Default::default(),
-            x0_bit: Default::default(),
-            last: Default::default(),
-            a: Default::default(),
-            b: Default::default(),
-            v0_q: Default::default(),
-            step_q: Default::default(),
-            sh: Default::default(),
-            acc: Default::default(),
-            ext_step: Default::default(),
-            ext_v0: Default::default(),
-            line_a: Line::new(below),
-            line_b: Line::new(below),
-        }
+        Attr { ..Attr::blank(AttrGiven { line_a: Line::new(below), line_b: Line::new(below) }) }
     }
 }
 
@@ -156,7 +139,7 @@ type AttrZ = Attr<Z_ACC, DZ, PZ, SE_ZA, { DZ + SE_F + SE_ZA }, { PZ + SE_F + SE_
 type AttrC = Attr<C_ACC, DC, PC, SE_CA, { DC + SE_F + SE_CA }, { PC + SE_F + SE_CA }>;
 
 /// The span command unit: see the module documentation.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct SeCmd {
     pub clock: Signal<In, Clock>,
     /// Screen width (1 to 2^N): spans from it rightward are dropped, as those left of 0.
@@ -185,9 +168,13 @@ pub struct SeCmd {
     /// The engines are done with every span issued: none was, or the last was issued their
     /// latency ago (its last write was in the cycle before).
     pub engines_idle: Signal<Out, Bit>,
+    #[given]
     attr_z: AttrZ,
+    #[given]
     attr_r: AttrC,
+    #[given]
     attr_g: AttrC,
+    #[given]
     attr_b: AttrC,
     /// A span held (its product being formed, or its command offered).
     busy: DFF<Bit>,
@@ -220,50 +207,18 @@ impl Default for SeCmd {
     fn default() -> Self {
         let latency = SE.latency() as usize;
         assert!(latency < 255, "the engines' latency {latency} fits `since`");
-        SeCmd {
-            clock: Default::default(),
-            width: Default::default(),
-            inp: Default::default(),
-            out_valid: Default::default(),
-            out_ready: Default::default(),
-            xl: Default::default(),
-            xr: Default::default(),
-            za: Default::default(),
-            zb: Default::default(),
-            ra: Default::default(),
-            rb: Default::default(),
-            ga: Default::default(),
-            gb: Default::default(),
-            ba: Default::default(),
-            bb: Default::default(),
-            rd_y: Default::default(),
-            wr_y: Default::default(),
-            idle: Default::default(),
-            engines_idle: Default::default(),
+        let given = SeCmdGiven {
             attr_z: Attr::new(BELOW_Z),
             attr_r: Attr::new(BELOW_C),
             attr_g: Attr::new(BELOW_C),
             attr_b: Attr::new(BELOW_C),
-            busy: Default::default(),
-            k: Default::default(),
-            x0s: Default::default(),
-            y: Default::default(),
-            cxl: Default::default(),
-            cxr: Default::default(),
-            started: Default::default(),
-            since: Default::default(),
-            last_y: Default::default(),
-            prev_y: Default::default(),
-            xl_neg: Default::default(),
-            xr_neg: Default::default(),
+        };
+        SeCmd {
             pixel: Constant::new(PIXEL.to_bits()),
             ii: Constant::new((SE.ii() as usize).to_bits()),
             latency: Constant::new(latency.to_bits()),
             writes: Constant::new((latency - SE.p as usize / 4).to_bits()),
-            load: Default::default(),
-            run: Default::default(),
-            gap: Default::default(),
-            issue: Default::default(),
+            ..SeCmd::blank(given)
         }
     }
 }

@@ -40,11 +40,11 @@
 //!
 //! Model: `model::span::span`. Emitted: `hdl-out/span.v`.
 
+use super::links::{PixelSource, SpanCmdSink};
+use super::widths::{CHANNEL, C_ACC, DC, DEPTH, DIM, DZ, FORMATS, PIXEL, SCREEN, Z_ACC};
 use crate::emit::{emit_unit, Emitted};
 use crate::parts::{Negative, RoundShift, SignedLess};
 use crate::switch::{Parts, Switch};
-use super::links::{PixelSource, SpanCmdSink};
-use super::widths::{CHANNEL, C_ACC, DC, DEPTH, DIM, DZ, FORMATS, PIXEL, SCREEN, Z_ACC};
 use crate::Params;
 use rust_hdl::prelude::*;
 
@@ -266,14 +266,7 @@ impl Logic for Span {
     }
 }
 
-crate::pins!(Span {
-    clock: clock,
-    inputs: [
-        width,
-    ],
-    outputs: [ idle],
-    links: [inp, out],
-});
+crate::pins!(Span { clock: clock, inputs: [width,], outputs: [idle], links: [inp, out] });
 
 impl Span {
     /// The span unit with X and Z clipping present or not (`parts.clip_x`, `parts.clip_z`).

@@ -5,6 +5,7 @@
 use super::links::{SpanCmdSink, SpanCmdSource};
 use super::widths::{C_ACC, DC, DZ, PIXEL, SCREEN, Z_ACC};
 use crate::parts::defaults;
+use blank::Blank;
 use rust_hdl::prelude::*;
 
 /// Span commands the FIFO between the edge walk and span holds.
@@ -17,7 +18,7 @@ const _: () = assert!(SPAN_FIFO == 1 << POINTER, "the span FIFO's pointers wrap 
 /// module, so that these outputs depend on the registered count only: Verilator orders a
 /// module's logic as one block, and with the pushes and pops beside them the handshake
 /// with the edge walk would look like a combinational loop.)
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct FifoLevel<const D: usize> {
     pub count: Signal<In, Bits<3>>,
     pub full: Signal<Out, Bit>,
@@ -28,12 +29,7 @@ pub struct FifoLevel<const D: usize> {
 impl<const D: usize> Default for FifoLevel<D> {
     fn default() -> Self {
         assert!((1..8).contains(&D), "FifoLevel<{D}>: 1 to 7 entries");
-        FifoLevel {
-            count: Default::default(),
-            full: Default::default(),
-            empty: Default::default(),
-            depth: Constant::new(bits(D as u64)),
-        }
+        FifoLevel { depth: Constant::new(bits(D as u64)), ..FifoLevel::blank() }
     }
 }
 
@@ -50,7 +46,7 @@ impl<const D: usize> Logic for FifoLevel<D> {
 /// its registered pointer only, never from the output's handshake (on ECP5 that handshake
 /// spread to every entry's load enable was raster_top's critical path: span's accept, then
 /// one 17 ns net across the die).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct FifoLane<const W: usize, const D: usize> {
     pub clock: Signal<In, Clock>,
     pub we: Signal<In, Bit>,
@@ -63,15 +59,7 @@ pub struct FifoLane<const W: usize, const D: usize> {
 
 impl<const W: usize, const D: usize> Default for FifoLane<W, D> {
     fn default() -> Self {
-        FifoLane {
-            clock: Default::default(),
-            we: Default::default(),
-            wr: Default::default(),
-            rd: Default::default(),
-            din: Default::default(),
-            head: Default::default(),
-            e: defaults(),
-        }
+        FifoLane { e: defaults(), ..FifoLane::blank() }
     }
 }
 
@@ -181,19 +169,5 @@ macro_rules! span_fifo_logic {
 }
 
 span_fifo_logic!(
-    y,
-    xl,
-    xr,
-    left_z,
-    left_c0,
-    left_c1,
-    left_c2,
-    right_z,
-    right_c0,
-    right_c1,
-    right_c2,
-    ddx_z,
-    ddx_c0,
-    ddx_c1,
-    ddx_c2,
+    y, xl, xr, left_z, left_c0, left_c1, left_c2, right_z, right_c0, right_c1, right_c2, ddx_z, ddx_c0, ddx_c1, ddx_c2,
 );

@@ -29,15 +29,15 @@
 //! A request taken in cycle t (`inp_valid & inp_ready`) is looked up in t+1 (stage S1) and,
 //! if every enabled lane hits, is in the output register in t+2: hit latency 2, one
 //! request a cycle. A miss of m lanes, with a memory that takes each word at once
-//! (`mem_ack` high) and answers a word taken in cycle c in cycle c + L:
+//! (`mem$ack` high) and answers a word taken in cycle c in cycle c + L:
 //!
 //! ```text
 //!  cycle         st     what
 //!  t             Run    request taken (inp_valid & inp_ready); RAMs read its addresses
 //!  t+1           Run    S1: a lane misses (hits, misses counted); inp_ready low
-//!  t+2 ..        Fill   mem_valid: the missing lanes' lines, word by word, in lane order
+//!  t+2 ..        Fill   mem$valid: the missing lanes' lines, word by word, in lane order
 //!  t+1+m·LINE    Fill   the last word asked
-//!  t+1+m·LINE+L  Fill   the last word in (mem_rvalid): its line's tag written valid
+//!  t+1+m·LINE+L  Fill   the last word in (mem$rvalid): its line's tag written valid
 //!  t+2+m·LINE+L  Wait   the RAMs read S1's addresses again
 //!  t+3+m·LINE+L  Run    S1: every lane hits (not counted); inp_ready high again
 //!  t+4+m·LINE+L  Run    out_valid
@@ -74,10 +74,10 @@
 //! | `out_valid`, `out_ready` | out, in | 1 | the result stream |
 //! | `out_data0` .. `out_data3` | out | 32 | lane b's word, 0 if disabled |
 //! | `out_side` | out | 64 | the request's `inp_side` |
-//! | `mem_valid`, `mem_addr` | out | 1, 20 | a word asked, held until `mem_ack` |
-//! | `mem_ack` | in | 1 | the word asked is taken this cycle |
-//! | `mem_rvalid`, `mem_rdata` | in | 1, 32 | a word answered, in the order asked (ignored outside Fill) |
-//! | `hits`, `misses`, `fills` | out | 32 | counters, wrapping |
+//! | `mem$valid`, `mem$addr` | out | 1, 20 | a word asked, held until `mem$ack` ([`TexMemory`]) |
+//! | `mem$ack` | in | 1 | the word asked is taken this cycle |
+//! | `mem$rvalid`, `mem$rdata` | in | 1, 32 | a word answered, in the order asked (ignored outside Fill) |
+//! | `counters$hits`, `counters$misses`, `counters$fills` | out | 32 | counters, wrapping ([`CacheCounters`]) |
 //!
 //! Widths are compile-time in rust-hdl, and a RAM's size is its address width, so the unit
 //! is generic over them: `TextureCache<SB, DA, W, TAG, TV>` with SB = log2 SETS, DA = SB +
@@ -91,18 +91,43 @@
 
 use crate::emit::{emit_unit, Emitted};
 use crate::Params;
+use blank::Blank;
 use model::texture_cache as m;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::RAM;
 
 /// Bits of a word address.
 pub const ADDR: usize = m::ADDR_BITS as usize;
+
+crate::bundle! {
+    /// The cache's memory read port, as each texture block above it passes it on
+    /// (`texture_unit`, `texture_path`, and the textured `raster_top` as `tex_mem`): a word
+    /// asked (`valid`, `addr`), held until `ack`; the words asked come back in order
+    /// (`rvalid`, `rdata`; ignored outside Fill).
+    TexMemory {
+        Out valid: Bit,
+        Out addr: Bits<ADDR>,
+        In ack: Bit,
+        In rvalid: Bit,
+        In rdata: Bits<32>,
+    }
+}
+
+crate::bundle! {
+    /// The cache's counters, 32 bits each, wrapping: lane lookups that hit and that missed,
+    /// and lines fetched (`model::texture_cache::Out`'s `hits`, `misses`, `fills`).
+    CacheCounters {
+        Out hits: Bits<32>,
+        Out misses: Bits<32>,
+        Out fills: Bits<32>,
+    }
+}
 /// Bits of the side payload.
 pub const SIDE: usize = m::SIDE_BITS as usize;
 
 /// One bank: the RAMs of lane b and its lookup (tag compare, way select) and writes (a
 /// fill's words and tag, a Clear's set). See the module documentation for its RAMs.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Bank<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const TV: usize> {
     pub clock: Signal<In, Clock>,
     /// The address's set and word read at this clock edge (the request taken, else S1's).
@@ -148,29 +173,12 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
             "Bank<{SB}, {DA}, {W}, {TAG}, {TV}>: DA = SB + log2 LINE, TAG = {ADDR} - DA, TV = TAG + 1, W = 1, 2 or 4"
         );
         Bank {
-            clock: Default::default(),
-            rd_addr: Default::default(),
-            addr: Default::default(),
-            fill: Default::default(),
-            word: Default::default(),
-            wdata: Default::default(),
-            last: Default::default(),
-            clear: Default::default(),
-            clear_set: Default::default(),
-            hit: Default::default(),
-            data: Default::default(),
-            tags: std::array::from_fn(|_| Default::default()),
-            words: std::array::from_fn(|_| Default::default()),
-            victim: Default::default(),
             set_at: Constant::new((DA - SB).to_bits()),
             tag_at: Constant::new(DA.to_bits()),
             word_mask: Constant::new(((1u64 << (DA - SB)) - 1).to_bits()),
             way_mask: Constant::new(((W - 1) as u64).to_bits()),
             valid_bit: Constant::new(1u64.to_bits()),
-            set: Default::default(),
-            tag: Default::default(),
-            way: Default::default(),
-            tag_word: Default::default(),
+            ..Bank::blank()
         }
     }
 }
@@ -240,7 +248,7 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
 
 /// The texture cache: see the module documentation. Generic over its widths; name it by
 /// its geometry with [`TextureCacheOf`].
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct TextureCache<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const TV: usize> {
     pub clock: Signal<In, Clock>,
     /// A request is offered: lanes `inp_en`, addresses `inp_addr0..3`, payload `inp_side`.
@@ -268,19 +276,11 @@ pub struct TextureCache<const SB: usize, const DA: usize, const W: usize, const 
     pub out_data3: Signal<Out, Bits<32>>,
     /// The request's `inp_side`.
     pub out_side: Signal<Out, Bits<SIDE>>,
-    /// A word of memory is asked this cycle, at `mem_addr`; held until `mem_ack`.
-    pub mem_valid: Signal<Out, Bit>,
-    pub mem_addr: Signal<Out, Bits<ADDR>>,
-    /// The memory takes the word asked this cycle.
-    pub mem_ack: Signal<In, Bit>,
-    /// A word asked earlier comes back this cycle (in the order asked).
-    pub mem_rvalid: Signal<In, Bit>,
-    pub mem_rdata: Signal<In, Bits<32>>,
+    /// The memory read port.
+    pub mem: TexMemory,
     /// Lookups of enabled lanes that hit, and that missed, counted once per request (in S1's
-    /// first cycle); lines fetched. 32 bits, wrapping.
-    pub hits: Signal<Out, Bits<32>>,
-    pub misses: Signal<Out, Bits<32>>,
-    pub fills: Signal<Out, Bits<32>>,
+    /// first cycle); lines fetched.
+    pub counters: CacheCounters,
     banks: [Bank<SB, DA, W, TAG, TV>; 4],
     /// The state: 0 Clear, 1 Run, 2 Fill, 3 Wait; the set Clear writes; a flush asked.
     st: DFF<Bits<2>>,
@@ -331,67 +331,9 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
         let p = m::Params { sets: 1 << SB, ways: W as u32, line: 1 << (DA - SB) };
         p.check().unwrap_or_else(|e| panic!("TextureCache<{SB}, {DA}, {W}, {TAG}, {TV}>: {e}"));
         TextureCache {
-            clock: Default::default(),
-            inp_valid: Default::default(),
-            inp_ready: Default::default(),
-            inp_en: Default::default(),
-            inp_addr0: Default::default(),
-            inp_addr1: Default::default(),
-            inp_addr2: Default::default(),
-            inp_addr3: Default::default(),
-            inp_side: Default::default(),
-            inp_flush: Default::default(),
-            out_valid: Default::default(),
-            out_ready: Default::default(),
-            out_data0: Default::default(),
-            out_data1: Default::default(),
-            out_data2: Default::default(),
-            out_data3: Default::default(),
-            out_side: Default::default(),
-            mem_valid: Default::default(),
-            mem_addr: Default::default(),
-            mem_ack: Default::default(),
-            mem_rvalid: Default::default(),
-            mem_rdata: Default::default(),
-            hits: Default::default(),
-            misses: Default::default(),
-            fills: Default::default(),
-            banks: std::array::from_fn(|_| Default::default()),
-            st: Default::default(),
-            clr: Default::default(),
-            flush_pend: Default::default(),
-            s1_valid: Default::default(),
-            s1_fresh: Default::default(),
-            s1_en: Default::default(),
-            s1_addr: Default::default(),
-            s1_side: Default::default(),
-            o_valid: Default::default(),
-            o_data: Default::default(),
-            o_side: Default::default(),
-            iss_mask: Default::default(),
-            iss_word: Default::default(),
-            rcv_mask: Default::default(),
-            rcv_word: Default::default(),
-            hits_r: Default::default(),
-            misses_r: Default::default(),
-            fills_r: Default::default(),
             word_last: Constant::new(((p.line - 1) as u64).to_bits()),
             line_base: Constant::new((((1u64 << ADDR) - 1) & !((p.line - 1) as u64)).to_bits()),
-            run: Default::default(),
-            all_hit: Default::default(),
-            miss_mask: Default::default(),
-            n_hit: Default::default(),
-            n_miss: Default::default(),
-            o_free: Default::default(),
-            s1_go: Default::default(),
-            pending: Default::default(),
-            take: Default::default(),
-            iss_lane: Default::default(),
-            iss_addr: Default::default(),
-            rcv_lane: Default::default(),
-            rcv: Default::default(),
-            rcv_last: Default::default(),
-            rcv_rest: Default::default(),
+            ..TextureCache::blank()
         }
     }
 }
@@ -482,9 +424,9 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
         }
 
         // The counters: S1's first cycle.
-        self.hits.next = self.hits_r.q.val();
-        self.misses.next = self.misses_r.q.val();
-        self.fills.next = self.fills_r.q.val();
+        self.counters.hits.next = self.hits_r.q.val();
+        self.counters.misses.next = self.misses_r.q.val();
+        self.counters.fills.next = self.fills_r.q.val();
         if self.run.val() & self.s1_valid.q.val() & self.s1_fresh.q.val() {
             self.hits_r.d.next = self.hits_r.q.val() + self.n_hit.val();
             self.misses_r.d.next = self.misses_r.q.val() + self.n_miss.val();
@@ -538,9 +480,9 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
                 self.iss_addr.next = self.s1_addr[b].q.val();
             }
         }
-        self.mem_valid.next = (self.st.q.val() == 2) & self.iss_mask.q.val().any();
-        self.mem_addr.next = (self.iss_addr.val() & self.line_base.val()) | bit_cast::<ADDR, DA>(self.iss_word.q.val());
-        if self.mem_valid.val() & self.mem_ack.val() {
+        self.mem.valid.next = (self.st.q.val() == 2) & self.iss_mask.q.val().any();
+        self.mem.addr.next = (self.iss_addr.val() & self.line_base.val()) | bit_cast::<ADDR, DA>(self.iss_word.q.val());
+        if self.mem.valid.val() & self.mem.ack.val() {
             self.iss_word.d.next = self.iss_word.q.val() + 1;
             if self.iss_word.q.val() == self.word_last.val() {
                 self.iss_word.d.next = 0.into();
@@ -559,7 +501,7 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
         if self.rcv_mask.q.val().get_bit(0) {
             self.rcv_lane.next = 0.into();
         }
-        self.rcv.next = (self.st.q.val() == 2) & self.rcv_mask.q.val().any() & self.mem_rvalid.val();
+        self.rcv.next = (self.st.q.val() == 2) & self.rcv_mask.q.val().any() & self.mem.rvalid.val();
         self.rcv_last.next = self.rcv_word.q.val() == self.word_last.val();
         self.rcv_rest.next = self.rcv_mask.q.val() & (self.rcv_mask.q.val() - 1);
         for b in 0..4 {
@@ -568,7 +510,7 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
                 self.banks[b].fill.next = true;
             }
             self.banks[b].word.next = self.rcv_word.q.val();
-            self.banks[b].wdata.next = self.mem_rdata.val();
+            self.banks[b].wdata.next = self.mem.rdata.val();
             self.banks[b].last.next = self.rcv_last.val();
         }
         if self.rcv.val() {
@@ -589,13 +531,10 @@ crate::pins!(impl[const SB: usize, const DA: usize, const W: usize, const TAG: u
     TextureCache<SB, DA, W, TAG, TV> {
     clock: clock,
     inputs: [
-        inp_valid, inp_en, inp_addr0, inp_addr1, inp_addr2, inp_addr3, inp_side, inp_flush, out_ready, mem_ack,
-        mem_rvalid, mem_rdata,
+        inp_valid, inp_en, inp_addr0, inp_addr1, inp_addr2, inp_addr3, inp_side, inp_flush, out_ready,
     ],
-    outputs: [
-        inp_ready, out_valid, out_data0, out_data1, out_data2, out_data3, out_side, mem_valid, mem_addr, hits,
-        misses, fills,
-    ],
+    outputs: [inp_ready, out_valid, out_data0, out_data1, out_data2, out_data3, out_side],
+    links: [mem, counters],
 });
 
 /// A geometry (SETS, WAYS, LINE), as a type: [`TextureCacheOf`] is its unit.

@@ -40,6 +40,7 @@ use crate::divider::Divider;
 use crate::emit::{emit_unit, Emitted};
 use crate::mul::Mul;
 use crate::Params;
+use blank::Blank;
 use fx::TexFormats;
 use model::texture_coords::{log2_table, MAGNIFIED};
 use rust_hdl::prelude::*;
@@ -103,7 +104,7 @@ fn word<const N: usize>(v: u128) -> Constant<Bits<N>> {
 /// G_SHIFT)| << size_log2, for x = s or t and d = d/dx or d/dy (`model::texture_coords`'s
 /// `numerator`), from the product x · dq's bits from G_SHIFT up (`p`, its top bit the
 /// product's sign; the product is stage C1's, registered). Combinational.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Numerator {
     pub dxq: Signal<In, Bits<DST>>,
     pub p: Signal<In, Bits<PGS>>,
@@ -124,17 +125,12 @@ impl Default for Numerator {
     fn default() -> Self {
         let mask = |bits: usize| (1u128 << bits) - 1;
         Self {
-            dxq: Default::default(),
-            p: Default::default(),
-            size_log2: Default::default(),
-            u: Default::default(),
-            g: Default::default(),
-            g_abs: Default::default(),
             dst_msb: at(DST - 1),
             pgs_msb: at(PGS - 1),
             g_msb: at(G - 1),
             ext_dst: word(mask(G) ^ mask(DST)),
             ext_pgs: word(mask(G) ^ mask(PGS)),
+            ..Self::blank()
         }
     }
 }
@@ -159,7 +155,7 @@ impl Logic for Numerator {
 }
 
 /// The texture coordinates unit; `exact` chooses GL's exact rho over 001's eq. (4).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct TextureCoords {
     pub clock: Signal<In, Clock>,
     pub en: Signal<In, Bit>,
@@ -184,6 +180,7 @@ pub struct TextureCoords {
     // Normalise q and divide; the rest waits in delay lines.
     qn: Signal<Local, Bits<QB>>,
     lz: Signal<Local, Bits<8>>,
+    #[given]
     recip: Divider<DIV_N, DIV_D, { DIV_D + 1 }, DIV_Q, DIV_QM>,
     dl_sq: Vec<DFF<Bits<ST>>>,
     dl_tq: Vec<DFF<Bits<ST>>>,
@@ -267,7 +264,9 @@ pub struct TextureCoords {
     e2_p: [DFF<Bits<8>>; 2],
     e2_idx: [DFF<Bits<T>>; 2],
     e2_lz: DFF<Bits<8>>,
+    #[given]
     log_m: SyncROM<Bits<TE>, T>,
+    #[given]
     log_r: SyncROM<Bits<TE>, T>,
     sum: Signal<Local, Bits<SUM>>,
     rounded: Signal<Local, Bits<SUM>>,
@@ -316,27 +315,6 @@ impl TextureCoords {
         let offset = (i64::from(F.q.frac) - QB as i64 - i64::from(F.dst.frac) - R as i64) << T;
         let mask = |bits: usize| (1u128 << bits) - 1;
         Self {
-            clock: Default::default(),
-            en: Default::default(),
-            inp_valid: Default::default(),
-            inp_sq: Default::default(),
-            inp_tq: Default::default(),
-            inp_q: Default::default(),
-            inp_dsq_x: Default::default(),
-            inp_dsq_y: Default::default(),
-            inp_dtq_x: Default::default(),
-            inp_dtq_y: Default::default(),
-            inp_dq_x: Default::default(),
-            inp_dq_y: Default::default(),
-            inp_ws: Default::default(),
-            inp_hs: Default::default(),
-            out_valid: Default::default(),
-            out_s: Default::default(),
-            out_t: Default::default(),
-            out_lambda: Default::default(),
-            qn: Default::default(),
-            lz: Default::default(),
-            recip: Divider::new(DIV_STAGES),
             dl_sq: (0..DIV_STAGES).map(|_| Default::default()).collect(),
             dl_tq: (0..DIV_STAGES).map(|_| Default::default()).collect(),
             dl_dsq_x: (0..DIV_STAGES).map(|_| Default::default()).collect(),
@@ -348,78 +326,6 @@ impl TextureCoords {
             dl_lz: (0..DIV_STAGES).map(|_| Default::default()).collect(),
             dl_ws: (0..DIV_STAGES).map(|_| Default::default()).collect(),
             dl_hs: (0..DIV_STAGES).map(|_| Default::default()).collect(),
-            mul_s: Default::default(),
-            mul_t: Default::default(),
-            sh: Default::default(),
-            b1_valid: Default::default(),
-            b1_p: Default::default(),
-            b1_sh: Default::default(),
-            b1_dxq: Default::default(),
-            b1_dq: Default::default(),
-            b1_lz: Default::default(),
-            b1_ws: Default::default(),
-            b1_hs: Default::default(),
-            b1_r: Default::default(),
-            wide: Default::default(),
-            st_c: Default::default(),
-            b_valid: Default::default(),
-            b_st: Default::default(),
-            b_dxq: Default::default(),
-            b_dq: Default::default(),
-            b_lz: Default::default(),
-            b_ws: Default::default(),
-            b_hs: Default::default(),
-            b_r: Default::default(),
-            mul_g: Default::default(),
-            c1_valid: Default::default(),
-            c1_st: Default::default(),
-            c1_p: Default::default(),
-            c1_dxq: Default::default(),
-            c1_lz: Default::default(),
-            c1_ws: Default::default(),
-            c1_hs: Default::default(),
-            c1_r: Default::default(),
-            num: Default::default(),
-            c_valid: Default::default(),
-            c_st: Default::default(),
-            c_u: Default::default(),
-            c_lz: Default::default(),
-            c_r: Default::default(),
-            mul_sq: Default::default(),
-            m_01: Default::default(),
-            m_23: Default::default(),
-            m_max: Default::default(),
-            m_x: Default::default(),
-            m_y: Default::default(),
-            d_valid: Default::default(),
-            d_st: Default::default(),
-            d_m: Default::default(),
-            d_lz: Default::default(),
-            d_r: Default::default(),
-            p_m: Default::default(),
-            p_r: Default::default(),
-            norm_m: Default::default(),
-            norm_r: Default::default(),
-            e1_valid: Default::default(),
-            e1_zero: Default::default(),
-            e1_st: Default::default(),
-            e1_p: Default::default(),
-            e1_idx: Default::default(),
-            e1_lz: Default::default(),
-            e2_valid: Default::default(),
-            e2_zero: Default::default(),
-            e2_st: Default::default(),
-            e2_p: Default::default(),
-            e2_idx: Default::default(),
-            e2_lz: Default::default(),
-            log_m: rom(),
-            log_r: rom(),
-            sum: Default::default(),
-            rounded: Default::default(),
-            lambda24: Default::default(),
-            e_valid: Default::default(),
-            e_st: Default::default(),
-            e_lambda: Default::default(),
             exact: Constant::new(exact),
             dividend: word(1 << (R + QB)),
             index: (0..M).map(at).collect(),
@@ -442,6 +348,7 @@ impl TextureCoords {
             ext_lambda: word(mask(LAMBDA) ^ mask(SUM)),
             offset: word(offset as i128 as u128 & mask(SUM)),
             magnified: word(MAGNIFIED as i128 as u128 & mask(LAMBDA)),
+            ..Self::blank(TextureCoordsGiven { recip: Divider::new(DIV_STAGES), log_m: rom(), log_r: rom() })
         }
     }
 }

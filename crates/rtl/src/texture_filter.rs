@@ -53,6 +53,7 @@ use crate::emit::{emit, Emitted};
 use crate::mul::Mul;
 use crate::parts::defaults;
 use crate::Params;
+use blank::Blank;
 use fx::TexFormats;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
@@ -96,7 +97,7 @@ const ADD: u64 = 4;
 /// for 6, {c, c} for 4, eight copies of a 1-bit alpha), alpha 255 for a format without one.
 /// Channels from the word's low bits up: the last channel (alpha, or blue) lowest. Bits
 /// above the format's are ignored. Combinational.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Decode {
     /// The texel's word, its format's bits low.
     pub word: Signal<In, Bits<32>>,
@@ -121,20 +122,11 @@ pub struct Decode {
 impl Default for Decode {
     fn default() -> Self {
         Decode {
-            word: Default::default(),
-            format: Default::default(),
-            rgba: Default::default(),
             rgb565: Constant::new(RGB565.to_bits()),
             rgba5551: Constant::new(RGBA5551.to_bits()),
             rgba4444: Constant::new(RGBA4444.to_bits()),
             rgb888: Constant::new(RGB888.to_bits()),
-            c5r: Default::default(),
-            c5g: Default::default(),
-            c6g: Default::default(),
-            r: Default::default(),
-            g: Default::default(),
-            b: Default::default(),
-            a: Default::default(),
+            ..Decode::blank()
         }
     }
 }
@@ -198,7 +190,7 @@ impl Logic for Decode {
 /// (`model::texture_filter::weight`): alpha's top `WT` bits (linear), or the Gaussian
 /// ROM, round((3x² - 2x³)·2^WT) at x = alpha / 2^SUB (001 Fig. 6), whose entries are
 /// `model::texture_filter::gaussian_table`'s by construction. Combinational.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Weight {
     /// The fraction, `SUB` bits.
     pub alpha: Signal<In, Bits<SUB>>,
@@ -206,6 +198,7 @@ pub struct Weight {
     pub gaussian: Signal<In, Bit>,
     /// The weight, 0..=2^WT.
     pub w: Signal<Out, Bits<W1>>,
+    #[given]
     rom: ROM<Bits<W1>, SUB>,
     /// alpha >> down << up: SUB - WT or 0, WT - SUB or 0.
     down: Constant<Bits<8>>,
@@ -218,12 +211,9 @@ impl Default for Weight {
         assert_eq!(table.len(), 1 << SUB, "one Gaussian weight per fraction");
         assert!(table.iter().all(|&w| w <= 1 << WT), "Gaussian weights in 0..=2^{WT}");
         Weight {
-            alpha: Default::default(),
-            gaussian: Default::default(),
-            w: Default::default(),
-            rom: ROM::from(table.into_iter().map(|w| Bits::<W1>::from(u64::from(w)))),
             down: Constant::new(SUB.saturating_sub(WT).to_bits()),
             up: Constant::new(WT.saturating_sub(SUB).to_bits()),
+            ..Weight::blank(WeightGiven { rom: ROM::from(table.into_iter().map(|w| Bits::<W1>::from(u64::from(w)))) })
         }
     }
 }
@@ -245,7 +235,7 @@ impl Logic for Weight {
 /// the weight `WB = W + 1` bits signed (a zero on top), the product and sum `P = Y + 1`
 /// bits, of which `y` is the low `Y = X + S` (the sum lies in 0..=(2^X - 1)·2^S, so those
 /// are it). Combinational.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Lerp<const X: usize, const D: usize, const W: usize, const WB: usize, const P: usize, const Y: usize> {
     pub x0: Signal<In, Bits<X>>,
     pub x1: Signal<In, Bits<X>>,
@@ -261,14 +251,7 @@ impl<const X: usize, const D: usize, const W: usize, const WB: usize, const P: u
 {
     fn default() -> Self {
         assert!(D == X + 1 && WB == W + 1 && Y == X + W - 1 && P == Y + 1, "Lerp<{X}, {D}, {W}, {WB}, {P}, {Y}>");
-        Lerp {
-            x0: Default::default(),
-            x1: Default::default(),
-            w: Default::default(),
-            y: Default::default(),
-            s: Constant::new((W - 1).to_bits()),
-            mul: Default::default(),
-        }
+        Lerp { s: Constant::new((W - 1).to_bits()), ..Lerp::blank() }
     }
 }
 
@@ -293,7 +276,7 @@ type LevelLerp = Lerp<8, 9, { LF + 1 }, { LF + 2 }, { BL + 1 }, BL>;
 /// `y = (x + 2^(S-1)) >> S`, S = IN - 8: a sum of 8-bit values weighted by 2^S in all,
 /// rounded half up to 8 bits. x ≤ 255·2^S, so x + 2^(S-1) < 2^IN: nothing wraps (and in
 /// Verilog the sum is `IN` bits wide, as here). Combinational.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Round<const IN: usize> {
     pub x: Signal<In, Bits<IN>>,
     pub y: Signal<Out, Bits<8>>,
@@ -305,10 +288,9 @@ impl<const IN: usize> Default for Round<IN> {
     fn default() -> Self {
         assert!(IN > 8, "Round<{IN}>");
         Round {
-            x: Default::default(),
-            y: Default::default(),
             half: Constant::new((1u64 << (IN - 9)).to_bits()),
             shift: Constant::new((IN - 8).to_bits()),
+            ..Round::blank()
         }
     }
 }
@@ -323,7 +305,7 @@ impl<const IN: usize> Logic for Round<IN> {
 /// One level's bilinear filter (`model::texture_filter::bilinear`), stages 2 and 3:
 /// `c` is the filtered colour of the texels and weights given two enabled clocks before.
 /// Channel lane j is bits 8j..8j+7 of a texel and of `c` (j = 0: A, 3: R).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Level {
     pub clock: Signal<In, Clock>,
     pub en: Signal<In, Bit>,
@@ -351,23 +333,7 @@ pub struct Level {
 
 impl Default for Level {
     fn default() -> Self {
-        Level {
-            clock: Default::default(),
-            en: Default::default(),
-            t0: Default::default(),
-            t1: Default::default(),
-            t2: Default::default(),
-            t3: Default::default(),
-            a: Default::default(),
-            b: Default::default(),
-            c: Default::default(),
-            h: defaults(),
-            h_r: defaults(),
-            b_r: Default::default(),
-            v: defaults(),
-            round: defaults(),
-            c_r: defaults(),
-        }
+        Level { h: defaults(), h_r: defaults(), v: defaults(), round: defaults(), c_r: defaults(), ..Level::blank() }
     }
 }
 
@@ -425,7 +391,7 @@ impl Logic for Level {
 /// | REPLACE, 5..7 | | | | cs |
 ///
 /// Combinational.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct EnvChannel {
     pub cf: Signal<In, Bits<8>>,
     pub cs: Signal<In, Bits<8>>,
@@ -454,22 +420,11 @@ pub struct EnvChannel {
 impl Default for EnvChannel {
     fn default() -> Self {
         EnvChannel {
-            cf: Default::default(),
-            cs: Default::default(),
-            a_s: Default::default(),
-            mode: Default::default(),
-            out: Default::default(),
-            mul: Default::default(),
-            prod: Default::default(),
-            biased: Default::default(),
-            rounded: Default::default(),
-            sum: Default::default(),
-            inv_cs: Default::default(),
-            base: Default::default(),
             modulate: Constant::new(MODULATE.to_bits()),
             decal: Constant::new(DECAL.to_bits()),
             blend: Constant::new(BLEND.to_bits()),
             add: Constant::new(ADD.to_bits()),
+            ..EnvChannel::blank()
         }
     }
 }
@@ -512,7 +467,7 @@ impl Logic for EnvChannel {
 }
 
 /// The filter stage of 001's texture unit: see the module doc.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct TextureFilter {
     pub clock: Signal<In, Clock>,
     /// High: every register moves on; low: every register holds (a stall).
@@ -601,62 +556,18 @@ pub struct TextureFilter {
 impl Default for TextureFilter {
     fn default() -> Self {
         TextureFilter {
-            clock: Default::default(),
-            en: Default::default(),
-            inp_valid: Default::default(),
-            inp_words0_0: Default::default(),
-            inp_words0_1: Default::default(),
-            inp_words0_2: Default::default(),
-            inp_words0_3: Default::default(),
-            inp_words1_0: Default::default(),
-            inp_words1_1: Default::default(),
-            inp_words1_2: Default::default(),
-            inp_words1_3: Default::default(),
-            inp_alpha0: Default::default(),
-            inp_beta0: Default::default(),
-            inp_alpha1: Default::default(),
-            inp_beta1: Default::default(),
-            inp_frac: Default::default(),
-            inp_two_levels: Default::default(),
-            inp_format: Default::default(),
-            inp_gaussian: Default::default(),
-            inp_env: Default::default(),
-            inp_cf: Default::default(),
-            out_valid: Default::default(),
-            out_rgba: Default::default(),
             decode: defaults(),
             weight: defaults(),
             s1_texel: defaults(),
             s1_a: defaults(),
             s1_b: defaults(),
-            s1_frac: Default::default(),
-            s1_two: Default::default(),
-            s1_env: Default::default(),
-            s1_cf: Default::default(),
-            s1_valid: Default::default(),
             level: defaults(),
-            s2_frac: Default::default(),
-            s2_two: Default::default(),
-            s2_env: Default::default(),
-            s2_cf: Default::default(),
-            s2_valid: Default::default(),
-            s3_frac: Default::default(),
-            s3_two: Default::default(),
-            s3_env: Default::default(),
-            s3_cf: Default::default(),
-            s3_valid: Default::default(),
             mix: defaults(),
-            mix_w: Default::default(),
             mix_round: defaults(),
             s4_cs: defaults(),
-            s4_env: Default::default(),
-            s4_cf: Default::default(),
-            s4_valid: Default::default(),
             environment: defaults(),
-            alpha: Default::default(),
-            s5_rgba: Default::default(),
-            s5_valid: Default::default(),
             decal: Constant::new(DECAL.to_bits()),
+            ..TextureFilter::blank()
         }
     }
 }

@@ -33,10 +33,11 @@
 use crate::emit::{emit_unit, Emitted};
 use crate::n10::links::{BlendPixelSource, PixelSink};
 use crate::n10::widths::{DEPTH, SCREEN};
-use crate::texture_cache::ADDR;
+use crate::texture_cache::{CacheCounters, TexMemory, ADDR};
 use crate::texture_setup::{TextureSetup, EXP, MANT, QB, ST, XY};
 use crate::texture_unit::TextureUnit6424;
 use crate::Params;
+use blank::Blank;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::RAM;
 
@@ -91,7 +92,7 @@ crate::bundle! {
 }
 
 /// The texture path: see the module documentation.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct TexturePath {
     pub clock: Signal<In, Clock>,
     /// The fragments: position, depth and lit colour.
@@ -104,14 +105,8 @@ pub struct TexturePath {
     /// The textured fragments: the environment's colour and alpha, the triangle's mode.
     pub out: BlendPixelSource,
     /// `texture_unit`'s memory read port and counters.
-    pub mem_valid: Signal<Out, Bit>,
-    pub mem_addr: Signal<Out, Bits<ADDR>>,
-    pub mem_ack: Signal<In, Bit>,
-    pub mem_rvalid: Signal<In, Bit>,
-    pub mem_rdata: Signal<In, Bits<32>>,
-    pub hits: Signal<Out, Bits<32>>,
-    pub misses: Signal<Out, Bits<32>>,
-    pub fills: Signal<Out, Bits<32>>,
+    pub mem: TexMemory,
+    pub counters: CacheCounters,
     /// No fragment in the path, and no triangle being set up.
     pub idle: Signal<Out, Bit>,
 
@@ -148,37 +143,7 @@ impl TexturePath {
     /// The path, its level of detail by GL's exact rho when `exact` (else 001's eq. 4).
     pub fn new(exact: bool) -> TexturePath {
         TexturePath {
-            clock: Default::default(),
-            inp: Default::default(),
-            inp_new: Default::default(),
-            tri: Default::default(),
-            inp_flush: Default::default(),
-            out: Default::default(),
-            mem_valid: Default::default(),
-            mem_addr: Default::default(),
-            mem_ack: Default::default(),
-            mem_rvalid: Default::default(),
-            mem_rdata: Default::default(),
-            hits: Default::default(),
-            misses: Default::default(),
-            fills: Default::default(),
-            idle: Default::default(),
-            setup: Default::default(),
             unit: TextureUnit6424::new(exact),
-            side: Default::default(),
-            phase: Default::default(),
-            loaded: Default::default(),
-            in_px: Default::default(),
-            cf: Default::default(),
-            wp: Default::default(),
-            rt: Default::default(),
-            st_word: Default::default(),
-            same: Default::default(),
-            start: Default::default(),
-            en: Default::default(),
-            accept: Default::default(),
-            leave: Default::default(),
-            side_in: Default::default(),
             run: Constant::new(PHASES[0].to_bits()),
             drain: Constant::new(PHASES[1].to_bits()),
             setup_phase: Constant::new(PHASES[2].to_bits()),
@@ -186,6 +151,7 @@ impl TexturePath {
             at_x: Constant::new((SCREEN + DEPTH + 3).to_bits()),
             at_y: Constant::new((DEPTH + 3).to_bits()),
             at_z: Constant::new(3usize.to_bits()),
+            ..TexturePath::blank()
         }
     }
 }
@@ -273,14 +239,8 @@ impl Logic for TexturePath {
         self.unit.st_env.next = self.tri.env.val();
         self.unit.inp_flush.next = self.inp_flush.val();
         self.unit.out_ready.next = self.out.ready.val();
-        self.unit.mem_ack.next = self.mem_ack.val();
-        self.unit.mem_rvalid.next = self.mem_rvalid.val();
-        self.unit.mem_rdata.next = self.mem_rdata.val();
-        self.mem_valid.next = self.unit.mem_valid.val();
-        self.mem_addr.next = self.unit.mem_addr.val();
-        self.hits.next = self.unit.hits.val();
-        self.misses.next = self.unit.misses.val();
-        self.fills.next = self.unit.fills.val();
+        TexMemory::link(&mut self.mem, &mut self.unit.mem);
+        CacheCounters::link(&mut self.counters, &mut self.unit.counters);
 
         // Fragments in: the pixel part moves when its last stage is empty or taken.
         self.en.next = !self.setup.out_valid.val() | self.unit.inp_ready.val();
@@ -357,9 +317,9 @@ impl Logic for TexturePath {
 
 crate::pins!(TexturePath {
     clock: clock,
-    inputs: [inp_new, inp_flush, mem_ack, mem_rvalid, mem_rdata],
-    outputs: [mem_valid, mem_addr, hits, misses, fills, idle],
-    links: [inp, tri, out],
+    inputs: [inp_new, inp_flush],
+    outputs: [idle],
+    links: [inp, tri, out, mem, counters],
 });
 
 /// `UNITS` entry: the path, the level-of-detail rule `params["EXACT"]`.

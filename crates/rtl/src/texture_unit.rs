@@ -112,10 +112,11 @@
 
 use crate::emit::{emit_unit, Emitted};
 use crate::texture_address::TextureAddress;
-use crate::texture_cache::{TextureCache, ADDR};
+use crate::texture_cache::{CacheCounters, TexMemory, TextureCache, ADDR};
 use crate::texture_coords::{TextureCoords, DQ, DST, QB, ST};
 use crate::texture_filter::TextureFilter;
 use crate::Params;
+use blank::Blank;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::RAM;
 
@@ -170,7 +171,7 @@ impl Logic for Pick {
 
 /// The texture unit over a cache of `1 << SB` sets, `W` ways, `1 << (DA - SB)` words a line
 /// (`texture_cache`'s widths; name it by geometry with [`TextureUnitOf`]).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct TextureUnit<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const TV: usize> {
     pub clock: Signal<In, Clock>,
     /// A pixel is offered: s·q, t·q (`st`), q (`q`), its triangle's gradients (`dst`, `dq`),
@@ -215,17 +216,9 @@ pub struct TextureUnit<const SB: usize, const DA: usize, const W: usize, const T
     pub out_ready: Signal<In, Bit>,
     pub out_rgba: Signal<Out, Bits<32>>,
     pub out_tag: Signal<Out, Bits<32>>,
-    /// The cache's memory read port: a word asked (`mem_valid`, `mem_addr`) until
-    /// `mem_ack`; words answered in order (`mem_rvalid`, `mem_rdata`).
-    pub mem_valid: Signal<Out, Bit>,
-    pub mem_addr: Signal<Out, Bits<ADDR>>,
-    pub mem_ack: Signal<In, Bit>,
-    pub mem_rvalid: Signal<In, Bit>,
-    pub mem_rdata: Signal<In, Bits<32>>,
-    /// The cache's counters, per lane lookup (32 bits, wrapping).
-    pub hits: Signal<Out, Bits<32>>,
-    pub misses: Signal<Out, Bits<32>>,
-    pub fills: Signal<Out, Bits<32>>,
+    /// The cache's memory read port and its counters.
+    pub mem: TexMemory,
+    pub counters: CacheCounters,
     /// No pixel in flight: the state may be loaded.
     pub idle: Signal<Out, Bit>,
 
@@ -277,84 +270,7 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
 {
     /// The unit, with GL's exact rho when `exact` (else 001's eq. 4).
     pub fn new(exact: bool) -> Self {
-        Self {
-            clock: Default::default(),
-            inp_valid: Default::default(),
-            inp_ready: Default::default(),
-            inp_sq: Default::default(),
-            inp_tq: Default::default(),
-            inp_q: Default::default(),
-            inp_dsq_x: Default::default(),
-            inp_dsq_y: Default::default(),
-            inp_dtq_x: Default::default(),
-            inp_dtq_y: Default::default(),
-            inp_dq_x: Default::default(),
-            inp_dq_y: Default::default(),
-            inp_cf: Default::default(),
-            inp_tag: Default::default(),
-            st_load: Default::default(),
-            st_ws: Default::default(),
-            st_hs: Default::default(),
-            st_levels: Default::default(),
-            st_base: Default::default(),
-            st_min_linear: Default::default(),
-            st_mag_linear: Default::default(),
-            st_mip: Default::default(),
-            st_wrap_s: Default::default(),
-            st_wrap_t: Default::default(),
-            st_format: Default::default(),
-            st_gaussian: Default::default(),
-            st_env: Default::default(),
-            inp_flush: Default::default(),
-            out_valid: Default::default(),
-            out_ready: Default::default(),
-            out_rgba: Default::default(),
-            out_tag: Default::default(),
-            mem_valid: Default::default(),
-            mem_addr: Default::default(),
-            mem_ack: Default::default(),
-            mem_rvalid: Default::default(),
-            mem_rdata: Default::default(),
-            hits: Default::default(),
-            misses: Default::default(),
-            fills: Default::default(),
-            idle: Default::default(),
-            coords: TextureCoords::new(exact),
-            address: Default::default(),
-            cache: Default::default(),
-            pick: Default::default(),
-            filter: Default::default(),
-            cf_ram: Default::default(),
-            tag_ram: Default::default(),
-            r_ws: Default::default(),
-            r_hs: Default::default(),
-            r_levels: Default::default(),
-            r_base: Default::default(),
-            r_min_linear: Default::default(),
-            r_mag_linear: Default::default(),
-            r_mip: Default::default(),
-            r_wrap_s: Default::default(),
-            r_wrap_t: Default::default(),
-            r_format: Default::default(),
-            r_gaussian: Default::default(),
-            r_env: Default::default(),
-            second: Default::default(),
-            wp: Default::default(),
-            rc: Default::default(),
-            rt: Default::default(),
-            pair_words: Default::default(),
-            pair_alpha: Default::default(),
-            pair_beta: Default::default(),
-            en_f: Default::default(),
-            en_a: Default::default(),
-            en_c: Default::default(),
-            take: Default::default(),
-            accept: Default::default(),
-            attr: Default::default(),
-            res: Default::default(),
-            first: Default::default(),
-            whole: Default::default(),
-        }
+        Self { coords: TextureCoords::new(exact), ..Self::blank() }
     }
 }
 
@@ -457,14 +373,8 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
         self.cache.inp_side.next = bit_cast::<64, 32>(self.attr.val());
         self.cache.inp_flush.next = self.inp_flush.val();
         self.cache.out_ready.next = self.en_f.val();
-        self.cache.mem_ack.next = self.mem_ack.val();
-        self.cache.mem_rvalid.next = self.mem_rvalid.val();
-        self.cache.mem_rdata.next = self.mem_rdata.val();
-        self.mem_valid.next = self.cache.mem_valid.val();
-        self.mem_addr.next = self.cache.mem_addr.val();
-        self.hits.next = self.cache.hits.val();
-        self.misses.next = self.cache.misses.val();
-        self.fills.next = self.cache.fills.val();
+        TexMemory::link(&mut self.mem, &mut self.cache.mem);
+        CacheCounters::link(&mut self.counters, &mut self.cache.counters);
 
         // Coords moves on when its last stage is empty or texture_address takes its pixel's
         // last access.
@@ -582,9 +492,10 @@ crate::pins!(impl[const SB: usize, const DA: usize, const W: usize, const TAG: u
     inputs: [
         inp_valid, inp_sq, inp_tq, inp_q, inp_dsq_x, inp_dsq_y, inp_dtq_x, inp_dtq_y, inp_dq_x, inp_dq_y, inp_cf,
         inp_tag, st_load, st_ws, st_hs, st_levels, st_base, st_min_linear, st_mag_linear, st_mip, st_wrap_s,
-        st_wrap_t, st_format, st_gaussian, st_env, inp_flush, out_ready, mem_ack, mem_rvalid, mem_rdata,
+        st_wrap_t, st_format, st_gaussian, st_env, inp_flush, out_ready,
     ],
-    outputs: [inp_ready, out_valid, out_rgba, out_tag, mem_valid, mem_addr, hits, misses, fills, idle],
+    outputs: [inp_ready, out_valid, out_rgba, out_tag, idle],
+    links: [mem, counters],
 });
 
 /// The cache geometries the unit is built for: (SETS, WAYS, LINE) and its type.

@@ -18,6 +18,7 @@ use super::cull_sort::{COLOR, INV_W, XY, Z};
 use super::links::{TriangleSink, TriangleSource};
 use crate::emit::{emit_unit, Emitted};
 use crate::Params;
+use blank::Blank;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::RAM;
 
@@ -28,7 +29,7 @@ pub const VW: usize = 2 * XY + Z + 3 * COLOR + INV_W;
 pub const DEPTHS: [u32; 4] = [4, 64, 256, 512];
 
 /// `2^AB` triangles: see the module documentation.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct TriangleQueue<const AB: usize> {
     pub clock: Signal<In, Clock>,
     pub inp: TriangleSink,
@@ -62,27 +63,14 @@ impl<const AB: usize> Default for TriangleQueue<AB> {
         assert!((2..=9).contains(&AB), "TriangleQueue<{AB}>: 4 to 512 entries");
         let at = |n: usize| Constant::new(bits(n as u64));
         TriangleQueue {
-            clock: Default::default(),
-            inp: Default::default(),
-            out: Default::default(),
-            idle: Default::default(),
-            v0_ram: Default::default(),
-            v1_ram: Default::default(),
-            v2_ram: Default::default(),
-            wr: Default::default(),
-            rd: Default::default(),
-            level: Default::default(),
-            fresh: Default::default(),
             depth: at(1 << AB),
-            push: Default::default(),
-            pop: Default::default(),
-            read_at: Default::default(),
             at_y: at(XY),
             at_z: at(2 * XY),
             at_c0: at(2 * XY + Z),
             at_c1: at(2 * XY + Z + COLOR),
             at_c2: at(2 * XY + Z + 2 * COLOR),
             at_iw: at(2 * XY + Z + 3 * COLOR),
+            ..TriangleQueue::blank()
         }
     }
 }

@@ -79,12 +79,13 @@ mod geometry;
 
 use super::cull_sort::{COLOR, OUTCODE, XY, Z};
 use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_Q, LATENCY_MAX};
+use super::links::{SortedSink, TriangleSetupSource};
+use super::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, WIDTHS, Z_ACC};
 use crate::emit::{ports, verilog, Emitted};
 use crate::mul::PipelinedMul;
 use crate::parts::defaults;
-use super::links::{SortedSink, TriangleSetupSource};
-use super::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, WIDTHS, Z_ACC};
 use crate::Params;
+use blank::Blank;
 use geometry::Geometry;
 pub use model::triangle_setup::schedule::{Schedule, COPIES_MAX, DIVIDER_OPERANDS, MULTIPLIERS_MAX, PRODUCTS};
 use rust_hdl::prelude::*;
@@ -126,7 +127,7 @@ const _: () = assert!(DZ >= DC && DZ >= Z_ACC && DC >= C_ACC && ATTR <= MUL_P &&
 const _: () = assert!(MUL_B > XY + 2 && MUL_B > COLOR && EDGE_Q + 2 <= MUL_B);
 
 /// The triangle setup unit; see the module documentation.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct TriangleSetup {
     pub clock: Signal<In, Clock>,
     /// The sorted triangle in (`inp.v<k>_iw` is not read: the vector method's).
@@ -142,6 +143,7 @@ pub struct TriangleSetup {
 
     // Sub-blocks.
     mul: Vec<PipelinedMul<MUL_A, MUL_B, MUL_P>>,
+    #[given]
     div: DividerRtl,
 
     // Control: per copy, the cycle of the triangle in it (copy v: v II + 1 to (v + 1) II, the
@@ -359,30 +361,14 @@ impl TriangleSetup {
             ((f.ooa_d.frac + f.z.frac - f.dz.frac) as usize, (f.ooa_d.frac + f.color.frac - f.dc.frac) as usize);
         let (bz, bc) = ((f.z_acc.frac - f.z.frac) as usize, (f.c_acc.frac - f.color.frac) as usize);
         Ok(TriangleSetup {
-            clock: Default::default(),
-            inp: Default::default(),
-            out: Default::default(),
-            recip_mant: Default::default(),
-            recip_exp: Default::default(),
             mul: (0..k).map(|_| Default::default()).collect(),
-            div: DividerRtl::new(l),
             t: defaults(),
-            take: Default::default(),
-            run: Default::default(),
-            at_norm: Default::default(),
             at_iss: defaults(),
             at_res: defaults(),
-            at_handover: Default::default(),
             act_r: defaults(),
             add_r: defaults(),
-            norm_r: Default::default(),
             iss_r: defaults(),
             res_r: defaults(),
-            handover_r: Default::default(),
-            valid_r: Default::default(),
-            busy_r: Default::default(),
-            phase: Default::default(),
-            off_grid_r: Default::default(),
             vx: defaults(),
             vy: defaults(),
             vz: defaults(),
@@ -396,34 +382,12 @@ impl TriangleSetup {
             q: defaults(),
             rho: defaults(),
             maj_left: defaults(),
-            g0: Default::default(),
-            g1: Default::default(),
-            g2: Default::default(),
-            g3: Default::default(),
-            g4: Default::default(),
-            area: Default::default(),
-            area_abs: Default::default(),
-            abs_p: Default::default(),
             nib_any: defaults(),
             nib_pos: defaults(),
             nib_sh: defaults(),
-            exp_c: Default::default(),
-            nsh_c: Default::default(),
-            norm: Default::default(),
-            nsh: Default::default(),
-            norm_d: Default::default(),
             bit_index: consts(|i| i),
-            div_v: Default::default(),
-            div_n: Default::default(),
-            div_d: Default::default(),
-            mant_s: Default::default(),
-            rsh: Default::default(),
-            left: Default::default(),
-            exp_r: Default::default(),
-            q_n: Default::default(),
             q_msb: Constant::new((QL - 1).to_bits()),
             q_ext: ones_from(QL, NB),
-            r_pos: Default::default(),
             xi: defaults(),
             ed: defaults(),
             pa: defaults(),
@@ -439,8 +403,6 @@ impl TriangleSetup {
             op_q: defaults(),
             attr0: defaults(),
             shr: defaults(),
-            lsh: Default::default(),
-            area_base: Default::default(),
             num_base: defaults(),
             gx_base: defaults(),
             gy_base: defaults(),
@@ -455,8 +417,6 @@ impl TriangleSetup {
             inc0: defaults(),
             inc1: defaults(),
             ddx_o: defaults(),
-            o_walk: Default::default(),
-            o_maj_left: Default::default(),
             o_j: defaults(),
             o_count: defaults(),
             o_d: defaults(),
@@ -486,6 +446,7 @@ impl TriangleSetup {
             ones: ones_from(0, G),
             _k: k,
             _copies: s.copies,
+            ..TriangleSetup::blank(TriangleSetupGiven { div: DividerRtl::new(l) })
         })
     }
 }
@@ -494,7 +455,10 @@ impl Logic for TriangleSetup {
     #[hdl_gen]
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written.
-        dff_setup!(self, clock, area, norm, nsh, div_v, div_n, div_d, mant_s, rsh, left, norm_r, handover_r, valid_r, busy_r, phase, off_grid_r);
+        dff_setup!(
+            self, clock, area, norm, nsh, div_v, div_n, div_d, mant_s, rsh, left, norm_r, handover_r, valid_r, busy_r,
+            phase, off_grid_r
+        );
         dff_setup!(self, clock, o_walk, o_maj_left);
         for e in 0..3 {
             self.o_j[e].clock.next = self.clock.val();
@@ -834,7 +798,8 @@ impl Logic for TriangleSetup {
             self.left.d.next = self.exp_r.val() <= self.eq_shift.val();
             self.mant_s.d.next = bit_cast::<MUL_A, MANT>(self.div.out_q.val().get_bits::<MANT>(0));
             if self.exp_r.val() <= self.eq_shift.val() {
-                self.mant_s.d.next = bit_cast::<MUL_A, MANT>(self.div.out_q.val().get_bits::<MANT>(0)) << self.lsh.val();
+                self.mant_s.d.next =
+                    bit_cast::<MUL_A, MANT>(self.div.out_q.val().get_bits::<MANT>(0)) << self.lsh.val();
             }
         }
         for e in 0..3 {
@@ -1377,15 +1342,7 @@ impl Logic for TriangleSetup {
     }
 }
 
-crate::pins!(TriangleSetup {
-    clock: clock,
-    inputs: [
-    ],
-    outputs: [
-        recip_mant, recip_exp,
-    ],
-    links: [inp, out],
-});
+crate::pins!(TriangleSetup { clock: clock, inputs: [], outputs: [recip_mant, recip_exp,], links: [inp, out] });
 
 /// `UNITS` entry: setup with `params["K"]` multipliers and a `params["L"]`-stage divider.
 pub fn emit_triangle_setup(params: &Params) -> Result<Emitted, String> {

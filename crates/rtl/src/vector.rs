@@ -93,6 +93,7 @@ use crate::emit::{emit_unit, Emitted};
 use crate::mul::PipelinedMul;
 use crate::parts::{defaults, DelayLine, Negative, SignExtend};
 use crate::Params;
+use blank::Blank;
 use lane::Lane;
 use rust_hdl::prelude::*;
 
@@ -177,7 +178,7 @@ const TAG: usize = 2 * SCREEN;
 /// complement number: the model's `rescale` (floor) and its wrap into a register, as a bit
 /// slice. `WIDE` >= `IN` and >= rsh + max(by) + `OUT`: every bit the slice takes lies
 /// below it (bits shifted left past it are above the slice).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Rescale<const IN: usize, const WIDE: usize, const OUT: usize> {
     pub x: Signal<In, Bits<IN>>,
     /// A further right shift (a reciprocal's exponent), 0 for a fixed rescale.
@@ -196,15 +197,11 @@ impl<const IN: usize, const WIDE: usize, const OUT: usize> Rescale<IN, WIDE, OUT
     pub fn new(lsh: usize, rsh: usize) -> Self {
         assert!(WIDE >= IN && WIDE >= OUT + rsh, "Rescale<{IN}, {WIDE}, {OUT}> by {lsh}, {rsh}");
         Rescale {
-            x: Default::default(),
-            by: Default::default(),
-            y: Default::default(),
             lsh: Constant::new(lsh.to_bits()),
             rsh: Constant::new(rsh.to_bits()),
             msb: Constant::new((IN - 1).to_bits()),
             ext: Constant::new(if IN < WIDE { !Bits::<WIDE>::default() << (IN as u64) } else { Bits::default() }),
-            wide: Default::default(),
-            shifted: Default::default(),
+            ..Rescale::blank()
         }
     }
 }
@@ -231,7 +228,11 @@ pub struct LeadingOne<const N: usize> {
 
 impl<const N: usize> Default for LeadingOne<N> {
     fn default() -> Self {
-        LeadingOne { x: Default::default(), pos: Default::default(), index: (0..N).map(|i| Constant::new(i.to_bits())).collect() }
+        LeadingOne {
+            x: Default::default(),
+            pos: Default::default(),
+            index: (0..N).map(|i| Constant::new(i.to_bits())).collect(),
+        }
     }
 }
 
@@ -249,7 +250,7 @@ impl<const N: usize> Logic for LeadingOne<N> {
 
 /// The divider's divisor for 1/x (`model::divider::recip_operands`): `x` (`N` bits, >= 1)
 /// with its leading one `exp` moved to bit `TOP`, its low bits dropped when it is wider.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Normalise<const N: usize, const W: usize> {
     pub x: Signal<In, Bits<N>>,
     pub exp: Signal<In, Bits<8>>,
@@ -264,15 +265,7 @@ pub struct Normalise<const N: usize, const W: usize> {
 impl<const N: usize, const W: usize> Default for Normalise<N, W> {
     fn default() -> Self {
         assert!(W >= N && W >= DIV_D && W > TOP, "Normalise<{N}, {W}>");
-        Normalise {
-            x: Default::default(),
-            exp: Default::default(),
-            d: Default::default(),
-            top: Constant::new(TOP.to_bits()),
-            lsh: Default::default(),
-            rsh: Default::default(),
-            wide: Default::default(),
-        }
+        Normalise { top: Constant::new(TOP.to_bits()), ..Normalise::blank() }
     }
 }
 
@@ -335,7 +328,7 @@ impl<const W: usize, const OUT: usize> Logic for Place<W, OUT> {
 /// along a row (`flat`); whether it owns its samples (top edges run in +x, left edges in
 /// -y); its function's step a pixel right (`g`: it falls by dy 2^s) and a row down (`h`:
 /// it rises by dx 2^s).
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct EdgeClass {
     pub dx: Signal<In, Bits<D1>>,
     pub dy: Signal<In, Bits<D1>>,
@@ -354,21 +347,7 @@ pub struct EdgeClass {
 
 impl Default for EdgeClass {
     fn default() -> Self {
-        EdgeClass {
-            dx: Default::default(),
-            dy: Default::default(),
-            left: Default::default(),
-            right: Default::default(),
-            flat: Default::default(),
-            owns: Default::default(),
-            g: Default::default(),
-            h: Default::default(),
-            dx_neg: Default::default(),
-            dy_neg: Default::default(),
-            ex: Default::default(),
-            ey: Default::default(),
-            frac: Constant::new((FORMATS.xy.frac as usize).to_bits()),
-        }
+        EdgeClass { frac: Constant::new((FORMATS.xy.frac as usize).to_bits()), ..EdgeClass::blank() }
     }
 }
 
@@ -390,7 +369,7 @@ impl Logic for EdgeClass {
 
 /// The barycentric unit with `LANES` lanes (1, 2, 4 or 8; `ZW` = `LANES` x `DEPTH`, `CW` =
 /// `LANES` x 3 x `CHANNEL`, the output's widths); see the module documentation.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Vector<const LANES: usize, const ZW: usize, const CW: usize> {
     pub clock: Signal<In, Clock>,
     /// Screen size in pixels, 1 to 2^CLASS each; constant during a frame.
@@ -414,6 +393,7 @@ pub struct Vector<const LANES: usize, const ZW: usize, const CW: usize> {
 
     lanes: Vec<Lane>,
     /// 1/area's divider, for the triangle in setup.
+    #[given]
     div_a: DividerRtl,
     /// Setup's two multipliers: the area, then each edge function at the start chunk.
     mul_s: [PipelinedMul<D1, D1, EFN>; 2],
@@ -620,6 +600,7 @@ pub struct Vector<const LANES: usize, const ZW: usize, const CW: usize> {
     c_c0: [Signal<Local, Bits<COLOR>>; 3],
     /// The chunk's place `{y, x}` through the pipeline.
     tag: Signal<Local, Bits<TAG>>,
+    #[given]
     tag_dl: DelayLine<TAG>,
     y_shift: Constant<Bits<8>>,
     o_x: DFF<Bits<SCREEN>>,
@@ -643,41 +624,17 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Vector<LANES, ZW, CW>
         if !(1..=LATENCY_MAX).contains(&l) {
             return Err(format!("vector: L = {l} divider stages is not supported: 1 to {LATENCY_MAX}"));
         }
-        let (setup, pixel) =
-            (model::vector::setup(l as u32) as usize, model::vector::pixel_latency(l as u32) as usize);
+        let (setup, pixel) = (model::vector::setup(l as u32) as usize, model::vector::pixel_latency(l as u32) as usize);
         let la = model::vector::area_divider_latency(l as u32) as usize;
         let px = 1usize << FORMATS.xy.frac;
         Ok(Vector {
-            clock: Default::default(),
-            width: Default::default(),
-            height: Default::default(),
-            inp: Default::default(),
-            out_valid: Default::default(),
-            out_ready: Default::default(),
-            out_mask: Default::default(),
-            out_x: Default::default(),
-            out_y: Default::default(),
-            out_z: Default::default(),
-            out_rgb: Default::default(),
-            idle: Default::default(),
             lanes: (0..LANES).map(|i| Lane::new(i, l, perspective)).collect(),
-            div_a: DividerRtl::new(la),
             mul_s: defaults(),
-            sbusy: Default::default(),
-            run: Default::default(),
-            take: Default::default(),
-            sc: Default::default(),
-            dc: Default::default(),
             at_mant: Constant::new((7 + la).to_bits()),
             at_walk: Constant::new((setup - 1).to_bits()),
             drain: Constant::new(pixel.to_bits()),
-            set_ok: Default::default(),
-            hand: Default::default(),
             hold: defaults(),
             held_m1: Constant::new((model::vector::constants_read(l as u32) as usize - 1).to_bits()),
-            sp: Default::default(),
-            wp: Default::default(),
-            ph: Default::default(),
             tap_exp: Constant::new(1usize.to_bits()),
             tap_z: Constant::new(2usize.to_bits()),
             tap_z0: Constant::new(4usize.to_bits()),
@@ -694,76 +651,20 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Vector<LANES, ZW, CW>
             ux: defaults(),
             uy: defaults(),
             half_xy: Constant::new((1u64 << (XY - 1)).to_bits()),
-            min_x: Default::default(),
-            max_x: Default::default(),
-            min_y: Default::default(),
-            max_y: Default::default(),
-            top_x: Default::default(),
-            min_xr: Default::default(),
-            max_xr: Default::default(),
-            min_yr: Default::default(),
-            max_yr: Default::default(),
-            top_xr: Default::default(),
-            lo_x: Default::default(),
-            lo_y: Default::default(),
-            hi_x: Default::default(),
-            hi_y: Default::default(),
-            neg_lo_x: Default::default(),
-            neg_lo_y: Default::default(),
-            neg_hi_x: Default::default(),
-            neg_hi_y: Default::default(),
-            ext_min_x: Default::default(),
-            ext_min_y: Default::default(),
-            ext_max_x: Default::default(),
-            ext_max_y: Default::default(),
-            ext_top: Default::default(),
-            neg_top: Default::default(),
             px_half_m1: Constant::new((px / 2 - 1).to_bits()),
             px_half: Constant::new((px / 2).to_bits()),
             frac: Constant::new((FORMATS.xy.frac as usize).to_bits()),
-            bx0: Default::default(),
-            bx1: Default::default(),
-            by0: Default::default(),
-            by1: Default::default(),
-            hi_x_c: Default::default(),
-            hi_y_c: Default::default(),
-            bneg: Default::default(),
-            empty: Default::default(),
-            top_c: Default::default(),
-            cs: Default::default(),
             chunk: Constant::new(!Bits::<SCREEN>::default() << (LANES.trailing_zeros() as u64)),
             chunk_p: Constant::new(!Bits::<PIXEL>::default() << (LANES.trailing_zeros() as u64)),
             lg: Constant::new((LANES.trailing_zeros() as usize).to_bits()),
             one_s: Constant::new(1usize.to_bits()),
             step: Constant::new(LANES.to_bits()),
-            cx0: Default::default(),
-            cy0: Default::default(),
-            area: Default::default(),
-            area_neg: Default::default(),
-            area_abs: Default::default(),
-            lead_a: Default::default(),
-            exp_a: Default::default(),
-            norm_a: Default::default(),
             recip_n: Constant::new((1u128 << (TOP as u32 + FORMATS.ooa.frac)).to_bits()),
-            mant_c: Default::default(),
-            div_da: Default::default(),
-            mant: Default::default(),
             dx: defaults(),
             dy: defaults(),
             w0: defaults(),
-            d1z: Default::default(),
-            d2z: Default::default(),
             d1c: defaults(),
             d2c: defaults(),
-            sv: Default::default(),
-            sy: Default::default(),
-            sy1: Default::default(),
-            sc0: Default::default(),
-            sc1: Default::default(),
-            sx0: Default::default(),
-            sx1: Default::default(),
-            sl: Default::default(),
-            sr: Default::default(),
             el: defaults(),
             er: defaults(),
             sdx: defaults(),
@@ -776,28 +677,9 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Vector<LANES, ZW, CW>
             rej_lf: defaults(),
             rej_rf: defaults(),
             rej_rn: defaults(),
-            out_l: Default::default(),
-            out_lm: Default::default(),
-            out_r: Default::default(),
-            out_rn: Default::default(),
-            dead: Default::default(),
-            l_right: Default::default(),
-            l_left: Default::default(),
-            r_left: Default::default(),
-            r_right: Default::default(),
-            found: Default::default(),
-            row_empty: Default::default(),
-            row_last: Default::default(),
-            tv: Default::default(),
-            tx: Default::default(),
-            te: Default::default(),
-            ty: Default::default(),
-            wx0: Default::default(),
-            wx1: Default::default(),
             w: defaults(),
             wown: defaults(),
             wstep: defaults(),
-            walk_free: Default::default(),
             k_mant: defaults(),
             k_exp: defaults(),
             k_d1z: defaults(),
@@ -807,26 +689,18 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Vector<LANES, ZW, CW>
             k_d1c: defaults(),
             k_d2c: defaults(),
             k_c0: defaults(),
-            c_mant: Default::default(),
-            c_exp: Default::default(),
-            c_d1z: Default::default(),
-            c_d2z: Default::default(),
-            c_z0: Default::default(),
             c_iw: defaults(),
             c_d1c: defaults(),
             c_d2c: defaults(),
             c_c0: defaults(),
-            tag: Default::default(),
-            tag_dl: DelayLine::new(pixel - 1),
             y_shift: Constant::new(SCREEN.to_bits()),
-            o_x: Default::default(),
-            o_y: Default::default(),
             g_mask: (0..=LANES).map(|_| Default::default()).collect(),
             g_z: (0..=LANES).map(|_| Default::default()).collect(),
             g_rgb: (0..=LANES).map(|_| Default::default()).collect(),
             at_mask: (0..LANES).map(|i| Constant::new((1usize << i).to_bits())).collect(),
             place_z: (0..LANES).map(|i| Place::new(i * DEPTH)).collect(),
             place_rgb: (0..LANES).map(|i| Place::new(3 * i * CHANNEL)).collect(),
+            ..Vector::blank(VectorGiven { div_a: DividerRtl::new(la), tag_dl: DelayLine::new(pixel - 1) })
         })
     }
 }
@@ -843,7 +717,9 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANE
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written, and is written only while the
         // unit runs.
-        dff_setup!(self, clock, sbusy, sc, dc, bx0, bx1, by0, by1, bneg, empty, cs, area, area_abs, exp_a, div_da, mant);
+        dff_setup!(
+            self, clock, sbusy, sc, dc, bx0, bx1, by0, by1, bneg, empty, cs, area, area_abs, exp_a, div_da, mant
+        );
         dff_setup!(self, clock, sp, wp, ph, d1z, d2z, min_xr, max_xr, min_yr, max_yr, top_xr);
         dff_setup!(self, clock, sv, sy, sy1, sc0, sc1, sx0, sx1, sl, sr, tv, tx, te, ty, wx0, wx1, o_x, o_y);
         clock!(self, clock, div_a, tag_dl);
@@ -1093,15 +969,11 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANE
             }
         }
         self.l_right.next = !self.dead.val() & self.out_l.val() & (self.sl.q.val() != self.sc1.q.val());
-        self.l_left.next = !self.dead.val()
-            & !self.out_l.val()
-            & !self.out_lm.val()
-            & (self.sl.q.val() != self.sc0.q.val());
+        self.l_left.next =
+            !self.dead.val() & !self.out_l.val() & !self.out_lm.val() & (self.sl.q.val() != self.sc0.q.val());
         self.r_left.next = !self.dead.val() & self.out_r.val() & (self.sr.q.val() != self.sc0.q.val());
-        self.r_right.next = !self.dead.val()
-            & !self.out_r.val()
-            & !self.out_rn.val()
-            & (self.sr.q.val() != self.sc1.q.val());
+        self.r_right.next =
+            !self.dead.val() & !self.out_r.val() & !self.out_rn.val() & (self.sr.q.val() != self.sc1.q.val());
         self.found.next =
             self.sv.q.val() & !self.l_right.val() & !self.l_left.val() & !self.r_left.val() & !self.r_right.val();
         self.row_empty.next =
@@ -1149,8 +1021,8 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANE
         }
 
         // ---- The lanes: the walker's chunk, the constants; their outputs gathered.
-        self.tag.next = (bit_cast::<TAG, SCREEN>(self.ty.q.val()) << self.y_shift.val())
-            | bit_cast::<TAG, SCREEN>(self.tx.q.val());
+        self.tag.next =
+            (bit_cast::<TAG, SCREEN>(self.ty.q.val()) << self.y_shift.val()) | bit_cast::<TAG, SCREEN>(self.tx.q.val());
         self.tag_dl.d.next = self.tag.val();
         for i in 0..LANES {
             self.lanes[i].run.next = self.run.val();
@@ -1291,12 +1163,18 @@ impl<const LANES: usize, const ZW: usize, const CW: usize> Logic for Vector<LANE
                 self.dy[2].d.next = self.ey[1].y.val() - self.ey[0].y.val();
                 self.d1z.d.next = self.ez[1].y.val() - self.ez[0].y.val();
                 self.d2z.d.next = self.ez[2].y.val() - self.ez[0].y.val();
-                self.d1c[0].d.next = bit_cast::<C1, COLOR>(self.vc[3].q.val()) - bit_cast::<C1, COLOR>(self.vc[0].q.val());
-                self.d1c[1].d.next = bit_cast::<C1, COLOR>(self.vc[4].q.val()) - bit_cast::<C1, COLOR>(self.vc[1].q.val());
-                self.d1c[2].d.next = bit_cast::<C1, COLOR>(self.vc[5].q.val()) - bit_cast::<C1, COLOR>(self.vc[2].q.val());
-                self.d2c[0].d.next = bit_cast::<C1, COLOR>(self.vc[6].q.val()) - bit_cast::<C1, COLOR>(self.vc[0].q.val());
-                self.d2c[1].d.next = bit_cast::<C1, COLOR>(self.vc[7].q.val()) - bit_cast::<C1, COLOR>(self.vc[1].q.val());
-                self.d2c[2].d.next = bit_cast::<C1, COLOR>(self.vc[8].q.val()) - bit_cast::<C1, COLOR>(self.vc[2].q.val());
+                self.d1c[0].d.next =
+                    bit_cast::<C1, COLOR>(self.vc[3].q.val()) - bit_cast::<C1, COLOR>(self.vc[0].q.val());
+                self.d1c[1].d.next =
+                    bit_cast::<C1, COLOR>(self.vc[4].q.val()) - bit_cast::<C1, COLOR>(self.vc[1].q.val());
+                self.d1c[2].d.next =
+                    bit_cast::<C1, COLOR>(self.vc[5].q.val()) - bit_cast::<C1, COLOR>(self.vc[2].q.val());
+                self.d2c[0].d.next =
+                    bit_cast::<C1, COLOR>(self.vc[6].q.val()) - bit_cast::<C1, COLOR>(self.vc[0].q.val());
+                self.d2c[1].d.next =
+                    bit_cast::<C1, COLOR>(self.vc[7].q.val()) - bit_cast::<C1, COLOR>(self.vc[1].q.val());
+                self.d2c[2].d.next =
+                    bit_cast::<C1, COLOR>(self.vc[8].q.val()) - bit_cast::<C1, COLOR>(self.vc[2].q.val());
                 self.exp_a.d.next = self.lead_a.pos.val();
             }
             // Cycle 6: 1/area's divisor; cycles 8-10: the edge functions at the start chunk's

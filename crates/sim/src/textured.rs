@@ -70,7 +70,8 @@ pub fn triangle_pins(s: &Sent) -> Vec<(String, Value)> {
 }
 
 /// The outputs [`draw`] reads beside the framebuffer's request ([`REQUEST`]).
-pub const READ: [&str; 7] = ["done", "inp$ready", "hits", "misses", "fills", "tex_mem_valid", "tex_mem_addr"];
+pub const READ: [&str; 7] =
+    ["done", "inp$ready", "counters$hits", "counters$misses", "counters$fills", "tex_mem$valid", "tex_mem$addr"];
 
 /// A frame drawn by the textured `raster_top`.
 pub struct TexturedOut {
@@ -116,9 +117,9 @@ pub fn draw(
             ("mem$ready".into(), bit(true)),
             ("mem$rd_z".into(), memory.rd_z_value(depth)),
             ("mem$rd_rgb".into(), memory.rd_rgb_value()),
-            ("tex_mem_ack".into(), bit(m.ack)),
-            ("tex_mem_rvalid".into(), bit(m.rvalid)),
-            ("tex_mem_rdata".into(), Value::new(32, m.rdata.into())),
+            ("tex_mem$ack".into(), bit(m.ack)),
+            ("tex_mem$rvalid".into(), bit(m.rvalid)),
+            ("tex_mem$rdata".into(), Value::new(32, m.rdata.into())),
         ];
         if let Some(s) = tris.get(next) {
             pins.extend(triangle_pins(s));
@@ -126,12 +127,12 @@ pub fn draw(
         let o = cycle(&pins)?;
         let get = |pin: &str| o.get(pin).to_u128() as u32;
         if get("done") == 1 && next == tris.len() {
-            let counters = ["hits", "misses", "fills"].map(|p| u64::from(get(p)));
+            let counters = ["counters$hits", "counters$misses", "counters$fills"].map(|p| u64::from(get(p)));
             return Ok(TexturedOut { memory, cycles: now, counters });
         }
         next += usize::from(next < tris.len() && get("inp$ready") == 1);
         memory.edge(true, &Request::of(&o));
-        tex.ask(now, &m, get("tex_mem_valid") == 1, get("tex_mem_addr"));
+        tex.ask(now, &m, get("tex_mem$valid") == 1, get("tex_mem$addr"));
     }
     Err(format!(
         "raster_top (TEXTURE = 1): no done after {max_cycles} cycles ({next} of {} triangles taken)",

@@ -22,12 +22,13 @@
 //! the deepest level still adds.
 
 use crate::parts::defaults;
+use blank::Blank;
 use rust_hdl::prelude::*;
 
 /// The adders of one level L of the subdivision tree: the points x = (2k+1) P / 2^L, each
 /// the serial sum of its neighbours x -+ P / 2^L in A_(L-1) (point P, the right end, comes
 /// on `e1`, already delayed to scale). A full adder and a carry per point, in parallel.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Level<const P: usize> {
     pub clock: Signal<In, Clock>,
     /// A_(L-1): the streams of the points of levels < L, aligned to scale 2^(L-1).
@@ -60,18 +61,10 @@ impl<const P: usize> Level<P> {
             lm = lm.replace_bit(x, true);
         }
         Self {
-            clock: Default::default(),
-            pts: Default::default(),
-            e1: Default::default(),
-            first: Default::default(),
-            n: Default::default(),
             lm: Constant::new(lm),
             sh: Constant::new((s as u64).into()),
             top: Constant::new(Bits::<P>::default().replace_bit(P - s, true)),
-            lt: Default::default(),
-            rt: Default::default(),
-            cin: Default::default(),
-            c: Default::default(),
+            ..Self::blank()
         }
     }
 }
@@ -97,7 +90,7 @@ impl<const P: usize> Logic for Level<P> {
 
 /// The interpolator for P pixels, K = log2 P levels (000 Fig. 8 for 9 points, here P + 1):
 /// ends `e0` = f(XL_i) and `e1` = f(XR_i) in, every pixel's round(f(x)) out, all serial.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Interp<const P: usize, const K: usize> {
     pub clock: Signal<In, Clock>,
     /// Bit of f(XL_i) (rounded), from the L multiplier.
@@ -127,6 +120,7 @@ pub struct Interp<const P: usize, const K: usize> {
     /// A_0 .. A_(K-1) delayed, zero in stream clock 0 (the previous stream's tail).
     dm: [Signal<Local, Bits<P>>; K],
     /// Levels 1 .. K (index L - 1).
+    #[given]
     lv: [Level<P>; K],
 }
 
@@ -134,22 +128,10 @@ impl<const P: usize, const K: usize> Default for Interp<P, K> {
     fn default() -> Self {
         assert_eq!(1 << K, P, "K = log2 P");
         Self {
-            clock: Default::default(),
-            e0: Default::default(),
-            e1: Default::default(),
-            half: Default::default(),
-            ext: Default::default(),
-            px: Default::default(),
-            in0: Default::default(),
-            in1: Default::default(),
-            msb0: Default::default(),
-            msb1: Default::default(),
-            e1d: Default::default(),
-            a0: Default::default(),
             a: defaults(),
             d: defaults(),
             dm: defaults(),
-            lv: std::array::from_fn(|l| Level::new(l + 1)),
+            ..Self::blank(InterpGiven { lv: std::array::from_fn(|l| Level::new(l + 1)) })
         }
     }
 }

@@ -27,6 +27,7 @@
 //! Like [`crate::mul::Mul`], each block writes its own Verilog and computes the same in
 //! Rust for rust-hdl's simulator; the SE's dual-simulator tests guard that the two agree.
 
+use blank::Blank;
 use rust_hdl::prelude::*;
 
 /// Entry of memory `m` that bit `b` of a plane goes to (or comes from): (m - b) mod W, as
@@ -99,7 +100,7 @@ fn memories(w: usize, q: usize, sel: &str, jw: usize, (wa, wen): (&str, &str), b
 
 /// Bit planes in, port groups' words out (the new-z and R, G, B blocks): `W`-bit words of
 /// `P` pixels. Requires P/4 <= W, P/4 a power of two, W < 64.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct PlanesToWords<const W: usize, const P: usize> {
     pub clock: Signal<In, Clock>,
     /// Write bit plane `plane` (0 = LSB) from `px` (bit x: pixel x): registered at this
@@ -122,19 +123,7 @@ pub struct PlanesToWords<const W: usize, const P: usize> {
 impl<const W: usize, const P: usize> Default for PlanesToWords<W, P> {
     fn default() -> Self {
         check(W, P);
-        PlanesToWords {
-            clock: Default::default(),
-            we: Default::default(),
-            plane: Default::default(),
-            px: Default::default(),
-            group: Default::default(),
-            w0: Default::default(),
-            w1: Default::default(),
-            w2: Default::default(),
-            w3: Default::default(),
-            _mem: vec![0; W * P / 4],
-            _wr: None,
-        }
+        PlanesToWords { _mem: vec![0; W * P / 4], _wr: None, ..PlanesToWords::blank() }
     }
 }
 
@@ -231,7 +220,7 @@ impl<const W: usize, const P: usize> Logic for PlanesToWords<W, P> {
 
 /// Port groups' words in, bit planes out (the old-z block): `W`-bit words of `P` pixels.
 /// Requires P/4 <= W, P/4 a power of two, W < 64.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct WordsToPlanes<const W: usize, const P: usize> {
     pub clock: Signal<In, Clock>,
     /// Write port group `group` (pixels 4j .. 4j+3) from `d0` .. `d3` at this clock's edge.
@@ -255,19 +244,7 @@ pub struct WordsToPlanes<const W: usize, const P: usize> {
 impl<const W: usize, const P: usize> Default for WordsToPlanes<W, P> {
     fn default() -> Self {
         check(W, P);
-        WordsToPlanes {
-            clock: Default::default(),
-            we: Default::default(),
-            group: Default::default(),
-            d0: Default::default(),
-            d1: Default::default(),
-            d2: Default::default(),
-            d3: Default::default(),
-            plane: Default::default(),
-            px: Default::default(),
-            _mem: vec![0; W * P / 4],
-            _shown: 0,
-        }
+        WordsToPlanes { _mem: vec![0; W * P / 4], _shown: 0, ..WordsToPlanes::blank() }
     }
 }
 

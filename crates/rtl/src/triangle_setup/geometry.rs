@@ -13,6 +13,7 @@ use super::super::cull_sort::{outcode_bit, COLOR, OUTCODE, XY, Z};
 use super::super::divider::DIV_D;
 use super::super::widths::{FORMATS, PIXEL};
 use super::{ones_from, ATTR, G, NB, W};
+use blank::Blank;
 use rust_hdl::prelude::*;
 
 const S: u32 = FORMATS.xy.frac;
@@ -21,7 +22,7 @@ const S: u32 = FORMATS.xy.frac;
 /// its registers are loaded with), so its outputs, registers loaded every cycle, are the
 /// geometry of the vertices the copy holds, one cycle of adders away from every register
 /// that reads them. `off_x`, from the copy's start pixels and side, is combinational.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Geometry {
     pub clock: Signal<In, Clock>,
     /// The triangle: x, y, z, colours (3 * vertex + channel), and its crossings.
@@ -144,77 +145,6 @@ impl Default for Geometry {
     fn default() -> Self {
         let px = 1usize << S;
         Geometry {
-            vx: Default::default(),
-            vy: Default::default(),
-            vz: Default::default(),
-            vc: Default::default(),
-            crosses: Default::default(),
-            maj_left: Default::default(),
-            start_x: Default::default(),
-            kdx: Default::default(),
-            kdy: Default::default(),
-            up: Default::default(),
-            edx: Default::default(),
-            edy: Default::default(),
-            edy_d: Default::default(),
-            ed16: Default::default(),
-            cy: Default::default(),
-            count: Default::default(),
-            toff: Default::default(),
-            xf: Default::default(),
-            xi: Default::default(),
-            off_x: Default::default(),
-            off_y: Default::default(),
-            dmaj: Default::default(),
-            dbot: Default::default(),
-            attr0: Default::default(),
-            clock: Default::default(),
-            c_kdx: Default::default(),
-            kdx_r: Default::default(),
-            c_kdy: Default::default(),
-            kdy_r: Default::default(),
-            c_up: Default::default(),
-            up_r: Default::default(),
-            c_edx: Default::default(),
-            edx_r: Default::default(),
-            c_edy: Default::default(),
-            edy_r: Default::default(),
-            c_edy_d: Default::default(),
-            edy_d_r: Default::default(),
-            c_ed16: Default::default(),
-            ed16_r: Default::default(),
-            c_cy: Default::default(),
-            cy_r: Default::default(),
-            c_count: Default::default(),
-            count_r: Default::default(),
-            c_toff: Default::default(),
-            toff_r: Default::default(),
-            c_xf: Default::default(),
-            xf_r: Default::default(),
-            c_xi: Default::default(),
-            xi_r: Default::default(),
-            c_off_y: Default::default(),
-            off_y_r: Default::default(),
-            c_dmaj: Default::default(),
-            dmaj_r: Default::default(),
-            c_dbot: Default::default(),
-            dbot_r: Default::default(),
-            c_attr0: Default::default(),
-            attr0_r: Default::default(),
-            xn0_r: Default::default(),
-            xw: Default::default(),
-            yw: Default::default(),
-            zn: Default::default(),
-            cn: Default::default(),
-            xn: Default::default(),
-            yn: Default::default(),
-            cv: Default::default(),
-            span: Default::default(),
-            diff: Default::default(),
-            bx: Default::default(),
-            by: Default::default(),
-            xb: Default::default(),
-            tracked: Default::default(),
             frac: Constant::new((S as usize).to_bits()),
             half_m1: Constant::new((px / 2 - 1).to_bits()),
             half: Constant::new((px / 2).to_bits()),
@@ -229,6 +159,7 @@ impl Default for Geometry {
             shr_ext: ones_from(NB - S as usize, NB),
             top_bit: Constant::new(outcode_bit::TOP.to_bits()),
             bottom_bit: Constant::new(outcode_bit::BOTTOM.to_bits()),
+            ..Geometry::blank()
         }
     }
 }

@@ -2,24 +2,25 @@
 //! pipeline (paper 004 eq. 3-6), `model::vector::pixel_latency` cycles from the walk cycle to
 //! its output registers. The unit's module documentation gives the pipeline's stages.
 
+use super::super::cull_sort::{COLOR, INV_W, Z};
+use super::super::divider::{DividerRtl, DIV_D, DIV_N};
+use super::super::span::{ColorOf, DepthOf};
+use super::super::widths::{CHANNEL, C_ACC, DEPTH, FORMATS, SCREEN, Z_ACC};
 use super::{
     LeadingOne, Normalise, Rejects, Rescale, AB_WIDE, BARY, C0L, C0_WIDE, C1, CL, CR, C_WIDE, EFN, IW1, MANT, MANT1,
     PAB, PC, PL, PR, PZ, QR, Q_WIDE, RL, RR, R_WIDE, SUMW, Z0L, Z0_WIDE, Z1, ZL, ZR, Z_WIDE,
 };
-use super::super::cull_sort::{COLOR, INV_W, Z};
-use super::super::divider::{DividerRtl, DIV_D, DIV_N};
 use crate::mul::PipelinedMul;
 use crate::parts::{defaults, DelayLine, SignExtend};
-use super::super::span::{ColorOf, DepthOf};
 use crate::switch::Switch;
-use super::super::widths::{CHANNEL, C_ACC, DEPTH, FORMATS, SCREEN, Z_ACC};
+use blank::Blank;
 use rust_hdl::prelude::*;
 
 /// The depth's tag through the pipeline: in range, depth.
 const DTAG: usize = DEPTH + 1;
 
 /// Lane `idx`: its pixel is the chunk's `idx`-th, x = `x` + `idx`.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Blank)]
 pub struct Lane {
     pub clock: Signal<In, Clock>,
     /// The unit runs (no pixel waits on `out`): every register holds while it is low.
@@ -90,8 +91,10 @@ pub struct Lane {
     px: Signal<Local, Bits<SCREEN>>,
     covered: Signal<Local, Bit>,
     hit: Signal<Local, Bits<1>>,
+    #[given]
     hit_dl: DelayLine<1>,
 
+    #[given]
     div: DividerRtl,
     mul_a: PipelinedMul<EFN, MANT1, PAB>,
     mul_b: PipelinedMul<EFN, MANT1, PAB>,
@@ -105,18 +108,24 @@ pub struct Lane {
     recip_n: Constant<Bits<DIV_N>>,
     norm_s: Normalise<SUMW, { super::max(SUMW, super::max(DIV_D, super::TOP + 1)) }>,
     div_d: DFF<Bits<DIV_D>>,
+    #[given]
     rs_a: Rescale<PAB, AB_WIDE, BARY>,
+    #[given]
     rs_b: Rescale<PAB, AB_WIDE, BARY>,
     a3: DFF<Bits<BARY>>,
     b3: DFF<Bits<BARY>>,
     one: Constant<Bits<BARY>>,
+    #[given]
     rs_z: Rescale<PZ, Z_WIDE, Z_ACC>,
+    #[given]
     rs_z0: Rescale<Z1, Z0_WIDE, Z_ACC>,
     ez0: SignExtend<Z, Z1>,
     z6: DFF<Bits<Z_ACC>>,
     depth_of: DepthOf,
     dtag: Signal<Local, Bits<DTAG>>,
+    #[given]
     dtag_dl: DelayLine<DTAG>,
+    #[given]
     rs_q: [Rescale<PL, Q_WIDE, BARY>; 3],
     q6: [DFF<Bits<BARY>>; 3],
     eq: [SignExtend<BARY, SUMW>; 3],
@@ -126,18 +135,25 @@ pub struct Lane {
     sum8: DFF<Bits<SUMW>>,
     exp8: DFF<Bits<8>>,
     q_pair: Signal<Local, Bits<{ 2 * BARY }>>,
+    #[given]
     q_dl: DelayLine<{ 2 * BARY }>,
+    #[given]
     exp_dl: DelayLine<8>,
     ab_pair: Signal<Local, Bits<{ 2 * BARY }>>,
+    #[given]
     ab_dl: DelayLine<{ 2 * BARY }>,
     half_pair: Constant<Bits<8>>,
+    #[given]
     rs_ra: Rescale<PR, R_WIDE, BARY>,
+    #[given]
     rs_rb: Rescale<PR, R_WIDE, BARY>,
     ca11: DFF<Bits<BARY>>,
     cb11: DFF<Bits<BARY>>,
     ca: Signal<Local, Bits<BARY>>,
     cb: Signal<Local, Bits<BARY>>,
+    #[given]
     rs_c: [Rescale<PC, C_WIDE, C_ACC>; 3],
+    #[given]
     rs_c0: [Rescale<C1, C0_WIDE, C_ACC>; 3],
     c14: [DFF<Bits<C_ACC>>; 3],
     color_of: [ColorOf; 3],
@@ -153,50 +169,31 @@ impl Lane {
         assert!(idx < 8, "lane {idx}");
         let pixel = model::vector::pixel_latency(l as u32) as usize;
         let mask = |b: usize| Constant::new(if idx >> b & 1 == 1 { !Bits::<EFN>::default() } else { Bits::default() });
+        let given = LaneGiven {
+            hit_dl: DelayLine::new(pixel - 1),
+            div: DividerRtl::new(l),
+            rs_a: Rescale::new(RL, RR),
+            rs_b: Rescale::new(RL, RR),
+            rs_z: Rescale::new(ZL, ZR),
+            rs_z0: Rescale::new(Z0L, 0),
+            dtag_dl: DelayLine::new(pixel - 7),
+            rs_q: std::array::from_fn(|_| Rescale::new(0, QR)),
+            q_dl: DelayLine::new(l + 3),
+            exp_dl: DelayLine::new(l + 3),
+            ab_dl: DelayLine::new(pixel - 7),
+            rs_ra: Rescale::new(RL, RR),
+            rs_rb: Rescale::new(RL, RR),
+            rs_c: std::array::from_fn(|_| Rescale::new(CL, CR)),
+            rs_c0: std::array::from_fn(|_| Rescale::new(C0L, 0)),
+        };
         Lane {
-            clock: Default::default(),
-            run: Default::default(),
-            load: Default::default(),
-            g_0: Default::default(),
-            g_1: Default::default(),
-            g_2: Default::default(),
             g: defaults(),
-            valid: Default::default(),
-            x: Default::default(),
-            x0: Default::default(),
-            x1: Default::default(),
-            w_0: Default::default(),
-            w_1: Default::default(),
-            w_2: Default::default(),
             w: defaults(),
-            owns_0: Default::default(),
-            owns_1: Default::default(),
-            owns_2: Default::default(),
             owns: defaults(),
-            c_mant: Default::default(),
-            c_exp: Default::default(),
-            c_d1z: Default::default(),
-            c_d2z: Default::default(),
-            c_z0: Default::default(),
-            c_iw_0: Default::default(),
-            c_iw_1: Default::default(),
-            c_iw_2: Default::default(),
             c_iw: defaults(),
-            c_d1c_0: Default::default(),
-            c_d1c_1: Default::default(),
-            c_d1c_2: Default::default(),
             c_d1c: defaults(),
-            c_d2c_0: Default::default(),
-            c_d2c_1: Default::default(),
-            c_d2c_2: Default::default(),
             c_d2c: defaults(),
-            c_c0_0: Default::default(),
-            c_c0_1: Default::default(),
-            c_c0_2: Default::default(),
             c_c0: defaults(),
-            o_valid: Default::default(),
-            o_z: Default::default(),
-            o_rgb: Default::default(),
             persp: Switch::new(perspective),
             idx: Constant::new(idx.to_bits()),
             m1: mask(0),
@@ -209,63 +206,19 @@ impl Lane {
             off: defaults(),
             e: defaults(),
             rej: defaults(),
-            px: Default::default(),
-            covered: Default::default(),
-            hit: Default::default(),
-            hit_dl: DelayLine::new(pixel - 1),
-            div: DividerRtl::new(l),
-            mul_a: Default::default(),
-            mul_b: Default::default(),
-            mul_z1: Default::default(),
-            mul_z2: Default::default(),
             mul_l: defaults(),
-            mul_ra: Default::default(),
-            mul_rb: Default::default(),
             mul_c1: defaults(),
             mul_c2: defaults(),
             recip_n: Constant::new((1u128 << (super::TOP as u32 + FORMATS.ooa.frac)).to_bits()),
-            norm_s: Default::default(),
-            div_d: Default::default(),
-            rs_a: Rescale::new(RL, RR),
-            rs_b: Rescale::new(RL, RR),
-            a3: Default::default(),
-            b3: Default::default(),
             one: Constant::new((1u64 << FORMATS.bary.frac).to_bits()),
-            rs_z: Rescale::new(ZL, ZR),
-            rs_z0: Rescale::new(Z0L, 0),
-            ez0: Default::default(),
-            z6: Default::default(),
-            depth_of: Default::default(),
-            dtag: Default::default(),
-            dtag_dl: DelayLine::new(pixel - 7),
-            rs_q: std::array::from_fn(|_| Rescale::new(0, QR)),
             q6: defaults(),
             eq: defaults(),
-            sum_c: Default::default(),
-            sum7: Default::default(),
-            lead_s: Default::default(),
-            sum8: Default::default(),
-            exp8: Default::default(),
-            q_pair: Default::default(),
-            q_dl: DelayLine::new(l + 3),
-            exp_dl: DelayLine::new(l + 3),
-            ab_pair: Default::default(),
-            ab_dl: DelayLine::new(pixel - 7),
             half_pair: Constant::new(BARY.to_bits()),
-            rs_ra: Rescale::new(RL, RR),
-            rs_rb: Rescale::new(RL, RR),
-            ca11: Default::default(),
-            cb11: Default::default(),
-            ca: Default::default(),
-            cb: Default::default(),
-            rs_c: std::array::from_fn(|_| Rescale::new(CL, CR)),
-            rs_c0: std::array::from_fn(|_| Rescale::new(C0L, 0)),
             c14: defaults(),
             color_of: defaults(),
             full: Constant::new(255usize.to_bits()),
-            ov: Default::default(),
-            oz: Default::default(),
             orgb: defaults(),
+            ..Lane::blank(given)
         }
     }
 }
