@@ -1,6 +1,6 @@
 
 
-module texture_cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,inp_addr2,inp_addr3,inp_side,inp_flush,out_valid,out_ready,out_data0,out_data1,out_data2,out_data3,out_side,mem_valid,mem_addr,mem_ack,mem_rvalid,mem_rdata,hits,misses,fills);
+module texture_cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,inp_addr2,inp_addr3,inp_side,inp_flush,out_valid,out_ready,out_data0,out_data1,out_data2,out_data3,out_side,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills);
     
     // Module arguments
     input wire  clock;
@@ -20,14 +20,14 @@ module texture_cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,inp_ad
     output reg  [31:0] out_data2;
     output reg  [31:0] out_data3;
     output reg  [63:0] out_side;
-    output reg  mem_valid;
-    output reg  [25:0] mem_addr;
-    input wire  mem_ack;
-    input wire  mem_rvalid;
-    input wire  [31:0] mem_rdata;
-    output reg  [31:0] hits;
-    output reg  [31:0] misses;
-    output reg  [31:0] fills;
+    output reg  mem$valid;
+    output reg  [25:0] mem$addr;
+    input wire  mem$ack;
+    input wire  mem$rvalid;
+    input wire  [31:0] mem$rdata;
+    output reg  [31:0] counters$hits;
+    output reg  [31:0] counters$misses;
+    output reg  [31:0] counters$fills;
     
     // Constant declarations
     localparam  word_last = 8'h3;
@@ -500,9 +500,9 @@ module texture_cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,inp_ad
         else if (out_ready) begin
             o_valid$d = 1'b0;
         end
-        hits = hits_r$q;
-        misses = misses_r$q;
-        fills = fills_r$q;
+        counters$hits = hits_r$q;
+        counters$misses = misses_r$q;
+        counters$fills = fills_r$q;
         if (run & s1_valid$q & s1_fresh$q) begin
             hits_r$d = hits_r$q + n_hit;
             misses_r$d = misses_r$q + n_miss;
@@ -559,9 +559,9 @@ module texture_cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,inp_ad
         if (iss_lane == 3) begin
             iss_addr = s1_addr$3$q;
         end
-        mem_valid = (st$q == 32'h2) & |iss_mask$q;
-        mem_addr = (iss_addr & line_base) | ((iss_word$q) & 26'h3ffffff);
-        if (mem_valid & mem_ack) begin
+        mem$valid = (st$q == 32'h2) & |iss_mask$q;
+        mem$addr = (iss_addr & line_base) | ((iss_word$q) & 26'h3ffffff);
+        if (mem$valid & mem$ack) begin
             iss_word$d = iss_word$q + 32'h1;
             if (iss_word$q == word_last) begin
                 iss_word$d = 32'h0;
@@ -578,7 +578,7 @@ module texture_cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,inp_ad
         if (rcv_mask$q[32'h0]) begin
             rcv_lane = 32'h0;
         end
-        rcv = (st$q == 32'h2) & |rcv_mask$q & mem_rvalid;
+        rcv = (st$q == 32'h2) & |rcv_mask$q & mem$rvalid;
         rcv_last = rcv_word$q == word_last;
         rcv_rest = rcv_mask$q & (rcv_mask$q - 32'h1);
         banks$0$fill = 1'b0;
@@ -586,28 +586,28 @@ module texture_cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,inp_ad
             banks$0$fill = 1'b1;
         end
         banks$0$word = rcv_word$q;
-        banks$0$wdata = mem_rdata;
+        banks$0$wdata = mem$rdata;
         banks$0$last = rcv_last;
         banks$1$fill = 1'b0;
         if (rcv & (rcv_lane == 1)) begin
             banks$1$fill = 1'b1;
         end
         banks$1$word = rcv_word$q;
-        banks$1$wdata = mem_rdata;
+        banks$1$wdata = mem$rdata;
         banks$1$last = rcv_last;
         banks$2$fill = 1'b0;
         if (rcv & (rcv_lane == 2)) begin
             banks$2$fill = 1'b1;
         end
         banks$2$word = rcv_word$q;
-        banks$2$wdata = mem_rdata;
+        banks$2$wdata = mem$rdata;
         banks$2$last = rcv_last;
         banks$3$fill = 1'b0;
         if (rcv & (rcv_lane == 3)) begin
             banks$3$fill = 1'b1;
         end
         banks$3$word = rcv_word$q;
-        banks$3$wdata = mem_rdata;
+        banks$3$wdata = mem$rdata;
         banks$3$last = rcv_last;
         if (rcv) begin
             rcv_word$d = rcv_word$q + 32'h1;

@@ -1,6 +1,6 @@
 
 
-module texture_unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_dsq_y,inp_dtq_x,inp_dtq_y,inp_dq_x,inp_dq_y,inp_cf,inp_tag,st_load,st_ws,st_hs,st_levels,st_base,st_min_linear,st_mag_linear,st_mip,st_wrap_s,st_wrap_t,st_format,st_gaussian,st_env,inp_flush,out_valid,out_ready,out_rgba,out_tag,mem_valid,mem_addr,mem_ack,mem_rvalid,mem_rdata,hits,misses,fills,idle);
+module texture_unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_dsq_y,inp_dtq_x,inp_dtq_y,inp_dq_x,inp_dq_y,inp_cf,inp_tag,st_load,st_ws,st_hs,st_levels,st_base,st_min_linear,st_mag_linear,st_mip,st_wrap_s,st_wrap_t,st_format,st_gaussian,st_env,inp_flush,out_valid,out_ready,out_rgba,out_tag,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
     
     // Module arguments
     input wire  clock;
@@ -35,14 +35,14 @@ module texture_unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_
     input wire  out_ready;
     output reg  [31:0] out_rgba;
     output reg  [31:0] out_tag;
-    output reg  mem_valid;
-    output reg  [25:0] mem_addr;
-    input wire  mem_ack;
-    input wire  mem_rvalid;
-    input wire  [31:0] mem_rdata;
-    output reg  [31:0] hits;
-    output reg  [31:0] misses;
-    output reg  [31:0] fills;
+    output wire  mem$valid;
+    output wire  [25:0] mem$addr;
+    input wire  mem$ack;
+    input wire  mem$rvalid;
+    input wire  [31:0] mem$rdata;
+    output wire  [31:0] counters$hits;
+    output wire  [31:0] counters$misses;
+    output wire  [31:0] counters$fills;
     output reg  idle;
     
     // Stub signals
@@ -110,14 +110,6 @@ module texture_unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_
     wire  [31:0] cache$out_data2;
     wire  [31:0] cache$out_data3;
     wire  [63:0] cache$out_side;
-    wire  cache$mem_valid;
-    wire  [25:0] cache$mem_addr;
-    reg  cache$mem_ack;
-    reg  cache$mem_rvalid;
-    reg  [31:0] cache$mem_rdata;
-    wire  [31:0] cache$hits;
-    wire  [31:0] cache$misses;
-    wire  [31:0] cache$fills;
     reg  [31:0] pick$0$data0;
     reg  [31:0] pick$0$data1;
     reg  [31:0] pick$0$data2;
@@ -327,14 +319,14 @@ module texture_unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_
         .out_data2(cache$out_data2),
         .out_data3(cache$out_data3),
         .out_side(cache$out_side),
-        .mem_valid(cache$mem_valid),
-        .mem_addr(cache$mem_addr),
-        .mem_ack(cache$mem_ack),
-        .mem_rvalid(cache$mem_rvalid),
-        .mem_rdata(cache$mem_rdata),
-        .hits(cache$hits),
-        .misses(cache$misses),
-        .fills(cache$fills)
+        .mem$valid(mem$valid),
+        .mem$addr(mem$addr),
+        .mem$ack(mem$ack),
+        .mem$rvalid(mem$rvalid),
+        .mem$rdata(mem$rdata),
+        .counters$hits(counters$hits),
+        .counters$misses(counters$misses),
+        .counters$fills(counters$fills)
     );
     texture_unit$pick$0 pick$0(
         .data0(pick$0$data0),
@@ -617,14 +609,6 @@ module texture_unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_
         cache$inp_side = ((attr) & 64'hffffffffffffffff);
         cache$inp_flush = inp_flush;
         cache$out_ready = en_f;
-        cache$mem_ack = mem_ack;
-        cache$mem_rvalid = mem_rvalid;
-        cache$mem_rdata = mem_rdata;
-        mem_valid = cache$mem_valid;
-        mem_addr = cache$mem_addr;
-        hits = cache$hits;
-        misses = cache$misses;
-        fills = cache$fills;
         take = coords$out_valid & en_a;
         en_c = ~coords$out_valid | (en_a & (~address$inp_two_levels | second$q));
         if (take) begin
@@ -2928,7 +2912,7 @@ module texture_unit$address$wrap$3(i,size_log2,mode,wrapped);
 endmodule // texture_unit$address$wrap$3
 
 
-module texture_unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,inp_addr2,inp_addr3,inp_side,inp_flush,out_valid,out_ready,out_data0,out_data1,out_data2,out_data3,out_side,mem_valid,mem_addr,mem_ack,mem_rvalid,mem_rdata,hits,misses,fills);
+module texture_unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,inp_addr2,inp_addr3,inp_side,inp_flush,out_valid,out_ready,out_data0,out_data1,out_data2,out_data3,out_side,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills);
     
     // Module arguments
     input wire  clock;
@@ -2948,14 +2932,14 @@ module texture_unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,i
     output reg  [31:0] out_data2;
     output reg  [31:0] out_data3;
     output reg  [63:0] out_side;
-    output reg  mem_valid;
-    output reg  [25:0] mem_addr;
-    input wire  mem_ack;
-    input wire  mem_rvalid;
-    input wire  [31:0] mem_rdata;
-    output reg  [31:0] hits;
-    output reg  [31:0] misses;
-    output reg  [31:0] fills;
+    output reg  mem$valid;
+    output reg  [25:0] mem$addr;
+    input wire  mem$ack;
+    input wire  mem$rvalid;
+    input wire  [31:0] mem$rdata;
+    output reg  [31:0] counters$hits;
+    output reg  [31:0] counters$misses;
+    output reg  [31:0] counters$fills;
     
     // Constant declarations
     localparam  word_last = 8'h3;
@@ -3428,9 +3412,9 @@ module texture_unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,i
         else if (out_ready) begin
             o_valid$d = 1'b0;
         end
-        hits = hits_r$q;
-        misses = misses_r$q;
-        fills = fills_r$q;
+        counters$hits = hits_r$q;
+        counters$misses = misses_r$q;
+        counters$fills = fills_r$q;
         if (run & s1_valid$q & s1_fresh$q) begin
             hits_r$d = hits_r$q + n_hit;
             misses_r$d = misses_r$q + n_miss;
@@ -3487,9 +3471,9 @@ module texture_unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,i
         if (iss_lane == 3) begin
             iss_addr = s1_addr$3$q;
         end
-        mem_valid = (st$q == 32'h2) & |iss_mask$q;
-        mem_addr = (iss_addr & line_base) | ((iss_word$q) & 26'h3ffffff);
-        if (mem_valid & mem_ack) begin
+        mem$valid = (st$q == 32'h2) & |iss_mask$q;
+        mem$addr = (iss_addr & line_base) | ((iss_word$q) & 26'h3ffffff);
+        if (mem$valid & mem$ack) begin
             iss_word$d = iss_word$q + 32'h1;
             if (iss_word$q == word_last) begin
                 iss_word$d = 32'h0;
@@ -3506,7 +3490,7 @@ module texture_unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,i
         if (rcv_mask$q[32'h0]) begin
             rcv_lane = 32'h0;
         end
-        rcv = (st$q == 32'h2) & |rcv_mask$q & mem_rvalid;
+        rcv = (st$q == 32'h2) & |rcv_mask$q & mem$rvalid;
         rcv_last = rcv_word$q == word_last;
         rcv_rest = rcv_mask$q & (rcv_mask$q - 32'h1);
         banks$0$fill = 1'b0;
@@ -3514,28 +3498,28 @@ module texture_unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,i
             banks$0$fill = 1'b1;
         end
         banks$0$word = rcv_word$q;
-        banks$0$wdata = mem_rdata;
+        banks$0$wdata = mem$rdata;
         banks$0$last = rcv_last;
         banks$1$fill = 1'b0;
         if (rcv & (rcv_lane == 1)) begin
             banks$1$fill = 1'b1;
         end
         banks$1$word = rcv_word$q;
-        banks$1$wdata = mem_rdata;
+        banks$1$wdata = mem$rdata;
         banks$1$last = rcv_last;
         banks$2$fill = 1'b0;
         if (rcv & (rcv_lane == 2)) begin
             banks$2$fill = 1'b1;
         end
         banks$2$word = rcv_word$q;
-        banks$2$wdata = mem_rdata;
+        banks$2$wdata = mem$rdata;
         banks$2$last = rcv_last;
         banks$3$fill = 1'b0;
         if (rcv & (rcv_lane == 3)) begin
             banks$3$fill = 1'b1;
         end
         banks$3$word = rcv_word$q;
-        banks$3$wdata = mem_rdata;
+        banks$3$wdata = mem$rdata;
         banks$3$last = rcv_last;
         if (rcv) begin
             rcv_word$d = rcv_word$q + 32'h1;

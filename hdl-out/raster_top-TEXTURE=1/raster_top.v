@@ -1,6 +1,6 @@
 
 
-module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,tex$textured,tex$sq0,tex$sq1,tex$sq2,tex$tq0,tex$tq1,tex$tq2,tex$q0,tex$q1,tex$q2,tex$ws,tex$hs,tex$levels,tex$base,tex$min_linear,tex$mag_linear,tex$mip,tex$wrap_s,tex$wrap_t,tex$format,tex$gaussian,tex$env,tex$mode,inp_last,cull_back,verdict$valid,verdict$code,verdict$outside,inp_flush,mem$ready,mem$rd_en,mem$rd_addr,mem$rd_z,mem$rd_rgb,mem$wr_en,mem$wr_addr,mem$wr_z,mem$wr_rgb,tex_mem_valid,tex_mem_addr,tex_mem_ack,tex_mem_rvalid,tex_mem_rdata,hits,misses,fills,done);
+module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,tex$textured,tex$sq0,tex$sq1,tex$sq2,tex$tq0,tex$tq1,tex$tq2,tex$q0,tex$q1,tex$q2,tex$ws,tex$hs,tex$levels,tex$base,tex$min_linear,tex$mag_linear,tex$mip,tex$wrap_s,tex$wrap_t,tex$format,tex$gaussian,tex$env,tex$mode,inp_last,cull_back,verdict$valid,verdict$code,verdict$outside,inp_flush,mem$ready,mem$rd_en,mem$rd_addr,mem$rd_z,mem$rd_rgb,mem$wr_en,mem$wr_addr,mem$wr_z,mem$wr_rgb,tex_mem$valid,tex_mem$addr,tex_mem$ack,tex_mem$rvalid,tex_mem$rdata,counters$hits,counters$misses,counters$fills,done);
     
     // Module arguments
     input wire  clock;
@@ -67,14 +67,14 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
     output wire  [19:0] mem$wr_addr;
     output wire  [15:0] mem$wr_z;
     output wire  [23:0] mem$wr_rgb;
-    output reg  tex_mem_valid;
-    output reg  [25:0] tex_mem_addr;
-    input wire  tex_mem_ack;
-    input wire  tex_mem_rvalid;
-    input wire  [31:0] tex_mem_rdata;
-    output reg  [31:0] hits;
-    output reg  [31:0] misses;
-    output reg  [31:0] fills;
+    output wire  tex_mem$valid;
+    output wire  [25:0] tex_mem$addr;
+    input wire  tex_mem$ack;
+    input wire  tex_mem$rvalid;
+    input wire  [31:0] tex_mem$rdata;
+    output wire  [31:0] counters$hits;
+    output wire  [31:0] counters$misses;
+    output wire  [31:0] counters$fills;
     output reg  done;
     
     // Constant declarations
@@ -254,14 +254,6 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
     wire  [7:0] path$out$rgb2;
     wire  [7:0] path$out$alpha;
     wire  [2:0] path$out$mode;
-    wire  path$mem_valid;
-    wire  [25:0] path$mem_addr;
-    reg  path$mem_ack;
-    reg  path$mem_rvalid;
-    reg  [31:0] path$mem_rdata;
-    wire  [31:0] path$hits;
-    wire  [31:0] path$misses;
-    wire  [31:0] path$fills;
     wire  path$idle;
     reg  pixel_out$clock;
     reg  pixel_out$inp$valid;
@@ -509,14 +501,14 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
         .out$rgb2(path$out$rgb2),
         .out$alpha(path$out$alpha),
         .out$mode(path$out$mode),
-        .mem_valid(path$mem_valid),
-        .mem_addr(path$mem_addr),
-        .mem_ack(path$mem_ack),
-        .mem_rvalid(path$mem_rvalid),
-        .mem_rdata(path$mem_rdata),
-        .hits(path$hits),
-        .misses(path$misses),
-        .fills(path$fills),
+        .mem$valid(tex_mem$valid),
+        .mem$addr(tex_mem$addr),
+        .mem$ack(tex_mem$ack),
+        .mem$rvalid(tex_mem$rvalid),
+        .mem$rdata(tex_mem$rdata),
+        .counters$hits(counters$hits),
+        .counters$misses(counters$misses),
+        .counters$fills(counters$fills),
         .idle(path$idle)
     );
     raster_top$pixel_out pixel_out(
@@ -899,14 +891,6 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
             pixel_out$inp$alpha = 32'hff;
             pixel_out$inp$mode = word[(at$27)+:(3)];
         end
-        tex_mem_valid = path$mem_valid;
-        tex_mem_addr = path$mem_addr;
-        path$mem_ack = tex_mem_ack;
-        path$mem_rvalid = tex_mem_rvalid;
-        path$mem_rdata = tex_mem_rdata;
-        hits = path$hits;
-        misses = path$misses;
-        fills = path$fills;
         done = last_in$q & cull_sort$idle & core$idle & path$idle & pixel_out$idle;
     end
     
@@ -50029,7 +50013,7 @@ module raster_top$last_in(d,q,clock);
 endmodule // raster_top$last_in
 
 
-module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,inp_new,tri$x0,tri$y0,tri$x1,tri$y1,tri$x2,tri$y2,tri$sq0,tri$sq1,tri$sq2,tri$tq0,tri$tq1,tri$tq2,tri$q0,tri$q1,tri$q2,tri$mant,tri$exp,tri$ws,tri$hs,tri$levels,tri$base,tri$min_linear,tri$mag_linear,tri$mip,tri$wrap_s,tri$wrap_t,tri$format,tri$gaussian,tri$env,tri$mode,inp_flush,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,out$alpha,out$mode,mem_valid,mem_addr,mem_ack,mem_rvalid,mem_rdata,hits,misses,fills,idle);
+module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,inp_new,tri$x0,tri$y0,tri$x1,tri$y1,tri$x2,tri$y2,tri$sq0,tri$sq1,tri$sq2,tri$tq0,tri$tq1,tri$tq2,tri$q0,tri$q1,tri$q2,tri$mant,tri$exp,tri$ws,tri$hs,tri$levels,tri$base,tri$min_linear,tri$mag_linear,tri$mip,tri$wrap_s,tri$wrap_t,tri$format,tri$gaussian,tri$env,tri$mode,inp_flush,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,out$alpha,out$mode,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
     
     // Module arguments
     input wire  clock;
@@ -50083,14 +50067,14 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
     output reg  [7:0] out$rgb2;
     output reg  [7:0] out$alpha;
     output reg  [2:0] out$mode;
-    output reg  mem_valid;
-    output reg  [25:0] mem_addr;
-    input wire  mem_ack;
-    input wire  mem_rvalid;
-    input wire  [31:0] mem_rdata;
-    output reg  [31:0] hits;
-    output reg  [31:0] misses;
-    output reg  [31:0] fills;
+    output wire  mem$valid;
+    output wire  [25:0] mem$addr;
+    input wire  mem$ack;
+    input wire  mem$rvalid;
+    input wire  [31:0] mem$rdata;
+    output wire  [31:0] counters$hits;
+    output wire  [31:0] counters$misses;
+    output wire  [31:0] counters$fills;
     output reg  idle;
     
     // Constant declarations
@@ -50169,14 +50153,6 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
     reg  unit$out_ready;
     wire  [31:0] unit$out_rgba;
     wire  [31:0] unit$out_tag;
-    wire  unit$mem_valid;
-    wire  [25:0] unit$mem_addr;
-    reg  unit$mem_ack;
-    reg  unit$mem_rvalid;
-    reg  [31:0] unit$mem_rdata;
-    wire  [31:0] unit$hits;
-    wire  [31:0] unit$misses;
-    wire  [31:0] unit$fills;
     wire  unit$idle;
     reg  [5:0] side$read_address;
     reg  side$read_clock;
@@ -50289,14 +50265,14 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
         .out_ready(unit$out_ready),
         .out_rgba(unit$out_rgba),
         .out_tag(unit$out_tag),
-        .mem_valid(unit$mem_valid),
-        .mem_addr(unit$mem_addr),
-        .mem_ack(unit$mem_ack),
-        .mem_rvalid(unit$mem_rvalid),
-        .mem_rdata(unit$mem_rdata),
-        .hits(unit$hits),
-        .misses(unit$misses),
-        .fills(unit$fills),
+        .mem$valid(mem$valid),
+        .mem$addr(mem$addr),
+        .mem$ack(mem$ack),
+        .mem$rvalid(mem$rvalid),
+        .mem$rdata(mem$rdata),
+        .counters$hits(counters$hits),
+        .counters$misses(counters$misses),
+        .counters$fills(counters$fills),
         .idle(unit$idle)
     );
     raster_top$path$side side(
@@ -50426,14 +50402,6 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
         unit$st_env = tri$env;
         unit$inp_flush = inp_flush;
         unit$out_ready = out$ready;
-        unit$mem_ack = mem_ack;
-        unit$mem_rvalid = mem_rvalid;
-        unit$mem_rdata = mem_rdata;
-        mem_valid = unit$mem_valid;
-        mem_addr = unit$mem_addr;
-        hits = unit$hits;
-        misses = unit$misses;
-        fills = unit$fills;
         en = ~setup$out_valid | unit$inp_ready;
         inp$ready = en & (((phase$q == run) & ~inp_new) | (phase$q == first));
         accept = inp$valid & inp$ready;
@@ -52974,7 +52942,7 @@ module raster_top$path$side(read_address,read_clock,read_data,write_address,writ
 endmodule // raster_top$path$side
 
 
-module raster_top$path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_dsq_y,inp_dtq_x,inp_dtq_y,inp_dq_x,inp_dq_y,inp_cf,inp_tag,st_load,st_ws,st_hs,st_levels,st_base,st_min_linear,st_mag_linear,st_mip,st_wrap_s,st_wrap_t,st_format,st_gaussian,st_env,inp_flush,out_valid,out_ready,out_rgba,out_tag,mem_valid,mem_addr,mem_ack,mem_rvalid,mem_rdata,hits,misses,fills,idle);
+module raster_top$path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_dsq_y,inp_dtq_x,inp_dtq_y,inp_dq_x,inp_dq_y,inp_cf,inp_tag,st_load,st_ws,st_hs,st_levels,st_base,st_min_linear,st_mag_linear,st_mip,st_wrap_s,st_wrap_t,st_format,st_gaussian,st_env,inp_flush,out_valid,out_ready,out_rgba,out_tag,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
     
     // Module arguments
     input wire  clock;
@@ -53009,14 +52977,14 @@ module raster_top$path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_ds
     input wire  out_ready;
     output reg  [31:0] out_rgba;
     output reg  [31:0] out_tag;
-    output reg  mem_valid;
-    output reg  [25:0] mem_addr;
-    input wire  mem_ack;
-    input wire  mem_rvalid;
-    input wire  [31:0] mem_rdata;
-    output reg  [31:0] hits;
-    output reg  [31:0] misses;
-    output reg  [31:0] fills;
+    output wire  mem$valid;
+    output wire  [25:0] mem$addr;
+    input wire  mem$ack;
+    input wire  mem$rvalid;
+    input wire  [31:0] mem$rdata;
+    output wire  [31:0] counters$hits;
+    output wire  [31:0] counters$misses;
+    output wire  [31:0] counters$fills;
     output reg  idle;
     
     // Stub signals
@@ -53084,14 +53052,6 @@ module raster_top$path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_ds
     wire  [31:0] cache$out_data2;
     wire  [31:0] cache$out_data3;
     wire  [63:0] cache$out_side;
-    wire  cache$mem_valid;
-    wire  [25:0] cache$mem_addr;
-    reg  cache$mem_ack;
-    reg  cache$mem_rvalid;
-    reg  [31:0] cache$mem_rdata;
-    wire  [31:0] cache$hits;
-    wire  [31:0] cache$misses;
-    wire  [31:0] cache$fills;
     reg  [31:0] pick$0$data0;
     reg  [31:0] pick$0$data1;
     reg  [31:0] pick$0$data2;
@@ -53301,14 +53261,14 @@ module raster_top$path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_ds
         .out_data2(cache$out_data2),
         .out_data3(cache$out_data3),
         .out_side(cache$out_side),
-        .mem_valid(cache$mem_valid),
-        .mem_addr(cache$mem_addr),
-        .mem_ack(cache$mem_ack),
-        .mem_rvalid(cache$mem_rvalid),
-        .mem_rdata(cache$mem_rdata),
-        .hits(cache$hits),
-        .misses(cache$misses),
-        .fills(cache$fills)
+        .mem$valid(mem$valid),
+        .mem$addr(mem$addr),
+        .mem$ack(mem$ack),
+        .mem$rvalid(mem$rvalid),
+        .mem$rdata(mem$rdata),
+        .counters$hits(counters$hits),
+        .counters$misses(counters$misses),
+        .counters$fills(counters$fills)
     );
     raster_top$path$unit$pick$0 pick$0(
         .data0(pick$0$data0),
@@ -53591,14 +53551,6 @@ module raster_top$path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_ds
         cache$inp_side = ((attr) & 64'hffffffffffffffff);
         cache$inp_flush = inp_flush;
         cache$out_ready = en_f;
-        cache$mem_ack = mem_ack;
-        cache$mem_rvalid = mem_rvalid;
-        cache$mem_rdata = mem_rdata;
-        mem_valid = cache$mem_valid;
-        mem_addr = cache$mem_addr;
-        hits = cache$hits;
-        misses = cache$misses;
-        fills = cache$fills;
         take = coords$out_valid & en_a;
         en_c = ~coords$out_valid | (en_a & (~address$inp_two_levels | second$q));
         if (take) begin
@@ -55902,7 +55854,7 @@ module raster_top$path$unit$address$wrap$3(i,size_log2,mode,wrapped);
 endmodule // raster_top$path$unit$address$wrap$3
 
 
-module raster_top$path$unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,inp_addr2,inp_addr3,inp_side,inp_flush,out_valid,out_ready,out_data0,out_data1,out_data2,out_data3,out_side,mem_valid,mem_addr,mem_ack,mem_rvalid,mem_rdata,hits,misses,fills);
+module raster_top$path$unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp_addr1,inp_addr2,inp_addr3,inp_side,inp_flush,out_valid,out_ready,out_data0,out_data1,out_data2,out_data3,out_side,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills);
     
     // Module arguments
     input wire  clock;
@@ -55922,14 +55874,14 @@ module raster_top$path$unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp
     output reg  [31:0] out_data2;
     output reg  [31:0] out_data3;
     output reg  [63:0] out_side;
-    output reg  mem_valid;
-    output reg  [25:0] mem_addr;
-    input wire  mem_ack;
-    input wire  mem_rvalid;
-    input wire  [31:0] mem_rdata;
-    output reg  [31:0] hits;
-    output reg  [31:0] misses;
-    output reg  [31:0] fills;
+    output reg  mem$valid;
+    output reg  [25:0] mem$addr;
+    input wire  mem$ack;
+    input wire  mem$rvalid;
+    input wire  [31:0] mem$rdata;
+    output reg  [31:0] counters$hits;
+    output reg  [31:0] counters$misses;
+    output reg  [31:0] counters$fills;
     
     // Constant declarations
     localparam  word_last = 8'h3;
@@ -56402,9 +56354,9 @@ module raster_top$path$unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp
         else if (out_ready) begin
             o_valid$d = 1'b0;
         end
-        hits = hits_r$q;
-        misses = misses_r$q;
-        fills = fills_r$q;
+        counters$hits = hits_r$q;
+        counters$misses = misses_r$q;
+        counters$fills = fills_r$q;
         if (run & s1_valid$q & s1_fresh$q) begin
             hits_r$d = hits_r$q + n_hit;
             misses_r$d = misses_r$q + n_miss;
@@ -56461,9 +56413,9 @@ module raster_top$path$unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp
         if (iss_lane == 3) begin
             iss_addr = s1_addr$3$q;
         end
-        mem_valid = (st$q == 32'h2) & |iss_mask$q;
-        mem_addr = (iss_addr & line_base) | ((iss_word$q) & 26'h3ffffff);
-        if (mem_valid & mem_ack) begin
+        mem$valid = (st$q == 32'h2) & |iss_mask$q;
+        mem$addr = (iss_addr & line_base) | ((iss_word$q) & 26'h3ffffff);
+        if (mem$valid & mem$ack) begin
             iss_word$d = iss_word$q + 32'h1;
             if (iss_word$q == word_last) begin
                 iss_word$d = 32'h0;
@@ -56480,7 +56432,7 @@ module raster_top$path$unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp
         if (rcv_mask$q[32'h0]) begin
             rcv_lane = 32'h0;
         end
-        rcv = (st$q == 32'h2) & |rcv_mask$q & mem_rvalid;
+        rcv = (st$q == 32'h2) & |rcv_mask$q & mem$rvalid;
         rcv_last = rcv_word$q == word_last;
         rcv_rest = rcv_mask$q & (rcv_mask$q - 32'h1);
         banks$0$fill = 1'b0;
@@ -56488,28 +56440,28 @@ module raster_top$path$unit$cache(clock,inp_valid,inp_ready,inp_en,inp_addr0,inp
             banks$0$fill = 1'b1;
         end
         banks$0$word = rcv_word$q;
-        banks$0$wdata = mem_rdata;
+        banks$0$wdata = mem$rdata;
         banks$0$last = rcv_last;
         banks$1$fill = 1'b0;
         if (rcv & (rcv_lane == 1)) begin
             banks$1$fill = 1'b1;
         end
         banks$1$word = rcv_word$q;
-        banks$1$wdata = mem_rdata;
+        banks$1$wdata = mem$rdata;
         banks$1$last = rcv_last;
         banks$2$fill = 1'b0;
         if (rcv & (rcv_lane == 2)) begin
             banks$2$fill = 1'b1;
         end
         banks$2$word = rcv_word$q;
-        banks$2$wdata = mem_rdata;
+        banks$2$wdata = mem$rdata;
         banks$2$last = rcv_last;
         banks$3$fill = 1'b0;
         if (rcv & (rcv_lane == 3)) begin
             banks$3$fill = 1'b1;
         end
         banks$3$word = rcv_word$q;
-        banks$3$wdata = mem_rdata;
+        banks$3$wdata = mem$rdata;
         banks$3$last = rcv_last;
         if (rcv) begin
             rcv_word$d = rcv_word$q + 32'h1;
