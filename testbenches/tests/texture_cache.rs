@@ -90,11 +90,11 @@ fn model_pin(o: &CacheOut, pin: &str) -> Value {
         "out_data2" => Value::new(32, o.out_data[2] as u128),
         "out_data3" => Value::new(32, o.out_data[3] as u128),
         "out_side" => Value::new(64, o.out_side as u128),
-        "mem$valid" => bit(o.mem_valid),
-        "mem$addr" => Value::new(ADDR, o.mem_addr as u128),
-        "counters$hits" => Value::new(32, o.hits as u128),
-        "counters$misses" => Value::new(32, o.misses as u128),
-        "counters$fills" => Value::new(32, o.fills as u128),
+        "mem$valid" => bit(o.mem.valid),
+        "mem$addr" => Value::new(ADDR, o.mem.addr as u128),
+        "counters$hits" => Value::new(32, o.counters.hits as u128),
+        "counters$misses" => Value::new(32, o.counters.misses as u128),
+        "counters$fills" => Value::new(32, o.counters.fills as u128),
         _ => unreachable!("{pin}"),
     }
 }
@@ -178,10 +178,10 @@ impl<U: Block + Pins + Default> Bench<U> {
                 .map_err(|e| format!("{e} (model state {:?})", self.model.state()))?;
         }
         // The memory takes the word asked.
-        if o.mem_valid && ack {
+        if o.mem.valid && ack {
             let due = (self.now + self.mem.latency + self.rng.gen_range(0..=self.mem.jitter))
                 .max(self.mem.queue.back().map_or(0, |(d, _)| d + 1));
-            self.mem.queue.push_back((due, word(self.mem.salt, o.mem_addr)));
+            self.mem.queue.push_back((due, word(self.mem.salt, o.mem.addr)));
             self.mem.asked += 1;
         }
         // The independent oracle: each word out is the memory's word at its lane's address.
@@ -334,11 +334,16 @@ fn lockstep<U: Block + Pins + Default>(p: Params, salt: u64) {
         b.run(&reqs, flow, flush).unwrap_or_else(|e| fail(format!("phase {k}, memory latency {latency}: {e}")));
     }
     let o = b.last;
-    assert!(o.hits > 0 && o.misses > 0, "{p:?}: hits {} misses {}: both must happen", o.hits, o.misses);
+    assert!(
+        o.counters.hits > 0 && o.counters.misses > 0,
+        "{p:?}: hits {} misses {}: both must happen",
+        o.counters.hits,
+        o.counters.misses
+    );
     assert!(b.flushes > 0, "{p:?}: no flush taken");
     eprintln!(
         "texture_cache {p:?}: {n} requests in {} cycles, hits {} misses {} fills {}, {} words asked, {} flushes",
-        b.now, o.hits, o.misses, o.fills, b.mem.asked, b.flushes
+        b.now, o.counters.hits, o.counters.misses, o.counters.fills, b.mem.asked, b.flushes
     );
 }
 
@@ -360,11 +365,11 @@ fn texture_cache_random_lockstep_8_sets_4_ways_8_words() {
 /// One request alone through `b` (the output always taken, the memory as set), its
 /// (taken, out) cycles and the counters' changes (hits, misses).
 fn one<U: Block + Pins + Default>(b: &mut Bench<U>, r: Req) -> ((u64, u64), (u32, u32)) {
-    let before = (b.last.hits, b.last.misses);
+    let before = (b.last.counters.hits, b.last.counters.misses);
     b.run(&[r], Flow::BACK_TO_BACK, 0.0).unwrap_or_else(|e| panic!("{:?}: {r:?}: {e}", b.p));
     // The counters show a lookup the cycle after it: one idle cycle more.
     b.cycle(&CacheIn { out_ready: true, ..Default::default() }, &r).unwrap_or_else(|e| panic!("{e}"));
-    (*b.log.last().expect("the request's cycles"), (b.last.hits - before.0, b.last.misses - before.1))
+    (*b.log.last().expect("the request's cycles"), (b.last.counters.hits - before.0, b.last.counters.misses - before.1))
 }
 
 /// After the power-up Clear (SETS cycles), 64 requests of four hitting lanes are taken
@@ -389,7 +394,10 @@ fn texture_cache_hits_take_one_request_a_clock() {
         assert_eq!((taken, out), (first + k as u64, first + k as u64 + HIT_LATENCY), "request {k} of {n}");
     }
     assert_eq!(cycles[n as usize - 1].1 - first + 1, n as u64 + HIT_LATENCY, "N requests take N + latency cycles");
-    assert_eq!((b.last.hits - before.hits, b.last.misses - before.misses), (4 * n, 0));
+    assert_eq!(
+        (b.last.counters.hits - before.counters.hits, b.last.counters.misses - before.counters.misses),
+        (4 * n, 0)
+    );
 }
 
 /// A cold miss of m lanes costs `m · LINE + L + 2` cycles over a hit's HIT_LATENCY, for a
@@ -434,7 +442,7 @@ fn counters_vs_functional<U: Block + Pins + Default>(p: Params, salt: u64) {
     b.cycle(&CacheIn { out_ready: true, ..Default::default() }, &reqs[0]).unwrap_or_else(|e| panic!("{e}"));
     let trace: Vec<_> = reqs.iter().map(Req::lanes).collect();
     let s = hit_rate_of_trace(&p, &trace);
-    let got = (b.last.hits as u64, b.last.misses as u64, b.last.fills as u64);
+    let got = (b.last.counters.hits as u64, b.last.counters.misses as u64, b.last.counters.fills as u64);
     assert_eq!(got, (s.hits, s.misses, s.fills), "seed {seed}, {p:?}: counters (hits, misses, fills)");
     assert!(s.hits > 0 && s.misses > 0, "{s:?}");
 }
@@ -459,7 +467,7 @@ fn texture_cache_after_a_flush_every_lane_misses_again() {
         let before = b.last;
         b.run(&trace, Flow::BACK_TO_BACK, 0.0).unwrap_or_else(|e| panic!("{e}"));
         b.cycle(&CacheIn { out_ready: true, ..Default::default() }, &trace[0]).unwrap_or_else(|e| panic!("{e}"));
-        (b.last.hits - before.hits, b.last.misses - before.misses)
+        (b.last.counters.hits - before.counters.hits, b.last.counters.misses - before.counters.misses)
     };
     assert_eq!(pass(&mut b), (0, 64), "cold");
     assert_eq!(pass(&mut b), (64, 0), "warm");
@@ -483,7 +491,11 @@ fn texture_cache_two_ways_keep_conflicting_lines_round_robin() {
         }
         let trace: Vec<_> = seq.iter().map(|&(l, a, _)| Req::lane(l, a).lanes()).collect();
         let s = hit_rate_of_trace(&p, &trace);
-        assert_eq!((s.hits, s.misses), (b.last.hits as u64, b.last.misses as u64), "{p:?}: the functional model");
+        assert_eq!(
+            (s.hits, s.misses),
+            (b.last.counters.hits as u64, b.last.counters.misses as u64),
+            "{p:?}: the functional model"
+        );
     }
     // 16 sets of 4 words: set = address bits 2..5; A, B, C all in set 0 (tags 4, 8, 12).
     let (a, b, c) = (0x100, 0x200, 0x300);

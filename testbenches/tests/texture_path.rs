@@ -14,7 +14,7 @@ use crate::texture_unit::{mem_pins, random_state, request_pins, Memory, MEMORY};
 use fx::{Formats, TexFormats};
 use model::blend::MODES;
 use model::span::Pixel;
-use model::texture_cache::Params;
+use model::texture_cache::{MemAsk, Params};
 use model::texture_path::{Fragment, PathIn, PathOut, TexTriangle, TexturePath};
 use model::texture_unit::TextureUnit;
 use rand::{Rng, SeedableRng};
@@ -92,7 +92,7 @@ fn pins(i: &PathIn, recip: &model::divider::Recip) -> Vec<(String, Value)> {
 /// The model's outputs compared every cycle, and the fragment out with `out$valid`.
 fn outputs(o: &PathOut) -> Vec<(&'static str, Value)> {
     let mut want = vec![("inp$ready", bit(o.inp_ready)), ("out$valid", bit(o.out_valid)), ("idle", bit(o.idle))];
-    want.extend(request_pins(o.mem_valid, o.mem_addr, [o.hits, o.misses, o.fills]));
+    want.extend(request_pins(o.mem, o.counters));
     if o.out_valid {
         let p = &o.out.pixel;
         want.extend([
@@ -155,7 +155,7 @@ fn lockstep(lod: LodRule, salt: u64) {
             for (pin, v) in outputs(&o) {
                 dual.expect(&got, pin, &v).unwrap_or_else(|e| panic!("{e} (seed {})", seed()));
             }
-            mem.ask(now, &m, o.mem_valid, o.mem_addr);
+            mem.ask(now, &m, o.mem);
             next += usize::from(i.inp_valid && o.inp_ready);
             if o.out_valid && i.out_ready {
                 let (pixel, alpha, blend) = want.pop_front().unwrap();
@@ -242,7 +242,7 @@ fn texture_path_frames_of_the_shipped_textured_scenes_equal_the_models() {
                 };
                 out.push((pixel, got(&mut vl, "out$alpha") as u8, MODES[got(&mut vl, "out$mode") as usize]));
             }
-            mem.ask(now, &m, got(&mut vl, "mem$valid") == 1, got(&mut vl, "mem$addr"));
+            mem.ask(now, &m, MemAsk { valid: got(&mut vl, "mem$valid") == 1, addr: got(&mut vl, "mem$addr") });
             counters = ["counters$hits", "counters$misses", "counters$fills"].map(|p| u64::from(got(&mut vl, p)));
             vl.clock();
             now += 1;

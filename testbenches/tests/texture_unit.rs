@@ -11,7 +11,7 @@
 //! direct-mapped cache of 1-word lines, where nearly every access misses.
 
 use fx::TexFormats;
-use model::texture_cache::{hit_rate_of_trace, MemIn, Params};
+use model::texture_cache::{hit_rate_of_trace, Counters, MemAsk, MemIn, Params};
 use model::texture_memory::ReadPort;
 use model::texture_memory::{chain_words, layout};
 use model::texture_unit::input::TexPlanes;
@@ -19,6 +19,7 @@ use model::texture_unit::pipeline::{Pipeline, Pixel, UnitIn, UnitOut};
 use model::texture_unit::{Fetch, TexState, TextureUnit};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use rtl::texture_cache::ADDR;
 use rtl::texture_unit::{TextureUnit411, TextureUnit6424};
 use rust_hdl::prelude::Block;
 use sim::textured::{state_pins, ENVS, MIPS, WRAPS};
@@ -59,20 +60,19 @@ pub(crate) fn mem_pins(m: &MemIn) -> [(&'static str, Value); 3] {
 /// The model's outputs compared every cycle (`out_rgba` and `out_tag` with `out_valid`).
 fn every_cycle(o: &UnitOut) -> Vec<(&'static str, Value)> {
     let mut want = vec![("inp_ready", bit(o.inp_ready)), ("out_valid", bit(o.out_valid)), ("idle", bit(o.idle))];
-    want.extend(request_pins(o.mem_valid, o.mem_addr, [o.hits, o.misses, o.fills]));
+    want.extend(request_pins(o.mem, o.counters));
     want
 }
 
-/// The memory request (`mem_valid`, `mem_addr`) and the cache's counters (`hits`,
-/// `misses`, `fills`) on the pins of `texture_unit` and of `texture_path`, which holds it.
-pub(crate) fn request_pins(valid: bool, addr: u32, counters: [u32; 3]) -> [(&'static str, Value); 5] {
-    let [hits, misses, fills] = counters.map(|c| Value::new(32, c.into()));
+/// The memory request (`mem$*`) and the cache's counters (`counters$*`) on the pins of
+/// `texture_cache`, of `texture_unit` and of `texture_path`, which hold it.
+pub(crate) fn request_pins(mem: MemAsk, c: Counters) -> [(&'static str, Value); 5] {
     [
-        ("mem$valid", bit(valid)),
-        ("mem$addr", Value::new(26, addr.into())),
-        ("counters$hits", hits),
-        ("counters$misses", misses),
-        ("counters$fills", fills),
+        ("mem$valid", bit(mem.valid)),
+        ("mem$addr", Value::new(ADDR, mem.addr.into())),
+        ("counters$hits", Value::new(32, c.hits.into())),
+        ("counters$misses", Value::new(32, c.misses.into())),
+        ("counters$fills", Value::new(32, c.fills.into())),
     ]
 }
 
@@ -200,9 +200,9 @@ impl Memory {
         self.mem.answer(now, ack)
     }
 
-    /// After cycle `now` with answer `m`: the word at `addr` asked when `valid`.
-    pub(crate) fn ask(&mut self, now: u64, m: &MemIn, valid: bool, addr: u32) {
-        self.mem.ask(now, m, valid, addr)
+    /// After cycle `now` with answer `m`: the word `asked` (when valid).
+    pub(crate) fn ask(&mut self, now: u64, m: &MemIn, asked: MemAsk) {
+        self.mem.ask(now, m, asked)
     }
 }
 
@@ -234,7 +234,7 @@ impl<U: Block + Pins> Bench<U> {
         for (pin, v) in want {
             self.dual.expect(&got, pin, &v).unwrap_or_else(|e| panic!("{e} (seed {})", seed()));
         }
-        self.mem.ask(self.now, &m, o.mem_valid, o.mem_addr);
+        self.mem.ask(self.now, &m, o.mem);
         self.now += 1;
         o
     }
@@ -309,13 +309,16 @@ fn lockstep<U: Block + Pins>(unit: impl Fn() -> U, p: Params, lod: LodRule, salt
              misses",
             draws.iter().map(|d| d.pixels.len()).sum::<usize>(),
             b.now,
-            o.hits,
-            o.misses
+            o.counters.hits,
+            o.counters.misses
         );
         assert!(two > 0, "no pixel between two levels");
         if flush_chance == 0.0 {
             let s = hit_rate_of_trace(&p, &fetches);
-            assert_eq!((o.hits.into(), o.misses.into(), o.fills.into()), (s.hits, s.misses, s.fills));
+            assert_eq!(
+                (o.counters.hits.into(), o.counters.misses.into(), o.counters.fills.into()),
+                (s.hits, s.misses, s.fills)
+            );
         }
     }
 }

@@ -30,7 +30,7 @@
 //!  cycle   hit                          miss of m lanes, memory latency L, mem_ack high
 //!  t       inp_valid & inp_ready: taken  taken
 //!  t+1     S1: all enabled lanes hit     S1: a lane misses; counted (hits, misses)
-//!  t+2     out_valid (O)                 Fill: 1st word asked (mem_valid, mem_addr)
+//!  t+2     out_valid (O)                 Fill: 1st word asked (MemAsk)
 //!  ...                                   word k asked at t+2+k, k < m·line (lane order)
 //!  t+1+m·line+L                          the last word in (mem_rvalid): line written
 //!  t+2+m·line+L                          Wait: the RAMs read S1's addresses again
@@ -62,7 +62,7 @@
 //!   after the fill counts nothing). Else if a flush is asked and S1 is empty or moves on:
 //!   Clear from set 0.
 //! * Fill: the missing lanes' lines, in lane order, `line` words each from the line's first
-//!   word: `mem_valid` with `mem_addr` the next word, until `mem_ack`; the words come back
+//!   word: `MemAsk` with the next word's address, until `MemIn::ack`; the words come back
 //!   in order (`mem_rvalid`, `mem_rdata`), each written to the victim way of its lane's
 //!   bank; with a line's last word its tag is written valid and its set's victim pointer
 //!   advances (`fills` counts it). Asking runs ahead of the answers: the next lane's words
@@ -237,10 +237,18 @@ pub struct CacheIn {
     pub out_ready: bool,
 }
 
-/// The memory's side of the read port in one cycle.
+/// The cache's side of the read port in one cycle (the RTL's `mem$valid`, `mem$addr`): a
+/// word asked, held until [`MemIn::ack`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct MemAsk {
+    pub valid: bool,
+    pub addr: u32,
+}
+
+/// The memory's side of the read port in one cycle (`mem$ack`, `mem$rvalid`, `mem$rdata`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct MemIn {
-    /// The word asked (`mem_valid`, `mem_addr`) is taken this cycle.
+    /// The word asked ([`MemAsk`]) is taken this cycle.
     pub ack: bool,
     /// A word asked earlier is answered this cycle (in the order asked).
     pub rvalid: bool,
@@ -254,8 +262,14 @@ pub struct CacheOut {
     pub out_valid: bool,
     pub out_data: [u32; LANES],
     pub out_side: u64,
-    pub mem_valid: bool,
-    pub mem_addr: u32,
+    pub mem: MemAsk,
+    pub counters: Counters,
+}
+
+/// The cache's counters (the RTL's `counters$*`), 32 bits, wrapping: lane lookups that hit
+/// and that missed, counted in S1's first cycle, and lines fetched.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Counters {
     pub hits: u32,
     pub misses: u32,
     pub fills: u32,
@@ -332,9 +346,7 @@ pub struct TextureCache {
     iss_word: u32,
     rcv_mask: u8,
     rcv_word: u32,
-    hits: u32,
-    misses: u32,
-    fills: u32,
+    counters: Counters,
 }
 
 /// The lowest lane of `mask` (3 when empty, as the RTL's priority encoder).
@@ -365,9 +377,7 @@ impl TextureCache {
             iss_word: 0,
             rcv_mask: 0,
             rcv_word: 0,
-            hits: 0,
-            misses: 0,
-            fills: 0,
+            counters: Counters::default(),
         }
     }
 
@@ -403,25 +413,25 @@ impl TextureCache {
         let take = i.inp_valid && inp_ready;
         let fill = self.st == State::Fill;
         let iss_lane = lowest(self.iss_mask);
-        let mem_valid = fill && self.iss_mask != 0;
-        let mem_addr = (self.s1_addr[iss_lane] & !(p.line - 1)) | self.iss_word;
+        let mem = MemAsk {
+            valid: fill && self.iss_mask != 0,
+            addr: (self.s1_addr[iss_lane] & !(p.line - 1)) | self.iss_word,
+        };
         let out = CacheOut {
             inp_ready,
             out_valid: self.o_valid,
             out_data: self.o_data,
             out_side: self.o_side,
-            mem_valid,
-            mem_addr,
-            hits: self.hits,
-            misses: self.misses,
-            fills: self.fills,
+            mem,
+            counters: self.counters,
         };
 
         // The edge. The counters: S1's first cycle.
         if run && self.s1_valid && self.s1_fresh {
             let en = self.s1_en as u32 & 0xf;
-            self.hits = self.hits.wrapping_add((en & !miss_mask as u32).count_ones());
-            self.misses = self.misses.wrapping_add(miss_mask.count_ones());
+            let c = &mut self.counters;
+            c.hits = c.hits.wrapping_add((en & !miss_mask as u32).count_ones());
+            c.misses = c.misses.wrapping_add(miss_mask.count_ones());
         }
         // The output register.
         if s1_go {
@@ -474,7 +484,7 @@ impl TextureCache {
                 }
             }
             State::Fill => {
-                if mem_valid && m.ack {
+                if mem.valid && m.ack {
                     if self.iss_word == p.line - 1 {
                         self.iss_word = 0;
                         self.iss_mask &= self.iss_mask.wrapping_sub(1);
@@ -494,7 +504,7 @@ impl TextureCache {
                     if last {
                         self.rcv_word = 0;
                         self.rcv_mask &= self.rcv_mask.wrapping_sub(1);
-                        self.fills = self.fills.wrapping_add(1);
+                        self.counters.fills = self.counters.fills.wrapping_add(1);
                         if self.rcv_mask == 0 {
                             st = State::Wait;
                         }

@@ -12,7 +12,7 @@
 //! One word is one texel in its [`TexelFormat`]'s encoding (`TexelFormat::encode`), in the
 //! low bits.
 
-use crate::texture_cache::MemIn;
+use crate::texture_cache::{MemAsk, MemIn};
 use crate::texture_unit::TexState;
 use scene::Trilist;
 use std::collections::VecDeque;
@@ -99,7 +99,7 @@ impl TextureMemory {
 }
 
 /// The texture memory behind `texture_unit`'s read port (`mem_valid`, `mem_addr`,
-/// `mem_ack`, `mem_rvalid`, `mem_rdata`): each word asked and acknowledged comes back
+/// `mem$ack`, `mem$rvalid`, `mem$rdata`): each word asked and acknowledged comes back
 /// `latency` cycles later, in order, at most one a cycle.
 #[derive(Clone, Debug)]
 pub struct ReadPort {
@@ -122,11 +122,11 @@ impl ReadPort {
         MemIn { ack, rvalid: answer.is_some(), rdata: answer.unwrap_or(0) }
     }
 
-    /// After cycle `now` with answer `m`: the word at `addr` asked when `valid`.
-    pub fn ask(&mut self, now: u64, m: &MemIn, valid: bool, addr: u32) {
-        if valid && m.ack {
+    /// After cycle `now` with answer `m`: the word `asked` (when valid).
+    pub fn ask(&mut self, now: u64, m: &MemIn, asked: MemAsk) {
+        if asked.valid && m.ack {
             let due = (now + self.latency).max(self.queue.back().map_or(0, |(d, _)| d + 1));
-            let word = self.words.get(addr as usize).copied().unwrap_or(0);
+            let word = self.words.get(asked.addr as usize).copied().unwrap_or(0);
             self.queue.push_back((due, word));
         }
     }

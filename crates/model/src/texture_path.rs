@@ -36,7 +36,7 @@ use crate::guard_band;
 use crate::input::{to_fixed, Vtx};
 use crate::render::{triangle_ranged, Dropped, Options, Texturing, Work};
 use crate::span::Pixel;
-use crate::texture_cache::{MemIn, Params};
+use crate::texture_cache::{Counters, MemAsk, MemIn, Params};
 use crate::texture_setup::{area2, tex_vertices, texture_setup, TexVtx, TexturePlanes};
 use crate::texture_unit::pipeline::{Pipeline, Pixel as UnitPixel, UnitIn};
 use crate::texture_unit::{TexIn, TexState};
@@ -93,11 +93,9 @@ pub struct PathOut {
     pub out_valid: bool,
     /// Meaningful with `out_valid`.
     pub out: Textured,
-    pub mem_valid: bool,
-    pub mem_addr: u32,
-    pub hits: u32,
-    pub misses: u32,
-    pub fills: u32,
+    /// `texture_unit`'s read port and counters.
+    pub mem: MemAsk,
+    pub counters: Counters,
     /// No fragment in the path, and no triangle being set up.
     pub idle: bool,
 }
@@ -198,11 +196,8 @@ impl TexturePath {
             inp_ready,
             out_valid: uo.out_valid,
             out: Textured { pixel: Pixel { rgb: [r, g, b], ..pixel }, alpha, blend },
-            mem_valid: uo.mem_valid,
-            mem_addr: uo.mem_addr,
-            hits: uo.hits,
-            misses: uo.misses,
-            fills: uo.fills,
+            mem: uo.mem,
+            counters: uo.counters,
             idle,
         };
 
@@ -385,8 +380,8 @@ mod tests {
                 out_ready: true,
             };
             let o = path.step(&i, MemIn { ack: true, rvalid: due.is_some(), rdata: due.unwrap_or(0) });
-            if o.mem_valid {
-                answers.push_back(memory.get(o.mem_addr as usize).copied().unwrap_or(0));
+            if o.mem.valid {
+                answers.push_back(memory.get(o.mem.addr as usize).copied().unwrap_or(0));
             }
             next += (i.inp_valid && o.inp_ready) as usize;
             if o.out_valid {

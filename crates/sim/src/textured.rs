@@ -13,6 +13,7 @@ use crate::streams::raw;
 use crate::{Outputs, Sim, Value, VlSim};
 use fx::Build;
 use model::blend::MODES;
+use model::texture_cache::MemAsk;
 use model::texture_memory::ReadPort;
 use model::texture_path::Sent;
 use model::texture_unit::TexState;
@@ -132,7 +133,7 @@ pub fn draw(
         }
         next += usize::from(next < tris.len() && get("inp$ready") == 1);
         memory.edge(true, &Request::of(&o));
-        tex.ask(now, &m, get("tex_mem$valid") == 1, get("tex_mem$addr"));
+        tex.ask(now, &m, MemAsk { valid: get("tex_mem$valid") == 1, addr: get("tex_mem$addr") });
     }
     Err(format!(
         "raster_top (TEXTURE = 1): no done after {max_cycles} cycles ({next} of {} triangles taken)",

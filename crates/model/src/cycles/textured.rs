@@ -179,11 +179,11 @@ impl PathSink<'_> {
             out_ready: self.cur.is_some() && (self.out.ready)(c),
         };
         let o = self.path.step(&i, m);
-        self.memory.ask(c, &m, o.mem_valid, o.mem_addr);
+        self.memory.ask(c, &m, o.mem);
         if o.out_valid && i.out_ready {
             *last = (*last).max(self.out.through(c));
         }
-        self.counters = [o.hits, o.misses, o.fills].map(u64::from);
+        self.counters = [o.counters.hits, o.counters.misses, o.counters.fills].map(u64::from);
         self.now += 1;
         o.inp_ready
     }

@@ -27,7 +27,7 @@
 
 use super::{TexGrad, TexIn, TexState, TextureUnit};
 use crate::texture_address::{request, Request};
-use crate::texture_cache::{CacheIn, MemIn, Params, TextureCache, HIT_LATENCY, LANES};
+use crate::texture_cache::{CacheIn, Counters, MemAsk, MemIn, Params, TextureCache, HIT_LATENCY, LANES};
 use crate::texture_coords::Coords;
 use crate::texture_filter::{environment, gaussian_table, texel, FilterIn, Rgba8};
 use crate::texture_memory::ReadPort;
@@ -84,11 +84,9 @@ pub struct UnitOut {
     /// The pixel's colour and tag (meaningful with `out_valid`).
     pub out_rgba: Rgba8,
     pub out_tag: u32,
-    pub mem_valid: bool,
-    pub mem_addr: u32,
-    pub hits: u32,
-    pub misses: u32,
-    pub fills: u32,
+    /// The cache's read port and counters.
+    pub mem: MemAsk,
+    pub counters: Counters,
     /// No pixel in flight.
     pub idle: bool,
 }
@@ -225,11 +223,8 @@ impl Pipeline {
             out_valid: last.is_some(),
             out_rgba: last.unwrap_or_default(),
             out_tag: self.tags.front().copied().unwrap_or(0),
-            mem_valid: co.mem_valid,
-            mem_addr: co.mem_addr,
-            hits: co.hits,
-            misses: co.misses,
-            fills: co.fills,
+            mem: co.mem,
+            counters: co.counters,
             idle: self.is_idle(),
         };
 
@@ -324,7 +319,7 @@ pub fn cycles(
     let mut step = |u: &mut Pipeline, i: &UnitIn, now: &mut u64| {
         let m = port.answer(*now, true);
         let o = u.step(i, m);
-        port.ask(*now, &m, o.mem_valid, o.mem_addr);
+        port.ask(*now, &m, o.mem);
         *now += 1;
         o
     };
@@ -367,7 +362,7 @@ pub fn cycles(
     let o = step(&mut u, &UnitIn::idle(state), &mut now);
     run.cycles = last - start.unwrap_or(0);
     run.pixels = out;
-    (run.hits, run.misses, run.fills) = (o.hits.into(), o.misses.into(), o.fills.into());
+    (run.hits, run.misses, run.fills) = (o.counters.hits.into(), o.counters.misses.into(), o.counters.fills.into());
     Ok(run)
 }
 
@@ -456,8 +451,8 @@ mod tests {
                 // The same pixel at cycle 80 (a cold miss) and again at 200 (hits).
                 let i = UnitIn { inp_valid: now == 80 || now == 200, pixel: px, st_load: now == 0, ..quiet };
                 let o = u.step(&i, MemIn { ack: true, rvalid: due.is_some(), rdata: due.unwrap_or(0) });
-                if o.mem_valid {
-                    mem_queue.push_back((now + 3, memory.get(o.mem_addr as usize).copied().unwrap_or(0)));
+                if o.mem.valid {
+                    mem_queue.push_back((now + 3, memory.get(o.mem.addr as usize).copied().unwrap_or(0)));
                 }
                 if i.inp_valid && o.inp_ready {
                     taken.push(now);
