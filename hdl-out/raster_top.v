@@ -45,6 +45,162 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
     output reg  done;
     
     // Stub signals
+    reg  fragments$clock;
+    reg  [10:0] fragments$width;
+    reg  [10:0] fragments$height;
+    reg  fragments$inp_last;
+    reg  fragments$cull_back;
+    wire  fragments$out$valid;
+    reg  fragments$out$ready;
+    wire  [9:0] fragments$out$x;
+    wire  [9:0] fragments$out$y;
+    wire  [15:0] fragments$out$z;
+    wire  [7:0] fragments$out$rgb0;
+    wire  [7:0] fragments$out$rgb1;
+    wire  [7:0] fragments$out$rgb2;
+    wire  fragments$done;
+    reg  pixel_out$clock;
+    reg  pixel_out$inp$valid;
+    wire  pixel_out$inp$ready;
+    reg  [9:0] pixel_out$inp$x;
+    reg  [9:0] pixel_out$inp$y;
+    reg  [15:0] pixel_out$inp$z;
+    reg  [7:0] pixel_out$inp$rgb0;
+    reg  [7:0] pixel_out$inp$rgb1;
+    reg  [7:0] pixel_out$inp$rgb2;
+    wire  pixel_out$idle;
+    
+    // Sub module instances
+    raster_top$fragments fragments(
+        .clock(fragments$clock),
+        .width(fragments$width),
+        .height(fragments$height),
+        .inp$valid(inp$valid),
+        .inp$ready(inp$ready),
+        .inp$v0_x(inp$v0_x),
+        .inp$v0_y(inp$v0_y),
+        .inp$v0_z(inp$v0_z),
+        .inp$v0_c0(inp$v0_c0),
+        .inp$v0_c1(inp$v0_c1),
+        .inp$v0_c2(inp$v0_c2),
+        .inp$v0_iw(inp$v0_iw),
+        .inp$v1_x(inp$v1_x),
+        .inp$v1_y(inp$v1_y),
+        .inp$v1_z(inp$v1_z),
+        .inp$v1_c0(inp$v1_c0),
+        .inp$v1_c1(inp$v1_c1),
+        .inp$v1_c2(inp$v1_c2),
+        .inp$v1_iw(inp$v1_iw),
+        .inp$v2_x(inp$v2_x),
+        .inp$v2_y(inp$v2_y),
+        .inp$v2_z(inp$v2_z),
+        .inp$v2_c0(inp$v2_c0),
+        .inp$v2_c1(inp$v2_c1),
+        .inp$v2_c2(inp$v2_c2),
+        .inp$v2_iw(inp$v2_iw),
+        .inp_last(fragments$inp_last),
+        .cull_back(fragments$cull_back),
+        .verdict$valid(verdict$valid),
+        .verdict$code(verdict$code),
+        .verdict$outside(verdict$outside),
+        .out$valid(fragments$out$valid),
+        .out$ready(fragments$out$ready),
+        .out$x(fragments$out$x),
+        .out$y(fragments$out$y),
+        .out$z(fragments$out$z),
+        .out$rgb0(fragments$out$rgb0),
+        .out$rgb1(fragments$out$rgb1),
+        .out$rgb2(fragments$out$rgb2),
+        .done(fragments$done)
+    );
+    raster_top$pixel_out pixel_out(
+        .clock(pixel_out$clock),
+        .inp$valid(pixel_out$inp$valid),
+        .inp$ready(pixel_out$inp$ready),
+        .inp$x(pixel_out$inp$x),
+        .inp$y(pixel_out$inp$y),
+        .inp$z(pixel_out$inp$z),
+        .inp$rgb0(pixel_out$inp$rgb0),
+        .inp$rgb1(pixel_out$inp$rgb1),
+        .inp$rgb2(pixel_out$inp$rgb2),
+        .mem$ready(mem$ready),
+        .mem$rd_en(mem$rd_en),
+        .mem$rd_addr(mem$rd_addr),
+        .mem$rd_z(mem$rd_z),
+        .mem$wr_en(mem$wr_en),
+        .mem$wr_addr(mem$wr_addr),
+        .mem$wr_z(mem$wr_z),
+        .mem$wr_rgb(mem$wr_rgb),
+        .idle(pixel_out$idle)
+    );
+    
+    // Update code
+    always @(*) begin
+        fragments$clock = clock;
+        pixel_out$clock = clock;
+        fragments$width = width;
+        fragments$height = height;
+        fragments$inp_last = inp_last;
+        fragments$cull_back = cull_back;
+        done = fragments$done & pixel_out$idle;
+    end
+    
+    always @(*) pixel_out$inp$valid = fragments$out$valid;
+    always @(*) fragments$out$ready = pixel_out$inp$ready;
+    always @(*) pixel_out$inp$x = fragments$out$x;
+    always @(*) pixel_out$inp$y = fragments$out$y;
+    always @(*) pixel_out$inp$z = fragments$out$z;
+    always @(*) pixel_out$inp$rgb0 = fragments$out$rgb0;
+    always @(*) pixel_out$inp$rgb1 = fragments$out$rgb1;
+    always @(*) pixel_out$inp$rgb2 = fragments$out$rgb2;
+endmodule // raster_top
+
+
+module raster_top$fragments(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp_last,cull_back,verdict$valid,verdict$code,verdict$outside,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,done);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [10:0] width;
+    input wire  [10:0] height;
+    input wire  inp$valid;
+    output wire  inp$ready;
+    input wire  [15:0] inp$v0_x;
+    input wire  [15:0] inp$v0_y;
+    input wire  [17:0] inp$v0_z;
+    input wire  [7:0] inp$v0_c0;
+    input wire  [7:0] inp$v0_c1;
+    input wire  [7:0] inp$v0_c2;
+    input wire  [15:0] inp$v0_iw;
+    input wire  [15:0] inp$v1_x;
+    input wire  [15:0] inp$v1_y;
+    input wire  [17:0] inp$v1_z;
+    input wire  [7:0] inp$v1_c0;
+    input wire  [7:0] inp$v1_c1;
+    input wire  [7:0] inp$v1_c2;
+    input wire  [15:0] inp$v1_iw;
+    input wire  [15:0] inp$v2_x;
+    input wire  [15:0] inp$v2_y;
+    input wire  [17:0] inp$v2_z;
+    input wire  [7:0] inp$v2_c0;
+    input wire  [7:0] inp$v2_c1;
+    input wire  [7:0] inp$v2_c2;
+    input wire  [15:0] inp$v2_iw;
+    input wire  inp_last;
+    input wire  cull_back;
+    output wire  verdict$valid;
+    output wire  [1:0] verdict$code;
+    output wire  [5:0] verdict$outside;
+    output wire  out$valid;
+    input wire  out$ready;
+    output wire  [9:0] out$x;
+    output wire  [9:0] out$y;
+    output wire  [15:0] out$z;
+    output wire  [7:0] out$rgb0;
+    output wire  [7:0] out$rgb1;
+    output wire  [7:0] out$rgb2;
+    output reg  done;
+    
+    // Stub signals
     reg  cull_sort$clock;
     reg  [10:0] cull_sort$width;
     reg  [10:0] cull_sort$height;
@@ -102,14 +258,6 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
     reg  [15:0] core$inp$v2_iw;
     reg  [5:0] core$inp$crosses;
     reg  core$inp_last;
-    wire  core$out$valid;
-    reg  core$out$ready;
-    wire  [9:0] core$out$x;
-    wire  [9:0] core$out$y;
-    wire  [15:0] core$out$z;
-    wire  [7:0] core$out$rgb0;
-    wire  [7:0] core$out$rgb1;
-    wire  [7:0] core$out$rgb2;
     wire  core$idle;
     wire  core$done;
     reg  core$hold;
@@ -117,22 +265,12 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
     wire  [24:0] core$recip_mant;
     wire  [5:0] core$recip_exp;
     wire  core$walk_idle;
-    reg  pixel_out$clock;
-    reg  pixel_out$inp$valid;
-    wire  pixel_out$inp$ready;
-    reg  [9:0] pixel_out$inp$x;
-    reg  [9:0] pixel_out$inp$y;
-    reg  [15:0] pixel_out$inp$z;
-    reg  [7:0] pixel_out$inp$rgb0;
-    reg  [7:0] pixel_out$inp$rgb1;
-    reg  [7:0] pixel_out$inp$rgb2;
-    wire  pixel_out$idle;
     reg  last_in$d;
     wire  last_in$q;
     reg  last_in$clock;
     
     // Sub module instances
-    raster_top$cull_sort cull_sort(
+    raster_top$fragments$cull_sort cull_sort(
         .clock(cull_sort$clock),
         .width(cull_sort$width),
         .height(cull_sort$height),
@@ -189,7 +327,7 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
         .verdict$outside(verdict$outside),
         .idle(cull_sort$idle)
     );
-    raster_top$core core(
+    raster_top$fragments$core core(
         .clock(core$clock),
         .width(core$width),
         .height(core$height),
@@ -218,14 +356,14 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
         .inp$v2_iw(core$inp$v2_iw),
         .inp$crosses(core$inp$crosses),
         .inp_last(core$inp_last),
-        .out$valid(core$out$valid),
-        .out$ready(core$out$ready),
-        .out$x(core$out$x),
-        .out$y(core$out$y),
-        .out$z(core$out$z),
-        .out$rgb0(core$out$rgb0),
-        .out$rgb1(core$out$rgb1),
-        .out$rgb2(core$out$rgb2),
+        .out$valid(out$valid),
+        .out$ready(out$ready),
+        .out$x(out$x),
+        .out$y(out$y),
+        .out$z(out$z),
+        .out$rgb0(out$rgb0),
+        .out$rgb1(out$rgb1),
+        .out$rgb2(out$rgb2),
         .idle(core$idle),
         .done(core$done),
         .hold(core$hold),
@@ -234,27 +372,7 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
         .recip_exp(core$recip_exp),
         .walk_idle(core$walk_idle)
     );
-    raster_top$pixel_out pixel_out(
-        .clock(pixel_out$clock),
-        .inp$valid(pixel_out$inp$valid),
-        .inp$ready(pixel_out$inp$ready),
-        .inp$x(pixel_out$inp$x),
-        .inp$y(pixel_out$inp$y),
-        .inp$z(pixel_out$inp$z),
-        .inp$rgb0(pixel_out$inp$rgb0),
-        .inp$rgb1(pixel_out$inp$rgb1),
-        .inp$rgb2(pixel_out$inp$rgb2),
-        .mem$ready(mem$ready),
-        .mem$rd_en(mem$rd_en),
-        .mem$rd_addr(mem$rd_addr),
-        .mem$rd_z(mem$rd_z),
-        .mem$wr_en(mem$wr_en),
-        .mem$wr_addr(mem$wr_addr),
-        .mem$wr_z(mem$wr_z),
-        .mem$wr_rgb(mem$wr_rgb),
-        .idle(pixel_out$idle)
-    );
-    raster_top$last_in last_in(
+    raster_top$fragments$last_in last_in(
         .d(last_in$d),
         .q(last_in$q),
         .clock(last_in$clock)
@@ -266,7 +384,6 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
         last_in$d = last_in$q;
         cull_sort$clock = clock;
         core$clock = clock;
-        pixel_out$clock = clock;
         cull_sort$width = width;
         cull_sort$height = height;
         cull_sort$cull_back = cull_back;
@@ -277,7 +394,7 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
         if (inp$valid & inp$ready) begin
             last_in$d = inp_last;
         end
-        done = last_in$q & cull_sort$idle & core$idle & pixel_out$idle;
+        done = last_in$q & cull_sort$idle & core$idle;
     end
     
     always @(*) core$inp$valid = cull_sort$out$valid;
@@ -304,18 +421,10 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
     always @(*) core$inp$v2_c2 = cull_sort$out$v2_c2;
     always @(*) core$inp$v2_iw = cull_sort$out$v2_iw;
     always @(*) core$inp$crosses = cull_sort$out$crosses;
-    always @(*) pixel_out$inp$valid = core$out$valid;
-    always @(*) core$out$ready = pixel_out$inp$ready;
-    always @(*) pixel_out$inp$x = core$out$x;
-    always @(*) pixel_out$inp$y = core$out$y;
-    always @(*) pixel_out$inp$z = core$out$z;
-    always @(*) pixel_out$inp$rgb0 = core$out$rgb0;
-    always @(*) pixel_out$inp$rgb1 = core$out$rgb1;
-    always @(*) pixel_out$inp$rgb2 = core$out$rgb2;
-endmodule // raster_top
+endmodule // raster_top$fragments
 
 
-module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,inp_last,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle,done,hold,handed,recip_mant,recip_exp,walk_idle);
+module raster_top$fragments$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,inp_last,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle,done,hold,handed,recip_mant,recip_exp,walk_idle);
     
     // Module arguments
     input wire  clock;
@@ -584,7 +693,7 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
     reg  taken;
     
     // Sub module instances
-    raster_top$core$triangle_setup triangle_setup(
+    raster_top$fragments$core$triangle_setup triangle_setup(
         .clock(triangle_setup$clock),
         .inp$valid(inp$valid),
         .inp$ready(inp$ready),
@@ -678,7 +787,7 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
         .recip_mant(triangle_setup$recip_mant),
         .recip_exp(triangle_setup$recip_exp)
     );
-    raster_top$core$edge_walk edge_walk(
+    raster_top$fragments$core$edge_walk edge_walk(
         .clock(edge_walk$clock),
         .height(edge_walk$height),
         .inp$valid(edge_walk$inp$valid),
@@ -766,7 +875,7 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
         .hold(edge_walk$hold),
         .idle(edge_walk$idle)
     );
-    raster_top$core$fifo fifo(
+    raster_top$fragments$core$fifo fifo(
         .clock(fifo$clock),
         .inp$valid(fifo$inp$valid),
         .inp$ready(fifo$inp$ready),
@@ -804,7 +913,7 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
         .out$ddx_c2(fifo$out$ddx_c2),
         .empty(fifo$empty)
     );
-    raster_top$core$span span(
+    raster_top$fragments$core$span span(
         .clock(span$clock),
         .width(span$width),
         .inp$valid(span$inp$valid),
@@ -834,12 +943,12 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
         .out$rgb2(out$rgb2),
         .idle(span$idle)
     );
-    raster_top$core$in_setup in_setup(
+    raster_top$fragments$core$in_setup in_setup(
         .d(in_setup$d),
         .q(in_setup$q),
         .clock(in_setup$clock)
     );
-    raster_top$core$last_in last_in(
+    raster_top$fragments$core$last_in last_in(
         .d(last_in$d),
         .q(last_in$q),
         .clock(last_in$clock)
@@ -975,10 +1084,10 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
     always @(*) span$inp$ddx_c0 = fifo$out$ddx_c0;
     always @(*) span$inp$ddx_c1 = fifo$out$ddx_c1;
     always @(*) span$inp$ddx_c2 = fifo$out$ddx_c2;
-endmodule // raster_top$core
+endmodule // raster_top$fragments$core
 
 
-module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_j,inp$maj_count,inp$maj_x,inp$maj_r,inp$maj_q,inp$maj_rho,inp$maj_d,inp$maj_at_z,inp$maj_at_c0,inp$maj_at_c1,inp$maj_at_c2,inp$maj_inc0_z,inp$maj_inc0_c0,inp$maj_inc0_c1,inp$maj_inc0_c2,inp$maj_inc1_z,inp$maj_inc1_c0,inp$maj_inc1_c1,inp$maj_inc1_c2,inp$short0_j,inp$short0_count,inp$short0_x,inp$short0_r,inp$short0_q,inp$short0_rho,inp$short0_d,inp$short0_at_z,inp$short0_at_c0,inp$short0_at_c1,inp$short0_at_c2,inp$short0_inc0_z,inp$short0_inc0_c0,inp$short0_inc0_c1,inp$short0_inc0_c2,inp$short0_inc1_z,inp$short0_inc1_c0,inp$short0_inc1_c1,inp$short0_inc1_c2,inp$short1_j,inp$short1_count,inp$short1_x,inp$short1_r,inp$short1_q,inp$short1_rho,inp$short1_d,inp$short1_at_z,inp$short1_at_c0,inp$short1_at_c1,inp$short1_at_c2,inp$short1_inc0_z,inp$short1_inc0_c0,inp$short1_inc0_c1,inp$short1_inc0_c2,inp$short1_inc1_z,inp$short1_inc1_c0,inp$short1_inc1_c1,inp$short1_inc1_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,hold,idle);
+module raster_top$fragments$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_j,inp$maj_count,inp$maj_x,inp$maj_r,inp$maj_q,inp$maj_rho,inp$maj_d,inp$maj_at_z,inp$maj_at_c0,inp$maj_at_c1,inp$maj_at_c2,inp$maj_inc0_z,inp$maj_inc0_c0,inp$maj_inc0_c1,inp$maj_inc0_c2,inp$maj_inc1_z,inp$maj_inc1_c0,inp$maj_inc1_c1,inp$maj_inc1_c2,inp$short0_j,inp$short0_count,inp$short0_x,inp$short0_r,inp$short0_q,inp$short0_rho,inp$short0_d,inp$short0_at_z,inp$short0_at_c0,inp$short0_at_c1,inp$short0_at_c2,inp$short0_inc0_z,inp$short0_inc0_c0,inp$short0_inc0_c1,inp$short0_inc0_c2,inp$short0_inc1_z,inp$short0_inc1_c0,inp$short0_inc1_c1,inp$short0_inc1_c2,inp$short1_j,inp$short1_count,inp$short1_x,inp$short1_r,inp$short1_q,inp$short1_rho,inp$short1_d,inp$short1_at_z,inp$short1_at_c0,inp$short1_at_c1,inp$short1_at_c2,inp$short1_inc0_z,inp$short1_inc0_c0,inp$short1_inc0_c1,inp$short1_inc0_c2,inp$short1_inc1_z,inp$short1_inc1_c0,inp$short1_inc1_c1,inp$short1_inc1_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,hold,idle);
     
     // Module arguments
     input wire  clock;
@@ -1295,10 +1404,10 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
     reg  [12:0] j_next;
     
     // Sub module instances
-    raster_top$core$edge_walk$clip_y clip_y(
+    raster_top$fragments$core$edge_walk$clip_y clip_y(
         .on(clip_y$on)
     );
-    raster_top$core$edge_walk$maj maj(
+    raster_top$fragments$core$edge_walk$maj maj(
         .clock(maj$clock),
         .load(maj$load),
         .step(maj$step),
@@ -1326,7 +1435,7 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
         .at_c1(maj$at_c1),
         .at_c2(maj$at_c2)
     );
-    raster_top$core$edge_walk$cur cur(
+    raster_top$fragments$core$edge_walk$cur cur(
         .clock(cur$clock),
         .load(cur$load),
         .step(cur$step),
@@ -1354,7 +1463,7 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
         .at_c1(cur$at_c1),
         .at_c2(cur$at_c2)
     );
-    raster_top$core$edge_walk$start_maj start_maj(
+    raster_top$fragments$core$edge_walk$start_maj start_maj(
         .up(start_maj$up),
         .r(start_maj$r),
         .rho(start_maj$rho),
@@ -1363,7 +1472,7 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
         .a(start_maj$a),
         .b(start_maj$b)
     );
-    raster_top$core$edge_walk$start_s0 start_s0(
+    raster_top$fragments$core$edge_walk$start_s0 start_s0(
         .up(start_s0$up),
         .r(start_s0$r),
         .rho(start_s0$rho),
@@ -1372,7 +1481,7 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
         .a(start_s0$a),
         .b(start_s0$b)
     );
-    raster_top$core$edge_walk$start_s1 start_s1(
+    raster_top$fragments$core$edge_walk$start_s1 start_s1(
         .up(start_s1$up),
         .r(start_s1$r),
         .rho(start_s1$rho),
@@ -1381,231 +1490,231 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
         .a(start_s1$a),
         .b(start_s1$b)
     );
-    raster_top$core$edge_walk$busy busy(
+    raster_top$fragments$core$edge_walk$busy busy(
         .d(busy$d),
         .q(busy$q),
         .clock(busy$clock)
     );
-    raster_top$core$edge_walk$walking walking(
+    raster_top$fragments$core$edge_walk$walking walking(
         .d(walking$d),
         .q(walking$q),
         .clock(walking$clock)
     );
-    raster_top$core$edge_walk$up up(
+    raster_top$fragments$core$edge_walk$up up(
         .d(up$d),
         .q(up$q),
         .clock(up$clock)
     );
-    raster_top$core$edge_walk$maj_left maj_left(
+    raster_top$fragments$core$edge_walk$maj_left maj_left(
         .d(maj_left$d),
         .q(maj_left$q),
         .clock(maj_left$clock)
     );
-    raster_top$core$edge_walk$j j(
+    raster_top$fragments$core$edge_walk$j j(
         .d(j$d),
         .q(j$q),
         .clock(j$clock)
     );
-    raster_top$core$edge_walk$rem rem(
+    raster_top$fragments$core$edge_walk$rem rem(
         .d(rem$d),
         .q(rem$q),
         .clock(rem$clock)
     );
-    raster_top$core$edge_walk$crow crow(
+    raster_top$fragments$core$edge_walk$crow crow(
         .d(crow$d),
         .q(crow$q),
         .clock(crow$clock)
     );
-    raster_top$core$edge_walk$crem crem(
+    raster_top$fragments$core$edge_walk$crem crem(
         .d(crem$d),
         .q(crem$q),
         .clock(crem$clock)
     );
-    raster_top$core$edge_walk$last_r last_r(
+    raster_top$fragments$core$edge_walk$last_r last_r(
         .d(last_r$d),
         .q(last_r$q),
         .clock(last_r$clock)
     );
-    raster_top$core$edge_walk$sw_r sw_r(
+    raster_top$fragments$core$edge_walk$sw_r sw_r(
         .d(sw_r$d),
         .q(sw_r$q),
         .clock(sw_r$clock)
     );
-    raster_top$core$edge_walk$ddx_z ddx_z(
+    raster_top$fragments$core$edge_walk$ddx_z ddx_z(
         .d(ddx_z$d),
         .q(ddx_z$q),
         .clock(ddx_z$clock)
     );
-    raster_top$core$edge_walk$ddx_c0 ddx_c0(
+    raster_top$fragments$core$edge_walk$ddx_c0 ddx_c0(
         .d(ddx_c0$d),
         .q(ddx_c0$q),
         .clock(ddx_c0$clock)
     );
-    raster_top$core$edge_walk$ddx_c1 ddx_c1(
+    raster_top$fragments$core$edge_walk$ddx_c1 ddx_c1(
         .d(ddx_c1$d),
         .q(ddx_c1$q),
         .clock(ddx_c1$clock)
     );
-    raster_top$core$edge_walk$ddx_c2 ddx_c2(
+    raster_top$fragments$core$edge_walk$ddx_c2 ddx_c2(
         .d(ddx_c2$d),
         .q(ddx_c2$q),
         .clock(ddx_c2$clock)
     );
-    raster_top$core$edge_walk$pend_x pend_x(
+    raster_top$fragments$core$edge_walk$pend_x pend_x(
         .d(pend_x$d),
         .q(pend_x$q),
         .clock(pend_x$clock)
     );
-    raster_top$core$edge_walk$pend_q pend_q(
+    raster_top$fragments$core$edge_walk$pend_q pend_q(
         .d(pend_q$d),
         .q(pend_q$q),
         .clock(pend_q$clock)
     );
-    raster_top$core$edge_walk$pend_t pend_t(
+    raster_top$fragments$core$edge_walk$pend_t pend_t(
         .d(pend_t$d),
         .q(pend_t$q),
         .clock(pend_t$clock)
     );
-    raster_top$core$edge_walk$pend_a pend_a(
+    raster_top$fragments$core$edge_walk$pend_a pend_a(
         .d(pend_a$d),
         .q(pend_a$q),
         .clock(pend_a$clock)
     );
-    raster_top$core$edge_walk$pend_b pend_b(
+    raster_top$fragments$core$edge_walk$pend_b pend_b(
         .d(pend_b$d),
         .q(pend_b$q),
         .clock(pend_b$clock)
     );
-    raster_top$core$edge_walk$pend_at_z pend_at_z(
+    raster_top$fragments$core$edge_walk$pend_at_z pend_at_z(
         .d(pend_at_z$d),
         .q(pend_at_z$q),
         .clock(pend_at_z$clock)
     );
-    raster_top$core$edge_walk$pend_at_c0 pend_at_c0(
+    raster_top$fragments$core$edge_walk$pend_at_c0 pend_at_c0(
         .d(pend_at_c0$d),
         .q(pend_at_c0$q),
         .clock(pend_at_c0$clock)
     );
-    raster_top$core$edge_walk$pend_at_c1 pend_at_c1(
+    raster_top$fragments$core$edge_walk$pend_at_c1 pend_at_c1(
         .d(pend_at_c1$d),
         .q(pend_at_c1$q),
         .clock(pend_at_c1$clock)
     );
-    raster_top$core$edge_walk$pend_at_c2 pend_at_c2(
+    raster_top$fragments$core$edge_walk$pend_at_c2 pend_at_c2(
         .d(pend_at_c2$d),
         .q(pend_at_c2$q),
         .clock(pend_at_c2$clock)
     );
-    raster_top$core$edge_walk$pend_inc0_z pend_inc0_z(
+    raster_top$fragments$core$edge_walk$pend_inc0_z pend_inc0_z(
         .d(pend_inc0_z$d),
         .q(pend_inc0_z$q),
         .clock(pend_inc0_z$clock)
     );
-    raster_top$core$edge_walk$pend_inc0_c0 pend_inc0_c0(
+    raster_top$fragments$core$edge_walk$pend_inc0_c0 pend_inc0_c0(
         .d(pend_inc0_c0$d),
         .q(pend_inc0_c0$q),
         .clock(pend_inc0_c0$clock)
     );
-    raster_top$core$edge_walk$pend_inc0_c1 pend_inc0_c1(
+    raster_top$fragments$core$edge_walk$pend_inc0_c1 pend_inc0_c1(
         .d(pend_inc0_c1$d),
         .q(pend_inc0_c1$q),
         .clock(pend_inc0_c1$clock)
     );
-    raster_top$core$edge_walk$pend_inc0_c2 pend_inc0_c2(
+    raster_top$fragments$core$edge_walk$pend_inc0_c2 pend_inc0_c2(
         .d(pend_inc0_c2$d),
         .q(pend_inc0_c2$q),
         .clock(pend_inc0_c2$clock)
     );
-    raster_top$core$edge_walk$pend_inc1_z pend_inc1_z(
+    raster_top$fragments$core$edge_walk$pend_inc1_z pend_inc1_z(
         .d(pend_inc1_z$d),
         .q(pend_inc1_z$q),
         .clock(pend_inc1_z$clock)
     );
-    raster_top$core$edge_walk$pend_inc1_c0 pend_inc1_c0(
+    raster_top$fragments$core$edge_walk$pend_inc1_c0 pend_inc1_c0(
         .d(pend_inc1_c0$d),
         .q(pend_inc1_c0$q),
         .clock(pend_inc1_c0$clock)
     );
-    raster_top$core$edge_walk$pend_inc1_c1 pend_inc1_c1(
+    raster_top$fragments$core$edge_walk$pend_inc1_c1 pend_inc1_c1(
         .d(pend_inc1_c1$d),
         .q(pend_inc1_c1$q),
         .clock(pend_inc1_c1$clock)
     );
-    raster_top$core$edge_walk$pend_inc1_c2 pend_inc1_c2(
+    raster_top$fragments$core$edge_walk$pend_inc1_c2 pend_inc1_c2(
         .d(pend_inc1_c2$d),
         .q(pend_inc1_c2$q),
         .clock(pend_inc1_c2$clock)
     );
-    raster_top$core$edge_walk$o_valid o_valid(
+    raster_top$fragments$core$edge_walk$o_valid o_valid(
         .d(o_valid$d),
         .q(o_valid$q),
         .clock(o_valid$clock)
     );
-    raster_top$core$edge_walk$o_y o_y(
+    raster_top$fragments$core$edge_walk$o_y o_y(
         .d(o_y$d),
         .q(o_y$q),
         .clock(o_y$clock)
     );
-    raster_top$core$edge_walk$o_xl o_xl(
+    raster_top$fragments$core$edge_walk$o_xl o_xl(
         .d(o_xl$d),
         .q(o_xl$q),
         .clock(o_xl$clock)
     );
-    raster_top$core$edge_walk$o_xr o_xr(
+    raster_top$fragments$core$edge_walk$o_xr o_xr(
         .d(o_xr$d),
         .q(o_xr$q),
         .clock(o_xr$clock)
     );
-    raster_top$core$edge_walk$o_left_z o_left_z(
+    raster_top$fragments$core$edge_walk$o_left_z o_left_z(
         .d(o_left_z$d),
         .q(o_left_z$q),
         .clock(o_left_z$clock)
     );
-    raster_top$core$edge_walk$o_left_c0 o_left_c0(
+    raster_top$fragments$core$edge_walk$o_left_c0 o_left_c0(
         .d(o_left_c0$d),
         .q(o_left_c0$q),
         .clock(o_left_c0$clock)
     );
-    raster_top$core$edge_walk$o_left_c1 o_left_c1(
+    raster_top$fragments$core$edge_walk$o_left_c1 o_left_c1(
         .d(o_left_c1$d),
         .q(o_left_c1$q),
         .clock(o_left_c1$clock)
     );
-    raster_top$core$edge_walk$o_left_c2 o_left_c2(
+    raster_top$fragments$core$edge_walk$o_left_c2 o_left_c2(
         .d(o_left_c2$d),
         .q(o_left_c2$q),
         .clock(o_left_c2$clock)
     );
-    raster_top$core$edge_walk$o_right_z o_right_z(
+    raster_top$fragments$core$edge_walk$o_right_z o_right_z(
         .d(o_right_z$d),
         .q(o_right_z$q),
         .clock(o_right_z$clock)
     );
-    raster_top$core$edge_walk$o_right_c0 o_right_c0(
+    raster_top$fragments$core$edge_walk$o_right_c0 o_right_c0(
         .d(o_right_c0$d),
         .q(o_right_c0$q),
         .clock(o_right_c0$clock)
     );
-    raster_top$core$edge_walk$o_right_c1 o_right_c1(
+    raster_top$fragments$core$edge_walk$o_right_c1 o_right_c1(
         .d(o_right_c1$d),
         .q(o_right_c1$q),
         .clock(o_right_c1$clock)
     );
-    raster_top$core$edge_walk$o_right_c2 o_right_c2(
+    raster_top$fragments$core$edge_walk$o_right_c2 o_right_c2(
         .d(o_right_c2$d),
         .q(o_right_c2$q),
         .clock(o_right_c2$clock)
     );
-    raster_top$core$edge_walk$j_sign j_sign(
+    raster_top$fragments$core$edge_walk$j_sign j_sign(
         .x(j_sign$x),
         .neg(j_sign$neg)
     );
-    raster_top$core$edge_walk$sides sides(
+    raster_top$fragments$core$edge_walk$sides sides(
         .a(sides$a),
         .b(sides$b),
         .lt(sides$lt)
     );
-    raster_top$core$edge_walk$in_j_sign in_j_sign(
+    raster_top$fragments$core$edge_walk$in_j_sign in_j_sign(
         .x(in_j_sign$x),
         .neg(in_j_sign$neg)
     );
@@ -1935,10 +2044,10 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
         end
     end
     
-endmodule // raster_top$core$edge_walk
+endmodule // raster_top$fragments$core$edge_walk
 
 
-module raster_top$core$edge_walk$busy(d,q,clock);
+module raster_top$fragments$core$edge_walk$busy(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -1954,10 +2063,10 @@ module raster_top$core$edge_walk$busy(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$busy
+endmodule // raster_top$fragments$core$edge_walk$busy
 
 
-module raster_top$core$edge_walk$clip_y(on);
+module raster_top$fragments$core$edge_walk$clip_y(on);
     
     // Module arguments
     output reg  on;
@@ -1970,10 +2079,10 @@ module raster_top$core$edge_walk$clip_y(on);
         on = value;
     end
     
-endmodule // raster_top$core$edge_walk$clip_y
+endmodule // raster_top$fragments$core$edge_walk$clip_y
 
 
-module raster_top$core$edge_walk$crem(d,q,clock);
+module raster_top$fragments$core$edge_walk$crem(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -1989,10 +2098,10 @@ module raster_top$core$edge_walk$crem(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$crem
+endmodule // raster_top$fragments$core$edge_walk$crem
 
 
-module raster_top$core$edge_walk$crow(d,q,clock);
+module raster_top$fragments$core$edge_walk$crow(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -2008,10 +2117,10 @@ module raster_top$core$edge_walk$crow(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$crow
+endmodule // raster_top$fragments$core$edge_walk$crow
 
 
-module raster_top$core$edge_walk$cur(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
+module raster_top$fragments$core$edge_walk$cur(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
     
     // Module arguments
     input wire  clock;
@@ -2103,32 +2212,32 @@ module raster_top$core$edge_walk$cur(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b
     reg  one_dir;
     
     // Sub module instances
-    raster_top$core$edge_walk$cur$x_r x_r(
+    raster_top$fragments$core$edge_walk$cur$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$edge_walk$cur$q_r q_r(
+    raster_top$fragments$core$edge_walk$cur$q_r q_r(
         .d(q_r$d),
         .q(q_r$q),
         .clock(q_r$clock)
     );
-    raster_top$core$edge_walk$cur$t_r t_r(
+    raster_top$fragments$core$edge_walk$cur$t_r t_r(
         .d(t_r$d),
         .q(t_r$q),
         .clock(t_r$clock)
     );
-    raster_top$core$edge_walk$cur$a_r a_r(
+    raster_top$fragments$core$edge_walk$cur$a_r a_r(
         .d(a_r$d),
         .q(a_r$q),
         .clock(a_r$clock)
     );
-    raster_top$core$edge_walk$cur$b_r b_r(
+    raster_top$fragments$core$edge_walk$cur$b_r b_r(
         .d(b_r$d),
         .q(b_r$q),
         .clock(b_r$clock)
     );
-    raster_top$core$edge_walk$cur$z z(
+    raster_top$fragments$core$edge_walk$cur$z z(
         .clock(z$clock),
         .load(z$load),
         .step(z$step),
@@ -2139,7 +2248,7 @@ module raster_top$core$edge_walk$cur(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b
         .ld_inc1(z$ld_inc1),
         .at(z$at)
     );
-    raster_top$core$edge_walk$cur$c0 c0(
+    raster_top$fragments$core$edge_walk$cur$c0 c0(
         .clock(c0$clock),
         .load(c0$load),
         .step(c0$step),
@@ -2150,7 +2259,7 @@ module raster_top$core$edge_walk$cur(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b
         .ld_inc1(c0$ld_inc1),
         .at(c0$at)
     );
-    raster_top$core$edge_walk$cur$c1 c1(
+    raster_top$fragments$core$edge_walk$cur$c1 c1(
         .clock(c1$clock),
         .load(c1$load),
         .step(c1$step),
@@ -2161,7 +2270,7 @@ module raster_top$core$edge_walk$cur(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b
         .ld_inc1(c1$ld_inc1),
         .at(c1$at)
     );
-    raster_top$core$edge_walk$cur$c2 c2(
+    raster_top$fragments$core$edge_walk$cur$c2 c2(
         .clock(c2$clock),
         .load(c2$load),
         .step(c2$step),
@@ -2172,7 +2281,7 @@ module raster_top$core$edge_walk$cur(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b
         .ld_inc1(c2$ld_inc1),
         .at(c2$at)
     );
-    raster_top$core$edge_walk$cur$t_sign t_sign(
+    raster_top$fragments$core$edge_walk$cur$t_sign t_sign(
         .x(t_sign$x),
         .neg(t_sign$neg)
     );
@@ -2251,10 +2360,10 @@ module raster_top$core$edge_walk$cur(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b
         at_c2 = c2$at;
     end
     
-endmodule // raster_top$core$edge_walk$cur
+endmodule // raster_top$fragments$core$edge_walk$cur
 
 
-module raster_top$core$edge_walk$cur$a_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$a_r(d,q,clock);
     
     // Module arguments
     input wire  [21:0] d;
@@ -2270,10 +2379,10 @@ module raster_top$core$edge_walk$cur$a_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$a_r
+endmodule // raster_top$fragments$core$edge_walk$cur$a_r
 
 
-module raster_top$core$edge_walk$cur$b_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$b_r(d,q,clock);
     
     // Module arguments
     input wire  [21:0] d;
@@ -2289,10 +2398,10 @@ module raster_top$core$edge_walk$cur$b_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$b_r
+endmodule // raster_top$fragments$core$edge_walk$cur$b_r
 
 
-module raster_top$core$edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$fragments$core$edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -2321,17 +2430,17 @@ module raster_top$core$edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_
     reg  [31:0] inc_dir;
     
     // Sub module instances
-    raster_top$core$edge_walk$cur$c0$at_r at_r(
+    raster_top$fragments$core$edge_walk$cur$c0$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$core$edge_walk$cur$c0$inc0_r inc0_r(
+    raster_top$fragments$core$edge_walk$cur$c0$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$core$edge_walk$cur$c0$inc1_r inc1_r(
+    raster_top$fragments$core$edge_walk$cur$c0$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -2364,10 +2473,10 @@ module raster_top$core$edge_walk$cur$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_
         at = at_r$q;
     end
     
-endmodule // raster_top$core$edge_walk$cur$c0
+endmodule // raster_top$fragments$core$edge_walk$cur$c0
 
 
-module raster_top$core$edge_walk$cur$c0$at_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$c0$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2383,10 +2492,10 @@ module raster_top$core$edge_walk$cur$c0$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$c0$at_r
+endmodule // raster_top$fragments$core$edge_walk$cur$c0$at_r
 
 
-module raster_top$core$edge_walk$cur$c0$inc0_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$c0$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2402,10 +2511,10 @@ module raster_top$core$edge_walk$cur$c0$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$c0$inc0_r
+endmodule // raster_top$fragments$core$edge_walk$cur$c0$inc0_r
 
 
-module raster_top$core$edge_walk$cur$c0$inc1_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$c0$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2421,10 +2530,10 @@ module raster_top$core$edge_walk$cur$c0$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$c0$inc1_r
+endmodule // raster_top$fragments$core$edge_walk$cur$c0$inc1_r
 
 
-module raster_top$core$edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$fragments$core$edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -2453,17 +2562,17 @@ module raster_top$core$edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_
     reg  [31:0] inc_dir;
     
     // Sub module instances
-    raster_top$core$edge_walk$cur$c1$at_r at_r(
+    raster_top$fragments$core$edge_walk$cur$c1$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$core$edge_walk$cur$c1$inc0_r inc0_r(
+    raster_top$fragments$core$edge_walk$cur$c1$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$core$edge_walk$cur$c1$inc1_r inc1_r(
+    raster_top$fragments$core$edge_walk$cur$c1$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -2496,10 +2605,10 @@ module raster_top$core$edge_walk$cur$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_
         at = at_r$q;
     end
     
-endmodule // raster_top$core$edge_walk$cur$c1
+endmodule // raster_top$fragments$core$edge_walk$cur$c1
 
 
-module raster_top$core$edge_walk$cur$c1$at_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$c1$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2515,10 +2624,10 @@ module raster_top$core$edge_walk$cur$c1$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$c1$at_r
+endmodule // raster_top$fragments$core$edge_walk$cur$c1$at_r
 
 
-module raster_top$core$edge_walk$cur$c1$inc0_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$c1$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2534,10 +2643,10 @@ module raster_top$core$edge_walk$cur$c1$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$c1$inc0_r
+endmodule // raster_top$fragments$core$edge_walk$cur$c1$inc0_r
 
 
-module raster_top$core$edge_walk$cur$c1$inc1_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$c1$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2553,10 +2662,10 @@ module raster_top$core$edge_walk$cur$c1$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$c1$inc1_r
+endmodule // raster_top$fragments$core$edge_walk$cur$c1$inc1_r
 
 
-module raster_top$core$edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$fragments$core$edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -2585,17 +2694,17 @@ module raster_top$core$edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_
     reg  [31:0] inc_dir;
     
     // Sub module instances
-    raster_top$core$edge_walk$cur$c2$at_r at_r(
+    raster_top$fragments$core$edge_walk$cur$c2$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$core$edge_walk$cur$c2$inc0_r inc0_r(
+    raster_top$fragments$core$edge_walk$cur$c2$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$core$edge_walk$cur$c2$inc1_r inc1_r(
+    raster_top$fragments$core$edge_walk$cur$c2$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -2628,10 +2737,10 @@ module raster_top$core$edge_walk$cur$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_
         at = at_r$q;
     end
     
-endmodule // raster_top$core$edge_walk$cur$c2
+endmodule // raster_top$fragments$core$edge_walk$cur$c2
 
 
-module raster_top$core$edge_walk$cur$c2$at_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$c2$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2647,10 +2756,10 @@ module raster_top$core$edge_walk$cur$c2$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$c2$at_r
+endmodule // raster_top$fragments$core$edge_walk$cur$c2$at_r
 
 
-module raster_top$core$edge_walk$cur$c2$inc0_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$c2$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2666,10 +2775,10 @@ module raster_top$core$edge_walk$cur$c2$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$c2$inc0_r
+endmodule // raster_top$fragments$core$edge_walk$cur$c2$inc0_r
 
 
-module raster_top$core$edge_walk$cur$c2$inc1_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$c2$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2685,10 +2794,10 @@ module raster_top$core$edge_walk$cur$c2$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$c2$inc1_r
+endmodule // raster_top$fragments$core$edge_walk$cur$c2$inc1_r
 
 
-module raster_top$core$edge_walk$cur$q_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$q_r(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -2704,10 +2813,10 @@ module raster_top$core$edge_walk$cur$q_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$q_r
+endmodule // raster_top$fragments$core$edge_walk$cur$q_r
 
 
-module raster_top$core$edge_walk$cur$t_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$t_r(d,q,clock);
     
     // Module arguments
     input wire  [21:0] d;
@@ -2723,10 +2832,10 @@ module raster_top$core$edge_walk$cur$t_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$t_r
+endmodule // raster_top$fragments$core$edge_walk$cur$t_r
 
 
-module raster_top$core$edge_walk$cur$t_sign(x,neg);
+module raster_top$fragments$core$edge_walk$cur$t_sign(x,neg);
     
     // Module arguments
     input wire  [21:0] x;
@@ -2740,10 +2849,10 @@ module raster_top$core$edge_walk$cur$t_sign(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$core$edge_walk$cur$t_sign
+endmodule // raster_top$fragments$core$edge_walk$cur$t_sign
 
 
-module raster_top$core$edge_walk$cur$x_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$x_r(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -2759,10 +2868,10 @@ module raster_top$core$edge_walk$cur$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$x_r
+endmodule // raster_top$fragments$core$edge_walk$cur$x_r
 
 
-module raster_top$core$edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$fragments$core$edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -2791,17 +2900,17 @@ module raster_top$core$edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc0,ld_i
     reg  [35:0] inc_dir;
     
     // Sub module instances
-    raster_top$core$edge_walk$cur$z$at_r at_r(
+    raster_top$fragments$core$edge_walk$cur$z$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$core$edge_walk$cur$z$inc0_r inc0_r(
+    raster_top$fragments$core$edge_walk$cur$z$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$core$edge_walk$cur$z$inc1_r inc1_r(
+    raster_top$fragments$core$edge_walk$cur$z$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -2834,10 +2943,10 @@ module raster_top$core$edge_walk$cur$z(clock,load,step,up,one,ld_at,ld_inc0,ld_i
         at = at_r$q;
     end
     
-endmodule // raster_top$core$edge_walk$cur$z
+endmodule // raster_top$fragments$core$edge_walk$cur$z
 
 
-module raster_top$core$edge_walk$cur$z$at_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$z$at_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -2853,10 +2962,10 @@ module raster_top$core$edge_walk$cur$z$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$z$at_r
+endmodule // raster_top$fragments$core$edge_walk$cur$z$at_r
 
 
-module raster_top$core$edge_walk$cur$z$inc0_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$z$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -2872,10 +2981,10 @@ module raster_top$core$edge_walk$cur$z$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$z$inc0_r
+endmodule // raster_top$fragments$core$edge_walk$cur$z$inc0_r
 
 
-module raster_top$core$edge_walk$cur$z$inc1_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$cur$z$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -2891,10 +3000,10 @@ module raster_top$core$edge_walk$cur$z$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$cur$z$inc1_r
+endmodule // raster_top$fragments$core$edge_walk$cur$z$inc1_r
 
 
-module raster_top$core$edge_walk$ddx_c0(d,q,clock);
+module raster_top$fragments$core$edge_walk$ddx_c0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -2910,10 +3019,10 @@ module raster_top$core$edge_walk$ddx_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$ddx_c0
+endmodule // raster_top$fragments$core$edge_walk$ddx_c0
 
 
-module raster_top$core$edge_walk$ddx_c1(d,q,clock);
+module raster_top$fragments$core$edge_walk$ddx_c1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -2929,10 +3038,10 @@ module raster_top$core$edge_walk$ddx_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$ddx_c1
+endmodule // raster_top$fragments$core$edge_walk$ddx_c1
 
 
-module raster_top$core$edge_walk$ddx_c2(d,q,clock);
+module raster_top$fragments$core$edge_walk$ddx_c2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -2948,10 +3057,10 @@ module raster_top$core$edge_walk$ddx_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$ddx_c2
+endmodule // raster_top$fragments$core$edge_walk$ddx_c2
 
 
-module raster_top$core$edge_walk$ddx_z(d,q,clock);
+module raster_top$fragments$core$edge_walk$ddx_z(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -2967,10 +3076,10 @@ module raster_top$core$edge_walk$ddx_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$ddx_z
+endmodule // raster_top$fragments$core$edge_walk$ddx_z
 
 
-module raster_top$core$edge_walk$in_j_sign(x,neg);
+module raster_top$fragments$core$edge_walk$in_j_sign(x,neg);
     
     // Module arguments
     input wire  [12:0] x;
@@ -2984,10 +3093,10 @@ module raster_top$core$edge_walk$in_j_sign(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$core$edge_walk$in_j_sign
+endmodule // raster_top$fragments$core$edge_walk$in_j_sign
 
 
-module raster_top$core$edge_walk$j(d,q,clock);
+module raster_top$fragments$core$edge_walk$j(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -3003,10 +3112,10 @@ module raster_top$core$edge_walk$j(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$j
+endmodule // raster_top$fragments$core$edge_walk$j
 
 
-module raster_top$core$edge_walk$j_sign(x,neg);
+module raster_top$fragments$core$edge_walk$j_sign(x,neg);
     
     // Module arguments
     input wire  [12:0] x;
@@ -3020,10 +3129,10 @@ module raster_top$core$edge_walk$j_sign(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$core$edge_walk$j_sign
+endmodule // raster_top$fragments$core$edge_walk$j_sign
 
 
-module raster_top$core$edge_walk$last_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$last_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3039,10 +3148,10 @@ module raster_top$core$edge_walk$last_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$last_r
+endmodule // raster_top$fragments$core$edge_walk$last_r
 
 
-module raster_top$core$edge_walk$maj(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
+module raster_top$fragments$core$edge_walk$maj(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b,ld_at_z,ld_at_c0,ld_at_c1,ld_at_c2,ld_inc0_z,ld_inc0_c0,ld_inc0_c1,ld_inc0_c2,ld_inc1_z,ld_inc1_c0,ld_inc1_c1,ld_inc1_c2,x,at_z,at_c0,at_c1,at_c2);
     
     // Module arguments
     input wire  clock;
@@ -3134,32 +3243,32 @@ module raster_top$core$edge_walk$maj(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b
     reg  one_dir;
     
     // Sub module instances
-    raster_top$core$edge_walk$maj$x_r x_r(
+    raster_top$fragments$core$edge_walk$maj$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$edge_walk$maj$q_r q_r(
+    raster_top$fragments$core$edge_walk$maj$q_r q_r(
         .d(q_r$d),
         .q(q_r$q),
         .clock(q_r$clock)
     );
-    raster_top$core$edge_walk$maj$t_r t_r(
+    raster_top$fragments$core$edge_walk$maj$t_r t_r(
         .d(t_r$d),
         .q(t_r$q),
         .clock(t_r$clock)
     );
-    raster_top$core$edge_walk$maj$a_r a_r(
+    raster_top$fragments$core$edge_walk$maj$a_r a_r(
         .d(a_r$d),
         .q(a_r$q),
         .clock(a_r$clock)
     );
-    raster_top$core$edge_walk$maj$b_r b_r(
+    raster_top$fragments$core$edge_walk$maj$b_r b_r(
         .d(b_r$d),
         .q(b_r$q),
         .clock(b_r$clock)
     );
-    raster_top$core$edge_walk$maj$z z(
+    raster_top$fragments$core$edge_walk$maj$z z(
         .clock(z$clock),
         .load(z$load),
         .step(z$step),
@@ -3170,7 +3279,7 @@ module raster_top$core$edge_walk$maj(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b
         .ld_inc1(z$ld_inc1),
         .at(z$at)
     );
-    raster_top$core$edge_walk$maj$c0 c0(
+    raster_top$fragments$core$edge_walk$maj$c0 c0(
         .clock(c0$clock),
         .load(c0$load),
         .step(c0$step),
@@ -3181,7 +3290,7 @@ module raster_top$core$edge_walk$maj(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b
         .ld_inc1(c0$ld_inc1),
         .at(c0$at)
     );
-    raster_top$core$edge_walk$maj$c1 c1(
+    raster_top$fragments$core$edge_walk$maj$c1 c1(
         .clock(c1$clock),
         .load(c1$load),
         .step(c1$step),
@@ -3192,7 +3301,7 @@ module raster_top$core$edge_walk$maj(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b
         .ld_inc1(c1$ld_inc1),
         .at(c1$at)
     );
-    raster_top$core$edge_walk$maj$c2 c2(
+    raster_top$fragments$core$edge_walk$maj$c2 c2(
         .clock(c2$clock),
         .load(c2$load),
         .step(c2$step),
@@ -3203,7 +3312,7 @@ module raster_top$core$edge_walk$maj(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b
         .ld_inc1(c2$ld_inc1),
         .at(c2$at)
     );
-    raster_top$core$edge_walk$maj$t_sign t_sign(
+    raster_top$fragments$core$edge_walk$maj$t_sign t_sign(
         .x(t_sign$x),
         .neg(t_sign$neg)
     );
@@ -3282,10 +3391,10 @@ module raster_top$core$edge_walk$maj(clock,load,step,up,ld_x,ld_q,ld_t,ld_a,ld_b
         at_c2 = c2$at;
     end
     
-endmodule // raster_top$core$edge_walk$maj
+endmodule // raster_top$fragments$core$edge_walk$maj
 
 
-module raster_top$core$edge_walk$maj$a_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$a_r(d,q,clock);
     
     // Module arguments
     input wire  [21:0] d;
@@ -3301,10 +3410,10 @@ module raster_top$core$edge_walk$maj$a_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$a_r
+endmodule // raster_top$fragments$core$edge_walk$maj$a_r
 
 
-module raster_top$core$edge_walk$maj$b_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$b_r(d,q,clock);
     
     // Module arguments
     input wire  [21:0] d;
@@ -3320,10 +3429,10 @@ module raster_top$core$edge_walk$maj$b_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$b_r
+endmodule // raster_top$fragments$core$edge_walk$maj$b_r
 
 
-module raster_top$core$edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$fragments$core$edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -3352,17 +3461,17 @@ module raster_top$core$edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_
     reg  [31:0] inc_dir;
     
     // Sub module instances
-    raster_top$core$edge_walk$maj$c0$at_r at_r(
+    raster_top$fragments$core$edge_walk$maj$c0$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$core$edge_walk$maj$c0$inc0_r inc0_r(
+    raster_top$fragments$core$edge_walk$maj$c0$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$core$edge_walk$maj$c0$inc1_r inc1_r(
+    raster_top$fragments$core$edge_walk$maj$c0$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -3395,10 +3504,10 @@ module raster_top$core$edge_walk$maj$c0(clock,load,step,up,one,ld_at,ld_inc0,ld_
         at = at_r$q;
     end
     
-endmodule // raster_top$core$edge_walk$maj$c0
+endmodule // raster_top$fragments$core$edge_walk$maj$c0
 
 
-module raster_top$core$edge_walk$maj$c0$at_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$c0$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3414,10 +3523,10 @@ module raster_top$core$edge_walk$maj$c0$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$c0$at_r
+endmodule // raster_top$fragments$core$edge_walk$maj$c0$at_r
 
 
-module raster_top$core$edge_walk$maj$c0$inc0_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$c0$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3433,10 +3542,10 @@ module raster_top$core$edge_walk$maj$c0$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$c0$inc0_r
+endmodule // raster_top$fragments$core$edge_walk$maj$c0$inc0_r
 
 
-module raster_top$core$edge_walk$maj$c0$inc1_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$c0$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3452,10 +3561,10 @@ module raster_top$core$edge_walk$maj$c0$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$c0$inc1_r
+endmodule // raster_top$fragments$core$edge_walk$maj$c0$inc1_r
 
 
-module raster_top$core$edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$fragments$core$edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -3484,17 +3593,17 @@ module raster_top$core$edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_
     reg  [31:0] inc_dir;
     
     // Sub module instances
-    raster_top$core$edge_walk$maj$c1$at_r at_r(
+    raster_top$fragments$core$edge_walk$maj$c1$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$core$edge_walk$maj$c1$inc0_r inc0_r(
+    raster_top$fragments$core$edge_walk$maj$c1$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$core$edge_walk$maj$c1$inc1_r inc1_r(
+    raster_top$fragments$core$edge_walk$maj$c1$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -3527,10 +3636,10 @@ module raster_top$core$edge_walk$maj$c1(clock,load,step,up,one,ld_at,ld_inc0,ld_
         at = at_r$q;
     end
     
-endmodule // raster_top$core$edge_walk$maj$c1
+endmodule // raster_top$fragments$core$edge_walk$maj$c1
 
 
-module raster_top$core$edge_walk$maj$c1$at_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$c1$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3546,10 +3655,10 @@ module raster_top$core$edge_walk$maj$c1$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$c1$at_r
+endmodule // raster_top$fragments$core$edge_walk$maj$c1$at_r
 
 
-module raster_top$core$edge_walk$maj$c1$inc0_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$c1$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3565,10 +3674,10 @@ module raster_top$core$edge_walk$maj$c1$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$c1$inc0_r
+endmodule // raster_top$fragments$core$edge_walk$maj$c1$inc0_r
 
 
-module raster_top$core$edge_walk$maj$c1$inc1_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$c1$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3584,10 +3693,10 @@ module raster_top$core$edge_walk$maj$c1$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$c1$inc1_r
+endmodule // raster_top$fragments$core$edge_walk$maj$c1$inc1_r
 
 
-module raster_top$core$edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$fragments$core$edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -3616,17 +3725,17 @@ module raster_top$core$edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_
     reg  [31:0] inc_dir;
     
     // Sub module instances
-    raster_top$core$edge_walk$maj$c2$at_r at_r(
+    raster_top$fragments$core$edge_walk$maj$c2$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$core$edge_walk$maj$c2$inc0_r inc0_r(
+    raster_top$fragments$core$edge_walk$maj$c2$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$core$edge_walk$maj$c2$inc1_r inc1_r(
+    raster_top$fragments$core$edge_walk$maj$c2$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -3659,10 +3768,10 @@ module raster_top$core$edge_walk$maj$c2(clock,load,step,up,one,ld_at,ld_inc0,ld_
         at = at_r$q;
     end
     
-endmodule // raster_top$core$edge_walk$maj$c2
+endmodule // raster_top$fragments$core$edge_walk$maj$c2
 
 
-module raster_top$core$edge_walk$maj$c2$at_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$c2$at_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3678,10 +3787,10 @@ module raster_top$core$edge_walk$maj$c2$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$c2$at_r
+endmodule // raster_top$fragments$core$edge_walk$maj$c2$at_r
 
 
-module raster_top$core$edge_walk$maj$c2$inc0_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$c2$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3697,10 +3806,10 @@ module raster_top$core$edge_walk$maj$c2$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$c2$inc0_r
+endmodule // raster_top$fragments$core$edge_walk$maj$c2$inc0_r
 
 
-module raster_top$core$edge_walk$maj$c2$inc1_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$c2$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3716,10 +3825,10 @@ module raster_top$core$edge_walk$maj$c2$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$c2$inc1_r
+endmodule // raster_top$fragments$core$edge_walk$maj$c2$inc1_r
 
 
-module raster_top$core$edge_walk$maj$q_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$q_r(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -3735,10 +3844,10 @@ module raster_top$core$edge_walk$maj$q_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$q_r
+endmodule // raster_top$fragments$core$edge_walk$maj$q_r
 
 
-module raster_top$core$edge_walk$maj$t_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$t_r(d,q,clock);
     
     // Module arguments
     input wire  [21:0] d;
@@ -3754,10 +3863,10 @@ module raster_top$core$edge_walk$maj$t_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$t_r
+endmodule // raster_top$fragments$core$edge_walk$maj$t_r
 
 
-module raster_top$core$edge_walk$maj$t_sign(x,neg);
+module raster_top$fragments$core$edge_walk$maj$t_sign(x,neg);
     
     // Module arguments
     input wire  [21:0] x;
@@ -3771,10 +3880,10 @@ module raster_top$core$edge_walk$maj$t_sign(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$core$edge_walk$maj$t_sign
+endmodule // raster_top$fragments$core$edge_walk$maj$t_sign
 
 
-module raster_top$core$edge_walk$maj$x_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$x_r(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -3790,10 +3899,10 @@ module raster_top$core$edge_walk$maj$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$x_r
+endmodule // raster_top$fragments$core$edge_walk$maj$x_r
 
 
-module raster_top$core$edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
+module raster_top$fragments$core$edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc0,ld_inc1,at);
     
     // Module arguments
     input wire  clock;
@@ -3822,17 +3931,17 @@ module raster_top$core$edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc0,ld_i
     reg  [35:0] inc_dir;
     
     // Sub module instances
-    raster_top$core$edge_walk$maj$z$at_r at_r(
+    raster_top$fragments$core$edge_walk$maj$z$at_r at_r(
         .d(at_r$d),
         .q(at_r$q),
         .clock(at_r$clock)
     );
-    raster_top$core$edge_walk$maj$z$inc0_r inc0_r(
+    raster_top$fragments$core$edge_walk$maj$z$inc0_r inc0_r(
         .d(inc0_r$d),
         .q(inc0_r$q),
         .clock(inc0_r$clock)
     );
-    raster_top$core$edge_walk$maj$z$inc1_r inc1_r(
+    raster_top$fragments$core$edge_walk$maj$z$inc1_r inc1_r(
         .d(inc1_r$d),
         .q(inc1_r$q),
         .clock(inc1_r$clock)
@@ -3865,10 +3974,10 @@ module raster_top$core$edge_walk$maj$z(clock,load,step,up,one,ld_at,ld_inc0,ld_i
         at = at_r$q;
     end
     
-endmodule // raster_top$core$edge_walk$maj$z
+endmodule // raster_top$fragments$core$edge_walk$maj$z
 
 
-module raster_top$core$edge_walk$maj$z$at_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$z$at_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3884,10 +3993,10 @@ module raster_top$core$edge_walk$maj$z$at_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$z$at_r
+endmodule // raster_top$fragments$core$edge_walk$maj$z$at_r
 
 
-module raster_top$core$edge_walk$maj$z$inc0_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$z$inc0_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3903,10 +4012,10 @@ module raster_top$core$edge_walk$maj$z$inc0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$z$inc0_r
+endmodule // raster_top$fragments$core$edge_walk$maj$z$inc0_r
 
 
-module raster_top$core$edge_walk$maj$z$inc1_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj$z$inc1_r(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -3922,10 +4031,10 @@ module raster_top$core$edge_walk$maj$z$inc1_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj$z$inc1_r
+endmodule // raster_top$fragments$core$edge_walk$maj$z$inc1_r
 
 
-module raster_top$core$edge_walk$maj_left(d,q,clock);
+module raster_top$fragments$core$edge_walk$maj_left(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3941,10 +4050,10 @@ module raster_top$core$edge_walk$maj_left(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$maj_left
+endmodule // raster_top$fragments$core$edge_walk$maj_left
 
 
-module raster_top$core$edge_walk$o_left_c0(d,q,clock);
+module raster_top$fragments$core$edge_walk$o_left_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3960,10 +4069,10 @@ module raster_top$core$edge_walk$o_left_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$o_left_c0
+endmodule // raster_top$fragments$core$edge_walk$o_left_c0
 
 
-module raster_top$core$edge_walk$o_left_c1(d,q,clock);
+module raster_top$fragments$core$edge_walk$o_left_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3979,10 +4088,10 @@ module raster_top$core$edge_walk$o_left_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$o_left_c1
+endmodule // raster_top$fragments$core$edge_walk$o_left_c1
 
 
-module raster_top$core$edge_walk$o_left_c2(d,q,clock);
+module raster_top$fragments$core$edge_walk$o_left_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3998,10 +4107,10 @@ module raster_top$core$edge_walk$o_left_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$o_left_c2
+endmodule // raster_top$fragments$core$edge_walk$o_left_c2
 
 
-module raster_top$core$edge_walk$o_left_z(d,q,clock);
+module raster_top$fragments$core$edge_walk$o_left_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4017,10 +4126,10 @@ module raster_top$core$edge_walk$o_left_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$o_left_z
+endmodule // raster_top$fragments$core$edge_walk$o_left_z
 
 
-module raster_top$core$edge_walk$o_right_c0(d,q,clock);
+module raster_top$fragments$core$edge_walk$o_right_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4036,10 +4145,10 @@ module raster_top$core$edge_walk$o_right_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$o_right_c0
+endmodule // raster_top$fragments$core$edge_walk$o_right_c0
 
 
-module raster_top$core$edge_walk$o_right_c1(d,q,clock);
+module raster_top$fragments$core$edge_walk$o_right_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4055,10 +4164,10 @@ module raster_top$core$edge_walk$o_right_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$o_right_c1
+endmodule // raster_top$fragments$core$edge_walk$o_right_c1
 
 
-module raster_top$core$edge_walk$o_right_c2(d,q,clock);
+module raster_top$fragments$core$edge_walk$o_right_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4074,10 +4183,10 @@ module raster_top$core$edge_walk$o_right_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$o_right_c2
+endmodule // raster_top$fragments$core$edge_walk$o_right_c2
 
 
-module raster_top$core$edge_walk$o_right_z(d,q,clock);
+module raster_top$fragments$core$edge_walk$o_right_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4093,10 +4202,10 @@ module raster_top$core$edge_walk$o_right_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$o_right_z
+endmodule // raster_top$fragments$core$edge_walk$o_right_z
 
 
-module raster_top$core$edge_walk$o_valid(d,q,clock);
+module raster_top$fragments$core$edge_walk$o_valid(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4112,10 +4221,10 @@ module raster_top$core$edge_walk$o_valid(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$o_valid
+endmodule // raster_top$fragments$core$edge_walk$o_valid
 
 
-module raster_top$core$edge_walk$o_xl(d,q,clock);
+module raster_top$fragments$core$edge_walk$o_xl(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -4131,10 +4240,10 @@ module raster_top$core$edge_walk$o_xl(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$o_xl
+endmodule // raster_top$fragments$core$edge_walk$o_xl
 
 
-module raster_top$core$edge_walk$o_xr(d,q,clock);
+module raster_top$fragments$core$edge_walk$o_xr(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -4150,10 +4259,10 @@ module raster_top$core$edge_walk$o_xr(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$o_xr
+endmodule // raster_top$fragments$core$edge_walk$o_xr
 
 
-module raster_top$core$edge_walk$o_y(d,q,clock);
+module raster_top$fragments$core$edge_walk$o_y(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -4169,10 +4278,10 @@ module raster_top$core$edge_walk$o_y(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$o_y
+endmodule // raster_top$fragments$core$edge_walk$o_y
 
 
-module raster_top$core$edge_walk$pend_a(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_a(d,q,clock);
     
     // Module arguments
     input wire  [21:0] d;
@@ -4188,10 +4297,10 @@ module raster_top$core$edge_walk$pend_a(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_a
+endmodule // raster_top$fragments$core$edge_walk$pend_a
 
 
-module raster_top$core$edge_walk$pend_at_c0(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_at_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4207,10 +4316,10 @@ module raster_top$core$edge_walk$pend_at_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_at_c0
+endmodule // raster_top$fragments$core$edge_walk$pend_at_c0
 
 
-module raster_top$core$edge_walk$pend_at_c1(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_at_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4226,10 +4335,10 @@ module raster_top$core$edge_walk$pend_at_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_at_c1
+endmodule // raster_top$fragments$core$edge_walk$pend_at_c1
 
 
-module raster_top$core$edge_walk$pend_at_c2(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_at_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4245,10 +4354,10 @@ module raster_top$core$edge_walk$pend_at_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_at_c2
+endmodule // raster_top$fragments$core$edge_walk$pend_at_c2
 
 
-module raster_top$core$edge_walk$pend_at_z(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_at_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4264,10 +4373,10 @@ module raster_top$core$edge_walk$pend_at_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_at_z
+endmodule // raster_top$fragments$core$edge_walk$pend_at_z
 
 
-module raster_top$core$edge_walk$pend_b(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_b(d,q,clock);
     
     // Module arguments
     input wire  [21:0] d;
@@ -4283,10 +4392,10 @@ module raster_top$core$edge_walk$pend_b(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_b
+endmodule // raster_top$fragments$core$edge_walk$pend_b
 
 
-module raster_top$core$edge_walk$pend_inc0_c0(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_inc0_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4302,10 +4411,10 @@ module raster_top$core$edge_walk$pend_inc0_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_inc0_c0
+endmodule // raster_top$fragments$core$edge_walk$pend_inc0_c0
 
 
-module raster_top$core$edge_walk$pend_inc0_c1(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_inc0_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4321,10 +4430,10 @@ module raster_top$core$edge_walk$pend_inc0_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_inc0_c1
+endmodule // raster_top$fragments$core$edge_walk$pend_inc0_c1
 
 
-module raster_top$core$edge_walk$pend_inc0_c2(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_inc0_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4340,10 +4449,10 @@ module raster_top$core$edge_walk$pend_inc0_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_inc0_c2
+endmodule // raster_top$fragments$core$edge_walk$pend_inc0_c2
 
 
-module raster_top$core$edge_walk$pend_inc0_z(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_inc0_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4359,10 +4468,10 @@ module raster_top$core$edge_walk$pend_inc0_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_inc0_z
+endmodule // raster_top$fragments$core$edge_walk$pend_inc0_z
 
 
-module raster_top$core$edge_walk$pend_inc1_c0(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_inc1_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4378,10 +4487,10 @@ module raster_top$core$edge_walk$pend_inc1_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_inc1_c0
+endmodule // raster_top$fragments$core$edge_walk$pend_inc1_c0
 
 
-module raster_top$core$edge_walk$pend_inc1_c1(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_inc1_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4397,10 +4506,10 @@ module raster_top$core$edge_walk$pend_inc1_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_inc1_c1
+endmodule // raster_top$fragments$core$edge_walk$pend_inc1_c1
 
 
-module raster_top$core$edge_walk$pend_inc1_c2(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_inc1_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4416,10 +4525,10 @@ module raster_top$core$edge_walk$pend_inc1_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_inc1_c2
+endmodule // raster_top$fragments$core$edge_walk$pend_inc1_c2
 
 
-module raster_top$core$edge_walk$pend_inc1_z(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_inc1_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -4435,10 +4544,10 @@ module raster_top$core$edge_walk$pend_inc1_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_inc1_z
+endmodule // raster_top$fragments$core$edge_walk$pend_inc1_z
 
 
-module raster_top$core$edge_walk$pend_q(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_q(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -4454,10 +4563,10 @@ module raster_top$core$edge_walk$pend_q(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_q
+endmodule // raster_top$fragments$core$edge_walk$pend_q
 
 
-module raster_top$core$edge_walk$pend_t(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_t(d,q,clock);
     
     // Module arguments
     input wire  [21:0] d;
@@ -4473,10 +4582,10 @@ module raster_top$core$edge_walk$pend_t(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_t
+endmodule // raster_top$fragments$core$edge_walk$pend_t
 
 
-module raster_top$core$edge_walk$pend_x(d,q,clock);
+module raster_top$fragments$core$edge_walk$pend_x(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -4492,10 +4601,10 @@ module raster_top$core$edge_walk$pend_x(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$pend_x
+endmodule // raster_top$fragments$core$edge_walk$pend_x
 
 
-module raster_top$core$edge_walk$rem(d,q,clock);
+module raster_top$fragments$core$edge_walk$rem(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -4511,10 +4620,10 @@ module raster_top$core$edge_walk$rem(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$rem
+endmodule // raster_top$fragments$core$edge_walk$rem
 
 
-module raster_top$core$edge_walk$sides(a,b,lt);
+module raster_top$fragments$core$edge_walk$sides(a,b,lt);
     
     // Module arguments
     input wire  [12:0] a;
@@ -4529,10 +4638,10 @@ module raster_top$core$edge_walk$sides(a,b,lt);
         lt = (a ^ half) < (b ^ half);
     end
     
-endmodule // raster_top$core$edge_walk$sides
+endmodule // raster_top$fragments$core$edge_walk$sides
 
 
-module raster_top$core$edge_walk$start_maj(up,r,rho,d,t,a,b);
+module raster_top$fragments$core$edge_walk$start_maj(up,r,rho,d,t,a,b);
     
     // Module arguments
     input wire  up;
@@ -4569,10 +4678,10 @@ module raster_top$core$edge_walk$start_maj(up,r,rho,d,t,a,b);
         end
     end
     
-endmodule // raster_top$core$edge_walk$start_maj
+endmodule // raster_top$fragments$core$edge_walk$start_maj
 
 
-module raster_top$core$edge_walk$start_s0(up,r,rho,d,t,a,b);
+module raster_top$fragments$core$edge_walk$start_s0(up,r,rho,d,t,a,b);
     
     // Module arguments
     input wire  up;
@@ -4609,10 +4718,10 @@ module raster_top$core$edge_walk$start_s0(up,r,rho,d,t,a,b);
         end
     end
     
-endmodule // raster_top$core$edge_walk$start_s0
+endmodule // raster_top$fragments$core$edge_walk$start_s0
 
 
-module raster_top$core$edge_walk$start_s1(up,r,rho,d,t,a,b);
+module raster_top$fragments$core$edge_walk$start_s1(up,r,rho,d,t,a,b);
     
     // Module arguments
     input wire  up;
@@ -4649,10 +4758,10 @@ module raster_top$core$edge_walk$start_s1(up,r,rho,d,t,a,b);
         end
     end
     
-endmodule // raster_top$core$edge_walk$start_s1
+endmodule // raster_top$fragments$core$edge_walk$start_s1
 
 
-module raster_top$core$edge_walk$sw_r(d,q,clock);
+module raster_top$fragments$core$edge_walk$sw_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4668,10 +4777,10 @@ module raster_top$core$edge_walk$sw_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$sw_r
+endmodule // raster_top$fragments$core$edge_walk$sw_r
 
 
-module raster_top$core$edge_walk$up(d,q,clock);
+module raster_top$fragments$core$edge_walk$up(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4687,10 +4796,10 @@ module raster_top$core$edge_walk$up(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$up
+endmodule // raster_top$fragments$core$edge_walk$up
 
 
-module raster_top$core$edge_walk$walking(d,q,clock);
+module raster_top$fragments$core$edge_walk$walking(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4706,10 +4815,10 @@ module raster_top$core$edge_walk$walking(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$edge_walk$walking
+endmodule // raster_top$fragments$core$edge_walk$walking
 
 
-module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$left_c0,inp$left_c1,inp$left_c2,inp$right_z,inp$right_c0,inp$right_c1,inp$right_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,empty);
+module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$left_c0,inp$left_c1,inp$left_c2,inp$right_z,inp$right_c0,inp$right_c1,inp$right_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,empty);
     
     // Module arguments
     input wire  clock;
@@ -4859,27 +4968,27 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
     reg  pop;
     
     // Sub module instances
-    raster_top$core$fifo$count count(
+    raster_top$fragments$core$fifo$count count(
         .d(count$d),
         .q(count$q),
         .clock(count$clock)
     );
-    raster_top$core$fifo$level level(
+    raster_top$fragments$core$fifo$level level(
         .count(level$count),
         .full(level$full),
         .empty(level$empty)
     );
-    raster_top$core$fifo$wr wr(
+    raster_top$fragments$core$fifo$wr wr(
         .d(wr$d),
         .q(wr$q),
         .clock(wr$clock)
     );
-    raster_top$core$fifo$rd rd(
+    raster_top$fragments$core$fifo$rd rd(
         .d(rd$d),
         .q(rd$q),
         .clock(rd$clock)
     );
-    raster_top$core$fifo$y y(
+    raster_top$fragments$core$fifo$y y(
         .clock(y$clock),
         .we(y$we),
         .wr(y$wr),
@@ -4887,7 +4996,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(y$din),
         .head(y$head)
     );
-    raster_top$core$fifo$xl xl(
+    raster_top$fragments$core$fifo$xl xl(
         .clock(xl$clock),
         .we(xl$we),
         .wr(xl$wr),
@@ -4895,7 +5004,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(xl$din),
         .head(xl$head)
     );
-    raster_top$core$fifo$xr xr(
+    raster_top$fragments$core$fifo$xr xr(
         .clock(xr$clock),
         .we(xr$we),
         .wr(xr$wr),
@@ -4903,7 +5012,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(xr$din),
         .head(xr$head)
     );
-    raster_top$core$fifo$left_z left_z(
+    raster_top$fragments$core$fifo$left_z left_z(
         .clock(left_z$clock),
         .we(left_z$we),
         .wr(left_z$wr),
@@ -4911,7 +5020,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(left_z$din),
         .head(left_z$head)
     );
-    raster_top$core$fifo$left_c0 left_c0(
+    raster_top$fragments$core$fifo$left_c0 left_c0(
         .clock(left_c0$clock),
         .we(left_c0$we),
         .wr(left_c0$wr),
@@ -4919,7 +5028,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(left_c0$din),
         .head(left_c0$head)
     );
-    raster_top$core$fifo$left_c1 left_c1(
+    raster_top$fragments$core$fifo$left_c1 left_c1(
         .clock(left_c1$clock),
         .we(left_c1$we),
         .wr(left_c1$wr),
@@ -4927,7 +5036,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(left_c1$din),
         .head(left_c1$head)
     );
-    raster_top$core$fifo$left_c2 left_c2(
+    raster_top$fragments$core$fifo$left_c2 left_c2(
         .clock(left_c2$clock),
         .we(left_c2$we),
         .wr(left_c2$wr),
@@ -4935,7 +5044,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(left_c2$din),
         .head(left_c2$head)
     );
-    raster_top$core$fifo$right_z right_z(
+    raster_top$fragments$core$fifo$right_z right_z(
         .clock(right_z$clock),
         .we(right_z$we),
         .wr(right_z$wr),
@@ -4943,7 +5052,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(right_z$din),
         .head(right_z$head)
     );
-    raster_top$core$fifo$right_c0 right_c0(
+    raster_top$fragments$core$fifo$right_c0 right_c0(
         .clock(right_c0$clock),
         .we(right_c0$we),
         .wr(right_c0$wr),
@@ -4951,7 +5060,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(right_c0$din),
         .head(right_c0$head)
     );
-    raster_top$core$fifo$right_c1 right_c1(
+    raster_top$fragments$core$fifo$right_c1 right_c1(
         .clock(right_c1$clock),
         .we(right_c1$we),
         .wr(right_c1$wr),
@@ -4959,7 +5068,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(right_c1$din),
         .head(right_c1$head)
     );
-    raster_top$core$fifo$right_c2 right_c2(
+    raster_top$fragments$core$fifo$right_c2 right_c2(
         .clock(right_c2$clock),
         .we(right_c2$we),
         .wr(right_c2$wr),
@@ -4967,7 +5076,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(right_c2$din),
         .head(right_c2$head)
     );
-    raster_top$core$fifo$ddx_z ddx_z(
+    raster_top$fragments$core$fifo$ddx_z ddx_z(
         .clock(ddx_z$clock),
         .we(ddx_z$we),
         .wr(ddx_z$wr),
@@ -4975,7 +5084,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(ddx_z$din),
         .head(ddx_z$head)
     );
-    raster_top$core$fifo$ddx_c0 ddx_c0(
+    raster_top$fragments$core$fifo$ddx_c0 ddx_c0(
         .clock(ddx_c0$clock),
         .we(ddx_c0$we),
         .wr(ddx_c0$wr),
@@ -4983,7 +5092,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(ddx_c0$din),
         .head(ddx_c0$head)
     );
-    raster_top$core$fifo$ddx_c1 ddx_c1(
+    raster_top$fragments$core$fifo$ddx_c1 ddx_c1(
         .clock(ddx_c1$clock),
         .we(ddx_c1$we),
         .wr(ddx_c1$wr),
@@ -4991,7 +5100,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .din(ddx_c1$din),
         .head(ddx_c1$head)
     );
-    raster_top$core$fifo$ddx_c2 ddx_c2(
+    raster_top$fragments$core$fifo$ddx_c2 ddx_c2(
         .clock(ddx_c2$clock),
         .we(ddx_c2$we),
         .wr(ddx_c2$wr),
@@ -5164,10 +5273,10 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         end
     end
     
-endmodule // raster_top$core$fifo
+endmodule // raster_top$fragments$core$fifo
 
 
-module raster_top$core$fifo$count(d,q,clock);
+module raster_top$fragments$core$fifo$count(d,q,clock);
     
     // Module arguments
     input wire  [2:0] d;
@@ -5183,10 +5292,10 @@ module raster_top$core$fifo$count(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$count
+endmodule // raster_top$fragments$core$fifo$count
 
 
-module raster_top$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5211,22 +5320,22 @@ module raster_top$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$ddx_c0$e$0 e$0(
+    raster_top$fragments$core$fifo$ddx_c0$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$ddx_c0$e$1 e$1(
+    raster_top$fragments$core$fifo$ddx_c0$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$ddx_c0$e$2 e$2(
+    raster_top$fragments$core$fifo$ddx_c0$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$ddx_c0$e$3 e$3(
+    raster_top$fragments$core$fifo$ddx_c0$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5266,10 +5375,10 @@ module raster_top$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$ddx_c0
+endmodule // raster_top$fragments$core$fifo$ddx_c0
 
 
-module raster_top$core$fifo$ddx_c0$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_c0$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5285,10 +5394,10 @@ module raster_top$core$fifo$ddx_c0$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_c0$e$0
+endmodule // raster_top$fragments$core$fifo$ddx_c0$e$0
 
 
-module raster_top$core$fifo$ddx_c0$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_c0$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5304,10 +5413,10 @@ module raster_top$core$fifo$ddx_c0$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_c0$e$1
+endmodule // raster_top$fragments$core$fifo$ddx_c0$e$1
 
 
-module raster_top$core$fifo$ddx_c0$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_c0$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5323,10 +5432,10 @@ module raster_top$core$fifo$ddx_c0$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_c0$e$2
+endmodule // raster_top$fragments$core$fifo$ddx_c0$e$2
 
 
-module raster_top$core$fifo$ddx_c0$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_c0$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5342,10 +5451,10 @@ module raster_top$core$fifo$ddx_c0$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_c0$e$3
+endmodule // raster_top$fragments$core$fifo$ddx_c0$e$3
 
 
-module raster_top$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5370,22 +5479,22 @@ module raster_top$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$ddx_c1$e$0 e$0(
+    raster_top$fragments$core$fifo$ddx_c1$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$ddx_c1$e$1 e$1(
+    raster_top$fragments$core$fifo$ddx_c1$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$ddx_c1$e$2 e$2(
+    raster_top$fragments$core$fifo$ddx_c1$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$ddx_c1$e$3 e$3(
+    raster_top$fragments$core$fifo$ddx_c1$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5425,10 +5534,10 @@ module raster_top$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$ddx_c1
+endmodule // raster_top$fragments$core$fifo$ddx_c1
 
 
-module raster_top$core$fifo$ddx_c1$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_c1$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5444,10 +5553,10 @@ module raster_top$core$fifo$ddx_c1$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_c1$e$0
+endmodule // raster_top$fragments$core$fifo$ddx_c1$e$0
 
 
-module raster_top$core$fifo$ddx_c1$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_c1$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5463,10 +5572,10 @@ module raster_top$core$fifo$ddx_c1$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_c1$e$1
+endmodule // raster_top$fragments$core$fifo$ddx_c1$e$1
 
 
-module raster_top$core$fifo$ddx_c1$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_c1$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5482,10 +5591,10 @@ module raster_top$core$fifo$ddx_c1$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_c1$e$2
+endmodule // raster_top$fragments$core$fifo$ddx_c1$e$2
 
 
-module raster_top$core$fifo$ddx_c1$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_c1$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5501,10 +5610,10 @@ module raster_top$core$fifo$ddx_c1$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_c1$e$3
+endmodule // raster_top$fragments$core$fifo$ddx_c1$e$3
 
 
-module raster_top$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5529,22 +5638,22 @@ module raster_top$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$ddx_c2$e$0 e$0(
+    raster_top$fragments$core$fifo$ddx_c2$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$ddx_c2$e$1 e$1(
+    raster_top$fragments$core$fifo$ddx_c2$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$ddx_c2$e$2 e$2(
+    raster_top$fragments$core$fifo$ddx_c2$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$ddx_c2$e$3 e$3(
+    raster_top$fragments$core$fifo$ddx_c2$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5584,10 +5693,10 @@ module raster_top$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$ddx_c2
+endmodule // raster_top$fragments$core$fifo$ddx_c2
 
 
-module raster_top$core$fifo$ddx_c2$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_c2$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5603,10 +5712,10 @@ module raster_top$core$fifo$ddx_c2$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_c2$e$0
+endmodule // raster_top$fragments$core$fifo$ddx_c2$e$0
 
 
-module raster_top$core$fifo$ddx_c2$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_c2$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5622,10 +5731,10 @@ module raster_top$core$fifo$ddx_c2$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_c2$e$1
+endmodule // raster_top$fragments$core$fifo$ddx_c2$e$1
 
 
-module raster_top$core$fifo$ddx_c2$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_c2$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5641,10 +5750,10 @@ module raster_top$core$fifo$ddx_c2$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_c2$e$2
+endmodule // raster_top$fragments$core$fifo$ddx_c2$e$2
 
 
-module raster_top$core$fifo$ddx_c2$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_c2$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -5660,10 +5769,10 @@ module raster_top$core$fifo$ddx_c2$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_c2$e$3
+endmodule // raster_top$fragments$core$fifo$ddx_c2$e$3
 
 
-module raster_top$core$fifo$ddx_z(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$ddx_z(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5688,22 +5797,22 @@ module raster_top$core$fifo$ddx_z(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$ddx_z$e$0 e$0(
+    raster_top$fragments$core$fifo$ddx_z$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$ddx_z$e$1 e$1(
+    raster_top$fragments$core$fifo$ddx_z$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$ddx_z$e$2 e$2(
+    raster_top$fragments$core$fifo$ddx_z$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$ddx_z$e$3 e$3(
+    raster_top$fragments$core$fifo$ddx_z$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5743,10 +5852,10 @@ module raster_top$core$fifo$ddx_z(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$ddx_z
+endmodule // raster_top$fragments$core$fifo$ddx_z
 
 
-module raster_top$core$fifo$ddx_z$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_z$e$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -5762,10 +5871,10 @@ module raster_top$core$fifo$ddx_z$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_z$e$0
+endmodule // raster_top$fragments$core$fifo$ddx_z$e$0
 
 
-module raster_top$core$fifo$ddx_z$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_z$e$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -5781,10 +5890,10 @@ module raster_top$core$fifo$ddx_z$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_z$e$1
+endmodule // raster_top$fragments$core$fifo$ddx_z$e$1
 
 
-module raster_top$core$fifo$ddx_z$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_z$e$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -5800,10 +5909,10 @@ module raster_top$core$fifo$ddx_z$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_z$e$2
+endmodule // raster_top$fragments$core$fifo$ddx_z$e$2
 
 
-module raster_top$core$fifo$ddx_z$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$ddx_z$e$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -5819,10 +5928,10 @@ module raster_top$core$fifo$ddx_z$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$ddx_z$e$3
+endmodule // raster_top$fragments$core$fifo$ddx_z$e$3
 
 
-module raster_top$core$fifo$left_c0(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$left_c0(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -5847,22 +5956,22 @@ module raster_top$core$fifo$left_c0(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$left_c0$e$0 e$0(
+    raster_top$fragments$core$fifo$left_c0$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$left_c0$e$1 e$1(
+    raster_top$fragments$core$fifo$left_c0$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$left_c0$e$2 e$2(
+    raster_top$fragments$core$fifo$left_c0$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$left_c0$e$3 e$3(
+    raster_top$fragments$core$fifo$left_c0$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -5902,10 +6011,10 @@ module raster_top$core$fifo$left_c0(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$left_c0
+endmodule // raster_top$fragments$core$fifo$left_c0
 
 
-module raster_top$core$fifo$left_c0$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$left_c0$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5921,10 +6030,10 @@ module raster_top$core$fifo$left_c0$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_c0$e$0
+endmodule // raster_top$fragments$core$fifo$left_c0$e$0
 
 
-module raster_top$core$fifo$left_c0$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$left_c0$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5940,10 +6049,10 @@ module raster_top$core$fifo$left_c0$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_c0$e$1
+endmodule // raster_top$fragments$core$fifo$left_c0$e$1
 
 
-module raster_top$core$fifo$left_c0$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$left_c0$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5959,10 +6068,10 @@ module raster_top$core$fifo$left_c0$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_c0$e$2
+endmodule // raster_top$fragments$core$fifo$left_c0$e$2
 
 
-module raster_top$core$fifo$left_c0$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$left_c0$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5978,10 +6087,10 @@ module raster_top$core$fifo$left_c0$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_c0$e$3
+endmodule // raster_top$fragments$core$fifo$left_c0$e$3
 
 
-module raster_top$core$fifo$left_c1(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$left_c1(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6006,22 +6115,22 @@ module raster_top$core$fifo$left_c1(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$left_c1$e$0 e$0(
+    raster_top$fragments$core$fifo$left_c1$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$left_c1$e$1 e$1(
+    raster_top$fragments$core$fifo$left_c1$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$left_c1$e$2 e$2(
+    raster_top$fragments$core$fifo$left_c1$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$left_c1$e$3 e$3(
+    raster_top$fragments$core$fifo$left_c1$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6061,10 +6170,10 @@ module raster_top$core$fifo$left_c1(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$left_c1
+endmodule // raster_top$fragments$core$fifo$left_c1
 
 
-module raster_top$core$fifo$left_c1$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$left_c1$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6080,10 +6189,10 @@ module raster_top$core$fifo$left_c1$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_c1$e$0
+endmodule // raster_top$fragments$core$fifo$left_c1$e$0
 
 
-module raster_top$core$fifo$left_c1$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$left_c1$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6099,10 +6208,10 @@ module raster_top$core$fifo$left_c1$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_c1$e$1
+endmodule // raster_top$fragments$core$fifo$left_c1$e$1
 
 
-module raster_top$core$fifo$left_c1$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$left_c1$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6118,10 +6227,10 @@ module raster_top$core$fifo$left_c1$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_c1$e$2
+endmodule // raster_top$fragments$core$fifo$left_c1$e$2
 
 
-module raster_top$core$fifo$left_c1$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$left_c1$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6137,10 +6246,10 @@ module raster_top$core$fifo$left_c1$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_c1$e$3
+endmodule // raster_top$fragments$core$fifo$left_c1$e$3
 
 
-module raster_top$core$fifo$left_c2(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$left_c2(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6165,22 +6274,22 @@ module raster_top$core$fifo$left_c2(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$left_c2$e$0 e$0(
+    raster_top$fragments$core$fifo$left_c2$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$left_c2$e$1 e$1(
+    raster_top$fragments$core$fifo$left_c2$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$left_c2$e$2 e$2(
+    raster_top$fragments$core$fifo$left_c2$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$left_c2$e$3 e$3(
+    raster_top$fragments$core$fifo$left_c2$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6220,10 +6329,10 @@ module raster_top$core$fifo$left_c2(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$left_c2
+endmodule // raster_top$fragments$core$fifo$left_c2
 
 
-module raster_top$core$fifo$left_c2$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$left_c2$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6239,10 +6348,10 @@ module raster_top$core$fifo$left_c2$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_c2$e$0
+endmodule // raster_top$fragments$core$fifo$left_c2$e$0
 
 
-module raster_top$core$fifo$left_c2$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$left_c2$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6258,10 +6367,10 @@ module raster_top$core$fifo$left_c2$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_c2$e$1
+endmodule // raster_top$fragments$core$fifo$left_c2$e$1
 
 
-module raster_top$core$fifo$left_c2$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$left_c2$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6277,10 +6386,10 @@ module raster_top$core$fifo$left_c2$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_c2$e$2
+endmodule // raster_top$fragments$core$fifo$left_c2$e$2
 
 
-module raster_top$core$fifo$left_c2$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$left_c2$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6296,10 +6405,10 @@ module raster_top$core$fifo$left_c2$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_c2$e$3
+endmodule // raster_top$fragments$core$fifo$left_c2$e$3
 
 
-module raster_top$core$fifo$left_z(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$left_z(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6324,22 +6433,22 @@ module raster_top$core$fifo$left_z(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$left_z$e$0 e$0(
+    raster_top$fragments$core$fifo$left_z$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$left_z$e$1 e$1(
+    raster_top$fragments$core$fifo$left_z$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$left_z$e$2 e$2(
+    raster_top$fragments$core$fifo$left_z$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$left_z$e$3 e$3(
+    raster_top$fragments$core$fifo$left_z$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6379,10 +6488,10 @@ module raster_top$core$fifo$left_z(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$left_z
+endmodule // raster_top$fragments$core$fifo$left_z
 
 
-module raster_top$core$fifo$left_z$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$left_z$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -6398,10 +6507,10 @@ module raster_top$core$fifo$left_z$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_z$e$0
+endmodule // raster_top$fragments$core$fifo$left_z$e$0
 
 
-module raster_top$core$fifo$left_z$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$left_z$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -6417,10 +6526,10 @@ module raster_top$core$fifo$left_z$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_z$e$1
+endmodule // raster_top$fragments$core$fifo$left_z$e$1
 
 
-module raster_top$core$fifo$left_z$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$left_z$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -6436,10 +6545,10 @@ module raster_top$core$fifo$left_z$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_z$e$2
+endmodule // raster_top$fragments$core$fifo$left_z$e$2
 
 
-module raster_top$core$fifo$left_z$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$left_z$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -6455,10 +6564,10 @@ module raster_top$core$fifo$left_z$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$left_z$e$3
+endmodule // raster_top$fragments$core$fifo$left_z$e$3
 
 
-module raster_top$core$fifo$level(count,full,empty);
+module raster_top$fragments$core$fifo$level(count,full,empty);
     
     // Module arguments
     input wire  [2:0] count;
@@ -6474,10 +6583,10 @@ module raster_top$core$fifo$level(count,full,empty);
         empty = count == 32'h0;
     end
     
-endmodule // raster_top$core$fifo$level
+endmodule // raster_top$fragments$core$fifo$level
 
 
-module raster_top$core$fifo$rd(d,q,clock);
+module raster_top$fragments$core$fifo$rd(d,q,clock);
     
     // Module arguments
     input wire  [1:0] d;
@@ -6493,10 +6602,10 @@ module raster_top$core$fifo$rd(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$rd
+endmodule // raster_top$fragments$core$fifo$rd
 
 
-module raster_top$core$fifo$right_c0(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$right_c0(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6521,22 +6630,22 @@ module raster_top$core$fifo$right_c0(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$right_c0$e$0 e$0(
+    raster_top$fragments$core$fifo$right_c0$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$right_c0$e$1 e$1(
+    raster_top$fragments$core$fifo$right_c0$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$right_c0$e$2 e$2(
+    raster_top$fragments$core$fifo$right_c0$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$right_c0$e$3 e$3(
+    raster_top$fragments$core$fifo$right_c0$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6576,10 +6685,10 @@ module raster_top$core$fifo$right_c0(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$right_c0
+endmodule // raster_top$fragments$core$fifo$right_c0
 
 
-module raster_top$core$fifo$right_c0$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$right_c0$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6595,10 +6704,10 @@ module raster_top$core$fifo$right_c0$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_c0$e$0
+endmodule // raster_top$fragments$core$fifo$right_c0$e$0
 
 
-module raster_top$core$fifo$right_c0$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$right_c0$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6614,10 +6723,10 @@ module raster_top$core$fifo$right_c0$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_c0$e$1
+endmodule // raster_top$fragments$core$fifo$right_c0$e$1
 
 
-module raster_top$core$fifo$right_c0$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$right_c0$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6633,10 +6742,10 @@ module raster_top$core$fifo$right_c0$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_c0$e$2
+endmodule // raster_top$fragments$core$fifo$right_c0$e$2
 
 
-module raster_top$core$fifo$right_c0$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$right_c0$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6652,10 +6761,10 @@ module raster_top$core$fifo$right_c0$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_c0$e$3
+endmodule // raster_top$fragments$core$fifo$right_c0$e$3
 
 
-module raster_top$core$fifo$right_c1(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$right_c1(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6680,22 +6789,22 @@ module raster_top$core$fifo$right_c1(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$right_c1$e$0 e$0(
+    raster_top$fragments$core$fifo$right_c1$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$right_c1$e$1 e$1(
+    raster_top$fragments$core$fifo$right_c1$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$right_c1$e$2 e$2(
+    raster_top$fragments$core$fifo$right_c1$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$right_c1$e$3 e$3(
+    raster_top$fragments$core$fifo$right_c1$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6735,10 +6844,10 @@ module raster_top$core$fifo$right_c1(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$right_c1
+endmodule // raster_top$fragments$core$fifo$right_c1
 
 
-module raster_top$core$fifo$right_c1$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$right_c1$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6754,10 +6863,10 @@ module raster_top$core$fifo$right_c1$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_c1$e$0
+endmodule // raster_top$fragments$core$fifo$right_c1$e$0
 
 
-module raster_top$core$fifo$right_c1$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$right_c1$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6773,10 +6882,10 @@ module raster_top$core$fifo$right_c1$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_c1$e$1
+endmodule // raster_top$fragments$core$fifo$right_c1$e$1
 
 
-module raster_top$core$fifo$right_c1$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$right_c1$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6792,10 +6901,10 @@ module raster_top$core$fifo$right_c1$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_c1$e$2
+endmodule // raster_top$fragments$core$fifo$right_c1$e$2
 
 
-module raster_top$core$fifo$right_c1$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$right_c1$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6811,10 +6920,10 @@ module raster_top$core$fifo$right_c1$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_c1$e$3
+endmodule // raster_top$fragments$core$fifo$right_c1$e$3
 
 
-module raster_top$core$fifo$right_c2(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$right_c2(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6839,22 +6948,22 @@ module raster_top$core$fifo$right_c2(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$right_c2$e$0 e$0(
+    raster_top$fragments$core$fifo$right_c2$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$right_c2$e$1 e$1(
+    raster_top$fragments$core$fifo$right_c2$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$right_c2$e$2 e$2(
+    raster_top$fragments$core$fifo$right_c2$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$right_c2$e$3 e$3(
+    raster_top$fragments$core$fifo$right_c2$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -6894,10 +7003,10 @@ module raster_top$core$fifo$right_c2(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$right_c2
+endmodule // raster_top$fragments$core$fifo$right_c2
 
 
-module raster_top$core$fifo$right_c2$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$right_c2$e$0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6913,10 +7022,10 @@ module raster_top$core$fifo$right_c2$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_c2$e$0
+endmodule // raster_top$fragments$core$fifo$right_c2$e$0
 
 
-module raster_top$core$fifo$right_c2$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$right_c2$e$1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6932,10 +7041,10 @@ module raster_top$core$fifo$right_c2$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_c2$e$1
+endmodule // raster_top$fragments$core$fifo$right_c2$e$1
 
 
-module raster_top$core$fifo$right_c2$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$right_c2$e$2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6951,10 +7060,10 @@ module raster_top$core$fifo$right_c2$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_c2$e$2
+endmodule // raster_top$fragments$core$fifo$right_c2$e$2
 
 
-module raster_top$core$fifo$right_c2$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$right_c2$e$3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -6970,10 +7079,10 @@ module raster_top$core$fifo$right_c2$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_c2$e$3
+endmodule // raster_top$fragments$core$fifo$right_c2$e$3
 
 
-module raster_top$core$fifo$right_z(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$right_z(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -6998,22 +7107,22 @@ module raster_top$core$fifo$right_z(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$right_z$e$0 e$0(
+    raster_top$fragments$core$fifo$right_z$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$right_z$e$1 e$1(
+    raster_top$fragments$core$fifo$right_z$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$right_z$e$2 e$2(
+    raster_top$fragments$core$fifo$right_z$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$right_z$e$3 e$3(
+    raster_top$fragments$core$fifo$right_z$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -7053,10 +7162,10 @@ module raster_top$core$fifo$right_z(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$right_z
+endmodule // raster_top$fragments$core$fifo$right_z
 
 
-module raster_top$core$fifo$right_z$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$right_z$e$0(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -7072,10 +7181,10 @@ module raster_top$core$fifo$right_z$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_z$e$0
+endmodule // raster_top$fragments$core$fifo$right_z$e$0
 
 
-module raster_top$core$fifo$right_z$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$right_z$e$1(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -7091,10 +7200,10 @@ module raster_top$core$fifo$right_z$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_z$e$1
+endmodule // raster_top$fragments$core$fifo$right_z$e$1
 
 
-module raster_top$core$fifo$right_z$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$right_z$e$2(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -7110,10 +7219,10 @@ module raster_top$core$fifo$right_z$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_z$e$2
+endmodule // raster_top$fragments$core$fifo$right_z$e$2
 
 
-module raster_top$core$fifo$right_z$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$right_z$e$3(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -7129,10 +7238,10 @@ module raster_top$core$fifo$right_z$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$right_z$e$3
+endmodule // raster_top$fragments$core$fifo$right_z$e$3
 
 
-module raster_top$core$fifo$wr(d,q,clock);
+module raster_top$fragments$core$fifo$wr(d,q,clock);
     
     // Module arguments
     input wire  [1:0] d;
@@ -7148,10 +7257,10 @@ module raster_top$core$fifo$wr(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$wr
+endmodule // raster_top$fragments$core$fifo$wr
 
 
-module raster_top$core$fifo$xl(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$xl(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -7176,22 +7285,22 @@ module raster_top$core$fifo$xl(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$xl$e$0 e$0(
+    raster_top$fragments$core$fifo$xl$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$xl$e$1 e$1(
+    raster_top$fragments$core$fifo$xl$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$xl$e$2 e$2(
+    raster_top$fragments$core$fifo$xl$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$xl$e$3 e$3(
+    raster_top$fragments$core$fifo$xl$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -7231,10 +7340,10 @@ module raster_top$core$fifo$xl(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$xl
+endmodule // raster_top$fragments$core$fifo$xl
 
 
-module raster_top$core$fifo$xl$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$xl$e$0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7250,10 +7359,10 @@ module raster_top$core$fifo$xl$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$xl$e$0
+endmodule // raster_top$fragments$core$fifo$xl$e$0
 
 
-module raster_top$core$fifo$xl$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$xl$e$1(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7269,10 +7378,10 @@ module raster_top$core$fifo$xl$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$xl$e$1
+endmodule // raster_top$fragments$core$fifo$xl$e$1
 
 
-module raster_top$core$fifo$xl$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$xl$e$2(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7288,10 +7397,10 @@ module raster_top$core$fifo$xl$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$xl$e$2
+endmodule // raster_top$fragments$core$fifo$xl$e$2
 
 
-module raster_top$core$fifo$xl$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$xl$e$3(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7307,10 +7416,10 @@ module raster_top$core$fifo$xl$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$xl$e$3
+endmodule // raster_top$fragments$core$fifo$xl$e$3
 
 
-module raster_top$core$fifo$xr(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$xr(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -7335,22 +7444,22 @@ module raster_top$core$fifo$xr(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$xr$e$0 e$0(
+    raster_top$fragments$core$fifo$xr$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$xr$e$1 e$1(
+    raster_top$fragments$core$fifo$xr$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$xr$e$2 e$2(
+    raster_top$fragments$core$fifo$xr$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$xr$e$3 e$3(
+    raster_top$fragments$core$fifo$xr$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -7390,10 +7499,10 @@ module raster_top$core$fifo$xr(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$xr
+endmodule // raster_top$fragments$core$fifo$xr
 
 
-module raster_top$core$fifo$xr$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$xr$e$0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7409,10 +7518,10 @@ module raster_top$core$fifo$xr$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$xr$e$0
+endmodule // raster_top$fragments$core$fifo$xr$e$0
 
 
-module raster_top$core$fifo$xr$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$xr$e$1(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7428,10 +7537,10 @@ module raster_top$core$fifo$xr$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$xr$e$1
+endmodule // raster_top$fragments$core$fifo$xr$e$1
 
 
-module raster_top$core$fifo$xr$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$xr$e$2(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7447,10 +7556,10 @@ module raster_top$core$fifo$xr$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$xr$e$2
+endmodule // raster_top$fragments$core$fifo$xr$e$2
 
 
-module raster_top$core$fifo$xr$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$xr$e$3(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -7466,10 +7575,10 @@ module raster_top$core$fifo$xr$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$xr$e$3
+endmodule // raster_top$fragments$core$fifo$xr$e$3
 
 
-module raster_top$core$fifo$y(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$y(clock,we,wr,rd,din,head);
     
     // Module arguments
     input wire  clock;
@@ -7494,22 +7603,22 @@ module raster_top$core$fifo$y(clock,we,wr,rd,din,head);
     reg  e$3$clock;
     
     // Sub module instances
-    raster_top$core$fifo$y$e$0 e$0(
+    raster_top$fragments$core$fifo$y$e$0 e$0(
         .d(e$0$d),
         .q(e$0$q),
         .clock(e$0$clock)
     );
-    raster_top$core$fifo$y$e$1 e$1(
+    raster_top$fragments$core$fifo$y$e$1 e$1(
         .d(e$1$d),
         .q(e$1$q),
         .clock(e$1$clock)
     );
-    raster_top$core$fifo$y$e$2 e$2(
+    raster_top$fragments$core$fifo$y$e$2 e$2(
         .d(e$2$d),
         .q(e$2$q),
         .clock(e$2$clock)
     );
-    raster_top$core$fifo$y$e$3 e$3(
+    raster_top$fragments$core$fifo$y$e$3 e$3(
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
@@ -7549,10 +7658,10 @@ module raster_top$core$fifo$y(clock,we,wr,rd,din,head);
         end
     end
     
-endmodule // raster_top$core$fifo$y
+endmodule // raster_top$fragments$core$fifo$y
 
 
-module raster_top$core$fifo$y$e$0(d,q,clock);
+module raster_top$fragments$core$fifo$y$e$0(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -7568,10 +7677,10 @@ module raster_top$core$fifo$y$e$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$y$e$0
+endmodule // raster_top$fragments$core$fifo$y$e$0
 
 
-module raster_top$core$fifo$y$e$1(d,q,clock);
+module raster_top$fragments$core$fifo$y$e$1(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -7587,10 +7696,10 @@ module raster_top$core$fifo$y$e$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$y$e$1
+endmodule // raster_top$fragments$core$fifo$y$e$1
 
 
-module raster_top$core$fifo$y$e$2(d,q,clock);
+module raster_top$fragments$core$fifo$y$e$2(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -7606,10 +7715,10 @@ module raster_top$core$fifo$y$e$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$y$e$2
+endmodule // raster_top$fragments$core$fifo$y$e$2
 
 
-module raster_top$core$fifo$y$e$3(d,q,clock);
+module raster_top$fragments$core$fifo$y$e$3(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -7625,10 +7734,10 @@ module raster_top$core$fifo$y$e$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$fifo$y$e$3
+endmodule // raster_top$fragments$core$fifo$y$e$3
 
 
-module raster_top$core$in_setup(d,q,clock);
+module raster_top$fragments$core$in_setup(d,q,clock);
     
     // Module arguments
     input wire  [2:0] d;
@@ -7644,10 +7753,10 @@ module raster_top$core$in_setup(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$in_setup
+endmodule // raster_top$fragments$core$in_setup
 
 
-module raster_top$core$last_in(d,q,clock);
+module raster_top$fragments$core$last_in(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -7663,10 +7772,10 @@ module raster_top$core$last_in(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$last_in
+endmodule // raster_top$fragments$core$last_in
 
 
-module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$left_c0,inp$left_c1,inp$left_c2,inp$right_z,inp$right_c0,inp$right_c1,inp$right_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
+module raster_top$fragments$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$left_c0,inp$left_c1,inp$left_c2,inp$right_z,inp$right_c0,inp$right_c1,inp$right_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,idle);
     
     // Module arguments
     input wire  clock;
@@ -7808,162 +7917,162 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
     reg  accept;
     
     // Sub module instances
-    raster_top$core$span$clip_x clip_x(
+    raster_top$fragments$core$span$clip_x clip_x(
         .on(clip_x$on)
     );
-    raster_top$core$span$clip_z clip_z(
+    raster_top$fragments$core$span$clip_z clip_z(
         .on(clip_z$on)
     );
-    raster_top$core$span$busy busy(
+    raster_top$fragments$core$span$busy busy(
         .d(busy$d),
         .q(busy$q),
         .clock(busy$clock)
     );
-    raster_top$core$span$drop drop(
+    raster_top$fragments$core$span$drop drop(
         .d(drop$d),
         .q(drop$q),
         .clock(drop$clock)
     );
-    raster_top$core$span$left left(
+    raster_top$fragments$core$span$left left(
         .d(left$d),
         .q(left$q),
         .clock(left$clock)
     );
-    raster_top$core$span$x x(
+    raster_top$fragments$core$span$x x(
         .d(x$d),
         .q(x$q),
         .clock(x$clock)
     );
-    raster_top$core$span$last last(
+    raster_top$fragments$core$span$last last(
         .d(last$d),
         .q(last$q),
         .clock(last$clock)
     );
-    raster_top$core$span$y y(
+    raster_top$fragments$core$span$y y(
         .d(y$d),
         .q(y$q),
         .clock(y$clock)
     );
-    raster_top$core$span$a_z a_z(
+    raster_top$fragments$core$span$a_z a_z(
         .d(a_z$d),
         .q(a_z$q),
         .clock(a_z$clock)
     );
-    raster_top$core$span$a_c0 a_c0(
+    raster_top$fragments$core$span$a_c0 a_c0(
         .d(a_c0$d),
         .q(a_c0$q),
         .clock(a_c0$clock)
     );
-    raster_top$core$span$a_c1 a_c1(
+    raster_top$fragments$core$span$a_c1 a_c1(
         .d(a_c1$d),
         .q(a_c1$q),
         .clock(a_c1$clock)
     );
-    raster_top$core$span$a_c2 a_c2(
+    raster_top$fragments$core$span$a_c2 a_c2(
         .d(a_c2$d),
         .q(a_c2$q),
         .clock(a_c2$clock)
     );
-    raster_top$core$span$d_z d_z(
+    raster_top$fragments$core$span$d_z d_z(
         .d(d_z$d),
         .q(d_z$q),
         .clock(d_z$clock)
     );
-    raster_top$core$span$d_c0 d_c0(
+    raster_top$fragments$core$span$d_c0 d_c0(
         .d(d_c0$d),
         .q(d_c0$q),
         .clock(d_c0$clock)
     );
-    raster_top$core$span$d_c1 d_c1(
+    raster_top$fragments$core$span$d_c1 d_c1(
         .d(d_c1$d),
         .q(d_c1$q),
         .clock(d_c1$clock)
     );
-    raster_top$core$span$d_c2 d_c2(
+    raster_top$fragments$core$span$d_c2 d_c2(
         .d(d_c2$d),
         .q(d_c2$q),
         .clock(d_c2$clock)
     );
-    raster_top$core$span$zl zl(
+    raster_top$fragments$core$span$zl zl(
         .x(zl$x),
         .neg(zl$neg),
         .over(zl$over),
         .low(zl$low)
     );
-    raster_top$core$span$zr zr(
+    raster_top$fragments$core$span$zr zr(
         .x(zr$x),
         .neg(zr$neg),
         .over(zr$over),
         .low(zr$low)
     );
-    raster_top$core$span$xl_neg xl_neg(
+    raster_top$fragments$core$span$xl_neg xl_neg(
         .x(xl_neg$x),
         .neg(xl_neg$neg)
     );
-    raster_top$core$span$xr_neg xr_neg(
+    raster_top$fragments$core$span$xr_neg xr_neg(
         .x(xr_neg$x),
         .neg(xr_neg$neg)
     );
-    raster_top$core$span$zp zp(
+    raster_top$fragments$core$span$zp zp(
         .x(zp$x),
         .neg(zp$neg),
         .over(zp$over),
         .low(zp$low)
     );
-    raster_top$core$span$c0 c0(
+    raster_top$fragments$core$span$c0 c0(
         .x(c0$x),
         .neg(c0$neg),
         .over(c0$over),
         .low(c0$low)
     );
-    raster_top$core$span$c1 c1(
+    raster_top$fragments$core$span$c1 c1(
         .x(c1$x),
         .neg(c1$neg),
         .over(c1$over),
         .low(c1$low)
     );
-    raster_top$core$span$c2 c2(
+    raster_top$fragments$core$span$c2 c2(
         .x(c2$x),
         .neg(c2$neg),
         .over(c2$over),
         .low(c2$low)
     );
-    raster_top$core$span$xl_on xl_on(
+    raster_top$fragments$core$span$xl_on xl_on(
         .a(xl_on$a),
         .b(xl_on$b),
         .lt(xl_on$lt)
     );
-    raster_top$core$span$o_valid o_valid(
+    raster_top$fragments$core$span$o_valid o_valid(
         .d(o_valid$d),
         .q(o_valid$q),
         .clock(o_valid$clock)
     );
-    raster_top$core$span$o_x o_x(
+    raster_top$fragments$core$span$o_x o_x(
         .d(o_x$d),
         .q(o_x$q),
         .clock(o_x$clock)
     );
-    raster_top$core$span$o_y o_y(
+    raster_top$fragments$core$span$o_y o_y(
         .d(o_y$d),
         .q(o_y$q),
         .clock(o_y$clock)
     );
-    raster_top$core$span$o_z o_z(
+    raster_top$fragments$core$span$o_z o_z(
         .d(o_z$d),
         .q(o_z$q),
         .clock(o_z$clock)
     );
-    raster_top$core$span$o_rgb0 o_rgb0(
+    raster_top$fragments$core$span$o_rgb0 o_rgb0(
         .d(o_rgb0$d),
         .q(o_rgb0$q),
         .clock(o_rgb0$clock)
     );
-    raster_top$core$span$o_rgb1 o_rgb1(
+    raster_top$fragments$core$span$o_rgb1 o_rgb1(
         .d(o_rgb1$d),
         .q(o_rgb1$q),
         .clock(o_rgb1$clock)
     );
-    raster_top$core$span$o_rgb2 o_rgb2(
+    raster_top$fragments$core$span$o_rgb2 o_rgb2(
         .d(o_rgb2$d),
         .q(o_rgb2$q),
         .clock(o_rgb2$clock)
@@ -8133,10 +8242,10 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         end
     end
     
-endmodule // raster_top$core$span
+endmodule // raster_top$fragments$core$span
 
 
-module raster_top$core$span$a_c0(d,q,clock);
+module raster_top$fragments$core$span$a_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -8152,10 +8261,10 @@ module raster_top$core$span$a_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$a_c0
+endmodule // raster_top$fragments$core$span$a_c0
 
 
-module raster_top$core$span$a_c1(d,q,clock);
+module raster_top$fragments$core$span$a_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -8171,10 +8280,10 @@ module raster_top$core$span$a_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$a_c1
+endmodule // raster_top$fragments$core$span$a_c1
 
 
-module raster_top$core$span$a_c2(d,q,clock);
+module raster_top$fragments$core$span$a_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -8190,10 +8299,10 @@ module raster_top$core$span$a_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$a_c2
+endmodule // raster_top$fragments$core$span$a_c2
 
 
-module raster_top$core$span$a_z(d,q,clock);
+module raster_top$fragments$core$span$a_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -8209,10 +8318,10 @@ module raster_top$core$span$a_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$a_z
+endmodule // raster_top$fragments$core$span$a_z
 
 
-module raster_top$core$span$busy(d,q,clock);
+module raster_top$fragments$core$span$busy(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -8228,10 +8337,10 @@ module raster_top$core$span$busy(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$busy
+endmodule // raster_top$fragments$core$span$busy
 
 
-module raster_top$core$span$c0(x,neg,over,low);
+module raster_top$fragments$core$span$c0(x,neg,over,low);
     
     // Module arguments
     input wire  [31:0] x;
@@ -8255,7 +8364,7 @@ module raster_top$core$span$c0(x,neg,over,low);
     reg  [32:0] shifted;
     
     // Sub module instances
-    raster_top$core$span$c0$x_neg x_neg(
+    raster_top$fragments$core$span$c0$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -8274,10 +8383,10 @@ module raster_top$core$span$c0(x,neg,over,low);
         low = ((shifted) & 8'hff);
     end
     
-endmodule // raster_top$core$span$c0
+endmodule // raster_top$fragments$core$span$c0
 
 
-module raster_top$core$span$c0$x_neg(x,neg);
+module raster_top$fragments$core$span$c0$x_neg(x,neg);
     
     // Module arguments
     input wire  [31:0] x;
@@ -8291,10 +8400,10 @@ module raster_top$core$span$c0$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$core$span$c0$x_neg
+endmodule // raster_top$fragments$core$span$c0$x_neg
 
 
-module raster_top$core$span$c1(x,neg,over,low);
+module raster_top$fragments$core$span$c1(x,neg,over,low);
     
     // Module arguments
     input wire  [31:0] x;
@@ -8318,7 +8427,7 @@ module raster_top$core$span$c1(x,neg,over,low);
     reg  [32:0] shifted;
     
     // Sub module instances
-    raster_top$core$span$c1$x_neg x_neg(
+    raster_top$fragments$core$span$c1$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -8337,10 +8446,10 @@ module raster_top$core$span$c1(x,neg,over,low);
         low = ((shifted) & 8'hff);
     end
     
-endmodule // raster_top$core$span$c1
+endmodule // raster_top$fragments$core$span$c1
 
 
-module raster_top$core$span$c1$x_neg(x,neg);
+module raster_top$fragments$core$span$c1$x_neg(x,neg);
     
     // Module arguments
     input wire  [31:0] x;
@@ -8354,10 +8463,10 @@ module raster_top$core$span$c1$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$core$span$c1$x_neg
+endmodule // raster_top$fragments$core$span$c1$x_neg
 
 
-module raster_top$core$span$c2(x,neg,over,low);
+module raster_top$fragments$core$span$c2(x,neg,over,low);
     
     // Module arguments
     input wire  [31:0] x;
@@ -8381,7 +8490,7 @@ module raster_top$core$span$c2(x,neg,over,low);
     reg  [32:0] shifted;
     
     // Sub module instances
-    raster_top$core$span$c2$x_neg x_neg(
+    raster_top$fragments$core$span$c2$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -8400,10 +8509,10 @@ module raster_top$core$span$c2(x,neg,over,low);
         low = ((shifted) & 8'hff);
     end
     
-endmodule // raster_top$core$span$c2
+endmodule // raster_top$fragments$core$span$c2
 
 
-module raster_top$core$span$c2$x_neg(x,neg);
+module raster_top$fragments$core$span$c2$x_neg(x,neg);
     
     // Module arguments
     input wire  [31:0] x;
@@ -8417,10 +8526,10 @@ module raster_top$core$span$c2$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$core$span$c2$x_neg
+endmodule // raster_top$fragments$core$span$c2$x_neg
 
 
-module raster_top$core$span$clip_x(on);
+module raster_top$fragments$core$span$clip_x(on);
     
     // Module arguments
     output reg  on;
@@ -8433,10 +8542,10 @@ module raster_top$core$span$clip_x(on);
         on = value;
     end
     
-endmodule // raster_top$core$span$clip_x
+endmodule // raster_top$fragments$core$span$clip_x
 
 
-module raster_top$core$span$clip_z(on);
+module raster_top$fragments$core$span$clip_z(on);
     
     // Module arguments
     output reg  on;
@@ -8449,10 +8558,10 @@ module raster_top$core$span$clip_z(on);
         on = value;
     end
     
-endmodule // raster_top$core$span$clip_z
+endmodule // raster_top$fragments$core$span$clip_z
 
 
-module raster_top$core$span$d_c0(d,q,clock);
+module raster_top$fragments$core$span$d_c0(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -8468,10 +8577,10 @@ module raster_top$core$span$d_c0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$d_c0
+endmodule // raster_top$fragments$core$span$d_c0
 
 
-module raster_top$core$span$d_c1(d,q,clock);
+module raster_top$fragments$core$span$d_c1(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -8487,10 +8596,10 @@ module raster_top$core$span$d_c1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$d_c1
+endmodule // raster_top$fragments$core$span$d_c1
 
 
-module raster_top$core$span$d_c2(d,q,clock);
+module raster_top$fragments$core$span$d_c2(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -8506,10 +8615,10 @@ module raster_top$core$span$d_c2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$d_c2
+endmodule // raster_top$fragments$core$span$d_c2
 
 
-module raster_top$core$span$d_z(d,q,clock);
+module raster_top$fragments$core$span$d_z(d,q,clock);
     
     // Module arguments
     input wire  [35:0] d;
@@ -8525,10 +8634,10 @@ module raster_top$core$span$d_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$d_z
+endmodule // raster_top$fragments$core$span$d_z
 
 
-module raster_top$core$span$drop(d,q,clock);
+module raster_top$fragments$core$span$drop(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -8544,10 +8653,10 @@ module raster_top$core$span$drop(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$drop
+endmodule // raster_top$fragments$core$span$drop
 
 
-module raster_top$core$span$last(d,q,clock);
+module raster_top$fragments$core$span$last(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -8563,10 +8672,10 @@ module raster_top$core$span$last(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$last
+endmodule // raster_top$fragments$core$span$last
 
 
-module raster_top$core$span$left(d,q,clock);
+module raster_top$fragments$core$span$left(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -8582,10 +8691,10 @@ module raster_top$core$span$left(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$left
+endmodule // raster_top$fragments$core$span$left
 
 
-module raster_top$core$span$o_rgb0(d,q,clock);
+module raster_top$fragments$core$span$o_rgb0(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -8601,10 +8710,10 @@ module raster_top$core$span$o_rgb0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$o_rgb0
+endmodule // raster_top$fragments$core$span$o_rgb0
 
 
-module raster_top$core$span$o_rgb1(d,q,clock);
+module raster_top$fragments$core$span$o_rgb1(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -8620,10 +8729,10 @@ module raster_top$core$span$o_rgb1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$o_rgb1
+endmodule // raster_top$fragments$core$span$o_rgb1
 
 
-module raster_top$core$span$o_rgb2(d,q,clock);
+module raster_top$fragments$core$span$o_rgb2(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -8639,10 +8748,10 @@ module raster_top$core$span$o_rgb2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$o_rgb2
+endmodule // raster_top$fragments$core$span$o_rgb2
 
 
-module raster_top$core$span$o_valid(d,q,clock);
+module raster_top$fragments$core$span$o_valid(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -8658,10 +8767,10 @@ module raster_top$core$span$o_valid(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$o_valid
+endmodule // raster_top$fragments$core$span$o_valid
 
 
-module raster_top$core$span$o_x(d,q,clock);
+module raster_top$fragments$core$span$o_x(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -8677,10 +8786,10 @@ module raster_top$core$span$o_x(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$o_x
+endmodule // raster_top$fragments$core$span$o_x
 
 
-module raster_top$core$span$o_y(d,q,clock);
+module raster_top$fragments$core$span$o_y(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -8696,10 +8805,10 @@ module raster_top$core$span$o_y(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$o_y
+endmodule // raster_top$fragments$core$span$o_y
 
 
-module raster_top$core$span$o_z(d,q,clock);
+module raster_top$fragments$core$span$o_z(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -8715,10 +8824,10 @@ module raster_top$core$span$o_z(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$o_z
+endmodule // raster_top$fragments$core$span$o_z
 
 
-module raster_top$core$span$x(d,q,clock);
+module raster_top$fragments$core$span$x(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -8734,10 +8843,10 @@ module raster_top$core$span$x(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$x
+endmodule // raster_top$fragments$core$span$x
 
 
-module raster_top$core$span$xl_neg(x,neg);
+module raster_top$fragments$core$span$xl_neg(x,neg);
     
     // Module arguments
     input wire  [12:0] x;
@@ -8751,10 +8860,10 @@ module raster_top$core$span$xl_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$core$span$xl_neg
+endmodule // raster_top$fragments$core$span$xl_neg
 
 
-module raster_top$core$span$xl_on(a,b,lt);
+module raster_top$fragments$core$span$xl_on(a,b,lt);
     
     // Module arguments
     input wire  [12:0] a;
@@ -8769,10 +8878,10 @@ module raster_top$core$span$xl_on(a,b,lt);
         lt = (a ^ half) < (b ^ half);
     end
     
-endmodule // raster_top$core$span$xl_on
+endmodule // raster_top$fragments$core$span$xl_on
 
 
-module raster_top$core$span$xr_neg(x,neg);
+module raster_top$fragments$core$span$xr_neg(x,neg);
     
     // Module arguments
     input wire  [12:0] x;
@@ -8786,10 +8895,10 @@ module raster_top$core$span$xr_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$core$span$xr_neg
+endmodule // raster_top$fragments$core$span$xr_neg
 
 
-module raster_top$core$span$y(d,q,clock);
+module raster_top$fragments$core$span$y(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -8805,10 +8914,10 @@ module raster_top$core$span$y(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$span$y
+endmodule // raster_top$fragments$core$span$y
 
 
-module raster_top$core$span$zl(x,neg,over,low);
+module raster_top$fragments$core$span$zl(x,neg,over,low);
     
     // Module arguments
     input wire  [35:0] x;
@@ -8832,7 +8941,7 @@ module raster_top$core$span$zl(x,neg,over,low);
     reg  [36:0] shifted;
     
     // Sub module instances
-    raster_top$core$span$zl$x_neg x_neg(
+    raster_top$fragments$core$span$zl$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -8851,10 +8960,10 @@ module raster_top$core$span$zl(x,neg,over,low);
         low = ((shifted) & 16'hffff);
     end
     
-endmodule // raster_top$core$span$zl
+endmodule // raster_top$fragments$core$span$zl
 
 
-module raster_top$core$span$zl$x_neg(x,neg);
+module raster_top$fragments$core$span$zl$x_neg(x,neg);
     
     // Module arguments
     input wire  [35:0] x;
@@ -8868,10 +8977,10 @@ module raster_top$core$span$zl$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$core$span$zl$x_neg
+endmodule // raster_top$fragments$core$span$zl$x_neg
 
 
-module raster_top$core$span$zp(x,neg,over,low);
+module raster_top$fragments$core$span$zp(x,neg,over,low);
     
     // Module arguments
     input wire  [35:0] x;
@@ -8895,7 +9004,7 @@ module raster_top$core$span$zp(x,neg,over,low);
     reg  [36:0] shifted;
     
     // Sub module instances
-    raster_top$core$span$zp$x_neg x_neg(
+    raster_top$fragments$core$span$zp$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -8914,10 +9023,10 @@ module raster_top$core$span$zp(x,neg,over,low);
         low = ((shifted) & 16'hffff);
     end
     
-endmodule // raster_top$core$span$zp
+endmodule // raster_top$fragments$core$span$zp
 
 
-module raster_top$core$span$zp$x_neg(x,neg);
+module raster_top$fragments$core$span$zp$x_neg(x,neg);
     
     // Module arguments
     input wire  [35:0] x;
@@ -8931,10 +9040,10 @@ module raster_top$core$span$zp$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$core$span$zp$x_neg
+endmodule // raster_top$fragments$core$span$zp$x_neg
 
 
-module raster_top$core$span$zr(x,neg,over,low);
+module raster_top$fragments$core$span$zr(x,neg,over,low);
     
     // Module arguments
     input wire  [35:0] x;
@@ -8958,7 +9067,7 @@ module raster_top$core$span$zr(x,neg,over,low);
     reg  [36:0] shifted;
     
     // Sub module instances
-    raster_top$core$span$zr$x_neg x_neg(
+    raster_top$fragments$core$span$zr$x_neg x_neg(
         .x(x_neg$x),
         .neg(x_neg$neg)
     );
@@ -8977,10 +9086,10 @@ module raster_top$core$span$zr(x,neg,over,low);
         low = ((shifted) & 16'hffff);
     end
     
-endmodule // raster_top$core$span$zr
+endmodule // raster_top$fragments$core$span$zr
 
 
-module raster_top$core$span$zr$x_neg(x,neg);
+module raster_top$fragments$core$span$zr$x_neg(x,neg);
     
     // Module arguments
     input wire  [35:0] x;
@@ -8994,10 +9103,10 @@ module raster_top$core$span$zr$x_neg(x,neg);
         neg = x >= half;
     end
     
-endmodule // raster_top$core$span$zr$x_neg
+endmodule // raster_top$fragments$core$span$zr$x_neg
 
 
-module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,recip_mant,recip_exp);
+module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,recip_mant,recip_exp);
     
     // Module arguments
     input wire  clock;
@@ -11395,56 +11504,56 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [56:0] ddy$3;
     
     // Sub module instances
-    raster_top$core$triangle_setup$mul$0 mul$0(
+    raster_top$fragments$core$triangle_setup$mul$0 mul$0(
         .clock(mul$0$clock),
         .en(mul$0$en),
         .a(mul$0$a),
         .b(mul$0$b),
         .p(mul$0$p)
     );
-    raster_top$core$triangle_setup$mul$1 mul$1(
+    raster_top$fragments$core$triangle_setup$mul$1 mul$1(
         .clock(mul$1$clock),
         .en(mul$1$en),
         .a(mul$1$a),
         .b(mul$1$b),
         .p(mul$1$p)
     );
-    raster_top$core$triangle_setup$mul$2 mul$2(
+    raster_top$fragments$core$triangle_setup$mul$2 mul$2(
         .clock(mul$2$clock),
         .en(mul$2$en),
         .a(mul$2$a),
         .b(mul$2$b),
         .p(mul$2$p)
     );
-    raster_top$core$triangle_setup$mul$3 mul$3(
+    raster_top$fragments$core$triangle_setup$mul$3 mul$3(
         .clock(mul$3$clock),
         .en(mul$3$en),
         .a(mul$3$a),
         .b(mul$3$b),
         .p(mul$3$p)
     );
-    raster_top$core$triangle_setup$mul$4 mul$4(
+    raster_top$fragments$core$triangle_setup$mul$4 mul$4(
         .clock(mul$4$clock),
         .en(mul$4$en),
         .a(mul$4$a),
         .b(mul$4$b),
         .p(mul$4$p)
     );
-    raster_top$core$triangle_setup$mul$5 mul$5(
+    raster_top$fragments$core$triangle_setup$mul$5 mul$5(
         .clock(mul$5$clock),
         .en(mul$5$en),
         .a(mul$5$a),
         .b(mul$5$b),
         .p(mul$5$p)
     );
-    raster_top$core$triangle_setup$mul$6 mul$6(
+    raster_top$fragments$core$triangle_setup$mul$6 mul$6(
         .clock(mul$6$clock),
         .en(mul$6$en),
         .a(mul$6$a),
         .b(mul$6$b),
         .p(mul$6$p)
     );
-    raster_top$core$triangle_setup$div div(
+    raster_top$fragments$core$triangle_setup$div div(
         .clock(div$clock),
         .inp_valid(div$inp_valid),
         .inp_ready(div$inp_ready),
@@ -11456,1622 +11565,1622 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .out_q(div$out_q),
         .out_r(div$out_r)
     );
-    raster_top$core$triangle_setup$t$0 t$0(
+    raster_top$fragments$core$triangle_setup$t$0 t$0(
         .d(t$0$d),
         .q(t$0$q),
         .clock(t$0$clock)
     );
-    raster_top$core$triangle_setup$t$1 t$1(
+    raster_top$fragments$core$triangle_setup$t$1 t$1(
         .d(t$1$d),
         .q(t$1$q),
         .clock(t$1$clock)
     );
-    raster_top$core$triangle_setup$t$2 t$2(
+    raster_top$fragments$core$triangle_setup$t$2 t$2(
         .d(t$2$d),
         .q(t$2$q),
         .clock(t$2$clock)
     );
-    raster_top$core$triangle_setup$t$3 t$3(
+    raster_top$fragments$core$triangle_setup$t$3 t$3(
         .d(t$3$d),
         .q(t$3$q),
         .clock(t$3$clock)
     );
-    raster_top$core$triangle_setup$t$4 t$4(
+    raster_top$fragments$core$triangle_setup$t$4 t$4(
         .d(t$4$d),
         .q(t$4$q),
         .clock(t$4$clock)
     );
-    raster_top$core$triangle_setup$act_r$0 act_r$0(
+    raster_top$fragments$core$triangle_setup$act_r$0 act_r$0(
         .d(act_r$0$d),
         .q(act_r$0$q),
         .clock(act_r$0$clock)
     );
-    raster_top$core$triangle_setup$act_r$1 act_r$1(
+    raster_top$fragments$core$triangle_setup$act_r$1 act_r$1(
         .d(act_r$1$d),
         .q(act_r$1$q),
         .clock(act_r$1$clock)
     );
-    raster_top$core$triangle_setup$act_r$2 act_r$2(
+    raster_top$fragments$core$triangle_setup$act_r$2 act_r$2(
         .d(act_r$2$d),
         .q(act_r$2$q),
         .clock(act_r$2$clock)
     );
-    raster_top$core$triangle_setup$act_r$3 act_r$3(
+    raster_top$fragments$core$triangle_setup$act_r$3 act_r$3(
         .d(act_r$3$d),
         .q(act_r$3$q),
         .clock(act_r$3$clock)
     );
-    raster_top$core$triangle_setup$act_r$4 act_r$4(
+    raster_top$fragments$core$triangle_setup$act_r$4 act_r$4(
         .d(act_r$4$d),
         .q(act_r$4$q),
         .clock(act_r$4$clock)
     );
-    raster_top$core$triangle_setup$act_r$5 act_r$5(
+    raster_top$fragments$core$triangle_setup$act_r$5 act_r$5(
         .d(act_r$5$d),
         .q(act_r$5$q),
         .clock(act_r$5$clock)
     );
-    raster_top$core$triangle_setup$act_r$6 act_r$6(
+    raster_top$fragments$core$triangle_setup$act_r$6 act_r$6(
         .d(act_r$6$d),
         .q(act_r$6$q),
         .clock(act_r$6$clock)
     );
-    raster_top$core$triangle_setup$act_r$7 act_r$7(
+    raster_top$fragments$core$triangle_setup$act_r$7 act_r$7(
         .d(act_r$7$d),
         .q(act_r$7$q),
         .clock(act_r$7$clock)
     );
-    raster_top$core$triangle_setup$act_r$8 act_r$8(
+    raster_top$fragments$core$triangle_setup$act_r$8 act_r$8(
         .d(act_r$8$d),
         .q(act_r$8$q),
         .clock(act_r$8$clock)
     );
-    raster_top$core$triangle_setup$act_r$9 act_r$9(
+    raster_top$fragments$core$triangle_setup$act_r$9 act_r$9(
         .d(act_r$9$d),
         .q(act_r$9$q),
         .clock(act_r$9$clock)
     );
-    raster_top$core$triangle_setup$act_r$10 act_r$10(
+    raster_top$fragments$core$triangle_setup$act_r$10 act_r$10(
         .d(act_r$10$d),
         .q(act_r$10$q),
         .clock(act_r$10$clock)
     );
-    raster_top$core$triangle_setup$act_r$11 act_r$11(
+    raster_top$fragments$core$triangle_setup$act_r$11 act_r$11(
         .d(act_r$11$d),
         .q(act_r$11$q),
         .clock(act_r$11$clock)
     );
-    raster_top$core$triangle_setup$act_r$12 act_r$12(
+    raster_top$fragments$core$triangle_setup$act_r$12 act_r$12(
         .d(act_r$12$d),
         .q(act_r$12$q),
         .clock(act_r$12$clock)
     );
-    raster_top$core$triangle_setup$act_r$13 act_r$13(
+    raster_top$fragments$core$triangle_setup$act_r$13 act_r$13(
         .d(act_r$13$d),
         .q(act_r$13$q),
         .clock(act_r$13$clock)
     );
-    raster_top$core$triangle_setup$act_r$14 act_r$14(
+    raster_top$fragments$core$triangle_setup$act_r$14 act_r$14(
         .d(act_r$14$d),
         .q(act_r$14$q),
         .clock(act_r$14$clock)
     );
-    raster_top$core$triangle_setup$act_r$15 act_r$15(
+    raster_top$fragments$core$triangle_setup$act_r$15 act_r$15(
         .d(act_r$15$d),
         .q(act_r$15$q),
         .clock(act_r$15$clock)
     );
-    raster_top$core$triangle_setup$act_r$16 act_r$16(
+    raster_top$fragments$core$triangle_setup$act_r$16 act_r$16(
         .d(act_r$16$d),
         .q(act_r$16$q),
         .clock(act_r$16$clock)
     );
-    raster_top$core$triangle_setup$act_r$17 act_r$17(
+    raster_top$fragments$core$triangle_setup$act_r$17 act_r$17(
         .d(act_r$17$d),
         .q(act_r$17$q),
         .clock(act_r$17$clock)
     );
-    raster_top$core$triangle_setup$act_r$18 act_r$18(
+    raster_top$fragments$core$triangle_setup$act_r$18 act_r$18(
         .d(act_r$18$d),
         .q(act_r$18$q),
         .clock(act_r$18$clock)
     );
-    raster_top$core$triangle_setup$act_r$19 act_r$19(
+    raster_top$fragments$core$triangle_setup$act_r$19 act_r$19(
         .d(act_r$19$d),
         .q(act_r$19$q),
         .clock(act_r$19$clock)
     );
-    raster_top$core$triangle_setup$act_r$20 act_r$20(
+    raster_top$fragments$core$triangle_setup$act_r$20 act_r$20(
         .d(act_r$20$d),
         .q(act_r$20$q),
         .clock(act_r$20$clock)
     );
-    raster_top$core$triangle_setup$act_r$21 act_r$21(
+    raster_top$fragments$core$triangle_setup$act_r$21 act_r$21(
         .d(act_r$21$d),
         .q(act_r$21$q),
         .clock(act_r$21$clock)
     );
-    raster_top$core$triangle_setup$act_r$22 act_r$22(
+    raster_top$fragments$core$triangle_setup$act_r$22 act_r$22(
         .d(act_r$22$d),
         .q(act_r$22$q),
         .clock(act_r$22$clock)
     );
-    raster_top$core$triangle_setup$act_r$23 act_r$23(
+    raster_top$fragments$core$triangle_setup$act_r$23 act_r$23(
         .d(act_r$23$d),
         .q(act_r$23$q),
         .clock(act_r$23$clock)
     );
-    raster_top$core$triangle_setup$act_r$24 act_r$24(
+    raster_top$fragments$core$triangle_setup$act_r$24 act_r$24(
         .d(act_r$24$d),
         .q(act_r$24$q),
         .clock(act_r$24$clock)
     );
-    raster_top$core$triangle_setup$act_r$25 act_r$25(
+    raster_top$fragments$core$triangle_setup$act_r$25 act_r$25(
         .d(act_r$25$d),
         .q(act_r$25$q),
         .clock(act_r$25$clock)
     );
-    raster_top$core$triangle_setup$act_r$26 act_r$26(
+    raster_top$fragments$core$triangle_setup$act_r$26 act_r$26(
         .d(act_r$26$d),
         .q(act_r$26$q),
         .clock(act_r$26$clock)
     );
-    raster_top$core$triangle_setup$act_r$27 act_r$27(
+    raster_top$fragments$core$triangle_setup$act_r$27 act_r$27(
         .d(act_r$27$d),
         .q(act_r$27$q),
         .clock(act_r$27$clock)
     );
-    raster_top$core$triangle_setup$act_r$28 act_r$28(
+    raster_top$fragments$core$triangle_setup$act_r$28 act_r$28(
         .d(act_r$28$d),
         .q(act_r$28$q),
         .clock(act_r$28$clock)
     );
-    raster_top$core$triangle_setup$act_r$29 act_r$29(
+    raster_top$fragments$core$triangle_setup$act_r$29 act_r$29(
         .d(act_r$29$d),
         .q(act_r$29$q),
         .clock(act_r$29$clock)
     );
-    raster_top$core$triangle_setup$act_r$30 act_r$30(
+    raster_top$fragments$core$triangle_setup$act_r$30 act_r$30(
         .d(act_r$30$d),
         .q(act_r$30$q),
         .clock(act_r$30$clock)
     );
-    raster_top$core$triangle_setup$act_r$31 act_r$31(
+    raster_top$fragments$core$triangle_setup$act_r$31 act_r$31(
         .d(act_r$31$d),
         .q(act_r$31$q),
         .clock(act_r$31$clock)
     );
-    raster_top$core$triangle_setup$act_r$32 act_r$32(
+    raster_top$fragments$core$triangle_setup$act_r$32 act_r$32(
         .d(act_r$32$d),
         .q(act_r$32$q),
         .clock(act_r$32$clock)
     );
-    raster_top$core$triangle_setup$act_r$33 act_r$33(
+    raster_top$fragments$core$triangle_setup$act_r$33 act_r$33(
         .d(act_r$33$d),
         .q(act_r$33$q),
         .clock(act_r$33$clock)
     );
-    raster_top$core$triangle_setup$act_r$34 act_r$34(
+    raster_top$fragments$core$triangle_setup$act_r$34 act_r$34(
         .d(act_r$34$d),
         .q(act_r$34$q),
         .clock(act_r$34$clock)
     );
-    raster_top$core$triangle_setup$act_r$35 act_r$35(
+    raster_top$fragments$core$triangle_setup$act_r$35 act_r$35(
         .d(act_r$35$d),
         .q(act_r$35$q),
         .clock(act_r$35$clock)
     );
-    raster_top$core$triangle_setup$act_r$36 act_r$36(
+    raster_top$fragments$core$triangle_setup$act_r$36 act_r$36(
         .d(act_r$36$d),
         .q(act_r$36$q),
         .clock(act_r$36$clock)
     );
-    raster_top$core$triangle_setup$act_r$37 act_r$37(
+    raster_top$fragments$core$triangle_setup$act_r$37 act_r$37(
         .d(act_r$37$d),
         .q(act_r$37$q),
         .clock(act_r$37$clock)
     );
-    raster_top$core$triangle_setup$act_r$38 act_r$38(
+    raster_top$fragments$core$triangle_setup$act_r$38 act_r$38(
         .d(act_r$38$d),
         .q(act_r$38$q),
         .clock(act_r$38$clock)
     );
-    raster_top$core$triangle_setup$act_r$39 act_r$39(
+    raster_top$fragments$core$triangle_setup$act_r$39 act_r$39(
         .d(act_r$39$d),
         .q(act_r$39$q),
         .clock(act_r$39$clock)
     );
-    raster_top$core$triangle_setup$act_r$40 act_r$40(
+    raster_top$fragments$core$triangle_setup$act_r$40 act_r$40(
         .d(act_r$40$d),
         .q(act_r$40$q),
         .clock(act_r$40$clock)
     );
-    raster_top$core$triangle_setup$act_r$41 act_r$41(
+    raster_top$fragments$core$triangle_setup$act_r$41 act_r$41(
         .d(act_r$41$d),
         .q(act_r$41$q),
         .clock(act_r$41$clock)
     );
-    raster_top$core$triangle_setup$act_r$42 act_r$42(
+    raster_top$fragments$core$triangle_setup$act_r$42 act_r$42(
         .d(act_r$42$d),
         .q(act_r$42$q),
         .clock(act_r$42$clock)
     );
-    raster_top$core$triangle_setup$act_r$43 act_r$43(
+    raster_top$fragments$core$triangle_setup$act_r$43 act_r$43(
         .d(act_r$43$d),
         .q(act_r$43$q),
         .clock(act_r$43$clock)
     );
-    raster_top$core$triangle_setup$act_r$44 act_r$44(
+    raster_top$fragments$core$triangle_setup$act_r$44 act_r$44(
         .d(act_r$44$d),
         .q(act_r$44$q),
         .clock(act_r$44$clock)
     );
-    raster_top$core$triangle_setup$act_r$45 act_r$45(
+    raster_top$fragments$core$triangle_setup$act_r$45 act_r$45(
         .d(act_r$45$d),
         .q(act_r$45$q),
         .clock(act_r$45$clock)
     );
-    raster_top$core$triangle_setup$act_r$46 act_r$46(
+    raster_top$fragments$core$triangle_setup$act_r$46 act_r$46(
         .d(act_r$46$d),
         .q(act_r$46$q),
         .clock(act_r$46$clock)
     );
-    raster_top$core$triangle_setup$act_r$47 act_r$47(
+    raster_top$fragments$core$triangle_setup$act_r$47 act_r$47(
         .d(act_r$47$d),
         .q(act_r$47$q),
         .clock(act_r$47$clock)
     );
-    raster_top$core$triangle_setup$act_r$48 act_r$48(
+    raster_top$fragments$core$triangle_setup$act_r$48 act_r$48(
         .d(act_r$48$d),
         .q(act_r$48$q),
         .clock(act_r$48$clock)
     );
-    raster_top$core$triangle_setup$act_r$49 act_r$49(
+    raster_top$fragments$core$triangle_setup$act_r$49 act_r$49(
         .d(act_r$49$d),
         .q(act_r$49$q),
         .clock(act_r$49$clock)
     );
-    raster_top$core$triangle_setup$act_r$50 act_r$50(
+    raster_top$fragments$core$triangle_setup$act_r$50 act_r$50(
         .d(act_r$50$d),
         .q(act_r$50$q),
         .clock(act_r$50$clock)
     );
-    raster_top$core$triangle_setup$act_r$51 act_r$51(
+    raster_top$fragments$core$triangle_setup$act_r$51 act_r$51(
         .d(act_r$51$d),
         .q(act_r$51$q),
         .clock(act_r$51$clock)
     );
-    raster_top$core$triangle_setup$act_r$52 act_r$52(
+    raster_top$fragments$core$triangle_setup$act_r$52 act_r$52(
         .d(act_r$52$d),
         .q(act_r$52$q),
         .clock(act_r$52$clock)
     );
-    raster_top$core$triangle_setup$act_r$53 act_r$53(
+    raster_top$fragments$core$triangle_setup$act_r$53 act_r$53(
         .d(act_r$53$d),
         .q(act_r$53$q),
         .clock(act_r$53$clock)
     );
-    raster_top$core$triangle_setup$act_r$54 act_r$54(
+    raster_top$fragments$core$triangle_setup$act_r$54 act_r$54(
         .d(act_r$54$d),
         .q(act_r$54$q),
         .clock(act_r$54$clock)
     );
-    raster_top$core$triangle_setup$act_r$55 act_r$55(
+    raster_top$fragments$core$triangle_setup$act_r$55 act_r$55(
         .d(act_r$55$d),
         .q(act_r$55$q),
         .clock(act_r$55$clock)
     );
-    raster_top$core$triangle_setup$act_r$56 act_r$56(
+    raster_top$fragments$core$triangle_setup$act_r$56 act_r$56(
         .d(act_r$56$d),
         .q(act_r$56$q),
         .clock(act_r$56$clock)
     );
-    raster_top$core$triangle_setup$act_r$57 act_r$57(
+    raster_top$fragments$core$triangle_setup$act_r$57 act_r$57(
         .d(act_r$57$d),
         .q(act_r$57$q),
         .clock(act_r$57$clock)
     );
-    raster_top$core$triangle_setup$act_r$58 act_r$58(
+    raster_top$fragments$core$triangle_setup$act_r$58 act_r$58(
         .d(act_r$58$d),
         .q(act_r$58$q),
         .clock(act_r$58$clock)
     );
-    raster_top$core$triangle_setup$act_r$59 act_r$59(
+    raster_top$fragments$core$triangle_setup$act_r$59 act_r$59(
         .d(act_r$59$d),
         .q(act_r$59$q),
         .clock(act_r$59$clock)
     );
-    raster_top$core$triangle_setup$act_r$60 act_r$60(
+    raster_top$fragments$core$triangle_setup$act_r$60 act_r$60(
         .d(act_r$60$d),
         .q(act_r$60$q),
         .clock(act_r$60$clock)
     );
-    raster_top$core$triangle_setup$act_r$61 act_r$61(
+    raster_top$fragments$core$triangle_setup$act_r$61 act_r$61(
         .d(act_r$61$d),
         .q(act_r$61$q),
         .clock(act_r$61$clock)
     );
-    raster_top$core$triangle_setup$act_r$62 act_r$62(
+    raster_top$fragments$core$triangle_setup$act_r$62 act_r$62(
         .d(act_r$62$d),
         .q(act_r$62$q),
         .clock(act_r$62$clock)
     );
-    raster_top$core$triangle_setup$act_r$63 act_r$63(
+    raster_top$fragments$core$triangle_setup$act_r$63 act_r$63(
         .d(act_r$63$d),
         .q(act_r$63$q),
         .clock(act_r$63$clock)
     );
-    raster_top$core$triangle_setup$add_r$0 add_r$0(
+    raster_top$fragments$core$triangle_setup$add_r$0 add_r$0(
         .d(add_r$0$d),
         .q(add_r$0$q),
         .clock(add_r$0$clock)
     );
-    raster_top$core$triangle_setup$add_r$1 add_r$1(
+    raster_top$fragments$core$triangle_setup$add_r$1 add_r$1(
         .d(add_r$1$d),
         .q(add_r$1$q),
         .clock(add_r$1$clock)
     );
-    raster_top$core$triangle_setup$add_r$2 add_r$2(
+    raster_top$fragments$core$triangle_setup$add_r$2 add_r$2(
         .d(add_r$2$d),
         .q(add_r$2$q),
         .clock(add_r$2$clock)
     );
-    raster_top$core$triangle_setup$add_r$3 add_r$3(
+    raster_top$fragments$core$triangle_setup$add_r$3 add_r$3(
         .d(add_r$3$d),
         .q(add_r$3$q),
         .clock(add_r$3$clock)
     );
-    raster_top$core$triangle_setup$add_r$4 add_r$4(
+    raster_top$fragments$core$triangle_setup$add_r$4 add_r$4(
         .d(add_r$4$d),
         .q(add_r$4$q),
         .clock(add_r$4$clock)
     );
-    raster_top$core$triangle_setup$add_r$5 add_r$5(
+    raster_top$fragments$core$triangle_setup$add_r$5 add_r$5(
         .d(add_r$5$d),
         .q(add_r$5$q),
         .clock(add_r$5$clock)
     );
-    raster_top$core$triangle_setup$add_r$6 add_r$6(
+    raster_top$fragments$core$triangle_setup$add_r$6 add_r$6(
         .d(add_r$6$d),
         .q(add_r$6$q),
         .clock(add_r$6$clock)
     );
-    raster_top$core$triangle_setup$add_r$7 add_r$7(
+    raster_top$fragments$core$triangle_setup$add_r$7 add_r$7(
         .d(add_r$7$d),
         .q(add_r$7$q),
         .clock(add_r$7$clock)
     );
-    raster_top$core$triangle_setup$add_r$8 add_r$8(
+    raster_top$fragments$core$triangle_setup$add_r$8 add_r$8(
         .d(add_r$8$d),
         .q(add_r$8$q),
         .clock(add_r$8$clock)
     );
-    raster_top$core$triangle_setup$add_r$9 add_r$9(
+    raster_top$fragments$core$triangle_setup$add_r$9 add_r$9(
         .d(add_r$9$d),
         .q(add_r$9$q),
         .clock(add_r$9$clock)
     );
-    raster_top$core$triangle_setup$add_r$10 add_r$10(
+    raster_top$fragments$core$triangle_setup$add_r$10 add_r$10(
         .d(add_r$10$d),
         .q(add_r$10$q),
         .clock(add_r$10$clock)
     );
-    raster_top$core$triangle_setup$add_r$11 add_r$11(
+    raster_top$fragments$core$triangle_setup$add_r$11 add_r$11(
         .d(add_r$11$d),
         .q(add_r$11$q),
         .clock(add_r$11$clock)
     );
-    raster_top$core$triangle_setup$add_r$12 add_r$12(
+    raster_top$fragments$core$triangle_setup$add_r$12 add_r$12(
         .d(add_r$12$d),
         .q(add_r$12$q),
         .clock(add_r$12$clock)
     );
-    raster_top$core$triangle_setup$add_r$13 add_r$13(
+    raster_top$fragments$core$triangle_setup$add_r$13 add_r$13(
         .d(add_r$13$d),
         .q(add_r$13$q),
         .clock(add_r$13$clock)
     );
-    raster_top$core$triangle_setup$add_r$14 add_r$14(
+    raster_top$fragments$core$triangle_setup$add_r$14 add_r$14(
         .d(add_r$14$d),
         .q(add_r$14$q),
         .clock(add_r$14$clock)
     );
-    raster_top$core$triangle_setup$add_r$15 add_r$15(
+    raster_top$fragments$core$triangle_setup$add_r$15 add_r$15(
         .d(add_r$15$d),
         .q(add_r$15$q),
         .clock(add_r$15$clock)
     );
-    raster_top$core$triangle_setup$add_r$16 add_r$16(
+    raster_top$fragments$core$triangle_setup$add_r$16 add_r$16(
         .d(add_r$16$d),
         .q(add_r$16$q),
         .clock(add_r$16$clock)
     );
-    raster_top$core$triangle_setup$add_r$17 add_r$17(
+    raster_top$fragments$core$triangle_setup$add_r$17 add_r$17(
         .d(add_r$17$d),
         .q(add_r$17$q),
         .clock(add_r$17$clock)
     );
-    raster_top$core$triangle_setup$add_r$18 add_r$18(
+    raster_top$fragments$core$triangle_setup$add_r$18 add_r$18(
         .d(add_r$18$d),
         .q(add_r$18$q),
         .clock(add_r$18$clock)
     );
-    raster_top$core$triangle_setup$add_r$19 add_r$19(
+    raster_top$fragments$core$triangle_setup$add_r$19 add_r$19(
         .d(add_r$19$d),
         .q(add_r$19$q),
         .clock(add_r$19$clock)
     );
-    raster_top$core$triangle_setup$add_r$20 add_r$20(
+    raster_top$fragments$core$triangle_setup$add_r$20 add_r$20(
         .d(add_r$20$d),
         .q(add_r$20$q),
         .clock(add_r$20$clock)
     );
-    raster_top$core$triangle_setup$add_r$21 add_r$21(
+    raster_top$fragments$core$triangle_setup$add_r$21 add_r$21(
         .d(add_r$21$d),
         .q(add_r$21$q),
         .clock(add_r$21$clock)
     );
-    raster_top$core$triangle_setup$add_r$22 add_r$22(
+    raster_top$fragments$core$triangle_setup$add_r$22 add_r$22(
         .d(add_r$22$d),
         .q(add_r$22$q),
         .clock(add_r$22$clock)
     );
-    raster_top$core$triangle_setup$add_r$23 add_r$23(
+    raster_top$fragments$core$triangle_setup$add_r$23 add_r$23(
         .d(add_r$23$d),
         .q(add_r$23$q),
         .clock(add_r$23$clock)
     );
-    raster_top$core$triangle_setup$add_r$24 add_r$24(
+    raster_top$fragments$core$triangle_setup$add_r$24 add_r$24(
         .d(add_r$24$d),
         .q(add_r$24$q),
         .clock(add_r$24$clock)
     );
-    raster_top$core$triangle_setup$add_r$25 add_r$25(
+    raster_top$fragments$core$triangle_setup$add_r$25 add_r$25(
         .d(add_r$25$d),
         .q(add_r$25$q),
         .clock(add_r$25$clock)
     );
-    raster_top$core$triangle_setup$add_r$26 add_r$26(
+    raster_top$fragments$core$triangle_setup$add_r$26 add_r$26(
         .d(add_r$26$d),
         .q(add_r$26$q),
         .clock(add_r$26$clock)
     );
-    raster_top$core$triangle_setup$add_r$27 add_r$27(
+    raster_top$fragments$core$triangle_setup$add_r$27 add_r$27(
         .d(add_r$27$d),
         .q(add_r$27$q),
         .clock(add_r$27$clock)
     );
-    raster_top$core$triangle_setup$add_r$28 add_r$28(
+    raster_top$fragments$core$triangle_setup$add_r$28 add_r$28(
         .d(add_r$28$d),
         .q(add_r$28$q),
         .clock(add_r$28$clock)
     );
-    raster_top$core$triangle_setup$add_r$29 add_r$29(
+    raster_top$fragments$core$triangle_setup$add_r$29 add_r$29(
         .d(add_r$29$d),
         .q(add_r$29$q),
         .clock(add_r$29$clock)
     );
-    raster_top$core$triangle_setup$add_r$30 add_r$30(
+    raster_top$fragments$core$triangle_setup$add_r$30 add_r$30(
         .d(add_r$30$d),
         .q(add_r$30$q),
         .clock(add_r$30$clock)
     );
-    raster_top$core$triangle_setup$add_r$31 add_r$31(
+    raster_top$fragments$core$triangle_setup$add_r$31 add_r$31(
         .d(add_r$31$d),
         .q(add_r$31$q),
         .clock(add_r$31$clock)
     );
-    raster_top$core$triangle_setup$add_r$32 add_r$32(
+    raster_top$fragments$core$triangle_setup$add_r$32 add_r$32(
         .d(add_r$32$d),
         .q(add_r$32$q),
         .clock(add_r$32$clock)
     );
-    raster_top$core$triangle_setup$add_r$33 add_r$33(
+    raster_top$fragments$core$triangle_setup$add_r$33 add_r$33(
         .d(add_r$33$d),
         .q(add_r$33$q),
         .clock(add_r$33$clock)
     );
-    raster_top$core$triangle_setup$add_r$34 add_r$34(
+    raster_top$fragments$core$triangle_setup$add_r$34 add_r$34(
         .d(add_r$34$d),
         .q(add_r$34$q),
         .clock(add_r$34$clock)
     );
-    raster_top$core$triangle_setup$add_r$35 add_r$35(
+    raster_top$fragments$core$triangle_setup$add_r$35 add_r$35(
         .d(add_r$35$d),
         .q(add_r$35$q),
         .clock(add_r$35$clock)
     );
-    raster_top$core$triangle_setup$add_r$36 add_r$36(
+    raster_top$fragments$core$triangle_setup$add_r$36 add_r$36(
         .d(add_r$36$d),
         .q(add_r$36$q),
         .clock(add_r$36$clock)
     );
-    raster_top$core$triangle_setup$add_r$37 add_r$37(
+    raster_top$fragments$core$triangle_setup$add_r$37 add_r$37(
         .d(add_r$37$d),
         .q(add_r$37$q),
         .clock(add_r$37$clock)
     );
-    raster_top$core$triangle_setup$add_r$38 add_r$38(
+    raster_top$fragments$core$triangle_setup$add_r$38 add_r$38(
         .d(add_r$38$d),
         .q(add_r$38$q),
         .clock(add_r$38$clock)
     );
-    raster_top$core$triangle_setup$add_r$39 add_r$39(
+    raster_top$fragments$core$triangle_setup$add_r$39 add_r$39(
         .d(add_r$39$d),
         .q(add_r$39$q),
         .clock(add_r$39$clock)
     );
-    raster_top$core$triangle_setup$add_r$40 add_r$40(
+    raster_top$fragments$core$triangle_setup$add_r$40 add_r$40(
         .d(add_r$40$d),
         .q(add_r$40$q),
         .clock(add_r$40$clock)
     );
-    raster_top$core$triangle_setup$add_r$41 add_r$41(
+    raster_top$fragments$core$triangle_setup$add_r$41 add_r$41(
         .d(add_r$41$d),
         .q(add_r$41$q),
         .clock(add_r$41$clock)
     );
-    raster_top$core$triangle_setup$add_r$42 add_r$42(
+    raster_top$fragments$core$triangle_setup$add_r$42 add_r$42(
         .d(add_r$42$d),
         .q(add_r$42$q),
         .clock(add_r$42$clock)
     );
-    raster_top$core$triangle_setup$add_r$43 add_r$43(
+    raster_top$fragments$core$triangle_setup$add_r$43 add_r$43(
         .d(add_r$43$d),
         .q(add_r$43$q),
         .clock(add_r$43$clock)
     );
-    raster_top$core$triangle_setup$add_r$44 add_r$44(
+    raster_top$fragments$core$triangle_setup$add_r$44 add_r$44(
         .d(add_r$44$d),
         .q(add_r$44$q),
         .clock(add_r$44$clock)
     );
-    raster_top$core$triangle_setup$add_r$45 add_r$45(
+    raster_top$fragments$core$triangle_setup$add_r$45 add_r$45(
         .d(add_r$45$d),
         .q(add_r$45$q),
         .clock(add_r$45$clock)
     );
-    raster_top$core$triangle_setup$add_r$46 add_r$46(
+    raster_top$fragments$core$triangle_setup$add_r$46 add_r$46(
         .d(add_r$46$d),
         .q(add_r$46$q),
         .clock(add_r$46$clock)
     );
-    raster_top$core$triangle_setup$add_r$47 add_r$47(
+    raster_top$fragments$core$triangle_setup$add_r$47 add_r$47(
         .d(add_r$47$d),
         .q(add_r$47$q),
         .clock(add_r$47$clock)
     );
-    raster_top$core$triangle_setup$add_r$48 add_r$48(
+    raster_top$fragments$core$triangle_setup$add_r$48 add_r$48(
         .d(add_r$48$d),
         .q(add_r$48$q),
         .clock(add_r$48$clock)
     );
-    raster_top$core$triangle_setup$add_r$49 add_r$49(
+    raster_top$fragments$core$triangle_setup$add_r$49 add_r$49(
         .d(add_r$49$d),
         .q(add_r$49$q),
         .clock(add_r$49$clock)
     );
-    raster_top$core$triangle_setup$add_r$50 add_r$50(
+    raster_top$fragments$core$triangle_setup$add_r$50 add_r$50(
         .d(add_r$50$d),
         .q(add_r$50$q),
         .clock(add_r$50$clock)
     );
-    raster_top$core$triangle_setup$add_r$51 add_r$51(
+    raster_top$fragments$core$triangle_setup$add_r$51 add_r$51(
         .d(add_r$51$d),
         .q(add_r$51$q),
         .clock(add_r$51$clock)
     );
-    raster_top$core$triangle_setup$add_r$52 add_r$52(
+    raster_top$fragments$core$triangle_setup$add_r$52 add_r$52(
         .d(add_r$52$d),
         .q(add_r$52$q),
         .clock(add_r$52$clock)
     );
-    raster_top$core$triangle_setup$add_r$53 add_r$53(
+    raster_top$fragments$core$triangle_setup$add_r$53 add_r$53(
         .d(add_r$53$d),
         .q(add_r$53$q),
         .clock(add_r$53$clock)
     );
-    raster_top$core$triangle_setup$add_r$54 add_r$54(
+    raster_top$fragments$core$triangle_setup$add_r$54 add_r$54(
         .d(add_r$54$d),
         .q(add_r$54$q),
         .clock(add_r$54$clock)
     );
-    raster_top$core$triangle_setup$add_r$55 add_r$55(
+    raster_top$fragments$core$triangle_setup$add_r$55 add_r$55(
         .d(add_r$55$d),
         .q(add_r$55$q),
         .clock(add_r$55$clock)
     );
-    raster_top$core$triangle_setup$add_r$56 add_r$56(
+    raster_top$fragments$core$triangle_setup$add_r$56 add_r$56(
         .d(add_r$56$d),
         .q(add_r$56$q),
         .clock(add_r$56$clock)
     );
-    raster_top$core$triangle_setup$add_r$57 add_r$57(
+    raster_top$fragments$core$triangle_setup$add_r$57 add_r$57(
         .d(add_r$57$d),
         .q(add_r$57$q),
         .clock(add_r$57$clock)
     );
-    raster_top$core$triangle_setup$add_r$58 add_r$58(
+    raster_top$fragments$core$triangle_setup$add_r$58 add_r$58(
         .d(add_r$58$d),
         .q(add_r$58$q),
         .clock(add_r$58$clock)
     );
-    raster_top$core$triangle_setup$add_r$59 add_r$59(
+    raster_top$fragments$core$triangle_setup$add_r$59 add_r$59(
         .d(add_r$59$d),
         .q(add_r$59$q),
         .clock(add_r$59$clock)
     );
-    raster_top$core$triangle_setup$add_r$60 add_r$60(
+    raster_top$fragments$core$triangle_setup$add_r$60 add_r$60(
         .d(add_r$60$d),
         .q(add_r$60$q),
         .clock(add_r$60$clock)
     );
-    raster_top$core$triangle_setup$add_r$61 add_r$61(
+    raster_top$fragments$core$triangle_setup$add_r$61 add_r$61(
         .d(add_r$61$d),
         .q(add_r$61$q),
         .clock(add_r$61$clock)
     );
-    raster_top$core$triangle_setup$add_r$62 add_r$62(
+    raster_top$fragments$core$triangle_setup$add_r$62 add_r$62(
         .d(add_r$62$d),
         .q(add_r$62$q),
         .clock(add_r$62$clock)
     );
-    raster_top$core$triangle_setup$add_r$63 add_r$63(
+    raster_top$fragments$core$triangle_setup$add_r$63 add_r$63(
         .d(add_r$63$d),
         .q(add_r$63$q),
         .clock(add_r$63$clock)
     );
-    raster_top$core$triangle_setup$norm_r norm_r(
+    raster_top$fragments$core$triangle_setup$norm_r norm_r(
         .d(norm_r$d),
         .q(norm_r$q),
         .clock(norm_r$clock)
     );
-    raster_top$core$triangle_setup$iss_r$0 iss_r$0(
+    raster_top$fragments$core$triangle_setup$iss_r$0 iss_r$0(
         .d(iss_r$0$d),
         .q(iss_r$0$q),
         .clock(iss_r$0$clock)
     );
-    raster_top$core$triangle_setup$iss_r$1 iss_r$1(
+    raster_top$fragments$core$triangle_setup$iss_r$1 iss_r$1(
         .d(iss_r$1$d),
         .q(iss_r$1$q),
         .clock(iss_r$1$clock)
     );
-    raster_top$core$triangle_setup$iss_r$2 iss_r$2(
+    raster_top$fragments$core$triangle_setup$iss_r$2 iss_r$2(
         .d(iss_r$2$d),
         .q(iss_r$2$q),
         .clock(iss_r$2$clock)
     );
-    raster_top$core$triangle_setup$iss_r$3 iss_r$3(
+    raster_top$fragments$core$triangle_setup$iss_r$3 iss_r$3(
         .d(iss_r$3$d),
         .q(iss_r$3$q),
         .clock(iss_r$3$clock)
     );
-    raster_top$core$triangle_setup$iss_r$4 iss_r$4(
+    raster_top$fragments$core$triangle_setup$iss_r$4 iss_r$4(
         .d(iss_r$4$d),
         .q(iss_r$4$q),
         .clock(iss_r$4$clock)
     );
-    raster_top$core$triangle_setup$iss_r$5 iss_r$5(
+    raster_top$fragments$core$triangle_setup$iss_r$5 iss_r$5(
         .d(iss_r$5$d),
         .q(iss_r$5$q),
         .clock(iss_r$5$clock)
     );
-    raster_top$core$triangle_setup$iss_r$6 iss_r$6(
+    raster_top$fragments$core$triangle_setup$iss_r$6 iss_r$6(
         .d(iss_r$6$d),
         .q(iss_r$6$q),
         .clock(iss_r$6$clock)
     );
-    raster_top$core$triangle_setup$res_r$0 res_r$0(
+    raster_top$fragments$core$triangle_setup$res_r$0 res_r$0(
         .d(res_r$0$d),
         .q(res_r$0$q),
         .clock(res_r$0$clock)
     );
-    raster_top$core$triangle_setup$res_r$1 res_r$1(
+    raster_top$fragments$core$triangle_setup$res_r$1 res_r$1(
         .d(res_r$1$d),
         .q(res_r$1$q),
         .clock(res_r$1$clock)
     );
-    raster_top$core$triangle_setup$res_r$2 res_r$2(
+    raster_top$fragments$core$triangle_setup$res_r$2 res_r$2(
         .d(res_r$2$d),
         .q(res_r$2$q),
         .clock(res_r$2$clock)
     );
-    raster_top$core$triangle_setup$res_r$3 res_r$3(
+    raster_top$fragments$core$triangle_setup$res_r$3 res_r$3(
         .d(res_r$3$d),
         .q(res_r$3$q),
         .clock(res_r$3$clock)
     );
-    raster_top$core$triangle_setup$res_r$4 res_r$4(
+    raster_top$fragments$core$triangle_setup$res_r$4 res_r$4(
         .d(res_r$4$d),
         .q(res_r$4$q),
         .clock(res_r$4$clock)
     );
-    raster_top$core$triangle_setup$res_r$5 res_r$5(
+    raster_top$fragments$core$triangle_setup$res_r$5 res_r$5(
         .d(res_r$5$d),
         .q(res_r$5$q),
         .clock(res_r$5$clock)
     );
-    raster_top$core$triangle_setup$res_r$6 res_r$6(
+    raster_top$fragments$core$triangle_setup$res_r$6 res_r$6(
         .d(res_r$6$d),
         .q(res_r$6$q),
         .clock(res_r$6$clock)
     );
-    raster_top$core$triangle_setup$handover_r handover_r(
+    raster_top$fragments$core$triangle_setup$handover_r handover_r(
         .d(handover_r$d),
         .q(handover_r$q),
         .clock(handover_r$clock)
     );
-    raster_top$core$triangle_setup$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$busy_r busy_r(
+    raster_top$fragments$core$triangle_setup$busy_r busy_r(
         .d(busy_r$d),
         .q(busy_r$q),
         .clock(busy_r$clock)
     );
-    raster_top$core$triangle_setup$phase phase(
+    raster_top$fragments$core$triangle_setup$phase phase(
         .d(phase$d),
         .q(phase$q),
         .clock(phase$clock)
     );
-    raster_top$core$triangle_setup$off_grid_r off_grid_r(
+    raster_top$fragments$core$triangle_setup$off_grid_r off_grid_r(
         .d(off_grid_r$d),
         .q(off_grid_r$q),
         .clock(off_grid_r$clock)
     );
-    raster_top$core$triangle_setup$vx$0 vx$0(
+    raster_top$fragments$core$triangle_setup$vx$0 vx$0(
         .d(vx$0$d),
         .q(vx$0$q),
         .clock(vx$0$clock)
     );
-    raster_top$core$triangle_setup$vx$1 vx$1(
+    raster_top$fragments$core$triangle_setup$vx$1 vx$1(
         .d(vx$1$d),
         .q(vx$1$q),
         .clock(vx$1$clock)
     );
-    raster_top$core$triangle_setup$vx$2 vx$2(
+    raster_top$fragments$core$triangle_setup$vx$2 vx$2(
         .d(vx$2$d),
         .q(vx$2$q),
         .clock(vx$2$clock)
     );
-    raster_top$core$triangle_setup$vx$3 vx$3(
+    raster_top$fragments$core$triangle_setup$vx$3 vx$3(
         .d(vx$3$d),
         .q(vx$3$q),
         .clock(vx$3$clock)
     );
-    raster_top$core$triangle_setup$vx$4 vx$4(
+    raster_top$fragments$core$triangle_setup$vx$4 vx$4(
         .d(vx$4$d),
         .q(vx$4$q),
         .clock(vx$4$clock)
     );
-    raster_top$core$triangle_setup$vx$5 vx$5(
+    raster_top$fragments$core$triangle_setup$vx$5 vx$5(
         .d(vx$5$d),
         .q(vx$5$q),
         .clock(vx$5$clock)
     );
-    raster_top$core$triangle_setup$vx$6 vx$6(
+    raster_top$fragments$core$triangle_setup$vx$6 vx$6(
         .d(vx$6$d),
         .q(vx$6$q),
         .clock(vx$6$clock)
     );
-    raster_top$core$triangle_setup$vx$7 vx$7(
+    raster_top$fragments$core$triangle_setup$vx$7 vx$7(
         .d(vx$7$d),
         .q(vx$7$q),
         .clock(vx$7$clock)
     );
-    raster_top$core$triangle_setup$vx$8 vx$8(
+    raster_top$fragments$core$triangle_setup$vx$8 vx$8(
         .d(vx$8$d),
         .q(vx$8$q),
         .clock(vx$8$clock)
     );
-    raster_top$core$triangle_setup$vx$9 vx$9(
+    raster_top$fragments$core$triangle_setup$vx$9 vx$9(
         .d(vx$9$d),
         .q(vx$9$q),
         .clock(vx$9$clock)
     );
-    raster_top$core$triangle_setup$vx$10 vx$10(
+    raster_top$fragments$core$triangle_setup$vx$10 vx$10(
         .d(vx$10$d),
         .q(vx$10$q),
         .clock(vx$10$clock)
     );
-    raster_top$core$triangle_setup$vx$11 vx$11(
+    raster_top$fragments$core$triangle_setup$vx$11 vx$11(
         .d(vx$11$d),
         .q(vx$11$q),
         .clock(vx$11$clock)
     );
-    raster_top$core$triangle_setup$vx$12 vx$12(
+    raster_top$fragments$core$triangle_setup$vx$12 vx$12(
         .d(vx$12$d),
         .q(vx$12$q),
         .clock(vx$12$clock)
     );
-    raster_top$core$triangle_setup$vx$13 vx$13(
+    raster_top$fragments$core$triangle_setup$vx$13 vx$13(
         .d(vx$13$d),
         .q(vx$13$q),
         .clock(vx$13$clock)
     );
-    raster_top$core$triangle_setup$vx$14 vx$14(
+    raster_top$fragments$core$triangle_setup$vx$14 vx$14(
         .d(vx$14$d),
         .q(vx$14$q),
         .clock(vx$14$clock)
     );
-    raster_top$core$triangle_setup$vy$0 vy$0(
+    raster_top$fragments$core$triangle_setup$vy$0 vy$0(
         .d(vy$0$d),
         .q(vy$0$q),
         .clock(vy$0$clock)
     );
-    raster_top$core$triangle_setup$vy$1 vy$1(
+    raster_top$fragments$core$triangle_setup$vy$1 vy$1(
         .d(vy$1$d),
         .q(vy$1$q),
         .clock(vy$1$clock)
     );
-    raster_top$core$triangle_setup$vy$2 vy$2(
+    raster_top$fragments$core$triangle_setup$vy$2 vy$2(
         .d(vy$2$d),
         .q(vy$2$q),
         .clock(vy$2$clock)
     );
-    raster_top$core$triangle_setup$vy$3 vy$3(
+    raster_top$fragments$core$triangle_setup$vy$3 vy$3(
         .d(vy$3$d),
         .q(vy$3$q),
         .clock(vy$3$clock)
     );
-    raster_top$core$triangle_setup$vy$4 vy$4(
+    raster_top$fragments$core$triangle_setup$vy$4 vy$4(
         .d(vy$4$d),
         .q(vy$4$q),
         .clock(vy$4$clock)
     );
-    raster_top$core$triangle_setup$vy$5 vy$5(
+    raster_top$fragments$core$triangle_setup$vy$5 vy$5(
         .d(vy$5$d),
         .q(vy$5$q),
         .clock(vy$5$clock)
     );
-    raster_top$core$triangle_setup$vy$6 vy$6(
+    raster_top$fragments$core$triangle_setup$vy$6 vy$6(
         .d(vy$6$d),
         .q(vy$6$q),
         .clock(vy$6$clock)
     );
-    raster_top$core$triangle_setup$vy$7 vy$7(
+    raster_top$fragments$core$triangle_setup$vy$7 vy$7(
         .d(vy$7$d),
         .q(vy$7$q),
         .clock(vy$7$clock)
     );
-    raster_top$core$triangle_setup$vy$8 vy$8(
+    raster_top$fragments$core$triangle_setup$vy$8 vy$8(
         .d(vy$8$d),
         .q(vy$8$q),
         .clock(vy$8$clock)
     );
-    raster_top$core$triangle_setup$vy$9 vy$9(
+    raster_top$fragments$core$triangle_setup$vy$9 vy$9(
         .d(vy$9$d),
         .q(vy$9$q),
         .clock(vy$9$clock)
     );
-    raster_top$core$triangle_setup$vy$10 vy$10(
+    raster_top$fragments$core$triangle_setup$vy$10 vy$10(
         .d(vy$10$d),
         .q(vy$10$q),
         .clock(vy$10$clock)
     );
-    raster_top$core$triangle_setup$vy$11 vy$11(
+    raster_top$fragments$core$triangle_setup$vy$11 vy$11(
         .d(vy$11$d),
         .q(vy$11$q),
         .clock(vy$11$clock)
     );
-    raster_top$core$triangle_setup$vy$12 vy$12(
+    raster_top$fragments$core$triangle_setup$vy$12 vy$12(
         .d(vy$12$d),
         .q(vy$12$q),
         .clock(vy$12$clock)
     );
-    raster_top$core$triangle_setup$vy$13 vy$13(
+    raster_top$fragments$core$triangle_setup$vy$13 vy$13(
         .d(vy$13$d),
         .q(vy$13$q),
         .clock(vy$13$clock)
     );
-    raster_top$core$triangle_setup$vy$14 vy$14(
+    raster_top$fragments$core$triangle_setup$vy$14 vy$14(
         .d(vy$14$d),
         .q(vy$14$q),
         .clock(vy$14$clock)
     );
-    raster_top$core$triangle_setup$vz$0 vz$0(
+    raster_top$fragments$core$triangle_setup$vz$0 vz$0(
         .d(vz$0$d),
         .q(vz$0$q),
         .clock(vz$0$clock)
     );
-    raster_top$core$triangle_setup$vz$1 vz$1(
+    raster_top$fragments$core$triangle_setup$vz$1 vz$1(
         .d(vz$1$d),
         .q(vz$1$q),
         .clock(vz$1$clock)
     );
-    raster_top$core$triangle_setup$vz$2 vz$2(
+    raster_top$fragments$core$triangle_setup$vz$2 vz$2(
         .d(vz$2$d),
         .q(vz$2$q),
         .clock(vz$2$clock)
     );
-    raster_top$core$triangle_setup$vz$3 vz$3(
+    raster_top$fragments$core$triangle_setup$vz$3 vz$3(
         .d(vz$3$d),
         .q(vz$3$q),
         .clock(vz$3$clock)
     );
-    raster_top$core$triangle_setup$vz$4 vz$4(
+    raster_top$fragments$core$triangle_setup$vz$4 vz$4(
         .d(vz$4$d),
         .q(vz$4$q),
         .clock(vz$4$clock)
     );
-    raster_top$core$triangle_setup$vz$5 vz$5(
+    raster_top$fragments$core$triangle_setup$vz$5 vz$5(
         .d(vz$5$d),
         .q(vz$5$q),
         .clock(vz$5$clock)
     );
-    raster_top$core$triangle_setup$vz$6 vz$6(
+    raster_top$fragments$core$triangle_setup$vz$6 vz$6(
         .d(vz$6$d),
         .q(vz$6$q),
         .clock(vz$6$clock)
     );
-    raster_top$core$triangle_setup$vz$7 vz$7(
+    raster_top$fragments$core$triangle_setup$vz$7 vz$7(
         .d(vz$7$d),
         .q(vz$7$q),
         .clock(vz$7$clock)
     );
-    raster_top$core$triangle_setup$vz$8 vz$8(
+    raster_top$fragments$core$triangle_setup$vz$8 vz$8(
         .d(vz$8$d),
         .q(vz$8$q),
         .clock(vz$8$clock)
     );
-    raster_top$core$triangle_setup$vz$9 vz$9(
+    raster_top$fragments$core$triangle_setup$vz$9 vz$9(
         .d(vz$9$d),
         .q(vz$9$q),
         .clock(vz$9$clock)
     );
-    raster_top$core$triangle_setup$vz$10 vz$10(
+    raster_top$fragments$core$triangle_setup$vz$10 vz$10(
         .d(vz$10$d),
         .q(vz$10$q),
         .clock(vz$10$clock)
     );
-    raster_top$core$triangle_setup$vz$11 vz$11(
+    raster_top$fragments$core$triangle_setup$vz$11 vz$11(
         .d(vz$11$d),
         .q(vz$11$q),
         .clock(vz$11$clock)
     );
-    raster_top$core$triangle_setup$vz$12 vz$12(
+    raster_top$fragments$core$triangle_setup$vz$12 vz$12(
         .d(vz$12$d),
         .q(vz$12$q),
         .clock(vz$12$clock)
     );
-    raster_top$core$triangle_setup$vz$13 vz$13(
+    raster_top$fragments$core$triangle_setup$vz$13 vz$13(
         .d(vz$13$d),
         .q(vz$13$q),
         .clock(vz$13$clock)
     );
-    raster_top$core$triangle_setup$vz$14 vz$14(
+    raster_top$fragments$core$triangle_setup$vz$14 vz$14(
         .d(vz$14$d),
         .q(vz$14$q),
         .clock(vz$14$clock)
     );
-    raster_top$core$triangle_setup$vc$0 vc$0(
+    raster_top$fragments$core$triangle_setup$vc$0 vc$0(
         .d(vc$0$d),
         .q(vc$0$q),
         .clock(vc$0$clock)
     );
-    raster_top$core$triangle_setup$vc$1 vc$1(
+    raster_top$fragments$core$triangle_setup$vc$1 vc$1(
         .d(vc$1$d),
         .q(vc$1$q),
         .clock(vc$1$clock)
     );
-    raster_top$core$triangle_setup$vc$2 vc$2(
+    raster_top$fragments$core$triangle_setup$vc$2 vc$2(
         .d(vc$2$d),
         .q(vc$2$q),
         .clock(vc$2$clock)
     );
-    raster_top$core$triangle_setup$vc$3 vc$3(
+    raster_top$fragments$core$triangle_setup$vc$3 vc$3(
         .d(vc$3$d),
         .q(vc$3$q),
         .clock(vc$3$clock)
     );
-    raster_top$core$triangle_setup$vc$4 vc$4(
+    raster_top$fragments$core$triangle_setup$vc$4 vc$4(
         .d(vc$4$d),
         .q(vc$4$q),
         .clock(vc$4$clock)
     );
-    raster_top$core$triangle_setup$vc$5 vc$5(
+    raster_top$fragments$core$triangle_setup$vc$5 vc$5(
         .d(vc$5$d),
         .q(vc$5$q),
         .clock(vc$5$clock)
     );
-    raster_top$core$triangle_setup$vc$6 vc$6(
+    raster_top$fragments$core$triangle_setup$vc$6 vc$6(
         .d(vc$6$d),
         .q(vc$6$q),
         .clock(vc$6$clock)
     );
-    raster_top$core$triangle_setup$vc$7 vc$7(
+    raster_top$fragments$core$triangle_setup$vc$7 vc$7(
         .d(vc$7$d),
         .q(vc$7$q),
         .clock(vc$7$clock)
     );
-    raster_top$core$triangle_setup$vc$8 vc$8(
+    raster_top$fragments$core$triangle_setup$vc$8 vc$8(
         .d(vc$8$d),
         .q(vc$8$q),
         .clock(vc$8$clock)
     );
-    raster_top$core$triangle_setup$vc$9 vc$9(
+    raster_top$fragments$core$triangle_setup$vc$9 vc$9(
         .d(vc$9$d),
         .q(vc$9$q),
         .clock(vc$9$clock)
     );
-    raster_top$core$triangle_setup$vc$10 vc$10(
+    raster_top$fragments$core$triangle_setup$vc$10 vc$10(
         .d(vc$10$d),
         .q(vc$10$q),
         .clock(vc$10$clock)
     );
-    raster_top$core$triangle_setup$vc$11 vc$11(
+    raster_top$fragments$core$triangle_setup$vc$11 vc$11(
         .d(vc$11$d),
         .q(vc$11$q),
         .clock(vc$11$clock)
     );
-    raster_top$core$triangle_setup$vc$12 vc$12(
+    raster_top$fragments$core$triangle_setup$vc$12 vc$12(
         .d(vc$12$d),
         .q(vc$12$q),
         .clock(vc$12$clock)
     );
-    raster_top$core$triangle_setup$vc$13 vc$13(
+    raster_top$fragments$core$triangle_setup$vc$13 vc$13(
         .d(vc$13$d),
         .q(vc$13$q),
         .clock(vc$13$clock)
     );
-    raster_top$core$triangle_setup$vc$14 vc$14(
+    raster_top$fragments$core$triangle_setup$vc$14 vc$14(
         .d(vc$14$d),
         .q(vc$14$q),
         .clock(vc$14$clock)
     );
-    raster_top$core$triangle_setup$vc$15 vc$15(
+    raster_top$fragments$core$triangle_setup$vc$15 vc$15(
         .d(vc$15$d),
         .q(vc$15$q),
         .clock(vc$15$clock)
     );
-    raster_top$core$triangle_setup$vc$16 vc$16(
+    raster_top$fragments$core$triangle_setup$vc$16 vc$16(
         .d(vc$16$d),
         .q(vc$16$q),
         .clock(vc$16$clock)
     );
-    raster_top$core$triangle_setup$vc$17 vc$17(
+    raster_top$fragments$core$triangle_setup$vc$17 vc$17(
         .d(vc$17$d),
         .q(vc$17$q),
         .clock(vc$17$clock)
     );
-    raster_top$core$triangle_setup$vc$18 vc$18(
+    raster_top$fragments$core$triangle_setup$vc$18 vc$18(
         .d(vc$18$d),
         .q(vc$18$q),
         .clock(vc$18$clock)
     );
-    raster_top$core$triangle_setup$vc$19 vc$19(
+    raster_top$fragments$core$triangle_setup$vc$19 vc$19(
         .d(vc$19$d),
         .q(vc$19$q),
         .clock(vc$19$clock)
     );
-    raster_top$core$triangle_setup$vc$20 vc$20(
+    raster_top$fragments$core$triangle_setup$vc$20 vc$20(
         .d(vc$20$d),
         .q(vc$20$q),
         .clock(vc$20$clock)
     );
-    raster_top$core$triangle_setup$vc$21 vc$21(
+    raster_top$fragments$core$triangle_setup$vc$21 vc$21(
         .d(vc$21$d),
         .q(vc$21$q),
         .clock(vc$21$clock)
     );
-    raster_top$core$triangle_setup$vc$22 vc$22(
+    raster_top$fragments$core$triangle_setup$vc$22 vc$22(
         .d(vc$22$d),
         .q(vc$22$q),
         .clock(vc$22$clock)
     );
-    raster_top$core$triangle_setup$vc$23 vc$23(
+    raster_top$fragments$core$triangle_setup$vc$23 vc$23(
         .d(vc$23$d),
         .q(vc$23$q),
         .clock(vc$23$clock)
     );
-    raster_top$core$triangle_setup$vc$24 vc$24(
+    raster_top$fragments$core$triangle_setup$vc$24 vc$24(
         .d(vc$24$d),
         .q(vc$24$q),
         .clock(vc$24$clock)
     );
-    raster_top$core$triangle_setup$vc$25 vc$25(
+    raster_top$fragments$core$triangle_setup$vc$25 vc$25(
         .d(vc$25$d),
         .q(vc$25$q),
         .clock(vc$25$clock)
     );
-    raster_top$core$triangle_setup$vc$26 vc$26(
+    raster_top$fragments$core$triangle_setup$vc$26 vc$26(
         .d(vc$26$d),
         .q(vc$26$q),
         .clock(vc$26$clock)
     );
-    raster_top$core$triangle_setup$vc$27 vc$27(
+    raster_top$fragments$core$triangle_setup$vc$27 vc$27(
         .d(vc$27$d),
         .q(vc$27$q),
         .clock(vc$27$clock)
     );
-    raster_top$core$triangle_setup$vc$28 vc$28(
+    raster_top$fragments$core$triangle_setup$vc$28 vc$28(
         .d(vc$28$d),
         .q(vc$28$q),
         .clock(vc$28$clock)
     );
-    raster_top$core$triangle_setup$vc$29 vc$29(
+    raster_top$fragments$core$triangle_setup$vc$29 vc$29(
         .d(vc$29$d),
         .q(vc$29$q),
         .clock(vc$29$clock)
     );
-    raster_top$core$triangle_setup$vc$30 vc$30(
+    raster_top$fragments$core$triangle_setup$vc$30 vc$30(
         .d(vc$30$d),
         .q(vc$30$q),
         .clock(vc$30$clock)
     );
-    raster_top$core$triangle_setup$vc$31 vc$31(
+    raster_top$fragments$core$triangle_setup$vc$31 vc$31(
         .d(vc$31$d),
         .q(vc$31$q),
         .clock(vc$31$clock)
     );
-    raster_top$core$triangle_setup$vc$32 vc$32(
+    raster_top$fragments$core$triangle_setup$vc$32 vc$32(
         .d(vc$32$d),
         .q(vc$32$q),
         .clock(vc$32$clock)
     );
-    raster_top$core$triangle_setup$vc$33 vc$33(
+    raster_top$fragments$core$triangle_setup$vc$33 vc$33(
         .d(vc$33$d),
         .q(vc$33$q),
         .clock(vc$33$clock)
     );
-    raster_top$core$triangle_setup$vc$34 vc$34(
+    raster_top$fragments$core$triangle_setup$vc$34 vc$34(
         .d(vc$34$d),
         .q(vc$34$q),
         .clock(vc$34$clock)
     );
-    raster_top$core$triangle_setup$vc$35 vc$35(
+    raster_top$fragments$core$triangle_setup$vc$35 vc$35(
         .d(vc$35$d),
         .q(vc$35$q),
         .clock(vc$35$clock)
     );
-    raster_top$core$triangle_setup$vc$36 vc$36(
+    raster_top$fragments$core$triangle_setup$vc$36 vc$36(
         .d(vc$36$d),
         .q(vc$36$q),
         .clock(vc$36$clock)
     );
-    raster_top$core$triangle_setup$vc$37 vc$37(
+    raster_top$fragments$core$triangle_setup$vc$37 vc$37(
         .d(vc$37$d),
         .q(vc$37$q),
         .clock(vc$37$clock)
     );
-    raster_top$core$triangle_setup$vc$38 vc$38(
+    raster_top$fragments$core$triangle_setup$vc$38 vc$38(
         .d(vc$38$d),
         .q(vc$38$q),
         .clock(vc$38$clock)
     );
-    raster_top$core$triangle_setup$vc$39 vc$39(
+    raster_top$fragments$core$triangle_setup$vc$39 vc$39(
         .d(vc$39$d),
         .q(vc$39$q),
         .clock(vc$39$clock)
     );
-    raster_top$core$triangle_setup$vc$40 vc$40(
+    raster_top$fragments$core$triangle_setup$vc$40 vc$40(
         .d(vc$40$d),
         .q(vc$40$q),
         .clock(vc$40$clock)
     );
-    raster_top$core$triangle_setup$vc$41 vc$41(
+    raster_top$fragments$core$triangle_setup$vc$41 vc$41(
         .d(vc$41$d),
         .q(vc$41$q),
         .clock(vc$41$clock)
     );
-    raster_top$core$triangle_setup$vc$42 vc$42(
+    raster_top$fragments$core$triangle_setup$vc$42 vc$42(
         .d(vc$42$d),
         .q(vc$42$q),
         .clock(vc$42$clock)
     );
-    raster_top$core$triangle_setup$vc$43 vc$43(
+    raster_top$fragments$core$triangle_setup$vc$43 vc$43(
         .d(vc$43$d),
         .q(vc$43$q),
         .clock(vc$43$clock)
     );
-    raster_top$core$triangle_setup$vc$44 vc$44(
+    raster_top$fragments$core$triangle_setup$vc$44 vc$44(
         .d(vc$44$d),
         .q(vc$44$q),
         .clock(vc$44$clock)
     );
-    raster_top$core$triangle_setup$crosses$0 crosses$0(
+    raster_top$fragments$core$triangle_setup$crosses$0 crosses$0(
         .d(crosses$0$d),
         .q(crosses$0$q),
         .clock(crosses$0$clock)
     );
-    raster_top$core$triangle_setup$crosses$1 crosses$1(
+    raster_top$fragments$core$triangle_setup$crosses$1 crosses$1(
         .d(crosses$1$d),
         .q(crosses$1$q),
         .clock(crosses$1$clock)
     );
-    raster_top$core$triangle_setup$crosses$2 crosses$2(
+    raster_top$fragments$core$triangle_setup$crosses$2 crosses$2(
         .d(crosses$2$d),
         .q(crosses$2$q),
         .clock(crosses$2$clock)
     );
-    raster_top$core$triangle_setup$crosses$3 crosses$3(
+    raster_top$fragments$core$triangle_setup$crosses$3 crosses$3(
         .d(crosses$3$d),
         .q(crosses$3$q),
         .clock(crosses$3$clock)
     );
-    raster_top$core$triangle_setup$crosses$4 crosses$4(
+    raster_top$fragments$core$triangle_setup$crosses$4 crosses$4(
         .d(crosses$4$d),
         .q(crosses$4$q),
         .clock(crosses$4$clock)
     );
-    raster_top$core$triangle_setup$sign$0 sign$0(
+    raster_top$fragments$core$triangle_setup$sign$0 sign$0(
         .d(sign$0$d),
         .q(sign$0$q),
         .clock(sign$0$clock)
     );
-    raster_top$core$triangle_setup$sign$1 sign$1(
+    raster_top$fragments$core$triangle_setup$sign$1 sign$1(
         .d(sign$1$d),
         .q(sign$1$q),
         .clock(sign$1$clock)
     );
-    raster_top$core$triangle_setup$sign$2 sign$2(
+    raster_top$fragments$core$triangle_setup$sign$2 sign$2(
         .d(sign$2$d),
         .q(sign$2$q),
         .clock(sign$2$clock)
     );
-    raster_top$core$triangle_setup$sign$3 sign$3(
+    raster_top$fragments$core$triangle_setup$sign$3 sign$3(
         .d(sign$3$d),
         .q(sign$3$q),
         .clock(sign$3$clock)
     );
-    raster_top$core$triangle_setup$sign$4 sign$4(
+    raster_top$fragments$core$triangle_setup$sign$4 sign$4(
         .d(sign$4$d),
         .q(sign$4$q),
         .clock(sign$4$clock)
     );
-    raster_top$core$triangle_setup$exp$0 exp$0(
+    raster_top$fragments$core$triangle_setup$exp$0 exp$0(
         .d(exp$0$d),
         .q(exp$0$q),
         .clock(exp$0$clock)
     );
-    raster_top$core$triangle_setup$exp$1 exp$1(
+    raster_top$fragments$core$triangle_setup$exp$1 exp$1(
         .d(exp$1$d),
         .q(exp$1$q),
         .clock(exp$1$clock)
     );
-    raster_top$core$triangle_setup$exp$2 exp$2(
+    raster_top$fragments$core$triangle_setup$exp$2 exp$2(
         .d(exp$2$d),
         .q(exp$2$q),
         .clock(exp$2$clock)
     );
-    raster_top$core$triangle_setup$exp$3 exp$3(
+    raster_top$fragments$core$triangle_setup$exp$3 exp$3(
         .d(exp$3$d),
         .q(exp$3$q),
         .clock(exp$3$clock)
     );
-    raster_top$core$triangle_setup$exp$4 exp$4(
+    raster_top$fragments$core$triangle_setup$exp$4 exp$4(
         .d(exp$4$d),
         .q(exp$4$q),
         .clock(exp$4$clock)
     );
-    raster_top$core$triangle_setup$mant$0 mant$0(
+    raster_top$fragments$core$triangle_setup$mant$0 mant$0(
         .d(mant$0$d),
         .q(mant$0$q),
         .clock(mant$0$clock)
     );
-    raster_top$core$triangle_setup$mant$1 mant$1(
+    raster_top$fragments$core$triangle_setup$mant$1 mant$1(
         .d(mant$1$d),
         .q(mant$1$q),
         .clock(mant$1$clock)
     );
-    raster_top$core$triangle_setup$mant$2 mant$2(
+    raster_top$fragments$core$triangle_setup$mant$2 mant$2(
         .d(mant$2$d),
         .q(mant$2$q),
         .clock(mant$2$clock)
     );
-    raster_top$core$triangle_setup$mant$3 mant$3(
+    raster_top$fragments$core$triangle_setup$mant$3 mant$3(
         .d(mant$3$d),
         .q(mant$3$q),
         .clock(mant$3$clock)
     );
-    raster_top$core$triangle_setup$mant$4 mant$4(
+    raster_top$fragments$core$triangle_setup$mant$4 mant$4(
         .d(mant$4$d),
         .q(mant$4$q),
         .clock(mant$4$clock)
     );
-    raster_top$core$triangle_setup$x$0 x$0(
+    raster_top$fragments$core$triangle_setup$x$0 x$0(
         .d(x$0$d),
         .q(x$0$q),
         .clock(x$0$clock)
     );
-    raster_top$core$triangle_setup$x$1 x$1(
+    raster_top$fragments$core$triangle_setup$x$1 x$1(
         .d(x$1$d),
         .q(x$1$q),
         .clock(x$1$clock)
     );
-    raster_top$core$triangle_setup$x$2 x$2(
+    raster_top$fragments$core$triangle_setup$x$2 x$2(
         .d(x$2$d),
         .q(x$2$q),
         .clock(x$2$clock)
     );
-    raster_top$core$triangle_setup$x$3 x$3(
+    raster_top$fragments$core$triangle_setup$x$3 x$3(
         .d(x$3$d),
         .q(x$3$q),
         .clock(x$3$clock)
     );
-    raster_top$core$triangle_setup$x$4 x$4(
+    raster_top$fragments$core$triangle_setup$x$4 x$4(
         .d(x$4$d),
         .q(x$4$q),
         .clock(x$4$clock)
     );
-    raster_top$core$triangle_setup$x$5 x$5(
+    raster_top$fragments$core$triangle_setup$x$5 x$5(
         .d(x$5$d),
         .q(x$5$q),
         .clock(x$5$clock)
     );
-    raster_top$core$triangle_setup$x$6 x$6(
+    raster_top$fragments$core$triangle_setup$x$6 x$6(
         .d(x$6$d),
         .q(x$6$q),
         .clock(x$6$clock)
     );
-    raster_top$core$triangle_setup$x$7 x$7(
+    raster_top$fragments$core$triangle_setup$x$7 x$7(
         .d(x$7$d),
         .q(x$7$q),
         .clock(x$7$clock)
     );
-    raster_top$core$triangle_setup$x$8 x$8(
+    raster_top$fragments$core$triangle_setup$x$8 x$8(
         .d(x$8$d),
         .q(x$8$q),
         .clock(x$8$clock)
     );
-    raster_top$core$triangle_setup$x$9 x$9(
+    raster_top$fragments$core$triangle_setup$x$9 x$9(
         .d(x$9$d),
         .q(x$9$q),
         .clock(x$9$clock)
     );
-    raster_top$core$triangle_setup$x$10 x$10(
+    raster_top$fragments$core$triangle_setup$x$10 x$10(
         .d(x$10$d),
         .q(x$10$q),
         .clock(x$10$clock)
     );
-    raster_top$core$triangle_setup$x$11 x$11(
+    raster_top$fragments$core$triangle_setup$x$11 x$11(
         .d(x$11$d),
         .q(x$11$q),
         .clock(x$11$clock)
     );
-    raster_top$core$triangle_setup$x$12 x$12(
+    raster_top$fragments$core$triangle_setup$x$12 x$12(
         .d(x$12$d),
         .q(x$12$q),
         .clock(x$12$clock)
     );
-    raster_top$core$triangle_setup$x$13 x$13(
+    raster_top$fragments$core$triangle_setup$x$13 x$13(
         .d(x$13$d),
         .q(x$13$q),
         .clock(x$13$clock)
     );
-    raster_top$core$triangle_setup$x$14 x$14(
+    raster_top$fragments$core$triangle_setup$x$14 x$14(
         .d(x$14$d),
         .q(x$14$q),
         .clock(x$14$clock)
     );
-    raster_top$core$triangle_setup$r$0 r$0(
+    raster_top$fragments$core$triangle_setup$r$0 r$0(
         .d(r$0$d),
         .q(r$0$q),
         .clock(r$0$clock)
     );
-    raster_top$core$triangle_setup$r$1 r$1(
+    raster_top$fragments$core$triangle_setup$r$1 r$1(
         .d(r$1$d),
         .q(r$1$q),
         .clock(r$1$clock)
     );
-    raster_top$core$triangle_setup$r$2 r$2(
+    raster_top$fragments$core$triangle_setup$r$2 r$2(
         .d(r$2$d),
         .q(r$2$q),
         .clock(r$2$clock)
     );
-    raster_top$core$triangle_setup$r$3 r$3(
+    raster_top$fragments$core$triangle_setup$r$3 r$3(
         .d(r$3$d),
         .q(r$3$q),
         .clock(r$3$clock)
     );
-    raster_top$core$triangle_setup$r$4 r$4(
+    raster_top$fragments$core$triangle_setup$r$4 r$4(
         .d(r$4$d),
         .q(r$4$q),
         .clock(r$4$clock)
     );
-    raster_top$core$triangle_setup$r$5 r$5(
+    raster_top$fragments$core$triangle_setup$r$5 r$5(
         .d(r$5$d),
         .q(r$5$q),
         .clock(r$5$clock)
     );
-    raster_top$core$triangle_setup$r$6 r$6(
+    raster_top$fragments$core$triangle_setup$r$6 r$6(
         .d(r$6$d),
         .q(r$6$q),
         .clock(r$6$clock)
     );
-    raster_top$core$triangle_setup$r$7 r$7(
+    raster_top$fragments$core$triangle_setup$r$7 r$7(
         .d(r$7$d),
         .q(r$7$q),
         .clock(r$7$clock)
     );
-    raster_top$core$triangle_setup$r$8 r$8(
+    raster_top$fragments$core$triangle_setup$r$8 r$8(
         .d(r$8$d),
         .q(r$8$q),
         .clock(r$8$clock)
     );
-    raster_top$core$triangle_setup$r$9 r$9(
+    raster_top$fragments$core$triangle_setup$r$9 r$9(
         .d(r$9$d),
         .q(r$9$q),
         .clock(r$9$clock)
     );
-    raster_top$core$triangle_setup$r$10 r$10(
+    raster_top$fragments$core$triangle_setup$r$10 r$10(
         .d(r$10$d),
         .q(r$10$q),
         .clock(r$10$clock)
     );
-    raster_top$core$triangle_setup$r$11 r$11(
+    raster_top$fragments$core$triangle_setup$r$11 r$11(
         .d(r$11$d),
         .q(r$11$q),
         .clock(r$11$clock)
     );
-    raster_top$core$triangle_setup$r$12 r$12(
+    raster_top$fragments$core$triangle_setup$r$12 r$12(
         .d(r$12$d),
         .q(r$12$q),
         .clock(r$12$clock)
     );
-    raster_top$core$triangle_setup$r$13 r$13(
+    raster_top$fragments$core$triangle_setup$r$13 r$13(
         .d(r$13$d),
         .q(r$13$q),
         .clock(r$13$clock)
     );
-    raster_top$core$triangle_setup$r$14 r$14(
+    raster_top$fragments$core$triangle_setup$r$14 r$14(
         .d(r$14$d),
         .q(r$14$q),
         .clock(r$14$clock)
     );
-    raster_top$core$triangle_setup$q$0 q$0(
+    raster_top$fragments$core$triangle_setup$q$0 q$0(
         .d(q$0$d),
         .q(q$0$q),
         .clock(q$0$clock)
     );
-    raster_top$core$triangle_setup$q$1 q$1(
+    raster_top$fragments$core$triangle_setup$q$1 q$1(
         .d(q$1$d),
         .q(q$1$q),
         .clock(q$1$clock)
     );
-    raster_top$core$triangle_setup$q$2 q$2(
+    raster_top$fragments$core$triangle_setup$q$2 q$2(
         .d(q$2$d),
         .q(q$2$q),
         .clock(q$2$clock)
     );
-    raster_top$core$triangle_setup$q$3 q$3(
+    raster_top$fragments$core$triangle_setup$q$3 q$3(
         .d(q$3$d),
         .q(q$3$q),
         .clock(q$3$clock)
     );
-    raster_top$core$triangle_setup$q$4 q$4(
+    raster_top$fragments$core$triangle_setup$q$4 q$4(
         .d(q$4$d),
         .q(q$4$q),
         .clock(q$4$clock)
     );
-    raster_top$core$triangle_setup$q$5 q$5(
+    raster_top$fragments$core$triangle_setup$q$5 q$5(
         .d(q$5$d),
         .q(q$5$q),
         .clock(q$5$clock)
     );
-    raster_top$core$triangle_setup$q$6 q$6(
+    raster_top$fragments$core$triangle_setup$q$6 q$6(
         .d(q$6$d),
         .q(q$6$q),
         .clock(q$6$clock)
     );
-    raster_top$core$triangle_setup$q$7 q$7(
+    raster_top$fragments$core$triangle_setup$q$7 q$7(
         .d(q$7$d),
         .q(q$7$q),
         .clock(q$7$clock)
     );
-    raster_top$core$triangle_setup$q$8 q$8(
+    raster_top$fragments$core$triangle_setup$q$8 q$8(
         .d(q$8$d),
         .q(q$8$q),
         .clock(q$8$clock)
     );
-    raster_top$core$triangle_setup$q$9 q$9(
+    raster_top$fragments$core$triangle_setup$q$9 q$9(
         .d(q$9$d),
         .q(q$9$q),
         .clock(q$9$clock)
     );
-    raster_top$core$triangle_setup$q$10 q$10(
+    raster_top$fragments$core$triangle_setup$q$10 q$10(
         .d(q$10$d),
         .q(q$10$q),
         .clock(q$10$clock)
     );
-    raster_top$core$triangle_setup$q$11 q$11(
+    raster_top$fragments$core$triangle_setup$q$11 q$11(
         .d(q$11$d),
         .q(q$11$q),
         .clock(q$11$clock)
     );
-    raster_top$core$triangle_setup$q$12 q$12(
+    raster_top$fragments$core$triangle_setup$q$12 q$12(
         .d(q$12$d),
         .q(q$12$q),
         .clock(q$12$clock)
     );
-    raster_top$core$triangle_setup$q$13 q$13(
+    raster_top$fragments$core$triangle_setup$q$13 q$13(
         .d(q$13$d),
         .q(q$13$q),
         .clock(q$13$clock)
     );
-    raster_top$core$triangle_setup$q$14 q$14(
+    raster_top$fragments$core$triangle_setup$q$14 q$14(
         .d(q$14$d),
         .q(q$14$q),
         .clock(q$14$clock)
     );
-    raster_top$core$triangle_setup$rho$0 rho$0(
+    raster_top$fragments$core$triangle_setup$rho$0 rho$0(
         .d(rho$0$d),
         .q(rho$0$q),
         .clock(rho$0$clock)
     );
-    raster_top$core$triangle_setup$rho$1 rho$1(
+    raster_top$fragments$core$triangle_setup$rho$1 rho$1(
         .d(rho$1$d),
         .q(rho$1$q),
         .clock(rho$1$clock)
     );
-    raster_top$core$triangle_setup$rho$2 rho$2(
+    raster_top$fragments$core$triangle_setup$rho$2 rho$2(
         .d(rho$2$d),
         .q(rho$2$q),
         .clock(rho$2$clock)
     );
-    raster_top$core$triangle_setup$rho$3 rho$3(
+    raster_top$fragments$core$triangle_setup$rho$3 rho$3(
         .d(rho$3$d),
         .q(rho$3$q),
         .clock(rho$3$clock)
     );
-    raster_top$core$triangle_setup$rho$4 rho$4(
+    raster_top$fragments$core$triangle_setup$rho$4 rho$4(
         .d(rho$4$d),
         .q(rho$4$q),
         .clock(rho$4$clock)
     );
-    raster_top$core$triangle_setup$rho$5 rho$5(
+    raster_top$fragments$core$triangle_setup$rho$5 rho$5(
         .d(rho$5$d),
         .q(rho$5$q),
         .clock(rho$5$clock)
     );
-    raster_top$core$triangle_setup$rho$6 rho$6(
+    raster_top$fragments$core$triangle_setup$rho$6 rho$6(
         .d(rho$6$d),
         .q(rho$6$q),
         .clock(rho$6$clock)
     );
-    raster_top$core$triangle_setup$rho$7 rho$7(
+    raster_top$fragments$core$triangle_setup$rho$7 rho$7(
         .d(rho$7$d),
         .q(rho$7$q),
         .clock(rho$7$clock)
     );
-    raster_top$core$triangle_setup$rho$8 rho$8(
+    raster_top$fragments$core$triangle_setup$rho$8 rho$8(
         .d(rho$8$d),
         .q(rho$8$q),
         .clock(rho$8$clock)
     );
-    raster_top$core$triangle_setup$rho$9 rho$9(
+    raster_top$fragments$core$triangle_setup$rho$9 rho$9(
         .d(rho$9$d),
         .q(rho$9$q),
         .clock(rho$9$clock)
     );
-    raster_top$core$triangle_setup$rho$10 rho$10(
+    raster_top$fragments$core$triangle_setup$rho$10 rho$10(
         .d(rho$10$d),
         .q(rho$10$q),
         .clock(rho$10$clock)
     );
-    raster_top$core$triangle_setup$rho$11 rho$11(
+    raster_top$fragments$core$triangle_setup$rho$11 rho$11(
         .d(rho$11$d),
         .q(rho$11$q),
         .clock(rho$11$clock)
     );
-    raster_top$core$triangle_setup$rho$12 rho$12(
+    raster_top$fragments$core$triangle_setup$rho$12 rho$12(
         .d(rho$12$d),
         .q(rho$12$q),
         .clock(rho$12$clock)
     );
-    raster_top$core$triangle_setup$rho$13 rho$13(
+    raster_top$fragments$core$triangle_setup$rho$13 rho$13(
         .d(rho$13$d),
         .q(rho$13$q),
         .clock(rho$13$clock)
     );
-    raster_top$core$triangle_setup$rho$14 rho$14(
+    raster_top$fragments$core$triangle_setup$rho$14 rho$14(
         .d(rho$14$d),
         .q(rho$14$q),
         .clock(rho$14$clock)
     );
-    raster_top$core$triangle_setup$g0 g0(
+    raster_top$fragments$core$triangle_setup$g0 g0(
         .clock(g0$clock),
         .vx$0(g0$vx$0),
         .vx$1(g0$vx$1),
@@ -13149,7 +13258,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .attr0$2(g0$attr0$2),
         .attr0$3(g0$attr0$3)
     );
-    raster_top$core$triangle_setup$g1 g1(
+    raster_top$fragments$core$triangle_setup$g1 g1(
         .clock(g1$clock),
         .vx$0(g1$vx$0),
         .vx$1(g1$vx$1),
@@ -13227,7 +13336,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .attr0$2(g1$attr0$2),
         .attr0$3(g1$attr0$3)
     );
-    raster_top$core$triangle_setup$g2 g2(
+    raster_top$fragments$core$triangle_setup$g2 g2(
         .clock(g2$clock),
         .vx$0(g2$vx$0),
         .vx$1(g2$vx$1),
@@ -13305,7 +13414,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .attr0$2(g2$attr0$2),
         .attr0$3(g2$attr0$3)
     );
-    raster_top$core$triangle_setup$g3 g3(
+    raster_top$fragments$core$triangle_setup$g3 g3(
         .clock(g3$clock),
         .vx$0(g3$vx$0),
         .vx$1(g3$vx$1),
@@ -13383,7 +13492,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .attr0$2(g3$attr0$2),
         .attr0$3(g3$attr0$3)
     );
-    raster_top$core$triangle_setup$g4 g4(
+    raster_top$fragments$core$triangle_setup$g4 g4(
         .clock(g4$clock),
         .vx$0(g4$vx$0),
         .vx$1(g4$vx$1),
@@ -13461,377 +13570,377 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .attr0$2(g4$attr0$2),
         .attr0$3(g4$attr0$3)
     );
-    raster_top$core$triangle_setup$area area(
+    raster_top$fragments$core$triangle_setup$area area(
         .d(area$d),
         .q(area$q),
         .clock(area$clock)
     );
-    raster_top$core$triangle_setup$norm norm(
+    raster_top$fragments$core$triangle_setup$norm norm(
         .d(norm$d),
         .q(norm$q),
         .clock(norm$clock)
     );
-    raster_top$core$triangle_setup$nsh nsh(
+    raster_top$fragments$core$triangle_setup$nsh nsh(
         .d(nsh$d),
         .q(nsh$q),
         .clock(nsh$clock)
     );
-    raster_top$core$triangle_setup$div_v div_v(
+    raster_top$fragments$core$triangle_setup$div_v div_v(
         .d(div_v$d),
         .q(div_v$q),
         .clock(div_v$clock)
     );
-    raster_top$core$triangle_setup$div_n div_n(
+    raster_top$fragments$core$triangle_setup$div_n div_n(
         .d(div_n$d),
         .q(div_n$q),
         .clock(div_n$clock)
     );
-    raster_top$core$triangle_setup$div_d div_d(
+    raster_top$fragments$core$triangle_setup$div_d div_d(
         .d(div_d$d),
         .q(div_d$q),
         .clock(div_d$clock)
     );
-    raster_top$core$triangle_setup$mant_s mant_s(
+    raster_top$fragments$core$triangle_setup$mant_s mant_s(
         .d(mant_s$d),
         .q(mant_s$q),
         .clock(mant_s$clock)
     );
-    raster_top$core$triangle_setup$rsh rsh(
+    raster_top$fragments$core$triangle_setup$rsh rsh(
         .d(rsh$d),
         .q(rsh$q),
         .clock(rsh$clock)
     );
-    raster_top$core$triangle_setup$left left(
+    raster_top$fragments$core$triangle_setup$left left(
         .d(left$d),
         .q(left$q),
         .clock(left$clock)
     );
-    raster_top$core$triangle_setup$num$0 num$0(
+    raster_top$fragments$core$triangle_setup$num$0 num$0(
         .d(num$0$d),
         .q(num$0$q),
         .clock(num$0$clock)
     );
-    raster_top$core$triangle_setup$num$1 num$1(
+    raster_top$fragments$core$triangle_setup$num$1 num$1(
         .d(num$1$d),
         .q(num$1$q),
         .clock(num$1$clock)
     );
-    raster_top$core$triangle_setup$num$2 num$2(
+    raster_top$fragments$core$triangle_setup$num$2 num$2(
         .d(num$2$d),
         .q(num$2$q),
         .clock(num$2$clock)
     );
-    raster_top$core$triangle_setup$p$0 p$0(
+    raster_top$fragments$core$triangle_setup$p$0 p$0(
         .d(p$0$d),
         .q(p$0$q),
         .clock(p$0$clock)
     );
-    raster_top$core$triangle_setup$p$1 p$1(
+    raster_top$fragments$core$triangle_setup$p$1 p$1(
         .d(p$1$d),
         .q(p$1$q),
         .clock(p$1$clock)
     );
-    raster_top$core$triangle_setup$p$2 p$2(
+    raster_top$fragments$core$triangle_setup$p$2 p$2(
         .d(p$2$d),
         .q(p$2$q),
         .clock(p$2$clock)
     );
-    raster_top$core$triangle_setup$p$3 p$3(
+    raster_top$fragments$core$triangle_setup$p$3 p$3(
         .d(p$3$d),
         .q(p$3$q),
         .clock(p$3$clock)
     );
-    raster_top$core$triangle_setup$gx$0 gx$0(
+    raster_top$fragments$core$triangle_setup$gx$0 gx$0(
         .d(gx$0$d),
         .q(gx$0$q),
         .clock(gx$0$clock)
     );
-    raster_top$core$triangle_setup$gx$1 gx$1(
+    raster_top$fragments$core$triangle_setup$gx$1 gx$1(
         .d(gx$1$d),
         .q(gx$1$q),
         .clock(gx$1$clock)
     );
-    raster_top$core$triangle_setup$gx$2 gx$2(
+    raster_top$fragments$core$triangle_setup$gx$2 gx$2(
         .d(gx$2$d),
         .q(gx$2$q),
         .clock(gx$2$clock)
     );
-    raster_top$core$triangle_setup$gx$3 gx$3(
+    raster_top$fragments$core$triangle_setup$gx$3 gx$3(
         .d(gx$3$d),
         .q(gx$3$q),
         .clock(gx$3$clock)
     );
-    raster_top$core$triangle_setup$gy$0 gy$0(
+    raster_top$fragments$core$triangle_setup$gy$0 gy$0(
         .d(gy$0$d),
         .q(gy$0$q),
         .clock(gy$0$clock)
     );
-    raster_top$core$triangle_setup$gy$1 gy$1(
+    raster_top$fragments$core$triangle_setup$gy$1 gy$1(
         .d(gy$1$d),
         .q(gy$1$q),
         .clock(gy$1$clock)
     );
-    raster_top$core$triangle_setup$gy$2 gy$2(
+    raster_top$fragments$core$triangle_setup$gy$2 gy$2(
         .d(gy$2$d),
         .q(gy$2$q),
         .clock(gy$2$clock)
     );
-    raster_top$core$triangle_setup$gy$3 gy$3(
+    raster_top$fragments$core$triangle_setup$gy$3 gy$3(
         .d(gy$3$d),
         .q(gy$3$q),
         .clock(gy$3$clock)
     );
-    raster_top$core$triangle_setup$plane$0 plane$0(
+    raster_top$fragments$core$triangle_setup$plane$0 plane$0(
         .d(plane$0$d),
         .q(plane$0$q),
         .clock(plane$0$clock)
     );
-    raster_top$core$triangle_setup$plane$1 plane$1(
+    raster_top$fragments$core$triangle_setup$plane$1 plane$1(
         .d(plane$1$d),
         .q(plane$1$q),
         .clock(plane$1$clock)
     );
-    raster_top$core$triangle_setup$plane$2 plane$2(
+    raster_top$fragments$core$triangle_setup$plane$2 plane$2(
         .d(plane$2$d),
         .q(plane$2$q),
         .clock(plane$2$clock)
     );
-    raster_top$core$triangle_setup$plane$3 plane$3(
+    raster_top$fragments$core$triangle_setup$plane$3 plane$3(
         .d(plane$3$d),
         .q(plane$3$q),
         .clock(plane$3$clock)
     );
-    raster_top$core$triangle_setup$plane$4 plane$4(
+    raster_top$fragments$core$triangle_setup$plane$4 plane$4(
         .d(plane$4$d),
         .q(plane$4$q),
         .clock(plane$4$clock)
     );
-    raster_top$core$triangle_setup$plane$5 plane$5(
+    raster_top$fragments$core$triangle_setup$plane$5 plane$5(
         .d(plane$5$d),
         .q(plane$5$q),
         .clock(plane$5$clock)
     );
-    raster_top$core$triangle_setup$plane$6 plane$6(
+    raster_top$fragments$core$triangle_setup$plane$6 plane$6(
         .d(plane$6$d),
         .q(plane$6$q),
         .clock(plane$6$clock)
     );
-    raster_top$core$triangle_setup$plane$7 plane$7(
+    raster_top$fragments$core$triangle_setup$plane$7 plane$7(
         .d(plane$7$d),
         .q(plane$7$q),
         .clock(plane$7$clock)
     );
-    raster_top$core$triangle_setup$plane$8 plane$8(
+    raster_top$fragments$core$triangle_setup$plane$8 plane$8(
         .d(plane$8$d),
         .q(plane$8$q),
         .clock(plane$8$clock)
     );
-    raster_top$core$triangle_setup$plane$9 plane$9(
+    raster_top$fragments$core$triangle_setup$plane$9 plane$9(
         .d(plane$9$d),
         .q(plane$9$q),
         .clock(plane$9$clock)
     );
-    raster_top$core$triangle_setup$plane$10 plane$10(
+    raster_top$fragments$core$triangle_setup$plane$10 plane$10(
         .d(plane$10$d),
         .q(plane$10$q),
         .clock(plane$10$clock)
     );
-    raster_top$core$triangle_setup$plane$11 plane$11(
+    raster_top$fragments$core$triangle_setup$plane$11 plane$11(
         .d(plane$11$d),
         .q(plane$11$q),
         .clock(plane$11$clock)
     );
-    raster_top$core$triangle_setup$inc0$0 inc0$0(
+    raster_top$fragments$core$triangle_setup$inc0$0 inc0$0(
         .d(inc0$0$d),
         .q(inc0$0$q),
         .clock(inc0$0$clock)
     );
-    raster_top$core$triangle_setup$inc0$1 inc0$1(
+    raster_top$fragments$core$triangle_setup$inc0$1 inc0$1(
         .d(inc0$1$d),
         .q(inc0$1$q),
         .clock(inc0$1$clock)
     );
-    raster_top$core$triangle_setup$inc0$2 inc0$2(
+    raster_top$fragments$core$triangle_setup$inc0$2 inc0$2(
         .d(inc0$2$d),
         .q(inc0$2$q),
         .clock(inc0$2$clock)
     );
-    raster_top$core$triangle_setup$inc0$3 inc0$3(
+    raster_top$fragments$core$triangle_setup$inc0$3 inc0$3(
         .d(inc0$3$d),
         .q(inc0$3$q),
         .clock(inc0$3$clock)
     );
-    raster_top$core$triangle_setup$inc0$4 inc0$4(
+    raster_top$fragments$core$triangle_setup$inc0$4 inc0$4(
         .d(inc0$4$d),
         .q(inc0$4$q),
         .clock(inc0$4$clock)
     );
-    raster_top$core$triangle_setup$inc0$5 inc0$5(
+    raster_top$fragments$core$triangle_setup$inc0$5 inc0$5(
         .d(inc0$5$d),
         .q(inc0$5$q),
         .clock(inc0$5$clock)
     );
-    raster_top$core$triangle_setup$inc0$6 inc0$6(
+    raster_top$fragments$core$triangle_setup$inc0$6 inc0$6(
         .d(inc0$6$d),
         .q(inc0$6$q),
         .clock(inc0$6$clock)
     );
-    raster_top$core$triangle_setup$inc0$7 inc0$7(
+    raster_top$fragments$core$triangle_setup$inc0$7 inc0$7(
         .d(inc0$7$d),
         .q(inc0$7$q),
         .clock(inc0$7$clock)
     );
-    raster_top$core$triangle_setup$inc0$8 inc0$8(
+    raster_top$fragments$core$triangle_setup$inc0$8 inc0$8(
         .d(inc0$8$d),
         .q(inc0$8$q),
         .clock(inc0$8$clock)
     );
-    raster_top$core$triangle_setup$inc0$9 inc0$9(
+    raster_top$fragments$core$triangle_setup$inc0$9 inc0$9(
         .d(inc0$9$d),
         .q(inc0$9$q),
         .clock(inc0$9$clock)
     );
-    raster_top$core$triangle_setup$inc0$10 inc0$10(
+    raster_top$fragments$core$triangle_setup$inc0$10 inc0$10(
         .d(inc0$10$d),
         .q(inc0$10$q),
         .clock(inc0$10$clock)
     );
-    raster_top$core$triangle_setup$inc0$11 inc0$11(
+    raster_top$fragments$core$triangle_setup$inc0$11 inc0$11(
         .d(inc0$11$d),
         .q(inc0$11$q),
         .clock(inc0$11$clock)
     );
-    raster_top$core$triangle_setup$inc1$0 inc1$0(
+    raster_top$fragments$core$triangle_setup$inc1$0 inc1$0(
         .d(inc1$0$d),
         .q(inc1$0$q),
         .clock(inc1$0$clock)
     );
-    raster_top$core$triangle_setup$inc1$1 inc1$1(
+    raster_top$fragments$core$triangle_setup$inc1$1 inc1$1(
         .d(inc1$1$d),
         .q(inc1$1$q),
         .clock(inc1$1$clock)
     );
-    raster_top$core$triangle_setup$inc1$2 inc1$2(
+    raster_top$fragments$core$triangle_setup$inc1$2 inc1$2(
         .d(inc1$2$d),
         .q(inc1$2$q),
         .clock(inc1$2$clock)
     );
-    raster_top$core$triangle_setup$inc1$3 inc1$3(
+    raster_top$fragments$core$triangle_setup$inc1$3 inc1$3(
         .d(inc1$3$d),
         .q(inc1$3$q),
         .clock(inc1$3$clock)
     );
-    raster_top$core$triangle_setup$inc1$4 inc1$4(
+    raster_top$fragments$core$triangle_setup$inc1$4 inc1$4(
         .d(inc1$4$d),
         .q(inc1$4$q),
         .clock(inc1$4$clock)
     );
-    raster_top$core$triangle_setup$inc1$5 inc1$5(
+    raster_top$fragments$core$triangle_setup$inc1$5 inc1$5(
         .d(inc1$5$d),
         .q(inc1$5$q),
         .clock(inc1$5$clock)
     );
-    raster_top$core$triangle_setup$inc1$6 inc1$6(
+    raster_top$fragments$core$triangle_setup$inc1$6 inc1$6(
         .d(inc1$6$d),
         .q(inc1$6$q),
         .clock(inc1$6$clock)
     );
-    raster_top$core$triangle_setup$inc1$7 inc1$7(
+    raster_top$fragments$core$triangle_setup$inc1$7 inc1$7(
         .d(inc1$7$d),
         .q(inc1$7$q),
         .clock(inc1$7$clock)
     );
-    raster_top$core$triangle_setup$inc1$8 inc1$8(
+    raster_top$fragments$core$triangle_setup$inc1$8 inc1$8(
         .d(inc1$8$d),
         .q(inc1$8$q),
         .clock(inc1$8$clock)
     );
-    raster_top$core$triangle_setup$inc1$9 inc1$9(
+    raster_top$fragments$core$triangle_setup$inc1$9 inc1$9(
         .d(inc1$9$d),
         .q(inc1$9$q),
         .clock(inc1$9$clock)
     );
-    raster_top$core$triangle_setup$inc1$10 inc1$10(
+    raster_top$fragments$core$triangle_setup$inc1$10 inc1$10(
         .d(inc1$10$d),
         .q(inc1$10$q),
         .clock(inc1$10$clock)
     );
-    raster_top$core$triangle_setup$inc1$11 inc1$11(
+    raster_top$fragments$core$triangle_setup$inc1$11 inc1$11(
         .d(inc1$11$d),
         .q(inc1$11$q),
         .clock(inc1$11$clock)
     );
-    raster_top$core$triangle_setup$ddx_o$0 ddx_o$0(
+    raster_top$fragments$core$triangle_setup$ddx_o$0 ddx_o$0(
         .d(ddx_o$0$d),
         .q(ddx_o$0$q),
         .clock(ddx_o$0$clock)
     );
-    raster_top$core$triangle_setup$ddx_o$1 ddx_o$1(
+    raster_top$fragments$core$triangle_setup$ddx_o$1 ddx_o$1(
         .d(ddx_o$1$d),
         .q(ddx_o$1$q),
         .clock(ddx_o$1$clock)
     );
-    raster_top$core$triangle_setup$ddx_o$2 ddx_o$2(
+    raster_top$fragments$core$triangle_setup$ddx_o$2 ddx_o$2(
         .d(ddx_o$2$d),
         .q(ddx_o$2$q),
         .clock(ddx_o$2$clock)
     );
-    raster_top$core$triangle_setup$ddx_o$3 ddx_o$3(
+    raster_top$fragments$core$triangle_setup$ddx_o$3 ddx_o$3(
         .d(ddx_o$3$d),
         .q(ddx_o$3$q),
         .clock(ddx_o$3$clock)
     );
-    raster_top$core$triangle_setup$o_walk o_walk(
+    raster_top$fragments$core$triangle_setup$o_walk o_walk(
         .d(o_walk$d),
         .q(o_walk$q),
         .clock(o_walk$clock)
     );
-    raster_top$core$triangle_setup$o_maj_left o_maj_left(
+    raster_top$fragments$core$triangle_setup$o_maj_left o_maj_left(
         .d(o_maj_left$d),
         .q(o_maj_left$q),
         .clock(o_maj_left$clock)
     );
-    raster_top$core$triangle_setup$o_j$0 o_j$0(
+    raster_top$fragments$core$triangle_setup$o_j$0 o_j$0(
         .d(o_j$0$d),
         .q(o_j$0$q),
         .clock(o_j$0$clock)
     );
-    raster_top$core$triangle_setup$o_j$1 o_j$1(
+    raster_top$fragments$core$triangle_setup$o_j$1 o_j$1(
         .d(o_j$1$d),
         .q(o_j$1$q),
         .clock(o_j$1$clock)
     );
-    raster_top$core$triangle_setup$o_j$2 o_j$2(
+    raster_top$fragments$core$triangle_setup$o_j$2 o_j$2(
         .d(o_j$2$d),
         .q(o_j$2$q),
         .clock(o_j$2$clock)
     );
-    raster_top$core$triangle_setup$o_count$0 o_count$0(
+    raster_top$fragments$core$triangle_setup$o_count$0 o_count$0(
         .d(o_count$0$d),
         .q(o_count$0$q),
         .clock(o_count$0$clock)
     );
-    raster_top$core$triangle_setup$o_count$1 o_count$1(
+    raster_top$fragments$core$triangle_setup$o_count$1 o_count$1(
         .d(o_count$1$d),
         .q(o_count$1$q),
         .clock(o_count$1$clock)
     );
-    raster_top$core$triangle_setup$o_count$2 o_count$2(
+    raster_top$fragments$core$triangle_setup$o_count$2 o_count$2(
         .d(o_count$2$d),
         .q(o_count$2$q),
         .clock(o_count$2$clock)
     );
-    raster_top$core$triangle_setup$o_d$0 o_d$0(
+    raster_top$fragments$core$triangle_setup$o_d$0 o_d$0(
         .d(o_d$0$d),
         .q(o_d$0$q),
         .clock(o_d$0$clock)
     );
-    raster_top$core$triangle_setup$o_d$1 o_d$1(
+    raster_top$fragments$core$triangle_setup$o_d$1 o_d$1(
         .d(o_d$1$d),
         .q(o_d$1$q),
         .clock(o_d$1$clock)
     );
-    raster_top$core$triangle_setup$o_d$2 o_d$2(
+    raster_top$fragments$core$triangle_setup$o_d$2 o_d$2(
         .d(o_d$2$d),
         .q(o_d$2$q),
         .clock(o_d$2$clock)
@@ -22097,10 +22206,10 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         out$ddx_c2 = ddx_o$3$q[(32'h0)+:(36)];
     end
     
-endmodule // raster_top$core$triangle_setup
+endmodule // raster_top$fragments$core$triangle_setup
 
 
-module raster_top$core$triangle_setup$act_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22116,10 +22225,10 @@ module raster_top$core$triangle_setup$act_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$0
+endmodule // raster_top$fragments$core$triangle_setup$act_r$0
 
 
-module raster_top$core$triangle_setup$act_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$1(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22135,10 +22244,10 @@ module raster_top$core$triangle_setup$act_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$1
+endmodule // raster_top$fragments$core$triangle_setup$act_r$1
 
 
-module raster_top$core$triangle_setup$act_r$10(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$10(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22154,10 +22263,10 @@ module raster_top$core$triangle_setup$act_r$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$10
+endmodule // raster_top$fragments$core$triangle_setup$act_r$10
 
 
-module raster_top$core$triangle_setup$act_r$11(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$11(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22173,10 +22282,10 @@ module raster_top$core$triangle_setup$act_r$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$11
+endmodule // raster_top$fragments$core$triangle_setup$act_r$11
 
 
-module raster_top$core$triangle_setup$act_r$12(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$12(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22192,10 +22301,10 @@ module raster_top$core$triangle_setup$act_r$12(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$12
+endmodule // raster_top$fragments$core$triangle_setup$act_r$12
 
 
-module raster_top$core$triangle_setup$act_r$13(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$13(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22211,10 +22320,10 @@ module raster_top$core$triangle_setup$act_r$13(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$13
+endmodule // raster_top$fragments$core$triangle_setup$act_r$13
 
 
-module raster_top$core$triangle_setup$act_r$14(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$14(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22230,10 +22339,10 @@ module raster_top$core$triangle_setup$act_r$14(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$14
+endmodule // raster_top$fragments$core$triangle_setup$act_r$14
 
 
-module raster_top$core$triangle_setup$act_r$15(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$15(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22249,10 +22358,10 @@ module raster_top$core$triangle_setup$act_r$15(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$15
+endmodule // raster_top$fragments$core$triangle_setup$act_r$15
 
 
-module raster_top$core$triangle_setup$act_r$16(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$16(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22268,10 +22377,10 @@ module raster_top$core$triangle_setup$act_r$16(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$16
+endmodule // raster_top$fragments$core$triangle_setup$act_r$16
 
 
-module raster_top$core$triangle_setup$act_r$17(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$17(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22287,10 +22396,10 @@ module raster_top$core$triangle_setup$act_r$17(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$17
+endmodule // raster_top$fragments$core$triangle_setup$act_r$17
 
 
-module raster_top$core$triangle_setup$act_r$18(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$18(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22306,10 +22415,10 @@ module raster_top$core$triangle_setup$act_r$18(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$18
+endmodule // raster_top$fragments$core$triangle_setup$act_r$18
 
 
-module raster_top$core$triangle_setup$act_r$19(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$19(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22325,10 +22434,10 @@ module raster_top$core$triangle_setup$act_r$19(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$19
+endmodule // raster_top$fragments$core$triangle_setup$act_r$19
 
 
-module raster_top$core$triangle_setup$act_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$2(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22344,10 +22453,10 @@ module raster_top$core$triangle_setup$act_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$2
+endmodule // raster_top$fragments$core$triangle_setup$act_r$2
 
 
-module raster_top$core$triangle_setup$act_r$20(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$20(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22363,10 +22472,10 @@ module raster_top$core$triangle_setup$act_r$20(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$20
+endmodule // raster_top$fragments$core$triangle_setup$act_r$20
 
 
-module raster_top$core$triangle_setup$act_r$21(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$21(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22382,10 +22491,10 @@ module raster_top$core$triangle_setup$act_r$21(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$21
+endmodule // raster_top$fragments$core$triangle_setup$act_r$21
 
 
-module raster_top$core$triangle_setup$act_r$22(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$22(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22401,10 +22510,10 @@ module raster_top$core$triangle_setup$act_r$22(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$22
+endmodule // raster_top$fragments$core$triangle_setup$act_r$22
 
 
-module raster_top$core$triangle_setup$act_r$23(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$23(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22420,10 +22529,10 @@ module raster_top$core$triangle_setup$act_r$23(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$23
+endmodule // raster_top$fragments$core$triangle_setup$act_r$23
 
 
-module raster_top$core$triangle_setup$act_r$24(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$24(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22439,10 +22548,10 @@ module raster_top$core$triangle_setup$act_r$24(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$24
+endmodule // raster_top$fragments$core$triangle_setup$act_r$24
 
 
-module raster_top$core$triangle_setup$act_r$25(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$25(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22458,10 +22567,10 @@ module raster_top$core$triangle_setup$act_r$25(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$25
+endmodule // raster_top$fragments$core$triangle_setup$act_r$25
 
 
-module raster_top$core$triangle_setup$act_r$26(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$26(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22477,10 +22586,10 @@ module raster_top$core$triangle_setup$act_r$26(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$26
+endmodule // raster_top$fragments$core$triangle_setup$act_r$26
 
 
-module raster_top$core$triangle_setup$act_r$27(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$27(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22496,10 +22605,10 @@ module raster_top$core$triangle_setup$act_r$27(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$27
+endmodule // raster_top$fragments$core$triangle_setup$act_r$27
 
 
-module raster_top$core$triangle_setup$act_r$28(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$28(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22515,10 +22624,10 @@ module raster_top$core$triangle_setup$act_r$28(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$28
+endmodule // raster_top$fragments$core$triangle_setup$act_r$28
 
 
-module raster_top$core$triangle_setup$act_r$29(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$29(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22534,10 +22643,10 @@ module raster_top$core$triangle_setup$act_r$29(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$29
+endmodule // raster_top$fragments$core$triangle_setup$act_r$29
 
 
-module raster_top$core$triangle_setup$act_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$3(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22553,10 +22662,10 @@ module raster_top$core$triangle_setup$act_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$3
+endmodule // raster_top$fragments$core$triangle_setup$act_r$3
 
 
-module raster_top$core$triangle_setup$act_r$30(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$30(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22572,10 +22681,10 @@ module raster_top$core$triangle_setup$act_r$30(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$30
+endmodule // raster_top$fragments$core$triangle_setup$act_r$30
 
 
-module raster_top$core$triangle_setup$act_r$31(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$31(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22591,10 +22700,10 @@ module raster_top$core$triangle_setup$act_r$31(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$31
+endmodule // raster_top$fragments$core$triangle_setup$act_r$31
 
 
-module raster_top$core$triangle_setup$act_r$32(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$32(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22610,10 +22719,10 @@ module raster_top$core$triangle_setup$act_r$32(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$32
+endmodule // raster_top$fragments$core$triangle_setup$act_r$32
 
 
-module raster_top$core$triangle_setup$act_r$33(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$33(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22629,10 +22738,10 @@ module raster_top$core$triangle_setup$act_r$33(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$33
+endmodule // raster_top$fragments$core$triangle_setup$act_r$33
 
 
-module raster_top$core$triangle_setup$act_r$34(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$34(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22648,10 +22757,10 @@ module raster_top$core$triangle_setup$act_r$34(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$34
+endmodule // raster_top$fragments$core$triangle_setup$act_r$34
 
 
-module raster_top$core$triangle_setup$act_r$35(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$35(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22667,10 +22776,10 @@ module raster_top$core$triangle_setup$act_r$35(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$35
+endmodule // raster_top$fragments$core$triangle_setup$act_r$35
 
 
-module raster_top$core$triangle_setup$act_r$36(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$36(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22686,10 +22795,10 @@ module raster_top$core$triangle_setup$act_r$36(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$36
+endmodule // raster_top$fragments$core$triangle_setup$act_r$36
 
 
-module raster_top$core$triangle_setup$act_r$37(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$37(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22705,10 +22814,10 @@ module raster_top$core$triangle_setup$act_r$37(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$37
+endmodule // raster_top$fragments$core$triangle_setup$act_r$37
 
 
-module raster_top$core$triangle_setup$act_r$38(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$38(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22724,10 +22833,10 @@ module raster_top$core$triangle_setup$act_r$38(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$38
+endmodule // raster_top$fragments$core$triangle_setup$act_r$38
 
 
-module raster_top$core$triangle_setup$act_r$39(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$39(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22743,10 +22852,10 @@ module raster_top$core$triangle_setup$act_r$39(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$39
+endmodule // raster_top$fragments$core$triangle_setup$act_r$39
 
 
-module raster_top$core$triangle_setup$act_r$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$4(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22762,10 +22871,10 @@ module raster_top$core$triangle_setup$act_r$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$4
+endmodule // raster_top$fragments$core$triangle_setup$act_r$4
 
 
-module raster_top$core$triangle_setup$act_r$40(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$40(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22781,10 +22890,10 @@ module raster_top$core$triangle_setup$act_r$40(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$40
+endmodule // raster_top$fragments$core$triangle_setup$act_r$40
 
 
-module raster_top$core$triangle_setup$act_r$41(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$41(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22800,10 +22909,10 @@ module raster_top$core$triangle_setup$act_r$41(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$41
+endmodule // raster_top$fragments$core$triangle_setup$act_r$41
 
 
-module raster_top$core$triangle_setup$act_r$42(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$42(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22819,10 +22928,10 @@ module raster_top$core$triangle_setup$act_r$42(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$42
+endmodule // raster_top$fragments$core$triangle_setup$act_r$42
 
 
-module raster_top$core$triangle_setup$act_r$43(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$43(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22838,10 +22947,10 @@ module raster_top$core$triangle_setup$act_r$43(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$43
+endmodule // raster_top$fragments$core$triangle_setup$act_r$43
 
 
-module raster_top$core$triangle_setup$act_r$44(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$44(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22857,10 +22966,10 @@ module raster_top$core$triangle_setup$act_r$44(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$44
+endmodule // raster_top$fragments$core$triangle_setup$act_r$44
 
 
-module raster_top$core$triangle_setup$act_r$45(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$45(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22876,10 +22985,10 @@ module raster_top$core$triangle_setup$act_r$45(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$45
+endmodule // raster_top$fragments$core$triangle_setup$act_r$45
 
 
-module raster_top$core$triangle_setup$act_r$46(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$46(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22895,10 +23004,10 @@ module raster_top$core$triangle_setup$act_r$46(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$46
+endmodule // raster_top$fragments$core$triangle_setup$act_r$46
 
 
-module raster_top$core$triangle_setup$act_r$47(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$47(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22914,10 +23023,10 @@ module raster_top$core$triangle_setup$act_r$47(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$47
+endmodule // raster_top$fragments$core$triangle_setup$act_r$47
 
 
-module raster_top$core$triangle_setup$act_r$48(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$48(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22933,10 +23042,10 @@ module raster_top$core$triangle_setup$act_r$48(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$48
+endmodule // raster_top$fragments$core$triangle_setup$act_r$48
 
 
-module raster_top$core$triangle_setup$act_r$49(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$49(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22952,10 +23061,10 @@ module raster_top$core$triangle_setup$act_r$49(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$49
+endmodule // raster_top$fragments$core$triangle_setup$act_r$49
 
 
-module raster_top$core$triangle_setup$act_r$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$5(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22971,10 +23080,10 @@ module raster_top$core$triangle_setup$act_r$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$5
+endmodule // raster_top$fragments$core$triangle_setup$act_r$5
 
 
-module raster_top$core$triangle_setup$act_r$50(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$50(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -22990,10 +23099,10 @@ module raster_top$core$triangle_setup$act_r$50(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$50
+endmodule // raster_top$fragments$core$triangle_setup$act_r$50
 
 
-module raster_top$core$triangle_setup$act_r$51(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$51(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23009,10 +23118,10 @@ module raster_top$core$triangle_setup$act_r$51(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$51
+endmodule // raster_top$fragments$core$triangle_setup$act_r$51
 
 
-module raster_top$core$triangle_setup$act_r$52(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$52(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23028,10 +23137,10 @@ module raster_top$core$triangle_setup$act_r$52(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$52
+endmodule // raster_top$fragments$core$triangle_setup$act_r$52
 
 
-module raster_top$core$triangle_setup$act_r$53(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$53(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23047,10 +23156,10 @@ module raster_top$core$triangle_setup$act_r$53(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$53
+endmodule // raster_top$fragments$core$triangle_setup$act_r$53
 
 
-module raster_top$core$triangle_setup$act_r$54(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$54(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23066,10 +23175,10 @@ module raster_top$core$triangle_setup$act_r$54(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$54
+endmodule // raster_top$fragments$core$triangle_setup$act_r$54
 
 
-module raster_top$core$triangle_setup$act_r$55(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$55(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23085,10 +23194,10 @@ module raster_top$core$triangle_setup$act_r$55(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$55
+endmodule // raster_top$fragments$core$triangle_setup$act_r$55
 
 
-module raster_top$core$triangle_setup$act_r$56(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$56(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23104,10 +23213,10 @@ module raster_top$core$triangle_setup$act_r$56(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$56
+endmodule // raster_top$fragments$core$triangle_setup$act_r$56
 
 
-module raster_top$core$triangle_setup$act_r$57(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$57(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23123,10 +23232,10 @@ module raster_top$core$triangle_setup$act_r$57(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$57
+endmodule // raster_top$fragments$core$triangle_setup$act_r$57
 
 
-module raster_top$core$triangle_setup$act_r$58(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$58(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23142,10 +23251,10 @@ module raster_top$core$triangle_setup$act_r$58(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$58
+endmodule // raster_top$fragments$core$triangle_setup$act_r$58
 
 
-module raster_top$core$triangle_setup$act_r$59(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$59(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23161,10 +23270,10 @@ module raster_top$core$triangle_setup$act_r$59(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$59
+endmodule // raster_top$fragments$core$triangle_setup$act_r$59
 
 
-module raster_top$core$triangle_setup$act_r$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$6(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23180,10 +23289,10 @@ module raster_top$core$triangle_setup$act_r$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$6
+endmodule // raster_top$fragments$core$triangle_setup$act_r$6
 
 
-module raster_top$core$triangle_setup$act_r$60(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$60(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23199,10 +23308,10 @@ module raster_top$core$triangle_setup$act_r$60(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$60
+endmodule // raster_top$fragments$core$triangle_setup$act_r$60
 
 
-module raster_top$core$triangle_setup$act_r$61(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$61(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23218,10 +23327,10 @@ module raster_top$core$triangle_setup$act_r$61(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$61
+endmodule // raster_top$fragments$core$triangle_setup$act_r$61
 
 
-module raster_top$core$triangle_setup$act_r$62(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$62(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23237,10 +23346,10 @@ module raster_top$core$triangle_setup$act_r$62(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$62
+endmodule // raster_top$fragments$core$triangle_setup$act_r$62
 
 
-module raster_top$core$triangle_setup$act_r$63(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$63(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23256,10 +23365,10 @@ module raster_top$core$triangle_setup$act_r$63(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$63
+endmodule // raster_top$fragments$core$triangle_setup$act_r$63
 
 
-module raster_top$core$triangle_setup$act_r$7(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$7(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23275,10 +23384,10 @@ module raster_top$core$triangle_setup$act_r$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$7
+endmodule // raster_top$fragments$core$triangle_setup$act_r$7
 
 
-module raster_top$core$triangle_setup$act_r$8(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$8(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23294,10 +23403,10 @@ module raster_top$core$triangle_setup$act_r$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$8
+endmodule // raster_top$fragments$core$triangle_setup$act_r$8
 
 
-module raster_top$core$triangle_setup$act_r$9(d,q,clock);
+module raster_top$fragments$core$triangle_setup$act_r$9(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23313,10 +23422,10 @@ module raster_top$core$triangle_setup$act_r$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$act_r$9
+endmodule // raster_top$fragments$core$triangle_setup$act_r$9
 
 
-module raster_top$core$triangle_setup$add_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23332,10 +23441,10 @@ module raster_top$core$triangle_setup$add_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$0
+endmodule // raster_top$fragments$core$triangle_setup$add_r$0
 
 
-module raster_top$core$triangle_setup$add_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$1(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23351,10 +23460,10 @@ module raster_top$core$triangle_setup$add_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$1
+endmodule // raster_top$fragments$core$triangle_setup$add_r$1
 
 
-module raster_top$core$triangle_setup$add_r$10(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$10(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23370,10 +23479,10 @@ module raster_top$core$triangle_setup$add_r$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$10
+endmodule // raster_top$fragments$core$triangle_setup$add_r$10
 
 
-module raster_top$core$triangle_setup$add_r$11(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$11(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23389,10 +23498,10 @@ module raster_top$core$triangle_setup$add_r$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$11
+endmodule // raster_top$fragments$core$triangle_setup$add_r$11
 
 
-module raster_top$core$triangle_setup$add_r$12(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$12(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23408,10 +23517,10 @@ module raster_top$core$triangle_setup$add_r$12(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$12
+endmodule // raster_top$fragments$core$triangle_setup$add_r$12
 
 
-module raster_top$core$triangle_setup$add_r$13(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$13(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23427,10 +23536,10 @@ module raster_top$core$triangle_setup$add_r$13(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$13
+endmodule // raster_top$fragments$core$triangle_setup$add_r$13
 
 
-module raster_top$core$triangle_setup$add_r$14(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$14(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23446,10 +23555,10 @@ module raster_top$core$triangle_setup$add_r$14(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$14
+endmodule // raster_top$fragments$core$triangle_setup$add_r$14
 
 
-module raster_top$core$triangle_setup$add_r$15(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$15(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23465,10 +23574,10 @@ module raster_top$core$triangle_setup$add_r$15(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$15
+endmodule // raster_top$fragments$core$triangle_setup$add_r$15
 
 
-module raster_top$core$triangle_setup$add_r$16(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$16(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23484,10 +23593,10 @@ module raster_top$core$triangle_setup$add_r$16(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$16
+endmodule // raster_top$fragments$core$triangle_setup$add_r$16
 
 
-module raster_top$core$triangle_setup$add_r$17(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$17(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23503,10 +23612,10 @@ module raster_top$core$triangle_setup$add_r$17(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$17
+endmodule // raster_top$fragments$core$triangle_setup$add_r$17
 
 
-module raster_top$core$triangle_setup$add_r$18(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$18(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23522,10 +23631,10 @@ module raster_top$core$triangle_setup$add_r$18(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$18
+endmodule // raster_top$fragments$core$triangle_setup$add_r$18
 
 
-module raster_top$core$triangle_setup$add_r$19(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$19(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23541,10 +23650,10 @@ module raster_top$core$triangle_setup$add_r$19(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$19
+endmodule // raster_top$fragments$core$triangle_setup$add_r$19
 
 
-module raster_top$core$triangle_setup$add_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$2(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23560,10 +23669,10 @@ module raster_top$core$triangle_setup$add_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$2
+endmodule // raster_top$fragments$core$triangle_setup$add_r$2
 
 
-module raster_top$core$triangle_setup$add_r$20(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$20(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23579,10 +23688,10 @@ module raster_top$core$triangle_setup$add_r$20(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$20
+endmodule // raster_top$fragments$core$triangle_setup$add_r$20
 
 
-module raster_top$core$triangle_setup$add_r$21(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$21(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23598,10 +23707,10 @@ module raster_top$core$triangle_setup$add_r$21(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$21
+endmodule // raster_top$fragments$core$triangle_setup$add_r$21
 
 
-module raster_top$core$triangle_setup$add_r$22(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$22(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23617,10 +23726,10 @@ module raster_top$core$triangle_setup$add_r$22(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$22
+endmodule // raster_top$fragments$core$triangle_setup$add_r$22
 
 
-module raster_top$core$triangle_setup$add_r$23(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$23(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23636,10 +23745,10 @@ module raster_top$core$triangle_setup$add_r$23(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$23
+endmodule // raster_top$fragments$core$triangle_setup$add_r$23
 
 
-module raster_top$core$triangle_setup$add_r$24(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$24(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23655,10 +23764,10 @@ module raster_top$core$triangle_setup$add_r$24(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$24
+endmodule // raster_top$fragments$core$triangle_setup$add_r$24
 
 
-module raster_top$core$triangle_setup$add_r$25(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$25(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23674,10 +23783,10 @@ module raster_top$core$triangle_setup$add_r$25(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$25
+endmodule // raster_top$fragments$core$triangle_setup$add_r$25
 
 
-module raster_top$core$triangle_setup$add_r$26(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$26(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23693,10 +23802,10 @@ module raster_top$core$triangle_setup$add_r$26(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$26
+endmodule // raster_top$fragments$core$triangle_setup$add_r$26
 
 
-module raster_top$core$triangle_setup$add_r$27(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$27(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23712,10 +23821,10 @@ module raster_top$core$triangle_setup$add_r$27(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$27
+endmodule // raster_top$fragments$core$triangle_setup$add_r$27
 
 
-module raster_top$core$triangle_setup$add_r$28(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$28(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23731,10 +23840,10 @@ module raster_top$core$triangle_setup$add_r$28(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$28
+endmodule // raster_top$fragments$core$triangle_setup$add_r$28
 
 
-module raster_top$core$triangle_setup$add_r$29(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$29(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23750,10 +23859,10 @@ module raster_top$core$triangle_setup$add_r$29(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$29
+endmodule // raster_top$fragments$core$triangle_setup$add_r$29
 
 
-module raster_top$core$triangle_setup$add_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$3(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23769,10 +23878,10 @@ module raster_top$core$triangle_setup$add_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$3
+endmodule // raster_top$fragments$core$triangle_setup$add_r$3
 
 
-module raster_top$core$triangle_setup$add_r$30(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$30(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23788,10 +23897,10 @@ module raster_top$core$triangle_setup$add_r$30(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$30
+endmodule // raster_top$fragments$core$triangle_setup$add_r$30
 
 
-module raster_top$core$triangle_setup$add_r$31(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$31(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23807,10 +23916,10 @@ module raster_top$core$triangle_setup$add_r$31(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$31
+endmodule // raster_top$fragments$core$triangle_setup$add_r$31
 
 
-module raster_top$core$triangle_setup$add_r$32(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$32(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23826,10 +23935,10 @@ module raster_top$core$triangle_setup$add_r$32(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$32
+endmodule // raster_top$fragments$core$triangle_setup$add_r$32
 
 
-module raster_top$core$triangle_setup$add_r$33(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$33(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23845,10 +23954,10 @@ module raster_top$core$triangle_setup$add_r$33(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$33
+endmodule // raster_top$fragments$core$triangle_setup$add_r$33
 
 
-module raster_top$core$triangle_setup$add_r$34(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$34(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23864,10 +23973,10 @@ module raster_top$core$triangle_setup$add_r$34(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$34
+endmodule // raster_top$fragments$core$triangle_setup$add_r$34
 
 
-module raster_top$core$triangle_setup$add_r$35(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$35(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23883,10 +23992,10 @@ module raster_top$core$triangle_setup$add_r$35(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$35
+endmodule // raster_top$fragments$core$triangle_setup$add_r$35
 
 
-module raster_top$core$triangle_setup$add_r$36(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$36(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23902,10 +24011,10 @@ module raster_top$core$triangle_setup$add_r$36(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$36
+endmodule // raster_top$fragments$core$triangle_setup$add_r$36
 
 
-module raster_top$core$triangle_setup$add_r$37(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$37(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23921,10 +24030,10 @@ module raster_top$core$triangle_setup$add_r$37(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$37
+endmodule // raster_top$fragments$core$triangle_setup$add_r$37
 
 
-module raster_top$core$triangle_setup$add_r$38(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$38(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23940,10 +24049,10 @@ module raster_top$core$triangle_setup$add_r$38(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$38
+endmodule // raster_top$fragments$core$triangle_setup$add_r$38
 
 
-module raster_top$core$triangle_setup$add_r$39(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$39(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23959,10 +24068,10 @@ module raster_top$core$triangle_setup$add_r$39(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$39
+endmodule // raster_top$fragments$core$triangle_setup$add_r$39
 
 
-module raster_top$core$triangle_setup$add_r$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$4(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23978,10 +24087,10 @@ module raster_top$core$triangle_setup$add_r$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$4
+endmodule // raster_top$fragments$core$triangle_setup$add_r$4
 
 
-module raster_top$core$triangle_setup$add_r$40(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$40(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23997,10 +24106,10 @@ module raster_top$core$triangle_setup$add_r$40(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$40
+endmodule // raster_top$fragments$core$triangle_setup$add_r$40
 
 
-module raster_top$core$triangle_setup$add_r$41(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$41(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24016,10 +24125,10 @@ module raster_top$core$triangle_setup$add_r$41(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$41
+endmodule // raster_top$fragments$core$triangle_setup$add_r$41
 
 
-module raster_top$core$triangle_setup$add_r$42(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$42(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24035,10 +24144,10 @@ module raster_top$core$triangle_setup$add_r$42(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$42
+endmodule // raster_top$fragments$core$triangle_setup$add_r$42
 
 
-module raster_top$core$triangle_setup$add_r$43(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$43(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24054,10 +24163,10 @@ module raster_top$core$triangle_setup$add_r$43(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$43
+endmodule // raster_top$fragments$core$triangle_setup$add_r$43
 
 
-module raster_top$core$triangle_setup$add_r$44(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$44(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24073,10 +24182,10 @@ module raster_top$core$triangle_setup$add_r$44(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$44
+endmodule // raster_top$fragments$core$triangle_setup$add_r$44
 
 
-module raster_top$core$triangle_setup$add_r$45(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$45(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24092,10 +24201,10 @@ module raster_top$core$triangle_setup$add_r$45(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$45
+endmodule // raster_top$fragments$core$triangle_setup$add_r$45
 
 
-module raster_top$core$triangle_setup$add_r$46(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$46(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24111,10 +24220,10 @@ module raster_top$core$triangle_setup$add_r$46(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$46
+endmodule // raster_top$fragments$core$triangle_setup$add_r$46
 
 
-module raster_top$core$triangle_setup$add_r$47(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$47(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24130,10 +24239,10 @@ module raster_top$core$triangle_setup$add_r$47(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$47
+endmodule // raster_top$fragments$core$triangle_setup$add_r$47
 
 
-module raster_top$core$triangle_setup$add_r$48(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$48(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24149,10 +24258,10 @@ module raster_top$core$triangle_setup$add_r$48(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$48
+endmodule // raster_top$fragments$core$triangle_setup$add_r$48
 
 
-module raster_top$core$triangle_setup$add_r$49(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$49(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24168,10 +24277,10 @@ module raster_top$core$triangle_setup$add_r$49(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$49
+endmodule // raster_top$fragments$core$triangle_setup$add_r$49
 
 
-module raster_top$core$triangle_setup$add_r$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$5(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24187,10 +24296,10 @@ module raster_top$core$triangle_setup$add_r$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$5
+endmodule // raster_top$fragments$core$triangle_setup$add_r$5
 
 
-module raster_top$core$triangle_setup$add_r$50(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$50(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24206,10 +24315,10 @@ module raster_top$core$triangle_setup$add_r$50(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$50
+endmodule // raster_top$fragments$core$triangle_setup$add_r$50
 
 
-module raster_top$core$triangle_setup$add_r$51(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$51(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24225,10 +24334,10 @@ module raster_top$core$triangle_setup$add_r$51(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$51
+endmodule // raster_top$fragments$core$triangle_setup$add_r$51
 
 
-module raster_top$core$triangle_setup$add_r$52(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$52(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24244,10 +24353,10 @@ module raster_top$core$triangle_setup$add_r$52(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$52
+endmodule // raster_top$fragments$core$triangle_setup$add_r$52
 
 
-module raster_top$core$triangle_setup$add_r$53(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$53(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24263,10 +24372,10 @@ module raster_top$core$triangle_setup$add_r$53(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$53
+endmodule // raster_top$fragments$core$triangle_setup$add_r$53
 
 
-module raster_top$core$triangle_setup$add_r$54(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$54(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24282,10 +24391,10 @@ module raster_top$core$triangle_setup$add_r$54(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$54
+endmodule // raster_top$fragments$core$triangle_setup$add_r$54
 
 
-module raster_top$core$triangle_setup$add_r$55(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$55(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24301,10 +24410,10 @@ module raster_top$core$triangle_setup$add_r$55(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$55
+endmodule // raster_top$fragments$core$triangle_setup$add_r$55
 
 
-module raster_top$core$triangle_setup$add_r$56(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$56(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24320,10 +24429,10 @@ module raster_top$core$triangle_setup$add_r$56(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$56
+endmodule // raster_top$fragments$core$triangle_setup$add_r$56
 
 
-module raster_top$core$triangle_setup$add_r$57(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$57(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24339,10 +24448,10 @@ module raster_top$core$triangle_setup$add_r$57(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$57
+endmodule // raster_top$fragments$core$triangle_setup$add_r$57
 
 
-module raster_top$core$triangle_setup$add_r$58(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$58(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24358,10 +24467,10 @@ module raster_top$core$triangle_setup$add_r$58(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$58
+endmodule // raster_top$fragments$core$triangle_setup$add_r$58
 
 
-module raster_top$core$triangle_setup$add_r$59(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$59(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24377,10 +24486,10 @@ module raster_top$core$triangle_setup$add_r$59(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$59
+endmodule // raster_top$fragments$core$triangle_setup$add_r$59
 
 
-module raster_top$core$triangle_setup$add_r$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$6(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24396,10 +24505,10 @@ module raster_top$core$triangle_setup$add_r$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$6
+endmodule // raster_top$fragments$core$triangle_setup$add_r$6
 
 
-module raster_top$core$triangle_setup$add_r$60(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$60(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24415,10 +24524,10 @@ module raster_top$core$triangle_setup$add_r$60(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$60
+endmodule // raster_top$fragments$core$triangle_setup$add_r$60
 
 
-module raster_top$core$triangle_setup$add_r$61(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$61(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24434,10 +24543,10 @@ module raster_top$core$triangle_setup$add_r$61(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$61
+endmodule // raster_top$fragments$core$triangle_setup$add_r$61
 
 
-module raster_top$core$triangle_setup$add_r$62(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$62(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24453,10 +24562,10 @@ module raster_top$core$triangle_setup$add_r$62(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$62
+endmodule // raster_top$fragments$core$triangle_setup$add_r$62
 
 
-module raster_top$core$triangle_setup$add_r$63(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$63(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24472,10 +24581,10 @@ module raster_top$core$triangle_setup$add_r$63(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$63
+endmodule // raster_top$fragments$core$triangle_setup$add_r$63
 
 
-module raster_top$core$triangle_setup$add_r$7(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$7(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24491,10 +24600,10 @@ module raster_top$core$triangle_setup$add_r$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$7
+endmodule // raster_top$fragments$core$triangle_setup$add_r$7
 
 
-module raster_top$core$triangle_setup$add_r$8(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$8(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24510,10 +24619,10 @@ module raster_top$core$triangle_setup$add_r$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$8
+endmodule // raster_top$fragments$core$triangle_setup$add_r$8
 
 
-module raster_top$core$triangle_setup$add_r$9(d,q,clock);
+module raster_top$fragments$core$triangle_setup$add_r$9(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24529,10 +24638,10 @@ module raster_top$core$triangle_setup$add_r$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$add_r$9
+endmodule // raster_top$fragments$core$triangle_setup$add_r$9
 
 
-module raster_top$core$triangle_setup$area(d,q,clock);
+module raster_top$fragments$core$triangle_setup$area(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -24548,10 +24657,10 @@ module raster_top$core$triangle_setup$area(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$area
+endmodule // raster_top$fragments$core$triangle_setup$area
 
 
-module raster_top$core$triangle_setup$busy_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$busy_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24567,10 +24676,10 @@ module raster_top$core$triangle_setup$busy_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$busy_r
+endmodule // raster_top$fragments$core$triangle_setup$busy_r
 
 
-module raster_top$core$triangle_setup$crosses$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$crosses$0(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -24586,10 +24695,10 @@ module raster_top$core$triangle_setup$crosses$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$crosses$0
+endmodule // raster_top$fragments$core$triangle_setup$crosses$0
 
 
-module raster_top$core$triangle_setup$crosses$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$crosses$1(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -24605,10 +24714,10 @@ module raster_top$core$triangle_setup$crosses$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$crosses$1
+endmodule // raster_top$fragments$core$triangle_setup$crosses$1
 
 
-module raster_top$core$triangle_setup$crosses$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$crosses$2(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -24624,10 +24733,10 @@ module raster_top$core$triangle_setup$crosses$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$crosses$2
+endmodule // raster_top$fragments$core$triangle_setup$crosses$2
 
 
-module raster_top$core$triangle_setup$crosses$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$crosses$3(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -24643,10 +24752,10 @@ module raster_top$core$triangle_setup$crosses$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$crosses$3
+endmodule // raster_top$fragments$core$triangle_setup$crosses$3
 
 
-module raster_top$core$triangle_setup$crosses$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$crosses$4(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -24662,10 +24771,10 @@ module raster_top$core$triangle_setup$crosses$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$crosses$4
+endmodule // raster_top$fragments$core$triangle_setup$crosses$4
 
 
-module raster_top$core$triangle_setup$ddx_o$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$ddx_o$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -24681,10 +24790,10 @@ module raster_top$core$triangle_setup$ddx_o$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$ddx_o$0
+endmodule // raster_top$fragments$core$triangle_setup$ddx_o$0
 
 
-module raster_top$core$triangle_setup$ddx_o$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$ddx_o$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -24700,10 +24809,10 @@ module raster_top$core$triangle_setup$ddx_o$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$ddx_o$1
+endmodule // raster_top$fragments$core$triangle_setup$ddx_o$1
 
 
-module raster_top$core$triangle_setup$ddx_o$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$ddx_o$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -24719,10 +24828,10 @@ module raster_top$core$triangle_setup$ddx_o$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$ddx_o$2
+endmodule // raster_top$fragments$core$triangle_setup$ddx_o$2
 
 
-module raster_top$core$triangle_setup$ddx_o$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$ddx_o$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -24738,10 +24847,10 @@ module raster_top$core$triangle_setup$ddx_o$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$ddx_o$3
+endmodule // raster_top$fragments$core$triangle_setup$ddx_o$3
 
 
-module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
+module raster_top$fragments$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,inp_d,out_valid,out_ready,out_q,out_r);
     
     // Module arguments
     input wire  clock;
@@ -25068,7 +25177,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
     reg  [24:0] last_x;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$0 stages$0(
+    raster_top$fragments$core$triangle_setup$div$stages$0 stages$0(
         .clock(stages$0$clock),
         .enable(stages$0$enable),
         .valid_in(stages$0$valid_in),
@@ -25082,7 +25191,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$0$d),
         .neg(stages$0$neg)
     );
-    raster_top$core$triangle_setup$div$stages$1 stages$1(
+    raster_top$fragments$core$triangle_setup$div$stages$1 stages$1(
         .clock(stages$1$clock),
         .enable(stages$1$enable),
         .valid_in(stages$1$valid_in),
@@ -25096,7 +25205,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$1$d),
         .neg(stages$1$neg)
     );
-    raster_top$core$triangle_setup$div$stages$2 stages$2(
+    raster_top$fragments$core$triangle_setup$div$stages$2 stages$2(
         .clock(stages$2$clock),
         .enable(stages$2$enable),
         .valid_in(stages$2$valid_in),
@@ -25110,7 +25219,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$2$d),
         .neg(stages$2$neg)
     );
-    raster_top$core$triangle_setup$div$stages$3 stages$3(
+    raster_top$fragments$core$triangle_setup$div$stages$3 stages$3(
         .clock(stages$3$clock),
         .enable(stages$3$enable),
         .valid_in(stages$3$valid_in),
@@ -25124,7 +25233,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$3$d),
         .neg(stages$3$neg)
     );
-    raster_top$core$triangle_setup$div$stages$4 stages$4(
+    raster_top$fragments$core$triangle_setup$div$stages$4 stages$4(
         .clock(stages$4$clock),
         .enable(stages$4$enable),
         .valid_in(stages$4$valid_in),
@@ -25138,7 +25247,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$4$d),
         .neg(stages$4$neg)
     );
-    raster_top$core$triangle_setup$div$stages$5 stages$5(
+    raster_top$fragments$core$triangle_setup$div$stages$5 stages$5(
         .clock(stages$5$clock),
         .enable(stages$5$enable),
         .valid_in(stages$5$valid_in),
@@ -25152,7 +25261,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$5$d),
         .neg(stages$5$neg)
     );
-    raster_top$core$triangle_setup$div$stages$6 stages$6(
+    raster_top$fragments$core$triangle_setup$div$stages$6 stages$6(
         .clock(stages$6$clock),
         .enable(stages$6$enable),
         .valid_in(stages$6$valid_in),
@@ -25166,7 +25275,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$6$d),
         .neg(stages$6$neg)
     );
-    raster_top$core$triangle_setup$div$stages$7 stages$7(
+    raster_top$fragments$core$triangle_setup$div$stages$7 stages$7(
         .clock(stages$7$clock),
         .enable(stages$7$enable),
         .valid_in(stages$7$valid_in),
@@ -25180,7 +25289,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$7$d),
         .neg(stages$7$neg)
     );
-    raster_top$core$triangle_setup$div$stages$8 stages$8(
+    raster_top$fragments$core$triangle_setup$div$stages$8 stages$8(
         .clock(stages$8$clock),
         .enable(stages$8$enable),
         .valid_in(stages$8$valid_in),
@@ -25194,7 +25303,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$8$d),
         .neg(stages$8$neg)
     );
-    raster_top$core$triangle_setup$div$stages$9 stages$9(
+    raster_top$fragments$core$triangle_setup$div$stages$9 stages$9(
         .clock(stages$9$clock),
         .enable(stages$9$enable),
         .valid_in(stages$9$valid_in),
@@ -25208,7 +25317,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$9$d),
         .neg(stages$9$neg)
     );
-    raster_top$core$triangle_setup$div$stages$10 stages$10(
+    raster_top$fragments$core$triangle_setup$div$stages$10 stages$10(
         .clock(stages$10$clock),
         .enable(stages$10$enable),
         .valid_in(stages$10$valid_in),
@@ -25222,7 +25331,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$10$d),
         .neg(stages$10$neg)
     );
-    raster_top$core$triangle_setup$div$stages$11 stages$11(
+    raster_top$fragments$core$triangle_setup$div$stages$11 stages$11(
         .clock(stages$11$clock),
         .enable(stages$11$enable),
         .valid_in(stages$11$valid_in),
@@ -25236,7 +25345,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$11$d),
         .neg(stages$11$neg)
     );
-    raster_top$core$triangle_setup$div$stages$12 stages$12(
+    raster_top$fragments$core$triangle_setup$div$stages$12 stages$12(
         .clock(stages$12$clock),
         .enable(stages$12$enable),
         .valid_in(stages$12$valid_in),
@@ -25250,7 +25359,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$12$d),
         .neg(stages$12$neg)
     );
-    raster_top$core$triangle_setup$div$stages$13 stages$13(
+    raster_top$fragments$core$triangle_setup$div$stages$13 stages$13(
         .clock(stages$13$clock),
         .enable(stages$13$enable),
         .valid_in(stages$13$valid_in),
@@ -25264,7 +25373,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$13$d),
         .neg(stages$13$neg)
     );
-    raster_top$core$triangle_setup$div$stages$14 stages$14(
+    raster_top$fragments$core$triangle_setup$div$stages$14 stages$14(
         .clock(stages$14$clock),
         .enable(stages$14$enable),
         .valid_in(stages$14$valid_in),
@@ -25278,7 +25387,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$14$d),
         .neg(stages$14$neg)
     );
-    raster_top$core$triangle_setup$div$stages$15 stages$15(
+    raster_top$fragments$core$triangle_setup$div$stages$15 stages$15(
         .clock(stages$15$clock),
         .enable(stages$15$enable),
         .valid_in(stages$15$valid_in),
@@ -25292,7 +25401,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$15$d),
         .neg(stages$15$neg)
     );
-    raster_top$core$triangle_setup$div$stages$16 stages$16(
+    raster_top$fragments$core$triangle_setup$div$stages$16 stages$16(
         .clock(stages$16$clock),
         .enable(stages$16$enable),
         .valid_in(stages$16$valid_in),
@@ -25306,7 +25415,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$16$d),
         .neg(stages$16$neg)
     );
-    raster_top$core$triangle_setup$div$stages$17 stages$17(
+    raster_top$fragments$core$triangle_setup$div$stages$17 stages$17(
         .clock(stages$17$clock),
         .enable(stages$17$enable),
         .valid_in(stages$17$valid_in),
@@ -25320,7 +25429,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$17$d),
         .neg(stages$17$neg)
     );
-    raster_top$core$triangle_setup$div$stages$18 stages$18(
+    raster_top$fragments$core$triangle_setup$div$stages$18 stages$18(
         .clock(stages$18$clock),
         .enable(stages$18$enable),
         .valid_in(stages$18$valid_in),
@@ -25334,7 +25443,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$18$d),
         .neg(stages$18$neg)
     );
-    raster_top$core$triangle_setup$div$stages$19 stages$19(
+    raster_top$fragments$core$triangle_setup$div$stages$19 stages$19(
         .clock(stages$19$clock),
         .enable(stages$19$enable),
         .valid_in(stages$19$valid_in),
@@ -25348,7 +25457,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$19$d),
         .neg(stages$19$neg)
     );
-    raster_top$core$triangle_setup$div$stages$20 stages$20(
+    raster_top$fragments$core$triangle_setup$div$stages$20 stages$20(
         .clock(stages$20$clock),
         .enable(stages$20$enable),
         .valid_in(stages$20$valid_in),
@@ -25362,7 +25471,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$20$d),
         .neg(stages$20$neg)
     );
-    raster_top$core$triangle_setup$div$stages$21 stages$21(
+    raster_top$fragments$core$triangle_setup$div$stages$21 stages$21(
         .clock(stages$21$clock),
         .enable(stages$21$enable),
         .valid_in(stages$21$valid_in),
@@ -25376,7 +25485,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$21$d),
         .neg(stages$21$neg)
     );
-    raster_top$core$triangle_setup$div$stages$22 stages$22(
+    raster_top$fragments$core$triangle_setup$div$stages$22 stages$22(
         .clock(stages$22$clock),
         .enable(stages$22$enable),
         .valid_in(stages$22$valid_in),
@@ -25390,7 +25499,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$22$d),
         .neg(stages$22$neg)
     );
-    raster_top$core$triangle_setup$div$stages$23 stages$23(
+    raster_top$fragments$core$triangle_setup$div$stages$23 stages$23(
         .clock(stages$23$clock),
         .enable(stages$23$enable),
         .valid_in(stages$23$valid_in),
@@ -25404,7 +25513,7 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         .d(stages$23$d),
         .neg(stages$23$neg)
     );
-    raster_top$core$triangle_setup$div$stages$24 stages$24(
+    raster_top$fragments$core$triangle_setup$div$stages$24 stages$24(
         .clock(stages$24$clock),
         .enable(stages$24$enable),
         .valid_in(stages$24$valid_in),
@@ -25611,10 +25720,10 @@ module raster_top$core$triangle_setup$div(clock,inp_valid,inp_ready,hold,inp_n,i
         stages$24$neg_in = stages$23$neg;
     end
     
-endmodule // raster_top$core$triangle_setup$div
+endmodule // raster_top$fragments$core$triangle_setup$div
 
 
-module raster_top$core$triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -25662,27 +25771,27 @@ module raster_top$core$triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$0$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$0$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$0$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$0$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$0$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$0$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$0$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$0$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$0$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$0$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -25734,10 +25843,10 @@ module raster_top$core$triangle_setup$div$stages$0(clock,enable,valid_in,p_in,x_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$0
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$0
 
 
-module raster_top$core$triangle_setup$div$stages$0$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$0$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -25753,10 +25862,10 @@ module raster_top$core$triangle_setup$div$stages$0$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$0$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$0$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$0$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$0$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -25772,10 +25881,10 @@ module raster_top$core$triangle_setup$div$stages$0$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$0$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$0$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$0$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$0$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -25791,10 +25900,10 @@ module raster_top$core$triangle_setup$div$stages$0$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$0$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$0$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$0$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$0$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -25810,10 +25919,10 @@ module raster_top$core$triangle_setup$div$stages$0$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$0$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$0$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$0$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$0$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -25829,10 +25938,10 @@ module raster_top$core$triangle_setup$div$stages$0$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$0$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$0$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -25880,27 +25989,27 @@ module raster_top$core$triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$1$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$1$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$1$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$1$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$1$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$1$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$1$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$1$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$1$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$1$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -25952,10 +26061,10 @@ module raster_top$core$triangle_setup$div$stages$1(clock,enable,valid_in,p_in,x_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$1
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$1
 
 
-module raster_top$core$triangle_setup$div$stages$1$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$1$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -25971,10 +26080,10 @@ module raster_top$core$triangle_setup$div$stages$1$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$1$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$1$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$1$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$1$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -25990,10 +26099,10 @@ module raster_top$core$triangle_setup$div$stages$1$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$1$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$1$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$1$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$1$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -26009,10 +26118,10 @@ module raster_top$core$triangle_setup$div$stages$1$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$1$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$1$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$1$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$1$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -26028,10 +26137,10 @@ module raster_top$core$triangle_setup$div$stages$1$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$1$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$1$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$1$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$1$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -26047,10 +26156,10 @@ module raster_top$core$triangle_setup$div$stages$1$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$1$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$1$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$10(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$10(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -26098,27 +26207,27 @@ module raster_top$core$triangle_setup$div$stages$10(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$10$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$10$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$10$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$10$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$10$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$10$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$10$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$10$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$10$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$10$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -26170,10 +26279,10 @@ module raster_top$core$triangle_setup$div$stages$10(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$10
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$10
 
 
-module raster_top$core$triangle_setup$div$stages$10$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$10$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -26189,10 +26298,10 @@ module raster_top$core$triangle_setup$div$stages$10$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$10$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$10$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$10$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$10$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -26208,10 +26317,10 @@ module raster_top$core$triangle_setup$div$stages$10$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$10$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$10$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$10$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$10$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -26227,10 +26336,10 @@ module raster_top$core$triangle_setup$div$stages$10$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$10$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$10$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$10$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$10$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -26246,10 +26355,10 @@ module raster_top$core$triangle_setup$div$stages$10$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$10$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$10$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$10$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$10$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -26265,10 +26374,10 @@ module raster_top$core$triangle_setup$div$stages$10$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$10$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$10$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$11(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$11(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -26316,27 +26425,27 @@ module raster_top$core$triangle_setup$div$stages$11(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$11$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$11$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$11$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$11$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$11$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$11$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$11$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$11$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$11$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$11$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -26388,10 +26497,10 @@ module raster_top$core$triangle_setup$div$stages$11(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$11
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$11
 
 
-module raster_top$core$triangle_setup$div$stages$11$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$11$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -26407,10 +26516,10 @@ module raster_top$core$triangle_setup$div$stages$11$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$11$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$11$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$11$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$11$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -26426,10 +26535,10 @@ module raster_top$core$triangle_setup$div$stages$11$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$11$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$11$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$11$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$11$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -26445,10 +26554,10 @@ module raster_top$core$triangle_setup$div$stages$11$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$11$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$11$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$11$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$11$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -26464,10 +26573,10 @@ module raster_top$core$triangle_setup$div$stages$11$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$11$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$11$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$11$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$11$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -26483,10 +26592,10 @@ module raster_top$core$triangle_setup$div$stages$11$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$11$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$11$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$12(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$12(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -26534,27 +26643,27 @@ module raster_top$core$triangle_setup$div$stages$12(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$12$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$12$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$12$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$12$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$12$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$12$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$12$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$12$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$12$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$12$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -26606,10 +26715,10 @@ module raster_top$core$triangle_setup$div$stages$12(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$12
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$12
 
 
-module raster_top$core$triangle_setup$div$stages$12$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$12$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -26625,10 +26734,10 @@ module raster_top$core$triangle_setup$div$stages$12$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$12$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$12$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$12$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$12$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -26644,10 +26753,10 @@ module raster_top$core$triangle_setup$div$stages$12$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$12$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$12$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$12$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$12$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -26663,10 +26772,10 @@ module raster_top$core$triangle_setup$div$stages$12$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$12$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$12$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$12$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$12$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -26682,10 +26791,10 @@ module raster_top$core$triangle_setup$div$stages$12$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$12$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$12$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$12$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$12$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -26701,10 +26810,10 @@ module raster_top$core$triangle_setup$div$stages$12$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$12$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$12$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$13(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$13(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -26752,27 +26861,27 @@ module raster_top$core$triangle_setup$div$stages$13(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$13$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$13$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$13$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$13$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$13$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$13$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$13$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$13$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$13$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$13$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -26824,10 +26933,10 @@ module raster_top$core$triangle_setup$div$stages$13(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$13
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$13
 
 
-module raster_top$core$triangle_setup$div$stages$13$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$13$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -26843,10 +26952,10 @@ module raster_top$core$triangle_setup$div$stages$13$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$13$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$13$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$13$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$13$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -26862,10 +26971,10 @@ module raster_top$core$triangle_setup$div$stages$13$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$13$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$13$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$13$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$13$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -26881,10 +26990,10 @@ module raster_top$core$triangle_setup$div$stages$13$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$13$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$13$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$13$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$13$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -26900,10 +27009,10 @@ module raster_top$core$triangle_setup$div$stages$13$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$13$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$13$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$13$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$13$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -26919,10 +27028,10 @@ module raster_top$core$triangle_setup$div$stages$13$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$13$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$13$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$14(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$14(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -26970,27 +27079,27 @@ module raster_top$core$triangle_setup$div$stages$14(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$14$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$14$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$14$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$14$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$14$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$14$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$14$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$14$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$14$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$14$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -27042,10 +27151,10 @@ module raster_top$core$triangle_setup$div$stages$14(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$14
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$14
 
 
-module raster_top$core$triangle_setup$div$stages$14$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$14$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -27061,10 +27170,10 @@ module raster_top$core$triangle_setup$div$stages$14$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$14$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$14$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$14$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$14$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -27080,10 +27189,10 @@ module raster_top$core$triangle_setup$div$stages$14$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$14$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$14$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$14$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$14$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -27099,10 +27208,10 @@ module raster_top$core$triangle_setup$div$stages$14$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$14$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$14$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$14$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$14$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -27118,10 +27227,10 @@ module raster_top$core$triangle_setup$div$stages$14$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$14$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$14$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$14$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$14$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -27137,10 +27246,10 @@ module raster_top$core$triangle_setup$div$stages$14$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$14$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$14$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$15(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$15(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -27188,27 +27297,27 @@ module raster_top$core$triangle_setup$div$stages$15(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$15$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$15$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$15$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$15$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$15$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$15$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$15$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$15$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$15$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$15$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -27260,10 +27369,10 @@ module raster_top$core$triangle_setup$div$stages$15(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$15
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$15
 
 
-module raster_top$core$triangle_setup$div$stages$15$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$15$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -27279,10 +27388,10 @@ module raster_top$core$triangle_setup$div$stages$15$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$15$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$15$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$15$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$15$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -27298,10 +27407,10 @@ module raster_top$core$triangle_setup$div$stages$15$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$15$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$15$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$15$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$15$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -27317,10 +27426,10 @@ module raster_top$core$triangle_setup$div$stages$15$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$15$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$15$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$15$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$15$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -27336,10 +27445,10 @@ module raster_top$core$triangle_setup$div$stages$15$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$15$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$15$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$15$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$15$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -27355,10 +27464,10 @@ module raster_top$core$triangle_setup$div$stages$15$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$15$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$15$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$16(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$16(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -27406,27 +27515,27 @@ module raster_top$core$triangle_setup$div$stages$16(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$16$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$16$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$16$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$16$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$16$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$16$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$16$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$16$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$16$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$16$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -27478,10 +27587,10 @@ module raster_top$core$triangle_setup$div$stages$16(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$16
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$16
 
 
-module raster_top$core$triangle_setup$div$stages$16$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$16$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -27497,10 +27606,10 @@ module raster_top$core$triangle_setup$div$stages$16$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$16$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$16$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$16$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$16$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -27516,10 +27625,10 @@ module raster_top$core$triangle_setup$div$stages$16$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$16$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$16$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$16$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$16$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -27535,10 +27644,10 @@ module raster_top$core$triangle_setup$div$stages$16$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$16$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$16$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$16$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$16$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -27554,10 +27663,10 @@ module raster_top$core$triangle_setup$div$stages$16$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$16$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$16$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$16$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$16$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -27573,10 +27682,10 @@ module raster_top$core$triangle_setup$div$stages$16$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$16$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$16$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$17(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$17(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -27624,27 +27733,27 @@ module raster_top$core$triangle_setup$div$stages$17(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$17$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$17$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$17$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$17$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$17$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$17$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$17$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$17$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$17$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$17$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -27696,10 +27805,10 @@ module raster_top$core$triangle_setup$div$stages$17(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$17
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$17
 
 
-module raster_top$core$triangle_setup$div$stages$17$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$17$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -27715,10 +27824,10 @@ module raster_top$core$triangle_setup$div$stages$17$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$17$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$17$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$17$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$17$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -27734,10 +27843,10 @@ module raster_top$core$triangle_setup$div$stages$17$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$17$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$17$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$17$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$17$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -27753,10 +27862,10 @@ module raster_top$core$triangle_setup$div$stages$17$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$17$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$17$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$17$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$17$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -27772,10 +27881,10 @@ module raster_top$core$triangle_setup$div$stages$17$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$17$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$17$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$17$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$17$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -27791,10 +27900,10 @@ module raster_top$core$triangle_setup$div$stages$17$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$17$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$17$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$18(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$18(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -27842,27 +27951,27 @@ module raster_top$core$triangle_setup$div$stages$18(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$18$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$18$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$18$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$18$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$18$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$18$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$18$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$18$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$18$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$18$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -27914,10 +28023,10 @@ module raster_top$core$triangle_setup$div$stages$18(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$18
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$18
 
 
-module raster_top$core$triangle_setup$div$stages$18$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$18$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -27933,10 +28042,10 @@ module raster_top$core$triangle_setup$div$stages$18$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$18$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$18$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$18$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$18$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -27952,10 +28061,10 @@ module raster_top$core$triangle_setup$div$stages$18$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$18$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$18$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$18$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$18$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -27971,10 +28080,10 @@ module raster_top$core$triangle_setup$div$stages$18$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$18$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$18$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$18$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$18$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -27990,10 +28099,10 @@ module raster_top$core$triangle_setup$div$stages$18$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$18$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$18$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$18$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$18$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -28009,10 +28118,10 @@ module raster_top$core$triangle_setup$div$stages$18$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$18$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$18$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$19(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$19(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -28060,27 +28169,27 @@ module raster_top$core$triangle_setup$div$stages$19(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$19$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$19$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$19$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$19$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$19$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$19$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$19$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$19$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$19$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$19$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -28132,10 +28241,10 @@ module raster_top$core$triangle_setup$div$stages$19(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$19
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$19
 
 
-module raster_top$core$triangle_setup$div$stages$19$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$19$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -28151,10 +28260,10 @@ module raster_top$core$triangle_setup$div$stages$19$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$19$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$19$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$19$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$19$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -28170,10 +28279,10 @@ module raster_top$core$triangle_setup$div$stages$19$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$19$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$19$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$19$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$19$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -28189,10 +28298,10 @@ module raster_top$core$triangle_setup$div$stages$19$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$19$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$19$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$19$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$19$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -28208,10 +28317,10 @@ module raster_top$core$triangle_setup$div$stages$19$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$19$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$19$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$19$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$19$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -28227,10 +28336,10 @@ module raster_top$core$triangle_setup$div$stages$19$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$19$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$19$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -28278,27 +28387,27 @@ module raster_top$core$triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$2$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$2$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$2$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$2$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$2$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$2$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$2$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$2$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$2$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$2$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -28350,10 +28459,10 @@ module raster_top$core$triangle_setup$div$stages$2(clock,enable,valid_in,p_in,x_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$2
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$2
 
 
-module raster_top$core$triangle_setup$div$stages$2$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$2$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -28369,10 +28478,10 @@ module raster_top$core$triangle_setup$div$stages$2$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$2$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$2$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$2$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$2$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -28388,10 +28497,10 @@ module raster_top$core$triangle_setup$div$stages$2$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$2$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$2$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$2$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$2$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -28407,10 +28516,10 @@ module raster_top$core$triangle_setup$div$stages$2$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$2$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$2$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$2$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$2$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -28426,10 +28535,10 @@ module raster_top$core$triangle_setup$div$stages$2$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$2$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$2$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$2$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$2$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -28445,10 +28554,10 @@ module raster_top$core$triangle_setup$div$stages$2$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$2$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$2$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$20(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$20(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -28496,27 +28605,27 @@ module raster_top$core$triangle_setup$div$stages$20(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$20$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$20$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$20$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$20$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$20$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$20$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$20$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$20$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$20$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$20$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -28568,10 +28677,10 @@ module raster_top$core$triangle_setup$div$stages$20(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$20
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$20
 
 
-module raster_top$core$triangle_setup$div$stages$20$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$20$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -28587,10 +28696,10 @@ module raster_top$core$triangle_setup$div$stages$20$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$20$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$20$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$20$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$20$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -28606,10 +28715,10 @@ module raster_top$core$triangle_setup$div$stages$20$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$20$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$20$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$20$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$20$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -28625,10 +28734,10 @@ module raster_top$core$triangle_setup$div$stages$20$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$20$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$20$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$20$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$20$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -28644,10 +28753,10 @@ module raster_top$core$triangle_setup$div$stages$20$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$20$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$20$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$20$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$20$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -28663,10 +28772,10 @@ module raster_top$core$triangle_setup$div$stages$20$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$20$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$20$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$21(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$21(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -28714,27 +28823,27 @@ module raster_top$core$triangle_setup$div$stages$21(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$21$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$21$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$21$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$21$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$21$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$21$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$21$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$21$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$21$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$21$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -28786,10 +28895,10 @@ module raster_top$core$triangle_setup$div$stages$21(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$21
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$21
 
 
-module raster_top$core$triangle_setup$div$stages$21$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$21$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -28805,10 +28914,10 @@ module raster_top$core$triangle_setup$div$stages$21$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$21$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$21$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$21$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$21$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -28824,10 +28933,10 @@ module raster_top$core$triangle_setup$div$stages$21$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$21$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$21$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$21$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$21$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -28843,10 +28952,10 @@ module raster_top$core$triangle_setup$div$stages$21$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$21$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$21$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$21$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$21$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -28862,10 +28971,10 @@ module raster_top$core$triangle_setup$div$stages$21$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$21$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$21$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$21$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$21$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -28881,10 +28990,10 @@ module raster_top$core$triangle_setup$div$stages$21$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$21$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$21$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$22(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$22(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -28932,27 +29041,27 @@ module raster_top$core$triangle_setup$div$stages$22(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$22$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$22$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$22$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$22$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$22$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$22$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$22$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$22$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$22$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$22$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -29004,10 +29113,10 @@ module raster_top$core$triangle_setup$div$stages$22(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$22
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$22
 
 
-module raster_top$core$triangle_setup$div$stages$22$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$22$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -29023,10 +29132,10 @@ module raster_top$core$triangle_setup$div$stages$22$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$22$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$22$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$22$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$22$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -29042,10 +29151,10 @@ module raster_top$core$triangle_setup$div$stages$22$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$22$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$22$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$22$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$22$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -29061,10 +29170,10 @@ module raster_top$core$triangle_setup$div$stages$22$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$22$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$22$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$22$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$22$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -29080,10 +29189,10 @@ module raster_top$core$triangle_setup$div$stages$22$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$22$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$22$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$22$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$22$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -29099,10 +29208,10 @@ module raster_top$core$triangle_setup$div$stages$22$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$22$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$22$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$23(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$23(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -29150,27 +29259,27 @@ module raster_top$core$triangle_setup$div$stages$23(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$23$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$23$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$23$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$23$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$23$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$23$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$23$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$23$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$23$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$23$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -29222,10 +29331,10 @@ module raster_top$core$triangle_setup$div$stages$23(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$23
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$23
 
 
-module raster_top$core$triangle_setup$div$stages$23$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$23$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -29241,10 +29350,10 @@ module raster_top$core$triangle_setup$div$stages$23$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$23$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$23$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$23$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$23$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -29260,10 +29369,10 @@ module raster_top$core$triangle_setup$div$stages$23$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$23$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$23$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$23$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$23$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -29279,10 +29388,10 @@ module raster_top$core$triangle_setup$div$stages$23$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$23$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$23$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$23$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$23$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -29298,10 +29407,10 @@ module raster_top$core$triangle_setup$div$stages$23$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$23$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$23$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$23$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$23$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -29317,10 +29426,10 @@ module raster_top$core$triangle_setup$div$stages$23$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$23$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$23$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$24(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$24(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -29368,27 +29477,27 @@ module raster_top$core$triangle_setup$div$stages$24(clock,enable,valid_in,p_in,x
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$24$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$24$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$24$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$24$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$24$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$24$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$24$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$24$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$24$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$24$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -29440,10 +29549,10 @@ module raster_top$core$triangle_setup$div$stages$24(clock,enable,valid_in,p_in,x
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$24
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$24
 
 
-module raster_top$core$triangle_setup$div$stages$24$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$24$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -29459,10 +29568,10 @@ module raster_top$core$triangle_setup$div$stages$24$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$24$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$24$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$24$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$24$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -29478,10 +29587,10 @@ module raster_top$core$triangle_setup$div$stages$24$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$24$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$24$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$24$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$24$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -29497,10 +29606,10 @@ module raster_top$core$triangle_setup$div$stages$24$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$24$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$24$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$24$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$24$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -29516,10 +29625,10 @@ module raster_top$core$triangle_setup$div$stages$24$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$24$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$24$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$24$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$24$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -29535,10 +29644,10 @@ module raster_top$core$triangle_setup$div$stages$24$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$24$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$24$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -29586,27 +29695,27 @@ module raster_top$core$triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$3$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$3$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$3$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$3$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$3$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$3$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$3$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$3$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$3$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$3$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -29658,10 +29767,10 @@ module raster_top$core$triangle_setup$div$stages$3(clock,enable,valid_in,p_in,x_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$3
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$3
 
 
-module raster_top$core$triangle_setup$div$stages$3$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$3$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -29677,10 +29786,10 @@ module raster_top$core$triangle_setup$div$stages$3$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$3$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$3$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$3$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$3$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -29696,10 +29805,10 @@ module raster_top$core$triangle_setup$div$stages$3$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$3$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$3$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$3$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$3$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -29715,10 +29824,10 @@ module raster_top$core$triangle_setup$div$stages$3$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$3$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$3$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$3$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$3$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -29734,10 +29843,10 @@ module raster_top$core$triangle_setup$div$stages$3$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$3$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$3$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$3$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$3$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -29753,10 +29862,10 @@ module raster_top$core$triangle_setup$div$stages$3$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$3$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$3$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -29804,27 +29913,27 @@ module raster_top$core$triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$4$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$4$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$4$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$4$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$4$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$4$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$4$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$4$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$4$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$4$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -29876,10 +29985,10 @@ module raster_top$core$triangle_setup$div$stages$4(clock,enable,valid_in,p_in,x_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$4
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$4
 
 
-module raster_top$core$triangle_setup$div$stages$4$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$4$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -29895,10 +30004,10 @@ module raster_top$core$triangle_setup$div$stages$4$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$4$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$4$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$4$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$4$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -29914,10 +30023,10 @@ module raster_top$core$triangle_setup$div$stages$4$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$4$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$4$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$4$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$4$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -29933,10 +30042,10 @@ module raster_top$core$triangle_setup$div$stages$4$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$4$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$4$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$4$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$4$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -29952,10 +30061,10 @@ module raster_top$core$triangle_setup$div$stages$4$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$4$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$4$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$4$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$4$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -29971,10 +30080,10 @@ module raster_top$core$triangle_setup$div$stages$4$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$4$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$4$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$5(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$5(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -30022,27 +30131,27 @@ module raster_top$core$triangle_setup$div$stages$5(clock,enable,valid_in,p_in,x_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$5$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$5$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$5$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$5$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$5$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$5$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$5$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$5$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$5$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$5$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -30094,10 +30203,10 @@ module raster_top$core$triangle_setup$div$stages$5(clock,enable,valid_in,p_in,x_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$5
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$5
 
 
-module raster_top$core$triangle_setup$div$stages$5$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$5$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -30113,10 +30222,10 @@ module raster_top$core$triangle_setup$div$stages$5$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$5$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$5$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$5$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$5$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -30132,10 +30241,10 @@ module raster_top$core$triangle_setup$div$stages$5$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$5$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$5$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$5$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$5$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -30151,10 +30260,10 @@ module raster_top$core$triangle_setup$div$stages$5$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$5$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$5$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$5$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$5$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -30170,10 +30279,10 @@ module raster_top$core$triangle_setup$div$stages$5$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$5$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$5$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$5$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$5$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -30189,10 +30298,10 @@ module raster_top$core$triangle_setup$div$stages$5$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$5$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$5$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$6(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$6(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -30240,27 +30349,27 @@ module raster_top$core$triangle_setup$div$stages$6(clock,enable,valid_in,p_in,x_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$6$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$6$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$6$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$6$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$6$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$6$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$6$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$6$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$6$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$6$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -30312,10 +30421,10 @@ module raster_top$core$triangle_setup$div$stages$6(clock,enable,valid_in,p_in,x_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$6
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$6
 
 
-module raster_top$core$triangle_setup$div$stages$6$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$6$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -30331,10 +30440,10 @@ module raster_top$core$triangle_setup$div$stages$6$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$6$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$6$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$6$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$6$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -30350,10 +30459,10 @@ module raster_top$core$triangle_setup$div$stages$6$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$6$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$6$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$6$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$6$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -30369,10 +30478,10 @@ module raster_top$core$triangle_setup$div$stages$6$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$6$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$6$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$6$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$6$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -30388,10 +30497,10 @@ module raster_top$core$triangle_setup$div$stages$6$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$6$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$6$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$6$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$6$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -30407,10 +30516,10 @@ module raster_top$core$triangle_setup$div$stages$6$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$6$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$6$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$7(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$7(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -30458,27 +30567,27 @@ module raster_top$core$triangle_setup$div$stages$7(clock,enable,valid_in,p_in,x_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$7$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$7$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$7$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$7$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$7$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$7$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$7$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$7$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$7$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$7$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -30530,10 +30639,10 @@ module raster_top$core$triangle_setup$div$stages$7(clock,enable,valid_in,p_in,x_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$7
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$7
 
 
-module raster_top$core$triangle_setup$div$stages$7$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$7$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -30549,10 +30658,10 @@ module raster_top$core$triangle_setup$div$stages$7$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$7$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$7$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$7$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$7$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -30568,10 +30677,10 @@ module raster_top$core$triangle_setup$div$stages$7$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$7$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$7$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$7$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$7$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -30587,10 +30696,10 @@ module raster_top$core$triangle_setup$div$stages$7$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$7$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$7$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$7$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$7$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -30606,10 +30715,10 @@ module raster_top$core$triangle_setup$div$stages$7$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$7$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$7$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$7$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$7$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -30625,10 +30734,10 @@ module raster_top$core$triangle_setup$div$stages$7$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$7$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$7$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$8(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$8(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -30676,27 +30785,27 @@ module raster_top$core$triangle_setup$div$stages$8(clock,enable,valid_in,p_in,x_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$8$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$8$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$8$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$8$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$8$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$8$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$8$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$8$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$8$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$8$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -30748,10 +30857,10 @@ module raster_top$core$triangle_setup$div$stages$8(clock,enable,valid_in,p_in,x_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$8
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$8
 
 
-module raster_top$core$triangle_setup$div$stages$8$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$8$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -30767,10 +30876,10 @@ module raster_top$core$triangle_setup$div$stages$8$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$8$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$8$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$8$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$8$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -30786,10 +30895,10 @@ module raster_top$core$triangle_setup$div$stages$8$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$8$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$8$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$8$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$8$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -30805,10 +30914,10 @@ module raster_top$core$triangle_setup$div$stages$8$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$8$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$8$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$8$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$8$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -30824,10 +30933,10 @@ module raster_top$core$triangle_setup$div$stages$8$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$8$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$8$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$8$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$8$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -30843,10 +30952,10 @@ module raster_top$core$triangle_setup$div$stages$8$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$8$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$8$x_r
 
 
-module raster_top$core$triangle_setup$div$stages$9(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
+module raster_top$fragments$core$triangle_setup$div$stages$9(clock,enable,valid_in,p_in,x_in,d_in,neg_in,valid,p,x,d,neg);
     
     // Module arguments
     input wire  clock;
@@ -30894,27 +31003,27 @@ module raster_top$core$triangle_setup$div$stages$9(clock,enable,valid_in,p_in,x_
     reg  [34:0] d1;
     
     // Sub module instances
-    raster_top$core$triangle_setup$div$stages$9$valid_r valid_r(
+    raster_top$fragments$core$triangle_setup$div$stages$9$valid_r valid_r(
         .d(valid_r$d),
         .q(valid_r$q),
         .clock(valid_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$9$p_r p_r(
+    raster_top$fragments$core$triangle_setup$div$stages$9$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$9$x_r x_r(
+    raster_top$fragments$core$triangle_setup$div$stages$9$x_r x_r(
         .d(x_r$d),
         .q(x_r$q),
         .clock(x_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$9$d_r d_r(
+    raster_top$fragments$core$triangle_setup$div$stages$9$d_r d_r(
         .d(d_r$d),
         .q(d_r$q),
         .clock(d_r$clock)
     );
-    raster_top$core$triangle_setup$div$stages$9$neg_r neg_r(
+    raster_top$fragments$core$triangle_setup$div$stages$9$neg_r neg_r(
         .d(neg_r$d),
         .q(neg_r$q),
         .clock(neg_r$clock)
@@ -30966,10 +31075,10 @@ module raster_top$core$triangle_setup$div$stages$9(clock,enable,valid_in,p_in,x_
         neg = neg_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$div$stages$9
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$9
 
 
-module raster_top$core$triangle_setup$div$stages$9$d_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$9$d_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -30985,10 +31094,10 @@ module raster_top$core$triangle_setup$div$stages$9$d_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$9$d_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$9$d_r
 
 
-module raster_top$core$triangle_setup$div$stages$9$neg_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$9$neg_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -31004,10 +31113,10 @@ module raster_top$core$triangle_setup$div$stages$9$neg_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$9$neg_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$9$neg_r
 
 
-module raster_top$core$triangle_setup$div$stages$9$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$9$p_r(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -31023,10 +31132,10 @@ module raster_top$core$triangle_setup$div$stages$9$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$9$p_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$9$p_r
 
 
-module raster_top$core$triangle_setup$div$stages$9$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$9$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -31042,10 +31151,10 @@ module raster_top$core$triangle_setup$div$stages$9$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$9$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$9$valid_r
 
 
-module raster_top$core$triangle_setup$div$stages$9$x_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div$stages$9$x_r(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -31061,10 +31170,10 @@ module raster_top$core$triangle_setup$div$stages$9$x_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div$stages$9$x_r
+endmodule // raster_top$fragments$core$triangle_setup$div$stages$9$x_r
 
 
-module raster_top$core$triangle_setup$div_d(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div_d(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -31080,10 +31189,10 @@ module raster_top$core$triangle_setup$div_d(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div_d
+endmodule // raster_top$fragments$core$triangle_setup$div_d
 
 
-module raster_top$core$triangle_setup$div_n(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div_n(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -31099,10 +31208,10 @@ module raster_top$core$triangle_setup$div_n(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div_n
+endmodule // raster_top$fragments$core$triangle_setup$div_n
 
 
-module raster_top$core$triangle_setup$div_v(d,q,clock);
+module raster_top$fragments$core$triangle_setup$div_v(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -31118,10 +31227,10 @@ module raster_top$core$triangle_setup$div_v(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$div_v
+endmodule // raster_top$fragments$core$triangle_setup$div_v
 
 
-module raster_top$core$triangle_setup$exp$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$exp$0(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -31137,10 +31246,10 @@ module raster_top$core$triangle_setup$exp$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$exp$0
+endmodule // raster_top$fragments$core$triangle_setup$exp$0
 
 
-module raster_top$core$triangle_setup$exp$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$exp$1(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -31156,10 +31265,10 @@ module raster_top$core$triangle_setup$exp$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$exp$1
+endmodule // raster_top$fragments$core$triangle_setup$exp$1
 
 
-module raster_top$core$triangle_setup$exp$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$exp$2(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -31175,10 +31284,10 @@ module raster_top$core$triangle_setup$exp$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$exp$2
+endmodule // raster_top$fragments$core$triangle_setup$exp$2
 
 
-module raster_top$core$triangle_setup$exp$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$exp$3(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -31194,10 +31303,10 @@ module raster_top$core$triangle_setup$exp$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$exp$3
+endmodule // raster_top$fragments$core$triangle_setup$exp$3
 
 
-module raster_top$core$triangle_setup$exp$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$exp$4(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -31213,10 +31322,10 @@ module raster_top$core$triangle_setup$exp$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$exp$4
+endmodule // raster_top$fragments$core$triangle_setup$exp$4
 
 
-module raster_top$core$triangle_setup$g0(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$fragments$core$triangle_setup$g0(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
     input wire  clock;
@@ -31561,252 +31670,252 @@ module raster_top$core$triangle_setup$g0(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$
     reg  [18:0] tracked$2;
     
     // Sub module instances
-    raster_top$core$triangle_setup$g0$kdx_r$0 kdx_r$0(
+    raster_top$fragments$core$triangle_setup$g0$kdx_r$0 kdx_r$0(
         .d(kdx_r$0$d),
         .q(kdx_r$0$q),
         .clock(kdx_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$kdx_r$1 kdx_r$1(
+    raster_top$fragments$core$triangle_setup$g0$kdx_r$1 kdx_r$1(
         .d(kdx_r$1$d),
         .q(kdx_r$1$q),
         .clock(kdx_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$kdx_r$2 kdx_r$2(
+    raster_top$fragments$core$triangle_setup$g0$kdx_r$2 kdx_r$2(
         .d(kdx_r$2$d),
         .q(kdx_r$2$q),
         .clock(kdx_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$kdy_r$0 kdy_r$0(
+    raster_top$fragments$core$triangle_setup$g0$kdy_r$0 kdy_r$0(
         .d(kdy_r$0$d),
         .q(kdy_r$0$q),
         .clock(kdy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$kdy_r$1 kdy_r$1(
+    raster_top$fragments$core$triangle_setup$g0$kdy_r$1 kdy_r$1(
         .d(kdy_r$1$d),
         .q(kdy_r$1$q),
         .clock(kdy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$kdy_r$2 kdy_r$2(
+    raster_top$fragments$core$triangle_setup$g0$kdy_r$2 kdy_r$2(
         .d(kdy_r$2$d),
         .q(kdy_r$2$q),
         .clock(kdy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$up_r up_r(
+    raster_top$fragments$core$triangle_setup$g0$up_r up_r(
         .d(up_r$d),
         .q(up_r$q),
         .clock(up_r$clock)
     );
-    raster_top$core$triangle_setup$g0$edx_r$0 edx_r$0(
+    raster_top$fragments$core$triangle_setup$g0$edx_r$0 edx_r$0(
         .d(edx_r$0$d),
         .q(edx_r$0$q),
         .clock(edx_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$edx_r$1 edx_r$1(
+    raster_top$fragments$core$triangle_setup$g0$edx_r$1 edx_r$1(
         .d(edx_r$1$d),
         .q(edx_r$1$q),
         .clock(edx_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$edx_r$2 edx_r$2(
+    raster_top$fragments$core$triangle_setup$g0$edx_r$2 edx_r$2(
         .d(edx_r$2$d),
         .q(edx_r$2$q),
         .clock(edx_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$edy_r$0 edy_r$0(
+    raster_top$fragments$core$triangle_setup$g0$edy_r$0 edy_r$0(
         .d(edy_r$0$d),
         .q(edy_r$0$q),
         .clock(edy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$edy_r$1 edy_r$1(
+    raster_top$fragments$core$triangle_setup$g0$edy_r$1 edy_r$1(
         .d(edy_r$1$d),
         .q(edy_r$1$q),
         .clock(edy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$edy_r$2 edy_r$2(
+    raster_top$fragments$core$triangle_setup$g0$edy_r$2 edy_r$2(
         .d(edy_r$2$d),
         .q(edy_r$2$q),
         .clock(edy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$edy_d_r$0 edy_d_r$0(
+    raster_top$fragments$core$triangle_setup$g0$edy_d_r$0 edy_d_r$0(
         .d(edy_d_r$0$d),
         .q(edy_d_r$0$q),
         .clock(edy_d_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$edy_d_r$1 edy_d_r$1(
+    raster_top$fragments$core$triangle_setup$g0$edy_d_r$1 edy_d_r$1(
         .d(edy_d_r$1$d),
         .q(edy_d_r$1$q),
         .clock(edy_d_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$edy_d_r$2 edy_d_r$2(
+    raster_top$fragments$core$triangle_setup$g0$edy_d_r$2 edy_d_r$2(
         .d(edy_d_r$2$d),
         .q(edy_d_r$2$q),
         .clock(edy_d_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$ed16_r$0 ed16_r$0(
+    raster_top$fragments$core$triangle_setup$g0$ed16_r$0 ed16_r$0(
         .d(ed16_r$0$d),
         .q(ed16_r$0$q),
         .clock(ed16_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$ed16_r$1 ed16_r$1(
+    raster_top$fragments$core$triangle_setup$g0$ed16_r$1 ed16_r$1(
         .d(ed16_r$1$d),
         .q(ed16_r$1$q),
         .clock(ed16_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$ed16_r$2 ed16_r$2(
+    raster_top$fragments$core$triangle_setup$g0$ed16_r$2 ed16_r$2(
         .d(ed16_r$2$d),
         .q(ed16_r$2$q),
         .clock(ed16_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$cy_r$0 cy_r$0(
+    raster_top$fragments$core$triangle_setup$g0$cy_r$0 cy_r$0(
         .d(cy_r$0$d),
         .q(cy_r$0$q),
         .clock(cy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$cy_r$1 cy_r$1(
+    raster_top$fragments$core$triangle_setup$g0$cy_r$1 cy_r$1(
         .d(cy_r$1$d),
         .q(cy_r$1$q),
         .clock(cy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$cy_r$2 cy_r$2(
+    raster_top$fragments$core$triangle_setup$g0$cy_r$2 cy_r$2(
         .d(cy_r$2$d),
         .q(cy_r$2$q),
         .clock(cy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$count_r$0 count_r$0(
+    raster_top$fragments$core$triangle_setup$g0$count_r$0 count_r$0(
         .d(count_r$0$d),
         .q(count_r$0$q),
         .clock(count_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$count_r$1 count_r$1(
+    raster_top$fragments$core$triangle_setup$g0$count_r$1 count_r$1(
         .d(count_r$1$d),
         .q(count_r$1$q),
         .clock(count_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$count_r$2 count_r$2(
+    raster_top$fragments$core$triangle_setup$g0$count_r$2 count_r$2(
         .d(count_r$2$d),
         .q(count_r$2$q),
         .clock(count_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$toff_r$0 toff_r$0(
+    raster_top$fragments$core$triangle_setup$g0$toff_r$0 toff_r$0(
         .d(toff_r$0$d),
         .q(toff_r$0$q),
         .clock(toff_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$toff_r$1 toff_r$1(
+    raster_top$fragments$core$triangle_setup$g0$toff_r$1 toff_r$1(
         .d(toff_r$1$d),
         .q(toff_r$1$q),
         .clock(toff_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$toff_r$2 toff_r$2(
+    raster_top$fragments$core$triangle_setup$g0$toff_r$2 toff_r$2(
         .d(toff_r$2$d),
         .q(toff_r$2$q),
         .clock(toff_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$xf_r$0 xf_r$0(
+    raster_top$fragments$core$triangle_setup$g0$xf_r$0 xf_r$0(
         .d(xf_r$0$d),
         .q(xf_r$0$q),
         .clock(xf_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$xf_r$1 xf_r$1(
+    raster_top$fragments$core$triangle_setup$g0$xf_r$1 xf_r$1(
         .d(xf_r$1$d),
         .q(xf_r$1$q),
         .clock(xf_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$xf_r$2 xf_r$2(
+    raster_top$fragments$core$triangle_setup$g0$xf_r$2 xf_r$2(
         .d(xf_r$2$d),
         .q(xf_r$2$q),
         .clock(xf_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$xi_r$0 xi_r$0(
+    raster_top$fragments$core$triangle_setup$g0$xi_r$0 xi_r$0(
         .d(xi_r$0$d),
         .q(xi_r$0$q),
         .clock(xi_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$xi_r$1 xi_r$1(
+    raster_top$fragments$core$triangle_setup$g0$xi_r$1 xi_r$1(
         .d(xi_r$1$d),
         .q(xi_r$1$q),
         .clock(xi_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$xi_r$2 xi_r$2(
+    raster_top$fragments$core$triangle_setup$g0$xi_r$2 xi_r$2(
         .d(xi_r$2$d),
         .q(xi_r$2$q),
         .clock(xi_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$off_y_r$0 off_y_r$0(
+    raster_top$fragments$core$triangle_setup$g0$off_y_r$0 off_y_r$0(
         .d(off_y_r$0$d),
         .q(off_y_r$0$q),
         .clock(off_y_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$off_y_r$1 off_y_r$1(
+    raster_top$fragments$core$triangle_setup$g0$off_y_r$1 off_y_r$1(
         .d(off_y_r$1$d),
         .q(off_y_r$1$q),
         .clock(off_y_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$off_y_r$2 off_y_r$2(
+    raster_top$fragments$core$triangle_setup$g0$off_y_r$2 off_y_r$2(
         .d(off_y_r$2$d),
         .q(off_y_r$2$q),
         .clock(off_y_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$dmaj_r$0 dmaj_r$0(
+    raster_top$fragments$core$triangle_setup$g0$dmaj_r$0 dmaj_r$0(
         .d(dmaj_r$0$d),
         .q(dmaj_r$0$q),
         .clock(dmaj_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$dmaj_r$1 dmaj_r$1(
+    raster_top$fragments$core$triangle_setup$g0$dmaj_r$1 dmaj_r$1(
         .d(dmaj_r$1$d),
         .q(dmaj_r$1$q),
         .clock(dmaj_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$dmaj_r$2 dmaj_r$2(
+    raster_top$fragments$core$triangle_setup$g0$dmaj_r$2 dmaj_r$2(
         .d(dmaj_r$2$d),
         .q(dmaj_r$2$q),
         .clock(dmaj_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$dmaj_r$3 dmaj_r$3(
+    raster_top$fragments$core$triangle_setup$g0$dmaj_r$3 dmaj_r$3(
         .d(dmaj_r$3$d),
         .q(dmaj_r$3$q),
         .clock(dmaj_r$3$clock)
     );
-    raster_top$core$triangle_setup$g0$dbot_r$0 dbot_r$0(
+    raster_top$fragments$core$triangle_setup$g0$dbot_r$0 dbot_r$0(
         .d(dbot_r$0$d),
         .q(dbot_r$0$q),
         .clock(dbot_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$dbot_r$1 dbot_r$1(
+    raster_top$fragments$core$triangle_setup$g0$dbot_r$1 dbot_r$1(
         .d(dbot_r$1$d),
         .q(dbot_r$1$q),
         .clock(dbot_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$dbot_r$2 dbot_r$2(
+    raster_top$fragments$core$triangle_setup$g0$dbot_r$2 dbot_r$2(
         .d(dbot_r$2$d),
         .q(dbot_r$2$q),
         .clock(dbot_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$dbot_r$3 dbot_r$3(
+    raster_top$fragments$core$triangle_setup$g0$dbot_r$3 dbot_r$3(
         .d(dbot_r$3$d),
         .q(dbot_r$3$q),
         .clock(dbot_r$3$clock)
     );
-    raster_top$core$triangle_setup$g0$attr0_r$0 attr0_r$0(
+    raster_top$fragments$core$triangle_setup$g0$attr0_r$0 attr0_r$0(
         .d(attr0_r$0$d),
         .q(attr0_r$0$q),
         .clock(attr0_r$0$clock)
     );
-    raster_top$core$triangle_setup$g0$attr0_r$1 attr0_r$1(
+    raster_top$fragments$core$triangle_setup$g0$attr0_r$1 attr0_r$1(
         .d(attr0_r$1$d),
         .q(attr0_r$1$q),
         .clock(attr0_r$1$clock)
     );
-    raster_top$core$triangle_setup$g0$attr0_r$2 attr0_r$2(
+    raster_top$fragments$core$triangle_setup$g0$attr0_r$2 attr0_r$2(
         .d(attr0_r$2$d),
         .q(attr0_r$2$q),
         .clock(attr0_r$2$clock)
     );
-    raster_top$core$triangle_setup$g0$attr0_r$3 attr0_r$3(
+    raster_top$fragments$core$triangle_setup$g0$attr0_r$3 attr0_r$3(
         .d(attr0_r$3$d),
         .q(attr0_r$3$q),
         .clock(attr0_r$3$clock)
     );
-    raster_top$core$triangle_setup$g0$xn0_r xn0_r(
+    raster_top$fragments$core$triangle_setup$g0$xn0_r xn0_r(
         .d(xn0_r$d),
         .q(xn0_r$q),
         .clock(xn0_r$clock)
@@ -32131,10 +32240,10 @@ module raster_top$core$triangle_setup$g0(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$
         attr0$3 = attr0_r$3$q;
     end
     
-endmodule // raster_top$core$triangle_setup$g0
+endmodule // raster_top$fragments$core$triangle_setup$g0
 
 
-module raster_top$core$triangle_setup$g0$attr0_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$attr0_r$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -32150,10 +32259,10 @@ module raster_top$core$triangle_setup$g0$attr0_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$attr0_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$attr0_r$0
 
 
-module raster_top$core$triangle_setup$g0$attr0_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$attr0_r$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -32169,10 +32278,10 @@ module raster_top$core$triangle_setup$g0$attr0_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$attr0_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$attr0_r$1
 
 
-module raster_top$core$triangle_setup$g0$attr0_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$attr0_r$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -32188,10 +32297,10 @@ module raster_top$core$triangle_setup$g0$attr0_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$attr0_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$attr0_r$2
 
 
-module raster_top$core$triangle_setup$g0$attr0_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$attr0_r$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -32207,10 +32316,10 @@ module raster_top$core$triangle_setup$g0$attr0_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$attr0_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g0$attr0_r$3
 
 
-module raster_top$core$triangle_setup$g0$count_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$count_r$0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -32226,10 +32335,10 @@ module raster_top$core$triangle_setup$g0$count_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$count_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$count_r$0
 
 
-module raster_top$core$triangle_setup$g0$count_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$count_r$1(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -32245,10 +32354,10 @@ module raster_top$core$triangle_setup$g0$count_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$count_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$count_r$1
 
 
-module raster_top$core$triangle_setup$g0$count_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$count_r$2(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -32264,10 +32373,10 @@ module raster_top$core$triangle_setup$g0$count_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$count_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$count_r$2
 
 
-module raster_top$core$triangle_setup$g0$cy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$cy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32283,10 +32392,10 @@ module raster_top$core$triangle_setup$g0$cy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$cy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$cy_r$0
 
 
-module raster_top$core$triangle_setup$g0$cy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$cy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32302,10 +32411,10 @@ module raster_top$core$triangle_setup$g0$cy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$cy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$cy_r$1
 
 
-module raster_top$core$triangle_setup$g0$cy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$cy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32321,10 +32430,10 @@ module raster_top$core$triangle_setup$g0$cy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$cy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$cy_r$2
 
 
-module raster_top$core$triangle_setup$g0$dbot_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$dbot_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32340,10 +32449,10 @@ module raster_top$core$triangle_setup$g0$dbot_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$dbot_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$dbot_r$0
 
 
-module raster_top$core$triangle_setup$g0$dbot_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$dbot_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32359,10 +32468,10 @@ module raster_top$core$triangle_setup$g0$dbot_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$dbot_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$dbot_r$1
 
 
-module raster_top$core$triangle_setup$g0$dbot_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$dbot_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32378,10 +32487,10 @@ module raster_top$core$triangle_setup$g0$dbot_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$dbot_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$dbot_r$2
 
 
-module raster_top$core$triangle_setup$g0$dbot_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$dbot_r$3(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32397,10 +32506,10 @@ module raster_top$core$triangle_setup$g0$dbot_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$dbot_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g0$dbot_r$3
 
 
-module raster_top$core$triangle_setup$g0$dmaj_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$dmaj_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32416,10 +32525,10 @@ module raster_top$core$triangle_setup$g0$dmaj_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$dmaj_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$dmaj_r$0
 
 
-module raster_top$core$triangle_setup$g0$dmaj_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$dmaj_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32435,10 +32544,10 @@ module raster_top$core$triangle_setup$g0$dmaj_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$dmaj_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$dmaj_r$1
 
 
-module raster_top$core$triangle_setup$g0$dmaj_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$dmaj_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32454,10 +32563,10 @@ module raster_top$core$triangle_setup$g0$dmaj_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$dmaj_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$dmaj_r$2
 
 
-module raster_top$core$triangle_setup$g0$dmaj_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$dmaj_r$3(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32473,10 +32582,10 @@ module raster_top$core$triangle_setup$g0$dmaj_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$dmaj_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g0$dmaj_r$3
 
 
-module raster_top$core$triangle_setup$g0$ed16_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$ed16_r$0(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -32492,10 +32601,10 @@ module raster_top$core$triangle_setup$g0$ed16_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$ed16_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$ed16_r$0
 
 
-module raster_top$core$triangle_setup$g0$ed16_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$ed16_r$1(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -32511,10 +32620,10 @@ module raster_top$core$triangle_setup$g0$ed16_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$ed16_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$ed16_r$1
 
 
-module raster_top$core$triangle_setup$g0$ed16_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$ed16_r$2(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -32530,10 +32639,10 @@ module raster_top$core$triangle_setup$g0$ed16_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$ed16_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$ed16_r$2
 
 
-module raster_top$core$triangle_setup$g0$edx_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$edx_r$0(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -32549,10 +32658,10 @@ module raster_top$core$triangle_setup$g0$edx_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$edx_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$edx_r$0
 
 
-module raster_top$core$triangle_setup$g0$edx_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$edx_r$1(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -32568,10 +32677,10 @@ module raster_top$core$triangle_setup$g0$edx_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$edx_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$edx_r$1
 
 
-module raster_top$core$triangle_setup$g0$edx_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$edx_r$2(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -32587,10 +32696,10 @@ module raster_top$core$triangle_setup$g0$edx_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$edx_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$edx_r$2
 
 
-module raster_top$core$triangle_setup$g0$edy_d_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$edy_d_r$0(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -32606,10 +32715,10 @@ module raster_top$core$triangle_setup$g0$edy_d_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$edy_d_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$edy_d_r$0
 
 
-module raster_top$core$triangle_setup$g0$edy_d_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$edy_d_r$1(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -32625,10 +32734,10 @@ module raster_top$core$triangle_setup$g0$edy_d_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$edy_d_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$edy_d_r$1
 
 
-module raster_top$core$triangle_setup$g0$edy_d_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$edy_d_r$2(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -32644,10 +32753,10 @@ module raster_top$core$triangle_setup$g0$edy_d_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$edy_d_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$edy_d_r$2
 
 
-module raster_top$core$triangle_setup$g0$edy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$edy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -32663,10 +32772,10 @@ module raster_top$core$triangle_setup$g0$edy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$edy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$edy_r$0
 
 
-module raster_top$core$triangle_setup$g0$edy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$edy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -32682,10 +32791,10 @@ module raster_top$core$triangle_setup$g0$edy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$edy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$edy_r$1
 
 
-module raster_top$core$triangle_setup$g0$edy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$edy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -32701,10 +32810,10 @@ module raster_top$core$triangle_setup$g0$edy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$edy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$edy_r$2
 
 
-module raster_top$core$triangle_setup$g0$kdx_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$kdx_r$0(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -32720,10 +32829,10 @@ module raster_top$core$triangle_setup$g0$kdx_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$kdx_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$kdx_r$0
 
 
-module raster_top$core$triangle_setup$g0$kdx_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$kdx_r$1(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -32739,10 +32848,10 @@ module raster_top$core$triangle_setup$g0$kdx_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$kdx_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$kdx_r$1
 
 
-module raster_top$core$triangle_setup$g0$kdx_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$kdx_r$2(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -32758,10 +32867,10 @@ module raster_top$core$triangle_setup$g0$kdx_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$kdx_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$kdx_r$2
 
 
-module raster_top$core$triangle_setup$g0$kdy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$kdy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -32777,10 +32886,10 @@ module raster_top$core$triangle_setup$g0$kdy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$kdy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$kdy_r$0
 
 
-module raster_top$core$triangle_setup$g0$kdy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$kdy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -32796,10 +32905,10 @@ module raster_top$core$triangle_setup$g0$kdy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$kdy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$kdy_r$1
 
 
-module raster_top$core$triangle_setup$g0$kdy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$kdy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -32815,10 +32924,10 @@ module raster_top$core$triangle_setup$g0$kdy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$kdy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$kdy_r$2
 
 
-module raster_top$core$triangle_setup$g0$off_y_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$off_y_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32834,10 +32943,10 @@ module raster_top$core$triangle_setup$g0$off_y_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$off_y_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$off_y_r$0
 
 
-module raster_top$core$triangle_setup$g0$off_y_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$off_y_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32853,10 +32962,10 @@ module raster_top$core$triangle_setup$g0$off_y_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$off_y_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$off_y_r$1
 
 
-module raster_top$core$triangle_setup$g0$off_y_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$off_y_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32872,10 +32981,10 @@ module raster_top$core$triangle_setup$g0$off_y_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$off_y_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$off_y_r$2
 
 
-module raster_top$core$triangle_setup$g0$toff_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$toff_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32891,10 +33000,10 @@ module raster_top$core$triangle_setup$g0$toff_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$toff_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$toff_r$0
 
 
-module raster_top$core$triangle_setup$g0$toff_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$toff_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32910,10 +33019,10 @@ module raster_top$core$triangle_setup$g0$toff_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$toff_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$toff_r$1
 
 
-module raster_top$core$triangle_setup$g0$toff_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$toff_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32929,10 +33038,10 @@ module raster_top$core$triangle_setup$g0$toff_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$toff_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$toff_r$2
 
 
-module raster_top$core$triangle_setup$g0$up_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$up_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -32948,10 +33057,10 @@ module raster_top$core$triangle_setup$g0$up_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$up_r
+endmodule // raster_top$fragments$core$triangle_setup$g0$up_r
 
 
-module raster_top$core$triangle_setup$g0$xf_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$xf_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32967,10 +33076,10 @@ module raster_top$core$triangle_setup$g0$xf_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$xf_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$xf_r$0
 
 
-module raster_top$core$triangle_setup$g0$xf_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$xf_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -32986,10 +33095,10 @@ module raster_top$core$triangle_setup$g0$xf_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$xf_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$xf_r$1
 
 
-module raster_top$core$triangle_setup$g0$xf_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$xf_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -33005,10 +33114,10 @@ module raster_top$core$triangle_setup$g0$xf_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$xf_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$xf_r$2
 
 
-module raster_top$core$triangle_setup$g0$xi_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$xi_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -33024,10 +33133,10 @@ module raster_top$core$triangle_setup$g0$xi_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$xi_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g0$xi_r$0
 
 
-module raster_top$core$triangle_setup$g0$xi_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$xi_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -33043,10 +33152,10 @@ module raster_top$core$triangle_setup$g0$xi_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$xi_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g0$xi_r$1
 
 
-module raster_top$core$triangle_setup$g0$xi_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$xi_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -33062,10 +33171,10 @@ module raster_top$core$triangle_setup$g0$xi_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$xi_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g0$xi_r$2
 
 
-module raster_top$core$triangle_setup$g0$xn0_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g0$xn0_r(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -33081,10 +33190,10 @@ module raster_top$core$triangle_setup$g0$xn0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g0$xn0_r
+endmodule // raster_top$fragments$core$triangle_setup$g0$xn0_r
 
 
-module raster_top$core$triangle_setup$g1(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$fragments$core$triangle_setup$g1(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
     input wire  clock;
@@ -33429,252 +33538,252 @@ module raster_top$core$triangle_setup$g1(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$
     reg  [18:0] tracked$2;
     
     // Sub module instances
-    raster_top$core$triangle_setup$g1$kdx_r$0 kdx_r$0(
+    raster_top$fragments$core$triangle_setup$g1$kdx_r$0 kdx_r$0(
         .d(kdx_r$0$d),
         .q(kdx_r$0$q),
         .clock(kdx_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$kdx_r$1 kdx_r$1(
+    raster_top$fragments$core$triangle_setup$g1$kdx_r$1 kdx_r$1(
         .d(kdx_r$1$d),
         .q(kdx_r$1$q),
         .clock(kdx_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$kdx_r$2 kdx_r$2(
+    raster_top$fragments$core$triangle_setup$g1$kdx_r$2 kdx_r$2(
         .d(kdx_r$2$d),
         .q(kdx_r$2$q),
         .clock(kdx_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$kdy_r$0 kdy_r$0(
+    raster_top$fragments$core$triangle_setup$g1$kdy_r$0 kdy_r$0(
         .d(kdy_r$0$d),
         .q(kdy_r$0$q),
         .clock(kdy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$kdy_r$1 kdy_r$1(
+    raster_top$fragments$core$triangle_setup$g1$kdy_r$1 kdy_r$1(
         .d(kdy_r$1$d),
         .q(kdy_r$1$q),
         .clock(kdy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$kdy_r$2 kdy_r$2(
+    raster_top$fragments$core$triangle_setup$g1$kdy_r$2 kdy_r$2(
         .d(kdy_r$2$d),
         .q(kdy_r$2$q),
         .clock(kdy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$up_r up_r(
+    raster_top$fragments$core$triangle_setup$g1$up_r up_r(
         .d(up_r$d),
         .q(up_r$q),
         .clock(up_r$clock)
     );
-    raster_top$core$triangle_setup$g1$edx_r$0 edx_r$0(
+    raster_top$fragments$core$triangle_setup$g1$edx_r$0 edx_r$0(
         .d(edx_r$0$d),
         .q(edx_r$0$q),
         .clock(edx_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$edx_r$1 edx_r$1(
+    raster_top$fragments$core$triangle_setup$g1$edx_r$1 edx_r$1(
         .d(edx_r$1$d),
         .q(edx_r$1$q),
         .clock(edx_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$edx_r$2 edx_r$2(
+    raster_top$fragments$core$triangle_setup$g1$edx_r$2 edx_r$2(
         .d(edx_r$2$d),
         .q(edx_r$2$q),
         .clock(edx_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$edy_r$0 edy_r$0(
+    raster_top$fragments$core$triangle_setup$g1$edy_r$0 edy_r$0(
         .d(edy_r$0$d),
         .q(edy_r$0$q),
         .clock(edy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$edy_r$1 edy_r$1(
+    raster_top$fragments$core$triangle_setup$g1$edy_r$1 edy_r$1(
         .d(edy_r$1$d),
         .q(edy_r$1$q),
         .clock(edy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$edy_r$2 edy_r$2(
+    raster_top$fragments$core$triangle_setup$g1$edy_r$2 edy_r$2(
         .d(edy_r$2$d),
         .q(edy_r$2$q),
         .clock(edy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$edy_d_r$0 edy_d_r$0(
+    raster_top$fragments$core$triangle_setup$g1$edy_d_r$0 edy_d_r$0(
         .d(edy_d_r$0$d),
         .q(edy_d_r$0$q),
         .clock(edy_d_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$edy_d_r$1 edy_d_r$1(
+    raster_top$fragments$core$triangle_setup$g1$edy_d_r$1 edy_d_r$1(
         .d(edy_d_r$1$d),
         .q(edy_d_r$1$q),
         .clock(edy_d_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$edy_d_r$2 edy_d_r$2(
+    raster_top$fragments$core$triangle_setup$g1$edy_d_r$2 edy_d_r$2(
         .d(edy_d_r$2$d),
         .q(edy_d_r$2$q),
         .clock(edy_d_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$ed16_r$0 ed16_r$0(
+    raster_top$fragments$core$triangle_setup$g1$ed16_r$0 ed16_r$0(
         .d(ed16_r$0$d),
         .q(ed16_r$0$q),
         .clock(ed16_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$ed16_r$1 ed16_r$1(
+    raster_top$fragments$core$triangle_setup$g1$ed16_r$1 ed16_r$1(
         .d(ed16_r$1$d),
         .q(ed16_r$1$q),
         .clock(ed16_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$ed16_r$2 ed16_r$2(
+    raster_top$fragments$core$triangle_setup$g1$ed16_r$2 ed16_r$2(
         .d(ed16_r$2$d),
         .q(ed16_r$2$q),
         .clock(ed16_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$cy_r$0 cy_r$0(
+    raster_top$fragments$core$triangle_setup$g1$cy_r$0 cy_r$0(
         .d(cy_r$0$d),
         .q(cy_r$0$q),
         .clock(cy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$cy_r$1 cy_r$1(
+    raster_top$fragments$core$triangle_setup$g1$cy_r$1 cy_r$1(
         .d(cy_r$1$d),
         .q(cy_r$1$q),
         .clock(cy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$cy_r$2 cy_r$2(
+    raster_top$fragments$core$triangle_setup$g1$cy_r$2 cy_r$2(
         .d(cy_r$2$d),
         .q(cy_r$2$q),
         .clock(cy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$count_r$0 count_r$0(
+    raster_top$fragments$core$triangle_setup$g1$count_r$0 count_r$0(
         .d(count_r$0$d),
         .q(count_r$0$q),
         .clock(count_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$count_r$1 count_r$1(
+    raster_top$fragments$core$triangle_setup$g1$count_r$1 count_r$1(
         .d(count_r$1$d),
         .q(count_r$1$q),
         .clock(count_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$count_r$2 count_r$2(
+    raster_top$fragments$core$triangle_setup$g1$count_r$2 count_r$2(
         .d(count_r$2$d),
         .q(count_r$2$q),
         .clock(count_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$toff_r$0 toff_r$0(
+    raster_top$fragments$core$triangle_setup$g1$toff_r$0 toff_r$0(
         .d(toff_r$0$d),
         .q(toff_r$0$q),
         .clock(toff_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$toff_r$1 toff_r$1(
+    raster_top$fragments$core$triangle_setup$g1$toff_r$1 toff_r$1(
         .d(toff_r$1$d),
         .q(toff_r$1$q),
         .clock(toff_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$toff_r$2 toff_r$2(
+    raster_top$fragments$core$triangle_setup$g1$toff_r$2 toff_r$2(
         .d(toff_r$2$d),
         .q(toff_r$2$q),
         .clock(toff_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$xf_r$0 xf_r$0(
+    raster_top$fragments$core$triangle_setup$g1$xf_r$0 xf_r$0(
         .d(xf_r$0$d),
         .q(xf_r$0$q),
         .clock(xf_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$xf_r$1 xf_r$1(
+    raster_top$fragments$core$triangle_setup$g1$xf_r$1 xf_r$1(
         .d(xf_r$1$d),
         .q(xf_r$1$q),
         .clock(xf_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$xf_r$2 xf_r$2(
+    raster_top$fragments$core$triangle_setup$g1$xf_r$2 xf_r$2(
         .d(xf_r$2$d),
         .q(xf_r$2$q),
         .clock(xf_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$xi_r$0 xi_r$0(
+    raster_top$fragments$core$triangle_setup$g1$xi_r$0 xi_r$0(
         .d(xi_r$0$d),
         .q(xi_r$0$q),
         .clock(xi_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$xi_r$1 xi_r$1(
+    raster_top$fragments$core$triangle_setup$g1$xi_r$1 xi_r$1(
         .d(xi_r$1$d),
         .q(xi_r$1$q),
         .clock(xi_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$xi_r$2 xi_r$2(
+    raster_top$fragments$core$triangle_setup$g1$xi_r$2 xi_r$2(
         .d(xi_r$2$d),
         .q(xi_r$2$q),
         .clock(xi_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$off_y_r$0 off_y_r$0(
+    raster_top$fragments$core$triangle_setup$g1$off_y_r$0 off_y_r$0(
         .d(off_y_r$0$d),
         .q(off_y_r$0$q),
         .clock(off_y_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$off_y_r$1 off_y_r$1(
+    raster_top$fragments$core$triangle_setup$g1$off_y_r$1 off_y_r$1(
         .d(off_y_r$1$d),
         .q(off_y_r$1$q),
         .clock(off_y_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$off_y_r$2 off_y_r$2(
+    raster_top$fragments$core$triangle_setup$g1$off_y_r$2 off_y_r$2(
         .d(off_y_r$2$d),
         .q(off_y_r$2$q),
         .clock(off_y_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$dmaj_r$0 dmaj_r$0(
+    raster_top$fragments$core$triangle_setup$g1$dmaj_r$0 dmaj_r$0(
         .d(dmaj_r$0$d),
         .q(dmaj_r$0$q),
         .clock(dmaj_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$dmaj_r$1 dmaj_r$1(
+    raster_top$fragments$core$triangle_setup$g1$dmaj_r$1 dmaj_r$1(
         .d(dmaj_r$1$d),
         .q(dmaj_r$1$q),
         .clock(dmaj_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$dmaj_r$2 dmaj_r$2(
+    raster_top$fragments$core$triangle_setup$g1$dmaj_r$2 dmaj_r$2(
         .d(dmaj_r$2$d),
         .q(dmaj_r$2$q),
         .clock(dmaj_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$dmaj_r$3 dmaj_r$3(
+    raster_top$fragments$core$triangle_setup$g1$dmaj_r$3 dmaj_r$3(
         .d(dmaj_r$3$d),
         .q(dmaj_r$3$q),
         .clock(dmaj_r$3$clock)
     );
-    raster_top$core$triangle_setup$g1$dbot_r$0 dbot_r$0(
+    raster_top$fragments$core$triangle_setup$g1$dbot_r$0 dbot_r$0(
         .d(dbot_r$0$d),
         .q(dbot_r$0$q),
         .clock(dbot_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$dbot_r$1 dbot_r$1(
+    raster_top$fragments$core$triangle_setup$g1$dbot_r$1 dbot_r$1(
         .d(dbot_r$1$d),
         .q(dbot_r$1$q),
         .clock(dbot_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$dbot_r$2 dbot_r$2(
+    raster_top$fragments$core$triangle_setup$g1$dbot_r$2 dbot_r$2(
         .d(dbot_r$2$d),
         .q(dbot_r$2$q),
         .clock(dbot_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$dbot_r$3 dbot_r$3(
+    raster_top$fragments$core$triangle_setup$g1$dbot_r$3 dbot_r$3(
         .d(dbot_r$3$d),
         .q(dbot_r$3$q),
         .clock(dbot_r$3$clock)
     );
-    raster_top$core$triangle_setup$g1$attr0_r$0 attr0_r$0(
+    raster_top$fragments$core$triangle_setup$g1$attr0_r$0 attr0_r$0(
         .d(attr0_r$0$d),
         .q(attr0_r$0$q),
         .clock(attr0_r$0$clock)
     );
-    raster_top$core$triangle_setup$g1$attr0_r$1 attr0_r$1(
+    raster_top$fragments$core$triangle_setup$g1$attr0_r$1 attr0_r$1(
         .d(attr0_r$1$d),
         .q(attr0_r$1$q),
         .clock(attr0_r$1$clock)
     );
-    raster_top$core$triangle_setup$g1$attr0_r$2 attr0_r$2(
+    raster_top$fragments$core$triangle_setup$g1$attr0_r$2 attr0_r$2(
         .d(attr0_r$2$d),
         .q(attr0_r$2$q),
         .clock(attr0_r$2$clock)
     );
-    raster_top$core$triangle_setup$g1$attr0_r$3 attr0_r$3(
+    raster_top$fragments$core$triangle_setup$g1$attr0_r$3 attr0_r$3(
         .d(attr0_r$3$d),
         .q(attr0_r$3$q),
         .clock(attr0_r$3$clock)
     );
-    raster_top$core$triangle_setup$g1$xn0_r xn0_r(
+    raster_top$fragments$core$triangle_setup$g1$xn0_r xn0_r(
         .d(xn0_r$d),
         .q(xn0_r$q),
         .clock(xn0_r$clock)
@@ -33999,10 +34108,10 @@ module raster_top$core$triangle_setup$g1(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$
         attr0$3 = attr0_r$3$q;
     end
     
-endmodule // raster_top$core$triangle_setup$g1
+endmodule // raster_top$fragments$core$triangle_setup$g1
 
 
-module raster_top$core$triangle_setup$g1$attr0_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$attr0_r$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -34018,10 +34127,10 @@ module raster_top$core$triangle_setup$g1$attr0_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$attr0_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$attr0_r$0
 
 
-module raster_top$core$triangle_setup$g1$attr0_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$attr0_r$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -34037,10 +34146,10 @@ module raster_top$core$triangle_setup$g1$attr0_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$attr0_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$attr0_r$1
 
 
-module raster_top$core$triangle_setup$g1$attr0_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$attr0_r$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -34056,10 +34165,10 @@ module raster_top$core$triangle_setup$g1$attr0_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$attr0_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$attr0_r$2
 
 
-module raster_top$core$triangle_setup$g1$attr0_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$attr0_r$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -34075,10 +34184,10 @@ module raster_top$core$triangle_setup$g1$attr0_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$attr0_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g1$attr0_r$3
 
 
-module raster_top$core$triangle_setup$g1$count_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$count_r$0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -34094,10 +34203,10 @@ module raster_top$core$triangle_setup$g1$count_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$count_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$count_r$0
 
 
-module raster_top$core$triangle_setup$g1$count_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$count_r$1(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -34113,10 +34222,10 @@ module raster_top$core$triangle_setup$g1$count_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$count_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$count_r$1
 
 
-module raster_top$core$triangle_setup$g1$count_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$count_r$2(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -34132,10 +34241,10 @@ module raster_top$core$triangle_setup$g1$count_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$count_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$count_r$2
 
 
-module raster_top$core$triangle_setup$g1$cy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$cy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34151,10 +34260,10 @@ module raster_top$core$triangle_setup$g1$cy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$cy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$cy_r$0
 
 
-module raster_top$core$triangle_setup$g1$cy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$cy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34170,10 +34279,10 @@ module raster_top$core$triangle_setup$g1$cy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$cy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$cy_r$1
 
 
-module raster_top$core$triangle_setup$g1$cy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$cy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34189,10 +34298,10 @@ module raster_top$core$triangle_setup$g1$cy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$cy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$cy_r$2
 
 
-module raster_top$core$triangle_setup$g1$dbot_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$dbot_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34208,10 +34317,10 @@ module raster_top$core$triangle_setup$g1$dbot_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$dbot_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$dbot_r$0
 
 
-module raster_top$core$triangle_setup$g1$dbot_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$dbot_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34227,10 +34336,10 @@ module raster_top$core$triangle_setup$g1$dbot_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$dbot_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$dbot_r$1
 
 
-module raster_top$core$triangle_setup$g1$dbot_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$dbot_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34246,10 +34355,10 @@ module raster_top$core$triangle_setup$g1$dbot_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$dbot_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$dbot_r$2
 
 
-module raster_top$core$triangle_setup$g1$dbot_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$dbot_r$3(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34265,10 +34374,10 @@ module raster_top$core$triangle_setup$g1$dbot_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$dbot_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g1$dbot_r$3
 
 
-module raster_top$core$triangle_setup$g1$dmaj_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$dmaj_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34284,10 +34393,10 @@ module raster_top$core$triangle_setup$g1$dmaj_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$dmaj_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$dmaj_r$0
 
 
-module raster_top$core$triangle_setup$g1$dmaj_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$dmaj_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34303,10 +34412,10 @@ module raster_top$core$triangle_setup$g1$dmaj_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$dmaj_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$dmaj_r$1
 
 
-module raster_top$core$triangle_setup$g1$dmaj_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$dmaj_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34322,10 +34431,10 @@ module raster_top$core$triangle_setup$g1$dmaj_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$dmaj_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$dmaj_r$2
 
 
-module raster_top$core$triangle_setup$g1$dmaj_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$dmaj_r$3(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34341,10 +34450,10 @@ module raster_top$core$triangle_setup$g1$dmaj_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$dmaj_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g1$dmaj_r$3
 
 
-module raster_top$core$triangle_setup$g1$ed16_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$ed16_r$0(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -34360,10 +34469,10 @@ module raster_top$core$triangle_setup$g1$ed16_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$ed16_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$ed16_r$0
 
 
-module raster_top$core$triangle_setup$g1$ed16_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$ed16_r$1(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -34379,10 +34488,10 @@ module raster_top$core$triangle_setup$g1$ed16_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$ed16_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$ed16_r$1
 
 
-module raster_top$core$triangle_setup$g1$ed16_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$ed16_r$2(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -34398,10 +34507,10 @@ module raster_top$core$triangle_setup$g1$ed16_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$ed16_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$ed16_r$2
 
 
-module raster_top$core$triangle_setup$g1$edx_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$edx_r$0(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -34417,10 +34526,10 @@ module raster_top$core$triangle_setup$g1$edx_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$edx_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$edx_r$0
 
 
-module raster_top$core$triangle_setup$g1$edx_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$edx_r$1(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -34436,10 +34545,10 @@ module raster_top$core$triangle_setup$g1$edx_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$edx_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$edx_r$1
 
 
-module raster_top$core$triangle_setup$g1$edx_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$edx_r$2(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -34455,10 +34564,10 @@ module raster_top$core$triangle_setup$g1$edx_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$edx_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$edx_r$2
 
 
-module raster_top$core$triangle_setup$g1$edy_d_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$edy_d_r$0(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -34474,10 +34583,10 @@ module raster_top$core$triangle_setup$g1$edy_d_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$edy_d_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$edy_d_r$0
 
 
-module raster_top$core$triangle_setup$g1$edy_d_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$edy_d_r$1(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -34493,10 +34602,10 @@ module raster_top$core$triangle_setup$g1$edy_d_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$edy_d_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$edy_d_r$1
 
 
-module raster_top$core$triangle_setup$g1$edy_d_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$edy_d_r$2(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -34512,10 +34621,10 @@ module raster_top$core$triangle_setup$g1$edy_d_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$edy_d_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$edy_d_r$2
 
 
-module raster_top$core$triangle_setup$g1$edy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$edy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -34531,10 +34640,10 @@ module raster_top$core$triangle_setup$g1$edy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$edy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$edy_r$0
 
 
-module raster_top$core$triangle_setup$g1$edy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$edy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -34550,10 +34659,10 @@ module raster_top$core$triangle_setup$g1$edy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$edy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$edy_r$1
 
 
-module raster_top$core$triangle_setup$g1$edy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$edy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -34569,10 +34678,10 @@ module raster_top$core$triangle_setup$g1$edy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$edy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$edy_r$2
 
 
-module raster_top$core$triangle_setup$g1$kdx_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$kdx_r$0(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -34588,10 +34697,10 @@ module raster_top$core$triangle_setup$g1$kdx_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$kdx_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$kdx_r$0
 
 
-module raster_top$core$triangle_setup$g1$kdx_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$kdx_r$1(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -34607,10 +34716,10 @@ module raster_top$core$triangle_setup$g1$kdx_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$kdx_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$kdx_r$1
 
 
-module raster_top$core$triangle_setup$g1$kdx_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$kdx_r$2(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -34626,10 +34735,10 @@ module raster_top$core$triangle_setup$g1$kdx_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$kdx_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$kdx_r$2
 
 
-module raster_top$core$triangle_setup$g1$kdy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$kdy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -34645,10 +34754,10 @@ module raster_top$core$triangle_setup$g1$kdy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$kdy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$kdy_r$0
 
 
-module raster_top$core$triangle_setup$g1$kdy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$kdy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -34664,10 +34773,10 @@ module raster_top$core$triangle_setup$g1$kdy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$kdy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$kdy_r$1
 
 
-module raster_top$core$triangle_setup$g1$kdy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$kdy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -34683,10 +34792,10 @@ module raster_top$core$triangle_setup$g1$kdy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$kdy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$kdy_r$2
 
 
-module raster_top$core$triangle_setup$g1$off_y_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$off_y_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34702,10 +34811,10 @@ module raster_top$core$triangle_setup$g1$off_y_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$off_y_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$off_y_r$0
 
 
-module raster_top$core$triangle_setup$g1$off_y_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$off_y_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34721,10 +34830,10 @@ module raster_top$core$triangle_setup$g1$off_y_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$off_y_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$off_y_r$1
 
 
-module raster_top$core$triangle_setup$g1$off_y_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$off_y_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34740,10 +34849,10 @@ module raster_top$core$triangle_setup$g1$off_y_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$off_y_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$off_y_r$2
 
 
-module raster_top$core$triangle_setup$g1$toff_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$toff_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34759,10 +34868,10 @@ module raster_top$core$triangle_setup$g1$toff_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$toff_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$toff_r$0
 
 
-module raster_top$core$triangle_setup$g1$toff_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$toff_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34778,10 +34887,10 @@ module raster_top$core$triangle_setup$g1$toff_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$toff_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$toff_r$1
 
 
-module raster_top$core$triangle_setup$g1$toff_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$toff_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34797,10 +34906,10 @@ module raster_top$core$triangle_setup$g1$toff_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$toff_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$toff_r$2
 
 
-module raster_top$core$triangle_setup$g1$up_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$up_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -34816,10 +34925,10 @@ module raster_top$core$triangle_setup$g1$up_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$up_r
+endmodule // raster_top$fragments$core$triangle_setup$g1$up_r
 
 
-module raster_top$core$triangle_setup$g1$xf_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$xf_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34835,10 +34944,10 @@ module raster_top$core$triangle_setup$g1$xf_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$xf_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$xf_r$0
 
 
-module raster_top$core$triangle_setup$g1$xf_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$xf_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34854,10 +34963,10 @@ module raster_top$core$triangle_setup$g1$xf_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$xf_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$xf_r$1
 
 
-module raster_top$core$triangle_setup$g1$xf_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$xf_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34873,10 +34982,10 @@ module raster_top$core$triangle_setup$g1$xf_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$xf_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$xf_r$2
 
 
-module raster_top$core$triangle_setup$g1$xi_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$xi_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34892,10 +35001,10 @@ module raster_top$core$triangle_setup$g1$xi_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$xi_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g1$xi_r$0
 
 
-module raster_top$core$triangle_setup$g1$xi_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$xi_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34911,10 +35020,10 @@ module raster_top$core$triangle_setup$g1$xi_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$xi_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g1$xi_r$1
 
 
-module raster_top$core$triangle_setup$g1$xi_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$xi_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34930,10 +35039,10 @@ module raster_top$core$triangle_setup$g1$xi_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$xi_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g1$xi_r$2
 
 
-module raster_top$core$triangle_setup$g1$xn0_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g1$xn0_r(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -34949,10 +35058,10 @@ module raster_top$core$triangle_setup$g1$xn0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g1$xn0_r
+endmodule // raster_top$fragments$core$triangle_setup$g1$xn0_r
 
 
-module raster_top$core$triangle_setup$g2(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$fragments$core$triangle_setup$g2(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
     input wire  clock;
@@ -35297,252 +35406,252 @@ module raster_top$core$triangle_setup$g2(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$
     reg  [18:0] tracked$2;
     
     // Sub module instances
-    raster_top$core$triangle_setup$g2$kdx_r$0 kdx_r$0(
+    raster_top$fragments$core$triangle_setup$g2$kdx_r$0 kdx_r$0(
         .d(kdx_r$0$d),
         .q(kdx_r$0$q),
         .clock(kdx_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$kdx_r$1 kdx_r$1(
+    raster_top$fragments$core$triangle_setup$g2$kdx_r$1 kdx_r$1(
         .d(kdx_r$1$d),
         .q(kdx_r$1$q),
         .clock(kdx_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$kdx_r$2 kdx_r$2(
+    raster_top$fragments$core$triangle_setup$g2$kdx_r$2 kdx_r$2(
         .d(kdx_r$2$d),
         .q(kdx_r$2$q),
         .clock(kdx_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$kdy_r$0 kdy_r$0(
+    raster_top$fragments$core$triangle_setup$g2$kdy_r$0 kdy_r$0(
         .d(kdy_r$0$d),
         .q(kdy_r$0$q),
         .clock(kdy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$kdy_r$1 kdy_r$1(
+    raster_top$fragments$core$triangle_setup$g2$kdy_r$1 kdy_r$1(
         .d(kdy_r$1$d),
         .q(kdy_r$1$q),
         .clock(kdy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$kdy_r$2 kdy_r$2(
+    raster_top$fragments$core$triangle_setup$g2$kdy_r$2 kdy_r$2(
         .d(kdy_r$2$d),
         .q(kdy_r$2$q),
         .clock(kdy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$up_r up_r(
+    raster_top$fragments$core$triangle_setup$g2$up_r up_r(
         .d(up_r$d),
         .q(up_r$q),
         .clock(up_r$clock)
     );
-    raster_top$core$triangle_setup$g2$edx_r$0 edx_r$0(
+    raster_top$fragments$core$triangle_setup$g2$edx_r$0 edx_r$0(
         .d(edx_r$0$d),
         .q(edx_r$0$q),
         .clock(edx_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$edx_r$1 edx_r$1(
+    raster_top$fragments$core$triangle_setup$g2$edx_r$1 edx_r$1(
         .d(edx_r$1$d),
         .q(edx_r$1$q),
         .clock(edx_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$edx_r$2 edx_r$2(
+    raster_top$fragments$core$triangle_setup$g2$edx_r$2 edx_r$2(
         .d(edx_r$2$d),
         .q(edx_r$2$q),
         .clock(edx_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$edy_r$0 edy_r$0(
+    raster_top$fragments$core$triangle_setup$g2$edy_r$0 edy_r$0(
         .d(edy_r$0$d),
         .q(edy_r$0$q),
         .clock(edy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$edy_r$1 edy_r$1(
+    raster_top$fragments$core$triangle_setup$g2$edy_r$1 edy_r$1(
         .d(edy_r$1$d),
         .q(edy_r$1$q),
         .clock(edy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$edy_r$2 edy_r$2(
+    raster_top$fragments$core$triangle_setup$g2$edy_r$2 edy_r$2(
         .d(edy_r$2$d),
         .q(edy_r$2$q),
         .clock(edy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$edy_d_r$0 edy_d_r$0(
+    raster_top$fragments$core$triangle_setup$g2$edy_d_r$0 edy_d_r$0(
         .d(edy_d_r$0$d),
         .q(edy_d_r$0$q),
         .clock(edy_d_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$edy_d_r$1 edy_d_r$1(
+    raster_top$fragments$core$triangle_setup$g2$edy_d_r$1 edy_d_r$1(
         .d(edy_d_r$1$d),
         .q(edy_d_r$1$q),
         .clock(edy_d_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$edy_d_r$2 edy_d_r$2(
+    raster_top$fragments$core$triangle_setup$g2$edy_d_r$2 edy_d_r$2(
         .d(edy_d_r$2$d),
         .q(edy_d_r$2$q),
         .clock(edy_d_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$ed16_r$0 ed16_r$0(
+    raster_top$fragments$core$triangle_setup$g2$ed16_r$0 ed16_r$0(
         .d(ed16_r$0$d),
         .q(ed16_r$0$q),
         .clock(ed16_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$ed16_r$1 ed16_r$1(
+    raster_top$fragments$core$triangle_setup$g2$ed16_r$1 ed16_r$1(
         .d(ed16_r$1$d),
         .q(ed16_r$1$q),
         .clock(ed16_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$ed16_r$2 ed16_r$2(
+    raster_top$fragments$core$triangle_setup$g2$ed16_r$2 ed16_r$2(
         .d(ed16_r$2$d),
         .q(ed16_r$2$q),
         .clock(ed16_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$cy_r$0 cy_r$0(
+    raster_top$fragments$core$triangle_setup$g2$cy_r$0 cy_r$0(
         .d(cy_r$0$d),
         .q(cy_r$0$q),
         .clock(cy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$cy_r$1 cy_r$1(
+    raster_top$fragments$core$triangle_setup$g2$cy_r$1 cy_r$1(
         .d(cy_r$1$d),
         .q(cy_r$1$q),
         .clock(cy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$cy_r$2 cy_r$2(
+    raster_top$fragments$core$triangle_setup$g2$cy_r$2 cy_r$2(
         .d(cy_r$2$d),
         .q(cy_r$2$q),
         .clock(cy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$count_r$0 count_r$0(
+    raster_top$fragments$core$triangle_setup$g2$count_r$0 count_r$0(
         .d(count_r$0$d),
         .q(count_r$0$q),
         .clock(count_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$count_r$1 count_r$1(
+    raster_top$fragments$core$triangle_setup$g2$count_r$1 count_r$1(
         .d(count_r$1$d),
         .q(count_r$1$q),
         .clock(count_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$count_r$2 count_r$2(
+    raster_top$fragments$core$triangle_setup$g2$count_r$2 count_r$2(
         .d(count_r$2$d),
         .q(count_r$2$q),
         .clock(count_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$toff_r$0 toff_r$0(
+    raster_top$fragments$core$triangle_setup$g2$toff_r$0 toff_r$0(
         .d(toff_r$0$d),
         .q(toff_r$0$q),
         .clock(toff_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$toff_r$1 toff_r$1(
+    raster_top$fragments$core$triangle_setup$g2$toff_r$1 toff_r$1(
         .d(toff_r$1$d),
         .q(toff_r$1$q),
         .clock(toff_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$toff_r$2 toff_r$2(
+    raster_top$fragments$core$triangle_setup$g2$toff_r$2 toff_r$2(
         .d(toff_r$2$d),
         .q(toff_r$2$q),
         .clock(toff_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$xf_r$0 xf_r$0(
+    raster_top$fragments$core$triangle_setup$g2$xf_r$0 xf_r$0(
         .d(xf_r$0$d),
         .q(xf_r$0$q),
         .clock(xf_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$xf_r$1 xf_r$1(
+    raster_top$fragments$core$triangle_setup$g2$xf_r$1 xf_r$1(
         .d(xf_r$1$d),
         .q(xf_r$1$q),
         .clock(xf_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$xf_r$2 xf_r$2(
+    raster_top$fragments$core$triangle_setup$g2$xf_r$2 xf_r$2(
         .d(xf_r$2$d),
         .q(xf_r$2$q),
         .clock(xf_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$xi_r$0 xi_r$0(
+    raster_top$fragments$core$triangle_setup$g2$xi_r$0 xi_r$0(
         .d(xi_r$0$d),
         .q(xi_r$0$q),
         .clock(xi_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$xi_r$1 xi_r$1(
+    raster_top$fragments$core$triangle_setup$g2$xi_r$1 xi_r$1(
         .d(xi_r$1$d),
         .q(xi_r$1$q),
         .clock(xi_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$xi_r$2 xi_r$2(
+    raster_top$fragments$core$triangle_setup$g2$xi_r$2 xi_r$2(
         .d(xi_r$2$d),
         .q(xi_r$2$q),
         .clock(xi_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$off_y_r$0 off_y_r$0(
+    raster_top$fragments$core$triangle_setup$g2$off_y_r$0 off_y_r$0(
         .d(off_y_r$0$d),
         .q(off_y_r$0$q),
         .clock(off_y_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$off_y_r$1 off_y_r$1(
+    raster_top$fragments$core$triangle_setup$g2$off_y_r$1 off_y_r$1(
         .d(off_y_r$1$d),
         .q(off_y_r$1$q),
         .clock(off_y_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$off_y_r$2 off_y_r$2(
+    raster_top$fragments$core$triangle_setup$g2$off_y_r$2 off_y_r$2(
         .d(off_y_r$2$d),
         .q(off_y_r$2$q),
         .clock(off_y_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$dmaj_r$0 dmaj_r$0(
+    raster_top$fragments$core$triangle_setup$g2$dmaj_r$0 dmaj_r$0(
         .d(dmaj_r$0$d),
         .q(dmaj_r$0$q),
         .clock(dmaj_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$dmaj_r$1 dmaj_r$1(
+    raster_top$fragments$core$triangle_setup$g2$dmaj_r$1 dmaj_r$1(
         .d(dmaj_r$1$d),
         .q(dmaj_r$1$q),
         .clock(dmaj_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$dmaj_r$2 dmaj_r$2(
+    raster_top$fragments$core$triangle_setup$g2$dmaj_r$2 dmaj_r$2(
         .d(dmaj_r$2$d),
         .q(dmaj_r$2$q),
         .clock(dmaj_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$dmaj_r$3 dmaj_r$3(
+    raster_top$fragments$core$triangle_setup$g2$dmaj_r$3 dmaj_r$3(
         .d(dmaj_r$3$d),
         .q(dmaj_r$3$q),
         .clock(dmaj_r$3$clock)
     );
-    raster_top$core$triangle_setup$g2$dbot_r$0 dbot_r$0(
+    raster_top$fragments$core$triangle_setup$g2$dbot_r$0 dbot_r$0(
         .d(dbot_r$0$d),
         .q(dbot_r$0$q),
         .clock(dbot_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$dbot_r$1 dbot_r$1(
+    raster_top$fragments$core$triangle_setup$g2$dbot_r$1 dbot_r$1(
         .d(dbot_r$1$d),
         .q(dbot_r$1$q),
         .clock(dbot_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$dbot_r$2 dbot_r$2(
+    raster_top$fragments$core$triangle_setup$g2$dbot_r$2 dbot_r$2(
         .d(dbot_r$2$d),
         .q(dbot_r$2$q),
         .clock(dbot_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$dbot_r$3 dbot_r$3(
+    raster_top$fragments$core$triangle_setup$g2$dbot_r$3 dbot_r$3(
         .d(dbot_r$3$d),
         .q(dbot_r$3$q),
         .clock(dbot_r$3$clock)
     );
-    raster_top$core$triangle_setup$g2$attr0_r$0 attr0_r$0(
+    raster_top$fragments$core$triangle_setup$g2$attr0_r$0 attr0_r$0(
         .d(attr0_r$0$d),
         .q(attr0_r$0$q),
         .clock(attr0_r$0$clock)
     );
-    raster_top$core$triangle_setup$g2$attr0_r$1 attr0_r$1(
+    raster_top$fragments$core$triangle_setup$g2$attr0_r$1 attr0_r$1(
         .d(attr0_r$1$d),
         .q(attr0_r$1$q),
         .clock(attr0_r$1$clock)
     );
-    raster_top$core$triangle_setup$g2$attr0_r$2 attr0_r$2(
+    raster_top$fragments$core$triangle_setup$g2$attr0_r$2 attr0_r$2(
         .d(attr0_r$2$d),
         .q(attr0_r$2$q),
         .clock(attr0_r$2$clock)
     );
-    raster_top$core$triangle_setup$g2$attr0_r$3 attr0_r$3(
+    raster_top$fragments$core$triangle_setup$g2$attr0_r$3 attr0_r$3(
         .d(attr0_r$3$d),
         .q(attr0_r$3$q),
         .clock(attr0_r$3$clock)
     );
-    raster_top$core$triangle_setup$g2$xn0_r xn0_r(
+    raster_top$fragments$core$triangle_setup$g2$xn0_r xn0_r(
         .d(xn0_r$d),
         .q(xn0_r$q),
         .clock(xn0_r$clock)
@@ -35867,10 +35976,10 @@ module raster_top$core$triangle_setup$g2(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$
         attr0$3 = attr0_r$3$q;
     end
     
-endmodule // raster_top$core$triangle_setup$g2
+endmodule // raster_top$fragments$core$triangle_setup$g2
 
 
-module raster_top$core$triangle_setup$g2$attr0_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$attr0_r$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -35886,10 +35995,10 @@ module raster_top$core$triangle_setup$g2$attr0_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$attr0_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$attr0_r$0
 
 
-module raster_top$core$triangle_setup$g2$attr0_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$attr0_r$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -35905,10 +36014,10 @@ module raster_top$core$triangle_setup$g2$attr0_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$attr0_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$attr0_r$1
 
 
-module raster_top$core$triangle_setup$g2$attr0_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$attr0_r$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -35924,10 +36033,10 @@ module raster_top$core$triangle_setup$g2$attr0_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$attr0_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$attr0_r$2
 
 
-module raster_top$core$triangle_setup$g2$attr0_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$attr0_r$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -35943,10 +36052,10 @@ module raster_top$core$triangle_setup$g2$attr0_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$attr0_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g2$attr0_r$3
 
 
-module raster_top$core$triangle_setup$g2$count_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$count_r$0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -35962,10 +36071,10 @@ module raster_top$core$triangle_setup$g2$count_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$count_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$count_r$0
 
 
-module raster_top$core$triangle_setup$g2$count_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$count_r$1(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -35981,10 +36090,10 @@ module raster_top$core$triangle_setup$g2$count_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$count_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$count_r$1
 
 
-module raster_top$core$triangle_setup$g2$count_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$count_r$2(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -36000,10 +36109,10 @@ module raster_top$core$triangle_setup$g2$count_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$count_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$count_r$2
 
 
-module raster_top$core$triangle_setup$g2$cy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$cy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36019,10 +36128,10 @@ module raster_top$core$triangle_setup$g2$cy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$cy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$cy_r$0
 
 
-module raster_top$core$triangle_setup$g2$cy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$cy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36038,10 +36147,10 @@ module raster_top$core$triangle_setup$g2$cy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$cy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$cy_r$1
 
 
-module raster_top$core$triangle_setup$g2$cy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$cy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36057,10 +36166,10 @@ module raster_top$core$triangle_setup$g2$cy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$cy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$cy_r$2
 
 
-module raster_top$core$triangle_setup$g2$dbot_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$dbot_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36076,10 +36185,10 @@ module raster_top$core$triangle_setup$g2$dbot_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$dbot_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$dbot_r$0
 
 
-module raster_top$core$triangle_setup$g2$dbot_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$dbot_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36095,10 +36204,10 @@ module raster_top$core$triangle_setup$g2$dbot_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$dbot_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$dbot_r$1
 
 
-module raster_top$core$triangle_setup$g2$dbot_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$dbot_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36114,10 +36223,10 @@ module raster_top$core$triangle_setup$g2$dbot_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$dbot_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$dbot_r$2
 
 
-module raster_top$core$triangle_setup$g2$dbot_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$dbot_r$3(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36133,10 +36242,10 @@ module raster_top$core$triangle_setup$g2$dbot_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$dbot_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g2$dbot_r$3
 
 
-module raster_top$core$triangle_setup$g2$dmaj_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$dmaj_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36152,10 +36261,10 @@ module raster_top$core$triangle_setup$g2$dmaj_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$dmaj_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$dmaj_r$0
 
 
-module raster_top$core$triangle_setup$g2$dmaj_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$dmaj_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36171,10 +36280,10 @@ module raster_top$core$triangle_setup$g2$dmaj_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$dmaj_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$dmaj_r$1
 
 
-module raster_top$core$triangle_setup$g2$dmaj_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$dmaj_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36190,10 +36299,10 @@ module raster_top$core$triangle_setup$g2$dmaj_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$dmaj_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$dmaj_r$2
 
 
-module raster_top$core$triangle_setup$g2$dmaj_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$dmaj_r$3(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36209,10 +36318,10 @@ module raster_top$core$triangle_setup$g2$dmaj_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$dmaj_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g2$dmaj_r$3
 
 
-module raster_top$core$triangle_setup$g2$ed16_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$ed16_r$0(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -36228,10 +36337,10 @@ module raster_top$core$triangle_setup$g2$ed16_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$ed16_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$ed16_r$0
 
 
-module raster_top$core$triangle_setup$g2$ed16_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$ed16_r$1(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -36247,10 +36356,10 @@ module raster_top$core$triangle_setup$g2$ed16_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$ed16_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$ed16_r$1
 
 
-module raster_top$core$triangle_setup$g2$ed16_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$ed16_r$2(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -36266,10 +36375,10 @@ module raster_top$core$triangle_setup$g2$ed16_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$ed16_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$ed16_r$2
 
 
-module raster_top$core$triangle_setup$g2$edx_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$edx_r$0(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -36285,10 +36394,10 @@ module raster_top$core$triangle_setup$g2$edx_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$edx_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$edx_r$0
 
 
-module raster_top$core$triangle_setup$g2$edx_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$edx_r$1(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -36304,10 +36413,10 @@ module raster_top$core$triangle_setup$g2$edx_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$edx_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$edx_r$1
 
 
-module raster_top$core$triangle_setup$g2$edx_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$edx_r$2(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -36323,10 +36432,10 @@ module raster_top$core$triangle_setup$g2$edx_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$edx_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$edx_r$2
 
 
-module raster_top$core$triangle_setup$g2$edy_d_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$edy_d_r$0(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -36342,10 +36451,10 @@ module raster_top$core$triangle_setup$g2$edy_d_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$edy_d_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$edy_d_r$0
 
 
-module raster_top$core$triangle_setup$g2$edy_d_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$edy_d_r$1(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -36361,10 +36470,10 @@ module raster_top$core$triangle_setup$g2$edy_d_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$edy_d_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$edy_d_r$1
 
 
-module raster_top$core$triangle_setup$g2$edy_d_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$edy_d_r$2(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -36380,10 +36489,10 @@ module raster_top$core$triangle_setup$g2$edy_d_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$edy_d_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$edy_d_r$2
 
 
-module raster_top$core$triangle_setup$g2$edy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$edy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -36399,10 +36508,10 @@ module raster_top$core$triangle_setup$g2$edy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$edy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$edy_r$0
 
 
-module raster_top$core$triangle_setup$g2$edy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$edy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -36418,10 +36527,10 @@ module raster_top$core$triangle_setup$g2$edy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$edy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$edy_r$1
 
 
-module raster_top$core$triangle_setup$g2$edy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$edy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -36437,10 +36546,10 @@ module raster_top$core$triangle_setup$g2$edy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$edy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$edy_r$2
 
 
-module raster_top$core$triangle_setup$g2$kdx_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$kdx_r$0(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -36456,10 +36565,10 @@ module raster_top$core$triangle_setup$g2$kdx_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$kdx_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$kdx_r$0
 
 
-module raster_top$core$triangle_setup$g2$kdx_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$kdx_r$1(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -36475,10 +36584,10 @@ module raster_top$core$triangle_setup$g2$kdx_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$kdx_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$kdx_r$1
 
 
-module raster_top$core$triangle_setup$g2$kdx_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$kdx_r$2(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -36494,10 +36603,10 @@ module raster_top$core$triangle_setup$g2$kdx_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$kdx_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$kdx_r$2
 
 
-module raster_top$core$triangle_setup$g2$kdy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$kdy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -36513,10 +36622,10 @@ module raster_top$core$triangle_setup$g2$kdy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$kdy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$kdy_r$0
 
 
-module raster_top$core$triangle_setup$g2$kdy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$kdy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -36532,10 +36641,10 @@ module raster_top$core$triangle_setup$g2$kdy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$kdy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$kdy_r$1
 
 
-module raster_top$core$triangle_setup$g2$kdy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$kdy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -36551,10 +36660,10 @@ module raster_top$core$triangle_setup$g2$kdy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$kdy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$kdy_r$2
 
 
-module raster_top$core$triangle_setup$g2$off_y_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$off_y_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36570,10 +36679,10 @@ module raster_top$core$triangle_setup$g2$off_y_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$off_y_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$off_y_r$0
 
 
-module raster_top$core$triangle_setup$g2$off_y_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$off_y_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36589,10 +36698,10 @@ module raster_top$core$triangle_setup$g2$off_y_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$off_y_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$off_y_r$1
 
 
-module raster_top$core$triangle_setup$g2$off_y_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$off_y_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36608,10 +36717,10 @@ module raster_top$core$triangle_setup$g2$off_y_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$off_y_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$off_y_r$2
 
 
-module raster_top$core$triangle_setup$g2$toff_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$toff_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36627,10 +36736,10 @@ module raster_top$core$triangle_setup$g2$toff_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$toff_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$toff_r$0
 
 
-module raster_top$core$triangle_setup$g2$toff_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$toff_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36646,10 +36755,10 @@ module raster_top$core$triangle_setup$g2$toff_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$toff_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$toff_r$1
 
 
-module raster_top$core$triangle_setup$g2$toff_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$toff_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36665,10 +36774,10 @@ module raster_top$core$triangle_setup$g2$toff_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$toff_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$toff_r$2
 
 
-module raster_top$core$triangle_setup$g2$up_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$up_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -36684,10 +36793,10 @@ module raster_top$core$triangle_setup$g2$up_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$up_r
+endmodule // raster_top$fragments$core$triangle_setup$g2$up_r
 
 
-module raster_top$core$triangle_setup$g2$xf_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$xf_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36703,10 +36812,10 @@ module raster_top$core$triangle_setup$g2$xf_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$xf_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$xf_r$0
 
 
-module raster_top$core$triangle_setup$g2$xf_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$xf_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36722,10 +36831,10 @@ module raster_top$core$triangle_setup$g2$xf_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$xf_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$xf_r$1
 
 
-module raster_top$core$triangle_setup$g2$xf_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$xf_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36741,10 +36850,10 @@ module raster_top$core$triangle_setup$g2$xf_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$xf_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$xf_r$2
 
 
-module raster_top$core$triangle_setup$g2$xi_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$xi_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36760,10 +36869,10 @@ module raster_top$core$triangle_setup$g2$xi_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$xi_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g2$xi_r$0
 
 
-module raster_top$core$triangle_setup$g2$xi_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$xi_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36779,10 +36888,10 @@ module raster_top$core$triangle_setup$g2$xi_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$xi_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g2$xi_r$1
 
 
-module raster_top$core$triangle_setup$g2$xi_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$xi_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36798,10 +36907,10 @@ module raster_top$core$triangle_setup$g2$xi_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$xi_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g2$xi_r$2
 
 
-module raster_top$core$triangle_setup$g2$xn0_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g2$xn0_r(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -36817,10 +36926,10 @@ module raster_top$core$triangle_setup$g2$xn0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g2$xn0_r
+endmodule // raster_top$fragments$core$triangle_setup$g2$xn0_r
 
 
-module raster_top$core$triangle_setup$g3(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$fragments$core$triangle_setup$g3(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
     input wire  clock;
@@ -37165,252 +37274,252 @@ module raster_top$core$triangle_setup$g3(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$
     reg  [18:0] tracked$2;
     
     // Sub module instances
-    raster_top$core$triangle_setup$g3$kdx_r$0 kdx_r$0(
+    raster_top$fragments$core$triangle_setup$g3$kdx_r$0 kdx_r$0(
         .d(kdx_r$0$d),
         .q(kdx_r$0$q),
         .clock(kdx_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$kdx_r$1 kdx_r$1(
+    raster_top$fragments$core$triangle_setup$g3$kdx_r$1 kdx_r$1(
         .d(kdx_r$1$d),
         .q(kdx_r$1$q),
         .clock(kdx_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$kdx_r$2 kdx_r$2(
+    raster_top$fragments$core$triangle_setup$g3$kdx_r$2 kdx_r$2(
         .d(kdx_r$2$d),
         .q(kdx_r$2$q),
         .clock(kdx_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$kdy_r$0 kdy_r$0(
+    raster_top$fragments$core$triangle_setup$g3$kdy_r$0 kdy_r$0(
         .d(kdy_r$0$d),
         .q(kdy_r$0$q),
         .clock(kdy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$kdy_r$1 kdy_r$1(
+    raster_top$fragments$core$triangle_setup$g3$kdy_r$1 kdy_r$1(
         .d(kdy_r$1$d),
         .q(kdy_r$1$q),
         .clock(kdy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$kdy_r$2 kdy_r$2(
+    raster_top$fragments$core$triangle_setup$g3$kdy_r$2 kdy_r$2(
         .d(kdy_r$2$d),
         .q(kdy_r$2$q),
         .clock(kdy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$up_r up_r(
+    raster_top$fragments$core$triangle_setup$g3$up_r up_r(
         .d(up_r$d),
         .q(up_r$q),
         .clock(up_r$clock)
     );
-    raster_top$core$triangle_setup$g3$edx_r$0 edx_r$0(
+    raster_top$fragments$core$triangle_setup$g3$edx_r$0 edx_r$0(
         .d(edx_r$0$d),
         .q(edx_r$0$q),
         .clock(edx_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$edx_r$1 edx_r$1(
+    raster_top$fragments$core$triangle_setup$g3$edx_r$1 edx_r$1(
         .d(edx_r$1$d),
         .q(edx_r$1$q),
         .clock(edx_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$edx_r$2 edx_r$2(
+    raster_top$fragments$core$triangle_setup$g3$edx_r$2 edx_r$2(
         .d(edx_r$2$d),
         .q(edx_r$2$q),
         .clock(edx_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$edy_r$0 edy_r$0(
+    raster_top$fragments$core$triangle_setup$g3$edy_r$0 edy_r$0(
         .d(edy_r$0$d),
         .q(edy_r$0$q),
         .clock(edy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$edy_r$1 edy_r$1(
+    raster_top$fragments$core$triangle_setup$g3$edy_r$1 edy_r$1(
         .d(edy_r$1$d),
         .q(edy_r$1$q),
         .clock(edy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$edy_r$2 edy_r$2(
+    raster_top$fragments$core$triangle_setup$g3$edy_r$2 edy_r$2(
         .d(edy_r$2$d),
         .q(edy_r$2$q),
         .clock(edy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$edy_d_r$0 edy_d_r$0(
+    raster_top$fragments$core$triangle_setup$g3$edy_d_r$0 edy_d_r$0(
         .d(edy_d_r$0$d),
         .q(edy_d_r$0$q),
         .clock(edy_d_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$edy_d_r$1 edy_d_r$1(
+    raster_top$fragments$core$triangle_setup$g3$edy_d_r$1 edy_d_r$1(
         .d(edy_d_r$1$d),
         .q(edy_d_r$1$q),
         .clock(edy_d_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$edy_d_r$2 edy_d_r$2(
+    raster_top$fragments$core$triangle_setup$g3$edy_d_r$2 edy_d_r$2(
         .d(edy_d_r$2$d),
         .q(edy_d_r$2$q),
         .clock(edy_d_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$ed16_r$0 ed16_r$0(
+    raster_top$fragments$core$triangle_setup$g3$ed16_r$0 ed16_r$0(
         .d(ed16_r$0$d),
         .q(ed16_r$0$q),
         .clock(ed16_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$ed16_r$1 ed16_r$1(
+    raster_top$fragments$core$triangle_setup$g3$ed16_r$1 ed16_r$1(
         .d(ed16_r$1$d),
         .q(ed16_r$1$q),
         .clock(ed16_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$ed16_r$2 ed16_r$2(
+    raster_top$fragments$core$triangle_setup$g3$ed16_r$2 ed16_r$2(
         .d(ed16_r$2$d),
         .q(ed16_r$2$q),
         .clock(ed16_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$cy_r$0 cy_r$0(
+    raster_top$fragments$core$triangle_setup$g3$cy_r$0 cy_r$0(
         .d(cy_r$0$d),
         .q(cy_r$0$q),
         .clock(cy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$cy_r$1 cy_r$1(
+    raster_top$fragments$core$triangle_setup$g3$cy_r$1 cy_r$1(
         .d(cy_r$1$d),
         .q(cy_r$1$q),
         .clock(cy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$cy_r$2 cy_r$2(
+    raster_top$fragments$core$triangle_setup$g3$cy_r$2 cy_r$2(
         .d(cy_r$2$d),
         .q(cy_r$2$q),
         .clock(cy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$count_r$0 count_r$0(
+    raster_top$fragments$core$triangle_setup$g3$count_r$0 count_r$0(
         .d(count_r$0$d),
         .q(count_r$0$q),
         .clock(count_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$count_r$1 count_r$1(
+    raster_top$fragments$core$triangle_setup$g3$count_r$1 count_r$1(
         .d(count_r$1$d),
         .q(count_r$1$q),
         .clock(count_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$count_r$2 count_r$2(
+    raster_top$fragments$core$triangle_setup$g3$count_r$2 count_r$2(
         .d(count_r$2$d),
         .q(count_r$2$q),
         .clock(count_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$toff_r$0 toff_r$0(
+    raster_top$fragments$core$triangle_setup$g3$toff_r$0 toff_r$0(
         .d(toff_r$0$d),
         .q(toff_r$0$q),
         .clock(toff_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$toff_r$1 toff_r$1(
+    raster_top$fragments$core$triangle_setup$g3$toff_r$1 toff_r$1(
         .d(toff_r$1$d),
         .q(toff_r$1$q),
         .clock(toff_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$toff_r$2 toff_r$2(
+    raster_top$fragments$core$triangle_setup$g3$toff_r$2 toff_r$2(
         .d(toff_r$2$d),
         .q(toff_r$2$q),
         .clock(toff_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$xf_r$0 xf_r$0(
+    raster_top$fragments$core$triangle_setup$g3$xf_r$0 xf_r$0(
         .d(xf_r$0$d),
         .q(xf_r$0$q),
         .clock(xf_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$xf_r$1 xf_r$1(
+    raster_top$fragments$core$triangle_setup$g3$xf_r$1 xf_r$1(
         .d(xf_r$1$d),
         .q(xf_r$1$q),
         .clock(xf_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$xf_r$2 xf_r$2(
+    raster_top$fragments$core$triangle_setup$g3$xf_r$2 xf_r$2(
         .d(xf_r$2$d),
         .q(xf_r$2$q),
         .clock(xf_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$xi_r$0 xi_r$0(
+    raster_top$fragments$core$triangle_setup$g3$xi_r$0 xi_r$0(
         .d(xi_r$0$d),
         .q(xi_r$0$q),
         .clock(xi_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$xi_r$1 xi_r$1(
+    raster_top$fragments$core$triangle_setup$g3$xi_r$1 xi_r$1(
         .d(xi_r$1$d),
         .q(xi_r$1$q),
         .clock(xi_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$xi_r$2 xi_r$2(
+    raster_top$fragments$core$triangle_setup$g3$xi_r$2 xi_r$2(
         .d(xi_r$2$d),
         .q(xi_r$2$q),
         .clock(xi_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$off_y_r$0 off_y_r$0(
+    raster_top$fragments$core$triangle_setup$g3$off_y_r$0 off_y_r$0(
         .d(off_y_r$0$d),
         .q(off_y_r$0$q),
         .clock(off_y_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$off_y_r$1 off_y_r$1(
+    raster_top$fragments$core$triangle_setup$g3$off_y_r$1 off_y_r$1(
         .d(off_y_r$1$d),
         .q(off_y_r$1$q),
         .clock(off_y_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$off_y_r$2 off_y_r$2(
+    raster_top$fragments$core$triangle_setup$g3$off_y_r$2 off_y_r$2(
         .d(off_y_r$2$d),
         .q(off_y_r$2$q),
         .clock(off_y_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$dmaj_r$0 dmaj_r$0(
+    raster_top$fragments$core$triangle_setup$g3$dmaj_r$0 dmaj_r$0(
         .d(dmaj_r$0$d),
         .q(dmaj_r$0$q),
         .clock(dmaj_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$dmaj_r$1 dmaj_r$1(
+    raster_top$fragments$core$triangle_setup$g3$dmaj_r$1 dmaj_r$1(
         .d(dmaj_r$1$d),
         .q(dmaj_r$1$q),
         .clock(dmaj_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$dmaj_r$2 dmaj_r$2(
+    raster_top$fragments$core$triangle_setup$g3$dmaj_r$2 dmaj_r$2(
         .d(dmaj_r$2$d),
         .q(dmaj_r$2$q),
         .clock(dmaj_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$dmaj_r$3 dmaj_r$3(
+    raster_top$fragments$core$triangle_setup$g3$dmaj_r$3 dmaj_r$3(
         .d(dmaj_r$3$d),
         .q(dmaj_r$3$q),
         .clock(dmaj_r$3$clock)
     );
-    raster_top$core$triangle_setup$g3$dbot_r$0 dbot_r$0(
+    raster_top$fragments$core$triangle_setup$g3$dbot_r$0 dbot_r$0(
         .d(dbot_r$0$d),
         .q(dbot_r$0$q),
         .clock(dbot_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$dbot_r$1 dbot_r$1(
+    raster_top$fragments$core$triangle_setup$g3$dbot_r$1 dbot_r$1(
         .d(dbot_r$1$d),
         .q(dbot_r$1$q),
         .clock(dbot_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$dbot_r$2 dbot_r$2(
+    raster_top$fragments$core$triangle_setup$g3$dbot_r$2 dbot_r$2(
         .d(dbot_r$2$d),
         .q(dbot_r$2$q),
         .clock(dbot_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$dbot_r$3 dbot_r$3(
+    raster_top$fragments$core$triangle_setup$g3$dbot_r$3 dbot_r$3(
         .d(dbot_r$3$d),
         .q(dbot_r$3$q),
         .clock(dbot_r$3$clock)
     );
-    raster_top$core$triangle_setup$g3$attr0_r$0 attr0_r$0(
+    raster_top$fragments$core$triangle_setup$g3$attr0_r$0 attr0_r$0(
         .d(attr0_r$0$d),
         .q(attr0_r$0$q),
         .clock(attr0_r$0$clock)
     );
-    raster_top$core$triangle_setup$g3$attr0_r$1 attr0_r$1(
+    raster_top$fragments$core$triangle_setup$g3$attr0_r$1 attr0_r$1(
         .d(attr0_r$1$d),
         .q(attr0_r$1$q),
         .clock(attr0_r$1$clock)
     );
-    raster_top$core$triangle_setup$g3$attr0_r$2 attr0_r$2(
+    raster_top$fragments$core$triangle_setup$g3$attr0_r$2 attr0_r$2(
         .d(attr0_r$2$d),
         .q(attr0_r$2$q),
         .clock(attr0_r$2$clock)
     );
-    raster_top$core$triangle_setup$g3$attr0_r$3 attr0_r$3(
+    raster_top$fragments$core$triangle_setup$g3$attr0_r$3 attr0_r$3(
         .d(attr0_r$3$d),
         .q(attr0_r$3$q),
         .clock(attr0_r$3$clock)
     );
-    raster_top$core$triangle_setup$g3$xn0_r xn0_r(
+    raster_top$fragments$core$triangle_setup$g3$xn0_r xn0_r(
         .d(xn0_r$d),
         .q(xn0_r$q),
         .clock(xn0_r$clock)
@@ -37735,10 +37844,10 @@ module raster_top$core$triangle_setup$g3(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$
         attr0$3 = attr0_r$3$q;
     end
     
-endmodule // raster_top$core$triangle_setup$g3
+endmodule // raster_top$fragments$core$triangle_setup$g3
 
 
-module raster_top$core$triangle_setup$g3$attr0_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$attr0_r$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -37754,10 +37863,10 @@ module raster_top$core$triangle_setup$g3$attr0_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$attr0_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$attr0_r$0
 
 
-module raster_top$core$triangle_setup$g3$attr0_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$attr0_r$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -37773,10 +37882,10 @@ module raster_top$core$triangle_setup$g3$attr0_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$attr0_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$attr0_r$1
 
 
-module raster_top$core$triangle_setup$g3$attr0_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$attr0_r$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -37792,10 +37901,10 @@ module raster_top$core$triangle_setup$g3$attr0_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$attr0_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$attr0_r$2
 
 
-module raster_top$core$triangle_setup$g3$attr0_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$attr0_r$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -37811,10 +37920,10 @@ module raster_top$core$triangle_setup$g3$attr0_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$attr0_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g3$attr0_r$3
 
 
-module raster_top$core$triangle_setup$g3$count_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$count_r$0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -37830,10 +37939,10 @@ module raster_top$core$triangle_setup$g3$count_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$count_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$count_r$0
 
 
-module raster_top$core$triangle_setup$g3$count_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$count_r$1(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -37849,10 +37958,10 @@ module raster_top$core$triangle_setup$g3$count_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$count_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$count_r$1
 
 
-module raster_top$core$triangle_setup$g3$count_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$count_r$2(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -37868,10 +37977,10 @@ module raster_top$core$triangle_setup$g3$count_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$count_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$count_r$2
 
 
-module raster_top$core$triangle_setup$g3$cy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$cy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -37887,10 +37996,10 @@ module raster_top$core$triangle_setup$g3$cy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$cy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$cy_r$0
 
 
-module raster_top$core$triangle_setup$g3$cy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$cy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -37906,10 +38015,10 @@ module raster_top$core$triangle_setup$g3$cy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$cy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$cy_r$1
 
 
-module raster_top$core$triangle_setup$g3$cy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$cy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -37925,10 +38034,10 @@ module raster_top$core$triangle_setup$g3$cy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$cy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$cy_r$2
 
 
-module raster_top$core$triangle_setup$g3$dbot_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$dbot_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -37944,10 +38053,10 @@ module raster_top$core$triangle_setup$g3$dbot_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$dbot_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$dbot_r$0
 
 
-module raster_top$core$triangle_setup$g3$dbot_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$dbot_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -37963,10 +38072,10 @@ module raster_top$core$triangle_setup$g3$dbot_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$dbot_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$dbot_r$1
 
 
-module raster_top$core$triangle_setup$g3$dbot_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$dbot_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -37982,10 +38091,10 @@ module raster_top$core$triangle_setup$g3$dbot_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$dbot_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$dbot_r$2
 
 
-module raster_top$core$triangle_setup$g3$dbot_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$dbot_r$3(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38001,10 +38110,10 @@ module raster_top$core$triangle_setup$g3$dbot_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$dbot_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g3$dbot_r$3
 
 
-module raster_top$core$triangle_setup$g3$dmaj_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$dmaj_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38020,10 +38129,10 @@ module raster_top$core$triangle_setup$g3$dmaj_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$dmaj_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$dmaj_r$0
 
 
-module raster_top$core$triangle_setup$g3$dmaj_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$dmaj_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38039,10 +38148,10 @@ module raster_top$core$triangle_setup$g3$dmaj_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$dmaj_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$dmaj_r$1
 
 
-module raster_top$core$triangle_setup$g3$dmaj_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$dmaj_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38058,10 +38167,10 @@ module raster_top$core$triangle_setup$g3$dmaj_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$dmaj_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$dmaj_r$2
 
 
-module raster_top$core$triangle_setup$g3$dmaj_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$dmaj_r$3(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38077,10 +38186,10 @@ module raster_top$core$triangle_setup$g3$dmaj_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$dmaj_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g3$dmaj_r$3
 
 
-module raster_top$core$triangle_setup$g3$ed16_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$ed16_r$0(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -38096,10 +38205,10 @@ module raster_top$core$triangle_setup$g3$ed16_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$ed16_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$ed16_r$0
 
 
-module raster_top$core$triangle_setup$g3$ed16_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$ed16_r$1(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -38115,10 +38224,10 @@ module raster_top$core$triangle_setup$g3$ed16_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$ed16_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$ed16_r$1
 
 
-module raster_top$core$triangle_setup$g3$ed16_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$ed16_r$2(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -38134,10 +38243,10 @@ module raster_top$core$triangle_setup$g3$ed16_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$ed16_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$ed16_r$2
 
 
-module raster_top$core$triangle_setup$g3$edx_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$edx_r$0(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -38153,10 +38262,10 @@ module raster_top$core$triangle_setup$g3$edx_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$edx_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$edx_r$0
 
 
-module raster_top$core$triangle_setup$g3$edx_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$edx_r$1(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -38172,10 +38281,10 @@ module raster_top$core$triangle_setup$g3$edx_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$edx_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$edx_r$1
 
 
-module raster_top$core$triangle_setup$g3$edx_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$edx_r$2(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -38191,10 +38300,10 @@ module raster_top$core$triangle_setup$g3$edx_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$edx_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$edx_r$2
 
 
-module raster_top$core$triangle_setup$g3$edy_d_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$edy_d_r$0(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -38210,10 +38319,10 @@ module raster_top$core$triangle_setup$g3$edy_d_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$edy_d_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$edy_d_r$0
 
 
-module raster_top$core$triangle_setup$g3$edy_d_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$edy_d_r$1(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -38229,10 +38338,10 @@ module raster_top$core$triangle_setup$g3$edy_d_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$edy_d_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$edy_d_r$1
 
 
-module raster_top$core$triangle_setup$g3$edy_d_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$edy_d_r$2(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -38248,10 +38357,10 @@ module raster_top$core$triangle_setup$g3$edy_d_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$edy_d_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$edy_d_r$2
 
 
-module raster_top$core$triangle_setup$g3$edy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$edy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -38267,10 +38376,10 @@ module raster_top$core$triangle_setup$g3$edy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$edy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$edy_r$0
 
 
-module raster_top$core$triangle_setup$g3$edy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$edy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -38286,10 +38395,10 @@ module raster_top$core$triangle_setup$g3$edy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$edy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$edy_r$1
 
 
-module raster_top$core$triangle_setup$g3$edy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$edy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -38305,10 +38414,10 @@ module raster_top$core$triangle_setup$g3$edy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$edy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$edy_r$2
 
 
-module raster_top$core$triangle_setup$g3$kdx_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$kdx_r$0(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -38324,10 +38433,10 @@ module raster_top$core$triangle_setup$g3$kdx_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$kdx_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$kdx_r$0
 
 
-module raster_top$core$triangle_setup$g3$kdx_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$kdx_r$1(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -38343,10 +38452,10 @@ module raster_top$core$triangle_setup$g3$kdx_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$kdx_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$kdx_r$1
 
 
-module raster_top$core$triangle_setup$g3$kdx_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$kdx_r$2(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -38362,10 +38471,10 @@ module raster_top$core$triangle_setup$g3$kdx_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$kdx_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$kdx_r$2
 
 
-module raster_top$core$triangle_setup$g3$kdy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$kdy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -38381,10 +38490,10 @@ module raster_top$core$triangle_setup$g3$kdy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$kdy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$kdy_r$0
 
 
-module raster_top$core$triangle_setup$g3$kdy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$kdy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -38400,10 +38509,10 @@ module raster_top$core$triangle_setup$g3$kdy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$kdy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$kdy_r$1
 
 
-module raster_top$core$triangle_setup$g3$kdy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$kdy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -38419,10 +38528,10 @@ module raster_top$core$triangle_setup$g3$kdy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$kdy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$kdy_r$2
 
 
-module raster_top$core$triangle_setup$g3$off_y_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$off_y_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38438,10 +38547,10 @@ module raster_top$core$triangle_setup$g3$off_y_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$off_y_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$off_y_r$0
 
 
-module raster_top$core$triangle_setup$g3$off_y_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$off_y_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38457,10 +38566,10 @@ module raster_top$core$triangle_setup$g3$off_y_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$off_y_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$off_y_r$1
 
 
-module raster_top$core$triangle_setup$g3$off_y_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$off_y_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38476,10 +38585,10 @@ module raster_top$core$triangle_setup$g3$off_y_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$off_y_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$off_y_r$2
 
 
-module raster_top$core$triangle_setup$g3$toff_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$toff_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38495,10 +38604,10 @@ module raster_top$core$triangle_setup$g3$toff_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$toff_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$toff_r$0
 
 
-module raster_top$core$triangle_setup$g3$toff_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$toff_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38514,10 +38623,10 @@ module raster_top$core$triangle_setup$g3$toff_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$toff_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$toff_r$1
 
 
-module raster_top$core$triangle_setup$g3$toff_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$toff_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38533,10 +38642,10 @@ module raster_top$core$triangle_setup$g3$toff_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$toff_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$toff_r$2
 
 
-module raster_top$core$triangle_setup$g3$up_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$up_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -38552,10 +38661,10 @@ module raster_top$core$triangle_setup$g3$up_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$up_r
+endmodule // raster_top$fragments$core$triangle_setup$g3$up_r
 
 
-module raster_top$core$triangle_setup$g3$xf_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$xf_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38571,10 +38680,10 @@ module raster_top$core$triangle_setup$g3$xf_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$xf_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$xf_r$0
 
 
-module raster_top$core$triangle_setup$g3$xf_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$xf_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38590,10 +38699,10 @@ module raster_top$core$triangle_setup$g3$xf_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$xf_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$xf_r$1
 
 
-module raster_top$core$triangle_setup$g3$xf_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$xf_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38609,10 +38718,10 @@ module raster_top$core$triangle_setup$g3$xf_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$xf_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$xf_r$2
 
 
-module raster_top$core$triangle_setup$g3$xi_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$xi_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38628,10 +38737,10 @@ module raster_top$core$triangle_setup$g3$xi_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$xi_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g3$xi_r$0
 
 
-module raster_top$core$triangle_setup$g3$xi_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$xi_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38647,10 +38756,10 @@ module raster_top$core$triangle_setup$g3$xi_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$xi_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g3$xi_r$1
 
 
-module raster_top$core$triangle_setup$g3$xi_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$xi_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38666,10 +38775,10 @@ module raster_top$core$triangle_setup$g3$xi_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$xi_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g3$xi_r$2
 
 
-module raster_top$core$triangle_setup$g3$xn0_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g3$xn0_r(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -38685,10 +38794,10 @@ module raster_top$core$triangle_setup$g3$xn0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g3$xn0_r
+endmodule // raster_top$fragments$core$triangle_setup$g3$xn0_r
 
 
-module raster_top$core$triangle_setup$g4(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$fragments$core$triangle_setup$g4(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
     input wire  clock;
@@ -39033,252 +39142,252 @@ module raster_top$core$triangle_setup$g4(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$
     reg  [18:0] tracked$2;
     
     // Sub module instances
-    raster_top$core$triangle_setup$g4$kdx_r$0 kdx_r$0(
+    raster_top$fragments$core$triangle_setup$g4$kdx_r$0 kdx_r$0(
         .d(kdx_r$0$d),
         .q(kdx_r$0$q),
         .clock(kdx_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$kdx_r$1 kdx_r$1(
+    raster_top$fragments$core$triangle_setup$g4$kdx_r$1 kdx_r$1(
         .d(kdx_r$1$d),
         .q(kdx_r$1$q),
         .clock(kdx_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$kdx_r$2 kdx_r$2(
+    raster_top$fragments$core$triangle_setup$g4$kdx_r$2 kdx_r$2(
         .d(kdx_r$2$d),
         .q(kdx_r$2$q),
         .clock(kdx_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$kdy_r$0 kdy_r$0(
+    raster_top$fragments$core$triangle_setup$g4$kdy_r$0 kdy_r$0(
         .d(kdy_r$0$d),
         .q(kdy_r$0$q),
         .clock(kdy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$kdy_r$1 kdy_r$1(
+    raster_top$fragments$core$triangle_setup$g4$kdy_r$1 kdy_r$1(
         .d(kdy_r$1$d),
         .q(kdy_r$1$q),
         .clock(kdy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$kdy_r$2 kdy_r$2(
+    raster_top$fragments$core$triangle_setup$g4$kdy_r$2 kdy_r$2(
         .d(kdy_r$2$d),
         .q(kdy_r$2$q),
         .clock(kdy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$up_r up_r(
+    raster_top$fragments$core$triangle_setup$g4$up_r up_r(
         .d(up_r$d),
         .q(up_r$q),
         .clock(up_r$clock)
     );
-    raster_top$core$triangle_setup$g4$edx_r$0 edx_r$0(
+    raster_top$fragments$core$triangle_setup$g4$edx_r$0 edx_r$0(
         .d(edx_r$0$d),
         .q(edx_r$0$q),
         .clock(edx_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$edx_r$1 edx_r$1(
+    raster_top$fragments$core$triangle_setup$g4$edx_r$1 edx_r$1(
         .d(edx_r$1$d),
         .q(edx_r$1$q),
         .clock(edx_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$edx_r$2 edx_r$2(
+    raster_top$fragments$core$triangle_setup$g4$edx_r$2 edx_r$2(
         .d(edx_r$2$d),
         .q(edx_r$2$q),
         .clock(edx_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$edy_r$0 edy_r$0(
+    raster_top$fragments$core$triangle_setup$g4$edy_r$0 edy_r$0(
         .d(edy_r$0$d),
         .q(edy_r$0$q),
         .clock(edy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$edy_r$1 edy_r$1(
+    raster_top$fragments$core$triangle_setup$g4$edy_r$1 edy_r$1(
         .d(edy_r$1$d),
         .q(edy_r$1$q),
         .clock(edy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$edy_r$2 edy_r$2(
+    raster_top$fragments$core$triangle_setup$g4$edy_r$2 edy_r$2(
         .d(edy_r$2$d),
         .q(edy_r$2$q),
         .clock(edy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$edy_d_r$0 edy_d_r$0(
+    raster_top$fragments$core$triangle_setup$g4$edy_d_r$0 edy_d_r$0(
         .d(edy_d_r$0$d),
         .q(edy_d_r$0$q),
         .clock(edy_d_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$edy_d_r$1 edy_d_r$1(
+    raster_top$fragments$core$triangle_setup$g4$edy_d_r$1 edy_d_r$1(
         .d(edy_d_r$1$d),
         .q(edy_d_r$1$q),
         .clock(edy_d_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$edy_d_r$2 edy_d_r$2(
+    raster_top$fragments$core$triangle_setup$g4$edy_d_r$2 edy_d_r$2(
         .d(edy_d_r$2$d),
         .q(edy_d_r$2$q),
         .clock(edy_d_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$ed16_r$0 ed16_r$0(
+    raster_top$fragments$core$triangle_setup$g4$ed16_r$0 ed16_r$0(
         .d(ed16_r$0$d),
         .q(ed16_r$0$q),
         .clock(ed16_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$ed16_r$1 ed16_r$1(
+    raster_top$fragments$core$triangle_setup$g4$ed16_r$1 ed16_r$1(
         .d(ed16_r$1$d),
         .q(ed16_r$1$q),
         .clock(ed16_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$ed16_r$2 ed16_r$2(
+    raster_top$fragments$core$triangle_setup$g4$ed16_r$2 ed16_r$2(
         .d(ed16_r$2$d),
         .q(ed16_r$2$q),
         .clock(ed16_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$cy_r$0 cy_r$0(
+    raster_top$fragments$core$triangle_setup$g4$cy_r$0 cy_r$0(
         .d(cy_r$0$d),
         .q(cy_r$0$q),
         .clock(cy_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$cy_r$1 cy_r$1(
+    raster_top$fragments$core$triangle_setup$g4$cy_r$1 cy_r$1(
         .d(cy_r$1$d),
         .q(cy_r$1$q),
         .clock(cy_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$cy_r$2 cy_r$2(
+    raster_top$fragments$core$triangle_setup$g4$cy_r$2 cy_r$2(
         .d(cy_r$2$d),
         .q(cy_r$2$q),
         .clock(cy_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$count_r$0 count_r$0(
+    raster_top$fragments$core$triangle_setup$g4$count_r$0 count_r$0(
         .d(count_r$0$d),
         .q(count_r$0$q),
         .clock(count_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$count_r$1 count_r$1(
+    raster_top$fragments$core$triangle_setup$g4$count_r$1 count_r$1(
         .d(count_r$1$d),
         .q(count_r$1$q),
         .clock(count_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$count_r$2 count_r$2(
+    raster_top$fragments$core$triangle_setup$g4$count_r$2 count_r$2(
         .d(count_r$2$d),
         .q(count_r$2$q),
         .clock(count_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$toff_r$0 toff_r$0(
+    raster_top$fragments$core$triangle_setup$g4$toff_r$0 toff_r$0(
         .d(toff_r$0$d),
         .q(toff_r$0$q),
         .clock(toff_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$toff_r$1 toff_r$1(
+    raster_top$fragments$core$triangle_setup$g4$toff_r$1 toff_r$1(
         .d(toff_r$1$d),
         .q(toff_r$1$q),
         .clock(toff_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$toff_r$2 toff_r$2(
+    raster_top$fragments$core$triangle_setup$g4$toff_r$2 toff_r$2(
         .d(toff_r$2$d),
         .q(toff_r$2$q),
         .clock(toff_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$xf_r$0 xf_r$0(
+    raster_top$fragments$core$triangle_setup$g4$xf_r$0 xf_r$0(
         .d(xf_r$0$d),
         .q(xf_r$0$q),
         .clock(xf_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$xf_r$1 xf_r$1(
+    raster_top$fragments$core$triangle_setup$g4$xf_r$1 xf_r$1(
         .d(xf_r$1$d),
         .q(xf_r$1$q),
         .clock(xf_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$xf_r$2 xf_r$2(
+    raster_top$fragments$core$triangle_setup$g4$xf_r$2 xf_r$2(
         .d(xf_r$2$d),
         .q(xf_r$2$q),
         .clock(xf_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$xi_r$0 xi_r$0(
+    raster_top$fragments$core$triangle_setup$g4$xi_r$0 xi_r$0(
         .d(xi_r$0$d),
         .q(xi_r$0$q),
         .clock(xi_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$xi_r$1 xi_r$1(
+    raster_top$fragments$core$triangle_setup$g4$xi_r$1 xi_r$1(
         .d(xi_r$1$d),
         .q(xi_r$1$q),
         .clock(xi_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$xi_r$2 xi_r$2(
+    raster_top$fragments$core$triangle_setup$g4$xi_r$2 xi_r$2(
         .d(xi_r$2$d),
         .q(xi_r$2$q),
         .clock(xi_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$off_y_r$0 off_y_r$0(
+    raster_top$fragments$core$triangle_setup$g4$off_y_r$0 off_y_r$0(
         .d(off_y_r$0$d),
         .q(off_y_r$0$q),
         .clock(off_y_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$off_y_r$1 off_y_r$1(
+    raster_top$fragments$core$triangle_setup$g4$off_y_r$1 off_y_r$1(
         .d(off_y_r$1$d),
         .q(off_y_r$1$q),
         .clock(off_y_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$off_y_r$2 off_y_r$2(
+    raster_top$fragments$core$triangle_setup$g4$off_y_r$2 off_y_r$2(
         .d(off_y_r$2$d),
         .q(off_y_r$2$q),
         .clock(off_y_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$dmaj_r$0 dmaj_r$0(
+    raster_top$fragments$core$triangle_setup$g4$dmaj_r$0 dmaj_r$0(
         .d(dmaj_r$0$d),
         .q(dmaj_r$0$q),
         .clock(dmaj_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$dmaj_r$1 dmaj_r$1(
+    raster_top$fragments$core$triangle_setup$g4$dmaj_r$1 dmaj_r$1(
         .d(dmaj_r$1$d),
         .q(dmaj_r$1$q),
         .clock(dmaj_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$dmaj_r$2 dmaj_r$2(
+    raster_top$fragments$core$triangle_setup$g4$dmaj_r$2 dmaj_r$2(
         .d(dmaj_r$2$d),
         .q(dmaj_r$2$q),
         .clock(dmaj_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$dmaj_r$3 dmaj_r$3(
+    raster_top$fragments$core$triangle_setup$g4$dmaj_r$3 dmaj_r$3(
         .d(dmaj_r$3$d),
         .q(dmaj_r$3$q),
         .clock(dmaj_r$3$clock)
     );
-    raster_top$core$triangle_setup$g4$dbot_r$0 dbot_r$0(
+    raster_top$fragments$core$triangle_setup$g4$dbot_r$0 dbot_r$0(
         .d(dbot_r$0$d),
         .q(dbot_r$0$q),
         .clock(dbot_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$dbot_r$1 dbot_r$1(
+    raster_top$fragments$core$triangle_setup$g4$dbot_r$1 dbot_r$1(
         .d(dbot_r$1$d),
         .q(dbot_r$1$q),
         .clock(dbot_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$dbot_r$2 dbot_r$2(
+    raster_top$fragments$core$triangle_setup$g4$dbot_r$2 dbot_r$2(
         .d(dbot_r$2$d),
         .q(dbot_r$2$q),
         .clock(dbot_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$dbot_r$3 dbot_r$3(
+    raster_top$fragments$core$triangle_setup$g4$dbot_r$3 dbot_r$3(
         .d(dbot_r$3$d),
         .q(dbot_r$3$q),
         .clock(dbot_r$3$clock)
     );
-    raster_top$core$triangle_setup$g4$attr0_r$0 attr0_r$0(
+    raster_top$fragments$core$triangle_setup$g4$attr0_r$0 attr0_r$0(
         .d(attr0_r$0$d),
         .q(attr0_r$0$q),
         .clock(attr0_r$0$clock)
     );
-    raster_top$core$triangle_setup$g4$attr0_r$1 attr0_r$1(
+    raster_top$fragments$core$triangle_setup$g4$attr0_r$1 attr0_r$1(
         .d(attr0_r$1$d),
         .q(attr0_r$1$q),
         .clock(attr0_r$1$clock)
     );
-    raster_top$core$triangle_setup$g4$attr0_r$2 attr0_r$2(
+    raster_top$fragments$core$triangle_setup$g4$attr0_r$2 attr0_r$2(
         .d(attr0_r$2$d),
         .q(attr0_r$2$q),
         .clock(attr0_r$2$clock)
     );
-    raster_top$core$triangle_setup$g4$attr0_r$3 attr0_r$3(
+    raster_top$fragments$core$triangle_setup$g4$attr0_r$3 attr0_r$3(
         .d(attr0_r$3$d),
         .q(attr0_r$3$q),
         .clock(attr0_r$3$clock)
     );
-    raster_top$core$triangle_setup$g4$xn0_r xn0_r(
+    raster_top$fragments$core$triangle_setup$g4$xn0_r xn0_r(
         .d(xn0_r$d),
         .q(xn0_r$q),
         .clock(xn0_r$clock)
@@ -39603,10 +39712,10 @@ module raster_top$core$triangle_setup$g4(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$
         attr0$3 = attr0_r$3$q;
     end
     
-endmodule // raster_top$core$triangle_setup$g4
+endmodule // raster_top$fragments$core$triangle_setup$g4
 
 
-module raster_top$core$triangle_setup$g4$attr0_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$attr0_r$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -39622,10 +39731,10 @@ module raster_top$core$triangle_setup$g4$attr0_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$attr0_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$attr0_r$0
 
 
-module raster_top$core$triangle_setup$g4$attr0_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$attr0_r$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -39641,10 +39750,10 @@ module raster_top$core$triangle_setup$g4$attr0_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$attr0_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$attr0_r$1
 
 
-module raster_top$core$triangle_setup$g4$attr0_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$attr0_r$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -39660,10 +39769,10 @@ module raster_top$core$triangle_setup$g4$attr0_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$attr0_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$attr0_r$2
 
 
-module raster_top$core$triangle_setup$g4$attr0_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$attr0_r$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -39679,10 +39788,10 @@ module raster_top$core$triangle_setup$g4$attr0_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$attr0_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g4$attr0_r$3
 
 
-module raster_top$core$triangle_setup$g4$count_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$count_r$0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -39698,10 +39807,10 @@ module raster_top$core$triangle_setup$g4$count_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$count_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$count_r$0
 
 
-module raster_top$core$triangle_setup$g4$count_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$count_r$1(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -39717,10 +39826,10 @@ module raster_top$core$triangle_setup$g4$count_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$count_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$count_r$1
 
 
-module raster_top$core$triangle_setup$g4$count_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$count_r$2(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -39736,10 +39845,10 @@ module raster_top$core$triangle_setup$g4$count_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$count_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$count_r$2
 
 
-module raster_top$core$triangle_setup$g4$cy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$cy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -39755,10 +39864,10 @@ module raster_top$core$triangle_setup$g4$cy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$cy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$cy_r$0
 
 
-module raster_top$core$triangle_setup$g4$cy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$cy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -39774,10 +39883,10 @@ module raster_top$core$triangle_setup$g4$cy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$cy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$cy_r$1
 
 
-module raster_top$core$triangle_setup$g4$cy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$cy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -39793,10 +39902,10 @@ module raster_top$core$triangle_setup$g4$cy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$cy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$cy_r$2
 
 
-module raster_top$core$triangle_setup$g4$dbot_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$dbot_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -39812,10 +39921,10 @@ module raster_top$core$triangle_setup$g4$dbot_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$dbot_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$dbot_r$0
 
 
-module raster_top$core$triangle_setup$g4$dbot_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$dbot_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -39831,10 +39940,10 @@ module raster_top$core$triangle_setup$g4$dbot_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$dbot_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$dbot_r$1
 
 
-module raster_top$core$triangle_setup$g4$dbot_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$dbot_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -39850,10 +39959,10 @@ module raster_top$core$triangle_setup$g4$dbot_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$dbot_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$dbot_r$2
 
 
-module raster_top$core$triangle_setup$g4$dbot_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$dbot_r$3(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -39869,10 +39978,10 @@ module raster_top$core$triangle_setup$g4$dbot_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$dbot_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g4$dbot_r$3
 
 
-module raster_top$core$triangle_setup$g4$dmaj_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$dmaj_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -39888,10 +39997,10 @@ module raster_top$core$triangle_setup$g4$dmaj_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$dmaj_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$dmaj_r$0
 
 
-module raster_top$core$triangle_setup$g4$dmaj_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$dmaj_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -39907,10 +40016,10 @@ module raster_top$core$triangle_setup$g4$dmaj_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$dmaj_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$dmaj_r$1
 
 
-module raster_top$core$triangle_setup$g4$dmaj_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$dmaj_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -39926,10 +40035,10 @@ module raster_top$core$triangle_setup$g4$dmaj_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$dmaj_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$dmaj_r$2
 
 
-module raster_top$core$triangle_setup$g4$dmaj_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$dmaj_r$3(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -39945,10 +40054,10 @@ module raster_top$core$triangle_setup$g4$dmaj_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$dmaj_r$3
+endmodule // raster_top$fragments$core$triangle_setup$g4$dmaj_r$3
 
 
-module raster_top$core$triangle_setup$g4$ed16_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$ed16_r$0(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -39964,10 +40073,10 @@ module raster_top$core$triangle_setup$g4$ed16_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$ed16_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$ed16_r$0
 
 
-module raster_top$core$triangle_setup$g4$ed16_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$ed16_r$1(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -39983,10 +40092,10 @@ module raster_top$core$triangle_setup$g4$ed16_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$ed16_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$ed16_r$1
 
 
-module raster_top$core$triangle_setup$g4$ed16_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$ed16_r$2(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -40002,10 +40111,10 @@ module raster_top$core$triangle_setup$g4$ed16_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$ed16_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$ed16_r$2
 
 
-module raster_top$core$triangle_setup$g4$edx_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$edx_r$0(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -40021,10 +40130,10 @@ module raster_top$core$triangle_setup$g4$edx_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$edx_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$edx_r$0
 
 
-module raster_top$core$triangle_setup$g4$edx_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$edx_r$1(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -40040,10 +40149,10 @@ module raster_top$core$triangle_setup$g4$edx_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$edx_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$edx_r$1
 
 
-module raster_top$core$triangle_setup$g4$edx_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$edx_r$2(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -40059,10 +40168,10 @@ module raster_top$core$triangle_setup$g4$edx_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$edx_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$edx_r$2
 
 
-module raster_top$core$triangle_setup$g4$edy_d_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$edy_d_r$0(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -40078,10 +40187,10 @@ module raster_top$core$triangle_setup$g4$edy_d_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$edy_d_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$edy_d_r$0
 
 
-module raster_top$core$triangle_setup$g4$edy_d_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$edy_d_r$1(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -40097,10 +40206,10 @@ module raster_top$core$triangle_setup$g4$edy_d_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$edy_d_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$edy_d_r$1
 
 
-module raster_top$core$triangle_setup$g4$edy_d_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$edy_d_r$2(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -40116,10 +40225,10 @@ module raster_top$core$triangle_setup$g4$edy_d_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$edy_d_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$edy_d_r$2
 
 
-module raster_top$core$triangle_setup$g4$edy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$edy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40135,10 +40244,10 @@ module raster_top$core$triangle_setup$g4$edy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$edy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$edy_r$0
 
 
-module raster_top$core$triangle_setup$g4$edy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$edy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40154,10 +40263,10 @@ module raster_top$core$triangle_setup$g4$edy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$edy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$edy_r$1
 
 
-module raster_top$core$triangle_setup$g4$edy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$edy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40173,10 +40282,10 @@ module raster_top$core$triangle_setup$g4$edy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$edy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$edy_r$2
 
 
-module raster_top$core$triangle_setup$g4$kdx_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$kdx_r$0(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -40192,10 +40301,10 @@ module raster_top$core$triangle_setup$g4$kdx_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$kdx_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$kdx_r$0
 
 
-module raster_top$core$triangle_setup$g4$kdx_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$kdx_r$1(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -40211,10 +40320,10 @@ module raster_top$core$triangle_setup$g4$kdx_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$kdx_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$kdx_r$1
 
 
-module raster_top$core$triangle_setup$g4$kdx_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$kdx_r$2(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -40230,10 +40339,10 @@ module raster_top$core$triangle_setup$g4$kdx_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$kdx_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$kdx_r$2
 
 
-module raster_top$core$triangle_setup$g4$kdy_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$kdy_r$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40249,10 +40358,10 @@ module raster_top$core$triangle_setup$g4$kdy_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$kdy_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$kdy_r$0
 
 
-module raster_top$core$triangle_setup$g4$kdy_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$kdy_r$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40268,10 +40377,10 @@ module raster_top$core$triangle_setup$g4$kdy_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$kdy_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$kdy_r$1
 
 
-module raster_top$core$triangle_setup$g4$kdy_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$kdy_r$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40287,10 +40396,10 @@ module raster_top$core$triangle_setup$g4$kdy_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$kdy_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$kdy_r$2
 
 
-module raster_top$core$triangle_setup$g4$off_y_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$off_y_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -40306,10 +40415,10 @@ module raster_top$core$triangle_setup$g4$off_y_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$off_y_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$off_y_r$0
 
 
-module raster_top$core$triangle_setup$g4$off_y_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$off_y_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -40325,10 +40434,10 @@ module raster_top$core$triangle_setup$g4$off_y_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$off_y_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$off_y_r$1
 
 
-module raster_top$core$triangle_setup$g4$off_y_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$off_y_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -40344,10 +40453,10 @@ module raster_top$core$triangle_setup$g4$off_y_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$off_y_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$off_y_r$2
 
 
-module raster_top$core$triangle_setup$g4$toff_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$toff_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -40363,10 +40472,10 @@ module raster_top$core$triangle_setup$g4$toff_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$toff_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$toff_r$0
 
 
-module raster_top$core$triangle_setup$g4$toff_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$toff_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -40382,10 +40491,10 @@ module raster_top$core$triangle_setup$g4$toff_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$toff_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$toff_r$1
 
 
-module raster_top$core$triangle_setup$g4$toff_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$toff_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -40401,10 +40510,10 @@ module raster_top$core$triangle_setup$g4$toff_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$toff_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$toff_r$2
 
 
-module raster_top$core$triangle_setup$g4$up_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$up_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -40420,10 +40529,10 @@ module raster_top$core$triangle_setup$g4$up_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$up_r
+endmodule // raster_top$fragments$core$triangle_setup$g4$up_r
 
 
-module raster_top$core$triangle_setup$g4$xf_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$xf_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -40439,10 +40548,10 @@ module raster_top$core$triangle_setup$g4$xf_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$xf_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$xf_r$0
 
 
-module raster_top$core$triangle_setup$g4$xf_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$xf_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -40458,10 +40567,10 @@ module raster_top$core$triangle_setup$g4$xf_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$xf_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$xf_r$1
 
 
-module raster_top$core$triangle_setup$g4$xf_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$xf_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -40477,10 +40586,10 @@ module raster_top$core$triangle_setup$g4$xf_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$xf_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$xf_r$2
 
 
-module raster_top$core$triangle_setup$g4$xi_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$xi_r$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -40496,10 +40605,10 @@ module raster_top$core$triangle_setup$g4$xi_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$xi_r$0
+endmodule // raster_top$fragments$core$triangle_setup$g4$xi_r$0
 
 
-module raster_top$core$triangle_setup$g4$xi_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$xi_r$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -40515,10 +40624,10 @@ module raster_top$core$triangle_setup$g4$xi_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$xi_r$1
+endmodule // raster_top$fragments$core$triangle_setup$g4$xi_r$1
 
 
-module raster_top$core$triangle_setup$g4$xi_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$xi_r$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -40534,10 +40643,10 @@ module raster_top$core$triangle_setup$g4$xi_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$xi_r$2
+endmodule // raster_top$fragments$core$triangle_setup$g4$xi_r$2
 
 
-module raster_top$core$triangle_setup$g4$xn0_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$g4$xn0_r(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -40553,10 +40662,10 @@ module raster_top$core$triangle_setup$g4$xn0_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$g4$xn0_r
+endmodule // raster_top$fragments$core$triangle_setup$g4$xn0_r
 
 
-module raster_top$core$triangle_setup$gx$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$gx$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40572,10 +40681,10 @@ module raster_top$core$triangle_setup$gx$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$gx$0
+endmodule // raster_top$fragments$core$triangle_setup$gx$0
 
 
-module raster_top$core$triangle_setup$gx$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$gx$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40591,10 +40700,10 @@ module raster_top$core$triangle_setup$gx$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$gx$1
+endmodule // raster_top$fragments$core$triangle_setup$gx$1
 
 
-module raster_top$core$triangle_setup$gx$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$gx$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40610,10 +40719,10 @@ module raster_top$core$triangle_setup$gx$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$gx$2
+endmodule // raster_top$fragments$core$triangle_setup$gx$2
 
 
-module raster_top$core$triangle_setup$gx$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$gx$3(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40629,10 +40738,10 @@ module raster_top$core$triangle_setup$gx$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$gx$3
+endmodule // raster_top$fragments$core$triangle_setup$gx$3
 
 
-module raster_top$core$triangle_setup$gy$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$gy$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40648,10 +40757,10 @@ module raster_top$core$triangle_setup$gy$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$gy$0
+endmodule // raster_top$fragments$core$triangle_setup$gy$0
 
 
-module raster_top$core$triangle_setup$gy$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$gy$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40667,10 +40776,10 @@ module raster_top$core$triangle_setup$gy$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$gy$1
+endmodule // raster_top$fragments$core$triangle_setup$gy$1
 
 
-module raster_top$core$triangle_setup$gy$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$gy$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40686,10 +40795,10 @@ module raster_top$core$triangle_setup$gy$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$gy$2
+endmodule // raster_top$fragments$core$triangle_setup$gy$2
 
 
-module raster_top$core$triangle_setup$gy$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$gy$3(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -40705,10 +40814,10 @@ module raster_top$core$triangle_setup$gy$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$gy$3
+endmodule // raster_top$fragments$core$triangle_setup$gy$3
 
 
-module raster_top$core$triangle_setup$handover_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$handover_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -40724,10 +40833,10 @@ module raster_top$core$triangle_setup$handover_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$handover_r
+endmodule // raster_top$fragments$core$triangle_setup$handover_r
 
 
-module raster_top$core$triangle_setup$inc0$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc0$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40743,10 +40852,10 @@ module raster_top$core$triangle_setup$inc0$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc0$0
+endmodule // raster_top$fragments$core$triangle_setup$inc0$0
 
 
-module raster_top$core$triangle_setup$inc0$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc0$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40762,10 +40871,10 @@ module raster_top$core$triangle_setup$inc0$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc0$1
+endmodule // raster_top$fragments$core$triangle_setup$inc0$1
 
 
-module raster_top$core$triangle_setup$inc0$10(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc0$10(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40781,10 +40890,10 @@ module raster_top$core$triangle_setup$inc0$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc0$10
+endmodule // raster_top$fragments$core$triangle_setup$inc0$10
 
 
-module raster_top$core$triangle_setup$inc0$11(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc0$11(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40800,10 +40909,10 @@ module raster_top$core$triangle_setup$inc0$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc0$11
+endmodule // raster_top$fragments$core$triangle_setup$inc0$11
 
 
-module raster_top$core$triangle_setup$inc0$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc0$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40819,10 +40928,10 @@ module raster_top$core$triangle_setup$inc0$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc0$2
+endmodule // raster_top$fragments$core$triangle_setup$inc0$2
 
 
-module raster_top$core$triangle_setup$inc0$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc0$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40838,10 +40947,10 @@ module raster_top$core$triangle_setup$inc0$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc0$3
+endmodule // raster_top$fragments$core$triangle_setup$inc0$3
 
 
-module raster_top$core$triangle_setup$inc0$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc0$4(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40857,10 +40966,10 @@ module raster_top$core$triangle_setup$inc0$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc0$4
+endmodule // raster_top$fragments$core$triangle_setup$inc0$4
 
 
-module raster_top$core$triangle_setup$inc0$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc0$5(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40876,10 +40985,10 @@ module raster_top$core$triangle_setup$inc0$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc0$5
+endmodule // raster_top$fragments$core$triangle_setup$inc0$5
 
 
-module raster_top$core$triangle_setup$inc0$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc0$6(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40895,10 +41004,10 @@ module raster_top$core$triangle_setup$inc0$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc0$6
+endmodule // raster_top$fragments$core$triangle_setup$inc0$6
 
 
-module raster_top$core$triangle_setup$inc0$7(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc0$7(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40914,10 +41023,10 @@ module raster_top$core$triangle_setup$inc0$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc0$7
+endmodule // raster_top$fragments$core$triangle_setup$inc0$7
 
 
-module raster_top$core$triangle_setup$inc0$8(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc0$8(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40933,10 +41042,10 @@ module raster_top$core$triangle_setup$inc0$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc0$8
+endmodule // raster_top$fragments$core$triangle_setup$inc0$8
 
 
-module raster_top$core$triangle_setup$inc0$9(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc0$9(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40952,10 +41061,10 @@ module raster_top$core$triangle_setup$inc0$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc0$9
+endmodule // raster_top$fragments$core$triangle_setup$inc0$9
 
 
-module raster_top$core$triangle_setup$inc1$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc1$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40971,10 +41080,10 @@ module raster_top$core$triangle_setup$inc1$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc1$0
+endmodule // raster_top$fragments$core$triangle_setup$inc1$0
 
 
-module raster_top$core$triangle_setup$inc1$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc1$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -40990,10 +41099,10 @@ module raster_top$core$triangle_setup$inc1$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc1$1
+endmodule // raster_top$fragments$core$triangle_setup$inc1$1
 
 
-module raster_top$core$triangle_setup$inc1$10(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc1$10(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -41009,10 +41118,10 @@ module raster_top$core$triangle_setup$inc1$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc1$10
+endmodule // raster_top$fragments$core$triangle_setup$inc1$10
 
 
-module raster_top$core$triangle_setup$inc1$11(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc1$11(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -41028,10 +41137,10 @@ module raster_top$core$triangle_setup$inc1$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc1$11
+endmodule // raster_top$fragments$core$triangle_setup$inc1$11
 
 
-module raster_top$core$triangle_setup$inc1$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc1$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -41047,10 +41156,10 @@ module raster_top$core$triangle_setup$inc1$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc1$2
+endmodule // raster_top$fragments$core$triangle_setup$inc1$2
 
 
-module raster_top$core$triangle_setup$inc1$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc1$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -41066,10 +41175,10 @@ module raster_top$core$triangle_setup$inc1$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc1$3
+endmodule // raster_top$fragments$core$triangle_setup$inc1$3
 
 
-module raster_top$core$triangle_setup$inc1$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc1$4(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -41085,10 +41194,10 @@ module raster_top$core$triangle_setup$inc1$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc1$4
+endmodule // raster_top$fragments$core$triangle_setup$inc1$4
 
 
-module raster_top$core$triangle_setup$inc1$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc1$5(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -41104,10 +41213,10 @@ module raster_top$core$triangle_setup$inc1$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc1$5
+endmodule // raster_top$fragments$core$triangle_setup$inc1$5
 
 
-module raster_top$core$triangle_setup$inc1$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc1$6(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -41123,10 +41232,10 @@ module raster_top$core$triangle_setup$inc1$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc1$6
+endmodule // raster_top$fragments$core$triangle_setup$inc1$6
 
 
-module raster_top$core$triangle_setup$inc1$7(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc1$7(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -41142,10 +41251,10 @@ module raster_top$core$triangle_setup$inc1$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc1$7
+endmodule // raster_top$fragments$core$triangle_setup$inc1$7
 
 
-module raster_top$core$triangle_setup$inc1$8(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc1$8(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -41161,10 +41270,10 @@ module raster_top$core$triangle_setup$inc1$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc1$8
+endmodule // raster_top$fragments$core$triangle_setup$inc1$8
 
 
-module raster_top$core$triangle_setup$inc1$9(d,q,clock);
+module raster_top$fragments$core$triangle_setup$inc1$9(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -41180,10 +41289,10 @@ module raster_top$core$triangle_setup$inc1$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$inc1$9
+endmodule // raster_top$fragments$core$triangle_setup$inc1$9
 
 
-module raster_top$core$triangle_setup$iss_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$iss_r$0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -41199,10 +41308,10 @@ module raster_top$core$triangle_setup$iss_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$iss_r$0
+endmodule // raster_top$fragments$core$triangle_setup$iss_r$0
 
 
-module raster_top$core$triangle_setup$iss_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$iss_r$1(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -41218,10 +41327,10 @@ module raster_top$core$triangle_setup$iss_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$iss_r$1
+endmodule // raster_top$fragments$core$triangle_setup$iss_r$1
 
 
-module raster_top$core$triangle_setup$iss_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$iss_r$2(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -41237,10 +41346,10 @@ module raster_top$core$triangle_setup$iss_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$iss_r$2
+endmodule // raster_top$fragments$core$triangle_setup$iss_r$2
 
 
-module raster_top$core$triangle_setup$iss_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$iss_r$3(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -41256,10 +41365,10 @@ module raster_top$core$triangle_setup$iss_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$iss_r$3
+endmodule // raster_top$fragments$core$triangle_setup$iss_r$3
 
 
-module raster_top$core$triangle_setup$iss_r$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$iss_r$4(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -41275,10 +41384,10 @@ module raster_top$core$triangle_setup$iss_r$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$iss_r$4
+endmodule // raster_top$fragments$core$triangle_setup$iss_r$4
 
 
-module raster_top$core$triangle_setup$iss_r$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$iss_r$5(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -41294,10 +41403,10 @@ module raster_top$core$triangle_setup$iss_r$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$iss_r$5
+endmodule // raster_top$fragments$core$triangle_setup$iss_r$5
 
 
-module raster_top$core$triangle_setup$iss_r$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$iss_r$6(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -41313,10 +41422,10 @@ module raster_top$core$triangle_setup$iss_r$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$iss_r$6
+endmodule // raster_top$fragments$core$triangle_setup$iss_r$6
 
 
-module raster_top$core$triangle_setup$left(d,q,clock);
+module raster_top$fragments$core$triangle_setup$left(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -41332,10 +41441,10 @@ module raster_top$core$triangle_setup$left(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$left
+endmodule // raster_top$fragments$core$triangle_setup$left
 
 
-module raster_top$core$triangle_setup$mant$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mant$0(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -41351,10 +41460,10 @@ module raster_top$core$triangle_setup$mant$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mant$0
+endmodule // raster_top$fragments$core$triangle_setup$mant$0
 
 
-module raster_top$core$triangle_setup$mant$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mant$1(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -41370,10 +41479,10 @@ module raster_top$core$triangle_setup$mant$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mant$1
+endmodule // raster_top$fragments$core$triangle_setup$mant$1
 
 
-module raster_top$core$triangle_setup$mant$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mant$2(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -41389,10 +41498,10 @@ module raster_top$core$triangle_setup$mant$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mant$2
+endmodule // raster_top$fragments$core$triangle_setup$mant$2
 
 
-module raster_top$core$triangle_setup$mant$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mant$3(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -41408,10 +41517,10 @@ module raster_top$core$triangle_setup$mant$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mant$3
+endmodule // raster_top$fragments$core$triangle_setup$mant$3
 
 
-module raster_top$core$triangle_setup$mant$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mant$4(d,q,clock);
     
     // Module arguments
     input wire  [24:0] d;
@@ -41427,10 +41536,10 @@ module raster_top$core$triangle_setup$mant$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mant$4
+endmodule // raster_top$fragments$core$triangle_setup$mant$4
 
 
-module raster_top$core$triangle_setup$mant_s(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mant_s(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -41446,10 +41555,10 @@ module raster_top$core$triangle_setup$mant_s(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mant_s
+endmodule // raster_top$fragments$core$triangle_setup$mant_s
 
 
-module raster_top$core$triangle_setup$mul$0(clock,en,a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$0(clock,en,a,b,p);
     
     // Module arguments
     input wire  clock;
@@ -41473,22 +41582,22 @@ module raster_top$core$triangle_setup$mul$0(clock,en,a,b,p);
     wire  [57:0] mul$p;
     
     // Sub module instances
-    raster_top$core$triangle_setup$mul$0$a_r a_r(
+    raster_top$fragments$core$triangle_setup$mul$0$a_r a_r(
         .d(a_r$d),
         .q(a_r$q),
         .clock(a_r$clock)
     );
-    raster_top$core$triangle_setup$mul$0$b_r b_r(
+    raster_top$fragments$core$triangle_setup$mul$0$b_r b_r(
         .d(b_r$d),
         .q(b_r$q),
         .clock(b_r$clock)
     );
-    raster_top$core$triangle_setup$mul$0$p_r p_r(
+    raster_top$fragments$core$triangle_setup$mul$0$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$mul$0$mul mul(
+    raster_top$fragments$core$triangle_setup$mul$0$mul mul(
         .a(mul$a),
         .b(mul$b),
         .p(mul$p)
@@ -41512,10 +41621,10 @@ module raster_top$core$triangle_setup$mul$0(clock,en,a,b,p);
         p = p_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$mul$0
+endmodule // raster_top$fragments$core$triangle_setup$mul$0
 
 
-module raster_top$core$triangle_setup$mul$0$a_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$0$a_r(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -41531,10 +41640,10 @@ module raster_top$core$triangle_setup$mul$0$a_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$0$a_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$0$a_r
 
 
-module raster_top$core$triangle_setup$mul$0$b_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$0$b_r(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -41550,10 +41659,10 @@ module raster_top$core$triangle_setup$mul$0$b_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$0$b_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$0$b_r
 
 
-module raster_top$core$triangle_setup$mul$0$mul(a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$0$mul(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -41564,10 +41673,10 @@ module raster_top$core$triangle_setup$mul$0$mul(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$core$triangle_setup$mul$0$mul
+endmodule // raster_top$fragments$core$triangle_setup$mul$0$mul
 
 
-module raster_top$core$triangle_setup$mul$0$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$0$p_r(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -41583,10 +41692,10 @@ module raster_top$core$triangle_setup$mul$0$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$0$p_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$0$p_r
 
 
-module raster_top$core$triangle_setup$mul$1(clock,en,a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$1(clock,en,a,b,p);
     
     // Module arguments
     input wire  clock;
@@ -41610,22 +41719,22 @@ module raster_top$core$triangle_setup$mul$1(clock,en,a,b,p);
     wire  [57:0] mul$p;
     
     // Sub module instances
-    raster_top$core$triangle_setup$mul$1$a_r a_r(
+    raster_top$fragments$core$triangle_setup$mul$1$a_r a_r(
         .d(a_r$d),
         .q(a_r$q),
         .clock(a_r$clock)
     );
-    raster_top$core$triangle_setup$mul$1$b_r b_r(
+    raster_top$fragments$core$triangle_setup$mul$1$b_r b_r(
         .d(b_r$d),
         .q(b_r$q),
         .clock(b_r$clock)
     );
-    raster_top$core$triangle_setup$mul$1$p_r p_r(
+    raster_top$fragments$core$triangle_setup$mul$1$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$mul$1$mul mul(
+    raster_top$fragments$core$triangle_setup$mul$1$mul mul(
         .a(mul$a),
         .b(mul$b),
         .p(mul$p)
@@ -41649,10 +41758,10 @@ module raster_top$core$triangle_setup$mul$1(clock,en,a,b,p);
         p = p_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$mul$1
+endmodule // raster_top$fragments$core$triangle_setup$mul$1
 
 
-module raster_top$core$triangle_setup$mul$1$a_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$1$a_r(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -41668,10 +41777,10 @@ module raster_top$core$triangle_setup$mul$1$a_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$1$a_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$1$a_r
 
 
-module raster_top$core$triangle_setup$mul$1$b_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$1$b_r(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -41687,10 +41796,10 @@ module raster_top$core$triangle_setup$mul$1$b_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$1$b_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$1$b_r
 
 
-module raster_top$core$triangle_setup$mul$1$mul(a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$1$mul(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -41701,10 +41810,10 @@ module raster_top$core$triangle_setup$mul$1$mul(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$core$triangle_setup$mul$1$mul
+endmodule // raster_top$fragments$core$triangle_setup$mul$1$mul
 
 
-module raster_top$core$triangle_setup$mul$1$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$1$p_r(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -41720,10 +41829,10 @@ module raster_top$core$triangle_setup$mul$1$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$1$p_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$1$p_r
 
 
-module raster_top$core$triangle_setup$mul$2(clock,en,a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$2(clock,en,a,b,p);
     
     // Module arguments
     input wire  clock;
@@ -41747,22 +41856,22 @@ module raster_top$core$triangle_setup$mul$2(clock,en,a,b,p);
     wire  [57:0] mul$p;
     
     // Sub module instances
-    raster_top$core$triangle_setup$mul$2$a_r a_r(
+    raster_top$fragments$core$triangle_setup$mul$2$a_r a_r(
         .d(a_r$d),
         .q(a_r$q),
         .clock(a_r$clock)
     );
-    raster_top$core$triangle_setup$mul$2$b_r b_r(
+    raster_top$fragments$core$triangle_setup$mul$2$b_r b_r(
         .d(b_r$d),
         .q(b_r$q),
         .clock(b_r$clock)
     );
-    raster_top$core$triangle_setup$mul$2$p_r p_r(
+    raster_top$fragments$core$triangle_setup$mul$2$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$mul$2$mul mul(
+    raster_top$fragments$core$triangle_setup$mul$2$mul mul(
         .a(mul$a),
         .b(mul$b),
         .p(mul$p)
@@ -41786,10 +41895,10 @@ module raster_top$core$triangle_setup$mul$2(clock,en,a,b,p);
         p = p_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$mul$2
+endmodule // raster_top$fragments$core$triangle_setup$mul$2
 
 
-module raster_top$core$triangle_setup$mul$2$a_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$2$a_r(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -41805,10 +41914,10 @@ module raster_top$core$triangle_setup$mul$2$a_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$2$a_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$2$a_r
 
 
-module raster_top$core$triangle_setup$mul$2$b_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$2$b_r(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -41824,10 +41933,10 @@ module raster_top$core$triangle_setup$mul$2$b_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$2$b_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$2$b_r
 
 
-module raster_top$core$triangle_setup$mul$2$mul(a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$2$mul(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -41838,10 +41947,10 @@ module raster_top$core$triangle_setup$mul$2$mul(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$core$triangle_setup$mul$2$mul
+endmodule // raster_top$fragments$core$triangle_setup$mul$2$mul
 
 
-module raster_top$core$triangle_setup$mul$2$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$2$p_r(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -41857,10 +41966,10 @@ module raster_top$core$triangle_setup$mul$2$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$2$p_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$2$p_r
 
 
-module raster_top$core$triangle_setup$mul$3(clock,en,a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$3(clock,en,a,b,p);
     
     // Module arguments
     input wire  clock;
@@ -41884,22 +41993,22 @@ module raster_top$core$triangle_setup$mul$3(clock,en,a,b,p);
     wire  [57:0] mul$p;
     
     // Sub module instances
-    raster_top$core$triangle_setup$mul$3$a_r a_r(
+    raster_top$fragments$core$triangle_setup$mul$3$a_r a_r(
         .d(a_r$d),
         .q(a_r$q),
         .clock(a_r$clock)
     );
-    raster_top$core$triangle_setup$mul$3$b_r b_r(
+    raster_top$fragments$core$triangle_setup$mul$3$b_r b_r(
         .d(b_r$d),
         .q(b_r$q),
         .clock(b_r$clock)
     );
-    raster_top$core$triangle_setup$mul$3$p_r p_r(
+    raster_top$fragments$core$triangle_setup$mul$3$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$mul$3$mul mul(
+    raster_top$fragments$core$triangle_setup$mul$3$mul mul(
         .a(mul$a),
         .b(mul$b),
         .p(mul$p)
@@ -41923,10 +42032,10 @@ module raster_top$core$triangle_setup$mul$3(clock,en,a,b,p);
         p = p_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$mul$3
+endmodule // raster_top$fragments$core$triangle_setup$mul$3
 
 
-module raster_top$core$triangle_setup$mul$3$a_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$3$a_r(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -41942,10 +42051,10 @@ module raster_top$core$triangle_setup$mul$3$a_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$3$a_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$3$a_r
 
 
-module raster_top$core$triangle_setup$mul$3$b_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$3$b_r(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -41961,10 +42070,10 @@ module raster_top$core$triangle_setup$mul$3$b_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$3$b_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$3$b_r
 
 
-module raster_top$core$triangle_setup$mul$3$mul(a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$3$mul(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -41975,10 +42084,10 @@ module raster_top$core$triangle_setup$mul$3$mul(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$core$triangle_setup$mul$3$mul
+endmodule // raster_top$fragments$core$triangle_setup$mul$3$mul
 
 
-module raster_top$core$triangle_setup$mul$3$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$3$p_r(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -41994,10 +42103,10 @@ module raster_top$core$triangle_setup$mul$3$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$3$p_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$3$p_r
 
 
-module raster_top$core$triangle_setup$mul$4(clock,en,a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$4(clock,en,a,b,p);
     
     // Module arguments
     input wire  clock;
@@ -42021,22 +42130,22 @@ module raster_top$core$triangle_setup$mul$4(clock,en,a,b,p);
     wire  [57:0] mul$p;
     
     // Sub module instances
-    raster_top$core$triangle_setup$mul$4$a_r a_r(
+    raster_top$fragments$core$triangle_setup$mul$4$a_r a_r(
         .d(a_r$d),
         .q(a_r$q),
         .clock(a_r$clock)
     );
-    raster_top$core$triangle_setup$mul$4$b_r b_r(
+    raster_top$fragments$core$triangle_setup$mul$4$b_r b_r(
         .d(b_r$d),
         .q(b_r$q),
         .clock(b_r$clock)
     );
-    raster_top$core$triangle_setup$mul$4$p_r p_r(
+    raster_top$fragments$core$triangle_setup$mul$4$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$mul$4$mul mul(
+    raster_top$fragments$core$triangle_setup$mul$4$mul mul(
         .a(mul$a),
         .b(mul$b),
         .p(mul$p)
@@ -42060,10 +42169,10 @@ module raster_top$core$triangle_setup$mul$4(clock,en,a,b,p);
         p = p_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$mul$4
+endmodule // raster_top$fragments$core$triangle_setup$mul$4
 
 
-module raster_top$core$triangle_setup$mul$4$a_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$4$a_r(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -42079,10 +42188,10 @@ module raster_top$core$triangle_setup$mul$4$a_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$4$a_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$4$a_r
 
 
-module raster_top$core$triangle_setup$mul$4$b_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$4$b_r(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -42098,10 +42207,10 @@ module raster_top$core$triangle_setup$mul$4$b_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$4$b_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$4$b_r
 
 
-module raster_top$core$triangle_setup$mul$4$mul(a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$4$mul(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -42112,10 +42221,10 @@ module raster_top$core$triangle_setup$mul$4$mul(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$core$triangle_setup$mul$4$mul
+endmodule // raster_top$fragments$core$triangle_setup$mul$4$mul
 
 
-module raster_top$core$triangle_setup$mul$4$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$4$p_r(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -42131,10 +42240,10 @@ module raster_top$core$triangle_setup$mul$4$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$4$p_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$4$p_r
 
 
-module raster_top$core$triangle_setup$mul$5(clock,en,a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$5(clock,en,a,b,p);
     
     // Module arguments
     input wire  clock;
@@ -42158,22 +42267,22 @@ module raster_top$core$triangle_setup$mul$5(clock,en,a,b,p);
     wire  [57:0] mul$p;
     
     // Sub module instances
-    raster_top$core$triangle_setup$mul$5$a_r a_r(
+    raster_top$fragments$core$triangle_setup$mul$5$a_r a_r(
         .d(a_r$d),
         .q(a_r$q),
         .clock(a_r$clock)
     );
-    raster_top$core$triangle_setup$mul$5$b_r b_r(
+    raster_top$fragments$core$triangle_setup$mul$5$b_r b_r(
         .d(b_r$d),
         .q(b_r$q),
         .clock(b_r$clock)
     );
-    raster_top$core$triangle_setup$mul$5$p_r p_r(
+    raster_top$fragments$core$triangle_setup$mul$5$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$mul$5$mul mul(
+    raster_top$fragments$core$triangle_setup$mul$5$mul mul(
         .a(mul$a),
         .b(mul$b),
         .p(mul$p)
@@ -42197,10 +42306,10 @@ module raster_top$core$triangle_setup$mul$5(clock,en,a,b,p);
         p = p_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$mul$5
+endmodule // raster_top$fragments$core$triangle_setup$mul$5
 
 
-module raster_top$core$triangle_setup$mul$5$a_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$5$a_r(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -42216,10 +42325,10 @@ module raster_top$core$triangle_setup$mul$5$a_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$5$a_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$5$a_r
 
 
-module raster_top$core$triangle_setup$mul$5$b_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$5$b_r(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -42235,10 +42344,10 @@ module raster_top$core$triangle_setup$mul$5$b_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$5$b_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$5$b_r
 
 
-module raster_top$core$triangle_setup$mul$5$mul(a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$5$mul(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -42249,10 +42358,10 @@ module raster_top$core$triangle_setup$mul$5$mul(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$core$triangle_setup$mul$5$mul
+endmodule // raster_top$fragments$core$triangle_setup$mul$5$mul
 
 
-module raster_top$core$triangle_setup$mul$5$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$5$p_r(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -42268,10 +42377,10 @@ module raster_top$core$triangle_setup$mul$5$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$5$p_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$5$p_r
 
 
-module raster_top$core$triangle_setup$mul$6(clock,en,a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$6(clock,en,a,b,p);
     
     // Module arguments
     input wire  clock;
@@ -42295,22 +42404,22 @@ module raster_top$core$triangle_setup$mul$6(clock,en,a,b,p);
     wire  [57:0] mul$p;
     
     // Sub module instances
-    raster_top$core$triangle_setup$mul$6$a_r a_r(
+    raster_top$fragments$core$triangle_setup$mul$6$a_r a_r(
         .d(a_r$d),
         .q(a_r$q),
         .clock(a_r$clock)
     );
-    raster_top$core$triangle_setup$mul$6$b_r b_r(
+    raster_top$fragments$core$triangle_setup$mul$6$b_r b_r(
         .d(b_r$d),
         .q(b_r$q),
         .clock(b_r$clock)
     );
-    raster_top$core$triangle_setup$mul$6$p_r p_r(
+    raster_top$fragments$core$triangle_setup$mul$6$p_r p_r(
         .d(p_r$d),
         .q(p_r$q),
         .clock(p_r$clock)
     );
-    raster_top$core$triangle_setup$mul$6$mul mul(
+    raster_top$fragments$core$triangle_setup$mul$6$mul mul(
         .a(mul$a),
         .b(mul$b),
         .p(mul$p)
@@ -42334,10 +42443,10 @@ module raster_top$core$triangle_setup$mul$6(clock,en,a,b,p);
         p = p_r$q;
     end
     
-endmodule // raster_top$core$triangle_setup$mul$6
+endmodule // raster_top$fragments$core$triangle_setup$mul$6
 
 
-module raster_top$core$triangle_setup$mul$6$a_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$6$a_r(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -42353,10 +42462,10 @@ module raster_top$core$triangle_setup$mul$6$a_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$6$a_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$6$a_r
 
 
-module raster_top$core$triangle_setup$mul$6$b_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$6$b_r(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -42372,10 +42481,10 @@ module raster_top$core$triangle_setup$mul$6$b_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$6$b_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$6$b_r
 
 
-module raster_top$core$triangle_setup$mul$6$mul(a,b,p);
+module raster_top$fragments$core$triangle_setup$mul$6$mul(a,b,p);
     
     // Module arguments
     input wire  [56:0] a;
@@ -42386,10 +42495,10 @@ module raster_top$core$triangle_setup$mul$6$mul(a,b,p);
     // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$core$triangle_setup$mul$6$mul
+endmodule // raster_top$fragments$core$triangle_setup$mul$6$mul
 
 
-module raster_top$core$triangle_setup$mul$6$p_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$mul$6$p_r(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -42405,10 +42514,10 @@ module raster_top$core$triangle_setup$mul$6$p_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$mul$6$p_r
+endmodule // raster_top$fragments$core$triangle_setup$mul$6$p_r
 
 
-module raster_top$core$triangle_setup$norm(d,q,clock);
+module raster_top$fragments$core$triangle_setup$norm(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -42424,10 +42533,10 @@ module raster_top$core$triangle_setup$norm(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$norm
+endmodule // raster_top$fragments$core$triangle_setup$norm
 
 
-module raster_top$core$triangle_setup$norm_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$norm_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -42443,10 +42552,10 @@ module raster_top$core$triangle_setup$norm_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$norm_r
+endmodule // raster_top$fragments$core$triangle_setup$norm_r
 
 
-module raster_top$core$triangle_setup$nsh(d,q,clock);
+module raster_top$fragments$core$triangle_setup$nsh(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -42462,10 +42571,10 @@ module raster_top$core$triangle_setup$nsh(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$nsh
+endmodule // raster_top$fragments$core$triangle_setup$nsh
 
 
-module raster_top$core$triangle_setup$num$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$num$0(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -42481,10 +42590,10 @@ module raster_top$core$triangle_setup$num$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$num$0
+endmodule // raster_top$fragments$core$triangle_setup$num$0
 
 
-module raster_top$core$triangle_setup$num$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$num$1(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -42500,10 +42609,10 @@ module raster_top$core$triangle_setup$num$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$num$1
+endmodule // raster_top$fragments$core$triangle_setup$num$1
 
 
-module raster_top$core$triangle_setup$num$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$num$2(d,q,clock);
     
     // Module arguments
     input wire  [57:0] d;
@@ -42519,10 +42628,10 @@ module raster_top$core$triangle_setup$num$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$num$2
+endmodule // raster_top$fragments$core$triangle_setup$num$2
 
 
-module raster_top$core$triangle_setup$o_count$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$o_count$0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -42538,10 +42647,10 @@ module raster_top$core$triangle_setup$o_count$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$o_count$0
+endmodule // raster_top$fragments$core$triangle_setup$o_count$0
 
 
-module raster_top$core$triangle_setup$o_count$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$o_count$1(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -42557,10 +42666,10 @@ module raster_top$core$triangle_setup$o_count$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$o_count$1
+endmodule // raster_top$fragments$core$triangle_setup$o_count$1
 
 
-module raster_top$core$triangle_setup$o_count$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$o_count$2(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -42576,10 +42685,10 @@ module raster_top$core$triangle_setup$o_count$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$o_count$2
+endmodule // raster_top$fragments$core$triangle_setup$o_count$2
 
 
-module raster_top$core$triangle_setup$o_d$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$o_d$0(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -42595,10 +42704,10 @@ module raster_top$core$triangle_setup$o_d$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$o_d$0
+endmodule // raster_top$fragments$core$triangle_setup$o_d$0
 
 
-module raster_top$core$triangle_setup$o_d$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$o_d$1(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -42614,10 +42723,10 @@ module raster_top$core$triangle_setup$o_d$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$o_d$1
+endmodule // raster_top$fragments$core$triangle_setup$o_d$1
 
 
-module raster_top$core$triangle_setup$o_d$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$o_d$2(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -42633,10 +42742,10 @@ module raster_top$core$triangle_setup$o_d$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$o_d$2
+endmodule // raster_top$fragments$core$triangle_setup$o_d$2
 
 
-module raster_top$core$triangle_setup$o_j$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$o_j$0(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -42652,10 +42761,10 @@ module raster_top$core$triangle_setup$o_j$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$o_j$0
+endmodule // raster_top$fragments$core$triangle_setup$o_j$0
 
 
-module raster_top$core$triangle_setup$o_j$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$o_j$1(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -42671,10 +42780,10 @@ module raster_top$core$triangle_setup$o_j$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$o_j$1
+endmodule // raster_top$fragments$core$triangle_setup$o_j$1
 
 
-module raster_top$core$triangle_setup$o_j$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$o_j$2(d,q,clock);
     
     // Module arguments
     input wire  [12:0] d;
@@ -42690,10 +42799,10 @@ module raster_top$core$triangle_setup$o_j$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$o_j$2
+endmodule // raster_top$fragments$core$triangle_setup$o_j$2
 
 
-module raster_top$core$triangle_setup$o_maj_left(d,q,clock);
+module raster_top$fragments$core$triangle_setup$o_maj_left(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -42709,10 +42818,10 @@ module raster_top$core$triangle_setup$o_maj_left(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$o_maj_left
+endmodule // raster_top$fragments$core$triangle_setup$o_maj_left
 
 
-module raster_top$core$triangle_setup$o_walk(d,q,clock);
+module raster_top$fragments$core$triangle_setup$o_walk(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -42728,10 +42837,10 @@ module raster_top$core$triangle_setup$o_walk(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$o_walk
+endmodule // raster_top$fragments$core$triangle_setup$o_walk
 
 
-module raster_top$core$triangle_setup$off_grid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$off_grid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -42747,10 +42856,10 @@ module raster_top$core$triangle_setup$off_grid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$off_grid_r
+endmodule // raster_top$fragments$core$triangle_setup$off_grid_r
 
 
-module raster_top$core$triangle_setup$p$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$p$0(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -42766,10 +42875,10 @@ module raster_top$core$triangle_setup$p$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$p$0
+endmodule // raster_top$fragments$core$triangle_setup$p$0
 
 
-module raster_top$core$triangle_setup$p$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$p$1(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -42785,10 +42894,10 @@ module raster_top$core$triangle_setup$p$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$p$1
+endmodule // raster_top$fragments$core$triangle_setup$p$1
 
 
-module raster_top$core$triangle_setup$p$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$p$2(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -42804,10 +42913,10 @@ module raster_top$core$triangle_setup$p$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$p$2
+endmodule // raster_top$fragments$core$triangle_setup$p$2
 
 
-module raster_top$core$triangle_setup$p$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$p$3(d,q,clock);
     
     // Module arguments
     input wire  [56:0] d;
@@ -42823,10 +42932,10 @@ module raster_top$core$triangle_setup$p$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$p$3
+endmodule // raster_top$fragments$core$triangle_setup$p$3
 
 
-module raster_top$core$triangle_setup$phase(d,q,clock);
+module raster_top$fragments$core$triangle_setup$phase(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -42842,10 +42951,10 @@ module raster_top$core$triangle_setup$phase(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$phase
+endmodule // raster_top$fragments$core$triangle_setup$phase
 
 
-module raster_top$core$triangle_setup$plane$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$plane$0(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -42861,10 +42970,10 @@ module raster_top$core$triangle_setup$plane$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$plane$0
+endmodule // raster_top$fragments$core$triangle_setup$plane$0
 
 
-module raster_top$core$triangle_setup$plane$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$plane$1(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -42880,10 +42989,10 @@ module raster_top$core$triangle_setup$plane$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$plane$1
+endmodule // raster_top$fragments$core$triangle_setup$plane$1
 
 
-module raster_top$core$triangle_setup$plane$10(d,q,clock);
+module raster_top$fragments$core$triangle_setup$plane$10(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -42899,10 +43008,10 @@ module raster_top$core$triangle_setup$plane$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$plane$10
+endmodule // raster_top$fragments$core$triangle_setup$plane$10
 
 
-module raster_top$core$triangle_setup$plane$11(d,q,clock);
+module raster_top$fragments$core$triangle_setup$plane$11(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -42918,10 +43027,10 @@ module raster_top$core$triangle_setup$plane$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$plane$11
+endmodule // raster_top$fragments$core$triangle_setup$plane$11
 
 
-module raster_top$core$triangle_setup$plane$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$plane$2(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -42937,10 +43046,10 @@ module raster_top$core$triangle_setup$plane$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$plane$2
+endmodule // raster_top$fragments$core$triangle_setup$plane$2
 
 
-module raster_top$core$triangle_setup$plane$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$plane$3(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -42956,10 +43065,10 @@ module raster_top$core$triangle_setup$plane$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$plane$3
+endmodule // raster_top$fragments$core$triangle_setup$plane$3
 
 
-module raster_top$core$triangle_setup$plane$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$plane$4(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -42975,10 +43084,10 @@ module raster_top$core$triangle_setup$plane$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$plane$4
+endmodule // raster_top$fragments$core$triangle_setup$plane$4
 
 
-module raster_top$core$triangle_setup$plane$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$plane$5(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -42994,10 +43103,10 @@ module raster_top$core$triangle_setup$plane$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$plane$5
+endmodule // raster_top$fragments$core$triangle_setup$plane$5
 
 
-module raster_top$core$triangle_setup$plane$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$plane$6(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -43013,10 +43122,10 @@ module raster_top$core$triangle_setup$plane$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$plane$6
+endmodule // raster_top$fragments$core$triangle_setup$plane$6
 
 
-module raster_top$core$triangle_setup$plane$7(d,q,clock);
+module raster_top$fragments$core$triangle_setup$plane$7(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -43032,10 +43141,10 @@ module raster_top$core$triangle_setup$plane$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$plane$7
+endmodule // raster_top$fragments$core$triangle_setup$plane$7
 
 
-module raster_top$core$triangle_setup$plane$8(d,q,clock);
+module raster_top$fragments$core$triangle_setup$plane$8(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -43051,10 +43160,10 @@ module raster_top$core$triangle_setup$plane$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$plane$8
+endmodule // raster_top$fragments$core$triangle_setup$plane$8
 
 
-module raster_top$core$triangle_setup$plane$9(d,q,clock);
+module raster_top$fragments$core$triangle_setup$plane$9(d,q,clock);
     
     // Module arguments
     input wire  [39:0] d;
@@ -43070,10 +43179,10 @@ module raster_top$core$triangle_setup$plane$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$plane$9
+endmodule // raster_top$fragments$core$triangle_setup$plane$9
 
 
-module raster_top$core$triangle_setup$q$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43089,10 +43198,10 @@ module raster_top$core$triangle_setup$q$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$0
+endmodule // raster_top$fragments$core$triangle_setup$q$0
 
 
-module raster_top$core$triangle_setup$q$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43108,10 +43217,10 @@ module raster_top$core$triangle_setup$q$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$1
+endmodule // raster_top$fragments$core$triangle_setup$q$1
 
 
-module raster_top$core$triangle_setup$q$10(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$10(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43127,10 +43236,10 @@ module raster_top$core$triangle_setup$q$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$10
+endmodule // raster_top$fragments$core$triangle_setup$q$10
 
 
-module raster_top$core$triangle_setup$q$11(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$11(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43146,10 +43255,10 @@ module raster_top$core$triangle_setup$q$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$11
+endmodule // raster_top$fragments$core$triangle_setup$q$11
 
 
-module raster_top$core$triangle_setup$q$12(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$12(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43165,10 +43274,10 @@ module raster_top$core$triangle_setup$q$12(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$12
+endmodule // raster_top$fragments$core$triangle_setup$q$12
 
 
-module raster_top$core$triangle_setup$q$13(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$13(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43184,10 +43293,10 @@ module raster_top$core$triangle_setup$q$13(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$13
+endmodule // raster_top$fragments$core$triangle_setup$q$13
 
 
-module raster_top$core$triangle_setup$q$14(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$14(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43203,10 +43312,10 @@ module raster_top$core$triangle_setup$q$14(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$14
+endmodule // raster_top$fragments$core$triangle_setup$q$14
 
 
-module raster_top$core$triangle_setup$q$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43222,10 +43331,10 @@ module raster_top$core$triangle_setup$q$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$2
+endmodule // raster_top$fragments$core$triangle_setup$q$2
 
 
-module raster_top$core$triangle_setup$q$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$3(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43241,10 +43350,10 @@ module raster_top$core$triangle_setup$q$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$3
+endmodule // raster_top$fragments$core$triangle_setup$q$3
 
 
-module raster_top$core$triangle_setup$q$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$4(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43260,10 +43369,10 @@ module raster_top$core$triangle_setup$q$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$4
+endmodule // raster_top$fragments$core$triangle_setup$q$4
 
 
-module raster_top$core$triangle_setup$q$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$5(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43279,10 +43388,10 @@ module raster_top$core$triangle_setup$q$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$5
+endmodule // raster_top$fragments$core$triangle_setup$q$5
 
 
-module raster_top$core$triangle_setup$q$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$6(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43298,10 +43407,10 @@ module raster_top$core$triangle_setup$q$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$6
+endmodule // raster_top$fragments$core$triangle_setup$q$6
 
 
-module raster_top$core$triangle_setup$q$7(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$7(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43317,10 +43426,10 @@ module raster_top$core$triangle_setup$q$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$7
+endmodule // raster_top$fragments$core$triangle_setup$q$7
 
 
-module raster_top$core$triangle_setup$q$8(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$8(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43336,10 +43445,10 @@ module raster_top$core$triangle_setup$q$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$8
+endmodule // raster_top$fragments$core$triangle_setup$q$8
 
 
-module raster_top$core$triangle_setup$q$9(d,q,clock);
+module raster_top$fragments$core$triangle_setup$q$9(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -43355,10 +43464,10 @@ module raster_top$core$triangle_setup$q$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$q$9
+endmodule // raster_top$fragments$core$triangle_setup$q$9
 
 
-module raster_top$core$triangle_setup$r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$0(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43374,10 +43483,10 @@ module raster_top$core$triangle_setup$r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$0
+endmodule // raster_top$fragments$core$triangle_setup$r$0
 
 
-module raster_top$core$triangle_setup$r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$1(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43393,10 +43502,10 @@ module raster_top$core$triangle_setup$r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$1
+endmodule // raster_top$fragments$core$triangle_setup$r$1
 
 
-module raster_top$core$triangle_setup$r$10(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$10(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43412,10 +43521,10 @@ module raster_top$core$triangle_setup$r$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$10
+endmodule // raster_top$fragments$core$triangle_setup$r$10
 
 
-module raster_top$core$triangle_setup$r$11(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$11(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43431,10 +43540,10 @@ module raster_top$core$triangle_setup$r$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$11
+endmodule // raster_top$fragments$core$triangle_setup$r$11
 
 
-module raster_top$core$triangle_setup$r$12(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$12(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43450,10 +43559,10 @@ module raster_top$core$triangle_setup$r$12(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$12
+endmodule // raster_top$fragments$core$triangle_setup$r$12
 
 
-module raster_top$core$triangle_setup$r$13(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$13(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43469,10 +43578,10 @@ module raster_top$core$triangle_setup$r$13(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$13
+endmodule // raster_top$fragments$core$triangle_setup$r$13
 
 
-module raster_top$core$triangle_setup$r$14(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$14(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43488,10 +43597,10 @@ module raster_top$core$triangle_setup$r$14(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$14
+endmodule // raster_top$fragments$core$triangle_setup$r$14
 
 
-module raster_top$core$triangle_setup$r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$2(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43507,10 +43616,10 @@ module raster_top$core$triangle_setup$r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$2
+endmodule // raster_top$fragments$core$triangle_setup$r$2
 
 
-module raster_top$core$triangle_setup$r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$3(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43526,10 +43635,10 @@ module raster_top$core$triangle_setup$r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$3
+endmodule // raster_top$fragments$core$triangle_setup$r$3
 
 
-module raster_top$core$triangle_setup$r$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$4(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43545,10 +43654,10 @@ module raster_top$core$triangle_setup$r$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$4
+endmodule // raster_top$fragments$core$triangle_setup$r$4
 
 
-module raster_top$core$triangle_setup$r$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$5(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43564,10 +43673,10 @@ module raster_top$core$triangle_setup$r$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$5
+endmodule // raster_top$fragments$core$triangle_setup$r$5
 
 
-module raster_top$core$triangle_setup$r$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$6(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43583,10 +43692,10 @@ module raster_top$core$triangle_setup$r$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$6
+endmodule // raster_top$fragments$core$triangle_setup$r$6
 
 
-module raster_top$core$triangle_setup$r$7(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$7(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43602,10 +43711,10 @@ module raster_top$core$triangle_setup$r$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$7
+endmodule // raster_top$fragments$core$triangle_setup$r$7
 
 
-module raster_top$core$triangle_setup$r$8(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$8(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43621,10 +43730,10 @@ module raster_top$core$triangle_setup$r$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$8
+endmodule // raster_top$fragments$core$triangle_setup$r$8
 
 
-module raster_top$core$triangle_setup$r$9(d,q,clock);
+module raster_top$fragments$core$triangle_setup$r$9(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43640,10 +43749,10 @@ module raster_top$core$triangle_setup$r$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$r$9
+endmodule // raster_top$fragments$core$triangle_setup$r$9
 
 
-module raster_top$core$triangle_setup$res_r$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$res_r$0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -43659,10 +43768,10 @@ module raster_top$core$triangle_setup$res_r$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$res_r$0
+endmodule // raster_top$fragments$core$triangle_setup$res_r$0
 
 
-module raster_top$core$triangle_setup$res_r$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$res_r$1(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -43678,10 +43787,10 @@ module raster_top$core$triangle_setup$res_r$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$res_r$1
+endmodule // raster_top$fragments$core$triangle_setup$res_r$1
 
 
-module raster_top$core$triangle_setup$res_r$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$res_r$2(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -43697,10 +43806,10 @@ module raster_top$core$triangle_setup$res_r$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$res_r$2
+endmodule // raster_top$fragments$core$triangle_setup$res_r$2
 
 
-module raster_top$core$triangle_setup$res_r$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$res_r$3(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -43716,10 +43825,10 @@ module raster_top$core$triangle_setup$res_r$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$res_r$3
+endmodule // raster_top$fragments$core$triangle_setup$res_r$3
 
 
-module raster_top$core$triangle_setup$res_r$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$res_r$4(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -43735,10 +43844,10 @@ module raster_top$core$triangle_setup$res_r$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$res_r$4
+endmodule // raster_top$fragments$core$triangle_setup$res_r$4
 
 
-module raster_top$core$triangle_setup$res_r$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$res_r$5(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -43754,10 +43863,10 @@ module raster_top$core$triangle_setup$res_r$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$res_r$5
+endmodule // raster_top$fragments$core$triangle_setup$res_r$5
 
 
-module raster_top$core$triangle_setup$res_r$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$res_r$6(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -43773,10 +43882,10 @@ module raster_top$core$triangle_setup$res_r$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$res_r$6
+endmodule // raster_top$fragments$core$triangle_setup$res_r$6
 
 
-module raster_top$core$triangle_setup$rho$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$0(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43792,10 +43901,10 @@ module raster_top$core$triangle_setup$rho$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$0
+endmodule // raster_top$fragments$core$triangle_setup$rho$0
 
 
-module raster_top$core$triangle_setup$rho$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$1(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43811,10 +43920,10 @@ module raster_top$core$triangle_setup$rho$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$1
+endmodule // raster_top$fragments$core$triangle_setup$rho$1
 
 
-module raster_top$core$triangle_setup$rho$10(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$10(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43830,10 +43939,10 @@ module raster_top$core$triangle_setup$rho$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$10
+endmodule // raster_top$fragments$core$triangle_setup$rho$10
 
 
-module raster_top$core$triangle_setup$rho$11(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$11(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43849,10 +43958,10 @@ module raster_top$core$triangle_setup$rho$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$11
+endmodule // raster_top$fragments$core$triangle_setup$rho$11
 
 
-module raster_top$core$triangle_setup$rho$12(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$12(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43868,10 +43977,10 @@ module raster_top$core$triangle_setup$rho$12(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$12
+endmodule // raster_top$fragments$core$triangle_setup$rho$12
 
 
-module raster_top$core$triangle_setup$rho$13(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$13(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43887,10 +43996,10 @@ module raster_top$core$triangle_setup$rho$13(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$13
+endmodule // raster_top$fragments$core$triangle_setup$rho$13
 
 
-module raster_top$core$triangle_setup$rho$14(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$14(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43906,10 +44015,10 @@ module raster_top$core$triangle_setup$rho$14(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$14
+endmodule // raster_top$fragments$core$triangle_setup$rho$14
 
 
-module raster_top$core$triangle_setup$rho$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$2(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43925,10 +44034,10 @@ module raster_top$core$triangle_setup$rho$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$2
+endmodule // raster_top$fragments$core$triangle_setup$rho$2
 
 
-module raster_top$core$triangle_setup$rho$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$3(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43944,10 +44053,10 @@ module raster_top$core$triangle_setup$rho$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$3
+endmodule // raster_top$fragments$core$triangle_setup$rho$3
 
 
-module raster_top$core$triangle_setup$rho$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$4(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43963,10 +44072,10 @@ module raster_top$core$triangle_setup$rho$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$4
+endmodule // raster_top$fragments$core$triangle_setup$rho$4
 
 
-module raster_top$core$triangle_setup$rho$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$5(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -43982,10 +44091,10 @@ module raster_top$core$triangle_setup$rho$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$5
+endmodule // raster_top$fragments$core$triangle_setup$rho$5
 
 
-module raster_top$core$triangle_setup$rho$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$6(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -44001,10 +44110,10 @@ module raster_top$core$triangle_setup$rho$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$6
+endmodule // raster_top$fragments$core$triangle_setup$rho$6
 
 
-module raster_top$core$triangle_setup$rho$7(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$7(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -44020,10 +44129,10 @@ module raster_top$core$triangle_setup$rho$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$7
+endmodule // raster_top$fragments$core$triangle_setup$rho$7
 
 
-module raster_top$core$triangle_setup$rho$8(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$8(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -44039,10 +44148,10 @@ module raster_top$core$triangle_setup$rho$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$8
+endmodule // raster_top$fragments$core$triangle_setup$rho$8
 
 
-module raster_top$core$triangle_setup$rho$9(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rho$9(d,q,clock);
     
     // Module arguments
     input wire  [20:0] d;
@@ -44058,10 +44167,10 @@ module raster_top$core$triangle_setup$rho$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rho$9
+endmodule // raster_top$fragments$core$triangle_setup$rho$9
 
 
-module raster_top$core$triangle_setup$rsh(d,q,clock);
+module raster_top$fragments$core$triangle_setup$rsh(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -44077,10 +44186,10 @@ module raster_top$core$triangle_setup$rsh(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$rsh
+endmodule // raster_top$fragments$core$triangle_setup$rsh
 
 
-module raster_top$core$triangle_setup$sign$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$sign$0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -44096,10 +44205,10 @@ module raster_top$core$triangle_setup$sign$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$sign$0
+endmodule // raster_top$fragments$core$triangle_setup$sign$0
 
 
-module raster_top$core$triangle_setup$sign$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$sign$1(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -44115,10 +44224,10 @@ module raster_top$core$triangle_setup$sign$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$sign$1
+endmodule // raster_top$fragments$core$triangle_setup$sign$1
 
 
-module raster_top$core$triangle_setup$sign$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$sign$2(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -44134,10 +44243,10 @@ module raster_top$core$triangle_setup$sign$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$sign$2
+endmodule // raster_top$fragments$core$triangle_setup$sign$2
 
 
-module raster_top$core$triangle_setup$sign$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$sign$3(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -44153,10 +44262,10 @@ module raster_top$core$triangle_setup$sign$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$sign$3
+endmodule // raster_top$fragments$core$triangle_setup$sign$3
 
 
-module raster_top$core$triangle_setup$sign$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$sign$4(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -44172,10 +44281,10 @@ module raster_top$core$triangle_setup$sign$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$sign$4
+endmodule // raster_top$fragments$core$triangle_setup$sign$4
 
 
-module raster_top$core$triangle_setup$t$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$t$0(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44191,10 +44300,10 @@ module raster_top$core$triangle_setup$t$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$t$0
+endmodule // raster_top$fragments$core$triangle_setup$t$0
 
 
-module raster_top$core$triangle_setup$t$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$t$1(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44210,10 +44319,10 @@ module raster_top$core$triangle_setup$t$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$t$1
+endmodule // raster_top$fragments$core$triangle_setup$t$1
 
 
-module raster_top$core$triangle_setup$t$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$t$2(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44229,10 +44338,10 @@ module raster_top$core$triangle_setup$t$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$t$2
+endmodule // raster_top$fragments$core$triangle_setup$t$2
 
 
-module raster_top$core$triangle_setup$t$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$t$3(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44248,10 +44357,10 @@ module raster_top$core$triangle_setup$t$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$t$3
+endmodule // raster_top$fragments$core$triangle_setup$t$3
 
 
-module raster_top$core$triangle_setup$t$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$t$4(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44267,10 +44376,10 @@ module raster_top$core$triangle_setup$t$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$t$4
+endmodule // raster_top$fragments$core$triangle_setup$t$4
 
 
-module raster_top$core$triangle_setup$valid_r(d,q,clock);
+module raster_top$fragments$core$triangle_setup$valid_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -44286,10 +44395,10 @@ module raster_top$core$triangle_setup$valid_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$valid_r
+endmodule // raster_top$fragments$core$triangle_setup$valid_r
 
 
-module raster_top$core$triangle_setup$vc$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$0(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44305,10 +44414,10 @@ module raster_top$core$triangle_setup$vc$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$0
+endmodule // raster_top$fragments$core$triangle_setup$vc$0
 
 
-module raster_top$core$triangle_setup$vc$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$1(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44324,10 +44433,10 @@ module raster_top$core$triangle_setup$vc$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$1
+endmodule // raster_top$fragments$core$triangle_setup$vc$1
 
 
-module raster_top$core$triangle_setup$vc$10(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$10(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44343,10 +44452,10 @@ module raster_top$core$triangle_setup$vc$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$10
+endmodule // raster_top$fragments$core$triangle_setup$vc$10
 
 
-module raster_top$core$triangle_setup$vc$11(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$11(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44362,10 +44471,10 @@ module raster_top$core$triangle_setup$vc$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$11
+endmodule // raster_top$fragments$core$triangle_setup$vc$11
 
 
-module raster_top$core$triangle_setup$vc$12(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$12(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44381,10 +44490,10 @@ module raster_top$core$triangle_setup$vc$12(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$12
+endmodule // raster_top$fragments$core$triangle_setup$vc$12
 
 
-module raster_top$core$triangle_setup$vc$13(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$13(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44400,10 +44509,10 @@ module raster_top$core$triangle_setup$vc$13(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$13
+endmodule // raster_top$fragments$core$triangle_setup$vc$13
 
 
-module raster_top$core$triangle_setup$vc$14(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$14(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44419,10 +44528,10 @@ module raster_top$core$triangle_setup$vc$14(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$14
+endmodule // raster_top$fragments$core$triangle_setup$vc$14
 
 
-module raster_top$core$triangle_setup$vc$15(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$15(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44438,10 +44547,10 @@ module raster_top$core$triangle_setup$vc$15(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$15
+endmodule // raster_top$fragments$core$triangle_setup$vc$15
 
 
-module raster_top$core$triangle_setup$vc$16(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$16(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44457,10 +44566,10 @@ module raster_top$core$triangle_setup$vc$16(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$16
+endmodule // raster_top$fragments$core$triangle_setup$vc$16
 
 
-module raster_top$core$triangle_setup$vc$17(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$17(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44476,10 +44585,10 @@ module raster_top$core$triangle_setup$vc$17(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$17
+endmodule // raster_top$fragments$core$triangle_setup$vc$17
 
 
-module raster_top$core$triangle_setup$vc$18(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$18(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44495,10 +44604,10 @@ module raster_top$core$triangle_setup$vc$18(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$18
+endmodule // raster_top$fragments$core$triangle_setup$vc$18
 
 
-module raster_top$core$triangle_setup$vc$19(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$19(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44514,10 +44623,10 @@ module raster_top$core$triangle_setup$vc$19(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$19
+endmodule // raster_top$fragments$core$triangle_setup$vc$19
 
 
-module raster_top$core$triangle_setup$vc$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$2(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44533,10 +44642,10 @@ module raster_top$core$triangle_setup$vc$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$2
+endmodule // raster_top$fragments$core$triangle_setup$vc$2
 
 
-module raster_top$core$triangle_setup$vc$20(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$20(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44552,10 +44661,10 @@ module raster_top$core$triangle_setup$vc$20(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$20
+endmodule // raster_top$fragments$core$triangle_setup$vc$20
 
 
-module raster_top$core$triangle_setup$vc$21(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$21(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44571,10 +44680,10 @@ module raster_top$core$triangle_setup$vc$21(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$21
+endmodule // raster_top$fragments$core$triangle_setup$vc$21
 
 
-module raster_top$core$triangle_setup$vc$22(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$22(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44590,10 +44699,10 @@ module raster_top$core$triangle_setup$vc$22(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$22
+endmodule // raster_top$fragments$core$triangle_setup$vc$22
 
 
-module raster_top$core$triangle_setup$vc$23(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$23(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44609,10 +44718,10 @@ module raster_top$core$triangle_setup$vc$23(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$23
+endmodule // raster_top$fragments$core$triangle_setup$vc$23
 
 
-module raster_top$core$triangle_setup$vc$24(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$24(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44628,10 +44737,10 @@ module raster_top$core$triangle_setup$vc$24(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$24
+endmodule // raster_top$fragments$core$triangle_setup$vc$24
 
 
-module raster_top$core$triangle_setup$vc$25(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$25(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44647,10 +44756,10 @@ module raster_top$core$triangle_setup$vc$25(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$25
+endmodule // raster_top$fragments$core$triangle_setup$vc$25
 
 
-module raster_top$core$triangle_setup$vc$26(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$26(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44666,10 +44775,10 @@ module raster_top$core$triangle_setup$vc$26(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$26
+endmodule // raster_top$fragments$core$triangle_setup$vc$26
 
 
-module raster_top$core$triangle_setup$vc$27(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$27(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44685,10 +44794,10 @@ module raster_top$core$triangle_setup$vc$27(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$27
+endmodule // raster_top$fragments$core$triangle_setup$vc$27
 
 
-module raster_top$core$triangle_setup$vc$28(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$28(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44704,10 +44813,10 @@ module raster_top$core$triangle_setup$vc$28(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$28
+endmodule // raster_top$fragments$core$triangle_setup$vc$28
 
 
-module raster_top$core$triangle_setup$vc$29(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$29(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44723,10 +44832,10 @@ module raster_top$core$triangle_setup$vc$29(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$29
+endmodule // raster_top$fragments$core$triangle_setup$vc$29
 
 
-module raster_top$core$triangle_setup$vc$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$3(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44742,10 +44851,10 @@ module raster_top$core$triangle_setup$vc$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$3
+endmodule // raster_top$fragments$core$triangle_setup$vc$3
 
 
-module raster_top$core$triangle_setup$vc$30(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$30(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44761,10 +44870,10 @@ module raster_top$core$triangle_setup$vc$30(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$30
+endmodule // raster_top$fragments$core$triangle_setup$vc$30
 
 
-module raster_top$core$triangle_setup$vc$31(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$31(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44780,10 +44889,10 @@ module raster_top$core$triangle_setup$vc$31(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$31
+endmodule // raster_top$fragments$core$triangle_setup$vc$31
 
 
-module raster_top$core$triangle_setup$vc$32(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$32(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44799,10 +44908,10 @@ module raster_top$core$triangle_setup$vc$32(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$32
+endmodule // raster_top$fragments$core$triangle_setup$vc$32
 
 
-module raster_top$core$triangle_setup$vc$33(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$33(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44818,10 +44927,10 @@ module raster_top$core$triangle_setup$vc$33(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$33
+endmodule // raster_top$fragments$core$triangle_setup$vc$33
 
 
-module raster_top$core$triangle_setup$vc$34(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$34(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44837,10 +44946,10 @@ module raster_top$core$triangle_setup$vc$34(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$34
+endmodule // raster_top$fragments$core$triangle_setup$vc$34
 
 
-module raster_top$core$triangle_setup$vc$35(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$35(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44856,10 +44965,10 @@ module raster_top$core$triangle_setup$vc$35(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$35
+endmodule // raster_top$fragments$core$triangle_setup$vc$35
 
 
-module raster_top$core$triangle_setup$vc$36(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$36(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44875,10 +44984,10 @@ module raster_top$core$triangle_setup$vc$36(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$36
+endmodule // raster_top$fragments$core$triangle_setup$vc$36
 
 
-module raster_top$core$triangle_setup$vc$37(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$37(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44894,10 +45003,10 @@ module raster_top$core$triangle_setup$vc$37(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$37
+endmodule // raster_top$fragments$core$triangle_setup$vc$37
 
 
-module raster_top$core$triangle_setup$vc$38(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$38(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44913,10 +45022,10 @@ module raster_top$core$triangle_setup$vc$38(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$38
+endmodule // raster_top$fragments$core$triangle_setup$vc$38
 
 
-module raster_top$core$triangle_setup$vc$39(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$39(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44932,10 +45041,10 @@ module raster_top$core$triangle_setup$vc$39(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$39
+endmodule // raster_top$fragments$core$triangle_setup$vc$39
 
 
-module raster_top$core$triangle_setup$vc$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$4(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44951,10 +45060,10 @@ module raster_top$core$triangle_setup$vc$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$4
+endmodule // raster_top$fragments$core$triangle_setup$vc$4
 
 
-module raster_top$core$triangle_setup$vc$40(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$40(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44970,10 +45079,10 @@ module raster_top$core$triangle_setup$vc$40(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$40
+endmodule // raster_top$fragments$core$triangle_setup$vc$40
 
 
-module raster_top$core$triangle_setup$vc$41(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$41(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -44989,10 +45098,10 @@ module raster_top$core$triangle_setup$vc$41(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$41
+endmodule // raster_top$fragments$core$triangle_setup$vc$41
 
 
-module raster_top$core$triangle_setup$vc$42(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$42(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -45008,10 +45117,10 @@ module raster_top$core$triangle_setup$vc$42(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$42
+endmodule // raster_top$fragments$core$triangle_setup$vc$42
 
 
-module raster_top$core$triangle_setup$vc$43(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$43(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -45027,10 +45136,10 @@ module raster_top$core$triangle_setup$vc$43(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$43
+endmodule // raster_top$fragments$core$triangle_setup$vc$43
 
 
-module raster_top$core$triangle_setup$vc$44(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$44(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -45046,10 +45155,10 @@ module raster_top$core$triangle_setup$vc$44(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$44
+endmodule // raster_top$fragments$core$triangle_setup$vc$44
 
 
-module raster_top$core$triangle_setup$vc$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$5(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -45065,10 +45174,10 @@ module raster_top$core$triangle_setup$vc$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$5
+endmodule // raster_top$fragments$core$triangle_setup$vc$5
 
 
-module raster_top$core$triangle_setup$vc$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$6(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -45084,10 +45193,10 @@ module raster_top$core$triangle_setup$vc$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$6
+endmodule // raster_top$fragments$core$triangle_setup$vc$6
 
 
-module raster_top$core$triangle_setup$vc$7(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$7(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -45103,10 +45212,10 @@ module raster_top$core$triangle_setup$vc$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$7
+endmodule // raster_top$fragments$core$triangle_setup$vc$7
 
 
-module raster_top$core$triangle_setup$vc$8(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$8(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -45122,10 +45231,10 @@ module raster_top$core$triangle_setup$vc$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$8
+endmodule // raster_top$fragments$core$triangle_setup$vc$8
 
 
-module raster_top$core$triangle_setup$vc$9(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vc$9(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -45141,10 +45250,10 @@ module raster_top$core$triangle_setup$vc$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vc$9
+endmodule // raster_top$fragments$core$triangle_setup$vc$9
 
 
-module raster_top$core$triangle_setup$vx$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45160,10 +45269,10 @@ module raster_top$core$triangle_setup$vx$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$0
+endmodule // raster_top$fragments$core$triangle_setup$vx$0
 
 
-module raster_top$core$triangle_setup$vx$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45179,10 +45288,10 @@ module raster_top$core$triangle_setup$vx$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$1
+endmodule // raster_top$fragments$core$triangle_setup$vx$1
 
 
-module raster_top$core$triangle_setup$vx$10(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$10(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45198,10 +45307,10 @@ module raster_top$core$triangle_setup$vx$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$10
+endmodule // raster_top$fragments$core$triangle_setup$vx$10
 
 
-module raster_top$core$triangle_setup$vx$11(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$11(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45217,10 +45326,10 @@ module raster_top$core$triangle_setup$vx$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$11
+endmodule // raster_top$fragments$core$triangle_setup$vx$11
 
 
-module raster_top$core$triangle_setup$vx$12(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$12(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45236,10 +45345,10 @@ module raster_top$core$triangle_setup$vx$12(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$12
+endmodule // raster_top$fragments$core$triangle_setup$vx$12
 
 
-module raster_top$core$triangle_setup$vx$13(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$13(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45255,10 +45364,10 @@ module raster_top$core$triangle_setup$vx$13(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$13
+endmodule // raster_top$fragments$core$triangle_setup$vx$13
 
 
-module raster_top$core$triangle_setup$vx$14(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$14(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45274,10 +45383,10 @@ module raster_top$core$triangle_setup$vx$14(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$14
+endmodule // raster_top$fragments$core$triangle_setup$vx$14
 
 
-module raster_top$core$triangle_setup$vx$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45293,10 +45402,10 @@ module raster_top$core$triangle_setup$vx$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$2
+endmodule // raster_top$fragments$core$triangle_setup$vx$2
 
 
-module raster_top$core$triangle_setup$vx$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$3(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45312,10 +45421,10 @@ module raster_top$core$triangle_setup$vx$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$3
+endmodule // raster_top$fragments$core$triangle_setup$vx$3
 
 
-module raster_top$core$triangle_setup$vx$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$4(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45331,10 +45440,10 @@ module raster_top$core$triangle_setup$vx$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$4
+endmodule // raster_top$fragments$core$triangle_setup$vx$4
 
 
-module raster_top$core$triangle_setup$vx$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$5(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45350,10 +45459,10 @@ module raster_top$core$triangle_setup$vx$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$5
+endmodule // raster_top$fragments$core$triangle_setup$vx$5
 
 
-module raster_top$core$triangle_setup$vx$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$6(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45369,10 +45478,10 @@ module raster_top$core$triangle_setup$vx$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$6
+endmodule // raster_top$fragments$core$triangle_setup$vx$6
 
 
-module raster_top$core$triangle_setup$vx$7(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$7(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45388,10 +45497,10 @@ module raster_top$core$triangle_setup$vx$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$7
+endmodule // raster_top$fragments$core$triangle_setup$vx$7
 
 
-module raster_top$core$triangle_setup$vx$8(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$8(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45407,10 +45516,10 @@ module raster_top$core$triangle_setup$vx$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$8
+endmodule // raster_top$fragments$core$triangle_setup$vx$8
 
 
-module raster_top$core$triangle_setup$vx$9(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vx$9(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45426,10 +45535,10 @@ module raster_top$core$triangle_setup$vx$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vx$9
+endmodule // raster_top$fragments$core$triangle_setup$vx$9
 
 
-module raster_top$core$triangle_setup$vy$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45445,10 +45554,10 @@ module raster_top$core$triangle_setup$vy$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$0
+endmodule // raster_top$fragments$core$triangle_setup$vy$0
 
 
-module raster_top$core$triangle_setup$vy$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45464,10 +45573,10 @@ module raster_top$core$triangle_setup$vy$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$1
+endmodule // raster_top$fragments$core$triangle_setup$vy$1
 
 
-module raster_top$core$triangle_setup$vy$10(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$10(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45483,10 +45592,10 @@ module raster_top$core$triangle_setup$vy$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$10
+endmodule // raster_top$fragments$core$triangle_setup$vy$10
 
 
-module raster_top$core$triangle_setup$vy$11(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$11(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45502,10 +45611,10 @@ module raster_top$core$triangle_setup$vy$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$11
+endmodule // raster_top$fragments$core$triangle_setup$vy$11
 
 
-module raster_top$core$triangle_setup$vy$12(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$12(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45521,10 +45630,10 @@ module raster_top$core$triangle_setup$vy$12(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$12
+endmodule // raster_top$fragments$core$triangle_setup$vy$12
 
 
-module raster_top$core$triangle_setup$vy$13(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$13(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45540,10 +45649,10 @@ module raster_top$core$triangle_setup$vy$13(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$13
+endmodule // raster_top$fragments$core$triangle_setup$vy$13
 
 
-module raster_top$core$triangle_setup$vy$14(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$14(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45559,10 +45668,10 @@ module raster_top$core$triangle_setup$vy$14(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$14
+endmodule // raster_top$fragments$core$triangle_setup$vy$14
 
 
-module raster_top$core$triangle_setup$vy$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45578,10 +45687,10 @@ module raster_top$core$triangle_setup$vy$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$2
+endmodule // raster_top$fragments$core$triangle_setup$vy$2
 
 
-module raster_top$core$triangle_setup$vy$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$3(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45597,10 +45706,10 @@ module raster_top$core$triangle_setup$vy$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$3
+endmodule // raster_top$fragments$core$triangle_setup$vy$3
 
 
-module raster_top$core$triangle_setup$vy$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$4(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45616,10 +45725,10 @@ module raster_top$core$triangle_setup$vy$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$4
+endmodule // raster_top$fragments$core$triangle_setup$vy$4
 
 
-module raster_top$core$triangle_setup$vy$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$5(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45635,10 +45744,10 @@ module raster_top$core$triangle_setup$vy$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$5
+endmodule // raster_top$fragments$core$triangle_setup$vy$5
 
 
-module raster_top$core$triangle_setup$vy$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$6(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45654,10 +45763,10 @@ module raster_top$core$triangle_setup$vy$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$6
+endmodule // raster_top$fragments$core$triangle_setup$vy$6
 
 
-module raster_top$core$triangle_setup$vy$7(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$7(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45673,10 +45782,10 @@ module raster_top$core$triangle_setup$vy$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$7
+endmodule // raster_top$fragments$core$triangle_setup$vy$7
 
 
-module raster_top$core$triangle_setup$vy$8(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$8(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45692,10 +45801,10 @@ module raster_top$core$triangle_setup$vy$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$8
+endmodule // raster_top$fragments$core$triangle_setup$vy$8
 
 
-module raster_top$core$triangle_setup$vy$9(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vy$9(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -45711,10 +45820,10 @@ module raster_top$core$triangle_setup$vy$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vy$9
+endmodule // raster_top$fragments$core$triangle_setup$vy$9
 
 
-module raster_top$core$triangle_setup$vz$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$0(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45730,10 +45839,10 @@ module raster_top$core$triangle_setup$vz$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$0
+endmodule // raster_top$fragments$core$triangle_setup$vz$0
 
 
-module raster_top$core$triangle_setup$vz$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$1(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45749,10 +45858,10 @@ module raster_top$core$triangle_setup$vz$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$1
+endmodule // raster_top$fragments$core$triangle_setup$vz$1
 
 
-module raster_top$core$triangle_setup$vz$10(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$10(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45768,10 +45877,10 @@ module raster_top$core$triangle_setup$vz$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$10
+endmodule // raster_top$fragments$core$triangle_setup$vz$10
 
 
-module raster_top$core$triangle_setup$vz$11(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$11(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45787,10 +45896,10 @@ module raster_top$core$triangle_setup$vz$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$11
+endmodule // raster_top$fragments$core$triangle_setup$vz$11
 
 
-module raster_top$core$triangle_setup$vz$12(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$12(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45806,10 +45915,10 @@ module raster_top$core$triangle_setup$vz$12(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$12
+endmodule // raster_top$fragments$core$triangle_setup$vz$12
 
 
-module raster_top$core$triangle_setup$vz$13(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$13(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45825,10 +45934,10 @@ module raster_top$core$triangle_setup$vz$13(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$13
+endmodule // raster_top$fragments$core$triangle_setup$vz$13
 
 
-module raster_top$core$triangle_setup$vz$14(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$14(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45844,10 +45953,10 @@ module raster_top$core$triangle_setup$vz$14(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$14
+endmodule // raster_top$fragments$core$triangle_setup$vz$14
 
 
-module raster_top$core$triangle_setup$vz$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$2(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45863,10 +45972,10 @@ module raster_top$core$triangle_setup$vz$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$2
+endmodule // raster_top$fragments$core$triangle_setup$vz$2
 
 
-module raster_top$core$triangle_setup$vz$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$3(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45882,10 +45991,10 @@ module raster_top$core$triangle_setup$vz$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$3
+endmodule // raster_top$fragments$core$triangle_setup$vz$3
 
 
-module raster_top$core$triangle_setup$vz$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$4(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45901,10 +46010,10 @@ module raster_top$core$triangle_setup$vz$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$4
+endmodule // raster_top$fragments$core$triangle_setup$vz$4
 
 
-module raster_top$core$triangle_setup$vz$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$5(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45920,10 +46029,10 @@ module raster_top$core$triangle_setup$vz$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$5
+endmodule // raster_top$fragments$core$triangle_setup$vz$5
 
 
-module raster_top$core$triangle_setup$vz$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$6(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45939,10 +46048,10 @@ module raster_top$core$triangle_setup$vz$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$6
+endmodule // raster_top$fragments$core$triangle_setup$vz$6
 
 
-module raster_top$core$triangle_setup$vz$7(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$7(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45958,10 +46067,10 @@ module raster_top$core$triangle_setup$vz$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$7
+endmodule // raster_top$fragments$core$triangle_setup$vz$7
 
 
-module raster_top$core$triangle_setup$vz$8(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$8(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45977,10 +46086,10 @@ module raster_top$core$triangle_setup$vz$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$8
+endmodule // raster_top$fragments$core$triangle_setup$vz$8
 
 
-module raster_top$core$triangle_setup$vz$9(d,q,clock);
+module raster_top$fragments$core$triangle_setup$vz$9(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -45996,10 +46105,10 @@ module raster_top$core$triangle_setup$vz$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$vz$9
+endmodule // raster_top$fragments$core$triangle_setup$vz$9
 
 
-module raster_top$core$triangle_setup$x$0(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$0(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46015,10 +46124,10 @@ module raster_top$core$triangle_setup$x$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$0
+endmodule // raster_top$fragments$core$triangle_setup$x$0
 
 
-module raster_top$core$triangle_setup$x$1(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$1(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46034,10 +46143,10 @@ module raster_top$core$triangle_setup$x$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$1
+endmodule // raster_top$fragments$core$triangle_setup$x$1
 
 
-module raster_top$core$triangle_setup$x$10(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$10(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46053,10 +46162,10 @@ module raster_top$core$triangle_setup$x$10(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$10
+endmodule // raster_top$fragments$core$triangle_setup$x$10
 
 
-module raster_top$core$triangle_setup$x$11(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$11(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46072,10 +46181,10 @@ module raster_top$core$triangle_setup$x$11(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$11
+endmodule // raster_top$fragments$core$triangle_setup$x$11
 
 
-module raster_top$core$triangle_setup$x$12(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$12(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46091,10 +46200,10 @@ module raster_top$core$triangle_setup$x$12(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$12
+endmodule // raster_top$fragments$core$triangle_setup$x$12
 
 
-module raster_top$core$triangle_setup$x$13(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$13(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46110,10 +46219,10 @@ module raster_top$core$triangle_setup$x$13(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$13
+endmodule // raster_top$fragments$core$triangle_setup$x$13
 
 
-module raster_top$core$triangle_setup$x$14(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$14(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46129,10 +46238,10 @@ module raster_top$core$triangle_setup$x$14(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$14
+endmodule // raster_top$fragments$core$triangle_setup$x$14
 
 
-module raster_top$core$triangle_setup$x$2(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$2(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46148,10 +46257,10 @@ module raster_top$core$triangle_setup$x$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$2
+endmodule // raster_top$fragments$core$triangle_setup$x$2
 
 
-module raster_top$core$triangle_setup$x$3(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$3(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46167,10 +46276,10 @@ module raster_top$core$triangle_setup$x$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$3
+endmodule // raster_top$fragments$core$triangle_setup$x$3
 
 
-module raster_top$core$triangle_setup$x$4(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$4(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46186,10 +46295,10 @@ module raster_top$core$triangle_setup$x$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$4
+endmodule // raster_top$fragments$core$triangle_setup$x$4
 
 
-module raster_top$core$triangle_setup$x$5(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$5(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46205,10 +46314,10 @@ module raster_top$core$triangle_setup$x$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$5
+endmodule // raster_top$fragments$core$triangle_setup$x$5
 
 
-module raster_top$core$triangle_setup$x$6(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$6(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46224,10 +46333,10 @@ module raster_top$core$triangle_setup$x$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$6
+endmodule // raster_top$fragments$core$triangle_setup$x$6
 
 
-module raster_top$core$triangle_setup$x$7(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$7(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46243,10 +46352,10 @@ module raster_top$core$triangle_setup$x$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$7
+endmodule // raster_top$fragments$core$triangle_setup$x$7
 
 
-module raster_top$core$triangle_setup$x$8(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$8(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46262,10 +46371,10 @@ module raster_top$core$triangle_setup$x$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$8
+endmodule // raster_top$fragments$core$triangle_setup$x$8
 
 
-module raster_top$core$triangle_setup$x$9(d,q,clock);
+module raster_top$fragments$core$triangle_setup$x$9(d,q,clock);
     
     // Module arguments
     input wire  [18:0] d;
@@ -46281,10 +46390,10 @@ module raster_top$core$triangle_setup$x$9(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$core$triangle_setup$x$9
+endmodule // raster_top$fragments$core$triangle_setup$x$9
 
 
-module raster_top$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,out$crosses,verdict$valid,verdict$code,verdict$outside,idle);
+module raster_top$fragments$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,out$valid,out$ready,out$v0_x,out$v0_y,out$v0_z,out$v0_c0,out$v0_c1,out$v0_c2,out$v0_iw,out$v1_x,out$v1_y,out$v1_z,out$v1_c0,out$v1_c1,out$v1_c2,out$v1_iw,out$v2_x,out$v2_y,out$v2_z,out$v2_c0,out$v2_c1,out$v2_c2,out$v2_iw,out$crosses,verdict$valid,verdict$code,verdict$outside,idle);
     
     // Module arguments
     input wire  clock;
@@ -46684,446 +46793,446 @@ module raster_top$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp
     reg  leave;
     
     // Sub module instances
-    raster_top$cull_sort$wx$0 wx$0(
+    raster_top$fragments$cull_sort$wx$0 wx$0(
         .x(wx$0$x),
         .y(wx$0$y)
     );
-    raster_top$cull_sort$wx$1 wx$1(
+    raster_top$fragments$cull_sort$wx$1 wx$1(
         .x(wx$1$x),
         .y(wx$1$y)
     );
-    raster_top$cull_sort$wx$2 wx$2(
+    raster_top$fragments$cull_sort$wx$2 wx$2(
         .x(wx$2$x),
         .y(wx$2$y)
     );
-    raster_top$cull_sort$wy$0 wy$0(
+    raster_top$fragments$cull_sort$wy$0 wy$0(
         .x(wy$0$x),
         .y(wy$0$y)
     );
-    raster_top$cull_sort$wy$1 wy$1(
+    raster_top$fragments$cull_sort$wy$1 wy$1(
         .x(wy$1$x),
         .y(wy$1$y)
     );
-    raster_top$cull_sort$wy$2 wy$2(
+    raster_top$fragments$cull_sort$wy$2 wy$2(
         .x(wy$2$x),
         .y(wy$2$y)
     );
-    raster_top$cull_sort$s1x$0 s1x$0(
+    raster_top$fragments$cull_sort$s1x$0 s1x$0(
         .d(s1x$0$d),
         .q(s1x$0$q),
         .clock(s1x$0$clock)
     );
-    raster_top$cull_sort$s1x$1 s1x$1(
+    raster_top$fragments$cull_sort$s1x$1 s1x$1(
         .d(s1x$1$d),
         .q(s1x$1$q),
         .clock(s1x$1$clock)
     );
-    raster_top$cull_sort$s1x$2 s1x$2(
+    raster_top$fragments$cull_sort$s1x$2 s1x$2(
         .d(s1x$2$d),
         .q(s1x$2$q),
         .clock(s1x$2$clock)
     );
-    raster_top$cull_sort$s1y$0 s1y$0(
+    raster_top$fragments$cull_sort$s1y$0 s1y$0(
         .d(s1y$0$d),
         .q(s1y$0$q),
         .clock(s1y$0$clock)
     );
-    raster_top$cull_sort$s1y$1 s1y$1(
+    raster_top$fragments$cull_sort$s1y$1 s1y$1(
         .d(s1y$1$d),
         .q(s1y$1$q),
         .clock(s1y$1$clock)
     );
-    raster_top$cull_sort$s1y$2 s1y$2(
+    raster_top$fragments$cull_sort$s1y$2 s1y$2(
         .d(s1y$2$d),
         .q(s1y$2$q),
         .clock(s1y$2$clock)
     );
-    raster_top$cull_sort$s1z$0 s1z$0(
+    raster_top$fragments$cull_sort$s1z$0 s1z$0(
         .d(s1z$0$d),
         .q(s1z$0$q),
         .clock(s1z$0$clock)
     );
-    raster_top$cull_sort$s1z$1 s1z$1(
+    raster_top$fragments$cull_sort$s1z$1 s1z$1(
         .d(s1z$1$d),
         .q(s1z$1$q),
         .clock(s1z$1$clock)
     );
-    raster_top$cull_sort$s1z$2 s1z$2(
+    raster_top$fragments$cull_sort$s1z$2 s1z$2(
         .d(s1z$2$d),
         .q(s1z$2$q),
         .clock(s1z$2$clock)
     );
-    raster_top$cull_sort$s1c$0 s1c$0(
+    raster_top$fragments$cull_sort$s1c$0 s1c$0(
         .d(s1c$0$d),
         .q(s1c$0$q),
         .clock(s1c$0$clock)
     );
-    raster_top$cull_sort$s1c$1 s1c$1(
+    raster_top$fragments$cull_sort$s1c$1 s1c$1(
         .d(s1c$1$d),
         .q(s1c$1$q),
         .clock(s1c$1$clock)
     );
-    raster_top$cull_sort$s1c$2 s1c$2(
+    raster_top$fragments$cull_sort$s1c$2 s1c$2(
         .d(s1c$2$d),
         .q(s1c$2$q),
         .clock(s1c$2$clock)
     );
-    raster_top$cull_sort$s1c$3 s1c$3(
+    raster_top$fragments$cull_sort$s1c$3 s1c$3(
         .d(s1c$3$d),
         .q(s1c$3$q),
         .clock(s1c$3$clock)
     );
-    raster_top$cull_sort$s1c$4 s1c$4(
+    raster_top$fragments$cull_sort$s1c$4 s1c$4(
         .d(s1c$4$d),
         .q(s1c$4$q),
         .clock(s1c$4$clock)
     );
-    raster_top$cull_sort$s1c$5 s1c$5(
+    raster_top$fragments$cull_sort$s1c$5 s1c$5(
         .d(s1c$5$d),
         .q(s1c$5$q),
         .clock(s1c$5$clock)
     );
-    raster_top$cull_sort$s1c$6 s1c$6(
+    raster_top$fragments$cull_sort$s1c$6 s1c$6(
         .d(s1c$6$d),
         .q(s1c$6$q),
         .clock(s1c$6$clock)
     );
-    raster_top$cull_sort$s1c$7 s1c$7(
+    raster_top$fragments$cull_sort$s1c$7 s1c$7(
         .d(s1c$7$d),
         .q(s1c$7$q),
         .clock(s1c$7$clock)
     );
-    raster_top$cull_sort$s1c$8 s1c$8(
+    raster_top$fragments$cull_sort$s1c$8 s1c$8(
         .d(s1c$8$d),
         .q(s1c$8$q),
         .clock(s1c$8$clock)
     );
-    raster_top$cull_sort$s1iw$0 s1iw$0(
+    raster_top$fragments$cull_sort$s1iw$0 s1iw$0(
         .d(s1iw$0$d),
         .q(s1iw$0$q),
         .clock(s1iw$0$clock)
     );
-    raster_top$cull_sort$s1iw$1 s1iw$1(
+    raster_top$fragments$cull_sort$s1iw$1 s1iw$1(
         .d(s1iw$1$d),
         .q(s1iw$1$q),
         .clock(s1iw$1$clock)
     );
-    raster_top$cull_sort$s1iw$2 s1iw$2(
+    raster_top$fragments$cull_sort$s1iw$2 s1iw$2(
         .d(s1iw$2$d),
         .q(s1iw$2$q),
         .clock(s1iw$2$clock)
     );
-    raster_top$cull_sort$e1x e1x(
+    raster_top$fragments$cull_sort$e1x e1x(
         .d(e1x$d),
         .q(e1x$q),
         .clock(e1x$clock)
     );
-    raster_top$cull_sort$e2y e2y(
+    raster_top$fragments$cull_sort$e2y e2y(
         .d(e2y$d),
         .q(e2y$q),
         .clock(e2y$clock)
     );
-    raster_top$cull_sort$e2x e2x(
+    raster_top$fragments$cull_sort$e2x e2x(
         .d(e2x$d),
         .q(e2x$q),
         .clock(e2x$clock)
     );
-    raster_top$cull_sort$e1y e1y(
+    raster_top$fragments$cull_sort$e1y e1y(
         .d(e1y$d),
         .q(e1y$q),
         .clock(e1y$clock)
     );
-    raster_top$cull_sort$outside1 outside1(
+    raster_top$fragments$cull_sort$outside1 outside1(
         .d(outside1$d),
         .q(outside1$q),
         .clock(outside1$clock)
     );
-    raster_top$cull_sort$crosses1 crosses1(
+    raster_top$fragments$cull_sort$crosses1 crosses1(
         .d(crosses1$d),
         .q(crosses1$q),
         .clock(crosses1$clock)
     );
-    raster_top$cull_sort$back1 back1(
+    raster_top$fragments$cull_sort$back1 back1(
         .d(back1$d),
         .q(back1$q),
         .clock(back1$clock)
     );
-    raster_top$cull_sort$full1 full1(
+    raster_top$fragments$cull_sort$full1 full1(
         .d(full1$d),
         .q(full1$q),
         .clock(full1$clock)
     );
-    raster_top$cull_sort$s2x$0 s2x$0(
+    raster_top$fragments$cull_sort$s2x$0 s2x$0(
         .d(s2x$0$d),
         .q(s2x$0$q),
         .clock(s2x$0$clock)
     );
-    raster_top$cull_sort$s2x$1 s2x$1(
+    raster_top$fragments$cull_sort$s2x$1 s2x$1(
         .d(s2x$1$d),
         .q(s2x$1$q),
         .clock(s2x$1$clock)
     );
-    raster_top$cull_sort$s2x$2 s2x$2(
+    raster_top$fragments$cull_sort$s2x$2 s2x$2(
         .d(s2x$2$d),
         .q(s2x$2$q),
         .clock(s2x$2$clock)
     );
-    raster_top$cull_sort$s2y$0 s2y$0(
+    raster_top$fragments$cull_sort$s2y$0 s2y$0(
         .d(s2y$0$d),
         .q(s2y$0$q),
         .clock(s2y$0$clock)
     );
-    raster_top$cull_sort$s2y$1 s2y$1(
+    raster_top$fragments$cull_sort$s2y$1 s2y$1(
         .d(s2y$1$d),
         .q(s2y$1$q),
         .clock(s2y$1$clock)
     );
-    raster_top$cull_sort$s2y$2 s2y$2(
+    raster_top$fragments$cull_sort$s2y$2 s2y$2(
         .d(s2y$2$d),
         .q(s2y$2$q),
         .clock(s2y$2$clock)
     );
-    raster_top$cull_sort$s2z$0 s2z$0(
+    raster_top$fragments$cull_sort$s2z$0 s2z$0(
         .d(s2z$0$d),
         .q(s2z$0$q),
         .clock(s2z$0$clock)
     );
-    raster_top$cull_sort$s2z$1 s2z$1(
+    raster_top$fragments$cull_sort$s2z$1 s2z$1(
         .d(s2z$1$d),
         .q(s2z$1$q),
         .clock(s2z$1$clock)
     );
-    raster_top$cull_sort$s2z$2 s2z$2(
+    raster_top$fragments$cull_sort$s2z$2 s2z$2(
         .d(s2z$2$d),
         .q(s2z$2$q),
         .clock(s2z$2$clock)
     );
-    raster_top$cull_sort$s2c$0 s2c$0(
+    raster_top$fragments$cull_sort$s2c$0 s2c$0(
         .d(s2c$0$d),
         .q(s2c$0$q),
         .clock(s2c$0$clock)
     );
-    raster_top$cull_sort$s2c$1 s2c$1(
+    raster_top$fragments$cull_sort$s2c$1 s2c$1(
         .d(s2c$1$d),
         .q(s2c$1$q),
         .clock(s2c$1$clock)
     );
-    raster_top$cull_sort$s2c$2 s2c$2(
+    raster_top$fragments$cull_sort$s2c$2 s2c$2(
         .d(s2c$2$d),
         .q(s2c$2$q),
         .clock(s2c$2$clock)
     );
-    raster_top$cull_sort$s2c$3 s2c$3(
+    raster_top$fragments$cull_sort$s2c$3 s2c$3(
         .d(s2c$3$d),
         .q(s2c$3$q),
         .clock(s2c$3$clock)
     );
-    raster_top$cull_sort$s2c$4 s2c$4(
+    raster_top$fragments$cull_sort$s2c$4 s2c$4(
         .d(s2c$4$d),
         .q(s2c$4$q),
         .clock(s2c$4$clock)
     );
-    raster_top$cull_sort$s2c$5 s2c$5(
+    raster_top$fragments$cull_sort$s2c$5 s2c$5(
         .d(s2c$5$d),
         .q(s2c$5$q),
         .clock(s2c$5$clock)
     );
-    raster_top$cull_sort$s2c$6 s2c$6(
+    raster_top$fragments$cull_sort$s2c$6 s2c$6(
         .d(s2c$6$d),
         .q(s2c$6$q),
         .clock(s2c$6$clock)
     );
-    raster_top$cull_sort$s2c$7 s2c$7(
+    raster_top$fragments$cull_sort$s2c$7 s2c$7(
         .d(s2c$7$d),
         .q(s2c$7$q),
         .clock(s2c$7$clock)
     );
-    raster_top$cull_sort$s2c$8 s2c$8(
+    raster_top$fragments$cull_sort$s2c$8 s2c$8(
         .d(s2c$8$d),
         .q(s2c$8$q),
         .clock(s2c$8$clock)
     );
-    raster_top$cull_sort$s2iw$0 s2iw$0(
+    raster_top$fragments$cull_sort$s2iw$0 s2iw$0(
         .d(s2iw$0$d),
         .q(s2iw$0$q),
         .clock(s2iw$0$clock)
     );
-    raster_top$cull_sort$s2iw$1 s2iw$1(
+    raster_top$fragments$cull_sort$s2iw$1 s2iw$1(
         .d(s2iw$1$d),
         .q(s2iw$1$q),
         .clock(s2iw$1$clock)
     );
-    raster_top$cull_sort$s2iw$2 s2iw$2(
+    raster_top$fragments$cull_sort$s2iw$2 s2iw$2(
         .d(s2iw$2$d),
         .q(s2iw$2$q),
         .clock(s2iw$2$clock)
     );
-    raster_top$cull_sort$area_mul$0 area_mul$0(
+    raster_top$fragments$cull_sort$area_mul$0 area_mul$0(
         .a(area_mul$0$a),
         .b(area_mul$0$b),
         .p(area_mul$0$p)
     );
-    raster_top$cull_sort$area_mul$1 area_mul$1(
+    raster_top$fragments$cull_sort$area_mul$1 area_mul$1(
         .a(area_mul$1$a),
         .b(area_mul$1$b),
         .p(area_mul$1$p)
     );
-    raster_top$cull_sort$prod0 prod0(
+    raster_top$fragments$cull_sort$prod0 prod0(
         .d(prod0$d),
         .q(prod0$q),
         .clock(prod0$clock)
     );
-    raster_top$cull_sort$prod1 prod1(
+    raster_top$fragments$cull_sort$prod1 prod1(
         .d(prod1$d),
         .q(prod1$q),
         .clock(prod1$clock)
     );
-    raster_top$cull_sort$outside2 outside2(
+    raster_top$fragments$cull_sort$outside2 outside2(
         .d(outside2$d),
         .q(outside2$q),
         .clock(outside2$clock)
     );
-    raster_top$cull_sort$crosses2 crosses2(
+    raster_top$fragments$cull_sort$crosses2 crosses2(
         .d(crosses2$d),
         .q(crosses2$q),
         .clock(crosses2$clock)
     );
-    raster_top$cull_sort$back2 back2(
+    raster_top$fragments$cull_sort$back2 back2(
         .d(back2$d),
         .q(back2$q),
         .clock(back2$clock)
     );
-    raster_top$cull_sort$full2 full2(
+    raster_top$fragments$cull_sort$full2 full2(
         .d(full2$d),
         .q(full2$q),
         .clock(full2$clock)
     );
-    raster_top$cull_sort$sx$0 sx$0(
+    raster_top$fragments$cull_sort$sx$0 sx$0(
         .d(sx$0$d),
         .q(sx$0$q),
         .clock(sx$0$clock)
     );
-    raster_top$cull_sort$sx$1 sx$1(
+    raster_top$fragments$cull_sort$sx$1 sx$1(
         .d(sx$1$d),
         .q(sx$1$q),
         .clock(sx$1$clock)
     );
-    raster_top$cull_sort$sx$2 sx$2(
+    raster_top$fragments$cull_sort$sx$2 sx$2(
         .d(sx$2$d),
         .q(sx$2$q),
         .clock(sx$2$clock)
     );
-    raster_top$cull_sort$sy$0 sy$0(
+    raster_top$fragments$cull_sort$sy$0 sy$0(
         .d(sy$0$d),
         .q(sy$0$q),
         .clock(sy$0$clock)
     );
-    raster_top$cull_sort$sy$1 sy$1(
+    raster_top$fragments$cull_sort$sy$1 sy$1(
         .d(sy$1$d),
         .q(sy$1$q),
         .clock(sy$1$clock)
     );
-    raster_top$cull_sort$sy$2 sy$2(
+    raster_top$fragments$cull_sort$sy$2 sy$2(
         .d(sy$2$d),
         .q(sy$2$q),
         .clock(sy$2$clock)
     );
-    raster_top$cull_sort$sz$0 sz$0(
+    raster_top$fragments$cull_sort$sz$0 sz$0(
         .d(sz$0$d),
         .q(sz$0$q),
         .clock(sz$0$clock)
     );
-    raster_top$cull_sort$sz$1 sz$1(
+    raster_top$fragments$cull_sort$sz$1 sz$1(
         .d(sz$1$d),
         .q(sz$1$q),
         .clock(sz$1$clock)
     );
-    raster_top$cull_sort$sz$2 sz$2(
+    raster_top$fragments$cull_sort$sz$2 sz$2(
         .d(sz$2$d),
         .q(sz$2$q),
         .clock(sz$2$clock)
     );
-    raster_top$cull_sort$sc$0 sc$0(
+    raster_top$fragments$cull_sort$sc$0 sc$0(
         .d(sc$0$d),
         .q(sc$0$q),
         .clock(sc$0$clock)
     );
-    raster_top$cull_sort$sc$1 sc$1(
+    raster_top$fragments$cull_sort$sc$1 sc$1(
         .d(sc$1$d),
         .q(sc$1$q),
         .clock(sc$1$clock)
     );
-    raster_top$cull_sort$sc$2 sc$2(
+    raster_top$fragments$cull_sort$sc$2 sc$2(
         .d(sc$2$d),
         .q(sc$2$q),
         .clock(sc$2$clock)
     );
-    raster_top$cull_sort$sc$3 sc$3(
+    raster_top$fragments$cull_sort$sc$3 sc$3(
         .d(sc$3$d),
         .q(sc$3$q),
         .clock(sc$3$clock)
     );
-    raster_top$cull_sort$sc$4 sc$4(
+    raster_top$fragments$cull_sort$sc$4 sc$4(
         .d(sc$4$d),
         .q(sc$4$q),
         .clock(sc$4$clock)
     );
-    raster_top$cull_sort$sc$5 sc$5(
+    raster_top$fragments$cull_sort$sc$5 sc$5(
         .d(sc$5$d),
         .q(sc$5$q),
         .clock(sc$5$clock)
     );
-    raster_top$cull_sort$sc$6 sc$6(
+    raster_top$fragments$cull_sort$sc$6 sc$6(
         .d(sc$6$d),
         .q(sc$6$q),
         .clock(sc$6$clock)
     );
-    raster_top$cull_sort$sc$7 sc$7(
+    raster_top$fragments$cull_sort$sc$7 sc$7(
         .d(sc$7$d),
         .q(sc$7$q),
         .clock(sc$7$clock)
     );
-    raster_top$cull_sort$sc$8 sc$8(
+    raster_top$fragments$cull_sort$sc$8 sc$8(
         .d(sc$8$d),
         .q(sc$8$q),
         .clock(sc$8$clock)
     );
-    raster_top$cull_sort$siw$0 siw$0(
+    raster_top$fragments$cull_sort$siw$0 siw$0(
         .d(siw$0$d),
         .q(siw$0$q),
         .clock(siw$0$clock)
     );
-    raster_top$cull_sort$siw$1 siw$1(
+    raster_top$fragments$cull_sort$siw$1 siw$1(
         .d(siw$1$d),
         .q(siw$1$q),
         .clock(siw$1$clock)
     );
-    raster_top$cull_sort$siw$2 siw$2(
+    raster_top$fragments$cull_sort$siw$2 siw$2(
         .d(siw$2$d),
         .q(siw$2$q),
         .clock(siw$2$clock)
     );
-    raster_top$cull_sort$crosses crosses(
+    raster_top$fragments$cull_sort$crosses crosses(
         .d(crosses$d),
         .q(crosses$q),
         .clock(crosses$clock)
     );
-    raster_top$cull_sort$code_r code_r(
+    raster_top$fragments$cull_sort$code_r code_r(
         .d(code_r$d),
         .q(code_r$q),
         .clock(code_r$clock)
     );
-    raster_top$cull_sort$outside_r outside_r(
+    raster_top$fragments$cull_sort$outside_r outside_r(
         .d(outside_r$d),
         .q(outside_r$q),
         .clock(outside_r$clock)
     );
-    raster_top$cull_sort$full full(
+    raster_top$fragments$cull_sort$full full(
         .d(full$d),
         .q(full$q),
         .clock(full$clock)
     );
-    raster_top$cull_sort$cull cull(
+    raster_top$fragments$cull_sort$cull cull(
         .on(cull$on)
     );
     
@@ -47562,10 +47671,10 @@ module raster_top$cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp
         out$v2_iw = siw$2$q;
     end
     
-endmodule // raster_top$cull_sort
+endmodule // raster_top$fragments$cull_sort
 
 
-module raster_top$cull_sort$area_mul$0(a,b,p);
+module raster_top$fragments$cull_sort$area_mul$0(a,b,p);
     
     // Module arguments
     input wire  [16:0] a;
@@ -47576,10 +47685,10 @@ module raster_top$cull_sort$area_mul$0(a,b,p);
     // p = low 34 bits of a * b, both signed: a signed 34-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$cull_sort$area_mul$0
+endmodule // raster_top$fragments$cull_sort$area_mul$0
 
 
-module raster_top$cull_sort$area_mul$1(a,b,p);
+module raster_top$fragments$cull_sort$area_mul$1(a,b,p);
     
     // Module arguments
     input wire  [16:0] a;
@@ -47590,10 +47699,10 @@ module raster_top$cull_sort$area_mul$1(a,b,p);
     // p = low 34 bits of a * b, both signed: a signed 34-bit context sign-extends
     // both operands before multiplying.
     always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$cull_sort$area_mul$1
+endmodule // raster_top$fragments$cull_sort$area_mul$1
 
 
-module raster_top$cull_sort$back1(d,q,clock);
+module raster_top$fragments$cull_sort$back1(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -47609,10 +47718,10 @@ module raster_top$cull_sort$back1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$back1
+endmodule // raster_top$fragments$cull_sort$back1
 
 
-module raster_top$cull_sort$back2(d,q,clock);
+module raster_top$fragments$cull_sort$back2(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -47628,10 +47737,10 @@ module raster_top$cull_sort$back2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$back2
+endmodule // raster_top$fragments$cull_sort$back2
 
 
-module raster_top$cull_sort$code_r(d,q,clock);
+module raster_top$fragments$cull_sort$code_r(d,q,clock);
     
     // Module arguments
     input wire  [1:0] d;
@@ -47647,10 +47756,10 @@ module raster_top$cull_sort$code_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$code_r
+endmodule // raster_top$fragments$cull_sort$code_r
 
 
-module raster_top$cull_sort$crosses(d,q,clock);
+module raster_top$fragments$cull_sort$crosses(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -47666,10 +47775,10 @@ module raster_top$cull_sort$crosses(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$crosses
+endmodule // raster_top$fragments$cull_sort$crosses
 
 
-module raster_top$cull_sort$crosses1(d,q,clock);
+module raster_top$fragments$cull_sort$crosses1(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -47685,10 +47794,10 @@ module raster_top$cull_sort$crosses1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$crosses1
+endmodule // raster_top$fragments$cull_sort$crosses1
 
 
-module raster_top$cull_sort$crosses2(d,q,clock);
+module raster_top$fragments$cull_sort$crosses2(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -47704,10 +47813,10 @@ module raster_top$cull_sort$crosses2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$crosses2
+endmodule // raster_top$fragments$cull_sort$crosses2
 
 
-module raster_top$cull_sort$cull(on);
+module raster_top$fragments$cull_sort$cull(on);
     
     // Module arguments
     output reg  on;
@@ -47720,10 +47829,10 @@ module raster_top$cull_sort$cull(on);
         on = value;
     end
     
-endmodule // raster_top$cull_sort$cull
+endmodule // raster_top$fragments$cull_sort$cull
 
 
-module raster_top$cull_sort$e1x(d,q,clock);
+module raster_top$fragments$cull_sort$e1x(d,q,clock);
     
     // Module arguments
     input wire  [16:0] d;
@@ -47739,10 +47848,10 @@ module raster_top$cull_sort$e1x(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$e1x
+endmodule // raster_top$fragments$cull_sort$e1x
 
 
-module raster_top$cull_sort$e1y(d,q,clock);
+module raster_top$fragments$cull_sort$e1y(d,q,clock);
     
     // Module arguments
     input wire  [16:0] d;
@@ -47758,10 +47867,10 @@ module raster_top$cull_sort$e1y(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$e1y
+endmodule // raster_top$fragments$cull_sort$e1y
 
 
-module raster_top$cull_sort$e2x(d,q,clock);
+module raster_top$fragments$cull_sort$e2x(d,q,clock);
     
     // Module arguments
     input wire  [16:0] d;
@@ -47777,10 +47886,10 @@ module raster_top$cull_sort$e2x(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$e2x
+endmodule // raster_top$fragments$cull_sort$e2x
 
 
-module raster_top$cull_sort$e2y(d,q,clock);
+module raster_top$fragments$cull_sort$e2y(d,q,clock);
     
     // Module arguments
     input wire  [16:0] d;
@@ -47796,10 +47905,10 @@ module raster_top$cull_sort$e2y(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$e2y
+endmodule // raster_top$fragments$cull_sort$e2y
 
 
-module raster_top$cull_sort$full(d,q,clock);
+module raster_top$fragments$cull_sort$full(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -47815,10 +47924,10 @@ module raster_top$cull_sort$full(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$full
+endmodule // raster_top$fragments$cull_sort$full
 
 
-module raster_top$cull_sort$full1(d,q,clock);
+module raster_top$fragments$cull_sort$full1(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -47834,10 +47943,10 @@ module raster_top$cull_sort$full1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$full1
+endmodule // raster_top$fragments$cull_sort$full1
 
 
-module raster_top$cull_sort$full2(d,q,clock);
+module raster_top$fragments$cull_sort$full2(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -47853,10 +47962,10 @@ module raster_top$cull_sort$full2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$full2
+endmodule // raster_top$fragments$cull_sort$full2
 
 
-module raster_top$cull_sort$outside1(d,q,clock);
+module raster_top$fragments$cull_sort$outside1(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -47872,10 +47981,10 @@ module raster_top$cull_sort$outside1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$outside1
+endmodule // raster_top$fragments$cull_sort$outside1
 
 
-module raster_top$cull_sort$outside2(d,q,clock);
+module raster_top$fragments$cull_sort$outside2(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -47891,10 +48000,10 @@ module raster_top$cull_sort$outside2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$outside2
+endmodule // raster_top$fragments$cull_sort$outside2
 
 
-module raster_top$cull_sort$outside_r(d,q,clock);
+module raster_top$fragments$cull_sort$outside_r(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -47910,10 +48019,10 @@ module raster_top$cull_sort$outside_r(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$outside_r
+endmodule // raster_top$fragments$cull_sort$outside_r
 
 
-module raster_top$cull_sort$prod0(d,q,clock);
+module raster_top$fragments$cull_sort$prod0(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -47929,10 +48038,10 @@ module raster_top$cull_sort$prod0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$prod0
+endmodule // raster_top$fragments$cull_sort$prod0
 
 
-module raster_top$cull_sort$prod1(d,q,clock);
+module raster_top$fragments$cull_sort$prod1(d,q,clock);
     
     // Module arguments
     input wire  [33:0] d;
@@ -47948,10 +48057,10 @@ module raster_top$cull_sort$prod1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$prod1
+endmodule // raster_top$fragments$cull_sort$prod1
 
 
-module raster_top$cull_sort$s1c$0(d,q,clock);
+module raster_top$fragments$cull_sort$s1c$0(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -47967,10 +48076,10 @@ module raster_top$cull_sort$s1c$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1c$0
+endmodule // raster_top$fragments$cull_sort$s1c$0
 
 
-module raster_top$cull_sort$s1c$1(d,q,clock);
+module raster_top$fragments$cull_sort$s1c$1(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -47986,10 +48095,10 @@ module raster_top$cull_sort$s1c$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1c$1
+endmodule // raster_top$fragments$cull_sort$s1c$1
 
 
-module raster_top$cull_sort$s1c$2(d,q,clock);
+module raster_top$fragments$cull_sort$s1c$2(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48005,10 +48114,10 @@ module raster_top$cull_sort$s1c$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1c$2
+endmodule // raster_top$fragments$cull_sort$s1c$2
 
 
-module raster_top$cull_sort$s1c$3(d,q,clock);
+module raster_top$fragments$cull_sort$s1c$3(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48024,10 +48133,10 @@ module raster_top$cull_sort$s1c$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1c$3
+endmodule // raster_top$fragments$cull_sort$s1c$3
 
 
-module raster_top$cull_sort$s1c$4(d,q,clock);
+module raster_top$fragments$cull_sort$s1c$4(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48043,10 +48152,10 @@ module raster_top$cull_sort$s1c$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1c$4
+endmodule // raster_top$fragments$cull_sort$s1c$4
 
 
-module raster_top$cull_sort$s1c$5(d,q,clock);
+module raster_top$fragments$cull_sort$s1c$5(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48062,10 +48171,10 @@ module raster_top$cull_sort$s1c$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1c$5
+endmodule // raster_top$fragments$cull_sort$s1c$5
 
 
-module raster_top$cull_sort$s1c$6(d,q,clock);
+module raster_top$fragments$cull_sort$s1c$6(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48081,10 +48190,10 @@ module raster_top$cull_sort$s1c$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1c$6
+endmodule // raster_top$fragments$cull_sort$s1c$6
 
 
-module raster_top$cull_sort$s1c$7(d,q,clock);
+module raster_top$fragments$cull_sort$s1c$7(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48100,10 +48209,10 @@ module raster_top$cull_sort$s1c$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1c$7
+endmodule // raster_top$fragments$cull_sort$s1c$7
 
 
-module raster_top$cull_sort$s1c$8(d,q,clock);
+module raster_top$fragments$cull_sort$s1c$8(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48119,10 +48228,10 @@ module raster_top$cull_sort$s1c$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1c$8
+endmodule // raster_top$fragments$cull_sort$s1c$8
 
 
-module raster_top$cull_sort$s1iw$0(d,q,clock);
+module raster_top$fragments$cull_sort$s1iw$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48138,10 +48247,10 @@ module raster_top$cull_sort$s1iw$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1iw$0
+endmodule // raster_top$fragments$cull_sort$s1iw$0
 
 
-module raster_top$cull_sort$s1iw$1(d,q,clock);
+module raster_top$fragments$cull_sort$s1iw$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48157,10 +48266,10 @@ module raster_top$cull_sort$s1iw$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1iw$1
+endmodule // raster_top$fragments$cull_sort$s1iw$1
 
 
-module raster_top$cull_sort$s1iw$2(d,q,clock);
+module raster_top$fragments$cull_sort$s1iw$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48176,10 +48285,10 @@ module raster_top$cull_sort$s1iw$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1iw$2
+endmodule // raster_top$fragments$cull_sort$s1iw$2
 
 
-module raster_top$cull_sort$s1x$0(d,q,clock);
+module raster_top$fragments$cull_sort$s1x$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48195,10 +48304,10 @@ module raster_top$cull_sort$s1x$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1x$0
+endmodule // raster_top$fragments$cull_sort$s1x$0
 
 
-module raster_top$cull_sort$s1x$1(d,q,clock);
+module raster_top$fragments$cull_sort$s1x$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48214,10 +48323,10 @@ module raster_top$cull_sort$s1x$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1x$1
+endmodule // raster_top$fragments$cull_sort$s1x$1
 
 
-module raster_top$cull_sort$s1x$2(d,q,clock);
+module raster_top$fragments$cull_sort$s1x$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48233,10 +48342,10 @@ module raster_top$cull_sort$s1x$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1x$2
+endmodule // raster_top$fragments$cull_sort$s1x$2
 
 
-module raster_top$cull_sort$s1y$0(d,q,clock);
+module raster_top$fragments$cull_sort$s1y$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48252,10 +48361,10 @@ module raster_top$cull_sort$s1y$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1y$0
+endmodule // raster_top$fragments$cull_sort$s1y$0
 
 
-module raster_top$cull_sort$s1y$1(d,q,clock);
+module raster_top$fragments$cull_sort$s1y$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48271,10 +48380,10 @@ module raster_top$cull_sort$s1y$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1y$1
+endmodule // raster_top$fragments$cull_sort$s1y$1
 
 
-module raster_top$cull_sort$s1y$2(d,q,clock);
+module raster_top$fragments$cull_sort$s1y$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48290,10 +48399,10 @@ module raster_top$cull_sort$s1y$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1y$2
+endmodule // raster_top$fragments$cull_sort$s1y$2
 
 
-module raster_top$cull_sort$s1z$0(d,q,clock);
+module raster_top$fragments$cull_sort$s1z$0(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -48309,10 +48418,10 @@ module raster_top$cull_sort$s1z$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1z$0
+endmodule // raster_top$fragments$cull_sort$s1z$0
 
 
-module raster_top$cull_sort$s1z$1(d,q,clock);
+module raster_top$fragments$cull_sort$s1z$1(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -48328,10 +48437,10 @@ module raster_top$cull_sort$s1z$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1z$1
+endmodule // raster_top$fragments$cull_sort$s1z$1
 
 
-module raster_top$cull_sort$s1z$2(d,q,clock);
+module raster_top$fragments$cull_sort$s1z$2(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -48347,10 +48456,10 @@ module raster_top$cull_sort$s1z$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s1z$2
+endmodule // raster_top$fragments$cull_sort$s1z$2
 
 
-module raster_top$cull_sort$s2c$0(d,q,clock);
+module raster_top$fragments$cull_sort$s2c$0(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48366,10 +48475,10 @@ module raster_top$cull_sort$s2c$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2c$0
+endmodule // raster_top$fragments$cull_sort$s2c$0
 
 
-module raster_top$cull_sort$s2c$1(d,q,clock);
+module raster_top$fragments$cull_sort$s2c$1(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48385,10 +48494,10 @@ module raster_top$cull_sort$s2c$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2c$1
+endmodule // raster_top$fragments$cull_sort$s2c$1
 
 
-module raster_top$cull_sort$s2c$2(d,q,clock);
+module raster_top$fragments$cull_sort$s2c$2(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48404,10 +48513,10 @@ module raster_top$cull_sort$s2c$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2c$2
+endmodule // raster_top$fragments$cull_sort$s2c$2
 
 
-module raster_top$cull_sort$s2c$3(d,q,clock);
+module raster_top$fragments$cull_sort$s2c$3(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48423,10 +48532,10 @@ module raster_top$cull_sort$s2c$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2c$3
+endmodule // raster_top$fragments$cull_sort$s2c$3
 
 
-module raster_top$cull_sort$s2c$4(d,q,clock);
+module raster_top$fragments$cull_sort$s2c$4(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48442,10 +48551,10 @@ module raster_top$cull_sort$s2c$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2c$4
+endmodule // raster_top$fragments$cull_sort$s2c$4
 
 
-module raster_top$cull_sort$s2c$5(d,q,clock);
+module raster_top$fragments$cull_sort$s2c$5(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48461,10 +48570,10 @@ module raster_top$cull_sort$s2c$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2c$5
+endmodule // raster_top$fragments$cull_sort$s2c$5
 
 
-module raster_top$cull_sort$s2c$6(d,q,clock);
+module raster_top$fragments$cull_sort$s2c$6(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48480,10 +48589,10 @@ module raster_top$cull_sort$s2c$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2c$6
+endmodule // raster_top$fragments$cull_sort$s2c$6
 
 
-module raster_top$cull_sort$s2c$7(d,q,clock);
+module raster_top$fragments$cull_sort$s2c$7(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48499,10 +48608,10 @@ module raster_top$cull_sort$s2c$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2c$7
+endmodule // raster_top$fragments$cull_sort$s2c$7
 
 
-module raster_top$cull_sort$s2c$8(d,q,clock);
+module raster_top$fragments$cull_sort$s2c$8(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48518,10 +48627,10 @@ module raster_top$cull_sort$s2c$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2c$8
+endmodule // raster_top$fragments$cull_sort$s2c$8
 
 
-module raster_top$cull_sort$s2iw$0(d,q,clock);
+module raster_top$fragments$cull_sort$s2iw$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48537,10 +48646,10 @@ module raster_top$cull_sort$s2iw$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2iw$0
+endmodule // raster_top$fragments$cull_sort$s2iw$0
 
 
-module raster_top$cull_sort$s2iw$1(d,q,clock);
+module raster_top$fragments$cull_sort$s2iw$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48556,10 +48665,10 @@ module raster_top$cull_sort$s2iw$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2iw$1
+endmodule // raster_top$fragments$cull_sort$s2iw$1
 
 
-module raster_top$cull_sort$s2iw$2(d,q,clock);
+module raster_top$fragments$cull_sort$s2iw$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48575,10 +48684,10 @@ module raster_top$cull_sort$s2iw$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2iw$2
+endmodule // raster_top$fragments$cull_sort$s2iw$2
 
 
-module raster_top$cull_sort$s2x$0(d,q,clock);
+module raster_top$fragments$cull_sort$s2x$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48594,10 +48703,10 @@ module raster_top$cull_sort$s2x$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2x$0
+endmodule // raster_top$fragments$cull_sort$s2x$0
 
 
-module raster_top$cull_sort$s2x$1(d,q,clock);
+module raster_top$fragments$cull_sort$s2x$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48613,10 +48722,10 @@ module raster_top$cull_sort$s2x$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2x$1
+endmodule // raster_top$fragments$cull_sort$s2x$1
 
 
-module raster_top$cull_sort$s2x$2(d,q,clock);
+module raster_top$fragments$cull_sort$s2x$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48632,10 +48741,10 @@ module raster_top$cull_sort$s2x$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2x$2
+endmodule // raster_top$fragments$cull_sort$s2x$2
 
 
-module raster_top$cull_sort$s2y$0(d,q,clock);
+module raster_top$fragments$cull_sort$s2y$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48651,10 +48760,10 @@ module raster_top$cull_sort$s2y$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2y$0
+endmodule // raster_top$fragments$cull_sort$s2y$0
 
 
-module raster_top$cull_sort$s2y$1(d,q,clock);
+module raster_top$fragments$cull_sort$s2y$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48670,10 +48779,10 @@ module raster_top$cull_sort$s2y$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2y$1
+endmodule // raster_top$fragments$cull_sort$s2y$1
 
 
-module raster_top$cull_sort$s2y$2(d,q,clock);
+module raster_top$fragments$cull_sort$s2y$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48689,10 +48798,10 @@ module raster_top$cull_sort$s2y$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2y$2
+endmodule // raster_top$fragments$cull_sort$s2y$2
 
 
-module raster_top$cull_sort$s2z$0(d,q,clock);
+module raster_top$fragments$cull_sort$s2z$0(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -48708,10 +48817,10 @@ module raster_top$cull_sort$s2z$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2z$0
+endmodule // raster_top$fragments$cull_sort$s2z$0
 
 
-module raster_top$cull_sort$s2z$1(d,q,clock);
+module raster_top$fragments$cull_sort$s2z$1(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -48727,10 +48836,10 @@ module raster_top$cull_sort$s2z$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2z$1
+endmodule // raster_top$fragments$cull_sort$s2z$1
 
 
-module raster_top$cull_sort$s2z$2(d,q,clock);
+module raster_top$fragments$cull_sort$s2z$2(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -48746,10 +48855,10 @@ module raster_top$cull_sort$s2z$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$s2z$2
+endmodule // raster_top$fragments$cull_sort$s2z$2
 
 
-module raster_top$cull_sort$sc$0(d,q,clock);
+module raster_top$fragments$cull_sort$sc$0(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48765,10 +48874,10 @@ module raster_top$cull_sort$sc$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sc$0
+endmodule // raster_top$fragments$cull_sort$sc$0
 
 
-module raster_top$cull_sort$sc$1(d,q,clock);
+module raster_top$fragments$cull_sort$sc$1(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48784,10 +48893,10 @@ module raster_top$cull_sort$sc$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sc$1
+endmodule // raster_top$fragments$cull_sort$sc$1
 
 
-module raster_top$cull_sort$sc$2(d,q,clock);
+module raster_top$fragments$cull_sort$sc$2(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48803,10 +48912,10 @@ module raster_top$cull_sort$sc$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sc$2
+endmodule // raster_top$fragments$cull_sort$sc$2
 
 
-module raster_top$cull_sort$sc$3(d,q,clock);
+module raster_top$fragments$cull_sort$sc$3(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48822,10 +48931,10 @@ module raster_top$cull_sort$sc$3(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sc$3
+endmodule // raster_top$fragments$cull_sort$sc$3
 
 
-module raster_top$cull_sort$sc$4(d,q,clock);
+module raster_top$fragments$cull_sort$sc$4(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48841,10 +48950,10 @@ module raster_top$cull_sort$sc$4(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sc$4
+endmodule // raster_top$fragments$cull_sort$sc$4
 
 
-module raster_top$cull_sort$sc$5(d,q,clock);
+module raster_top$fragments$cull_sort$sc$5(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48860,10 +48969,10 @@ module raster_top$cull_sort$sc$5(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sc$5
+endmodule // raster_top$fragments$cull_sort$sc$5
 
 
-module raster_top$cull_sort$sc$6(d,q,clock);
+module raster_top$fragments$cull_sort$sc$6(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48879,10 +48988,10 @@ module raster_top$cull_sort$sc$6(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sc$6
+endmodule // raster_top$fragments$cull_sort$sc$6
 
 
-module raster_top$cull_sort$sc$7(d,q,clock);
+module raster_top$fragments$cull_sort$sc$7(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48898,10 +49007,10 @@ module raster_top$cull_sort$sc$7(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sc$7
+endmodule // raster_top$fragments$cull_sort$sc$7
 
 
-module raster_top$cull_sort$sc$8(d,q,clock);
+module raster_top$fragments$cull_sort$sc$8(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -48917,10 +49026,10 @@ module raster_top$cull_sort$sc$8(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sc$8
+endmodule // raster_top$fragments$cull_sort$sc$8
 
 
-module raster_top$cull_sort$siw$0(d,q,clock);
+module raster_top$fragments$cull_sort$siw$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48936,10 +49045,10 @@ module raster_top$cull_sort$siw$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$siw$0
+endmodule // raster_top$fragments$cull_sort$siw$0
 
 
-module raster_top$cull_sort$siw$1(d,q,clock);
+module raster_top$fragments$cull_sort$siw$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48955,10 +49064,10 @@ module raster_top$cull_sort$siw$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$siw$1
+endmodule // raster_top$fragments$cull_sort$siw$1
 
 
-module raster_top$cull_sort$siw$2(d,q,clock);
+module raster_top$fragments$cull_sort$siw$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48974,10 +49083,10 @@ module raster_top$cull_sort$siw$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$siw$2
+endmodule // raster_top$fragments$cull_sort$siw$2
 
 
-module raster_top$cull_sort$sx$0(d,q,clock);
+module raster_top$fragments$cull_sort$sx$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -48993,10 +49102,10 @@ module raster_top$cull_sort$sx$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sx$0
+endmodule // raster_top$fragments$cull_sort$sx$0
 
 
-module raster_top$cull_sort$sx$1(d,q,clock);
+module raster_top$fragments$cull_sort$sx$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -49012,10 +49121,10 @@ module raster_top$cull_sort$sx$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sx$1
+endmodule // raster_top$fragments$cull_sort$sx$1
 
 
-module raster_top$cull_sort$sx$2(d,q,clock);
+module raster_top$fragments$cull_sort$sx$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -49031,10 +49140,10 @@ module raster_top$cull_sort$sx$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sx$2
+endmodule // raster_top$fragments$cull_sort$sx$2
 
 
-module raster_top$cull_sort$sy$0(d,q,clock);
+module raster_top$fragments$cull_sort$sy$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -49050,10 +49159,10 @@ module raster_top$cull_sort$sy$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sy$0
+endmodule // raster_top$fragments$cull_sort$sy$0
 
 
-module raster_top$cull_sort$sy$1(d,q,clock);
+module raster_top$fragments$cull_sort$sy$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -49069,10 +49178,10 @@ module raster_top$cull_sort$sy$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sy$1
+endmodule // raster_top$fragments$cull_sort$sy$1
 
 
-module raster_top$cull_sort$sy$2(d,q,clock);
+module raster_top$fragments$cull_sort$sy$2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -49088,10 +49197,10 @@ module raster_top$cull_sort$sy$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sy$2
+endmodule // raster_top$fragments$cull_sort$sy$2
 
 
-module raster_top$cull_sort$sz$0(d,q,clock);
+module raster_top$fragments$cull_sort$sz$0(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -49107,10 +49216,10 @@ module raster_top$cull_sort$sz$0(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sz$0
+endmodule // raster_top$fragments$cull_sort$sz$0
 
 
-module raster_top$cull_sort$sz$1(d,q,clock);
+module raster_top$fragments$cull_sort$sz$1(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -49126,10 +49235,10 @@ module raster_top$cull_sort$sz$1(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sz$1
+endmodule // raster_top$fragments$cull_sort$sz$1
 
 
-module raster_top$cull_sort$sz$2(d,q,clock);
+module raster_top$fragments$cull_sort$sz$2(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -49145,10 +49254,10 @@ module raster_top$cull_sort$sz$2(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$cull_sort$sz$2
+endmodule // raster_top$fragments$cull_sort$sz$2
 
 
-module raster_top$cull_sort$wx$0(x,y);
+module raster_top$fragments$cull_sort$wx$0(x,y);
     
     // Module arguments
     input wire  [15:0] x;
@@ -49166,10 +49275,10 @@ module raster_top$cull_sort$wx$0(x,y);
         end
     end
     
-endmodule // raster_top$cull_sort$wx$0
+endmodule // raster_top$fragments$cull_sort$wx$0
 
 
-module raster_top$cull_sort$wx$1(x,y);
+module raster_top$fragments$cull_sort$wx$1(x,y);
     
     // Module arguments
     input wire  [15:0] x;
@@ -49187,10 +49296,10 @@ module raster_top$cull_sort$wx$1(x,y);
         end
     end
     
-endmodule // raster_top$cull_sort$wx$1
+endmodule // raster_top$fragments$cull_sort$wx$1
 
 
-module raster_top$cull_sort$wx$2(x,y);
+module raster_top$fragments$cull_sort$wx$2(x,y);
     
     // Module arguments
     input wire  [15:0] x;
@@ -49208,10 +49317,10 @@ module raster_top$cull_sort$wx$2(x,y);
         end
     end
     
-endmodule // raster_top$cull_sort$wx$2
+endmodule // raster_top$fragments$cull_sort$wx$2
 
 
-module raster_top$cull_sort$wy$0(x,y);
+module raster_top$fragments$cull_sort$wy$0(x,y);
     
     // Module arguments
     input wire  [15:0] x;
@@ -49229,10 +49338,10 @@ module raster_top$cull_sort$wy$0(x,y);
         end
     end
     
-endmodule // raster_top$cull_sort$wy$0
+endmodule // raster_top$fragments$cull_sort$wy$0
 
 
-module raster_top$cull_sort$wy$1(x,y);
+module raster_top$fragments$cull_sort$wy$1(x,y);
     
     // Module arguments
     input wire  [15:0] x;
@@ -49250,10 +49359,10 @@ module raster_top$cull_sort$wy$1(x,y);
         end
     end
     
-endmodule // raster_top$cull_sort$wy$1
+endmodule // raster_top$fragments$cull_sort$wy$1
 
 
-module raster_top$cull_sort$wy$2(x,y);
+module raster_top$fragments$cull_sort$wy$2(x,y);
     
     // Module arguments
     input wire  [15:0] x;
@@ -49271,10 +49380,10 @@ module raster_top$cull_sort$wy$2(x,y);
         end
     end
     
-endmodule // raster_top$cull_sort$wy$2
+endmodule // raster_top$fragments$cull_sort$wy$2
 
 
-module raster_top$last_in(d,q,clock);
+module raster_top$fragments$last_in(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -49290,7 +49399,7 @@ module raster_top$last_in(d,q,clock);
        q <= d;
     end
           
-endmodule // raster_top$last_in
+endmodule // raster_top$fragments$last_in
 
 
 module raster_top$pixel_out(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,mem$ready,mem$rd_en,mem$rd_addr,mem$rd_z,mem$wr_en,mem$wr_addr,mem$wr_z,mem$wr_rgb,idle);

@@ -63,7 +63,7 @@ for ((k = 0; k < ${#mutations[@]}; k += 4)); do
     printf '\n== mutate: %s: %s -> %s\n' "$unit" "$from" "$to"
     cp "$saved"/*.v hdl-out/
     mutate "hdl-out/$unit.v" "$module" "$from" "$to"
-    mutate hdl-out/raster_top.v "raster_top\$core\$$module" "$from" "$to"
+    mutate hdl-out/raster_top.v "raster_top\$fragments\$core\$$module" "$from" "$to"
     start=$SECONDS
     cargo test --workspace --locked "${features[@]}" --no-fail-fast >"$out/$unit.log" 2>&1 || true
     failed=$(grep -E '^test .* \.\.\. FAILED$' "$out/$unit.log" | sed -E 's/^test (.*) \.\.\. FAILED$/\1/' | sort -u)

@@ -298,11 +298,9 @@ impl Logic for RasterTopSorted {
 
 crate::pins!(RasterTopSorted { clock: clock, inputs: [width, height, inp_last], outputs: [done], links: [inp, mem] });
 
-/// The whole scanline rasterizer (`CULL_SORT = 1`, `PIXEL_OUT = 1`): `cull_sort`, the core
-/// and `pixel_out`. Triangles in as submitted, `cull_sort`'s verdicts, the memory port, and
-/// `done`. (It holds the three units itself rather than [`RasterTopFragments`]: with that
-/// block inside, Yosys' `synth_ecp5` mapped the design to 29,468 LUT4s instead of about
-/// 21,500, the same logic.)
+/// The whole scanline rasterizer (`CULL_SORT = 1`, `PIXEL_OUT = 1`): [`RasterTopFragments`]
+/// (`cull_sort` and the core) with `pixel_out` behind it. Triangles in as submitted,
+/// `cull_sort`'s verdicts, the memory port, and `done`.
 #[derive(LogicBlock, Default)]
 pub struct RasterTop {
     pub clock: Signal<In, Clock>,
@@ -317,10 +315,8 @@ pub struct RasterTop {
     pub mem: MemoryPort,
     /// `inp_last`'s triangle taken, every unit empty and the last pixel written.
     pub done: Signal<Out, Bit>,
-    cull_sort: CullSort,
-    core: RasterTopCore,
+    fragments: RasterTopFragments,
     pixel_out: PixelOut,
-    last_in: DFF<Bit>,
 }
 
 impl RasterTop {
@@ -328,8 +324,7 @@ impl RasterTop {
     /// `pixel_out`, with the parts `parts` says.
     pub fn new(k: usize, l: usize, parts: &Parts) -> Result<RasterTop, String> {
         Ok(RasterTop {
-            cull_sort: CullSort::new(parts),
-            core: RasterTopCore::new(k, l, parts)?,
+            fragments: RasterTopFragments::new(k, l, parts)?,
             pixel_out: PixelOut::new(parts),
             ..Default::default()
         })
@@ -339,26 +334,16 @@ impl RasterTop {
 impl Logic for RasterTop {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, last_in);
-        clock!(self, clock, cull_sort, core, pixel_out);
-        self.cull_sort.width.next = self.width.val();
-        self.cull_sort.height.next = self.height.val();
-        self.cull_sort.cull_back.next = self.cull_back.val();
-        self.core.width.next = self.width.val();
-        self.core.height.next = self.height.val();
-        // As `RasterTopFragments`, then the fragments to pixel_out.
-        TriangleSink::link(&mut self.inp, &mut self.cull_sort.inp);
-        Verdict::link(&mut self.verdict, &mut self.cull_sort.verdict);
-        SortedSource::join(&mut self.cull_sort.out, &mut self.core.inp);
-        self.core.inp_last.next = false;
-        self.core.hold.next = false;
-        PixelSource::join(&mut self.core.out, &mut self.pixel_out.inp);
+        clock!(self, clock, fragments, pixel_out);
+        self.fragments.width.next = self.width.val();
+        self.fragments.height.next = self.height.val();
+        self.fragments.inp_last.next = self.inp_last.val();
+        self.fragments.cull_back.next = self.cull_back.val();
+        TriangleSink::link(&mut self.inp, &mut self.fragments.inp);
+        Verdict::link(&mut self.verdict, &mut self.fragments.verdict);
+        PixelSource::join(&mut self.fragments.out, &mut self.pixel_out.inp);
         MemoryPort::link(&mut self.mem, &mut self.pixel_out.mem);
-        if self.inp.valid.val() & self.inp.ready.val() {
-            self.last_in.d.next = self.inp_last.val();
-        }
-        self.done.next =
-            self.last_in.q.val() & self.cull_sort.idle.val() & self.core.idle.val() & self.pixel_out.idle.val();
+        self.done.next = self.fragments.done.val() & self.pixel_out.idle.val();
     }
 }
 
