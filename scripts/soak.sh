@@ -75,7 +75,9 @@ want synth && step "synthesis of every file in all flows" scripts/synth.sh --all
 want synth && step "lint of every raster_top variant, classes 11 and 12 too" scripts/lint.sh
 # The test profile's build of edgepaint: the one the tests made.
 pnr() {
-    local unit router flows
+    local unit router flows scenes textured=()
+    # The texture cache's hit rate on every shipped textured scene, beside the units that hold it.
+    for f in scenes/textured/*.json; do textured+=(--scene "$f"); done
     for unit in ept se cull_sort divider edge_walk span pixel_out pixel_bus gpu_regs command_parser triangle_queue triangle_setup raster_top gpu_top \
         texture_coords texture_address texture_cache texture_filter texture_unit texture_setup texture_path blend; do
         router=router1
@@ -85,13 +87,15 @@ pnr() {
         # The texture units hold multipliers (or, the cache, RAMs the generic flow makes
         # flip-flops of) no iCE40 HX8K has: the generic flow for gate equivalents and ECP5.
         [[ $unit == texture_* || $unit == blend ]] && flows=(--flow generic --flow ecp5)
-        cargo run --profile test --locked --quiet -- report --unit "$unit" --router $router "${flows[@]}" \
+        scenes=()
+        [[ $unit == texture_cache || $unit == texture_unit || $unit == texture_path ]] && scenes=("${textured[@]}")
+        cargo run --profile test --locked --quiet -- report --unit "$unit" --router $router "${flows[@]}" "${scenes[@]}" \
             -o "target/soak/report/$unit"
     done
     # The textured raster_top (texture_path behind the scanline units): ECP5 only, as raster_top
     # fits no iCE40.
     cargo run --profile test --locked --quiet -- report --unit raster_top --param TEXTURE=1 --router router2 --flow ecp5 \
-        -o target/soak/report/raster_top-TEXTURE=1
+        "${textured[@]}" -o target/soak/report/raster_top-TEXTURE=1
 }
 want pnr && step "place and route of the default design" pnr
 want mutate && step "mutations of the emitted Verilog of edge_walk, span and triangle_setup" scripts/mutate.sh

@@ -11,15 +11,25 @@
 //!   pins), `nextpnr-ice40` on an iCE40 HX8K (ct256) and `nextpnr-ecp5` on the smallest
 //!   LFE5U (25F, 45F, 85F; CABGA381) the synthesized unit fits in, seed 1; the achieved
 //!   clock in nextpnr's JSON report. A unit too large for every part has no Fmax.
+//! * Hit rate (`--scene`): for the units that hold the texture cache (`texture_cache`,
+//!   `texture_unit`, `texture_path`, `raster_top` with `TEXTURE = 1`), the cache at the row's
+//!   geometry on each scene's textured fragments in drawing order, per lane lookup
+//!   (`accuracy::texture::cache_stats` over the trace `accuracy::texture::judge` records, at
+//!   the row's level-of-detail rule).
 
 use super::emit::emit_with;
+use accuracy::texture::{cache_stats, judge, CacheStats, TextureSetup, DEFAULT_CACHE};
 use anyhow::{anyhow, bail, Context, Result};
+use fx::TexFormats;
+use model::texture_cache::Params as CacheParams;
 use rtl::emit::Emitted;
+use scene::Trilist;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use texture::LodRule;
 
 /// Arguments of `edgepaint report`.
 #[derive(clap::Args)]
@@ -46,6 +56,10 @@ pub struct Args {
     /// (triangle_setup, raster_top) in minutes where router1 had not finished in 20.
     #[arg(long, default_value = "router1", value_parser = ["router1", "router2"])]
     router: String,
+    /// A textured scene (or trilist) to give the texture cache's hit rate on, for each unit
+    /// that holds the cache; repeatable.
+    #[arg(long = "scene", value_name = "FILE")]
+    scenes: Vec<PathBuf>,
     /// Directory for report.md, report.json and the tools' work files.
     #[arg(short, long, value_name = "DIR", default_value = "target/report")]
     out: PathBuf,
@@ -173,6 +187,17 @@ struct Row {
     ice40: Option<Fpga>,
     #[serde(skip_serializing_if = "Option::is_none")]
     ecp5: Option<Fpga>,
+    /// The texture cache's hit rate on each `--scene`, for a unit that holds the cache.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    hit_rates: Vec<SceneHitRate>,
+}
+
+/// The texture cache at a row's geometry on one scene's textured fragments.
+#[derive(Serialize)]
+struct SceneHitRate {
+    scene: String,
+    #[serde(flatten)]
+    cache: CacheStats,
 }
 
 #[derive(Serialize)]
@@ -210,6 +235,16 @@ struct Fpga {
 }
 
 pub fn run(args: Args) -> Result<()> {
+    // The scenes first: a bad one is reported before minutes of synthesis.
+    let scenes = args
+        .scenes
+        .iter()
+        .map(|path| {
+            let loaded = super::input::load(path, None)?;
+            anyhow::ensure!(loaded.trilist.is_textured(), "{}: not textured: no texture cache access", path.display());
+            Ok((path.clone(), loaded.trilist))
+        })
+        .collect::<Result<Vec<_>>>()?;
     let designs: Vec<Emitted> = match &args.unit {
         None if !args.params.is_empty() || args.formats.is_some() => {
             bail!("--param and --formats need --unit: the default design's parameters are fixed")
@@ -250,6 +285,7 @@ pub fn run(args: Args) -> Result<()> {
         eprintln!("report: {}{tag} in {}", e.unit, dir.display());
         let mut row = report(e, &dir, &flows, (!args.no_pnr).then_some(args.router.as_str()))?;
         row.formats = args.formats.as_ref().map(|f| f.display().to_string());
+        row.hit_rates = hit_rates(e.unit, &e.params, &scenes)?;
         rows.push(row);
     }
     let md = markdown(&rows);
@@ -293,7 +329,49 @@ fn report(e: &Emitted, dir: &Path, flows: &[Flow], router: Option<&str>) -> Resu
     };
     let ice40 = family(Flow::Ice40, &ICE40_FAMILY)?;
     let ecp5 = family(Flow::Ecp5, &ECP5_FAMILY)?;
-    Ok(Row { unit: e.unit.to_owned(), parameters: e.params.clone(), formats: None, generic, ice40, ecp5 })
+    Ok(Row {
+        unit: e.unit.to_owned(),
+        parameters: e.params.clone(),
+        formats: None,
+        generic,
+        ice40,
+        ecp5,
+        hit_rates: Vec::new(),
+    })
+}
+
+/// The texture cache's geometry and level-of-detail rule in `unit` at `params`, if it holds
+/// the cache: `texture_cache` and `texture_unit` at their `SETS`, `WAYS` and `LINE`;
+/// `texture_path` and the textured `raster_top` at the unit's default geometry.
+fn texture_cache_of(unit: &str, params: &rtl::Params) -> Option<(CacheParams, LodRule)> {
+    let p = |name: &str| params.get(name).copied();
+    let holds = match unit {
+        "texture_cache" | "texture_unit" | "texture_path" => true,
+        "raster_top" => p("TEXTURE") == Some(1),
+        _ => false,
+    };
+    let geometry = |name, default: u32| p(name).map_or(default, |v| v as u32);
+    let cache = CacheParams {
+        sets: geometry("SETS", DEFAULT_CACHE.sets),
+        ways: geometry("WAYS", DEFAULT_CACHE.ways),
+        line: geometry("LINE", DEFAULT_CACHE.line),
+    };
+    let lod = if p("EXACT") == Some(1) { LodRule::Exact } else { LodRule::Max };
+    holds.then_some((cache, lod))
+}
+
+/// The hit rate of `unit`'s texture cache at `params` on each of `scenes` (none when it
+/// holds no cache).
+fn hit_rates(unit: &str, params: &rtl::Params, scenes: &[(PathBuf, Trilist)]) -> Result<Vec<SceneHitRate>> {
+    let Some((cache, lod)) = texture_cache_of(unit, params) else { return Ok(Vec::new()) };
+    let setup = TextureSetup { formats: TexFormats::DEFAULT, lod, affine: false };
+    scenes
+        .iter()
+        .map(|(path, list)| {
+            let r = judge(list, &setup).map_err(|e| anyhow!("{}: {e}", path.display()))?;
+            Ok(SceneHitRate { scene: path.display().to_string(), cache: cache_stats(&cache, &r.trace) })
+        })
+        .collect()
 }
 
 /// An FPGA flow: the unit alone through `family`'s mapping (`read`: the command reading
@@ -492,6 +570,34 @@ fn markdown(rows: &[Row]) -> String {
         ICE40[0].name,
         ECP5.iter().map(|p| p.name).collect::<Vec<_>>().join(", ")
     ));
+    if rows.iter().any(|r| !r.hit_rates.is_empty()) {
+        md.push_str(
+            "\nThe texture cache on each scene's textured fragments, in drawing order (per lane lookup):\n\n\
+             | unit | parameters | scene | sets, ways, words a line | lookups | hits | misses | hit rate |\n\
+             |---|---|---|---|---:|---:|---:|---:|\n",
+        );
+        for r in rows {
+            let params: Vec<String> = r.parameters.iter().map(|(k, v)| format!("{k}={v}")).collect();
+            for h in &r.hit_rates {
+                let c = &h.cache;
+                writeln!(
+                    md,
+                    "| {} | {} | {} | {}, {}, {} | {} | {} | {} | {:.4} |",
+                    r.unit,
+                    params.join(" "),
+                    h.scene,
+                    c.sets,
+                    c.ways,
+                    c.line,
+                    c.hits + c.misses,
+                    c.hits,
+                    c.misses,
+                    c.hit_rate
+                )
+                .expect("writing to a String");
+            }
+        }
+    }
     md
 }
 
@@ -543,6 +649,7 @@ mod tests {
             generic: None,
             ice40: None,
             ecp5: Some(ecp5),
+            hit_rates: Vec::new(),
         };
         let md = markdown(&[row]);
         let line = md.lines().nth(2).expect("a row under the header");
@@ -551,6 +658,71 @@ mod tests {
             "| gpu_top | N=10 | – | – | – | – | – | – | – | – | 26565 | 18784 | 0 | 4269 | 32 | 13 | 30.4 (LFE5U-85F) |"
         );
         assert_eq!(line.matches('|').count(), md.lines().next().unwrap().matches('|').count(), "one cell per column");
+    }
+
+    /// `scenes/textured/checker.json` at 128 x 96.
+    fn checker() -> (PathBuf, Trilist) {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/textured/checker.json");
+        let loaded = super::super::input::load(&path, Some(super::super::input::Size { width: 128, height: 96 }))
+            .expect("the shipped checker scene");
+        (path, loaded.trilist)
+    }
+
+    fn params(p: &[(&str, u64)]) -> rtl::Params {
+        p.iter().map(|(k, v)| (k.to_string(), *v)).collect()
+    }
+
+    #[test]
+    fn report_gives_the_texture_cache_hit_rate_of_each_unit_that_holds_it() {
+        let scenes = [checker()];
+        let rate = |unit: &str, p: &[(&str, u64)]| {
+            let mut r = hit_rates(unit, &params(p), &scenes).expect("a textured scene");
+            assert!(r.len() <= 1, "one scene, one rate");
+            r.pop().map(|h| h.cache)
+        };
+        // No cache, no rate.
+        assert!(rate("edge_walk", &[]).is_none());
+        assert!(rate("raster_top", &[("TEXTURE", 0)]).is_none());
+        let small = rate("texture_cache", &[("SETS", 16), ("WAYS", 1), ("LINE", 4)]).expect("the cache itself");
+        let default = rate("texture_unit", &[("SETS", 64), ("WAYS", 2), ("LINE", 4), ("EXACT", 0)]).expect("the unit");
+        let big = rate("texture_cache", &[("SETS", 256), ("WAYS", 4), ("LINE", 16)]).expect("the cache itself");
+        assert_eq!((small.sets, small.ways, small.line), (16, 1, 4));
+        assert_eq!((big.sets, big.ways, big.line), (256, 4, 16));
+        // Every lane the unit enables is one lookup, at any geometry.
+        let setup = TextureSetup { formats: TexFormats::DEFAULT, lod: LodRule::Max, affine: false };
+        let trace = judge(&scenes[0].1, &setup).expect("the checker scene").trace;
+        let lanes: u64 = trace.iter().map(|f| f.iter().flatten().count() as u64).sum();
+        assert!(lanes > 1000, "the scene textures {lanes} lanes");
+        for c in [&small, &default, &big] {
+            assert_eq!(c.hits + c.misses, lanes, "{} sets: lookups", c.sets);
+            assert!((c.hit_rate - c.hits as f64 / lanes as f64).abs() < 1e-12);
+        }
+        // A larger cache misses less on the checker.
+        assert!(small.hit_rate < default.hit_rate && default.hit_rate < big.hit_rate, "{small:?} {default:?} {big:?}");
+        // The path and the textured raster_top hold the unit at its default geometry.
+        for (unit, p) in [("texture_path", &[("EXACT", 0)][..]), ("raster_top", &[("TEXTURE", 1), ("EXACT", 0)][..])] {
+            let c = rate(unit, p).expect("holds the cache");
+            assert_eq!((c.sets, c.ways, c.line, c.hits, c.misses), (64, 2, 4, default.hits, default.misses), "{unit}");
+        }
+        // GL's exact rule picks other levels, so other texels.
+        assert_eq!(texture_cache_of("texture_path", &params(&[("EXACT", 1)])).map(|c| c.1), Some(LodRule::Exact));
+    }
+
+    #[test]
+    fn report_refuses_a_scene_without_texture_before_synthesis() {
+        let cube = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cube.json");
+        let args = Args {
+            unit: Some("texture_cache".into()),
+            params: Vec::new(),
+            formats: None,
+            no_pnr: true,
+            flows: vec![Flow::Generic],
+            router: "router1".into(),
+            scenes: vec![cube],
+            out: std::env::temp_dir().join("edgepaint-report-untextured"),
+        };
+        let e = run(args).expect_err("an untextured scene").to_string();
+        assert!(e.contains("cube.json") && e.contains("not textured"), "{e}");
     }
 
     #[test]
