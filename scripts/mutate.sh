@@ -15,6 +15,9 @@
 #                   rounds a y on a pixel centre up (`y + half - 1` to `y + half`): the
 #                   fill rule's tie, every fifth triangle
 #
+# It edits hdl-out/ in place while it runs (the tests read the committed files) and puts it
+# back on exit: commit nothing from this tree meanwhile.
+#
 # `scripts/mutate.sh [UNIT...]` (all three by default) takes about 12 minutes on 2 cores
 # after the test command's build; the report is target/mutate/report.md.
 set -euo pipefail
