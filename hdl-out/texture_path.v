@@ -1,6 +1,6 @@
 
 
-module texture_path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,inp_new,tri$x0,tri$y0,tri$x1,tri$y1,tri$x2,tri$y2,tri$sq0,tri$sq1,tri$sq2,tri$tq0,tri$tq1,tri$tq2,tri$q0,tri$q1,tri$q2,tri$mant,tri$exp,tri$ws,tri$hs,tri$levels,tri$base,tri$min_linear,tri$mag_linear,tri$mip,tri$wrap_s,tri$wrap_t,tri$format,tri$gaussian,tri$env,tri$mode,inp_flush,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,out$alpha,out$mode,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
+module texture_path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,inp_new,tri$x0,tri$y0,tri$x1,tri$y1,tri$x2,tri$y2,tri$sq0,tri$sq1,tri$sq2,tri$tq0,tri$tq1,tri$tq2,tri$q0,tri$q1,tri$q2,tri$mant,tri$exp,tri$mode,state$ws,state$hs,state$levels,state$base,state$min_linear,state$mag_linear,state$mip,state$wrap_s,state$wrap_t,state$format,state$gaussian,state$env,inp_flush,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,out$alpha,out$mode,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
     
     // Module arguments
     input wire  clock;
@@ -30,19 +30,19 @@ module texture_path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb
     input wire  [20:0] tri$q2;
     input wire  [24:0] tri$mant;
     input wire  [5:0] tri$exp;
-    input wire  [3:0] tri$ws;
-    input wire  [3:0] tri$hs;
-    input wire  [3:0] tri$levels;
-    input wire  [25:0] tri$base;
-    input wire  tri$min_linear;
-    input wire  tri$mag_linear;
-    input wire  [1:0] tri$mip;
-    input wire  [1:0] tri$wrap_s;
-    input wire  [1:0] tri$wrap_t;
-    input wire  [2:0] tri$format;
-    input wire  tri$gaussian;
-    input wire  [2:0] tri$env;
     input wire  [2:0] tri$mode;
+    input wire  [3:0] state$ws;
+    input wire  [3:0] state$hs;
+    input wire  [3:0] state$levels;
+    input wire  [25:0] state$base;
+    input wire  state$min_linear;
+    input wire  state$mag_linear;
+    input wire  [1:0] state$mip;
+    input wire  [1:0] state$wrap_s;
+    input wire  [1:0] state$wrap_t;
+    input wire  [2:0] state$format;
+    input wire  state$gaussian;
+    input wire  [2:0] state$env;
     input wire  inp_flush;
     output reg  out$valid;
     input wire  out$ready;
@@ -123,18 +123,6 @@ module texture_path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb
     reg  [23:0] unit$inp_cf;
     reg  [31:0] unit$inp_tag;
     reg  unit$st_load;
-    reg  [3:0] unit$st_ws;
-    reg  [3:0] unit$st_hs;
-    reg  [3:0] unit$st_levels;
-    reg  [25:0] unit$st_base;
-    reg  unit$st_min_linear;
-    reg  unit$st_mag_linear;
-    reg  [1:0] unit$st_mip;
-    reg  [1:0] unit$st_wrap_s;
-    reg  [1:0] unit$st_wrap_t;
-    reg  [2:0] unit$st_format;
-    reg  unit$st_gaussian;
-    reg  [2:0] unit$st_env;
     reg  unit$inp_flush;
     wire  unit$out_valid;
     reg  unit$out_ready;
@@ -235,18 +223,18 @@ module texture_path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb
         .inp_cf(unit$inp_cf),
         .inp_tag(unit$inp_tag),
         .st_load(unit$st_load),
-        .st_ws(unit$st_ws),
-        .st_hs(unit$st_hs),
-        .st_levels(unit$st_levels),
-        .st_base(unit$st_base),
-        .st_min_linear(unit$st_min_linear),
-        .st_mag_linear(unit$st_mag_linear),
-        .st_mip(unit$st_mip),
-        .st_wrap_s(unit$st_wrap_s),
-        .st_wrap_t(unit$st_wrap_t),
-        .st_format(unit$st_format),
-        .st_gaussian(unit$st_gaussian),
-        .st_env(unit$st_env),
+        .st$ws(state$ws),
+        .st$hs(state$hs),
+        .st$levels(state$levels),
+        .st$base(state$base),
+        .st$min_linear(state$min_linear),
+        .st$mag_linear(state$mag_linear),
+        .st$mip(state$mip),
+        .st$wrap_s(state$wrap_s),
+        .st$wrap_t(state$wrap_t),
+        .st$format(state$format),
+        .st$gaussian(state$gaussian),
+        .st$env(state$env),
         .inp_flush(unit$inp_flush),
         .out_valid(unit$out_valid),
         .out_ready(unit$out_ready),
@@ -332,14 +320,14 @@ module texture_path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb
         cf$2$d = cf$2$q;
         setup$clock = clock;
         unit$clock = clock;
-        st_word = (((tri$ws) & 53'h1fffffffffffff) << 32'h31) | (((tri$hs) & 53'h1fffffffffffff) << 32'h2d) | (((tri$levels) & 53'h1fffffffffffff) << 32'h29) | (((tri$base) & 53'h1fffffffffffff) << 32'hf) | (((tri$mip) & 53'h1fffffffffffff) << 32'hb) | (((tri$wrap_s) & 53'h1fffffffffffff) << 32'h9) | (((tri$wrap_t) & 53'h1fffffffffffff) << 32'h7) | (((tri$format) & 53'h1fffffffffffff) << 32'h4) | ((tri$env) & 53'h1fffffffffffff);
-        if (tri$min_linear) begin
+        st_word = (((state$ws) & 53'h1fffffffffffff) << 32'h31) | (((state$hs) & 53'h1fffffffffffff) << 32'h2d) | (((state$levels) & 53'h1fffffffffffff) << 32'h29) | (((state$base) & 53'h1fffffffffffff) << 32'hf) | (((state$mip) & 53'h1fffffffffffff) << 32'hb) | (((state$wrap_s) & 53'h1fffffffffffff) << 32'h9) | (((state$wrap_t) & 53'h1fffffffffffff) << 32'h7) | (((state$format) & 53'h1fffffffffffff) << 32'h4) | ((state$env) & 53'h1fffffffffffff);
+        if (state$min_linear) begin
             st_word = (st_word & ~(1 << (32'he)) | ((1'b1) << (32'he)));
         end
-        if (tri$mag_linear) begin
+        if (state$mag_linear) begin
             st_word = (st_word & ~(1 << (32'hd)) | ((1'b1) << (32'hd)));
         end
-        if (tri$gaussian) begin
+        if (state$gaussian) begin
             st_word = (st_word & ~(1 << (32'h3)) | ((1'b1) << (32'h3)));
         end
         same = st_word == loaded$q;
@@ -375,18 +363,6 @@ module texture_path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb
         unit$inp_cf = cf$2$q;
         unit$inp_tag = 32'h0;
         unit$st_load = start & ~same;
-        unit$st_ws = tri$ws;
-        unit$st_hs = tri$hs;
-        unit$st_levels = tri$levels;
-        unit$st_base = tri$base;
-        unit$st_min_linear = tri$min_linear;
-        unit$st_mag_linear = tri$mag_linear;
-        unit$st_mip = tri$mip;
-        unit$st_wrap_s = tri$wrap_s;
-        unit$st_wrap_t = tri$wrap_t;
-        unit$st_format = tri$format;
-        unit$st_gaussian = tri$gaussian;
-        unit$st_env = tri$env;
         unit$inp_flush = inp_flush;
         unit$out_ready = out$ready;
         en = ~setup$out_valid | unit$inp_ready;
@@ -2929,7 +2905,7 @@ module texture_path$side(read_address,read_clock,read_data,write_address,write_c
 endmodule // texture_path$side
 
 
-module texture_path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_dsq_y,inp_dtq_x,inp_dtq_y,inp_dq_x,inp_dq_y,inp_cf,inp_tag,st_load,st_ws,st_hs,st_levels,st_base,st_min_linear,st_mag_linear,st_mip,st_wrap_s,st_wrap_t,st_format,st_gaussian,st_env,inp_flush,out_valid,out_ready,out_rgba,out_tag,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
+module texture_path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_dsq_y,inp_dtq_x,inp_dtq_y,inp_dq_x,inp_dq_y,inp_cf,inp_tag,st_load,st$ws,st$hs,st$levels,st$base,st$min_linear,st$mag_linear,st$mip,st$wrap_s,st$wrap_t,st$format,st$gaussian,st$env,inp_flush,out_valid,out_ready,out_rgba,out_tag,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
     
     // Module arguments
     input wire  clock;
@@ -2947,18 +2923,18 @@ module texture_path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x
     input wire  [23:0] inp_cf;
     input wire  [31:0] inp_tag;
     input wire  st_load;
-    input wire  [3:0] st_ws;
-    input wire  [3:0] st_hs;
-    input wire  [3:0] st_levels;
-    input wire  [25:0] st_base;
-    input wire  st_min_linear;
-    input wire  st_mag_linear;
-    input wire  [1:0] st_mip;
-    input wire  [1:0] st_wrap_s;
-    input wire  [1:0] st_wrap_t;
-    input wire  [2:0] st_format;
-    input wire  st_gaussian;
-    input wire  [2:0] st_env;
+    input wire  [3:0] st$ws;
+    input wire  [3:0] st$hs;
+    input wire  [3:0] st$levels;
+    input wire  [25:0] st$base;
+    input wire  st$min_linear;
+    input wire  st$mag_linear;
+    input wire  [1:0] st$mip;
+    input wire  [1:0] st$wrap_s;
+    input wire  [1:0] st$wrap_t;
+    input wire  [2:0] st$format;
+    input wire  st$gaussian;
+    input wire  [2:0] st$env;
     input wire  inp_flush;
     output reg  out_valid;
     input wire  out_ready;
@@ -3490,18 +3466,18 @@ module texture_path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x
         pair_words$3$clock = clock;
         pair_words$3$d = pair_words$3$q;
         if (st_load) begin
-            r_ws$d = st_ws;
-            r_hs$d = st_hs;
-            r_levels$d = st_levels;
-            r_base$d = st_base;
-            r_min_linear$d = st_min_linear;
-            r_mag_linear$d = st_mag_linear;
-            r_mip$d = st_mip;
-            r_wrap_s$d = st_wrap_s;
-            r_wrap_t$d = st_wrap_t;
-            r_format$d = st_format;
-            r_gaussian$d = st_gaussian;
-            r_env$d = st_env;
+            r_ws$d = st$ws;
+            r_hs$d = st$hs;
+            r_levels$d = st$levels;
+            r_base$d = st$base;
+            r_min_linear$d = st$min_linear;
+            r_mag_linear$d = st$mag_linear;
+            r_mip$d = st$mip;
+            r_wrap_s$d = st$wrap_s;
+            r_wrap_t$d = st$wrap_t;
+            r_format$d = st$format;
+            r_gaussian$d = st$gaussian;
+            r_env$d = st$env;
         end
         en_f = out_ready | ~filter$out_valid;
         en_a = ~address$out_valid | cache$inp_ready;

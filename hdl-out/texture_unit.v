@@ -1,6 +1,6 @@
 
 
-module texture_unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_dsq_y,inp_dtq_x,inp_dtq_y,inp_dq_x,inp_dq_y,inp_cf,inp_tag,st_load,st_ws,st_hs,st_levels,st_base,st_min_linear,st_mag_linear,st_mip,st_wrap_s,st_wrap_t,st_format,st_gaussian,st_env,inp_flush,out_valid,out_ready,out_rgba,out_tag,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
+module texture_unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_dsq_y,inp_dtq_x,inp_dtq_y,inp_dq_x,inp_dq_y,inp_cf,inp_tag,st_load,st$ws,st$hs,st$levels,st$base,st$min_linear,st$mag_linear,st$mip,st$wrap_s,st$wrap_t,st$format,st$gaussian,st$env,inp_flush,out_valid,out_ready,out_rgba,out_tag,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
     
     // Module arguments
     input wire  clock;
@@ -18,18 +18,18 @@ module texture_unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_
     input wire  [23:0] inp_cf;
     input wire  [31:0] inp_tag;
     input wire  st_load;
-    input wire  [3:0] st_ws;
-    input wire  [3:0] st_hs;
-    input wire  [3:0] st_levels;
-    input wire  [25:0] st_base;
-    input wire  st_min_linear;
-    input wire  st_mag_linear;
-    input wire  [1:0] st_mip;
-    input wire  [1:0] st_wrap_s;
-    input wire  [1:0] st_wrap_t;
-    input wire  [2:0] st_format;
-    input wire  st_gaussian;
-    input wire  [2:0] st_env;
+    input wire  [3:0] st$ws;
+    input wire  [3:0] st$hs;
+    input wire  [3:0] st$levels;
+    input wire  [25:0] st$base;
+    input wire  st$min_linear;
+    input wire  st$mag_linear;
+    input wire  [1:0] st$mip;
+    input wire  [1:0] st$wrap_s;
+    input wire  [1:0] st$wrap_t;
+    input wire  [2:0] st$format;
+    input wire  st$gaussian;
+    input wire  [2:0] st$env;
     input wire  inp_flush;
     output reg  out_valid;
     input wire  out_ready;
@@ -561,18 +561,18 @@ module texture_unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_
         pair_words$3$clock = clock;
         pair_words$3$d = pair_words$3$q;
         if (st_load) begin
-            r_ws$d = st_ws;
-            r_hs$d = st_hs;
-            r_levels$d = st_levels;
-            r_base$d = st_base;
-            r_min_linear$d = st_min_linear;
-            r_mag_linear$d = st_mag_linear;
-            r_mip$d = st_mip;
-            r_wrap_s$d = st_wrap_s;
-            r_wrap_t$d = st_wrap_t;
-            r_format$d = st_format;
-            r_gaussian$d = st_gaussian;
-            r_env$d = st_env;
+            r_ws$d = st$ws;
+            r_hs$d = st$hs;
+            r_levels$d = st$levels;
+            r_base$d = st$base;
+            r_min_linear$d = st$min_linear;
+            r_mag_linear$d = st$mag_linear;
+            r_mip$d = st$mip;
+            r_wrap_s$d = st$wrap_s;
+            r_wrap_t$d = st$wrap_t;
+            r_format$d = st$format;
+            r_gaussian$d = st$gaussian;
+            r_env$d = st$env;
         end
         en_f = out_ready | ~filter$out_valid;
         en_a = ~address$out_valid | cache$inp_ready;

@@ -1,6 +1,6 @@
 
 
-module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,tex$textured,tex$sq0,tex$sq1,tex$sq2,tex$tq0,tex$tq1,tex$tq2,tex$q0,tex$q1,tex$q2,tex$ws,tex$hs,tex$levels,tex$base,tex$min_linear,tex$mag_linear,tex$mip,tex$wrap_s,tex$wrap_t,tex$format,tex$gaussian,tex$env,tex$mode,inp_last,cull_back,verdict$valid,verdict$code,verdict$outside,inp_flush,mem$ready,mem$rd_en,mem$rd_addr,mem$rd_z,mem$rd_rgb,mem$wr_en,mem$wr_addr,mem$wr_z,mem$wr_rgb,tex_mem$valid,tex_mem$addr,tex_mem$ack,tex_mem$rvalid,tex_mem$rdata,counters$hits,counters$misses,counters$fills,done);
+module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,tex$textured,tex$sq0,tex$sq1,tex$sq2,tex$tq0,tex$tq1,tex$tq2,tex$q0,tex$q1,tex$q2,tex$mode,tex_state$ws,tex_state$hs,tex_state$levels,tex_state$base,tex_state$min_linear,tex_state$mag_linear,tex_state$mip,tex_state$wrap_s,tex_state$wrap_t,tex_state$format,tex_state$gaussian,tex_state$env,inp_last,cull_back,verdict$valid,verdict$code,verdict$outside,inp_flush,mem$ready,mem$rd_en,mem$rd_addr,mem$rd_z,mem$rd_rgb,mem$wr_en,mem$wr_addr,mem$wr_z,mem$wr_rgb,tex_mem$valid,tex_mem$addr,tex_mem$ack,tex_mem$rvalid,tex_mem$rdata,counters$hits,counters$misses,counters$fills,done);
     
     // Module arguments
     input wire  clock;
@@ -39,19 +39,19 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
     input wire  [20:0] tex$q0;
     input wire  [20:0] tex$q1;
     input wire  [20:0] tex$q2;
-    input wire  [3:0] tex$ws;
-    input wire  [3:0] tex$hs;
-    input wire  [3:0] tex$levels;
-    input wire  [25:0] tex$base;
-    input wire  tex$min_linear;
-    input wire  tex$mag_linear;
-    input wire  [1:0] tex$mip;
-    input wire  [1:0] tex$wrap_s;
-    input wire  [1:0] tex$wrap_t;
-    input wire  [2:0] tex$format;
-    input wire  tex$gaussian;
-    input wire  [2:0] tex$env;
     input wire  [2:0] tex$mode;
+    input wire  [3:0] tex_state$ws;
+    input wire  [3:0] tex_state$hs;
+    input wire  [3:0] tex_state$levels;
+    input wire  [25:0] tex_state$base;
+    input wire  tex_state$min_linear;
+    input wire  tex_state$mag_linear;
+    input wire  [1:0] tex_state$mip;
+    input wire  [1:0] tex_state$wrap_s;
+    input wire  [1:0] tex_state$wrap_t;
+    input wire  [2:0] tex_state$format;
+    input wire  tex_state$gaussian;
+    input wire  [2:0] tex_state$env;
     input wire  inp_last;
     input wire  cull_back;
     output wire  verdict$valid;
@@ -230,19 +230,19 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
     reg  [20:0] path$tri$q2;
     reg  [24:0] path$tri$mant;
     reg  [5:0] path$tri$exp;
-    reg  [3:0] path$tri$ws;
-    reg  [3:0] path$tri$hs;
-    reg  [3:0] path$tri$levels;
-    reg  [25:0] path$tri$base;
-    reg  path$tri$min_linear;
-    reg  path$tri$mag_linear;
-    reg  [1:0] path$tri$mip;
-    reg  [1:0] path$tri$wrap_s;
-    reg  [1:0] path$tri$wrap_t;
-    reg  [2:0] path$tri$format;
-    reg  path$tri$gaussian;
-    reg  [2:0] path$tri$env;
     reg  [2:0] path$tri$mode;
+    reg  [3:0] path$state$ws;
+    reg  [3:0] path$state$hs;
+    reg  [3:0] path$state$levels;
+    reg  [25:0] path$state$base;
+    reg  path$state$min_linear;
+    reg  path$state$mag_linear;
+    reg  [1:0] path$state$mip;
+    reg  [1:0] path$state$wrap_s;
+    reg  [1:0] path$state$wrap_t;
+    reg  [2:0] path$state$format;
+    reg  path$state$gaussian;
+    reg  [2:0] path$state$env;
     reg  path$inp_flush;
     wire  path$out$valid;
     reg  path$out$ready;
@@ -477,19 +477,19 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
         .tri$q2(path$tri$q2),
         .tri$mant(path$tri$mant),
         .tri$exp(path$tri$exp),
-        .tri$ws(path$tri$ws),
-        .tri$hs(path$tri$hs),
-        .tri$levels(path$tri$levels),
-        .tri$base(path$tri$base),
-        .tri$min_linear(path$tri$min_linear),
-        .tri$mag_linear(path$tri$mag_linear),
-        .tri$mip(path$tri$mip),
-        .tri$wrap_s(path$tri$wrap_s),
-        .tri$wrap_t(path$tri$wrap_t),
-        .tri$format(path$tri$format),
-        .tri$gaussian(path$tri$gaussian),
-        .tri$env(path$tri$env),
         .tri$mode(path$tri$mode),
+        .state$ws(path$state$ws),
+        .state$hs(path$state$hs),
+        .state$levels(path$state$levels),
+        .state$base(path$state$base),
+        .state$min_linear(path$state$min_linear),
+        .state$mag_linear(path$state$mag_linear),
+        .state$mip(path$state$mip),
+        .state$wrap_s(path$state$wrap_s),
+        .state$wrap_t(path$state$wrap_t),
+        .state$format(path$state$format),
+        .state$gaussian(path$state$gaussian),
+        .state$env(path$state$env),
         .inp_flush(path$inp_flush),
         .out$valid(path$out$valid),
         .out$ready(path$out$ready),
@@ -754,14 +754,14 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
         if (inp$valid & inp$ready) begin
             last_in$d = inp_last;
         end
-        word_in = (((inp$v0_x) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$0) | (((inp$v0_y) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$1) | (((inp$v1_x) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$2) | (((inp$v1_y) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$3) | (((inp$v2_x) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$4) | (((inp$v2_y) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$5) | (((tex$sq0) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$6) | (((tex$sq1) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$7) | (((tex$sq2) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$8) | (((tex$tq0) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$9) | (((tex$tq1) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$10) | (((tex$tq2) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$11) | (((tex$q0) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$12) | (((tex$q1) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$13) | (((tex$q2) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$14) | (((tex$ws) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$15) | (((tex$hs) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$16) | (((tex$levels) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$17) | (((tex$base) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$18) | (((tex$mip) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$21) | (((tex$wrap_s) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$22) | (((tex$wrap_t) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$23) | (((tex$format) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$24) | (((tex$env) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$26) | (((tex$mode) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$27);
-        if (tex$min_linear) begin
+        word_in = (((inp$v0_x) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$0) | (((inp$v0_y) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$1) | (((inp$v1_x) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$2) | (((inp$v1_y) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$3) | (((inp$v2_x) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$4) | (((inp$v2_y) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$5) | (((tex$sq0) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$6) | (((tex$sq1) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$7) | (((tex$sq2) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$8) | (((tex$tq0) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$9) | (((tex$tq1) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$10) | (((tex$tq2) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$11) | (((tex$q0) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$12) | (((tex$q1) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$13) | (((tex$q2) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$14) | (((tex_state$ws) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$15) | (((tex_state$hs) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$16) | (((tex_state$levels) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$17) | (((tex_state$base) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$18) | (((tex_state$mip) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$21) | (((tex_state$wrap_s) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$22) | (((tex_state$wrap_t) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$23) | (((tex_state$format) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$24) | (((tex_state$env) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$26) | (((tex$mode) & 389'h1fffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at$27);
+        if (tex_state$min_linear) begin
             word_in = (word_in & ~(1 << (at$19)) | ((1'b1) << (at$19)));
         end
-        if (tex$mag_linear) begin
+        if (tex_state$mag_linear) begin
             word_in = (word_in & ~(1 << (at$20)) | ((1'b1) << (at$20)));
         end
-        if (tex$gaussian) begin
+        if (tex_state$gaussian) begin
             word_in = (word_in & ~(1 << (at$25)) | ((1'b1) << (at$25)));
         end
         slots$write_clock = clock;
@@ -841,18 +841,18 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
         path$tri$q2 = word[(at$14)+:(21)];
         path$tri$mant = cur_mant$q;
         path$tri$exp = cur_exp$q;
-        path$tri$ws = word[(at$15)+:(4)];
-        path$tri$hs = word[(at$16)+:(4)];
-        path$tri$levels = word[(at$17)+:(4)];
-        path$tri$base = word[(at$18)+:(26)];
-        path$tri$min_linear = word[at$19];
-        path$tri$mag_linear = word[at$20];
-        path$tri$mip = word[(at$21)+:(2)];
-        path$tri$wrap_s = word[(at$22)+:(2)];
-        path$tri$wrap_t = word[(at$23)+:(2)];
-        path$tri$format = word[(at$24)+:(3)];
-        path$tri$gaussian = word[at$25];
-        path$tri$env = word[(at$26)+:(3)];
+        path$state$ws = word[(at$15)+:(4)];
+        path$state$hs = word[(at$16)+:(4)];
+        path$state$levels = word[(at$17)+:(4)];
+        path$state$base = word[(at$18)+:(26)];
+        path$state$min_linear = word[at$19];
+        path$state$mag_linear = word[at$20];
+        path$state$mip = word[(at$21)+:(2)];
+        path$state$wrap_s = word[(at$22)+:(2)];
+        path$state$wrap_t = word[(at$23)+:(2)];
+        path$state$format = word[(at$24)+:(3)];
+        path$state$gaussian = word[at$25];
+        path$state$env = word[(at$26)+:(3)];
         path$tri$mode = word[(at$27)+:(3)];
         path$inp$x = core$out$x;
         path$inp$y = core$out$y;
@@ -50013,7 +50013,7 @@ module raster_top$last_in(d,q,clock);
 endmodule // raster_top$last_in
 
 
-module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,inp_new,tri$x0,tri$y0,tri$x1,tri$y1,tri$x2,tri$y2,tri$sq0,tri$sq1,tri$sq2,tri$tq0,tri$tq1,tri$tq2,tri$q0,tri$q1,tri$q2,tri$mant,tri$exp,tri$ws,tri$hs,tri$levels,tri$base,tri$min_linear,tri$mag_linear,tri$mip,tri$wrap_s,tri$wrap_t,tri$format,tri$gaussian,tri$env,tri$mode,inp_flush,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,out$alpha,out$mode,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
+module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,inp_new,tri$x0,tri$y0,tri$x1,tri$y1,tri$x2,tri$y2,tri$sq0,tri$sq1,tri$sq2,tri$tq0,tri$tq1,tri$tq2,tri$q0,tri$q1,tri$q2,tri$mant,tri$exp,tri$mode,state$ws,state$hs,state$levels,state$base,state$min_linear,state$mag_linear,state$mip,state$wrap_s,state$wrap_t,state$format,state$gaussian,state$env,inp_flush,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,out$alpha,out$mode,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
     
     // Module arguments
     input wire  clock;
@@ -50043,19 +50043,19 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
     input wire  [20:0] tri$q2;
     input wire  [24:0] tri$mant;
     input wire  [5:0] tri$exp;
-    input wire  [3:0] tri$ws;
-    input wire  [3:0] tri$hs;
-    input wire  [3:0] tri$levels;
-    input wire  [25:0] tri$base;
-    input wire  tri$min_linear;
-    input wire  tri$mag_linear;
-    input wire  [1:0] tri$mip;
-    input wire  [1:0] tri$wrap_s;
-    input wire  [1:0] tri$wrap_t;
-    input wire  [2:0] tri$format;
-    input wire  tri$gaussian;
-    input wire  [2:0] tri$env;
     input wire  [2:0] tri$mode;
+    input wire  [3:0] state$ws;
+    input wire  [3:0] state$hs;
+    input wire  [3:0] state$levels;
+    input wire  [25:0] state$base;
+    input wire  state$min_linear;
+    input wire  state$mag_linear;
+    input wire  [1:0] state$mip;
+    input wire  [1:0] state$wrap_s;
+    input wire  [1:0] state$wrap_t;
+    input wire  [2:0] state$format;
+    input wire  state$gaussian;
+    input wire  [2:0] state$env;
     input wire  inp_flush;
     output reg  out$valid;
     input wire  out$ready;
@@ -50136,18 +50136,6 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
     reg  [23:0] unit$inp_cf;
     reg  [31:0] unit$inp_tag;
     reg  unit$st_load;
-    reg  [3:0] unit$st_ws;
-    reg  [3:0] unit$st_hs;
-    reg  [3:0] unit$st_levels;
-    reg  [25:0] unit$st_base;
-    reg  unit$st_min_linear;
-    reg  unit$st_mag_linear;
-    reg  [1:0] unit$st_mip;
-    reg  [1:0] unit$st_wrap_s;
-    reg  [1:0] unit$st_wrap_t;
-    reg  [2:0] unit$st_format;
-    reg  unit$st_gaussian;
-    reg  [2:0] unit$st_env;
     reg  unit$inp_flush;
     wire  unit$out_valid;
     reg  unit$out_ready;
@@ -50248,18 +50236,18 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
         .inp_cf(unit$inp_cf),
         .inp_tag(unit$inp_tag),
         .st_load(unit$st_load),
-        .st_ws(unit$st_ws),
-        .st_hs(unit$st_hs),
-        .st_levels(unit$st_levels),
-        .st_base(unit$st_base),
-        .st_min_linear(unit$st_min_linear),
-        .st_mag_linear(unit$st_mag_linear),
-        .st_mip(unit$st_mip),
-        .st_wrap_s(unit$st_wrap_s),
-        .st_wrap_t(unit$st_wrap_t),
-        .st_format(unit$st_format),
-        .st_gaussian(unit$st_gaussian),
-        .st_env(unit$st_env),
+        .st$ws(state$ws),
+        .st$hs(state$hs),
+        .st$levels(state$levels),
+        .st$base(state$base),
+        .st$min_linear(state$min_linear),
+        .st$mag_linear(state$mag_linear),
+        .st$mip(state$mip),
+        .st$wrap_s(state$wrap_s),
+        .st$wrap_t(state$wrap_t),
+        .st$format(state$format),
+        .st$gaussian(state$gaussian),
+        .st$env(state$env),
         .inp_flush(unit$inp_flush),
         .out_valid(unit$out_valid),
         .out_ready(unit$out_ready),
@@ -50345,14 +50333,14 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
         cf$2$d = cf$2$q;
         setup$clock = clock;
         unit$clock = clock;
-        st_word = (((tri$ws) & 53'h1fffffffffffff) << 32'h31) | (((tri$hs) & 53'h1fffffffffffff) << 32'h2d) | (((tri$levels) & 53'h1fffffffffffff) << 32'h29) | (((tri$base) & 53'h1fffffffffffff) << 32'hf) | (((tri$mip) & 53'h1fffffffffffff) << 32'hb) | (((tri$wrap_s) & 53'h1fffffffffffff) << 32'h9) | (((tri$wrap_t) & 53'h1fffffffffffff) << 32'h7) | (((tri$format) & 53'h1fffffffffffff) << 32'h4) | ((tri$env) & 53'h1fffffffffffff);
-        if (tri$min_linear) begin
+        st_word = (((state$ws) & 53'h1fffffffffffff) << 32'h31) | (((state$hs) & 53'h1fffffffffffff) << 32'h2d) | (((state$levels) & 53'h1fffffffffffff) << 32'h29) | (((state$base) & 53'h1fffffffffffff) << 32'hf) | (((state$mip) & 53'h1fffffffffffff) << 32'hb) | (((state$wrap_s) & 53'h1fffffffffffff) << 32'h9) | (((state$wrap_t) & 53'h1fffffffffffff) << 32'h7) | (((state$format) & 53'h1fffffffffffff) << 32'h4) | ((state$env) & 53'h1fffffffffffff);
+        if (state$min_linear) begin
             st_word = (st_word & ~(1 << (32'he)) | ((1'b1) << (32'he)));
         end
-        if (tri$mag_linear) begin
+        if (state$mag_linear) begin
             st_word = (st_word & ~(1 << (32'hd)) | ((1'b1) << (32'hd)));
         end
-        if (tri$gaussian) begin
+        if (state$gaussian) begin
             st_word = (st_word & ~(1 << (32'h3)) | ((1'b1) << (32'h3)));
         end
         same = st_word == loaded$q;
@@ -50388,18 +50376,6 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
         unit$inp_cf = cf$2$q;
         unit$inp_tag = 32'h0;
         unit$st_load = start & ~same;
-        unit$st_ws = tri$ws;
-        unit$st_hs = tri$hs;
-        unit$st_levels = tri$levels;
-        unit$st_base = tri$base;
-        unit$st_min_linear = tri$min_linear;
-        unit$st_mag_linear = tri$mag_linear;
-        unit$st_mip = tri$mip;
-        unit$st_wrap_s = tri$wrap_s;
-        unit$st_wrap_t = tri$wrap_t;
-        unit$st_format = tri$format;
-        unit$st_gaussian = tri$gaussian;
-        unit$st_env = tri$env;
         unit$inp_flush = inp_flush;
         unit$out_ready = out$ready;
         en = ~setup$out_valid | unit$inp_ready;
@@ -52942,7 +52918,7 @@ module raster_top$path$side(read_address,read_clock,read_data,write_address,writ
 endmodule // raster_top$path$side
 
 
-module raster_top$path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_dsq_y,inp_dtq_x,inp_dtq_y,inp_dq_x,inp_dq_y,inp_cf,inp_tag,st_load,st_ws,st_hs,st_levels,st_base,st_min_linear,st_mag_linear,st_mip,st_wrap_s,st_wrap_t,st_format,st_gaussian,st_env,inp_flush,out_valid,out_ready,out_rgba,out_tag,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
+module raster_top$path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_dsq_x,inp_dsq_y,inp_dtq_x,inp_dtq_y,inp_dq_x,inp_dq_y,inp_cf,inp_tag,st_load,st$ws,st$hs,st$levels,st$base,st$min_linear,st$mag_linear,st$mip,st$wrap_s,st$wrap_t,st$format,st$gaussian,st$env,inp_flush,out_valid,out_ready,out_rgba,out_tag,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
     
     // Module arguments
     input wire  clock;
@@ -52960,18 +52936,18 @@ module raster_top$path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_ds
     input wire  [23:0] inp_cf;
     input wire  [31:0] inp_tag;
     input wire  st_load;
-    input wire  [3:0] st_ws;
-    input wire  [3:0] st_hs;
-    input wire  [3:0] st_levels;
-    input wire  [25:0] st_base;
-    input wire  st_min_linear;
-    input wire  st_mag_linear;
-    input wire  [1:0] st_mip;
-    input wire  [1:0] st_wrap_s;
-    input wire  [1:0] st_wrap_t;
-    input wire  [2:0] st_format;
-    input wire  st_gaussian;
-    input wire  [2:0] st_env;
+    input wire  [3:0] st$ws;
+    input wire  [3:0] st$hs;
+    input wire  [3:0] st$levels;
+    input wire  [25:0] st$base;
+    input wire  st$min_linear;
+    input wire  st$mag_linear;
+    input wire  [1:0] st$mip;
+    input wire  [1:0] st$wrap_s;
+    input wire  [1:0] st$wrap_t;
+    input wire  [2:0] st$format;
+    input wire  st$gaussian;
+    input wire  [2:0] st$env;
     input wire  inp_flush;
     output reg  out_valid;
     input wire  out_ready;
@@ -53503,18 +53479,18 @@ module raster_top$path$unit(clock,inp_valid,inp_ready,inp_sq,inp_tq,inp_q,inp_ds
         pair_words$3$clock = clock;
         pair_words$3$d = pair_words$3$q;
         if (st_load) begin
-            r_ws$d = st_ws;
-            r_hs$d = st_hs;
-            r_levels$d = st_levels;
-            r_base$d = st_base;
-            r_min_linear$d = st_min_linear;
-            r_mag_linear$d = st_mag_linear;
-            r_mip$d = st_mip;
-            r_wrap_s$d = st_wrap_s;
-            r_wrap_t$d = st_wrap_t;
-            r_format$d = st_format;
-            r_gaussian$d = st_gaussian;
-            r_env$d = st_env;
+            r_ws$d = st$ws;
+            r_hs$d = st$hs;
+            r_levels$d = st$levels;
+            r_base$d = st$base;
+            r_min_linear$d = st$min_linear;
+            r_mag_linear$d = st$mag_linear;
+            r_mip$d = st$mip;
+            r_wrap_s$d = st$wrap_s;
+            r_wrap_t$d = st$wrap_t;
+            r_format$d = st$format;
+            r_gaussian$d = st$gaussian;
+            r_env$d = st$env;
         end
         en_f = out_ready | ~filter$out_valid;
         en_a = ~address$out_valid | cache$inp_ready;

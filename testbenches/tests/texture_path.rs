@@ -82,10 +82,11 @@ fn pins(i: &PathIn, recip: &model::divider::Recip) -> Vec<(String, Value)> {
         ("inp_flush".into(), bit(i.flush)),
         ("out$ready".into(), bit(i.out_ready)),
     ];
-    // texture_setup's `tri_*` and texture_unit's `st_*` are the link `tri`'s fields.
-    let tri = start_pins(&t.v, recip).into_iter().filter_map(|(n, v)| Some((n.strip_prefix("tri_")?, v)));
-    let state = state_pins(&t.state).into_iter().map(|(n, v)| (n.strip_prefix("st_").unwrap(), v));
-    pins.extend(tri.chain(state).map(|(n, v)| (format!("tri${n}"), v)));
+    // texture_setup's `tri_*` are the link `tri`'s fields; texture_unit's `st$*` are `state$*`.
+    let tri =
+        start_pins(&t.v, recip).into_iter().filter_map(|(n, v)| Some((format!("tri${}", n.strip_prefix("tri_")?), v)));
+    let state = state_pins(&t.state).into_iter().map(|(n, v)| (format!("state${}", n.strip_prefix("st$").unwrap()), v));
+    pins.extend(tri.chain(state));
     pins
 }
 

@@ -255,7 +255,7 @@ pub fn draws(list: &scene::Trilist, f: &Formats, opts: &Options, texturing: &Tex
 }
 
 /// A triangle as the textured `raster_top` (`rtl::raster_top_textured`) takes it: its input
-/// words, its blend mode and, when textured, its texture words (`tex$*`: the triangle
+/// words, its blend mode and, when textured, its texture words (`tex$*` and `tex_state$*`: the triangle
 /// `texture_path` takes, whose reciprocal setup's divider computes on the way).
 #[derive(Clone, Copy, Debug)]
 pub struct Sent {

@@ -447,7 +447,7 @@ pub const UNITS: &[Unit] = &[
             Param {
                 name: "TEXTURE",
                 default: 0,
-                doc: "1: textured (N = 10, METHOD = 0): texture_path between span and a blending pixel_out, the texture words on tex$*, the texture memory on tex_mem$*, the cache's counters on counters$*",
+                doc: "1: textured (N = 10, METHOD = 0): texture_path between span and a blending pixel_out, the texture words on tex$* and tex_state$*, the texture memory on tex_mem$*, the cache's counters on counters$*",
             },
             EXACT,
         ],

@@ -4,21 +4,21 @@
 //! colour writes.
 //!
 //! ```text
-//!  inp$*, tex$* ──> cull_sort ──> RasterTopCore (setup, edge walk, span FIFO, span) ──┬─> texture_path ──┬─> pixel_out (blending) <──> mem$*
-//!    │                 │ verdict        │ handed, recip_mant/exp          fragments  │  (textured)      │   (mode, alpha)
-//!    │                 ▼                ▼                                            └─> alpha 255 ─────┘
-//!    └─> slot RAM ──> queue of passed slots ──> cur (the triangle being walked) ──> texture_path's tri$*
+//!  inp$*, tex$*, tex_state$* ──> cull_sort ──> RasterTopCore (setup, edge walk, span FIFO, span) ──┬─> texture_path ──┬─> pixel_out (blending) <──> mem$*
+//!    │                            │ verdict        │ handed, recip_mant/exp          fragments  │  (textured)      │   (mode, alpha)
+//!    │                            ▼                ▼                                            └─> alpha 255 ─────┘
+//!    └─> slot RAM ──> queue of passed slots ──> cur (the triangle being walked) ──> texture_path's tri$*, state$*
 //! ```
 //!
 //! **Texture words.** With each triangle (`inp`) comes its texture words (`tex$*`):
-//! `textured`, the vertices' s·q, t·q and q (`model::texture_setup::TexVtx::a`), the
-//! texture's state and the blend mode (`rtl::blend`'s code). They go into a slot of a
+//! `textured`, the vertices' s·q, t·q and q (`model::texture_setup::TexVtx::a`) and the
+//! blend mode (`rtl::blend`'s code), and the texture's state (`tex_state$*`). They go into a slot of a
 //! 16-word RAM with the vertices' x and y, and stay there until the next triangle is handed
 //! to the edge walk. `cull_sort`'s verdicts come in order: a passed triangle's slot joins
 //! the queue of triangles in setup; the edge walk's taking of a triangle (the core's
 //! `handed`) makes the queue's head the current slot (`cur`), whose words, with the
 //! OneOverArea that setup's divider computed for it (the core's `recip_mant`,
-//! `recip_exp`), are `texture_path`'s triangle (`tri$*`). The slots in use run from the
+//! `recip_exp`), are `texture_path`'s triangle (`tri$*`, `state$*`). The slots in use run from the
 //! current one (while its fragments flow), or else the queue's head, or else the next
 //! verdict's, to the next free one; a triangle is taken only while one slot is free beyond.
 //!
@@ -43,6 +43,7 @@ use crate::switch::Parts;
 use crate::texture_cache::{CacheCounters, TexMemory, ADDR as TADDR};
 use crate::texture_path::{TexturePath, SW};
 use crate::texture_setup::{QB, ST, XY};
+use crate::texture_unit::TextureState;
 use crate::Params;
 use blank::Blank;
 use rust_hdl::prelude::*;
@@ -56,7 +57,7 @@ const QB_LOG: usize = 3;
 const _: () = assert!(crate::n10::triangle_setup::COPIES_MAX < 1 << QB_LOG);
 const _: () = assert!(XY == crate::n10::cull_sort::XY, "texture_setup takes the input's x and y");
 /// A slot's word: x0, y0, x1, y1, x2, y2; s·q of the three vertices, then t·q; q; the
-/// state's fields (`SW` bits, `texture_path`'s order of `tri$ws` to `tri$env`); the mode.
+/// state's fields (`SW` bits, `texture_path`'s order of `state$ws` to `state$env`); the mode.
 const PW: usize = 6 * XY + 6 * ST + 3 * QB + SW + 3;
 /// Where each field of a slot word starts ([`AT`]'s order).
 const FIELDS: usize = 28;
@@ -89,18 +90,6 @@ crate::bundle! {
         In q0: Bits<QB>,
         In q1: Bits<QB>,
         In q2: Bits<QB>,
-        In ws: Bits<4>,
-        In hs: Bits<4>,
-        In levels: Bits<4>,
-        In base: Bits<TADDR>,
-        In min_linear: Bit,
-        In mag_linear: Bit,
-        In mip: Bits<2>,
-        In wrap_s: Bits<2>,
-        In wrap_t: Bits<2>,
-        In format: Bits<3>,
-        In gaussian: Bit,
-        In env: Bits<3>,
         /// The blend mode (`rtl::blend`'s code), textured or not.
         In mode: Bits<3>,
     }
@@ -116,6 +105,8 @@ pub struct RasterTopTextured {
     pub inp: TriangleSink,
     /// The triangle's texture words, with `inp`.
     pub tex: TexWords,
+    /// The triangle's texture state, with `inp` (`texture_unit`'s codes).
+    pub tex_state: TextureState,
     pub inp_last: Signal<In, Bit>,
     pub cull_back: Signal<In, Bit>,
     pub verdict: Verdict,
@@ -271,23 +262,23 @@ impl Logic for RasterTopTextured {
             | (bit_cast::<PW, QB>(self.tex.q0.val()) << self.at[12].val())
             | (bit_cast::<PW, QB>(self.tex.q1.val()) << self.at[13].val())
             | (bit_cast::<PW, QB>(self.tex.q2.val()) << self.at[14].val())
-            | (bit_cast::<PW, 4>(self.tex.ws.val()) << self.at[15].val())
-            | (bit_cast::<PW, 4>(self.tex.hs.val()) << self.at[16].val())
-            | (bit_cast::<PW, 4>(self.tex.levels.val()) << self.at[17].val())
-            | (bit_cast::<PW, TADDR>(self.tex.base.val()) << self.at[18].val())
-            | (bit_cast::<PW, 2>(self.tex.mip.val()) << self.at[21].val())
-            | (bit_cast::<PW, 2>(self.tex.wrap_s.val()) << self.at[22].val())
-            | (bit_cast::<PW, 2>(self.tex.wrap_t.val()) << self.at[23].val())
-            | (bit_cast::<PW, 3>(self.tex.format.val()) << self.at[24].val())
-            | (bit_cast::<PW, 3>(self.tex.env.val()) << self.at[26].val())
+            | (bit_cast::<PW, 4>(self.tex_state.ws.val()) << self.at[15].val())
+            | (bit_cast::<PW, 4>(self.tex_state.hs.val()) << self.at[16].val())
+            | (bit_cast::<PW, 4>(self.tex_state.levels.val()) << self.at[17].val())
+            | (bit_cast::<PW, TADDR>(self.tex_state.base.val()) << self.at[18].val())
+            | (bit_cast::<PW, 2>(self.tex_state.mip.val()) << self.at[21].val())
+            | (bit_cast::<PW, 2>(self.tex_state.wrap_s.val()) << self.at[22].val())
+            | (bit_cast::<PW, 2>(self.tex_state.wrap_t.val()) << self.at[23].val())
+            | (bit_cast::<PW, 3>(self.tex_state.format.val()) << self.at[24].val())
+            | (bit_cast::<PW, 3>(self.tex_state.env.val()) << self.at[26].val())
             | (bit_cast::<PW, 3>(self.tex.mode.val()) << self.at[27].val());
-        if self.tex.min_linear.val() {
+        if self.tex_state.min_linear.val() {
             self.word_in.next = self.word_in.val().replace_bit(self.at[19].val().index(), true);
         }
-        if self.tex.mag_linear.val() {
+        if self.tex_state.mag_linear.val() {
             self.word_in.next = self.word_in.val().replace_bit(self.at[20].val().index(), true);
         }
-        if self.tex.gaussian.val() {
+        if self.tex_state.gaussian.val() {
             self.word_in.next = self.word_in.val().replace_bit(self.at[25].val().index(), true);
         }
         self.slots.write_clock.next = self.clock.val();
@@ -355,18 +346,18 @@ impl Logic for RasterTopTextured {
         self.path.tri.q2.next = self.word.val().get_bits::<QB>(self.at[14].val().index());
         self.path.tri.mant.next = self.cur_mant.q.val();
         self.path.tri.exp.next = self.cur_exp.q.val();
-        self.path.tri.ws.next = self.word.val().get_bits::<4>(self.at[15].val().index());
-        self.path.tri.hs.next = self.word.val().get_bits::<4>(self.at[16].val().index());
-        self.path.tri.levels.next = self.word.val().get_bits::<4>(self.at[17].val().index());
-        self.path.tri.base.next = self.word.val().get_bits::<TADDR>(self.at[18].val().index());
-        self.path.tri.min_linear.next = self.word.val().get_bit(self.at[19].val().index());
-        self.path.tri.mag_linear.next = self.word.val().get_bit(self.at[20].val().index());
-        self.path.tri.mip.next = self.word.val().get_bits::<2>(self.at[21].val().index());
-        self.path.tri.wrap_s.next = self.word.val().get_bits::<2>(self.at[22].val().index());
-        self.path.tri.wrap_t.next = self.word.val().get_bits::<2>(self.at[23].val().index());
-        self.path.tri.format.next = self.word.val().get_bits::<3>(self.at[24].val().index());
-        self.path.tri.gaussian.next = self.word.val().get_bit(self.at[25].val().index());
-        self.path.tri.env.next = self.word.val().get_bits::<3>(self.at[26].val().index());
+        self.path.state.ws.next = self.word.val().get_bits::<4>(self.at[15].val().index());
+        self.path.state.hs.next = self.word.val().get_bits::<4>(self.at[16].val().index());
+        self.path.state.levels.next = self.word.val().get_bits::<4>(self.at[17].val().index());
+        self.path.state.base.next = self.word.val().get_bits::<TADDR>(self.at[18].val().index());
+        self.path.state.min_linear.next = self.word.val().get_bit(self.at[19].val().index());
+        self.path.state.mag_linear.next = self.word.val().get_bit(self.at[20].val().index());
+        self.path.state.mip.next = self.word.val().get_bits::<2>(self.at[21].val().index());
+        self.path.state.wrap_s.next = self.word.val().get_bits::<2>(self.at[22].val().index());
+        self.path.state.wrap_t.next = self.word.val().get_bits::<2>(self.at[23].val().index());
+        self.path.state.format.next = self.word.val().get_bits::<3>(self.at[24].val().index());
+        self.path.state.gaussian.next = self.word.val().get_bit(self.at[25].val().index());
+        self.path.state.env.next = self.word.val().get_bits::<3>(self.at[26].val().index());
         self.path.tri.mode.next = self.word.val().get_bits::<3>(self.at[27].val().index());
 
         // Fragments: a textured triangle's through texture_path (its first with inp_new),
@@ -422,7 +413,7 @@ crate::pins!(RasterTopTextured {
     clock: clock,
     inputs: [width, height, inp_last, cull_back, inp_flush],
     outputs: [done],
-    links: [inp, tex, mem, verdict, tex_mem, counters],
+    links: [inp, tex, tex_state, mem, verdict, tex_mem, counters],
 });
 
 /// `raster_top` with `TEXTURE = 1`: the textured rasterizer with `params["K"]` setup

@@ -5,17 +5,17 @@
 //!
 //! ```text
 //!  inp (a fragment) ──> texture_setup, pixel part ──> texture_unit ──> out (BlendPixelSource)
-//!  inp_new, tri$*        3 stages, en                  (64 sets, 2 ways,   x, y, z, mode from the
-//!  (a triangle's first   cf: the lit colour beside     4-word lines)       side RAM; rgb, alpha
-//!   fragment brings it)  it in 3 registers                                 from the unit
+//!  inp_new, tri$*,       3 stages, en                  (64 sets, 2 ways,   x, y, z, mode from the
+//!  state$* (a triangle's cf: the lit colour beside     4-word lines)       side RAM; rgb, alpha
+//!   first fragment       it in 3 registers                                 from the unit
 //!        └─ phase: RUN -> DRAIN -> SETUP -> FIRST -> RUN
 //! ```
 //!
 //! **Phases** (`phase`): RUN takes fragments while the pixel part moves (`en`: its last
 //! stage empty or `texture_unit` taking its pixel), unless the fragment offered is a
 //! triangle's first (`inp_new`), which sends the path to DRAIN. DRAIN waits for the pixel
-//! part to be empty (`in_px`, the pixels in it) and, when the triangle's state (`tri$ws` to
-//! `tri$env`, one word) differs from the one loaded (`loaded`), for `texture_unit` to be
+//! part to be empty (`in_px`, the pixels in it) and, when the triangle's state (`state$*`,
+//! one word) differs from the one loaded (`loaded`), for `texture_unit` to be
 //! idle; then, in one cycle, `texture_setup` starts on `tri$*` and `texture_unit` loads the
 //! state if it changed (SETUP). SETUP waits for `texture_setup`'s `done` (30 cycles); FIRST
 //! takes the waiting fragment when the pixel part moves, and goes back to RUN.
@@ -35,7 +35,7 @@ use crate::n10::links::{BlendPixelSource, PixelSink};
 use crate::n10::widths::{DEPTH, SCREEN};
 use crate::texture_cache::{CacheCounters, TexMemory, ADDR};
 use crate::texture_setup::{TextureSetup, EXP, MANT, QB, ST, XY};
-use crate::texture_unit::TextureUnit6424;
+use crate::texture_unit::{TextureState, TextureUnit6424};
 use crate::Params;
 use blank::Blank;
 use rust_hdl::prelude::*;
@@ -46,15 +46,15 @@ const SB: usize = 6;
 const _: () = assert!(crate::texture_setup::LATENCY + crate::texture_unit::IN_FLIGHT < 1 << SB);
 /// A side word: x, y, z, the blend mode.
 const SIDE: usize = 2 * SCREEN + DEPTH + 3;
-/// The state word: the 12 `tri$` state fields side by side.
+/// The state word: the 12 fields of `state` side by side.
 pub(crate) const SW: usize = 4 + 4 + 4 + ADDR + 1 + 1 + 2 + 2 + 2 + 3 + 1 + 3;
 /// The phases' codes.
 const PHASES: [u64; 4] = [0, 1, 2, 3];
 
 crate::bundle! {
-    /// A triangle as its first fragment brings it (`model::texture_path::TexTriangle`):
-    /// `texture_setup`'s per-triangle inputs, `texture_unit`'s state (its `st_*` codes) and
-    /// the blend mode (`rtl::blend`'s code).
+    /// A triangle as its first fragment brings it (`model::texture_path::TexTriangle`, its
+    /// texture state on `state`): `texture_setup`'s per-triangle inputs and the blend mode
+    /// (`rtl::blend`'s code).
     TexTri {
         In x0: Bits<XY>,
         In y0: Bits<XY>,
@@ -75,18 +75,6 @@ crate::bundle! {
         /// setup's divider has it.
         In mant: Bits<MANT>,
         In exp: Bits<EXP>,
-        In ws: Bits<4>,
-        In hs: Bits<4>,
-        In levels: Bits<4>,
-        In base: Bits<ADDR>,
-        In min_linear: Bit,
-        In mag_linear: Bit,
-        In mip: Bits<2>,
-        In wrap_s: Bits<2>,
-        In wrap_t: Bits<2>,
-        In format: Bits<3>,
-        In gaussian: Bit,
-        In env: Bits<3>,
         In mode: Bits<3>,
     }
 }
@@ -100,6 +88,8 @@ pub struct TexturePath {
     /// The fragment offered is its triangle's first: `tri` holds the triangle.
     pub inp_new: Signal<In, Bit>,
     pub tri: TexTri,
+    /// The triangle's texture state, with `tri`.
+    pub state: TextureState,
     /// A pulse: the texture cache invalidates every line.
     pub inp_flush: Signal<In, Bit>,
     /// The textured fragments: the environment's colour and alpha, the triangle's mode.
@@ -167,22 +157,22 @@ impl Logic for TexturePath {
         clock!(self, clock, setup, unit);
 
         // The triangle's state, one word, against the one loaded.
-        self.st_word.next = (bit_cast::<SW, 4>(self.tri.ws.val()) << 49)
-            | (bit_cast::<SW, 4>(self.tri.hs.val()) << 45)
-            | (bit_cast::<SW, 4>(self.tri.levels.val()) << 41)
-            | (bit_cast::<SW, ADDR>(self.tri.base.val()) << 15)
-            | (bit_cast::<SW, 2>(self.tri.mip.val()) << 11)
-            | (bit_cast::<SW, 2>(self.tri.wrap_s.val()) << 9)
-            | (bit_cast::<SW, 2>(self.tri.wrap_t.val()) << 7)
-            | (bit_cast::<SW, 3>(self.tri.format.val()) << 4)
-            | bit_cast::<SW, 3>(self.tri.env.val());
-        if self.tri.min_linear.val() {
+        self.st_word.next = (bit_cast::<SW, 4>(self.state.ws.val()) << 49)
+            | (bit_cast::<SW, 4>(self.state.hs.val()) << 45)
+            | (bit_cast::<SW, 4>(self.state.levels.val()) << 41)
+            | (bit_cast::<SW, ADDR>(self.state.base.val()) << 15)
+            | (bit_cast::<SW, 2>(self.state.mip.val()) << 11)
+            | (bit_cast::<SW, 2>(self.state.wrap_s.val()) << 9)
+            | (bit_cast::<SW, 2>(self.state.wrap_t.val()) << 7)
+            | (bit_cast::<SW, 3>(self.state.format.val()) << 4)
+            | bit_cast::<SW, 3>(self.state.env.val());
+        if self.state.min_linear.val() {
             self.st_word.next = self.st_word.val().replace_bit(14, true);
         }
-        if self.tri.mag_linear.val() {
+        if self.state.mag_linear.val() {
             self.st_word.next = self.st_word.val().replace_bit(13, true);
         }
-        if self.tri.gaussian.val() {
+        if self.state.gaussian.val() {
             self.st_word.next = self.st_word.val().replace_bit(3, true);
         }
         self.same.next = self.st_word.val() == self.loaded.q.val();
@@ -225,18 +215,7 @@ impl Logic for TexturePath {
         self.unit.inp_cf.next = self.cf[2].q.val();
         self.unit.inp_tag.next = 0.into();
         self.unit.st_load.next = self.start.val() & !self.same.val();
-        self.unit.st_ws.next = self.tri.ws.val();
-        self.unit.st_hs.next = self.tri.hs.val();
-        self.unit.st_levels.next = self.tri.levels.val();
-        self.unit.st_base.next = self.tri.base.val();
-        self.unit.st_min_linear.next = self.tri.min_linear.val();
-        self.unit.st_mag_linear.next = self.tri.mag_linear.val();
-        self.unit.st_mip.next = self.tri.mip.val();
-        self.unit.st_wrap_s.next = self.tri.wrap_s.val();
-        self.unit.st_wrap_t.next = self.tri.wrap_t.val();
-        self.unit.st_format.next = self.tri.format.val();
-        self.unit.st_gaussian.next = self.tri.gaussian.val();
-        self.unit.st_env.next = self.tri.env.val();
+        TextureState::link(&mut self.state, &mut self.unit.st);
         self.unit.inp_flush.next = self.inp_flush.val();
         self.unit.out_ready.next = self.out.ready.val();
         TexMemory::link(&mut self.mem, &mut self.unit.mem);
@@ -319,7 +298,7 @@ crate::pins!(TexturePath {
     clock: clock,
     inputs: [inp_new, inp_flush],
     outputs: [idle],
-    links: [inp, tri, out, mem, counters],
+    links: [inp, tri, state, out, mem, counters],
 });
 
 /// `UNITS` entry: the path, the level-of-detail rule `params["EXACT"]`.

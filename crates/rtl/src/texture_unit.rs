@@ -77,7 +77,7 @@
 //!
 //! # State
 //!
-//! The texture's state is registers (`st_*`), loaded by `st_load` (the cycle it is high,
+//! The texture's state is registers (`st$*`, [`TextureState`]), loaded by `st_load` (the cycle it is high,
 //! `inp_ready` is low), read by every stage as its pixel passes: load it only while `idle`
 //! (no pixel in flight), once a texture, not per pixel. The level-of-detail rule is the
 //! parameter `EXACT`, as `texture_coords` has it. The triangle's gradients come with each
@@ -119,6 +119,29 @@ use crate::Params;
 use blank::Blank;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::RAM;
+
+crate::bundle! {
+    /// A texture's state (`model::texture_unit::TexState` in the unit's codes), as
+    /// `texture_unit` loads it (`st`), `texture_path` takes it with each triangle (`state`) and
+    /// the textured `raster_top` with each triangle sent (`tex_state`): log2 of its sides,
+    /// its levels (1 to 13), its base word address, `texture_address`'s codes (filters 1
+    /// linear; mip 0 none, 1 nearest, 2 linear; wrap 0 repeat, 1 mirrored repeat, 2 clamp to
+    /// edge), `texture_filter`'s (format, Gaussian weights, environment).
+    TextureState {
+        In ws: Bits<4>,
+        In hs: Bits<4>,
+        In levels: Bits<4>,
+        In base: Bits<ADDR>,
+        In min_linear: Bit,
+        In mag_linear: Bit,
+        In mip: Bits<2>,
+        In wrap_s: Bits<2>,
+        In wrap_t: Bits<2>,
+        In format: Bits<3>,
+        In gaussian: Bit,
+        In env: Bits<3>,
+    }
+}
 
 /// Input to output of a one-level pixel when nothing stalls: coords, texture_address, the
 /// cache's hit latency, the filter.
@@ -190,24 +213,10 @@ pub struct TextureUnit<const SB: usize, const DA: usize, const W: usize, const T
     pub inp_dq_y: Signal<In, Bits<DQ>>,
     pub inp_cf: Signal<In, Bits<24>>,
     pub inp_tag: Signal<In, Bits<32>>,
-    /// High for a cycle: the state registers take `st_*` (only while `idle`).
+    /// High for a cycle: the state registers take `st` (only while `idle`).
     pub st_load: Signal<In, Bit>,
-    /// The texture: log2 of its sides, its levels (1 to 13), its base word address,
-    /// `texture_address`'s codes (filters 1 linear; mip 0 none, 1 nearest, 2 linear; wrap
-    /// 0 repeat, 1 mirrored repeat, 2 clamp to edge), `texture_filter`'s (format, Gaussian
-    /// weights, environment).
-    pub st_ws: Signal<In, Bits<4>>,
-    pub st_hs: Signal<In, Bits<4>>,
-    pub st_levels: Signal<In, Bits<4>>,
-    pub st_base: Signal<In, Bits<ADDR>>,
-    pub st_min_linear: Signal<In, Bit>,
-    pub st_mag_linear: Signal<In, Bit>,
-    pub st_mip: Signal<In, Bits<2>>,
-    pub st_wrap_s: Signal<In, Bits<2>>,
-    pub st_wrap_t: Signal<In, Bits<2>>,
-    pub st_format: Signal<In, Bits<3>>,
-    pub st_gaussian: Signal<In, Bit>,
-    pub st_env: Signal<In, Bits<3>>,
+    /// The texture's state.
+    pub st: TextureState,
     /// A pulse: the cache invalidates every line.
     pub inp_flush: Signal<In, Bit>,
     /// A textured pixel: its colour (R 31..24, G 23..16, B 15..8, A 7..0) and tag, held
@@ -314,18 +323,18 @@ impl<const SB: usize, const DA: usize, const W: usize, const TAG: usize, const T
             self.pair_words[k].d.next = self.pair_words[k].q.val();
         }
         if self.st_load.val() {
-            self.r_ws.d.next = self.st_ws.val();
-            self.r_hs.d.next = self.st_hs.val();
-            self.r_levels.d.next = self.st_levels.val();
-            self.r_base.d.next = self.st_base.val();
-            self.r_min_linear.d.next = self.st_min_linear.val();
-            self.r_mag_linear.d.next = self.st_mag_linear.val();
-            self.r_mip.d.next = self.st_mip.val();
-            self.r_wrap_s.d.next = self.st_wrap_s.val();
-            self.r_wrap_t.d.next = self.st_wrap_t.val();
-            self.r_format.d.next = self.st_format.val();
-            self.r_gaussian.d.next = self.st_gaussian.val();
-            self.r_env.d.next = self.st_env.val();
+            self.r_ws.d.next = self.st.ws.val();
+            self.r_hs.d.next = self.st.hs.val();
+            self.r_levels.d.next = self.st.levels.val();
+            self.r_base.d.next = self.st.base.val();
+            self.r_min_linear.d.next = self.st.min_linear.val();
+            self.r_mag_linear.d.next = self.st.mag_linear.val();
+            self.r_mip.d.next = self.st.mip.val();
+            self.r_wrap_s.d.next = self.st.wrap_s.val();
+            self.r_wrap_t.d.next = self.st.wrap_t.val();
+            self.r_format.d.next = self.st.format.val();
+            self.r_gaussian.d.next = self.st.gaussian.val();
+            self.r_env.d.next = self.st.env.val();
         }
 
         // The filter moves on unless its pixel waits at the output.
@@ -491,11 +500,10 @@ crate::pins!(impl[const SB: usize, const DA: usize, const W: usize, const TAG: u
     clock: clock,
     inputs: [
         inp_valid, inp_sq, inp_tq, inp_q, inp_dsq_x, inp_dsq_y, inp_dtq_x, inp_dtq_y, inp_dq_x, inp_dq_y, inp_cf,
-        inp_tag, st_load, st_ws, st_hs, st_levels, st_base, st_min_linear, st_mag_linear, st_mip, st_wrap_s,
-        st_wrap_t, st_format, st_gaussian, st_env, inp_flush, out_ready,
+        inp_tag, st_load, inp_flush, out_ready,
     ],
     outputs: [inp_ready, out_valid, out_rgba, out_tag, idle],
-    links: [mem, counters],
+    links: [st, mem, counters],
 });
 
 /// The cache geometries the unit is built for: (SETS, WAYS, LINE) and its type.

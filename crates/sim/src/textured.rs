@@ -31,28 +31,29 @@ fn bit(b: bool) -> Value {
     Value::new(1, b.into())
 }
 
-/// A state's `st_*` pins (`texture_unit`'s codes of `TexState`; `texture_path`'s `tri$*`
-/// and the textured `raster_top`'s `tex$*` have the same fields).
+/// A state's `st$*` pins (`texture_unit`'s codes of `TexState` on `rtl::texture_unit::TextureState`;
+/// `texture_path`'s `state$*` and the textured `raster_top`'s `tex_state$*` are the same
+/// bundle).
 pub fn state_pins(s: &TexState) -> Vec<(&'static str, Value)> {
     let code = |w: Wrap| WRAPS.iter().position(|x| *x == w).unwrap() as u128;
     vec![
-        ("st_ws", Value::new(4, s.size_log2[0].into())),
-        ("st_hs", Value::new(4, s.size_log2[1].into())),
-        ("st_levels", Value::new(4, s.levels.into())),
-        ("st_base", Value::new(26, s.base.into())),
-        ("st_min_linear", bit(s.sampler.min == Filter::Linear)),
-        ("st_mag_linear", bit(s.sampler.mag == Filter::Linear)),
-        ("st_mip", Value::new(2, MIPS.iter().position(|m| *m == s.sampler.mip).unwrap() as u128)),
-        ("st_wrap_s", Value::new(2, code(s.sampler.wrap_s))),
-        ("st_wrap_t", Value::new(2, code(s.sampler.wrap_t))),
-        ("st_format", Value::new(3, TexelFormat::ALL.iter().position(|f| *f == s.format).unwrap() as u128)),
-        ("st_gaussian", bit(s.sampler.weights == Weights::Gaussian)),
-        ("st_env", Value::new(3, ENVS.iter().position(|e| *e == s.env).unwrap() as u128)),
+        ("st$ws", Value::new(4, s.size_log2[0].into())),
+        ("st$hs", Value::new(4, s.size_log2[1].into())),
+        ("st$levels", Value::new(4, s.levels.into())),
+        ("st$base", Value::new(26, s.base.into())),
+        ("st$min_linear", bit(s.sampler.min == Filter::Linear)),
+        ("st$mag_linear", bit(s.sampler.mag == Filter::Linear)),
+        ("st$mip", Value::new(2, MIPS.iter().position(|m| *m == s.sampler.mip).unwrap() as u128)),
+        ("st$wrap_s", Value::new(2, code(s.sampler.wrap_s))),
+        ("st$wrap_t", Value::new(2, code(s.sampler.wrap_t))),
+        ("st$format", Value::new(3, TexelFormat::ALL.iter().position(|f| *f == s.format).unwrap() as u128)),
+        ("st$gaussian", bit(s.sampler.weights == Weights::Gaussian)),
+        ("st$env", Value::new(3, ENVS.iter().position(|e| *e == s.env).unwrap() as u128)),
     ]
 }
 
-/// Triangle `s` on the pins `inp$*` and `tex$*` (an untextured triangle's texture words but
-/// `textured` and `mode` are left as they were).
+/// Triangle `s` on the pins `inp$*`, `tex$*` and `tex_state$*` (an untextured triangle's
+/// texture words but `textured` and `mode` are left as they were).
 pub fn triangle_pins(s: &Sent) -> Vec<(String, Value)> {
     use rtl::texture_setup::{QB, ST};
     let mut pins = crate::frame::triangle_pins(&BUILD, &s.v);
@@ -65,7 +66,7 @@ pub fn triangle_pins(s: &Sent) -> Vec<(String, Value)> {
             pins.push((format!("tex$q{k}"), raw(QB, v.a[2])));
         }
         let state = state_pins(&t.state).into_iter();
-        pins.extend(state.map(|(n, v)| (format!("tex${}", n.strip_prefix("st_").expect("st_ pins")), v)));
+        pins.extend(state.map(|(n, v)| (format!("tex_state${}", n.strip_prefix("st$").expect("st$ pins")), v)));
     }
     pins
 }
