@@ -230,7 +230,7 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
     reg  [20:0] path$tri$q2;
     reg  [24:0] path$tri$mant;
     reg  [5:0] path$tri$exp;
-    reg  [2:0] path$tri$mode;
+    reg  [2:0] path$tri_mode;
     reg  [3:0] path$state$ws;
     reg  [3:0] path$state$hs;
     reg  [3:0] path$state$levels;
@@ -477,7 +477,7 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
         .tri$q2(path$tri$q2),
         .tri$mant(path$tri$mant),
         .tri$exp(path$tri$exp),
-        .tri$mode(path$tri$mode),
+        .tri_mode(path$tri_mode),
         .state$ws(path$state$ws),
         .state$hs(path$state$hs),
         .state$levels(path$state$levels),
@@ -853,7 +853,7 @@ module raster_top(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v
         path$state$format = word[(at$24)+:(3)];
         path$state$gaussian = word[at$25];
         path$state$env = word[(at$26)+:(3)];
-        path$tri$mode = word[(at$27)+:(3)];
+        path$tri_mode = word[(at$27)+:(3)];
         path$inp$x = core$out$x;
         path$inp$y = core$out$y;
         path$inp$z = core$out$z;
@@ -50013,7 +50013,7 @@ module raster_top$last_in(d,q,clock);
 endmodule // raster_top$last_in
 
 
-module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,inp_new,tri$x0,tri$y0,tri$x1,tri$y1,tri$x2,tri$y2,tri$sq0,tri$sq1,tri$sq2,tri$tq0,tri$tq1,tri$tq2,tri$q0,tri$q1,tri$q2,tri$mant,tri$exp,tri$mode,state$ws,state$hs,state$levels,state$base,state$min_linear,state$mag_linear,state$mip,state$wrap_s,state$wrap_t,state$format,state$gaussian,state$env,inp_flush,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,out$alpha,out$mode,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
+module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$rgb1,inp$rgb2,inp_new,tri$x0,tri$y0,tri$x1,tri$y1,tri$x2,tri$y2,tri$sq0,tri$sq1,tri$sq2,tri$tq0,tri$tq1,tri$tq2,tri$q0,tri$q1,tri$q2,tri$mant,tri$exp,tri_mode,state$ws,state$hs,state$levels,state$base,state$min_linear,state$mag_linear,state$mip,state$wrap_s,state$wrap_t,state$format,state$gaussian,state$env,inp_flush,out$valid,out$ready,out$x,out$y,out$z,out$rgb0,out$rgb1,out$rgb2,out$alpha,out$mode,mem$valid,mem$addr,mem$ack,mem$rvalid,mem$rdata,counters$hits,counters$misses,counters$fills,idle);
     
     // Module arguments
     input wire  clock;
@@ -50043,7 +50043,7 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
     input wire  [20:0] tri$q2;
     input wire  [24:0] tri$mant;
     input wire  [5:0] tri$exp;
-    input wire  [2:0] tri$mode;
+    input wire  [2:0] tri_mode;
     input wire  [3:0] state$ws;
     input wire  [3:0] state$hs;
     input wire  [3:0] state$levels;
@@ -50089,23 +50089,6 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
     // Stub signals
     reg  setup$clock;
     reg  setup$start;
-    reg  [15:0] setup$tri_x0;
-    reg  [15:0] setup$tri_y0;
-    reg  [15:0] setup$tri_x1;
-    reg  [15:0] setup$tri_y1;
-    reg  [15:0] setup$tri_x2;
-    reg  [15:0] setup$tri_y2;
-    reg  [28:0] setup$tri_sq0;
-    reg  [28:0] setup$tri_sq1;
-    reg  [28:0] setup$tri_sq2;
-    reg  [28:0] setup$tri_tq0;
-    reg  [28:0] setup$tri_tq1;
-    reg  [28:0] setup$tri_tq2;
-    reg  [20:0] setup$tri_q0;
-    reg  [20:0] setup$tri_q1;
-    reg  [20:0] setup$tri_q2;
-    reg  [24:0] setup$tri_mant;
-    reg  [5:0] setup$tri_exp;
     wire  setup$done;
     wire  [32:0] setup$dsq_x;
     wire  [32:0] setup$dsq_y;
@@ -50187,23 +50170,23 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
     raster_top$path$setup setup(
         .clock(setup$clock),
         .start(setup$start),
-        .tri_x0(setup$tri_x0),
-        .tri_y0(setup$tri_y0),
-        .tri_x1(setup$tri_x1),
-        .tri_y1(setup$tri_y1),
-        .tri_x2(setup$tri_x2),
-        .tri_y2(setup$tri_y2),
-        .tri_sq0(setup$tri_sq0),
-        .tri_sq1(setup$tri_sq1),
-        .tri_sq2(setup$tri_sq2),
-        .tri_tq0(setup$tri_tq0),
-        .tri_tq1(setup$tri_tq1),
-        .tri_tq2(setup$tri_tq2),
-        .tri_q0(setup$tri_q0),
-        .tri_q1(setup$tri_q1),
-        .tri_q2(setup$tri_q2),
-        .tri_mant(setup$tri_mant),
-        .tri_exp(setup$tri_exp),
+        .tri$x0(tri$x0),
+        .tri$y0(tri$y0),
+        .tri$x1(tri$x1),
+        .tri$y1(tri$y1),
+        .tri$x2(tri$x2),
+        .tri$y2(tri$y2),
+        .tri$sq0(tri$sq0),
+        .tri$sq1(tri$sq1),
+        .tri$sq2(tri$sq2),
+        .tri$tq0(tri$tq0),
+        .tri$tq1(tri$tq1),
+        .tri$tq2(tri$tq2),
+        .tri$q0(tri$q0),
+        .tri$q1(tri$q1),
+        .tri$q2(tri$q2),
+        .tri$mant(tri$mant),
+        .tri$exp(tri$exp),
         .done(setup$done),
         .dsq_x(setup$dsq_x),
         .dsq_y(setup$dsq_y),
@@ -50346,23 +50329,6 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
         same = st_word == loaded$q;
         start = (phase$q == drain) & (in_px$q == 32'h0) & (same | unit$idle);
         setup$start = start;
-        setup$tri_x0 = tri$x0;
-        setup$tri_y0 = tri$y0;
-        setup$tri_x1 = tri$x1;
-        setup$tri_y1 = tri$y1;
-        setup$tri_x2 = tri$x2;
-        setup$tri_y2 = tri$y2;
-        setup$tri_sq0 = tri$sq0;
-        setup$tri_sq1 = tri$sq1;
-        setup$tri_sq2 = tri$sq2;
-        setup$tri_tq0 = tri$tq0;
-        setup$tri_tq1 = tri$tq1;
-        setup$tri_tq2 = tri$tq2;
-        setup$tri_q0 = tri$q0;
-        setup$tri_q1 = tri$q1;
-        setup$tri_q2 = tri$q2;
-        setup$tri_mant = tri$mant;
-        setup$tri_exp = tri$exp;
         unit$inp_valid = setup$out_valid;
         unit$inp_sq = setup$out_sq;
         unit$inp_tq = setup$out_tq;
@@ -50410,7 +50376,7 @@ module raster_top$path(clock,inp$valid,inp$ready,inp$x,inp$y,inp$z,inp$rgb0,inp$
         if ((phase$q == first) & accept) begin
             phase$d = run;
         end
-        side_in = (((inp$x) & 39'h7fffffffff) << at_x) | (((inp$y) & 39'h7fffffffff) << at_y) | (((inp$z) & 39'h7fffffffff) << at_z) | ((tri$mode) & 39'h7fffffffff);
+        side_in = (((inp$x) & 39'h7fffffffff) << at_x) | (((inp$y) & 39'h7fffffffff) << at_y) | (((inp$z) & 39'h7fffffffff) << at_z) | ((tri_mode) & 39'h7fffffffff);
         side$write_clock = clock;
         side$read_clock = clock;
         side$write_enable = accept;
@@ -50572,28 +50538,28 @@ module raster_top$path$rt(d,q,clock);
 endmodule // raster_top$path$rt
 
 
-module raster_top$path$setup(clock,start,tri_x0,tri_y0,tri_x1,tri_y1,tri_x2,tri_y2,tri_sq0,tri_sq1,tri_sq2,tri_tq0,tri_tq1,tri_tq2,tri_q0,tri_q1,tri_q2,tri_mant,tri_exp,done,dsq_x,dsq_y,dtq_x,dtq_y,dq_x,dq_y,en,inp_valid,inp_x,inp_y,out_valid,out_sq,out_tq,out_q);
+module raster_top$path$setup(clock,start,tri$x0,tri$y0,tri$x1,tri$y1,tri$x2,tri$y2,tri$sq0,tri$sq1,tri$sq2,tri$tq0,tri$tq1,tri$tq2,tri$q0,tri$q1,tri$q2,tri$mant,tri$exp,done,dsq_x,dsq_y,dtq_x,dtq_y,dq_x,dq_y,en,inp_valid,inp_x,inp_y,out_valid,out_sq,out_tq,out_q);
     
     // Module arguments
     input wire  clock;
     input wire  start;
-    input wire  [15:0] tri_x0;
-    input wire  [15:0] tri_y0;
-    input wire  [15:0] tri_x1;
-    input wire  [15:0] tri_y1;
-    input wire  [15:0] tri_x2;
-    input wire  [15:0] tri_y2;
-    input wire  [28:0] tri_sq0;
-    input wire  [28:0] tri_sq1;
-    input wire  [28:0] tri_sq2;
-    input wire  [28:0] tri_tq0;
-    input wire  [28:0] tri_tq1;
-    input wire  [28:0] tri_tq2;
-    input wire  [20:0] tri_q0;
-    input wire  [20:0] tri_q1;
-    input wire  [20:0] tri_q2;
-    input wire  [24:0] tri_mant;
-    input wire  [5:0] tri_exp;
+    input wire  [15:0] tri$x0;
+    input wire  [15:0] tri$y0;
+    input wire  [15:0] tri$x1;
+    input wire  [15:0] tri$y1;
+    input wire  [15:0] tri$x2;
+    input wire  [15:0] tri$y2;
+    input wire  [28:0] tri$sq0;
+    input wire  [28:0] tri$sq1;
+    input wire  [28:0] tri$sq2;
+    input wire  [28:0] tri$tq0;
+    input wire  [28:0] tri$tq1;
+    input wire  [28:0] tri$tq2;
+    input wire  [20:0] tri$q0;
+    input wire  [20:0] tri$q1;
+    input wire  [20:0] tri$q2;
+    input wire  [24:0] tri$mant;
+    input wire  [5:0] tri$exp;
     output reg  done;
     output reg  [32:0] dsq_x;
     output reg  [32:0] dsq_y;
@@ -51297,18 +51263,18 @@ module raster_top$path$setup(clock,start,tri_x0,tri_y0,tri_x1,tri_y1,tri_x2,tri_
         d2$2$clock = clock;
         d1$2$d = d1$2$q;
         d2$2$d = d2$2$q;
-        sx_pos$0$x = tri_x0;
-        sx_pos$1$x = tri_y0;
-        sx_pos$2$x = tri_x1;
-        sx_pos$3$x = tri_y1;
-        sx_pos$4$x = tri_x2;
-        sx_pos$5$x = tri_y2;
-        sx_st$0$x = tri_sq0;
-        sx_st$1$x = tri_sq1;
-        sx_st$2$x = tri_sq2;
-        sx_st$3$x = tri_tq0;
-        sx_st$4$x = tri_tq1;
-        sx_st$5$x = tri_tq2;
+        sx_pos$0$x = tri$x0;
+        sx_pos$1$x = tri$y0;
+        sx_pos$2$x = tri$x1;
+        sx_pos$3$x = tri$y1;
+        sx_pos$4$x = tri$x2;
+        sx_pos$5$x = tri$y2;
+        sx_st$0$x = tri$sq0;
+        sx_st$1$x = tri$sq1;
+        sx_st$2$x = tri$sq2;
+        sx_st$3$x = tri$tq0;
+        sx_st$4$x = tri$tq1;
+        sx_st$5$x = tri$tq2;
         sx_e1x$x = e1x$q;
         sx_e2x$x = e2x$q;
         sel_d = 32'h0;
@@ -51461,15 +51427,15 @@ module raster_top$path$setup(clock,start,tri_x0,tri_y0,tri_x1,tri_y1,tri_x2,tri_
             d2$0$d = sx_st$2$y - sx_st$0$y;
             d1$1$d = sx_st$4$y - sx_st$3$y;
             d2$1$d = sx_st$5$y - sx_st$3$y;
-            d1$2$d = ((tri_q1) & 30'h3fffffff) - ((tri_q0) & 30'h3fffffff);
-            d2$2$d = ((tri_q2) & 30'h3fffffff) - ((tri_q0) & 30'h3fffffff);
-            mant$d = tri_mant;
-            exp$d = tri_exp;
+            d1$2$d = ((tri$q1) & 30'h3fffffff) - ((tri$q0) & 30'h3fffffff);
+            d2$2$d = ((tri$q2) & 30'h3fffffff) - ((tri$q0) & 30'h3fffffff);
+            mant$d = tri$mant;
+            exp$d = tri$exp;
             ox$d = ((sx_pos$0$y) & 18'h3ffff);
             oy$d = ((sx_pos$1$y) & 18'h3ffff);
             a0_sq$d = ((sx_st$0$y) & 47'h7fffffffffff) << rs;
             a0_tq$d = ((sx_st$3$y) & 47'h7fffffffffff) << rs;
-            a0_q$d = ((tri_q0) & 40'hffffffffff) << rs;
+            a0_q$d = ((tri$q0) & 40'hffffffffff) << rs;
         end
         done = done_r$q;
         dsq_x = lod_sq$0$q;

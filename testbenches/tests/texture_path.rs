@@ -78,13 +78,12 @@ fn pins(i: &PathIn, recip: &model::divider::Recip) -> Vec<(String, Value)> {
         ("inp$rgb1".into(), Value::new(8, p.rgb[1].into())),
         ("inp$rgb2".into(), Value::new(8, p.rgb[2].into())),
         ("inp_new".into(), bit(i.frag.new)),
-        ("tri$mode".into(), Value::new(3, MODES.iter().position(|m| *m == t.blend).unwrap() as u128)),
+        ("tri_mode".into(), Value::new(3, MODES.iter().position(|m| *m == t.blend).unwrap() as u128)),
         ("inp_flush".into(), bit(i.flush)),
         ("out$ready".into(), bit(i.out_ready)),
     ];
-    // texture_setup's `tri_*` are the link `tri`'s fields; texture_unit's `st$*` are `state$*`.
-    let tri =
-        start_pins(&t.v, recip).into_iter().filter_map(|(n, v)| Some((format!("tri${}", n.strip_prefix("tri_")?), v)));
+    // texture_setup's `tri$*` are the path's; texture_unit's `st$*` are its `state$*`.
+    let tri = start_pins(&t.v, recip).into_iter().filter(|(n, _)| *n != "start").map(|(n, v)| (n.to_string(), v));
     let state = state_pins(&t.state).into_iter().map(|(n, v)| (format!("state${}", n.strip_prefix("st$").unwrap()), v));
     pins.extend(tri.chain(state));
     pins

@@ -69,11 +69,11 @@ pub(crate) fn setup(tri: &Triangle) -> Option<([TexVtx; 3], TexturePlanes, model
 
 pub(crate) fn start_pins(tv: &[TexVtx; 3], r: &model::divider::Recip) -> Vec<(&'static str, Value)> {
     const NAMES: [[&str; 5]; 3] = [
-        ["tri_x0", "tri_y0", "tri_sq0", "tri_tq0", "tri_q0"],
-        ["tri_x1", "tri_y1", "tri_sq1", "tri_tq1", "tri_q1"],
-        ["tri_x2", "tri_y2", "tri_sq2", "tri_tq2", "tri_q2"],
+        ["tri$x0", "tri$y0", "tri$sq0", "tri$tq0", "tri$q0"],
+        ["tri$x1", "tri$y1", "tri$sq1", "tri$tq1", "tri$q1"],
+        ["tri$x2", "tri$y2", "tri$sq2", "tri$tq2", "tri$q2"],
     ];
-    let mut pins = vec![("start", bit(true)), ("tri_mant", raw(MANT, r.mant)), ("tri_exp", raw(EXP, r.exp.into()))];
+    let mut pins = vec![("start", bit(true)), ("tri$mant", raw(MANT, r.mant)), ("tri$exp", raw(EXP, r.exp.into()))];
     for (v, n) in tv.iter().zip(NAMES) {
         pins.extend([
             (n[0], raw(XY, v.x)),

@@ -18,7 +18,7 @@
 //! the queue of triangles in setup; the edge walk's taking of a triangle (the core's
 //! `handed`) makes the queue's head the current slot (`cur`), whose words, with the
 //! OneOverArea that setup's divider computed for it (the core's `recip_mant`,
-//! `recip_exp`), are `texture_path`'s triangle (`tri$*`, `state$*`). The slots in use run from the
+//! `recip_exp`), are `texture_path`'s triangle (`tri$*`, `tri_mode`, `state$*`). The slots in use run from the
 //! current one (while its fragments flow), or else the queue's head, or else the next
 //! verdict's, to the next free one; a triangle is taken only while one slot is free beyond.
 //!
@@ -358,7 +358,7 @@ impl Logic for RasterTopTextured {
         self.path.state.format.next = self.word.val().get_bits::<3>(self.at[24].val().index());
         self.path.state.gaussian.next = self.word.val().get_bit(self.at[25].val().index());
         self.path.state.env.next = self.word.val().get_bits::<3>(self.at[26].val().index());
-        self.path.tri.mode.next = self.word.val().get_bits::<3>(self.at[27].val().index());
+        self.path.tri_mode.next = self.word.val().get_bits::<3>(self.at[27].val().index());
 
         // Fragments: a textured triangle's through texture_path (its first with inp_new),
         // an untextured one's straight to pixel_out with alpha 255.

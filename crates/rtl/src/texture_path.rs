@@ -34,7 +34,7 @@ use crate::emit::{emit_unit, Emitted};
 use crate::n10::links::{BlendPixelSource, PixelSink};
 use crate::n10::widths::{DEPTH, SCREEN};
 use crate::texture_cache::{CacheCounters, TexMemory, ADDR};
-use crate::texture_setup::{TextureSetup, EXP, MANT, QB, ST, XY};
+use crate::texture_setup::{TexTri, TextureSetup};
 use crate::texture_unit::{TextureState, TextureUnit6424};
 use crate::Params;
 use blank::Blank;
@@ -51,34 +51,6 @@ pub(crate) const SW: usize = 4 + 4 + 4 + ADDR + 1 + 1 + 2 + 2 + 2 + 3 + 1 + 3;
 /// The phases' codes.
 const PHASES: [u64; 4] = [0, 1, 2, 3];
 
-crate::bundle! {
-    /// A triangle as its first fragment brings it (`model::texture_path::TexTriangle`, its
-    /// texture state on `state`): `texture_setup`'s per-triangle inputs and the blend mode
-    /// (`rtl::blend`'s code).
-    TexTri {
-        In x0: Bits<XY>,
-        In y0: Bits<XY>,
-        In x1: Bits<XY>,
-        In y1: Bits<XY>,
-        In x2: Bits<XY>,
-        In y2: Bits<XY>,
-        In sq0: Bits<ST>,
-        In sq1: Bits<ST>,
-        In sq2: Bits<ST>,
-        In tq0: Bits<ST>,
-        In tq1: Bits<ST>,
-        In tq2: Bits<ST>,
-        In q0: Bits<QB>,
-        In q1: Bits<QB>,
-        In q2: Bits<QB>,
-        /// The reciprocal of |twice the area| (`model::divider::reciprocal`), as triangle
-        /// setup's divider has it.
-        In mant: Bits<MANT>,
-        In exp: Bits<EXP>,
-        In mode: Bits<3>,
-    }
-}
-
 /// The texture path: see the module documentation.
 #[derive(LogicBlock, Blank)]
 pub struct TexturePath {
@@ -87,7 +59,10 @@ pub struct TexturePath {
     pub inp: PixelSink,
     /// The fragment offered is its triangle's first: `tri` holds the triangle.
     pub inp_new: Signal<In, Bit>,
+    /// The triangle (`model::texture_path::TexTriangle`) and its blend mode (`rtl::blend`'s
+    /// code), with a first fragment.
     pub tri: TexTri,
+    pub tri_mode: Signal<In, Bits<3>>,
     /// The triangle's texture state, with `tri`.
     pub state: TextureState,
     /// A pulse: the texture cache invalidates every line.
@@ -182,23 +157,7 @@ impl Logic for TexturePath {
 
         // texture_setup: the triangle at the start, its pixel part moving with `en`.
         self.setup.start.next = self.start.val();
-        self.setup.tri_x0.next = self.tri.x0.val();
-        self.setup.tri_y0.next = self.tri.y0.val();
-        self.setup.tri_x1.next = self.tri.x1.val();
-        self.setup.tri_y1.next = self.tri.y1.val();
-        self.setup.tri_x2.next = self.tri.x2.val();
-        self.setup.tri_y2.next = self.tri.y2.val();
-        self.setup.tri_sq0.next = self.tri.sq0.val();
-        self.setup.tri_sq1.next = self.tri.sq1.val();
-        self.setup.tri_sq2.next = self.tri.sq2.val();
-        self.setup.tri_tq0.next = self.tri.tq0.val();
-        self.setup.tri_tq1.next = self.tri.tq1.val();
-        self.setup.tri_tq2.next = self.tri.tq2.val();
-        self.setup.tri_q0.next = self.tri.q0.val();
-        self.setup.tri_q1.next = self.tri.q1.val();
-        self.setup.tri_q2.next = self.tri.q2.val();
-        self.setup.tri_mant.next = self.tri.mant.val();
-        self.setup.tri_exp.next = self.tri.exp.val();
+        TexTri::link(&mut self.tri, &mut self.setup.tri);
 
         // texture_unit: the pixel part's last stage with the triangle's LOD gradients and
         // the lit colour; the state when it changes.
@@ -265,7 +224,7 @@ impl Logic for TexturePath {
         self.side_in.next = (bit_cast::<SIDE, SCREEN>(self.inp.x.val()) << self.at_x.val())
             | (bit_cast::<SIDE, SCREEN>(self.inp.y.val()) << self.at_y.val())
             | (bit_cast::<SIDE, DEPTH>(self.inp.z.val()) << self.at_z.val())
-            | bit_cast::<SIDE, 3>(self.tri.mode.val());
+            | bit_cast::<SIDE, 3>(self.tri_mode.val());
         self.side.write_clock.next = self.clock.val();
         self.side.read_clock.next = self.clock.val();
         self.side.write_enable.next = self.accept.val();
@@ -296,7 +255,7 @@ impl Logic for TexturePath {
 
 crate::pins!(TexturePath {
     clock: clock,
-    inputs: [inp_new, inp_flush],
+    inputs: [inp_new, tri_mode, inp_flush],
     outputs: [idle],
     links: [inp, tri, state, out, mem, counters],
 });

@@ -4,9 +4,9 @@
 //! formats (`crate::n10::FORMATS`) and `fx::TexFormats::DEFAULT`: its module doc is the
 //! specification.
 //!
-//! **Per triangle** (`start`, then `done`). The three vertices (`tri_x*`, `tri_y*` raw in
-//! `xy`; `tri_sq*`, `tri_tq*` in `st`; `tri_q*` in `q`) and the reciprocal of twice the area,
-//! `tri_mant` (`ooa`) and `tri_exp`: `model::divider::reciprocal(|area2|)`, which triangle
+//! **Per triangle** (`start`, then `done`). The three vertices (`tri$x*`, `tri$y*` raw in
+//! `xy`; `tri$sq*`, `tri$tq*` in `st`; `tri$q*` in `q`) and the reciprocal of twice the area,
+//! `tri$mant` (`ooa`) and `tri$exp` ([`TexTri`]): `model::divider::reciprocal(|area2|)`, which triangle
 //! setup's shared divider already computes for the same triangle (its OneOverArea), so it
 //! is an input here, valid with `start`. The unit forms area2 itself, for its sign only.
 //! One shared [`Mul`] (48 x 26 bits) does the 20 products in sequence, four steps a
@@ -115,29 +115,39 @@ fn at(i: usize) -> Constant<Bits<8>> {
     Constant::new(i.to_bits())
 }
 
+crate::bundle! {
+    /// A triangle as texture setup takes it (`start`): the three vertices (x, y raw in `xy`;
+    /// s·q, t·q in `st`; q in `q`) and the reciprocal of twice the area, `mant` (`ooa`) and
+    /// `exp` (`model::divider::reciprocal(|area2|)`, which triangle setup's divider has);
+    /// `texture_path` takes it with a triangle's first fragment.
+    TexTri {
+        In x0: Bits<XY>,
+        In y0: Bits<XY>,
+        In x1: Bits<XY>,
+        In y1: Bits<XY>,
+        In x2: Bits<XY>,
+        In y2: Bits<XY>,
+        In sq0: Bits<ST>,
+        In sq1: Bits<ST>,
+        In sq2: Bits<ST>,
+        In tq0: Bits<ST>,
+        In tq1: Bits<ST>,
+        In tq2: Bits<ST>,
+        In q0: Bits<QB>,
+        In q1: Bits<QB>,
+        In q2: Bits<QB>,
+        In mant: Bits<MANT>,
+        In exp: Bits<EXP>,
+    }
+}
+
 /// The texture setup unit: the per-triangle planes and the per-pixel values.
 #[derive(LogicBlock, Blank)]
 pub struct TextureSetup {
     pub clock: Signal<In, Clock>,
     // Per triangle.
     pub start: Signal<In, Bit>,
-    pub tri_x0: Signal<In, Bits<XY>>,
-    pub tri_y0: Signal<In, Bits<XY>>,
-    pub tri_x1: Signal<In, Bits<XY>>,
-    pub tri_y1: Signal<In, Bits<XY>>,
-    pub tri_x2: Signal<In, Bits<XY>>,
-    pub tri_y2: Signal<In, Bits<XY>>,
-    pub tri_sq0: Signal<In, Bits<ST>>,
-    pub tri_sq1: Signal<In, Bits<ST>>,
-    pub tri_sq2: Signal<In, Bits<ST>>,
-    pub tri_tq0: Signal<In, Bits<ST>>,
-    pub tri_tq1: Signal<In, Bits<ST>>,
-    pub tri_tq2: Signal<In, Bits<ST>>,
-    pub tri_q0: Signal<In, Bits<QB>>,
-    pub tri_q1: Signal<In, Bits<QB>>,
-    pub tri_q2: Signal<In, Bits<QB>>,
-    pub tri_mant: Signal<In, Bits<MANT>>,
-    pub tri_exp: Signal<In, Bits<EXP>>,
+    pub tri: TexTri,
     pub done: Signal<Out, Bit>,
     pub dsq_x: Signal<Out, Bits<DST>>,
     pub dsq_y: Signal<Out, Bits<DST>>,
@@ -351,18 +361,18 @@ impl Logic for TextureSetup {
         }
 
         // ---- Per triangle. The inputs sign-extended.
-        self.sx_pos[0].x.next = self.tri_x0.val();
-        self.sx_pos[1].x.next = self.tri_y0.val();
-        self.sx_pos[2].x.next = self.tri_x1.val();
-        self.sx_pos[3].x.next = self.tri_y1.val();
-        self.sx_pos[4].x.next = self.tri_x2.val();
-        self.sx_pos[5].x.next = self.tri_y2.val();
-        self.sx_st[0].x.next = self.tri_sq0.val();
-        self.sx_st[1].x.next = self.tri_sq1.val();
-        self.sx_st[2].x.next = self.tri_sq2.val();
-        self.sx_st[3].x.next = self.tri_tq0.val();
-        self.sx_st[4].x.next = self.tri_tq1.val();
-        self.sx_st[5].x.next = self.tri_tq2.val();
+        self.sx_pos[0].x.next = self.tri.x0.val();
+        self.sx_pos[1].x.next = self.tri.y0.val();
+        self.sx_pos[2].x.next = self.tri.x1.val();
+        self.sx_pos[3].x.next = self.tri.y1.val();
+        self.sx_pos[4].x.next = self.tri.x2.val();
+        self.sx_pos[5].x.next = self.tri.y2.val();
+        self.sx_st[0].x.next = self.tri.sq0.val();
+        self.sx_st[1].x.next = self.tri.sq1.val();
+        self.sx_st[2].x.next = self.tri.sq2.val();
+        self.sx_st[3].x.next = self.tri.tq0.val();
+        self.sx_st[4].x.next = self.tri.tq1.val();
+        self.sx_st[5].x.next = self.tri.tq2.val();
         self.sx_e1x.x.next = self.e1x.q.val();
         self.sx_e2x.x.next = self.e2x.q.val();
 
@@ -523,15 +533,15 @@ impl Logic for TextureSetup {
             self.d2[0].d.next = self.sx_st[2].y.val() - self.sx_st[0].y.val();
             self.d1[1].d.next = self.sx_st[4].y.val() - self.sx_st[3].y.val();
             self.d2[1].d.next = self.sx_st[5].y.val() - self.sx_st[3].y.val();
-            self.d1[2].d.next = bit_cast::<D, QB>(self.tri_q1.val()) - bit_cast::<D, QB>(self.tri_q0.val());
-            self.d2[2].d.next = bit_cast::<D, QB>(self.tri_q2.val()) - bit_cast::<D, QB>(self.tri_q0.val());
-            self.mant.d.next = self.tri_mant.val();
-            self.exp.d.next = self.tri_exp.val();
+            self.d1[2].d.next = bit_cast::<D, QB>(self.tri.q1.val()) - bit_cast::<D, QB>(self.tri.q0.val());
+            self.d2[2].d.next = bit_cast::<D, QB>(self.tri.q2.val()) - bit_cast::<D, QB>(self.tri.q0.val());
+            self.mant.d.next = self.tri.mant.val();
+            self.exp.d.next = self.tri.exp.val();
             self.ox.d.next = bit_cast::<OFF, MB>(self.sx_pos[0].y.val());
             self.oy.d.next = bit_cast::<OFF, MB>(self.sx_pos[1].y.val());
             self.a0_sq.d.next = bit_cast::<GS, D>(self.sx_st[0].y.val()) << self.rs.val();
             self.a0_tq.d.next = bit_cast::<GS, D>(self.sx_st[3].y.val()) << self.rs.val();
-            self.a0_q.d.next = bit_cast::<GQ, QB>(self.tri_q0.val()) << self.rs.val();
+            self.a0_q.d.next = bit_cast::<GQ, QB>(self.tri.q0.val()) << self.rs.val();
         }
         self.done.next = self.done_r.q.val();
         self.dsq_x.next = self.lod_sq[0].q.val();
@@ -615,11 +625,9 @@ impl Logic for TextureSetup {
 
 crate::pins!(TextureSetup {
     clock: clock,
-    inputs: [
-        start, tri_x0, tri_y0, tri_x1, tri_y1, tri_x2, tri_y2, tri_sq0, tri_sq1, tri_sq2, tri_tq0, tri_tq1, tri_tq2,
-        tri_q0, tri_q1, tri_q2, tri_mant, tri_exp, en, inp_valid, inp_x, inp_y
-    ],
+    inputs: [start, en, inp_valid, inp_x, inp_y],
     outputs: [done, dsq_x, dsq_y, dtq_x, dtq_y, dq_x, dq_y, out_valid, out_sq, out_tq, out_q],
+    links: [tri],
 });
 
 /// `UNITS` entry: the unit at the class 10 formats and `fx::TexFormats::DEFAULT`; no
