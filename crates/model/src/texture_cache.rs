@@ -27,12 +27,12 @@
 //! word) are out in the next cycle, S1's, where the tags are compared and the way chosen.
 //!
 //! ```text
-//!  cycle   hit                          miss of m lanes, memory latency L, mem_ack high
+//!  cycle   hit                          miss of m lanes, memory latency L, mem$ack high
 //!  t       inp_valid & inp_ready: taken  taken
 //!  t+1     S1: all enabled lanes hit     S1: a lane misses; counted (hits, misses)
 //!  t+2     out_valid (O)                 Fill: 1st word asked (MemAsk)
 //!  ...                                   word k asked at t+2+k, k < m·line (lane order)
-//!  t+1+m·line+L                          the last word in (mem_rvalid): line written
+//!  t+1+m·line+L                          the last word in (mem$rvalid): line written
 //!  t+2+m·line+L                          Wait: the RAMs read S1's addresses again
 //!  t+3+m·line+L                          S1 again (Run): every lane hits, not counted
 //!  t+4+m·line+L                          out_valid (O)
@@ -41,7 +41,7 @@
 //! So the hit latency is [`HIT_LATENCY`] = 2 (a request taken in cycle t is at the output
 //! in cycle t + 2) and one request a cycle goes through while every enabled lane hits. A
 //! miss of m lanes costs `m · line + L + 2` cycles more than a hit ([`Params::miss_penalty`])
-//! when the memory takes every word at once (`mem_ack` high) and answers each word asked
+//! when the memory takes every word at once (`mem$ack` high) and answers each word asked
 //! (taken) in cycle c in cycle c + L; in general the last word's arrival decides.
 //!
 //! Handshakes: a transfer happens when valid and ready are high in the same cycle.
@@ -63,7 +63,7 @@
 //!   Clear from set 0.
 //! * Fill: the missing lanes' lines, in lane order, `line` words each from the line's first
 //!   word: `MemAsk` with the next word's address, until `MemIn::ack`; the words come back
-//!   in order (`mem_rvalid`, `mem_rdata`), each written to the victim way of its lane's
+//!   in order (`mem$rvalid`, `mem$rdata`), each written to the victim way of its lane's
 //!   bank; with a line's last word its tag is written valid and its set's victim pointer
 //!   advances (`fills` counts it). Asking runs ahead of the answers: the next lane's words
 //!   are asked while the previous lane's come in. With the last line in: Wait.

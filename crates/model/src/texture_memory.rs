@@ -98,7 +98,7 @@ impl TextureMemory {
     }
 }
 
-/// The texture memory behind `texture_unit`'s read port (`mem_valid`, `mem_addr`,
+/// The texture memory behind `texture_unit`'s read port (`mem$valid`, `mem$addr`,
 /// `mem$ack`, `mem$rvalid`, `mem$rdata`): each word asked and acknowledged comes back
 /// `latency` cycles later, in order, at most one a cycle.
 #[derive(Clone, Debug)]

@@ -55,7 +55,7 @@ pub struct Pixel {
     pub tag: u32,
 }
 
-/// The unit's inputs in one cycle (the RTL's ports: `inp_*`, `st_*`, `inp_flush`,
+/// The unit's inputs in one cycle (the RTL's ports: `inp_*`, `st_load` and `st$*`, `inp_flush`,
 /// `out_ready`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct UnitIn {
