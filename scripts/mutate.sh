@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Mutation test of the test command (issue 13; README, "Mutations"): does the fast suite
-# notice when the emitted Verilog is wrong? For each of three units it edits one operator
-# of hdl-out/ (in the unit's own file and in its copy inside raster_top.v), runs the test
-# command's tests (`cargo test --workspace` on the test command's build, without lint and
-# synthesis), names every test that failed, and puts the files back. A mutation no
-# simulation test catches (hdl_out_is_fresh, which compares hdl-out/ with a new emission,
-# catches any edit, and does not count) fails the script.
+# Mutation test of the test command (issue 13; README, "Does the test command notice wrong
+# Verilog?"): does the fast suite notice when the emitted Verilog is wrong? For each of three
+# units it edits one operator of hdl-out/ (in the unit's own file and in its copy inside
+# raster_top.v), runs the test command's tests (`cargo test --workspace` on the test
+# command's build, without lint and synthesis), names every test that failed, and puts the
+# files back. A mutation no simulation test catches (hdl_out_is_fresh, which compares
+# hdl-out/ with a new emission, catches any edit, and does not count) fails the script.
 #
 # Each mutation is a plausible slip of hand-written RTL that a weak bench would miss:
 #   edge_walk       a colour's step up the edge loses the +1 of its two's complement
