@@ -156,9 +156,11 @@ fn pixel_out_blend_random_vs_model() {
         let ran = run(&mut dual(&vl, true), &px, size, [60, 120, 200], rdw, ready)
             .unwrap_or_else(|e| panic!("seed {seed}, case {i} ({size:?}, {rdw:?}, stalls {stalls}): {e}"));
         assert!(ran.mem.writes > 0 && ran.mem.writes < px.len() as u64, "some pixels pass, some fail");
+        // Passing pixels on one address grow with the log of its visits (each must beat the
+        // depth written so far), so the count of hazards asked for stops growing at 100.
         if size == (7, 5) {
             assert!(
-                ran.after_written.iter().all(|&n| n > count() as u64 / 10),
+                ran.after_written.iter().all(|&n| n > (count() as u64 / 10).min(100)),
                 "hazards that pass: {:?} at distances 1, 2, 3",
                 ran.after_written
             );
