@@ -22,9 +22,11 @@ use accuracy::texture::{cache_stats, judge, CacheStats, TextureSetup, DEFAULT_CA
 use anyhow::{anyhow, bail, Context, Result};
 use fx::TexFormats;
 use model::texture_cache::Params as CacheParams;
+use model::texture_unit::Fetch;
 use rtl::emit::Emitted;
 use scene::Trilist;
 use serde::Serialize;
+use std::collections::hash_map::{Entry, HashMap};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -192,6 +194,14 @@ struct Row {
     hit_rates: Vec<SceneHitRate>,
 }
 
+impl Row {
+    /// The row's parameters and formats file, as the tables print them.
+    fn parameters_text(&self) -> String {
+        let params = self.parameters.iter().map(|(k, v)| format!("{k}={v}"));
+        params.chain(self.formats.iter().map(|f| format!("formats={f}"))).collect::<Vec<_>>().join(" ")
+    }
+}
+
 /// The texture cache at a row's geometry on one scene's textured fragments.
 #[derive(Serialize)]
 struct SceneHitRate {
@@ -236,7 +246,7 @@ struct Fpga {
 
 pub fn run(args: Args) -> Result<()> {
     // The scenes first: a bad one is reported before minutes of synthesis.
-    let scenes = args
+    let files = args
         .scenes
         .iter()
         .map(|path| {
@@ -245,6 +255,7 @@ pub fn run(args: Args) -> Result<()> {
             Ok((path.clone(), loaded.trilist))
         })
         .collect::<Result<Vec<_>>>()?;
+    let mut scenes = Scenes { files, traces: HashMap::new() };
     let designs: Vec<Emitted> = match &args.unit {
         None if !args.params.is_empty() || args.formats.is_some() => {
             bail!("--param and --formats need --unit: the default design's parameters are fixed")
@@ -285,7 +296,7 @@ pub fn run(args: Args) -> Result<()> {
         eprintln!("report: {}{tag} in {}", e.unit, dir.display());
         let mut row = report(e, &dir, &flows, (!args.no_pnr).then_some(args.router.as_str()))?;
         row.formats = args.formats.as_ref().map(|f| f.display().to_string());
-        row.hit_rates = hit_rates(e.unit, &e.params, &scenes)?;
+        row.hit_rates = hit_rates(e.unit, &e.params, &mut scenes)?;
         rows.push(row);
     }
     let md = markdown(&rows);
@@ -360,18 +371,29 @@ fn texture_cache_of(unit: &str, params: &rtl::Params) -> Option<(CacheParams, Lo
     holds.then_some((cache, lod))
 }
 
+/// The `--scene` files, and each one's trace of texture fetches per level-of-detail rule,
+/// drawn once (`accuracy::texture::judge`) however many rows ask for it.
+struct Scenes {
+    files: Vec<(PathBuf, Trilist)>,
+    traces: HashMap<(usize, LodRule), Vec<Fetch>>,
+}
+
 /// The hit rate of `unit`'s texture cache at `params` on each of `scenes` (none when it
 /// holds no cache).
-fn hit_rates(unit: &str, params: &rtl::Params, scenes: &[(PathBuf, Trilist)]) -> Result<Vec<SceneHitRate>> {
+fn hit_rates(unit: &str, params: &rtl::Params, scenes: &mut Scenes) -> Result<Vec<SceneHitRate>> {
     let Some((cache, lod)) = texture_cache_of(unit, params) else { return Ok(Vec::new()) };
-    let setup = TextureSetup { formats: TexFormats::DEFAULT, lod, affine: false };
-    scenes
-        .iter()
-        .map(|(path, list)| {
-            let r = judge(list, &setup).map_err(|e| anyhow!("{}: {e}", path.display()))?;
-            Ok(SceneHitRate { scene: path.display().to_string(), cache: cache_stats(&cache, &r.trace) })
-        })
-        .collect()
+    let mut rates = Vec::new();
+    for (i, (path, list)) in scenes.files.iter().enumerate() {
+        let trace = match scenes.traces.entry((i, lod)) {
+            Entry::Occupied(e) => e.into_mut(),
+            Entry::Vacant(e) => {
+                let setup = TextureSetup { formats: TexFormats::DEFAULT, lod, affine: false };
+                e.insert(judge(list, &setup).map_err(|e| anyhow!("{}: {e}", path.display()))?.trace)
+            }
+        };
+        rates.push(SceneHitRate { scene: path.display().to_string(), cache: cache_stats(&cache, trace) });
+    }
+    Ok(rates)
 }
 
 /// An FPGA flow: the unit alone through `family`'s mapping (`read`: the command reading
@@ -546,9 +568,7 @@ fn markdown(rows: &[Row]) -> String {
          |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
     );
     for r in rows {
-        let mut params: Vec<String> = r.parameters.iter().map(|(k, v)| format!("{k}={v}")).collect();
-        params.extend(r.formats.iter().map(|f| format!("formats={f}")));
-        let mut cells = vec![r.unit.clone(), params.join(" ")];
+        let mut cells = vec![r.unit.clone(), r.parameters_text()];
         cells.extend(match &r.generic {
             Some(g) => vec![g.cells.to_string(), format!("{:.0}", g.gate_equivalents)],
             None => vec![SKIPPED.to_owned(); 2],
@@ -577,14 +597,13 @@ fn markdown(rows: &[Row]) -> String {
              |---|---|---|---|---:|---:|---:|---:|\n",
         );
         for r in rows {
-            let params: Vec<String> = r.parameters.iter().map(|(k, v)| format!("{k}={v}")).collect();
             for h in &r.hit_rates {
                 let c = &h.cache;
                 writeln!(
                     md,
                     "| {} | {} | {} | {}, {}, {} | {} | {} | {} | {:.4} |",
                     r.unit,
-                    params.join(" "),
+                    r.parameters_text(),
                     h.scene,
                     c.sets,
                     c.ways,
@@ -674,9 +693,9 @@ mod tests {
 
     #[test]
     fn report_gives_the_texture_cache_hit_rate_of_each_unit_that_holds_it() {
-        let scenes = [checker()];
-        let rate = |unit: &str, p: &[(&str, u64)]| {
-            let mut r = hit_rates(unit, &params(p), &scenes).expect("a textured scene");
+        let mut scenes = Scenes { files: vec![checker()], traces: HashMap::new() };
+        let mut rate = |unit: &str, p: &[(&str, u64)]| {
+            let mut r = hit_rates(unit, &params(p), &mut scenes).expect("a textured scene");
             assert!(r.len() <= 1, "one scene, one rate");
             r.pop().map(|h| h.cache)
         };
@@ -690,7 +709,7 @@ mod tests {
         assert_eq!((big.sets, big.ways, big.line), (256, 4, 16));
         // Every lane the unit enables is one lookup, at any geometry.
         let setup = TextureSetup { formats: TexFormats::DEFAULT, lod: LodRule::Max, affine: false };
-        let trace = judge(&scenes[0].1, &setup).expect("the checker scene").trace;
+        let trace = judge(&checker().1, &setup).expect("the checker scene").trace;
         let lanes: u64 = trace.iter().map(|f| f.iter().flatten().count() as u64).sum();
         assert!(lanes > 1000, "the scene textures {lanes} lanes");
         for c in [&small, &default, &big] {
