@@ -159,7 +159,7 @@ fn cli_draws_textured_scenes_on_the_float_scanline_and_vector_engines() {
     for (cmd, what) in [
         (vec!["render", scene, "--engine", "se", "-o", out], "--engine se cannot texture or blend: 000's shading"),
         (vec!["render", scene, "--engine", "rtl", "--method", "vector", "-o", out], "the scanline method only"),
-        (vec!["pack", scene, "-o", out], "vertex buffer (001's command parser) has no texture unit yet"),
+        (vec!["pack", scene, "-o", out], "gpu_top's command parser has no texture path"),
     ] {
         fails_with(&cmd, &["crate.json", what]);
     }

@@ -263,7 +263,7 @@ pub fn run(args: Args) -> Result<()> {
         let how: Vec<&str> = render_how.iter().map(String::as_str).collect();
         for (input, file) in inputs.iter().zip(&args.inputs) {
             if textured.iter().any(|t| t.name == input.name) {
-                // The RTL draws no textured scene yet (no texture unit in raster_top).
+                // The textured raster_top is built at the default formats only, not the fitted ones.
                 continue;
             }
             let png = dir.join(format!("{}.png", input.name));
@@ -374,7 +374,7 @@ impl TexFitted {
             "\n## Texture unit\n\nThe textured scenes' fragments through the bit-exact texture unit against the float reference \
              (`fit::texture`, the conformance check; {} designs judged). Emitted into `hdl/<unit>/`: {} (the cache at the \
              default geometry; the units at their built formats: the fitted knobs are in `formats.json`'s `\"texture\"`). Textured scenes are \
-             not drawn in the Verilator proof (raster_top has no texture unit yet).\n\n| | default | fitted |\n|---|---:|---:|\n",
+             not drawn in the Verilator proof: the textured `raster_top` (`TEXTURE=1`) is built at the default formats only, not at the fitted ones.\n\n| | default | fitted |\n|---|---:|---:|\n",
             self.fit.trials,
             TEXTURE_UNITS.join(", ")
         );

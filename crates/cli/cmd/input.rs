@@ -37,18 +37,18 @@ pub struct Loaded {
 }
 
 impl Loaded {
-    /// An error naming `path` when its triangles are textured or blended: `what` has no
-    /// texture unit or blending yet (the float reference and the scanline and vector models
-    /// draw them).
-    pub fn untextured(&self, path: &Path, what: &str) -> Result<()> {
-        let draw = "(render --engine float, scanline or vector)";
-        if self.trilist.is_textured() {
-            bail!("{}: the scene is textured, and {what} has no texture unit yet {draw}", path.display());
-        }
-        if self.trilist.is_blended() {
-            bail!("{}: the scene blends, and {what} has no framebuffer blending yet {draw}", path.display());
-        }
-        Ok(())
+    /// An error naming `path` when its triangles are textured or blended, which `why` says
+    /// the command cannot take (every engine of `render` draws them: the float reference,
+    /// the scanline and vector models, and the textured `raster_top` in Verilator).
+    pub fn untextured(&self, path: &Path, why: &str) -> Result<()> {
+        let what = if self.trilist.is_textured() {
+            "is textured"
+        } else if self.trilist.is_blended() {
+            "blends"
+        } else {
+            return Ok(());
+        };
+        bail!("{}: the scene {what}: {why}", path.display())
     }
 }
 

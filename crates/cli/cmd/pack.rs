@@ -27,7 +27,11 @@ pub struct Args {
 
 pub fn run(args: Args) -> Result<()> {
     let loaded = input::load(&args.input, args.size)?;
-    loaded.untextured(&args.input, "the vertex buffer (001's command parser)")?;
+    loaded.untextured(
+        &args.input,
+        "the vertex buffer carries no texture words or blend modes: gpu_top's command parser has no texture path \
+         (render --engine rtl draws it through the textured raster_top)",
+    )?;
     ensure!(loaded.build.is_none(), "{}: already a vertex buffer", args.input.display());
     let list = &loaded.trilist;
     let fixed = FixedArgs { formats: args.formats.clone(), lanes: None, lod: super::engine::Lod::Max };

@@ -237,7 +237,10 @@ fn area_model(path: &Path) -> Result<sweep::area::Model> {
 /// An input of the sweep, its cache key from its file's bytes and the size asked for.
 pub fn load(path: &Path, size: Option<Size>) -> Result<Input> {
     let loaded = input::load(path, size)?;
-    loaded.untextured(path, "the fixed-point models")?;
+    loaded.untextured(
+        path,
+        "the sweep of the pipelines' formats takes untextured, unblended scenes (sweep --texture takes textured ones)",
+    )?;
     input_of(path, size, loaded)
 }
 

@@ -36,7 +36,8 @@ impl Input {
         let trilist = s.to_trilist().map_err(|e| format!("{}: {e}", path.display()))?;
         if trilist.is_textured() {
             return Err(format!(
-                "{}: the scene is textured: the fixed-point models have no texture unit yet",
+                "{}: the scene is textured: the sweep of the pipelines' formats takes untextured scenes \
+                 (`sweep::texture` takes textured ones)",
                 path.display()
             ));
         }
