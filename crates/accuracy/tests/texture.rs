@@ -44,15 +44,20 @@ fn every_shipped_textured_scene_passes_the_conformance_check_at_both_lod_rules()
     for path in paths {
         let list = Scene::load(&path).unwrap().to_trilist().unwrap();
         for rule in [LodRule::Max, LodRule::Exact] {
-            let Judged(pixels, failures, psnr) =
-                judge(&list, &setup(TexFormats::default(), rule, false)).unwrap().into();
-            println!("{} {rule:?}: {pixels} pixels, {failures} failures, {psnr:.1} dB", path.display());
+            let r = judge(&list, &setup(TexFormats::default(), rule, false)).unwrap();
+            let (neighbour, Judged(pixels, failures, psnr)) = (r.neighbour, r.into());
+            println!(
+                "{} {rule:?}: {pixels} pixels, {failures} failures, {neighbour} at a boundary took a neighbouring \
+                 choice, {psnr:.1} dB",
+                path.display()
+            );
             assert!(pixels > 5_000, "{}: {pixels} textured pixels", path.display());
             assert_eq!(failures, 0, "{} {rule:?}", path.display());
-            // The design's rule (001's eq. 4); at GL's exact rule, one level per colour (the
-            // mip-level scene) makes each pixel near a level boundary that chose the other
-            // level count in full.
-            assert!(rule == LodRule::Exact || psnr >= 40.0, "{} {rule:?}: {psnr:.1} dB", path.display());
+            // The design's rule (001's eq. 4) is at 40 dB. At GL's exact rule, one level per
+            // colour (the mip-level scene) makes each pixel near a level boundary that chose
+            // the other level count in full (46 of its 15,428 at stop 53): at most 1 in 100 may.
+            let few = neighbour * 100 <= pixels;
+            assert!(psnr >= 40.0 || (rule == LodRule::Exact && few), "{} {rule:?}: {psnr:.1} dB", path.display());
         }
     }
 }
