@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # edgepaint's long checks, beyond the test command (scripts/test.sh): run before resolving
-# any issue that touches RTL (README, "Soak"). About an hour on 2 cores; each step prints
-# its time, and everything it writes goes under target/soak/.
+# any issue that touches RTL (README, "Soak", gives each step's time: hours in all on 2 cores);
+# each step prints its time, and everything it writes goes under target/soak/.
 #
 #   1. tests        the whole suite with size classes 11 and 12 and rtl::custom compiled
 #                   in (the features classes-11-12 and custom-formats, which the test
@@ -38,7 +38,8 @@
 #   5. mutate       scripts/mutate.sh: one operator of the emitted Verilog of edge_walk, span
 #                   and triangle_setup changed at a time; the test command's tests must fail
 #
-# `scripts/soak.sh STEP...` runs only the steps named (tests, random, synth, pnr, mutate).
+# `scripts/soak.sh STEP...` runs only the steps named (tests, random, synth, pnr, mutate);
+# `PNR_UNITS="unit ..." scripts/soak.sh pnr` routes only the units named.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -78,8 +79,21 @@ pnr() {
     local unit router flows scenes textured=()
     # The texture cache's hit rate on every shipped textured scene, beside the units that hold it.
     for f in scenes/textured/*.json; do textured+=(--scene "$f"); done
-    for unit in ept se cull_sort divider edge_walk span pixel_out pixel_bus gpu_regs command_parser triangle_queue triangle_setup raster_top gpu_top \
-        texture_coords texture_address texture_cache texture_filter texture_unit texture_setup texture_path blend; do
+    local all=(ept se cull_sort divider edge_walk span pixel_out pixel_bus gpu_regs command_parser triangle_queue triangle_setup
+        raster_top gpu_top texture_coords texture_address texture_cache texture_filter texture_unit texture_setup texture_path
+        blend raster_top-TEXTURE=1)
+    # PNR_UNITS="a b ..." routes only those (a run cut short goes on where it stopped).
+    local units
+    read -r -a units <<<"${PNR_UNITS:-${all[*]}}"
+    for unit in "${units[@]}"; do
+        [[ " ${all[*]} " == *" $unit "* ]] || { echo "soak: PNR_UNITS: no unit $unit (${all[*]})" >&2; return 1; }
+        if [[ $unit == raster_top-TEXTURE=1 ]]; then
+            # The textured raster_top (texture_path behind the scanline units): ECP5 only, as
+            # raster_top fits no iCE40.
+            cargo run --profile test --locked --quiet -- report --unit raster_top --param TEXTURE=1 --router router2 \
+                --flow ecp5 "${textured[@]}" -o "target/soak/report/$unit"
+            continue
+        fi
         router=router1
         [[ $unit == triangle_setup || $unit == raster_top || $unit == texture_* ]] && router=router2
         flows=()
@@ -92,10 +106,6 @@ pnr() {
         cargo run --profile test --locked --quiet -- report --unit "$unit" --router $router "${flows[@]}" "${scenes[@]}" \
             -o "target/soak/report/$unit"
     done
-    # The textured raster_top (texture_path behind the scanline units): ECP5 only, as raster_top
-    # fits no iCE40.
-    cargo run --profile test --locked --quiet -- report --unit raster_top --param TEXTURE=1 --router router2 --flow ecp5 \
-        "${textured[@]}" -o target/soak/report/raster_top-TEXTURE=1
 }
 want pnr && step "place and route of the default design" pnr
 want mutate && step "mutations of the emitted Verilog of edge_walk, span and triangle_setup" scripts/mutate.sh
