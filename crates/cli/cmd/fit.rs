@@ -12,12 +12,12 @@
 //! Verilator, checked equal to the model: image, depth and cycles) and `report.md`.
 //!
 //! A textured scene's geometry and lit colours are fitted as the rest (its textures
-//! stripped: the raster pipeline carries no texture coordinates yet), and the texture unit
-//! (paper 001 section II-5) is fitted on its textured fragments (`fit::texture`): the
-//! narrowest knobs meeting the conformance check and the target's PSNR, written into
-//! `formats.json`'s `"texture"` object, and the texture units emitted beside raster_top, each
-//! into `hdl/<unit>/` (at their built formats, the cache at the default geometry). An
-//! untextured workload gets no texture unit.
+//! stripped: texture coordinates go through `texture_setup`'s planes, not the pipeline's
+//! formats), and the texture unit (paper 001 section II-5) is fitted on its textured
+//! fragments (`fit::texture`): the narrowest knobs meeting the conformance check and the
+//! target's PSNR, written into `formats.json`'s `"texture"` object, and the texture units
+//! emitted beside raster_top, each into `hdl/<unit>/` (at their built formats, the cache at
+//! the default geometry). An untextured workload gets no texture unit.
 
 use super::input::Size;
 use anyhow::{anyhow, bail, Context, Result};

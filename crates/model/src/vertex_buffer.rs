@@ -546,7 +546,9 @@ pub fn read_index_record(w: &[u32; RECORD_BYTES / 4], t: u32, h: &Header) -> Res
         return broken(
             12,
             Fault::TriangleInfo,
-            format!("triangle {t}: texture index {texture}: edgepaint has no textures ({NO_TEXTURE:#06x}: none)"),
+            format!(
+                "triangle {t}: texture index {texture}: the command parser carries no texture ({NO_TEXTURE:#06x}: none)"
+            ),
         );
     }
     if ti & !(0xffff | END_OF_BUFFER | END_OF_FRAME) != 0 {
@@ -732,7 +734,7 @@ mod tests {
         broken(|b| set(b, tri(3) + 12, 0xffff), tri(3) + 12, "the last triangle must end the buffer");
         broken(|b| set(b, tri(0) + 12, 0xffff | END_OF_BUFFER), tri(0) + 12, "only the last triangle ends");
         broken(|b| set(b, tri(0) + 12, 0xffff | END_OF_FRAME), tri(0) + 12, "only the buffer's last triangle");
-        broken(|b| set(b, tri(2) + 12, 7), tri(2) + 12, "no textures");
+        broken(|b| set(b, tri(2) + 12, 7), tri(2) + 12, "carries no texture");
         broken(|b| set(b, tri(2) + 20, 0xffff_ffff), tri(2) + 20, "inv_w of V1 = 0xffffffff is not a");
         let halves = |b: &mut Vec<u8>| (0..3).for_each(|k| set(b, tri(2) + 16 + 4 * k, 1 << 14));
         broken(halves, tri(2) + 16, "its largest must be 1");
