@@ -25,16 +25,22 @@
 #                   variant, classes 11 and 12 and rtl::custom too (scripts/lint.sh)
 #   4. P&R          place and route of every unit of the default design on iCE40 and ECP5
 #                   (`edgepaint report`): area and Fmax in target/soak/report/<unit>/report.md.
-#                   nextpnr's router1 for all but triangle_setup and raster_top, which take
-#                   router2 (router1 had not routed them in 20 minutes; they fit no iCE40, so
-#                   only ECP5 routes them; Debian's nextpnr-ice40 0.4 fails an assertion in
-#                   router2 on the divider); gpu_top takes router1, on which router2 diverged
-#                   (router1 routed it in 68 minutes, with other work beside it), and only
-#                   in the ECP5 flow (`--flow ecp5`: no iCE40 holds it, and the generic
-#                   flow makes flip-flops of its RAMs; those two took an hour); the texture
-#                   units, texture_setup, texture_path and blend take router2 in the generic
-#                   and ECP5 flows (their multipliers fit no iCE40 HX8K; 1 to 45 minutes each
-#                   at stop 45), and the textured raster_top (TEXTURE=1) router2 in ECP5
+#                   nextpnr's router1 for all but raster_top, which takes router2 (router1
+#                   had not routed it in 20 minutes; it fits no iCE40, so only ECP5 routes
+#                   it; Debian's nextpnr-ice40 0.4 fails an assertion in router2 on the
+#                   divider); triangle_setup takes router1 since it fits the LFE5U-45F, where
+#                   router2 diverged (stop 54: 2,069 wires overused at iteration 74, and
+#                   rising; router1 21 minutes in all); gpu_top takes router1, on which
+#                   router2 diverged (router1 routed it in 68 minutes, with other work
+#                   beside it), and only in the ECP5 flow (`--flow ecp5`: no iCE40 holds
+#                   it, and the generic flow makes flip-flops of its RAMs; those two took
+#                   an hour); the texture units, texture_setup, texture_path and blend take
+#                   router2 in the generic and ECP5 flows (their multipliers fit no iCE40
+#                   HX8K; 1 to 45 minutes each at stop 45). The textured raster_top
+#                   (TEXTURE=1) only when named in PNR_UNITS, router1 in ECP5: on the
+#                   LFE5U-85F (58% of its LUTs, 112 of its 156 multipliers) router2 diverged
+#                   (over 13,000 wires overused after 10 iterations, twice; 35 minutes
+#                   each); router1 has not yet been seen to finish it
 #   5. mutate       scripts/mutate.sh: one operator of the emitted Verilog of edge_walk, span
 #                   and triangle_setup changed at a time; the test command's tests must fail
 #
@@ -81,21 +87,22 @@ pnr() {
     for f in scenes/textured/*.json; do textured+=(--scene "$f"); done
     local all=(ept se cull_sort divider edge_walk span pixel_out pixel_bus gpu_regs command_parser triangle_queue triangle_setup
         raster_top gpu_top texture_coords texture_address texture_cache texture_filter texture_unit texture_setup texture_path
-        blend raster_top-TEXTURE=1)
-    # PNR_UNITS="a b ..." routes only those (a run cut short goes on where it stopped).
-    local units
+        blend)
+    # PNR_UNITS="a b ..." routes only those (a run cut short goes on where it stopped), and
+    # may name the textured raster_top, which the default list leaves out (above).
+    local units known=("${all[@]}" raster_top-TEXTURE=1)
     read -r -a units <<<"${PNR_UNITS:-${all[*]}}"
     for unit in "${units[@]}"; do
-        [[ " ${all[*]} " == *" $unit "* ]] || { echo "soak: PNR_UNITS: no unit $unit (${all[*]})" >&2; return 1; }
+        [[ " ${known[*]} " == *" $unit "* ]] || { echo "soak: PNR_UNITS: no unit $unit (${known[*]})" >&2; return 1; }
         if [[ $unit == raster_top-TEXTURE=1 ]]; then
             # The textured raster_top (texture_path behind the scanline units): ECP5 only, as
             # raster_top fits no iCE40.
-            cargo run --profile test --locked --quiet -- report --unit raster_top --param TEXTURE=1 --router router2 \
+            cargo run --profile test --locked --quiet -- report --unit raster_top --param TEXTURE=1 --router router1 \
                 --flow ecp5 "${textured[@]}" -o "target/soak/report/$unit"
             continue
         fi
         router=router1
-        [[ $unit == triangle_setup || $unit == raster_top || $unit == texture_* ]] && router=router2
+        [[ $unit == raster_top || $unit == texture_* ]] && router=router2
         flows=()
         [[ $unit == gpu_top ]] && flows=(--flow ecp5)
         # The texture units hold multipliers (or, the cache, RAMs the generic flow makes
