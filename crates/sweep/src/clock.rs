@@ -32,8 +32,9 @@ pub const PIPELINE_MHZ: f64 = 38.3;
 /// nextpnr's router1; README, "Units"): its critical path is the command parser's (the
 /// triangle count against the buffer's, the index record's end and fault checks, the next
 /// vertex index into the tag RAM's read address). Before `pixel_bus`'s input registers
-/// (stop 38) it was 30.4 MHz, on `pixel_bus`'s path into span.
-pub const GPU_TOP_MHZ: f64 = 41.8;
+/// (stop 38) it was 30.4 MHz, on `pixel_bus`'s path into span; 41.8 MHz at stop 38, 39.4 at
+/// the soak of stop 54 (today's RTL).
+pub const GPU_TOP_MHZ: f64 = 39.4;
 
 /// The barycentric pipeline's ECP5 Fmax (`raster_top` with `METHOD = 1`: `cull_sort`,
 /// `rtl::vector` at one lane, `pixel_out`) at the default design, MHz, placed and routed
