@@ -25,12 +25,11 @@
 #                   variant, classes 11 and 12 and rtl::custom too (scripts/lint.sh)
 #   4. P&R          place and route of every unit of the default design on iCE40 and ECP5
 #                   (`edgepaint report`): area and Fmax in target/soak/report/<unit>/report.md.
-#                   nextpnr's router1 for all but raster_top, which takes router2 (router1
-#                   had not routed it in 20 minutes; it fits no iCE40, so only ECP5 routes
-#                   it; Debian's nextpnr-ice40 0.4 fails an assertion in router2 on the
-#                   divider); triangle_setup takes router1 since it fits the LFE5U-45F, where
-#                   router2 diverged (stop 54: 2,069 wires overused at iteration 74, and
-#                   rising; router1 21 minutes in all); gpu_top takes router1, on which
+#                   nextpnr's router1 for the scanline units: triangle_setup and raster_top
+#                   fit the LFE5U-45F now, where router2 diverged on both (stop 54: 2,069 and
+#                   1,784 wires overused at iterations 74 and 46, and rising; router1 21 and
+#                   31 minutes in all; Debian's nextpnr-ice40 0.4 fails an assertion in
+#                   router2 on the divider); gpu_top takes router1, on which
 #                   router2 diverged (router1 routed it in 68 minutes, with other work
 #                   beside it), and only in the ECP5 flow (`--flow ecp5`: no iCE40 holds
 #                   it, and the generic flow makes flip-flops of its RAMs; those two took
@@ -102,7 +101,7 @@ pnr() {
             continue
         fi
         router=router1
-        [[ $unit == raster_top || $unit == texture_* ]] && router=router2
+        [[ $unit == texture_* ]] && router=router2
         flows=()
         [[ $unit == gpu_top ]] && flows=(--flow ecp5)
         # edge_walk since its rework for issue 17 (+38% LUT4) fills 87% of the iCE40 HX8K's
