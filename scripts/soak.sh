@@ -33,9 +33,9 @@
 #                   router2 diverged (router1 routed it in 68 minutes, with other work
 #                   beside it), and only in the ECP5 flow (`--flow ecp5`: no iCE40 holds
 #                   it, and the generic flow makes flip-flops of its RAMs; those two took
-#                   an hour); the texture units, texture_setup, texture_path and blend take
-#                   router2 in the generic and ECP5 flows (their multipliers fit no iCE40
-#                   HX8K; 1 to 45 minutes each at stop 45). The textured raster_top
+#                   an hour); the texture units, texture_setup and texture_path take
+#                   router2, and blend router1, in the generic and ECP5 flows (their
+#                   multipliers fit no iCE40 HX8K; 1 to 45 minutes each at stop 45). The textured raster_top
 #                   (TEXTURE=1) only when named in PNR_UNITS, router1 in ECP5: on the
 #                   LFE5U-85F (58% of its LUTs, 112 of its 156 multipliers) router2 diverged
 #                   (over 13,000 wires overused after 10 iterations, twice; 35 minutes
