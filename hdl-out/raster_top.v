@@ -9213,10 +9213,10 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     localparam  lane$5 = 8'h5;
     localparam  lane$6 = 8'h6;
     localparam  lane$7 = 8'h0;
-    localparam  lane$8 = 8'h1;
-    localparam  lane$9 = 8'h2;
-    localparam  lane$10 = 8'h3;
-    localparam  lane$11 = 8'h4;
+    localparam  lane$8 = 8'h0;
+    localparam  lane$9 = 8'h1;
+    localparam  lane$10 = 8'h2;
+    localparam  lane$11 = 8'h3;
     localparam  lane$12 = 8'h0;
     localparam  lane$13 = 8'h1;
     localparam  lane$14 = 8'h2;
@@ -9233,33 +9233,33 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     localparam  lane$25 = 8'h6;
     localparam  lane$26 = 8'h0;
     localparam  lane$27 = 8'h1;
-    localparam  lane$28 = 8'h0;
-    localparam  lane$29 = 8'h1;
-    localparam  lane$30 = 8'h2;
-    localparam  lane$31 = 8'h2;
-    localparam  lane$32 = 8'h3;
-    localparam  lane$33 = 8'h4;
-    localparam  lane$34 = 8'h5;
-    localparam  lane$35 = 8'h6;
-    localparam  lane$36 = 8'h0;
+    localparam  lane$28 = 8'h1;
+    localparam  lane$29 = 8'h2;
+    localparam  lane$30 = 8'h3;
+    localparam  lane$31 = 8'h0;
+    localparam  lane$32 = 8'h1;
+    localparam  lane$33 = 8'h2;
+    localparam  lane$34 = 8'h3;
+    localparam  lane$35 = 8'h4;
+    localparam  lane$36 = 8'h5;
     localparam  lane$37 = 8'h4;
     localparam  lane$38 = 8'h5;
     localparam  lane$39 = 8'h6;
-    localparam  lane$40 = 8'h3;
-    localparam  lane$41 = 8'h4;
-    localparam  lane$42 = 8'h5;
-    localparam  lane$43 = 8'h1;
-    localparam  lane$44 = 8'h2;
-    localparam  lane$45 = 8'h3;
-    localparam  lane$46 = 8'h4;
-    localparam  lane$47 = 8'h5;
-    localparam  lane$48 = 8'h6;
+    localparam  lane$40 = 8'h4;
+    localparam  lane$41 = 8'h5;
+    localparam  lane$42 = 8'h6;
+    localparam  lane$43 = 8'h6;
+    localparam  lane$44 = 8'h0;
+    localparam  lane$45 = 8'h1;
+    localparam  lane$46 = 8'h2;
+    localparam  lane$47 = 8'h3;
+    localparam  lane$48 = 8'h4;
     localparam  lane$49 = 8'h0;
     localparam  lane$50 = 8'h1;
     localparam  lane$51 = 8'h2;
-    localparam  lane$52 = 8'h6;
-    localparam  lane$53 = 8'h0;
-    localparam  lane$54 = 8'h1;
+    localparam  lane$52 = 8'h4;
+    localparam  lane$53 = 8'h5;
+    localparam  lane$54 = 8'h6;
     localparam  lane$55 = 8'h5;
     localparam  lane$56 = 8'h6;
     localparam  lane$57 = 8'h0;
@@ -9297,33 +9297,33 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     localparam  view$25 = 8'h3;
     localparam  view$26 = 8'h3;
     localparam  view$27 = 8'h3;
-    localparam  view$28 = 8'h3;
-    localparam  view$29 = 8'h3;
-    localparam  view$30 = 8'h3;
-    localparam  view$31 = 8'h3;
-    localparam  view$32 = 8'h3;
-    localparam  view$33 = 8'h3;
-    localparam  view$34 = 8'h3;
-    localparam  view$35 = 8'h3;
-    localparam  view$36 = 8'h3;
+    localparam  view$28 = 8'h4;
+    localparam  view$29 = 8'h4;
+    localparam  view$30 = 8'h4;
+    localparam  view$31 = 8'h4;
+    localparam  view$32 = 8'h4;
+    localparam  view$33 = 8'h4;
+    localparam  view$34 = 8'h4;
+    localparam  view$35 = 8'h4;
+    localparam  view$36 = 8'h4;
     localparam  view$37 = 8'h4;
     localparam  view$38 = 8'h4;
     localparam  view$39 = 8'h4;
-    localparam  view$40 = 8'h3;
-    localparam  view$41 = 8'h3;
-    localparam  view$42 = 8'h3;
-    localparam  view$43 = 8'h3;
-    localparam  view$44 = 8'h3;
-    localparam  view$45 = 8'h3;
-    localparam  view$46 = 8'h3;
-    localparam  view$47 = 8'h3;
-    localparam  view$48 = 8'h3;
+    localparam  view$40 = 8'h4;
+    localparam  view$41 = 8'h4;
+    localparam  view$42 = 8'h4;
+    localparam  view$43 = 8'h4;
+    localparam  view$44 = 8'h4;
+    localparam  view$45 = 8'h4;
+    localparam  view$46 = 8'h4;
+    localparam  view$47 = 8'h4;
+    localparam  view$48 = 8'h4;
     localparam  view$49 = 8'h4;
     localparam  view$50 = 8'h4;
     localparam  view$51 = 8'h4;
-    localparam  view$52 = 8'h3;
-    localparam  view$53 = 8'h3;
-    localparam  view$54 = 8'h3;
+    localparam  view$52 = 8'h4;
+    localparam  view$53 = 8'h4;
+    localparam  view$54 = 8'h4;
     localparam  view$55 = 8'h4;
     localparam  view$56 = 8'h4;
     localparam  view$57 = 8'h4;
@@ -9345,25 +9345,25 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     localparam  view_add$9 = 8'h3;
     localparam  view_add$10 = 8'h3;
     localparam  view_add$11 = 8'h3;
-    localparam  view_add$12 = 8'h3;
-    localparam  view_add$13 = 8'h3;
-    localparam  view_add$14 = 8'h3;
-    localparam  view_add$15 = 8'h3;
-    localparam  view_add$16 = 8'h3;
-    localparam  view_add$17 = 8'h3;
-    localparam  view_add$18 = 8'h3;
-    localparam  view_add$19 = 8'h3;
-    localparam  view_add$20 = 8'h3;
-    localparam  view_add$21 = 8'h3;
-    localparam  view_add$22 = 8'h3;
-    localparam  view_add$23 = 8'h3;
-    localparam  view_add$24 = 8'h3;
-    localparam  view_add$25 = 8'h3;
-    localparam  view_add$26 = 8'h3;
-    localparam  view_add$27 = 8'h3;
-    localparam  view_add$28 = 8'h3;
-    localparam  view_add$29 = 8'h3;
-    localparam  view_add$30 = 8'h3;
+    localparam  view_add$12 = 8'h4;
+    localparam  view_add$13 = 8'h4;
+    localparam  view_add$14 = 8'h4;
+    localparam  view_add$15 = 8'h4;
+    localparam  view_add$16 = 8'h4;
+    localparam  view_add$17 = 8'h4;
+    localparam  view_add$18 = 8'h4;
+    localparam  view_add$19 = 8'h4;
+    localparam  view_add$20 = 8'h4;
+    localparam  view_add$21 = 8'h4;
+    localparam  view_add$22 = 8'h4;
+    localparam  view_add$23 = 8'h4;
+    localparam  view_add$24 = 8'h4;
+    localparam  view_add$25 = 8'h4;
+    localparam  view_add$26 = 8'h4;
+    localparam  view_add$27 = 8'h4;
+    localparam  view_add$28 = 8'h4;
+    localparam  view_add$29 = 8'h4;
+    localparam  view_add$30 = 8'h4;
     localparam  view_add$31 = 8'h4;
     localparam  view_add$32 = 8'h4;
     localparam  view_add$33 = 8'h4;
@@ -9373,9 +9373,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     localparam  view_add$37 = 8'h4;
     localparam  view_add$38 = 8'h4;
     localparam  view_add$39 = 8'h4;
-    localparam  view_add$40 = 8'h3;
-    localparam  view_add$41 = 8'h3;
-    localparam  view_add$42 = 8'h3;
+    localparam  view_add$40 = 8'h4;
+    localparam  view_add$41 = 8'h4;
+    localparam  view_add$42 = 8'h4;
     localparam  view_add$43 = 8'h4;
     localparam  view_add$44 = 8'h4;
     localparam  view_add$45 = 8'h4;
@@ -9385,7 +9385,7 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     localparam  view_add$49 = 8'h4;
     localparam  view_add$50 = 8'h4;
     localparam  view_add$51 = 8'h4;
-    localparam  view_add$52 = 8'h3;
+    localparam  view_add$52 = 8'h4;
     localparam  view_add$53 = 8'h4;
     localparam  view_add$54 = 8'h4;
     localparam  view_add$55 = 8'h4;
@@ -9398,7 +9398,7 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     localparam  view_add$62 = 8'h4;
     localparam  view_add$63 = 8'h4;
     localparam  view_res$0 = 8'h3;
-    localparam  view_res$1 = 8'h2;
+    localparam  view_res$1 = 8'h3;
     localparam  view_res$2 = 8'h2;
     localparam  view_res$3 = 8'h3;
     localparam  view_res$4 = 8'h2;
@@ -9411,13 +9411,14 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     localparam  view_res_w$4 = 8'h2;
     localparam  view_res_w$5 = 8'h3;
     localparam  view_res_w$6 = 8'h2;
-    localparam  view_handover = 8'h4;
+    localparam  view_handover = 8'h5;
     localparam  ends$0 = 8'ha;
     localparam  ends$1 = 8'h14;
     localparam  ends$2 = 8'h1e;
     localparam  ends$3 = 8'h28;
-    localparam  ends$4 = 8'h30;
-    localparam  normalise = 8'h4;
+    localparam  ends$4 = 8'h32;
+    localparam  ends$5 = 8'h34;
+    localparam  normalise = 8'h5;
     localparam  cyc$0 = 8'h1;
     localparam  cyc$1 = 8'h1;
     localparam  cyc$2 = 8'h1;
@@ -9426,142 +9427,142 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     localparam  cyc$5 = 8'h1;
     localparam  cyc$6 = 8'h1;
     localparam  cyc$7 = 8'h2;
-    localparam  cyc$8 = 8'h20;
-    localparam  cyc$9 = 8'h20;
-    localparam  cyc$10 = 8'h20;
-    localparam  cyc$11 = 8'h20;
-    localparam  cyc$12 = 8'h23;
-    localparam  cyc$13 = 8'h23;
-    localparam  cyc$14 = 8'h23;
-    localparam  cyc$15 = 8'h23;
-    localparam  cyc$16 = 8'h23;
-    localparam  cyc$17 = 8'h23;
-    localparam  cyc$18 = 8'h23;
-    localparam  cyc$19 = 8'h24;
-    localparam  cyc$20 = 8'h24;
-    localparam  cyc$21 = 8'h24;
-    localparam  cyc$22 = 8'h24;
-    localparam  cyc$23 = 8'h24;
-    localparam  cyc$24 = 8'h24;
-    localparam  cyc$25 = 8'h24;
-    localparam  cyc$26 = 8'h25;
-    localparam  cyc$27 = 8'h25;
-    localparam  cyc$28 = 8'h26;
-    localparam  cyc$29 = 8'h26;
-    localparam  cyc$30 = 8'h26;
-    localparam  cyc$31 = 8'h27;
-    localparam  cyc$32 = 8'h27;
-    localparam  cyc$33 = 8'h27;
-    localparam  cyc$34 = 8'h27;
-    localparam  cyc$35 = 8'h27;
-    localparam  cyc$36 = 8'h28;
-    localparam  cyc$37 = 8'h2b;
-    localparam  cyc$38 = 8'h2b;
-    localparam  cyc$39 = 8'h2b;
-    localparam  cyc$40 = 8'h26;
-    localparam  cyc$41 = 8'h26;
-    localparam  cyc$42 = 8'h26;
-    localparam  cyc$43 = 8'h28;
-    localparam  cyc$44 = 8'h28;
-    localparam  cyc$45 = 8'h28;
-    localparam  cyc$46 = 8'h28;
-    localparam  cyc$47 = 8'h28;
-    localparam  cyc$48 = 8'h28;
-    localparam  cyc$49 = 8'h2c;
-    localparam  cyc$50 = 8'h2c;
-    localparam  cyc$51 = 8'h2c;
-    localparam  cyc$52 = 8'h26;
-    localparam  cyc$53 = 8'h27;
-    localparam  cyc$54 = 8'h27;
-    localparam  cyc$55 = 8'h2a;
-    localparam  cyc$56 = 8'h2a;
-    localparam  cyc$57 = 8'h2b;
-    localparam  cyc$58 = 8'h2b;
-    localparam  cyc$59 = 8'h2b;
-    localparam  cyc$60 = 8'h2b;
-    localparam  cyc$61 = 8'h2c;
-    localparam  cyc$62 = 8'h2c;
-    localparam  cyc$63 = 8'h2c;
-    localparam  cyc_add$0 = 8'h3;
-    localparam  cyc_add$1 = 8'h3;
-    localparam  cyc_add$2 = 8'h3;
-    localparam  cyc_add$3 = 8'h3;
-    localparam  cyc_add$4 = 8'h3;
-    localparam  cyc_add$5 = 8'h3;
-    localparam  cyc_add$6 = 8'h3;
-    localparam  cyc_add$7 = 8'h4;
-    localparam  cyc_add$8 = 8'h22;
-    localparam  cyc_add$9 = 8'h22;
-    localparam  cyc_add$10 = 8'h22;
-    localparam  cyc_add$11 = 8'h22;
-    localparam  cyc_add$12 = 8'h25;
-    localparam  cyc_add$13 = 8'h25;
-    localparam  cyc_add$14 = 8'h25;
-    localparam  cyc_add$15 = 8'h25;
-    localparam  cyc_add$16 = 8'h25;
-    localparam  cyc_add$17 = 8'h25;
-    localparam  cyc_add$18 = 8'h25;
-    localparam  cyc_add$19 = 8'h26;
-    localparam  cyc_add$20 = 8'h26;
-    localparam  cyc_add$21 = 8'h26;
-    localparam  cyc_add$22 = 8'h26;
-    localparam  cyc_add$23 = 8'h26;
-    localparam  cyc_add$24 = 8'h26;
-    localparam  cyc_add$25 = 8'h26;
-    localparam  cyc_add$26 = 8'h27;
-    localparam  cyc_add$27 = 8'h27;
-    localparam  cyc_add$28 = 8'h28;
-    localparam  cyc_add$29 = 8'h28;
-    localparam  cyc_add$30 = 8'h28;
-    localparam  cyc_add$31 = 8'h29;
-    localparam  cyc_add$32 = 8'h29;
-    localparam  cyc_add$33 = 8'h29;
-    localparam  cyc_add$34 = 8'h29;
-    localparam  cyc_add$35 = 8'h29;
-    localparam  cyc_add$36 = 8'h2a;
-    localparam  cyc_add$37 = 8'h2d;
-    localparam  cyc_add$38 = 8'h2d;
-    localparam  cyc_add$39 = 8'h2d;
-    localparam  cyc_add$40 = 8'h28;
-    localparam  cyc_add$41 = 8'h28;
-    localparam  cyc_add$42 = 8'h28;
-    localparam  cyc_add$43 = 8'h2a;
-    localparam  cyc_add$44 = 8'h2a;
-    localparam  cyc_add$45 = 8'h2a;
-    localparam  cyc_add$46 = 8'h2a;
-    localparam  cyc_add$47 = 8'h2a;
-    localparam  cyc_add$48 = 8'h2a;
-    localparam  cyc_add$49 = 8'h2e;
-    localparam  cyc_add$50 = 8'h2e;
-    localparam  cyc_add$51 = 8'h2e;
-    localparam  cyc_add$52 = 8'h28;
-    localparam  cyc_add$53 = 8'h29;
-    localparam  cyc_add$54 = 8'h29;
-    localparam  cyc_add$55 = 8'h2c;
-    localparam  cyc_add$56 = 8'h2c;
-    localparam  cyc_add$57 = 8'h2d;
-    localparam  cyc_add$58 = 8'h2d;
-    localparam  cyc_add$59 = 8'h2d;
-    localparam  cyc_add$60 = 8'h2d;
-    localparam  cyc_add$61 = 8'h2e;
-    localparam  cyc_add$62 = 8'h2e;
-    localparam  cyc_add$63 = 8'h2e;
-    localparam  iss$0 = 8'h5;
-    localparam  iss$1 = 8'h4;
+    localparam  cyc$8 = 8'h21;
+    localparam  cyc$9 = 8'h21;
+    localparam  cyc$10 = 8'h21;
+    localparam  cyc$11 = 8'h21;
+    localparam  cyc$12 = 8'h26;
+    localparam  cyc$13 = 8'h26;
+    localparam  cyc$14 = 8'h26;
+    localparam  cyc$15 = 8'h26;
+    localparam  cyc$16 = 8'h26;
+    localparam  cyc$17 = 8'h26;
+    localparam  cyc$18 = 8'h26;
+    localparam  cyc$19 = 8'h27;
+    localparam  cyc$20 = 8'h27;
+    localparam  cyc$21 = 8'h27;
+    localparam  cyc$22 = 8'h27;
+    localparam  cyc$23 = 8'h27;
+    localparam  cyc$24 = 8'h27;
+    localparam  cyc$25 = 8'h27;
+    localparam  cyc$26 = 8'h28;
+    localparam  cyc$27 = 8'h28;
+    localparam  cyc$28 = 8'h2a;
+    localparam  cyc$29 = 8'h2a;
+    localparam  cyc$30 = 8'h2a;
+    localparam  cyc$31 = 8'h2c;
+    localparam  cyc$32 = 8'h2c;
+    localparam  cyc$33 = 8'h2c;
+    localparam  cyc$34 = 8'h2c;
+    localparam  cyc$35 = 8'h2c;
+    localparam  cyc$36 = 8'h2c;
+    localparam  cyc$37 = 8'h2e;
+    localparam  cyc$38 = 8'h2e;
+    localparam  cyc$39 = 8'h2e;
+    localparam  cyc$40 = 8'h2a;
+    localparam  cyc$41 = 8'h2a;
+    localparam  cyc$42 = 8'h2a;
+    localparam  cyc$43 = 8'h2c;
+    localparam  cyc$44 = 8'h2d;
+    localparam  cyc$45 = 8'h2d;
+    localparam  cyc$46 = 8'h2d;
+    localparam  cyc$47 = 8'h2d;
+    localparam  cyc$48 = 8'h2d;
+    localparam  cyc$49 = 8'h2f;
+    localparam  cyc$50 = 8'h2f;
+    localparam  cyc$51 = 8'h2f;
+    localparam  cyc$52 = 8'h2b;
+    localparam  cyc$53 = 8'h2b;
+    localparam  cyc$54 = 8'h2b;
+    localparam  cyc$55 = 8'h2d;
+    localparam  cyc$56 = 8'h2d;
+    localparam  cyc$57 = 8'h2e;
+    localparam  cyc$58 = 8'h2e;
+    localparam  cyc$59 = 8'h2e;
+    localparam  cyc$60 = 8'h2e;
+    localparam  cyc$61 = 8'h2f;
+    localparam  cyc$62 = 8'h2f;
+    localparam  cyc$63 = 8'h2f;
+    localparam  cyc_add$0 = 8'h4;
+    localparam  cyc_add$1 = 8'h4;
+    localparam  cyc_add$2 = 8'h4;
+    localparam  cyc_add$3 = 8'h4;
+    localparam  cyc_add$4 = 8'h4;
+    localparam  cyc_add$5 = 8'h4;
+    localparam  cyc_add$6 = 8'h4;
+    localparam  cyc_add$7 = 8'h5;
+    localparam  cyc_add$8 = 8'h24;
+    localparam  cyc_add$9 = 8'h24;
+    localparam  cyc_add$10 = 8'h24;
+    localparam  cyc_add$11 = 8'h24;
+    localparam  cyc_add$12 = 8'h29;
+    localparam  cyc_add$13 = 8'h29;
+    localparam  cyc_add$14 = 8'h29;
+    localparam  cyc_add$15 = 8'h29;
+    localparam  cyc_add$16 = 8'h29;
+    localparam  cyc_add$17 = 8'h29;
+    localparam  cyc_add$18 = 8'h29;
+    localparam  cyc_add$19 = 8'h2a;
+    localparam  cyc_add$20 = 8'h2a;
+    localparam  cyc_add$21 = 8'h2a;
+    localparam  cyc_add$22 = 8'h2a;
+    localparam  cyc_add$23 = 8'h2a;
+    localparam  cyc_add$24 = 8'h2a;
+    localparam  cyc_add$25 = 8'h2a;
+    localparam  cyc_add$26 = 8'h2b;
+    localparam  cyc_add$27 = 8'h2b;
+    localparam  cyc_add$28 = 8'h2d;
+    localparam  cyc_add$29 = 8'h2d;
+    localparam  cyc_add$30 = 8'h2d;
+    localparam  cyc_add$31 = 8'h2f;
+    localparam  cyc_add$32 = 8'h2f;
+    localparam  cyc_add$33 = 8'h2f;
+    localparam  cyc_add$34 = 8'h2f;
+    localparam  cyc_add$35 = 8'h2f;
+    localparam  cyc_add$36 = 8'h2f;
+    localparam  cyc_add$37 = 8'h31;
+    localparam  cyc_add$38 = 8'h31;
+    localparam  cyc_add$39 = 8'h31;
+    localparam  cyc_add$40 = 8'h2d;
+    localparam  cyc_add$41 = 8'h2d;
+    localparam  cyc_add$42 = 8'h2d;
+    localparam  cyc_add$43 = 8'h2f;
+    localparam  cyc_add$44 = 8'h30;
+    localparam  cyc_add$45 = 8'h30;
+    localparam  cyc_add$46 = 8'h30;
+    localparam  cyc_add$47 = 8'h30;
+    localparam  cyc_add$48 = 8'h30;
+    localparam  cyc_add$49 = 8'h32;
+    localparam  cyc_add$50 = 8'h32;
+    localparam  cyc_add$51 = 8'h32;
+    localparam  cyc_add$52 = 8'h2e;
+    localparam  cyc_add$53 = 8'h2e;
+    localparam  cyc_add$54 = 8'h2e;
+    localparam  cyc_add$55 = 8'h30;
+    localparam  cyc_add$56 = 8'h30;
+    localparam  cyc_add$57 = 8'h31;
+    localparam  cyc_add$58 = 8'h31;
+    localparam  cyc_add$59 = 8'h31;
+    localparam  cyc_add$60 = 8'h31;
+    localparam  cyc_add$61 = 8'h32;
+    localparam  cyc_add$62 = 8'h32;
+    localparam  cyc_add$63 = 8'h32;
+    localparam  iss$0 = 8'h6;
+    localparam  iss$1 = 8'h5;
     localparam  iss$2 = 8'h1;
-    localparam  iss$3 = 8'h6;
+    localparam  iss$3 = 8'h7;
     localparam  iss$4 = 8'h2;
-    localparam  iss$5 = 8'h7;
+    localparam  iss$5 = 8'h8;
     localparam  iss$6 = 8'h3;
-    localparam  res$0 = 8'h1f;
-    localparam  res$1 = 8'h1e;
+    localparam  res$0 = 8'h20;
+    localparam  res$1 = 8'h1f;
     localparam  res$2 = 8'h1b;
-    localparam  res$3 = 8'h20;
+    localparam  res$3 = 8'h21;
     localparam  res$4 = 8'h1c;
-    localparam  res$5 = 8'h21;
+    localparam  res$5 = 8'h22;
     localparam  res$6 = 8'h1d;
-    localparam  handover = 8'h2f;
-    localparam  last = 8'h30;
+    localparam  handover = 8'h33;
+    localparam  last = 8'h34;
     localparam  ii_m1 = 8'h9;
     localparam  recip_n = 58'h100000000000000;
     localparam  recip_top = 6'b100000;
@@ -9676,6 +9677,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [7:0] t$4$d;
     wire  [7:0] t$4$q;
     reg  t$4$clock;
+    reg  [7:0] t$5$d;
+    wire  [7:0] t$5$q;
+    reg  t$5$clock;
     reg  act_r$0$d;
     wire  act_r$0$q;
     reg  act_r$0$clock;
@@ -10165,6 +10169,15 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [15:0] vx$14$d;
     wire  [15:0] vx$14$q;
     reg  vx$14$clock;
+    reg  [15:0] vx$15$d;
+    wire  [15:0] vx$15$q;
+    reg  vx$15$clock;
+    reg  [15:0] vx$16$d;
+    wire  [15:0] vx$16$q;
+    reg  vx$16$clock;
+    reg  [15:0] vx$17$d;
+    wire  [15:0] vx$17$q;
+    reg  vx$17$clock;
     reg  [15:0] vy$0$d;
     wire  [15:0] vy$0$q;
     reg  vy$0$clock;
@@ -10210,6 +10223,15 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [15:0] vy$14$d;
     wire  [15:0] vy$14$q;
     reg  vy$14$clock;
+    reg  [15:0] vy$15$d;
+    wire  [15:0] vy$15$q;
+    reg  vy$15$clock;
+    reg  [15:0] vy$16$d;
+    wire  [15:0] vy$16$q;
+    reg  vy$16$clock;
+    reg  [15:0] vy$17$d;
+    wire  [15:0] vy$17$q;
+    reg  vy$17$clock;
     reg  [17:0] vz$0$d;
     wire  [17:0] vz$0$q;
     reg  vz$0$clock;
@@ -10255,6 +10277,15 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [17:0] vz$14$d;
     wire  [17:0] vz$14$q;
     reg  vz$14$clock;
+    reg  [17:0] vz$15$d;
+    wire  [17:0] vz$15$q;
+    reg  vz$15$clock;
+    reg  [17:0] vz$16$d;
+    wire  [17:0] vz$16$q;
+    reg  vz$16$clock;
+    reg  [17:0] vz$17$d;
+    wire  [17:0] vz$17$q;
+    reg  vz$17$clock;
     reg  [7:0] vc$0$d;
     wire  [7:0] vc$0$q;
     reg  vc$0$clock;
@@ -10390,6 +10421,33 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [7:0] vc$44$d;
     wire  [7:0] vc$44$q;
     reg  vc$44$clock;
+    reg  [7:0] vc$45$d;
+    wire  [7:0] vc$45$q;
+    reg  vc$45$clock;
+    reg  [7:0] vc$46$d;
+    wire  [7:0] vc$46$q;
+    reg  vc$46$clock;
+    reg  [7:0] vc$47$d;
+    wire  [7:0] vc$47$q;
+    reg  vc$47$clock;
+    reg  [7:0] vc$48$d;
+    wire  [7:0] vc$48$q;
+    reg  vc$48$clock;
+    reg  [7:0] vc$49$d;
+    wire  [7:0] vc$49$q;
+    reg  vc$49$clock;
+    reg  [7:0] vc$50$d;
+    wire  [7:0] vc$50$q;
+    reg  vc$50$clock;
+    reg  [7:0] vc$51$d;
+    wire  [7:0] vc$51$q;
+    reg  vc$51$clock;
+    reg  [7:0] vc$52$d;
+    wire  [7:0] vc$52$q;
+    reg  vc$52$clock;
+    reg  [7:0] vc$53$d;
+    wire  [7:0] vc$53$q;
+    reg  vc$53$clock;
     reg  [5:0] crosses$0$d;
     wire  [5:0] crosses$0$q;
     reg  crosses$0$clock;
@@ -10405,6 +10463,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [5:0] crosses$4$d;
     wire  [5:0] crosses$4$q;
     reg  crosses$4$clock;
+    reg  [5:0] crosses$5$d;
+    wire  [5:0] crosses$5$q;
+    reg  crosses$5$clock;
     reg  sign$0$d;
     wire  sign$0$q;
     reg  sign$0$clock;
@@ -10420,6 +10481,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  sign$4$d;
     wire  sign$4$q;
     reg  sign$4$clock;
+    reg  sign$5$d;
+    wire  sign$5$q;
+    reg  sign$5$clock;
     reg  [5:0] exp$0$d;
     wire  [5:0] exp$0$q;
     reg  exp$0$clock;
@@ -10435,6 +10499,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [5:0] exp$4$d;
     wire  [5:0] exp$4$q;
     reg  exp$4$clock;
+    reg  [5:0] exp$5$d;
+    wire  [5:0] exp$5$q;
+    reg  exp$5$clock;
     reg  [24:0] mant$0$d;
     wire  [24:0] mant$0$q;
     reg  mant$0$clock;
@@ -10450,6 +10517,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [24:0] mant$4$d;
     wire  [24:0] mant$4$q;
     reg  mant$4$clock;
+    reg  [24:0] mant$5$d;
+    wire  [24:0] mant$5$q;
+    reg  mant$5$clock;
     reg  [18:0] x$0$d;
     wire  [18:0] x$0$q;
     reg  x$0$clock;
@@ -10495,6 +10565,15 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [18:0] x$14$d;
     wire  [18:0] x$14$q;
     reg  x$14$clock;
+    reg  [18:0] x$15$d;
+    wire  [18:0] x$15$q;
+    reg  x$15$clock;
+    reg  [18:0] x$16$d;
+    wire  [18:0] x$16$q;
+    reg  x$16$clock;
+    reg  [18:0] x$17$d;
+    wire  [18:0] x$17$q;
+    reg  x$17$clock;
     reg  [20:0] r$0$d;
     wire  [20:0] r$0$q;
     reg  r$0$clock;
@@ -10540,6 +10619,15 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [20:0] r$14$d;
     wire  [20:0] r$14$q;
     reg  r$14$clock;
+    reg  [20:0] r$15$d;
+    wire  [20:0] r$15$q;
+    reg  r$15$clock;
+    reg  [20:0] r$16$d;
+    wire  [20:0] r$16$q;
+    reg  r$16$clock;
+    reg  [20:0] r$17$d;
+    wire  [20:0] r$17$q;
+    reg  r$17$clock;
     reg  [18:0] q$0$d;
     wire  [18:0] q$0$q;
     reg  q$0$clock;
@@ -10585,6 +10673,15 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [18:0] q$14$d;
     wire  [18:0] q$14$q;
     reg  q$14$clock;
+    reg  [18:0] q$15$d;
+    wire  [18:0] q$15$q;
+    reg  q$15$clock;
+    reg  [18:0] q$16$d;
+    wire  [18:0] q$16$q;
+    reg  q$16$clock;
+    reg  [18:0] q$17$d;
+    wire  [18:0] q$17$q;
+    reg  q$17$clock;
     reg  [20:0] rho$0$d;
     wire  [20:0] rho$0$q;
     reg  rho$0$clock;
@@ -10630,6 +10727,15 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [20:0] rho$14$d;
     wire  [20:0] rho$14$q;
     reg  rho$14$clock;
+    reg  [20:0] rho$15$d;
+    wire  [20:0] rho$15$q;
+    reg  rho$15$clock;
+    reg  [20:0] rho$16$d;
+    wire  [20:0] rho$16$q;
+    reg  rho$16$clock;
+    reg  [20:0] rho$17$d;
+    wire  [20:0] rho$17$q;
+    reg  rho$17$clock;
     reg  g0$clock;
     reg  [15:0] g0$vx$0;
     reg  [15:0] g0$vx$1;
@@ -11010,6 +11116,82 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     wire  [39:0] g4$attr0$1;
     wire  [39:0] g4$attr0$2;
     wire  [39:0] g4$attr0$3;
+    reg  g5$clock;
+    reg  [15:0] g5$vx$0;
+    reg  [15:0] g5$vx$1;
+    reg  [15:0] g5$vx$2;
+    reg  [15:0] g5$vy$0;
+    reg  [15:0] g5$vy$1;
+    reg  [15:0] g5$vy$2;
+    reg  [17:0] g5$vz$0;
+    reg  [17:0] g5$vz$1;
+    reg  [17:0] g5$vz$2;
+    reg  [7:0] g5$vc$0;
+    reg  [7:0] g5$vc$1;
+    reg  [7:0] g5$vc$2;
+    reg  [7:0] g5$vc$3;
+    reg  [7:0] g5$vc$4;
+    reg  [7:0] g5$vc$5;
+    reg  [7:0] g5$vc$6;
+    reg  [7:0] g5$vc$7;
+    reg  [7:0] g5$vc$8;
+    reg  [5:0] g5$crosses;
+    reg  g5$maj_left;
+    reg  [18:0] g5$start_x$0;
+    reg  [18:0] g5$start_x$1;
+    reg  [18:0] g5$start_x$2;
+    wire  [57:0] g5$kdx$0;
+    wire  [57:0] g5$kdx$1;
+    wire  [57:0] g5$kdx$2;
+    wire  [56:0] g5$kdy$0;
+    wire  [56:0] g5$kdy$1;
+    wire  [56:0] g5$kdy$2;
+    wire  g5$up;
+    wire  [57:0] g5$edx$0;
+    wire  [57:0] g5$edx$1;
+    wire  [57:0] g5$edx$2;
+    wire  [56:0] g5$edy$0;
+    wire  [56:0] g5$edy$1;
+    wire  [56:0] g5$edy$2;
+    wire  [33:0] g5$edy_d$0;
+    wire  [33:0] g5$edy_d$1;
+    wire  [33:0] g5$edy_d$2;
+    wire  [33:0] g5$ed16$0;
+    wire  [33:0] g5$ed16$1;
+    wire  [33:0] g5$ed16$2;
+    wire  [18:0] g5$cy$0;
+    wire  [18:0] g5$cy$1;
+    wire  [18:0] g5$cy$2;
+    wire  [12:0] g5$count$0;
+    wire  [12:0] g5$count$1;
+    wire  [12:0] g5$count$2;
+    wire  [18:0] g5$toff$0;
+    wire  [18:0] g5$toff$1;
+    wire  [18:0] g5$toff$2;
+    wire  [18:0] g5$xf$0;
+    wire  [18:0] g5$xf$1;
+    wire  [18:0] g5$xf$2;
+    wire  [18:0] g5$xi$0;
+    wire  [18:0] g5$xi$1;
+    wire  [18:0] g5$xi$2;
+    wire  [18:0] g5$off_x$0;
+    wire  [18:0] g5$off_x$1;
+    wire  [18:0] g5$off_x$2;
+    wire  [18:0] g5$off_y$0;
+    wire  [18:0] g5$off_y$1;
+    wire  [18:0] g5$off_y$2;
+    wire  [18:0] g5$dmaj$0;
+    wire  [18:0] g5$dmaj$1;
+    wire  [18:0] g5$dmaj$2;
+    wire  [18:0] g5$dmaj$3;
+    wire  [18:0] g5$dbot$0;
+    wire  [18:0] g5$dbot$1;
+    wire  [18:0] g5$dbot$2;
+    wire  [18:0] g5$dbot$3;
+    wire  [39:0] g5$attr0$0;
+    wire  [39:0] g5$attr0$1;
+    wire  [39:0] g5$attr0$2;
+    wire  [39:0] g5$attr0$3;
     reg  [33:0] area$d;
     wire  [33:0] area$q;
     reg  area$clock;
@@ -11260,6 +11442,7 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  maj_left$2;
     reg  maj_left$3;
     reg  maj_left$4;
+    reg  maj_left$5;
     reg  [33:0] area_abs;
     reg  [35:0] abs_p;
     reg  nib_any$0;
@@ -11385,6 +11568,10 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [18:0] delta$17;
     reg  [18:0] delta$18;
     reg  [18:0] delta$19;
+    reg  [18:0] delta$20;
+    reg  [18:0] delta$21;
+    reg  [18:0] delta$22;
+    reg  [18:0] delta$23;
     reg  [18:0] eq_b$0;
     reg  [18:0] eq_b$1;
     reg  [18:0] eq_b$2;
@@ -11405,6 +11592,10 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [18:0] eq_b$17;
     reg  [18:0] eq_b$18;
     reg  [18:0] eq_b$19;
+    reg  [18:0] eq_b$20;
+    reg  [18:0] eq_b$21;
+    reg  [18:0] eq_b$22;
+    reg  [18:0] eq_b$23;
     reg  [18:0] op_e$0;
     reg  [18:0] op_e$1;
     reg  [18:0] op_e$2;
@@ -11589,6 +11780,11 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .d(t$4$d),
         .q(t$4$q),
         .clock(t$4$clock)
+    );
+    raster_top$fragments$core$triangle_setup$t$5 t$5(
+        .d(t$5$d),
+        .q(t$5$q),
+        .clock(t$5$clock)
     );
     raster_top$fragments$core$triangle_setup$act_r$0 act_r$0(
         .d(act_r$0$d),
@@ -12405,6 +12601,21 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .q(vx$14$q),
         .clock(vx$14$clock)
     );
+    raster_top$fragments$core$triangle_setup$vx$15 vx$15(
+        .d(vx$15$d),
+        .q(vx$15$q),
+        .clock(vx$15$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vx$16 vx$16(
+        .d(vx$16$d),
+        .q(vx$16$q),
+        .clock(vx$16$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vx$17 vx$17(
+        .d(vx$17$d),
+        .q(vx$17$q),
+        .clock(vx$17$clock)
+    );
     raster_top$fragments$core$triangle_setup$vy$0 vy$0(
         .d(vy$0$d),
         .q(vy$0$q),
@@ -12480,6 +12691,21 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .q(vy$14$q),
         .clock(vy$14$clock)
     );
+    raster_top$fragments$core$triangle_setup$vy$15 vy$15(
+        .d(vy$15$d),
+        .q(vy$15$q),
+        .clock(vy$15$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vy$16 vy$16(
+        .d(vy$16$d),
+        .q(vy$16$q),
+        .clock(vy$16$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vy$17 vy$17(
+        .d(vy$17$d),
+        .q(vy$17$q),
+        .clock(vy$17$clock)
+    );
     raster_top$fragments$core$triangle_setup$vz$0 vz$0(
         .d(vz$0$d),
         .q(vz$0$q),
@@ -12554,6 +12780,21 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .d(vz$14$d),
         .q(vz$14$q),
         .clock(vz$14$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vz$15 vz$15(
+        .d(vz$15$d),
+        .q(vz$15$q),
+        .clock(vz$15$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vz$16 vz$16(
+        .d(vz$16$d),
+        .q(vz$16$q),
+        .clock(vz$16$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vz$17 vz$17(
+        .d(vz$17$d),
+        .q(vz$17$q),
+        .clock(vz$17$clock)
     );
     raster_top$fragments$core$triangle_setup$vc$0 vc$0(
         .d(vc$0$d),
@@ -12780,6 +13021,51 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .q(vc$44$q),
         .clock(vc$44$clock)
     );
+    raster_top$fragments$core$triangle_setup$vc$45 vc$45(
+        .d(vc$45$d),
+        .q(vc$45$q),
+        .clock(vc$45$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vc$46 vc$46(
+        .d(vc$46$d),
+        .q(vc$46$q),
+        .clock(vc$46$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vc$47 vc$47(
+        .d(vc$47$d),
+        .q(vc$47$q),
+        .clock(vc$47$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vc$48 vc$48(
+        .d(vc$48$d),
+        .q(vc$48$q),
+        .clock(vc$48$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vc$49 vc$49(
+        .d(vc$49$d),
+        .q(vc$49$q),
+        .clock(vc$49$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vc$50 vc$50(
+        .d(vc$50$d),
+        .q(vc$50$q),
+        .clock(vc$50$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vc$51 vc$51(
+        .d(vc$51$d),
+        .q(vc$51$q),
+        .clock(vc$51$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vc$52 vc$52(
+        .d(vc$52$d),
+        .q(vc$52$q),
+        .clock(vc$52$clock)
+    );
+    raster_top$fragments$core$triangle_setup$vc$53 vc$53(
+        .d(vc$53$d),
+        .q(vc$53$q),
+        .clock(vc$53$clock)
+    );
     raster_top$fragments$core$triangle_setup$crosses$0 crosses$0(
         .d(crosses$0$d),
         .q(crosses$0$q),
@@ -12804,6 +13090,11 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .d(crosses$4$d),
         .q(crosses$4$q),
         .clock(crosses$4$clock)
+    );
+    raster_top$fragments$core$triangle_setup$crosses$5 crosses$5(
+        .d(crosses$5$d),
+        .q(crosses$5$q),
+        .clock(crosses$5$clock)
     );
     raster_top$fragments$core$triangle_setup$sign$0 sign$0(
         .d(sign$0$d),
@@ -12830,6 +13121,11 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .q(sign$4$q),
         .clock(sign$4$clock)
     );
+    raster_top$fragments$core$triangle_setup$sign$5 sign$5(
+        .d(sign$5$d),
+        .q(sign$5$q),
+        .clock(sign$5$clock)
+    );
     raster_top$fragments$core$triangle_setup$exp$0 exp$0(
         .d(exp$0$d),
         .q(exp$0$q),
@@ -12855,6 +13151,11 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .q(exp$4$q),
         .clock(exp$4$clock)
     );
+    raster_top$fragments$core$triangle_setup$exp$5 exp$5(
+        .d(exp$5$d),
+        .q(exp$5$q),
+        .clock(exp$5$clock)
+    );
     raster_top$fragments$core$triangle_setup$mant$0 mant$0(
         .d(mant$0$d),
         .q(mant$0$q),
@@ -12879,6 +13180,11 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .d(mant$4$d),
         .q(mant$4$q),
         .clock(mant$4$clock)
+    );
+    raster_top$fragments$core$triangle_setup$mant$5 mant$5(
+        .d(mant$5$d),
+        .q(mant$5$q),
+        .clock(mant$5$clock)
     );
     raster_top$fragments$core$triangle_setup$x$0 x$0(
         .d(x$0$d),
@@ -12955,6 +13261,21 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .q(x$14$q),
         .clock(x$14$clock)
     );
+    raster_top$fragments$core$triangle_setup$x$15 x$15(
+        .d(x$15$d),
+        .q(x$15$q),
+        .clock(x$15$clock)
+    );
+    raster_top$fragments$core$triangle_setup$x$16 x$16(
+        .d(x$16$d),
+        .q(x$16$q),
+        .clock(x$16$clock)
+    );
+    raster_top$fragments$core$triangle_setup$x$17 x$17(
+        .d(x$17$d),
+        .q(x$17$q),
+        .clock(x$17$clock)
+    );
     raster_top$fragments$core$triangle_setup$r$0 r$0(
         .d(r$0$d),
         .q(r$0$q),
@@ -13029,6 +13350,21 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .d(r$14$d),
         .q(r$14$q),
         .clock(r$14$clock)
+    );
+    raster_top$fragments$core$triangle_setup$r$15 r$15(
+        .d(r$15$d),
+        .q(r$15$q),
+        .clock(r$15$clock)
+    );
+    raster_top$fragments$core$triangle_setup$r$16 r$16(
+        .d(r$16$d),
+        .q(r$16$q),
+        .clock(r$16$clock)
+    );
+    raster_top$fragments$core$triangle_setup$r$17 r$17(
+        .d(r$17$d),
+        .q(r$17$q),
+        .clock(r$17$clock)
     );
     raster_top$fragments$core$triangle_setup$q$0 q$0(
         .d(q$0$d),
@@ -13105,6 +13441,21 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .q(q$14$q),
         .clock(q$14$clock)
     );
+    raster_top$fragments$core$triangle_setup$q$15 q$15(
+        .d(q$15$d),
+        .q(q$15$q),
+        .clock(q$15$clock)
+    );
+    raster_top$fragments$core$triangle_setup$q$16 q$16(
+        .d(q$16$d),
+        .q(q$16$q),
+        .clock(q$16$clock)
+    );
+    raster_top$fragments$core$triangle_setup$q$17 q$17(
+        .d(q$17$d),
+        .q(q$17$q),
+        .clock(q$17$clock)
+    );
     raster_top$fragments$core$triangle_setup$rho$0 rho$0(
         .d(rho$0$d),
         .q(rho$0$q),
@@ -13179,6 +13530,21 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .d(rho$14$d),
         .q(rho$14$q),
         .clock(rho$14$clock)
+    );
+    raster_top$fragments$core$triangle_setup$rho$15 rho$15(
+        .d(rho$15$d),
+        .q(rho$15$q),
+        .clock(rho$15$clock)
+    );
+    raster_top$fragments$core$triangle_setup$rho$16 rho$16(
+        .d(rho$16$d),
+        .q(rho$16$q),
+        .clock(rho$16$clock)
+    );
+    raster_top$fragments$core$triangle_setup$rho$17 rho$17(
+        .d(rho$17$d),
+        .q(rho$17$q),
+        .clock(rho$17$clock)
     );
     raster_top$fragments$core$triangle_setup$g0 g0(
         .clock(g0$clock),
@@ -13569,6 +13935,84 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .attr0$1(g4$attr0$1),
         .attr0$2(g4$attr0$2),
         .attr0$3(g4$attr0$3)
+    );
+    raster_top$fragments$core$triangle_setup$g5 g5(
+        .clock(g5$clock),
+        .vx$0(g5$vx$0),
+        .vx$1(g5$vx$1),
+        .vx$2(g5$vx$2),
+        .vy$0(g5$vy$0),
+        .vy$1(g5$vy$1),
+        .vy$2(g5$vy$2),
+        .vz$0(g5$vz$0),
+        .vz$1(g5$vz$1),
+        .vz$2(g5$vz$2),
+        .vc$0(g5$vc$0),
+        .vc$1(g5$vc$1),
+        .vc$2(g5$vc$2),
+        .vc$3(g5$vc$3),
+        .vc$4(g5$vc$4),
+        .vc$5(g5$vc$5),
+        .vc$6(g5$vc$6),
+        .vc$7(g5$vc$7),
+        .vc$8(g5$vc$8),
+        .crosses(g5$crosses),
+        .maj_left(g5$maj_left),
+        .start_x$0(g5$start_x$0),
+        .start_x$1(g5$start_x$1),
+        .start_x$2(g5$start_x$2),
+        .kdx$0(g5$kdx$0),
+        .kdx$1(g5$kdx$1),
+        .kdx$2(g5$kdx$2),
+        .kdy$0(g5$kdy$0),
+        .kdy$1(g5$kdy$1),
+        .kdy$2(g5$kdy$2),
+        .up(g5$up),
+        .edx$0(g5$edx$0),
+        .edx$1(g5$edx$1),
+        .edx$2(g5$edx$2),
+        .edy$0(g5$edy$0),
+        .edy$1(g5$edy$1),
+        .edy$2(g5$edy$2),
+        .edy_d$0(g5$edy_d$0),
+        .edy_d$1(g5$edy_d$1),
+        .edy_d$2(g5$edy_d$2),
+        .ed16$0(g5$ed16$0),
+        .ed16$1(g5$ed16$1),
+        .ed16$2(g5$ed16$2),
+        .cy$0(g5$cy$0),
+        .cy$1(g5$cy$1),
+        .cy$2(g5$cy$2),
+        .count$0(g5$count$0),
+        .count$1(g5$count$1),
+        .count$2(g5$count$2),
+        .toff$0(g5$toff$0),
+        .toff$1(g5$toff$1),
+        .toff$2(g5$toff$2),
+        .xf$0(g5$xf$0),
+        .xf$1(g5$xf$1),
+        .xf$2(g5$xf$2),
+        .xi$0(g5$xi$0),
+        .xi$1(g5$xi$1),
+        .xi$2(g5$xi$2),
+        .off_x$0(g5$off_x$0),
+        .off_x$1(g5$off_x$1),
+        .off_x$2(g5$off_x$2),
+        .off_y$0(g5$off_y$0),
+        .off_y$1(g5$off_y$1),
+        .off_y$2(g5$off_y$2),
+        .dmaj$0(g5$dmaj$0),
+        .dmaj$1(g5$dmaj$1),
+        .dmaj$2(g5$dmaj$2),
+        .dmaj$3(g5$dmaj$3),
+        .dbot$0(g5$dbot$0),
+        .dbot$1(g5$dbot$1),
+        .dbot$2(g5$dbot$2),
+        .dbot$3(g5$dbot$3),
+        .attr0$0(g5$attr0$0),
+        .attr0$1(g5$attr0$1),
+        .attr0$2(g5$attr0$2),
+        .attr0$3(g5$attr0$3)
     );
     raster_top$fragments$core$triangle_setup$area area(
         .d(area$d),
@@ -14006,6 +14450,7 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         g2$clock = clock;
         g3$clock = clock;
         g4$clock = clock;
+        g5$clock = clock;
         t$0$clock = clock;
         t$0$d = t$0$q;
         crosses$0$clock = clock;
@@ -14356,6 +14801,76 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         vc$43$d = vc$43$q;
         vc$44$clock = clock;
         vc$44$d = vc$44$q;
+        t$5$clock = clock;
+        t$5$d = t$5$q;
+        crosses$5$clock = clock;
+        crosses$5$d = crosses$5$q;
+        sign$5$clock = clock;
+        sign$5$d = sign$5$q;
+        exp$5$clock = clock;
+        exp$5$d = exp$5$q;
+        mant$5$clock = clock;
+        mant$5$d = mant$5$q;
+        x$15$clock = clock;
+        x$15$d = x$15$q;
+        r$15$clock = clock;
+        r$15$d = r$15$q;
+        q$15$clock = clock;
+        q$15$d = q$15$q;
+        rho$15$clock = clock;
+        rho$15$d = rho$15$q;
+        vx$15$clock = clock;
+        vx$15$d = vx$15$q;
+        vy$15$clock = clock;
+        vy$15$d = vy$15$q;
+        vz$15$clock = clock;
+        vz$15$d = vz$15$q;
+        x$16$clock = clock;
+        x$16$d = x$16$q;
+        r$16$clock = clock;
+        r$16$d = r$16$q;
+        q$16$clock = clock;
+        q$16$d = q$16$q;
+        rho$16$clock = clock;
+        rho$16$d = rho$16$q;
+        vx$16$clock = clock;
+        vx$16$d = vx$16$q;
+        vy$16$clock = clock;
+        vy$16$d = vy$16$q;
+        vz$16$clock = clock;
+        vz$16$d = vz$16$q;
+        x$17$clock = clock;
+        x$17$d = x$17$q;
+        r$17$clock = clock;
+        r$17$d = r$17$q;
+        q$17$clock = clock;
+        q$17$d = q$17$q;
+        rho$17$clock = clock;
+        rho$17$d = rho$17$q;
+        vx$17$clock = clock;
+        vx$17$d = vx$17$q;
+        vy$17$clock = clock;
+        vy$17$d = vy$17$q;
+        vz$17$clock = clock;
+        vz$17$d = vz$17$q;
+        vc$45$clock = clock;
+        vc$45$d = vc$45$q;
+        vc$46$clock = clock;
+        vc$46$d = vc$46$q;
+        vc$47$clock = clock;
+        vc$47$d = vc$47$q;
+        vc$48$clock = clock;
+        vc$48$d = vc$48$q;
+        vc$49$clock = clock;
+        vc$49$d = vc$49$q;
+        vc$50$clock = clock;
+        vc$50$d = vc$50$q;
+        vc$51$clock = clock;
+        vc$51$d = vc$51$q;
+        vc$52$clock = clock;
+        vc$52$d = vc$52$q;
+        vc$53$clock = clock;
+        vc$53$d = vc$53$q;
         num$0$clock = clock;
         num$0$d = num$0$q;
         num$1$clock = clock;
@@ -14478,6 +14993,7 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         maj_left$2 = sign$2$q;
         maj_left$3 = sign$3$q;
         maj_left$4 = sign$4$q;
+        maj_left$5 = sign$5$q;
         run = ~(valid_r$q & ~out$ready);
         out$valid = valid_r$q;
         inp$ready = run & ~(busy_r$q & off_grid_r$q);
@@ -14519,6 +15035,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             end
             if (t$4$q == ends$4) begin
                 t$4$d = 32'h0;
+            end
+            if (t$5$q != 32'h0) begin
+                t$5$d = t$5$q + 32'h1;
+            end
+            if (t$5$q == ends$5) begin
+                t$5$d = 32'h0;
             end
             if (t$0$q == ends$0) begin
                 t$1$d = ends$0 + 32'h1;
@@ -14668,6 +15190,43 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
                 vc$43$d = vc$34$q;
                 vc$44$d = vc$35$q;
             end
+            if (t$4$q == ends$4) begin
+                t$5$d = ends$4 + 32'h1;
+                crosses$5$d = crosses$4$q;
+                sign$5$d = maj_left$4;
+                exp$5$d = exp$4$q;
+                mant$5$d = mant$4$q;
+                x$15$d = x$12$q;
+                r$15$d = r$12$q;
+                q$15$d = q$12$q;
+                rho$15$d = rho$12$q;
+                vx$15$d = vx$12$q;
+                vy$15$d = vy$12$q;
+                vz$15$d = vz$12$q;
+                x$16$d = x$13$q;
+                r$16$d = r$13$q;
+                q$16$d = q$13$q;
+                rho$16$d = rho$13$q;
+                vx$16$d = vx$13$q;
+                vy$16$d = vy$13$q;
+                vz$16$d = vz$13$q;
+                x$17$d = x$14$q;
+                r$17$d = r$14$q;
+                q$17$d = q$14$q;
+                rho$17$d = rho$14$q;
+                vx$17$d = vx$14$q;
+                vy$17$d = vy$14$q;
+                vz$17$d = vz$14$q;
+                vc$45$d = vc$36$q;
+                vc$46$d = vc$37$q;
+                vc$47$d = vc$38$q;
+                vc$48$d = vc$39$q;
+                vc$49$d = vc$40$q;
+                vc$50$d = vc$41$q;
+                vc$51$d = vc$42$q;
+                vc$52$d = vc$43$q;
+                vc$53$d = vc$44$q;
+            end
         end
         if (take) begin
             t$0$d = 32'h1;
@@ -14725,6 +15284,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$0 == 4) & (t$4$d == cyc_add$0)) begin
             add_r$0$d = 1'b1;
         end
+        if ((view$0 == 5) & (t$5$d == cyc$0)) begin
+            act_r$0$d = 1'b1;
+        end
+        if ((view_add$0 == 5) & (t$5$d == cyc_add$0)) begin
+            add_r$0$d = 1'b1;
+        end
         act_r$1$clock = clock;
         act_r$1$d = 1'b0;
         add_r$1$clock = clock;
@@ -14757,6 +15322,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$1$d = 1'b1;
         end
         if ((view_add$1 == 4) & (t$4$d == cyc_add$1)) begin
+            add_r$1$d = 1'b1;
+        end
+        if ((view$1 == 5) & (t$5$d == cyc$1)) begin
+            act_r$1$d = 1'b1;
+        end
+        if ((view_add$1 == 5) & (t$5$d == cyc_add$1)) begin
             add_r$1$d = 1'b1;
         end
         act_r$2$clock = clock;
@@ -14793,6 +15364,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$2 == 4) & (t$4$d == cyc_add$2)) begin
             add_r$2$d = 1'b1;
         end
+        if ((view$2 == 5) & (t$5$d == cyc$2)) begin
+            act_r$2$d = 1'b1;
+        end
+        if ((view_add$2 == 5) & (t$5$d == cyc_add$2)) begin
+            add_r$2$d = 1'b1;
+        end
         act_r$3$clock = clock;
         act_r$3$d = 1'b0;
         add_r$3$clock = clock;
@@ -14825,6 +15402,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$3$d = 1'b1;
         end
         if ((view_add$3 == 4) & (t$4$d == cyc_add$3)) begin
+            add_r$3$d = 1'b1;
+        end
+        if ((view$3 == 5) & (t$5$d == cyc$3)) begin
+            act_r$3$d = 1'b1;
+        end
+        if ((view_add$3 == 5) & (t$5$d == cyc_add$3)) begin
             add_r$3$d = 1'b1;
         end
         act_r$4$clock = clock;
@@ -14861,6 +15444,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$4 == 4) & (t$4$d == cyc_add$4)) begin
             add_r$4$d = 1'b1;
         end
+        if ((view$4 == 5) & (t$5$d == cyc$4)) begin
+            act_r$4$d = 1'b1;
+        end
+        if ((view_add$4 == 5) & (t$5$d == cyc_add$4)) begin
+            add_r$4$d = 1'b1;
+        end
         act_r$5$clock = clock;
         act_r$5$d = 1'b0;
         add_r$5$clock = clock;
@@ -14893,6 +15482,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$5$d = 1'b1;
         end
         if ((view_add$5 == 4) & (t$4$d == cyc_add$5)) begin
+            add_r$5$d = 1'b1;
+        end
+        if ((view$5 == 5) & (t$5$d == cyc$5)) begin
+            act_r$5$d = 1'b1;
+        end
+        if ((view_add$5 == 5) & (t$5$d == cyc_add$5)) begin
             add_r$5$d = 1'b1;
         end
         act_r$6$clock = clock;
@@ -14929,6 +15524,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$6 == 4) & (t$4$d == cyc_add$6)) begin
             add_r$6$d = 1'b1;
         end
+        if ((view$6 == 5) & (t$5$d == cyc$6)) begin
+            act_r$6$d = 1'b1;
+        end
+        if ((view_add$6 == 5) & (t$5$d == cyc_add$6)) begin
+            add_r$6$d = 1'b1;
+        end
         act_r$7$clock = clock;
         act_r$7$d = 1'b0;
         add_r$7$clock = clock;
@@ -14961,6 +15562,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$7$d = 1'b1;
         end
         if ((view_add$7 == 4) & (t$4$d == cyc_add$7)) begin
+            add_r$7$d = 1'b1;
+        end
+        if ((view$7 == 5) & (t$5$d == cyc$7)) begin
+            act_r$7$d = 1'b1;
+        end
+        if ((view_add$7 == 5) & (t$5$d == cyc_add$7)) begin
             add_r$7$d = 1'b1;
         end
         act_r$8$clock = clock;
@@ -14997,6 +15604,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$8 == 4) & (t$4$d == cyc_add$8)) begin
             add_r$8$d = 1'b1;
         end
+        if ((view$8 == 5) & (t$5$d == cyc$8)) begin
+            act_r$8$d = 1'b1;
+        end
+        if ((view_add$8 == 5) & (t$5$d == cyc_add$8)) begin
+            add_r$8$d = 1'b1;
+        end
         act_r$9$clock = clock;
         act_r$9$d = 1'b0;
         add_r$9$clock = clock;
@@ -15029,6 +15642,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$9$d = 1'b1;
         end
         if ((view_add$9 == 4) & (t$4$d == cyc_add$9)) begin
+            add_r$9$d = 1'b1;
+        end
+        if ((view$9 == 5) & (t$5$d == cyc$9)) begin
+            act_r$9$d = 1'b1;
+        end
+        if ((view_add$9 == 5) & (t$5$d == cyc_add$9)) begin
             add_r$9$d = 1'b1;
         end
         act_r$10$clock = clock;
@@ -15065,6 +15684,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$10 == 4) & (t$4$d == cyc_add$10)) begin
             add_r$10$d = 1'b1;
         end
+        if ((view$10 == 5) & (t$5$d == cyc$10)) begin
+            act_r$10$d = 1'b1;
+        end
+        if ((view_add$10 == 5) & (t$5$d == cyc_add$10)) begin
+            add_r$10$d = 1'b1;
+        end
         act_r$11$clock = clock;
         act_r$11$d = 1'b0;
         add_r$11$clock = clock;
@@ -15097,6 +15722,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$11$d = 1'b1;
         end
         if ((view_add$11 == 4) & (t$4$d == cyc_add$11)) begin
+            add_r$11$d = 1'b1;
+        end
+        if ((view$11 == 5) & (t$5$d == cyc$11)) begin
+            act_r$11$d = 1'b1;
+        end
+        if ((view_add$11 == 5) & (t$5$d == cyc_add$11)) begin
             add_r$11$d = 1'b1;
         end
         act_r$12$clock = clock;
@@ -15133,6 +15764,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$12 == 4) & (t$4$d == cyc_add$12)) begin
             add_r$12$d = 1'b1;
         end
+        if ((view$12 == 5) & (t$5$d == cyc$12)) begin
+            act_r$12$d = 1'b1;
+        end
+        if ((view_add$12 == 5) & (t$5$d == cyc_add$12)) begin
+            add_r$12$d = 1'b1;
+        end
         act_r$13$clock = clock;
         act_r$13$d = 1'b0;
         add_r$13$clock = clock;
@@ -15165,6 +15802,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$13$d = 1'b1;
         end
         if ((view_add$13 == 4) & (t$4$d == cyc_add$13)) begin
+            add_r$13$d = 1'b1;
+        end
+        if ((view$13 == 5) & (t$5$d == cyc$13)) begin
+            act_r$13$d = 1'b1;
+        end
+        if ((view_add$13 == 5) & (t$5$d == cyc_add$13)) begin
             add_r$13$d = 1'b1;
         end
         act_r$14$clock = clock;
@@ -15201,6 +15844,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$14 == 4) & (t$4$d == cyc_add$14)) begin
             add_r$14$d = 1'b1;
         end
+        if ((view$14 == 5) & (t$5$d == cyc$14)) begin
+            act_r$14$d = 1'b1;
+        end
+        if ((view_add$14 == 5) & (t$5$d == cyc_add$14)) begin
+            add_r$14$d = 1'b1;
+        end
         act_r$15$clock = clock;
         act_r$15$d = 1'b0;
         add_r$15$clock = clock;
@@ -15233,6 +15882,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$15$d = 1'b1;
         end
         if ((view_add$15 == 4) & (t$4$d == cyc_add$15)) begin
+            add_r$15$d = 1'b1;
+        end
+        if ((view$15 == 5) & (t$5$d == cyc$15)) begin
+            act_r$15$d = 1'b1;
+        end
+        if ((view_add$15 == 5) & (t$5$d == cyc_add$15)) begin
             add_r$15$d = 1'b1;
         end
         act_r$16$clock = clock;
@@ -15269,6 +15924,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$16 == 4) & (t$4$d == cyc_add$16)) begin
             add_r$16$d = 1'b1;
         end
+        if ((view$16 == 5) & (t$5$d == cyc$16)) begin
+            act_r$16$d = 1'b1;
+        end
+        if ((view_add$16 == 5) & (t$5$d == cyc_add$16)) begin
+            add_r$16$d = 1'b1;
+        end
         act_r$17$clock = clock;
         act_r$17$d = 1'b0;
         add_r$17$clock = clock;
@@ -15301,6 +15962,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$17$d = 1'b1;
         end
         if ((view_add$17 == 4) & (t$4$d == cyc_add$17)) begin
+            add_r$17$d = 1'b1;
+        end
+        if ((view$17 == 5) & (t$5$d == cyc$17)) begin
+            act_r$17$d = 1'b1;
+        end
+        if ((view_add$17 == 5) & (t$5$d == cyc_add$17)) begin
             add_r$17$d = 1'b1;
         end
         act_r$18$clock = clock;
@@ -15337,6 +16004,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$18 == 4) & (t$4$d == cyc_add$18)) begin
             add_r$18$d = 1'b1;
         end
+        if ((view$18 == 5) & (t$5$d == cyc$18)) begin
+            act_r$18$d = 1'b1;
+        end
+        if ((view_add$18 == 5) & (t$5$d == cyc_add$18)) begin
+            add_r$18$d = 1'b1;
+        end
         act_r$19$clock = clock;
         act_r$19$d = 1'b0;
         add_r$19$clock = clock;
@@ -15369,6 +16042,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$19$d = 1'b1;
         end
         if ((view_add$19 == 4) & (t$4$d == cyc_add$19)) begin
+            add_r$19$d = 1'b1;
+        end
+        if ((view$19 == 5) & (t$5$d == cyc$19)) begin
+            act_r$19$d = 1'b1;
+        end
+        if ((view_add$19 == 5) & (t$5$d == cyc_add$19)) begin
             add_r$19$d = 1'b1;
         end
         act_r$20$clock = clock;
@@ -15405,6 +16084,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$20 == 4) & (t$4$d == cyc_add$20)) begin
             add_r$20$d = 1'b1;
         end
+        if ((view$20 == 5) & (t$5$d == cyc$20)) begin
+            act_r$20$d = 1'b1;
+        end
+        if ((view_add$20 == 5) & (t$5$d == cyc_add$20)) begin
+            add_r$20$d = 1'b1;
+        end
         act_r$21$clock = clock;
         act_r$21$d = 1'b0;
         add_r$21$clock = clock;
@@ -15437,6 +16122,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$21$d = 1'b1;
         end
         if ((view_add$21 == 4) & (t$4$d == cyc_add$21)) begin
+            add_r$21$d = 1'b1;
+        end
+        if ((view$21 == 5) & (t$5$d == cyc$21)) begin
+            act_r$21$d = 1'b1;
+        end
+        if ((view_add$21 == 5) & (t$5$d == cyc_add$21)) begin
             add_r$21$d = 1'b1;
         end
         act_r$22$clock = clock;
@@ -15473,6 +16164,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$22 == 4) & (t$4$d == cyc_add$22)) begin
             add_r$22$d = 1'b1;
         end
+        if ((view$22 == 5) & (t$5$d == cyc$22)) begin
+            act_r$22$d = 1'b1;
+        end
+        if ((view_add$22 == 5) & (t$5$d == cyc_add$22)) begin
+            add_r$22$d = 1'b1;
+        end
         act_r$23$clock = clock;
         act_r$23$d = 1'b0;
         add_r$23$clock = clock;
@@ -15505,6 +16202,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$23$d = 1'b1;
         end
         if ((view_add$23 == 4) & (t$4$d == cyc_add$23)) begin
+            add_r$23$d = 1'b1;
+        end
+        if ((view$23 == 5) & (t$5$d == cyc$23)) begin
+            act_r$23$d = 1'b1;
+        end
+        if ((view_add$23 == 5) & (t$5$d == cyc_add$23)) begin
             add_r$23$d = 1'b1;
         end
         act_r$24$clock = clock;
@@ -15541,6 +16244,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$24 == 4) & (t$4$d == cyc_add$24)) begin
             add_r$24$d = 1'b1;
         end
+        if ((view$24 == 5) & (t$5$d == cyc$24)) begin
+            act_r$24$d = 1'b1;
+        end
+        if ((view_add$24 == 5) & (t$5$d == cyc_add$24)) begin
+            add_r$24$d = 1'b1;
+        end
         act_r$25$clock = clock;
         act_r$25$d = 1'b0;
         add_r$25$clock = clock;
@@ -15573,6 +16282,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$25$d = 1'b1;
         end
         if ((view_add$25 == 4) & (t$4$d == cyc_add$25)) begin
+            add_r$25$d = 1'b1;
+        end
+        if ((view$25 == 5) & (t$5$d == cyc$25)) begin
+            act_r$25$d = 1'b1;
+        end
+        if ((view_add$25 == 5) & (t$5$d == cyc_add$25)) begin
             add_r$25$d = 1'b1;
         end
         act_r$26$clock = clock;
@@ -15609,6 +16324,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$26 == 4) & (t$4$d == cyc_add$26)) begin
             add_r$26$d = 1'b1;
         end
+        if ((view$26 == 5) & (t$5$d == cyc$26)) begin
+            act_r$26$d = 1'b1;
+        end
+        if ((view_add$26 == 5) & (t$5$d == cyc_add$26)) begin
+            add_r$26$d = 1'b1;
+        end
         act_r$27$clock = clock;
         act_r$27$d = 1'b0;
         add_r$27$clock = clock;
@@ -15641,6 +16362,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$27$d = 1'b1;
         end
         if ((view_add$27 == 4) & (t$4$d == cyc_add$27)) begin
+            add_r$27$d = 1'b1;
+        end
+        if ((view$27 == 5) & (t$5$d == cyc$27)) begin
+            act_r$27$d = 1'b1;
+        end
+        if ((view_add$27 == 5) & (t$5$d == cyc_add$27)) begin
             add_r$27$d = 1'b1;
         end
         act_r$28$clock = clock;
@@ -15677,6 +16404,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$28 == 4) & (t$4$d == cyc_add$28)) begin
             add_r$28$d = 1'b1;
         end
+        if ((view$28 == 5) & (t$5$d == cyc$28)) begin
+            act_r$28$d = 1'b1;
+        end
+        if ((view_add$28 == 5) & (t$5$d == cyc_add$28)) begin
+            add_r$28$d = 1'b1;
+        end
         act_r$29$clock = clock;
         act_r$29$d = 1'b0;
         add_r$29$clock = clock;
@@ -15709,6 +16442,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$29$d = 1'b1;
         end
         if ((view_add$29 == 4) & (t$4$d == cyc_add$29)) begin
+            add_r$29$d = 1'b1;
+        end
+        if ((view$29 == 5) & (t$5$d == cyc$29)) begin
+            act_r$29$d = 1'b1;
+        end
+        if ((view_add$29 == 5) & (t$5$d == cyc_add$29)) begin
             add_r$29$d = 1'b1;
         end
         act_r$30$clock = clock;
@@ -15745,6 +16484,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$30 == 4) & (t$4$d == cyc_add$30)) begin
             add_r$30$d = 1'b1;
         end
+        if ((view$30 == 5) & (t$5$d == cyc$30)) begin
+            act_r$30$d = 1'b1;
+        end
+        if ((view_add$30 == 5) & (t$5$d == cyc_add$30)) begin
+            add_r$30$d = 1'b1;
+        end
         act_r$31$clock = clock;
         act_r$31$d = 1'b0;
         add_r$31$clock = clock;
@@ -15777,6 +16522,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$31$d = 1'b1;
         end
         if ((view_add$31 == 4) & (t$4$d == cyc_add$31)) begin
+            add_r$31$d = 1'b1;
+        end
+        if ((view$31 == 5) & (t$5$d == cyc$31)) begin
+            act_r$31$d = 1'b1;
+        end
+        if ((view_add$31 == 5) & (t$5$d == cyc_add$31)) begin
             add_r$31$d = 1'b1;
         end
         act_r$32$clock = clock;
@@ -15813,6 +16564,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$32 == 4) & (t$4$d == cyc_add$32)) begin
             add_r$32$d = 1'b1;
         end
+        if ((view$32 == 5) & (t$5$d == cyc$32)) begin
+            act_r$32$d = 1'b1;
+        end
+        if ((view_add$32 == 5) & (t$5$d == cyc_add$32)) begin
+            add_r$32$d = 1'b1;
+        end
         act_r$33$clock = clock;
         act_r$33$d = 1'b0;
         add_r$33$clock = clock;
@@ -15845,6 +16602,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$33$d = 1'b1;
         end
         if ((view_add$33 == 4) & (t$4$d == cyc_add$33)) begin
+            add_r$33$d = 1'b1;
+        end
+        if ((view$33 == 5) & (t$5$d == cyc$33)) begin
+            act_r$33$d = 1'b1;
+        end
+        if ((view_add$33 == 5) & (t$5$d == cyc_add$33)) begin
             add_r$33$d = 1'b1;
         end
         act_r$34$clock = clock;
@@ -15881,6 +16644,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$34 == 4) & (t$4$d == cyc_add$34)) begin
             add_r$34$d = 1'b1;
         end
+        if ((view$34 == 5) & (t$5$d == cyc$34)) begin
+            act_r$34$d = 1'b1;
+        end
+        if ((view_add$34 == 5) & (t$5$d == cyc_add$34)) begin
+            add_r$34$d = 1'b1;
+        end
         act_r$35$clock = clock;
         act_r$35$d = 1'b0;
         add_r$35$clock = clock;
@@ -15913,6 +16682,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$35$d = 1'b1;
         end
         if ((view_add$35 == 4) & (t$4$d == cyc_add$35)) begin
+            add_r$35$d = 1'b1;
+        end
+        if ((view$35 == 5) & (t$5$d == cyc$35)) begin
+            act_r$35$d = 1'b1;
+        end
+        if ((view_add$35 == 5) & (t$5$d == cyc_add$35)) begin
             add_r$35$d = 1'b1;
         end
         act_r$36$clock = clock;
@@ -15949,6 +16724,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$36 == 4) & (t$4$d == cyc_add$36)) begin
             add_r$36$d = 1'b1;
         end
+        if ((view$36 == 5) & (t$5$d == cyc$36)) begin
+            act_r$36$d = 1'b1;
+        end
+        if ((view_add$36 == 5) & (t$5$d == cyc_add$36)) begin
+            add_r$36$d = 1'b1;
+        end
         act_r$37$clock = clock;
         act_r$37$d = 1'b0;
         add_r$37$clock = clock;
@@ -15981,6 +16762,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$37$d = 1'b1;
         end
         if ((view_add$37 == 4) & (t$4$d == cyc_add$37)) begin
+            add_r$37$d = 1'b1;
+        end
+        if ((view$37 == 5) & (t$5$d == cyc$37)) begin
+            act_r$37$d = 1'b1;
+        end
+        if ((view_add$37 == 5) & (t$5$d == cyc_add$37)) begin
             add_r$37$d = 1'b1;
         end
         act_r$38$clock = clock;
@@ -16017,6 +16804,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$38 == 4) & (t$4$d == cyc_add$38)) begin
             add_r$38$d = 1'b1;
         end
+        if ((view$38 == 5) & (t$5$d == cyc$38)) begin
+            act_r$38$d = 1'b1;
+        end
+        if ((view_add$38 == 5) & (t$5$d == cyc_add$38)) begin
+            add_r$38$d = 1'b1;
+        end
         act_r$39$clock = clock;
         act_r$39$d = 1'b0;
         add_r$39$clock = clock;
@@ -16049,6 +16842,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$39$d = 1'b1;
         end
         if ((view_add$39 == 4) & (t$4$d == cyc_add$39)) begin
+            add_r$39$d = 1'b1;
+        end
+        if ((view$39 == 5) & (t$5$d == cyc$39)) begin
+            act_r$39$d = 1'b1;
+        end
+        if ((view_add$39 == 5) & (t$5$d == cyc_add$39)) begin
             add_r$39$d = 1'b1;
         end
         act_r$40$clock = clock;
@@ -16085,6 +16884,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$40 == 4) & (t$4$d == cyc_add$40)) begin
             add_r$40$d = 1'b1;
         end
+        if ((view$40 == 5) & (t$5$d == cyc$40)) begin
+            act_r$40$d = 1'b1;
+        end
+        if ((view_add$40 == 5) & (t$5$d == cyc_add$40)) begin
+            add_r$40$d = 1'b1;
+        end
         act_r$41$clock = clock;
         act_r$41$d = 1'b0;
         add_r$41$clock = clock;
@@ -16117,6 +16922,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$41$d = 1'b1;
         end
         if ((view_add$41 == 4) & (t$4$d == cyc_add$41)) begin
+            add_r$41$d = 1'b1;
+        end
+        if ((view$41 == 5) & (t$5$d == cyc$41)) begin
+            act_r$41$d = 1'b1;
+        end
+        if ((view_add$41 == 5) & (t$5$d == cyc_add$41)) begin
             add_r$41$d = 1'b1;
         end
         act_r$42$clock = clock;
@@ -16153,6 +16964,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$42 == 4) & (t$4$d == cyc_add$42)) begin
             add_r$42$d = 1'b1;
         end
+        if ((view$42 == 5) & (t$5$d == cyc$42)) begin
+            act_r$42$d = 1'b1;
+        end
+        if ((view_add$42 == 5) & (t$5$d == cyc_add$42)) begin
+            add_r$42$d = 1'b1;
+        end
         act_r$43$clock = clock;
         act_r$43$d = 1'b0;
         add_r$43$clock = clock;
@@ -16185,6 +17002,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$43$d = 1'b1;
         end
         if ((view_add$43 == 4) & (t$4$d == cyc_add$43)) begin
+            add_r$43$d = 1'b1;
+        end
+        if ((view$43 == 5) & (t$5$d == cyc$43)) begin
+            act_r$43$d = 1'b1;
+        end
+        if ((view_add$43 == 5) & (t$5$d == cyc_add$43)) begin
             add_r$43$d = 1'b1;
         end
         act_r$44$clock = clock;
@@ -16221,6 +17044,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$44 == 4) & (t$4$d == cyc_add$44)) begin
             add_r$44$d = 1'b1;
         end
+        if ((view$44 == 5) & (t$5$d == cyc$44)) begin
+            act_r$44$d = 1'b1;
+        end
+        if ((view_add$44 == 5) & (t$5$d == cyc_add$44)) begin
+            add_r$44$d = 1'b1;
+        end
         act_r$45$clock = clock;
         act_r$45$d = 1'b0;
         add_r$45$clock = clock;
@@ -16253,6 +17082,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$45$d = 1'b1;
         end
         if ((view_add$45 == 4) & (t$4$d == cyc_add$45)) begin
+            add_r$45$d = 1'b1;
+        end
+        if ((view$45 == 5) & (t$5$d == cyc$45)) begin
+            act_r$45$d = 1'b1;
+        end
+        if ((view_add$45 == 5) & (t$5$d == cyc_add$45)) begin
             add_r$45$d = 1'b1;
         end
         act_r$46$clock = clock;
@@ -16289,6 +17124,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$46 == 4) & (t$4$d == cyc_add$46)) begin
             add_r$46$d = 1'b1;
         end
+        if ((view$46 == 5) & (t$5$d == cyc$46)) begin
+            act_r$46$d = 1'b1;
+        end
+        if ((view_add$46 == 5) & (t$5$d == cyc_add$46)) begin
+            add_r$46$d = 1'b1;
+        end
         act_r$47$clock = clock;
         act_r$47$d = 1'b0;
         add_r$47$clock = clock;
@@ -16321,6 +17162,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$47$d = 1'b1;
         end
         if ((view_add$47 == 4) & (t$4$d == cyc_add$47)) begin
+            add_r$47$d = 1'b1;
+        end
+        if ((view$47 == 5) & (t$5$d == cyc$47)) begin
+            act_r$47$d = 1'b1;
+        end
+        if ((view_add$47 == 5) & (t$5$d == cyc_add$47)) begin
             add_r$47$d = 1'b1;
         end
         act_r$48$clock = clock;
@@ -16357,6 +17204,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$48 == 4) & (t$4$d == cyc_add$48)) begin
             add_r$48$d = 1'b1;
         end
+        if ((view$48 == 5) & (t$5$d == cyc$48)) begin
+            act_r$48$d = 1'b1;
+        end
+        if ((view_add$48 == 5) & (t$5$d == cyc_add$48)) begin
+            add_r$48$d = 1'b1;
+        end
         act_r$49$clock = clock;
         act_r$49$d = 1'b0;
         add_r$49$clock = clock;
@@ -16389,6 +17242,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$49$d = 1'b1;
         end
         if ((view_add$49 == 4) & (t$4$d == cyc_add$49)) begin
+            add_r$49$d = 1'b1;
+        end
+        if ((view$49 == 5) & (t$5$d == cyc$49)) begin
+            act_r$49$d = 1'b1;
+        end
+        if ((view_add$49 == 5) & (t$5$d == cyc_add$49)) begin
             add_r$49$d = 1'b1;
         end
         act_r$50$clock = clock;
@@ -16425,6 +17284,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$50 == 4) & (t$4$d == cyc_add$50)) begin
             add_r$50$d = 1'b1;
         end
+        if ((view$50 == 5) & (t$5$d == cyc$50)) begin
+            act_r$50$d = 1'b1;
+        end
+        if ((view_add$50 == 5) & (t$5$d == cyc_add$50)) begin
+            add_r$50$d = 1'b1;
+        end
         act_r$51$clock = clock;
         act_r$51$d = 1'b0;
         add_r$51$clock = clock;
@@ -16457,6 +17322,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$51$d = 1'b1;
         end
         if ((view_add$51 == 4) & (t$4$d == cyc_add$51)) begin
+            add_r$51$d = 1'b1;
+        end
+        if ((view$51 == 5) & (t$5$d == cyc$51)) begin
+            act_r$51$d = 1'b1;
+        end
+        if ((view_add$51 == 5) & (t$5$d == cyc_add$51)) begin
             add_r$51$d = 1'b1;
         end
         act_r$52$clock = clock;
@@ -16493,6 +17364,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$52 == 4) & (t$4$d == cyc_add$52)) begin
             add_r$52$d = 1'b1;
         end
+        if ((view$52 == 5) & (t$5$d == cyc$52)) begin
+            act_r$52$d = 1'b1;
+        end
+        if ((view_add$52 == 5) & (t$5$d == cyc_add$52)) begin
+            add_r$52$d = 1'b1;
+        end
         act_r$53$clock = clock;
         act_r$53$d = 1'b0;
         add_r$53$clock = clock;
@@ -16525,6 +17402,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$53$d = 1'b1;
         end
         if ((view_add$53 == 4) & (t$4$d == cyc_add$53)) begin
+            add_r$53$d = 1'b1;
+        end
+        if ((view$53 == 5) & (t$5$d == cyc$53)) begin
+            act_r$53$d = 1'b1;
+        end
+        if ((view_add$53 == 5) & (t$5$d == cyc_add$53)) begin
             add_r$53$d = 1'b1;
         end
         act_r$54$clock = clock;
@@ -16561,6 +17444,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$54 == 4) & (t$4$d == cyc_add$54)) begin
             add_r$54$d = 1'b1;
         end
+        if ((view$54 == 5) & (t$5$d == cyc$54)) begin
+            act_r$54$d = 1'b1;
+        end
+        if ((view_add$54 == 5) & (t$5$d == cyc_add$54)) begin
+            add_r$54$d = 1'b1;
+        end
         act_r$55$clock = clock;
         act_r$55$d = 1'b0;
         add_r$55$clock = clock;
@@ -16593,6 +17482,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$55$d = 1'b1;
         end
         if ((view_add$55 == 4) & (t$4$d == cyc_add$55)) begin
+            add_r$55$d = 1'b1;
+        end
+        if ((view$55 == 5) & (t$5$d == cyc$55)) begin
+            act_r$55$d = 1'b1;
+        end
+        if ((view_add$55 == 5) & (t$5$d == cyc_add$55)) begin
             add_r$55$d = 1'b1;
         end
         act_r$56$clock = clock;
@@ -16629,6 +17524,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$56 == 4) & (t$4$d == cyc_add$56)) begin
             add_r$56$d = 1'b1;
         end
+        if ((view$56 == 5) & (t$5$d == cyc$56)) begin
+            act_r$56$d = 1'b1;
+        end
+        if ((view_add$56 == 5) & (t$5$d == cyc_add$56)) begin
+            add_r$56$d = 1'b1;
+        end
         act_r$57$clock = clock;
         act_r$57$d = 1'b0;
         add_r$57$clock = clock;
@@ -16661,6 +17562,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$57$d = 1'b1;
         end
         if ((view_add$57 == 4) & (t$4$d == cyc_add$57)) begin
+            add_r$57$d = 1'b1;
+        end
+        if ((view$57 == 5) & (t$5$d == cyc$57)) begin
+            act_r$57$d = 1'b1;
+        end
+        if ((view_add$57 == 5) & (t$5$d == cyc_add$57)) begin
             add_r$57$d = 1'b1;
         end
         act_r$58$clock = clock;
@@ -16697,6 +17604,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$58 == 4) & (t$4$d == cyc_add$58)) begin
             add_r$58$d = 1'b1;
         end
+        if ((view$58 == 5) & (t$5$d == cyc$58)) begin
+            act_r$58$d = 1'b1;
+        end
+        if ((view_add$58 == 5) & (t$5$d == cyc_add$58)) begin
+            add_r$58$d = 1'b1;
+        end
         act_r$59$clock = clock;
         act_r$59$d = 1'b0;
         add_r$59$clock = clock;
@@ -16729,6 +17642,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$59$d = 1'b1;
         end
         if ((view_add$59 == 4) & (t$4$d == cyc_add$59)) begin
+            add_r$59$d = 1'b1;
+        end
+        if ((view$59 == 5) & (t$5$d == cyc$59)) begin
+            act_r$59$d = 1'b1;
+        end
+        if ((view_add$59 == 5) & (t$5$d == cyc_add$59)) begin
             add_r$59$d = 1'b1;
         end
         act_r$60$clock = clock;
@@ -16765,6 +17684,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$60 == 4) & (t$4$d == cyc_add$60)) begin
             add_r$60$d = 1'b1;
         end
+        if ((view$60 == 5) & (t$5$d == cyc$60)) begin
+            act_r$60$d = 1'b1;
+        end
+        if ((view_add$60 == 5) & (t$5$d == cyc_add$60)) begin
+            add_r$60$d = 1'b1;
+        end
         act_r$61$clock = clock;
         act_r$61$d = 1'b0;
         add_r$61$clock = clock;
@@ -16797,6 +17722,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             act_r$61$d = 1'b1;
         end
         if ((view_add$61 == 4) & (t$4$d == cyc_add$61)) begin
+            add_r$61$d = 1'b1;
+        end
+        if ((view$61 == 5) & (t$5$d == cyc$61)) begin
+            act_r$61$d = 1'b1;
+        end
+        if ((view_add$61 == 5) & (t$5$d == cyc_add$61)) begin
             add_r$61$d = 1'b1;
         end
         act_r$62$clock = clock;
@@ -16833,6 +17764,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$62 == 4) & (t$4$d == cyc_add$62)) begin
             add_r$62$d = 1'b1;
         end
+        if ((view$62 == 5) & (t$5$d == cyc$62)) begin
+            act_r$62$d = 1'b1;
+        end
+        if ((view_add$62 == 5) & (t$5$d == cyc_add$62)) begin
+            add_r$62$d = 1'b1;
+        end
         act_r$63$clock = clock;
         act_r$63$d = 1'b0;
         add_r$63$clock = clock;
@@ -16867,6 +17804,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_add$63 == 4) & (t$4$d == cyc_add$63)) begin
             add_r$63$d = 1'b1;
         end
+        if ((view$63 == 5) & (t$5$d == cyc$63)) begin
+            act_r$63$d = 1'b1;
+        end
+        if ((view_add$63 == 5) & (t$5$d == cyc_add$63)) begin
+            add_r$63$d = 1'b1;
+        end
         norm_r$d = t$0$d == normalise;
         at_norm = norm_r$q & run;
         iss_r$0$clock = clock;
@@ -16887,6 +17830,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             res_r$0$d = 1'b1;
         end
         if ((view_res$0 == 4) & (t$4$d == res$0)) begin
+            res_r$0$d = 1'b1;
+        end
+        if ((view_res$0 == 5) & (t$5$d == res$0)) begin
             res_r$0$d = 1'b1;
         end
         at_res$0 = res_r$0$q & run;
@@ -16910,6 +17856,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_res$1 == 4) & (t$4$d == res$1)) begin
             res_r$1$d = 1'b1;
         end
+        if ((view_res$1 == 5) & (t$5$d == res$1)) begin
+            res_r$1$d = 1'b1;
+        end
         at_res$1 = res_r$1$q & run;
         iss_r$2$clock = clock;
         iss_r$2$d = t$0$d == iss$2;
@@ -16929,6 +17878,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             res_r$2$d = 1'b1;
         end
         if ((view_res$2 == 4) & (t$4$d == res$2)) begin
+            res_r$2$d = 1'b1;
+        end
+        if ((view_res$2 == 5) & (t$5$d == res$2)) begin
             res_r$2$d = 1'b1;
         end
         at_res$2 = res_r$2$q & run;
@@ -16952,6 +17904,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_res$3 == 4) & (t$4$d == res$3)) begin
             res_r$3$d = 1'b1;
         end
+        if ((view_res$3 == 5) & (t$5$d == res$3)) begin
+            res_r$3$d = 1'b1;
+        end
         at_res$3 = res_r$3$q & run;
         iss_r$4$clock = clock;
         iss_r$4$d = t$0$d == iss$4;
@@ -16971,6 +17926,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             res_r$4$d = 1'b1;
         end
         if ((view_res$4 == 4) & (t$4$d == res$4)) begin
+            res_r$4$d = 1'b1;
+        end
+        if ((view_res$4 == 5) & (t$5$d == res$4)) begin
             res_r$4$d = 1'b1;
         end
         at_res$4 = res_r$4$q & run;
@@ -16994,6 +17952,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_res$5 == 4) & (t$4$d == res$5)) begin
             res_r$5$d = 1'b1;
         end
+        if ((view_res$5 == 5) & (t$5$d == res$5)) begin
+            res_r$5$d = 1'b1;
+        end
         at_res$5 = res_r$5$q & run;
         iss_r$6$clock = clock;
         iss_r$6$d = t$0$d == iss$6;
@@ -17015,6 +17976,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_res$6 == 4) & (t$4$d == res$6)) begin
             res_r$6$d = 1'b1;
         end
+        if ((view_res$6 == 5) & (t$5$d == res$6)) begin
+            res_r$6$d = 1'b1;
+        end
         at_res$6 = res_r$6$q & run;
         handover_r$d = 1'b0;
         if ((view_handover == 0) & (t$0$d == handover)) begin
@@ -17032,8 +17996,11 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if ((view_handover == 4) & (t$4$d == handover)) begin
             handover_r$d = 1'b1;
         end
+        if ((view_handover == 5) & (t$5$d == handover)) begin
+            handover_r$d = 1'b1;
+        end
         at_handover = handover_r$q & run;
-        valid_r$d = t$4$d == last;
+        valid_r$d = t$5$d == last;
         busy_r$d = 1'b0;
         if (t$0$d != 32'h0) begin
             busy_r$d = 1'b1;
@@ -17048,6 +18015,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             busy_r$d = 1'b1;
         end
         if (t$4$d != 32'h0) begin
+            busy_r$d = 1'b1;
+        end
+        if (t$5$d != 32'h0) begin
             busy_r$d = 1'b1;
         end
         off_grid_r$d = phase$d != 32'h0;
@@ -17166,6 +18136,29 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         g4$vc$8 = vc$44$d;
         g4$crosses = crosses$4$d;
         g4$maj_left = maj_left$4;
+        g5$vx$0 = vx$15$d;
+        g5$vy$0 = vy$15$d;
+        g5$vz$0 = vz$15$d;
+        g5$start_x$0 = x$15$q;
+        g5$vx$1 = vx$16$d;
+        g5$vy$1 = vy$16$d;
+        g5$vz$1 = vz$16$d;
+        g5$start_x$1 = x$16$q;
+        g5$vx$2 = vx$17$d;
+        g5$vy$2 = vy$17$d;
+        g5$vz$2 = vz$17$d;
+        g5$start_x$2 = x$17$q;
+        g5$vc$0 = vc$45$d;
+        g5$vc$1 = vc$46$d;
+        g5$vc$2 = vc$47$d;
+        g5$vc$3 = vc$48$d;
+        g5$vc$4 = vc$49$d;
+        g5$vc$5 = vc$50$d;
+        g5$vc$6 = vc$51$d;
+        g5$vc$7 = vc$52$d;
+        g5$vc$8 = vc$53$d;
+        g5$crosses = crosses$5$d;
+        g5$maj_left = maj_left$5;
         area_abs = area$q;
         if (area$q[area_msb]) begin
             area_abs = ((32'h0) & 34'h3ffffffff) - area$q;
@@ -17464,6 +18457,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if (view_res$0 == 4) begin
             exp_r = exp$4$q;
         end
+        if (view_res$0 == 5) begin
+            exp_r = exp$5$q;
+        end
         lsh = eq_shift - exp_r;
         if (at_res$0) begin
             rsh$d = exp_r - eq_shift;
@@ -17490,6 +18486,10 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if (view_res$1 == 32'h4) begin
             xi$0 = g4$xi$0;
             ed$0 = g4$ed16$0[(32'h0)+:(21)];
+        end
+        if (view_res$1 == 32'h5) begin
+            xi$0 = g5$xi$0;
+            ed$0 = g5$ed16$0[(32'h0)+:(21)];
         end
         if (at_res$1 & (view_res_w$1 == 0)) begin
             x$0$d = xi$0 + q_n + r_pos;
@@ -17546,6 +18546,17 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             q$12$d = q_n;
             rho$12$d = div$out_r[(32'h0)+:(21)] << frac;
         end
+        if (at_res$1 & (view_res_w$1 == 5)) begin
+            x$15$d = xi$0 + q_n + r_pos;
+            r$15$d = 32'h0;
+            if (r_pos) begin
+                r$15$d = ed$0 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$2 & (view_res_w$2 == 5)) begin
+            q$15$d = q_n;
+            rho$15$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
         xi$1 = g0$xi$1;
         ed$1 = g0$ed16$1[(32'h0)+:(21)];
         if (view_res$3 == 32'h1) begin
@@ -17563,6 +18574,10 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if (view_res$3 == 32'h4) begin
             xi$1 = g4$xi$1;
             ed$1 = g4$ed16$1[(32'h0)+:(21)];
+        end
+        if (view_res$3 == 32'h5) begin
+            xi$1 = g5$xi$1;
+            ed$1 = g5$ed16$1[(32'h0)+:(21)];
         end
         if (at_res$3 & (view_res_w$3 == 0)) begin
             x$1$d = xi$1 + q_n + r_pos;
@@ -17619,6 +18634,17 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             q$13$d = q_n;
             rho$13$d = div$out_r[(32'h0)+:(21)] << frac;
         end
+        if (at_res$3 & (view_res_w$3 == 5)) begin
+            x$16$d = xi$1 + q_n + r_pos;
+            r$16$d = 32'h0;
+            if (r_pos) begin
+                r$16$d = ed$1 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$4 & (view_res_w$4 == 5)) begin
+            q$16$d = q_n;
+            rho$16$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
         xi$2 = g0$xi$2;
         ed$2 = g0$ed16$2[(32'h0)+:(21)];
         if (view_res$5 == 32'h1) begin
@@ -17636,6 +18662,10 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if (view_res$5 == 32'h4) begin
             xi$2 = g4$xi$2;
             ed$2 = g4$ed16$2[(32'h0)+:(21)];
+        end
+        if (view_res$5 == 32'h5) begin
+            xi$2 = g5$xi$2;
+            ed$2 = g5$ed16$2[(32'h0)+:(21)];
         end
         if (at_res$5 & (view_res_w$5 == 0)) begin
             x$2$d = xi$2 + q_n + r_pos;
@@ -17692,6 +18722,17 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             q$14$d = q_n;
             rho$14$d = div$out_r[(32'h0)+:(21)] << frac;
         end
+        if (at_res$5 & (view_res_w$5 == 5)) begin
+            x$17$d = xi$2 + q_n + r_pos;
+            r$17$d = 32'h0;
+            if (r_pos) begin
+                r$17$d = ed$2 - div$out_r[(32'h0)+:(21)];
+            end
+        end
+        if (at_res$6 & (view_res_w$6 == 5)) begin
+            q$17$d = q_n;
+            rho$17$d = div$out_r[(32'h0)+:(21)] << frac;
+        end
         if (at_res$0 & (view_res_w$0 == 0)) begin
             mant$0$d = div$out_q[(32'h0)+:(25)];
         end
@@ -17706,6 +18747,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         end
         if (at_res$0 & (view_res_w$0 == 4)) begin
             mant$4$d = div$out_q[(32'h0)+:(25)];
+        end
+        if (at_res$0 & (view_res_w$0 == 5)) begin
+            mant$5$d = div$out_q[(32'h0)+:(25)];
         end
         mul$0$a = 32'h0;
         mul$0$b = 32'h0;
@@ -17795,6 +18839,8 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         delta$14 = g3$kdy$0[(32'h0)+:(19)];
         delta$16 = g4$kdx$0[(32'h0)+:(19)];
         delta$18 = g4$kdy$0[(32'h0)+:(19)];
+        delta$20 = g5$kdx$0[(32'h0)+:(19)];
+        delta$22 = g5$kdy$0[(32'h0)+:(19)];
         delta$1 = g0$kdx$1[(32'h0)+:(19)];
         delta$3 = g0$kdy$1[(32'h0)+:(19)];
         delta$5 = g1$kdx$1[(32'h0)+:(19)];
@@ -17805,6 +18851,8 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         delta$15 = g3$kdy$1[(32'h0)+:(19)];
         delta$17 = g4$kdx$1[(32'h0)+:(19)];
         delta$19 = g4$kdy$1[(32'h0)+:(19)];
+        delta$21 = g5$kdx$1[(32'h0)+:(19)];
+        delta$23 = g5$kdy$1[(32'h0)+:(19)];
         eq_b$0 = delta$0;
         if (maj_left$0) begin
             eq_b$0 = ((32'h0) & 19'h7ffff) - delta$0;
@@ -17884,6 +18932,22 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         eq_b$19 = delta$19;
         if (maj_left$4) begin
             eq_b$19 = ((32'h0) & 19'h7ffff) - delta$19;
+        end
+        eq_b$20 = delta$20;
+        if (maj_left$5) begin
+            eq_b$20 = ((32'h0) & 19'h7ffff) - delta$20;
+        end
+        eq_b$21 = delta$21;
+        if (maj_left$5) begin
+            eq_b$21 = ((32'h0) & 19'h7ffff) - delta$21;
+        end
+        eq_b$22 = delta$22;
+        if (maj_left$5) begin
+            eq_b$22 = ((32'h0) & 19'h7ffff) - delta$22;
+        end
+        eq_b$23 = delta$23;
+        if (maj_left$5) begin
+            eq_b$23 = ((32'h0) & 19'h7ffff) - delta$23;
         end
         op_e$0 = eq_b$0;
         op_e$1 = eq_b$1;
@@ -18457,6 +19521,138 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if (view$62 == 32'h4) begin
             op_s$23 = g4$off_y$2;
         end
+        if (view$8 == 32'h5) begin
+            op_e$0 = eq_b$20;
+        end
+        if (view$9 == 32'h5) begin
+            op_e$1 = eq_b$21;
+        end
+        if (view$10 == 32'h5) begin
+            op_e$2 = eq_b$22;
+        end
+        if (view$11 == 32'h5) begin
+            op_e$3 = eq_b$23;
+        end
+        if (view$12 == 32'h5) begin
+            op_g$0 = g5$dmaj$0;
+        end
+        if (view$13 == 32'h5) begin
+            op_g$1 = g5$dbot$0;
+        end
+        if (view$14 == 32'h5) begin
+            op_g$2 = g5$dbot$0;
+        end
+        if (view$15 == 32'h5) begin
+            op_g$3 = g5$dmaj$0;
+        end
+        if (view$16 == 32'h5) begin
+            op_g$4 = g5$dmaj$1;
+        end
+        if (view$17 == 32'h5) begin
+            op_g$5 = g5$dbot$1;
+        end
+        if (view$18 == 32'h5) begin
+            op_g$6 = g5$dbot$1;
+        end
+        if (view$19 == 32'h5) begin
+            op_g$7 = g5$dmaj$1;
+        end
+        if (view$20 == 32'h5) begin
+            op_g$8 = g5$dmaj$2;
+        end
+        if (view$21 == 32'h5) begin
+            op_g$9 = g5$dbot$2;
+        end
+        if (view$22 == 32'h5) begin
+            op_g$10 = g5$dbot$2;
+        end
+        if (view$23 == 32'h5) begin
+            op_g$11 = g5$dmaj$2;
+        end
+        if (view$24 == 32'h5) begin
+            op_g$12 = g5$dmaj$3;
+        end
+        if (view$25 == 32'h5) begin
+            op_g$13 = g5$dbot$3;
+        end
+        if (view$26 == 32'h5) begin
+            op_g$14 = g5$dbot$3;
+        end
+        if (view$27 == 32'h5) begin
+            op_g$15 = g5$dmaj$3;
+        end
+        if (view$28 == 32'h5) begin
+            op_s$0 = g5$off_x$0;
+        end
+        if (view$29 == 32'h5) begin
+            op_s$1 = g5$off_y$0;
+        end
+        if (view$31 == 32'h5) begin
+            op_s$2 = g5$off_x$0;
+        end
+        if (view$32 == 32'h5) begin
+            op_s$3 = g5$off_y$0;
+        end
+        if (view$34 == 32'h5) begin
+            op_s$4 = g5$off_x$0;
+        end
+        if (view$35 == 32'h5) begin
+            op_s$5 = g5$off_y$0;
+        end
+        if (view$37 == 32'h5) begin
+            op_s$6 = g5$off_x$0;
+        end
+        if (view$38 == 32'h5) begin
+            op_s$7 = g5$off_y$0;
+        end
+        if (view$40 == 32'h5) begin
+            op_s$8 = g5$off_x$1;
+        end
+        if (view$41 == 32'h5) begin
+            op_s$9 = g5$off_y$1;
+        end
+        if (view$43 == 32'h5) begin
+            op_s$10 = g5$off_x$1;
+        end
+        if (view$44 == 32'h5) begin
+            op_s$11 = g5$off_y$1;
+        end
+        if (view$46 == 32'h5) begin
+            op_s$12 = g5$off_x$1;
+        end
+        if (view$47 == 32'h5) begin
+            op_s$13 = g5$off_y$1;
+        end
+        if (view$49 == 32'h5) begin
+            op_s$14 = g5$off_x$1;
+        end
+        if (view$50 == 32'h5) begin
+            op_s$15 = g5$off_y$1;
+        end
+        if (view$52 == 32'h5) begin
+            op_s$16 = g5$off_x$2;
+        end
+        if (view$53 == 32'h5) begin
+            op_s$17 = g5$off_y$2;
+        end
+        if (view$55 == 32'h5) begin
+            op_s$18 = g5$off_x$2;
+        end
+        if (view$56 == 32'h5) begin
+            op_s$19 = g5$off_y$2;
+        end
+        if (view$58 == 32'h5) begin
+            op_s$20 = g5$off_x$2;
+        end
+        if (view$59 == 32'h5) begin
+            op_s$21 = g5$off_y$2;
+        end
+        if (view$61 == 32'h5) begin
+            op_s$22 = g5$off_x$2;
+        end
+        if (view$62 == 32'h5) begin
+            op_s$23 = g5$off_y$2;
+        end
         ddx$0 = gx$0$q >> gsh$0;
         ddy$0 = gy$0$q >> gsh$0;
         ddx$1 = gx$1$q >> gsh$1;
@@ -18478,6 +19674,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if (view_handover == 32'h4) begin
             attr0$0 = g4$attr0$0;
         end
+        if (view_handover == 32'h5) begin
+            attr0$0 = g5$attr0$0;
+        end
         attr0$1 = g0$attr0$1;
         if (view_handover == 32'h1) begin
             attr0$1 = g1$attr0$1;
@@ -18490,6 +19689,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         end
         if (view_handover == 32'h4) begin
             attr0$1 = g4$attr0$1;
+        end
+        if (view_handover == 32'h5) begin
+            attr0$1 = g5$attr0$1;
         end
         attr0$2 = g0$attr0$2;
         if (view_handover == 32'h1) begin
@@ -18504,6 +19706,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if (view_handover == 32'h4) begin
             attr0$2 = g4$attr0$2;
         end
+        if (view_handover == 32'h5) begin
+            attr0$2 = g5$attr0$2;
+        end
         attr0$3 = g0$attr0$3;
         if (view_handover == 32'h1) begin
             attr0$3 = g1$attr0$3;
@@ -18516,6 +19721,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         end
         if (view_handover == 32'h4) begin
             attr0$3 = g4$attr0$3;
+        end
+        if (view_handover == 32'h5) begin
+            attr0$3 = g5$attr0$3;
         end
         op_q$0 = q$0$q;
         if (view$30 == 1) begin
@@ -18530,6 +19738,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if (view$30 == 4) begin
             op_q$0 = q$12$q;
         end
+        if (view$30 == 5) begin
+            op_q$0 = q$15$q;
+        end
         op_q$1 = q$0$q;
         if (view$33 == 1) begin
             op_q$1 = q$3$q;
@@ -18542,6 +19753,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         end
         if (view$33 == 4) begin
             op_q$1 = q$12$q;
+        end
+        if (view$33 == 5) begin
+            op_q$1 = q$15$q;
         end
         op_q$2 = q$0$q;
         if (view$36 == 1) begin
@@ -18556,6 +19770,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if (view$36 == 4) begin
             op_q$2 = q$12$q;
         end
+        if (view$36 == 5) begin
+            op_q$2 = q$15$q;
+        end
         op_q$3 = q$0$q;
         if (view$39 == 1) begin
             op_q$3 = q$3$q;
@@ -18568,6 +19785,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         end
         if (view$39 == 4) begin
             op_q$3 = q$12$q;
+        end
+        if (view$39 == 5) begin
+            op_q$3 = q$15$q;
         end
         op_q$4 = q$1$q;
         if (view$42 == 1) begin
@@ -18582,6 +19802,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if (view$42 == 4) begin
             op_q$4 = q$13$q;
         end
+        if (view$42 == 5) begin
+            op_q$4 = q$16$q;
+        end
         op_q$5 = q$1$q;
         if (view$45 == 1) begin
             op_q$5 = q$4$q;
@@ -18594,6 +19817,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         end
         if (view$45 == 4) begin
             op_q$5 = q$13$q;
+        end
+        if (view$45 == 5) begin
+            op_q$5 = q$16$q;
         end
         op_q$6 = q$1$q;
         if (view$48 == 1) begin
@@ -18608,6 +19834,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if (view$48 == 4) begin
             op_q$6 = q$13$q;
         end
+        if (view$48 == 5) begin
+            op_q$6 = q$16$q;
+        end
         op_q$7 = q$1$q;
         if (view$51 == 1) begin
             op_q$7 = q$4$q;
@@ -18620,6 +19849,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         end
         if (view$51 == 4) begin
             op_q$7 = q$13$q;
+        end
+        if (view$51 == 5) begin
+            op_q$7 = q$16$q;
         end
         op_q$8 = q$2$q;
         if (view$54 == 1) begin
@@ -18634,6 +19866,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if (view$54 == 4) begin
             op_q$8 = q$14$q;
         end
+        if (view$54 == 5) begin
+            op_q$8 = q$17$q;
+        end
         op_q$9 = q$2$q;
         if (view$57 == 1) begin
             op_q$9 = q$5$q;
@@ -18646,6 +19881,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         end
         if (view$57 == 4) begin
             op_q$9 = q$14$q;
+        end
+        if (view$57 == 5) begin
+            op_q$9 = q$17$q;
         end
         op_q$10 = q$2$q;
         if (view$60 == 1) begin
@@ -18660,6 +19898,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         if (view$60 == 4) begin
             op_q$10 = q$14$q;
         end
+        if (view$60 == 5) begin
+            op_q$10 = q$17$q;
+        end
         op_q$11 = q$2$q;
         if (view$63 == 1) begin
             op_q$11 = q$5$q;
@@ -18672,6 +19913,9 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         end
         if (view$63 == 4) begin
             op_q$11 = q$14$q;
+        end
+        if (view$63 == 5) begin
+            op_q$11 = q$17$q;
         end
         mul$0$en = run;
         if ((lane$0 == 0) & act_r$0$q) begin
@@ -22139,6 +23383,19 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             o_count$2$d = g4$count$2;
             o_d$2$d = g4$ed16$2[(32'h0)+:(21)];
         end
+        if (at_handover & (view_handover == 32'h5)) begin
+            o_walk$d = g5$up;
+            o_maj_left$d = maj_left$5;
+            o_j$0$d = g5$cy$0[(frac)+:(13)];
+            o_count$0$d = g5$count$0;
+            o_d$0$d = g5$ed16$0[(32'h0)+:(21)];
+            o_j$1$d = g5$cy$1[(frac)+:(13)];
+            o_count$1$d = g5$count$1;
+            o_d$1$d = g5$ed16$1[(32'h0)+:(21)];
+            o_j$2$d = g5$cy$2[(frac)+:(13)];
+            o_count$2$d = g5$count$2;
+            o_d$2$d = g5$ed16$2[(32'h0)+:(21)];
+        end
         out$walk = o_walk$q;
         out$maj_left = o_maj_left$q;
         out$maj_j = o_j$0$q;
@@ -22150,20 +23407,20 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         out$short1_j = o_j$2$q;
         out$short1_count = o_count$2$q;
         out$short1_d = o_d$2$q;
-        recip_mant = mant$4$q;
-        recip_exp = exp$4$q;
-        out$maj_x = x$12$q[(32'h0)+:(13)];
-        out$maj_r = r$12$q;
-        out$maj_q = q$12$q[(32'h0)+:(17)];
-        out$maj_rho = rho$12$q;
-        out$short0_x = x$13$q[(32'h0)+:(13)];
-        out$short0_r = r$13$q;
-        out$short0_q = q$13$q[(32'h0)+:(17)];
-        out$short0_rho = rho$13$q;
-        out$short1_x = x$14$q[(32'h0)+:(13)];
-        out$short1_r = r$14$q;
-        out$short1_q = q$14$q[(32'h0)+:(17)];
-        out$short1_rho = rho$14$q;
+        recip_mant = mant$5$q;
+        recip_exp = exp$5$q;
+        out$maj_x = x$15$q[(32'h0)+:(13)];
+        out$maj_r = r$15$q;
+        out$maj_q = q$15$q[(32'h0)+:(17)];
+        out$maj_rho = rho$15$q;
+        out$short0_x = x$16$q[(32'h0)+:(13)];
+        out$short0_r = r$16$q;
+        out$short0_q = q$16$q[(32'h0)+:(17)];
+        out$short0_rho = rho$16$q;
+        out$short1_x = x$17$q[(32'h0)+:(13)];
+        out$short1_r = r$17$q;
+        out$short1_q = q$17$q[(32'h0)+:(17)];
+        out$short1_rho = rho$17$q;
         out$maj_at_z = plane$0$q[(32'h0)+:(36)];
         out$maj_at_c0 = plane$1$q[(32'h0)+:(32)];
         out$maj_at_c1 = plane$2$q[(32'h0)+:(32)];
@@ -24772,6 +26029,25 @@ module raster_top$fragments$core$triangle_setup$crosses$4(d,q,clock);
     end
           
 endmodule // raster_top$fragments$core$triangle_setup$crosses$4
+
+
+module raster_top$fragments$core$triangle_setup$crosses$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$crosses$5
 
 
 module raster_top$fragments$core$triangle_setup$ddx_o$0(d,q,clock);
@@ -31323,6 +32599,25 @@ module raster_top$fragments$core$triangle_setup$exp$4(d,q,clock);
     end
           
 endmodule // raster_top$fragments$core$triangle_setup$exp$4
+
+
+module raster_top$fragments$core$triangle_setup$exp$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$exp$5
 
 
 module raster_top$fragments$core$triangle_setup$g0(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
@@ -40665,6 +41960,1874 @@ module raster_top$fragments$core$triangle_setup$g4$xn0_r(d,q,clock);
 endmodule // raster_top$fragments$core$triangle_setup$g4$xn0_r
 
 
+module raster_top$fragments$core$triangle_setup$g5(clock,vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$0,vz$1,vz$2,vc$0,vc$1,vc$2,vc$3,vc$4,vc$5,vc$6,vc$7,vc$8,crosses,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] vx$0;
+    input wire  [15:0] vx$1;
+    input wire  [15:0] vx$2;
+    input wire  [15:0] vy$0;
+    input wire  [15:0] vy$1;
+    input wire  [15:0] vy$2;
+    input wire  [17:0] vz$0;
+    input wire  [17:0] vz$1;
+    input wire  [17:0] vz$2;
+    input wire  [7:0] vc$0;
+    input wire  [7:0] vc$1;
+    input wire  [7:0] vc$2;
+    input wire  [7:0] vc$3;
+    input wire  [7:0] vc$4;
+    input wire  [7:0] vc$5;
+    input wire  [7:0] vc$6;
+    input wire  [7:0] vc$7;
+    input wire  [7:0] vc$8;
+    input wire  [5:0] crosses;
+    input wire  maj_left;
+    input wire  [18:0] start_x$0;
+    input wire  [18:0] start_x$1;
+    input wire  [18:0] start_x$2;
+    output reg  [57:0] kdx$0;
+    output reg  [57:0] kdx$1;
+    output reg  [57:0] kdx$2;
+    output reg  [56:0] kdy$0;
+    output reg  [56:0] kdy$1;
+    output reg  [56:0] kdy$2;
+    output reg  up;
+    output reg  [57:0] edx$0;
+    output reg  [57:0] edx$1;
+    output reg  [57:0] edx$2;
+    output reg  [56:0] edy$0;
+    output reg  [56:0] edy$1;
+    output reg  [56:0] edy$2;
+    output reg  [33:0] edy_d$0;
+    output reg  [33:0] edy_d$1;
+    output reg  [33:0] edy_d$2;
+    output reg  [33:0] ed16$0;
+    output reg  [33:0] ed16$1;
+    output reg  [33:0] ed16$2;
+    output reg  [18:0] cy$0;
+    output reg  [18:0] cy$1;
+    output reg  [18:0] cy$2;
+    output reg  [12:0] count$0;
+    output reg  [12:0] count$1;
+    output reg  [12:0] count$2;
+    output reg  [18:0] toff$0;
+    output reg  [18:0] toff$1;
+    output reg  [18:0] toff$2;
+    output reg  [18:0] xf$0;
+    output reg  [18:0] xf$1;
+    output reg  [18:0] xf$2;
+    output reg  [18:0] xi$0;
+    output reg  [18:0] xi$1;
+    output reg  [18:0] xi$2;
+    output reg  [18:0] off_x$0;
+    output reg  [18:0] off_x$1;
+    output reg  [18:0] off_x$2;
+    output reg  [18:0] off_y$0;
+    output reg  [18:0] off_y$1;
+    output reg  [18:0] off_y$2;
+    output reg  [18:0] dmaj$0;
+    output reg  [18:0] dmaj$1;
+    output reg  [18:0] dmaj$2;
+    output reg  [18:0] dmaj$3;
+    output reg  [18:0] dbot$0;
+    output reg  [18:0] dbot$1;
+    output reg  [18:0] dbot$2;
+    output reg  [18:0] dbot$3;
+    output reg  [39:0] attr0$0;
+    output reg  [39:0] attr0$1;
+    output reg  [39:0] attr0$2;
+    output reg  [39:0] attr0$3;
+    
+    // Constant declarations
+    localparam  frac = 8'h4;
+    localparam  half_m1 = 19'b111;
+    localparam  half = 19'b1000;
+    localparam  int_mask = 19'b1111111111111110000;
+    localparam  frac_mask = 19'b1111;
+    localparam  xy_msb = 8'hf;
+    localparam  z_msb = 8'h11;
+    localparam  nb_msb = 8'h12;
+    localparam  xy_ext = 58'h3ffffffffff0000;
+    localparam  y_ext = 57'h1ffffffffff0000;
+    localparam  z_ext = 19'b1000000000000000000;
+    localparam  shr_ext = 19'b1111000000000000000;
+    localparam  top_bit = 8'h2;
+    localparam  bottom_bit = 8'h3;
+    
+    // Stub signals
+    reg  [57:0] kdx_r$0$d;
+    wire  [57:0] kdx_r$0$q;
+    reg  kdx_r$0$clock;
+    reg  [57:0] kdx_r$1$d;
+    wire  [57:0] kdx_r$1$q;
+    reg  kdx_r$1$clock;
+    reg  [57:0] kdx_r$2$d;
+    wire  [57:0] kdx_r$2$q;
+    reg  kdx_r$2$clock;
+    reg  [56:0] kdy_r$0$d;
+    wire  [56:0] kdy_r$0$q;
+    reg  kdy_r$0$clock;
+    reg  [56:0] kdy_r$1$d;
+    wire  [56:0] kdy_r$1$q;
+    reg  kdy_r$1$clock;
+    reg  [56:0] kdy_r$2$d;
+    wire  [56:0] kdy_r$2$q;
+    reg  kdy_r$2$clock;
+    reg  up_r$d;
+    wire  up_r$q;
+    reg  up_r$clock;
+    reg  [57:0] edx_r$0$d;
+    wire  [57:0] edx_r$0$q;
+    reg  edx_r$0$clock;
+    reg  [57:0] edx_r$1$d;
+    wire  [57:0] edx_r$1$q;
+    reg  edx_r$1$clock;
+    reg  [57:0] edx_r$2$d;
+    wire  [57:0] edx_r$2$q;
+    reg  edx_r$2$clock;
+    reg  [56:0] edy_r$0$d;
+    wire  [56:0] edy_r$0$q;
+    reg  edy_r$0$clock;
+    reg  [56:0] edy_r$1$d;
+    wire  [56:0] edy_r$1$q;
+    reg  edy_r$1$clock;
+    reg  [56:0] edy_r$2$d;
+    wire  [56:0] edy_r$2$q;
+    reg  edy_r$2$clock;
+    reg  [33:0] edy_d_r$0$d;
+    wire  [33:0] edy_d_r$0$q;
+    reg  edy_d_r$0$clock;
+    reg  [33:0] edy_d_r$1$d;
+    wire  [33:0] edy_d_r$1$q;
+    reg  edy_d_r$1$clock;
+    reg  [33:0] edy_d_r$2$d;
+    wire  [33:0] edy_d_r$2$q;
+    reg  edy_d_r$2$clock;
+    reg  [33:0] ed16_r$0$d;
+    wire  [33:0] ed16_r$0$q;
+    reg  ed16_r$0$clock;
+    reg  [33:0] ed16_r$1$d;
+    wire  [33:0] ed16_r$1$q;
+    reg  ed16_r$1$clock;
+    reg  [33:0] ed16_r$2$d;
+    wire  [33:0] ed16_r$2$q;
+    reg  ed16_r$2$clock;
+    reg  [18:0] cy_r$0$d;
+    wire  [18:0] cy_r$0$q;
+    reg  cy_r$0$clock;
+    reg  [18:0] cy_r$1$d;
+    wire  [18:0] cy_r$1$q;
+    reg  cy_r$1$clock;
+    reg  [18:0] cy_r$2$d;
+    wire  [18:0] cy_r$2$q;
+    reg  cy_r$2$clock;
+    reg  [12:0] count_r$0$d;
+    wire  [12:0] count_r$0$q;
+    reg  count_r$0$clock;
+    reg  [12:0] count_r$1$d;
+    wire  [12:0] count_r$1$q;
+    reg  count_r$1$clock;
+    reg  [12:0] count_r$2$d;
+    wire  [12:0] count_r$2$q;
+    reg  count_r$2$clock;
+    reg  [18:0] toff_r$0$d;
+    wire  [18:0] toff_r$0$q;
+    reg  toff_r$0$clock;
+    reg  [18:0] toff_r$1$d;
+    wire  [18:0] toff_r$1$q;
+    reg  toff_r$1$clock;
+    reg  [18:0] toff_r$2$d;
+    wire  [18:0] toff_r$2$q;
+    reg  toff_r$2$clock;
+    reg  [18:0] xf_r$0$d;
+    wire  [18:0] xf_r$0$q;
+    reg  xf_r$0$clock;
+    reg  [18:0] xf_r$1$d;
+    wire  [18:0] xf_r$1$q;
+    reg  xf_r$1$clock;
+    reg  [18:0] xf_r$2$d;
+    wire  [18:0] xf_r$2$q;
+    reg  xf_r$2$clock;
+    reg  [18:0] xi_r$0$d;
+    wire  [18:0] xi_r$0$q;
+    reg  xi_r$0$clock;
+    reg  [18:0] xi_r$1$d;
+    wire  [18:0] xi_r$1$q;
+    reg  xi_r$1$clock;
+    reg  [18:0] xi_r$2$d;
+    wire  [18:0] xi_r$2$q;
+    reg  xi_r$2$clock;
+    reg  [18:0] off_y_r$0$d;
+    wire  [18:0] off_y_r$0$q;
+    reg  off_y_r$0$clock;
+    reg  [18:0] off_y_r$1$d;
+    wire  [18:0] off_y_r$1$q;
+    reg  off_y_r$1$clock;
+    reg  [18:0] off_y_r$2$d;
+    wire  [18:0] off_y_r$2$q;
+    reg  off_y_r$2$clock;
+    reg  [18:0] dmaj_r$0$d;
+    wire  [18:0] dmaj_r$0$q;
+    reg  dmaj_r$0$clock;
+    reg  [18:0] dmaj_r$1$d;
+    wire  [18:0] dmaj_r$1$q;
+    reg  dmaj_r$1$clock;
+    reg  [18:0] dmaj_r$2$d;
+    wire  [18:0] dmaj_r$2$q;
+    reg  dmaj_r$2$clock;
+    reg  [18:0] dmaj_r$3$d;
+    wire  [18:0] dmaj_r$3$q;
+    reg  dmaj_r$3$clock;
+    reg  [18:0] dbot_r$0$d;
+    wire  [18:0] dbot_r$0$q;
+    reg  dbot_r$0$clock;
+    reg  [18:0] dbot_r$1$d;
+    wire  [18:0] dbot_r$1$q;
+    reg  dbot_r$1$clock;
+    reg  [18:0] dbot_r$2$d;
+    wire  [18:0] dbot_r$2$q;
+    reg  dbot_r$2$clock;
+    reg  [18:0] dbot_r$3$d;
+    wire  [18:0] dbot_r$3$q;
+    reg  dbot_r$3$clock;
+    reg  [39:0] attr0_r$0$d;
+    wire  [39:0] attr0_r$0$q;
+    reg  attr0_r$0$clock;
+    reg  [39:0] attr0_r$1$d;
+    wire  [39:0] attr0_r$1$q;
+    reg  attr0_r$1$clock;
+    reg  [39:0] attr0_r$2$d;
+    wire  [39:0] attr0_r$2$q;
+    reg  attr0_r$2$clock;
+    reg  [39:0] attr0_r$3$d;
+    wire  [39:0] attr0_r$3$q;
+    reg  attr0_r$3$clock;
+    reg  [18:0] xn0_r$d;
+    wire  [18:0] xn0_r$q;
+    reg  xn0_r$clock;
+    
+    // Local signals
+    reg  [57:0] c_kdx$0;
+    reg  [57:0] c_kdx$1;
+    reg  [57:0] c_kdx$2;
+    reg  [56:0] c_kdy$0;
+    reg  [56:0] c_kdy$1;
+    reg  [56:0] c_kdy$2;
+    reg  c_up;
+    reg  [57:0] c_edx$0;
+    reg  [57:0] c_edx$1;
+    reg  [57:0] c_edx$2;
+    reg  [56:0] c_edy$0;
+    reg  [56:0] c_edy$1;
+    reg  [56:0] c_edy$2;
+    reg  [33:0] c_edy_d$0;
+    reg  [33:0] c_edy_d$1;
+    reg  [33:0] c_edy_d$2;
+    reg  [33:0] c_ed16$0;
+    reg  [33:0] c_ed16$1;
+    reg  [33:0] c_ed16$2;
+    reg  [18:0] c_cy$0;
+    reg  [18:0] c_cy$1;
+    reg  [18:0] c_cy$2;
+    reg  [12:0] c_count$0;
+    reg  [12:0] c_count$1;
+    reg  [12:0] c_count$2;
+    reg  [18:0] c_toff$0;
+    reg  [18:0] c_toff$1;
+    reg  [18:0] c_toff$2;
+    reg  [18:0] c_xf$0;
+    reg  [18:0] c_xf$1;
+    reg  [18:0] c_xf$2;
+    reg  [18:0] c_xi$0;
+    reg  [18:0] c_xi$1;
+    reg  [18:0] c_xi$2;
+    reg  [18:0] c_off_y$0;
+    reg  [18:0] c_off_y$1;
+    reg  [18:0] c_off_y$2;
+    reg  [18:0] c_dmaj$0;
+    reg  [18:0] c_dmaj$1;
+    reg  [18:0] c_dmaj$2;
+    reg  [18:0] c_dmaj$3;
+    reg  [18:0] c_dbot$0;
+    reg  [18:0] c_dbot$1;
+    reg  [18:0] c_dbot$2;
+    reg  [18:0] c_dbot$3;
+    reg  [39:0] c_attr0$0;
+    reg  [39:0] c_attr0$1;
+    reg  [39:0] c_attr0$2;
+    reg  [39:0] c_attr0$3;
+    reg  [57:0] xw$0;
+    reg  [57:0] xw$1;
+    reg  [57:0] xw$2;
+    reg  [56:0] yw$0;
+    reg  [56:0] yw$1;
+    reg  [56:0] yw$2;
+    reg  [18:0] zn$0;
+    reg  [18:0] zn$1;
+    reg  [18:0] zn$2;
+    reg  [18:0] cn$0;
+    reg  [18:0] cn$1;
+    reg  [18:0] cn$2;
+    reg  [18:0] cn$3;
+    reg  [18:0] cn$4;
+    reg  [18:0] cn$5;
+    reg  [18:0] cn$6;
+    reg  [18:0] cn$7;
+    reg  [18:0] cn$8;
+    reg  [18:0] xn$0;
+    reg  [18:0] xn$1;
+    reg  [18:0] xn$2;
+    reg  [18:0] yn$0;
+    reg  [18:0] yn$1;
+    reg  [18:0] yn$2;
+    reg  [18:0] cv$0;
+    reg  [18:0] cv$1;
+    reg  [18:0] cv$2;
+    reg  [12:0] span$0;
+    reg  [12:0] span$1;
+    reg  [12:0] span$2;
+    reg  [18:0] diff$0;
+    reg  [18:0] diff$1;
+    reg  [18:0] diff$2;
+    reg  [18:0] bx$0;
+    reg  [18:0] bx$1;
+    reg  [18:0] bx$2;
+    reg  [18:0] by$0;
+    reg  [18:0] by$1;
+    reg  [18:0] by$2;
+    reg  [18:0] xb$0;
+    reg  [18:0] xb$1;
+    reg  [18:0] xb$2;
+    reg  [18:0] tracked$0;
+    reg  [18:0] tracked$1;
+    reg  [18:0] tracked$2;
+    
+    // Sub module instances
+    raster_top$fragments$core$triangle_setup$g5$kdx_r$0 kdx_r$0(
+        .d(kdx_r$0$d),
+        .q(kdx_r$0$q),
+        .clock(kdx_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$kdx_r$1 kdx_r$1(
+        .d(kdx_r$1$d),
+        .q(kdx_r$1$q),
+        .clock(kdx_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$kdx_r$2 kdx_r$2(
+        .d(kdx_r$2$d),
+        .q(kdx_r$2$q),
+        .clock(kdx_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$kdy_r$0 kdy_r$0(
+        .d(kdy_r$0$d),
+        .q(kdy_r$0$q),
+        .clock(kdy_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$kdy_r$1 kdy_r$1(
+        .d(kdy_r$1$d),
+        .q(kdy_r$1$q),
+        .clock(kdy_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$kdy_r$2 kdy_r$2(
+        .d(kdy_r$2$d),
+        .q(kdy_r$2$q),
+        .clock(kdy_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$up_r up_r(
+        .d(up_r$d),
+        .q(up_r$q),
+        .clock(up_r$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$edx_r$0 edx_r$0(
+        .d(edx_r$0$d),
+        .q(edx_r$0$q),
+        .clock(edx_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$edx_r$1 edx_r$1(
+        .d(edx_r$1$d),
+        .q(edx_r$1$q),
+        .clock(edx_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$edx_r$2 edx_r$2(
+        .d(edx_r$2$d),
+        .q(edx_r$2$q),
+        .clock(edx_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$edy_r$0 edy_r$0(
+        .d(edy_r$0$d),
+        .q(edy_r$0$q),
+        .clock(edy_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$edy_r$1 edy_r$1(
+        .d(edy_r$1$d),
+        .q(edy_r$1$q),
+        .clock(edy_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$edy_r$2 edy_r$2(
+        .d(edy_r$2$d),
+        .q(edy_r$2$q),
+        .clock(edy_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$edy_d_r$0 edy_d_r$0(
+        .d(edy_d_r$0$d),
+        .q(edy_d_r$0$q),
+        .clock(edy_d_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$edy_d_r$1 edy_d_r$1(
+        .d(edy_d_r$1$d),
+        .q(edy_d_r$1$q),
+        .clock(edy_d_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$edy_d_r$2 edy_d_r$2(
+        .d(edy_d_r$2$d),
+        .q(edy_d_r$2$q),
+        .clock(edy_d_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$ed16_r$0 ed16_r$0(
+        .d(ed16_r$0$d),
+        .q(ed16_r$0$q),
+        .clock(ed16_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$ed16_r$1 ed16_r$1(
+        .d(ed16_r$1$d),
+        .q(ed16_r$1$q),
+        .clock(ed16_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$ed16_r$2 ed16_r$2(
+        .d(ed16_r$2$d),
+        .q(ed16_r$2$q),
+        .clock(ed16_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$cy_r$0 cy_r$0(
+        .d(cy_r$0$d),
+        .q(cy_r$0$q),
+        .clock(cy_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$cy_r$1 cy_r$1(
+        .d(cy_r$1$d),
+        .q(cy_r$1$q),
+        .clock(cy_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$cy_r$2 cy_r$2(
+        .d(cy_r$2$d),
+        .q(cy_r$2$q),
+        .clock(cy_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$count_r$0 count_r$0(
+        .d(count_r$0$d),
+        .q(count_r$0$q),
+        .clock(count_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$count_r$1 count_r$1(
+        .d(count_r$1$d),
+        .q(count_r$1$q),
+        .clock(count_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$count_r$2 count_r$2(
+        .d(count_r$2$d),
+        .q(count_r$2$q),
+        .clock(count_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$toff_r$0 toff_r$0(
+        .d(toff_r$0$d),
+        .q(toff_r$0$q),
+        .clock(toff_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$toff_r$1 toff_r$1(
+        .d(toff_r$1$d),
+        .q(toff_r$1$q),
+        .clock(toff_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$toff_r$2 toff_r$2(
+        .d(toff_r$2$d),
+        .q(toff_r$2$q),
+        .clock(toff_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$xf_r$0 xf_r$0(
+        .d(xf_r$0$d),
+        .q(xf_r$0$q),
+        .clock(xf_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$xf_r$1 xf_r$1(
+        .d(xf_r$1$d),
+        .q(xf_r$1$q),
+        .clock(xf_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$xf_r$2 xf_r$2(
+        .d(xf_r$2$d),
+        .q(xf_r$2$q),
+        .clock(xf_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$xi_r$0 xi_r$0(
+        .d(xi_r$0$d),
+        .q(xi_r$0$q),
+        .clock(xi_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$xi_r$1 xi_r$1(
+        .d(xi_r$1$d),
+        .q(xi_r$1$q),
+        .clock(xi_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$xi_r$2 xi_r$2(
+        .d(xi_r$2$d),
+        .q(xi_r$2$q),
+        .clock(xi_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$off_y_r$0 off_y_r$0(
+        .d(off_y_r$0$d),
+        .q(off_y_r$0$q),
+        .clock(off_y_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$off_y_r$1 off_y_r$1(
+        .d(off_y_r$1$d),
+        .q(off_y_r$1$q),
+        .clock(off_y_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$off_y_r$2 off_y_r$2(
+        .d(off_y_r$2$d),
+        .q(off_y_r$2$q),
+        .clock(off_y_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$dmaj_r$0 dmaj_r$0(
+        .d(dmaj_r$0$d),
+        .q(dmaj_r$0$q),
+        .clock(dmaj_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$dmaj_r$1 dmaj_r$1(
+        .d(dmaj_r$1$d),
+        .q(dmaj_r$1$q),
+        .clock(dmaj_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$dmaj_r$2 dmaj_r$2(
+        .d(dmaj_r$2$d),
+        .q(dmaj_r$2$q),
+        .clock(dmaj_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$dmaj_r$3 dmaj_r$3(
+        .d(dmaj_r$3$d),
+        .q(dmaj_r$3$q),
+        .clock(dmaj_r$3$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$dbot_r$0 dbot_r$0(
+        .d(dbot_r$0$d),
+        .q(dbot_r$0$q),
+        .clock(dbot_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$dbot_r$1 dbot_r$1(
+        .d(dbot_r$1$d),
+        .q(dbot_r$1$q),
+        .clock(dbot_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$dbot_r$2 dbot_r$2(
+        .d(dbot_r$2$d),
+        .q(dbot_r$2$q),
+        .clock(dbot_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$dbot_r$3 dbot_r$3(
+        .d(dbot_r$3$d),
+        .q(dbot_r$3$q),
+        .clock(dbot_r$3$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$attr0_r$0 attr0_r$0(
+        .d(attr0_r$0$d),
+        .q(attr0_r$0$q),
+        .clock(attr0_r$0$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$attr0_r$1 attr0_r$1(
+        .d(attr0_r$1$d),
+        .q(attr0_r$1$q),
+        .clock(attr0_r$1$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$attr0_r$2 attr0_r$2(
+        .d(attr0_r$2$d),
+        .q(attr0_r$2$q),
+        .clock(attr0_r$2$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$attr0_r$3 attr0_r$3(
+        .d(attr0_r$3$d),
+        .q(attr0_r$3$q),
+        .clock(attr0_r$3$clock)
+    );
+    raster_top$fragments$core$triangle_setup$g5$xn0_r xn0_r(
+        .d(xn0_r$d),
+        .q(xn0_r$q),
+        .clock(xn0_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        xw$0 = ((vx$0) & 58'h3ffffffffffffff);
+        if (vx$0[xy_msb]) begin
+            xw$0 = ((vx$0) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$1 = ((vx$1) & 58'h3ffffffffffffff);
+        if (vx$1[xy_msb]) begin
+            xw$1 = ((vx$1) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        xw$2 = ((vx$2) & 58'h3ffffffffffffff);
+        if (vx$2[xy_msb]) begin
+            xw$2 = ((vx$2) & 58'h3ffffffffffffff) | xy_ext;
+        end
+        yw$0 = ((vy$0) & 57'h1ffffffffffffff);
+        if (vy$0[xy_msb]) begin
+            yw$0 = ((vy$0) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$1 = ((vy$1) & 57'h1ffffffffffffff);
+        if (vy$1[xy_msb]) begin
+            yw$1 = ((vy$1) & 57'h1ffffffffffffff) | y_ext;
+        end
+        yw$2 = ((vy$2) & 57'h1ffffffffffffff);
+        if (vy$2[xy_msb]) begin
+            yw$2 = ((vy$2) & 57'h1ffffffffffffff) | y_ext;
+        end
+        zn$0 = ((vz$0) & 19'h7ffff);
+        if (vz$0[z_msb]) begin
+            zn$0 = ((vz$0) & 19'h7ffff) | z_ext;
+        end
+        zn$1 = ((vz$1) & 19'h7ffff);
+        if (vz$1[z_msb]) begin
+            zn$1 = ((vz$1) & 19'h7ffff) | z_ext;
+        end
+        zn$2 = ((vz$2) & 19'h7ffff);
+        if (vz$2[z_msb]) begin
+            zn$2 = ((vz$2) & 19'h7ffff) | z_ext;
+        end
+        cn$0 = ((vc$0) & 19'h7ffff);
+        cn$1 = ((vc$1) & 19'h7ffff);
+        cn$2 = ((vc$2) & 19'h7ffff);
+        cn$3 = ((vc$3) & 19'h7ffff);
+        cn$4 = ((vc$4) & 19'h7ffff);
+        cn$5 = ((vc$5) & 19'h7ffff);
+        cn$6 = ((vc$6) & 19'h7ffff);
+        cn$7 = ((vc$7) & 19'h7ffff);
+        cn$8 = ((vc$8) & 19'h7ffff);
+        xn$0 = xw$0[(32'h0)+:(19)];
+        yn$0 = yw$0[(32'h0)+:(19)];
+        cv$0 = ((yn$0 + half_m1) & int_mask) | half;
+        xn$1 = xw$1[(32'h0)+:(19)];
+        yn$1 = yw$1[(32'h0)+:(19)];
+        cv$1 = ((yn$1 + half_m1) & int_mask) | half;
+        xn$2 = xw$2[(32'h0)+:(19)];
+        yn$2 = yw$2[(32'h0)+:(19)];
+        cv$2 = ((yn$2 + half_m1) & int_mask) | half;
+        c_kdx$0 = xw$2 - xw$0;
+        c_kdy$0 = yw$2 - yw$0;
+        diff$0 = cv$2 - cv$0;
+        c_kdx$1 = xw$1 - xw$0;
+        c_kdy$1 = yw$1 - yw$0;
+        diff$1 = cv$1 - cv$0;
+        c_kdx$2 = xw$2 - xw$1;
+        c_kdy$2 = yw$2 - yw$1;
+        diff$2 = cv$2 - cv$1;
+        span$0 = diff$0[(frac)+:(13)];
+        if (diff$0[nb_msb]) begin
+            span$0 = 32'h0;
+        end
+        span$1 = diff$1[(frac)+:(13)];
+        if (diff$1[nb_msb]) begin
+            span$1 = 32'h0;
+        end
+        span$2 = diff$2[(frac)+:(13)];
+        if (diff$2[nb_msb]) begin
+            span$2 = 32'h0;
+        end
+        c_up = crosses[top_bit] & ~crosses[bottom_bit];
+        c_edx$0 = c_kdx$0;
+        c_edy$0 = c_kdy$0;
+        c_count$0 = span$0;
+        c_edx$1 = c_kdx$1;
+        c_edy$1 = c_kdy$1;
+        c_count$1 = span$1;
+        c_edx$2 = c_kdx$2;
+        c_edy$2 = c_kdy$2;
+        c_count$2 = span$2;
+        bx$0 = xn$0;
+        by$0 = yn$0;
+        c_cy$0 = cv$0;
+        bx$1 = xn$0;
+        by$1 = yn$0;
+        c_cy$1 = cv$0;
+        bx$2 = xn$1;
+        by$2 = yn$1;
+        c_cy$2 = cv$1;
+        if (c_up) begin
+            c_edx$1 = c_kdx$2;
+            c_edy$1 = c_kdy$2;
+            c_count$1 = span$2;
+            c_edx$2 = c_kdx$1;
+            c_edy$2 = c_kdy$1;
+            c_count$2 = span$1;
+            bx$0 = xn$2;
+            by$0 = yn$2;
+            c_cy$0 = cv$2 - (frac_mask + 32'h1);
+            bx$1 = xn$2;
+            by$1 = yn$2;
+            c_cy$1 = cv$2 - (frac_mask + 32'h1);
+            c_cy$2 = cv$1 - (frac_mask + 32'h1);
+        end
+        c_edy_d$0 = ((c_edy$0) & 34'h3ffffffff);
+        c_edy_d$1 = ((c_edy$1) & 34'h3ffffffff);
+        c_edy_d$2 = ((c_edy$2) & 34'h3ffffffff);
+        tracked$0 = start_x$0 - 32'h1;
+        if (maj_left) begin
+            tracked$0 = start_x$0;
+        end
+        tracked$1 = start_x$1;
+        if (maj_left) begin
+            tracked$1 = start_x$1 - 32'h1;
+        end
+        tracked$2 = start_x$2;
+        if (maj_left) begin
+            tracked$2 = start_x$2 - 32'h1;
+        end
+        c_ed16$0 = c_edy_d$0 << frac;
+        c_toff$0 = c_cy$0 - by$0;
+        xb$0 = bx$0 - half;
+        c_xf$0 = xb$0 & frac_mask;
+        c_xi$0 = xb$0 >> frac;
+        if (xb$0[nb_msb]) begin
+            c_xi$0 = (xb$0 >> frac) | shr_ext;
+        end
+        c_off_y$0 = c_cy$0 - yn$0;
+        off_x$0 = (tracked$0 << frac) + half - xn0_r$q;
+        c_ed16$1 = c_edy_d$1 << frac;
+        c_toff$1 = c_cy$1 - by$1;
+        xb$1 = bx$1 - half;
+        c_xf$1 = xb$1 & frac_mask;
+        c_xi$1 = xb$1 >> frac;
+        if (xb$1[nb_msb]) begin
+            c_xi$1 = (xb$1 >> frac) | shr_ext;
+        end
+        c_off_y$1 = c_cy$1 - yn$0;
+        off_x$1 = (tracked$1 << frac) + half - xn0_r$q;
+        c_ed16$2 = c_edy_d$2 << frac;
+        c_toff$2 = c_cy$2 - by$2;
+        xb$2 = bx$2 - half;
+        c_xf$2 = xb$2 & frac_mask;
+        c_xi$2 = xb$2 >> frac;
+        if (xb$2[nb_msb]) begin
+            c_xi$2 = (xb$2 >> frac) | shr_ext;
+        end
+        c_off_y$2 = c_cy$2 - yn$0;
+        off_x$2 = (tracked$2 << frac) + half - xn0_r$q;
+        c_dmaj$0 = zn$2 - zn$0;
+        c_dbot$0 = zn$1 - zn$0;
+        c_attr0$0 = ((zn$0) & 40'hffffffffff);
+        c_attr0$1 = ((vc$0) & 40'hffffffffff);
+        c_attr0$2 = ((vc$1) & 40'hffffffffff);
+        c_attr0$3 = ((vc$2) & 40'hffffffffff);
+        c_dmaj$1 = cn$6 - cn$0;
+        c_dbot$1 = cn$3 - cn$0;
+        c_dmaj$2 = cn$7 - cn$1;
+        c_dbot$2 = cn$4 - cn$1;
+        c_dmaj$3 = cn$8 - cn$2;
+        c_dbot$3 = cn$5 - cn$2;
+        xn0_r$clock = clock;
+        xn0_r$d = xn$0;
+        kdx_r$0$clock = clock;
+        kdx_r$0$d = c_kdx$0;
+        kdx$0 = kdx_r$0$q;
+        kdx_r$1$clock = clock;
+        kdx_r$1$d = c_kdx$1;
+        kdx$1 = kdx_r$1$q;
+        kdx_r$2$clock = clock;
+        kdx_r$2$d = c_kdx$2;
+        kdx$2 = kdx_r$2$q;
+        kdy_r$0$clock = clock;
+        kdy_r$0$d = c_kdy$0;
+        kdy$0 = kdy_r$0$q;
+        kdy_r$1$clock = clock;
+        kdy_r$1$d = c_kdy$1;
+        kdy$1 = kdy_r$1$q;
+        kdy_r$2$clock = clock;
+        kdy_r$2$d = c_kdy$2;
+        kdy$2 = kdy_r$2$q;
+        up_r$clock = clock;
+        up_r$d = c_up;
+        up = up_r$q;
+        edx_r$0$clock = clock;
+        edx_r$0$d = c_edx$0;
+        edx$0 = edx_r$0$q;
+        edx_r$1$clock = clock;
+        edx_r$1$d = c_edx$1;
+        edx$1 = edx_r$1$q;
+        edx_r$2$clock = clock;
+        edx_r$2$d = c_edx$2;
+        edx$2 = edx_r$2$q;
+        edy_r$0$clock = clock;
+        edy_r$0$d = c_edy$0;
+        edy$0 = edy_r$0$q;
+        edy_r$1$clock = clock;
+        edy_r$1$d = c_edy$1;
+        edy$1 = edy_r$1$q;
+        edy_r$2$clock = clock;
+        edy_r$2$d = c_edy$2;
+        edy$2 = edy_r$2$q;
+        edy_d_r$0$clock = clock;
+        edy_d_r$0$d = c_edy_d$0;
+        edy_d$0 = edy_d_r$0$q;
+        edy_d_r$1$clock = clock;
+        edy_d_r$1$d = c_edy_d$1;
+        edy_d$1 = edy_d_r$1$q;
+        edy_d_r$2$clock = clock;
+        edy_d_r$2$d = c_edy_d$2;
+        edy_d$2 = edy_d_r$2$q;
+        ed16_r$0$clock = clock;
+        ed16_r$0$d = c_ed16$0;
+        ed16$0 = ed16_r$0$q;
+        ed16_r$1$clock = clock;
+        ed16_r$1$d = c_ed16$1;
+        ed16$1 = ed16_r$1$q;
+        ed16_r$2$clock = clock;
+        ed16_r$2$d = c_ed16$2;
+        ed16$2 = ed16_r$2$q;
+        cy_r$0$clock = clock;
+        cy_r$0$d = c_cy$0;
+        cy$0 = cy_r$0$q;
+        cy_r$1$clock = clock;
+        cy_r$1$d = c_cy$1;
+        cy$1 = cy_r$1$q;
+        cy_r$2$clock = clock;
+        cy_r$2$d = c_cy$2;
+        cy$2 = cy_r$2$q;
+        count_r$0$clock = clock;
+        count_r$0$d = c_count$0;
+        count$0 = count_r$0$q;
+        count_r$1$clock = clock;
+        count_r$1$d = c_count$1;
+        count$1 = count_r$1$q;
+        count_r$2$clock = clock;
+        count_r$2$d = c_count$2;
+        count$2 = count_r$2$q;
+        toff_r$0$clock = clock;
+        toff_r$0$d = c_toff$0;
+        toff$0 = toff_r$0$q;
+        toff_r$1$clock = clock;
+        toff_r$1$d = c_toff$1;
+        toff$1 = toff_r$1$q;
+        toff_r$2$clock = clock;
+        toff_r$2$d = c_toff$2;
+        toff$2 = toff_r$2$q;
+        xf_r$0$clock = clock;
+        xf_r$0$d = c_xf$0;
+        xf$0 = xf_r$0$q;
+        xf_r$1$clock = clock;
+        xf_r$1$d = c_xf$1;
+        xf$1 = xf_r$1$q;
+        xf_r$2$clock = clock;
+        xf_r$2$d = c_xf$2;
+        xf$2 = xf_r$2$q;
+        xi_r$0$clock = clock;
+        xi_r$0$d = c_xi$0;
+        xi$0 = xi_r$0$q;
+        xi_r$1$clock = clock;
+        xi_r$1$d = c_xi$1;
+        xi$1 = xi_r$1$q;
+        xi_r$2$clock = clock;
+        xi_r$2$d = c_xi$2;
+        xi$2 = xi_r$2$q;
+        off_y_r$0$clock = clock;
+        off_y_r$0$d = c_off_y$0;
+        off_y$0 = off_y_r$0$q;
+        off_y_r$1$clock = clock;
+        off_y_r$1$d = c_off_y$1;
+        off_y$1 = off_y_r$1$q;
+        off_y_r$2$clock = clock;
+        off_y_r$2$d = c_off_y$2;
+        off_y$2 = off_y_r$2$q;
+        dmaj_r$0$clock = clock;
+        dmaj_r$0$d = c_dmaj$0;
+        dmaj$0 = dmaj_r$0$q;
+        dmaj_r$1$clock = clock;
+        dmaj_r$1$d = c_dmaj$1;
+        dmaj$1 = dmaj_r$1$q;
+        dmaj_r$2$clock = clock;
+        dmaj_r$2$d = c_dmaj$2;
+        dmaj$2 = dmaj_r$2$q;
+        dmaj_r$3$clock = clock;
+        dmaj_r$3$d = c_dmaj$3;
+        dmaj$3 = dmaj_r$3$q;
+        dbot_r$0$clock = clock;
+        dbot_r$0$d = c_dbot$0;
+        dbot$0 = dbot_r$0$q;
+        dbot_r$1$clock = clock;
+        dbot_r$1$d = c_dbot$1;
+        dbot$1 = dbot_r$1$q;
+        dbot_r$2$clock = clock;
+        dbot_r$2$d = c_dbot$2;
+        dbot$2 = dbot_r$2$q;
+        dbot_r$3$clock = clock;
+        dbot_r$3$d = c_dbot$3;
+        dbot$3 = dbot_r$3$q;
+        attr0_r$0$clock = clock;
+        attr0_r$0$d = c_attr0$0;
+        attr0$0 = attr0_r$0$q;
+        attr0_r$1$clock = clock;
+        attr0_r$1$d = c_attr0$1;
+        attr0$1 = attr0_r$1$q;
+        attr0_r$2$clock = clock;
+        attr0_r$2$d = c_attr0$2;
+        attr0$2 = attr0_r$2$q;
+        attr0_r$3$clock = clock;
+        attr0_r$3$d = c_attr0$3;
+        attr0$3 = attr0_r$3$q;
+    end
+    
+endmodule // raster_top$fragments$core$triangle_setup$g5
+
+
+module raster_top$fragments$core$triangle_setup$g5$attr0_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$attr0_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$attr0_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$attr0_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$attr0_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$attr0_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$attr0_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$attr0_r$3
+
+
+module raster_top$fragments$core$triangle_setup$g5$count_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$count_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$count_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$count_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$count_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$count_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$cy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$cy_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$cy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$cy_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$cy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$cy_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$dbot_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$dbot_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$dbot_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$dbot_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$dbot_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$dbot_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$dbot_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$dbot_r$3
+
+
+module raster_top$fragments$core$triangle_setup$g5$dmaj_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$dmaj_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$dmaj_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$dmaj_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$dmaj_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$dmaj_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$dmaj_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$dmaj_r$3
+
+
+module raster_top$fragments$core$triangle_setup$g5$ed16_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$ed16_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$ed16_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$ed16_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$ed16_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$ed16_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$edx_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$edx_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$edx_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$edx_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$edx_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$edx_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$edy_d_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$edy_d_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$edy_d_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$edy_d_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$edy_d_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [33:0] d;
+    output reg  [33:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 34'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$edy_d_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$edy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$edy_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$edy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$edy_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$edy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$edy_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$kdx_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$kdx_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$kdx_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$kdx_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$kdx_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [57:0] d;
+    output reg  [57:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 58'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$kdx_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$kdy_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$kdy_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$kdy_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$kdy_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$kdy_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [56:0] d;
+    output reg  [56:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 57'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$kdy_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$off_y_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$off_y_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$off_y_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$off_y_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$off_y_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$off_y_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$toff_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$toff_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$toff_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$toff_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$toff_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$toff_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$up_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$up_r
+
+
+module raster_top$fragments$core$triangle_setup$g5$xf_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$xf_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$xf_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$xf_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$xf_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$xf_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$xi_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$xi_r$0
+
+
+module raster_top$fragments$core$triangle_setup$g5$xi_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$xi_r$1
+
+
+module raster_top$fragments$core$triangle_setup$g5$xi_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$xi_r$2
+
+
+module raster_top$fragments$core$triangle_setup$g5$xn0_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$g5$xn0_r
+
+
 module raster_top$fragments$core$triangle_setup$gx$0(d,q,clock);
     
     // Module arguments
@@ -41539,6 +44702,25 @@ module raster_top$fragments$core$triangle_setup$mant$4(d,q,clock);
 endmodule // raster_top$fragments$core$triangle_setup$mant$4
 
 
+module raster_top$fragments$core$triangle_setup$mant$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [24:0] d;
+    output reg  [24:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 25'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$mant$5
+
+
 module raster_top$fragments$core$triangle_setup$mant_s(d,q,clock);
     
     // Module arguments
@@ -41567,132 +44749,38 @@ module raster_top$fragments$core$triangle_setup$mul$0(clock,en,a,b,p);
     input wire  [18:0] b;
     output reg  [57:0] p;
     
-    // Stub signals
-    reg  [56:0] a_r$d;
-    wire  [56:0] a_r$q;
-    reg  a_r$clock;
-    reg  [18:0] b_r$d;
-    wire  [18:0] b_r$q;
-    reg  b_r$clock;
-    reg  [57:0] p_r$d;
-    wire  [57:0] p_r$q;
-    reg  p_r$clock;
-    reg  [56:0] mul$a;
-    reg  [18:0] mul$b;
-    wire  [57:0] mul$p;
-    
-    // Sub module instances
-    raster_top$fragments$core$triangle_setup$mul$0$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$0$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$0$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$0$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed, three registers deep (rtl::mul::SplitMul):
+    // operands; partial products (a's 17-bit chunks times b's low 17 bits, one DSP
+    // block each, and a times b's top 2 bits); their sum.
+    reg [56:0] a_r;
+    reg [18:0] b_r;
+    initial a_r = 0;
+    initial b_r = 0;
+    wire [18:0] bx = b_r;
+    reg [33:0] pp0;
+    initial pp0 = 0;
+    reg [33:0] pp1;
+    initial pp1 = 0;
+    reg [23:0] pp2;
+    initial pp2 = 0;
+    reg [6:0] pp3;
+    initial pp3 = 0;
+    reg [40:0] ph;
+    initial ph = 0;
+    wire [40:0] ax = a_r[40:0];
+    always @(posedge clock) if (en) begin
+        a_r <= a;
+        b_r <= b;
+        pp0 <= a_r[16:0] * bx[16:0];
+        pp1 <= a_r[33:17] * bx[16:0];
+        pp2 <= a_r[50:34] * bx[16:0];
+        pp3 <= $signed(a_r[56:51]) * $signed({1'b0, bx[16:0]});
+        ph <= ({41{bx[17]}} & ax) - ({41{bx[18]}} & {ax[39:0], 1'b0});
+        p <= {pp2[23:0], pp0[33:0]} + {pp3[6:0], pp1[33:0], 17'd0} + {ph, 17'd0};
     end
-    
+    initial p = 0;
 endmodule // raster_top$fragments$core$triangle_setup$mul$0
-
-
-module raster_top$fragments$core$triangle_setup$mul$0$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [56:0] d;
-    output reg  [56:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 57'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$0$a_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$0$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [18:0] d;
-    output reg  [18:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 19'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$0$b_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$0$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [56:0] a;
-    input wire  [18:0] b;
-    output reg  [57:0] p;
-    
-    // Update code (custom)
-    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$fragments$core$triangle_setup$mul$0$mul
-
-
-module raster_top$fragments$core$triangle_setup$mul$0$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [57:0] d;
-    output reg  [57:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 58'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$0$p_r
 
 
 module raster_top$fragments$core$triangle_setup$mul$1(clock,en,a,b,p);
@@ -41704,132 +44792,38 @@ module raster_top$fragments$core$triangle_setup$mul$1(clock,en,a,b,p);
     input wire  [18:0] b;
     output reg  [57:0] p;
     
-    // Stub signals
-    reg  [56:0] a_r$d;
-    wire  [56:0] a_r$q;
-    reg  a_r$clock;
-    reg  [18:0] b_r$d;
-    wire  [18:0] b_r$q;
-    reg  b_r$clock;
-    reg  [57:0] p_r$d;
-    wire  [57:0] p_r$q;
-    reg  p_r$clock;
-    reg  [56:0] mul$a;
-    reg  [18:0] mul$b;
-    wire  [57:0] mul$p;
-    
-    // Sub module instances
-    raster_top$fragments$core$triangle_setup$mul$1$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$1$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$1$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$1$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed, three registers deep (rtl::mul::SplitMul):
+    // operands; partial products (a's 17-bit chunks times b's low 17 bits, one DSP
+    // block each, and a times b's top 2 bits); their sum.
+    reg [56:0] a_r;
+    reg [18:0] b_r;
+    initial a_r = 0;
+    initial b_r = 0;
+    wire [18:0] bx = b_r;
+    reg [33:0] pp0;
+    initial pp0 = 0;
+    reg [33:0] pp1;
+    initial pp1 = 0;
+    reg [23:0] pp2;
+    initial pp2 = 0;
+    reg [6:0] pp3;
+    initial pp3 = 0;
+    reg [40:0] ph;
+    initial ph = 0;
+    wire [40:0] ax = a_r[40:0];
+    always @(posedge clock) if (en) begin
+        a_r <= a;
+        b_r <= b;
+        pp0 <= a_r[16:0] * bx[16:0];
+        pp1 <= a_r[33:17] * bx[16:0];
+        pp2 <= a_r[50:34] * bx[16:0];
+        pp3 <= $signed(a_r[56:51]) * $signed({1'b0, bx[16:0]});
+        ph <= ({41{bx[17]}} & ax) - ({41{bx[18]}} & {ax[39:0], 1'b0});
+        p <= {pp2[23:0], pp0[33:0]} + {pp3[6:0], pp1[33:0], 17'd0} + {ph, 17'd0};
     end
-    
+    initial p = 0;
 endmodule // raster_top$fragments$core$triangle_setup$mul$1
-
-
-module raster_top$fragments$core$triangle_setup$mul$1$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [56:0] d;
-    output reg  [56:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 57'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$1$a_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$1$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [18:0] d;
-    output reg  [18:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 19'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$1$b_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$1$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [56:0] a;
-    input wire  [18:0] b;
-    output reg  [57:0] p;
-    
-    // Update code (custom)
-    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$fragments$core$triangle_setup$mul$1$mul
-
-
-module raster_top$fragments$core$triangle_setup$mul$1$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [57:0] d;
-    output reg  [57:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 58'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$1$p_r
 
 
 module raster_top$fragments$core$triangle_setup$mul$2(clock,en,a,b,p);
@@ -41841,132 +44835,38 @@ module raster_top$fragments$core$triangle_setup$mul$2(clock,en,a,b,p);
     input wire  [18:0] b;
     output reg  [57:0] p;
     
-    // Stub signals
-    reg  [56:0] a_r$d;
-    wire  [56:0] a_r$q;
-    reg  a_r$clock;
-    reg  [18:0] b_r$d;
-    wire  [18:0] b_r$q;
-    reg  b_r$clock;
-    reg  [57:0] p_r$d;
-    wire  [57:0] p_r$q;
-    reg  p_r$clock;
-    reg  [56:0] mul$a;
-    reg  [18:0] mul$b;
-    wire  [57:0] mul$p;
-    
-    // Sub module instances
-    raster_top$fragments$core$triangle_setup$mul$2$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$2$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$2$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$2$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed, three registers deep (rtl::mul::SplitMul):
+    // operands; partial products (a's 17-bit chunks times b's low 17 bits, one DSP
+    // block each, and a times b's top 2 bits); their sum.
+    reg [56:0] a_r;
+    reg [18:0] b_r;
+    initial a_r = 0;
+    initial b_r = 0;
+    wire [18:0] bx = b_r;
+    reg [33:0] pp0;
+    initial pp0 = 0;
+    reg [33:0] pp1;
+    initial pp1 = 0;
+    reg [23:0] pp2;
+    initial pp2 = 0;
+    reg [6:0] pp3;
+    initial pp3 = 0;
+    reg [40:0] ph;
+    initial ph = 0;
+    wire [40:0] ax = a_r[40:0];
+    always @(posedge clock) if (en) begin
+        a_r <= a;
+        b_r <= b;
+        pp0 <= a_r[16:0] * bx[16:0];
+        pp1 <= a_r[33:17] * bx[16:0];
+        pp2 <= a_r[50:34] * bx[16:0];
+        pp3 <= $signed(a_r[56:51]) * $signed({1'b0, bx[16:0]});
+        ph <= ({41{bx[17]}} & ax) - ({41{bx[18]}} & {ax[39:0], 1'b0});
+        p <= {pp2[23:0], pp0[33:0]} + {pp3[6:0], pp1[33:0], 17'd0} + {ph, 17'd0};
     end
-    
+    initial p = 0;
 endmodule // raster_top$fragments$core$triangle_setup$mul$2
-
-
-module raster_top$fragments$core$triangle_setup$mul$2$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [56:0] d;
-    output reg  [56:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 57'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$2$a_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$2$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [18:0] d;
-    output reg  [18:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 19'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$2$b_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$2$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [56:0] a;
-    input wire  [18:0] b;
-    output reg  [57:0] p;
-    
-    // Update code (custom)
-    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$fragments$core$triangle_setup$mul$2$mul
-
-
-module raster_top$fragments$core$triangle_setup$mul$2$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [57:0] d;
-    output reg  [57:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 58'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$2$p_r
 
 
 module raster_top$fragments$core$triangle_setup$mul$3(clock,en,a,b,p);
@@ -41978,132 +44878,38 @@ module raster_top$fragments$core$triangle_setup$mul$3(clock,en,a,b,p);
     input wire  [18:0] b;
     output reg  [57:0] p;
     
-    // Stub signals
-    reg  [56:0] a_r$d;
-    wire  [56:0] a_r$q;
-    reg  a_r$clock;
-    reg  [18:0] b_r$d;
-    wire  [18:0] b_r$q;
-    reg  b_r$clock;
-    reg  [57:0] p_r$d;
-    wire  [57:0] p_r$q;
-    reg  p_r$clock;
-    reg  [56:0] mul$a;
-    reg  [18:0] mul$b;
-    wire  [57:0] mul$p;
-    
-    // Sub module instances
-    raster_top$fragments$core$triangle_setup$mul$3$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$3$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$3$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$3$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed, three registers deep (rtl::mul::SplitMul):
+    // operands; partial products (a's 17-bit chunks times b's low 17 bits, one DSP
+    // block each, and a times b's top 2 bits); their sum.
+    reg [56:0] a_r;
+    reg [18:0] b_r;
+    initial a_r = 0;
+    initial b_r = 0;
+    wire [18:0] bx = b_r;
+    reg [33:0] pp0;
+    initial pp0 = 0;
+    reg [33:0] pp1;
+    initial pp1 = 0;
+    reg [23:0] pp2;
+    initial pp2 = 0;
+    reg [6:0] pp3;
+    initial pp3 = 0;
+    reg [40:0] ph;
+    initial ph = 0;
+    wire [40:0] ax = a_r[40:0];
+    always @(posedge clock) if (en) begin
+        a_r <= a;
+        b_r <= b;
+        pp0 <= a_r[16:0] * bx[16:0];
+        pp1 <= a_r[33:17] * bx[16:0];
+        pp2 <= a_r[50:34] * bx[16:0];
+        pp3 <= $signed(a_r[56:51]) * $signed({1'b0, bx[16:0]});
+        ph <= ({41{bx[17]}} & ax) - ({41{bx[18]}} & {ax[39:0], 1'b0});
+        p <= {pp2[23:0], pp0[33:0]} + {pp3[6:0], pp1[33:0], 17'd0} + {ph, 17'd0};
     end
-    
+    initial p = 0;
 endmodule // raster_top$fragments$core$triangle_setup$mul$3
-
-
-module raster_top$fragments$core$triangle_setup$mul$3$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [56:0] d;
-    output reg  [56:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 57'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$3$a_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$3$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [18:0] d;
-    output reg  [18:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 19'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$3$b_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$3$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [56:0] a;
-    input wire  [18:0] b;
-    output reg  [57:0] p;
-    
-    // Update code (custom)
-    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$fragments$core$triangle_setup$mul$3$mul
-
-
-module raster_top$fragments$core$triangle_setup$mul$3$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [57:0] d;
-    output reg  [57:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 58'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$3$p_r
 
 
 module raster_top$fragments$core$triangle_setup$mul$4(clock,en,a,b,p);
@@ -42115,132 +44921,38 @@ module raster_top$fragments$core$triangle_setup$mul$4(clock,en,a,b,p);
     input wire  [18:0] b;
     output reg  [57:0] p;
     
-    // Stub signals
-    reg  [56:0] a_r$d;
-    wire  [56:0] a_r$q;
-    reg  a_r$clock;
-    reg  [18:0] b_r$d;
-    wire  [18:0] b_r$q;
-    reg  b_r$clock;
-    reg  [57:0] p_r$d;
-    wire  [57:0] p_r$q;
-    reg  p_r$clock;
-    reg  [56:0] mul$a;
-    reg  [18:0] mul$b;
-    wire  [57:0] mul$p;
-    
-    // Sub module instances
-    raster_top$fragments$core$triangle_setup$mul$4$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$4$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$4$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$4$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed, three registers deep (rtl::mul::SplitMul):
+    // operands; partial products (a's 17-bit chunks times b's low 17 bits, one DSP
+    // block each, and a times b's top 2 bits); their sum.
+    reg [56:0] a_r;
+    reg [18:0] b_r;
+    initial a_r = 0;
+    initial b_r = 0;
+    wire [18:0] bx = b_r;
+    reg [33:0] pp0;
+    initial pp0 = 0;
+    reg [33:0] pp1;
+    initial pp1 = 0;
+    reg [23:0] pp2;
+    initial pp2 = 0;
+    reg [6:0] pp3;
+    initial pp3 = 0;
+    reg [40:0] ph;
+    initial ph = 0;
+    wire [40:0] ax = a_r[40:0];
+    always @(posedge clock) if (en) begin
+        a_r <= a;
+        b_r <= b;
+        pp0 <= a_r[16:0] * bx[16:0];
+        pp1 <= a_r[33:17] * bx[16:0];
+        pp2 <= a_r[50:34] * bx[16:0];
+        pp3 <= $signed(a_r[56:51]) * $signed({1'b0, bx[16:0]});
+        ph <= ({41{bx[17]}} & ax) - ({41{bx[18]}} & {ax[39:0], 1'b0});
+        p <= {pp2[23:0], pp0[33:0]} + {pp3[6:0], pp1[33:0], 17'd0} + {ph, 17'd0};
     end
-    
+    initial p = 0;
 endmodule // raster_top$fragments$core$triangle_setup$mul$4
-
-
-module raster_top$fragments$core$triangle_setup$mul$4$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [56:0] d;
-    output reg  [56:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 57'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$4$a_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$4$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [18:0] d;
-    output reg  [18:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 19'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$4$b_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$4$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [56:0] a;
-    input wire  [18:0] b;
-    output reg  [57:0] p;
-    
-    // Update code (custom)
-    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$fragments$core$triangle_setup$mul$4$mul
-
-
-module raster_top$fragments$core$triangle_setup$mul$4$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [57:0] d;
-    output reg  [57:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 58'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$4$p_r
 
 
 module raster_top$fragments$core$triangle_setup$mul$5(clock,en,a,b,p);
@@ -42252,132 +44964,38 @@ module raster_top$fragments$core$triangle_setup$mul$5(clock,en,a,b,p);
     input wire  [18:0] b;
     output reg  [57:0] p;
     
-    // Stub signals
-    reg  [56:0] a_r$d;
-    wire  [56:0] a_r$q;
-    reg  a_r$clock;
-    reg  [18:0] b_r$d;
-    wire  [18:0] b_r$q;
-    reg  b_r$clock;
-    reg  [57:0] p_r$d;
-    wire  [57:0] p_r$q;
-    reg  p_r$clock;
-    reg  [56:0] mul$a;
-    reg  [18:0] mul$b;
-    wire  [57:0] mul$p;
-    
-    // Sub module instances
-    raster_top$fragments$core$triangle_setup$mul$5$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$5$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$5$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$5$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed, three registers deep (rtl::mul::SplitMul):
+    // operands; partial products (a's 17-bit chunks times b's low 17 bits, one DSP
+    // block each, and a times b's top 2 bits); their sum.
+    reg [56:0] a_r;
+    reg [18:0] b_r;
+    initial a_r = 0;
+    initial b_r = 0;
+    wire [18:0] bx = b_r;
+    reg [33:0] pp0;
+    initial pp0 = 0;
+    reg [33:0] pp1;
+    initial pp1 = 0;
+    reg [23:0] pp2;
+    initial pp2 = 0;
+    reg [6:0] pp3;
+    initial pp3 = 0;
+    reg [40:0] ph;
+    initial ph = 0;
+    wire [40:0] ax = a_r[40:0];
+    always @(posedge clock) if (en) begin
+        a_r <= a;
+        b_r <= b;
+        pp0 <= a_r[16:0] * bx[16:0];
+        pp1 <= a_r[33:17] * bx[16:0];
+        pp2 <= a_r[50:34] * bx[16:0];
+        pp3 <= $signed(a_r[56:51]) * $signed({1'b0, bx[16:0]});
+        ph <= ({41{bx[17]}} & ax) - ({41{bx[18]}} & {ax[39:0], 1'b0});
+        p <= {pp2[23:0], pp0[33:0]} + {pp3[6:0], pp1[33:0], 17'd0} + {ph, 17'd0};
     end
-    
+    initial p = 0;
 endmodule // raster_top$fragments$core$triangle_setup$mul$5
-
-
-module raster_top$fragments$core$triangle_setup$mul$5$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [56:0] d;
-    output reg  [56:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 57'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$5$a_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$5$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [18:0] d;
-    output reg  [18:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 19'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$5$b_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$5$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [56:0] a;
-    input wire  [18:0] b;
-    output reg  [57:0] p;
-    
-    // Update code (custom)
-    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$fragments$core$triangle_setup$mul$5$mul
-
-
-module raster_top$fragments$core$triangle_setup$mul$5$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [57:0] d;
-    output reg  [57:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 58'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$5$p_r
 
 
 module raster_top$fragments$core$triangle_setup$mul$6(clock,en,a,b,p);
@@ -42389,132 +45007,38 @@ module raster_top$fragments$core$triangle_setup$mul$6(clock,en,a,b,p);
     input wire  [18:0] b;
     output reg  [57:0] p;
     
-    // Stub signals
-    reg  [56:0] a_r$d;
-    wire  [56:0] a_r$q;
-    reg  a_r$clock;
-    reg  [18:0] b_r$d;
-    wire  [18:0] b_r$q;
-    reg  b_r$clock;
-    reg  [57:0] p_r$d;
-    wire  [57:0] p_r$q;
-    reg  p_r$clock;
-    reg  [56:0] mul$a;
-    reg  [18:0] mul$b;
-    wire  [57:0] mul$p;
-    
-    // Sub module instances
-    raster_top$fragments$core$triangle_setup$mul$6$a_r a_r(
-        .d(a_r$d),
-        .q(a_r$q),
-        .clock(a_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$6$b_r b_r(
-        .d(b_r$d),
-        .q(b_r$q),
-        .clock(b_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$6$p_r p_r(
-        .d(p_r$d),
-        .q(p_r$q),
-        .clock(p_r$clock)
-    );
-    raster_top$fragments$core$triangle_setup$mul$6$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .p(mul$p)
-    );
-    
-    // Update code
-    always @(*) begin
-        a_r$clock = clock;
-        b_r$clock = clock;
-        p_r$clock = clock;
-        a_r$d = a_r$q;
-        b_r$d = b_r$q;
-        p_r$d = p_r$q;
-        mul$a = a_r$q;
-        mul$b = b_r$q;
-        if (en) begin
-            a_r$d = a;
-            b_r$d = b;
-            p_r$d = mul$p;
-        end
-        p = p_r$q;
+    // Update code (custom)
+    // p = low 58 bits of a * b, both signed, three registers deep (rtl::mul::SplitMul):
+    // operands; partial products (a's 17-bit chunks times b's low 17 bits, one DSP
+    // block each, and a times b's top 2 bits); their sum.
+    reg [56:0] a_r;
+    reg [18:0] b_r;
+    initial a_r = 0;
+    initial b_r = 0;
+    wire [18:0] bx = b_r;
+    reg [33:0] pp0;
+    initial pp0 = 0;
+    reg [33:0] pp1;
+    initial pp1 = 0;
+    reg [23:0] pp2;
+    initial pp2 = 0;
+    reg [6:0] pp3;
+    initial pp3 = 0;
+    reg [40:0] ph;
+    initial ph = 0;
+    wire [40:0] ax = a_r[40:0];
+    always @(posedge clock) if (en) begin
+        a_r <= a;
+        b_r <= b;
+        pp0 <= a_r[16:0] * bx[16:0];
+        pp1 <= a_r[33:17] * bx[16:0];
+        pp2 <= a_r[50:34] * bx[16:0];
+        pp3 <= $signed(a_r[56:51]) * $signed({1'b0, bx[16:0]});
+        ph <= ({41{bx[17]}} & ax) - ({41{bx[18]}} & {ax[39:0], 1'b0});
+        p <= {pp2[23:0], pp0[33:0]} + {pp3[6:0], pp1[33:0], 17'd0} + {ph, 17'd0};
     end
-    
+    initial p = 0;
 endmodule // raster_top$fragments$core$triangle_setup$mul$6
-
-
-module raster_top$fragments$core$triangle_setup$mul$6$a_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [56:0] d;
-    output reg  [56:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 57'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$6$a_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$6$b_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [18:0] d;
-    output reg  [18:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 19'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$6$b_r
-
-
-module raster_top$fragments$core$triangle_setup$mul$6$mul(a,b,p);
-    
-    // Module arguments
-    input wire  [56:0] a;
-    input wire  [18:0] b;
-    output reg  [57:0] p;
-    
-    // Update code (custom)
-    // p = low 58 bits of a * b, both signed: a signed 58-bit context sign-extends
-    // both operands before multiplying.
-    always @(*) p = $signed(a) * $signed(b);
-endmodule // raster_top$fragments$core$triangle_setup$mul$6$mul
-
-
-module raster_top$fragments$core$triangle_setup$mul$6$p_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [57:0] d;
-    output reg  [57:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 58'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$fragments$core$triangle_setup$mul$6$p_r
 
 
 module raster_top$fragments$core$triangle_setup$norm(d,q,clock);
@@ -43315,6 +45839,63 @@ module raster_top$fragments$core$triangle_setup$q$14(d,q,clock);
 endmodule // raster_top$fragments$core$triangle_setup$q$14
 
 
+module raster_top$fragments$core$triangle_setup$q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$q$15
+
+
+module raster_top$fragments$core$triangle_setup$q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$q$16
+
+
+module raster_top$fragments$core$triangle_setup$q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$q$17
+
+
 module raster_top$fragments$core$triangle_setup$q$2(d,q,clock);
     
     // Module arguments
@@ -43598,6 +46179,63 @@ module raster_top$fragments$core$triangle_setup$r$14(d,q,clock);
     end
           
 endmodule // raster_top$fragments$core$triangle_setup$r$14
+
+
+module raster_top$fragments$core$triangle_setup$r$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$r$15
+
+
+module raster_top$fragments$core$triangle_setup$r$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$r$16
+
+
+module raster_top$fragments$core$triangle_setup$r$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$r$17
 
 
 module raster_top$fragments$core$triangle_setup$r$2(d,q,clock);
@@ -44018,6 +46656,63 @@ module raster_top$fragments$core$triangle_setup$rho$14(d,q,clock);
 endmodule // raster_top$fragments$core$triangle_setup$rho$14
 
 
+module raster_top$fragments$core$triangle_setup$rho$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$rho$15
+
+
+module raster_top$fragments$core$triangle_setup$rho$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$rho$16
+
+
+module raster_top$fragments$core$triangle_setup$rho$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$rho$17
+
+
 module raster_top$fragments$core$triangle_setup$rho$2(d,q,clock);
     
     // Module arguments
@@ -44284,6 +46979,25 @@ module raster_top$fragments$core$triangle_setup$sign$4(d,q,clock);
 endmodule // raster_top$fragments$core$triangle_setup$sign$4
 
 
+module raster_top$fragments$core$triangle_setup$sign$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$sign$5
+
+
 module raster_top$fragments$core$triangle_setup$t$0(d,q,clock);
     
     // Module arguments
@@ -44377,6 +47091,25 @@ module raster_top$fragments$core$triangle_setup$t$4(d,q,clock);
     end
           
 endmodule // raster_top$fragments$core$triangle_setup$t$4
+
+
+module raster_top$fragments$core$triangle_setup$t$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$t$5
 
 
 module raster_top$fragments$core$triangle_setup$valid_r(d,q,clock);
@@ -45158,6 +47891,101 @@ module raster_top$fragments$core$triangle_setup$vc$44(d,q,clock);
 endmodule // raster_top$fragments$core$triangle_setup$vc$44
 
 
+module raster_top$fragments$core$triangle_setup$vc$45(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vc$45
+
+
+module raster_top$fragments$core$triangle_setup$vc$46(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vc$46
+
+
+module raster_top$fragments$core$triangle_setup$vc$47(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vc$47
+
+
+module raster_top$fragments$core$triangle_setup$vc$48(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vc$48
+
+
+module raster_top$fragments$core$triangle_setup$vc$49(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vc$49
+
+
 module raster_top$fragments$core$triangle_setup$vc$5(d,q,clock);
     
     // Module arguments
@@ -45175,6 +48003,82 @@ module raster_top$fragments$core$triangle_setup$vc$5(d,q,clock);
     end
           
 endmodule // raster_top$fragments$core$triangle_setup$vc$5
+
+
+module raster_top$fragments$core$triangle_setup$vc$50(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vc$50
+
+
+module raster_top$fragments$core$triangle_setup$vc$51(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vc$51
+
+
+module raster_top$fragments$core$triangle_setup$vc$52(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vc$52
+
+
+module raster_top$fragments$core$triangle_setup$vc$53(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vc$53
 
 
 module raster_top$fragments$core$triangle_setup$vc$6(d,q,clock);
@@ -45384,6 +48288,63 @@ module raster_top$fragments$core$triangle_setup$vx$14(d,q,clock);
     end
           
 endmodule // raster_top$fragments$core$triangle_setup$vx$14
+
+
+module raster_top$fragments$core$triangle_setup$vx$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vx$15
+
+
+module raster_top$fragments$core$triangle_setup$vx$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vx$16
+
+
+module raster_top$fragments$core$triangle_setup$vx$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vx$17
 
 
 module raster_top$fragments$core$triangle_setup$vx$2(d,q,clock);
@@ -45671,6 +48632,63 @@ module raster_top$fragments$core$triangle_setup$vy$14(d,q,clock);
 endmodule // raster_top$fragments$core$triangle_setup$vy$14
 
 
+module raster_top$fragments$core$triangle_setup$vy$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vy$15
+
+
+module raster_top$fragments$core$triangle_setup$vy$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vy$16
+
+
+module raster_top$fragments$core$triangle_setup$vy$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vy$17
+
+
 module raster_top$fragments$core$triangle_setup$vy$2(d,q,clock);
     
     // Module arguments
@@ -45956,6 +48974,63 @@ module raster_top$fragments$core$triangle_setup$vz$14(d,q,clock);
 endmodule // raster_top$fragments$core$triangle_setup$vz$14
 
 
+module raster_top$fragments$core$triangle_setup$vz$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vz$15
+
+
+module raster_top$fragments$core$triangle_setup$vz$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vz$16
+
+
+module raster_top$fragments$core$triangle_setup$vz$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$vz$17
+
+
 module raster_top$fragments$core$triangle_setup$vz$2(d,q,clock);
     
     // Module arguments
@@ -46239,6 +49314,63 @@ module raster_top$fragments$core$triangle_setup$x$14(d,q,clock);
     end
           
 endmodule // raster_top$fragments$core$triangle_setup$x$14
+
+
+module raster_top$fragments$core$triangle_setup$x$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$x$15
+
+
+module raster_top$fragments$core$triangle_setup$x$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$x$16
+
+
+module raster_top$fragments$core$triangle_setup$x$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [18:0] d;
+    output reg  [18:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 19'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$triangle_setup$x$17
 
 
 module raster_top$fragments$core$triangle_setup$x$2(d,q,clock);

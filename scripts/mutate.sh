@@ -11,7 +11,7 @@
 #   edge_walk       a colour's step up the edge loses the +1 of its two's complement
 #                   (`at + ~inc + up` to `at + ~inc`): one LSB a scanline on upward steps
 #   span            the X clip keeps the pixel at x = width (`x >= width` to `x > width`)
-#   triangle_setup  the first scanline centre of vertex 0 in one of setup's five copies
+#   triangle_setup  the first scanline centre of vertex 0 in one of setup's six copies
 #                   rounds a y on a pixel centre up (`y + half - 1` to `y + half`): the
 #                   fill rule's tie, every fifth triangle
 #

@@ -11,6 +11,7 @@ mod ept;
 mod gpu_regs;
 mod gpu_top;
 mod harness;
+mod mul;
 mod pixel_bus;
 mod pixel_out;
 mod pixel_out_blend;

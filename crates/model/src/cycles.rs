@@ -80,7 +80,7 @@ pub struct SetupTiming {
 /// ([`crate::triangle_setup::schedule::Schedule`]), 64 products on `setup_multipliers`
 /// multipliers (1 to 7) and the divider's `divider_latency` stages, several triangles in
 /// flight. While a result waits for the edge walk, all of setup waits with it (the
-/// triangles behind it too). 7 multipliers: latency 48, II 10 with the default 25-stage divider, 28 with 001's 5 stages.
+/// triangles behind it too). 7 multipliers: latency 52, II 10 with the default 25-stage divider, 32 with 001's 5 stages.
 pub fn setup_timing(t: &Timing) -> SetupTiming {
     let s = Schedule::new(t.setup_multipliers as usize, t.divider_latency as usize).unwrap_or_else(|e| panic!("{e}"));
     SetupTiming { latency: s.latency as u32, interval: s.interval as u32 }
@@ -588,7 +588,7 @@ mod tests {
     use super::*;
 
     /// 001's 5-stage divider, at which the frames below are derived by hand (setup's
-    /// latency 28, II 10).
+    /// latency 32, II 10).
     fn l5() -> Timing {
         Timing { divider_latency: 5, ..Timing::default() }
     }
@@ -603,43 +603,43 @@ mod tests {
             SetupTiming { latency: s.latency as u32, interval: s.interval as u32 }
         );
         assert_eq!(setup_latency(&Timing::default()), s.latency as u32);
-        assert_eq!(setup_timing(&l5()), SetupTiming { latency: 28, interval: 10 });
+        assert_eq!(setup_timing(&l5()), SetupTiming { latency: 32, interval: 10 });
     }
 
-    /// Triangles in flight: each is taken on the II grid of the one before (latency 28, II
+    /// Triangles in flight: each is taken on the II grid of the one before (latency 32, II
     /// 10); while one waits for the edge walk, those taken after it wait with it.
     #[test]
     fn cycles_setup_overlaps_triangles_and_waits_as_one() {
-        assert_eq!(setup_timing(&l5()), SetupTiming { latency: 28, interval: 10 });
+        assert_eq!(setup_timing(&l5()), SetupTiming { latency: 32, interval: 10 });
         let walk = |n: usize| Work { passed_cull: true, scanlines: vec![None; n], ..Work::default() };
-        // First: culled out at 3 (cull_sort's three stages), taken, done at 31, walked
-        // 33..83. Second: culled out at 4, taken at 3 + 10 = 13 (the grid), done at 41,
-        // waits for the walk until 83, walked 85..86. Third: culled out at 14 (it waited in
+        // First: culled out at 3 (cull_sort's three stages), taken, done at 35, walked
+        // 37..87. Second: culled out at 4, taken at 3 + 10 = 13 (the grid), done at 45,
+        // waits for the walk until 87, walked 89..90. Third: culled out at 14 (it waited in
         // stage 2 while the second held the output register), taken at 23 (the second in its
-        // cycle 10), in flight while the second waits 42 cycles: done at 23 + 28 + 42 = 93,
-        // walked 95..96.
-        assert_eq!(scanline_frame(&[walk(50), walk(1), walk(1)], &l5()).total, 96);
+        // cycle 10), in flight while the second waits 42 cycles: done at 23 + 32 + 42 = 97,
+        // walked 99..100.
+        assert_eq!(scanline_frame(&[walk(50), walk(1), walk(1)], &l5()).total, 100);
         // A triangle waits for every result ahead of it that waits. With a second long walk,
-        // the second waits from 41 to 83 as above and the third from 93 to 135; the fourth,
-        // taken at 33 (the third in its cycle 10), runs 8 cycles, stands still 42, runs 10,
-        // stands still 42, runs 10: done at 145, walked 147..148.
-        assert_eq!(scanline_frame(&[walk(50), walk(50), walk(1), walk(1)], &l5()).total, 148);
-        // Without the long walk nothing waits: the third is done at 51, walked 53..54.
-        assert_eq!(scanline_frame(&[walk(1), walk(1), walk(1)], &l5()).total, 54);
+        // the second waits from 45 to 87 as above and the third from 97 to 139; the fourth,
+        // taken at 33 (the third in its cycle 10), runs 12 cycles, stands still 42, runs 10,
+        // stands still 42, runs 10: done at 149, walked 151..152.
+        assert_eq!(scanline_frame(&[walk(50), walk(50), walk(1), walk(1)], &l5()).total, 152);
+        // Without the long walk nothing waits: the third is done at 55, walked 57..58.
+        assert_eq!(scanline_frame(&[walk(1), walk(1), walk(1)], &l5()).total, 58);
         // Off the grid, a triangle is taken once setup is empty: as above, the second waits
-        // from 41 to 83; the third, culled out at 54 behind 40 culled ones, would be on the
-        // grid at 85 (13 + 30 cycles of running) and goes in at 84, the cycle after the
-        // second's result is taken; done at 84 + 28 = 112, walked 114..115.
+        // from 45 to 87; the third, culled out at 54 behind 40 culled ones, would be on the
+        // grid at 95 (13 + 40 cycles of running, 42 standing still) and goes in at 88, the
+        // cycle after the second's result is taken; done at 88 + 32 = 120, walked 122..123.
         let mut frame = vec![walk(50), walk(1)];
         frame.extend(std::iter::repeat_n(Work::default(), 40));
         frame.push(walk(1));
-        assert_eq!(scanline_frame(&frame, &l5()).total, 115);
+        assert_eq!(scanline_frame(&frame, &l5()).total, 123);
         // On the grid: the third, culled out at 14 + 10 behind 10 culled ones, waits for
-        // the grid at 33 (the second in its cycle 20), not for 41 and the second's result.
+        // the grid at 33 (the second in its cycle 20), not for 45 and the second's result.
         let mut frame = vec![walk(1), walk(1)];
         frame.extend(std::iter::repeat_n(Work::default(), 10));
         frame.push(walk(1));
-        assert_eq!(scanline_frame(&frame, &l5()).total, 33 + 28 + 3);
+        assert_eq!(scanline_frame(&frame, &l5()).total, 33 + 32 + 3);
     }
 
     /// A span of `c` cycles, each sending a pixel.
@@ -649,43 +649,43 @@ mod tests {
 
     #[test]
     fn cycles_one_triangle_through_the_scanline_pipeline() {
-        // Taken in cycle 0, culled out at 3; setup done at 3 + 28 = 31; the walk emits at
-        // 33, 34, 35; span walks each from 1 cycle later or when free: 34..39, 39..44,
-        // 44..49; the last pixel leaves span's pixel register in 49 and is written 2 cycles
-        // after, in cycle 51: 52 cycles.
+        // Taken in cycle 0, culled out at 3; setup done at 3 + 32 = 35; the walk emits at
+        // 37, 38, 39; span walks each from 1 cycle later or when free: 38..43, 43..48,
+        // 48..53; the last pixel leaves span's pixel register in 53 and is written 2 cycles
+        // after, in cycle 55: 56 cycles.
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], ..Work::default() };
         let c = scanline_frame(std::slice::from_ref(&w), &l5());
-        assert_eq!((c.total, c.span_busy, c.triangles), (52, 15, 1));
+        assert_eq!((c.total, c.span_busy, c.triangles), (56, 15, 1));
         // A culled triangle ahead costs one cycle of cull_sort only.
         let culled = Work::default();
-        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &l5()).total, 53);
+        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &l5()).total, 57);
         // Behind a triangle waiting for setup, culled ones wait too: the first triangle
         // leaves cull_sort for setup in cycle 3, the second (which crosses no scanline)
         // arrives in the output register at 4 and leaves in 13, when the first is in its
         // cycle 10 (II); the first two culled ones, taken at 2 and 3, wait in stages 1 and
-        // 2 (nothing more is taken), then the 40 culled ones go through cull_sort, one per
-        // cycle, the last one's verdict in cycle 13 + 40 (after the first triangle's last
-        // pixel, 52).
+        // 2 (nothing more is taken), then the 45 culled ones go through cull_sort, one per
+        // cycle, the last one's verdict in cycle 13 + 45 (after the first triangle's last
+        // pixel, 56).
         let mut frame = vec![w.clone(), Work { passed_cull: true, ..Work::default() }];
-        frame.extend(std::iter::repeat_n(culled, 40));
-        assert_eq!(scanline_frame(&frame, &l5()).total, 13 + 40);
-        // With a 4-deep FIFO the walk runs ahead and span never waits: walking from 34
+        frame.extend(std::iter::repeat_n(culled, 45));
+        assert_eq!(scanline_frame(&frame, &l5()).total, 13 + 45);
+        // With a 4-deep FIFO the walk runs ahead and span never waits: walking from 38
         // for 53 cycles, the last pixel out of the pixel register 1 later, written 2 later.
         let long = Work { scanlines: vec![full(50), full(1), full(1), None, full(1)], ..w.clone() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&long), &l5()).total, 34 + 53 + 1 + 2);
+        assert_eq!(scanline_frame(std::slice::from_ref(&long), &l5()).total, 38 + 53 + 1 + 2);
         // A one-deep FIFO holds the walk until span takes each command; the last
-        // command is emitted only at 86, reaches span at 87: one idle cycle.
+        // command is emitted only at 90, reaches span at 91: one idle cycle.
         let one_deep = Timing { span_fifo: 1, ..l5() };
-        assert_eq!(scanline_frame(&[long], &one_deep).total, 34 + 53 + 1 + 1 + 2);
+        assert_eq!(scanline_frame(&[long], &one_deep).total, 38 + 53 + 1 + 1 + 2);
         // Spans that end on pixels sent nowhere (off screen, out of the depth range, or
         // dropped): the frame ends when span is done, or 4 cycles after the last pixel's
         // walk cycle (out of the pixel register, into pixel_out, written).
         let mut tail = w.clone();
         tail.scanlines[2] = Some(SpanWork { cycles: 5, unsent: vec![2, 3, 4], ..SpanWork::default() });
-        assert_eq!(scanline_frame(&[tail.clone()], &l5()).total, 49);
+        assert_eq!(scanline_frame(&[tail.clone()], &l5()).total, 53);
         tail.scanlines[2] = Some(SpanWork { cycles: 1, unsent: vec![0], ..SpanWork::default() });
-        // Dropped: span done at 45, the pixel walked in 43 out of span in 44, written in 46.
-        assert_eq!(scanline_frame(&[tail], &l5()).total, 47);
+        // Dropped: span done at 49, the pixel walked in 47 out of span in 48, written in 50.
+        assert_eq!(scanline_frame(&[tail], &l5()).total, 51);
     }
 
     /// The memory stalling (`mem$ready` low): `pixel_out` and span's pixel register hold,
@@ -693,23 +693,23 @@ mod tests {
     #[test]
     fn cycles_scanline_frame_behind_a_stalling_memory() {
         // The frame of `cycles_one_triangle_through_the_scanline_pipeline`: spans walked in
-        // 34..38, 39..43, 44..48, each pixel in the register from the cycle after its walk
-        // cycle and taken there; the last tested in 50, written in 51, done in 52.
+        // 38..42, 43..47, 48..52, each pixel in the register from the cycle after its walk
+        // cycle and taken there; the last tested in 54, written in 55, done in 56.
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], ..Work::default() };
         let stalled = |from: u64, to: u64| {
             scanline_frame_stalled(std::slice::from_ref(&w), &l5(), &move |c| !(from..=to).contains(&c)).total
         };
-        assert_eq!(stalled(1, 0), 52, "never stalled: as scanline_frame");
+        assert_eq!(stalled(1, 0), 56, "never stalled: as scanline_frame");
         // Stalled before the first pixel: nothing waits for the memory.
-        assert_eq!(stalled(10, 30), 52);
-        // Stalled in 40..44: the second span's first pixel (in the register from 40) is
-        // taken in 45, its second walk cycle with it; everything 5 cycles later.
-        assert_eq!(stalled(40, 44), 57);
-        // Stalled in 51 only: the last pixel, taken in 49 and tested in 50, is written in 52.
-        assert_eq!(stalled(51, 51), 53);
-        // Stalled in 36..38 under a first span that sends nothing: its walk goes on (the
-        // register stays empty); the second span's first pixel is walked in 39 and taken in
-        // 40, after the stall: 52 as without it.
+        assert_eq!(stalled(10, 38), 56);
+        // Stalled in 44..48: the second span's first pixel (in the register from 44) is
+        // taken in 49, its second walk cycle with it; everything 5 cycles later.
+        assert_eq!(stalled(44, 48), 61);
+        // Stalled in 55 only: the last pixel, taken in 53 and tested in 54, is written in 56.
+        assert_eq!(stalled(55, 55), 57);
+        // Stalled in 40..42 under a first span that sends nothing: its walk goes on (the
+        // register stays empty); the second span's first pixel is walked in 43 and taken in
+        // 44, after the stall: 56 as without it.
         let quiet = Work {
             scanlines: vec![
                 Some(SpanWork { cycles: 5, unsent: vec![0, 1, 2, 3, 4], ..SpanWork::default() }),
@@ -718,13 +718,13 @@ mod tests {
             ],
             ..w.clone()
         };
-        assert_eq!(scanline_frame(std::slice::from_ref(&quiet), &l5()).total, 52);
-        let quiet_stalled = scanline_frame_stalled(std::slice::from_ref(&quiet), &l5(), &|c| !(36..=38).contains(&c));
-        assert_eq!(quiet_stalled.total, 52);
-        // The same stall under a span that sends: its pixel walked in 35, in the register
-        // from 36, is taken in 39, and each walk cycle after waits for the one before:
-        // walked in 34, 35, 39, 40, 41 instead of 34..38: 3 cycles later.
-        assert_eq!(stalled(36, 38), 55);
+        assert_eq!(scanline_frame(std::slice::from_ref(&quiet), &l5()).total, 56);
+        let quiet_stalled = scanline_frame_stalled(std::slice::from_ref(&quiet), &l5(), &|c| !(40..=42).contains(&c));
+        assert_eq!(quiet_stalled.total, 56);
+        // The same stall under a span that sends: its pixel walked in 39, in the register
+        // from 40, is taken in 43, and each walk cycle after waits for the one before:
+        // walked in 38, 39, 43, 44, 45 instead of 38..42: 3 cycles later.
+        assert_eq!(stalled(40, 42), 59);
     }
 
     #[test]
@@ -735,13 +735,13 @@ mod tests {
         let mut frame = vec![Work::default(), w.clone()];
         frame.extend(std::iter::repeat_n(Work::default(), 30));
         let no_cull = Timing { cull_sort: false, ..l5() };
-        assert_eq!(scanline_frame(&frame, &no_cull).total, 49);
-        // Without pixel_out the frame ends the cycle after span's last fragment (49):
+        assert_eq!(scanline_frame(&frame, &no_cull).total, 53);
+        // Without pixel_out the frame ends the cycle after span's last fragment (53):
         // 2 cycles less than with the depth test and write behind it.
         let no_out = Timing { pixel_out: false, ..l5() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 50);
+        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 54);
         let neither = Timing { cull_sort: false, pixel_out: false, ..l5() };
-        assert_eq!(scanline_frame(&frame, &neither).total, 47);
+        assert_eq!(scanline_frame(&frame, &neither).total, 51);
     }
 
     /// The vector unit sets the next triangle up while it walks one, its scout finds the

@@ -105,7 +105,7 @@ pub struct RasterTopCore {
     fifo: SpanFifo,
     span: Span,
     /// Triangles in setup (taken, not yet handed to the edge walk): up to one per copy of
-    /// its registers (`triangle_setup::COPIES_MAX`, 5).
+    /// its registers (`triangle_setup::COPIES_MAX`, 6).
     in_setup: DFF<Bits<3>>,
     taken: Signal<Local, Bit>,
     /// The last triangle taken had `inp_last`.

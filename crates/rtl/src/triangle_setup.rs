@@ -12,12 +12,13 @@
 //! Beside `out`, `recip_mant` and `recip_exp` give the triangle's OneOverArea
 //! (`TriangleSetupOut::recip`) for the texture path of a textured `raster_top`.
 //!
-//! **Datapath.** `K` multipliers ([`PipelinedMul`], `MUL_A` x `MUL_B` bits) reused over 64
+//! **Datapath.** `K` multipliers ([`SplitMul`], `MUL_A` x `MUL_B` bits) reused over 64
 //! products, and the shared divider ([`crate::divider::Divider`]), into which setup
 //! issues its seven divisions (`TriangleSetupOut::divisions`: 1/area, then per edge the
 //! start and the step of the exact edge walker), each in a cycle of its own. A multiplier
-//! registers its operands and its product, and each product is added into its destination
-//! register in the cycle it comes out (two after its operands went in); the model's wraps
+//! registers its operands, its partial products (one per DSP block) and their sum, and each
+//! product is added into its destination register in the cycle it comes out (three after
+//! its operands went in); the model's wraps
 //! (`ctx.put`) are the registers' widths, its floor shifts bit slices:
 //!
 //! | phase | products (A x B) | into | model |
@@ -39,38 +40,40 @@
 //! **Schedule** ([`Schedule`], `model::triangle_setup::schedule`, which the cycle model
 //! reads too). Cycle 0 takes the triangle. A modulo schedule: each multiplier and the
 //! divider are reserved once per cycle modulo II, so setup takes a triangle every II cycles
-//! (on the grid of the last one it took, or at once when it is empty) and three are in
-//! flight. With 001's 7 multipliers and 5-stage divider (the products' operand cycles; a
-//! product is added two cycles later):
+//! (on the grid of the last one it took, or at once when it is empty) and up to
+//! `Schedule::copies` are in flight (four here). With 001's 7 multipliers and 5-stage divider (the products' operand cycles; a
+//! product is added three cycles later):
 //!
 //! ```text
-//!  cycle       0    1     2  3  4    5    6  7  8 10 11  12   15 16 17  18 19 20 22 23 24  27       28
-//!  input       take                                 take (the next triangle, cycle 10)
-//!  products         area, numerators      (7 + 1)        eq2  gradients starts, increments (7 7 7 2 7 6)
+//!  cycle       0    1     2  3  5    6    7  8  10   12   13   18 19 20  22 23 24 25 26 27  31        32
+//!  input       take                             take (the next triangle)
+//!  products         area, numerators (7 + 1)             eq2  gradients starts, increments (6 3 7 7 7 6)
 //!  normalise                   norm
 //!  div. issue       q0    q1 q2 s0   1/a  s1 s2
-//!  div. result                                   1/a
-//!  output                                                                               hand-over valid
+//!  div. result                                       1/a
+//!  output                                                                                   hand-over valid
 //! ```
 //!
-//! Latency 28 (001 Table 3: 34), II 10 = ceil(64 / 7); 48 with the default 25-stage
-//! divider. |area|, its leading one (found in two levels: nibbles, then the highest nibble)
+//! Latency 32 (001 Table 3: 34), II 10 = ceil(64 / 7); 52 with the default 25-stage
+//! divider. The gradients wait a cycle past eq. (2)'s products, so that they and the
+//! starts pack into fewer cycles and every shared register lives at most II cycles
+//! (`Schedule::new` tries such placements and keeps the lowest latency). |area|, its leading one (found in two levels: nibbles, then the highest nibble)
 //! and the normalising shift go into registers, the shift done on the way into the
 //! divider's operand register ([`DIVIDER_OPERANDS`]), and 1/area, shifted for eq. (2), into a
 //! register, so that no path runs from the vertices into the divider or from the divider into
 //! a multiplier. The triangle's long-lived registers (vertices, crossings, the area's sign
 //! and exponent, each edge's x, r, q, rho) are copied every II cycles, `Schedule::copies` of
-//! them: cycle c reads copy (c - 1) / II through that copy's [`Geometry`] (`g0` to `g4`),
+//! them: cycle c reads copy (c - 1) / II through that copy's [`Geometry`] (`g0` to `g5`),
 //! whose outputs are registers loaded from the copy's next vertices (so they always hold the
 //! geometry of the copy's vertices, and no path runs through its adders into a multiplier's
 //! or the divider's operands), and a division's result goes into the copy of the cycle after
 //! it. Every other register is written by the
 //! next triangle only after this one has read it for the last time, which `Schedule::new`
-//! checks. A deeper divider (for a faster clock) keeps II at 10 up to the deepest, L = 25
-//! (latency 48, five copies; beyond five, II would be a fifth of the latency). While a result waits for the edge
+//! checks. A deeper divider (for a faster clock) keeps II at 10 up to L = 28, past the
+//! default L = 25 (latency 52, six copies; beyond six, II would be a sixth of the latency). While a result waits for the edge
 //! walk, all of setup waits (`run` low: every register holds, the multipliers' and the
 //! divider's too), the triangles behind it too. `K` (1 to 7) trades II and latency for
-//! area: II 64 and latency 86 with one multiplier; the divider's `L` stages likewise.
+//! area: II 64 and latency 89 with one multiplier; the divider's `L` stages likewise.
 //!
 //! Model: `model::triangle_setup::triangle_setup`. Emitted: `hdl-out/triangle_setup.v`.
 
@@ -82,7 +85,7 @@ use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_Q, LATENCY_MAX};
 use super::links::{SortedSink, TriangleSetupSource};
 use super::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, WIDTHS, Z_ACC};
 use crate::emit::{ports, verilog, Emitted};
-use crate::mul::PipelinedMul;
+use crate::mul::SplitMul;
 use crate::parts::defaults;
 use crate::Params;
 use blank::Blank;
@@ -142,7 +145,7 @@ pub struct TriangleSetup {
     pub recip_exp: Signal<Out, Bits<6>>,
 
     // Sub-blocks.
-    mul: Vec<PipelinedMul<MUL_A, MUL_B, MUL_P>>,
+    mul: Vec<SplitMul<MUL_A, MUL_B, MUL_P>>,
     #[given]
     div: DividerRtl,
 
@@ -205,6 +208,7 @@ pub struct TriangleSetup {
     g2: Geometry,
     g3: Geometry,
     g4: Geometry,
+    g5: Geometry,
 
     // Normalise: |area|, its leading one's position (`exp`) and the shift that normalises
     // it into registers; shifted as it goes into the divider.
@@ -468,7 +472,7 @@ impl Logic for TriangleSetup {
             self.o_d[e].clock.next = self.clock.val();
             self.o_d[e].d.next = self.o_d[e].q.val();
         }
-        clock!(self, clock, div, g0, g1, g2, g3, g4);
+        clock!(self, clock, div, g0, g1, g2, g3, g4, g5);
         for v in 0..COPIES_MAX {
             self.t[v].clock.next = self.clock.val();
             self.t[v].d.next = self.t[v].q.val();
@@ -706,6 +710,17 @@ impl Logic for TriangleSetup {
         }
         self.g4.crosses.next = self.crosses[4].d.val();
         self.g4.maj_left.next = self.maj_left[4].val();
+        for i in 0..3 {
+            self.g5.vx[i].next = self.vx[15 + i].d.val();
+            self.g5.vy[i].next = self.vy[15 + i].d.val();
+            self.g5.vz[i].next = self.vz[15 + i].d.val();
+            self.g5.start_x[i].next = self.x[15 + i].q.val();
+        }
+        for i in 0..9 {
+            self.g5.vc[i].next = self.vc[45 + i].d.val();
+        }
+        self.g5.crosses.next = self.crosses[5].d.val();
+        self.g5.maj_left.next = self.maj_left[5].val();
 
         // ---- Normalise twice the area for 1/area (`recip_operands`): |a| << (32 - exp).
         // |a|, exp and the shift into registers; the shift is done as 1/area is issued.
@@ -822,6 +837,10 @@ impl Logic for TriangleSetup {
                 self.xi[e].next = self.g4.xi[e].val();
                 self.ed[e].next = self.g4.ed16[e].val().get_bits::<EDGE_D>(0);
             }
+            if self.view_res[1 + 2 * e].val().index() == 5 {
+                self.xi[e].next = self.g5.xi[e].val();
+                self.ed[e].next = self.g5.ed16[e].val().get_bits::<EDGE_D>(0);
+            }
             // Into the copy the triangle is in next cycle.
             for v in 0..self._copies {
                 if self.at_res[1 + 2 * e].val() & (self.view_res_w[1 + 2 * e].val().index() == v) {
@@ -877,6 +896,8 @@ impl Logic for TriangleSetup {
             self.delta[14 + k].next = self.g3.kdy[k].val().get_bits::<NB>(0);
             self.delta[16 + k].next = self.g4.kdx[k].val().get_bits::<NB>(0);
             self.delta[18 + k].next = self.g4.kdy[k].val().get_bits::<NB>(0);
+            self.delta[20 + k].next = self.g5.kdx[k].val().get_bits::<NB>(0);
+            self.delta[22 + k].next = self.g5.kdy[k].val().get_bits::<NB>(0);
         }
         for v in 0..COPIES_MAX {
             for d in 0..4 {
@@ -1019,6 +1040,35 @@ impl Logic for TriangleSetup {
                 }
             }
         }
+        for d in 0..4 {
+            if self.view[8 + d].val().index() == 5 {
+                self.op_e[d].next = self.eq_b[20 + d].val();
+            }
+        }
+        for a in 0..4 {
+            if self.view[12 + 4 * a].val().index() == 5 {
+                self.op_g[4 * a].next = self.g5.dmaj[a].val();
+            }
+            if self.view[13 + 4 * a].val().index() == 5 {
+                self.op_g[4 * a + 1].next = self.g5.dbot[a].val();
+            }
+            if self.view[14 + 4 * a].val().index() == 5 {
+                self.op_g[4 * a + 2].next = self.g5.dbot[a].val();
+            }
+            if self.view[15 + 4 * a].val().index() == 5 {
+                self.op_g[4 * a + 3].next = self.g5.dmaj[a].val();
+            }
+        }
+        for e in 0..3 {
+            for a in 0..4 {
+                if self.view[28 + 12 * e + 3 * a].val().index() == 5 {
+                    self.op_s[8 * e + 2 * a].next = self.g5.off_x[e].val();
+                }
+                if self.view[29 + 12 * e + 3 * a].val().index() == 5 {
+                    self.op_s[8 * e + 2 * a + 1].next = self.g5.off_y[e].val();
+                }
+            }
+        }
         // ddx, ddy of each attribute: floor(g / 2^gsh), as lanes.
         for a in 0..4 {
             self.ddx[a].next = self.gx[a].q.val() >> self.gsh[a].val();
@@ -1038,6 +1088,9 @@ impl Logic for TriangleSetup {
             }
             if self.view_handover.val().index() == 4 {
                 self.attr0[a].next = self.g4.attr0[a].val();
+            }
+            if self.view_handover.val().index() == 5 {
+                self.attr0[a].next = self.g5.attr0[a].val();
             }
         }
         // The increments' q, from the copy of their cycle.
@@ -1269,6 +1322,15 @@ impl Logic for TriangleSetup {
                 self.o_j[e].d.next = self.g4.cy[e].val().get_bits::<PIXEL>(self.frac.val().index());
                 self.o_count[e].d.next = self.g4.count[e].val();
                 self.o_d[e].d.next = self.g4.ed16[e].val().get_bits::<EDGE_D>(0);
+            }
+        }
+        if self.at_handover.val() & (self.view_handover.val().index() == 5) {
+            self.o_walk.d.next = self.g5.up.val();
+            self.o_maj_left.d.next = self.maj_left[5].val();
+            for e in 0..3 {
+                self.o_j[e].d.next = self.g5.cy[e].val().get_bits::<PIXEL>(self.frac.val().index());
+                self.o_count[e].d.next = self.g5.count[e].val();
+                self.o_d[e].d.next = self.g5.ed16[e].val().get_bits::<EDGE_D>(0);
             }
         }
         self.out.walk.next = self.o_walk.q.val();

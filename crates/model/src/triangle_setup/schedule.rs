@@ -6,12 +6,13 @@
 //! cycles apart overlap, and each multiplier lane and the divider are reserved per cycle
 //! modulo II (no two triangles on the grid ever want the same one in the same cycle).
 //! Products are placed by a list scheduler in the order of the data flow, each in the
-//! first cycle from which its operands are ready with a lane free; II is the lowest at which
-//! every product fits and every register the triangles share lives at most II cycles.
+//! first cycle from which its operands are ready (or a few cycles later, see `Placement`)
+//! with a lane free; II is the lowest at which every product fits and every register the
+//! triangles share lives at most II cycles.
 //!
-//! A multiplier is a pipeline of [`MULTIPLIER_STAGES`] registers (operands, product): a
-//! product placed in cycle c has its operands selected in c and is added into its
-//! destination in c + 2, readable from c + 3. Triangles are taken on the II grid only
+//! A multiplier is a pipeline of [`MULTIPLIER_STAGES`] registers (operands, partial
+//! products, product: `rtl::mul::SplitMul`): a product placed in cycle c has its operands
+//! selected in c and is added into its destination in c + 3, readable from c + 4. Triangles are taken on the II grid only
 //! (or at once when setup is empty): `model::cycles::scanline_frame` follows that rule.
 //!
 //! The registers of a triangle that live longer than II (its vertices, crossings, the area's
@@ -32,17 +33,51 @@ pub const PRODUCTS: usize = 64;
 /// seven divisions and the registers' lifetimes.
 pub const MULTIPLIERS_MAX: usize = 7;
 
-/// Registers in a multiplier: its operands and its product.
-pub const MULTIPLIER_STAGES: usize = 2;
+/// Registers in a multiplier: its operands, its partial products (one per DSP block) and
+/// their sum, the product.
+pub const MULTIPLIER_STAGES: usize = 3;
 
 /// Cycles from a division's issue into the divider: its operands are registered, so that
 /// no path runs from the geometry into the divider's first stage.
 pub const DIVIDER_OPERANDS: usize = 1;
 
-/// Most copies of a triangle's registers: II is at least a fifth of the latency.
-pub const COPIES_MAX: usize = 5;
+/// Most copies of a triangle's registers: II is at least a sixth of the latency.
+pub const COPIES_MAX: usize = 6;
 
 const M: usize = MULTIPLIER_STAGES;
+
+/// Most cycles the list scheduler holds back the gradients, or the first starts, beyond
+/// their operands' readiness ([`Placement`]).
+const DELAY_MAX: usize = 8;
+
+/// How the list scheduler places the gradients and the starts. Placed as soon as their
+/// operands are ready, the gradients of the last attribute wait for its starts and the
+/// first starts for the last ones, and those registers can live longer than II; held back
+/// or reordered, the same products pack into fewer cycles. [`Schedule::new`] tries every
+/// placement and keeps the one with the lowest latency at the lowest II.
+#[derive(Clone, Copy, Debug)]
+struct Placement {
+    /// Cycles the gradients wait beyond eq. (2)'s products.
+    gradient_delay: usize,
+    /// No start or increment is placed before the first one is ready plus this.
+    start_delay: usize,
+    /// Among starts ready in the same cycle, the last attribute's first.
+    last_attribute_first: bool,
+}
+
+impl Placement {
+    fn all() -> impl Iterator<Item = Placement> + Clone {
+        (0..=DELAY_MAX).flat_map(|gradient_delay| {
+            (0..=DELAY_MAX).flat_map(move |start_delay| {
+                [false, true].map(|last_attribute_first| Placement {
+                    gradient_delay,
+                    start_delay,
+                    last_attribute_first,
+                })
+            })
+        })
+    }
+}
 
 /// When each step of setup happens, in cycles after the cycle that takes the triangle.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -88,13 +123,15 @@ impl Schedule {
         // Each lane holds II products of a triangle, the divider 7 divisions.
         let lowest = PRODUCTS.div_ceil(k).max(7);
         (lowest..=4 * (PRODUCTS + l))
-            .find_map(|ii| Schedule::at_interval(k, l, ii))
+            .find_map(|ii| {
+                Placement::all().filter_map(|p| Schedule::at_interval(k, l, ii, p)).min_by_key(|s| s.latency)
+            })
             .ok_or_else(|| format!("triangle_setup: no schedule for K = {k}, L = {l}"))
     }
 
-    /// The list schedule at II = `ii`, if its lanes, divisions, copies and shared
-    /// registers' lives fit.
-    fn at_interval(k: usize, l: usize, ii: usize) -> Option<Schedule> {
+    /// The list schedule at II = `ii` and placement `p`, if its lanes, divisions, copies
+    /// and shared registers' lives fit.
+    fn at_interval(k: usize, l: usize, ii: usize, p: Placement) -> Option<Schedule> {
         let mut lanes = vec![vec![false; ii]; k];
         let mut divider = vec![false; ii];
         let mut slots = vec![(0, 0); PRODUCTS];
@@ -135,7 +172,7 @@ impl Schedule {
         // gradients once all four of its products are in.
         let eq2: Vec<usize> = (0..4).map(|d| place(8 + d, result(0) + 1)).collect::<Option<_>>()?;
         let eq2_ready = ready_after(*eq2.iter().max()?);
-        let gradients: Vec<usize> = (12..28).map(|i| place(i, eq2_ready)).collect::<Option<_>>()?;
+        let gradients: Vec<usize> = (12..28).map(|i| place(i, eq2_ready + p.gradient_delay)).collect::<Option<_>>()?;
         let grad_ready = |a: usize| ready_after(*gradients[4 * a..4 * a + 4].iter().max().unwrap());
         // Starts and increments, in the order they are ready: the start's two products
         // (which share an accumulator) together, the increment once its step is back.
@@ -147,9 +184,12 @@ impl Schedule {
                 starts.extend([(start, i), (start, i + 1), (g.max(result(2 + 2 * e) + 1), i + 2)]);
             }
         }
-        starts.sort_by_key(|s| s.0);
+        // Product 28 + 12e + 3a + j: attribute a.
+        let attribute = |i: usize| (i - 28) % 12 / 3;
+        starts.sort_by_key(|&(ready, i)| (ready, if p.last_attribute_first { 3 - attribute(i) } else { 0 }));
+        let first = starts[0].0 + p.start_delay;
         for &(ready, i) in &starts {
-            place(i, ready)?;
+            place(i, ready.max(first))?;
         }
         let add = |i: usize| slots[i].0 + M;
         let handover = (28..PRODUCTS).map(add).max()?.max((0..7).map(result).max()?) + 1;
@@ -268,20 +308,23 @@ mod tests {
     }
 
     /// 001's 7 multipliers and 5-stage divider. II 10: 64 products on 7 lanes need
-    /// ceil(64 / 7). Latency 28: area in cycle 1, added in 3, normalised in 4, 1/area
-    /// issued in 5, into the divider in 6, back in 11 and shifted into its register; eq. (2)
-    /// in 12 (added in 14), the gradients from 15 (16 products: 15, 16, 17), the first
-    /// starts from 18 (its gradients added in 17). The lanes free modulo 10 from 18: 7 in
-    /// each of 18, 19, 20, none in 21 (cycle 1 took all seven), 2 in 22 (cycle 2 took one,
-    /// cycle 12 four), 7 in 23: 30 of the 36, the last 6 in 24, added in 26, the hand-over
-    /// in 27, valid in 28. One multiplier: II 64, every slot of it taken.
+    /// ceil(64 / 7). Area in cycle 1 (with five numerators; the sixth in 2), added in 4,
+    /// normalised in 5, 1/area issued in 6, into the divider in 7, back in 12 and shifted
+    /// into its register; eq. (2) in 13 (added in 16). The gradients could go from 17, but
+    /// then attribute 3's, added in 21, would be read by its increments' sums until 33:
+    /// 12 cycles, over II. Held back a cycle (`Placement`), they go in 18, 19, 20, the 36
+    /// starts and increments in 22 to 27 (the lanes free modulo 10), the last added in 30,
+    /// the hand-over in 31, valid in 32: four copies. One multiplier: II 64, every slot of
+    /// it taken.
     #[test]
     fn schedule_of_001s_setup() {
         let s = Schedule::new(7, 5).unwrap();
-        assert_eq!((s.interval, s.latency, s.copies), (10, 28, 3));
-        assert_eq!((s.normalise, s.issue[0], s.result(0), s.handover), (4, 5, 11, 27));
-        assert_eq!((8..12).map(|i| s.slots[i].0).max(), Some(12));
-        assert_eq!((28..64).map(|i| s.slots[i].0).max(), Some(24));
+        assert_eq!((s.interval, s.latency, s.copies), (10, 32, 4));
+        assert_eq!((s.normalise, s.issue[0], s.result(0), s.handover), (5, 6, 12, 31));
+        assert_eq!((8..12).map(|i| s.slots[i].0).max(), Some(13));
+        assert_eq!((12..28).map(|i| s.slots[i].0).min(), Some(18));
+        assert_eq!((28..64).map(|i| s.slots[i].0).min(), Some(22));
+        assert_eq!((28..64).map(|i| s.slots[i].0).max(), Some(27));
         assert_eq!(Schedule::new(1, 5).unwrap().interval, 64);
         assert!(Schedule::new(0, 5).is_err() && Schedule::new(8, 5).is_err() && Schedule::new(7, 0).is_err());
     }
