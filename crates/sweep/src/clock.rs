@@ -15,18 +15,21 @@ use rtl::config::Widths;
 
 /// ECP5 Fmax in MHz of each unit at the default design (class 10, K = 7, L = 25), as
 /// placed and routed by the soak (README, "Units"). Setup's is `raster_top`'s, whose critical
-/// path runs from setup's operand selects through a multiplier's operand multiplexers
-/// (nearly all of it routing); the divider's stage is one restoring step.
+/// path runs through setup: from its result's valid through the take decision into copy 0's
+/// next vertices and the geometry's scanline centres into its registers (stop 55, with the
+/// multipliers split at their DSP blocks; 10.9 of its 15.4 ns routing); the divider's stage
+/// is one restoring step.
 pub const MEASURED_MHZ: [(&str, f64); 6] = [
     ("cull_sort", 115.9),
-    ("triangle_setup", 38.0),
+    ("triangle_setup", 65.0),
     ("divider", 105.1),
-    ("edge_walk", 111.1),
+    ("edge_walk", 118.9),
     ("span", 113.5),
-    ("pixel_out", 127.4),
+    ("pixel_out", 142.2),
 ];
-/// `raster_top`'s ECP5 Fmax at the default design, MHz.
-pub const PIPELINE_MHZ: f64 = 38.3;
+/// `raster_top`'s ECP5 Fmax at the default design, MHz (LFE5U-45F, router1, stop 55: 38.3
+/// before stop 54's geometry registers, 55.7 before the multipliers were split).
+pub const PIPELINE_MHZ: f64 = 65.0;
 
 /// `gpu_top`'s ECP5 Fmax at the default design, MHz, placed and routed whole (LFE5U-85F,
 /// nextpnr's router1; README, "Units"): its critical path is the command parser's (the
@@ -91,8 +94,8 @@ pub fn raster_top_mhz(d: &Design) -> (f64, Source) {
 }
 
 /// The width, in bits, of what a unit's critical path runs through, the delay's measure:
-/// cull_sort's sort of the vertices by y (xy bits); setup's multiplier operands (`mul_a`
-/// bits, their multiplexers spanning the die); the divider's stage, ceil((div_q - 1) / L) restoring steps of a `div_d`-bit
+/// cull_sort's sort of the vertices by y (xy bits); setup's geometry (its scanline centres'
+/// adders, `mul_b` bits: the narrow domain); the divider's stage, ceil((div_q - 1) / L) restoring steps of a `div_d`-bit
 /// subtraction in series; the edge walker's start decision at the hand-over (`edge_d`);
 /// span's depth rounding and range test (`z_acc`, `c_acc`, the wider); pixel_out's depth
 /// compare (`depth`).
@@ -100,7 +103,7 @@ pub fn critical_bits(unit: &str, d: &Design) -> f64 {
     let w = Widths::of(d.class, &d.formats);
     let bits = match unit {
         "cull_sort" => w.xy,
-        "triangle_setup" => w.mul_a,
+        "triangle_setup" => w.mul_b,
         "divider" => (w.div_q - 1).div_ceil(d.l.max(1) as usize) * w.div_d,
         "edge_walk" => w.edge_d,
         "span" => w.z_acc.max(w.c_acc),
