@@ -2,12 +2,13 @@
 # The README's table "Measured on the RTL": every shipped scene drawn by raster_top in
 # Verilator (`render --engine rtl`, which fails unless image, depth and cycles equal the
 # scanline model's), one Markdown row per scene. Extra arguments go to every render, e.g.
-# `scripts/scene-table.sh --param L=13`. Needs a release build (`cargo build --release`).
+# `scripts/scene-table.sh --param L=13`. Needs a release build (`cargo build --release`), or
+# another edgepaint named by EDGEPAINT (the images and cycles are the same).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=scripts/tools-env.sh
 source scripts/tools-env.sh
-bin=target/release/edgepaint
+bin=${EDGEPAINT:-target/release/edgepaint}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
