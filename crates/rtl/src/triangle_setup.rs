@@ -61,13 +61,15 @@
 //! and the normalising shift go into registers, the shift done on the way into the
 //! divider's operand register ([`DIVIDER_OPERANDS`]), and 1/area, shifted for eq. (2), into a
 //! register, so that no path runs from the vertices into the divider or from the divider into
-//! a multiplier. The triangle's long-lived registers (vertices, crossings, the area's sign
-//! and exponent, each edge's x, r, q, rho) are copied every II cycles, `Schedule::copies` of
-//! them: cycle c reads copy (c - 1) / II through that copy's [`Geometry`] (`g0` to `g5`),
-//! whose outputs are registers loaded from the copy's next vertices (so they always hold the
-//! geometry of the copy's vertices, and no path runs through its adders into a multiplier's
-//! or the divider's operands), and a division's result goes into the copy of the cycle after
-//! it. Every other register is written by the
+//! a multiplier. The triangle's long-lived registers (its geometry, the area's sign and
+//! exponent, each edge's x, r, q, rho) are copied every II cycles, `Schedule::copies` of
+//! them: cycle c reads copy (c - 1) / II through that copy's [`GeometryView`] (`g0` to
+//! `g5`). The geometry ([`Geometry`]: edge vectors, scanline centres and counts, the
+//! divisions' offsets, attribute differences) is computed once, from the triangle offered,
+//! into copy 0's [`GeometryWord`] register as the triangle is taken, and moves on with it
+//! (so no path runs through its adders into a multiplier's or the divider's operands, nor
+//! from a copy's counter into them); a division's result goes into the copy of the cycle
+//! after it. Every other register is written by the
 //! next triangle only after this one has read it for the last time, which `Schedule::new`
 //! checks. A deeper divider (for a faster clock) keeps II at 10 up to L = 28, past the
 //! default L = 25 (latency 52, six copies; beyond six, II would be a sixth of the latency). While a result waits for the edge
@@ -80,7 +82,7 @@
 #[path = "triangle_setup/geometry.rs"]
 mod geometry;
 
-use super::cull_sort::{COLOR, OUTCODE, XY, Z};
+use super::cull_sort::{COLOR, XY};
 use super::divider::{DividerRtl, DIV_D, DIV_N, DIV_Q, LATENCY_MAX};
 use super::links::{SortedSink, TriangleSetupSource};
 use super::widths::{C_ACC, DC, DERIVED, DZ, EDGE_D, EDGE_Q, FORMATS, PIXEL, WIDTHS, Z_ACC};
@@ -89,7 +91,7 @@ use crate::mul::SplitMul;
 use crate::parts::defaults;
 use crate::Params;
 use blank::Blank;
-use geometry::Geometry;
+use geometry::{Geometry, GeometryView, GeometryWord};
 pub use model::triangle_setup::schedule::{Schedule, COPIES_MAX, DIVIDER_OPERANDS, MULTIPLIERS_MAX, PRODUCTS};
 use rust_hdl::prelude::*;
 
@@ -182,14 +184,11 @@ pub struct TriangleSetup {
     off_grid_r: DFF<Bit>,
 
     // The triangle's registers, one copy per II cycles of its schedule (copy v at index
-    // v, or 3v + vertex or edge, or 9v + 3 * vertex + channel): x, y, z, colours,
-    // crossings, the sign of the area (from copy 1; copy 0's is the area register's), its
-    // exponent, and each edge's start x, r and step q, rho (from its divisions).
-    vx: [DFF<Bits<XY>>; 3 * COPIES_MAX],
-    vy: [DFF<Bits<XY>>; 3 * COPIES_MAX],
-    vz: [DFF<Bits<Z>>; 3 * COPIES_MAX],
-    vc: [DFF<Bits<COLOR>>; 9 * COPIES_MAX],
-    crosses: [DFF<Bits<OUTCODE>>; COPIES_MAX],
+    // v, or 3v + edge): its geometry, computed from the triangle taken, the sign of the
+    // area (from copy 1; copy 0's is the area register's), its exponent, and each edge's
+    // start x, r and step q, rho (from its divisions).
+    geometry: Geometry,
+    geo: [DFF<GeometryWord>; COPIES_MAX],
     sign: [DFF<Bit>; COPIES_MAX],
     exp: [DFF<Bits<6>>; COPIES_MAX],
     /// OneOverArea's mantissa as the divider returned it, from the copy after its return.
@@ -203,12 +202,12 @@ pub struct TriangleSetup {
     /// The geometry of each copy, by name: rust-hdl writes `g[v].count[e]`, a path with
     /// two indices, wrongly. Copies past `Schedule::copies` are never loaded, and
     /// synthesis removes them.
-    g0: Geometry,
-    g1: Geometry,
-    g2: Geometry,
-    g3: Geometry,
-    g4: Geometry,
-    g5: Geometry,
+    g0: GeometryView,
+    g1: GeometryView,
+    g2: GeometryView,
+    g3: GeometryView,
+    g4: GeometryView,
+    g5: GeometryView,
 
     // Normalise: |area|, its leading one's position (`exp`) and the shift that normalises
     // it into registers; shifted as it goes into the divider.
@@ -373,11 +372,6 @@ impl TriangleSetup {
             add_r: defaults(),
             iss_r: defaults(),
             res_r: defaults(),
-            vx: defaults(),
-            vy: defaults(),
-            vz: defaults(),
-            vc: defaults(),
-            crosses: defaults(),
             sign: defaults(),
             exp: defaults(),
             mant: defaults(),
@@ -472,12 +466,12 @@ impl Logic for TriangleSetup {
             self.o_d[e].clock.next = self.clock.val();
             self.o_d[e].d.next = self.o_d[e].q.val();
         }
-        clock!(self, clock, div, g0, g1, g2, g3, g4, g5);
+        clock!(self, clock, div);
         for v in 0..COPIES_MAX {
             self.t[v].clock.next = self.clock.val();
             self.t[v].d.next = self.t[v].q.val();
-            self.crosses[v].clock.next = self.clock.val();
-            self.crosses[v].d.next = self.crosses[v].q.val();
+            self.geo[v].clock.next = self.clock.val();
+            self.geo[v].d.next = self.geo[v].q.val();
             self.sign[v].clock.next = self.clock.val();
             self.sign[v].d.next = self.sign[v].q.val();
             self.exp[v].clock.next = self.clock.val();
@@ -493,16 +487,6 @@ impl Logic for TriangleSetup {
                 self.q[3 * v + i].d.next = self.q[3 * v + i].q.val();
                 self.rho[3 * v + i].clock.next = self.clock.val();
                 self.rho[3 * v + i].d.next = self.rho[3 * v + i].q.val();
-                self.vx[3 * v + i].clock.next = self.clock.val();
-                self.vx[3 * v + i].d.next = self.vx[3 * v + i].q.val();
-                self.vy[3 * v + i].clock.next = self.clock.val();
-                self.vy[3 * v + i].d.next = self.vy[3 * v + i].q.val();
-                self.vz[3 * v + i].clock.next = self.clock.val();
-                self.vz[3 * v + i].d.next = self.vz[3 * v + i].q.val();
-            }
-            for i in 0..9 {
-                self.vc[9 * v + i].clock.next = self.clock.val();
-                self.vc[9 * v + i].d.next = self.vc[9 * v + i].q.val();
             }
         }
         for i in 0..3 {
@@ -563,7 +547,7 @@ impl Logic for TriangleSetup {
             for v in 0..(self._copies - 1) {
                 if self.t[v].q.val() == self.ends[v].val() {
                     self.t[v + 1].d.next = self.ends[v].val() + 1;
-                    self.crosses[v + 1].d.next = self.crosses[v].q.val();
+                    self.geo[v + 1].d.next = self.geo[v].q.val();
                     self.sign[v + 1].d.next = self.maj_left[v].val();
                     self.exp[v + 1].d.next = self.exp[v].q.val();
                     self.mant[v + 1].d.next = self.mant[v].q.val();
@@ -572,37 +556,13 @@ impl Logic for TriangleSetup {
                         self.r[3 * v + 3 + i].d.next = self.r[3 * v + i].q.val();
                         self.q[3 * v + 3 + i].d.next = self.q[3 * v + i].q.val();
                         self.rho[3 * v + 3 + i].d.next = self.rho[3 * v + i].q.val();
-                        self.vx[3 * v + 3 + i].d.next = self.vx[3 * v + i].q.val();
-                        self.vy[3 * v + 3 + i].d.next = self.vy[3 * v + i].q.val();
-                        self.vz[3 * v + 3 + i].d.next = self.vz[3 * v + i].q.val();
-                    }
-                    for i in 0..9 {
-                        self.vc[9 * v + 9 + i].d.next = self.vc[9 * v + i].q.val();
                     }
                 }
             }
         }
         if self.take.val() {
             self.t[0].d.next = 1.into();
-            self.vx[0].d.next = self.inp.v0_x.val();
-            self.vy[0].d.next = self.inp.v0_y.val();
-            self.vz[0].d.next = self.inp.v0_z.val();
-            self.vc[0].d.next = self.inp.v0_c0.val();
-            self.vc[1].d.next = self.inp.v0_c1.val();
-            self.vc[2].d.next = self.inp.v0_c2.val();
-            self.vx[1].d.next = self.inp.v1_x.val();
-            self.vy[1].d.next = self.inp.v1_y.val();
-            self.vz[1].d.next = self.inp.v1_z.val();
-            self.vc[3].d.next = self.inp.v1_c0.val();
-            self.vc[4].d.next = self.inp.v1_c1.val();
-            self.vc[5].d.next = self.inp.v1_c2.val();
-            self.vx[2].d.next = self.inp.v2_x.val();
-            self.vy[2].d.next = self.inp.v2_y.val();
-            self.vz[2].d.next = self.inp.v2_z.val();
-            self.vc[6].d.next = self.inp.v2_c0.val();
-            self.vc[7].d.next = self.inp.v2_c1.val();
-            self.vc[8].d.next = self.inp.v2_c2.val();
-            self.crosses[0].d.next = self.inp.crosses.val();
+            self.geo[0].d.next = self.geometry.word.val();
         }
         // What is due next cycle: a cycle of the schedule is its copy's counter (the views
         // are constants, so each is one comparison), decoded from the counters' next values.
@@ -653,74 +613,57 @@ impl Logic for TriangleSetup {
         }
         self.off_grid_r.d.next = self.phase.d.val() != 0;
 
-        // ---- Geometry of each copy, from its next vertices (as written above) into the
-        // geometry's registers: they hold the geometry of the copy's vertices as they are.
-        for i in 0..3 {
-            self.g0.vx[i].next = self.vx[i].d.val();
-            self.g0.vy[i].next = self.vy[i].d.val();
-            self.g0.vz[i].next = self.vz[i].d.val();
-            self.g0.start_x[i].next = self.x[i].q.val();
-        }
-        for i in 0..9 {
-            self.g0.vc[i].next = self.vc[i].d.val();
-        }
-        self.g0.crosses.next = self.crosses[0].d.val();
+        // ---- Geometry: computed from the triangle offered (into copy 0's register when
+        // taken), and each copy's by name.
+        self.geometry.vx[0].next = self.inp.v0_x.val();
+        self.geometry.vy[0].next = self.inp.v0_y.val();
+        self.geometry.vz[0].next = self.inp.v0_z.val();
+        self.geometry.vc[0].next = self.inp.v0_c0.val();
+        self.geometry.vc[1].next = self.inp.v0_c1.val();
+        self.geometry.vc[2].next = self.inp.v0_c2.val();
+        self.geometry.vx[1].next = self.inp.v1_x.val();
+        self.geometry.vy[1].next = self.inp.v1_y.val();
+        self.geometry.vz[1].next = self.inp.v1_z.val();
+        self.geometry.vc[3].next = self.inp.v1_c0.val();
+        self.geometry.vc[4].next = self.inp.v1_c1.val();
+        self.geometry.vc[5].next = self.inp.v1_c2.val();
+        self.geometry.vx[2].next = self.inp.v2_x.val();
+        self.geometry.vy[2].next = self.inp.v2_y.val();
+        self.geometry.vz[2].next = self.inp.v2_z.val();
+        self.geometry.vc[6].next = self.inp.v2_c0.val();
+        self.geometry.vc[7].next = self.inp.v2_c1.val();
+        self.geometry.vc[8].next = self.inp.v2_c2.val();
+        self.geometry.crosses.next = self.inp.crosses.val();
+        self.g0.word.next = self.geo[0].q.val();
         self.g0.maj_left.next = self.maj_left[0].val();
         for i in 0..3 {
-            self.g1.vx[i].next = self.vx[3 + i].d.val();
-            self.g1.vy[i].next = self.vy[3 + i].d.val();
-            self.g1.vz[i].next = self.vz[3 + i].d.val();
-            self.g1.start_x[i].next = self.x[3 + i].q.val();
+            self.g0.start_x[i].next = self.x[i].q.val();
         }
-        for i in 0..9 {
-            self.g1.vc[i].next = self.vc[9 + i].d.val();
-        }
-        self.g1.crosses.next = self.crosses[1].d.val();
+        self.g1.word.next = self.geo[1].q.val();
         self.g1.maj_left.next = self.maj_left[1].val();
         for i in 0..3 {
-            self.g2.vx[i].next = self.vx[6 + i].d.val();
-            self.g2.vy[i].next = self.vy[6 + i].d.val();
-            self.g2.vz[i].next = self.vz[6 + i].d.val();
-            self.g2.start_x[i].next = self.x[6 + i].q.val();
+            self.g1.start_x[i].next = self.x[3 + i].q.val();
         }
-        for i in 0..9 {
-            self.g2.vc[i].next = self.vc[18 + i].d.val();
-        }
-        self.g2.crosses.next = self.crosses[2].d.val();
+        self.g2.word.next = self.geo[2].q.val();
         self.g2.maj_left.next = self.maj_left[2].val();
         for i in 0..3 {
-            self.g3.vx[i].next = self.vx[9 + i].d.val();
-            self.g3.vy[i].next = self.vy[9 + i].d.val();
-            self.g3.vz[i].next = self.vz[9 + i].d.val();
-            self.g3.start_x[i].next = self.x[9 + i].q.val();
+            self.g2.start_x[i].next = self.x[6 + i].q.val();
         }
-        for i in 0..9 {
-            self.g3.vc[i].next = self.vc[27 + i].d.val();
-        }
-        self.g3.crosses.next = self.crosses[3].d.val();
+        self.g3.word.next = self.geo[3].q.val();
         self.g3.maj_left.next = self.maj_left[3].val();
         for i in 0..3 {
-            self.g4.vx[i].next = self.vx[12 + i].d.val();
-            self.g4.vy[i].next = self.vy[12 + i].d.val();
-            self.g4.vz[i].next = self.vz[12 + i].d.val();
-            self.g4.start_x[i].next = self.x[12 + i].q.val();
+            self.g3.start_x[i].next = self.x[9 + i].q.val();
         }
-        for i in 0..9 {
-            self.g4.vc[i].next = self.vc[36 + i].d.val();
-        }
-        self.g4.crosses.next = self.crosses[4].d.val();
+        self.g4.word.next = self.geo[4].q.val();
         self.g4.maj_left.next = self.maj_left[4].val();
         for i in 0..3 {
-            self.g5.vx[i].next = self.vx[15 + i].d.val();
-            self.g5.vy[i].next = self.vy[15 + i].d.val();
-            self.g5.vz[i].next = self.vz[15 + i].d.val();
+            self.g4.start_x[i].next = self.x[12 + i].q.val();
+        }
+        self.g5.word.next = self.geo[5].q.val();
+        self.g5.maj_left.next = self.maj_left[5].val();
+        for i in 0..3 {
             self.g5.start_x[i].next = self.x[15 + i].q.val();
         }
-        for i in 0..9 {
-            self.g5.vc[i].next = self.vc[45 + i].d.val();
-        }
-        self.g5.crosses.next = self.crosses[5].d.val();
-        self.g5.maj_left.next = self.maj_left[5].val();
 
         // ---- Normalise twice the area for 1/area (`recip_operands`): |a| << (32 - exp).
         // |a|, exp and the shift into registers; the shift is done as 1/area is issued.

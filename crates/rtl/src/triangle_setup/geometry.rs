@@ -5,9 +5,12 @@
 //! tracks, and the attribute differences.
 //!
 //! Setup has several triangles in flight (see `Schedule`) and a copy of a triangle's
-//! registers for each II cycles of its schedule, so it has one of these per copy: the part
-//! of the schedule that reads a copy reads its geometry, from registers (issue 17: the
-//! scanline centres and counts into the division issue were setup's critical path).
+//! registers for each II cycles of its schedule. The geometry is computed once, from the
+//! triangle setup takes ([`Geometry`], into copy 0's [`GeometryWord`] register), and moves
+//! with the triangle from copy to copy as a register; each copy's [`GeometryView`] names its
+//! fields. So the part of the schedule that reads a copy reads its geometry from registers,
+//! and no path runs from a copy's counter through adders into them (issue 17: the scanline
+//! centres and counts, computed per copy from its next vertices, were setup's critical path).
 
 use super::super::cull_sort::{outcode_bit, COLOR, OUTCODE, XY, Z};
 use super::super::divider::DIV_D;
@@ -18,87 +21,89 @@ use rust_hdl::prelude::*;
 
 const S: u32 = FORMATS.xy.frac;
 
-/// A triangle's geometry, registered: its inputs are the copy's next vertices (the values
-/// its registers are loaded with), so its outputs, registers loaded every cycle, are the
-/// geometry of the vertices the copy holds, one cycle of adders away from every register
-/// that reads them. `off_x`, from the copy's start pixels and side, is combinational.
+/// A triangle's geometry as one word, which setup's copies hold and hand on: the edge
+/// vectors e_maj (v0 -> v2), e_bot (v0 -> v1), e_top (v1 -> v2) (`kdx`, `kdy`); the walk
+/// direction (`up`, 003: the triangle crosses the top boundary and not the bottom one); per
+/// edge in walk order (e_maj, then the short edges as `TriangleSetupOut::short`) dx, dy,
+/// the scanline centre, count, the start division's offsets (t, x fraction, x integer) and
+/// the tracked pixel centre's y offset from v0; the attribute differences from v0 along
+/// e_maj and e_bot (z, R, G, B) and v0's attributes in a lane; v0's x in the narrow domain.
+/// Fields `<name>_<index>` are [`GeometryView`]'s arrays.
+#[derive(Clone, Copy, Debug, Default, PartialEq, LogicStruct)]
+pub struct GeometryWord {
+    pub kdx_0: Bits<W>,
+    pub kdx_1: Bits<W>,
+    pub kdx_2: Bits<W>,
+    pub kdy_0: Bits<G>,
+    pub kdy_1: Bits<G>,
+    pub kdy_2: Bits<G>,
+    pub up: Bit,
+    pub edx_0: Bits<W>,
+    pub edx_1: Bits<W>,
+    pub edx_2: Bits<W>,
+    pub edy_0: Bits<G>,
+    pub edy_1: Bits<G>,
+    pub edy_2: Bits<G>,
+    pub cy_0: Bits<NB>,
+    pub cy_1: Bits<NB>,
+    pub cy_2: Bits<NB>,
+    pub count_0: Bits<PIXEL>,
+    pub count_1: Bits<PIXEL>,
+    pub count_2: Bits<PIXEL>,
+    pub toff_0: Bits<NB>,
+    pub toff_1: Bits<NB>,
+    pub toff_2: Bits<NB>,
+    pub xf_0: Bits<NB>,
+    pub xf_1: Bits<NB>,
+    pub xf_2: Bits<NB>,
+    pub xi_0: Bits<NB>,
+    pub xi_1: Bits<NB>,
+    pub xi_2: Bits<NB>,
+    pub off_y_0: Bits<NB>,
+    pub off_y_1: Bits<NB>,
+    pub off_y_2: Bits<NB>,
+    pub dmaj_0: Bits<NB>,
+    pub dmaj_1: Bits<NB>,
+    pub dmaj_2: Bits<NB>,
+    pub dmaj_3: Bits<NB>,
+    pub dbot_0: Bits<NB>,
+    pub dbot_1: Bits<NB>,
+    pub dbot_2: Bits<NB>,
+    pub dbot_3: Bits<NB>,
+    pub attr0_0: Bits<ATTR>,
+    pub attr0_1: Bits<ATTR>,
+    pub attr0_2: Bits<ATTR>,
+    pub attr0_3: Bits<ATTR>,
+    pub xn0: Bits<NB>,
+}
+
+/// A triangle's geometry, computed from its vertices (the triangle setup takes) with
+/// adders, shifts and multiplexers: combinational, into copy 0's register.
 #[derive(LogicBlock, Blank)]
 pub struct Geometry {
-    pub clock: Signal<In, Clock>,
     /// The triangle: x, y, z, colours (3 * vertex + channel), and its crossings.
     pub vx: [Signal<In, Bits<XY>>; 3],
     pub vy: [Signal<In, Bits<XY>>; 3],
     pub vz: [Signal<In, Bits<Z>>; 3],
     pub vc: [Signal<In, Bits<COLOR>>; 9],
     pub crosses: Signal<In, Bits<OUTCODE>>,
-    /// e_maj is the left side (twice the area < 0).
-    pub maj_left: Signal<In, Bit>,
-    /// Each edge's start pixel, once its start division is back.
-    pub start_x: [Signal<In, Bits<NB>>; 3],
+    pub word: Signal<Out, GeometryWord>,
 
-    /// Edge vectors e_maj (v0 -> v2), e_bot (v0 -> v1), e_top (v1 -> v2): dx, dy.
-    pub kdx: [Signal<Out, Bits<W>>; 3],
-    pub kdy: [Signal<Out, Bits<G>>; 3],
-    /// Walk up (003): the triangle crosses the top boundary and not the bottom one.
-    pub up: Signal<Out, Bit>,
-    /// Per edge in walk order (e_maj, then the short edges as `TriangleSetupOut::short`):
-    /// dx, dy, dy as the divisor (zero-extended when `G` is narrower), 2^s dy, the
-    /// scanline centre, count, the start division's offsets (t, x fraction, x integer) and
-    /// the tracked pixel centre's offsets from v0.
-    pub edx: [Signal<Out, Bits<W>>; 3],
-    pub edy: [Signal<Out, Bits<G>>; 3],
-    pub edy_d: [Signal<Out, Bits<DIV_D>>; 3],
-    pub ed16: [Signal<Out, Bits<DIV_D>>; 3],
-    pub cy: [Signal<Out, Bits<NB>>; 3],
-    pub count: [Signal<Out, Bits<PIXEL>>; 3],
-    pub toff: [Signal<Out, Bits<NB>>; 3],
-    pub xf: [Signal<Out, Bits<NB>>; 3],
-    pub xi: [Signal<Out, Bits<NB>>; 3],
-    pub off_x: [Signal<Out, Bits<NB>>; 3],
-    pub off_y: [Signal<Out, Bits<NB>>; 3],
-    /// Attribute differences from v0 along e_maj and e_bot (z, R, G, B); v0's attributes
-    /// in a lane.
-    pub dmaj: [Signal<Out, Bits<NB>>; 4],
-    pub dbot: [Signal<Out, Bits<NB>>; 4],
-    pub attr0: [Signal<Out, Bits<ATTR>>; 4],
-
-    /// The geometry as computed (from the copy's next vertices), and its registers: each
-    /// output above but `off_x` is its register, so that no path runs from a copy's vertices
-    /// through the adders above into the multipliers' operands or the divider's.
-    c_kdx: [Signal<Local, Bits<W>>; 3],
-    c_kdy: [Signal<Local, Bits<G>>; 3],
-    c_up: Signal<Local, Bit>,
-    c_edx: [Signal<Local, Bits<W>>; 3],
-    c_edy: [Signal<Local, Bits<G>>; 3],
-    c_edy_d: [Signal<Local, Bits<DIV_D>>; 3],
-    c_ed16: [Signal<Local, Bits<DIV_D>>; 3],
-    c_cy: [Signal<Local, Bits<NB>>; 3],
-    c_count: [Signal<Local, Bits<PIXEL>>; 3],
-    c_toff: [Signal<Local, Bits<NB>>; 3],
-    c_xf: [Signal<Local, Bits<NB>>; 3],
-    c_xi: [Signal<Local, Bits<NB>>; 3],
-    c_off_y: [Signal<Local, Bits<NB>>; 3],
-    c_dmaj: [Signal<Local, Bits<NB>>; 4],
-    c_dbot: [Signal<Local, Bits<NB>>; 4],
-    c_attr0: [Signal<Local, Bits<ATTR>>; 4],
-    kdx_r: [DFF<Bits<W>>; 3],
-    kdy_r: [DFF<Bits<G>>; 3],
-    up_r: DFF<Bit>,
-    edx_r: [DFF<Bits<W>>; 3],
-    edy_r: [DFF<Bits<G>>; 3],
-    edy_d_r: [DFF<Bits<DIV_D>>; 3],
-    ed16_r: [DFF<Bits<DIV_D>>; 3],
-    cy_r: [DFF<Bits<NB>>; 3],
-    count_r: [DFF<Bits<PIXEL>>; 3],
-    toff_r: [DFF<Bits<NB>>; 3],
-    xf_r: [DFF<Bits<NB>>; 3],
-    xi_r: [DFF<Bits<NB>>; 3],
-    off_y_r: [DFF<Bits<NB>>; 3],
-    dmaj_r: [DFF<Bits<NB>>; 4],
-    dbot_r: [DFF<Bits<NB>>; 4],
-    attr0_r: [DFF<Bits<ATTR>>; 4],
-    /// v0's x in the narrow domain, registered for `off_x`.
-    xn0_r: DFF<Bits<NB>>,
+    /// The word's fields (see [`GeometryWord`]).
+    kdx: [Signal<Local, Bits<W>>; 3],
+    kdy: [Signal<Local, Bits<G>>; 3],
+    up: Signal<Local, Bit>,
+    edx: [Signal<Local, Bits<W>>; 3],
+    edy: [Signal<Local, Bits<G>>; 3],
+    cy: [Signal<Local, Bits<NB>>; 3],
+    count: [Signal<Local, Bits<PIXEL>>; 3],
+    toff: [Signal<Local, Bits<NB>>; 3],
+    xf: [Signal<Local, Bits<NB>>; 3],
+    xi: [Signal<Local, Bits<NB>>; 3],
+    off_y: [Signal<Local, Bits<NB>>; 3],
+    dmaj: [Signal<Local, Bits<NB>>; 4],
+    dbot: [Signal<Local, Bits<NB>>; 4],
+    attr0: [Signal<Local, Bits<ATTR>>; 4],
     /// x, y sign-extended to `W` and `G` bits (y only meets the multipliers' A side and
     /// divisors); z, colours as `NB`-bit numbers.
     xw: [Signal<Local, Bits<W>>; 3],
@@ -114,12 +119,10 @@ pub struct Geometry {
     /// vMid..vMax), 0 when negative, and the centres' differences.
     span: [Signal<Local, Bits<PIXEL>>; 3],
     diff: [Signal<Local, Bits<NB>>; 3],
-    /// Per edge in walk order: the walk's base vertex, its x - 1/2, and the pixel the side
-    /// tracks (x on the left side, x - 1 on the right).
+    /// Per edge in walk order: the walk's base vertex, and its x - 1/2.
     bx: [Signal<Local, Bits<NB>>; 3],
     by: [Signal<Local, Bits<NB>>; 3],
     xb: [Signal<Local, Bits<NB>>; 3],
-    tracked: [Signal<Local, Bits<NB>>; 3],
 
     /// s; 2^(s-1) - 1, 2^(s-1), !(2^s - 1) and 2^s - 1 in the narrow domain.
     frac: Constant<Bits<8>>,
@@ -221,14 +224,14 @@ impl Logic for Geometry {
         }
         // e_maj, e_bot, e_top, and the scanlines between their ends' first centres
         // (`span` in the model).
-        self.c_kdx[0].next = self.xw[2].val() - self.xw[0].val();
-        self.c_kdy[0].next = self.yw[2].val() - self.yw[0].val();
+        self.kdx[0].next = self.xw[2].val() - self.xw[0].val();
+        self.kdy[0].next = self.yw[2].val() - self.yw[0].val();
         self.diff[0].next = self.cv[2].val() - self.cv[0].val();
-        self.c_kdx[1].next = self.xw[1].val() - self.xw[0].val();
-        self.c_kdy[1].next = self.yw[1].val() - self.yw[0].val();
+        self.kdx[1].next = self.xw[1].val() - self.xw[0].val();
+        self.kdy[1].next = self.yw[1].val() - self.yw[0].val();
         self.diff[1].next = self.cv[1].val() - self.cv[0].val();
-        self.c_kdx[2].next = self.xw[2].val() - self.xw[1].val();
-        self.c_kdy[2].next = self.yw[2].val() - self.yw[1].val();
+        self.kdx[2].next = self.xw[2].val() - self.xw[1].val();
+        self.kdy[2].next = self.yw[2].val() - self.yw[1].val();
         self.diff[2].next = self.cv[2].val() - self.cv[1].val();
         for k in 0..3 {
             self.span[k].next = self.diff[k].val().get_bits::<PIXEL>(self.frac.val().index());
@@ -239,41 +242,206 @@ impl Logic for Geometry {
         // The walk direction (003) and the edges in walk order. Walking down: e_maj,
         // e_bot, e_top, each from its upper vertex and first centre. Walking up: e_maj,
         // e_top, e_bot, each from its lower vertex and last centre.
-        self.c_up.next = self.crosses.val().get_bit(self.top_bit.val().index())
+        self.up.next = self.crosses.val().get_bit(self.top_bit.val().index())
             & !self.crosses.val().get_bit(self.bottom_bit.val().index());
         for e in 0..3 {
-            self.c_edx[e].next = self.c_kdx[e].val();
-            self.c_edy[e].next = self.c_kdy[e].val();
-            self.c_count[e].next = self.span[e].val();
+            self.edx[e].next = self.kdx[e].val();
+            self.edy[e].next = self.kdy[e].val();
+            self.count[e].next = self.span[e].val();
         }
         self.bx[0].next = self.xn[0].val();
         self.by[0].next = self.yn[0].val();
-        self.c_cy[0].next = self.cv[0].val();
+        self.cy[0].next = self.cv[0].val();
         self.bx[1].next = self.xn[0].val();
         self.by[1].next = self.yn[0].val();
-        self.c_cy[1].next = self.cv[0].val();
+        self.cy[1].next = self.cv[0].val();
         self.bx[2].next = self.xn[1].val();
         self.by[2].next = self.yn[1].val();
-        self.c_cy[2].next = self.cv[1].val();
-        if self.c_up.val() {
-            self.c_edx[1].next = self.c_kdx[2].val();
-            self.c_edy[1].next = self.c_kdy[2].val();
-            self.c_count[1].next = self.span[2].val();
-            self.c_edx[2].next = self.c_kdx[1].val();
-            self.c_edy[2].next = self.c_kdy[1].val();
-            self.c_count[2].next = self.span[1].val();
+        self.cy[2].next = self.cv[1].val();
+        if self.up.val() {
+            self.edx[1].next = self.kdx[2].val();
+            self.edy[1].next = self.kdy[2].val();
+            self.count[1].next = self.span[2].val();
+            self.edx[2].next = self.kdx[1].val();
+            self.edy[2].next = self.kdy[1].val();
+            self.count[2].next = self.span[1].val();
             self.bx[0].next = self.xn[2].val();
             self.by[0].next = self.yn[2].val();
-            self.c_cy[0].next = self.cv[2].val() - (self.frac_mask.val() + 1);
+            self.cy[0].next = self.cv[2].val() - (self.frac_mask.val() + 1);
             self.bx[1].next = self.xn[2].val();
             self.by[1].next = self.yn[2].val();
-            self.c_cy[1].next = self.cv[2].val() - (self.frac_mask.val() + 1);
-            self.c_cy[2].next = self.cv[1].val() - (self.frac_mask.val() + 1);
+            self.cy[1].next = self.cv[2].val() - (self.frac_mask.val() + 1);
+            self.cy[2].next = self.cv[1].val() - (self.frac_mask.val() + 1);
         }
+        for e in 0..3 {
+            // The start division's offsets: t from the base vertex to the centre, and the
+            // base's x - 1/2 split into pixel and fraction (floor).
+            self.toff[e].next = self.cy[e].val() - self.by[e].val();
+            self.xb[e].next = self.bx[e].val() - self.half.val();
+            self.xf[e].next = self.xb[e].val() & self.frac_mask.val();
+            self.xi[e].next = self.xb[e].val() >> self.frac.val();
+            if self.xb[e].val().get_bit(self.nb_msb.val().index()) {
+                self.xi[e].next = (self.xb[e].val() >> self.frac.val()) | self.shr_ext.val();
+            }
+            // Offsets from v0 of the pixel centre this side tracks.
+            self.off_y[e].next = self.cy[e].val() - self.yn[0].val();
+        }
+        // Attribute differences along e_maj and e_bot; v0's attributes.
+        self.dmaj[0].next = self.zn[2].val() - self.zn[0].val();
+        self.dbot[0].next = self.zn[1].val() - self.zn[0].val();
+        self.attr0[0].next = bit_cast::<ATTR, NB>(self.zn[0].val());
+        self.attr0[1].next = bit_cast::<ATTR, COLOR>(self.vc[0].val());
+        self.attr0[2].next = bit_cast::<ATTR, COLOR>(self.vc[1].val());
+        self.attr0[3].next = bit_cast::<ATTR, COLOR>(self.vc[2].val());
+        for c in 0..3 {
+            self.dmaj[c + 1].next = self.cn[6 + c].val() - self.cn[c].val();
+            self.dbot[c + 1].next = self.cn[3 + c].val() - self.cn[c].val();
+        }
+        // ---- The word.
+        self.word.next.kdx_0 = self.kdx[0].val();
+        self.word.next.kdx_1 = self.kdx[1].val();
+        self.word.next.kdx_2 = self.kdx[2].val();
+        self.word.next.kdy_0 = self.kdy[0].val();
+        self.word.next.kdy_1 = self.kdy[1].val();
+        self.word.next.kdy_2 = self.kdy[2].val();
+        self.word.next.up = self.up.val();
+        self.word.next.edx_0 = self.edx[0].val();
+        self.word.next.edx_1 = self.edx[1].val();
+        self.word.next.edx_2 = self.edx[2].val();
+        self.word.next.edy_0 = self.edy[0].val();
+        self.word.next.edy_1 = self.edy[1].val();
+        self.word.next.edy_2 = self.edy[2].val();
+        self.word.next.cy_0 = self.cy[0].val();
+        self.word.next.cy_1 = self.cy[1].val();
+        self.word.next.cy_2 = self.cy[2].val();
+        self.word.next.count_0 = self.count[0].val();
+        self.word.next.count_1 = self.count[1].val();
+        self.word.next.count_2 = self.count[2].val();
+        self.word.next.toff_0 = self.toff[0].val();
+        self.word.next.toff_1 = self.toff[1].val();
+        self.word.next.toff_2 = self.toff[2].val();
+        self.word.next.xf_0 = self.xf[0].val();
+        self.word.next.xf_1 = self.xf[1].val();
+        self.word.next.xf_2 = self.xf[2].val();
+        self.word.next.xi_0 = self.xi[0].val();
+        self.word.next.xi_1 = self.xi[1].val();
+        self.word.next.xi_2 = self.xi[2].val();
+        self.word.next.off_y_0 = self.off_y[0].val();
+        self.word.next.off_y_1 = self.off_y[1].val();
+        self.word.next.off_y_2 = self.off_y[2].val();
+        self.word.next.dmaj_0 = self.dmaj[0].val();
+        self.word.next.dmaj_1 = self.dmaj[1].val();
+        self.word.next.dmaj_2 = self.dmaj[2].val();
+        self.word.next.dmaj_3 = self.dmaj[3].val();
+        self.word.next.dbot_0 = self.dbot[0].val();
+        self.word.next.dbot_1 = self.dbot[1].val();
+        self.word.next.dbot_2 = self.dbot[2].val();
+        self.word.next.dbot_3 = self.dbot[3].val();
+        self.word.next.attr0_0 = self.attr0[0].val();
+        self.word.next.attr0_1 = self.attr0[1].val();
+        self.word.next.attr0_2 = self.attr0[2].val();
+        self.word.next.attr0_3 = self.attr0[3].val();
+        self.word.next.xn0 = self.xn[0].val();
+    }
+}
+
+/// A copy's geometry by name: [`GeometryWord`]'s fields as arrays, 2^s dy and dy as the
+/// divisor (zero-extended when `G` is narrower), and the tracked pixel centre's x offset
+/// from v0 (`off_x`), from the copy's start pixels and side.
+#[derive(LogicBlock, Blank)]
+pub struct GeometryView {
+    pub word: Signal<In, GeometryWord>,
+    /// e_maj is the left side (twice the area < 0).
+    pub maj_left: Signal<In, Bit>,
+    /// Each edge's start pixel, once its start division is back.
+    pub start_x: [Signal<In, Bits<NB>>; 3],
+
+    pub kdx: [Signal<Out, Bits<W>>; 3],
+    pub kdy: [Signal<Out, Bits<G>>; 3],
+    pub up: Signal<Out, Bit>,
+    pub edx: [Signal<Out, Bits<W>>; 3],
+    pub edy: [Signal<Out, Bits<G>>; 3],
+    pub edy_d: [Signal<Out, Bits<DIV_D>>; 3],
+    pub ed16: [Signal<Out, Bits<DIV_D>>; 3],
+    pub cy: [Signal<Out, Bits<NB>>; 3],
+    pub count: [Signal<Out, Bits<PIXEL>>; 3],
+    pub toff: [Signal<Out, Bits<NB>>; 3],
+    pub xf: [Signal<Out, Bits<NB>>; 3],
+    pub xi: [Signal<Out, Bits<NB>>; 3],
+    pub off_x: [Signal<Out, Bits<NB>>; 3],
+    pub off_y: [Signal<Out, Bits<NB>>; 3],
+    pub dmaj: [Signal<Out, Bits<NB>>; 4],
+    pub dbot: [Signal<Out, Bits<NB>>; 4],
+    pub attr0: [Signal<Out, Bits<ATTR>>; 4],
+    xn0: Signal<Local, Bits<NB>>,
+    /// The pixel each edge's side tracks: x on the left side, x - 1 on the right.
+    tracked: [Signal<Local, Bits<NB>>; 3],
+    /// s, 2^(s-1).
+    frac: Constant<Bits<8>>,
+    half: Constant<Bits<NB>>,
+}
+
+impl Default for GeometryView {
+    fn default() -> Self {
+        GeometryView {
+            frac: Constant::new((S as usize).to_bits()),
+            half: Constant::new(((1usize << S) / 2).to_bits()),
+            ..GeometryView::blank()
+        }
+    }
+}
+
+impl Logic for GeometryView {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.kdx[0].next = self.word.val().kdx_0;
+        self.kdx[1].next = self.word.val().kdx_1;
+        self.kdx[2].next = self.word.val().kdx_2;
+        self.kdy[0].next = self.word.val().kdy_0;
+        self.kdy[1].next = self.word.val().kdy_1;
+        self.kdy[2].next = self.word.val().kdy_2;
+        self.up.next = self.word.val().up;
+        self.edx[0].next = self.word.val().edx_0;
+        self.edx[1].next = self.word.val().edx_1;
+        self.edx[2].next = self.word.val().edx_2;
+        self.edy[0].next = self.word.val().edy_0;
+        self.edy[1].next = self.word.val().edy_1;
+        self.edy[2].next = self.word.val().edy_2;
+        self.cy[0].next = self.word.val().cy_0;
+        self.cy[1].next = self.word.val().cy_1;
+        self.cy[2].next = self.word.val().cy_2;
+        self.count[0].next = self.word.val().count_0;
+        self.count[1].next = self.word.val().count_1;
+        self.count[2].next = self.word.val().count_2;
+        self.toff[0].next = self.word.val().toff_0;
+        self.toff[1].next = self.word.val().toff_1;
+        self.toff[2].next = self.word.val().toff_2;
+        self.xf[0].next = self.word.val().xf_0;
+        self.xf[1].next = self.word.val().xf_1;
+        self.xf[2].next = self.word.val().xf_2;
+        self.xi[0].next = self.word.val().xi_0;
+        self.xi[1].next = self.word.val().xi_1;
+        self.xi[2].next = self.word.val().xi_2;
+        self.off_y[0].next = self.word.val().off_y_0;
+        self.off_y[1].next = self.word.val().off_y_1;
+        self.off_y[2].next = self.word.val().off_y_2;
+        self.dmaj[0].next = self.word.val().dmaj_0;
+        self.dmaj[1].next = self.word.val().dmaj_1;
+        self.dmaj[2].next = self.word.val().dmaj_2;
+        self.dmaj[3].next = self.word.val().dmaj_3;
+        self.dbot[0].next = self.word.val().dbot_0;
+        self.dbot[1].next = self.word.val().dbot_1;
+        self.dbot[2].next = self.word.val().dbot_2;
+        self.dbot[3].next = self.word.val().dbot_3;
+        self.attr0[0].next = self.word.val().attr0_0;
+        self.attr0[1].next = self.word.val().attr0_1;
+        self.attr0[2].next = self.word.val().attr0_2;
+        self.attr0[3].next = self.word.val().attr0_3;
+        self.xn0.next = self.word.val().xn0;
         // dy is positive; `bit_cast` (a loop's index cannot) widens it to the divisor.
-        self.c_edy_d[0].next = bit_cast::<DIV_D, G>(self.c_edy[0].val());
-        self.c_edy_d[1].next = bit_cast::<DIV_D, G>(self.c_edy[1].val());
-        self.c_edy_d[2].next = bit_cast::<DIV_D, G>(self.c_edy[2].val());
+        self.edy_d[0].next = bit_cast::<DIV_D, G>(self.edy[0].val());
+        self.edy_d[1].next = bit_cast::<DIV_D, G>(self.edy[1].val());
+        self.edy_d[2].next = bit_cast::<DIV_D, G>(self.edy[2].val());
         // e_maj is the left side when maj_left; the short edges are then on the right.
         self.tracked[0].next = self.start_x[0].val() - 1;
         if self.maj_left.val() {
@@ -286,112 +454,8 @@ impl Logic for Geometry {
             }
         }
         for e in 0..3 {
-            self.c_ed16[e].next = self.c_edy_d[e].val() << self.frac.val();
-            // The start division's offsets: t from the base vertex to the centre, and the
-            // base's x - 1/2 split into pixel and fraction (floor).
-            self.c_toff[e].next = self.c_cy[e].val() - self.by[e].val();
-            self.xb[e].next = self.bx[e].val() - self.half.val();
-            self.c_xf[e].next = self.xb[e].val() & self.frac_mask.val();
-            self.c_xi[e].next = self.xb[e].val() >> self.frac.val();
-            if self.xb[e].val().get_bit(self.nb_msb.val().index()) {
-                self.c_xi[e].next = (self.xb[e].val() >> self.frac.val()) | self.shr_ext.val();
-            }
-            // Offsets from v0 of the pixel centre this side tracks.
-            self.c_off_y[e].next = self.c_cy[e].val() - self.yn[0].val();
-            self.off_x[e].next = (self.tracked[e].val() << self.frac.val()) + self.half.val() - self.xn0_r.q.val();
-        }
-        // Attribute differences along e_maj and e_bot; v0's attributes.
-        self.c_dmaj[0].next = self.zn[2].val() - self.zn[0].val();
-        self.c_dbot[0].next = self.zn[1].val() - self.zn[0].val();
-        self.c_attr0[0].next = bit_cast::<ATTR, NB>(self.zn[0].val());
-        self.c_attr0[1].next = bit_cast::<ATTR, COLOR>(self.vc[0].val());
-        self.c_attr0[2].next = bit_cast::<ATTR, COLOR>(self.vc[1].val());
-        self.c_attr0[3].next = bit_cast::<ATTR, COLOR>(self.vc[2].val());
-        for c in 0..3 {
-            self.c_dmaj[c + 1].next = self.cn[6 + c].val() - self.cn[c].val();
-            self.c_dbot[c + 1].next = self.cn[3 + c].val() - self.cn[c].val();
-        }
-        // ---- The registers: loaded every cycle from the next vertices, so each holds the
-        // geometry of the copy's vertices as they are.
-        self.xn0_r.clock.next = self.clock.val();
-        self.xn0_r.d.next = self.xn[0].val();
-        for i in 0..3 {
-            self.kdx_r[i].clock.next = self.clock.val();
-            self.kdx_r[i].d.next = self.c_kdx[i].val();
-            self.kdx[i].next = self.kdx_r[i].q.val();
-        }
-        for i in 0..3 {
-            self.kdy_r[i].clock.next = self.clock.val();
-            self.kdy_r[i].d.next = self.c_kdy[i].val();
-            self.kdy[i].next = self.kdy_r[i].q.val();
-        }
-        self.up_r.clock.next = self.clock.val();
-        self.up_r.d.next = self.c_up.val();
-        self.up.next = self.up_r.q.val();
-        for i in 0..3 {
-            self.edx_r[i].clock.next = self.clock.val();
-            self.edx_r[i].d.next = self.c_edx[i].val();
-            self.edx[i].next = self.edx_r[i].q.val();
-        }
-        for i in 0..3 {
-            self.edy_r[i].clock.next = self.clock.val();
-            self.edy_r[i].d.next = self.c_edy[i].val();
-            self.edy[i].next = self.edy_r[i].q.val();
-        }
-        for i in 0..3 {
-            self.edy_d_r[i].clock.next = self.clock.val();
-            self.edy_d_r[i].d.next = self.c_edy_d[i].val();
-            self.edy_d[i].next = self.edy_d_r[i].q.val();
-        }
-        for i in 0..3 {
-            self.ed16_r[i].clock.next = self.clock.val();
-            self.ed16_r[i].d.next = self.c_ed16[i].val();
-            self.ed16[i].next = self.ed16_r[i].q.val();
-        }
-        for i in 0..3 {
-            self.cy_r[i].clock.next = self.clock.val();
-            self.cy_r[i].d.next = self.c_cy[i].val();
-            self.cy[i].next = self.cy_r[i].q.val();
-        }
-        for i in 0..3 {
-            self.count_r[i].clock.next = self.clock.val();
-            self.count_r[i].d.next = self.c_count[i].val();
-            self.count[i].next = self.count_r[i].q.val();
-        }
-        for i in 0..3 {
-            self.toff_r[i].clock.next = self.clock.val();
-            self.toff_r[i].d.next = self.c_toff[i].val();
-            self.toff[i].next = self.toff_r[i].q.val();
-        }
-        for i in 0..3 {
-            self.xf_r[i].clock.next = self.clock.val();
-            self.xf_r[i].d.next = self.c_xf[i].val();
-            self.xf[i].next = self.xf_r[i].q.val();
-        }
-        for i in 0..3 {
-            self.xi_r[i].clock.next = self.clock.val();
-            self.xi_r[i].d.next = self.c_xi[i].val();
-            self.xi[i].next = self.xi_r[i].q.val();
-        }
-        for i in 0..3 {
-            self.off_y_r[i].clock.next = self.clock.val();
-            self.off_y_r[i].d.next = self.c_off_y[i].val();
-            self.off_y[i].next = self.off_y_r[i].q.val();
-        }
-        for i in 0..4 {
-            self.dmaj_r[i].clock.next = self.clock.val();
-            self.dmaj_r[i].d.next = self.c_dmaj[i].val();
-            self.dmaj[i].next = self.dmaj_r[i].q.val();
-        }
-        for i in 0..4 {
-            self.dbot_r[i].clock.next = self.clock.val();
-            self.dbot_r[i].d.next = self.c_dbot[i].val();
-            self.dbot[i].next = self.dbot_r[i].q.val();
-        }
-        for i in 0..4 {
-            self.attr0_r[i].clock.next = self.clock.val();
-            self.attr0_r[i].d.next = self.c_attr0[i].val();
-            self.attr0[i].next = self.attr0_r[i].q.val();
+            self.ed16[e].next = self.edy_d[e].val() << self.frac.val();
+            self.off_x[e].next = (self.tracked[e].val() << self.frac.val()) + self.half.val() - self.xn0.val();
         }
     }
 }
