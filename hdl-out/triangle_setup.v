@@ -1,6 +1,6 @@
 
 
-module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,recip_mant,recip_exp);
+module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,recip_mant,recip_exp,idle);
     
     // Module arguments
     input wire  clock;
@@ -95,6 +95,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     output reg  [35:0] out$ddx_c2;
     output reg  [24:0] recip_mant;
     output reg  [5:0] recip_exp;
+    output reg  idle;
     
     // Constant declarations
     localparam  q_msb = 8'h12;
@@ -1012,6 +1013,9 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  busy_r$d;
     wire  busy_r$q;
     reg  busy_r$clock;
+    reg  gate_r$d;
+    wire  gate_r$q;
+    reg  gate_r$clock;
     reg  [7:0] phase$d;
     wire  [7:0] phase$q;
     reg  phase$clock;
@@ -2992,6 +2996,11 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .q(busy_r$q),
         .clock(busy_r$clock)
     );
+    triangle_setup$gate_r gate_r(
+        .d(gate_r$d),
+        .q(gate_r$q),
+        .clock(gate_r$clock)
+    );
     triangle_setup$phase phase(
         .d(phase$d),
         .q(phase$q),
@@ -4249,6 +4258,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         handover_r$clock = clock;
         valid_r$clock = clock;
         busy_r$clock = clock;
+        gate_r$clock = clock;
         phase$clock = clock;
         off_grid_r$clock = clock;
         area$d = area$q;
@@ -4264,6 +4274,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         handover_r$d = handover_r$q;
         valid_r$d = valid_r$q;
         busy_r$d = busy_r$q;
+        gate_r$d = gate_r$q;
         phase$d = phase$q;
         off_grid_r$d = off_grid_r$q;
         o_walk$clock = clock;
@@ -4618,7 +4629,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         maj_left$5 = sign$5$q;
         run = ~(valid_r$q & ~out$ready);
         out$valid = valid_r$q;
-        inp$ready = run & ~(busy_r$q & off_grid_r$q);
+        inp$ready = run & ~gate_r$q;
         take = inp$valid & inp$ready;
         if (run) begin
             phase$d = phase$q + 32'h1;
@@ -7535,6 +7546,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             busy_r$d = 1'b1;
         end
         off_grid_r$d = phase$d != 32'h0;
+        gate_r$d = busy_r$d & off_grid_r$d;
+        idle = ~busy_r$q;
         geometry$vx$0 = inp$v0_x;
         geometry$vy$0 = inp$v0_y;
         geometry$vz$0 = inp$v0_z;
@@ -22787,6 +22800,25 @@ module triangle_setup$g5(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1
     end
     
 endmodule // triangle_setup$g5
+
+
+module triangle_setup$gate_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$gate_r
 
 
 module triangle_setup$geo$0(d,q,clock);

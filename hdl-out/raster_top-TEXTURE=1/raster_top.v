@@ -1037,6 +1037,7 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
     wire  [35:0] triangle_setup$out$ddx_c2;
     wire  [24:0] triangle_setup$recip_mant;
     wire  [5:0] triangle_setup$recip_exp;
+    wire  triangle_setup$idle;
     reg  edge_walk$clock;
     reg  [10:0] edge_walk$height;
     reg  edge_walk$inp$valid;
@@ -1179,15 +1180,9 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
     reg  [35:0] span$inp$ddx_c1;
     reg  [35:0] span$inp$ddx_c2;
     wire  span$idle;
-    reg  [2:0] in_setup$d;
-    wire  [2:0] in_setup$q;
-    reg  in_setup$clock;
     reg  last_in$d;
     wire  last_in$q;
     reg  last_in$clock;
-    
-    // Local signals
-    reg  taken;
     
     // Sub module instances
     raster_top$core$triangle_setup triangle_setup(
@@ -1282,7 +1277,8 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
         .out$ddx_c1(triangle_setup$out$ddx_c1),
         .out$ddx_c2(triangle_setup$out$ddx_c2),
         .recip_mant(triangle_setup$recip_mant),
-        .recip_exp(triangle_setup$recip_exp)
+        .recip_exp(triangle_setup$recip_exp),
+        .idle(triangle_setup$idle)
     );
     raster_top$core$edge_walk edge_walk(
         .clock(edge_walk$clock),
@@ -1440,11 +1436,6 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
         .out$rgb2(out$rgb2),
         .idle(span$idle)
     );
-    raster_top$core$in_setup in_setup(
-        .d(in_setup$d),
-        .q(in_setup$q),
-        .clock(in_setup$clock)
-    );
     raster_top$core$last_in last_in(
         .d(last_in$d),
         .q(last_in$q),
@@ -1453,9 +1444,7 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
     
     // Update code
     always @(*) begin
-        in_setup$clock = clock;
         last_in$clock = clock;
-        in_setup$d = in_setup$q;
         last_in$d = last_in$q;
         triangle_setup$clock = clock;
         edge_walk$clock = clock;
@@ -1469,16 +1458,9 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
         recip_mant = triangle_setup$recip_mant;
         recip_exp = triangle_setup$recip_exp;
         span$width = width;
-        taken = inp$valid & inp$ready;
         handed = triangle_setup$out$valid & edge_walk$inp$ready;
-        if (taken & ~handed) begin
-            in_setup$d = in_setup$q + 32'h1;
-        end
-        if (~taken & handed) begin
-            in_setup$d = in_setup$q - 32'h1;
-        end
         walk_idle = edge_walk$idle & fifo$empty & span$idle;
-        idle = (in_setup$q == 32'h0) & walk_idle;
+        idle = triangle_setup$idle & walk_idle;
         done = last_in$q & idle;
     end
     
@@ -8234,25 +8216,6 @@ module raster_top$core$fifo$y$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$y$e$3
 
 
-module raster_top$core$in_setup(d,q,clock);
-    
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // raster_top$core$in_setup
-
-
 module raster_top$core$last_in(d,q,clock);
     
     // Module arguments
@@ -9603,7 +9566,7 @@ module raster_top$core$span$zr$x_neg(x,neg);
 endmodule // raster_top$core$span$zr$x_neg
 
 
-module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,recip_mant,recip_exp);
+module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,recip_mant,recip_exp,idle);
     
     // Module arguments
     input wire  clock;
@@ -9698,6 +9661,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     output reg  [35:0] out$ddx_c2;
     output reg  [24:0] recip_mant;
     output reg  [5:0] recip_exp;
+    output reg  idle;
     
     // Constant declarations
     localparam  q_msb = 8'h12;
@@ -10615,6 +10579,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  busy_r$d;
     wire  busy_r$q;
     reg  busy_r$clock;
+    reg  gate_r$d;
+    wire  gate_r$q;
+    reg  gate_r$clock;
     reg  [7:0] phase$d;
     wire  [7:0] phase$q;
     reg  phase$clock;
@@ -12595,6 +12562,11 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .q(busy_r$q),
         .clock(busy_r$clock)
     );
+    raster_top$core$triangle_setup$gate_r gate_r(
+        .d(gate_r$d),
+        .q(gate_r$q),
+        .clock(gate_r$clock)
+    );
     raster_top$core$triangle_setup$phase phase(
         .d(phase$d),
         .q(phase$q),
@@ -13852,6 +13824,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         handover_r$clock = clock;
         valid_r$clock = clock;
         busy_r$clock = clock;
+        gate_r$clock = clock;
         phase$clock = clock;
         off_grid_r$clock = clock;
         area$d = area$q;
@@ -13867,6 +13840,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         handover_r$d = handover_r$q;
         valid_r$d = valid_r$q;
         busy_r$d = busy_r$q;
+        gate_r$d = gate_r$q;
         phase$d = phase$q;
         off_grid_r$d = off_grid_r$q;
         o_walk$clock = clock;
@@ -14221,7 +14195,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         maj_left$5 = sign$5$q;
         run = ~(valid_r$q & ~out$ready);
         out$valid = valid_r$q;
-        inp$ready = run & ~(busy_r$q & off_grid_r$q);
+        inp$ready = run & ~gate_r$q;
         take = inp$valid & inp$ready;
         if (run) begin
             phase$d = phase$q + 32'h1;
@@ -17138,6 +17112,8 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             busy_r$d = 1'b1;
         end
         off_grid_r$d = phase$d != 32'h0;
+        gate_r$d = busy_r$d & off_grid_r$d;
+        idle = ~busy_r$q;
         geometry$vx$0 = inp$v0_x;
         geometry$vy$0 = inp$v0_y;
         geometry$vz$0 = inp$v0_z;
@@ -32390,6 +32366,25 @@ module raster_top$core$triangle_setup$g5(word,maj_left,start_x$0,start_x$1,start
     end
     
 endmodule // raster_top$core$triangle_setup$g5
+
+
+module raster_top$core$triangle_setup$gate_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$gate_r
 
 
 module raster_top$core$triangle_setup$geo$0(d,q,clock);

@@ -104,10 +104,6 @@ pub struct RasterTopCore {
     edge_walk: EdgeWalk,
     fifo: SpanFifo,
     span: Span,
-    /// Triangles in setup (taken, not yet handed to the edge walk): up to one per copy of
-    /// its registers (`triangle_setup::COPIES_MAX`, 6).
-    in_setup: DFF<Bits<3>>,
-    taken: Signal<Local, Bit>,
     /// The last triangle taken had `inp_last`.
     last_in: DFF<Bit>,
 }
@@ -136,7 +132,7 @@ impl Default for RasterTopCore {
 impl Logic for RasterTopCore {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, in_setup, last_in);
+        dff_setup!(self, clock, last_in);
         clock!(self, clock, triangle_setup, edge_walk, fifo, span);
         // Sorted triangles in.
         SortedSink::link(&mut self.inp, &mut self.triangle_setup.inp);
@@ -159,16 +155,9 @@ impl Logic for RasterTopCore {
         // Fragments out.
         PixelSource::link(&mut self.out, &mut self.span.out);
 
-        self.taken.next = self.inp.valid.val() & self.inp.ready.val();
         self.handed.next = self.triangle_setup.out.valid.val() & self.edge_walk.inp.ready.val();
-        if self.taken.val() & !self.handed.val() {
-            self.in_setup.d.next = self.in_setup.q.val() + 1;
-        }
-        if !self.taken.val() & self.handed.val() {
-            self.in_setup.d.next = self.in_setup.q.val() - 1;
-        }
         self.walk_idle.next = self.edge_walk.idle.val() & self.fifo.empty.val() & self.span.idle.val();
-        self.idle.next = (self.in_setup.q.val() == 0) & self.walk_idle.val();
+        self.idle.next = self.triangle_setup.idle.val() & self.walk_idle.val();
         self.done.next = self.last_in.q.val() & self.idle.val();
     }
 }
@@ -472,10 +461,6 @@ pub struct RasterTopSe<const E: usize, const EL: usize, const ZW: usize, const C
     g_en: Vec<Signal<Local, Bits<EL>>>,
     rd_addr: Concat<SCREEN, 4, { SCREEN + 4 }>,
     wr_addr: Concat<SCREEN, 4, { SCREEN + 4 }>,
-    /// Triangles in setup, as [`RasterTopCore`]'s.
-    in_setup: DFF<Bits<3>>,
-    taken: Signal<Local, Bit>,
-    handed: Signal<Local, Bit>,
     last_in: DFF<Bit>,
 }
 
@@ -503,7 +488,7 @@ impl<const E: usize, const EL: usize, const ZW: usize, const CW: usize> RasterTo
 impl<const E: usize, const EL: usize, const ZW: usize, const CW: usize> Logic for RasterTopSe<E, EL, ZW, CW> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, in_setup, last_in);
+        dff_setup!(self, clock, last_in);
         clock!(self, clock, cull_sort, triangle_setup, edge_walk, fifo, se_cmd);
         for i in 0..E {
             self.banks[i].clock.next = self.clock.val();
@@ -560,20 +545,12 @@ impl<const E: usize, const EL: usize, const ZW: usize, const CW: usize> Logic fo
         self.mem.rd_addr.next = self.rd_addr.out.val();
         self.mem.wr_addr.next = self.wr_addr.out.val();
 
-        self.taken.next = self.triangle_setup.inp.valid.val() & self.triangle_setup.inp.ready.val();
-        self.handed.next = self.triangle_setup.out.valid.val() & self.edge_walk.inp.ready.val();
-        if self.taken.val() & !self.handed.val() {
-            self.in_setup.d.next = self.in_setup.q.val() + 1;
-        }
-        if !self.taken.val() & self.handed.val() {
-            self.in_setup.d.next = self.in_setup.q.val() - 1;
-        }
         if self.inp.valid.val() & self.inp.ready.val() {
             self.last_in.d.next = self.inp_last.val();
         }
         self.done.next = self.last_in.q.val()
             & self.cull_sort.idle.val()
-            & (self.in_setup.q.val() == 0)
+            & self.triangle_setup.idle.val()
             & self.edge_walk.inp.ready.val()
             & self.fifo.empty.val()
             & self.se_cmd.idle.val()

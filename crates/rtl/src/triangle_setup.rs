@@ -145,6 +145,8 @@ pub struct TriangleSetup {
     /// planes with it, so that one divider serves both.
     pub recip_mant: Signal<Out, Bits<MANT>>,
     pub recip_exp: Signal<Out, Bits<6>>,
+    /// No triangle in setup (none taken and not yet handed over), from a register.
+    pub idle: Signal<Out, Bit>,
 
     // Sub-blocks.
     mul: Vec<SplitMul<MUL_A, MUL_B, MUL_P>>,
@@ -177,6 +179,9 @@ pub struct TriangleSetup {
     handover_r: DFF<Bit>,
     valid_r: DFF<Bit>,
     busy_r: DFF<Bit>,
+    /// Setup holds a triangle and is off the II grid next cycle (`busy_r` and `off_grid_r`
+    /// a cycle ahead), so that `inp.ready` is `run` and one register.
+    gate_r: DFF<Bit>,
     /// Cycles of running since the last triangle was taken, modulo II, and whether that is
     /// not 0 next cycle: setup takes a triangle on the II grid of the last one (the
     /// schedule's lanes are reserved modulo II), or when it is empty.
@@ -455,7 +460,7 @@ impl Logic for TriangleSetup {
         // ---- Clocks; every register holds unless written.
         dff_setup!(
             self, clock, area, norm, nsh, div_v, div_n, div_d, mant_s, rsh, left, norm_r, handover_r, valid_r, busy_r,
-            phase, off_grid_r
+            gate_r, phase, off_grid_r
         );
         dff_setup!(self, clock, o_walk, o_maj_left);
         for e in 0..3 {
@@ -526,7 +531,7 @@ impl Logic for TriangleSetup {
         // or when setup is empty.
         self.run.next = !(self.valid_r.q.val() & !self.out.ready.val());
         self.out.valid.next = self.valid_r.q.val();
-        self.inp.ready.next = self.run.val() & !(self.busy_r.q.val() & self.off_grid_r.q.val());
+        self.inp.ready.next = self.run.val() & !self.gate_r.q.val();
         self.take.next = self.inp.valid.val() & self.inp.ready.val();
         if self.run.val() {
             self.phase.d.next = self.phase.q.val() + 1;
@@ -612,6 +617,8 @@ impl Logic for TriangleSetup {
             }
         }
         self.off_grid_r.d.next = self.phase.d.val() != 0;
+        self.gate_r.d.next = self.busy_r.d.val() & self.off_grid_r.d.val();
+        self.idle.next = !self.busy_r.q.val();
 
         // ---- Geometry: computed from the triangle offered (into copy 0's register when
         // taken), and each copy's by name.
@@ -1347,7 +1354,7 @@ impl Logic for TriangleSetup {
     }
 }
 
-crate::pins!(TriangleSetup { clock: clock, inputs: [], outputs: [recip_mant, recip_exp,], links: [inp, out] });
+crate::pins!(TriangleSetup { clock: clock, inputs: [], outputs: [recip_mant, recip_exp, idle], links: [inp, out] });
 
 /// `UNITS` entry: setup with `params["K"]` multipliers and a `params["L"]`-stage divider.
 pub fn emit_triangle_setup(params: &Params) -> Result<Emitted, String> {
