@@ -5342,6 +5342,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
     reg  [2:0] level$count;
     wire  level$full;
     wire  level$empty;
+    wire  level$one;
     reg  [1:0] wr$d;
     wire  [1:0] wr$q;
     reg  wr$clock;
@@ -5352,90 +5353,120 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
     reg  y$we;
     reg  [1:0] y$wr;
     reg  [1:0] y$rd;
+    reg  y$take_din;
+    reg  y$take_next;
     reg  [9:0] y$din;
     wire  [9:0] y$head;
     reg  xl$clock;
     reg  xl$we;
     reg  [1:0] xl$wr;
     reg  [1:0] xl$rd;
+    reg  xl$take_din;
+    reg  xl$take_next;
     reg  [12:0] xl$din;
     wire  [12:0] xl$head;
     reg  xr$clock;
     reg  xr$we;
     reg  [1:0] xr$wr;
     reg  [1:0] xr$rd;
+    reg  xr$take_din;
+    reg  xr$take_next;
     reg  [12:0] xr$din;
     wire  [12:0] xr$head;
     reg  left_z$clock;
     reg  left_z$we;
     reg  [1:0] left_z$wr;
     reg  [1:0] left_z$rd;
+    reg  left_z$take_din;
+    reg  left_z$take_next;
     reg  [35:0] left_z$din;
     wire  [35:0] left_z$head;
     reg  left_c0$clock;
     reg  left_c0$we;
     reg  [1:0] left_c0$wr;
     reg  [1:0] left_c0$rd;
+    reg  left_c0$take_din;
+    reg  left_c0$take_next;
     reg  [31:0] left_c0$din;
     wire  [31:0] left_c0$head;
     reg  left_c1$clock;
     reg  left_c1$we;
     reg  [1:0] left_c1$wr;
     reg  [1:0] left_c1$rd;
+    reg  left_c1$take_din;
+    reg  left_c1$take_next;
     reg  [31:0] left_c1$din;
     wire  [31:0] left_c1$head;
     reg  left_c2$clock;
     reg  left_c2$we;
     reg  [1:0] left_c2$wr;
     reg  [1:0] left_c2$rd;
+    reg  left_c2$take_din;
+    reg  left_c2$take_next;
     reg  [31:0] left_c2$din;
     wire  [31:0] left_c2$head;
     reg  right_z$clock;
     reg  right_z$we;
     reg  [1:0] right_z$wr;
     reg  [1:0] right_z$rd;
+    reg  right_z$take_din;
+    reg  right_z$take_next;
     reg  [35:0] right_z$din;
     wire  [35:0] right_z$head;
     reg  right_c0$clock;
     reg  right_c0$we;
     reg  [1:0] right_c0$wr;
     reg  [1:0] right_c0$rd;
+    reg  right_c0$take_din;
+    reg  right_c0$take_next;
     reg  [31:0] right_c0$din;
     wire  [31:0] right_c0$head;
     reg  right_c1$clock;
     reg  right_c1$we;
     reg  [1:0] right_c1$wr;
     reg  [1:0] right_c1$rd;
+    reg  right_c1$take_din;
+    reg  right_c1$take_next;
     reg  [31:0] right_c1$din;
     wire  [31:0] right_c1$head;
     reg  right_c2$clock;
     reg  right_c2$we;
     reg  [1:0] right_c2$wr;
     reg  [1:0] right_c2$rd;
+    reg  right_c2$take_din;
+    reg  right_c2$take_next;
     reg  [31:0] right_c2$din;
     wire  [31:0] right_c2$head;
     reg  ddx_z$clock;
     reg  ddx_z$we;
     reg  [1:0] ddx_z$wr;
     reg  [1:0] ddx_z$rd;
+    reg  ddx_z$take_din;
+    reg  ddx_z$take_next;
     reg  [39:0] ddx_z$din;
     wire  [39:0] ddx_z$head;
     reg  ddx_c0$clock;
     reg  ddx_c0$we;
     reg  [1:0] ddx_c0$wr;
     reg  [1:0] ddx_c0$rd;
+    reg  ddx_c0$take_din;
+    reg  ddx_c0$take_next;
     reg  [35:0] ddx_c0$din;
     wire  [35:0] ddx_c0$head;
     reg  ddx_c1$clock;
     reg  ddx_c1$we;
     reg  [1:0] ddx_c1$wr;
     reg  [1:0] ddx_c1$rd;
+    reg  ddx_c1$take_din;
+    reg  ddx_c1$take_next;
     reg  [35:0] ddx_c1$din;
     wire  [35:0] ddx_c1$head;
     reg  ddx_c2$clock;
     reg  ddx_c2$we;
     reg  [1:0] ddx_c2$wr;
     reg  [1:0] ddx_c2$rd;
+    reg  ddx_c2$take_din;
+    reg  ddx_c2$take_next;
     reg  [35:0] ddx_c2$din;
     wire  [35:0] ddx_c2$head;
     
@@ -5443,6 +5474,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
     reg  we;
     reg  push;
     reg  pop;
+    reg  take_din;
+    reg  take_next;
     
     // Sub module instances
     gpu_top$core$fifo$count count(
@@ -5453,7 +5486,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
     gpu_top$core$fifo$level level(
         .count(level$count),
         .full(level$full),
-        .empty(level$empty)
+        .empty(level$empty),
+        .one(level$one)
     );
     gpu_top$core$fifo$wr wr(
         .d(wr$d),
@@ -5470,6 +5504,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(y$we),
         .wr(y$wr),
         .rd(y$rd),
+        .take_din(y$take_din),
+        .take_next(y$take_next),
         .din(y$din),
         .head(y$head)
     );
@@ -5478,6 +5514,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(xl$we),
         .wr(xl$wr),
         .rd(xl$rd),
+        .take_din(xl$take_din),
+        .take_next(xl$take_next),
         .din(xl$din),
         .head(xl$head)
     );
@@ -5486,6 +5524,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(xr$we),
         .wr(xr$wr),
         .rd(xr$rd),
+        .take_din(xr$take_din),
+        .take_next(xr$take_next),
         .din(xr$din),
         .head(xr$head)
     );
@@ -5494,6 +5534,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(left_z$we),
         .wr(left_z$wr),
         .rd(left_z$rd),
+        .take_din(left_z$take_din),
+        .take_next(left_z$take_next),
         .din(left_z$din),
         .head(left_z$head)
     );
@@ -5502,6 +5544,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(left_c0$we),
         .wr(left_c0$wr),
         .rd(left_c0$rd),
+        .take_din(left_c0$take_din),
+        .take_next(left_c0$take_next),
         .din(left_c0$din),
         .head(left_c0$head)
     );
@@ -5510,6 +5554,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(left_c1$we),
         .wr(left_c1$wr),
         .rd(left_c1$rd),
+        .take_din(left_c1$take_din),
+        .take_next(left_c1$take_next),
         .din(left_c1$din),
         .head(left_c1$head)
     );
@@ -5518,6 +5564,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(left_c2$we),
         .wr(left_c2$wr),
         .rd(left_c2$rd),
+        .take_din(left_c2$take_din),
+        .take_next(left_c2$take_next),
         .din(left_c2$din),
         .head(left_c2$head)
     );
@@ -5526,6 +5574,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(right_z$we),
         .wr(right_z$wr),
         .rd(right_z$rd),
+        .take_din(right_z$take_din),
+        .take_next(right_z$take_next),
         .din(right_z$din),
         .head(right_z$head)
     );
@@ -5534,6 +5584,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(right_c0$we),
         .wr(right_c0$wr),
         .rd(right_c0$rd),
+        .take_din(right_c0$take_din),
+        .take_next(right_c0$take_next),
         .din(right_c0$din),
         .head(right_c0$head)
     );
@@ -5542,6 +5594,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(right_c1$we),
         .wr(right_c1$wr),
         .rd(right_c1$rd),
+        .take_din(right_c1$take_din),
+        .take_next(right_c1$take_next),
         .din(right_c1$din),
         .head(right_c1$head)
     );
@@ -5550,6 +5604,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(right_c2$we),
         .wr(right_c2$wr),
         .rd(right_c2$rd),
+        .take_din(right_c2$take_din),
+        .take_next(right_c2$take_next),
         .din(right_c2$din),
         .head(right_c2$head)
     );
@@ -5558,6 +5614,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(ddx_z$we),
         .wr(ddx_z$wr),
         .rd(ddx_z$rd),
+        .take_din(ddx_z$take_din),
+        .take_next(ddx_z$take_next),
         .din(ddx_z$din),
         .head(ddx_z$head)
     );
@@ -5566,6 +5624,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(ddx_c0$we),
         .wr(ddx_c0$wr),
         .rd(ddx_c0$rd),
+        .take_din(ddx_c0$take_din),
+        .take_next(ddx_c0$take_next),
         .din(ddx_c0$din),
         .head(ddx_c0$head)
     );
@@ -5574,6 +5634,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(ddx_c1$we),
         .wr(ddx_c1$wr),
         .rd(ddx_c1$rd),
+        .take_din(ddx_c1$take_din),
+        .take_next(ddx_c1$take_next),
         .din(ddx_c1$din),
         .head(ddx_c1$head)
     );
@@ -5582,6 +5644,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .we(ddx_c2$we),
         .wr(ddx_c2$wr),
         .rd(ddx_c2$rd),
+        .take_din(ddx_c2$take_din),
+        .take_next(ddx_c2$take_next),
         .din(ddx_c2$din),
         .head(ddx_c2$head)
     );
@@ -5601,6 +5665,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         we = inp$valid & ~level$full;
         push = we & ~(level$empty & out$ready);
         pop = ~level$empty & out$ready;
+        take_din = level$empty | (level$one & out$ready);
+        take_next = pop & ~level$one;
         if (push) begin
             wr$d = wr$q + 32'h1;
         end
@@ -5617,6 +5683,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         y$we = we;
         y$wr = wr$q;
         y$rd = rd$q;
+        y$take_din = take_din;
+        y$take_next = take_next;
         y$din = inp$y;
         out$y = y$head;
         if (level$empty) begin
@@ -5626,6 +5694,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         xl$we = we;
         xl$wr = wr$q;
         xl$rd = rd$q;
+        xl$take_din = take_din;
+        xl$take_next = take_next;
         xl$din = inp$xl;
         out$xl = xl$head;
         if (level$empty) begin
@@ -5635,6 +5705,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         xr$we = we;
         xr$wr = wr$q;
         xr$rd = rd$q;
+        xr$take_din = take_din;
+        xr$take_next = take_next;
         xr$din = inp$xr;
         out$xr = xr$head;
         if (level$empty) begin
@@ -5644,6 +5716,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         left_z$we = we;
         left_z$wr = wr$q;
         left_z$rd = rd$q;
+        left_z$take_din = take_din;
+        left_z$take_next = take_next;
         left_z$din = inp$left_z;
         out$left_z = left_z$head;
         if (level$empty) begin
@@ -5653,6 +5727,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         left_c0$we = we;
         left_c0$wr = wr$q;
         left_c0$rd = rd$q;
+        left_c0$take_din = take_din;
+        left_c0$take_next = take_next;
         left_c0$din = inp$left_c0;
         out$left_c0 = left_c0$head;
         if (level$empty) begin
@@ -5662,6 +5738,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         left_c1$we = we;
         left_c1$wr = wr$q;
         left_c1$rd = rd$q;
+        left_c1$take_din = take_din;
+        left_c1$take_next = take_next;
         left_c1$din = inp$left_c1;
         out$left_c1 = left_c1$head;
         if (level$empty) begin
@@ -5671,6 +5749,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         left_c2$we = we;
         left_c2$wr = wr$q;
         left_c2$rd = rd$q;
+        left_c2$take_din = take_din;
+        left_c2$take_next = take_next;
         left_c2$din = inp$left_c2;
         out$left_c2 = left_c2$head;
         if (level$empty) begin
@@ -5680,6 +5760,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         right_z$we = we;
         right_z$wr = wr$q;
         right_z$rd = rd$q;
+        right_z$take_din = take_din;
+        right_z$take_next = take_next;
         right_z$din = inp$right_z;
         out$right_z = right_z$head;
         if (level$empty) begin
@@ -5689,6 +5771,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         right_c0$we = we;
         right_c0$wr = wr$q;
         right_c0$rd = rd$q;
+        right_c0$take_din = take_din;
+        right_c0$take_next = take_next;
         right_c0$din = inp$right_c0;
         out$right_c0 = right_c0$head;
         if (level$empty) begin
@@ -5698,6 +5782,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         right_c1$we = we;
         right_c1$wr = wr$q;
         right_c1$rd = rd$q;
+        right_c1$take_din = take_din;
+        right_c1$take_next = take_next;
         right_c1$din = inp$right_c1;
         out$right_c1 = right_c1$head;
         if (level$empty) begin
@@ -5707,6 +5793,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         right_c2$we = we;
         right_c2$wr = wr$q;
         right_c2$rd = rd$q;
+        right_c2$take_din = take_din;
+        right_c2$take_next = take_next;
         right_c2$din = inp$right_c2;
         out$right_c2 = right_c2$head;
         if (level$empty) begin
@@ -5716,6 +5804,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         ddx_z$we = we;
         ddx_z$wr = wr$q;
         ddx_z$rd = rd$q;
+        ddx_z$take_din = take_din;
+        ddx_z$take_next = take_next;
         ddx_z$din = inp$ddx_z;
         out$ddx_z = ddx_z$head;
         if (level$empty) begin
@@ -5725,6 +5815,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         ddx_c0$we = we;
         ddx_c0$wr = wr$q;
         ddx_c0$rd = rd$q;
+        ddx_c0$take_din = take_din;
+        ddx_c0$take_next = take_next;
         ddx_c0$din = inp$ddx_c0;
         out$ddx_c0 = ddx_c0$head;
         if (level$empty) begin
@@ -5734,6 +5826,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         ddx_c1$we = we;
         ddx_c1$wr = wr$q;
         ddx_c1$rd = rd$q;
+        ddx_c1$take_din = take_din;
+        ddx_c1$take_next = take_next;
         ddx_c1$din = inp$ddx_c1;
         out$ddx_c1 = ddx_c1$head;
         if (level$empty) begin
@@ -5743,6 +5837,8 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         ddx_c2$we = we;
         ddx_c2$wr = wr$q;
         ddx_c2$rd = rd$q;
+        ddx_c2$take_din = take_din;
+        ddx_c2$take_next = take_next;
         ddx_c2$din = inp$ddx_c2;
         out$ddx_c2 = ddx_c2$head;
         if (level$empty) begin
@@ -5772,13 +5868,15 @@ module gpu_top$core$fifo$count(d,q,clock);
 endmodule // gpu_top$core$fifo$count
 
 
-module gpu_top$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$ddx_c0(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -5795,6 +5893,12 @@ module gpu_top$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$ddx_c0$e$0 e$0(
@@ -5816,6 +5920,11 @@ module gpu_top$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$ddx_c0$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -5840,16 +5949,25 @@ module gpu_top$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$ddx_c0
@@ -5931,13 +6049,34 @@ module gpu_top$core$fifo$ddx_c0$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$ddx_c0$e$3
 
 
-module gpu_top$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$ddx_c0$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$ddx_c0$h
+
+
+module gpu_top$core$fifo$ddx_c1(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -5954,6 +6093,12 @@ module gpu_top$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$ddx_c1$e$0 e$0(
@@ -5975,6 +6120,11 @@ module gpu_top$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$ddx_c1$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -5999,16 +6149,25 @@ module gpu_top$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$ddx_c1
@@ -6090,13 +6249,34 @@ module gpu_top$core$fifo$ddx_c1$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$ddx_c1$e$3
 
 
-module gpu_top$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$ddx_c1$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$ddx_c1$h
+
+
+module gpu_top$core$fifo$ddx_c2(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -6113,6 +6293,12 @@ module gpu_top$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$ddx_c2$e$0 e$0(
@@ -6134,6 +6320,11 @@ module gpu_top$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$ddx_c2$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6158,16 +6349,25 @@ module gpu_top$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$ddx_c2
@@ -6249,13 +6449,34 @@ module gpu_top$core$fifo$ddx_c2$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$ddx_c2$e$3
 
 
-module gpu_top$core$fifo$ddx_z(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$ddx_c2$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$ddx_c2$h
+
+
+module gpu_top$core$fifo$ddx_z(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [39:0] din;
     output reg  [39:0] head;
     
@@ -6272,6 +6493,12 @@ module gpu_top$core$fifo$ddx_z(clock,we,wr,rd,din,head);
     reg  [39:0] e$3$d;
     wire  [39:0] e$3$q;
     reg  e$3$clock;
+    reg  [39:0] h$d;
+    wire  [39:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$ddx_z$e$0 e$0(
@@ -6293,6 +6520,11 @@ module gpu_top$core$fifo$ddx_z(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$ddx_z$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6317,16 +6549,25 @@ module gpu_top$core$fifo$ddx_z(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$ddx_z
@@ -6408,13 +6649,34 @@ module gpu_top$core$fifo$ddx_z$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$ddx_z$e$3
 
 
-module gpu_top$core$fifo$left_c0(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$ddx_z$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$ddx_z$h
+
+
+module gpu_top$core$fifo$left_c0(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6431,6 +6693,12 @@ module gpu_top$core$fifo$left_c0(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$left_c0$e$0 e$0(
@@ -6452,6 +6720,11 @@ module gpu_top$core$fifo$left_c0(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$left_c0$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6476,16 +6749,25 @@ module gpu_top$core$fifo$left_c0(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$left_c0
@@ -6567,13 +6849,34 @@ module gpu_top$core$fifo$left_c0$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$left_c0$e$3
 
 
-module gpu_top$core$fifo$left_c1(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$left_c0$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$left_c0$h
+
+
+module gpu_top$core$fifo$left_c1(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6590,6 +6893,12 @@ module gpu_top$core$fifo$left_c1(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$left_c1$e$0 e$0(
@@ -6611,6 +6920,11 @@ module gpu_top$core$fifo$left_c1(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$left_c1$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6635,16 +6949,25 @@ module gpu_top$core$fifo$left_c1(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$left_c1
@@ -6726,13 +7049,34 @@ module gpu_top$core$fifo$left_c1$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$left_c1$e$3
 
 
-module gpu_top$core$fifo$left_c2(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$left_c1$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$left_c1$h
+
+
+module gpu_top$core$fifo$left_c2(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6749,6 +7093,12 @@ module gpu_top$core$fifo$left_c2(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$left_c2$e$0 e$0(
@@ -6770,6 +7120,11 @@ module gpu_top$core$fifo$left_c2(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$left_c2$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6794,16 +7149,25 @@ module gpu_top$core$fifo$left_c2(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$left_c2
@@ -6885,13 +7249,34 @@ module gpu_top$core$fifo$left_c2$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$left_c2$e$3
 
 
-module gpu_top$core$fifo$left_z(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$left_c2$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$left_c2$h
+
+
+module gpu_top$core$fifo$left_z(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -6908,6 +7293,12 @@ module gpu_top$core$fifo$left_z(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$left_z$e$0 e$0(
@@ -6929,6 +7320,11 @@ module gpu_top$core$fifo$left_z(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$left_z$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6953,16 +7349,25 @@ module gpu_top$core$fifo$left_z(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$left_z
@@ -7044,12 +7449,32 @@ module gpu_top$core$fifo$left_z$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$left_z$e$3
 
 
-module gpu_top$core$fifo$level(count,full,empty);
+module gpu_top$core$fifo$left_z$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$left_z$h
+
+
+module gpu_top$core$fifo$level(count,full,empty,one);
     
     // Module arguments
     input wire  [2:0] count;
     output reg  full;
     output reg  empty;
+    output reg  one;
     
     // Constant declarations
     localparam  depth = 3'b100;
@@ -7058,6 +7483,7 @@ module gpu_top$core$fifo$level(count,full,empty);
     always @(*) begin
         full = count == depth;
         empty = count == 32'h0;
+        one = count == 32'h1;
     end
     
 endmodule // gpu_top$core$fifo$level
@@ -7082,13 +7508,15 @@ module gpu_top$core$fifo$rd(d,q,clock);
 endmodule // gpu_top$core$fifo$rd
 
 
-module gpu_top$core$fifo$right_c0(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$right_c0(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -7105,6 +7533,12 @@ module gpu_top$core$fifo$right_c0(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$right_c0$e$0 e$0(
@@ -7126,6 +7560,11 @@ module gpu_top$core$fifo$right_c0(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$right_c0$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7150,16 +7589,25 @@ module gpu_top$core$fifo$right_c0(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$right_c0
@@ -7241,13 +7689,34 @@ module gpu_top$core$fifo$right_c0$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$right_c0$e$3
 
 
-module gpu_top$core$fifo$right_c1(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$right_c0$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$right_c0$h
+
+
+module gpu_top$core$fifo$right_c1(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -7264,6 +7733,12 @@ module gpu_top$core$fifo$right_c1(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$right_c1$e$0 e$0(
@@ -7285,6 +7760,11 @@ module gpu_top$core$fifo$right_c1(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$right_c1$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7309,16 +7789,25 @@ module gpu_top$core$fifo$right_c1(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$right_c1
@@ -7400,13 +7889,34 @@ module gpu_top$core$fifo$right_c1$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$right_c1$e$3
 
 
-module gpu_top$core$fifo$right_c2(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$right_c1$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$right_c1$h
+
+
+module gpu_top$core$fifo$right_c2(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -7423,6 +7933,12 @@ module gpu_top$core$fifo$right_c2(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$right_c2$e$0 e$0(
@@ -7444,6 +7960,11 @@ module gpu_top$core$fifo$right_c2(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$right_c2$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7468,16 +7989,25 @@ module gpu_top$core$fifo$right_c2(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$right_c2
@@ -7559,13 +8089,34 @@ module gpu_top$core$fifo$right_c2$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$right_c2$e$3
 
 
-module gpu_top$core$fifo$right_z(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$right_c2$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$right_c2$h
+
+
+module gpu_top$core$fifo$right_z(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -7582,6 +8133,12 @@ module gpu_top$core$fifo$right_z(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$right_z$e$0 e$0(
@@ -7603,6 +8160,11 @@ module gpu_top$core$fifo$right_z(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$right_z$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7627,16 +8189,25 @@ module gpu_top$core$fifo$right_z(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$right_z
@@ -7718,6 +8289,25 @@ module gpu_top$core$fifo$right_z$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$right_z$e$3
 
 
+module gpu_top$core$fifo$right_z$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$right_z$h
+
+
 module gpu_top$core$fifo$wr(d,q,clock);
     
     // Module arguments
@@ -7737,13 +8327,15 @@ module gpu_top$core$fifo$wr(d,q,clock);
 endmodule // gpu_top$core$fifo$wr
 
 
-module gpu_top$core$fifo$xl(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$xl(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [12:0] din;
     output reg  [12:0] head;
     
@@ -7760,6 +8352,12 @@ module gpu_top$core$fifo$xl(clock,we,wr,rd,din,head);
     reg  [12:0] e$3$d;
     wire  [12:0] e$3$q;
     reg  e$3$clock;
+    reg  [12:0] h$d;
+    wire  [12:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$xl$e$0 e$0(
@@ -7781,6 +8379,11 @@ module gpu_top$core$fifo$xl(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$xl$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7805,16 +8408,25 @@ module gpu_top$core$fifo$xl(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$xl
@@ -7896,13 +8508,34 @@ module gpu_top$core$fifo$xl$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$xl$e$3
 
 
-module gpu_top$core$fifo$xr(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$xl$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$xl$h
+
+
+module gpu_top$core$fifo$xr(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [12:0] din;
     output reg  [12:0] head;
     
@@ -7919,6 +8552,12 @@ module gpu_top$core$fifo$xr(clock,we,wr,rd,din,head);
     reg  [12:0] e$3$d;
     wire  [12:0] e$3$q;
     reg  e$3$clock;
+    reg  [12:0] h$d;
+    wire  [12:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$xr$e$0 e$0(
@@ -7940,6 +8579,11 @@ module gpu_top$core$fifo$xr(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$xr$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7964,16 +8608,25 @@ module gpu_top$core$fifo$xr(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$xr
@@ -8055,13 +8708,34 @@ module gpu_top$core$fifo$xr$e$3(d,q,clock);
 endmodule // gpu_top$core$fifo$xr$e$3
 
 
-module gpu_top$core$fifo$y(clock,we,wr,rd,din,head);
+module gpu_top$core$fifo$xr$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$xr$h
+
+
+module gpu_top$core$fifo$y(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [9:0] din;
     output reg  [9:0] head;
     
@@ -8078,6 +8752,12 @@ module gpu_top$core$fifo$y(clock,we,wr,rd,din,head);
     reg  [9:0] e$3$d;
     wire  [9:0] e$3$q;
     reg  e$3$clock;
+    reg  [9:0] h$d;
+    wire  [9:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     gpu_top$core$fifo$y$e$0 e$0(
@@ -8099,6 +8779,11 @@ module gpu_top$core$fifo$y(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    gpu_top$core$fifo$y$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -8123,16 +8808,25 @@ module gpu_top$core$fifo$y(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // gpu_top$core$fifo$y
@@ -8212,6 +8906,25 @@ module gpu_top$core$fifo$y$e$3(d,q,clock);
     end
           
 endmodule // gpu_top$core$fifo$y$e$3
+
+
+module gpu_top$core$fifo$y$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$y$h
 
 
 module gpu_top$core$last_in(d,q,clock);

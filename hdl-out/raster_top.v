@@ -4847,6 +4847,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
     reg  [2:0] level$count;
     wire  level$full;
     wire  level$empty;
+    wire  level$one;
     reg  [1:0] wr$d;
     wire  [1:0] wr$q;
     reg  wr$clock;
@@ -4857,90 +4858,120 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
     reg  y$we;
     reg  [1:0] y$wr;
     reg  [1:0] y$rd;
+    reg  y$take_din;
+    reg  y$take_next;
     reg  [9:0] y$din;
     wire  [9:0] y$head;
     reg  xl$clock;
     reg  xl$we;
     reg  [1:0] xl$wr;
     reg  [1:0] xl$rd;
+    reg  xl$take_din;
+    reg  xl$take_next;
     reg  [12:0] xl$din;
     wire  [12:0] xl$head;
     reg  xr$clock;
     reg  xr$we;
     reg  [1:0] xr$wr;
     reg  [1:0] xr$rd;
+    reg  xr$take_din;
+    reg  xr$take_next;
     reg  [12:0] xr$din;
     wire  [12:0] xr$head;
     reg  left_z$clock;
     reg  left_z$we;
     reg  [1:0] left_z$wr;
     reg  [1:0] left_z$rd;
+    reg  left_z$take_din;
+    reg  left_z$take_next;
     reg  [35:0] left_z$din;
     wire  [35:0] left_z$head;
     reg  left_c0$clock;
     reg  left_c0$we;
     reg  [1:0] left_c0$wr;
     reg  [1:0] left_c0$rd;
+    reg  left_c0$take_din;
+    reg  left_c0$take_next;
     reg  [31:0] left_c0$din;
     wire  [31:0] left_c0$head;
     reg  left_c1$clock;
     reg  left_c1$we;
     reg  [1:0] left_c1$wr;
     reg  [1:0] left_c1$rd;
+    reg  left_c1$take_din;
+    reg  left_c1$take_next;
     reg  [31:0] left_c1$din;
     wire  [31:0] left_c1$head;
     reg  left_c2$clock;
     reg  left_c2$we;
     reg  [1:0] left_c2$wr;
     reg  [1:0] left_c2$rd;
+    reg  left_c2$take_din;
+    reg  left_c2$take_next;
     reg  [31:0] left_c2$din;
     wire  [31:0] left_c2$head;
     reg  right_z$clock;
     reg  right_z$we;
     reg  [1:0] right_z$wr;
     reg  [1:0] right_z$rd;
+    reg  right_z$take_din;
+    reg  right_z$take_next;
     reg  [35:0] right_z$din;
     wire  [35:0] right_z$head;
     reg  right_c0$clock;
     reg  right_c0$we;
     reg  [1:0] right_c0$wr;
     reg  [1:0] right_c0$rd;
+    reg  right_c0$take_din;
+    reg  right_c0$take_next;
     reg  [31:0] right_c0$din;
     wire  [31:0] right_c0$head;
     reg  right_c1$clock;
     reg  right_c1$we;
     reg  [1:0] right_c1$wr;
     reg  [1:0] right_c1$rd;
+    reg  right_c1$take_din;
+    reg  right_c1$take_next;
     reg  [31:0] right_c1$din;
     wire  [31:0] right_c1$head;
     reg  right_c2$clock;
     reg  right_c2$we;
     reg  [1:0] right_c2$wr;
     reg  [1:0] right_c2$rd;
+    reg  right_c2$take_din;
+    reg  right_c2$take_next;
     reg  [31:0] right_c2$din;
     wire  [31:0] right_c2$head;
     reg  ddx_z$clock;
     reg  ddx_z$we;
     reg  [1:0] ddx_z$wr;
     reg  [1:0] ddx_z$rd;
+    reg  ddx_z$take_din;
+    reg  ddx_z$take_next;
     reg  [39:0] ddx_z$din;
     wire  [39:0] ddx_z$head;
     reg  ddx_c0$clock;
     reg  ddx_c0$we;
     reg  [1:0] ddx_c0$wr;
     reg  [1:0] ddx_c0$rd;
+    reg  ddx_c0$take_din;
+    reg  ddx_c0$take_next;
     reg  [35:0] ddx_c0$din;
     wire  [35:0] ddx_c0$head;
     reg  ddx_c1$clock;
     reg  ddx_c1$we;
     reg  [1:0] ddx_c1$wr;
     reg  [1:0] ddx_c1$rd;
+    reg  ddx_c1$take_din;
+    reg  ddx_c1$take_next;
     reg  [35:0] ddx_c1$din;
     wire  [35:0] ddx_c1$head;
     reg  ddx_c2$clock;
     reg  ddx_c2$we;
     reg  [1:0] ddx_c2$wr;
     reg  [1:0] ddx_c2$rd;
+    reg  ddx_c2$take_din;
+    reg  ddx_c2$take_next;
     reg  [35:0] ddx_c2$din;
     wire  [35:0] ddx_c2$head;
     
@@ -4948,6 +4979,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
     reg  we;
     reg  push;
     reg  pop;
+    reg  take_din;
+    reg  take_next;
     
     // Sub module instances
     raster_top$fragments$core$fifo$count count(
@@ -4958,7 +4991,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
     raster_top$fragments$core$fifo$level level(
         .count(level$count),
         .full(level$full),
-        .empty(level$empty)
+        .empty(level$empty),
+        .one(level$one)
     );
     raster_top$fragments$core$fifo$wr wr(
         .d(wr$d),
@@ -4975,6 +5009,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(y$we),
         .wr(y$wr),
         .rd(y$rd),
+        .take_din(y$take_din),
+        .take_next(y$take_next),
         .din(y$din),
         .head(y$head)
     );
@@ -4983,6 +5019,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(xl$we),
         .wr(xl$wr),
         .rd(xl$rd),
+        .take_din(xl$take_din),
+        .take_next(xl$take_next),
         .din(xl$din),
         .head(xl$head)
     );
@@ -4991,6 +5029,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(xr$we),
         .wr(xr$wr),
         .rd(xr$rd),
+        .take_din(xr$take_din),
+        .take_next(xr$take_next),
         .din(xr$din),
         .head(xr$head)
     );
@@ -4999,6 +5039,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(left_z$we),
         .wr(left_z$wr),
         .rd(left_z$rd),
+        .take_din(left_z$take_din),
+        .take_next(left_z$take_next),
         .din(left_z$din),
         .head(left_z$head)
     );
@@ -5007,6 +5049,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(left_c0$we),
         .wr(left_c0$wr),
         .rd(left_c0$rd),
+        .take_din(left_c0$take_din),
+        .take_next(left_c0$take_next),
         .din(left_c0$din),
         .head(left_c0$head)
     );
@@ -5015,6 +5059,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(left_c1$we),
         .wr(left_c1$wr),
         .rd(left_c1$rd),
+        .take_din(left_c1$take_din),
+        .take_next(left_c1$take_next),
         .din(left_c1$din),
         .head(left_c1$head)
     );
@@ -5023,6 +5069,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(left_c2$we),
         .wr(left_c2$wr),
         .rd(left_c2$rd),
+        .take_din(left_c2$take_din),
+        .take_next(left_c2$take_next),
         .din(left_c2$din),
         .head(left_c2$head)
     );
@@ -5031,6 +5079,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(right_z$we),
         .wr(right_z$wr),
         .rd(right_z$rd),
+        .take_din(right_z$take_din),
+        .take_next(right_z$take_next),
         .din(right_z$din),
         .head(right_z$head)
     );
@@ -5039,6 +5089,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(right_c0$we),
         .wr(right_c0$wr),
         .rd(right_c0$rd),
+        .take_din(right_c0$take_din),
+        .take_next(right_c0$take_next),
         .din(right_c0$din),
         .head(right_c0$head)
     );
@@ -5047,6 +5099,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(right_c1$we),
         .wr(right_c1$wr),
         .rd(right_c1$rd),
+        .take_din(right_c1$take_din),
+        .take_next(right_c1$take_next),
         .din(right_c1$din),
         .head(right_c1$head)
     );
@@ -5055,6 +5109,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(right_c2$we),
         .wr(right_c2$wr),
         .rd(right_c2$rd),
+        .take_din(right_c2$take_din),
+        .take_next(right_c2$take_next),
         .din(right_c2$din),
         .head(right_c2$head)
     );
@@ -5063,6 +5119,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(ddx_z$we),
         .wr(ddx_z$wr),
         .rd(ddx_z$rd),
+        .take_din(ddx_z$take_din),
+        .take_next(ddx_z$take_next),
         .din(ddx_z$din),
         .head(ddx_z$head)
     );
@@ -5071,6 +5129,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(ddx_c0$we),
         .wr(ddx_c0$wr),
         .rd(ddx_c0$rd),
+        .take_din(ddx_c0$take_din),
+        .take_next(ddx_c0$take_next),
         .din(ddx_c0$din),
         .head(ddx_c0$head)
     );
@@ -5079,6 +5139,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(ddx_c1$we),
         .wr(ddx_c1$wr),
         .rd(ddx_c1$rd),
+        .take_din(ddx_c1$take_din),
+        .take_next(ddx_c1$take_next),
         .din(ddx_c1$din),
         .head(ddx_c1$head)
     );
@@ -5087,6 +5149,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .we(ddx_c2$we),
         .wr(ddx_c2$wr),
         .rd(ddx_c2$rd),
+        .take_din(ddx_c2$take_din),
+        .take_next(ddx_c2$take_next),
         .din(ddx_c2$din),
         .head(ddx_c2$head)
     );
@@ -5106,6 +5170,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         we = inp$valid & ~level$full;
         push = we & ~(level$empty & out$ready);
         pop = ~level$empty & out$ready;
+        take_din = level$empty | (level$one & out$ready);
+        take_next = pop & ~level$one;
         if (push) begin
             wr$d = wr$q + 32'h1;
         end
@@ -5122,6 +5188,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         y$we = we;
         y$wr = wr$q;
         y$rd = rd$q;
+        y$take_din = take_din;
+        y$take_next = take_next;
         y$din = inp$y;
         out$y = y$head;
         if (level$empty) begin
@@ -5131,6 +5199,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         xl$we = we;
         xl$wr = wr$q;
         xl$rd = rd$q;
+        xl$take_din = take_din;
+        xl$take_next = take_next;
         xl$din = inp$xl;
         out$xl = xl$head;
         if (level$empty) begin
@@ -5140,6 +5210,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         xr$we = we;
         xr$wr = wr$q;
         xr$rd = rd$q;
+        xr$take_din = take_din;
+        xr$take_next = take_next;
         xr$din = inp$xr;
         out$xr = xr$head;
         if (level$empty) begin
@@ -5149,6 +5221,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         left_z$we = we;
         left_z$wr = wr$q;
         left_z$rd = rd$q;
+        left_z$take_din = take_din;
+        left_z$take_next = take_next;
         left_z$din = inp$left_z;
         out$left_z = left_z$head;
         if (level$empty) begin
@@ -5158,6 +5232,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         left_c0$we = we;
         left_c0$wr = wr$q;
         left_c0$rd = rd$q;
+        left_c0$take_din = take_din;
+        left_c0$take_next = take_next;
         left_c0$din = inp$left_c0;
         out$left_c0 = left_c0$head;
         if (level$empty) begin
@@ -5167,6 +5243,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         left_c1$we = we;
         left_c1$wr = wr$q;
         left_c1$rd = rd$q;
+        left_c1$take_din = take_din;
+        left_c1$take_next = take_next;
         left_c1$din = inp$left_c1;
         out$left_c1 = left_c1$head;
         if (level$empty) begin
@@ -5176,6 +5254,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         left_c2$we = we;
         left_c2$wr = wr$q;
         left_c2$rd = rd$q;
+        left_c2$take_din = take_din;
+        left_c2$take_next = take_next;
         left_c2$din = inp$left_c2;
         out$left_c2 = left_c2$head;
         if (level$empty) begin
@@ -5185,6 +5265,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         right_z$we = we;
         right_z$wr = wr$q;
         right_z$rd = rd$q;
+        right_z$take_din = take_din;
+        right_z$take_next = take_next;
         right_z$din = inp$right_z;
         out$right_z = right_z$head;
         if (level$empty) begin
@@ -5194,6 +5276,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         right_c0$we = we;
         right_c0$wr = wr$q;
         right_c0$rd = rd$q;
+        right_c0$take_din = take_din;
+        right_c0$take_next = take_next;
         right_c0$din = inp$right_c0;
         out$right_c0 = right_c0$head;
         if (level$empty) begin
@@ -5203,6 +5287,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         right_c1$we = we;
         right_c1$wr = wr$q;
         right_c1$rd = rd$q;
+        right_c1$take_din = take_din;
+        right_c1$take_next = take_next;
         right_c1$din = inp$right_c1;
         out$right_c1 = right_c1$head;
         if (level$empty) begin
@@ -5212,6 +5298,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         right_c2$we = we;
         right_c2$wr = wr$q;
         right_c2$rd = rd$q;
+        right_c2$take_din = take_din;
+        right_c2$take_next = take_next;
         right_c2$din = inp$right_c2;
         out$right_c2 = right_c2$head;
         if (level$empty) begin
@@ -5221,6 +5309,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         ddx_z$we = we;
         ddx_z$wr = wr$q;
         ddx_z$rd = rd$q;
+        ddx_z$take_din = take_din;
+        ddx_z$take_next = take_next;
         ddx_z$din = inp$ddx_z;
         out$ddx_z = ddx_z$head;
         if (level$empty) begin
@@ -5230,6 +5320,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         ddx_c0$we = we;
         ddx_c0$wr = wr$q;
         ddx_c0$rd = rd$q;
+        ddx_c0$take_din = take_din;
+        ddx_c0$take_next = take_next;
         ddx_c0$din = inp$ddx_c0;
         out$ddx_c0 = ddx_c0$head;
         if (level$empty) begin
@@ -5239,6 +5331,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         ddx_c1$we = we;
         ddx_c1$wr = wr$q;
         ddx_c1$rd = rd$q;
+        ddx_c1$take_din = take_din;
+        ddx_c1$take_next = take_next;
         ddx_c1$din = inp$ddx_c1;
         out$ddx_c1 = ddx_c1$head;
         if (level$empty) begin
@@ -5248,6 +5342,8 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         ddx_c2$we = we;
         ddx_c2$wr = wr$q;
         ddx_c2$rd = rd$q;
+        ddx_c2$take_din = take_din;
+        ddx_c2$take_next = take_next;
         ddx_c2$din = inp$ddx_c2;
         out$ddx_c2 = ddx_c2$head;
         if (level$empty) begin
@@ -5277,13 +5373,15 @@ module raster_top$fragments$core$fifo$count(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$count
 
 
-module raster_top$fragments$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$ddx_c0(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -5300,6 +5398,12 @@ module raster_top$fragments$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$ddx_c0$e$0 e$0(
@@ -5321,6 +5425,11 @@ module raster_top$fragments$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$ddx_c0$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -5345,16 +5454,25 @@ module raster_top$fragments$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$ddx_c0
@@ -5436,13 +5554,34 @@ module raster_top$fragments$core$fifo$ddx_c0$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$ddx_c0$e$3
 
 
-module raster_top$fragments$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$ddx_c0$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$ddx_c0$h
+
+
+module raster_top$fragments$core$fifo$ddx_c1(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -5459,6 +5598,12 @@ module raster_top$fragments$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$ddx_c1$e$0 e$0(
@@ -5480,6 +5625,11 @@ module raster_top$fragments$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$ddx_c1$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -5504,16 +5654,25 @@ module raster_top$fragments$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$ddx_c1
@@ -5595,13 +5754,34 @@ module raster_top$fragments$core$fifo$ddx_c1$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$ddx_c1$e$3
 
 
-module raster_top$fragments$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$ddx_c1$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$ddx_c1$h
+
+
+module raster_top$fragments$core$fifo$ddx_c2(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -5618,6 +5798,12 @@ module raster_top$fragments$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$ddx_c2$e$0 e$0(
@@ -5639,6 +5825,11 @@ module raster_top$fragments$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$ddx_c2$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -5663,16 +5854,25 @@ module raster_top$fragments$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$ddx_c2
@@ -5754,13 +5954,34 @@ module raster_top$fragments$core$fifo$ddx_c2$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$ddx_c2$e$3
 
 
-module raster_top$fragments$core$fifo$ddx_z(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$ddx_c2$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$ddx_c2$h
+
+
+module raster_top$fragments$core$fifo$ddx_z(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [39:0] din;
     output reg  [39:0] head;
     
@@ -5777,6 +5998,12 @@ module raster_top$fragments$core$fifo$ddx_z(clock,we,wr,rd,din,head);
     reg  [39:0] e$3$d;
     wire  [39:0] e$3$q;
     reg  e$3$clock;
+    reg  [39:0] h$d;
+    wire  [39:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$ddx_z$e$0 e$0(
@@ -5798,6 +6025,11 @@ module raster_top$fragments$core$fifo$ddx_z(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$ddx_z$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -5822,16 +6054,25 @@ module raster_top$fragments$core$fifo$ddx_z(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$ddx_z
@@ -5913,13 +6154,34 @@ module raster_top$fragments$core$fifo$ddx_z$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$ddx_z$e$3
 
 
-module raster_top$fragments$core$fifo$left_c0(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$ddx_z$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$ddx_z$h
+
+
+module raster_top$fragments$core$fifo$left_c0(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -5936,6 +6198,12 @@ module raster_top$fragments$core$fifo$left_c0(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$left_c0$e$0 e$0(
@@ -5957,6 +6225,11 @@ module raster_top$fragments$core$fifo$left_c0(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$left_c0$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -5981,16 +6254,25 @@ module raster_top$fragments$core$fifo$left_c0(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$left_c0
@@ -6072,13 +6354,34 @@ module raster_top$fragments$core$fifo$left_c0$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$left_c0$e$3
 
 
-module raster_top$fragments$core$fifo$left_c1(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$left_c0$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$left_c0$h
+
+
+module raster_top$fragments$core$fifo$left_c1(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6095,6 +6398,12 @@ module raster_top$fragments$core$fifo$left_c1(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$left_c1$e$0 e$0(
@@ -6116,6 +6425,11 @@ module raster_top$fragments$core$fifo$left_c1(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$left_c1$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6140,16 +6454,25 @@ module raster_top$fragments$core$fifo$left_c1(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$left_c1
@@ -6231,13 +6554,34 @@ module raster_top$fragments$core$fifo$left_c1$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$left_c1$e$3
 
 
-module raster_top$fragments$core$fifo$left_c2(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$left_c1$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$left_c1$h
+
+
+module raster_top$fragments$core$fifo$left_c2(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6254,6 +6598,12 @@ module raster_top$fragments$core$fifo$left_c2(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$left_c2$e$0 e$0(
@@ -6275,6 +6625,11 @@ module raster_top$fragments$core$fifo$left_c2(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$left_c2$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6299,16 +6654,25 @@ module raster_top$fragments$core$fifo$left_c2(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$left_c2
@@ -6390,13 +6754,34 @@ module raster_top$fragments$core$fifo$left_c2$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$left_c2$e$3
 
 
-module raster_top$fragments$core$fifo$left_z(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$left_c2$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$left_c2$h
+
+
+module raster_top$fragments$core$fifo$left_z(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -6413,6 +6798,12 @@ module raster_top$fragments$core$fifo$left_z(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$left_z$e$0 e$0(
@@ -6434,6 +6825,11 @@ module raster_top$fragments$core$fifo$left_z(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$left_z$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6458,16 +6854,25 @@ module raster_top$fragments$core$fifo$left_z(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$left_z
@@ -6549,12 +6954,32 @@ module raster_top$fragments$core$fifo$left_z$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$left_z$e$3
 
 
-module raster_top$fragments$core$fifo$level(count,full,empty);
+module raster_top$fragments$core$fifo$left_z$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$left_z$h
+
+
+module raster_top$fragments$core$fifo$level(count,full,empty,one);
     
     // Module arguments
     input wire  [2:0] count;
     output reg  full;
     output reg  empty;
+    output reg  one;
     
     // Constant declarations
     localparam  depth = 3'b100;
@@ -6563,6 +6988,7 @@ module raster_top$fragments$core$fifo$level(count,full,empty);
     always @(*) begin
         full = count == depth;
         empty = count == 32'h0;
+        one = count == 32'h1;
     end
     
 endmodule // raster_top$fragments$core$fifo$level
@@ -6587,13 +7013,15 @@ module raster_top$fragments$core$fifo$rd(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$rd
 
 
-module raster_top$fragments$core$fifo$right_c0(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$right_c0(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6610,6 +7038,12 @@ module raster_top$fragments$core$fifo$right_c0(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$right_c0$e$0 e$0(
@@ -6631,6 +7065,11 @@ module raster_top$fragments$core$fifo$right_c0(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$right_c0$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6655,16 +7094,25 @@ module raster_top$fragments$core$fifo$right_c0(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$right_c0
@@ -6746,13 +7194,34 @@ module raster_top$fragments$core$fifo$right_c0$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$right_c0$e$3
 
 
-module raster_top$fragments$core$fifo$right_c1(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$right_c0$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$right_c0$h
+
+
+module raster_top$fragments$core$fifo$right_c1(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6769,6 +7238,12 @@ module raster_top$fragments$core$fifo$right_c1(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$right_c1$e$0 e$0(
@@ -6790,6 +7265,11 @@ module raster_top$fragments$core$fifo$right_c1(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$right_c1$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6814,16 +7294,25 @@ module raster_top$fragments$core$fifo$right_c1(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$right_c1
@@ -6905,13 +7394,34 @@ module raster_top$fragments$core$fifo$right_c1$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$right_c1$e$3
 
 
-module raster_top$fragments$core$fifo$right_c2(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$right_c1$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$right_c1$h
+
+
+module raster_top$fragments$core$fifo$right_c2(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6928,6 +7438,12 @@ module raster_top$fragments$core$fifo$right_c2(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$right_c2$e$0 e$0(
@@ -6949,6 +7465,11 @@ module raster_top$fragments$core$fifo$right_c2(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$right_c2$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6973,16 +7494,25 @@ module raster_top$fragments$core$fifo$right_c2(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$right_c2
@@ -7064,13 +7594,34 @@ module raster_top$fragments$core$fifo$right_c2$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$right_c2$e$3
 
 
-module raster_top$fragments$core$fifo$right_z(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$right_c2$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$right_c2$h
+
+
+module raster_top$fragments$core$fifo$right_z(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -7087,6 +7638,12 @@ module raster_top$fragments$core$fifo$right_z(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$right_z$e$0 e$0(
@@ -7108,6 +7665,11 @@ module raster_top$fragments$core$fifo$right_z(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$right_z$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7132,16 +7694,25 @@ module raster_top$fragments$core$fifo$right_z(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$right_z
@@ -7223,6 +7794,25 @@ module raster_top$fragments$core$fifo$right_z$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$right_z$e$3
 
 
+module raster_top$fragments$core$fifo$right_z$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$right_z$h
+
+
 module raster_top$fragments$core$fifo$wr(d,q,clock);
     
     // Module arguments
@@ -7242,13 +7832,15 @@ module raster_top$fragments$core$fifo$wr(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$wr
 
 
-module raster_top$fragments$core$fifo$xl(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$xl(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [12:0] din;
     output reg  [12:0] head;
     
@@ -7265,6 +7857,12 @@ module raster_top$fragments$core$fifo$xl(clock,we,wr,rd,din,head);
     reg  [12:0] e$3$d;
     wire  [12:0] e$3$q;
     reg  e$3$clock;
+    reg  [12:0] h$d;
+    wire  [12:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$xl$e$0 e$0(
@@ -7286,6 +7884,11 @@ module raster_top$fragments$core$fifo$xl(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$xl$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7310,16 +7913,25 @@ module raster_top$fragments$core$fifo$xl(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$xl
@@ -7401,13 +8013,34 @@ module raster_top$fragments$core$fifo$xl$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$xl$e$3
 
 
-module raster_top$fragments$core$fifo$xr(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$xl$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$xl$h
+
+
+module raster_top$fragments$core$fifo$xr(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [12:0] din;
     output reg  [12:0] head;
     
@@ -7424,6 +8057,12 @@ module raster_top$fragments$core$fifo$xr(clock,we,wr,rd,din,head);
     reg  [12:0] e$3$d;
     wire  [12:0] e$3$q;
     reg  e$3$clock;
+    reg  [12:0] h$d;
+    wire  [12:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$xr$e$0 e$0(
@@ -7445,6 +8084,11 @@ module raster_top$fragments$core$fifo$xr(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$xr$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7469,16 +8113,25 @@ module raster_top$fragments$core$fifo$xr(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$xr
@@ -7560,13 +8213,34 @@ module raster_top$fragments$core$fifo$xr$e$3(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$xr$e$3
 
 
-module raster_top$fragments$core$fifo$y(clock,we,wr,rd,din,head);
+module raster_top$fragments$core$fifo$xr$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$xr$h
+
+
+module raster_top$fragments$core$fifo$y(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [9:0] din;
     output reg  [9:0] head;
     
@@ -7583,6 +8257,12 @@ module raster_top$fragments$core$fifo$y(clock,we,wr,rd,din,head);
     reg  [9:0] e$3$d;
     wire  [9:0] e$3$q;
     reg  e$3$clock;
+    reg  [9:0] h$d;
+    wire  [9:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$fragments$core$fifo$y$e$0 e$0(
@@ -7604,6 +8284,11 @@ module raster_top$fragments$core$fifo$y(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$fragments$core$fifo$y$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7628,16 +8313,25 @@ module raster_top$fragments$core$fifo$y(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$fragments$core$fifo$y
@@ -7717,6 +8411,25 @@ module raster_top$fragments$core$fifo$y$e$3(d,q,clock);
     end
           
 endmodule // raster_top$fragments$core$fifo$y$e$3
+
+
+module raster_top$fragments$core$fifo$y$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$y$h
 
 
 module raster_top$fragments$core$last_in(d,q,clock);

@@ -5344,6 +5344,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
     reg  [2:0] level$count;
     wire  level$full;
     wire  level$empty;
+    wire  level$one;
     reg  [1:0] wr$d;
     wire  [1:0] wr$q;
     reg  wr$clock;
@@ -5354,90 +5355,120 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
     reg  y$we;
     reg  [1:0] y$wr;
     reg  [1:0] y$rd;
+    reg  y$take_din;
+    reg  y$take_next;
     reg  [9:0] y$din;
     wire  [9:0] y$head;
     reg  xl$clock;
     reg  xl$we;
     reg  [1:0] xl$wr;
     reg  [1:0] xl$rd;
+    reg  xl$take_din;
+    reg  xl$take_next;
     reg  [12:0] xl$din;
     wire  [12:0] xl$head;
     reg  xr$clock;
     reg  xr$we;
     reg  [1:0] xr$wr;
     reg  [1:0] xr$rd;
+    reg  xr$take_din;
+    reg  xr$take_next;
     reg  [12:0] xr$din;
     wire  [12:0] xr$head;
     reg  left_z$clock;
     reg  left_z$we;
     reg  [1:0] left_z$wr;
     reg  [1:0] left_z$rd;
+    reg  left_z$take_din;
+    reg  left_z$take_next;
     reg  [35:0] left_z$din;
     wire  [35:0] left_z$head;
     reg  left_c0$clock;
     reg  left_c0$we;
     reg  [1:0] left_c0$wr;
     reg  [1:0] left_c0$rd;
+    reg  left_c0$take_din;
+    reg  left_c0$take_next;
     reg  [31:0] left_c0$din;
     wire  [31:0] left_c0$head;
     reg  left_c1$clock;
     reg  left_c1$we;
     reg  [1:0] left_c1$wr;
     reg  [1:0] left_c1$rd;
+    reg  left_c1$take_din;
+    reg  left_c1$take_next;
     reg  [31:0] left_c1$din;
     wire  [31:0] left_c1$head;
     reg  left_c2$clock;
     reg  left_c2$we;
     reg  [1:0] left_c2$wr;
     reg  [1:0] left_c2$rd;
+    reg  left_c2$take_din;
+    reg  left_c2$take_next;
     reg  [31:0] left_c2$din;
     wire  [31:0] left_c2$head;
     reg  right_z$clock;
     reg  right_z$we;
     reg  [1:0] right_z$wr;
     reg  [1:0] right_z$rd;
+    reg  right_z$take_din;
+    reg  right_z$take_next;
     reg  [35:0] right_z$din;
     wire  [35:0] right_z$head;
     reg  right_c0$clock;
     reg  right_c0$we;
     reg  [1:0] right_c0$wr;
     reg  [1:0] right_c0$rd;
+    reg  right_c0$take_din;
+    reg  right_c0$take_next;
     reg  [31:0] right_c0$din;
     wire  [31:0] right_c0$head;
     reg  right_c1$clock;
     reg  right_c1$we;
     reg  [1:0] right_c1$wr;
     reg  [1:0] right_c1$rd;
+    reg  right_c1$take_din;
+    reg  right_c1$take_next;
     reg  [31:0] right_c1$din;
     wire  [31:0] right_c1$head;
     reg  right_c2$clock;
     reg  right_c2$we;
     reg  [1:0] right_c2$wr;
     reg  [1:0] right_c2$rd;
+    reg  right_c2$take_din;
+    reg  right_c2$take_next;
     reg  [31:0] right_c2$din;
     wire  [31:0] right_c2$head;
     reg  ddx_z$clock;
     reg  ddx_z$we;
     reg  [1:0] ddx_z$wr;
     reg  [1:0] ddx_z$rd;
+    reg  ddx_z$take_din;
+    reg  ddx_z$take_next;
     reg  [39:0] ddx_z$din;
     wire  [39:0] ddx_z$head;
     reg  ddx_c0$clock;
     reg  ddx_c0$we;
     reg  [1:0] ddx_c0$wr;
     reg  [1:0] ddx_c0$rd;
+    reg  ddx_c0$take_din;
+    reg  ddx_c0$take_next;
     reg  [35:0] ddx_c0$din;
     wire  [35:0] ddx_c0$head;
     reg  ddx_c1$clock;
     reg  ddx_c1$we;
     reg  [1:0] ddx_c1$wr;
     reg  [1:0] ddx_c1$rd;
+    reg  ddx_c1$take_din;
+    reg  ddx_c1$take_next;
     reg  [35:0] ddx_c1$din;
     wire  [35:0] ddx_c1$head;
     reg  ddx_c2$clock;
     reg  ddx_c2$we;
     reg  [1:0] ddx_c2$wr;
     reg  [1:0] ddx_c2$rd;
+    reg  ddx_c2$take_din;
+    reg  ddx_c2$take_next;
     reg  [35:0] ddx_c2$din;
     wire  [35:0] ddx_c2$head;
     
@@ -5445,6 +5476,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
     reg  we;
     reg  push;
     reg  pop;
+    reg  take_din;
+    reg  take_next;
     
     // Sub module instances
     raster_top$core$fifo$count count(
@@ -5455,7 +5488,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
     raster_top$core$fifo$level level(
         .count(level$count),
         .full(level$full),
-        .empty(level$empty)
+        .empty(level$empty),
+        .one(level$one)
     );
     raster_top$core$fifo$wr wr(
         .d(wr$d),
@@ -5472,6 +5506,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(y$we),
         .wr(y$wr),
         .rd(y$rd),
+        .take_din(y$take_din),
+        .take_next(y$take_next),
         .din(y$din),
         .head(y$head)
     );
@@ -5480,6 +5516,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(xl$we),
         .wr(xl$wr),
         .rd(xl$rd),
+        .take_din(xl$take_din),
+        .take_next(xl$take_next),
         .din(xl$din),
         .head(xl$head)
     );
@@ -5488,6 +5526,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(xr$we),
         .wr(xr$wr),
         .rd(xr$rd),
+        .take_din(xr$take_din),
+        .take_next(xr$take_next),
         .din(xr$din),
         .head(xr$head)
     );
@@ -5496,6 +5536,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(left_z$we),
         .wr(left_z$wr),
         .rd(left_z$rd),
+        .take_din(left_z$take_din),
+        .take_next(left_z$take_next),
         .din(left_z$din),
         .head(left_z$head)
     );
@@ -5504,6 +5546,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(left_c0$we),
         .wr(left_c0$wr),
         .rd(left_c0$rd),
+        .take_din(left_c0$take_din),
+        .take_next(left_c0$take_next),
         .din(left_c0$din),
         .head(left_c0$head)
     );
@@ -5512,6 +5556,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(left_c1$we),
         .wr(left_c1$wr),
         .rd(left_c1$rd),
+        .take_din(left_c1$take_din),
+        .take_next(left_c1$take_next),
         .din(left_c1$din),
         .head(left_c1$head)
     );
@@ -5520,6 +5566,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(left_c2$we),
         .wr(left_c2$wr),
         .rd(left_c2$rd),
+        .take_din(left_c2$take_din),
+        .take_next(left_c2$take_next),
         .din(left_c2$din),
         .head(left_c2$head)
     );
@@ -5528,6 +5576,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(right_z$we),
         .wr(right_z$wr),
         .rd(right_z$rd),
+        .take_din(right_z$take_din),
+        .take_next(right_z$take_next),
         .din(right_z$din),
         .head(right_z$head)
     );
@@ -5536,6 +5586,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(right_c0$we),
         .wr(right_c0$wr),
         .rd(right_c0$rd),
+        .take_din(right_c0$take_din),
+        .take_next(right_c0$take_next),
         .din(right_c0$din),
         .head(right_c0$head)
     );
@@ -5544,6 +5596,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(right_c1$we),
         .wr(right_c1$wr),
         .rd(right_c1$rd),
+        .take_din(right_c1$take_din),
+        .take_next(right_c1$take_next),
         .din(right_c1$din),
         .head(right_c1$head)
     );
@@ -5552,6 +5606,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(right_c2$we),
         .wr(right_c2$wr),
         .rd(right_c2$rd),
+        .take_din(right_c2$take_din),
+        .take_next(right_c2$take_next),
         .din(right_c2$din),
         .head(right_c2$head)
     );
@@ -5560,6 +5616,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(ddx_z$we),
         .wr(ddx_z$wr),
         .rd(ddx_z$rd),
+        .take_din(ddx_z$take_din),
+        .take_next(ddx_z$take_next),
         .din(ddx_z$din),
         .head(ddx_z$head)
     );
@@ -5568,6 +5626,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(ddx_c0$we),
         .wr(ddx_c0$wr),
         .rd(ddx_c0$rd),
+        .take_din(ddx_c0$take_din),
+        .take_next(ddx_c0$take_next),
         .din(ddx_c0$din),
         .head(ddx_c0$head)
     );
@@ -5576,6 +5636,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(ddx_c1$we),
         .wr(ddx_c1$wr),
         .rd(ddx_c1$rd),
+        .take_din(ddx_c1$take_din),
+        .take_next(ddx_c1$take_next),
         .din(ddx_c1$din),
         .head(ddx_c1$head)
     );
@@ -5584,6 +5646,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .we(ddx_c2$we),
         .wr(ddx_c2$wr),
         .rd(ddx_c2$rd),
+        .take_din(ddx_c2$take_din),
+        .take_next(ddx_c2$take_next),
         .din(ddx_c2$din),
         .head(ddx_c2$head)
     );
@@ -5603,6 +5667,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         we = inp$valid & ~level$full;
         push = we & ~(level$empty & out$ready);
         pop = ~level$empty & out$ready;
+        take_din = level$empty | (level$one & out$ready);
+        take_next = pop & ~level$one;
         if (push) begin
             wr$d = wr$q + 32'h1;
         end
@@ -5619,6 +5685,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         y$we = we;
         y$wr = wr$q;
         y$rd = rd$q;
+        y$take_din = take_din;
+        y$take_next = take_next;
         y$din = inp$y;
         out$y = y$head;
         if (level$empty) begin
@@ -5628,6 +5696,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         xl$we = we;
         xl$wr = wr$q;
         xl$rd = rd$q;
+        xl$take_din = take_din;
+        xl$take_next = take_next;
         xl$din = inp$xl;
         out$xl = xl$head;
         if (level$empty) begin
@@ -5637,6 +5707,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         xr$we = we;
         xr$wr = wr$q;
         xr$rd = rd$q;
+        xr$take_din = take_din;
+        xr$take_next = take_next;
         xr$din = inp$xr;
         out$xr = xr$head;
         if (level$empty) begin
@@ -5646,6 +5718,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         left_z$we = we;
         left_z$wr = wr$q;
         left_z$rd = rd$q;
+        left_z$take_din = take_din;
+        left_z$take_next = take_next;
         left_z$din = inp$left_z;
         out$left_z = left_z$head;
         if (level$empty) begin
@@ -5655,6 +5729,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         left_c0$we = we;
         left_c0$wr = wr$q;
         left_c0$rd = rd$q;
+        left_c0$take_din = take_din;
+        left_c0$take_next = take_next;
         left_c0$din = inp$left_c0;
         out$left_c0 = left_c0$head;
         if (level$empty) begin
@@ -5664,6 +5740,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         left_c1$we = we;
         left_c1$wr = wr$q;
         left_c1$rd = rd$q;
+        left_c1$take_din = take_din;
+        left_c1$take_next = take_next;
         left_c1$din = inp$left_c1;
         out$left_c1 = left_c1$head;
         if (level$empty) begin
@@ -5673,6 +5751,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         left_c2$we = we;
         left_c2$wr = wr$q;
         left_c2$rd = rd$q;
+        left_c2$take_din = take_din;
+        left_c2$take_next = take_next;
         left_c2$din = inp$left_c2;
         out$left_c2 = left_c2$head;
         if (level$empty) begin
@@ -5682,6 +5762,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         right_z$we = we;
         right_z$wr = wr$q;
         right_z$rd = rd$q;
+        right_z$take_din = take_din;
+        right_z$take_next = take_next;
         right_z$din = inp$right_z;
         out$right_z = right_z$head;
         if (level$empty) begin
@@ -5691,6 +5773,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         right_c0$we = we;
         right_c0$wr = wr$q;
         right_c0$rd = rd$q;
+        right_c0$take_din = take_din;
+        right_c0$take_next = take_next;
         right_c0$din = inp$right_c0;
         out$right_c0 = right_c0$head;
         if (level$empty) begin
@@ -5700,6 +5784,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         right_c1$we = we;
         right_c1$wr = wr$q;
         right_c1$rd = rd$q;
+        right_c1$take_din = take_din;
+        right_c1$take_next = take_next;
         right_c1$din = inp$right_c1;
         out$right_c1 = right_c1$head;
         if (level$empty) begin
@@ -5709,6 +5795,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         right_c2$we = we;
         right_c2$wr = wr$q;
         right_c2$rd = rd$q;
+        right_c2$take_din = take_din;
+        right_c2$take_next = take_next;
         right_c2$din = inp$right_c2;
         out$right_c2 = right_c2$head;
         if (level$empty) begin
@@ -5718,6 +5806,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         ddx_z$we = we;
         ddx_z$wr = wr$q;
         ddx_z$rd = rd$q;
+        ddx_z$take_din = take_din;
+        ddx_z$take_next = take_next;
         ddx_z$din = inp$ddx_z;
         out$ddx_z = ddx_z$head;
         if (level$empty) begin
@@ -5727,6 +5817,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         ddx_c0$we = we;
         ddx_c0$wr = wr$q;
         ddx_c0$rd = rd$q;
+        ddx_c0$take_din = take_din;
+        ddx_c0$take_next = take_next;
         ddx_c0$din = inp$ddx_c0;
         out$ddx_c0 = ddx_c0$head;
         if (level$empty) begin
@@ -5736,6 +5828,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         ddx_c1$we = we;
         ddx_c1$wr = wr$q;
         ddx_c1$rd = rd$q;
+        ddx_c1$take_din = take_din;
+        ddx_c1$take_next = take_next;
         ddx_c1$din = inp$ddx_c1;
         out$ddx_c1 = ddx_c1$head;
         if (level$empty) begin
@@ -5745,6 +5839,8 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         ddx_c2$we = we;
         ddx_c2$wr = wr$q;
         ddx_c2$rd = rd$q;
+        ddx_c2$take_din = take_din;
+        ddx_c2$take_next = take_next;
         ddx_c2$din = inp$ddx_c2;
         out$ddx_c2 = ddx_c2$head;
         if (level$empty) begin
@@ -5774,13 +5870,15 @@ module raster_top$core$fifo$count(d,q,clock);
 endmodule // raster_top$core$fifo$count
 
 
-module raster_top$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$ddx_c0(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -5797,6 +5895,12 @@ module raster_top$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$ddx_c0$e$0 e$0(
@@ -5818,6 +5922,11 @@ module raster_top$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$ddx_c0$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -5842,16 +5951,25 @@ module raster_top$core$fifo$ddx_c0(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$ddx_c0
@@ -5933,13 +6051,34 @@ module raster_top$core$fifo$ddx_c0$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$ddx_c0$e$3
 
 
-module raster_top$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$ddx_c0$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$ddx_c0$h
+
+
+module raster_top$core$fifo$ddx_c1(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -5956,6 +6095,12 @@ module raster_top$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$ddx_c1$e$0 e$0(
@@ -5977,6 +6122,11 @@ module raster_top$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$ddx_c1$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6001,16 +6151,25 @@ module raster_top$core$fifo$ddx_c1(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$ddx_c1
@@ -6092,13 +6251,34 @@ module raster_top$core$fifo$ddx_c1$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$ddx_c1$e$3
 
 
-module raster_top$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$ddx_c1$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$ddx_c1$h
+
+
+module raster_top$core$fifo$ddx_c2(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -6115,6 +6295,12 @@ module raster_top$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$ddx_c2$e$0 e$0(
@@ -6136,6 +6322,11 @@ module raster_top$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$ddx_c2$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6160,16 +6351,25 @@ module raster_top$core$fifo$ddx_c2(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$ddx_c2
@@ -6251,13 +6451,34 @@ module raster_top$core$fifo$ddx_c2$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$ddx_c2$e$3
 
 
-module raster_top$core$fifo$ddx_z(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$ddx_c2$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$ddx_c2$h
+
+
+module raster_top$core$fifo$ddx_z(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [39:0] din;
     output reg  [39:0] head;
     
@@ -6274,6 +6495,12 @@ module raster_top$core$fifo$ddx_z(clock,we,wr,rd,din,head);
     reg  [39:0] e$3$d;
     wire  [39:0] e$3$q;
     reg  e$3$clock;
+    reg  [39:0] h$d;
+    wire  [39:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$ddx_z$e$0 e$0(
@@ -6295,6 +6522,11 @@ module raster_top$core$fifo$ddx_z(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$ddx_z$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6319,16 +6551,25 @@ module raster_top$core$fifo$ddx_z(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$ddx_z
@@ -6410,13 +6651,34 @@ module raster_top$core$fifo$ddx_z$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$ddx_z$e$3
 
 
-module raster_top$core$fifo$left_c0(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$ddx_z$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [39:0] d;
+    output reg  [39:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 40'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$ddx_z$h
+
+
+module raster_top$core$fifo$left_c0(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6433,6 +6695,12 @@ module raster_top$core$fifo$left_c0(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$left_c0$e$0 e$0(
@@ -6454,6 +6722,11 @@ module raster_top$core$fifo$left_c0(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$left_c0$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6478,16 +6751,25 @@ module raster_top$core$fifo$left_c0(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$left_c0
@@ -6569,13 +6851,34 @@ module raster_top$core$fifo$left_c0$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$left_c0$e$3
 
 
-module raster_top$core$fifo$left_c1(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$left_c0$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$left_c0$h
+
+
+module raster_top$core$fifo$left_c1(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6592,6 +6895,12 @@ module raster_top$core$fifo$left_c1(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$left_c1$e$0 e$0(
@@ -6613,6 +6922,11 @@ module raster_top$core$fifo$left_c1(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$left_c1$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6637,16 +6951,25 @@ module raster_top$core$fifo$left_c1(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$left_c1
@@ -6728,13 +7051,34 @@ module raster_top$core$fifo$left_c1$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$left_c1$e$3
 
 
-module raster_top$core$fifo$left_c2(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$left_c1$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$left_c1$h
+
+
+module raster_top$core$fifo$left_c2(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -6751,6 +7095,12 @@ module raster_top$core$fifo$left_c2(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$left_c2$e$0 e$0(
@@ -6772,6 +7122,11 @@ module raster_top$core$fifo$left_c2(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$left_c2$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6796,16 +7151,25 @@ module raster_top$core$fifo$left_c2(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$left_c2
@@ -6887,13 +7251,34 @@ module raster_top$core$fifo$left_c2$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$left_c2$e$3
 
 
-module raster_top$core$fifo$left_z(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$left_c2$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$left_c2$h
+
+
+module raster_top$core$fifo$left_z(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -6910,6 +7295,12 @@ module raster_top$core$fifo$left_z(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$left_z$e$0 e$0(
@@ -6931,6 +7322,11 @@ module raster_top$core$fifo$left_z(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$left_z$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -6955,16 +7351,25 @@ module raster_top$core$fifo$left_z(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$left_z
@@ -7046,12 +7451,32 @@ module raster_top$core$fifo$left_z$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$left_z$e$3
 
 
-module raster_top$core$fifo$level(count,full,empty);
+module raster_top$core$fifo$left_z$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$left_z$h
+
+
+module raster_top$core$fifo$level(count,full,empty,one);
     
     // Module arguments
     input wire  [2:0] count;
     output reg  full;
     output reg  empty;
+    output reg  one;
     
     // Constant declarations
     localparam  depth = 3'b100;
@@ -7060,6 +7485,7 @@ module raster_top$core$fifo$level(count,full,empty);
     always @(*) begin
         full = count == depth;
         empty = count == 32'h0;
+        one = count == 32'h1;
     end
     
 endmodule // raster_top$core$fifo$level
@@ -7084,13 +7510,15 @@ module raster_top$core$fifo$rd(d,q,clock);
 endmodule // raster_top$core$fifo$rd
 
 
-module raster_top$core$fifo$right_c0(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$right_c0(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -7107,6 +7535,12 @@ module raster_top$core$fifo$right_c0(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$right_c0$e$0 e$0(
@@ -7128,6 +7562,11 @@ module raster_top$core$fifo$right_c0(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$right_c0$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7152,16 +7591,25 @@ module raster_top$core$fifo$right_c0(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$right_c0
@@ -7243,13 +7691,34 @@ module raster_top$core$fifo$right_c0$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$right_c0$e$3
 
 
-module raster_top$core$fifo$right_c1(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$right_c0$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$right_c0$h
+
+
+module raster_top$core$fifo$right_c1(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -7266,6 +7735,12 @@ module raster_top$core$fifo$right_c1(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$right_c1$e$0 e$0(
@@ -7287,6 +7762,11 @@ module raster_top$core$fifo$right_c1(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$right_c1$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7311,16 +7791,25 @@ module raster_top$core$fifo$right_c1(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$right_c1
@@ -7402,13 +7891,34 @@ module raster_top$core$fifo$right_c1$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$right_c1$e$3
 
 
-module raster_top$core$fifo$right_c2(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$right_c1$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$right_c1$h
+
+
+module raster_top$core$fifo$right_c2(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [31:0] din;
     output reg  [31:0] head;
     
@@ -7425,6 +7935,12 @@ module raster_top$core$fifo$right_c2(clock,we,wr,rd,din,head);
     reg  [31:0] e$3$d;
     wire  [31:0] e$3$q;
     reg  e$3$clock;
+    reg  [31:0] h$d;
+    wire  [31:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$right_c2$e$0 e$0(
@@ -7446,6 +7962,11 @@ module raster_top$core$fifo$right_c2(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$right_c2$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7470,16 +7991,25 @@ module raster_top$core$fifo$right_c2(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$right_c2
@@ -7561,13 +8091,34 @@ module raster_top$core$fifo$right_c2$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$right_c2$e$3
 
 
-module raster_top$core$fifo$right_z(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$right_c2$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$right_c2$h
+
+
+module raster_top$core$fifo$right_z(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [35:0] din;
     output reg  [35:0] head;
     
@@ -7584,6 +8135,12 @@ module raster_top$core$fifo$right_z(clock,we,wr,rd,din,head);
     reg  [35:0] e$3$d;
     wire  [35:0] e$3$q;
     reg  e$3$clock;
+    reg  [35:0] h$d;
+    wire  [35:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$right_z$e$0 e$0(
@@ -7605,6 +8162,11 @@ module raster_top$core$fifo$right_z(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$right_z$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7629,16 +8191,25 @@ module raster_top$core$fifo$right_z(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$right_z
@@ -7720,6 +8291,25 @@ module raster_top$core$fifo$right_z$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$right_z$e$3
 
 
+module raster_top$core$fifo$right_z$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$right_z$h
+
+
 module raster_top$core$fifo$wr(d,q,clock);
     
     // Module arguments
@@ -7739,13 +8329,15 @@ module raster_top$core$fifo$wr(d,q,clock);
 endmodule // raster_top$core$fifo$wr
 
 
-module raster_top$core$fifo$xl(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$xl(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [12:0] din;
     output reg  [12:0] head;
     
@@ -7762,6 +8354,12 @@ module raster_top$core$fifo$xl(clock,we,wr,rd,din,head);
     reg  [12:0] e$3$d;
     wire  [12:0] e$3$q;
     reg  e$3$clock;
+    reg  [12:0] h$d;
+    wire  [12:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$xl$e$0 e$0(
@@ -7783,6 +8381,11 @@ module raster_top$core$fifo$xl(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$xl$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7807,16 +8410,25 @@ module raster_top$core$fifo$xl(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$xl
@@ -7898,13 +8510,34 @@ module raster_top$core$fifo$xl$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$xl$e$3
 
 
-module raster_top$core$fifo$xr(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$xl$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$xl$h
+
+
+module raster_top$core$fifo$xr(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [12:0] din;
     output reg  [12:0] head;
     
@@ -7921,6 +8554,12 @@ module raster_top$core$fifo$xr(clock,we,wr,rd,din,head);
     reg  [12:0] e$3$d;
     wire  [12:0] e$3$q;
     reg  e$3$clock;
+    reg  [12:0] h$d;
+    wire  [12:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$xr$e$0 e$0(
@@ -7942,6 +8581,11 @@ module raster_top$core$fifo$xr(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$xr$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -7966,16 +8610,25 @@ module raster_top$core$fifo$xr(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$xr
@@ -8057,13 +8710,34 @@ module raster_top$core$fifo$xr$e$3(d,q,clock);
 endmodule // raster_top$core$fifo$xr$e$3
 
 
-module raster_top$core$fifo$y(clock,we,wr,rd,din,head);
+module raster_top$core$fifo$xr$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$xr$h
+
+
+module raster_top$core$fifo$y(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
     input wire  clock;
     input wire  we;
     input wire  [1:0] wr;
     input wire  [1:0] rd;
+    input wire  take_din;
+    input wire  take_next;
     input wire  [9:0] din;
     output reg  [9:0] head;
     
@@ -8080,6 +8754,12 @@ module raster_top$core$fifo$y(clock,we,wr,rd,din,head);
     reg  [9:0] e$3$d;
     wire  [9:0] e$3$q;
     reg  e$3$clock;
+    reg  [9:0] h$d;
+    wire  [9:0] h$q;
+    reg  h$clock;
+    
+    // Local signals
+    reg  [1:0] behind;
     
     // Sub module instances
     raster_top$core$fifo$y$e$0 e$0(
@@ -8101,6 +8781,11 @@ module raster_top$core$fifo$y(clock,we,wr,rd,din,head);
         .d(e$3$d),
         .q(e$3$q),
         .clock(e$3$clock)
+    );
+    raster_top$core$fifo$y$h h(
+        .d(h$d),
+        .q(h$q),
+        .clock(h$clock)
     );
     
     // Update code
@@ -8125,16 +8810,25 @@ module raster_top$core$fifo$y(clock,we,wr,rd,din,head);
         if ((wr == 3) & we) begin
             e$3$d = din;
         end
-        head = e$0$q;
-        if (rd == 1) begin
-            head = e$1$q;
+        behind = rd + 32'h1;
+        h$clock = clock;
+        h$d = h$q;
+        if (take_next) begin
+            h$d = e$0$q;
+            if (behind == 1) begin
+                h$d = e$1$q;
+            end
+            if (behind == 2) begin
+                h$d = e$2$q;
+            end
+            if (behind == 3) begin
+                h$d = e$3$q;
+            end
         end
-        if (rd == 2) begin
-            head = e$2$q;
+        if (take_din) begin
+            h$d = din;
         end
-        if (rd == 3) begin
-            head = e$3$q;
-        end
+        head = h$q;
     end
     
 endmodule // raster_top$core$fifo$y
@@ -8214,6 +8908,25 @@ module raster_top$core$fifo$y$e$3(d,q,clock);
     end
           
 endmodule // raster_top$core$fifo$y$e$3
+
+
+module raster_top$core$fifo$y$h(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$y$h
 
 
 module raster_top$core$last_in(d,q,clock);

@@ -23,6 +23,8 @@ pub struct FifoLevel<const D: usize> {
     pub count: Signal<In, Bits<3>>,
     pub full: Signal<Out, Bit>,
     pub empty: Signal<Out, Bit>,
+    /// One entry held: the head the only one.
+    pub one: Signal<Out, Bit>,
     depth: Constant<Bits<3>>,
 }
 
@@ -38,23 +40,35 @@ impl<const D: usize> Logic for FifoLevel<D> {
     fn update(&mut self) {
         self.full.next = self.count.val() == self.depth.val();
         self.empty.next = self.count.val() == 0;
+        self.one.next = self.count.val() == 1;
     }
 }
 
 /// One field of a `D`-deep FIFO held as a ring: entry `wr` is written while `we` is high,
-/// and `head` is entry `rd`. The entries' write enables come from the FIFO's input side and
-/// its registered pointer only, never from the output's handshake (on ECP5 that handshake
-/// spread to every entry's load enable was raster_top's critical path: span's accept, then
-/// one 17 ns net across the die).
+/// and `head` is entry `rd`, held in a register of its own. The entries' write enables
+/// come from the FIFO's input side and its registered pointer only, never from the
+/// output's handshake (on ECP5 that handshake spread to every entry's load enable was
+/// raster_top's critical path: span's accept, then one 17 ns net across the die); the head
+/// register is loaded from the input (`take_din`) or from entry `rd + 1` (`take_next`), so
+/// that the FIFO's output is a register and not the ring's multiplexer on the read pointer
+/// (raster_top's critical path at stop 56: that pointer, the multiplexer, then span's
+/// accumulators, 14.6 ns).
 #[derive(LogicBlock, Blank)]
 pub struct FifoLane<const W: usize, const D: usize> {
     pub clock: Signal<In, Clock>,
     pub we: Signal<In, Bit>,
     pub wr: Signal<In, Bits<POINTER>>,
     pub rd: Signal<In, Bits<POINTER>>,
+    /// The head becomes the input: the FIFO empty, or its one entry leaving.
+    pub take_din: Signal<In, Bit>,
+    /// The head becomes entry `rd + 1`: the head leaving, entries behind it.
+    pub take_next: Signal<In, Bit>,
     pub din: Signal<In, Bits<W>>,
     pub head: Signal<Out, Bits<W>>,
     e: [DFF<Bits<W>>; D],
+    h: DFF<Bits<W>>,
+    /// `rd + 1`, wrapping.
+    behind: Signal<Local, Bits<POINTER>>,
 }
 
 impl<const W: usize, const D: usize> Default for FifoLane<W, D> {
@@ -73,12 +87,21 @@ impl<const W: usize, const D: usize> Logic for FifoLane<W, D> {
                 self.e[i].d.next = self.din.val();
             }
         }
-        self.head.next = self.e[0].q.val();
-        for i in 1..D {
-            if self.rd.val().index() == i {
-                self.head.next = self.e[i].q.val();
+        self.behind.next = self.rd.val() + 1;
+        self.h.clock.next = self.clock.val();
+        self.h.d.next = self.h.q.val();
+        if self.take_next.val() {
+            self.h.d.next = self.e[0].q.val();
+            for i in 1..D {
+                if self.behind.val().index() == i {
+                    self.h.d.next = self.e[i].q.val();
+                }
             }
         }
+        if self.take_din.val() {
+            self.h.d.next = self.din.val();
+        }
+        self.head.next = self.h.q.val();
     }
 }
 
@@ -120,6 +143,8 @@ pub struct SpanFifo {
     we: Signal<Local, Bit>,
     push: Signal<Local, Bit>,
     pop: Signal<Local, Bit>,
+    take_din: Signal<Local, Bit>,
+    take_next: Signal<Local, Bit>,
 }
 
 /// `SpanFifo`'s kernel, with lane `$f` holding field `$f` of the span command (each field
@@ -140,6 +165,11 @@ macro_rules! span_fifo_logic {
                 // is written all the same, and left behind).
                 self.push.next = self.we.val() & !(self.level.empty.val() & self.out.ready.val());
                 self.pop.next = !self.level.empty.val() & self.out.ready.val();
+                // The head register: the input while empty or as the one entry leaves (the
+                // input is then the entry behind it, if any), else entry `rd + 1` as the
+                // head leaves.
+                self.take_din.next = self.level.empty.val() | (self.level.one.val() & self.out.ready.val());
+                self.take_next.next = self.pop.val() & !self.level.one.val();
                 if self.push.val() {
                     self.wr.d.next = self.wr.q.val() + 1;
                 }
@@ -157,6 +187,8 @@ macro_rules! span_fifo_logic {
                     self.$f.we.next = self.we.val();
                     self.$f.wr.next = self.wr.q.val();
                     self.$f.rd.next = self.rd.q.val();
+                    self.$f.take_din.next = self.take_din.val();
+                    self.$f.take_next.next = self.take_next.val();
                     self.$f.din.next = self.inp.$f.val();
                     self.out.$f.next = self.$f.head.val();
                     if self.level.empty.val() {
