@@ -166,11 +166,19 @@ pub struct TriangleSetup {
     at_iss: [Signal<Local, Bit>; 7],
     at_res: [Signal<Local, Bit>; 7],
     at_handover: Signal<Local, Bit>,
-    /// Due this cycle, decoded a cycle ahead from the counters' next values, so that no
-    /// comparison of a counter lies on a path into the multipliers or the divider: product
-    /// i's operands (`act_r`) and its addition into its destination (`add_r`), the above,
-    /// the result valid, and a triangle in setup. (Busy, not free: every register is 0
-    /// after reset, when setup is empty.)
+    /// Per copy, a triangle enters it at the end of this cycle if setup runs: copy 0's
+    /// taken, copy v's handed on from copy v - 1 (at the end of its part).
+    enter: [Signal<Local, Bit>; COPIES_MAX],
+    /// Due this cycle, decoded a cycle ahead, so that no comparison of a counter lies on a
+    /// path into the multipliers or the divider: product i's operands (`act_r`) and its
+    /// addition into its destination (`add_r`), the above, the result valid, and a triangle
+    /// in setup. (Busy, not free: every register is 0 after reset, when setup is empty.)
+    /// Each is decoded from the counters' registers, not their next values: while setup
+    /// runs, cycle c of copy v is due next when the copy's counter is at c - 1, or, for the
+    /// copy's first cycle, when a triangle enters it; while it stands still every counter,
+    /// and so every decoded register, holds. (From the next values, the counters' adders
+    /// and load multiplexers lay before the comparisons: setup's critical path alone at
+    /// stop 57, 13.6 ns, 11.8 of it routing.)
     act_r: [DFF<Bit>; PRODUCTS],
     add_r: [DFF<Bit>; PRODUCTS],
     norm_r: DFF<Bit>,
@@ -187,6 +195,9 @@ pub struct TriangleSetup {
     /// schedule's lanes are reserved modulo II), or when it is empty.
     phase: DFF<Bits<8>>,
     off_grid_r: DFF<Bit>,
+    /// `busy_r` and `off_grid_r`'s next values.
+    busy_n: Signal<Local, Bit>,
+    off_grid_n: Signal<Local, Bit>,
 
     // The triangle's registers, one copy per II cycles of its schedule (copy v at index
     // v, or 3v + edge): its geometry, computed from the triangle taken, the sign of the
@@ -314,7 +325,9 @@ pub struct TriangleSetup {
     view_res: [Constant<Bits<8>>; 7],
     view_res_w: [Constant<Bits<8>>; 7],
     view_handover: Constant<Bits<8>>,
-    /// Per copy, the last cycle of its part of the schedule (255 for copies not used).
+    /// Per copy, the first and the last cycle of its part of the schedule (255 for copies
+    /// not used).
+    firsts: [Constant<Bits<8>>; COPIES_MAX],
     ends: [Constant<Bits<8>>; COPIES_MAX],
     normalise: Constant<Bits<8>>,
     cyc: [Constant<Bits<8>>; PRODUCTS],
@@ -364,6 +377,11 @@ impl TriangleSetup {
         let s = Schedule::new(k, l)?;
         // The counters and the phase are 8 bits wide.
         assert!(s.latency < 255, "triangle_setup: K = {k}, L = {l}: latency {} does not fit 8 bits", s.latency);
+        // The decoders read copy 0's counter for the normalise and the issues.
+        assert!(
+            s.view(s.normalise) == 0 && s.issue.iter().all(|&c| s.view(c) == 0),
+            "triangle_setup: K = {k}, L = {l}: the normalise and the issues lie in copy 0's part"
+        );
         let f = FORMATS;
         let (gz, gc) =
             ((f.ooa_d.frac + f.z.frac - f.dz.frac) as usize, (f.ooa_d.frac + f.color.frac - f.dc.frac) as usize);
@@ -429,6 +447,7 @@ impl TriangleSetup {
             view_res: consts(|j| s.view(s.result(j))),
             view_res_w: consts(|j| s.view(s.result(j) + 1)),
             view_handover: Constant::new(s.view(s.handover).to_bits()),
+            firsts: consts(|v| if v < s.copies { v * s.interval + 1 } else { 255 }),
             ends: consts(|v| if v < s.copies { ((v + 1) * s.interval).min(s.latency) } else { 255 }),
             normalise: Constant::new(s.normalise.to_bits()),
             cyc: consts(|i| s.slots[i].0),
@@ -570,54 +589,107 @@ impl Logic for TriangleSetup {
             self.geo[0].d.next = self.geometry.word.val();
         }
         // What is due next cycle: a cycle of the schedule is its copy's counter (the views
-        // are constants, so each is one comparison), decoded from the counters' next values.
+        // are constants, so each is one comparison), decoded from the counters' registers:
+        // while setup runs, cycle c of copy v is next when the counter is at c - 1 or, for
+        // the copy's first cycle, when a triangle enters it; while it stands still, every
+        // counter and so every decoded register holds.
+        self.enter[0].next = self.take.val();
+        for v in 1..COPIES_MAX {
+            self.enter[v].next = self.t[v - 1].q.val() == self.ends[v - 1].val();
+        }
         for i in 0..PRODUCTS {
             self.act_r[i].clock.next = self.clock.val();
-            self.act_r[i].d.next = false;
+            self.act_r[i].d.next = self.act_r[i].q.val();
             self.add_r[i].clock.next = self.clock.val();
-            self.add_r[i].d.next = false;
-            for v in 0..self._copies {
-                if (self.view[i].val().index() == v) & (self.t[v].d.val() == self.cyc[i].val()) {
-                    self.act_r[i].d.next = true;
-                }
-                if (self.view_add[i].val().index() == v) & (self.t[v].d.val() == self.cyc_add[i].val()) {
-                    self.add_r[i].d.next = true;
+            self.add_r[i].d.next = self.add_r[i].q.val();
+            if self.run.val() {
+                self.act_r[i].d.next = false;
+                self.add_r[i].d.next = false;
+                for v in 0..self._copies {
+                    if self.view[i].val().index() == v {
+                        if self.cyc[i].val() == self.firsts[v].val() {
+                            self.act_r[i].d.next = self.enter[v].val();
+                        } else {
+                            self.act_r[i].d.next = self.t[v].q.val() == self.cyc[i].val() - 1;
+                        }
+                    }
+                    if self.view_add[i].val().index() == v {
+                        if self.cyc_add[i].val() == self.firsts[v].val() {
+                            self.add_r[i].d.next = self.enter[v].val();
+                        } else {
+                            self.add_r[i].d.next = self.t[v].q.val() == self.cyc_add[i].val() - 1;
+                        }
+                    }
                 }
             }
         }
-        self.norm_r.d.next = self.t[0].d.val() == self.normalise.val();
         self.at_norm.next = self.norm_r.q.val() & self.run.val();
         for j in 0..7 {
             self.iss_r[j].clock.next = self.clock.val();
-            self.iss_r[j].d.next = self.t[0].d.val() == self.iss[j].val();
-            self.at_iss[j].next = self.iss_r[j].q.val() & self.run.val();
+            self.iss_r[j].d.next = self.iss_r[j].q.val();
             self.res_r[j].clock.next = self.clock.val();
-            self.res_r[j].d.next = false;
-            for v in 0..self._copies {
-                if (self.view_res[j].val().index() == v) & (self.t[v].d.val() == self.res[j].val()) {
-                    self.res_r[j].d.next = true;
+            self.res_r[j].d.next = self.res_r[j].q.val();
+            if self.run.val() {
+                if self.iss[j].val() == 1 {
+                    self.iss_r[j].d.next = self.take.val();
+                } else {
+                    self.iss_r[j].d.next = self.t[0].q.val() == self.iss[j].val() - 1;
+                }
+                self.res_r[j].d.next = false;
+                for v in 0..self._copies {
+                    if self.view_res[j].val().index() == v {
+                        if self.res[j].val() == self.firsts[v].val() {
+                            self.res_r[j].d.next = self.enter[v].val();
+                        } else {
+                            self.res_r[j].d.next = self.t[v].q.val() == self.res[j].val() - 1;
+                        }
+                    }
                 }
             }
+            self.at_iss[j].next = self.iss_r[j].q.val() & self.run.val();
             self.at_res[j].next = self.res_r[j].q.val() & self.run.val();
         }
-        self.handover_r.d.next = false;
-        for v in 0..self._copies {
-            if (self.view_handover.val().index() == v) & (self.t[v].d.val() == self.handover.val()) {
-                self.handover_r.d.next = true;
-            }
-        }
         self.at_handover.next = self.handover_r.q.val() & self.run.val();
-        for v in (self._copies - 1)..self._copies {
-            self.valid_r.d.next = self.t[v].d.val() == self.last.val();
-        }
-        self.busy_r.d.next = false;
-        for v in 0..self._copies {
-            if self.t[v].d.val() != 0 {
-                self.busy_r.d.next = true;
+        self.busy_n.next = self.busy_r.q.val();
+        self.off_grid_n.next = self.off_grid_r.q.val();
+        if self.run.val() {
+            if self.normalise.val() == 1 {
+                self.norm_r.d.next = self.take.val();
+            } else {
+                self.norm_r.d.next = self.t[0].q.val() == self.normalise.val() - 1;
             }
+            self.handover_r.d.next = false;
+            for v in 0..self._copies {
+                if self.view_handover.val().index() == v {
+                    if self.handover.val() == self.firsts[v].val() {
+                        self.handover_r.d.next = self.enter[v].val();
+                    } else {
+                        self.handover_r.d.next = self.t[v].q.val() == self.handover.val() - 1;
+                    }
+                }
+            }
+            // The result: the last copy's last cycle.
+            for v in (self._copies - 1)..self._copies {
+                if self.last.val() == self.firsts[v].val() {
+                    self.valid_r.d.next = self.enter[v].val();
+                } else {
+                    self.valid_r.d.next = self.t[v].q.val() == self.last.val() - 1;
+                }
+            }
+            // A triangle is in setup next cycle: one enters a copy, or one stays in a copy
+            // before the end of its part.
+            self.busy_n.next = false;
+            for v in 0..self._copies {
+                if self.enter[v].val() | ((self.t[v].q.val() != 0) & (self.t[v].q.val() != self.ends[v].val())) {
+                    self.busy_n.next = true;
+                }
+            }
+            // The phase is 0 next cycle only at the end of an II not ended by a take.
+            self.off_grid_n.next = self.take.val() | (self.phase.q.val() != self.ii_m1.val());
         }
-        self.off_grid_r.d.next = self.phase.d.val() != 0;
-        self.gate_r.d.next = self.busy_r.d.val() & self.off_grid_r.d.val();
+        self.busy_r.d.next = self.busy_n.val();
+        self.off_grid_r.d.next = self.off_grid_n.val();
+        self.gate_r.d.next = self.busy_n.val() & self.off_grid_n.val();
         self.idle.next = !self.busy_r.q.val();
 
         // ---- Geometry: computed from the triangle offered (into copy 0's register when
