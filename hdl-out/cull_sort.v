@@ -398,6 +398,9 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
     reg  move1;
     reg  move2;
     reg  leave;
+    reg  out_free;
+    reg  s2_free;
+    reg  s1_free;
     
     // Sub module instances
     cull_sort$wx$0 wx$0(
@@ -1028,11 +1031,14 @@ module cull_sort(clock,width,height,cull_back,inp$valid,inp$ready,inp$v0_x,inp$v
         vc$7 = inp$v2_c1;
         vc$8 = inp$v2_c2;
         viw$2 = inp$v2_iw;
+        out_free = ~full$q | (code_r$q != passed);
+        s2_free = ~full2$q | out_free;
+        s1_free = ~full1$q | s2_free;
         leave = full$q & ((code_r$q != passed) | out$ready);
-        move2 = full2$q & (~full$q | leave);
-        move1 = full1$q & (~full2$q | move2);
-        inp$ready = ~full1$q | move1;
-        take = inp$valid & (~full1$q | move1);
+        move2 = full2$q & (out_free | out$ready);
+        move1 = full1$q & (s2_free | out$ready);
+        inp$ready = s1_free | out$ready;
+        take = inp$valid & (s1_free | out$ready);
         if (leave) begin
             full$d = 1'b0;
         end

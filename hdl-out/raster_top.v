@@ -10089,6 +10089,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     localparam  view_res_w$5 = 8'h3;
     localparam  view_res_w$6 = 8'h2;
     localparam  view_handover = 8'h5;
+    localparam  firsts$0 = 8'h1;
+    localparam  firsts$1 = 8'hb;
+    localparam  firsts$2 = 8'h15;
+    localparam  firsts$3 = 8'h1f;
+    localparam  firsts$4 = 8'h29;
+    localparam  firsts$5 = 8'h33;
     localparam  ends$0 = 8'ha;
     localparam  ends$1 = 8'h14;
     localparam  ends$2 = 8'h1e;
@@ -11699,6 +11705,14 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  at_res$5;
     reg  at_res$6;
     reg  at_handover;
+    reg  enter$0;
+    reg  enter$1;
+    reg  enter$2;
+    reg  enter$3;
+    reg  enter$4;
+    reg  enter$5;
+    reg  busy_n;
+    reg  off_grid_n;
     reg  maj_left$0;
     reg  maj_left$1;
     reg  maj_left$2;
@@ -14557,2778 +14571,7199 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
             t$0$d = 32'h1;
             geo$0$d = geometry$word;
         end
+        enter$0 = take;
+        enter$1 = t$0$q == ends$0;
+        enter$2 = t$1$q == ends$1;
+        enter$3 = t$2$q == ends$2;
+        enter$4 = t$3$q == ends$3;
+        enter$5 = t$4$q == ends$4;
         act_r$0$clock = clock;
-        act_r$0$d = 1'b0;
+        act_r$0$d = act_r$0$q;
         add_r$0$clock = clock;
-        add_r$0$d = 1'b0;
-        if ((view$0 == 0) & (t$0$d == cyc$0)) begin
-            act_r$0$d = 1'b1;
-        end
-        if ((view_add$0 == 0) & (t$0$d == cyc_add$0)) begin
-            add_r$0$d = 1'b1;
-        end
-        if ((view$0 == 1) & (t$1$d == cyc$0)) begin
-            act_r$0$d = 1'b1;
-        end
-        if ((view_add$0 == 1) & (t$1$d == cyc_add$0)) begin
-            add_r$0$d = 1'b1;
-        end
-        if ((view$0 == 2) & (t$2$d == cyc$0)) begin
-            act_r$0$d = 1'b1;
-        end
-        if ((view_add$0 == 2) & (t$2$d == cyc_add$0)) begin
-            add_r$0$d = 1'b1;
-        end
-        if ((view$0 == 3) & (t$3$d == cyc$0)) begin
-            act_r$0$d = 1'b1;
-        end
-        if ((view_add$0 == 3) & (t$3$d == cyc_add$0)) begin
-            add_r$0$d = 1'b1;
-        end
-        if ((view$0 == 4) & (t$4$d == cyc$0)) begin
-            act_r$0$d = 1'b1;
-        end
-        if ((view_add$0 == 4) & (t$4$d == cyc_add$0)) begin
-            add_r$0$d = 1'b1;
-        end
-        if ((view$0 == 5) & (t$5$d == cyc$0)) begin
-            act_r$0$d = 1'b1;
-        end
-        if ((view_add$0 == 5) & (t$5$d == cyc_add$0)) begin
-            add_r$0$d = 1'b1;
+        add_r$0$d = add_r$0$q;
+        if (run) begin
+            act_r$0$d = 1'b0;
+            add_r$0$d = 1'b0;
+            if (view$0 == 0) begin
+                if (cyc$0 == firsts$0) begin
+                    act_r$0$d = enter$0;
+                end
+                else begin
+                    act_r$0$d = t$0$q == cyc$0 - 32'h1;
+                end
+            end
+            if (view_add$0 == 0) begin
+                if (cyc_add$0 == firsts$0) begin
+                    add_r$0$d = enter$0;
+                end
+                else begin
+                    add_r$0$d = t$0$q == cyc_add$0 - 32'h1;
+                end
+            end
+            if (view$0 == 1) begin
+                if (cyc$0 == firsts$1) begin
+                    act_r$0$d = enter$1;
+                end
+                else begin
+                    act_r$0$d = t$1$q == cyc$0 - 32'h1;
+                end
+            end
+            if (view_add$0 == 1) begin
+                if (cyc_add$0 == firsts$1) begin
+                    add_r$0$d = enter$1;
+                end
+                else begin
+                    add_r$0$d = t$1$q == cyc_add$0 - 32'h1;
+                end
+            end
+            if (view$0 == 2) begin
+                if (cyc$0 == firsts$2) begin
+                    act_r$0$d = enter$2;
+                end
+                else begin
+                    act_r$0$d = t$2$q == cyc$0 - 32'h1;
+                end
+            end
+            if (view_add$0 == 2) begin
+                if (cyc_add$0 == firsts$2) begin
+                    add_r$0$d = enter$2;
+                end
+                else begin
+                    add_r$0$d = t$2$q == cyc_add$0 - 32'h1;
+                end
+            end
+            if (view$0 == 3) begin
+                if (cyc$0 == firsts$3) begin
+                    act_r$0$d = enter$3;
+                end
+                else begin
+                    act_r$0$d = t$3$q == cyc$0 - 32'h1;
+                end
+            end
+            if (view_add$0 == 3) begin
+                if (cyc_add$0 == firsts$3) begin
+                    add_r$0$d = enter$3;
+                end
+                else begin
+                    add_r$0$d = t$3$q == cyc_add$0 - 32'h1;
+                end
+            end
+            if (view$0 == 4) begin
+                if (cyc$0 == firsts$4) begin
+                    act_r$0$d = enter$4;
+                end
+                else begin
+                    act_r$0$d = t$4$q == cyc$0 - 32'h1;
+                end
+            end
+            if (view_add$0 == 4) begin
+                if (cyc_add$0 == firsts$4) begin
+                    add_r$0$d = enter$4;
+                end
+                else begin
+                    add_r$0$d = t$4$q == cyc_add$0 - 32'h1;
+                end
+            end
+            if (view$0 == 5) begin
+                if (cyc$0 == firsts$5) begin
+                    act_r$0$d = enter$5;
+                end
+                else begin
+                    act_r$0$d = t$5$q == cyc$0 - 32'h1;
+                end
+            end
+            if (view_add$0 == 5) begin
+                if (cyc_add$0 == firsts$5) begin
+                    add_r$0$d = enter$5;
+                end
+                else begin
+                    add_r$0$d = t$5$q == cyc_add$0 - 32'h1;
+                end
+            end
         end
         act_r$1$clock = clock;
-        act_r$1$d = 1'b0;
+        act_r$1$d = act_r$1$q;
         add_r$1$clock = clock;
-        add_r$1$d = 1'b0;
-        if ((view$1 == 0) & (t$0$d == cyc$1)) begin
-            act_r$1$d = 1'b1;
-        end
-        if ((view_add$1 == 0) & (t$0$d == cyc_add$1)) begin
-            add_r$1$d = 1'b1;
-        end
-        if ((view$1 == 1) & (t$1$d == cyc$1)) begin
-            act_r$1$d = 1'b1;
-        end
-        if ((view_add$1 == 1) & (t$1$d == cyc_add$1)) begin
-            add_r$1$d = 1'b1;
-        end
-        if ((view$1 == 2) & (t$2$d == cyc$1)) begin
-            act_r$1$d = 1'b1;
-        end
-        if ((view_add$1 == 2) & (t$2$d == cyc_add$1)) begin
-            add_r$1$d = 1'b1;
-        end
-        if ((view$1 == 3) & (t$3$d == cyc$1)) begin
-            act_r$1$d = 1'b1;
-        end
-        if ((view_add$1 == 3) & (t$3$d == cyc_add$1)) begin
-            add_r$1$d = 1'b1;
-        end
-        if ((view$1 == 4) & (t$4$d == cyc$1)) begin
-            act_r$1$d = 1'b1;
-        end
-        if ((view_add$1 == 4) & (t$4$d == cyc_add$1)) begin
-            add_r$1$d = 1'b1;
-        end
-        if ((view$1 == 5) & (t$5$d == cyc$1)) begin
-            act_r$1$d = 1'b1;
-        end
-        if ((view_add$1 == 5) & (t$5$d == cyc_add$1)) begin
-            add_r$1$d = 1'b1;
+        add_r$1$d = add_r$1$q;
+        if (run) begin
+            act_r$1$d = 1'b0;
+            add_r$1$d = 1'b0;
+            if (view$1 == 0) begin
+                if (cyc$1 == firsts$0) begin
+                    act_r$1$d = enter$0;
+                end
+                else begin
+                    act_r$1$d = t$0$q == cyc$1 - 32'h1;
+                end
+            end
+            if (view_add$1 == 0) begin
+                if (cyc_add$1 == firsts$0) begin
+                    add_r$1$d = enter$0;
+                end
+                else begin
+                    add_r$1$d = t$0$q == cyc_add$1 - 32'h1;
+                end
+            end
+            if (view$1 == 1) begin
+                if (cyc$1 == firsts$1) begin
+                    act_r$1$d = enter$1;
+                end
+                else begin
+                    act_r$1$d = t$1$q == cyc$1 - 32'h1;
+                end
+            end
+            if (view_add$1 == 1) begin
+                if (cyc_add$1 == firsts$1) begin
+                    add_r$1$d = enter$1;
+                end
+                else begin
+                    add_r$1$d = t$1$q == cyc_add$1 - 32'h1;
+                end
+            end
+            if (view$1 == 2) begin
+                if (cyc$1 == firsts$2) begin
+                    act_r$1$d = enter$2;
+                end
+                else begin
+                    act_r$1$d = t$2$q == cyc$1 - 32'h1;
+                end
+            end
+            if (view_add$1 == 2) begin
+                if (cyc_add$1 == firsts$2) begin
+                    add_r$1$d = enter$2;
+                end
+                else begin
+                    add_r$1$d = t$2$q == cyc_add$1 - 32'h1;
+                end
+            end
+            if (view$1 == 3) begin
+                if (cyc$1 == firsts$3) begin
+                    act_r$1$d = enter$3;
+                end
+                else begin
+                    act_r$1$d = t$3$q == cyc$1 - 32'h1;
+                end
+            end
+            if (view_add$1 == 3) begin
+                if (cyc_add$1 == firsts$3) begin
+                    add_r$1$d = enter$3;
+                end
+                else begin
+                    add_r$1$d = t$3$q == cyc_add$1 - 32'h1;
+                end
+            end
+            if (view$1 == 4) begin
+                if (cyc$1 == firsts$4) begin
+                    act_r$1$d = enter$4;
+                end
+                else begin
+                    act_r$1$d = t$4$q == cyc$1 - 32'h1;
+                end
+            end
+            if (view_add$1 == 4) begin
+                if (cyc_add$1 == firsts$4) begin
+                    add_r$1$d = enter$4;
+                end
+                else begin
+                    add_r$1$d = t$4$q == cyc_add$1 - 32'h1;
+                end
+            end
+            if (view$1 == 5) begin
+                if (cyc$1 == firsts$5) begin
+                    act_r$1$d = enter$5;
+                end
+                else begin
+                    act_r$1$d = t$5$q == cyc$1 - 32'h1;
+                end
+            end
+            if (view_add$1 == 5) begin
+                if (cyc_add$1 == firsts$5) begin
+                    add_r$1$d = enter$5;
+                end
+                else begin
+                    add_r$1$d = t$5$q == cyc_add$1 - 32'h1;
+                end
+            end
         end
         act_r$2$clock = clock;
-        act_r$2$d = 1'b0;
+        act_r$2$d = act_r$2$q;
         add_r$2$clock = clock;
-        add_r$2$d = 1'b0;
-        if ((view$2 == 0) & (t$0$d == cyc$2)) begin
-            act_r$2$d = 1'b1;
-        end
-        if ((view_add$2 == 0) & (t$0$d == cyc_add$2)) begin
-            add_r$2$d = 1'b1;
-        end
-        if ((view$2 == 1) & (t$1$d == cyc$2)) begin
-            act_r$2$d = 1'b1;
-        end
-        if ((view_add$2 == 1) & (t$1$d == cyc_add$2)) begin
-            add_r$2$d = 1'b1;
-        end
-        if ((view$2 == 2) & (t$2$d == cyc$2)) begin
-            act_r$2$d = 1'b1;
-        end
-        if ((view_add$2 == 2) & (t$2$d == cyc_add$2)) begin
-            add_r$2$d = 1'b1;
-        end
-        if ((view$2 == 3) & (t$3$d == cyc$2)) begin
-            act_r$2$d = 1'b1;
-        end
-        if ((view_add$2 == 3) & (t$3$d == cyc_add$2)) begin
-            add_r$2$d = 1'b1;
-        end
-        if ((view$2 == 4) & (t$4$d == cyc$2)) begin
-            act_r$2$d = 1'b1;
-        end
-        if ((view_add$2 == 4) & (t$4$d == cyc_add$2)) begin
-            add_r$2$d = 1'b1;
-        end
-        if ((view$2 == 5) & (t$5$d == cyc$2)) begin
-            act_r$2$d = 1'b1;
-        end
-        if ((view_add$2 == 5) & (t$5$d == cyc_add$2)) begin
-            add_r$2$d = 1'b1;
+        add_r$2$d = add_r$2$q;
+        if (run) begin
+            act_r$2$d = 1'b0;
+            add_r$2$d = 1'b0;
+            if (view$2 == 0) begin
+                if (cyc$2 == firsts$0) begin
+                    act_r$2$d = enter$0;
+                end
+                else begin
+                    act_r$2$d = t$0$q == cyc$2 - 32'h1;
+                end
+            end
+            if (view_add$2 == 0) begin
+                if (cyc_add$2 == firsts$0) begin
+                    add_r$2$d = enter$0;
+                end
+                else begin
+                    add_r$2$d = t$0$q == cyc_add$2 - 32'h1;
+                end
+            end
+            if (view$2 == 1) begin
+                if (cyc$2 == firsts$1) begin
+                    act_r$2$d = enter$1;
+                end
+                else begin
+                    act_r$2$d = t$1$q == cyc$2 - 32'h1;
+                end
+            end
+            if (view_add$2 == 1) begin
+                if (cyc_add$2 == firsts$1) begin
+                    add_r$2$d = enter$1;
+                end
+                else begin
+                    add_r$2$d = t$1$q == cyc_add$2 - 32'h1;
+                end
+            end
+            if (view$2 == 2) begin
+                if (cyc$2 == firsts$2) begin
+                    act_r$2$d = enter$2;
+                end
+                else begin
+                    act_r$2$d = t$2$q == cyc$2 - 32'h1;
+                end
+            end
+            if (view_add$2 == 2) begin
+                if (cyc_add$2 == firsts$2) begin
+                    add_r$2$d = enter$2;
+                end
+                else begin
+                    add_r$2$d = t$2$q == cyc_add$2 - 32'h1;
+                end
+            end
+            if (view$2 == 3) begin
+                if (cyc$2 == firsts$3) begin
+                    act_r$2$d = enter$3;
+                end
+                else begin
+                    act_r$2$d = t$3$q == cyc$2 - 32'h1;
+                end
+            end
+            if (view_add$2 == 3) begin
+                if (cyc_add$2 == firsts$3) begin
+                    add_r$2$d = enter$3;
+                end
+                else begin
+                    add_r$2$d = t$3$q == cyc_add$2 - 32'h1;
+                end
+            end
+            if (view$2 == 4) begin
+                if (cyc$2 == firsts$4) begin
+                    act_r$2$d = enter$4;
+                end
+                else begin
+                    act_r$2$d = t$4$q == cyc$2 - 32'h1;
+                end
+            end
+            if (view_add$2 == 4) begin
+                if (cyc_add$2 == firsts$4) begin
+                    add_r$2$d = enter$4;
+                end
+                else begin
+                    add_r$2$d = t$4$q == cyc_add$2 - 32'h1;
+                end
+            end
+            if (view$2 == 5) begin
+                if (cyc$2 == firsts$5) begin
+                    act_r$2$d = enter$5;
+                end
+                else begin
+                    act_r$2$d = t$5$q == cyc$2 - 32'h1;
+                end
+            end
+            if (view_add$2 == 5) begin
+                if (cyc_add$2 == firsts$5) begin
+                    add_r$2$d = enter$5;
+                end
+                else begin
+                    add_r$2$d = t$5$q == cyc_add$2 - 32'h1;
+                end
+            end
         end
         act_r$3$clock = clock;
-        act_r$3$d = 1'b0;
+        act_r$3$d = act_r$3$q;
         add_r$3$clock = clock;
-        add_r$3$d = 1'b0;
-        if ((view$3 == 0) & (t$0$d == cyc$3)) begin
-            act_r$3$d = 1'b1;
-        end
-        if ((view_add$3 == 0) & (t$0$d == cyc_add$3)) begin
-            add_r$3$d = 1'b1;
-        end
-        if ((view$3 == 1) & (t$1$d == cyc$3)) begin
-            act_r$3$d = 1'b1;
-        end
-        if ((view_add$3 == 1) & (t$1$d == cyc_add$3)) begin
-            add_r$3$d = 1'b1;
-        end
-        if ((view$3 == 2) & (t$2$d == cyc$3)) begin
-            act_r$3$d = 1'b1;
-        end
-        if ((view_add$3 == 2) & (t$2$d == cyc_add$3)) begin
-            add_r$3$d = 1'b1;
-        end
-        if ((view$3 == 3) & (t$3$d == cyc$3)) begin
-            act_r$3$d = 1'b1;
-        end
-        if ((view_add$3 == 3) & (t$3$d == cyc_add$3)) begin
-            add_r$3$d = 1'b1;
-        end
-        if ((view$3 == 4) & (t$4$d == cyc$3)) begin
-            act_r$3$d = 1'b1;
-        end
-        if ((view_add$3 == 4) & (t$4$d == cyc_add$3)) begin
-            add_r$3$d = 1'b1;
-        end
-        if ((view$3 == 5) & (t$5$d == cyc$3)) begin
-            act_r$3$d = 1'b1;
-        end
-        if ((view_add$3 == 5) & (t$5$d == cyc_add$3)) begin
-            add_r$3$d = 1'b1;
+        add_r$3$d = add_r$3$q;
+        if (run) begin
+            act_r$3$d = 1'b0;
+            add_r$3$d = 1'b0;
+            if (view$3 == 0) begin
+                if (cyc$3 == firsts$0) begin
+                    act_r$3$d = enter$0;
+                end
+                else begin
+                    act_r$3$d = t$0$q == cyc$3 - 32'h1;
+                end
+            end
+            if (view_add$3 == 0) begin
+                if (cyc_add$3 == firsts$0) begin
+                    add_r$3$d = enter$0;
+                end
+                else begin
+                    add_r$3$d = t$0$q == cyc_add$3 - 32'h1;
+                end
+            end
+            if (view$3 == 1) begin
+                if (cyc$3 == firsts$1) begin
+                    act_r$3$d = enter$1;
+                end
+                else begin
+                    act_r$3$d = t$1$q == cyc$3 - 32'h1;
+                end
+            end
+            if (view_add$3 == 1) begin
+                if (cyc_add$3 == firsts$1) begin
+                    add_r$3$d = enter$1;
+                end
+                else begin
+                    add_r$3$d = t$1$q == cyc_add$3 - 32'h1;
+                end
+            end
+            if (view$3 == 2) begin
+                if (cyc$3 == firsts$2) begin
+                    act_r$3$d = enter$2;
+                end
+                else begin
+                    act_r$3$d = t$2$q == cyc$3 - 32'h1;
+                end
+            end
+            if (view_add$3 == 2) begin
+                if (cyc_add$3 == firsts$2) begin
+                    add_r$3$d = enter$2;
+                end
+                else begin
+                    add_r$3$d = t$2$q == cyc_add$3 - 32'h1;
+                end
+            end
+            if (view$3 == 3) begin
+                if (cyc$3 == firsts$3) begin
+                    act_r$3$d = enter$3;
+                end
+                else begin
+                    act_r$3$d = t$3$q == cyc$3 - 32'h1;
+                end
+            end
+            if (view_add$3 == 3) begin
+                if (cyc_add$3 == firsts$3) begin
+                    add_r$3$d = enter$3;
+                end
+                else begin
+                    add_r$3$d = t$3$q == cyc_add$3 - 32'h1;
+                end
+            end
+            if (view$3 == 4) begin
+                if (cyc$3 == firsts$4) begin
+                    act_r$3$d = enter$4;
+                end
+                else begin
+                    act_r$3$d = t$4$q == cyc$3 - 32'h1;
+                end
+            end
+            if (view_add$3 == 4) begin
+                if (cyc_add$3 == firsts$4) begin
+                    add_r$3$d = enter$4;
+                end
+                else begin
+                    add_r$3$d = t$4$q == cyc_add$3 - 32'h1;
+                end
+            end
+            if (view$3 == 5) begin
+                if (cyc$3 == firsts$5) begin
+                    act_r$3$d = enter$5;
+                end
+                else begin
+                    act_r$3$d = t$5$q == cyc$3 - 32'h1;
+                end
+            end
+            if (view_add$3 == 5) begin
+                if (cyc_add$3 == firsts$5) begin
+                    add_r$3$d = enter$5;
+                end
+                else begin
+                    add_r$3$d = t$5$q == cyc_add$3 - 32'h1;
+                end
+            end
         end
         act_r$4$clock = clock;
-        act_r$4$d = 1'b0;
+        act_r$4$d = act_r$4$q;
         add_r$4$clock = clock;
-        add_r$4$d = 1'b0;
-        if ((view$4 == 0) & (t$0$d == cyc$4)) begin
-            act_r$4$d = 1'b1;
-        end
-        if ((view_add$4 == 0) & (t$0$d == cyc_add$4)) begin
-            add_r$4$d = 1'b1;
-        end
-        if ((view$4 == 1) & (t$1$d == cyc$4)) begin
-            act_r$4$d = 1'b1;
-        end
-        if ((view_add$4 == 1) & (t$1$d == cyc_add$4)) begin
-            add_r$4$d = 1'b1;
-        end
-        if ((view$4 == 2) & (t$2$d == cyc$4)) begin
-            act_r$4$d = 1'b1;
-        end
-        if ((view_add$4 == 2) & (t$2$d == cyc_add$4)) begin
-            add_r$4$d = 1'b1;
-        end
-        if ((view$4 == 3) & (t$3$d == cyc$4)) begin
-            act_r$4$d = 1'b1;
-        end
-        if ((view_add$4 == 3) & (t$3$d == cyc_add$4)) begin
-            add_r$4$d = 1'b1;
-        end
-        if ((view$4 == 4) & (t$4$d == cyc$4)) begin
-            act_r$4$d = 1'b1;
-        end
-        if ((view_add$4 == 4) & (t$4$d == cyc_add$4)) begin
-            add_r$4$d = 1'b1;
-        end
-        if ((view$4 == 5) & (t$5$d == cyc$4)) begin
-            act_r$4$d = 1'b1;
-        end
-        if ((view_add$4 == 5) & (t$5$d == cyc_add$4)) begin
-            add_r$4$d = 1'b1;
+        add_r$4$d = add_r$4$q;
+        if (run) begin
+            act_r$4$d = 1'b0;
+            add_r$4$d = 1'b0;
+            if (view$4 == 0) begin
+                if (cyc$4 == firsts$0) begin
+                    act_r$4$d = enter$0;
+                end
+                else begin
+                    act_r$4$d = t$0$q == cyc$4 - 32'h1;
+                end
+            end
+            if (view_add$4 == 0) begin
+                if (cyc_add$4 == firsts$0) begin
+                    add_r$4$d = enter$0;
+                end
+                else begin
+                    add_r$4$d = t$0$q == cyc_add$4 - 32'h1;
+                end
+            end
+            if (view$4 == 1) begin
+                if (cyc$4 == firsts$1) begin
+                    act_r$4$d = enter$1;
+                end
+                else begin
+                    act_r$4$d = t$1$q == cyc$4 - 32'h1;
+                end
+            end
+            if (view_add$4 == 1) begin
+                if (cyc_add$4 == firsts$1) begin
+                    add_r$4$d = enter$1;
+                end
+                else begin
+                    add_r$4$d = t$1$q == cyc_add$4 - 32'h1;
+                end
+            end
+            if (view$4 == 2) begin
+                if (cyc$4 == firsts$2) begin
+                    act_r$4$d = enter$2;
+                end
+                else begin
+                    act_r$4$d = t$2$q == cyc$4 - 32'h1;
+                end
+            end
+            if (view_add$4 == 2) begin
+                if (cyc_add$4 == firsts$2) begin
+                    add_r$4$d = enter$2;
+                end
+                else begin
+                    add_r$4$d = t$2$q == cyc_add$4 - 32'h1;
+                end
+            end
+            if (view$4 == 3) begin
+                if (cyc$4 == firsts$3) begin
+                    act_r$4$d = enter$3;
+                end
+                else begin
+                    act_r$4$d = t$3$q == cyc$4 - 32'h1;
+                end
+            end
+            if (view_add$4 == 3) begin
+                if (cyc_add$4 == firsts$3) begin
+                    add_r$4$d = enter$3;
+                end
+                else begin
+                    add_r$4$d = t$3$q == cyc_add$4 - 32'h1;
+                end
+            end
+            if (view$4 == 4) begin
+                if (cyc$4 == firsts$4) begin
+                    act_r$4$d = enter$4;
+                end
+                else begin
+                    act_r$4$d = t$4$q == cyc$4 - 32'h1;
+                end
+            end
+            if (view_add$4 == 4) begin
+                if (cyc_add$4 == firsts$4) begin
+                    add_r$4$d = enter$4;
+                end
+                else begin
+                    add_r$4$d = t$4$q == cyc_add$4 - 32'h1;
+                end
+            end
+            if (view$4 == 5) begin
+                if (cyc$4 == firsts$5) begin
+                    act_r$4$d = enter$5;
+                end
+                else begin
+                    act_r$4$d = t$5$q == cyc$4 - 32'h1;
+                end
+            end
+            if (view_add$4 == 5) begin
+                if (cyc_add$4 == firsts$5) begin
+                    add_r$4$d = enter$5;
+                end
+                else begin
+                    add_r$4$d = t$5$q == cyc_add$4 - 32'h1;
+                end
+            end
         end
         act_r$5$clock = clock;
-        act_r$5$d = 1'b0;
+        act_r$5$d = act_r$5$q;
         add_r$5$clock = clock;
-        add_r$5$d = 1'b0;
-        if ((view$5 == 0) & (t$0$d == cyc$5)) begin
-            act_r$5$d = 1'b1;
-        end
-        if ((view_add$5 == 0) & (t$0$d == cyc_add$5)) begin
-            add_r$5$d = 1'b1;
-        end
-        if ((view$5 == 1) & (t$1$d == cyc$5)) begin
-            act_r$5$d = 1'b1;
-        end
-        if ((view_add$5 == 1) & (t$1$d == cyc_add$5)) begin
-            add_r$5$d = 1'b1;
-        end
-        if ((view$5 == 2) & (t$2$d == cyc$5)) begin
-            act_r$5$d = 1'b1;
-        end
-        if ((view_add$5 == 2) & (t$2$d == cyc_add$5)) begin
-            add_r$5$d = 1'b1;
-        end
-        if ((view$5 == 3) & (t$3$d == cyc$5)) begin
-            act_r$5$d = 1'b1;
-        end
-        if ((view_add$5 == 3) & (t$3$d == cyc_add$5)) begin
-            add_r$5$d = 1'b1;
-        end
-        if ((view$5 == 4) & (t$4$d == cyc$5)) begin
-            act_r$5$d = 1'b1;
-        end
-        if ((view_add$5 == 4) & (t$4$d == cyc_add$5)) begin
-            add_r$5$d = 1'b1;
-        end
-        if ((view$5 == 5) & (t$5$d == cyc$5)) begin
-            act_r$5$d = 1'b1;
-        end
-        if ((view_add$5 == 5) & (t$5$d == cyc_add$5)) begin
-            add_r$5$d = 1'b1;
+        add_r$5$d = add_r$5$q;
+        if (run) begin
+            act_r$5$d = 1'b0;
+            add_r$5$d = 1'b0;
+            if (view$5 == 0) begin
+                if (cyc$5 == firsts$0) begin
+                    act_r$5$d = enter$0;
+                end
+                else begin
+                    act_r$5$d = t$0$q == cyc$5 - 32'h1;
+                end
+            end
+            if (view_add$5 == 0) begin
+                if (cyc_add$5 == firsts$0) begin
+                    add_r$5$d = enter$0;
+                end
+                else begin
+                    add_r$5$d = t$0$q == cyc_add$5 - 32'h1;
+                end
+            end
+            if (view$5 == 1) begin
+                if (cyc$5 == firsts$1) begin
+                    act_r$5$d = enter$1;
+                end
+                else begin
+                    act_r$5$d = t$1$q == cyc$5 - 32'h1;
+                end
+            end
+            if (view_add$5 == 1) begin
+                if (cyc_add$5 == firsts$1) begin
+                    add_r$5$d = enter$1;
+                end
+                else begin
+                    add_r$5$d = t$1$q == cyc_add$5 - 32'h1;
+                end
+            end
+            if (view$5 == 2) begin
+                if (cyc$5 == firsts$2) begin
+                    act_r$5$d = enter$2;
+                end
+                else begin
+                    act_r$5$d = t$2$q == cyc$5 - 32'h1;
+                end
+            end
+            if (view_add$5 == 2) begin
+                if (cyc_add$5 == firsts$2) begin
+                    add_r$5$d = enter$2;
+                end
+                else begin
+                    add_r$5$d = t$2$q == cyc_add$5 - 32'h1;
+                end
+            end
+            if (view$5 == 3) begin
+                if (cyc$5 == firsts$3) begin
+                    act_r$5$d = enter$3;
+                end
+                else begin
+                    act_r$5$d = t$3$q == cyc$5 - 32'h1;
+                end
+            end
+            if (view_add$5 == 3) begin
+                if (cyc_add$5 == firsts$3) begin
+                    add_r$5$d = enter$3;
+                end
+                else begin
+                    add_r$5$d = t$3$q == cyc_add$5 - 32'h1;
+                end
+            end
+            if (view$5 == 4) begin
+                if (cyc$5 == firsts$4) begin
+                    act_r$5$d = enter$4;
+                end
+                else begin
+                    act_r$5$d = t$4$q == cyc$5 - 32'h1;
+                end
+            end
+            if (view_add$5 == 4) begin
+                if (cyc_add$5 == firsts$4) begin
+                    add_r$5$d = enter$4;
+                end
+                else begin
+                    add_r$5$d = t$4$q == cyc_add$5 - 32'h1;
+                end
+            end
+            if (view$5 == 5) begin
+                if (cyc$5 == firsts$5) begin
+                    act_r$5$d = enter$5;
+                end
+                else begin
+                    act_r$5$d = t$5$q == cyc$5 - 32'h1;
+                end
+            end
+            if (view_add$5 == 5) begin
+                if (cyc_add$5 == firsts$5) begin
+                    add_r$5$d = enter$5;
+                end
+                else begin
+                    add_r$5$d = t$5$q == cyc_add$5 - 32'h1;
+                end
+            end
         end
         act_r$6$clock = clock;
-        act_r$6$d = 1'b0;
+        act_r$6$d = act_r$6$q;
         add_r$6$clock = clock;
-        add_r$6$d = 1'b0;
-        if ((view$6 == 0) & (t$0$d == cyc$6)) begin
-            act_r$6$d = 1'b1;
-        end
-        if ((view_add$6 == 0) & (t$0$d == cyc_add$6)) begin
-            add_r$6$d = 1'b1;
-        end
-        if ((view$6 == 1) & (t$1$d == cyc$6)) begin
-            act_r$6$d = 1'b1;
-        end
-        if ((view_add$6 == 1) & (t$1$d == cyc_add$6)) begin
-            add_r$6$d = 1'b1;
-        end
-        if ((view$6 == 2) & (t$2$d == cyc$6)) begin
-            act_r$6$d = 1'b1;
-        end
-        if ((view_add$6 == 2) & (t$2$d == cyc_add$6)) begin
-            add_r$6$d = 1'b1;
-        end
-        if ((view$6 == 3) & (t$3$d == cyc$6)) begin
-            act_r$6$d = 1'b1;
-        end
-        if ((view_add$6 == 3) & (t$3$d == cyc_add$6)) begin
-            add_r$6$d = 1'b1;
-        end
-        if ((view$6 == 4) & (t$4$d == cyc$6)) begin
-            act_r$6$d = 1'b1;
-        end
-        if ((view_add$6 == 4) & (t$4$d == cyc_add$6)) begin
-            add_r$6$d = 1'b1;
-        end
-        if ((view$6 == 5) & (t$5$d == cyc$6)) begin
-            act_r$6$d = 1'b1;
-        end
-        if ((view_add$6 == 5) & (t$5$d == cyc_add$6)) begin
-            add_r$6$d = 1'b1;
+        add_r$6$d = add_r$6$q;
+        if (run) begin
+            act_r$6$d = 1'b0;
+            add_r$6$d = 1'b0;
+            if (view$6 == 0) begin
+                if (cyc$6 == firsts$0) begin
+                    act_r$6$d = enter$0;
+                end
+                else begin
+                    act_r$6$d = t$0$q == cyc$6 - 32'h1;
+                end
+            end
+            if (view_add$6 == 0) begin
+                if (cyc_add$6 == firsts$0) begin
+                    add_r$6$d = enter$0;
+                end
+                else begin
+                    add_r$6$d = t$0$q == cyc_add$6 - 32'h1;
+                end
+            end
+            if (view$6 == 1) begin
+                if (cyc$6 == firsts$1) begin
+                    act_r$6$d = enter$1;
+                end
+                else begin
+                    act_r$6$d = t$1$q == cyc$6 - 32'h1;
+                end
+            end
+            if (view_add$6 == 1) begin
+                if (cyc_add$6 == firsts$1) begin
+                    add_r$6$d = enter$1;
+                end
+                else begin
+                    add_r$6$d = t$1$q == cyc_add$6 - 32'h1;
+                end
+            end
+            if (view$6 == 2) begin
+                if (cyc$6 == firsts$2) begin
+                    act_r$6$d = enter$2;
+                end
+                else begin
+                    act_r$6$d = t$2$q == cyc$6 - 32'h1;
+                end
+            end
+            if (view_add$6 == 2) begin
+                if (cyc_add$6 == firsts$2) begin
+                    add_r$6$d = enter$2;
+                end
+                else begin
+                    add_r$6$d = t$2$q == cyc_add$6 - 32'h1;
+                end
+            end
+            if (view$6 == 3) begin
+                if (cyc$6 == firsts$3) begin
+                    act_r$6$d = enter$3;
+                end
+                else begin
+                    act_r$6$d = t$3$q == cyc$6 - 32'h1;
+                end
+            end
+            if (view_add$6 == 3) begin
+                if (cyc_add$6 == firsts$3) begin
+                    add_r$6$d = enter$3;
+                end
+                else begin
+                    add_r$6$d = t$3$q == cyc_add$6 - 32'h1;
+                end
+            end
+            if (view$6 == 4) begin
+                if (cyc$6 == firsts$4) begin
+                    act_r$6$d = enter$4;
+                end
+                else begin
+                    act_r$6$d = t$4$q == cyc$6 - 32'h1;
+                end
+            end
+            if (view_add$6 == 4) begin
+                if (cyc_add$6 == firsts$4) begin
+                    add_r$6$d = enter$4;
+                end
+                else begin
+                    add_r$6$d = t$4$q == cyc_add$6 - 32'h1;
+                end
+            end
+            if (view$6 == 5) begin
+                if (cyc$6 == firsts$5) begin
+                    act_r$6$d = enter$5;
+                end
+                else begin
+                    act_r$6$d = t$5$q == cyc$6 - 32'h1;
+                end
+            end
+            if (view_add$6 == 5) begin
+                if (cyc_add$6 == firsts$5) begin
+                    add_r$6$d = enter$5;
+                end
+                else begin
+                    add_r$6$d = t$5$q == cyc_add$6 - 32'h1;
+                end
+            end
         end
         act_r$7$clock = clock;
-        act_r$7$d = 1'b0;
+        act_r$7$d = act_r$7$q;
         add_r$7$clock = clock;
-        add_r$7$d = 1'b0;
-        if ((view$7 == 0) & (t$0$d == cyc$7)) begin
-            act_r$7$d = 1'b1;
-        end
-        if ((view_add$7 == 0) & (t$0$d == cyc_add$7)) begin
-            add_r$7$d = 1'b1;
-        end
-        if ((view$7 == 1) & (t$1$d == cyc$7)) begin
-            act_r$7$d = 1'b1;
-        end
-        if ((view_add$7 == 1) & (t$1$d == cyc_add$7)) begin
-            add_r$7$d = 1'b1;
-        end
-        if ((view$7 == 2) & (t$2$d == cyc$7)) begin
-            act_r$7$d = 1'b1;
-        end
-        if ((view_add$7 == 2) & (t$2$d == cyc_add$7)) begin
-            add_r$7$d = 1'b1;
-        end
-        if ((view$7 == 3) & (t$3$d == cyc$7)) begin
-            act_r$7$d = 1'b1;
-        end
-        if ((view_add$7 == 3) & (t$3$d == cyc_add$7)) begin
-            add_r$7$d = 1'b1;
-        end
-        if ((view$7 == 4) & (t$4$d == cyc$7)) begin
-            act_r$7$d = 1'b1;
-        end
-        if ((view_add$7 == 4) & (t$4$d == cyc_add$7)) begin
-            add_r$7$d = 1'b1;
-        end
-        if ((view$7 == 5) & (t$5$d == cyc$7)) begin
-            act_r$7$d = 1'b1;
-        end
-        if ((view_add$7 == 5) & (t$5$d == cyc_add$7)) begin
-            add_r$7$d = 1'b1;
+        add_r$7$d = add_r$7$q;
+        if (run) begin
+            act_r$7$d = 1'b0;
+            add_r$7$d = 1'b0;
+            if (view$7 == 0) begin
+                if (cyc$7 == firsts$0) begin
+                    act_r$7$d = enter$0;
+                end
+                else begin
+                    act_r$7$d = t$0$q == cyc$7 - 32'h1;
+                end
+            end
+            if (view_add$7 == 0) begin
+                if (cyc_add$7 == firsts$0) begin
+                    add_r$7$d = enter$0;
+                end
+                else begin
+                    add_r$7$d = t$0$q == cyc_add$7 - 32'h1;
+                end
+            end
+            if (view$7 == 1) begin
+                if (cyc$7 == firsts$1) begin
+                    act_r$7$d = enter$1;
+                end
+                else begin
+                    act_r$7$d = t$1$q == cyc$7 - 32'h1;
+                end
+            end
+            if (view_add$7 == 1) begin
+                if (cyc_add$7 == firsts$1) begin
+                    add_r$7$d = enter$1;
+                end
+                else begin
+                    add_r$7$d = t$1$q == cyc_add$7 - 32'h1;
+                end
+            end
+            if (view$7 == 2) begin
+                if (cyc$7 == firsts$2) begin
+                    act_r$7$d = enter$2;
+                end
+                else begin
+                    act_r$7$d = t$2$q == cyc$7 - 32'h1;
+                end
+            end
+            if (view_add$7 == 2) begin
+                if (cyc_add$7 == firsts$2) begin
+                    add_r$7$d = enter$2;
+                end
+                else begin
+                    add_r$7$d = t$2$q == cyc_add$7 - 32'h1;
+                end
+            end
+            if (view$7 == 3) begin
+                if (cyc$7 == firsts$3) begin
+                    act_r$7$d = enter$3;
+                end
+                else begin
+                    act_r$7$d = t$3$q == cyc$7 - 32'h1;
+                end
+            end
+            if (view_add$7 == 3) begin
+                if (cyc_add$7 == firsts$3) begin
+                    add_r$7$d = enter$3;
+                end
+                else begin
+                    add_r$7$d = t$3$q == cyc_add$7 - 32'h1;
+                end
+            end
+            if (view$7 == 4) begin
+                if (cyc$7 == firsts$4) begin
+                    act_r$7$d = enter$4;
+                end
+                else begin
+                    act_r$7$d = t$4$q == cyc$7 - 32'h1;
+                end
+            end
+            if (view_add$7 == 4) begin
+                if (cyc_add$7 == firsts$4) begin
+                    add_r$7$d = enter$4;
+                end
+                else begin
+                    add_r$7$d = t$4$q == cyc_add$7 - 32'h1;
+                end
+            end
+            if (view$7 == 5) begin
+                if (cyc$7 == firsts$5) begin
+                    act_r$7$d = enter$5;
+                end
+                else begin
+                    act_r$7$d = t$5$q == cyc$7 - 32'h1;
+                end
+            end
+            if (view_add$7 == 5) begin
+                if (cyc_add$7 == firsts$5) begin
+                    add_r$7$d = enter$5;
+                end
+                else begin
+                    add_r$7$d = t$5$q == cyc_add$7 - 32'h1;
+                end
+            end
         end
         act_r$8$clock = clock;
-        act_r$8$d = 1'b0;
+        act_r$8$d = act_r$8$q;
         add_r$8$clock = clock;
-        add_r$8$d = 1'b0;
-        if ((view$8 == 0) & (t$0$d == cyc$8)) begin
-            act_r$8$d = 1'b1;
-        end
-        if ((view_add$8 == 0) & (t$0$d == cyc_add$8)) begin
-            add_r$8$d = 1'b1;
-        end
-        if ((view$8 == 1) & (t$1$d == cyc$8)) begin
-            act_r$8$d = 1'b1;
-        end
-        if ((view_add$8 == 1) & (t$1$d == cyc_add$8)) begin
-            add_r$8$d = 1'b1;
-        end
-        if ((view$8 == 2) & (t$2$d == cyc$8)) begin
-            act_r$8$d = 1'b1;
-        end
-        if ((view_add$8 == 2) & (t$2$d == cyc_add$8)) begin
-            add_r$8$d = 1'b1;
-        end
-        if ((view$8 == 3) & (t$3$d == cyc$8)) begin
-            act_r$8$d = 1'b1;
-        end
-        if ((view_add$8 == 3) & (t$3$d == cyc_add$8)) begin
-            add_r$8$d = 1'b1;
-        end
-        if ((view$8 == 4) & (t$4$d == cyc$8)) begin
-            act_r$8$d = 1'b1;
-        end
-        if ((view_add$8 == 4) & (t$4$d == cyc_add$8)) begin
-            add_r$8$d = 1'b1;
-        end
-        if ((view$8 == 5) & (t$5$d == cyc$8)) begin
-            act_r$8$d = 1'b1;
-        end
-        if ((view_add$8 == 5) & (t$5$d == cyc_add$8)) begin
-            add_r$8$d = 1'b1;
+        add_r$8$d = add_r$8$q;
+        if (run) begin
+            act_r$8$d = 1'b0;
+            add_r$8$d = 1'b0;
+            if (view$8 == 0) begin
+                if (cyc$8 == firsts$0) begin
+                    act_r$8$d = enter$0;
+                end
+                else begin
+                    act_r$8$d = t$0$q == cyc$8 - 32'h1;
+                end
+            end
+            if (view_add$8 == 0) begin
+                if (cyc_add$8 == firsts$0) begin
+                    add_r$8$d = enter$0;
+                end
+                else begin
+                    add_r$8$d = t$0$q == cyc_add$8 - 32'h1;
+                end
+            end
+            if (view$8 == 1) begin
+                if (cyc$8 == firsts$1) begin
+                    act_r$8$d = enter$1;
+                end
+                else begin
+                    act_r$8$d = t$1$q == cyc$8 - 32'h1;
+                end
+            end
+            if (view_add$8 == 1) begin
+                if (cyc_add$8 == firsts$1) begin
+                    add_r$8$d = enter$1;
+                end
+                else begin
+                    add_r$8$d = t$1$q == cyc_add$8 - 32'h1;
+                end
+            end
+            if (view$8 == 2) begin
+                if (cyc$8 == firsts$2) begin
+                    act_r$8$d = enter$2;
+                end
+                else begin
+                    act_r$8$d = t$2$q == cyc$8 - 32'h1;
+                end
+            end
+            if (view_add$8 == 2) begin
+                if (cyc_add$8 == firsts$2) begin
+                    add_r$8$d = enter$2;
+                end
+                else begin
+                    add_r$8$d = t$2$q == cyc_add$8 - 32'h1;
+                end
+            end
+            if (view$8 == 3) begin
+                if (cyc$8 == firsts$3) begin
+                    act_r$8$d = enter$3;
+                end
+                else begin
+                    act_r$8$d = t$3$q == cyc$8 - 32'h1;
+                end
+            end
+            if (view_add$8 == 3) begin
+                if (cyc_add$8 == firsts$3) begin
+                    add_r$8$d = enter$3;
+                end
+                else begin
+                    add_r$8$d = t$3$q == cyc_add$8 - 32'h1;
+                end
+            end
+            if (view$8 == 4) begin
+                if (cyc$8 == firsts$4) begin
+                    act_r$8$d = enter$4;
+                end
+                else begin
+                    act_r$8$d = t$4$q == cyc$8 - 32'h1;
+                end
+            end
+            if (view_add$8 == 4) begin
+                if (cyc_add$8 == firsts$4) begin
+                    add_r$8$d = enter$4;
+                end
+                else begin
+                    add_r$8$d = t$4$q == cyc_add$8 - 32'h1;
+                end
+            end
+            if (view$8 == 5) begin
+                if (cyc$8 == firsts$5) begin
+                    act_r$8$d = enter$5;
+                end
+                else begin
+                    act_r$8$d = t$5$q == cyc$8 - 32'h1;
+                end
+            end
+            if (view_add$8 == 5) begin
+                if (cyc_add$8 == firsts$5) begin
+                    add_r$8$d = enter$5;
+                end
+                else begin
+                    add_r$8$d = t$5$q == cyc_add$8 - 32'h1;
+                end
+            end
         end
         act_r$9$clock = clock;
-        act_r$9$d = 1'b0;
+        act_r$9$d = act_r$9$q;
         add_r$9$clock = clock;
-        add_r$9$d = 1'b0;
-        if ((view$9 == 0) & (t$0$d == cyc$9)) begin
-            act_r$9$d = 1'b1;
-        end
-        if ((view_add$9 == 0) & (t$0$d == cyc_add$9)) begin
-            add_r$9$d = 1'b1;
-        end
-        if ((view$9 == 1) & (t$1$d == cyc$9)) begin
-            act_r$9$d = 1'b1;
-        end
-        if ((view_add$9 == 1) & (t$1$d == cyc_add$9)) begin
-            add_r$9$d = 1'b1;
-        end
-        if ((view$9 == 2) & (t$2$d == cyc$9)) begin
-            act_r$9$d = 1'b1;
-        end
-        if ((view_add$9 == 2) & (t$2$d == cyc_add$9)) begin
-            add_r$9$d = 1'b1;
-        end
-        if ((view$9 == 3) & (t$3$d == cyc$9)) begin
-            act_r$9$d = 1'b1;
-        end
-        if ((view_add$9 == 3) & (t$3$d == cyc_add$9)) begin
-            add_r$9$d = 1'b1;
-        end
-        if ((view$9 == 4) & (t$4$d == cyc$9)) begin
-            act_r$9$d = 1'b1;
-        end
-        if ((view_add$9 == 4) & (t$4$d == cyc_add$9)) begin
-            add_r$9$d = 1'b1;
-        end
-        if ((view$9 == 5) & (t$5$d == cyc$9)) begin
-            act_r$9$d = 1'b1;
-        end
-        if ((view_add$9 == 5) & (t$5$d == cyc_add$9)) begin
-            add_r$9$d = 1'b1;
+        add_r$9$d = add_r$9$q;
+        if (run) begin
+            act_r$9$d = 1'b0;
+            add_r$9$d = 1'b0;
+            if (view$9 == 0) begin
+                if (cyc$9 == firsts$0) begin
+                    act_r$9$d = enter$0;
+                end
+                else begin
+                    act_r$9$d = t$0$q == cyc$9 - 32'h1;
+                end
+            end
+            if (view_add$9 == 0) begin
+                if (cyc_add$9 == firsts$0) begin
+                    add_r$9$d = enter$0;
+                end
+                else begin
+                    add_r$9$d = t$0$q == cyc_add$9 - 32'h1;
+                end
+            end
+            if (view$9 == 1) begin
+                if (cyc$9 == firsts$1) begin
+                    act_r$9$d = enter$1;
+                end
+                else begin
+                    act_r$9$d = t$1$q == cyc$9 - 32'h1;
+                end
+            end
+            if (view_add$9 == 1) begin
+                if (cyc_add$9 == firsts$1) begin
+                    add_r$9$d = enter$1;
+                end
+                else begin
+                    add_r$9$d = t$1$q == cyc_add$9 - 32'h1;
+                end
+            end
+            if (view$9 == 2) begin
+                if (cyc$9 == firsts$2) begin
+                    act_r$9$d = enter$2;
+                end
+                else begin
+                    act_r$9$d = t$2$q == cyc$9 - 32'h1;
+                end
+            end
+            if (view_add$9 == 2) begin
+                if (cyc_add$9 == firsts$2) begin
+                    add_r$9$d = enter$2;
+                end
+                else begin
+                    add_r$9$d = t$2$q == cyc_add$9 - 32'h1;
+                end
+            end
+            if (view$9 == 3) begin
+                if (cyc$9 == firsts$3) begin
+                    act_r$9$d = enter$3;
+                end
+                else begin
+                    act_r$9$d = t$3$q == cyc$9 - 32'h1;
+                end
+            end
+            if (view_add$9 == 3) begin
+                if (cyc_add$9 == firsts$3) begin
+                    add_r$9$d = enter$3;
+                end
+                else begin
+                    add_r$9$d = t$3$q == cyc_add$9 - 32'h1;
+                end
+            end
+            if (view$9 == 4) begin
+                if (cyc$9 == firsts$4) begin
+                    act_r$9$d = enter$4;
+                end
+                else begin
+                    act_r$9$d = t$4$q == cyc$9 - 32'h1;
+                end
+            end
+            if (view_add$9 == 4) begin
+                if (cyc_add$9 == firsts$4) begin
+                    add_r$9$d = enter$4;
+                end
+                else begin
+                    add_r$9$d = t$4$q == cyc_add$9 - 32'h1;
+                end
+            end
+            if (view$9 == 5) begin
+                if (cyc$9 == firsts$5) begin
+                    act_r$9$d = enter$5;
+                end
+                else begin
+                    act_r$9$d = t$5$q == cyc$9 - 32'h1;
+                end
+            end
+            if (view_add$9 == 5) begin
+                if (cyc_add$9 == firsts$5) begin
+                    add_r$9$d = enter$5;
+                end
+                else begin
+                    add_r$9$d = t$5$q == cyc_add$9 - 32'h1;
+                end
+            end
         end
         act_r$10$clock = clock;
-        act_r$10$d = 1'b0;
+        act_r$10$d = act_r$10$q;
         add_r$10$clock = clock;
-        add_r$10$d = 1'b0;
-        if ((view$10 == 0) & (t$0$d == cyc$10)) begin
-            act_r$10$d = 1'b1;
-        end
-        if ((view_add$10 == 0) & (t$0$d == cyc_add$10)) begin
-            add_r$10$d = 1'b1;
-        end
-        if ((view$10 == 1) & (t$1$d == cyc$10)) begin
-            act_r$10$d = 1'b1;
-        end
-        if ((view_add$10 == 1) & (t$1$d == cyc_add$10)) begin
-            add_r$10$d = 1'b1;
-        end
-        if ((view$10 == 2) & (t$2$d == cyc$10)) begin
-            act_r$10$d = 1'b1;
-        end
-        if ((view_add$10 == 2) & (t$2$d == cyc_add$10)) begin
-            add_r$10$d = 1'b1;
-        end
-        if ((view$10 == 3) & (t$3$d == cyc$10)) begin
-            act_r$10$d = 1'b1;
-        end
-        if ((view_add$10 == 3) & (t$3$d == cyc_add$10)) begin
-            add_r$10$d = 1'b1;
-        end
-        if ((view$10 == 4) & (t$4$d == cyc$10)) begin
-            act_r$10$d = 1'b1;
-        end
-        if ((view_add$10 == 4) & (t$4$d == cyc_add$10)) begin
-            add_r$10$d = 1'b1;
-        end
-        if ((view$10 == 5) & (t$5$d == cyc$10)) begin
-            act_r$10$d = 1'b1;
-        end
-        if ((view_add$10 == 5) & (t$5$d == cyc_add$10)) begin
-            add_r$10$d = 1'b1;
+        add_r$10$d = add_r$10$q;
+        if (run) begin
+            act_r$10$d = 1'b0;
+            add_r$10$d = 1'b0;
+            if (view$10 == 0) begin
+                if (cyc$10 == firsts$0) begin
+                    act_r$10$d = enter$0;
+                end
+                else begin
+                    act_r$10$d = t$0$q == cyc$10 - 32'h1;
+                end
+            end
+            if (view_add$10 == 0) begin
+                if (cyc_add$10 == firsts$0) begin
+                    add_r$10$d = enter$0;
+                end
+                else begin
+                    add_r$10$d = t$0$q == cyc_add$10 - 32'h1;
+                end
+            end
+            if (view$10 == 1) begin
+                if (cyc$10 == firsts$1) begin
+                    act_r$10$d = enter$1;
+                end
+                else begin
+                    act_r$10$d = t$1$q == cyc$10 - 32'h1;
+                end
+            end
+            if (view_add$10 == 1) begin
+                if (cyc_add$10 == firsts$1) begin
+                    add_r$10$d = enter$1;
+                end
+                else begin
+                    add_r$10$d = t$1$q == cyc_add$10 - 32'h1;
+                end
+            end
+            if (view$10 == 2) begin
+                if (cyc$10 == firsts$2) begin
+                    act_r$10$d = enter$2;
+                end
+                else begin
+                    act_r$10$d = t$2$q == cyc$10 - 32'h1;
+                end
+            end
+            if (view_add$10 == 2) begin
+                if (cyc_add$10 == firsts$2) begin
+                    add_r$10$d = enter$2;
+                end
+                else begin
+                    add_r$10$d = t$2$q == cyc_add$10 - 32'h1;
+                end
+            end
+            if (view$10 == 3) begin
+                if (cyc$10 == firsts$3) begin
+                    act_r$10$d = enter$3;
+                end
+                else begin
+                    act_r$10$d = t$3$q == cyc$10 - 32'h1;
+                end
+            end
+            if (view_add$10 == 3) begin
+                if (cyc_add$10 == firsts$3) begin
+                    add_r$10$d = enter$3;
+                end
+                else begin
+                    add_r$10$d = t$3$q == cyc_add$10 - 32'h1;
+                end
+            end
+            if (view$10 == 4) begin
+                if (cyc$10 == firsts$4) begin
+                    act_r$10$d = enter$4;
+                end
+                else begin
+                    act_r$10$d = t$4$q == cyc$10 - 32'h1;
+                end
+            end
+            if (view_add$10 == 4) begin
+                if (cyc_add$10 == firsts$4) begin
+                    add_r$10$d = enter$4;
+                end
+                else begin
+                    add_r$10$d = t$4$q == cyc_add$10 - 32'h1;
+                end
+            end
+            if (view$10 == 5) begin
+                if (cyc$10 == firsts$5) begin
+                    act_r$10$d = enter$5;
+                end
+                else begin
+                    act_r$10$d = t$5$q == cyc$10 - 32'h1;
+                end
+            end
+            if (view_add$10 == 5) begin
+                if (cyc_add$10 == firsts$5) begin
+                    add_r$10$d = enter$5;
+                end
+                else begin
+                    add_r$10$d = t$5$q == cyc_add$10 - 32'h1;
+                end
+            end
         end
         act_r$11$clock = clock;
-        act_r$11$d = 1'b0;
+        act_r$11$d = act_r$11$q;
         add_r$11$clock = clock;
-        add_r$11$d = 1'b0;
-        if ((view$11 == 0) & (t$0$d == cyc$11)) begin
-            act_r$11$d = 1'b1;
-        end
-        if ((view_add$11 == 0) & (t$0$d == cyc_add$11)) begin
-            add_r$11$d = 1'b1;
-        end
-        if ((view$11 == 1) & (t$1$d == cyc$11)) begin
-            act_r$11$d = 1'b1;
-        end
-        if ((view_add$11 == 1) & (t$1$d == cyc_add$11)) begin
-            add_r$11$d = 1'b1;
-        end
-        if ((view$11 == 2) & (t$2$d == cyc$11)) begin
-            act_r$11$d = 1'b1;
-        end
-        if ((view_add$11 == 2) & (t$2$d == cyc_add$11)) begin
-            add_r$11$d = 1'b1;
-        end
-        if ((view$11 == 3) & (t$3$d == cyc$11)) begin
-            act_r$11$d = 1'b1;
-        end
-        if ((view_add$11 == 3) & (t$3$d == cyc_add$11)) begin
-            add_r$11$d = 1'b1;
-        end
-        if ((view$11 == 4) & (t$4$d == cyc$11)) begin
-            act_r$11$d = 1'b1;
-        end
-        if ((view_add$11 == 4) & (t$4$d == cyc_add$11)) begin
-            add_r$11$d = 1'b1;
-        end
-        if ((view$11 == 5) & (t$5$d == cyc$11)) begin
-            act_r$11$d = 1'b1;
-        end
-        if ((view_add$11 == 5) & (t$5$d == cyc_add$11)) begin
-            add_r$11$d = 1'b1;
+        add_r$11$d = add_r$11$q;
+        if (run) begin
+            act_r$11$d = 1'b0;
+            add_r$11$d = 1'b0;
+            if (view$11 == 0) begin
+                if (cyc$11 == firsts$0) begin
+                    act_r$11$d = enter$0;
+                end
+                else begin
+                    act_r$11$d = t$0$q == cyc$11 - 32'h1;
+                end
+            end
+            if (view_add$11 == 0) begin
+                if (cyc_add$11 == firsts$0) begin
+                    add_r$11$d = enter$0;
+                end
+                else begin
+                    add_r$11$d = t$0$q == cyc_add$11 - 32'h1;
+                end
+            end
+            if (view$11 == 1) begin
+                if (cyc$11 == firsts$1) begin
+                    act_r$11$d = enter$1;
+                end
+                else begin
+                    act_r$11$d = t$1$q == cyc$11 - 32'h1;
+                end
+            end
+            if (view_add$11 == 1) begin
+                if (cyc_add$11 == firsts$1) begin
+                    add_r$11$d = enter$1;
+                end
+                else begin
+                    add_r$11$d = t$1$q == cyc_add$11 - 32'h1;
+                end
+            end
+            if (view$11 == 2) begin
+                if (cyc$11 == firsts$2) begin
+                    act_r$11$d = enter$2;
+                end
+                else begin
+                    act_r$11$d = t$2$q == cyc$11 - 32'h1;
+                end
+            end
+            if (view_add$11 == 2) begin
+                if (cyc_add$11 == firsts$2) begin
+                    add_r$11$d = enter$2;
+                end
+                else begin
+                    add_r$11$d = t$2$q == cyc_add$11 - 32'h1;
+                end
+            end
+            if (view$11 == 3) begin
+                if (cyc$11 == firsts$3) begin
+                    act_r$11$d = enter$3;
+                end
+                else begin
+                    act_r$11$d = t$3$q == cyc$11 - 32'h1;
+                end
+            end
+            if (view_add$11 == 3) begin
+                if (cyc_add$11 == firsts$3) begin
+                    add_r$11$d = enter$3;
+                end
+                else begin
+                    add_r$11$d = t$3$q == cyc_add$11 - 32'h1;
+                end
+            end
+            if (view$11 == 4) begin
+                if (cyc$11 == firsts$4) begin
+                    act_r$11$d = enter$4;
+                end
+                else begin
+                    act_r$11$d = t$4$q == cyc$11 - 32'h1;
+                end
+            end
+            if (view_add$11 == 4) begin
+                if (cyc_add$11 == firsts$4) begin
+                    add_r$11$d = enter$4;
+                end
+                else begin
+                    add_r$11$d = t$4$q == cyc_add$11 - 32'h1;
+                end
+            end
+            if (view$11 == 5) begin
+                if (cyc$11 == firsts$5) begin
+                    act_r$11$d = enter$5;
+                end
+                else begin
+                    act_r$11$d = t$5$q == cyc$11 - 32'h1;
+                end
+            end
+            if (view_add$11 == 5) begin
+                if (cyc_add$11 == firsts$5) begin
+                    add_r$11$d = enter$5;
+                end
+                else begin
+                    add_r$11$d = t$5$q == cyc_add$11 - 32'h1;
+                end
+            end
         end
         act_r$12$clock = clock;
-        act_r$12$d = 1'b0;
+        act_r$12$d = act_r$12$q;
         add_r$12$clock = clock;
-        add_r$12$d = 1'b0;
-        if ((view$12 == 0) & (t$0$d == cyc$12)) begin
-            act_r$12$d = 1'b1;
-        end
-        if ((view_add$12 == 0) & (t$0$d == cyc_add$12)) begin
-            add_r$12$d = 1'b1;
-        end
-        if ((view$12 == 1) & (t$1$d == cyc$12)) begin
-            act_r$12$d = 1'b1;
-        end
-        if ((view_add$12 == 1) & (t$1$d == cyc_add$12)) begin
-            add_r$12$d = 1'b1;
-        end
-        if ((view$12 == 2) & (t$2$d == cyc$12)) begin
-            act_r$12$d = 1'b1;
-        end
-        if ((view_add$12 == 2) & (t$2$d == cyc_add$12)) begin
-            add_r$12$d = 1'b1;
-        end
-        if ((view$12 == 3) & (t$3$d == cyc$12)) begin
-            act_r$12$d = 1'b1;
-        end
-        if ((view_add$12 == 3) & (t$3$d == cyc_add$12)) begin
-            add_r$12$d = 1'b1;
-        end
-        if ((view$12 == 4) & (t$4$d == cyc$12)) begin
-            act_r$12$d = 1'b1;
-        end
-        if ((view_add$12 == 4) & (t$4$d == cyc_add$12)) begin
-            add_r$12$d = 1'b1;
-        end
-        if ((view$12 == 5) & (t$5$d == cyc$12)) begin
-            act_r$12$d = 1'b1;
-        end
-        if ((view_add$12 == 5) & (t$5$d == cyc_add$12)) begin
-            add_r$12$d = 1'b1;
+        add_r$12$d = add_r$12$q;
+        if (run) begin
+            act_r$12$d = 1'b0;
+            add_r$12$d = 1'b0;
+            if (view$12 == 0) begin
+                if (cyc$12 == firsts$0) begin
+                    act_r$12$d = enter$0;
+                end
+                else begin
+                    act_r$12$d = t$0$q == cyc$12 - 32'h1;
+                end
+            end
+            if (view_add$12 == 0) begin
+                if (cyc_add$12 == firsts$0) begin
+                    add_r$12$d = enter$0;
+                end
+                else begin
+                    add_r$12$d = t$0$q == cyc_add$12 - 32'h1;
+                end
+            end
+            if (view$12 == 1) begin
+                if (cyc$12 == firsts$1) begin
+                    act_r$12$d = enter$1;
+                end
+                else begin
+                    act_r$12$d = t$1$q == cyc$12 - 32'h1;
+                end
+            end
+            if (view_add$12 == 1) begin
+                if (cyc_add$12 == firsts$1) begin
+                    add_r$12$d = enter$1;
+                end
+                else begin
+                    add_r$12$d = t$1$q == cyc_add$12 - 32'h1;
+                end
+            end
+            if (view$12 == 2) begin
+                if (cyc$12 == firsts$2) begin
+                    act_r$12$d = enter$2;
+                end
+                else begin
+                    act_r$12$d = t$2$q == cyc$12 - 32'h1;
+                end
+            end
+            if (view_add$12 == 2) begin
+                if (cyc_add$12 == firsts$2) begin
+                    add_r$12$d = enter$2;
+                end
+                else begin
+                    add_r$12$d = t$2$q == cyc_add$12 - 32'h1;
+                end
+            end
+            if (view$12 == 3) begin
+                if (cyc$12 == firsts$3) begin
+                    act_r$12$d = enter$3;
+                end
+                else begin
+                    act_r$12$d = t$3$q == cyc$12 - 32'h1;
+                end
+            end
+            if (view_add$12 == 3) begin
+                if (cyc_add$12 == firsts$3) begin
+                    add_r$12$d = enter$3;
+                end
+                else begin
+                    add_r$12$d = t$3$q == cyc_add$12 - 32'h1;
+                end
+            end
+            if (view$12 == 4) begin
+                if (cyc$12 == firsts$4) begin
+                    act_r$12$d = enter$4;
+                end
+                else begin
+                    act_r$12$d = t$4$q == cyc$12 - 32'h1;
+                end
+            end
+            if (view_add$12 == 4) begin
+                if (cyc_add$12 == firsts$4) begin
+                    add_r$12$d = enter$4;
+                end
+                else begin
+                    add_r$12$d = t$4$q == cyc_add$12 - 32'h1;
+                end
+            end
+            if (view$12 == 5) begin
+                if (cyc$12 == firsts$5) begin
+                    act_r$12$d = enter$5;
+                end
+                else begin
+                    act_r$12$d = t$5$q == cyc$12 - 32'h1;
+                end
+            end
+            if (view_add$12 == 5) begin
+                if (cyc_add$12 == firsts$5) begin
+                    add_r$12$d = enter$5;
+                end
+                else begin
+                    add_r$12$d = t$5$q == cyc_add$12 - 32'h1;
+                end
+            end
         end
         act_r$13$clock = clock;
-        act_r$13$d = 1'b0;
+        act_r$13$d = act_r$13$q;
         add_r$13$clock = clock;
-        add_r$13$d = 1'b0;
-        if ((view$13 == 0) & (t$0$d == cyc$13)) begin
-            act_r$13$d = 1'b1;
-        end
-        if ((view_add$13 == 0) & (t$0$d == cyc_add$13)) begin
-            add_r$13$d = 1'b1;
-        end
-        if ((view$13 == 1) & (t$1$d == cyc$13)) begin
-            act_r$13$d = 1'b1;
-        end
-        if ((view_add$13 == 1) & (t$1$d == cyc_add$13)) begin
-            add_r$13$d = 1'b1;
-        end
-        if ((view$13 == 2) & (t$2$d == cyc$13)) begin
-            act_r$13$d = 1'b1;
-        end
-        if ((view_add$13 == 2) & (t$2$d == cyc_add$13)) begin
-            add_r$13$d = 1'b1;
-        end
-        if ((view$13 == 3) & (t$3$d == cyc$13)) begin
-            act_r$13$d = 1'b1;
-        end
-        if ((view_add$13 == 3) & (t$3$d == cyc_add$13)) begin
-            add_r$13$d = 1'b1;
-        end
-        if ((view$13 == 4) & (t$4$d == cyc$13)) begin
-            act_r$13$d = 1'b1;
-        end
-        if ((view_add$13 == 4) & (t$4$d == cyc_add$13)) begin
-            add_r$13$d = 1'b1;
-        end
-        if ((view$13 == 5) & (t$5$d == cyc$13)) begin
-            act_r$13$d = 1'b1;
-        end
-        if ((view_add$13 == 5) & (t$5$d == cyc_add$13)) begin
-            add_r$13$d = 1'b1;
+        add_r$13$d = add_r$13$q;
+        if (run) begin
+            act_r$13$d = 1'b0;
+            add_r$13$d = 1'b0;
+            if (view$13 == 0) begin
+                if (cyc$13 == firsts$0) begin
+                    act_r$13$d = enter$0;
+                end
+                else begin
+                    act_r$13$d = t$0$q == cyc$13 - 32'h1;
+                end
+            end
+            if (view_add$13 == 0) begin
+                if (cyc_add$13 == firsts$0) begin
+                    add_r$13$d = enter$0;
+                end
+                else begin
+                    add_r$13$d = t$0$q == cyc_add$13 - 32'h1;
+                end
+            end
+            if (view$13 == 1) begin
+                if (cyc$13 == firsts$1) begin
+                    act_r$13$d = enter$1;
+                end
+                else begin
+                    act_r$13$d = t$1$q == cyc$13 - 32'h1;
+                end
+            end
+            if (view_add$13 == 1) begin
+                if (cyc_add$13 == firsts$1) begin
+                    add_r$13$d = enter$1;
+                end
+                else begin
+                    add_r$13$d = t$1$q == cyc_add$13 - 32'h1;
+                end
+            end
+            if (view$13 == 2) begin
+                if (cyc$13 == firsts$2) begin
+                    act_r$13$d = enter$2;
+                end
+                else begin
+                    act_r$13$d = t$2$q == cyc$13 - 32'h1;
+                end
+            end
+            if (view_add$13 == 2) begin
+                if (cyc_add$13 == firsts$2) begin
+                    add_r$13$d = enter$2;
+                end
+                else begin
+                    add_r$13$d = t$2$q == cyc_add$13 - 32'h1;
+                end
+            end
+            if (view$13 == 3) begin
+                if (cyc$13 == firsts$3) begin
+                    act_r$13$d = enter$3;
+                end
+                else begin
+                    act_r$13$d = t$3$q == cyc$13 - 32'h1;
+                end
+            end
+            if (view_add$13 == 3) begin
+                if (cyc_add$13 == firsts$3) begin
+                    add_r$13$d = enter$3;
+                end
+                else begin
+                    add_r$13$d = t$3$q == cyc_add$13 - 32'h1;
+                end
+            end
+            if (view$13 == 4) begin
+                if (cyc$13 == firsts$4) begin
+                    act_r$13$d = enter$4;
+                end
+                else begin
+                    act_r$13$d = t$4$q == cyc$13 - 32'h1;
+                end
+            end
+            if (view_add$13 == 4) begin
+                if (cyc_add$13 == firsts$4) begin
+                    add_r$13$d = enter$4;
+                end
+                else begin
+                    add_r$13$d = t$4$q == cyc_add$13 - 32'h1;
+                end
+            end
+            if (view$13 == 5) begin
+                if (cyc$13 == firsts$5) begin
+                    act_r$13$d = enter$5;
+                end
+                else begin
+                    act_r$13$d = t$5$q == cyc$13 - 32'h1;
+                end
+            end
+            if (view_add$13 == 5) begin
+                if (cyc_add$13 == firsts$5) begin
+                    add_r$13$d = enter$5;
+                end
+                else begin
+                    add_r$13$d = t$5$q == cyc_add$13 - 32'h1;
+                end
+            end
         end
         act_r$14$clock = clock;
-        act_r$14$d = 1'b0;
+        act_r$14$d = act_r$14$q;
         add_r$14$clock = clock;
-        add_r$14$d = 1'b0;
-        if ((view$14 == 0) & (t$0$d == cyc$14)) begin
-            act_r$14$d = 1'b1;
-        end
-        if ((view_add$14 == 0) & (t$0$d == cyc_add$14)) begin
-            add_r$14$d = 1'b1;
-        end
-        if ((view$14 == 1) & (t$1$d == cyc$14)) begin
-            act_r$14$d = 1'b1;
-        end
-        if ((view_add$14 == 1) & (t$1$d == cyc_add$14)) begin
-            add_r$14$d = 1'b1;
-        end
-        if ((view$14 == 2) & (t$2$d == cyc$14)) begin
-            act_r$14$d = 1'b1;
-        end
-        if ((view_add$14 == 2) & (t$2$d == cyc_add$14)) begin
-            add_r$14$d = 1'b1;
-        end
-        if ((view$14 == 3) & (t$3$d == cyc$14)) begin
-            act_r$14$d = 1'b1;
-        end
-        if ((view_add$14 == 3) & (t$3$d == cyc_add$14)) begin
-            add_r$14$d = 1'b1;
-        end
-        if ((view$14 == 4) & (t$4$d == cyc$14)) begin
-            act_r$14$d = 1'b1;
-        end
-        if ((view_add$14 == 4) & (t$4$d == cyc_add$14)) begin
-            add_r$14$d = 1'b1;
-        end
-        if ((view$14 == 5) & (t$5$d == cyc$14)) begin
-            act_r$14$d = 1'b1;
-        end
-        if ((view_add$14 == 5) & (t$5$d == cyc_add$14)) begin
-            add_r$14$d = 1'b1;
+        add_r$14$d = add_r$14$q;
+        if (run) begin
+            act_r$14$d = 1'b0;
+            add_r$14$d = 1'b0;
+            if (view$14 == 0) begin
+                if (cyc$14 == firsts$0) begin
+                    act_r$14$d = enter$0;
+                end
+                else begin
+                    act_r$14$d = t$0$q == cyc$14 - 32'h1;
+                end
+            end
+            if (view_add$14 == 0) begin
+                if (cyc_add$14 == firsts$0) begin
+                    add_r$14$d = enter$0;
+                end
+                else begin
+                    add_r$14$d = t$0$q == cyc_add$14 - 32'h1;
+                end
+            end
+            if (view$14 == 1) begin
+                if (cyc$14 == firsts$1) begin
+                    act_r$14$d = enter$1;
+                end
+                else begin
+                    act_r$14$d = t$1$q == cyc$14 - 32'h1;
+                end
+            end
+            if (view_add$14 == 1) begin
+                if (cyc_add$14 == firsts$1) begin
+                    add_r$14$d = enter$1;
+                end
+                else begin
+                    add_r$14$d = t$1$q == cyc_add$14 - 32'h1;
+                end
+            end
+            if (view$14 == 2) begin
+                if (cyc$14 == firsts$2) begin
+                    act_r$14$d = enter$2;
+                end
+                else begin
+                    act_r$14$d = t$2$q == cyc$14 - 32'h1;
+                end
+            end
+            if (view_add$14 == 2) begin
+                if (cyc_add$14 == firsts$2) begin
+                    add_r$14$d = enter$2;
+                end
+                else begin
+                    add_r$14$d = t$2$q == cyc_add$14 - 32'h1;
+                end
+            end
+            if (view$14 == 3) begin
+                if (cyc$14 == firsts$3) begin
+                    act_r$14$d = enter$3;
+                end
+                else begin
+                    act_r$14$d = t$3$q == cyc$14 - 32'h1;
+                end
+            end
+            if (view_add$14 == 3) begin
+                if (cyc_add$14 == firsts$3) begin
+                    add_r$14$d = enter$3;
+                end
+                else begin
+                    add_r$14$d = t$3$q == cyc_add$14 - 32'h1;
+                end
+            end
+            if (view$14 == 4) begin
+                if (cyc$14 == firsts$4) begin
+                    act_r$14$d = enter$4;
+                end
+                else begin
+                    act_r$14$d = t$4$q == cyc$14 - 32'h1;
+                end
+            end
+            if (view_add$14 == 4) begin
+                if (cyc_add$14 == firsts$4) begin
+                    add_r$14$d = enter$4;
+                end
+                else begin
+                    add_r$14$d = t$4$q == cyc_add$14 - 32'h1;
+                end
+            end
+            if (view$14 == 5) begin
+                if (cyc$14 == firsts$5) begin
+                    act_r$14$d = enter$5;
+                end
+                else begin
+                    act_r$14$d = t$5$q == cyc$14 - 32'h1;
+                end
+            end
+            if (view_add$14 == 5) begin
+                if (cyc_add$14 == firsts$5) begin
+                    add_r$14$d = enter$5;
+                end
+                else begin
+                    add_r$14$d = t$5$q == cyc_add$14 - 32'h1;
+                end
+            end
         end
         act_r$15$clock = clock;
-        act_r$15$d = 1'b0;
+        act_r$15$d = act_r$15$q;
         add_r$15$clock = clock;
-        add_r$15$d = 1'b0;
-        if ((view$15 == 0) & (t$0$d == cyc$15)) begin
-            act_r$15$d = 1'b1;
-        end
-        if ((view_add$15 == 0) & (t$0$d == cyc_add$15)) begin
-            add_r$15$d = 1'b1;
-        end
-        if ((view$15 == 1) & (t$1$d == cyc$15)) begin
-            act_r$15$d = 1'b1;
-        end
-        if ((view_add$15 == 1) & (t$1$d == cyc_add$15)) begin
-            add_r$15$d = 1'b1;
-        end
-        if ((view$15 == 2) & (t$2$d == cyc$15)) begin
-            act_r$15$d = 1'b1;
-        end
-        if ((view_add$15 == 2) & (t$2$d == cyc_add$15)) begin
-            add_r$15$d = 1'b1;
-        end
-        if ((view$15 == 3) & (t$3$d == cyc$15)) begin
-            act_r$15$d = 1'b1;
-        end
-        if ((view_add$15 == 3) & (t$3$d == cyc_add$15)) begin
-            add_r$15$d = 1'b1;
-        end
-        if ((view$15 == 4) & (t$4$d == cyc$15)) begin
-            act_r$15$d = 1'b1;
-        end
-        if ((view_add$15 == 4) & (t$4$d == cyc_add$15)) begin
-            add_r$15$d = 1'b1;
-        end
-        if ((view$15 == 5) & (t$5$d == cyc$15)) begin
-            act_r$15$d = 1'b1;
-        end
-        if ((view_add$15 == 5) & (t$5$d == cyc_add$15)) begin
-            add_r$15$d = 1'b1;
+        add_r$15$d = add_r$15$q;
+        if (run) begin
+            act_r$15$d = 1'b0;
+            add_r$15$d = 1'b0;
+            if (view$15 == 0) begin
+                if (cyc$15 == firsts$0) begin
+                    act_r$15$d = enter$0;
+                end
+                else begin
+                    act_r$15$d = t$0$q == cyc$15 - 32'h1;
+                end
+            end
+            if (view_add$15 == 0) begin
+                if (cyc_add$15 == firsts$0) begin
+                    add_r$15$d = enter$0;
+                end
+                else begin
+                    add_r$15$d = t$0$q == cyc_add$15 - 32'h1;
+                end
+            end
+            if (view$15 == 1) begin
+                if (cyc$15 == firsts$1) begin
+                    act_r$15$d = enter$1;
+                end
+                else begin
+                    act_r$15$d = t$1$q == cyc$15 - 32'h1;
+                end
+            end
+            if (view_add$15 == 1) begin
+                if (cyc_add$15 == firsts$1) begin
+                    add_r$15$d = enter$1;
+                end
+                else begin
+                    add_r$15$d = t$1$q == cyc_add$15 - 32'h1;
+                end
+            end
+            if (view$15 == 2) begin
+                if (cyc$15 == firsts$2) begin
+                    act_r$15$d = enter$2;
+                end
+                else begin
+                    act_r$15$d = t$2$q == cyc$15 - 32'h1;
+                end
+            end
+            if (view_add$15 == 2) begin
+                if (cyc_add$15 == firsts$2) begin
+                    add_r$15$d = enter$2;
+                end
+                else begin
+                    add_r$15$d = t$2$q == cyc_add$15 - 32'h1;
+                end
+            end
+            if (view$15 == 3) begin
+                if (cyc$15 == firsts$3) begin
+                    act_r$15$d = enter$3;
+                end
+                else begin
+                    act_r$15$d = t$3$q == cyc$15 - 32'h1;
+                end
+            end
+            if (view_add$15 == 3) begin
+                if (cyc_add$15 == firsts$3) begin
+                    add_r$15$d = enter$3;
+                end
+                else begin
+                    add_r$15$d = t$3$q == cyc_add$15 - 32'h1;
+                end
+            end
+            if (view$15 == 4) begin
+                if (cyc$15 == firsts$4) begin
+                    act_r$15$d = enter$4;
+                end
+                else begin
+                    act_r$15$d = t$4$q == cyc$15 - 32'h1;
+                end
+            end
+            if (view_add$15 == 4) begin
+                if (cyc_add$15 == firsts$4) begin
+                    add_r$15$d = enter$4;
+                end
+                else begin
+                    add_r$15$d = t$4$q == cyc_add$15 - 32'h1;
+                end
+            end
+            if (view$15 == 5) begin
+                if (cyc$15 == firsts$5) begin
+                    act_r$15$d = enter$5;
+                end
+                else begin
+                    act_r$15$d = t$5$q == cyc$15 - 32'h1;
+                end
+            end
+            if (view_add$15 == 5) begin
+                if (cyc_add$15 == firsts$5) begin
+                    add_r$15$d = enter$5;
+                end
+                else begin
+                    add_r$15$d = t$5$q == cyc_add$15 - 32'h1;
+                end
+            end
         end
         act_r$16$clock = clock;
-        act_r$16$d = 1'b0;
+        act_r$16$d = act_r$16$q;
         add_r$16$clock = clock;
-        add_r$16$d = 1'b0;
-        if ((view$16 == 0) & (t$0$d == cyc$16)) begin
-            act_r$16$d = 1'b1;
-        end
-        if ((view_add$16 == 0) & (t$0$d == cyc_add$16)) begin
-            add_r$16$d = 1'b1;
-        end
-        if ((view$16 == 1) & (t$1$d == cyc$16)) begin
-            act_r$16$d = 1'b1;
-        end
-        if ((view_add$16 == 1) & (t$1$d == cyc_add$16)) begin
-            add_r$16$d = 1'b1;
-        end
-        if ((view$16 == 2) & (t$2$d == cyc$16)) begin
-            act_r$16$d = 1'b1;
-        end
-        if ((view_add$16 == 2) & (t$2$d == cyc_add$16)) begin
-            add_r$16$d = 1'b1;
-        end
-        if ((view$16 == 3) & (t$3$d == cyc$16)) begin
-            act_r$16$d = 1'b1;
-        end
-        if ((view_add$16 == 3) & (t$3$d == cyc_add$16)) begin
-            add_r$16$d = 1'b1;
-        end
-        if ((view$16 == 4) & (t$4$d == cyc$16)) begin
-            act_r$16$d = 1'b1;
-        end
-        if ((view_add$16 == 4) & (t$4$d == cyc_add$16)) begin
-            add_r$16$d = 1'b1;
-        end
-        if ((view$16 == 5) & (t$5$d == cyc$16)) begin
-            act_r$16$d = 1'b1;
-        end
-        if ((view_add$16 == 5) & (t$5$d == cyc_add$16)) begin
-            add_r$16$d = 1'b1;
+        add_r$16$d = add_r$16$q;
+        if (run) begin
+            act_r$16$d = 1'b0;
+            add_r$16$d = 1'b0;
+            if (view$16 == 0) begin
+                if (cyc$16 == firsts$0) begin
+                    act_r$16$d = enter$0;
+                end
+                else begin
+                    act_r$16$d = t$0$q == cyc$16 - 32'h1;
+                end
+            end
+            if (view_add$16 == 0) begin
+                if (cyc_add$16 == firsts$0) begin
+                    add_r$16$d = enter$0;
+                end
+                else begin
+                    add_r$16$d = t$0$q == cyc_add$16 - 32'h1;
+                end
+            end
+            if (view$16 == 1) begin
+                if (cyc$16 == firsts$1) begin
+                    act_r$16$d = enter$1;
+                end
+                else begin
+                    act_r$16$d = t$1$q == cyc$16 - 32'h1;
+                end
+            end
+            if (view_add$16 == 1) begin
+                if (cyc_add$16 == firsts$1) begin
+                    add_r$16$d = enter$1;
+                end
+                else begin
+                    add_r$16$d = t$1$q == cyc_add$16 - 32'h1;
+                end
+            end
+            if (view$16 == 2) begin
+                if (cyc$16 == firsts$2) begin
+                    act_r$16$d = enter$2;
+                end
+                else begin
+                    act_r$16$d = t$2$q == cyc$16 - 32'h1;
+                end
+            end
+            if (view_add$16 == 2) begin
+                if (cyc_add$16 == firsts$2) begin
+                    add_r$16$d = enter$2;
+                end
+                else begin
+                    add_r$16$d = t$2$q == cyc_add$16 - 32'h1;
+                end
+            end
+            if (view$16 == 3) begin
+                if (cyc$16 == firsts$3) begin
+                    act_r$16$d = enter$3;
+                end
+                else begin
+                    act_r$16$d = t$3$q == cyc$16 - 32'h1;
+                end
+            end
+            if (view_add$16 == 3) begin
+                if (cyc_add$16 == firsts$3) begin
+                    add_r$16$d = enter$3;
+                end
+                else begin
+                    add_r$16$d = t$3$q == cyc_add$16 - 32'h1;
+                end
+            end
+            if (view$16 == 4) begin
+                if (cyc$16 == firsts$4) begin
+                    act_r$16$d = enter$4;
+                end
+                else begin
+                    act_r$16$d = t$4$q == cyc$16 - 32'h1;
+                end
+            end
+            if (view_add$16 == 4) begin
+                if (cyc_add$16 == firsts$4) begin
+                    add_r$16$d = enter$4;
+                end
+                else begin
+                    add_r$16$d = t$4$q == cyc_add$16 - 32'h1;
+                end
+            end
+            if (view$16 == 5) begin
+                if (cyc$16 == firsts$5) begin
+                    act_r$16$d = enter$5;
+                end
+                else begin
+                    act_r$16$d = t$5$q == cyc$16 - 32'h1;
+                end
+            end
+            if (view_add$16 == 5) begin
+                if (cyc_add$16 == firsts$5) begin
+                    add_r$16$d = enter$5;
+                end
+                else begin
+                    add_r$16$d = t$5$q == cyc_add$16 - 32'h1;
+                end
+            end
         end
         act_r$17$clock = clock;
-        act_r$17$d = 1'b0;
+        act_r$17$d = act_r$17$q;
         add_r$17$clock = clock;
-        add_r$17$d = 1'b0;
-        if ((view$17 == 0) & (t$0$d == cyc$17)) begin
-            act_r$17$d = 1'b1;
-        end
-        if ((view_add$17 == 0) & (t$0$d == cyc_add$17)) begin
-            add_r$17$d = 1'b1;
-        end
-        if ((view$17 == 1) & (t$1$d == cyc$17)) begin
-            act_r$17$d = 1'b1;
-        end
-        if ((view_add$17 == 1) & (t$1$d == cyc_add$17)) begin
-            add_r$17$d = 1'b1;
-        end
-        if ((view$17 == 2) & (t$2$d == cyc$17)) begin
-            act_r$17$d = 1'b1;
-        end
-        if ((view_add$17 == 2) & (t$2$d == cyc_add$17)) begin
-            add_r$17$d = 1'b1;
-        end
-        if ((view$17 == 3) & (t$3$d == cyc$17)) begin
-            act_r$17$d = 1'b1;
-        end
-        if ((view_add$17 == 3) & (t$3$d == cyc_add$17)) begin
-            add_r$17$d = 1'b1;
-        end
-        if ((view$17 == 4) & (t$4$d == cyc$17)) begin
-            act_r$17$d = 1'b1;
-        end
-        if ((view_add$17 == 4) & (t$4$d == cyc_add$17)) begin
-            add_r$17$d = 1'b1;
-        end
-        if ((view$17 == 5) & (t$5$d == cyc$17)) begin
-            act_r$17$d = 1'b1;
-        end
-        if ((view_add$17 == 5) & (t$5$d == cyc_add$17)) begin
-            add_r$17$d = 1'b1;
+        add_r$17$d = add_r$17$q;
+        if (run) begin
+            act_r$17$d = 1'b0;
+            add_r$17$d = 1'b0;
+            if (view$17 == 0) begin
+                if (cyc$17 == firsts$0) begin
+                    act_r$17$d = enter$0;
+                end
+                else begin
+                    act_r$17$d = t$0$q == cyc$17 - 32'h1;
+                end
+            end
+            if (view_add$17 == 0) begin
+                if (cyc_add$17 == firsts$0) begin
+                    add_r$17$d = enter$0;
+                end
+                else begin
+                    add_r$17$d = t$0$q == cyc_add$17 - 32'h1;
+                end
+            end
+            if (view$17 == 1) begin
+                if (cyc$17 == firsts$1) begin
+                    act_r$17$d = enter$1;
+                end
+                else begin
+                    act_r$17$d = t$1$q == cyc$17 - 32'h1;
+                end
+            end
+            if (view_add$17 == 1) begin
+                if (cyc_add$17 == firsts$1) begin
+                    add_r$17$d = enter$1;
+                end
+                else begin
+                    add_r$17$d = t$1$q == cyc_add$17 - 32'h1;
+                end
+            end
+            if (view$17 == 2) begin
+                if (cyc$17 == firsts$2) begin
+                    act_r$17$d = enter$2;
+                end
+                else begin
+                    act_r$17$d = t$2$q == cyc$17 - 32'h1;
+                end
+            end
+            if (view_add$17 == 2) begin
+                if (cyc_add$17 == firsts$2) begin
+                    add_r$17$d = enter$2;
+                end
+                else begin
+                    add_r$17$d = t$2$q == cyc_add$17 - 32'h1;
+                end
+            end
+            if (view$17 == 3) begin
+                if (cyc$17 == firsts$3) begin
+                    act_r$17$d = enter$3;
+                end
+                else begin
+                    act_r$17$d = t$3$q == cyc$17 - 32'h1;
+                end
+            end
+            if (view_add$17 == 3) begin
+                if (cyc_add$17 == firsts$3) begin
+                    add_r$17$d = enter$3;
+                end
+                else begin
+                    add_r$17$d = t$3$q == cyc_add$17 - 32'h1;
+                end
+            end
+            if (view$17 == 4) begin
+                if (cyc$17 == firsts$4) begin
+                    act_r$17$d = enter$4;
+                end
+                else begin
+                    act_r$17$d = t$4$q == cyc$17 - 32'h1;
+                end
+            end
+            if (view_add$17 == 4) begin
+                if (cyc_add$17 == firsts$4) begin
+                    add_r$17$d = enter$4;
+                end
+                else begin
+                    add_r$17$d = t$4$q == cyc_add$17 - 32'h1;
+                end
+            end
+            if (view$17 == 5) begin
+                if (cyc$17 == firsts$5) begin
+                    act_r$17$d = enter$5;
+                end
+                else begin
+                    act_r$17$d = t$5$q == cyc$17 - 32'h1;
+                end
+            end
+            if (view_add$17 == 5) begin
+                if (cyc_add$17 == firsts$5) begin
+                    add_r$17$d = enter$5;
+                end
+                else begin
+                    add_r$17$d = t$5$q == cyc_add$17 - 32'h1;
+                end
+            end
         end
         act_r$18$clock = clock;
-        act_r$18$d = 1'b0;
+        act_r$18$d = act_r$18$q;
         add_r$18$clock = clock;
-        add_r$18$d = 1'b0;
-        if ((view$18 == 0) & (t$0$d == cyc$18)) begin
-            act_r$18$d = 1'b1;
-        end
-        if ((view_add$18 == 0) & (t$0$d == cyc_add$18)) begin
-            add_r$18$d = 1'b1;
-        end
-        if ((view$18 == 1) & (t$1$d == cyc$18)) begin
-            act_r$18$d = 1'b1;
-        end
-        if ((view_add$18 == 1) & (t$1$d == cyc_add$18)) begin
-            add_r$18$d = 1'b1;
-        end
-        if ((view$18 == 2) & (t$2$d == cyc$18)) begin
-            act_r$18$d = 1'b1;
-        end
-        if ((view_add$18 == 2) & (t$2$d == cyc_add$18)) begin
-            add_r$18$d = 1'b1;
-        end
-        if ((view$18 == 3) & (t$3$d == cyc$18)) begin
-            act_r$18$d = 1'b1;
-        end
-        if ((view_add$18 == 3) & (t$3$d == cyc_add$18)) begin
-            add_r$18$d = 1'b1;
-        end
-        if ((view$18 == 4) & (t$4$d == cyc$18)) begin
-            act_r$18$d = 1'b1;
-        end
-        if ((view_add$18 == 4) & (t$4$d == cyc_add$18)) begin
-            add_r$18$d = 1'b1;
-        end
-        if ((view$18 == 5) & (t$5$d == cyc$18)) begin
-            act_r$18$d = 1'b1;
-        end
-        if ((view_add$18 == 5) & (t$5$d == cyc_add$18)) begin
-            add_r$18$d = 1'b1;
+        add_r$18$d = add_r$18$q;
+        if (run) begin
+            act_r$18$d = 1'b0;
+            add_r$18$d = 1'b0;
+            if (view$18 == 0) begin
+                if (cyc$18 == firsts$0) begin
+                    act_r$18$d = enter$0;
+                end
+                else begin
+                    act_r$18$d = t$0$q == cyc$18 - 32'h1;
+                end
+            end
+            if (view_add$18 == 0) begin
+                if (cyc_add$18 == firsts$0) begin
+                    add_r$18$d = enter$0;
+                end
+                else begin
+                    add_r$18$d = t$0$q == cyc_add$18 - 32'h1;
+                end
+            end
+            if (view$18 == 1) begin
+                if (cyc$18 == firsts$1) begin
+                    act_r$18$d = enter$1;
+                end
+                else begin
+                    act_r$18$d = t$1$q == cyc$18 - 32'h1;
+                end
+            end
+            if (view_add$18 == 1) begin
+                if (cyc_add$18 == firsts$1) begin
+                    add_r$18$d = enter$1;
+                end
+                else begin
+                    add_r$18$d = t$1$q == cyc_add$18 - 32'h1;
+                end
+            end
+            if (view$18 == 2) begin
+                if (cyc$18 == firsts$2) begin
+                    act_r$18$d = enter$2;
+                end
+                else begin
+                    act_r$18$d = t$2$q == cyc$18 - 32'h1;
+                end
+            end
+            if (view_add$18 == 2) begin
+                if (cyc_add$18 == firsts$2) begin
+                    add_r$18$d = enter$2;
+                end
+                else begin
+                    add_r$18$d = t$2$q == cyc_add$18 - 32'h1;
+                end
+            end
+            if (view$18 == 3) begin
+                if (cyc$18 == firsts$3) begin
+                    act_r$18$d = enter$3;
+                end
+                else begin
+                    act_r$18$d = t$3$q == cyc$18 - 32'h1;
+                end
+            end
+            if (view_add$18 == 3) begin
+                if (cyc_add$18 == firsts$3) begin
+                    add_r$18$d = enter$3;
+                end
+                else begin
+                    add_r$18$d = t$3$q == cyc_add$18 - 32'h1;
+                end
+            end
+            if (view$18 == 4) begin
+                if (cyc$18 == firsts$4) begin
+                    act_r$18$d = enter$4;
+                end
+                else begin
+                    act_r$18$d = t$4$q == cyc$18 - 32'h1;
+                end
+            end
+            if (view_add$18 == 4) begin
+                if (cyc_add$18 == firsts$4) begin
+                    add_r$18$d = enter$4;
+                end
+                else begin
+                    add_r$18$d = t$4$q == cyc_add$18 - 32'h1;
+                end
+            end
+            if (view$18 == 5) begin
+                if (cyc$18 == firsts$5) begin
+                    act_r$18$d = enter$5;
+                end
+                else begin
+                    act_r$18$d = t$5$q == cyc$18 - 32'h1;
+                end
+            end
+            if (view_add$18 == 5) begin
+                if (cyc_add$18 == firsts$5) begin
+                    add_r$18$d = enter$5;
+                end
+                else begin
+                    add_r$18$d = t$5$q == cyc_add$18 - 32'h1;
+                end
+            end
         end
         act_r$19$clock = clock;
-        act_r$19$d = 1'b0;
+        act_r$19$d = act_r$19$q;
         add_r$19$clock = clock;
-        add_r$19$d = 1'b0;
-        if ((view$19 == 0) & (t$0$d == cyc$19)) begin
-            act_r$19$d = 1'b1;
-        end
-        if ((view_add$19 == 0) & (t$0$d == cyc_add$19)) begin
-            add_r$19$d = 1'b1;
-        end
-        if ((view$19 == 1) & (t$1$d == cyc$19)) begin
-            act_r$19$d = 1'b1;
-        end
-        if ((view_add$19 == 1) & (t$1$d == cyc_add$19)) begin
-            add_r$19$d = 1'b1;
-        end
-        if ((view$19 == 2) & (t$2$d == cyc$19)) begin
-            act_r$19$d = 1'b1;
-        end
-        if ((view_add$19 == 2) & (t$2$d == cyc_add$19)) begin
-            add_r$19$d = 1'b1;
-        end
-        if ((view$19 == 3) & (t$3$d == cyc$19)) begin
-            act_r$19$d = 1'b1;
-        end
-        if ((view_add$19 == 3) & (t$3$d == cyc_add$19)) begin
-            add_r$19$d = 1'b1;
-        end
-        if ((view$19 == 4) & (t$4$d == cyc$19)) begin
-            act_r$19$d = 1'b1;
-        end
-        if ((view_add$19 == 4) & (t$4$d == cyc_add$19)) begin
-            add_r$19$d = 1'b1;
-        end
-        if ((view$19 == 5) & (t$5$d == cyc$19)) begin
-            act_r$19$d = 1'b1;
-        end
-        if ((view_add$19 == 5) & (t$5$d == cyc_add$19)) begin
-            add_r$19$d = 1'b1;
+        add_r$19$d = add_r$19$q;
+        if (run) begin
+            act_r$19$d = 1'b0;
+            add_r$19$d = 1'b0;
+            if (view$19 == 0) begin
+                if (cyc$19 == firsts$0) begin
+                    act_r$19$d = enter$0;
+                end
+                else begin
+                    act_r$19$d = t$0$q == cyc$19 - 32'h1;
+                end
+            end
+            if (view_add$19 == 0) begin
+                if (cyc_add$19 == firsts$0) begin
+                    add_r$19$d = enter$0;
+                end
+                else begin
+                    add_r$19$d = t$0$q == cyc_add$19 - 32'h1;
+                end
+            end
+            if (view$19 == 1) begin
+                if (cyc$19 == firsts$1) begin
+                    act_r$19$d = enter$1;
+                end
+                else begin
+                    act_r$19$d = t$1$q == cyc$19 - 32'h1;
+                end
+            end
+            if (view_add$19 == 1) begin
+                if (cyc_add$19 == firsts$1) begin
+                    add_r$19$d = enter$1;
+                end
+                else begin
+                    add_r$19$d = t$1$q == cyc_add$19 - 32'h1;
+                end
+            end
+            if (view$19 == 2) begin
+                if (cyc$19 == firsts$2) begin
+                    act_r$19$d = enter$2;
+                end
+                else begin
+                    act_r$19$d = t$2$q == cyc$19 - 32'h1;
+                end
+            end
+            if (view_add$19 == 2) begin
+                if (cyc_add$19 == firsts$2) begin
+                    add_r$19$d = enter$2;
+                end
+                else begin
+                    add_r$19$d = t$2$q == cyc_add$19 - 32'h1;
+                end
+            end
+            if (view$19 == 3) begin
+                if (cyc$19 == firsts$3) begin
+                    act_r$19$d = enter$3;
+                end
+                else begin
+                    act_r$19$d = t$3$q == cyc$19 - 32'h1;
+                end
+            end
+            if (view_add$19 == 3) begin
+                if (cyc_add$19 == firsts$3) begin
+                    add_r$19$d = enter$3;
+                end
+                else begin
+                    add_r$19$d = t$3$q == cyc_add$19 - 32'h1;
+                end
+            end
+            if (view$19 == 4) begin
+                if (cyc$19 == firsts$4) begin
+                    act_r$19$d = enter$4;
+                end
+                else begin
+                    act_r$19$d = t$4$q == cyc$19 - 32'h1;
+                end
+            end
+            if (view_add$19 == 4) begin
+                if (cyc_add$19 == firsts$4) begin
+                    add_r$19$d = enter$4;
+                end
+                else begin
+                    add_r$19$d = t$4$q == cyc_add$19 - 32'h1;
+                end
+            end
+            if (view$19 == 5) begin
+                if (cyc$19 == firsts$5) begin
+                    act_r$19$d = enter$5;
+                end
+                else begin
+                    act_r$19$d = t$5$q == cyc$19 - 32'h1;
+                end
+            end
+            if (view_add$19 == 5) begin
+                if (cyc_add$19 == firsts$5) begin
+                    add_r$19$d = enter$5;
+                end
+                else begin
+                    add_r$19$d = t$5$q == cyc_add$19 - 32'h1;
+                end
+            end
         end
         act_r$20$clock = clock;
-        act_r$20$d = 1'b0;
+        act_r$20$d = act_r$20$q;
         add_r$20$clock = clock;
-        add_r$20$d = 1'b0;
-        if ((view$20 == 0) & (t$0$d == cyc$20)) begin
-            act_r$20$d = 1'b1;
-        end
-        if ((view_add$20 == 0) & (t$0$d == cyc_add$20)) begin
-            add_r$20$d = 1'b1;
-        end
-        if ((view$20 == 1) & (t$1$d == cyc$20)) begin
-            act_r$20$d = 1'b1;
-        end
-        if ((view_add$20 == 1) & (t$1$d == cyc_add$20)) begin
-            add_r$20$d = 1'b1;
-        end
-        if ((view$20 == 2) & (t$2$d == cyc$20)) begin
-            act_r$20$d = 1'b1;
-        end
-        if ((view_add$20 == 2) & (t$2$d == cyc_add$20)) begin
-            add_r$20$d = 1'b1;
-        end
-        if ((view$20 == 3) & (t$3$d == cyc$20)) begin
-            act_r$20$d = 1'b1;
-        end
-        if ((view_add$20 == 3) & (t$3$d == cyc_add$20)) begin
-            add_r$20$d = 1'b1;
-        end
-        if ((view$20 == 4) & (t$4$d == cyc$20)) begin
-            act_r$20$d = 1'b1;
-        end
-        if ((view_add$20 == 4) & (t$4$d == cyc_add$20)) begin
-            add_r$20$d = 1'b1;
-        end
-        if ((view$20 == 5) & (t$5$d == cyc$20)) begin
-            act_r$20$d = 1'b1;
-        end
-        if ((view_add$20 == 5) & (t$5$d == cyc_add$20)) begin
-            add_r$20$d = 1'b1;
+        add_r$20$d = add_r$20$q;
+        if (run) begin
+            act_r$20$d = 1'b0;
+            add_r$20$d = 1'b0;
+            if (view$20 == 0) begin
+                if (cyc$20 == firsts$0) begin
+                    act_r$20$d = enter$0;
+                end
+                else begin
+                    act_r$20$d = t$0$q == cyc$20 - 32'h1;
+                end
+            end
+            if (view_add$20 == 0) begin
+                if (cyc_add$20 == firsts$0) begin
+                    add_r$20$d = enter$0;
+                end
+                else begin
+                    add_r$20$d = t$0$q == cyc_add$20 - 32'h1;
+                end
+            end
+            if (view$20 == 1) begin
+                if (cyc$20 == firsts$1) begin
+                    act_r$20$d = enter$1;
+                end
+                else begin
+                    act_r$20$d = t$1$q == cyc$20 - 32'h1;
+                end
+            end
+            if (view_add$20 == 1) begin
+                if (cyc_add$20 == firsts$1) begin
+                    add_r$20$d = enter$1;
+                end
+                else begin
+                    add_r$20$d = t$1$q == cyc_add$20 - 32'h1;
+                end
+            end
+            if (view$20 == 2) begin
+                if (cyc$20 == firsts$2) begin
+                    act_r$20$d = enter$2;
+                end
+                else begin
+                    act_r$20$d = t$2$q == cyc$20 - 32'h1;
+                end
+            end
+            if (view_add$20 == 2) begin
+                if (cyc_add$20 == firsts$2) begin
+                    add_r$20$d = enter$2;
+                end
+                else begin
+                    add_r$20$d = t$2$q == cyc_add$20 - 32'h1;
+                end
+            end
+            if (view$20 == 3) begin
+                if (cyc$20 == firsts$3) begin
+                    act_r$20$d = enter$3;
+                end
+                else begin
+                    act_r$20$d = t$3$q == cyc$20 - 32'h1;
+                end
+            end
+            if (view_add$20 == 3) begin
+                if (cyc_add$20 == firsts$3) begin
+                    add_r$20$d = enter$3;
+                end
+                else begin
+                    add_r$20$d = t$3$q == cyc_add$20 - 32'h1;
+                end
+            end
+            if (view$20 == 4) begin
+                if (cyc$20 == firsts$4) begin
+                    act_r$20$d = enter$4;
+                end
+                else begin
+                    act_r$20$d = t$4$q == cyc$20 - 32'h1;
+                end
+            end
+            if (view_add$20 == 4) begin
+                if (cyc_add$20 == firsts$4) begin
+                    add_r$20$d = enter$4;
+                end
+                else begin
+                    add_r$20$d = t$4$q == cyc_add$20 - 32'h1;
+                end
+            end
+            if (view$20 == 5) begin
+                if (cyc$20 == firsts$5) begin
+                    act_r$20$d = enter$5;
+                end
+                else begin
+                    act_r$20$d = t$5$q == cyc$20 - 32'h1;
+                end
+            end
+            if (view_add$20 == 5) begin
+                if (cyc_add$20 == firsts$5) begin
+                    add_r$20$d = enter$5;
+                end
+                else begin
+                    add_r$20$d = t$5$q == cyc_add$20 - 32'h1;
+                end
+            end
         end
         act_r$21$clock = clock;
-        act_r$21$d = 1'b0;
+        act_r$21$d = act_r$21$q;
         add_r$21$clock = clock;
-        add_r$21$d = 1'b0;
-        if ((view$21 == 0) & (t$0$d == cyc$21)) begin
-            act_r$21$d = 1'b1;
-        end
-        if ((view_add$21 == 0) & (t$0$d == cyc_add$21)) begin
-            add_r$21$d = 1'b1;
-        end
-        if ((view$21 == 1) & (t$1$d == cyc$21)) begin
-            act_r$21$d = 1'b1;
-        end
-        if ((view_add$21 == 1) & (t$1$d == cyc_add$21)) begin
-            add_r$21$d = 1'b1;
-        end
-        if ((view$21 == 2) & (t$2$d == cyc$21)) begin
-            act_r$21$d = 1'b1;
-        end
-        if ((view_add$21 == 2) & (t$2$d == cyc_add$21)) begin
-            add_r$21$d = 1'b1;
-        end
-        if ((view$21 == 3) & (t$3$d == cyc$21)) begin
-            act_r$21$d = 1'b1;
-        end
-        if ((view_add$21 == 3) & (t$3$d == cyc_add$21)) begin
-            add_r$21$d = 1'b1;
-        end
-        if ((view$21 == 4) & (t$4$d == cyc$21)) begin
-            act_r$21$d = 1'b1;
-        end
-        if ((view_add$21 == 4) & (t$4$d == cyc_add$21)) begin
-            add_r$21$d = 1'b1;
-        end
-        if ((view$21 == 5) & (t$5$d == cyc$21)) begin
-            act_r$21$d = 1'b1;
-        end
-        if ((view_add$21 == 5) & (t$5$d == cyc_add$21)) begin
-            add_r$21$d = 1'b1;
+        add_r$21$d = add_r$21$q;
+        if (run) begin
+            act_r$21$d = 1'b0;
+            add_r$21$d = 1'b0;
+            if (view$21 == 0) begin
+                if (cyc$21 == firsts$0) begin
+                    act_r$21$d = enter$0;
+                end
+                else begin
+                    act_r$21$d = t$0$q == cyc$21 - 32'h1;
+                end
+            end
+            if (view_add$21 == 0) begin
+                if (cyc_add$21 == firsts$0) begin
+                    add_r$21$d = enter$0;
+                end
+                else begin
+                    add_r$21$d = t$0$q == cyc_add$21 - 32'h1;
+                end
+            end
+            if (view$21 == 1) begin
+                if (cyc$21 == firsts$1) begin
+                    act_r$21$d = enter$1;
+                end
+                else begin
+                    act_r$21$d = t$1$q == cyc$21 - 32'h1;
+                end
+            end
+            if (view_add$21 == 1) begin
+                if (cyc_add$21 == firsts$1) begin
+                    add_r$21$d = enter$1;
+                end
+                else begin
+                    add_r$21$d = t$1$q == cyc_add$21 - 32'h1;
+                end
+            end
+            if (view$21 == 2) begin
+                if (cyc$21 == firsts$2) begin
+                    act_r$21$d = enter$2;
+                end
+                else begin
+                    act_r$21$d = t$2$q == cyc$21 - 32'h1;
+                end
+            end
+            if (view_add$21 == 2) begin
+                if (cyc_add$21 == firsts$2) begin
+                    add_r$21$d = enter$2;
+                end
+                else begin
+                    add_r$21$d = t$2$q == cyc_add$21 - 32'h1;
+                end
+            end
+            if (view$21 == 3) begin
+                if (cyc$21 == firsts$3) begin
+                    act_r$21$d = enter$3;
+                end
+                else begin
+                    act_r$21$d = t$3$q == cyc$21 - 32'h1;
+                end
+            end
+            if (view_add$21 == 3) begin
+                if (cyc_add$21 == firsts$3) begin
+                    add_r$21$d = enter$3;
+                end
+                else begin
+                    add_r$21$d = t$3$q == cyc_add$21 - 32'h1;
+                end
+            end
+            if (view$21 == 4) begin
+                if (cyc$21 == firsts$4) begin
+                    act_r$21$d = enter$4;
+                end
+                else begin
+                    act_r$21$d = t$4$q == cyc$21 - 32'h1;
+                end
+            end
+            if (view_add$21 == 4) begin
+                if (cyc_add$21 == firsts$4) begin
+                    add_r$21$d = enter$4;
+                end
+                else begin
+                    add_r$21$d = t$4$q == cyc_add$21 - 32'h1;
+                end
+            end
+            if (view$21 == 5) begin
+                if (cyc$21 == firsts$5) begin
+                    act_r$21$d = enter$5;
+                end
+                else begin
+                    act_r$21$d = t$5$q == cyc$21 - 32'h1;
+                end
+            end
+            if (view_add$21 == 5) begin
+                if (cyc_add$21 == firsts$5) begin
+                    add_r$21$d = enter$5;
+                end
+                else begin
+                    add_r$21$d = t$5$q == cyc_add$21 - 32'h1;
+                end
+            end
         end
         act_r$22$clock = clock;
-        act_r$22$d = 1'b0;
+        act_r$22$d = act_r$22$q;
         add_r$22$clock = clock;
-        add_r$22$d = 1'b0;
-        if ((view$22 == 0) & (t$0$d == cyc$22)) begin
-            act_r$22$d = 1'b1;
-        end
-        if ((view_add$22 == 0) & (t$0$d == cyc_add$22)) begin
-            add_r$22$d = 1'b1;
-        end
-        if ((view$22 == 1) & (t$1$d == cyc$22)) begin
-            act_r$22$d = 1'b1;
-        end
-        if ((view_add$22 == 1) & (t$1$d == cyc_add$22)) begin
-            add_r$22$d = 1'b1;
-        end
-        if ((view$22 == 2) & (t$2$d == cyc$22)) begin
-            act_r$22$d = 1'b1;
-        end
-        if ((view_add$22 == 2) & (t$2$d == cyc_add$22)) begin
-            add_r$22$d = 1'b1;
-        end
-        if ((view$22 == 3) & (t$3$d == cyc$22)) begin
-            act_r$22$d = 1'b1;
-        end
-        if ((view_add$22 == 3) & (t$3$d == cyc_add$22)) begin
-            add_r$22$d = 1'b1;
-        end
-        if ((view$22 == 4) & (t$4$d == cyc$22)) begin
-            act_r$22$d = 1'b1;
-        end
-        if ((view_add$22 == 4) & (t$4$d == cyc_add$22)) begin
-            add_r$22$d = 1'b1;
-        end
-        if ((view$22 == 5) & (t$5$d == cyc$22)) begin
-            act_r$22$d = 1'b1;
-        end
-        if ((view_add$22 == 5) & (t$5$d == cyc_add$22)) begin
-            add_r$22$d = 1'b1;
+        add_r$22$d = add_r$22$q;
+        if (run) begin
+            act_r$22$d = 1'b0;
+            add_r$22$d = 1'b0;
+            if (view$22 == 0) begin
+                if (cyc$22 == firsts$0) begin
+                    act_r$22$d = enter$0;
+                end
+                else begin
+                    act_r$22$d = t$0$q == cyc$22 - 32'h1;
+                end
+            end
+            if (view_add$22 == 0) begin
+                if (cyc_add$22 == firsts$0) begin
+                    add_r$22$d = enter$0;
+                end
+                else begin
+                    add_r$22$d = t$0$q == cyc_add$22 - 32'h1;
+                end
+            end
+            if (view$22 == 1) begin
+                if (cyc$22 == firsts$1) begin
+                    act_r$22$d = enter$1;
+                end
+                else begin
+                    act_r$22$d = t$1$q == cyc$22 - 32'h1;
+                end
+            end
+            if (view_add$22 == 1) begin
+                if (cyc_add$22 == firsts$1) begin
+                    add_r$22$d = enter$1;
+                end
+                else begin
+                    add_r$22$d = t$1$q == cyc_add$22 - 32'h1;
+                end
+            end
+            if (view$22 == 2) begin
+                if (cyc$22 == firsts$2) begin
+                    act_r$22$d = enter$2;
+                end
+                else begin
+                    act_r$22$d = t$2$q == cyc$22 - 32'h1;
+                end
+            end
+            if (view_add$22 == 2) begin
+                if (cyc_add$22 == firsts$2) begin
+                    add_r$22$d = enter$2;
+                end
+                else begin
+                    add_r$22$d = t$2$q == cyc_add$22 - 32'h1;
+                end
+            end
+            if (view$22 == 3) begin
+                if (cyc$22 == firsts$3) begin
+                    act_r$22$d = enter$3;
+                end
+                else begin
+                    act_r$22$d = t$3$q == cyc$22 - 32'h1;
+                end
+            end
+            if (view_add$22 == 3) begin
+                if (cyc_add$22 == firsts$3) begin
+                    add_r$22$d = enter$3;
+                end
+                else begin
+                    add_r$22$d = t$3$q == cyc_add$22 - 32'h1;
+                end
+            end
+            if (view$22 == 4) begin
+                if (cyc$22 == firsts$4) begin
+                    act_r$22$d = enter$4;
+                end
+                else begin
+                    act_r$22$d = t$4$q == cyc$22 - 32'h1;
+                end
+            end
+            if (view_add$22 == 4) begin
+                if (cyc_add$22 == firsts$4) begin
+                    add_r$22$d = enter$4;
+                end
+                else begin
+                    add_r$22$d = t$4$q == cyc_add$22 - 32'h1;
+                end
+            end
+            if (view$22 == 5) begin
+                if (cyc$22 == firsts$5) begin
+                    act_r$22$d = enter$5;
+                end
+                else begin
+                    act_r$22$d = t$5$q == cyc$22 - 32'h1;
+                end
+            end
+            if (view_add$22 == 5) begin
+                if (cyc_add$22 == firsts$5) begin
+                    add_r$22$d = enter$5;
+                end
+                else begin
+                    add_r$22$d = t$5$q == cyc_add$22 - 32'h1;
+                end
+            end
         end
         act_r$23$clock = clock;
-        act_r$23$d = 1'b0;
+        act_r$23$d = act_r$23$q;
         add_r$23$clock = clock;
-        add_r$23$d = 1'b0;
-        if ((view$23 == 0) & (t$0$d == cyc$23)) begin
-            act_r$23$d = 1'b1;
-        end
-        if ((view_add$23 == 0) & (t$0$d == cyc_add$23)) begin
-            add_r$23$d = 1'b1;
-        end
-        if ((view$23 == 1) & (t$1$d == cyc$23)) begin
-            act_r$23$d = 1'b1;
-        end
-        if ((view_add$23 == 1) & (t$1$d == cyc_add$23)) begin
-            add_r$23$d = 1'b1;
-        end
-        if ((view$23 == 2) & (t$2$d == cyc$23)) begin
-            act_r$23$d = 1'b1;
-        end
-        if ((view_add$23 == 2) & (t$2$d == cyc_add$23)) begin
-            add_r$23$d = 1'b1;
-        end
-        if ((view$23 == 3) & (t$3$d == cyc$23)) begin
-            act_r$23$d = 1'b1;
-        end
-        if ((view_add$23 == 3) & (t$3$d == cyc_add$23)) begin
-            add_r$23$d = 1'b1;
-        end
-        if ((view$23 == 4) & (t$4$d == cyc$23)) begin
-            act_r$23$d = 1'b1;
-        end
-        if ((view_add$23 == 4) & (t$4$d == cyc_add$23)) begin
-            add_r$23$d = 1'b1;
-        end
-        if ((view$23 == 5) & (t$5$d == cyc$23)) begin
-            act_r$23$d = 1'b1;
-        end
-        if ((view_add$23 == 5) & (t$5$d == cyc_add$23)) begin
-            add_r$23$d = 1'b1;
+        add_r$23$d = add_r$23$q;
+        if (run) begin
+            act_r$23$d = 1'b0;
+            add_r$23$d = 1'b0;
+            if (view$23 == 0) begin
+                if (cyc$23 == firsts$0) begin
+                    act_r$23$d = enter$0;
+                end
+                else begin
+                    act_r$23$d = t$0$q == cyc$23 - 32'h1;
+                end
+            end
+            if (view_add$23 == 0) begin
+                if (cyc_add$23 == firsts$0) begin
+                    add_r$23$d = enter$0;
+                end
+                else begin
+                    add_r$23$d = t$0$q == cyc_add$23 - 32'h1;
+                end
+            end
+            if (view$23 == 1) begin
+                if (cyc$23 == firsts$1) begin
+                    act_r$23$d = enter$1;
+                end
+                else begin
+                    act_r$23$d = t$1$q == cyc$23 - 32'h1;
+                end
+            end
+            if (view_add$23 == 1) begin
+                if (cyc_add$23 == firsts$1) begin
+                    add_r$23$d = enter$1;
+                end
+                else begin
+                    add_r$23$d = t$1$q == cyc_add$23 - 32'h1;
+                end
+            end
+            if (view$23 == 2) begin
+                if (cyc$23 == firsts$2) begin
+                    act_r$23$d = enter$2;
+                end
+                else begin
+                    act_r$23$d = t$2$q == cyc$23 - 32'h1;
+                end
+            end
+            if (view_add$23 == 2) begin
+                if (cyc_add$23 == firsts$2) begin
+                    add_r$23$d = enter$2;
+                end
+                else begin
+                    add_r$23$d = t$2$q == cyc_add$23 - 32'h1;
+                end
+            end
+            if (view$23 == 3) begin
+                if (cyc$23 == firsts$3) begin
+                    act_r$23$d = enter$3;
+                end
+                else begin
+                    act_r$23$d = t$3$q == cyc$23 - 32'h1;
+                end
+            end
+            if (view_add$23 == 3) begin
+                if (cyc_add$23 == firsts$3) begin
+                    add_r$23$d = enter$3;
+                end
+                else begin
+                    add_r$23$d = t$3$q == cyc_add$23 - 32'h1;
+                end
+            end
+            if (view$23 == 4) begin
+                if (cyc$23 == firsts$4) begin
+                    act_r$23$d = enter$4;
+                end
+                else begin
+                    act_r$23$d = t$4$q == cyc$23 - 32'h1;
+                end
+            end
+            if (view_add$23 == 4) begin
+                if (cyc_add$23 == firsts$4) begin
+                    add_r$23$d = enter$4;
+                end
+                else begin
+                    add_r$23$d = t$4$q == cyc_add$23 - 32'h1;
+                end
+            end
+            if (view$23 == 5) begin
+                if (cyc$23 == firsts$5) begin
+                    act_r$23$d = enter$5;
+                end
+                else begin
+                    act_r$23$d = t$5$q == cyc$23 - 32'h1;
+                end
+            end
+            if (view_add$23 == 5) begin
+                if (cyc_add$23 == firsts$5) begin
+                    add_r$23$d = enter$5;
+                end
+                else begin
+                    add_r$23$d = t$5$q == cyc_add$23 - 32'h1;
+                end
+            end
         end
         act_r$24$clock = clock;
-        act_r$24$d = 1'b0;
+        act_r$24$d = act_r$24$q;
         add_r$24$clock = clock;
-        add_r$24$d = 1'b0;
-        if ((view$24 == 0) & (t$0$d == cyc$24)) begin
-            act_r$24$d = 1'b1;
-        end
-        if ((view_add$24 == 0) & (t$0$d == cyc_add$24)) begin
-            add_r$24$d = 1'b1;
-        end
-        if ((view$24 == 1) & (t$1$d == cyc$24)) begin
-            act_r$24$d = 1'b1;
-        end
-        if ((view_add$24 == 1) & (t$1$d == cyc_add$24)) begin
-            add_r$24$d = 1'b1;
-        end
-        if ((view$24 == 2) & (t$2$d == cyc$24)) begin
-            act_r$24$d = 1'b1;
-        end
-        if ((view_add$24 == 2) & (t$2$d == cyc_add$24)) begin
-            add_r$24$d = 1'b1;
-        end
-        if ((view$24 == 3) & (t$3$d == cyc$24)) begin
-            act_r$24$d = 1'b1;
-        end
-        if ((view_add$24 == 3) & (t$3$d == cyc_add$24)) begin
-            add_r$24$d = 1'b1;
-        end
-        if ((view$24 == 4) & (t$4$d == cyc$24)) begin
-            act_r$24$d = 1'b1;
-        end
-        if ((view_add$24 == 4) & (t$4$d == cyc_add$24)) begin
-            add_r$24$d = 1'b1;
-        end
-        if ((view$24 == 5) & (t$5$d == cyc$24)) begin
-            act_r$24$d = 1'b1;
-        end
-        if ((view_add$24 == 5) & (t$5$d == cyc_add$24)) begin
-            add_r$24$d = 1'b1;
+        add_r$24$d = add_r$24$q;
+        if (run) begin
+            act_r$24$d = 1'b0;
+            add_r$24$d = 1'b0;
+            if (view$24 == 0) begin
+                if (cyc$24 == firsts$0) begin
+                    act_r$24$d = enter$0;
+                end
+                else begin
+                    act_r$24$d = t$0$q == cyc$24 - 32'h1;
+                end
+            end
+            if (view_add$24 == 0) begin
+                if (cyc_add$24 == firsts$0) begin
+                    add_r$24$d = enter$0;
+                end
+                else begin
+                    add_r$24$d = t$0$q == cyc_add$24 - 32'h1;
+                end
+            end
+            if (view$24 == 1) begin
+                if (cyc$24 == firsts$1) begin
+                    act_r$24$d = enter$1;
+                end
+                else begin
+                    act_r$24$d = t$1$q == cyc$24 - 32'h1;
+                end
+            end
+            if (view_add$24 == 1) begin
+                if (cyc_add$24 == firsts$1) begin
+                    add_r$24$d = enter$1;
+                end
+                else begin
+                    add_r$24$d = t$1$q == cyc_add$24 - 32'h1;
+                end
+            end
+            if (view$24 == 2) begin
+                if (cyc$24 == firsts$2) begin
+                    act_r$24$d = enter$2;
+                end
+                else begin
+                    act_r$24$d = t$2$q == cyc$24 - 32'h1;
+                end
+            end
+            if (view_add$24 == 2) begin
+                if (cyc_add$24 == firsts$2) begin
+                    add_r$24$d = enter$2;
+                end
+                else begin
+                    add_r$24$d = t$2$q == cyc_add$24 - 32'h1;
+                end
+            end
+            if (view$24 == 3) begin
+                if (cyc$24 == firsts$3) begin
+                    act_r$24$d = enter$3;
+                end
+                else begin
+                    act_r$24$d = t$3$q == cyc$24 - 32'h1;
+                end
+            end
+            if (view_add$24 == 3) begin
+                if (cyc_add$24 == firsts$3) begin
+                    add_r$24$d = enter$3;
+                end
+                else begin
+                    add_r$24$d = t$3$q == cyc_add$24 - 32'h1;
+                end
+            end
+            if (view$24 == 4) begin
+                if (cyc$24 == firsts$4) begin
+                    act_r$24$d = enter$4;
+                end
+                else begin
+                    act_r$24$d = t$4$q == cyc$24 - 32'h1;
+                end
+            end
+            if (view_add$24 == 4) begin
+                if (cyc_add$24 == firsts$4) begin
+                    add_r$24$d = enter$4;
+                end
+                else begin
+                    add_r$24$d = t$4$q == cyc_add$24 - 32'h1;
+                end
+            end
+            if (view$24 == 5) begin
+                if (cyc$24 == firsts$5) begin
+                    act_r$24$d = enter$5;
+                end
+                else begin
+                    act_r$24$d = t$5$q == cyc$24 - 32'h1;
+                end
+            end
+            if (view_add$24 == 5) begin
+                if (cyc_add$24 == firsts$5) begin
+                    add_r$24$d = enter$5;
+                end
+                else begin
+                    add_r$24$d = t$5$q == cyc_add$24 - 32'h1;
+                end
+            end
         end
         act_r$25$clock = clock;
-        act_r$25$d = 1'b0;
+        act_r$25$d = act_r$25$q;
         add_r$25$clock = clock;
-        add_r$25$d = 1'b0;
-        if ((view$25 == 0) & (t$0$d == cyc$25)) begin
-            act_r$25$d = 1'b1;
-        end
-        if ((view_add$25 == 0) & (t$0$d == cyc_add$25)) begin
-            add_r$25$d = 1'b1;
-        end
-        if ((view$25 == 1) & (t$1$d == cyc$25)) begin
-            act_r$25$d = 1'b1;
-        end
-        if ((view_add$25 == 1) & (t$1$d == cyc_add$25)) begin
-            add_r$25$d = 1'b1;
-        end
-        if ((view$25 == 2) & (t$2$d == cyc$25)) begin
-            act_r$25$d = 1'b1;
-        end
-        if ((view_add$25 == 2) & (t$2$d == cyc_add$25)) begin
-            add_r$25$d = 1'b1;
-        end
-        if ((view$25 == 3) & (t$3$d == cyc$25)) begin
-            act_r$25$d = 1'b1;
-        end
-        if ((view_add$25 == 3) & (t$3$d == cyc_add$25)) begin
-            add_r$25$d = 1'b1;
-        end
-        if ((view$25 == 4) & (t$4$d == cyc$25)) begin
-            act_r$25$d = 1'b1;
-        end
-        if ((view_add$25 == 4) & (t$4$d == cyc_add$25)) begin
-            add_r$25$d = 1'b1;
-        end
-        if ((view$25 == 5) & (t$5$d == cyc$25)) begin
-            act_r$25$d = 1'b1;
-        end
-        if ((view_add$25 == 5) & (t$5$d == cyc_add$25)) begin
-            add_r$25$d = 1'b1;
+        add_r$25$d = add_r$25$q;
+        if (run) begin
+            act_r$25$d = 1'b0;
+            add_r$25$d = 1'b0;
+            if (view$25 == 0) begin
+                if (cyc$25 == firsts$0) begin
+                    act_r$25$d = enter$0;
+                end
+                else begin
+                    act_r$25$d = t$0$q == cyc$25 - 32'h1;
+                end
+            end
+            if (view_add$25 == 0) begin
+                if (cyc_add$25 == firsts$0) begin
+                    add_r$25$d = enter$0;
+                end
+                else begin
+                    add_r$25$d = t$0$q == cyc_add$25 - 32'h1;
+                end
+            end
+            if (view$25 == 1) begin
+                if (cyc$25 == firsts$1) begin
+                    act_r$25$d = enter$1;
+                end
+                else begin
+                    act_r$25$d = t$1$q == cyc$25 - 32'h1;
+                end
+            end
+            if (view_add$25 == 1) begin
+                if (cyc_add$25 == firsts$1) begin
+                    add_r$25$d = enter$1;
+                end
+                else begin
+                    add_r$25$d = t$1$q == cyc_add$25 - 32'h1;
+                end
+            end
+            if (view$25 == 2) begin
+                if (cyc$25 == firsts$2) begin
+                    act_r$25$d = enter$2;
+                end
+                else begin
+                    act_r$25$d = t$2$q == cyc$25 - 32'h1;
+                end
+            end
+            if (view_add$25 == 2) begin
+                if (cyc_add$25 == firsts$2) begin
+                    add_r$25$d = enter$2;
+                end
+                else begin
+                    add_r$25$d = t$2$q == cyc_add$25 - 32'h1;
+                end
+            end
+            if (view$25 == 3) begin
+                if (cyc$25 == firsts$3) begin
+                    act_r$25$d = enter$3;
+                end
+                else begin
+                    act_r$25$d = t$3$q == cyc$25 - 32'h1;
+                end
+            end
+            if (view_add$25 == 3) begin
+                if (cyc_add$25 == firsts$3) begin
+                    add_r$25$d = enter$3;
+                end
+                else begin
+                    add_r$25$d = t$3$q == cyc_add$25 - 32'h1;
+                end
+            end
+            if (view$25 == 4) begin
+                if (cyc$25 == firsts$4) begin
+                    act_r$25$d = enter$4;
+                end
+                else begin
+                    act_r$25$d = t$4$q == cyc$25 - 32'h1;
+                end
+            end
+            if (view_add$25 == 4) begin
+                if (cyc_add$25 == firsts$4) begin
+                    add_r$25$d = enter$4;
+                end
+                else begin
+                    add_r$25$d = t$4$q == cyc_add$25 - 32'h1;
+                end
+            end
+            if (view$25 == 5) begin
+                if (cyc$25 == firsts$5) begin
+                    act_r$25$d = enter$5;
+                end
+                else begin
+                    act_r$25$d = t$5$q == cyc$25 - 32'h1;
+                end
+            end
+            if (view_add$25 == 5) begin
+                if (cyc_add$25 == firsts$5) begin
+                    add_r$25$d = enter$5;
+                end
+                else begin
+                    add_r$25$d = t$5$q == cyc_add$25 - 32'h1;
+                end
+            end
         end
         act_r$26$clock = clock;
-        act_r$26$d = 1'b0;
+        act_r$26$d = act_r$26$q;
         add_r$26$clock = clock;
-        add_r$26$d = 1'b0;
-        if ((view$26 == 0) & (t$0$d == cyc$26)) begin
-            act_r$26$d = 1'b1;
-        end
-        if ((view_add$26 == 0) & (t$0$d == cyc_add$26)) begin
-            add_r$26$d = 1'b1;
-        end
-        if ((view$26 == 1) & (t$1$d == cyc$26)) begin
-            act_r$26$d = 1'b1;
-        end
-        if ((view_add$26 == 1) & (t$1$d == cyc_add$26)) begin
-            add_r$26$d = 1'b1;
-        end
-        if ((view$26 == 2) & (t$2$d == cyc$26)) begin
-            act_r$26$d = 1'b1;
-        end
-        if ((view_add$26 == 2) & (t$2$d == cyc_add$26)) begin
-            add_r$26$d = 1'b1;
-        end
-        if ((view$26 == 3) & (t$3$d == cyc$26)) begin
-            act_r$26$d = 1'b1;
-        end
-        if ((view_add$26 == 3) & (t$3$d == cyc_add$26)) begin
-            add_r$26$d = 1'b1;
-        end
-        if ((view$26 == 4) & (t$4$d == cyc$26)) begin
-            act_r$26$d = 1'b1;
-        end
-        if ((view_add$26 == 4) & (t$4$d == cyc_add$26)) begin
-            add_r$26$d = 1'b1;
-        end
-        if ((view$26 == 5) & (t$5$d == cyc$26)) begin
-            act_r$26$d = 1'b1;
-        end
-        if ((view_add$26 == 5) & (t$5$d == cyc_add$26)) begin
-            add_r$26$d = 1'b1;
+        add_r$26$d = add_r$26$q;
+        if (run) begin
+            act_r$26$d = 1'b0;
+            add_r$26$d = 1'b0;
+            if (view$26 == 0) begin
+                if (cyc$26 == firsts$0) begin
+                    act_r$26$d = enter$0;
+                end
+                else begin
+                    act_r$26$d = t$0$q == cyc$26 - 32'h1;
+                end
+            end
+            if (view_add$26 == 0) begin
+                if (cyc_add$26 == firsts$0) begin
+                    add_r$26$d = enter$0;
+                end
+                else begin
+                    add_r$26$d = t$0$q == cyc_add$26 - 32'h1;
+                end
+            end
+            if (view$26 == 1) begin
+                if (cyc$26 == firsts$1) begin
+                    act_r$26$d = enter$1;
+                end
+                else begin
+                    act_r$26$d = t$1$q == cyc$26 - 32'h1;
+                end
+            end
+            if (view_add$26 == 1) begin
+                if (cyc_add$26 == firsts$1) begin
+                    add_r$26$d = enter$1;
+                end
+                else begin
+                    add_r$26$d = t$1$q == cyc_add$26 - 32'h1;
+                end
+            end
+            if (view$26 == 2) begin
+                if (cyc$26 == firsts$2) begin
+                    act_r$26$d = enter$2;
+                end
+                else begin
+                    act_r$26$d = t$2$q == cyc$26 - 32'h1;
+                end
+            end
+            if (view_add$26 == 2) begin
+                if (cyc_add$26 == firsts$2) begin
+                    add_r$26$d = enter$2;
+                end
+                else begin
+                    add_r$26$d = t$2$q == cyc_add$26 - 32'h1;
+                end
+            end
+            if (view$26 == 3) begin
+                if (cyc$26 == firsts$3) begin
+                    act_r$26$d = enter$3;
+                end
+                else begin
+                    act_r$26$d = t$3$q == cyc$26 - 32'h1;
+                end
+            end
+            if (view_add$26 == 3) begin
+                if (cyc_add$26 == firsts$3) begin
+                    add_r$26$d = enter$3;
+                end
+                else begin
+                    add_r$26$d = t$3$q == cyc_add$26 - 32'h1;
+                end
+            end
+            if (view$26 == 4) begin
+                if (cyc$26 == firsts$4) begin
+                    act_r$26$d = enter$4;
+                end
+                else begin
+                    act_r$26$d = t$4$q == cyc$26 - 32'h1;
+                end
+            end
+            if (view_add$26 == 4) begin
+                if (cyc_add$26 == firsts$4) begin
+                    add_r$26$d = enter$4;
+                end
+                else begin
+                    add_r$26$d = t$4$q == cyc_add$26 - 32'h1;
+                end
+            end
+            if (view$26 == 5) begin
+                if (cyc$26 == firsts$5) begin
+                    act_r$26$d = enter$5;
+                end
+                else begin
+                    act_r$26$d = t$5$q == cyc$26 - 32'h1;
+                end
+            end
+            if (view_add$26 == 5) begin
+                if (cyc_add$26 == firsts$5) begin
+                    add_r$26$d = enter$5;
+                end
+                else begin
+                    add_r$26$d = t$5$q == cyc_add$26 - 32'h1;
+                end
+            end
         end
         act_r$27$clock = clock;
-        act_r$27$d = 1'b0;
+        act_r$27$d = act_r$27$q;
         add_r$27$clock = clock;
-        add_r$27$d = 1'b0;
-        if ((view$27 == 0) & (t$0$d == cyc$27)) begin
-            act_r$27$d = 1'b1;
-        end
-        if ((view_add$27 == 0) & (t$0$d == cyc_add$27)) begin
-            add_r$27$d = 1'b1;
-        end
-        if ((view$27 == 1) & (t$1$d == cyc$27)) begin
-            act_r$27$d = 1'b1;
-        end
-        if ((view_add$27 == 1) & (t$1$d == cyc_add$27)) begin
-            add_r$27$d = 1'b1;
-        end
-        if ((view$27 == 2) & (t$2$d == cyc$27)) begin
-            act_r$27$d = 1'b1;
-        end
-        if ((view_add$27 == 2) & (t$2$d == cyc_add$27)) begin
-            add_r$27$d = 1'b1;
-        end
-        if ((view$27 == 3) & (t$3$d == cyc$27)) begin
-            act_r$27$d = 1'b1;
-        end
-        if ((view_add$27 == 3) & (t$3$d == cyc_add$27)) begin
-            add_r$27$d = 1'b1;
-        end
-        if ((view$27 == 4) & (t$4$d == cyc$27)) begin
-            act_r$27$d = 1'b1;
-        end
-        if ((view_add$27 == 4) & (t$4$d == cyc_add$27)) begin
-            add_r$27$d = 1'b1;
-        end
-        if ((view$27 == 5) & (t$5$d == cyc$27)) begin
-            act_r$27$d = 1'b1;
-        end
-        if ((view_add$27 == 5) & (t$5$d == cyc_add$27)) begin
-            add_r$27$d = 1'b1;
+        add_r$27$d = add_r$27$q;
+        if (run) begin
+            act_r$27$d = 1'b0;
+            add_r$27$d = 1'b0;
+            if (view$27 == 0) begin
+                if (cyc$27 == firsts$0) begin
+                    act_r$27$d = enter$0;
+                end
+                else begin
+                    act_r$27$d = t$0$q == cyc$27 - 32'h1;
+                end
+            end
+            if (view_add$27 == 0) begin
+                if (cyc_add$27 == firsts$0) begin
+                    add_r$27$d = enter$0;
+                end
+                else begin
+                    add_r$27$d = t$0$q == cyc_add$27 - 32'h1;
+                end
+            end
+            if (view$27 == 1) begin
+                if (cyc$27 == firsts$1) begin
+                    act_r$27$d = enter$1;
+                end
+                else begin
+                    act_r$27$d = t$1$q == cyc$27 - 32'h1;
+                end
+            end
+            if (view_add$27 == 1) begin
+                if (cyc_add$27 == firsts$1) begin
+                    add_r$27$d = enter$1;
+                end
+                else begin
+                    add_r$27$d = t$1$q == cyc_add$27 - 32'h1;
+                end
+            end
+            if (view$27 == 2) begin
+                if (cyc$27 == firsts$2) begin
+                    act_r$27$d = enter$2;
+                end
+                else begin
+                    act_r$27$d = t$2$q == cyc$27 - 32'h1;
+                end
+            end
+            if (view_add$27 == 2) begin
+                if (cyc_add$27 == firsts$2) begin
+                    add_r$27$d = enter$2;
+                end
+                else begin
+                    add_r$27$d = t$2$q == cyc_add$27 - 32'h1;
+                end
+            end
+            if (view$27 == 3) begin
+                if (cyc$27 == firsts$3) begin
+                    act_r$27$d = enter$3;
+                end
+                else begin
+                    act_r$27$d = t$3$q == cyc$27 - 32'h1;
+                end
+            end
+            if (view_add$27 == 3) begin
+                if (cyc_add$27 == firsts$3) begin
+                    add_r$27$d = enter$3;
+                end
+                else begin
+                    add_r$27$d = t$3$q == cyc_add$27 - 32'h1;
+                end
+            end
+            if (view$27 == 4) begin
+                if (cyc$27 == firsts$4) begin
+                    act_r$27$d = enter$4;
+                end
+                else begin
+                    act_r$27$d = t$4$q == cyc$27 - 32'h1;
+                end
+            end
+            if (view_add$27 == 4) begin
+                if (cyc_add$27 == firsts$4) begin
+                    add_r$27$d = enter$4;
+                end
+                else begin
+                    add_r$27$d = t$4$q == cyc_add$27 - 32'h1;
+                end
+            end
+            if (view$27 == 5) begin
+                if (cyc$27 == firsts$5) begin
+                    act_r$27$d = enter$5;
+                end
+                else begin
+                    act_r$27$d = t$5$q == cyc$27 - 32'h1;
+                end
+            end
+            if (view_add$27 == 5) begin
+                if (cyc_add$27 == firsts$5) begin
+                    add_r$27$d = enter$5;
+                end
+                else begin
+                    add_r$27$d = t$5$q == cyc_add$27 - 32'h1;
+                end
+            end
         end
         act_r$28$clock = clock;
-        act_r$28$d = 1'b0;
+        act_r$28$d = act_r$28$q;
         add_r$28$clock = clock;
-        add_r$28$d = 1'b0;
-        if ((view$28 == 0) & (t$0$d == cyc$28)) begin
-            act_r$28$d = 1'b1;
-        end
-        if ((view_add$28 == 0) & (t$0$d == cyc_add$28)) begin
-            add_r$28$d = 1'b1;
-        end
-        if ((view$28 == 1) & (t$1$d == cyc$28)) begin
-            act_r$28$d = 1'b1;
-        end
-        if ((view_add$28 == 1) & (t$1$d == cyc_add$28)) begin
-            add_r$28$d = 1'b1;
-        end
-        if ((view$28 == 2) & (t$2$d == cyc$28)) begin
-            act_r$28$d = 1'b1;
-        end
-        if ((view_add$28 == 2) & (t$2$d == cyc_add$28)) begin
-            add_r$28$d = 1'b1;
-        end
-        if ((view$28 == 3) & (t$3$d == cyc$28)) begin
-            act_r$28$d = 1'b1;
-        end
-        if ((view_add$28 == 3) & (t$3$d == cyc_add$28)) begin
-            add_r$28$d = 1'b1;
-        end
-        if ((view$28 == 4) & (t$4$d == cyc$28)) begin
-            act_r$28$d = 1'b1;
-        end
-        if ((view_add$28 == 4) & (t$4$d == cyc_add$28)) begin
-            add_r$28$d = 1'b1;
-        end
-        if ((view$28 == 5) & (t$5$d == cyc$28)) begin
-            act_r$28$d = 1'b1;
-        end
-        if ((view_add$28 == 5) & (t$5$d == cyc_add$28)) begin
-            add_r$28$d = 1'b1;
+        add_r$28$d = add_r$28$q;
+        if (run) begin
+            act_r$28$d = 1'b0;
+            add_r$28$d = 1'b0;
+            if (view$28 == 0) begin
+                if (cyc$28 == firsts$0) begin
+                    act_r$28$d = enter$0;
+                end
+                else begin
+                    act_r$28$d = t$0$q == cyc$28 - 32'h1;
+                end
+            end
+            if (view_add$28 == 0) begin
+                if (cyc_add$28 == firsts$0) begin
+                    add_r$28$d = enter$0;
+                end
+                else begin
+                    add_r$28$d = t$0$q == cyc_add$28 - 32'h1;
+                end
+            end
+            if (view$28 == 1) begin
+                if (cyc$28 == firsts$1) begin
+                    act_r$28$d = enter$1;
+                end
+                else begin
+                    act_r$28$d = t$1$q == cyc$28 - 32'h1;
+                end
+            end
+            if (view_add$28 == 1) begin
+                if (cyc_add$28 == firsts$1) begin
+                    add_r$28$d = enter$1;
+                end
+                else begin
+                    add_r$28$d = t$1$q == cyc_add$28 - 32'h1;
+                end
+            end
+            if (view$28 == 2) begin
+                if (cyc$28 == firsts$2) begin
+                    act_r$28$d = enter$2;
+                end
+                else begin
+                    act_r$28$d = t$2$q == cyc$28 - 32'h1;
+                end
+            end
+            if (view_add$28 == 2) begin
+                if (cyc_add$28 == firsts$2) begin
+                    add_r$28$d = enter$2;
+                end
+                else begin
+                    add_r$28$d = t$2$q == cyc_add$28 - 32'h1;
+                end
+            end
+            if (view$28 == 3) begin
+                if (cyc$28 == firsts$3) begin
+                    act_r$28$d = enter$3;
+                end
+                else begin
+                    act_r$28$d = t$3$q == cyc$28 - 32'h1;
+                end
+            end
+            if (view_add$28 == 3) begin
+                if (cyc_add$28 == firsts$3) begin
+                    add_r$28$d = enter$3;
+                end
+                else begin
+                    add_r$28$d = t$3$q == cyc_add$28 - 32'h1;
+                end
+            end
+            if (view$28 == 4) begin
+                if (cyc$28 == firsts$4) begin
+                    act_r$28$d = enter$4;
+                end
+                else begin
+                    act_r$28$d = t$4$q == cyc$28 - 32'h1;
+                end
+            end
+            if (view_add$28 == 4) begin
+                if (cyc_add$28 == firsts$4) begin
+                    add_r$28$d = enter$4;
+                end
+                else begin
+                    add_r$28$d = t$4$q == cyc_add$28 - 32'h1;
+                end
+            end
+            if (view$28 == 5) begin
+                if (cyc$28 == firsts$5) begin
+                    act_r$28$d = enter$5;
+                end
+                else begin
+                    act_r$28$d = t$5$q == cyc$28 - 32'h1;
+                end
+            end
+            if (view_add$28 == 5) begin
+                if (cyc_add$28 == firsts$5) begin
+                    add_r$28$d = enter$5;
+                end
+                else begin
+                    add_r$28$d = t$5$q == cyc_add$28 - 32'h1;
+                end
+            end
         end
         act_r$29$clock = clock;
-        act_r$29$d = 1'b0;
+        act_r$29$d = act_r$29$q;
         add_r$29$clock = clock;
-        add_r$29$d = 1'b0;
-        if ((view$29 == 0) & (t$0$d == cyc$29)) begin
-            act_r$29$d = 1'b1;
-        end
-        if ((view_add$29 == 0) & (t$0$d == cyc_add$29)) begin
-            add_r$29$d = 1'b1;
-        end
-        if ((view$29 == 1) & (t$1$d == cyc$29)) begin
-            act_r$29$d = 1'b1;
-        end
-        if ((view_add$29 == 1) & (t$1$d == cyc_add$29)) begin
-            add_r$29$d = 1'b1;
-        end
-        if ((view$29 == 2) & (t$2$d == cyc$29)) begin
-            act_r$29$d = 1'b1;
-        end
-        if ((view_add$29 == 2) & (t$2$d == cyc_add$29)) begin
-            add_r$29$d = 1'b1;
-        end
-        if ((view$29 == 3) & (t$3$d == cyc$29)) begin
-            act_r$29$d = 1'b1;
-        end
-        if ((view_add$29 == 3) & (t$3$d == cyc_add$29)) begin
-            add_r$29$d = 1'b1;
-        end
-        if ((view$29 == 4) & (t$4$d == cyc$29)) begin
-            act_r$29$d = 1'b1;
-        end
-        if ((view_add$29 == 4) & (t$4$d == cyc_add$29)) begin
-            add_r$29$d = 1'b1;
-        end
-        if ((view$29 == 5) & (t$5$d == cyc$29)) begin
-            act_r$29$d = 1'b1;
-        end
-        if ((view_add$29 == 5) & (t$5$d == cyc_add$29)) begin
-            add_r$29$d = 1'b1;
+        add_r$29$d = add_r$29$q;
+        if (run) begin
+            act_r$29$d = 1'b0;
+            add_r$29$d = 1'b0;
+            if (view$29 == 0) begin
+                if (cyc$29 == firsts$0) begin
+                    act_r$29$d = enter$0;
+                end
+                else begin
+                    act_r$29$d = t$0$q == cyc$29 - 32'h1;
+                end
+            end
+            if (view_add$29 == 0) begin
+                if (cyc_add$29 == firsts$0) begin
+                    add_r$29$d = enter$0;
+                end
+                else begin
+                    add_r$29$d = t$0$q == cyc_add$29 - 32'h1;
+                end
+            end
+            if (view$29 == 1) begin
+                if (cyc$29 == firsts$1) begin
+                    act_r$29$d = enter$1;
+                end
+                else begin
+                    act_r$29$d = t$1$q == cyc$29 - 32'h1;
+                end
+            end
+            if (view_add$29 == 1) begin
+                if (cyc_add$29 == firsts$1) begin
+                    add_r$29$d = enter$1;
+                end
+                else begin
+                    add_r$29$d = t$1$q == cyc_add$29 - 32'h1;
+                end
+            end
+            if (view$29 == 2) begin
+                if (cyc$29 == firsts$2) begin
+                    act_r$29$d = enter$2;
+                end
+                else begin
+                    act_r$29$d = t$2$q == cyc$29 - 32'h1;
+                end
+            end
+            if (view_add$29 == 2) begin
+                if (cyc_add$29 == firsts$2) begin
+                    add_r$29$d = enter$2;
+                end
+                else begin
+                    add_r$29$d = t$2$q == cyc_add$29 - 32'h1;
+                end
+            end
+            if (view$29 == 3) begin
+                if (cyc$29 == firsts$3) begin
+                    act_r$29$d = enter$3;
+                end
+                else begin
+                    act_r$29$d = t$3$q == cyc$29 - 32'h1;
+                end
+            end
+            if (view_add$29 == 3) begin
+                if (cyc_add$29 == firsts$3) begin
+                    add_r$29$d = enter$3;
+                end
+                else begin
+                    add_r$29$d = t$3$q == cyc_add$29 - 32'h1;
+                end
+            end
+            if (view$29 == 4) begin
+                if (cyc$29 == firsts$4) begin
+                    act_r$29$d = enter$4;
+                end
+                else begin
+                    act_r$29$d = t$4$q == cyc$29 - 32'h1;
+                end
+            end
+            if (view_add$29 == 4) begin
+                if (cyc_add$29 == firsts$4) begin
+                    add_r$29$d = enter$4;
+                end
+                else begin
+                    add_r$29$d = t$4$q == cyc_add$29 - 32'h1;
+                end
+            end
+            if (view$29 == 5) begin
+                if (cyc$29 == firsts$5) begin
+                    act_r$29$d = enter$5;
+                end
+                else begin
+                    act_r$29$d = t$5$q == cyc$29 - 32'h1;
+                end
+            end
+            if (view_add$29 == 5) begin
+                if (cyc_add$29 == firsts$5) begin
+                    add_r$29$d = enter$5;
+                end
+                else begin
+                    add_r$29$d = t$5$q == cyc_add$29 - 32'h1;
+                end
+            end
         end
         act_r$30$clock = clock;
-        act_r$30$d = 1'b0;
+        act_r$30$d = act_r$30$q;
         add_r$30$clock = clock;
-        add_r$30$d = 1'b0;
-        if ((view$30 == 0) & (t$0$d == cyc$30)) begin
-            act_r$30$d = 1'b1;
-        end
-        if ((view_add$30 == 0) & (t$0$d == cyc_add$30)) begin
-            add_r$30$d = 1'b1;
-        end
-        if ((view$30 == 1) & (t$1$d == cyc$30)) begin
-            act_r$30$d = 1'b1;
-        end
-        if ((view_add$30 == 1) & (t$1$d == cyc_add$30)) begin
-            add_r$30$d = 1'b1;
-        end
-        if ((view$30 == 2) & (t$2$d == cyc$30)) begin
-            act_r$30$d = 1'b1;
-        end
-        if ((view_add$30 == 2) & (t$2$d == cyc_add$30)) begin
-            add_r$30$d = 1'b1;
-        end
-        if ((view$30 == 3) & (t$3$d == cyc$30)) begin
-            act_r$30$d = 1'b1;
-        end
-        if ((view_add$30 == 3) & (t$3$d == cyc_add$30)) begin
-            add_r$30$d = 1'b1;
-        end
-        if ((view$30 == 4) & (t$4$d == cyc$30)) begin
-            act_r$30$d = 1'b1;
-        end
-        if ((view_add$30 == 4) & (t$4$d == cyc_add$30)) begin
-            add_r$30$d = 1'b1;
-        end
-        if ((view$30 == 5) & (t$5$d == cyc$30)) begin
-            act_r$30$d = 1'b1;
-        end
-        if ((view_add$30 == 5) & (t$5$d == cyc_add$30)) begin
-            add_r$30$d = 1'b1;
+        add_r$30$d = add_r$30$q;
+        if (run) begin
+            act_r$30$d = 1'b0;
+            add_r$30$d = 1'b0;
+            if (view$30 == 0) begin
+                if (cyc$30 == firsts$0) begin
+                    act_r$30$d = enter$0;
+                end
+                else begin
+                    act_r$30$d = t$0$q == cyc$30 - 32'h1;
+                end
+            end
+            if (view_add$30 == 0) begin
+                if (cyc_add$30 == firsts$0) begin
+                    add_r$30$d = enter$0;
+                end
+                else begin
+                    add_r$30$d = t$0$q == cyc_add$30 - 32'h1;
+                end
+            end
+            if (view$30 == 1) begin
+                if (cyc$30 == firsts$1) begin
+                    act_r$30$d = enter$1;
+                end
+                else begin
+                    act_r$30$d = t$1$q == cyc$30 - 32'h1;
+                end
+            end
+            if (view_add$30 == 1) begin
+                if (cyc_add$30 == firsts$1) begin
+                    add_r$30$d = enter$1;
+                end
+                else begin
+                    add_r$30$d = t$1$q == cyc_add$30 - 32'h1;
+                end
+            end
+            if (view$30 == 2) begin
+                if (cyc$30 == firsts$2) begin
+                    act_r$30$d = enter$2;
+                end
+                else begin
+                    act_r$30$d = t$2$q == cyc$30 - 32'h1;
+                end
+            end
+            if (view_add$30 == 2) begin
+                if (cyc_add$30 == firsts$2) begin
+                    add_r$30$d = enter$2;
+                end
+                else begin
+                    add_r$30$d = t$2$q == cyc_add$30 - 32'h1;
+                end
+            end
+            if (view$30 == 3) begin
+                if (cyc$30 == firsts$3) begin
+                    act_r$30$d = enter$3;
+                end
+                else begin
+                    act_r$30$d = t$3$q == cyc$30 - 32'h1;
+                end
+            end
+            if (view_add$30 == 3) begin
+                if (cyc_add$30 == firsts$3) begin
+                    add_r$30$d = enter$3;
+                end
+                else begin
+                    add_r$30$d = t$3$q == cyc_add$30 - 32'h1;
+                end
+            end
+            if (view$30 == 4) begin
+                if (cyc$30 == firsts$4) begin
+                    act_r$30$d = enter$4;
+                end
+                else begin
+                    act_r$30$d = t$4$q == cyc$30 - 32'h1;
+                end
+            end
+            if (view_add$30 == 4) begin
+                if (cyc_add$30 == firsts$4) begin
+                    add_r$30$d = enter$4;
+                end
+                else begin
+                    add_r$30$d = t$4$q == cyc_add$30 - 32'h1;
+                end
+            end
+            if (view$30 == 5) begin
+                if (cyc$30 == firsts$5) begin
+                    act_r$30$d = enter$5;
+                end
+                else begin
+                    act_r$30$d = t$5$q == cyc$30 - 32'h1;
+                end
+            end
+            if (view_add$30 == 5) begin
+                if (cyc_add$30 == firsts$5) begin
+                    add_r$30$d = enter$5;
+                end
+                else begin
+                    add_r$30$d = t$5$q == cyc_add$30 - 32'h1;
+                end
+            end
         end
         act_r$31$clock = clock;
-        act_r$31$d = 1'b0;
+        act_r$31$d = act_r$31$q;
         add_r$31$clock = clock;
-        add_r$31$d = 1'b0;
-        if ((view$31 == 0) & (t$0$d == cyc$31)) begin
-            act_r$31$d = 1'b1;
-        end
-        if ((view_add$31 == 0) & (t$0$d == cyc_add$31)) begin
-            add_r$31$d = 1'b1;
-        end
-        if ((view$31 == 1) & (t$1$d == cyc$31)) begin
-            act_r$31$d = 1'b1;
-        end
-        if ((view_add$31 == 1) & (t$1$d == cyc_add$31)) begin
-            add_r$31$d = 1'b1;
-        end
-        if ((view$31 == 2) & (t$2$d == cyc$31)) begin
-            act_r$31$d = 1'b1;
-        end
-        if ((view_add$31 == 2) & (t$2$d == cyc_add$31)) begin
-            add_r$31$d = 1'b1;
-        end
-        if ((view$31 == 3) & (t$3$d == cyc$31)) begin
-            act_r$31$d = 1'b1;
-        end
-        if ((view_add$31 == 3) & (t$3$d == cyc_add$31)) begin
-            add_r$31$d = 1'b1;
-        end
-        if ((view$31 == 4) & (t$4$d == cyc$31)) begin
-            act_r$31$d = 1'b1;
-        end
-        if ((view_add$31 == 4) & (t$4$d == cyc_add$31)) begin
-            add_r$31$d = 1'b1;
-        end
-        if ((view$31 == 5) & (t$5$d == cyc$31)) begin
-            act_r$31$d = 1'b1;
-        end
-        if ((view_add$31 == 5) & (t$5$d == cyc_add$31)) begin
-            add_r$31$d = 1'b1;
+        add_r$31$d = add_r$31$q;
+        if (run) begin
+            act_r$31$d = 1'b0;
+            add_r$31$d = 1'b0;
+            if (view$31 == 0) begin
+                if (cyc$31 == firsts$0) begin
+                    act_r$31$d = enter$0;
+                end
+                else begin
+                    act_r$31$d = t$0$q == cyc$31 - 32'h1;
+                end
+            end
+            if (view_add$31 == 0) begin
+                if (cyc_add$31 == firsts$0) begin
+                    add_r$31$d = enter$0;
+                end
+                else begin
+                    add_r$31$d = t$0$q == cyc_add$31 - 32'h1;
+                end
+            end
+            if (view$31 == 1) begin
+                if (cyc$31 == firsts$1) begin
+                    act_r$31$d = enter$1;
+                end
+                else begin
+                    act_r$31$d = t$1$q == cyc$31 - 32'h1;
+                end
+            end
+            if (view_add$31 == 1) begin
+                if (cyc_add$31 == firsts$1) begin
+                    add_r$31$d = enter$1;
+                end
+                else begin
+                    add_r$31$d = t$1$q == cyc_add$31 - 32'h1;
+                end
+            end
+            if (view$31 == 2) begin
+                if (cyc$31 == firsts$2) begin
+                    act_r$31$d = enter$2;
+                end
+                else begin
+                    act_r$31$d = t$2$q == cyc$31 - 32'h1;
+                end
+            end
+            if (view_add$31 == 2) begin
+                if (cyc_add$31 == firsts$2) begin
+                    add_r$31$d = enter$2;
+                end
+                else begin
+                    add_r$31$d = t$2$q == cyc_add$31 - 32'h1;
+                end
+            end
+            if (view$31 == 3) begin
+                if (cyc$31 == firsts$3) begin
+                    act_r$31$d = enter$3;
+                end
+                else begin
+                    act_r$31$d = t$3$q == cyc$31 - 32'h1;
+                end
+            end
+            if (view_add$31 == 3) begin
+                if (cyc_add$31 == firsts$3) begin
+                    add_r$31$d = enter$3;
+                end
+                else begin
+                    add_r$31$d = t$3$q == cyc_add$31 - 32'h1;
+                end
+            end
+            if (view$31 == 4) begin
+                if (cyc$31 == firsts$4) begin
+                    act_r$31$d = enter$4;
+                end
+                else begin
+                    act_r$31$d = t$4$q == cyc$31 - 32'h1;
+                end
+            end
+            if (view_add$31 == 4) begin
+                if (cyc_add$31 == firsts$4) begin
+                    add_r$31$d = enter$4;
+                end
+                else begin
+                    add_r$31$d = t$4$q == cyc_add$31 - 32'h1;
+                end
+            end
+            if (view$31 == 5) begin
+                if (cyc$31 == firsts$5) begin
+                    act_r$31$d = enter$5;
+                end
+                else begin
+                    act_r$31$d = t$5$q == cyc$31 - 32'h1;
+                end
+            end
+            if (view_add$31 == 5) begin
+                if (cyc_add$31 == firsts$5) begin
+                    add_r$31$d = enter$5;
+                end
+                else begin
+                    add_r$31$d = t$5$q == cyc_add$31 - 32'h1;
+                end
+            end
         end
         act_r$32$clock = clock;
-        act_r$32$d = 1'b0;
+        act_r$32$d = act_r$32$q;
         add_r$32$clock = clock;
-        add_r$32$d = 1'b0;
-        if ((view$32 == 0) & (t$0$d == cyc$32)) begin
-            act_r$32$d = 1'b1;
-        end
-        if ((view_add$32 == 0) & (t$0$d == cyc_add$32)) begin
-            add_r$32$d = 1'b1;
-        end
-        if ((view$32 == 1) & (t$1$d == cyc$32)) begin
-            act_r$32$d = 1'b1;
-        end
-        if ((view_add$32 == 1) & (t$1$d == cyc_add$32)) begin
-            add_r$32$d = 1'b1;
-        end
-        if ((view$32 == 2) & (t$2$d == cyc$32)) begin
-            act_r$32$d = 1'b1;
-        end
-        if ((view_add$32 == 2) & (t$2$d == cyc_add$32)) begin
-            add_r$32$d = 1'b1;
-        end
-        if ((view$32 == 3) & (t$3$d == cyc$32)) begin
-            act_r$32$d = 1'b1;
-        end
-        if ((view_add$32 == 3) & (t$3$d == cyc_add$32)) begin
-            add_r$32$d = 1'b1;
-        end
-        if ((view$32 == 4) & (t$4$d == cyc$32)) begin
-            act_r$32$d = 1'b1;
-        end
-        if ((view_add$32 == 4) & (t$4$d == cyc_add$32)) begin
-            add_r$32$d = 1'b1;
-        end
-        if ((view$32 == 5) & (t$5$d == cyc$32)) begin
-            act_r$32$d = 1'b1;
-        end
-        if ((view_add$32 == 5) & (t$5$d == cyc_add$32)) begin
-            add_r$32$d = 1'b1;
+        add_r$32$d = add_r$32$q;
+        if (run) begin
+            act_r$32$d = 1'b0;
+            add_r$32$d = 1'b0;
+            if (view$32 == 0) begin
+                if (cyc$32 == firsts$0) begin
+                    act_r$32$d = enter$0;
+                end
+                else begin
+                    act_r$32$d = t$0$q == cyc$32 - 32'h1;
+                end
+            end
+            if (view_add$32 == 0) begin
+                if (cyc_add$32 == firsts$0) begin
+                    add_r$32$d = enter$0;
+                end
+                else begin
+                    add_r$32$d = t$0$q == cyc_add$32 - 32'h1;
+                end
+            end
+            if (view$32 == 1) begin
+                if (cyc$32 == firsts$1) begin
+                    act_r$32$d = enter$1;
+                end
+                else begin
+                    act_r$32$d = t$1$q == cyc$32 - 32'h1;
+                end
+            end
+            if (view_add$32 == 1) begin
+                if (cyc_add$32 == firsts$1) begin
+                    add_r$32$d = enter$1;
+                end
+                else begin
+                    add_r$32$d = t$1$q == cyc_add$32 - 32'h1;
+                end
+            end
+            if (view$32 == 2) begin
+                if (cyc$32 == firsts$2) begin
+                    act_r$32$d = enter$2;
+                end
+                else begin
+                    act_r$32$d = t$2$q == cyc$32 - 32'h1;
+                end
+            end
+            if (view_add$32 == 2) begin
+                if (cyc_add$32 == firsts$2) begin
+                    add_r$32$d = enter$2;
+                end
+                else begin
+                    add_r$32$d = t$2$q == cyc_add$32 - 32'h1;
+                end
+            end
+            if (view$32 == 3) begin
+                if (cyc$32 == firsts$3) begin
+                    act_r$32$d = enter$3;
+                end
+                else begin
+                    act_r$32$d = t$3$q == cyc$32 - 32'h1;
+                end
+            end
+            if (view_add$32 == 3) begin
+                if (cyc_add$32 == firsts$3) begin
+                    add_r$32$d = enter$3;
+                end
+                else begin
+                    add_r$32$d = t$3$q == cyc_add$32 - 32'h1;
+                end
+            end
+            if (view$32 == 4) begin
+                if (cyc$32 == firsts$4) begin
+                    act_r$32$d = enter$4;
+                end
+                else begin
+                    act_r$32$d = t$4$q == cyc$32 - 32'h1;
+                end
+            end
+            if (view_add$32 == 4) begin
+                if (cyc_add$32 == firsts$4) begin
+                    add_r$32$d = enter$4;
+                end
+                else begin
+                    add_r$32$d = t$4$q == cyc_add$32 - 32'h1;
+                end
+            end
+            if (view$32 == 5) begin
+                if (cyc$32 == firsts$5) begin
+                    act_r$32$d = enter$5;
+                end
+                else begin
+                    act_r$32$d = t$5$q == cyc$32 - 32'h1;
+                end
+            end
+            if (view_add$32 == 5) begin
+                if (cyc_add$32 == firsts$5) begin
+                    add_r$32$d = enter$5;
+                end
+                else begin
+                    add_r$32$d = t$5$q == cyc_add$32 - 32'h1;
+                end
+            end
         end
         act_r$33$clock = clock;
-        act_r$33$d = 1'b0;
+        act_r$33$d = act_r$33$q;
         add_r$33$clock = clock;
-        add_r$33$d = 1'b0;
-        if ((view$33 == 0) & (t$0$d == cyc$33)) begin
-            act_r$33$d = 1'b1;
-        end
-        if ((view_add$33 == 0) & (t$0$d == cyc_add$33)) begin
-            add_r$33$d = 1'b1;
-        end
-        if ((view$33 == 1) & (t$1$d == cyc$33)) begin
-            act_r$33$d = 1'b1;
-        end
-        if ((view_add$33 == 1) & (t$1$d == cyc_add$33)) begin
-            add_r$33$d = 1'b1;
-        end
-        if ((view$33 == 2) & (t$2$d == cyc$33)) begin
-            act_r$33$d = 1'b1;
-        end
-        if ((view_add$33 == 2) & (t$2$d == cyc_add$33)) begin
-            add_r$33$d = 1'b1;
-        end
-        if ((view$33 == 3) & (t$3$d == cyc$33)) begin
-            act_r$33$d = 1'b1;
-        end
-        if ((view_add$33 == 3) & (t$3$d == cyc_add$33)) begin
-            add_r$33$d = 1'b1;
-        end
-        if ((view$33 == 4) & (t$4$d == cyc$33)) begin
-            act_r$33$d = 1'b1;
-        end
-        if ((view_add$33 == 4) & (t$4$d == cyc_add$33)) begin
-            add_r$33$d = 1'b1;
-        end
-        if ((view$33 == 5) & (t$5$d == cyc$33)) begin
-            act_r$33$d = 1'b1;
-        end
-        if ((view_add$33 == 5) & (t$5$d == cyc_add$33)) begin
-            add_r$33$d = 1'b1;
+        add_r$33$d = add_r$33$q;
+        if (run) begin
+            act_r$33$d = 1'b0;
+            add_r$33$d = 1'b0;
+            if (view$33 == 0) begin
+                if (cyc$33 == firsts$0) begin
+                    act_r$33$d = enter$0;
+                end
+                else begin
+                    act_r$33$d = t$0$q == cyc$33 - 32'h1;
+                end
+            end
+            if (view_add$33 == 0) begin
+                if (cyc_add$33 == firsts$0) begin
+                    add_r$33$d = enter$0;
+                end
+                else begin
+                    add_r$33$d = t$0$q == cyc_add$33 - 32'h1;
+                end
+            end
+            if (view$33 == 1) begin
+                if (cyc$33 == firsts$1) begin
+                    act_r$33$d = enter$1;
+                end
+                else begin
+                    act_r$33$d = t$1$q == cyc$33 - 32'h1;
+                end
+            end
+            if (view_add$33 == 1) begin
+                if (cyc_add$33 == firsts$1) begin
+                    add_r$33$d = enter$1;
+                end
+                else begin
+                    add_r$33$d = t$1$q == cyc_add$33 - 32'h1;
+                end
+            end
+            if (view$33 == 2) begin
+                if (cyc$33 == firsts$2) begin
+                    act_r$33$d = enter$2;
+                end
+                else begin
+                    act_r$33$d = t$2$q == cyc$33 - 32'h1;
+                end
+            end
+            if (view_add$33 == 2) begin
+                if (cyc_add$33 == firsts$2) begin
+                    add_r$33$d = enter$2;
+                end
+                else begin
+                    add_r$33$d = t$2$q == cyc_add$33 - 32'h1;
+                end
+            end
+            if (view$33 == 3) begin
+                if (cyc$33 == firsts$3) begin
+                    act_r$33$d = enter$3;
+                end
+                else begin
+                    act_r$33$d = t$3$q == cyc$33 - 32'h1;
+                end
+            end
+            if (view_add$33 == 3) begin
+                if (cyc_add$33 == firsts$3) begin
+                    add_r$33$d = enter$3;
+                end
+                else begin
+                    add_r$33$d = t$3$q == cyc_add$33 - 32'h1;
+                end
+            end
+            if (view$33 == 4) begin
+                if (cyc$33 == firsts$4) begin
+                    act_r$33$d = enter$4;
+                end
+                else begin
+                    act_r$33$d = t$4$q == cyc$33 - 32'h1;
+                end
+            end
+            if (view_add$33 == 4) begin
+                if (cyc_add$33 == firsts$4) begin
+                    add_r$33$d = enter$4;
+                end
+                else begin
+                    add_r$33$d = t$4$q == cyc_add$33 - 32'h1;
+                end
+            end
+            if (view$33 == 5) begin
+                if (cyc$33 == firsts$5) begin
+                    act_r$33$d = enter$5;
+                end
+                else begin
+                    act_r$33$d = t$5$q == cyc$33 - 32'h1;
+                end
+            end
+            if (view_add$33 == 5) begin
+                if (cyc_add$33 == firsts$5) begin
+                    add_r$33$d = enter$5;
+                end
+                else begin
+                    add_r$33$d = t$5$q == cyc_add$33 - 32'h1;
+                end
+            end
         end
         act_r$34$clock = clock;
-        act_r$34$d = 1'b0;
+        act_r$34$d = act_r$34$q;
         add_r$34$clock = clock;
-        add_r$34$d = 1'b0;
-        if ((view$34 == 0) & (t$0$d == cyc$34)) begin
-            act_r$34$d = 1'b1;
-        end
-        if ((view_add$34 == 0) & (t$0$d == cyc_add$34)) begin
-            add_r$34$d = 1'b1;
-        end
-        if ((view$34 == 1) & (t$1$d == cyc$34)) begin
-            act_r$34$d = 1'b1;
-        end
-        if ((view_add$34 == 1) & (t$1$d == cyc_add$34)) begin
-            add_r$34$d = 1'b1;
-        end
-        if ((view$34 == 2) & (t$2$d == cyc$34)) begin
-            act_r$34$d = 1'b1;
-        end
-        if ((view_add$34 == 2) & (t$2$d == cyc_add$34)) begin
-            add_r$34$d = 1'b1;
-        end
-        if ((view$34 == 3) & (t$3$d == cyc$34)) begin
-            act_r$34$d = 1'b1;
-        end
-        if ((view_add$34 == 3) & (t$3$d == cyc_add$34)) begin
-            add_r$34$d = 1'b1;
-        end
-        if ((view$34 == 4) & (t$4$d == cyc$34)) begin
-            act_r$34$d = 1'b1;
-        end
-        if ((view_add$34 == 4) & (t$4$d == cyc_add$34)) begin
-            add_r$34$d = 1'b1;
-        end
-        if ((view$34 == 5) & (t$5$d == cyc$34)) begin
-            act_r$34$d = 1'b1;
-        end
-        if ((view_add$34 == 5) & (t$5$d == cyc_add$34)) begin
-            add_r$34$d = 1'b1;
+        add_r$34$d = add_r$34$q;
+        if (run) begin
+            act_r$34$d = 1'b0;
+            add_r$34$d = 1'b0;
+            if (view$34 == 0) begin
+                if (cyc$34 == firsts$0) begin
+                    act_r$34$d = enter$0;
+                end
+                else begin
+                    act_r$34$d = t$0$q == cyc$34 - 32'h1;
+                end
+            end
+            if (view_add$34 == 0) begin
+                if (cyc_add$34 == firsts$0) begin
+                    add_r$34$d = enter$0;
+                end
+                else begin
+                    add_r$34$d = t$0$q == cyc_add$34 - 32'h1;
+                end
+            end
+            if (view$34 == 1) begin
+                if (cyc$34 == firsts$1) begin
+                    act_r$34$d = enter$1;
+                end
+                else begin
+                    act_r$34$d = t$1$q == cyc$34 - 32'h1;
+                end
+            end
+            if (view_add$34 == 1) begin
+                if (cyc_add$34 == firsts$1) begin
+                    add_r$34$d = enter$1;
+                end
+                else begin
+                    add_r$34$d = t$1$q == cyc_add$34 - 32'h1;
+                end
+            end
+            if (view$34 == 2) begin
+                if (cyc$34 == firsts$2) begin
+                    act_r$34$d = enter$2;
+                end
+                else begin
+                    act_r$34$d = t$2$q == cyc$34 - 32'h1;
+                end
+            end
+            if (view_add$34 == 2) begin
+                if (cyc_add$34 == firsts$2) begin
+                    add_r$34$d = enter$2;
+                end
+                else begin
+                    add_r$34$d = t$2$q == cyc_add$34 - 32'h1;
+                end
+            end
+            if (view$34 == 3) begin
+                if (cyc$34 == firsts$3) begin
+                    act_r$34$d = enter$3;
+                end
+                else begin
+                    act_r$34$d = t$3$q == cyc$34 - 32'h1;
+                end
+            end
+            if (view_add$34 == 3) begin
+                if (cyc_add$34 == firsts$3) begin
+                    add_r$34$d = enter$3;
+                end
+                else begin
+                    add_r$34$d = t$3$q == cyc_add$34 - 32'h1;
+                end
+            end
+            if (view$34 == 4) begin
+                if (cyc$34 == firsts$4) begin
+                    act_r$34$d = enter$4;
+                end
+                else begin
+                    act_r$34$d = t$4$q == cyc$34 - 32'h1;
+                end
+            end
+            if (view_add$34 == 4) begin
+                if (cyc_add$34 == firsts$4) begin
+                    add_r$34$d = enter$4;
+                end
+                else begin
+                    add_r$34$d = t$4$q == cyc_add$34 - 32'h1;
+                end
+            end
+            if (view$34 == 5) begin
+                if (cyc$34 == firsts$5) begin
+                    act_r$34$d = enter$5;
+                end
+                else begin
+                    act_r$34$d = t$5$q == cyc$34 - 32'h1;
+                end
+            end
+            if (view_add$34 == 5) begin
+                if (cyc_add$34 == firsts$5) begin
+                    add_r$34$d = enter$5;
+                end
+                else begin
+                    add_r$34$d = t$5$q == cyc_add$34 - 32'h1;
+                end
+            end
         end
         act_r$35$clock = clock;
-        act_r$35$d = 1'b0;
+        act_r$35$d = act_r$35$q;
         add_r$35$clock = clock;
-        add_r$35$d = 1'b0;
-        if ((view$35 == 0) & (t$0$d == cyc$35)) begin
-            act_r$35$d = 1'b1;
-        end
-        if ((view_add$35 == 0) & (t$0$d == cyc_add$35)) begin
-            add_r$35$d = 1'b1;
-        end
-        if ((view$35 == 1) & (t$1$d == cyc$35)) begin
-            act_r$35$d = 1'b1;
-        end
-        if ((view_add$35 == 1) & (t$1$d == cyc_add$35)) begin
-            add_r$35$d = 1'b1;
-        end
-        if ((view$35 == 2) & (t$2$d == cyc$35)) begin
-            act_r$35$d = 1'b1;
-        end
-        if ((view_add$35 == 2) & (t$2$d == cyc_add$35)) begin
-            add_r$35$d = 1'b1;
-        end
-        if ((view$35 == 3) & (t$3$d == cyc$35)) begin
-            act_r$35$d = 1'b1;
-        end
-        if ((view_add$35 == 3) & (t$3$d == cyc_add$35)) begin
-            add_r$35$d = 1'b1;
-        end
-        if ((view$35 == 4) & (t$4$d == cyc$35)) begin
-            act_r$35$d = 1'b1;
-        end
-        if ((view_add$35 == 4) & (t$4$d == cyc_add$35)) begin
-            add_r$35$d = 1'b1;
-        end
-        if ((view$35 == 5) & (t$5$d == cyc$35)) begin
-            act_r$35$d = 1'b1;
-        end
-        if ((view_add$35 == 5) & (t$5$d == cyc_add$35)) begin
-            add_r$35$d = 1'b1;
+        add_r$35$d = add_r$35$q;
+        if (run) begin
+            act_r$35$d = 1'b0;
+            add_r$35$d = 1'b0;
+            if (view$35 == 0) begin
+                if (cyc$35 == firsts$0) begin
+                    act_r$35$d = enter$0;
+                end
+                else begin
+                    act_r$35$d = t$0$q == cyc$35 - 32'h1;
+                end
+            end
+            if (view_add$35 == 0) begin
+                if (cyc_add$35 == firsts$0) begin
+                    add_r$35$d = enter$0;
+                end
+                else begin
+                    add_r$35$d = t$0$q == cyc_add$35 - 32'h1;
+                end
+            end
+            if (view$35 == 1) begin
+                if (cyc$35 == firsts$1) begin
+                    act_r$35$d = enter$1;
+                end
+                else begin
+                    act_r$35$d = t$1$q == cyc$35 - 32'h1;
+                end
+            end
+            if (view_add$35 == 1) begin
+                if (cyc_add$35 == firsts$1) begin
+                    add_r$35$d = enter$1;
+                end
+                else begin
+                    add_r$35$d = t$1$q == cyc_add$35 - 32'h1;
+                end
+            end
+            if (view$35 == 2) begin
+                if (cyc$35 == firsts$2) begin
+                    act_r$35$d = enter$2;
+                end
+                else begin
+                    act_r$35$d = t$2$q == cyc$35 - 32'h1;
+                end
+            end
+            if (view_add$35 == 2) begin
+                if (cyc_add$35 == firsts$2) begin
+                    add_r$35$d = enter$2;
+                end
+                else begin
+                    add_r$35$d = t$2$q == cyc_add$35 - 32'h1;
+                end
+            end
+            if (view$35 == 3) begin
+                if (cyc$35 == firsts$3) begin
+                    act_r$35$d = enter$3;
+                end
+                else begin
+                    act_r$35$d = t$3$q == cyc$35 - 32'h1;
+                end
+            end
+            if (view_add$35 == 3) begin
+                if (cyc_add$35 == firsts$3) begin
+                    add_r$35$d = enter$3;
+                end
+                else begin
+                    add_r$35$d = t$3$q == cyc_add$35 - 32'h1;
+                end
+            end
+            if (view$35 == 4) begin
+                if (cyc$35 == firsts$4) begin
+                    act_r$35$d = enter$4;
+                end
+                else begin
+                    act_r$35$d = t$4$q == cyc$35 - 32'h1;
+                end
+            end
+            if (view_add$35 == 4) begin
+                if (cyc_add$35 == firsts$4) begin
+                    add_r$35$d = enter$4;
+                end
+                else begin
+                    add_r$35$d = t$4$q == cyc_add$35 - 32'h1;
+                end
+            end
+            if (view$35 == 5) begin
+                if (cyc$35 == firsts$5) begin
+                    act_r$35$d = enter$5;
+                end
+                else begin
+                    act_r$35$d = t$5$q == cyc$35 - 32'h1;
+                end
+            end
+            if (view_add$35 == 5) begin
+                if (cyc_add$35 == firsts$5) begin
+                    add_r$35$d = enter$5;
+                end
+                else begin
+                    add_r$35$d = t$5$q == cyc_add$35 - 32'h1;
+                end
+            end
         end
         act_r$36$clock = clock;
-        act_r$36$d = 1'b0;
+        act_r$36$d = act_r$36$q;
         add_r$36$clock = clock;
-        add_r$36$d = 1'b0;
-        if ((view$36 == 0) & (t$0$d == cyc$36)) begin
-            act_r$36$d = 1'b1;
-        end
-        if ((view_add$36 == 0) & (t$0$d == cyc_add$36)) begin
-            add_r$36$d = 1'b1;
-        end
-        if ((view$36 == 1) & (t$1$d == cyc$36)) begin
-            act_r$36$d = 1'b1;
-        end
-        if ((view_add$36 == 1) & (t$1$d == cyc_add$36)) begin
-            add_r$36$d = 1'b1;
-        end
-        if ((view$36 == 2) & (t$2$d == cyc$36)) begin
-            act_r$36$d = 1'b1;
-        end
-        if ((view_add$36 == 2) & (t$2$d == cyc_add$36)) begin
-            add_r$36$d = 1'b1;
-        end
-        if ((view$36 == 3) & (t$3$d == cyc$36)) begin
-            act_r$36$d = 1'b1;
-        end
-        if ((view_add$36 == 3) & (t$3$d == cyc_add$36)) begin
-            add_r$36$d = 1'b1;
-        end
-        if ((view$36 == 4) & (t$4$d == cyc$36)) begin
-            act_r$36$d = 1'b1;
-        end
-        if ((view_add$36 == 4) & (t$4$d == cyc_add$36)) begin
-            add_r$36$d = 1'b1;
-        end
-        if ((view$36 == 5) & (t$5$d == cyc$36)) begin
-            act_r$36$d = 1'b1;
-        end
-        if ((view_add$36 == 5) & (t$5$d == cyc_add$36)) begin
-            add_r$36$d = 1'b1;
+        add_r$36$d = add_r$36$q;
+        if (run) begin
+            act_r$36$d = 1'b0;
+            add_r$36$d = 1'b0;
+            if (view$36 == 0) begin
+                if (cyc$36 == firsts$0) begin
+                    act_r$36$d = enter$0;
+                end
+                else begin
+                    act_r$36$d = t$0$q == cyc$36 - 32'h1;
+                end
+            end
+            if (view_add$36 == 0) begin
+                if (cyc_add$36 == firsts$0) begin
+                    add_r$36$d = enter$0;
+                end
+                else begin
+                    add_r$36$d = t$0$q == cyc_add$36 - 32'h1;
+                end
+            end
+            if (view$36 == 1) begin
+                if (cyc$36 == firsts$1) begin
+                    act_r$36$d = enter$1;
+                end
+                else begin
+                    act_r$36$d = t$1$q == cyc$36 - 32'h1;
+                end
+            end
+            if (view_add$36 == 1) begin
+                if (cyc_add$36 == firsts$1) begin
+                    add_r$36$d = enter$1;
+                end
+                else begin
+                    add_r$36$d = t$1$q == cyc_add$36 - 32'h1;
+                end
+            end
+            if (view$36 == 2) begin
+                if (cyc$36 == firsts$2) begin
+                    act_r$36$d = enter$2;
+                end
+                else begin
+                    act_r$36$d = t$2$q == cyc$36 - 32'h1;
+                end
+            end
+            if (view_add$36 == 2) begin
+                if (cyc_add$36 == firsts$2) begin
+                    add_r$36$d = enter$2;
+                end
+                else begin
+                    add_r$36$d = t$2$q == cyc_add$36 - 32'h1;
+                end
+            end
+            if (view$36 == 3) begin
+                if (cyc$36 == firsts$3) begin
+                    act_r$36$d = enter$3;
+                end
+                else begin
+                    act_r$36$d = t$3$q == cyc$36 - 32'h1;
+                end
+            end
+            if (view_add$36 == 3) begin
+                if (cyc_add$36 == firsts$3) begin
+                    add_r$36$d = enter$3;
+                end
+                else begin
+                    add_r$36$d = t$3$q == cyc_add$36 - 32'h1;
+                end
+            end
+            if (view$36 == 4) begin
+                if (cyc$36 == firsts$4) begin
+                    act_r$36$d = enter$4;
+                end
+                else begin
+                    act_r$36$d = t$4$q == cyc$36 - 32'h1;
+                end
+            end
+            if (view_add$36 == 4) begin
+                if (cyc_add$36 == firsts$4) begin
+                    add_r$36$d = enter$4;
+                end
+                else begin
+                    add_r$36$d = t$4$q == cyc_add$36 - 32'h1;
+                end
+            end
+            if (view$36 == 5) begin
+                if (cyc$36 == firsts$5) begin
+                    act_r$36$d = enter$5;
+                end
+                else begin
+                    act_r$36$d = t$5$q == cyc$36 - 32'h1;
+                end
+            end
+            if (view_add$36 == 5) begin
+                if (cyc_add$36 == firsts$5) begin
+                    add_r$36$d = enter$5;
+                end
+                else begin
+                    add_r$36$d = t$5$q == cyc_add$36 - 32'h1;
+                end
+            end
         end
         act_r$37$clock = clock;
-        act_r$37$d = 1'b0;
+        act_r$37$d = act_r$37$q;
         add_r$37$clock = clock;
-        add_r$37$d = 1'b0;
-        if ((view$37 == 0) & (t$0$d == cyc$37)) begin
-            act_r$37$d = 1'b1;
-        end
-        if ((view_add$37 == 0) & (t$0$d == cyc_add$37)) begin
-            add_r$37$d = 1'b1;
-        end
-        if ((view$37 == 1) & (t$1$d == cyc$37)) begin
-            act_r$37$d = 1'b1;
-        end
-        if ((view_add$37 == 1) & (t$1$d == cyc_add$37)) begin
-            add_r$37$d = 1'b1;
-        end
-        if ((view$37 == 2) & (t$2$d == cyc$37)) begin
-            act_r$37$d = 1'b1;
-        end
-        if ((view_add$37 == 2) & (t$2$d == cyc_add$37)) begin
-            add_r$37$d = 1'b1;
-        end
-        if ((view$37 == 3) & (t$3$d == cyc$37)) begin
-            act_r$37$d = 1'b1;
-        end
-        if ((view_add$37 == 3) & (t$3$d == cyc_add$37)) begin
-            add_r$37$d = 1'b1;
-        end
-        if ((view$37 == 4) & (t$4$d == cyc$37)) begin
-            act_r$37$d = 1'b1;
-        end
-        if ((view_add$37 == 4) & (t$4$d == cyc_add$37)) begin
-            add_r$37$d = 1'b1;
-        end
-        if ((view$37 == 5) & (t$5$d == cyc$37)) begin
-            act_r$37$d = 1'b1;
-        end
-        if ((view_add$37 == 5) & (t$5$d == cyc_add$37)) begin
-            add_r$37$d = 1'b1;
+        add_r$37$d = add_r$37$q;
+        if (run) begin
+            act_r$37$d = 1'b0;
+            add_r$37$d = 1'b0;
+            if (view$37 == 0) begin
+                if (cyc$37 == firsts$0) begin
+                    act_r$37$d = enter$0;
+                end
+                else begin
+                    act_r$37$d = t$0$q == cyc$37 - 32'h1;
+                end
+            end
+            if (view_add$37 == 0) begin
+                if (cyc_add$37 == firsts$0) begin
+                    add_r$37$d = enter$0;
+                end
+                else begin
+                    add_r$37$d = t$0$q == cyc_add$37 - 32'h1;
+                end
+            end
+            if (view$37 == 1) begin
+                if (cyc$37 == firsts$1) begin
+                    act_r$37$d = enter$1;
+                end
+                else begin
+                    act_r$37$d = t$1$q == cyc$37 - 32'h1;
+                end
+            end
+            if (view_add$37 == 1) begin
+                if (cyc_add$37 == firsts$1) begin
+                    add_r$37$d = enter$1;
+                end
+                else begin
+                    add_r$37$d = t$1$q == cyc_add$37 - 32'h1;
+                end
+            end
+            if (view$37 == 2) begin
+                if (cyc$37 == firsts$2) begin
+                    act_r$37$d = enter$2;
+                end
+                else begin
+                    act_r$37$d = t$2$q == cyc$37 - 32'h1;
+                end
+            end
+            if (view_add$37 == 2) begin
+                if (cyc_add$37 == firsts$2) begin
+                    add_r$37$d = enter$2;
+                end
+                else begin
+                    add_r$37$d = t$2$q == cyc_add$37 - 32'h1;
+                end
+            end
+            if (view$37 == 3) begin
+                if (cyc$37 == firsts$3) begin
+                    act_r$37$d = enter$3;
+                end
+                else begin
+                    act_r$37$d = t$3$q == cyc$37 - 32'h1;
+                end
+            end
+            if (view_add$37 == 3) begin
+                if (cyc_add$37 == firsts$3) begin
+                    add_r$37$d = enter$3;
+                end
+                else begin
+                    add_r$37$d = t$3$q == cyc_add$37 - 32'h1;
+                end
+            end
+            if (view$37 == 4) begin
+                if (cyc$37 == firsts$4) begin
+                    act_r$37$d = enter$4;
+                end
+                else begin
+                    act_r$37$d = t$4$q == cyc$37 - 32'h1;
+                end
+            end
+            if (view_add$37 == 4) begin
+                if (cyc_add$37 == firsts$4) begin
+                    add_r$37$d = enter$4;
+                end
+                else begin
+                    add_r$37$d = t$4$q == cyc_add$37 - 32'h1;
+                end
+            end
+            if (view$37 == 5) begin
+                if (cyc$37 == firsts$5) begin
+                    act_r$37$d = enter$5;
+                end
+                else begin
+                    act_r$37$d = t$5$q == cyc$37 - 32'h1;
+                end
+            end
+            if (view_add$37 == 5) begin
+                if (cyc_add$37 == firsts$5) begin
+                    add_r$37$d = enter$5;
+                end
+                else begin
+                    add_r$37$d = t$5$q == cyc_add$37 - 32'h1;
+                end
+            end
         end
         act_r$38$clock = clock;
-        act_r$38$d = 1'b0;
+        act_r$38$d = act_r$38$q;
         add_r$38$clock = clock;
-        add_r$38$d = 1'b0;
-        if ((view$38 == 0) & (t$0$d == cyc$38)) begin
-            act_r$38$d = 1'b1;
-        end
-        if ((view_add$38 == 0) & (t$0$d == cyc_add$38)) begin
-            add_r$38$d = 1'b1;
-        end
-        if ((view$38 == 1) & (t$1$d == cyc$38)) begin
-            act_r$38$d = 1'b1;
-        end
-        if ((view_add$38 == 1) & (t$1$d == cyc_add$38)) begin
-            add_r$38$d = 1'b1;
-        end
-        if ((view$38 == 2) & (t$2$d == cyc$38)) begin
-            act_r$38$d = 1'b1;
-        end
-        if ((view_add$38 == 2) & (t$2$d == cyc_add$38)) begin
-            add_r$38$d = 1'b1;
-        end
-        if ((view$38 == 3) & (t$3$d == cyc$38)) begin
-            act_r$38$d = 1'b1;
-        end
-        if ((view_add$38 == 3) & (t$3$d == cyc_add$38)) begin
-            add_r$38$d = 1'b1;
-        end
-        if ((view$38 == 4) & (t$4$d == cyc$38)) begin
-            act_r$38$d = 1'b1;
-        end
-        if ((view_add$38 == 4) & (t$4$d == cyc_add$38)) begin
-            add_r$38$d = 1'b1;
-        end
-        if ((view$38 == 5) & (t$5$d == cyc$38)) begin
-            act_r$38$d = 1'b1;
-        end
-        if ((view_add$38 == 5) & (t$5$d == cyc_add$38)) begin
-            add_r$38$d = 1'b1;
+        add_r$38$d = add_r$38$q;
+        if (run) begin
+            act_r$38$d = 1'b0;
+            add_r$38$d = 1'b0;
+            if (view$38 == 0) begin
+                if (cyc$38 == firsts$0) begin
+                    act_r$38$d = enter$0;
+                end
+                else begin
+                    act_r$38$d = t$0$q == cyc$38 - 32'h1;
+                end
+            end
+            if (view_add$38 == 0) begin
+                if (cyc_add$38 == firsts$0) begin
+                    add_r$38$d = enter$0;
+                end
+                else begin
+                    add_r$38$d = t$0$q == cyc_add$38 - 32'h1;
+                end
+            end
+            if (view$38 == 1) begin
+                if (cyc$38 == firsts$1) begin
+                    act_r$38$d = enter$1;
+                end
+                else begin
+                    act_r$38$d = t$1$q == cyc$38 - 32'h1;
+                end
+            end
+            if (view_add$38 == 1) begin
+                if (cyc_add$38 == firsts$1) begin
+                    add_r$38$d = enter$1;
+                end
+                else begin
+                    add_r$38$d = t$1$q == cyc_add$38 - 32'h1;
+                end
+            end
+            if (view$38 == 2) begin
+                if (cyc$38 == firsts$2) begin
+                    act_r$38$d = enter$2;
+                end
+                else begin
+                    act_r$38$d = t$2$q == cyc$38 - 32'h1;
+                end
+            end
+            if (view_add$38 == 2) begin
+                if (cyc_add$38 == firsts$2) begin
+                    add_r$38$d = enter$2;
+                end
+                else begin
+                    add_r$38$d = t$2$q == cyc_add$38 - 32'h1;
+                end
+            end
+            if (view$38 == 3) begin
+                if (cyc$38 == firsts$3) begin
+                    act_r$38$d = enter$3;
+                end
+                else begin
+                    act_r$38$d = t$3$q == cyc$38 - 32'h1;
+                end
+            end
+            if (view_add$38 == 3) begin
+                if (cyc_add$38 == firsts$3) begin
+                    add_r$38$d = enter$3;
+                end
+                else begin
+                    add_r$38$d = t$3$q == cyc_add$38 - 32'h1;
+                end
+            end
+            if (view$38 == 4) begin
+                if (cyc$38 == firsts$4) begin
+                    act_r$38$d = enter$4;
+                end
+                else begin
+                    act_r$38$d = t$4$q == cyc$38 - 32'h1;
+                end
+            end
+            if (view_add$38 == 4) begin
+                if (cyc_add$38 == firsts$4) begin
+                    add_r$38$d = enter$4;
+                end
+                else begin
+                    add_r$38$d = t$4$q == cyc_add$38 - 32'h1;
+                end
+            end
+            if (view$38 == 5) begin
+                if (cyc$38 == firsts$5) begin
+                    act_r$38$d = enter$5;
+                end
+                else begin
+                    act_r$38$d = t$5$q == cyc$38 - 32'h1;
+                end
+            end
+            if (view_add$38 == 5) begin
+                if (cyc_add$38 == firsts$5) begin
+                    add_r$38$d = enter$5;
+                end
+                else begin
+                    add_r$38$d = t$5$q == cyc_add$38 - 32'h1;
+                end
+            end
         end
         act_r$39$clock = clock;
-        act_r$39$d = 1'b0;
+        act_r$39$d = act_r$39$q;
         add_r$39$clock = clock;
-        add_r$39$d = 1'b0;
-        if ((view$39 == 0) & (t$0$d == cyc$39)) begin
-            act_r$39$d = 1'b1;
-        end
-        if ((view_add$39 == 0) & (t$0$d == cyc_add$39)) begin
-            add_r$39$d = 1'b1;
-        end
-        if ((view$39 == 1) & (t$1$d == cyc$39)) begin
-            act_r$39$d = 1'b1;
-        end
-        if ((view_add$39 == 1) & (t$1$d == cyc_add$39)) begin
-            add_r$39$d = 1'b1;
-        end
-        if ((view$39 == 2) & (t$2$d == cyc$39)) begin
-            act_r$39$d = 1'b1;
-        end
-        if ((view_add$39 == 2) & (t$2$d == cyc_add$39)) begin
-            add_r$39$d = 1'b1;
-        end
-        if ((view$39 == 3) & (t$3$d == cyc$39)) begin
-            act_r$39$d = 1'b1;
-        end
-        if ((view_add$39 == 3) & (t$3$d == cyc_add$39)) begin
-            add_r$39$d = 1'b1;
-        end
-        if ((view$39 == 4) & (t$4$d == cyc$39)) begin
-            act_r$39$d = 1'b1;
-        end
-        if ((view_add$39 == 4) & (t$4$d == cyc_add$39)) begin
-            add_r$39$d = 1'b1;
-        end
-        if ((view$39 == 5) & (t$5$d == cyc$39)) begin
-            act_r$39$d = 1'b1;
-        end
-        if ((view_add$39 == 5) & (t$5$d == cyc_add$39)) begin
-            add_r$39$d = 1'b1;
+        add_r$39$d = add_r$39$q;
+        if (run) begin
+            act_r$39$d = 1'b0;
+            add_r$39$d = 1'b0;
+            if (view$39 == 0) begin
+                if (cyc$39 == firsts$0) begin
+                    act_r$39$d = enter$0;
+                end
+                else begin
+                    act_r$39$d = t$0$q == cyc$39 - 32'h1;
+                end
+            end
+            if (view_add$39 == 0) begin
+                if (cyc_add$39 == firsts$0) begin
+                    add_r$39$d = enter$0;
+                end
+                else begin
+                    add_r$39$d = t$0$q == cyc_add$39 - 32'h1;
+                end
+            end
+            if (view$39 == 1) begin
+                if (cyc$39 == firsts$1) begin
+                    act_r$39$d = enter$1;
+                end
+                else begin
+                    act_r$39$d = t$1$q == cyc$39 - 32'h1;
+                end
+            end
+            if (view_add$39 == 1) begin
+                if (cyc_add$39 == firsts$1) begin
+                    add_r$39$d = enter$1;
+                end
+                else begin
+                    add_r$39$d = t$1$q == cyc_add$39 - 32'h1;
+                end
+            end
+            if (view$39 == 2) begin
+                if (cyc$39 == firsts$2) begin
+                    act_r$39$d = enter$2;
+                end
+                else begin
+                    act_r$39$d = t$2$q == cyc$39 - 32'h1;
+                end
+            end
+            if (view_add$39 == 2) begin
+                if (cyc_add$39 == firsts$2) begin
+                    add_r$39$d = enter$2;
+                end
+                else begin
+                    add_r$39$d = t$2$q == cyc_add$39 - 32'h1;
+                end
+            end
+            if (view$39 == 3) begin
+                if (cyc$39 == firsts$3) begin
+                    act_r$39$d = enter$3;
+                end
+                else begin
+                    act_r$39$d = t$3$q == cyc$39 - 32'h1;
+                end
+            end
+            if (view_add$39 == 3) begin
+                if (cyc_add$39 == firsts$3) begin
+                    add_r$39$d = enter$3;
+                end
+                else begin
+                    add_r$39$d = t$3$q == cyc_add$39 - 32'h1;
+                end
+            end
+            if (view$39 == 4) begin
+                if (cyc$39 == firsts$4) begin
+                    act_r$39$d = enter$4;
+                end
+                else begin
+                    act_r$39$d = t$4$q == cyc$39 - 32'h1;
+                end
+            end
+            if (view_add$39 == 4) begin
+                if (cyc_add$39 == firsts$4) begin
+                    add_r$39$d = enter$4;
+                end
+                else begin
+                    add_r$39$d = t$4$q == cyc_add$39 - 32'h1;
+                end
+            end
+            if (view$39 == 5) begin
+                if (cyc$39 == firsts$5) begin
+                    act_r$39$d = enter$5;
+                end
+                else begin
+                    act_r$39$d = t$5$q == cyc$39 - 32'h1;
+                end
+            end
+            if (view_add$39 == 5) begin
+                if (cyc_add$39 == firsts$5) begin
+                    add_r$39$d = enter$5;
+                end
+                else begin
+                    add_r$39$d = t$5$q == cyc_add$39 - 32'h1;
+                end
+            end
         end
         act_r$40$clock = clock;
-        act_r$40$d = 1'b0;
+        act_r$40$d = act_r$40$q;
         add_r$40$clock = clock;
-        add_r$40$d = 1'b0;
-        if ((view$40 == 0) & (t$0$d == cyc$40)) begin
-            act_r$40$d = 1'b1;
-        end
-        if ((view_add$40 == 0) & (t$0$d == cyc_add$40)) begin
-            add_r$40$d = 1'b1;
-        end
-        if ((view$40 == 1) & (t$1$d == cyc$40)) begin
-            act_r$40$d = 1'b1;
-        end
-        if ((view_add$40 == 1) & (t$1$d == cyc_add$40)) begin
-            add_r$40$d = 1'b1;
-        end
-        if ((view$40 == 2) & (t$2$d == cyc$40)) begin
-            act_r$40$d = 1'b1;
-        end
-        if ((view_add$40 == 2) & (t$2$d == cyc_add$40)) begin
-            add_r$40$d = 1'b1;
-        end
-        if ((view$40 == 3) & (t$3$d == cyc$40)) begin
-            act_r$40$d = 1'b1;
-        end
-        if ((view_add$40 == 3) & (t$3$d == cyc_add$40)) begin
-            add_r$40$d = 1'b1;
-        end
-        if ((view$40 == 4) & (t$4$d == cyc$40)) begin
-            act_r$40$d = 1'b1;
-        end
-        if ((view_add$40 == 4) & (t$4$d == cyc_add$40)) begin
-            add_r$40$d = 1'b1;
-        end
-        if ((view$40 == 5) & (t$5$d == cyc$40)) begin
-            act_r$40$d = 1'b1;
-        end
-        if ((view_add$40 == 5) & (t$5$d == cyc_add$40)) begin
-            add_r$40$d = 1'b1;
+        add_r$40$d = add_r$40$q;
+        if (run) begin
+            act_r$40$d = 1'b0;
+            add_r$40$d = 1'b0;
+            if (view$40 == 0) begin
+                if (cyc$40 == firsts$0) begin
+                    act_r$40$d = enter$0;
+                end
+                else begin
+                    act_r$40$d = t$0$q == cyc$40 - 32'h1;
+                end
+            end
+            if (view_add$40 == 0) begin
+                if (cyc_add$40 == firsts$0) begin
+                    add_r$40$d = enter$0;
+                end
+                else begin
+                    add_r$40$d = t$0$q == cyc_add$40 - 32'h1;
+                end
+            end
+            if (view$40 == 1) begin
+                if (cyc$40 == firsts$1) begin
+                    act_r$40$d = enter$1;
+                end
+                else begin
+                    act_r$40$d = t$1$q == cyc$40 - 32'h1;
+                end
+            end
+            if (view_add$40 == 1) begin
+                if (cyc_add$40 == firsts$1) begin
+                    add_r$40$d = enter$1;
+                end
+                else begin
+                    add_r$40$d = t$1$q == cyc_add$40 - 32'h1;
+                end
+            end
+            if (view$40 == 2) begin
+                if (cyc$40 == firsts$2) begin
+                    act_r$40$d = enter$2;
+                end
+                else begin
+                    act_r$40$d = t$2$q == cyc$40 - 32'h1;
+                end
+            end
+            if (view_add$40 == 2) begin
+                if (cyc_add$40 == firsts$2) begin
+                    add_r$40$d = enter$2;
+                end
+                else begin
+                    add_r$40$d = t$2$q == cyc_add$40 - 32'h1;
+                end
+            end
+            if (view$40 == 3) begin
+                if (cyc$40 == firsts$3) begin
+                    act_r$40$d = enter$3;
+                end
+                else begin
+                    act_r$40$d = t$3$q == cyc$40 - 32'h1;
+                end
+            end
+            if (view_add$40 == 3) begin
+                if (cyc_add$40 == firsts$3) begin
+                    add_r$40$d = enter$3;
+                end
+                else begin
+                    add_r$40$d = t$3$q == cyc_add$40 - 32'h1;
+                end
+            end
+            if (view$40 == 4) begin
+                if (cyc$40 == firsts$4) begin
+                    act_r$40$d = enter$4;
+                end
+                else begin
+                    act_r$40$d = t$4$q == cyc$40 - 32'h1;
+                end
+            end
+            if (view_add$40 == 4) begin
+                if (cyc_add$40 == firsts$4) begin
+                    add_r$40$d = enter$4;
+                end
+                else begin
+                    add_r$40$d = t$4$q == cyc_add$40 - 32'h1;
+                end
+            end
+            if (view$40 == 5) begin
+                if (cyc$40 == firsts$5) begin
+                    act_r$40$d = enter$5;
+                end
+                else begin
+                    act_r$40$d = t$5$q == cyc$40 - 32'h1;
+                end
+            end
+            if (view_add$40 == 5) begin
+                if (cyc_add$40 == firsts$5) begin
+                    add_r$40$d = enter$5;
+                end
+                else begin
+                    add_r$40$d = t$5$q == cyc_add$40 - 32'h1;
+                end
+            end
         end
         act_r$41$clock = clock;
-        act_r$41$d = 1'b0;
+        act_r$41$d = act_r$41$q;
         add_r$41$clock = clock;
-        add_r$41$d = 1'b0;
-        if ((view$41 == 0) & (t$0$d == cyc$41)) begin
-            act_r$41$d = 1'b1;
-        end
-        if ((view_add$41 == 0) & (t$0$d == cyc_add$41)) begin
-            add_r$41$d = 1'b1;
-        end
-        if ((view$41 == 1) & (t$1$d == cyc$41)) begin
-            act_r$41$d = 1'b1;
-        end
-        if ((view_add$41 == 1) & (t$1$d == cyc_add$41)) begin
-            add_r$41$d = 1'b1;
-        end
-        if ((view$41 == 2) & (t$2$d == cyc$41)) begin
-            act_r$41$d = 1'b1;
-        end
-        if ((view_add$41 == 2) & (t$2$d == cyc_add$41)) begin
-            add_r$41$d = 1'b1;
-        end
-        if ((view$41 == 3) & (t$3$d == cyc$41)) begin
-            act_r$41$d = 1'b1;
-        end
-        if ((view_add$41 == 3) & (t$3$d == cyc_add$41)) begin
-            add_r$41$d = 1'b1;
-        end
-        if ((view$41 == 4) & (t$4$d == cyc$41)) begin
-            act_r$41$d = 1'b1;
-        end
-        if ((view_add$41 == 4) & (t$4$d == cyc_add$41)) begin
-            add_r$41$d = 1'b1;
-        end
-        if ((view$41 == 5) & (t$5$d == cyc$41)) begin
-            act_r$41$d = 1'b1;
-        end
-        if ((view_add$41 == 5) & (t$5$d == cyc_add$41)) begin
-            add_r$41$d = 1'b1;
+        add_r$41$d = add_r$41$q;
+        if (run) begin
+            act_r$41$d = 1'b0;
+            add_r$41$d = 1'b0;
+            if (view$41 == 0) begin
+                if (cyc$41 == firsts$0) begin
+                    act_r$41$d = enter$0;
+                end
+                else begin
+                    act_r$41$d = t$0$q == cyc$41 - 32'h1;
+                end
+            end
+            if (view_add$41 == 0) begin
+                if (cyc_add$41 == firsts$0) begin
+                    add_r$41$d = enter$0;
+                end
+                else begin
+                    add_r$41$d = t$0$q == cyc_add$41 - 32'h1;
+                end
+            end
+            if (view$41 == 1) begin
+                if (cyc$41 == firsts$1) begin
+                    act_r$41$d = enter$1;
+                end
+                else begin
+                    act_r$41$d = t$1$q == cyc$41 - 32'h1;
+                end
+            end
+            if (view_add$41 == 1) begin
+                if (cyc_add$41 == firsts$1) begin
+                    add_r$41$d = enter$1;
+                end
+                else begin
+                    add_r$41$d = t$1$q == cyc_add$41 - 32'h1;
+                end
+            end
+            if (view$41 == 2) begin
+                if (cyc$41 == firsts$2) begin
+                    act_r$41$d = enter$2;
+                end
+                else begin
+                    act_r$41$d = t$2$q == cyc$41 - 32'h1;
+                end
+            end
+            if (view_add$41 == 2) begin
+                if (cyc_add$41 == firsts$2) begin
+                    add_r$41$d = enter$2;
+                end
+                else begin
+                    add_r$41$d = t$2$q == cyc_add$41 - 32'h1;
+                end
+            end
+            if (view$41 == 3) begin
+                if (cyc$41 == firsts$3) begin
+                    act_r$41$d = enter$3;
+                end
+                else begin
+                    act_r$41$d = t$3$q == cyc$41 - 32'h1;
+                end
+            end
+            if (view_add$41 == 3) begin
+                if (cyc_add$41 == firsts$3) begin
+                    add_r$41$d = enter$3;
+                end
+                else begin
+                    add_r$41$d = t$3$q == cyc_add$41 - 32'h1;
+                end
+            end
+            if (view$41 == 4) begin
+                if (cyc$41 == firsts$4) begin
+                    act_r$41$d = enter$4;
+                end
+                else begin
+                    act_r$41$d = t$4$q == cyc$41 - 32'h1;
+                end
+            end
+            if (view_add$41 == 4) begin
+                if (cyc_add$41 == firsts$4) begin
+                    add_r$41$d = enter$4;
+                end
+                else begin
+                    add_r$41$d = t$4$q == cyc_add$41 - 32'h1;
+                end
+            end
+            if (view$41 == 5) begin
+                if (cyc$41 == firsts$5) begin
+                    act_r$41$d = enter$5;
+                end
+                else begin
+                    act_r$41$d = t$5$q == cyc$41 - 32'h1;
+                end
+            end
+            if (view_add$41 == 5) begin
+                if (cyc_add$41 == firsts$5) begin
+                    add_r$41$d = enter$5;
+                end
+                else begin
+                    add_r$41$d = t$5$q == cyc_add$41 - 32'h1;
+                end
+            end
         end
         act_r$42$clock = clock;
-        act_r$42$d = 1'b0;
+        act_r$42$d = act_r$42$q;
         add_r$42$clock = clock;
-        add_r$42$d = 1'b0;
-        if ((view$42 == 0) & (t$0$d == cyc$42)) begin
-            act_r$42$d = 1'b1;
-        end
-        if ((view_add$42 == 0) & (t$0$d == cyc_add$42)) begin
-            add_r$42$d = 1'b1;
-        end
-        if ((view$42 == 1) & (t$1$d == cyc$42)) begin
-            act_r$42$d = 1'b1;
-        end
-        if ((view_add$42 == 1) & (t$1$d == cyc_add$42)) begin
-            add_r$42$d = 1'b1;
-        end
-        if ((view$42 == 2) & (t$2$d == cyc$42)) begin
-            act_r$42$d = 1'b1;
-        end
-        if ((view_add$42 == 2) & (t$2$d == cyc_add$42)) begin
-            add_r$42$d = 1'b1;
-        end
-        if ((view$42 == 3) & (t$3$d == cyc$42)) begin
-            act_r$42$d = 1'b1;
-        end
-        if ((view_add$42 == 3) & (t$3$d == cyc_add$42)) begin
-            add_r$42$d = 1'b1;
-        end
-        if ((view$42 == 4) & (t$4$d == cyc$42)) begin
-            act_r$42$d = 1'b1;
-        end
-        if ((view_add$42 == 4) & (t$4$d == cyc_add$42)) begin
-            add_r$42$d = 1'b1;
-        end
-        if ((view$42 == 5) & (t$5$d == cyc$42)) begin
-            act_r$42$d = 1'b1;
-        end
-        if ((view_add$42 == 5) & (t$5$d == cyc_add$42)) begin
-            add_r$42$d = 1'b1;
+        add_r$42$d = add_r$42$q;
+        if (run) begin
+            act_r$42$d = 1'b0;
+            add_r$42$d = 1'b0;
+            if (view$42 == 0) begin
+                if (cyc$42 == firsts$0) begin
+                    act_r$42$d = enter$0;
+                end
+                else begin
+                    act_r$42$d = t$0$q == cyc$42 - 32'h1;
+                end
+            end
+            if (view_add$42 == 0) begin
+                if (cyc_add$42 == firsts$0) begin
+                    add_r$42$d = enter$0;
+                end
+                else begin
+                    add_r$42$d = t$0$q == cyc_add$42 - 32'h1;
+                end
+            end
+            if (view$42 == 1) begin
+                if (cyc$42 == firsts$1) begin
+                    act_r$42$d = enter$1;
+                end
+                else begin
+                    act_r$42$d = t$1$q == cyc$42 - 32'h1;
+                end
+            end
+            if (view_add$42 == 1) begin
+                if (cyc_add$42 == firsts$1) begin
+                    add_r$42$d = enter$1;
+                end
+                else begin
+                    add_r$42$d = t$1$q == cyc_add$42 - 32'h1;
+                end
+            end
+            if (view$42 == 2) begin
+                if (cyc$42 == firsts$2) begin
+                    act_r$42$d = enter$2;
+                end
+                else begin
+                    act_r$42$d = t$2$q == cyc$42 - 32'h1;
+                end
+            end
+            if (view_add$42 == 2) begin
+                if (cyc_add$42 == firsts$2) begin
+                    add_r$42$d = enter$2;
+                end
+                else begin
+                    add_r$42$d = t$2$q == cyc_add$42 - 32'h1;
+                end
+            end
+            if (view$42 == 3) begin
+                if (cyc$42 == firsts$3) begin
+                    act_r$42$d = enter$3;
+                end
+                else begin
+                    act_r$42$d = t$3$q == cyc$42 - 32'h1;
+                end
+            end
+            if (view_add$42 == 3) begin
+                if (cyc_add$42 == firsts$3) begin
+                    add_r$42$d = enter$3;
+                end
+                else begin
+                    add_r$42$d = t$3$q == cyc_add$42 - 32'h1;
+                end
+            end
+            if (view$42 == 4) begin
+                if (cyc$42 == firsts$4) begin
+                    act_r$42$d = enter$4;
+                end
+                else begin
+                    act_r$42$d = t$4$q == cyc$42 - 32'h1;
+                end
+            end
+            if (view_add$42 == 4) begin
+                if (cyc_add$42 == firsts$4) begin
+                    add_r$42$d = enter$4;
+                end
+                else begin
+                    add_r$42$d = t$4$q == cyc_add$42 - 32'h1;
+                end
+            end
+            if (view$42 == 5) begin
+                if (cyc$42 == firsts$5) begin
+                    act_r$42$d = enter$5;
+                end
+                else begin
+                    act_r$42$d = t$5$q == cyc$42 - 32'h1;
+                end
+            end
+            if (view_add$42 == 5) begin
+                if (cyc_add$42 == firsts$5) begin
+                    add_r$42$d = enter$5;
+                end
+                else begin
+                    add_r$42$d = t$5$q == cyc_add$42 - 32'h1;
+                end
+            end
         end
         act_r$43$clock = clock;
-        act_r$43$d = 1'b0;
+        act_r$43$d = act_r$43$q;
         add_r$43$clock = clock;
-        add_r$43$d = 1'b0;
-        if ((view$43 == 0) & (t$0$d == cyc$43)) begin
-            act_r$43$d = 1'b1;
-        end
-        if ((view_add$43 == 0) & (t$0$d == cyc_add$43)) begin
-            add_r$43$d = 1'b1;
-        end
-        if ((view$43 == 1) & (t$1$d == cyc$43)) begin
-            act_r$43$d = 1'b1;
-        end
-        if ((view_add$43 == 1) & (t$1$d == cyc_add$43)) begin
-            add_r$43$d = 1'b1;
-        end
-        if ((view$43 == 2) & (t$2$d == cyc$43)) begin
-            act_r$43$d = 1'b1;
-        end
-        if ((view_add$43 == 2) & (t$2$d == cyc_add$43)) begin
-            add_r$43$d = 1'b1;
-        end
-        if ((view$43 == 3) & (t$3$d == cyc$43)) begin
-            act_r$43$d = 1'b1;
-        end
-        if ((view_add$43 == 3) & (t$3$d == cyc_add$43)) begin
-            add_r$43$d = 1'b1;
-        end
-        if ((view$43 == 4) & (t$4$d == cyc$43)) begin
-            act_r$43$d = 1'b1;
-        end
-        if ((view_add$43 == 4) & (t$4$d == cyc_add$43)) begin
-            add_r$43$d = 1'b1;
-        end
-        if ((view$43 == 5) & (t$5$d == cyc$43)) begin
-            act_r$43$d = 1'b1;
-        end
-        if ((view_add$43 == 5) & (t$5$d == cyc_add$43)) begin
-            add_r$43$d = 1'b1;
+        add_r$43$d = add_r$43$q;
+        if (run) begin
+            act_r$43$d = 1'b0;
+            add_r$43$d = 1'b0;
+            if (view$43 == 0) begin
+                if (cyc$43 == firsts$0) begin
+                    act_r$43$d = enter$0;
+                end
+                else begin
+                    act_r$43$d = t$0$q == cyc$43 - 32'h1;
+                end
+            end
+            if (view_add$43 == 0) begin
+                if (cyc_add$43 == firsts$0) begin
+                    add_r$43$d = enter$0;
+                end
+                else begin
+                    add_r$43$d = t$0$q == cyc_add$43 - 32'h1;
+                end
+            end
+            if (view$43 == 1) begin
+                if (cyc$43 == firsts$1) begin
+                    act_r$43$d = enter$1;
+                end
+                else begin
+                    act_r$43$d = t$1$q == cyc$43 - 32'h1;
+                end
+            end
+            if (view_add$43 == 1) begin
+                if (cyc_add$43 == firsts$1) begin
+                    add_r$43$d = enter$1;
+                end
+                else begin
+                    add_r$43$d = t$1$q == cyc_add$43 - 32'h1;
+                end
+            end
+            if (view$43 == 2) begin
+                if (cyc$43 == firsts$2) begin
+                    act_r$43$d = enter$2;
+                end
+                else begin
+                    act_r$43$d = t$2$q == cyc$43 - 32'h1;
+                end
+            end
+            if (view_add$43 == 2) begin
+                if (cyc_add$43 == firsts$2) begin
+                    add_r$43$d = enter$2;
+                end
+                else begin
+                    add_r$43$d = t$2$q == cyc_add$43 - 32'h1;
+                end
+            end
+            if (view$43 == 3) begin
+                if (cyc$43 == firsts$3) begin
+                    act_r$43$d = enter$3;
+                end
+                else begin
+                    act_r$43$d = t$3$q == cyc$43 - 32'h1;
+                end
+            end
+            if (view_add$43 == 3) begin
+                if (cyc_add$43 == firsts$3) begin
+                    add_r$43$d = enter$3;
+                end
+                else begin
+                    add_r$43$d = t$3$q == cyc_add$43 - 32'h1;
+                end
+            end
+            if (view$43 == 4) begin
+                if (cyc$43 == firsts$4) begin
+                    act_r$43$d = enter$4;
+                end
+                else begin
+                    act_r$43$d = t$4$q == cyc$43 - 32'h1;
+                end
+            end
+            if (view_add$43 == 4) begin
+                if (cyc_add$43 == firsts$4) begin
+                    add_r$43$d = enter$4;
+                end
+                else begin
+                    add_r$43$d = t$4$q == cyc_add$43 - 32'h1;
+                end
+            end
+            if (view$43 == 5) begin
+                if (cyc$43 == firsts$5) begin
+                    act_r$43$d = enter$5;
+                end
+                else begin
+                    act_r$43$d = t$5$q == cyc$43 - 32'h1;
+                end
+            end
+            if (view_add$43 == 5) begin
+                if (cyc_add$43 == firsts$5) begin
+                    add_r$43$d = enter$5;
+                end
+                else begin
+                    add_r$43$d = t$5$q == cyc_add$43 - 32'h1;
+                end
+            end
         end
         act_r$44$clock = clock;
-        act_r$44$d = 1'b0;
+        act_r$44$d = act_r$44$q;
         add_r$44$clock = clock;
-        add_r$44$d = 1'b0;
-        if ((view$44 == 0) & (t$0$d == cyc$44)) begin
-            act_r$44$d = 1'b1;
-        end
-        if ((view_add$44 == 0) & (t$0$d == cyc_add$44)) begin
-            add_r$44$d = 1'b1;
-        end
-        if ((view$44 == 1) & (t$1$d == cyc$44)) begin
-            act_r$44$d = 1'b1;
-        end
-        if ((view_add$44 == 1) & (t$1$d == cyc_add$44)) begin
-            add_r$44$d = 1'b1;
-        end
-        if ((view$44 == 2) & (t$2$d == cyc$44)) begin
-            act_r$44$d = 1'b1;
-        end
-        if ((view_add$44 == 2) & (t$2$d == cyc_add$44)) begin
-            add_r$44$d = 1'b1;
-        end
-        if ((view$44 == 3) & (t$3$d == cyc$44)) begin
-            act_r$44$d = 1'b1;
-        end
-        if ((view_add$44 == 3) & (t$3$d == cyc_add$44)) begin
-            add_r$44$d = 1'b1;
-        end
-        if ((view$44 == 4) & (t$4$d == cyc$44)) begin
-            act_r$44$d = 1'b1;
-        end
-        if ((view_add$44 == 4) & (t$4$d == cyc_add$44)) begin
-            add_r$44$d = 1'b1;
-        end
-        if ((view$44 == 5) & (t$5$d == cyc$44)) begin
-            act_r$44$d = 1'b1;
-        end
-        if ((view_add$44 == 5) & (t$5$d == cyc_add$44)) begin
-            add_r$44$d = 1'b1;
+        add_r$44$d = add_r$44$q;
+        if (run) begin
+            act_r$44$d = 1'b0;
+            add_r$44$d = 1'b0;
+            if (view$44 == 0) begin
+                if (cyc$44 == firsts$0) begin
+                    act_r$44$d = enter$0;
+                end
+                else begin
+                    act_r$44$d = t$0$q == cyc$44 - 32'h1;
+                end
+            end
+            if (view_add$44 == 0) begin
+                if (cyc_add$44 == firsts$0) begin
+                    add_r$44$d = enter$0;
+                end
+                else begin
+                    add_r$44$d = t$0$q == cyc_add$44 - 32'h1;
+                end
+            end
+            if (view$44 == 1) begin
+                if (cyc$44 == firsts$1) begin
+                    act_r$44$d = enter$1;
+                end
+                else begin
+                    act_r$44$d = t$1$q == cyc$44 - 32'h1;
+                end
+            end
+            if (view_add$44 == 1) begin
+                if (cyc_add$44 == firsts$1) begin
+                    add_r$44$d = enter$1;
+                end
+                else begin
+                    add_r$44$d = t$1$q == cyc_add$44 - 32'h1;
+                end
+            end
+            if (view$44 == 2) begin
+                if (cyc$44 == firsts$2) begin
+                    act_r$44$d = enter$2;
+                end
+                else begin
+                    act_r$44$d = t$2$q == cyc$44 - 32'h1;
+                end
+            end
+            if (view_add$44 == 2) begin
+                if (cyc_add$44 == firsts$2) begin
+                    add_r$44$d = enter$2;
+                end
+                else begin
+                    add_r$44$d = t$2$q == cyc_add$44 - 32'h1;
+                end
+            end
+            if (view$44 == 3) begin
+                if (cyc$44 == firsts$3) begin
+                    act_r$44$d = enter$3;
+                end
+                else begin
+                    act_r$44$d = t$3$q == cyc$44 - 32'h1;
+                end
+            end
+            if (view_add$44 == 3) begin
+                if (cyc_add$44 == firsts$3) begin
+                    add_r$44$d = enter$3;
+                end
+                else begin
+                    add_r$44$d = t$3$q == cyc_add$44 - 32'h1;
+                end
+            end
+            if (view$44 == 4) begin
+                if (cyc$44 == firsts$4) begin
+                    act_r$44$d = enter$4;
+                end
+                else begin
+                    act_r$44$d = t$4$q == cyc$44 - 32'h1;
+                end
+            end
+            if (view_add$44 == 4) begin
+                if (cyc_add$44 == firsts$4) begin
+                    add_r$44$d = enter$4;
+                end
+                else begin
+                    add_r$44$d = t$4$q == cyc_add$44 - 32'h1;
+                end
+            end
+            if (view$44 == 5) begin
+                if (cyc$44 == firsts$5) begin
+                    act_r$44$d = enter$5;
+                end
+                else begin
+                    act_r$44$d = t$5$q == cyc$44 - 32'h1;
+                end
+            end
+            if (view_add$44 == 5) begin
+                if (cyc_add$44 == firsts$5) begin
+                    add_r$44$d = enter$5;
+                end
+                else begin
+                    add_r$44$d = t$5$q == cyc_add$44 - 32'h1;
+                end
+            end
         end
         act_r$45$clock = clock;
-        act_r$45$d = 1'b0;
+        act_r$45$d = act_r$45$q;
         add_r$45$clock = clock;
-        add_r$45$d = 1'b0;
-        if ((view$45 == 0) & (t$0$d == cyc$45)) begin
-            act_r$45$d = 1'b1;
-        end
-        if ((view_add$45 == 0) & (t$0$d == cyc_add$45)) begin
-            add_r$45$d = 1'b1;
-        end
-        if ((view$45 == 1) & (t$1$d == cyc$45)) begin
-            act_r$45$d = 1'b1;
-        end
-        if ((view_add$45 == 1) & (t$1$d == cyc_add$45)) begin
-            add_r$45$d = 1'b1;
-        end
-        if ((view$45 == 2) & (t$2$d == cyc$45)) begin
-            act_r$45$d = 1'b1;
-        end
-        if ((view_add$45 == 2) & (t$2$d == cyc_add$45)) begin
-            add_r$45$d = 1'b1;
-        end
-        if ((view$45 == 3) & (t$3$d == cyc$45)) begin
-            act_r$45$d = 1'b1;
-        end
-        if ((view_add$45 == 3) & (t$3$d == cyc_add$45)) begin
-            add_r$45$d = 1'b1;
-        end
-        if ((view$45 == 4) & (t$4$d == cyc$45)) begin
-            act_r$45$d = 1'b1;
-        end
-        if ((view_add$45 == 4) & (t$4$d == cyc_add$45)) begin
-            add_r$45$d = 1'b1;
-        end
-        if ((view$45 == 5) & (t$5$d == cyc$45)) begin
-            act_r$45$d = 1'b1;
-        end
-        if ((view_add$45 == 5) & (t$5$d == cyc_add$45)) begin
-            add_r$45$d = 1'b1;
+        add_r$45$d = add_r$45$q;
+        if (run) begin
+            act_r$45$d = 1'b0;
+            add_r$45$d = 1'b0;
+            if (view$45 == 0) begin
+                if (cyc$45 == firsts$0) begin
+                    act_r$45$d = enter$0;
+                end
+                else begin
+                    act_r$45$d = t$0$q == cyc$45 - 32'h1;
+                end
+            end
+            if (view_add$45 == 0) begin
+                if (cyc_add$45 == firsts$0) begin
+                    add_r$45$d = enter$0;
+                end
+                else begin
+                    add_r$45$d = t$0$q == cyc_add$45 - 32'h1;
+                end
+            end
+            if (view$45 == 1) begin
+                if (cyc$45 == firsts$1) begin
+                    act_r$45$d = enter$1;
+                end
+                else begin
+                    act_r$45$d = t$1$q == cyc$45 - 32'h1;
+                end
+            end
+            if (view_add$45 == 1) begin
+                if (cyc_add$45 == firsts$1) begin
+                    add_r$45$d = enter$1;
+                end
+                else begin
+                    add_r$45$d = t$1$q == cyc_add$45 - 32'h1;
+                end
+            end
+            if (view$45 == 2) begin
+                if (cyc$45 == firsts$2) begin
+                    act_r$45$d = enter$2;
+                end
+                else begin
+                    act_r$45$d = t$2$q == cyc$45 - 32'h1;
+                end
+            end
+            if (view_add$45 == 2) begin
+                if (cyc_add$45 == firsts$2) begin
+                    add_r$45$d = enter$2;
+                end
+                else begin
+                    add_r$45$d = t$2$q == cyc_add$45 - 32'h1;
+                end
+            end
+            if (view$45 == 3) begin
+                if (cyc$45 == firsts$3) begin
+                    act_r$45$d = enter$3;
+                end
+                else begin
+                    act_r$45$d = t$3$q == cyc$45 - 32'h1;
+                end
+            end
+            if (view_add$45 == 3) begin
+                if (cyc_add$45 == firsts$3) begin
+                    add_r$45$d = enter$3;
+                end
+                else begin
+                    add_r$45$d = t$3$q == cyc_add$45 - 32'h1;
+                end
+            end
+            if (view$45 == 4) begin
+                if (cyc$45 == firsts$4) begin
+                    act_r$45$d = enter$4;
+                end
+                else begin
+                    act_r$45$d = t$4$q == cyc$45 - 32'h1;
+                end
+            end
+            if (view_add$45 == 4) begin
+                if (cyc_add$45 == firsts$4) begin
+                    add_r$45$d = enter$4;
+                end
+                else begin
+                    add_r$45$d = t$4$q == cyc_add$45 - 32'h1;
+                end
+            end
+            if (view$45 == 5) begin
+                if (cyc$45 == firsts$5) begin
+                    act_r$45$d = enter$5;
+                end
+                else begin
+                    act_r$45$d = t$5$q == cyc$45 - 32'h1;
+                end
+            end
+            if (view_add$45 == 5) begin
+                if (cyc_add$45 == firsts$5) begin
+                    add_r$45$d = enter$5;
+                end
+                else begin
+                    add_r$45$d = t$5$q == cyc_add$45 - 32'h1;
+                end
+            end
         end
         act_r$46$clock = clock;
-        act_r$46$d = 1'b0;
+        act_r$46$d = act_r$46$q;
         add_r$46$clock = clock;
-        add_r$46$d = 1'b0;
-        if ((view$46 == 0) & (t$0$d == cyc$46)) begin
-            act_r$46$d = 1'b1;
-        end
-        if ((view_add$46 == 0) & (t$0$d == cyc_add$46)) begin
-            add_r$46$d = 1'b1;
-        end
-        if ((view$46 == 1) & (t$1$d == cyc$46)) begin
-            act_r$46$d = 1'b1;
-        end
-        if ((view_add$46 == 1) & (t$1$d == cyc_add$46)) begin
-            add_r$46$d = 1'b1;
-        end
-        if ((view$46 == 2) & (t$2$d == cyc$46)) begin
-            act_r$46$d = 1'b1;
-        end
-        if ((view_add$46 == 2) & (t$2$d == cyc_add$46)) begin
-            add_r$46$d = 1'b1;
-        end
-        if ((view$46 == 3) & (t$3$d == cyc$46)) begin
-            act_r$46$d = 1'b1;
-        end
-        if ((view_add$46 == 3) & (t$3$d == cyc_add$46)) begin
-            add_r$46$d = 1'b1;
-        end
-        if ((view$46 == 4) & (t$4$d == cyc$46)) begin
-            act_r$46$d = 1'b1;
-        end
-        if ((view_add$46 == 4) & (t$4$d == cyc_add$46)) begin
-            add_r$46$d = 1'b1;
-        end
-        if ((view$46 == 5) & (t$5$d == cyc$46)) begin
-            act_r$46$d = 1'b1;
-        end
-        if ((view_add$46 == 5) & (t$5$d == cyc_add$46)) begin
-            add_r$46$d = 1'b1;
+        add_r$46$d = add_r$46$q;
+        if (run) begin
+            act_r$46$d = 1'b0;
+            add_r$46$d = 1'b0;
+            if (view$46 == 0) begin
+                if (cyc$46 == firsts$0) begin
+                    act_r$46$d = enter$0;
+                end
+                else begin
+                    act_r$46$d = t$0$q == cyc$46 - 32'h1;
+                end
+            end
+            if (view_add$46 == 0) begin
+                if (cyc_add$46 == firsts$0) begin
+                    add_r$46$d = enter$0;
+                end
+                else begin
+                    add_r$46$d = t$0$q == cyc_add$46 - 32'h1;
+                end
+            end
+            if (view$46 == 1) begin
+                if (cyc$46 == firsts$1) begin
+                    act_r$46$d = enter$1;
+                end
+                else begin
+                    act_r$46$d = t$1$q == cyc$46 - 32'h1;
+                end
+            end
+            if (view_add$46 == 1) begin
+                if (cyc_add$46 == firsts$1) begin
+                    add_r$46$d = enter$1;
+                end
+                else begin
+                    add_r$46$d = t$1$q == cyc_add$46 - 32'h1;
+                end
+            end
+            if (view$46 == 2) begin
+                if (cyc$46 == firsts$2) begin
+                    act_r$46$d = enter$2;
+                end
+                else begin
+                    act_r$46$d = t$2$q == cyc$46 - 32'h1;
+                end
+            end
+            if (view_add$46 == 2) begin
+                if (cyc_add$46 == firsts$2) begin
+                    add_r$46$d = enter$2;
+                end
+                else begin
+                    add_r$46$d = t$2$q == cyc_add$46 - 32'h1;
+                end
+            end
+            if (view$46 == 3) begin
+                if (cyc$46 == firsts$3) begin
+                    act_r$46$d = enter$3;
+                end
+                else begin
+                    act_r$46$d = t$3$q == cyc$46 - 32'h1;
+                end
+            end
+            if (view_add$46 == 3) begin
+                if (cyc_add$46 == firsts$3) begin
+                    add_r$46$d = enter$3;
+                end
+                else begin
+                    add_r$46$d = t$3$q == cyc_add$46 - 32'h1;
+                end
+            end
+            if (view$46 == 4) begin
+                if (cyc$46 == firsts$4) begin
+                    act_r$46$d = enter$4;
+                end
+                else begin
+                    act_r$46$d = t$4$q == cyc$46 - 32'h1;
+                end
+            end
+            if (view_add$46 == 4) begin
+                if (cyc_add$46 == firsts$4) begin
+                    add_r$46$d = enter$4;
+                end
+                else begin
+                    add_r$46$d = t$4$q == cyc_add$46 - 32'h1;
+                end
+            end
+            if (view$46 == 5) begin
+                if (cyc$46 == firsts$5) begin
+                    act_r$46$d = enter$5;
+                end
+                else begin
+                    act_r$46$d = t$5$q == cyc$46 - 32'h1;
+                end
+            end
+            if (view_add$46 == 5) begin
+                if (cyc_add$46 == firsts$5) begin
+                    add_r$46$d = enter$5;
+                end
+                else begin
+                    add_r$46$d = t$5$q == cyc_add$46 - 32'h1;
+                end
+            end
         end
         act_r$47$clock = clock;
-        act_r$47$d = 1'b0;
+        act_r$47$d = act_r$47$q;
         add_r$47$clock = clock;
-        add_r$47$d = 1'b0;
-        if ((view$47 == 0) & (t$0$d == cyc$47)) begin
-            act_r$47$d = 1'b1;
-        end
-        if ((view_add$47 == 0) & (t$0$d == cyc_add$47)) begin
-            add_r$47$d = 1'b1;
-        end
-        if ((view$47 == 1) & (t$1$d == cyc$47)) begin
-            act_r$47$d = 1'b1;
-        end
-        if ((view_add$47 == 1) & (t$1$d == cyc_add$47)) begin
-            add_r$47$d = 1'b1;
-        end
-        if ((view$47 == 2) & (t$2$d == cyc$47)) begin
-            act_r$47$d = 1'b1;
-        end
-        if ((view_add$47 == 2) & (t$2$d == cyc_add$47)) begin
-            add_r$47$d = 1'b1;
-        end
-        if ((view$47 == 3) & (t$3$d == cyc$47)) begin
-            act_r$47$d = 1'b1;
-        end
-        if ((view_add$47 == 3) & (t$3$d == cyc_add$47)) begin
-            add_r$47$d = 1'b1;
-        end
-        if ((view$47 == 4) & (t$4$d == cyc$47)) begin
-            act_r$47$d = 1'b1;
-        end
-        if ((view_add$47 == 4) & (t$4$d == cyc_add$47)) begin
-            add_r$47$d = 1'b1;
-        end
-        if ((view$47 == 5) & (t$5$d == cyc$47)) begin
-            act_r$47$d = 1'b1;
-        end
-        if ((view_add$47 == 5) & (t$5$d == cyc_add$47)) begin
-            add_r$47$d = 1'b1;
+        add_r$47$d = add_r$47$q;
+        if (run) begin
+            act_r$47$d = 1'b0;
+            add_r$47$d = 1'b0;
+            if (view$47 == 0) begin
+                if (cyc$47 == firsts$0) begin
+                    act_r$47$d = enter$0;
+                end
+                else begin
+                    act_r$47$d = t$0$q == cyc$47 - 32'h1;
+                end
+            end
+            if (view_add$47 == 0) begin
+                if (cyc_add$47 == firsts$0) begin
+                    add_r$47$d = enter$0;
+                end
+                else begin
+                    add_r$47$d = t$0$q == cyc_add$47 - 32'h1;
+                end
+            end
+            if (view$47 == 1) begin
+                if (cyc$47 == firsts$1) begin
+                    act_r$47$d = enter$1;
+                end
+                else begin
+                    act_r$47$d = t$1$q == cyc$47 - 32'h1;
+                end
+            end
+            if (view_add$47 == 1) begin
+                if (cyc_add$47 == firsts$1) begin
+                    add_r$47$d = enter$1;
+                end
+                else begin
+                    add_r$47$d = t$1$q == cyc_add$47 - 32'h1;
+                end
+            end
+            if (view$47 == 2) begin
+                if (cyc$47 == firsts$2) begin
+                    act_r$47$d = enter$2;
+                end
+                else begin
+                    act_r$47$d = t$2$q == cyc$47 - 32'h1;
+                end
+            end
+            if (view_add$47 == 2) begin
+                if (cyc_add$47 == firsts$2) begin
+                    add_r$47$d = enter$2;
+                end
+                else begin
+                    add_r$47$d = t$2$q == cyc_add$47 - 32'h1;
+                end
+            end
+            if (view$47 == 3) begin
+                if (cyc$47 == firsts$3) begin
+                    act_r$47$d = enter$3;
+                end
+                else begin
+                    act_r$47$d = t$3$q == cyc$47 - 32'h1;
+                end
+            end
+            if (view_add$47 == 3) begin
+                if (cyc_add$47 == firsts$3) begin
+                    add_r$47$d = enter$3;
+                end
+                else begin
+                    add_r$47$d = t$3$q == cyc_add$47 - 32'h1;
+                end
+            end
+            if (view$47 == 4) begin
+                if (cyc$47 == firsts$4) begin
+                    act_r$47$d = enter$4;
+                end
+                else begin
+                    act_r$47$d = t$4$q == cyc$47 - 32'h1;
+                end
+            end
+            if (view_add$47 == 4) begin
+                if (cyc_add$47 == firsts$4) begin
+                    add_r$47$d = enter$4;
+                end
+                else begin
+                    add_r$47$d = t$4$q == cyc_add$47 - 32'h1;
+                end
+            end
+            if (view$47 == 5) begin
+                if (cyc$47 == firsts$5) begin
+                    act_r$47$d = enter$5;
+                end
+                else begin
+                    act_r$47$d = t$5$q == cyc$47 - 32'h1;
+                end
+            end
+            if (view_add$47 == 5) begin
+                if (cyc_add$47 == firsts$5) begin
+                    add_r$47$d = enter$5;
+                end
+                else begin
+                    add_r$47$d = t$5$q == cyc_add$47 - 32'h1;
+                end
+            end
         end
         act_r$48$clock = clock;
-        act_r$48$d = 1'b0;
+        act_r$48$d = act_r$48$q;
         add_r$48$clock = clock;
-        add_r$48$d = 1'b0;
-        if ((view$48 == 0) & (t$0$d == cyc$48)) begin
-            act_r$48$d = 1'b1;
-        end
-        if ((view_add$48 == 0) & (t$0$d == cyc_add$48)) begin
-            add_r$48$d = 1'b1;
-        end
-        if ((view$48 == 1) & (t$1$d == cyc$48)) begin
-            act_r$48$d = 1'b1;
-        end
-        if ((view_add$48 == 1) & (t$1$d == cyc_add$48)) begin
-            add_r$48$d = 1'b1;
-        end
-        if ((view$48 == 2) & (t$2$d == cyc$48)) begin
-            act_r$48$d = 1'b1;
-        end
-        if ((view_add$48 == 2) & (t$2$d == cyc_add$48)) begin
-            add_r$48$d = 1'b1;
-        end
-        if ((view$48 == 3) & (t$3$d == cyc$48)) begin
-            act_r$48$d = 1'b1;
-        end
-        if ((view_add$48 == 3) & (t$3$d == cyc_add$48)) begin
-            add_r$48$d = 1'b1;
-        end
-        if ((view$48 == 4) & (t$4$d == cyc$48)) begin
-            act_r$48$d = 1'b1;
-        end
-        if ((view_add$48 == 4) & (t$4$d == cyc_add$48)) begin
-            add_r$48$d = 1'b1;
-        end
-        if ((view$48 == 5) & (t$5$d == cyc$48)) begin
-            act_r$48$d = 1'b1;
-        end
-        if ((view_add$48 == 5) & (t$5$d == cyc_add$48)) begin
-            add_r$48$d = 1'b1;
+        add_r$48$d = add_r$48$q;
+        if (run) begin
+            act_r$48$d = 1'b0;
+            add_r$48$d = 1'b0;
+            if (view$48 == 0) begin
+                if (cyc$48 == firsts$0) begin
+                    act_r$48$d = enter$0;
+                end
+                else begin
+                    act_r$48$d = t$0$q == cyc$48 - 32'h1;
+                end
+            end
+            if (view_add$48 == 0) begin
+                if (cyc_add$48 == firsts$0) begin
+                    add_r$48$d = enter$0;
+                end
+                else begin
+                    add_r$48$d = t$0$q == cyc_add$48 - 32'h1;
+                end
+            end
+            if (view$48 == 1) begin
+                if (cyc$48 == firsts$1) begin
+                    act_r$48$d = enter$1;
+                end
+                else begin
+                    act_r$48$d = t$1$q == cyc$48 - 32'h1;
+                end
+            end
+            if (view_add$48 == 1) begin
+                if (cyc_add$48 == firsts$1) begin
+                    add_r$48$d = enter$1;
+                end
+                else begin
+                    add_r$48$d = t$1$q == cyc_add$48 - 32'h1;
+                end
+            end
+            if (view$48 == 2) begin
+                if (cyc$48 == firsts$2) begin
+                    act_r$48$d = enter$2;
+                end
+                else begin
+                    act_r$48$d = t$2$q == cyc$48 - 32'h1;
+                end
+            end
+            if (view_add$48 == 2) begin
+                if (cyc_add$48 == firsts$2) begin
+                    add_r$48$d = enter$2;
+                end
+                else begin
+                    add_r$48$d = t$2$q == cyc_add$48 - 32'h1;
+                end
+            end
+            if (view$48 == 3) begin
+                if (cyc$48 == firsts$3) begin
+                    act_r$48$d = enter$3;
+                end
+                else begin
+                    act_r$48$d = t$3$q == cyc$48 - 32'h1;
+                end
+            end
+            if (view_add$48 == 3) begin
+                if (cyc_add$48 == firsts$3) begin
+                    add_r$48$d = enter$3;
+                end
+                else begin
+                    add_r$48$d = t$3$q == cyc_add$48 - 32'h1;
+                end
+            end
+            if (view$48 == 4) begin
+                if (cyc$48 == firsts$4) begin
+                    act_r$48$d = enter$4;
+                end
+                else begin
+                    act_r$48$d = t$4$q == cyc$48 - 32'h1;
+                end
+            end
+            if (view_add$48 == 4) begin
+                if (cyc_add$48 == firsts$4) begin
+                    add_r$48$d = enter$4;
+                end
+                else begin
+                    add_r$48$d = t$4$q == cyc_add$48 - 32'h1;
+                end
+            end
+            if (view$48 == 5) begin
+                if (cyc$48 == firsts$5) begin
+                    act_r$48$d = enter$5;
+                end
+                else begin
+                    act_r$48$d = t$5$q == cyc$48 - 32'h1;
+                end
+            end
+            if (view_add$48 == 5) begin
+                if (cyc_add$48 == firsts$5) begin
+                    add_r$48$d = enter$5;
+                end
+                else begin
+                    add_r$48$d = t$5$q == cyc_add$48 - 32'h1;
+                end
+            end
         end
         act_r$49$clock = clock;
-        act_r$49$d = 1'b0;
+        act_r$49$d = act_r$49$q;
         add_r$49$clock = clock;
-        add_r$49$d = 1'b0;
-        if ((view$49 == 0) & (t$0$d == cyc$49)) begin
-            act_r$49$d = 1'b1;
-        end
-        if ((view_add$49 == 0) & (t$0$d == cyc_add$49)) begin
-            add_r$49$d = 1'b1;
-        end
-        if ((view$49 == 1) & (t$1$d == cyc$49)) begin
-            act_r$49$d = 1'b1;
-        end
-        if ((view_add$49 == 1) & (t$1$d == cyc_add$49)) begin
-            add_r$49$d = 1'b1;
-        end
-        if ((view$49 == 2) & (t$2$d == cyc$49)) begin
-            act_r$49$d = 1'b1;
-        end
-        if ((view_add$49 == 2) & (t$2$d == cyc_add$49)) begin
-            add_r$49$d = 1'b1;
-        end
-        if ((view$49 == 3) & (t$3$d == cyc$49)) begin
-            act_r$49$d = 1'b1;
-        end
-        if ((view_add$49 == 3) & (t$3$d == cyc_add$49)) begin
-            add_r$49$d = 1'b1;
-        end
-        if ((view$49 == 4) & (t$4$d == cyc$49)) begin
-            act_r$49$d = 1'b1;
-        end
-        if ((view_add$49 == 4) & (t$4$d == cyc_add$49)) begin
-            add_r$49$d = 1'b1;
-        end
-        if ((view$49 == 5) & (t$5$d == cyc$49)) begin
-            act_r$49$d = 1'b1;
-        end
-        if ((view_add$49 == 5) & (t$5$d == cyc_add$49)) begin
-            add_r$49$d = 1'b1;
+        add_r$49$d = add_r$49$q;
+        if (run) begin
+            act_r$49$d = 1'b0;
+            add_r$49$d = 1'b0;
+            if (view$49 == 0) begin
+                if (cyc$49 == firsts$0) begin
+                    act_r$49$d = enter$0;
+                end
+                else begin
+                    act_r$49$d = t$0$q == cyc$49 - 32'h1;
+                end
+            end
+            if (view_add$49 == 0) begin
+                if (cyc_add$49 == firsts$0) begin
+                    add_r$49$d = enter$0;
+                end
+                else begin
+                    add_r$49$d = t$0$q == cyc_add$49 - 32'h1;
+                end
+            end
+            if (view$49 == 1) begin
+                if (cyc$49 == firsts$1) begin
+                    act_r$49$d = enter$1;
+                end
+                else begin
+                    act_r$49$d = t$1$q == cyc$49 - 32'h1;
+                end
+            end
+            if (view_add$49 == 1) begin
+                if (cyc_add$49 == firsts$1) begin
+                    add_r$49$d = enter$1;
+                end
+                else begin
+                    add_r$49$d = t$1$q == cyc_add$49 - 32'h1;
+                end
+            end
+            if (view$49 == 2) begin
+                if (cyc$49 == firsts$2) begin
+                    act_r$49$d = enter$2;
+                end
+                else begin
+                    act_r$49$d = t$2$q == cyc$49 - 32'h1;
+                end
+            end
+            if (view_add$49 == 2) begin
+                if (cyc_add$49 == firsts$2) begin
+                    add_r$49$d = enter$2;
+                end
+                else begin
+                    add_r$49$d = t$2$q == cyc_add$49 - 32'h1;
+                end
+            end
+            if (view$49 == 3) begin
+                if (cyc$49 == firsts$3) begin
+                    act_r$49$d = enter$3;
+                end
+                else begin
+                    act_r$49$d = t$3$q == cyc$49 - 32'h1;
+                end
+            end
+            if (view_add$49 == 3) begin
+                if (cyc_add$49 == firsts$3) begin
+                    add_r$49$d = enter$3;
+                end
+                else begin
+                    add_r$49$d = t$3$q == cyc_add$49 - 32'h1;
+                end
+            end
+            if (view$49 == 4) begin
+                if (cyc$49 == firsts$4) begin
+                    act_r$49$d = enter$4;
+                end
+                else begin
+                    act_r$49$d = t$4$q == cyc$49 - 32'h1;
+                end
+            end
+            if (view_add$49 == 4) begin
+                if (cyc_add$49 == firsts$4) begin
+                    add_r$49$d = enter$4;
+                end
+                else begin
+                    add_r$49$d = t$4$q == cyc_add$49 - 32'h1;
+                end
+            end
+            if (view$49 == 5) begin
+                if (cyc$49 == firsts$5) begin
+                    act_r$49$d = enter$5;
+                end
+                else begin
+                    act_r$49$d = t$5$q == cyc$49 - 32'h1;
+                end
+            end
+            if (view_add$49 == 5) begin
+                if (cyc_add$49 == firsts$5) begin
+                    add_r$49$d = enter$5;
+                end
+                else begin
+                    add_r$49$d = t$5$q == cyc_add$49 - 32'h1;
+                end
+            end
         end
         act_r$50$clock = clock;
-        act_r$50$d = 1'b0;
+        act_r$50$d = act_r$50$q;
         add_r$50$clock = clock;
-        add_r$50$d = 1'b0;
-        if ((view$50 == 0) & (t$0$d == cyc$50)) begin
-            act_r$50$d = 1'b1;
-        end
-        if ((view_add$50 == 0) & (t$0$d == cyc_add$50)) begin
-            add_r$50$d = 1'b1;
-        end
-        if ((view$50 == 1) & (t$1$d == cyc$50)) begin
-            act_r$50$d = 1'b1;
-        end
-        if ((view_add$50 == 1) & (t$1$d == cyc_add$50)) begin
-            add_r$50$d = 1'b1;
-        end
-        if ((view$50 == 2) & (t$2$d == cyc$50)) begin
-            act_r$50$d = 1'b1;
-        end
-        if ((view_add$50 == 2) & (t$2$d == cyc_add$50)) begin
-            add_r$50$d = 1'b1;
-        end
-        if ((view$50 == 3) & (t$3$d == cyc$50)) begin
-            act_r$50$d = 1'b1;
-        end
-        if ((view_add$50 == 3) & (t$3$d == cyc_add$50)) begin
-            add_r$50$d = 1'b1;
-        end
-        if ((view$50 == 4) & (t$4$d == cyc$50)) begin
-            act_r$50$d = 1'b1;
-        end
-        if ((view_add$50 == 4) & (t$4$d == cyc_add$50)) begin
-            add_r$50$d = 1'b1;
-        end
-        if ((view$50 == 5) & (t$5$d == cyc$50)) begin
-            act_r$50$d = 1'b1;
-        end
-        if ((view_add$50 == 5) & (t$5$d == cyc_add$50)) begin
-            add_r$50$d = 1'b1;
+        add_r$50$d = add_r$50$q;
+        if (run) begin
+            act_r$50$d = 1'b0;
+            add_r$50$d = 1'b0;
+            if (view$50 == 0) begin
+                if (cyc$50 == firsts$0) begin
+                    act_r$50$d = enter$0;
+                end
+                else begin
+                    act_r$50$d = t$0$q == cyc$50 - 32'h1;
+                end
+            end
+            if (view_add$50 == 0) begin
+                if (cyc_add$50 == firsts$0) begin
+                    add_r$50$d = enter$0;
+                end
+                else begin
+                    add_r$50$d = t$0$q == cyc_add$50 - 32'h1;
+                end
+            end
+            if (view$50 == 1) begin
+                if (cyc$50 == firsts$1) begin
+                    act_r$50$d = enter$1;
+                end
+                else begin
+                    act_r$50$d = t$1$q == cyc$50 - 32'h1;
+                end
+            end
+            if (view_add$50 == 1) begin
+                if (cyc_add$50 == firsts$1) begin
+                    add_r$50$d = enter$1;
+                end
+                else begin
+                    add_r$50$d = t$1$q == cyc_add$50 - 32'h1;
+                end
+            end
+            if (view$50 == 2) begin
+                if (cyc$50 == firsts$2) begin
+                    act_r$50$d = enter$2;
+                end
+                else begin
+                    act_r$50$d = t$2$q == cyc$50 - 32'h1;
+                end
+            end
+            if (view_add$50 == 2) begin
+                if (cyc_add$50 == firsts$2) begin
+                    add_r$50$d = enter$2;
+                end
+                else begin
+                    add_r$50$d = t$2$q == cyc_add$50 - 32'h1;
+                end
+            end
+            if (view$50 == 3) begin
+                if (cyc$50 == firsts$3) begin
+                    act_r$50$d = enter$3;
+                end
+                else begin
+                    act_r$50$d = t$3$q == cyc$50 - 32'h1;
+                end
+            end
+            if (view_add$50 == 3) begin
+                if (cyc_add$50 == firsts$3) begin
+                    add_r$50$d = enter$3;
+                end
+                else begin
+                    add_r$50$d = t$3$q == cyc_add$50 - 32'h1;
+                end
+            end
+            if (view$50 == 4) begin
+                if (cyc$50 == firsts$4) begin
+                    act_r$50$d = enter$4;
+                end
+                else begin
+                    act_r$50$d = t$4$q == cyc$50 - 32'h1;
+                end
+            end
+            if (view_add$50 == 4) begin
+                if (cyc_add$50 == firsts$4) begin
+                    add_r$50$d = enter$4;
+                end
+                else begin
+                    add_r$50$d = t$4$q == cyc_add$50 - 32'h1;
+                end
+            end
+            if (view$50 == 5) begin
+                if (cyc$50 == firsts$5) begin
+                    act_r$50$d = enter$5;
+                end
+                else begin
+                    act_r$50$d = t$5$q == cyc$50 - 32'h1;
+                end
+            end
+            if (view_add$50 == 5) begin
+                if (cyc_add$50 == firsts$5) begin
+                    add_r$50$d = enter$5;
+                end
+                else begin
+                    add_r$50$d = t$5$q == cyc_add$50 - 32'h1;
+                end
+            end
         end
         act_r$51$clock = clock;
-        act_r$51$d = 1'b0;
+        act_r$51$d = act_r$51$q;
         add_r$51$clock = clock;
-        add_r$51$d = 1'b0;
-        if ((view$51 == 0) & (t$0$d == cyc$51)) begin
-            act_r$51$d = 1'b1;
-        end
-        if ((view_add$51 == 0) & (t$0$d == cyc_add$51)) begin
-            add_r$51$d = 1'b1;
-        end
-        if ((view$51 == 1) & (t$1$d == cyc$51)) begin
-            act_r$51$d = 1'b1;
-        end
-        if ((view_add$51 == 1) & (t$1$d == cyc_add$51)) begin
-            add_r$51$d = 1'b1;
-        end
-        if ((view$51 == 2) & (t$2$d == cyc$51)) begin
-            act_r$51$d = 1'b1;
-        end
-        if ((view_add$51 == 2) & (t$2$d == cyc_add$51)) begin
-            add_r$51$d = 1'b1;
-        end
-        if ((view$51 == 3) & (t$3$d == cyc$51)) begin
-            act_r$51$d = 1'b1;
-        end
-        if ((view_add$51 == 3) & (t$3$d == cyc_add$51)) begin
-            add_r$51$d = 1'b1;
-        end
-        if ((view$51 == 4) & (t$4$d == cyc$51)) begin
-            act_r$51$d = 1'b1;
-        end
-        if ((view_add$51 == 4) & (t$4$d == cyc_add$51)) begin
-            add_r$51$d = 1'b1;
-        end
-        if ((view$51 == 5) & (t$5$d == cyc$51)) begin
-            act_r$51$d = 1'b1;
-        end
-        if ((view_add$51 == 5) & (t$5$d == cyc_add$51)) begin
-            add_r$51$d = 1'b1;
+        add_r$51$d = add_r$51$q;
+        if (run) begin
+            act_r$51$d = 1'b0;
+            add_r$51$d = 1'b0;
+            if (view$51 == 0) begin
+                if (cyc$51 == firsts$0) begin
+                    act_r$51$d = enter$0;
+                end
+                else begin
+                    act_r$51$d = t$0$q == cyc$51 - 32'h1;
+                end
+            end
+            if (view_add$51 == 0) begin
+                if (cyc_add$51 == firsts$0) begin
+                    add_r$51$d = enter$0;
+                end
+                else begin
+                    add_r$51$d = t$0$q == cyc_add$51 - 32'h1;
+                end
+            end
+            if (view$51 == 1) begin
+                if (cyc$51 == firsts$1) begin
+                    act_r$51$d = enter$1;
+                end
+                else begin
+                    act_r$51$d = t$1$q == cyc$51 - 32'h1;
+                end
+            end
+            if (view_add$51 == 1) begin
+                if (cyc_add$51 == firsts$1) begin
+                    add_r$51$d = enter$1;
+                end
+                else begin
+                    add_r$51$d = t$1$q == cyc_add$51 - 32'h1;
+                end
+            end
+            if (view$51 == 2) begin
+                if (cyc$51 == firsts$2) begin
+                    act_r$51$d = enter$2;
+                end
+                else begin
+                    act_r$51$d = t$2$q == cyc$51 - 32'h1;
+                end
+            end
+            if (view_add$51 == 2) begin
+                if (cyc_add$51 == firsts$2) begin
+                    add_r$51$d = enter$2;
+                end
+                else begin
+                    add_r$51$d = t$2$q == cyc_add$51 - 32'h1;
+                end
+            end
+            if (view$51 == 3) begin
+                if (cyc$51 == firsts$3) begin
+                    act_r$51$d = enter$3;
+                end
+                else begin
+                    act_r$51$d = t$3$q == cyc$51 - 32'h1;
+                end
+            end
+            if (view_add$51 == 3) begin
+                if (cyc_add$51 == firsts$3) begin
+                    add_r$51$d = enter$3;
+                end
+                else begin
+                    add_r$51$d = t$3$q == cyc_add$51 - 32'h1;
+                end
+            end
+            if (view$51 == 4) begin
+                if (cyc$51 == firsts$4) begin
+                    act_r$51$d = enter$4;
+                end
+                else begin
+                    act_r$51$d = t$4$q == cyc$51 - 32'h1;
+                end
+            end
+            if (view_add$51 == 4) begin
+                if (cyc_add$51 == firsts$4) begin
+                    add_r$51$d = enter$4;
+                end
+                else begin
+                    add_r$51$d = t$4$q == cyc_add$51 - 32'h1;
+                end
+            end
+            if (view$51 == 5) begin
+                if (cyc$51 == firsts$5) begin
+                    act_r$51$d = enter$5;
+                end
+                else begin
+                    act_r$51$d = t$5$q == cyc$51 - 32'h1;
+                end
+            end
+            if (view_add$51 == 5) begin
+                if (cyc_add$51 == firsts$5) begin
+                    add_r$51$d = enter$5;
+                end
+                else begin
+                    add_r$51$d = t$5$q == cyc_add$51 - 32'h1;
+                end
+            end
         end
         act_r$52$clock = clock;
-        act_r$52$d = 1'b0;
+        act_r$52$d = act_r$52$q;
         add_r$52$clock = clock;
-        add_r$52$d = 1'b0;
-        if ((view$52 == 0) & (t$0$d == cyc$52)) begin
-            act_r$52$d = 1'b1;
-        end
-        if ((view_add$52 == 0) & (t$0$d == cyc_add$52)) begin
-            add_r$52$d = 1'b1;
-        end
-        if ((view$52 == 1) & (t$1$d == cyc$52)) begin
-            act_r$52$d = 1'b1;
-        end
-        if ((view_add$52 == 1) & (t$1$d == cyc_add$52)) begin
-            add_r$52$d = 1'b1;
-        end
-        if ((view$52 == 2) & (t$2$d == cyc$52)) begin
-            act_r$52$d = 1'b1;
-        end
-        if ((view_add$52 == 2) & (t$2$d == cyc_add$52)) begin
-            add_r$52$d = 1'b1;
-        end
-        if ((view$52 == 3) & (t$3$d == cyc$52)) begin
-            act_r$52$d = 1'b1;
-        end
-        if ((view_add$52 == 3) & (t$3$d == cyc_add$52)) begin
-            add_r$52$d = 1'b1;
-        end
-        if ((view$52 == 4) & (t$4$d == cyc$52)) begin
-            act_r$52$d = 1'b1;
-        end
-        if ((view_add$52 == 4) & (t$4$d == cyc_add$52)) begin
-            add_r$52$d = 1'b1;
-        end
-        if ((view$52 == 5) & (t$5$d == cyc$52)) begin
-            act_r$52$d = 1'b1;
-        end
-        if ((view_add$52 == 5) & (t$5$d == cyc_add$52)) begin
-            add_r$52$d = 1'b1;
+        add_r$52$d = add_r$52$q;
+        if (run) begin
+            act_r$52$d = 1'b0;
+            add_r$52$d = 1'b0;
+            if (view$52 == 0) begin
+                if (cyc$52 == firsts$0) begin
+                    act_r$52$d = enter$0;
+                end
+                else begin
+                    act_r$52$d = t$0$q == cyc$52 - 32'h1;
+                end
+            end
+            if (view_add$52 == 0) begin
+                if (cyc_add$52 == firsts$0) begin
+                    add_r$52$d = enter$0;
+                end
+                else begin
+                    add_r$52$d = t$0$q == cyc_add$52 - 32'h1;
+                end
+            end
+            if (view$52 == 1) begin
+                if (cyc$52 == firsts$1) begin
+                    act_r$52$d = enter$1;
+                end
+                else begin
+                    act_r$52$d = t$1$q == cyc$52 - 32'h1;
+                end
+            end
+            if (view_add$52 == 1) begin
+                if (cyc_add$52 == firsts$1) begin
+                    add_r$52$d = enter$1;
+                end
+                else begin
+                    add_r$52$d = t$1$q == cyc_add$52 - 32'h1;
+                end
+            end
+            if (view$52 == 2) begin
+                if (cyc$52 == firsts$2) begin
+                    act_r$52$d = enter$2;
+                end
+                else begin
+                    act_r$52$d = t$2$q == cyc$52 - 32'h1;
+                end
+            end
+            if (view_add$52 == 2) begin
+                if (cyc_add$52 == firsts$2) begin
+                    add_r$52$d = enter$2;
+                end
+                else begin
+                    add_r$52$d = t$2$q == cyc_add$52 - 32'h1;
+                end
+            end
+            if (view$52 == 3) begin
+                if (cyc$52 == firsts$3) begin
+                    act_r$52$d = enter$3;
+                end
+                else begin
+                    act_r$52$d = t$3$q == cyc$52 - 32'h1;
+                end
+            end
+            if (view_add$52 == 3) begin
+                if (cyc_add$52 == firsts$3) begin
+                    add_r$52$d = enter$3;
+                end
+                else begin
+                    add_r$52$d = t$3$q == cyc_add$52 - 32'h1;
+                end
+            end
+            if (view$52 == 4) begin
+                if (cyc$52 == firsts$4) begin
+                    act_r$52$d = enter$4;
+                end
+                else begin
+                    act_r$52$d = t$4$q == cyc$52 - 32'h1;
+                end
+            end
+            if (view_add$52 == 4) begin
+                if (cyc_add$52 == firsts$4) begin
+                    add_r$52$d = enter$4;
+                end
+                else begin
+                    add_r$52$d = t$4$q == cyc_add$52 - 32'h1;
+                end
+            end
+            if (view$52 == 5) begin
+                if (cyc$52 == firsts$5) begin
+                    act_r$52$d = enter$5;
+                end
+                else begin
+                    act_r$52$d = t$5$q == cyc$52 - 32'h1;
+                end
+            end
+            if (view_add$52 == 5) begin
+                if (cyc_add$52 == firsts$5) begin
+                    add_r$52$d = enter$5;
+                end
+                else begin
+                    add_r$52$d = t$5$q == cyc_add$52 - 32'h1;
+                end
+            end
         end
         act_r$53$clock = clock;
-        act_r$53$d = 1'b0;
+        act_r$53$d = act_r$53$q;
         add_r$53$clock = clock;
-        add_r$53$d = 1'b0;
-        if ((view$53 == 0) & (t$0$d == cyc$53)) begin
-            act_r$53$d = 1'b1;
-        end
-        if ((view_add$53 == 0) & (t$0$d == cyc_add$53)) begin
-            add_r$53$d = 1'b1;
-        end
-        if ((view$53 == 1) & (t$1$d == cyc$53)) begin
-            act_r$53$d = 1'b1;
-        end
-        if ((view_add$53 == 1) & (t$1$d == cyc_add$53)) begin
-            add_r$53$d = 1'b1;
-        end
-        if ((view$53 == 2) & (t$2$d == cyc$53)) begin
-            act_r$53$d = 1'b1;
-        end
-        if ((view_add$53 == 2) & (t$2$d == cyc_add$53)) begin
-            add_r$53$d = 1'b1;
-        end
-        if ((view$53 == 3) & (t$3$d == cyc$53)) begin
-            act_r$53$d = 1'b1;
-        end
-        if ((view_add$53 == 3) & (t$3$d == cyc_add$53)) begin
-            add_r$53$d = 1'b1;
-        end
-        if ((view$53 == 4) & (t$4$d == cyc$53)) begin
-            act_r$53$d = 1'b1;
-        end
-        if ((view_add$53 == 4) & (t$4$d == cyc_add$53)) begin
-            add_r$53$d = 1'b1;
-        end
-        if ((view$53 == 5) & (t$5$d == cyc$53)) begin
-            act_r$53$d = 1'b1;
-        end
-        if ((view_add$53 == 5) & (t$5$d == cyc_add$53)) begin
-            add_r$53$d = 1'b1;
+        add_r$53$d = add_r$53$q;
+        if (run) begin
+            act_r$53$d = 1'b0;
+            add_r$53$d = 1'b0;
+            if (view$53 == 0) begin
+                if (cyc$53 == firsts$0) begin
+                    act_r$53$d = enter$0;
+                end
+                else begin
+                    act_r$53$d = t$0$q == cyc$53 - 32'h1;
+                end
+            end
+            if (view_add$53 == 0) begin
+                if (cyc_add$53 == firsts$0) begin
+                    add_r$53$d = enter$0;
+                end
+                else begin
+                    add_r$53$d = t$0$q == cyc_add$53 - 32'h1;
+                end
+            end
+            if (view$53 == 1) begin
+                if (cyc$53 == firsts$1) begin
+                    act_r$53$d = enter$1;
+                end
+                else begin
+                    act_r$53$d = t$1$q == cyc$53 - 32'h1;
+                end
+            end
+            if (view_add$53 == 1) begin
+                if (cyc_add$53 == firsts$1) begin
+                    add_r$53$d = enter$1;
+                end
+                else begin
+                    add_r$53$d = t$1$q == cyc_add$53 - 32'h1;
+                end
+            end
+            if (view$53 == 2) begin
+                if (cyc$53 == firsts$2) begin
+                    act_r$53$d = enter$2;
+                end
+                else begin
+                    act_r$53$d = t$2$q == cyc$53 - 32'h1;
+                end
+            end
+            if (view_add$53 == 2) begin
+                if (cyc_add$53 == firsts$2) begin
+                    add_r$53$d = enter$2;
+                end
+                else begin
+                    add_r$53$d = t$2$q == cyc_add$53 - 32'h1;
+                end
+            end
+            if (view$53 == 3) begin
+                if (cyc$53 == firsts$3) begin
+                    act_r$53$d = enter$3;
+                end
+                else begin
+                    act_r$53$d = t$3$q == cyc$53 - 32'h1;
+                end
+            end
+            if (view_add$53 == 3) begin
+                if (cyc_add$53 == firsts$3) begin
+                    add_r$53$d = enter$3;
+                end
+                else begin
+                    add_r$53$d = t$3$q == cyc_add$53 - 32'h1;
+                end
+            end
+            if (view$53 == 4) begin
+                if (cyc$53 == firsts$4) begin
+                    act_r$53$d = enter$4;
+                end
+                else begin
+                    act_r$53$d = t$4$q == cyc$53 - 32'h1;
+                end
+            end
+            if (view_add$53 == 4) begin
+                if (cyc_add$53 == firsts$4) begin
+                    add_r$53$d = enter$4;
+                end
+                else begin
+                    add_r$53$d = t$4$q == cyc_add$53 - 32'h1;
+                end
+            end
+            if (view$53 == 5) begin
+                if (cyc$53 == firsts$5) begin
+                    act_r$53$d = enter$5;
+                end
+                else begin
+                    act_r$53$d = t$5$q == cyc$53 - 32'h1;
+                end
+            end
+            if (view_add$53 == 5) begin
+                if (cyc_add$53 == firsts$5) begin
+                    add_r$53$d = enter$5;
+                end
+                else begin
+                    add_r$53$d = t$5$q == cyc_add$53 - 32'h1;
+                end
+            end
         end
         act_r$54$clock = clock;
-        act_r$54$d = 1'b0;
+        act_r$54$d = act_r$54$q;
         add_r$54$clock = clock;
-        add_r$54$d = 1'b0;
-        if ((view$54 == 0) & (t$0$d == cyc$54)) begin
-            act_r$54$d = 1'b1;
-        end
-        if ((view_add$54 == 0) & (t$0$d == cyc_add$54)) begin
-            add_r$54$d = 1'b1;
-        end
-        if ((view$54 == 1) & (t$1$d == cyc$54)) begin
-            act_r$54$d = 1'b1;
-        end
-        if ((view_add$54 == 1) & (t$1$d == cyc_add$54)) begin
-            add_r$54$d = 1'b1;
-        end
-        if ((view$54 == 2) & (t$2$d == cyc$54)) begin
-            act_r$54$d = 1'b1;
-        end
-        if ((view_add$54 == 2) & (t$2$d == cyc_add$54)) begin
-            add_r$54$d = 1'b1;
-        end
-        if ((view$54 == 3) & (t$3$d == cyc$54)) begin
-            act_r$54$d = 1'b1;
-        end
-        if ((view_add$54 == 3) & (t$3$d == cyc_add$54)) begin
-            add_r$54$d = 1'b1;
-        end
-        if ((view$54 == 4) & (t$4$d == cyc$54)) begin
-            act_r$54$d = 1'b1;
-        end
-        if ((view_add$54 == 4) & (t$4$d == cyc_add$54)) begin
-            add_r$54$d = 1'b1;
-        end
-        if ((view$54 == 5) & (t$5$d == cyc$54)) begin
-            act_r$54$d = 1'b1;
-        end
-        if ((view_add$54 == 5) & (t$5$d == cyc_add$54)) begin
-            add_r$54$d = 1'b1;
+        add_r$54$d = add_r$54$q;
+        if (run) begin
+            act_r$54$d = 1'b0;
+            add_r$54$d = 1'b0;
+            if (view$54 == 0) begin
+                if (cyc$54 == firsts$0) begin
+                    act_r$54$d = enter$0;
+                end
+                else begin
+                    act_r$54$d = t$0$q == cyc$54 - 32'h1;
+                end
+            end
+            if (view_add$54 == 0) begin
+                if (cyc_add$54 == firsts$0) begin
+                    add_r$54$d = enter$0;
+                end
+                else begin
+                    add_r$54$d = t$0$q == cyc_add$54 - 32'h1;
+                end
+            end
+            if (view$54 == 1) begin
+                if (cyc$54 == firsts$1) begin
+                    act_r$54$d = enter$1;
+                end
+                else begin
+                    act_r$54$d = t$1$q == cyc$54 - 32'h1;
+                end
+            end
+            if (view_add$54 == 1) begin
+                if (cyc_add$54 == firsts$1) begin
+                    add_r$54$d = enter$1;
+                end
+                else begin
+                    add_r$54$d = t$1$q == cyc_add$54 - 32'h1;
+                end
+            end
+            if (view$54 == 2) begin
+                if (cyc$54 == firsts$2) begin
+                    act_r$54$d = enter$2;
+                end
+                else begin
+                    act_r$54$d = t$2$q == cyc$54 - 32'h1;
+                end
+            end
+            if (view_add$54 == 2) begin
+                if (cyc_add$54 == firsts$2) begin
+                    add_r$54$d = enter$2;
+                end
+                else begin
+                    add_r$54$d = t$2$q == cyc_add$54 - 32'h1;
+                end
+            end
+            if (view$54 == 3) begin
+                if (cyc$54 == firsts$3) begin
+                    act_r$54$d = enter$3;
+                end
+                else begin
+                    act_r$54$d = t$3$q == cyc$54 - 32'h1;
+                end
+            end
+            if (view_add$54 == 3) begin
+                if (cyc_add$54 == firsts$3) begin
+                    add_r$54$d = enter$3;
+                end
+                else begin
+                    add_r$54$d = t$3$q == cyc_add$54 - 32'h1;
+                end
+            end
+            if (view$54 == 4) begin
+                if (cyc$54 == firsts$4) begin
+                    act_r$54$d = enter$4;
+                end
+                else begin
+                    act_r$54$d = t$4$q == cyc$54 - 32'h1;
+                end
+            end
+            if (view_add$54 == 4) begin
+                if (cyc_add$54 == firsts$4) begin
+                    add_r$54$d = enter$4;
+                end
+                else begin
+                    add_r$54$d = t$4$q == cyc_add$54 - 32'h1;
+                end
+            end
+            if (view$54 == 5) begin
+                if (cyc$54 == firsts$5) begin
+                    act_r$54$d = enter$5;
+                end
+                else begin
+                    act_r$54$d = t$5$q == cyc$54 - 32'h1;
+                end
+            end
+            if (view_add$54 == 5) begin
+                if (cyc_add$54 == firsts$5) begin
+                    add_r$54$d = enter$5;
+                end
+                else begin
+                    add_r$54$d = t$5$q == cyc_add$54 - 32'h1;
+                end
+            end
         end
         act_r$55$clock = clock;
-        act_r$55$d = 1'b0;
+        act_r$55$d = act_r$55$q;
         add_r$55$clock = clock;
-        add_r$55$d = 1'b0;
-        if ((view$55 == 0) & (t$0$d == cyc$55)) begin
-            act_r$55$d = 1'b1;
-        end
-        if ((view_add$55 == 0) & (t$0$d == cyc_add$55)) begin
-            add_r$55$d = 1'b1;
-        end
-        if ((view$55 == 1) & (t$1$d == cyc$55)) begin
-            act_r$55$d = 1'b1;
-        end
-        if ((view_add$55 == 1) & (t$1$d == cyc_add$55)) begin
-            add_r$55$d = 1'b1;
-        end
-        if ((view$55 == 2) & (t$2$d == cyc$55)) begin
-            act_r$55$d = 1'b1;
-        end
-        if ((view_add$55 == 2) & (t$2$d == cyc_add$55)) begin
-            add_r$55$d = 1'b1;
-        end
-        if ((view$55 == 3) & (t$3$d == cyc$55)) begin
-            act_r$55$d = 1'b1;
-        end
-        if ((view_add$55 == 3) & (t$3$d == cyc_add$55)) begin
-            add_r$55$d = 1'b1;
-        end
-        if ((view$55 == 4) & (t$4$d == cyc$55)) begin
-            act_r$55$d = 1'b1;
-        end
-        if ((view_add$55 == 4) & (t$4$d == cyc_add$55)) begin
-            add_r$55$d = 1'b1;
-        end
-        if ((view$55 == 5) & (t$5$d == cyc$55)) begin
-            act_r$55$d = 1'b1;
-        end
-        if ((view_add$55 == 5) & (t$5$d == cyc_add$55)) begin
-            add_r$55$d = 1'b1;
+        add_r$55$d = add_r$55$q;
+        if (run) begin
+            act_r$55$d = 1'b0;
+            add_r$55$d = 1'b0;
+            if (view$55 == 0) begin
+                if (cyc$55 == firsts$0) begin
+                    act_r$55$d = enter$0;
+                end
+                else begin
+                    act_r$55$d = t$0$q == cyc$55 - 32'h1;
+                end
+            end
+            if (view_add$55 == 0) begin
+                if (cyc_add$55 == firsts$0) begin
+                    add_r$55$d = enter$0;
+                end
+                else begin
+                    add_r$55$d = t$0$q == cyc_add$55 - 32'h1;
+                end
+            end
+            if (view$55 == 1) begin
+                if (cyc$55 == firsts$1) begin
+                    act_r$55$d = enter$1;
+                end
+                else begin
+                    act_r$55$d = t$1$q == cyc$55 - 32'h1;
+                end
+            end
+            if (view_add$55 == 1) begin
+                if (cyc_add$55 == firsts$1) begin
+                    add_r$55$d = enter$1;
+                end
+                else begin
+                    add_r$55$d = t$1$q == cyc_add$55 - 32'h1;
+                end
+            end
+            if (view$55 == 2) begin
+                if (cyc$55 == firsts$2) begin
+                    act_r$55$d = enter$2;
+                end
+                else begin
+                    act_r$55$d = t$2$q == cyc$55 - 32'h1;
+                end
+            end
+            if (view_add$55 == 2) begin
+                if (cyc_add$55 == firsts$2) begin
+                    add_r$55$d = enter$2;
+                end
+                else begin
+                    add_r$55$d = t$2$q == cyc_add$55 - 32'h1;
+                end
+            end
+            if (view$55 == 3) begin
+                if (cyc$55 == firsts$3) begin
+                    act_r$55$d = enter$3;
+                end
+                else begin
+                    act_r$55$d = t$3$q == cyc$55 - 32'h1;
+                end
+            end
+            if (view_add$55 == 3) begin
+                if (cyc_add$55 == firsts$3) begin
+                    add_r$55$d = enter$3;
+                end
+                else begin
+                    add_r$55$d = t$3$q == cyc_add$55 - 32'h1;
+                end
+            end
+            if (view$55 == 4) begin
+                if (cyc$55 == firsts$4) begin
+                    act_r$55$d = enter$4;
+                end
+                else begin
+                    act_r$55$d = t$4$q == cyc$55 - 32'h1;
+                end
+            end
+            if (view_add$55 == 4) begin
+                if (cyc_add$55 == firsts$4) begin
+                    add_r$55$d = enter$4;
+                end
+                else begin
+                    add_r$55$d = t$4$q == cyc_add$55 - 32'h1;
+                end
+            end
+            if (view$55 == 5) begin
+                if (cyc$55 == firsts$5) begin
+                    act_r$55$d = enter$5;
+                end
+                else begin
+                    act_r$55$d = t$5$q == cyc$55 - 32'h1;
+                end
+            end
+            if (view_add$55 == 5) begin
+                if (cyc_add$55 == firsts$5) begin
+                    add_r$55$d = enter$5;
+                end
+                else begin
+                    add_r$55$d = t$5$q == cyc_add$55 - 32'h1;
+                end
+            end
         end
         act_r$56$clock = clock;
-        act_r$56$d = 1'b0;
+        act_r$56$d = act_r$56$q;
         add_r$56$clock = clock;
-        add_r$56$d = 1'b0;
-        if ((view$56 == 0) & (t$0$d == cyc$56)) begin
-            act_r$56$d = 1'b1;
-        end
-        if ((view_add$56 == 0) & (t$0$d == cyc_add$56)) begin
-            add_r$56$d = 1'b1;
-        end
-        if ((view$56 == 1) & (t$1$d == cyc$56)) begin
-            act_r$56$d = 1'b1;
-        end
-        if ((view_add$56 == 1) & (t$1$d == cyc_add$56)) begin
-            add_r$56$d = 1'b1;
-        end
-        if ((view$56 == 2) & (t$2$d == cyc$56)) begin
-            act_r$56$d = 1'b1;
-        end
-        if ((view_add$56 == 2) & (t$2$d == cyc_add$56)) begin
-            add_r$56$d = 1'b1;
-        end
-        if ((view$56 == 3) & (t$3$d == cyc$56)) begin
-            act_r$56$d = 1'b1;
-        end
-        if ((view_add$56 == 3) & (t$3$d == cyc_add$56)) begin
-            add_r$56$d = 1'b1;
-        end
-        if ((view$56 == 4) & (t$4$d == cyc$56)) begin
-            act_r$56$d = 1'b1;
-        end
-        if ((view_add$56 == 4) & (t$4$d == cyc_add$56)) begin
-            add_r$56$d = 1'b1;
-        end
-        if ((view$56 == 5) & (t$5$d == cyc$56)) begin
-            act_r$56$d = 1'b1;
-        end
-        if ((view_add$56 == 5) & (t$5$d == cyc_add$56)) begin
-            add_r$56$d = 1'b1;
+        add_r$56$d = add_r$56$q;
+        if (run) begin
+            act_r$56$d = 1'b0;
+            add_r$56$d = 1'b0;
+            if (view$56 == 0) begin
+                if (cyc$56 == firsts$0) begin
+                    act_r$56$d = enter$0;
+                end
+                else begin
+                    act_r$56$d = t$0$q == cyc$56 - 32'h1;
+                end
+            end
+            if (view_add$56 == 0) begin
+                if (cyc_add$56 == firsts$0) begin
+                    add_r$56$d = enter$0;
+                end
+                else begin
+                    add_r$56$d = t$0$q == cyc_add$56 - 32'h1;
+                end
+            end
+            if (view$56 == 1) begin
+                if (cyc$56 == firsts$1) begin
+                    act_r$56$d = enter$1;
+                end
+                else begin
+                    act_r$56$d = t$1$q == cyc$56 - 32'h1;
+                end
+            end
+            if (view_add$56 == 1) begin
+                if (cyc_add$56 == firsts$1) begin
+                    add_r$56$d = enter$1;
+                end
+                else begin
+                    add_r$56$d = t$1$q == cyc_add$56 - 32'h1;
+                end
+            end
+            if (view$56 == 2) begin
+                if (cyc$56 == firsts$2) begin
+                    act_r$56$d = enter$2;
+                end
+                else begin
+                    act_r$56$d = t$2$q == cyc$56 - 32'h1;
+                end
+            end
+            if (view_add$56 == 2) begin
+                if (cyc_add$56 == firsts$2) begin
+                    add_r$56$d = enter$2;
+                end
+                else begin
+                    add_r$56$d = t$2$q == cyc_add$56 - 32'h1;
+                end
+            end
+            if (view$56 == 3) begin
+                if (cyc$56 == firsts$3) begin
+                    act_r$56$d = enter$3;
+                end
+                else begin
+                    act_r$56$d = t$3$q == cyc$56 - 32'h1;
+                end
+            end
+            if (view_add$56 == 3) begin
+                if (cyc_add$56 == firsts$3) begin
+                    add_r$56$d = enter$3;
+                end
+                else begin
+                    add_r$56$d = t$3$q == cyc_add$56 - 32'h1;
+                end
+            end
+            if (view$56 == 4) begin
+                if (cyc$56 == firsts$4) begin
+                    act_r$56$d = enter$4;
+                end
+                else begin
+                    act_r$56$d = t$4$q == cyc$56 - 32'h1;
+                end
+            end
+            if (view_add$56 == 4) begin
+                if (cyc_add$56 == firsts$4) begin
+                    add_r$56$d = enter$4;
+                end
+                else begin
+                    add_r$56$d = t$4$q == cyc_add$56 - 32'h1;
+                end
+            end
+            if (view$56 == 5) begin
+                if (cyc$56 == firsts$5) begin
+                    act_r$56$d = enter$5;
+                end
+                else begin
+                    act_r$56$d = t$5$q == cyc$56 - 32'h1;
+                end
+            end
+            if (view_add$56 == 5) begin
+                if (cyc_add$56 == firsts$5) begin
+                    add_r$56$d = enter$5;
+                end
+                else begin
+                    add_r$56$d = t$5$q == cyc_add$56 - 32'h1;
+                end
+            end
         end
         act_r$57$clock = clock;
-        act_r$57$d = 1'b0;
+        act_r$57$d = act_r$57$q;
         add_r$57$clock = clock;
-        add_r$57$d = 1'b0;
-        if ((view$57 == 0) & (t$0$d == cyc$57)) begin
-            act_r$57$d = 1'b1;
-        end
-        if ((view_add$57 == 0) & (t$0$d == cyc_add$57)) begin
-            add_r$57$d = 1'b1;
-        end
-        if ((view$57 == 1) & (t$1$d == cyc$57)) begin
-            act_r$57$d = 1'b1;
-        end
-        if ((view_add$57 == 1) & (t$1$d == cyc_add$57)) begin
-            add_r$57$d = 1'b1;
-        end
-        if ((view$57 == 2) & (t$2$d == cyc$57)) begin
-            act_r$57$d = 1'b1;
-        end
-        if ((view_add$57 == 2) & (t$2$d == cyc_add$57)) begin
-            add_r$57$d = 1'b1;
-        end
-        if ((view$57 == 3) & (t$3$d == cyc$57)) begin
-            act_r$57$d = 1'b1;
-        end
-        if ((view_add$57 == 3) & (t$3$d == cyc_add$57)) begin
-            add_r$57$d = 1'b1;
-        end
-        if ((view$57 == 4) & (t$4$d == cyc$57)) begin
-            act_r$57$d = 1'b1;
-        end
-        if ((view_add$57 == 4) & (t$4$d == cyc_add$57)) begin
-            add_r$57$d = 1'b1;
-        end
-        if ((view$57 == 5) & (t$5$d == cyc$57)) begin
-            act_r$57$d = 1'b1;
-        end
-        if ((view_add$57 == 5) & (t$5$d == cyc_add$57)) begin
-            add_r$57$d = 1'b1;
+        add_r$57$d = add_r$57$q;
+        if (run) begin
+            act_r$57$d = 1'b0;
+            add_r$57$d = 1'b0;
+            if (view$57 == 0) begin
+                if (cyc$57 == firsts$0) begin
+                    act_r$57$d = enter$0;
+                end
+                else begin
+                    act_r$57$d = t$0$q == cyc$57 - 32'h1;
+                end
+            end
+            if (view_add$57 == 0) begin
+                if (cyc_add$57 == firsts$0) begin
+                    add_r$57$d = enter$0;
+                end
+                else begin
+                    add_r$57$d = t$0$q == cyc_add$57 - 32'h1;
+                end
+            end
+            if (view$57 == 1) begin
+                if (cyc$57 == firsts$1) begin
+                    act_r$57$d = enter$1;
+                end
+                else begin
+                    act_r$57$d = t$1$q == cyc$57 - 32'h1;
+                end
+            end
+            if (view_add$57 == 1) begin
+                if (cyc_add$57 == firsts$1) begin
+                    add_r$57$d = enter$1;
+                end
+                else begin
+                    add_r$57$d = t$1$q == cyc_add$57 - 32'h1;
+                end
+            end
+            if (view$57 == 2) begin
+                if (cyc$57 == firsts$2) begin
+                    act_r$57$d = enter$2;
+                end
+                else begin
+                    act_r$57$d = t$2$q == cyc$57 - 32'h1;
+                end
+            end
+            if (view_add$57 == 2) begin
+                if (cyc_add$57 == firsts$2) begin
+                    add_r$57$d = enter$2;
+                end
+                else begin
+                    add_r$57$d = t$2$q == cyc_add$57 - 32'h1;
+                end
+            end
+            if (view$57 == 3) begin
+                if (cyc$57 == firsts$3) begin
+                    act_r$57$d = enter$3;
+                end
+                else begin
+                    act_r$57$d = t$3$q == cyc$57 - 32'h1;
+                end
+            end
+            if (view_add$57 == 3) begin
+                if (cyc_add$57 == firsts$3) begin
+                    add_r$57$d = enter$3;
+                end
+                else begin
+                    add_r$57$d = t$3$q == cyc_add$57 - 32'h1;
+                end
+            end
+            if (view$57 == 4) begin
+                if (cyc$57 == firsts$4) begin
+                    act_r$57$d = enter$4;
+                end
+                else begin
+                    act_r$57$d = t$4$q == cyc$57 - 32'h1;
+                end
+            end
+            if (view_add$57 == 4) begin
+                if (cyc_add$57 == firsts$4) begin
+                    add_r$57$d = enter$4;
+                end
+                else begin
+                    add_r$57$d = t$4$q == cyc_add$57 - 32'h1;
+                end
+            end
+            if (view$57 == 5) begin
+                if (cyc$57 == firsts$5) begin
+                    act_r$57$d = enter$5;
+                end
+                else begin
+                    act_r$57$d = t$5$q == cyc$57 - 32'h1;
+                end
+            end
+            if (view_add$57 == 5) begin
+                if (cyc_add$57 == firsts$5) begin
+                    add_r$57$d = enter$5;
+                end
+                else begin
+                    add_r$57$d = t$5$q == cyc_add$57 - 32'h1;
+                end
+            end
         end
         act_r$58$clock = clock;
-        act_r$58$d = 1'b0;
+        act_r$58$d = act_r$58$q;
         add_r$58$clock = clock;
-        add_r$58$d = 1'b0;
-        if ((view$58 == 0) & (t$0$d == cyc$58)) begin
-            act_r$58$d = 1'b1;
-        end
-        if ((view_add$58 == 0) & (t$0$d == cyc_add$58)) begin
-            add_r$58$d = 1'b1;
-        end
-        if ((view$58 == 1) & (t$1$d == cyc$58)) begin
-            act_r$58$d = 1'b1;
-        end
-        if ((view_add$58 == 1) & (t$1$d == cyc_add$58)) begin
-            add_r$58$d = 1'b1;
-        end
-        if ((view$58 == 2) & (t$2$d == cyc$58)) begin
-            act_r$58$d = 1'b1;
-        end
-        if ((view_add$58 == 2) & (t$2$d == cyc_add$58)) begin
-            add_r$58$d = 1'b1;
-        end
-        if ((view$58 == 3) & (t$3$d == cyc$58)) begin
-            act_r$58$d = 1'b1;
-        end
-        if ((view_add$58 == 3) & (t$3$d == cyc_add$58)) begin
-            add_r$58$d = 1'b1;
-        end
-        if ((view$58 == 4) & (t$4$d == cyc$58)) begin
-            act_r$58$d = 1'b1;
-        end
-        if ((view_add$58 == 4) & (t$4$d == cyc_add$58)) begin
-            add_r$58$d = 1'b1;
-        end
-        if ((view$58 == 5) & (t$5$d == cyc$58)) begin
-            act_r$58$d = 1'b1;
-        end
-        if ((view_add$58 == 5) & (t$5$d == cyc_add$58)) begin
-            add_r$58$d = 1'b1;
+        add_r$58$d = add_r$58$q;
+        if (run) begin
+            act_r$58$d = 1'b0;
+            add_r$58$d = 1'b0;
+            if (view$58 == 0) begin
+                if (cyc$58 == firsts$0) begin
+                    act_r$58$d = enter$0;
+                end
+                else begin
+                    act_r$58$d = t$0$q == cyc$58 - 32'h1;
+                end
+            end
+            if (view_add$58 == 0) begin
+                if (cyc_add$58 == firsts$0) begin
+                    add_r$58$d = enter$0;
+                end
+                else begin
+                    add_r$58$d = t$0$q == cyc_add$58 - 32'h1;
+                end
+            end
+            if (view$58 == 1) begin
+                if (cyc$58 == firsts$1) begin
+                    act_r$58$d = enter$1;
+                end
+                else begin
+                    act_r$58$d = t$1$q == cyc$58 - 32'h1;
+                end
+            end
+            if (view_add$58 == 1) begin
+                if (cyc_add$58 == firsts$1) begin
+                    add_r$58$d = enter$1;
+                end
+                else begin
+                    add_r$58$d = t$1$q == cyc_add$58 - 32'h1;
+                end
+            end
+            if (view$58 == 2) begin
+                if (cyc$58 == firsts$2) begin
+                    act_r$58$d = enter$2;
+                end
+                else begin
+                    act_r$58$d = t$2$q == cyc$58 - 32'h1;
+                end
+            end
+            if (view_add$58 == 2) begin
+                if (cyc_add$58 == firsts$2) begin
+                    add_r$58$d = enter$2;
+                end
+                else begin
+                    add_r$58$d = t$2$q == cyc_add$58 - 32'h1;
+                end
+            end
+            if (view$58 == 3) begin
+                if (cyc$58 == firsts$3) begin
+                    act_r$58$d = enter$3;
+                end
+                else begin
+                    act_r$58$d = t$3$q == cyc$58 - 32'h1;
+                end
+            end
+            if (view_add$58 == 3) begin
+                if (cyc_add$58 == firsts$3) begin
+                    add_r$58$d = enter$3;
+                end
+                else begin
+                    add_r$58$d = t$3$q == cyc_add$58 - 32'h1;
+                end
+            end
+            if (view$58 == 4) begin
+                if (cyc$58 == firsts$4) begin
+                    act_r$58$d = enter$4;
+                end
+                else begin
+                    act_r$58$d = t$4$q == cyc$58 - 32'h1;
+                end
+            end
+            if (view_add$58 == 4) begin
+                if (cyc_add$58 == firsts$4) begin
+                    add_r$58$d = enter$4;
+                end
+                else begin
+                    add_r$58$d = t$4$q == cyc_add$58 - 32'h1;
+                end
+            end
+            if (view$58 == 5) begin
+                if (cyc$58 == firsts$5) begin
+                    act_r$58$d = enter$5;
+                end
+                else begin
+                    act_r$58$d = t$5$q == cyc$58 - 32'h1;
+                end
+            end
+            if (view_add$58 == 5) begin
+                if (cyc_add$58 == firsts$5) begin
+                    add_r$58$d = enter$5;
+                end
+                else begin
+                    add_r$58$d = t$5$q == cyc_add$58 - 32'h1;
+                end
+            end
         end
         act_r$59$clock = clock;
-        act_r$59$d = 1'b0;
+        act_r$59$d = act_r$59$q;
         add_r$59$clock = clock;
-        add_r$59$d = 1'b0;
-        if ((view$59 == 0) & (t$0$d == cyc$59)) begin
-            act_r$59$d = 1'b1;
-        end
-        if ((view_add$59 == 0) & (t$0$d == cyc_add$59)) begin
-            add_r$59$d = 1'b1;
-        end
-        if ((view$59 == 1) & (t$1$d == cyc$59)) begin
-            act_r$59$d = 1'b1;
-        end
-        if ((view_add$59 == 1) & (t$1$d == cyc_add$59)) begin
-            add_r$59$d = 1'b1;
-        end
-        if ((view$59 == 2) & (t$2$d == cyc$59)) begin
-            act_r$59$d = 1'b1;
-        end
-        if ((view_add$59 == 2) & (t$2$d == cyc_add$59)) begin
-            add_r$59$d = 1'b1;
-        end
-        if ((view$59 == 3) & (t$3$d == cyc$59)) begin
-            act_r$59$d = 1'b1;
-        end
-        if ((view_add$59 == 3) & (t$3$d == cyc_add$59)) begin
-            add_r$59$d = 1'b1;
-        end
-        if ((view$59 == 4) & (t$4$d == cyc$59)) begin
-            act_r$59$d = 1'b1;
-        end
-        if ((view_add$59 == 4) & (t$4$d == cyc_add$59)) begin
-            add_r$59$d = 1'b1;
-        end
-        if ((view$59 == 5) & (t$5$d == cyc$59)) begin
-            act_r$59$d = 1'b1;
-        end
-        if ((view_add$59 == 5) & (t$5$d == cyc_add$59)) begin
-            add_r$59$d = 1'b1;
+        add_r$59$d = add_r$59$q;
+        if (run) begin
+            act_r$59$d = 1'b0;
+            add_r$59$d = 1'b0;
+            if (view$59 == 0) begin
+                if (cyc$59 == firsts$0) begin
+                    act_r$59$d = enter$0;
+                end
+                else begin
+                    act_r$59$d = t$0$q == cyc$59 - 32'h1;
+                end
+            end
+            if (view_add$59 == 0) begin
+                if (cyc_add$59 == firsts$0) begin
+                    add_r$59$d = enter$0;
+                end
+                else begin
+                    add_r$59$d = t$0$q == cyc_add$59 - 32'h1;
+                end
+            end
+            if (view$59 == 1) begin
+                if (cyc$59 == firsts$1) begin
+                    act_r$59$d = enter$1;
+                end
+                else begin
+                    act_r$59$d = t$1$q == cyc$59 - 32'h1;
+                end
+            end
+            if (view_add$59 == 1) begin
+                if (cyc_add$59 == firsts$1) begin
+                    add_r$59$d = enter$1;
+                end
+                else begin
+                    add_r$59$d = t$1$q == cyc_add$59 - 32'h1;
+                end
+            end
+            if (view$59 == 2) begin
+                if (cyc$59 == firsts$2) begin
+                    act_r$59$d = enter$2;
+                end
+                else begin
+                    act_r$59$d = t$2$q == cyc$59 - 32'h1;
+                end
+            end
+            if (view_add$59 == 2) begin
+                if (cyc_add$59 == firsts$2) begin
+                    add_r$59$d = enter$2;
+                end
+                else begin
+                    add_r$59$d = t$2$q == cyc_add$59 - 32'h1;
+                end
+            end
+            if (view$59 == 3) begin
+                if (cyc$59 == firsts$3) begin
+                    act_r$59$d = enter$3;
+                end
+                else begin
+                    act_r$59$d = t$3$q == cyc$59 - 32'h1;
+                end
+            end
+            if (view_add$59 == 3) begin
+                if (cyc_add$59 == firsts$3) begin
+                    add_r$59$d = enter$3;
+                end
+                else begin
+                    add_r$59$d = t$3$q == cyc_add$59 - 32'h1;
+                end
+            end
+            if (view$59 == 4) begin
+                if (cyc$59 == firsts$4) begin
+                    act_r$59$d = enter$4;
+                end
+                else begin
+                    act_r$59$d = t$4$q == cyc$59 - 32'h1;
+                end
+            end
+            if (view_add$59 == 4) begin
+                if (cyc_add$59 == firsts$4) begin
+                    add_r$59$d = enter$4;
+                end
+                else begin
+                    add_r$59$d = t$4$q == cyc_add$59 - 32'h1;
+                end
+            end
+            if (view$59 == 5) begin
+                if (cyc$59 == firsts$5) begin
+                    act_r$59$d = enter$5;
+                end
+                else begin
+                    act_r$59$d = t$5$q == cyc$59 - 32'h1;
+                end
+            end
+            if (view_add$59 == 5) begin
+                if (cyc_add$59 == firsts$5) begin
+                    add_r$59$d = enter$5;
+                end
+                else begin
+                    add_r$59$d = t$5$q == cyc_add$59 - 32'h1;
+                end
+            end
         end
         act_r$60$clock = clock;
-        act_r$60$d = 1'b0;
+        act_r$60$d = act_r$60$q;
         add_r$60$clock = clock;
-        add_r$60$d = 1'b0;
-        if ((view$60 == 0) & (t$0$d == cyc$60)) begin
-            act_r$60$d = 1'b1;
-        end
-        if ((view_add$60 == 0) & (t$0$d == cyc_add$60)) begin
-            add_r$60$d = 1'b1;
-        end
-        if ((view$60 == 1) & (t$1$d == cyc$60)) begin
-            act_r$60$d = 1'b1;
-        end
-        if ((view_add$60 == 1) & (t$1$d == cyc_add$60)) begin
-            add_r$60$d = 1'b1;
-        end
-        if ((view$60 == 2) & (t$2$d == cyc$60)) begin
-            act_r$60$d = 1'b1;
-        end
-        if ((view_add$60 == 2) & (t$2$d == cyc_add$60)) begin
-            add_r$60$d = 1'b1;
-        end
-        if ((view$60 == 3) & (t$3$d == cyc$60)) begin
-            act_r$60$d = 1'b1;
-        end
-        if ((view_add$60 == 3) & (t$3$d == cyc_add$60)) begin
-            add_r$60$d = 1'b1;
-        end
-        if ((view$60 == 4) & (t$4$d == cyc$60)) begin
-            act_r$60$d = 1'b1;
-        end
-        if ((view_add$60 == 4) & (t$4$d == cyc_add$60)) begin
-            add_r$60$d = 1'b1;
-        end
-        if ((view$60 == 5) & (t$5$d == cyc$60)) begin
-            act_r$60$d = 1'b1;
-        end
-        if ((view_add$60 == 5) & (t$5$d == cyc_add$60)) begin
-            add_r$60$d = 1'b1;
+        add_r$60$d = add_r$60$q;
+        if (run) begin
+            act_r$60$d = 1'b0;
+            add_r$60$d = 1'b0;
+            if (view$60 == 0) begin
+                if (cyc$60 == firsts$0) begin
+                    act_r$60$d = enter$0;
+                end
+                else begin
+                    act_r$60$d = t$0$q == cyc$60 - 32'h1;
+                end
+            end
+            if (view_add$60 == 0) begin
+                if (cyc_add$60 == firsts$0) begin
+                    add_r$60$d = enter$0;
+                end
+                else begin
+                    add_r$60$d = t$0$q == cyc_add$60 - 32'h1;
+                end
+            end
+            if (view$60 == 1) begin
+                if (cyc$60 == firsts$1) begin
+                    act_r$60$d = enter$1;
+                end
+                else begin
+                    act_r$60$d = t$1$q == cyc$60 - 32'h1;
+                end
+            end
+            if (view_add$60 == 1) begin
+                if (cyc_add$60 == firsts$1) begin
+                    add_r$60$d = enter$1;
+                end
+                else begin
+                    add_r$60$d = t$1$q == cyc_add$60 - 32'h1;
+                end
+            end
+            if (view$60 == 2) begin
+                if (cyc$60 == firsts$2) begin
+                    act_r$60$d = enter$2;
+                end
+                else begin
+                    act_r$60$d = t$2$q == cyc$60 - 32'h1;
+                end
+            end
+            if (view_add$60 == 2) begin
+                if (cyc_add$60 == firsts$2) begin
+                    add_r$60$d = enter$2;
+                end
+                else begin
+                    add_r$60$d = t$2$q == cyc_add$60 - 32'h1;
+                end
+            end
+            if (view$60 == 3) begin
+                if (cyc$60 == firsts$3) begin
+                    act_r$60$d = enter$3;
+                end
+                else begin
+                    act_r$60$d = t$3$q == cyc$60 - 32'h1;
+                end
+            end
+            if (view_add$60 == 3) begin
+                if (cyc_add$60 == firsts$3) begin
+                    add_r$60$d = enter$3;
+                end
+                else begin
+                    add_r$60$d = t$3$q == cyc_add$60 - 32'h1;
+                end
+            end
+            if (view$60 == 4) begin
+                if (cyc$60 == firsts$4) begin
+                    act_r$60$d = enter$4;
+                end
+                else begin
+                    act_r$60$d = t$4$q == cyc$60 - 32'h1;
+                end
+            end
+            if (view_add$60 == 4) begin
+                if (cyc_add$60 == firsts$4) begin
+                    add_r$60$d = enter$4;
+                end
+                else begin
+                    add_r$60$d = t$4$q == cyc_add$60 - 32'h1;
+                end
+            end
+            if (view$60 == 5) begin
+                if (cyc$60 == firsts$5) begin
+                    act_r$60$d = enter$5;
+                end
+                else begin
+                    act_r$60$d = t$5$q == cyc$60 - 32'h1;
+                end
+            end
+            if (view_add$60 == 5) begin
+                if (cyc_add$60 == firsts$5) begin
+                    add_r$60$d = enter$5;
+                end
+                else begin
+                    add_r$60$d = t$5$q == cyc_add$60 - 32'h1;
+                end
+            end
         end
         act_r$61$clock = clock;
-        act_r$61$d = 1'b0;
+        act_r$61$d = act_r$61$q;
         add_r$61$clock = clock;
-        add_r$61$d = 1'b0;
-        if ((view$61 == 0) & (t$0$d == cyc$61)) begin
-            act_r$61$d = 1'b1;
-        end
-        if ((view_add$61 == 0) & (t$0$d == cyc_add$61)) begin
-            add_r$61$d = 1'b1;
-        end
-        if ((view$61 == 1) & (t$1$d == cyc$61)) begin
-            act_r$61$d = 1'b1;
-        end
-        if ((view_add$61 == 1) & (t$1$d == cyc_add$61)) begin
-            add_r$61$d = 1'b1;
-        end
-        if ((view$61 == 2) & (t$2$d == cyc$61)) begin
-            act_r$61$d = 1'b1;
-        end
-        if ((view_add$61 == 2) & (t$2$d == cyc_add$61)) begin
-            add_r$61$d = 1'b1;
-        end
-        if ((view$61 == 3) & (t$3$d == cyc$61)) begin
-            act_r$61$d = 1'b1;
-        end
-        if ((view_add$61 == 3) & (t$3$d == cyc_add$61)) begin
-            add_r$61$d = 1'b1;
-        end
-        if ((view$61 == 4) & (t$4$d == cyc$61)) begin
-            act_r$61$d = 1'b1;
-        end
-        if ((view_add$61 == 4) & (t$4$d == cyc_add$61)) begin
-            add_r$61$d = 1'b1;
-        end
-        if ((view$61 == 5) & (t$5$d == cyc$61)) begin
-            act_r$61$d = 1'b1;
-        end
-        if ((view_add$61 == 5) & (t$5$d == cyc_add$61)) begin
-            add_r$61$d = 1'b1;
+        add_r$61$d = add_r$61$q;
+        if (run) begin
+            act_r$61$d = 1'b0;
+            add_r$61$d = 1'b0;
+            if (view$61 == 0) begin
+                if (cyc$61 == firsts$0) begin
+                    act_r$61$d = enter$0;
+                end
+                else begin
+                    act_r$61$d = t$0$q == cyc$61 - 32'h1;
+                end
+            end
+            if (view_add$61 == 0) begin
+                if (cyc_add$61 == firsts$0) begin
+                    add_r$61$d = enter$0;
+                end
+                else begin
+                    add_r$61$d = t$0$q == cyc_add$61 - 32'h1;
+                end
+            end
+            if (view$61 == 1) begin
+                if (cyc$61 == firsts$1) begin
+                    act_r$61$d = enter$1;
+                end
+                else begin
+                    act_r$61$d = t$1$q == cyc$61 - 32'h1;
+                end
+            end
+            if (view_add$61 == 1) begin
+                if (cyc_add$61 == firsts$1) begin
+                    add_r$61$d = enter$1;
+                end
+                else begin
+                    add_r$61$d = t$1$q == cyc_add$61 - 32'h1;
+                end
+            end
+            if (view$61 == 2) begin
+                if (cyc$61 == firsts$2) begin
+                    act_r$61$d = enter$2;
+                end
+                else begin
+                    act_r$61$d = t$2$q == cyc$61 - 32'h1;
+                end
+            end
+            if (view_add$61 == 2) begin
+                if (cyc_add$61 == firsts$2) begin
+                    add_r$61$d = enter$2;
+                end
+                else begin
+                    add_r$61$d = t$2$q == cyc_add$61 - 32'h1;
+                end
+            end
+            if (view$61 == 3) begin
+                if (cyc$61 == firsts$3) begin
+                    act_r$61$d = enter$3;
+                end
+                else begin
+                    act_r$61$d = t$3$q == cyc$61 - 32'h1;
+                end
+            end
+            if (view_add$61 == 3) begin
+                if (cyc_add$61 == firsts$3) begin
+                    add_r$61$d = enter$3;
+                end
+                else begin
+                    add_r$61$d = t$3$q == cyc_add$61 - 32'h1;
+                end
+            end
+            if (view$61 == 4) begin
+                if (cyc$61 == firsts$4) begin
+                    act_r$61$d = enter$4;
+                end
+                else begin
+                    act_r$61$d = t$4$q == cyc$61 - 32'h1;
+                end
+            end
+            if (view_add$61 == 4) begin
+                if (cyc_add$61 == firsts$4) begin
+                    add_r$61$d = enter$4;
+                end
+                else begin
+                    add_r$61$d = t$4$q == cyc_add$61 - 32'h1;
+                end
+            end
+            if (view$61 == 5) begin
+                if (cyc$61 == firsts$5) begin
+                    act_r$61$d = enter$5;
+                end
+                else begin
+                    act_r$61$d = t$5$q == cyc$61 - 32'h1;
+                end
+            end
+            if (view_add$61 == 5) begin
+                if (cyc_add$61 == firsts$5) begin
+                    add_r$61$d = enter$5;
+                end
+                else begin
+                    add_r$61$d = t$5$q == cyc_add$61 - 32'h1;
+                end
+            end
         end
         act_r$62$clock = clock;
-        act_r$62$d = 1'b0;
+        act_r$62$d = act_r$62$q;
         add_r$62$clock = clock;
-        add_r$62$d = 1'b0;
-        if ((view$62 == 0) & (t$0$d == cyc$62)) begin
-            act_r$62$d = 1'b1;
-        end
-        if ((view_add$62 == 0) & (t$0$d == cyc_add$62)) begin
-            add_r$62$d = 1'b1;
-        end
-        if ((view$62 == 1) & (t$1$d == cyc$62)) begin
-            act_r$62$d = 1'b1;
-        end
-        if ((view_add$62 == 1) & (t$1$d == cyc_add$62)) begin
-            add_r$62$d = 1'b1;
-        end
-        if ((view$62 == 2) & (t$2$d == cyc$62)) begin
-            act_r$62$d = 1'b1;
-        end
-        if ((view_add$62 == 2) & (t$2$d == cyc_add$62)) begin
-            add_r$62$d = 1'b1;
-        end
-        if ((view$62 == 3) & (t$3$d == cyc$62)) begin
-            act_r$62$d = 1'b1;
-        end
-        if ((view_add$62 == 3) & (t$3$d == cyc_add$62)) begin
-            add_r$62$d = 1'b1;
-        end
-        if ((view$62 == 4) & (t$4$d == cyc$62)) begin
-            act_r$62$d = 1'b1;
-        end
-        if ((view_add$62 == 4) & (t$4$d == cyc_add$62)) begin
-            add_r$62$d = 1'b1;
-        end
-        if ((view$62 == 5) & (t$5$d == cyc$62)) begin
-            act_r$62$d = 1'b1;
-        end
-        if ((view_add$62 == 5) & (t$5$d == cyc_add$62)) begin
-            add_r$62$d = 1'b1;
+        add_r$62$d = add_r$62$q;
+        if (run) begin
+            act_r$62$d = 1'b0;
+            add_r$62$d = 1'b0;
+            if (view$62 == 0) begin
+                if (cyc$62 == firsts$0) begin
+                    act_r$62$d = enter$0;
+                end
+                else begin
+                    act_r$62$d = t$0$q == cyc$62 - 32'h1;
+                end
+            end
+            if (view_add$62 == 0) begin
+                if (cyc_add$62 == firsts$0) begin
+                    add_r$62$d = enter$0;
+                end
+                else begin
+                    add_r$62$d = t$0$q == cyc_add$62 - 32'h1;
+                end
+            end
+            if (view$62 == 1) begin
+                if (cyc$62 == firsts$1) begin
+                    act_r$62$d = enter$1;
+                end
+                else begin
+                    act_r$62$d = t$1$q == cyc$62 - 32'h1;
+                end
+            end
+            if (view_add$62 == 1) begin
+                if (cyc_add$62 == firsts$1) begin
+                    add_r$62$d = enter$1;
+                end
+                else begin
+                    add_r$62$d = t$1$q == cyc_add$62 - 32'h1;
+                end
+            end
+            if (view$62 == 2) begin
+                if (cyc$62 == firsts$2) begin
+                    act_r$62$d = enter$2;
+                end
+                else begin
+                    act_r$62$d = t$2$q == cyc$62 - 32'h1;
+                end
+            end
+            if (view_add$62 == 2) begin
+                if (cyc_add$62 == firsts$2) begin
+                    add_r$62$d = enter$2;
+                end
+                else begin
+                    add_r$62$d = t$2$q == cyc_add$62 - 32'h1;
+                end
+            end
+            if (view$62 == 3) begin
+                if (cyc$62 == firsts$3) begin
+                    act_r$62$d = enter$3;
+                end
+                else begin
+                    act_r$62$d = t$3$q == cyc$62 - 32'h1;
+                end
+            end
+            if (view_add$62 == 3) begin
+                if (cyc_add$62 == firsts$3) begin
+                    add_r$62$d = enter$3;
+                end
+                else begin
+                    add_r$62$d = t$3$q == cyc_add$62 - 32'h1;
+                end
+            end
+            if (view$62 == 4) begin
+                if (cyc$62 == firsts$4) begin
+                    act_r$62$d = enter$4;
+                end
+                else begin
+                    act_r$62$d = t$4$q == cyc$62 - 32'h1;
+                end
+            end
+            if (view_add$62 == 4) begin
+                if (cyc_add$62 == firsts$4) begin
+                    add_r$62$d = enter$4;
+                end
+                else begin
+                    add_r$62$d = t$4$q == cyc_add$62 - 32'h1;
+                end
+            end
+            if (view$62 == 5) begin
+                if (cyc$62 == firsts$5) begin
+                    act_r$62$d = enter$5;
+                end
+                else begin
+                    act_r$62$d = t$5$q == cyc$62 - 32'h1;
+                end
+            end
+            if (view_add$62 == 5) begin
+                if (cyc_add$62 == firsts$5) begin
+                    add_r$62$d = enter$5;
+                end
+                else begin
+                    add_r$62$d = t$5$q == cyc_add$62 - 32'h1;
+                end
+            end
         end
         act_r$63$clock = clock;
-        act_r$63$d = 1'b0;
+        act_r$63$d = act_r$63$q;
         add_r$63$clock = clock;
-        add_r$63$d = 1'b0;
-        if ((view$63 == 0) & (t$0$d == cyc$63)) begin
-            act_r$63$d = 1'b1;
+        add_r$63$d = add_r$63$q;
+        if (run) begin
+            act_r$63$d = 1'b0;
+            add_r$63$d = 1'b0;
+            if (view$63 == 0) begin
+                if (cyc$63 == firsts$0) begin
+                    act_r$63$d = enter$0;
+                end
+                else begin
+                    act_r$63$d = t$0$q == cyc$63 - 32'h1;
+                end
+            end
+            if (view_add$63 == 0) begin
+                if (cyc_add$63 == firsts$0) begin
+                    add_r$63$d = enter$0;
+                end
+                else begin
+                    add_r$63$d = t$0$q == cyc_add$63 - 32'h1;
+                end
+            end
+            if (view$63 == 1) begin
+                if (cyc$63 == firsts$1) begin
+                    act_r$63$d = enter$1;
+                end
+                else begin
+                    act_r$63$d = t$1$q == cyc$63 - 32'h1;
+                end
+            end
+            if (view_add$63 == 1) begin
+                if (cyc_add$63 == firsts$1) begin
+                    add_r$63$d = enter$1;
+                end
+                else begin
+                    add_r$63$d = t$1$q == cyc_add$63 - 32'h1;
+                end
+            end
+            if (view$63 == 2) begin
+                if (cyc$63 == firsts$2) begin
+                    act_r$63$d = enter$2;
+                end
+                else begin
+                    act_r$63$d = t$2$q == cyc$63 - 32'h1;
+                end
+            end
+            if (view_add$63 == 2) begin
+                if (cyc_add$63 == firsts$2) begin
+                    add_r$63$d = enter$2;
+                end
+                else begin
+                    add_r$63$d = t$2$q == cyc_add$63 - 32'h1;
+                end
+            end
+            if (view$63 == 3) begin
+                if (cyc$63 == firsts$3) begin
+                    act_r$63$d = enter$3;
+                end
+                else begin
+                    act_r$63$d = t$3$q == cyc$63 - 32'h1;
+                end
+            end
+            if (view_add$63 == 3) begin
+                if (cyc_add$63 == firsts$3) begin
+                    add_r$63$d = enter$3;
+                end
+                else begin
+                    add_r$63$d = t$3$q == cyc_add$63 - 32'h1;
+                end
+            end
+            if (view$63 == 4) begin
+                if (cyc$63 == firsts$4) begin
+                    act_r$63$d = enter$4;
+                end
+                else begin
+                    act_r$63$d = t$4$q == cyc$63 - 32'h1;
+                end
+            end
+            if (view_add$63 == 4) begin
+                if (cyc_add$63 == firsts$4) begin
+                    add_r$63$d = enter$4;
+                end
+                else begin
+                    add_r$63$d = t$4$q == cyc_add$63 - 32'h1;
+                end
+            end
+            if (view$63 == 5) begin
+                if (cyc$63 == firsts$5) begin
+                    act_r$63$d = enter$5;
+                end
+                else begin
+                    act_r$63$d = t$5$q == cyc$63 - 32'h1;
+                end
+            end
+            if (view_add$63 == 5) begin
+                if (cyc_add$63 == firsts$5) begin
+                    add_r$63$d = enter$5;
+                end
+                else begin
+                    add_r$63$d = t$5$q == cyc_add$63 - 32'h1;
+                end
+            end
         end
-        if ((view_add$63 == 0) & (t$0$d == cyc_add$63)) begin
-            add_r$63$d = 1'b1;
-        end
-        if ((view$63 == 1) & (t$1$d == cyc$63)) begin
-            act_r$63$d = 1'b1;
-        end
-        if ((view_add$63 == 1) & (t$1$d == cyc_add$63)) begin
-            add_r$63$d = 1'b1;
-        end
-        if ((view$63 == 2) & (t$2$d == cyc$63)) begin
-            act_r$63$d = 1'b1;
-        end
-        if ((view_add$63 == 2) & (t$2$d == cyc_add$63)) begin
-            add_r$63$d = 1'b1;
-        end
-        if ((view$63 == 3) & (t$3$d == cyc$63)) begin
-            act_r$63$d = 1'b1;
-        end
-        if ((view_add$63 == 3) & (t$3$d == cyc_add$63)) begin
-            add_r$63$d = 1'b1;
-        end
-        if ((view$63 == 4) & (t$4$d == cyc$63)) begin
-            act_r$63$d = 1'b1;
-        end
-        if ((view_add$63 == 4) & (t$4$d == cyc_add$63)) begin
-            add_r$63$d = 1'b1;
-        end
-        if ((view$63 == 5) & (t$5$d == cyc$63)) begin
-            act_r$63$d = 1'b1;
-        end
-        if ((view_add$63 == 5) & (t$5$d == cyc_add$63)) begin
-            add_r$63$d = 1'b1;
-        end
-        norm_r$d = t$0$d == normalise;
         at_norm = norm_r$q & run;
         iss_r$0$clock = clock;
-        iss_r$0$d = t$0$d == iss$0;
-        at_iss$0 = iss_r$0$q & run;
+        iss_r$0$d = iss_r$0$q;
         res_r$0$clock = clock;
-        res_r$0$d = 1'b0;
-        if ((view_res$0 == 0) & (t$0$d == res$0)) begin
-            res_r$0$d = 1'b1;
+        res_r$0$d = res_r$0$q;
+        if (run) begin
+            if (iss$0 == 32'h1) begin
+                iss_r$0$d = take;
+            end
+            else begin
+                iss_r$0$d = t$0$q == iss$0 - 32'h1;
+            end
+            res_r$0$d = 1'b0;
+            if (view_res$0 == 0) begin
+                if (res$0 == firsts$0) begin
+                    res_r$0$d = enter$0;
+                end
+                else begin
+                    res_r$0$d = t$0$q == res$0 - 32'h1;
+                end
+            end
+            if (view_res$0 == 1) begin
+                if (res$0 == firsts$1) begin
+                    res_r$0$d = enter$1;
+                end
+                else begin
+                    res_r$0$d = t$1$q == res$0 - 32'h1;
+                end
+            end
+            if (view_res$0 == 2) begin
+                if (res$0 == firsts$2) begin
+                    res_r$0$d = enter$2;
+                end
+                else begin
+                    res_r$0$d = t$2$q == res$0 - 32'h1;
+                end
+            end
+            if (view_res$0 == 3) begin
+                if (res$0 == firsts$3) begin
+                    res_r$0$d = enter$3;
+                end
+                else begin
+                    res_r$0$d = t$3$q == res$0 - 32'h1;
+                end
+            end
+            if (view_res$0 == 4) begin
+                if (res$0 == firsts$4) begin
+                    res_r$0$d = enter$4;
+                end
+                else begin
+                    res_r$0$d = t$4$q == res$0 - 32'h1;
+                end
+            end
+            if (view_res$0 == 5) begin
+                if (res$0 == firsts$5) begin
+                    res_r$0$d = enter$5;
+                end
+                else begin
+                    res_r$0$d = t$5$q == res$0 - 32'h1;
+                end
+            end
         end
-        if ((view_res$0 == 1) & (t$1$d == res$0)) begin
-            res_r$0$d = 1'b1;
-        end
-        if ((view_res$0 == 2) & (t$2$d == res$0)) begin
-            res_r$0$d = 1'b1;
-        end
-        if ((view_res$0 == 3) & (t$3$d == res$0)) begin
-            res_r$0$d = 1'b1;
-        end
-        if ((view_res$0 == 4) & (t$4$d == res$0)) begin
-            res_r$0$d = 1'b1;
-        end
-        if ((view_res$0 == 5) & (t$5$d == res$0)) begin
-            res_r$0$d = 1'b1;
-        end
+        at_iss$0 = iss_r$0$q & run;
         at_res$0 = res_r$0$q & run;
         iss_r$1$clock = clock;
-        iss_r$1$d = t$0$d == iss$1;
-        at_iss$1 = iss_r$1$q & run;
+        iss_r$1$d = iss_r$1$q;
         res_r$1$clock = clock;
-        res_r$1$d = 1'b0;
-        if ((view_res$1 == 0) & (t$0$d == res$1)) begin
-            res_r$1$d = 1'b1;
+        res_r$1$d = res_r$1$q;
+        if (run) begin
+            if (iss$1 == 32'h1) begin
+                iss_r$1$d = take;
+            end
+            else begin
+                iss_r$1$d = t$0$q == iss$1 - 32'h1;
+            end
+            res_r$1$d = 1'b0;
+            if (view_res$1 == 0) begin
+                if (res$1 == firsts$0) begin
+                    res_r$1$d = enter$0;
+                end
+                else begin
+                    res_r$1$d = t$0$q == res$1 - 32'h1;
+                end
+            end
+            if (view_res$1 == 1) begin
+                if (res$1 == firsts$1) begin
+                    res_r$1$d = enter$1;
+                end
+                else begin
+                    res_r$1$d = t$1$q == res$1 - 32'h1;
+                end
+            end
+            if (view_res$1 == 2) begin
+                if (res$1 == firsts$2) begin
+                    res_r$1$d = enter$2;
+                end
+                else begin
+                    res_r$1$d = t$2$q == res$1 - 32'h1;
+                end
+            end
+            if (view_res$1 == 3) begin
+                if (res$1 == firsts$3) begin
+                    res_r$1$d = enter$3;
+                end
+                else begin
+                    res_r$1$d = t$3$q == res$1 - 32'h1;
+                end
+            end
+            if (view_res$1 == 4) begin
+                if (res$1 == firsts$4) begin
+                    res_r$1$d = enter$4;
+                end
+                else begin
+                    res_r$1$d = t$4$q == res$1 - 32'h1;
+                end
+            end
+            if (view_res$1 == 5) begin
+                if (res$1 == firsts$5) begin
+                    res_r$1$d = enter$5;
+                end
+                else begin
+                    res_r$1$d = t$5$q == res$1 - 32'h1;
+                end
+            end
         end
-        if ((view_res$1 == 1) & (t$1$d == res$1)) begin
-            res_r$1$d = 1'b1;
-        end
-        if ((view_res$1 == 2) & (t$2$d == res$1)) begin
-            res_r$1$d = 1'b1;
-        end
-        if ((view_res$1 == 3) & (t$3$d == res$1)) begin
-            res_r$1$d = 1'b1;
-        end
-        if ((view_res$1 == 4) & (t$4$d == res$1)) begin
-            res_r$1$d = 1'b1;
-        end
-        if ((view_res$1 == 5) & (t$5$d == res$1)) begin
-            res_r$1$d = 1'b1;
-        end
+        at_iss$1 = iss_r$1$q & run;
         at_res$1 = res_r$1$q & run;
         iss_r$2$clock = clock;
-        iss_r$2$d = t$0$d == iss$2;
-        at_iss$2 = iss_r$2$q & run;
+        iss_r$2$d = iss_r$2$q;
         res_r$2$clock = clock;
-        res_r$2$d = 1'b0;
-        if ((view_res$2 == 0) & (t$0$d == res$2)) begin
-            res_r$2$d = 1'b1;
+        res_r$2$d = res_r$2$q;
+        if (run) begin
+            if (iss$2 == 32'h1) begin
+                iss_r$2$d = take;
+            end
+            else begin
+                iss_r$2$d = t$0$q == iss$2 - 32'h1;
+            end
+            res_r$2$d = 1'b0;
+            if (view_res$2 == 0) begin
+                if (res$2 == firsts$0) begin
+                    res_r$2$d = enter$0;
+                end
+                else begin
+                    res_r$2$d = t$0$q == res$2 - 32'h1;
+                end
+            end
+            if (view_res$2 == 1) begin
+                if (res$2 == firsts$1) begin
+                    res_r$2$d = enter$1;
+                end
+                else begin
+                    res_r$2$d = t$1$q == res$2 - 32'h1;
+                end
+            end
+            if (view_res$2 == 2) begin
+                if (res$2 == firsts$2) begin
+                    res_r$2$d = enter$2;
+                end
+                else begin
+                    res_r$2$d = t$2$q == res$2 - 32'h1;
+                end
+            end
+            if (view_res$2 == 3) begin
+                if (res$2 == firsts$3) begin
+                    res_r$2$d = enter$3;
+                end
+                else begin
+                    res_r$2$d = t$3$q == res$2 - 32'h1;
+                end
+            end
+            if (view_res$2 == 4) begin
+                if (res$2 == firsts$4) begin
+                    res_r$2$d = enter$4;
+                end
+                else begin
+                    res_r$2$d = t$4$q == res$2 - 32'h1;
+                end
+            end
+            if (view_res$2 == 5) begin
+                if (res$2 == firsts$5) begin
+                    res_r$2$d = enter$5;
+                end
+                else begin
+                    res_r$2$d = t$5$q == res$2 - 32'h1;
+                end
+            end
         end
-        if ((view_res$2 == 1) & (t$1$d == res$2)) begin
-            res_r$2$d = 1'b1;
-        end
-        if ((view_res$2 == 2) & (t$2$d == res$2)) begin
-            res_r$2$d = 1'b1;
-        end
-        if ((view_res$2 == 3) & (t$3$d == res$2)) begin
-            res_r$2$d = 1'b1;
-        end
-        if ((view_res$2 == 4) & (t$4$d == res$2)) begin
-            res_r$2$d = 1'b1;
-        end
-        if ((view_res$2 == 5) & (t$5$d == res$2)) begin
-            res_r$2$d = 1'b1;
-        end
+        at_iss$2 = iss_r$2$q & run;
         at_res$2 = res_r$2$q & run;
         iss_r$3$clock = clock;
-        iss_r$3$d = t$0$d == iss$3;
-        at_iss$3 = iss_r$3$q & run;
+        iss_r$3$d = iss_r$3$q;
         res_r$3$clock = clock;
-        res_r$3$d = 1'b0;
-        if ((view_res$3 == 0) & (t$0$d == res$3)) begin
-            res_r$3$d = 1'b1;
+        res_r$3$d = res_r$3$q;
+        if (run) begin
+            if (iss$3 == 32'h1) begin
+                iss_r$3$d = take;
+            end
+            else begin
+                iss_r$3$d = t$0$q == iss$3 - 32'h1;
+            end
+            res_r$3$d = 1'b0;
+            if (view_res$3 == 0) begin
+                if (res$3 == firsts$0) begin
+                    res_r$3$d = enter$0;
+                end
+                else begin
+                    res_r$3$d = t$0$q == res$3 - 32'h1;
+                end
+            end
+            if (view_res$3 == 1) begin
+                if (res$3 == firsts$1) begin
+                    res_r$3$d = enter$1;
+                end
+                else begin
+                    res_r$3$d = t$1$q == res$3 - 32'h1;
+                end
+            end
+            if (view_res$3 == 2) begin
+                if (res$3 == firsts$2) begin
+                    res_r$3$d = enter$2;
+                end
+                else begin
+                    res_r$3$d = t$2$q == res$3 - 32'h1;
+                end
+            end
+            if (view_res$3 == 3) begin
+                if (res$3 == firsts$3) begin
+                    res_r$3$d = enter$3;
+                end
+                else begin
+                    res_r$3$d = t$3$q == res$3 - 32'h1;
+                end
+            end
+            if (view_res$3 == 4) begin
+                if (res$3 == firsts$4) begin
+                    res_r$3$d = enter$4;
+                end
+                else begin
+                    res_r$3$d = t$4$q == res$3 - 32'h1;
+                end
+            end
+            if (view_res$3 == 5) begin
+                if (res$3 == firsts$5) begin
+                    res_r$3$d = enter$5;
+                end
+                else begin
+                    res_r$3$d = t$5$q == res$3 - 32'h1;
+                end
+            end
         end
-        if ((view_res$3 == 1) & (t$1$d == res$3)) begin
-            res_r$3$d = 1'b1;
-        end
-        if ((view_res$3 == 2) & (t$2$d == res$3)) begin
-            res_r$3$d = 1'b1;
-        end
-        if ((view_res$3 == 3) & (t$3$d == res$3)) begin
-            res_r$3$d = 1'b1;
-        end
-        if ((view_res$3 == 4) & (t$4$d == res$3)) begin
-            res_r$3$d = 1'b1;
-        end
-        if ((view_res$3 == 5) & (t$5$d == res$3)) begin
-            res_r$3$d = 1'b1;
-        end
+        at_iss$3 = iss_r$3$q & run;
         at_res$3 = res_r$3$q & run;
         iss_r$4$clock = clock;
-        iss_r$4$d = t$0$d == iss$4;
-        at_iss$4 = iss_r$4$q & run;
+        iss_r$4$d = iss_r$4$q;
         res_r$4$clock = clock;
-        res_r$4$d = 1'b0;
-        if ((view_res$4 == 0) & (t$0$d == res$4)) begin
-            res_r$4$d = 1'b1;
+        res_r$4$d = res_r$4$q;
+        if (run) begin
+            if (iss$4 == 32'h1) begin
+                iss_r$4$d = take;
+            end
+            else begin
+                iss_r$4$d = t$0$q == iss$4 - 32'h1;
+            end
+            res_r$4$d = 1'b0;
+            if (view_res$4 == 0) begin
+                if (res$4 == firsts$0) begin
+                    res_r$4$d = enter$0;
+                end
+                else begin
+                    res_r$4$d = t$0$q == res$4 - 32'h1;
+                end
+            end
+            if (view_res$4 == 1) begin
+                if (res$4 == firsts$1) begin
+                    res_r$4$d = enter$1;
+                end
+                else begin
+                    res_r$4$d = t$1$q == res$4 - 32'h1;
+                end
+            end
+            if (view_res$4 == 2) begin
+                if (res$4 == firsts$2) begin
+                    res_r$4$d = enter$2;
+                end
+                else begin
+                    res_r$4$d = t$2$q == res$4 - 32'h1;
+                end
+            end
+            if (view_res$4 == 3) begin
+                if (res$4 == firsts$3) begin
+                    res_r$4$d = enter$3;
+                end
+                else begin
+                    res_r$4$d = t$3$q == res$4 - 32'h1;
+                end
+            end
+            if (view_res$4 == 4) begin
+                if (res$4 == firsts$4) begin
+                    res_r$4$d = enter$4;
+                end
+                else begin
+                    res_r$4$d = t$4$q == res$4 - 32'h1;
+                end
+            end
+            if (view_res$4 == 5) begin
+                if (res$4 == firsts$5) begin
+                    res_r$4$d = enter$5;
+                end
+                else begin
+                    res_r$4$d = t$5$q == res$4 - 32'h1;
+                end
+            end
         end
-        if ((view_res$4 == 1) & (t$1$d == res$4)) begin
-            res_r$4$d = 1'b1;
-        end
-        if ((view_res$4 == 2) & (t$2$d == res$4)) begin
-            res_r$4$d = 1'b1;
-        end
-        if ((view_res$4 == 3) & (t$3$d == res$4)) begin
-            res_r$4$d = 1'b1;
-        end
-        if ((view_res$4 == 4) & (t$4$d == res$4)) begin
-            res_r$4$d = 1'b1;
-        end
-        if ((view_res$4 == 5) & (t$5$d == res$4)) begin
-            res_r$4$d = 1'b1;
-        end
+        at_iss$4 = iss_r$4$q & run;
         at_res$4 = res_r$4$q & run;
         iss_r$5$clock = clock;
-        iss_r$5$d = t$0$d == iss$5;
-        at_iss$5 = iss_r$5$q & run;
+        iss_r$5$d = iss_r$5$q;
         res_r$5$clock = clock;
-        res_r$5$d = 1'b0;
-        if ((view_res$5 == 0) & (t$0$d == res$5)) begin
-            res_r$5$d = 1'b1;
+        res_r$5$d = res_r$5$q;
+        if (run) begin
+            if (iss$5 == 32'h1) begin
+                iss_r$5$d = take;
+            end
+            else begin
+                iss_r$5$d = t$0$q == iss$5 - 32'h1;
+            end
+            res_r$5$d = 1'b0;
+            if (view_res$5 == 0) begin
+                if (res$5 == firsts$0) begin
+                    res_r$5$d = enter$0;
+                end
+                else begin
+                    res_r$5$d = t$0$q == res$5 - 32'h1;
+                end
+            end
+            if (view_res$5 == 1) begin
+                if (res$5 == firsts$1) begin
+                    res_r$5$d = enter$1;
+                end
+                else begin
+                    res_r$5$d = t$1$q == res$5 - 32'h1;
+                end
+            end
+            if (view_res$5 == 2) begin
+                if (res$5 == firsts$2) begin
+                    res_r$5$d = enter$2;
+                end
+                else begin
+                    res_r$5$d = t$2$q == res$5 - 32'h1;
+                end
+            end
+            if (view_res$5 == 3) begin
+                if (res$5 == firsts$3) begin
+                    res_r$5$d = enter$3;
+                end
+                else begin
+                    res_r$5$d = t$3$q == res$5 - 32'h1;
+                end
+            end
+            if (view_res$5 == 4) begin
+                if (res$5 == firsts$4) begin
+                    res_r$5$d = enter$4;
+                end
+                else begin
+                    res_r$5$d = t$4$q == res$5 - 32'h1;
+                end
+            end
+            if (view_res$5 == 5) begin
+                if (res$5 == firsts$5) begin
+                    res_r$5$d = enter$5;
+                end
+                else begin
+                    res_r$5$d = t$5$q == res$5 - 32'h1;
+                end
+            end
         end
-        if ((view_res$5 == 1) & (t$1$d == res$5)) begin
-            res_r$5$d = 1'b1;
-        end
-        if ((view_res$5 == 2) & (t$2$d == res$5)) begin
-            res_r$5$d = 1'b1;
-        end
-        if ((view_res$5 == 3) & (t$3$d == res$5)) begin
-            res_r$5$d = 1'b1;
-        end
-        if ((view_res$5 == 4) & (t$4$d == res$5)) begin
-            res_r$5$d = 1'b1;
-        end
-        if ((view_res$5 == 5) & (t$5$d == res$5)) begin
-            res_r$5$d = 1'b1;
-        end
+        at_iss$5 = iss_r$5$q & run;
         at_res$5 = res_r$5$q & run;
         iss_r$6$clock = clock;
-        iss_r$6$d = t$0$d == iss$6;
-        at_iss$6 = iss_r$6$q & run;
+        iss_r$6$d = iss_r$6$q;
         res_r$6$clock = clock;
-        res_r$6$d = 1'b0;
-        if ((view_res$6 == 0) & (t$0$d == res$6)) begin
-            res_r$6$d = 1'b1;
+        res_r$6$d = res_r$6$q;
+        if (run) begin
+            if (iss$6 == 32'h1) begin
+                iss_r$6$d = take;
+            end
+            else begin
+                iss_r$6$d = t$0$q == iss$6 - 32'h1;
+            end
+            res_r$6$d = 1'b0;
+            if (view_res$6 == 0) begin
+                if (res$6 == firsts$0) begin
+                    res_r$6$d = enter$0;
+                end
+                else begin
+                    res_r$6$d = t$0$q == res$6 - 32'h1;
+                end
+            end
+            if (view_res$6 == 1) begin
+                if (res$6 == firsts$1) begin
+                    res_r$6$d = enter$1;
+                end
+                else begin
+                    res_r$6$d = t$1$q == res$6 - 32'h1;
+                end
+            end
+            if (view_res$6 == 2) begin
+                if (res$6 == firsts$2) begin
+                    res_r$6$d = enter$2;
+                end
+                else begin
+                    res_r$6$d = t$2$q == res$6 - 32'h1;
+                end
+            end
+            if (view_res$6 == 3) begin
+                if (res$6 == firsts$3) begin
+                    res_r$6$d = enter$3;
+                end
+                else begin
+                    res_r$6$d = t$3$q == res$6 - 32'h1;
+                end
+            end
+            if (view_res$6 == 4) begin
+                if (res$6 == firsts$4) begin
+                    res_r$6$d = enter$4;
+                end
+                else begin
+                    res_r$6$d = t$4$q == res$6 - 32'h1;
+                end
+            end
+            if (view_res$6 == 5) begin
+                if (res$6 == firsts$5) begin
+                    res_r$6$d = enter$5;
+                end
+                else begin
+                    res_r$6$d = t$5$q == res$6 - 32'h1;
+                end
+            end
         end
-        if ((view_res$6 == 1) & (t$1$d == res$6)) begin
-            res_r$6$d = 1'b1;
-        end
-        if ((view_res$6 == 2) & (t$2$d == res$6)) begin
-            res_r$6$d = 1'b1;
-        end
-        if ((view_res$6 == 3) & (t$3$d == res$6)) begin
-            res_r$6$d = 1'b1;
-        end
-        if ((view_res$6 == 4) & (t$4$d == res$6)) begin
-            res_r$6$d = 1'b1;
-        end
-        if ((view_res$6 == 5) & (t$5$d == res$6)) begin
-            res_r$6$d = 1'b1;
-        end
+        at_iss$6 = iss_r$6$q & run;
         at_res$6 = res_r$6$q & run;
-        handover_r$d = 1'b0;
-        if ((view_handover == 0) & (t$0$d == handover)) begin
-            handover_r$d = 1'b1;
-        end
-        if ((view_handover == 1) & (t$1$d == handover)) begin
-            handover_r$d = 1'b1;
-        end
-        if ((view_handover == 2) & (t$2$d == handover)) begin
-            handover_r$d = 1'b1;
-        end
-        if ((view_handover == 3) & (t$3$d == handover)) begin
-            handover_r$d = 1'b1;
-        end
-        if ((view_handover == 4) & (t$4$d == handover)) begin
-            handover_r$d = 1'b1;
-        end
-        if ((view_handover == 5) & (t$5$d == handover)) begin
-            handover_r$d = 1'b1;
-        end
         at_handover = handover_r$q & run;
-        valid_r$d = t$5$d == last;
-        busy_r$d = 1'b0;
-        if (t$0$d != 32'h0) begin
-            busy_r$d = 1'b1;
+        busy_n = busy_r$q;
+        off_grid_n = off_grid_r$q;
+        if (run) begin
+            if (normalise == 32'h1) begin
+                norm_r$d = take;
+            end
+            else begin
+                norm_r$d = t$0$q == normalise - 32'h1;
+            end
+            handover_r$d = 1'b0;
+            if (view_handover == 0) begin
+                if (handover == firsts$0) begin
+                    handover_r$d = enter$0;
+                end
+                else begin
+                    handover_r$d = t$0$q == handover - 32'h1;
+                end
+            end
+            if (view_handover == 1) begin
+                if (handover == firsts$1) begin
+                    handover_r$d = enter$1;
+                end
+                else begin
+                    handover_r$d = t$1$q == handover - 32'h1;
+                end
+            end
+            if (view_handover == 2) begin
+                if (handover == firsts$2) begin
+                    handover_r$d = enter$2;
+                end
+                else begin
+                    handover_r$d = t$2$q == handover - 32'h1;
+                end
+            end
+            if (view_handover == 3) begin
+                if (handover == firsts$3) begin
+                    handover_r$d = enter$3;
+                end
+                else begin
+                    handover_r$d = t$3$q == handover - 32'h1;
+                end
+            end
+            if (view_handover == 4) begin
+                if (handover == firsts$4) begin
+                    handover_r$d = enter$4;
+                end
+                else begin
+                    handover_r$d = t$4$q == handover - 32'h1;
+                end
+            end
+            if (view_handover == 5) begin
+                if (handover == firsts$5) begin
+                    handover_r$d = enter$5;
+                end
+                else begin
+                    handover_r$d = t$5$q == handover - 32'h1;
+                end
+            end
+            if (last == firsts$5) begin
+                valid_r$d = enter$5;
+            end
+            else begin
+                valid_r$d = t$5$q == last - 32'h1;
+            end
+            busy_n = 1'b0;
+            if (enter$0 | ((t$0$q != 32'h0) & (t$0$q != ends$0))) begin
+                busy_n = 1'b1;
+            end
+            if (enter$1 | ((t$1$q != 32'h0) & (t$1$q != ends$1))) begin
+                busy_n = 1'b1;
+            end
+            if (enter$2 | ((t$2$q != 32'h0) & (t$2$q != ends$2))) begin
+                busy_n = 1'b1;
+            end
+            if (enter$3 | ((t$3$q != 32'h0) & (t$3$q != ends$3))) begin
+                busy_n = 1'b1;
+            end
+            if (enter$4 | ((t$4$q != 32'h0) & (t$4$q != ends$4))) begin
+                busy_n = 1'b1;
+            end
+            if (enter$5 | ((t$5$q != 32'h0) & (t$5$q != ends$5))) begin
+                busy_n = 1'b1;
+            end
+            off_grid_n = take | (phase$q != ii_m1);
         end
-        if (t$1$d != 32'h0) begin
-            busy_r$d = 1'b1;
-        end
-        if (t$2$d != 32'h0) begin
-            busy_r$d = 1'b1;
-        end
-        if (t$3$d != 32'h0) begin
-            busy_r$d = 1'b1;
-        end
-        if (t$4$d != 32'h0) begin
-            busy_r$d = 1'b1;
-        end
-        if (t$5$d != 32'h0) begin
-            busy_r$d = 1'b1;
-        end
-        off_grid_r$d = phase$d != 32'h0;
-        gate_r$d = busy_r$d & off_grid_r$d;
+        busy_r$d = busy_n;
+        off_grid_r$d = off_grid_n;
+        gate_r$d = busy_n & off_grid_n;
         idle = ~busy_r$q;
         geometry$vx$0 = inp$v0_x;
         geometry$vy$0 = inp$v0_y;
@@ -37083,6 +41518,9 @@ module raster_top$fragments$cull_sort(clock,width,height,cull_back,inp$valid,inp
     reg  move1;
     reg  move2;
     reg  leave;
+    reg  out_free;
+    reg  s2_free;
+    reg  s1_free;
     
     // Sub module instances
     raster_top$fragments$cull_sort$wx$0 wx$0(
@@ -37713,11 +42151,14 @@ module raster_top$fragments$cull_sort(clock,width,height,cull_back,inp$valid,inp
         vc$7 = inp$v2_c1;
         vc$8 = inp$v2_c2;
         viw$2 = inp$v2_iw;
+        out_free = ~full$q | (code_r$q != passed);
+        s2_free = ~full2$q | out_free;
+        s1_free = ~full1$q | s2_free;
         leave = full$q & ((code_r$q != passed) | out$ready);
-        move2 = full2$q & (~full$q | leave);
-        move1 = full1$q & (~full2$q | move2);
-        inp$ready = ~full1$q | move1;
-        take = inp$valid & (~full1$q | move1);
+        move2 = full2$q & (out_free | out$ready);
+        move1 = full1$q & (s2_free | out$ready);
+        inp$ready = s1_free | out$ready;
+        take = inp$valid & (s1_free | out$ready);
         if (leave) begin
             full$d = 1'b0;
         end

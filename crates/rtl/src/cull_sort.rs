@@ -169,6 +169,11 @@ pub struct CullSort {
     move1: Signal<Local, Bit>,
     move2: Signal<Local, Bit>,
     leave: Signal<Local, Bit>,
+    /// The output register, stage 2, stage 1: empty or freed whatever setup's ready (a
+    /// rejected triangle leaving, or the stages after it empty or freed).
+    out_free: Signal<Local, Bit>,
+    s2_free: Signal<Local, Bit>,
+    s1_free: Signal<Local, Bit>,
     /// Stage 3, the output register: the sorted vertices, crosses, the verdict, and
     /// whether it holds a triangle.
     sx: [DFF<Bits<XY>>; 3],
@@ -284,12 +289,18 @@ impl Logic for CullSort {
 
         // The handshakes, from the output register back: a rejected triangle leaves at
         // once, a passing one when taken; each stage moves on when the next is empty or
-        // moving on itself.
+        // moving on itself. Written as what frees each stage whatever setup's ready (from
+        // the registers) or setup's ready, so that the ready, which comes from setup and
+        // the edge walk, is one gate from every enable (raster_top's critical path at
+        // stop 57 ran through the three stages' handshakes in series).
+        self.out_free.next = !self.full.q.val() | (self.code_r.q.val() != self.passed.val());
+        self.s2_free.next = !self.full2.q.val() | self.out_free.val();
+        self.s1_free.next = !self.full1.q.val() | self.s2_free.val();
         self.leave.next = self.full.q.val() & ((self.code_r.q.val() != self.passed.val()) | self.out.ready.val());
-        self.move2.next = self.full2.q.val() & (!self.full.q.val() | self.leave.val());
-        self.move1.next = self.full1.q.val() & (!self.full2.q.val() | self.move2.val());
-        self.inp.ready.next = !self.full1.q.val() | self.move1.val();
-        self.take.next = self.inp.valid.val() & (!self.full1.q.val() | self.move1.val());
+        self.move2.next = self.full2.q.val() & (self.out_free.val() | self.out.ready.val());
+        self.move1.next = self.full1.q.val() & (self.s2_free.val() | self.out.ready.val());
+        self.inp.ready.next = self.s1_free.val() | self.out.ready.val();
+        self.take.next = self.inp.valid.val() & (self.s1_free.val() | self.out.ready.val());
         if self.leave.val() {
             self.full.d.next = false;
         }
