@@ -14,24 +14,23 @@ use fx::Formats;
 use rtl::config::Widths;
 
 /// ECP5 Fmax in MHz of each unit at the default design (class 10, K = 7, L = 25), as
-/// placed and routed by the soak (README, "Units"). Setup's is `raster_top`'s, a lower
-/// bound: `raster_top`'s critical path ran through setup until stop 56 (from its result's
-/// valid through the take decision into copy 0's next vertices and the geometry's scanline
-/// centres; 65.0 MHz, with the multipliers split at their DSP blocks), and since setup's
-/// geometry moves with the triangle it is the span FIFO's read into span (14.6 ns, 12.6 of
-/// it routing between units placed far apart); the divider's stage is one restoring step.
+/// placed and routed by the soak (README, "Units"). Setup's is its own, routed alone at
+/// stop 57 before its decoders read the counters' registers (its critical path copy 4's
+/// counter through copy 5's next count into the result-valid decode, 13.6 ns, 11.8 of it
+/// routing); the divider's stage is one restoring step.
 pub const MEASURED_MHZ: [(&str, f64); 6] = [
     ("cull_sort", 115.9),
-    ("triangle_setup", 68.5),
+    ("triangle_setup", 73.8),
     ("divider", 105.1),
     ("edge_walk", 118.9),
     ("span", 113.5),
     ("pixel_out", 142.2),
 ];
-/// `raster_top`'s ECP5 Fmax at the default design, MHz (LFE5U-45F, router1, stop 56: 38.3
+/// `raster_top`'s ECP5 Fmax at the default design, MHz (LFE5U-45F, router1, stop 57: 38.3
 /// before stop 54's geometry registers, 55.7 before the multipliers were split, 65.0 before
-/// setup's geometry moved with the triangle).
-pub const PIPELINE_MHZ: f64 = 68.5;
+/// setup's geometry moved with the triangle, 68.5 before the span FIFO's head register and
+/// setup's decoders from the counters' registers).
+pub const PIPELINE_MHZ: f64 = 70.1;
 
 /// `gpu_top`'s ECP5 Fmax at the default design, MHz, placed and routed whole (LFE5U-85F,
 /// nextpnr's router1; README, "Units"): its critical path is the command parser's (the
