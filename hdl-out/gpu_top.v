@@ -10858,6 +10858,24 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
     reg  [7:0] t$5$d;
     wire  [7:0] t$5$q;
     reg  t$5$clock;
+    reg  end_r$0$d;
+    wire  end_r$0$q;
+    reg  end_r$0$clock;
+    reg  end_r$1$d;
+    wire  end_r$1$q;
+    reg  end_r$1$clock;
+    reg  end_r$2$d;
+    wire  end_r$2$q;
+    reg  end_r$2$clock;
+    reg  end_r$3$d;
+    wire  end_r$3$q;
+    reg  end_r$3$clock;
+    reg  end_r$4$d;
+    wire  end_r$4$q;
+    reg  end_r$4$clock;
+    reg  end_r$5$d;
+    wire  end_r$5$q;
+    reg  end_r$5$clock;
     reg  act_r$0$d;
     wire  act_r$0$q;
     reg  act_r$0$clock;
@@ -12556,6 +12574,36 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
         .d(t$5$d),
         .q(t$5$q),
         .clock(t$5$clock)
+    );
+    gpu_top$core$triangle_setup$end_r$0 end_r$0(
+        .d(end_r$0$d),
+        .q(end_r$0$q),
+        .clock(end_r$0$clock)
+    );
+    gpu_top$core$triangle_setup$end_r$1 end_r$1(
+        .d(end_r$1$d),
+        .q(end_r$1$q),
+        .clock(end_r$1$clock)
+    );
+    gpu_top$core$triangle_setup$end_r$2 end_r$2(
+        .d(end_r$2$d),
+        .q(end_r$2$q),
+        .clock(end_r$2$clock)
+    );
+    gpu_top$core$triangle_setup$end_r$3 end_r$3(
+        .d(end_r$3$d),
+        .q(end_r$3$q),
+        .clock(end_r$3$clock)
+    );
+    gpu_top$core$triangle_setup$end_r$4 end_r$4(
+        .d(end_r$4$d),
+        .q(end_r$4$q),
+        .clock(end_r$4$clock)
+    );
+    gpu_top$core$triangle_setup$end_r$5 end_r$5(
+        .d(end_r$5$d),
+        .q(end_r$5$q),
+        .clock(end_r$5$clock)
     );
     gpu_top$core$triangle_setup$act_r$0 act_r$0(
         .d(act_r$0$d),
@@ -14933,40 +14981,40 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
             if (t$0$q != 32'h0) begin
                 t$0$d = t$0$q + 32'h1;
             end
-            if (t$0$q == ends$0) begin
+            if (end_r$0$q) begin
                 t$0$d = 32'h0;
             end
             if (t$1$q != 32'h0) begin
                 t$1$d = t$1$q + 32'h1;
             end
-            if (t$1$q == ends$1) begin
+            if (end_r$1$q) begin
                 t$1$d = 32'h0;
             end
             if (t$2$q != 32'h0) begin
                 t$2$d = t$2$q + 32'h1;
             end
-            if (t$2$q == ends$2) begin
+            if (end_r$2$q) begin
                 t$2$d = 32'h0;
             end
             if (t$3$q != 32'h0) begin
                 t$3$d = t$3$q + 32'h1;
             end
-            if (t$3$q == ends$3) begin
+            if (end_r$3$q) begin
                 t$3$d = 32'h0;
             end
             if (t$4$q != 32'h0) begin
                 t$4$d = t$4$q + 32'h1;
             end
-            if (t$4$q == ends$4) begin
+            if (end_r$4$q) begin
                 t$4$d = 32'h0;
             end
             if (t$5$q != 32'h0) begin
                 t$5$d = t$5$q + 32'h1;
             end
-            if (t$5$q == ends$5) begin
+            if (end_r$5$q) begin
                 t$5$d = 32'h0;
             end
-            if (t$0$q == ends$0) begin
+            if (end_r$0$q) begin
                 t$1$d = ends$0 + 32'h1;
                 geo$1$d = geo$0$q;
                 sign$1$d = maj_left$0;
@@ -14985,7 +15033,7 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
                 q$5$d = q$2$q;
                 rho$5$d = rho$2$q;
             end
-            if (t$1$q == ends$1) begin
+            if (end_r$1$q) begin
                 t$2$d = ends$1 + 32'h1;
                 geo$2$d = geo$1$q;
                 sign$2$d = maj_left$1;
@@ -15004,7 +15052,7 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
                 q$8$d = q$5$q;
                 rho$8$d = rho$5$q;
             end
-            if (t$2$q == ends$2) begin
+            if (end_r$2$q) begin
                 t$3$d = ends$2 + 32'h1;
                 geo$3$d = geo$2$q;
                 sign$3$d = maj_left$2;
@@ -15023,7 +15071,7 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
                 q$11$d = q$8$q;
                 rho$11$d = rho$8$q;
             end
-            if (t$3$q == ends$3) begin
+            if (end_r$3$q) begin
                 t$4$d = ends$3 + 32'h1;
                 geo$4$d = geo$3$q;
                 sign$4$d = maj_left$3;
@@ -15042,7 +15090,7 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
                 q$14$d = q$11$q;
                 rho$14$d = rho$11$q;
             end
-            if (t$4$q == ends$4) begin
+            if (end_r$4$q) begin
                 t$5$d = ends$4 + 32'h1;
                 geo$5$d = geo$4$q;
                 sign$5$d = maj_left$4;
@@ -15067,11 +15115,61 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
             geo$0$d = geometry$word;
         end
         enter$0 = take;
-        enter$1 = t$0$q == ends$0;
-        enter$2 = t$1$q == ends$1;
-        enter$3 = t$2$q == ends$2;
-        enter$4 = t$3$q == ends$3;
-        enter$5 = t$4$q == ends$4;
+        enter$1 = end_r$0$q;
+        enter$2 = end_r$1$q;
+        enter$3 = end_r$2$q;
+        enter$4 = end_r$3$q;
+        enter$5 = end_r$4$q;
+        end_r$0$clock = clock;
+        end_r$0$d = end_r$0$q;
+        end_r$1$clock = clock;
+        end_r$1$d = end_r$1$q;
+        end_r$2$clock = clock;
+        end_r$2$d = end_r$2$q;
+        end_r$3$clock = clock;
+        end_r$3$d = end_r$3$q;
+        end_r$4$clock = clock;
+        end_r$4$d = end_r$4$q;
+        end_r$5$clock = clock;
+        end_r$5$d = end_r$5$q;
+        if (run) begin
+            if (ends$0 == firsts$0) begin
+                end_r$0$d = enter$0;
+            end
+            else begin
+                end_r$0$d = t$0$q == ends$0 - 32'h1;
+            end
+            if (ends$1 == firsts$1) begin
+                end_r$1$d = enter$1;
+            end
+            else begin
+                end_r$1$d = t$1$q == ends$1 - 32'h1;
+            end
+            if (ends$2 == firsts$2) begin
+                end_r$2$d = enter$2;
+            end
+            else begin
+                end_r$2$d = t$2$q == ends$2 - 32'h1;
+            end
+            if (ends$3 == firsts$3) begin
+                end_r$3$d = enter$3;
+            end
+            else begin
+                end_r$3$d = t$3$q == ends$3 - 32'h1;
+            end
+            if (ends$4 == firsts$4) begin
+                end_r$4$d = enter$4;
+            end
+            else begin
+                end_r$4$d = t$4$q == ends$4 - 32'h1;
+            end
+            if (ends$5 == firsts$5) begin
+                end_r$5$d = enter$5;
+            end
+            else begin
+                end_r$5$d = t$5$q == ends$5 - 32'h1;
+            end
+        end
         act_r$0$clock = clock;
         act_r$0$d = act_r$0$q;
         add_r$0$clock = clock;
@@ -22236,22 +22334,22 @@ module gpu_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,i
                 valid_r$d = t$5$q == last - 32'h1;
             end
             busy_n = 1'b0;
-            if (enter$0 | ((t$0$q != 32'h0) & (t$0$q != ends$0))) begin
+            if (enter$0 | ((t$0$q != 32'h0) & ~end_r$0$q)) begin
                 busy_n = 1'b1;
             end
-            if (enter$1 | ((t$1$q != 32'h0) & (t$1$q != ends$1))) begin
+            if (enter$1 | ((t$1$q != 32'h0) & ~end_r$1$q)) begin
                 busy_n = 1'b1;
             end
-            if (enter$2 | ((t$2$q != 32'h0) & (t$2$q != ends$2))) begin
+            if (enter$2 | ((t$2$q != 32'h0) & ~end_r$2$q)) begin
                 busy_n = 1'b1;
             end
-            if (enter$3 | ((t$3$q != 32'h0) & (t$3$q != ends$3))) begin
+            if (enter$3 | ((t$3$q != 32'h0) & ~end_r$3$q)) begin
                 busy_n = 1'b1;
             end
-            if (enter$4 | ((t$4$q != 32'h0) & (t$4$q != ends$4))) begin
+            if (enter$4 | ((t$4$q != 32'h0) & ~end_r$4$q)) begin
                 busy_n = 1'b1;
             end
-            if (enter$5 | ((t$5$q != 32'h0) & (t$5$q != ends$5))) begin
+            if (enter$5 | ((t$5$q != 32'h0) & ~end_r$5$q)) begin
                 busy_n = 1'b1;
             end
             off_grid_n = take | (phase$q != ii_m1);
@@ -36540,6 +36638,120 @@ module gpu_top$core$triangle_setup$div_v(d,q,clock);
     end
           
 endmodule // gpu_top$core$triangle_setup$div_v
+
+
+module gpu_top$core$triangle_setup$end_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$triangle_setup$end_r$0
+
+
+module gpu_top$core$triangle_setup$end_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$triangle_setup$end_r$1
+
+
+module gpu_top$core$triangle_setup$end_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$triangle_setup$end_r$2
+
+
+module gpu_top$core$triangle_setup$end_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$triangle_setup$end_r$3
+
+
+module gpu_top$core$triangle_setup$end_r$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$triangle_setup$end_r$4
+
+
+module gpu_top$core$triangle_setup$end_r$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$triangle_setup$end_r$5
 
 
 module gpu_top$core$triangle_setup$exp$0(d,q,clock);
