@@ -307,163 +307,162 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     localparam  view_res_w$5 = 8'h3;
     localparam  view_res_w$6 = 8'h2;
     localparam  view_handover = 8'h5;
-    localparam  firsts$0 = 8'h1;
-    localparam  firsts$1 = 8'hb;
-    localparam  firsts$2 = 8'h15;
-    localparam  firsts$3 = 8'h1f;
-    localparam  firsts$4 = 8'h29;
-    localparam  firsts$5 = 8'h33;
-    localparam  ends$0 = 8'ha;
-    localparam  ends$1 = 8'h14;
-    localparam  ends$2 = 8'h1e;
-    localparam  ends$3 = 8'h28;
-    localparam  ends$4 = 8'h32;
-    localparam  ends$5 = 8'h34;
-    localparam  normalise = 8'h5;
-    localparam  cyc$0 = 8'h1;
-    localparam  cyc$1 = 8'h1;
-    localparam  cyc$2 = 8'h1;
-    localparam  cyc$3 = 8'h1;
-    localparam  cyc$4 = 8'h1;
-    localparam  cyc$5 = 8'h1;
-    localparam  cyc$6 = 8'h1;
-    localparam  cyc$7 = 8'h2;
-    localparam  cyc$8 = 8'h21;
-    localparam  cyc$9 = 8'h21;
-    localparam  cyc$10 = 8'h21;
-    localparam  cyc$11 = 8'h21;
-    localparam  cyc$12 = 8'h26;
-    localparam  cyc$13 = 8'h26;
-    localparam  cyc$14 = 8'h26;
-    localparam  cyc$15 = 8'h26;
-    localparam  cyc$16 = 8'h26;
-    localparam  cyc$17 = 8'h26;
-    localparam  cyc$18 = 8'h26;
-    localparam  cyc$19 = 8'h27;
-    localparam  cyc$20 = 8'h27;
-    localparam  cyc$21 = 8'h27;
-    localparam  cyc$22 = 8'h27;
-    localparam  cyc$23 = 8'h27;
-    localparam  cyc$24 = 8'h27;
-    localparam  cyc$25 = 8'h27;
-    localparam  cyc$26 = 8'h28;
-    localparam  cyc$27 = 8'h28;
-    localparam  cyc$28 = 8'h2a;
-    localparam  cyc$29 = 8'h2a;
-    localparam  cyc$30 = 8'h2a;
-    localparam  cyc$31 = 8'h2c;
-    localparam  cyc$32 = 8'h2c;
-    localparam  cyc$33 = 8'h2c;
-    localparam  cyc$34 = 8'h2c;
-    localparam  cyc$35 = 8'h2c;
-    localparam  cyc$36 = 8'h2c;
-    localparam  cyc$37 = 8'h2e;
-    localparam  cyc$38 = 8'h2e;
-    localparam  cyc$39 = 8'h2e;
-    localparam  cyc$40 = 8'h2a;
-    localparam  cyc$41 = 8'h2a;
-    localparam  cyc$42 = 8'h2a;
-    localparam  cyc$43 = 8'h2c;
-    localparam  cyc$44 = 8'h2d;
-    localparam  cyc$45 = 8'h2d;
-    localparam  cyc$46 = 8'h2d;
-    localparam  cyc$47 = 8'h2d;
-    localparam  cyc$48 = 8'h2d;
-    localparam  cyc$49 = 8'h2f;
-    localparam  cyc$50 = 8'h2f;
-    localparam  cyc$51 = 8'h2f;
-    localparam  cyc$52 = 8'h2b;
-    localparam  cyc$53 = 8'h2b;
-    localparam  cyc$54 = 8'h2b;
-    localparam  cyc$55 = 8'h2d;
-    localparam  cyc$56 = 8'h2d;
-    localparam  cyc$57 = 8'h2e;
-    localparam  cyc$58 = 8'h2e;
-    localparam  cyc$59 = 8'h2e;
-    localparam  cyc$60 = 8'h2e;
-    localparam  cyc$61 = 8'h2f;
-    localparam  cyc$62 = 8'h2f;
-    localparam  cyc$63 = 8'h2f;
-    localparam  cyc_add$0 = 8'h4;
-    localparam  cyc_add$1 = 8'h4;
-    localparam  cyc_add$2 = 8'h4;
-    localparam  cyc_add$3 = 8'h4;
-    localparam  cyc_add$4 = 8'h4;
-    localparam  cyc_add$5 = 8'h4;
-    localparam  cyc_add$6 = 8'h4;
-    localparam  cyc_add$7 = 8'h5;
-    localparam  cyc_add$8 = 8'h24;
-    localparam  cyc_add$9 = 8'h24;
-    localparam  cyc_add$10 = 8'h24;
-    localparam  cyc_add$11 = 8'h24;
-    localparam  cyc_add$12 = 8'h29;
-    localparam  cyc_add$13 = 8'h29;
-    localparam  cyc_add$14 = 8'h29;
-    localparam  cyc_add$15 = 8'h29;
-    localparam  cyc_add$16 = 8'h29;
-    localparam  cyc_add$17 = 8'h29;
-    localparam  cyc_add$18 = 8'h29;
-    localparam  cyc_add$19 = 8'h2a;
-    localparam  cyc_add$20 = 8'h2a;
-    localparam  cyc_add$21 = 8'h2a;
-    localparam  cyc_add$22 = 8'h2a;
-    localparam  cyc_add$23 = 8'h2a;
-    localparam  cyc_add$24 = 8'h2a;
-    localparam  cyc_add$25 = 8'h2a;
-    localparam  cyc_add$26 = 8'h2b;
-    localparam  cyc_add$27 = 8'h2b;
-    localparam  cyc_add$28 = 8'h2d;
-    localparam  cyc_add$29 = 8'h2d;
-    localparam  cyc_add$30 = 8'h2d;
-    localparam  cyc_add$31 = 8'h2f;
-    localparam  cyc_add$32 = 8'h2f;
-    localparam  cyc_add$33 = 8'h2f;
-    localparam  cyc_add$34 = 8'h2f;
-    localparam  cyc_add$35 = 8'h2f;
-    localparam  cyc_add$36 = 8'h2f;
-    localparam  cyc_add$37 = 8'h31;
-    localparam  cyc_add$38 = 8'h31;
-    localparam  cyc_add$39 = 8'h31;
-    localparam  cyc_add$40 = 8'h2d;
-    localparam  cyc_add$41 = 8'h2d;
-    localparam  cyc_add$42 = 8'h2d;
-    localparam  cyc_add$43 = 8'h2f;
-    localparam  cyc_add$44 = 8'h30;
-    localparam  cyc_add$45 = 8'h30;
-    localparam  cyc_add$46 = 8'h30;
-    localparam  cyc_add$47 = 8'h30;
-    localparam  cyc_add$48 = 8'h30;
-    localparam  cyc_add$49 = 8'h32;
-    localparam  cyc_add$50 = 8'h32;
-    localparam  cyc_add$51 = 8'h32;
-    localparam  cyc_add$52 = 8'h2e;
-    localparam  cyc_add$53 = 8'h2e;
-    localparam  cyc_add$54 = 8'h2e;
-    localparam  cyc_add$55 = 8'h30;
-    localparam  cyc_add$56 = 8'h30;
-    localparam  cyc_add$57 = 8'h31;
-    localparam  cyc_add$58 = 8'h31;
-    localparam  cyc_add$59 = 8'h31;
-    localparam  cyc_add$60 = 8'h31;
-    localparam  cyc_add$61 = 8'h32;
-    localparam  cyc_add$62 = 8'h32;
-    localparam  cyc_add$63 = 8'h32;
-    localparam  iss$0 = 8'h6;
-    localparam  iss$1 = 8'h5;
-    localparam  iss$2 = 8'h1;
-    localparam  iss$3 = 8'h7;
-    localparam  iss$4 = 8'h2;
-    localparam  iss$5 = 8'h8;
-    localparam  iss$6 = 8'h3;
-    localparam  res$0 = 8'h20;
-    localparam  res$1 = 8'h1f;
-    localparam  res$2 = 8'h1b;
-    localparam  res$3 = 8'h21;
-    localparam  res$4 = 8'h1c;
-    localparam  res$5 = 8'h22;
-    localparam  res$6 = 8'h1d;
-    localparam  handover = 8'h33;
-    localparam  last = 8'h34;
+    localparam  act_bit$0 = 8'h0;
+    localparam  act_bit$1 = 8'h0;
+    localparam  act_bit$2 = 8'h0;
+    localparam  act_bit$3 = 8'h0;
+    localparam  act_bit$4 = 8'h0;
+    localparam  act_bit$5 = 8'h0;
+    localparam  act_bit$6 = 8'h0;
+    localparam  act_bit$7 = 8'h1;
+    localparam  act_bit$8 = 8'h2;
+    localparam  act_bit$9 = 8'h2;
+    localparam  act_bit$10 = 8'h2;
+    localparam  act_bit$11 = 8'h2;
+    localparam  act_bit$12 = 8'h7;
+    localparam  act_bit$13 = 8'h7;
+    localparam  act_bit$14 = 8'h7;
+    localparam  act_bit$15 = 8'h7;
+    localparam  act_bit$16 = 8'h7;
+    localparam  act_bit$17 = 8'h7;
+    localparam  act_bit$18 = 8'h7;
+    localparam  act_bit$19 = 8'h8;
+    localparam  act_bit$20 = 8'h8;
+    localparam  act_bit$21 = 8'h8;
+    localparam  act_bit$22 = 8'h8;
+    localparam  act_bit$23 = 8'h8;
+    localparam  act_bit$24 = 8'h8;
+    localparam  act_bit$25 = 8'h8;
+    localparam  act_bit$26 = 8'h9;
+    localparam  act_bit$27 = 8'h9;
+    localparam  act_bit$28 = 8'h1;
+    localparam  act_bit$29 = 8'h1;
+    localparam  act_bit$30 = 8'h1;
+    localparam  act_bit$31 = 8'h3;
+    localparam  act_bit$32 = 8'h3;
+    localparam  act_bit$33 = 8'h3;
+    localparam  act_bit$34 = 8'h3;
+    localparam  act_bit$35 = 8'h3;
+    localparam  act_bit$36 = 8'h3;
+    localparam  act_bit$37 = 8'h5;
+    localparam  act_bit$38 = 8'h5;
+    localparam  act_bit$39 = 8'h5;
+    localparam  act_bit$40 = 8'h1;
+    localparam  act_bit$41 = 8'h1;
+    localparam  act_bit$42 = 8'h1;
+    localparam  act_bit$43 = 8'h3;
+    localparam  act_bit$44 = 8'h4;
+    localparam  act_bit$45 = 8'h4;
+    localparam  act_bit$46 = 8'h4;
+    localparam  act_bit$47 = 8'h4;
+    localparam  act_bit$48 = 8'h4;
+    localparam  act_bit$49 = 8'h6;
+    localparam  act_bit$50 = 8'h6;
+    localparam  act_bit$51 = 8'h6;
+    localparam  act_bit$52 = 8'h2;
+    localparam  act_bit$53 = 8'h2;
+    localparam  act_bit$54 = 8'h2;
+    localparam  act_bit$55 = 8'h4;
+    localparam  act_bit$56 = 8'h4;
+    localparam  act_bit$57 = 8'h5;
+    localparam  act_bit$58 = 8'h5;
+    localparam  act_bit$59 = 8'h5;
+    localparam  act_bit$60 = 8'h5;
+    localparam  act_bit$61 = 8'h6;
+    localparam  act_bit$62 = 8'h6;
+    localparam  act_bit$63 = 8'h6;
+    localparam  add_bit$0 = 8'h3;
+    localparam  add_bit$1 = 8'h3;
+    localparam  add_bit$2 = 8'h3;
+    localparam  add_bit$3 = 8'h3;
+    localparam  add_bit$4 = 8'h3;
+    localparam  add_bit$5 = 8'h3;
+    localparam  add_bit$6 = 8'h3;
+    localparam  add_bit$7 = 8'h4;
+    localparam  add_bit$8 = 8'h5;
+    localparam  add_bit$9 = 8'h5;
+    localparam  add_bit$10 = 8'h5;
+    localparam  add_bit$11 = 8'h5;
+    localparam  add_bit$12 = 8'h0;
+    localparam  add_bit$13 = 8'h0;
+    localparam  add_bit$14 = 8'h0;
+    localparam  add_bit$15 = 8'h0;
+    localparam  add_bit$16 = 8'h0;
+    localparam  add_bit$17 = 8'h0;
+    localparam  add_bit$18 = 8'h0;
+    localparam  add_bit$19 = 8'h1;
+    localparam  add_bit$20 = 8'h1;
+    localparam  add_bit$21 = 8'h1;
+    localparam  add_bit$22 = 8'h1;
+    localparam  add_bit$23 = 8'h1;
+    localparam  add_bit$24 = 8'h1;
+    localparam  add_bit$25 = 8'h1;
+    localparam  add_bit$26 = 8'h2;
+    localparam  add_bit$27 = 8'h2;
+    localparam  add_bit$28 = 8'h4;
+    localparam  add_bit$29 = 8'h4;
+    localparam  add_bit$30 = 8'h4;
+    localparam  add_bit$31 = 8'h6;
+    localparam  add_bit$32 = 8'h6;
+    localparam  add_bit$33 = 8'h6;
+    localparam  add_bit$34 = 8'h6;
+    localparam  add_bit$35 = 8'h6;
+    localparam  add_bit$36 = 8'h6;
+    localparam  add_bit$37 = 8'h8;
+    localparam  add_bit$38 = 8'h8;
+    localparam  add_bit$39 = 8'h8;
+    localparam  add_bit$40 = 8'h4;
+    localparam  add_bit$41 = 8'h4;
+    localparam  add_bit$42 = 8'h4;
+    localparam  add_bit$43 = 8'h6;
+    localparam  add_bit$44 = 8'h7;
+    localparam  add_bit$45 = 8'h7;
+    localparam  add_bit$46 = 8'h7;
+    localparam  add_bit$47 = 8'h7;
+    localparam  add_bit$48 = 8'h7;
+    localparam  add_bit$49 = 8'h9;
+    localparam  add_bit$50 = 8'h9;
+    localparam  add_bit$51 = 8'h9;
+    localparam  add_bit$52 = 8'h5;
+    localparam  add_bit$53 = 8'h5;
+    localparam  add_bit$54 = 8'h5;
+    localparam  add_bit$55 = 8'h7;
+    localparam  add_bit$56 = 8'h7;
+    localparam  add_bit$57 = 8'h8;
+    localparam  add_bit$58 = 8'h8;
+    localparam  add_bit$59 = 8'h8;
+    localparam  add_bit$60 = 8'h8;
+    localparam  add_bit$61 = 8'h9;
+    localparam  add_bit$62 = 8'h9;
+    localparam  add_bit$63 = 8'h9;
+    localparam  norm_bit = 8'h4;
+    localparam  iss_bit$0 = 8'h5;
+    localparam  iss_bit$1 = 8'h4;
+    localparam  iss_bit$2 = 8'h0;
+    localparam  iss_bit$3 = 8'h6;
+    localparam  iss_bit$4 = 8'h1;
+    localparam  iss_bit$5 = 8'h7;
+    localparam  iss_bit$6 = 8'h2;
+    localparam  res_bit$0 = 8'h1;
+    localparam  res_bit$1 = 8'h0;
+    localparam  res_bit$2 = 8'h6;
+    localparam  res_bit$3 = 8'h2;
+    localparam  res_bit$4 = 8'h7;
+    localparam  res_bit$5 = 8'h3;
+    localparam  res_bit$6 = 8'h8;
+    localparam  handover_bit = 8'h0;
+    localparam  last_bit = 8'h1;
+    localparam  end_bit$0 = 8'h9;
+    localparam  end_bit$1 = 8'h9;
+    localparam  end_bit$2 = 8'h9;
+    localparam  end_bit$3 = 8'h9;
+    localparam  end_bit$4 = 8'h9;
+    localparam  tok_mask$0 = 64'h3ff;
+    localparam  tok_mask$1 = 64'h3ff;
+    localparam  tok_mask$2 = 64'h3ff;
+    localparam  tok_mask$3 = 64'h3ff;
+    localparam  tok_mask$4 = 64'h3ff;
+    localparam  tok_mask$5 = 64'h3;
     localparam  ii_m1 = 8'h9;
     localparam  recip_n = 58'h100000000000000;
     localparam  recip_top = 6'b100000;
@@ -563,477 +562,24 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  div$out_ready;
     wire  [25:0] div$out_q;
     wire  [33:0] div$out_r;
-    reg  [7:0] t$0$d;
-    wire  [7:0] t$0$q;
-    reg  t$0$clock;
-    reg  [7:0] t$1$d;
-    wire  [7:0] t$1$q;
-    reg  t$1$clock;
-    reg  [7:0] t$2$d;
-    wire  [7:0] t$2$q;
-    reg  t$2$clock;
-    reg  [7:0] t$3$d;
-    wire  [7:0] t$3$q;
-    reg  t$3$clock;
-    reg  [7:0] t$4$d;
-    wire  [7:0] t$4$q;
-    reg  t$4$clock;
-    reg  [7:0] t$5$d;
-    wire  [7:0] t$5$q;
-    reg  t$5$clock;
-    reg  end_r$0$d;
-    wire  end_r$0$q;
-    reg  end_r$0$clock;
-    reg  end_r$1$d;
-    wire  end_r$1$q;
-    reg  end_r$1$clock;
-    reg  end_r$2$d;
-    wire  end_r$2$q;
-    reg  end_r$2$clock;
-    reg  end_r$3$d;
-    wire  end_r$3$q;
-    reg  end_r$3$clock;
-    reg  end_r$4$d;
-    wire  end_r$4$q;
-    reg  end_r$4$clock;
-    reg  end_r$5$d;
-    wire  end_r$5$q;
-    reg  end_r$5$clock;
-    reg  act_r$0$d;
-    wire  act_r$0$q;
-    reg  act_r$0$clock;
-    reg  act_r$1$d;
-    wire  act_r$1$q;
-    reg  act_r$1$clock;
-    reg  act_r$2$d;
-    wire  act_r$2$q;
-    reg  act_r$2$clock;
-    reg  act_r$3$d;
-    wire  act_r$3$q;
-    reg  act_r$3$clock;
-    reg  act_r$4$d;
-    wire  act_r$4$q;
-    reg  act_r$4$clock;
-    reg  act_r$5$d;
-    wire  act_r$5$q;
-    reg  act_r$5$clock;
-    reg  act_r$6$d;
-    wire  act_r$6$q;
-    reg  act_r$6$clock;
-    reg  act_r$7$d;
-    wire  act_r$7$q;
-    reg  act_r$7$clock;
-    reg  act_r$8$d;
-    wire  act_r$8$q;
-    reg  act_r$8$clock;
-    reg  act_r$9$d;
-    wire  act_r$9$q;
-    reg  act_r$9$clock;
-    reg  act_r$10$d;
-    wire  act_r$10$q;
-    reg  act_r$10$clock;
-    reg  act_r$11$d;
-    wire  act_r$11$q;
-    reg  act_r$11$clock;
-    reg  act_r$12$d;
-    wire  act_r$12$q;
-    reg  act_r$12$clock;
-    reg  act_r$13$d;
-    wire  act_r$13$q;
-    reg  act_r$13$clock;
-    reg  act_r$14$d;
-    wire  act_r$14$q;
-    reg  act_r$14$clock;
-    reg  act_r$15$d;
-    wire  act_r$15$q;
-    reg  act_r$15$clock;
-    reg  act_r$16$d;
-    wire  act_r$16$q;
-    reg  act_r$16$clock;
-    reg  act_r$17$d;
-    wire  act_r$17$q;
-    reg  act_r$17$clock;
-    reg  act_r$18$d;
-    wire  act_r$18$q;
-    reg  act_r$18$clock;
-    reg  act_r$19$d;
-    wire  act_r$19$q;
-    reg  act_r$19$clock;
-    reg  act_r$20$d;
-    wire  act_r$20$q;
-    reg  act_r$20$clock;
-    reg  act_r$21$d;
-    wire  act_r$21$q;
-    reg  act_r$21$clock;
-    reg  act_r$22$d;
-    wire  act_r$22$q;
-    reg  act_r$22$clock;
-    reg  act_r$23$d;
-    wire  act_r$23$q;
-    reg  act_r$23$clock;
-    reg  act_r$24$d;
-    wire  act_r$24$q;
-    reg  act_r$24$clock;
-    reg  act_r$25$d;
-    wire  act_r$25$q;
-    reg  act_r$25$clock;
-    reg  act_r$26$d;
-    wire  act_r$26$q;
-    reg  act_r$26$clock;
-    reg  act_r$27$d;
-    wire  act_r$27$q;
-    reg  act_r$27$clock;
-    reg  act_r$28$d;
-    wire  act_r$28$q;
-    reg  act_r$28$clock;
-    reg  act_r$29$d;
-    wire  act_r$29$q;
-    reg  act_r$29$clock;
-    reg  act_r$30$d;
-    wire  act_r$30$q;
-    reg  act_r$30$clock;
-    reg  act_r$31$d;
-    wire  act_r$31$q;
-    reg  act_r$31$clock;
-    reg  act_r$32$d;
-    wire  act_r$32$q;
-    reg  act_r$32$clock;
-    reg  act_r$33$d;
-    wire  act_r$33$q;
-    reg  act_r$33$clock;
-    reg  act_r$34$d;
-    wire  act_r$34$q;
-    reg  act_r$34$clock;
-    reg  act_r$35$d;
-    wire  act_r$35$q;
-    reg  act_r$35$clock;
-    reg  act_r$36$d;
-    wire  act_r$36$q;
-    reg  act_r$36$clock;
-    reg  act_r$37$d;
-    wire  act_r$37$q;
-    reg  act_r$37$clock;
-    reg  act_r$38$d;
-    wire  act_r$38$q;
-    reg  act_r$38$clock;
-    reg  act_r$39$d;
-    wire  act_r$39$q;
-    reg  act_r$39$clock;
-    reg  act_r$40$d;
-    wire  act_r$40$q;
-    reg  act_r$40$clock;
-    reg  act_r$41$d;
-    wire  act_r$41$q;
-    reg  act_r$41$clock;
-    reg  act_r$42$d;
-    wire  act_r$42$q;
-    reg  act_r$42$clock;
-    reg  act_r$43$d;
-    wire  act_r$43$q;
-    reg  act_r$43$clock;
-    reg  act_r$44$d;
-    wire  act_r$44$q;
-    reg  act_r$44$clock;
-    reg  act_r$45$d;
-    wire  act_r$45$q;
-    reg  act_r$45$clock;
-    reg  act_r$46$d;
-    wire  act_r$46$q;
-    reg  act_r$46$clock;
-    reg  act_r$47$d;
-    wire  act_r$47$q;
-    reg  act_r$47$clock;
-    reg  act_r$48$d;
-    wire  act_r$48$q;
-    reg  act_r$48$clock;
-    reg  act_r$49$d;
-    wire  act_r$49$q;
-    reg  act_r$49$clock;
-    reg  act_r$50$d;
-    wire  act_r$50$q;
-    reg  act_r$50$clock;
-    reg  act_r$51$d;
-    wire  act_r$51$q;
-    reg  act_r$51$clock;
-    reg  act_r$52$d;
-    wire  act_r$52$q;
-    reg  act_r$52$clock;
-    reg  act_r$53$d;
-    wire  act_r$53$q;
-    reg  act_r$53$clock;
-    reg  act_r$54$d;
-    wire  act_r$54$q;
-    reg  act_r$54$clock;
-    reg  act_r$55$d;
-    wire  act_r$55$q;
-    reg  act_r$55$clock;
-    reg  act_r$56$d;
-    wire  act_r$56$q;
-    reg  act_r$56$clock;
-    reg  act_r$57$d;
-    wire  act_r$57$q;
-    reg  act_r$57$clock;
-    reg  act_r$58$d;
-    wire  act_r$58$q;
-    reg  act_r$58$clock;
-    reg  act_r$59$d;
-    wire  act_r$59$q;
-    reg  act_r$59$clock;
-    reg  act_r$60$d;
-    wire  act_r$60$q;
-    reg  act_r$60$clock;
-    reg  act_r$61$d;
-    wire  act_r$61$q;
-    reg  act_r$61$clock;
-    reg  act_r$62$d;
-    wire  act_r$62$q;
-    reg  act_r$62$clock;
-    reg  act_r$63$d;
-    wire  act_r$63$q;
-    reg  act_r$63$clock;
-    reg  add_r$0$d;
-    wire  add_r$0$q;
-    reg  add_r$0$clock;
-    reg  add_r$1$d;
-    wire  add_r$1$q;
-    reg  add_r$1$clock;
-    reg  add_r$2$d;
-    wire  add_r$2$q;
-    reg  add_r$2$clock;
-    reg  add_r$3$d;
-    wire  add_r$3$q;
-    reg  add_r$3$clock;
-    reg  add_r$4$d;
-    wire  add_r$4$q;
-    reg  add_r$4$clock;
-    reg  add_r$5$d;
-    wire  add_r$5$q;
-    reg  add_r$5$clock;
-    reg  add_r$6$d;
-    wire  add_r$6$q;
-    reg  add_r$6$clock;
-    reg  add_r$7$d;
-    wire  add_r$7$q;
-    reg  add_r$7$clock;
-    reg  add_r$8$d;
-    wire  add_r$8$q;
-    reg  add_r$8$clock;
-    reg  add_r$9$d;
-    wire  add_r$9$q;
-    reg  add_r$9$clock;
-    reg  add_r$10$d;
-    wire  add_r$10$q;
-    reg  add_r$10$clock;
-    reg  add_r$11$d;
-    wire  add_r$11$q;
-    reg  add_r$11$clock;
-    reg  add_r$12$d;
-    wire  add_r$12$q;
-    reg  add_r$12$clock;
-    reg  add_r$13$d;
-    wire  add_r$13$q;
-    reg  add_r$13$clock;
-    reg  add_r$14$d;
-    wire  add_r$14$q;
-    reg  add_r$14$clock;
-    reg  add_r$15$d;
-    wire  add_r$15$q;
-    reg  add_r$15$clock;
-    reg  add_r$16$d;
-    wire  add_r$16$q;
-    reg  add_r$16$clock;
-    reg  add_r$17$d;
-    wire  add_r$17$q;
-    reg  add_r$17$clock;
-    reg  add_r$18$d;
-    wire  add_r$18$q;
-    reg  add_r$18$clock;
-    reg  add_r$19$d;
-    wire  add_r$19$q;
-    reg  add_r$19$clock;
-    reg  add_r$20$d;
-    wire  add_r$20$q;
-    reg  add_r$20$clock;
-    reg  add_r$21$d;
-    wire  add_r$21$q;
-    reg  add_r$21$clock;
-    reg  add_r$22$d;
-    wire  add_r$22$q;
-    reg  add_r$22$clock;
-    reg  add_r$23$d;
-    wire  add_r$23$q;
-    reg  add_r$23$clock;
-    reg  add_r$24$d;
-    wire  add_r$24$q;
-    reg  add_r$24$clock;
-    reg  add_r$25$d;
-    wire  add_r$25$q;
-    reg  add_r$25$clock;
-    reg  add_r$26$d;
-    wire  add_r$26$q;
-    reg  add_r$26$clock;
-    reg  add_r$27$d;
-    wire  add_r$27$q;
-    reg  add_r$27$clock;
-    reg  add_r$28$d;
-    wire  add_r$28$q;
-    reg  add_r$28$clock;
-    reg  add_r$29$d;
-    wire  add_r$29$q;
-    reg  add_r$29$clock;
-    reg  add_r$30$d;
-    wire  add_r$30$q;
-    reg  add_r$30$clock;
-    reg  add_r$31$d;
-    wire  add_r$31$q;
-    reg  add_r$31$clock;
-    reg  add_r$32$d;
-    wire  add_r$32$q;
-    reg  add_r$32$clock;
-    reg  add_r$33$d;
-    wire  add_r$33$q;
-    reg  add_r$33$clock;
-    reg  add_r$34$d;
-    wire  add_r$34$q;
-    reg  add_r$34$clock;
-    reg  add_r$35$d;
-    wire  add_r$35$q;
-    reg  add_r$35$clock;
-    reg  add_r$36$d;
-    wire  add_r$36$q;
-    reg  add_r$36$clock;
-    reg  add_r$37$d;
-    wire  add_r$37$q;
-    reg  add_r$37$clock;
-    reg  add_r$38$d;
-    wire  add_r$38$q;
-    reg  add_r$38$clock;
-    reg  add_r$39$d;
-    wire  add_r$39$q;
-    reg  add_r$39$clock;
-    reg  add_r$40$d;
-    wire  add_r$40$q;
-    reg  add_r$40$clock;
-    reg  add_r$41$d;
-    wire  add_r$41$q;
-    reg  add_r$41$clock;
-    reg  add_r$42$d;
-    wire  add_r$42$q;
-    reg  add_r$42$clock;
-    reg  add_r$43$d;
-    wire  add_r$43$q;
-    reg  add_r$43$clock;
-    reg  add_r$44$d;
-    wire  add_r$44$q;
-    reg  add_r$44$clock;
-    reg  add_r$45$d;
-    wire  add_r$45$q;
-    reg  add_r$45$clock;
-    reg  add_r$46$d;
-    wire  add_r$46$q;
-    reg  add_r$46$clock;
-    reg  add_r$47$d;
-    wire  add_r$47$q;
-    reg  add_r$47$clock;
-    reg  add_r$48$d;
-    wire  add_r$48$q;
-    reg  add_r$48$clock;
-    reg  add_r$49$d;
-    wire  add_r$49$q;
-    reg  add_r$49$clock;
-    reg  add_r$50$d;
-    wire  add_r$50$q;
-    reg  add_r$50$clock;
-    reg  add_r$51$d;
-    wire  add_r$51$q;
-    reg  add_r$51$clock;
-    reg  add_r$52$d;
-    wire  add_r$52$q;
-    reg  add_r$52$clock;
-    reg  add_r$53$d;
-    wire  add_r$53$q;
-    reg  add_r$53$clock;
-    reg  add_r$54$d;
-    wire  add_r$54$q;
-    reg  add_r$54$clock;
-    reg  add_r$55$d;
-    wire  add_r$55$q;
-    reg  add_r$55$clock;
-    reg  add_r$56$d;
-    wire  add_r$56$q;
-    reg  add_r$56$clock;
-    reg  add_r$57$d;
-    wire  add_r$57$q;
-    reg  add_r$57$clock;
-    reg  add_r$58$d;
-    wire  add_r$58$q;
-    reg  add_r$58$clock;
-    reg  add_r$59$d;
-    wire  add_r$59$q;
-    reg  add_r$59$clock;
-    reg  add_r$60$d;
-    wire  add_r$60$q;
-    reg  add_r$60$clock;
-    reg  add_r$61$d;
-    wire  add_r$61$q;
-    reg  add_r$61$clock;
-    reg  add_r$62$d;
-    wire  add_r$62$q;
-    reg  add_r$62$clock;
-    reg  add_r$63$d;
-    wire  add_r$63$q;
-    reg  add_r$63$clock;
-    reg  norm_r$d;
-    wire  norm_r$q;
-    reg  norm_r$clock;
-    reg  iss_r$0$d;
-    wire  iss_r$0$q;
-    reg  iss_r$0$clock;
-    reg  iss_r$1$d;
-    wire  iss_r$1$q;
-    reg  iss_r$1$clock;
-    reg  iss_r$2$d;
-    wire  iss_r$2$q;
-    reg  iss_r$2$clock;
-    reg  iss_r$3$d;
-    wire  iss_r$3$q;
-    reg  iss_r$3$clock;
-    reg  iss_r$4$d;
-    wire  iss_r$4$q;
-    reg  iss_r$4$clock;
-    reg  iss_r$5$d;
-    wire  iss_r$5$q;
-    reg  iss_r$5$clock;
-    reg  iss_r$6$d;
-    wire  iss_r$6$q;
-    reg  iss_r$6$clock;
-    reg  res_r$0$d;
-    wire  res_r$0$q;
-    reg  res_r$0$clock;
-    reg  res_r$1$d;
-    wire  res_r$1$q;
-    reg  res_r$1$clock;
-    reg  res_r$2$d;
-    wire  res_r$2$q;
-    reg  res_r$2$clock;
-    reg  res_r$3$d;
-    wire  res_r$3$q;
-    reg  res_r$3$clock;
-    reg  res_r$4$d;
-    wire  res_r$4$q;
-    reg  res_r$4$clock;
-    reg  res_r$5$d;
-    wire  res_r$5$q;
-    reg  res_r$5$clock;
-    reg  res_r$6$d;
-    wire  res_r$6$q;
-    reg  res_r$6$clock;
-    reg  handover_r$d;
-    wire  handover_r$q;
-    reg  handover_r$clock;
-    reg  valid_r$d;
-    wire  valid_r$q;
-    reg  valid_r$clock;
+    reg  [63:0] tok$0$d;
+    wire  [63:0] tok$0$q;
+    reg  tok$0$clock;
+    reg  [63:0] tok$1$d;
+    wire  [63:0] tok$1$q;
+    reg  tok$1$clock;
+    reg  [63:0] tok$2$d;
+    wire  [63:0] tok$2$q;
+    reg  tok$2$clock;
+    reg  [63:0] tok$3$d;
+    wire  [63:0] tok$3$q;
+    reg  tok$3$clock;
+    reg  [63:0] tok$4$d;
+    wire  [63:0] tok$4$q;
+    reg  tok$4$clock;
+    reg  [63:0] tok$5$d;
+    wire  [63:0] tok$5$q;
+    reg  tok$5$clock;
     reg  busy_r$d;
     wire  busy_r$q;
     reg  busy_r$clock;
@@ -1947,6 +1493,141 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  enter$3;
     reg  enter$4;
     reg  enter$5;
+    reg  [63:0] tok_n$0;
+    reg  [63:0] tok_n$1;
+    reg  [63:0] tok_n$2;
+    reg  [63:0] tok_n$3;
+    reg  [63:0] tok_n$4;
+    reg  [63:0] tok_n$5;
+    reg  act$0;
+    reg  act$1;
+    reg  act$2;
+    reg  act$3;
+    reg  act$4;
+    reg  act$5;
+    reg  act$6;
+    reg  act$7;
+    reg  act$8;
+    reg  act$9;
+    reg  act$10;
+    reg  act$11;
+    reg  act$12;
+    reg  act$13;
+    reg  act$14;
+    reg  act$15;
+    reg  act$16;
+    reg  act$17;
+    reg  act$18;
+    reg  act$19;
+    reg  act$20;
+    reg  act$21;
+    reg  act$22;
+    reg  act$23;
+    reg  act$24;
+    reg  act$25;
+    reg  act$26;
+    reg  act$27;
+    reg  act$28;
+    reg  act$29;
+    reg  act$30;
+    reg  act$31;
+    reg  act$32;
+    reg  act$33;
+    reg  act$34;
+    reg  act$35;
+    reg  act$36;
+    reg  act$37;
+    reg  act$38;
+    reg  act$39;
+    reg  act$40;
+    reg  act$41;
+    reg  act$42;
+    reg  act$43;
+    reg  act$44;
+    reg  act$45;
+    reg  act$46;
+    reg  act$47;
+    reg  act$48;
+    reg  act$49;
+    reg  act$50;
+    reg  act$51;
+    reg  act$52;
+    reg  act$53;
+    reg  act$54;
+    reg  act$55;
+    reg  act$56;
+    reg  act$57;
+    reg  act$58;
+    reg  act$59;
+    reg  act$60;
+    reg  act$61;
+    reg  act$62;
+    reg  act$63;
+    reg  add$0;
+    reg  add$1;
+    reg  add$2;
+    reg  add$3;
+    reg  add$4;
+    reg  add$5;
+    reg  add$6;
+    reg  add$7;
+    reg  add$8;
+    reg  add$9;
+    reg  add$10;
+    reg  add$11;
+    reg  add$12;
+    reg  add$13;
+    reg  add$14;
+    reg  add$15;
+    reg  add$16;
+    reg  add$17;
+    reg  add$18;
+    reg  add$19;
+    reg  add$20;
+    reg  add$21;
+    reg  add$22;
+    reg  add$23;
+    reg  add$24;
+    reg  add$25;
+    reg  add$26;
+    reg  add$27;
+    reg  add$28;
+    reg  add$29;
+    reg  add$30;
+    reg  add$31;
+    reg  add$32;
+    reg  add$33;
+    reg  add$34;
+    reg  add$35;
+    reg  add$36;
+    reg  add$37;
+    reg  add$38;
+    reg  add$39;
+    reg  add$40;
+    reg  add$41;
+    reg  add$42;
+    reg  add$43;
+    reg  add$44;
+    reg  add$45;
+    reg  add$46;
+    reg  add$47;
+    reg  add$48;
+    reg  add$49;
+    reg  add$50;
+    reg  add$51;
+    reg  add$52;
+    reg  add$53;
+    reg  add$54;
+    reg  add$55;
+    reg  add$56;
+    reg  add$57;
+    reg  add$58;
+    reg  add$59;
+    reg  add$60;
+    reg  add$61;
+    reg  add$62;
+    reg  add$63;
+    reg  valid;
     reg  busy_n;
     reg  off_grid_n;
     reg  maj_left$0;
@@ -2268,790 +1949,35 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .out_q(div$out_q),
         .out_r(div$out_r)
     );
-    triangle_setup$t$0 t$0(
-        .d(t$0$d),
-        .q(t$0$q),
-        .clock(t$0$clock)
-    );
-    triangle_setup$t$1 t$1(
-        .d(t$1$d),
-        .q(t$1$q),
-        .clock(t$1$clock)
-    );
-    triangle_setup$t$2 t$2(
-        .d(t$2$d),
-        .q(t$2$q),
-        .clock(t$2$clock)
-    );
-    triangle_setup$t$3 t$3(
-        .d(t$3$d),
-        .q(t$3$q),
-        .clock(t$3$clock)
-    );
-    triangle_setup$t$4 t$4(
-        .d(t$4$d),
-        .q(t$4$q),
-        .clock(t$4$clock)
-    );
-    triangle_setup$t$5 t$5(
-        .d(t$5$d),
-        .q(t$5$q),
-        .clock(t$5$clock)
-    );
-    triangle_setup$end_r$0 end_r$0(
-        .d(end_r$0$d),
-        .q(end_r$0$q),
-        .clock(end_r$0$clock)
-    );
-    triangle_setup$end_r$1 end_r$1(
-        .d(end_r$1$d),
-        .q(end_r$1$q),
-        .clock(end_r$1$clock)
-    );
-    triangle_setup$end_r$2 end_r$2(
-        .d(end_r$2$d),
-        .q(end_r$2$q),
-        .clock(end_r$2$clock)
-    );
-    triangle_setup$end_r$3 end_r$3(
-        .d(end_r$3$d),
-        .q(end_r$3$q),
-        .clock(end_r$3$clock)
-    );
-    triangle_setup$end_r$4 end_r$4(
-        .d(end_r$4$d),
-        .q(end_r$4$q),
-        .clock(end_r$4$clock)
-    );
-    triangle_setup$end_r$5 end_r$5(
-        .d(end_r$5$d),
-        .q(end_r$5$q),
-        .clock(end_r$5$clock)
-    );
-    triangle_setup$act_r$0 act_r$0(
-        .d(act_r$0$d),
-        .q(act_r$0$q),
-        .clock(act_r$0$clock)
-    );
-    triangle_setup$act_r$1 act_r$1(
-        .d(act_r$1$d),
-        .q(act_r$1$q),
-        .clock(act_r$1$clock)
-    );
-    triangle_setup$act_r$2 act_r$2(
-        .d(act_r$2$d),
-        .q(act_r$2$q),
-        .clock(act_r$2$clock)
-    );
-    triangle_setup$act_r$3 act_r$3(
-        .d(act_r$3$d),
-        .q(act_r$3$q),
-        .clock(act_r$3$clock)
-    );
-    triangle_setup$act_r$4 act_r$4(
-        .d(act_r$4$d),
-        .q(act_r$4$q),
-        .clock(act_r$4$clock)
-    );
-    triangle_setup$act_r$5 act_r$5(
-        .d(act_r$5$d),
-        .q(act_r$5$q),
-        .clock(act_r$5$clock)
-    );
-    triangle_setup$act_r$6 act_r$6(
-        .d(act_r$6$d),
-        .q(act_r$6$q),
-        .clock(act_r$6$clock)
-    );
-    triangle_setup$act_r$7 act_r$7(
-        .d(act_r$7$d),
-        .q(act_r$7$q),
-        .clock(act_r$7$clock)
-    );
-    triangle_setup$act_r$8 act_r$8(
-        .d(act_r$8$d),
-        .q(act_r$8$q),
-        .clock(act_r$8$clock)
-    );
-    triangle_setup$act_r$9 act_r$9(
-        .d(act_r$9$d),
-        .q(act_r$9$q),
-        .clock(act_r$9$clock)
-    );
-    triangle_setup$act_r$10 act_r$10(
-        .d(act_r$10$d),
-        .q(act_r$10$q),
-        .clock(act_r$10$clock)
-    );
-    triangle_setup$act_r$11 act_r$11(
-        .d(act_r$11$d),
-        .q(act_r$11$q),
-        .clock(act_r$11$clock)
-    );
-    triangle_setup$act_r$12 act_r$12(
-        .d(act_r$12$d),
-        .q(act_r$12$q),
-        .clock(act_r$12$clock)
-    );
-    triangle_setup$act_r$13 act_r$13(
-        .d(act_r$13$d),
-        .q(act_r$13$q),
-        .clock(act_r$13$clock)
-    );
-    triangle_setup$act_r$14 act_r$14(
-        .d(act_r$14$d),
-        .q(act_r$14$q),
-        .clock(act_r$14$clock)
-    );
-    triangle_setup$act_r$15 act_r$15(
-        .d(act_r$15$d),
-        .q(act_r$15$q),
-        .clock(act_r$15$clock)
-    );
-    triangle_setup$act_r$16 act_r$16(
-        .d(act_r$16$d),
-        .q(act_r$16$q),
-        .clock(act_r$16$clock)
-    );
-    triangle_setup$act_r$17 act_r$17(
-        .d(act_r$17$d),
-        .q(act_r$17$q),
-        .clock(act_r$17$clock)
-    );
-    triangle_setup$act_r$18 act_r$18(
-        .d(act_r$18$d),
-        .q(act_r$18$q),
-        .clock(act_r$18$clock)
-    );
-    triangle_setup$act_r$19 act_r$19(
-        .d(act_r$19$d),
-        .q(act_r$19$q),
-        .clock(act_r$19$clock)
-    );
-    triangle_setup$act_r$20 act_r$20(
-        .d(act_r$20$d),
-        .q(act_r$20$q),
-        .clock(act_r$20$clock)
-    );
-    triangle_setup$act_r$21 act_r$21(
-        .d(act_r$21$d),
-        .q(act_r$21$q),
-        .clock(act_r$21$clock)
-    );
-    triangle_setup$act_r$22 act_r$22(
-        .d(act_r$22$d),
-        .q(act_r$22$q),
-        .clock(act_r$22$clock)
-    );
-    triangle_setup$act_r$23 act_r$23(
-        .d(act_r$23$d),
-        .q(act_r$23$q),
-        .clock(act_r$23$clock)
-    );
-    triangle_setup$act_r$24 act_r$24(
-        .d(act_r$24$d),
-        .q(act_r$24$q),
-        .clock(act_r$24$clock)
-    );
-    triangle_setup$act_r$25 act_r$25(
-        .d(act_r$25$d),
-        .q(act_r$25$q),
-        .clock(act_r$25$clock)
-    );
-    triangle_setup$act_r$26 act_r$26(
-        .d(act_r$26$d),
-        .q(act_r$26$q),
-        .clock(act_r$26$clock)
-    );
-    triangle_setup$act_r$27 act_r$27(
-        .d(act_r$27$d),
-        .q(act_r$27$q),
-        .clock(act_r$27$clock)
-    );
-    triangle_setup$act_r$28 act_r$28(
-        .d(act_r$28$d),
-        .q(act_r$28$q),
-        .clock(act_r$28$clock)
-    );
-    triangle_setup$act_r$29 act_r$29(
-        .d(act_r$29$d),
-        .q(act_r$29$q),
-        .clock(act_r$29$clock)
-    );
-    triangle_setup$act_r$30 act_r$30(
-        .d(act_r$30$d),
-        .q(act_r$30$q),
-        .clock(act_r$30$clock)
-    );
-    triangle_setup$act_r$31 act_r$31(
-        .d(act_r$31$d),
-        .q(act_r$31$q),
-        .clock(act_r$31$clock)
-    );
-    triangle_setup$act_r$32 act_r$32(
-        .d(act_r$32$d),
-        .q(act_r$32$q),
-        .clock(act_r$32$clock)
-    );
-    triangle_setup$act_r$33 act_r$33(
-        .d(act_r$33$d),
-        .q(act_r$33$q),
-        .clock(act_r$33$clock)
-    );
-    triangle_setup$act_r$34 act_r$34(
-        .d(act_r$34$d),
-        .q(act_r$34$q),
-        .clock(act_r$34$clock)
-    );
-    triangle_setup$act_r$35 act_r$35(
-        .d(act_r$35$d),
-        .q(act_r$35$q),
-        .clock(act_r$35$clock)
-    );
-    triangle_setup$act_r$36 act_r$36(
-        .d(act_r$36$d),
-        .q(act_r$36$q),
-        .clock(act_r$36$clock)
-    );
-    triangle_setup$act_r$37 act_r$37(
-        .d(act_r$37$d),
-        .q(act_r$37$q),
-        .clock(act_r$37$clock)
-    );
-    triangle_setup$act_r$38 act_r$38(
-        .d(act_r$38$d),
-        .q(act_r$38$q),
-        .clock(act_r$38$clock)
-    );
-    triangle_setup$act_r$39 act_r$39(
-        .d(act_r$39$d),
-        .q(act_r$39$q),
-        .clock(act_r$39$clock)
-    );
-    triangle_setup$act_r$40 act_r$40(
-        .d(act_r$40$d),
-        .q(act_r$40$q),
-        .clock(act_r$40$clock)
-    );
-    triangle_setup$act_r$41 act_r$41(
-        .d(act_r$41$d),
-        .q(act_r$41$q),
-        .clock(act_r$41$clock)
-    );
-    triangle_setup$act_r$42 act_r$42(
-        .d(act_r$42$d),
-        .q(act_r$42$q),
-        .clock(act_r$42$clock)
-    );
-    triangle_setup$act_r$43 act_r$43(
-        .d(act_r$43$d),
-        .q(act_r$43$q),
-        .clock(act_r$43$clock)
-    );
-    triangle_setup$act_r$44 act_r$44(
-        .d(act_r$44$d),
-        .q(act_r$44$q),
-        .clock(act_r$44$clock)
-    );
-    triangle_setup$act_r$45 act_r$45(
-        .d(act_r$45$d),
-        .q(act_r$45$q),
-        .clock(act_r$45$clock)
-    );
-    triangle_setup$act_r$46 act_r$46(
-        .d(act_r$46$d),
-        .q(act_r$46$q),
-        .clock(act_r$46$clock)
-    );
-    triangle_setup$act_r$47 act_r$47(
-        .d(act_r$47$d),
-        .q(act_r$47$q),
-        .clock(act_r$47$clock)
-    );
-    triangle_setup$act_r$48 act_r$48(
-        .d(act_r$48$d),
-        .q(act_r$48$q),
-        .clock(act_r$48$clock)
-    );
-    triangle_setup$act_r$49 act_r$49(
-        .d(act_r$49$d),
-        .q(act_r$49$q),
-        .clock(act_r$49$clock)
-    );
-    triangle_setup$act_r$50 act_r$50(
-        .d(act_r$50$d),
-        .q(act_r$50$q),
-        .clock(act_r$50$clock)
-    );
-    triangle_setup$act_r$51 act_r$51(
-        .d(act_r$51$d),
-        .q(act_r$51$q),
-        .clock(act_r$51$clock)
-    );
-    triangle_setup$act_r$52 act_r$52(
-        .d(act_r$52$d),
-        .q(act_r$52$q),
-        .clock(act_r$52$clock)
-    );
-    triangle_setup$act_r$53 act_r$53(
-        .d(act_r$53$d),
-        .q(act_r$53$q),
-        .clock(act_r$53$clock)
-    );
-    triangle_setup$act_r$54 act_r$54(
-        .d(act_r$54$d),
-        .q(act_r$54$q),
-        .clock(act_r$54$clock)
-    );
-    triangle_setup$act_r$55 act_r$55(
-        .d(act_r$55$d),
-        .q(act_r$55$q),
-        .clock(act_r$55$clock)
-    );
-    triangle_setup$act_r$56 act_r$56(
-        .d(act_r$56$d),
-        .q(act_r$56$q),
-        .clock(act_r$56$clock)
-    );
-    triangle_setup$act_r$57 act_r$57(
-        .d(act_r$57$d),
-        .q(act_r$57$q),
-        .clock(act_r$57$clock)
-    );
-    triangle_setup$act_r$58 act_r$58(
-        .d(act_r$58$d),
-        .q(act_r$58$q),
-        .clock(act_r$58$clock)
-    );
-    triangle_setup$act_r$59 act_r$59(
-        .d(act_r$59$d),
-        .q(act_r$59$q),
-        .clock(act_r$59$clock)
-    );
-    triangle_setup$act_r$60 act_r$60(
-        .d(act_r$60$d),
-        .q(act_r$60$q),
-        .clock(act_r$60$clock)
-    );
-    triangle_setup$act_r$61 act_r$61(
-        .d(act_r$61$d),
-        .q(act_r$61$q),
-        .clock(act_r$61$clock)
-    );
-    triangle_setup$act_r$62 act_r$62(
-        .d(act_r$62$d),
-        .q(act_r$62$q),
-        .clock(act_r$62$clock)
-    );
-    triangle_setup$act_r$63 act_r$63(
-        .d(act_r$63$d),
-        .q(act_r$63$q),
-        .clock(act_r$63$clock)
-    );
-    triangle_setup$add_r$0 add_r$0(
-        .d(add_r$0$d),
-        .q(add_r$0$q),
-        .clock(add_r$0$clock)
-    );
-    triangle_setup$add_r$1 add_r$1(
-        .d(add_r$1$d),
-        .q(add_r$1$q),
-        .clock(add_r$1$clock)
-    );
-    triangle_setup$add_r$2 add_r$2(
-        .d(add_r$2$d),
-        .q(add_r$2$q),
-        .clock(add_r$2$clock)
-    );
-    triangle_setup$add_r$3 add_r$3(
-        .d(add_r$3$d),
-        .q(add_r$3$q),
-        .clock(add_r$3$clock)
-    );
-    triangle_setup$add_r$4 add_r$4(
-        .d(add_r$4$d),
-        .q(add_r$4$q),
-        .clock(add_r$4$clock)
-    );
-    triangle_setup$add_r$5 add_r$5(
-        .d(add_r$5$d),
-        .q(add_r$5$q),
-        .clock(add_r$5$clock)
-    );
-    triangle_setup$add_r$6 add_r$6(
-        .d(add_r$6$d),
-        .q(add_r$6$q),
-        .clock(add_r$6$clock)
-    );
-    triangle_setup$add_r$7 add_r$7(
-        .d(add_r$7$d),
-        .q(add_r$7$q),
-        .clock(add_r$7$clock)
-    );
-    triangle_setup$add_r$8 add_r$8(
-        .d(add_r$8$d),
-        .q(add_r$8$q),
-        .clock(add_r$8$clock)
-    );
-    triangle_setup$add_r$9 add_r$9(
-        .d(add_r$9$d),
-        .q(add_r$9$q),
-        .clock(add_r$9$clock)
-    );
-    triangle_setup$add_r$10 add_r$10(
-        .d(add_r$10$d),
-        .q(add_r$10$q),
-        .clock(add_r$10$clock)
-    );
-    triangle_setup$add_r$11 add_r$11(
-        .d(add_r$11$d),
-        .q(add_r$11$q),
-        .clock(add_r$11$clock)
-    );
-    triangle_setup$add_r$12 add_r$12(
-        .d(add_r$12$d),
-        .q(add_r$12$q),
-        .clock(add_r$12$clock)
-    );
-    triangle_setup$add_r$13 add_r$13(
-        .d(add_r$13$d),
-        .q(add_r$13$q),
-        .clock(add_r$13$clock)
-    );
-    triangle_setup$add_r$14 add_r$14(
-        .d(add_r$14$d),
-        .q(add_r$14$q),
-        .clock(add_r$14$clock)
-    );
-    triangle_setup$add_r$15 add_r$15(
-        .d(add_r$15$d),
-        .q(add_r$15$q),
-        .clock(add_r$15$clock)
-    );
-    triangle_setup$add_r$16 add_r$16(
-        .d(add_r$16$d),
-        .q(add_r$16$q),
-        .clock(add_r$16$clock)
-    );
-    triangle_setup$add_r$17 add_r$17(
-        .d(add_r$17$d),
-        .q(add_r$17$q),
-        .clock(add_r$17$clock)
-    );
-    triangle_setup$add_r$18 add_r$18(
-        .d(add_r$18$d),
-        .q(add_r$18$q),
-        .clock(add_r$18$clock)
-    );
-    triangle_setup$add_r$19 add_r$19(
-        .d(add_r$19$d),
-        .q(add_r$19$q),
-        .clock(add_r$19$clock)
-    );
-    triangle_setup$add_r$20 add_r$20(
-        .d(add_r$20$d),
-        .q(add_r$20$q),
-        .clock(add_r$20$clock)
-    );
-    triangle_setup$add_r$21 add_r$21(
-        .d(add_r$21$d),
-        .q(add_r$21$q),
-        .clock(add_r$21$clock)
-    );
-    triangle_setup$add_r$22 add_r$22(
-        .d(add_r$22$d),
-        .q(add_r$22$q),
-        .clock(add_r$22$clock)
-    );
-    triangle_setup$add_r$23 add_r$23(
-        .d(add_r$23$d),
-        .q(add_r$23$q),
-        .clock(add_r$23$clock)
-    );
-    triangle_setup$add_r$24 add_r$24(
-        .d(add_r$24$d),
-        .q(add_r$24$q),
-        .clock(add_r$24$clock)
-    );
-    triangle_setup$add_r$25 add_r$25(
-        .d(add_r$25$d),
-        .q(add_r$25$q),
-        .clock(add_r$25$clock)
-    );
-    triangle_setup$add_r$26 add_r$26(
-        .d(add_r$26$d),
-        .q(add_r$26$q),
-        .clock(add_r$26$clock)
-    );
-    triangle_setup$add_r$27 add_r$27(
-        .d(add_r$27$d),
-        .q(add_r$27$q),
-        .clock(add_r$27$clock)
-    );
-    triangle_setup$add_r$28 add_r$28(
-        .d(add_r$28$d),
-        .q(add_r$28$q),
-        .clock(add_r$28$clock)
-    );
-    triangle_setup$add_r$29 add_r$29(
-        .d(add_r$29$d),
-        .q(add_r$29$q),
-        .clock(add_r$29$clock)
-    );
-    triangle_setup$add_r$30 add_r$30(
-        .d(add_r$30$d),
-        .q(add_r$30$q),
-        .clock(add_r$30$clock)
-    );
-    triangle_setup$add_r$31 add_r$31(
-        .d(add_r$31$d),
-        .q(add_r$31$q),
-        .clock(add_r$31$clock)
-    );
-    triangle_setup$add_r$32 add_r$32(
-        .d(add_r$32$d),
-        .q(add_r$32$q),
-        .clock(add_r$32$clock)
-    );
-    triangle_setup$add_r$33 add_r$33(
-        .d(add_r$33$d),
-        .q(add_r$33$q),
-        .clock(add_r$33$clock)
-    );
-    triangle_setup$add_r$34 add_r$34(
-        .d(add_r$34$d),
-        .q(add_r$34$q),
-        .clock(add_r$34$clock)
-    );
-    triangle_setup$add_r$35 add_r$35(
-        .d(add_r$35$d),
-        .q(add_r$35$q),
-        .clock(add_r$35$clock)
-    );
-    triangle_setup$add_r$36 add_r$36(
-        .d(add_r$36$d),
-        .q(add_r$36$q),
-        .clock(add_r$36$clock)
-    );
-    triangle_setup$add_r$37 add_r$37(
-        .d(add_r$37$d),
-        .q(add_r$37$q),
-        .clock(add_r$37$clock)
-    );
-    triangle_setup$add_r$38 add_r$38(
-        .d(add_r$38$d),
-        .q(add_r$38$q),
-        .clock(add_r$38$clock)
-    );
-    triangle_setup$add_r$39 add_r$39(
-        .d(add_r$39$d),
-        .q(add_r$39$q),
-        .clock(add_r$39$clock)
-    );
-    triangle_setup$add_r$40 add_r$40(
-        .d(add_r$40$d),
-        .q(add_r$40$q),
-        .clock(add_r$40$clock)
-    );
-    triangle_setup$add_r$41 add_r$41(
-        .d(add_r$41$d),
-        .q(add_r$41$q),
-        .clock(add_r$41$clock)
-    );
-    triangle_setup$add_r$42 add_r$42(
-        .d(add_r$42$d),
-        .q(add_r$42$q),
-        .clock(add_r$42$clock)
-    );
-    triangle_setup$add_r$43 add_r$43(
-        .d(add_r$43$d),
-        .q(add_r$43$q),
-        .clock(add_r$43$clock)
-    );
-    triangle_setup$add_r$44 add_r$44(
-        .d(add_r$44$d),
-        .q(add_r$44$q),
-        .clock(add_r$44$clock)
-    );
-    triangle_setup$add_r$45 add_r$45(
-        .d(add_r$45$d),
-        .q(add_r$45$q),
-        .clock(add_r$45$clock)
-    );
-    triangle_setup$add_r$46 add_r$46(
-        .d(add_r$46$d),
-        .q(add_r$46$q),
-        .clock(add_r$46$clock)
-    );
-    triangle_setup$add_r$47 add_r$47(
-        .d(add_r$47$d),
-        .q(add_r$47$q),
-        .clock(add_r$47$clock)
-    );
-    triangle_setup$add_r$48 add_r$48(
-        .d(add_r$48$d),
-        .q(add_r$48$q),
-        .clock(add_r$48$clock)
-    );
-    triangle_setup$add_r$49 add_r$49(
-        .d(add_r$49$d),
-        .q(add_r$49$q),
-        .clock(add_r$49$clock)
-    );
-    triangle_setup$add_r$50 add_r$50(
-        .d(add_r$50$d),
-        .q(add_r$50$q),
-        .clock(add_r$50$clock)
-    );
-    triangle_setup$add_r$51 add_r$51(
-        .d(add_r$51$d),
-        .q(add_r$51$q),
-        .clock(add_r$51$clock)
-    );
-    triangle_setup$add_r$52 add_r$52(
-        .d(add_r$52$d),
-        .q(add_r$52$q),
-        .clock(add_r$52$clock)
-    );
-    triangle_setup$add_r$53 add_r$53(
-        .d(add_r$53$d),
-        .q(add_r$53$q),
-        .clock(add_r$53$clock)
-    );
-    triangle_setup$add_r$54 add_r$54(
-        .d(add_r$54$d),
-        .q(add_r$54$q),
-        .clock(add_r$54$clock)
-    );
-    triangle_setup$add_r$55 add_r$55(
-        .d(add_r$55$d),
-        .q(add_r$55$q),
-        .clock(add_r$55$clock)
-    );
-    triangle_setup$add_r$56 add_r$56(
-        .d(add_r$56$d),
-        .q(add_r$56$q),
-        .clock(add_r$56$clock)
-    );
-    triangle_setup$add_r$57 add_r$57(
-        .d(add_r$57$d),
-        .q(add_r$57$q),
-        .clock(add_r$57$clock)
-    );
-    triangle_setup$add_r$58 add_r$58(
-        .d(add_r$58$d),
-        .q(add_r$58$q),
-        .clock(add_r$58$clock)
-    );
-    triangle_setup$add_r$59 add_r$59(
-        .d(add_r$59$d),
-        .q(add_r$59$q),
-        .clock(add_r$59$clock)
-    );
-    triangle_setup$add_r$60 add_r$60(
-        .d(add_r$60$d),
-        .q(add_r$60$q),
-        .clock(add_r$60$clock)
-    );
-    triangle_setup$add_r$61 add_r$61(
-        .d(add_r$61$d),
-        .q(add_r$61$q),
-        .clock(add_r$61$clock)
-    );
-    triangle_setup$add_r$62 add_r$62(
-        .d(add_r$62$d),
-        .q(add_r$62$q),
-        .clock(add_r$62$clock)
-    );
-    triangle_setup$add_r$63 add_r$63(
-        .d(add_r$63$d),
-        .q(add_r$63$q),
-        .clock(add_r$63$clock)
-    );
-    triangle_setup$norm_r norm_r(
-        .d(norm_r$d),
-        .q(norm_r$q),
-        .clock(norm_r$clock)
-    );
-    triangle_setup$iss_r$0 iss_r$0(
-        .d(iss_r$0$d),
-        .q(iss_r$0$q),
-        .clock(iss_r$0$clock)
-    );
-    triangle_setup$iss_r$1 iss_r$1(
-        .d(iss_r$1$d),
-        .q(iss_r$1$q),
-        .clock(iss_r$1$clock)
-    );
-    triangle_setup$iss_r$2 iss_r$2(
-        .d(iss_r$2$d),
-        .q(iss_r$2$q),
-        .clock(iss_r$2$clock)
-    );
-    triangle_setup$iss_r$3 iss_r$3(
-        .d(iss_r$3$d),
-        .q(iss_r$3$q),
-        .clock(iss_r$3$clock)
-    );
-    triangle_setup$iss_r$4 iss_r$4(
-        .d(iss_r$4$d),
-        .q(iss_r$4$q),
-        .clock(iss_r$4$clock)
-    );
-    triangle_setup$iss_r$5 iss_r$5(
-        .d(iss_r$5$d),
-        .q(iss_r$5$q),
-        .clock(iss_r$5$clock)
-    );
-    triangle_setup$iss_r$6 iss_r$6(
-        .d(iss_r$6$d),
-        .q(iss_r$6$q),
-        .clock(iss_r$6$clock)
-    );
-    triangle_setup$res_r$0 res_r$0(
-        .d(res_r$0$d),
-        .q(res_r$0$q),
-        .clock(res_r$0$clock)
-    );
-    triangle_setup$res_r$1 res_r$1(
-        .d(res_r$1$d),
-        .q(res_r$1$q),
-        .clock(res_r$1$clock)
-    );
-    triangle_setup$res_r$2 res_r$2(
-        .d(res_r$2$d),
-        .q(res_r$2$q),
-        .clock(res_r$2$clock)
-    );
-    triangle_setup$res_r$3 res_r$3(
-        .d(res_r$3$d),
-        .q(res_r$3$q),
-        .clock(res_r$3$clock)
-    );
-    triangle_setup$res_r$4 res_r$4(
-        .d(res_r$4$d),
-        .q(res_r$4$q),
-        .clock(res_r$4$clock)
-    );
-    triangle_setup$res_r$5 res_r$5(
-        .d(res_r$5$d),
-        .q(res_r$5$q),
-        .clock(res_r$5$clock)
-    );
-    triangle_setup$res_r$6 res_r$6(
-        .d(res_r$6$d),
-        .q(res_r$6$q),
-        .clock(res_r$6$clock)
-    );
-    triangle_setup$handover_r handover_r(
-        .d(handover_r$d),
-        .q(handover_r$q),
-        .clock(handover_r$clock)
-    );
-    triangle_setup$valid_r valid_r(
-        .d(valid_r$d),
-        .q(valid_r$q),
-        .clock(valid_r$clock)
+    triangle_setup$tok$0 tok$0(
+        .d(tok$0$d),
+        .q(tok$0$q),
+        .clock(tok$0$clock)
+    );
+    triangle_setup$tok$1 tok$1(
+        .d(tok$1$d),
+        .q(tok$1$q),
+        .clock(tok$1$clock)
+    );
+    triangle_setup$tok$2 tok$2(
+        .d(tok$2$d),
+        .q(tok$2$q),
+        .clock(tok$2$clock)
+    );
+    triangle_setup$tok$3 tok$3(
+        .d(tok$3$d),
+        .q(tok$3$q),
+        .clock(tok$3$clock)
+    );
+    triangle_setup$tok$4 tok$4(
+        .d(tok$4$d),
+        .q(tok$4$q),
+        .clock(tok$4$clock)
+    );
+    triangle_setup$tok$5 tok$5(
+        .d(tok$5$d),
+        .q(tok$5$q),
+        .clock(tok$5$clock)
     );
     triangle_setup$busy_r busy_r(
         .d(busy_r$d),
@@ -4316,9 +3242,6 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         mant_s$clock = clock;
         rsh$clock = clock;
         left$clock = clock;
-        norm_r$clock = clock;
-        handover_r$clock = clock;
-        valid_r$clock = clock;
         busy_r$clock = clock;
         gate_r$clock = clock;
         phase$clock = clock;
@@ -4332,9 +3255,6 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         mant_s$d = mant_s$q;
         rsh$d = rsh$q;
         left$d = left$q;
-        norm_r$d = norm_r$q;
-        handover_r$d = handover_r$q;
-        valid_r$d = valid_r$q;
         busy_r$d = busy_r$q;
         gate_r$d = gate_r$q;
         phase$d = phase$q;
@@ -4362,8 +3282,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         o_d$2$clock = clock;
         o_d$2$d = o_d$2$q;
         div$clock = clock;
-        t$0$clock = clock;
-        t$0$d = t$0$q;
+        tok$0$clock = clock;
         geo$0$clock = clock;
         geo$0$d = geo$0$q;
         sign$0$clock = clock;
@@ -4396,8 +3315,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         q$2$d = q$2$q;
         rho$2$clock = clock;
         rho$2$d = rho$2$q;
-        t$1$clock = clock;
-        t$1$d = t$1$q;
+        tok$1$clock = clock;
         geo$1$clock = clock;
         geo$1$d = geo$1$q;
         sign$1$clock = clock;
@@ -4430,8 +3348,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         q$5$d = q$5$q;
         rho$5$clock = clock;
         rho$5$d = rho$5$q;
-        t$2$clock = clock;
-        t$2$d = t$2$q;
+        tok$2$clock = clock;
         geo$2$clock = clock;
         geo$2$d = geo$2$q;
         sign$2$clock = clock;
@@ -4464,8 +3381,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         q$8$d = q$8$q;
         rho$8$clock = clock;
         rho$8$d = rho$8$q;
-        t$3$clock = clock;
-        t$3$d = t$3$q;
+        tok$3$clock = clock;
         geo$3$clock = clock;
         geo$3$d = geo$3$q;
         sign$3$clock = clock;
@@ -4498,8 +3414,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         q$11$d = q$11$q;
         rho$11$clock = clock;
         rho$11$d = rho$11$q;
-        t$4$clock = clock;
-        t$4$d = t$4$q;
+        tok$4$clock = clock;
         geo$4$clock = clock;
         geo$4$d = geo$4$q;
         sign$4$clock = clock;
@@ -4532,8 +3447,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         q$14$d = q$14$q;
         rho$14$clock = clock;
         rho$14$d = rho$14$q;
-        t$5$clock = clock;
-        t$5$d = t$5$q;
+        tok$5$clock = clock;
         geo$5$clock = clock;
         geo$5$d = geo$5$q;
         sign$5$clock = clock;
@@ -4689,8 +3603,9 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         maj_left$3 = sign$3$q;
         maj_left$4 = sign$4$q;
         maj_left$5 = sign$5$q;
-        run = ~(valid_r$q & ~out$ready);
-        out$valid = valid_r$q;
+        valid = tok$5$q[last_bit];
+        run = ~(valid & ~out$ready);
+        out$valid = valid;
         inp$ready = run & ~gate_r$q;
         take = inp$valid & inp$ready;
         if (run) begin
@@ -4701,44 +3616,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             if (take) begin
                 phase$d = 32'h1;
             end
-            if (t$0$q != 32'h0) begin
-                t$0$d = t$0$q + 32'h1;
-            end
-            if (end_r$0$q) begin
-                t$0$d = 32'h0;
-            end
-            if (t$1$q != 32'h0) begin
-                t$1$d = t$1$q + 32'h1;
-            end
-            if (end_r$1$q) begin
-                t$1$d = 32'h0;
-            end
-            if (t$2$q != 32'h0) begin
-                t$2$d = t$2$q + 32'h1;
-            end
-            if (end_r$2$q) begin
-                t$2$d = 32'h0;
-            end
-            if (t$3$q != 32'h0) begin
-                t$3$d = t$3$q + 32'h1;
-            end
-            if (end_r$3$q) begin
-                t$3$d = 32'h0;
-            end
-            if (t$4$q != 32'h0) begin
-                t$4$d = t$4$q + 32'h1;
-            end
-            if (end_r$4$q) begin
-                t$4$d = 32'h0;
-            end
-            if (t$5$q != 32'h0) begin
-                t$5$d = t$5$q + 32'h1;
-            end
-            if (end_r$5$q) begin
-                t$5$d = 32'h0;
-            end
-            if (end_r$0$q) begin
-                t$1$d = ends$0 + 32'h1;
+            if (enter$1) begin
                 geo$1$d = geo$0$q;
                 sign$1$d = maj_left$0;
                 exp$1$d = exp$0$q;
@@ -4756,8 +3634,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
                 q$5$d = q$2$q;
                 rho$5$d = rho$2$q;
             end
-            if (end_r$1$q) begin
-                t$2$d = ends$1 + 32'h1;
+            if (enter$2) begin
                 geo$2$d = geo$1$q;
                 sign$2$d = maj_left$1;
                 exp$2$d = exp$1$q;
@@ -4775,8 +3652,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
                 q$8$d = q$5$q;
                 rho$8$d = rho$5$q;
             end
-            if (end_r$2$q) begin
-                t$3$d = ends$2 + 32'h1;
+            if (enter$3) begin
                 geo$3$d = geo$2$q;
                 sign$3$d = maj_left$2;
                 exp$3$d = exp$2$q;
@@ -4794,8 +3670,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
                 q$11$d = q$8$q;
                 rho$11$d = rho$8$q;
             end
-            if (end_r$3$q) begin
-                t$4$d = ends$3 + 32'h1;
+            if (enter$4) begin
                 geo$4$d = geo$3$q;
                 sign$4$d = maj_left$3;
                 exp$4$d = exp$3$q;
@@ -4813,8 +3688,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
                 q$14$d = q$11$q;
                 rho$14$d = rho$11$q;
             end
-            if (end_r$4$q) begin
-                t$5$d = ends$4 + 32'h1;
+            if (enter$5) begin
                 geo$5$d = geo$4$q;
                 sign$5$d = maj_left$4;
                 exp$5$d = exp$4$q;
@@ -4834,7247 +3708,2675 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             end
         end
         if (take) begin
-            t$0$d = 32'h1;
             geo$0$d = geometry$word;
         end
         enter$0 = take;
-        enter$1 = end_r$0$q;
-        enter$2 = end_r$1$q;
-        enter$3 = end_r$2$q;
-        enter$4 = end_r$3$q;
-        enter$5 = end_r$4$q;
-        end_r$0$clock = clock;
-        end_r$0$d = end_r$0$q;
-        end_r$1$clock = clock;
-        end_r$1$d = end_r$1$q;
-        end_r$2$clock = clock;
-        end_r$2$d = end_r$2$q;
-        end_r$3$clock = clock;
-        end_r$3$d = end_r$3$q;
-        end_r$4$clock = clock;
-        end_r$4$d = end_r$4$q;
-        end_r$5$clock = clock;
-        end_r$5$d = end_r$5$q;
+        enter$1 = tok$0$q[end_bit$0];
+        enter$2 = tok$1$q[end_bit$1];
+        enter$3 = tok$2$q[end_bit$2];
+        enter$4 = tok$3$q[end_bit$3];
+        enter$5 = tok$4$q[end_bit$4];
+        tok_n$0 = tok$0$q;
         if (run) begin
-            if (ends$0 == firsts$0) begin
-                end_r$0$d = enter$0;
+            tok_n$0 = (tok$0$q << 32'h1) & tok_mask$0;
+            if (enter$0) begin
+                tok_n$0 = ((tok$0$q << 32'h1) | 32'h1) & tok_mask$0;
             end
-            else begin
-                end_r$0$d = t$0$q == ends$0 - 32'h1;
-            end
-            if (ends$1 == firsts$1) begin
-                end_r$1$d = enter$1;
-            end
-            else begin
-                end_r$1$d = t$1$q == ends$1 - 32'h1;
-            end
-            if (ends$2 == firsts$2) begin
-                end_r$2$d = enter$2;
-            end
-            else begin
-                end_r$2$d = t$2$q == ends$2 - 32'h1;
-            end
-            if (ends$3 == firsts$3) begin
-                end_r$3$d = enter$3;
-            end
-            else begin
-                end_r$3$d = t$3$q == ends$3 - 32'h1;
-            end
-            if (ends$4 == firsts$4) begin
-                end_r$4$d = enter$4;
-            end
-            else begin
-                end_r$4$d = t$4$q == ends$4 - 32'h1;
-            end
-            if (ends$5 == firsts$5) begin
-                end_r$5$d = enter$5;
-            end
-            else begin
-                end_r$5$d = t$5$q == ends$5 - 32'h1;
-            end
         end
-        act_r$0$clock = clock;
-        act_r$0$d = act_r$0$q;
-        add_r$0$clock = clock;
-        add_r$0$d = add_r$0$q;
+        tok$0$d = tok_n$0;
+        tok_n$1 = tok$1$q;
         if (run) begin
-            act_r$0$d = 1'b0;
-            add_r$0$d = 1'b0;
-            if (view$0 == 0) begin
-                if (cyc$0 == firsts$0) begin
-                    act_r$0$d = enter$0;
-                end
-                else begin
-                    act_r$0$d = t$0$q == cyc$0 - 32'h1;
-                end
-            end
-            if (view_add$0 == 0) begin
-                if (cyc_add$0 == firsts$0) begin
-                    add_r$0$d = enter$0;
-                end
-                else begin
-                    add_r$0$d = t$0$q == cyc_add$0 - 32'h1;
-                end
-            end
-            if (view$0 == 1) begin
-                if (cyc$0 == firsts$1) begin
-                    act_r$0$d = enter$1;
-                end
-                else begin
-                    act_r$0$d = t$1$q == cyc$0 - 32'h1;
-                end
-            end
-            if (view_add$0 == 1) begin
-                if (cyc_add$0 == firsts$1) begin
-                    add_r$0$d = enter$1;
-                end
-                else begin
-                    add_r$0$d = t$1$q == cyc_add$0 - 32'h1;
-                end
-            end
-            if (view$0 == 2) begin
-                if (cyc$0 == firsts$2) begin
-                    act_r$0$d = enter$2;
-                end
-                else begin
-                    act_r$0$d = t$2$q == cyc$0 - 32'h1;
-                end
-            end
-            if (view_add$0 == 2) begin
-                if (cyc_add$0 == firsts$2) begin
-                    add_r$0$d = enter$2;
-                end
-                else begin
-                    add_r$0$d = t$2$q == cyc_add$0 - 32'h1;
-                end
+            tok_n$1 = (tok$1$q << 32'h1) & tok_mask$1;
+            if (enter$1) begin
+                tok_n$1 = ((tok$1$q << 32'h1) | 32'h1) & tok_mask$1;
             end
-            if (view$0 == 3) begin
-                if (cyc$0 == firsts$3) begin
-                    act_r$0$d = enter$3;
-                end
-                else begin
-                    act_r$0$d = t$3$q == cyc$0 - 32'h1;
-                end
-            end
-            if (view_add$0 == 3) begin
-                if (cyc_add$0 == firsts$3) begin
-                    add_r$0$d = enter$3;
-                end
-                else begin
-                    add_r$0$d = t$3$q == cyc_add$0 - 32'h1;
-                end
-            end
-            if (view$0 == 4) begin
-                if (cyc$0 == firsts$4) begin
-                    act_r$0$d = enter$4;
-                end
-                else begin
-                    act_r$0$d = t$4$q == cyc$0 - 32'h1;
-                end
-            end
-            if (view_add$0 == 4) begin
-                if (cyc_add$0 == firsts$4) begin
-                    add_r$0$d = enter$4;
-                end
-                else begin
-                    add_r$0$d = t$4$q == cyc_add$0 - 32'h1;
-                end
-            end
-            if (view$0 == 5) begin
-                if (cyc$0 == firsts$5) begin
-                    act_r$0$d = enter$5;
-                end
-                else begin
-                    act_r$0$d = t$5$q == cyc$0 - 32'h1;
-                end
-            end
-            if (view_add$0 == 5) begin
-                if (cyc_add$0 == firsts$5) begin
-                    add_r$0$d = enter$5;
-                end
-                else begin
-                    add_r$0$d = t$5$q == cyc_add$0 - 32'h1;
-                end
-            end
         end
-        act_r$1$clock = clock;
-        act_r$1$d = act_r$1$q;
-        add_r$1$clock = clock;
-        add_r$1$d = add_r$1$q;
+        tok$1$d = tok_n$1;
+        tok_n$2 = tok$2$q;
         if (run) begin
-            act_r$1$d = 1'b0;
-            add_r$1$d = 1'b0;
-            if (view$1 == 0) begin
-                if (cyc$1 == firsts$0) begin
-                    act_r$1$d = enter$0;
-                end
-                else begin
-                    act_r$1$d = t$0$q == cyc$1 - 32'h1;
-                end
-            end
-            if (view_add$1 == 0) begin
-                if (cyc_add$1 == firsts$0) begin
-                    add_r$1$d = enter$0;
-                end
-                else begin
-                    add_r$1$d = t$0$q == cyc_add$1 - 32'h1;
-                end
-            end
-            if (view$1 == 1) begin
-                if (cyc$1 == firsts$1) begin
-                    act_r$1$d = enter$1;
-                end
-                else begin
-                    act_r$1$d = t$1$q == cyc$1 - 32'h1;
-                end
-            end
-            if (view_add$1 == 1) begin
-                if (cyc_add$1 == firsts$1) begin
-                    add_r$1$d = enter$1;
-                end
-                else begin
-                    add_r$1$d = t$1$q == cyc_add$1 - 32'h1;
-                end
-            end
-            if (view$1 == 2) begin
-                if (cyc$1 == firsts$2) begin
-                    act_r$1$d = enter$2;
-                end
-                else begin
-                    act_r$1$d = t$2$q == cyc$1 - 32'h1;
-                end
-            end
-            if (view_add$1 == 2) begin
-                if (cyc_add$1 == firsts$2) begin
-                    add_r$1$d = enter$2;
-                end
-                else begin
-                    add_r$1$d = t$2$q == cyc_add$1 - 32'h1;
-                end
-            end
-            if (view$1 == 3) begin
-                if (cyc$1 == firsts$3) begin
-                    act_r$1$d = enter$3;
-                end
-                else begin
-                    act_r$1$d = t$3$q == cyc$1 - 32'h1;
-                end
-            end
-            if (view_add$1 == 3) begin
-                if (cyc_add$1 == firsts$3) begin
-                    add_r$1$d = enter$3;
-                end
-                else begin
-                    add_r$1$d = t$3$q == cyc_add$1 - 32'h1;
-                end
-            end
-            if (view$1 == 4) begin
-                if (cyc$1 == firsts$4) begin
-                    act_r$1$d = enter$4;
-                end
-                else begin
-                    act_r$1$d = t$4$q == cyc$1 - 32'h1;
-                end
-            end
-            if (view_add$1 == 4) begin
-                if (cyc_add$1 == firsts$4) begin
-                    add_r$1$d = enter$4;
-                end
-                else begin
-                    add_r$1$d = t$4$q == cyc_add$1 - 32'h1;
-                end
-            end
-            if (view$1 == 5) begin
-                if (cyc$1 == firsts$5) begin
-                    act_r$1$d = enter$5;
-                end
-                else begin
-                    act_r$1$d = t$5$q == cyc$1 - 32'h1;
-                end
+            tok_n$2 = (tok$2$q << 32'h1) & tok_mask$2;
+            if (enter$2) begin
+                tok_n$2 = ((tok$2$q << 32'h1) | 32'h1) & tok_mask$2;
             end
-            if (view_add$1 == 5) begin
-                if (cyc_add$1 == firsts$5) begin
-                    add_r$1$d = enter$5;
-                end
-                else begin
-                    add_r$1$d = t$5$q == cyc_add$1 - 32'h1;
-                end
-            end
         end
-        act_r$2$clock = clock;
-        act_r$2$d = act_r$2$q;
-        add_r$2$clock = clock;
-        add_r$2$d = add_r$2$q;
+        tok$2$d = tok_n$2;
+        tok_n$3 = tok$3$q;
         if (run) begin
-            act_r$2$d = 1'b0;
-            add_r$2$d = 1'b0;
-            if (view$2 == 0) begin
-                if (cyc$2 == firsts$0) begin
-                    act_r$2$d = enter$0;
-                end
-                else begin
-                    act_r$2$d = t$0$q == cyc$2 - 32'h1;
-                end
-            end
-            if (view_add$2 == 0) begin
-                if (cyc_add$2 == firsts$0) begin
-                    add_r$2$d = enter$0;
-                end
-                else begin
-                    add_r$2$d = t$0$q == cyc_add$2 - 32'h1;
-                end
-            end
-            if (view$2 == 1) begin
-                if (cyc$2 == firsts$1) begin
-                    act_r$2$d = enter$1;
-                end
-                else begin
-                    act_r$2$d = t$1$q == cyc$2 - 32'h1;
-                end
-            end
-            if (view_add$2 == 1) begin
-                if (cyc_add$2 == firsts$1) begin
-                    add_r$2$d = enter$1;
-                end
-                else begin
-                    add_r$2$d = t$1$q == cyc_add$2 - 32'h1;
-                end
-            end
-            if (view$2 == 2) begin
-                if (cyc$2 == firsts$2) begin
-                    act_r$2$d = enter$2;
-                end
-                else begin
-                    act_r$2$d = t$2$q == cyc$2 - 32'h1;
-                end
-            end
-            if (view_add$2 == 2) begin
-                if (cyc_add$2 == firsts$2) begin
-                    add_r$2$d = enter$2;
-                end
-                else begin
-                    add_r$2$d = t$2$q == cyc_add$2 - 32'h1;
-                end
-            end
-            if (view$2 == 3) begin
-                if (cyc$2 == firsts$3) begin
-                    act_r$2$d = enter$3;
-                end
-                else begin
-                    act_r$2$d = t$3$q == cyc$2 - 32'h1;
-                end
-            end
-            if (view_add$2 == 3) begin
-                if (cyc_add$2 == firsts$3) begin
-                    add_r$2$d = enter$3;
-                end
-                else begin
-                    add_r$2$d = t$3$q == cyc_add$2 - 32'h1;
-                end
+            tok_n$3 = (tok$3$q << 32'h1) & tok_mask$3;
+            if (enter$3) begin
+                tok_n$3 = ((tok$3$q << 32'h1) | 32'h1) & tok_mask$3;
             end
-            if (view$2 == 4) begin
-                if (cyc$2 == firsts$4) begin
-                    act_r$2$d = enter$4;
-                end
-                else begin
-                    act_r$2$d = t$4$q == cyc$2 - 32'h1;
-                end
-            end
-            if (view_add$2 == 4) begin
-                if (cyc_add$2 == firsts$4) begin
-                    add_r$2$d = enter$4;
-                end
-                else begin
-                    add_r$2$d = t$4$q == cyc_add$2 - 32'h1;
-                end
-            end
-            if (view$2 == 5) begin
-                if (cyc$2 == firsts$5) begin
-                    act_r$2$d = enter$5;
-                end
-                else begin
-                    act_r$2$d = t$5$q == cyc$2 - 32'h1;
-                end
-            end
-            if (view_add$2 == 5) begin
-                if (cyc_add$2 == firsts$5) begin
-                    add_r$2$d = enter$5;
-                end
-                else begin
-                    add_r$2$d = t$5$q == cyc_add$2 - 32'h1;
-                end
-            end
         end
-        act_r$3$clock = clock;
-        act_r$3$d = act_r$3$q;
-        add_r$3$clock = clock;
-        add_r$3$d = add_r$3$q;
+        tok$3$d = tok_n$3;
+        tok_n$4 = tok$4$q;
         if (run) begin
-            act_r$3$d = 1'b0;
-            add_r$3$d = 1'b0;
-            if (view$3 == 0) begin
-                if (cyc$3 == firsts$0) begin
-                    act_r$3$d = enter$0;
-                end
-                else begin
-                    act_r$3$d = t$0$q == cyc$3 - 32'h1;
-                end
-            end
-            if (view_add$3 == 0) begin
-                if (cyc_add$3 == firsts$0) begin
-                    add_r$3$d = enter$0;
-                end
-                else begin
-                    add_r$3$d = t$0$q == cyc_add$3 - 32'h1;
-                end
-            end
-            if (view$3 == 1) begin
-                if (cyc$3 == firsts$1) begin
-                    act_r$3$d = enter$1;
-                end
-                else begin
-                    act_r$3$d = t$1$q == cyc$3 - 32'h1;
-                end
-            end
-            if (view_add$3 == 1) begin
-                if (cyc_add$3 == firsts$1) begin
-                    add_r$3$d = enter$1;
-                end
-                else begin
-                    add_r$3$d = t$1$q == cyc_add$3 - 32'h1;
-                end
-            end
-            if (view$3 == 2) begin
-                if (cyc$3 == firsts$2) begin
-                    act_r$3$d = enter$2;
-                end
-                else begin
-                    act_r$3$d = t$2$q == cyc$3 - 32'h1;
-                end
+            tok_n$4 = (tok$4$q << 32'h1) & tok_mask$4;
+            if (enter$4) begin
+                tok_n$4 = ((tok$4$q << 32'h1) | 32'h1) & tok_mask$4;
             end
-            if (view_add$3 == 2) begin
-                if (cyc_add$3 == firsts$2) begin
-                    add_r$3$d = enter$2;
-                end
-                else begin
-                    add_r$3$d = t$2$q == cyc_add$3 - 32'h1;
-                end
-            end
-            if (view$3 == 3) begin
-                if (cyc$3 == firsts$3) begin
-                    act_r$3$d = enter$3;
-                end
-                else begin
-                    act_r$3$d = t$3$q == cyc$3 - 32'h1;
-                end
-            end
-            if (view_add$3 == 3) begin
-                if (cyc_add$3 == firsts$3) begin
-                    add_r$3$d = enter$3;
-                end
-                else begin
-                    add_r$3$d = t$3$q == cyc_add$3 - 32'h1;
-                end
-            end
-            if (view$3 == 4) begin
-                if (cyc$3 == firsts$4) begin
-                    act_r$3$d = enter$4;
-                end
-                else begin
-                    act_r$3$d = t$4$q == cyc$3 - 32'h1;
-                end
-            end
-            if (view_add$3 == 4) begin
-                if (cyc_add$3 == firsts$4) begin
-                    add_r$3$d = enter$4;
-                end
-                else begin
-                    add_r$3$d = t$4$q == cyc_add$3 - 32'h1;
-                end
-            end
-            if (view$3 == 5) begin
-                if (cyc$3 == firsts$5) begin
-                    act_r$3$d = enter$5;
-                end
-                else begin
-                    act_r$3$d = t$5$q == cyc$3 - 32'h1;
-                end
-            end
-            if (view_add$3 == 5) begin
-                if (cyc_add$3 == firsts$5) begin
-                    add_r$3$d = enter$5;
-                end
-                else begin
-                    add_r$3$d = t$5$q == cyc_add$3 - 32'h1;
-                end
-            end
         end
-        act_r$4$clock = clock;
-        act_r$4$d = act_r$4$q;
-        add_r$4$clock = clock;
-        add_r$4$d = add_r$4$q;
+        tok$4$d = tok_n$4;
+        tok_n$5 = tok$5$q;
         if (run) begin
-            act_r$4$d = 1'b0;
-            add_r$4$d = 1'b0;
-            if (view$4 == 0) begin
-                if (cyc$4 == firsts$0) begin
-                    act_r$4$d = enter$0;
-                end
-                else begin
-                    act_r$4$d = t$0$q == cyc$4 - 32'h1;
-                end
-            end
-            if (view_add$4 == 0) begin
-                if (cyc_add$4 == firsts$0) begin
-                    add_r$4$d = enter$0;
-                end
-                else begin
-                    add_r$4$d = t$0$q == cyc_add$4 - 32'h1;
-                end
-            end
-            if (view$4 == 1) begin
-                if (cyc$4 == firsts$1) begin
-                    act_r$4$d = enter$1;
-                end
-                else begin
-                    act_r$4$d = t$1$q == cyc$4 - 32'h1;
-                end
-            end
-            if (view_add$4 == 1) begin
-                if (cyc_add$4 == firsts$1) begin
-                    add_r$4$d = enter$1;
-                end
-                else begin
-                    add_r$4$d = t$1$q == cyc_add$4 - 32'h1;
-                end
-            end
-            if (view$4 == 2) begin
-                if (cyc$4 == firsts$2) begin
-                    act_r$4$d = enter$2;
-                end
-                else begin
-                    act_r$4$d = t$2$q == cyc$4 - 32'h1;
-                end
-            end
-            if (view_add$4 == 2) begin
-                if (cyc_add$4 == firsts$2) begin
-                    add_r$4$d = enter$2;
-                end
-                else begin
-                    add_r$4$d = t$2$q == cyc_add$4 - 32'h1;
-                end
-            end
-            if (view$4 == 3) begin
-                if (cyc$4 == firsts$3) begin
-                    act_r$4$d = enter$3;
-                end
-                else begin
-                    act_r$4$d = t$3$q == cyc$4 - 32'h1;
-                end
-            end
-            if (view_add$4 == 3) begin
-                if (cyc_add$4 == firsts$3) begin
-                    add_r$4$d = enter$3;
-                end
-                else begin
-                    add_r$4$d = t$3$q == cyc_add$4 - 32'h1;
-                end
-            end
-            if (view$4 == 4) begin
-                if (cyc$4 == firsts$4) begin
-                    act_r$4$d = enter$4;
-                end
-                else begin
-                    act_r$4$d = t$4$q == cyc$4 - 32'h1;
-                end
-            end
-            if (view_add$4 == 4) begin
-                if (cyc_add$4 == firsts$4) begin
-                    add_r$4$d = enter$4;
-                end
-                else begin
-                    add_r$4$d = t$4$q == cyc_add$4 - 32'h1;
-                end
+            tok_n$5 = (tok$5$q << 32'h1) & tok_mask$5;
+            if (enter$5) begin
+                tok_n$5 = ((tok$5$q << 32'h1) | 32'h1) & tok_mask$5;
             end
-            if (view$4 == 5) begin
-                if (cyc$4 == firsts$5) begin
-                    act_r$4$d = enter$5;
-                end
-                else begin
-                    act_r$4$d = t$5$q == cyc$4 - 32'h1;
-                end
-            end
-            if (view_add$4 == 5) begin
-                if (cyc_add$4 == firsts$5) begin
-                    add_r$4$d = enter$5;
-                end
-                else begin
-                    add_r$4$d = t$5$q == cyc_add$4 - 32'h1;
-                end
-            end
         end
-        act_r$5$clock = clock;
-        act_r$5$d = act_r$5$q;
-        add_r$5$clock = clock;
-        add_r$5$d = add_r$5$q;
-        if (run) begin
-            act_r$5$d = 1'b0;
-            add_r$5$d = 1'b0;
-            if (view$5 == 0) begin
-                if (cyc$5 == firsts$0) begin
-                    act_r$5$d = enter$0;
-                end
-                else begin
-                    act_r$5$d = t$0$q == cyc$5 - 32'h1;
-                end
-            end
-            if (view_add$5 == 0) begin
-                if (cyc_add$5 == firsts$0) begin
-                    add_r$5$d = enter$0;
-                end
-                else begin
-                    add_r$5$d = t$0$q == cyc_add$5 - 32'h1;
-                end
-            end
-            if (view$5 == 1) begin
-                if (cyc$5 == firsts$1) begin
-                    act_r$5$d = enter$1;
-                end
-                else begin
-                    act_r$5$d = t$1$q == cyc$5 - 32'h1;
-                end
-            end
-            if (view_add$5 == 1) begin
-                if (cyc_add$5 == firsts$1) begin
-                    add_r$5$d = enter$1;
-                end
-                else begin
-                    add_r$5$d = t$1$q == cyc_add$5 - 32'h1;
-                end
-            end
-            if (view$5 == 2) begin
-                if (cyc$5 == firsts$2) begin
-                    act_r$5$d = enter$2;
-                end
-                else begin
-                    act_r$5$d = t$2$q == cyc$5 - 32'h1;
-                end
-            end
-            if (view_add$5 == 2) begin
-                if (cyc_add$5 == firsts$2) begin
-                    add_r$5$d = enter$2;
-                end
-                else begin
-                    add_r$5$d = t$2$q == cyc_add$5 - 32'h1;
-                end
-            end
-            if (view$5 == 3) begin
-                if (cyc$5 == firsts$3) begin
-                    act_r$5$d = enter$3;
-                end
-                else begin
-                    act_r$5$d = t$3$q == cyc$5 - 32'h1;
-                end
-            end
-            if (view_add$5 == 3) begin
-                if (cyc_add$5 == firsts$3) begin
-                    add_r$5$d = enter$3;
-                end
-                else begin
-                    add_r$5$d = t$3$q == cyc_add$5 - 32'h1;
-                end
-            end
-            if (view$5 == 4) begin
-                if (cyc$5 == firsts$4) begin
-                    act_r$5$d = enter$4;
-                end
-                else begin
-                    act_r$5$d = t$4$q == cyc$5 - 32'h1;
-                end
-            end
-            if (view_add$5 == 4) begin
-                if (cyc_add$5 == firsts$4) begin
-                    add_r$5$d = enter$4;
-                end
-                else begin
-                    add_r$5$d = t$4$q == cyc_add$5 - 32'h1;
-                end
-            end
-            if (view$5 == 5) begin
-                if (cyc$5 == firsts$5) begin
-                    act_r$5$d = enter$5;
-                end
-                else begin
-                    act_r$5$d = t$5$q == cyc$5 - 32'h1;
-                end
-            end
-            if (view_add$5 == 5) begin
-                if (cyc_add$5 == firsts$5) begin
-                    add_r$5$d = enter$5;
-                end
-                else begin
-                    add_r$5$d = t$5$q == cyc_add$5 - 32'h1;
-                end
-            end
+        tok$5$d = tok_n$5;
+        act$0 = 1'b0;
+        add$0 = 1'b0;
+        if (view$0 == 0) begin
+            act$0 = tok$0$q[act_bit$0];
         end
-        act_r$6$clock = clock;
-        act_r$6$d = act_r$6$q;
-        add_r$6$clock = clock;
-        add_r$6$d = add_r$6$q;
-        if (run) begin
-            act_r$6$d = 1'b0;
-            add_r$6$d = 1'b0;
-            if (view$6 == 0) begin
-                if (cyc$6 == firsts$0) begin
-                    act_r$6$d = enter$0;
-                end
-                else begin
-                    act_r$6$d = t$0$q == cyc$6 - 32'h1;
-                end
-            end
-            if (view_add$6 == 0) begin
-                if (cyc_add$6 == firsts$0) begin
-                    add_r$6$d = enter$0;
-                end
-                else begin
-                    add_r$6$d = t$0$q == cyc_add$6 - 32'h1;
-                end
-            end
-            if (view$6 == 1) begin
-                if (cyc$6 == firsts$1) begin
-                    act_r$6$d = enter$1;
-                end
-                else begin
-                    act_r$6$d = t$1$q == cyc$6 - 32'h1;
-                end
-            end
-            if (view_add$6 == 1) begin
-                if (cyc_add$6 == firsts$1) begin
-                    add_r$6$d = enter$1;
-                end
-                else begin
-                    add_r$6$d = t$1$q == cyc_add$6 - 32'h1;
-                end
-            end
-            if (view$6 == 2) begin
-                if (cyc$6 == firsts$2) begin
-                    act_r$6$d = enter$2;
-                end
-                else begin
-                    act_r$6$d = t$2$q == cyc$6 - 32'h1;
-                end
-            end
-            if (view_add$6 == 2) begin
-                if (cyc_add$6 == firsts$2) begin
-                    add_r$6$d = enter$2;
-                end
-                else begin
-                    add_r$6$d = t$2$q == cyc_add$6 - 32'h1;
-                end
-            end
-            if (view$6 == 3) begin
-                if (cyc$6 == firsts$3) begin
-                    act_r$6$d = enter$3;
-                end
-                else begin
-                    act_r$6$d = t$3$q == cyc$6 - 32'h1;
-                end
-            end
-            if (view_add$6 == 3) begin
-                if (cyc_add$6 == firsts$3) begin
-                    add_r$6$d = enter$3;
-                end
-                else begin
-                    add_r$6$d = t$3$q == cyc_add$6 - 32'h1;
-                end
-            end
-            if (view$6 == 4) begin
-                if (cyc$6 == firsts$4) begin
-                    act_r$6$d = enter$4;
-                end
-                else begin
-                    act_r$6$d = t$4$q == cyc$6 - 32'h1;
-                end
-            end
-            if (view_add$6 == 4) begin
-                if (cyc_add$6 == firsts$4) begin
-                    add_r$6$d = enter$4;
-                end
-                else begin
-                    add_r$6$d = t$4$q == cyc_add$6 - 32'h1;
-                end
-            end
-            if (view$6 == 5) begin
-                if (cyc$6 == firsts$5) begin
-                    act_r$6$d = enter$5;
-                end
-                else begin
-                    act_r$6$d = t$5$q == cyc$6 - 32'h1;
-                end
-            end
-            if (view_add$6 == 5) begin
-                if (cyc_add$6 == firsts$5) begin
-                    add_r$6$d = enter$5;
-                end
-                else begin
-                    add_r$6$d = t$5$q == cyc_add$6 - 32'h1;
-                end
-            end
+        if (view_add$0 == 0) begin
+            add$0 = tok$0$q[add_bit$0];
         end
-        act_r$7$clock = clock;
-        act_r$7$d = act_r$7$q;
-        add_r$7$clock = clock;
-        add_r$7$d = add_r$7$q;
-        if (run) begin
-            act_r$7$d = 1'b0;
-            add_r$7$d = 1'b0;
-            if (view$7 == 0) begin
-                if (cyc$7 == firsts$0) begin
-                    act_r$7$d = enter$0;
-                end
-                else begin
-                    act_r$7$d = t$0$q == cyc$7 - 32'h1;
-                end
-            end
-            if (view_add$7 == 0) begin
-                if (cyc_add$7 == firsts$0) begin
-                    add_r$7$d = enter$0;
-                end
-                else begin
-                    add_r$7$d = t$0$q == cyc_add$7 - 32'h1;
-                end
-            end
-            if (view$7 == 1) begin
-                if (cyc$7 == firsts$1) begin
-                    act_r$7$d = enter$1;
-                end
-                else begin
-                    act_r$7$d = t$1$q == cyc$7 - 32'h1;
-                end
-            end
-            if (view_add$7 == 1) begin
-                if (cyc_add$7 == firsts$1) begin
-                    add_r$7$d = enter$1;
-                end
-                else begin
-                    add_r$7$d = t$1$q == cyc_add$7 - 32'h1;
-                end
-            end
-            if (view$7 == 2) begin
-                if (cyc$7 == firsts$2) begin
-                    act_r$7$d = enter$2;
-                end
-                else begin
-                    act_r$7$d = t$2$q == cyc$7 - 32'h1;
-                end
-            end
-            if (view_add$7 == 2) begin
-                if (cyc_add$7 == firsts$2) begin
-                    add_r$7$d = enter$2;
-                end
-                else begin
-                    add_r$7$d = t$2$q == cyc_add$7 - 32'h1;
-                end
-            end
-            if (view$7 == 3) begin
-                if (cyc$7 == firsts$3) begin
-                    act_r$7$d = enter$3;
-                end
-                else begin
-                    act_r$7$d = t$3$q == cyc$7 - 32'h1;
-                end
-            end
-            if (view_add$7 == 3) begin
-                if (cyc_add$7 == firsts$3) begin
-                    add_r$7$d = enter$3;
-                end
-                else begin
-                    add_r$7$d = t$3$q == cyc_add$7 - 32'h1;
-                end
-            end
-            if (view$7 == 4) begin
-                if (cyc$7 == firsts$4) begin
-                    act_r$7$d = enter$4;
-                end
-                else begin
-                    act_r$7$d = t$4$q == cyc$7 - 32'h1;
-                end
-            end
-            if (view_add$7 == 4) begin
-                if (cyc_add$7 == firsts$4) begin
-                    add_r$7$d = enter$4;
-                end
-                else begin
-                    add_r$7$d = t$4$q == cyc_add$7 - 32'h1;
-                end
-            end
-            if (view$7 == 5) begin
-                if (cyc$7 == firsts$5) begin
-                    act_r$7$d = enter$5;
-                end
-                else begin
-                    act_r$7$d = t$5$q == cyc$7 - 32'h1;
-                end
-            end
-            if (view_add$7 == 5) begin
-                if (cyc_add$7 == firsts$5) begin
-                    add_r$7$d = enter$5;
-                end
-                else begin
-                    add_r$7$d = t$5$q == cyc_add$7 - 32'h1;
-                end
-            end
+        if (view$0 == 1) begin
+            act$0 = tok$1$q[act_bit$0];
         end
-        act_r$8$clock = clock;
-        act_r$8$d = act_r$8$q;
-        add_r$8$clock = clock;
-        add_r$8$d = add_r$8$q;
-        if (run) begin
-            act_r$8$d = 1'b0;
-            add_r$8$d = 1'b0;
-            if (view$8 == 0) begin
-                if (cyc$8 == firsts$0) begin
-                    act_r$8$d = enter$0;
-                end
-                else begin
-                    act_r$8$d = t$0$q == cyc$8 - 32'h1;
-                end
-            end
-            if (view_add$8 == 0) begin
-                if (cyc_add$8 == firsts$0) begin
-                    add_r$8$d = enter$0;
-                end
-                else begin
-                    add_r$8$d = t$0$q == cyc_add$8 - 32'h1;
-                end
-            end
-            if (view$8 == 1) begin
-                if (cyc$8 == firsts$1) begin
-                    act_r$8$d = enter$1;
-                end
-                else begin
-                    act_r$8$d = t$1$q == cyc$8 - 32'h1;
-                end
-            end
-            if (view_add$8 == 1) begin
-                if (cyc_add$8 == firsts$1) begin
-                    add_r$8$d = enter$1;
-                end
-                else begin
-                    add_r$8$d = t$1$q == cyc_add$8 - 32'h1;
-                end
-            end
-            if (view$8 == 2) begin
-                if (cyc$8 == firsts$2) begin
-                    act_r$8$d = enter$2;
-                end
-                else begin
-                    act_r$8$d = t$2$q == cyc$8 - 32'h1;
-                end
-            end
-            if (view_add$8 == 2) begin
-                if (cyc_add$8 == firsts$2) begin
-                    add_r$8$d = enter$2;
-                end
-                else begin
-                    add_r$8$d = t$2$q == cyc_add$8 - 32'h1;
-                end
-            end
-            if (view$8 == 3) begin
-                if (cyc$8 == firsts$3) begin
-                    act_r$8$d = enter$3;
-                end
-                else begin
-                    act_r$8$d = t$3$q == cyc$8 - 32'h1;
-                end
-            end
-            if (view_add$8 == 3) begin
-                if (cyc_add$8 == firsts$3) begin
-                    add_r$8$d = enter$3;
-                end
-                else begin
-                    add_r$8$d = t$3$q == cyc_add$8 - 32'h1;
-                end
-            end
-            if (view$8 == 4) begin
-                if (cyc$8 == firsts$4) begin
-                    act_r$8$d = enter$4;
-                end
-                else begin
-                    act_r$8$d = t$4$q == cyc$8 - 32'h1;
-                end
-            end
-            if (view_add$8 == 4) begin
-                if (cyc_add$8 == firsts$4) begin
-                    add_r$8$d = enter$4;
-                end
-                else begin
-                    add_r$8$d = t$4$q == cyc_add$8 - 32'h1;
-                end
-            end
-            if (view$8 == 5) begin
-                if (cyc$8 == firsts$5) begin
-                    act_r$8$d = enter$5;
-                end
-                else begin
-                    act_r$8$d = t$5$q == cyc$8 - 32'h1;
-                end
-            end
-            if (view_add$8 == 5) begin
-                if (cyc_add$8 == firsts$5) begin
-                    add_r$8$d = enter$5;
-                end
-                else begin
-                    add_r$8$d = t$5$q == cyc_add$8 - 32'h1;
-                end
-            end
+        if (view_add$0 == 1) begin
+            add$0 = tok$1$q[add_bit$0];
         end
-        act_r$9$clock = clock;
-        act_r$9$d = act_r$9$q;
-        add_r$9$clock = clock;
-        add_r$9$d = add_r$9$q;
-        if (run) begin
-            act_r$9$d = 1'b0;
-            add_r$9$d = 1'b0;
-            if (view$9 == 0) begin
-                if (cyc$9 == firsts$0) begin
-                    act_r$9$d = enter$0;
-                end
-                else begin
-                    act_r$9$d = t$0$q == cyc$9 - 32'h1;
-                end
-            end
-            if (view_add$9 == 0) begin
-                if (cyc_add$9 == firsts$0) begin
-                    add_r$9$d = enter$0;
-                end
-                else begin
-                    add_r$9$d = t$0$q == cyc_add$9 - 32'h1;
-                end
-            end
-            if (view$9 == 1) begin
-                if (cyc$9 == firsts$1) begin
-                    act_r$9$d = enter$1;
-                end
-                else begin
-                    act_r$9$d = t$1$q == cyc$9 - 32'h1;
-                end
-            end
-            if (view_add$9 == 1) begin
-                if (cyc_add$9 == firsts$1) begin
-                    add_r$9$d = enter$1;
-                end
-                else begin
-                    add_r$9$d = t$1$q == cyc_add$9 - 32'h1;
-                end
-            end
-            if (view$9 == 2) begin
-                if (cyc$9 == firsts$2) begin
-                    act_r$9$d = enter$2;
-                end
-                else begin
-                    act_r$9$d = t$2$q == cyc$9 - 32'h1;
-                end
-            end
-            if (view_add$9 == 2) begin
-                if (cyc_add$9 == firsts$2) begin
-                    add_r$9$d = enter$2;
-                end
-                else begin
-                    add_r$9$d = t$2$q == cyc_add$9 - 32'h1;
-                end
-            end
-            if (view$9 == 3) begin
-                if (cyc$9 == firsts$3) begin
-                    act_r$9$d = enter$3;
-                end
-                else begin
-                    act_r$9$d = t$3$q == cyc$9 - 32'h1;
-                end
-            end
-            if (view_add$9 == 3) begin
-                if (cyc_add$9 == firsts$3) begin
-                    add_r$9$d = enter$3;
-                end
-                else begin
-                    add_r$9$d = t$3$q == cyc_add$9 - 32'h1;
-                end
-            end
-            if (view$9 == 4) begin
-                if (cyc$9 == firsts$4) begin
-                    act_r$9$d = enter$4;
-                end
-                else begin
-                    act_r$9$d = t$4$q == cyc$9 - 32'h1;
-                end
-            end
-            if (view_add$9 == 4) begin
-                if (cyc_add$9 == firsts$4) begin
-                    add_r$9$d = enter$4;
-                end
-                else begin
-                    add_r$9$d = t$4$q == cyc_add$9 - 32'h1;
-                end
-            end
-            if (view$9 == 5) begin
-                if (cyc$9 == firsts$5) begin
-                    act_r$9$d = enter$5;
-                end
-                else begin
-                    act_r$9$d = t$5$q == cyc$9 - 32'h1;
-                end
-            end
-            if (view_add$9 == 5) begin
-                if (cyc_add$9 == firsts$5) begin
-                    add_r$9$d = enter$5;
-                end
-                else begin
-                    add_r$9$d = t$5$q == cyc_add$9 - 32'h1;
-                end
-            end
+        if (view$0 == 2) begin
+            act$0 = tok$2$q[act_bit$0];
         end
-        act_r$10$clock = clock;
-        act_r$10$d = act_r$10$q;
-        add_r$10$clock = clock;
-        add_r$10$d = add_r$10$q;
-        if (run) begin
-            act_r$10$d = 1'b0;
-            add_r$10$d = 1'b0;
-            if (view$10 == 0) begin
-                if (cyc$10 == firsts$0) begin
-                    act_r$10$d = enter$0;
-                end
-                else begin
-                    act_r$10$d = t$0$q == cyc$10 - 32'h1;
-                end
-            end
-            if (view_add$10 == 0) begin
-                if (cyc_add$10 == firsts$0) begin
-                    add_r$10$d = enter$0;
-                end
-                else begin
-                    add_r$10$d = t$0$q == cyc_add$10 - 32'h1;
-                end
-            end
-            if (view$10 == 1) begin
-                if (cyc$10 == firsts$1) begin
-                    act_r$10$d = enter$1;
-                end
-                else begin
-                    act_r$10$d = t$1$q == cyc$10 - 32'h1;
-                end
-            end
-            if (view_add$10 == 1) begin
-                if (cyc_add$10 == firsts$1) begin
-                    add_r$10$d = enter$1;
-                end
-                else begin
-                    add_r$10$d = t$1$q == cyc_add$10 - 32'h1;
-                end
-            end
-            if (view$10 == 2) begin
-                if (cyc$10 == firsts$2) begin
-                    act_r$10$d = enter$2;
-                end
-                else begin
-                    act_r$10$d = t$2$q == cyc$10 - 32'h1;
-                end
-            end
-            if (view_add$10 == 2) begin
-                if (cyc_add$10 == firsts$2) begin
-                    add_r$10$d = enter$2;
-                end
-                else begin
-                    add_r$10$d = t$2$q == cyc_add$10 - 32'h1;
-                end
-            end
-            if (view$10 == 3) begin
-                if (cyc$10 == firsts$3) begin
-                    act_r$10$d = enter$3;
-                end
-                else begin
-                    act_r$10$d = t$3$q == cyc$10 - 32'h1;
-                end
-            end
-            if (view_add$10 == 3) begin
-                if (cyc_add$10 == firsts$3) begin
-                    add_r$10$d = enter$3;
-                end
-                else begin
-                    add_r$10$d = t$3$q == cyc_add$10 - 32'h1;
-                end
-            end
-            if (view$10 == 4) begin
-                if (cyc$10 == firsts$4) begin
-                    act_r$10$d = enter$4;
-                end
-                else begin
-                    act_r$10$d = t$4$q == cyc$10 - 32'h1;
-                end
-            end
-            if (view_add$10 == 4) begin
-                if (cyc_add$10 == firsts$4) begin
-                    add_r$10$d = enter$4;
-                end
-                else begin
-                    add_r$10$d = t$4$q == cyc_add$10 - 32'h1;
-                end
-            end
-            if (view$10 == 5) begin
-                if (cyc$10 == firsts$5) begin
-                    act_r$10$d = enter$5;
-                end
-                else begin
-                    act_r$10$d = t$5$q == cyc$10 - 32'h1;
-                end
-            end
-            if (view_add$10 == 5) begin
-                if (cyc_add$10 == firsts$5) begin
-                    add_r$10$d = enter$5;
-                end
-                else begin
-                    add_r$10$d = t$5$q == cyc_add$10 - 32'h1;
-                end
-            end
+        if (view_add$0 == 2) begin
+            add$0 = tok$2$q[add_bit$0];
         end
-        act_r$11$clock = clock;
-        act_r$11$d = act_r$11$q;
-        add_r$11$clock = clock;
-        add_r$11$d = add_r$11$q;
-        if (run) begin
-            act_r$11$d = 1'b0;
-            add_r$11$d = 1'b0;
-            if (view$11 == 0) begin
-                if (cyc$11 == firsts$0) begin
-                    act_r$11$d = enter$0;
-                end
-                else begin
-                    act_r$11$d = t$0$q == cyc$11 - 32'h1;
-                end
-            end
-            if (view_add$11 == 0) begin
-                if (cyc_add$11 == firsts$0) begin
-                    add_r$11$d = enter$0;
-                end
-                else begin
-                    add_r$11$d = t$0$q == cyc_add$11 - 32'h1;
-                end
-            end
-            if (view$11 == 1) begin
-                if (cyc$11 == firsts$1) begin
-                    act_r$11$d = enter$1;
-                end
-                else begin
-                    act_r$11$d = t$1$q == cyc$11 - 32'h1;
-                end
-            end
-            if (view_add$11 == 1) begin
-                if (cyc_add$11 == firsts$1) begin
-                    add_r$11$d = enter$1;
-                end
-                else begin
-                    add_r$11$d = t$1$q == cyc_add$11 - 32'h1;
-                end
-            end
-            if (view$11 == 2) begin
-                if (cyc$11 == firsts$2) begin
-                    act_r$11$d = enter$2;
-                end
-                else begin
-                    act_r$11$d = t$2$q == cyc$11 - 32'h1;
-                end
-            end
-            if (view_add$11 == 2) begin
-                if (cyc_add$11 == firsts$2) begin
-                    add_r$11$d = enter$2;
-                end
-                else begin
-                    add_r$11$d = t$2$q == cyc_add$11 - 32'h1;
-                end
-            end
-            if (view$11 == 3) begin
-                if (cyc$11 == firsts$3) begin
-                    act_r$11$d = enter$3;
-                end
-                else begin
-                    act_r$11$d = t$3$q == cyc$11 - 32'h1;
-                end
-            end
-            if (view_add$11 == 3) begin
-                if (cyc_add$11 == firsts$3) begin
-                    add_r$11$d = enter$3;
-                end
-                else begin
-                    add_r$11$d = t$3$q == cyc_add$11 - 32'h1;
-                end
-            end
-            if (view$11 == 4) begin
-                if (cyc$11 == firsts$4) begin
-                    act_r$11$d = enter$4;
-                end
-                else begin
-                    act_r$11$d = t$4$q == cyc$11 - 32'h1;
-                end
-            end
-            if (view_add$11 == 4) begin
-                if (cyc_add$11 == firsts$4) begin
-                    add_r$11$d = enter$4;
-                end
-                else begin
-                    add_r$11$d = t$4$q == cyc_add$11 - 32'h1;
-                end
-            end
-            if (view$11 == 5) begin
-                if (cyc$11 == firsts$5) begin
-                    act_r$11$d = enter$5;
-                end
-                else begin
-                    act_r$11$d = t$5$q == cyc$11 - 32'h1;
-                end
-            end
-            if (view_add$11 == 5) begin
-                if (cyc_add$11 == firsts$5) begin
-                    add_r$11$d = enter$5;
-                end
-                else begin
-                    add_r$11$d = t$5$q == cyc_add$11 - 32'h1;
-                end
-            end
+        if (view$0 == 3) begin
+            act$0 = tok$3$q[act_bit$0];
         end
-        act_r$12$clock = clock;
-        act_r$12$d = act_r$12$q;
-        add_r$12$clock = clock;
-        add_r$12$d = add_r$12$q;
-        if (run) begin
-            act_r$12$d = 1'b0;
-            add_r$12$d = 1'b0;
-            if (view$12 == 0) begin
-                if (cyc$12 == firsts$0) begin
-                    act_r$12$d = enter$0;
-                end
-                else begin
-                    act_r$12$d = t$0$q == cyc$12 - 32'h1;
-                end
-            end
-            if (view_add$12 == 0) begin
-                if (cyc_add$12 == firsts$0) begin
-                    add_r$12$d = enter$0;
-                end
-                else begin
-                    add_r$12$d = t$0$q == cyc_add$12 - 32'h1;
-                end
-            end
-            if (view$12 == 1) begin
-                if (cyc$12 == firsts$1) begin
-                    act_r$12$d = enter$1;
-                end
-                else begin
-                    act_r$12$d = t$1$q == cyc$12 - 32'h1;
-                end
-            end
-            if (view_add$12 == 1) begin
-                if (cyc_add$12 == firsts$1) begin
-                    add_r$12$d = enter$1;
-                end
-                else begin
-                    add_r$12$d = t$1$q == cyc_add$12 - 32'h1;
-                end
-            end
-            if (view$12 == 2) begin
-                if (cyc$12 == firsts$2) begin
-                    act_r$12$d = enter$2;
-                end
-                else begin
-                    act_r$12$d = t$2$q == cyc$12 - 32'h1;
-                end
-            end
-            if (view_add$12 == 2) begin
-                if (cyc_add$12 == firsts$2) begin
-                    add_r$12$d = enter$2;
-                end
-                else begin
-                    add_r$12$d = t$2$q == cyc_add$12 - 32'h1;
-                end
-            end
-            if (view$12 == 3) begin
-                if (cyc$12 == firsts$3) begin
-                    act_r$12$d = enter$3;
-                end
-                else begin
-                    act_r$12$d = t$3$q == cyc$12 - 32'h1;
-                end
-            end
-            if (view_add$12 == 3) begin
-                if (cyc_add$12 == firsts$3) begin
-                    add_r$12$d = enter$3;
-                end
-                else begin
-                    add_r$12$d = t$3$q == cyc_add$12 - 32'h1;
-                end
-            end
-            if (view$12 == 4) begin
-                if (cyc$12 == firsts$4) begin
-                    act_r$12$d = enter$4;
-                end
-                else begin
-                    act_r$12$d = t$4$q == cyc$12 - 32'h1;
-                end
-            end
-            if (view_add$12 == 4) begin
-                if (cyc_add$12 == firsts$4) begin
-                    add_r$12$d = enter$4;
-                end
-                else begin
-                    add_r$12$d = t$4$q == cyc_add$12 - 32'h1;
-                end
-            end
-            if (view$12 == 5) begin
-                if (cyc$12 == firsts$5) begin
-                    act_r$12$d = enter$5;
-                end
-                else begin
-                    act_r$12$d = t$5$q == cyc$12 - 32'h1;
-                end
-            end
-            if (view_add$12 == 5) begin
-                if (cyc_add$12 == firsts$5) begin
-                    add_r$12$d = enter$5;
-                end
-                else begin
-                    add_r$12$d = t$5$q == cyc_add$12 - 32'h1;
-                end
-            end
+        if (view_add$0 == 3) begin
+            add$0 = tok$3$q[add_bit$0];
         end
-        act_r$13$clock = clock;
-        act_r$13$d = act_r$13$q;
-        add_r$13$clock = clock;
-        add_r$13$d = add_r$13$q;
-        if (run) begin
-            act_r$13$d = 1'b0;
-            add_r$13$d = 1'b0;
-            if (view$13 == 0) begin
-                if (cyc$13 == firsts$0) begin
-                    act_r$13$d = enter$0;
-                end
-                else begin
-                    act_r$13$d = t$0$q == cyc$13 - 32'h1;
-                end
-            end
-            if (view_add$13 == 0) begin
-                if (cyc_add$13 == firsts$0) begin
-                    add_r$13$d = enter$0;
-                end
-                else begin
-                    add_r$13$d = t$0$q == cyc_add$13 - 32'h1;
-                end
-            end
-            if (view$13 == 1) begin
-                if (cyc$13 == firsts$1) begin
-                    act_r$13$d = enter$1;
-                end
-                else begin
-                    act_r$13$d = t$1$q == cyc$13 - 32'h1;
-                end
-            end
-            if (view_add$13 == 1) begin
-                if (cyc_add$13 == firsts$1) begin
-                    add_r$13$d = enter$1;
-                end
-                else begin
-                    add_r$13$d = t$1$q == cyc_add$13 - 32'h1;
-                end
-            end
-            if (view$13 == 2) begin
-                if (cyc$13 == firsts$2) begin
-                    act_r$13$d = enter$2;
-                end
-                else begin
-                    act_r$13$d = t$2$q == cyc$13 - 32'h1;
-                end
-            end
-            if (view_add$13 == 2) begin
-                if (cyc_add$13 == firsts$2) begin
-                    add_r$13$d = enter$2;
-                end
-                else begin
-                    add_r$13$d = t$2$q == cyc_add$13 - 32'h1;
-                end
-            end
-            if (view$13 == 3) begin
-                if (cyc$13 == firsts$3) begin
-                    act_r$13$d = enter$3;
-                end
-                else begin
-                    act_r$13$d = t$3$q == cyc$13 - 32'h1;
-                end
-            end
-            if (view_add$13 == 3) begin
-                if (cyc_add$13 == firsts$3) begin
-                    add_r$13$d = enter$3;
-                end
-                else begin
-                    add_r$13$d = t$3$q == cyc_add$13 - 32'h1;
-                end
-            end
-            if (view$13 == 4) begin
-                if (cyc$13 == firsts$4) begin
-                    act_r$13$d = enter$4;
-                end
-                else begin
-                    act_r$13$d = t$4$q == cyc$13 - 32'h1;
-                end
-            end
-            if (view_add$13 == 4) begin
-                if (cyc_add$13 == firsts$4) begin
-                    add_r$13$d = enter$4;
-                end
-                else begin
-                    add_r$13$d = t$4$q == cyc_add$13 - 32'h1;
-                end
-            end
-            if (view$13 == 5) begin
-                if (cyc$13 == firsts$5) begin
-                    act_r$13$d = enter$5;
-                end
-                else begin
-                    act_r$13$d = t$5$q == cyc$13 - 32'h1;
-                end
-            end
-            if (view_add$13 == 5) begin
-                if (cyc_add$13 == firsts$5) begin
-                    add_r$13$d = enter$5;
-                end
-                else begin
-                    add_r$13$d = t$5$q == cyc_add$13 - 32'h1;
-                end
-            end
+        if (view$0 == 4) begin
+            act$0 = tok$4$q[act_bit$0];
         end
-        act_r$14$clock = clock;
-        act_r$14$d = act_r$14$q;
-        add_r$14$clock = clock;
-        add_r$14$d = add_r$14$q;
-        if (run) begin
-            act_r$14$d = 1'b0;
-            add_r$14$d = 1'b0;
-            if (view$14 == 0) begin
-                if (cyc$14 == firsts$0) begin
-                    act_r$14$d = enter$0;
-                end
-                else begin
-                    act_r$14$d = t$0$q == cyc$14 - 32'h1;
-                end
-            end
-            if (view_add$14 == 0) begin
-                if (cyc_add$14 == firsts$0) begin
-                    add_r$14$d = enter$0;
-                end
-                else begin
-                    add_r$14$d = t$0$q == cyc_add$14 - 32'h1;
-                end
-            end
-            if (view$14 == 1) begin
-                if (cyc$14 == firsts$1) begin
-                    act_r$14$d = enter$1;
-                end
-                else begin
-                    act_r$14$d = t$1$q == cyc$14 - 32'h1;
-                end
-            end
-            if (view_add$14 == 1) begin
-                if (cyc_add$14 == firsts$1) begin
-                    add_r$14$d = enter$1;
-                end
-                else begin
-                    add_r$14$d = t$1$q == cyc_add$14 - 32'h1;
-                end
-            end
-            if (view$14 == 2) begin
-                if (cyc$14 == firsts$2) begin
-                    act_r$14$d = enter$2;
-                end
-                else begin
-                    act_r$14$d = t$2$q == cyc$14 - 32'h1;
-                end
-            end
-            if (view_add$14 == 2) begin
-                if (cyc_add$14 == firsts$2) begin
-                    add_r$14$d = enter$2;
-                end
-                else begin
-                    add_r$14$d = t$2$q == cyc_add$14 - 32'h1;
-                end
-            end
-            if (view$14 == 3) begin
-                if (cyc$14 == firsts$3) begin
-                    act_r$14$d = enter$3;
-                end
-                else begin
-                    act_r$14$d = t$3$q == cyc$14 - 32'h1;
-                end
-            end
-            if (view_add$14 == 3) begin
-                if (cyc_add$14 == firsts$3) begin
-                    add_r$14$d = enter$3;
-                end
-                else begin
-                    add_r$14$d = t$3$q == cyc_add$14 - 32'h1;
-                end
-            end
-            if (view$14 == 4) begin
-                if (cyc$14 == firsts$4) begin
-                    act_r$14$d = enter$4;
-                end
-                else begin
-                    act_r$14$d = t$4$q == cyc$14 - 32'h1;
-                end
-            end
-            if (view_add$14 == 4) begin
-                if (cyc_add$14 == firsts$4) begin
-                    add_r$14$d = enter$4;
-                end
-                else begin
-                    add_r$14$d = t$4$q == cyc_add$14 - 32'h1;
-                end
-            end
-            if (view$14 == 5) begin
-                if (cyc$14 == firsts$5) begin
-                    act_r$14$d = enter$5;
-                end
-                else begin
-                    act_r$14$d = t$5$q == cyc$14 - 32'h1;
-                end
-            end
-            if (view_add$14 == 5) begin
-                if (cyc_add$14 == firsts$5) begin
-                    add_r$14$d = enter$5;
-                end
-                else begin
-                    add_r$14$d = t$5$q == cyc_add$14 - 32'h1;
-                end
-            end
+        if (view_add$0 == 4) begin
+            add$0 = tok$4$q[add_bit$0];
         end
-        act_r$15$clock = clock;
-        act_r$15$d = act_r$15$q;
-        add_r$15$clock = clock;
-        add_r$15$d = add_r$15$q;
-        if (run) begin
-            act_r$15$d = 1'b0;
-            add_r$15$d = 1'b0;
-            if (view$15 == 0) begin
-                if (cyc$15 == firsts$0) begin
-                    act_r$15$d = enter$0;
-                end
-                else begin
-                    act_r$15$d = t$0$q == cyc$15 - 32'h1;
-                end
-            end
-            if (view_add$15 == 0) begin
-                if (cyc_add$15 == firsts$0) begin
-                    add_r$15$d = enter$0;
-                end
-                else begin
-                    add_r$15$d = t$0$q == cyc_add$15 - 32'h1;
-                end
-            end
-            if (view$15 == 1) begin
-                if (cyc$15 == firsts$1) begin
-                    act_r$15$d = enter$1;
-                end
-                else begin
-                    act_r$15$d = t$1$q == cyc$15 - 32'h1;
-                end
-            end
-            if (view_add$15 == 1) begin
-                if (cyc_add$15 == firsts$1) begin
-                    add_r$15$d = enter$1;
-                end
-                else begin
-                    add_r$15$d = t$1$q == cyc_add$15 - 32'h1;
-                end
-            end
-            if (view$15 == 2) begin
-                if (cyc$15 == firsts$2) begin
-                    act_r$15$d = enter$2;
-                end
-                else begin
-                    act_r$15$d = t$2$q == cyc$15 - 32'h1;
-                end
-            end
-            if (view_add$15 == 2) begin
-                if (cyc_add$15 == firsts$2) begin
-                    add_r$15$d = enter$2;
-                end
-                else begin
-                    add_r$15$d = t$2$q == cyc_add$15 - 32'h1;
-                end
-            end
-            if (view$15 == 3) begin
-                if (cyc$15 == firsts$3) begin
-                    act_r$15$d = enter$3;
-                end
-                else begin
-                    act_r$15$d = t$3$q == cyc$15 - 32'h1;
-                end
-            end
-            if (view_add$15 == 3) begin
-                if (cyc_add$15 == firsts$3) begin
-                    add_r$15$d = enter$3;
-                end
-                else begin
-                    add_r$15$d = t$3$q == cyc_add$15 - 32'h1;
-                end
-            end
-            if (view$15 == 4) begin
-                if (cyc$15 == firsts$4) begin
-                    act_r$15$d = enter$4;
-                end
-                else begin
-                    act_r$15$d = t$4$q == cyc$15 - 32'h1;
-                end
-            end
-            if (view_add$15 == 4) begin
-                if (cyc_add$15 == firsts$4) begin
-                    add_r$15$d = enter$4;
-                end
-                else begin
-                    add_r$15$d = t$4$q == cyc_add$15 - 32'h1;
-                end
-            end
-            if (view$15 == 5) begin
-                if (cyc$15 == firsts$5) begin
-                    act_r$15$d = enter$5;
-                end
-                else begin
-                    act_r$15$d = t$5$q == cyc$15 - 32'h1;
-                end
-            end
-            if (view_add$15 == 5) begin
-                if (cyc_add$15 == firsts$5) begin
-                    add_r$15$d = enter$5;
-                end
-                else begin
-                    add_r$15$d = t$5$q == cyc_add$15 - 32'h1;
-                end
-            end
+        if (view$0 == 5) begin
+            act$0 = tok$5$q[act_bit$0];
         end
-        act_r$16$clock = clock;
-        act_r$16$d = act_r$16$q;
-        add_r$16$clock = clock;
-        add_r$16$d = add_r$16$q;
-        if (run) begin
-            act_r$16$d = 1'b0;
-            add_r$16$d = 1'b0;
-            if (view$16 == 0) begin
-                if (cyc$16 == firsts$0) begin
-                    act_r$16$d = enter$0;
-                end
-                else begin
-                    act_r$16$d = t$0$q == cyc$16 - 32'h1;
-                end
-            end
-            if (view_add$16 == 0) begin
-                if (cyc_add$16 == firsts$0) begin
-                    add_r$16$d = enter$0;
-                end
-                else begin
-                    add_r$16$d = t$0$q == cyc_add$16 - 32'h1;
-                end
-            end
-            if (view$16 == 1) begin
-                if (cyc$16 == firsts$1) begin
-                    act_r$16$d = enter$1;
-                end
-                else begin
-                    act_r$16$d = t$1$q == cyc$16 - 32'h1;
-                end
-            end
-            if (view_add$16 == 1) begin
-                if (cyc_add$16 == firsts$1) begin
-                    add_r$16$d = enter$1;
-                end
-                else begin
-                    add_r$16$d = t$1$q == cyc_add$16 - 32'h1;
-                end
-            end
-            if (view$16 == 2) begin
-                if (cyc$16 == firsts$2) begin
-                    act_r$16$d = enter$2;
-                end
-                else begin
-                    act_r$16$d = t$2$q == cyc$16 - 32'h1;
-                end
-            end
-            if (view_add$16 == 2) begin
-                if (cyc_add$16 == firsts$2) begin
-                    add_r$16$d = enter$2;
-                end
-                else begin
-                    add_r$16$d = t$2$q == cyc_add$16 - 32'h1;
-                end
-            end
-            if (view$16 == 3) begin
-                if (cyc$16 == firsts$3) begin
-                    act_r$16$d = enter$3;
-                end
-                else begin
-                    act_r$16$d = t$3$q == cyc$16 - 32'h1;
-                end
-            end
-            if (view_add$16 == 3) begin
-                if (cyc_add$16 == firsts$3) begin
-                    add_r$16$d = enter$3;
-                end
-                else begin
-                    add_r$16$d = t$3$q == cyc_add$16 - 32'h1;
-                end
-            end
-            if (view$16 == 4) begin
-                if (cyc$16 == firsts$4) begin
-                    act_r$16$d = enter$4;
-                end
-                else begin
-                    act_r$16$d = t$4$q == cyc$16 - 32'h1;
-                end
-            end
-            if (view_add$16 == 4) begin
-                if (cyc_add$16 == firsts$4) begin
-                    add_r$16$d = enter$4;
-                end
-                else begin
-                    add_r$16$d = t$4$q == cyc_add$16 - 32'h1;
-                end
-            end
-            if (view$16 == 5) begin
-                if (cyc$16 == firsts$5) begin
-                    act_r$16$d = enter$5;
-                end
-                else begin
-                    act_r$16$d = t$5$q == cyc$16 - 32'h1;
-                end
-            end
-            if (view_add$16 == 5) begin
-                if (cyc_add$16 == firsts$5) begin
-                    add_r$16$d = enter$5;
-                end
-                else begin
-                    add_r$16$d = t$5$q == cyc_add$16 - 32'h1;
-                end
-            end
+        if (view_add$0 == 5) begin
+            add$0 = tok$5$q[add_bit$0];
         end
-        act_r$17$clock = clock;
-        act_r$17$d = act_r$17$q;
-        add_r$17$clock = clock;
-        add_r$17$d = add_r$17$q;
-        if (run) begin
-            act_r$17$d = 1'b0;
-            add_r$17$d = 1'b0;
-            if (view$17 == 0) begin
-                if (cyc$17 == firsts$0) begin
-                    act_r$17$d = enter$0;
-                end
-                else begin
-                    act_r$17$d = t$0$q == cyc$17 - 32'h1;
-                end
-            end
-            if (view_add$17 == 0) begin
-                if (cyc_add$17 == firsts$0) begin
-                    add_r$17$d = enter$0;
-                end
-                else begin
-                    add_r$17$d = t$0$q == cyc_add$17 - 32'h1;
-                end
-            end
-            if (view$17 == 1) begin
-                if (cyc$17 == firsts$1) begin
-                    act_r$17$d = enter$1;
-                end
-                else begin
-                    act_r$17$d = t$1$q == cyc$17 - 32'h1;
-                end
-            end
-            if (view_add$17 == 1) begin
-                if (cyc_add$17 == firsts$1) begin
-                    add_r$17$d = enter$1;
-                end
-                else begin
-                    add_r$17$d = t$1$q == cyc_add$17 - 32'h1;
-                end
-            end
-            if (view$17 == 2) begin
-                if (cyc$17 == firsts$2) begin
-                    act_r$17$d = enter$2;
-                end
-                else begin
-                    act_r$17$d = t$2$q == cyc$17 - 32'h1;
-                end
-            end
-            if (view_add$17 == 2) begin
-                if (cyc_add$17 == firsts$2) begin
-                    add_r$17$d = enter$2;
-                end
-                else begin
-                    add_r$17$d = t$2$q == cyc_add$17 - 32'h1;
-                end
-            end
-            if (view$17 == 3) begin
-                if (cyc$17 == firsts$3) begin
-                    act_r$17$d = enter$3;
-                end
-                else begin
-                    act_r$17$d = t$3$q == cyc$17 - 32'h1;
-                end
-            end
-            if (view_add$17 == 3) begin
-                if (cyc_add$17 == firsts$3) begin
-                    add_r$17$d = enter$3;
-                end
-                else begin
-                    add_r$17$d = t$3$q == cyc_add$17 - 32'h1;
-                end
-            end
-            if (view$17 == 4) begin
-                if (cyc$17 == firsts$4) begin
-                    act_r$17$d = enter$4;
-                end
-                else begin
-                    act_r$17$d = t$4$q == cyc$17 - 32'h1;
-                end
-            end
-            if (view_add$17 == 4) begin
-                if (cyc_add$17 == firsts$4) begin
-                    add_r$17$d = enter$4;
-                end
-                else begin
-                    add_r$17$d = t$4$q == cyc_add$17 - 32'h1;
-                end
-            end
-            if (view$17 == 5) begin
-                if (cyc$17 == firsts$5) begin
-                    act_r$17$d = enter$5;
-                end
-                else begin
-                    act_r$17$d = t$5$q == cyc$17 - 32'h1;
-                end
-            end
-            if (view_add$17 == 5) begin
-                if (cyc_add$17 == firsts$5) begin
-                    add_r$17$d = enter$5;
-                end
-                else begin
-                    add_r$17$d = t$5$q == cyc_add$17 - 32'h1;
-                end
-            end
+        act$1 = 1'b0;
+        add$1 = 1'b0;
+        if (view$1 == 0) begin
+            act$1 = tok$0$q[act_bit$1];
         end
-        act_r$18$clock = clock;
-        act_r$18$d = act_r$18$q;
-        add_r$18$clock = clock;
-        add_r$18$d = add_r$18$q;
-        if (run) begin
-            act_r$18$d = 1'b0;
-            add_r$18$d = 1'b0;
-            if (view$18 == 0) begin
-                if (cyc$18 == firsts$0) begin
-                    act_r$18$d = enter$0;
-                end
-                else begin
-                    act_r$18$d = t$0$q == cyc$18 - 32'h1;
-                end
-            end
-            if (view_add$18 == 0) begin
-                if (cyc_add$18 == firsts$0) begin
-                    add_r$18$d = enter$0;
-                end
-                else begin
-                    add_r$18$d = t$0$q == cyc_add$18 - 32'h1;
-                end
-            end
-            if (view$18 == 1) begin
-                if (cyc$18 == firsts$1) begin
-                    act_r$18$d = enter$1;
-                end
-                else begin
-                    act_r$18$d = t$1$q == cyc$18 - 32'h1;
-                end
-            end
-            if (view_add$18 == 1) begin
-                if (cyc_add$18 == firsts$1) begin
-                    add_r$18$d = enter$1;
-                end
-                else begin
-                    add_r$18$d = t$1$q == cyc_add$18 - 32'h1;
-                end
-            end
-            if (view$18 == 2) begin
-                if (cyc$18 == firsts$2) begin
-                    act_r$18$d = enter$2;
-                end
-                else begin
-                    act_r$18$d = t$2$q == cyc$18 - 32'h1;
-                end
-            end
-            if (view_add$18 == 2) begin
-                if (cyc_add$18 == firsts$2) begin
-                    add_r$18$d = enter$2;
-                end
-                else begin
-                    add_r$18$d = t$2$q == cyc_add$18 - 32'h1;
-                end
-            end
-            if (view$18 == 3) begin
-                if (cyc$18 == firsts$3) begin
-                    act_r$18$d = enter$3;
-                end
-                else begin
-                    act_r$18$d = t$3$q == cyc$18 - 32'h1;
-                end
-            end
-            if (view_add$18 == 3) begin
-                if (cyc_add$18 == firsts$3) begin
-                    add_r$18$d = enter$3;
-                end
-                else begin
-                    add_r$18$d = t$3$q == cyc_add$18 - 32'h1;
-                end
-            end
-            if (view$18 == 4) begin
-                if (cyc$18 == firsts$4) begin
-                    act_r$18$d = enter$4;
-                end
-                else begin
-                    act_r$18$d = t$4$q == cyc$18 - 32'h1;
-                end
-            end
-            if (view_add$18 == 4) begin
-                if (cyc_add$18 == firsts$4) begin
-                    add_r$18$d = enter$4;
-                end
-                else begin
-                    add_r$18$d = t$4$q == cyc_add$18 - 32'h1;
-                end
-            end
-            if (view$18 == 5) begin
-                if (cyc$18 == firsts$5) begin
-                    act_r$18$d = enter$5;
-                end
-                else begin
-                    act_r$18$d = t$5$q == cyc$18 - 32'h1;
-                end
-            end
-            if (view_add$18 == 5) begin
-                if (cyc_add$18 == firsts$5) begin
-                    add_r$18$d = enter$5;
-                end
-                else begin
-                    add_r$18$d = t$5$q == cyc_add$18 - 32'h1;
-                end
-            end
+        if (view_add$1 == 0) begin
+            add$1 = tok$0$q[add_bit$1];
         end
-        act_r$19$clock = clock;
-        act_r$19$d = act_r$19$q;
-        add_r$19$clock = clock;
-        add_r$19$d = add_r$19$q;
-        if (run) begin
-            act_r$19$d = 1'b0;
-            add_r$19$d = 1'b0;
-            if (view$19 == 0) begin
-                if (cyc$19 == firsts$0) begin
-                    act_r$19$d = enter$0;
-                end
-                else begin
-                    act_r$19$d = t$0$q == cyc$19 - 32'h1;
-                end
-            end
-            if (view_add$19 == 0) begin
-                if (cyc_add$19 == firsts$0) begin
-                    add_r$19$d = enter$0;
-                end
-                else begin
-                    add_r$19$d = t$0$q == cyc_add$19 - 32'h1;
-                end
-            end
-            if (view$19 == 1) begin
-                if (cyc$19 == firsts$1) begin
-                    act_r$19$d = enter$1;
-                end
-                else begin
-                    act_r$19$d = t$1$q == cyc$19 - 32'h1;
-                end
-            end
-            if (view_add$19 == 1) begin
-                if (cyc_add$19 == firsts$1) begin
-                    add_r$19$d = enter$1;
-                end
-                else begin
-                    add_r$19$d = t$1$q == cyc_add$19 - 32'h1;
-                end
-            end
-            if (view$19 == 2) begin
-                if (cyc$19 == firsts$2) begin
-                    act_r$19$d = enter$2;
-                end
-                else begin
-                    act_r$19$d = t$2$q == cyc$19 - 32'h1;
-                end
-            end
-            if (view_add$19 == 2) begin
-                if (cyc_add$19 == firsts$2) begin
-                    add_r$19$d = enter$2;
-                end
-                else begin
-                    add_r$19$d = t$2$q == cyc_add$19 - 32'h1;
-                end
-            end
-            if (view$19 == 3) begin
-                if (cyc$19 == firsts$3) begin
-                    act_r$19$d = enter$3;
-                end
-                else begin
-                    act_r$19$d = t$3$q == cyc$19 - 32'h1;
-                end
-            end
-            if (view_add$19 == 3) begin
-                if (cyc_add$19 == firsts$3) begin
-                    add_r$19$d = enter$3;
-                end
-                else begin
-                    add_r$19$d = t$3$q == cyc_add$19 - 32'h1;
-                end
-            end
-            if (view$19 == 4) begin
-                if (cyc$19 == firsts$4) begin
-                    act_r$19$d = enter$4;
-                end
-                else begin
-                    act_r$19$d = t$4$q == cyc$19 - 32'h1;
-                end
-            end
-            if (view_add$19 == 4) begin
-                if (cyc_add$19 == firsts$4) begin
-                    add_r$19$d = enter$4;
-                end
-                else begin
-                    add_r$19$d = t$4$q == cyc_add$19 - 32'h1;
-                end
-            end
-            if (view$19 == 5) begin
-                if (cyc$19 == firsts$5) begin
-                    act_r$19$d = enter$5;
-                end
-                else begin
-                    act_r$19$d = t$5$q == cyc$19 - 32'h1;
-                end
-            end
-            if (view_add$19 == 5) begin
-                if (cyc_add$19 == firsts$5) begin
-                    add_r$19$d = enter$5;
-                end
-                else begin
-                    add_r$19$d = t$5$q == cyc_add$19 - 32'h1;
-                end
-            end
+        if (view$1 == 1) begin
+            act$1 = tok$1$q[act_bit$1];
         end
-        act_r$20$clock = clock;
-        act_r$20$d = act_r$20$q;
-        add_r$20$clock = clock;
-        add_r$20$d = add_r$20$q;
-        if (run) begin
-            act_r$20$d = 1'b0;
-            add_r$20$d = 1'b0;
-            if (view$20 == 0) begin
-                if (cyc$20 == firsts$0) begin
-                    act_r$20$d = enter$0;
-                end
-                else begin
-                    act_r$20$d = t$0$q == cyc$20 - 32'h1;
-                end
-            end
-            if (view_add$20 == 0) begin
-                if (cyc_add$20 == firsts$0) begin
-                    add_r$20$d = enter$0;
-                end
-                else begin
-                    add_r$20$d = t$0$q == cyc_add$20 - 32'h1;
-                end
-            end
-            if (view$20 == 1) begin
-                if (cyc$20 == firsts$1) begin
-                    act_r$20$d = enter$1;
-                end
-                else begin
-                    act_r$20$d = t$1$q == cyc$20 - 32'h1;
-                end
-            end
-            if (view_add$20 == 1) begin
-                if (cyc_add$20 == firsts$1) begin
-                    add_r$20$d = enter$1;
-                end
-                else begin
-                    add_r$20$d = t$1$q == cyc_add$20 - 32'h1;
-                end
-            end
-            if (view$20 == 2) begin
-                if (cyc$20 == firsts$2) begin
-                    act_r$20$d = enter$2;
-                end
-                else begin
-                    act_r$20$d = t$2$q == cyc$20 - 32'h1;
-                end
-            end
-            if (view_add$20 == 2) begin
-                if (cyc_add$20 == firsts$2) begin
-                    add_r$20$d = enter$2;
-                end
-                else begin
-                    add_r$20$d = t$2$q == cyc_add$20 - 32'h1;
-                end
-            end
-            if (view$20 == 3) begin
-                if (cyc$20 == firsts$3) begin
-                    act_r$20$d = enter$3;
-                end
-                else begin
-                    act_r$20$d = t$3$q == cyc$20 - 32'h1;
-                end
-            end
-            if (view_add$20 == 3) begin
-                if (cyc_add$20 == firsts$3) begin
-                    add_r$20$d = enter$3;
-                end
-                else begin
-                    add_r$20$d = t$3$q == cyc_add$20 - 32'h1;
-                end
-            end
-            if (view$20 == 4) begin
-                if (cyc$20 == firsts$4) begin
-                    act_r$20$d = enter$4;
-                end
-                else begin
-                    act_r$20$d = t$4$q == cyc$20 - 32'h1;
-                end
-            end
-            if (view_add$20 == 4) begin
-                if (cyc_add$20 == firsts$4) begin
-                    add_r$20$d = enter$4;
-                end
-                else begin
-                    add_r$20$d = t$4$q == cyc_add$20 - 32'h1;
-                end
-            end
-            if (view$20 == 5) begin
-                if (cyc$20 == firsts$5) begin
-                    act_r$20$d = enter$5;
-                end
-                else begin
-                    act_r$20$d = t$5$q == cyc$20 - 32'h1;
-                end
-            end
-            if (view_add$20 == 5) begin
-                if (cyc_add$20 == firsts$5) begin
-                    add_r$20$d = enter$5;
-                end
-                else begin
-                    add_r$20$d = t$5$q == cyc_add$20 - 32'h1;
-                end
-            end
+        if (view_add$1 == 1) begin
+            add$1 = tok$1$q[add_bit$1];
         end
-        act_r$21$clock = clock;
-        act_r$21$d = act_r$21$q;
-        add_r$21$clock = clock;
-        add_r$21$d = add_r$21$q;
-        if (run) begin
-            act_r$21$d = 1'b0;
-            add_r$21$d = 1'b0;
-            if (view$21 == 0) begin
-                if (cyc$21 == firsts$0) begin
-                    act_r$21$d = enter$0;
-                end
-                else begin
-                    act_r$21$d = t$0$q == cyc$21 - 32'h1;
-                end
-            end
-            if (view_add$21 == 0) begin
-                if (cyc_add$21 == firsts$0) begin
-                    add_r$21$d = enter$0;
-                end
-                else begin
-                    add_r$21$d = t$0$q == cyc_add$21 - 32'h1;
-                end
-            end
-            if (view$21 == 1) begin
-                if (cyc$21 == firsts$1) begin
-                    act_r$21$d = enter$1;
-                end
-                else begin
-                    act_r$21$d = t$1$q == cyc$21 - 32'h1;
-                end
-            end
-            if (view_add$21 == 1) begin
-                if (cyc_add$21 == firsts$1) begin
-                    add_r$21$d = enter$1;
-                end
-                else begin
-                    add_r$21$d = t$1$q == cyc_add$21 - 32'h1;
-                end
-            end
-            if (view$21 == 2) begin
-                if (cyc$21 == firsts$2) begin
-                    act_r$21$d = enter$2;
-                end
-                else begin
-                    act_r$21$d = t$2$q == cyc$21 - 32'h1;
-                end
-            end
-            if (view_add$21 == 2) begin
-                if (cyc_add$21 == firsts$2) begin
-                    add_r$21$d = enter$2;
-                end
-                else begin
-                    add_r$21$d = t$2$q == cyc_add$21 - 32'h1;
-                end
-            end
-            if (view$21 == 3) begin
-                if (cyc$21 == firsts$3) begin
-                    act_r$21$d = enter$3;
-                end
-                else begin
-                    act_r$21$d = t$3$q == cyc$21 - 32'h1;
-                end
-            end
-            if (view_add$21 == 3) begin
-                if (cyc_add$21 == firsts$3) begin
-                    add_r$21$d = enter$3;
-                end
-                else begin
-                    add_r$21$d = t$3$q == cyc_add$21 - 32'h1;
-                end
-            end
-            if (view$21 == 4) begin
-                if (cyc$21 == firsts$4) begin
-                    act_r$21$d = enter$4;
-                end
-                else begin
-                    act_r$21$d = t$4$q == cyc$21 - 32'h1;
-                end
-            end
-            if (view_add$21 == 4) begin
-                if (cyc_add$21 == firsts$4) begin
-                    add_r$21$d = enter$4;
-                end
-                else begin
-                    add_r$21$d = t$4$q == cyc_add$21 - 32'h1;
-                end
-            end
-            if (view$21 == 5) begin
-                if (cyc$21 == firsts$5) begin
-                    act_r$21$d = enter$5;
-                end
-                else begin
-                    act_r$21$d = t$5$q == cyc$21 - 32'h1;
-                end
-            end
-            if (view_add$21 == 5) begin
-                if (cyc_add$21 == firsts$5) begin
-                    add_r$21$d = enter$5;
-                end
-                else begin
-                    add_r$21$d = t$5$q == cyc_add$21 - 32'h1;
-                end
-            end
+        if (view$1 == 2) begin
+            act$1 = tok$2$q[act_bit$1];
         end
-        act_r$22$clock = clock;
-        act_r$22$d = act_r$22$q;
-        add_r$22$clock = clock;
-        add_r$22$d = add_r$22$q;
-        if (run) begin
-            act_r$22$d = 1'b0;
-            add_r$22$d = 1'b0;
-            if (view$22 == 0) begin
-                if (cyc$22 == firsts$0) begin
-                    act_r$22$d = enter$0;
-                end
-                else begin
-                    act_r$22$d = t$0$q == cyc$22 - 32'h1;
-                end
-            end
-            if (view_add$22 == 0) begin
-                if (cyc_add$22 == firsts$0) begin
-                    add_r$22$d = enter$0;
-                end
-                else begin
-                    add_r$22$d = t$0$q == cyc_add$22 - 32'h1;
-                end
-            end
-            if (view$22 == 1) begin
-                if (cyc$22 == firsts$1) begin
-                    act_r$22$d = enter$1;
-                end
-                else begin
-                    act_r$22$d = t$1$q == cyc$22 - 32'h1;
-                end
-            end
-            if (view_add$22 == 1) begin
-                if (cyc_add$22 == firsts$1) begin
-                    add_r$22$d = enter$1;
-                end
-                else begin
-                    add_r$22$d = t$1$q == cyc_add$22 - 32'h1;
-                end
-            end
-            if (view$22 == 2) begin
-                if (cyc$22 == firsts$2) begin
-                    act_r$22$d = enter$2;
-                end
-                else begin
-                    act_r$22$d = t$2$q == cyc$22 - 32'h1;
-                end
-            end
-            if (view_add$22 == 2) begin
-                if (cyc_add$22 == firsts$2) begin
-                    add_r$22$d = enter$2;
-                end
-                else begin
-                    add_r$22$d = t$2$q == cyc_add$22 - 32'h1;
-                end
-            end
-            if (view$22 == 3) begin
-                if (cyc$22 == firsts$3) begin
-                    act_r$22$d = enter$3;
-                end
-                else begin
-                    act_r$22$d = t$3$q == cyc$22 - 32'h1;
-                end
-            end
-            if (view_add$22 == 3) begin
-                if (cyc_add$22 == firsts$3) begin
-                    add_r$22$d = enter$3;
-                end
-                else begin
-                    add_r$22$d = t$3$q == cyc_add$22 - 32'h1;
-                end
-            end
-            if (view$22 == 4) begin
-                if (cyc$22 == firsts$4) begin
-                    act_r$22$d = enter$4;
-                end
-                else begin
-                    act_r$22$d = t$4$q == cyc$22 - 32'h1;
-                end
-            end
-            if (view_add$22 == 4) begin
-                if (cyc_add$22 == firsts$4) begin
-                    add_r$22$d = enter$4;
-                end
-                else begin
-                    add_r$22$d = t$4$q == cyc_add$22 - 32'h1;
-                end
-            end
-            if (view$22 == 5) begin
-                if (cyc$22 == firsts$5) begin
-                    act_r$22$d = enter$5;
-                end
-                else begin
-                    act_r$22$d = t$5$q == cyc$22 - 32'h1;
-                end
-            end
-            if (view_add$22 == 5) begin
-                if (cyc_add$22 == firsts$5) begin
-                    add_r$22$d = enter$5;
-                end
-                else begin
-                    add_r$22$d = t$5$q == cyc_add$22 - 32'h1;
-                end
-            end
+        if (view_add$1 == 2) begin
+            add$1 = tok$2$q[add_bit$1];
         end
-        act_r$23$clock = clock;
-        act_r$23$d = act_r$23$q;
-        add_r$23$clock = clock;
-        add_r$23$d = add_r$23$q;
-        if (run) begin
-            act_r$23$d = 1'b0;
-            add_r$23$d = 1'b0;
-            if (view$23 == 0) begin
-                if (cyc$23 == firsts$0) begin
-                    act_r$23$d = enter$0;
-                end
-                else begin
-                    act_r$23$d = t$0$q == cyc$23 - 32'h1;
-                end
-            end
-            if (view_add$23 == 0) begin
-                if (cyc_add$23 == firsts$0) begin
-                    add_r$23$d = enter$0;
-                end
-                else begin
-                    add_r$23$d = t$0$q == cyc_add$23 - 32'h1;
-                end
-            end
-            if (view$23 == 1) begin
-                if (cyc$23 == firsts$1) begin
-                    act_r$23$d = enter$1;
-                end
-                else begin
-                    act_r$23$d = t$1$q == cyc$23 - 32'h1;
-                end
-            end
-            if (view_add$23 == 1) begin
-                if (cyc_add$23 == firsts$1) begin
-                    add_r$23$d = enter$1;
-                end
-                else begin
-                    add_r$23$d = t$1$q == cyc_add$23 - 32'h1;
-                end
-            end
-            if (view$23 == 2) begin
-                if (cyc$23 == firsts$2) begin
-                    act_r$23$d = enter$2;
-                end
-                else begin
-                    act_r$23$d = t$2$q == cyc$23 - 32'h1;
-                end
-            end
-            if (view_add$23 == 2) begin
-                if (cyc_add$23 == firsts$2) begin
-                    add_r$23$d = enter$2;
-                end
-                else begin
-                    add_r$23$d = t$2$q == cyc_add$23 - 32'h1;
-                end
-            end
-            if (view$23 == 3) begin
-                if (cyc$23 == firsts$3) begin
-                    act_r$23$d = enter$3;
-                end
-                else begin
-                    act_r$23$d = t$3$q == cyc$23 - 32'h1;
-                end
-            end
-            if (view_add$23 == 3) begin
-                if (cyc_add$23 == firsts$3) begin
-                    add_r$23$d = enter$3;
-                end
-                else begin
-                    add_r$23$d = t$3$q == cyc_add$23 - 32'h1;
-                end
-            end
-            if (view$23 == 4) begin
-                if (cyc$23 == firsts$4) begin
-                    act_r$23$d = enter$4;
-                end
-                else begin
-                    act_r$23$d = t$4$q == cyc$23 - 32'h1;
-                end
-            end
-            if (view_add$23 == 4) begin
-                if (cyc_add$23 == firsts$4) begin
-                    add_r$23$d = enter$4;
-                end
-                else begin
-                    add_r$23$d = t$4$q == cyc_add$23 - 32'h1;
-                end
-            end
-            if (view$23 == 5) begin
-                if (cyc$23 == firsts$5) begin
-                    act_r$23$d = enter$5;
-                end
-                else begin
-                    act_r$23$d = t$5$q == cyc$23 - 32'h1;
-                end
-            end
-            if (view_add$23 == 5) begin
-                if (cyc_add$23 == firsts$5) begin
-                    add_r$23$d = enter$5;
-                end
-                else begin
-                    add_r$23$d = t$5$q == cyc_add$23 - 32'h1;
-                end
-            end
+        if (view$1 == 3) begin
+            act$1 = tok$3$q[act_bit$1];
         end
-        act_r$24$clock = clock;
-        act_r$24$d = act_r$24$q;
-        add_r$24$clock = clock;
-        add_r$24$d = add_r$24$q;
-        if (run) begin
-            act_r$24$d = 1'b0;
-            add_r$24$d = 1'b0;
-            if (view$24 == 0) begin
-                if (cyc$24 == firsts$0) begin
-                    act_r$24$d = enter$0;
-                end
-                else begin
-                    act_r$24$d = t$0$q == cyc$24 - 32'h1;
-                end
-            end
-            if (view_add$24 == 0) begin
-                if (cyc_add$24 == firsts$0) begin
-                    add_r$24$d = enter$0;
-                end
-                else begin
-                    add_r$24$d = t$0$q == cyc_add$24 - 32'h1;
-                end
-            end
-            if (view$24 == 1) begin
-                if (cyc$24 == firsts$1) begin
-                    act_r$24$d = enter$1;
-                end
-                else begin
-                    act_r$24$d = t$1$q == cyc$24 - 32'h1;
-                end
-            end
-            if (view_add$24 == 1) begin
-                if (cyc_add$24 == firsts$1) begin
-                    add_r$24$d = enter$1;
-                end
-                else begin
-                    add_r$24$d = t$1$q == cyc_add$24 - 32'h1;
-                end
-            end
-            if (view$24 == 2) begin
-                if (cyc$24 == firsts$2) begin
-                    act_r$24$d = enter$2;
-                end
-                else begin
-                    act_r$24$d = t$2$q == cyc$24 - 32'h1;
-                end
-            end
-            if (view_add$24 == 2) begin
-                if (cyc_add$24 == firsts$2) begin
-                    add_r$24$d = enter$2;
-                end
-                else begin
-                    add_r$24$d = t$2$q == cyc_add$24 - 32'h1;
-                end
-            end
-            if (view$24 == 3) begin
-                if (cyc$24 == firsts$3) begin
-                    act_r$24$d = enter$3;
-                end
-                else begin
-                    act_r$24$d = t$3$q == cyc$24 - 32'h1;
-                end
-            end
-            if (view_add$24 == 3) begin
-                if (cyc_add$24 == firsts$3) begin
-                    add_r$24$d = enter$3;
-                end
-                else begin
-                    add_r$24$d = t$3$q == cyc_add$24 - 32'h1;
-                end
-            end
-            if (view$24 == 4) begin
-                if (cyc$24 == firsts$4) begin
-                    act_r$24$d = enter$4;
-                end
-                else begin
-                    act_r$24$d = t$4$q == cyc$24 - 32'h1;
-                end
-            end
-            if (view_add$24 == 4) begin
-                if (cyc_add$24 == firsts$4) begin
-                    add_r$24$d = enter$4;
-                end
-                else begin
-                    add_r$24$d = t$4$q == cyc_add$24 - 32'h1;
-                end
-            end
-            if (view$24 == 5) begin
-                if (cyc$24 == firsts$5) begin
-                    act_r$24$d = enter$5;
-                end
-                else begin
-                    act_r$24$d = t$5$q == cyc$24 - 32'h1;
-                end
-            end
-            if (view_add$24 == 5) begin
-                if (cyc_add$24 == firsts$5) begin
-                    add_r$24$d = enter$5;
-                end
-                else begin
-                    add_r$24$d = t$5$q == cyc_add$24 - 32'h1;
-                end
-            end
+        if (view_add$1 == 3) begin
+            add$1 = tok$3$q[add_bit$1];
         end
-        act_r$25$clock = clock;
-        act_r$25$d = act_r$25$q;
-        add_r$25$clock = clock;
-        add_r$25$d = add_r$25$q;
-        if (run) begin
-            act_r$25$d = 1'b0;
-            add_r$25$d = 1'b0;
-            if (view$25 == 0) begin
-                if (cyc$25 == firsts$0) begin
-                    act_r$25$d = enter$0;
-                end
-                else begin
-                    act_r$25$d = t$0$q == cyc$25 - 32'h1;
-                end
-            end
-            if (view_add$25 == 0) begin
-                if (cyc_add$25 == firsts$0) begin
-                    add_r$25$d = enter$0;
-                end
-                else begin
-                    add_r$25$d = t$0$q == cyc_add$25 - 32'h1;
-                end
-            end
-            if (view$25 == 1) begin
-                if (cyc$25 == firsts$1) begin
-                    act_r$25$d = enter$1;
-                end
-                else begin
-                    act_r$25$d = t$1$q == cyc$25 - 32'h1;
-                end
-            end
-            if (view_add$25 == 1) begin
-                if (cyc_add$25 == firsts$1) begin
-                    add_r$25$d = enter$1;
-                end
-                else begin
-                    add_r$25$d = t$1$q == cyc_add$25 - 32'h1;
-                end
-            end
-            if (view$25 == 2) begin
-                if (cyc$25 == firsts$2) begin
-                    act_r$25$d = enter$2;
-                end
-                else begin
-                    act_r$25$d = t$2$q == cyc$25 - 32'h1;
-                end
-            end
-            if (view_add$25 == 2) begin
-                if (cyc_add$25 == firsts$2) begin
-                    add_r$25$d = enter$2;
-                end
-                else begin
-                    add_r$25$d = t$2$q == cyc_add$25 - 32'h1;
-                end
-            end
-            if (view$25 == 3) begin
-                if (cyc$25 == firsts$3) begin
-                    act_r$25$d = enter$3;
-                end
-                else begin
-                    act_r$25$d = t$3$q == cyc$25 - 32'h1;
-                end
-            end
-            if (view_add$25 == 3) begin
-                if (cyc_add$25 == firsts$3) begin
-                    add_r$25$d = enter$3;
-                end
-                else begin
-                    add_r$25$d = t$3$q == cyc_add$25 - 32'h1;
-                end
-            end
-            if (view$25 == 4) begin
-                if (cyc$25 == firsts$4) begin
-                    act_r$25$d = enter$4;
-                end
-                else begin
-                    act_r$25$d = t$4$q == cyc$25 - 32'h1;
-                end
-            end
-            if (view_add$25 == 4) begin
-                if (cyc_add$25 == firsts$4) begin
-                    add_r$25$d = enter$4;
-                end
-                else begin
-                    add_r$25$d = t$4$q == cyc_add$25 - 32'h1;
-                end
-            end
-            if (view$25 == 5) begin
-                if (cyc$25 == firsts$5) begin
-                    act_r$25$d = enter$5;
-                end
-                else begin
-                    act_r$25$d = t$5$q == cyc$25 - 32'h1;
-                end
-            end
-            if (view_add$25 == 5) begin
-                if (cyc_add$25 == firsts$5) begin
-                    add_r$25$d = enter$5;
-                end
-                else begin
-                    add_r$25$d = t$5$q == cyc_add$25 - 32'h1;
-                end
-            end
+        if (view$1 == 4) begin
+            act$1 = tok$4$q[act_bit$1];
         end
-        act_r$26$clock = clock;
-        act_r$26$d = act_r$26$q;
-        add_r$26$clock = clock;
-        add_r$26$d = add_r$26$q;
-        if (run) begin
-            act_r$26$d = 1'b0;
-            add_r$26$d = 1'b0;
-            if (view$26 == 0) begin
-                if (cyc$26 == firsts$0) begin
-                    act_r$26$d = enter$0;
-                end
-                else begin
-                    act_r$26$d = t$0$q == cyc$26 - 32'h1;
-                end
-            end
-            if (view_add$26 == 0) begin
-                if (cyc_add$26 == firsts$0) begin
-                    add_r$26$d = enter$0;
-                end
-                else begin
-                    add_r$26$d = t$0$q == cyc_add$26 - 32'h1;
-                end
-            end
-            if (view$26 == 1) begin
-                if (cyc$26 == firsts$1) begin
-                    act_r$26$d = enter$1;
-                end
-                else begin
-                    act_r$26$d = t$1$q == cyc$26 - 32'h1;
-                end
-            end
-            if (view_add$26 == 1) begin
-                if (cyc_add$26 == firsts$1) begin
-                    add_r$26$d = enter$1;
-                end
-                else begin
-                    add_r$26$d = t$1$q == cyc_add$26 - 32'h1;
-                end
-            end
-            if (view$26 == 2) begin
-                if (cyc$26 == firsts$2) begin
-                    act_r$26$d = enter$2;
-                end
-                else begin
-                    act_r$26$d = t$2$q == cyc$26 - 32'h1;
-                end
-            end
-            if (view_add$26 == 2) begin
-                if (cyc_add$26 == firsts$2) begin
-                    add_r$26$d = enter$2;
-                end
-                else begin
-                    add_r$26$d = t$2$q == cyc_add$26 - 32'h1;
-                end
-            end
-            if (view$26 == 3) begin
-                if (cyc$26 == firsts$3) begin
-                    act_r$26$d = enter$3;
-                end
-                else begin
-                    act_r$26$d = t$3$q == cyc$26 - 32'h1;
-                end
-            end
-            if (view_add$26 == 3) begin
-                if (cyc_add$26 == firsts$3) begin
-                    add_r$26$d = enter$3;
-                end
-                else begin
-                    add_r$26$d = t$3$q == cyc_add$26 - 32'h1;
-                end
-            end
-            if (view$26 == 4) begin
-                if (cyc$26 == firsts$4) begin
-                    act_r$26$d = enter$4;
-                end
-                else begin
-                    act_r$26$d = t$4$q == cyc$26 - 32'h1;
-                end
-            end
-            if (view_add$26 == 4) begin
-                if (cyc_add$26 == firsts$4) begin
-                    add_r$26$d = enter$4;
-                end
-                else begin
-                    add_r$26$d = t$4$q == cyc_add$26 - 32'h1;
-                end
-            end
-            if (view$26 == 5) begin
-                if (cyc$26 == firsts$5) begin
-                    act_r$26$d = enter$5;
-                end
-                else begin
-                    act_r$26$d = t$5$q == cyc$26 - 32'h1;
-                end
-            end
-            if (view_add$26 == 5) begin
-                if (cyc_add$26 == firsts$5) begin
-                    add_r$26$d = enter$5;
-                end
-                else begin
-                    add_r$26$d = t$5$q == cyc_add$26 - 32'h1;
-                end
-            end
+        if (view_add$1 == 4) begin
+            add$1 = tok$4$q[add_bit$1];
         end
-        act_r$27$clock = clock;
-        act_r$27$d = act_r$27$q;
-        add_r$27$clock = clock;
-        add_r$27$d = add_r$27$q;
-        if (run) begin
-            act_r$27$d = 1'b0;
-            add_r$27$d = 1'b0;
-            if (view$27 == 0) begin
-                if (cyc$27 == firsts$0) begin
-                    act_r$27$d = enter$0;
-                end
-                else begin
-                    act_r$27$d = t$0$q == cyc$27 - 32'h1;
-                end
-            end
-            if (view_add$27 == 0) begin
-                if (cyc_add$27 == firsts$0) begin
-                    add_r$27$d = enter$0;
-                end
-                else begin
-                    add_r$27$d = t$0$q == cyc_add$27 - 32'h1;
-                end
-            end
-            if (view$27 == 1) begin
-                if (cyc$27 == firsts$1) begin
-                    act_r$27$d = enter$1;
-                end
-                else begin
-                    act_r$27$d = t$1$q == cyc$27 - 32'h1;
-                end
-            end
-            if (view_add$27 == 1) begin
-                if (cyc_add$27 == firsts$1) begin
-                    add_r$27$d = enter$1;
-                end
-                else begin
-                    add_r$27$d = t$1$q == cyc_add$27 - 32'h1;
-                end
-            end
-            if (view$27 == 2) begin
-                if (cyc$27 == firsts$2) begin
-                    act_r$27$d = enter$2;
-                end
-                else begin
-                    act_r$27$d = t$2$q == cyc$27 - 32'h1;
-                end
-            end
-            if (view_add$27 == 2) begin
-                if (cyc_add$27 == firsts$2) begin
-                    add_r$27$d = enter$2;
-                end
-                else begin
-                    add_r$27$d = t$2$q == cyc_add$27 - 32'h1;
-                end
-            end
-            if (view$27 == 3) begin
-                if (cyc$27 == firsts$3) begin
-                    act_r$27$d = enter$3;
-                end
-                else begin
-                    act_r$27$d = t$3$q == cyc$27 - 32'h1;
-                end
-            end
-            if (view_add$27 == 3) begin
-                if (cyc_add$27 == firsts$3) begin
-                    add_r$27$d = enter$3;
-                end
-                else begin
-                    add_r$27$d = t$3$q == cyc_add$27 - 32'h1;
-                end
-            end
-            if (view$27 == 4) begin
-                if (cyc$27 == firsts$4) begin
-                    act_r$27$d = enter$4;
-                end
-                else begin
-                    act_r$27$d = t$4$q == cyc$27 - 32'h1;
-                end
-            end
-            if (view_add$27 == 4) begin
-                if (cyc_add$27 == firsts$4) begin
-                    add_r$27$d = enter$4;
-                end
-                else begin
-                    add_r$27$d = t$4$q == cyc_add$27 - 32'h1;
-                end
-            end
-            if (view$27 == 5) begin
-                if (cyc$27 == firsts$5) begin
-                    act_r$27$d = enter$5;
-                end
-                else begin
-                    act_r$27$d = t$5$q == cyc$27 - 32'h1;
-                end
-            end
-            if (view_add$27 == 5) begin
-                if (cyc_add$27 == firsts$5) begin
-                    add_r$27$d = enter$5;
-                end
-                else begin
-                    add_r$27$d = t$5$q == cyc_add$27 - 32'h1;
-                end
-            end
+        if (view$1 == 5) begin
+            act$1 = tok$5$q[act_bit$1];
         end
-        act_r$28$clock = clock;
-        act_r$28$d = act_r$28$q;
-        add_r$28$clock = clock;
-        add_r$28$d = add_r$28$q;
-        if (run) begin
-            act_r$28$d = 1'b0;
-            add_r$28$d = 1'b0;
-            if (view$28 == 0) begin
-                if (cyc$28 == firsts$0) begin
-                    act_r$28$d = enter$0;
-                end
-                else begin
-                    act_r$28$d = t$0$q == cyc$28 - 32'h1;
-                end
-            end
-            if (view_add$28 == 0) begin
-                if (cyc_add$28 == firsts$0) begin
-                    add_r$28$d = enter$0;
-                end
-                else begin
-                    add_r$28$d = t$0$q == cyc_add$28 - 32'h1;
-                end
-            end
-            if (view$28 == 1) begin
-                if (cyc$28 == firsts$1) begin
-                    act_r$28$d = enter$1;
-                end
-                else begin
-                    act_r$28$d = t$1$q == cyc$28 - 32'h1;
-                end
-            end
-            if (view_add$28 == 1) begin
-                if (cyc_add$28 == firsts$1) begin
-                    add_r$28$d = enter$1;
-                end
-                else begin
-                    add_r$28$d = t$1$q == cyc_add$28 - 32'h1;
-                end
-            end
-            if (view$28 == 2) begin
-                if (cyc$28 == firsts$2) begin
-                    act_r$28$d = enter$2;
-                end
-                else begin
-                    act_r$28$d = t$2$q == cyc$28 - 32'h1;
-                end
-            end
-            if (view_add$28 == 2) begin
-                if (cyc_add$28 == firsts$2) begin
-                    add_r$28$d = enter$2;
-                end
-                else begin
-                    add_r$28$d = t$2$q == cyc_add$28 - 32'h1;
-                end
-            end
-            if (view$28 == 3) begin
-                if (cyc$28 == firsts$3) begin
-                    act_r$28$d = enter$3;
-                end
-                else begin
-                    act_r$28$d = t$3$q == cyc$28 - 32'h1;
-                end
-            end
-            if (view_add$28 == 3) begin
-                if (cyc_add$28 == firsts$3) begin
-                    add_r$28$d = enter$3;
-                end
-                else begin
-                    add_r$28$d = t$3$q == cyc_add$28 - 32'h1;
-                end
-            end
-            if (view$28 == 4) begin
-                if (cyc$28 == firsts$4) begin
-                    act_r$28$d = enter$4;
-                end
-                else begin
-                    act_r$28$d = t$4$q == cyc$28 - 32'h1;
-                end
-            end
-            if (view_add$28 == 4) begin
-                if (cyc_add$28 == firsts$4) begin
-                    add_r$28$d = enter$4;
-                end
-                else begin
-                    add_r$28$d = t$4$q == cyc_add$28 - 32'h1;
-                end
-            end
-            if (view$28 == 5) begin
-                if (cyc$28 == firsts$5) begin
-                    act_r$28$d = enter$5;
-                end
-                else begin
-                    act_r$28$d = t$5$q == cyc$28 - 32'h1;
-                end
-            end
-            if (view_add$28 == 5) begin
-                if (cyc_add$28 == firsts$5) begin
-                    add_r$28$d = enter$5;
-                end
-                else begin
-                    add_r$28$d = t$5$q == cyc_add$28 - 32'h1;
-                end
-            end
+        if (view_add$1 == 5) begin
+            add$1 = tok$5$q[add_bit$1];
         end
-        act_r$29$clock = clock;
-        act_r$29$d = act_r$29$q;
-        add_r$29$clock = clock;
-        add_r$29$d = add_r$29$q;
-        if (run) begin
-            act_r$29$d = 1'b0;
-            add_r$29$d = 1'b0;
-            if (view$29 == 0) begin
-                if (cyc$29 == firsts$0) begin
-                    act_r$29$d = enter$0;
-                end
-                else begin
-                    act_r$29$d = t$0$q == cyc$29 - 32'h1;
-                end
-            end
-            if (view_add$29 == 0) begin
-                if (cyc_add$29 == firsts$0) begin
-                    add_r$29$d = enter$0;
-                end
-                else begin
-                    add_r$29$d = t$0$q == cyc_add$29 - 32'h1;
-                end
-            end
-            if (view$29 == 1) begin
-                if (cyc$29 == firsts$1) begin
-                    act_r$29$d = enter$1;
-                end
-                else begin
-                    act_r$29$d = t$1$q == cyc$29 - 32'h1;
-                end
-            end
-            if (view_add$29 == 1) begin
-                if (cyc_add$29 == firsts$1) begin
-                    add_r$29$d = enter$1;
-                end
-                else begin
-                    add_r$29$d = t$1$q == cyc_add$29 - 32'h1;
-                end
-            end
-            if (view$29 == 2) begin
-                if (cyc$29 == firsts$2) begin
-                    act_r$29$d = enter$2;
-                end
-                else begin
-                    act_r$29$d = t$2$q == cyc$29 - 32'h1;
-                end
-            end
-            if (view_add$29 == 2) begin
-                if (cyc_add$29 == firsts$2) begin
-                    add_r$29$d = enter$2;
-                end
-                else begin
-                    add_r$29$d = t$2$q == cyc_add$29 - 32'h1;
-                end
-            end
-            if (view$29 == 3) begin
-                if (cyc$29 == firsts$3) begin
-                    act_r$29$d = enter$3;
-                end
-                else begin
-                    act_r$29$d = t$3$q == cyc$29 - 32'h1;
-                end
-            end
-            if (view_add$29 == 3) begin
-                if (cyc_add$29 == firsts$3) begin
-                    add_r$29$d = enter$3;
-                end
-                else begin
-                    add_r$29$d = t$3$q == cyc_add$29 - 32'h1;
-                end
-            end
-            if (view$29 == 4) begin
-                if (cyc$29 == firsts$4) begin
-                    act_r$29$d = enter$4;
-                end
-                else begin
-                    act_r$29$d = t$4$q == cyc$29 - 32'h1;
-                end
-            end
-            if (view_add$29 == 4) begin
-                if (cyc_add$29 == firsts$4) begin
-                    add_r$29$d = enter$4;
-                end
-                else begin
-                    add_r$29$d = t$4$q == cyc_add$29 - 32'h1;
-                end
-            end
-            if (view$29 == 5) begin
-                if (cyc$29 == firsts$5) begin
-                    act_r$29$d = enter$5;
-                end
-                else begin
-                    act_r$29$d = t$5$q == cyc$29 - 32'h1;
-                end
-            end
-            if (view_add$29 == 5) begin
-                if (cyc_add$29 == firsts$5) begin
-                    add_r$29$d = enter$5;
-                end
-                else begin
-                    add_r$29$d = t$5$q == cyc_add$29 - 32'h1;
-                end
-            end
+        act$2 = 1'b0;
+        add$2 = 1'b0;
+        if (view$2 == 0) begin
+            act$2 = tok$0$q[act_bit$2];
         end
-        act_r$30$clock = clock;
-        act_r$30$d = act_r$30$q;
-        add_r$30$clock = clock;
-        add_r$30$d = add_r$30$q;
-        if (run) begin
-            act_r$30$d = 1'b0;
-            add_r$30$d = 1'b0;
-            if (view$30 == 0) begin
-                if (cyc$30 == firsts$0) begin
-                    act_r$30$d = enter$0;
-                end
-                else begin
-                    act_r$30$d = t$0$q == cyc$30 - 32'h1;
-                end
-            end
-            if (view_add$30 == 0) begin
-                if (cyc_add$30 == firsts$0) begin
-                    add_r$30$d = enter$0;
-                end
-                else begin
-                    add_r$30$d = t$0$q == cyc_add$30 - 32'h1;
-                end
-            end
-            if (view$30 == 1) begin
-                if (cyc$30 == firsts$1) begin
-                    act_r$30$d = enter$1;
-                end
-                else begin
-                    act_r$30$d = t$1$q == cyc$30 - 32'h1;
-                end
-            end
-            if (view_add$30 == 1) begin
-                if (cyc_add$30 == firsts$1) begin
-                    add_r$30$d = enter$1;
-                end
-                else begin
-                    add_r$30$d = t$1$q == cyc_add$30 - 32'h1;
-                end
-            end
-            if (view$30 == 2) begin
-                if (cyc$30 == firsts$2) begin
-                    act_r$30$d = enter$2;
-                end
-                else begin
-                    act_r$30$d = t$2$q == cyc$30 - 32'h1;
-                end
-            end
-            if (view_add$30 == 2) begin
-                if (cyc_add$30 == firsts$2) begin
-                    add_r$30$d = enter$2;
-                end
-                else begin
-                    add_r$30$d = t$2$q == cyc_add$30 - 32'h1;
-                end
-            end
-            if (view$30 == 3) begin
-                if (cyc$30 == firsts$3) begin
-                    act_r$30$d = enter$3;
-                end
-                else begin
-                    act_r$30$d = t$3$q == cyc$30 - 32'h1;
-                end
-            end
-            if (view_add$30 == 3) begin
-                if (cyc_add$30 == firsts$3) begin
-                    add_r$30$d = enter$3;
-                end
-                else begin
-                    add_r$30$d = t$3$q == cyc_add$30 - 32'h1;
-                end
-            end
-            if (view$30 == 4) begin
-                if (cyc$30 == firsts$4) begin
-                    act_r$30$d = enter$4;
-                end
-                else begin
-                    act_r$30$d = t$4$q == cyc$30 - 32'h1;
-                end
-            end
-            if (view_add$30 == 4) begin
-                if (cyc_add$30 == firsts$4) begin
-                    add_r$30$d = enter$4;
-                end
-                else begin
-                    add_r$30$d = t$4$q == cyc_add$30 - 32'h1;
-                end
-            end
-            if (view$30 == 5) begin
-                if (cyc$30 == firsts$5) begin
-                    act_r$30$d = enter$5;
-                end
-                else begin
-                    act_r$30$d = t$5$q == cyc$30 - 32'h1;
-                end
-            end
-            if (view_add$30 == 5) begin
-                if (cyc_add$30 == firsts$5) begin
-                    add_r$30$d = enter$5;
-                end
-                else begin
-                    add_r$30$d = t$5$q == cyc_add$30 - 32'h1;
-                end
-            end
+        if (view_add$2 == 0) begin
+            add$2 = tok$0$q[add_bit$2];
         end
-        act_r$31$clock = clock;
-        act_r$31$d = act_r$31$q;
-        add_r$31$clock = clock;
-        add_r$31$d = add_r$31$q;
-        if (run) begin
-            act_r$31$d = 1'b0;
-            add_r$31$d = 1'b0;
-            if (view$31 == 0) begin
-                if (cyc$31 == firsts$0) begin
-                    act_r$31$d = enter$0;
-                end
-                else begin
-                    act_r$31$d = t$0$q == cyc$31 - 32'h1;
-                end
-            end
-            if (view_add$31 == 0) begin
-                if (cyc_add$31 == firsts$0) begin
-                    add_r$31$d = enter$0;
-                end
-                else begin
-                    add_r$31$d = t$0$q == cyc_add$31 - 32'h1;
-                end
-            end
-            if (view$31 == 1) begin
-                if (cyc$31 == firsts$1) begin
-                    act_r$31$d = enter$1;
-                end
-                else begin
-                    act_r$31$d = t$1$q == cyc$31 - 32'h1;
-                end
-            end
-            if (view_add$31 == 1) begin
-                if (cyc_add$31 == firsts$1) begin
-                    add_r$31$d = enter$1;
-                end
-                else begin
-                    add_r$31$d = t$1$q == cyc_add$31 - 32'h1;
-                end
-            end
-            if (view$31 == 2) begin
-                if (cyc$31 == firsts$2) begin
-                    act_r$31$d = enter$2;
-                end
-                else begin
-                    act_r$31$d = t$2$q == cyc$31 - 32'h1;
-                end
-            end
-            if (view_add$31 == 2) begin
-                if (cyc_add$31 == firsts$2) begin
-                    add_r$31$d = enter$2;
-                end
-                else begin
-                    add_r$31$d = t$2$q == cyc_add$31 - 32'h1;
-                end
-            end
-            if (view$31 == 3) begin
-                if (cyc$31 == firsts$3) begin
-                    act_r$31$d = enter$3;
-                end
-                else begin
-                    act_r$31$d = t$3$q == cyc$31 - 32'h1;
-                end
-            end
-            if (view_add$31 == 3) begin
-                if (cyc_add$31 == firsts$3) begin
-                    add_r$31$d = enter$3;
-                end
-                else begin
-                    add_r$31$d = t$3$q == cyc_add$31 - 32'h1;
-                end
-            end
-            if (view$31 == 4) begin
-                if (cyc$31 == firsts$4) begin
-                    act_r$31$d = enter$4;
-                end
-                else begin
-                    act_r$31$d = t$4$q == cyc$31 - 32'h1;
-                end
-            end
-            if (view_add$31 == 4) begin
-                if (cyc_add$31 == firsts$4) begin
-                    add_r$31$d = enter$4;
-                end
-                else begin
-                    add_r$31$d = t$4$q == cyc_add$31 - 32'h1;
-                end
-            end
-            if (view$31 == 5) begin
-                if (cyc$31 == firsts$5) begin
-                    act_r$31$d = enter$5;
-                end
-                else begin
-                    act_r$31$d = t$5$q == cyc$31 - 32'h1;
-                end
-            end
-            if (view_add$31 == 5) begin
-                if (cyc_add$31 == firsts$5) begin
-                    add_r$31$d = enter$5;
-                end
-                else begin
-                    add_r$31$d = t$5$q == cyc_add$31 - 32'h1;
-                end
-            end
+        if (view$2 == 1) begin
+            act$2 = tok$1$q[act_bit$2];
         end
-        act_r$32$clock = clock;
-        act_r$32$d = act_r$32$q;
-        add_r$32$clock = clock;
-        add_r$32$d = add_r$32$q;
-        if (run) begin
-            act_r$32$d = 1'b0;
-            add_r$32$d = 1'b0;
-            if (view$32 == 0) begin
-                if (cyc$32 == firsts$0) begin
-                    act_r$32$d = enter$0;
-                end
-                else begin
-                    act_r$32$d = t$0$q == cyc$32 - 32'h1;
-                end
-            end
-            if (view_add$32 == 0) begin
-                if (cyc_add$32 == firsts$0) begin
-                    add_r$32$d = enter$0;
-                end
-                else begin
-                    add_r$32$d = t$0$q == cyc_add$32 - 32'h1;
-                end
-            end
-            if (view$32 == 1) begin
-                if (cyc$32 == firsts$1) begin
-                    act_r$32$d = enter$1;
-                end
-                else begin
-                    act_r$32$d = t$1$q == cyc$32 - 32'h1;
-                end
-            end
-            if (view_add$32 == 1) begin
-                if (cyc_add$32 == firsts$1) begin
-                    add_r$32$d = enter$1;
-                end
-                else begin
-                    add_r$32$d = t$1$q == cyc_add$32 - 32'h1;
-                end
-            end
-            if (view$32 == 2) begin
-                if (cyc$32 == firsts$2) begin
-                    act_r$32$d = enter$2;
-                end
-                else begin
-                    act_r$32$d = t$2$q == cyc$32 - 32'h1;
-                end
-            end
-            if (view_add$32 == 2) begin
-                if (cyc_add$32 == firsts$2) begin
-                    add_r$32$d = enter$2;
-                end
-                else begin
-                    add_r$32$d = t$2$q == cyc_add$32 - 32'h1;
-                end
-            end
-            if (view$32 == 3) begin
-                if (cyc$32 == firsts$3) begin
-                    act_r$32$d = enter$3;
-                end
-                else begin
-                    act_r$32$d = t$3$q == cyc$32 - 32'h1;
-                end
-            end
-            if (view_add$32 == 3) begin
-                if (cyc_add$32 == firsts$3) begin
-                    add_r$32$d = enter$3;
-                end
-                else begin
-                    add_r$32$d = t$3$q == cyc_add$32 - 32'h1;
-                end
-            end
-            if (view$32 == 4) begin
-                if (cyc$32 == firsts$4) begin
-                    act_r$32$d = enter$4;
-                end
-                else begin
-                    act_r$32$d = t$4$q == cyc$32 - 32'h1;
-                end
-            end
-            if (view_add$32 == 4) begin
-                if (cyc_add$32 == firsts$4) begin
-                    add_r$32$d = enter$4;
-                end
-                else begin
-                    add_r$32$d = t$4$q == cyc_add$32 - 32'h1;
-                end
-            end
-            if (view$32 == 5) begin
-                if (cyc$32 == firsts$5) begin
-                    act_r$32$d = enter$5;
-                end
-                else begin
-                    act_r$32$d = t$5$q == cyc$32 - 32'h1;
-                end
-            end
-            if (view_add$32 == 5) begin
-                if (cyc_add$32 == firsts$5) begin
-                    add_r$32$d = enter$5;
-                end
-                else begin
-                    add_r$32$d = t$5$q == cyc_add$32 - 32'h1;
-                end
-            end
+        if (view_add$2 == 1) begin
+            add$2 = tok$1$q[add_bit$2];
         end
-        act_r$33$clock = clock;
-        act_r$33$d = act_r$33$q;
-        add_r$33$clock = clock;
-        add_r$33$d = add_r$33$q;
-        if (run) begin
-            act_r$33$d = 1'b0;
-            add_r$33$d = 1'b0;
-            if (view$33 == 0) begin
-                if (cyc$33 == firsts$0) begin
-                    act_r$33$d = enter$0;
-                end
-                else begin
-                    act_r$33$d = t$0$q == cyc$33 - 32'h1;
-                end
-            end
-            if (view_add$33 == 0) begin
-                if (cyc_add$33 == firsts$0) begin
-                    add_r$33$d = enter$0;
-                end
-                else begin
-                    add_r$33$d = t$0$q == cyc_add$33 - 32'h1;
-                end
-            end
-            if (view$33 == 1) begin
-                if (cyc$33 == firsts$1) begin
-                    act_r$33$d = enter$1;
-                end
-                else begin
-                    act_r$33$d = t$1$q == cyc$33 - 32'h1;
-                end
-            end
-            if (view_add$33 == 1) begin
-                if (cyc_add$33 == firsts$1) begin
-                    add_r$33$d = enter$1;
-                end
-                else begin
-                    add_r$33$d = t$1$q == cyc_add$33 - 32'h1;
-                end
-            end
-            if (view$33 == 2) begin
-                if (cyc$33 == firsts$2) begin
-                    act_r$33$d = enter$2;
-                end
-                else begin
-                    act_r$33$d = t$2$q == cyc$33 - 32'h1;
-                end
-            end
-            if (view_add$33 == 2) begin
-                if (cyc_add$33 == firsts$2) begin
-                    add_r$33$d = enter$2;
-                end
-                else begin
-                    add_r$33$d = t$2$q == cyc_add$33 - 32'h1;
-                end
-            end
-            if (view$33 == 3) begin
-                if (cyc$33 == firsts$3) begin
-                    act_r$33$d = enter$3;
-                end
-                else begin
-                    act_r$33$d = t$3$q == cyc$33 - 32'h1;
-                end
-            end
-            if (view_add$33 == 3) begin
-                if (cyc_add$33 == firsts$3) begin
-                    add_r$33$d = enter$3;
-                end
-                else begin
-                    add_r$33$d = t$3$q == cyc_add$33 - 32'h1;
-                end
-            end
-            if (view$33 == 4) begin
-                if (cyc$33 == firsts$4) begin
-                    act_r$33$d = enter$4;
-                end
-                else begin
-                    act_r$33$d = t$4$q == cyc$33 - 32'h1;
-                end
-            end
-            if (view_add$33 == 4) begin
-                if (cyc_add$33 == firsts$4) begin
-                    add_r$33$d = enter$4;
-                end
-                else begin
-                    add_r$33$d = t$4$q == cyc_add$33 - 32'h1;
-                end
-            end
-            if (view$33 == 5) begin
-                if (cyc$33 == firsts$5) begin
-                    act_r$33$d = enter$5;
-                end
-                else begin
-                    act_r$33$d = t$5$q == cyc$33 - 32'h1;
-                end
-            end
-            if (view_add$33 == 5) begin
-                if (cyc_add$33 == firsts$5) begin
-                    add_r$33$d = enter$5;
-                end
-                else begin
-                    add_r$33$d = t$5$q == cyc_add$33 - 32'h1;
-                end
-            end
+        if (view$2 == 2) begin
+            act$2 = tok$2$q[act_bit$2];
         end
-        act_r$34$clock = clock;
-        act_r$34$d = act_r$34$q;
-        add_r$34$clock = clock;
-        add_r$34$d = add_r$34$q;
-        if (run) begin
-            act_r$34$d = 1'b0;
-            add_r$34$d = 1'b0;
-            if (view$34 == 0) begin
-                if (cyc$34 == firsts$0) begin
-                    act_r$34$d = enter$0;
-                end
-                else begin
-                    act_r$34$d = t$0$q == cyc$34 - 32'h1;
-                end
-            end
-            if (view_add$34 == 0) begin
-                if (cyc_add$34 == firsts$0) begin
-                    add_r$34$d = enter$0;
-                end
-                else begin
-                    add_r$34$d = t$0$q == cyc_add$34 - 32'h1;
-                end
-            end
-            if (view$34 == 1) begin
-                if (cyc$34 == firsts$1) begin
-                    act_r$34$d = enter$1;
-                end
-                else begin
-                    act_r$34$d = t$1$q == cyc$34 - 32'h1;
-                end
-            end
-            if (view_add$34 == 1) begin
-                if (cyc_add$34 == firsts$1) begin
-                    add_r$34$d = enter$1;
-                end
-                else begin
-                    add_r$34$d = t$1$q == cyc_add$34 - 32'h1;
-                end
-            end
-            if (view$34 == 2) begin
-                if (cyc$34 == firsts$2) begin
-                    act_r$34$d = enter$2;
-                end
-                else begin
-                    act_r$34$d = t$2$q == cyc$34 - 32'h1;
-                end
-            end
-            if (view_add$34 == 2) begin
-                if (cyc_add$34 == firsts$2) begin
-                    add_r$34$d = enter$2;
-                end
-                else begin
-                    add_r$34$d = t$2$q == cyc_add$34 - 32'h1;
-                end
-            end
-            if (view$34 == 3) begin
-                if (cyc$34 == firsts$3) begin
-                    act_r$34$d = enter$3;
-                end
-                else begin
-                    act_r$34$d = t$3$q == cyc$34 - 32'h1;
-                end
-            end
-            if (view_add$34 == 3) begin
-                if (cyc_add$34 == firsts$3) begin
-                    add_r$34$d = enter$3;
-                end
-                else begin
-                    add_r$34$d = t$3$q == cyc_add$34 - 32'h1;
-                end
-            end
-            if (view$34 == 4) begin
-                if (cyc$34 == firsts$4) begin
-                    act_r$34$d = enter$4;
-                end
-                else begin
-                    act_r$34$d = t$4$q == cyc$34 - 32'h1;
-                end
-            end
-            if (view_add$34 == 4) begin
-                if (cyc_add$34 == firsts$4) begin
-                    add_r$34$d = enter$4;
-                end
-                else begin
-                    add_r$34$d = t$4$q == cyc_add$34 - 32'h1;
-                end
-            end
-            if (view$34 == 5) begin
-                if (cyc$34 == firsts$5) begin
-                    act_r$34$d = enter$5;
-                end
-                else begin
-                    act_r$34$d = t$5$q == cyc$34 - 32'h1;
-                end
-            end
-            if (view_add$34 == 5) begin
-                if (cyc_add$34 == firsts$5) begin
-                    add_r$34$d = enter$5;
-                end
-                else begin
-                    add_r$34$d = t$5$q == cyc_add$34 - 32'h1;
-                end
-            end
+        if (view_add$2 == 2) begin
+            add$2 = tok$2$q[add_bit$2];
         end
-        act_r$35$clock = clock;
-        act_r$35$d = act_r$35$q;
-        add_r$35$clock = clock;
-        add_r$35$d = add_r$35$q;
-        if (run) begin
-            act_r$35$d = 1'b0;
-            add_r$35$d = 1'b0;
-            if (view$35 == 0) begin
-                if (cyc$35 == firsts$0) begin
-                    act_r$35$d = enter$0;
-                end
-                else begin
-                    act_r$35$d = t$0$q == cyc$35 - 32'h1;
-                end
-            end
-            if (view_add$35 == 0) begin
-                if (cyc_add$35 == firsts$0) begin
-                    add_r$35$d = enter$0;
-                end
-                else begin
-                    add_r$35$d = t$0$q == cyc_add$35 - 32'h1;
-                end
-            end
-            if (view$35 == 1) begin
-                if (cyc$35 == firsts$1) begin
-                    act_r$35$d = enter$1;
-                end
-                else begin
-                    act_r$35$d = t$1$q == cyc$35 - 32'h1;
-                end
-            end
-            if (view_add$35 == 1) begin
-                if (cyc_add$35 == firsts$1) begin
-                    add_r$35$d = enter$1;
-                end
-                else begin
-                    add_r$35$d = t$1$q == cyc_add$35 - 32'h1;
-                end
-            end
-            if (view$35 == 2) begin
-                if (cyc$35 == firsts$2) begin
-                    act_r$35$d = enter$2;
-                end
-                else begin
-                    act_r$35$d = t$2$q == cyc$35 - 32'h1;
-                end
-            end
-            if (view_add$35 == 2) begin
-                if (cyc_add$35 == firsts$2) begin
-                    add_r$35$d = enter$2;
-                end
-                else begin
-                    add_r$35$d = t$2$q == cyc_add$35 - 32'h1;
-                end
-            end
-            if (view$35 == 3) begin
-                if (cyc$35 == firsts$3) begin
-                    act_r$35$d = enter$3;
-                end
-                else begin
-                    act_r$35$d = t$3$q == cyc$35 - 32'h1;
-                end
-            end
-            if (view_add$35 == 3) begin
-                if (cyc_add$35 == firsts$3) begin
-                    add_r$35$d = enter$3;
-                end
-                else begin
-                    add_r$35$d = t$3$q == cyc_add$35 - 32'h1;
-                end
-            end
-            if (view$35 == 4) begin
-                if (cyc$35 == firsts$4) begin
-                    act_r$35$d = enter$4;
-                end
-                else begin
-                    act_r$35$d = t$4$q == cyc$35 - 32'h1;
-                end
-            end
-            if (view_add$35 == 4) begin
-                if (cyc_add$35 == firsts$4) begin
-                    add_r$35$d = enter$4;
-                end
-                else begin
-                    add_r$35$d = t$4$q == cyc_add$35 - 32'h1;
-                end
-            end
-            if (view$35 == 5) begin
-                if (cyc$35 == firsts$5) begin
-                    act_r$35$d = enter$5;
-                end
-                else begin
-                    act_r$35$d = t$5$q == cyc$35 - 32'h1;
-                end
-            end
-            if (view_add$35 == 5) begin
-                if (cyc_add$35 == firsts$5) begin
-                    add_r$35$d = enter$5;
-                end
-                else begin
-                    add_r$35$d = t$5$q == cyc_add$35 - 32'h1;
-                end
-            end
+        if (view$2 == 3) begin
+            act$2 = tok$3$q[act_bit$2];
         end
-        act_r$36$clock = clock;
-        act_r$36$d = act_r$36$q;
-        add_r$36$clock = clock;
-        add_r$36$d = add_r$36$q;
-        if (run) begin
-            act_r$36$d = 1'b0;
-            add_r$36$d = 1'b0;
-            if (view$36 == 0) begin
-                if (cyc$36 == firsts$0) begin
-                    act_r$36$d = enter$0;
-                end
-                else begin
-                    act_r$36$d = t$0$q == cyc$36 - 32'h1;
-                end
-            end
-            if (view_add$36 == 0) begin
-                if (cyc_add$36 == firsts$0) begin
-                    add_r$36$d = enter$0;
-                end
-                else begin
-                    add_r$36$d = t$0$q == cyc_add$36 - 32'h1;
-                end
-            end
-            if (view$36 == 1) begin
-                if (cyc$36 == firsts$1) begin
-                    act_r$36$d = enter$1;
-                end
-                else begin
-                    act_r$36$d = t$1$q == cyc$36 - 32'h1;
-                end
-            end
-            if (view_add$36 == 1) begin
-                if (cyc_add$36 == firsts$1) begin
-                    add_r$36$d = enter$1;
-                end
-                else begin
-                    add_r$36$d = t$1$q == cyc_add$36 - 32'h1;
-                end
-            end
-            if (view$36 == 2) begin
-                if (cyc$36 == firsts$2) begin
-                    act_r$36$d = enter$2;
-                end
-                else begin
-                    act_r$36$d = t$2$q == cyc$36 - 32'h1;
-                end
-            end
-            if (view_add$36 == 2) begin
-                if (cyc_add$36 == firsts$2) begin
-                    add_r$36$d = enter$2;
-                end
-                else begin
-                    add_r$36$d = t$2$q == cyc_add$36 - 32'h1;
-                end
-            end
-            if (view$36 == 3) begin
-                if (cyc$36 == firsts$3) begin
-                    act_r$36$d = enter$3;
-                end
-                else begin
-                    act_r$36$d = t$3$q == cyc$36 - 32'h1;
-                end
-            end
-            if (view_add$36 == 3) begin
-                if (cyc_add$36 == firsts$3) begin
-                    add_r$36$d = enter$3;
-                end
-                else begin
-                    add_r$36$d = t$3$q == cyc_add$36 - 32'h1;
-                end
-            end
-            if (view$36 == 4) begin
-                if (cyc$36 == firsts$4) begin
-                    act_r$36$d = enter$4;
-                end
-                else begin
-                    act_r$36$d = t$4$q == cyc$36 - 32'h1;
-                end
-            end
-            if (view_add$36 == 4) begin
-                if (cyc_add$36 == firsts$4) begin
-                    add_r$36$d = enter$4;
-                end
-                else begin
-                    add_r$36$d = t$4$q == cyc_add$36 - 32'h1;
-                end
-            end
-            if (view$36 == 5) begin
-                if (cyc$36 == firsts$5) begin
-                    act_r$36$d = enter$5;
-                end
-                else begin
-                    act_r$36$d = t$5$q == cyc$36 - 32'h1;
-                end
-            end
-            if (view_add$36 == 5) begin
-                if (cyc_add$36 == firsts$5) begin
-                    add_r$36$d = enter$5;
-                end
-                else begin
-                    add_r$36$d = t$5$q == cyc_add$36 - 32'h1;
-                end
-            end
+        if (view_add$2 == 3) begin
+            add$2 = tok$3$q[add_bit$2];
         end
-        act_r$37$clock = clock;
-        act_r$37$d = act_r$37$q;
-        add_r$37$clock = clock;
-        add_r$37$d = add_r$37$q;
-        if (run) begin
-            act_r$37$d = 1'b0;
-            add_r$37$d = 1'b0;
-            if (view$37 == 0) begin
-                if (cyc$37 == firsts$0) begin
-                    act_r$37$d = enter$0;
-                end
-                else begin
-                    act_r$37$d = t$0$q == cyc$37 - 32'h1;
-                end
-            end
-            if (view_add$37 == 0) begin
-                if (cyc_add$37 == firsts$0) begin
-                    add_r$37$d = enter$0;
-                end
-                else begin
-                    add_r$37$d = t$0$q == cyc_add$37 - 32'h1;
-                end
-            end
-            if (view$37 == 1) begin
-                if (cyc$37 == firsts$1) begin
-                    act_r$37$d = enter$1;
-                end
-                else begin
-                    act_r$37$d = t$1$q == cyc$37 - 32'h1;
-                end
-            end
-            if (view_add$37 == 1) begin
-                if (cyc_add$37 == firsts$1) begin
-                    add_r$37$d = enter$1;
-                end
-                else begin
-                    add_r$37$d = t$1$q == cyc_add$37 - 32'h1;
-                end
-            end
-            if (view$37 == 2) begin
-                if (cyc$37 == firsts$2) begin
-                    act_r$37$d = enter$2;
-                end
-                else begin
-                    act_r$37$d = t$2$q == cyc$37 - 32'h1;
-                end
-            end
-            if (view_add$37 == 2) begin
-                if (cyc_add$37 == firsts$2) begin
-                    add_r$37$d = enter$2;
-                end
-                else begin
-                    add_r$37$d = t$2$q == cyc_add$37 - 32'h1;
-                end
-            end
-            if (view$37 == 3) begin
-                if (cyc$37 == firsts$3) begin
-                    act_r$37$d = enter$3;
-                end
-                else begin
-                    act_r$37$d = t$3$q == cyc$37 - 32'h1;
-                end
-            end
-            if (view_add$37 == 3) begin
-                if (cyc_add$37 == firsts$3) begin
-                    add_r$37$d = enter$3;
-                end
-                else begin
-                    add_r$37$d = t$3$q == cyc_add$37 - 32'h1;
-                end
-            end
-            if (view$37 == 4) begin
-                if (cyc$37 == firsts$4) begin
-                    act_r$37$d = enter$4;
-                end
-                else begin
-                    act_r$37$d = t$4$q == cyc$37 - 32'h1;
-                end
-            end
-            if (view_add$37 == 4) begin
-                if (cyc_add$37 == firsts$4) begin
-                    add_r$37$d = enter$4;
-                end
-                else begin
-                    add_r$37$d = t$4$q == cyc_add$37 - 32'h1;
-                end
-            end
-            if (view$37 == 5) begin
-                if (cyc$37 == firsts$5) begin
-                    act_r$37$d = enter$5;
-                end
-                else begin
-                    act_r$37$d = t$5$q == cyc$37 - 32'h1;
-                end
-            end
-            if (view_add$37 == 5) begin
-                if (cyc_add$37 == firsts$5) begin
-                    add_r$37$d = enter$5;
-                end
-                else begin
-                    add_r$37$d = t$5$q == cyc_add$37 - 32'h1;
-                end
-            end
+        if (view$2 == 4) begin
+            act$2 = tok$4$q[act_bit$2];
         end
-        act_r$38$clock = clock;
-        act_r$38$d = act_r$38$q;
-        add_r$38$clock = clock;
-        add_r$38$d = add_r$38$q;
-        if (run) begin
-            act_r$38$d = 1'b0;
-            add_r$38$d = 1'b0;
-            if (view$38 == 0) begin
-                if (cyc$38 == firsts$0) begin
-                    act_r$38$d = enter$0;
-                end
-                else begin
-                    act_r$38$d = t$0$q == cyc$38 - 32'h1;
-                end
-            end
-            if (view_add$38 == 0) begin
-                if (cyc_add$38 == firsts$0) begin
-                    add_r$38$d = enter$0;
-                end
-                else begin
-                    add_r$38$d = t$0$q == cyc_add$38 - 32'h1;
-                end
-            end
-            if (view$38 == 1) begin
-                if (cyc$38 == firsts$1) begin
-                    act_r$38$d = enter$1;
-                end
-                else begin
-                    act_r$38$d = t$1$q == cyc$38 - 32'h1;
-                end
-            end
-            if (view_add$38 == 1) begin
-                if (cyc_add$38 == firsts$1) begin
-                    add_r$38$d = enter$1;
-                end
-                else begin
-                    add_r$38$d = t$1$q == cyc_add$38 - 32'h1;
-                end
-            end
-            if (view$38 == 2) begin
-                if (cyc$38 == firsts$2) begin
-                    act_r$38$d = enter$2;
-                end
-                else begin
-                    act_r$38$d = t$2$q == cyc$38 - 32'h1;
-                end
-            end
-            if (view_add$38 == 2) begin
-                if (cyc_add$38 == firsts$2) begin
-                    add_r$38$d = enter$2;
-                end
-                else begin
-                    add_r$38$d = t$2$q == cyc_add$38 - 32'h1;
-                end
-            end
-            if (view$38 == 3) begin
-                if (cyc$38 == firsts$3) begin
-                    act_r$38$d = enter$3;
-                end
-                else begin
-                    act_r$38$d = t$3$q == cyc$38 - 32'h1;
-                end
-            end
-            if (view_add$38 == 3) begin
-                if (cyc_add$38 == firsts$3) begin
-                    add_r$38$d = enter$3;
-                end
-                else begin
-                    add_r$38$d = t$3$q == cyc_add$38 - 32'h1;
-                end
-            end
-            if (view$38 == 4) begin
-                if (cyc$38 == firsts$4) begin
-                    act_r$38$d = enter$4;
-                end
-                else begin
-                    act_r$38$d = t$4$q == cyc$38 - 32'h1;
-                end
-            end
-            if (view_add$38 == 4) begin
-                if (cyc_add$38 == firsts$4) begin
-                    add_r$38$d = enter$4;
-                end
-                else begin
-                    add_r$38$d = t$4$q == cyc_add$38 - 32'h1;
-                end
-            end
-            if (view$38 == 5) begin
-                if (cyc$38 == firsts$5) begin
-                    act_r$38$d = enter$5;
-                end
-                else begin
-                    act_r$38$d = t$5$q == cyc$38 - 32'h1;
-                end
-            end
-            if (view_add$38 == 5) begin
-                if (cyc_add$38 == firsts$5) begin
-                    add_r$38$d = enter$5;
-                end
-                else begin
-                    add_r$38$d = t$5$q == cyc_add$38 - 32'h1;
-                end
-            end
+        if (view_add$2 == 4) begin
+            add$2 = tok$4$q[add_bit$2];
         end
-        act_r$39$clock = clock;
-        act_r$39$d = act_r$39$q;
-        add_r$39$clock = clock;
-        add_r$39$d = add_r$39$q;
-        if (run) begin
-            act_r$39$d = 1'b0;
-            add_r$39$d = 1'b0;
-            if (view$39 == 0) begin
-                if (cyc$39 == firsts$0) begin
-                    act_r$39$d = enter$0;
-                end
-                else begin
-                    act_r$39$d = t$0$q == cyc$39 - 32'h1;
-                end
-            end
-            if (view_add$39 == 0) begin
-                if (cyc_add$39 == firsts$0) begin
-                    add_r$39$d = enter$0;
-                end
-                else begin
-                    add_r$39$d = t$0$q == cyc_add$39 - 32'h1;
-                end
-            end
-            if (view$39 == 1) begin
-                if (cyc$39 == firsts$1) begin
-                    act_r$39$d = enter$1;
-                end
-                else begin
-                    act_r$39$d = t$1$q == cyc$39 - 32'h1;
-                end
-            end
-            if (view_add$39 == 1) begin
-                if (cyc_add$39 == firsts$1) begin
-                    add_r$39$d = enter$1;
-                end
-                else begin
-                    add_r$39$d = t$1$q == cyc_add$39 - 32'h1;
-                end
-            end
-            if (view$39 == 2) begin
-                if (cyc$39 == firsts$2) begin
-                    act_r$39$d = enter$2;
-                end
-                else begin
-                    act_r$39$d = t$2$q == cyc$39 - 32'h1;
-                end
-            end
-            if (view_add$39 == 2) begin
-                if (cyc_add$39 == firsts$2) begin
-                    add_r$39$d = enter$2;
-                end
-                else begin
-                    add_r$39$d = t$2$q == cyc_add$39 - 32'h1;
-                end
-            end
-            if (view$39 == 3) begin
-                if (cyc$39 == firsts$3) begin
-                    act_r$39$d = enter$3;
-                end
-                else begin
-                    act_r$39$d = t$3$q == cyc$39 - 32'h1;
-                end
-            end
-            if (view_add$39 == 3) begin
-                if (cyc_add$39 == firsts$3) begin
-                    add_r$39$d = enter$3;
-                end
-                else begin
-                    add_r$39$d = t$3$q == cyc_add$39 - 32'h1;
-                end
-            end
-            if (view$39 == 4) begin
-                if (cyc$39 == firsts$4) begin
-                    act_r$39$d = enter$4;
-                end
-                else begin
-                    act_r$39$d = t$4$q == cyc$39 - 32'h1;
-                end
-            end
-            if (view_add$39 == 4) begin
-                if (cyc_add$39 == firsts$4) begin
-                    add_r$39$d = enter$4;
-                end
-                else begin
-                    add_r$39$d = t$4$q == cyc_add$39 - 32'h1;
-                end
-            end
-            if (view$39 == 5) begin
-                if (cyc$39 == firsts$5) begin
-                    act_r$39$d = enter$5;
-                end
-                else begin
-                    act_r$39$d = t$5$q == cyc$39 - 32'h1;
-                end
-            end
-            if (view_add$39 == 5) begin
-                if (cyc_add$39 == firsts$5) begin
-                    add_r$39$d = enter$5;
-                end
-                else begin
-                    add_r$39$d = t$5$q == cyc_add$39 - 32'h1;
-                end
-            end
+        if (view$2 == 5) begin
+            act$2 = tok$5$q[act_bit$2];
+        end
+        if (view_add$2 == 5) begin
+            add$2 = tok$5$q[add_bit$2];
+        end
+        act$3 = 1'b0;
+        add$3 = 1'b0;
+        if (view$3 == 0) begin
+            act$3 = tok$0$q[act_bit$3];
+        end
+        if (view_add$3 == 0) begin
+            add$3 = tok$0$q[add_bit$3];
+        end
+        if (view$3 == 1) begin
+            act$3 = tok$1$q[act_bit$3];
+        end
+        if (view_add$3 == 1) begin
+            add$3 = tok$1$q[add_bit$3];
+        end
+        if (view$3 == 2) begin
+            act$3 = tok$2$q[act_bit$3];
+        end
+        if (view_add$3 == 2) begin
+            add$3 = tok$2$q[add_bit$3];
+        end
+        if (view$3 == 3) begin
+            act$3 = tok$3$q[act_bit$3];
+        end
+        if (view_add$3 == 3) begin
+            add$3 = tok$3$q[add_bit$3];
+        end
+        if (view$3 == 4) begin
+            act$3 = tok$4$q[act_bit$3];
+        end
+        if (view_add$3 == 4) begin
+            add$3 = tok$4$q[add_bit$3];
+        end
+        if (view$3 == 5) begin
+            act$3 = tok$5$q[act_bit$3];
+        end
+        if (view_add$3 == 5) begin
+            add$3 = tok$5$q[add_bit$3];
+        end
+        act$4 = 1'b0;
+        add$4 = 1'b0;
+        if (view$4 == 0) begin
+            act$4 = tok$0$q[act_bit$4];
+        end
+        if (view_add$4 == 0) begin
+            add$4 = tok$0$q[add_bit$4];
+        end
+        if (view$4 == 1) begin
+            act$4 = tok$1$q[act_bit$4];
+        end
+        if (view_add$4 == 1) begin
+            add$4 = tok$1$q[add_bit$4];
+        end
+        if (view$4 == 2) begin
+            act$4 = tok$2$q[act_bit$4];
+        end
+        if (view_add$4 == 2) begin
+            add$4 = tok$2$q[add_bit$4];
+        end
+        if (view$4 == 3) begin
+            act$4 = tok$3$q[act_bit$4];
+        end
+        if (view_add$4 == 3) begin
+            add$4 = tok$3$q[add_bit$4];
+        end
+        if (view$4 == 4) begin
+            act$4 = tok$4$q[act_bit$4];
+        end
+        if (view_add$4 == 4) begin
+            add$4 = tok$4$q[add_bit$4];
+        end
+        if (view$4 == 5) begin
+            act$4 = tok$5$q[act_bit$4];
+        end
+        if (view_add$4 == 5) begin
+            add$4 = tok$5$q[add_bit$4];
+        end
+        act$5 = 1'b0;
+        add$5 = 1'b0;
+        if (view$5 == 0) begin
+            act$5 = tok$0$q[act_bit$5];
+        end
+        if (view_add$5 == 0) begin
+            add$5 = tok$0$q[add_bit$5];
+        end
+        if (view$5 == 1) begin
+            act$5 = tok$1$q[act_bit$5];
+        end
+        if (view_add$5 == 1) begin
+            add$5 = tok$1$q[add_bit$5];
+        end
+        if (view$5 == 2) begin
+            act$5 = tok$2$q[act_bit$5];
+        end
+        if (view_add$5 == 2) begin
+            add$5 = tok$2$q[add_bit$5];
+        end
+        if (view$5 == 3) begin
+            act$5 = tok$3$q[act_bit$5];
+        end
+        if (view_add$5 == 3) begin
+            add$5 = tok$3$q[add_bit$5];
+        end
+        if (view$5 == 4) begin
+            act$5 = tok$4$q[act_bit$5];
+        end
+        if (view_add$5 == 4) begin
+            add$5 = tok$4$q[add_bit$5];
+        end
+        if (view$5 == 5) begin
+            act$5 = tok$5$q[act_bit$5];
+        end
+        if (view_add$5 == 5) begin
+            add$5 = tok$5$q[add_bit$5];
+        end
+        act$6 = 1'b0;
+        add$6 = 1'b0;
+        if (view$6 == 0) begin
+            act$6 = tok$0$q[act_bit$6];
+        end
+        if (view_add$6 == 0) begin
+            add$6 = tok$0$q[add_bit$6];
+        end
+        if (view$6 == 1) begin
+            act$6 = tok$1$q[act_bit$6];
+        end
+        if (view_add$6 == 1) begin
+            add$6 = tok$1$q[add_bit$6];
+        end
+        if (view$6 == 2) begin
+            act$6 = tok$2$q[act_bit$6];
+        end
+        if (view_add$6 == 2) begin
+            add$6 = tok$2$q[add_bit$6];
+        end
+        if (view$6 == 3) begin
+            act$6 = tok$3$q[act_bit$6];
+        end
+        if (view_add$6 == 3) begin
+            add$6 = tok$3$q[add_bit$6];
+        end
+        if (view$6 == 4) begin
+            act$6 = tok$4$q[act_bit$6];
+        end
+        if (view_add$6 == 4) begin
+            add$6 = tok$4$q[add_bit$6];
+        end
+        if (view$6 == 5) begin
+            act$6 = tok$5$q[act_bit$6];
+        end
+        if (view_add$6 == 5) begin
+            add$6 = tok$5$q[add_bit$6];
+        end
+        act$7 = 1'b0;
+        add$7 = 1'b0;
+        if (view$7 == 0) begin
+            act$7 = tok$0$q[act_bit$7];
+        end
+        if (view_add$7 == 0) begin
+            add$7 = tok$0$q[add_bit$7];
+        end
+        if (view$7 == 1) begin
+            act$7 = tok$1$q[act_bit$7];
+        end
+        if (view_add$7 == 1) begin
+            add$7 = tok$1$q[add_bit$7];
+        end
+        if (view$7 == 2) begin
+            act$7 = tok$2$q[act_bit$7];
+        end
+        if (view_add$7 == 2) begin
+            add$7 = tok$2$q[add_bit$7];
+        end
+        if (view$7 == 3) begin
+            act$7 = tok$3$q[act_bit$7];
+        end
+        if (view_add$7 == 3) begin
+            add$7 = tok$3$q[add_bit$7];
+        end
+        if (view$7 == 4) begin
+            act$7 = tok$4$q[act_bit$7];
+        end
+        if (view_add$7 == 4) begin
+            add$7 = tok$4$q[add_bit$7];
+        end
+        if (view$7 == 5) begin
+            act$7 = tok$5$q[act_bit$7];
+        end
+        if (view_add$7 == 5) begin
+            add$7 = tok$5$q[add_bit$7];
+        end
+        act$8 = 1'b0;
+        add$8 = 1'b0;
+        if (view$8 == 0) begin
+            act$8 = tok$0$q[act_bit$8];
+        end
+        if (view_add$8 == 0) begin
+            add$8 = tok$0$q[add_bit$8];
+        end
+        if (view$8 == 1) begin
+            act$8 = tok$1$q[act_bit$8];
+        end
+        if (view_add$8 == 1) begin
+            add$8 = tok$1$q[add_bit$8];
+        end
+        if (view$8 == 2) begin
+            act$8 = tok$2$q[act_bit$8];
+        end
+        if (view_add$8 == 2) begin
+            add$8 = tok$2$q[add_bit$8];
+        end
+        if (view$8 == 3) begin
+            act$8 = tok$3$q[act_bit$8];
+        end
+        if (view_add$8 == 3) begin
+            add$8 = tok$3$q[add_bit$8];
+        end
+        if (view$8 == 4) begin
+            act$8 = tok$4$q[act_bit$8];
+        end
+        if (view_add$8 == 4) begin
+            add$8 = tok$4$q[add_bit$8];
+        end
+        if (view$8 == 5) begin
+            act$8 = tok$5$q[act_bit$8];
+        end
+        if (view_add$8 == 5) begin
+            add$8 = tok$5$q[add_bit$8];
+        end
+        act$9 = 1'b0;
+        add$9 = 1'b0;
+        if (view$9 == 0) begin
+            act$9 = tok$0$q[act_bit$9];
+        end
+        if (view_add$9 == 0) begin
+            add$9 = tok$0$q[add_bit$9];
+        end
+        if (view$9 == 1) begin
+            act$9 = tok$1$q[act_bit$9];
+        end
+        if (view_add$9 == 1) begin
+            add$9 = tok$1$q[add_bit$9];
+        end
+        if (view$9 == 2) begin
+            act$9 = tok$2$q[act_bit$9];
+        end
+        if (view_add$9 == 2) begin
+            add$9 = tok$2$q[add_bit$9];
+        end
+        if (view$9 == 3) begin
+            act$9 = tok$3$q[act_bit$9];
+        end
+        if (view_add$9 == 3) begin
+            add$9 = tok$3$q[add_bit$9];
+        end
+        if (view$9 == 4) begin
+            act$9 = tok$4$q[act_bit$9];
+        end
+        if (view_add$9 == 4) begin
+            add$9 = tok$4$q[add_bit$9];
+        end
+        if (view$9 == 5) begin
+            act$9 = tok$5$q[act_bit$9];
+        end
+        if (view_add$9 == 5) begin
+            add$9 = tok$5$q[add_bit$9];
+        end
+        act$10 = 1'b0;
+        add$10 = 1'b0;
+        if (view$10 == 0) begin
+            act$10 = tok$0$q[act_bit$10];
+        end
+        if (view_add$10 == 0) begin
+            add$10 = tok$0$q[add_bit$10];
+        end
+        if (view$10 == 1) begin
+            act$10 = tok$1$q[act_bit$10];
+        end
+        if (view_add$10 == 1) begin
+            add$10 = tok$1$q[add_bit$10];
+        end
+        if (view$10 == 2) begin
+            act$10 = tok$2$q[act_bit$10];
+        end
+        if (view_add$10 == 2) begin
+            add$10 = tok$2$q[add_bit$10];
+        end
+        if (view$10 == 3) begin
+            act$10 = tok$3$q[act_bit$10];
+        end
+        if (view_add$10 == 3) begin
+            add$10 = tok$3$q[add_bit$10];
+        end
+        if (view$10 == 4) begin
+            act$10 = tok$4$q[act_bit$10];
+        end
+        if (view_add$10 == 4) begin
+            add$10 = tok$4$q[add_bit$10];
+        end
+        if (view$10 == 5) begin
+            act$10 = tok$5$q[act_bit$10];
+        end
+        if (view_add$10 == 5) begin
+            add$10 = tok$5$q[add_bit$10];
+        end
+        act$11 = 1'b0;
+        add$11 = 1'b0;
+        if (view$11 == 0) begin
+            act$11 = tok$0$q[act_bit$11];
+        end
+        if (view_add$11 == 0) begin
+            add$11 = tok$0$q[add_bit$11];
+        end
+        if (view$11 == 1) begin
+            act$11 = tok$1$q[act_bit$11];
+        end
+        if (view_add$11 == 1) begin
+            add$11 = tok$1$q[add_bit$11];
+        end
+        if (view$11 == 2) begin
+            act$11 = tok$2$q[act_bit$11];
+        end
+        if (view_add$11 == 2) begin
+            add$11 = tok$2$q[add_bit$11];
+        end
+        if (view$11 == 3) begin
+            act$11 = tok$3$q[act_bit$11];
+        end
+        if (view_add$11 == 3) begin
+            add$11 = tok$3$q[add_bit$11];
+        end
+        if (view$11 == 4) begin
+            act$11 = tok$4$q[act_bit$11];
+        end
+        if (view_add$11 == 4) begin
+            add$11 = tok$4$q[add_bit$11];
+        end
+        if (view$11 == 5) begin
+            act$11 = tok$5$q[act_bit$11];
+        end
+        if (view_add$11 == 5) begin
+            add$11 = tok$5$q[add_bit$11];
+        end
+        act$12 = 1'b0;
+        add$12 = 1'b0;
+        if (view$12 == 0) begin
+            act$12 = tok$0$q[act_bit$12];
+        end
+        if (view_add$12 == 0) begin
+            add$12 = tok$0$q[add_bit$12];
+        end
+        if (view$12 == 1) begin
+            act$12 = tok$1$q[act_bit$12];
+        end
+        if (view_add$12 == 1) begin
+            add$12 = tok$1$q[add_bit$12];
+        end
+        if (view$12 == 2) begin
+            act$12 = tok$2$q[act_bit$12];
+        end
+        if (view_add$12 == 2) begin
+            add$12 = tok$2$q[add_bit$12];
+        end
+        if (view$12 == 3) begin
+            act$12 = tok$3$q[act_bit$12];
+        end
+        if (view_add$12 == 3) begin
+            add$12 = tok$3$q[add_bit$12];
+        end
+        if (view$12 == 4) begin
+            act$12 = tok$4$q[act_bit$12];
+        end
+        if (view_add$12 == 4) begin
+            add$12 = tok$4$q[add_bit$12];
+        end
+        if (view$12 == 5) begin
+            act$12 = tok$5$q[act_bit$12];
+        end
+        if (view_add$12 == 5) begin
+            add$12 = tok$5$q[add_bit$12];
+        end
+        act$13 = 1'b0;
+        add$13 = 1'b0;
+        if (view$13 == 0) begin
+            act$13 = tok$0$q[act_bit$13];
+        end
+        if (view_add$13 == 0) begin
+            add$13 = tok$0$q[add_bit$13];
+        end
+        if (view$13 == 1) begin
+            act$13 = tok$1$q[act_bit$13];
+        end
+        if (view_add$13 == 1) begin
+            add$13 = tok$1$q[add_bit$13];
+        end
+        if (view$13 == 2) begin
+            act$13 = tok$2$q[act_bit$13];
+        end
+        if (view_add$13 == 2) begin
+            add$13 = tok$2$q[add_bit$13];
+        end
+        if (view$13 == 3) begin
+            act$13 = tok$3$q[act_bit$13];
+        end
+        if (view_add$13 == 3) begin
+            add$13 = tok$3$q[add_bit$13];
+        end
+        if (view$13 == 4) begin
+            act$13 = tok$4$q[act_bit$13];
+        end
+        if (view_add$13 == 4) begin
+            add$13 = tok$4$q[add_bit$13];
+        end
+        if (view$13 == 5) begin
+            act$13 = tok$5$q[act_bit$13];
+        end
+        if (view_add$13 == 5) begin
+            add$13 = tok$5$q[add_bit$13];
+        end
+        act$14 = 1'b0;
+        add$14 = 1'b0;
+        if (view$14 == 0) begin
+            act$14 = tok$0$q[act_bit$14];
+        end
+        if (view_add$14 == 0) begin
+            add$14 = tok$0$q[add_bit$14];
+        end
+        if (view$14 == 1) begin
+            act$14 = tok$1$q[act_bit$14];
+        end
+        if (view_add$14 == 1) begin
+            add$14 = tok$1$q[add_bit$14];
+        end
+        if (view$14 == 2) begin
+            act$14 = tok$2$q[act_bit$14];
+        end
+        if (view_add$14 == 2) begin
+            add$14 = tok$2$q[add_bit$14];
+        end
+        if (view$14 == 3) begin
+            act$14 = tok$3$q[act_bit$14];
+        end
+        if (view_add$14 == 3) begin
+            add$14 = tok$3$q[add_bit$14];
+        end
+        if (view$14 == 4) begin
+            act$14 = tok$4$q[act_bit$14];
+        end
+        if (view_add$14 == 4) begin
+            add$14 = tok$4$q[add_bit$14];
+        end
+        if (view$14 == 5) begin
+            act$14 = tok$5$q[act_bit$14];
+        end
+        if (view_add$14 == 5) begin
+            add$14 = tok$5$q[add_bit$14];
+        end
+        act$15 = 1'b0;
+        add$15 = 1'b0;
+        if (view$15 == 0) begin
+            act$15 = tok$0$q[act_bit$15];
+        end
+        if (view_add$15 == 0) begin
+            add$15 = tok$0$q[add_bit$15];
+        end
+        if (view$15 == 1) begin
+            act$15 = tok$1$q[act_bit$15];
+        end
+        if (view_add$15 == 1) begin
+            add$15 = tok$1$q[add_bit$15];
+        end
+        if (view$15 == 2) begin
+            act$15 = tok$2$q[act_bit$15];
+        end
+        if (view_add$15 == 2) begin
+            add$15 = tok$2$q[add_bit$15];
+        end
+        if (view$15 == 3) begin
+            act$15 = tok$3$q[act_bit$15];
+        end
+        if (view_add$15 == 3) begin
+            add$15 = tok$3$q[add_bit$15];
+        end
+        if (view$15 == 4) begin
+            act$15 = tok$4$q[act_bit$15];
+        end
+        if (view_add$15 == 4) begin
+            add$15 = tok$4$q[add_bit$15];
+        end
+        if (view$15 == 5) begin
+            act$15 = tok$5$q[act_bit$15];
+        end
+        if (view_add$15 == 5) begin
+            add$15 = tok$5$q[add_bit$15];
+        end
+        act$16 = 1'b0;
+        add$16 = 1'b0;
+        if (view$16 == 0) begin
+            act$16 = tok$0$q[act_bit$16];
+        end
+        if (view_add$16 == 0) begin
+            add$16 = tok$0$q[add_bit$16];
+        end
+        if (view$16 == 1) begin
+            act$16 = tok$1$q[act_bit$16];
+        end
+        if (view_add$16 == 1) begin
+            add$16 = tok$1$q[add_bit$16];
+        end
+        if (view$16 == 2) begin
+            act$16 = tok$2$q[act_bit$16];
+        end
+        if (view_add$16 == 2) begin
+            add$16 = tok$2$q[add_bit$16];
+        end
+        if (view$16 == 3) begin
+            act$16 = tok$3$q[act_bit$16];
+        end
+        if (view_add$16 == 3) begin
+            add$16 = tok$3$q[add_bit$16];
+        end
+        if (view$16 == 4) begin
+            act$16 = tok$4$q[act_bit$16];
+        end
+        if (view_add$16 == 4) begin
+            add$16 = tok$4$q[add_bit$16];
+        end
+        if (view$16 == 5) begin
+            act$16 = tok$5$q[act_bit$16];
+        end
+        if (view_add$16 == 5) begin
+            add$16 = tok$5$q[add_bit$16];
+        end
+        act$17 = 1'b0;
+        add$17 = 1'b0;
+        if (view$17 == 0) begin
+            act$17 = tok$0$q[act_bit$17];
+        end
+        if (view_add$17 == 0) begin
+            add$17 = tok$0$q[add_bit$17];
+        end
+        if (view$17 == 1) begin
+            act$17 = tok$1$q[act_bit$17];
+        end
+        if (view_add$17 == 1) begin
+            add$17 = tok$1$q[add_bit$17];
+        end
+        if (view$17 == 2) begin
+            act$17 = tok$2$q[act_bit$17];
+        end
+        if (view_add$17 == 2) begin
+            add$17 = tok$2$q[add_bit$17];
+        end
+        if (view$17 == 3) begin
+            act$17 = tok$3$q[act_bit$17];
+        end
+        if (view_add$17 == 3) begin
+            add$17 = tok$3$q[add_bit$17];
+        end
+        if (view$17 == 4) begin
+            act$17 = tok$4$q[act_bit$17];
+        end
+        if (view_add$17 == 4) begin
+            add$17 = tok$4$q[add_bit$17];
+        end
+        if (view$17 == 5) begin
+            act$17 = tok$5$q[act_bit$17];
+        end
+        if (view_add$17 == 5) begin
+            add$17 = tok$5$q[add_bit$17];
+        end
+        act$18 = 1'b0;
+        add$18 = 1'b0;
+        if (view$18 == 0) begin
+            act$18 = tok$0$q[act_bit$18];
+        end
+        if (view_add$18 == 0) begin
+            add$18 = tok$0$q[add_bit$18];
+        end
+        if (view$18 == 1) begin
+            act$18 = tok$1$q[act_bit$18];
+        end
+        if (view_add$18 == 1) begin
+            add$18 = tok$1$q[add_bit$18];
+        end
+        if (view$18 == 2) begin
+            act$18 = tok$2$q[act_bit$18];
+        end
+        if (view_add$18 == 2) begin
+            add$18 = tok$2$q[add_bit$18];
+        end
+        if (view$18 == 3) begin
+            act$18 = tok$3$q[act_bit$18];
+        end
+        if (view_add$18 == 3) begin
+            add$18 = tok$3$q[add_bit$18];
+        end
+        if (view$18 == 4) begin
+            act$18 = tok$4$q[act_bit$18];
+        end
+        if (view_add$18 == 4) begin
+            add$18 = tok$4$q[add_bit$18];
+        end
+        if (view$18 == 5) begin
+            act$18 = tok$5$q[act_bit$18];
+        end
+        if (view_add$18 == 5) begin
+            add$18 = tok$5$q[add_bit$18];
+        end
+        act$19 = 1'b0;
+        add$19 = 1'b0;
+        if (view$19 == 0) begin
+            act$19 = tok$0$q[act_bit$19];
+        end
+        if (view_add$19 == 0) begin
+            add$19 = tok$0$q[add_bit$19];
+        end
+        if (view$19 == 1) begin
+            act$19 = tok$1$q[act_bit$19];
+        end
+        if (view_add$19 == 1) begin
+            add$19 = tok$1$q[add_bit$19];
+        end
+        if (view$19 == 2) begin
+            act$19 = tok$2$q[act_bit$19];
+        end
+        if (view_add$19 == 2) begin
+            add$19 = tok$2$q[add_bit$19];
+        end
+        if (view$19 == 3) begin
+            act$19 = tok$3$q[act_bit$19];
+        end
+        if (view_add$19 == 3) begin
+            add$19 = tok$3$q[add_bit$19];
+        end
+        if (view$19 == 4) begin
+            act$19 = tok$4$q[act_bit$19];
+        end
+        if (view_add$19 == 4) begin
+            add$19 = tok$4$q[add_bit$19];
+        end
+        if (view$19 == 5) begin
+            act$19 = tok$5$q[act_bit$19];
+        end
+        if (view_add$19 == 5) begin
+            add$19 = tok$5$q[add_bit$19];
+        end
+        act$20 = 1'b0;
+        add$20 = 1'b0;
+        if (view$20 == 0) begin
+            act$20 = tok$0$q[act_bit$20];
+        end
+        if (view_add$20 == 0) begin
+            add$20 = tok$0$q[add_bit$20];
+        end
+        if (view$20 == 1) begin
+            act$20 = tok$1$q[act_bit$20];
+        end
+        if (view_add$20 == 1) begin
+            add$20 = tok$1$q[add_bit$20];
+        end
+        if (view$20 == 2) begin
+            act$20 = tok$2$q[act_bit$20];
+        end
+        if (view_add$20 == 2) begin
+            add$20 = tok$2$q[add_bit$20];
+        end
+        if (view$20 == 3) begin
+            act$20 = tok$3$q[act_bit$20];
+        end
+        if (view_add$20 == 3) begin
+            add$20 = tok$3$q[add_bit$20];
+        end
+        if (view$20 == 4) begin
+            act$20 = tok$4$q[act_bit$20];
+        end
+        if (view_add$20 == 4) begin
+            add$20 = tok$4$q[add_bit$20];
+        end
+        if (view$20 == 5) begin
+            act$20 = tok$5$q[act_bit$20];
+        end
+        if (view_add$20 == 5) begin
+            add$20 = tok$5$q[add_bit$20];
+        end
+        act$21 = 1'b0;
+        add$21 = 1'b0;
+        if (view$21 == 0) begin
+            act$21 = tok$0$q[act_bit$21];
+        end
+        if (view_add$21 == 0) begin
+            add$21 = tok$0$q[add_bit$21];
+        end
+        if (view$21 == 1) begin
+            act$21 = tok$1$q[act_bit$21];
+        end
+        if (view_add$21 == 1) begin
+            add$21 = tok$1$q[add_bit$21];
+        end
+        if (view$21 == 2) begin
+            act$21 = tok$2$q[act_bit$21];
+        end
+        if (view_add$21 == 2) begin
+            add$21 = tok$2$q[add_bit$21];
+        end
+        if (view$21 == 3) begin
+            act$21 = tok$3$q[act_bit$21];
+        end
+        if (view_add$21 == 3) begin
+            add$21 = tok$3$q[add_bit$21];
+        end
+        if (view$21 == 4) begin
+            act$21 = tok$4$q[act_bit$21];
+        end
+        if (view_add$21 == 4) begin
+            add$21 = tok$4$q[add_bit$21];
+        end
+        if (view$21 == 5) begin
+            act$21 = tok$5$q[act_bit$21];
+        end
+        if (view_add$21 == 5) begin
+            add$21 = tok$5$q[add_bit$21];
+        end
+        act$22 = 1'b0;
+        add$22 = 1'b0;
+        if (view$22 == 0) begin
+            act$22 = tok$0$q[act_bit$22];
+        end
+        if (view_add$22 == 0) begin
+            add$22 = tok$0$q[add_bit$22];
+        end
+        if (view$22 == 1) begin
+            act$22 = tok$1$q[act_bit$22];
+        end
+        if (view_add$22 == 1) begin
+            add$22 = tok$1$q[add_bit$22];
+        end
+        if (view$22 == 2) begin
+            act$22 = tok$2$q[act_bit$22];
+        end
+        if (view_add$22 == 2) begin
+            add$22 = tok$2$q[add_bit$22];
+        end
+        if (view$22 == 3) begin
+            act$22 = tok$3$q[act_bit$22];
+        end
+        if (view_add$22 == 3) begin
+            add$22 = tok$3$q[add_bit$22];
+        end
+        if (view$22 == 4) begin
+            act$22 = tok$4$q[act_bit$22];
+        end
+        if (view_add$22 == 4) begin
+            add$22 = tok$4$q[add_bit$22];
+        end
+        if (view$22 == 5) begin
+            act$22 = tok$5$q[act_bit$22];
+        end
+        if (view_add$22 == 5) begin
+            add$22 = tok$5$q[add_bit$22];
+        end
+        act$23 = 1'b0;
+        add$23 = 1'b0;
+        if (view$23 == 0) begin
+            act$23 = tok$0$q[act_bit$23];
+        end
+        if (view_add$23 == 0) begin
+            add$23 = tok$0$q[add_bit$23];
+        end
+        if (view$23 == 1) begin
+            act$23 = tok$1$q[act_bit$23];
+        end
+        if (view_add$23 == 1) begin
+            add$23 = tok$1$q[add_bit$23];
+        end
+        if (view$23 == 2) begin
+            act$23 = tok$2$q[act_bit$23];
+        end
+        if (view_add$23 == 2) begin
+            add$23 = tok$2$q[add_bit$23];
+        end
+        if (view$23 == 3) begin
+            act$23 = tok$3$q[act_bit$23];
+        end
+        if (view_add$23 == 3) begin
+            add$23 = tok$3$q[add_bit$23];
+        end
+        if (view$23 == 4) begin
+            act$23 = tok$4$q[act_bit$23];
+        end
+        if (view_add$23 == 4) begin
+            add$23 = tok$4$q[add_bit$23];
+        end
+        if (view$23 == 5) begin
+            act$23 = tok$5$q[act_bit$23];
+        end
+        if (view_add$23 == 5) begin
+            add$23 = tok$5$q[add_bit$23];
+        end
+        act$24 = 1'b0;
+        add$24 = 1'b0;
+        if (view$24 == 0) begin
+            act$24 = tok$0$q[act_bit$24];
+        end
+        if (view_add$24 == 0) begin
+            add$24 = tok$0$q[add_bit$24];
+        end
+        if (view$24 == 1) begin
+            act$24 = tok$1$q[act_bit$24];
+        end
+        if (view_add$24 == 1) begin
+            add$24 = tok$1$q[add_bit$24];
+        end
+        if (view$24 == 2) begin
+            act$24 = tok$2$q[act_bit$24];
+        end
+        if (view_add$24 == 2) begin
+            add$24 = tok$2$q[add_bit$24];
+        end
+        if (view$24 == 3) begin
+            act$24 = tok$3$q[act_bit$24];
+        end
+        if (view_add$24 == 3) begin
+            add$24 = tok$3$q[add_bit$24];
+        end
+        if (view$24 == 4) begin
+            act$24 = tok$4$q[act_bit$24];
+        end
+        if (view_add$24 == 4) begin
+            add$24 = tok$4$q[add_bit$24];
+        end
+        if (view$24 == 5) begin
+            act$24 = tok$5$q[act_bit$24];
+        end
+        if (view_add$24 == 5) begin
+            add$24 = tok$5$q[add_bit$24];
+        end
+        act$25 = 1'b0;
+        add$25 = 1'b0;
+        if (view$25 == 0) begin
+            act$25 = tok$0$q[act_bit$25];
+        end
+        if (view_add$25 == 0) begin
+            add$25 = tok$0$q[add_bit$25];
+        end
+        if (view$25 == 1) begin
+            act$25 = tok$1$q[act_bit$25];
+        end
+        if (view_add$25 == 1) begin
+            add$25 = tok$1$q[add_bit$25];
+        end
+        if (view$25 == 2) begin
+            act$25 = tok$2$q[act_bit$25];
+        end
+        if (view_add$25 == 2) begin
+            add$25 = tok$2$q[add_bit$25];
+        end
+        if (view$25 == 3) begin
+            act$25 = tok$3$q[act_bit$25];
+        end
+        if (view_add$25 == 3) begin
+            add$25 = tok$3$q[add_bit$25];
+        end
+        if (view$25 == 4) begin
+            act$25 = tok$4$q[act_bit$25];
+        end
+        if (view_add$25 == 4) begin
+            add$25 = tok$4$q[add_bit$25];
+        end
+        if (view$25 == 5) begin
+            act$25 = tok$5$q[act_bit$25];
+        end
+        if (view_add$25 == 5) begin
+            add$25 = tok$5$q[add_bit$25];
+        end
+        act$26 = 1'b0;
+        add$26 = 1'b0;
+        if (view$26 == 0) begin
+            act$26 = tok$0$q[act_bit$26];
+        end
+        if (view_add$26 == 0) begin
+            add$26 = tok$0$q[add_bit$26];
+        end
+        if (view$26 == 1) begin
+            act$26 = tok$1$q[act_bit$26];
+        end
+        if (view_add$26 == 1) begin
+            add$26 = tok$1$q[add_bit$26];
+        end
+        if (view$26 == 2) begin
+            act$26 = tok$2$q[act_bit$26];
+        end
+        if (view_add$26 == 2) begin
+            add$26 = tok$2$q[add_bit$26];
+        end
+        if (view$26 == 3) begin
+            act$26 = tok$3$q[act_bit$26];
+        end
+        if (view_add$26 == 3) begin
+            add$26 = tok$3$q[add_bit$26];
+        end
+        if (view$26 == 4) begin
+            act$26 = tok$4$q[act_bit$26];
+        end
+        if (view_add$26 == 4) begin
+            add$26 = tok$4$q[add_bit$26];
+        end
+        if (view$26 == 5) begin
+            act$26 = tok$5$q[act_bit$26];
+        end
+        if (view_add$26 == 5) begin
+            add$26 = tok$5$q[add_bit$26];
+        end
+        act$27 = 1'b0;
+        add$27 = 1'b0;
+        if (view$27 == 0) begin
+            act$27 = tok$0$q[act_bit$27];
+        end
+        if (view_add$27 == 0) begin
+            add$27 = tok$0$q[add_bit$27];
+        end
+        if (view$27 == 1) begin
+            act$27 = tok$1$q[act_bit$27];
+        end
+        if (view_add$27 == 1) begin
+            add$27 = tok$1$q[add_bit$27];
+        end
+        if (view$27 == 2) begin
+            act$27 = tok$2$q[act_bit$27];
+        end
+        if (view_add$27 == 2) begin
+            add$27 = tok$2$q[add_bit$27];
+        end
+        if (view$27 == 3) begin
+            act$27 = tok$3$q[act_bit$27];
+        end
+        if (view_add$27 == 3) begin
+            add$27 = tok$3$q[add_bit$27];
+        end
+        if (view$27 == 4) begin
+            act$27 = tok$4$q[act_bit$27];
+        end
+        if (view_add$27 == 4) begin
+            add$27 = tok$4$q[add_bit$27];
+        end
+        if (view$27 == 5) begin
+            act$27 = tok$5$q[act_bit$27];
+        end
+        if (view_add$27 == 5) begin
+            add$27 = tok$5$q[add_bit$27];
+        end
+        act$28 = 1'b0;
+        add$28 = 1'b0;
+        if (view$28 == 0) begin
+            act$28 = tok$0$q[act_bit$28];
+        end
+        if (view_add$28 == 0) begin
+            add$28 = tok$0$q[add_bit$28];
+        end
+        if (view$28 == 1) begin
+            act$28 = tok$1$q[act_bit$28];
+        end
+        if (view_add$28 == 1) begin
+            add$28 = tok$1$q[add_bit$28];
+        end
+        if (view$28 == 2) begin
+            act$28 = tok$2$q[act_bit$28];
+        end
+        if (view_add$28 == 2) begin
+            add$28 = tok$2$q[add_bit$28];
+        end
+        if (view$28 == 3) begin
+            act$28 = tok$3$q[act_bit$28];
+        end
+        if (view_add$28 == 3) begin
+            add$28 = tok$3$q[add_bit$28];
+        end
+        if (view$28 == 4) begin
+            act$28 = tok$4$q[act_bit$28];
+        end
+        if (view_add$28 == 4) begin
+            add$28 = tok$4$q[add_bit$28];
+        end
+        if (view$28 == 5) begin
+            act$28 = tok$5$q[act_bit$28];
+        end
+        if (view_add$28 == 5) begin
+            add$28 = tok$5$q[add_bit$28];
+        end
+        act$29 = 1'b0;
+        add$29 = 1'b0;
+        if (view$29 == 0) begin
+            act$29 = tok$0$q[act_bit$29];
+        end
+        if (view_add$29 == 0) begin
+            add$29 = tok$0$q[add_bit$29];
+        end
+        if (view$29 == 1) begin
+            act$29 = tok$1$q[act_bit$29];
+        end
+        if (view_add$29 == 1) begin
+            add$29 = tok$1$q[add_bit$29];
+        end
+        if (view$29 == 2) begin
+            act$29 = tok$2$q[act_bit$29];
+        end
+        if (view_add$29 == 2) begin
+            add$29 = tok$2$q[add_bit$29];
+        end
+        if (view$29 == 3) begin
+            act$29 = tok$3$q[act_bit$29];
+        end
+        if (view_add$29 == 3) begin
+            add$29 = tok$3$q[add_bit$29];
+        end
+        if (view$29 == 4) begin
+            act$29 = tok$4$q[act_bit$29];
+        end
+        if (view_add$29 == 4) begin
+            add$29 = tok$4$q[add_bit$29];
+        end
+        if (view$29 == 5) begin
+            act$29 = tok$5$q[act_bit$29];
+        end
+        if (view_add$29 == 5) begin
+            add$29 = tok$5$q[add_bit$29];
+        end
+        act$30 = 1'b0;
+        add$30 = 1'b0;
+        if (view$30 == 0) begin
+            act$30 = tok$0$q[act_bit$30];
+        end
+        if (view_add$30 == 0) begin
+            add$30 = tok$0$q[add_bit$30];
+        end
+        if (view$30 == 1) begin
+            act$30 = tok$1$q[act_bit$30];
+        end
+        if (view_add$30 == 1) begin
+            add$30 = tok$1$q[add_bit$30];
+        end
+        if (view$30 == 2) begin
+            act$30 = tok$2$q[act_bit$30];
+        end
+        if (view_add$30 == 2) begin
+            add$30 = tok$2$q[add_bit$30];
+        end
+        if (view$30 == 3) begin
+            act$30 = tok$3$q[act_bit$30];
+        end
+        if (view_add$30 == 3) begin
+            add$30 = tok$3$q[add_bit$30];
+        end
+        if (view$30 == 4) begin
+            act$30 = tok$4$q[act_bit$30];
+        end
+        if (view_add$30 == 4) begin
+            add$30 = tok$4$q[add_bit$30];
+        end
+        if (view$30 == 5) begin
+            act$30 = tok$5$q[act_bit$30];
+        end
+        if (view_add$30 == 5) begin
+            add$30 = tok$5$q[add_bit$30];
+        end
+        act$31 = 1'b0;
+        add$31 = 1'b0;
+        if (view$31 == 0) begin
+            act$31 = tok$0$q[act_bit$31];
+        end
+        if (view_add$31 == 0) begin
+            add$31 = tok$0$q[add_bit$31];
+        end
+        if (view$31 == 1) begin
+            act$31 = tok$1$q[act_bit$31];
+        end
+        if (view_add$31 == 1) begin
+            add$31 = tok$1$q[add_bit$31];
+        end
+        if (view$31 == 2) begin
+            act$31 = tok$2$q[act_bit$31];
+        end
+        if (view_add$31 == 2) begin
+            add$31 = tok$2$q[add_bit$31];
+        end
+        if (view$31 == 3) begin
+            act$31 = tok$3$q[act_bit$31];
+        end
+        if (view_add$31 == 3) begin
+            add$31 = tok$3$q[add_bit$31];
+        end
+        if (view$31 == 4) begin
+            act$31 = tok$4$q[act_bit$31];
+        end
+        if (view_add$31 == 4) begin
+            add$31 = tok$4$q[add_bit$31];
+        end
+        if (view$31 == 5) begin
+            act$31 = tok$5$q[act_bit$31];
+        end
+        if (view_add$31 == 5) begin
+            add$31 = tok$5$q[add_bit$31];
+        end
+        act$32 = 1'b0;
+        add$32 = 1'b0;
+        if (view$32 == 0) begin
+            act$32 = tok$0$q[act_bit$32];
+        end
+        if (view_add$32 == 0) begin
+            add$32 = tok$0$q[add_bit$32];
+        end
+        if (view$32 == 1) begin
+            act$32 = tok$1$q[act_bit$32];
+        end
+        if (view_add$32 == 1) begin
+            add$32 = tok$1$q[add_bit$32];
+        end
+        if (view$32 == 2) begin
+            act$32 = tok$2$q[act_bit$32];
+        end
+        if (view_add$32 == 2) begin
+            add$32 = tok$2$q[add_bit$32];
+        end
+        if (view$32 == 3) begin
+            act$32 = tok$3$q[act_bit$32];
+        end
+        if (view_add$32 == 3) begin
+            add$32 = tok$3$q[add_bit$32];
+        end
+        if (view$32 == 4) begin
+            act$32 = tok$4$q[act_bit$32];
+        end
+        if (view_add$32 == 4) begin
+            add$32 = tok$4$q[add_bit$32];
+        end
+        if (view$32 == 5) begin
+            act$32 = tok$5$q[act_bit$32];
+        end
+        if (view_add$32 == 5) begin
+            add$32 = tok$5$q[add_bit$32];
+        end
+        act$33 = 1'b0;
+        add$33 = 1'b0;
+        if (view$33 == 0) begin
+            act$33 = tok$0$q[act_bit$33];
+        end
+        if (view_add$33 == 0) begin
+            add$33 = tok$0$q[add_bit$33];
+        end
+        if (view$33 == 1) begin
+            act$33 = tok$1$q[act_bit$33];
+        end
+        if (view_add$33 == 1) begin
+            add$33 = tok$1$q[add_bit$33];
+        end
+        if (view$33 == 2) begin
+            act$33 = tok$2$q[act_bit$33];
+        end
+        if (view_add$33 == 2) begin
+            add$33 = tok$2$q[add_bit$33];
+        end
+        if (view$33 == 3) begin
+            act$33 = tok$3$q[act_bit$33];
+        end
+        if (view_add$33 == 3) begin
+            add$33 = tok$3$q[add_bit$33];
+        end
+        if (view$33 == 4) begin
+            act$33 = tok$4$q[act_bit$33];
+        end
+        if (view_add$33 == 4) begin
+            add$33 = tok$4$q[add_bit$33];
+        end
+        if (view$33 == 5) begin
+            act$33 = tok$5$q[act_bit$33];
+        end
+        if (view_add$33 == 5) begin
+            add$33 = tok$5$q[add_bit$33];
+        end
+        act$34 = 1'b0;
+        add$34 = 1'b0;
+        if (view$34 == 0) begin
+            act$34 = tok$0$q[act_bit$34];
+        end
+        if (view_add$34 == 0) begin
+            add$34 = tok$0$q[add_bit$34];
+        end
+        if (view$34 == 1) begin
+            act$34 = tok$1$q[act_bit$34];
+        end
+        if (view_add$34 == 1) begin
+            add$34 = tok$1$q[add_bit$34];
+        end
+        if (view$34 == 2) begin
+            act$34 = tok$2$q[act_bit$34];
+        end
+        if (view_add$34 == 2) begin
+            add$34 = tok$2$q[add_bit$34];
+        end
+        if (view$34 == 3) begin
+            act$34 = tok$3$q[act_bit$34];
+        end
+        if (view_add$34 == 3) begin
+            add$34 = tok$3$q[add_bit$34];
+        end
+        if (view$34 == 4) begin
+            act$34 = tok$4$q[act_bit$34];
+        end
+        if (view_add$34 == 4) begin
+            add$34 = tok$4$q[add_bit$34];
+        end
+        if (view$34 == 5) begin
+            act$34 = tok$5$q[act_bit$34];
+        end
+        if (view_add$34 == 5) begin
+            add$34 = tok$5$q[add_bit$34];
+        end
+        act$35 = 1'b0;
+        add$35 = 1'b0;
+        if (view$35 == 0) begin
+            act$35 = tok$0$q[act_bit$35];
+        end
+        if (view_add$35 == 0) begin
+            add$35 = tok$0$q[add_bit$35];
+        end
+        if (view$35 == 1) begin
+            act$35 = tok$1$q[act_bit$35];
+        end
+        if (view_add$35 == 1) begin
+            add$35 = tok$1$q[add_bit$35];
+        end
+        if (view$35 == 2) begin
+            act$35 = tok$2$q[act_bit$35];
+        end
+        if (view_add$35 == 2) begin
+            add$35 = tok$2$q[add_bit$35];
+        end
+        if (view$35 == 3) begin
+            act$35 = tok$3$q[act_bit$35];
+        end
+        if (view_add$35 == 3) begin
+            add$35 = tok$3$q[add_bit$35];
+        end
+        if (view$35 == 4) begin
+            act$35 = tok$4$q[act_bit$35];
+        end
+        if (view_add$35 == 4) begin
+            add$35 = tok$4$q[add_bit$35];
+        end
+        if (view$35 == 5) begin
+            act$35 = tok$5$q[act_bit$35];
+        end
+        if (view_add$35 == 5) begin
+            add$35 = tok$5$q[add_bit$35];
+        end
+        act$36 = 1'b0;
+        add$36 = 1'b0;
+        if (view$36 == 0) begin
+            act$36 = tok$0$q[act_bit$36];
+        end
+        if (view_add$36 == 0) begin
+            add$36 = tok$0$q[add_bit$36];
+        end
+        if (view$36 == 1) begin
+            act$36 = tok$1$q[act_bit$36];
+        end
+        if (view_add$36 == 1) begin
+            add$36 = tok$1$q[add_bit$36];
+        end
+        if (view$36 == 2) begin
+            act$36 = tok$2$q[act_bit$36];
+        end
+        if (view_add$36 == 2) begin
+            add$36 = tok$2$q[add_bit$36];
+        end
+        if (view$36 == 3) begin
+            act$36 = tok$3$q[act_bit$36];
+        end
+        if (view_add$36 == 3) begin
+            add$36 = tok$3$q[add_bit$36];
+        end
+        if (view$36 == 4) begin
+            act$36 = tok$4$q[act_bit$36];
+        end
+        if (view_add$36 == 4) begin
+            add$36 = tok$4$q[add_bit$36];
+        end
+        if (view$36 == 5) begin
+            act$36 = tok$5$q[act_bit$36];
+        end
+        if (view_add$36 == 5) begin
+            add$36 = tok$5$q[add_bit$36];
+        end
+        act$37 = 1'b0;
+        add$37 = 1'b0;
+        if (view$37 == 0) begin
+            act$37 = tok$0$q[act_bit$37];
+        end
+        if (view_add$37 == 0) begin
+            add$37 = tok$0$q[add_bit$37];
+        end
+        if (view$37 == 1) begin
+            act$37 = tok$1$q[act_bit$37];
+        end
+        if (view_add$37 == 1) begin
+            add$37 = tok$1$q[add_bit$37];
+        end
+        if (view$37 == 2) begin
+            act$37 = tok$2$q[act_bit$37];
+        end
+        if (view_add$37 == 2) begin
+            add$37 = tok$2$q[add_bit$37];
+        end
+        if (view$37 == 3) begin
+            act$37 = tok$3$q[act_bit$37];
+        end
+        if (view_add$37 == 3) begin
+            add$37 = tok$3$q[add_bit$37];
+        end
+        if (view$37 == 4) begin
+            act$37 = tok$4$q[act_bit$37];
+        end
+        if (view_add$37 == 4) begin
+            add$37 = tok$4$q[add_bit$37];
+        end
+        if (view$37 == 5) begin
+            act$37 = tok$5$q[act_bit$37];
+        end
+        if (view_add$37 == 5) begin
+            add$37 = tok$5$q[add_bit$37];
+        end
+        act$38 = 1'b0;
+        add$38 = 1'b0;
+        if (view$38 == 0) begin
+            act$38 = tok$0$q[act_bit$38];
+        end
+        if (view_add$38 == 0) begin
+            add$38 = tok$0$q[add_bit$38];
+        end
+        if (view$38 == 1) begin
+            act$38 = tok$1$q[act_bit$38];
+        end
+        if (view_add$38 == 1) begin
+            add$38 = tok$1$q[add_bit$38];
+        end
+        if (view$38 == 2) begin
+            act$38 = tok$2$q[act_bit$38];
+        end
+        if (view_add$38 == 2) begin
+            add$38 = tok$2$q[add_bit$38];
+        end
+        if (view$38 == 3) begin
+            act$38 = tok$3$q[act_bit$38];
+        end
+        if (view_add$38 == 3) begin
+            add$38 = tok$3$q[add_bit$38];
+        end
+        if (view$38 == 4) begin
+            act$38 = tok$4$q[act_bit$38];
+        end
+        if (view_add$38 == 4) begin
+            add$38 = tok$4$q[add_bit$38];
+        end
+        if (view$38 == 5) begin
+            act$38 = tok$5$q[act_bit$38];
+        end
+        if (view_add$38 == 5) begin
+            add$38 = tok$5$q[add_bit$38];
+        end
+        act$39 = 1'b0;
+        add$39 = 1'b0;
+        if (view$39 == 0) begin
+            act$39 = tok$0$q[act_bit$39];
+        end
+        if (view_add$39 == 0) begin
+            add$39 = tok$0$q[add_bit$39];
+        end
+        if (view$39 == 1) begin
+            act$39 = tok$1$q[act_bit$39];
+        end
+        if (view_add$39 == 1) begin
+            add$39 = tok$1$q[add_bit$39];
+        end
+        if (view$39 == 2) begin
+            act$39 = tok$2$q[act_bit$39];
+        end
+        if (view_add$39 == 2) begin
+            add$39 = tok$2$q[add_bit$39];
+        end
+        if (view$39 == 3) begin
+            act$39 = tok$3$q[act_bit$39];
+        end
+        if (view_add$39 == 3) begin
+            add$39 = tok$3$q[add_bit$39];
+        end
+        if (view$39 == 4) begin
+            act$39 = tok$4$q[act_bit$39];
+        end
+        if (view_add$39 == 4) begin
+            add$39 = tok$4$q[add_bit$39];
+        end
+        if (view$39 == 5) begin
+            act$39 = tok$5$q[act_bit$39];
+        end
+        if (view_add$39 == 5) begin
+            add$39 = tok$5$q[add_bit$39];
+        end
+        act$40 = 1'b0;
+        add$40 = 1'b0;
+        if (view$40 == 0) begin
+            act$40 = tok$0$q[act_bit$40];
+        end
+        if (view_add$40 == 0) begin
+            add$40 = tok$0$q[add_bit$40];
+        end
+        if (view$40 == 1) begin
+            act$40 = tok$1$q[act_bit$40];
+        end
+        if (view_add$40 == 1) begin
+            add$40 = tok$1$q[add_bit$40];
+        end
+        if (view$40 == 2) begin
+            act$40 = tok$2$q[act_bit$40];
+        end
+        if (view_add$40 == 2) begin
+            add$40 = tok$2$q[add_bit$40];
+        end
+        if (view$40 == 3) begin
+            act$40 = tok$3$q[act_bit$40];
+        end
+        if (view_add$40 == 3) begin
+            add$40 = tok$3$q[add_bit$40];
+        end
+        if (view$40 == 4) begin
+            act$40 = tok$4$q[act_bit$40];
+        end
+        if (view_add$40 == 4) begin
+            add$40 = tok$4$q[add_bit$40];
+        end
+        if (view$40 == 5) begin
+            act$40 = tok$5$q[act_bit$40];
+        end
+        if (view_add$40 == 5) begin
+            add$40 = tok$5$q[add_bit$40];
+        end
+        act$41 = 1'b0;
+        add$41 = 1'b0;
+        if (view$41 == 0) begin
+            act$41 = tok$0$q[act_bit$41];
+        end
+        if (view_add$41 == 0) begin
+            add$41 = tok$0$q[add_bit$41];
+        end
+        if (view$41 == 1) begin
+            act$41 = tok$1$q[act_bit$41];
+        end
+        if (view_add$41 == 1) begin
+            add$41 = tok$1$q[add_bit$41];
+        end
+        if (view$41 == 2) begin
+            act$41 = tok$2$q[act_bit$41];
+        end
+        if (view_add$41 == 2) begin
+            add$41 = tok$2$q[add_bit$41];
+        end
+        if (view$41 == 3) begin
+            act$41 = tok$3$q[act_bit$41];
+        end
+        if (view_add$41 == 3) begin
+            add$41 = tok$3$q[add_bit$41];
+        end
+        if (view$41 == 4) begin
+            act$41 = tok$4$q[act_bit$41];
+        end
+        if (view_add$41 == 4) begin
+            add$41 = tok$4$q[add_bit$41];
+        end
+        if (view$41 == 5) begin
+            act$41 = tok$5$q[act_bit$41];
+        end
+        if (view_add$41 == 5) begin
+            add$41 = tok$5$q[add_bit$41];
+        end
+        act$42 = 1'b0;
+        add$42 = 1'b0;
+        if (view$42 == 0) begin
+            act$42 = tok$0$q[act_bit$42];
+        end
+        if (view_add$42 == 0) begin
+            add$42 = tok$0$q[add_bit$42];
+        end
+        if (view$42 == 1) begin
+            act$42 = tok$1$q[act_bit$42];
+        end
+        if (view_add$42 == 1) begin
+            add$42 = tok$1$q[add_bit$42];
+        end
+        if (view$42 == 2) begin
+            act$42 = tok$2$q[act_bit$42];
+        end
+        if (view_add$42 == 2) begin
+            add$42 = tok$2$q[add_bit$42];
+        end
+        if (view$42 == 3) begin
+            act$42 = tok$3$q[act_bit$42];
+        end
+        if (view_add$42 == 3) begin
+            add$42 = tok$3$q[add_bit$42];
+        end
+        if (view$42 == 4) begin
+            act$42 = tok$4$q[act_bit$42];
+        end
+        if (view_add$42 == 4) begin
+            add$42 = tok$4$q[add_bit$42];
+        end
+        if (view$42 == 5) begin
+            act$42 = tok$5$q[act_bit$42];
+        end
+        if (view_add$42 == 5) begin
+            add$42 = tok$5$q[add_bit$42];
+        end
+        act$43 = 1'b0;
+        add$43 = 1'b0;
+        if (view$43 == 0) begin
+            act$43 = tok$0$q[act_bit$43];
+        end
+        if (view_add$43 == 0) begin
+            add$43 = tok$0$q[add_bit$43];
+        end
+        if (view$43 == 1) begin
+            act$43 = tok$1$q[act_bit$43];
+        end
+        if (view_add$43 == 1) begin
+            add$43 = tok$1$q[add_bit$43];
+        end
+        if (view$43 == 2) begin
+            act$43 = tok$2$q[act_bit$43];
+        end
+        if (view_add$43 == 2) begin
+            add$43 = tok$2$q[add_bit$43];
+        end
+        if (view$43 == 3) begin
+            act$43 = tok$3$q[act_bit$43];
+        end
+        if (view_add$43 == 3) begin
+            add$43 = tok$3$q[add_bit$43];
+        end
+        if (view$43 == 4) begin
+            act$43 = tok$4$q[act_bit$43];
+        end
+        if (view_add$43 == 4) begin
+            add$43 = tok$4$q[add_bit$43];
+        end
+        if (view$43 == 5) begin
+            act$43 = tok$5$q[act_bit$43];
+        end
+        if (view_add$43 == 5) begin
+            add$43 = tok$5$q[add_bit$43];
+        end
+        act$44 = 1'b0;
+        add$44 = 1'b0;
+        if (view$44 == 0) begin
+            act$44 = tok$0$q[act_bit$44];
+        end
+        if (view_add$44 == 0) begin
+            add$44 = tok$0$q[add_bit$44];
+        end
+        if (view$44 == 1) begin
+            act$44 = tok$1$q[act_bit$44];
+        end
+        if (view_add$44 == 1) begin
+            add$44 = tok$1$q[add_bit$44];
+        end
+        if (view$44 == 2) begin
+            act$44 = tok$2$q[act_bit$44];
+        end
+        if (view_add$44 == 2) begin
+            add$44 = tok$2$q[add_bit$44];
+        end
+        if (view$44 == 3) begin
+            act$44 = tok$3$q[act_bit$44];
+        end
+        if (view_add$44 == 3) begin
+            add$44 = tok$3$q[add_bit$44];
+        end
+        if (view$44 == 4) begin
+            act$44 = tok$4$q[act_bit$44];
+        end
+        if (view_add$44 == 4) begin
+            add$44 = tok$4$q[add_bit$44];
+        end
+        if (view$44 == 5) begin
+            act$44 = tok$5$q[act_bit$44];
+        end
+        if (view_add$44 == 5) begin
+            add$44 = tok$5$q[add_bit$44];
+        end
+        act$45 = 1'b0;
+        add$45 = 1'b0;
+        if (view$45 == 0) begin
+            act$45 = tok$0$q[act_bit$45];
+        end
+        if (view_add$45 == 0) begin
+            add$45 = tok$0$q[add_bit$45];
+        end
+        if (view$45 == 1) begin
+            act$45 = tok$1$q[act_bit$45];
+        end
+        if (view_add$45 == 1) begin
+            add$45 = tok$1$q[add_bit$45];
+        end
+        if (view$45 == 2) begin
+            act$45 = tok$2$q[act_bit$45];
+        end
+        if (view_add$45 == 2) begin
+            add$45 = tok$2$q[add_bit$45];
+        end
+        if (view$45 == 3) begin
+            act$45 = tok$3$q[act_bit$45];
+        end
+        if (view_add$45 == 3) begin
+            add$45 = tok$3$q[add_bit$45];
+        end
+        if (view$45 == 4) begin
+            act$45 = tok$4$q[act_bit$45];
+        end
+        if (view_add$45 == 4) begin
+            add$45 = tok$4$q[add_bit$45];
+        end
+        if (view$45 == 5) begin
+            act$45 = tok$5$q[act_bit$45];
+        end
+        if (view_add$45 == 5) begin
+            add$45 = tok$5$q[add_bit$45];
+        end
+        act$46 = 1'b0;
+        add$46 = 1'b0;
+        if (view$46 == 0) begin
+            act$46 = tok$0$q[act_bit$46];
+        end
+        if (view_add$46 == 0) begin
+            add$46 = tok$0$q[add_bit$46];
+        end
+        if (view$46 == 1) begin
+            act$46 = tok$1$q[act_bit$46];
+        end
+        if (view_add$46 == 1) begin
+            add$46 = tok$1$q[add_bit$46];
+        end
+        if (view$46 == 2) begin
+            act$46 = tok$2$q[act_bit$46];
+        end
+        if (view_add$46 == 2) begin
+            add$46 = tok$2$q[add_bit$46];
+        end
+        if (view$46 == 3) begin
+            act$46 = tok$3$q[act_bit$46];
+        end
+        if (view_add$46 == 3) begin
+            add$46 = tok$3$q[add_bit$46];
+        end
+        if (view$46 == 4) begin
+            act$46 = tok$4$q[act_bit$46];
+        end
+        if (view_add$46 == 4) begin
+            add$46 = tok$4$q[add_bit$46];
+        end
+        if (view$46 == 5) begin
+            act$46 = tok$5$q[act_bit$46];
+        end
+        if (view_add$46 == 5) begin
+            add$46 = tok$5$q[add_bit$46];
+        end
+        act$47 = 1'b0;
+        add$47 = 1'b0;
+        if (view$47 == 0) begin
+            act$47 = tok$0$q[act_bit$47];
+        end
+        if (view_add$47 == 0) begin
+            add$47 = tok$0$q[add_bit$47];
+        end
+        if (view$47 == 1) begin
+            act$47 = tok$1$q[act_bit$47];
+        end
+        if (view_add$47 == 1) begin
+            add$47 = tok$1$q[add_bit$47];
+        end
+        if (view$47 == 2) begin
+            act$47 = tok$2$q[act_bit$47];
+        end
+        if (view_add$47 == 2) begin
+            add$47 = tok$2$q[add_bit$47];
+        end
+        if (view$47 == 3) begin
+            act$47 = tok$3$q[act_bit$47];
+        end
+        if (view_add$47 == 3) begin
+            add$47 = tok$3$q[add_bit$47];
+        end
+        if (view$47 == 4) begin
+            act$47 = tok$4$q[act_bit$47];
+        end
+        if (view_add$47 == 4) begin
+            add$47 = tok$4$q[add_bit$47];
+        end
+        if (view$47 == 5) begin
+            act$47 = tok$5$q[act_bit$47];
+        end
+        if (view_add$47 == 5) begin
+            add$47 = tok$5$q[add_bit$47];
+        end
+        act$48 = 1'b0;
+        add$48 = 1'b0;
+        if (view$48 == 0) begin
+            act$48 = tok$0$q[act_bit$48];
+        end
+        if (view_add$48 == 0) begin
+            add$48 = tok$0$q[add_bit$48];
+        end
+        if (view$48 == 1) begin
+            act$48 = tok$1$q[act_bit$48];
+        end
+        if (view_add$48 == 1) begin
+            add$48 = tok$1$q[add_bit$48];
+        end
+        if (view$48 == 2) begin
+            act$48 = tok$2$q[act_bit$48];
+        end
+        if (view_add$48 == 2) begin
+            add$48 = tok$2$q[add_bit$48];
+        end
+        if (view$48 == 3) begin
+            act$48 = tok$3$q[act_bit$48];
+        end
+        if (view_add$48 == 3) begin
+            add$48 = tok$3$q[add_bit$48];
+        end
+        if (view$48 == 4) begin
+            act$48 = tok$4$q[act_bit$48];
+        end
+        if (view_add$48 == 4) begin
+            add$48 = tok$4$q[add_bit$48];
+        end
+        if (view$48 == 5) begin
+            act$48 = tok$5$q[act_bit$48];
+        end
+        if (view_add$48 == 5) begin
+            add$48 = tok$5$q[add_bit$48];
+        end
+        act$49 = 1'b0;
+        add$49 = 1'b0;
+        if (view$49 == 0) begin
+            act$49 = tok$0$q[act_bit$49];
+        end
+        if (view_add$49 == 0) begin
+            add$49 = tok$0$q[add_bit$49];
+        end
+        if (view$49 == 1) begin
+            act$49 = tok$1$q[act_bit$49];
+        end
+        if (view_add$49 == 1) begin
+            add$49 = tok$1$q[add_bit$49];
+        end
+        if (view$49 == 2) begin
+            act$49 = tok$2$q[act_bit$49];
+        end
+        if (view_add$49 == 2) begin
+            add$49 = tok$2$q[add_bit$49];
+        end
+        if (view$49 == 3) begin
+            act$49 = tok$3$q[act_bit$49];
+        end
+        if (view_add$49 == 3) begin
+            add$49 = tok$3$q[add_bit$49];
+        end
+        if (view$49 == 4) begin
+            act$49 = tok$4$q[act_bit$49];
+        end
+        if (view_add$49 == 4) begin
+            add$49 = tok$4$q[add_bit$49];
+        end
+        if (view$49 == 5) begin
+            act$49 = tok$5$q[act_bit$49];
+        end
+        if (view_add$49 == 5) begin
+            add$49 = tok$5$q[add_bit$49];
+        end
+        act$50 = 1'b0;
+        add$50 = 1'b0;
+        if (view$50 == 0) begin
+            act$50 = tok$0$q[act_bit$50];
+        end
+        if (view_add$50 == 0) begin
+            add$50 = tok$0$q[add_bit$50];
+        end
+        if (view$50 == 1) begin
+            act$50 = tok$1$q[act_bit$50];
+        end
+        if (view_add$50 == 1) begin
+            add$50 = tok$1$q[add_bit$50];
+        end
+        if (view$50 == 2) begin
+            act$50 = tok$2$q[act_bit$50];
+        end
+        if (view_add$50 == 2) begin
+            add$50 = tok$2$q[add_bit$50];
+        end
+        if (view$50 == 3) begin
+            act$50 = tok$3$q[act_bit$50];
+        end
+        if (view_add$50 == 3) begin
+            add$50 = tok$3$q[add_bit$50];
+        end
+        if (view$50 == 4) begin
+            act$50 = tok$4$q[act_bit$50];
+        end
+        if (view_add$50 == 4) begin
+            add$50 = tok$4$q[add_bit$50];
+        end
+        if (view$50 == 5) begin
+            act$50 = tok$5$q[act_bit$50];
+        end
+        if (view_add$50 == 5) begin
+            add$50 = tok$5$q[add_bit$50];
+        end
+        act$51 = 1'b0;
+        add$51 = 1'b0;
+        if (view$51 == 0) begin
+            act$51 = tok$0$q[act_bit$51];
+        end
+        if (view_add$51 == 0) begin
+            add$51 = tok$0$q[add_bit$51];
+        end
+        if (view$51 == 1) begin
+            act$51 = tok$1$q[act_bit$51];
+        end
+        if (view_add$51 == 1) begin
+            add$51 = tok$1$q[add_bit$51];
+        end
+        if (view$51 == 2) begin
+            act$51 = tok$2$q[act_bit$51];
+        end
+        if (view_add$51 == 2) begin
+            add$51 = tok$2$q[add_bit$51];
+        end
+        if (view$51 == 3) begin
+            act$51 = tok$3$q[act_bit$51];
+        end
+        if (view_add$51 == 3) begin
+            add$51 = tok$3$q[add_bit$51];
+        end
+        if (view$51 == 4) begin
+            act$51 = tok$4$q[act_bit$51];
+        end
+        if (view_add$51 == 4) begin
+            add$51 = tok$4$q[add_bit$51];
+        end
+        if (view$51 == 5) begin
+            act$51 = tok$5$q[act_bit$51];
+        end
+        if (view_add$51 == 5) begin
+            add$51 = tok$5$q[add_bit$51];
+        end
+        act$52 = 1'b0;
+        add$52 = 1'b0;
+        if (view$52 == 0) begin
+            act$52 = tok$0$q[act_bit$52];
+        end
+        if (view_add$52 == 0) begin
+            add$52 = tok$0$q[add_bit$52];
+        end
+        if (view$52 == 1) begin
+            act$52 = tok$1$q[act_bit$52];
+        end
+        if (view_add$52 == 1) begin
+            add$52 = tok$1$q[add_bit$52];
+        end
+        if (view$52 == 2) begin
+            act$52 = tok$2$q[act_bit$52];
+        end
+        if (view_add$52 == 2) begin
+            add$52 = tok$2$q[add_bit$52];
+        end
+        if (view$52 == 3) begin
+            act$52 = tok$3$q[act_bit$52];
+        end
+        if (view_add$52 == 3) begin
+            add$52 = tok$3$q[add_bit$52];
+        end
+        if (view$52 == 4) begin
+            act$52 = tok$4$q[act_bit$52];
+        end
+        if (view_add$52 == 4) begin
+            add$52 = tok$4$q[add_bit$52];
+        end
+        if (view$52 == 5) begin
+            act$52 = tok$5$q[act_bit$52];
+        end
+        if (view_add$52 == 5) begin
+            add$52 = tok$5$q[add_bit$52];
+        end
+        act$53 = 1'b0;
+        add$53 = 1'b0;
+        if (view$53 == 0) begin
+            act$53 = tok$0$q[act_bit$53];
+        end
+        if (view_add$53 == 0) begin
+            add$53 = tok$0$q[add_bit$53];
+        end
+        if (view$53 == 1) begin
+            act$53 = tok$1$q[act_bit$53];
+        end
+        if (view_add$53 == 1) begin
+            add$53 = tok$1$q[add_bit$53];
+        end
+        if (view$53 == 2) begin
+            act$53 = tok$2$q[act_bit$53];
+        end
+        if (view_add$53 == 2) begin
+            add$53 = tok$2$q[add_bit$53];
+        end
+        if (view$53 == 3) begin
+            act$53 = tok$3$q[act_bit$53];
+        end
+        if (view_add$53 == 3) begin
+            add$53 = tok$3$q[add_bit$53];
+        end
+        if (view$53 == 4) begin
+            act$53 = tok$4$q[act_bit$53];
+        end
+        if (view_add$53 == 4) begin
+            add$53 = tok$4$q[add_bit$53];
+        end
+        if (view$53 == 5) begin
+            act$53 = tok$5$q[act_bit$53];
+        end
+        if (view_add$53 == 5) begin
+            add$53 = tok$5$q[add_bit$53];
+        end
+        act$54 = 1'b0;
+        add$54 = 1'b0;
+        if (view$54 == 0) begin
+            act$54 = tok$0$q[act_bit$54];
+        end
+        if (view_add$54 == 0) begin
+            add$54 = tok$0$q[add_bit$54];
+        end
+        if (view$54 == 1) begin
+            act$54 = tok$1$q[act_bit$54];
+        end
+        if (view_add$54 == 1) begin
+            add$54 = tok$1$q[add_bit$54];
         end
-        act_r$40$clock = clock;
-        act_r$40$d = act_r$40$q;
-        add_r$40$clock = clock;
-        add_r$40$d = add_r$40$q;
-        if (run) begin
-            act_r$40$d = 1'b0;
-            add_r$40$d = 1'b0;
-            if (view$40 == 0) begin
-                if (cyc$40 == firsts$0) begin
-                    act_r$40$d = enter$0;
-                end
-                else begin
-                    act_r$40$d = t$0$q == cyc$40 - 32'h1;
-                end
-            end
-            if (view_add$40 == 0) begin
-                if (cyc_add$40 == firsts$0) begin
-                    add_r$40$d = enter$0;
-                end
-                else begin
-                    add_r$40$d = t$0$q == cyc_add$40 - 32'h1;
-                end
-            end
-            if (view$40 == 1) begin
-                if (cyc$40 == firsts$1) begin
-                    act_r$40$d = enter$1;
-                end
-                else begin
-                    act_r$40$d = t$1$q == cyc$40 - 32'h1;
-                end
-            end
-            if (view_add$40 == 1) begin
-                if (cyc_add$40 == firsts$1) begin
-                    add_r$40$d = enter$1;
-                end
-                else begin
-                    add_r$40$d = t$1$q == cyc_add$40 - 32'h1;
-                end
-            end
-            if (view$40 == 2) begin
-                if (cyc$40 == firsts$2) begin
-                    act_r$40$d = enter$2;
-                end
-                else begin
-                    act_r$40$d = t$2$q == cyc$40 - 32'h1;
-                end
-            end
-            if (view_add$40 == 2) begin
-                if (cyc_add$40 == firsts$2) begin
-                    add_r$40$d = enter$2;
-                end
-                else begin
-                    add_r$40$d = t$2$q == cyc_add$40 - 32'h1;
-                end
-            end
-            if (view$40 == 3) begin
-                if (cyc$40 == firsts$3) begin
-                    act_r$40$d = enter$3;
-                end
-                else begin
-                    act_r$40$d = t$3$q == cyc$40 - 32'h1;
-                end
-            end
-            if (view_add$40 == 3) begin
-                if (cyc_add$40 == firsts$3) begin
-                    add_r$40$d = enter$3;
-                end
-                else begin
-                    add_r$40$d = t$3$q == cyc_add$40 - 32'h1;
-                end
-            end
-            if (view$40 == 4) begin
-                if (cyc$40 == firsts$4) begin
-                    act_r$40$d = enter$4;
-                end
-                else begin
-                    act_r$40$d = t$4$q == cyc$40 - 32'h1;
-                end
-            end
-            if (view_add$40 == 4) begin
-                if (cyc_add$40 == firsts$4) begin
-                    add_r$40$d = enter$4;
-                end
-                else begin
-                    add_r$40$d = t$4$q == cyc_add$40 - 32'h1;
-                end
-            end
-            if (view$40 == 5) begin
-                if (cyc$40 == firsts$5) begin
-                    act_r$40$d = enter$5;
-                end
-                else begin
-                    act_r$40$d = t$5$q == cyc$40 - 32'h1;
-                end
-            end
-            if (view_add$40 == 5) begin
-                if (cyc_add$40 == firsts$5) begin
-                    add_r$40$d = enter$5;
-                end
-                else begin
-                    add_r$40$d = t$5$q == cyc_add$40 - 32'h1;
-                end
-            end
+        if (view$54 == 2) begin
+            act$54 = tok$2$q[act_bit$54];
         end
-        act_r$41$clock = clock;
-        act_r$41$d = act_r$41$q;
-        add_r$41$clock = clock;
-        add_r$41$d = add_r$41$q;
-        if (run) begin
-            act_r$41$d = 1'b0;
-            add_r$41$d = 1'b0;
-            if (view$41 == 0) begin
-                if (cyc$41 == firsts$0) begin
-                    act_r$41$d = enter$0;
-                end
-                else begin
-                    act_r$41$d = t$0$q == cyc$41 - 32'h1;
-                end
-            end
-            if (view_add$41 == 0) begin
-                if (cyc_add$41 == firsts$0) begin
-                    add_r$41$d = enter$0;
-                end
-                else begin
-                    add_r$41$d = t$0$q == cyc_add$41 - 32'h1;
-                end
-            end
-            if (view$41 == 1) begin
-                if (cyc$41 == firsts$1) begin
-                    act_r$41$d = enter$1;
-                end
-                else begin
-                    act_r$41$d = t$1$q == cyc$41 - 32'h1;
-                end
-            end
-            if (view_add$41 == 1) begin
-                if (cyc_add$41 == firsts$1) begin
-                    add_r$41$d = enter$1;
-                end
-                else begin
-                    add_r$41$d = t$1$q == cyc_add$41 - 32'h1;
-                end
-            end
-            if (view$41 == 2) begin
-                if (cyc$41 == firsts$2) begin
-                    act_r$41$d = enter$2;
-                end
-                else begin
-                    act_r$41$d = t$2$q == cyc$41 - 32'h1;
-                end
-            end
-            if (view_add$41 == 2) begin
-                if (cyc_add$41 == firsts$2) begin
-                    add_r$41$d = enter$2;
-                end
-                else begin
-                    add_r$41$d = t$2$q == cyc_add$41 - 32'h1;
-                end
-            end
-            if (view$41 == 3) begin
-                if (cyc$41 == firsts$3) begin
-                    act_r$41$d = enter$3;
-                end
-                else begin
-                    act_r$41$d = t$3$q == cyc$41 - 32'h1;
-                end
-            end
-            if (view_add$41 == 3) begin
-                if (cyc_add$41 == firsts$3) begin
-                    add_r$41$d = enter$3;
-                end
-                else begin
-                    add_r$41$d = t$3$q == cyc_add$41 - 32'h1;
-                end
-            end
-            if (view$41 == 4) begin
-                if (cyc$41 == firsts$4) begin
-                    act_r$41$d = enter$4;
-                end
-                else begin
-                    act_r$41$d = t$4$q == cyc$41 - 32'h1;
-                end
-            end
-            if (view_add$41 == 4) begin
-                if (cyc_add$41 == firsts$4) begin
-                    add_r$41$d = enter$4;
-                end
-                else begin
-                    add_r$41$d = t$4$q == cyc_add$41 - 32'h1;
-                end
-            end
-            if (view$41 == 5) begin
-                if (cyc$41 == firsts$5) begin
-                    act_r$41$d = enter$5;
-                end
-                else begin
-                    act_r$41$d = t$5$q == cyc$41 - 32'h1;
-                end
-            end
-            if (view_add$41 == 5) begin
-                if (cyc_add$41 == firsts$5) begin
-                    add_r$41$d = enter$5;
-                end
-                else begin
-                    add_r$41$d = t$5$q == cyc_add$41 - 32'h1;
-                end
-            end
+        if (view_add$54 == 2) begin
+            add$54 = tok$2$q[add_bit$54];
         end
-        act_r$42$clock = clock;
-        act_r$42$d = act_r$42$q;
-        add_r$42$clock = clock;
-        add_r$42$d = add_r$42$q;
-        if (run) begin
-            act_r$42$d = 1'b0;
-            add_r$42$d = 1'b0;
-            if (view$42 == 0) begin
-                if (cyc$42 == firsts$0) begin
-                    act_r$42$d = enter$0;
-                end
-                else begin
-                    act_r$42$d = t$0$q == cyc$42 - 32'h1;
-                end
-            end
-            if (view_add$42 == 0) begin
-                if (cyc_add$42 == firsts$0) begin
-                    add_r$42$d = enter$0;
-                end
-                else begin
-                    add_r$42$d = t$0$q == cyc_add$42 - 32'h1;
-                end
-            end
-            if (view$42 == 1) begin
-                if (cyc$42 == firsts$1) begin
-                    act_r$42$d = enter$1;
-                end
-                else begin
-                    act_r$42$d = t$1$q == cyc$42 - 32'h1;
-                end
-            end
-            if (view_add$42 == 1) begin
-                if (cyc_add$42 == firsts$1) begin
-                    add_r$42$d = enter$1;
-                end
-                else begin
-                    add_r$42$d = t$1$q == cyc_add$42 - 32'h1;
-                end
-            end
-            if (view$42 == 2) begin
-                if (cyc$42 == firsts$2) begin
-                    act_r$42$d = enter$2;
-                end
-                else begin
-                    act_r$42$d = t$2$q == cyc$42 - 32'h1;
-                end
-            end
-            if (view_add$42 == 2) begin
-                if (cyc_add$42 == firsts$2) begin
-                    add_r$42$d = enter$2;
-                end
-                else begin
-                    add_r$42$d = t$2$q == cyc_add$42 - 32'h1;
-                end
-            end
-            if (view$42 == 3) begin
-                if (cyc$42 == firsts$3) begin
-                    act_r$42$d = enter$3;
-                end
-                else begin
-                    act_r$42$d = t$3$q == cyc$42 - 32'h1;
-                end
-            end
-            if (view_add$42 == 3) begin
-                if (cyc_add$42 == firsts$3) begin
-                    add_r$42$d = enter$3;
-                end
-                else begin
-                    add_r$42$d = t$3$q == cyc_add$42 - 32'h1;
-                end
-            end
-            if (view$42 == 4) begin
-                if (cyc$42 == firsts$4) begin
-                    act_r$42$d = enter$4;
-                end
-                else begin
-                    act_r$42$d = t$4$q == cyc$42 - 32'h1;
-                end
-            end
-            if (view_add$42 == 4) begin
-                if (cyc_add$42 == firsts$4) begin
-                    add_r$42$d = enter$4;
-                end
-                else begin
-                    add_r$42$d = t$4$q == cyc_add$42 - 32'h1;
-                end
-            end
-            if (view$42 == 5) begin
-                if (cyc$42 == firsts$5) begin
-                    act_r$42$d = enter$5;
-                end
-                else begin
-                    act_r$42$d = t$5$q == cyc$42 - 32'h1;
-                end
-            end
-            if (view_add$42 == 5) begin
-                if (cyc_add$42 == firsts$5) begin
-                    add_r$42$d = enter$5;
-                end
-                else begin
-                    add_r$42$d = t$5$q == cyc_add$42 - 32'h1;
-                end
-            end
+        if (view$54 == 3) begin
+            act$54 = tok$3$q[act_bit$54];
         end
-        act_r$43$clock = clock;
-        act_r$43$d = act_r$43$q;
-        add_r$43$clock = clock;
-        add_r$43$d = add_r$43$q;
-        if (run) begin
-            act_r$43$d = 1'b0;
-            add_r$43$d = 1'b0;
-            if (view$43 == 0) begin
-                if (cyc$43 == firsts$0) begin
-                    act_r$43$d = enter$0;
-                end
-                else begin
-                    act_r$43$d = t$0$q == cyc$43 - 32'h1;
-                end
-            end
-            if (view_add$43 == 0) begin
-                if (cyc_add$43 == firsts$0) begin
-                    add_r$43$d = enter$0;
-                end
-                else begin
-                    add_r$43$d = t$0$q == cyc_add$43 - 32'h1;
-                end
-            end
-            if (view$43 == 1) begin
-                if (cyc$43 == firsts$1) begin
-                    act_r$43$d = enter$1;
-                end
-                else begin
-                    act_r$43$d = t$1$q == cyc$43 - 32'h1;
-                end
-            end
-            if (view_add$43 == 1) begin
-                if (cyc_add$43 == firsts$1) begin
-                    add_r$43$d = enter$1;
-                end
-                else begin
-                    add_r$43$d = t$1$q == cyc_add$43 - 32'h1;
-                end
-            end
-            if (view$43 == 2) begin
-                if (cyc$43 == firsts$2) begin
-                    act_r$43$d = enter$2;
-                end
-                else begin
-                    act_r$43$d = t$2$q == cyc$43 - 32'h1;
-                end
-            end
-            if (view_add$43 == 2) begin
-                if (cyc_add$43 == firsts$2) begin
-                    add_r$43$d = enter$2;
-                end
-                else begin
-                    add_r$43$d = t$2$q == cyc_add$43 - 32'h1;
-                end
-            end
-            if (view$43 == 3) begin
-                if (cyc$43 == firsts$3) begin
-                    act_r$43$d = enter$3;
-                end
-                else begin
-                    act_r$43$d = t$3$q == cyc$43 - 32'h1;
-                end
-            end
-            if (view_add$43 == 3) begin
-                if (cyc_add$43 == firsts$3) begin
-                    add_r$43$d = enter$3;
-                end
-                else begin
-                    add_r$43$d = t$3$q == cyc_add$43 - 32'h1;
-                end
-            end
-            if (view$43 == 4) begin
-                if (cyc$43 == firsts$4) begin
-                    act_r$43$d = enter$4;
-                end
-                else begin
-                    act_r$43$d = t$4$q == cyc$43 - 32'h1;
-                end
-            end
-            if (view_add$43 == 4) begin
-                if (cyc_add$43 == firsts$4) begin
-                    add_r$43$d = enter$4;
-                end
-                else begin
-                    add_r$43$d = t$4$q == cyc_add$43 - 32'h1;
-                end
-            end
-            if (view$43 == 5) begin
-                if (cyc$43 == firsts$5) begin
-                    act_r$43$d = enter$5;
-                end
-                else begin
-                    act_r$43$d = t$5$q == cyc$43 - 32'h1;
-                end
-            end
-            if (view_add$43 == 5) begin
-                if (cyc_add$43 == firsts$5) begin
-                    add_r$43$d = enter$5;
-                end
-                else begin
-                    add_r$43$d = t$5$q == cyc_add$43 - 32'h1;
-                end
-            end
+        if (view_add$54 == 3) begin
+            add$54 = tok$3$q[add_bit$54];
         end
-        act_r$44$clock = clock;
-        act_r$44$d = act_r$44$q;
-        add_r$44$clock = clock;
-        add_r$44$d = add_r$44$q;
-        if (run) begin
-            act_r$44$d = 1'b0;
-            add_r$44$d = 1'b0;
-            if (view$44 == 0) begin
-                if (cyc$44 == firsts$0) begin
-                    act_r$44$d = enter$0;
-                end
-                else begin
-                    act_r$44$d = t$0$q == cyc$44 - 32'h1;
-                end
-            end
-            if (view_add$44 == 0) begin
-                if (cyc_add$44 == firsts$0) begin
-                    add_r$44$d = enter$0;
-                end
-                else begin
-                    add_r$44$d = t$0$q == cyc_add$44 - 32'h1;
-                end
-            end
-            if (view$44 == 1) begin
-                if (cyc$44 == firsts$1) begin
-                    act_r$44$d = enter$1;
-                end
-                else begin
-                    act_r$44$d = t$1$q == cyc$44 - 32'h1;
-                end
-            end
-            if (view_add$44 == 1) begin
-                if (cyc_add$44 == firsts$1) begin
-                    add_r$44$d = enter$1;
-                end
-                else begin
-                    add_r$44$d = t$1$q == cyc_add$44 - 32'h1;
-                end
-            end
-            if (view$44 == 2) begin
-                if (cyc$44 == firsts$2) begin
-                    act_r$44$d = enter$2;
-                end
-                else begin
-                    act_r$44$d = t$2$q == cyc$44 - 32'h1;
-                end
-            end
-            if (view_add$44 == 2) begin
-                if (cyc_add$44 == firsts$2) begin
-                    add_r$44$d = enter$2;
-                end
-                else begin
-                    add_r$44$d = t$2$q == cyc_add$44 - 32'h1;
-                end
-            end
-            if (view$44 == 3) begin
-                if (cyc$44 == firsts$3) begin
-                    act_r$44$d = enter$3;
-                end
-                else begin
-                    act_r$44$d = t$3$q == cyc$44 - 32'h1;
-                end
-            end
-            if (view_add$44 == 3) begin
-                if (cyc_add$44 == firsts$3) begin
-                    add_r$44$d = enter$3;
-                end
-                else begin
-                    add_r$44$d = t$3$q == cyc_add$44 - 32'h1;
-                end
-            end
-            if (view$44 == 4) begin
-                if (cyc$44 == firsts$4) begin
-                    act_r$44$d = enter$4;
-                end
-                else begin
-                    act_r$44$d = t$4$q == cyc$44 - 32'h1;
-                end
-            end
-            if (view_add$44 == 4) begin
-                if (cyc_add$44 == firsts$4) begin
-                    add_r$44$d = enter$4;
-                end
-                else begin
-                    add_r$44$d = t$4$q == cyc_add$44 - 32'h1;
-                end
-            end
-            if (view$44 == 5) begin
-                if (cyc$44 == firsts$5) begin
-                    act_r$44$d = enter$5;
-                end
-                else begin
-                    act_r$44$d = t$5$q == cyc$44 - 32'h1;
-                end
-            end
-            if (view_add$44 == 5) begin
-                if (cyc_add$44 == firsts$5) begin
-                    add_r$44$d = enter$5;
-                end
-                else begin
-                    add_r$44$d = t$5$q == cyc_add$44 - 32'h1;
-                end
-            end
+        if (view$54 == 4) begin
+            act$54 = tok$4$q[act_bit$54];
         end
-        act_r$45$clock = clock;
-        act_r$45$d = act_r$45$q;
-        add_r$45$clock = clock;
-        add_r$45$d = add_r$45$q;
-        if (run) begin
-            act_r$45$d = 1'b0;
-            add_r$45$d = 1'b0;
-            if (view$45 == 0) begin
-                if (cyc$45 == firsts$0) begin
-                    act_r$45$d = enter$0;
-                end
-                else begin
-                    act_r$45$d = t$0$q == cyc$45 - 32'h1;
-                end
-            end
-            if (view_add$45 == 0) begin
-                if (cyc_add$45 == firsts$0) begin
-                    add_r$45$d = enter$0;
-                end
-                else begin
-                    add_r$45$d = t$0$q == cyc_add$45 - 32'h1;
-                end
-            end
-            if (view$45 == 1) begin
-                if (cyc$45 == firsts$1) begin
-                    act_r$45$d = enter$1;
-                end
-                else begin
-                    act_r$45$d = t$1$q == cyc$45 - 32'h1;
-                end
-            end
-            if (view_add$45 == 1) begin
-                if (cyc_add$45 == firsts$1) begin
-                    add_r$45$d = enter$1;
-                end
-                else begin
-                    add_r$45$d = t$1$q == cyc_add$45 - 32'h1;
-                end
-            end
-            if (view$45 == 2) begin
-                if (cyc$45 == firsts$2) begin
-                    act_r$45$d = enter$2;
-                end
-                else begin
-                    act_r$45$d = t$2$q == cyc$45 - 32'h1;
-                end
-            end
-            if (view_add$45 == 2) begin
-                if (cyc_add$45 == firsts$2) begin
-                    add_r$45$d = enter$2;
-                end
-                else begin
-                    add_r$45$d = t$2$q == cyc_add$45 - 32'h1;
-                end
-            end
-            if (view$45 == 3) begin
-                if (cyc$45 == firsts$3) begin
-                    act_r$45$d = enter$3;
-                end
-                else begin
-                    act_r$45$d = t$3$q == cyc$45 - 32'h1;
-                end
-            end
-            if (view_add$45 == 3) begin
-                if (cyc_add$45 == firsts$3) begin
-                    add_r$45$d = enter$3;
-                end
-                else begin
-                    add_r$45$d = t$3$q == cyc_add$45 - 32'h1;
-                end
-            end
-            if (view$45 == 4) begin
-                if (cyc$45 == firsts$4) begin
-                    act_r$45$d = enter$4;
-                end
-                else begin
-                    act_r$45$d = t$4$q == cyc$45 - 32'h1;
-                end
-            end
-            if (view_add$45 == 4) begin
-                if (cyc_add$45 == firsts$4) begin
-                    add_r$45$d = enter$4;
-                end
-                else begin
-                    add_r$45$d = t$4$q == cyc_add$45 - 32'h1;
-                end
-            end
-            if (view$45 == 5) begin
-                if (cyc$45 == firsts$5) begin
-                    act_r$45$d = enter$5;
-                end
-                else begin
-                    act_r$45$d = t$5$q == cyc$45 - 32'h1;
-                end
-            end
-            if (view_add$45 == 5) begin
-                if (cyc_add$45 == firsts$5) begin
-                    add_r$45$d = enter$5;
-                end
-                else begin
-                    add_r$45$d = t$5$q == cyc_add$45 - 32'h1;
-                end
-            end
+        if (view_add$54 == 4) begin
+            add$54 = tok$4$q[add_bit$54];
         end
-        act_r$46$clock = clock;
-        act_r$46$d = act_r$46$q;
-        add_r$46$clock = clock;
-        add_r$46$d = add_r$46$q;
-        if (run) begin
-            act_r$46$d = 1'b0;
-            add_r$46$d = 1'b0;
-            if (view$46 == 0) begin
-                if (cyc$46 == firsts$0) begin
-                    act_r$46$d = enter$0;
-                end
-                else begin
-                    act_r$46$d = t$0$q == cyc$46 - 32'h1;
-                end
-            end
-            if (view_add$46 == 0) begin
-                if (cyc_add$46 == firsts$0) begin
-                    add_r$46$d = enter$0;
-                end
-                else begin
-                    add_r$46$d = t$0$q == cyc_add$46 - 32'h1;
-                end
-            end
-            if (view$46 == 1) begin
-                if (cyc$46 == firsts$1) begin
-                    act_r$46$d = enter$1;
-                end
-                else begin
-                    act_r$46$d = t$1$q == cyc$46 - 32'h1;
-                end
-            end
-            if (view_add$46 == 1) begin
-                if (cyc_add$46 == firsts$1) begin
-                    add_r$46$d = enter$1;
-                end
-                else begin
-                    add_r$46$d = t$1$q == cyc_add$46 - 32'h1;
-                end
-            end
-            if (view$46 == 2) begin
-                if (cyc$46 == firsts$2) begin
-                    act_r$46$d = enter$2;
-                end
-                else begin
-                    act_r$46$d = t$2$q == cyc$46 - 32'h1;
-                end
-            end
-            if (view_add$46 == 2) begin
-                if (cyc_add$46 == firsts$2) begin
-                    add_r$46$d = enter$2;
-                end
-                else begin
-                    add_r$46$d = t$2$q == cyc_add$46 - 32'h1;
-                end
-            end
-            if (view$46 == 3) begin
-                if (cyc$46 == firsts$3) begin
-                    act_r$46$d = enter$3;
-                end
-                else begin
-                    act_r$46$d = t$3$q == cyc$46 - 32'h1;
-                end
-            end
-            if (view_add$46 == 3) begin
-                if (cyc_add$46 == firsts$3) begin
-                    add_r$46$d = enter$3;
-                end
-                else begin
-                    add_r$46$d = t$3$q == cyc_add$46 - 32'h1;
-                end
-            end
-            if (view$46 == 4) begin
-                if (cyc$46 == firsts$4) begin
-                    act_r$46$d = enter$4;
-                end
-                else begin
-                    act_r$46$d = t$4$q == cyc$46 - 32'h1;
-                end
-            end
-            if (view_add$46 == 4) begin
-                if (cyc_add$46 == firsts$4) begin
-                    add_r$46$d = enter$4;
-                end
-                else begin
-                    add_r$46$d = t$4$q == cyc_add$46 - 32'h1;
-                end
-            end
-            if (view$46 == 5) begin
-                if (cyc$46 == firsts$5) begin
-                    act_r$46$d = enter$5;
-                end
-                else begin
-                    act_r$46$d = t$5$q == cyc$46 - 32'h1;
-                end
-            end
-            if (view_add$46 == 5) begin
-                if (cyc_add$46 == firsts$5) begin
-                    add_r$46$d = enter$5;
-                end
-                else begin
-                    add_r$46$d = t$5$q == cyc_add$46 - 32'h1;
-                end
-            end
+        if (view$54 == 5) begin
+            act$54 = tok$5$q[act_bit$54];
         end
-        act_r$47$clock = clock;
-        act_r$47$d = act_r$47$q;
-        add_r$47$clock = clock;
-        add_r$47$d = add_r$47$q;
-        if (run) begin
-            act_r$47$d = 1'b0;
-            add_r$47$d = 1'b0;
-            if (view$47 == 0) begin
-                if (cyc$47 == firsts$0) begin
-                    act_r$47$d = enter$0;
-                end
-                else begin
-                    act_r$47$d = t$0$q == cyc$47 - 32'h1;
-                end
-            end
-            if (view_add$47 == 0) begin
-                if (cyc_add$47 == firsts$0) begin
-                    add_r$47$d = enter$0;
-                end
-                else begin
-                    add_r$47$d = t$0$q == cyc_add$47 - 32'h1;
-                end
-            end
-            if (view$47 == 1) begin
-                if (cyc$47 == firsts$1) begin
-                    act_r$47$d = enter$1;
-                end
-                else begin
-                    act_r$47$d = t$1$q == cyc$47 - 32'h1;
-                end
-            end
-            if (view_add$47 == 1) begin
-                if (cyc_add$47 == firsts$1) begin
-                    add_r$47$d = enter$1;
-                end
-                else begin
-                    add_r$47$d = t$1$q == cyc_add$47 - 32'h1;
-                end
-            end
-            if (view$47 == 2) begin
-                if (cyc$47 == firsts$2) begin
-                    act_r$47$d = enter$2;
-                end
-                else begin
-                    act_r$47$d = t$2$q == cyc$47 - 32'h1;
-                end
-            end
-            if (view_add$47 == 2) begin
-                if (cyc_add$47 == firsts$2) begin
-                    add_r$47$d = enter$2;
-                end
-                else begin
-                    add_r$47$d = t$2$q == cyc_add$47 - 32'h1;
-                end
-            end
-            if (view$47 == 3) begin
-                if (cyc$47 == firsts$3) begin
-                    act_r$47$d = enter$3;
-                end
-                else begin
-                    act_r$47$d = t$3$q == cyc$47 - 32'h1;
-                end
-            end
-            if (view_add$47 == 3) begin
-                if (cyc_add$47 == firsts$3) begin
-                    add_r$47$d = enter$3;
-                end
-                else begin
-                    add_r$47$d = t$3$q == cyc_add$47 - 32'h1;
-                end
-            end
-            if (view$47 == 4) begin
-                if (cyc$47 == firsts$4) begin
-                    act_r$47$d = enter$4;
-                end
-                else begin
-                    act_r$47$d = t$4$q == cyc$47 - 32'h1;
-                end
-            end
-            if (view_add$47 == 4) begin
-                if (cyc_add$47 == firsts$4) begin
-                    add_r$47$d = enter$4;
-                end
-                else begin
-                    add_r$47$d = t$4$q == cyc_add$47 - 32'h1;
-                end
-            end
-            if (view$47 == 5) begin
-                if (cyc$47 == firsts$5) begin
-                    act_r$47$d = enter$5;
-                end
-                else begin
-                    act_r$47$d = t$5$q == cyc$47 - 32'h1;
-                end
-            end
-            if (view_add$47 == 5) begin
-                if (cyc_add$47 == firsts$5) begin
-                    add_r$47$d = enter$5;
-                end
-                else begin
-                    add_r$47$d = t$5$q == cyc_add$47 - 32'h1;
-                end
-            end
+        if (view_add$54 == 5) begin
+            add$54 = tok$5$q[add_bit$54];
         end
-        act_r$48$clock = clock;
-        act_r$48$d = act_r$48$q;
-        add_r$48$clock = clock;
-        add_r$48$d = add_r$48$q;
-        if (run) begin
-            act_r$48$d = 1'b0;
-            add_r$48$d = 1'b0;
-            if (view$48 == 0) begin
-                if (cyc$48 == firsts$0) begin
-                    act_r$48$d = enter$0;
-                end
-                else begin
-                    act_r$48$d = t$0$q == cyc$48 - 32'h1;
-                end
-            end
-            if (view_add$48 == 0) begin
-                if (cyc_add$48 == firsts$0) begin
-                    add_r$48$d = enter$0;
-                end
-                else begin
-                    add_r$48$d = t$0$q == cyc_add$48 - 32'h1;
-                end
-            end
-            if (view$48 == 1) begin
-                if (cyc$48 == firsts$1) begin
-                    act_r$48$d = enter$1;
-                end
-                else begin
-                    act_r$48$d = t$1$q == cyc$48 - 32'h1;
-                end
-            end
-            if (view_add$48 == 1) begin
-                if (cyc_add$48 == firsts$1) begin
-                    add_r$48$d = enter$1;
-                end
-                else begin
-                    add_r$48$d = t$1$q == cyc_add$48 - 32'h1;
-                end
-            end
-            if (view$48 == 2) begin
-                if (cyc$48 == firsts$2) begin
-                    act_r$48$d = enter$2;
-                end
-                else begin
-                    act_r$48$d = t$2$q == cyc$48 - 32'h1;
-                end
-            end
-            if (view_add$48 == 2) begin
-                if (cyc_add$48 == firsts$2) begin
-                    add_r$48$d = enter$2;
-                end
-                else begin
-                    add_r$48$d = t$2$q == cyc_add$48 - 32'h1;
-                end
-            end
-            if (view$48 == 3) begin
-                if (cyc$48 == firsts$3) begin
-                    act_r$48$d = enter$3;
-                end
-                else begin
-                    act_r$48$d = t$3$q == cyc$48 - 32'h1;
-                end
-            end
-            if (view_add$48 == 3) begin
-                if (cyc_add$48 == firsts$3) begin
-                    add_r$48$d = enter$3;
-                end
-                else begin
-                    add_r$48$d = t$3$q == cyc_add$48 - 32'h1;
-                end
-            end
-            if (view$48 == 4) begin
-                if (cyc$48 == firsts$4) begin
-                    act_r$48$d = enter$4;
-                end
-                else begin
-                    act_r$48$d = t$4$q == cyc$48 - 32'h1;
-                end
-            end
-            if (view_add$48 == 4) begin
-                if (cyc_add$48 == firsts$4) begin
-                    add_r$48$d = enter$4;
-                end
-                else begin
-                    add_r$48$d = t$4$q == cyc_add$48 - 32'h1;
-                end
-            end
-            if (view$48 == 5) begin
-                if (cyc$48 == firsts$5) begin
-                    act_r$48$d = enter$5;
-                end
-                else begin
-                    act_r$48$d = t$5$q == cyc$48 - 32'h1;
-                end
-            end
-            if (view_add$48 == 5) begin
-                if (cyc_add$48 == firsts$5) begin
-                    add_r$48$d = enter$5;
-                end
-                else begin
-                    add_r$48$d = t$5$q == cyc_add$48 - 32'h1;
-                end
-            end
+        act$55 = 1'b0;
+        add$55 = 1'b0;
+        if (view$55 == 0) begin
+            act$55 = tok$0$q[act_bit$55];
         end
-        act_r$49$clock = clock;
-        act_r$49$d = act_r$49$q;
-        add_r$49$clock = clock;
-        add_r$49$d = add_r$49$q;
-        if (run) begin
-            act_r$49$d = 1'b0;
-            add_r$49$d = 1'b0;
-            if (view$49 == 0) begin
-                if (cyc$49 == firsts$0) begin
-                    act_r$49$d = enter$0;
-                end
-                else begin
-                    act_r$49$d = t$0$q == cyc$49 - 32'h1;
-                end
-            end
-            if (view_add$49 == 0) begin
-                if (cyc_add$49 == firsts$0) begin
-                    add_r$49$d = enter$0;
-                end
-                else begin
-                    add_r$49$d = t$0$q == cyc_add$49 - 32'h1;
-                end
-            end
-            if (view$49 == 1) begin
-                if (cyc$49 == firsts$1) begin
-                    act_r$49$d = enter$1;
-                end
-                else begin
-                    act_r$49$d = t$1$q == cyc$49 - 32'h1;
-                end
-            end
-            if (view_add$49 == 1) begin
-                if (cyc_add$49 == firsts$1) begin
-                    add_r$49$d = enter$1;
-                end
-                else begin
-                    add_r$49$d = t$1$q == cyc_add$49 - 32'h1;
-                end
-            end
-            if (view$49 == 2) begin
-                if (cyc$49 == firsts$2) begin
-                    act_r$49$d = enter$2;
-                end
-                else begin
-                    act_r$49$d = t$2$q == cyc$49 - 32'h1;
-                end
-            end
-            if (view_add$49 == 2) begin
-                if (cyc_add$49 == firsts$2) begin
-                    add_r$49$d = enter$2;
-                end
-                else begin
-                    add_r$49$d = t$2$q == cyc_add$49 - 32'h1;
-                end
-            end
-            if (view$49 == 3) begin
-                if (cyc$49 == firsts$3) begin
-                    act_r$49$d = enter$3;
-                end
-                else begin
-                    act_r$49$d = t$3$q == cyc$49 - 32'h1;
-                end
-            end
-            if (view_add$49 == 3) begin
-                if (cyc_add$49 == firsts$3) begin
-                    add_r$49$d = enter$3;
-                end
-                else begin
-                    add_r$49$d = t$3$q == cyc_add$49 - 32'h1;
-                end
-            end
-            if (view$49 == 4) begin
-                if (cyc$49 == firsts$4) begin
-                    act_r$49$d = enter$4;
-                end
-                else begin
-                    act_r$49$d = t$4$q == cyc$49 - 32'h1;
-                end
-            end
-            if (view_add$49 == 4) begin
-                if (cyc_add$49 == firsts$4) begin
-                    add_r$49$d = enter$4;
-                end
-                else begin
-                    add_r$49$d = t$4$q == cyc_add$49 - 32'h1;
-                end
-            end
-            if (view$49 == 5) begin
-                if (cyc$49 == firsts$5) begin
-                    act_r$49$d = enter$5;
-                end
-                else begin
-                    act_r$49$d = t$5$q == cyc$49 - 32'h1;
-                end
-            end
-            if (view_add$49 == 5) begin
-                if (cyc_add$49 == firsts$5) begin
-                    add_r$49$d = enter$5;
-                end
-                else begin
-                    add_r$49$d = t$5$q == cyc_add$49 - 32'h1;
-                end
-            end
+        if (view_add$55 == 0) begin
+            add$55 = tok$0$q[add_bit$55];
+        end
+        if (view$55 == 1) begin
+            act$55 = tok$1$q[act_bit$55];
+        end
+        if (view_add$55 == 1) begin
+            add$55 = tok$1$q[add_bit$55];
+        end
+        if (view$55 == 2) begin
+            act$55 = tok$2$q[act_bit$55];
+        end
+        if (view_add$55 == 2) begin
+            add$55 = tok$2$q[add_bit$55];
+        end
+        if (view$55 == 3) begin
+            act$55 = tok$3$q[act_bit$55];
+        end
+        if (view_add$55 == 3) begin
+            add$55 = tok$3$q[add_bit$55];
+        end
+        if (view$55 == 4) begin
+            act$55 = tok$4$q[act_bit$55];
+        end
+        if (view_add$55 == 4) begin
+            add$55 = tok$4$q[add_bit$55];
+        end
+        if (view$55 == 5) begin
+            act$55 = tok$5$q[act_bit$55];
+        end
+        if (view_add$55 == 5) begin
+            add$55 = tok$5$q[add_bit$55];
+        end
+        act$56 = 1'b0;
+        add$56 = 1'b0;
+        if (view$56 == 0) begin
+            act$56 = tok$0$q[act_bit$56];
+        end
+        if (view_add$56 == 0) begin
+            add$56 = tok$0$q[add_bit$56];
+        end
+        if (view$56 == 1) begin
+            act$56 = tok$1$q[act_bit$56];
+        end
+        if (view_add$56 == 1) begin
+            add$56 = tok$1$q[add_bit$56];
+        end
+        if (view$56 == 2) begin
+            act$56 = tok$2$q[act_bit$56];
+        end
+        if (view_add$56 == 2) begin
+            add$56 = tok$2$q[add_bit$56];
+        end
+        if (view$56 == 3) begin
+            act$56 = tok$3$q[act_bit$56];
+        end
+        if (view_add$56 == 3) begin
+            add$56 = tok$3$q[add_bit$56];
+        end
+        if (view$56 == 4) begin
+            act$56 = tok$4$q[act_bit$56];
+        end
+        if (view_add$56 == 4) begin
+            add$56 = tok$4$q[add_bit$56];
+        end
+        if (view$56 == 5) begin
+            act$56 = tok$5$q[act_bit$56];
+        end
+        if (view_add$56 == 5) begin
+            add$56 = tok$5$q[add_bit$56];
+        end
+        act$57 = 1'b0;
+        add$57 = 1'b0;
+        if (view$57 == 0) begin
+            act$57 = tok$0$q[act_bit$57];
+        end
+        if (view_add$57 == 0) begin
+            add$57 = tok$0$q[add_bit$57];
+        end
+        if (view$57 == 1) begin
+            act$57 = tok$1$q[act_bit$57];
+        end
+        if (view_add$57 == 1) begin
+            add$57 = tok$1$q[add_bit$57];
+        end
+        if (view$57 == 2) begin
+            act$57 = tok$2$q[act_bit$57];
+        end
+        if (view_add$57 == 2) begin
+            add$57 = tok$2$q[add_bit$57];
+        end
+        if (view$57 == 3) begin
+            act$57 = tok$3$q[act_bit$57];
+        end
+        if (view_add$57 == 3) begin
+            add$57 = tok$3$q[add_bit$57];
+        end
+        if (view$57 == 4) begin
+            act$57 = tok$4$q[act_bit$57];
+        end
+        if (view_add$57 == 4) begin
+            add$57 = tok$4$q[add_bit$57];
+        end
+        if (view$57 == 5) begin
+            act$57 = tok$5$q[act_bit$57];
+        end
+        if (view_add$57 == 5) begin
+            add$57 = tok$5$q[add_bit$57];
+        end
+        act$58 = 1'b0;
+        add$58 = 1'b0;
+        if (view$58 == 0) begin
+            act$58 = tok$0$q[act_bit$58];
+        end
+        if (view_add$58 == 0) begin
+            add$58 = tok$0$q[add_bit$58];
+        end
+        if (view$58 == 1) begin
+            act$58 = tok$1$q[act_bit$58];
+        end
+        if (view_add$58 == 1) begin
+            add$58 = tok$1$q[add_bit$58];
+        end
+        if (view$58 == 2) begin
+            act$58 = tok$2$q[act_bit$58];
+        end
+        if (view_add$58 == 2) begin
+            add$58 = tok$2$q[add_bit$58];
+        end
+        if (view$58 == 3) begin
+            act$58 = tok$3$q[act_bit$58];
+        end
+        if (view_add$58 == 3) begin
+            add$58 = tok$3$q[add_bit$58];
+        end
+        if (view$58 == 4) begin
+            act$58 = tok$4$q[act_bit$58];
+        end
+        if (view_add$58 == 4) begin
+            add$58 = tok$4$q[add_bit$58];
+        end
+        if (view$58 == 5) begin
+            act$58 = tok$5$q[act_bit$58];
+        end
+        if (view_add$58 == 5) begin
+            add$58 = tok$5$q[add_bit$58];
+        end
+        act$59 = 1'b0;
+        add$59 = 1'b0;
+        if (view$59 == 0) begin
+            act$59 = tok$0$q[act_bit$59];
+        end
+        if (view_add$59 == 0) begin
+            add$59 = tok$0$q[add_bit$59];
+        end
+        if (view$59 == 1) begin
+            act$59 = tok$1$q[act_bit$59];
+        end
+        if (view_add$59 == 1) begin
+            add$59 = tok$1$q[add_bit$59];
+        end
+        if (view$59 == 2) begin
+            act$59 = tok$2$q[act_bit$59];
+        end
+        if (view_add$59 == 2) begin
+            add$59 = tok$2$q[add_bit$59];
+        end
+        if (view$59 == 3) begin
+            act$59 = tok$3$q[act_bit$59];
+        end
+        if (view_add$59 == 3) begin
+            add$59 = tok$3$q[add_bit$59];
+        end
+        if (view$59 == 4) begin
+            act$59 = tok$4$q[act_bit$59];
+        end
+        if (view_add$59 == 4) begin
+            add$59 = tok$4$q[add_bit$59];
+        end
+        if (view$59 == 5) begin
+            act$59 = tok$5$q[act_bit$59];
+        end
+        if (view_add$59 == 5) begin
+            add$59 = tok$5$q[add_bit$59];
+        end
+        act$60 = 1'b0;
+        add$60 = 1'b0;
+        if (view$60 == 0) begin
+            act$60 = tok$0$q[act_bit$60];
+        end
+        if (view_add$60 == 0) begin
+            add$60 = tok$0$q[add_bit$60];
+        end
+        if (view$60 == 1) begin
+            act$60 = tok$1$q[act_bit$60];
+        end
+        if (view_add$60 == 1) begin
+            add$60 = tok$1$q[add_bit$60];
+        end
+        if (view$60 == 2) begin
+            act$60 = tok$2$q[act_bit$60];
+        end
+        if (view_add$60 == 2) begin
+            add$60 = tok$2$q[add_bit$60];
+        end
+        if (view$60 == 3) begin
+            act$60 = tok$3$q[act_bit$60];
+        end
+        if (view_add$60 == 3) begin
+            add$60 = tok$3$q[add_bit$60];
+        end
+        if (view$60 == 4) begin
+            act$60 = tok$4$q[act_bit$60];
+        end
+        if (view_add$60 == 4) begin
+            add$60 = tok$4$q[add_bit$60];
+        end
+        if (view$60 == 5) begin
+            act$60 = tok$5$q[act_bit$60];
+        end
+        if (view_add$60 == 5) begin
+            add$60 = tok$5$q[add_bit$60];
+        end
+        act$61 = 1'b0;
+        add$61 = 1'b0;
+        if (view$61 == 0) begin
+            act$61 = tok$0$q[act_bit$61];
+        end
+        if (view_add$61 == 0) begin
+            add$61 = tok$0$q[add_bit$61];
+        end
+        if (view$61 == 1) begin
+            act$61 = tok$1$q[act_bit$61];
+        end
+        if (view_add$61 == 1) begin
+            add$61 = tok$1$q[add_bit$61];
+        end
+        if (view$61 == 2) begin
+            act$61 = tok$2$q[act_bit$61];
+        end
+        if (view_add$61 == 2) begin
+            add$61 = tok$2$q[add_bit$61];
+        end
+        if (view$61 == 3) begin
+            act$61 = tok$3$q[act_bit$61];
+        end
+        if (view_add$61 == 3) begin
+            add$61 = tok$3$q[add_bit$61];
+        end
+        if (view$61 == 4) begin
+            act$61 = tok$4$q[act_bit$61];
+        end
+        if (view_add$61 == 4) begin
+            add$61 = tok$4$q[add_bit$61];
+        end
+        if (view$61 == 5) begin
+            act$61 = tok$5$q[act_bit$61];
+        end
+        if (view_add$61 == 5) begin
+            add$61 = tok$5$q[add_bit$61];
+        end
+        act$62 = 1'b0;
+        add$62 = 1'b0;
+        if (view$62 == 0) begin
+            act$62 = tok$0$q[act_bit$62];
+        end
+        if (view_add$62 == 0) begin
+            add$62 = tok$0$q[add_bit$62];
+        end
+        if (view$62 == 1) begin
+            act$62 = tok$1$q[act_bit$62];
+        end
+        if (view_add$62 == 1) begin
+            add$62 = tok$1$q[add_bit$62];
+        end
+        if (view$62 == 2) begin
+            act$62 = tok$2$q[act_bit$62];
+        end
+        if (view_add$62 == 2) begin
+            add$62 = tok$2$q[add_bit$62];
+        end
+        if (view$62 == 3) begin
+            act$62 = tok$3$q[act_bit$62];
+        end
+        if (view_add$62 == 3) begin
+            add$62 = tok$3$q[add_bit$62];
+        end
+        if (view$62 == 4) begin
+            act$62 = tok$4$q[act_bit$62];
+        end
+        if (view_add$62 == 4) begin
+            add$62 = tok$4$q[add_bit$62];
+        end
+        if (view$62 == 5) begin
+            act$62 = tok$5$q[act_bit$62];
+        end
+        if (view_add$62 == 5) begin
+            add$62 = tok$5$q[add_bit$62];
+        end
+        act$63 = 1'b0;
+        add$63 = 1'b0;
+        if (view$63 == 0) begin
+            act$63 = tok$0$q[act_bit$63];
+        end
+        if (view_add$63 == 0) begin
+            add$63 = tok$0$q[add_bit$63];
+        end
+        if (view$63 == 1) begin
+            act$63 = tok$1$q[act_bit$63];
+        end
+        if (view_add$63 == 1) begin
+            add$63 = tok$1$q[add_bit$63];
+        end
+        if (view$63 == 2) begin
+            act$63 = tok$2$q[act_bit$63];
+        end
+        if (view_add$63 == 2) begin
+            add$63 = tok$2$q[add_bit$63];
+        end
+        if (view$63 == 3) begin
+            act$63 = tok$3$q[act_bit$63];
+        end
+        if (view_add$63 == 3) begin
+            add$63 = tok$3$q[add_bit$63];
+        end
+        if (view$63 == 4) begin
+            act$63 = tok$4$q[act_bit$63];
+        end
+        if (view_add$63 == 4) begin
+            add$63 = tok$4$q[add_bit$63];
+        end
+        if (view$63 == 5) begin
+            act$63 = tok$5$q[act_bit$63];
+        end
+        if (view_add$63 == 5) begin
+            add$63 = tok$5$q[add_bit$63];
+        end
+        at_norm = tok$0$q[norm_bit] & run;
+        at_iss$0 = tok$0$q[iss_bit$0] & run;
+        at_res$0 = 1'b0;
+        if (view_res$0 == 0) begin
+            at_res$0 = tok$0$q[res_bit$0] & run;
+        end
+        if (view_res$0 == 1) begin
+            at_res$0 = tok$1$q[res_bit$0] & run;
+        end
+        if (view_res$0 == 2) begin
+            at_res$0 = tok$2$q[res_bit$0] & run;
+        end
+        if (view_res$0 == 3) begin
+            at_res$0 = tok$3$q[res_bit$0] & run;
+        end
+        if (view_res$0 == 4) begin
+            at_res$0 = tok$4$q[res_bit$0] & run;
+        end
+        if (view_res$0 == 5) begin
+            at_res$0 = tok$5$q[res_bit$0] & run;
+        end
+        at_iss$1 = tok$0$q[iss_bit$1] & run;
+        at_res$1 = 1'b0;
+        if (view_res$1 == 0) begin
+            at_res$1 = tok$0$q[res_bit$1] & run;
+        end
+        if (view_res$1 == 1) begin
+            at_res$1 = tok$1$q[res_bit$1] & run;
+        end
+        if (view_res$1 == 2) begin
+            at_res$1 = tok$2$q[res_bit$1] & run;
+        end
+        if (view_res$1 == 3) begin
+            at_res$1 = tok$3$q[res_bit$1] & run;
+        end
+        if (view_res$1 == 4) begin
+            at_res$1 = tok$4$q[res_bit$1] & run;
+        end
+        if (view_res$1 == 5) begin
+            at_res$1 = tok$5$q[res_bit$1] & run;
+        end
+        at_iss$2 = tok$0$q[iss_bit$2] & run;
+        at_res$2 = 1'b0;
+        if (view_res$2 == 0) begin
+            at_res$2 = tok$0$q[res_bit$2] & run;
+        end
+        if (view_res$2 == 1) begin
+            at_res$2 = tok$1$q[res_bit$2] & run;
+        end
+        if (view_res$2 == 2) begin
+            at_res$2 = tok$2$q[res_bit$2] & run;
+        end
+        if (view_res$2 == 3) begin
+            at_res$2 = tok$3$q[res_bit$2] & run;
+        end
+        if (view_res$2 == 4) begin
+            at_res$2 = tok$4$q[res_bit$2] & run;
+        end
+        if (view_res$2 == 5) begin
+            at_res$2 = tok$5$q[res_bit$2] & run;
+        end
+        at_iss$3 = tok$0$q[iss_bit$3] & run;
+        at_res$3 = 1'b0;
+        if (view_res$3 == 0) begin
+            at_res$3 = tok$0$q[res_bit$3] & run;
+        end
+        if (view_res$3 == 1) begin
+            at_res$3 = tok$1$q[res_bit$3] & run;
+        end
+        if (view_res$3 == 2) begin
+            at_res$3 = tok$2$q[res_bit$3] & run;
         end
-        act_r$50$clock = clock;
-        act_r$50$d = act_r$50$q;
-        add_r$50$clock = clock;
-        add_r$50$d = add_r$50$q;
-        if (run) begin
-            act_r$50$d = 1'b0;
-            add_r$50$d = 1'b0;
-            if (view$50 == 0) begin
-                if (cyc$50 == firsts$0) begin
-                    act_r$50$d = enter$0;
-                end
-                else begin
-                    act_r$50$d = t$0$q == cyc$50 - 32'h1;
-                end
-            end
-            if (view_add$50 == 0) begin
-                if (cyc_add$50 == firsts$0) begin
-                    add_r$50$d = enter$0;
-                end
-                else begin
-                    add_r$50$d = t$0$q == cyc_add$50 - 32'h1;
-                end
-            end
-            if (view$50 == 1) begin
-                if (cyc$50 == firsts$1) begin
-                    act_r$50$d = enter$1;
-                end
-                else begin
-                    act_r$50$d = t$1$q == cyc$50 - 32'h1;
-                end
-            end
-            if (view_add$50 == 1) begin
-                if (cyc_add$50 == firsts$1) begin
-                    add_r$50$d = enter$1;
-                end
-                else begin
-                    add_r$50$d = t$1$q == cyc_add$50 - 32'h1;
-                end
-            end
-            if (view$50 == 2) begin
-                if (cyc$50 == firsts$2) begin
-                    act_r$50$d = enter$2;
-                end
-                else begin
-                    act_r$50$d = t$2$q == cyc$50 - 32'h1;
-                end
-            end
-            if (view_add$50 == 2) begin
-                if (cyc_add$50 == firsts$2) begin
-                    add_r$50$d = enter$2;
-                end
-                else begin
-                    add_r$50$d = t$2$q == cyc_add$50 - 32'h1;
-                end
-            end
-            if (view$50 == 3) begin
-                if (cyc$50 == firsts$3) begin
-                    act_r$50$d = enter$3;
-                end
-                else begin
-                    act_r$50$d = t$3$q == cyc$50 - 32'h1;
-                end
-            end
-            if (view_add$50 == 3) begin
-                if (cyc_add$50 == firsts$3) begin
-                    add_r$50$d = enter$3;
-                end
-                else begin
-                    add_r$50$d = t$3$q == cyc_add$50 - 32'h1;
-                end
-            end
-            if (view$50 == 4) begin
-                if (cyc$50 == firsts$4) begin
-                    act_r$50$d = enter$4;
-                end
-                else begin
-                    act_r$50$d = t$4$q == cyc$50 - 32'h1;
-                end
-            end
-            if (view_add$50 == 4) begin
-                if (cyc_add$50 == firsts$4) begin
-                    add_r$50$d = enter$4;
-                end
-                else begin
-                    add_r$50$d = t$4$q == cyc_add$50 - 32'h1;
-                end
-            end
-            if (view$50 == 5) begin
-                if (cyc$50 == firsts$5) begin
-                    act_r$50$d = enter$5;
-                end
-                else begin
-                    act_r$50$d = t$5$q == cyc$50 - 32'h1;
-                end
-            end
-            if (view_add$50 == 5) begin
-                if (cyc_add$50 == firsts$5) begin
-                    add_r$50$d = enter$5;
-                end
-                else begin
-                    add_r$50$d = t$5$q == cyc_add$50 - 32'h1;
-                end
-            end
+        if (view_res$3 == 3) begin
+            at_res$3 = tok$3$q[res_bit$3] & run;
         end
-        act_r$51$clock = clock;
-        act_r$51$d = act_r$51$q;
-        add_r$51$clock = clock;
-        add_r$51$d = add_r$51$q;
-        if (run) begin
-            act_r$51$d = 1'b0;
-            add_r$51$d = 1'b0;
-            if (view$51 == 0) begin
-                if (cyc$51 == firsts$0) begin
-                    act_r$51$d = enter$0;
-                end
-                else begin
-                    act_r$51$d = t$0$q == cyc$51 - 32'h1;
-                end
-            end
-            if (view_add$51 == 0) begin
-                if (cyc_add$51 == firsts$0) begin
-                    add_r$51$d = enter$0;
-                end
-                else begin
-                    add_r$51$d = t$0$q == cyc_add$51 - 32'h1;
-                end
-            end
-            if (view$51 == 1) begin
-                if (cyc$51 == firsts$1) begin
-                    act_r$51$d = enter$1;
-                end
-                else begin
-                    act_r$51$d = t$1$q == cyc$51 - 32'h1;
-                end
-            end
-            if (view_add$51 == 1) begin
-                if (cyc_add$51 == firsts$1) begin
-                    add_r$51$d = enter$1;
-                end
-                else begin
-                    add_r$51$d = t$1$q == cyc_add$51 - 32'h1;
-                end
-            end
-            if (view$51 == 2) begin
-                if (cyc$51 == firsts$2) begin
-                    act_r$51$d = enter$2;
-                end
-                else begin
-                    act_r$51$d = t$2$q == cyc$51 - 32'h1;
-                end
-            end
-            if (view_add$51 == 2) begin
-                if (cyc_add$51 == firsts$2) begin
-                    add_r$51$d = enter$2;
-                end
-                else begin
-                    add_r$51$d = t$2$q == cyc_add$51 - 32'h1;
-                end
-            end
-            if (view$51 == 3) begin
-                if (cyc$51 == firsts$3) begin
-                    act_r$51$d = enter$3;
-                end
-                else begin
-                    act_r$51$d = t$3$q == cyc$51 - 32'h1;
-                end
-            end
-            if (view_add$51 == 3) begin
-                if (cyc_add$51 == firsts$3) begin
-                    add_r$51$d = enter$3;
-                end
-                else begin
-                    add_r$51$d = t$3$q == cyc_add$51 - 32'h1;
-                end
-            end
-            if (view$51 == 4) begin
-                if (cyc$51 == firsts$4) begin
-                    act_r$51$d = enter$4;
-                end
-                else begin
-                    act_r$51$d = t$4$q == cyc$51 - 32'h1;
-                end
-            end
-            if (view_add$51 == 4) begin
-                if (cyc_add$51 == firsts$4) begin
-                    add_r$51$d = enter$4;
-                end
-                else begin
-                    add_r$51$d = t$4$q == cyc_add$51 - 32'h1;
-                end
-            end
-            if (view$51 == 5) begin
-                if (cyc$51 == firsts$5) begin
-                    act_r$51$d = enter$5;
-                end
-                else begin
-                    act_r$51$d = t$5$q == cyc$51 - 32'h1;
-                end
-            end
-            if (view_add$51 == 5) begin
-                if (cyc_add$51 == firsts$5) begin
-                    add_r$51$d = enter$5;
-                end
-                else begin
-                    add_r$51$d = t$5$q == cyc_add$51 - 32'h1;
-                end
-            end
+        if (view_res$3 == 4) begin
+            at_res$3 = tok$4$q[res_bit$3] & run;
         end
-        act_r$52$clock = clock;
-        act_r$52$d = act_r$52$q;
-        add_r$52$clock = clock;
-        add_r$52$d = add_r$52$q;
-        if (run) begin
-            act_r$52$d = 1'b0;
-            add_r$52$d = 1'b0;
-            if (view$52 == 0) begin
-                if (cyc$52 == firsts$0) begin
-                    act_r$52$d = enter$0;
-                end
-                else begin
-                    act_r$52$d = t$0$q == cyc$52 - 32'h1;
-                end
-            end
-            if (view_add$52 == 0) begin
-                if (cyc_add$52 == firsts$0) begin
-                    add_r$52$d = enter$0;
-                end
-                else begin
-                    add_r$52$d = t$0$q == cyc_add$52 - 32'h1;
-                end
-            end
-            if (view$52 == 1) begin
-                if (cyc$52 == firsts$1) begin
-                    act_r$52$d = enter$1;
-                end
-                else begin
-                    act_r$52$d = t$1$q == cyc$52 - 32'h1;
-                end
-            end
-            if (view_add$52 == 1) begin
-                if (cyc_add$52 == firsts$1) begin
-                    add_r$52$d = enter$1;
-                end
-                else begin
-                    add_r$52$d = t$1$q == cyc_add$52 - 32'h1;
-                end
-            end
-            if (view$52 == 2) begin
-                if (cyc$52 == firsts$2) begin
-                    act_r$52$d = enter$2;
-                end
-                else begin
-                    act_r$52$d = t$2$q == cyc$52 - 32'h1;
-                end
-            end
-            if (view_add$52 == 2) begin
-                if (cyc_add$52 == firsts$2) begin
-                    add_r$52$d = enter$2;
-                end
-                else begin
-                    add_r$52$d = t$2$q == cyc_add$52 - 32'h1;
-                end
-            end
-            if (view$52 == 3) begin
-                if (cyc$52 == firsts$3) begin
-                    act_r$52$d = enter$3;
-                end
-                else begin
-                    act_r$52$d = t$3$q == cyc$52 - 32'h1;
-                end
-            end
-            if (view_add$52 == 3) begin
-                if (cyc_add$52 == firsts$3) begin
-                    add_r$52$d = enter$3;
-                end
-                else begin
-                    add_r$52$d = t$3$q == cyc_add$52 - 32'h1;
-                end
-            end
-            if (view$52 == 4) begin
-                if (cyc$52 == firsts$4) begin
-                    act_r$52$d = enter$4;
-                end
-                else begin
-                    act_r$52$d = t$4$q == cyc$52 - 32'h1;
-                end
-            end
-            if (view_add$52 == 4) begin
-                if (cyc_add$52 == firsts$4) begin
-                    add_r$52$d = enter$4;
-                end
-                else begin
-                    add_r$52$d = t$4$q == cyc_add$52 - 32'h1;
-                end
-            end
-            if (view$52 == 5) begin
-                if (cyc$52 == firsts$5) begin
-                    act_r$52$d = enter$5;
-                end
-                else begin
-                    act_r$52$d = t$5$q == cyc$52 - 32'h1;
-                end
-            end
-            if (view_add$52 == 5) begin
-                if (cyc_add$52 == firsts$5) begin
-                    add_r$52$d = enter$5;
-                end
-                else begin
-                    add_r$52$d = t$5$q == cyc_add$52 - 32'h1;
-                end
-            end
+        if (view_res$3 == 5) begin
+            at_res$3 = tok$5$q[res_bit$3] & run;
         end
-        act_r$53$clock = clock;
-        act_r$53$d = act_r$53$q;
-        add_r$53$clock = clock;
-        add_r$53$d = add_r$53$q;
-        if (run) begin
-            act_r$53$d = 1'b0;
-            add_r$53$d = 1'b0;
-            if (view$53 == 0) begin
-                if (cyc$53 == firsts$0) begin
-                    act_r$53$d = enter$0;
-                end
-                else begin
-                    act_r$53$d = t$0$q == cyc$53 - 32'h1;
-                end
-            end
-            if (view_add$53 == 0) begin
-                if (cyc_add$53 == firsts$0) begin
-                    add_r$53$d = enter$0;
-                end
-                else begin
-                    add_r$53$d = t$0$q == cyc_add$53 - 32'h1;
-                end
-            end
-            if (view$53 == 1) begin
-                if (cyc$53 == firsts$1) begin
-                    act_r$53$d = enter$1;
-                end
-                else begin
-                    act_r$53$d = t$1$q == cyc$53 - 32'h1;
-                end
-            end
-            if (view_add$53 == 1) begin
-                if (cyc_add$53 == firsts$1) begin
-                    add_r$53$d = enter$1;
-                end
-                else begin
-                    add_r$53$d = t$1$q == cyc_add$53 - 32'h1;
-                end
-            end
-            if (view$53 == 2) begin
-                if (cyc$53 == firsts$2) begin
-                    act_r$53$d = enter$2;
-                end
-                else begin
-                    act_r$53$d = t$2$q == cyc$53 - 32'h1;
-                end
-            end
-            if (view_add$53 == 2) begin
-                if (cyc_add$53 == firsts$2) begin
-                    add_r$53$d = enter$2;
-                end
-                else begin
-                    add_r$53$d = t$2$q == cyc_add$53 - 32'h1;
-                end
-            end
-            if (view$53 == 3) begin
-                if (cyc$53 == firsts$3) begin
-                    act_r$53$d = enter$3;
-                end
-                else begin
-                    act_r$53$d = t$3$q == cyc$53 - 32'h1;
-                end
-            end
-            if (view_add$53 == 3) begin
-                if (cyc_add$53 == firsts$3) begin
-                    add_r$53$d = enter$3;
-                end
-                else begin
-                    add_r$53$d = t$3$q == cyc_add$53 - 32'h1;
-                end
-            end
-            if (view$53 == 4) begin
-                if (cyc$53 == firsts$4) begin
-                    act_r$53$d = enter$4;
-                end
-                else begin
-                    act_r$53$d = t$4$q == cyc$53 - 32'h1;
-                end
-            end
-            if (view_add$53 == 4) begin
-                if (cyc_add$53 == firsts$4) begin
-                    add_r$53$d = enter$4;
-                end
-                else begin
-                    add_r$53$d = t$4$q == cyc_add$53 - 32'h1;
-                end
-            end
-            if (view$53 == 5) begin
-                if (cyc$53 == firsts$5) begin
-                    act_r$53$d = enter$5;
-                end
-                else begin
-                    act_r$53$d = t$5$q == cyc$53 - 32'h1;
-                end
-            end
-            if (view_add$53 == 5) begin
-                if (cyc_add$53 == firsts$5) begin
-                    add_r$53$d = enter$5;
-                end
-                else begin
-                    add_r$53$d = t$5$q == cyc_add$53 - 32'h1;
-                end
-            end
+        at_iss$4 = tok$0$q[iss_bit$4] & run;
+        at_res$4 = 1'b0;
+        if (view_res$4 == 0) begin
+            at_res$4 = tok$0$q[res_bit$4] & run;
         end
-        act_r$54$clock = clock;
-        act_r$54$d = act_r$54$q;
-        add_r$54$clock = clock;
-        add_r$54$d = add_r$54$q;
-        if (run) begin
-            act_r$54$d = 1'b0;
-            add_r$54$d = 1'b0;
-            if (view$54 == 0) begin
-                if (cyc$54 == firsts$0) begin
-                    act_r$54$d = enter$0;
-                end
-                else begin
-                    act_r$54$d = t$0$q == cyc$54 - 32'h1;
-                end
-            end
-            if (view_add$54 == 0) begin
-                if (cyc_add$54 == firsts$0) begin
-                    add_r$54$d = enter$0;
-                end
-                else begin
-                    add_r$54$d = t$0$q == cyc_add$54 - 32'h1;
-                end
-            end
-            if (view$54 == 1) begin
-                if (cyc$54 == firsts$1) begin
-                    act_r$54$d = enter$1;
-                end
-                else begin
-                    act_r$54$d = t$1$q == cyc$54 - 32'h1;
-                end
-            end
-            if (view_add$54 == 1) begin
-                if (cyc_add$54 == firsts$1) begin
-                    add_r$54$d = enter$1;
-                end
-                else begin
-                    add_r$54$d = t$1$q == cyc_add$54 - 32'h1;
-                end
-            end
-            if (view$54 == 2) begin
-                if (cyc$54 == firsts$2) begin
-                    act_r$54$d = enter$2;
-                end
-                else begin
-                    act_r$54$d = t$2$q == cyc$54 - 32'h1;
-                end
-            end
-            if (view_add$54 == 2) begin
-                if (cyc_add$54 == firsts$2) begin
-                    add_r$54$d = enter$2;
-                end
-                else begin
-                    add_r$54$d = t$2$q == cyc_add$54 - 32'h1;
-                end
-            end
-            if (view$54 == 3) begin
-                if (cyc$54 == firsts$3) begin
-                    act_r$54$d = enter$3;
-                end
-                else begin
-                    act_r$54$d = t$3$q == cyc$54 - 32'h1;
-                end
-            end
-            if (view_add$54 == 3) begin
-                if (cyc_add$54 == firsts$3) begin
-                    add_r$54$d = enter$3;
-                end
-                else begin
-                    add_r$54$d = t$3$q == cyc_add$54 - 32'h1;
-                end
-            end
-            if (view$54 == 4) begin
-                if (cyc$54 == firsts$4) begin
-                    act_r$54$d = enter$4;
-                end
-                else begin
-                    act_r$54$d = t$4$q == cyc$54 - 32'h1;
-                end
-            end
-            if (view_add$54 == 4) begin
-                if (cyc_add$54 == firsts$4) begin
-                    add_r$54$d = enter$4;
-                end
-                else begin
-                    add_r$54$d = t$4$q == cyc_add$54 - 32'h1;
-                end
-            end
-            if (view$54 == 5) begin
-                if (cyc$54 == firsts$5) begin
-                    act_r$54$d = enter$5;
-                end
-                else begin
-                    act_r$54$d = t$5$q == cyc$54 - 32'h1;
-                end
-            end
-            if (view_add$54 == 5) begin
-                if (cyc_add$54 == firsts$5) begin
-                    add_r$54$d = enter$5;
-                end
-                else begin
-                    add_r$54$d = t$5$q == cyc_add$54 - 32'h1;
-                end
-            end
+        if (view_res$4 == 1) begin
+            at_res$4 = tok$1$q[res_bit$4] & run;
         end
-        act_r$55$clock = clock;
-        act_r$55$d = act_r$55$q;
-        add_r$55$clock = clock;
-        add_r$55$d = add_r$55$q;
-        if (run) begin
-            act_r$55$d = 1'b0;
-            add_r$55$d = 1'b0;
-            if (view$55 == 0) begin
-                if (cyc$55 == firsts$0) begin
-                    act_r$55$d = enter$0;
-                end
-                else begin
-                    act_r$55$d = t$0$q == cyc$55 - 32'h1;
-                end
-            end
-            if (view_add$55 == 0) begin
-                if (cyc_add$55 == firsts$0) begin
-                    add_r$55$d = enter$0;
-                end
-                else begin
-                    add_r$55$d = t$0$q == cyc_add$55 - 32'h1;
-                end
-            end
-            if (view$55 == 1) begin
-                if (cyc$55 == firsts$1) begin
-                    act_r$55$d = enter$1;
-                end
-                else begin
-                    act_r$55$d = t$1$q == cyc$55 - 32'h1;
-                end
-            end
-            if (view_add$55 == 1) begin
-                if (cyc_add$55 == firsts$1) begin
-                    add_r$55$d = enter$1;
-                end
-                else begin
-                    add_r$55$d = t$1$q == cyc_add$55 - 32'h1;
-                end
-            end
-            if (view$55 == 2) begin
-                if (cyc$55 == firsts$2) begin
-                    act_r$55$d = enter$2;
-                end
-                else begin
-                    act_r$55$d = t$2$q == cyc$55 - 32'h1;
-                end
-            end
-            if (view_add$55 == 2) begin
-                if (cyc_add$55 == firsts$2) begin
-                    add_r$55$d = enter$2;
-                end
-                else begin
-                    add_r$55$d = t$2$q == cyc_add$55 - 32'h1;
-                end
-            end
-            if (view$55 == 3) begin
-                if (cyc$55 == firsts$3) begin
-                    act_r$55$d = enter$3;
-                end
-                else begin
-                    act_r$55$d = t$3$q == cyc$55 - 32'h1;
-                end
-            end
-            if (view_add$55 == 3) begin
-                if (cyc_add$55 == firsts$3) begin
-                    add_r$55$d = enter$3;
-                end
-                else begin
-                    add_r$55$d = t$3$q == cyc_add$55 - 32'h1;
-                end
-            end
-            if (view$55 == 4) begin
-                if (cyc$55 == firsts$4) begin
-                    act_r$55$d = enter$4;
-                end
-                else begin
-                    act_r$55$d = t$4$q == cyc$55 - 32'h1;
-                end
-            end
-            if (view_add$55 == 4) begin
-                if (cyc_add$55 == firsts$4) begin
-                    add_r$55$d = enter$4;
-                end
-                else begin
-                    add_r$55$d = t$4$q == cyc_add$55 - 32'h1;
-                end
-            end
-            if (view$55 == 5) begin
-                if (cyc$55 == firsts$5) begin
-                    act_r$55$d = enter$5;
-                end
-                else begin
-                    act_r$55$d = t$5$q == cyc$55 - 32'h1;
-                end
-            end
-            if (view_add$55 == 5) begin
-                if (cyc_add$55 == firsts$5) begin
-                    add_r$55$d = enter$5;
-                end
-                else begin
-                    add_r$55$d = t$5$q == cyc_add$55 - 32'h1;
-                end
-            end
+        if (view_res$4 == 2) begin
+            at_res$4 = tok$2$q[res_bit$4] & run;
         end
-        act_r$56$clock = clock;
-        act_r$56$d = act_r$56$q;
-        add_r$56$clock = clock;
-        add_r$56$d = add_r$56$q;
-        if (run) begin
-            act_r$56$d = 1'b0;
-            add_r$56$d = 1'b0;
-            if (view$56 == 0) begin
-                if (cyc$56 == firsts$0) begin
-                    act_r$56$d = enter$0;
-                end
-                else begin
-                    act_r$56$d = t$0$q == cyc$56 - 32'h1;
-                end
-            end
-            if (view_add$56 == 0) begin
-                if (cyc_add$56 == firsts$0) begin
-                    add_r$56$d = enter$0;
-                end
-                else begin
-                    add_r$56$d = t$0$q == cyc_add$56 - 32'h1;
-                end
-            end
-            if (view$56 == 1) begin
-                if (cyc$56 == firsts$1) begin
-                    act_r$56$d = enter$1;
-                end
-                else begin
-                    act_r$56$d = t$1$q == cyc$56 - 32'h1;
-                end
-            end
-            if (view_add$56 == 1) begin
-                if (cyc_add$56 == firsts$1) begin
-                    add_r$56$d = enter$1;
-                end
-                else begin
-                    add_r$56$d = t$1$q == cyc_add$56 - 32'h1;
-                end
-            end
-            if (view$56 == 2) begin
-                if (cyc$56 == firsts$2) begin
-                    act_r$56$d = enter$2;
-                end
-                else begin
-                    act_r$56$d = t$2$q == cyc$56 - 32'h1;
-                end
-            end
-            if (view_add$56 == 2) begin
-                if (cyc_add$56 == firsts$2) begin
-                    add_r$56$d = enter$2;
-                end
-                else begin
-                    add_r$56$d = t$2$q == cyc_add$56 - 32'h1;
-                end
-            end
-            if (view$56 == 3) begin
-                if (cyc$56 == firsts$3) begin
-                    act_r$56$d = enter$3;
-                end
-                else begin
-                    act_r$56$d = t$3$q == cyc$56 - 32'h1;
-                end
-            end
-            if (view_add$56 == 3) begin
-                if (cyc_add$56 == firsts$3) begin
-                    add_r$56$d = enter$3;
-                end
-                else begin
-                    add_r$56$d = t$3$q == cyc_add$56 - 32'h1;
-                end
-            end
-            if (view$56 == 4) begin
-                if (cyc$56 == firsts$4) begin
-                    act_r$56$d = enter$4;
-                end
-                else begin
-                    act_r$56$d = t$4$q == cyc$56 - 32'h1;
-                end
-            end
-            if (view_add$56 == 4) begin
-                if (cyc_add$56 == firsts$4) begin
-                    add_r$56$d = enter$4;
-                end
-                else begin
-                    add_r$56$d = t$4$q == cyc_add$56 - 32'h1;
-                end
-            end
-            if (view$56 == 5) begin
-                if (cyc$56 == firsts$5) begin
-                    act_r$56$d = enter$5;
-                end
-                else begin
-                    act_r$56$d = t$5$q == cyc$56 - 32'h1;
-                end
-            end
-            if (view_add$56 == 5) begin
-                if (cyc_add$56 == firsts$5) begin
-                    add_r$56$d = enter$5;
-                end
-                else begin
-                    add_r$56$d = t$5$q == cyc_add$56 - 32'h1;
-                end
-            end
+        if (view_res$4 == 3) begin
+            at_res$4 = tok$3$q[res_bit$4] & run;
         end
-        act_r$57$clock = clock;
-        act_r$57$d = act_r$57$q;
-        add_r$57$clock = clock;
-        add_r$57$d = add_r$57$q;
-        if (run) begin
-            act_r$57$d = 1'b0;
-            add_r$57$d = 1'b0;
-            if (view$57 == 0) begin
-                if (cyc$57 == firsts$0) begin
-                    act_r$57$d = enter$0;
-                end
-                else begin
-                    act_r$57$d = t$0$q == cyc$57 - 32'h1;
-                end
-            end
-            if (view_add$57 == 0) begin
-                if (cyc_add$57 == firsts$0) begin
-                    add_r$57$d = enter$0;
-                end
-                else begin
-                    add_r$57$d = t$0$q == cyc_add$57 - 32'h1;
-                end
-            end
-            if (view$57 == 1) begin
-                if (cyc$57 == firsts$1) begin
-                    act_r$57$d = enter$1;
-                end
-                else begin
-                    act_r$57$d = t$1$q == cyc$57 - 32'h1;
-                end
-            end
-            if (view_add$57 == 1) begin
-                if (cyc_add$57 == firsts$1) begin
-                    add_r$57$d = enter$1;
-                end
-                else begin
-                    add_r$57$d = t$1$q == cyc_add$57 - 32'h1;
-                end
-            end
-            if (view$57 == 2) begin
-                if (cyc$57 == firsts$2) begin
-                    act_r$57$d = enter$2;
-                end
-                else begin
-                    act_r$57$d = t$2$q == cyc$57 - 32'h1;
-                end
-            end
-            if (view_add$57 == 2) begin
-                if (cyc_add$57 == firsts$2) begin
-                    add_r$57$d = enter$2;
-                end
-                else begin
-                    add_r$57$d = t$2$q == cyc_add$57 - 32'h1;
-                end
-            end
-            if (view$57 == 3) begin
-                if (cyc$57 == firsts$3) begin
-                    act_r$57$d = enter$3;
-                end
-                else begin
-                    act_r$57$d = t$3$q == cyc$57 - 32'h1;
-                end
-            end
-            if (view_add$57 == 3) begin
-                if (cyc_add$57 == firsts$3) begin
-                    add_r$57$d = enter$3;
-                end
-                else begin
-                    add_r$57$d = t$3$q == cyc_add$57 - 32'h1;
-                end
-            end
-            if (view$57 == 4) begin
-                if (cyc$57 == firsts$4) begin
-                    act_r$57$d = enter$4;
-                end
-                else begin
-                    act_r$57$d = t$4$q == cyc$57 - 32'h1;
-                end
-            end
-            if (view_add$57 == 4) begin
-                if (cyc_add$57 == firsts$4) begin
-                    add_r$57$d = enter$4;
-                end
-                else begin
-                    add_r$57$d = t$4$q == cyc_add$57 - 32'h1;
-                end
-            end
-            if (view$57 == 5) begin
-                if (cyc$57 == firsts$5) begin
-                    act_r$57$d = enter$5;
-                end
-                else begin
-                    act_r$57$d = t$5$q == cyc$57 - 32'h1;
-                end
-            end
-            if (view_add$57 == 5) begin
-                if (cyc_add$57 == firsts$5) begin
-                    add_r$57$d = enter$5;
-                end
-                else begin
-                    add_r$57$d = t$5$q == cyc_add$57 - 32'h1;
-                end
-            end
+        if (view_res$4 == 4) begin
+            at_res$4 = tok$4$q[res_bit$4] & run;
         end
-        act_r$58$clock = clock;
-        act_r$58$d = act_r$58$q;
-        add_r$58$clock = clock;
-        add_r$58$d = add_r$58$q;
-        if (run) begin
-            act_r$58$d = 1'b0;
-            add_r$58$d = 1'b0;
-            if (view$58 == 0) begin
-                if (cyc$58 == firsts$0) begin
-                    act_r$58$d = enter$0;
-                end
-                else begin
-                    act_r$58$d = t$0$q == cyc$58 - 32'h1;
-                end
-            end
-            if (view_add$58 == 0) begin
-                if (cyc_add$58 == firsts$0) begin
-                    add_r$58$d = enter$0;
-                end
-                else begin
-                    add_r$58$d = t$0$q == cyc_add$58 - 32'h1;
-                end
-            end
-            if (view$58 == 1) begin
-                if (cyc$58 == firsts$1) begin
-                    act_r$58$d = enter$1;
-                end
-                else begin
-                    act_r$58$d = t$1$q == cyc$58 - 32'h1;
-                end
-            end
-            if (view_add$58 == 1) begin
-                if (cyc_add$58 == firsts$1) begin
-                    add_r$58$d = enter$1;
-                end
-                else begin
-                    add_r$58$d = t$1$q == cyc_add$58 - 32'h1;
-                end
-            end
-            if (view$58 == 2) begin
-                if (cyc$58 == firsts$2) begin
-                    act_r$58$d = enter$2;
-                end
-                else begin
-                    act_r$58$d = t$2$q == cyc$58 - 32'h1;
-                end
-            end
-            if (view_add$58 == 2) begin
-                if (cyc_add$58 == firsts$2) begin
-                    add_r$58$d = enter$2;
-                end
-                else begin
-                    add_r$58$d = t$2$q == cyc_add$58 - 32'h1;
-                end
-            end
-            if (view$58 == 3) begin
-                if (cyc$58 == firsts$3) begin
-                    act_r$58$d = enter$3;
-                end
-                else begin
-                    act_r$58$d = t$3$q == cyc$58 - 32'h1;
-                end
-            end
-            if (view_add$58 == 3) begin
-                if (cyc_add$58 == firsts$3) begin
-                    add_r$58$d = enter$3;
-                end
-                else begin
-                    add_r$58$d = t$3$q == cyc_add$58 - 32'h1;
-                end
-            end
-            if (view$58 == 4) begin
-                if (cyc$58 == firsts$4) begin
-                    act_r$58$d = enter$4;
-                end
-                else begin
-                    act_r$58$d = t$4$q == cyc$58 - 32'h1;
-                end
-            end
-            if (view_add$58 == 4) begin
-                if (cyc_add$58 == firsts$4) begin
-                    add_r$58$d = enter$4;
-                end
-                else begin
-                    add_r$58$d = t$4$q == cyc_add$58 - 32'h1;
-                end
-            end
-            if (view$58 == 5) begin
-                if (cyc$58 == firsts$5) begin
-                    act_r$58$d = enter$5;
-                end
-                else begin
-                    act_r$58$d = t$5$q == cyc$58 - 32'h1;
-                end
-            end
-            if (view_add$58 == 5) begin
-                if (cyc_add$58 == firsts$5) begin
-                    add_r$58$d = enter$5;
-                end
-                else begin
-                    add_r$58$d = t$5$q == cyc_add$58 - 32'h1;
-                end
-            end
+        if (view_res$4 == 5) begin
+            at_res$4 = tok$5$q[res_bit$4] & run;
         end
-        act_r$59$clock = clock;
-        act_r$59$d = act_r$59$q;
-        add_r$59$clock = clock;
-        add_r$59$d = add_r$59$q;
-        if (run) begin
-            act_r$59$d = 1'b0;
-            add_r$59$d = 1'b0;
-            if (view$59 == 0) begin
-                if (cyc$59 == firsts$0) begin
-                    act_r$59$d = enter$0;
-                end
-                else begin
-                    act_r$59$d = t$0$q == cyc$59 - 32'h1;
-                end
-            end
-            if (view_add$59 == 0) begin
-                if (cyc_add$59 == firsts$0) begin
-                    add_r$59$d = enter$0;
-                end
-                else begin
-                    add_r$59$d = t$0$q == cyc_add$59 - 32'h1;
-                end
-            end
-            if (view$59 == 1) begin
-                if (cyc$59 == firsts$1) begin
-                    act_r$59$d = enter$1;
-                end
-                else begin
-                    act_r$59$d = t$1$q == cyc$59 - 32'h1;
-                end
-            end
-            if (view_add$59 == 1) begin
-                if (cyc_add$59 == firsts$1) begin
-                    add_r$59$d = enter$1;
-                end
-                else begin
-                    add_r$59$d = t$1$q == cyc_add$59 - 32'h1;
-                end
-            end
-            if (view$59 == 2) begin
-                if (cyc$59 == firsts$2) begin
-                    act_r$59$d = enter$2;
-                end
-                else begin
-                    act_r$59$d = t$2$q == cyc$59 - 32'h1;
-                end
-            end
-            if (view_add$59 == 2) begin
-                if (cyc_add$59 == firsts$2) begin
-                    add_r$59$d = enter$2;
-                end
-                else begin
-                    add_r$59$d = t$2$q == cyc_add$59 - 32'h1;
-                end
-            end
-            if (view$59 == 3) begin
-                if (cyc$59 == firsts$3) begin
-                    act_r$59$d = enter$3;
-                end
-                else begin
-                    act_r$59$d = t$3$q == cyc$59 - 32'h1;
-                end
-            end
-            if (view_add$59 == 3) begin
-                if (cyc_add$59 == firsts$3) begin
-                    add_r$59$d = enter$3;
-                end
-                else begin
-                    add_r$59$d = t$3$q == cyc_add$59 - 32'h1;
-                end
-            end
-            if (view$59 == 4) begin
-                if (cyc$59 == firsts$4) begin
-                    act_r$59$d = enter$4;
-                end
-                else begin
-                    act_r$59$d = t$4$q == cyc$59 - 32'h1;
-                end
-            end
-            if (view_add$59 == 4) begin
-                if (cyc_add$59 == firsts$4) begin
-                    add_r$59$d = enter$4;
-                end
-                else begin
-                    add_r$59$d = t$4$q == cyc_add$59 - 32'h1;
-                end
-            end
-            if (view$59 == 5) begin
-                if (cyc$59 == firsts$5) begin
-                    act_r$59$d = enter$5;
-                end
-                else begin
-                    act_r$59$d = t$5$q == cyc$59 - 32'h1;
-                end
-            end
-            if (view_add$59 == 5) begin
-                if (cyc_add$59 == firsts$5) begin
-                    add_r$59$d = enter$5;
-                end
-                else begin
-                    add_r$59$d = t$5$q == cyc_add$59 - 32'h1;
-                end
-            end
+        at_iss$5 = tok$0$q[iss_bit$5] & run;
+        at_res$5 = 1'b0;
+        if (view_res$5 == 0) begin
+            at_res$5 = tok$0$q[res_bit$5] & run;
         end
-        act_r$60$clock = clock;
-        act_r$60$d = act_r$60$q;
-        add_r$60$clock = clock;
-        add_r$60$d = add_r$60$q;
-        if (run) begin
-            act_r$60$d = 1'b0;
-            add_r$60$d = 1'b0;
-            if (view$60 == 0) begin
-                if (cyc$60 == firsts$0) begin
-                    act_r$60$d = enter$0;
-                end
-                else begin
-                    act_r$60$d = t$0$q == cyc$60 - 32'h1;
-                end
-            end
-            if (view_add$60 == 0) begin
-                if (cyc_add$60 == firsts$0) begin
-                    add_r$60$d = enter$0;
-                end
-                else begin
-                    add_r$60$d = t$0$q == cyc_add$60 - 32'h1;
-                end
-            end
-            if (view$60 == 1) begin
-                if (cyc$60 == firsts$1) begin
-                    act_r$60$d = enter$1;
-                end
-                else begin
-                    act_r$60$d = t$1$q == cyc$60 - 32'h1;
-                end
-            end
-            if (view_add$60 == 1) begin
-                if (cyc_add$60 == firsts$1) begin
-                    add_r$60$d = enter$1;
-                end
-                else begin
-                    add_r$60$d = t$1$q == cyc_add$60 - 32'h1;
-                end
-            end
-            if (view$60 == 2) begin
-                if (cyc$60 == firsts$2) begin
-                    act_r$60$d = enter$2;
-                end
-                else begin
-                    act_r$60$d = t$2$q == cyc$60 - 32'h1;
-                end
-            end
-            if (view_add$60 == 2) begin
-                if (cyc_add$60 == firsts$2) begin
-                    add_r$60$d = enter$2;
-                end
-                else begin
-                    add_r$60$d = t$2$q == cyc_add$60 - 32'h1;
-                end
-            end
-            if (view$60 == 3) begin
-                if (cyc$60 == firsts$3) begin
-                    act_r$60$d = enter$3;
-                end
-                else begin
-                    act_r$60$d = t$3$q == cyc$60 - 32'h1;
-                end
-            end
-            if (view_add$60 == 3) begin
-                if (cyc_add$60 == firsts$3) begin
-                    add_r$60$d = enter$3;
-                end
-                else begin
-                    add_r$60$d = t$3$q == cyc_add$60 - 32'h1;
-                end
-            end
-            if (view$60 == 4) begin
-                if (cyc$60 == firsts$4) begin
-                    act_r$60$d = enter$4;
-                end
-                else begin
-                    act_r$60$d = t$4$q == cyc$60 - 32'h1;
-                end
-            end
-            if (view_add$60 == 4) begin
-                if (cyc_add$60 == firsts$4) begin
-                    add_r$60$d = enter$4;
-                end
-                else begin
-                    add_r$60$d = t$4$q == cyc_add$60 - 32'h1;
-                end
-            end
-            if (view$60 == 5) begin
-                if (cyc$60 == firsts$5) begin
-                    act_r$60$d = enter$5;
-                end
-                else begin
-                    act_r$60$d = t$5$q == cyc$60 - 32'h1;
-                end
-            end
-            if (view_add$60 == 5) begin
-                if (cyc_add$60 == firsts$5) begin
-                    add_r$60$d = enter$5;
-                end
-                else begin
-                    add_r$60$d = t$5$q == cyc_add$60 - 32'h1;
-                end
-            end
+        if (view_res$5 == 1) begin
+            at_res$5 = tok$1$q[res_bit$5] & run;
         end
-        act_r$61$clock = clock;
-        act_r$61$d = act_r$61$q;
-        add_r$61$clock = clock;
-        add_r$61$d = add_r$61$q;
-        if (run) begin
-            act_r$61$d = 1'b0;
-            add_r$61$d = 1'b0;
-            if (view$61 == 0) begin
-                if (cyc$61 == firsts$0) begin
-                    act_r$61$d = enter$0;
-                end
-                else begin
-                    act_r$61$d = t$0$q == cyc$61 - 32'h1;
-                end
-            end
-            if (view_add$61 == 0) begin
-                if (cyc_add$61 == firsts$0) begin
-                    add_r$61$d = enter$0;
-                end
-                else begin
-                    add_r$61$d = t$0$q == cyc_add$61 - 32'h1;
-                end
-            end
-            if (view$61 == 1) begin
-                if (cyc$61 == firsts$1) begin
-                    act_r$61$d = enter$1;
-                end
-                else begin
-                    act_r$61$d = t$1$q == cyc$61 - 32'h1;
-                end
-            end
-            if (view_add$61 == 1) begin
-                if (cyc_add$61 == firsts$1) begin
-                    add_r$61$d = enter$1;
-                end
-                else begin
-                    add_r$61$d = t$1$q == cyc_add$61 - 32'h1;
-                end
-            end
-            if (view$61 == 2) begin
-                if (cyc$61 == firsts$2) begin
-                    act_r$61$d = enter$2;
-                end
-                else begin
-                    act_r$61$d = t$2$q == cyc$61 - 32'h1;
-                end
-            end
-            if (view_add$61 == 2) begin
-                if (cyc_add$61 == firsts$2) begin
-                    add_r$61$d = enter$2;
-                end
-                else begin
-                    add_r$61$d = t$2$q == cyc_add$61 - 32'h1;
-                end
-            end
-            if (view$61 == 3) begin
-                if (cyc$61 == firsts$3) begin
-                    act_r$61$d = enter$3;
-                end
-                else begin
-                    act_r$61$d = t$3$q == cyc$61 - 32'h1;
-                end
-            end
-            if (view_add$61 == 3) begin
-                if (cyc_add$61 == firsts$3) begin
-                    add_r$61$d = enter$3;
-                end
-                else begin
-                    add_r$61$d = t$3$q == cyc_add$61 - 32'h1;
-                end
-            end
-            if (view$61 == 4) begin
-                if (cyc$61 == firsts$4) begin
-                    act_r$61$d = enter$4;
-                end
-                else begin
-                    act_r$61$d = t$4$q == cyc$61 - 32'h1;
-                end
-            end
-            if (view_add$61 == 4) begin
-                if (cyc_add$61 == firsts$4) begin
-                    add_r$61$d = enter$4;
-                end
-                else begin
-                    add_r$61$d = t$4$q == cyc_add$61 - 32'h1;
-                end
-            end
-            if (view$61 == 5) begin
-                if (cyc$61 == firsts$5) begin
-                    act_r$61$d = enter$5;
-                end
-                else begin
-                    act_r$61$d = t$5$q == cyc$61 - 32'h1;
-                end
-            end
-            if (view_add$61 == 5) begin
-                if (cyc_add$61 == firsts$5) begin
-                    add_r$61$d = enter$5;
-                end
-                else begin
-                    add_r$61$d = t$5$q == cyc_add$61 - 32'h1;
-                end
-            end
+        if (view_res$5 == 2) begin
+            at_res$5 = tok$2$q[res_bit$5] & run;
         end
-        act_r$62$clock = clock;
-        act_r$62$d = act_r$62$q;
-        add_r$62$clock = clock;
-        add_r$62$d = add_r$62$q;
-        if (run) begin
-            act_r$62$d = 1'b0;
-            add_r$62$d = 1'b0;
-            if (view$62 == 0) begin
-                if (cyc$62 == firsts$0) begin
-                    act_r$62$d = enter$0;
-                end
-                else begin
-                    act_r$62$d = t$0$q == cyc$62 - 32'h1;
-                end
-            end
-            if (view_add$62 == 0) begin
-                if (cyc_add$62 == firsts$0) begin
-                    add_r$62$d = enter$0;
-                end
-                else begin
-                    add_r$62$d = t$0$q == cyc_add$62 - 32'h1;
-                end
-            end
-            if (view$62 == 1) begin
-                if (cyc$62 == firsts$1) begin
-                    act_r$62$d = enter$1;
-                end
-                else begin
-                    act_r$62$d = t$1$q == cyc$62 - 32'h1;
-                end
-            end
-            if (view_add$62 == 1) begin
-                if (cyc_add$62 == firsts$1) begin
-                    add_r$62$d = enter$1;
-                end
-                else begin
-                    add_r$62$d = t$1$q == cyc_add$62 - 32'h1;
-                end
-            end
-            if (view$62 == 2) begin
-                if (cyc$62 == firsts$2) begin
-                    act_r$62$d = enter$2;
-                end
-                else begin
-                    act_r$62$d = t$2$q == cyc$62 - 32'h1;
-                end
-            end
-            if (view_add$62 == 2) begin
-                if (cyc_add$62 == firsts$2) begin
-                    add_r$62$d = enter$2;
-                end
-                else begin
-                    add_r$62$d = t$2$q == cyc_add$62 - 32'h1;
-                end
-            end
-            if (view$62 == 3) begin
-                if (cyc$62 == firsts$3) begin
-                    act_r$62$d = enter$3;
-                end
-                else begin
-                    act_r$62$d = t$3$q == cyc$62 - 32'h1;
-                end
-            end
-            if (view_add$62 == 3) begin
-                if (cyc_add$62 == firsts$3) begin
-                    add_r$62$d = enter$3;
-                end
-                else begin
-                    add_r$62$d = t$3$q == cyc_add$62 - 32'h1;
-                end
-            end
-            if (view$62 == 4) begin
-                if (cyc$62 == firsts$4) begin
-                    act_r$62$d = enter$4;
-                end
-                else begin
-                    act_r$62$d = t$4$q == cyc$62 - 32'h1;
-                end
-            end
-            if (view_add$62 == 4) begin
-                if (cyc_add$62 == firsts$4) begin
-                    add_r$62$d = enter$4;
-                end
-                else begin
-                    add_r$62$d = t$4$q == cyc_add$62 - 32'h1;
-                end
-            end
-            if (view$62 == 5) begin
-                if (cyc$62 == firsts$5) begin
-                    act_r$62$d = enter$5;
-                end
-                else begin
-                    act_r$62$d = t$5$q == cyc$62 - 32'h1;
-                end
-            end
-            if (view_add$62 == 5) begin
-                if (cyc_add$62 == firsts$5) begin
-                    add_r$62$d = enter$5;
-                end
-                else begin
-                    add_r$62$d = t$5$q == cyc_add$62 - 32'h1;
-                end
-            end
+        if (view_res$5 == 3) begin
+            at_res$5 = tok$3$q[res_bit$5] & run;
         end
-        act_r$63$clock = clock;
-        act_r$63$d = act_r$63$q;
-        add_r$63$clock = clock;
-        add_r$63$d = add_r$63$q;
-        if (run) begin
-            act_r$63$d = 1'b0;
-            add_r$63$d = 1'b0;
-            if (view$63 == 0) begin
-                if (cyc$63 == firsts$0) begin
-                    act_r$63$d = enter$0;
-                end
-                else begin
-                    act_r$63$d = t$0$q == cyc$63 - 32'h1;
-                end
-            end
-            if (view_add$63 == 0) begin
-                if (cyc_add$63 == firsts$0) begin
-                    add_r$63$d = enter$0;
-                end
-                else begin
-                    add_r$63$d = t$0$q == cyc_add$63 - 32'h1;
-                end
-            end
-            if (view$63 == 1) begin
-                if (cyc$63 == firsts$1) begin
-                    act_r$63$d = enter$1;
-                end
-                else begin
-                    act_r$63$d = t$1$q == cyc$63 - 32'h1;
-                end
-            end
-            if (view_add$63 == 1) begin
-                if (cyc_add$63 == firsts$1) begin
-                    add_r$63$d = enter$1;
-                end
-                else begin
-                    add_r$63$d = t$1$q == cyc_add$63 - 32'h1;
-                end
-            end
-            if (view$63 == 2) begin
-                if (cyc$63 == firsts$2) begin
-                    act_r$63$d = enter$2;
-                end
-                else begin
-                    act_r$63$d = t$2$q == cyc$63 - 32'h1;
-                end
-            end
-            if (view_add$63 == 2) begin
-                if (cyc_add$63 == firsts$2) begin
-                    add_r$63$d = enter$2;
-                end
-                else begin
-                    add_r$63$d = t$2$q == cyc_add$63 - 32'h1;
-                end
-            end
-            if (view$63 == 3) begin
-                if (cyc$63 == firsts$3) begin
-                    act_r$63$d = enter$3;
-                end
-                else begin
-                    act_r$63$d = t$3$q == cyc$63 - 32'h1;
-                end
-            end
-            if (view_add$63 == 3) begin
-                if (cyc_add$63 == firsts$3) begin
-                    add_r$63$d = enter$3;
-                end
-                else begin
-                    add_r$63$d = t$3$q == cyc_add$63 - 32'h1;
-                end
-            end
-            if (view$63 == 4) begin
-                if (cyc$63 == firsts$4) begin
-                    act_r$63$d = enter$4;
-                end
-                else begin
-                    act_r$63$d = t$4$q == cyc$63 - 32'h1;
-                end
-            end
-            if (view_add$63 == 4) begin
-                if (cyc_add$63 == firsts$4) begin
-                    add_r$63$d = enter$4;
-                end
-                else begin
-                    add_r$63$d = t$4$q == cyc_add$63 - 32'h1;
-                end
-            end
-            if (view$63 == 5) begin
-                if (cyc$63 == firsts$5) begin
-                    act_r$63$d = enter$5;
-                end
-                else begin
-                    act_r$63$d = t$5$q == cyc$63 - 32'h1;
-                end
-            end
-            if (view_add$63 == 5) begin
-                if (cyc_add$63 == firsts$5) begin
-                    add_r$63$d = enter$5;
-                end
-                else begin
-                    add_r$63$d = t$5$q == cyc_add$63 - 32'h1;
-                end
-            end
+        if (view_res$5 == 4) begin
+            at_res$5 = tok$4$q[res_bit$5] & run;
         end
-        at_norm = norm_r$q & run;
-        iss_r$0$clock = clock;
-        iss_r$0$d = iss_r$0$q;
-        res_r$0$clock = clock;
-        res_r$0$d = res_r$0$q;
-        if (run) begin
-            if (iss$0 == 32'h1) begin
-                iss_r$0$d = take;
-            end
-            else begin
-                iss_r$0$d = t$0$q == iss$0 - 32'h1;
-            end
-            res_r$0$d = 1'b0;
-            if (view_res$0 == 0) begin
-                if (res$0 == firsts$0) begin
-                    res_r$0$d = enter$0;
-                end
-                else begin
-                    res_r$0$d = t$0$q == res$0 - 32'h1;
-                end
-            end
-            if (view_res$0 == 1) begin
-                if (res$0 == firsts$1) begin
-                    res_r$0$d = enter$1;
-                end
-                else begin
-                    res_r$0$d = t$1$q == res$0 - 32'h1;
-                end
-            end
-            if (view_res$0 == 2) begin
-                if (res$0 == firsts$2) begin
-                    res_r$0$d = enter$2;
-                end
-                else begin
-                    res_r$0$d = t$2$q == res$0 - 32'h1;
-                end
-            end
-            if (view_res$0 == 3) begin
-                if (res$0 == firsts$3) begin
-                    res_r$0$d = enter$3;
-                end
-                else begin
-                    res_r$0$d = t$3$q == res$0 - 32'h1;
-                end
-            end
-            if (view_res$0 == 4) begin
-                if (res$0 == firsts$4) begin
-                    res_r$0$d = enter$4;
-                end
-                else begin
-                    res_r$0$d = t$4$q == res$0 - 32'h1;
-                end
-            end
-            if (view_res$0 == 5) begin
-                if (res$0 == firsts$5) begin
-                    res_r$0$d = enter$5;
-                end
-                else begin
-                    res_r$0$d = t$5$q == res$0 - 32'h1;
-                end
-            end
+        if (view_res$5 == 5) begin
+            at_res$5 = tok$5$q[res_bit$5] & run;
         end
-        at_iss$0 = iss_r$0$q & run;
-        at_res$0 = res_r$0$q & run;
-        iss_r$1$clock = clock;
-        iss_r$1$d = iss_r$1$q;
-        res_r$1$clock = clock;
-        res_r$1$d = res_r$1$q;
-        if (run) begin
-            if (iss$1 == 32'h1) begin
-                iss_r$1$d = take;
-            end
-            else begin
-                iss_r$1$d = t$0$q == iss$1 - 32'h1;
-            end
-            res_r$1$d = 1'b0;
-            if (view_res$1 == 0) begin
-                if (res$1 == firsts$0) begin
-                    res_r$1$d = enter$0;
-                end
-                else begin
-                    res_r$1$d = t$0$q == res$1 - 32'h1;
-                end
-            end
-            if (view_res$1 == 1) begin
-                if (res$1 == firsts$1) begin
-                    res_r$1$d = enter$1;
-                end
-                else begin
-                    res_r$1$d = t$1$q == res$1 - 32'h1;
-                end
-            end
-            if (view_res$1 == 2) begin
-                if (res$1 == firsts$2) begin
-                    res_r$1$d = enter$2;
-                end
-                else begin
-                    res_r$1$d = t$2$q == res$1 - 32'h1;
-                end
-            end
-            if (view_res$1 == 3) begin
-                if (res$1 == firsts$3) begin
-                    res_r$1$d = enter$3;
-                end
-                else begin
-                    res_r$1$d = t$3$q == res$1 - 32'h1;
-                end
-            end
-            if (view_res$1 == 4) begin
-                if (res$1 == firsts$4) begin
-                    res_r$1$d = enter$4;
-                end
-                else begin
-                    res_r$1$d = t$4$q == res$1 - 32'h1;
-                end
-            end
-            if (view_res$1 == 5) begin
-                if (res$1 == firsts$5) begin
-                    res_r$1$d = enter$5;
-                end
-                else begin
-                    res_r$1$d = t$5$q == res$1 - 32'h1;
-                end
-            end
+        at_iss$6 = tok$0$q[iss_bit$6] & run;
+        at_res$6 = 1'b0;
+        if (view_res$6 == 0) begin
+            at_res$6 = tok$0$q[res_bit$6] & run;
         end
-        at_iss$1 = iss_r$1$q & run;
-        at_res$1 = res_r$1$q & run;
-        iss_r$2$clock = clock;
-        iss_r$2$d = iss_r$2$q;
-        res_r$2$clock = clock;
-        res_r$2$d = res_r$2$q;
-        if (run) begin
-            if (iss$2 == 32'h1) begin
-                iss_r$2$d = take;
-            end
-            else begin
-                iss_r$2$d = t$0$q == iss$2 - 32'h1;
-            end
-            res_r$2$d = 1'b0;
-            if (view_res$2 == 0) begin
-                if (res$2 == firsts$0) begin
-                    res_r$2$d = enter$0;
-                end
-                else begin
-                    res_r$2$d = t$0$q == res$2 - 32'h1;
-                end
-            end
-            if (view_res$2 == 1) begin
-                if (res$2 == firsts$1) begin
-                    res_r$2$d = enter$1;
-                end
-                else begin
-                    res_r$2$d = t$1$q == res$2 - 32'h1;
-                end
-            end
-            if (view_res$2 == 2) begin
-                if (res$2 == firsts$2) begin
-                    res_r$2$d = enter$2;
-                end
-                else begin
-                    res_r$2$d = t$2$q == res$2 - 32'h1;
-                end
-            end
-            if (view_res$2 == 3) begin
-                if (res$2 == firsts$3) begin
-                    res_r$2$d = enter$3;
-                end
-                else begin
-                    res_r$2$d = t$3$q == res$2 - 32'h1;
-                end
-            end
-            if (view_res$2 == 4) begin
-                if (res$2 == firsts$4) begin
-                    res_r$2$d = enter$4;
-                end
-                else begin
-                    res_r$2$d = t$4$q == res$2 - 32'h1;
-                end
-            end
-            if (view_res$2 == 5) begin
-                if (res$2 == firsts$5) begin
-                    res_r$2$d = enter$5;
-                end
-                else begin
-                    res_r$2$d = t$5$q == res$2 - 32'h1;
-                end
-            end
+        if (view_res$6 == 1) begin
+            at_res$6 = tok$1$q[res_bit$6] & run;
         end
-        at_iss$2 = iss_r$2$q & run;
-        at_res$2 = res_r$2$q & run;
-        iss_r$3$clock = clock;
-        iss_r$3$d = iss_r$3$q;
-        res_r$3$clock = clock;
-        res_r$3$d = res_r$3$q;
-        if (run) begin
-            if (iss$3 == 32'h1) begin
-                iss_r$3$d = take;
-            end
-            else begin
-                iss_r$3$d = t$0$q == iss$3 - 32'h1;
-            end
-            res_r$3$d = 1'b0;
-            if (view_res$3 == 0) begin
-                if (res$3 == firsts$0) begin
-                    res_r$3$d = enter$0;
-                end
-                else begin
-                    res_r$3$d = t$0$q == res$3 - 32'h1;
-                end
-            end
-            if (view_res$3 == 1) begin
-                if (res$3 == firsts$1) begin
-                    res_r$3$d = enter$1;
-                end
-                else begin
-                    res_r$3$d = t$1$q == res$3 - 32'h1;
-                end
-            end
-            if (view_res$3 == 2) begin
-                if (res$3 == firsts$2) begin
-                    res_r$3$d = enter$2;
-                end
-                else begin
-                    res_r$3$d = t$2$q == res$3 - 32'h1;
-                end
-            end
-            if (view_res$3 == 3) begin
-                if (res$3 == firsts$3) begin
-                    res_r$3$d = enter$3;
-                end
-                else begin
-                    res_r$3$d = t$3$q == res$3 - 32'h1;
-                end
-            end
-            if (view_res$3 == 4) begin
-                if (res$3 == firsts$4) begin
-                    res_r$3$d = enter$4;
-                end
-                else begin
-                    res_r$3$d = t$4$q == res$3 - 32'h1;
-                end
-            end
-            if (view_res$3 == 5) begin
-                if (res$3 == firsts$5) begin
-                    res_r$3$d = enter$5;
-                end
-                else begin
-                    res_r$3$d = t$5$q == res$3 - 32'h1;
-                end
-            end
+        if (view_res$6 == 2) begin
+            at_res$6 = tok$2$q[res_bit$6] & run;
         end
-        at_iss$3 = iss_r$3$q & run;
-        at_res$3 = res_r$3$q & run;
-        iss_r$4$clock = clock;
-        iss_r$4$d = iss_r$4$q;
-        res_r$4$clock = clock;
-        res_r$4$d = res_r$4$q;
-        if (run) begin
-            if (iss$4 == 32'h1) begin
-                iss_r$4$d = take;
-            end
-            else begin
-                iss_r$4$d = t$0$q == iss$4 - 32'h1;
-            end
-            res_r$4$d = 1'b0;
-            if (view_res$4 == 0) begin
-                if (res$4 == firsts$0) begin
-                    res_r$4$d = enter$0;
-                end
-                else begin
-                    res_r$4$d = t$0$q == res$4 - 32'h1;
-                end
-            end
-            if (view_res$4 == 1) begin
-                if (res$4 == firsts$1) begin
-                    res_r$4$d = enter$1;
-                end
-                else begin
-                    res_r$4$d = t$1$q == res$4 - 32'h1;
-                end
-            end
-            if (view_res$4 == 2) begin
-                if (res$4 == firsts$2) begin
-                    res_r$4$d = enter$2;
-                end
-                else begin
-                    res_r$4$d = t$2$q == res$4 - 32'h1;
-                end
-            end
-            if (view_res$4 == 3) begin
-                if (res$4 == firsts$3) begin
-                    res_r$4$d = enter$3;
-                end
-                else begin
-                    res_r$4$d = t$3$q == res$4 - 32'h1;
-                end
-            end
-            if (view_res$4 == 4) begin
-                if (res$4 == firsts$4) begin
-                    res_r$4$d = enter$4;
-                end
-                else begin
-                    res_r$4$d = t$4$q == res$4 - 32'h1;
-                end
-            end
-            if (view_res$4 == 5) begin
-                if (res$4 == firsts$5) begin
-                    res_r$4$d = enter$5;
-                end
-                else begin
-                    res_r$4$d = t$5$q == res$4 - 32'h1;
-                end
-            end
+        if (view_res$6 == 3) begin
+            at_res$6 = tok$3$q[res_bit$6] & run;
         end
-        at_iss$4 = iss_r$4$q & run;
-        at_res$4 = res_r$4$q & run;
-        iss_r$5$clock = clock;
-        iss_r$5$d = iss_r$5$q;
-        res_r$5$clock = clock;
-        res_r$5$d = res_r$5$q;
-        if (run) begin
-            if (iss$5 == 32'h1) begin
-                iss_r$5$d = take;
-            end
-            else begin
-                iss_r$5$d = t$0$q == iss$5 - 32'h1;
-            end
-            res_r$5$d = 1'b0;
-            if (view_res$5 == 0) begin
-                if (res$5 == firsts$0) begin
-                    res_r$5$d = enter$0;
-                end
-                else begin
-                    res_r$5$d = t$0$q == res$5 - 32'h1;
-                end
-            end
-            if (view_res$5 == 1) begin
-                if (res$5 == firsts$1) begin
-                    res_r$5$d = enter$1;
-                end
-                else begin
-                    res_r$5$d = t$1$q == res$5 - 32'h1;
-                end
-            end
-            if (view_res$5 == 2) begin
-                if (res$5 == firsts$2) begin
-                    res_r$5$d = enter$2;
-                end
-                else begin
-                    res_r$5$d = t$2$q == res$5 - 32'h1;
-                end
-            end
-            if (view_res$5 == 3) begin
-                if (res$5 == firsts$3) begin
-                    res_r$5$d = enter$3;
-                end
-                else begin
-                    res_r$5$d = t$3$q == res$5 - 32'h1;
-                end
-            end
-            if (view_res$5 == 4) begin
-                if (res$5 == firsts$4) begin
-                    res_r$5$d = enter$4;
-                end
-                else begin
-                    res_r$5$d = t$4$q == res$5 - 32'h1;
-                end
-            end
-            if (view_res$5 == 5) begin
-                if (res$5 == firsts$5) begin
-                    res_r$5$d = enter$5;
-                end
-                else begin
-                    res_r$5$d = t$5$q == res$5 - 32'h1;
-                end
-            end
+        if (view_res$6 == 4) begin
+            at_res$6 = tok$4$q[res_bit$6] & run;
         end
-        at_iss$5 = iss_r$5$q & run;
-        at_res$5 = res_r$5$q & run;
-        iss_r$6$clock = clock;
-        iss_r$6$d = iss_r$6$q;
-        res_r$6$clock = clock;
-        res_r$6$d = res_r$6$q;
-        if (run) begin
-            if (iss$6 == 32'h1) begin
-                iss_r$6$d = take;
-            end
-            else begin
-                iss_r$6$d = t$0$q == iss$6 - 32'h1;
-            end
-            res_r$6$d = 1'b0;
-            if (view_res$6 == 0) begin
-                if (res$6 == firsts$0) begin
-                    res_r$6$d = enter$0;
-                end
-                else begin
-                    res_r$6$d = t$0$q == res$6 - 32'h1;
-                end
-            end
-            if (view_res$6 == 1) begin
-                if (res$6 == firsts$1) begin
-                    res_r$6$d = enter$1;
-                end
-                else begin
-                    res_r$6$d = t$1$q == res$6 - 32'h1;
-                end
-            end
-            if (view_res$6 == 2) begin
-                if (res$6 == firsts$2) begin
-                    res_r$6$d = enter$2;
-                end
-                else begin
-                    res_r$6$d = t$2$q == res$6 - 32'h1;
-                end
-            end
-            if (view_res$6 == 3) begin
-                if (res$6 == firsts$3) begin
-                    res_r$6$d = enter$3;
-                end
-                else begin
-                    res_r$6$d = t$3$q == res$6 - 32'h1;
-                end
-            end
-            if (view_res$6 == 4) begin
-                if (res$6 == firsts$4) begin
-                    res_r$6$d = enter$4;
-                end
-                else begin
-                    res_r$6$d = t$4$q == res$6 - 32'h1;
-                end
-            end
-            if (view_res$6 == 5) begin
-                if (res$6 == firsts$5) begin
-                    res_r$6$d = enter$5;
-                end
-                else begin
-                    res_r$6$d = t$5$q == res$6 - 32'h1;
-                end
-            end
+        if (view_res$6 == 5) begin
+            at_res$6 = tok$5$q[res_bit$6] & run;
+        end
+        at_handover = 1'b0;
+        if (view_handover == 0) begin
+            at_handover = tok$0$q[handover_bit] & run;
+        end
+        if (view_handover == 1) begin
+            at_handover = tok$1$q[handover_bit] & run;
+        end
+        if (view_handover == 2) begin
+            at_handover = tok$2$q[handover_bit] & run;
+        end
+        if (view_handover == 3) begin
+            at_handover = tok$3$q[handover_bit] & run;
+        end
+        if (view_handover == 4) begin
+            at_handover = tok$4$q[handover_bit] & run;
+        end
+        if (view_handover == 5) begin
+            at_handover = tok$5$q[handover_bit] & run;
+        end
+        busy_n = 1'b0;
+        if (|tok_n$0) begin
+            busy_n = 1'b1;
+        end
+        if (|tok_n$1) begin
+            busy_n = 1'b1;
+        end
+        if (|tok_n$2) begin
+            busy_n = 1'b1;
+        end
+        if (|tok_n$3) begin
+            busy_n = 1'b1;
+        end
+        if (|tok_n$4) begin
+            busy_n = 1'b1;
+        end
+        if (|tok_n$5) begin
+            busy_n = 1'b1;
         end
-        at_iss$6 = iss_r$6$q & run;
-        at_res$6 = res_r$6$q & run;
-        at_handover = handover_r$q & run;
-        busy_n = busy_r$q;
         off_grid_n = off_grid_r$q;
         if (run) begin
-            if (normalise == 32'h1) begin
-                norm_r$d = take;
-            end
-            else begin
-                norm_r$d = t$0$q == normalise - 32'h1;
-            end
-            handover_r$d = 1'b0;
-            if (view_handover == 0) begin
-                if (handover == firsts$0) begin
-                    handover_r$d = enter$0;
-                end
-                else begin
-                    handover_r$d = t$0$q == handover - 32'h1;
-                end
-            end
-            if (view_handover == 1) begin
-                if (handover == firsts$1) begin
-                    handover_r$d = enter$1;
-                end
-                else begin
-                    handover_r$d = t$1$q == handover - 32'h1;
-                end
-            end
-            if (view_handover == 2) begin
-                if (handover == firsts$2) begin
-                    handover_r$d = enter$2;
-                end
-                else begin
-                    handover_r$d = t$2$q == handover - 32'h1;
-                end
-            end
-            if (view_handover == 3) begin
-                if (handover == firsts$3) begin
-                    handover_r$d = enter$3;
-                end
-                else begin
-                    handover_r$d = t$3$q == handover - 32'h1;
-                end
-            end
-            if (view_handover == 4) begin
-                if (handover == firsts$4) begin
-                    handover_r$d = enter$4;
-                end
-                else begin
-                    handover_r$d = t$4$q == handover - 32'h1;
-                end
-            end
-            if (view_handover == 5) begin
-                if (handover == firsts$5) begin
-                    handover_r$d = enter$5;
-                end
-                else begin
-                    handover_r$d = t$5$q == handover - 32'h1;
-                end
-            end
-            if (last == firsts$5) begin
-                valid_r$d = enter$5;
-            end
-            else begin
-                valid_r$d = t$5$q == last - 32'h1;
-            end
-            busy_n = 1'b0;
-            if (enter$0 | ((t$0$q != 32'h0) & ~end_r$0$q)) begin
-                busy_n = 1'b1;
-            end
-            if (enter$1 | ((t$1$q != 32'h0) & ~end_r$1$q)) begin
-                busy_n = 1'b1;
-            end
-            if (enter$2 | ((t$2$q != 32'h0) & ~end_r$2$q)) begin
-                busy_n = 1'b1;
-            end
-            if (enter$3 | ((t$3$q != 32'h0) & ~end_r$3$q)) begin
-                busy_n = 1'b1;
-            end
-            if (enter$4 | ((t$4$q != 32'h0) & ~end_r$4$q)) begin
-                busy_n = 1'b1;
-            end
-            if (enter$5 | ((t$5$q != 32'h0) & ~end_r$5$q)) begin
-                busy_n = 1'b1;
-            end
             off_grid_n = take | (phase$q != ii_m1);
         end
         busy_r$d = busy_n;
@@ -13889,3162 +8191,3162 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             op_q$11 = q$17$q;
         end
         mul$0$en = run;
-        if ((lane$0 == 0) & act_r$0$q) begin
+        if ((lane$0 == 0) & act$0) begin
             mul$0$a = g0$kdx$0[(32'h0)+:(57)];
             mul$0$b = g0$kdy$1[(32'h0)+:(19)];
         end
-        if ((lane$1 == 0) & act_r$1$q) begin
+        if ((lane$1 == 0) & act$1) begin
             mul$0$a = g0$kdx$1[(32'h0)+:(57)];
             mul$0$b = g0$kdy$0[(32'h0)+:(19)];
         end
-        if ((lane$0 == 0) & add_r$0$q) begin
+        if ((lane$0 == 0) & add$0) begin
             pa$0 = mul$0$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 0) & add_r$1$q) begin
+        if ((lane$1 == 0) & add$1) begin
             pa$1 = mul$0$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 0) & act_r$2$q) begin
+        if ((lane$2 == 0) & act$2) begin
             mul$0$a = g0$edy$0;
             mul$0$b = g0$xf$0;
         end
-        if ((lane$3 == 0) & act_r$3$q) begin
+        if ((lane$3 == 0) & act$3) begin
             mul$0$a = g0$edx$0[(32'h0)+:(57)];
             mul$0$b = g0$toff$0;
         end
-        if ((lane$4 == 0) & act_r$4$q) begin
+        if ((lane$4 == 0) & act$4) begin
             mul$0$a = g0$edy$1;
             mul$0$b = g0$xf$1;
         end
-        if ((lane$5 == 0) & act_r$5$q) begin
+        if ((lane$5 == 0) & act$5) begin
             mul$0$a = g0$edx$1[(32'h0)+:(57)];
             mul$0$b = g0$toff$1;
         end
-        if ((lane$6 == 0) & act_r$6$q) begin
+        if ((lane$6 == 0) & act$6) begin
             mul$0$a = g0$edy$2;
             mul$0$b = g0$xf$2;
         end
-        if ((lane$7 == 0) & act_r$7$q) begin
+        if ((lane$7 == 0) & act$7) begin
             mul$0$a = g0$edx$2[(32'h0)+:(57)];
             mul$0$b = g0$toff$2;
         end
-        if ((lane$2 == 0) & add_r$2$q) begin
+        if ((lane$2 == 0) & add$2) begin
             pn$0 = mul$0$p;
         end
-        if ((lane$3 == 0) & add_r$3$q) begin
+        if ((lane$3 == 0) & add$3) begin
             pn$1 = mul$0$p;
         end
-        if ((lane$4 == 0) & add_r$4$q) begin
+        if ((lane$4 == 0) & add$4) begin
             pn$2 = mul$0$p;
         end
-        if ((lane$5 == 0) & add_r$5$q) begin
+        if ((lane$5 == 0) & add$5) begin
             pn$3 = mul$0$p;
         end
-        if ((lane$6 == 0) & add_r$6$q) begin
+        if ((lane$6 == 0) & add$6) begin
             pn$4 = mul$0$p;
         end
-        if ((lane$7 == 0) & add_r$7$q) begin
+        if ((lane$7 == 0) & add$7) begin
             pn$5 = mul$0$p;
         end
-        if ((lane$8 == 0) & act_r$8$q) begin
+        if ((lane$8 == 0) & act$8) begin
             mul$0$a = mant_s$q;
             mul$0$b = op_e$0;
         end
-        if ((lane$8 == 0) & add_r$8$q) begin
+        if ((lane$8 == 0) & add$8) begin
             pe$0 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 0) & act_r$9$q) begin
+        if ((lane$9 == 0) & act$9) begin
             mul$0$a = mant_s$q;
             mul$0$b = op_e$1;
         end
-        if ((lane$9 == 0) & add_r$9$q) begin
+        if ((lane$9 == 0) & add$9) begin
             pe$1 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 0) & act_r$10$q) begin
+        if ((lane$10 == 0) & act$10) begin
             mul$0$a = mant_s$q;
             mul$0$b = op_e$2;
         end
-        if ((lane$10 == 0) & add_r$10$q) begin
+        if ((lane$10 == 0) & add$10) begin
             pe$2 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 0) & act_r$11$q) begin
+        if ((lane$11 == 0) & act$11) begin
             mul$0$a = mant_s$q;
             mul$0$b = op_e$3;
         end
-        if ((lane$11 == 0) & add_r$11$q) begin
+        if ((lane$11 == 0) & add$11) begin
             pe$3 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 0) & act_r$12$q) begin
+        if ((lane$12 == 0) & act$12) begin
             mul$0$a = p$3$q;
             mul$0$b = op_g$0;
         end
-        if ((lane$13 == 0) & act_r$13$q) begin
+        if ((lane$13 == 0) & act$13) begin
             mul$0$a = p$2$q;
             mul$0$b = op_g$1;
         end
-        if ((lane$14 == 0) & act_r$14$q) begin
+        if ((lane$14 == 0) & act$14) begin
             mul$0$a = p$0$q;
             mul$0$b = op_g$2;
         end
-        if ((lane$15 == 0) & act_r$15$q) begin
+        if ((lane$15 == 0) & act$15) begin
             mul$0$a = p$1$q;
             mul$0$b = op_g$3;
         end
-        if ((lane$16 == 0) & act_r$16$q) begin
+        if ((lane$16 == 0) & act$16) begin
             mul$0$a = p$3$q;
             mul$0$b = op_g$4;
         end
-        if ((lane$17 == 0) & act_r$17$q) begin
+        if ((lane$17 == 0) & act$17) begin
             mul$0$a = p$2$q;
             mul$0$b = op_g$5;
         end
-        if ((lane$18 == 0) & act_r$18$q) begin
+        if ((lane$18 == 0) & act$18) begin
             mul$0$a = p$0$q;
             mul$0$b = op_g$6;
         end
-        if ((lane$19 == 0) & act_r$19$q) begin
+        if ((lane$19 == 0) & act$19) begin
             mul$0$a = p$1$q;
             mul$0$b = op_g$7;
         end
-        if ((lane$20 == 0) & act_r$20$q) begin
+        if ((lane$20 == 0) & act$20) begin
             mul$0$a = p$3$q;
             mul$0$b = op_g$8;
         end
-        if ((lane$21 == 0) & act_r$21$q) begin
+        if ((lane$21 == 0) & act$21) begin
             mul$0$a = p$2$q;
             mul$0$b = op_g$9;
         end
-        if ((lane$22 == 0) & act_r$22$q) begin
+        if ((lane$22 == 0) & act$22) begin
             mul$0$a = p$0$q;
             mul$0$b = op_g$10;
         end
-        if ((lane$23 == 0) & act_r$23$q) begin
+        if ((lane$23 == 0) & act$23) begin
             mul$0$a = p$1$q;
             mul$0$b = op_g$11;
         end
-        if ((lane$24 == 0) & act_r$24$q) begin
+        if ((lane$24 == 0) & act$24) begin
             mul$0$a = p$3$q;
             mul$0$b = op_g$12;
         end
-        if ((lane$25 == 0) & act_r$25$q) begin
+        if ((lane$25 == 0) & act$25) begin
             mul$0$a = p$2$q;
             mul$0$b = op_g$13;
         end
-        if ((lane$26 == 0) & act_r$26$q) begin
+        if ((lane$26 == 0) & act$26) begin
             mul$0$a = p$0$q;
             mul$0$b = op_g$14;
         end
-        if ((lane$27 == 0) & act_r$27$q) begin
+        if ((lane$27 == 0) & act$27) begin
             mul$0$a = p$1$q;
             mul$0$b = op_g$15;
         end
-        if ((lane$12 == 0) & add_r$12$q) begin
+        if ((lane$12 == 0) & add$12) begin
             pg$0 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 0) & add_r$13$q) begin
+        if ((lane$13 == 0) & add$13) begin
             pg$1 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 0) & add_r$14$q) begin
+        if ((lane$14 == 0) & add$14) begin
             pg$2 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 0) & add_r$15$q) begin
+        if ((lane$15 == 0) & add$15) begin
             pg$3 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 0) & add_r$16$q) begin
+        if ((lane$16 == 0) & add$16) begin
             pg$4 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 0) & add_r$17$q) begin
+        if ((lane$17 == 0) & add$17) begin
             pg$5 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 0) & add_r$18$q) begin
+        if ((lane$18 == 0) & add$18) begin
             pg$6 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 0) & add_r$19$q) begin
+        if ((lane$19 == 0) & add$19) begin
             pg$7 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 0) & add_r$20$q) begin
+        if ((lane$20 == 0) & add$20) begin
             pg$8 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 0) & add_r$21$q) begin
+        if ((lane$21 == 0) & add$21) begin
             pg$9 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 0) & add_r$22$q) begin
+        if ((lane$22 == 0) & add$22) begin
             pg$10 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 0) & add_r$23$q) begin
+        if ((lane$23 == 0) & add$23) begin
             pg$11 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 0) & add_r$24$q) begin
+        if ((lane$24 == 0) & add$24) begin
             pg$12 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 0) & add_r$25$q) begin
+        if ((lane$25 == 0) & add$25) begin
             pg$13 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 0) & add_r$26$q) begin
+        if ((lane$26 == 0) & add$26) begin
             pg$14 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 0) & add_r$27$q) begin
+        if ((lane$27 == 0) & add$27) begin
             pg$15 = mul$0$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 0) & act_r$28$q) begin
+        if ((lane$28 == 0) & act$28) begin
             mul$0$a = ddx$0;
             mul$0$b = op_s$0;
         end
-        if ((lane$29 == 0) & act_r$29$q) begin
+        if ((lane$29 == 0) & act$29) begin
             mul$0$a = ddy$0;
             mul$0$b = op_s$1;
         end
-        if ((lane$30 == 0) & act_r$30$q) begin
+        if ((lane$30 == 0) & act$30) begin
             mul$0$a = ddx$0;
             mul$0$b = op_q$0;
         end
-        if ((lane$31 == 0) & act_r$31$q) begin
+        if ((lane$31 == 0) & act$31) begin
             mul$0$a = ddx$1;
             mul$0$b = op_s$2;
         end
-        if ((lane$32 == 0) & act_r$32$q) begin
+        if ((lane$32 == 0) & act$32) begin
             mul$0$a = ddy$1;
             mul$0$b = op_s$3;
         end
-        if ((lane$33 == 0) & act_r$33$q) begin
+        if ((lane$33 == 0) & act$33) begin
             mul$0$a = ddx$1;
             mul$0$b = op_q$1;
         end
-        if ((lane$34 == 0) & act_r$34$q) begin
+        if ((lane$34 == 0) & act$34) begin
             mul$0$a = ddx$2;
             mul$0$b = op_s$4;
         end
-        if ((lane$35 == 0) & act_r$35$q) begin
+        if ((lane$35 == 0) & act$35) begin
             mul$0$a = ddy$2;
             mul$0$b = op_s$5;
         end
-        if ((lane$36 == 0) & act_r$36$q) begin
+        if ((lane$36 == 0) & act$36) begin
             mul$0$a = ddx$2;
             mul$0$b = op_q$2;
         end
-        if ((lane$37 == 0) & act_r$37$q) begin
+        if ((lane$37 == 0) & act$37) begin
             mul$0$a = ddx$3;
             mul$0$b = op_s$6;
         end
-        if ((lane$38 == 0) & act_r$38$q) begin
+        if ((lane$38 == 0) & act$38) begin
             mul$0$a = ddy$3;
             mul$0$b = op_s$7;
         end
-        if ((lane$39 == 0) & act_r$39$q) begin
+        if ((lane$39 == 0) & act$39) begin
             mul$0$a = ddx$3;
             mul$0$b = op_q$3;
         end
-        if ((lane$40 == 0) & act_r$40$q) begin
+        if ((lane$40 == 0) & act$40) begin
             mul$0$a = ddx$0;
             mul$0$b = op_s$8;
         end
-        if ((lane$41 == 0) & act_r$41$q) begin
+        if ((lane$41 == 0) & act$41) begin
             mul$0$a = ddy$0;
             mul$0$b = op_s$9;
         end
-        if ((lane$42 == 0) & act_r$42$q) begin
+        if ((lane$42 == 0) & act$42) begin
             mul$0$a = ddx$0;
             mul$0$b = op_q$4;
         end
-        if ((lane$43 == 0) & act_r$43$q) begin
+        if ((lane$43 == 0) & act$43) begin
             mul$0$a = ddx$1;
             mul$0$b = op_s$10;
         end
-        if ((lane$44 == 0) & act_r$44$q) begin
+        if ((lane$44 == 0) & act$44) begin
             mul$0$a = ddy$1;
             mul$0$b = op_s$11;
         end
-        if ((lane$45 == 0) & act_r$45$q) begin
+        if ((lane$45 == 0) & act$45) begin
             mul$0$a = ddx$1;
             mul$0$b = op_q$5;
         end
-        if ((lane$46 == 0) & act_r$46$q) begin
+        if ((lane$46 == 0) & act$46) begin
             mul$0$a = ddx$2;
             mul$0$b = op_s$12;
         end
-        if ((lane$47 == 0) & act_r$47$q) begin
+        if ((lane$47 == 0) & act$47) begin
             mul$0$a = ddy$2;
             mul$0$b = op_s$13;
         end
-        if ((lane$48 == 0) & act_r$48$q) begin
+        if ((lane$48 == 0) & act$48) begin
             mul$0$a = ddx$2;
             mul$0$b = op_q$6;
         end
-        if ((lane$49 == 0) & act_r$49$q) begin
+        if ((lane$49 == 0) & act$49) begin
             mul$0$a = ddx$3;
             mul$0$b = op_s$14;
         end
-        if ((lane$50 == 0) & act_r$50$q) begin
+        if ((lane$50 == 0) & act$50) begin
             mul$0$a = ddy$3;
             mul$0$b = op_s$15;
         end
-        if ((lane$51 == 0) & act_r$51$q) begin
+        if ((lane$51 == 0) & act$51) begin
             mul$0$a = ddx$3;
             mul$0$b = op_q$7;
         end
-        if ((lane$52 == 0) & act_r$52$q) begin
+        if ((lane$52 == 0) & act$52) begin
             mul$0$a = ddx$0;
             mul$0$b = op_s$16;
         end
-        if ((lane$53 == 0) & act_r$53$q) begin
+        if ((lane$53 == 0) & act$53) begin
             mul$0$a = ddy$0;
             mul$0$b = op_s$17;
         end
-        if ((lane$54 == 0) & act_r$54$q) begin
+        if ((lane$54 == 0) & act$54) begin
             mul$0$a = ddx$0;
             mul$0$b = op_q$8;
         end
-        if ((lane$55 == 0) & act_r$55$q) begin
+        if ((lane$55 == 0) & act$55) begin
             mul$0$a = ddx$1;
             mul$0$b = op_s$18;
         end
-        if ((lane$56 == 0) & act_r$56$q) begin
+        if ((lane$56 == 0) & act$56) begin
             mul$0$a = ddy$1;
             mul$0$b = op_s$19;
         end
-        if ((lane$57 == 0) & act_r$57$q) begin
+        if ((lane$57 == 0) & act$57) begin
             mul$0$a = ddx$1;
             mul$0$b = op_q$9;
         end
-        if ((lane$58 == 0) & act_r$58$q) begin
+        if ((lane$58 == 0) & act$58) begin
             mul$0$a = ddx$2;
             mul$0$b = op_s$20;
         end
-        if ((lane$59 == 0) & act_r$59$q) begin
+        if ((lane$59 == 0) & act$59) begin
             mul$0$a = ddy$2;
             mul$0$b = op_s$21;
         end
-        if ((lane$60 == 0) & act_r$60$q) begin
+        if ((lane$60 == 0) & act$60) begin
             mul$0$a = ddx$2;
             mul$0$b = op_q$10;
         end
-        if ((lane$61 == 0) & act_r$61$q) begin
+        if ((lane$61 == 0) & act$61) begin
             mul$0$a = ddx$3;
             mul$0$b = op_s$22;
         end
-        if ((lane$62 == 0) & act_r$62$q) begin
+        if ((lane$62 == 0) & act$62) begin
             mul$0$a = ddy$3;
             mul$0$b = op_s$23;
         end
-        if ((lane$63 == 0) & act_r$63$q) begin
+        if ((lane$63 == 0) & act$63) begin
             mul$0$a = ddx$3;
             mul$0$b = op_q$11;
         end
-        if ((lane$28 == 0) & add_r$28$q) begin
+        if ((lane$28 == 0) & add$28) begin
             ps$0 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 0) & add_r$29$q) begin
+        if ((lane$29 == 0) & add$29) begin
             ps$1 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 0) & add_r$30$q) begin
+        if ((lane$30 == 0) & add$30) begin
             ps$2 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$31 == 0) & add_r$31$q) begin
+        if ((lane$31 == 0) & add$31) begin
             ps$3 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 0) & add_r$32$q) begin
+        if ((lane$32 == 0) & add$32) begin
             ps$4 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 0) & add_r$33$q) begin
+        if ((lane$33 == 0) & add$33) begin
             ps$5 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$34 == 0) & add_r$34$q) begin
+        if ((lane$34 == 0) & add$34) begin
             ps$6 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 0) & add_r$35$q) begin
+        if ((lane$35 == 0) & add$35) begin
             ps$7 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 0) & add_r$36$q) begin
+        if ((lane$36 == 0) & add$36) begin
             ps$8 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$37 == 0) & add_r$37$q) begin
+        if ((lane$37 == 0) & add$37) begin
             ps$9 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 0) & add_r$38$q) begin
+        if ((lane$38 == 0) & add$38) begin
             ps$10 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 0) & add_r$39$q) begin
+        if ((lane$39 == 0) & add$39) begin
             ps$11 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$40 == 0) & add_r$40$q) begin
+        if ((lane$40 == 0) & add$40) begin
             ps$12 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 0) & add_r$41$q) begin
+        if ((lane$41 == 0) & add$41) begin
             ps$13 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 0) & add_r$42$q) begin
+        if ((lane$42 == 0) & add$42) begin
             ps$14 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$43 == 0) & add_r$43$q) begin
+        if ((lane$43 == 0) & add$43) begin
             ps$15 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 0) & add_r$44$q) begin
+        if ((lane$44 == 0) & add$44) begin
             ps$16 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 0) & add_r$45$q) begin
+        if ((lane$45 == 0) & add$45) begin
             ps$17 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$46 == 0) & add_r$46$q) begin
+        if ((lane$46 == 0) & add$46) begin
             ps$18 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 0) & add_r$47$q) begin
+        if ((lane$47 == 0) & add$47) begin
             ps$19 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 0) & add_r$48$q) begin
+        if ((lane$48 == 0) & add$48) begin
             ps$20 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$49 == 0) & add_r$49$q) begin
+        if ((lane$49 == 0) & add$49) begin
             ps$21 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 0) & add_r$50$q) begin
+        if ((lane$50 == 0) & add$50) begin
             ps$22 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 0) & add_r$51$q) begin
+        if ((lane$51 == 0) & add$51) begin
             ps$23 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$52 == 0) & add_r$52$q) begin
+        if ((lane$52 == 0) & add$52) begin
             ps$24 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 0) & add_r$53$q) begin
+        if ((lane$53 == 0) & add$53) begin
             ps$25 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 0) & add_r$54$q) begin
+        if ((lane$54 == 0) & add$54) begin
             ps$26 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$55 == 0) & add_r$55$q) begin
+        if ((lane$55 == 0) & add$55) begin
             ps$27 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 0) & add_r$56$q) begin
+        if ((lane$56 == 0) & add$56) begin
             ps$28 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 0) & add_r$57$q) begin
+        if ((lane$57 == 0) & add$57) begin
             ps$29 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$58 == 0) & add_r$58$q) begin
+        if ((lane$58 == 0) & add$58) begin
             ps$30 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 0) & add_r$59$q) begin
+        if ((lane$59 == 0) & add$59) begin
             ps$31 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 0) & add_r$60$q) begin
+        if ((lane$60 == 0) & add$60) begin
             ps$32 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$61 == 0) & add_r$61$q) begin
+        if ((lane$61 == 0) & add$61) begin
             ps$33 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 0) & add_r$62$q) begin
+        if ((lane$62 == 0) & add$62) begin
             ps$34 = mul$0$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 0) & add_r$63$q) begin
+        if ((lane$63 == 0) & add$63) begin
             ps$35 = mul$0$p[(32'h0)+:(40)];
         end
         mul$1$en = run;
-        if ((lane$0 == 1) & act_r$0$q) begin
+        if ((lane$0 == 1) & act$0) begin
             mul$1$a = g0$kdx$0[(32'h0)+:(57)];
             mul$1$b = g0$kdy$1[(32'h0)+:(19)];
         end
-        if ((lane$1 == 1) & act_r$1$q) begin
+        if ((lane$1 == 1) & act$1) begin
             mul$1$a = g0$kdx$1[(32'h0)+:(57)];
             mul$1$b = g0$kdy$0[(32'h0)+:(19)];
         end
-        if ((lane$0 == 1) & add_r$0$q) begin
+        if ((lane$0 == 1) & add$0) begin
             pa$0 = mul$1$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 1) & add_r$1$q) begin
+        if ((lane$1 == 1) & add$1) begin
             pa$1 = mul$1$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 1) & act_r$2$q) begin
+        if ((lane$2 == 1) & act$2) begin
             mul$1$a = g0$edy$0;
             mul$1$b = g0$xf$0;
         end
-        if ((lane$3 == 1) & act_r$3$q) begin
+        if ((lane$3 == 1) & act$3) begin
             mul$1$a = g0$edx$0[(32'h0)+:(57)];
             mul$1$b = g0$toff$0;
         end
-        if ((lane$4 == 1) & act_r$4$q) begin
+        if ((lane$4 == 1) & act$4) begin
             mul$1$a = g0$edy$1;
             mul$1$b = g0$xf$1;
         end
-        if ((lane$5 == 1) & act_r$5$q) begin
+        if ((lane$5 == 1) & act$5) begin
             mul$1$a = g0$edx$1[(32'h0)+:(57)];
             mul$1$b = g0$toff$1;
         end
-        if ((lane$6 == 1) & act_r$6$q) begin
+        if ((lane$6 == 1) & act$6) begin
             mul$1$a = g0$edy$2;
             mul$1$b = g0$xf$2;
         end
-        if ((lane$7 == 1) & act_r$7$q) begin
+        if ((lane$7 == 1) & act$7) begin
             mul$1$a = g0$edx$2[(32'h0)+:(57)];
             mul$1$b = g0$toff$2;
         end
-        if ((lane$2 == 1) & add_r$2$q) begin
+        if ((lane$2 == 1) & add$2) begin
             pn$0 = mul$1$p;
         end
-        if ((lane$3 == 1) & add_r$3$q) begin
+        if ((lane$3 == 1) & add$3) begin
             pn$1 = mul$1$p;
         end
-        if ((lane$4 == 1) & add_r$4$q) begin
+        if ((lane$4 == 1) & add$4) begin
             pn$2 = mul$1$p;
         end
-        if ((lane$5 == 1) & add_r$5$q) begin
+        if ((lane$5 == 1) & add$5) begin
             pn$3 = mul$1$p;
         end
-        if ((lane$6 == 1) & add_r$6$q) begin
+        if ((lane$6 == 1) & add$6) begin
             pn$4 = mul$1$p;
         end
-        if ((lane$7 == 1) & add_r$7$q) begin
+        if ((lane$7 == 1) & add$7) begin
             pn$5 = mul$1$p;
         end
-        if ((lane$8 == 1) & act_r$8$q) begin
+        if ((lane$8 == 1) & act$8) begin
             mul$1$a = mant_s$q;
             mul$1$b = op_e$0;
         end
-        if ((lane$8 == 1) & add_r$8$q) begin
+        if ((lane$8 == 1) & add$8) begin
             pe$0 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 1) & act_r$9$q) begin
+        if ((lane$9 == 1) & act$9) begin
             mul$1$a = mant_s$q;
             mul$1$b = op_e$1;
         end
-        if ((lane$9 == 1) & add_r$9$q) begin
+        if ((lane$9 == 1) & add$9) begin
             pe$1 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 1) & act_r$10$q) begin
+        if ((lane$10 == 1) & act$10) begin
             mul$1$a = mant_s$q;
             mul$1$b = op_e$2;
         end
-        if ((lane$10 == 1) & add_r$10$q) begin
+        if ((lane$10 == 1) & add$10) begin
             pe$2 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 1) & act_r$11$q) begin
+        if ((lane$11 == 1) & act$11) begin
             mul$1$a = mant_s$q;
             mul$1$b = op_e$3;
         end
-        if ((lane$11 == 1) & add_r$11$q) begin
+        if ((lane$11 == 1) & add$11) begin
             pe$3 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 1) & act_r$12$q) begin
+        if ((lane$12 == 1) & act$12) begin
             mul$1$a = p$3$q;
             mul$1$b = op_g$0;
         end
-        if ((lane$13 == 1) & act_r$13$q) begin
+        if ((lane$13 == 1) & act$13) begin
             mul$1$a = p$2$q;
             mul$1$b = op_g$1;
         end
-        if ((lane$14 == 1) & act_r$14$q) begin
+        if ((lane$14 == 1) & act$14) begin
             mul$1$a = p$0$q;
             mul$1$b = op_g$2;
         end
-        if ((lane$15 == 1) & act_r$15$q) begin
+        if ((lane$15 == 1) & act$15) begin
             mul$1$a = p$1$q;
             mul$1$b = op_g$3;
         end
-        if ((lane$16 == 1) & act_r$16$q) begin
+        if ((lane$16 == 1) & act$16) begin
             mul$1$a = p$3$q;
             mul$1$b = op_g$4;
         end
-        if ((lane$17 == 1) & act_r$17$q) begin
+        if ((lane$17 == 1) & act$17) begin
             mul$1$a = p$2$q;
             mul$1$b = op_g$5;
         end
-        if ((lane$18 == 1) & act_r$18$q) begin
+        if ((lane$18 == 1) & act$18) begin
             mul$1$a = p$0$q;
             mul$1$b = op_g$6;
         end
-        if ((lane$19 == 1) & act_r$19$q) begin
+        if ((lane$19 == 1) & act$19) begin
             mul$1$a = p$1$q;
             mul$1$b = op_g$7;
         end
-        if ((lane$20 == 1) & act_r$20$q) begin
+        if ((lane$20 == 1) & act$20) begin
             mul$1$a = p$3$q;
             mul$1$b = op_g$8;
         end
-        if ((lane$21 == 1) & act_r$21$q) begin
+        if ((lane$21 == 1) & act$21) begin
             mul$1$a = p$2$q;
             mul$1$b = op_g$9;
         end
-        if ((lane$22 == 1) & act_r$22$q) begin
+        if ((lane$22 == 1) & act$22) begin
             mul$1$a = p$0$q;
             mul$1$b = op_g$10;
         end
-        if ((lane$23 == 1) & act_r$23$q) begin
+        if ((lane$23 == 1) & act$23) begin
             mul$1$a = p$1$q;
             mul$1$b = op_g$11;
         end
-        if ((lane$24 == 1) & act_r$24$q) begin
+        if ((lane$24 == 1) & act$24) begin
             mul$1$a = p$3$q;
             mul$1$b = op_g$12;
         end
-        if ((lane$25 == 1) & act_r$25$q) begin
+        if ((lane$25 == 1) & act$25) begin
             mul$1$a = p$2$q;
             mul$1$b = op_g$13;
         end
-        if ((lane$26 == 1) & act_r$26$q) begin
+        if ((lane$26 == 1) & act$26) begin
             mul$1$a = p$0$q;
             mul$1$b = op_g$14;
         end
-        if ((lane$27 == 1) & act_r$27$q) begin
+        if ((lane$27 == 1) & act$27) begin
             mul$1$a = p$1$q;
             mul$1$b = op_g$15;
         end
-        if ((lane$12 == 1) & add_r$12$q) begin
+        if ((lane$12 == 1) & add$12) begin
             pg$0 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 1) & add_r$13$q) begin
+        if ((lane$13 == 1) & add$13) begin
             pg$1 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 1) & add_r$14$q) begin
+        if ((lane$14 == 1) & add$14) begin
             pg$2 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 1) & add_r$15$q) begin
+        if ((lane$15 == 1) & add$15) begin
             pg$3 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 1) & add_r$16$q) begin
+        if ((lane$16 == 1) & add$16) begin
             pg$4 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 1) & add_r$17$q) begin
+        if ((lane$17 == 1) & add$17) begin
             pg$5 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 1) & add_r$18$q) begin
+        if ((lane$18 == 1) & add$18) begin
             pg$6 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 1) & add_r$19$q) begin
+        if ((lane$19 == 1) & add$19) begin
             pg$7 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 1) & add_r$20$q) begin
+        if ((lane$20 == 1) & add$20) begin
             pg$8 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 1) & add_r$21$q) begin
+        if ((lane$21 == 1) & add$21) begin
             pg$9 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 1) & add_r$22$q) begin
+        if ((lane$22 == 1) & add$22) begin
             pg$10 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 1) & add_r$23$q) begin
+        if ((lane$23 == 1) & add$23) begin
             pg$11 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 1) & add_r$24$q) begin
+        if ((lane$24 == 1) & add$24) begin
             pg$12 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 1) & add_r$25$q) begin
+        if ((lane$25 == 1) & add$25) begin
             pg$13 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 1) & add_r$26$q) begin
+        if ((lane$26 == 1) & add$26) begin
             pg$14 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 1) & add_r$27$q) begin
+        if ((lane$27 == 1) & add$27) begin
             pg$15 = mul$1$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 1) & act_r$28$q) begin
+        if ((lane$28 == 1) & act$28) begin
             mul$1$a = ddx$0;
             mul$1$b = op_s$0;
         end
-        if ((lane$29 == 1) & act_r$29$q) begin
+        if ((lane$29 == 1) & act$29) begin
             mul$1$a = ddy$0;
             mul$1$b = op_s$1;
         end
-        if ((lane$30 == 1) & act_r$30$q) begin
+        if ((lane$30 == 1) & act$30) begin
             mul$1$a = ddx$0;
             mul$1$b = op_q$0;
         end
-        if ((lane$31 == 1) & act_r$31$q) begin
+        if ((lane$31 == 1) & act$31) begin
             mul$1$a = ddx$1;
             mul$1$b = op_s$2;
         end
-        if ((lane$32 == 1) & act_r$32$q) begin
+        if ((lane$32 == 1) & act$32) begin
             mul$1$a = ddy$1;
             mul$1$b = op_s$3;
         end
-        if ((lane$33 == 1) & act_r$33$q) begin
+        if ((lane$33 == 1) & act$33) begin
             mul$1$a = ddx$1;
             mul$1$b = op_q$1;
         end
-        if ((lane$34 == 1) & act_r$34$q) begin
+        if ((lane$34 == 1) & act$34) begin
             mul$1$a = ddx$2;
             mul$1$b = op_s$4;
         end
-        if ((lane$35 == 1) & act_r$35$q) begin
+        if ((lane$35 == 1) & act$35) begin
             mul$1$a = ddy$2;
             mul$1$b = op_s$5;
         end
-        if ((lane$36 == 1) & act_r$36$q) begin
+        if ((lane$36 == 1) & act$36) begin
             mul$1$a = ddx$2;
             mul$1$b = op_q$2;
         end
-        if ((lane$37 == 1) & act_r$37$q) begin
+        if ((lane$37 == 1) & act$37) begin
             mul$1$a = ddx$3;
             mul$1$b = op_s$6;
         end
-        if ((lane$38 == 1) & act_r$38$q) begin
+        if ((lane$38 == 1) & act$38) begin
             mul$1$a = ddy$3;
             mul$1$b = op_s$7;
         end
-        if ((lane$39 == 1) & act_r$39$q) begin
+        if ((lane$39 == 1) & act$39) begin
             mul$1$a = ddx$3;
             mul$1$b = op_q$3;
         end
-        if ((lane$40 == 1) & act_r$40$q) begin
+        if ((lane$40 == 1) & act$40) begin
             mul$1$a = ddx$0;
             mul$1$b = op_s$8;
         end
-        if ((lane$41 == 1) & act_r$41$q) begin
+        if ((lane$41 == 1) & act$41) begin
             mul$1$a = ddy$0;
             mul$1$b = op_s$9;
         end
-        if ((lane$42 == 1) & act_r$42$q) begin
+        if ((lane$42 == 1) & act$42) begin
             mul$1$a = ddx$0;
             mul$1$b = op_q$4;
         end
-        if ((lane$43 == 1) & act_r$43$q) begin
+        if ((lane$43 == 1) & act$43) begin
             mul$1$a = ddx$1;
             mul$1$b = op_s$10;
         end
-        if ((lane$44 == 1) & act_r$44$q) begin
+        if ((lane$44 == 1) & act$44) begin
             mul$1$a = ddy$1;
             mul$1$b = op_s$11;
         end
-        if ((lane$45 == 1) & act_r$45$q) begin
+        if ((lane$45 == 1) & act$45) begin
             mul$1$a = ddx$1;
             mul$1$b = op_q$5;
         end
-        if ((lane$46 == 1) & act_r$46$q) begin
+        if ((lane$46 == 1) & act$46) begin
             mul$1$a = ddx$2;
             mul$1$b = op_s$12;
         end
-        if ((lane$47 == 1) & act_r$47$q) begin
+        if ((lane$47 == 1) & act$47) begin
             mul$1$a = ddy$2;
             mul$1$b = op_s$13;
         end
-        if ((lane$48 == 1) & act_r$48$q) begin
+        if ((lane$48 == 1) & act$48) begin
             mul$1$a = ddx$2;
             mul$1$b = op_q$6;
         end
-        if ((lane$49 == 1) & act_r$49$q) begin
+        if ((lane$49 == 1) & act$49) begin
             mul$1$a = ddx$3;
             mul$1$b = op_s$14;
         end
-        if ((lane$50 == 1) & act_r$50$q) begin
+        if ((lane$50 == 1) & act$50) begin
             mul$1$a = ddy$3;
             mul$1$b = op_s$15;
         end
-        if ((lane$51 == 1) & act_r$51$q) begin
+        if ((lane$51 == 1) & act$51) begin
             mul$1$a = ddx$3;
             mul$1$b = op_q$7;
         end
-        if ((lane$52 == 1) & act_r$52$q) begin
+        if ((lane$52 == 1) & act$52) begin
             mul$1$a = ddx$0;
             mul$1$b = op_s$16;
         end
-        if ((lane$53 == 1) & act_r$53$q) begin
+        if ((lane$53 == 1) & act$53) begin
             mul$1$a = ddy$0;
             mul$1$b = op_s$17;
         end
-        if ((lane$54 == 1) & act_r$54$q) begin
+        if ((lane$54 == 1) & act$54) begin
             mul$1$a = ddx$0;
             mul$1$b = op_q$8;
         end
-        if ((lane$55 == 1) & act_r$55$q) begin
+        if ((lane$55 == 1) & act$55) begin
             mul$1$a = ddx$1;
             mul$1$b = op_s$18;
         end
-        if ((lane$56 == 1) & act_r$56$q) begin
+        if ((lane$56 == 1) & act$56) begin
             mul$1$a = ddy$1;
             mul$1$b = op_s$19;
         end
-        if ((lane$57 == 1) & act_r$57$q) begin
+        if ((lane$57 == 1) & act$57) begin
             mul$1$a = ddx$1;
             mul$1$b = op_q$9;
         end
-        if ((lane$58 == 1) & act_r$58$q) begin
+        if ((lane$58 == 1) & act$58) begin
             mul$1$a = ddx$2;
             mul$1$b = op_s$20;
         end
-        if ((lane$59 == 1) & act_r$59$q) begin
+        if ((lane$59 == 1) & act$59) begin
             mul$1$a = ddy$2;
             mul$1$b = op_s$21;
         end
-        if ((lane$60 == 1) & act_r$60$q) begin
+        if ((lane$60 == 1) & act$60) begin
             mul$1$a = ddx$2;
             mul$1$b = op_q$10;
         end
-        if ((lane$61 == 1) & act_r$61$q) begin
+        if ((lane$61 == 1) & act$61) begin
             mul$1$a = ddx$3;
             mul$1$b = op_s$22;
         end
-        if ((lane$62 == 1) & act_r$62$q) begin
+        if ((lane$62 == 1) & act$62) begin
             mul$1$a = ddy$3;
             mul$1$b = op_s$23;
         end
-        if ((lane$63 == 1) & act_r$63$q) begin
+        if ((lane$63 == 1) & act$63) begin
             mul$1$a = ddx$3;
             mul$1$b = op_q$11;
         end
-        if ((lane$28 == 1) & add_r$28$q) begin
+        if ((lane$28 == 1) & add$28) begin
             ps$0 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 1) & add_r$29$q) begin
+        if ((lane$29 == 1) & add$29) begin
             ps$1 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 1) & add_r$30$q) begin
+        if ((lane$30 == 1) & add$30) begin
             ps$2 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$31 == 1) & add_r$31$q) begin
+        if ((lane$31 == 1) & add$31) begin
             ps$3 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 1) & add_r$32$q) begin
+        if ((lane$32 == 1) & add$32) begin
             ps$4 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 1) & add_r$33$q) begin
+        if ((lane$33 == 1) & add$33) begin
             ps$5 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$34 == 1) & add_r$34$q) begin
+        if ((lane$34 == 1) & add$34) begin
             ps$6 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 1) & add_r$35$q) begin
+        if ((lane$35 == 1) & add$35) begin
             ps$7 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 1) & add_r$36$q) begin
+        if ((lane$36 == 1) & add$36) begin
             ps$8 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$37 == 1) & add_r$37$q) begin
+        if ((lane$37 == 1) & add$37) begin
             ps$9 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 1) & add_r$38$q) begin
+        if ((lane$38 == 1) & add$38) begin
             ps$10 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 1) & add_r$39$q) begin
+        if ((lane$39 == 1) & add$39) begin
             ps$11 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$40 == 1) & add_r$40$q) begin
+        if ((lane$40 == 1) & add$40) begin
             ps$12 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 1) & add_r$41$q) begin
+        if ((lane$41 == 1) & add$41) begin
             ps$13 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 1) & add_r$42$q) begin
+        if ((lane$42 == 1) & add$42) begin
             ps$14 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$43 == 1) & add_r$43$q) begin
+        if ((lane$43 == 1) & add$43) begin
             ps$15 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 1) & add_r$44$q) begin
+        if ((lane$44 == 1) & add$44) begin
             ps$16 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 1) & add_r$45$q) begin
+        if ((lane$45 == 1) & add$45) begin
             ps$17 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$46 == 1) & add_r$46$q) begin
+        if ((lane$46 == 1) & add$46) begin
             ps$18 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 1) & add_r$47$q) begin
+        if ((lane$47 == 1) & add$47) begin
             ps$19 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 1) & add_r$48$q) begin
+        if ((lane$48 == 1) & add$48) begin
             ps$20 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$49 == 1) & add_r$49$q) begin
+        if ((lane$49 == 1) & add$49) begin
             ps$21 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 1) & add_r$50$q) begin
+        if ((lane$50 == 1) & add$50) begin
             ps$22 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 1) & add_r$51$q) begin
+        if ((lane$51 == 1) & add$51) begin
             ps$23 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$52 == 1) & add_r$52$q) begin
+        if ((lane$52 == 1) & add$52) begin
             ps$24 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 1) & add_r$53$q) begin
+        if ((lane$53 == 1) & add$53) begin
             ps$25 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 1) & add_r$54$q) begin
+        if ((lane$54 == 1) & add$54) begin
             ps$26 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$55 == 1) & add_r$55$q) begin
+        if ((lane$55 == 1) & add$55) begin
             ps$27 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 1) & add_r$56$q) begin
+        if ((lane$56 == 1) & add$56) begin
             ps$28 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 1) & add_r$57$q) begin
+        if ((lane$57 == 1) & add$57) begin
             ps$29 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$58 == 1) & add_r$58$q) begin
+        if ((lane$58 == 1) & add$58) begin
             ps$30 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 1) & add_r$59$q) begin
+        if ((lane$59 == 1) & add$59) begin
             ps$31 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 1) & add_r$60$q) begin
+        if ((lane$60 == 1) & add$60) begin
             ps$32 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$61 == 1) & add_r$61$q) begin
+        if ((lane$61 == 1) & add$61) begin
             ps$33 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 1) & add_r$62$q) begin
+        if ((lane$62 == 1) & add$62) begin
             ps$34 = mul$1$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 1) & add_r$63$q) begin
+        if ((lane$63 == 1) & add$63) begin
             ps$35 = mul$1$p[(32'h0)+:(40)];
         end
         mul$2$en = run;
-        if ((lane$0 == 2) & act_r$0$q) begin
+        if ((lane$0 == 2) & act$0) begin
             mul$2$a = g0$kdx$0[(32'h0)+:(57)];
             mul$2$b = g0$kdy$1[(32'h0)+:(19)];
         end
-        if ((lane$1 == 2) & act_r$1$q) begin
+        if ((lane$1 == 2) & act$1) begin
             mul$2$a = g0$kdx$1[(32'h0)+:(57)];
             mul$2$b = g0$kdy$0[(32'h0)+:(19)];
         end
-        if ((lane$0 == 2) & add_r$0$q) begin
+        if ((lane$0 == 2) & add$0) begin
             pa$0 = mul$2$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 2) & add_r$1$q) begin
+        if ((lane$1 == 2) & add$1) begin
             pa$1 = mul$2$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 2) & act_r$2$q) begin
+        if ((lane$2 == 2) & act$2) begin
             mul$2$a = g0$edy$0;
             mul$2$b = g0$xf$0;
         end
-        if ((lane$3 == 2) & act_r$3$q) begin
+        if ((lane$3 == 2) & act$3) begin
             mul$2$a = g0$edx$0[(32'h0)+:(57)];
             mul$2$b = g0$toff$0;
         end
-        if ((lane$4 == 2) & act_r$4$q) begin
+        if ((lane$4 == 2) & act$4) begin
             mul$2$a = g0$edy$1;
             mul$2$b = g0$xf$1;
         end
-        if ((lane$5 == 2) & act_r$5$q) begin
+        if ((lane$5 == 2) & act$5) begin
             mul$2$a = g0$edx$1[(32'h0)+:(57)];
             mul$2$b = g0$toff$1;
         end
-        if ((lane$6 == 2) & act_r$6$q) begin
+        if ((lane$6 == 2) & act$6) begin
             mul$2$a = g0$edy$2;
             mul$2$b = g0$xf$2;
         end
-        if ((lane$7 == 2) & act_r$7$q) begin
+        if ((lane$7 == 2) & act$7) begin
             mul$2$a = g0$edx$2[(32'h0)+:(57)];
             mul$2$b = g0$toff$2;
         end
-        if ((lane$2 == 2) & add_r$2$q) begin
+        if ((lane$2 == 2) & add$2) begin
             pn$0 = mul$2$p;
         end
-        if ((lane$3 == 2) & add_r$3$q) begin
+        if ((lane$3 == 2) & add$3) begin
             pn$1 = mul$2$p;
         end
-        if ((lane$4 == 2) & add_r$4$q) begin
+        if ((lane$4 == 2) & add$4) begin
             pn$2 = mul$2$p;
         end
-        if ((lane$5 == 2) & add_r$5$q) begin
+        if ((lane$5 == 2) & add$5) begin
             pn$3 = mul$2$p;
         end
-        if ((lane$6 == 2) & add_r$6$q) begin
+        if ((lane$6 == 2) & add$6) begin
             pn$4 = mul$2$p;
         end
-        if ((lane$7 == 2) & add_r$7$q) begin
+        if ((lane$7 == 2) & add$7) begin
             pn$5 = mul$2$p;
         end
-        if ((lane$8 == 2) & act_r$8$q) begin
+        if ((lane$8 == 2) & act$8) begin
             mul$2$a = mant_s$q;
             mul$2$b = op_e$0;
         end
-        if ((lane$8 == 2) & add_r$8$q) begin
+        if ((lane$8 == 2) & add$8) begin
             pe$0 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 2) & act_r$9$q) begin
+        if ((lane$9 == 2) & act$9) begin
             mul$2$a = mant_s$q;
             mul$2$b = op_e$1;
         end
-        if ((lane$9 == 2) & add_r$9$q) begin
+        if ((lane$9 == 2) & add$9) begin
             pe$1 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 2) & act_r$10$q) begin
+        if ((lane$10 == 2) & act$10) begin
             mul$2$a = mant_s$q;
             mul$2$b = op_e$2;
         end
-        if ((lane$10 == 2) & add_r$10$q) begin
+        if ((lane$10 == 2) & add$10) begin
             pe$2 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 2) & act_r$11$q) begin
+        if ((lane$11 == 2) & act$11) begin
             mul$2$a = mant_s$q;
             mul$2$b = op_e$3;
         end
-        if ((lane$11 == 2) & add_r$11$q) begin
+        if ((lane$11 == 2) & add$11) begin
             pe$3 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 2) & act_r$12$q) begin
+        if ((lane$12 == 2) & act$12) begin
             mul$2$a = p$3$q;
             mul$2$b = op_g$0;
         end
-        if ((lane$13 == 2) & act_r$13$q) begin
+        if ((lane$13 == 2) & act$13) begin
             mul$2$a = p$2$q;
             mul$2$b = op_g$1;
         end
-        if ((lane$14 == 2) & act_r$14$q) begin
+        if ((lane$14 == 2) & act$14) begin
             mul$2$a = p$0$q;
             mul$2$b = op_g$2;
         end
-        if ((lane$15 == 2) & act_r$15$q) begin
+        if ((lane$15 == 2) & act$15) begin
             mul$2$a = p$1$q;
             mul$2$b = op_g$3;
         end
-        if ((lane$16 == 2) & act_r$16$q) begin
+        if ((lane$16 == 2) & act$16) begin
             mul$2$a = p$3$q;
             mul$2$b = op_g$4;
         end
-        if ((lane$17 == 2) & act_r$17$q) begin
+        if ((lane$17 == 2) & act$17) begin
             mul$2$a = p$2$q;
             mul$2$b = op_g$5;
         end
-        if ((lane$18 == 2) & act_r$18$q) begin
+        if ((lane$18 == 2) & act$18) begin
             mul$2$a = p$0$q;
             mul$2$b = op_g$6;
         end
-        if ((lane$19 == 2) & act_r$19$q) begin
+        if ((lane$19 == 2) & act$19) begin
             mul$2$a = p$1$q;
             mul$2$b = op_g$7;
         end
-        if ((lane$20 == 2) & act_r$20$q) begin
+        if ((lane$20 == 2) & act$20) begin
             mul$2$a = p$3$q;
             mul$2$b = op_g$8;
         end
-        if ((lane$21 == 2) & act_r$21$q) begin
+        if ((lane$21 == 2) & act$21) begin
             mul$2$a = p$2$q;
             mul$2$b = op_g$9;
         end
-        if ((lane$22 == 2) & act_r$22$q) begin
+        if ((lane$22 == 2) & act$22) begin
             mul$2$a = p$0$q;
             mul$2$b = op_g$10;
         end
-        if ((lane$23 == 2) & act_r$23$q) begin
+        if ((lane$23 == 2) & act$23) begin
             mul$2$a = p$1$q;
             mul$2$b = op_g$11;
         end
-        if ((lane$24 == 2) & act_r$24$q) begin
+        if ((lane$24 == 2) & act$24) begin
             mul$2$a = p$3$q;
             mul$2$b = op_g$12;
         end
-        if ((lane$25 == 2) & act_r$25$q) begin
+        if ((lane$25 == 2) & act$25) begin
             mul$2$a = p$2$q;
             mul$2$b = op_g$13;
         end
-        if ((lane$26 == 2) & act_r$26$q) begin
+        if ((lane$26 == 2) & act$26) begin
             mul$2$a = p$0$q;
             mul$2$b = op_g$14;
         end
-        if ((lane$27 == 2) & act_r$27$q) begin
+        if ((lane$27 == 2) & act$27) begin
             mul$2$a = p$1$q;
             mul$2$b = op_g$15;
         end
-        if ((lane$12 == 2) & add_r$12$q) begin
+        if ((lane$12 == 2) & add$12) begin
             pg$0 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 2) & add_r$13$q) begin
+        if ((lane$13 == 2) & add$13) begin
             pg$1 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 2) & add_r$14$q) begin
+        if ((lane$14 == 2) & add$14) begin
             pg$2 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 2) & add_r$15$q) begin
+        if ((lane$15 == 2) & add$15) begin
             pg$3 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 2) & add_r$16$q) begin
+        if ((lane$16 == 2) & add$16) begin
             pg$4 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 2) & add_r$17$q) begin
+        if ((lane$17 == 2) & add$17) begin
             pg$5 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 2) & add_r$18$q) begin
+        if ((lane$18 == 2) & add$18) begin
             pg$6 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 2) & add_r$19$q) begin
+        if ((lane$19 == 2) & add$19) begin
             pg$7 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 2) & add_r$20$q) begin
+        if ((lane$20 == 2) & add$20) begin
             pg$8 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 2) & add_r$21$q) begin
+        if ((lane$21 == 2) & add$21) begin
             pg$9 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 2) & add_r$22$q) begin
+        if ((lane$22 == 2) & add$22) begin
             pg$10 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 2) & add_r$23$q) begin
+        if ((lane$23 == 2) & add$23) begin
             pg$11 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 2) & add_r$24$q) begin
+        if ((lane$24 == 2) & add$24) begin
             pg$12 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 2) & add_r$25$q) begin
+        if ((lane$25 == 2) & add$25) begin
             pg$13 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 2) & add_r$26$q) begin
+        if ((lane$26 == 2) & add$26) begin
             pg$14 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 2) & add_r$27$q) begin
+        if ((lane$27 == 2) & add$27) begin
             pg$15 = mul$2$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 2) & act_r$28$q) begin
+        if ((lane$28 == 2) & act$28) begin
             mul$2$a = ddx$0;
             mul$2$b = op_s$0;
         end
-        if ((lane$29 == 2) & act_r$29$q) begin
+        if ((lane$29 == 2) & act$29) begin
             mul$2$a = ddy$0;
             mul$2$b = op_s$1;
         end
-        if ((lane$30 == 2) & act_r$30$q) begin
+        if ((lane$30 == 2) & act$30) begin
             mul$2$a = ddx$0;
             mul$2$b = op_q$0;
         end
-        if ((lane$31 == 2) & act_r$31$q) begin
+        if ((lane$31 == 2) & act$31) begin
             mul$2$a = ddx$1;
             mul$2$b = op_s$2;
         end
-        if ((lane$32 == 2) & act_r$32$q) begin
+        if ((lane$32 == 2) & act$32) begin
             mul$2$a = ddy$1;
             mul$2$b = op_s$3;
         end
-        if ((lane$33 == 2) & act_r$33$q) begin
+        if ((lane$33 == 2) & act$33) begin
             mul$2$a = ddx$1;
             mul$2$b = op_q$1;
         end
-        if ((lane$34 == 2) & act_r$34$q) begin
+        if ((lane$34 == 2) & act$34) begin
             mul$2$a = ddx$2;
             mul$2$b = op_s$4;
         end
-        if ((lane$35 == 2) & act_r$35$q) begin
+        if ((lane$35 == 2) & act$35) begin
             mul$2$a = ddy$2;
             mul$2$b = op_s$5;
         end
-        if ((lane$36 == 2) & act_r$36$q) begin
+        if ((lane$36 == 2) & act$36) begin
             mul$2$a = ddx$2;
             mul$2$b = op_q$2;
         end
-        if ((lane$37 == 2) & act_r$37$q) begin
+        if ((lane$37 == 2) & act$37) begin
             mul$2$a = ddx$3;
             mul$2$b = op_s$6;
         end
-        if ((lane$38 == 2) & act_r$38$q) begin
+        if ((lane$38 == 2) & act$38) begin
             mul$2$a = ddy$3;
             mul$2$b = op_s$7;
         end
-        if ((lane$39 == 2) & act_r$39$q) begin
+        if ((lane$39 == 2) & act$39) begin
             mul$2$a = ddx$3;
             mul$2$b = op_q$3;
         end
-        if ((lane$40 == 2) & act_r$40$q) begin
+        if ((lane$40 == 2) & act$40) begin
             mul$2$a = ddx$0;
             mul$2$b = op_s$8;
         end
-        if ((lane$41 == 2) & act_r$41$q) begin
+        if ((lane$41 == 2) & act$41) begin
             mul$2$a = ddy$0;
             mul$2$b = op_s$9;
         end
-        if ((lane$42 == 2) & act_r$42$q) begin
+        if ((lane$42 == 2) & act$42) begin
             mul$2$a = ddx$0;
             mul$2$b = op_q$4;
         end
-        if ((lane$43 == 2) & act_r$43$q) begin
+        if ((lane$43 == 2) & act$43) begin
             mul$2$a = ddx$1;
             mul$2$b = op_s$10;
         end
-        if ((lane$44 == 2) & act_r$44$q) begin
+        if ((lane$44 == 2) & act$44) begin
             mul$2$a = ddy$1;
             mul$2$b = op_s$11;
         end
-        if ((lane$45 == 2) & act_r$45$q) begin
+        if ((lane$45 == 2) & act$45) begin
             mul$2$a = ddx$1;
             mul$2$b = op_q$5;
         end
-        if ((lane$46 == 2) & act_r$46$q) begin
+        if ((lane$46 == 2) & act$46) begin
             mul$2$a = ddx$2;
             mul$2$b = op_s$12;
         end
-        if ((lane$47 == 2) & act_r$47$q) begin
+        if ((lane$47 == 2) & act$47) begin
             mul$2$a = ddy$2;
             mul$2$b = op_s$13;
         end
-        if ((lane$48 == 2) & act_r$48$q) begin
+        if ((lane$48 == 2) & act$48) begin
             mul$2$a = ddx$2;
             mul$2$b = op_q$6;
         end
-        if ((lane$49 == 2) & act_r$49$q) begin
+        if ((lane$49 == 2) & act$49) begin
             mul$2$a = ddx$3;
             mul$2$b = op_s$14;
         end
-        if ((lane$50 == 2) & act_r$50$q) begin
+        if ((lane$50 == 2) & act$50) begin
             mul$2$a = ddy$3;
             mul$2$b = op_s$15;
         end
-        if ((lane$51 == 2) & act_r$51$q) begin
+        if ((lane$51 == 2) & act$51) begin
             mul$2$a = ddx$3;
             mul$2$b = op_q$7;
         end
-        if ((lane$52 == 2) & act_r$52$q) begin
+        if ((lane$52 == 2) & act$52) begin
             mul$2$a = ddx$0;
             mul$2$b = op_s$16;
         end
-        if ((lane$53 == 2) & act_r$53$q) begin
+        if ((lane$53 == 2) & act$53) begin
             mul$2$a = ddy$0;
             mul$2$b = op_s$17;
         end
-        if ((lane$54 == 2) & act_r$54$q) begin
+        if ((lane$54 == 2) & act$54) begin
             mul$2$a = ddx$0;
             mul$2$b = op_q$8;
         end
-        if ((lane$55 == 2) & act_r$55$q) begin
+        if ((lane$55 == 2) & act$55) begin
             mul$2$a = ddx$1;
             mul$2$b = op_s$18;
         end
-        if ((lane$56 == 2) & act_r$56$q) begin
+        if ((lane$56 == 2) & act$56) begin
             mul$2$a = ddy$1;
             mul$2$b = op_s$19;
         end
-        if ((lane$57 == 2) & act_r$57$q) begin
+        if ((lane$57 == 2) & act$57) begin
             mul$2$a = ddx$1;
             mul$2$b = op_q$9;
         end
-        if ((lane$58 == 2) & act_r$58$q) begin
+        if ((lane$58 == 2) & act$58) begin
             mul$2$a = ddx$2;
             mul$2$b = op_s$20;
         end
-        if ((lane$59 == 2) & act_r$59$q) begin
+        if ((lane$59 == 2) & act$59) begin
             mul$2$a = ddy$2;
             mul$2$b = op_s$21;
         end
-        if ((lane$60 == 2) & act_r$60$q) begin
+        if ((lane$60 == 2) & act$60) begin
             mul$2$a = ddx$2;
             mul$2$b = op_q$10;
         end
-        if ((lane$61 == 2) & act_r$61$q) begin
+        if ((lane$61 == 2) & act$61) begin
             mul$2$a = ddx$3;
             mul$2$b = op_s$22;
         end
-        if ((lane$62 == 2) & act_r$62$q) begin
+        if ((lane$62 == 2) & act$62) begin
             mul$2$a = ddy$3;
             mul$2$b = op_s$23;
         end
-        if ((lane$63 == 2) & act_r$63$q) begin
+        if ((lane$63 == 2) & act$63) begin
             mul$2$a = ddx$3;
             mul$2$b = op_q$11;
         end
-        if ((lane$28 == 2) & add_r$28$q) begin
+        if ((lane$28 == 2) & add$28) begin
             ps$0 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 2) & add_r$29$q) begin
+        if ((lane$29 == 2) & add$29) begin
             ps$1 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 2) & add_r$30$q) begin
+        if ((lane$30 == 2) & add$30) begin
             ps$2 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$31 == 2) & add_r$31$q) begin
+        if ((lane$31 == 2) & add$31) begin
             ps$3 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 2) & add_r$32$q) begin
+        if ((lane$32 == 2) & add$32) begin
             ps$4 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 2) & add_r$33$q) begin
+        if ((lane$33 == 2) & add$33) begin
             ps$5 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$34 == 2) & add_r$34$q) begin
+        if ((lane$34 == 2) & add$34) begin
             ps$6 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 2) & add_r$35$q) begin
+        if ((lane$35 == 2) & add$35) begin
             ps$7 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 2) & add_r$36$q) begin
+        if ((lane$36 == 2) & add$36) begin
             ps$8 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$37 == 2) & add_r$37$q) begin
+        if ((lane$37 == 2) & add$37) begin
             ps$9 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 2) & add_r$38$q) begin
+        if ((lane$38 == 2) & add$38) begin
             ps$10 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 2) & add_r$39$q) begin
+        if ((lane$39 == 2) & add$39) begin
             ps$11 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$40 == 2) & add_r$40$q) begin
+        if ((lane$40 == 2) & add$40) begin
             ps$12 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 2) & add_r$41$q) begin
+        if ((lane$41 == 2) & add$41) begin
             ps$13 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 2) & add_r$42$q) begin
+        if ((lane$42 == 2) & add$42) begin
             ps$14 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$43 == 2) & add_r$43$q) begin
+        if ((lane$43 == 2) & add$43) begin
             ps$15 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 2) & add_r$44$q) begin
+        if ((lane$44 == 2) & add$44) begin
             ps$16 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 2) & add_r$45$q) begin
+        if ((lane$45 == 2) & add$45) begin
             ps$17 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$46 == 2) & add_r$46$q) begin
+        if ((lane$46 == 2) & add$46) begin
             ps$18 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 2) & add_r$47$q) begin
+        if ((lane$47 == 2) & add$47) begin
             ps$19 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 2) & add_r$48$q) begin
+        if ((lane$48 == 2) & add$48) begin
             ps$20 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$49 == 2) & add_r$49$q) begin
+        if ((lane$49 == 2) & add$49) begin
             ps$21 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 2) & add_r$50$q) begin
+        if ((lane$50 == 2) & add$50) begin
             ps$22 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 2) & add_r$51$q) begin
+        if ((lane$51 == 2) & add$51) begin
             ps$23 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$52 == 2) & add_r$52$q) begin
+        if ((lane$52 == 2) & add$52) begin
             ps$24 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 2) & add_r$53$q) begin
+        if ((lane$53 == 2) & add$53) begin
             ps$25 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 2) & add_r$54$q) begin
+        if ((lane$54 == 2) & add$54) begin
             ps$26 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$55 == 2) & add_r$55$q) begin
+        if ((lane$55 == 2) & add$55) begin
             ps$27 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 2) & add_r$56$q) begin
+        if ((lane$56 == 2) & add$56) begin
             ps$28 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 2) & add_r$57$q) begin
+        if ((lane$57 == 2) & add$57) begin
             ps$29 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$58 == 2) & add_r$58$q) begin
+        if ((lane$58 == 2) & add$58) begin
             ps$30 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 2) & add_r$59$q) begin
+        if ((lane$59 == 2) & add$59) begin
             ps$31 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 2) & add_r$60$q) begin
+        if ((lane$60 == 2) & add$60) begin
             ps$32 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$61 == 2) & add_r$61$q) begin
+        if ((lane$61 == 2) & add$61) begin
             ps$33 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 2) & add_r$62$q) begin
+        if ((lane$62 == 2) & add$62) begin
             ps$34 = mul$2$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 2) & add_r$63$q) begin
+        if ((lane$63 == 2) & add$63) begin
             ps$35 = mul$2$p[(32'h0)+:(40)];
         end
         mul$3$en = run;
-        if ((lane$0 == 3) & act_r$0$q) begin
+        if ((lane$0 == 3) & act$0) begin
             mul$3$a = g0$kdx$0[(32'h0)+:(57)];
             mul$3$b = g0$kdy$1[(32'h0)+:(19)];
         end
-        if ((lane$1 == 3) & act_r$1$q) begin
+        if ((lane$1 == 3) & act$1) begin
             mul$3$a = g0$kdx$1[(32'h0)+:(57)];
             mul$3$b = g0$kdy$0[(32'h0)+:(19)];
         end
-        if ((lane$0 == 3) & add_r$0$q) begin
+        if ((lane$0 == 3) & add$0) begin
             pa$0 = mul$3$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 3) & add_r$1$q) begin
+        if ((lane$1 == 3) & add$1) begin
             pa$1 = mul$3$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 3) & act_r$2$q) begin
+        if ((lane$2 == 3) & act$2) begin
             mul$3$a = g0$edy$0;
             mul$3$b = g0$xf$0;
         end
-        if ((lane$3 == 3) & act_r$3$q) begin
+        if ((lane$3 == 3) & act$3) begin
             mul$3$a = g0$edx$0[(32'h0)+:(57)];
             mul$3$b = g0$toff$0;
         end
-        if ((lane$4 == 3) & act_r$4$q) begin
+        if ((lane$4 == 3) & act$4) begin
             mul$3$a = g0$edy$1;
             mul$3$b = g0$xf$1;
         end
-        if ((lane$5 == 3) & act_r$5$q) begin
+        if ((lane$5 == 3) & act$5) begin
             mul$3$a = g0$edx$1[(32'h0)+:(57)];
             mul$3$b = g0$toff$1;
         end
-        if ((lane$6 == 3) & act_r$6$q) begin
+        if ((lane$6 == 3) & act$6) begin
             mul$3$a = g0$edy$2;
             mul$3$b = g0$xf$2;
         end
-        if ((lane$7 == 3) & act_r$7$q) begin
+        if ((lane$7 == 3) & act$7) begin
             mul$3$a = g0$edx$2[(32'h0)+:(57)];
             mul$3$b = g0$toff$2;
         end
-        if ((lane$2 == 3) & add_r$2$q) begin
+        if ((lane$2 == 3) & add$2) begin
             pn$0 = mul$3$p;
         end
-        if ((lane$3 == 3) & add_r$3$q) begin
+        if ((lane$3 == 3) & add$3) begin
             pn$1 = mul$3$p;
         end
-        if ((lane$4 == 3) & add_r$4$q) begin
+        if ((lane$4 == 3) & add$4) begin
             pn$2 = mul$3$p;
         end
-        if ((lane$5 == 3) & add_r$5$q) begin
+        if ((lane$5 == 3) & add$5) begin
             pn$3 = mul$3$p;
         end
-        if ((lane$6 == 3) & add_r$6$q) begin
+        if ((lane$6 == 3) & add$6) begin
             pn$4 = mul$3$p;
         end
-        if ((lane$7 == 3) & add_r$7$q) begin
+        if ((lane$7 == 3) & add$7) begin
             pn$5 = mul$3$p;
         end
-        if ((lane$8 == 3) & act_r$8$q) begin
+        if ((lane$8 == 3) & act$8) begin
             mul$3$a = mant_s$q;
             mul$3$b = op_e$0;
         end
-        if ((lane$8 == 3) & add_r$8$q) begin
+        if ((lane$8 == 3) & add$8) begin
             pe$0 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 3) & act_r$9$q) begin
+        if ((lane$9 == 3) & act$9) begin
             mul$3$a = mant_s$q;
             mul$3$b = op_e$1;
         end
-        if ((lane$9 == 3) & add_r$9$q) begin
+        if ((lane$9 == 3) & add$9) begin
             pe$1 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 3) & act_r$10$q) begin
+        if ((lane$10 == 3) & act$10) begin
             mul$3$a = mant_s$q;
             mul$3$b = op_e$2;
         end
-        if ((lane$10 == 3) & add_r$10$q) begin
+        if ((lane$10 == 3) & add$10) begin
             pe$2 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 3) & act_r$11$q) begin
+        if ((lane$11 == 3) & act$11) begin
             mul$3$a = mant_s$q;
             mul$3$b = op_e$3;
         end
-        if ((lane$11 == 3) & add_r$11$q) begin
+        if ((lane$11 == 3) & add$11) begin
             pe$3 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 3) & act_r$12$q) begin
+        if ((lane$12 == 3) & act$12) begin
             mul$3$a = p$3$q;
             mul$3$b = op_g$0;
         end
-        if ((lane$13 == 3) & act_r$13$q) begin
+        if ((lane$13 == 3) & act$13) begin
             mul$3$a = p$2$q;
             mul$3$b = op_g$1;
         end
-        if ((lane$14 == 3) & act_r$14$q) begin
+        if ((lane$14 == 3) & act$14) begin
             mul$3$a = p$0$q;
             mul$3$b = op_g$2;
         end
-        if ((lane$15 == 3) & act_r$15$q) begin
+        if ((lane$15 == 3) & act$15) begin
             mul$3$a = p$1$q;
             mul$3$b = op_g$3;
         end
-        if ((lane$16 == 3) & act_r$16$q) begin
+        if ((lane$16 == 3) & act$16) begin
             mul$3$a = p$3$q;
             mul$3$b = op_g$4;
         end
-        if ((lane$17 == 3) & act_r$17$q) begin
+        if ((lane$17 == 3) & act$17) begin
             mul$3$a = p$2$q;
             mul$3$b = op_g$5;
         end
-        if ((lane$18 == 3) & act_r$18$q) begin
+        if ((lane$18 == 3) & act$18) begin
             mul$3$a = p$0$q;
             mul$3$b = op_g$6;
         end
-        if ((lane$19 == 3) & act_r$19$q) begin
+        if ((lane$19 == 3) & act$19) begin
             mul$3$a = p$1$q;
             mul$3$b = op_g$7;
         end
-        if ((lane$20 == 3) & act_r$20$q) begin
+        if ((lane$20 == 3) & act$20) begin
             mul$3$a = p$3$q;
             mul$3$b = op_g$8;
         end
-        if ((lane$21 == 3) & act_r$21$q) begin
+        if ((lane$21 == 3) & act$21) begin
             mul$3$a = p$2$q;
             mul$3$b = op_g$9;
         end
-        if ((lane$22 == 3) & act_r$22$q) begin
+        if ((lane$22 == 3) & act$22) begin
             mul$3$a = p$0$q;
             mul$3$b = op_g$10;
         end
-        if ((lane$23 == 3) & act_r$23$q) begin
+        if ((lane$23 == 3) & act$23) begin
             mul$3$a = p$1$q;
             mul$3$b = op_g$11;
         end
-        if ((lane$24 == 3) & act_r$24$q) begin
+        if ((lane$24 == 3) & act$24) begin
             mul$3$a = p$3$q;
             mul$3$b = op_g$12;
         end
-        if ((lane$25 == 3) & act_r$25$q) begin
+        if ((lane$25 == 3) & act$25) begin
             mul$3$a = p$2$q;
             mul$3$b = op_g$13;
         end
-        if ((lane$26 == 3) & act_r$26$q) begin
+        if ((lane$26 == 3) & act$26) begin
             mul$3$a = p$0$q;
             mul$3$b = op_g$14;
         end
-        if ((lane$27 == 3) & act_r$27$q) begin
+        if ((lane$27 == 3) & act$27) begin
             mul$3$a = p$1$q;
             mul$3$b = op_g$15;
         end
-        if ((lane$12 == 3) & add_r$12$q) begin
+        if ((lane$12 == 3) & add$12) begin
             pg$0 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 3) & add_r$13$q) begin
+        if ((lane$13 == 3) & add$13) begin
             pg$1 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 3) & add_r$14$q) begin
+        if ((lane$14 == 3) & add$14) begin
             pg$2 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 3) & add_r$15$q) begin
+        if ((lane$15 == 3) & add$15) begin
             pg$3 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 3) & add_r$16$q) begin
+        if ((lane$16 == 3) & add$16) begin
             pg$4 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 3) & add_r$17$q) begin
+        if ((lane$17 == 3) & add$17) begin
             pg$5 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 3) & add_r$18$q) begin
+        if ((lane$18 == 3) & add$18) begin
             pg$6 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 3) & add_r$19$q) begin
+        if ((lane$19 == 3) & add$19) begin
             pg$7 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 3) & add_r$20$q) begin
+        if ((lane$20 == 3) & add$20) begin
             pg$8 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 3) & add_r$21$q) begin
+        if ((lane$21 == 3) & add$21) begin
             pg$9 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 3) & add_r$22$q) begin
+        if ((lane$22 == 3) & add$22) begin
             pg$10 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 3) & add_r$23$q) begin
+        if ((lane$23 == 3) & add$23) begin
             pg$11 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 3) & add_r$24$q) begin
+        if ((lane$24 == 3) & add$24) begin
             pg$12 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 3) & add_r$25$q) begin
+        if ((lane$25 == 3) & add$25) begin
             pg$13 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 3) & add_r$26$q) begin
+        if ((lane$26 == 3) & add$26) begin
             pg$14 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 3) & add_r$27$q) begin
+        if ((lane$27 == 3) & add$27) begin
             pg$15 = mul$3$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 3) & act_r$28$q) begin
+        if ((lane$28 == 3) & act$28) begin
             mul$3$a = ddx$0;
             mul$3$b = op_s$0;
         end
-        if ((lane$29 == 3) & act_r$29$q) begin
+        if ((lane$29 == 3) & act$29) begin
             mul$3$a = ddy$0;
             mul$3$b = op_s$1;
         end
-        if ((lane$30 == 3) & act_r$30$q) begin
+        if ((lane$30 == 3) & act$30) begin
             mul$3$a = ddx$0;
             mul$3$b = op_q$0;
         end
-        if ((lane$31 == 3) & act_r$31$q) begin
+        if ((lane$31 == 3) & act$31) begin
             mul$3$a = ddx$1;
             mul$3$b = op_s$2;
         end
-        if ((lane$32 == 3) & act_r$32$q) begin
+        if ((lane$32 == 3) & act$32) begin
             mul$3$a = ddy$1;
             mul$3$b = op_s$3;
         end
-        if ((lane$33 == 3) & act_r$33$q) begin
+        if ((lane$33 == 3) & act$33) begin
             mul$3$a = ddx$1;
             mul$3$b = op_q$1;
         end
-        if ((lane$34 == 3) & act_r$34$q) begin
+        if ((lane$34 == 3) & act$34) begin
             mul$3$a = ddx$2;
             mul$3$b = op_s$4;
         end
-        if ((lane$35 == 3) & act_r$35$q) begin
+        if ((lane$35 == 3) & act$35) begin
             mul$3$a = ddy$2;
             mul$3$b = op_s$5;
         end
-        if ((lane$36 == 3) & act_r$36$q) begin
+        if ((lane$36 == 3) & act$36) begin
             mul$3$a = ddx$2;
             mul$3$b = op_q$2;
         end
-        if ((lane$37 == 3) & act_r$37$q) begin
+        if ((lane$37 == 3) & act$37) begin
             mul$3$a = ddx$3;
             mul$3$b = op_s$6;
         end
-        if ((lane$38 == 3) & act_r$38$q) begin
+        if ((lane$38 == 3) & act$38) begin
             mul$3$a = ddy$3;
             mul$3$b = op_s$7;
         end
-        if ((lane$39 == 3) & act_r$39$q) begin
+        if ((lane$39 == 3) & act$39) begin
             mul$3$a = ddx$3;
             mul$3$b = op_q$3;
         end
-        if ((lane$40 == 3) & act_r$40$q) begin
+        if ((lane$40 == 3) & act$40) begin
             mul$3$a = ddx$0;
             mul$3$b = op_s$8;
         end
-        if ((lane$41 == 3) & act_r$41$q) begin
+        if ((lane$41 == 3) & act$41) begin
             mul$3$a = ddy$0;
             mul$3$b = op_s$9;
         end
-        if ((lane$42 == 3) & act_r$42$q) begin
+        if ((lane$42 == 3) & act$42) begin
             mul$3$a = ddx$0;
             mul$3$b = op_q$4;
         end
-        if ((lane$43 == 3) & act_r$43$q) begin
+        if ((lane$43 == 3) & act$43) begin
             mul$3$a = ddx$1;
             mul$3$b = op_s$10;
         end
-        if ((lane$44 == 3) & act_r$44$q) begin
+        if ((lane$44 == 3) & act$44) begin
             mul$3$a = ddy$1;
             mul$3$b = op_s$11;
         end
-        if ((lane$45 == 3) & act_r$45$q) begin
+        if ((lane$45 == 3) & act$45) begin
             mul$3$a = ddx$1;
             mul$3$b = op_q$5;
         end
-        if ((lane$46 == 3) & act_r$46$q) begin
+        if ((lane$46 == 3) & act$46) begin
             mul$3$a = ddx$2;
             mul$3$b = op_s$12;
         end
-        if ((lane$47 == 3) & act_r$47$q) begin
+        if ((lane$47 == 3) & act$47) begin
             mul$3$a = ddy$2;
             mul$3$b = op_s$13;
         end
-        if ((lane$48 == 3) & act_r$48$q) begin
+        if ((lane$48 == 3) & act$48) begin
             mul$3$a = ddx$2;
             mul$3$b = op_q$6;
         end
-        if ((lane$49 == 3) & act_r$49$q) begin
+        if ((lane$49 == 3) & act$49) begin
             mul$3$a = ddx$3;
             mul$3$b = op_s$14;
         end
-        if ((lane$50 == 3) & act_r$50$q) begin
+        if ((lane$50 == 3) & act$50) begin
             mul$3$a = ddy$3;
             mul$3$b = op_s$15;
         end
-        if ((lane$51 == 3) & act_r$51$q) begin
+        if ((lane$51 == 3) & act$51) begin
             mul$3$a = ddx$3;
             mul$3$b = op_q$7;
         end
-        if ((lane$52 == 3) & act_r$52$q) begin
+        if ((lane$52 == 3) & act$52) begin
             mul$3$a = ddx$0;
             mul$3$b = op_s$16;
         end
-        if ((lane$53 == 3) & act_r$53$q) begin
+        if ((lane$53 == 3) & act$53) begin
             mul$3$a = ddy$0;
             mul$3$b = op_s$17;
         end
-        if ((lane$54 == 3) & act_r$54$q) begin
+        if ((lane$54 == 3) & act$54) begin
             mul$3$a = ddx$0;
             mul$3$b = op_q$8;
         end
-        if ((lane$55 == 3) & act_r$55$q) begin
+        if ((lane$55 == 3) & act$55) begin
             mul$3$a = ddx$1;
             mul$3$b = op_s$18;
         end
-        if ((lane$56 == 3) & act_r$56$q) begin
+        if ((lane$56 == 3) & act$56) begin
             mul$3$a = ddy$1;
             mul$3$b = op_s$19;
         end
-        if ((lane$57 == 3) & act_r$57$q) begin
+        if ((lane$57 == 3) & act$57) begin
             mul$3$a = ddx$1;
             mul$3$b = op_q$9;
         end
-        if ((lane$58 == 3) & act_r$58$q) begin
+        if ((lane$58 == 3) & act$58) begin
             mul$3$a = ddx$2;
             mul$3$b = op_s$20;
         end
-        if ((lane$59 == 3) & act_r$59$q) begin
+        if ((lane$59 == 3) & act$59) begin
             mul$3$a = ddy$2;
             mul$3$b = op_s$21;
         end
-        if ((lane$60 == 3) & act_r$60$q) begin
+        if ((lane$60 == 3) & act$60) begin
             mul$3$a = ddx$2;
             mul$3$b = op_q$10;
         end
-        if ((lane$61 == 3) & act_r$61$q) begin
+        if ((lane$61 == 3) & act$61) begin
             mul$3$a = ddx$3;
             mul$3$b = op_s$22;
         end
-        if ((lane$62 == 3) & act_r$62$q) begin
+        if ((lane$62 == 3) & act$62) begin
             mul$3$a = ddy$3;
             mul$3$b = op_s$23;
         end
-        if ((lane$63 == 3) & act_r$63$q) begin
+        if ((lane$63 == 3) & act$63) begin
             mul$3$a = ddx$3;
             mul$3$b = op_q$11;
         end
-        if ((lane$28 == 3) & add_r$28$q) begin
+        if ((lane$28 == 3) & add$28) begin
             ps$0 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 3) & add_r$29$q) begin
+        if ((lane$29 == 3) & add$29) begin
             ps$1 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 3) & add_r$30$q) begin
+        if ((lane$30 == 3) & add$30) begin
             ps$2 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$31 == 3) & add_r$31$q) begin
+        if ((lane$31 == 3) & add$31) begin
             ps$3 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 3) & add_r$32$q) begin
+        if ((lane$32 == 3) & add$32) begin
             ps$4 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 3) & add_r$33$q) begin
+        if ((lane$33 == 3) & add$33) begin
             ps$5 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$34 == 3) & add_r$34$q) begin
+        if ((lane$34 == 3) & add$34) begin
             ps$6 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 3) & add_r$35$q) begin
+        if ((lane$35 == 3) & add$35) begin
             ps$7 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 3) & add_r$36$q) begin
+        if ((lane$36 == 3) & add$36) begin
             ps$8 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$37 == 3) & add_r$37$q) begin
+        if ((lane$37 == 3) & add$37) begin
             ps$9 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 3) & add_r$38$q) begin
+        if ((lane$38 == 3) & add$38) begin
             ps$10 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 3) & add_r$39$q) begin
+        if ((lane$39 == 3) & add$39) begin
             ps$11 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$40 == 3) & add_r$40$q) begin
+        if ((lane$40 == 3) & add$40) begin
             ps$12 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 3) & add_r$41$q) begin
+        if ((lane$41 == 3) & add$41) begin
             ps$13 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 3) & add_r$42$q) begin
+        if ((lane$42 == 3) & add$42) begin
             ps$14 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$43 == 3) & add_r$43$q) begin
+        if ((lane$43 == 3) & add$43) begin
             ps$15 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 3) & add_r$44$q) begin
+        if ((lane$44 == 3) & add$44) begin
             ps$16 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 3) & add_r$45$q) begin
+        if ((lane$45 == 3) & add$45) begin
             ps$17 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$46 == 3) & add_r$46$q) begin
+        if ((lane$46 == 3) & add$46) begin
             ps$18 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 3) & add_r$47$q) begin
+        if ((lane$47 == 3) & add$47) begin
             ps$19 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 3) & add_r$48$q) begin
+        if ((lane$48 == 3) & add$48) begin
             ps$20 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$49 == 3) & add_r$49$q) begin
+        if ((lane$49 == 3) & add$49) begin
             ps$21 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 3) & add_r$50$q) begin
+        if ((lane$50 == 3) & add$50) begin
             ps$22 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 3) & add_r$51$q) begin
+        if ((lane$51 == 3) & add$51) begin
             ps$23 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$52 == 3) & add_r$52$q) begin
+        if ((lane$52 == 3) & add$52) begin
             ps$24 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 3) & add_r$53$q) begin
+        if ((lane$53 == 3) & add$53) begin
             ps$25 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 3) & add_r$54$q) begin
+        if ((lane$54 == 3) & add$54) begin
             ps$26 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$55 == 3) & add_r$55$q) begin
+        if ((lane$55 == 3) & add$55) begin
             ps$27 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 3) & add_r$56$q) begin
+        if ((lane$56 == 3) & add$56) begin
             ps$28 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 3) & add_r$57$q) begin
+        if ((lane$57 == 3) & add$57) begin
             ps$29 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$58 == 3) & add_r$58$q) begin
+        if ((lane$58 == 3) & add$58) begin
             ps$30 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 3) & add_r$59$q) begin
+        if ((lane$59 == 3) & add$59) begin
             ps$31 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 3) & add_r$60$q) begin
+        if ((lane$60 == 3) & add$60) begin
             ps$32 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$61 == 3) & add_r$61$q) begin
+        if ((lane$61 == 3) & add$61) begin
             ps$33 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 3) & add_r$62$q) begin
+        if ((lane$62 == 3) & add$62) begin
             ps$34 = mul$3$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 3) & add_r$63$q) begin
+        if ((lane$63 == 3) & add$63) begin
             ps$35 = mul$3$p[(32'h0)+:(40)];
         end
         mul$4$en = run;
-        if ((lane$0 == 4) & act_r$0$q) begin
+        if ((lane$0 == 4) & act$0) begin
             mul$4$a = g0$kdx$0[(32'h0)+:(57)];
             mul$4$b = g0$kdy$1[(32'h0)+:(19)];
         end
-        if ((lane$1 == 4) & act_r$1$q) begin
+        if ((lane$1 == 4) & act$1) begin
             mul$4$a = g0$kdx$1[(32'h0)+:(57)];
             mul$4$b = g0$kdy$0[(32'h0)+:(19)];
         end
-        if ((lane$0 == 4) & add_r$0$q) begin
+        if ((lane$0 == 4) & add$0) begin
             pa$0 = mul$4$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 4) & add_r$1$q) begin
+        if ((lane$1 == 4) & add$1) begin
             pa$1 = mul$4$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 4) & act_r$2$q) begin
+        if ((lane$2 == 4) & act$2) begin
             mul$4$a = g0$edy$0;
             mul$4$b = g0$xf$0;
         end
-        if ((lane$3 == 4) & act_r$3$q) begin
+        if ((lane$3 == 4) & act$3) begin
             mul$4$a = g0$edx$0[(32'h0)+:(57)];
             mul$4$b = g0$toff$0;
         end
-        if ((lane$4 == 4) & act_r$4$q) begin
+        if ((lane$4 == 4) & act$4) begin
             mul$4$a = g0$edy$1;
             mul$4$b = g0$xf$1;
         end
-        if ((lane$5 == 4) & act_r$5$q) begin
+        if ((lane$5 == 4) & act$5) begin
             mul$4$a = g0$edx$1[(32'h0)+:(57)];
             mul$4$b = g0$toff$1;
         end
-        if ((lane$6 == 4) & act_r$6$q) begin
+        if ((lane$6 == 4) & act$6) begin
             mul$4$a = g0$edy$2;
             mul$4$b = g0$xf$2;
         end
-        if ((lane$7 == 4) & act_r$7$q) begin
+        if ((lane$7 == 4) & act$7) begin
             mul$4$a = g0$edx$2[(32'h0)+:(57)];
             mul$4$b = g0$toff$2;
         end
-        if ((lane$2 == 4) & add_r$2$q) begin
+        if ((lane$2 == 4) & add$2) begin
             pn$0 = mul$4$p;
         end
-        if ((lane$3 == 4) & add_r$3$q) begin
+        if ((lane$3 == 4) & add$3) begin
             pn$1 = mul$4$p;
         end
-        if ((lane$4 == 4) & add_r$4$q) begin
+        if ((lane$4 == 4) & add$4) begin
             pn$2 = mul$4$p;
         end
-        if ((lane$5 == 4) & add_r$5$q) begin
+        if ((lane$5 == 4) & add$5) begin
             pn$3 = mul$4$p;
         end
-        if ((lane$6 == 4) & add_r$6$q) begin
+        if ((lane$6 == 4) & add$6) begin
             pn$4 = mul$4$p;
         end
-        if ((lane$7 == 4) & add_r$7$q) begin
+        if ((lane$7 == 4) & add$7) begin
             pn$5 = mul$4$p;
         end
-        if ((lane$8 == 4) & act_r$8$q) begin
+        if ((lane$8 == 4) & act$8) begin
             mul$4$a = mant_s$q;
             mul$4$b = op_e$0;
         end
-        if ((lane$8 == 4) & add_r$8$q) begin
+        if ((lane$8 == 4) & add$8) begin
             pe$0 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 4) & act_r$9$q) begin
+        if ((lane$9 == 4) & act$9) begin
             mul$4$a = mant_s$q;
             mul$4$b = op_e$1;
         end
-        if ((lane$9 == 4) & add_r$9$q) begin
+        if ((lane$9 == 4) & add$9) begin
             pe$1 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 4) & act_r$10$q) begin
+        if ((lane$10 == 4) & act$10) begin
             mul$4$a = mant_s$q;
             mul$4$b = op_e$2;
         end
-        if ((lane$10 == 4) & add_r$10$q) begin
+        if ((lane$10 == 4) & add$10) begin
             pe$2 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 4) & act_r$11$q) begin
+        if ((lane$11 == 4) & act$11) begin
             mul$4$a = mant_s$q;
             mul$4$b = op_e$3;
         end
-        if ((lane$11 == 4) & add_r$11$q) begin
+        if ((lane$11 == 4) & add$11) begin
             pe$3 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 4) & act_r$12$q) begin
+        if ((lane$12 == 4) & act$12) begin
             mul$4$a = p$3$q;
             mul$4$b = op_g$0;
         end
-        if ((lane$13 == 4) & act_r$13$q) begin
+        if ((lane$13 == 4) & act$13) begin
             mul$4$a = p$2$q;
             mul$4$b = op_g$1;
         end
-        if ((lane$14 == 4) & act_r$14$q) begin
+        if ((lane$14 == 4) & act$14) begin
             mul$4$a = p$0$q;
             mul$4$b = op_g$2;
         end
-        if ((lane$15 == 4) & act_r$15$q) begin
+        if ((lane$15 == 4) & act$15) begin
             mul$4$a = p$1$q;
             mul$4$b = op_g$3;
         end
-        if ((lane$16 == 4) & act_r$16$q) begin
+        if ((lane$16 == 4) & act$16) begin
             mul$4$a = p$3$q;
             mul$4$b = op_g$4;
         end
-        if ((lane$17 == 4) & act_r$17$q) begin
+        if ((lane$17 == 4) & act$17) begin
             mul$4$a = p$2$q;
             mul$4$b = op_g$5;
         end
-        if ((lane$18 == 4) & act_r$18$q) begin
+        if ((lane$18 == 4) & act$18) begin
             mul$4$a = p$0$q;
             mul$4$b = op_g$6;
         end
-        if ((lane$19 == 4) & act_r$19$q) begin
+        if ((lane$19 == 4) & act$19) begin
             mul$4$a = p$1$q;
             mul$4$b = op_g$7;
         end
-        if ((lane$20 == 4) & act_r$20$q) begin
+        if ((lane$20 == 4) & act$20) begin
             mul$4$a = p$3$q;
             mul$4$b = op_g$8;
         end
-        if ((lane$21 == 4) & act_r$21$q) begin
+        if ((lane$21 == 4) & act$21) begin
             mul$4$a = p$2$q;
             mul$4$b = op_g$9;
         end
-        if ((lane$22 == 4) & act_r$22$q) begin
+        if ((lane$22 == 4) & act$22) begin
             mul$4$a = p$0$q;
             mul$4$b = op_g$10;
         end
-        if ((lane$23 == 4) & act_r$23$q) begin
+        if ((lane$23 == 4) & act$23) begin
             mul$4$a = p$1$q;
             mul$4$b = op_g$11;
         end
-        if ((lane$24 == 4) & act_r$24$q) begin
+        if ((lane$24 == 4) & act$24) begin
             mul$4$a = p$3$q;
             mul$4$b = op_g$12;
         end
-        if ((lane$25 == 4) & act_r$25$q) begin
+        if ((lane$25 == 4) & act$25) begin
             mul$4$a = p$2$q;
             mul$4$b = op_g$13;
         end
-        if ((lane$26 == 4) & act_r$26$q) begin
+        if ((lane$26 == 4) & act$26) begin
             mul$4$a = p$0$q;
             mul$4$b = op_g$14;
         end
-        if ((lane$27 == 4) & act_r$27$q) begin
+        if ((lane$27 == 4) & act$27) begin
             mul$4$a = p$1$q;
             mul$4$b = op_g$15;
         end
-        if ((lane$12 == 4) & add_r$12$q) begin
+        if ((lane$12 == 4) & add$12) begin
             pg$0 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 4) & add_r$13$q) begin
+        if ((lane$13 == 4) & add$13) begin
             pg$1 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 4) & add_r$14$q) begin
+        if ((lane$14 == 4) & add$14) begin
             pg$2 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 4) & add_r$15$q) begin
+        if ((lane$15 == 4) & add$15) begin
             pg$3 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 4) & add_r$16$q) begin
+        if ((lane$16 == 4) & add$16) begin
             pg$4 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 4) & add_r$17$q) begin
+        if ((lane$17 == 4) & add$17) begin
             pg$5 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 4) & add_r$18$q) begin
+        if ((lane$18 == 4) & add$18) begin
             pg$6 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 4) & add_r$19$q) begin
+        if ((lane$19 == 4) & add$19) begin
             pg$7 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 4) & add_r$20$q) begin
+        if ((lane$20 == 4) & add$20) begin
             pg$8 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 4) & add_r$21$q) begin
+        if ((lane$21 == 4) & add$21) begin
             pg$9 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 4) & add_r$22$q) begin
+        if ((lane$22 == 4) & add$22) begin
             pg$10 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 4) & add_r$23$q) begin
+        if ((lane$23 == 4) & add$23) begin
             pg$11 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 4) & add_r$24$q) begin
+        if ((lane$24 == 4) & add$24) begin
             pg$12 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 4) & add_r$25$q) begin
+        if ((lane$25 == 4) & add$25) begin
             pg$13 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 4) & add_r$26$q) begin
+        if ((lane$26 == 4) & add$26) begin
             pg$14 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 4) & add_r$27$q) begin
+        if ((lane$27 == 4) & add$27) begin
             pg$15 = mul$4$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 4) & act_r$28$q) begin
+        if ((lane$28 == 4) & act$28) begin
             mul$4$a = ddx$0;
             mul$4$b = op_s$0;
         end
-        if ((lane$29 == 4) & act_r$29$q) begin
+        if ((lane$29 == 4) & act$29) begin
             mul$4$a = ddy$0;
             mul$4$b = op_s$1;
         end
-        if ((lane$30 == 4) & act_r$30$q) begin
+        if ((lane$30 == 4) & act$30) begin
             mul$4$a = ddx$0;
             mul$4$b = op_q$0;
         end
-        if ((lane$31 == 4) & act_r$31$q) begin
+        if ((lane$31 == 4) & act$31) begin
             mul$4$a = ddx$1;
             mul$4$b = op_s$2;
         end
-        if ((lane$32 == 4) & act_r$32$q) begin
+        if ((lane$32 == 4) & act$32) begin
             mul$4$a = ddy$1;
             mul$4$b = op_s$3;
         end
-        if ((lane$33 == 4) & act_r$33$q) begin
+        if ((lane$33 == 4) & act$33) begin
             mul$4$a = ddx$1;
             mul$4$b = op_q$1;
         end
-        if ((lane$34 == 4) & act_r$34$q) begin
+        if ((lane$34 == 4) & act$34) begin
             mul$4$a = ddx$2;
             mul$4$b = op_s$4;
         end
-        if ((lane$35 == 4) & act_r$35$q) begin
+        if ((lane$35 == 4) & act$35) begin
             mul$4$a = ddy$2;
             mul$4$b = op_s$5;
         end
-        if ((lane$36 == 4) & act_r$36$q) begin
+        if ((lane$36 == 4) & act$36) begin
             mul$4$a = ddx$2;
             mul$4$b = op_q$2;
         end
-        if ((lane$37 == 4) & act_r$37$q) begin
+        if ((lane$37 == 4) & act$37) begin
             mul$4$a = ddx$3;
             mul$4$b = op_s$6;
         end
-        if ((lane$38 == 4) & act_r$38$q) begin
+        if ((lane$38 == 4) & act$38) begin
             mul$4$a = ddy$3;
             mul$4$b = op_s$7;
         end
-        if ((lane$39 == 4) & act_r$39$q) begin
+        if ((lane$39 == 4) & act$39) begin
             mul$4$a = ddx$3;
             mul$4$b = op_q$3;
         end
-        if ((lane$40 == 4) & act_r$40$q) begin
+        if ((lane$40 == 4) & act$40) begin
             mul$4$a = ddx$0;
             mul$4$b = op_s$8;
         end
-        if ((lane$41 == 4) & act_r$41$q) begin
+        if ((lane$41 == 4) & act$41) begin
             mul$4$a = ddy$0;
             mul$4$b = op_s$9;
         end
-        if ((lane$42 == 4) & act_r$42$q) begin
+        if ((lane$42 == 4) & act$42) begin
             mul$4$a = ddx$0;
             mul$4$b = op_q$4;
         end
-        if ((lane$43 == 4) & act_r$43$q) begin
+        if ((lane$43 == 4) & act$43) begin
             mul$4$a = ddx$1;
             mul$4$b = op_s$10;
         end
-        if ((lane$44 == 4) & act_r$44$q) begin
+        if ((lane$44 == 4) & act$44) begin
             mul$4$a = ddy$1;
             mul$4$b = op_s$11;
         end
-        if ((lane$45 == 4) & act_r$45$q) begin
+        if ((lane$45 == 4) & act$45) begin
             mul$4$a = ddx$1;
             mul$4$b = op_q$5;
         end
-        if ((lane$46 == 4) & act_r$46$q) begin
+        if ((lane$46 == 4) & act$46) begin
             mul$4$a = ddx$2;
             mul$4$b = op_s$12;
         end
-        if ((lane$47 == 4) & act_r$47$q) begin
+        if ((lane$47 == 4) & act$47) begin
             mul$4$a = ddy$2;
             mul$4$b = op_s$13;
         end
-        if ((lane$48 == 4) & act_r$48$q) begin
+        if ((lane$48 == 4) & act$48) begin
             mul$4$a = ddx$2;
             mul$4$b = op_q$6;
         end
-        if ((lane$49 == 4) & act_r$49$q) begin
+        if ((lane$49 == 4) & act$49) begin
             mul$4$a = ddx$3;
             mul$4$b = op_s$14;
         end
-        if ((lane$50 == 4) & act_r$50$q) begin
+        if ((lane$50 == 4) & act$50) begin
             mul$4$a = ddy$3;
             mul$4$b = op_s$15;
         end
-        if ((lane$51 == 4) & act_r$51$q) begin
+        if ((lane$51 == 4) & act$51) begin
             mul$4$a = ddx$3;
             mul$4$b = op_q$7;
         end
-        if ((lane$52 == 4) & act_r$52$q) begin
+        if ((lane$52 == 4) & act$52) begin
             mul$4$a = ddx$0;
             mul$4$b = op_s$16;
         end
-        if ((lane$53 == 4) & act_r$53$q) begin
+        if ((lane$53 == 4) & act$53) begin
             mul$4$a = ddy$0;
             mul$4$b = op_s$17;
         end
-        if ((lane$54 == 4) & act_r$54$q) begin
+        if ((lane$54 == 4) & act$54) begin
             mul$4$a = ddx$0;
             mul$4$b = op_q$8;
         end
-        if ((lane$55 == 4) & act_r$55$q) begin
+        if ((lane$55 == 4) & act$55) begin
             mul$4$a = ddx$1;
             mul$4$b = op_s$18;
         end
-        if ((lane$56 == 4) & act_r$56$q) begin
+        if ((lane$56 == 4) & act$56) begin
             mul$4$a = ddy$1;
             mul$4$b = op_s$19;
         end
-        if ((lane$57 == 4) & act_r$57$q) begin
+        if ((lane$57 == 4) & act$57) begin
             mul$4$a = ddx$1;
             mul$4$b = op_q$9;
         end
-        if ((lane$58 == 4) & act_r$58$q) begin
+        if ((lane$58 == 4) & act$58) begin
             mul$4$a = ddx$2;
             mul$4$b = op_s$20;
         end
-        if ((lane$59 == 4) & act_r$59$q) begin
+        if ((lane$59 == 4) & act$59) begin
             mul$4$a = ddy$2;
             mul$4$b = op_s$21;
         end
-        if ((lane$60 == 4) & act_r$60$q) begin
+        if ((lane$60 == 4) & act$60) begin
             mul$4$a = ddx$2;
             mul$4$b = op_q$10;
         end
-        if ((lane$61 == 4) & act_r$61$q) begin
+        if ((lane$61 == 4) & act$61) begin
             mul$4$a = ddx$3;
             mul$4$b = op_s$22;
         end
-        if ((lane$62 == 4) & act_r$62$q) begin
+        if ((lane$62 == 4) & act$62) begin
             mul$4$a = ddy$3;
             mul$4$b = op_s$23;
         end
-        if ((lane$63 == 4) & act_r$63$q) begin
+        if ((lane$63 == 4) & act$63) begin
             mul$4$a = ddx$3;
             mul$4$b = op_q$11;
         end
-        if ((lane$28 == 4) & add_r$28$q) begin
+        if ((lane$28 == 4) & add$28) begin
             ps$0 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 4) & add_r$29$q) begin
+        if ((lane$29 == 4) & add$29) begin
             ps$1 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 4) & add_r$30$q) begin
+        if ((lane$30 == 4) & add$30) begin
             ps$2 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$31 == 4) & add_r$31$q) begin
+        if ((lane$31 == 4) & add$31) begin
             ps$3 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 4) & add_r$32$q) begin
+        if ((lane$32 == 4) & add$32) begin
             ps$4 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 4) & add_r$33$q) begin
+        if ((lane$33 == 4) & add$33) begin
             ps$5 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$34 == 4) & add_r$34$q) begin
+        if ((lane$34 == 4) & add$34) begin
             ps$6 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 4) & add_r$35$q) begin
+        if ((lane$35 == 4) & add$35) begin
             ps$7 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 4) & add_r$36$q) begin
+        if ((lane$36 == 4) & add$36) begin
             ps$8 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$37 == 4) & add_r$37$q) begin
+        if ((lane$37 == 4) & add$37) begin
             ps$9 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 4) & add_r$38$q) begin
+        if ((lane$38 == 4) & add$38) begin
             ps$10 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 4) & add_r$39$q) begin
+        if ((lane$39 == 4) & add$39) begin
             ps$11 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$40 == 4) & add_r$40$q) begin
+        if ((lane$40 == 4) & add$40) begin
             ps$12 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 4) & add_r$41$q) begin
+        if ((lane$41 == 4) & add$41) begin
             ps$13 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 4) & add_r$42$q) begin
+        if ((lane$42 == 4) & add$42) begin
             ps$14 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$43 == 4) & add_r$43$q) begin
+        if ((lane$43 == 4) & add$43) begin
             ps$15 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 4) & add_r$44$q) begin
+        if ((lane$44 == 4) & add$44) begin
             ps$16 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 4) & add_r$45$q) begin
+        if ((lane$45 == 4) & add$45) begin
             ps$17 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$46 == 4) & add_r$46$q) begin
+        if ((lane$46 == 4) & add$46) begin
             ps$18 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 4) & add_r$47$q) begin
+        if ((lane$47 == 4) & add$47) begin
             ps$19 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 4) & add_r$48$q) begin
+        if ((lane$48 == 4) & add$48) begin
             ps$20 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$49 == 4) & add_r$49$q) begin
+        if ((lane$49 == 4) & add$49) begin
             ps$21 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 4) & add_r$50$q) begin
+        if ((lane$50 == 4) & add$50) begin
             ps$22 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 4) & add_r$51$q) begin
+        if ((lane$51 == 4) & add$51) begin
             ps$23 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$52 == 4) & add_r$52$q) begin
+        if ((lane$52 == 4) & add$52) begin
             ps$24 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 4) & add_r$53$q) begin
+        if ((lane$53 == 4) & add$53) begin
             ps$25 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 4) & add_r$54$q) begin
+        if ((lane$54 == 4) & add$54) begin
             ps$26 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$55 == 4) & add_r$55$q) begin
+        if ((lane$55 == 4) & add$55) begin
             ps$27 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 4) & add_r$56$q) begin
+        if ((lane$56 == 4) & add$56) begin
             ps$28 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 4) & add_r$57$q) begin
+        if ((lane$57 == 4) & add$57) begin
             ps$29 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$58 == 4) & add_r$58$q) begin
+        if ((lane$58 == 4) & add$58) begin
             ps$30 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 4) & add_r$59$q) begin
+        if ((lane$59 == 4) & add$59) begin
             ps$31 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 4) & add_r$60$q) begin
+        if ((lane$60 == 4) & add$60) begin
             ps$32 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$61 == 4) & add_r$61$q) begin
+        if ((lane$61 == 4) & add$61) begin
             ps$33 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 4) & add_r$62$q) begin
+        if ((lane$62 == 4) & add$62) begin
             ps$34 = mul$4$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 4) & add_r$63$q) begin
+        if ((lane$63 == 4) & add$63) begin
             ps$35 = mul$4$p[(32'h0)+:(40)];
         end
         mul$5$en = run;
-        if ((lane$0 == 5) & act_r$0$q) begin
+        if ((lane$0 == 5) & act$0) begin
             mul$5$a = g0$kdx$0[(32'h0)+:(57)];
             mul$5$b = g0$kdy$1[(32'h0)+:(19)];
         end
-        if ((lane$1 == 5) & act_r$1$q) begin
+        if ((lane$1 == 5) & act$1) begin
             mul$5$a = g0$kdx$1[(32'h0)+:(57)];
             mul$5$b = g0$kdy$0[(32'h0)+:(19)];
         end
-        if ((lane$0 == 5) & add_r$0$q) begin
+        if ((lane$0 == 5) & add$0) begin
             pa$0 = mul$5$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 5) & add_r$1$q) begin
+        if ((lane$1 == 5) & add$1) begin
             pa$1 = mul$5$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 5) & act_r$2$q) begin
+        if ((lane$2 == 5) & act$2) begin
             mul$5$a = g0$edy$0;
             mul$5$b = g0$xf$0;
         end
-        if ((lane$3 == 5) & act_r$3$q) begin
+        if ((lane$3 == 5) & act$3) begin
             mul$5$a = g0$edx$0[(32'h0)+:(57)];
             mul$5$b = g0$toff$0;
         end
-        if ((lane$4 == 5) & act_r$4$q) begin
+        if ((lane$4 == 5) & act$4) begin
             mul$5$a = g0$edy$1;
             mul$5$b = g0$xf$1;
         end
-        if ((lane$5 == 5) & act_r$5$q) begin
+        if ((lane$5 == 5) & act$5) begin
             mul$5$a = g0$edx$1[(32'h0)+:(57)];
             mul$5$b = g0$toff$1;
         end
-        if ((lane$6 == 5) & act_r$6$q) begin
+        if ((lane$6 == 5) & act$6) begin
             mul$5$a = g0$edy$2;
             mul$5$b = g0$xf$2;
         end
-        if ((lane$7 == 5) & act_r$7$q) begin
+        if ((lane$7 == 5) & act$7) begin
             mul$5$a = g0$edx$2[(32'h0)+:(57)];
             mul$5$b = g0$toff$2;
         end
-        if ((lane$2 == 5) & add_r$2$q) begin
+        if ((lane$2 == 5) & add$2) begin
             pn$0 = mul$5$p;
         end
-        if ((lane$3 == 5) & add_r$3$q) begin
+        if ((lane$3 == 5) & add$3) begin
             pn$1 = mul$5$p;
         end
-        if ((lane$4 == 5) & add_r$4$q) begin
+        if ((lane$4 == 5) & add$4) begin
             pn$2 = mul$5$p;
         end
-        if ((lane$5 == 5) & add_r$5$q) begin
+        if ((lane$5 == 5) & add$5) begin
             pn$3 = mul$5$p;
         end
-        if ((lane$6 == 5) & add_r$6$q) begin
+        if ((lane$6 == 5) & add$6) begin
             pn$4 = mul$5$p;
         end
-        if ((lane$7 == 5) & add_r$7$q) begin
+        if ((lane$7 == 5) & add$7) begin
             pn$5 = mul$5$p;
         end
-        if ((lane$8 == 5) & act_r$8$q) begin
+        if ((lane$8 == 5) & act$8) begin
             mul$5$a = mant_s$q;
             mul$5$b = op_e$0;
         end
-        if ((lane$8 == 5) & add_r$8$q) begin
+        if ((lane$8 == 5) & add$8) begin
             pe$0 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 5) & act_r$9$q) begin
+        if ((lane$9 == 5) & act$9) begin
             mul$5$a = mant_s$q;
             mul$5$b = op_e$1;
         end
-        if ((lane$9 == 5) & add_r$9$q) begin
+        if ((lane$9 == 5) & add$9) begin
             pe$1 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 5) & act_r$10$q) begin
+        if ((lane$10 == 5) & act$10) begin
             mul$5$a = mant_s$q;
             mul$5$b = op_e$2;
         end
-        if ((lane$10 == 5) & add_r$10$q) begin
+        if ((lane$10 == 5) & add$10) begin
             pe$2 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 5) & act_r$11$q) begin
+        if ((lane$11 == 5) & act$11) begin
             mul$5$a = mant_s$q;
             mul$5$b = op_e$3;
         end
-        if ((lane$11 == 5) & add_r$11$q) begin
+        if ((lane$11 == 5) & add$11) begin
             pe$3 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 5) & act_r$12$q) begin
+        if ((lane$12 == 5) & act$12) begin
             mul$5$a = p$3$q;
             mul$5$b = op_g$0;
         end
-        if ((lane$13 == 5) & act_r$13$q) begin
+        if ((lane$13 == 5) & act$13) begin
             mul$5$a = p$2$q;
             mul$5$b = op_g$1;
         end
-        if ((lane$14 == 5) & act_r$14$q) begin
+        if ((lane$14 == 5) & act$14) begin
             mul$5$a = p$0$q;
             mul$5$b = op_g$2;
         end
-        if ((lane$15 == 5) & act_r$15$q) begin
+        if ((lane$15 == 5) & act$15) begin
             mul$5$a = p$1$q;
             mul$5$b = op_g$3;
         end
-        if ((lane$16 == 5) & act_r$16$q) begin
+        if ((lane$16 == 5) & act$16) begin
             mul$5$a = p$3$q;
             mul$5$b = op_g$4;
         end
-        if ((lane$17 == 5) & act_r$17$q) begin
+        if ((lane$17 == 5) & act$17) begin
             mul$5$a = p$2$q;
             mul$5$b = op_g$5;
         end
-        if ((lane$18 == 5) & act_r$18$q) begin
+        if ((lane$18 == 5) & act$18) begin
             mul$5$a = p$0$q;
             mul$5$b = op_g$6;
         end
-        if ((lane$19 == 5) & act_r$19$q) begin
+        if ((lane$19 == 5) & act$19) begin
             mul$5$a = p$1$q;
             mul$5$b = op_g$7;
         end
-        if ((lane$20 == 5) & act_r$20$q) begin
+        if ((lane$20 == 5) & act$20) begin
             mul$5$a = p$3$q;
             mul$5$b = op_g$8;
         end
-        if ((lane$21 == 5) & act_r$21$q) begin
+        if ((lane$21 == 5) & act$21) begin
             mul$5$a = p$2$q;
             mul$5$b = op_g$9;
         end
-        if ((lane$22 == 5) & act_r$22$q) begin
+        if ((lane$22 == 5) & act$22) begin
             mul$5$a = p$0$q;
             mul$5$b = op_g$10;
         end
-        if ((lane$23 == 5) & act_r$23$q) begin
+        if ((lane$23 == 5) & act$23) begin
             mul$5$a = p$1$q;
             mul$5$b = op_g$11;
         end
-        if ((lane$24 == 5) & act_r$24$q) begin
+        if ((lane$24 == 5) & act$24) begin
             mul$5$a = p$3$q;
             mul$5$b = op_g$12;
         end
-        if ((lane$25 == 5) & act_r$25$q) begin
+        if ((lane$25 == 5) & act$25) begin
             mul$5$a = p$2$q;
             mul$5$b = op_g$13;
         end
-        if ((lane$26 == 5) & act_r$26$q) begin
+        if ((lane$26 == 5) & act$26) begin
             mul$5$a = p$0$q;
             mul$5$b = op_g$14;
         end
-        if ((lane$27 == 5) & act_r$27$q) begin
+        if ((lane$27 == 5) & act$27) begin
             mul$5$a = p$1$q;
             mul$5$b = op_g$15;
         end
-        if ((lane$12 == 5) & add_r$12$q) begin
+        if ((lane$12 == 5) & add$12) begin
             pg$0 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 5) & add_r$13$q) begin
+        if ((lane$13 == 5) & add$13) begin
             pg$1 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 5) & add_r$14$q) begin
+        if ((lane$14 == 5) & add$14) begin
             pg$2 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 5) & add_r$15$q) begin
+        if ((lane$15 == 5) & add$15) begin
             pg$3 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 5) & add_r$16$q) begin
+        if ((lane$16 == 5) & add$16) begin
             pg$4 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 5) & add_r$17$q) begin
+        if ((lane$17 == 5) & add$17) begin
             pg$5 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 5) & add_r$18$q) begin
+        if ((lane$18 == 5) & add$18) begin
             pg$6 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 5) & add_r$19$q) begin
+        if ((lane$19 == 5) & add$19) begin
             pg$7 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 5) & add_r$20$q) begin
+        if ((lane$20 == 5) & add$20) begin
             pg$8 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 5) & add_r$21$q) begin
+        if ((lane$21 == 5) & add$21) begin
             pg$9 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 5) & add_r$22$q) begin
+        if ((lane$22 == 5) & add$22) begin
             pg$10 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 5) & add_r$23$q) begin
+        if ((lane$23 == 5) & add$23) begin
             pg$11 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 5) & add_r$24$q) begin
+        if ((lane$24 == 5) & add$24) begin
             pg$12 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 5) & add_r$25$q) begin
+        if ((lane$25 == 5) & add$25) begin
             pg$13 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 5) & add_r$26$q) begin
+        if ((lane$26 == 5) & add$26) begin
             pg$14 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 5) & add_r$27$q) begin
+        if ((lane$27 == 5) & add$27) begin
             pg$15 = mul$5$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 5) & act_r$28$q) begin
+        if ((lane$28 == 5) & act$28) begin
             mul$5$a = ddx$0;
             mul$5$b = op_s$0;
         end
-        if ((lane$29 == 5) & act_r$29$q) begin
+        if ((lane$29 == 5) & act$29) begin
             mul$5$a = ddy$0;
             mul$5$b = op_s$1;
         end
-        if ((lane$30 == 5) & act_r$30$q) begin
+        if ((lane$30 == 5) & act$30) begin
             mul$5$a = ddx$0;
             mul$5$b = op_q$0;
         end
-        if ((lane$31 == 5) & act_r$31$q) begin
+        if ((lane$31 == 5) & act$31) begin
             mul$5$a = ddx$1;
             mul$5$b = op_s$2;
         end
-        if ((lane$32 == 5) & act_r$32$q) begin
+        if ((lane$32 == 5) & act$32) begin
             mul$5$a = ddy$1;
             mul$5$b = op_s$3;
         end
-        if ((lane$33 == 5) & act_r$33$q) begin
+        if ((lane$33 == 5) & act$33) begin
             mul$5$a = ddx$1;
             mul$5$b = op_q$1;
         end
-        if ((lane$34 == 5) & act_r$34$q) begin
+        if ((lane$34 == 5) & act$34) begin
             mul$5$a = ddx$2;
             mul$5$b = op_s$4;
         end
-        if ((lane$35 == 5) & act_r$35$q) begin
+        if ((lane$35 == 5) & act$35) begin
             mul$5$a = ddy$2;
             mul$5$b = op_s$5;
         end
-        if ((lane$36 == 5) & act_r$36$q) begin
+        if ((lane$36 == 5) & act$36) begin
             mul$5$a = ddx$2;
             mul$5$b = op_q$2;
         end
-        if ((lane$37 == 5) & act_r$37$q) begin
+        if ((lane$37 == 5) & act$37) begin
             mul$5$a = ddx$3;
             mul$5$b = op_s$6;
         end
-        if ((lane$38 == 5) & act_r$38$q) begin
+        if ((lane$38 == 5) & act$38) begin
             mul$5$a = ddy$3;
             mul$5$b = op_s$7;
         end
-        if ((lane$39 == 5) & act_r$39$q) begin
+        if ((lane$39 == 5) & act$39) begin
             mul$5$a = ddx$3;
             mul$5$b = op_q$3;
         end
-        if ((lane$40 == 5) & act_r$40$q) begin
+        if ((lane$40 == 5) & act$40) begin
             mul$5$a = ddx$0;
             mul$5$b = op_s$8;
         end
-        if ((lane$41 == 5) & act_r$41$q) begin
+        if ((lane$41 == 5) & act$41) begin
             mul$5$a = ddy$0;
             mul$5$b = op_s$9;
         end
-        if ((lane$42 == 5) & act_r$42$q) begin
+        if ((lane$42 == 5) & act$42) begin
             mul$5$a = ddx$0;
             mul$5$b = op_q$4;
         end
-        if ((lane$43 == 5) & act_r$43$q) begin
+        if ((lane$43 == 5) & act$43) begin
             mul$5$a = ddx$1;
             mul$5$b = op_s$10;
         end
-        if ((lane$44 == 5) & act_r$44$q) begin
+        if ((lane$44 == 5) & act$44) begin
             mul$5$a = ddy$1;
             mul$5$b = op_s$11;
         end
-        if ((lane$45 == 5) & act_r$45$q) begin
+        if ((lane$45 == 5) & act$45) begin
             mul$5$a = ddx$1;
             mul$5$b = op_q$5;
         end
-        if ((lane$46 == 5) & act_r$46$q) begin
+        if ((lane$46 == 5) & act$46) begin
             mul$5$a = ddx$2;
             mul$5$b = op_s$12;
         end
-        if ((lane$47 == 5) & act_r$47$q) begin
+        if ((lane$47 == 5) & act$47) begin
             mul$5$a = ddy$2;
             mul$5$b = op_s$13;
         end
-        if ((lane$48 == 5) & act_r$48$q) begin
+        if ((lane$48 == 5) & act$48) begin
             mul$5$a = ddx$2;
             mul$5$b = op_q$6;
         end
-        if ((lane$49 == 5) & act_r$49$q) begin
+        if ((lane$49 == 5) & act$49) begin
             mul$5$a = ddx$3;
             mul$5$b = op_s$14;
         end
-        if ((lane$50 == 5) & act_r$50$q) begin
+        if ((lane$50 == 5) & act$50) begin
             mul$5$a = ddy$3;
             mul$5$b = op_s$15;
         end
-        if ((lane$51 == 5) & act_r$51$q) begin
+        if ((lane$51 == 5) & act$51) begin
             mul$5$a = ddx$3;
             mul$5$b = op_q$7;
         end
-        if ((lane$52 == 5) & act_r$52$q) begin
+        if ((lane$52 == 5) & act$52) begin
             mul$5$a = ddx$0;
             mul$5$b = op_s$16;
         end
-        if ((lane$53 == 5) & act_r$53$q) begin
+        if ((lane$53 == 5) & act$53) begin
             mul$5$a = ddy$0;
             mul$5$b = op_s$17;
         end
-        if ((lane$54 == 5) & act_r$54$q) begin
+        if ((lane$54 == 5) & act$54) begin
             mul$5$a = ddx$0;
             mul$5$b = op_q$8;
         end
-        if ((lane$55 == 5) & act_r$55$q) begin
+        if ((lane$55 == 5) & act$55) begin
             mul$5$a = ddx$1;
             mul$5$b = op_s$18;
         end
-        if ((lane$56 == 5) & act_r$56$q) begin
+        if ((lane$56 == 5) & act$56) begin
             mul$5$a = ddy$1;
             mul$5$b = op_s$19;
         end
-        if ((lane$57 == 5) & act_r$57$q) begin
+        if ((lane$57 == 5) & act$57) begin
             mul$5$a = ddx$1;
             mul$5$b = op_q$9;
         end
-        if ((lane$58 == 5) & act_r$58$q) begin
+        if ((lane$58 == 5) & act$58) begin
             mul$5$a = ddx$2;
             mul$5$b = op_s$20;
         end
-        if ((lane$59 == 5) & act_r$59$q) begin
+        if ((lane$59 == 5) & act$59) begin
             mul$5$a = ddy$2;
             mul$5$b = op_s$21;
         end
-        if ((lane$60 == 5) & act_r$60$q) begin
+        if ((lane$60 == 5) & act$60) begin
             mul$5$a = ddx$2;
             mul$5$b = op_q$10;
         end
-        if ((lane$61 == 5) & act_r$61$q) begin
+        if ((lane$61 == 5) & act$61) begin
             mul$5$a = ddx$3;
             mul$5$b = op_s$22;
         end
-        if ((lane$62 == 5) & act_r$62$q) begin
+        if ((lane$62 == 5) & act$62) begin
             mul$5$a = ddy$3;
             mul$5$b = op_s$23;
         end
-        if ((lane$63 == 5) & act_r$63$q) begin
+        if ((lane$63 == 5) & act$63) begin
             mul$5$a = ddx$3;
             mul$5$b = op_q$11;
         end
-        if ((lane$28 == 5) & add_r$28$q) begin
+        if ((lane$28 == 5) & add$28) begin
             ps$0 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 5) & add_r$29$q) begin
+        if ((lane$29 == 5) & add$29) begin
             ps$1 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 5) & add_r$30$q) begin
+        if ((lane$30 == 5) & add$30) begin
             ps$2 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$31 == 5) & add_r$31$q) begin
+        if ((lane$31 == 5) & add$31) begin
             ps$3 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 5) & add_r$32$q) begin
+        if ((lane$32 == 5) & add$32) begin
             ps$4 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 5) & add_r$33$q) begin
+        if ((lane$33 == 5) & add$33) begin
             ps$5 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$34 == 5) & add_r$34$q) begin
+        if ((lane$34 == 5) & add$34) begin
             ps$6 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 5) & add_r$35$q) begin
+        if ((lane$35 == 5) & add$35) begin
             ps$7 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 5) & add_r$36$q) begin
+        if ((lane$36 == 5) & add$36) begin
             ps$8 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$37 == 5) & add_r$37$q) begin
+        if ((lane$37 == 5) & add$37) begin
             ps$9 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 5) & add_r$38$q) begin
+        if ((lane$38 == 5) & add$38) begin
             ps$10 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 5) & add_r$39$q) begin
+        if ((lane$39 == 5) & add$39) begin
             ps$11 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$40 == 5) & add_r$40$q) begin
+        if ((lane$40 == 5) & add$40) begin
             ps$12 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 5) & add_r$41$q) begin
+        if ((lane$41 == 5) & add$41) begin
             ps$13 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 5) & add_r$42$q) begin
+        if ((lane$42 == 5) & add$42) begin
             ps$14 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$43 == 5) & add_r$43$q) begin
+        if ((lane$43 == 5) & add$43) begin
             ps$15 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 5) & add_r$44$q) begin
+        if ((lane$44 == 5) & add$44) begin
             ps$16 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 5) & add_r$45$q) begin
+        if ((lane$45 == 5) & add$45) begin
             ps$17 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$46 == 5) & add_r$46$q) begin
+        if ((lane$46 == 5) & add$46) begin
             ps$18 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 5) & add_r$47$q) begin
+        if ((lane$47 == 5) & add$47) begin
             ps$19 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 5) & add_r$48$q) begin
+        if ((lane$48 == 5) & add$48) begin
             ps$20 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$49 == 5) & add_r$49$q) begin
+        if ((lane$49 == 5) & add$49) begin
             ps$21 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 5) & add_r$50$q) begin
+        if ((lane$50 == 5) & add$50) begin
             ps$22 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 5) & add_r$51$q) begin
+        if ((lane$51 == 5) & add$51) begin
             ps$23 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$52 == 5) & add_r$52$q) begin
+        if ((lane$52 == 5) & add$52) begin
             ps$24 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 5) & add_r$53$q) begin
+        if ((lane$53 == 5) & add$53) begin
             ps$25 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 5) & add_r$54$q) begin
+        if ((lane$54 == 5) & add$54) begin
             ps$26 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$55 == 5) & add_r$55$q) begin
+        if ((lane$55 == 5) & add$55) begin
             ps$27 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 5) & add_r$56$q) begin
+        if ((lane$56 == 5) & add$56) begin
             ps$28 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 5) & add_r$57$q) begin
+        if ((lane$57 == 5) & add$57) begin
             ps$29 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$58 == 5) & add_r$58$q) begin
+        if ((lane$58 == 5) & add$58) begin
             ps$30 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 5) & add_r$59$q) begin
+        if ((lane$59 == 5) & add$59) begin
             ps$31 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 5) & add_r$60$q) begin
+        if ((lane$60 == 5) & add$60) begin
             ps$32 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$61 == 5) & add_r$61$q) begin
+        if ((lane$61 == 5) & add$61) begin
             ps$33 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 5) & add_r$62$q) begin
+        if ((lane$62 == 5) & add$62) begin
             ps$34 = mul$5$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 5) & add_r$63$q) begin
+        if ((lane$63 == 5) & add$63) begin
             ps$35 = mul$5$p[(32'h0)+:(40)];
         end
         mul$6$en = run;
-        if ((lane$0 == 6) & act_r$0$q) begin
+        if ((lane$0 == 6) & act$0) begin
             mul$6$a = g0$kdx$0[(32'h0)+:(57)];
             mul$6$b = g0$kdy$1[(32'h0)+:(19)];
         end
-        if ((lane$1 == 6) & act_r$1$q) begin
+        if ((lane$1 == 6) & act$1) begin
             mul$6$a = g0$kdx$1[(32'h0)+:(57)];
             mul$6$b = g0$kdy$0[(32'h0)+:(19)];
         end
-        if ((lane$0 == 6) & add_r$0$q) begin
+        if ((lane$0 == 6) & add$0) begin
             pa$0 = mul$6$p[(32'h0)+:(34)];
         end
-        if ((lane$1 == 6) & add_r$1$q) begin
+        if ((lane$1 == 6) & add$1) begin
             pa$1 = mul$6$p[(32'h0)+:(34)];
         end
-        if ((lane$2 == 6) & act_r$2$q) begin
+        if ((lane$2 == 6) & act$2) begin
             mul$6$a = g0$edy$0;
             mul$6$b = g0$xf$0;
         end
-        if ((lane$3 == 6) & act_r$3$q) begin
+        if ((lane$3 == 6) & act$3) begin
             mul$6$a = g0$edx$0[(32'h0)+:(57)];
             mul$6$b = g0$toff$0;
         end
-        if ((lane$4 == 6) & act_r$4$q) begin
+        if ((lane$4 == 6) & act$4) begin
             mul$6$a = g0$edy$1;
             mul$6$b = g0$xf$1;
         end
-        if ((lane$5 == 6) & act_r$5$q) begin
+        if ((lane$5 == 6) & act$5) begin
             mul$6$a = g0$edx$1[(32'h0)+:(57)];
             mul$6$b = g0$toff$1;
         end
-        if ((lane$6 == 6) & act_r$6$q) begin
+        if ((lane$6 == 6) & act$6) begin
             mul$6$a = g0$edy$2;
             mul$6$b = g0$xf$2;
         end
-        if ((lane$7 == 6) & act_r$7$q) begin
+        if ((lane$7 == 6) & act$7) begin
             mul$6$a = g0$edx$2[(32'h0)+:(57)];
             mul$6$b = g0$toff$2;
         end
-        if ((lane$2 == 6) & add_r$2$q) begin
+        if ((lane$2 == 6) & add$2) begin
             pn$0 = mul$6$p;
         end
-        if ((lane$3 == 6) & add_r$3$q) begin
+        if ((lane$3 == 6) & add$3) begin
             pn$1 = mul$6$p;
         end
-        if ((lane$4 == 6) & add_r$4$q) begin
+        if ((lane$4 == 6) & add$4) begin
             pn$2 = mul$6$p;
         end
-        if ((lane$5 == 6) & add_r$5$q) begin
+        if ((lane$5 == 6) & add$5) begin
             pn$3 = mul$6$p;
         end
-        if ((lane$6 == 6) & add_r$6$q) begin
+        if ((lane$6 == 6) & add$6) begin
             pn$4 = mul$6$p;
         end
-        if ((lane$7 == 6) & add_r$7$q) begin
+        if ((lane$7 == 6) & add$7) begin
             pn$5 = mul$6$p;
         end
-        if ((lane$8 == 6) & act_r$8$q) begin
+        if ((lane$8 == 6) & act$8) begin
             mul$6$a = mant_s$q;
             mul$6$b = op_e$0;
         end
-        if ((lane$8 == 6) & add_r$8$q) begin
+        if ((lane$8 == 6) & add$8) begin
             pe$0 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$9 == 6) & act_r$9$q) begin
+        if ((lane$9 == 6) & act$9) begin
             mul$6$a = mant_s$q;
             mul$6$b = op_e$1;
         end
-        if ((lane$9 == 6) & add_r$9$q) begin
+        if ((lane$9 == 6) & add$9) begin
             pe$1 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$10 == 6) & act_r$10$q) begin
+        if ((lane$10 == 6) & act$10) begin
             mul$6$a = mant_s$q;
             mul$6$b = op_e$2;
         end
-        if ((lane$10 == 6) & add_r$10$q) begin
+        if ((lane$10 == 6) & add$10) begin
             pe$2 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$11 == 6) & act_r$11$q) begin
+        if ((lane$11 == 6) & act$11) begin
             mul$6$a = mant_s$q;
             mul$6$b = op_e$3;
         end
-        if ((lane$11 == 6) & add_r$11$q) begin
+        if ((lane$11 == 6) & add$11) begin
             pe$3 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$12 == 6) & act_r$12$q) begin
+        if ((lane$12 == 6) & act$12) begin
             mul$6$a = p$3$q;
             mul$6$b = op_g$0;
         end
-        if ((lane$13 == 6) & act_r$13$q) begin
+        if ((lane$13 == 6) & act$13) begin
             mul$6$a = p$2$q;
             mul$6$b = op_g$1;
         end
-        if ((lane$14 == 6) & act_r$14$q) begin
+        if ((lane$14 == 6) & act$14) begin
             mul$6$a = p$0$q;
             mul$6$b = op_g$2;
         end
-        if ((lane$15 == 6) & act_r$15$q) begin
+        if ((lane$15 == 6) & act$15) begin
             mul$6$a = p$1$q;
             mul$6$b = op_g$3;
         end
-        if ((lane$16 == 6) & act_r$16$q) begin
+        if ((lane$16 == 6) & act$16) begin
             mul$6$a = p$3$q;
             mul$6$b = op_g$4;
         end
-        if ((lane$17 == 6) & act_r$17$q) begin
+        if ((lane$17 == 6) & act$17) begin
             mul$6$a = p$2$q;
             mul$6$b = op_g$5;
         end
-        if ((lane$18 == 6) & act_r$18$q) begin
+        if ((lane$18 == 6) & act$18) begin
             mul$6$a = p$0$q;
             mul$6$b = op_g$6;
         end
-        if ((lane$19 == 6) & act_r$19$q) begin
+        if ((lane$19 == 6) & act$19) begin
             mul$6$a = p$1$q;
             mul$6$b = op_g$7;
         end
-        if ((lane$20 == 6) & act_r$20$q) begin
+        if ((lane$20 == 6) & act$20) begin
             mul$6$a = p$3$q;
             mul$6$b = op_g$8;
         end
-        if ((lane$21 == 6) & act_r$21$q) begin
+        if ((lane$21 == 6) & act$21) begin
             mul$6$a = p$2$q;
             mul$6$b = op_g$9;
         end
-        if ((lane$22 == 6) & act_r$22$q) begin
+        if ((lane$22 == 6) & act$22) begin
             mul$6$a = p$0$q;
             mul$6$b = op_g$10;
         end
-        if ((lane$23 == 6) & act_r$23$q) begin
+        if ((lane$23 == 6) & act$23) begin
             mul$6$a = p$1$q;
             mul$6$b = op_g$11;
         end
-        if ((lane$24 == 6) & act_r$24$q) begin
+        if ((lane$24 == 6) & act$24) begin
             mul$6$a = p$3$q;
             mul$6$b = op_g$12;
         end
-        if ((lane$25 == 6) & act_r$25$q) begin
+        if ((lane$25 == 6) & act$25) begin
             mul$6$a = p$2$q;
             mul$6$b = op_g$13;
         end
-        if ((lane$26 == 6) & act_r$26$q) begin
+        if ((lane$26 == 6) & act$26) begin
             mul$6$a = p$0$q;
             mul$6$b = op_g$14;
         end
-        if ((lane$27 == 6) & act_r$27$q) begin
+        if ((lane$27 == 6) & act$27) begin
             mul$6$a = p$1$q;
             mul$6$b = op_g$15;
         end
-        if ((lane$12 == 6) & add_r$12$q) begin
+        if ((lane$12 == 6) & add$12) begin
             pg$0 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$13 == 6) & add_r$13$q) begin
+        if ((lane$13 == 6) & add$13) begin
             pg$1 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$14 == 6) & add_r$14$q) begin
+        if ((lane$14 == 6) & add$14) begin
             pg$2 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$15 == 6) & add_r$15$q) begin
+        if ((lane$15 == 6) & add$15) begin
             pg$3 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$16 == 6) & add_r$16$q) begin
+        if ((lane$16 == 6) & add$16) begin
             pg$4 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$17 == 6) & add_r$17$q) begin
+        if ((lane$17 == 6) & add$17) begin
             pg$5 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$18 == 6) & add_r$18$q) begin
+        if ((lane$18 == 6) & add$18) begin
             pg$6 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$19 == 6) & add_r$19$q) begin
+        if ((lane$19 == 6) & add$19) begin
             pg$7 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$20 == 6) & add_r$20$q) begin
+        if ((lane$20 == 6) & add$20) begin
             pg$8 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$21 == 6) & add_r$21$q) begin
+        if ((lane$21 == 6) & add$21) begin
             pg$9 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$22 == 6) & add_r$22$q) begin
+        if ((lane$22 == 6) & add$22) begin
             pg$10 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$23 == 6) & add_r$23$q) begin
+        if ((lane$23 == 6) & add$23) begin
             pg$11 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$24 == 6) & add_r$24$q) begin
+        if ((lane$24 == 6) & add$24) begin
             pg$12 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$25 == 6) & add_r$25$q) begin
+        if ((lane$25 == 6) & add$25) begin
             pg$13 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$26 == 6) & add_r$26$q) begin
+        if ((lane$26 == 6) & add$26) begin
             pg$14 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$27 == 6) & add_r$27$q) begin
+        if ((lane$27 == 6) & add$27) begin
             pg$15 = mul$6$p[(32'h0)+:(57)];
         end
-        if ((lane$28 == 6) & act_r$28$q) begin
+        if ((lane$28 == 6) & act$28) begin
             mul$6$a = ddx$0;
             mul$6$b = op_s$0;
         end
-        if ((lane$29 == 6) & act_r$29$q) begin
+        if ((lane$29 == 6) & act$29) begin
             mul$6$a = ddy$0;
             mul$6$b = op_s$1;
         end
-        if ((lane$30 == 6) & act_r$30$q) begin
+        if ((lane$30 == 6) & act$30) begin
             mul$6$a = ddx$0;
             mul$6$b = op_q$0;
         end
-        if ((lane$31 == 6) & act_r$31$q) begin
+        if ((lane$31 == 6) & act$31) begin
             mul$6$a = ddx$1;
             mul$6$b = op_s$2;
         end
-        if ((lane$32 == 6) & act_r$32$q) begin
+        if ((lane$32 == 6) & act$32) begin
             mul$6$a = ddy$1;
             mul$6$b = op_s$3;
         end
-        if ((lane$33 == 6) & act_r$33$q) begin
+        if ((lane$33 == 6) & act$33) begin
             mul$6$a = ddx$1;
             mul$6$b = op_q$1;
         end
-        if ((lane$34 == 6) & act_r$34$q) begin
+        if ((lane$34 == 6) & act$34) begin
             mul$6$a = ddx$2;
             mul$6$b = op_s$4;
         end
-        if ((lane$35 == 6) & act_r$35$q) begin
+        if ((lane$35 == 6) & act$35) begin
             mul$6$a = ddy$2;
             mul$6$b = op_s$5;
         end
-        if ((lane$36 == 6) & act_r$36$q) begin
+        if ((lane$36 == 6) & act$36) begin
             mul$6$a = ddx$2;
             mul$6$b = op_q$2;
         end
-        if ((lane$37 == 6) & act_r$37$q) begin
+        if ((lane$37 == 6) & act$37) begin
             mul$6$a = ddx$3;
             mul$6$b = op_s$6;
         end
-        if ((lane$38 == 6) & act_r$38$q) begin
+        if ((lane$38 == 6) & act$38) begin
             mul$6$a = ddy$3;
             mul$6$b = op_s$7;
         end
-        if ((lane$39 == 6) & act_r$39$q) begin
+        if ((lane$39 == 6) & act$39) begin
             mul$6$a = ddx$3;
             mul$6$b = op_q$3;
         end
-        if ((lane$40 == 6) & act_r$40$q) begin
+        if ((lane$40 == 6) & act$40) begin
             mul$6$a = ddx$0;
             mul$6$b = op_s$8;
         end
-        if ((lane$41 == 6) & act_r$41$q) begin
+        if ((lane$41 == 6) & act$41) begin
             mul$6$a = ddy$0;
             mul$6$b = op_s$9;
         end
-        if ((lane$42 == 6) & act_r$42$q) begin
+        if ((lane$42 == 6) & act$42) begin
             mul$6$a = ddx$0;
             mul$6$b = op_q$4;
         end
-        if ((lane$43 == 6) & act_r$43$q) begin
+        if ((lane$43 == 6) & act$43) begin
             mul$6$a = ddx$1;
             mul$6$b = op_s$10;
         end
-        if ((lane$44 == 6) & act_r$44$q) begin
+        if ((lane$44 == 6) & act$44) begin
             mul$6$a = ddy$1;
             mul$6$b = op_s$11;
         end
-        if ((lane$45 == 6) & act_r$45$q) begin
+        if ((lane$45 == 6) & act$45) begin
             mul$6$a = ddx$1;
             mul$6$b = op_q$5;
         end
-        if ((lane$46 == 6) & act_r$46$q) begin
+        if ((lane$46 == 6) & act$46) begin
             mul$6$a = ddx$2;
             mul$6$b = op_s$12;
         end
-        if ((lane$47 == 6) & act_r$47$q) begin
+        if ((lane$47 == 6) & act$47) begin
             mul$6$a = ddy$2;
             mul$6$b = op_s$13;
         end
-        if ((lane$48 == 6) & act_r$48$q) begin
+        if ((lane$48 == 6) & act$48) begin
             mul$6$a = ddx$2;
             mul$6$b = op_q$6;
         end
-        if ((lane$49 == 6) & act_r$49$q) begin
+        if ((lane$49 == 6) & act$49) begin
             mul$6$a = ddx$3;
             mul$6$b = op_s$14;
         end
-        if ((lane$50 == 6) & act_r$50$q) begin
+        if ((lane$50 == 6) & act$50) begin
             mul$6$a = ddy$3;
             mul$6$b = op_s$15;
         end
-        if ((lane$51 == 6) & act_r$51$q) begin
+        if ((lane$51 == 6) & act$51) begin
             mul$6$a = ddx$3;
             mul$6$b = op_q$7;
         end
-        if ((lane$52 == 6) & act_r$52$q) begin
+        if ((lane$52 == 6) & act$52) begin
             mul$6$a = ddx$0;
             mul$6$b = op_s$16;
         end
-        if ((lane$53 == 6) & act_r$53$q) begin
+        if ((lane$53 == 6) & act$53) begin
             mul$6$a = ddy$0;
             mul$6$b = op_s$17;
         end
-        if ((lane$54 == 6) & act_r$54$q) begin
+        if ((lane$54 == 6) & act$54) begin
             mul$6$a = ddx$0;
             mul$6$b = op_q$8;
         end
-        if ((lane$55 == 6) & act_r$55$q) begin
+        if ((lane$55 == 6) & act$55) begin
             mul$6$a = ddx$1;
             mul$6$b = op_s$18;
         end
-        if ((lane$56 == 6) & act_r$56$q) begin
+        if ((lane$56 == 6) & act$56) begin
             mul$6$a = ddy$1;
             mul$6$b = op_s$19;
         end
-        if ((lane$57 == 6) & act_r$57$q) begin
+        if ((lane$57 == 6) & act$57) begin
             mul$6$a = ddx$1;
             mul$6$b = op_q$9;
         end
-        if ((lane$58 == 6) & act_r$58$q) begin
+        if ((lane$58 == 6) & act$58) begin
             mul$6$a = ddx$2;
             mul$6$b = op_s$20;
         end
-        if ((lane$59 == 6) & act_r$59$q) begin
+        if ((lane$59 == 6) & act$59) begin
             mul$6$a = ddy$2;
             mul$6$b = op_s$21;
         end
-        if ((lane$60 == 6) & act_r$60$q) begin
+        if ((lane$60 == 6) & act$60) begin
             mul$6$a = ddx$2;
             mul$6$b = op_q$10;
         end
-        if ((lane$61 == 6) & act_r$61$q) begin
+        if ((lane$61 == 6) & act$61) begin
             mul$6$a = ddx$3;
             mul$6$b = op_s$22;
         end
-        if ((lane$62 == 6) & act_r$62$q) begin
+        if ((lane$62 == 6) & act$62) begin
             mul$6$a = ddy$3;
             mul$6$b = op_s$23;
         end
-        if ((lane$63 == 6) & act_r$63$q) begin
+        if ((lane$63 == 6) & act$63) begin
             mul$6$a = ddx$3;
             mul$6$b = op_q$11;
         end
-        if ((lane$28 == 6) & add_r$28$q) begin
+        if ((lane$28 == 6) & add$28) begin
             ps$0 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$29 == 6) & add_r$29$q) begin
+        if ((lane$29 == 6) & add$29) begin
             ps$1 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$30 == 6) & add_r$30$q) begin
+        if ((lane$30 == 6) & add$30) begin
             ps$2 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$31 == 6) & add_r$31$q) begin
+        if ((lane$31 == 6) & add$31) begin
             ps$3 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$32 == 6) & add_r$32$q) begin
+        if ((lane$32 == 6) & add$32) begin
             ps$4 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$33 == 6) & add_r$33$q) begin
+        if ((lane$33 == 6) & add$33) begin
             ps$5 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$34 == 6) & add_r$34$q) begin
+        if ((lane$34 == 6) & add$34) begin
             ps$6 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$35 == 6) & add_r$35$q) begin
+        if ((lane$35 == 6) & add$35) begin
             ps$7 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$36 == 6) & add_r$36$q) begin
+        if ((lane$36 == 6) & add$36) begin
             ps$8 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$37 == 6) & add_r$37$q) begin
+        if ((lane$37 == 6) & add$37) begin
             ps$9 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$38 == 6) & add_r$38$q) begin
+        if ((lane$38 == 6) & add$38) begin
             ps$10 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$39 == 6) & add_r$39$q) begin
+        if ((lane$39 == 6) & add$39) begin
             ps$11 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$40 == 6) & add_r$40$q) begin
+        if ((lane$40 == 6) & add$40) begin
             ps$12 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$41 == 6) & add_r$41$q) begin
+        if ((lane$41 == 6) & add$41) begin
             ps$13 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$42 == 6) & add_r$42$q) begin
+        if ((lane$42 == 6) & add$42) begin
             ps$14 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$43 == 6) & add_r$43$q) begin
+        if ((lane$43 == 6) & add$43) begin
             ps$15 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$44 == 6) & add_r$44$q) begin
+        if ((lane$44 == 6) & add$44) begin
             ps$16 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$45 == 6) & add_r$45$q) begin
+        if ((lane$45 == 6) & add$45) begin
             ps$17 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$46 == 6) & add_r$46$q) begin
+        if ((lane$46 == 6) & add$46) begin
             ps$18 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$47 == 6) & add_r$47$q) begin
+        if ((lane$47 == 6) & add$47) begin
             ps$19 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$48 == 6) & add_r$48$q) begin
+        if ((lane$48 == 6) & add$48) begin
             ps$20 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$49 == 6) & add_r$49$q) begin
+        if ((lane$49 == 6) & add$49) begin
             ps$21 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$50 == 6) & add_r$50$q) begin
+        if ((lane$50 == 6) & add$50) begin
             ps$22 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$51 == 6) & add_r$51$q) begin
+        if ((lane$51 == 6) & add$51) begin
             ps$23 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$52 == 6) & add_r$52$q) begin
+        if ((lane$52 == 6) & add$52) begin
             ps$24 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$53 == 6) & add_r$53$q) begin
+        if ((lane$53 == 6) & add$53) begin
             ps$25 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$54 == 6) & add_r$54$q) begin
+        if ((lane$54 == 6) & add$54) begin
             ps$26 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$55 == 6) & add_r$55$q) begin
+        if ((lane$55 == 6) & add$55) begin
             ps$27 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$56 == 6) & add_r$56$q) begin
+        if ((lane$56 == 6) & add$56) begin
             ps$28 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$57 == 6) & add_r$57$q) begin
+        if ((lane$57 == 6) & add$57) begin
             ps$29 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$58 == 6) & add_r$58$q) begin
+        if ((lane$58 == 6) & add$58) begin
             ps$30 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$59 == 6) & add_r$59$q) begin
+        if ((lane$59 == 6) & add$59) begin
             ps$31 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$60 == 6) & add_r$60$q) begin
+        if ((lane$60 == 6) & add$60) begin
             ps$32 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$61 == 6) & add_r$61$q) begin
+        if ((lane$61 == 6) & add$61) begin
             ps$33 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$62 == 6) & add_r$62$q) begin
+        if ((lane$62 == 6) & add$62) begin
             ps$34 = mul$6$p[(32'h0)+:(40)];
         end
-        if ((lane$63 == 6) & add_r$63$q) begin
+        if ((lane$63 == 6) & add$63) begin
             ps$35 = mul$6$p[(32'h0)+:(40)];
         end
         area_base = area$q;
-        if (add_r$0$q) begin
+        if (add$0) begin
             area_base = 32'h0;
         end
         num_base$0 = num$0$q;
-        if (add_r$2$q) begin
+        if (add$2) begin
             num_base$0 = 32'h0;
         end
         num_base$1 = num$1$q;
-        if (add_r$4$q) begin
+        if (add$4) begin
             num_base$1 = 32'h0;
         end
         num_base$2 = num$2$q;
-        if (add_r$6$q) begin
+        if (add$6) begin
             num_base$2 = 32'h0;
         end
         shr$0 = pe$0 >> rsh$q;
@@ -17064,83 +11366,83 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             shr$3 = (pe$3 >> rsh$q) | ~(ones >> rsh$q);
         end
         gx_base$0 = gx$0$q;
-        if (add_r$12$q) begin
+        if (add$12) begin
             gx_base$0 = 32'h0;
         end
         gy_base$0 = gy$0$q;
-        if (add_r$14$q) begin
+        if (add$14) begin
             gy_base$0 = 32'h0;
         end
         gx_base$1 = gx$1$q;
-        if (add_r$16$q) begin
+        if (add$16) begin
             gx_base$1 = 32'h0;
         end
         gy_base$1 = gy$1$q;
-        if (add_r$18$q) begin
+        if (add$18) begin
             gy_base$1 = 32'h0;
         end
         gx_base$2 = gx$2$q;
-        if (add_r$20$q) begin
+        if (add$20) begin
             gx_base$2 = 32'h0;
         end
         gy_base$2 = gy$2$q;
-        if (add_r$22$q) begin
+        if (add$22) begin
             gy_base$2 = 32'h0;
         end
         gx_base$3 = gx$3$q;
-        if (add_r$24$q) begin
+        if (add$24) begin
             gx_base$3 = 32'h0;
         end
         gy_base$3 = gy$3$q;
-        if (add_r$26$q) begin
+        if (add$26) begin
             gy_base$3 = 32'h0;
         end
         plane_base$0 = plane$0$q;
-        if (add_r$28$q) begin
+        if (add$28) begin
             plane_base$0 = 32'h0;
         end
         plane_base$1 = plane$1$q;
-        if (add_r$31$q) begin
+        if (add$31) begin
             plane_base$1 = 32'h0;
         end
         plane_base$2 = plane$2$q;
-        if (add_r$34$q) begin
+        if (add$34) begin
             plane_base$2 = 32'h0;
         end
         plane_base$3 = plane$3$q;
-        if (add_r$37$q) begin
+        if (add$37) begin
             plane_base$3 = 32'h0;
         end
         plane_base$4 = plane$4$q;
-        if (add_r$40$q) begin
+        if (add$40) begin
             plane_base$4 = 32'h0;
         end
         plane_base$5 = plane$5$q;
-        if (add_r$43$q) begin
+        if (add$43) begin
             plane_base$5 = 32'h0;
         end
         plane_base$6 = plane$6$q;
-        if (add_r$46$q) begin
+        if (add$46) begin
             plane_base$6 = 32'h0;
         end
         plane_base$7 = plane$7$q;
-        if (add_r$49$q) begin
+        if (add$49) begin
             plane_base$7 = 32'h0;
         end
         plane_base$8 = plane$8$q;
-        if (add_r$52$q) begin
+        if (add$52) begin
             plane_base$8 = 32'h0;
         end
         plane_base$9 = plane$9$q;
-        if (add_r$55$q) begin
+        if (add$55) begin
             plane_base$9 = 32'h0;
         end
         plane_base$10 = plane$10$q;
-        if (add_r$58$q) begin
+        if (add$58) begin
             plane_base$10 = 32'h0;
         end
         plane_base$11 = plane$11$q;
-        if (add_r$61$q) begin
+        if (add$61) begin
             plane_base$11 = 32'h0;
         end
         if (run) begin
@@ -17148,25 +11450,25 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             num$0$d = num_base$0 + pn$0 + pn$1;
             num$1$d = num_base$1 + pn$2 + pn$3;
             num$2$d = num_base$2 + pn$4 + pn$5;
-            if (add_r$8$q) begin
+            if (add$8) begin
                 p$0$d = shr$0;
                 if (left$q) begin
                     p$0$d = pe$0;
                 end
             end
-            if (add_r$9$q) begin
+            if (add$9) begin
                 p$1$d = shr$1;
                 if (left$q) begin
                     p$1$d = pe$1;
                 end
             end
-            if (add_r$10$q) begin
+            if (add$10) begin
                 p$2$d = shr$2;
                 if (left$q) begin
                     p$2$d = pe$2;
                 end
             end
-            if (add_r$11$q) begin
+            if (add$11) begin
                 p$3$d = shr$3;
                 if (left$q) begin
                     p$3$d = pe$3;
@@ -17181,73 +11483,73 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             gx$3$d = gx_base$3 + pg$12 - pg$13;
             gy$3$d = gy_base$3 + pg$14 - pg$15;
             plane$0$d = plane_base$0 + ps$0 + ps$1;
-            if (add_r$30$q) begin
+            if (add$30) begin
                 inc0$0$d = ddy$0[(32'h0)+:(40)] + ps$2;
                 inc1$0$d = ddy$0[(32'h0)+:(40)] + ps$2 + ddx$0[(32'h0)+:(40)];
                 ddx_o$0$d = ddx$0[(32'h0)+:(40)];
             end
             plane$1$d = plane_base$1 + ps$3 + ps$4;
-            if (add_r$33$q) begin
+            if (add$33) begin
                 inc0$1$d = ddy$1[(32'h0)+:(40)] + ps$5;
                 inc1$1$d = ddy$1[(32'h0)+:(40)] + ps$5 + ddx$1[(32'h0)+:(40)];
                 ddx_o$1$d = ddx$1[(32'h0)+:(40)];
             end
             plane$2$d = plane_base$2 + ps$6 + ps$7;
-            if (add_r$36$q) begin
+            if (add$36) begin
                 inc0$2$d = ddy$2[(32'h0)+:(40)] + ps$8;
                 inc1$2$d = ddy$2[(32'h0)+:(40)] + ps$8 + ddx$2[(32'h0)+:(40)];
                 ddx_o$2$d = ddx$2[(32'h0)+:(40)];
             end
             plane$3$d = plane_base$3 + ps$9 + ps$10;
-            if (add_r$39$q) begin
+            if (add$39) begin
                 inc0$3$d = ddy$3[(32'h0)+:(40)] + ps$11;
                 inc1$3$d = ddy$3[(32'h0)+:(40)] + ps$11 + ddx$3[(32'h0)+:(40)];
                 ddx_o$3$d = ddx$3[(32'h0)+:(40)];
             end
             plane$4$d = plane_base$4 + ps$12 + ps$13;
-            if (add_r$42$q) begin
+            if (add$42) begin
                 inc0$4$d = ddy$0[(32'h0)+:(40)] + ps$14;
                 inc1$4$d = ddy$0[(32'h0)+:(40)] + ps$14 + ddx$0[(32'h0)+:(40)];
                 ddx_o$0$d = ddx$0[(32'h0)+:(40)];
             end
             plane$5$d = plane_base$5 + ps$15 + ps$16;
-            if (add_r$45$q) begin
+            if (add$45) begin
                 inc0$5$d = ddy$1[(32'h0)+:(40)] + ps$17;
                 inc1$5$d = ddy$1[(32'h0)+:(40)] + ps$17 + ddx$1[(32'h0)+:(40)];
                 ddx_o$1$d = ddx$1[(32'h0)+:(40)];
             end
             plane$6$d = plane_base$6 + ps$18 + ps$19;
-            if (add_r$48$q) begin
+            if (add$48) begin
                 inc0$6$d = ddy$2[(32'h0)+:(40)] + ps$20;
                 inc1$6$d = ddy$2[(32'h0)+:(40)] + ps$20 + ddx$2[(32'h0)+:(40)];
                 ddx_o$2$d = ddx$2[(32'h0)+:(40)];
             end
             plane$7$d = plane_base$7 + ps$21 + ps$22;
-            if (add_r$51$q) begin
+            if (add$51) begin
                 inc0$7$d = ddy$3[(32'h0)+:(40)] + ps$23;
                 inc1$7$d = ddy$3[(32'h0)+:(40)] + ps$23 + ddx$3[(32'h0)+:(40)];
                 ddx_o$3$d = ddx$3[(32'h0)+:(40)];
             end
             plane$8$d = plane_base$8 + ps$24 + ps$25;
-            if (add_r$54$q) begin
+            if (add$54) begin
                 inc0$8$d = ddy$0[(32'h0)+:(40)] + ps$26;
                 inc1$8$d = ddy$0[(32'h0)+:(40)] + ps$26 + ddx$0[(32'h0)+:(40)];
                 ddx_o$0$d = ddx$0[(32'h0)+:(40)];
             end
             plane$9$d = plane_base$9 + ps$27 + ps$28;
-            if (add_r$57$q) begin
+            if (add$57) begin
                 inc0$9$d = ddy$1[(32'h0)+:(40)] + ps$29;
                 inc1$9$d = ddy$1[(32'h0)+:(40)] + ps$29 + ddx$1[(32'h0)+:(40)];
                 ddx_o$1$d = ddx$1[(32'h0)+:(40)];
             end
             plane$10$d = plane_base$10 + ps$30 + ps$31;
-            if (add_r$60$q) begin
+            if (add$60) begin
                 inc0$10$d = ddy$2[(32'h0)+:(40)] + ps$32;
                 inc1$10$d = ddy$2[(32'h0)+:(40)] + ps$32 + ddx$2[(32'h0)+:(40)];
                 ddx_o$2$d = ddx$2[(32'h0)+:(40)];
             end
             plane$11$d = plane_base$11 + ps$33 + ps$34;
-            if (add_r$63$q) begin
+            if (add$63) begin
                 inc0$11$d = ddy$3[(32'h0)+:(40)] + ps$35;
                 inc1$11$d = ddy$3[(32'h0)+:(40)] + ps$35 + ddx$3[(32'h0)+:(40)];
                 ddx_o$3$d = ddx$3[(32'h0)+:(40)];
@@ -17435,2438 +11737,6 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     end
     
 endmodule // triangle_setup
-
-
-module triangle_setup$act_r$0(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$0
-
-
-module triangle_setup$act_r$1(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$1
-
-
-module triangle_setup$act_r$10(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$10
-
-
-module triangle_setup$act_r$11(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$11
-
-
-module triangle_setup$act_r$12(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$12
-
-
-module triangle_setup$act_r$13(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$13
-
-
-module triangle_setup$act_r$14(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$14
-
-
-module triangle_setup$act_r$15(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$15
-
-
-module triangle_setup$act_r$16(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$16
-
-
-module triangle_setup$act_r$17(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$17
-
-
-module triangle_setup$act_r$18(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$18
-
-
-module triangle_setup$act_r$19(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$19
-
-
-module triangle_setup$act_r$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$2
-
-
-module triangle_setup$act_r$20(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$20
-
-
-module triangle_setup$act_r$21(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$21
-
-
-module triangle_setup$act_r$22(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$22
-
-
-module triangle_setup$act_r$23(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$23
-
-
-module triangle_setup$act_r$24(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$24
-
-
-module triangle_setup$act_r$25(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$25
-
-
-module triangle_setup$act_r$26(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$26
-
-
-module triangle_setup$act_r$27(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$27
-
-
-module triangle_setup$act_r$28(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$28
-
-
-module triangle_setup$act_r$29(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$29
-
-
-module triangle_setup$act_r$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$3
-
-
-module triangle_setup$act_r$30(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$30
-
-
-module triangle_setup$act_r$31(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$31
-
-
-module triangle_setup$act_r$32(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$32
-
-
-module triangle_setup$act_r$33(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$33
-
-
-module triangle_setup$act_r$34(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$34
-
-
-module triangle_setup$act_r$35(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$35
-
-
-module triangle_setup$act_r$36(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$36
-
-
-module triangle_setup$act_r$37(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$37
-
-
-module triangle_setup$act_r$38(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$38
-
-
-module triangle_setup$act_r$39(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$39
-
-
-module triangle_setup$act_r$4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$4
-
-
-module triangle_setup$act_r$40(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$40
-
-
-module triangle_setup$act_r$41(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$41
-
-
-module triangle_setup$act_r$42(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$42
-
-
-module triangle_setup$act_r$43(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$43
-
-
-module triangle_setup$act_r$44(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$44
-
-
-module triangle_setup$act_r$45(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$45
-
-
-module triangle_setup$act_r$46(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$46
-
-
-module triangle_setup$act_r$47(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$47
-
-
-module triangle_setup$act_r$48(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$48
-
-
-module triangle_setup$act_r$49(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$49
-
-
-module triangle_setup$act_r$5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$5
-
-
-module triangle_setup$act_r$50(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$50
-
-
-module triangle_setup$act_r$51(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$51
-
-
-module triangle_setup$act_r$52(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$52
-
-
-module triangle_setup$act_r$53(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$53
-
-
-module triangle_setup$act_r$54(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$54
-
-
-module triangle_setup$act_r$55(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$55
-
-
-module triangle_setup$act_r$56(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$56
-
-
-module triangle_setup$act_r$57(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$57
-
-
-module triangle_setup$act_r$58(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$58
-
-
-module triangle_setup$act_r$59(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$59
-
-
-module triangle_setup$act_r$6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$6
-
-
-module triangle_setup$act_r$60(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$60
-
-
-module triangle_setup$act_r$61(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$61
-
-
-module triangle_setup$act_r$62(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$62
-
-
-module triangle_setup$act_r$63(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$63
-
-
-module triangle_setup$act_r$7(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$7
-
-
-module triangle_setup$act_r$8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$8
-
-
-module triangle_setup$act_r$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$act_r$9
-
-
-module triangle_setup$add_r$0(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$0
-
-
-module triangle_setup$add_r$1(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$1
-
-
-module triangle_setup$add_r$10(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$10
-
-
-module triangle_setup$add_r$11(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$11
-
-
-module triangle_setup$add_r$12(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$12
-
-
-module triangle_setup$add_r$13(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$13
-
-
-module triangle_setup$add_r$14(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$14
-
-
-module triangle_setup$add_r$15(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$15
-
-
-module triangle_setup$add_r$16(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$16
-
-
-module triangle_setup$add_r$17(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$17
-
-
-module triangle_setup$add_r$18(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$18
-
-
-module triangle_setup$add_r$19(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$19
-
-
-module triangle_setup$add_r$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$2
-
-
-module triangle_setup$add_r$20(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$20
-
-
-module triangle_setup$add_r$21(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$21
-
-
-module triangle_setup$add_r$22(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$22
-
-
-module triangle_setup$add_r$23(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$23
-
-
-module triangle_setup$add_r$24(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$24
-
-
-module triangle_setup$add_r$25(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$25
-
-
-module triangle_setup$add_r$26(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$26
-
-
-module triangle_setup$add_r$27(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$27
-
-
-module triangle_setup$add_r$28(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$28
-
-
-module triangle_setup$add_r$29(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$29
-
-
-module triangle_setup$add_r$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$3
-
-
-module triangle_setup$add_r$30(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$30
-
-
-module triangle_setup$add_r$31(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$31
-
-
-module triangle_setup$add_r$32(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$32
-
-
-module triangle_setup$add_r$33(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$33
-
-
-module triangle_setup$add_r$34(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$34
-
-
-module triangle_setup$add_r$35(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$35
-
-
-module triangle_setup$add_r$36(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$36
-
-
-module triangle_setup$add_r$37(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$37
-
-
-module triangle_setup$add_r$38(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$38
-
-
-module triangle_setup$add_r$39(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$39
-
-
-module triangle_setup$add_r$4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$4
-
-
-module triangle_setup$add_r$40(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$40
-
-
-module triangle_setup$add_r$41(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$41
-
-
-module triangle_setup$add_r$42(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$42
-
-
-module triangle_setup$add_r$43(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$43
-
-
-module triangle_setup$add_r$44(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$44
-
-
-module triangle_setup$add_r$45(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$45
-
-
-module triangle_setup$add_r$46(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$46
-
-
-module triangle_setup$add_r$47(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$47
-
-
-module triangle_setup$add_r$48(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$48
-
-
-module triangle_setup$add_r$49(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$49
-
-
-module triangle_setup$add_r$5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$5
-
-
-module triangle_setup$add_r$50(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$50
-
-
-module triangle_setup$add_r$51(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$51
-
-
-module triangle_setup$add_r$52(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$52
-
-
-module triangle_setup$add_r$53(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$53
-
-
-module triangle_setup$add_r$54(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$54
-
-
-module triangle_setup$add_r$55(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$55
-
-
-module triangle_setup$add_r$56(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$56
-
-
-module triangle_setup$add_r$57(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$57
-
-
-module triangle_setup$add_r$58(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$58
-
-
-module triangle_setup$add_r$59(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$59
-
-
-module triangle_setup$add_r$6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$6
-
-
-module triangle_setup$add_r$60(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$60
-
-
-module triangle_setup$add_r$61(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$61
-
-
-module triangle_setup$add_r$62(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$62
-
-
-module triangle_setup$add_r$63(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$63
-
-
-module triangle_setup$add_r$7(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$7
-
-
-module triangle_setup$add_r$8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$8
-
-
-module triangle_setup$add_r$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$add_r$9
 
 
 module triangle_setup$area(d,q,clock);
@@ -26363,120 +18233,6 @@ module triangle_setup$div_v(d,q,clock);
 endmodule // triangle_setup$div_v
 
 
-module triangle_setup$end_r$0(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$end_r$0
-
-
-module triangle_setup$end_r$1(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$end_r$1
-
-
-module triangle_setup$end_r$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$end_r$2
-
-
-module triangle_setup$end_r$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$end_r$3
-
-
-module triangle_setup$end_r$4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$end_r$4
-
-
-module triangle_setup$end_r$5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$end_r$5
-
-
 module triangle_setup$exp$0(d,q,clock);
     
     // Module arguments
@@ -28057,25 +19813,6 @@ module triangle_setup$gy$3(d,q,clock);
 endmodule // triangle_setup$gy$3
 
 
-module triangle_setup$handover_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$handover_r
-
-
 module triangle_setup$inc0$0(d,q,clock);
     
     // Module arguments
@@ -28530,139 +20267,6 @@ module triangle_setup$inc1$9(d,q,clock);
     end
           
 endmodule // triangle_setup$inc1$9
-
-
-module triangle_setup$iss_r$0(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$iss_r$0
-
-
-module triangle_setup$iss_r$1(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$iss_r$1
-
-
-module triangle_setup$iss_r$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$iss_r$2
-
-
-module triangle_setup$iss_r$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$iss_r$3
-
-
-module triangle_setup$iss_r$4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$iss_r$4
-
-
-module triangle_setup$iss_r$5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$iss_r$5
-
-
-module triangle_setup$iss_r$6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$iss_r$6
 
 
 module triangle_setup$left(d,q,clock);
@@ -29135,25 +20739,6 @@ module triangle_setup$norm(d,q,clock);
     end
           
 endmodule // triangle_setup$norm
-
-
-module triangle_setup$norm_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$norm_r
 
 
 module triangle_setup$nsh(d,q,clock);
@@ -30467,139 +22052,6 @@ module triangle_setup$r$9(d,q,clock);
 endmodule // triangle_setup$r$9
 
 
-module triangle_setup$res_r$0(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$res_r$0
-
-
-module triangle_setup$res_r$1(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$res_r$1
-
-
-module triangle_setup$res_r$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$res_r$2
-
-
-module triangle_setup$res_r$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$res_r$3
-
-
-module triangle_setup$res_r$4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$res_r$4
-
-
-module triangle_setup$res_r$5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$res_r$5
-
-
-module triangle_setup$res_r$6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$res_r$6
-
-
 module triangle_setup$rho$0(d,q,clock);
     
     // Module arguments
@@ -31075,137 +22527,118 @@ module triangle_setup$sign$5(d,q,clock);
 endmodule // triangle_setup$sign$5
 
 
-module triangle_setup$t$0(d,q,clock);
+module triangle_setup$tok$0(d,q,clock);
     
     // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 8'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // triangle_setup$t$0
+endmodule // triangle_setup$tok$0
 
 
-module triangle_setup$t$1(d,q,clock);
+module triangle_setup$tok$1(d,q,clock);
     
     // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 8'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // triangle_setup$t$1
+endmodule // triangle_setup$tok$1
 
 
-module triangle_setup$t$2(d,q,clock);
+module triangle_setup$tok$2(d,q,clock);
     
     // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 8'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // triangle_setup$t$2
+endmodule // triangle_setup$tok$2
 
 
-module triangle_setup$t$3(d,q,clock);
+module triangle_setup$tok$3(d,q,clock);
     
     // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 8'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // triangle_setup$t$3
+endmodule // triangle_setup$tok$3
 
 
-module triangle_setup$t$4(d,q,clock);
+module triangle_setup$tok$4(d,q,clock);
     
     // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 8'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // triangle_setup$t$4
+endmodule // triangle_setup$tok$4
 
 
-module triangle_setup$t$5(d,q,clock);
+module triangle_setup$tok$5(d,q,clock);
     
     // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 8'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // triangle_setup$t$5
-
-
-module triangle_setup$valid_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // triangle_setup$valid_r
+endmodule // triangle_setup$tok$5
 
 
 module triangle_setup$x$0(d,q,clock);

@@ -67,8 +67,9 @@
 //! `g5`). The geometry ([`Geometry`]: edge vectors, scanline centres and counts, the
 //! divisions' offsets, attribute differences) is computed once, from the triangle offered,
 //! into copy 0's [`GeometryWord`] register as the triangle is taken, and moves on with it
-//! (so no path runs through its adders into a multiplier's or the divider's operands, nor
-//! from a copy's counter into them); a division's result goes into the copy of the cycle
+//! (so no path runs through its adders into a multiplier's or the divider's operands); a
+//! cycle of the schedule is due when a bit of its copy's token is set (`tok`: one
+//! register, no counter or decoder before it); a division's result goes into the copy of the cycle
 //! after it. Every other register is written by the
 //! next triangle only after this one has read it for the last time, which `Schedule::new`
 //! checks. A deeper divider (for a faster clock) keeps II at 10 up to L = 28, past the
@@ -120,6 +121,9 @@ const G: usize = MUL_A;
 const QL: usize = if DIV_Q < NB { DIV_Q } else { NB };
 /// An attribute lane: z's gradient width; colours use its low bits.
 const ATTR: usize = DZ;
+/// A copy's token bits: its part of the schedule is II cycles at most, and II is 64 at
+/// most (one multiplier).
+const TOKENS: usize = 64;
 /// OneOverArea's mantissa (`ooa`).
 pub const MANT: usize = FORMATS.ooa.bits() as usize;
 
@@ -153,9 +157,6 @@ pub struct TriangleSetup {
     #[given]
     div: DividerRtl,
 
-    // Control: per copy, the cycle of the triangle in it (copy v: v II + 1 to (v + 1) II, the
-    // last to the latency); 0: none.
-    t: [DFF<Bits<8>>; COPIES_MAX],
     take: Signal<Local, Bit>,
     /// Setup advances: no result waits for the edge walk. Every register of setup is
     /// written only while it is high (its enable), and nothing else waits for it.
@@ -169,28 +170,22 @@ pub struct TriangleSetup {
     /// Per copy, a triangle enters it at the end of this cycle if setup runs: copy 0's
     /// taken, copy v's handed on from copy v - 1 (at the end of its part).
     enter: [Signal<Local, Bit>; COPIES_MAX],
-    /// Per copy, its triangle is at the last cycle of its part (the counter at `ends[v]`),
-    /// decoded a cycle ahead as the other decoders are: the hand-over into copy v + 1 (its
-    /// loads, and the counter's reset) starts at this register, not at a comparison of the
-    /// counter (raster_top's critical path at stop 57: 14.3 ns).
-    end_r: [DFF<Bit>; COPIES_MAX],
-    /// Due this cycle, decoded a cycle ahead, so that no comparison of a counter lies on a
-    /// path into the multipliers or the divider: product i's operands (`act_r`) and its
-    /// addition into its destination (`add_r`), the above, the result valid, and a triangle
-    /// in setup. (Busy, not free: every register is 0 after reset, when setup is empty.)
-    /// Each is decoded from the counters' registers, not their next values: while setup
-    /// runs, cycle c of copy v is due next when the copy's counter is at c - 1, or, for the
-    /// copy's first cycle, when a triangle enters it; while it stands still every counter,
-    /// and so every decoded register, holds. (From the next values, the counters' adders
-    /// and load multiplexers lay before the comparisons: setup's critical path alone at
-    /// stop 57, 13.6 ns, 11.8 of it routing.)
-    act_r: [DFF<Bit>; PRODUCTS],
-    add_r: [DFF<Bit>; PRODUCTS],
-    norm_r: DFF<Bit>,
-    iss_r: [DFF<Bit>; 7],
-    res_r: [DFF<Bit>; 7],
-    handover_r: DFF<Bit>,
-    valid_r: DFF<Bit>,
+    /// The schedule as tokens, one per triangle in setup: per copy, one bit per cycle of
+    /// its part (bit j: cycle `v II + 1 + j`), set while the copy's triangle is at that
+    /// cycle. While setup runs every token moves up a bit, a triangle taken or handed on
+    /// enters its copy at bit 0 and the one at the end of a part leaves it; while setup
+    /// stands still every bit holds. So whatever is due in a cycle (product i's operands
+    /// into its multiplier, `act`, and its addition into its destination, `add`; the
+    /// normalise, division j's issue and result, the hand-over into the edge walk, the
+    /// result valid, a copy's hand-over into the next) is one register, with no counter,
+    /// comparison or decoder before it. (Stop 57 decoded counters a cycle ahead into
+    /// registers: 150 decoders, and a counter's comparison on the path into the next
+    /// copy's hand-over.)
+    tok: [DFF<Bits<TOKENS>>; COPIES_MAX],
+    tok_n: [Signal<Local, Bits<TOKENS>>; COPIES_MAX],
+    act: [Signal<Local, Bit>; PRODUCTS],
+    add: [Signal<Local, Bit>; PRODUCTS],
+    valid: Signal<Local, Bit>,
     busy_r: DFF<Bit>,
     /// Setup holds a triangle and is off the II grid next cycle (`busy_r` and `off_grid_r`
     /// a cycle ahead), so that `inp.ready` is `run` and one register.
@@ -330,17 +325,20 @@ pub struct TriangleSetup {
     view_res: [Constant<Bits<8>>; 7],
     view_res_w: [Constant<Bits<8>>; 7],
     view_handover: Constant<Bits<8>>,
-    /// Per copy, the first and the last cycle of its part of the schedule (255 for copies
-    /// not used).
-    firsts: [Constant<Bits<8>>; COPIES_MAX],
-    ends: [Constant<Bits<8>>; COPIES_MAX],
-    normalise: Constant<Bits<8>>,
-    cyc: [Constant<Bits<8>>; PRODUCTS],
-    cyc_add: [Constant<Bits<8>>; PRODUCTS],
-    iss: [Constant<Bits<8>>; 7],
-    res: [Constant<Bits<8>>; 7],
-    handover: Constant<Bits<8>>,
-    last: Constant<Bits<8>>,
+    /// The schedule's cycles as the bits of their copies' tokens: product i's operands and
+    /// addition, the normalise, division j's issue and result, the hand-over, the result
+    /// (the last copy's), and the end of each copy's part but the last (its hand-over into
+    /// the next; 0 for copies not used, which `tok_mask` keeps empty).
+    act_bit: [Constant<Bits<8>>; PRODUCTS],
+    add_bit: [Constant<Bits<8>>; PRODUCTS],
+    norm_bit: Constant<Bits<8>>,
+    iss_bit: [Constant<Bits<8>>; 7],
+    res_bit: [Constant<Bits<8>>; 7],
+    handover_bit: Constant<Bits<8>>,
+    last_bit: Constant<Bits<8>>,
+    end_bit: [Constant<Bits<8>>; COPIES_MAX - 1],
+    /// Per copy, the bits of its part.
+    tok_mask: [Constant<Bits<TOKENS>>; COPIES_MAX],
     /// II - 1.
     ii_m1: Constant<Bits<8>>,
     /// 2^56: 1/area's dividend (`recip_operands`); the exponent of 1/area's top bit (32).
@@ -380,27 +378,28 @@ impl TriangleSetup {
             return Err(format!("triangle_setup: L = {l} divider stages is not supported: 1 to {LATENCY_MAX}"));
         }
         let s = Schedule::new(k, l)?;
-        // The counters and the phase are 8 bits wide.
-        assert!(s.latency < 255, "triangle_setup: K = {k}, L = {l}: latency {} does not fit 8 bits", s.latency);
-        // The decoders read copy 0's counter for the normalise and the issues.
+        // A copy's part fits its token bits, and the phase II - 1 its 8 bits.
+        assert!(s.interval <= TOKENS, "triangle_setup: K = {k}, L = {l}: II {} over {TOKENS}", s.interval);
+        // The normalise and the issues read copy 0's token.
         assert!(
             s.view(s.normalise) == 0 && s.issue.iter().all(|&c| s.view(c) == 0),
             "triangle_setup: K = {k}, L = {l}: the normalise and the issues lie in copy 0's part"
         );
+        // Cycle c (1 to the latency) as a bit of its copy's token.
+        let bit = |c: usize| c - 1 - s.view(c) * s.interval;
+        let part = |v: usize| if v < s.copies { ((v + 1) * s.interval).min(s.latency) - v * s.interval } else { 0 };
         let f = FORMATS;
         let (gz, gc) =
             ((f.ooa_d.frac + f.z.frac - f.dz.frac) as usize, (f.ooa_d.frac + f.color.frac - f.dc.frac) as usize);
         let (bz, bc) = ((f.z_acc.frac - f.z.frac) as usize, (f.c_acc.frac - f.color.frac) as usize);
         Ok(TriangleSetup {
             mul: (0..k).map(|_| Default::default()).collect(),
-            t: defaults(),
             at_iss: defaults(),
             at_res: defaults(),
-            act_r: defaults(),
-            end_r: defaults(),
-            add_r: defaults(),
-            iss_r: defaults(),
-            res_r: defaults(),
+            tok: defaults(),
+            tok_n: defaults(),
+            act: defaults(),
+            add: defaults(),
             sign: defaults(),
             exp: defaults(),
             mant: defaults(),
@@ -453,15 +452,15 @@ impl TriangleSetup {
             view_res: consts(|j| s.view(s.result(j))),
             view_res_w: consts(|j| s.view(s.result(j) + 1)),
             view_handover: Constant::new(s.view(s.handover).to_bits()),
-            firsts: consts(|v| if v < s.copies { v * s.interval + 1 } else { 255 }),
-            ends: consts(|v| if v < s.copies { ((v + 1) * s.interval).min(s.latency) } else { 255 }),
-            normalise: Constant::new(s.normalise.to_bits()),
-            cyc: consts(|i| s.slots[i].0),
-            cyc_add: consts(|i| s.add(i)),
-            iss: consts(|j| s.issue[j]),
-            res: consts(|j| s.result(j)),
-            handover: Constant::new(s.handover.to_bits()),
-            last: Constant::new(s.latency.to_bits()),
+            act_bit: consts(|i| bit(s.slots[i].0)),
+            add_bit: consts(|i| bit(s.add(i))),
+            norm_bit: Constant::new(bit(s.normalise).to_bits()),
+            iss_bit: consts(|j| bit(s.issue[j])),
+            res_bit: consts(|j| bit(s.result(j))),
+            handover_bit: Constant::new(bit(s.handover).to_bits()),
+            last_bit: Constant::new(bit(s.latency).to_bits()),
+            end_bit: consts(|v| part(v).max(1) - 1),
+            tok_mask: std::array::from_fn(|v| ones_from(0, part(v))),
             ii_m1: Constant::new((s.interval - 1).to_bits()),
             recip_n: Constant::new((1u128 << (DERIVED.area_bits - 2 + f.ooa.frac)).to_bits()),
             recip_top: Constant::new(((DERIVED.area_bits - 2) as usize).to_bits()),
@@ -484,8 +483,7 @@ impl Logic for TriangleSetup {
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written.
         dff_setup!(
-            self, clock, area, norm, nsh, div_v, div_n, div_d, mant_s, rsh, left, norm_r, handover_r, valid_r, busy_r,
-            gate_r, phase, off_grid_r
+            self, clock, area, norm, nsh, div_v, div_n, div_d, mant_s, rsh, left, busy_r, gate_r, phase, off_grid_r
         );
         dff_setup!(self, clock, o_walk, o_maj_left);
         for e in 0..3 {
@@ -498,8 +496,7 @@ impl Logic for TriangleSetup {
         }
         clock!(self, clock, div);
         for v in 0..COPIES_MAX {
-            self.t[v].clock.next = self.clock.val();
-            self.t[v].d.next = self.t[v].q.val();
+            self.tok[v].clock.next = self.clock.val();
             self.geo[v].clock.next = self.clock.val();
             self.geo[v].d.next = self.geo[v].q.val();
             self.sign[v].clock.next = self.clock.val();
@@ -554,8 +551,11 @@ impl Logic for TriangleSetup {
         // triangle moves on, into the next copy at the end of its part; setup takes a triangle
         // into copy 0 on the II grid of the last one taken (the copy there reaches cycle II),
         // or when setup is empty.
-        self.run.next = !(self.valid_r.q.val() & !self.out.ready.val());
-        self.out.valid.next = self.valid_r.q.val();
+        for v in (self._copies - 1)..self._copies {
+            self.valid.next = self.tok[v].q.val().get_bit(self.last_bit.val().index());
+        }
+        self.run.next = !(self.valid.val() & !self.out.ready.val());
+        self.out.valid.next = self.valid.val();
         self.inp.ready.next = self.run.val() & !self.gate_r.q.val();
         self.take.next = self.inp.valid.val() & self.inp.ready.val();
         if self.run.val() {
@@ -566,17 +566,8 @@ impl Logic for TriangleSetup {
             if self.take.val() {
                 self.phase.d.next = 1.into();
             }
-            for v in 0..self._copies {
-                if self.t[v].q.val() != 0 {
-                    self.t[v].d.next = self.t[v].q.val() + 1;
-                }
-                if self.end_r[v].q.val() {
-                    self.t[v].d.next = 0.into();
-                }
-            }
             for v in 0..(self._copies - 1) {
-                if self.end_r[v].q.val() {
-                    self.t[v + 1].d.next = self.ends[v].val() + 1;
+                if self.enter[v + 1].val() {
                     self.geo[v + 1].d.next = self.geo[v].q.val();
                     self.sign[v + 1].d.next = self.maj_left[v].val();
                     self.exp[v + 1].d.next = self.exp[v].q.val();
@@ -591,118 +582,63 @@ impl Logic for TriangleSetup {
             }
         }
         if self.take.val() {
-            self.t[0].d.next = 1.into();
             self.geo[0].d.next = self.geometry.word.val();
         }
-        // What is due next cycle: a cycle of the schedule is its copy's counter (the views
-        // are constants, so each is one comparison), decoded from the counters' registers:
-        // while setup runs, cycle c of copy v is next when the counter is at c - 1 or, for
-        // the copy's first cycle, when a triangle enters it; while it stands still, every
-        // counter and so every decoded register holds.
+        // The tokens move on while setup runs (`tok`).
         self.enter[0].next = self.take.val();
         for v in 1..COPIES_MAX {
-            self.enter[v].next = self.end_r[v - 1].q.val();
+            self.enter[v].next = self.tok[v - 1].q.val().get_bit(self.end_bit[v - 1].val().index());
         }
         for v in 0..COPIES_MAX {
-            self.end_r[v].clock.next = self.clock.val();
-            self.end_r[v].d.next = self.end_r[v].q.val();
-        }
-        if self.run.val() {
-            for v in 0..self._copies {
-                if self.ends[v].val() == self.firsts[v].val() {
-                    self.end_r[v].d.next = self.enter[v].val();
-                } else {
-                    self.end_r[v].d.next = self.t[v].q.val() == self.ends[v].val() - 1;
+            self.tok_n[v].next = self.tok[v].q.val();
+            if self.run.val() {
+                self.tok_n[v].next = (self.tok[v].q.val() << 1) & self.tok_mask[v].val();
+                if self.enter[v].val() {
+                    self.tok_n[v].next = ((self.tok[v].q.val() << 1) | 1) & self.tok_mask[v].val();
                 }
             }
+            self.tok[v].d.next = self.tok_n[v].val();
         }
+        // What is due this cycle: a bit of its copy's token.
         for i in 0..PRODUCTS {
-            self.act_r[i].clock.next = self.clock.val();
-            self.act_r[i].d.next = self.act_r[i].q.val();
-            self.add_r[i].clock.next = self.clock.val();
-            self.add_r[i].d.next = self.add_r[i].q.val();
-            if self.run.val() {
-                self.act_r[i].d.next = false;
-                self.add_r[i].d.next = false;
-                for v in 0..self._copies {
-                    if self.view[i].val().index() == v {
-                        if self.cyc[i].val() == self.firsts[v].val() {
-                            self.act_r[i].d.next = self.enter[v].val();
-                        } else {
-                            self.act_r[i].d.next = self.t[v].q.val() == self.cyc[i].val() - 1;
-                        }
-                    }
-                    if self.view_add[i].val().index() == v {
-                        if self.cyc_add[i].val() == self.firsts[v].val() {
-                            self.add_r[i].d.next = self.enter[v].val();
-                        } else {
-                            self.add_r[i].d.next = self.t[v].q.val() == self.cyc_add[i].val() - 1;
-                        }
-                    }
+            self.act[i].next = false;
+            self.add[i].next = false;
+            for v in 0..self._copies {
+                if self.view[i].val().index() == v {
+                    self.act[i].next = self.tok[v].q.val().get_bit(self.act_bit[i].val().index());
+                }
+                if self.view_add[i].val().index() == v {
+                    self.add[i].next = self.tok[v].q.val().get_bit(self.add_bit[i].val().index());
                 }
             }
         }
-        self.at_norm.next = self.norm_r.q.val() & self.run.val();
+        self.at_norm.next = self.tok[0].q.val().get_bit(self.norm_bit.val().index()) & self.run.val();
         for j in 0..7 {
-            self.iss_r[j].clock.next = self.clock.val();
-            self.iss_r[j].d.next = self.iss_r[j].q.val();
-            self.res_r[j].clock.next = self.clock.val();
-            self.res_r[j].d.next = self.res_r[j].q.val();
-            if self.run.val() {
-                if self.iss[j].val() == 1 {
-                    self.iss_r[j].d.next = self.take.val();
-                } else {
-                    self.iss_r[j].d.next = self.t[0].q.val() == self.iss[j].val() - 1;
-                }
-                self.res_r[j].d.next = false;
-                for v in 0..self._copies {
-                    if self.view_res[j].val().index() == v {
-                        if self.res[j].val() == self.firsts[v].val() {
-                            self.res_r[j].d.next = self.enter[v].val();
-                        } else {
-                            self.res_r[j].d.next = self.t[v].q.val() == self.res[j].val() - 1;
-                        }
-                    }
+            self.at_iss[j].next = self.tok[0].q.val().get_bit(self.iss_bit[j].val().index()) & self.run.val();
+            self.at_res[j].next = false;
+            for v in 0..self._copies {
+                if self.view_res[j].val().index() == v {
+                    self.at_res[j].next = self.tok[v].q.val().get_bit(self.res_bit[j].val().index()) & self.run.val();
                 }
             }
-            self.at_iss[j].next = self.iss_r[j].q.val() & self.run.val();
-            self.at_res[j].next = self.res_r[j].q.val() & self.run.val();
         }
-        self.at_handover.next = self.handover_r.q.val() & self.run.val();
-        self.busy_n.next = self.busy_r.q.val();
+        self.at_handover.next = false;
+        for v in 0..self._copies {
+            if self.view_handover.val().index() == v {
+                self.at_handover.next =
+                    self.tok[v].q.val().get_bit(self.handover_bit.val().index()) & self.run.val();
+            }
+        }
+        // A triangle is in setup next cycle (a token), and setup is off the II grid next
+        // cycle: a cycle ahead, so that `inp.ready` is `run` and one register.
+        self.busy_n.next = false;
+        for v in 0..COPIES_MAX {
+            if self.tok_n[v].val().any() {
+                self.busy_n.next = true;
+            }
+        }
         self.off_grid_n.next = self.off_grid_r.q.val();
         if self.run.val() {
-            if self.normalise.val() == 1 {
-                self.norm_r.d.next = self.take.val();
-            } else {
-                self.norm_r.d.next = self.t[0].q.val() == self.normalise.val() - 1;
-            }
-            self.handover_r.d.next = false;
-            for v in 0..self._copies {
-                if self.view_handover.val().index() == v {
-                    if self.handover.val() == self.firsts[v].val() {
-                        self.handover_r.d.next = self.enter[v].val();
-                    } else {
-                        self.handover_r.d.next = self.t[v].q.val() == self.handover.val() - 1;
-                    }
-                }
-            }
-            // The result: the last copy's last cycle.
-            for v in (self._copies - 1)..self._copies {
-                if self.last.val() == self.firsts[v].val() {
-                    self.valid_r.d.next = self.enter[v].val();
-                } else {
-                    self.valid_r.d.next = self.t[v].q.val() == self.last.val() - 1;
-                }
-            }
-            // A triangle is in setup next cycle: one enters a copy, or one stays in a copy
-            // before the end of its part.
-            self.busy_n.next = false;
-            for v in 0..self._copies {
-                if self.enter[v].val() | ((self.t[v].q.val() != 0) & !self.end_r[v].q.val()) {
-                    self.busy_n.next = true;
-                }
-            }
             // The phase is 0 next cycle only at the end of an II not ended by a take.
             self.off_grid_n.next = self.take.val() | (self.phase.q.val() != self.ii_m1.val());
         }
@@ -1145,93 +1081,93 @@ impl Logic for TriangleSetup {
                 }
             }
         }
-        // Each product's operands into its multiplier in its cycle (`act_r`), its product
-        // out M cycles later (`add_r`); the multipliers' registers move while setup runs.
+        // Each product's operands into its multiplier in its cycle (`act`), its product
+        // out M cycles later (`add`); the multipliers' registers move while setup runs.
         for m in 0..self._k {
             self.mul[m].en.next = self.run.val();
             // Area: e_maj.dx * e_bot.dy - e_bot.dx * e_maj.dy.
-            if (self.lane[0].val().index() == m) & self.act_r[0].q.val() {
+            if (self.lane[0].val().index() == m) & self.act[0].val() {
                 self.mul[m].a.next = self.g0.kdx[0].val().get_bits::<MUL_A>(0);
                 self.mul[m].b.next = self.g0.kdy[1].val().get_bits::<MUL_B>(0);
             }
-            if (self.lane[1].val().index() == m) & self.act_r[1].q.val() {
+            if (self.lane[1].val().index() == m) & self.act[1].val() {
                 self.mul[m].a.next = self.g0.kdx[1].val().get_bits::<MUL_A>(0);
                 self.mul[m].b.next = self.g0.kdy[0].val().get_bits::<MUL_B>(0);
             }
             for i in 0..2 {
-                if (self.lane[i].val().index() == m) & self.add_r[i].q.val() {
+                if (self.lane[i].val().index() == m) & self.add[i].val() {
                     self.pa[i].next = self.mul[m].p.val().get_bits::<AREA>(0);
                 }
             }
             for e in 0..3 {
                 // Start numerator: x fraction * dy + dx * t.
-                if (self.lane[2 + 2 * e].val().index() == m) & self.act_r[2 + 2 * e].q.val() {
+                if (self.lane[2 + 2 * e].val().index() == m) & self.act[2 + 2 * e].val() {
                     self.mul[m].a.next = self.g0.edy[e].val();
                     self.mul[m].b.next = self.g0.xf[e].val();
                 }
-                if (self.lane[3 + 2 * e].val().index() == m) & self.act_r[3 + 2 * e].q.val() {
+                if (self.lane[3 + 2 * e].val().index() == m) & self.act[3 + 2 * e].val() {
                     self.mul[m].a.next = self.g0.edx[e].val().get_bits::<MUL_A>(0);
                     self.mul[m].b.next = self.g0.toff[e].val();
                 }
             }
             for i in 0..6 {
-                if (self.lane[2 + i].val().index() == m) & self.add_r[2 + i].q.val() {
+                if (self.lane[2 + i].val().index() == m) & self.add[2 + i].val() {
                     self.pn[i].next = self.mul[m].p.val();
                 }
             }
             for d in 0..4 {
                 // eq. (2): OneOverArea's mantissa times +-delta.
-                if (self.lane[8 + d].val().index() == m) & self.act_r[8 + d].q.val() {
+                if (self.lane[8 + d].val().index() == m) & self.act[8 + d].val() {
                     self.mul[m].a.next = self.mant_s.q.val();
                     self.mul[m].b.next = self.op_e[d].val();
                 }
-                if (self.lane[8 + d].val().index() == m) & self.add_r[8 + d].q.val() {
+                if (self.lane[8 + d].val().index() == m) & self.add[8 + d].val() {
                     self.pe[d].next = self.mul[m].p.val().get_bits::<G>(0);
                 }
             }
             for a in 0..4 {
                 // dx = p_bot_dy * d_maj - p_maj_dy * d_bot; dy = p_maj_dx * d_bot - p_bot_dx * d_maj.
-                if (self.lane[12 + 4 * a].val().index() == m) & self.act_r[12 + 4 * a].q.val() {
+                if (self.lane[12 + 4 * a].val().index() == m) & self.act[12 + 4 * a].val() {
                     self.mul[m].a.next = self.p[3].q.val();
                     self.mul[m].b.next = self.op_g[4 * a].val();
                 }
-                if (self.lane[13 + 4 * a].val().index() == m) & self.act_r[13 + 4 * a].q.val() {
+                if (self.lane[13 + 4 * a].val().index() == m) & self.act[13 + 4 * a].val() {
                     self.mul[m].a.next = self.p[2].q.val();
                     self.mul[m].b.next = self.op_g[4 * a + 1].val();
                 }
-                if (self.lane[14 + 4 * a].val().index() == m) & self.act_r[14 + 4 * a].q.val() {
+                if (self.lane[14 + 4 * a].val().index() == m) & self.act[14 + 4 * a].val() {
                     self.mul[m].a.next = self.p[0].q.val();
                     self.mul[m].b.next = self.op_g[4 * a + 2].val();
                 }
-                if (self.lane[15 + 4 * a].val().index() == m) & self.act_r[15 + 4 * a].q.val() {
+                if (self.lane[15 + 4 * a].val().index() == m) & self.act[15 + 4 * a].val() {
                     self.mul[m].a.next = self.p[1].q.val();
                     self.mul[m].b.next = self.op_g[4 * a + 3].val();
                 }
             }
             for i in 0..16 {
-                if (self.lane[12 + i].val().index() == m) & self.add_r[12 + i].q.val() {
+                if (self.lane[12 + i].val().index() == m) & self.add[12 + i].val() {
                     self.pg[i].next = self.mul[m].p.val().get_bits::<G>(0);
                 }
             }
             for e in 0..3 {
                 for a in 0..4 {
                     // at: ddx * off_x + ddy * off_y; inc0 = ddy + q * ddx.
-                    if (self.lane[28 + 12 * e + 3 * a].val().index() == m) & self.act_r[28 + 12 * e + 3 * a].q.val() {
+                    if (self.lane[28 + 12 * e + 3 * a].val().index() == m) & self.act[28 + 12 * e + 3 * a].val() {
                         self.mul[m].a.next = self.ddx[a].val();
                         self.mul[m].b.next = self.op_s[8 * e + 2 * a].val();
                     }
-                    if (self.lane[29 + 12 * e + 3 * a].val().index() == m) & self.act_r[29 + 12 * e + 3 * a].q.val() {
+                    if (self.lane[29 + 12 * e + 3 * a].val().index() == m) & self.act[29 + 12 * e + 3 * a].val() {
                         self.mul[m].a.next = self.ddy[a].val();
                         self.mul[m].b.next = self.op_s[8 * e + 2 * a + 1].val();
                     }
-                    if (self.lane[30 + 12 * e + 3 * a].val().index() == m) & self.act_r[30 + 12 * e + 3 * a].q.val() {
+                    if (self.lane[30 + 12 * e + 3 * a].val().index() == m) & self.act[30 + 12 * e + 3 * a].val() {
                         self.mul[m].a.next = self.ddx[a].val();
                         self.mul[m].b.next = self.op_q[4 * e + a].val();
                     }
                 }
             }
             for i in 0..36 {
-                if (self.lane[28 + i].val().index() == m) & self.add_r[28 + i].q.val() {
+                if (self.lane[28 + i].val().index() == m) & self.add[28 + i].val() {
                     self.ps[i].next = self.mul[m].p.val().get_bits::<ATTR>(0);
                 }
             }
@@ -1240,12 +1176,12 @@ impl Logic for TriangleSetup {
         // ---- Add each product into its register while setup runs (the first one of a
         // register starts it afresh). Products not due are 0.
         self.area_base.next = self.area.q.val();
-        if self.add_r[0].q.val() {
+        if self.add[0].val() {
             self.area_base.next = 0.into();
         }
         for e in 0..3 {
             self.num_base[e].next = self.num[e].q.val();
-            if self.add_r[2 + 2 * e].q.val() {
+            if self.add[2 + 2 * e].val() {
                 self.num_base[e].next = 0.into();
             }
         }
@@ -1258,18 +1194,18 @@ impl Logic for TriangleSetup {
         }
         for a in 0..4 {
             self.gx_base[a].next = self.gx[a].q.val();
-            if self.add_r[12 + 4 * a].q.val() {
+            if self.add[12 + 4 * a].val() {
                 self.gx_base[a].next = 0.into();
             }
             self.gy_base[a].next = self.gy[a].q.val();
-            if self.add_r[14 + 4 * a].q.val() {
+            if self.add[14 + 4 * a].val() {
                 self.gy_base[a].next = 0.into();
             }
         }
         for e in 0..3 {
             for a in 0..4 {
                 self.plane_base[4 * e + a].next = self.plane[4 * e + a].q.val();
-                if self.add_r[28 + 12 * e + 3 * a].q.val() {
+                if self.add[28 + 12 * e + 3 * a].val() {
                     self.plane_base[4 * e + a].next = 0.into();
                 }
             }
@@ -1280,7 +1216,7 @@ impl Logic for TriangleSetup {
                 self.num[e].d.next = self.num_base[e].val() + self.pn[2 * e].val() + self.pn[2 * e + 1].val();
             }
             for d in 0..4 {
-                if self.add_r[8 + d].q.val() {
+                if self.add[8 + d].val() {
                     self.p[d].d.next = self.shr[d].val();
                     if self.left.q.val() {
                         self.p[d].d.next = self.pe[d].val();
@@ -1297,7 +1233,7 @@ impl Logic for TriangleSetup {
                         + self.ps[12 * e + 3 * a].val()
                         + self.ps[12 * e + 3 * a + 1].val();
                     // inc0 = ddy + q * ddx, inc1 = inc0 + ddx; ddx for the result.
-                    if self.add_r[30 + 12 * e + 3 * a].q.val() {
+                    if self.add[30 + 12 * e + 3 * a].val() {
                         self.inc0[4 * e + a].d.next =
                             self.ddy[a].val().get_bits::<ATTR>(0) + self.ps[12 * e + 3 * a + 2].val();
                         self.inc1[4 * e + a].d.next = self.ddy[a].val().get_bits::<ATTR>(0)
