@@ -1,6 +1,6 @@
 
 
-module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_j,inp$maj_count,inp$maj_x,inp$maj_r,inp$maj_q,inp$maj_rho,inp$maj_d,inp$maj_at_z,inp$maj_at_c0,inp$maj_at_c1,inp$maj_at_c2,inp$maj_inc0_z,inp$maj_inc0_c0,inp$maj_inc0_c1,inp$maj_inc0_c2,inp$maj_inc1_z,inp$maj_inc1_c0,inp$maj_inc1_c1,inp$maj_inc1_c2,inp$short0_j,inp$short0_count,inp$short0_x,inp$short0_r,inp$short0_q,inp$short0_rho,inp$short0_d,inp$short0_at_z,inp$short0_at_c0,inp$short0_at_c1,inp$short0_at_c2,inp$short0_inc0_z,inp$short0_inc0_c0,inp$short0_inc0_c1,inp$short0_inc0_c2,inp$short0_inc1_z,inp$short0_inc1_c0,inp$short0_inc1_c1,inp$short0_inc1_c2,inp$short1_j,inp$short1_count,inp$short1_x,inp$short1_r,inp$short1_q,inp$short1_rho,inp$short1_d,inp$short1_at_z,inp$short1_at_c0,inp$short1_at_c1,inp$short1_at_c2,inp$short1_inc0_z,inp$short1_inc0_c0,inp$short1_inc0_c1,inp$short1_inc0_c2,inp$short1_inc1_z,inp$short1_inc1_c0,inp$short1_inc1_c1,inp$short1_inc1_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,hold,idle);
+module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_j,inp$maj_count,inp$maj_x,inp$maj_r,inp$maj_q,inp$maj_rho,inp$maj_d,inp$maj_at_z,inp$maj_at_c0,inp$maj_at_c1,inp$maj_at_c2,inp$maj_inc0_z,inp$maj_inc0_c0,inp$maj_inc0_c1,inp$maj_inc0_c2,inp$maj_inc1_z,inp$maj_inc1_c0,inp$maj_inc1_c1,inp$maj_inc1_c2,inp$short0_j,inp$short0_count,inp$short0_x,inp$short0_r,inp$short0_q,inp$short0_rho,inp$short0_d,inp$short0_at_z,inp$short0_at_c0,inp$short0_at_c1,inp$short0_at_c2,inp$short0_inc0_z,inp$short0_inc0_c0,inp$short0_inc0_c1,inp$short0_inc0_c2,inp$short0_inc1_z,inp$short0_inc1_c0,inp$short0_inc1_c1,inp$short0_inc1_c2,inp$short1_j,inp$short1_count,inp$short1_x,inp$short1_r,inp$short1_q,inp$short1_rho,inp$short1_d,inp$short1_at_z,inp$short1_at_c0,inp$short1_at_c1,inp$short1_at_c2,inp$short1_inc0_z,inp$short1_inc0_c0,inp$short1_inc0_c1,inp$short1_inc0_c2,inp$short1_inc1_z,inp$short1_inc1_c0,inp$short1_inc1_c1,inp$short1_inc1_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,hold,idle,free_next);
     
     // Module arguments
     input wire  clock;
@@ -89,6 +89,7 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
     output reg  [35:0] out$ddx_c2;
     input wire  hold;
     output reg  idle;
+    output reg  free_next;
     
     // Stub signals
     wire  clip_y$on;
@@ -954,6 +955,10 @@ module edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_
             pend_inc1_c0$d = ((inp$short1_inc1_c0) & 32'hffffffff);
             pend_inc1_c1$d = ((inp$short1_inc1_c1) & 32'hffffffff);
             pend_inc1_c2$d = ((inp$short1_inc1_c2) & 32'hffffffff);
+        end
+        free_next = ~busy$q | (~walking$q & free);
+        if (accept) begin
+            free_next = 1'b0;
         end
     end
     

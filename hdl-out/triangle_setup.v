@@ -1,6 +1,6 @@
 
 
-module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,recip_mant,recip_exp,idle);
+module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,recip_mant,recip_exp,idle,out_free_next,out_hold);
     
     // Module arguments
     input wire  clock;
@@ -96,6 +96,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     output reg  [24:0] recip_mant;
     output reg  [5:0] recip_exp;
     output reg  idle;
+    input wire  out_free_next;
+    input wire  out_hold;
     
     // Constant declarations
     localparam  q_msb = 8'h12;
@@ -562,6 +564,9 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     reg  div$out_ready;
     wire  [25:0] div$out_q;
     wire  [33:0] div$out_r;
+    reg  stall_r$d;
+    wire  stall_r$q;
+    reg  stall_r$clock;
     reg  [63:0] tok$0$d;
     wire  [63:0] tok$0$q;
     reg  tok$0$clock;
@@ -1471,6 +1476,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
     // Local signals
     reg  take;
     reg  run;
+    reg  valid_n;
     reg  at_norm;
     reg  at_iss$0;
     reg  at_iss$1;
@@ -1948,6 +1954,11 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         .out_ready(div$out_ready),
         .out_q(div$out_q),
         .out_r(div$out_r)
+    );
+    triangle_setup$stall_r stall_r(
+        .d(stall_r$d),
+        .q(stall_r$q),
+        .clock(stall_r$clock)
     );
     triangle_setup$tok$0 tok$0(
         .d(tok$0$d),
@@ -3246,6 +3257,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         gate_r$clock = clock;
         phase$clock = clock;
         off_grid_r$clock = clock;
+        stall_r$clock = clock;
         area$d = area$q;
         norm$d = norm$q;
         nsh$d = nsh$q;
@@ -3259,6 +3271,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         gate_r$d = gate_r$q;
         phase$d = phase$q;
         off_grid_r$d = off_grid_r$q;
+        stall_r$d = stall_r$q;
         o_walk$clock = clock;
         o_maj_left$clock = clock;
         o_walk$d = o_walk$q;
@@ -3604,7 +3617,7 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
         maj_left$4 = sign$4$q;
         maj_left$5 = sign$5$q;
         valid = tok$5$q[last_bit];
-        run = ~(valid & ~out$ready);
+        run = ~stall_r$q & ~(valid & out_hold & ~out$ready);
         out$valid = valid;
         inp$ready = run & ~gate_r$q;
         take = inp$valid & inp$ready;
@@ -3764,6 +3777,8 @@ module triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v
             end
         end
         tok$5$d = tok_n$5;
+        valid_n = tok_n$5[last_bit];
+        stall_r$d = valid_n & ~out_free_next;
         act$0 = 1'b0;
         add$0 = 1'b0;
         if (view$0 == 0) begin
@@ -22525,6 +22540,25 @@ module triangle_setup$sign$5(d,q,clock);
     end
           
 endmodule // triangle_setup$sign$5
+
+
+module triangle_setup$stall_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // triangle_setup$stall_r
 
 
 module triangle_setup$tok$0(d,q,clock);

@@ -1038,6 +1038,8 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
     wire  [24:0] triangle_setup$recip_mant;
     wire  [5:0] triangle_setup$recip_exp;
     wire  triangle_setup$idle;
+    reg  triangle_setup$out_free_next;
+    reg  triangle_setup$out_hold;
     reg  edge_walk$clock;
     reg  [10:0] edge_walk$height;
     reg  edge_walk$inp$valid;
@@ -1124,6 +1126,7 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
     wire  [35:0] edge_walk$out$ddx_c2;
     reg  edge_walk$hold;
     wire  edge_walk$idle;
+    wire  edge_walk$free_next;
     reg  fifo$clock;
     reg  fifo$inp$valid;
     wire  fifo$inp$ready;
@@ -1278,7 +1281,9 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
         .out$ddx_c2(triangle_setup$out$ddx_c2),
         .recip_mant(triangle_setup$recip_mant),
         .recip_exp(triangle_setup$recip_exp),
-        .idle(triangle_setup$idle)
+        .idle(triangle_setup$idle),
+        .out_free_next(triangle_setup$out_free_next),
+        .out_hold(triangle_setup$out_hold)
     );
     raster_top$core$edge_walk edge_walk(
         .clock(edge_walk$clock),
@@ -1366,7 +1371,8 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
         .out$ddx_c1(edge_walk$out$ddx_c1),
         .out$ddx_c2(edge_walk$out$ddx_c2),
         .hold(edge_walk$hold),
-        .idle(edge_walk$idle)
+        .idle(edge_walk$idle),
+        .free_next(edge_walk$free_next)
     );
     raster_top$core$fifo fifo(
         .clock(fifo$clock),
@@ -1455,6 +1461,8 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
         end
         edge_walk$height = height;
         edge_walk$hold = hold;
+        triangle_setup$out_free_next = edge_walk$free_next;
+        triangle_setup$out_hold = hold;
         recip_mant = triangle_setup$recip_mant;
         recip_exp = triangle_setup$recip_exp;
         span$width = width;
@@ -1566,7 +1574,7 @@ module raster_top$core(clock,width,height,inp$valid,inp$ready,inp$v0_x,inp$v0_y,
 endmodule // raster_top$core
 
 
-module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_j,inp$maj_count,inp$maj_x,inp$maj_r,inp$maj_q,inp$maj_rho,inp$maj_d,inp$maj_at_z,inp$maj_at_c0,inp$maj_at_c1,inp$maj_at_c2,inp$maj_inc0_z,inp$maj_inc0_c0,inp$maj_inc0_c1,inp$maj_inc0_c2,inp$maj_inc1_z,inp$maj_inc1_c0,inp$maj_inc1_c1,inp$maj_inc1_c2,inp$short0_j,inp$short0_count,inp$short0_x,inp$short0_r,inp$short0_q,inp$short0_rho,inp$short0_d,inp$short0_at_z,inp$short0_at_c0,inp$short0_at_c1,inp$short0_at_c2,inp$short0_inc0_z,inp$short0_inc0_c0,inp$short0_inc0_c1,inp$short0_inc0_c2,inp$short0_inc1_z,inp$short0_inc1_c0,inp$short0_inc1_c1,inp$short0_inc1_c2,inp$short1_j,inp$short1_count,inp$short1_x,inp$short1_r,inp$short1_q,inp$short1_rho,inp$short1_d,inp$short1_at_z,inp$short1_at_c0,inp$short1_at_c1,inp$short1_at_c2,inp$short1_inc0_z,inp$short1_inc0_c0,inp$short1_inc0_c1,inp$short1_inc0_c2,inp$short1_inc1_z,inp$short1_inc1_c0,inp$short1_inc1_c1,inp$short1_inc1_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,hold,idle);
+module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$maj_left,inp$maj_j,inp$maj_count,inp$maj_x,inp$maj_r,inp$maj_q,inp$maj_rho,inp$maj_d,inp$maj_at_z,inp$maj_at_c0,inp$maj_at_c1,inp$maj_at_c2,inp$maj_inc0_z,inp$maj_inc0_c0,inp$maj_inc0_c1,inp$maj_inc0_c2,inp$maj_inc1_z,inp$maj_inc1_c0,inp$maj_inc1_c1,inp$maj_inc1_c2,inp$short0_j,inp$short0_count,inp$short0_x,inp$short0_r,inp$short0_q,inp$short0_rho,inp$short0_d,inp$short0_at_z,inp$short0_at_c0,inp$short0_at_c1,inp$short0_at_c2,inp$short0_inc0_z,inp$short0_inc0_c0,inp$short0_inc0_c1,inp$short0_inc0_c2,inp$short0_inc1_z,inp$short0_inc1_c0,inp$short0_inc1_c1,inp$short0_inc1_c2,inp$short1_j,inp$short1_count,inp$short1_x,inp$short1_r,inp$short1_q,inp$short1_rho,inp$short1_d,inp$short1_at_z,inp$short1_at_c0,inp$short1_at_c1,inp$short1_at_c2,inp$short1_inc0_z,inp$short1_inc0_c0,inp$short1_inc0_c1,inp$short1_inc0_c2,inp$short1_inc1_z,inp$short1_inc1_c0,inp$short1_inc1_c1,inp$short1_inc1_c2,inp$ddx_z,inp$ddx_c0,inp$ddx_c1,inp$ddx_c2,out$valid,out$ready,out$y,out$xl,out$xr,out$left_z,out$left_c0,out$left_c1,out$left_c2,out$right_z,out$right_c0,out$right_c1,out$right_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,hold,idle,free_next);
     
     // Module arguments
     input wire  clock;
@@ -1655,6 +1663,7 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
     output reg  [35:0] out$ddx_c2;
     input wire  hold;
     output reg  idle;
+    output reg  free_next;
     
     // Stub signals
     wire  clip_y$on;
@@ -2520,6 +2529,10 @@ module raster_top$core$edge_walk(clock,height,inp$valid,inp$ready,inp$walk,inp$m
             pend_inc1_c0$d = ((inp$short1_inc1_c0) & 32'hffffffff);
             pend_inc1_c1$d = ((inp$short1_inc1_c1) & 32'hffffffff);
             pend_inc1_c2$d = ((inp$short1_inc1_c2) & 32'hffffffff);
+        end
+        free_next = ~busy$q | (~walking$q & free);
+        if (accept) begin
+            free_next = 1'b0;
         end
     end
     
@@ -10279,7 +10292,7 @@ module raster_top$core$span$zr$x_neg(x,neg);
 endmodule // raster_top$core$span$zr$x_neg
 
 
-module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,recip_mant,recip_exp,idle);
+module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,recip_mant,recip_exp,idle,out_free_next,out_hold);
     
     // Module arguments
     input wire  clock;
@@ -10375,6 +10388,8 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     output reg  [24:0] recip_mant;
     output reg  [5:0] recip_exp;
     output reg  idle;
+    input wire  out_free_next;
+    input wire  out_hold;
     
     // Constant declarations
     localparam  q_msb = 8'h12;
@@ -10841,6 +10856,9 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  div$out_ready;
     wire  [25:0] div$out_q;
     wire  [33:0] div$out_r;
+    reg  stall_r$d;
+    wire  stall_r$q;
+    reg  stall_r$clock;
     reg  [63:0] tok$0$d;
     wire  [63:0] tok$0$q;
     reg  tok$0$clock;
@@ -11750,6 +11768,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     // Local signals
     reg  take;
     reg  run;
+    reg  valid_n;
     reg  at_norm;
     reg  at_iss$0;
     reg  at_iss$1;
@@ -12227,6 +12246,11 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .out_ready(div$out_ready),
         .out_q(div$out_q),
         .out_r(div$out_r)
+    );
+    raster_top$core$triangle_setup$stall_r stall_r(
+        .d(stall_r$d),
+        .q(stall_r$q),
+        .clock(stall_r$clock)
     );
     raster_top$core$triangle_setup$tok$0 tok$0(
         .d(tok$0$d),
@@ -13525,6 +13549,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         gate_r$clock = clock;
         phase$clock = clock;
         off_grid_r$clock = clock;
+        stall_r$clock = clock;
         area$d = area$q;
         norm$d = norm$q;
         nsh$d = nsh$q;
@@ -13538,6 +13563,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         gate_r$d = gate_r$q;
         phase$d = phase$q;
         off_grid_r$d = off_grid_r$q;
+        stall_r$d = stall_r$q;
         o_walk$clock = clock;
         o_maj_left$clock = clock;
         o_walk$d = o_walk$q;
@@ -13883,7 +13909,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         maj_left$4 = sign$4$q;
         maj_left$5 = sign$5$q;
         valid = tok$5$q[last_bit];
-        run = ~(valid & ~out$ready);
+        run = ~stall_r$q & ~(valid & out_hold & ~out$ready);
         out$valid = valid;
         inp$ready = run & ~gate_r$q;
         take = inp$valid & inp$ready;
@@ -14043,6 +14069,8 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
             end
         end
         tok$5$d = tok_n$5;
+        valid_n = tok_n$5[last_bit];
+        stall_r$d = valid_n & ~out_free_next;
         act$0 = 1'b0;
         add$0 = 1'b0;
         if (view$0 == 0) begin
@@ -32804,6 +32832,25 @@ module raster_top$core$triangle_setup$sign$5(d,q,clock);
     end
           
 endmodule // raster_top$core$triangle_setup$sign$5
+
+
+module raster_top$core$triangle_setup$stall_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$triangle_setup$stall_r
 
 
 module raster_top$core$triangle_setup$tok$0(d,q,clock);

@@ -8,7 +8,7 @@ use model::ctx::Ctx;
 use model::cull_sort::{cull_sort, Cull, Sorted};
 use model::cycles::{setup_latency, setup_timing, SetupTiming, Timing};
 use model::triangle_setup::{triangle_setup, TriangleSetupOut};
-use rand::SeedableRng;
+use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rtl::divider::LATENCY_MAX;
 use rtl::triangle_setup::{Schedule, TriangleSetup, MULTIPLIERS_MAX};
@@ -49,10 +49,13 @@ struct Taken {
 }
 
 /// Drives `tris` through `cycle` (one clock of one or both simulators) and checks each
-/// result against the model.
+/// result against the model. The edge walk's side as `raster_top` has it: free or not
+/// (`flow`), said a cycle ahead on `out_free_next`, and at times held (`out_hold`, with
+/// `out.ready` low) while free.
 fn run(cycle: &mut Cycle, tris: &[Sorted], flow: Flow, rng: &mut ChaCha8Rng) -> Result<Vec<Taken>, String> {
     let mut timing = vec![Taken::default(); tris.len()];
-    let (mut next, mut presenting, mut ready, mut done, mut now) = (0, false, true, 0, 0u64);
+    let (mut next, mut presenting, mut done, mut now) = (0, false, 0, 0u64);
+    let (mut free, mut free_next) = (true, flow.next_ready(true, rng));
     let mut in_flight: VecDeque<usize> = VecDeque::new();
     let mut was_valid = false;
     while done < tris.len() {
@@ -64,7 +67,11 @@ fn run(cycle: &mut Cycle, tris: &[Sorted], flow: Flow, rng: &mut ChaCha8Rng) -> 
         }
         let mut pins = sorted_pins(&tris[next.min(tris.len() - 1)]);
         pins.push(("inp$valid".into(), Value::new(1, presenting as u128)));
+        let hold = rng.gen_bool(flow.stall / 2.0);
+        let ready = free && !hold;
         pins.push(("out$ready".into(), Value::new(1, ready as u128)));
+        pins.push(("out_free_next".into(), Value::new(1, free_next as u128)));
+        pins.push(("out_hold".into(), Value::new(1, hold as u128)));
         let out = cycle(&as_pins(&pins))?;
         let valid = out.get("out$valid").bit(0);
         if valid {
@@ -99,7 +106,7 @@ fn run(cycle: &mut Cycle, tris: &[Sorted], flow: Flow, rng: &mut ChaCha8Rng) -> 
             next += 1;
             presenting = false;
         }
-        ready = flow.next_ready(ready, rng);
+        (free, free_next) = (free_next, flow.next_ready(free_next, rng));
         now += 1;
     }
     Ok(timing)
@@ -229,14 +236,14 @@ fn triangle_setup_waits_as_one_while_a_result_is_not_taken() {
     assert!(overlapped > 0, "{timing:?}");
 }
 
-/// Setup builds for every supported K and L (its counters hold the latency), and says
-/// which are not supported.
+/// Setup builds for every supported K and L (a copy's part of the schedule, II cycles,
+/// fits its token's 64 bits), and says which are not supported.
 #[test]
 fn triangle_setup_builds_for_every_k_and_l() {
     for k in 1..=MULTIPLIERS_MAX {
         for l in 1..=LATENCY_MAX {
             let s = Schedule::new(k, l).expect("supported");
-            assert!(s.latency < 255, "K = {k}, L = {l}: {s:?}");
+            assert!(s.interval <= 64, "K = {k}, L = {l}: {s:?}");
             assert!(TriangleSetup::new(k, l).is_ok(), "K = {k}, L = {l}");
         }
     }

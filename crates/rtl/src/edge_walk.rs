@@ -326,6 +326,9 @@ pub struct EdgeWalk {
     pub hold: Signal<In, Bit>,
     /// IDLE: no triangle taken, no span command held.
     pub idle: Signal<Out, Bit>,
+    /// IDLE next cycle (`busy`'s next value): `inp.ready` then, unless `hold` is high. Setup
+    /// registers its stall from it a cycle ahead (`triangle_setup`'s `out_free_next`).
+    pub free_next: Signal<Out, Bit>,
     /// Y clipping present (`CLIP_Y`, `crate::switch`); without it the walk is always down
     /// and the screen's rows are not checked: no triangle may cross the top or bottom.
     clip_y: Switch,
@@ -711,10 +714,15 @@ impl Logic for EdgeWalk {
             self.pend_inc1_c1.d.next = bit_cast::<C_ACC, DC>(self.inp.short1_inc1_c1.val());
             self.pend_inc1_c2.d.next = bit_cast::<C_ACC, DC>(self.inp.short1_inc1_c2.val());
         }
+        // IDLE next cycle: idle and taking nothing, or busy with the last scanline leaving.
+        self.free_next.next = !self.busy.q.val() | (!self.walking.q.val() & self.free.val());
+        if self.accept.val() {
+            self.free_next.next = false;
+        }
     }
 }
 
-crate::pins!(EdgeWalk { clock: clock, inputs: [height, hold,], outputs: [idle,], links: [inp, out] });
+crate::pins!(EdgeWalk { clock: clock, inputs: [height, hold,], outputs: [idle, free_next,], links: [inp, out] });
 
 impl EdgeWalk {
     /// The edge walk with Y clipping present or not (`parts.clip_y`).

@@ -144,6 +144,8 @@ impl Logic for RasterTopCore {
         self.edge_walk.height.next = self.height.val();
         TriangleSetupSource::join(&mut self.triangle_setup.out, &mut self.edge_walk.inp);
         self.edge_walk.hold.next = self.hold.val();
+        self.triangle_setup.out_free_next.next = self.edge_walk.free_next.val();
+        self.triangle_setup.out_hold.next = self.hold.val();
         self.recip_mant.next = self.triangle_setup.recip_mant.val();
         self.recip_exp.next = self.triangle_setup.recip_exp.val();
 
@@ -504,6 +506,8 @@ impl<const E: usize, const EL: usize, const ZW: usize, const CW: usize> Logic fo
         SortedSource::join(&mut self.cull_sort.out, &mut self.triangle_setup.inp);
         TriangleSetupSource::join(&mut self.triangle_setup.out, &mut self.edge_walk.inp);
         self.edge_walk.hold.next = false;
+        self.triangle_setup.out_free_next.next = self.edge_walk.free_next.val();
+        self.triangle_setup.out_hold.next = false;
         SpanCmdSource::join(&mut self.edge_walk.out, &mut self.fifo.inp);
         SpanCmdSource::join(&mut self.fifo.out, &mut self.se_cmd.inp);
 

@@ -151,6 +151,13 @@ pub struct TriangleSetup {
     pub recip_exp: Signal<Out, Bits<6>>,
     /// No triangle in setup (none taken and not yet handed over), from a register.
     pub idle: Signal<Out, Bit>,
+    /// The edge walk is free next cycle (its `free_next`): `out.ready` then unless
+    /// `out_hold`, which `stall_r` reads a cycle ahead.
+    pub out_free_next: Signal<In, Bit>,
+    /// The edge walk is held this cycle (its `hold`, so `out.ready` is low whatever
+    /// `out_free_next` said): low in every build but the textured `raster_top`, where it is
+    /// the one path from the edge walk's handshake into `run`.
+    pub out_hold: Signal<In, Bit>,
 
     // Sub-blocks.
     mul: Vec<SplitMul<MUL_A, MUL_B, MUL_P>>,
@@ -161,6 +168,13 @@ pub struct TriangleSetup {
     /// Setup advances: no result waits for the edge walk. Every register of setup is
     /// written only while it is high (its enable), and nothing else waits for it.
     run: Signal<Local, Bit>,
+    /// A result waits for the edge walk, as the walk's registers say a cycle ahead (the
+    /// result valid next cycle and the walk not free then), so that `run`, which reaches
+    /// every register of setup, is a register and not the walk's handshake (unless
+    /// `out_hold`). Stop 57 measured that handshake into `run` and on into `cull_sort`'s
+    /// enables at 14.8 ns, the walk, `run` and `cull_sort` at three corners of the die.
+    stall_r: DFF<Bit>,
+    valid_n: Signal<Local, Bit>,
     /// The normalise, division j's issue and result, the hand-over are due this cycle and
     /// setup runs.
     at_norm: Signal<Local, Bit>,
@@ -483,7 +497,8 @@ impl Logic for TriangleSetup {
     fn update(&mut self) {
         // ---- Clocks; every register holds unless written.
         dff_setup!(
-            self, clock, area, norm, nsh, div_v, div_n, div_d, mant_s, rsh, left, busy_r, gate_r, phase, off_grid_r
+            self, clock, area, norm, nsh, div_v, div_n, div_d, mant_s, rsh, left, busy_r, gate_r, phase, off_grid_r,
+            stall_r
         );
         dff_setup!(self, clock, o_walk, o_maj_left);
         for e in 0..3 {
@@ -554,7 +569,7 @@ impl Logic for TriangleSetup {
         for v in (self._copies - 1)..self._copies {
             self.valid.next = self.tok[v].q.val().get_bit(self.last_bit.val().index());
         }
-        self.run.next = !(self.valid.val() & !self.out.ready.val());
+        self.run.next = !self.stall_r.q.val() & !(self.valid.val() & self.out_hold.val() & !self.out.ready.val());
         self.out.valid.next = self.valid.val();
         self.inp.ready.next = self.run.val() & !self.gate_r.q.val();
         self.take.next = self.inp.valid.val() & self.inp.ready.val();
@@ -599,6 +614,10 @@ impl Logic for TriangleSetup {
             }
             self.tok[v].d.next = self.tok_n[v].val();
         }
+        for v in (self._copies - 1)..self._copies {
+            self.valid_n.next = self.tok_n[v].val().get_bit(self.last_bit.val().index());
+        }
+        self.stall_r.d.next = self.valid_n.val() & !self.out_free_next.val();
         // What is due this cycle: a bit of its copy's token.
         for i in 0..PRODUCTS {
             self.act[i].next = false;
@@ -1381,7 +1400,12 @@ impl Logic for TriangleSetup {
     }
 }
 
-crate::pins!(TriangleSetup { clock: clock, inputs: [], outputs: [recip_mant, recip_exp, idle], links: [inp, out] });
+crate::pins!(TriangleSetup {
+    clock: clock,
+    inputs: [out_free_next, out_hold],
+    outputs: [recip_mant, recip_exp, idle],
+    links: [inp, out],
+});
 
 /// `UNITS` entry: setup with `params["K"]` multipliers and a `params["L"]`-stage divider.
 pub fn emit_triangle_setup(params: &Params) -> Result<Emitted, String> {
