@@ -80,11 +80,9 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
     reg  [35:0] zl$x;
     wire  zl$neg;
     wire  zl$over;
-    wire  [15:0] zl$low;
     reg  [35:0] zr$x;
     wire  zr$neg;
     wire  zr$over;
-    wire  [15:0] zr$low;
     reg  [12:0] xl_neg$x;
     wire  xl_neg$neg;
     reg  [12:0] xr_neg$x;
@@ -221,14 +219,12 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
     span$zl zl(
         .x(zl$x),
         .neg(zl$neg),
-        .over(zl$over),
-        .low(zl$low)
+        .over(zl$over)
     );
     span$zr zr(
         .x(zr$x),
         .neg(zr$neg),
-        .over(zr$over),
-        .low(zr$low)
+        .over(zr$over)
     );
     span$xl_neg xl_neg(
         .x(xl_neg$x),
@@ -1142,67 +1138,26 @@ module span$y(d,q,clock);
 endmodule // span$y
 
 
-module span$zl(x,neg,over,low);
+module span$zl(x,neg,over);
     
     // Module arguments
     input wire  [35:0] x;
     output reg  neg;
     output reg  over;
-    output reg  [15:0] low;
     
     // Constant declarations
-    localparam  top = 37'h1000000000;
-    localparam  half = 37'h20000;
-    localparam  shift = 8'h12;
-    localparam  limit = 37'h10000;
-    
-    // Stub signals
-    reg  [35:0] x_neg$x;
-    wire  x_neg$neg;
-    
-    // Local signals
-    reg  [36:0] ext;
-    reg  [36:0] sum;
-    reg  [36:0] shifted;
-    
-    // Sub module instances
-    span$zl$x_neg x_neg(
-        .x(x_neg$x),
-        .neg(x_neg$neg)
-    );
+    localparam  flip = 36'h800000000;
+    localparam  lo = 36'h7fffe0000;
+    localparam  hi = 36'hbfffe0000;
+    localparam  can_over = 1'b1;
     
     // Update code
     always @(*) begin
-        x_neg$x = x;
-        ext = ((x) & 37'h1fffffffff);
-        if (x_neg$neg) begin
-            ext = ((x) & 37'h1fffffffff) | top;
-        end
-        sum = ext + half;
-        neg = sum >= top;
-        shifted = sum >> shift;
-        over = ~neg & (shifted >= limit);
-        low = ((shifted) & 16'hffff);
+        neg = (x ^ flip) < lo;
+        over = can_over & ((x ^ flip) >= hi);
     end
     
 endmodule // span$zl
-
-
-module span$zl$x_neg(x,neg);
-    
-    // Module arguments
-    input wire  [35:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 36'h800000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // span$zl$x_neg
 
 
 module span$zp(x,neg,over,low);
@@ -1268,64 +1223,23 @@ module span$zp$x_neg(x,neg);
 endmodule // span$zp$x_neg
 
 
-module span$zr(x,neg,over,low);
+module span$zr(x,neg,over);
     
     // Module arguments
     input wire  [35:0] x;
     output reg  neg;
     output reg  over;
-    output reg  [15:0] low;
     
     // Constant declarations
-    localparam  top = 37'h1000000000;
-    localparam  half = 37'h20000;
-    localparam  shift = 8'h12;
-    localparam  limit = 37'h10000;
-    
-    // Stub signals
-    reg  [35:0] x_neg$x;
-    wire  x_neg$neg;
-    
-    // Local signals
-    reg  [36:0] ext;
-    reg  [36:0] sum;
-    reg  [36:0] shifted;
-    
-    // Sub module instances
-    span$zr$x_neg x_neg(
-        .x(x_neg$x),
-        .neg(x_neg$neg)
-    );
+    localparam  flip = 36'h800000000;
+    localparam  lo = 36'h7fffe0000;
+    localparam  hi = 36'hbfffe0000;
+    localparam  can_over = 1'b1;
     
     // Update code
     always @(*) begin
-        x_neg$x = x;
-        ext = ((x) & 37'h1fffffffff);
-        if (x_neg$neg) begin
-            ext = ((x) & 37'h1fffffffff) | top;
-        end
-        sum = ext + half;
-        neg = sum >= top;
-        shifted = sum >> shift;
-        over = ~neg & (shifted >= limit);
-        low = ((shifted) & 16'hffff);
+        neg = (x ^ flip) < lo;
+        over = can_over & ((x ^ flip) >= hi);
     end
     
 endmodule // span$zr
-
-
-module span$zr$x_neg(x,neg);
-    
-    // Module arguments
-    input wire  [35:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 36'h800000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // span$zr$x_neg

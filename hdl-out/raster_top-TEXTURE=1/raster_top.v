@@ -9041,11 +9041,9 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
     reg  [35:0] zl$x;
     wire  zl$neg;
     wire  zl$over;
-    wire  [15:0] zl$low;
     reg  [35:0] zr$x;
     wire  zr$neg;
     wire  zr$over;
-    wire  [15:0] zr$low;
     reg  [12:0] xl_neg$x;
     wire  xl_neg$neg;
     reg  [12:0] xr_neg$x;
@@ -9182,14 +9180,12 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
     raster_top$core$span$zl zl(
         .x(zl$x),
         .neg(zl$neg),
-        .over(zl$over),
-        .low(zl$low)
+        .over(zl$over)
     );
     raster_top$core$span$zr zr(
         .x(zr$x),
         .neg(zr$neg),
-        .over(zr$over),
-        .low(zr$low)
+        .over(zr$over)
     );
     raster_top$core$span$xl_neg xl_neg(
         .x(xl_neg$x),
@@ -10103,67 +10099,26 @@ module raster_top$core$span$y(d,q,clock);
 endmodule // raster_top$core$span$y
 
 
-module raster_top$core$span$zl(x,neg,over,low);
+module raster_top$core$span$zl(x,neg,over);
     
     // Module arguments
     input wire  [35:0] x;
     output reg  neg;
     output reg  over;
-    output reg  [15:0] low;
     
     // Constant declarations
-    localparam  top = 37'h1000000000;
-    localparam  half = 37'h20000;
-    localparam  shift = 8'h12;
-    localparam  limit = 37'h10000;
-    
-    // Stub signals
-    reg  [35:0] x_neg$x;
-    wire  x_neg$neg;
-    
-    // Local signals
-    reg  [36:0] ext;
-    reg  [36:0] sum;
-    reg  [36:0] shifted;
-    
-    // Sub module instances
-    raster_top$core$span$zl$x_neg x_neg(
-        .x(x_neg$x),
-        .neg(x_neg$neg)
-    );
+    localparam  flip = 36'h800000000;
+    localparam  lo = 36'h7fffe0000;
+    localparam  hi = 36'hbfffe0000;
+    localparam  can_over = 1'b1;
     
     // Update code
     always @(*) begin
-        x_neg$x = x;
-        ext = ((x) & 37'h1fffffffff);
-        if (x_neg$neg) begin
-            ext = ((x) & 37'h1fffffffff) | top;
-        end
-        sum = ext + half;
-        neg = sum >= top;
-        shifted = sum >> shift;
-        over = ~neg & (shifted >= limit);
-        low = ((shifted) & 16'hffff);
+        neg = (x ^ flip) < lo;
+        over = can_over & ((x ^ flip) >= hi);
     end
     
 endmodule // raster_top$core$span$zl
-
-
-module raster_top$core$span$zl$x_neg(x,neg);
-    
-    // Module arguments
-    input wire  [35:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 36'h800000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // raster_top$core$span$zl$x_neg
 
 
 module raster_top$core$span$zp(x,neg,over,low);
@@ -10229,67 +10184,26 @@ module raster_top$core$span$zp$x_neg(x,neg);
 endmodule // raster_top$core$span$zp$x_neg
 
 
-module raster_top$core$span$zr(x,neg,over,low);
+module raster_top$core$span$zr(x,neg,over);
     
     // Module arguments
     input wire  [35:0] x;
     output reg  neg;
     output reg  over;
-    output reg  [15:0] low;
     
     // Constant declarations
-    localparam  top = 37'h1000000000;
-    localparam  half = 37'h20000;
-    localparam  shift = 8'h12;
-    localparam  limit = 37'h10000;
-    
-    // Stub signals
-    reg  [35:0] x_neg$x;
-    wire  x_neg$neg;
-    
-    // Local signals
-    reg  [36:0] ext;
-    reg  [36:0] sum;
-    reg  [36:0] shifted;
-    
-    // Sub module instances
-    raster_top$core$span$zr$x_neg x_neg(
-        .x(x_neg$x),
-        .neg(x_neg$neg)
-    );
+    localparam  flip = 36'h800000000;
+    localparam  lo = 36'h7fffe0000;
+    localparam  hi = 36'hbfffe0000;
+    localparam  can_over = 1'b1;
     
     // Update code
     always @(*) begin
-        x_neg$x = x;
-        ext = ((x) & 37'h1fffffffff);
-        if (x_neg$neg) begin
-            ext = ((x) & 37'h1fffffffff) | top;
-        end
-        sum = ext + half;
-        neg = sum >= top;
-        shifted = sum >> shift;
-        over = ~neg & (shifted >= limit);
-        low = ((shifted) & 16'hffff);
+        neg = (x ^ flip) < lo;
+        over = can_over & ((x ^ flip) >= hi);
     end
     
 endmodule // raster_top$core$span$zr
-
-
-module raster_top$core$span$zr$x_neg(x,neg);
-    
-    // Module arguments
-    input wire  [35:0] x;
-    output reg  neg;
-    
-    // Constant declarations
-    localparam  half = 36'h800000000;
-    
-    // Update code
-    always @(*) begin
-        neg = x >= half;
-    end
-    
-endmodule // raster_top$core$span$zr$x_neg
 
 
 module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_y,inp$v0_z,inp$v0_c0,inp$v0_c1,inp$v0_c2,inp$v0_iw,inp$v1_x,inp$v1_y,inp$v1_z,inp$v1_c0,inp$v1_c1,inp$v1_c2,inp$v1_iw,inp$v2_x,inp$v2_y,inp$v2_z,inp$v2_c0,inp$v2_c1,inp$v2_c2,inp$v2_iw,inp$crosses,out$valid,out$ready,out$walk,out$maj_left,out$maj_j,out$maj_count,out$maj_x,out$maj_r,out$maj_q,out$maj_rho,out$maj_d,out$maj_at_z,out$maj_at_c0,out$maj_at_c1,out$maj_at_c2,out$maj_inc0_z,out$maj_inc0_c0,out$maj_inc0_c1,out$maj_inc0_c2,out$maj_inc1_z,out$maj_inc1_c0,out$maj_inc1_c1,out$maj_inc1_c2,out$short0_j,out$short0_count,out$short0_x,out$short0_r,out$short0_q,out$short0_rho,out$short0_d,out$short0_at_z,out$short0_at_c0,out$short0_at_c1,out$short0_at_c2,out$short0_inc0_z,out$short0_inc0_c0,out$short0_inc0_c1,out$short0_inc0_c2,out$short0_inc1_z,out$short0_inc1_c0,out$short0_inc1_c1,out$short0_inc1_c2,out$short1_j,out$short1_count,out$short1_x,out$short1_r,out$short1_q,out$short1_rho,out$short1_d,out$short1_at_z,out$short1_at_c0,out$short1_at_c1,out$short1_at_c2,out$short1_inc0_z,out$short1_inc0_c0,out$short1_inc0_c1,out$short1_inc0_c2,out$short1_inc1_z,out$short1_inc1_c0,out$short1_inc1_c1,out$short1_inc1_c2,out$ddx_z,out$ddx_c0,out$ddx_c1,out$ddx_c2,recip_mant,recip_exp,idle,out_free_next,out_hold);

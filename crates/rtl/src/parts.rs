@@ -1,5 +1,5 @@
-//! Small combinational blocks the units share: sign tests, a rounding shift and bit
-//! concatenation; and [`defaults`], the arrays of signals, registers and blocks a unit's
+//! Small combinational blocks the units share: sign tests, a rounding shift, its range
+//! tests alone and bit concatenation; and [`defaults`], the arrays of signals, registers and blocks a unit's
 //! constructor fills.
 //!
 //! The units keep signed quantities in plain `Bits<N>` (adds and subtracts wrap the same
@@ -110,6 +110,50 @@ impl<const IN: usize, const EXT: usize, const OUT: usize, const S: usize> Logic 
         self.shifted.next = self.sum.val() >> self.shift.val();
         self.over.next = !self.neg.val() & (self.shifted.val() >= self.limit.val());
         self.low.next = bit_cast::<OUT, EXT>(self.shifted.val());
+    }
+}
+
+/// [`RoundShift`]'s range flags without its rounding: for r = `x` rounded half up from
+/// `S` fraction bits (an `IN`-bit two's complement `x`), `neg` (r < 0) and `over`
+/// (r >= 2^OUT). r < 0 exactly when x < -2^(S-1), and r >= 2^OUT exactly when
+/// x >= 2^(S+OUT) - 2^(S-1): two comparisons of `x` with constants side by side, not an
+/// addition and then a comparison. (`span` tests a command's end depths with it as it
+/// takes the command: `raster_top`'s critical path at stop 59 ran through the rounding's
+/// adder and then its comparison there.)
+#[derive(LogicBlock, Blank)]
+pub struct RoundRange<const IN: usize, const OUT: usize, const S: usize> {
+    pub x: Signal<In, Bits<IN>>,
+    pub neg: Signal<Out, Bit>,
+    pub over: Signal<Out, Bit>,
+    /// 2^(IN-1): flipping the sign bits turns the signed order into the unsigned one.
+    flip: Constant<Bits<IN>>,
+    /// -2^(S-1) and 2^(S+OUT) - 2^(S-1), their sign bits flipped; whether the second is
+    /// below 2^(IN-1) (else no `x` rounds to 2^OUT or more).
+    lo: Constant<Bits<IN>>,
+    hi: Constant<Bits<IN>>,
+    can_over: Constant<Bit>,
+}
+
+impl<const IN: usize, const OUT: usize, const S: usize> Default for RoundRange<IN, OUT, S> {
+    fn default() -> Self {
+        assert!(IN < 64 && S >= 1 && S + OUT <= IN, "RoundRange<{IN}, {OUT}, {S}>");
+        let (flip, half, mask) = (1u64 << (IN - 1), 1u64 << (S - 1), (1u64 << IN) - 1);
+        let hi = (1u64 << (S + OUT)) - half;
+        RoundRange {
+            flip: Constant::new(bits(flip)),
+            lo: Constant::new(bits((half.wrapping_neg() & mask) ^ flip)),
+            hi: Constant::new(bits((hi & mask) ^ flip)),
+            can_over: Constant::new(hi < flip),
+            ..RoundRange::blank()
+        }
+    }
+}
+
+impl<const IN: usize, const OUT: usize, const S: usize> Logic for RoundRange<IN, OUT, S> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.neg.next = (self.x.val() ^ self.flip.val()) < self.lo.val();
+        self.over.next = self.can_over.val() & ((self.x.val() ^ self.flip.val()) >= self.hi.val());
     }
 }
 

@@ -43,7 +43,7 @@
 use super::links::{PixelSource, SpanCmdSink};
 use super::widths::{CHANNEL, C_ACC, DC, DEPTH, DIM, DZ, FORMATS, PIXEL, SCREEN, Z_ACC};
 use crate::emit::{emit_unit, Emitted};
-use crate::parts::{Negative, RoundShift, SignedLess};
+use crate::parts::{Negative, RoundRange, RoundShift, SignedLess};
 use crate::switch::{Parts, Switch};
 use crate::Params;
 use rust_hdl::prelude::*;
@@ -56,6 +56,9 @@ const C_SHIFT: usize = FORMATS.c_acc.frac as usize;
 /// `model::span::depth_of`: a z accumulator rounded half up to the depth buffer's bits;
 /// `neg` and `over` flag depths below 0 and above z_max = 2^DEPTH - 1.
 pub type DepthOf = RoundShift<Z_ACC, { Z_ACC + 1 }, DEPTH, Z_SHIFT>;
+/// [`DepthOf`]'s `neg` and `over` alone, for a command's end depths (only their range
+/// decides the z drop, 003).
+pub type DepthRange = RoundRange<Z_ACC, DEPTH, Z_SHIFT>;
 /// `model::span::color_of` before its clamp: a colour accumulator rounded half up to an
 /// integer; `neg` and `over` flag values below 0 and above 255.
 pub type ColorOf = RoundShift<C_ACC, { C_ACC + 1 }, CHANNEL, C_SHIFT>;
@@ -97,8 +100,8 @@ pub struct Span {
     d_c1: DFF<Bits<C_ACC>>,
     d_c2: DFF<Bits<C_ACC>>,
     /// The command's end depths (for the z drop) and the signs of its ends.
-    zl: DepthOf,
-    zr: DepthOf,
+    zl: DepthRange,
+    zr: DepthRange,
     xl_neg: Negative<PIXEL>,
     xr_neg: Negative<PIXEL>,
     /// The pixel's depth and colour.

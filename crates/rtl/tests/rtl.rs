@@ -43,6 +43,24 @@ mod parts {
     }
 
     #[test]
+    fn parts_round_range_is_round_shifts_flags_exhaustive_in6() {
+        // 6-bit x, 2 fraction bits: a 2-bit result (2^(S+OUT) well inside x's range), a
+        // 3-bit one (at its top) and a 4-bit one (no x rounds to 16 or more).
+        fn check<const OUT: usize>(mut u: RoundRange<6, OUT, 2>) {
+            u.connect_all();
+            for x in -32i128..32 {
+                u.x.next = bits::<6>((x & 63) as u64);
+                settle(&mut u);
+                let r = fx::shr_half_up(x, 2);
+                assert_eq!((u.neg.val(), u.over.val()), (r < 0, r >= 1 << OUT), "OUT={OUT} x={x}");
+            }
+        }
+        check::<2>(RoundRange::default());
+        check::<3>(RoundRange::default());
+        check::<4>(RoundRange::default());
+    }
+
+    #[test]
     fn parts_concat_puts_hi_above_lo() {
         let mut u = Concat::<3, 5, 8>::default();
         u.connect_all();
