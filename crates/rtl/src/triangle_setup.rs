@@ -644,8 +644,7 @@ impl Logic for TriangleSetup {
         self.at_handover.next = false;
         for v in 0..self._copies {
             if self.view_handover.val().index() == v {
-                self.at_handover.next =
-                    self.tok[v].q.val().get_bit(self.handover_bit.val().index()) & self.run.val();
+                self.at_handover.next = self.tok[v].q.val().get_bit(self.handover_bit.val().index()) & self.run.val();
             }
         }
         // A triangle is in setup next cycle (a token), and setup is off the II grid next
